@@ -1,0 +1,71 @@
+// proofs/proof.hpp -- the registry of checked derivations.
+//
+// Each file in proofs/ re-derives claims of one paper and *checks* them with the toolbox:
+//   HAPSTAB_PROOF(r_forms_identity, "001", "(35)-(38) and (44) are one rational function of t") {
+//     check.claim("001.eq44.identity", "(44)=(38)", "T/(e^{jwT}-1) = ...", Method::exact, ok, "...");
+//   }
+// Every claim id must have its row in proofs/README.md (the claim table); `hapstab proofs
+// --table proofs/README.md` fails when a claim and the table disagree. `hapstab proofs` and
+// `hapstab reproduce` run the registry; a claim that does not hold makes them exit 1.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace hapstab::proofs {
+
+enum class Method { exact, certified, numeric };
+inline const char* to_string(Method m) {
+  return m == Method::exact ? "exact" : m == Method::certified ? "certified" : "numeric";
+}
+
+struct ClaimResult {
+  std::string id;         ///< stable id, e.g. "001.eq44.identity" (paper.equation.what)
+  std::string paper;      ///< "000", "001" or "002" (shared/papers numbering)
+  std::string equation;   ///< e.g. "(44) = (35)"
+  std::string statement;  ///< what is claimed, in words
+  Method method;
+  bool holds;
+  std::string evidence;   ///< what was computed: counts, maximum errors, enclosures
+};
+
+class Checker {
+ public:
+  explicit Checker(std::string paper) : paper_(std::move(paper)) {}
+  /// Records one claim and its computed verdict. Returns `holds` for chaining.
+  bool claim(std::string id, std::string equation, std::string statement, Method method, bool holds,
+             std::string evidence) {
+    results_.push_back({std::move(id), paper_, std::move(equation), std::move(statement), method, holds,
+                        std::move(evidence)});
+    return holds;
+  }
+  const std::vector<ClaimResult>& results() const { return results_; }
+  const std::string& paper() const { return paper_; }
+
+ private:
+  std::string paper_;
+  std::vector<ClaimResult> results_;
+};
+
+struct Proof {
+  const char* id;
+  const char* paper;
+  const char* title;
+  void (*run)(Checker&);
+};
+
+inline std::vector<Proof>& registry() {
+  static std::vector<Proof> r;
+  return r;
+}
+
+struct Register {
+  explicit Register(Proof p) { registry().push_back(p); }
+};
+
+}  // namespace hapstab::proofs
+
+#define HAPSTAB_PROOF(ident, paper, title)                                                       \
+  static void ident(::hapstab::proofs::Checker&);                                                \
+  static const ::hapstab::proofs::Register ident##_registered({#ident, paper, title, &ident}); \
+  static void ident([[maybe_unused]] ::hapstab::proofs::Checker& check)

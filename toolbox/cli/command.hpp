@@ -1,0 +1,49 @@
+// cli/command.hpp -- how a `hapstab <command>` registers itself, and the shared option
+// parsing and output helpers every command uses.
+//
+// A command file does
+//   static const hapstab::cli::Register reg({"r", "Evaluate r(jw) ...", [](CLI::App& app) {
+//       auto opts = std::make_shared<Opts>(); app.add_option(...);
+//       return [opts]() -> int { ...; return hapstab::cli::exit_ok; };
+//   }});
+// Exit codes (DESIGN.md): 0 success, 1 the property does not hold, 2 bad input,
+// 3 numerical failure. Errors are thrown as hapstab::InputError / NumericalError and
+// printed by main without a stack.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::cli {
+
+enum ExitCode { exit_ok = 0, exit_property_fails = 1, exit_bad_input = 2, exit_numerical = 3 };
+
+using Runner = std::function<int()>;
+struct Command {
+  std::string name;
+  std::string help;
+  std::function<Runner(CLI::App&)> setup;  ///< adds options to the subcommand, returns its body
+};
+
+std::vector<Command>& commands();
+
+struct Register {
+  explicit Register(Command c) { commands().push_back(std::move(c)); }
+};
+
+/// Parses an exact rational option value; the error names the option.
+rational option_rational(const std::string& text, const std::string& option);
+
+/// Parses repeated `--set NAME=VALUE` into exact parameters (error names the bad entry).
+std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets);
+
+/// Prints JSON (2-space indented) to stdout.
+void print_json(const nlohmann::json& j);
+
+}  // namespace hapstab::cli

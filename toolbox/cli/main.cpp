@@ -1,0 +1,76 @@
+// cli/main.cpp -- the `hapstab` command: dispatches to the registered subcommands and maps
+// errors to exit codes (0 ok, 1 property fails, 2 bad input, 3 numerical failure).
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::cli {
+
+std::vector<Command>& commands() {
+  static std::vector<Command> c;
+  return c;
+}
+
+rational option_rational(const std::string& text, const std::string& option) {
+  return parse_rational(text, option);
+}
+
+std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets) {
+  std::map<std::string, rational> out;
+  for (const auto& s : sets) {
+    auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--set '" + s + "': expected NAME=VALUE, e.g. --set K=1000");
+    std::string name = s.substr(0, eq);
+    out[name] = parse_rational(s.substr(eq + 1), "--set " + name);
+  }
+  return out;
+}
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+
+}  // namespace hapstab::cli
+
+int main(int argc, char** argv) {
+  using namespace hapstab::cli;
+  CLI::App app{"hapstab -- passivity and stability of sampled-data haptic systems.\n"
+               "Exit codes: 0 success, 1 the property does not hold, 2 bad input, 3 numerical failure."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hapstab 0.1.0");
+  std::vector<std::pair<CLI::App*, Runner>> runners;
+  for (auto& c : commands()) {
+    CLI::App* sub = app.add_subcommand(c.name, c.help);
+    runners.emplace_back(sub, c.setup(*sub));
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return exit_bad_input;
+  } catch (const hapstab::InputError& e) {
+    std::cerr << "hapstab: " << e.what() << "\n";
+    return exit_bad_input;
+  }
+  try {
+    for (auto& [sub, run] : runners)
+      if (sub->parsed()) return run();
+  } catch (const hapstab::InputError& e) {
+    std::cerr << "hapstab: error: " << e.what() << "\n";
+    return exit_bad_input;
+  } catch (const hapstab::NumericalError& e) {
+    std::cerr << "hapstab: numerical failure: " << e.what() << "\n";
+    return exit_numerical;
+  } catch (const std::exception& e) {
+    std::cerr << "hapstab: internal error: " << e.what() << "\n";
+    return exit_numerical;
+  }
+  return exit_bad_input;
+}

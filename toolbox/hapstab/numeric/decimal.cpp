@@ -1,0 +1,151 @@
+#include "hapstab/numeric/decimal.hpp"
+
+#include <cctype>
+#include <cmath>
+
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab {
+
+namespace {
+
+rational pow10(long e) {
+  integer p = bmp::pow(integer(10), static_cast<unsigned>(e < 0 ? -e : e));
+  return e >= 0 ? rational(p) : rational(integer(1), p);
+}
+
+// One decimal: [+-] digits [. digits] [(e|E) [+-] digits], at least one mantissa digit.
+std::optional<rational> parse_decimal(std::string_view s) {
+  size_t i = 0;
+  bool neg = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
+  integer mant = 0;
+  long scale = 0;
+  int ndigits = 0;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
+    mant = mant * 10 + (s[i++] - '0');
+    ++ndigits;
+  }
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
+      mant = mant * 10 + (s[i++] - '0');
+      ++ndigits;
+      --scale;
+    }
+  }
+  if (ndigits == 0) return std::nullopt;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool eneg = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) eneg = s[i++] == '-';
+    long ex = 0;
+    int edigits = 0;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
+      ex = ex * 10 + (s[i++] - '0');
+      if (++edigits > 6) return std::nullopt;  // |exponent| < 1e6: beyond is a typo, not a number
+    }
+    if (edigits == 0) return std::nullopt;
+    scale += eneg ? -ex : ex;
+  }
+  if (i != s.size()) return std::nullopt;
+  rational q = rational(mant) * pow10(scale);
+  return neg ? rational(-q) : q;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+std::optional<rational> try_parse_rational(std::string_view text) {
+  text = trim(text);
+  auto slash = text.find('/');
+  if (slash == std::string_view::npos) return parse_decimal(text);
+  auto a = parse_decimal(trim(text.substr(0, slash)));
+  auto b = parse_decimal(trim(text.substr(slash + 1)));
+  if (!a || !b || *b == 0) return std::nullopt;
+  return *a / *b;
+}
+
+rational parse_rational(std::string_view text, std::string_view what) {
+  auto q = try_parse_rational(text);
+  if (!q) {
+    std::string msg = std::string(what) + ": '" + std::string(text) + "' is not a number";
+    auto slash = text.find('/');
+    if (slash != std::string_view::npos) {
+      auto b = try_parse_rational(text.substr(slash + 1));
+      if (b && *b == 0) msg = std::string(what) + ": '" + std::string(text) + "' divides by zero";
+    }
+    msg += " (expected a decimal such as 0.001, 1e-3, or a fraction such as 1/1000)";
+    throw InputError(msg);
+  }
+  return *q;
+}
+
+std::string to_decimal(const rational& x, int digits) {
+  if (digits < 1) digits = 1;
+  if (x == 0) return "0";
+  const bool neg = x < 0;
+  const rational a = neg ? rational(-x) : x;
+  // e = floor(log10 a), estimated in floating point and then fixed exactly.
+  long e = static_cast<long>(std::floor(static_cast<double>(mpfloat<30>(log10(mpfloat<30>(a))))));
+  while (pow10(e) > a) --e;
+  while (pow10(e + 1) <= a) ++e;
+  rational scaled = a * pow10(digits - 1 - e);
+  integer n = num(scaled) / den(scaled);  // floor, scaled > 0
+  rational frac = scaled - rational(n);
+  const rational half(1, 2);
+  if (frac > half || (frac == half && (n % 2) != 0)) n += 1;
+  if (n == bmp::pow(integer(10), static_cast<unsigned>(digits))) {
+    n /= 10;
+    ++e;
+  }
+  std::string s = n.str();  // exactly `digits` characters
+  // strip trailing zeros: they are exact and carry no information
+  while (s.size() > 1 && s.back() == '0') s.pop_back();
+  std::string out = neg ? "-" : "";
+  if (e >= -5 && e < digits) {
+    if (e >= 0) {
+      if (static_cast<long>(s.size()) <= e + 1) {
+        out += s + std::string(e + 1 - s.size(), '0');
+      } else {
+        out += s.substr(0, e + 1) + "." + s.substr(e + 1);
+      }
+    } else {
+      out += "0." + std::string(-e - 1, '0') + s;
+    }
+  } else {
+    out += s.substr(0, 1);
+    if (s.size() > 1) out += "." + s.substr(1);
+    out += (e < 0 ? "e-" : "e+");
+    std::string es = std::to_string(e < 0 ? -e : e);
+    if (es.size() < 2) es = "0" + es;
+    out += es;
+  }
+  return out;
+}
+
+std::optional<std::string> common_decimal(const rational& lo, const rational& hi, int digits) {
+  std::string a = to_decimal(lo, digits), b = to_decimal(hi, digits);
+  if (a == b) return a;
+  return std::nullopt;
+}
+
+rational exact_rational(double x) {
+  if (!std::isfinite(x)) throw InputError("exact_rational: value is not finite");
+  int e = 0;
+  double m = std::frexp(x, &e);  // x = m * 2^e, 0.5 <= |m| < 1
+  // 53-bit integer mantissa
+  auto mi = static_cast<long long>(std::ldexp(m, 53));
+  e -= 53;
+  rational q{integer(mi)};
+  if (e >= 0) q *= rational(integer(1) << e);
+  else q /= rational(integer(1) << -e);
+  return q;
+}
+
+}  // namespace hapstab
