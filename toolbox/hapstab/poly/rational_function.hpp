@@ -1,0 +1,99 @@
+// hapstab/poly/rational_function.hpp -- rational functions num(x)/den(x) over a field F.
+//
+// Over `rational` they are kept canonical: reduced by the gcd and with a monic denominator,
+// so two equal rational functions have equal num() and den() (this is what makes the exact
+// identity proofs of (35)-(38) = (44) in paper 001 a comparison of coefficients). Over
+// floating types no reduction is done (a numerical gcd is not trustworthy).
+#pragma once
+
+#include <utility>
+
+#include "hapstab/poly/polynomial.hpp"
+
+namespace hapstab {
+
+template <class F>
+class RationalFunction {
+ public:
+  using value_type = F;
+
+  RationalFunction(Polynomial<F> num, Polynomial<F> den = Polynomial<F>(F(1)))
+      : num_(std::move(num)), den_(std::move(den)) {
+    if (den_.is_zero()) throw InputError("RationalFunction: zero denominator");
+    normalise();
+  }
+  template <class A, std::enable_if_t<std::is_arithmetic_v<A> || std::is_same_v<A, F>, int> = 0>
+  RationalFunction(A c) : RationalFunction(Polynomial<F>(F(c))) {}  // NOLINT: constants
+
+  const Polynomial<F>& num() const { return num_; }
+  const Polynomial<F>& den() const { return den_; }
+  bool is_zero() const { return num_.is_zero(); }
+
+  RationalFunction operator-() const { return RationalFunction(-num_, den_, raw{}); }
+  friend RationalFunction operator+(const RationalFunction& a, const RationalFunction& b) {
+    if (a.den_ == b.den_) return RationalFunction(a.num_ + b.num_, a.den_);
+    return RationalFunction(a.num_ * b.den_ + b.num_ * a.den_, a.den_ * b.den_);
+  }
+  friend RationalFunction operator-(const RationalFunction& a, const RationalFunction& b) { return a + (-b); }
+  friend RationalFunction operator*(const RationalFunction& a, const RationalFunction& b) {
+    return RationalFunction(a.num_ * b.num_, a.den_ * b.den_);
+  }
+  friend RationalFunction operator/(const RationalFunction& a, const RationalFunction& b) {
+    if (b.num_.is_zero()) throw InputError("RationalFunction: division by the zero rational function");
+    return RationalFunction(a.num_ * b.den_, a.den_ * b.num_);
+  }
+  RationalFunction& operator+=(const RationalFunction& o) { return *this = *this + o; }
+  RationalFunction& operator-=(const RationalFunction& o) { return *this = *this - o; }
+  RationalFunction& operator*=(const RationalFunction& o) { return *this = *this * o; }
+  RationalFunction& operator/=(const RationalFunction& o) { return *this = *this / o; }
+  /// Equal as functions: a.num*b.den == b.num*a.den (exact over rational).
+  friend bool operator==(const RationalFunction& a, const RationalFunction& b) {
+    return a.num_ * b.den_ == b.num_ * a.den_;
+  }
+  friend bool operator!=(const RationalFunction& a, const RationalFunction& b) { return !(a == b); }
+
+  /// f^n, n may be negative (then f must not be zero).
+  RationalFunction pow(int n) const {
+    if (n < 0) {
+      if (num_.is_zero()) throw InputError("RationalFunction::pow: zero to a negative power");
+      return RationalFunction(den_.pow(static_cast<unsigned>(-n)), num_.pow(static_cast<unsigned>(-n)));
+    }
+    return RationalFunction(num_.pow(static_cast<unsigned>(n)), den_.pow(static_cast<unsigned>(n)));
+  }
+  /// (num' den - num den') / den^2
+  RationalFunction derivative() const {
+    return RationalFunction(num_.derivative() * den_ - num_ * den_.derivative(), den_ * den_);
+  }
+  /// num(x)/den(x) in the scalar X.
+  template <class X>
+  X operator()(const X& x) const {
+    return num_(x) / den_(x);
+  }
+
+ private:
+  struct raw {};
+  RationalFunction(Polynomial<F> n, Polynomial<F> d, raw) : num_(std::move(n)), den_(std::move(d)) {}
+  void normalise() {
+    if constexpr (std::is_same_v<F, rational>) {
+      if (num_.is_zero()) {
+        den_ = Polynomial<F>(F(1));
+        return;
+      }
+      Polynomial<F> g = gcd(num_, den_);
+      if (g.degree() > 0) {
+        num_ = divmod(num_, g).first;
+        den_ = divmod(den_, g).first;
+      }
+      const F l = den_.leading();
+      if (l != F(1)) {
+        num_ = num_ * Polynomial<F>(F(1) / l);
+        den_ = den_.monic();
+      }
+    }
+  }
+  Polynomial<F> num_, den_;
+};
+
+extern template class RationalFunction<rational>;
+
+}  // namespace hapstab

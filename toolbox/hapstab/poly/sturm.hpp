@@ -1,0 +1,56 @@
+// hapstab/poly/sturm.hpp -- exact real-root counting and isolation over Q (Sturm's theorem).
+//
+// Used by the proofs of paper 001 to show inequalities such as r^(w) > 0 of (9), or the
+// passivity bound (45), over a whole frequency interval after the substitution t = tan(wT/2):
+// a rational function of t has constant sign on an interval iff its numerator and denominator
+// have no real root there, which Sturm sequences decide exactly.
+//
+// Method: the square-free part q = p / gcd(p, p') (same distinct roots, all simple), its Sturm
+// sequence q, q', -rem(.,.), ..., the Cauchy bound |x| < 1 + max|a_i/a_n| for every root, and
+// bisection on rational endpoints. A midpoint that is itself a root is returned as an exact,
+// degenerate interval [x, x]; every other interval has rational endpoints that are not roots
+// and contains exactly one root, at which q changes sign.
+#pragma once
+
+#include <vector>
+
+#include "hapstab/poly/polynomial.hpp"
+
+namespace hapstab {
+
+/// p / gcd(p, p'): the monic square-free part (same distinct roots, all simple). Throws
+/// InputError for the zero polynomial.
+Polynomial<rational> square_free_part(const Polynomial<rational>& p);
+
+/// The Sturm sequence of the square-free part of p: s0 = square_free_part(p), s1 = s0',
+/// s_{k+1} = -rem(s_{k-1}, s_k) (each scaled by a positive constant to keep coefficients
+/// small), ending in a nonzero constant. Throws InputError for the zero polynomial.
+std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p);
+
+/// Number of sign changes of the sequence at x (zeros skipped).
+int sign_variations(const std::vector<Polynomial<rational>>& seq, const rational& x);
+
+/// Number of DISTINCT real roots of p in (a, b] (0 when a >= b). Throws InputError for p = 0.
+int count_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b);
+
+/// [lo, hi] with exactly one root of p in it; lo == hi means the root is the rational lo.
+struct RootInterval {
+  rational lo, hi;
+  bool is_exact() const { return lo == hi; }
+};
+
+/// All distinct real roots of p, as sorted intervals (neighbours may share an endpoint, which
+/// is then not a root). Degree 0: none. p = 0 throws.
+std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p);
+
+/// The distinct real roots of p in the closed interval [a, b], sorted; every returned interval
+/// lies inside [a, b]. Throws InputError if a > b or p = 0.
+std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b);
+
+/// Shrinks r (which must isolate one root of p) until hi - lo <= width (width > 0), by
+/// bisection with exact sign tests, accelerated by secant (regula falsi, Illinois) steps that
+/// are accepted only when they shrink the bracket by at least half; a rational root hit on the
+/// way is returned exactly. Throws InputError if r does not bracket a root of p.
+RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const rational& width);
+
+}  // namespace hapstab
