@@ -1,0 +1,125 @@
+// The exact transfer-function expression parser (lti/parse.hpp).
+#include <gtest/gtest.h>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/error.hpp"
+
+using namespace hapstab;
+using P = Polynomial<rational>;
+
+namespace {
+TransferFunction parse(const std::string& s, std::map<std::string, rational> params = {}, rational T = 0) {
+  ParseOptions o;
+  o.parameters = std::move(params);
+  o.T = T;
+  return parse_tf(s, o);
+}
+// Throws InputError whose message contains every fragment.
+void expect_error(const std::string& s, std::vector<std::string> fragments, std::map<std::string, rational> params = {},
+                  rational T = rational(1, 1000)) {
+  try {
+    parse(s, params, T);
+    ADD_FAILURE() << "accepted: " << s;
+  } catch (const InputError& e) {
+    for (const auto& f : fragments) EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(Parse, VirtualWallIsExact) {
+  // K + B (z-1)/(T z) = ((K + B/T) z - B/T)/z = (6000 z - 5000)/z for K=1000, B=5, T=1/1000.
+  auto G = parse("K + B*(z-1)/(T*z)", {{"K", 1000}, {"B", 5}}, rational(1, 1000));
+  EXPECT_EQ(G.domain, Domain::z);
+  EXPECT_EQ(G.T, rational(1, 1000));
+  EXPECT_EQ(G.num(), P(std::vector<rational>{-5000, 6000}));
+  EXPECT_EQ(G.den(), P(std::vector<rational>{0, 1}));
+}
+
+TEST(Parse, DecimalsAreExactRationals) {
+  auto a = parse("0.001*z/(z-0.5)", {}, rational(1, 10));
+  auto b = parse("1e-3*z/(z-1/2)", {}, rational(1, 10));
+  EXPECT_EQ(a.H.num(), b.H.num());
+  EXPECT_EQ(a.H.den(), b.H.den());
+  EXPECT_EQ(a.num().coeff(1), rational(1, 1000));
+}
+
+TEST(Parse, NegativeAndParenthesisedPowers) {
+  auto a = parse("z^-1", {}, 1);
+  EXPECT_EQ(a.num(), P(rational(1)));
+  EXPECT_EQ(a.den(), P::monomial(1));
+  auto b = parse("(z-1)^(-2) * (z-1)^2", {}, 1);
+  EXPECT_EQ(b.num(), P(rational(1)));
+  EXPECT_EQ(b.den(), P(rational(1)));
+  auto c = parse("(1 - z^-1)^3", {}, 1);  // (z-1)^3 / z^3
+  EXPECT_EQ(c.num(), P(std::vector<rational>{-1, 1}).pow(3));
+  EXPECT_EQ(c.den(), P::monomial(3));
+  auto d = parse("-z^2", {}, 1);  // unary minus binds looser than ^
+  EXPECT_EQ(d.num(), P::monomial(2, rational(-1)));
+}
+
+TEST(Parse, PrecedenceAndAssociativity) {
+  auto a = parse("1 - 2 - 3", {}, 1);
+  EXPECT_EQ(a.num(), P(rational(-4)));
+  auto b = parse("12 / 2 / 3", {}, 1);
+  EXPECT_EQ(b.num(), P(rational(2)));
+  auto c = parse("2 + 3*z^2", {}, 1);
+  EXPECT_EQ(c.num(), P(std::vector<rational>{2, 0, 3}));
+}
+
+TEST(Parse, ContinuousVariable) {
+  auto G = parse("1/(m*s^2 + b*s)", {{"m", 2}, {"b", rational(1, 2)}});
+  EXPECT_EQ(G.domain, Domain::s);
+  EXPECT_EQ(G.T, 0);
+  EXPECT_EQ(G.den().degree(), 2);
+  EXPECT_EQ(G.den().leading(), 1);  // monic denominator
+  EXPECT_EQ(G.num(), P(rational(1, 2)));
+}
+
+TEST(Parse, CancellationIsExact) {
+  auto G = parse("(z-1)/(z-1) + (z^2-1)/(z+1)", {}, 1);
+  EXPECT_EQ(G.num(), P::monomial(1));  // 1 + (z-1) = z
+  EXPECT_EQ(G.den(), P(rational(1)));
+}
+
+TEST(Parse, ErrorsNameTheColumnAndWhatWasExpected) {
+  expect_error("", {"empty"});
+  expect_error("K + 1", {"column 1", "unknown name 'K'", "--set"});
+  expect_error("1 + (z - 1", {"column 11", "expected ')'", "column 5"});
+  expect_error("z)", {"column 2", "unmatched ')'"});
+  expect_error("2 *", {"column 4", "ends"});
+  expect_error("3 4", {"column 3", "expected an operator"});
+  expect_error("z^1.5", {"column 3", "integer exponent"});
+  expect_error("z^x", {"integer exponent"});
+  expect_error("1/(z-z)", {"column 2", "division by zero"});
+  expect_error("(z-z)^-1", {"division by zero"});
+  expect_error("z # 2", {"column 3", "unexpected character '#'"});
+  expect_error("z + s", {"mixes"});
+  expect_error("()", {"column 2", "empty parentheses"});
+  expect_error("1.2.3", {"malformed number"});
+  expect_error("z^2^2", {"ambiguous"});
+  expect_error("z^99999", {"too large"});
+}
+
+TEST(Parse, SamplePeriodRules) {
+  expect_error("K*T", {"no sample period"}, {{"K", 1}}, 0);
+  expect_error("z/(z-1/2)", {"sample period"}, {}, 0);
+  try {
+    ParseOptions o;
+    o.T = -1;
+    parse_tf("z", o);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("T must be > 0"), std::string::npos);
+  }
+  expect_error("z", {"clashes"}, {{"z", 1}});
+}
+
+TEST(Parse, InterconnectionsAreExact) {
+  auto a = parse("1/(z-1/2)", {}, 1), b = parse("2", {}, 1);
+  auto cl = feedback(a, b);  // a/(1+ab) = 1/(z - 1/2 + 2) = 1/(z + 3/2)
+  EXPECT_EQ(cl.den(), P(std::vector<rational>{rational(3, 2), 1}));
+  EXPECT_EQ(series(a, b).num(), P(rational(2)));
+  EXPECT_EQ(parallel(a, b).num(), P(std::vector<rational>{0, 2}));  // (1 + 2z - 1)/(z-1/2)
+  auto c = parse("1/s", {}, 0);
+  EXPECT_THROW(series(a, c), InputError);
+}

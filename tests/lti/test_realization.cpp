@@ -1,0 +1,66 @@
+// Exact tf <-> ss conversions and minimal realisations (lti/realization.hpp).
+#include <gtest/gtest.h>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
+
+using namespace hapstab;
+
+namespace {
+TransferFunction z_tf(const std::string& s) {
+  ParseOptions o;
+  o.T = rational(1, 100);
+  return parse_tf(s, o);
+}
+bool same(const TransferFunction& a, const TransferFunction& b) {
+  return a.num() == b.num() && a.den() == b.den() && a.T == b.T && a.domain == b.domain;
+}
+}  // namespace
+
+TEST(Realization, SisoRoundTripIsExact) {
+  for (const char* e : {"(6000*z - 5000)/z", "z^2/(z^2 - 1/2*z + 1/16)", "3", "(z-1)/(z+0.9999)",
+                        "(2*z^3 + 1)/(z^3 - z/3 + 1/7)", "1/(z-1)"}) {
+    auto G = z_tf(e);
+    auto sys = tf2ss(G);
+    EXPECT_EQ(sys.states(), G.den().degree()) << e;
+    auto back = ss2tf(sys);
+    EXPECT_TRUE(same(back(0, 0), G)) << e << " -> " << back(0, 0).to_string();
+  }
+}
+
+TEST(Realization, ImproperIsRefused) { EXPECT_THROW(tf2ss(z_tf("z^2/(z-1)")), InputError); }
+
+TEST(Realization, CharpolyMatchesKnownMatrix) {
+  Mat<rational> A(2, 2);
+  A << 1, 2, 3, 4;  // x^2 - 5x - 2
+  EXPECT_EQ(charpoly(A), Polynomial<rational>(std::vector<rational>{-2, -5, 1}));
+}
+
+TEST(Realization, MimoRoundTripAndMinreal) {
+  TransferMatrix G;
+  G.domain = Domain::z;
+  G.T = rational(1, 100);
+  G.entries = {{z_tf("1/(z-1/2)"), z_tf("0")}, {z_tf("1/(z-1/2)"), z_tf("z/(z+1/3)")}};
+  auto sys = tf2ss(G);
+  auto back = ss2tf(sys);
+  for (size_t i = 0; i < 2; ++i)
+    for (size_t j = 0; j < 2; ++j) EXPECT_TRUE(same(back(i, j), G(i, j))) << i << "," << j;
+  auto m = minreal(sys);
+  EXPECT_EQ(m.states(), 2);
+  auto back2 = ss2tf(m);
+  for (size_t i = 0; i < 2; ++i)
+    for (size_t j = 0; j < 2; ++j) EXPECT_TRUE(same(back2(i, j), G(i, j))) << i << "," << j;
+}
+
+TEST(Realization, MinrealRemovesUnobservableState) {
+  // x1 driven, x2 driven but never observed: 1 state remains, same transfer function.
+  Mat<rational> A(2, 2), B(2, 1), C(1, 2), D(1, 1);
+  A << rational(1, 2), 0, 0, rational(1, 3);
+  B << 1, 1;
+  C << 1, 0;
+  D << 0;
+  StateSpace<rational> s{A, B, C, D, rational(1, 10)};
+  auto m = minreal(s);
+  EXPECT_EQ(m.states(), 1);
+  EXPECT_TRUE(same(ss2tf(m)(0, 0), ss2tf(s)(0, 0)));
+}

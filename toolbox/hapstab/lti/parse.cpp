@@ -1,0 +1,277 @@
+#include "hapstab/lti/parse.hpp"
+
+#include <cctype>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab {
+namespace {
+
+using RF = RationalFunction<rational>;
+using P = Polynomial<rational>;
+
+enum class Tok { number, name, plus, minus, star, slash, caret, lparen, rparen, end };
+
+struct Token {
+  Tok kind;
+  std::string text;
+  size_t column;  // 1-based
+};
+
+std::string describe(const Token& t) {
+  switch (t.kind) {
+    case Tok::end: return "end of expression";
+    case Tok::number: return "number '" + t.text + "'";
+    case Tok::name: return "name '" + t.text + "'";
+    default: return "'" + t.text + "'";
+  }
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, const ParseOptions& opt, char var) : src_(text), opt_(opt), var_(var) {
+    lex();
+  }
+
+  RF parse() {
+    if (tokens_.size() == 1) fail(tokens_[0], "the expression is empty");
+    RF r = expr();
+    if (peek().kind != Tok::end) {
+      if (peek().kind == Tok::rparen) fail(peek(), "unmatched ')'");
+      fail(peek(), "expected an operator (+ - * / ^) or the end of the expression, found " + describe(peek()));
+    }
+    return r;
+  }
+  bool used_T() const { return used_T_; }
+
+ private:
+  std::string_view src_;
+  const ParseOptions& opt_;
+  char var_;
+  std::vector<Token> tokens_;
+  size_t pos_ = 0;
+  bool used_T_ = false;
+
+  [[noreturn]] void fail(const Token& at, const std::string& what) const {
+    std::ostringstream os;
+    os << "expression '" << src_ << "', column " << at.column << ": " << what;
+    throw InputError(os.str());
+  }
+
+  void lex() {
+    size_t i = 0;
+    while (i < src_.size()) {
+      char c = src_[i];
+      if (std::isspace(static_cast<unsigned char>(c))) {
+        ++i;
+        continue;
+      }
+      size_t col = i + 1;
+      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+        size_t j = i;
+        while (j < src_.size() && (std::isdigit(static_cast<unsigned char>(src_[j])) || src_[j] == '.')) ++j;
+        // exponent only when 'e' is followed by digits (optionally signed): "1e-3", not "2e"
+        if (j < src_.size() && (src_[j] == 'e' || src_[j] == 'E')) {
+          size_t k = j + 1;
+          if (k < src_.size() && (src_[k] == '+' || src_[k] == '-')) ++k;
+          if (k < src_.size() && std::isdigit(static_cast<unsigned char>(src_[k]))) {
+            while (k < src_.size() && std::isdigit(static_cast<unsigned char>(src_[k]))) ++k;
+            j = k;
+          }
+        }
+        tokens_.push_back({Tok::number, std::string(src_.substr(i, j - i)), col});
+        i = j;
+        continue;
+      }
+      if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        size_t j = i;
+        while (j < src_.size() && (std::isalnum(static_cast<unsigned char>(src_[j])) || src_[j] == '_')) ++j;
+        tokens_.push_back({Tok::name, std::string(src_.substr(i, j - i)), col});
+        i = j;
+        continue;
+      }
+      Tok k;
+      switch (c) {
+        case '+': k = Tok::plus; break;
+        case '-': k = Tok::minus; break;
+        case '*': k = Tok::star; break;
+        case '/': k = Tok::slash; break;
+        case '^': k = Tok::caret; break;
+        case '(': k = Tok::lparen; break;
+        case ')': k = Tok::rparen; break;
+        default:
+          fail({Tok::end, "", col}, std::string("unexpected character '") + c +
+                                        "' (allowed: numbers, names, + - * / ^ and parentheses)");
+      }
+      tokens_.push_back({k, std::string(1, c), col});
+      ++i;
+    }
+    tokens_.push_back({Tok::end, "", src_.size() + 1});
+  }
+
+  const Token& peek() const { return tokens_[pos_]; }
+  const Token& next() { return tokens_[pos_++]; }
+
+  // expr := term (('+'|'-') term)*
+  RF expr() {
+    RF r = term();
+    while (peek().kind == Tok::plus || peek().kind == Tok::minus) {
+      bool plus = next().kind == Tok::plus;
+      RF t = term();
+      r = plus ? r + t : r - t;
+    }
+    return r;
+  }
+
+  // term := unary (('*'|'/') unary)*
+  RF term() {
+    RF r = unary();
+    while (peek().kind == Tok::star || peek().kind == Tok::slash) {
+      const Token& op = next();
+      RF f = unary();
+      if (op.kind == Tok::star) {
+        r = r * f;
+      } else {
+        if (f.num().is_zero()) fail(op, "division by zero");
+        r = r / f;
+      }
+    }
+    return r;
+  }
+
+  // unary := ('+'|'-') unary | power
+  RF unary() {
+    if (peek().kind == Tok::minus) {
+      next();
+      return -unary();
+    }
+    if (peek().kind == Tok::plus) {
+      next();
+      return unary();
+    }
+    return power();
+  }
+
+  // power := primary ('^' exponent)?   exponent := [+-]? integer | '(' [+-]? integer ')'
+  RF power() {
+    RF base = primary();
+    if (peek().kind != Tok::caret) return base;
+    const Token& caret = next();
+    bool paren = false;
+    if (peek().kind == Tok::lparen) {
+      paren = true;
+      next();
+    }
+    int sign = 1;
+    if (peek().kind == Tok::minus || peek().kind == Tok::plus) sign = next().kind == Tok::minus ? -1 : 1;
+    const Token& e = peek();
+    bool integer_literal = e.kind == Tok::number && e.text.find_first_not_of("0123456789") == std::string::npos;
+    if (!integer_literal) fail(e, "expected an integer exponent after '^' at column " + std::to_string(caret.column) +
+                                      ", found " + describe(e));
+    next();
+    if (e.text.size() > 4) fail(e, "exponent " + e.text + " is too large (at most 9999)");
+    int n = sign * std::stoi(e.text);
+    if (paren) {
+      if (peek().kind != Tok::rparen) fail(peek(), "expected ')' to close the exponent, found " + describe(peek()));
+      next();
+    }
+    if (n < 0 && base.num().is_zero()) fail(caret, "division by zero (zero raised to a negative power)");
+    if (peek().kind == Tok::caret) fail(peek(), "write (a^b)^c with parentheses: a^b^c is ambiguous");
+    return base.pow(n);
+  }
+
+  // primary := number | name | '(' expr ')'
+  RF primary() {
+    const Token& t = peek();
+    switch (t.kind) {
+      case Tok::number: {
+        next();
+        auto q = try_parse_rational(t.text);
+        if (!q) fail(t, "malformed number '" + t.text + "'");
+        return RF(P(*q));
+      }
+      case Tok::name: {
+        next();
+        if (t.text.size() == 1 && t.text[0] == var_) return RF(P::monomial(1, rational(1)));
+        auto it = opt_.parameters.find(t.text);
+        if (it != opt_.parameters.end()) return RF(P(it->second));
+        if (t.text == "T") {
+          if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (--T)");
+          used_T_ = true;
+          return RF(P(opt_.T));
+        }
+        if ((t.text == "z" || t.text == "s") && t.text[0] != var_)
+          fail(t, std::string("the expression mixes the variables s and z (this one is in ") + var_ + ")");
+        std::string known = std::string(1, var_) + ", T";
+        for (const auto& [k, v] : opt_.parameters) known += ", " + k;
+        fail(t, "unknown name '" + t.text + "' (known: " + known + "; give parameters with --set NAME=VALUE)");
+      }
+      case Tok::lparen: {
+        next();
+        if (peek().kind == Tok::rparen) fail(peek(), "empty parentheses");
+        RF r = expr();
+        if (peek().kind != Tok::rparen)
+          fail(peek(), "expected ')' to close '(' at column " + std::to_string(t.column) + ", found " + describe(peek()));
+        next();
+        return r;
+      }
+      case Tok::end: fail(t, "the expression ends where a number, a name or '(' was expected");
+      default: fail(t, "expected a number, a name or '(', found " + describe(t));
+    }
+  }
+};
+
+char infer_variable(std::string_view text, const ParseOptions& opt) {
+  if (opt.variable == 'z' || opt.variable == 's') return opt.variable;
+  if (opt.variable != 0) throw InputError(std::string("variable must be 'z' or 's', got '") + opt.variable + "'");
+  bool has_z = false, has_s = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (!std::isalpha(static_cast<unsigned char>(text[i]))) continue;
+    size_t j = i;
+    while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+    auto name = text.substr(i, j - i);
+    bool after_digit = i > 0 && (std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.');
+    if (!after_digit || (name != "e" && name != "E")) {
+      if (name == "z" && !opt.parameters.count("z")) has_z = true;
+      if (name == "s" && !opt.parameters.count("s")) has_s = true;
+    }
+    i = j - 1;
+  }
+  if (has_z && has_s) throw InputError("expression '" + std::string(text) + "' mixes the variables s and z");
+  if (has_z) return 'z';
+  if (has_s) return 's';
+  return opt.T > 0 ? 'z' : 's';
+}
+
+}  // namespace
+
+TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
+  if (options.T < 0) throw InputError("sample period T must be > 0, got " + to_decimal(options.T, 17));
+  for (const auto& [k, v] : options.parameters) {
+    if (k.empty() || !(std::isalpha(static_cast<unsigned char>(k[0])) || k[0] == '_'))
+      throw InputError("parameter name '" + k + "' must start with a letter");
+    if (k == "T") throw InputError("parameter 'T' is the sample period: give it with --T, not --set");
+  }
+  char var = infer_variable(text, options);
+  if (options.parameters.count(std::string(1, var)))
+    throw InputError(std::string("parameter '") + var + "' clashes with the variable " + var);
+  Parser p(text, options, var);
+  RF H = p.parse();
+  TransferFunction out;
+  out.H = H;
+  out.domain = var == 'z' ? Domain::z : Domain::s;
+  if (out.domain == Domain::z) {
+    if (options.T <= 0)
+      throw InputError("expression '" + std::string(text) + "' is in z: a sample period T > 0 is required (--T)");
+    out.T = options.T;
+  } else {
+    out.T = 0;
+  }
+  return out;
+}
+
+}  // namespace hapstab

@@ -1,0 +1,40 @@
+// hapstab/lti/realization.hpp -- exact conversions between transfer functions and state
+// space (python-control's tf2ss / ss2tf), in rational arithmetic.
+//
+//   tf2ss: controllable canonical form of a proper SISO H = D + C (xI - A)^{-1} B, and for a
+//          transfer matrix one controllable form per column (common column denominator);
+//   ss2tf: C (xI - A)^{-1} B + D entry by entry, (xI - A)^{-1} = adj/det computed by the
+//          Faddeev-LeVerrier recursion (exact over Q);
+//   minreal: removes uncontrollable and unobservable states by exact Kalman decompositions.
+// Used to check realisations such as (15) and (17) of paper 000 against transfer functions.
+#pragma once
+
+#include <vector>
+
+#include "hapstab/lti/state_space.hpp"
+#include "hapstab/lti/tf.hpp"
+
+namespace hapstab {
+
+/// A p x m matrix of transfer functions sharing a domain and sample period.
+struct TransferMatrix {
+  std::vector<std::vector<TransferFunction>> entries;  ///< entries[i][j]: input j -> output i
+  Domain domain = Domain::z;
+  rational T = 0;
+  size_t outputs() const { return entries.size(); }
+  size_t inputs() const { return entries.empty() ? 0 : entries[0].size(); }
+  const TransferFunction& operator()(size_t i, size_t j) const { return entries.at(i).at(j); }
+};
+
+/// Proper SISO H -> controllable canonical form (deg den states). InputError if improper.
+StateSpace<rational> tf2ss(const TransferFunction& G);
+/// Proper transfer matrix -> a realisation (not minimal in general; see minreal).
+StateSpace<rational> tf2ss(const TransferMatrix& G);
+/// Transfer matrix of a state-space model, exact; entries reduced.
+TransferMatrix ss2tf(const StateSpace<rational>& sys);
+/// Characteristic polynomial det(xI - A), exact (Faddeev-LeVerrier).
+Polynomial<rational> charpoly(const Mat<rational>& A);
+/// Minimal realisation: keeps the controllable and observable part (exact rank decisions).
+StateSpace<rational> minreal(const StateSpace<rational>& sys);
+
+}  // namespace hapstab
