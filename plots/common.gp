@@ -1,0 +1,26 @@
+# plots/common.gp -- the terminal, size, fonts and line styles every hapstab figure shares.
+#
+# Every figure script is called as
+#   gnuplot -e "datadir='DATA'; outdir='OUT'; fmt='png'" plots/NAME.gp
+# and starts with   load 'plots/common.gp'   after setting  name = 'NAME'.
+# fmt: png (screens, 1600x1000 px), pdf (papers, 6x3.75 in), svg, tex (cairolatex + pdf,
+# for \input{NAME.tex} in LaTeX: text is typeset by LaTeX in the document's font).
+if (!exists("fmt")) fmt = 'png'
+if (!exists("datadir")) datadir = 'out/data'
+if (!exists("outdir")) outdir = 'out/figures'
+if (fmt eq 'png') { set terminal pngcairo size 1600,1000 enhanced font 'DejaVu Sans,22' linewidth 2; set output outdir.'/'.name.'.png' }
+if (fmt eq 'pdf') { set terminal pdfcairo size 6in,3.75in enhanced font 'DejaVu Sans,10' linewidth 1.5; set output outdir.'/'.name.'.pdf' }
+if (fmt eq 'svg') { set terminal svg size 1200,750 enhanced font 'DejaVu Sans,16' linewidth 2 background rgb 'white'; set output outdir.'/'.name.'.svg' }
+if (fmt eq 'tex') { set terminal cairolatex pdf size 5in,3.1in linewidth 1.5; set output outdir.'/'.name.'.tex' }
+tex = (fmt eq 'tex')
+set border lw 1
+set grid lc rgb '#d0d0d0' lw 0.5
+set key box opaque samplen 2 spacing 1.1
+set style line 1 lc rgb '#0072B2' lw 2 pt 7 ps 1.0
+set style line 2 lc rgb '#D55E00' lw 2 pt 5 ps 1.0
+set style line 3 lc rgb '#009E73' lw 2 pt 9 ps 1.0
+set style line 4 lc rgb '#CC79A7' lw 2 pt 11 ps 1.0
+set style line 5 lc rgb '#E69F00' lw 2 pt 13 ps 1.0
+set style line 6 lc rgb '#56B4E9' lw 2 pt 3 ps 1.0
+set style line 7 lc rgb '#000000' lw 1.5 dt 2
+set style line 8 lc rgb '#808080' lw 1 dt 3
