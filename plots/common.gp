@@ -1,8 +1,8 @@
 # plots/common.gp -- the terminal, size, fonts and line styles every hapstab figure shares.
 #
 # Every figure script is called as
-#   gnuplot -e "datadir='DATA'; outdir='OUT'; fmt='png'" plots/NAME.gp
-# and starts with   load 'plots/common.gp'   after setting  name = 'NAME'.
+#   gnuplot -e "plotdir='plots'; datadir='DATA'; outdir='OUT'; fmt='png'" plots/NAME.gp
+# and starts with  name = 'NAME'; if (!exists("plotdir")) plotdir = 'plots'; load plotdir.'/common.gp'
 # fmt: png (screens, 1600x1000 px), pdf (papers, 6x3.75 in), svg, tex (cairolatex + pdf,
 # for \input{NAME.tex} in LaTeX: text is typeset by LaTeX in the document's font).
 if (!exists("fmt")) fmt = 'png'

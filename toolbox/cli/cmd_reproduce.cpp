@@ -1,0 +1,130 @@
+// `hapstab reproduce`: the main job. Every proof, every figure (data + gnuplot, in every
+// requested format), then DIR/report.md and DIR/index.html. Exit 1 when a claim fails or a
+// figure cannot be drawn.
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "cli/figure.hpp"
+#include "cli/reproduce.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> parse_formats(const std::string& text) {
+  static const std::set<std::string> known{"png", "pdf", "svg", "tex"};
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string f;
+  while (std::getline(ss, f, ','))
+    if (!f.empty()) {
+      if (!known.count(f)) throw InputError("--format: unknown format '" + f + "' (expected png, pdf, svg, tex)");
+      out.push_back(f);
+    }
+  if (out.empty()) throw InputError("--format: no format given (expected e.g. png,pdf,svg,tex)");
+  if (out.front() != "png" && std::find(out.begin(), out.end(), "png") == out.end())
+    out.insert(out.begin(), "png");  // the HTML report shows PNGs
+  return out;
+}
+
+struct Opts {
+  std::string out = "out", only, format = "png,pdf,svg,tex";
+  bool quiet = false;
+};
+
+int run(const Opts& o) {
+  static const std::set<std::string> papers{"", "000", "001", "002", "toolbox"};
+  if (!papers.count(o.only))
+    throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002 or toolbox)");
+  const auto formats = parse_formats(o.format);
+  const fs::path dir = o.out;
+  auto t0 = std::chrono::steady_clock::now();
+  ReportInput rep;
+  if (!o.quiet) std::cerr << "reproduce: running the proofs\n";
+  double s = 0;
+  if (o.only != "toolbox") rep.claims = run_proofs(o.only, true, s);
+  size_t claim_fails = 0;
+  for (const auto& c : rep.claims) {
+    claim_fails += !c.holds;
+    if (!c.holds) std::cerr << "reproduce: claim " << c.id << " FAILS: " << c.evidence << "\n";
+  }
+  if (!o.quiet) std::cerr << "reproduce: " << rep.claims.size() << " claims checked in " << s << " s\n";
+  size_t n = 0, total = 0;
+  for (const auto& f : figures()) total += o.only.empty() || o.only == f.paper;
+  for (const auto& f : figures()) {
+    if (!o.only.empty() && o.only != f.paper) continue;
+    ++n;
+    FigureEntry e{f.name, f.paper, f.caption};
+    auto f0 = std::chrono::steady_clock::now();
+    try {
+      draw_figure(f, dir / "data", dir / "figures", formats);
+    } catch (const std::exception& ex) {
+      e.ok = false;
+      e.error = ex.what();
+      std::cerr << "reproduce: figure " << f.name << " NOT drawn: " << ex.what() << "\n";
+    }
+    e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count();
+    if (!o.quiet) std::cerr << "reproduce: [figure " << n << "/" << total << "] " << f.name << " (" << e.seconds << " s)\n";
+    rep.figures.push_back(e);
+  }
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_report_md(rep, dir);
+  write_index_html(rep, dir);
+  size_t fig_fails = 0;
+  for (const auto& f : rep.figures) fig_fails += !f.ok;
+  std::cout << "reproduce: " << rep.claims.size() - claim_fails << " claims hold, " << claim_fails << " fail; "
+            << rep.figures.size() - fig_fails << " figures drawn, " << fig_fails << " failed; report: "
+            << (dir / "report.md").string() << " and " << (dir / "index.html").string() << "\n";
+  return (claim_fails || fig_fails) ? exit_property_fails : exit_ok;
+}
+
+const Register reg({"reproduce",
+                    "The main job: every proof and every figure of the three papers -> DIR/report.md, "
+                    "DIR/index.html, DIR/figures/, DIR/data/",
+                    [](CLI::App& app) {
+                      auto o = std::make_shared<Opts>();
+                      app.add_option("--out", o->out, "Output folder")->capture_default_str();
+                      app.add_option("--only", o->only, "Only this paper: 000, 001, 002, or toolbox (own charts)");
+                      app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex")
+                          ->capture_default_str();
+                      app.add_flag("--quiet", o->quiet, "No progress on stderr");
+                      return [o]() { return run(*o); };
+                    }});
+
+const Register fig_reg({"figure", "Draw one figure (or --list them): data into DIR/data, figures into DIR/figures",
+                        [](CLI::App& app) {
+                          auto name = std::make_shared<std::string>();
+                          auto out = std::make_shared<std::string>("out");
+                          auto format = std::make_shared<std::string>("png,pdf,svg,tex");
+                          auto list = std::make_shared<bool>(false);
+                          app.add_option("name", *name, "Figure name (see --list)");
+                          app.add_option("--out", *out, "Output folder")->capture_default_str();
+                          app.add_option("--format", *format, "png,pdf,svg,tex")->capture_default_str();
+                          app.add_flag("--list", *list, "List the figures");
+                          return [=]() {
+                            if (*list || name->empty()) {
+                              for (const auto& f : figures())
+                                std::cout << f.name << "  [" << f.paper << "]  " << f.caption << "\n";
+                              if (!*list) throw InputError("figure: give a figure name (see --list)");
+                              return int(exit_ok);
+                            }
+                            for (const auto& f : figures())
+                              if (*name == f.name) {
+                                draw_figure(f, fs::path(*out) / "data", fs::path(*out) / "figures",
+                                            parse_formats(*format));
+                                std::cout << "figure " << f.name << " -> " << (fs::path(*out) / "figures").string()
+                                          << "\n";
+                                return int(exit_ok);
+                              }
+                            throw InputError("figure: unknown figure '" + *name + "' (see hapstab figure --list)");
+                          };
+                        }});
+
+}  // namespace
+}  // namespace hapstab::cli

@@ -1,0 +1,180 @@
+#include "cli/reproduce.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::cli {
+
+namespace fs = std::filesystem;
+using proofs::ClaimResult;
+
+const char* paper_title(const std::string& p) {
+  if (p == "000")
+    return "Bianchini, Orlandesi, Prattichizzo: An LMI framework for analysis and design of multi-dimensional "
+           "haptic systems";
+  if (p == "001") return "Roberts, Moore, Colgate: A new expression for the passivity bound for a class of sampled-data systems";
+  if (p == "002") return "Tsai, Colgate: Stability of discrete time systems with unilateral nonlinearities";
+  return "The toolbox's own charts";
+}
+
+std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double& seconds) {
+  std::vector<ClaimResult> all;
+  auto t0 = std::chrono::steady_clock::now();
+  const auto& reg = proofs::registry();
+  size_t i = 0;
+  for (const auto& p : reg) {
+    ++i;
+    if (!only.empty() && only != p.paper) continue;
+    proofs::Checker check(p.paper);
+    auto s0 = std::chrono::steady_clock::now();
+    try {
+      p.run(check);
+    } catch (const std::exception& e) {
+      check.claim(std::string(p.paper) + "." + p.id + ".completes", "-",
+                  std::string("proof ran to the end: ") + p.title, proofs::Method::exact, false,
+                  std::string("threw: ") + e.what());
+    }
+    double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+    if (!quiet) {
+      std::cerr << "[proof " << i << "/" << reg.size() << "] " << p.paper << " " << p.id << ": "
+                << check.results().size() << " claims, " << dt << " s\n";
+      for (const auto& c : check.results())
+        std::cout << (c.holds ? "  holds  " : "  FAILS  ") << c.id << "  " << c.equation << "  ["
+                  << proofs::to_string(c.method) << "]  " << c.evidence << "\n";
+    }
+    all.insert(all.end(), check.results().begin(), check.results().end());
+  }
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return all;
+}
+
+namespace {
+
+const char* const kPapers[] = {"001", "002", "000", "toolbox"};
+
+std::string md_cell(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return o;
+}
+
+std::string html(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '&': o += "&amp;"; break;
+      case '"': o += "&quot;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+std::ofstream open_out(const fs::path& p) {
+  fs::create_directories(p.parent_path());
+  std::ofstream out(p);
+  if (!out) throw InputError("--out: cannot write " + p.string());
+  return out;
+}
+
+size_t count_failures(const ReportInput& in) {
+  size_t n = 0;
+  for (const auto& c : in.claims) n += !c.holds;
+  for (const auto& f : in.figures) n += !f.ok;
+  return n;
+}
+
+}  // namespace
+
+void write_report_md(const ReportInput& in, const fs::path& dir) {
+  auto md = open_out(dir / "report.md");
+  size_t claim_fails = 0, fig_fails = 0;
+  for (const auto& c : in.claims) claim_fails += !c.holds;
+  for (const auto& f : in.figures) fig_fails += !f.ok;
+  md << "# hapstab reproduction report\n\n"
+     << in.claims.size() << " claims checked (" << in.claims.size() - claim_fails << " hold, " << claim_fails
+     << " fail); " << in.figures.size() << " figures (" << in.figures.size() - fig_fails << " drawn, " << fig_fails
+     << " failed); " << in.seconds << " s.\n\n"
+     << "Status: **exact** = proven in rational arithmetic; **certified** = proven by an enclosure; "
+        "**numeric** = floating-point evidence with the stated error.\n";
+  for (std::string paper : kPapers) {
+    bool any = false;
+    for (const auto& c : in.claims) any |= c.paper == paper;
+    for (const auto& f : in.figures) any |= f.paper == paper;
+    if (!any) continue;
+    md << "\n## " << (paper == "toolbox" ? "" : "Paper " + paper + ": ") << paper_title(paper) << "\n";
+    bool claims = false;
+    for (const auto& c : in.claims) claims |= c.paper == paper;
+    if (claims) {
+      md << "\n| claim | equation | statement | status | verdict | evidence |\n|---|---|---|---|---|---|\n";
+      for (const auto& c : in.claims)
+        if (c.paper == paper)
+          md << "| `" << c.id << "` | " << md_cell(c.equation) << " | " << md_cell(c.statement) << " | "
+             << proofs::to_string(c.method) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
+             << md_cell(c.evidence) << " |\n";
+    }
+    for (const auto& f : in.figures)
+      if (f.paper == paper) {
+        if (f.ok)
+          md << "\n**" << f.name << ".** " << f.caption << "\n\n![" << f.name << "](figures/" << f.name
+             << ".png)\n";
+        else
+          md << "\n**" << f.name << ".** " << f.caption << " — **not reproduced**: " << md_cell(f.error) << "\n";
+      }
+  }
+}
+
+void write_index_html(const ReportInput& in, const fs::path& dir) {
+  auto h = open_out(dir / "index.html");
+  const size_t fails = count_failures(in);
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>hapstab reproduction report</title>\n"
+       "<style>body{font-family:'DejaVu Sans',sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;color:#222}"
+       "table{border-collapse:collapse;width:100%;font-size:0.85em;margin:1em 0}"
+       "td,th{border:1px solid #ccc;padding:4px 6px;vertical-align:top;text-align:left}th{background:#f0f0f0}"
+       "code{font-size:0.9em}.holds{color:#116611;font-weight:bold}.fails{color:#b00;font-weight:bold}"
+       "figure{margin:1.5em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#444}"
+       ".summary{padding:0.6em 1em;background:"
+    << (fails ? "#fdecea" : "#e8f5e9") << ";border-radius:4px}</style></head><body>\n"
+    << "<h1>hapstab reproduction report</h1>\n<p class=\"summary\">" << in.claims.size() << " claims, "
+    << in.figures.size() << " figures, " << fails << " failures, " << in.seconds << " s.</p>\n"
+    << "<p>Status: <b>exact</b> = proven in rational arithmetic; <b>certified</b> = proven by an enclosure; "
+       "<b>numeric</b> = floating-point evidence with the stated error.</p>\n";
+  for (std::string paper : kPapers) {
+    bool any = false;
+    for (const auto& c : in.claims) any |= c.paper == paper;
+    for (const auto& f : in.figures) any |= f.paper == paper;
+    if (!any) continue;
+    h << "<h2>" << html((paper == "toolbox" ? "" : "Paper " + paper + ": ") + paper_title(paper)) << "</h2>\n";
+    bool claims = false;
+    for (const auto& c : in.claims) claims |= c.paper == paper;
+    if (claims) {
+      h << "<table><tr><th>claim</th><th>equation</th><th>statement</th><th>status</th><th>verdict</th>"
+           "<th>evidence</th></tr>\n";
+      for (const auto& c : in.claims)
+        if (c.paper == paper)
+          h << "<tr><td><code>" << html(c.id) << "</code></td><td>" << html(c.equation) << "</td><td>"
+            << html(c.statement) << "</td><td>" << proofs::to_string(c.method) << "</td><td class=\""
+            << (c.holds ? "holds\">holds" : "fails\">FAILS") << "</td><td>" << html(c.evidence) << "</td></tr>\n";
+      h << "</table>\n";
+    }
+    for (const auto& f : in.figures)
+      if (f.paper == paper) {
+        h << "<figure id=\"" << html(f.name) << "\">";
+        if (f.ok)
+          h << "<img src=\"figures/" << html(f.name) << ".png\" alt=\"" << html(f.caption) << "\">";
+        else
+          h << "<p class=\"fails\">not reproduced: " << html(f.error) << "</p>";
+        h << "<figcaption><b>" << html(f.name) << ".</b> " << html(f.caption) << " (<a href=\"figures/"
+          << html(f.name) << ".pdf\">PDF</a>, <a href=\"figures/" << html(f.name) << ".svg\">SVG</a>, <a href=\"figures/"
+          << html(f.name) << ".tex\">LaTeX</a>)</figcaption></figure>\n";
+      }
+  }
+  h << "</body></html>\n";
+}
+
+}  // namespace hapstab::cli

@@ -1,0 +1,38 @@
+// cli/reproduce.hpp -- running the proofs, and writing the report (report.md, index.html)
+// that `hapstab proofs --out` and `hapstab reproduce` produce.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "proofs/proof.hpp"
+
+namespace hapstab::cli {
+
+/// Runs every registered proof of `paper` ("" = all); prints per-claim lines unless quiet.
+std::vector<proofs::ClaimResult> run_proofs(const std::string& paper, bool quiet, double& seconds);
+
+/// One drawn figure of the report (files relative to the report folder).
+struct FigureEntry {
+  std::string name, paper, caption;
+  bool ok = true;
+  std::string error;  ///< why it was not drawn
+  double seconds = 0;
+};
+
+struct ReportInput {
+  std::vector<proofs::ClaimResult> claims;
+  std::vector<FigureEntry> figures;
+  double seconds = 0;
+};
+
+/// DIR/report.md: one section per paper, each claim with its equation, status and verdict,
+/// then the paper's figures.
+void write_report_md(const ReportInput& in, const std::filesystem::path& dir);
+/// DIR/index.html: the same report, static, with the PNG figures inline.
+void write_index_html(const ReportInput& in, const std::filesystem::path& dir);
+
+const char* paper_title(const std::string& paper);
+
+}  // namespace hapstab::cli
