@@ -1,0 +1,346 @@
+#include "hapstab/contact/wedge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/poly/sturm.hpp"
+#include "hapstab/poly/unit_circle.hpp"
+
+namespace hapstab::contact {
+
+namespace {
+
+using Poly = Polynomial<rational>;
+using Ival = interval<100>;
+
+int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+
+// p(t) even (no odd powers) -> q(u) with p(t) = q(t^2). Throws if p is not even.
+Poly even_to_u(const Poly& p) {
+  std::vector<rational> c;
+  for (int i = 0; i <= p.degree(); ++i) {
+    if (i % 2 == 1) {
+      if (p.coeff(i) != 0) throw NumericalError("wedge: a branch is not even in t = tan(theta/2)");
+    } else {
+      c.push_back(p.coeff(i));
+    }
+  }
+  return Poly(std::move(c));
+}
+
+RatFun rf_even_to_u(const RatFun& f) { return RatFun(even_to_u(f.num()), even_to_u(f.den())); }
+
+// 1 + max |a_i/a_n| (Cauchy): every root has |x| < bound.
+rational cauchy_bound(const Poly& p) {
+  rational m = 0;
+  const rational& an = p.leading();
+  for (int i = 0; i < p.degree(); ++i) {
+    rational r = p.coeffs()[i] / an;
+    if (r < 0) r = -r;
+    if (r > m) m = r;
+  }
+  return m + 1;
+}
+
+// Distinct roots of p in [0, inf), sorted (p nonzero, degree >= 0).
+std::vector<RootInterval> nonneg_roots(const Poly& p) {
+  if (p.degree() <= 0) return {};
+  return isolate_real_roots(p, rational(0), cauchy_bound(p));
+}
+
+// f has no pole in [0, inf] (den > 0 there: den is monic, so no root on [0, inf) suffices;
+// at infinity the limit is finite iff deg num <= deg den).
+void require_no_pole(const RatFun& f) {
+  if (!nonneg_roots(f.den()).empty() || f.num().degree() > f.den().degree())
+    throw InputError("wedge: a branch has a pole on the unit circle (H has a pole with |z| = 1)");
+}
+
+// The sign of lim_{u->inf} f(u) (den monic).
+int sign_at_infinity(const RatFun& f) {
+  if (f.num().is_zero() || f.num().degree() < f.den().degree()) return 0;
+  return sgn(f.num().leading());
+}
+rational value_at_infinity(const RatFun& f) {
+  if (f.num().is_zero() || f.num().degree() < f.den().degree()) return 0;
+  return f.num().leading() / f.den().leading();
+}
+
+Ival ival(const rational& lo, const rational& hi) {
+  Ival x;
+  mpfi_interv_q(x.backend().data(), lo.backend().data(), hi.backend().data());
+  return x;
+}
+rational left(const Ival& x) {
+  mpfloat<100> y;
+  mpfi_get_left(y.backend().data(), x.backend().data());
+  return exact_rational(y);
+}
+rational right(const Ival& x) {
+  mpfloat<100> y;
+  mpfi_get_right(y.backend().data(), x.backend().data());
+  return exact_rational(y);
+}
+
+// Enclosure of max_i f_i over [lo, hi].
+Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const rational& lo, const rational& hi) {
+  Enclosure<rational> r{rational(0), rational(0)};
+  bool first = true;
+  for (const auto& f : fs) {
+    rational a, b;
+    if (lo == hi) {
+      a = b = f(lo);
+    } else {
+      Ival x = ival(lo, hi);
+      Ival v = f.num()(x) / f.den()(x);
+      a = left(v);
+      b = right(v);
+    }
+    if (first || a > r.lo) r.lo = a;
+    if (first || b > r.hi) r.hi = b;
+    first = false;
+  }
+  return r;
+}
+
+}  // namespace
+
+WedgeBranches wedge_branches(const TransferFunction& H) {
+  if (!H.is_discrete()) throw InputError("wedge: H must be a discrete transfer function H(z) (give --T)");
+  ReIm ri = on_unit_circle(H.H);
+  const Poly t = Poly::monomial(1);
+  RatFun J(ri.im.num(), ri.im.den() * t);  // Im H / tan(theta/2): exact (Im H is odd in t)
+  return {rf_even_to_u(ri.re), rf_even_to_u(J)};
+}
+
+double theta_of_u(const rational& u) { return 2.0 * std::atan(std::sqrt(static_cast<double>(mpfloat<30>(u)))); }
+
+bool max_positive(const std::vector<RatFun>& fs, bool strict) {
+  if (fs.empty()) throw InputError("max_positive: no functions");
+  for (const auto& f : fs) require_no_pole(f);
+  auto fails = [&](const std::vector<int>& s) {
+    for (int x : s)
+      if (strict ? x > 0 : x >= 0) return false;
+    return true;
+  };
+  // u = infinity
+  {
+    std::vector<int> s;
+    for (const auto& f : fs) s.push_back(sign_at_infinity(f));
+    if (fails(s)) return false;
+  }
+  Poly Q(rational(1));
+  for (const auto& f : fs)
+    if (!f.num().is_zero()) Q = Q * f.num();
+  auto signs_at = [&](const rational& u) {
+    std::vector<int> s;
+    for (const auto& f : fs) s.push_back(sgn(f.num()(u)));
+    return s;
+  };
+  std::vector<RootInterval> roots = nonneg_roots(Q);
+  // points strictly between roots (and before the first, after the last)
+  std::vector<rational> samples;
+  if (roots.empty() || roots.front().lo > 0) samples.push_back(rational(0));
+  for (size_t i = 0; i + 1 < roots.size(); ++i) samples.push_back((roots[i].hi + roots[i + 1].lo) / 2);
+  samples.push_back(roots.empty() ? rational(1) : roots.back().hi + 1);
+  for (const auto& u : samples)
+    if (fails(signs_at(u))) return false;
+  // at each root: the branches vanishing there give 0, the others keep their sign on the interval
+  for (const auto& r : roots) {
+    if (r.is_exact()) {
+      if (fails(signs_at(r.lo))) return false;
+      continue;
+    }
+    const rational mid = (r.lo + r.hi) / 2;
+    std::vector<int> s;
+    for (const auto& f : fs) {
+      const Poly& p = f.num();
+      if (p.is_zero()) {
+        s.push_back(0);
+        continue;
+      }
+      const bool vanishes = p.degree() > 0 && (p(r.lo) == 0 || count_real_roots(p, r.lo, r.hi) > 0);
+      s.push_back(vanishes ? 0 : sgn(p(mid)));
+    }
+    if (fails(s)) return false;
+  }
+  return true;
+}
+
+MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
+  if (fs.empty()) throw InputError("min_of_max: no functions");
+  for (const auto& f : fs) require_no_pole(f);
+  struct Cand {
+    RootInterval iv;
+    Poly p;  // the polynomial the interval isolates a root of (zero for exact points)
+    Enclosure<rational> v;
+  };
+  std::vector<Cand> cands;
+  cands.push_back({{rational(0), rational(0)}, Poly(), {}});
+  auto add_roots = [&](const Poly& p) {
+    if (p.is_zero() || p.degree() <= 0) return;
+    for (const auto& r : nonneg_roots(p)) cands.push_back({r, square_free_part(p), {}});
+  };
+  for (const auto& f : fs) add_roots(f.derivative().num());
+  for (size_t i = 0; i < fs.size(); ++i)
+    for (size_t j = i + 1; j < fs.size(); ++j) add_roots((fs[i] - fs[j]).num());
+  // u = infinity (theta = pi): exact limits
+  rational inf_val = value_at_infinity(fs[0]);
+  for (const auto& f : fs) inf_val = std::max(inf_val, value_at_infinity(f));
+
+  rational width = rational(1) / bmp::pow(integer(10), static_cast<unsigned>(digits + 8));
+  MinOfMax best;
+  for (int round = 0; round < 6; ++round) {
+    for (auto& c : cands) {
+      if (!c.iv.is_exact()) {
+        rational scale = std::max(rational(1), c.iv.hi);
+        c.iv = refine_root(c.p, c.iv, width * scale);
+      }
+      c.v = eval_max(fs, c.iv.lo, c.iv.hi);
+    }
+    Enclosure<rational> g{inf_val, inf_val};
+    best.at_infinity = true;
+    best.u = {rational(0), rational(0)};
+    for (const auto& c : cands) {
+      if (c.v.hi < g.hi) {
+        best.u = {c.iv.lo, c.iv.hi};
+        best.at_infinity = false;
+      }
+      g.lo = std::min(g.lo, c.v.lo);
+      g.hi = std::min(g.hi, c.v.hi);
+    }
+    best.value = g;
+    best.decided = g.lo == g.hi || common_decimal(g.lo, g.hi, digits).has_value();
+    if (best.decided) break;
+    width /= bmp::pow(integer(10), static_cast<unsigned>(digits + 8));
+  }
+  return best;
+}
+
+bool schur_stable(const Polynomial<rational>& p0) {
+  if (p0.is_zero()) throw InputError("schur_stable: the zero polynomial");
+  Poly p = p0.monic();
+  while (p.degree() > 0) {
+    const int n = p.degree();
+    const rational a0 = p.coeff(0), an = p.leading();
+    if (abs(a0) >= abs(an)) return false;
+    std::vector<rational> rev(static_cast<size_t>(n) + 1);
+    for (int i = 0; i <= n; ++i) rev[i] = p.coeff(n - i);
+    Poly q = p * an - Poly(std::move(rev)) * a0;  // constant term cancels
+    std::vector<rational> c(q.coeffs().begin() + 1, q.coeffs().end());
+    p = Poly(std::move(c)).monic();
+  }
+  return true;
+}
+
+bool has_root_on_unit_circle(const Polynomial<rational>& p) {
+  if (p.is_zero()) throw InputError("has_root_on_unit_circle: the zero polynomial");
+  if (p.degree() <= 0) return false;
+  if (p(rational(-1)) == 0) return true;  // z = -1 is t = infinity
+  ComplexPolynomial c = unit_circle_polynomial(p, p.degree());
+  Poly g = gcd(c.re, c.im);  // common real roots t <-> roots e^{j theta}, theta in (-pi, pi)
+  return g.degree() > 0 && !isolate_real_roots(g).empty();
+}
+
+Assumptions check_assumptions(const TransferFunction& H, const rational& k) {
+  Assumptions a;
+  const Poly& N = H.num();
+  const Poly& D = H.den();
+  a.pole_on_unit_circle = has_root_on_unit_circle(D);
+  a.h_stable = schur_stable(D);
+  a.closed_loop_stable = !(D + N * k).is_zero() && schur_stable(D + N * k);
+  const rational d1 = D(rational(1));
+  if (d1 != 0) {
+    a.h1 = N(rational(1)) / d1;
+    a.dc_gain_nonnegative = *a.h1 >= 0;
+  }
+  if (!H.is_proper()) a.violated.push_back("H is not causal (deg num > deg den)");
+  if (!a.h_stable)
+    a.violated.push_back(a.pole_on_unit_circle ? "H stable (H has a pole on the unit circle)"
+                                               : "H stable (H has a pole outside the unit circle)");
+  if (!a.closed_loop_stable) a.violated.push_back("(1+H)^-1 stable");
+  if (!a.dc_gain_nonnegative)
+    a.violated.push_back(a.h1 ? "H(1) >= 0 (H(1) = " + to_decimal(*a.h1, 17) + ")" : "H(1) >= 0 (H(1) is infinite)");
+  return a;
+}
+
+namespace {
+
+CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>& sides, int digits) {
+  CriterionReport r;
+  r.name = name;
+  r.evaluated = true;
+  std::vector<RatFun> plus1;
+  for (const auto& f : sides) plus1.push_back(f + RatFun(1));
+  r.holds = max_positive(plus1, true);
+  MinOfMax mm = min_of_max(plus1, digits);
+  const rational mid = (mm.value.lo + mm.value.hi) / 2;
+  if (mm.value.lo == mm.value.hi)
+    r.margin = Result<rational>::exact_value(mm.value.lo, "exact value at an end point");
+  else
+    r.margin = Result<rational>::certified_value(mid, mm.value, "Sturm isolation + MPFI enclosure");
+  if (!mm.decided) r.margin.note = "enclosure too wide to decide every requested digit";
+  r.theta_at_min = mm.at_infinity ? M_PI : theta_of_u((mm.u.lo + mm.u.hi) / 2);
+  r.gain_infinite = max_positive(sides, false);
+  if (!r.gain_infinite) {
+    // g = margin - 1 < 0 (exact); k* = -1/g
+    const rational glo = mm.value.lo - 1, ghi = mm.value.hi - 1;
+    if (ghi < 0) {
+      Enclosure<rational> k{rational(-1) / glo, rational(-1) / ghi};
+      const rational km = rational(-1) / (mid - 1);
+      if (k.lo == k.hi)
+        r.max_gain = Result<rational>::exact_value(k.lo, "-1/min_theta(left side)");
+      else
+        r.max_gain = Result<rational>::certified_value(km, k, "-1/min_theta(left side), certified");
+    } else {
+      r.max_gain = Result<rational>::numeric_value(rational(-1) / (mid - 1), "-1/min: enclosure touches 0");
+      r.max_gain.note = "min of the left side is negative (exact) but within the enclosure width of 0";
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+ContactAnalysis analyze_contact(const TransferFunction& H, int digits) {
+  if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60], got " + std::to_string(digits));
+  ContactAnalysis a;
+  a.H = H;
+  if (!H.is_discrete()) throw InputError("wedge: H must be a discrete transfer function H(z) (give --T)");
+  if (!H.is_proper()) throw InputError("wedge: H(z) = " + H.to_string() + " is not causal (deg num > deg den)");
+  a.assumptions = check_assumptions(H);
+  a.wedge.name = "wedge (25)";
+  a.tsypkin.name = "Tsypkin (21)";
+  if (a.assumptions.pole_on_unit_circle) return a;
+  WedgeBranches b = wedge_branches(H);
+  a.wedge = run_criterion("wedge (25)", {b.re + b.im_over_t, b.re - b.im_over_t}, digits);
+  a.tsypkin = run_criterion("Tsypkin (21)", {b.re}, digits);
+  return a;
+}
+
+namespace {
+std::complex<double> eval_h(const TransferFunction& H, double theta) {
+  const std::complex<double> z = std::polar(1.0, theta);
+  return H.num()(z) / H.den()(z);
+}
+}  // namespace
+
+double wedge_margin_at(const TransferFunction& H, double theta) {
+  const auto h = eval_h(H, theta);
+  const double m = std::sin(theta) / (1 - std::cos(theta));
+  return std::max(h.real() + m * h.imag(), h.real() - m * h.imag()) + 1;
+}
+
+GridMin grid_margin(const TransferFunction& H, int n, bool wedge) {
+  if (n < 2) throw InputError("grid_margin: need at least 2 points");
+  GridMin g{INFINITY, 0};
+  for (int i = wedge ? 1 : 0; i < n; ++i) {  // theta = 0 is a 0*inf limit for the wedge: skipped
+    const double th = M_PI * i / (n - 1);
+    const double v = wedge ? wedge_margin_at(H, th) : eval_h(H, th).real() + 1;
+    if (v < g.value) g = {v, th};
+  }
+  return g;
+}
+
+}  // namespace hapstab::contact
