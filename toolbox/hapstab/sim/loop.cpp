@@ -1,0 +1,210 @@
+// Exact composition of a sampled-data haptic loop (see loop.hpp).
+#include "hapstab/sim/loop.hpp"
+
+#include <Eigen/LU>
+
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::sim {
+
+namespace {
+using Q = rational;
+using MQ = Mat<Q>;
+
+std::string dims(const StateSpace<Q>& G) {
+  return std::to_string(G.outputs()) + "x" + std::to_string(G.inputs()) + " with " + std::to_string(G.states()) +
+         " states";
+}
+
+MQ zeros(Eigen::Index r, Eigen::Index c) { return MQ::Zero(r, c); }
+
+}  // namespace
+
+int LoopSpec::dofs() const {
+  int n = 0;
+  for (const auto& d : devices) n += int(d.dofs());
+  return n;
+}
+
+DeviceBlock mass_damper(std::string name, const rational& m, const rational& b) {
+  if (m <= 0) throw InputError(name + ": mass m must be > 0, got " + m.str());
+  if (b < 0) throw InputError(name + ": damping b must be >= 0, got " + b.str());
+  DeviceBlock d;
+  d.name = std::move(name);
+  d.G = StateSpace<Q>{MQ::Constant(1, 1, -b / m), MQ::Constant(1, 1, 1 / m), MQ::Constant(1, 1, Q(1)),
+                      MQ::Zero(1, 1), 0};
+  d.mass = std::vector<Q>{m};
+  return d;
+}
+
+OperatorBlock mass_spring_damper_operator(std::string name, int port, const rational& m, const rational& b,
+                                          const rational& k) {
+  if (m < 0 || b < 0 || k < 0)
+    throw InputError(name + ": operator m, b, k must be >= 0 (a passive mass-spring-damper)");
+  OperatorBlock o;
+  o.name = std::move(name);
+  o.ports = {port};
+  o.mass = {m};
+  if (k != 0) {  // f = b v + k q, q' = v
+    o.Z = StateSpace<Q>{MQ::Zero(1, 1), MQ::Constant(1, 1, Q(1)), MQ::Constant(1, 1, k), MQ::Constant(1, 1, b), 0};
+  } else {
+    o.Z = StateSpace<Q>{zeros(0, 0), zeros(0, 1), zeros(1, 0), MQ::Constant(1, 1, b), 0};
+  }
+  return o;
+}
+
+ComposedLoop compose(const LoopSpec& spec) {
+  if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
+  if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());
+  const int N = spec.dofs();
+  if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
+  ComposedLoop L;
+  L.N = N;
+  L.T = spec.T;
+
+  // ---- devices: block diagonal, force -> velocity ----
+  Eigen::Index nd = 0;
+  for (const auto& d : spec.devices) {
+    d.G.validate(d.name);
+    if (d.G.is_discrete()) throw InputError(d.name + ": a device must be continuous (T = 0)");
+    if (d.G.inputs() != d.G.outputs())
+      throw InputError(d.name + ": a device maps forces to velocities (square), got " + dims(d.G));
+    if (!d.G.D.isZero()) throw InputError(d.name + ": a device must be strictly proper (D = 0: force cannot move it instantly)");
+    nd += d.G.states();
+  }
+  MQ Ad = zeros(nd, nd), Bd = zeros(nd, N), Cd = zeros(N, nd);
+  L.mass.assign(N, std::nullopt);
+  {
+    Eigen::Index so = 0;
+    int dof = 0;
+    for (const auto& d : spec.devices) {
+      auto n = d.G.states(), k = d.G.inputs();
+      Ad.block(so, so, n, n) = d.G.A;
+      Bd.block(so, dof, n, k) = d.G.B;
+      Cd.block(dof, so, k, n) = d.G.C;
+      if (d.mass)
+        for (Eigen::Index i = 0; i < k && i < Eigen::Index(d.mass->size()); ++i) L.mass[dof + i] = (*d.mass)[i];
+      so += n;
+      dof += int(k);
+    }
+  }
+
+  // ---- operators: proper part Z (ports) and inertia Mo ----
+  Eigen::Index no = 0;
+  for (const auto& o : spec.operators) {
+    o.Z.validate(o.name);
+    if (o.Z.is_discrete()) throw InputError(o.name + ": an operator must be continuous (T = 0)");
+    const auto p = Eigen::Index(o.ports.size());
+    if (o.Z.inputs() != p || o.Z.outputs() != p)
+      throw InputError(o.name + ": acts on " + std::to_string(p) + " DOF(s) but its impedance is " + dims(o.Z));
+    for (int j : o.ports)
+      if (j < 0 || j >= N)
+        throw InputError(o.name + ": port DOF " + std::to_string(j) + " does not exist (the devices give " +
+                         std::to_string(N) + " DOFs, numbered from 0)");
+    if (!o.mass.empty() && Eigen::Index(o.mass.size()) != p)
+      throw InputError(o.name + ": mass needs one entry per port (" + std::to_string(p) + ")");
+    for (const auto& m : o.mass)
+      if (m < 0) throw InputError(o.name + ": operator mass must be >= 0");
+    no += o.Z.states();
+  }
+  MQ Ao = zeros(no, no), Bo = zeros(no, N), Co = zeros(N, no), Do = zeros(N, N), Mo = zeros(N, N);
+  {
+    Eigen::Index so = 0;
+    for (const auto& o : spec.operators) {
+      const auto n = o.Z.states();
+      Ao.block(so, so, n, n) = o.Z.A;
+      for (size_t a = 0; a < o.ports.size(); ++a) {
+        const int ja = o.ports[a];
+        Bo.block(so, ja, n, 1) += o.Z.B.col(Eigen::Index(a));
+        Co.block(ja, so, 1, n) += o.Z.C.row(Eigen::Index(a));
+        for (size_t b = 0; b < o.ports.size(); ++b) Do(ja, o.ports[b]) += o.Z.D(Eigen::Index(a), Eigen::Index(b));
+        if (!o.mass.empty()) Mo(ja, ja) += o.mass[a];
+      }
+      so += n;
+    }
+  }
+
+  // ---- plant: s = [s_d; x; s_o], in = [u; w] ----
+  // F = u + w - Co s_o - Do v  (v = Cd s_d); s_d' = K (Ad s_d + Bd F), K = (I + Bd Mo Cd)^{-1}.
+  const Eigen::Index n = nd + N + no;
+  MQ Kinv = MQ::Identity(nd, nd) + Bd * Mo * Cd;
+  Eigen::FullPivLU<MQ> klu(Kinv);
+  if (klu.rank() < nd) throw InputError("operator inertia makes the device dynamics singular (I + B M C not invertible)");
+  const MQ K = klu.inverse();
+  // F = [ -Do Cd, 0, -Co ] s + [I, I] in
+  MQ Fs = zeros(N, n), Fi = zeros(N, 2 * N);
+  Fs.block(0, 0, N, nd) = -Do * Cd;
+  Fs.block(0, nd + N, N, no) = -Co;
+  Fi.block(0, 0, N, N) = MQ::Identity(N, N);
+  Fi.block(0, N, N, N) = MQ::Identity(N, N);
+  MQ A = zeros(n, n), B = zeros(n, 2 * N);
+  A.block(0, 0, nd, n) = K * Bd * Fs;
+  A.block(0, 0, nd, nd) += K * Ad;
+  B.block(0, 0, nd, 2 * N) = K * Bd * Fi;
+  A.block(nd, 0, N, nd) = Cd;                 // x' = v
+  A.block(nd + N, 0, no, nd) = Bo * Cd;       // s_o' = Ao s_o + Bo v
+  A.block(nd + N, nd + N, no, no) += Ao;
+  // outputs [x; v; f_h], f_h = -Mo v' + F - u  (the human port: operator + exogenous forces)
+  MQ C = zeros(3 * N, n), D = zeros(3 * N, 2 * N);
+  C.block(0, nd, N, N) = MQ::Identity(N, N);
+  C.block(N, 0, N, nd) = Cd;
+  const MQ vdot_s = Cd * A.block(0, 0, nd, n), vdot_i = Cd * B.block(0, 0, nd, 2 * N);
+  C.block(2 * N, 0, N, n) = -Mo * vdot_s + Fs;
+  D.block(2 * N, 0, N, 2 * N) = -Mo * vdot_i + Fi;
+  D.block(2 * N, 0, N, N) -= MQ::Identity(N, N);
+  L.plant = StateSpace<Q>{A, B, C, D, 0};
+  L.position_state.resize(N);
+  for (int j = 0; j < N; ++j) L.position_state[j] = int(nd + j);
+
+  // ---- controller: positions -> u, with E (impedance) and V (admittance) ----
+  auto check_discrete = [&](const StateSpace<Q>& G, const std::string& what) {
+    G.validate(what);
+    if (!G.is_discrete()) throw InputError(what + ": must be a discrete block (z domain, T > 0)");
+    if (G.T != spec.T)
+      throw InputError(what + ": sample period " + G.T.str() + " differs from the scene's T = " + spec.T.str());
+    if (G.inputs() != N || G.outputs() != N)
+      throw InputError(what + ": must be " + std::to_string(N) + "x" + std::to_string(N) + " (one row/column per DOF), got " +
+                       dims(G));
+  };
+  for (int j : spec.contact)
+    if (j < 0 || j >= N) throw InputError("contact: DOF " + std::to_string(j) + " does not exist");
+  if (!spec.environment) {
+    if (spec.coupling) throw InputError("coupling: a coupling needs an environment");
+    L.controller = StateSpace<Q>{zeros(0, 0), zeros(0, N), zeros(N, 0), zeros(N, N), spec.T};
+    return L;
+  }
+  const auto& E = *spec.environment;
+  check_discrete(E, "environment");
+  if (!spec.coupling) {
+    L.controller = StateSpace<Q>{E.A, E.B, -E.C, -E.D, spec.T};
+    return L;
+  }
+  const auto& V = *spec.coupling;
+  check_discrete(V, "coupling");
+  // u = -(Ce se + De (m + Cv sv + Dv u))  =>  (I + De Dv) u = -(Ce se + De Cv sv + De m)
+  MQ S = MQ::Identity(N, N) + E.D * V.D;
+  Eigen::FullPivLU<MQ> slu(S);
+  if (slu.rank() < N)
+    throw InputError("environment/coupling: the algebraic loop through their feedthrough terms is singular "
+                     "(det(I + D_E D_V) = 0)");
+  const MQ Si = slu.inverse();
+  const Eigen::Index ne = E.states(), nv = V.states();
+  MQ Cu = zeros(N, ne + nv), Du = -Si * E.D;
+  Cu.block(0, 0, N, ne) = -Si * E.C;
+  Cu.block(0, ne, N, nv) = -Si * E.D * V.C;
+  // x_e = m + Cv sv + Dv u ; se' = Ae se + Be x_e ; sv' = Av sv + Bv u
+  MQ Xs = zeros(N, ne + nv), Xm = MQ::Identity(N, N) + V.D * Du;
+  Xs.block(0, ne, N, nv) = V.C;
+  Xs += V.D * Cu;
+  MQ Ac = zeros(ne + nv, ne + nv), Bc = zeros(ne + nv, N);
+  Ac.block(0, 0, ne, ne + nv) = E.B * Xs;
+  Ac.block(0, 0, ne, ne) += E.A;
+  Bc.block(0, 0, ne, N) = E.B * Xm;
+  Ac.block(ne, 0, nv, ne + nv) = V.B * Cu;
+  Ac.block(ne, ne, nv, nv) += V.A;
+  Bc.block(ne, 0, nv, N) = V.B * Du;
+  L.controller = StateSpace<Q>{Ac, Bc, Cu, Du, spec.T};
+  return L;
+}
+
+}  // namespace hapstab::sim

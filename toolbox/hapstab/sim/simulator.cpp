@@ -1,0 +1,490 @@
+// The exact-ZOH sampled-data simulator (see simulator.hpp).
+#include "hapstab/sim/simulator.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+
+#include "hapstab/lti/discretize.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::sim {
+
+namespace {
+
+using MP = mp50;
+
+Mat<MP> to_mp(const Mat<rational>& M) {
+  Mat<MP> R(M.rows(), M.cols());
+  for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = to_real<MP>(M.data()[i]);
+  return R;
+}
+Mat<double> to_double(const Mat<MP>& M) {
+  Mat<double> R(M.rows(), M.cols());
+  for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = static_cast<double>(M.data()[i]);
+  return R;
+}
+Mat<double> to_double(const Mat<rational>& M) {
+  Mat<double> R(M.rows(), M.cols());
+  for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = to_real<double>(M.data()[i]);
+  return R;
+}
+
+// Exact (50-digit) propagation over [0, tau] of a step whose input is u_old on [0, f) and
+// u_new on [f, T): s(tau) = P s + Qo u_old + Qn u_new + Qw w.
+struct Prop {
+  Mat<MP> P, Qo, Qn, Qw;
+};
+Prop propagate(const Mat<MP>& A, const Mat<MP>& B, int N, const MP& f, const MP& tau) {
+  const auto n = A.rows();
+  Prop p;
+  auto first = zoh_pair<MP>(A, B, tau < f ? tau : f);
+  p.P = first.Phi;
+  p.Qo = first.Gamma.leftCols(N);
+  p.Qn = Mat<MP>::Zero(n, N);
+  p.Qw = first.Gamma.rightCols(N);
+  if (tau > f) {
+    auto second = zoh_pair<MP>(A, B, tau - f);
+    p.P = (second.Phi * p.P).eval();
+    p.Qo = (second.Phi * p.Qo).eval();
+    p.Qw = (second.Phi * p.Qw + second.Gamma.rightCols(N)).eval();
+    p.Qn = second.Gamma.leftCols(N);
+  }
+  return p;
+}
+
+}  // namespace
+
+Simulator::Simulator(const LoopSpec& spec) : spec_(spec), loop_(compose(spec)) {
+  const rational& T = loop_.T;
+  rational q = spec.delay / T;
+  nd_ = long(integer(bmp::numerator(q) / bmp::denominator(q)).convert_to<long>());
+  const rational frac = spec.delay - rational(nd_) * T;
+  f_ = to_real<double>(frac);
+  p1_ = make_piece(frac, true);
+  p2_ = make_piece(T - frac, true);
+  const int N = loop_.N;
+  const auto& P = loop_.plant;
+  Cx_ = to_double(Mat<rational>(P.C.topRows(N)));
+  Cv_ = to_double(Mat<rational>(P.C.middleRows(N, N)));
+  Cf_ = to_double(Mat<rational>(P.C.bottomRows(N)));
+  Dfu_ = to_double(Mat<rational>(P.D.bottomRows(N).leftCols(N)));
+  Dfw_ = to_double(Mat<rational>(P.D.bottomRows(N).rightCols(N)));
+  Bw_ = to_double(Mat<rational>(P.B.rightCols(N)));
+  const auto& C = loop_.controller;
+  Ac_ = to_double(C.A);
+  Bc_ = to_double(C.B);
+  Cc_ = to_double(C.C);
+  Dc_ = to_double(C.D);
+}
+
+Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
+  const int N = loop_.N;
+  const auto& P = loop_.plant;
+  const Mat<MP> A = to_mp(P.A), B = to_mp(P.B), C = to_mp(P.C), D = to_mp(P.D);
+  const auto n = A.rows(), nz = n + 2 * N;
+  Piece pc;
+  pc.h = to_real<double>(h);
+  const MP hm = to_real<MP>(h);
+  auto zp = zoh_pair<MP>(A, B, hm);
+  pc.Phi = to_double(zp.Phi);
+  pc.Gu = to_double(Mat<MP>(zp.Gamma.leftCols(N)));
+  pc.Gw = to_double(Mat<MP>(zp.Gamma.rightCols(N)));
+  if (!energy) return pc;
+  // z = [s; u; w], z' = M z. Power at port j: (a_j z)(b_j z), a = f_h row, b = v row.
+  Mat<MP> M = Mat<MP>::Zero(nz, nz);
+  M.topLeftCorner(n, n) = A;
+  M.topRightCorner(n, 2 * N) = B;
+  for (int j = 0; j < N; ++j) {
+    Mat<MP> a(1, nz), b(1, nz);
+    a << C.row(2 * N + j), D.row(2 * N + j);
+    b << C.row(N + j), D.row(N + j);
+    Mat<MP> Q = (a.transpose() * b + b.transpose() * a) / MP(2);
+    Mat<MP> V = Mat<MP>::Zero(2 * nz, 2 * nz);
+    V.topLeftCorner(nz, nz) = -M.transpose() * hm;
+    V.topRightCorner(nz, nz) = Q * hm;
+    V.bottomRightCorner(nz, nz) = M * hm;
+    Mat<MP> E = expm<MP>(V);
+    Mat<MP> W = E.bottomRightCorner(nz, nz).transpose() * E.topRightCorner(nz, nz);
+    W = ((W + W.transpose()) / MP(2)).eval();
+    pc.W.push_back(to_double(W));
+  }
+  return pc;
+}
+
+// ---------------------------------------------------------------------------------------
+template <int NX, int NC, int NN>
+struct Engine {
+  static constexpr int D = Eigen::Dynamic;
+  static constexpr int NZ = (NX == D || NN == D) ? D : NX + 2 * NN;
+  using MX = Eigen::Matrix<double, NX, NX>;
+  using MXN = Eigen::Matrix<double, NX, NN>;
+  using MNX = Eigen::Matrix<double, NN, NX>;
+  using MNN = Eigen::Matrix<double, NN, NN>;
+  using MC = Eigen::Matrix<double, NC, NC>;
+  using MCN = Eigen::Matrix<double, NC, NN>;
+  using MNC = Eigen::Matrix<double, NN, NC>;
+  using MZ = Eigen::Matrix<double, NZ, NZ>;
+  using VX = Eigen::Matrix<double, NX, 1>;
+  using VN = Eigen::Matrix<double, NN, 1>;
+  using VC = Eigen::Matrix<double, NC, 1>;
+  using VZ = Eigen::Matrix<double, NZ, 1>;
+
+  static void run(const Simulator& S, const LoopSpec& spec, const SimOptions& o, SimResult& R) {
+    const ComposedLoop& L = S.loop_;
+    const int N = L.N;
+    const Eigen::Index n = L.plant.states(), nc = L.controller.states(), nz = n + 2 * N;
+    const double T = to_real<double>(L.T);
+    const bool split = S.f_ > 0;
+    const bool energy = o.energy;
+    // --- matrices in the engine's sizes
+    const MX Phi1 = S.p1_.Phi, Phi2 = S.p2_.Phi;
+    const MXN Gu1 = S.p1_.Gu, Gw1 = S.p1_.Gw, Gu2 = S.p2_.Gu, Gw2 = S.p2_.Gw, Bw = S.Bw_;
+    const MNX Cx = S.Cx_, Cv = S.Cv_, Cf = S.Cf_;
+    const MNN Dfu = S.Dfu_, Dfw = S.Dfw_;
+    const MC Ac = S.Ac_;
+    const MCN Bc = S.Bc_;
+    const MNC Cc = S.Cc_;
+    const MNN Dc = S.Dc_;
+    std::vector<MZ, Eigen::aligned_allocator<MZ>> W1, W2;
+    for (int j = 0; j < N; ++j) {
+      W1.emplace_back(S.p1_.W[j]);
+      W2.emplace_back(S.p2_.W[j]);
+    }
+    std::vector<char> contact(N, 0);
+    for (int j : spec.contact) contact[j] = 1;
+    // --- state
+    VX s = VX::Zero(n), s1(n), tmp(n), s0(n);
+    for (int j = 0; j < N; ++j) {
+      if (j < int(spec.x0.size())) s(L.position_state[j]) = to_real<double>(spec.x0[j]);
+    }
+    if (!spec.v0.empty()) {
+      // Initial velocities: set the device states by least squares on Cv (mass-damper: exact).
+      VN v0 = VN::Zero(N);
+      for (int j = 0; j < N && j < int(spec.v0.size()); ++j) v0(j) = to_real<double>(spec.v0[j]);
+      Mat<double> Cvd = S.Cv_;
+      Vec<double> sv = Cvd.completeOrthogonalDecomposition().solve(Vec<double>(v0));
+      s += VX(sv);
+    }
+    VC xc = VC::Zero(nc), xc1(nc);
+    VN pos(N), meas(N), u(N), uo(N), un(N), w(N), wbase(N), v(N), fh(N), xa(N), xb(N);
+    VZ z(nz), Wz(nz);
+    u.setZero();
+    wbase.setZero();
+    // delay ring: u_k stored at slot k % R
+    const long nd = S.nd_;
+    const long Rn = nd + 2;
+    std::vector<VN, Eigen::aligned_allocator<VN>> ring(size_t(Rn), VN::Zero(N));
+    // exogenous events
+    struct Ev {
+      long k;
+      int dof;
+      double val;
+      bool impulse;
+    };
+    std::vector<Ev> ev;
+    for (const auto& b : spec.biases) {
+      rational q = b.start / L.T;
+      long k = long(bmp::numerator(q) / bmp::denominator(q));
+      if (rational(k) * L.T < b.start) ++k;  // held from the first sample instant at or after start
+      ev.push_back({k, b.dof, to_real<double>(b.force), false});
+    }
+    for (const auto& im : spec.impulses) {
+      rational q = im.time / L.T + rational(1, 2);
+      long k = long(integer(bmp::numerator(q) / bmp::denominator(q)).convert_to<long>());  // round half up
+      ev.push_back({k, im.dof, to_real<double>(im.magnitude), true});
+    }
+    std::stable_sort(ev.begin(), ev.end(), [](const Ev& a, const Ev& b) { return a.k < b.k; });
+    size_t next_ev = 0;
+    const bool has_profile = !spec.profiles.empty();
+    // energy accumulators
+    std::vector<double> e_port(N, 0.0), e_act(N, 0.0), e_po(N, 0.0);
+    double min_port = 0;
+    double maxv = 0;
+    bool diverged = false;
+    // limit-cycle watch buffer
+    int watch = o.watch_dof;
+    if (watch < 0) watch = spec.contact.empty() ? 0 : spec.contact.front();
+    if (watch >= N) throw InputError("watch DOF " + std::to_string(watch) + " does not exist");
+    const long tail = std::min<long>(o.steps, std::max<long>(4096, std::min<long>(o.steps / 2, 1L << 18)));
+    std::vector<double> tailbuf(size_t(tail), 0.0);
+    const Eigen::Index wpos = L.position_state[watch];
+    // intersample matrices
+    const int M = o.substeps;
+    std::vector<Mat<double>> FP, FQo, FQn, FQw;
+    const bool fine = M > 1 && o.fine_to >= o.fine_from;
+    if (fine) {
+      const Mat<MP> A = to_mp(L.plant.A), B = to_mp(L.plant.B);
+      rational q = spec.delay / L.T;
+      long ndl = long(bmp::numerator(q) / bmp::denominator(q));
+      const MP fx = to_real<MP>(spec.delay - rational(ndl) * L.T);
+      for (int i = 1; i < M; ++i) {
+        Prop p = propagate(A, B, N, fx, to_real<MP>(L.T * rational(i, M)));
+        FP.push_back(to_double(p.P));
+        FQo.push_back(to_double(p.Qo));
+        FQn.push_back(to_double(p.Qn));
+        FQw.push_back(to_double(p.Qw));
+      }
+    }
+    auto& ST = R.samples;
+    auto& FT = R.fine;
+    ST.N = FT.N = N;
+    const long rec = o.record_every;
+    auto record_sample = [&](long k) {
+      ST.t.push_back(double(k) * T);
+      pos.noalias() = Cx * s;
+      v.noalias() = Cv * s;
+      // f_h just after kT: the input active then
+      const VN& ua = split ? ring[size_t(((k - nd - 1) % Rn + Rn) % Rn)] : ring[size_t(((k - nd) % Rn + Rn) % Rn)];
+      fh.noalias() = Cf * s;
+      fh.noalias() += Dfu * ua;
+      fh.noalias() += Dfw * w;
+      for (int j = 0; j < N; ++j) {
+        ST.x.push_back(pos(j));
+        ST.v.push_back(v(j));
+        ST.u.push_back(ua(j));
+        ST.fh.push_back(fh(j));
+        ST.e_port.push_back(e_port[j]);
+        ST.e_act.push_back(e_act[j]);
+        ST.e_po.push_back(e_po[j]);
+        ST.storage.push_back(L.mass[j] ? 0.5 * to_real<double>(*L.mass[j]) * v(j) * v(j) : std::nan(""));
+      }
+    };
+    if (rec > 0) {
+      const size_t rows = size_t(o.steps / rec + 2);
+      ST.t.reserve(rows);
+      for (auto* vec : {&ST.x, &ST.v, &ST.u, &ST.fh, &ST.e_port, &ST.e_act, &ST.e_po, &ST.storage})
+        vec->reserve(rows * size_t(N));
+    }
+    const long prog_every = std::max<long>(1, o.steps / 100);
+    long next_prog = o.progress ? prog_every : o.steps + 1;
+    long k = 0;
+    for (; k < o.steps; ++k) {
+      // ---- exogenous events at this sample instant
+      while (next_ev < ev.size() && ev[next_ev].k <= k) {
+        const Ev& e = ev[next_ev++];
+        if (e.impulse) {
+          const double vb = (Cv.row(e.dof) * s)(0);
+          s.noalias() += Bw.col(e.dof) * e.val;
+          const double va = (Cv.row(e.dof) * s)(0);
+          if (energy) {
+            e_port[size_t(e.dof)] += e.val * 0.5 * (vb + va);
+            e_po[size_t(e.dof)] += e.val * 0.5 * (vb + va);
+          }
+        } else {
+          wbase(e.dof) += e.val;
+        }
+      }
+      w = wbase;
+      if (has_profile)
+        for (const auto& p : spec.profiles)
+          if (k < long(p.samples.size())) w(p.dof) += p.samples[size_t(k)];
+      // ---- sampler, contact, controller
+      pos.noalias() = Cx * s;
+      tailbuf[size_t(k % tail)] = s(wpos);
+      meas = pos;
+      for (int j = 0; j < N; ++j)
+        if (contact[size_t(j)]) meas(j) = meas(j) > 0 ? meas(j) : 0.0;
+      if (nc > 0) {
+        u.noalias() = Cc * xc;
+        u.noalias() += Dc * meas;
+        xc1.noalias() = Ac * xc;
+        xc1.noalias() += Bc * meas;
+        xc = xc1;
+      } else {
+        u.noalias() = Dc * meas;
+      }
+      ring[size_t(k % Rn)] = u;
+      un = ring[size_t(((k - nd) % Rn + Rn) % Rn)];
+      if (k < nd) un.setZero();
+      if (rec > 0 && k % rec == 0) record_sample(k);
+      if (fine && double(k) * T >= o.fine_from && double(k) * T <= o.fine_to) s0 = s;
+      // ---- passivity observer (sampled f_h, v)
+      if (split) {
+        uo = ring[size_t(((k - nd - 1) % Rn + Rn) % Rn)];
+        if (k < nd + 1) uo.setZero();
+      }
+      if (energy) {
+        v.noalias() = Cv * s;
+        fh.noalias() = Cf * s;
+        fh.noalias() += Dfu * (split ? uo : un);
+        fh.noalias() += Dfw * w;
+        for (int j = 0; j < N; ++j) e_po[size_t(j)] += T * fh(j) * v(j);
+      }
+      // ---- exact propagation over the period
+      if (split) {
+        if (energy) {
+          z << s, uo, w;
+          xa.noalias() = Cx * s;
+          for (int j = 0; j < N; ++j) {
+            Wz.noalias() = W1[size_t(j)] * z;
+            e_port[size_t(j)] += z.dot(Wz);
+          }
+        }
+        tmp.noalias() = Phi1 * s;
+        tmp.noalias() += Gu1 * uo;
+        tmp.noalias() += Gw1 * w;
+        s = tmp;
+        if (energy) {
+          xb.noalias() = Cx * s;
+          for (int j = 0; j < N; ++j) e_act[size_t(j)] += uo(j) * (xb(j) - xa(j));
+        }
+      }
+      if (energy) {
+        z << s, un, w;
+        xa.noalias() = Cx * s;
+        for (int j = 0; j < N; ++j) {
+          Wz.noalias() = W2[size_t(j)] * z;
+          e_port[size_t(j)] += z.dot(Wz);
+        }
+      }
+      tmp.noalias() = Phi2 * s;
+      tmp.noalias() += Gu2 * un;
+      tmp.noalias() += Gw2 * w;
+      s = tmp;
+      if (energy) {
+        xb.noalias() = Cx * s;
+        double tot = 0;
+        for (int j = 0; j < N; ++j) {
+          e_act[size_t(j)] += un(j) * (xb(j) - xa(j));
+          tot += e_port[size_t(j)];
+        }
+        min_port = tot < min_port ? tot : min_port;
+      }
+      // ---- intersample grid (exact)
+      if (fine && double(k) * T >= o.fine_from && double(k) * T <= o.fine_to) {
+        if (!split) uo.setZero();
+        for (int i = 0; i < M; ++i) {
+          Vec<double> si = i == 0 ? Vec<double>(s0)
+                                  : Vec<double>(FP[size_t(i - 1)] * Vec<double>(s0) + FQo[size_t(i - 1)] * Vec<double>(uo) +
+                                                FQn[size_t(i - 1)] * Vec<double>(un) + FQw[size_t(i - 1)] * Vec<double>(w));
+          FT.t.push_back((double(k) + double(i) / M) * T);
+          for (int j = 0; j < N; ++j) {
+            FT.x.push_back((S.Cx_.row(j) * si)(0));
+            FT.v.push_back((S.Cv_.row(j) * si)(0));
+          }
+        }
+      }
+      // ---- divergence, max velocity
+      v.noalias() = Cv * s;
+      for (int j = 0; j < N; ++j) {
+        const double a = std::fabs(v(j));
+        if (!(a <= o.max_velocity)) diverged = true;
+        maxv = a > maxv ? a : maxv;
+      }
+      if (diverged) {
+        ++k;
+        break;
+      }
+      if (k + 1 == next_prog) {
+        o.progress(double(k + 1) / double(o.steps));
+        next_prog += prog_every;
+      }
+    }
+    if (rec > 0 && !diverged && k % rec == 0) {
+      w = wbase;
+      record_sample(k);
+    }
+    auto& SU = R.summary;
+    SU.diverged = diverged;
+    SU.steps_run = k;
+    SU.max_velocity = maxv;
+    SU.min_port_energy = min_port;
+    SU.energy_generated = energy ? std::max(0.0, -min_port) : std::nan("");
+    SU.e_port = e_port;
+    SU.e_act = e_act;
+    SU.e_po = e_po;
+    if (diverged) {
+      SU.trend = "diverged";
+    } else {
+      const long len = std::min<long>(k, tail);
+      std::vector<double> y(static_cast<size_t>(len), 0.0);
+      for (long i = 0; i < len; ++i) y[size_t(i)] = tailbuf[size_t((k - len + i) % tail)];
+      SU.limit_cycle = detect_limit_cycle(y, T, SU.trend);
+    }
+  }
+};
+
+SimResult Simulator::run(const SimOptions& o) const {
+  if (o.steps <= 0) throw InputError("steps must be > 0, got " + std::to_string(o.steps));
+  if (o.substeps < 1) throw InputError("substeps must be >= 1, got " + std::to_string(o.substeps));
+  if (o.record_every < 0) throw InputError("record_every must be >= 0");
+  if (!(o.max_velocity > 0)) throw InputError("max_velocity must be > 0");
+  SimResult R;
+  const auto n = loop_.plant.states(), nc = loop_.controller.states();
+  const int N = loop_.N;
+  constexpr int D = Eigen::Dynamic;
+  if (N == 1 && n == 2 && nc == 1) Engine<2, 1, 1>::run(*this, spec_, o, R);
+  else if (N == 1 && n == 3 && nc == 1) Engine<3, 1, 1>::run(*this, spec_, o, R);
+  else if (N == 1 && n == 4 && nc == 1) Engine<4, 1, 1>::run(*this, spec_, o, R);
+  else if (N == 1 && n == 2 && nc == 2) Engine<2, 2, 1>::run(*this, spec_, o, R);
+  else if (N == 2 && n == 6 && nc == 4) Engine<6, 4, 2>::run(*this, spec_, o, R);
+  else Engine<D, D, D>::run(*this, spec_, o, R);
+  return R;
+}
+
+// ---------------------------------------------------------------------------------------
+std::optional<LimitCycle> detect_limit_cycle(const std::vector<double>& y, double T, std::string& trend) {
+  const size_t n = y.size();
+  if (n < 16) {
+    trend = "rest";
+    return std::nullopt;
+  }
+  auto amp_of = [&](size_t a, size_t b) {
+    double lo = y[a], hi = y[a];
+    for (size_t i = a; i < b; ++i) {
+      lo = std::min(lo, y[i]);
+      hi = std::max(hi, y[i]);
+    }
+    return 0.5 * (hi - lo);
+  };
+  double scale = 0;
+  for (double x : y) scale = std::max(scale, std::fabs(x));
+  const double a1 = amp_of(0, n / 2), a2 = amp_of(n / 2, n);
+  // At rest: the oscillation is below 1e-9 of the signal's size (or below 1e-15 absolute).
+  if (a2 <= 1e-9 * scale + 1e-15) {
+    trend = "rest";
+    return std::nullopt;
+  }
+  if (a2 < 0.9 * a1) {
+    trend = "decaying";
+    return std::nullopt;
+  }
+  if (a2 > 1.1 * a1) {
+    trend = "growing";
+    return std::nullopt;
+  }
+  trend = "steady";
+  LimitCycle lc;
+  lc.amplitude = a2;
+  // Exact repetition of the sampled sequence over the second half.
+  const size_t h = n / 2;
+  for (size_t P = 2; P <= h / 2; ++P) {
+    bool ok = true;
+    for (size_t i = h + P; i < n && ok; ++i) ok = std::fabs(y[i] - y[i - P]) <= 1e-6 * a2;
+    if (ok) {
+      lc.period_samples = long(P);
+      lc.period = double(P) * T;
+      return lc;
+    }
+  }
+  // Otherwise the mean period between upward crossings of the mean (quasi-periodic cycles).
+  double mean = 0;
+  for (size_t i = h; i < n; ++i) mean += y[i];
+  mean /= double(n - h);
+  long first = -1, last = -1, count = 0;
+  for (size_t i = h + 1; i < n; ++i)
+    if (y[i - 1] < mean && y[i] >= mean) {
+      if (first < 0) first = long(i);
+      last = long(i);
+      ++count;
+    }
+  if (count < 3) {
+    trend = "steady";
+    return std::nullopt;  // no oscillation to speak of (a slow drift)
+  }
+  lc.period = double(last - first) / double(count - 1) * T;
+  return lc;
+}
+
+}  // namespace hapstab::sim
