@@ -1,0 +1,233 @@
+#include "hapstab/multidof/environment.hpp"
+
+#include <algorithm>
+
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::multidof {
+
+using P = Polynomial<rational>;
+
+void MechanicalEnvironment::validate() const {
+  if (kc.empty()) throw InputError("environment: no contact point (give k_i, B_i for each DOF)");
+  if (kc.size() != Bc.size())
+    throw InputError("environment: " + std::to_string(kc.size()) + " contact springs but " +
+                     std::to_string(Bc.size()) + " contact dampers");
+  if (M <= 0) throw InputError("environment: mass M must be > 0");
+  if (k < 0 || B < 0) throw InputError("environment: k and B must be >= 0");
+  for (size_t i = 0; i < kc.size(); ++i)
+    if (kc[i] < 0 || Bc[i] < 0)
+      throw InputError("environment: contact " + std::to_string(i + 1) + " has a negative spring or damper");
+}
+
+TransferMatrix mechanical_impedance(const MechanicalEnvironment& env) {
+  env.validate();
+  const size_t m = env.kc.size();
+  rational Bs = env.B, ks = env.k;
+  for (size_t i = 0; i < m; ++i) {
+    Bs += env.Bc[i];
+    ks += env.kc[i];
+  }
+  const P den(std::vector<rational>{ks, Bs, env.M});
+  std::vector<P> Z(m);
+  for (size_t i = 0; i < m; ++i) Z[i] = P(std::vector<rational>{env.kc[i], env.Bc[i]});
+  TransferMatrix E;
+  E.domain = Domain::s;
+  E.T = 0;
+  E.entries.assign(m, std::vector<TransferFunction>(m));
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      P num = -(Z[i] * Z[j]);
+      if (i == j) num += Z[i] * den;
+      E.entries[i][j] = tf(num, den, 0);
+    }
+  return E;
+}
+
+namespace {
+// p(s) with s = a(z)/b(z), times b(z)^d: sum_k p_k a^k b^(d-k).
+P substitute(const P& p, const P& a, const P& b, int d) {
+  P r;
+  for (int k = 0; k <= p.degree(); ++k) r += p.coeff(k) * (a.pow(static_cast<unsigned>(k)) * b.pow(static_cast<unsigned>(d - k)));
+  return r;
+}
+}  // namespace
+
+TransferMatrix c2d(const TransferMatrix& Hs, const rational& T, C2dMethod method) {
+  if (Hs.domain != Domain::s) throw InputError("c2d: the transfer matrix is already discrete");
+  if (T <= 0) throw InputError("c2d: sample period T must be > 0");
+  P a, b;
+  if (method == C2dMethod::backward_euler) {
+    a = P(std::vector<rational>{rational(-1), rational(1)});  // z - 1
+    b = P(std::vector<rational>{rational(0), T});             // T z
+  } else if (method == C2dMethod::tustin) {
+    a = P(std::vector<rational>{rational(-2) / T, rational(2) / T});  // (2/T)(z - 1)
+    b = P(std::vector<rational>{rational(1), rational(1)});           // z + 1
+  } else {
+    throw InputError("c2d: ZOH of a transfer matrix in s is refused here: the contact dampers make E(s) improper "
+                     "(B_i s); give a proper continuous state space, or use backward_euler or tustin");
+  }
+  TransferMatrix Hz;
+  Hz.domain = Domain::z;
+  Hz.T = T;
+  Hz.entries.assign(Hs.outputs(), std::vector<TransferFunction>(Hs.inputs()));
+  for (size_t i = 0; i < Hs.outputs(); ++i)
+    for (size_t j = 0; j < Hs.inputs(); ++j) {
+      const auto& e = Hs.entries[i][j];
+      const int d = std::max(e.num().degree(), e.den().degree());
+      P n = substitute(e.num(), a, b, d), q = substitute(e.den(), a, b, d);
+      if (q.is_zero()) throw InputError("c2d: entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") has a pole at the substitution's singular point");
+      Hz.entries[i][j] = tf(n, q, T);
+      if (!Hz.entries[i][j].is_proper())
+        throw InputError("c2d: entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") is not causal after discretisation");
+    }
+  return Hz;
+}
+
+StateSpace<rational> minimal_ss(const TransferMatrix& Hz) { return minreal(tf2ss(Hz)); }
+
+StateSpace<rational> mechanical_environment(const MechanicalEnvironment& env, const rational& T, C2dMethod method) {
+  return minimal_ss(c2d(mechanical_impedance(env), T, method));
+}
+
+bool schur_stable(const MatQ& A) {
+  if (A.rows() == 0) return true;
+  P p = charpoly(A);
+  std::vector<rational> a = p.coeffs();
+  while (a.size() > 1) {
+    const size_t n = a.size() - 1;
+    const rational an = a[n], a0 = a[0];
+    if (abs(a0) >= abs(an)) return false;
+    std::vector<rational> q(n);
+    for (size_t k = 0; k < n; ++k) q[k] = an * a[k + 1] - a0 * a[n - k - 1];
+    a = P(std::move(q)).coeffs();
+    if (a.size() != n) return false;  // cannot happen when |a0| < |an| (leading an^2 - a0^2 > 0)
+  }
+  return true;
+}
+
+bool hurwitz_stable(const P& p) {
+  if (p.is_zero()) return false;
+  const int n = p.degree();
+  if (n == 0) return true;
+  // Routh array in exact arithmetic: stable iff the n+1 first-column entries are all nonzero
+  // with the sign of a_n (a zero entry means a root on or right of the axis, or a symmetric pair).
+  std::vector<rational> r0, r1;
+  for (int k = n; k >= 0; k -= 2) r0.push_back(p.coeff(k));
+  for (int k = n - 1; k >= 0; k -= 2) r1.push_back(p.coeff(k));
+  const bool positive = p.leading() > 0;
+  for (int row = 1; row <= n; ++row) {
+    if (r1.empty() || r1[0] == 0 || (r1[0] > 0) != positive) return false;
+    const size_t L = std::max(r0.size(), r1.size());
+    r0.resize(L, rational(0));
+    r1.resize(L, rational(0));
+    std::vector<rational> r2(L > 1 ? L - 1 : 1, rational(0));
+    for (size_t k = 0; k + 1 < L; ++k) r2[k] = (r1[0] * r0[k + 1] - r0[0] * r1[k + 1]) / r1[0];
+    r0 = std::move(r1);
+    r1 = std::move(r2);
+  }
+  return true;
+}
+
+MatQ dc_gain(const StateSpace<rational>& E) {
+  const auto n = E.states();
+  if (n == 0) return E.D;
+  MatQ IA = MatQ::Identity(n, n) - E.A;
+  return E.C * inverse(IA, "I - A_E (E has a pole at z = 1)") * E.B + E.D;
+}
+
+StateSpace<rational> ehat(const StateSpace<rational>& E) {
+  E.validate("environment E");
+  if (E.inputs() != E.outputs())
+    throw InputError("environment E must be square (m inputs, m outputs), got " + std::to_string(E.outputs()) + "x" +
+                     std::to_string(E.inputs()));
+  if (!E.is_discrete()) throw InputError("environment E must be discrete (T > 0) for (15)");
+  const auto n = E.states(), m = E.inputs();
+  const rational& T = E.T;
+  StateSpace<rational> H;
+  H.T = T;
+  H.A = MatQ::Zero(n + m, n + m);
+  H.A.topLeftCorner(n, n) = E.A;
+  H.A.topRightCorner(n, m) = E.B;
+  H.A.bottomRightCorner(m, m) = MatQ::Identity(m, m);
+  H.B = MatQ::Zero(n + m, m);
+  H.B.topRows(n) = E.B * T;
+  H.B.bottomRows(m) = MatQ::Identity(m, m) * T;
+  H.C = MatQ::Zero(m, n + m);
+  H.C.leftCols(n) = E.C;
+  H.C.rightCols(m) = E.D;
+  H.D = E.D * T;
+  return H;
+}
+
+StateSpace<rational> scale_gamma(const StateSpace<rational>& s, const MatQ& G) {
+  const MatQ Gi = inverse(G, "Gamma");
+  return {s.A, s.B * Gi, G * s.C, G * s.D * Gi, s.T};
+}
+
+StateSpace<rational> vhat(const StateSpace<rational>& V, const MatQ& K) {
+  V.validate("coupling V");
+  if (!V.is_discrete()) throw InputError("coupling V must be discrete (T > 0) for (17)");
+  if (V.inputs() != V.outputs()) throw InputError("coupling V must be square");
+  const auto n = V.states(), m = V.inputs();
+  if (K.rows() != m || K.cols() != m)
+    throw InputError("coupling V has " + std::to_string(m) + " ports but K is " + std::to_string(K.rows()) + "x" +
+                     std::to_string(K.cols()));
+  const rational& T = V.T;
+  StateSpace<rational> H;
+  H.T = T;
+  H.A = MatQ::Zero(n + m, n + m);
+  H.A.topLeftCorner(n, n) = V.A;
+  H.A.topRightCorner(n, m) = -V.B / T;
+  H.B = MatQ::Zero(n + m, m);
+  H.B.topRows(n) = V.B / T;
+  H.B.bottomRows(m) = MatQ::Identity(m, m);
+  H.C = MatQ::Zero(m, n + m);
+  H.C.leftCols(n) = V.C;
+  H.C.rightCols(m) = (K - V.D) / T;
+  H.D = (V.D - K) / T;
+  return H;
+}
+
+StateSpace<rational> coupling_from_gamma(const StateSpace<rational>& VG, const MatQ& G) {
+  const MatQ Gi = inverse(G, "Gamma");
+  return {VG.A, VG.B * G, Gi * VG.C, Gi * VG.D * G, VG.T};
+}
+
+EhatSplit ehat_split(const StateSpace<rational>& E) {
+  const StateSpace<rational> H = ehat(E);
+  const auto n = E.states(), m = E.inputs();
+  EhatSplit s;
+  s.Va = n ? MatQ(inverse(MatQ(MatQ::Identity(n, n) - E.A), "I - A_E (E has a pole at z = 1)") * E.B) : MatQ(0, m);
+  s.Pi0 = MatQ::Identity(n + m, n + m);
+  if (n) s.Pi0.topRightCorner(n, m) = s.Va;
+  MatQ Pi0i = MatQ::Identity(n + m, n + m);
+  if (n) Pi0i.topRightCorner(n, m) = -s.Va;
+  s.t = StateSpace<rational>{Pi0i * H.A * s.Pi0, Pi0i * H.B, H.C * s.Pi0, H.D, H.T};
+  s.E1 = dc_gain(E);
+  return s;
+}
+
+StateSpace<rational> blockdiag(const std::vector<StateSpace<rational>>& bl) {
+  Eigen::Index n = 0, p = 0, q = 0;
+  for (const auto& b : bl) {
+    n += b.states();
+    p += b.outputs();
+    q += b.inputs();
+  }
+  StateSpace<rational> s{MatQ::Zero(n, n), MatQ::Zero(n, q), MatQ::Zero(p, n), MatQ::Zero(p, q),
+                         bl.empty() ? rational(0) : bl[0].T};
+  Eigen::Index a = 0, o = 0, i = 0;
+  for (const auto& b : bl) {
+    s.A.block(a, a, b.states(), b.states()) = b.A;
+    s.B.block(a, i, b.states(), b.inputs()) = b.B;
+    s.C.block(o, a, b.outputs(), b.states()) = b.C;
+    s.D.block(o, i, b.outputs(), b.inputs()) = b.D;
+    a += b.states();
+    o += b.outputs();
+    i += b.inputs();
+  }
+  return s;
+}
+
+}  // namespace hapstab::multidof
