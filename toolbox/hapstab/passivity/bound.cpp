@@ -1,0 +1,977 @@
+// Implementation of hapstab/passivity/bound.hpp (paper 001, (45) and (54)); see the header
+// for the c = cos(wT) form of the objective and why it never cancels.
+#include "hapstab/passivity/bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/sturm.hpp"
+#include "hapstab/poly/unit_circle.hpp"
+
+namespace hapstab::passivity {
+
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+
+// ---------------------------------------------------------------------------------------------
+// small helpers
+namespace {
+
+P cheb_T(int m) {  // T_m(c) with integer coefficients
+  P t0(rational(1)), t1 = P::monomial(1);
+  if (m == 0) return t0;
+  for (int k = 1; k < m; ++k) {
+    P t2 = P::monomial(1, rational(2)) * t1 - t0;
+    t0 = std::move(t1);
+    t1 = std::move(t2);
+  }
+  return t1;
+}
+P cheb_U(int m) {  // U_m(c)
+  P u0(rational(1)), u1 = P::monomial(1, rational(2));
+  if (m == 0) return u0;
+  for (int k = 1; k < m; ++k) {
+    P u2 = P::monomial(1, rational(2)) * u1 - u0;
+    u0 = std::move(u1);
+    u1 = std::move(u2);
+  }
+  return u1;
+}
+
+int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+
+template <unsigned D>
+interval<D> ival(const rational& a, const rational& b) {
+  interval<D> x;
+  mpfi_interv_q(x.backend().data(), a.backend().data(), b.backend().data());
+  return x;
+}
+template <unsigned D>
+rational rlo(const interval<D>& x) { return exact_rational(mpfloat<D>(lower(x))); }
+template <unsigned D>
+rational rhi(const interval<D>& x) { return exact_rational(mpfloat<D>(upper(x))); }
+template <unsigned D>
+interval<D> ipi() {
+  interval<D> x;
+  mpfi_const_pi(x.backend().data());
+  return x;
+}
+
+rational pow10(int e) {
+  rational r(1);
+  for (int i = 0; i < std::abs(e); ++i) r *= 10;
+  return e >= 0 ? r : rational(1) / r;
+}
+
+/// Decimal string of q rounded outward (dir = -1 down, +1 up) to `digits` significant digits.
+}  // namespace
+std::string decimal_outward(const rational& q, int digits, int dir) {
+  if (q == 0) return "0";
+  rational nudge = abs(q) * pow10(1 - digits);
+  for (int k = 0; k < 6; ++k) {
+    std::string s = to_decimal(q + rational(dir) * nudge, digits);
+    rational back = parse_rational(s);
+    if ((dir < 0 && back <= q) || (dir > 0 && back >= q)) return s;
+    nudge *= 10;
+  }
+  return to_decimal(q, digits);  // unreachable in practice
+}
+namespace {
+
+/// Best decimal for an enclosure: the common rounding at `digits` digits, else fewer digits.
+std::string enclosure_decimal(const rational& lo, const rational& hi, int digits) {
+  if (lo == hi) return to_decimal(lo, digits);
+  for (int d = digits; d >= 2; --d)
+    if (auto s = common_decimal(lo, hi, d)) return *s;
+  return to_decimal((lo + hi) / 2, 3);
+}
+
+P reversed(const P& p) {
+  std::vector<rational> c = p.coeffs();
+  std::reverse(c.begin(), c.end());
+  return P(std::move(c));
+}
+
+}  // namespace
+
+double Bound::value_double() const {
+  if (infinite) return std::numeric_limits<double>::infinity();
+  return to_real<double>((lo + hi) / 2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// assumptions: causality, stability (Schur-Cohn on the part off the unit circle, Sturm on it)
+bool poles_in_closed_unit_disk(const P& d, std::string* detail) {
+  if (d.is_zero()) throw InputError("the denominator of H is zero");
+  if (d.degree() == 0) return true;
+  P g = gcd(d, reversed(d));  // every unit-circle root of d, and reciprocal pairs (r, 1/r)
+  P d1 = d;
+  if (g.degree() > 0) {
+    for (P h = gcd(d1, g); h.degree() > 0; h = gcd(d1, g)) d1 = divmod(d1, h).first;
+    // all roots of g must lie on the circle
+    P s = square_free_part(g);
+    int m = s.degree();
+    int on = (s(rational(-1)) == 0) ? 1 : 0;
+    ComplexPolynomial cp = unit_circle_polynomial(s, m);
+    P h = cp.re.is_zero() ? cp.im : (cp.im.is_zero() ? cp.re : gcd(cp.re, cp.im));
+    if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
+    if (on != m) {
+      if (detail) *detail = "a reciprocal pair of poles (r, 1/r) off the unit circle: one has |z| > 1";
+      return false;
+    }
+  }
+  // Schur-Cohn-Jury recursion on d1 (no roots on the circle): all roots inside iff |a0| < |an|
+  // at every step of p -> (an p - a0 p*)/z.
+  P p = d1;
+  while (p.degree() > 0) {
+    rational a0 = p.coeff(0), an = p.leading();
+    if (abs(a0) >= abs(an)) {
+      if (detail) *detail = "Schur-Cohn test: a pole with |z| > 1 (|p(0)| >= |leading| at degree " +
+                            std::to_string(p.degree()) + ")";
+      return false;
+    }
+    P q = p * an - reversed(p) * a0;  // constant term vanishes
+    std::vector<rational> c(q.coeffs().begin() + 1, q.coeffs().end());
+    p = P(std::move(c));
+  }
+  return true;
+}
+
+void check_assumptions(const BoundProblem& p) {
+  if (p.T <= 0) throw InputError("T must be > 0 (got " + to_decimal(p.T, 17) + ")");
+  if (p.delay < 0) throw InputError("the delay n must be >= 0 (got " + std::to_string(p.delay) + ")");
+  if (p.eta < 0) throw InputError("the operator shortage eta must be >= 0 (got " + to_decimal(p.eta, 17) + ")");
+  if (p.frac_delay && *p.frac_delay < 0)
+    throw InputError("the fractional delay t_d must be >= 0 (got " + to_decimal(*p.frac_delay, 17) + ")");
+  if (p.H.den().is_zero()) throw InputError("H has a zero denominator");
+  if (!p.allow_noncausal && p.H.num().degree() > p.H.den().degree() + p.delay)
+    throw InputError("H z^-n is not causal: numerator degree " + std::to_string(p.H.num().degree()) +
+                     " > denominator degree " + std::to_string(p.H.den().degree()) + " + n = " +
+                     std::to_string(p.delay) + " in z (the FIR form (47) needs --allow-noncausal or --delay >= 1)");
+  std::string why;
+  if (!poles_in_closed_unit_disk(p.H.den(), &why))
+    throw InputError("H is unstable (assumption of (45): H stable): " + why);
+}
+
+// ---------------------------------------------------------------------------------------------
+// the exact objective in c = cos(wT)
+Objective objective(const RF& H, const rational& T, int delay) {
+  const auto& n = H.num().coeffs();
+  std::vector<rational> d = H.den().coeffs();
+  d.insert(d.begin(), static_cast<size_t>(delay), rational(0));  // D' = D z^n
+  const int nn = static_cast<int>(n.size()), nd = static_cast<int>(d.size());
+  const int M = std::max(nn, nd);
+  std::vector<rational> a(M + 1, rational(0)), cs(M + 1, rational(0)), e(M + 1, rational(0));
+  for (int k = 0; k < nn; ++k)
+    for (int l = 0; l < nd; ++l) {
+      if (n[k] == 0 || d[l] == 0) continue;
+      rational pr = n[k] * d[l];
+      int m = k - l;
+      if (m == 0) a[0] += pr;
+      else if (m > 0) { a[m] += pr; cs[m] += pr; }
+      else { a[-m] += pr; cs[-m] -= pr; }
+    }
+  for (int l = 0; l < nd; ++l)
+    for (int l2 = l; l2 < nd; ++l2) {
+      if (d[l] == 0 || d[l2] == 0) continue;
+      if (l2 == l) e[0] += d[l] * d[l];
+      else e[l2 - l] += 2 * d[l] * d[l2];
+    }
+  Objective o;
+  for (int m = 0; m <= M; ++m) {
+    if (a[m] != 0) o.R += cheb_T(m) * a[m];
+    if (m >= 1 && cs[m] != 0) o.Q += cheb_U(m - 1) * cs[m];
+    if (e[m] != 0) o.B += cheb_T(m) * e[m];
+  }
+  P one_plus_c(std::vector<rational>{rational(1), rational(1)});
+  P A = (o.R - one_plus_c * o.Q) * (T / 2);
+  o.f = RF(A, o.B);
+  return o;
+}
+
+// ---------------------------------------------------------------------------------------------
+// certified maximisation of a rational function of c on [-1, 1]
+namespace {
+
+struct Candidate {
+  rational vlo, vhi;  // value enclosure
+  rational clo, chi;  // location enclosure in c
+  bool exact = false;
+  bool endpoint_zero = false, endpoint_pi = false;
+};
+
+/// Sign of f just inside [-1,1] on each side of the root of B isolated by r (+1 means f -> +inf).
+/// Returns true if f -> +inf from some side inside [-1, 1].
+bool pole_goes_to_plus_inf(const P& A, const P& B, RootInterval r) {
+  P q = square_free_part(A * B);
+  P sb = square_free_part(B);
+  rational lo = r.lo, hi = r.hi;
+  if (r.is_exact()) {
+    rational dl = rational(1, 1024);
+    for (int k = 0; k < 400; ++k, dl /= 2) {
+      lo = r.lo - dl;
+      hi = r.lo + dl;
+      if (q(lo) != 0 && q(hi) != 0 && count_real_roots(q, lo, hi) == 1) break;
+    }
+  } else {
+    for (int k = 0; k < 400 && count_real_roots(q, lo, hi) != 1; ++k) {
+      r = refine_root(sb, r, (hi - lo) / 4);
+      lo = r.lo;
+      hi = r.hi;
+    }
+  }
+  bool plus = false;
+  auto f = [&](const rational& x) { return A(x) / B(x); };
+  if (lo >= -1 && lo < 1 && !(r.is_exact() && r.lo == -1)) plus = plus || f(lo) > 0;
+  if (hi <= 1 && hi > -1 && !(r.is_exact() && r.lo == 1)) plus = plus || f(hi) > 0;
+  // an exact root at the endpoint -1 (w = pi/T) only has the side c > -1; at 1 only c < 1
+  if (r.is_exact() && r.lo == -1) plus = f(hi) > 0;
+  if (r.is_exact() && r.lo == 1) plus = f(lo) > 0;
+  return plus;
+}
+
+/// Polishes and encloses one irrational critical point; returns false when precision D was not
+/// enough to decide `digits` digits of the value.
+template <unsigned D>
+bool enclose_critical(const P& q, const P& A, const P& B, const P& Pd, RootInterval r, int digits, Candidate& out) {
+  using R = mpfloat<D>;
+  using I = interval<D>;
+  P dq = q.derivative();
+  R a = to_real<R>(r.lo), b = to_real<R>(r.hi);
+  int sa = sgn(q(r.lo));
+  R x = (a + b) / 2;
+  const R tol = pow(R(10), -static_cast<int>(D) + 6);
+  for (int it = 0; it < 400; ++it) {
+    R qx = q(x), dx = dq(x);
+    if (qx == 0) break;
+    if ((qx > 0 ? 1 : -1) == sa) a = x; else b = x;
+    R xn = (dx != 0) ? x - qx / dx : (a + b) / 2;
+    if (!(xn > a && xn < b)) xn = (a + b) / 2;
+    R step = abs(xn - x);
+    x = xn;
+    if (step < tol || b - a < tol) break;
+  }
+  // a rational maximiser (e.g. cos wT = KT/(4B) for the delayed wall) is found exactly: test the
+  // continued-fraction convergents of x with denominators below 10^12
+  {
+    R y = x;
+    integer h0 = 0, h1 = 1, k0 = 1, k1 = 0;
+    for (int it = 0; it < 60; ++it) {
+      R fl = floor(y);
+      integer ai(fl.str(0, std::ios_base::fixed).substr(0, fl.str(0, std::ios_base::fixed).find('.')));
+      integer h2 = ai * h1 + h0, k2 = ai * k1 + k0;
+      if (k2 > integer(1000000000000LL)) break;
+      rational cand(h2, k2);
+      if (cand >= r.lo && cand <= r.hi && q(cand) == 0) {
+        rational v = A(cand) / B(cand);
+        out = {v, v, cand, cand, true, false, false};
+        return true;
+      }
+      h0 = h1; h1 = h2; k0 = k1; k1 = k2;
+      R frac = y - fl;
+      if (frac == 0) break;
+      y = 1 / frac;
+    }
+  }
+  rational xr = exact_rational(x);
+  rational delta = pow10(-static_cast<int>(D) + 8);
+  rational lo = std::max(r.lo, xr - delta), hi = std::min(r.hi, xr + delta);
+  auto sign_at = [&](const rational& t) {
+    I v = q(ival<D>(t, t));
+    return lower(v) > 0 ? 1 : (upper(v) < 0 ? -1 : 0);
+  };
+  int sl = sign_at(lo), sh = sign_at(hi);
+  if (!(sl != 0 && sh != 0 && sl != sh)) {
+    RootInterval rr = refine_root(q, r, delta);  // exact fallback
+    if (rr.is_exact()) {
+      rational v = A(rr.lo) / B(rr.lo);
+      out = {v, v, rr.lo, rr.lo, true, false, false};
+      return true;
+    }
+    lo = rr.lo;
+    hi = rr.hi;
+  }
+  // mean-value form: f(X) in f(m) + f'(X) (X - m), f' = Pd / B^2
+  rational m = (lo + hi) / 2;
+  I X = ival<D>(lo, hi), Mi = ival<D>(m, m);
+  I fm = A(Mi) / B(Mi);
+  I BX = B(X);
+  I fx = fm + (Pd(X) / (BX * BX)) * (X - Mi);
+  out.vlo = rlo(fx);
+  out.vhi = rhi(fx);
+  out.clo = lo;
+  out.chi = hi;
+  out.exact = false;
+  if (out.vlo == out.vhi) return true;
+  return common_decimal(out.vlo, out.vhi, digits).has_value() || out.vhi - out.vlo < abs(out.vlo) * pow10(-digits - 2);
+}
+
+template <unsigned D>
+void omega_of(const Candidate& c, const rational& T, int digits, Bound& b) {
+  if (c.endpoint_zero) {
+    b.omega = "0";
+    b.omega_lo = b.omega_hi = 0;
+    b.where = "w = 0";
+    return;
+  }
+  interval<D> w;
+  if (c.endpoint_pi) {
+    w = ipi<D>() / ival<D>(T, T);
+    b.where = "w = pi/T";
+  } else {
+    w = acos(ival<D>(c.clo, c.chi)) / ival<D>(T, T);
+    if (b.where.empty()) b.where = "interior";
+  }
+  b.omega_lo = rlo(w);
+  b.omega_hi = rhi(w);
+  b.omega = enclosure_decimal(b.omega_lo, b.omega_hi, digits);
+}
+
+template <unsigned D>
+bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& out) {
+  const P& A = f.num();
+  const P& B = f.den();
+  out = Bound{};
+  out.method = "certified: exact f(cos wT), Sturm isolation, MPFR Newton, MPFI enclosure (" +
+               std::to_string(digits) + " digits)";
+  const rational one(1), mone(-1);
+  // constant objective
+  P Pd = A.derivative() * B - A * B.derivative();
+  if (Pd.is_zero()) {
+    rational v = A(one) / B(one) + pb.eta;
+    out.status = Status::exact;
+    out.lo = out.hi = v;
+    out.value = to_decimal(v, digits);
+    out.omega = "0";
+    out.where = "constant (every w attains it)";
+    return true;
+  }
+  // poles of f on [-1, 1]
+  if (B.degree() > 0) {
+    for (const auto& r : isolate_real_roots(B, mone, one)) {
+      if (pole_goes_to_plus_inf(A, B, r)) {
+        out.infinite = true;
+        out.status = Status::exact;
+        out.value = "inf";
+        Candidate c{0, 0, r.lo, r.hi, r.is_exact(), r.is_exact() && r.lo == 1, r.is_exact() && r.lo == -1};
+        out.where = c.endpoint_zero ? "pole at z = 1 (w = 0) not cancelled" :
+                    c.endpoint_pi ? "pole at z = -1 (w = pi/T): Re -> +inf" : "pole on the unit circle: Re -> +inf";
+        omega_of<D>(c, pb.T, std::min(digits, 17), out);
+        return true;
+      }
+    }
+  }
+  std::vector<Candidate> cands;
+  if (B(one) != 0) {
+    rational v = A(one) / B(one);
+    cands.push_back({v, v, one, one, true, true, false});
+  }
+  if (B(mone) != 0) {
+    rational v = A(mone) / B(mone);
+    cands.push_back({v, v, mone, mone, true, false, true});
+  }
+  // critical points: roots of Pd that are not poles
+  P Pc = Pd;
+  for (P g = gcd(Pc, B); g.degree() > 0; g = gcd(Pc, B)) Pc = divmod(Pc, g).first;
+  if (Pc.degree() > 0) {
+    P q = square_free_part(Pc);
+    for (const auto& r : isolate_real_roots(q, mone, one)) {
+      if (r.is_exact()) {
+        if (r.lo == 1 || r.lo == -1) continue;  // the endpoint value is already a candidate
+        rational v = A(r.lo) / B(r.lo);
+        cands.push_back({v, v, r.lo, r.lo, true, false, false});
+        continue;
+      }
+      Candidate c;
+      if (!enclose_critical<D>(q, A, B, Pd, r, digits, c)) return false;
+      cands.push_back(c);
+    }
+  }
+  if (cands.empty()) throw NumericalError("no candidate for the maximum (f -> -inf everywhere?)");
+  // max over candidates: b* in [max lo, max hi]
+  size_t best = 0;
+  for (size_t i = 1; i < cands.size(); ++i)
+    if (cands[i].vhi > cands[best].vhi || (cands[i].vhi == cands[best].vhi && cands[i].exact)) best = i;
+  rational mlo = cands[0].vlo;
+  for (const auto& c : cands) mlo = std::max(mlo, c.vlo);
+  const Candidate& cb = cands[best];
+  bool dominated = true;  // is the best exact candidate >= every other upper bound?
+  for (size_t i = 0; i < cands.size(); ++i)
+    if (i != best && cands[i].vhi > cb.vlo) dominated = false;
+  out.lo = mlo + pb.eta;
+  out.hi = cb.vhi + pb.eta;
+  if (cb.exact && dominated) {
+    out.status = Status::exact;
+    out.lo = out.hi = cb.vlo + pb.eta;
+    out.value = to_decimal(out.lo, digits);
+  } else {
+    out.status = Status::certified;
+    out.value = enclosure_decimal(out.lo, out.hi, digits);
+  }
+  omega_of<D>(cb, pb.T, digits, out);
+  return true;
+}
+
+// ---- fractional delay -----------------------------------------------------------------------
+// f_tau(theta) B(c) = (T/2)[ (R - (1+c)Q) cos(tau theta) + ((1-c)Q + R) sin(tau theta) cot(theta/2) ],
+// tau = t_d/T, c = cos theta.
+
+int multiplicity_at_minus_one(P p, P& rest) {
+  int k = 0;
+  const P lin(std::vector<rational>{rational(1), rational(1)});
+  while (!p.is_zero() && p(rational(-1)) == 0) {
+    p = divmod(p, lin).first;
+    ++k;
+  }
+  rest = p;
+  return k;
+}
+
+/// Sign of sin(pi tau) and cos(pi tau) for rational tau, exactly.
+void trig_signs(const rational& tau, int& ssin, int& scos) {
+  // reduce x = tau mod 2 into [0, 2)
+  rational x;
+  integer fl = num(tau / 2) / den(tau / 2);
+  if (tau < 0 && fl * den(tau / 2) != num(tau / 2)) fl -= 1;
+  x = tau - 2 * rational(fl);
+  ssin = (x == 0 || x == 1) ? 0 : (x < 1 ? 1 : -1);
+  if (x == rational(1, 2) || x == rational(3, 2)) scos = 0;
+  else scos = (x < rational(1, 2) || x > rational(3, 2)) ? 1 : -1;
+}
+
+/// Exact divergence test at wT = pi for a pole of W at z = -1. Returns +1 (f -> +inf), -1
+/// (f -> -inf), 0 (finite or undecided; `decided` says which).
+int divergence_at_pi(const Objective& o, const rational& T, const rational& tau, bool& decided) {
+  decided = true;
+  P Bm, A1, E1;
+  int m = multiplicity_at_minus_one(o.B, Bm);
+  if (m == 0) return 0;
+  const P one_plus_c(std::vector<rational>{rational(1), rational(1)});
+  const P one_minus_c(std::vector<rational>{rational(1), rational(-1)});
+  P Araw = o.R - one_plus_c * o.Q;
+  P E = one_minus_c * o.Q + o.R;
+  int a = Araw.is_zero() ? 1000 : multiplicity_at_minus_one(Araw, A1);
+  int k = E.is_zero() ? 1000 : multiplicity_at_minus_one(E, E1);
+  // (1 + c) = 2 sin^2(eps/2) ~ eps^2/2, eps = pi - theta
+  rational alpha = a < 1000 ? A1(rational(-1)) / pow10(0) : rational(0);
+  rational e = k < 1000 ? E1(rational(-1)) : rational(0);
+  for (int i = 0; i < a && a < 1000; ++i) alpha /= 2;
+  for (int i = 0; i < k && k < 1000; ++i) e /= 2;
+  int ss, sc;
+  trig_signs(tau, ss, sc);
+  // leading terms (order in eps, sign): even from cos(pi tau), odd from sin(pi tau)
+  struct Term { int order; int sign; };
+  std::vector<Term> terms;
+  if (sc != 0) {
+    if (a < 1000 && k < 1000 && a == k + 1) {
+      rational coef = alpha - e * tau / 2;
+      if (coef == 0) { decided = false; return 0; }
+      terms.push_back({2 * a, sgn(coef) * sc});
+    } else {
+      if (a < 1000) terms.push_back({2 * a, sgn(alpha) * sc});
+      if (k < 1000) terms.push_back({2 * k + 2, -sgn(e) * sgn(tau) * sc});
+    }
+  }
+  if (ss != 0) {
+    if (a < 1000 && k < 1000 && a == k) {
+      rational coef = alpha * tau + e / 2;
+      if (coef == 0) { decided = false; return 0; }
+      terms.push_back({2 * a + 1, sgn(coef) * ss});
+    } else {
+      if (a < 1000) terms.push_back({2 * a + 1, sgn(alpha) * sgn(tau) * ss});
+      if (k < 1000) terms.push_back({2 * k + 1, sgn(e) * ss});
+    }
+  }
+  if (terms.empty()) return 0;
+  auto lead = *std::min_element(terms.begin(), terms.end(), [](auto& x, auto& y) { return x.order < y.order; });
+  (void)T;
+  if (lead.order >= 2 * m) return 0;  // finite limit
+  return lead.sign;                   // B > 0 near the pole
+}
+
+template <unsigned D>
+interval<D> frac_objective(const Objective& o, const rational& T, const rational& tau, const interval<D>& th) {
+  using I = interval<D>;
+  I c = cos(th);
+  I one(1);
+  I Rv = o.R(c), Qv = o.Q(c), Bv = o.B(c);
+  I taui = ival<D>(tau, tau);
+  I g;
+  auto u = upper(th);
+  if (u * mpfloat<D>(tau) <= 1.5 && u <= 1.5) {
+    // g = sin(tau th) cot(th/2) = 2 tau sinc(tau th)/sinc(th/2) cos(th/2); sinc decreasing on [0, pi]
+    auto sinc_range = [](const I& x) {
+      auto L = mpfloat<D>(lower(x)), U = mpfloat<D>(upper(x));
+      I sl = (L == 0) ? I(1) : sin(I(L)) / I(L);
+      I su = (U == 0) ? I(1) : sin(I(U)) / I(U);
+      return hull(sl, su);
+    };
+    g = I(2) * taui * sinc_range(taui * th) / sinc_range(th / I(2)) * cos(th / I(2));
+  } else {
+    g = sin(taui * th) * cos(th / I(2)) / sin(th / I(2));
+  }
+  I num = (Rv - (one + c) * Qv) * cos(taui * th) + ((one - c) * Qv + Rv) * g;
+  return ival<D>(T / 2, T / 2) * num / Bv;
+}
+
+/// Value and derivative (forward mode) over intervals: the mean-value form F(m) + F'(X)(X - m)
+/// removes the cluster effect of branch-and-bound near an interior maximum.
+template <unsigned D>
+struct DI {
+  interval<D> v, d;
+};
+template <unsigned D> DI<D> operator+(const DI<D>& a, const DI<D>& b) { return {a.v + b.v, a.d + b.d}; }
+template <unsigned D> DI<D> operator-(const DI<D>& a, const DI<D>& b) { return {a.v - b.v, a.d - b.d}; }
+template <unsigned D> DI<D> operator*(const DI<D>& a, const DI<D>& b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
+template <unsigned D> DI<D> operator/(const DI<D>& a, const DI<D>& b) {
+  return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)};
+}
+template <unsigned D> DI<D> dcos(const DI<D>& a) { return {cos(a.v), -sin(a.v) * a.d}; }
+template <unsigned D> DI<D> dsin(const DI<D>& a) { return {sin(a.v), cos(a.v) * a.d}; }
+template <unsigned D> DI<D> dpoly(const P& p, const DI<D>& x) {
+  DI<D> r{interval<D>(0), interval<D>(0)};
+  for (size_t i = p.coeffs().size(); i-- > 0;) {
+    r = r * x;
+    r.v += scalar_cast<interval<D>>(p.coeffs()[i]);
+  }
+  return r;
+}
+
+/// Derivative of the frac objective over the box th (a > 0 required: uses cot(th/2) directly).
+template <unsigned D>
+interval<D> frac_derivative(const Objective& o, const rational& T, const rational& tau, const interval<D>& th) {
+  using I = interval<D>;
+  DI<D> t{th, I(1)};
+  DI<D> c = dcos(t);
+  DI<D> one{I(1), I(0)};
+  DI<D> taui{ival<D>(tau, tau), I(0)};
+  DI<D> half{I(1) / I(2), I(0)};
+  DI<D> g = dsin(taui * t) * dcos(half * t) / dsin(half * t);
+  DI<D> num = (dpoly<D>(o.R, c) - (one + c) * dpoly<D>(o.Q, c)) * dcos(taui * t) +
+              ((one - c) * dpoly<D>(o.Q, c) + dpoly<D>(o.R, c)) * g;
+  DI<D> f = DI<D>{ival<D>(T / 2, T / 2), I(0)} * num / dpoly<D>(o.B, c);
+  return f.d;
+}
+
+template <unsigned D>
+Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
+  using I = interval<D>;
+  using R = mpfloat<D>;
+  Bound out;
+  const rational tau = *pb.frac_delay / pb.T;
+  bool decided = false;
+  int div = divergence_at_pi(o, pb.T, tau, decided);
+  if (decided && div > 0) {
+    out.infinite = true;
+    out.status = Status::exact;
+    out.value = "inf";
+    out.where = "w -> pi/T: a pole of H z^-n at z = -1 meets e^{-j w t_d} (Tustin-like): Re -> +inf";
+    out.method = "exact divergence test at wT = pi (leading terms in pi - wT)";
+    I w = ipi<D>() / ival<D>(pb.T, pb.T);
+    out.omega_lo = rlo(w);
+    out.omega_hi = rhi(w);
+    out.omega = enclosure_decimal(out.omega_lo, out.omega_hi, 17);
+    return out;
+  }
+  // interior or w = 0 poles of B are outside this path
+  for (const auto& r : isolate_real_roots(o.B, rational(-1), rational(1)))
+    if (!(r.is_exact() && r.lo == -1))
+      throw NumericalError("fractional delay with a pole of H on the unit circle other than z = -1 is not supported");
+  const int dig = std::min(digits, 20);  // branch-and-bound: at most 20 digits
+  const R tol = pow(R(10), -dig - 1);
+  struct Box { R a, b; R ub; };
+  const R pi = R(mpfloat<D>(median(ipi<D>())));
+  const R pimax = R(mpfloat<D>(upper(ipi<D>())));
+  auto eval_box = [&](const R& a, const R& b) {
+    R ub = R(mpfloat<D>(upper(frac_objective<D>(o, pb.T, tau, I(a, b)))));
+    if (a > 0) {  // mean-value form, intersected with the natural one
+      R m = (a + b) / 2;
+      I X(a, b), Mi(m, m);
+      I mv = frac_objective<D>(o, pb.T, tau, Mi) + frac_derivative<D>(o, pb.T, tau, X) * (X - Mi);
+      R u2 = R(mpfloat<D>(upper(mv)));
+      if (u2 < ub) ub = u2;
+    }
+    return ub;
+  };
+  R best = -std::numeric_limits<double>::infinity(), best_at = 0;
+  auto point = [&](const R& x) {
+    I v = frac_objective<D>(o, pb.T, tau, I(x, x));
+    R lv = R(mpfloat<D>(lower(v)));
+    if (lv > best) { best = lv; best_at = x; }
+  };
+  // the right end is pi (enclosed): evaluate both ends and split
+  std::vector<Box> work;
+  const int N0 = 64;
+  for (int i = 0; i < N0; ++i) {
+    R a = pi * i / N0, b = (i == N0 - 1) ? pimax : pi * (i + 1) / N0;
+    point((a + b) / 2);
+    work.push_back({a, b, eval_box(a, b)});
+  }
+  point(R(0));
+  point(pi);
+  long evals = 0;
+  const long budget = 200000;
+  R maxub = best;
+  bool converged = false;
+  while (evals < budget) {
+    // drop dominated boxes, find the largest upper bound
+    R thresh = best + tol * std::max(R(1), abs(best));
+    std::vector<Box> keep;
+    maxub = best;
+    for (auto& bx : work)
+      if (bx.ub > thresh) { keep.push_back(bx); maxub = std::max(maxub, bx.ub); }
+    if (keep.empty()) { converged = true; break; }
+    std::sort(keep.begin(), keep.end(), [](const Box& x, const Box& y) { return x.ub > y.ub; });
+    std::vector<Box> next;
+    size_t nsplit = std::min<size_t>(keep.size(), 16);
+    for (size_t i = 0; i < keep.size(); ++i) {
+      if (i >= nsplit) { next.push_back(keep[i]); continue; }
+      R mid = (keep[i].a + keep[i].b) / 2;
+      if (keep[i].b - keep[i].a < pow(R(10), -static_cast<int>(D) + 5)) continue;  // too narrow: give up on it
+      point(mid);
+      next.push_back({keep[i].a, mid, eval_box(keep[i].a, mid)});
+      next.push_back({mid, keep[i].b, eval_box(mid, keep[i].b)});
+      evals += 3;
+    }
+    work = std::move(next);
+  }
+  rational lo = exact_rational(mpfloat<D>(best)) + pb.eta;
+  rational hi = exact_rational(mpfloat<D>(converged ? best + tol * std::max(R(1), abs(best)) : maxub)) + pb.eta;
+  out.lo = lo;
+  out.hi = std::max(lo, hi);
+  out.status = converged ? Status::certified : Status::numeric;
+  out.value = enclosure_decimal(out.lo, out.hi, dig);
+  out.method = "certified: interval branch-and-bound over w (MPFI, " + std::to_string(D) + " digits)";
+  if (!converged) out.note = "branch-and-bound budget exhausted; enclosure is the last bracket";
+  R w = best_at / mpfloat<D>(to_real<R>(pb.T));
+  out.omega_lo = out.omega_hi = exact_rational(mpfloat<D>(w));
+  out.omega = to_decimal(out.omega_lo, std::min(dig, 12));
+  out.where = best_at == 0 ? "w = 0" : (best_at >= pi ? "w = pi/T" : "interior");
+  return out;
+}
+
+}  // namespace
+
+Bound bound_certified(const BoundProblem& p, int digits) {
+  check_assumptions(p);
+  if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
+  BoundProblem q = p;
+  // a fractional delay that is a multiple of T is an integer delay
+  if (q.frac_delay) {
+    rational tau = *q.frac_delay / q.T;
+    if (den(tau) == 1) {
+      q.delay += static_cast<int>(num(tau).convert_to<long>());
+      q.frac_delay.reset();
+    }
+  }
+  Objective o = objective(q.H, q.T, q.delay);
+  if (q.frac_delay) {
+    if (digits <= 30) return certified_frac<50>(o, q, digits);
+    return certified_frac<100>(o, q, digits);
+  }
+  Bound b;
+  if (digits <= 30 && certified_rational<50>(o.f, q, digits, b)) return b;
+  if (digits <= 80 && certified_rational<100>(o.f, q, digits, b)) return b;
+  if (certified_rational<300>(o.f, q, digits, b)) return b;
+  throw NumericalError("could not decide " + std::to_string(digits) + " digits of the bound");
+}
+
+// ---------------------------------------------------------------------------------------------
+// grid and fast paths
+namespace {
+struct dd {
+  double hi = 0, lo = 0;
+};
+inline dd two_sum(double a, double b) {
+  double s = a + b, bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+inline dd fast_two_sum(double a, double b) {
+  double s = a + b;
+  return {s, b - (s - a)};
+}
+inline dd operator+(dd a, dd b) {
+  dd s = two_sum(a.hi, b.hi);
+  s.lo += a.lo + b.lo;
+  return fast_two_sum(s.hi, s.lo);
+}
+inline dd operator-(dd a) { return {-a.hi, -a.lo}; }
+inline dd operator-(dd a, dd b) { return a + (-b); }
+inline dd operator*(dd a, dd b) {
+  double p = a.hi * b.hi;
+  double e = std::fma(a.hi, b.hi, -p);
+  e += a.hi * b.lo + a.lo * b.hi;
+  return fast_two_sum(p, e);
+}
+inline dd operator/(dd a, dd b) {
+  double q1 = a.hi / b.hi;
+  dd r = a - b * dd{q1, 0};
+  double q2 = r.hi / b.hi;
+  r = r - b * dd{q2, 0};
+  double q3 = r.hi / b.hi;
+  return dd{q1, 0} + dd{q2, 0} + dd{q3, 0};
+}
+dd to_dd(const rational& q) {
+  double h = to_real<double>(q);
+  double l = to_real<double>(q - exact_rational(h));
+  return {h, l};
+}
+inline dd horner(const std::vector<double>& hi, const std::vector<double>& lo, double x) {
+  dd r{0, 0};
+  for (size_t i = hi.size(); i-- > 0;) r = r * dd{x, 0} + dd{hi[i], lo[i]};
+  return r;
+}
+inline double horner_d(const std::vector<double>& c, double x) {
+  double r = 0;
+  for (size_t i = c.size(); i-- > 0;) r = r * x + c[i];
+  return r;
+}
+std::vector<double> deriv(const std::vector<double>& c) {
+  std::vector<double> r;
+  for (size_t i = 1; i < c.size(); ++i) r.push_back(c[i] * static_cast<double>(i));
+  return r;
+}
+/// Real roots of the polynomial c in [a, b] (double), by recursion on the derivative: between
+/// consecutive critical points the polynomial is monotone, so one safeguarded bisection/Newton each.
+void roots_in(const std::vector<double>& c, double a, double b, std::vector<double>& out) {
+  std::vector<double> p = c;
+  while (!p.empty() && p.back() == 0) p.pop_back();
+  out.clear();
+  if (p.size() <= 1) return;
+  if (p.size() == 2) {
+    double r = -p[0] / p[1];
+    if (r >= a && r <= b) out.push_back(r);
+    return;
+  }
+  std::vector<double> crit;
+  roots_in(deriv(p), a, b, crit);
+  std::vector<double> pts;
+  pts.push_back(a);
+  for (double x : crit) pts.push_back(x);
+  pts.push_back(b);
+  auto dp = deriv(p);
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    double x0 = pts[i], x1 = pts[i + 1];
+    double f0 = horner_d(p, x0), f1 = horner_d(p, x1);
+    if (f0 == 0) { if (out.empty() || out.back() != x0) out.push_back(x0); continue; }
+    if (f1 == 0) continue;
+    if ((f0 > 0) == (f1 > 0)) continue;
+    double lo = x0, hi = x1, x = 0.5 * (x0 + x1);
+    for (int it = 0; it < 100; ++it) {
+      double fx = horner_d(p, x);
+      if (fx == 0) break;
+      if ((fx > 0) == (f0 > 0)) lo = x; else hi = x;
+      double d = horner_d(dp, x);
+      double xn = d != 0 ? x - fx / d : 0.5 * (lo + hi);
+      if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi);
+      if (std::abs(xn - x) <= 1e-17 * std::max(1.0, std::abs(x))) { x = xn; break; }
+      x = xn;
+      if (hi - lo <= 4e-16 * std::max(1.0, std::abs(x))) break;
+    }
+    out.push_back(x);
+  }
+}
+}  // namespace
+
+FastBound::FastBound(const BoundProblem& p) {
+  if (p.frac_delay && den(*p.frac_delay / p.T) != 1) { ok_ = false; return; }
+  int n = p.delay + (p.frac_delay ? static_cast<int>(num(*p.frac_delay / p.T).convert_to<long>()) : 0);
+  T_ = to_real<double>(p.T);
+  eta_ = to_real<double>(p.eta);
+  // the c-form in double-double from double-double coefficients of N and D z^n
+  const auto& nc = p.H.num().coeffs();
+  const auto& dc0 = p.H.den().coeffs();
+  std::vector<dd> N, Dp(static_cast<size_t>(n), dd{0, 0});
+  for (auto& x : nc) N.push_back(to_dd(x));
+  for (auto& x : dc0) Dp.push_back(to_dd(x));
+  const int nn = static_cast<int>(N.size()), nd = static_cast<int>(Dp.size());
+  const int M = std::max(nn, nd);
+  std::vector<dd> a(M + 1), cs(M + 1), e(M + 1);
+  for (int k = 0; k < nn; ++k)
+    for (int l = 0; l < nd; ++l) {
+      dd pr = N[k] * Dp[l];
+      int m = k - l;
+      if (m == 0) a[0] = a[0] + pr;
+      else if (m > 0) { a[m] = a[m] + pr; cs[m] = cs[m] + pr; }
+      else { a[-m] = a[-m] + pr; cs[-m] = cs[-m] - pr; }
+    }
+  for (int l = 0; l < nd; ++l)
+    for (int l2 = l; l2 < nd; ++l2) {
+      dd pr = Dp[l] * Dp[l2];
+      if (l2 == l) e[0] = e[0] + pr;
+      else e[l2 - l] = e[l2 - l] + pr + pr;
+    }
+  // Chebyshev -> monomial (integer coefficients, exact in double)
+  auto add_cheb = [](std::vector<dd>& acc, const P& basis, dd coef) {
+    if (acc.size() < basis.coeffs().size()) acc.resize(basis.coeffs().size());
+    for (size_t i = 0; i < basis.coeffs().size(); ++i)
+      acc[i] = acc[i] + coef * dd{to_real<double>(basis.coeffs()[i]), 0};
+  };
+  std::vector<dd> R, Q, B;
+  for (int m = 0; m <= M; ++m) {
+    add_cheb(R, cheb_T(m), a[m]);
+    if (m >= 1) add_cheb(Q, cheb_U(m - 1), cs[m]);
+    add_cheb(B, cheb_T(m), e[m]);
+  }
+  // A = (T/2)(R - (1+c) Q)
+  std::vector<dd> A(std::max(R.size(), Q.size() + 1));
+  for (size_t i = 0; i < R.size(); ++i) A[i] = A[i] + R[i];
+  for (size_t i = 0; i < Q.size(); ++i) { A[i] = A[i] - Q[i]; A[i + 1] = A[i + 1] - Q[i]; }
+  dd half_T = to_dd(p.T / 2);
+  for (auto& x : A) x = x * half_T;
+  for (auto& x : A) { Ahi_.push_back(x.hi); Alo_.push_back(x.lo); }
+  for (auto& x : B) { Bhi_.push_back(x.hi); Blo_.push_back(x.lo); }
+}
+
+std::optional<std::pair<double, double>> FastBound::evaluate() const {
+  if (!ok_) return std::nullopt;
+  // B = |D'|^2 > 0 on [-1, 1] unless a pole lies on the unit circle: check at its critical points
+  double bscale = 0;
+  for (double x : Bhi_) bscale = std::max(bscale, std::abs(x));
+  std::vector<double> rb;
+  roots_in(deriv(Bhi_), -1.0, 1.0, rb);
+  rb.push_back(-1.0);
+  rb.push_back(1.0);
+  for (double x : rb)
+    if (horner(Bhi_, Blo_, x).hi <= 1e-24 * bscale) return std::nullopt;
+  // P = A'B - AB' in double-double
+  const size_t na = Ahi_.size(), nb = Bhi_.size();
+  std::vector<dd> Pd(na + nb, dd{0, 0});
+  for (size_t i = 1; i < na; ++i)
+    for (size_t j = 0; j < nb; ++j) Pd[i - 1 + j] = Pd[i - 1 + j] + dd{Ahi_[i], Alo_[i]} * dd{Bhi_[j] * static_cast<double>(i), Blo_[j] * static_cast<double>(i)};
+  for (size_t i = 0; i < na; ++i)
+    for (size_t j = 1; j < nb; ++j) Pd[i + j - 1] = Pd[i + j - 1] - dd{Ahi_[i], Alo_[i]} * dd{Bhi_[j] * static_cast<double>(j), Blo_[j] * static_cast<double>(j)};
+  std::vector<double> Ph, Pl;
+  for (auto& x : Pd) { Ph.push_back(x.hi); Pl.push_back(x.lo); }
+  std::vector<double> crit;
+  roots_in(Ph, -1.0, 1.0, crit);
+  // Newton polish on P evaluated in double-double
+  std::vector<double> dPh = deriv(Ph);
+  for (double& x : crit) {
+    for (int it = 0; it < 3; ++it) {
+      dd px = horner(Ph, Pl, x);
+      double d = horner_d(dPh, x);
+      if (d == 0) break;
+      double xn = x - px.hi / d;
+      if (xn < -1 || xn > 1) break;
+      x = xn;
+    }
+  }
+  crit.push_back(1.0);
+  crit.push_back(-1.0);
+  double best = -std::numeric_limits<double>::infinity(), bc = 1;
+  for (double x : crit) {
+    dd v = horner(Ahi_, Alo_, x) / horner(Bhi_, Blo_, x);
+    double vv = (v + dd{eta_, 0}).hi;
+    if (vv > best) { best = vv; bc = x; }
+  }
+  return std::make_pair(best, std::acos(std::clamp(bc, -1.0, 1.0)) / T_);
+}
+
+Bound bound_grid(const BoundProblem& p, long N) {
+  check_assumptions(p);
+  if (N < 2) throw InputError("grid: N must be >= 2");
+  Bound out;
+  out.status = Status::numeric;
+  out.method = "grid (" + std::to_string(N) + " points, double)";
+  const double T = to_real<double>(p.T);
+  const double pi = 3.14159265358979323846;
+  double best = -std::numeric_limits<double>::infinity(), bw = 0;
+  if (!p.frac_delay) {
+    Objective o = objective(p.H, p.T, p.delay);
+    auto A = o.f.num().cast<double>(), B = o.f.den().cast<double>();
+    for (long k = 0; k < N; ++k) {
+      double th = pi * static_cast<double>(k) / static_cast<double>(N - 1);
+      double c = std::cos(th);
+      double b = B(c);
+      if (b == 0) continue;
+      double v = A(c) / b;
+      if (v > best) { best = v; bw = th / T; }
+    }
+    best += to_real<double>(p.eta);
+  } else {
+    for (long k = 0; k < N; ++k) {
+      double w = pi / T * static_cast<double>(k) / static_cast<double>(N - 1);
+      double v = objective_at(p, w);
+      if (v > best) { best = v; bw = w; }
+    }
+  }
+  if (std::isinf(best) && best > 0) { out.infinite = true; out.value = "inf"; return out; }
+  out.lo = out.hi = exact_rational(best);
+  out.value = to_decimal(out.lo, 17);
+  out.omega = to_decimal(exact_rational(bw), 17);
+  out.omega_lo = out.omega_hi = exact_rational(bw);
+  out.where = "grid point";
+  return out;
+}
+
+Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
+  if (m == Method::grid) return bound_grid(p, grid_points);
+  if (m == Method::fast) {
+    check_assumptions(p);
+    if (auto r = FastBound::run(p)) {
+      Bound out;
+      out.status = Status::numeric;
+      out.method = "fast: double-double coefficients, root finding in double, Newton polish";
+      out.lo = out.hi = exact_rational(r->first);
+      out.value = to_decimal(out.lo, 16);
+      out.omega = to_decimal(exact_rational(r->second), 16);
+      out.omega_lo = out.omega_hi = exact_rational(r->second);
+      out.where = "numeric maximiser";
+      return out;
+    }
+  }
+  return bound_certified(p, digits);
+}
+
+// ---------------------------------------------------------------------------------------------
+NecessaryCheck necessary_condition(const RF& H, const rational& T, const rational& b, const rational& omega) {
+  using R = mp50;
+  if (omega <= 0) throw InputError("necessary_condition: omega must be > 0 (r(jw) has a pole at w = 0)");
+  R th = to_real<R>(omega * T);
+  R zr = cos(th), zi = sin(th);
+  auto eval = [&](const P& p, R& re, R& im) {
+    re = 0; im = 0;
+    for (size_t i = p.coeffs().size(); i-- > 0;) {
+      R nr = re * zr - im * zi + to_real<R>(p.coeffs()[i]);
+      R ni = re * zi + im * zr;
+      re = nr; im = ni;
+    }
+  };
+  R nr, ni, dr, di;
+  eval(H.num(), nr, ni);
+  eval(H.den(), dr, di);
+  R dd2 = dr * dr + di * di;
+  R hr = (nr * dr + ni * di) / dd2, hi = (ni * dr - nr * di) / dd2;
+  // r = T/(z - 1)
+  R ar = zr - 1, ai = zi, a2 = ar * ar + ai * ai;
+  R Tr = to_real<R>(T);
+  R rr = Tr * ar / a2, ri = -Tr * ai / a2;
+  R xr = rr * hr - ri * hi, xi = rr * hi + ri * hr;  // r H
+  R br = to_real<R>(b);
+  R lhs = sqrt(xr * xr + xi * xi) / sqrt((2 * br + xr) * (2 * br + xr) + xi * xi);
+  NecessaryCheck c;
+  c.lhs14 = static_cast<double>(lhs);
+  c.rhs15 = static_cast<double>(-xr);
+  c.holds14 = lhs < 1;
+  c.holds15 = br > -xr;
+  return c;
+}
+
+double objective_at(const BoundProblem& p, double omega) {
+  using R = mp50;
+  Objective o = objective(p.H, p.T, p.delay);
+  R th = R(omega) * to_real<R>(p.T);
+  R c = cos(th);
+  R eta = to_real<R>(p.eta);
+  if (!p.frac_delay) return static_cast<double>(o.f.num()(c) / o.f.den()(c) + eta);
+  R tau = to_real<R>(*p.frac_delay / p.T);
+  R g = (th == 0) ? R(2) * tau : sin(tau * th) * cos(th / 2) / sin(th / 2);
+  R num = (o.R(c) - (1 + c) * o.Q(c)) * cos(tau * th) + ((1 - c) * o.Q(c) + o.R(c)) * g;
+  return static_cast<double>(to_real<R>(p.T) / 2 * num / o.B(c) + eta);
+}
+
+}  // namespace hapstab::passivity

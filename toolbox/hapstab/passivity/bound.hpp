@@ -1,0 +1,120 @@
+// hapstab/passivity/bound.hpp -- the passivity bound b* of paper 001 for any virtual environment.
+//
+//   b* = sup_{0 <= w <= pi/T} Re{ T H(e^{jwT}) z^{-n} e^{-j w t_d} / (1 - e^{jwT}) } + eta     (45), (54)
+//
+// The system of Fig. 1 is passive iff b > b* (Secs. III-V, VII). Exact objective: with
+// c = cos(wT) and W = H z^{-n} = N/D', write N(z)conj(D'(z)) = sum_m (a_m cos m wT + j c_m sin m wT),
+// |D'|^2 = sum_m e_m cos m wT. Because T/(1-z) = T/2 + j T/(2t), t = tan(wT/2), and
+// sin(m wT)/t = (1 + c) U_{m-1}(c) (Chebyshev U), the objective without delay is the exact rational
+// function of c
+//   f(c) = (T/2) [ R(c) - (1 + c) Q(c) ] / B(c),  R = sum a_m T_m(c), Q = sum c_m U_{m-1}(c), B = sum e_m T_m(c)
+// on c in [-1, 1] (c = 1 <-> w = 0, c = -1 <-> w = pi/T). No 1/t is ever formed, so w -> 0 does not
+// cancel (Re{T/(1-z)} = T/2 exactly), and a pole of H at z = +-1 cancels or not exactly (gcd).
+//
+// Methods: certified (default; Sturm isolation of the critical points of f, MPFR Newton polish,
+// MPFI enclosure; exact where the maximiser is rational), fast (double-double coefficients,
+// derivative-recursion root finding, Newton polish; status numeric), grid (N samples, comparison
+// only). A fractional delay t_d (not rational in c) is handled by an exact divergence test at
+// wT = pi (Tustin-like poles at z = -1) and by interval branch-and-bound over w (MPFI).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hapstab/numeric/result.hpp"
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/poly/rational_function.hpp"
+
+namespace hapstab::passivity {
+
+/// One passivity-bound problem. H is a rational function of z with exact coefficients.
+struct BoundProblem {
+  RationalFunction<rational> H{Polynomial<rational>(rational(0))};
+  rational T = 0;                     ///< sample period, > 0
+  int delay = 0;                      ///< n in z^{-n}, >= 0
+  std::optional<rational> frac_delay; ///< t_d > 0 in e^{-j w t_d} (seconds), not a multiple of T
+  rational eta = 0;                   ///< operator shortage of passivity (54), >= 0
+  bool allow_noncausal = false;       ///< evaluate (45) for a non-causal H (the FIR form (47) as written)
+};
+
+/// Checks the assumptions of (45)/(54): T > 0, n >= 0, eta >= 0, t_d >= 0, H z^{-n} causal (deg num
+/// <= deg den + n, unless allow_noncausal), non-zero denominator, H stable (no pole with |z| > 1; decided exactly by Schur-Cohn
+/// on the part of the denominator without unit-circle roots, and by Sturm on the unit circle for
+/// the rest). A pole ON the unit circle is allowed. Throws InputError naming the failed assumption.
+void check_assumptions(const BoundProblem& p);
+
+/// True iff every root of d satisfies |z| <= 1 (exact). `detail` receives an explanation.
+bool poles_in_closed_unit_disk(const Polynomial<rational>& d, std::string* detail = nullptr);
+
+/// The exact objective as a function of c = cos(wT), without eta (see the header comment).
+struct Objective {
+  RationalFunction<rational> f{Polynomial<rational>(rational(0))};  ///< reduced A/B
+  Polynomial<rational> R, Q, B;  ///< unreduced pieces: Re W * B = R, Im W * B = sin(wT) Q, B = |D'|^2
+};
+Objective objective(const RationalFunction<rational>& H, const rational& T, int delay);
+
+enum class Method { certified, fast, grid };
+inline const char* to_string(Method m) {
+  return m == Method::certified ? "certified" : m == Method::fast ? "fast" : "grid";
+}
+
+/// The result. `lo`/`hi` enclose b* (lo == hi when exact); `value` is the decimal string to
+/// report ("inf" when no finite b makes the system passive).
+struct Bound {
+  bool infinite = false;
+  Status status = Status::numeric;
+  rational lo = 0, hi = 0;
+  std::string value;                   ///< decimal with the requested digits, or "inf"
+  std::optional<std::string> omega;    ///< maximiser in rad/s (decimal), nullopt when none
+  std::string where;                   ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
+  rational omega_lo = 0, omega_hi = 0; ///< enclosure of the maximiser (rad/s), when known
+  std::string method;                  ///< e.g. "certified: Sturm isolation + MPFI (30 digits)"
+  std::string note;
+  double value_double() const;         ///< nearest double of the midpoint (+inf when infinite)
+};
+
+/// Certified bound to `digits` significant digits (10 <= digits <= 280; default 30).
+Bound bound_certified(const BoundProblem& p, int digits = 30);
+
+/// Grid method with N equally spaced w in [0, pi/T] (comparison only; status numeric).
+Bound bound_grid(const BoundProblem& p, long N);
+
+/// Double-precision fast path for a prepared case. Prepare once (exact -> double-double
+/// coefficients), then `evaluate` (the timed part). Returns nullopt from evaluate when the
+/// case needs the certified path (a pole on the unit circle, a fractional delay).
+class FastBound {
+ public:
+  explicit FastBound(const BoundProblem& p);
+  /// b* (with eta) and the maximising w; nullopt when the case is outside the fast path.
+  std::optional<std::pair<double, double>> evaluate() const;
+  /// Builds the coefficients from the exact H and evaluates: the whole fast path.
+  static std::optional<std::pair<double, double>> run(const BoundProblem& p) { return FastBound(p).evaluate(); }
+
+ private:
+  std::vector<double> Ahi_, Alo_, Bhi_, Blo_;  // f = A/B in c, double-double coefficients
+  double T_ = 0, eta_ = 0;
+  bool ok_ = true;
+};
+
+/// Dispatcher: certified / fast (falls back to certified when out of scope) / grid.
+Bound bound(const BoundProblem& p, Method m = Method::certified, int digits = 30, long grid_points = 100000);
+
+/// The necessary condition of Sec. III at one frequency: (14) |rH/(2b + rH)| < 1 and (15)
+/// b > Re{-r H}, r = T/(e^{jwT} - 1) (44), evaluated in 50-digit arithmetic. They agree.
+struct NecessaryCheck {
+  bool holds14 = false, holds15 = false;
+  double lhs14 = 0, rhs15 = 0;  ///< |rH/(2b+rH)| and Re{-rH}
+};
+NecessaryCheck necessary_condition(const RationalFunction<rational>& H, const rational& T, const rational& b,
+                                   const rational& omega);
+
+/// Re{T H(e^{jwT}) z^{-n} e^{-j w t_d}/(1 - e^{jwT})} + eta at one w, in 50-digit arithmetic
+/// through the c-form (no cancellation at w -> 0). Used by figures and the grid method.
+double objective_at(const BoundProblem& p, double omega);
+
+/// q as a decimal with `digits` significant digits rounded outward (dir = -1 down, +1 up), so that
+/// printed enclosures still contain the value.
+std::string decimal_outward(const rational& q, int digits, int dir);
+
+}  // namespace hapstab::passivity
