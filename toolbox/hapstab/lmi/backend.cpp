@@ -1,0 +1,182 @@
+// hapstab/lmi/backend.cpp -- validation and DIMACS errors shared by both back-ends, and DSDP.
+#include "hapstab/lmi/backend.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "hapstab/numeric/error.hpp"
+
+extern "C" {
+#include <dsdp/dsdp5.h>
+}
+
+namespace hapstab::lmi {
+
+const char* to_string(Backend b) { return b == Backend::dsdp ? "DSDP" : "CSDP"; }
+const char* to_string(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::optimal: return "optimal";
+    case SolveStatus::infeasible: return "infeasible";
+    case SolveStatus::unbounded: return "unbounded";
+    case SolveStatus::numerical_trouble: return "numerical trouble";
+  }
+  return "numerical trouble";
+}
+
+std::mutex& sdp_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+void validate(const StandardForm& sf) {
+  if (sf.m <= 0) throw InputError("sdp: no decision variables");
+  if (sf.b.size() != sf.m || !sf.b.allFinite()) throw InputError("sdp: objective vector has the wrong size or is not finite");
+  if (sf.blocks.empty()) throw InputError("sdp: no constraint blocks");
+  std::vector<int> used(static_cast<size_t>(sf.m), 0);
+  for (size_t j = 0; j < sf.blocks.size(); ++j) {
+    const auto& B = sf.blocks[j];
+    const auto n = B.C.rows();
+    const std::string w = "sdp block " + std::to_string(j + 1);
+    if (n <= 0 || B.C.cols() != n) throw InputError(w + ": constant is not square");
+    if (!B.C.allFinite() || (B.C - B.C.transpose()).cwiseAbs().maxCoeff() != 0.0)
+      throw InputError(w + ": constant is not finite and exactly symmetric");
+    for (const auto& t : B.terms) {
+      if (t.var < 0 || t.var >= sf.m) throw InputError(w + ": variable index out of range");
+      if (t.A.rows() != n || t.A.cols() != n) throw InputError(w + ": coefficient has the wrong size");
+      if (!t.A.allFinite() || (t.A - t.A.transpose()).cwiseAbs().maxCoeff() != 0.0)
+        throw InputError(w + ": coefficient is not finite and exactly symmetric");
+      used[static_cast<size_t>(t.var)] = 1;
+    }
+  }
+  for (int k = 0; k < sf.m; ++k)
+    if (!used[static_cast<size_t>(k)]) throw InputError("sdp: variable " + std::to_string(k) + " appears in no block");
+}
+
+std::array<double, 6> dimacs_errors(const StandardForm& sf, const Eigen::VectorXd& y, const std::vector<Eigen::MatrixXd>& X) {
+  std::array<double, 6> e{};
+  if (y.size() != sf.m || X.size() != sf.blocks.size()) {
+    e.fill(NAN);
+    return e;
+  }
+  Eigen::VectorXd AX = Eigen::VectorXd::Zero(sf.m);
+  double cmax = 0, trCX = 0, trXS = 0, minX = INFINITY, minS = INFINITY;
+  for (size_t j = 0; j < sf.blocks.size(); ++j) {
+    const auto& B = sf.blocks[j];
+    Eigen::MatrixXd S = B.C;
+    for (const auto& t : B.terms) {
+      AX(t.var) += (t.A.cwiseProduct(X[j])).sum();
+      S += y(t.var) * t.A;
+    }
+    cmax = std::max(cmax, B.C.cwiseAbs().maxCoeff());
+    trCX += (B.C.cwiseProduct(X[j])).sum();
+    trXS += (S.cwiseProduct(X[j])).sum();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ex(X[j], Eigen::EigenvaluesOnly), es(S, Eigen::EigenvaluesOnly);
+    minX = std::min(minX, ex.eigenvalues()(0));
+    minS = std::min(minS, es.eigenvalues()(0));
+  }
+  const double bmax = sf.b.cwiseAbs().maxCoeff();
+  const double pobj = trCX, dobj = sf.b.dot(y);
+  e[0] = (AX + sf.b).norm() / (1 + bmax);
+  e[1] = std::max(0.0, -minX) / (1 + bmax);
+  e[2] = 0;  // S is formed from y exactly: no dual residual
+  e[3] = std::max(0.0, -minS) / (1 + cmax);
+  e[4] = (pobj - dobj) / (1 + std::abs(pobj) + std::abs(dobj));
+  e[5] = trXS / (1 + std::abs(pobj) + std::abs(dobj));
+  return e;
+}
+
+// ---------------------------------------------------------------------------------------------
+// DSDP: maximise b^T y s.t. C - sum A_i y_i >= 0, so its A_i are our -A_k. Data in packed
+// lower-triangular storage, element (i, j), i >= j, at i(i+1)/2 + j.
+BackendResult solve_dsdp(const StandardForm& sf) {
+  validate(sf);
+  std::lock_guard<std::mutex> lock(sdp_mutex());
+  BackendResult r;
+  // Every array DSDP sees lives until DSDPDestroy.
+  std::vector<std::vector<int>> idx;
+  std::vector<std::vector<double>> val;
+  DSDP dsdp = nullptr;
+  SDPCone cone = nullptr;
+  auto check = [&](int info, const char* what) {
+    if (info) {
+      if (dsdp) DSDPDestroy(dsdp);
+      throw NumericalError(std::string("DSDP: ") + what + " failed (code " + std::to_string(info) + ")");
+    }
+  };
+  check(DSDPCreate(sf.m, &dsdp), "DSDPCreate");
+  for (int k = 0; k < sf.m; ++k) check(DSDPSetDualObjective(dsdp, k + 1, sf.b(k)), "DSDPSetDualObjective");
+  const int J = static_cast<int>(sf.blocks.size());
+  check(DSDPCreateSDPCone(dsdp, J, &cone), "DSDPCreateSDPCone");
+  auto add = [&](int j, int var, const Eigen::MatrixXd& M, double sign) {
+    const int n = static_cast<int>(M.rows());
+    std::vector<int> ii;
+    std::vector<double> vv;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c <= i; ++c)
+        if (M(i, c) != 0.0) {
+          ii.push_back(i * (i + 1) / 2 + c);
+          vv.push_back(sign * M(i, c));
+        }
+    if (ii.empty()) return;
+    idx.push_back(std::move(ii));
+    val.push_back(std::move(vv));
+    check(SDPConeSetASparseVecMat(cone, j, var, n, 1.0, 0, idx.back().data(), val.back().data(),
+                                  static_cast<int>(idx.back().size())),
+          "SDPConeSetASparseVecMat");
+  };
+  idx.reserve(1024);
+  val.reserve(1024);
+  for (int j = 0; j < J; ++j) {
+    const auto& B = sf.blocks[static_cast<size_t>(j)];
+    check(SDPConeSetBlockSize(cone, j, static_cast<int>(B.C.rows())), "SDPConeSetBlockSize");
+    check(SDPConeSetSparsity(cone, j, static_cast<int>(B.terms.size()) + 1), "SDPConeSetSparsity");
+    add(j, 0, B.C, 1.0);
+    for (const auto& t : B.terms) add(j, t.var + 1, t.A, -1.0);
+  }
+  check(DSDPSetGapTolerance(dsdp, 1e-9), "DSDPSetGapTolerance");
+  check(DSDPSetMaxIts(dsdp, 300), "DSDPSetMaxIts");
+  check(DSDPSetup(dsdp), "DSDPSetup");
+  int info = DSDPSolve(dsdp);
+  DSDPTerminationReason reason = CONTINUE_ITERATING;
+  DSDPSolutionType type = DSDP_PDUNKNOWN;
+  DSDPStopReason(dsdp, &reason);
+  DSDPGetSolutionType(dsdp, &type);
+  DSDPGetIts(dsdp, &r.iterations);
+  r.y.resize(sf.m);
+  DSDPGetY(dsdp, r.y.data(), sf.m);
+  int xinfo = DSDPComputeX(dsdp);
+  r.X.resize(static_cast<size_t>(J));
+  for (int j = 0; j < J; ++j) {
+    const int n = static_cast<int>(sf.blocks[static_cast<size_t>(j)].C.rows());
+    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, n);
+    double* xx = nullptr;
+    int nn = 0;
+    if (!xinfo && !SDPConeGetXArray(cone, j, &xx, &nn) && nn == n * (n + 1) / 2)
+      for (int i = 0; i < n; ++i)
+        for (int c = 0; c <= i; ++c) X(i, c) = X(c, i) = xx[i * (i + 1) / 2 + c];
+    r.X[static_cast<size_t>(j)] = X;
+  }
+  DSDPDestroy(dsdp);
+  r.primal_objective = sf.b.dot(r.y);
+  double trCX = 0;
+  for (int j = 0; j < J; ++j) trCX += sf.blocks[static_cast<size_t>(j)].C.cwiseProduct(r.X[static_cast<size_t>(j)]).sum();
+  r.dual_objective = trCX;
+  r.detail = "DSDP stop reason " + std::to_string(static_cast<int>(reason)) + ", solution type " +
+             std::to_string(static_cast<int>(type));
+  if (info) {
+    r.status = SolveStatus::numerical_trouble;
+    r.detail += ", DSDPSolve returned " + std::to_string(info);
+  } else if (type == DSDP_INFEASIBLE) {
+    r.status = SolveStatus::infeasible;
+  } else if (type == DSDP_UNBOUNDED) {
+    r.status = SolveStatus::unbounded;
+  } else if (reason == DSDP_CONVERGED && type == DSDP_PDFEASIBLE) {
+    r.status = SolveStatus::optimal;
+  } else {
+    r.status = SolveStatus::numerical_trouble;
+  }
+  r.dimacs = dimacs_errors(sf, r.y, r.X);
+  return r;
+}
+
+}  // namespace hapstab::lmi

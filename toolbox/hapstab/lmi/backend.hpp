@@ -1,0 +1,75 @@
+// hapstab/lmi/backend.hpp -- the SDP back-ends behind one interface: DSDP 5.8 (default) and
+// CSDP 6 (cross-check). Both solve the standard form
+//
+//   maximise b^T y   subject to   S_j(y) = C_j + sum_k y_k A_jk  >= 0   (j = 1..J blocks)
+//   dual:  minimise sum_j tr(C_j X_j)  s.t.  sum_j tr(A_jk X_j) = -b_k,  X_j >= 0,
+//
+// so y are the LMI's decision variables and X its multipliers. When the LMI is infeasible,
+// X is a Farkas ray: X >= 0, sum_j tr(A_jk X_j) = 0, sum_j tr(C_j X_j) < 0.
+//
+// Both libraries are C code that is not thread-safe: every call is serialised by one process-
+// wide mutex. DSDP keeps pointers into our arrays until DSDPDestroy (they live until then).
+// CSDP's easy_sdp prints to stdout, reads ./param.csdp if one exists and calls exit() on some
+// malformed input: we validate the data first, and run CSDP in a forked child process whose
+// stdout is /dev/null and whose working directory is a fresh private folder holding our own
+// param.csdp (default parameters, printlevel 0), so neither a stray param.csdp nor an exit()
+// can change results or end the caller. The DIMACS error measures are computed by us, from the
+// returned (y, X), with the same formulas for both back-ends.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace hapstab::lmi {
+
+enum class Backend { dsdp, csdp };
+const char* to_string(Backend b);
+
+struct SdpTerm {
+  int var;             ///< index k of y_k
+  Eigen::MatrixXd A;   ///< dense symmetric block coefficient
+};
+struct SdpBlock {
+  Eigen::MatrixXd C;   ///< symmetric constant
+  std::vector<SdpTerm> terms;
+};
+struct StandardForm {
+  int m = 0;                   ///< number of y variables
+  Eigen::VectorXd b;           ///< objective (maximised)
+  std::vector<SdpBlock> blocks;
+};
+
+enum class SolveStatus { optimal, infeasible, unbounded, numerical_trouble };
+const char* to_string(SolveStatus s);
+
+struct BackendResult {
+  SolveStatus status = SolveStatus::numerical_trouble;
+  std::string detail;          ///< solver's own termination code / reason, in words
+  Eigen::VectorXd y;
+  std::vector<Eigen::MatrixXd> X;  ///< multipliers (a Farkas ray when infeasible)
+  double primal_objective = 0;     ///< b^T y
+  double dual_objective = 0;       ///< sum tr(C X)
+  std::array<double, 6> dimacs{};  ///< DIMACS err1..err6 (computed by hapstab from y, X)
+  int iterations = 0;
+};
+
+/// Checks sizes, symmetry and finiteness; throws InputError (never reaches the C code).
+void validate(const StandardForm& sf);
+
+BackendResult solve_dsdp(const StandardForm& sf);
+BackendResult solve_csdp(const StandardForm& sf);
+inline BackendResult solve_standard(const StandardForm& sf, Backend b) {
+  return b == Backend::dsdp ? solve_dsdp(sf) : solve_csdp(sf);
+}
+
+/// DIMACS errors of (y, X) for the standard form above (S from y).
+std::array<double, 6> dimacs_errors(const StandardForm& sf, const Eigen::VectorXd& y,
+                                    const std::vector<Eigen::MatrixXd>& X);
+
+/// The mutex that serialises every call into DSDP or CSDP.
+std::mutex& sdp_mutex();
+
+}  // namespace hapstab::lmi

@@ -1,0 +1,352 @@
+// hapstab/lmi/program.cpp -- affine matrix expressions and the program object.
+#include "hapstab/lmi/program.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::lmi {
+
+namespace {
+std::string dims(int r, int c) { return std::to_string(r) + "x" + std::to_string(c); }
+
+
+SpMat dense_to_sparse(const MatrixXd& d) {
+  SpMat s = d.sparseView(0.0, 0.0);  // keep every non-zero exactly
+  s.makeCompressed();
+  return s;
+}
+}  // namespace
+
+Expr::Expr(const MatrixXd& constant) : rows_(static_cast<int>(constant.rows())), cols_(static_cast<int>(constant.cols())), c0_(constant) {}
+
+Expr::Expr(const MatrixVariable& v) : rows_(v.rows), cols_(v.cols), c0_(MatrixXd::Zero(v.rows, v.cols)) {
+  std::map<int, std::vector<Eigen::Triplet<double>>> trip;
+  for (int j = 0; j < v.cols; ++j)
+    for (int i = 0; i < v.rows; ++i)
+      if (int k = v.at(i, j); k >= 0) trip[k].emplace_back(i, j, 1.0);
+  for (auto& [k, t] : trip) {
+    SpMat m(rows_, cols_);
+    m.setFromTriplets(t.begin(), t.end());
+    terms_.emplace(k, std::move(m));
+  }
+}
+
+Expr Expr::Zero(int rows, int cols) { return Expr(MatrixXd::Zero(rows, cols)); }
+Expr Expr::Identity(int n) { return Expr(MatrixXd::Identity(n, n)); }
+Expr Expr::Scalar(double c) { return Expr(MatrixXd::Constant(1, 1, c)); }
+
+Expr Expr::transpose() const {
+  Expr t;
+  t.rows_ = cols_;
+  t.cols_ = rows_;
+  t.c0_ = c0_.transpose();
+  for (const auto& [k, m] : terms_) t.terms_.emplace(k, SpMat(m.transpose()));
+  return t;
+}
+Expr transpose(const Expr& e) { return e.transpose(); }
+
+MatrixXd Expr::value(const std::vector<double>& x) const {
+  MatrixXd v = c0_;
+  for (const auto& [k, m] : terms_) v += x.at(static_cast<size_t>(k)) * MatrixXd(m);
+  return v;
+}
+
+Expr& Expr::operator+=(const Expr& o) {
+  if (o.empty()) return *this;
+  if (empty()) return *this = o;
+  if (rows_ != o.rows_ || cols_ != o.cols_)
+    throw InputError("lmi expression: cannot add a " + dims(rows_, cols_) + " and a " + dims(o.rows_, o.cols_) +
+                     " matrix");
+  c0_ += o.c0_;
+  for (const auto& [k, m] : o.terms_) {
+    auto it = terms_.find(k);
+    if (it == terms_.end()) terms_.emplace(k, m);
+    else it->second += m;
+  }
+  return *this;
+}
+Expr& Expr::operator-=(const Expr& o) { return *this += -o; }
+Expr Expr::scaled(Expr a, double s) {
+  a.c0_ *= s;
+  for (auto& [k, m] : a.terms_) m *= s;
+  return a;
+}
+Expr Expr::left(const MatrixXd& L, const Expr& a) {
+  if (L.cols() != a.rows_)
+    throw InputError("lmi expression: cannot multiply a " + dims(static_cast<int>(L.rows()), static_cast<int>(L.cols())) +
+                     " constant by a " + dims(a.rows_, a.cols_) + " expression");
+  Expr r;
+  r.rows_ = static_cast<int>(L.rows());
+  r.cols_ = a.cols_;
+  r.c0_ = L * a.c0_;
+  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(L * MatrixXd(m))));
+  return r;
+}
+Expr Expr::right(const Expr& a, const MatrixXd& R) {
+  if (a.cols_ != R.rows())
+    throw InputError("lmi expression: cannot multiply a " + dims(a.rows_, a.cols_) + " expression by a " +
+                     dims(static_cast<int>(R.rows()), static_cast<int>(R.cols())) + " constant");
+  Expr r;
+  r.rows_ = a.rows_;
+  r.cols_ = static_cast<int>(R.cols());
+  r.c0_ = a.c0_ * R;
+  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(MatrixXd(m) * R)));
+  return r;
+}
+
+Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
+  const size_t R = b.size();
+  if (R == 0) throw InputError(where + ": empty block list");
+  const size_t C = b[0].size();
+  for (size_t i = 0; i < R; ++i)
+    if (b[i].size() != C)
+      throw InputError(where + ": block row " + std::to_string(i + 1) + " has " + std::to_string(b[i].size()) +
+                       " blocks, row 1 has " + std::to_string(C));
+  const bool square = R == C;
+  auto given = [&](size_t i, size_t j) -> const Expr* {
+    if (!b[i][j].empty()) return &b[i][j];
+    return nullptr;
+  };
+  // Row heights and column widths from the given blocks (mirrors count for the lower part).
+  std::vector<int> h(R, -1), w(C, -1);
+  auto name = [&](size_t i, size_t j) { return "block (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ")"; };
+  auto setdim = [&](std::vector<int>& v, size_t idx, int d, size_t i, size_t j, const char* what) {
+    if (v[idx] < 0) v[idx] = d;
+    else if (v[idx] != d)
+      throw InputError(where + ": " + name(i, j) + " has " + std::to_string(d) + " " + what + ", but block " +
+                       (std::string(what) == "rows" ? "row " : "column ") + std::to_string(idx + 1) + " has " +
+                       std::to_string(v[idx]));
+  };
+  for (size_t i = 0; i < R; ++i)
+    for (size_t j = 0; j < C; ++j)
+      if (auto e = given(i, j)) {
+        setdim(h, i, e->rows(), i, j, "rows");
+        setdim(w, j, e->cols(), i, j, "columns");
+      }
+  if (square)
+    for (size_t i = 0; i < R; ++i)
+      for (size_t j = 0; j < C; ++j)
+        if (!given(i, j) && i > j && given(j, i)) {
+          setdim(h, i, given(j, i)->cols(), i, j, "rows");
+          setdim(w, j, given(j, i)->rows(), i, j, "columns");
+        }
+  for (size_t i = 0; i < R; ++i)
+    if (h[i] < 0) throw InputError(where + ": the height of block row " + std::to_string(i + 1) + " is not determined");
+  for (size_t j = 0; j < C; ++j)
+    if (w[j] < 0) throw InputError(where + ": the width of block column " + std::to_string(j + 1) + " is not determined");
+  Expr out;
+  out.rows_ = 0;
+  for (int x : h) out.rows_ += x;
+  out.cols_ = 0;
+  for (int x : w) out.cols_ += x;
+  out.c0_ = MatrixXd::Zero(out.rows_, out.cols_);
+  std::map<int, std::vector<Eigen::Triplet<double>>> trip;
+  int r0 = 0;
+  for (size_t i = 0; i < R; ++i) {
+    int cc0 = 0;
+    for (size_t j = 0; j < C; ++j) {
+      Expr blk;
+      if (auto e = given(i, j)) blk = *e;
+      else if (square && i > j && given(j, i)) blk = given(j, i)->transpose();
+      if (!blk.empty()) {
+        out.c0_.block(r0, cc0, h[i], w[j]) = blk.c0_;
+        for (const auto& [k, m] : blk.terms_)
+          for (int o = 0; o < m.outerSize(); ++o)
+            for (SpMat::InnerIterator it(m, o); it; ++it)
+              trip[k].emplace_back(r0 + static_cast<int>(it.row()), cc0 + static_cast<int>(it.col()), it.value());
+      }
+      cc0 += w[j];
+    }
+    r0 += h[i];
+  }
+  for (auto& [k, t] : trip) {
+    SpMat m(out.rows_, out.cols_);
+    m.setFromTriplets(t.begin(), t.end());
+    out.terms_.emplace(k, std::move(m));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+int Program::new_scalar(const std::string& name) {
+  scalar_names_.push_back(name);
+  return static_cast<int>(scalar_names_.size()) - 1;
+}
+
+MatrixVariable Program::NewScalar(const std::string& name) { return {name, 1, 1, {new_scalar(name)}}; }
+
+MatrixVariable Program::NewSymmetric(int n, const std::string& name) {
+  if (n <= 0) throw InputError("variable '" + name + "': size must be positive");
+  MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
+  for (int j = 0; j < n; ++j)
+    for (int i = j; i < n; ++i) {
+      int k = new_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
+      v.index[static_cast<size_t>(j) * n + i] = k;
+      v.index[static_cast<size_t>(i) * n + j] = k;
+    }
+  return v;
+}
+
+MatrixVariable Program::NewFull(int rows, int cols, const std::string& name) {
+  if (rows <= 0 || cols <= 0) throw InputError("variable '" + name + "': sizes must be positive");
+  MatrixVariable v{name, rows, cols, std::vector<int>(static_cast<size_t>(rows) * cols, -1)};
+  for (int j = 0; j < cols; ++j)
+    for (int i = 0; i < rows; ++i)
+      v.index[static_cast<size_t>(j) * rows + i] = new_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
+  return v;
+}
+
+MatrixVariable Program::NewDiagonal(int n, const std::string& name) {
+  if (n <= 0) throw InputError("variable '" + name + "': size must be positive");
+  MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
+  for (int i = 0; i < n; ++i) v.index[static_cast<size_t>(i) * n + i] = new_scalar(name + "(" + std::to_string(i) + ")");
+  return v;
+}
+
+MatrixVariable Program::NewBlockDiagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric) {
+  int n = 0;
+  for (int s : sizes) {
+    if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
+    n += s;
+  }
+  if (n == 0) throw InputError("variable '" + name + "': no blocks");
+  MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
+  int o = 0, b = 0;
+  for (int s : sizes) {
+    ++b;
+    for (int j = 0; j < s; ++j)
+      for (int i = symmetric ? j : 0; i < s; ++i) {
+        int k = new_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
+        v.index[static_cast<size_t>(o + j) * n + o + i] = k;
+        if (symmetric) v.index[static_cast<size_t>(o + i) * n + o + j] = k;
+      }
+    o += s;
+  }
+  return v;
+}
+
+MatrixVariable Program::NewBlockDiagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name) {
+  int R = 0, C = 0;
+  for (auto [r, c] : sizes) {
+    if (r <= 0 || c <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
+    R += r;
+    C += c;
+  }
+  if (R == 0) throw InputError("variable '" + name + "': no blocks");
+  MatrixVariable v{name, R, C, std::vector<int>(static_cast<size_t>(R) * C, -1)};
+  int ro = 0, co = 0, b = 0;
+  for (auto [r, c] : sizes) {
+    ++b;
+    for (int j = 0; j < c; ++j)
+      for (int i = 0; i < r; ++i)
+        v.index[static_cast<size_t>(co + j) * R + ro + i] =
+            new_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
+    ro += r;
+    co += c;
+  }
+  return v;
+}
+
+MatrixVariable Program::NewScalarIdentityBlocks(const std::vector<int>& sizes, const std::string& name) {
+  int n = 0;
+  for (int s : sizes) {
+    if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
+    n += s;
+  }
+  if (n == 0) throw InputError("variable '" + name + "': no blocks");
+  MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
+  int o = 0, b = 0;
+  for (int s : sizes) {
+    int k = new_scalar(name + "[" + std::to_string(++b) + "]");
+    for (int i = 0; i < s; ++i) v.index[static_cast<size_t>(o + i) * n + o + i] = k;
+    o += s;
+  }
+  return v;
+}
+
+void Program::check_name(const std::string& name) const {
+  if (name.empty()) throw InputError("lmi program: every constraint needs a name");
+  for (const auto& c : lmis_)
+    if (c.name == name) throw InputError("lmi program: constraint name '" + name + "' is used twice");
+  for (const auto& c : linear_)
+    if (c.name == name) throw InputError("lmi program: constraint name '" + name + "' is used twice");
+}
+
+namespace {
+void check_vars(const Expr& F, int nvars, const std::string& where) {
+  for (const auto& [k, m] : F.terms())
+    if (k < 0 || k >= nvars) throw InputError(where + ": uses a variable that does not belong to this program");
+  auto finite = [](const MatrixXd& m) { return m.allFinite(); };
+  if (!finite(F.constant())) throw InputError(where + ": a constant is not finite (NaN or Inf)");
+  for (const auto& [k, m] : F.terms())
+    if (!finite(MatrixXd(m))) throw InputError(where + ": a coefficient is not finite (NaN or Inf)");
+}
+}  // namespace
+
+int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
+  check_name(name);
+  const std::string where = "constraint '" + name + "'";
+  if (F.empty()) throw InputError(where + ": empty matrix");
+  if (F.rows() != F.cols()) throw InputError(where + ": the matrix is " + dims(F.rows(), F.cols()) + ", not square");
+  check_vars(F, num_scalars(), where);
+  // Symmetry of the constant and of every coefficient (relative tolerance 1e-12 on the largest
+  // entry: assembled expressions are exactly symmetric; this catches a wrong sign or block).
+  auto asym = [&](const MatrixXd& m, const std::string& what) {
+    double scale = m.cwiseAbs().maxCoeff();
+    double err = (m - m.transpose()).cwiseAbs().maxCoeff();
+    if (err > 1e-12 * scale)
+      throw InputError(where + ": the matrix is not symmetric (" + what + ", asymmetry " + std::to_string(err) + ")");
+  };
+  asym(F.constant(), "constant part");
+  for (const auto& [k, m] : F.terms()) asym(MatrixXd(m), "coefficient of " + scalar_names_[static_cast<size_t>(k)]);
+  // Store the exactly symmetrised expression (the upper triangle is what the back-ends read).
+  lmis_.push_back({name, F, s});
+  return static_cast<int>(lmis_.size()) - 1;
+}
+
+int Program::AddLmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s) {
+  check_name(name);
+  return AddLmi(name, blocks(b, "constraint '" + name + "'"), s);
+}
+
+void Program::AddLinearEquality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
+  check_name(name);
+  const std::string where = "constraint '" + name + "'";
+  if (lhs.empty() || lhs.rows() != rhs.rows() || lhs.cols() != rhs.cols())
+    throw InputError(where + ": left side is " + dims(lhs.rows(), lhs.cols()) + ", right side is " +
+                     dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
+  check_vars(lhs, num_scalars(), where);
+  if (!rhs.allFinite()) throw InputError(where + ": right side is not finite");
+  linear_.push_back({name, lhs, rhs, true});
+}
+
+void Program::AddLinearInequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
+  check_name(name);
+  const std::string where = "constraint '" + name + "'";
+  if (lhs.empty() || lhs.rows() != rhs.rows() || lhs.cols() != rhs.cols())
+    throw InputError(where + ": left side is " + dims(lhs.rows(), lhs.cols()) + ", right side is " +
+                     dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
+  check_vars(lhs, num_scalars(), where);
+  if (!rhs.allFinite()) throw InputError(where + ": right side is not finite");
+  linear_.push_back({name, lhs, rhs, false});
+}
+
+void Program::SetMarginObjective(double cap) {
+  if (!(cap > 0) || !std::isfinite(cap)) throw InputError("margin objective: the cap on t must be positive and finite");
+  objective_ = ObjectiveKind::margin;
+  cap_ = cap;
+  cost_ = Expr();
+}
+
+void Program::SetMinimize(const Expr& c) {
+  if (c.rows() != 1 || c.cols() != 1) throw InputError("objective: must be a 1x1 expression");
+  check_vars(c, num_scalars(), "objective");
+  objective_ = ObjectiveKind::minimize;
+  cost_ = c;
+}
+
+void Program::ReplaceLmi(int i, LmiConstraint c) { lmis_.at(static_cast<size_t>(i)) = std::move(c); }
+
+}  // namespace hapstab::lmi

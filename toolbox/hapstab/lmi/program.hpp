@@ -1,0 +1,160 @@
+// hapstab/lmi/program.hpp -- LMI modelling: a program object in the spirit of Drake's
+// MathematicalProgram. Decision variables (scalars, symmetric, full, diagonal, block-diagonal
+// BD(m; m1..mN) square or not, scalar-times-identity blocks G(m; m1..mN) of paper 000),
+// affine matrix expressions (const*var*const, transposes, sums, block assembly with dimension
+// checks), constraints F > 0, F >= 0, linear (in)equalities on entries, and two objectives:
+// linear minimisation and feasibility with the best margin (LMI Lab feasp's tmin).
+//
+// Strict inequalities are never a silent ">=":
+//   * Margin objective (the default): maximise t subject to F_j >= t I for every STRICT LMI
+//     (non-strict LMIs stay F >= 0), t <= margin_cap. The strict system is declared feasible
+//     only when t* > Options::strict_threshold (default 1e-7, a hundred times the back-ends'
+//     gap tolerance 1e-9, measured in the equilibrated coordinates of solve.hpp), and it is
+//     `certified` only after the rational rounding passes the exact LDL^T test (certificate.hpp).
+//   * Linear objective: each strict LMI is posed as F_j >= strict_threshold * I.
+// A non-strict LMI that is singular along known vectors for every feasible point has no
+// interior; use facial_reduce() (certificate.hpp) to impose the equalities and pose the rest.
+//
+// All data are doubles; the exact certificates use their exact binary values (no rounding).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hapstab::lmi {
+
+using MatrixXd = Eigen::MatrixXd;
+using SpMat = Eigen::SparseMatrix<double>;
+
+/// A matrix of decision variables: entry (i, j) is scalar variable index(i, j), or a structural
+/// zero (-1). Symmetric variables share one scalar between (i, j) and (j, i).
+struct MatrixVariable {
+  std::string name;
+  int rows = 0, cols = 0;
+  std::vector<int> index;  ///< column-major, size rows*cols; -1 = structural zero
+  int at(int i, int j) const { return index[static_cast<size_t>(j) * rows + i]; }
+};
+
+/// An affine matrix expression F0 + sum_k x_k F_k (F_k sparse).
+class Expr {
+ public:
+  Expr() = default;  ///< the empty expression: "unspecified" in a block list (see blocks())
+  Expr(const MatrixXd& constant);  // NOLINT: constants convert implicitly
+  Expr(const MatrixVariable& v);   // NOLINT
+  static Expr Zero(int rows, int cols);
+  static Expr Identity(int n);
+  static Expr Scalar(double c);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  bool empty() const { return rows_ == 0 && cols_ == 0; }
+  const MatrixXd& constant() const { return c0_; }
+  const std::map<int, SpMat>& terms() const { return terms_; }
+
+  Expr transpose() const;
+  /// Value at the scalar variables x (double).
+  MatrixXd value(const std::vector<double>& x) const;
+
+  Expr& operator+=(const Expr& o);
+  Expr& operator-=(const Expr& o);
+  friend Expr operator+(Expr a, const Expr& b) { return a += b; }
+  friend Expr operator-(Expr a, const Expr& b) { return a -= b; }
+  // Hidden friends: found only when an Expr is an operand, so they never compete with
+  // Eigen's own matrix products.
+  friend Expr operator-(Expr a) { return scaled(std::move(a), -1.0); }
+  friend Expr operator*(double s, Expr a) { return scaled(std::move(a), s); }
+  friend Expr operator*(const MatrixXd& L, const Expr& a) { return left(L, a); }
+  friend Expr operator*(const Expr& a, const MatrixXd& R) { return right(a, R); }
+
+ private:
+  static Expr scaled(Expr a, double s);
+  static Expr left(const MatrixXd& L, const Expr& a);
+  static Expr right(const Expr& a, const MatrixXd& R);
+  friend Expr blocks(const std::vector<std::vector<Expr>>&, const std::string&);
+  int rows_ = 0, cols_ = 0;
+  MatrixXd c0_;
+  std::map<int, SpMat> terms_;
+};
+
+Expr transpose(const Expr& e);
+
+/// Block assembly [[A, B], [C, D]]. An empty Expr() below the diagonal of a square layout
+/// means "the transpose of its mirror block"; an empty Expr() elsewhere is a zero block whose
+/// size is taken from its row and column. Every mismatch throws InputError naming `where`
+/// and the block (row, column).
+Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where = "block matrix");
+
+enum class Strictness { strict, nonstrict };
+
+struct LmiConstraint {
+  std::string name;
+  Expr F;  ///< constrained F > 0 (strict) or F >= 0 (nonstrict); symmetric
+  Strictness strictness;
+  bool posed = true;       ///< false: not given to the solver, only checked exactly (facial_reduce)
+  bool auxiliary = false;  ///< true: given to the solver but not part of the exact certificate
+};
+
+struct LinearConstraint {
+  std::string name;
+  Expr lhs;      ///< entrywise lhs == rhs (equality) or lhs >= rhs (inequality)
+  MatrixXd rhs;
+  bool equality;
+};
+
+enum class ObjectiveKind { margin, minimize };
+
+class Program {
+ public:
+  // ---- decision variables ----
+  MatrixVariable NewScalar(const std::string& name);
+  MatrixVariable NewSymmetric(int n, const std::string& name);
+  MatrixVariable NewFull(int rows, int cols, const std::string& name);
+  MatrixVariable NewDiagonal(int n, const std::string& name);
+  /// BD(m; m1..mN): square blocks, symmetric (symmetric = true) or full.
+  MatrixVariable NewBlockDiagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric = true);
+  /// BD(m1 x n1, ..., mN x nN): non-square full blocks.
+  MatrixVariable NewBlockDiagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name);
+  /// G(m; m1..mN) = blockdiag(g1 I_m1, ..., gN I_mN).
+  MatrixVariable NewScalarIdentityBlocks(const std::vector<int>& sizes, const std::string& name);
+
+  // ---- constraints (each with a user-given name that every error message repeats) ----
+  /// F > 0 (strict) or F >= 0. F must be square and symmetric (checked, tolerance 1e-12
+  /// relative to its largest entry); throws InputError naming the constraint.
+  int AddLmi(const std::string& name, const Expr& F, Strictness s = Strictness::strict);
+  int AddLmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s = Strictness::strict);
+  void AddLinearEquality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);
+  void AddLinearInequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);  ///< lhs >= rhs
+
+  // ---- objectives ----
+  /// Maximise t s.t. strict F_j >= t I, t <= cap (the default objective, cap = 1).
+  void SetMarginObjective(double cap = 1.0);
+  /// Minimise the 1x1 expression c (strict LMIs become F >= strict_threshold I).
+  void SetMinimize(const Expr& c);
+
+  // ---- inspection ----
+  int num_scalars() const { return static_cast<int>(scalar_names_.size()); }
+  const std::string& scalar_name(int k) const { return scalar_names_[static_cast<size_t>(k)]; }
+  const std::vector<LmiConstraint>& lmis() const { return lmis_; }
+  const std::vector<LinearConstraint>& linear() const { return linear_; }
+  ObjectiveKind objective_kind() const { return objective_; }
+  const Expr& objective() const { return cost_; }
+  double margin_cap() const { return cap_; }
+  /// Replaces LMI i (used by facial_reduce).
+  void ReplaceLmi(int i, LmiConstraint c);
+
+ private:
+  int new_scalar(const std::string& name);
+  void check_name(const std::string& name) const;
+  std::vector<std::string> scalar_names_;
+  std::vector<LmiConstraint> lmis_;
+  std::vector<LinearConstraint> linear_;
+  ObjectiveKind objective_ = ObjectiveKind::margin;
+  Expr cost_;
+  double cap_ = 1.0;
+};
+
+}  // namespace hapstab::lmi

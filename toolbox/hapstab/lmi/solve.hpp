@@ -1,0 +1,75 @@
+// hapstab/lmi/solve.hpp -- Solve(prog) -> Result, in the spirit of Drake's solvers::Solve.
+//
+// Pipeline: (1) linear equalities are eliminated EXACTLY (rational Gauss-Jordan on the
+// doubles' exact values: x = x0 + N z), so a rounded z always satisfies them exactly;
+// inconsistent equalities are an exact infeasibility certificate. (2) Linear inequalities
+// become 1x1 blocks. (3) Equilibration (Options::scale, on by default): every block is scaled
+// by a congruence D F D with D diagonal powers of two (row magnitudes ~ 1), every variable by a
+// power of two (coefficients ~ 1). Powers of two are exact, congruence keeps definiteness, so
+// the solver's verdict is unchanged in exact arithmetic while DSDP/CSDP see data of magnitude
+// ~1 instead of 1e-6..1e6. The margin t and strict_threshold are measured in these
+// equilibrated coordinates; Result::min_eigenvalue gives the original ones.
+// (4) DSDP or CSDP (backend.hpp). (5) Verdict and exact certificate (certificate.hpp).
+//
+// Verdict with the margin objective: feasible iff the solver is optimal and t* >
+// strict_threshold; infeasible iff t* < -strict_threshold (or the solver reports
+// infeasibility); otherwise undecided (|t*| <= threshold: strictness cannot be decided
+// numerically -- typical of a non-strict LMI without interior, see facial_reduce).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "hapstab/lmi/backend.hpp"
+#include "hapstab/lmi/certificate.hpp"
+#include "hapstab/lmi/program.hpp"
+
+namespace hapstab::lmi {
+
+struct Options {
+  Backend backend = Backend::dsdp;
+  double strict_threshold = 1e-7;  ///< margin needed to call a strict LMI feasible
+  bool scale = true;               ///< equilibrate (see above)
+  bool certify = true;             ///< run the exact checks
+};
+
+enum class Feasibility { feasible, infeasible, undecided };
+const char* to_string(Feasibility f);
+
+enum class Certificate {
+  none,               ///< not requested, or the solver failed
+  feasible_exact,     ///< rounded solution checked exactly: every constraint holds
+  infeasible_exact,   ///< Farkas certificate (or inconsistent equalities) checked exactly
+  rounding_failed,    ///< feasible numerically, but no rounding passed the exact check
+  numeric_only        ///< infeasible numerically; no exact certificate could be checked
+};
+const char* to_string(Certificate c);
+
+class Result {
+ public:
+  SolveStatus status = SolveStatus::numerical_trouble;
+  Feasibility verdict = Feasibility::undecided;
+  Certificate certificate = Certificate::none;
+  std::string solver;              ///< "DSDP" or "CSDP"
+  std::string detail;              ///< solver's termination reason and certificate notes
+  double margin = 0;               ///< t* (equilibrated), NaN when the program has no strict LMI
+  double objective = 0;            ///< value of the linear objective (minimise) at x
+  std::array<double, 6> dimacs{};  ///< DIMACS errors (equilibrated standard form)
+  int iterations = 0;
+  int rounding_bits = 0;           ///< bits of the dyadic rounding that passed (53 = exact double)
+  std::vector<double> x;           ///< all scalar variables
+  std::vector<rational> x_exact;   ///< the certified point (when certificate == feasible_exact)
+  std::vector<double> min_eigenvalue;       ///< per LMI, at x, original coordinates
+  std::vector<Eigen::MatrixXd> multipliers; ///< per posed LMI block (reduced coordinates)
+
+  bool is_success() const { return status == SolveStatus::optimal && verdict == Feasibility::feasible; }
+  bool certified() const { return certificate == Certificate::feasible_exact; }
+  Eigen::MatrixXd GetSolution(const MatrixVariable& v) const;
+  MatQ GetExactSolution(const MatrixVariable& v) const;  ///< throws unless certified()
+  double GetSolution(int scalar) const { return x.at(static_cast<size_t>(scalar)); }
+};
+
+Result Solve(const Program& prog, const Options& opt = {});
+
+}  // namespace hapstab::lmi
