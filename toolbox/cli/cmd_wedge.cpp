@@ -66,11 +66,15 @@ int run(const Opts& o) {
   const bool applies = a.applies();
   const auto& w = a.wedge;
   const auto& ts = a.tsypkin;
-  std::string status = w.evaluated ? (w.margin.status == Status::exact && ts.margin.status == Status::exact ? "exact" : "certified")
-                                   : "not evaluated";
+  std::string status = "not evaluated";
+  if (w.evaluated || ts.evaluated) {
+    bool all_exact = (!w.evaluated || w.margin.status == Status::exact) && (!ts.evaluated || ts.margin.status == Status::exact);
+    status = all_exact ? "exact" : "certified";
+  }
   std::string verdict;
   if (!w.evaluated)
-    verdict = "criteria not evaluated: H has a pole on the unit circle; the criteria do not apply";
+    verdict = "wedge criterion not evaluated: its branches are unbounded (H has a pole on the unit circle); the "
+              "criteria do not apply";
   else if (!applies)
     verdict = "the criteria do not apply: a paper assumption is violated";
   else
@@ -98,8 +102,12 @@ int run(const Opts& o) {
     print_json(j);
   } else {
     std::cout << "H(z) = " << H.to_string() << "\n";
-    if (w.evaluated) {
+    {
       for (const auto* c : {&w, &ts}) {
+        if (!c->evaluated) {
+          std::cout << c->name << ": not evaluated (unbounded on the unit circle)\n";
+          continue;
+        }
         std::cout << c->name << ": " << (c->holds ? "holds" : "fails") << " [exact]; min over theta of left side + 1 = "
                   << dec(c->margin, o.digits) << " [" << to_string(c->margin.status) << "] at theta = " << c->theta_at_min
                   << " rad; max gain k* = " << (c->gain_infinite ? std::string("inf") : dec(c->max_gain, o.digits))

@@ -46,16 +46,19 @@ ConservatismRow evaluate_case(const ConservatismCase& c, long steps) {
   ContactAnalysis a = analyze_contact(r.H, 12);
   r.assumptions = a.assumptions.violated;
   r.criteria_evaluated = a.wedge.evaluated;
-  if (r.criteria_evaluated) {
+  r.tsypkin_evaluated = a.tsypkin.evaluated;
+  if (a.wedge.evaluated) {
     r.wedge_inf = a.wedge.gain_infinite;
-    r.tsypkin_inf = a.tsypkin.gain_infinite;
     if (!r.wedge_inf) r.k_wedge = static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
+  }
+  if (a.tsypkin.evaluated) {
+    r.tsypkin_inf = a.tsypkin.gain_infinite;
     if (!r.tsypkin_inf) r.k_tsypkin = static_cast<double>(mpfloat<30>(a.tsypkin.max_gain.value));
   }
   r.k_linear = closed_loop_gain_limit(r.H, 1e9, 1e-6);
   // search range: from well below the smallest certified gain to the linear limit
-  double klo = 1e-2, khi = r.k_linear ? *r.k_linear * 1.5 : 1e7;
-  if (r.criteria_evaluated && !r.tsypkin_inf) klo = std::min(klo, r.k_tsypkin / 20);
+  double klo = 1e-2, khi = (r.k_linear && *r.k_linear > 0) ? *r.k_linear * 1.5 : 1e7;
+  if (r.tsypkin_evaluated && !r.tsypkin_inf) klo = std::min(klo, r.k_tsypkin / 20);
   OnsetResult on = oscillation_onset(r.H, klo, khi, 40, 1e-3, steps);
   r.k_osc = on.k_onset;
   r.period = on.period;

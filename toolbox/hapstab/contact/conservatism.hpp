@@ -26,7 +26,8 @@ struct ConservatismCase {
 struct ConservatismRow {
   ConservatismCase c;
   TransferFunction H;               ///< unit-gain H(z)
-  bool criteria_evaluated = false;  ///< false when H has a pole on the unit circle
+  bool criteria_evaluated = false;  ///< wedge evaluated (false when its branches are unbounded on the circle)
+  bool tsypkin_evaluated = false;
   std::vector<std::string> assumptions;  ///< violated paper assumptions at unit gain
   bool wedge_inf = false, tsypkin_inf = false;
   double k_wedge = 0, k_tsypkin = 0;  ///< certified (printed from the enclosures' midpoints)

@@ -405,17 +405,20 @@ std::optional<long> exact_repeat(const LureLoop& L, const std::vector<rational>&
 
 std::optional<double> closed_loop_gain_limit(const TransferFunction& H, double kmax, double rel) {
   auto stable = [&](double k) { return schur_stable(H.den() + H.num() * exact_rational(k)); };
-  if (!stable(0)) return 0.0;
-  double lo = 0, hi = -1;
+  // first stable gain on a log grid (H itself may be unstable, e.g. a pole at z = 1), then the
+  // first unstable gain after it
+  double lo = -1, hi = -1;
   const int n = 240;
   for (int i = 0; i <= n; ++i) {
     const double k = 1e-6 * std::pow(kmax / 1e-6, static_cast<double>(i) / n);
-    if (!stable(k)) {
+    const bool st = stable(k);
+    if (st) lo = k;
+    if (!st && lo > 0) {
       hi = k;
       break;
     }
-    lo = k;
   }
+  if (lo < 0) return 0.0;
   if (hi < 0) return std::nullopt;
   while (hi - lo > rel * hi) {
     const double m = 0.5 * (lo + hi);
