@@ -1,0 +1,625 @@
+#include "hapstab/multidof/analysis.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <algorithm>
+#include <sstream>
+
+#include "hapstab/multidof/detail.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::multidof {
+
+using lmi::Expr;
+using lmi::MatrixVariable;
+using lmi::Program;
+using lmi::Strictness;
+using Eigen::MatrixXd;
+
+Eigen::MatrixXd to_double(const MatQ& M) {
+  MatrixXd D(M.rows(), M.cols());
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    for (Eigen::Index j = 0; j < M.cols(); ++j) D(i, j) = to_real<double>(M(i, j));
+  return D;
+}
+
+Expr scalar_times(const Expr& se, const MatrixXd& M) {
+  // M = sum_i col_i e_i^T  ->  s M = sum_i col_i * s * e_i^T
+  Expr r = Expr::Zero(static_cast<int>(M.rows()), static_cast<int>(M.cols()));
+  for (Eigen::Index j = 0; j < M.cols(); ++j) {
+    if (M.col(j).isZero(0.0)) continue;
+    MatrixXd e = MatrixXd::Zero(1, M.cols());
+    e(0, j) = 1;
+    r += MatrixXd(M.col(j)) * se * e;
+  }
+  return r;
+}
+
+void Problem::validate(bool with_coupling) const {
+  structure.validate();
+  E.validate("environment E");
+  if (!E.is_discrete()) throw InputError("environment E must be discrete (sample period T > 0)");
+  if (E.inputs() != E.outputs())
+    throw InputError("environment E is not square: " + std::to_string(E.outputs()) + " outputs, " +
+                     std::to_string(E.inputs()) + " inputs (a square m x m E is required)");
+  if (E.inputs() != structure.m())
+    throw InputError("block sizes do not add up: the operators have sum m_i = " + std::to_string(structure.m()) +
+                     " DOF but the environment E has m = " + std::to_string(E.inputs()));
+  if (!schur_stable(E.A))
+    throw InputError("environment E is not stable: A_E has an eigenvalue on or outside the unit circle "
+                     "(exact Schur-Cohn test); Theorem 5 needs a stable E");
+  if (with_coupling) coupling.validate(structure.m());
+}
+
+namespace {
+
+// Rational nullspace basis of the rows of A (k x N), by reduced row echelon form.
+std::vector<std::vector<rational>> nullspace(MatQ A, int N) {
+  std::vector<int> pivcol;
+  Eigen::Index r = 0;
+  for (int c = 0; c < N && r < A.rows(); ++c) {
+    Eigen::Index p = r;
+    while (p < A.rows() && A(p, c) == 0) ++p;
+    if (p == A.rows()) continue;
+    A.row(r).swap(A.row(p));
+    const rational piv = A(r, c);
+    A.row(r) /= piv;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+      if (i != r && A(i, c) != 0) {
+        const rational f = A(i, c);
+        A.row(i) -= f * A.row(r);
+      }
+    pivcol.push_back(c);
+    ++r;
+  }
+  std::vector<std::vector<rational>> basis;
+  for (int f = 0; f < N; ++f) {
+    if (std::find(pivcol.begin(), pivcol.end(), f) != pivcol.end()) continue;
+    std::vector<rational> v(static_cast<size_t>(N), rational(0));
+    v[static_cast<size_t>(f)] = 1;
+    for (size_t k = 0; k < pivcol.size(); ++k) v[static_cast<size_t>(pivcol[k])] = -A(static_cast<Eigen::Index>(k), f);
+    // scale so that the first nonzero entry is positive (g >= 1 wants positive directions)
+    for (auto& x : v)
+      if (x != 0) {
+        if (x < 0)
+          for (auto& y : v) y = -y;
+        break;
+      }
+    basis.push_back(std::move(v));
+  }
+  return basis;
+}
+
+std::string str(const rational& q, int digits = 6) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << to_real<double>(q);
+  return o.str();
+}
+
+}  // namespace
+
+FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& extra) {
+  FacialConditions fc;
+  fc.E1 = dc_gain(pb.E);
+  const int m = pb.structure.m();
+  const auto sizes = pb.structure.operator_sizes();
+  const int N = static_cast<int>(sizes.size());
+  std::vector<int> blk;
+  for (int i = 0; i < N; ++i)
+    for (int k = 0; k < sizes[static_cast<size_t>(i)]; ++k) blk.push_back(i);
+  std::vector<std::vector<rational>> rows;
+  std::vector<MatQ> gains{fc.E1};
+  for (const auto& g : extra) gains.push_back(g);
+  for (const auto& Gm : gains)
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) {
+        std::vector<rational> r(static_cast<size_t>(N), rational(0));
+        r[static_cast<size_t>(blk[static_cast<size_t>(i)])] += Gm(i, j);
+        r[static_cast<size_t>(blk[static_cast<size_t>(j)])] -= Gm(j, i);
+        bool nz = false;
+        for (auto& x : r) nz |= x != 0;
+        if (nz) rows.push_back(r);
+      }
+  MatQ A(static_cast<Eigen::Index>(rows.size()), N);
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (int j = 0; j < N; ++j) A(static_cast<Eigen::Index>(i), j) = rows[i][static_cast<size_t>(j)];
+  fc.gamma_basis = rows.empty() ? nullspace(MatQ::Zero(0, N), N) : nullspace(A, N);
+  fc.symmetric_possible = !fc.gamma_basis.empty();
+  std::ostringstream o;
+  o << "Facial reduction of (16)'s first LMI: E-hat has " << m << " eigenvalues at z = 1, so (16) needs "
+    << "(A^T - I) P v = 0 and (B^T P - X C/2) v = 0 for each eigenvector v; these hold iff "
+    << "P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1, which requires X E(1) symmetric and positive definite. "
+    << "E(1) (static stiffness) = [";
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) o << (j ? ", " : "") << str(fc.E1(i, j));
+    o << (i + 1 < m ? "; " : "]");
+  }
+  if (fc.E1 == MatQ(fc.E1.transpose()))
+    o << " is symmetric, so every X in G(m; ...) keeps X E(1) symmetric";
+  else if (!fc.symmetric_possible)
+    o << " is not symmetric and no X in G(m; m_1..m_N) makes X E(1) symmetric: (16) has NO solution for this "
+         "structure (exact; no SDP needed)";
+  else
+    o << " is not symmetric; X E(1) is symmetric only on a " << fc.gamma_basis.size()
+      << "-dimensional set of X (the ratios of the g_i are pinned by E(1)_ij / E(1)_ji)";
+  fc.explanation = o.str();
+  return fc;
+}
+
+namespace detail {
+
+EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc) {
+  EnvVars ev;
+  const int m = pb.structure.m();
+  const int n = static_cast<int>(pb.E.states());
+  const rational T = pb.T();
+  const double Td = to_real<double>(T);
+  ev.basis = fc.gamma_basis;
+  const int N = static_cast<int>(pb.structure.operators.size());
+  ev.X = Expr::Zero(m, m);
+  ev.g = Expr::Zero(N, 1);
+  for (size_t k = 0; k < ev.basis.size(); ++k) {
+    ev.theta.push_back(prog.NewScalar("theta" + std::to_string(k + 1)));
+    std::vector<rational> gk = ev.basis[k];
+    MatQ Xk = pb.structure.scalar_blocks(gk);
+    ev.Xk.push_back(Xk);
+    ev.X += scalar_times(ev.theta.back(), to_double(Xk));
+    MatrixXd gv(N, 1);
+    for (int i = 0; i < N; ++i) gv(i, 0) = to_real<double>(gk[static_cast<size_t>(i)]);
+    ev.g += scalar_times(ev.theta.back(), gv);
+  }
+  // g_i >= 1 (9)
+  prog.AddLinearInequality("gamma_i >= 1 (9)", ev.g, MatrixXd::Ones(N, 1));
+  ev.QE = prog.NewSymmetric(m, "Q_E");
+  const MatrixXd E1 = to_double(sp.E1);
+  const MatrixXd DE = to_double(pb.E.D);
+  // XE1s = (X E(1) + E(1)^T X)/2 (= X E(1) exactly for the exact basis)
+  const Expr XE1s = 0.5 * (ev.X * E1 + E1.transpose() * ev.X);
+  // W = X E(1)/(2T) > 0  (the P22 block in the split coordinates)
+  prog.AddLmi("P > 0: X E(1)/(2T) block", (0.5 / Td) * XE1s, Strictness::strict);
+  const Expr QEe(ev.QE);
+  Expr F22 = (Td / 2) * XE1s - (Td / 2) * (ev.X * DE + DE.transpose() * ev.X) - QEe;
+  if (n > 0) {
+    ev.P11 = prog.NewSymmetric(n, "P11");
+    const Expr P(ev.P11);
+    prog.AddLmi("P > 0: P11 block", P, Strictness::strict);
+    const MatrixXd AE = to_double(MatQ(sp.t.A.topLeftCorner(n, n)));
+    const MatrixXd Bt = to_double(MatQ(sp.t.B.topRows(n)));
+    const MatrixXd CE = to_double(MatQ(sp.t.C.leftCols(n)));
+    const Expr F11 = AE.transpose() * P * AE - P;
+    const Expr F12 = AE.transpose() * P * Bt - 0.5 * (CE.transpose() * ev.X);
+    F22 += Bt.transpose() * P * Bt;
+    prog.AddLmi("(16) first LMI, reduced (facial reduction)", -1.0 * lmi::blocks({{F11, F12}, {Expr(), F22}}),
+                Strictness::strict);
+  } else {
+    prog.AddLmi("(16) first LMI, reduced (facial reduction)", -1.0 * F22, Strictness::strict);
+  }
+  return ev;
+}
+
+void add_condition14(Program& prog, const Problem& pb, const EnvVars& ev, const Expr& QV) {
+  const MatrixXd DD = to_double(pb.structure.delta_D());
+  const Expr QE(ev.QE);
+  prog.AddLmi("(16) second LMI (scaled (14))", lmi::blocks({{DD * ev.X - QE, -1.0 * QE}, {Expr(), QV - QE}}),
+              Strictness::strict);
+}
+
+ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev) {
+  auto get = [&](const MatrixVariable& v) -> MatQ {
+    if (r.certified()) return r.GetExactSolution(v);
+    return lmi::to_rational(r.GetSolution(v));
+  };
+  ExactEnv x;
+  const int m = ev.X.rows();
+  x.X = MatQ::Zero(m, m);
+  for (size_t k = 0; k < ev.theta.size(); ++k) {
+    const rational th = get(ev.theta[k])(0, 0);
+    x.X += th * ev.Xk[k];
+    x.theta.push_back(th);
+  }
+  x.QE = get(ev.QE);
+  if (ev.P11.rows > 0) x.P11 = get(ev.P11);
+  return x;
+}
+
+bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
+  const int m = pb.structure.m();
+  const int n = static_cast<int>(pb.E.states());
+  const rational T = pb.T();
+  const StateSpace<rational> H = ehat(pb.E);
+  // P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1
+  MatQ Pt = MatQ::Zero(n + m, n + m);
+  if (n) Pt.topLeftCorner(n, n) = x.P11;
+  Pt.bottomRightCorner(m, m) = x.X * sp.E1 / (2 * T);
+  const MatQ Pi0i = inverse(sp.Pi0, "Pi0");
+  const MatQ P = Pi0i.transpose() * Pt * Pi0i;
+  if (P != MatQ(P.transpose())) {
+    why = "X E(1) is not exactly symmetric at the rounded point";
+    return false;
+  }
+  if (!lmi::exact_definiteness(P).pd) {
+    why = "P > 0 fails exactly";
+    return false;
+  }
+  const MatQ& A = H.A;
+  const MatQ& B = H.B;
+  const MatQ& C = H.C;
+  const MatQ& D = H.D;
+  MatQ M1(n + 2 * m, n + 2 * m);
+  M1.topLeftCorner(n + m, n + m) = A.transpose() * P * A - P;
+  M1.topRightCorner(n + m, m) = A.transpose() * P * B - C.transpose() * x.X / 2;
+  M1.bottomLeftCorner(m, n + m) = M1.topRightCorner(n + m, m).transpose();
+  M1.bottomRightCorner(m, m) = B.transpose() * P * B - (x.X * D + D.transpose() * x.X) / 2 - x.QE;
+  // facial equalities M1 [v_b; 0] = 0 for v_b = [Va b; b]
+  MatQ Vk = MatQ::Zero(n + 2 * m, m);
+  if (n) Vk.topRows(n) = sp.Va;
+  Vk.block(n, 0, m, m) = MatQ::Identity(m, m);
+  if (!(M1 * Vk).isZero(0)) {
+    for (Eigen::Index i = 0; i < Vk.rows(); ++i)
+      for (Eigen::Index j = 0; j < Vk.cols(); ++j)
+        if ((M1 * Vk)(i, j) != 0) {
+          why = "facial equality M1 v = 0 fails exactly";
+          return false;
+        }
+  }
+  const auto d1 = lmi::exact_definiteness(MatQ(-M1));
+  if (!d1.psd) {
+    why = "-M1 >= 0 fails exactly (pivot " + std::to_string(d1.failed_at) + ")";
+    return false;
+  }
+  if (d1.rank != n + m) {
+    why = "-M1 has rank " + std::to_string(d1.rank) + ", expected n + m = " + std::to_string(n + m) +
+          " (kernel exactly the facial directions)";
+    return false;
+  }
+  const MatQ DD = pb.structure.delta_D();
+  MatQ S(2 * m, 2 * m);
+  S << DD * x.X - x.QE, -x.QE, -x.QE, QV - x.QE;
+  if (!lmi::exact_definiteness(S).pd) {
+    why = "the scaled (14) > 0 fails exactly";
+    return false;
+  }
+  if (!lmi::exact_definiteness(QV).pd) {
+    why = "Q_V > 0 fails exactly";
+    return false;
+  }
+  for (int i = 0; i < m; ++i)
+    if (x.X(i, i) < 1) {
+      why = "g_i >= 1 fails exactly";
+      return false;
+    }
+  why = "exact: P > 0, -M1 >= 0 with kernel exactly {[v_b; 0]} (rank n+m), the facial equalities, (14) > 0, "
+        "Q_V > 0 and g_i >= 1 checked in rational arithmetic on the exact data (15)";
+  return true;
+}
+
+MatrixXd gamma_inv_scale(const MatrixXd& Q, const MatrixXd& X) {
+  MatrixXd Gi = MatrixXd::Zero(X.rows(), X.cols());
+  for (Eigen::Index i = 0; i < X.rows(); ++i) Gi(i, i) = 1.0 / std::sqrt(X(i, i));
+  return Gi * Q * Gi;
+}
+
+std::vector<double> gamma_sqrt(const Problem& pb, const MatrixXd& X) {
+  std::vector<double> g;
+  int off = 0;
+  for (int s : pb.structure.operator_sizes()) {
+    g.push_back(std::sqrt(X(off, off)));
+    off += s;
+  }
+  return g;
+}
+
+VhatVars add_vhat(Program& prog, const StateSpace<rational>& V, const MatQ& K, const std::vector<MatQ>& Xk,
+                  const std::vector<Expr>& theta, const Expr& QV) {
+  VhatVars vv;
+  vv.Vh = vhat(V, K);
+  const int nb = static_cast<int>(V.states()), m = static_cast<int>(V.inputs());
+  const rational T = V.T;
+  const MatQ G = dc_gain(V) - K;  // V(1) - K
+  MatQ Minv;
+  if (nb) Minv = inverse(MatQ(V.A.transpose() - MatQ::Identity(nb, nb)), "A_V^T - I (V has a pole at z = 1)");
+  Expr p1 = Expr::Zero(nb, m), P22 = Expr::Zero(m, m);
+  for (size_t k = 0; k < Xk.size(); ++k) {
+    const MatQ p1k = nb ? MatQ(Minv * V.C.transpose() * Xk[k] / 2) : MatQ(0, m);
+    const MatQ P22k = G.transpose() * Xk[k] / (2 * T);
+    vv.p1k.push_back(p1k);
+    vv.P22k.push_back(P22k);
+    const MatrixXd P22d = to_double(P22k);
+    if (nb) p1 += scalar_times(theta[k], to_double(p1k));
+    P22 += scalar_times(theta[k], MatrixXd(0.5 * (P22d + P22d.transpose())));
+  }
+  if (nb) {
+    vv.P11 = prog.NewSymmetric(nb, "P_V11");
+    vv.PV = lmi::blocks({{Expr(vv.P11), p1}, {Expr(), P22}});
+  } else {
+    vv.PV = P22;
+  }
+  prog.AddLmi("P_V > 0 (storage of Vhat^Gamma)", vv.PV, Strictness::strict);
+  // reduced Lemma 1 (state block): -(A^T P A - P + C^T Q_V C) > 0; the input rows follow from
+  // the pinned blocks (the full matrix times [0; I; I] is exactly 0).
+  const MatrixXd A = to_double(vv.Vh.A), C = to_double(vv.Vh.C);
+  prog.AddLmi("Vhat^Gamma OSP (Lemma 1), reduced (facial reduction)",
+              -1.0 * (A.transpose() * vv.PV * A - vv.PV + C.transpose() * QV * C), Strictness::strict);
+  return vv;
+}
+
+bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
+                        const MatQ& QV, const MatQ& P11, std::string& why) {
+  const auto& Vh = vv.Vh;
+  const Eigen::Index m = Vh.inputs(), nn = Vh.states(), nb = nn - m;
+  MatQ X = MatQ::Zero(m, m), P = MatQ::Zero(nn, nn);
+  for (size_t k = 0; k < Xk.size(); ++k) {
+    X += theta[k] * Xk[k];
+    if (nb) P.topRightCorner(nb, m) += theta[k] * vv.p1k[k];
+    P.bottomRightCorner(m, m) += theta[k] * vv.P22k[k];
+  }
+  if (nb) {
+    P.topLeftCorner(nb, nb) = P11;
+    P.bottomLeftCorner(m, nb) = P.topRightCorner(nb, m).transpose();
+  }
+  if (P != MatQ(P.transpose())) {
+    why = "X (V(1) - K) is not exactly symmetric";
+    return false;
+  }
+  if (!lmi::exact_definiteness(P).pd) {
+    why = "P_V > 0 fails exactly";
+    return false;
+  }
+  const MatQ &A = Vh.A, &B = Vh.B, &C = Vh.C, &D = Vh.D;
+  MatQ F(nn + m, nn + m);
+  F.topLeftCorner(nn, nn) = A.transpose() * P * A - P + C.transpose() * QV * C;
+  F.topRightCorner(nn, m) = A.transpose() * P * B - C.transpose() * X / 2 + C.transpose() * QV * D;
+  F.bottomLeftCorner(m, nn) = F.topRightCorner(nn, m).transpose();
+  F.bottomRightCorner(m, m) = B.transpose() * P * B - (X * D + D.transpose() * X) / 2 + D.transpose() * QV * D;
+  MatQ W = MatQ::Zero(nn + m, m);
+  W.block(nb, 0, m, m) = MatQ::Identity(m, m);
+  W.block(nn, 0, m, m) = MatQ::Identity(m, m);
+  if (!MatQ(F * W).isZero(0)) {
+    why = "Lemma 1 for Vhat: the facial equalities F [0; u; u] = 0 fail exactly";
+    return false;
+  }
+  const auto d = lmi::exact_definiteness(MatQ(-F));
+  if (!d.psd) {
+    why = "Lemma 1 for Vhat: -F >= 0 fails exactly";
+    return false;
+  }
+  why = "exact: P_V > 0 and Lemma 1 for Vhat^Gamma (-F >= 0, F [0; u; u] = 0, rank " + std::to_string(d.rank) +
+        ") in rational arithmetic";
+  return true;
+}
+
+std::string verdict_text(const lmi::Result& r) {
+  std::ostringstream o;
+  o << r.solver << ": " << lmi::to_string(r.verdict) << ", certificate " << lmi::to_string(r.certificate)
+    << ", margin " << r.margin << ". " << r.detail;
+  return o.str();
+}
+
+}  // namespace detail
+
+using namespace detail;
+
+namespace {
+// Scales an exact Theorem 5 point so that min g_i = 1 (the LMIs are homogeneous in
+// (P, X, Q_E, Q_V); g_i >= 1 is the only inhomogeneous constraint, Remark 2).
+rational normaliser(const MatQ& X) {
+  rational mn = X(0, 0);
+  for (Eigen::Index i = 1; i < X.rows(); ++i) mn = std::min(mn, X(i, i));
+  return mn > 1 ? rational(1) / mn : rational(1);
+}
+}  // namespace
+
+AnalysisResult analyze(const Problem& pb, const lmi::Options& opt) {
+  pb.validate(false);
+  AnalysisResult res;
+  res.facial = facial_conditions(pb);
+  const int m = pb.structure.m();
+  if (!res.facial.symmetric_possible) {
+    res.verdict = lmi::Feasibility::infeasible;
+    res.certified = true;
+    res.certificate = "exact: " + res.facial.explanation;
+    return res;
+  }
+  const EhatSplit sp = ehat_split(pb.E);
+  auto build = [&](Program& prog, EnvVars& ev, MatrixVariable& QV) {
+    ev = add_environment(prog, pb, sp, res.facial);
+    QV = pb.qv_block_diagonal ? prog.NewBlockDiagonal(pb.structure.operator_sizes(), "Q_V") : prog.NewSymmetric(m, "Q_V");
+    prog.AddLmi("Q_V > 0", Expr(QV), Strictness::strict);
+    add_condition14(prog, pb, ev, Expr(QV));
+  };
+  {
+    Program prog;
+    EnvVars ev;
+    MatrixVariable QV;
+    build(prog, ev, QV);
+    prog.SetMarginObjective(1.0);
+    const lmi::Result r = lmi::Solve(prog, opt);
+    res.verdict = r.verdict;
+    res.margin = r.margin;
+    res.solver_detail = verdict_text(r);
+    if (r.verdict == lmi::Feasibility::infeasible) {
+      res.certified = r.certificate == lmi::Certificate::infeasible_exact;
+      res.certificate = res.certified ? "exact Farkas certificate of the posed (reduced) LMIs" : "numeric only";
+    } else if (!r.x.empty()) {
+      ExactEnv x = exact_env(r, ev);
+      MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
+      const rational s = normaliser(x.X);
+      x.X *= s;
+      x.QE *= s;
+      x.P11 *= s;
+      QVx *= s;
+      std::string why;
+      const bool ok = exact_recheck(pb, sp, x, QVx, why);
+      res.certified = ok && r.margin > 0;
+      if (res.certified) res.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
+      res.certificate = why;
+      res.X = to_double(x.X);
+      res.Q_E = to_double(x.QE);
+      res.Q_V = to_double(QVx);
+      res.gamma_sqrt = gamma_sqrt(pb, res.X);
+      for (double g : res.gamma_sqrt) res.gamma.push_back(g * g);
+      res.delta_V = gamma_inv_scale(res.Q_V, res.X);
+    }
+  }
+  if (res.verdict != lmi::Feasibility::feasible) return res;
+  {
+    // least dissipative coupling: minimise t with Q_V <= t I
+    Program prog;
+    EnvVars ev;
+    MatrixVariable QV;
+    build(prog, ev, QV);
+    const MatrixVariable t = prog.NewScalar("t");
+    prog.AddLmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
+    prog.SetMinimize(Expr(t));
+    const lmi::Result r = lmi::Solve(prog, opt);
+    if (r.status == lmi::SolveStatus::optimal && !r.x.empty()) {
+      ExactEnv x = exact_env(r, ev);
+      MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
+      const rational s = normaliser(x.X);
+      x.X *= s;
+      x.QE *= s;
+      x.P11 *= s;
+      QVx *= s;
+      std::string why;
+      res.min_found = true;
+      res.min_certified = exact_recheck(pb, sp, x, QVx, why);
+      res.Q_V_min = to_double(QVx);
+      const MatrixXd X = to_double(x.X);
+      res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);
+      res.gamma_sqrt_min = gamma_sqrt(pb, X);
+      Eigen::SelfAdjointEigenSolver<MatrixXd> es(res.Q_V_min);
+      res.Q_V_min_norm = es.eigenvalues().maxCoeff();
+    }
+  }
+  return res;
+}
+
+
+CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt) {
+  pb.validate(false);
+  CouplingCheck cc;
+  const int m = pb.structure.m();
+  if (V.inputs() != m || V.outputs() != m)
+    throw InputError("coupling V must be " + std::to_string(m) + "x" + std::to_string(m) + " (the environment's m)");
+  if (V.T != pb.T()) throw InputError("coupling V and environment E have different sample periods");
+  const MatQ K = pb.structure.K(pb.T());
+  const FacialConditions fc = facial_conditions(pb, {MatQ(dc_gain(V) - K)});
+  if (!fc.symmetric_possible) {
+    cc.verdict = lmi::Feasibility::infeasible;
+    cc.certified = true;
+    cc.detail = "exact: " + fc.explanation;
+    return cc;
+  }
+  const EhatSplit sp = ehat_split(pb.E);
+  Program prog;
+  EnvVars ev = add_environment(prog, pb, sp, fc);
+  const MatrixVariable QV = prog.NewSymmetric(m, "Q_V");
+  prog.AddLmi("Q_V > 0 (Delta_V > 0)", Expr(QV), Strictness::strict);
+  add_condition14(prog, pb, ev, Expr(QV));
+  std::vector<Expr> th;
+  for (const auto& t : ev.theta) th.emplace_back(t);
+  const VhatVars vv = add_vhat(prog, V, K, ev.Xk, th, Expr(QV));
+  prog.SetMarginObjective(1.0);
+  const lmi::Result r = lmi::Solve(prog, opt);
+  cc.verdict = r.verdict;
+  cc.margin = r.margin;
+  cc.detail = verdict_text(r);
+  if (r.verdict == lmi::Feasibility::infeasible) {
+    cc.certified = r.certificate == lmi::Certificate::infeasible_exact;
+    return cc;
+  }
+  if (r.x.empty()) return cc;
+  ExactEnv x = exact_env(r, ev);
+  MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
+  MatQ P11v = vv.P11.rows > 0 ? (r.certified() ? r.GetExactSolution(vv.P11) : lmi::to_rational(r.GetSolution(vv.P11)))
+                              : MatQ(0, 0);
+  const rational s = normaliser(x.X);
+  x.X *= s;
+  x.QE *= s;
+  x.P11 *= s;
+  for (auto& t : x.theta) t *= s;
+  QVx *= s;
+  P11v *= s;
+  std::string why1, why2;
+  const bool ok1 = exact_recheck(pb, sp, x, QVx, why1);
+  const bool ok2 = ok1 && exact_recheck_vhat(vv, ev.Xk, x.theta, QVx, P11v, why2);
+  cc.certified = ok1 && ok2 && r.margin > 0;
+  if (cc.certified) cc.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
+  cc.detail += " | environment side: " + why1 + (ok1 ? " | coupling side: " + why2 : "");
+  const MatrixXd X = to_double(x.X);
+  cc.gamma_sqrt = gamma_sqrt(pb, X);
+  cc.Q_V = to_double(QVx);
+  cc.delta_V = gamma_inv_scale(cc.Q_V, X);
+  return cc;
+}
+
+OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
+                        const lmi::Options& opt) {
+  const MatQ X = Gamma * Gamma;
+  const MatQ Q = Gamma * Delta * Gamma;
+  OspCheck oc;
+  const MatQ S = X * MatQ(dc_gain(V) - K);
+  if (S != MatQ(S.transpose())) {
+    oc.verdict = lmi::Feasibility::infeasible;
+    oc.certified = true;
+    oc.detail = "exact: X (V(1) - K) is not symmetric, so no storage function can satisfy Lemma 1's facial equalities";
+    return oc;
+  }
+  Program prog;
+  const MatrixVariable one = prog.NewScalar("unit");
+  prog.AddLinearEquality("unit = 1", Expr(one), MatrixXd::Ones(1, 1));
+  const VhatVars vv = add_vhat(prog, V, K, {X}, {Expr(one)}, Expr(to_double(Q)));
+  prog.SetMarginObjective(1.0);
+  const lmi::Result r = lmi::Solve(prog, opt);
+  oc.verdict = r.verdict;
+  oc.margin = r.margin;
+  oc.detail = verdict_text(r);
+  if (r.verdict == lmi::Feasibility::infeasible) {
+    oc.certified = r.certificate == lmi::Certificate::infeasible_exact;
+    return oc;
+  }
+  if (r.x.empty()) return oc;
+  const MatQ P11 = vv.P11.rows > 0 ? (r.certified() ? r.GetExactSolution(vv.P11) : lmi::to_rational(r.GetSolution(vv.P11)))
+                                   : MatQ(0, 0);
+  std::string why;
+  const bool ok = exact_recheck_vhat(vv, {X}, {rational(1)}, Q, P11, why);
+  oc.certified = ok && r.margin > 0;
+  if (oc.certified) oc.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
+  oc.detail += " | " + why;
+  return oc;
+}
+
+OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi::Options& opt) {
+  const Eigen::Index m = V.inputs();
+  const MatQ I = MatQ::Identity(m, m);
+  OspLevel l;
+  auto ok = [&](double d) {
+    const OspCheck c = check_vhat_osp(V, K, I, lmi::round_dyadic(d, 30) * I, opt);
+    return c.verdict == lmi::Feasibility::feasible && c.certified;
+  };
+  double lo = 0, hi = 1;
+  if (!ok(0)) {
+    l.detail = "Vhat is not certified passive (delta = 0 fails): no positive OSP level";
+    l.found = true;
+    return l;
+  }
+  int guard = 0;
+  while (ok(hi) && guard++ < 40) {
+    lo = hi;
+    hi *= 4;
+  }
+  for (int it = 0; it < 30 && (hi - lo) > 1e-7 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (ok(mid) ? lo : hi) = mid;
+  }
+  l.found = true;
+  l.certified = true;
+  l.delta = to_real<double>(lmi::round_dyadic(lo, 30));
+  l.upper = hi;
+  l.detail = "bisection on Lemma 1 (non-strict, facial reduction): level >= delta certified exactly";
+  return l;
+}
+
+}  // namespace hapstab::multidof

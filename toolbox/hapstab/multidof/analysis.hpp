@@ -1,0 +1,122 @@
+// hapstab/multidof/analysis.hpp -- Theorem 5 of paper 000 (the LMI stability test (16)) and
+// Theorem 4 for a given coupling V, posed with hapstab::lmi.
+//
+// (16): P > 0, X in G(m; m_1..m_N), Q_V > 0,
+//   M1 = [[A^T P A - P, A^T P B - C^T X/2], [B^T P A - X C/2, B^T P B - (X D + D^T X)/2 - Q_E]] <= 0
+//   [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0                               ((14) scaled)
+// with (A, B, C, D) = E-hat of (15). (16) comes from Theorem 4 by the congruences diag(I, Gamma)
+// (Lemma 1 for E-hat^Gamma, X = Gamma^2, Q_E = Gamma Phi_E Gamma) and diag(Gamma, Gamma) ((14),
+// Q_V = Gamma Delta_V Gamma); proofs/multidof_congruence.cpp checks both.
+//
+// M1 cannot be < 0: E-hat has m eigenvalues at 1 with eigenvectors v_b = [V_a b; b], and
+// [v_b; 0]^T M1 [v_b; 0] = v^T (A^T P A - P) v = 0 for every P. So M1 <= 0 is posed
+// non-strictly by facial reduction: M1 [v_b; 0] = 0, i.e. (A^T - I) P v_b = 0 and
+// (B^T P - X C/2) v_b = 0. In the coordinates of ehat_split these equalities say exactly
+//   P = Pi0^{-T} blockdiag(P_11, W) Pi0^{-1},   W = X E(1) / (2T),
+// so they require  X E(1) = E(1)^T X  (symmetric) and, with P > 0,  X E(1) > 0: the
+// environment's static stiffness E(1), weighted by X, must be symmetric positive definite.
+// For case i (X = g I) E(1) itself must be symmetric; for case ii (X = diag(g1, g2)) the ratio
+// g2/g1 is pinned to E(1)_12 / E(1)_21. We impose them exactly (X ranges over a rational basis
+// of the X with X E(1) symmetric; no X -> certified infeasible without any SDP) and pose the
+// reduced LMI (P_11, X, Q_E) strictly, with margin. The certificate is then re-checked in exact
+// rational arithmetic on the original data (15): P > 0, -M1 >= 0 (exact LDL^T), M1 [v_b; 0] = 0,
+// the scaled (14) > 0, Q_V > 0, g_i >= 1.
+//
+// On the coupling side V-hat carries (z-1)/(Tz), V-hat(1) = 0, and Lemma 1 for V-hat holds
+// only non-strictly: its kernel vectors [0; u; u] (state of V zero, delayed input = input)
+// are removed by lmi::facial_reduce before the rest is posed with margin.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hapstab/lmi/solve.hpp"
+#include "hapstab/multidof/environment.hpp"
+#include "hapstab/multidof/structure.hpp"
+
+namespace hapstab::multidof {
+
+struct Problem {
+  Structure structure;
+  StateSpace<rational> E;          ///< discrete environment (displacement -> force)
+  CouplingStructure coupling;      ///< for design (Theorem 6)
+  bool qv_block_diagonal = false;  ///< Remark 3: Q_V in BD(m; m_1..m_N)
+  /// InputError naming the inconsistency: E not square / not discrete / m != sum m_i /
+  /// E not Schur stable (exact) / coupling sizes (when `with_coupling`).
+  void validate(bool with_coupling = false) const;
+  rational T() const { return E.T; }
+};
+
+/// The facial-reduction analysis of (16)'s first LMI: which X in G make X E(1) symmetric.
+struct FacialConditions {
+  MatQ E1;                          ///< E(1), exact
+  std::vector<std::vector<rational>> gamma_basis;  ///< rational basis of {g : X(g) E(1) symmetric}
+  bool symmetric_possible = false;  ///< basis non-empty
+  std::string explanation;          ///< what the equalities require, in words, with numbers
+};
+/// `extra`: further static gains G that X G must keep symmetric (the coupling's V(1) - K).
+FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& extra = {});
+
+struct AnalysisResult {
+  lmi::Feasibility verdict = lmi::Feasibility::undecided;
+  bool certified = false;           ///< exact certificate (feasible: exact re-check; infeasible: exact)
+  std::string certificate;          ///< what was proven, in words
+  double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates)
+  std::vector<double> gamma;        ///< g_i (Gamma = sqrt(X) has sqrt(g_i) ... see gamma_sqrt)
+  std::vector<double> gamma_sqrt;   ///< the gamma_i of Gamma = sqrt(X)
+  Eigen::MatrixXd X, Q_E, Q_V, delta_V;  ///< delta_V = Gamma^-1 Q_V Gamma^-1 (coupling requirement)
+  FacialConditions facial;
+  // least dissipative coupling: minimise ||Q_V||_2 (spectral norm) subject to (16)
+  bool min_found = false, min_certified = false;
+  Eigen::MatrixXd Q_V_min, delta_V_min;
+  double Q_V_min_norm = 0;
+  std::vector<double> gamma_sqrt_min;
+  std::string solver_detail;
+};
+
+AnalysisResult analyze(const Problem& pb, const lmi::Options& opt = {});
+
+/// Independent verification of a coupling V (given by its realisation): Theorem 4 with
+/// V-hat^Gamma's OSP level by Lemma 1 (non-strict, facial reduction), E-hat^Gamma's ISP level
+/// and (14), over X in G, Q_E, Q_V and both storage functions -- one LMI program.
+struct CouplingCheck {
+  lmi::Feasibility verdict = lmi::Feasibility::undecided;
+  bool certified = false;
+  double margin = 0;
+  std::vector<double> gamma_sqrt;
+  Eigen::MatrixXd Q_V, delta_V;
+  std::string detail;
+};
+CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt = {});
+
+/// Lemma 1 for V-hat^Gamma (V-hat of (17) built from V and K): is it Delta-OSP? Non-strict
+/// (V-hat(1) = 0): the kernel vectors [0; u; u] force P_V [0; I] = [p1; P22] with
+///   p1 = (A_V^T - I)^{-1} C_V^T X / 2,   P22 = (V(1) - K)^T X / (2T)   (X = Gamma^2),
+/// so X (V(1) - K) must be symmetric positive definite (the coupling must act as a damper at
+/// DC). These are imposed exactly; the rest (P11 block) is posed with margin and the rounded
+/// point re-checked exactly on the rational data.
+struct OspCheck {
+  lmi::Feasibility verdict = lmi::Feasibility::undecided;
+  bool certified = false;
+  double margin = 0;
+  std::string detail;
+};
+OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
+                        const lmi::Options& opt = {});
+
+/// The largest scalar delta with V-hat delta-OSP (Delta = delta I, Gamma = I): bisection on
+/// check_vhat_osp; `delta` is the largest level certified exactly (a lower bound), `upper` the
+/// smallest level found infeasible numerically.
+struct OspLevel {
+  double delta = 0, upper = 0;
+  bool found = false, certified = false;
+  std::string detail;
+};
+OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi::Options& opt = {});
+
+/// Helpers shared with design.cpp.
+Eigen::MatrixXd to_double(const MatQ& M);
+lmi::Expr scalar_times(const lmi::Expr& s, const Eigen::MatrixXd& M);  ///< s * M (s a 1x1 expression)
+
+}  // namespace hapstab::multidof

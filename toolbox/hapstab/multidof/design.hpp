@@ -1,0 +1,62 @@
+// hapstab/multidof/design.hpp -- Theorem 6 of paper 000: a structured virtual coupling
+// V = blockdiag(V_1..V_Nbar) (R2) that stabilises the haptic loop, by the reconstructed LMIs
+// (DESIGN.md; (19)-(20) are missing from the transcription):
+//   (19) = the LMIs (16) of Theorem 5 in P, X, Q_E, Q_V (with the facial reduction of analysis.hpp),
+//          Q_V in BD(m; m_1..m_N) and in BD(m; mbar_1..) (Remark 3 and (18));
+//   (20) = Q > 0 and [[Y, R^T], [R, S]] >= 0, R = [C/2; A; C], S = [[(D + D^T)/2, B^T, D^T],
+//          [B, Q, 0], [D, 0, Sigma]] of V-hat_Gamma (17) -- Lemma 2 (with its S typo fixed:
+//          -Phi, here Phi = 0), affine in (A_V^G, B_V^G, C_V^G, D_V^G);
+//   (22) Sigma = Q_V^-1, Y = Q^-1 (non-convex), by cone complementarity linearisation
+//          (El Ghaoui-Oustry-AitRami 1997): minimise tr(Y_k Q + Q_k Y + Sigma_k Q_V + Q_V,k Sigma)
+//          s.t. the LMIs and [[Y, I], [I, Q]] >= 0, [[Sigma, I], [I, Q_V]] >= 0, until the trace
+//          reaches 2 (n + m) + 2 m (n = dim Q) within tolerance.
+// (20) is posed NON-strictly: V-hat(1) = 0 makes Lemma 1/2 for V-hat infeasible as a strict LMI
+// for every V (analysis.hpp). The designed V is then returned by (23), (24) and verified
+// independently (never trusted from the design LMIs): V-hat's OSP level by Lemma 1 against
+// Gamma^-1 Q_V Gamma^-1, and Theorem 4 with levels computed afresh (check_theorem4).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hapstab/multidof/analysis.hpp"
+
+namespace hapstab::multidof {
+
+struct DesignOptions {
+  int max_iterations = 40;
+  double tolerance = 1e-6;  ///< relative gap of the CCL trace to 2(n + m) + 2m
+  lmi::Options lmi;
+};
+
+struct Verification {
+  std::string name;
+  bool pass = false;
+  bool certified = false;
+  std::string detail;
+};
+
+struct DesignResult {
+  bool feasible = false;       ///< a V was produced that passes every independent check
+  bool certified = false;      ///< ... with exact certificates
+  bool converged = false;      ///< CCL reached the trace target
+  bool convex_infeasible = false;   ///< the convex part (19)-(20) without (22) has no solution
+  bool convex_certified = false;    ///< ... and that is certified (exact)
+  int iterations = 0;
+  double trace_gap = 0;        ///< final tr(...) - 2(n + m) - 2m
+  std::vector<double> trace_history;
+  StateSpace<rational> V;      ///< (23), dyadic-rounded doubles (exact as given)
+  std::vector<double> gamma_sqrt;
+  Eigen::MatrixXd Q_V, delta_V;  ///< design's Q_V and Gamma^-1 Q_V Gamma^-1
+  std::vector<Verification> verification;
+  std::string message;
+};
+
+DesignResult design(const Problem& pb, const DesignOptions& opt = {});
+
+/// Independent checks of any coupling V (also used for the paper's (27)).
+std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<rational>& V,
+                                          const std::vector<double>& gamma_sqrt, const Eigen::MatrixXd& Q_V,
+                                          const lmi::Options& opt = {});
+
+}  // namespace hapstab::multidof

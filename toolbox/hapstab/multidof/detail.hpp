@@ -1,0 +1,51 @@
+// hapstab/multidof/detail.hpp -- internal building blocks shared by analysis.cpp and
+// design.cpp: the environment side of (16) in the split coordinates of ehat_split (facial
+// reduction imposed exactly), the scaled (14), Lemma 1 for V-hat^Gamma in congruence form
+//   -[[A^T P A - P + C^T Q_V C, A^T P B - C^T X/2 + C^T Q_V D],
+//     [.,                       B^T P B - (X D + D^T X)/2 + D^T Q_V D]] >= 0
+// (Q_V = Gamma Delta_V Gamma, X = Gamma^2: linear in P, X, Q_V), its kernel [0; u; u], and the
+// exact re-check of a Theorem 5 solution on the rational data (15). Not a public API.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hapstab/lmi/solve.hpp"
+#include "hapstab/multidof/analysis.hpp"
+
+namespace hapstab::multidof::detail {
+
+struct EnvVars {
+  std::vector<lmi::MatrixVariable> theta;            ///< X = sum theta_k X_k
+  std::vector<MatQ> Xk;                              ///< exact basis of the admissible X
+  std::vector<std::vector<rational>> basis;
+  lmi::MatrixVariable P11, QE;
+  lmi::Expr X, g;                                    ///< X (m x m) and g (N x 1) expressions
+};
+EnvVars add_environment(lmi::Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc);
+void add_condition14(lmi::Program& prog, const Problem& pb, const EnvVars& ev, const lmi::Expr& QV);
+
+struct ExactEnv {
+  std::vector<rational> theta;
+  MatQ X, QE, P11;
+};
+ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev);
+bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why);
+
+Eigen::MatrixXd gamma_inv_scale(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& X);
+std::vector<double> gamma_sqrt(const Problem& pb, const Eigen::MatrixXd& X);
+/// Coupling side: P_V with its facial block pinned by X (basis Xk, scalars theta), reduced LMI.
+struct VhatVars {
+  StateSpace<rational> Vh;                 ///< (17)
+  std::vector<MatQ> p1k, P22k;             ///< exact pinned blocks per basis element
+  lmi::MatrixVariable P11;
+  lmi::Expr PV;
+};
+VhatVars add_vhat(lmi::Program& prog, const StateSpace<rational>& V, const MatQ& K, const std::vector<MatQ>& Xk,
+                  const std::vector<lmi::Expr>& theta, const lmi::Expr& QV);
+/// Exact re-check of the coupling side at exact theta, Q_V, P11.
+bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
+                        const MatQ& QV, const MatQ& P11, std::string& why);
+std::string verdict_text(const lmi::Result& r);
+
+}  // namespace hapstab::multidof::detail

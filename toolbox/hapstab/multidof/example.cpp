@@ -1,0 +1,83 @@
+#include "hapstab/multidof/example.hpp"
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+
+namespace hapstab::multidof::example {
+
+namespace {
+rational q(const char* s) { return parse_rational(s, "example constant"); }
+}  // namespace
+
+MechanicalEnvironment fig5() {
+  MechanicalEnvironment e;
+  e.M = q("0.3");
+  e.k = 1000;
+  e.B = 5;
+  e.kc = {rational(800), rational(500)};
+  e.Bc = {rational(1), rational(2)};
+  return e;
+}
+
+rational T() { return q("0.01"); }
+
+StateSpace<rational> environment(bool perturbed) {
+  StateSpace<rational> E = mechanical_environment(fig5(), T(), C2dMethod::backward_euler);
+  if (perturbed) {
+    MatQ Pi(2, 2);
+    Pi << 0, 1, 1, 0;
+    E.C = Pi * E.C;
+  }
+  return E;
+}
+
+Structure structure(int which_case) {
+  const rational d = q("1.37");
+  Structure s;
+  if (which_case == 1) {
+    s.operators = {Operator{"H1 (both hands)", 2, {device("d_a", 1, d), device("d_b", 1, d)}}};
+  } else {
+    s.operators = {Operator{"H1", 1, {device("d_a", 1, d)}}, Operator{"H2", 1, {device("d_b", 1, d)}}};
+  }
+  return s;
+}
+
+TransferMatrix operator_H(int which_case) {
+  ParseOptions po;
+  po.variable = 's';
+  TransferMatrix H;
+  H.domain = Domain::s;
+  H.T = 0;
+  H.entries = {{parse_tf("0.1*(s^2+5*s+10)/(s^2+s+1)", po), parse_tf(which_case == 1 ? "0.05" : "0", po)},
+               {parse_tf(which_case == 1 ? "0.05" : "0", po), parse_tf("0.05*(s^2+5*s+10)/(s^2+s+1)", po)}};
+  return H;
+}
+
+StateSpace<rational> controller27() {
+  StateSpace<rational> V;
+  V.T = T();
+  V.A = MatQ::Zero(2, 2);
+  V.B = MatQ::Zero(2, 2);
+  V.C = MatQ::Zero(2, 2);
+  V.D = MatQ::Zero(2, 2);
+  V.A(0, 0) = q("-0.03732");
+  V.A(1, 1) = q("-0.01054");
+  V.B(0, 0) = q("-3.762");
+  V.B(1, 1) = q("-6.29");
+  V.C(0, 0) = q("0.01477");
+  V.C(1, 1) = q("-0.01639");
+  V.D(0, 0) = q("9.494");
+  V.D(1, 1) = q("9.749");
+  return V;
+}
+
+Problem problem(int which_case, bool perturbed) {
+  Problem p;
+  p.structure = structure(which_case);
+  p.E = environment(perturbed);
+  p.coupling.mbar = {1, 1};
+  p.coupling.nbar = {1, 1};
+  return p;
+}
+
+}  // namespace hapstab::multidof::example

@@ -1,0 +1,28 @@
+// hapstab/multidof/example.hpp -- the application example of paper 000, Sec. VI, as
+// reconstructed in DESIGN.md (Fig. 5 is missing from the transcription):
+//   E: one mass M = 0.3 tied to ground by k = 1000, B = 5, touched at two massless contact
+//      points through k1 = 800, B1 = 1 and k2 = 500, B2 = 2; displacements -> contact forces;
+//      backward Euler, T = 0.01; minimal realisation, 4 states.
+//   perturbed E: C_E pre-multiplied by [[0, 1], [1, 0]], D_E unchanged (realisation-independent:
+//      E_p(z) = Pi (E(z) - E(inf)) + E(inf)).
+//   devices d_a, d_b: 1 DOF, OSP level 1.37; case i (25): one 2-DOF operator using both;
+//      case ii (26): two 1-DOF operators with one device each.
+//   operators: H(s) of Sec. VI (2x2, case i) and its diagonal (case ii).
+//   the paper's controller (27) and the decentralised coupling structure N-bar = 2,
+//   n-bar_i = m-bar_i = 1.
+#pragma once
+
+#include "hapstab/multidof/analysis.hpp"
+
+namespace hapstab::multidof::example {
+
+
+MechanicalEnvironment fig5();
+rational T();                               ///< 1/100
+StateSpace<rational> environment(bool perturbed);
+Structure structure(int which_case);        ///< 1 = case i (25), 2 = case ii (26)
+TransferMatrix operator_H(int which_case);  ///< Sec. VI H(s) (case 1) or its diagonal (case 2)
+StateSpace<rational> controller27();        ///< (27), decimals read exactly
+Problem problem(int which_case, bool perturbed);
+
+}  // namespace hapstab::multidof::example
