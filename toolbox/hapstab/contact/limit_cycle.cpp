@@ -247,6 +247,14 @@ Oscillation detect(const LureLoop& L, const std::vector<double>& s0, long steps,
   o.window.assign(last, last + window);
   o.state = t.state;
   const bool loses_contact = *std::min_element(last, last + window) < -rho;
+  if (!loses_contact && o.amplitude > 1e-12 * rho && o.amplitude > o.previous_amplitude * (1 + 1e-9)) {
+    // still in contact but growing: the linear loop (1 + kH)^{-1} is unstable and the motion
+    // will leave the wall -- sustained, not decaying
+    o.oscillates = true;
+    o.note = "growing in contact (the linear loop is unstable), amplitude ratio over one window " +
+             std::to_string(o.amplitude / o.previous_amplitude);
+    return o;
+  }
   if (o.amplitude <= 1e-9 * rho || !loses_contact) {
     o.note = o.amplitude <= 1e-9 * rho ? "decays to the equilibrium y = 0" : "stays in contact (linear, decaying)";
     return o;
