@@ -19,16 +19,20 @@
 //                 theta/2 is exact, glibc's tan is within 1 ulp (|d1| <= 2^-52 relative), the
 //                 division adds |d2| <= 2^-53, (T/2) is exact: im~ = im (1+d1)^{-1}(1+d2), so
 //                 |im~ - im|/|im| <= 2^-52 + 2^-53 + 2^-104 < 1.51 eps (eps = 2^-52), and the
-//                 complex relative error is <= that too (re exact). Measured max: see bench/tests.
+//                 complex relative error is <= that too (re exact). Measured (bench/sampling.cpp,
+//                 201 wT in [1e-8, pi], componentwise): worst 0.67 eps; 8.5 ns CPU per evaluation.
 //                 (Valid while T/2 and the result are normal numbers: T >= 2^-1021.)
 //   r_eq38        as (44) with cot = cos/sin: <= (1 + 1 + 1/2 + 1/2) ulp ~ 2 eps.
 //   r_eq44_naive  the complex division as written: e^{j theta} - 1 = (cos theta - 1) + j sin theta;
 //                 cos theta - 1 cancels, relative error ~ eps/theta^2 in re, and for theta < 1.5e-8
 //                 cos theta rounds to 1, re = 0 (instead of -T/2): 100 % error.
-//   r_eq35        1 - cos theta in the denominator and cos theta - 1 in the numerator: ~ eps/theta^2.
+//   r_eq35        1 - cos theta in the denominator and cos theta - 1 in the numerator: ~ eps/theta^2
+//                 (measured 8e6 eps at wT = 1e-4, 1.3e3 eps at 1e-2); at wT = 1e-8, 1 - cos == 0: inf.
 //   r_eq36        cos theta - 1 in the numerator: re has ~ eps/theta^2; im is accurate.
 //   r_eq37        the angle (theta + pi)/2 is rounded (and pi is rounded to double): cos of it
-//                 ~ -theta/2 has absolute error ~ eps, so re has relative error ~ eps/theta.
+//                 ~ -theta/2 has absolute error ~ eps, so re has relative error ~ eps/theta (8e7 eps
+//                 at wT = 1e-8); near wT = pi, Im ~ (T/2)(pi - wT)/2 is lost the same way (4.5e15 eps
+//                 at the double nearest pi).
 #pragma once
 
 #include <boost/math/constants/constants.hpp>
