@@ -53,11 +53,11 @@ R side100(const TransferFunction& H, const R& th, bool wedge) {
   return wedge ? wedge_lhs(th, re, im) : re + 1;
 }
 
-// min over theta in (0, pi] of the left side + 1: 20000-point scan, then golden section around
+// min over theta in (0, pi] of the left side + 1: 6000-point scan, then golden section around
 // every local minimum of the scan (the global one among them).
 R reference_min(const TransferFunction& H, bool wedge) {
   const R pi = boost::multiprecision::acos(R(-1));
-  const int n = 20000;
+  const int n = 6000;
   std::vector<R> v(n + 1);
   for (int i = 1; i <= n; ++i) v[i] = side100(H, pi * i / n, wedge);
   v[0] = wedge ? side100(H, pi * R("1e-30"), wedge) : side100(H, R(0), wedge);  // theta -> 0 limit

@@ -348,10 +348,17 @@ double wedge_margin_at(const TransferFunction& H, double theta) {
 
 GridMin grid_margin(const TransferFunction& H, int n, bool wedge) {
   if (n < 2) throw InputError("grid_margin: need at least 2 points");
+  // coefficients rounded to double once (the grid is a double-precision method)
+  const Polynomial<double> N = H.num().cast<double>(), D = H.den().cast<double>();
   GridMin g{INFINITY, 0};
   for (int i = wedge ? 1 : 0; i < n; ++i) {  // theta = 0 is a 0*inf limit for the wedge: skipped
     const double th = M_PI * i / (n - 1);
-    const double v = wedge ? wedge_margin_at(H, th) : eval_h(H, th).real() + 1;
+    const std::complex<double> z = std::polar(1.0, th), h = N(z) / D(z);
+    double v = h.real() + 1;
+    if (wedge) {
+      const double m = std::sin(th) / (1 - std::cos(th));
+      v = std::max(h.real() + m * h.imag(), h.real() - m * h.imag()) + 1;
+    }
     if (v < g.value) g = {v, th};
   }
   return g;
