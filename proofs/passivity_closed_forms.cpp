@@ -1,0 +1,308 @@
+// proofs/passivity_closed_forms.cpp -- paper 001, Secs. VI-VII: the identities behind the
+// closed-form passivity bounds, proven exactly as identities of rational functions of
+// t = tan(wT/2) (through poly/'s unit-circle substitution, independent of passivity/'s c-form),
+// and every closed form checked against the certified generic bound over a sweep of its
+// parameters, boundary cases included.
+#include <random>
+#include <sstream>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/catalogue.hpp"
+#include "hapstab/poly/unit_circle.hpp"
+#include "proofs/proof.hpp"
+
+namespace {
+
+using namespace hapstab;
+using namespace hapstab::passivity;
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+using PM = hapstab::proofs::Method;
+
+const P z = P::monomial(1);
+RF zpow(int k) { return k >= 0 ? RF(P::monomial(k)) : RF(P(rational(1)), P::monomial(-k)); }
+RF one_minus_z() { return RF(P(std::vector<rational>{rational(1), rational(-1)})); }
+
+// cos(k theta) as a rational function of t: T_k(c), c = (1 - t^2)/(1 + t^2)
+RF cos_k(int k) {
+  RF c(P(std::vector<rational>{rational(1), rational(0), rational(-1)}), P(std::vector<rational>{rational(1), rational(0), rational(1)}));
+  RF t0(rational(1)), t1 = c;
+  if (k == 0) return t0;
+  for (int i = 1; i < k; ++i) {
+    RF t2 = RF(rational(2)) * c * t1 - t0;
+    t0 = t1;
+    t1 = t2;
+  }
+  return t1;
+}
+RF dirichlet(int n, bool shifted_by_pi) {  // D_n(theta) or D_n(theta + pi)
+  RF d(rational(1));
+  for (int k = 1; k <= n; ++k) d += RF(rational(shifted_by_pi && k % 2 ? -2 : 2)) * cos_k(k);
+  return d;
+}
+RF re_t(const RF& G) { return on_unit_circle(G).re; }
+RF Hm(int m, const rational& T) {  // ((z-1)/(Tz))^m
+  return RF(P(std::vector<rational>{rational(-1), rational(1)}), P::monomial(1, T)).pow(m);
+}
+rational pow_rational(const rational& x, int e) {
+  rational r(1);
+  for (int i = 0; i < e; ++i) r *= x;
+  return r;
+}
+rational binom(int n, int k) {
+  rational r(1);
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+BoundProblem prob(const RF& H, const rational& T, int n = 0) {
+  BoundProblem p;
+  p.H = H;
+  p.T = T;
+  p.delay = n;
+  return p;
+}
+/// closed form value v agrees with the certified generic bound: v inside the enclosure
+bool agrees(const Bound& b, const rational& v) { return !b.infinite && b.lo <= v && v <= b.hi; }
+
+}  // namespace
+
+HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rational identities in t = tan(wT/2)") {
+  const std::vector<rational> Ts = {rational(1), rational(1, 1000), rational(7, 3)};
+  // Re{T H_1/(1-z)} = -cos wT
+  bool ok = true;
+  for (const auto& T : Ts) ok = ok && re_t(RF(T) * Hm(1, T) / one_minus_z()) == -cos_k(1);
+  check.claim("001.sec6.H1", "Example 1", "Re{T H_1(z)/(1-z)} = -cos wT, H_1 = (z-1)/(Tz), as an identity in t", PM::exact,
+              ok, "on_unit_circle of T H_1/(1-z) equals -(1-t^2)/(1+t^2) for T in {1, 1/1000, 7/3}");
+  // Re{T H_m/(1-z)} = T^{1-m} sum_k C(m-1,k)(-1)^{k+1} cos(k+1)wT, max (2/T)^{m-1} at wT = pi
+  ok = true;
+  for (const auto& T : Ts)
+    for (int m = 1; m <= 6; ++m)
+      for (int n = 0; n <= 4; ++n) {
+        RF rhs(rational(0));
+        for (int k = 0; k <= m - 1; ++k)
+          rhs += RF(binom(m - 1, k) * ((k + 1) % 2 ? rational(-1) : rational(1)) / pow_rational(T, m - 1)) * cos_k(n + k + 1);
+        ok = ok && re_t(RF(T) * Hm(m, T) / (one_minus_z() * zpow(n))) == rhs;
+      }
+  check.claim("001.ex4.Hm_delay", "Example 4", "Re{T H_m/((1-z)z^n)} = T^{1-m} sum_k C(m-1,k)(-1)^{k+1} cos(n+k+1)wT",
+              PM::exact, ok, "exact identity in t for m = 1..6, n = 0..4, T in {1, 1/1000, 7/3}");
+  // partial fractions 1/((1-z) z^n) = 1/(1-z) + z^-1 + ... + z^-n
+  ok = true;
+  for (int n = 0; n <= 12; ++n) {
+    RF rhs = RF(rational(1)) / one_minus_z();
+    for (int k = 1; k <= n; ++k) rhs += zpow(-k);
+    ok = ok && (RF(rational(1)) / (one_minus_z() * zpow(n))) == rhs;
+  }
+  check.claim("001.ex4.partial_fractions", "Example 4", "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k", PM::exact, ok,
+              "equal as reduced rational functions of z for n = 0..12");
+  // (52): T/(1-z) (z-1)/(z+1) = -(T/2)[1 - j tan(wT/2)]
+  ok = true;
+  for (const auto& T : Ts) {
+    ReIm ri = on_unit_circle(RF(T) / one_minus_z() * RF(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)})));
+    ok = ok && ri.re == RF(-T / 2) && ri.im == RF(P::monomial(1, T / 2));
+  }
+  check.claim("001.eq52", "(52)", "T/(1-z) (z-1)/(z+1) = -(T/2)(1 - j tan(wT/2)) on the unit circle", PM::exact, ok,
+              "real part -T/2 and imaginary part (T/2) t exactly, T in {1, 1/1000, 7/3}");
+  // (51): Re{T/(1-z) (z-1)/(z+a)} = -T (cos wT + a)/(a^2 + 2 a cos wT + 1)
+  ok = true;
+  for (rational a : {rational(-9, 10), rational(0), rational(1, 3), rational(999, 1000)}) {
+    RF lhs = re_t(RF(rational(1)) / one_minus_z() * RF(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{a, rational(1)})));
+    RF c = cos_k(1);
+    ok = ok && lhs == RF(rational(-1)) * (c + RF(a)) / (RF(a * a + 1) + RF(2 * a) * c);
+  }
+  check.claim("001.eq51", "(51)", "Re{T/(1-z) (z-1)/(z+a)} = -T (cos wT + a)/(a^2 + 2a cos wT + 1)", PM::exact, ok,
+              "exact identity in t (T = 1; both sides are linear in T) for a in {-9/10, 0, 1/3, 999/1000}");
+  // (53): Re{T H/((1-z) z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT, H = K + B(z-1)/(Tz); linear in (KT, B),
+  // so the two basis cases (KT, B) = (1, 0), (0, 1) prove it for every K, B, T.
+  ok = true;
+  for (int n = 0; n <= 8; ++n) {
+    RF spring = re_t(RF(rational(1)) / (one_minus_z() * zpow(n)));                // KT = 1
+    RF damper = re_t(Hm(1, rational(1)) / (one_minus_z() * zpow(n)));             // B = 1 (T = 1)
+    ok = ok && spring == RF(rational(1, 2)) * dirichlet(n, false) && damper == RF(rational(-1)) * cos_k(n + 1);
+  }
+  check.claim("001.eq53", "(53)", "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT", PM::exact, ok,
+              "exact identity in t for n = 0..8 on the basis (KT,B) = (1,0), (0,1) (the expression is linear in KT and B)");
+  // Tustin with delay: (KT/2) D_n(wT) - B (-1)^n D_n(wT + pi); n = 1: KT/2 + B + (KT - 2B) cos wT
+  ok = true;
+  RF tust = RF(P(std::vector<rational>{rational(-2), rational(2)}), P(std::vector<rational>{rational(1), rational(1)}));  // 2(z-1)/(z+1), T = 1
+  for (int n = 0; n <= 8; ++n) {
+    RF damper = re_t(tust / (one_minus_z() * zpow(n)));
+    ok = ok && damper == RF(rational(n % 2 ? 1 : -1)) * dirichlet(n, true);
+  }
+  check.claim("001.ex4.tustin_delay", "Example 4",
+              "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi)", PM::exact, ok,
+              "exact identity in t for n = 0..8 (damper part; the spring part is (53)'s)");
+  RF n1 = re_t(RF(rational(1)) / (one_minus_z() * zpow(1)));
+  RF n1b = re_t(tust / (one_minus_z() * zpow(1)));
+  bool ok1 = n1 == RF(rational(1, 2)) + cos_k(1) && n1b == RF(rational(1)) - RF(rational(2)) * cos_k(1);
+  check.claim("001.ex4.tustin_n1", "Example 4", "n = 1: Re = KT/2 + B + (KT - 2B) cos wT", PM::exact, ok1,
+              "spring part 1/2 + cos wT, damper part 1 - 2 cos wT, exactly in t");
+}
+
+HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Secs. VI-VII equals the certified generic bound") {
+  const rational T(1, 1000);
+  std::ostringstream ev;
+  // (46) non-negative combinations of backward differences, random alpha
+  std::mt19937 rng(46);
+  std::uniform_int_distribution<int> pick(0, 40);
+  int count = 0;
+  bool ok = true;
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<rational> alpha;
+    RF H(rational(0));
+    int M = 1 + trial % 4;
+    for (int m = 0; m <= M; ++m) {
+      rational a(trial % 3 == 0 && m == 0 ? 0 : pick(rng), 7);
+      alpha.push_back(a);
+      H += RF(a) * Hm(m, T);
+    }
+    if (H.is_zero()) continue;
+    rational cf = catalogue::backward_difference_sum(alpha, T);
+    ok = ok && agrees(bound_certified(prob(H, T)), cf);
+    ++count;
+  }
+  check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0", PM::certified, ok,
+              std::to_string(count) + " random non-negative combinations up to H_4; closed form inside the certified enclosure");
+  // virtual wall KT/2 + B and with delay n = 1 (both cases, boundary KT = 4B)
+  ok = true;
+  bool ok1 = true;
+  count = 0;
+  for (rational K : {rational(0), rational(100), rational(1000), rational(4000), rational(20000), rational(100000)})
+    for (rational B : {rational(0), rational(1), rational(5), rational(50)}) {
+      if (K == 0 && B == 0) continue;
+      RF H = RF(K) + RF(B) * Hm(1, T);
+      ok = ok && agrees(bound_certified(prob(H, T)), catalogue::virtual_wall(K, B, T));
+      if (B > 0 || K > 0) ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
+      ++count;
+    }
+  // exactly on the boundary KT = 4B and just beside it
+  for (rational B : {rational(1), rational(5)})
+    for (rational eps : {rational(0), rational(1, 1000000), rational(-1, 1000000)}) {
+      rational K = 4 * B / T * (1 + eps);
+      RF H = RF(K) + RF(B) * Hm(1, T);
+      ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
+    }
+  check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", PM::certified, ok,
+              std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0");
+  check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B)",
+              PM::certified, ok1, "24 (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
+  // conservative bound (2n+1)KT/2 + B for n = 0..5 is an upper bound
+  ok = true;
+  for (int n = 0; n <= 5; ++n)
+    for (rational K : {rational(1000), rational(30000)}) {
+      RF H = RF(K) + RF(rational(5)) * Hm(1, T);
+      Bound b = bound_certified(prob(H, T, n));
+      ok = ok && b.lo <= catalogue::delayed_wall_conservative(n, K, rational(5), T);
+    }
+  check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall", PM::certified, ok,
+              "n = 0..5, K in {1000, 30000}, B = 5");
+  // H_m z^-n: (2/T)^{m-1}, tight for even n; H_0 z^-n: (2n+1)T/2
+  ok = true;
+  for (int m = 1; m <= 4; ++m)
+    for (int n = 0; n <= 4; ++n) {
+      bool tight = false;
+      rational v = catalogue::delayed_backward_difference(m, n, T, &tight);
+      Bound b = bound_certified(prob(Hm(m, T), T, n));
+      ok = ok && (tight ? agrees(b, v) : b.lo <= v);  // lo: an enclosure may poke above an attained v
+    }
+  for (int n = 0; n <= 6; ++n) ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
+  check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2",
+              PM::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0");
+  // FIR (47)-(49): non-negative and alternating sign structures are tight, others bounded
+  ok = true;
+  bool okb = true;
+  std::uniform_int_distribution<int> sgnd(-20, 20);
+  for (int trial = 0; trial < 15; ++trial) {
+    int N = 2 + trial % 5;
+    std::vector<rational> alpha;
+    for (int k = 0; k <= N; ++k) {
+      int v = sgnd(rng);
+      if (trial % 3 == 0) v = std::abs(v);
+      if (trial % 3 == 1) v = (k % 2 ? -1 : 1) * std::abs(v);
+      alpha.push_back(rational(v, 3));
+    }
+    RF H(rational(0));
+    for (int k = 0; k <= N; ++k) H += RF(alpha[k]) * zpow(-k);
+    H = H * one_minus_z();
+    if (H.is_zero()) continue;
+    BoundProblem p = prob(H, T);
+    p.allow_noncausal = true;  // (47) as written has a z^{+1} term
+    bool tight = false;
+    rational v = catalogue::fir_bound(alpha, T, &tight);
+    Bound b = bound_certified(p);
+    if (tight) ok = ok && agrees(b, v);
+    okb = okb && b.lo <= v;
+  }
+  check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs",
+              PM::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)");
+  // IIR: T/(1-a), T/(1+a), a -> +-1, a = 1 (52)
+  ok = true;
+  for (rational a : {rational(-999999, 1000000), rational(-9, 10), rational(0), rational(1, 2), rational(999999, 1000000)}) {
+    RF Hp(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{a, rational(1)}));
+    ok = ok && agrees(bound_certified(prob(Hp, T)), catalogue::iir_zero_at_one(a, T));
+    ok = ok && agrees(bound_certified(prob(RF(rational(-1)) * Hp, T)), catalogue::iir_zero_at_one_neg(a, T));
+  }
+  RF H52(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)}));
+  ok = ok && agrees(bound_certified(prob(H52, T)), catalogue::iir_zero_at_one(rational(1), T));
+  check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2", PM::certified,
+              ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1");
+  // Tustin wall KT/2 - B, with n = 1 KT/2 + B + |KT - 2B|, with 0 < t_d < T: +inf
+  ok = true;
+  bool okf = true;
+  for (rational K : {rational(0), rational(1000), rational(10000)})
+    for (rational B : {rational(1, 2), rational(5), rational(50)}) {
+      RF H = RF(K) + RF(2 * B / T) * H52;
+      ok = ok && agrees(bound_certified(prob(H, T)), catalogue::tustin_wall(K, B, T));
+      ok = ok && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_tustin_n1(K, B, T));
+      for (rational td : {T / 100, T / 2, T * 99 / 100}) {
+        BoundProblem p = prob(H, T);
+        p.frac_delay = td;
+        Bound b = bound_certified(p, 16);
+        okf = okf && b.infinite && b.status == Status::exact;
+      }
+    }
+  check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B|", PM::certified, ok,
+              "K in {0, 1000, 10000}, B in {1/2, 5, 50}");
+  check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive)",
+              PM::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)");
+  // eta (54) adds
+  ok = true;
+  for (rational eta : {rational(0), rational(1, 10), rational(7)}) {
+    BoundProblem p = prob(RF(rational(1000)) + RF(rational(5)) * Hm(1, T), T);
+    p.eta = eta;
+    ok = ok && agrees(bound_certified(p), catalogue::virtual_wall(1000, 5, T) + eta);
+  }
+  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", PM::certified, ok, "eta in {0, 1/10, 7}");
+}
+
+HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and b ~ (CN - D)T") {
+  auto C = catalogue::dirichlet_C(60);
+  auto D = catalogue::dirichlet_D(60);
+  bool okc = parse_rational("0.2172336282") - rational(1, 20000000000LL) < C.lo &&
+             C.hi < parse_rational("0.2172336282") + rational(1, 20000000000LL) &&
+             parse_rational("0.3913831859") - rational(1, 20000000000LL) < D.lo &&
+             D.hi < parse_rational("0.3913831859") + rational(1, 20000000000LL);
+  check.claim("001.dirichlet.C", "(50)", "C = -min sin(y)/y = 0.2172336282..., D = (1 - C)/2 = 0.3913831859...",
+              PM::certified, okc,
+              "C in [" + to_decimal(C.lo, 25) + ", " + to_decimal(C.hi, 25) + "] (root of tan y = y in (pi, 3pi/2), width < 1e-60)");
+  // b*_N / T - (C N - D) for growing N: the generic certified bound of (z-1) sum_0^N z^-k
+  const rational T(1, 1000);
+  std::ostringstream ev;
+  std::vector<double> err;
+  for (int N : {5, 10, 20, 40, 80}) {
+    RF H(rational(0));
+    for (int k = 0; k <= N; ++k) H += zpow(-k);
+    H = H * RF(P(std::vector<rational>{rational(-1), rational(1)}));
+    BoundProblem p = prob(H, T);
+    p.allow_noncausal = true;
+    Bound b = bound_certified(p, 20);
+    double e = std::abs(to_real<double>((b.lo + b.hi) / 2 / T - (C.lo * N - D.lo)));
+    err.push_back(e);
+    ev << "N=" << N << ": |b*/T - (CN - D)| = " << e << "; ";
+  }
+  bool ok = true;
+  for (size_t i = 1; i < err.size(); ++i) ok = ok && err[i] < err[i - 1];
+  ok = ok && err.back() < err.front() / 4;
+  check.claim("001.dirichlet.approx", "(50)", "the error of b ~ (CN - D)T tends to 0 as N grows", PM::certified, ok, ev.str());
+}

@@ -1,0 +1,242 @@
+// cli/cmd_bound.cpp -- `hapstab bound`: the passivity bound b* of paper 001, (45) and (54).
+//
+//   hapstab bound --H "K + B*(z-1)/(T*z)" --T 1/1000 --set K=1000 --set B=5 [--delay N]
+//                 [--frac-delay TD] [--eta ETA] [--digits D] [--method certified|fast|grid]
+//                 [--explain] [--json] [--curve FILE]
+//   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
+// JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
+// closed_form (name or null), plus method, where, closed_form_value.
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/catalogue.hpp"
+
+namespace {
+
+using namespace hapstab;
+using namespace hapstab::passivity;
+
+struct BoundOpts {
+  std::string H, T, frac, eta = "0", method = "certified", curve;
+  std::vector<std::string> sets;
+  int delay = 0, digits = 30;
+  long grid = 100000;
+  bool explain = false, json = false, allow_noncausal = false;
+};
+
+void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
+  app.add_option("--H", o.H, "H(z) as an exact expression, e.g. \"K + B*(z-1)/(T*z)\"");
+  app.add_option("--T", o.T, "sample period T > 0 (exact: 0.001 or 1/1000)");
+  app.add_option("--set", o.sets, "parameter NAME=VALUE (repeatable)");
+  app.add_option("--delay", o.delay, "integer delay n >= 0: z^-n");
+  app.add_option("--frac-delay", o.frac, "delay t_d >= 0 in seconds: e^{-j w t_d}");
+  app.add_option("--eta", o.eta, "operator shortage of passivity eta >= 0 (54)");
+  app.add_option("--digits", o.digits, "significant digits of the certified result (10..280)");
+  app.add_option("--method", o.method, "certified (default) | fast (double) | grid (comparison only)");
+  app.add_option("--grid-points", o.grid, "N for --method grid");
+  app.add_flag("--explain", o.explain, "name the closed form of Sec. VI/VII that applies and show it beside the result");
+  app.add_flag("--allow-noncausal", o.allow_noncausal, "evaluate (45) for a non-causal H (FIR form (47) as written)");
+  if (!batch_line) {
+    app.add_flag("--json", o.json, "JSON output");
+    app.add_option("--curve", o.curve, "write 'omega objective' samples (2001 points, 50 digits) to FILE");
+  }
+}
+
+std::string exact_or_outward(const rational& q, int digits, int dir) {
+  std::string s = to_decimal(q, digits);
+  if (parse_rational(s) == q) return s;
+  return decimal_outward(q, digits, dir);
+}
+
+struct Outcome {
+  Bound b;
+  std::optional<catalogue::Match> cf;
+  BoundProblem p;
+};
+
+Outcome compute(const BoundOpts& o) {
+  if (o.H.empty()) throw InputError("--H is required (the virtual environment H(z))");
+  if (o.T.empty()) throw InputError("--T is required (the sample period)");
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = cli::option_rational(o.T, "--T");
+  if (po.T <= 0) throw InputError("--T must be > 0 (got " + o.T + ")");
+  po.parameters = cli::parse_sets(o.sets);
+  if (o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
+  Outcome r;
+  r.p.T = po.T;
+  r.p.delay = o.delay;
+  r.p.eta = cli::option_rational(o.eta, "--eta");
+  if (r.p.eta < 0) throw InputError("--eta must be >= 0 (got " + o.eta + ")");
+  if (!o.frac.empty()) {
+    rational td = cli::option_rational(o.frac, "--frac-delay");
+    if (td < 0) throw InputError("--frac-delay must be >= 0 (got " + o.frac + ")");
+    if (td > 0) r.p.frac_delay = td;
+  }
+  r.p.allow_noncausal = o.allow_noncausal;
+  TransferFunction tf = parse_tf(o.H, po);
+  if (tf.den().is_zero()) throw InputError("--H has a zero denominator");
+  r.p.H = tf.H;
+  Method m = Method::certified;
+  if (o.method == "grid") m = Method::grid;
+  else if (o.method == "fast") m = Method::fast;
+  else if (o.method != "certified") throw InputError("--method must be certified, fast or grid (got " + o.method + ")");
+  r.b = bound(r.p, m, o.digits, o.grid);
+  r.cf = catalogue::match(r.p);
+  return r;
+}
+
+nlohmann::json to_json(const Outcome& r, int digits) {
+  nlohmann::json j;
+  const Bound& b = r.b;
+  j["bound"] = b.infinite ? "inf" : b.value;
+  j["omega"] = b.omega ? nlohmann::json(*b.omega) : nlohmann::json(nullptr);
+  if (b.infinite) j["enclosure"] = {"inf", "inf"};
+  else j["enclosure"] = {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
+  j["status"] = to_string(b.status);
+  j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
+  j["method"] = b.method;
+  j["where"] = b.where;
+  if (r.cf) {
+    if (r.cf->infinite) j["closed_form_value"] = "inf";
+    else if (r.cf->value) j["closed_form_value"] = to_decimal(*r.cf->value, digits);
+    else if (r.cf->approx) j["closed_form_value"] = to_decimal(exact_rational(*r.cf->approx), 16);
+    j["closed_form_tight"] = r.cf->tight;
+    j["closed_form_equation"] = r.cf->equation;
+  }
+  if (!b.note.empty()) j["note"] = b.note;
+  return j;
+}
+
+void print_human(const Outcome& r, const BoundOpts& o) {
+  const Bound& b = r.b;
+  std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.value) << "   [" << to_string(b.status)
+            << "]\n";
+  if (!b.infinite && b.status != Status::exact)
+    std::cout << "  enclosure [" << exact_or_outward(b.lo, o.digits + 5, -1) << ", "
+              << exact_or_outward(b.hi, o.digits + 5, +1) << "]\n";
+  if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";
+  std::cout << "  method: " << b.method << "\n";
+  if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
+  if (!b.infinite) std::cout << "  passive iff b > " << b.value << "\n";
+  if (o.explain) {
+    if (!r.cf) {
+      std::cout << "closed form: none of Sec. VI/VII applies; the generic certified result stands alone\n";
+    } else {
+      std::cout << "closed form: " << r.cf->name << " " << r.cf->equation << "\n  " << r.cf->formula << "\n  = ";
+      if (r.cf->infinite) std::cout << "+inf";
+      else if (r.cf->value) std::cout << to_decimal(*r.cf->value, o.digits);
+      else if (r.cf->approx) std::cout << *r.cf->approx << " (approximation)";
+      std::cout << (r.cf->tight ? "" : "  (upper bound / approximation, not tight)") << "\n";
+      bool agree = false;
+      if (r.cf->infinite) agree = b.infinite;
+      else if (r.cf->value && !b.infinite) agree = r.cf->tight ? (b.lo <= *r.cf->value && *r.cf->value <= b.hi) : (b.lo <= *r.cf->value);
+      else if (r.cf->approx) agree = true;
+      std::cout << "  generic: " << (b.infinite ? "+inf" : b.value) << " -> "
+                << (r.cf->approx ? "compare (approximation)" : (agree ? "agrees" : "DISAGREES")) << "\n";
+    }
+  }
+}
+
+std::vector<std::string> split_shell(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool in = false, any = false;
+  char q = 0;
+  for (char ch : line) {
+    if (q) {
+      if (ch == q) q = 0;
+      else cur += ch;
+    } else if (ch == '\'' || ch == '"') {
+      q = ch;
+      any = true;
+    } else if (ch == ' ' || ch == '\t') {
+      if (in || any) out.push_back(cur);
+      cur.clear();
+      in = any = false;
+    } else {
+      cur += ch;
+      in = true;
+    }
+  }
+  if (q) throw InputError("unterminated quote in batch line");
+  if (in || any) out.push_back(cur);
+  return out;
+}
+
+int run_batch(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError("--batch: cannot open '" + file + "'");
+  std::string line;
+  int worst = 0, lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    nlohmann::json j;
+    try {
+      auto toks = split_shell(line);
+      BoundOpts o;
+      CLI::App app{"batch line"};
+      add_options(app, o, true);
+      app.allow_extras();
+      std::vector<std::string> args(toks.rbegin(), toks.rend());
+      app.parse(args);
+      auto extras = app.remaining();
+      if (o.H.empty() && !extras.empty()) o.H = extras.front();
+      else if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "'");
+      Outcome r = compute(o);
+      j = to_json(r, o.digits);
+    } catch (const CLI::ParseError& e) {
+      j = {{"error", std::string(e.what())}, {"exit", 2}};
+      worst = std::max(worst, 2);
+    } catch (const InputError& e) {
+      j = {{"error", std::string(e.what())}, {"exit", 2}};
+      worst = std::max(worst, 2);
+    } catch (const NumericalError& e) {
+      j = {{"error", std::string(e.what())}, {"exit", 3}};
+      worst = std::max(worst, 3);
+    }
+    j["line"] = lineno;
+    std::cout << j.dump() << std::endl;
+  }
+  return worst;
+}
+
+const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual environment H(z) (paper 001)",
+                         [](CLI::App& app) {
+                           auto o = std::make_shared<BoundOpts>();
+                           auto batch = std::make_shared<std::string>();
+                           add_options(app, *o, false);
+                           app.add_option("--batch", *batch, "FILE with one case per line; prints one JSON line per case");
+                           return [o, batch]() -> int {
+                             if (!batch->empty()) return run_batch(*batch);
+                             Outcome r = compute(*o);
+                             if (!o->curve.empty()) {
+                               std::ofstream f(o->curve);
+                               if (!f) throw InputError("--curve: cannot write '" + o->curve + "'");
+                               const double T = to_real<double>(r.p.T), pi = 3.14159265358979323846;
+                               f << "# omega[rad/s]  Re{T H z^-n e^{-jw t_d}/(1-z)} + eta   (paper 001, (45)/(54))\n";
+                               f << "# b* = " << (r.b.infinite ? "inf" : r.b.value) << " at omega = "
+                                 << (r.b.omega ? *r.b.omega : "-") << "\n";
+                               f.precision(17);
+                               for (int k = 0; k <= 2000; ++k) {
+                                 double w = pi / T * k / 2000.0;
+                                 if (k == 2000) w *= 1 - 1e-12;
+                                 f << w << " " << objective_at(r.p, w) << "\n";
+                               }
+                             }
+                             if (o->json) cli::print_json(to_json(r, o->digits));
+                             else print_human(r, *o);
+                             return cli::exit_ok;
+                           };
+                         }});
+
+}  // namespace

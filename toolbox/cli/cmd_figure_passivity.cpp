@@ -1,0 +1,181 @@
+// cli/cmd_figure_passivity.cpp -- `hapstab passivity-figure NAME --out DIR`: writes the data of
+// the passivity figures of paper 001 for the gnuplot scripts plots/passivity_*.gp.
+//
+//   fig2         Fig. 2 (a)-(e): closed RHP -> shift by b -> disk R1 = 1/(.) -> r(jw) R1 -> unit disk
+//   fig3         Fig. 3: the operator range with a shortage of passivity eta, and its image
+//   bound-curve  Re{T H z^-n/(1-z)} against w with b* and its maximiser (certified) marked
+//   kb-region    (K, B) passivity regions of virtual walls, delays n = 0..3, backward difference vs Tustin
+//   all          every one of them
+// Files: DIR/passivity_fig2.dat, passivity_fig3.dat, passivity_bound_curve.dat (+ _marks.dat),
+// passivity_kb_region.dat. Columns are documented in each file's header.
+#include <complex>
+#include <fstream>
+#include <memory>
+
+#include "cli/command.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/passivity/bound.hpp"
+
+namespace {
+
+using namespace hapstab;
+using namespace hapstab::passivity;
+using cd = std::complex<double>;
+
+std::ofstream open_out(const std::string& dir, const std::string& file) {
+  std::ofstream f(dir + "/" + file);
+  if (!f) throw InputError("--out: cannot write '" + dir + "/" + file + "'");
+  f.precision(12);
+  return f;
+}
+
+// Fig. 2: each panel is a gnuplot data block (index i) of curves separated by blank lines:
+// the boundary of the region, then images of the lines Re Z = x0 and Im Z = y0 of panel (a).
+void fig2(const std::string& dir, double b, double T, double w, const std::string& name, double eta) {
+  auto f = open_out(dir, name);
+  const cd r = T / (std::exp(cd(0, w * T)) - 1.0);  // (44)
+  f << "# " << name << ": the Nyquist-plane maps of paper 001, Fig. " << (eta > 0 ? "3" : "2") << "\n";
+  f << "# b = " << b << " N s/m, T = " << T << " s, w = " << w << " rad/s, eta = " << eta << ", r(jw) = " << r.real()
+    << " + j " << r.imag() << "\n# columns: Re  Im  family(0 boundary, 1 Re-lines, 2 Im-lines)\n";
+  // maps: (a) Z, (b) Z + b, (c) 1/(Z + b), (d) r/(Z + b), (e) 2b/(Z + b) - 1   (with shortage: b -> b - eta is
+  // what remains after the shift, Z ranges over Re Z >= -eta)
+  const double be = b;
+  auto map = [&](int panel, cd Z) -> cd {
+    switch (panel) {
+      case 0: return Z;
+      case 1: return Z + be;
+      case 2: return 1.0 / (Z + be);
+      case 3: return r / (Z + be);
+      default: return 2.0 * (be - eta) / (Z + be) - 1.0;
+    }
+  };
+  const double Y = 4 * b;
+  for (int panel = 0; panel < 5; ++panel) {
+    f << "# panel " << char('a' + panel) << "\n";
+    // boundary Re Z = -eta (imaginary axis when eta = 0), y from -inf..inf through a tan parametrisation
+    for (int k = -400; k <= 400; ++k) {
+      double y = (panel <= 1) ? Y * k / 400.0 : b * std::tan(1.5707 * k / 400.0) * 2;
+      cd p = map(panel, cd(-eta, y));
+      f << p.real() << " " << p.imag() << " 0\n";
+    }
+    f << "\n";
+    for (double x0 : {0.25 * b, b, 3 * b}) {
+      for (int k = -400; k <= 400; ++k) {
+        double y = (panel <= 1) ? Y * k / 400.0 : b * std::tan(1.5707 * k / 400.0) * 2;
+        cd p = map(panel, cd(x0 - eta, y));
+        f << p.real() << " " << p.imag() << " 1\n";
+      }
+      f << "\n";
+    }
+    for (double y0 : {-b, 0.0, b}) {
+      for (int k = 0; k <= 400; ++k) {
+        double x = (panel <= 1) ? 4 * b * k / 400.0 : b * std::tan(1.5707 * k / 400.0) * 2;
+        cd p = map(panel, cd(x - eta, y0));
+        f << p.real() << " " << p.imag() << " 2\n";
+      }
+      f << "\n";
+    }
+    f << "\n";
+  }
+}
+
+void bound_curve(const std::string& dir) {
+  // the delayed wall of (53) with n = 1 and a narrow resonance environment
+  struct Case { std::string label, expr; int n; };
+  std::vector<Case> cases = {{"wall K=1000, B=5, n=1", "1000 + 5*(z-1)/(T*z)", 1},
+                             {"wall K=1000, B=5, n=0", "1000 + 5*(z-1)/(T*z)", 0},
+                             {"Tustin wall K=1000, B=5, n=1", "1000 + 2*5/T*(z-1)/(z+1)", 1}};
+  auto f = open_out(dir, "passivity_bound_curve.dat");
+  auto g = open_out(dir, "passivity_bound_curve_marks.dat");
+  f << "# Re{T H(e^{jwT}) z^-n/(1 - e^{jwT})} (45) against w, T = 1 ms; one data block per case\n# columns: w[rad/s] value[N s/m]\n";
+  g << "# certified b* and its maximiser; columns: w* b* case-index\n";
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = rational(1, 1000);
+  const double T = 1e-3, pi = 3.14159265358979323846;
+  int idx = 0;
+  for (const auto& c : cases) {
+    BoundProblem p;
+    p.H = parse_tf(c.expr, po).H;
+    p.T = po.T;
+    p.delay = c.n;
+    Bound b = bound_certified(p, 20);
+    f << "# " << c.label << "  b* = " << b.value << "\n";
+    for (int k = 0; k <= 1000; ++k) {
+      double w = pi / T * k / 1000.0;
+      f << w << " " << objective_at(p, w) << "\n";
+    }
+    f << "\n\n";
+    double ws = b.omega ? to_real<double>(parse_rational(*b.omega)) : 0.0;
+    g << ws << " " << b.value_double() << " " << idx << "  # " << c.label << " b* = " << b.value << "\n";
+    ++idx;
+  }
+}
+
+void kb_region(const std::string& dir) {
+  // For device damping b = 1 N s/m and T = 1 ms: the largest K with b*(K, B, n) < b, for B in
+  // [0, 2] N s/m, delays n = 0..3, backward-difference wall K + B(z-1)/(Tz) and Tustin wall.
+  auto f = open_out(dir, "passivity_kb_region.dat");
+  const rational T(1, 1000), bdev(1);
+  f << "# (K, B) passivity regions: largest K [N/m] with b*(K,B,n) < b = 1 N s/m, T = 1 ms\n"
+    << "# columns: B[N s/m]  Kmax_bd(n=0) Kmax_bd(n=1) Kmax_bd(n=2) Kmax_bd(n=3)  Kmax_tu(n=0) ... Kmax_tu(n=3)\n";
+  for (int i = 0; i <= 40; ++i) {
+    rational B = rational(i, 20);
+    f << to_real<double>(B);
+    for (int tustin = 0; tustin < 2; ++tustin)
+      for (int n = 0; n <= 3; ++n) {
+        auto bstar = [&](const rational& K) {
+          BoundProblem p;
+          Polynomial<rational> z = Polynomial<rational>::monomial(1);
+          Polynomial<rational> one(rational(1));
+          if (!tustin) p.H = RationalFunction<rational>(z * K + (z - one) * (B / T), z);
+          else p.H = RationalFunction<rational>((z + one) * K + (z - one) * (2 * B / T), z + one);
+          p.T = T;
+          p.delay = n;
+          Bound r = bound_certified(p, 10);
+          return r.infinite ? 1e300 : r.value_double();
+        };
+        double lo = 0, hi = 1e6;
+        if (bstar(rational(0)) >= 1.0) { f << " NaN"; continue; }
+        if (bstar(exact_rational(hi)) < 1.0) { f << " " << hi; continue; }
+        for (int it = 0; it < 40; ++it) {
+          double mid = 0.5 * (lo + hi);
+          if (bstar(exact_rational(mid)) < to_real<double>(bdev)) lo = mid; else hi = mid;
+        }
+        f << " " << lo;
+      }
+    f << "\n";
+  }
+}
+
+const cli::Register reg({"passivity-figure", "Write the data of the passivity figures of paper 001 (Figs. 2, 3, bound curve, (K,B) regions)",
+                         [](CLI::App& app) {
+                           auto name = std::make_shared<std::string>("all");
+                           auto out = std::make_shared<std::string>(".");
+                           auto b = std::make_shared<double>(1.0);
+                           auto T = std::make_shared<double>(1e-3);
+                           auto w = std::make_shared<double>(1000.0);
+                           auto eta = std::make_shared<double>(0.3);
+                           app.add_option("name", *name, "fig2 | fig3 | bound-curve | kb-region | all");
+                           app.add_option("--out", *out, "directory for the .dat files");
+                           app.add_option("--b", *b, "device damping b [N s/m] for fig2/fig3");
+                           app.add_option("--T", *T, "sample period [s] for fig2/fig3");
+                           app.add_option("--omega", *w, "frequency [rad/s] for the r(jw) panel");
+                           app.add_option("--eta", *eta, "operator shortage of passivity for fig3");
+                           return [=]() -> int {
+                             if (*b <= 0) throw InputError("--b must be > 0");
+                             if (*T <= 0) throw InputError("--T must be > 0");
+                             if (*eta < 0) throw InputError("--eta must be >= 0");
+                             bool all = *name == "all", any = false;
+                             if (all || *name == "fig2") { fig2(*out, *b, *T, *w, "passivity_fig2.dat", 0.0); any = true; }
+                             if (all || *name == "fig3") { fig2(*out, *b, *T, *w, "passivity_fig3.dat", *eta); any = true; }
+                             if (all || *name == "bound-curve") { bound_curve(*out); any = true; }
+                             if (all || *name == "kb-region") { kb_region(*out); any = true; }
+                             if (!any) throw InputError("unknown figure '" + *name + "' (fig2, fig3, bound-curve, kb-region, all)");
+                             return cli::exit_ok;
+                           };
+                         }});
+
+}  // namespace
