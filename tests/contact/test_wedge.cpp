@@ -253,3 +253,29 @@ TEST(Wedge, BadInput) {
   po.variable = 's';
   EXPECT_THROW(analyze_contact(parse_tf("1/(s+1)", po), 10), InputError);  // continuous
 }
+
+TEST(Wedge, FastVerdictAgreesWithSturm) {
+  // wedge_holds (interval branch and bound, Sturm fallback) against the pure Sturm verdict of
+  // analyze_contact, for every case scaled below, at and above its k*_wedge. At exactly k* the
+  // margin touches 0: the fast path cannot decide and Sturm must return "fails" (strict).
+  for (const char* s : kCases) {
+    SCOPED_TRACE(s);
+    TransferFunction H = H_of(s);
+    ContactAnalysis a = analyze_contact(H, 20);
+    EXPECT_EQ(wedge_holds(H), a.wedge.holds);
+    if (a.wedge.gain_infinite) continue;
+    for (const rational f : {rational(1, 2), rational(9, 10), rational(999, 1000), rational(1001, 1000), rational(2)}) {
+      TransferFunction Hk = H;
+      const rational k = f * a.wedge.max_gain.enclosure->lo;
+      Hk.H = H.H * RatFun(k);
+      const bool fast = wedge_holds(Hk);
+      EXPECT_EQ(fast, f < 1) << "scale " << to_decimal(f, 6);
+      // the Sturm path alone (max_positive on the rational branches) agrees
+      WedgeBranches b = wedge_branches(Hk);
+      EXPECT_EQ(fast, max_positive({b.re + b.im_over_t + RatFun(1), b.re - b.im_over_t + RatFun(1)}, true, false));
+    }
+  }
+  TransferFunction H = H_of("1/z");  // k* = 1: the margin of 1/z is exactly 0 at theta = pi
+  EXPECT_FALSE(wedge_holds(H));
+  EXPECT_TRUE(wedge_holds(H_of("0.999/z")));
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <deque>
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/poly/sturm.hpp"
@@ -104,6 +105,102 @@ Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const rational& lo, 
   return r;
 }
 
+// ---- certified fast path: outward-rounded double intervals, branch and bound -------------
+// Every operation is done in round-to-nearest and then widened by one ulp on each side, so the
+// result encloses the exact one (a rational coefficient is rounded correctly, error <= 1/2 ulp).
+struct DI {
+  double lo, hi;
+};
+inline DI widen(double lo, double hi) { return {std::nextafter(lo, -INFINITY), std::nextafter(hi, INFINITY)}; }
+inline DI di_add(DI a, DI b) { return widen(a.lo + b.lo, a.hi + b.hi); }
+inline DI di_mul(DI a, DI b) {
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return widen(std::min(std::min(p1, p2), std::min(p3, p4)), std::max(std::max(p1, p2), std::max(p3, p4)));
+}
+inline bool di_div(DI a, DI b, DI& r) {  // false when b contains 0
+  if (!(b.lo > 0 || b.hi < 0)) return false;
+  const double p1 = a.lo / b.lo, p2 = a.lo / b.hi, p3 = a.hi / b.lo, p4 = a.hi / b.hi;
+  r = widen(std::min(std::min(p1, p2), std::min(p3, p4)), std::max(std::max(p1, p2), std::max(p3, p4)));
+  return std::isfinite(r.lo) && std::isfinite(r.hi);
+}
+std::vector<DI> di_coeffs(const Poly& p, bool reversed, int n) {
+  std::vector<DI> c(static_cast<size_t>(n) + 1, DI{0, 0});
+  for (int i = 0; i <= p.degree(); ++i) {
+    const double d = to_real<double>(p.coeff(i));
+    c[reversed ? n - i : i] = widen(d, d);
+  }
+  return c;
+}
+DI di_horner(const std::vector<DI>& c, DI x) {
+  DI r = c.back();
+  for (size_t i = c.size() - 1; i-- > 0;) r = di_add(di_mul(r, x), c[i]);
+  return r;
+}
+struct FastFun {
+  std::vector<DI> num, den, rnum, rden;
+  int shift = 0;  // deg den - deg num (>= 0 for a bounded function)
+  explicit FastFun(const RatFun& f) : FastFun(f.num(), f.den()) {}
+  FastFun(const Poly& n, const Poly& d) {
+    const int dn = std::max(n.degree(), 0), dd = d.degree();
+    num = di_coeffs(n, false, dn);
+    den = di_coeffs(d, false, dd);
+    rnum = di_coeffs(n, true, dn);
+    rden = di_coeffs(d, true, dd);
+    shift = dd - dn;
+  }
+  // f on u in x (domain 0) or on u = 1/v, v in x (domain 1): f = v^shift rnum(v)/rden(v)
+  bool eval(int domain, DI x, DI& r) const {
+    if (domain == 0) return di_div(di_horner(num, x), di_horner(den, x), r);
+    if (!di_div(di_horner(rnum, x), di_horner(rden, x), r)) return false;
+    for (int k = 0; k < shift; ++k) r = di_mul(r, x);
+    return true;
+  }
+};
+
+// nullopt: undecided within the box budget (then Sturm decides).
+std::optional<bool> fast_boxes(const std::vector<FastFun>& ff);
+std::optional<bool> fast_max_positive(const std::vector<RatFun>& fs) {
+  for (const auto& f : fs)
+    if (f.num().is_zero() || f.num().degree() > f.den().degree()) return std::nullopt;
+  std::vector<FastFun> ff;
+  for (const auto& f : fs) ff.emplace_back(f);
+  return fast_boxes(ff);
+}
+std::optional<bool> fast_boxes(const std::vector<FastFun>& ff) {
+  struct Box {
+    int domain;
+    double lo, hi;
+  };
+  // breadth first (a queue), so a box where every branch is negative is met at a coarse level
+  std::deque<Box> stack{{0, 0.0, 1.0}, {1, 0.0, 1.0}};
+  int budget = 3000;
+  while (!stack.empty()) {
+    const Box b = stack.front();
+    stack.pop_front();
+    bool positive = false, all_negative = true, bounded = true;
+    for (const auto& f : ff) {
+      DI r;
+      if (!f.eval(b.domain, DI{b.lo, b.hi}, r)) {
+        bounded = false;
+        all_negative = false;
+        continue;
+      }
+      if (r.lo > 0) {
+        positive = true;
+        break;
+      }
+      if (!(r.hi < 0)) all_negative = false;
+    }
+    if (positive) continue;
+    if (bounded && all_negative) return false;  // every branch < 0 on the whole box
+    if (--budget <= 0 || b.hi - b.lo < 1e-10) return std::nullopt;
+    const double m = 0.5 * (b.lo + b.hi);
+    stack.push_back({b.domain, b.lo, m});
+    stack.push_back({b.domain, m, b.hi});
+  }
+  return true;
+}
+
 }  // namespace
 
 WedgeBranches wedge_branches(const TransferFunction& H) {
@@ -114,10 +211,31 @@ WedgeBranches wedge_branches(const TransferFunction& H) {
   return {rf_even_to_u(ri.re), rf_even_to_u(J)};
 }
 
+bool wedge_holds(const TransferFunction& H) {
+  if (!H.is_discrete() || !H.is_proper()) throw InputError("wedge_holds: H must be a causal H(z)");
+  // f+- + 1 = (Re(N~ conj D~) +- Im(N~ conj D~)/t + |D~|^2) / |D~|^2: one common denominator,
+  // no gcd needed; Im(N~ conj D~) is odd in t, so the division by t is exact.
+  const int n = std::max(H.num().degree(), H.den().degree());
+  const ComplexPolynomial Nt = unit_circle_polynomial(H.num(), n), Dt = unit_circle_polynomial(H.den(), n);
+  const ComplexPolynomial ncd = Nt * conj(Dt);
+  const Poly d = norm(Dt);
+  if (ncd.im.coeff(0) != 0) throw NumericalError("wedge_holds: Im H is not odd in t");
+  Poly jn = ncd.im.is_zero() ? Poly() : Poly(std::vector<rational>(ncd.im.coeffs().begin() + 1, ncd.im.coeffs().end()));
+  const Poly pu = even_to_u(ncd.re + jn + d), mu = even_to_u(ncd.re - jn + d), du = even_to_u(d);
+  if (pu.degree() <= du.degree() && mu.degree() <= du.degree() && !pu.is_zero() && !mu.is_zero()) {
+    if (auto v = fast_boxes({FastFun(pu, du), FastFun(mu, du)})) return *v;
+  }
+  return max_positive({RatFun(pu, du), RatFun(mu, du)}, true);
+}
+
 double theta_of_u(const rational& u) { return 2.0 * std::atan(std::sqrt(static_cast<double>(mpfloat<30>(u)))); }
 
-bool max_positive(const std::vector<RatFun>& fs, bool strict) {
+bool max_positive(const std::vector<RatFun>& fs, bool strict, bool fast) {
   if (fs.empty()) throw InputError("max_positive: no functions");
+  // certified fast path: positive on every box (the denominators bounded away from 0 there
+  // too), or every branch negative on some box; near-touching cases fall through to Sturm
+  if (fast)
+    if (auto v = fast_max_positive(fs)) return *v;
   for (const auto& f : fs) require_no_pole(f);
   auto fails = [&](const std::vector<int>& s) {
     for (int x : s)

@@ -42,9 +42,17 @@ struct WedgeBranches {
 };
 WedgeBranches wedge_branches(const TransferFunction& H);
 
+/// The exact verdict of (25) alone: w(theta) > 0 for every theta in [0, pi]. First a certified
+/// fast path (outward-rounded double intervals, branch and bound over u in [0, 1] and 1/u in
+/// [0, 1]: every box proven positive, or a box where both branches are negative); when that
+/// is undecided within its budget (margin touching 0), Sturm decides. H must have no pole on
+/// the unit circle.
+bool wedge_holds(const TransferFunction& H);
+
 /// Exact: max_i f_i(u) > 0 (strict) or >= 0 (non-strict) for every u in [0, inf]. The f_i must
 /// have no pole on [0, inf] (InputError otherwise).
-bool max_positive(const std::vector<RatFun>& fs, bool strict);
+/// `fast` = false skips the interval fast path (pure Sturm; for cross-checks).
+bool max_positive(const std::vector<RatFun>& fs, bool strict, bool fast = true);
 
 /// Certified enclosure of min over u in [0, inf] of max_i f_i(u), and where it is attained.
 struct MinOfMax {
