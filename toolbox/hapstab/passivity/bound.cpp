@@ -209,18 +209,17 @@ bool pole_goes_to_plus_inf(const P& A, const P& B, RootInterval r) {
   P q = square_free_part(A * B);
   P sb = square_free_part(B);
   rational lo = r.lo, hi = r.hi;
-  if (r.is_exact()) {
+  for (int k = 0; k < 400 && !r.is_exact() && count_real_roots(q, lo, hi) != 1; ++k) {
+    r = refine_root(sb, r, (hi - lo) / 4);
+    lo = r.lo;
+    hi = r.hi;
+  }
+  if (r.is_exact()) {  // a rational pole: a symmetric neighbourhood free of other roots of A B
     rational dl = rational(1, 1024);
     for (int k = 0; k < 400; ++k, dl /= 2) {
       lo = r.lo - dl;
       hi = r.lo + dl;
       if (q(lo) != 0 && q(hi) != 0 && count_real_roots(q, lo, hi) == 1) break;
-    }
-  } else {
-    for (int k = 0; k < 400 && count_real_roots(q, lo, hi) != 1; ++k) {
-      r = refine_root(sb, r, (hi - lo) / 4);
-      lo = r.lo;
-      hi = r.hi;
     }
   }
   bool plus = false;
@@ -356,7 +355,8 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
         out.infinite = true;
         out.status = Status::exact;
         out.value = "inf";
-        Candidate c{0, 0, r.lo, r.hi, r.is_exact(), r.is_exact() && r.lo == 1, r.is_exact() && r.lo == -1};
+        RootInterval rr = r.is_exact() ? r : refine_root(square_free_part(B), r, pow10(-40));
+        Candidate c{0, 0, rr.lo, rr.hi, rr.is_exact(), rr.is_exact() && rr.lo == 1, rr.is_exact() && rr.lo == -1};
         out.where = c.endpoint_zero ? "pole at z = 1 (w = 0) not cancelled" :
                     c.endpoint_pi ? "pole at z = -1 (w = pi/T): Re -> +inf" : "pole on the unit circle: Re -> +inf";
         omega_of<D>(c, pb.T, std::min(digits, 17), out);

@@ -1,0 +1,147 @@
+// Tests of `hapstab bound`: JSON output against an independent 100-digit reference (direct complex
+// evaluation, dense sampling and golden section -- tests/passivity/reference.hpp), the enclosure
+// containing it, --batch, --explain, and bad inputs refused with exit code 2.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "passivity/reference.hpp"
+
+using namespace hapstab;
+using testref::R;
+
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out;
+};
+CliRun run(const std::string& args) {
+  std::string cmd = std::string(HAPSTAB_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+  int st = pclose(p);
+  return {WEXITSTATUS(st), out};
+}
+
+R ref_of(const std::string& expr, const std::string& T, int n, std::map<std::string, rational> par = {},
+         std::vector<double> res = {}) {
+  ParseOptions o;
+  o.variable = 'z';
+  o.T = parse_rational(T);
+  o.parameters = std::move(par);
+  auto H = parse_tf(expr, o).H;
+  return testref::reference(H, o.T, n, 0, res).value;
+}
+
+/// 30 requested digits: |bound - ref| <= 1e-28 |ref| (the printed value is rounded to 30 significant
+/// digits, 0.5e-29 relative, and the reference is good to ~40 digits), and lo <= ref <= hi up to
+/// the reference error 1e-38 relative.
+void check(const std::string& args, const R& ref, const std::string& expect_cf = "") {
+  CliRun r = run("bound --json --digits 30 " + args);
+  ASSERT_EQ(r.code, 0) << args << "\n" << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  R v = R(parse_rational(j["bound"].get<std::string>()));
+  R lo = R(parse_rational(j["enclosure"][0].get<std::string>()));
+  R hi = R(parse_rational(j["enclosure"][1].get<std::string>()));
+  R scale = std::max(R(1e-300), abs(ref));
+  EXPECT_LE(abs(v - ref), R("1e-28") * scale) << args << " " << j.dump() << " ref " << ref.str(35);
+  EXPECT_LE(lo, ref + R("1e-38") * scale) << args;
+  EXPECT_GE(hi, ref - R("1e-38") * scale) << args;
+  if (!expect_cf.empty()) EXPECT_EQ(j["closed_form"], expect_cf) << args;
+}
+
+}  // namespace
+
+TEST(CmdBound, CatalogueAgreesWithReference) {
+  std::map<std::string, rational> KB{{"K", rational(1000)}, {"B", rational(5)}};
+  check("--H 'K + B*(z-1)/(T*z)' --T 1/1000 --set K=1000 --set B=5", ref_of("K + B*(z-1)/(T*z)", "1/1000", 0, KB),
+        "virtual wall (backward difference)");
+  check("--H 'K + B*(z-1)/(T*z)' --T 1/1000 --set K=1000 --set B=5 --delay 1",
+        ref_of("K + B*(z-1)/(T*z)", "1/1000", 1, KB), "virtual wall with delay n = 1");
+  check("--H 'K + B*(z-1)/(T*z)' --T 1/1000 --set K=20000 --set B=5 --delay 1",
+        ref_of("K + B*(z-1)/(T*z)", "1/1000", 1, {{"K", 20000}, {"B", 5}}), "virtual wall with delay n = 1");
+  check("--H 'K + B*(z-1)/(T*z)' --T 1/1000 --set K=1000 --set B=5 --delay 3", ref_of("K + B*(z-1)/(T*z)", "1/1000", 3, KB));
+  check("--H '(z-1)/(z+0.5)' --T 0.001", ref_of("(z-1)/(z+0.5)", "0.001", 0), "IIR (z-1)/(z+a)");
+  check("--H '(1-z)/(z+0.5)' --T 0.001", ref_of("(1-z)/(z+0.5)", "0.001", 0), "IIR (1-z)/(z+a)");
+  check("--H 'K + 2*B/T*(z-1)/(z+1)' --T 1/1000 --set K=1000 --set B=5 --delay 1",
+        ref_of("K + 2*B/T*(z-1)/(z+1)", "1/1000", 1, KB), "Tustin wall with delay n = 1");
+  check("--H '((z-1)/(T*z))^3' --T 1/100", ref_of("((z-1)/(T*z))^3", "1/100", 0));
+  check("--H '(z-1)*(1+z^-1+z^-2+z^-3)' --T 1/1000 --delay 1", ref_of("(z-1)*(1+z^-1+z^-2+z^-3)", "1/1000", 1));
+}
+
+TEST(CmdBound, RandomAndResonances) {
+  // narrow resonance, pole radius 0.9999 at angle acos(0.8)
+  check("--H '(z-1)/(z^2-2*0.9999*0.8*z+0.9999^2)' --T 1/1000",
+        ref_of("(z-1)/(z^2-2*0.9999*0.8*z+0.9999^2)", "1/1000", 0, {}, {std::acos(0.8)}));
+  check("--H '(z^2+0.3)/((z^2-2*0.99995*0.3*z+0.99995^2)*(z^2-0.5*z+0.3)*(z+0.7))' --T 1/1000 --delay 2",
+        ref_of("(z^2+0.3)/((z^2-2*0.99995*0.3*z+0.99995^2)*(z^2-0.5*z+0.3)*(z+0.7))", "1/1000", 2, {}, {std::acos(0.3)}));
+  check("--H '(3*z^6-z^5+2*z^3-z+1)/((z^2-1.2*z+0.5)*(z^2+0.3*z+0.9)*(z^2-0.1*z+0.05))' --T 1/1000",
+        ref_of("(3*z^6-z^5+2*z^3-z+1)/((z^2-1.2*z+0.5)*(z^2+0.3*z+0.9)*(z^2-0.1*z+0.05))", "1/1000", 0));
+}
+
+TEST(CmdBound, InfiniteAndPolesOnCircle) {
+  CliRun r = run("bound --json --H '1/(z-1)' --T 1/1000");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["bound"], "inf");
+  EXPECT_EQ(j["status"], "exact");
+  CliRun t = run("bound --json --H '1000 + 2*5/T*(z-1)/(z+1)' --T 1/1000 --frac-delay 0.0005");
+  ASSERT_EQ(t.code, 0) << t.out;
+  EXPECT_EQ(nlohmann::json::parse(t.out)["bound"], "inf");
+  CliRun u = run("bound --json --H '1000 + 2*5/T*(z-1)/(z+1)' --T 1/1000");
+  ASSERT_EQ(u.code, 0) << u.out;
+  auto ju = nlohmann::json::parse(u.out);
+  EXPECT_EQ(ju["bound"], "-4.5");
+  EXPECT_EQ(ju["status"], "exact");
+  EXPECT_EQ(ju["closed_form"], "Tustin wall");
+}
+
+TEST(CmdBound, BadInputExit2) {
+  for (const char* a : {"--H 'z/(z-2)' --T 1", "--H 'z^2/(z-0.5)' --T 1", "--H '1/(z-z)' --T 1", "--H '1' --T 0",
+                        "--H '1' --T -1", "--H '1' --T 1 --eta -1", "--H '1' --T 1 --delay -1", "--H '' --T 1",
+                        "--H '1/((z-2)*(z-1/2))' --T 1", "--H '1+' --T 1"}) {
+    CliRun r = run(std::string("bound --json ") + a);
+    EXPECT_EQ(r.code, 2) << a << "\n" << r.out;
+    EXPECT_FALSE(r.out.empty()) << a;
+  }
+  CliRun r = run("bound --H 'z/(z-2)' --T 1");
+  EXPECT_NE(r.out.find("unstable"), std::string::npos) << r.out;
+  CliRun c = run("bound --H 'z^2/(z-0.5)' --T 1");
+  EXPECT_NE(c.out.find("not causal"), std::string::npos) << c.out;
+  CliRun ok = run("bound --json --H '1/(z^2+1)' --T 1");  // poles on the circle are not an error
+  EXPECT_EQ(ok.code, 0) << ok.out;
+}
+
+TEST(CmdBound, BatchAndExplain) {
+  std::string file = std::string(::testing::TempDir()) + "/bound_batch.txt";
+  {
+    std::ofstream f(file);
+    f << "# a comment\n";
+    f << "'K + B*(z-1)/(T*z)' --T 1/1000 --set K=1000 --set B=5\n";
+    f << "--H '(z-1)/(z+0.5)' --T 0.001\n";
+    f << "--H 'z/(z-2)' --T 1\n";
+  }
+  CliRun r = run("bound --batch " + file);
+  EXPECT_EQ(r.code, 2);  // the worst line
+  std::istringstream in(r.out);
+  std::string line;
+  std::vector<nlohmann::json> js;
+  while (std::getline(in, line))
+    if (!line.empty()) js.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(js.size(), 3u);
+  EXPECT_EQ(js[0]["bound"], "5.5");
+  EXPECT_EQ(js[1]["bound"], "0.002");
+  EXPECT_TRUE(js[2].contains("error"));
+  CliRun e = run("bound --explain --H 'K + B*(z-1)/(T*z)' --T 1/1000 --set K=1000 --set B=5 --delay 1");
+  EXPECT_EQ(e.code, 0);
+  EXPECT_NE(e.out.find("(53)"), std::string::npos) << e.out;
+  EXPECT_NE(e.out.find("agrees"), std::string::npos) << e.out;
+}
