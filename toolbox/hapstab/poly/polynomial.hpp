@@ -14,6 +14,7 @@
 #pragma once
 
 #include <complex>
+#include <initializer_list>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -66,6 +67,9 @@ class Polynomial {
   template <class A, std::enable_if_t<std::is_arithmetic_v<A> && !std::is_same_v<A, F>, int> = 0>
   Polynomial(A c) : Polynomial(F(c)) {}  // NOLINT: Polynomial<rational> p = 1;
   explicit Polynomial(std::vector<F> ascending) : c_(std::move(ascending)) { trim(); }
+  /// Polynomial<rational>({a0, a1, ...}) (ascending). Without it the braced list would be
+  /// ambiguous for F = rational, which is itself constructible from two numbers (num, den).
+  Polynomial(std::initializer_list<F> ascending) : c_(ascending) { trim(); }
 
   /// c x^k
   static Polynomial monomial(int k, F c = F(1)) {
