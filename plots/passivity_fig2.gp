@@ -1,0 +1,43 @@
+# plots/passivity_fig2.gp -- paper 001, Fig. 2 (a)-(e): the chain of Nyquist-plane maps that turns
+# the range of a passive operator Z_O(jw) (closed right half-plane) into the closed unit disk:
+# (a) Z_O, (b) Z_O + b, (c) R1 = 1/(Z_O + b), (d) r(jw) R1 with r = T/(e^{jwT} - 1) (44),
+# (e) -1 + (2b/r) G* = 2b/(Z_O + b) - 1. Data: hapstab passivity-figure fig2 --out DATADIR.
+# Curves: the region boundary (Re Z_O = 0), images of the lines Re Z_O = b/4, b, 3b and Im Z_O = -b, 0, b.
+name = 'passivity_fig2'
+if (!exists("plotdir")) plotdir = 'plots'
+if (!exists("datafile")) datafile = 'passivity_fig2.dat'
+load plotdir.'/common.gp'
+f = datadir.'/'.datafile
+unset key
+set multiplot layout 2,3 title (tex ? 'Nyquist-plane maps (Fig.~2): $b = 1$\,N\,s/m, $T = 1$\,ms, $\omega = 1000$\,rad/s' : 'Nyquist-plane maps of Fig. 2 (b = 1 N s/m, T = 1 ms, {/Symbol w} = 1000 rad/s)')
+set size ratio -1
+set xzeroaxis ls 8
+set yzeroaxis ls 8
+ttl(i) = i==0 ? '(a) Z_O(j{/Symbol w}): closed RHP' : i==1 ? '(b) Z_O + b' : i==2 ? '(c) R_1 = 1/(Z_O + b)' : i==3 ? '(d) r(j{/Symbol w}) R_1' : '(e) 2b/(Z_O+b) - 1: unit disk'
+tttl(i) = i==0 ? '(a) $Z_O(j\omega)$' : i==1 ? '(b) $Z_O + b$' : i==2 ? '(c) $R_1 = 1/(Z_O+b)$' : i==3 ? '(d) $r(j\omega) R_1$' : '(e) unit disk'
+unitx(i) = i<=1 ? 'Re [N s/m]' : i==2 ? 'Re [m/(N s)]' : i==3 ? 'Re [10^{-3} m/(N s)]' : 'Re'
+unity(i) = i<=1 ? 'Im [N s/m]' : i==2 ? 'Im [m/(N s)]' : i==3 ? 'Im [10^{-3} m/(N s)]' : 'Im'
+sc(i) = i==3 ? 1e3 : 1
+do for [i=0:4] {
+  set title (tex ? tttl(i) : ttl(i))
+  set xlabel unitx(i)
+  set ylabel unity(i)
+  set xtics autofreq; set ytics autofreq
+  if (i <= 1) { set xrange [-1.5:5]; set yrange [-3.5:3.5] }
+  if (i == 2) { set autoscale xy; set xtics 0.5; set ytics 0.5 }
+  if (i == 3) { set autoscale xy; set xtics 0.5; set ytics 0.5 }
+  if (i == 4) { set xrange [-1.3:1.3]; set yrange [-1.3:1.3] }
+  s = sc(i)
+  plot f index i using ($1*s):($3==1 ? $2*s : 1/0) with lines ls 2 lw 1, \
+       f index i using ($1*s):($3==2 ? $2*s : 1/0) with lines ls 3 lw 1, \
+       f index i using ($1*s):($3==0 ? $2*s : 1/0) with lines ls 1 lw 3
+}
+# legend panel
+set title ''
+unset border; unset tics; unset xlabel; unset ylabel; unset grid; unset xzeroaxis; unset yzeroaxis
+set key center center box
+set xrange [0:1]; set yrange [0:1]
+plot 2 ls 1 lw 3 title (tex ? 'boundary $\mathrm{Re}\,Z_O = 0$' : 'boundary Re Z_O = 0'), \
+     2 ls 2 lw 1 title (tex ? '$\mathrm{Re}\,Z_O = b/4,\ b,\ 3b$' : 'Re Z_O = b/4, b, 3b'), \
+     2 ls 3 lw 1 title (tex ? '$\mathrm{Im}\,Z_O = -b,\ 0,\ b$' : 'Im Z_O = -b, 0, b')
+unset multiplot
