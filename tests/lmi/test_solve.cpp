@@ -71,7 +71,7 @@ TEST(LmiSolve, EqualitiesAndInequalitiesBothBackends) {
     prog.AddLinearInequality("x1 <= 0.3", -(e1 * Expr(X) * e2), MatrixXd::Constant(1, 1, -0.3));
     Options o;
     o.backend = b;
-    o.scale = false;  // keep t in original units for this known answer
+    o.scale = Scaling::never;  // keep t in original units for this known answer
     Result r = Solve(prog, o);
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_NEAR(r.margin, 0.3, 1e-6) << to_string(b);
@@ -195,7 +195,8 @@ TEST(LmiModel, StructuredVariables) {
 }
 
 // Badly scaled data: A has entries from 1e-7 to 1e6 (eigenvalues 0.4 +- 0.3i, |.| = 0.5).
-// The equilibration (powers of two, exact) makes both back-ends find and certify P.
+// Scaling::automatic (raw data, then an equilibrated retry) must make both back-ends find and
+// certify P; forcing equilibration may leave the verdict undecided but never infeasible.
 TEST(LmiSolve, BadlyScaledFeasible) {
   MatrixXd A = M2(0.5, 1e6, -1e-7, 0.3);
   for (Backend b : kBoth) {
@@ -204,6 +205,10 @@ TEST(LmiSolve, BadlyScaledFeasible) {
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail << " margin " << r.margin << " its "
                                 << r.iterations << " err4 " << r.dimacs[3] << " err5 " << r.dimacs[4];
     EXPECT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
+    Options eq;
+    eq.backend = b;
+    eq.scale = Scaling::always;
+    EXPECT_NE(Solve(prog, eq).verdict, Feasibility::infeasible) << to_string(b);
   }
 }
 

@@ -73,6 +73,16 @@ Expr Expr::scaled(Expr a, double s) {
   for (auto& [k, m] : a.terms_) m *= s;
   return a;
 }
+Expr Expr::scalar_times(const MatrixXd& M, const Expr& s) {
+  if (s.rows_ != 1 || s.cols_ != 1) throw InputError("lmi expression: kron(M, s) needs a 1x1 s");
+  Expr r;
+  r.rows_ = static_cast<int>(M.rows());
+  r.cols_ = static_cast<int>(M.cols());
+  r.c0_ = s.c0_(0, 0) * M;
+  for (const auto& [k, m] : s.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(m.coeff(0, 0) * M)));
+  return r;
+}
+
 Expr Expr::left(const MatrixXd& L, const Expr& a) {
   if (L.cols() != a.rows_)
     throw InputError("lmi expression: cannot multiply a " + dims(static_cast<int>(L.rows()), static_cast<int>(L.cols())) +

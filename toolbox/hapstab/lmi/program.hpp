@@ -69,9 +69,12 @@ class Expr {
   friend Expr operator*(double s, Expr a) { return scaled(std::move(a), s); }
   friend Expr operator*(const MatrixXd& L, const Expr& a) { return left(L, a); }
   friend Expr operator*(const Expr& a, const MatrixXd& R) { return right(a, R); }
+  /// M * s for a 1x1 expression s (a scalar variable times a constant matrix).
+  friend Expr kron(const MatrixXd& M, const Expr& s) { return scalar_times(M, s); }
 
  private:
   static Expr scaled(Expr a, double s);
+  static Expr scalar_times(const MatrixXd& M, const Expr& s);
   static Expr left(const MatrixXd& L, const Expr& a);
   static Expr right(const Expr& a, const MatrixXd& R);
   friend Expr blocks(const std::vector<std::vector<Expr>>&, const std::string&);

@@ -200,7 +200,7 @@ double pow2_near(double v) {  // 2^round(log2 v), v > 0
 
 }  // namespace
 
-Result Solve(const Program& prog, const Options& opt) {
+Result solve_once(const Program& prog, const Options& opt, bool scale) {
   Result res;
   res.solver = to_string(opt.backend);
   const int n = prog.num_scalars();
@@ -287,7 +287,7 @@ Result Solve(const Program& prog, const Options& opt) {
   std::vector<Eigen::VectorXd> D(red.size());
   for (size_t j = 0; j < red.size(); ++j) D[j] = Eigen::VectorXd::Ones(red[j].G0.rows());
   Eigen::VectorXd s = Eigen::VectorXd::Ones(af.nz);
-  if (opt.scale) {
+  if (scale) {
     for (int sweep = 0; sweep < 20; ++sweep) {
       for (size_t j = 0; j < red.size(); ++j) {
         const auto nb = red[j].G0.rows();
@@ -371,11 +371,28 @@ Result Solve(const Program& prog, const Options& opt) {
     res.status = SolveStatus::numerical_trouble;
     res.detail += "; the back-end's point violates the LMIs (DIMACS err4 = " + std::to_string(br.dimacs[3]) + ")";
   }
+  // The point's own margin: smallest eigenvalue of the strict posed blocks at y (equilibrated,
+  // without the t term and the strict_threshold shift). Solver tolerances (~1e-8) must not turn
+  // an infeasible strict LMI into "feasible".
+  double actual = INFINITY;
+  for (size_t j = 0; j < red.size(); ++j) {
+    if (!blocks[static_cast<size_t>(posed[j])].strict) continue;
+    const auto Dj = D[j].asDiagonal();
+    Eigen::MatrixXd S = Dj * red[j].G0 * Dj;
+    for (const auto& [k, m] : red[j].G)
+      if (zmap[static_cast<size_t>(k)] >= 0) S += z(k) * (Dj * m * Dj);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S, Eigen::EigenvaluesOnly);
+    actual = std::min(actual, es.eigenvalues()(0));
+  }
+  const bool minimize = prog.objective_kind() == ObjectiveKind::minimize;
   bool try_strict_farkas = false;
   if (br.status == SolveStatus::infeasible) res.verdict = Feasibility::infeasible;
   else if (res.status == SolveStatus::optimal) {
-    if (!use_t) res.verdict = Feasibility::feasible;
-    else if (res.margin > opt.strict_threshold) res.verdict = Feasibility::feasible;
+    if (!use_t && !(minimize && actual <= 0.5 * opt.strict_threshold)) res.verdict = Feasibility::feasible;
+    else if (!use_t) {
+      res.verdict = Feasibility::undecided;
+      res.detail += "; the strict LMIs hold only with margin " + std::to_string(actual) + " at the solver's point";
+    } else if (std::min(res.margin, actual) > opt.strict_threshold) res.verdict = Feasibility::feasible;
     else if (res.margin < -opt.strict_threshold) res.verdict = Feasibility::infeasible;
     else {
       res.verdict = Feasibility::undecided;
@@ -562,6 +579,28 @@ Result Solve(const Program& prog, const Options& opt) {
     res.detail += "; no rounding of the multipliers passed the exact Farkas check";
   }
   return res;
+}
+
+Result Solve(const Program& prog, const Options& opt) {
+  if (opt.scale == Scaling::never) return solve_once(prog, opt, false);
+  if (opt.scale == Scaling::always) {
+    Result r = solve_once(prog, opt, true);
+    r.detail += " [equilibrated]";
+    return r;
+  }
+  Result raw = solve_once(prog, opt, false);
+  if (raw.verdict != Feasibility::undecided && raw.status != SolveStatus::numerical_trouble &&
+      raw.certificate != Certificate::rounding_failed) {
+    raw.detail += " [data as given]";
+    return raw;
+  }
+  Result eq = solve_once(prog, opt, true);
+  if (eq.verdict != Feasibility::undecided && eq.certificate != Certificate::rounding_failed) {
+    eq.detail += " [equilibrated; as given: " + std::string(to_string(raw.verdict)) + "]";
+    return eq;
+  }
+  raw.detail += " [data as given; equilibrated retry: " + std::string(to_string(eq.verdict)) + "]";
+  return raw;
 }
 
 }  // namespace hapstab::lmi

@@ -9,6 +9,11 @@
 // the solver's verdict is unchanged in exact arithmetic while DSDP/CSDP see data of magnitude
 // ~1 instead of 1e-6..1e6. The margin t and strict_threshold are measured in these
 // equilibrated coordinates; Result::min_eigenvalue gives the original ones.
+// Equilibration is not always a gain: on homogeneous LMIs (Lyapunov, KYP) whose solution set
+// is a cone, the margin t <= cap is reached by a scaled-up solution and the congruence changes
+// which direction the margin measures; bench and tests showed cases where the raw data certify
+// and the equilibrated do not, and the reverse. Scaling::automatic therefore tries both (raw
+// first) and keeps the first decided verdict; Result::detail says which one was used.
 // (4) DSDP or CSDP (backend.hpp). (5) Verdict and exact certificate (certificate.hpp).
 //
 // Verdict with the margin objective: feasible iff the solver is optimal and t* >
@@ -27,10 +32,17 @@
 
 namespace hapstab::lmi {
 
+enum class Scaling {
+  automatic,  ///< the data as given first; equilibrated retry when the verdict is undecided or
+              ///< the back-end had numerical trouble (the decided result is kept)
+  never,
+  always
+};
+
 struct Options {
   Backend backend = Backend::dsdp;
   double strict_threshold = 1e-7;  ///< margin needed to call a strict LMI feasible
-  bool scale = true;               ///< equilibrate (see above)
+  Scaling scale = Scaling::automatic;  ///< equilibration (see above)
   bool certify = true;             ///< run the exact checks
 };
 

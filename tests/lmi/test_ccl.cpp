@@ -1,0 +1,77 @@
+// Cone complementarity linearisation on static-output-feedback stabilisation (discrete time).
+//
+// A = [[1.2, 1], [0, 0.4]], B = [0; 1], C = [1, 0]: A + BKC = [[1.2, 1], [K, 0.4]] has
+// characteristic polynomial p(l) = l^2 - 1.6 l + 0.48 - K. Jury: p(1) = -0.12 - K > 0,
+// p(-1) = 3.08 - K > 0, |0.48 - K| < 1  <=>  K in (-0.52, -0.12) (the known answer).
+// Formulation: [[Y, A + BKC], [(A + BKC)^T, P]] > 0 with Y = P^{-1} is P - Acl^T P Acl > 0.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "hapstab/lmi/ccl.hpp"
+
+using namespace hapstab;
+using namespace hapstab::lmi;
+using Eigen::MatrixXd;
+
+namespace {
+
+struct Sof {
+  Program prog;
+  MatrixVariable P, Y, K;
+};
+
+Sof sof_program(const MatrixXd& A, const MatrixXd& B, const MatrixXd& C) {
+  Sof s;
+  const int n = static_cast<int>(A.rows());
+  s.P = s.prog.NewSymmetric(n, "P");
+  s.Y = s.prog.NewSymmetric(n, "Y");
+  s.K = s.prog.NewFull(static_cast<int>(B.cols()), static_cast<int>(C.rows()), "K");
+  Expr Acl = Expr(A) + B * Expr(s.K) * C;
+  s.prog.AddLmi("closed loop", {{Expr(s.Y), Acl}, {Expr(), Expr(s.P)}});
+  s.prog.AddLmi("P > 0", Expr(s.P));
+  // keep the search bounded: P <= 100 I
+  s.prog.AddLmi("P < 100 I", Expr(MatrixXd(100 * MatrixXd::Identity(n, n))) - Expr(s.P));
+  return s;
+}
+
+double rho(const MatrixXd& M) { return Eigen::EigenSolver<MatrixXd>(M, false).eigenvalues().cwiseAbs().maxCoeff(); }
+
+}  // namespace
+
+TEST(Ccl, StaticOutputFeedbackKnownAnswer) {
+  MatrixXd A(2, 2), B(2, 1), C(1, 2);
+  A << 1.2, 1, 0, 0.4;
+  B << 0, 1;
+  C << 1, 0;
+  for (Backend b : {Backend::dsdp, Backend::csdp}) {
+    Sof s = sof_program(A, B, C);
+    CclOptions o;
+    o.solver.backend = b;
+    auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
+    ASSERT_TRUE(res.success) << to_string(b) << ": " << res.reason;
+    ASSERT_FALSE(res.log.empty());
+    const double K = res.last.GetSolution(s.K)(0, 0);
+    EXPECT_GT(K, -0.52) << to_string(b);
+    EXPECT_LT(K, -0.12) << to_string(b);
+    EXPECT_LT(rho(A + B * res.last.GetSolution(s.K) * C), 1.0);
+    // The objective must have come down to 2n = 4 (tolerance 1e-6 relative, ccl.hpp).
+    EXPECT_LE(res.log.back().objective, 4.0 * (1 + 1e-6));
+  }
+}
+
+// A = diag(1.5, 0.5), B = [1; 1], C = [0, 1]: A + BKC = [[1.5, K], [0, 0.5 + K]] keeps the
+// eigenvalue 1.5 for every K. CCL must end in failure, never in success.
+TEST(Ccl, UnstabilisableReportsFailure) {
+  MatrixXd A(2, 2), B(2, 1), C(1, 2);
+  A << 1.5, 0, 0, 0.5;
+  B << 1, 1;
+  C << 0, 1;
+  Sof s = sof_program(A, B, C);
+  CclOptions o;
+  o.max_iter = 25;
+  o.accept = [&](const Result& r) { return rho(A + B * r.GetSolution(s.K) * C) < 1; };
+  auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
+  EXPECT_FALSE(res.success) << res.reason;
+  EXPECT_FALSE(res.reason.empty());
+}

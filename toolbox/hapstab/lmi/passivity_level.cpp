@@ -1,0 +1,295 @@
+// hapstab/lmi/passivity_level.cpp -- Lemma 1 / Lemma 2 LMIs and the frequency-domain levels.
+#include "hapstab/lmi/passivity_level.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include "hapstab/lmi/solve.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::lmi {
+
+using Eigen::MatrixXd;
+using cplx = std::complex<double>;
+using MatC = Eigen::MatrixXcd;
+
+const char* to_string(PassivityKind k) { return k == PassivityKind::osp ? "osp" : "isp"; }
+
+namespace {
+
+void check_system(const StateSpace<double>& sys) {
+  sys.validate("system");
+  if (!sys.is_discrete()) throw InputError("system: the passivity levels of paper 000 need a discrete system (T > 0)");
+  if (sys.inputs() != sys.outputs())
+    throw InputError("system: passivity needs as many outputs as inputs (got " + std::to_string(sys.outputs()) + "x" +
+                     std::to_string(sys.inputs()) + ")");
+  if (sys.states() == 0) throw InputError("system: a static gain has no state; its level is (D+D')/2's");
+  if (!sys.A.allFinite() || !sys.B.allFinite() || !sys.C.allFinite() || !sys.D.allFinite())
+    throw InputError("system: a matrix entry is not finite");
+}
+
+double spectral_radius(const MatrixXd& A) {
+  Eigen::EigenSolver<MatrixXd> es(A, false);
+  return es.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+// Lemma 1's matrix M(P, Delta, Phi) as an expression; `level` multiplies Delta (osp) or Phi (isp)
+// when given, otherwise fixed delta/phi are used.
+Expr lemma1_M(const StateSpace<double>& s, const Expr& P, const Expr* level, PassivityKind kind, double delta,
+              double phi) {
+  const MatrixXd &A = s.A, &B = s.B, &C = s.C, &D = s.D;
+  const auto m = B.cols();
+  const MatrixXd HeD = 0.5 * (D + D.transpose());
+  Expr M11 = A.transpose() * P * A - P;
+  Expr M12 = A.transpose() * P * B - Expr(MatrixXd(0.5 * C.transpose()));
+  Expr M22 = B.transpose() * P * B - Expr(HeD);
+  if (level && kind == PassivityKind::osp) {
+    M11 += kron(MatrixXd(C.transpose() * C), *level);
+    M12 += kron(MatrixXd(C.transpose() * D), *level);
+    M22 += kron(MatrixXd(D.transpose() * D), *level);
+  } else {
+    const double dl = level ? 0.0 : delta;
+    M11 += Expr(MatrixXd(dl * C.transpose() * C));
+    M12 += Expr(MatrixXd(dl * C.transpose() * D));
+    M22 += Expr(MatrixXd(dl * D.transpose() * D));
+    if (level) M22 += kron(MatrixXd::Identity(m, m), *level);
+    else M22 += Expr(MatrixXd(phi * MatrixXd::Identity(m, m)));
+  }
+  return blocks({{M11, M12}, {Expr(), M22}}, "Lemma 1 (2)");
+}
+
+// Lemma 2 after the second Schur complement: S(Q) - R Q R'. `mu` = Delta^{-1} (osp, expression)
+// or fixed inv_delta (< 0: Delta = 0, third block dropped). `phi_expr`: variable Phi (isp).
+Expr lemma2_matrix(const StateSpace<double>& s, const Expr& Q, const Expr* mu, double inv_delta, const Expr* phi_expr,
+                   double phi, bool typo) {
+  const MatrixXd &A = s.A, &B = s.B, &C = s.C, &D = s.D;
+  const auto m = B.cols(), n = A.rows();
+  const MatrixXd HeD = 0.5 * (D + D.transpose());
+  const double sg = typo ? 1.0 : -1.0;  // S11 = HeD - Phi (correct) or HeD + Phi (transcribed)
+  Expr S11 = Expr(HeD);
+  if (phi_expr) S11 += sg * kron(MatrixXd::Identity(m, m), *phi_expr);
+  else S11 += Expr(MatrixXd(sg * phi * MatrixXd::Identity(m, m)));
+  const bool third = mu || inv_delta >= 0;
+  MatrixXd R;
+  if (third) {
+    R.resize(2 * m + n, n);
+    R << 0.5 * C, A, C;
+  } else {
+    R.resize(m + n, n);
+    R << 0.5 * C, A;
+  }
+  Expr S;
+  if (third) {
+    Expr S33 = mu ? kron(MatrixXd::Identity(m, m), *mu) : Expr(MatrixXd(inv_delta * MatrixXd::Identity(m, m)));
+    S = blocks({{S11, Expr(MatrixXd(B.transpose())), Expr(MatrixXd(D.transpose()))},
+                {Expr(), Q, Expr::Zero(static_cast<int>(n), static_cast<int>(m))},
+                {Expr(), Expr(), S33}},
+               "Lemma 2 S");
+  } else {
+    S = blocks({{S11, Expr(MatrixXd(B.transpose()))}, {Expr(), Q}}, "Lemma 2 S");
+  }
+  return S - R * Q * R.transpose();
+}
+
+rational exact_scalar(const Result& r, const MatrixVariable& v) { return r.GetExactSolution(v)(0, 0); }
+
+}  // namespace
+
+PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma, Backend backend) {
+  check_system(sys);
+  if (lemma != 1 && lemma != 2) throw InputError("passivity level: lemma must be 1 or 2");
+  PassivityLevel out;
+  out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + to_string(backend) + ")";
+  const int n = static_cast<int>(sys.states());
+  Program prog;
+  Options opt;
+  opt.backend = backend;
+  if (lemma == 1) {
+    auto P = prog.NewSymmetric(n, "P");
+    auto L = prog.NewScalar(kind == PassivityKind::osp ? "delta" : "phi");
+    Expr Lx(L);
+    prog.AddLmi("P > 0", Expr(P));
+    prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
+    prog.SetMinimize(-Lx);
+    Result r = Solve(prog, opt);
+    if (!r.is_success()) {
+      out.status = "failed";
+      out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
+      return out;
+    }
+    out.level = r.GetSolution(L)(0, 0);
+    if (r.certified()) {
+      out.certified = true;
+      out.lower_bound = exact_scalar(r, L);
+    }
+    return out;
+  }
+  // Lemma 2
+  auto Q = prog.NewSymmetric(n, "Q");
+  prog.AddLmi("Q > 0", Expr(Q));
+  if (kind == PassivityKind::osp) {
+    auto mu = prog.NewScalar("mu = 1/delta");
+    Expr mx(mu);
+    prog.AddLmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
+    prog.SetMinimize(mx);
+    Result r = Solve(prog, opt);
+    if (!r.is_success()) {
+      out.status = "failed";
+      out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) +
+                 " (Lemma 2 needs Delta > 0: the OSP level may be <= 0): " + r.detail;
+      return out;
+    }
+    const double m = r.GetSolution(mu)(0, 0);
+    out.level = 1.0 / m;
+    if (r.certified() && exact_scalar(r, mu) > 0) {
+      out.certified = true;
+      out.lower_bound = 1 / exact_scalar(r, mu);
+    }
+    return out;
+  }
+  auto phi = prog.NewScalar("phi");
+  Expr px(phi);
+  prog.AddLmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
+  prog.SetMinimize(-px);
+  Result r = Solve(prog, opt);
+  if (!r.is_success()) {
+    out.status = "failed";
+    out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
+    return out;
+  }
+  out.level = r.GetSolution(phi)(0, 0);
+  if (r.certified()) {
+    out.certified = true;
+    out.lower_bound = exact_scalar(r, phi);
+  }
+  return out;
+}
+
+double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo, Backend backend) {
+  check_system(sys);
+  const int n = static_cast<int>(sys.states());
+  Program prog;
+  Options opt;
+  opt.backend = backend;
+  opt.certify = false;
+  if (lemma == 1) {
+    auto P = prog.NewSymmetric(n, "P");
+    prog.AddLmi("P > 0", Expr(P));
+    prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), nullptr, PassivityKind::osp, delta, phi));
+  } else {
+    auto Q = prog.NewSymmetric(n, "Q");
+    prog.AddLmi("Q > 0", Expr(Q));
+    prog.AddLmi("Lemma 2 > 0", lemma2_matrix(sys, Expr(Q), nullptr, delta > 0 ? 1.0 / delta : -1.0, nullptr, phi, typo));
+  }
+  Result r = Solve(prog, opt);
+  if (r.status != SolveStatus::optimal) throw NumericalError("lemma_margin: solver " + std::string(to_string(r.status)) + ": " + r.detail);
+  return r.margin;
+}
+
+namespace {
+
+MatC freqresp(const StateSpace<double>& s, double theta) {
+  const auto n = s.A.rows();
+  const cplx z = std::polar(1.0, theta);
+  MatC Zm = z * MatC::Identity(n, n) - s.A.cast<cplx>();
+  MatC X = Zm.partialPivLu().solve(s.B.cast<cplx>());
+  return s.C.cast<cplx>() * X + s.D.cast<cplx>();
+}
+
+double osp_index_at(const StateSpace<double>& s, double theta, bool& singular) {
+  MatC G = freqresp(s, theta);
+  MatC H = 0.5 * (G + G.adjoint());
+  Eigen::JacobiSVD<MatC> svd(G, Eigen::ComputeFullV);
+  const auto sv = svd.singularValues();
+  const double tol = 1e-10 * std::max(1.0, sv(0));
+  int r = 0;
+  while (r < sv.size() && sv(r) > tol) ++r;
+  if (r < sv.size()) singular = true;
+  if (r == 0) return INFINITY;  // G = 0: no constraint at this frequency
+  MatC Vr = svd.matrixV().leftCols(r);
+  Eigen::VectorXd inv = sv.head(r).cwiseInverse();
+  MatC W = inv.cast<cplx>().asDiagonal() * (Vr.adjoint() * H * Vr) * inv.cast<cplx>().asDiagonal();
+  W = 0.5 * (W + W.adjoint());
+  Eigen::SelfAdjointEigenSolver<MatC> es(W, Eigen::EigenvaluesOnly);
+  return es.eigenvalues()(0);
+}
+
+}  // namespace
+
+double isp_index_at(const StateSpace<double>& sys, double theta) {
+  MatC G = freqresp(sys, theta);
+  MatC H = 0.5 * (G + G.adjoint());
+  Eigen::SelfAdjointEigenSolver<MatC> es(H, Eigen::EigenvaluesOnly);
+  return es.eigenvalues()(0);
+}
+
+PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind kind, int grid) {
+  check_system(sys);
+  if (grid < 16) throw InputError("passivity level: the frequency grid needs at least 16 points");
+  PassivityLevel out;
+  out.method = "frequency domain (" + std::to_string(grid) + "-point grid + golden-section refinement)";
+  const double rho = spectral_radius(sys.A);
+  if (!(rho < 1)) {
+    out.status = "failed";
+    out.note = "A is not Schur stable (spectral radius " + std::to_string(rho) +
+               "): the frequency-domain level is not a passivity level";
+    return out;
+  }
+  bool singular = false;
+  auto f = [&](double th) { return kind == PassivityKind::isp ? isp_index_at(sys, th) : osp_index_at(sys, th, singular); };
+  std::vector<double> th(static_cast<size_t>(grid)), v(static_cast<size_t>(grid));
+  for (int i = 0; i < grid; ++i) {
+    th[static_cast<size_t>(i)] = M_PI * i / (grid - 1);
+    v[static_cast<size_t>(i)] = f(th[static_cast<size_t>(i)]);
+  }
+  // local minima of the grid (ends included), 8 smallest
+  std::vector<int> mins;
+  for (int i = 0; i < grid; ++i) {
+    const double l = i > 0 ? v[static_cast<size_t>(i - 1)] : INFINITY, r = i + 1 < grid ? v[static_cast<size_t>(i + 1)] : INFINITY;
+    if (v[static_cast<size_t>(i)] <= l && v[static_cast<size_t>(i)] <= r) mins.push_back(i);
+  }
+  std::sort(mins.begin(), mins.end(), [&](int a, int b) { return v[static_cast<size_t>(a)] < v[static_cast<size_t>(b)]; });
+  if (mins.size() > 8) mins.resize(8);
+  double best = INFINITY, best_th = 0;
+  for (int i : mins) {
+    double a = th[static_cast<size_t>(std::max(0, i - 1))], b = th[static_cast<size_t>(std::min(grid - 1, i + 1))];
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    double c = b - g * (b - a), d = a + g * (b - a), fc = f(c), fd = f(d);
+    while (b - a > 1e-12) {
+      if (fc < fd) {
+        b = d;
+        d = c;
+        fd = fc;
+        c = b - g * (b - a);
+        fc = f(c);
+      } else {
+        a = c;
+        c = d;
+        fc = fd;
+        d = a + g * (b - a);
+        fd = f(d);
+      }
+    }
+    for (auto [t, val] : {std::pair{th[static_cast<size_t>(i)], v[static_cast<size_t>(i)]}, std::pair{c, fc}, std::pair{d, fd}})
+      if (val < best) {
+        best = val;
+        best_th = t;
+      }
+  }
+  out.level = best;
+  out.theta_min = best_th;
+  if (singular)
+    out.note = "G(e^{j theta}) is singular at some frequency (a zero on the unit circle): those directions impose no "
+               "OSP constraint and were skipped";
+  if (!std::isfinite(best)) {
+    out.status = "failed";
+    out.note = "G vanishes on the whole grid: the OSP level is unbounded";
+  }
+  return out;
+}
+
+}  // namespace hapstab::lmi

@@ -1,0 +1,74 @@
+// hapstab/lmi/passivity_level.hpp -- OSP level Delta and ISP level Phi of a discrete-time LTI
+// system (A, B, C, D), MIMO with square G (paper 000, Definition 2, Lemmas 1 and 2), scalar
+// levels Delta = delta I, Phi = phi I:
+//
+//  Lemma 1 (KYP, (2)): sup delta (resp. phi) s.t. P > 0 and
+//     [[A'PA - P + C'DeltaC,  A'PB - C'/2 + C'DeltaD], [.., B'PB - (D+D')/2 + D'DeltaD + Phi]] < 0.
+//  Lemma 2: Schur complement of (2) with Q = P^{-1}. The correct S has (D+D')/2 - Phi in its
+//     top-left block; the transcription's "+Phi" is a typo (proofs/lmi_lemma2.cpp: with +Phi
+//     a non-ISP system passes as ISP). Posed as an LMI in (Q, mu = 1/delta) through a second
+//     Schur complement: Q > 0, S(Q, mu) - R Q R' > 0, R = [C/2; A; C]; needs Delta > 0, so the
+//     OSP level by Lemma 2 exists only when it is positive. The ISP form (Delta = 0) drops
+//     the third block row and column.
+//  Frequency domain (independent of any SDP solver), A Schur:
+//     ISP: phi* = min_{theta in [0, pi]} lambda_min((G(e^{j theta}) + G^*)/2);
+//     OSP: delta* = min_theta lambda_min of the pencil ((G + G^*)/2, G^* G) (= ISP level of
+//          G^{-1} where G is invertible).
+//     Method: a uniform grid of `grid` points on [0, pi] (both ends included), then golden-
+//     section refinement on the bracket of each of the 8 smallest grid minima to |dtheta| <
+//     1e-12. lambda_min(theta) is continuous and piecewise analytic, so this finds the global
+//     minimum unless a narrower dip than the grid spacing exists (stated as the caveat).
+//
+// Comparison (see docs in proofs/lmi_kyp.cpp): python-control's ispassive() solves a KYP LMI
+// with cvxopt for a feasibility verdict only (no level, continuous-time by default); its
+// get_input_ff_index/get_output_fb_index (>= 0.9.4) bisect on that LMI and inherit cvxopt's
+// tolerances. MATLAB getPassiveIndex(G,'input'|'output') evaluates the frequency-domain
+// indices ("relative passivity index") on a frequency grid with refinement. Failure modes: a
+// zero of G on the unit circle makes G^*G singular there (OSP pencil degenerate: that
+// direction imposes no constraint, we skip it and report it); a pole on the circle makes the
+// frequency minimum -inf / undefined and the strict LMI infeasible; V(1) = 0 systems (paper
+// 000's V-hat, G-hat) have a frequency inequality that is an equality at theta = 0, so Lemma 1
+// with Phi = 0 holds only non-strictly (DESIGN.md) and the LMI margin there is noise.
+//
+// LMI results come with an exact certificate: the rounded (P, level_q) passes the exact
+// LDL^T check of Lemma 1's LMIs, proving that the system IS level_q-OSP/ISP (a certified lower
+// bound level_q <= sup). The reported `level` itself is numeric.
+#pragma once
+
+#include <string>
+
+#include "hapstab/lmi/backend.hpp"
+#include "hapstab/lti/state_space.hpp"
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::lmi {
+
+enum class PassivityKind { osp, isp };
+const char* to_string(PassivityKind k);
+
+struct PassivityLevel {
+  double level = 0;             ///< numeric value of the level (sup)
+  std::string method;           ///< "Lemma 1 LMI (DSDP)", "frequency grid+golden", ...
+  std::string status = "numeric";  ///< numeric | failed
+  bool certified = false;       ///< true: lower_bound is proven exactly
+  rational lower_bound;         ///< exact: the system is lower_bound-OSP/ISP (when certified)
+  double theta_min = -1;        ///< frequency methods: the minimising theta in [0, pi]
+  std::string note;             ///< caveats, failure reasons
+};
+
+/// Lemma 1 (lemma = 1) or Lemma 2 (lemma = 2) LMI. Requires a discrete, square system.
+PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma = 1,
+                                   Backend backend = Backend::dsdp);
+
+/// Frequency-domain level (see header comment).
+PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind kind, int grid = 4096);
+
+/// Feasibility of Lemma 1 / Lemma 2 (with the transcribed "+Phi" when typo = true) at fixed
+/// Delta = delta I, Phi = phi I; returns the margin (> 0: feasible). Used by proofs/.
+double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo = false,
+                    Backend backend = Backend::dsdp);
+
+/// lambda_min((G + G^*)/2) at theta (numeric, double).
+double isp_index_at(const StateSpace<double>& sys, double theta);
+
+}  // namespace hapstab::lmi
