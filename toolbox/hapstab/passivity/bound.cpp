@@ -715,9 +715,32 @@ inline dd operator/(dd a, dd b) {
   return dd{q1, 0} + dd{q2, 0} + dd{q3, 0};
 }
 dd to_dd(const rational& q) {
-  double h = to_real<double>(q);
-  double l = to_real<double>(q - exact_rational(h));
-  return {h, l};
+  // hi = q truncated to double (mpq_get_d), lo = the exact remainder rounded: |hi + lo - q| <= 2^-106 |q|
+  double h = mpq_get_d(q.backend().data());
+  rational r = q - exact_rational(h);
+  return {h, mpq_get_d(r.backend().data())};
+}
+/// Monomial coefficients of T_m and U_m (m <= 63), exact integers in double for m < 50.
+struct ChebTables {
+  std::vector<std::vector<double>> T, U;
+  ChebTables() {
+    T = {{1.0}, {0.0, 1.0}};
+    U = {{1.0}, {0.0, 2.0}};
+    for (int m = 2; m < 48; ++m) {
+      for (auto* tab : {&T, &U}) {
+        const auto& a = (*tab)[m - 1];
+        const auto& b = (*tab)[m - 2];
+        std::vector<double> c(m + 1, 0.0);
+        for (size_t i = 0; i < a.size(); ++i) c[i + 1] += 2 * a[i];
+        for (size_t i = 0; i < b.size(); ++i) c[i] -= b[i];
+        tab->push_back(std::move(c));
+      }
+    }
+  }
+};
+const ChebTables& cheb_tables() {
+  static const ChebTables t;
+  return t;
 }
 inline dd horner(const std::vector<double>& hi, const std::vector<double>& lo, double x) {
   dd r{0, 0};
@@ -787,6 +810,7 @@ FastBound::FastBound(const BoundProblem& p) {
   std::vector<dd> N, Dp(static_cast<size_t>(n), dd{0, 0});
   for (auto& x : nc) N.push_back(to_dd(x));
   for (auto& x : dc0) Dp.push_back(to_dd(x));
+  // H's denominator is monic after reduction; scale-free inputs keep dd products exact enough
   const int nn = static_cast<int>(N.size()), nd = static_cast<int>(Dp.size());
   const int M = std::max(nn, nd);
   std::vector<dd> a(M + 1), cs(M + 1), e(M + 1);
@@ -805,22 +829,27 @@ FastBound::FastBound(const BoundProblem& p) {
       else e[l2 - l] = e[l2 - l] + pr + pr;
     }
   // Chebyshev -> monomial (integer coefficients, exact in double)
-  auto add_cheb = [](std::vector<dd>& acc, const P& basis, dd coef) {
-    if (acc.size() < basis.coeffs().size()) acc.resize(basis.coeffs().size());
-    for (size_t i = 0; i < basis.coeffs().size(); ++i)
-      acc[i] = acc[i] + coef * dd{to_real<double>(basis.coeffs()[i]), 0};
+  if (M >= 48) { ok_ = false; return; }
+  const ChebTables& ct = cheb_tables();
+  auto add_cheb = [](std::vector<dd>& acc, const std::vector<double>& basis, dd coef) {
+    if (coef.hi == 0) return;
+    if (acc.size() < basis.size()) acc.resize(basis.size());
+    for (size_t i = 0; i < basis.size(); ++i)
+      if (basis[i] != 0) acc[i] = acc[i] + coef * dd{basis[i], 0};
   };
   std::vector<dd> R, Q, B;
   for (int m = 0; m <= M; ++m) {
-    add_cheb(R, cheb_T(m), a[m]);
-    if (m >= 1) add_cheb(Q, cheb_U(m - 1), cs[m]);
-    add_cheb(B, cheb_T(m), e[m]);
+    add_cheb(R, ct.T[m], a[m]);
+    if (m >= 1) add_cheb(Q, ct.U[m - 1], cs[m]);
+    add_cheb(B, ct.T[m], e[m]);
   }
   // A = (T/2)(R - (1+c) Q)
   std::vector<dd> A(std::max(R.size(), Q.size() + 1));
   for (size_t i = 0; i < R.size(); ++i) A[i] = A[i] + R[i];
   for (size_t i = 0; i < Q.size(); ++i) { A[i] = A[i] - Q[i]; A[i + 1] = A[i + 1] - Q[i]; }
   dd half_T = to_dd(p.T / 2);
+  if (A.empty()) A.push_back(dd{0, 0});
+  if (B.empty()) { ok_ = false; return; }
   for (auto& x : A) x = x * half_T;
   for (auto& x : A) { Ahi_.push_back(x.hi); Alo_.push_back(x.lo); }
   for (auto& x : B) { Bhi_.push_back(x.hi); Blo_.push_back(x.lo); }
