@@ -15,9 +15,9 @@ set ylabel 'relative error of b*'
 set yrange [1e-41:10]
 set key outside right top
 set title 'Passivity bound: speed vs accuracy (5 cases incl. pole radius 0.9999)'
-plot f using ($3 eq 'fast' ? $1 : 1/0):2 with points ls 1 pt 7 ps 1.5 title 'fast (double-double)', \
+plot f using (strcol(3) eq 'fast' ? $1 : 1/0):2 with points ls 1 pt 7 ps 1.5 title 'fast (double-double)', \
      f using (strstrt(strcol(3),'certified_16') ? $1 : 1/0):2 with points ls 2 pt 5 ps 1.5 title 'certified, 16 digits', \
      f using (strstrt(strcol(3),'certified_30') ? $1 : 1/0):2 with points ls 3 pt 9 ps 1.5 title 'certified, 30 digits', \
      f using (strstrt(strcol(3),'certified_100') ? $1 : 1/0):2 with points ls 4 pt 11 ps 1.5 title 'certified, 100 digits', \
-     f using ($3 eq 'grid' ? 1/0 : strstrt(strcol(3),'grid') ? $1 : 1/0):2 with linespoints ls 5 pt 13 ps 1.2 title 'grid(N), N = 10^2..10^6', \
+     f using (strcol(3) eq 'grid' ? 1/0 : strstrt(strcol(3),'grid') ? $1 : 1/0):2 with linespoints ls 5 pt 13 ps 1.2 title 'grid(N), N = 10^2..10^6', \
      1e-13 with lines ls 8 title 'fast-path target 1e-13'
