@@ -17,6 +17,14 @@ namespace {
 
 const Backend kBoth[] = {Backend::dsdp, Backend::csdp};
 
+// One back-end, no DSDP -> CSDP fallback: each back-end's verdict must stand on its own.
+Options only(Backend b) {
+  Options o;
+  o.backend = b;
+  o.fallback = false;
+  return o;
+}
+
 MatrixXd M2(double a, double b, double c, double d) {
   MatrixXd m(2, 2);
   m << a, b, c, d;
@@ -42,7 +50,7 @@ TEST(LmiSolve, KnownMinimumBothBackends) {
     auto x = prog.NewScalar("x");
     prog.AddLmi("[[x,1],[1,x]]", {{Expr(x), Expr::Scalar(1)}, {Expr(), Expr(x)}}, Strictness::nonstrict);
     prog.SetMinimize(Expr(x));
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     ASSERT_EQ(r.status, SolveStatus::optimal) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.is_success());
     // Interior-point accuracy: gap tolerance 1e-9 (DSDP) / 1e-8 (CSDP) relative; 1e-6 absolute is
@@ -69,8 +77,7 @@ TEST(LmiSolve, EqualitiesAndInequalitiesBothBackends) {
     MatrixXd ones = MatrixXd::Ones(1, 2), onesc = MatrixXd::Ones(2, 1);
     prog.AddLinearEquality("x1 + x2 = 1", ones * Expr(X) * onesc, MatrixXd::Ones(1, 1));
     prog.AddLinearInequality("x1 <= 0.3", -(e1 * Expr(X) * e2), MatrixXd::Constant(1, 1, -0.3));
-    Options o;
-    o.backend = b;
+    Options o = only(b);
     o.scale = Scaling::never;  // keep t in original units for this known answer
     Result r = Solve(prog, o);
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
@@ -90,7 +97,7 @@ TEST(LmiSolve, LyapunovFeasibleCertifiedBothBackends) {
   for (Backend b : kBoth) {
     MatrixVariable P;
     Program prog = lyapunov(A, &P);
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_GT(r.margin, 1e-3);
     ASSERT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
@@ -109,7 +116,7 @@ TEST(LmiSolve, LyapunovInfeasibleBothBackendsExactFarkas) {
   MatrixXd A = M2(1.2, 0.0, 0.0, 0.5);
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_FALSE(r.is_success());
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
@@ -124,7 +131,7 @@ TEST(LmiSolve, ContradictoryBoundsInfeasibleBothBackends) {
     prog.AddLmi("x >= 1", Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
     prog.AddLmi("x <= -1", -Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
     prog.SetMinimize(Expr(x));
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
   }
@@ -201,12 +208,11 @@ TEST(LmiSolve, BadlyScaledFeasible) {
   MatrixXd A = M2(0.5, 1e6, -1e-7, 0.3);
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail << " margin " << r.margin << " its "
                                 << r.iterations << " err4 " << r.dimacs[3] << " err5 " << r.dimacs[4];
     EXPECT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
-    Options eq;
-    eq.backend = b;
+    Options eq = only(b);
     eq.scale = Scaling::always;
     EXPECT_NE(Solve(prog, eq).verdict, Feasibility::infeasible) << to_string(b);
   }
@@ -217,7 +223,7 @@ TEST(LmiSolve, BadlyScaledInfeasible) {
   MatrixXd A = M2(0.5, 1e6, -2e-6, 0.3);
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_FALSE(r.certified());
   }
@@ -274,7 +280,7 @@ TEST(LmiCertificate, FacialReductionCertifiesSingularLmi) {
     MatrixXd V = MatrixXd::Zero(2, 1);
     V(1, 0) = 1;
     facial_reduce(prog, "singular", V);
-    Result r = Solve(prog, {b});
+    Result r = Solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.certified()) << r.detail;
   }

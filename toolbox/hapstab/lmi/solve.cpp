@@ -581,7 +581,7 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   return res;
 }
 
-Result Solve(const Program& prog, const Options& opt) {
+Result solve_scaled(const Program& prog, const Options& opt) {
   if (opt.scale == Scaling::never) return solve_once(prog, opt, false);
   if (opt.scale == Scaling::always) {
     Result r = solve_once(prog, opt, true);
@@ -601,6 +601,22 @@ Result Solve(const Program& prog, const Options& opt) {
   }
   raw.detail += " [data as given; equilibrated retry: " + std::string(to_string(eq.verdict)) + "]";
   return raw;
+}
+
+Result Solve(const Program& prog, const Options& opt) {
+  Result r = solve_scaled(prog, opt);
+  if (!opt.fallback || opt.backend != Backend::dsdp) return r;
+  if (r.verdict != Feasibility::undecided && r.status != SolveStatus::numerical_trouble) return r;
+  Options o = opt;
+  o.backend = Backend::csdp;
+  Result c = solve_scaled(prog, o);
+  if (c.verdict == Feasibility::undecided && c.status == SolveStatus::numerical_trouble) {
+    r.detail += "; CSDP fallback also undecided (" + c.detail + ")";
+    return r;
+  }
+  c.solver = "CSDP (DSDP fallback)";
+  c.detail = "DSDP: " + r.detail + "; CSDP: " + c.detail;
+  return c;
 }
 
 }  // namespace hapstab::lmi

@@ -43,6 +43,10 @@ struct Options {
   Backend backend = Backend::dsdp;
   double strict_threshold = 1e-7;  ///< margin needed to call a strict LMI feasible
   Scaling scale = Scaling::automatic;  ///< equilibration (see above)
+  /// DSDP stops with an indefinite Schur matrix (-8) or short steps on some KYP LMIs that CSDP
+  /// solves: when the DSDP verdict is undecided or in numerical trouble, re-solve with CSDP
+  /// (Result::solver and detail say so). Off in the back-end agreement tests.
+  bool fallback = true;
   bool certify = true;             ///< run the exact checks
 };
 

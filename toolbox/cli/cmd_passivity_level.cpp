@@ -1,0 +1,178 @@
+// `hapstab passivity-level (--H EXPR --T T [--set NAME=VALUE]... | --ss FILE) [--kind osp|isp]
+//   [--backend dsdp|csdp] [--lemma 1|2] [--grid N] [--json]`
+// OSP level delta or ISP level phi (scalar, Delta = delta I, Phi = phi I) of a discrete-time
+// system, paper 000 Definition 2, by the Lemma 1 (or Lemma 2) LMI with an exact certificate
+// of a lower bound, cross-checked by the frequency-domain computation (lmi/passivity_level.hpp).
+//
+// --ss FILE is a JSON object with the matrices as arrays of rows and T exact:
+//   {"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"}
+// Entries may be numbers or strings with exact decimals/fractions ("1/3"); they are rounded
+// to double for the SDP (the certificate then holds for these doubles' exact values).
+// JSON output keys: level, method, status (numeric|failed), certified (a proven lower bound
+// exists), lower_bound (exact, decimal), kind, frequency {level, theta, status, note}, note.
+// Exit codes: 0 a level was computed, 2 bad input, 3 numerical failure (no method gave a level).
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "hapstab/lmi/passivity_level.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::cli {
+namespace {
+
+struct Opts {
+  std::string H, T, ss, kind = "osp", backend = "dsdp";
+  std::vector<std::string> sets;
+  int lemma = 1, grid = 4096;
+  bool json = false;
+};
+
+double entry(const nlohmann::json& v, const std::string& where) {
+  if (v.is_number()) return v.get<double>();
+  if (v.is_string()) return to_real<double>(parse_rational(v.get<std::string>(), where));
+  throw InputError(where + ": expected a number or a string with an exact number");
+}
+
+Mat<double> matrix(const nlohmann::json& j, const std::string& key, const std::string& file) {
+  const std::string where = "--ss " + file + ": \"" + key + "\"";
+  if (!j.contains(key)) throw InputError(where + " is missing");
+  const auto& m = j.at(key);
+  if (!m.is_array()) throw InputError(where + " must be an array of rows");
+  if (m.empty()) return Mat<double>(0, 0);
+  const size_t rows = m.size();
+  if (!m[0].is_array()) throw InputError(where + " must be an array of rows");
+  const size_t cols = m[0].size();
+  Mat<double> M(rows, cols);
+  for (size_t i = 0; i < rows; ++i) {
+    if (!m[i].is_array() || m[i].size() != cols)
+      throw InputError(where + ": row " + std::to_string(i + 1) + " does not have " + std::to_string(cols) + " entries");
+    for (size_t c = 0; c < cols; ++c)
+      M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) =
+          entry(m[i][c], where + "[" + std::to_string(i + 1) + "][" + std::to_string(c + 1) + "]");
+  }
+  return M;
+}
+
+StateSpace<double> read_ss(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError("--ss: cannot read '" + file + "'");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const std::exception& e) {
+    throw InputError("--ss " + file + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw InputError("--ss " + file + ": expected a JSON object with A, B, C, D, T");
+  StateSpace<double> s;
+  s.A = matrix(j, "A", file);
+  s.B = matrix(j, "B", file);
+  s.C = matrix(j, "C", file);
+  s.D = matrix(j, "D", file);
+  if (!j.contains("T")) throw InputError("--ss " + file + ": \"T\" (sample period) is missing");
+  const auto& t = j.at("T");
+  s.T = t.is_string() ? parse_rational(t.get<std::string>(), "--ss T") : exact_rational(t.get<double>());
+  if (!(s.T > 0)) throw InputError("--ss " + file + ": \"T\" must be > 0 (a discrete-time system)");
+  s.validate("--ss " + file);
+  return s;
+}
+
+int run(const Opts& o) {
+  if (o.kind != "osp" && o.kind != "isp") throw InputError("--kind: expected osp or isp, got '" + o.kind + "'");
+  if (o.backend != "dsdp" && o.backend != "csdp") throw InputError("--backend: expected dsdp or csdp");
+  if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
+  if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
+  if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
+  StateSpace<double> sys;
+  if (!o.ss.empty()) {
+    if (!o.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
+    sys = read_ss(o.ss);
+  } else {
+    if (o.T.empty()) throw InputError("--T: required with --H");
+    ParseOptions po;
+    po.variable = 'z';
+    po.T = option_rational(o.T, "--T");
+    if (!(po.T > 0)) throw InputError("--T: must be > 0");
+    po.parameters = parse_sets(o.sets);
+    TransferFunction G = parse_tf(o.H, po);
+    if (!G.is_proper()) throw InputError("--H: the transfer function is not causal (deg num > deg den)");
+    sys = tf2ss(G).cast<double>();
+    sys.T = po.T;
+  }
+  const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
+  const auto backend = o.backend == "dsdp" ? lmi::Backend::dsdp : lmi::Backend::csdp;
+  lmi::PassivityLevel l;
+  if (sys.states() > 0) l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
+  else {
+    l.status = "failed";
+    l.note = "static gain: no state";
+  }
+  lmi::PassivityLevel f;
+  if (sys.states() > 0) f = lmi::passivity_level_freq(sys, kind, o.grid);
+  else {
+    f.status = "failed";
+  }
+  const bool lmi_ok = l.status != "failed";
+  const bool freq_ok = f.status != "failed";
+  const auto& main = lmi_ok ? l : f;
+  std::string note = lmi_ok ? l.note : "LMI: " + l.note;
+  if (lmi_ok && freq_ok && std::abs(l.level - f.level) > 1e-5 * std::max(1.0, std::abs(f.level)))
+    note += (note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
+  if (o.json) {
+    nlohmann::json j{{"kind", o.kind},
+                     {"level", (lmi_ok || freq_ok) ? nlohmann::json(main.level) : nlohmann::json(nullptr)},
+                     {"method", main.method},
+                     {"status", (lmi_ok || freq_ok) ? "numeric" : "failed"},
+                     {"certified", lmi_ok && l.certified},
+                     {"lower_bound", (lmi_ok && l.certified) ? nlohmann::json(to_decimal(l.lower_bound, 17)) : nlohmann::json(nullptr)},
+                     {"frequency",
+                      {{"level", freq_ok ? nlohmann::json(f.level) : nlohmann::json(nullptr)},
+                       {"theta", freq_ok ? nlohmann::json(f.theta_min) : nlohmann::json(nullptr)},
+                       {"status", freq_ok ? "numeric" : "failed"},
+                       {"note", f.note}}},
+                     {"note", note}};
+    print_json(j);
+  } else {
+    std::cout << o.kind << " level";
+    if (lmi_ok || freq_ok) {
+      std::cout.precision(12);
+      std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
+      if (lmi_ok && l.certified)
+        std::cout << "  certified: the system is " << o.kind << " with level >= " << to_decimal(l.lower_bound, 17)
+                  << "   [exact LDL^T check of the rounded LMI solution]\n";
+      if (freq_ok)
+        std::cout << "  frequency domain: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
+    } else {
+      std::cout << ": no method produced a level\n";
+    }
+    if (!note.empty()) std::cout << "  note: " << note << "\n";
+    if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";
+  }
+  return (lmi_ok || freq_ok) ? exit_ok : exit_numerical;
+}
+
+const Register reg({"passivity-level",
+                    "OSP level delta / ISP level phi of a discrete LTI system (paper 000 Lemmas 1-2): LMI with an "
+                    "exact lower-bound certificate, cross-checked in the frequency domain",
+                    [](CLI::App& app) {
+                      auto o = std::make_shared<Opts>();
+                      app.add_option("--H", o->H, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\")");
+                      app.add_option("--T", o->T, "Sample period with --H, exact (0.01 or 1/100)");
+                      app.add_option("--set", o->sets, "Parameter of --H, NAME=VALUE (repeatable)");
+                      app.add_option("--ss", o->ss, "JSON file {\"A\":[[..]],\"B\":..,\"C\":..,\"D\":..,\"T\":\"1/100\"}");
+                      app.add_option("--kind", o->kind, "osp (default) or isp");
+                      app.add_option("--backend", o->backend, "dsdp (default) or csdp");
+                      app.add_option("--lemma", o->lemma, "1 (KYP LMI (2), default) or 2 (Schur form)");
+                      app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
+                      app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
+                                                      "lower_bound, kind, frequency, note)");
+                      return [o]() { return run(*o); };
+                    }});
+
+}  // namespace
+}  // namespace hapstab::cli
