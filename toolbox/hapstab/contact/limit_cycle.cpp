@@ -453,7 +453,8 @@ OnsetResult oscillation_onset(const TransferFunction& H, double kmin, double kma
     lo = k;
   }
   if (hi < 0) return r;
-  while (hi - lo > rel * hi) {
+  // (lo = 0 when the first grid gain already oscillates: halve down, at most 60 steps)
+  for (int it = 0; it < 60 && hi - lo > rel * hi; ++it) {
     const double m = lo > 0 ? std::sqrt(lo * hi) : 0.5 * hi;
     (osc(m, nullptr) ? hi : lo) = m;
   }
