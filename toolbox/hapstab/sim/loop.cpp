@@ -26,33 +26,6 @@ int LoopSpec::dofs() const {
   return n;
 }
 
-DeviceBlock mass_damper(std::string name, const rational& m, const rational& b) {
-  if (m <= 0) throw InputError(name + ": mass m must be > 0, got " + m.str());
-  if (b < 0) throw InputError(name + ": damping b must be >= 0, got " + b.str());
-  DeviceBlock d;
-  d.name = std::move(name);
-  d.G = StateSpace<Q>{MQ::Constant(1, 1, -b / m), MQ::Constant(1, 1, 1 / m), MQ::Constant(1, 1, Q(1)),
-                      MQ::Zero(1, 1), 0};
-  d.mass = std::vector<Q>{m};
-  return d;
-}
-
-OperatorBlock mass_spring_damper_operator(std::string name, int port, const rational& m, const rational& b,
-                                          const rational& k) {
-  if (m < 0 || b < 0 || k < 0)
-    throw InputError(name + ": operator m, b, k must be >= 0 (a passive mass-spring-damper)");
-  OperatorBlock o;
-  o.name = std::move(name);
-  o.ports = {port};
-  o.mass = {m};
-  if (k != 0) {  // f = b v + k q, q' = v
-    o.Z = StateSpace<Q>{MQ::Zero(1, 1), MQ::Constant(1, 1, Q(1)), MQ::Constant(1, 1, k), MQ::Constant(1, 1, b), 0};
-  } else {
-    o.Z = StateSpace<Q>{zeros(0, 0), zeros(0, 1), zeros(1, 0), MQ::Constant(1, 1, b), 0};
-  }
-  return o;
-}
-
 ComposedLoop compose(const LoopSpec& spec) {
   if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
   if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "hapstab/lti/state_space.hpp"
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::sim {
@@ -103,12 +104,35 @@ struct ComposedLoop {
 /// det(I + D_E D_V) = 0, T <= 0 or a negative delay.
 ComposedLoop compose(const LoopSpec& spec);
 
-/// A physical mass-damper device 1/(m s + b) per DOF (m > 0, b >= 0 rational).
-DeviceBlock mass_damper(std::string name, const rational& m, const rational& b);
-
+/// A physical mass-damper device 1/(m s + b) (m > 0, b >= 0), one DOF, kinetic storage 1/2 m v^2.
+/// (Inline: the scene module builds these without linking the sim library.)
 /// Operator Z_O(s) = m s + b + k/s on DOF `port` (mass, damper and spring; passive for
 /// m, b, k >= 0): the spring is one state (its deflection), the mass is the inertia term.
-OperatorBlock mass_spring_damper_operator(std::string name, int port, const rational& m, const rational& b,
-                                          const rational& k);
+inline DeviceBlock mass_damper(std::string name, const rational& m, const rational& b) {
+  if (m <= 0) throw InputError(name + ": mass m must be > 0, got " + m.str());
+  if (b < 0) throw InputError(name + ": damping b must be >= 0, got " + b.str());
+  DeviceBlock d;
+  d.name = std::move(name);
+  d.G = StateSpace<rational>{Mat<rational>::Constant(1, 1, -b / m), Mat<rational>::Constant(1, 1, 1 / m), Mat<rational>::Constant(1, 1, rational(1)),
+                      Mat<rational>::Zero(1, 1), 0};
+  d.mass = std::vector<rational>{m};
+  return d;
+}
+
+inline OperatorBlock mass_spring_damper_operator(std::string name, int port, const rational& m, const rational& b,
+                                          const rational& k) {
+  if (m < 0 || b < 0 || k < 0)
+    throw InputError(name + ": operator m, b, k must be >= 0 (a passive mass-spring-damper)");
+  OperatorBlock o;
+  o.name = std::move(name);
+  o.ports = {port};
+  o.mass = {m};
+  if (k != 0) {  // f = b v + k q, q' = v
+    o.Z = StateSpace<rational>{Mat<rational>::Zero(1, 1), Mat<rational>::Constant(1, 1, rational(1)), Mat<rational>::Constant(1, 1, k), Mat<rational>::Constant(1, 1, b), 0};
+  } else {
+    o.Z = StateSpace<rational>{Mat<rational>(0, 0), Mat<rational>(0, 1), Mat<rational>(1, 0), Mat<rational>::Constant(1, 1, b), 0};
+  }
+  return o;
+}
 
 }  // namespace hapstab::sim

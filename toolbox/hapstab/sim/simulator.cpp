@@ -100,12 +100,36 @@ Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
     a << C.row(2 * N + j), D.row(2 * N + j);
     b << C.row(N + j), D.row(N + j);
     Mat<MP> Q = (a.transpose() * b + b.transpose() * a) / MP(2);
+    // Van Loan's block exponential exp([[-M^T, Q], [0, M]] h0) = [[., F12], [0, F22]] gives
+    // W(h0) = F22^T F12, but e^{-M^T h} grows like e^{|lambda| h} for damped modes and the
+    // product cancels catastrophically when h is long against them (stiff devices). So it is
+    // used only on h0 = h/2^s with ||M|| h0 <= 1/2, then doubled exactly:
+    //   W(2t) = W(t) + e^{M^T t} W(t) e^{M t},   e^{M 2t} = (e^{M t})^2.
+    int sq = 0;
+    MP h0 = hm;
+    {
+      MP nrm = 0;
+      for (Eigen::Index r = 0; r < nz; ++r) {
+        MP row = 0;
+        for (Eigen::Index c2 = 0; c2 < nz; ++c2) row += abs(M(r, c2));
+        if (row > nrm) nrm = row;
+      }
+      while (nrm * h0 > MP(0.5)) {
+        h0 /= 2;
+        ++sq;
+      }
+    }
     Mat<MP> V = Mat<MP>::Zero(2 * nz, 2 * nz);
-    V.topLeftCorner(nz, nz) = -M.transpose() * hm;
-    V.topRightCorner(nz, nz) = Q * hm;
-    V.bottomRightCorner(nz, nz) = M * hm;
+    V.topLeftCorner(nz, nz) = -M.transpose() * h0;
+    V.topRightCorner(nz, nz) = Q * h0;
+    V.bottomRightCorner(nz, nz) = M * h0;
     Mat<MP> E = expm<MP>(V);
-    Mat<MP> W = E.bottomRightCorner(nz, nz).transpose() * E.topRightCorner(nz, nz);
+    Mat<MP> Ph = E.bottomRightCorner(nz, nz);
+    Mat<MP> W = Ph.transpose() * E.topRightCorner(nz, nz);
+    for (int i = 0; i < sq; ++i) {
+      W = (W + Ph.transpose() * W * Ph).eval();
+      Ph = (Ph * Ph).eval();
+    }
     W = ((W + W.transpose()) / MP(2)).eval();
     pc.W.push_back(to_double(W));
   }
