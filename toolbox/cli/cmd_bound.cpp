@@ -99,7 +99,17 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   j["bound"] = b.infinite ? "inf" : b.value;
   j["omega"] = b.omega ? nlohmann::json(*b.omega) : nlohmann::json(nullptr);
   if (b.infinite) j["enclosure"] = {"inf", "inf"};
-  else j["enclosure"] = {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
+  else if (b.status == Status::numeric && b.method.rfind("grid", 0) == 0) {
+    // a grid maximum is only a lower estimate of the sup: no upper end is known
+    j["enclosure"] = {exact_or_outward(b.lo, 17, -1), "inf"};
+  } else if (b.status == Status::numeric) {
+    // fast path: the stated relative error 1e-13 (not a proof)
+    rational e = abs(b.lo) * rational(1, 10000000000000LL);
+    j["enclosure"] = {decimal_outward(b.lo - e, 17, -1), decimal_outward(b.hi + e, 17, +1)};
+  } else {
+    j["enclosure"] = {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
+  }
+  j["enclosure_rigorous"] = b.status == Status::exact || b.status == Status::certified || b.infinite;
   j["status"] = to_string(b.status);
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
   j["method"] = b.method;
