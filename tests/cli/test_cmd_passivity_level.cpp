@@ -1,0 +1,81 @@
+// `hapstab passivity-level`: known levels (closed forms), the JSON keys, exit codes.
+// G(z) = 1 + 1/(z - 1/2): ISP level = d - c/(1 + a) = 1 - 2/3 = 1/3 (minimum of Re G at theta = pi),
+// OSP level = ISP level of 1/G = 1 - 1/(z + 1/2) -> 1 - 1/(3/2) = 1/3 (at theta = 0); derivation
+// in tests/lmi/test_passivity_level.cpp.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+
+#include "hapstab/numeric/decimal.hpp"
+
+using namespace hapstab;
+
+namespace {
+struct CliRun {
+  int code;
+  std::string out;
+};
+CliRun run(const std::string& args) {
+  std::string cmd = std::string(HAPSTAB_CLI) + " passivity-level " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return {-1, ""};
+  std::string out;
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int st = pclose(p);
+  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+std::string write_tmp(const std::string& name, const std::string& text) {
+  std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+}  // namespace
+
+TEST(CmdPassivityLevel, TransferFunctionIspAndOsp) {
+  for (std::string kind : {"isp", "osp"}) {
+    CliRun r = run("--H \"1 + 1/(z-0.5)\" --T 0.01 --kind " + kind + " --json");
+    ASSERT_EQ(r.code, 0) << r.out;
+    auto j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j.contains("level") && j.contains("method") && j.contains("status") && j.contains("certified"));
+    // LMI level: within the strict threshold + solver tolerance (1e-5, see lmi tests).
+    EXPECT_NEAR(j["level"].get<double>(), 1.0 / 3.0, 1e-5) << r.out;
+    EXPECT_EQ(j["status"], "numeric");
+    EXPECT_TRUE(j["certified"].get<bool>()) << r.out;
+    // the certified lower bound never exceeds the true level 1/3
+    EXPECT_LE(parse_rational(j["lower_bound"].get<std::string>()), rational(1, 3));
+    EXPECT_NEAR(j["frequency"]["level"].get<double>(), 1.0 / 3.0, 1e-13);
+  }
+}
+
+TEST(CmdPassivityLevel, StateSpaceFileMimo) {
+  // blockdiag(1 + 1/(z - 1/2), 2 + 0.5/(z + 0.3)): ISP = min(1/3, 2 - 0.5/0.7) = 1/3.
+  std::string f = write_tmp("pl_mimo.json",
+                            R"({"A": [[0.5, 0], [0, -0.3]], "B": [[1, 0], [0, 1]], "C": [[1, 0], [0, "1/2"]],
+                                "D": [[1, 0], [0, 2]], "T": "1/100"})");
+  CliRun r = run("--ss " + f + " --kind isp --backend csdp --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["level"].get<double>(), 1.0 / 3.0, 1e-5);
+  EXPECT_NE(j["method"].get<std::string>().find("CSDP"), std::string::npos);
+}
+
+TEST(CmdPassivityLevel, BadInputExits2) {
+  EXPECT_EQ(run("--H \"1/(z-0.5)\"").code, 2);                       // no --T
+  EXPECT_EQ(run("--H \"1/(z-0.5)\" --T 0.01 --kind xsp").code, 2);   // bad kind
+  EXPECT_EQ(run("--ss /nonexistent/file.json").code, 2);
+  EXPECT_EQ(run("--H \"z^2/(z-0.5)\" --T 0.01").code, 2);            // not causal
+  std::string bad = write_tmp("pl_bad.json", R"({"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1, 2]], "T": 0.01})");
+  CliRun r = run("--ss " + bad);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("D"), std::string::npos) << r.out;
+  std::string notjson = write_tmp("pl_notjson.json", "{A: 1");
+  EXPECT_EQ(run("--ss " + notjson).code, 2);
+  EXPECT_EQ(run("--ss " + bad + " --H \"1\" --T 1").code, 2);  // both sources
+}
