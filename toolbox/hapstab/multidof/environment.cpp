@@ -90,6 +90,51 @@ StateSpace<rational> mechanical_environment(const MechanicalEnvironment& env, co
   return minimal_ss(c2d(mechanical_impedance(env), T, method));
 }
 
+StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& env, const rational& T) {
+  env.validate();
+  if (T <= 0) throw InputError("environment: sample period T must be > 0");
+  const int m = static_cast<int>(env.kc.size());
+  rational Ks = env.k, Bs = env.B;
+  for (int i = 0; i < m; ++i) {
+    Ks += env.kc[static_cast<size_t>(i)];
+    Bs += env.Bc[static_cast<size_t>(i)];
+  }
+  // backward Euler: y_k = y_{k-1} + T v_k,
+  // M (v_k - v_{k-1})/T = -K_s y_k - B_s v_k + sum_i (k_i + B_i/T) x_{i,k} - (B_i/T) x_{i,k-1}
+  const rational alpha = env.M / T + Ks * T + Bs;
+  MatQ A = MatQ::Zero(m + 2, m + 2), B = MatQ::Zero(m + 2, m), C = MatQ::Zero(m, m + 2), D = MatQ::Zero(m, m);
+  // v_k = ay y + av v + ax' x_prev + cu' u
+  const rational ay = -Ks / alpha, av = env.M / T / alpha;
+  std::vector<rational> ax(static_cast<size_t>(m)), cu(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    ax[static_cast<size_t>(i)] = -(env.Bc[static_cast<size_t>(i)] / T) / alpha;
+    cu[static_cast<size_t>(i)] = (env.kc[static_cast<size_t>(i)] + env.Bc[static_cast<size_t>(i)] / T) / alpha;
+  }
+  // row 1: v_k
+  A(1, 0) = ay;
+  A(1, 1) = av;
+  for (int i = 0; i < m; ++i) {
+    A(1, 2 + i) = ax[static_cast<size_t>(i)];
+    B(1, i) = cu[static_cast<size_t>(i)];
+  }
+  // row 0: y_k = y + T v_k
+  A.row(0) = T * A.row(1);
+  A(0, 0) += 1;
+  B.row(0) = T * B.row(1);
+  // x_k = u
+  for (int i = 0; i < m; ++i) B(2 + i, i) = 1;
+  // f_i = (k_i + B_i/T) u_i - k_i y - (k_i T + B_i) v_k - (B_i/T) x_prev_i
+  for (int i = 0; i < m; ++i) {
+    const rational ki = env.kc[static_cast<size_t>(i)], bi = env.Bc[static_cast<size_t>(i)];
+    C.row(i) = -(ki * T + bi) * A.row(1);
+    D.row(i) = -(ki * T + bi) * B.row(1);
+    C(i, 0) -= ki;
+    C(i, 2 + i) -= bi / T;
+    D(i, i) += ki + bi / T;
+  }
+  return {A, B, C, D, T};
+}
+
 bool schur_stable(const MatQ& A) {
   if (A.rows() == 0) return true;
   P p = charpoly(A);

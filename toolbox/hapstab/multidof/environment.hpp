@@ -51,6 +51,11 @@ StateSpace<rational> minimal_ss(const TransferMatrix& Hz);
 StateSpace<rational> mechanical_environment(const MechanicalEnvironment& env, const rational& T,
                                             C2dMethod method = C2dMethod::backward_euler);
 
+/// The same environment discretised by backward Euler DIRECTLY in state space (no transfer
+/// matrices; for large m): state (y_{k-1}, v_{k-1}, x_{k-1}) of the mass and the contacts,
+/// m + 2 states (not minimal: the contact delays are kept even when B_i = 0), exact.
+StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& env, const rational& T);
+
 /// Exact Schur stability (every eigenvalue of A in |z| < 1): Schur-Cohn-Jury recursion on the
 /// exact characteristic polynomial. Returns false also for eigenvalues ON the unit circle.
 bool schur_stable(const MatQ& A);

@@ -1,0 +1,30 @@
+// hapstab/multidof/assumptions.hpp -- Assumption 1 of paper 000, checked on the data.
+//
+//  (b) operator passivity of a continuous MIMO H(s) (velocity -> force impedance): every entry
+//      stable (exact Routh-Hurwitz on its denominator) and the Hermitian part
+//      He(jw) = (H(jw) + H(jw)^*)/2 positive semidefinite for ALL real w. Certified exactly:
+//      He(jw) times the positive common denominator prod |D_ij(jw)|^2 is a Hermitian matrix of
+//      polynomials in w; it is PSD iff every principal minor (a real polynomial in w) is >= 0
+//      on R, which Sturm root isolation decides exactly (sign at a rational point of every gap
+//      between real roots).
+//  (a) device OSP levels: a mass-damper 1/(m s + b) has OSP level b (storage 1/2 m v^2:
+//      d/dt(1/2 m v^2) = v f - b v^2); the levels used in the analysis are reported.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hapstab/lti/realization.hpp"
+
+namespace hapstab::multidof {
+
+struct PassivityCheck {
+  bool passive = false;
+  bool certified = false;   ///< exact (Routh + Sturm) verdict
+  std::string detail;       ///< which minor / entry fails, or what was proven
+};
+
+/// H must be square, continuous (Domain::s), proper entries. Up to 4 x 4 (Leibniz minors).
+PassivityCheck operator_passive(const TransferMatrix& H);
+
+}  // namespace hapstab::multidof
