@@ -1,0 +1,52 @@
+// hapstab/scene/scene.hpp -- scene files (TOML) -> models. A scene names only the blocks a
+// study needs; examples/README.md documents the schema. This module reads the common part
+// (T, parameters, devices, operators, environment, coupling, contact, delay, inputs, initial
+// state) and the [simulate] section; other analyses read their own sections from `root`
+// (unknown top-level sections are kept for them, unknown keys inside a known section are errors).
+//
+// Every error is an InputError naming the file, the key and what is wrong, e.g.
+//   "wall.toml: operator[0].tf: unstable continuous block claimed passive (pole at s = 3)".
+// Numbers are exact: "0.001" or "1/1000" (strings) or TOML integers; TOML floats are refused
+// where an exact value matters (they are binary approximations).
+#pragma once
+
+#include <map>
+#include <string>
+#include <toml++/toml.h>
+
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/sim/loop.hpp"
+
+namespace hapstab::scene {
+
+/// The [simulate] section (all optional but one of duration/steps).
+struct SimulateSection {
+  long steps = 0;               ///< from `steps` or `duration`/T (rounded up)
+  long record_every = 1;
+  int substeps = 1;
+  double window_from = 0, window_to = -1;
+  double max_velocity = 1e4;
+  int watch_dof = -1;
+  bool energy = true;
+  std::vector<std::string> plots = {"position", "velocity", "energy"};
+  bool present = false;
+};
+
+struct Scene {
+  std::string file;  ///< for messages
+  std::string name, description;
+  rational T = 0;
+  std::map<std::string, rational> parameters;
+  sim::LoopSpec loop;
+  SimulateSection simulate;
+  toml::table root;  ///< the whole file, for sections other modules define
+};
+
+/// Parses and validates a scene file. `overrides` replace [parameters] (CLI --set).
+Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides = {});
+/// Same from text (`file` names it in messages).
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::map<std::string, rational>& overrides = {},
+                  const std::string& base_dir = ".");
+
+}  // namespace hapstab::scene
