@@ -1,0 +1,360 @@
+// `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE]`:
+// runs a scene's sampled-data loop with the exact-ZOH simulator (sim/) and writes
+//   DIR/samples.csv   time series at the sample instants (row 1: names, row 2: units)
+//   DIR/fine.csv      the exact intersample grid (when [simulate] substeps > 1)
+//   DIR/plot.gp       the gnuplot script that draws them (gnuplot plot.gp, in DIR)
+//   DIR/summary.json  {diverged, max_velocity, energy_generated, limit_cycle: {period, amplitude} | null, ...}
+// It also registers the simulator's figures (experiments of paper 001 and 002) with
+// `hapstab figure` / `hapstab reproduce`.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "cli/figure.hpp"
+#include "hapstab/contact/limit_cycle.hpp"
+#include "hapstab/lti/discretize.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/scene/scene.hpp"
+#include "hapstab/sim/simulator.hpp"
+
+namespace hapstab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Opts {
+  std::string scene, out;
+  bool json = false, quiet = false, force = false;
+  double max_mb = 200;
+  std::vector<std::string> sets;
+};
+
+nlohmann::json num_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+nlohmann::json summary_json(const sim::Summary& s, const scene::Scene& sc) {
+  nlohmann::json j;
+  j["diverged"] = s.diverged;
+  j["max_velocity"] = num_or_null(s.max_velocity);
+  j["energy_generated"] = num_or_null(s.energy_generated);
+  if (s.limit_cycle) {
+    j["limit_cycle"] = {{"period", s.limit_cycle->period}, {"amplitude", s.limit_cycle->amplitude}};
+    if (s.limit_cycle->period_samples > 0) j["limit_cycle"]["period_samples"] = s.limit_cycle->period_samples;
+  } else {
+    j["limit_cycle"] = nullptr;
+  }
+  j["trend"] = s.trend;
+  j["steps_run"] = s.steps_run;
+  j["min_port_energy"] = num_or_null(s.min_port_energy);
+  j["port_energy"] = s.e_port;
+  j["actuator_energy"] = s.e_act;
+  j["passivity_observer"] = s.e_po;
+  j["status"] = "numeric";
+  j["method"] = "exact ZOH discretisation (50-digit Van Loan exponentials rounded to double), double recursion";
+  j["scene"] = sc.file;
+  j["T"] = to_decimal(sc.T, 17);
+  return j;
+}
+
+void write_csv(const fs::path& dir, const sim::SimResult& r) {
+  const auto& S = r.samples;
+  const int N = S.N;
+  {
+    std::ofstream f(dir / "samples.csv");
+    if (!f) throw InputError("--out: cannot write " + (dir / "samples.csv").string());
+    f << "t";
+    for (int j = 0; j < N; ++j)
+      f << ",x" << j << ",v" << j << ",u" << j << ",fh" << j << ",E_port" << j << ",E_act" << j << ",E_po" << j
+        << ",storage" << j;
+    f << "\ns";
+    for (int j = 0; j < N; ++j) f << ",m,m/s,N,N,J,J,J,J";
+    f << "\n" << std::setprecision(17);
+    for (size_t i = 0; i < S.rows(); ++i) {
+      f << S.t[i];
+      for (int j = 0; j < N; ++j) {
+        const size_t k = i * size_t(N) + size_t(j);
+        f << ',' << S.x[k] << ',' << S.v[k] << ',' << S.u[k] << ',' << S.fh[k] << ',' << S.e_port[k] << ','
+          << S.e_act[k] << ',' << S.e_po[k] << ',';
+        if (std::isfinite(S.storage[k])) f << S.storage[k];
+        else f << "NaN";
+      }
+      f << '\n';
+    }
+  }
+  if (r.fine.rows() > 0) {
+    const auto& F = r.fine;
+    std::ofstream f(dir / "fine.csv");
+    f << "t";
+    for (int j = 0; j < N; ++j) f << ",x" << j << ",v" << j;
+    f << "\ns";
+    for (int j = 0; j < N; ++j) f << ",m,m/s";
+    f << "\n" << std::setprecision(17);
+    for (size_t i = 0; i < F.rows(); ++i) {
+      f << F.t[i];
+      for (int j = 0; j < N; ++j) f << ',' << F.x[i * size_t(N) + size_t(j)] << ',' << F.v[i * size_t(N) + size_t(j)];
+      f << '\n';
+    }
+  }
+}
+
+void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine) {
+  std::ofstream g(dir / "plot.gp");
+  g << "# Draws the series of `hapstab simulate` (scene " << sc.file << ").\n"
+    << "# Run in this folder: gnuplot plot.gp   (or gnuplot -e \"fmt='pdf'\" plot.gp; fmt: png pdf svg tex)\n"
+    << "if (!exists(\"fmt\")) fmt = 'png'\n"
+    << "set datafile separator ','\nset datafile missing 'NaN'\n"
+    << "set grid\nset key box opaque\nset xlabel 't [s]'\n"
+    << "ext = (fmt eq 'tex') ? 'tex' : fmt\n"
+    << "if (fmt eq 'png') set terminal pngcairo size 1600,1000 enhanced font 'DejaVu Sans,20' linewidth 2\n"
+    << "if (fmt eq 'pdf') set terminal pdfcairo size 6in,3.75in enhanced font 'DejaVu Sans,10'\n"
+    << "if (fmt eq 'svg') set terminal svg size 1200,750 enhanced background rgb 'white'\n"
+    << "if (fmt eq 'tex') set terminal cairolatex pdf size 5in,3.1in\n";
+  auto cols = [&](const char* what, int off, const char* ylabel, bool with_fine) {
+    g << "set output '" << what << ".'.ext\nset ylabel '" << ylabel << "'\nset title '" << sc.name << "' noenhanced\nplot ";
+    for (int j = 0; j < N; ++j) {
+      if (j) g << ", ";
+      if (with_fine && fine)
+        g << "'fine.csv' skip 2 using 1:" << (off == 2 ? 2 + 2 * j : 3 + 2 * j) << " with lines lw 1 title 'DOF " << j
+          << " (exact, between samples)', ";
+      g << "'samples.csv' skip 2 using 1:" << (off + 8 * j) << " with " << (with_fine && fine ? "points pt 7 ps 0.6" : "lines")
+        << " title 'DOF " << j << (with_fine && fine ? " at samples" : "") << "'";
+    }
+    g << "\n";
+  };
+  for (const auto& p : sc.simulate.plots) {
+    if (p == "position") cols("position", 2, "x [m]", true);
+    if (p == "velocity") cols("velocity", 3, "v [m/s]", true);
+    if (p == "force") cols("force", 4, "u [N]", false);
+    if (p == "energy") {
+      g << "set output 'energy.'.ext\nset ylabel 'energy [J]'\nset title 'port energies' noenhanced\nplot ";
+      for (int j = 0; j < N; ++j) {
+        if (j) g << ", ";
+        g << "'samples.csv' skip 2 using 1:" << 6 + 8 * j << " with lines title 'DOF " << j << ": {/Symbol \\362} f_h v dt', "
+          << "'samples.csv' skip 2 using 1:" << 8 + 8 * j << " with lines dt 2 title 'DOF " << j << ": passivity observer', "
+          << "'samples.csv' skip 2 using 1:" << 7 + 8 * j << " with lines dt 3 title 'DOF " << j << ": {/Symbol \\362} u v dt'";
+      }
+      g << "\n";
+    }
+  }
+}
+
+int run(const Opts& o) {
+  auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+  if (!sc.simulate.present)
+    throw InputError(o.scene + ": simulate: missing; add [simulate] with duration = \"...\" (seconds) or steps = N");
+  const auto& S = sc.simulate;
+  std::unique_ptr<sim::Simulator> simulator;
+  try {
+    simulator = std::make_unique<sim::Simulator>(sc.loop);
+  } catch (const InputError& e) {
+    throw InputError(o.scene + ": " + e.what());
+  }
+  const int N = simulator->loop().N;
+  // Output size check before running.
+  const double rows = S.record_every > 0 ? double(S.steps) / double(S.record_every) + 1 : 0;
+  double fine_rows = 0;
+  if (S.substeps > 1 && S.window_to >= S.window_from) {
+    const double T = to_real<double>(sc.T);
+    const double span = std::min(S.window_to, double(S.steps) * T) - S.window_from;
+    fine_rows = std::max(0.0, span / T + 1) * S.substeps;
+  }
+  const double bytes = rows * (1 + 8 * N) * 24 + fine_rows * (1 + 2 * N) * 24;
+  if (bytes > o.max_mb * 1e6 && !o.force) {
+    std::ostringstream os;
+    os << o.scene << ": simulate: the run would write about " << std::fixed << std::setprecision(0) << bytes / 1e6
+       << " MB, more than the limit of " << o.max_mb
+       << " MB; raise simulate.record_every, narrow simulate.window, or pass --force (or --max-output MB)";
+    throw InputError(os.str());
+  }
+  sim::SimOptions so;
+  so.steps = S.steps;
+  so.record_every = S.record_every;
+  so.substeps = S.substeps;
+  so.fine_from = S.window_from;
+  so.fine_to = S.window_to;
+  so.max_velocity = S.max_velocity;
+  so.watch_dof = S.watch_dof;
+  so.energy = S.energy;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!o.quiet && S.steps >= 2000000)
+    so.progress = [](double f) {
+      std::cerr << "\rsimulate: " << int(f * 100 + 0.5) << "%" << std::flush;
+      if (f >= 1) std::cerr << "\n";
+    };
+  sim::SimResult r;
+  try {
+    r = simulator->run(so);
+  } catch (const InputError& e) {
+    throw InputError(o.scene + ": " + e.what());
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  fs::path dir = o.out;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError("--out: cannot create '" + o.out + "': " + ec.message());
+  write_csv(dir, r);
+  write_gnuplot(dir, sc, N, r.fine.rows() > 0);
+  auto j = summary_json(r.summary, sc);
+  j["seconds"] = secs;
+  {
+    std::ofstream f(dir / "summary.json");
+    f << j.dump(2) << "\n";
+  }
+  if (o.json) {
+    print_json(j);
+  } else if (!o.quiet) {
+    const auto& s = r.summary;
+    std::cout << sc.name << ": " << s.steps_run << " steps in " << secs << " s\n"
+              << "  diverged          " << (s.diverged ? "yes" : "no") << "\n"
+              << "  max |v|           " << s.max_velocity << " m/s\n"
+              << "  energy generated  " << s.energy_generated << " J  (max over t of -sum_j int f_h v dt; numeric)\n"
+              << "  trend             " << s.trend << "\n";
+    if (s.limit_cycle)
+      std::cout << "  limit cycle       period " << s.limit_cycle->period << " s, amplitude " << s.limit_cycle->amplitude
+                << " m" << (s.limit_cycle->period_samples > 0 ? " (sampled sequence exactly periodic)" : "") << "\n";
+    else
+      std::cout << "  limit cycle       none\n";
+    std::cout << "  files             " << (dir / "samples.csv").string() << ", plot.gp, summary.json\n";
+  }
+  return exit_ok;
+}
+
+
+// ---- figures of the simulator's experiments (hapstab figure / reproduce) ------------------
+fs::path examples_dir() { return plots_dir().parent_path() / "examples"; }
+
+sim::SimResult run_scene(const scene::Scene& sc, long record_every = 1) {
+  sim::Simulator simulator(sc.loop);
+  sim::SimOptions so;
+  so.steps = sc.simulate.steps;
+  so.record_every = record_every;
+  so.substeps = sc.simulate.substeps;
+  so.fine_from = sc.simulate.window_from;
+  so.fine_to = sc.simulate.window_to;
+  so.max_velocity = sc.simulate.max_velocity;
+  return simulator.run(so);
+}
+
+void write_tightness(const fs::path& dir) {
+  for (const char* side : {"below", "above"}) {
+    auto sc = scene::load_scene((examples_dir() / (std::string("001_tightness_") + side + ".toml")).string());
+    sc.simulate.steps = std::min<long>(sc.simulate.steps, 300);
+    sc.simulate.substeps = 1;
+    auto r = run_scene(sc);
+    std::ofstream f(dir / (std::string("sim_tightness_") + side + ".dat"));
+    f << "# t  v  int f_h v dt   (" << sc.name << ")\n" << std::setprecision(12);
+    for (size_t i = 0; i < r.samples.rows(); ++i) f << r.samples.t[i] << ' ' << r.samples.v[i] << ' ' << r.samples.e_port[i] << '\n';
+  }
+  // Random passive operators Z_O = mo s + bo + ko/s at b = 1.01 b*.
+  auto sc = scene::load_scene((examples_dir() / "001_tightness_above.toml").string());
+  sc.simulate.steps = 300;
+  std::mt19937 g(2024);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<std::vector<double>> cols;
+  std::vector<double> t;
+  for (int i = 0; i < 24; ++i) {
+    auto spec = sc.loop;
+    spec.operators = {sim::mass_spring_damper_operator("random", 0, exact_rational(1e-3 * U(g)), exact_rational(5 * U(g)),
+                                                       exact_rational(2e5 * U(g)))};
+    sim::Simulator simulator(spec);
+    sim::SimOptions so;
+    so.steps = sc.simulate.steps;
+    auto r = simulator.run(so);
+    if (t.empty()) t = r.samples.t;
+    cols.push_back(r.samples.e_port);
+  }
+  std::ofstream f(dir / "sim_tightness_random.dat");
+  f << std::setprecision(12);
+  for (size_t i = 0; i < t.size(); ++i) {
+    f << t[i];
+    for (const auto& c : cols) f << ' ' << (i < c.size() ? c[i] : 0.0);
+    f << '\n';
+  }
+}
+
+void write_bias_wall(const fs::path& dir) {
+  auto sc = scene::load_scene((examples_dir() / "002_bias_wall.toml").string());
+  auto r = run_scene(sc);
+  // The reduced discrete model of paper 002 Fig. 2: H = E(z) P_zoh(z), r = f_bias / E(1), with
+  // P(s) = 1/((m+mo) s^2 + (b+bo) s + ko) (device + operator, force -> position), discretised
+  // exactly for the hold (50 digits, rounded to rationals 1e-50 away).
+  const auto& p = sc.parameters;
+  const rational M = p.at("m") + p.at("mo"), bt = p.at("b") + p.at("bo"), k = p.at("ko");
+  Mat<mp50> A(2, 2), B(2, 1);
+  A << 0, 1, mp50(-k / M), mp50(-bt / M);
+  B << 0, mp50(1 / M);
+  auto zp = zoh_pair<mp50>(A, B, to_real<mp50>(sc.T));
+  StateSpace<rational> Pd;
+  Pd.A = Mat<rational>(2, 2);
+  Pd.B = Mat<rational>(2, 1);
+  for (int i = 0; i < 4; ++i) Pd.A.data()[i] = exact_rational(zp.Phi.data()[i]);
+  for (int i = 0; i < 2; ++i) Pd.B.data()[i] = exact_rational(zp.Gamma.data()[i]);
+  Pd.C = Mat<rational>(1, 2);
+  Pd.C << 1, 0;
+  Pd.D = Mat<rational>::Zero(1, 1);
+  Pd.T = sc.T;
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = sc.T;
+  po.parameters = p;
+  const auto E = parse_tf("K + B*(z-1)/(T*z)", po);
+  const auto H = series(E, ss2tf(Pd)(0, 0));
+  const rational E1 = p.at("K");
+  const double rr = to_real<double>(p.at("F") / E1);
+  auto theta = contact::simulate_fig2(H, 1.0, rr, long(r.samples.rows()));
+  const double T = to_real<double>(sc.T);
+  const double t0 = sc.simulate.window_from, t1 = sc.simulate.window_to;
+  std::ofstream fs_(dir / "sim_bias_wall_samples.dat"), ff(dir / "sim_bias_wall_fine.dat");
+  fs_ << "# t  x(kT) full model  theta_k reduced model (paper 002 Fig. 2)\n" << std::setprecision(15);
+  double maxdiff = 0, scale = 0, pen_s = 0, pen_f = 0;
+  for (size_t i = 0; i < r.samples.rows() && i < theta.size(); ++i) {
+    maxdiff = std::max(maxdiff, std::fabs(r.samples.x[i] - theta[i]));
+    scale = std::max(scale, std::fabs(theta[i]));
+    if (r.samples.t[i] >= t0 && r.samples.t[i] <= t1) {
+      fs_ << r.samples.t[i] << ' ' << r.samples.x[i] << ' ' << theta[i] << '\n';
+      pen_s = std::max(pen_s, r.samples.x[i]);
+    }
+  }
+  ff << "# t  x(t) full model, exact between samples\n" << std::setprecision(15);
+  for (size_t i = 0; i < r.fine.rows(); ++i) {
+    ff << r.fine.t[i] << ' ' << r.fine.x[i] << '\n';
+    pen_f = std::max(pen_f, r.fine.x[i]);
+  }
+  fs_ << "# max |x(kT) - theta_k| / max|theta| = " << maxdiff / scale << " over " << theta.size() << " samples (T = " << T
+      << ")\n# max penetration at samples " << pen_s << " m, between samples " << pen_f << " m\n";
+}
+
+const RegisterFigure fig_tightness({"sim_tightness", "001",
+                                    "Tightness of the passivity bound b* = KT/2 + B: a passive operator tuned to wT = pi "
+                                    "destabilises b = 0.99 b*; at 1.01 b* no passive operator draws energy out",
+                                    &write_tightness});
+const RegisterFigure fig_bias_wall({"sim_bias_wall", "002",
+                                    "Operator pressing on a sampled wall with a bias force: the full sampled-data model "
+                                    "(between samples) against the reduced discrete model of Fig. 2",
+                                    &write_bias_wall});
+
+const Register simulate_cmd({"simulate",
+                             "Simulate a scene's sampled-data loop exactly (ZOH) and write CSV, gnuplot script, summary",
+                             [](CLI::App& app) {
+                               auto o = std::make_shared<Opts>();
+                               app.add_option("--scene", o->scene, "Scene file (TOML; see examples/README.md)")->required();
+                               app.add_option("--out", o->out, "Output folder")->required();
+                               app.add_flag("--json", o->json, "Print the summary as JSON");
+                               app.add_flag("--quiet", o->quiet, "No progress and no human summary");
+                               app.add_flag("--force", o->force, "Write even when the output exceeds --max-output");
+                               app.add_option("--max-output", o->max_mb, "Output size limit in MB (default 200)");
+                               app.add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
+                               return [o]() { return run(*o); };
+                             }});
+
+}  // namespace
+}  // namespace hapstab::cli
