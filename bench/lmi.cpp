@@ -1,0 +1,111 @@
+// bench/lmi.cpp -- LMI layer speed: a problem of Theorem 5's shape (paper 000, (16)) solved
+// and certified, and its growth with the number of DOF m, DSDP beside CSDP in the same run.
+//
+// Problem (Theorem 5's structure, with a random stable m-input environment E of n = 4m
+// states (m = 2: blocks 10x10 and 4x4, 43 scalar variables) for the size benchmark, n = 2m
+// for the scaling sweep):
+//   P > 0,  X in G(m; 1..1) > 0,  Q_V in BD(m; 1..1) > 0,  Q_E symmetric,
+//   [[A'PA - P, A'PB - C'X/2], [., B'PB - (XD + D'X)/2 - Q_E]] < 0,
+//   [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0,  X <= 10 I (bounded),
+// feasibility with the best margin. (The real Ê has an accumulator with eigenvalues at 1 and
+// needs facial_reduce; a stable E keeps the timing about the solver.)
+// Counters: vars, block (largest LMI size), feasible, certified (1/0),
+// bits (rounding that passed the exact check), min_eig (smallest eigenvalue of the LMIs at
+// the solution, original coordinates: the certification margin reached).
+//
+//   bench_lmi --benchmark_format=json > lmi.json;  bench/chart-lmi lmi.json OUTDIR
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Eigenvalues>
+#include <random>
+
+#include "hapstab/lmi/solve.hpp"
+
+using namespace hapstab::lmi;
+using Eigen::MatrixXd;
+
+namespace {
+
+struct Problem {
+  Program prog;
+  int vars = 0, block = 0;
+};
+
+Problem theorem5_shape(int m, int n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::normal_distribution<double> N(0, 1);
+  MatrixXd A(n, n), B(n, m), C(m, n), D(m, m);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) A(i, j) = N(g);
+  A *= 0.8 / Eigen::EigenSolver<MatrixXd>(A, false).eigenvalues().cwiseAbs().maxCoeff();
+  // A strongly input-strictly-passive environment (D = 2I, small B, C) so that (16) is
+  // strictly feasible and the benchmark measures a solve + certificate, not an infeasibility.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) B(i, j) = 0.3 * N(g), C(j, i) = 0.3 * N(g);
+  D = 2.0 * MatrixXd::Identity(m, m);
+  Problem p;
+  auto P = p.prog.NewSymmetric(n, "P");
+  auto X = p.prog.NewScalarIdentityBlocks(std::vector<int>(static_cast<size_t>(m), 1), "X");
+  auto QV = p.prog.NewBlockDiagonal(std::vector<int>(static_cast<size_t>(m), 1), "Q_V");
+  auto QE = p.prog.NewSymmetric(m, "Q_E");
+  const double DeltaD = 1.37;
+  Expr Pe(P), Xe(X), QVe(QV), QEe(QE);
+  p.prog.AddLmi("P > 0", Pe);
+  p.prog.AddLmi("X > 0", Xe);
+  p.prog.AddLmi("X <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - Xe, Strictness::nonstrict);
+  p.prog.AddLmi("Q_V > 0", QVe);
+  Expr M11 = A.transpose() * Pe * A - Pe;
+  Expr M12 = A.transpose() * Pe * B - 0.5 * (C.transpose() * Xe);
+  Expr M22 = B.transpose() * Pe * B - 0.5 * (Xe * D + D.transpose() * Xe) - QEe;
+  p.prog.AddLmi("(16) first", -blocks({{M11, M12}, {Expr(), M22}}));
+  p.prog.AddLmi("(16) second", {{DeltaD * Xe - QEe, -QEe}, {Expr(), QVe - QEe}});
+  p.vars = p.prog.num_scalars();
+  p.block = n + m;
+  return p;
+}
+
+void run(benchmark::State& st, Backend b, int m, int n, bool certify) {
+  Problem p = theorem5_shape(m, n, 1234u + static_cast<unsigned>(m));
+  Options o;
+  o.backend = b;
+  o.certify = certify;
+  Result r;
+  for (auto _ : st) {
+    r = Solve(p.prog, o);
+    benchmark::DoNotOptimize(r.margin);
+  }
+  st.counters["vars"] = p.vars;
+  st.counters["block"] = p.block;
+  st.counters["m"] = m;
+  st.counters["feasible"] = r.is_success();
+  st.counters["certified"] = r.certified();
+  st.counters["bits"] = r.rounding_bits;
+  double me = INFINITY;
+  for (double e : r.min_eigenvalue) me = std::min(me, e);
+  st.counters["min_eig"] = me;
+  st.counters["err_max"] = std::max({std::abs(r.dimacs[0]), std::abs(r.dimacs[1]), std::abs(r.dimacs[3]),
+                                     std::abs(r.dimacs[4]), std::abs(r.dimacs[5])});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (Backend b : {Backend::dsdp, Backend::csdp}) {
+    const std::string bn = b == Backend::dsdp ? "dsdp" : "csdp";
+    benchmark::RegisterBenchmark(("Theorem5Size/solve_certify/" + bn).c_str(),
+                                 [b](benchmark::State& st) { run(st, b, 2, 8, true); })
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Theorem5Size/solve_only/" + bn).c_str(),
+                                 [b](benchmark::State& st) { run(st, b, 2, 8, false); })
+        ->Unit(benchmark::kMillisecond);
+    for (int m : {2, 4, 8, 16, 32}) {
+      auto* bm = benchmark::RegisterBenchmark(("Scaling/" + bn + "/" + std::to_string(m)).c_str(),
+                                              [b, m](benchmark::State& st) { run(st, b, m, 2 * m, true); });
+      bm->Unit(benchmark::kMillisecond);
+      if (m >= 16) bm->Iterations(1);  // seconds per solve: one timed run is enough
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}
