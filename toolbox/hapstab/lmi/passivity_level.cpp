@@ -116,6 +116,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
     prog.SetMinimize(-Lx);
     Result r = Solve(prog, opt);
+    out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
     if (!r.is_success()) {
       out.status = "failed";
       out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
@@ -137,6 +138,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     prog.AddLmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
     prog.SetMinimize(mx);
     Result r = Solve(prog, opt);
+    out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
     if (!r.is_success()) {
       out.status = "failed";
       out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) +
@@ -156,6 +158,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
   prog.AddLmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
   prog.SetMinimize(-px);
   Result r = Solve(prog, opt);
+  out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
   if (!r.is_success()) {
     out.status = "failed";
     out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
