@@ -9,16 +9,18 @@ if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
 set multiplot layout 1,2
 set xlabel (tex ? '$t$ [s]' : 't [s]')
-set ylabel (tex ? '$v$ [m/s]' : 'v [m/s]')
+set ylabel (tex ? '$|v|$ [m/s]' : '|v| [m/s]')
 set title 'velocity, tuned operator'
-set key top left
-plot datadir.'/sim_tightness_below.dat' using 1:2 with lines ls 2 title 'b = 0.99 b*', \
-     datadir.'/sim_tightness_above.dat' using 1:2 with lines ls 1 title 'b = 1.01 b*'
+set key bottom left
+set logscale y
+set format y '10^{%L}'
+plot datadir.'/sim_tightness_below.dat' using 1:(abs($2)) with lines ls 2 title 'b = 0.99 b*', \
+     datadir.'/sim_tightness_above.dat' using 1:(abs($2)) with lines ls 1 title 'b = 1.01 b*'
+unset logscale y
+set format y '%g'
 set ylabel (tex ? '$\int f_h v\,dt$ [J]' : 'energy into the interface [J]')
 set title 'human-port energy'
 set key bottom left
-stats datadir.'/sim_tightness_random.dat' using 0 nooutput
-ncol = 0
 stats datadir.'/sim_tightness_random.dat' matrix nooutput
 ncol = STATS_size_x
 plot datadir.'/sim_tightness_below.dat' using 1:3 with lines ls 2 title 'b = 0.99 b*, tuned', \

@@ -247,7 +247,6 @@ sim::SimResult run_scene(const scene::Scene& sc, long record_every = 1) {
 void write_tightness(const fs::path& dir) {
   for (const char* side : {"below", "above"}) {
     auto sc = scene::load_scene((examples_dir() / (std::string("001_tightness_") + side + ".toml")).string());
-    sc.simulate.steps = std::min<long>(sc.simulate.steps, 300);
     sc.simulate.substeps = 1;
     auto r = run_scene(sc);
     std::ofstream f(dir / (std::string("sim_tightness_") + side + ".dat"));
@@ -256,7 +255,6 @@ void write_tightness(const fs::path& dir) {
   }
   // Random passive operators Z_O = mo s + bo + ko/s at b = 1.01 b*.
   auto sc = scene::load_scene((examples_dir() / "001_tightness_above.toml").string());
-  sc.simulate.steps = 300;
   std::mt19937 g(2024);
   std::uniform_real_distribution<double> U(0, 1);
   std::vector<std::vector<double>> cols;

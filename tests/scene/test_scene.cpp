@@ -1,0 +1,126 @@
+// Scene files (scene/scene.hpp): the common schema, exact numbers, and errors that name the
+// file, the key and what is wrong.
+#include <gtest/gtest.h>
+
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/scene/scene.hpp"
+
+using namespace hapstab;
+using hapstab::scene::parse_scene;
+
+namespace {
+
+const char* kWall = R"TOML(
+[scene]
+name = "wall"
+T = "1/1000"
+[parameters]
+K = "20000"
+B = "5"
+bstar = "K*T/2 + B"
+[[device]]
+name = "haptic"
+m = "1/10"
+b = "bstar"
+[[operator]]
+name = "hand"
+dofs = ["haptic"]
+m = "1/5"
+b = "2"
+k = "500"
+[environment]
+tf = "K + B*(z-1)/(T*z)"
+[contact]
+dofs = ["haptic"]
+[delay]
+samples = "3/2"
+[[input]]
+type = "bias"
+dof = "haptic"
+force = "2"
+[simulate]
+duration = "1/2"
+)TOML";
+
+// Returns the InputError message (or "" when it parsed).
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene(text, "s.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replace(std::string s, const std::string& a, const std::string& b) {
+  auto p = s.find(a);
+  EXPECT_NE(p, std::string::npos) << a;
+  return s.replace(p, a.size(), b);
+}
+
+}  // namespace
+
+TEST(Scene, ParsesTheWallExactly) {
+  auto sc = parse_scene(kWall, "wall.toml");
+  EXPECT_EQ(sc.T, rational(1, 1000));
+  EXPECT_EQ(sc.parameters.at("bstar"), rational(15));  // KT/2 + B = 10 + 5, exact
+  ASSERT_EQ(sc.loop.devices.size(), 1u);
+  EXPECT_EQ(sc.loop.devices[0].G.A(0, 0), rational(-150));  // -b/m
+  ASSERT_TRUE(sc.loop.environment);
+  // E(z) realised exactly: E(1) = K, E(inf) = K + B/T
+  EXPECT_EQ(sc.loop.environment->D(0, 0), rational(25000));
+  EXPECT_EQ(sc.loop.delay, rational(3, 2000));
+  EXPECT_EQ(sc.simulate.steps, 500);
+  EXPECT_EQ(sc.loop.contact, std::vector<int>{0});
+  EXPECT_EQ(sc.loop.biases.size(), 1u);
+}
+
+TEST(Scene, SetOverridesParametersExactly) {
+  auto sc = parse_scene(kWall, "wall.toml", {{"K", rational(30000)}});
+  EXPECT_EQ(sc.parameters.at("bstar"), rational(20));
+}
+
+// An s-domain environment discretised by backward Euler is the z-form exactly:
+// K + B s at s = (z-1)/(Tz) is K + B(z-1)/(Tz) (improper in s, proper in z).
+TEST(Scene, SDomainEnvironmentByBackwardEuler) {
+  auto a = parse_scene(kWall, "a.toml");
+  auto b = parse_scene(replace(kWall, "tf = \"K + B*(z-1)/(T*z)\"", "domain = \"s\"\nmethod = \"backward_euler\"\ntf = \"K + B*s\""),
+                       "b.toml");
+  auto ta = ss2tf(*a.loop.environment)(0, 0), tb = ss2tf(*b.loop.environment)(0, 0);
+  EXPECT_TRUE(ta.num() == tb.num() && ta.den() == tb.den()) << ta.to_string() << " vs " << tb.to_string();
+}
+
+TEST(Scene, ErrorsNameFileKeyAndProblem) {
+  struct Case {
+    std::string from, to, key, what;
+  };
+  const std::vector<Case> cases = {
+      {"dofs = [\"haptic\"]\nm = \"1/5\"", "dofs = [\"nope\"]\nm = \"1/5\"", "operator[0].dofs", "'nope'"},
+      {"T = \"1/1000\"", "T = \"0\"", "scene.T", "must be > 0"},
+      {"T = \"1/1000\"", "T = \"-1/1000\"", "scene.T", "must be > 0"},
+      {"duration = \"1/2\"", "steps = 0", "simulate.steps", "must be > 0"},
+      {"duration = \"1/2\"", "duration = \"0\"", "simulate.duration", "must be > 0"},
+      {"m = \"1/5\"\nb = \"2\"\nk = \"500\"", "tf = \"1/(s-3)\"", "operator[0]", "unstable continuous block claimed passive"},
+      {"tf = \"K + B*(z-1)/(T*z)\"", "tf = [[\"K\", \"0\"], [\"0\", \"K\"]]", "environment", "incompatible dimensions"},
+      {"m = \"1/10\"", "m = 0.1", "device[0].m", "exact"},
+      {"force = \"2\"", "force = \"2\"\ncolour = \"red\"", "input[0].colour", "unknown key"},
+      {"tf = \"K + B*(z-1)/(T*z)\"", "tf = \"K + Q*(z-1)\"", "environment.tf", "Q"},
+      {"tf = \"K + B*(z-1)/(T*z)\"", "tf = \"K*z\"", "environment.tf", "improper"},
+      {"dof = \"haptic\"\nforce", "dof = 3\nforce", "input[0].dof", "does not exist"},
+  };
+  for (const auto& c : cases) {
+    const std::string msg = error_of(replace(kWall, c.from, c.to));
+    EXPECT_NE(msg.find("s.toml"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(c.key), std::string::npos) << "key " << c.key << " not in: " << msg;
+    EXPECT_NE(msg.find(c.what), std::string::npos) << "'" << c.what << "' not in: " << msg;
+  }
+  EXPECT_NE(error_of("[scene]\nT = \"1/1000\"\n").find("device"), std::string::npos);
+  EXPECT_NE(error_of("T = ").find("s.toml"), std::string::npos);  // TOML syntax error names the file
+}
+
+TEST(Scene, PassiveClaimCanBeWithdrawn) {
+  // The same unstable operator is accepted when the scene does not claim passivity.
+  auto text = replace(kWall, "m = \"1/5\"\nb = \"2\"\nk = \"500\"", "tf = \"1/(s-3)\"\npassive = false");
+  EXPECT_NO_THROW(parse_scene(text, "s.toml"));
+}
