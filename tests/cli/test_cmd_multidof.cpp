@@ -94,7 +94,8 @@ TEST(CmdMultidof, InconsistentScenesExit2) {
   EXPECT_NE(r.out.find("not stable"), std::string::npos) << r.out;
   // non-square structure where a square one is required: a 2x1 perturbation of C_E
   r = run("multidof analyze --scene " +
-          tmp_scene("md_nonsquare.toml", replace(base, "# perturb_C = [[\"0\", \"1\"], [\"1\", \"0\"]]", "perturb_C = [[\"0\", \"1\"]]")));
+          tmp_scene("md_nonsquare.toml", replace(base, "# perturb_C = [[\"0\", \"1\"], [\"1\", \"0\"]]  (the perturbed environment of Sec. VI)",
+                                           "perturb_C = [[\"0\", \"1\"]]")));
   EXPECT_EQ(r.code, 2) << r.out;
   EXPECT_NE(r.out.find("perturb_C"), std::string::npos) << r.out;
   // wrong number of OSP levels
