@@ -1,13 +1,15 @@
 // bench/multidof.cpp -- paper 000: speed of the Theorem 5 analysis and the Theorem 6 design on
 // the Sec. VI example (targets: analysis <= 10 ms, design <= 2 s), DSDP beside CSDP, and the
-// scaling with N = 1..16 devices (1-3 DOF each, sizes 1,2,3,1,2,3,...) for two structures:
+// scaling with N = 1..8 devices (1-3 DOF each, sizes 1,2,3,1,2,3,...; N = 12, 16 left out: the
+// exact certificates at m = 24, 32 take minutes per environment) for two structures:
 //   case-i-like  : ONE operator using every device (Gamma = g I)
 //   case-ii-like : one operator per device (Gamma block-scalar per device)
 // Random environments: Fig. 5-type (one mass, m contacts; M in [0.1, 1], k in [100, 2000],
 // B in [1, 10], k_i in [100, 1000], B_i in [0.5, 3]), backward Euler T = 0.01, exact direct
 // state space (m + 2 states), and with probability 1/2 a per-device force-gain miscalibration
 // E := S E, S = blockdiag(s_j I) with s_j in [0.75, 2.25] (a non-reciprocal environment). Counters:
-// m, certified (this environment), and `fraction` = fraction of 8 random environments
+// m, certified (this environment; the timed one is certified infeasible WITHOUT an SDP when its
+// X E(1) cannot be symmetric, hence the fast case-i points), and `fraction` = fraction of 8 random environments
 // certified stable (exact certificate) -- how much the structure reduces conservatism.
 #include <benchmark/benchmark.h>
 
@@ -114,7 +116,7 @@ void BM_Scaling(benchmark::State& st) {
   st.SetLabel(one ? "case-i structure (one operator)" : "case-ii structure (one operator per device)");
 }
 BENCHMARK(BM_Scaling)
-    ->ArgsProduct({{1, 2, 3, 4, 6, 8, 12, 16}, {0, 1}})
+    ->ArgsProduct({{1, 2, 3, 4, 6, 8}, {0, 1}})  // N = 12, 16 (m = 24, 32): exact certificates take minutes
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
