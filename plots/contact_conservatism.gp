@@ -5,7 +5,7 @@
 # exact linear stability limit of (1+kH)^{-1}, and the smallest stiffness at which the simulated
 # loop (Fig. 5) oscillates. Open symbols: a paper assumption is violated (criterion does not apply);
 # Tustin walls with d = 0, 2 make (1+kH)^{-1} unstable at every gain, so they oscillate at any K.
-# Data: hapstab figure-contact contact_conservatism --out DIR.
+# Data: hapstab figure contact_conservatism --out DIR.
 name = 'contact_conservatism'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

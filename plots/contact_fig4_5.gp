@@ -2,7 +2,7 @@
 # x = xi(y + rho) - rho = max(y, -rho) for rho = 0.5, 1, 2 (Fig. 4), and the region of the
 # (y, x) plane it covers as rho runs over (0, inf) (Fig. 5, shaded): the sector between x = 0
 # and x = y for y < 0 together with the line x = y for y >= 0.
-# Data: hapstab figure-contact contact_fig4_5 --out DIR.
+# Data: hapstab figure contact_fig4_5 --out DIR.
 name = 'contact_fig4_5'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

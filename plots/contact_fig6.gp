@@ -2,7 +2,7 @@
 # the Nyquist plane of H. Each q = 1..7 is a half-plane bounded by a line through -1 (q = 4 is
 # the vertical line, the same as (21), Tsypkin); the arrows point to the side that satisfies it.
 # Shaded: the forbidden region where no inequality holds -- the wedge bounded by q = 1 and q = 7.
-# Data: hapstab figure-contact contact_fig6 --out DIR.
+# Data: hapstab figure contact_fig6 --out DIR.
 name = 'contact_fig6'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

@@ -3,7 +3,7 @@
 # k = 2.6 above the linear stability limit k = 2 of (1+kH)^{-1}, where the contact loop is
 # unstable and the unilateral nonlinearity bounds a limit cycle (certified exactly by
 # `hapstab limit-cycle --exact`). theta < 0 means the device has left the wall.
-# Data: hapstab figure-contact contact_limit_cycle --out DIR.
+# Data: hapstab figure contact_limit_cycle --out DIR.
 name = 'contact_limit_cycle'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

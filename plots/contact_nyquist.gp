@@ -5,7 +5,7 @@
 # marked points are k*H at those frequencies and must lie outside their wedge. Here the
 # minimum of (25) (theta = 1.772) sits at the apex: k*_wedge = 3 is also the exact linear limit
 # of (1+kH)^{-1} (z^2 + 0.4 z + 1 has roots e^{+-j 1.772}).
-# Data: hapstab figure-contact contact_nyquist --out DIR.
+# Data: hapstab figure contact_nyquist --out DIR.
 name = 'contact_nyquist'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

@@ -1,24 +1,28 @@
-# plots/multidof_scaling.gp -- paper 000, Theorem 5 scaling (data from bench/chart-multidof):
-# (a) analysis time (incl. exact certificate) against the total DOF m, (b) fraction of random
+# plots/multidof_scaling.gp -- paper 000, Theorem 5 scaling (data: bench/chart-multidof DATADIR):
+# (a) analysis time (incl. the exact certificate) against the total DOF m, (b) fraction of random
 # Fig. 5-type environments (half with per-device force-gain miscalibration) certified stable,
 # for one operator on all devices (case-i-like, Gamma = g I) and one operator per device
-# (case-ii-like, Gamma block-scalar per device).
-if (!exists("datadir")) datadir = "build/charts"
-if (!exists("outfile")) outfile = "multidof_scaling.png"
-set terminal pngcairo size 1100,450 font ",11"
-set output outfile
-set multiplot layout 1,2
-set title "(a) Theorem 5 analysis time"
-set xlabel "total DOF m"
-set ylabel "time [ms]"
+# (case-ii-like, Gamma block-scalar per device): how much the structure reduces conservatism.
+name = 'multidof_scaling'
+if (!exists("plotdir")) plotdir = 'plots'
+load plotdir.'/common.gp'
+fi = datadir.'/multidof_scaling_case_i.dat'
+fii = datadir.'/multidof_scaling_case_ii.dat'
+set multiplot layout 1,2 title (tex ? 'Theorem 5 as the number of devices grows' : 'Theorem 5 as the number of devices grows')
+set title '(a) analysis time, solve + exact certificate'
+set xlabel (tex ? 'total DOF $m$' : 'total DOF m')
+set ylabel 'time [ms]'
 set logscale y
+set format y (tex ? '$10^{%T}$' : '10^{%T}')
 set key top left
-plot datadir."/multidof_scaling_case_i.dat" u 2:3 w lp pt 7 t "one operator (case i)", \
-     datadir."/multidof_scaling_case_ii.dat" u 2:3 w lp pt 5 t "operator per device (case ii)"
+plot fi u 2:3 w lp ls 1 t 'one operator (case i)', \
+     fii u 2:3 w lp ls 2 t 'operator per device (case ii)'
 unset logscale y
-set title "(b) random environments certified stable"
-set ylabel "fraction certified"
+set format y '%g'
+set title '(b) random environments certified stable'
+set ylabel 'fraction certified'
 set yrange [-0.05:1.05]
-plot datadir."/multidof_scaling_case_i.dat" u 2:4 w lp pt 7 t "one operator (case i)", \
-     datadir."/multidof_scaling_case_ii.dat" u 2:4 w lp pt 5 t "operator per device (case ii)"
+set key bottom left
+plot fi u 2:4 w lp ls 1 t 'one operator (case i)', \
+     fii u 2:4 w lp ls 2 t 'operator per device (case ii)'
 unset multiplot

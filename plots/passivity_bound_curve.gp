@@ -1,7 +1,7 @@
 # plots/passivity_bound_curve.gp -- paper 001, (45): the objective Re{T H(e^{jwT}) z^{-n}/(1 - e^{jwT})}
 # against w for the backward-difference wall (n = 0, 1) and the Tustin wall (n = 1), K = 1000 N/m,
 # B = 5 N s/m, T = 1 ms, with the certified bound b* and its maximiser marked (the system is
-# passive iff b > b*). Data: hapstab passivity-figure bound-curve --out DATADIR.
+# passive iff b > b*). Data: hapstab figure passivity_bound_curve.
 name = 'passivity_bound_curve'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

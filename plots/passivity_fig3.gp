@@ -1,7 +1,7 @@
 # plots/passivity_fig3.gp -- paper 001, Fig. 3 (operator with a shortage of passivity eta = 0.3 N s/m), drawn through the maps of Fig. 2: the chain of Nyquist-plane maps that turns
 # the range of a passive operator Z_O(jw) (closed right half-plane) into the closed unit disk:
 # (a) Z_O, (b) Z_O + b, (c) R1 = 1/(Z_O + b), (d) r(jw) R1 with r = T/(e^{jwT} - 1) (44),
-# (e) -1 + (2b/r) G* = 2b/(Z_O + b) - 1. Data: hapstab passivity-figure fig2 --out DATADIR.
+# (e) -1 + (2b/r) G* = 2b/(Z_O + b) - 1. Data: hapstab figure passivity_fig3.
 # Curves: the region boundary (Re Z_O = 0), images of the lines Re Z_O = b/4, b, 3b and Im Z_O = -b, 0, b.
 name = 'passivity_fig3'
 if (!exists("plotdir")) plotdir = 'plots'

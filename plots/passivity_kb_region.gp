@@ -2,7 +2,7 @@
 # Example 4): for device damping b = 1 N s/m and T = 1 ms, the largest stiffness K with b*(K,B,n) < b,
 # for delays n = 0..3; backward-difference wall K + B(z-1)/(Tz) (solid) against the Tustin wall
 # K + (2B/T)(z-1)/(z+1) (dashed). Below a curve the wall is passive.
-# Data: hapstab passivity-figure kb-region --out DATADIR (certified b* in a bisection on K).
+# Data: hapstab figure passivity_kb_region (certified b* in a bisection on K).
 name = 'passivity_kb_region'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'

@@ -11,8 +11,8 @@
 // JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
 //   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict, certified,
 //   detail}], message, assumptions.
-// `hapstab multidof figure --scene FILE --out DIR [--duration S]`: Fig. 6/7 velocity data
-//   (no coupling, designed V, the paper's (27)) for plots/multidof_fig67.gp.
+// It also registers Fig. 6 and Fig. 7 of paper 000 (`hapstab figure multidof_fig6|multidof_fig7`):
+// velocity data without coupling, with the designed V and with the paper's (27).
 // Exit codes: 0 feasible (a stabilising V found and verified), 1 not feasible / not verified,
 // 2 bad input (inconsistent block sizes, unstable E, non-square E), 3 numerical failure.
 #include <cmath>
@@ -23,6 +23,7 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/figure.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
@@ -36,7 +37,7 @@ namespace {
 using nlohmann::json;
 
 struct Opts {
-  std::string scene, backend = "dsdp", out;
+  std::string scene, backend = "dsdp";
   double duration = 10;
   std::vector<std::string> sets;
   bool json = false;
@@ -211,39 +212,45 @@ int run_design(const Opts& o) {
   return r.feasible ? exit_ok : exit_property_fails;
 }
 
-// Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27).
-int run_figure(const Opts& o) {
-  if (o.out.empty()) throw InputError("--out: an output folder is required");
-  const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+// Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27)
+// (the latter for 2-DOF scenes), 10 s after the scene's force impulse; files DATADIR/STEM_*.dat.
+void write_velocity_data(const std::string& scene_name, const std::string& stem, const std::filesystem::path& datadir) {
+  const std::string file = (examples_dir() / scene_name).string();
+  const auto sc = scene::load_scene(file);
   const auto sp = multidof::problem_from_scene(sc);
-  std::filesystem::create_directories(o.out);
-  const std::string stem = std::filesystem::path(o.scene).stem().string();
-  multidof::DesignOptions dop;
-  dop.lmi = lmi_options(o);
-  const auto d = multidof::design(sp.problem, dop);
-  std::vector<std::pair<std::string, const StateSpace<rational>*>> runs{{"none", nullptr}};
-  if (d.V.D.rows() > 0) runs.emplace_back("designed", &d.V);
+  const auto d = multidof::design(sp.problem, multidof::DesignOptions{});
+  if (d.V.D.rows() == 0) throw NumericalError(file + ": Theorem 6 found no coupling to simulate (" + d.message + ")");
+  std::vector<std::pair<std::string, const StateSpace<rational>*>> runs{{"none", nullptr}, {"designed", &d.V}};
   const auto V27 = multidof::example::controller27();
   if (sp.problem.structure.m() == 2) runs.emplace_back("paper27", &V27);
-  json j = json::array();
   for (const auto& [name, V] : runs) {
-    const auto sr = simulate_loop(sc, sp.problem, V, o.duration);
-    const std::string file = (std::filesystem::path(o.out) / (stem + "_" + name + ".dat")).string();
-    std::ofstream f(file);
-    f << "# t v_1 ... v_N  (" << name << " coupling; " << o.scene << ")\n";
+    const auto sr = simulate_loop(sc, sp.problem, V, 10.0);
+    std::ofstream f(datadir / (stem + "_" + name + ".dat"));
+    const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
+    f << "# t[s] v_1 ... v_N [m/s]  (" << name << " coupling; " << scene_name << ")\n# "
+      << (ok ? "velocities -> 0: " : "NOT decaying: ") << text << "\n";
     const auto& tr = sr.samples;
     for (size_t i = 0; i < tr.rows(); ++i) {
       f << tr.t[i];
       for (int k = 0; k < tr.N; ++k) f << " " << tr.v[i * static_cast<size_t>(tr.N) + static_cast<size_t>(k)];
       f << "\n";
     }
-    const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
-    j.push_back({{"coupling", name}, {"file", file}, {"decays", ok}, {"detail", text}});
-    if (!o.json) std::cout << name << ": " << (ok ? "velocities -> 0" : "NOT decaying") << "; " << text << "\n  -> " << file << "\n";
   }
-  if (o.json) print_json(j);
-  return exit_ok;
 }
+
+const RegisterFigure fig6({"multidof_fig6", "000",
+                           "Fig. 6: case i (one operator on both devices, nominal environment), velocities after a "
+                           "force impulse on d_a: (a) no coupling, (b) the coupling designed by Theorem 6, (b') the "
+                           "paper's (27)",
+                           [](const std::filesystem::path& d) {
+                             write_velocity_data("multidof_case_i_nominal.toml", "multidof_fig6", d);
+                           }});
+const RegisterFigure fig7({"multidof_fig7", "000",
+                           "Fig. 7: case ii (an operator per device, perturbed environment), velocities after a "
+                           "force impulse on d_a: (a) no coupling, (b) the coupling designed by Theorem 6",
+                           [](const std::filesystem::path& d) {
+                             write_velocity_data("multidof_case_ii_perturbed.toml", "multidof_fig7", d);
+                           }});
 
 const Register multidof_cmd({"multidof",
                              "Paper 000: multi-operator multi-device stability test (Theorem 5) and structured coupling design (Theorem 6)",
@@ -251,15 +258,12 @@ const Register multidof_cmd({"multidof",
                                auto o = std::make_shared<Opts>();
                                auto mode = std::make_shared<std::string>();
                                app.require_subcommand(1);
-                               for (const char* name : {"analyze", "design", "figure"}) {
+                               for (const char* name : {"analyze", "design"}) {
                                  const std::string nm = name;
                                  auto* sub = app.add_subcommand(name, nm == "analyze" ? "Theorem 5: LMIs (16), exact certificate"
-                                                                      : nm == "design"
-                                                                          ? "Theorem 6: structured coupling by CCL, independently verified"
-                                                                          : "Fig. 6/7 data: velocity responses without coupling, with the designed V and with (27)");
+                                                                      : "Theorem 6: structured coupling by CCL, independently verified");
                                  if (nm != "analyze")
                                    sub->add_option("--duration", o->duration, "Simulated time in seconds (default 10)");
-                                 if (nm == "figure") sub->add_option("--out", o->out, "Output folder")->required();
                                  sub->add_option("--scene", o->scene, "Scene file (TOML; examples/multidof_*.toml)")->required();
                                  sub->add_flag("--json", o->json, "JSON output");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
@@ -269,7 +273,7 @@ const Register multidof_cmd({"multidof",
                                  sub->callback([mode, name]() { *mode = name; });
                                }
                                return [o, mode]() {
-                                 return *mode == "analyze" ? run_analyze(*o) : *mode == "design" ? run_design(*o) : run_figure(*o);
+                                 return *mode == "analyze" ? run_analyze(*o) : run_design(*o);
                                };
                              }});
 

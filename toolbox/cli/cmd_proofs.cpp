@@ -40,7 +40,12 @@ int run(const Opts& o) {
   auto claims = run_proofs(o.only, o.quiet || o.json, seconds);
   size_t fails = 0;
   for (const auto& c : claims) fails += !c.holds;
-  if (!o.out.empty()) write_report_md({claims, {}, seconds}, o.out);
+  if (!o.out.empty()) {
+    ReportInput rep;
+    rep.claims = claims;
+    rep.seconds = seconds;
+    write_report_md(rep, o.out);
+  }
   int missing = o.table.empty() ? 0 : check_table(claims, o.table);
   if (o.json) {
     nlohmann::json j = nlohmann::json::array();

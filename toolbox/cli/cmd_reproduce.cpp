@@ -1,6 +1,10 @@
-// `hapstab reproduce`: the main job. Every proof, every figure (data + gnuplot, in every
-// requested format), then DIR/report.md and DIR/index.html. Exit 1 when a claim fails or a
-// figure cannot be drawn.
+// `hapstab reproduce`: the main job. Every proof (proofs/), every example scene (examples/*.toml,
+// cli/scenes.hpp), every figure (plots/*.gp: data + gnuplot, in every requested format), then
+// DIR/report.md and DIR/index.html. Exit 1 when a claim fails, a scene does not behave as its
+// [reproduce] table says, a figure cannot be drawn, or a plots/ script has no figure behind it.
+// The bench charts run the bench programs (bench/README.md); without them they are reported
+// "not reproduced" (not a failure).
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -55,6 +59,23 @@ int run(const Opts& o) {
     if (!c.holds) std::cerr << "reproduce: claim " << c.id << " FAILS: " << c.evidence << "\n";
   }
   if (!o.quiet) std::cerr << "reproduce: " << rep.claims.size() << " claims checked in " << s << " s\n";
+  if (!o.quiet) std::cerr << "reproduce: running the example scenes (examples/*.toml)\n";
+  rep.scenes = run_scenes(o.only, dir, o.quiet);
+  for (const auto& r : rep.scenes)
+    if (!r.ok) std::cerr << "reproduce: scene " << r.file << " (" << r.command << ") FAILS: " << r.error << "\n";
+  // Every plots/ script is a figure (common*.gp are shared pieces they load).
+  std::set<std::string> registered;
+  for (const auto& f : figures()) registered.insert(f.name);
+  for (const auto& e : fs::directory_iterator(plots_dir())) {
+    const std::string stem = e.path().stem().string();
+    if (e.path().extension() == ".gp" && stem.rfind("common", 0) != 0 && !registered.count(stem) && o.only.empty()) {
+      FigureEntry f{stem, "toolbox", "plots/" + stem + ".gp"};
+      f.ok = false;
+      f.error = "plots/" + stem + ".gp has no registered figure (RegisterFigure) to write its data";
+      std::cerr << "reproduce: " << f.error << "\n";
+      rep.figures.push_back(f);
+    }
+  }
   size_t n = 0, total = 0;
   for (const auto& f : figures()) total += o.only.empty() || o.only == f.paper;
   for (const auto& f : figures()) {
@@ -64,6 +85,11 @@ int run(const Opts& o) {
     auto f0 = std::chrono::steady_clock::now();
     try {
       draw_figure(f, dir / "data", dir / "figures", formats);
+    } catch (const FigureSkipped& ex) {
+      e.ok = false;
+      e.skipped = true;
+      e.error = ex.what();
+      std::cerr << "reproduce: figure " << f.name << " not reproduced on this build: " << ex.what() << "\n";
     } catch (const std::exception& ex) {
       e.ok = false;
       e.error = ex.what();
@@ -76,12 +102,15 @@ int run(const Opts& o) {
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_report_md(rep, dir);
   write_index_html(rep, dir);
-  size_t fig_fails = 0;
-  for (const auto& f : rep.figures) fig_fails += !f.ok;
+  size_t fig_fails = 0, fig_skipped = 0, scene_fails = 0;
+  for (const auto& f : rep.figures) fig_fails += !f.ok && !f.skipped, fig_skipped += f.skipped;
+  for (const auto& r : rep.scenes) scene_fails += !r.ok;
   std::cout << "reproduce: " << rep.claims.size() - claim_fails << " claims hold, " << claim_fails << " fail; "
-            << rep.figures.size() - fig_fails << " figures drawn, " << fig_fails << " failed; report: "
+            << rep.scenes.size() - scene_fails << " scene runs as expected, " << scene_fails << " not; "
+            << rep.figures.size() - fig_fails - fig_skipped << " figures drawn, " << fig_fails << " failed, "
+            << fig_skipped << " not reproduced on this build; " << rep.seconds << " s; report: "
             << (dir / "report.md").string() << " and " << (dir / "index.html").string() << "\n";
-  return (claim_fails || fig_fails) ? exit_property_fails : exit_ok;
+  return (claim_fails || fig_fails || scene_fails) ? exit_property_fails : exit_ok;
 }
 
 const Register reg({"reproduce",
@@ -116,8 +145,12 @@ const Register fig_reg({"figure", "Draw one figure (or --list them): data into D
                             }
                             for (const auto& f : figures())
                               if (*name == f.name) {
-                                draw_figure(f, fs::path(*out) / "data", fs::path(*out) / "figures",
-                                            parse_formats(*format));
+                                try {
+                                  draw_figure(f, fs::path(*out) / "data", fs::path(*out) / "figures",
+                                              parse_formats(*format));
+                                } catch (const FigureSkipped& e) {
+                                  throw InputError("figure " + *name + " cannot be drawn here: " + e.what());
+                                }
                                 std::cout << "figure " << f.name << " -> " << (fs::path(*out) / "figures").string()
                                           << "\n";
                                 return int(exit_ok);

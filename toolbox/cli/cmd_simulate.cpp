@@ -230,7 +230,6 @@ int run(const Opts& o) {
 
 
 // ---- figures of the simulator's experiments (hapstab figure / reproduce) ------------------
-fs::path examples_dir() { return plots_dir().parent_path() / "examples"; }
 
 sim::SimResult run_scene(const scene::Scene& sc, long record_every = 1) {
   sim::Simulator simulator(sc.loop);

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli/process.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
@@ -27,36 +28,34 @@ fs::path plots_dir() {
   throw InputError("cannot find the gnuplot scripts (plots/common.gp); set HAPSTAB_DATA_DIR to the hapstab tree");
 }
 
-namespace {
-// Single-quoted for the shell; gnuplot strings are single-quoted too, so paths must not hold '.
-std::string shell_quote(const std::string& s) {
-  std::string o = "'";
-  for (char c : s) o += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return o + "'";
-}
-}  // namespace
+fs::path examples_dir() { return plots_dir().parent_path() / "examples"; }
 
-void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& outdir, const std::string& format) {
+void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& figdir, const std::string& format) {
   const fs::path dir = plots_dir();
+  const fs::path outdir = format == "tex" ? figdir / "tex" : figdir;  // cairolatex also writes NAME.pdf
   const fs::path gp = dir / (script + ".gp");
   if (!fs::exists(gp)) throw InputError("no gnuplot script " + gp.string());
+  // gnuplot strings are single-quoted too: the paths handed to it must not hold a quote
   for (const auto& p : {datadir, outdir, dir})
     if (p.string().find('\'') != std::string::npos) throw InputError("path must not contain a quote: " + p.string());
   fs::create_directories(outdir);
   std::ostringstream vars;
   vars << "plotdir='" << dir.string() << "'; datadir='" << fs::absolute(datadir).string() << "'; outdir='"
        << fs::absolute(outdir).string() << "'; fmt='" << format << "'";
-  const fs::path log = fs::absolute(outdir) / (script + "." + format + ".log");
-  std::string cmd = "gnuplot -e " + shell_quote(vars.str()) + " " + shell_quote(gp.string()) + " > " +
-                    shell_quote(log.string()) + " 2>&1";
-  int rc = std::system(cmd.c_str());
-  if (rc != 0) {
-    std::ifstream in(log);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    throw NumericalError("gnuplot failed on " + gp.string() + " (" + format + "):\n" + ss.str());
-  }
-  fs::remove(log);
+  run_logged("gnuplot -e " + shell_quote(vars.str()) + " " + shell_quote(gp.string()),
+             fs::absolute(outdir) / (script + "." + format + ".log"), "gnuplot on " + gp.string() + " (" + format + ")");
+}
+
+void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {
+  const fs::path script = plots_dir().parent_path() / "bench" / ("chart-" + bench);
+  const fs::path build = self_exe().parent_path();
+  if (!fs::exists(script)) throw FigureSkipped("bench/chart-" + bench + " is not in this installation (source tree only)");
+  if (!fs::exists(build / "bench" / ("bench_" + bench)))
+    throw FigureSkipped("benchmark program bench_" + bench + " not built next to this hapstab (configure with "
+                        "-DHAPSTAB_BENCH=ON and build the target bench_" + bench + ")");
+  run_logged(shell_quote(script.string()) + " " + shell_quote(fs::absolute(datadir).string()) + " " +
+                 shell_quote(build.string()),
+             fs::absolute(datadir) / ("chart-" + bench + ".log"), "bench/chart-" + bench);
 }
 
 void draw_figure(const Figure& fig, const fs::path& datadir, const fs::path& outdir,

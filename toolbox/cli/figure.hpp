@@ -1,9 +1,12 @@
 // cli/figure.hpp -- the registry of figures: each one writes its data files into a folder and
 // names the gnuplot script in plots/ that draws them (plots/README.md gives the convention).
 // `hapstab figure NAME --out DIR` draws one; `hapstab reproduce` draws them all.
+// Formats png, pdf and svg go to DIR/figures/NAME.*; the LaTeX-ready cairolatex pair
+// (NAME.tex + its NAME.pdf) goes to DIR/figures/tex/ so it never overwrites the PDF.
 #pragma once
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,8 +25,21 @@ struct RegisterFigure {
   explicit RegisterFigure(Figure f) { figures().push_back(f); }
 };
 
+/// Thrown by a figure's write_data when the figure cannot be made on this build for a reason
+/// that is not a failure (a benchmark program that was not built): reported "not reproduced".
+struct FigureSkipped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// Where plots/ lives: $HAPSTAB_DATA_DIR, else the source tree, else the install's share/hapstab.
 std::filesystem::path plots_dir();
+/// The example scenes (examples/*.toml), next to plots/.
+std::filesystem::path examples_dir();
+
+/// Data of a bench/ speed-accuracy chart: runs `bench/chart-NAME DATADIR BUILD_DIR`, which runs
+/// the Google Benchmark program bench_NAME built next to this executable and converts its JSON.
+/// Throws FigureSkipped when the program or the script is not there (an installed hapstab).
+void write_bench_chart_data(const std::string& bench, const std::filesystem::path& datadir);
 
 /// Writes the data of `fig` into datadir and draws it with gnuplot in each format
 /// (png, pdf, svg, tex) into outdir. Throws NumericalError when gnuplot fails.

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "hapstab/numeric/error.hpp"
 
@@ -85,32 +86,45 @@ std::ofstream open_out(const fs::path& p) {
 size_t count_failures(const ReportInput& in) {
   size_t n = 0;
   for (const auto& c : in.claims) n += !c.holds;
-  for (const auto& f : in.figures) n += !f.ok;
+  for (const auto& f : in.figures) n += !f.ok && !f.skipped;
+  for (const auto& r : in.scenes) n += !r.ok;
   return n;
 }
+
+template <class T>
+bool any_of_paper(const std::vector<T>& v, const std::string& paper) {
+  for (const auto& x : v)
+    if (x.paper == paper) return true;
+  return false;
+}
+
+std::string summary_line(const ReportInput& in) {
+  size_t cf = 0, ff = 0, fs_ = 0, sf = 0;
+  for (const auto& c : in.claims) cf += !c.holds;
+  for (const auto& f : in.figures) ff += !f.ok && !f.skipped, fs_ += f.skipped;
+  for (const auto& r : in.scenes) sf += !r.ok;
+  std::ostringstream o;
+  o << in.claims.size() << " claims checked (" << in.claims.size() - cf << " hold, " << cf << " fail); "
+    << in.scenes.size() << " scene runs (" << in.scenes.size() - sf << " as expected, " << sf << " not); "
+    << in.figures.size() << " figures (" << in.figures.size() - ff - fs_ << " drawn, " << ff << " failed, " << fs_
+    << " not reproduced on this build); " << in.seconds << " s.";
+  return o.str();
+}
+
+const char* const kStatusLegend =
+    "Status: **exact** = proven in rational arithmetic; **certified** = proven by an enclosure; "
+    "**numeric** = floating-point evidence with the stated error.";
 
 }  // namespace
 
 void write_report_md(const ReportInput& in, const fs::path& dir) {
   auto md = open_out(dir / "report.md");
-  size_t claim_fails = 0, fig_fails = 0;
-  for (const auto& c : in.claims) claim_fails += !c.holds;
-  for (const auto& f : in.figures) fig_fails += !f.ok;
-  md << "# hapstab reproduction report\n\n"
-     << in.claims.size() << " claims checked (" << in.claims.size() - claim_fails << " hold, " << claim_fails
-     << " fail); " << in.figures.size() << " figures (" << in.figures.size() - fig_fails << " drawn, " << fig_fails
-     << " failed); " << in.seconds << " s.\n\n"
-     << "Status: **exact** = proven in rational arithmetic; **certified** = proven by an enclosure; "
-        "**numeric** = floating-point evidence with the stated error.\n";
+  md << "# hapstab reproduction report\n\n" << summary_line(in) << "\n\n" << kStatusLegend << "\n";
   for (std::string paper : kPapers) {
-    bool any = false;
-    for (const auto& c : in.claims) any |= c.paper == paper;
-    for (const auto& f : in.figures) any |= f.paper == paper;
-    if (!any) continue;
+    if (!any_of_paper(in.claims, paper) && !any_of_paper(in.figures, paper) && !any_of_paper(in.scenes, paper))
+      continue;
     md << "\n## " << (paper == "toolbox" ? "" : "Paper " + paper + ": ") << paper_title(paper) << "\n";
-    bool claims = false;
-    for (const auto& c : in.claims) claims |= c.paper == paper;
-    if (claims) {
+    if (any_of_paper(in.claims, paper)) {
       md << "\n| claim | equation | statement | status | verdict | evidence |\n|---|---|---|---|---|---|\n";
       for (const auto& c : in.claims)
         if (c.paper == paper)
@@ -118,13 +132,21 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
              << proofs::to_string(c.method) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
              << md_cell(c.evidence) << " |\n";
     }
+    if (any_of_paper(in.scenes, paper)) {
+      md << "\n### Example scenes\n\n| scene | claim | command | expected | got | verdict |\n|---|---|---|---|---|---|\n";
+      for (const auto& r : in.scenes)
+        if (r.paper == paper)
+          md << "| `examples/" << r.file << "` | " << md_cell(r.claim) << " | `hapstab " << r.command << "` | "
+             << md_cell(r.expected.empty() ? "runs" : r.expected) << " | " << md_cell(r.got) << " | "
+             << (r.ok ? "as expected" : "**FAILS**: " + md_cell(r.error)) << " |\n";
+    }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
+        md << "\n**" << f.name << ".** " << f.caption;
         if (f.ok)
-          md << "\n**" << f.name << ".** " << f.caption << "\n\n![" << f.name << "](figures/" << f.name
-             << ".png)\n";
+          md << "\n\n![" << f.name << "](figures/" << f.name << ".png)\n";
         else
-          md << "\n**" << f.name << ".** " << f.caption << " — **not reproduced**: " << md_cell(f.error) << "\n";
+          md << " — **not reproduced" << (f.skipped ? "" : " (FAILED)") << "**: " << md_cell(f.error) << "\n";
       }
   }
 }
@@ -137,22 +159,18 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
        "table{border-collapse:collapse;width:100%;font-size:0.85em;margin:1em 0}"
        "td,th{border:1px solid #ccc;padding:4px 6px;vertical-align:top;text-align:left}th{background:#f0f0f0}"
        "code{font-size:0.9em}.holds{color:#116611;font-weight:bold}.fails{color:#b00;font-weight:bold}"
+       ".skipped{color:#805b00;font-weight:bold}"
        "figure{margin:1.5em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:0.9em;color:#444}"
        ".summary{padding:0.6em 1em;background:"
     << (fails ? "#fdecea" : "#e8f5e9") << ";border-radius:4px}</style></head><body>\n"
-    << "<h1>hapstab reproduction report</h1>\n<p class=\"summary\">" << in.claims.size() << " claims, "
-    << in.figures.size() << " figures, " << fails << " failures, " << in.seconds << " s.</p>\n"
+    << "<h1>hapstab reproduction report</h1>\n<p class=\"summary\">" << html(summary_line(in)) << "</p>\n"
     << "<p>Status: <b>exact</b> = proven in rational arithmetic; <b>certified</b> = proven by an enclosure; "
        "<b>numeric</b> = floating-point evidence with the stated error.</p>\n";
   for (std::string paper : kPapers) {
-    bool any = false;
-    for (const auto& c : in.claims) any |= c.paper == paper;
-    for (const auto& f : in.figures) any |= f.paper == paper;
-    if (!any) continue;
+    if (!any_of_paper(in.claims, paper) && !any_of_paper(in.figures, paper) && !any_of_paper(in.scenes, paper))
+      continue;
     h << "<h2>" << html((paper == "toolbox" ? "" : "Paper " + paper + ": ") + paper_title(paper)) << "</h2>\n";
-    bool claims = false;
-    for (const auto& c : in.claims) claims |= c.paper == paper;
-    if (claims) {
+    if (any_of_paper(in.claims, paper)) {
       h << "<table><tr><th>claim</th><th>equation</th><th>statement</th><th>status</th><th>verdict</th>"
            "<th>evidence</th></tr>\n";
       for (const auto& c : in.claims)
@@ -162,16 +180,30 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
             << (c.holds ? "holds\">holds" : "fails\">FAILS") << "</td><td>" << html(c.evidence) << "</td></tr>\n";
       h << "</table>\n";
     }
+    if (any_of_paper(in.scenes, paper)) {
+      h << "<h3>Example scenes</h3>\n<table><tr><th>scene</th><th>claim</th><th>command</th><th>expected</th>"
+           "<th>got</th><th>verdict</th></tr>\n";
+      for (const auto& r : in.scenes)
+        if (r.paper == paper)
+          h << "<tr><td><code>examples/" << html(r.file) << "</code></td><td>" << html(r.claim)
+            << "</td><td><code>hapstab " << html(r.command) << "</code></td><td>"
+            << html(r.expected.empty() ? "runs" : r.expected) << "</td><td>" << html(r.got) << "</td><td class=\""
+            << (r.ok ? "holds\">as expected" : "fails\">FAILS: " + html(r.error)) << "</td></tr>\n";
+      h << "</table>\n";
+    }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
         h << "<figure id=\"" << html(f.name) << "\">";
         if (f.ok)
           h << "<img src=\"figures/" << html(f.name) << ".png\" alt=\"" << html(f.caption) << "\">";
         else
-          h << "<p class=\"fails\">not reproduced: " << html(f.error) << "</p>";
-        h << "<figcaption><b>" << html(f.name) << ".</b> " << html(f.caption) << " (<a href=\"figures/"
-          << html(f.name) << ".pdf\">PDF</a>, <a href=\"figures/" << html(f.name) << ".svg\">SVG</a>, <a href=\"figures/"
-          << html(f.name) << ".tex\">LaTeX</a>)</figcaption></figure>\n";
+          h << "<p class=\"" << (f.skipped ? "skipped" : "fails") << "\">not reproduced" << (f.skipped ? "" : " (FAILED)")
+            << ": " << html(f.error) << "</p>";
+        h << "<figcaption><b>" << html(f.name) << ".</b> " << html(f.caption);
+        if (f.ok)
+          h << " (<a href=\"figures/" << html(f.name) << ".pdf\">PDF</a>, <a href=\"figures/" << html(f.name)
+            << ".svg\">SVG</a>, <a href=\"figures/tex/" << html(f.name) << ".tex\">LaTeX</a>)";
+        h << "</figcaption></figure>\n";
       }
   }
   h << "</body></html>\n";

@@ -1,18 +1,17 @@
-// cli/cmd_figure_passivity.cpp -- `hapstab passivity-figure NAME --out DIR`: writes the data of
-// the passivity figures of paper 001 for the gnuplot scripts plots/passivity_*.gp.
+// cli/figures_passivity.cpp -- the passivity figures of paper 001 and the toolbox's bound charts,
+// registered with `hapstab figure` / `hapstab reproduce` (data for plots/passivity_*.gp):
 //
-//   fig2         Fig. 2 (a)-(e): closed RHP -> shift by b -> disk R1 = 1/(.) -> r(jw) R1 -> unit disk
-//   fig3         Fig. 3: the operator range with a shortage of passivity eta, and its image
-//   bound-curve  Re{T H z^-n/(1-z)} against w with b* and its maximiser (certified) marked
-//   kb-region    (K, B) passivity regions of virtual walls, delays n = 0..3, backward difference vs Tustin
-//   all          every one of them
-// Files: DIR/passivity_fig2.dat, passivity_fig3.dat, passivity_bound_curve.dat (+ _marks.dat),
-// passivity_kb_region.dat. Columns are documented in each file's header.
+//   passivity_fig2         Fig. 2 (a)-(e): closed RHP -> shift by b -> disk 1/(.) -> r(jw)/(.) -> unit disk
+//   passivity_fig3         Fig. 3: the operator range with a shortage of passivity eta, and its image
+//   passivity_bound_curve  Re{T H z^-n/(1-z)} against w with b* and its maximiser (certified) marked
+//   passivity_kb_region    (K, B) passivity regions of virtual walls, delays n = 0..3, backward difference vs Tustin
+// Files: DATADIR/<name>.dat (bound curve also _marks.dat). Columns are documented in each file's header.
 #include <complex>
 #include <fstream>
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/figure.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -150,32 +149,21 @@ void kb_region(const std::string& dir) {
   }
 }
 
-const cli::Register reg({"passivity-figure", "Write the data of the passivity figures of paper 001 (Figs. 2, 3, bound curve, (K,B) regions)",
-                         [](CLI::App& app) {
-                           auto name = std::make_shared<std::string>("all");
-                           auto out = std::make_shared<std::string>(".");
-                           auto b = std::make_shared<double>(1.0);
-                           auto T = std::make_shared<double>(1e-3);
-                           auto w = std::make_shared<double>(1000.0);
-                           auto eta = std::make_shared<double>(0.3);
-                           app.add_option("name", *name, "fig2 | fig3 | bound-curve | kb-region | all");
-                           app.add_option("--out", *out, "directory for the .dat files");
-                           app.add_option("--b", *b, "device damping b [N s/m] for fig2/fig3");
-                           app.add_option("--T", *T, "sample period [s] for fig2/fig3");
-                           app.add_option("--omega", *w, "frequency [rad/s] for the r(jw) panel");
-                           app.add_option("--eta", *eta, "operator shortage of passivity for fig3");
-                           return [=]() -> int {
-                             if (*b <= 0) throw InputError("--b must be > 0");
-                             if (*T <= 0) throw InputError("--T must be > 0");
-                             if (*eta < 0) throw InputError("--eta must be >= 0");
-                             bool all = *name == "all", any = false;
-                             if (all || *name == "fig2") { fig2(*out, *b, *T, *w, "passivity_fig2.dat", 0.0); any = true; }
-                             if (all || *name == "fig3") { fig2(*out, *b, *T, *w, "passivity_fig3.dat", *eta); any = true; }
-                             if (all || *name == "bound-curve") { bound_curve(*out); any = true; }
-                             if (all || *name == "kb-region") { kb_region(*out); any = true; }
-                             if (!any) throw InputError("unknown figure '" + *name + "' (fig2, fig3, bound-curve, kb-region, all)");
-                             return cli::exit_ok;
-                           };
-                         }});
+// Fig. 2 and 3 at the paper's illustration values: b = 1 N s/m, T = 1 ms, w = 1000 rad/s, eta = 0.3 N s/m.
+const cli::RegisterFigure f2({"passivity_fig2", "001",
+                              "Fig. 2 (a)-(e): the maps that turn the passivity condition into the unit-disk test "
+                              "(b = 1 N s/m, T = 1 ms, w = 1000 rad/s)",
+                              [](const std::filesystem::path& d) { fig2(d.string(), 1.0, 1e-3, 1000.0, "passivity_fig2.dat", 0.0); }});
+const cli::RegisterFigure f3({"passivity_fig3", "001",
+                              "Fig. 3: the same maps for an operator with a shortage of passivity eta = 0.3 N s/m",
+                              [](const std::filesystem::path& d) { fig2(d.string(), 1.0, 1e-3, 1000.0, "passivity_fig3.dat", 0.3); }});
+const cli::RegisterFigure fc({"passivity_bound_curve", "toolbox",
+                              "Bound curves: Re{T H(z) z^-n/(1 - z)} over 0 <= w <= pi/T for walls with and without a "
+                              "delay, with the certified b* and its maximiser marked",
+                              [](const std::filesystem::path& d) { bound_curve(d.string()); }});
+const cli::RegisterFigure fk({"passivity_kb_region", "toolbox",
+                              "(K, B) passivity regions of virtual walls for a device with b = 1 N s/m, T = 1 ms, "
+                              "delays n = 0..3: backward difference against Tustin (certified b* at every point)",
+                              [](const std::filesystem::path& d) { kb_region(d.string()); }});
 
 }  // namespace

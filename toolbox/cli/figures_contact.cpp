@@ -1,6 +1,6 @@
-// cli/cmd_figure_contact.cpp -- the figures of paper 002 (Tsai & Colgate) and of the contact
-// module: data writers registered with the figure registry (drawn by plots/contact_*.gp and by
-// `hapstab reproduce`), and `hapstab figure-contact NAME --out DIR [--draw FMT]`.
+// cli/figures_contact.cpp -- the figures of paper 002 (Tsai & Colgate) and of the contact
+// module: data writers registered with `hapstab figure` / `hapstab reproduce` (drawn by
+// plots/contact_*.gp).
 //   contact_fig4_5       the shifted unilateral nonlinearity xi(y+rho)-rho (Fig. 4) and its region (Fig. 5)
 //   contact_fig6         the q half-planes (21)/(22) at theta = pi/4 and the forbidden wedge (Fig. 6)
 //   contact_nyquist      Nyquist plot of k*H with the forbidden wedges of (25) at several frequencies
@@ -195,40 +195,6 @@ const RegisterFigure f4({"contact_limit_cycle", "002",
 const RegisterFigure f5({"contact_conservatism", "002",
                          "Conservatism: k*_Tsypkin, k*_wedge, linear limit and simulated oscillation onset per wall",
                          &conservatism});
-
-struct Opts {
-  std::string name, out = "out", draw;
-};
-
-const Register reg({"figure-contact",
-                    "Write the data of the contact figures (paper 002) and optionally draw them",
-                    [](CLI::App& app) {
-                      auto o = std::make_shared<Opts>();
-                      app.add_option("name", o->name,
-                                     "contact_fig4_5, contact_fig6, contact_nyquist, contact_limit_cycle, "
-                                     "contact_conservatism or all")
-                          ->required();
-                      app.add_option("--out", o->out, "Output folder (data in DIR/data, figures in DIR/figures)");
-                      app.add_option("--draw", o->draw, "Also draw: png, pdf, svg, tex or all");
-                      return [o]() {
-                        bool any = false;
-                        std::vector<std::string> fmts;
-                        if (o->draw == "all") fmts = {"png", "pdf", "svg", "tex"};
-                        else if (!o->draw.empty()) fmts = {o->draw};
-                        for (const auto& f : figures()) {
-                          if (std::string(f.name).rfind("contact_", 0) != 0) continue;
-                          if (o->name != "all" && o->name != f.name) continue;
-                          any = true;
-                          const fs::path d = fs::path(o->out) / "data";
-                          fs::create_directories(d);
-                          if (fmts.empty()) f.write_data(d);
-                          else draw_figure(f, d, fs::path(o->out) / "figures", fmts);
-                          std::cout << f.name << ": written to " << o->out << "\n";
-                        }
-                        if (!any) throw InputError("unknown contact figure '" + o->name + "'");
-                        return exit_ok;
-                      };
-                    }});
 
 }  // namespace
 }  // namespace hapstab::cli

@@ -1,0 +1,164 @@
+#include "cli/scenes.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "cli/figure.hpp"
+#include "cli/process.hpp"
+
+namespace hapstab::cli {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string show(const json& j) { return j.is_string() ? j.get<std::string>() : j.dump(); }
+
+std::string show(const toml::node& v) {
+  if (v.is_boolean()) return *v.value<bool>() ? "true" : "false";
+  if (v.is_string()) return *v.value<std::string>();
+  if (auto d = v.value<double>()) return json(*d).dump();
+  return "(a table or array)";
+}
+
+// Checks one expectation (TOML value) against the command's JSON value; "" when it holds,
+// else the reason.
+std::string check(const std::string& key, const toml::node& want, const json& got) {
+  if (auto b = want.value<bool>(); b && want.is_boolean()) {
+    const bool g = got.is_boolean() ? got.get<bool>() : !got.is_null();
+    return g == *b ? "" : key + " is " + show(got) + ", expected " + (*b ? "true" : "false");
+  }
+  if (auto s = want.value<std::string>()) {
+    for (const char* op : {">=", "<=", "==", ">", "<"}) {
+      const std::string o = op;
+      if (s->rfind(o, 0) != 0) continue;
+      double x;
+      try {
+        x = std::stod(s->substr(o.size()));
+      } catch (const std::exception&) {
+        return key + ": cannot read the number in '" + *s + "'";
+      }
+      if (!got.is_number()) return key + " is " + show(got) + ", expected a number " + *s;
+      const double g = got.get<double>();
+      const bool holds = o == ">=" ? g >= x : o == "<=" ? g <= x : o == "==" ? g == x : o == ">" ? g > x : g < x;
+      return holds ? "" : key + " = " + show(got) + ", expected " + *s;
+    }
+    return got.is_string() && got.get<std::string>() == *s ? "" : key + " is " + show(got) + ", expected " + *s;
+  }
+  if (auto d = want.value<double>()) {
+    return got.is_number() && got.get<double>() == *d ? "" : key + " is " + show(got) + ", expected " + std::to_string(*d);
+  }
+  return key + ": unsupported expectation (use true/false, a string, or \"> x\"-style comparisons)";
+}
+
+SceneRun run_one(const fs::path& file, const std::string& command, const std::vector<std::string>& args,
+                 const toml::table* expect, const fs::path& outdir) {
+  SceneRun r;
+  r.file = file.filename().string();
+  r.command = command;
+  auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::string> argv{self_exe().string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::string out;
+  fs::create_directories(outdir);
+  const fs::path errfile = outdir / (file.stem().string() + "." + command.substr(command.rfind(' ') + 1) + ".stderr");
+  const int rc = run_capture(argv, out, errfile);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ofstream(outdir / (file.stem().string() + "." + command.substr(command.rfind(' ') + 1) + ".json")) << out;
+  if (rc != 0 && rc != 1) {  // 1 = the property does not hold: a result, judged by the expectations
+    std::ifstream e(errfile);
+    std::stringstream ss;
+    ss << e.rdbuf();
+    r.ok = false;
+    r.error = "exit code " + std::to_string(rc) + ": " + ss.str();
+    return r;
+  }
+  json j;
+  try {
+    j = json::parse(out);
+  } catch (const std::exception& e) {
+    r.ok = false;
+    r.error = std::string("unreadable JSON output: ") + e.what();
+    return r;
+  }
+  if (!expect) return r;
+  for (const auto& [k, v] : *expect) {
+    const std::string key(k.str());
+    const json got = j.contains(key) ? j[key] : json(nullptr);
+    r.expected += (r.expected.empty() ? "" : "; ") + key + " = " + show(v);
+    r.got += (r.got.empty() ? "" : "; ") + key + " = " + show(got);
+    const std::string why = check(key, v, got);
+    if (!why.empty()) {
+      r.ok = false;
+      r.error += (r.error.empty() ? "" : "; ") + why;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+std::vector<SceneRun> run_scenes(const std::string& paper, const fs::path& outdir, bool quiet) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(examples_dir()))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<SceneRun> runs;
+  for (const auto& f : files) {
+    toml::table root;
+    try {
+      root = toml::parse_file(f.string());
+    } catch (const toml::parse_error& e) {
+      SceneRun r;
+      r.file = f.filename().string();
+      r.paper = "toolbox";
+      r.ok = false;
+      r.error = std::string("cannot read the scene: ") + std::string(e.description());
+      runs.push_back(r);
+      continue;
+    }
+    const toml::table* rep = root["reproduce"].as_table();
+    const std::string p = rep ? (*rep)["paper"].value_or(std::string("toolbox")) : std::string("toolbox");
+    if (!paper.empty() && paper != p) continue;
+    std::string claim = rep ? (*rep)["claim"].value_or(std::string()) : std::string();
+    if (claim.empty()) claim = root["scene"]["name"].value_or(f.stem().string());
+    auto expect = [&](const char* cmd) { return rep ? (*rep)[cmd].as_table() : nullptr; };
+    std::vector<SceneRun> these;
+    const std::string sf = f.string();
+    if (root.contains("multidof")) {
+      these.push_back(run_one(f, "multidof analyze", {"multidof", "analyze", "--scene", sf, "--json"}, expect("analyze"),
+                              outdir / "scenes"));
+      these.push_back(run_one(f, "multidof design", {"multidof", "design", "--scene", sf, "--json"}, expect("design"),
+                              outdir / "scenes"));
+    } else if (root.contains("simulate")) {
+      these.push_back(run_one(f, "simulate",
+                              {"simulate", "--scene", sf, "--out", (outdir / "scenes" / f.stem()).string(), "--json",
+                               "--quiet"},
+                              expect("simulate"), outdir / "scenes"));
+    } else {
+      SceneRun r;
+      r.file = f.filename().string();
+      r.ok = false;
+      r.error = "the scene has neither [simulate] nor [multidof]: nothing to run";
+      these.push_back(r);
+    }
+    for (auto& r : these) {
+      r.paper = p;
+      r.claim = claim;
+      if (!quiet)
+        std::cerr << "reproduce: [scene] " << r.file << " (" << r.command << "): " << (r.ok ? "ok" : "FAILS " + r.error)
+                  << " (" << r.seconds << " s)\n";
+      runs.push_back(r);
+    }
+  }
+  return runs;
+}
+
+}  // namespace hapstab::cli
