@@ -2,6 +2,7 @@
 #include "hapstab/lmi/backend.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "hapstab/numeric/error.hpp"
@@ -43,8 +44,11 @@ void validate(const StandardForm& sf) {
     for (const auto& t : B.terms) {
       if (t.var < 0 || t.var >= sf.m) throw InputError(w + ": variable index out of range");
       if (t.A.rows() != n || t.A.cols() != n) throw InputError(w + ": coefficient has the wrong size");
-      if (!t.A.allFinite() || (t.A - t.A.transpose()).cwiseAbs().maxCoeff() != 0.0)
-        throw InputError(w + ": coefficient is not finite and exactly symmetric");
+      bool ok = true;
+      for (int o = 0; o < t.A.outerSize() && ok; ++o)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(t.A, o); it && ok; ++it)
+          ok = std::isfinite(it.value()) && t.A.coeff(it.col(), it.row()) == it.value();
+      if (!ok) throw InputError(w + ": coefficient is not finite and exactly symmetric");
       used[static_cast<size_t>(t.var)] = 1;
     }
   }
@@ -63,10 +67,12 @@ std::array<double, 6> dimacs_errors(const StandardForm& sf, const Eigen::VectorX
   for (size_t j = 0; j < sf.blocks.size(); ++j) {
     const auto& B = sf.blocks[j];
     Eigen::MatrixXd S = B.C;
-    for (const auto& t : B.terms) {
-      AX(t.var) += (t.A.cwiseProduct(X[j])).sum();
-      S += y(t.var) * t.A;
-    }
+    for (const auto& t : B.terms)
+      for (int o = 0; o < t.A.outerSize(); ++o)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(t.A, o); it; ++it) {
+          AX(t.var) += it.value() * X[j](it.row(), it.col());
+          S(it.row(), it.col()) += y(t.var) * it.value();
+        }
     cmax = std::max(cmax, B.C.cwiseAbs().maxCoeff());
     trCX += (B.C.cwiseProduct(X[j])).sum();
     trXS += (S.cwiseProduct(X[j])).sum();
@@ -107,22 +113,41 @@ BackendResult solve_dsdp(const StandardForm& sf) {
   for (int k = 0; k < sf.m; ++k) check(DSDPSetDualObjective(dsdp, k + 1, sf.b(k)), "DSDPSetDualObjective");
   const int J = static_cast<int>(sf.blocks.size());
   check(DSDPCreateSDPCone(dsdp, J, &cone), "DSDPCreateSDPCone");
-  auto add = [&](int j, int var, const Eigen::MatrixXd& M, double sign) {
-    const int n = static_cast<int>(M.rows());
+  // Packed lower-triangular (index, value) pairs in increasing index order.
+  auto push = [&](int j, int var, int n, std::vector<std::pair<int, double>>& e) {
+    if (e.empty()) return;
+    std::sort(e.begin(), e.end());
     std::vector<int> ii;
     std::vector<double> vv;
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c <= i; ++c)
-        if (M(i, c) != 0.0) {
-          ii.push_back(i * (i + 1) / 2 + c);
-          vv.push_back(sign * M(i, c));
-        }
-    if (ii.empty()) return;
+    ii.reserve(e.size());
+    vv.reserve(e.size());
+    for (const auto& [i, v] : e) {
+      ii.push_back(i);
+      vv.push_back(v);
+    }
     idx.push_back(std::move(ii));
     val.push_back(std::move(vv));
     check(SDPConeSetASparseVecMat(cone, j, var, n, 1.0, 0, idx.back().data(), val.back().data(),
                                   static_cast<int>(idx.back().size())),
           "SDPConeSetASparseVecMat");
+  };
+  auto add_dense = [&](int j, int var, const Eigen::MatrixXd& M, double sign) {
+    const int n = static_cast<int>(M.rows());
+    std::vector<std::pair<int, double>> e;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c <= i; ++c)
+        if (M(i, c) != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * M(i, c));
+    push(j, var, n, e);
+  };
+  auto add_sparse = [&](int j, int var, const Eigen::SparseMatrix<double>& M, double sign) {
+    std::vector<std::pair<int, double>> e;
+    e.reserve(static_cast<size_t>(M.nonZeros() / 2 + M.rows()));
+    for (int o = 0; o < M.outerSize(); ++o)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(M, o); it; ++it) {
+        const int i = static_cast<int>(it.row()), c = static_cast<int>(it.col());
+        if (i >= c && it.value() != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * it.value());
+      }
+    push(j, var, static_cast<int>(M.rows()), e);
   };
   idx.reserve(1024);
   val.reserve(1024);
@@ -130,8 +155,8 @@ BackendResult solve_dsdp(const StandardForm& sf) {
     const auto& B = sf.blocks[static_cast<size_t>(j)];
     check(SDPConeSetBlockSize(cone, j, static_cast<int>(B.C.rows())), "SDPConeSetBlockSize");
     check(SDPConeSetSparsity(cone, j, static_cast<int>(B.terms.size()) + 1), "SDPConeSetSparsity");
-    add(j, 0, B.C, 1.0);
-    for (const auto& t : B.terms) add(j, t.var + 1, t.A, -1.0);
+    add_dense(j, 0, B.C, 1.0);
+    for (const auto& t : B.terms) add_sparse(j, t.var + 1, t.A, -1.0);
   }
   check(DSDPSetGapTolerance(dsdp, 1e-9), "DSDPSetGapTolerance");
   check(DSDPSetMaxIts(dsdp, 300), "DSDPSetMaxIts");

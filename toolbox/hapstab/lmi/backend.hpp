@@ -18,6 +18,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <mutex>
 #include <string>
@@ -29,8 +30,10 @@ enum class Backend { dsdp, csdp };
 const char* to_string(Backend b);
 
 struct SdpTerm {
-  int var;             ///< index k of y_k
-  Eigen::MatrixXd A;   ///< dense symmetric block coefficient
+  int var;                          ///< index k of y_k
+  Eigen::SparseMatrix<double> A;    ///< symmetric block coefficient, both triangles stored, no
+                                    ///< explicit zeros (a Lyapunov term A^T E_ij A is dense, a
+                                    ///< Q_E(i,j) entry has 2 non-zeros: storage follows the data)
 };
 struct SdpBlock {
   Eigen::MatrixXd C;   ///< symmetric constant

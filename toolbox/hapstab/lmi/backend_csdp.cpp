@@ -100,9 +100,9 @@ const char* kParams =
     const auto& B = sf.blocks[static_cast<size_t>(j - 1)];
     const int s = static_cast<int>(B.C.rows());
     for (const auto& t : B.terms) {
-      int cnt = 0;
+      int cnt = 0;  // upper triangle (row <= column), column by column
       for (int c = 0; c < s; ++c)
-        for (int i = 0; i <= c; ++i) cnt += t.A(i, c) != 0.0;
+        for (Eigen::SparseMatrix<double>::InnerIterator it(t.A, c); it; ++it) cnt += it.row() <= c && it.value() != 0.0;
       if (cnt == 0) continue;
       auto* sb = static_cast<sparseblock*>(std::calloc(1, sizeof(sparseblock)));
       sb->blocknum = j;
@@ -115,12 +115,12 @@ const char* kParams =
       sb->jindices = static_cast<int*>(std::malloc(sizeof(int) * static_cast<size_t>(cnt + 1)));
       int e = 0;
       for (int c = 0; c < s; ++c)
-        for (int i = 0; i <= c; ++i)
-          if (t.A(i, c) != 0.0) {
+        for (Eigen::SparseMatrix<double>::InnerIterator it(t.A, c); it; ++it)
+          if (it.row() <= c && it.value() != 0.0) {
             ++e;
-            sb->iindices[e] = i + 1;
+            sb->iindices[e] = static_cast<int>(it.row()) + 1;
             sb->jindices[e] = c + 1;
-            sb->entries[e] = t.A(i, c);
+            sb->entries[e] = it.value();
           }
       sb->next = constraints[t.var + 1].blocks;
       constraints[t.var + 1].blocks = sb;

@@ -1,6 +1,7 @@
 // hapstab/lmi/program.cpp -- affine matrix expressions and the program object.
 #include "hapstab/lmi/program.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -16,6 +17,12 @@ SpMat dense_to_sparse(const MatrixXd& d) {
   SpMat s = d.sparseView(0.0, 0.0);  // keep every non-zero exactly
   s.makeCompressed();
   return s;
+}
+
+double max_abs(const SpMat& m) {
+  double v = 0;
+  for (Eigen::Index i = 0; i < m.nonZeros(); ++i) v = std::max(v, std::abs(m.valuePtr()[i]));
+  return v;
 }
 }  // namespace
 
@@ -49,7 +56,11 @@ Expr transpose(const Expr& e) { return e.transpose(); }
 
 MatrixXd Expr::value(const std::vector<double>& x) const {
   MatrixXd v = c0_;
-  for (const auto& [k, m] : terms_) v += x.at(static_cast<size_t>(k)) * MatrixXd(m);
+  for (const auto& [k, m] : terms_) {
+    const double xk = x.at(static_cast<size_t>(k));
+    for (int o = 0; o < m.outerSize(); ++o)
+      for (SpMat::InnerIterator it(m, o); it; ++it) v(it.row(), it.col()) += xk * it.value();
+  }
   return v;
 }
 
@@ -91,7 +102,7 @@ Expr Expr::left(const MatrixXd& L, const Expr& a) {
   r.rows_ = static_cast<int>(L.rows());
   r.cols_ = a.cols_;
   r.c0_ = L * a.c0_;
-  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(L * MatrixXd(m))));
+  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(L * m)));
   return r;
 }
 Expr Expr::right(const Expr& a, const MatrixXd& R) {
@@ -102,7 +113,7 @@ Expr Expr::right(const Expr& a, const MatrixXd& R) {
   r.rows_ = a.rows_;
   r.cols_ = static_cast<int>(R.cols());
   r.c0_ = a.c0_ * R;
-  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(MatrixXd(m) * R)));
+  for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(m * R)));
   return r;
 }
 
@@ -291,7 +302,8 @@ void check_vars(const Expr& F, int nvars, const std::string& where) {
   auto finite = [](const MatrixXd& m) { return m.allFinite(); };
   if (!finite(F.constant())) throw InputError(where + ": a constant is not finite (NaN or Inf)");
   for (const auto& [k, m] : F.terms())
-    if (!finite(MatrixXd(m))) throw InputError(where + ": a coefficient is not finite (NaN or Inf)");
+    for (Eigen::Index i = 0; i < m.nonZeros(); ++i)
+      if (!std::isfinite(m.valuePtr()[i])) throw InputError(where + ": a coefficient is not finite (NaN or Inf)");
 }
 }  // namespace
 
@@ -310,7 +322,13 @@ int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
       throw InputError(where + ": the matrix is not symmetric (" + what + ", asymmetry " + std::to_string(err) + ")");
   };
   asym(F.constant(), "constant part");
-  for (const auto& [k, m] : F.terms()) asym(MatrixXd(m), "coefficient of " + scalar_names_[static_cast<size_t>(k)]);
+  for (const auto& [k, m] : F.terms()) {  // sparse: only the stored entries are compared
+    const double scale = max_abs(m);
+    const double err = max_abs(SpMat(m - SpMat(m.transpose())));
+    if (err > 1e-12 * scale)
+      throw InputError(where + ": the matrix is not symmetric (coefficient of " + scalar_names_[static_cast<size_t>(k)] +
+                       ", asymmetry " + std::to_string(err) + ")");
+  }
   // Store the exactly symmetrised expression (the upper triangle is what the back-ends read).
   lmis_.push_back({name, F, s});
   return static_cast<int>(lmis_.size()) - 1;

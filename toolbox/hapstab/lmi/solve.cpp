@@ -3,6 +3,7 @@
 #include "hapstab/lmi/solve.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -139,32 +140,55 @@ bool eliminate(const Program& prog, Affine& af, std::string& why) {
   return true;
 }
 
-// Reduced block data in double: G0 + sum_k z_k G_k (symmetrised).
+// Reduced block data in double: G0 + sum_k z_k G_k (symmetrised). The coefficients stay sparse:
+// at m = 32 DOF a dense copy per variable and block is hundreds of MB.
 struct Reduced {
   Eigen::MatrixXd G0;
-  std::map<int, Eigen::MatrixXd> G;
+  std::map<int, SpMat> G;
 };
+SpMat sym_sparse(const SpMat& M) {
+  SpMat S = 0.5 * (M + SpMat(M.transpose()));
+  S.prune([](Eigen::Index, Eigen::Index, double v) { return v != 0.0; });
+  S.makeCompressed();
+  return S;
+}
+double max_abs(const SpMat& m) {
+  double v = 0;
+  for (Eigen::Index i = 0; i < m.nonZeros(); ++i) v = std::max(v, std::abs(m.valuePtr()[i]));
+  return v;
+}
+void add_to(Eigen::MatrixXd& D, double c, const SpMat& m) {
+  for (int o = 0; o < m.outerSize(); ++o)
+    for (SpMat::InnerIterator it(m, o); it; ++it) D(it.row(), it.col()) += c * it.value();
+}
+// d_r d_c m_rc (D diagonal), sparse
+SpMat congruence(const SpMat& m, const Eigen::VectorXd& d, double s) {
+  SpMat r = m;
+  for (int o = 0; o < r.outerSize(); ++o)
+    for (SpMat::InnerIterator it(r, o); it; ++it) it.valueRef() = s * d(it.row()) * it.value() * d(it.col());
+  return r;
+}
 Reduced reduce(const Expr& F, const Affine& af) {
   Reduced r;
   auto sym = [](const Eigen::MatrixXd& M) -> Eigen::MatrixXd { return 0.5 * (M + M.transpose()); };
   if (af.identity) {
     r.G0 = sym(F.constant());
-    for (const auto& [k, m] : F.terms()) r.G[k] = sym(Eigen::MatrixXd(m));
+    for (const auto& [k, m] : F.terms()) r.G[k] = sym_sparse(m);
     return r;
   }
   Eigen::MatrixXd G0 = F.constant();
   for (const auto& [k, m] : F.terms()) {
-    if (af.x0d(k) != 0.0) G0 += af.x0d(k) * Eigen::MatrixXd(m);
+    if (af.x0d(k) != 0.0) add_to(G0, af.x0d(k), m);
     for (int f = 0; f < af.nz; ++f) {
       const double c = af.Nd(k, f);
       if (c == 0.0) continue;
       auto it = r.G.find(f);
-      if (it == r.G.end()) r.G[f] = c * Eigen::MatrixXd(m);
-      else it->second += c * Eigen::MatrixXd(m);
+      if (it == r.G.end()) r.G[f] = c * m;
+      else it->second += c * m;
     }
   }
   r.G0 = sym(G0);
-  for (auto& [k, m] : r.G) m = sym(m);
+  for (auto& [k, m] : r.G) m = sym_sparse(m);
   return r;
 }
 
@@ -265,7 +289,7 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   std::vector<int> used(static_cast<size_t>(af.nz), 0);
   for (const auto& r : red)
     for (const auto& [k, m] : r.G)
-      if (m.cwiseAbs().maxCoeff() > 0) used[static_cast<size_t>(k)] = 1;
+      if (max_abs(m) > 0) used[static_cast<size_t>(k)] = 1;
   for (int k = 0; k < af.nz; ++k)
     if (!used[static_cast<size_t>(k)] && cz(k) != 0.0) {
       res.status = SolveStatus::unbounded;
@@ -293,14 +317,16 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
         const auto nb = red[j].G0.rows();
         Eigen::VectorXd rho = (D[j].asDiagonal() * red[j].G0.cwiseAbs() * D[j].asDiagonal()).rowwise().maxCoeff();
         for (const auto& [k, m] : red[j].G)
-          rho = rho.cwiseMax(s(k) * (D[j].asDiagonal() * m.cwiseAbs() * D[j].asDiagonal()).rowwise().maxCoeff());
+          for (int o = 0; o < m.outerSize(); ++o)
+            for (SpMat::InnerIterator it(m, o); it; ++it)
+              rho(it.row()) = std::max(rho(it.row()), s(k) * std::abs(D[j](it.row()) * it.value() * D[j](it.col())));
         for (Eigen::Index r = 0; r < nb; ++r)
           if (rho(r) > 0) D[j](r) /= std::sqrt(rho(r));
       }
       Eigen::VectorXd sig = Eigen::VectorXd::Zero(af.nz);
       for (size_t j = 0; j < red.size(); ++j)
         for (const auto& [k, m] : red[j].G)
-          sig(k) = std::max(sig(k), s(k) * (D[j].asDiagonal() * m.cwiseAbs() * D[j].asDiagonal()).maxCoeff());
+          sig(k) = std::max(sig(k), max_abs(congruence(m, D[j], s(k))));
       for (int k = 0; k < af.nz; ++k)
         if (sig(k) > 0) s(k) /= std::sqrt(sig(k));
     }
@@ -328,17 +354,23 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
       B.C -= opt.strict_threshold * Eigen::MatrixXd::Identity(B.C.rows(), B.C.cols());
     for (const auto& [k, m] : red[j].G) {
       if (zmap[static_cast<size_t>(k)] < 0) continue;
-      Eigen::MatrixXd A = s(k) * (Dj * m * Dj);
-      if (A.cwiseAbs().maxCoeff() == 0) continue;
-      B.terms.push_back({zmap[static_cast<size_t>(k)], A});
+      SpMat A = congruence(m, D[j], s(k));  // exact: powers of two
+      if (max_abs(A) == 0) continue;
+      B.terms.push_back({zmap[static_cast<size_t>(k)], std::move(A)});
     }
-    if (strict && use_t) B.terms.push_back({it_, -Eigen::MatrixXd::Identity(B.C.rows(), B.C.cols())});
+    if (strict && use_t) {
+      SpMat I(B.C.rows(), B.C.cols());
+      I.setIdentity();
+      B.terms.push_back({it_, -I});
+    }
     sf.blocks.push_back(std::move(B));
   }
   if (use_t) {
     SdpBlock cap;
     cap.C = Eigen::MatrixXd::Constant(1, 1, prog.margin_cap());
-    cap.terms.push_back({it_, -Eigen::MatrixXd::Ones(1, 1)});
+    SpMat one(1, 1);
+    one.insert(0, 0) = -1.0;
+    cap.terms.push_back({it_, one});
     sf.blocks.push_back(std::move(cap));
   }
 
@@ -380,7 +412,7 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
     const auto Dj = D[j].asDiagonal();
     Eigen::MatrixXd S = Dj * red[j].G0 * Dj;
     for (const auto& [k, m] : red[j].G)
-      if (zmap[static_cast<size_t>(k)] >= 0) S += z(k) * (Dj * m * Dj);
+      if (zmap[static_cast<size_t>(k)] >= 0) add_to(S, z(k), congruence(m, D[j], 1.0));
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S, Eigen::EigenvaluesOnly);
     actual = std::min(actual, es.eigenvalues()(0));
   }
