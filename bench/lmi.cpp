@@ -1,9 +1,11 @@
 // bench/lmi.cpp -- LMI layer speed: a problem of Theorem 5's shape (paper 000, (16)) solved
 // and certified, and its growth with the number of DOF m, DSDP beside CSDP in the same run.
 //
-// Problem (Theorem 5's structure, with a random stable m-input environment E of n = 4m
-// states (m = 2: blocks 10x10 and 4x4, 43 scalar variables) for the size benchmark, n = 2m
-// for the scaling sweep):
+// Problem (Theorem 5's structure, with a random stable m-input environment E of n states;
+// size benchmark: m = 2, n = 8 (blocks 10x10 and 4x4, 43 scalar variables), B, C entries
+// 0.3 N(0,1); scaling sweep m = 2..32: n = m/2 + 2 states (a Fig. 5-like environment has m + 2;
+// n = 2m, as before, makes P alone 2080 variables at m = 32, minutes per solve on reference
+// BLAS), B, C entries 0.6/sqrt(n) N(0,1) so that every size is strictly feasible:
 //   P > 0,  X in G(m; 1..1) > 0,  Q_V in BD(m; 1..1) > 0,  Q_E symmetric,
 //   [[A'PA - P, A'PB - C'X/2], [., B'PB - (XD + D'X)/2 - Q_E]] < 0,
 //   [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0,  X <= 10 I (bounded),
@@ -17,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <random>
 
 #include "hapstab/lmi/solve.hpp"
@@ -31,7 +34,7 @@ struct Problem {
   int vars = 0, block = 0;
 };
 
-Problem theorem5_shape(int m, int n, unsigned seed) {
+Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3) {
   std::mt19937 g(seed);
   std::normal_distribution<double> N(0, 1);
   MatrixXd A(n, n), B(n, m), C(m, n), D(m, m);
@@ -41,7 +44,7 @@ Problem theorem5_shape(int m, int n, unsigned seed) {
   // A strongly input-strictly-passive environment (D = 2I, small B, C) so that (16) is
   // strictly feasible and the benchmark measures a solve + certificate, not an infeasibility.
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < m; ++j) B(i, j) = 0.3 * N(g), C(j, i) = 0.3 * N(g);
+    for (int j = 0; j < m; ++j) B(i, j) = bc * N(g), C(j, i) = bc * N(g);
   D = 2.0 * MatrixXd::Identity(m, m);
   Problem p;
   auto P = p.prog.NewSymmetric(n, "P");
@@ -64,8 +67,8 @@ Problem theorem5_shape(int m, int n, unsigned seed) {
   return p;
 }
 
-void run(benchmark::State& st, Backend b, int m, int n, bool certify) {
-  Problem p = theorem5_shape(m, n, 1234u + static_cast<unsigned>(m));
+void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc = 0.3) {
+  Problem p = theorem5_shape(m, n, 1234u + static_cast<unsigned>(m), bc);
   Options o;
   o.backend = b;
   o.certify = certify;
@@ -99,10 +102,12 @@ int main(int argc, char** argv) {
                                  [b](benchmark::State& st) { run(st, b, 2, 8, false); })
         ->Unit(benchmark::kMillisecond);
     for (int m : {2, 4, 8, 16, 32}) {
-      auto* bm = benchmark::RegisterBenchmark(("Scaling/" + bn + "/" + std::to_string(m)).c_str(),
-                                              [b, m](benchmark::State& st) { run(st, b, m, 2 * m, true); });
+      auto* bm = benchmark::RegisterBenchmark(("Scaling/" + bn + "/" + std::to_string(m)).c_str(), [b, m](benchmark::State& st) {
+        const int n = m / 2 + 2;
+        run(st, b, m, n, true, 0.6 / std::sqrt(static_cast<double>(n)));
+      });
       bm->Unit(benchmark::kMillisecond);
-      if (m >= 16) bm->Iterations(1);  // seconds per solve: one timed run is enough
+      if (m >= 16) bm->Iterations(1);  // 0.2 s (m = 16) to 9 s (m = 32) per solve: one timed run
     }
   }
   benchmark::Initialize(&argc, argv);

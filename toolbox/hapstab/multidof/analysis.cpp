@@ -150,7 +150,8 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
 
 namespace detail {
 
-EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc) {
+EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
+                        bool qe_is_delta_x) {
   EnvVars ev;
   const int m = pb.structure.m();
   const int n = static_cast<int>(pb.E.states());
@@ -172,14 +173,14 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
   }
   // g_i >= 1 (9)
   prog.AddLinearInequality("gamma_i >= 1 (9)", ev.g, MatrixXd::Ones(N, 1));
-  ev.QE = prog.NewSymmetric(m, "Q_E");
+  if (!qe_is_delta_x) ev.QE = prog.NewSymmetric(m, "Q_E");
   const MatrixXd E1 = to_double(sp.E1);
   const MatrixXd DE = to_double(pb.E.D);
   // XE1s = (X E(1) + E(1)^T X)/2 (= X E(1) exactly for the exact basis)
   const Expr XE1s = 0.5 * (ev.X * E1 + E1.transpose() * ev.X);
   // W = X E(1)/(2T) > 0  (the P22 block in the split coordinates)
   prog.AddLmi("P > 0: X E(1)/(2T) block", (0.5 / Td) * XE1s, Strictness::strict);
-  const Expr QEe(ev.QE);
+  const Expr QEe = qe_is_delta_x ? to_double(pb.structure.delta_D()) * ev.X : Expr(ev.QE);
   Expr F22 = (Td / 2) * XE1s - (Td / 2) * (ev.X * DE + DE.transpose() * ev.X) - QEe;
   if (n > 0) {
     ev.P11 = prog.NewSymmetric(n, "P11");
@@ -219,7 +220,7 @@ ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev) {
     x.X += th * ev.Xk[k];
     x.theta.push_back(th);
   }
-  x.QE = get(ev.QE);
+  if (ev.QE.rows > 0) x.QE = get(ev.QE);
   if (ev.P11.rows > 0) x.P11 = get(ev.P11);
   return x;
 }
@@ -411,7 +412,7 @@ rational normaliser(const MatQ& X) {
 }
 }  // namespace
 
-AnalysisResult analyze(const Problem& pb, const lmi::Options& opt) {
+AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode) {
   pb.validate(false);
   AnalysisResult res;
   res.facial = facial_conditions(pb);
@@ -423,6 +424,60 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt) {
     return res;
   }
   const EhatSplit sp = ehat_split(pb.E);
+  if (mode == AnalysisMode::stability_only && !pb.qv_block_diagonal) {
+    // Q_E := Delta_D X eliminated (see analysis.hpp); only P11, X (theta) remain.
+    Program prog;
+    const EnvVars ev = add_environment(prog, pb, sp, res.facial, true);
+    prog.SetMarginObjective(1.0);
+    const lmi::Result r = lmi::Solve(prog, opt);
+    res.verdict = r.verdict;
+    res.margin = r.margin;
+    res.solver_detail = verdict_text(r);
+    if (r.verdict == lmi::Feasibility::infeasible) {
+      res.certified = r.certificate == lmi::Certificate::infeasible_exact;
+      res.certificate = res.certified ? "exact Farkas certificate of the posed (reduced) LMI with Q_E = Delta_D X "
+                                        "(infeasible there implies (16) infeasible)"
+                                      : "numeric only";
+      return res;
+    }
+    if (r.x.empty()) return res;
+    // mu: smallest eigenvalue of the reduced first LMI at the solver's point (original scale)
+    double mu = INFINITY;
+    for (size_t i = 0; i < prog.lmis().size(); ++i)
+      if (prog.lmis()[i].name.rfind("(16) first LMI", 0) == 0) mu = std::min(mu, r.min_eigenvalue[i]);
+    ExactEnv x = exact_env(r, ev);
+    const rational s = normaliser(x.X);
+    x.X *= s;
+    x.P11 *= s;
+    const MatQ DX = pb.structure.delta_D() * x.X;
+    std::string why = "the first LMI with Q_E = Delta_D X has no margin at the solver's point";
+    bool ok = false;
+    MatQ QV;
+    for (double f : {0.5, 0.0625}) {
+      if (!(mu > 0)) break;
+      const rational eps = lmi::round_dyadic(f * mu * to_real<double>(s), 20);
+      if (!(eps > 0)) break;
+      x.QE = DX - eps * MatQ::Identity(m, m);
+      QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+      ok = exact_recheck(pb, sp, x, QV, why);
+      if (ok) break;
+    }
+    res.certified = ok && r.margin > 0;
+    if (res.certified) {
+      res.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
+      why += "; Q_E = Delta_D X - eps I and Q_V = Q_E + Q_E^2/eps + eps I constructed exactly (stability-only mode)";
+    }
+    res.certificate = why;
+    if (ok) {
+      res.X = to_double(x.X);
+      res.Q_E = to_double(x.QE);
+      res.Q_V = to_double(QV);
+      res.gamma_sqrt = gamma_sqrt(pb, res.X);
+      for (double g : res.gamma_sqrt) res.gamma.push_back(g * g);
+      res.delta_V = gamma_inv_scale(res.Q_V, res.X);
+    }
+    return res;
+  }
   auto build = [&](Program& prog, EnvVars& ev, MatrixVariable& QV) {
     ev = add_environment(prog, pb, sp, res.facial);
     QV = pb.qv_block_diagonal ? prog.NewBlockDiagonal(pb.structure.operator_sizes(), "Q_V") : prog.NewSymmetric(m, "Q_V");
@@ -463,7 +518,7 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt) {
       res.delta_V = gamma_inv_scale(res.Q_V, res.X);
     }
   }
-  if (res.verdict != lmi::Feasibility::feasible) return res;
+  if (res.verdict != lmi::Feasibility::feasible || mode == AnalysisMode::stability_only) return res;
   {
     // least dissipative coupling: minimise t with Q_V <= t I
     Program prog;

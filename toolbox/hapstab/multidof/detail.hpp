@@ -22,7 +22,10 @@ struct EnvVars {
   lmi::MatrixVariable P11, QE;
   lmi::Expr X, g;                                    ///< X (m x m) and g (N x 1) expressions
 };
-EnvVars add_environment(lmi::Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc);
+/// `qe_is_delta_x`: no Q_E variable; Q_E := Delta_D X in the first LMI (the stability-only
+/// elimination of analysis.hpp; EnvVars::QE then has no rows).
+EnvVars add_environment(lmi::Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
+                        bool qe_is_delta_x = false);
 void add_condition14(lmi::Program& prog, const Problem& pb, const EnvVars& ev, const lmi::Expr& QV);
 
 struct ExactEnv {
