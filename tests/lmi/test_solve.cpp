@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <random>
 
 #include "hapstab/lmi/certificate.hpp"
 #include "hapstab/lmi/solve.hpp"
@@ -284,4 +285,42 @@ TEST(LmiCertificate, FacialReductionCertifiesSingularLmi) {
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.certified()) << r.detail;
   }
+}
+
+// exact_lmi_holds (integer products and shifts on a common binary exponent) must give the verdict
+// of the rational route exact_value + exact_pd_bareiss / exact_definiteness. Cases: random
+// 5x5 symmetric data with entries spread over 2^-40..2^40 (exponent alignment), dyadic and
+// non-dyadic x (1/3, 5/7: common denominator 21), x on the PSD boundary (exactly singular:
+// strict fails, non-strict holds), and one just beyond it (both fail).
+TEST(ExactCertificate, IntegerRouteAgreesWithRationalRoute) {
+  Program p;
+  auto a = p.NewScalar("a"), b = p.NewScalar("b");
+  std::mt19937 g(7);
+  std::uniform_int_distribution<int> e(-40, 40), v(-9, 9);
+  auto rnd_sym = [&](int n) {
+    MatrixXd M(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j <= i; ++j) M(i, j) = M(j, i) = std::ldexp(v(g), e(g));
+    return M;
+  };
+  int agreed = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const MatrixXd C = rnd_sym(5), A = rnd_sym(5), B = rnd_sym(5);
+    Expr F = Expr(C) + kron(A, Expr(a)) + kron(B, Expr(b));
+    for (auto xs : {std::vector<rational>{rational(1, 3), rational(5, 7)}, std::vector<rational>{rational(3, 1024), rational(-7)},
+                    std::vector<rational>{rational(0), rational(0)}}) {
+      const MatQ Fq = exact_value(F, xs);
+      EXPECT_EQ(exact_lmi_holds(F, xs, true), exact_pd_bareiss(Fq)) << trial;
+      EXPECT_EQ(exact_lmi_holds(F, xs, false), exact_definiteness(Fq).psd) << trial;
+      ++agreed;
+    }
+  }
+  EXPECT_EQ(agreed, 120);
+  // boundary: F = [[1, a], [a, 1]] at a = 1 is singular PSD; at a = 1 + 2^-50 indefinite
+  Expr F2 = Expr(MatrixXd::Identity(2, 2)) + kron(M2(0, 1, 1, 0), Expr(a));
+  const std::vector<rational> on{rational(1), rational(0)}, beyond{rational(1) + rational(1) / (integer(1) << 50), rational(0)};
+  EXPECT_FALSE(exact_lmi_holds(F2, on, true));
+  EXPECT_TRUE(exact_lmi_holds(F2, on, false));
+  EXPECT_FALSE(exact_lmi_holds(F2, beyond, true));
+  EXPECT_FALSE(exact_lmi_holds(F2, beyond, false));
 }

@@ -2,6 +2,7 @@
 #include "hapstab/lmi/certificate.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -48,6 +49,105 @@ Definiteness exact_definiteness(MatQ M) {
   return d;
 }
 
+namespace {
+// Leading principal minors of the symmetric integer matrix whose lower triangle is A (row-major
+// n x n, upper part unused), fraction-free (Bareiss): true iff all are positive. Destroys A.
+bool bareiss_pd_lower(std::vector<integer>& A, Eigen::Index n) {
+  auto at = [&](Eigen::Index i, Eigen::Index j) -> integer& { return A[static_cast<size_t>(i * n + j)]; };
+  integer prev = 1, t;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if (at(k, k) <= 0) return false;  // leading principal minor k+1 (times a positive factor) not positive
+    for (Eigen::Index i = k + 1; i < n; ++i)
+      for (Eigen::Index j = k + 1; j <= i; ++j) {
+        t = at(i, j) * at(k, k);
+        t -= at(i, k) * at(j, k);
+        at(i, j) = t / prev;  // exact division (Sylvester's identity)
+      }
+    prev = at(k, k);
+  }
+  return true;
+}
+
+// v = mant * 2^exp exactly (mant odd or 0, |mant| < 2^53).
+void split_double(double v, long long& mant, long& exp) {
+  if (v == 0.0) {
+    mant = 0;
+    exp = 0;
+    return;
+  }
+  int e = 0;
+  const double f = std::frexp(v, &e);
+  mant = static_cast<long long>(std::ldexp(f, 53));
+  exp = e - 53;
+  const int tz = __builtin_ctzll(static_cast<unsigned long long>(mant < 0 ? -mant : mant));
+  mant >>= tz;
+  exp += tz;
+}
+}  // namespace
+
+bool exact_lmi_holds(const Expr& F, const std::vector<rational>& x, bool strict) {
+  const Eigen::Index n = F.rows();
+  if (F.cols() != n) throw InputError("exact_lmi_holds: matrix is not square");
+  if (n == 0) return true;
+  // common denominator q of the x_k used, integer numerators P_k = x_k q
+  integer q = 1;
+  for (const auto& [k, m] : F.terms()) {
+    const rational& xk = x.at(static_cast<size_t>(k));
+    if (xk != 0 && m.nonZeros() > 0) {
+      const integer d = den(xk);
+      if (d != 1) q = boost::multiprecision::lcm(q, d);
+    }
+  }
+  struct Contrib {
+    Eigen::Index i, j;
+    long long mant;
+    long exp;
+    const integer* a;  // multiplier (q for the constant, P_k for term k)
+  };
+  std::vector<Contrib> cs;
+  std::vector<integer> P;
+  P.reserve(F.terms().size());
+  long emin = 0;
+  bool first = true;
+  auto add = [&](Eigen::Index i, Eigen::Index j, double v, const integer* a) {
+    long long mt;
+    long ex;
+    split_double(v, mt, ex);
+    if (mt == 0) return;
+    if (first || ex < emin) emin = ex;
+    first = false;
+    cs.push_back({i, j, mt, ex, a});
+  };
+  const MatrixXd& C0 = F.constant();
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (C0(i, j) != 0.0) add(i, j, C0(i, j), &q);
+  for (const auto& [k, m] : F.terms()) {
+    const rational& xk = x.at(static_cast<size_t>(k));
+    if (xk == 0) continue;
+    P.push_back(num(xk) * (q / den(xk)));
+    const integer* a = &P.back();
+    for (int o = 0; o < m.outerSize(); ++o)
+      for (SpMat::InnerIterator it(m, o); it; ++it) add(it.row(), it.col(), it.value(), a);
+  }
+  // integer matrix G = q 2^-emin F(x), then S = G + G^T (lower triangle)
+  std::vector<integer> G(static_cast<size_t>(n * n));
+  integer t;
+  for (const auto& c : cs) {
+    t = *c.a;
+    t *= c.mant;
+    t <<= static_cast<unsigned>(c.exp - emin);
+    const Eigen::Index i = std::max(c.i, c.j), j = std::min(c.i, c.j);
+    G[static_cast<size_t>(i * n + j)] += t;  // (i,j) and (j,i) both land in the lower triangle: G + G^T
+  }
+  for (Eigen::Index i = 0; i < n; ++i) G[static_cast<size_t>(i * n + i)] *= 2;
+  if (strict) return bareiss_pd_lower(G, n);
+  MatQ S(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j <= i; ++j) S(i, j) = S(j, i) = rational(G[static_cast<size_t>(i * n + j)]);
+  return exact_definiteness(std::move(S)).psd;
+}
+
 bool exact_pd_bareiss(const MatQ& Min) {
   const auto n = Min.rows();
   if (Min.cols() != n) throw InputError("exact_pd_bareiss: matrix is not square");
@@ -62,21 +162,9 @@ bool exact_pd_bareiss(const MatQ& Min) {
       if (dd != 1) L = boost::multiprecision::lcm(L, dd);
     }
   std::vector<integer> A(static_cast<size_t>(n * n));
-  auto at = [&](Eigen::Index i, Eigen::Index j) -> integer& { return A[static_cast<size_t>(i * n + j)]; };
   for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j <= i; ++j) at(i, j) = num(S(i, j)) * (L / den(S(i, j)));
-  integer prev = 1, t;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (at(k, k) <= 0) return false;  // leading principal minor k+1 (times L^(k+1)) not positive
-    for (Eigen::Index i = k + 1; i < n; ++i)
-      for (Eigen::Index j = k + 1; j <= i; ++j) {
-        t = at(i, j) * at(k, k);
-        t -= at(i, k) * at(j, k);
-        at(i, j) = t / prev;  // exact division (Sylvester's identity)
-      }
-    prev = at(k, k);
-  }
-  return true;
+    for (Eigen::Index j = 0; j <= i; ++j) A[static_cast<size_t>(i * n + j)] = num(S(i, j)) * (L / den(S(i, j)));
+  return bareiss_pd_lower(A, n);
 }
 
 rational round_dyadic(double x, int bits) {

@@ -50,6 +50,14 @@ Definiteness exact_definiteness(MatQ M);
 /// true iff M (symmetric part) is positive definite; fraction-free (Bareiss) integer elimination.
 bool exact_pd_bareiss(const MatQ& M);
 
+/// Does F(x) > 0 (strict) or F(x) >= 0 hold exactly (symmetric part)? The same verdict as
+/// exact_pd_bareiss / exact_definiteness on exact_value(F, x), computed without a rational per
+/// entry: with q the common denominator of x and 2^e the smallest binary exponent among F's
+/// doubles, 2 q 2^-e F(x) is an integer matrix built by integer products and shifts only
+/// (positive scaling keeps definiteness); strict: fraction-free Bareiss with exit at the first
+/// non-positive leading minor; non-strict: exact LDL^T with zero-pivot handling on it.
+bool exact_lmi_holds(const Expr& F, const std::vector<rational>& x, bool strict);
+
 rational round_dyadic(double x, int bits);
 MatQ to_rational(const Eigen::MatrixXd& M);
 

@@ -475,8 +475,7 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
       }
       for (size_t b = 0; b < blocks.size() && ok; ++b) {
         if (!blocks[b].exact) continue;
-        MatQ F = exact_value(blocks[b].F, xq);
-        const bool pass = blocks[b].strict ? exact_pd_bareiss(F) : exact_definiteness(F).psd;
+        const bool pass = exact_lmi_holds(blocks[b].F, xq, blocks[b].strict);
         if (!pass) {
           ok = false;
           failed = blocks[b].name;
