@@ -18,6 +18,9 @@ std::vector<Figure>& figures() {
 
 fs::path plots_dir() {
   if (const char* env = std::getenv("HAPSTAB_DATA_DIR")) return fs::path(env) / "plots";
+  std::error_code ec;  // an installed hapstab: PREFIX/bin/hapstab next to PREFIX/share/hapstab
+  const fs::path installed = fs::read_symlink("/proc/self/exe", ec).parent_path().parent_path() / "share" / "hapstab";
+  if (!ec && fs::exists(installed / "plots" / "common.gp")) return installed / "plots";
 #ifdef HAPSTAB_SOURCE_DIR
   if (fs::exists(fs::path(HAPSTAB_SOURCE_DIR) / "plots" / "common.gp")) return fs::path(HAPSTAB_SOURCE_DIR) / "plots";
 #endif

@@ -31,7 +31,8 @@ struct FigureSkipped : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Where plots/ lives: $HAPSTAB_DATA_DIR, else the source tree, else the install's share/hapstab.
+/// Where plots/ lives: $HAPSTAB_DATA_DIR, else ../share/hapstab next to the executable (an install),
+/// else the source tree, else the configured install prefix's share/hapstab.
 std::filesystem::path plots_dir();
 /// The example scenes (examples/*.toml), next to plots/.
 std::filesystem::path examples_dir();
