@@ -35,12 +35,14 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   app.add_option("--H", o.H, "H(z) as an exact expression, e.g. \"K + B*(z-1)/(T*z)\"");
   app.add_option("--T", o.T, "sample period T > 0 (exact: 0.001 or 1/1000)");
   app.add_option("--set", o.sets, "parameter NAME=VALUE (repeatable)");
-  app.add_option("--delay", o.delay, "integer delay n >= 0: z^-n");
+  app.add_option("--delay", o.delay, "integer delay n >= 0: z^-n")->capture_default_str();
   app.add_option("--frac-delay", o.frac, "delay t_d >= 0 in seconds: e^{-j w t_d}");
-  app.add_option("--eta", o.eta, "operator shortage of passivity eta >= 0 (54)");
-  app.add_option("--digits", o.digits, "significant digits of the certified result (10..280)");
+  app.add_option("--eta", o.eta, "operator shortage of passivity eta >= 0 (54)")->capture_default_str();
+  app.add_option("--digits", o.digits,
+                 "significant digits of the certified result (10..280; with --frac-delay at most 20)")
+      ->capture_default_str();
   app.add_option("--method", o.method, "certified (default) | fast (double) | grid (comparison only)");
-  app.add_option("--grid-points", o.grid, "N for --method grid");
+  app.add_option("--grid-points", o.grid, "N for --method grid")->capture_default_str();
   app.add_flag("--explain", o.explain, "name the closed form of Sec. VI/VII that applies and show it beside the result");
   app.add_flag("--allow-noncausal", o.allow_noncausal, "evaluate (45) for a non-causal H (FIR form (47) as written)");
   if (!batch_line) {
@@ -93,22 +95,27 @@ Outcome compute(const BoundOpts& o) {
   return r;
 }
 
+bool is_grid(const Bound& b) { return b.status == Status::numeric && b.method.rfind("grid", 0) == 0; }
+
+// The enclosure every output states: rigorous for exact/certified results; for the fast path its
+// stated relative error 1e-13 (not a proof); for a grid [its maximum, inf) (a lower estimate).
+std::pair<std::string, std::string> enclosure(const Bound& b, int digits) {
+  if (b.infinite) return {"inf", "inf"};
+  if (is_grid(b)) return {exact_or_outward(b.lo, 17, -1), "inf"};
+  if (b.status == Status::numeric) {
+    const rational e = abs(b.lo) * rational(1, 10000000000000LL);
+    return {decimal_outward(b.lo - e, 17, -1), decimal_outward(b.hi + e, 17, +1)};
+  }
+  return {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
+}
+
 nlohmann::json to_json(const Outcome& r, int digits) {
   nlohmann::json j;
   const Bound& b = r.b;
   j["bound"] = b.infinite ? "inf" : b.value;
   j["omega"] = b.omega ? nlohmann::json(*b.omega) : nlohmann::json(nullptr);
-  if (b.infinite) j["enclosure"] = {"inf", "inf"};
-  else if (b.status == Status::numeric && b.method.rfind("grid", 0) == 0) {
-    // a grid maximum is only a lower estimate of the sup: no upper end is known
-    j["enclosure"] = {exact_or_outward(b.lo, 17, -1), "inf"};
-  } else if (b.status == Status::numeric) {
-    // fast path: the stated relative error 1e-13 (not a proof)
-    rational e = abs(b.lo) * rational(1, 10000000000000LL);
-    j["enclosure"] = {decimal_outward(b.lo - e, 17, -1), decimal_outward(b.hi + e, 17, +1)};
-  } else {
-    j["enclosure"] = {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
-  }
+  const auto [lo, hi] = enclosure(b, digits);
+  j["enclosure"] = {lo, hi};
   j["enclosure_rigorous"] = b.status == Status::exact || b.status == Status::certified || b.infinite;
   j["status"] = to_string(b.status);
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
@@ -129,13 +136,20 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   const Bound& b = r.b;
   std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.value) << "   [" << to_string(b.status)
             << "]\n";
-  if (!b.infinite && b.status != Status::exact)
-    std::cout << "  enclosure [" << exact_or_outward(b.lo, o.digits + 5, -1) << ", "
-              << exact_or_outward(b.hi, o.digits + 5, +1) << "]\n";
+  if (!b.infinite && b.status != Status::exact) {
+    const auto [lo, hi] = enclosure(b, o.digits);
+    std::cout << "  enclosure [" << lo << ", " << hi << "]"
+              << (b.status == Status::certified ? "" : is_grid(b) ? "  (a grid maximum only bounds b* from below)"
+                                                                    : "  (stated error, not a proof)")
+              << "\n";
+  }
   if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";
   std::cout << "  method: " << b.method << "\n";
   if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
-  if (!b.infinite) std::cout << "  passive iff b > " << b.value << "\n";
+  if (!b.infinite) {
+    if (is_grid(b)) std::cout << "  passive only if b > " << b.value << " (necessary; the grid may miss the peak)\n";
+    else std::cout << "  passive iff b > " << b.value << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
+  }
   if (o.explain) {
     if (!r.cf) {
       std::cout << "closed form: none of Sec. VI/VII applies; the generic certified result stands alone\n";

@@ -5,7 +5,8 @@
 // dissipative Q_V) and Theorem 6 (structured coupling design by CCL, returned by (23)-(24) and
 // verified independently). Scene schema: examples/README.md plus the [multidof] section of
 // hapstab/multidof/scene_multidof.hpp.
-// JSON keys, analyze: feasible, certified, verdict, certificate, gamma (gamma_i of Gamma),
+// JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds),
+//   certified, verdict, certificate, gamma (gamma_i of Gamma),
 //   x (the g_i of X), q_v, delta_v_required, margin, facial_reduction, least_dissipative
 //   {q_v, norm, delta_v, gamma, certified}, assumptions [{name, holds, certified, detail}].
 // JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
@@ -13,7 +14,8 @@
 //   detail}], message, assumptions.
 // It also registers Fig. 6 and Fig. 7 of paper 000 (`hapstab figure multidof_fig6|multidof_fig7`):
 // velocity data without coupling, with the designed V and with the paper's (27).
-// Exit codes: 0 feasible (a stabilising V found and verified), 1 not feasible / not verified,
+// Exit codes: 0 stability concluded (analyze) / a stabilising V found and verified (design),
+// 1 not feasible, not verified, or Assumption 1 fails,
 // 2 bad input (inconsistent block sizes, unstable E, non-square E), 3 numerical failure.
 #include <cmath>
 #include <filesystem>
@@ -89,7 +91,13 @@ int run_analyze(const Opts& o) {
   const auto sp = multidof::problem_from_scene(sc);
   const auto r = multidof::analyze(sp.problem, lmi_options(o));
   const bool feasible = r.verdict == lmi::Feasibility::feasible;
+  const json assume = assumptions(sp);
+  bool assumptions_hold = true;
+  for (const auto& a : assume) assumptions_hold = assumptions_hold && a["holds"].get<bool>();
+  // Theorem 5 concludes stability only when the LMIs are certified feasible AND Assumption 1 holds
+  const bool stable = feasible && r.certified && assumptions_hold;
   json j{{"feasible", feasible},
+         {"stability_concluded", stable},
          {"certified", r.certified},
          {"verdict", lmi::to_string(r.verdict)},
          {"certificate", r.certificate},
@@ -100,7 +108,7 @@ int run_analyze(const Opts& o) {
          {"margin", r.margin},
          {"facial_reduction", r.facial.explanation},
          {"solver", r.solver_detail},
-         {"assumptions", assumptions(sp)}};
+         {"assumptions", assume}};
   if (r.min_found)
     j["least_dissipative"] = {{"q_v", mat(r.Q_V_min)},
                               {"norm", r.Q_V_min_norm},
@@ -111,22 +119,26 @@ int run_analyze(const Opts& o) {
     print_json(j);
   } else {
     std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << lmi::to_string(r.verdict)
-              << (r.certified ? " (certified)" : " (not certified)") << "\n  " << r.certificate << "\n  "
-              << r.facial.explanation << "\n";
+              << (r.certified ? " (certified)" : " (not certified)") << "\n  " << r.certificate << "\n";
+    if (r.certificate.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
     if (feasible) {
-      std::cout << "  Gamma = sqrt(X): gamma =";
+      std::cout << "  one feasible point (the SDP solver's): Gamma = sqrt(X): gamma =";
       for (double g : r.gamma_sqrt) std::cout << " " << g;
-      std::cout << "\n  Q_V =\n" << r.Q_V << "\n  coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1 =\n" << r.delta_V << "\n";
+      std::cout << "\n  Q_V =\n" << r.Q_V << "\n  with this point the coupling must satisfy Delta_V >= Gamma^-1 Q_V Gamma^-1 =\n"
+                << r.delta_V << "\n";
       if (r.min_found)
-        std::cout << "  least dissipative coupling: ||Q_V||_2 -> " << r.Q_V_min_norm
+        std::cout << "  least dissipative point: ||Q_V||_2 = " << r.Q_V_min_norm
                   << (r.min_certified ? " (certified point)" : "")
-                  << " (infimum; strict Q_V > 0 cannot reach 0: any Delta_V > 0 with the requirement above suffices)\n";
+                  << "; Q_V > 0 can be made this small, so the requirement on the coupling shrinks with it "
+                     "(the infimum 0 is not attained)\n";
     }
     for (const auto& a : j["assumptions"])
       std::cout << "  [" << (a["holds"].get<bool>() ? "ok" : "FAILS") << "] " << a["name"].get<std::string>() << ": "
                 << a["detail"].get<std::string>() << "\n";
+    if (feasible && r.certified && !assumptions_hold)
+      std::cout << "  => the LMIs are feasible, but Assumption 1 fails: Theorem 5 does not conclude stability\n";
   }
-  return feasible && r.certified ? exit_ok : exit_property_fails;
+  return stable ? exit_ok : exit_property_fails;
 }
 
 // Closed loop of the scene with coupling V (none if V is empty), from the scene's inputs and

@@ -11,6 +11,7 @@
 // JSON output keys: level, method, status (numeric|failed), certified (a proven lower bound
 // exists), lower_bound (exact, decimal), kind, frequency {level, theta, status, note}, note.
 // Exit codes: 0 a level was computed, 2 bad input, 3 numerical failure (no method gave a level).
+#include <Eigen/Eigenvalues>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -104,6 +105,17 @@ int run(const Opts& o) {
     sys = tf2ss(G).cast<double>();
     sys.T = po.T;
   }
+  if (sys.states() > 0) {  // the levels of Lemmas 1-2 are defined for stable systems
+    const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(sys.A).eigenvalues();
+    for (Eigen::Index i = 0; i < ev.size(); ++i)
+      if (std::abs(ev(i)) > 1 + 1e-9) {
+        std::ostringstream os;
+        os << (o.ss.empty() ? "--H" : "--ss") << ": the system is unstable (pole at z = " << ev(i).real()
+           << (ev(i).imag() >= 0 ? " + " : " - ") << std::abs(ev(i).imag()) << "j, |z| = " << std::abs(ev(i))
+           << " > 1); passivity levels (Lemmas 1-2) need a stable system";
+        throw InputError(os.str());
+      }
+  }
   const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
   const auto backend = o.backend == "dsdp" ? lmi::Backend::dsdp : lmi::Backend::csdp;
   lmi::PassivityLevel l;
@@ -143,7 +155,9 @@ int run(const Opts& o) {
       std::cout.precision(12);
       std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
       if (lmi_ok && l.certified)
-        std::cout << "  certified: the system is " << o.kind << " with level >= " << to_decimal(l.lower_bound, 17)
+        std::cout << "  certified: " << o.kind << " level >= " << to_decimal(l.lower_bound, 17)
+                  << (l.lower_bound > 0 ? " > 0: the system is " + o.kind
+                                        : " (not positive: the system is not shown " + o.kind + ")")
                   << "   [exact LDL^T check of the rounded LMI solution]\n";
       if (freq_ok)
         std::cout << "  frequency domain: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
@@ -162,7 +176,7 @@ const Register reg({"passivity-level",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       app.add_option("--H", o->H, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\")");
-                      app.add_option("--T", o->T, "Sample period with --H, exact (0.01 or 1/100)");
+                      app.add_option("--T", o->T, "Sample period, exact (0.01 or 1/100); required with --H");
                       app.add_option("--set", o->sets, "Parameter of --H, NAME=VALUE (repeatable)");
                       app.add_option("--ss", o->ss, "JSON file {\"A\":[[..]],\"B\":..,\"C\":..,\"D\":..,\"T\":\"1/100\"}");
                       app.add_option("--kind", o->kind, "osp (default) or isp");

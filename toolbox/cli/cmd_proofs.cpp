@@ -59,7 +59,9 @@ int run(const Opts& o) {
                    {"evidence", c.evidence}});
     print_json(j);
   } else {
-    std::cout << "proofs: " << claims.size() - fails << " passed, " << fails << " failed\n";
+    std::cout << "proofs: " << claims.size() - fails << " passed, " << fails << " failed";
+    if (missing) std::cout << ", " << missing << " without a row in " << o.table;
+    std::cout << "\n";
   }
   return (fails || missing) ? exit_property_fails : exit_ok;
 }

@@ -120,7 +120,7 @@ const Register reg({"reproduce",
                       auto o = std::make_shared<Opts>();
                       app.add_option("--out", o->out, "Output folder")->capture_default_str();
                       app.add_option("--only", o->only, "Only this paper: 000, 001, 002, or toolbox (own charts)");
-                      app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex")
+                      app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex (tex = cairolatex, in figures/tex/)")
                           ->capture_default_str();
                       app.add_flag("--quiet", o->quiet, "No progress on stderr");
                       return [o]() { return run(*o); };
@@ -134,7 +134,8 @@ const Register fig_reg({"figure", "Draw one figure (or --list them): data into D
                           auto list = std::make_shared<bool>(false);
                           app.add_option("name", *name, "Figure name (see --list)");
                           app.add_option("--out", *out, "Output folder")->capture_default_str();
-                          app.add_option("--format", *format, "png,pdf,svg,tex")->capture_default_str();
+                          app.add_option("--format", *format, "Figure formats, comma-separated: png,pdf,svg,tex (tex = cairolatex, in figures/tex/)")
+                              ->capture_default_str();
                           app.add_flag("--list", *list, "List the figures");
                           return [=]() {
                             if (*list || name->empty()) {

@@ -223,7 +223,8 @@ int run(const Opts& o) {
                 << " m" << (s.limit_cycle->period_samples > 0 ? " (sampled sequence exactly periodic)" : "") << "\n";
     else
       std::cout << "  limit cycle       none\n";
-    std::cout << "  files             " << (dir / "samples.csv").string() << ", plot.gp, summary.json\n";
+    std::cout << "  files             " << (dir / "samples.csv").string() << (r.fine.rows() > 0 ? ", fine.csv" : "")
+              << ", plot.gp, summary.json\n";
   }
   return exit_ok;
 }

@@ -175,9 +175,6 @@ void conservatism(const fs::path& dir) {
     o << i++ << " \"" << nm << "\" " << kt << " " << kw << " " << (r.k_linear ? *r.k_linear : 0) << " "
       << (r.k_osc ? *r.k_osc : 0) << " " << r.wedge_contradicted << " " << r.tsypkin_contradicted << " "
       << r.assumptions.empty() << "\n";
-    std::cerr << "  " << r.c.name << ": k*_T " << kt << ", k*_w " << kw << ", k_lin " << (r.k_linear ? *r.k_linear : 0)
-              << ", k_osc " << (r.k_osc ? *r.k_osc : 0) << (r.assumptions.empty() ? "" : " (assumption violated)")
-              << ((r.wedge_contradicted || r.tsypkin_contradicted) ? "  CONTRADICTION" : "") << "\n";
   }
 }
 

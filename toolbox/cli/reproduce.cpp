@@ -25,10 +25,11 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
   std::vector<ClaimResult> all;
   auto t0 = std::chrono::steady_clock::now();
   const auto& reg = proofs::registry();
-  size_t i = 0;
+  size_t i = 0, total = 0;
+  for (const auto& p : reg) total += only.empty() || only == p.paper;
   for (const auto& p : reg) {
-    ++i;
     if (!only.empty() && only != p.paper) continue;
+    ++i;
     proofs::Checker check(p.paper);
     auto s0 = std::chrono::steady_clock::now();
     try {
@@ -40,7 +41,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
     }
     double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
     if (!quiet) {
-      std::cerr << "[proof " << i << "/" << reg.size() << "] " << p.paper << " " << p.id << ": "
+      std::cerr << "[proof " << i << "/" << total << "] " << p.paper << " " << p.id << ": "
                 << check.results().size() << " claims, " << dt << " s\n";
       for (const auto& c : check.results())
         std::cout << (c.holds ? "  holds  " : "  FAILS  ") << c.id << "  " << c.equation << "  ["

@@ -92,7 +92,9 @@ SceneRun run_one(const fs::path& file, const std::string& command, const std::ve
   for (const auto& [k, v] : *expect) {
     const std::string key(k.str());
     const json got = j.contains(key) ? j[key] : json(nullptr);
-    r.expected += (r.expected.empty() ? "" : "; ") + key + " = " + show(v);
+    const std::string w = show(v);
+    const bool op = v.is_string() && w.find_first_of("<>=") == 0;  // "> 1" reads as "key > 1"
+    r.expected += (r.expected.empty() ? "" : "; ") + key + (op ? " " : " = ") + w;
     r.got += (r.got.empty() ? "" : "; ") + key + " = " + show(got);
     const std::string why = check(key, v, got);
     if (!why.empty()) {

@@ -667,7 +667,9 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
   out.hi = std::max(lo, hi);
   out.status = converged ? Status::certified : Status::numeric;
   out.value = enclosure_decimal(out.lo, out.hi, dig);
-  out.method = "certified: interval branch-and-bound over w (MPFI, " + std::to_string(D) + " digits)";
+  out.method = "certified: interval branch-and-bound over w (MPFI, " + std::to_string(D) +
+               "-digit arithmetic, enclosure to " + std::to_string(dig) + " digits)";
+  if (digits > dig) out.note = std::to_string(digits) + " digits asked; the branch-and-bound for a fractional delay stops at 20";
   if (!converged) out.note = "branch-and-bound budget exhausted; enclosure is the last bracket";
   R w = best_at / mpfloat<D>(to_real<R>(pb.T));
   out.omega_lo = out.omega_hi = exact_rational(mpfloat<D>(w));

@@ -291,6 +291,7 @@ struct Engine {
           const double vb = (Cv.row(e.dof) * s)(0);
           s.noalias() += Bw.col(e.dof) * e.val;
           const double va = (Cv.row(e.dof) * s)(0);
+          maxv = std::fabs(va) > maxv ? std::fabs(va) : maxv;  // the recorded sample k holds it
           if (energy) {
             e_port[size_t(e.dof)] += e.val * 0.5 * (vb + va);
             e_po[size_t(e.dof)] += e.val * 0.5 * (vb + va);
