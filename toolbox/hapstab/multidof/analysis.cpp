@@ -225,6 +225,49 @@ ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev) {
   return x;
 }
 
+namespace {
+// Exact product A B through common denominators: integer multiply-adds (no gcd per operation, as
+// an mpq product has), then one canonicalisation per entry of the result.
+MatQ qmul(const MatQ& A, const MatQ& B) {
+  if (A.cols() != B.rows()) throw InputError("qmul: inner dimensions differ");
+  auto scale = [](const MatQ& M, integer& d, std::vector<integer>& I) {
+    d = 1;
+    for (Eigen::Index j = 0; j < M.cols(); ++j)
+      for (Eigen::Index i = 0; i < M.rows(); ++i)
+        if (den(M(i, j)) != 1) d = boost::multiprecision::lcm(d, den(M(i, j)));
+    I.assign(static_cast<size_t>(M.rows() * M.cols()), integer(0));
+    for (Eigen::Index i = 0; i < M.rows(); ++i)
+      for (Eigen::Index j = 0; j < M.cols(); ++j)
+        if (M(i, j) != 0) I[static_cast<size_t>(i * M.cols() + j)] = num(M(i, j)) * (d / den(M(i, j)));
+  };
+  integer da, db;
+  std::vector<integer> Ai, Bi;
+  scale(A, da, Ai);
+  scale(B, db, Bi);
+  const integer d = da * db;
+  const Eigen::Index R = A.rows(), K = A.cols(), Cc = B.cols();
+  MatQ C(R, Cc);
+  std::vector<integer> acc(static_cast<size_t>(Cc));
+  integer t;
+  for (Eigen::Index i = 0; i < R; ++i) {
+    for (auto& a : acc) a = 0;
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const integer& a = Ai[static_cast<size_t>(i * K + k)];
+      if (a == 0) continue;
+      for (Eigen::Index j = 0; j < Cc; ++j) {
+        const integer& b = Bi[static_cast<size_t>(k * Cc + j)];
+        if (b == 0) continue;
+        t = a;
+        t *= b;
+        acc[static_cast<size_t>(j)] += t;
+      }
+    }
+    for (Eigen::Index j = 0; j < Cc; ++j) C(i, j) = rational(acc[static_cast<size_t>(j)], d);
+  }
+  return C;
+}
+}  // namespace
+
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
   const int m = pb.structure.m();
   const int n = static_cast<int>(pb.E.states());
@@ -235,12 +278,12 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   if (n) Pt.topLeftCorner(n, n) = x.P11;
   Pt.bottomRightCorner(m, m) = x.X * sp.E1 / (2 * T);
   const MatQ Pi0i = inverse(sp.Pi0, "Pi0");
-  const MatQ P = Pi0i.transpose() * Pt * Pi0i;
+  const MatQ P = qmul(qmul(MatQ(Pi0i.transpose()), Pt), Pi0i);
   if (P != MatQ(P.transpose())) {
     why = "X E(1) is not exactly symmetric at the rounded point";
     return false;
   }
-  if (!lmi::exact_definiteness(P).pd) {
+  if (!lmi::exact_pd_bareiss(P)) {
     why = "P > 0 fails exactly";
     return false;
   }
@@ -249,40 +292,44 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   const MatQ& C = H.C;
   const MatQ& D = H.D;
   MatQ M1(n + 2 * m, n + 2 * m);
-  M1.topLeftCorner(n + m, n + m) = A.transpose() * P * A - P;
-  M1.topRightCorner(n + m, m) = A.transpose() * P * B - C.transpose() * x.X / 2;
+  const MatQ AtP = qmul(MatQ(A.transpose()), P);
+  M1.topLeftCorner(n + m, n + m) = qmul(AtP, A) - P;
+  M1.topRightCorner(n + m, m) = qmul(AtP, B) - qmul(MatQ(C.transpose()), x.X) / 2;
   M1.bottomLeftCorner(m, n + m) = M1.topRightCorner(n + m, m).transpose();
-  M1.bottomRightCorner(m, m) = B.transpose() * P * B - (x.X * D + D.transpose() * x.X) / 2 - x.QE;
+  M1.bottomRightCorner(m, m) = qmul(qmul(MatQ(B.transpose()), P), B) - (qmul(x.X, D) + qmul(MatQ(D.transpose()), x.X)) / 2 - x.QE;
   // facial equalities M1 [v_b; 0] = 0 for v_b = [Va b; b]
   MatQ Vk = MatQ::Zero(n + 2 * m, m);
   if (n) Vk.topRows(n) = sp.Va;
   Vk.block(n, 0, m, m) = MatQ::Identity(m, m);
-  if (!(M1 * Vk).isZero(0)) {
-    for (Eigen::Index i = 0; i < Vk.rows(); ++i)
-      for (Eigen::Index j = 0; j < Vk.cols(); ++j)
-        if ((M1 * Vk)(i, j) != 0) {
-          why = "facial equality M1 v = 0 fails exactly";
-          return false;
-        }
-  }
-  const auto d1 = lmi::exact_definiteness(MatQ(-M1));
-  if (!d1.psd) {
-    why = "-M1 >= 0 fails exactly (pivot " + std::to_string(d1.failed_at) + ")";
+  if (!qmul(M1, Vk).isZero(0)) {
+    why = "facial equality M1 v = 0 fails exactly";
     return false;
   }
-  if (d1.rank != n + m) {
-    why = "-M1 has rank " + std::to_string(d1.rank) + ", expected n + m = " + std::to_string(n + m) +
-          " (kernel exactly the facial directions)";
+  // With M1 Vk = 0 exactly and Vk = [Va; I; 0] (identity in rows n..n+m-1), the congruence by
+  // the nonsingular T = [W, Vk], W = the unit vectors of the other rows, gives
+  // T^T (-M1) T = blockdiag(W^T (-M1) W, 0). So "-M1 >= 0 with kernel exactly span(Vk) (rank
+  // n+m)" holds iff the principal submatrix of -M1 without rows/columns n..n+m-1 is positive
+  // definite: an exact fraction-free Bareiss test with exit at the first failing minor.
+  MatQ Wm(n + m, n + m);
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < n; ++i) keep.push_back(i);
+  for (Eigen::Index i = n + m; i < n + 2 * m; ++i) keep.push_back(i);
+  for (size_t i = 0; i < keep.size(); ++i)
+    for (size_t j = 0; j < keep.size(); ++j)
+      Wm(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = -M1(keep[i], keep[j]);
+  if (!lmi::exact_pd_bareiss(Wm)) {
+    why = "-M1 >= 0 with kernel exactly the facial directions (rank n + m = " + std::to_string(n + m) +
+          ") fails exactly: its block off the facial rows is not positive definite";
     return false;
   }
   const MatQ DD = pb.structure.delta_D();
   MatQ S(2 * m, 2 * m);
-  S << DD * x.X - x.QE, -x.QE, -x.QE, QV - x.QE;
-  if (!lmi::exact_definiteness(S).pd) {
+  S << qmul(DD, x.X) - x.QE, -x.QE, -x.QE, QV - x.QE;
+  if (!lmi::exact_pd_bareiss(S)) {
     why = "the scaled (14) > 0 fails exactly";
     return false;
   }
-  if (!lmi::exact_definiteness(QV).pd) {
+  if (!lmi::exact_pd_bareiss(QV)) {
     why = "Q_V > 0 fails exactly";
     return false;
   }
