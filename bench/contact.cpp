@@ -12,6 +12,8 @@
 // >= 50 M steps/s for order 2 (a plain Python loop: ~0.4 M steps/s).
 #include <benchmark/benchmark.h>
 
+#include "keep.hpp"
+
 #include <cmath>
 
 #include "hapstab/contact/limit_cycle.hpp"
@@ -65,7 +67,7 @@ void BM_verdict(benchmark::State& st) {
   TransferFunction H = scaled(i, static_cast<int>(st.range(1)));
   for (auto _ : st) {
     bool h = wedge_holds(H);
-    benchmark::DoNotOptimize(h);
+    keep(h);
   }
   st.SetLabel("order " + std::to_string(H.den().degree()));
 }
@@ -77,7 +79,7 @@ void BM_certified(benchmark::State& st) {
   for (auto _ : st) {
     ContactAnalysis a = analyze_contact(H, d);
     m = static_cast<double>(mpfloat<50>(a.wedge.margin.value));
-    benchmark::DoNotOptimize(m);
+    keep(m);
   }
   const double ref = ref_margin(i);
   st.counters["rel_err"] = std::abs(m - ref) / std::abs(ref);
@@ -90,7 +92,7 @@ void BM_grid(benchmark::State& st) {
   double m = 0;
   for (auto _ : st) {
     m = grid_margin(H, n, true).value;
-    benchmark::DoNotOptimize(m);
+    keep(m);
   }
   const double ref = ref_margin(i);
   st.counters["rel_err"] = std::abs(m - ref) / std::abs(ref);
@@ -112,7 +114,7 @@ void BM_lure(benchmark::State& st) {
   const long steps = 1 << 20;
   for (auto _ : st) {
     double y = run_steps(L, s, steps);
-    benchmark::DoNotOptimize(y);
+    keep(y);
   }
   st.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(steps) * st.iterations(), benchmark::Counter::kIsRate);
   st.SetLabel("order " + std::to_string(order));

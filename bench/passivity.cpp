@@ -6,6 +6,8 @@
 // Targets (reported, not asserted): fast <= 20 us/case with rel_err <= 1e-13; certified(30) <= 1 ms.
 #include <benchmark/benchmark.h>
 
+#include "keep.hpp"
+
 #include <cmath>
 
 #include "hapstab/lti/parse.hpp"
@@ -66,7 +68,7 @@ void BM_fast(benchmark::State& st) {
   for (auto _ : st) {
     auto r = FastBound::run(p);  // includes exact -> double-double conversion of H
     v = r ? r->first : NAN;
-    benchmark::DoNotOptimize(v);
+    keep(v);
   }
   set_error(st, exact_rational(v), i);
   st.SetLabel(cases[i].name);
@@ -80,7 +82,7 @@ void BM_certified(benchmark::State& st) {
   Bound b;
   for (auto _ : st) {
     b = bound_certified(p, digits);
-    benchmark::DoNotOptimize(b.lo);
+    keep(b.lo);
   }
   set_error(st, (b.lo + b.hi) / 2, i);
   st.SetLabel(cases[i].name);
@@ -94,7 +96,7 @@ void BM_grid(benchmark::State& st) {
   Bound b;
   for (auto _ : st) {
     b = bound_grid(p, N);
-    benchmark::DoNotOptimize(b.lo);
+    keep(b.lo);
   }
   set_error(st, b.lo, i);
   st.SetLabel(cases[i].name);

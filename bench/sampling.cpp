@@ -12,6 +12,8 @@
 //   bench_sampling --benchmark_format=json     (bench/chart-sampling turns it into a chart)
 #include <benchmark/benchmark.h>
 
+#include "keep.hpp"
+
 #include <array>
 #include <cmath>
 #include <string>
@@ -100,7 +102,7 @@ void BM_form(benchmark::State& st) {
     if constexpr (F == Form::eq38) v = r_eq38(T, th[i]);
     if constexpr (F == Form::eq44) v = r_eq44(T, th[i]);
     if constexpr (F == Form::eq44_naive) v = r_eq44_naive(T, th[i]);
-    benchmark::DoNotOptimize(v);
+    keep(v);
     i = (i + 1) & 63;
   }
   double worst = 0;
@@ -115,7 +117,7 @@ void BM_series(benchmark::State& st) {
   std::complex<S> v;
   for (auto _ : st) {
     v = r_series(T, th, N);
-    benchmark::DoNotOptimize(v);
+    keep(v);
   }
   set_err(st, rel_err(v, T, th), std::is_same_v<S, double>);
 }
@@ -127,7 +129,7 @@ void BM_accelerated(benchmark::State& st) {
   AcceleratedR<S> a{};
   for (auto _ : st) {
     a = r_series_accelerated(T, th, digits);
-    benchmark::DoNotOptimize(a);
+    keep(a);
   }
   set_err(st, rel_err(a.value, T, th), std::is_same_v<S, double>);
   st.counters["N"] = static_cast<double>(a.N);
@@ -141,7 +143,7 @@ void BM_certified(benchmark::State& st) {
   SeriesEnclosure<60> e{};
   for (auto _ : st) {
     e = r_series_certified<60>(T, theta, 20, 40);
-    benchmark::DoNotOptimize(e);
+    keep(e);
   }
   mpfloat<60> w = mpfloat<60>(upper(e.im) - lower(e.im)) / abs(mpfloat<60>(lower(e.im)));
   set_err(st, static_cast<double>(w), false);
@@ -153,7 +155,7 @@ void sweep(benchmark::State& st, Form f, double theta) {
   std::complex<double> v;
   for (auto _ : st) {
     v = eval(f, T, theta);
-    benchmark::DoNotOptimize(v);
+    keep(v);
   }
   st.counters["theta"] = theta;
   set_err(st, rel_err(v, T, theta), true);
