@@ -7,20 +7,20 @@
 name = 'sim_tightness'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
-set multiplot layout 1,2
+set multiplot layout 1,2 title (tex ? 'Tightness of $b^* = KT/2 + B$ (paper 001, (46)): $K = 20$\,kN/m, $B = 5$\,N\,s/m, $T = 1$\,ms' : 'Tightness of b* = KT/2 + B (paper 001, (46)): K = 20 kN/m, B = 5 N s/m, T = 1 ms')
 set xlabel (tex ? '$t$ [s]' : 't [s]')
 set ylabel (tex ? '$|v|$ [m/s]' : '|v| [m/s]')
 set title 'velocity, tuned operator'
 set key bottom left
 set logscale y
-set format y '10^{%L}'
+set format y (tex ? '$10^{%L}$' : '10^{%L}')
 plot datadir.'/sim_tightness_below.dat' using 1:(abs($2)) with lines ls 2 title 'b = 0.99 b*', \
      datadir.'/sim_tightness_above.dat' using 1:(abs($2)) with lines ls 1 title 'b = 1.01 b*'
 unset logscale y
 set format y '%g'
 set ylabel (tex ? '$\int f_h v\,dt$ [J]' : 'energy into the interface [J]')
 set title 'human-port energy'
-set key bottom left
+set key left center Left reverse width -6
 stats datadir.'/sim_tightness_random.dat' matrix nooutput
 ncol = STATS_size_x
 plot datadir.'/sim_tightness_below.dat' using 1:3 with lines ls 2 title 'b = 0.99 b*, tuned', \
