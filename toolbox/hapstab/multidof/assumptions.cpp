@@ -92,8 +92,10 @@ PassivityCheck operator_passive(const TransferMatrix& H) {
       if (!e.is_proper()) throw InputError("operator H(s) entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") is improper");
       if (!e.num().is_zero() && !hurwitz_stable(e.den())) {
         pc.detail = "entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") " + e.to_string() +
-                    " has a pole in Re s >= 0 (exact Routh array): not certified passive";
-        pc.certified = true;
+                    " has a pole in Re s >= 0 (exact Routh array): not certified passive (this test covers operators "
+                    "analytic in Re s >= 0; a positive-real operator with imaginary-axis poles, e.g. a spring k/s, "
+                    "is outside it, so no verdict either way)";
+        pc.certified = false;
         return pc;
       }
       const CP D = at_jw(e.den());
