@@ -139,7 +139,12 @@ const Register fig_reg({"figure", "Draw one figure (or --list them): data into D
                           app.add_flag("--list", *list, "List the figures");
                           return [=]() {
                             if (*list || name->empty()) {
-                              for (const auto& f : figures())
+                              std::vector<Figure> sorted = figures();  // by paper, then name
+                              std::sort(sorted.begin(), sorted.end(), [](const Figure& a, const Figure& b) {
+                                return std::make_pair(std::string(a.paper), std::string(a.name)) <
+                                       std::make_pair(std::string(b.paper), std::string(b.name));
+                              });
+                              for (const auto& f : sorted)
                                 std::cout << f.name << "  [" << f.paper << "]  " << f.caption << "\n";
                               if (!*list) throw InputError("figure: give a figure name (see --list)");
                               return int(exit_ok);
