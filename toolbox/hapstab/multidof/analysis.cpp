@@ -277,7 +277,9 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   MatQ Pt = MatQ::Zero(n + m, n + m);
   if (n) Pt.topLeftCorner(n, n) = x.P11;
   Pt.bottomRightCorner(m, m) = x.X * sp.E1 / (2 * T);
-  const MatQ Pi0i = inverse(sp.Pi0, "Pi0");
+  // Pi0 = [[I, Va], [0, I]] has the exact inverse [[I, -Va], [0, I]] (no elimination needed)
+  MatQ Pi0i = MatQ::Identity(n + m, n + m);
+  if (n) Pi0i.topRightCorner(n, m) = -sp.Va;
   const MatQ P = qmul(qmul(MatQ(Pi0i.transpose()), Pt), Pi0i);
   if (P != MatQ(P.transpose())) {
     why = "X E(1) is not exactly symmetric at the rounded point";
