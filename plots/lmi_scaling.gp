@@ -12,7 +12,7 @@ set format y (tex ? '$10^{%T}$' : '10^{%T}')
 set format x (tex ? '$10^{%T}$' : '10^{%T}')
 set xlabel 'scalar decision variables'
 set ylabel 'solve + certify time [ms]'
-set key top left
+set key top left Left reverse
 set title (tex ? 'LMI scaling: Theorem 5 structure, $m = 2..32$ DOF, $n = m/2 + 2$ states' : 'LMI scaling: Theorem 5 structure, m = 2..32 DOF, n = m/2 + 2 states')
 plot f index 0 using 2:4 with linespoints ls 1 title 'DSDP', \
      f index 1 using 2:4 with linespoints ls 2 title 'CSDP', \
