@@ -114,7 +114,7 @@ int run(const Opts& o) {
 }
 
 const Register reg({"reproduce",
-                    "The main job: every proof and every figure of the three papers -> DIR/report.md, "
+                    "The main job: every proof, example scene and figure of the three papers -> DIR/report.md, "
                     "DIR/index.html, DIR/figures/, DIR/data/",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
