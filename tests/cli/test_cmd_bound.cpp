@@ -3,6 +3,8 @@
 // containing it, --batch, --explain, and bad inputs refused with exit code 2.
 #include <gtest/gtest.h>
 
+#include "cli/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -17,19 +19,8 @@ using testref::R;
 
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out;
-};
-CliRun run(const std::string& args) {
-  std::string cmd = std::string(HAPSTAB_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WEXITSTATUS(st), out};
-}
+using hapstab_test::CliRun;
+CliRun run(const std::string& args) { return hapstab_test::run_cli(args); }
 
 R ref_of(const std::string& expr, const std::string& T, int n, std::map<std::string, rational> par = {},
          std::vector<double> res = {}) {

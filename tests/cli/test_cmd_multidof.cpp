@@ -2,6 +2,8 @@
 // scenes (exit 2 with a message naming the inconsistency).
 #include <gtest/gtest.h>
 
+#include "cli/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -10,19 +12,8 @@
 
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out;
-};
-CliRun run(const std::string& args) {
-  std::string cmd = std::string(HAPSTAB_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WEXITSTATUS(st), out};
-}
+using hapstab_test::CliRun;
+CliRun run(const std::string& args) { return hapstab_test::run_cli(args); }
 std::string ex(const std::string& f) { return std::string(HAPSTAB_SOURCE_DIR) + "/examples/" + f; }
 std::string read(const std::string& f) {
   std::ifstream in(f);

@@ -4,6 +4,8 @@
 // in tests/lmi/test_passivity_level.cpp.
 #include <gtest/gtest.h>
 
+#include "cli/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -16,21 +18,8 @@
 using namespace hapstab;
 
 namespace {
-struct CliRun {
-  int code;
-  std::string out;
-};
-CliRun run(const std::string& args) {
-  std::string cmd = std::string(HAPSTAB_CLI) + " passivity-level " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, ""};
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+using hapstab_test::CliRun;
+CliRun run(const std::string& args) { return hapstab_test::run_cli("passivity-level " + args); }
 std::string write_tmp(const std::string& name, const std::string& text) {
   std::string path = ::testing::TempDir() + name;
   std::ofstream(path) << text;

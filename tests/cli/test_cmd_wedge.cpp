@@ -4,6 +4,8 @@
 // t = tan(theta/2) + Sturm route the command takes) -- plus exit codes and bad input.
 #include <gtest/gtest.h>
 
+#include "cli/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -16,21 +18,8 @@
 using namespace hapstab;
 
 namespace {
-struct CliRun {
-  int code;
-  std::string out;
-};
-CliRun run(const std::string& args) {
-  std::string cmd = std::string(HAPSTAB_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, ""};
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+using hapstab_test::CliRun;
+CliRun run(const std::string& args) { return hapstab_test::run_cli(args); }
 using R = mpfloat<100>;
 
 // H given by coefficient lists (ascending powers of z), evaluated at e^{j theta} directly.

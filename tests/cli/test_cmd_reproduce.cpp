@@ -1,0 +1,68 @@
+// tests/cli: `hapstab reproduce` judges the example scenes by their [reproduce] tables. A copy of
+// the data tree (plots/ and the paper-001 scenes, HAPSTAB_DATA_DIR) gets one scene whose stated
+// expectation is false: reproduce must exit 1 and the report must say which key differed;
+// with the expectation corrected it exits 0. Also the expectation syntax errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& f) {
+  std::ifstream in(f);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A data tree with plots/ and examples/001_*.toml, plus `extra` as examples/001_zz_check.toml.
+fs::path data_tree(const std::string& name, const std::string& extra) {
+  const fs::path root = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(root);
+  fs::create_directories(root / "examples");
+  fs::copy(fs::path(HAPSTAB_SOURCE_DIR) / "plots", root / "plots");
+  for (const auto& e : fs::directory_iterator(fs::path(HAPSTAB_SOURCE_DIR) / "examples"))
+    if (e.path().filename().string().rfind("001_", 0) == 0) fs::copy(e.path(), root / "examples" / e.path().filename());
+  std::ofstream(root / "examples" / "001_zz_check.toml") << extra;
+  return root;
+}
+
+// The below-the-bound scene with its [reproduce] table replaced.
+std::string below_with(const std::string& table) {
+  std::string s = read(fs::path(HAPSTAB_SOURCE_DIR) / "examples" / "001_tightness_below.toml");
+  s = s.substr(0, s.find("[reproduce]"));
+  return s + "[reproduce]\npaper = \"001\"\nclaim = \"test\"\n" + table + "\n";
+}
+
+hapstab_test::CliRun reproduce(const fs::path& root) {
+  return hapstab_test::run_cli("reproduce --only 001 --format png --quiet --out " + (root / "out").string(),
+                               "HAPSTAB_DATA_DIR=" + root.string());
+}
+
+}  // namespace
+
+TEST(CmdReproduce, SceneExpectationsDecideTheExitCode) {
+  // growing and generating energy is what happens below b*: claiming it decays must fail
+  const fs::path bad = data_tree("repro_bad", below_with("simulate = { trend = \"decaying\", energy_generated = \"> 1\" }"));
+  auto r = reproduce(bad);
+  EXPECT_EQ(r.code, 1) << r.out;
+  const std::string md = read(bad / "out" / "report.md");
+  EXPECT_NE(md.find("001_zz_check.toml"), std::string::npos) << md.substr(0, 2000);
+  EXPECT_NE(md.find("trend is growing, expected decaying"), std::string::npos) << md.substr(0, 2000);
+
+  const fs::path good = data_tree("repro_good", below_with("simulate = { trend = \"growing\", energy_generated = \"> 1\" }"));
+  r = reproduce(good);
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(read(good / "out" / "report.md").find("3 scene runs (3 as expected, 0 not)"), std::string::npos);
+}
+
+TEST(CmdReproduce, MalformedExpectationIsAFailureThatSaysWhy) {
+  const fs::path root = data_tree("repro_malformed", below_with("simulate = { energy_generated = \"> lots\" }"));
+  const auto r = reproduce(root);
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(read(root / "out" / "report.md").find("cannot read the number in '> lots'"), std::string::npos);
+}
