@@ -68,11 +68,15 @@ SceneRun run_one(const fs::path& file, const std::string& command, const std::ve
   argv.insert(argv.end(), args.begin(), args.end());
   std::string out;
   fs::create_directories(outdir);
-  const fs::path errfile = outdir / (file.stem().string() + "." + command.substr(command.rfind(' ') + 1) + ".stderr");
+  const std::string base = file.stem().string() + "." + command.substr(command.rfind(' ') + 1);  // NAME.analyze
+  const fs::path errfile = outdir / (base + ".stderr");
   const int rc = run_capture(argv, out, errfile);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(outdir / (file.stem().string() + "." + command.substr(command.rfind(' ') + 1) + ".json")) << out;
-  if (rc != 0 && rc != 1) {  // 1 = the property does not hold: a result, judged by the expectations
+  std::ofstream(outdir / (base + ".json")) << out;
+  if (rc == 0 || rc == 1) {  // 1 = the property does not hold: a result, judged by the expectations
+    std::error_code ec;
+    if (fs::file_size(errfile, ec) == 0) fs::remove(errfile, ec);
+  } else {
     std::ifstream e(errfile);
     std::stringstream ss;
     ss << e.rdbuf();
