@@ -13,12 +13,29 @@ void require_nonzero(const Polynomial<rational>& p, const char* who) {
     throw InputError(std::string(who) + ": the zero polynomial vanishes everywhere (infinitely many roots)");
 }
 
-// Divides by |leading coefficient| (a positive constant): keeps Sturm signs, tames growth.
+// Scales by a positive constant to the primitive integer polynomial (coefficients coprime
+// integers): keeps Sturm signs, tames growth, and lets sign_at evaluate without any gcd.
 Polynomial<rational> positive_normalise(const Polynomial<rational>& p) {
   if (p.is_zero()) return p;
-  rational l = p.leading();
-  if (l < 0) l = -l;
-  return p * (rational(1) / l);
+  integer L = 1, G = 0;
+  for (const auto& c : p.coeffs()) L = bmp::lcm(L, den(c));
+  for (const auto& c : p.coeffs()) G = bmp::gcd(G, num(c) * (L / den(c)));
+  return p * rational(L, G);
+}
+
+// sign of p(a/b), b > 0: for integer coefficients the sign of sum c_i a^i b^(n-i), all in
+// integers (exact, and no rational canonicalisation); otherwise by rational evaluation.
+int sign_at(const Polynomial<rational>& p, const rational& x) {
+  const auto& c = p.coeffs();
+  for (const auto& ci : c)
+    if (den(ci) != 1) return sgn(p(x));
+  const integer a = num(x), b = den(x);
+  integer h = num(c.back()), bp = 1;
+  for (int i = static_cast<int>(c.size()) - 2; i >= 0; --i) {
+    bp *= b;
+    h = h * a + num(c[static_cast<size_t>(i)]) * bp;
+  }
+  return h > 0 ? 1 : (h < 0 ? -1 : 0);
 }
 
 // 1 + max |a_i / a_n|: every root x has |x| < bound (Cauchy).
@@ -47,12 +64,12 @@ struct Isolator {
       return;
     }
     const rational mid = (lo + hi) / 2;
-    if (q()(mid) == 0) {
+    if (sign_at(q(), mid) == 0) {
       // exact rational root: separate it by a small non-root neighbourhood, then recurse.
       rational d = (hi - lo) / 4;
       for (;;) {
         rational a = mid - d, b = mid + d;
-        if (q()(a) != 0 && q()(b) != 0 && V(a) - V(b) == 1) {
+        if (sign_at(q(), a) != 0 && sign_at(q(), b) != 0 && V(a) - V(b) == 1) {
           run(lo, a, vlo, V(a), out);
           out.push_back({mid, mid});
           run(b, hi, V(b), vhi, out);
@@ -79,7 +96,7 @@ Polynomial<rational> square_free_part(const Polynomial<rational>& p) {
 std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p) {
   require_nonzero(p, "sturm_sequence");
   std::vector<Polynomial<rational>> s;
-  s.push_back(square_free_part(p));
+  s.push_back(positive_normalise(square_free_part(p)));
   if (s[0].degree() <= 0) return s;
   s.push_back(positive_normalise(s[0].derivative()));
   for (;;) {
@@ -93,7 +110,7 @@ std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p) 
 int sign_variations(const std::vector<Polynomial<rational>>& seq, const rational& x) {
   int v = 0, last = 0;
   for (const auto& p : seq) {
-    int s = sgn(p(x));
+    int s = sign_at(p, x);
     if (s == 0) continue;
     if (last != 0 && s != last) ++v;
     last = s;
@@ -122,7 +139,7 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, cons
   require_nonzero(p, "isolate_real_roots");
   if (a > b) throw InputError("isolate_real_roots: empty interval [" + a.str() + ", " + b.str() + "]");
   std::vector<RootInterval> out;
-  const Polynomial<rational> q = square_free_part(p);
+  const Polynomial<rational> q = positive_normalise(square_free_part(p));
   for (const auto& r : isolate_real_roots(p)) {
     if (r.hi < a || r.lo > b) continue;
     if (r.is_exact()) {
@@ -130,7 +147,7 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, cons
       continue;
     }
     rational lo = std::max(r.lo, a), hi = std::min(r.hi, b);
-    const int sl = sgn(q(lo)), sh = sgn(q(hi));
+    const int sl = sign_at(q, lo), sh = sign_at(q, hi);
     if (sl == 0) out.push_back({lo, lo});
     else if (sh == 0) out.push_back({hi, hi});
     else if (sl != sh) out.push_back({lo, hi});
@@ -143,12 +160,12 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
   require_nonzero(p, "refine_root");
   if (!(width > 0)) throw InputError("refine_root: width must be positive, got " + width.str());
   if (r.lo > r.hi) throw InputError("refine_root: lo > hi");
-  const Polynomial<rational> q = square_free_part(p);
+  const Polynomial<rational> q = positive_normalise(square_free_part(p));
   if (r.is_exact()) {
     if (q(r.lo) != 0) throw InputError("refine_root: " + r.lo.str() + " is not a root");
     return r;
   }
-  int slo = sgn(q(r.lo)), shi = sgn(q(r.hi));
+  int slo = sign_at(q, r.lo), shi = sign_at(q, r.hi);
   if (slo == 0) return {r.lo, r.lo};
   if (shi == 0) return {r.hi, r.hi};
   if (slo == shi)
@@ -169,8 +186,8 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
       rational cells = (xs - r.lo) / w * rational(N);
       integer k = num(cells) / den(cells);  // floor (cells >= 0)
       const rational a = r.lo + w * rational(k) / rational(N), b = r.lo + w * rational(k + 1) / rational(N);
-      const int sa = (k == 0) ? slo : sgn(q(a));
-      const int sb = (k + 1 == N) ? shi : sgn(q(b));
+      const int sa = (k == 0) ? slo : sign_at(q, a);
+      const int sb = (k + 1 == N) ? shi : sign_at(q, b);
       if (sa == 0) return {a, a};
       if (sb == 0) return {b, b};
       if (sa != sb) {
@@ -185,7 +202,7 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
     }
     if (!done) {
       const rational m = (r.lo + r.hi) / 2;
-      const int sm = sgn(q(m));
+      const int sm = sign_at(q, m);
       if (sm == 0) return {m, m};
       if (sm == slo) r.lo = m;
       else r.hi = m;
