@@ -3,6 +3,8 @@
 // at 120 digits (a different formula from the (44)/cot route the command uses).
 #include <gtest/gtest.h>
 
+#include "cli/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -14,21 +16,8 @@
 using namespace hapstab;
 
 namespace {
-struct CmdRun {
-  int code;
-  std::string out;
-};
-CmdRun run_r(const std::string& args) {
-  std::string cmd = std::string(HAPSTAB_CLI) + " r " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, ""};
-  std::string out;
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int st = pclose(p);
-  return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
+using CmdRun = hapstab_test::CliRun;
+CmdRun run_r(const std::string& args) { return hapstab_test::run_cli("r " + args); }
 using M = mpfloat<120>;
 }  // namespace
 
