@@ -83,6 +83,32 @@ TEST(Polynomial, DivmodAndGcd) {
   EXPECT_EQ(gcd(f, g), expect);
 }
 
+TEST(Polynomial, ModularCoprimalityFilterIsExact) {
+  // the filter may only ever say "coprime" for coprime pairs; a common factor must reach Euclid
+  const integer p1(2147483647), p2(2147483629);
+  // leading numerators divisible by the first prime: it is skipped, the second decides
+  P a = P(std::vector<rational>{rational(1), rational(0), rational(p1)});  // p1 x^2 + 1
+  P b = lin(3) * P(rational(p1));
+  EXPECT_TRUE(coprime_modular(a, b));
+  EXPECT_EQ(gcd(a, b), P(1));
+  // a denominator divisible by both of the first primes: the third prime decides
+  P c = lin(rational(1, p1 * p2)) * lin(2), d = lin(rational(1, p1 * p2)) * lin(5);
+  EXPECT_FALSE(coprime_modular(c, d));
+  EXPECT_EQ(gcd(c, d), lin(rational(1, p1 * p2)));
+  // an unlucky prime (x - p1 = x mod p1) is inconclusive and only sends the pair to exact Euclid
+  EXPECT_EQ(gcd(lin(rational(p1)), X()), P(1));
+  EXPECT_EQ(gcd(lin(rational(p1)) * lin(7), X() * lin(7)), lin(7));
+  // random products with and without a shared quadratic factor
+  P s = X() * X() - P(2);
+  for (int k = 1; k <= 20; ++k) {
+    P f = lin(rational(k, 3)) * P(std::vector<rational>{rational(k), rational(-1), rational(1, k)});
+    P g = lin(rational(-k, 7)) * lin(rational(2 * k + 1, 5));
+    EXPECT_EQ(gcd(f, g), P(1)) << k;
+    EXPECT_EQ(gcd(f * s, g * s), s) << k;
+    EXPECT_EQ(gcd(f * s * rational(k, 11), g * s.pow(2)), s) << k;
+  }
+}
+
 TEST(Polynomial, EvaluateInManyScalars) {
   // p(x) = 1/3 x^3 - 7/5 x + 1e-20 (coefficients not representable in binary)
   P p(std::vector<rational>{q("1e-20"), rational(-7, 5), rational(0), rational(1, 3)});

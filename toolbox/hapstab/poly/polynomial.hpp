@@ -10,7 +10,12 @@
 // exact rational polynomial at an interval encloses the true value), rational.
 //
 // gcd is Euclid's algorithm with monic normalisation at every step (Boost.Math's polynomial
-// has no gcd over rationals); the result is monic, gcd(0, 0) = 0.
+// has no gcd over rationals); the result is monic, gcd(0, 0) = 0. Over `rational` a modular
+// filter runs first: if a and b are coprime modulo a prime p that divides no denominator and
+// neither leading numerator, they are coprime over Q (a common factor g would survive mod p
+// with its degree, since lc(g) divides the leading coefficients) -- the usual case (the
+// square-free test gcd(p, p'), the cancellation of a transfer function), decided in machine
+// integers instead of by coefficient-exploding rational Euclid.
 #pragma once
 
 #include <complex>
@@ -203,9 +208,9 @@ std::pair<Polynomial<F>, Polynomial<F>> divmod(const Polynomial<F>& a, const Pol
   return {Polynomial<F>(std::move(q)), Polynomial<F>(std::move(r))};
 }
 
-/// Monic greatest common divisor (Euclid, monic normalisation each step); gcd(0,0) = 0.
+namespace detail {
 template <class F>
-Polynomial<F> gcd(Polynomial<F> a, Polynomial<F> b) {
+Polynomial<F> euclid_gcd(Polynomial<F> a, Polynomial<F> b) {
   a = a.monic();
   b = b.monic();
   while (!b.is_zero()) {
@@ -215,6 +220,14 @@ Polynomial<F> gcd(Polynomial<F> a, Polynomial<F> b) {
   }
   return a;
 }
+}  // namespace detail
+
+/// Monic greatest common divisor (Euclid, monic normalisation each step); gcd(0,0) = 0.
+/// Over `rational`, preceded by the exact modular coprimality filter described above.
+template <class F>
+Polynomial<F> gcd(Polynomial<F> a, Polynomial<F> b) {
+  return detail::euclid_gcd(std::move(a), std::move(b));
+}
 
 /// "3*x^2 - 1/2*x + 1" (descending powers; "0" for the zero polynomial).
 std::string to_string(const Polynomial<rational>& p, const std::string& var = "x");
@@ -222,6 +235,11 @@ std::string to_string(const Polynomial<rational>& p, const std::string& var = "x
 extern template class Polynomial<rational>;
 extern template std::pair<Polynomial<rational>, Polynomial<rational>> divmod(const Polynomial<rational>&,
                                                                              const Polynomial<rational>&);
-extern template Polynomial<rational> gcd(Polynomial<rational>, Polynomial<rational>);
+template <> Polynomial<rational> gcd(Polynomial<rational>, Polynomial<rational>);
+
+/// True when a and b provably have no common factor over Q, decided modulo a 31-bit prime
+/// (false also when every tried prime divided a leading numerator or a denominator: then
+/// "don't know"). Exact: never true for polynomials with a common non-constant factor.
+bool coprime_modular(const Polynomial<rational>& a, const Polynomial<rational>& b);
 
 }  // namespace hapstab
