@@ -155,6 +155,17 @@ TEST(Sturm, IsolateInInterval) {
   for (auto& r : v) EXPECT_TRUE(r.lo >= 0 && r.hi <= 1);
   EXPECT_EQ(isolate_real_roots(p, rational(1, 10), rational(3, 10)).size(), 0u);
   EXPECT_EQ(isolate_real_roots(p, rational(1, 3), rational(1, 3)).size(), 1u);
+  // roots at both endpoints and irrational roots just inside them are all separated
+  const rational eps(1, 1000000007);
+  P r = lin(0) * lin(1) * (X() * X() - P(eps * eps * 2)) * (lin(1) * lin(1) - P(eps * eps * 2));
+  auto w = isolate_real_roots(r, 0, 1);  // 0, eps*sqrt2, 1 - eps*sqrt2, 1
+  ASSERT_EQ(w.size(), 4u);
+  expect_disjoint_sorted(w);
+  EXPECT_TRUE(w[0].is_exact() && w[0].lo == 0);
+  EXPECT_TRUE(w[3].is_exact() && w[3].lo == 1);
+  EXPECT_TRUE(w[1].lo > 0 && w[2].hi < 1);
+  for (auto& x : w) EXPECT_TRUE(x.lo >= 0 && x.hi <= 1);
+  EXPECT_EQ(isolate_real_roots(r, -1, 2).size(), 6u);  // and -eps*sqrt2, 1 + eps*sqrt2
   // the sequence is a Sturm sequence of the square-free part
   auto s = sturm_sequence(lin(2).pow(3));
   EXPECT_EQ(s.front(), lin(2));

@@ -50,39 +50,6 @@ rational cauchy_bound(const Polynomial<rational>& p) {
   return m + 1;
 }
 
-struct Isolator {
-  std::vector<Polynomial<rational>> seq;
-  const Polynomial<rational>& q() const { return seq.front(); }
-  int V(const rational& x) const { return sign_variations(seq, x); }
-  // roots in the open interval (a, b), a < b, given V(a), V(b) and q(b)
-  void run(const rational& lo, const rational& hi, int vlo, int vhi, std::vector<RootInterval>& out) const {
-    // invariant: q(lo) != 0, q(hi) != 0, so roots in (lo, hi) = vlo - vhi
-    const int n = vlo - vhi;
-    if (n <= 0) return;
-    if (n == 1) {
-      out.push_back({lo, hi});
-      return;
-    }
-    const rational mid = (lo + hi) / 2;
-    if (sign_at(q(), mid) == 0) {
-      // exact rational root: separate it by a small non-root neighbourhood, then recurse.
-      rational d = (hi - lo) / 4;
-      for (;;) {
-        rational a = mid - d, b = mid + d;
-        if (sign_at(q(), a) != 0 && sign_at(q(), b) != 0 && V(a) - V(b) == 1) {
-          run(lo, a, vlo, V(a), out);
-          out.push_back({mid, mid});
-          run(b, hi, V(b), vhi, out);
-          return;
-        }
-        d /= 2;
-      }
-    }
-    const int vm = V(mid);
-    run(lo, mid, vlo, vm, out);
-    run(mid, hi, vm, vhi, out);
-  }
-};
 
 }  // namespace
 
@@ -93,6 +60,30 @@ Polynomial<rational> square_free_part(const Polynomial<rational>& p) {
   return divmod(p, g).first.monic();
 }
 
+namespace {
+// -prem(a, b) made primitive, for integer a, b with deg a >= deg b: each step multiplies the
+// running remainder by |lc(b)| > 0 before cancelling its leading term, so the result is a
+// POSITIVE multiple of -rem(a, b) (Sturm signs kept), computed without any rational arithmetic.
+Polynomial<rational> negated_pseudo_remainder(const Polynomial<rational>& a, const Polynomial<rational>& b) {
+  std::vector<integer> r, B;
+  for (const auto& c : a.coeffs()) r.push_back(num(c));
+  for (const auto& c : b.coeffs()) B.push_back(num(c));
+  const integer absL = abs(B.back());
+  const bool neg = B.back() < 0;
+  while (!r.empty() && r.size() >= B.size()) {
+    const integer c = neg ? integer(-r.back()) : r.back();
+    const size_t k = r.size() - B.size();
+    for (auto& x : r) x *= absL;
+    for (size_t i = 0; i + 1 < B.size(); ++i) r[k + i] -= c * B[i];
+    r.pop_back();  // |L| r_top - sgn(L) r_top L = 0
+    while (!r.empty() && r.back() == 0) r.pop_back();
+  }
+  std::vector<rational> out;
+  for (auto& x : r) out.emplace_back(-x);
+  return positive_normalise(Polynomial<rational>(std::move(out)));
+}
+}  // namespace
+
 std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p) {
   require_nonzero(p, "sturm_sequence");
   std::vector<Polynomial<rational>> s;
@@ -100,9 +91,9 @@ std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p) 
   if (s[0].degree() <= 0) return s;
   s.push_back(positive_normalise(s[0].derivative()));
   for (;;) {
-    Polynomial<rational> r = divmod(s[s.size() - 2], s.back()).second;
+    Polynomial<rational> r = negated_pseudo_remainder(s[s.size() - 2], s.back());
     if (r.is_zero()) break;
-    s.push_back(positive_normalise(-r));
+    s.push_back(std::move(r));
   }
   return s;
 }
@@ -125,14 +116,82 @@ int count_real_roots(const Polynomial<rational>& p, const rational& a, const rat
   return sign_variations(s, a) - sign_variations(s, b);
 }
 
+namespace {
+
+// ---- Descartes' rule of signs with bisection (Vincent-Collins-Akritas) ----------------------
+// A node is a polynomial P(y) whose roots in (0, 1) are those of q in one sub-interval, y = 0 at
+// its left end and y = 1 at its right end. var(node) = sign variations of the coefficients of
+// (1 + y)^n P(1 / (1 + y)) bounds the number of roots in (0, 1) and is exact when 0 or 1; the
+// halves are 2^n P(y/2) and 2^n P((y+1)/2). Integer additions and shifts only: the coefficients
+// stay near the size of q's, where a Sturm sequence of degree n grows to ~n times that size.
+using Z = std::vector<integer>;
+
+void taylor_shift_1(Z& c) {  // c(y) -> c(y + 1), in place (O(n^2) additions)
+  const size_t n = c.size();
+  for (size_t i = 0; i + 1 < n; ++i)
+    for (size_t j = n - 1; j-- > i;) c[j] += c[j + 1];
+}
+
+int descartes_var(const Z& c) {  // variations of (1 + y)^n c(1 / (1 + y)); stops at 2
+  Z r(c.rbegin(), c.rend());
+  taylor_shift_1(r);
+  int v = 0, last = 0;
+  for (const auto& x : r) {
+    const int s = x > 0 ? 1 : (x < 0 ? -1 : 0);
+    if (s == 0) continue;
+    if (last != 0 && s != last && ++v >= 2) return v;
+    last = s;
+  }
+  return v;
+}
+
+// q(lo + (hi - lo) y) with integer coefficients (a positive multiple)
+Z to_unit_interval(const Polynomial<rational>& q, const rational& lo, const rational& hi) {
+  std::vector<rational> c = q.coeffs();
+  const size_t n = c.size();
+  for (size_t i = 0; i + 1 < n; ++i)  // Taylor shift by lo
+    for (size_t j = n - 1; j-- > i;) c[j] += lo * c[j + 1];
+  rational w = 1;
+  for (size_t k = 1; k < n; ++k) c[k] *= (w *= hi - lo);
+  const Polynomial<rational> moved = positive_normalise(Polynomial<rational>(std::move(c)));
+  Z out;  // same degree: the leading coefficient is multiplied by (hi - lo)^n != 0
+  for (const auto& x : moved.coeffs()) out.push_back(num(x));
+  return out;
+}
+
+struct Descartes {
+  rational lo, width;
+  std::vector<RootInterval>* out;
+  rational at(const integer& k, unsigned depth) const { return lo + width * rational(k, integer(1) << depth); }
+  // roots of c in (0, 1), i.e. in (at(k, depth), at(k + 1, depth))
+  void run(Z c, const integer& k, unsigned depth) const {
+    const int v = descartes_var(c);
+    if (v == 0) return;
+    if (v == 1) {
+      out->push_back({at(k, depth), at(k + 1, depth)});
+      return;
+    }
+    const size_t n = c.size() - 1;
+    for (size_t i = 0; i <= n; ++i) c[i] <<= static_cast<unsigned>(n - i);  // 2^n c(y/2)
+    Z right = c;
+    taylor_shift_1(right);  // 2^n c((y + 1)/2)
+    const bool mid_root = right[0] == 0;
+    run(std::move(c), 2 * k, depth + 1);
+    if (mid_root) {
+      out->push_back({at(2 * k + 1, depth + 1), at(2 * k + 1, depth + 1)});
+      right.erase(right.begin());  // divide by y: the midpoint root is reported
+    }
+    run(std::move(right), 2 * k + 1, depth + 1);
+  }
+};
+
+}  // namespace
+
 std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p) {
   require_nonzero(p, "isolate_real_roots");
-  std::vector<RootInterval> out;
-  if (p.degree() <= 0) return out;
-  Isolator iso{sturm_sequence(p)};
-  const rational B = cauchy_bound(iso.q());
-  iso.run(-B, B, iso.V(-B), iso.V(B), out);
-  return out;
+  if (p.degree() <= 0) return {};
+  const rational B = cauchy_bound(p);  // no root on +-B
+  return isolate_real_roots(p, -B, B);
 }
 
 std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b) {
@@ -140,18 +199,31 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, cons
   if (a > b) throw InputError("isolate_real_roots: empty interval [" + a.str() + ", " + b.str() + "]");
   std::vector<RootInterval> out;
   const Polynomial<rational> q = positive_normalise(square_free_part(p));
-  for (const auto& r : isolate_real_roots(p)) {
-    if (r.hi < a || r.lo > b) continue;
-    if (r.is_exact()) {
-      out.push_back(r);
-      continue;
-    }
-    rational lo = std::max(r.lo, a), hi = std::min(r.hi, b);
-    const int sl = sign_at(q, lo), sh = sign_at(q, hi);
-    if (sl == 0) out.push_back({lo, lo});
-    else if (sh == 0) out.push_back({hi, hi});
-    else if (sl != sh) out.push_back({lo, hi});
-    // else: the root of [r.lo, r.hi] lies outside [a, b]
+  if (q.degree() <= 0) return out;
+  const bool root_a = sign_at(q, a) == 0, root_b = sign_at(q, b) == 0;
+  if (a == b) {
+    if (root_a) out.push_back({a, a});
+    return out;
+  }
+  if (root_a) out.push_back({a, a});
+  Descartes{a, b - a, &out}.run(to_unit_interval(q, a, b), integer(0), 0);
+  if (root_b) out.push_back({b, b});
+  // an interval may end on a rational root (a, b, or a bisection midpoint reported exactly):
+  // shrink it away until the step holds no root (Descartes count 0 is exact) and ends on a non-root
+  for (auto& r : out) {
+    if (r.is_exact()) continue;
+    if (sign_at(q, r.lo) == 0)
+      for (rational d = (r.hi - r.lo) / 2;; d /= 2)
+        if (sign_at(q, r.lo + d) != 0 && descartes_var(to_unit_interval(q, r.lo, r.lo + d)) == 0) {
+          r.lo += d;
+          break;
+        }
+    if (sign_at(q, r.hi) == 0)
+      for (rational d = (r.hi - r.lo) / 2;; d /= 2)
+        if (sign_at(q, r.hi - d) != 0 && descartes_var(to_unit_interval(q, r.hi - d, r.hi)) == 0) {
+          r.hi -= d;
+          break;
+        }
   }
   return out;
 }

@@ -1,15 +1,24 @@
-// hapstab/poly/sturm.hpp -- exact real-root counting and isolation over Q (Sturm's theorem).
+// hapstab/poly/sturm.hpp -- exact real-root counting (Sturm's theorem) and isolation
+// (Descartes' rule of signs) over Q.
 //
-// Used by the proofs of paper 001 to show inequalities such as r^(w) > 0 of (9), or the
-// passivity bound (45), over a whole frequency interval after the substitution t = tan(wT/2):
-// a rational function of t has constant sign on an interval iff its numerator and denominator
-// have no real root there, which Sturm sequences decide exactly.
+// Used by the proofs of paper 001 to show inequalities such as r^(w) > 0 of (9), and by the
+// certified passivity bound (45) to isolate its critical points after the substitution
+// c = cos(wT) or t = tan(wT/2): a rational function has constant sign on an interval iff its
+// numerator and denominator have no real root there, which these tests decide exactly.
 //
-// Method: the square-free part q = p / gcd(p, p') (same distinct roots, all simple), its Sturm
-// sequence q, q', -rem(.,.), ..., the Cauchy bound |x| < 1 + max|a_i/a_n| for every root, and
-// bisection on rational endpoints. A midpoint that is itself a root is returned as an exact,
-// degenerate interval [x, x]; every other interval has rational endpoints that are not roots
-// and contains exactly one root, at which q changes sign.
+// Everything works on the square-free part q = p / gcd(p, p') (same distinct roots, all simple),
+// scaled to a primitive integer polynomial.
+// - Counting: the Sturm sequence q, q', -prem(.,.), ... (integer pseudo-remainders, each made
+//   primitive), and the sign variations at the two ends.
+// - Isolation: Vincent-Collins-Akritas bisection -- the sign variations of the coefficients of
+//   (1 + y)^n P(1/(1 + y)), P the polynomial moved to the unit interval, bound the roots inside
+//   and are exact when 0 or 1; halving and Taylor shifts are integer shifts and additions, so
+//   the coefficients stay near q's size (a Sturm sequence of degree n grows to ~n times it:
+//   order-6 bound objectives, degree 13, reach 1600 bits). The whole line is [-B, B] with the
+//   Cauchy bound B = 1 + max|a_i/a_n|.
+// A rational root met as an endpoint or a bisection midpoint is returned as an exact, degenerate
+// interval [x, x]; every other interval has rational endpoints that are not roots and contains
+// exactly one root, at which q changes sign.
 #pragma once
 
 #include <vector>
