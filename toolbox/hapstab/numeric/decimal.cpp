@@ -90,16 +90,29 @@ std::string to_decimal(const rational& x, int digits) {
   if (digits < 1) digits = 1;
   if (x == 0) return "0";
   const bool neg = x < 0;
-  const rational a = neg ? rational(-x) : x;
-  // e = floor(log10 a), estimated in floating point and then fixed exactly.
-  long e = static_cast<long>(std::floor(static_cast<double>(mpfloat<30>(log10(mpfloat<30>(a))))));
-  while (pow10(e) > a) --e;
-  while (pow10(e + 1) <= a) ++e;
-  rational scaled = a * pow10(digits - 1 - e);
-  integer n = num(scaled) / den(scaled);  // floor, scaled > 0
-  rational frac = scaled - rational(n);
-  const rational half(1, 2);
-  if (frac > half || (frac == half && (n % 2) != 0)) n += 1;
+  // all in integers (no rational canonicalisation): |x| = P/Q, and |x| 10^k = N/M
+  const integer P = abs(num(x)), Q = den(x);
+  auto scaled = [&](long k, integer& N, integer& M) {
+    N = P;
+    M = Q;
+    if (k >= 0) N *= bmp::pow(integer(10), static_cast<unsigned>(k));
+    else M *= bmp::pow(integer(10), static_cast<unsigned>(-k));
+  };
+  // e = floor(log10 |x|), estimated from the binary exponents and then fixed exactly
+  long ep = 0, eq = 0;
+  const double mp = mpz_get_d_2exp(&ep, P.backend().data()), mq = mpz_get_d_2exp(&eq, Q.backend().data());
+  long e = static_cast<long>(std::floor(std::log10(mp / mq) + static_cast<double>(ep - eq) * std::log10(2.0)));
+  integer N, M;
+  for (;;) {
+    scaled(-e, N, M);
+    if (N < M) { --e; continue; }  // |x| < 10^e
+    scaled(-e - 1, N, M);
+    if (N >= M) { ++e; continue; }  // |x| >= 10^(e+1)
+    break;
+  }
+  scaled(digits - 1 - e, N, M);
+  integer n = N / M, r = N - n * M;  // floor; round half to even
+  if (2 * r > M || (2 * r == M && (n % 2) != 0)) n += 1;
   if (n == bmp::pow(integer(10), static_cast<unsigned>(digits))) {
     n /= 10;
     ++e;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -20,25 +21,29 @@ using RF = RationalFunction<rational>;
 // small helpers
 namespace {
 
-P cheb_T(int m) {  // T_m(c) with integer coefficients
-  P t0(rational(1)), t1 = P::monomial(1);
-  if (m == 0) return t0;
-  for (int k = 1; k < m; ++k) {
-    P t2 = P::monomial(1, rational(2)) * t1 - t0;
-    t0 = std::move(t1);
-    t1 = std::move(t2);
+// Chebyshev T_0..T_M and U_0..U_M as integer coefficient tables (ascending), by the recurrence
+// X_{m+1} = 2c X_m - X_{m-1}.
+using ZTable = std::vector<std::vector<integer>>;
+ZTable chebyshev(int M, bool second_kind) {
+  ZTable t(static_cast<size_t>(M) + 1);
+  t[0] = {integer(1)};
+  if (M >= 1) t[1] = second_kind ? std::vector<integer>{integer(0), integer(2)} : std::vector<integer>{integer(0), integer(1)};
+  for (int m = 1; m < M; ++m) {
+    auto& next = t[m + 1];
+    next.assign(static_cast<size_t>(m) + 2, integer(0));
+    for (size_t k = 0; k < t[m].size(); ++k) next[k + 1] += 2 * t[m][k];
+    for (size_t k = 0; k < t[m - 1].size(); ++k) next[k] -= t[m - 1][k];
   }
-  return t1;
+  return t;
 }
-P cheb_U(int m) {  // U_m(c)
-  P u0(rational(1)), u1 = P::monomial(1, rational(2));
-  if (m == 0) return u0;
-  for (int k = 1; k < m; ++k) {
-    P u2 = P::monomial(1, rational(2)) * u1 - u0;
-    u0 = std::move(u1);
-    u1 = std::move(u2);
-  }
-  return u1;
+
+// p scaled to integer coefficients: p = ints / scale, scale > 0 the lcm of the denominators
+std::vector<integer> integer_coeffs(const std::vector<rational>& p, integer& scale) {
+  scale = 1;
+  for (const auto& c : p) scale = bmp::lcm(scale, den(c));
+  std::vector<integer> out;
+  for (const auto& c : p) out.push_back(num(c) * (scale / den(c)));
+  return out;
 }
 
 int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
@@ -137,18 +142,28 @@ bool poles_in_closed_unit_disk(const P& d, std::string* detail) {
     }
   }
   // Schur-Cohn-Jury recursion on d1 (no roots on the circle): all roots inside iff |a0| < |an|
-  // at every step of p -> (an p - a0 p*)/z.
-  P p = d1;
-  while (p.degree() > 0) {
-    rational a0 = p.coeff(0), an = p.leading();
+  // at every step of p -> (an p - a0 p*)/z. The test is scale-free, so p is kept as a primitive
+  // integer polynomial (integer arithmetic, no rational canonicalisation).
+  integer scale;
+  std::vector<integer> p = integer_coeffs(d1.coeffs(), scale);
+  while (p.size() > 1) {
+    const integer a0 = p.front(), an = p.back();
     if (abs(a0) >= abs(an)) {
       if (detail) *detail = "Schur-Cohn test: a pole with |z| > 1 (|p(0)| >= |leading| at degree " +
-                            std::to_string(p.degree()) + ")";
+                            std::to_string(p.size() - 1) + ")";
       return false;
     }
-    P q = p * an - reversed(p) * a0;  // constant term vanishes
-    std::vector<rational> c(q.coeffs().begin() + 1, q.coeffs().end());
-    p = P(std::move(c));
+    const size_t n = p.size() - 1;
+    std::vector<integer> next(n);
+    integer g = 0;
+    for (size_t k = 1; k <= n; ++k) {  // coefficient k of an p - a0 p*, k >= 1 (the constant vanishes)
+      next[k - 1] = an * p[k] - a0 * p[n - k];
+      g = bmp::gcd(g, next[k - 1]);
+    }
+    if (g > 1)
+      for (auto& c : next) c /= g;
+    while (next.size() > 1 && next.back() == 0) next.pop_back();
+    p = std::move(next);
   }
   return true;
 }
@@ -172,17 +187,19 @@ void check_assumptions(const BoundProblem& p) {
 // ---------------------------------------------------------------------------------------------
 // the exact objective in c = cos(wT)
 Objective objective(const RF& H, const rational& T, int delay) {
-  const auto& n = H.num().coeffs();
-  std::vector<rational> d = H.den().coeffs();
-  d.insert(d.begin(), static_cast<size_t>(delay), rational(0));  // D' = D z^n
+  // in integers: N = alpha n, D = beta d (shifted by z^n), so a, cs carry alpha beta and e beta^2
+  integer alpha, beta;
+  const std::vector<integer> n = integer_coeffs(H.num().coeffs(), alpha);
+  std::vector<integer> d = integer_coeffs(H.den().coeffs(), beta);
+  d.insert(d.begin(), static_cast<size_t>(delay), integer(0));  // D' = D z^n
   const int nn = static_cast<int>(n.size()), nd = static_cast<int>(d.size());
   const int M = std::max(nn, nd);
-  std::vector<rational> a(M + 1, rational(0)), cs(M + 1, rational(0)), e(M + 1, rational(0));
+  std::vector<integer> a(M + 1, integer(0)), cs(M + 1, integer(0)), e(M + 1, integer(0));
   for (int k = 0; k < nn; ++k)
     for (int l = 0; l < nd; ++l) {
       if (n[k] == 0 || d[l] == 0) continue;
-      rational pr = n[k] * d[l];
-      int m = k - l;
+      const integer pr = n[k] * d[l];
+      const int m = k - l;
       if (m == 0) a[0] += pr;
       else if (m > 0) { a[m] += pr; cs[m] += pr; }
       else { a[-m] += pr; cs[-m] -= pr; }
@@ -193,15 +210,31 @@ Objective objective(const RF& H, const rational& T, int delay) {
       if (l2 == l) e[0] += d[l] * d[l];
       else e[l2 - l] += 2 * d[l] * d[l2];
     }
+  const ZTable Tm = chebyshev(M, false), Um = chebyshev(M, true);
+  std::vector<integer> R(M + 1, integer(0)), Q(M + 1, integer(0)), B(M + 1, integer(0));
+  for (int m = 0; m <= M; ++m)
+    for (size_t k = 0; k < Tm[m].size(); ++k) {
+      R[k] += a[m] * Tm[m][k];
+      B[k] += e[m] * Tm[m][k];
+      if (m >= 1 && k < Um[m - 1].size()) Q[k] += cs[m] * Um[m - 1][k];
+    }
+  auto poly = [](const std::vector<integer>& c, const rational& scale) {
+    std::vector<rational> r;
+    for (const auto& x : c) r.emplace_back(rational(x) * scale);
+    return P(std::move(r));
+  };
+  const rational ab = 1 / rational(alpha * beta), bb = 1 / rational(beta * beta);
   Objective o;
-  for (int m = 0; m <= M; ++m) {
-    if (a[m] != 0) o.R += cheb_T(m) * a[m];
-    if (m >= 1 && cs[m] != 0) o.Q += cheb_U(m - 1) * cs[m];
-    if (e[m] != 0) o.B += cheb_T(m) * e[m];
+  o.R = poly(R, ab);
+  o.Q = poly(Q, ab);
+  o.B = poly(B, bb);
+  // f = (T/2)(R - (1 + c) Q) / B = (T/2)(beta/alpha)(R' - (1 + c) Q') / B' in the integer pieces
+  std::vector<integer> A(R);
+  for (int k = 0; k <= M; ++k) {
+    A[k] -= Q[k];
+    if (k + 1 <= M) A[k + 1] -= Q[k];
   }
-  P one_plus_c(std::vector<rational>{rational(1), rational(1)});
-  P A = (o.R - one_plus_c * o.Q) * (T / 2);
-  o.f = RF(A, o.B);
+  o.f = RF(poly(A, T / 2 * rational(beta) / rational(alpha)), poly(B, rational(1)));
   return o;
 }
 
@@ -245,20 +278,66 @@ bool pole_goes_to_plus_inf(const P& A, const P& B, RootInterval r) {
   return plus;
 }
 
+/// The critical-point polynomial q (primitive, square-free) and f = A/B with f' = Pd/B^2, each
+/// converted once to the types the polish and the enclosure evaluate them in.
+template <unsigned D>
+struct CriticalContext {
+  using R = mpfloat<D>;
+  using I = interval<D>;
+  const P& q;
+  const P &A, &B, &Pd;
+  Polynomial<double> q_d, dq_d;
+  Polynomial<R> q_R, dq_R;
+  Polynomial<I> q_I, A_I, B_I, Pd_I;
+  CriticalContext(const P& q_, const P& A_, const P& B_, const P& Pd_)
+      : q(q_), A(A_), B(B_), Pd(Pd_) {
+    const P dq = q.derivative();
+    // q scaled by a power of two so that its double image neither overflows nor underflows
+    long ex = 0;
+    for (const auto& c : q.coeffs())
+      if (c != 0) ex = std::max(ex, static_cast<long>(msb(abs(num(c)))) - static_cast<long>(msb(den(c))));
+    const rational sc = ex > 900 ? rational(1, integer(1) << static_cast<unsigned>(ex - 900)) : rational(1);
+    q_d = (q * sc).template cast<double>();
+    dq_d = (dq * sc).template cast<double>();
+    q_R = q.template cast<R>();
+    dq_R = dq.template cast<R>();
+    q_I = q.template cast<I>();
+    A_I = A.template cast<I>();
+    B_I = B.template cast<I>();
+    Pd_I = Pd.template cast<I>();
+  }
+};
+
 /// Polishes and encloses one irrational critical point; returns false when precision D was not
 /// enough to decide `digits` digits of the value.
 template <unsigned D>
-bool enclose_critical(const P& q, const P& A, const P& B, const P& Pd, RootInterval r, int digits, Candidate& out) {
+bool enclose_critical(const CriticalContext<D>& cx, RootInterval r, int digits, Candidate& out) {
   using R = mpfloat<D>;
   using I = interval<D>;
-  // Newton in R on q and q' converted once (not per evaluation)
-  const Polynomial<R> qR = q.template cast<R>(), dqR = q.derivative().template cast<R>();
+  const P &q = cx.q, &A = cx.A, &B = cx.B;
+  const int sa = sgn(q(r.lo));
+  // safeguarded Newton (bisection when a step leaves the bracket): first in double to ~1e-15 for
+  // a starting point only (double signs of q may be wrong near the root: the bracket is not
+  // narrowed by them), then in R, where two or three quadratic steps reach the precision
   R a = to_real<R>(r.lo), b = to_real<R>(r.hi);
-  int sa = sgn(q(r.lo));
   R x = (a + b) / 2;
+  {
+    double ad = static_cast<double>(a), bd = static_cast<double>(b), xd = 0.5 * (ad + bd);
+    for (int it = 0; it < 200 && bd - ad > 4e-16 * std::max(1.0, std::abs(xd)); ++it) {
+      const double qx = cx.q_d(xd), dx = cx.dq_d(xd);
+      if (qx == 0 || !std::isfinite(qx)) break;
+      if ((qx > 0 ? 1 : -1) == sa) ad = xd; else bd = xd;
+      double xn = (dx != 0) ? xd - qx / dx : 0.5 * (ad + bd);
+      if (!(xn > ad && xn < bd)) xn = 0.5 * (ad + bd);
+      const bool done = std::abs(xn - xd) < 1e-16 * std::max(1.0, std::abs(xd));
+      xd = xn;
+      if (done) break;
+    }
+    if (R(xd) > a && R(xd) < b) x = R(xd);
+  }
   const R tol = pow(R(10), -static_cast<int>(D) + 6);
   for (int it = 0; it < 400; ++it) {
-    R qx = qR(x), dx = dqR(x);
+    R qx = cx.q_R(x), dx = cx.dq_R(x);
     if (qx == 0) break;
     if ((qx > 0 ? 1 : -1) == sa) a = x; else b = x;
     R xn = (dx != 0) ? x - qx / dx : (a + b) / 2;
@@ -300,7 +379,7 @@ bool enclose_critical(const P& q, const P& A, const P& B, const P& Pd, RootInter
   rational delta = pow10(-static_cast<int>(D) + 20);  // margin for the sign test; the mean-value form squares it
   rational lo = std::max(r.lo, xr - delta), hi = std::min(r.hi, xr + delta);
   auto sign_at = [&](const rational& t) {
-    I v = q(ival<D>(t, t));
+    I v = cx.q_I(ival<D>(t, t));
     return lower(v) > 0 ? 1 : (upper(v) < 0 ? -1 : 0);
   };
   int sl = sign_at(lo), sh = sign_at(hi);
@@ -317,9 +396,9 @@ bool enclose_critical(const P& q, const P& A, const P& B, const P& Pd, RootInter
   // mean-value form: f(X) in f(m) + f'(X) (X - m), f' = Pd / B^2
   rational m = (lo + hi) / 2;
   I X = ival<D>(lo, hi), Mi = ival<D>(m, m);
-  I fm = A(Mi) / B(Mi);
-  I BX = B(X);
-  I fx = fm + (Pd(X) / (BX * BX)) * (X - Mi);
+  I fm = cx.A_I(Mi) / cx.B_I(Mi);
+  I BX = cx.B_I(X);
+  I fx = fm + (cx.Pd_I(X) / (BX * BX)) * (X - Mi);
   out.vlo = rlo(fx);
   out.vhi = rhi(fx);
   out.clo = lo;
@@ -401,6 +480,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
   for (P g = gcd(Pc, B); g.degree() > 0; g = gcd(Pc, B)) Pc = divmod(Pc, g).first;
   if (Pc.degree() > 0) {
     P q = primitive(square_free_part(Pc));
+    std::optional<CriticalContext<D>> cx;  // built at the first irrational critical point
     for (const auto& r : isolate_real_roots(q, mone, one)) {
       if (r.is_exact()) {
         if (r.lo == 1 || r.lo == -1) continue;  // the endpoint value is already a candidate
@@ -409,7 +489,8 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
         continue;
       }
       Candidate c;
-      if (!enclose_critical<D>(q, A, B, Pd, r, digits, c)) return false;
+      if (!cx) cx.emplace(q, A, B, Pd);
+      if (!enclose_critical<D>(*cx, r, digits, c)) return false;
       cands.push_back(c);
     }
   }
