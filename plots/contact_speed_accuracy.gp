@@ -15,6 +15,6 @@ set xlabel (tex ? 'CPU time per check [$\mu$s]' : 'CPU time per check [{/Symbol 
 set ylabel 'relative error of the minimum margin'
 set yrange [1e-42:10]
 set key outside right top
-set title 'Wedge criterion: certified (Sturm + MPFI) vs grid'
+set title 'Wedge criterion: certified (exact root isolation + MPFI) vs grid'
 plot for [i=0:4] f index i using 1:2 with linespoints ls (i+1) pt 7 title sprintf('certified, order %d', i+2), \
      for [i=5:9] f index i using 1:2 with linespoints ls (i-4) dt 2 pt 6 title sprintf('grid, order %d', i-3)

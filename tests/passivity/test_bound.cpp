@@ -1,6 +1,6 @@
 // Tests of hapstab/passivity/bound.hpp against the independent 100-digit reference of
 // reference.hpp (direct complex evaluation + dense sampling + golden section: a different
-// algorithm from the library's exact c-form + Sturm isolation).
+// algorithm from the library's exact c-form + Descartes isolation).
 #include <gtest/gtest.h>
 
 #include <random>

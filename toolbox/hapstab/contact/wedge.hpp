@@ -8,7 +8,7 @@
 // and Tsypkin's left side R are exact too. Both are functions of u = t^2 in [0, inf]
 // (u = inf is theta = pi, where J -> 0 and both branches equal H(-1)).
 //
-//  * holds (exact): Sturm isolation of the real roots of the numerators on [0, inf), the sign
+//  * holds (exact): exact isolation of the real roots of the numerators on [0, inf), the sign
 //    of every branch between and at the roots; a common root of both branches (the margin
 //    touching 0) is found by a gcd. So "holds" is proven, never sampled.
 //  * margin (certified): min over theta of w, as an enclosure: the minimum of a max of smooth

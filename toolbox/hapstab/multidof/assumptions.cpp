@@ -143,7 +143,7 @@ PassivityCheck operator_passive(const TransferMatrix& H) {
   pc.passive = true;
   pc.certified = true;
   pc.detail = "every entry stable (exact Routh); all " + std::to_string((1u << m) - 1) +
-              " principal minors of He(jw) >= 0 for all real w (exact Sturm isolation)";
+              " principal minors of He(jw) >= 0 for all real w (exact root isolation)";
   return pc;
 }
 

@@ -5,7 +5,7 @@
 //      He(jw) = (H(jw) + H(jw)^*)/2 positive semidefinite for ALL real w. Certified exactly:
 //      He(jw) times the positive common denominator prod |D_ij(jw)|^2 is a Hermitian matrix of
 //      polynomials in w; it is PSD iff every principal minor (a real polynomial in w) is >= 0
-//      on R, which Sturm root isolation decides exactly (sign at a rational point of every gap
+//      on R, which exact root isolation decides (sign at a rational point of every gap
 //      between real roots).
 //  (a) device OSP levels: a mass-damper 1/(m s + b) has OSP level b (storage 1/2 m v^2:
 //      d/dt(1/2 m v^2) = v f - b v^2); the levels used in the analysis are reported.
@@ -20,7 +20,7 @@ namespace hapstab::multidof {
 
 struct PassivityCheck {
   bool passive = false;
-  bool certified = false;   ///< exact (Routh + Sturm) verdict
+  bool certified = false;   ///< exact (Routh + root isolation) verdict
   std::string detail;       ///< which minor / entry fails, or what was proven
 };
 

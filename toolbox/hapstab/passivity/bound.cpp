@@ -94,8 +94,8 @@ std::string enclosure_decimal(const rational& lo, const rational& hi, int digits
   return to_decimal((lo + hi) / 2, 3);
 }
 
-/// p scaled to integer coefficients with content 1 (same roots): Sturm isolation on it is 3-5x
-/// faster than on the rational form (smaller numbers in every sign evaluation).
+/// p scaled to integer coefficients with content 1 (same roots): its exact sign evaluations and
+/// its double image (the Newton start) work on small integers instead of rationals.
 P primitive(const P& p) {
   integer L = 1, G = 0;
   for (const auto& c : p.coeffs()) L = lcm(L, den(c));
@@ -121,7 +121,8 @@ double Bound::value_double() const {
 }
 
 // ---------------------------------------------------------------------------------------------
-// assumptions: causality, stability (Schur-Cohn on the part off the unit circle, Sturm on it)
+// assumptions: causality, stability (Schur-Cohn on the part off the unit circle, exact root
+// isolation on it)
 bool poles_in_closed_unit_disk(const P& d, std::string* detail) {
   if (d.is_zero()) throw InputError("the denominator of H is zero");
   if (d.degree() == 0) return true;
@@ -434,7 +435,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
   const P& A = f.num();
   const P& B = f.den();
   out = Bound{};
-  out.method = "certified: exact f(cos wT), Sturm isolation, MPFR Newton, MPFI enclosure (" +
+  out.method = "certified: exact f(cos wT), Descartes root isolation, MPFR Newton, MPFI enclosure (" +
                std::to_string(digits) + " digits)";
   const rational one(1), mone(-1);
   // constant objective
@@ -449,7 +450,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
     return true;
   }
   // poles of f on [-1, 1]: only possible when H has a pole on the unit circle (B = |D z^n|^2 > 0
-  // otherwise), i.e. when gcd(D, z^deg D D(1/z)) is non-trivial -- skips a Sturm isolation
+  // otherwise), i.e. when gcd(D, z^deg D D(1/z)) is non-trivial -- skips a root isolation
   const bool circle_poles = gcd(pb.H.den(), reversed(pb.H.den())).degree() > 0;
   if (circle_poles && B.degree() > 0) {
     for (const auto& r : isolate_real_roots(B, mone, one)) {

@@ -11,8 +11,9 @@
 // on c in [-1, 1] (c = 1 <-> w = 0, c = -1 <-> w = pi/T). No 1/t is ever formed, so w -> 0 does not
 // cancel (Re{T/(1-z)} = T/2 exactly), and a pole of H at z = +-1 cancels or not exactly (gcd).
 //
-// Methods: certified (default; Sturm isolation of the critical points of f, MPFR Newton polish,
-// MPFI enclosure; exact where the maximiser is rational), fast (double-double coefficients,
+// Methods: certified (default; exact isolation of the critical points of f by Descartes' rule of
+// signs, Newton polish started in double and finished in MPFR, MPFI mean-value enclosure;
+// exact where the maximiser is rational), fast (double-double coefficients,
 // derivative-recursion root finding, Newton polish; status numeric), grid (N samples, comparison
 // only). A fractional delay t_d (not rational in c) is handled by an exact divergence test at
 // wT = pi (Tustin-like poles at z = -1) and by interval branch-and-bound over w (MPFI).
@@ -40,7 +41,7 @@ struct BoundProblem {
 
 /// Checks the assumptions of (45)/(54): T > 0, n >= 0, eta >= 0, t_d >= 0, H z^{-n} causal (deg num
 /// <= deg den + n, unless allow_noncausal), non-zero denominator, H stable (no pole with |z| > 1; decided exactly by Schur-Cohn
-/// on the part of the denominator without unit-circle roots, and by Sturm on the unit circle for
+/// on the part of the denominator without unit-circle roots, and by exact root isolation on the unit circle for
 /// the rest). A pole ON the unit circle is allowed. Throws InputError naming the failed assumption.
 void check_assumptions(const BoundProblem& p);
 
@@ -69,7 +70,7 @@ struct Bound {
   std::optional<std::string> omega;    ///< maximiser in rad/s (decimal), nullopt when none
   std::string where;                   ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
   rational omega_lo = 0, omega_hi = 0; ///< enclosure of the maximiser (rad/s), when known
-  std::string method;                  ///< e.g. "certified: Sturm isolation + MPFI (30 digits)"
+  std::string method;                  ///< e.g. "certified: exact f(cos wT), Descartes root isolation, ..."
   std::string note;
   double value_double() const;         ///< nearest double of the midpoint (+inf when infinite)
 };
