@@ -1,5 +1,6 @@
 // bench/lmi.cpp -- LMI layer speed: a problem of Theorem 5's shape (paper 000, (16)) solved
-// and certified, and its growth with the number of DOF m, DSDP beside CSDP in the same run.
+// and certified, and its growth with the number of DOF m: DSDP, CSDP and the built-in dense
+// IPM in the same run, and `auto` (Solve's default: the IPM, kept because certified).
 //
 // Problem (Theorem 5's structure, with a random stable m-input environment E of n states;
 // size benchmark: m = 2, n = 8 (blocks 10x10 and 4x4, 43 scalar variables), B, C entries
@@ -83,6 +84,7 @@ void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc 
   st.counters["feasible"] = r.is_success();
   st.counters["certified"] = r.certified();
   st.counters["bits"] = r.rounding_bits;
+  st.counters["iterations"] = r.iterations;
   // 1 when DSDP stopped in trouble and Solve's CSDP fallback produced the result (the time is
   // then DSDP's attempts plus CSDP's; seen at m = 8: DSDP stop reason -8, indefinite Schur matrix)
   st.counters["csdp_fallback"] = r.solver.find("fallback") != std::string::npos;
@@ -96,14 +98,22 @@ void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc 
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (Backend b : {Backend::dsdp, Backend::csdp}) {
-    const std::string bn = b == Backend::dsdp ? "dsdp" : "csdp";
+  auto name = [](Backend b) {
+    return std::string(b == Backend::automatic ? "auto" : b == Backend::dsdp ? "dsdp" : b == Backend::csdp ? "csdp" : "ipm");
+  };
+  // auto = Solve's default: the built-in IPM (certified) for a program this small
+  for (Backend b : {Backend::automatic, Backend::dsdp, Backend::csdp, Backend::ipm}) {
+    const std::string bn = name(b);
     benchmark::RegisterBenchmark(("Theorem5Size/solve_certify/" + bn).c_str(),
                                  [b](benchmark::State& st) { run(st, b, 2, 8, true); })
         ->Unit(benchmark::kMillisecond);
+    if (b == Backend::automatic) continue;  // without certify, automatic is DSDP
     benchmark::RegisterBenchmark(("Theorem5Size/solve_only/" + bn).c_str(),
                                  [b](benchmark::State& st) { run(st, b, 2, 8, false); })
         ->Unit(benchmark::kMillisecond);
+  }
+  for (Backend b : {Backend::dsdp, Backend::csdp, Backend::ipm}) {
+    const std::string bn = name(b);
     for (int m : {2, 4, 8, 16, 32}) {
       auto* bm = benchmark::RegisterBenchmark(("Scaling/" + bn + "/" + std::to_string(m)).c_str(), [b, m](benchmark::State& st) {
         const int n = m / 2 + 2;

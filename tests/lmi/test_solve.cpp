@@ -17,6 +17,8 @@ using Eigen::MatrixXd;
 namespace {
 
 const Backend kBoth[] = {Backend::dsdp, Backend::csdp};
+// feasible known answers: the built-in IPM too (it has no infeasibility detection of its own)
+const Backend kAll[] = {Backend::dsdp, Backend::csdp, Backend::ipm};
 
 // One back-end, no DSDP -> CSDP fallback: each back-end's verdict must stand on its own.
 Options only(Backend b) {
@@ -46,7 +48,7 @@ Program lyapunov(const MatrixXd& A, MatrixVariable* Pout = nullptr) {
 
 // min x s.t. [[x, 1], [1, x]] >= 0: eigenvalues x +- 1, so x* = 1 exactly.
 TEST(LmiSolve, KnownMinimumBothBackends) {
-  for (Backend b : kBoth) {
+  for (Backend b : kAll) {
     Program prog;
     auto x = prog.NewScalar("x");
     prog.AddLmi("[[x,1],[1,x]]", {{Expr(x), Expr::Scalar(1)}, {Expr(), Expr(x)}}, Strictness::nonstrict);
@@ -54,7 +56,7 @@ TEST(LmiSolve, KnownMinimumBothBackends) {
     Result r = Solve(prog, only(b));
     ASSERT_EQ(r.status, SolveStatus::optimal) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.is_success());
-    // Interior-point accuracy: gap tolerance 1e-9 (DSDP) / 1e-8 (CSDP) relative; 1e-6 absolute is
+    // Interior-point accuracy: gap tolerance 1e-9 (DSDP, IPM) / 1e-8 (CSDP) relative; 1e-6 absolute is
     // ample and still excludes any other value.
     EXPECT_NEAR(r.objective, 1.0, 1e-6) << to_string(b);
     // The exact check of [[x,1],[1,x]] >= 0 needs x >= 1 exactly: a rounding below 1 must fail,
@@ -68,7 +70,7 @@ TEST(LmiSolve, KnownMinimumBothBackends) {
 // t* = min(x1, x2) maximised: x1 = 0.3, x2 = 0.7 -> t* = 0.3 (but the margin is measured after
 // equilibration; the original-coordinate min eigenvalue must be 0.3).
 TEST(LmiSolve, EqualitiesAndInequalitiesBothBackends) {
-  for (Backend b : kBoth) {
+  for (Backend b : kAll) {
     Program prog;
     auto X = prog.NewDiagonal(2, "X");
     prog.AddLmi("X > 0", Expr(X));
@@ -95,7 +97,7 @@ TEST(LmiSolve, EqualitiesAndInequalitiesBothBackends) {
 
 TEST(LmiSolve, LyapunovFeasibleCertifiedBothBackends) {
   MatrixXd A = M2(0.9, 0.5, -0.2, 0.7);  // eigenvalues 0.8 +- 0.3i, |.| = 0.854 < 1
-  for (Backend b : kBoth) {
+  for (Backend b : kAll) {
     MatrixVariable P;
     Program prog = lyapunov(A, &P);
     Result r = Solve(prog, only(b));
@@ -122,6 +124,35 @@ TEST(LmiSolve, LyapunovInfeasibleBothBackendsExactFarkas) {
     EXPECT_FALSE(r.is_success());
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
   }
+}
+
+// The built-in IPM alone on an infeasible program: never "feasible" (it cannot prove
+// infeasibility itself); Solve's default (automatic) then lets DSDP decide, exactly, and says so.
+TEST(LmiSolve, AutomaticKeepsTheIpmOnlyWhenCertified) {
+  Program bad = lyapunov(M2(1.2, 0.0, 0.0, 0.5));
+  Result ri = Solve(bad, only(Backend::ipm));
+  EXPECT_NE(ri.verdict, Feasibility::feasible) << ri.detail;
+  EXPECT_FALSE(ri.certified());
+  Result ra = Solve(bad, Options{});
+  EXPECT_EQ(ra.verdict, Feasibility::infeasible) << ra.detail;
+  EXPECT_EQ(ra.certificate, Certificate::infeasible_exact) << ra.detail;
+  if (ra.solver == "hapstab IPM") EXPECT_EQ(ra.certificate, Certificate::infeasible_exact);
+  else EXPECT_NE(ra.detail.find("hapstab IPM first"), std::string::npos) << ra.detail;
+  // a feasible small program: the IPM's certified answer is the one returned
+  Program good = lyapunov(M2(0.9, 0.5, -0.2, 0.7));
+  Result rg = Solve(good, Options{});
+  EXPECT_EQ(rg.solver, "hapstab IPM") << rg.detail;
+  EXPECT_EQ(rg.certificate, Certificate::feasible_exact) << rg.detail;
+  // without certification automatic means DSDP
+  Options nc;
+  nc.certify = false;
+  EXPECT_EQ(Solve(good, nc).solver, "DSDP");
+  // a program above ipm_max_rows goes to DSDP directly
+  Options tiny;
+  tiny.ipm_max_rows = 3;
+  Result rd = Solve(good, tiny);
+  EXPECT_EQ(rd.solver, "DSDP");
+  EXPECT_EQ(rd.certificate, Certificate::feasible_exact);
 }
 
 // x >= 1 and x <= -1: DSDP/CSDP report infeasibility directly (non-strict, no margin).
@@ -207,6 +238,13 @@ TEST(LmiModel, StructuredVariables) {
 // certify P; forcing equilibration may leave the verdict undecided but never infeasible.
 TEST(LmiSolve, BadlyScaledFeasible) {
   MatrixXd A = M2(0.5, 1e6, -1e-7, 0.3);
+  // the built-in IPM (no scaling safeguards of its own) diverges on these data; Solve's default
+  // must still certify, through DSDP
+  {
+    Result r = Solve(lyapunov(A), Options{});
+    EXPECT_TRUE(r.certified()) << r.solver << " " << r.detail;
+    EXPECT_NE(Solve(lyapunov(A), only(Backend::ipm)).verdict, Feasibility::infeasible);
+  }
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
     Result r = Solve(prog, only(b));

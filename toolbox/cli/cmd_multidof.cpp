@@ -1,4 +1,4 @@
-// `hapstab multidof analyze --scene FILE [--json] [--set NAME=VALUE]... [--backend dsdp|csdp]`
+// `hapstab multidof analyze --scene FILE [--json] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]`
 // `hapstab multidof design  --scene FILE [--json] [--set NAME=VALUE]... [--iterations N]`
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
@@ -39,7 +39,7 @@ namespace {
 using nlohmann::json;
 
 struct Opts {
-  std::string scene, backend = "dsdp";
+  std::string scene, backend = "auto";
   double duration = 10;
   std::vector<std::string> sets;
   bool json = false;
@@ -58,8 +58,7 @@ json mat(const Eigen::MatrixXd& M) {
 
 lmi::Options lmi_options(const Opts& o) {
   lmi::Options op;
-  if (o.backend == "csdp") op.backend = lmi::Backend::csdp;
-  else if (o.backend != "dsdp") throw InputError("--backend must be dsdp or csdp, got '" + o.backend + "'");
+  op.backend = lmi::parse_backend(o.backend);
   return op;
 }
 
@@ -279,7 +278,7 @@ const Register multidof_cmd({"multidof",
                                  sub->add_option("--scene", o->scene, "Scene file (TOML; examples/multidof_*.toml)")->required();
                                  sub->add_flag("--json", o->json, "JSON output");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
-                                 sub->add_option("--backend", o->backend, "SDP back-end: dsdp (default) or csdp");
+                                 sub->add_option("--backend", o->backend, "SDP back-end: auto (default: built-in IPM for small programs, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
                                  if (std::string(name) == "design")
                                    sub->add_option("--iterations", o->iterations, "Maximum CCL iterations (default 40)");
                                  sub->callback([mode, name]() { *mode = name; });

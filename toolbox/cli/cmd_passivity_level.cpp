@@ -1,5 +1,5 @@
 // `hapstab passivity-level (--H EXPR --T T [--set NAME=VALUE]... | --ss FILE) [--kind osp|isp]
-//   [--backend dsdp|csdp] [--lemma 1|2] [--grid N] [--json]`
+//   [--backend auto|dsdp|csdp|ipm] [--lemma 1|2] [--grid N] [--json]`
 // OSP level delta or ISP level phi (scalar, Delta = delta I, Phi = phi I) of a discrete-time
 // system, paper 000 Definition 2, by the Lemma 1 (or Lemma 2) LMI with an exact certificate
 // of a lower bound, cross-checked by the frequency-domain computation (lmi/passivity_level.hpp).
@@ -28,7 +28,7 @@ namespace hapstab::cli {
 namespace {
 
 struct Opts {
-  std::string H, T, ss, kind = "osp", backend = "dsdp";
+  std::string H, T, ss, kind = "osp", backend = "auto";
   std::vector<std::string> sets;
   int lemma = 1, grid = 4096;
   bool json = false;
@@ -85,7 +85,7 @@ StateSpace<double> read_ss(const std::string& file) {
 
 int run(const Opts& o) {
   if (o.kind != "osp" && o.kind != "isp") throw InputError("--kind: expected osp or isp, got '" + o.kind + "'");
-  if (o.backend != "dsdp" && o.backend != "csdp") throw InputError("--backend: expected dsdp or csdp");
+  const auto backend = lmi::parse_backend(o.backend);
   if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
   if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
   if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
@@ -117,7 +117,6 @@ int run(const Opts& o) {
       }
   }
   const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
-  const auto backend = o.backend == "dsdp" ? lmi::Backend::dsdp : lmi::Backend::csdp;
   lmi::PassivityLevel l;
   if (sys.states() > 0) l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
   else {
@@ -180,7 +179,7 @@ const Register reg({"passivity-level",
                       app.add_option("--set", o->sets, "Parameter of --H, NAME=VALUE (repeatable)");
                       app.add_option("--ss", o->ss, "JSON file {\"A\":[[..]],\"B\":..,\"C\":..,\"D\":..,\"T\":\"1/100\"}");
                       app.add_option("--kind", o->kind, "osp (default) or isp");
-                      app.add_option("--backend", o->backend, "dsdp (default) or csdp");
+                      app.add_option("--backend", o->backend, "auto (default: built-in IPM when exactly certified, else DSDP), dsdp, csdp or ipm");
                       app.add_option("--lemma", o->lemma, "1 (KYP LMI (2), default) or 2 (Schur form)");
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "

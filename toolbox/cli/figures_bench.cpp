@@ -22,7 +22,7 @@ const RegisterFigure contact({"contact_speed_accuracy", "toolbox",
                               [](const std::filesystem::path& d) { write_bench_chart_data("contact", d); }});
 const RegisterFigure lmi({"lmi_scaling", "toolbox",
                           "LMI layer: solve + exact certificate time against problem size on Theorem 5's "
-                          "structure, DSDP beside CSDP",
+                          "structure, DSDP, CSDP and the built-in IPM",
                           [](const std::filesystem::path& d) { write_bench_chart_data("lmi", d); }});
 const RegisterFigure multidof({"multidof_scaling", "toolbox",
                                "Theorem 5 scaling: analysis time against total DOF and the fraction of random "

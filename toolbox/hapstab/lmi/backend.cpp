@@ -13,7 +13,23 @@ extern "C" {
 
 namespace hapstab::lmi {
 
-const char* to_string(Backend b) { return b == Backend::dsdp ? "DSDP" : "CSDP"; }
+const char* to_string(Backend b) {
+  switch (b) {
+    case Backend::automatic: return "automatic";
+    case Backend::dsdp: return "DSDP";
+    case Backend::csdp: return "CSDP";
+    case Backend::ipm: return "hapstab IPM";
+  }
+  return "?";
+}
+
+Backend parse_backend(const std::string& name) {
+  if (name == "auto") return Backend::automatic;
+  if (name == "dsdp") return Backend::dsdp;
+  if (name == "csdp") return Backend::csdp;
+  if (name == "ipm") return Backend::ipm;
+  throw InputError("--backend must be auto, dsdp, csdp or ipm, got '" + name + "'");
+}
 const char* to_string(SolveStatus s) {
   switch (s) {
     case SolveStatus::optimal: return "optimal";

@@ -58,7 +58,7 @@ struct PassivityLevel {
 
 /// Lemma 1 (lemma = 1) or Lemma 2 (lemma = 2) LMI. Requires a discrete, square system.
 PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma = 1,
-                                   Backend backend = Backend::dsdp);
+                                   Backend backend = Backend::automatic);
 
 /// Frequency-domain level (see header comment).
 PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind kind, int grid = 4096);
@@ -66,7 +66,7 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
 /// Feasibility of Lemma 1 / Lemma 2 (with the transcribed "+Phi" when typo = true) at fixed
 /// Delta = delta I, Phi = phi I; returns the margin (> 0: feasible). Used by proofs/.
 double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo = false,
-                    Backend backend = Backend::dsdp);
+                    Backend backend = Backend::automatic);
 
 /// lambda_min((G + G^*)/2) at theta (numeric, double).
 double isp_index_at(const StateSpace<double>& sys, double theta);

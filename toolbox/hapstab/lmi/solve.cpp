@@ -641,7 +641,8 @@ Result solve_scaled(const Program& prog, const Options& opt) {
   return raw;
 }
 
-Result Solve(const Program& prog, const Options& opt) {
+namespace {
+Result solve_with_fallback(const Program& prog, const Options& opt) {
   Result r = solve_scaled(prog, opt);
   if (!opt.fallback || opt.backend != Backend::dsdp) return r;
   if (r.verdict != Feasibility::undecided && r.status != SolveStatus::numerical_trouble) return r;
@@ -655,6 +656,28 @@ Result Solve(const Program& prog, const Options& opt) {
   c.solver = "CSDP (DSDP fallback)";
   c.detail = "DSDP: " + r.detail + "; CSDP: " + c.detail;
   return c;
+}
+}  // namespace
+
+Result Solve(const Program& prog, const Options& opt) {
+  if (opt.backend != Backend::automatic) return solve_with_fallback(prog, opt);
+  Options o = opt;
+  std::string note;
+  int rows = 0;
+  for (const auto& c : prog.lmis()) rows += c.F.rows();
+  if (opt.certify && rows <= opt.ipm_max_rows) {
+    // one attempt on the data as given (equilibration is DSDP's retry, not the IPM's)
+    o.backend = Backend::ipm;
+    if (o.scale == Scaling::automatic) o.scale = Scaling::never;
+    Result r = solve_scaled(prog, o);
+    if (r.certificate == Certificate::feasible_exact || r.certificate == Certificate::infeasible_exact) return r;
+    note = "hapstab IPM first: " + std::string(to_string(r.verdict)) + ", not certified (" + r.detail + "); ";
+    o.scale = opt.scale;
+  }
+  o.backend = Backend::dsdp;
+  Result r = solve_with_fallback(prog, o);
+  r.detail = note + r.detail;
+  return r;
 }
 
 }  // namespace hapstab::lmi

@@ -14,7 +14,8 @@
 // which direction the margin measures; bench and tests showed cases where the raw data certify
 // and the equilibrated do not, and the reverse. Scaling::automatic therefore tries both (raw
 // first) and keeps the first decided verdict; Result::detail says which one was used.
-// (4) DSDP or CSDP (backend.hpp). (5) Verdict and exact certificate (certificate.hpp).
+// (4) The built-in IPM for small programs (kept only when certified), else DSDP or CSDP
+// (backend.hpp). (5) Verdict and exact certificate (certificate.hpp).
 //
 // Verdict with the margin objective: feasible iff the solver is optimal and t* >
 // strict_threshold; infeasible iff t* < -strict_threshold (or the solver reports
@@ -40,7 +41,13 @@ enum class Scaling {
 };
 
 struct Options {
-  Backend backend = Backend::dsdp;
+  /// automatic: a program with at most `ipm_max_rows` LMI rows in all is first solved by the
+  /// built-in IPM, and that result is returned only when its exact certificate passed (a
+  /// rounded feasible point or a Farkas ray); anything else goes to DSDP (and the CSDP
+  /// fallback), whose Result::detail then records the IPM attempt. Needs certify; without it
+  /// automatic is DSDP. dsdp / csdp / ipm: that back-end only.
+  Backend backend = Backend::automatic;
+  int ipm_max_rows = 64;
   double strict_threshold = 1e-7;  ///< margin needed to call a strict LMI feasible
   Scaling scale = Scaling::automatic;  ///< equilibration (see above)
   /// DSDP stops with an indefinite Schur matrix (-8) or short steps on some KYP LMIs that CSDP

@@ -1,0 +1,262 @@
+// hapstab/lmi/ipm.cpp -- the small dense primal-dual interior-point method (see backend.hpp).
+//
+// Standard form (backend.hpp): dual  max b^T y, S = C + sum_k y_k A_k >= 0;
+//                              primal min tr(C X), tr(A_k X) = -b_k, X >= 0.
+// Infeasible-start path following with the HKM direction and Mehrotra's predictor-corrector
+// (Helmberg-Rendl-Vanderbei-Wolkowicz 1996; Todd-Toh-Tutuncu 1998), as CSDP uses. With the
+// residuals rp_k = -b_k - tr(A_k X), Rd = C + sum y_k A_k - S and a target sigma mu:
+//   M dy = tr(A_k R) - rp_k,   M_kl = tr(A_k X A_l S^-1),   R = sigma mu S^-1 - X - X Rd S^-1 [- dXa dSa S^-1]
+//   dS = sum dy_l A_l + Rd,    dX = sym(R - X (sum dy_l A_l) S^-1).
+// The Schur complement is formed per block as G^T G with G = [vec Ls^T A_k Lx] (X = Lx Lx^T,
+// S^-1 = Ls Ls^T), or entry by entry for blocks of sparse terms: dense level-3 work with no
+// per-entry library overhead, which is what small problems need.
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+
+#include "hapstab/lmi/backend.hpp"
+
+namespace hapstab::lmi {
+
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+struct Entry {
+  int a, b;
+  double v;
+};
+struct DenseBlock {
+  int n = 0;
+  MatrixXd C;
+  std::vector<int> vars;                   // k of each column of V
+  MatrixXd V;                              // n^2 x |vars|: vec(A_k)
+  std::vector<std::vector<Entry>> entries; // A_k's non-zeros (both triangles)
+  std::vector<bool> sparse;                // nnz(A_k) <= n: outer products beat a GEMM
+  bool all_sparse = true;
+};
+
+// largest alpha in (0, inf] with P + alpha dP >= 0, P > 0 (L = chol(P)), or any value
+// >= `enough` when P + enough dP > 0 (one Cholesky instead of an eigenvalue problem: near
+// the optimum full steps are the rule)
+double max_step(const MatrixXd& P, const Eigen::LLT<MatrixXd>& L, const MatrixXd& dP, double enough) {
+  if (P.rows() == 1) return dP(0, 0) < 0 ? -P(0, 0) / dP(0, 0) : std::numeric_limits<double>::infinity();
+  if (Eigen::LLT<MatrixXd>(P + enough * dP).info() == Eigen::Success) return enough;
+  MatrixXd T = L.matrixL().solve(dP);
+  T = L.matrixL().solve(T.transpose()).transpose();
+  Eigen::SelfAdjointEigenSolver<MatrixXd> es(0.5 * (T + T.transpose()), Eigen::EigenvaluesOnly);
+  const double lmin = es.eigenvalues()(0);
+  return lmin < 0 ? -1.0 / lmin : std::numeric_limits<double>::infinity();
+}
+
+MatrixXd sym(const MatrixXd& M) { return 0.5 * (M + M.transpose()); }
+
+}  // namespace
+
+BackendResult solve_ipm(const StandardForm& sf) {
+  validate(sf);
+  const int m = sf.m;
+  const size_t J = sf.blocks.size();
+  std::vector<DenseBlock> blk(J);
+  int N = 0;
+  double cnorm = 0, amax = 0;
+  for (size_t j = 0; j < J; ++j) {
+    const auto& B = sf.blocks[j];
+    auto& D = blk[j];
+    D.n = static_cast<int>(B.C.rows());
+    N += D.n;
+    D.C = B.C;
+    cnorm = std::max(cnorm, B.C.norm());
+    D.V = MatrixXd::Zero(static_cast<Eigen::Index>(D.n) * D.n, static_cast<Eigen::Index>(B.terms.size()));
+    for (size_t t = 0; t < B.terms.size(); ++t) {
+      D.vars.push_back(B.terms[t].var);
+      std::vector<Entry> e;
+      for (int o = 0; o < B.terms[t].A.outerSize(); ++o)
+        for (Eigen::SparseMatrix<double>::InnerIterator i(B.terms[t].A, o); i; ++i)
+          e.push_back({static_cast<int>(i.row()), static_cast<int>(i.col()), i.value()});
+      D.sparse.push_back(static_cast<int>(e.size()) <= D.n);
+      D.all_sparse = D.all_sparse && D.sparse.back();
+      D.entries.push_back(std::move(e));
+      MatrixXd A = MatrixXd(B.terms[t].A);
+      amax = std::max(amax, A.norm());
+      D.V.col(static_cast<Eigen::Index>(t)) = Eigen::Map<const VectorXd>(A.data(), A.size());
+    }
+  }
+  BackendResult r;
+  r.y = VectorXd::Zero(m);
+  r.X.resize(J);
+  // CSDP's starting point (initsoln): X = 10 alpha I, S = 10 beta I
+  double alpha = 0;
+  for (int k = 0; k < m; ++k) alpha = std::max(alpha, (1 + std::abs(sf.b(k))) / (1 + amax));
+  alpha *= N;
+  const double beta = (1 + std::max(amax, cnorm)) / std::sqrt(static_cast<double>(N));
+  std::vector<MatrixXd> X(J), S(J), Sinv(J), Rd(J), R(J), dX(J), dS(J), dXa(J), dSa(J);
+  for (size_t j = 0; j < J; ++j) {
+    X[j] = 10 * alpha * MatrixXd::Identity(blk[j].n, blk[j].n);
+    S[j] = 10 * beta * MatrixXd::Identity(blk[j].n, blk[j].n);
+  }
+  VectorXd& y = r.y;
+  const double bnorm = sf.b.norm();
+  auto apply_A = [&](size_t j, const VectorXd& v) {  // sum_k v_k A_jk
+    VectorXd w(blk[j].vars.size());
+    for (size_t t = 0; t < blk[j].vars.size(); ++t) w(static_cast<Eigen::Index>(t)) = v(blk[j].vars[t]);
+    VectorXd a = blk[j].V * w;
+    return MatrixXd(Eigen::Map<MatrixXd>(a.data(), blk[j].n, blk[j].n));
+  };
+  auto trace_A = [&](const std::vector<MatrixXd>& Mj) {  // (tr(A_k M))_k
+    VectorXd out = VectorXd::Zero(m);
+    for (size_t j = 0; j < J; ++j) {
+      VectorXd t = blk[j].V.transpose() * Eigen::Map<const VectorXd>(Mj[j].data(), Mj[j].size());
+      for (size_t i = 0; i < blk[j].vars.size(); ++i) out(blk[j].vars[i]) += t(static_cast<Eigen::Index>(i));
+    }
+    return out;
+  };
+  const int max_iter = 60;
+  double mu0 = 0;
+  int it = 0;
+  r.status = SolveStatus::numerical_trouble;
+  r.detail = "hapstab IPM: iteration limit";
+  for (; it < max_iter; ++it) {
+    std::vector<Eigen::LLT<MatrixXd>> LX(J), LS(J);
+    double trXS = 0, rdnorm2 = 0;
+    for (size_t j = 0; j < J; ++j) {
+      LX[j].compute(X[j]);
+      LS[j].compute(S[j]);
+      if (LX[j].info() != Eigen::Success || LS[j].info() != Eigen::Success) {
+        r.detail = "hapstab IPM: lost positive definiteness";
+        it = max_iter;
+        break;
+      }
+      Sinv[j] = LS[j].solve(MatrixXd::Identity(blk[j].n, blk[j].n));
+      Rd[j] = blk[j].C + apply_A(j, y) - S[j];
+      rdnorm2 += Rd[j].squaredNorm();
+      trXS += X[j].cwiseProduct(S[j]).sum();
+    }
+    if (it >= max_iter) break;
+    const VectorXd rp = -sf.b - trace_A(X);
+    const double mu = trXS / N;
+    double pobj = 0;
+    for (size_t j = 0; j < J; ++j) pobj += blk[j].C.cwiseProduct(X[j]).sum();
+    const double dobj = sf.b.dot(y);
+    const double pinf = rp.norm() / (1 + bnorm), dinf = std::sqrt(rdnorm2) / (1 + cnorm);
+    const double gap = std::abs(pobj - dobj) / (1 + std::abs(pobj) + std::abs(dobj));
+    if (pinf < 1e-8 && dinf < 1e-8 && gap < 1e-8) {  // CSDP's axtol, atytol, objtol
+      r.status = SolveStatus::optimal;
+      r.detail = "hapstab IPM: optimal";
+      break;
+    }
+    if (it == 0) mu0 = mu;
+    if (!std::isfinite(mu) || !std::isfinite(y.norm()) || mu > 1e8 * mu0) {
+      r.detail = "hapstab IPM: diverging iterates (infeasible or unbounded?)";
+      break;
+    }
+    // Schur complement M_kl = tr(A_k X A_l S^-1). A block of sparse terms (a Lyapunov P > 0,
+    // 1x1 bounds): sum over the non-zeros, nnz_k nnz_l products a pair. Otherwise <G_k, G_l>
+    // with G_k = Ls^T A_k Lx (X = Lx Lx^T, S^-1 = Ls Ls^T): G of the dense terms by two GEMMs,
+    // of the sparse ones by outer products of rows of Ls and Lx, then one symmetric rank-q
+    // update -- PSD by construction.
+    MatrixXd M = MatrixXd::Zero(m, m);
+    for (size_t j = 0; j < J; ++j) {
+      const auto& D = blk[j];
+      const Eigen::Index q = static_cast<Eigen::Index>(D.vars.size()), n = D.n;
+      if (q == 0) continue;
+      MatrixXd Mj = MatrixXd::Zero(q, q);
+      if (D.all_sparse) {
+        for (Eigen::Index k = 0; k < q; ++k)
+          for (Eigen::Index l = 0; l <= k; ++l) {
+            double acc = 0;
+            for (const auto& e : D.entries[static_cast<size_t>(k)])
+              for (const auto& f : D.entries[static_cast<size_t>(l)]) acc += e.v * f.v * X[j](e.b, f.a) * Sinv[j](f.b, e.a);
+            Mj(k, l) = Mj(l, k) = acc;
+          }
+      } else {
+        const MatrixXd Lx = LX[j].matrixL();
+        const MatrixXd Ls = Eigen::LLT<MatrixXd>(Sinv[j]).matrixL();
+        std::vector<Eigen::Index> dense;
+        for (Eigen::Index t = 0; t < q; ++t)
+          if (!D.sparse[static_cast<size_t>(t)]) dense.push_back(t);
+        const Eigen::Index qd = static_cast<Eigen::Index>(dense.size());
+        MatrixXd Abig(n, n * qd);  // [A_t ...] of the dense terms
+        for (Eigen::Index i = 0; i < qd; ++i)
+          Abig.middleCols(i * n, n) = Eigen::Map<const MatrixXd>(D.V.col(dense[static_cast<size_t>(i)]).data(), n, n);
+        const MatrixXd U = Ls.transpose() * Abig;  // [Ls^T A_t ...]
+        MatrixXd Uv(n * qd, n);                    // stacked vertically
+        for (Eigen::Index i = 0; i < qd; ++i) Uv.middleRows(i * n, n) = U.middleCols(i * n, n);
+        const MatrixXd Gv = Uv * Lx;               // [G_t; ...]
+        MatrixXd G = MatrixXd::Zero(n * n, q);
+        for (Eigen::Index i = 0; i < qd; ++i)
+          Eigen::Map<MatrixXd>(G.col(dense[static_cast<size_t>(i)]).data(), n, n) = Gv.middleRows(i * n, n);
+        for (Eigen::Index t = 0; t < q; ++t) {
+          if (!D.sparse[static_cast<size_t>(t)]) continue;
+          Eigen::Map<MatrixXd> Gt(G.col(t).data(), n, n);
+          for (const auto& e : D.entries[static_cast<size_t>(t)]) Gt.noalias() += e.v * Ls.row(e.a).transpose() * Lx.row(e.b);
+        }
+        Mj.selfadjointView<Eigen::Lower>().rankUpdate(G.transpose());
+        Mj = Mj.selfadjointView<Eigen::Lower>();
+      }
+      for (Eigen::Index a = 0; a < q; ++a)
+        for (Eigen::Index b = 0; b < q; ++b) M(D.vars[static_cast<size_t>(a)], D.vars[static_cast<size_t>(b)]) += Mj(a, b);
+    }
+    Eigen::LDLT<MatrixXd> LM(sym(M));
+    if (LM.info() != Eigen::Success || !(LM.vectorD().minCoeff() > 0)) {
+      r.detail = "hapstab IPM: singular Schur complement";
+      break;
+    }
+    auto direction = [&](VectorXd& dy) {  // from R: dy, dS, dX
+      dy = LM.solve(trace_A(R) - rp);
+      for (size_t j = 0; j < J; ++j) {
+        MatrixXd Ady = apply_A(j, dy);
+        dS[j] = Ady + Rd[j];
+        dX[j] = sym(R[j] - X[j] * Ady * Sinv[j]);
+      }
+    };
+    auto steps = [&](double& ap, double& ad, double enough) {
+      ap = ad = std::numeric_limits<double>::infinity();
+      for (size_t j = 0; j < J; ++j) {
+        ap = std::min(ap, max_step(X[j], LX[j], dX[j], enough));
+        ad = std::min(ad, max_step(S[j], LS[j], dS[j], enough));
+      }
+    };
+    // predictor (sigma = 0)
+    for (size_t j = 0; j < J; ++j) R[j] = -X[j] - X[j] * Rd[j] * Sinv[j];
+    VectorXd dy;
+    direction(dy);
+    double ap = 0, ad = 0;
+    steps(ap, ad, 1.0);
+    ap = std::min(1.0, ap);
+    ad = std::min(1.0, ad);
+    double mua = 0;
+    for (size_t j = 0; j < J; ++j) {
+      mua += (X[j] + ap * dX[j]).cwiseProduct(S[j] + ad * dS[j]).sum();
+      dXa[j] = dX[j];
+      dSa[j] = dS[j];
+    }
+    mua /= N;
+    const double sigma = std::min(1.0, std::pow(std::max(0.0, mua) / mu, 3));
+    // corrector
+    for (size_t j = 0; j < J; ++j)
+      R[j] = sigma * mu * Sinv[j] - X[j] - X[j] * Rd[j] * Sinv[j] - dXa[j] * dSa[j] * Sinv[j];
+    direction(dy);
+    steps(ap, ad, 1.0 / 0.98);
+    ap = std::min(1.0, 0.98 * ap);
+    ad = std::min(1.0, 0.98 * ad);
+    for (size_t j = 0; j < J; ++j) {
+      X[j] = sym(X[j] + ap * dX[j]);
+      S[j] = sym(S[j] + ad * dS[j]);
+    }
+    y += ad * dy;
+  }
+  r.iterations = it;
+  for (size_t j = 0; j < J; ++j) r.X[j] = X[j];
+  r.primal_objective = sf.b.dot(y);
+  double trCX = 0;
+  for (size_t j = 0; j < J; ++j) trCX += sf.blocks[j].C.cwiseProduct(X[j]).sum();
+  r.dual_objective = trCX;
+  r.dimacs = dimacs_errors(sf, y, r.X);
+  r.detail += " after " + std::to_string(it) + " iterations";
+  return r;
+}
+
+}  // namespace hapstab::lmi
