@@ -212,13 +212,46 @@ TEST(PassivityBound, BadInputRefused) {
 
 TEST(PassivityBound, StabilityExact) {
   using P = Polynomial<rational>;
-  EXPECT_TRUE(poles_in_closed_unit_disk(P(std::vector<rational>{rational(1), rational(0), rational(1)})));  // z^2+1
-  EXPECT_TRUE(poles_in_closed_unit_disk(P(std::vector<rational>{rational(-9999, 10000), rational(1)})));
-  EXPECT_FALSE(poles_in_closed_unit_disk(P(std::vector<rational>{rational(-10001, 10000), rational(1)})));
-  // (z^2+1)^2 (z - 1/2): double roots on the circle
+  EXPECT_TRUE(marginally_stable(P(std::vector<rational>{rational(1), rational(0), rational(1)})));  // z^2+1
+  EXPECT_TRUE(marginally_stable(P(std::vector<rational>{rational(-9999, 10000), rational(1)})));
+  EXPECT_FALSE(marginally_stable(P(std::vector<rational>{rational(-10001, 10000), rational(1)})));
+  // (z^2+1)^2 (z - 1/2): double roots on the circle -- an unbounded impulse response, refused
   P d = P(std::vector<rational>{rational(1), rational(0), rational(1)}).pow(2) *
         P(std::vector<rational>{rational(-1, 2), rational(1)});
-  EXPECT_TRUE(poles_in_closed_unit_disk(d));
+  std::string why;
+  EXPECT_FALSE(marginally_stable(d, &why));
+  EXPECT_NE(why.find("repeated pole on the unit circle"), std::string::npos) << why;
+  // simple poles at +-1 and +-j together: allowed
+  P e = P(std::vector<rational>{rational(-1), rational(0), rational(1)}) * P(std::vector<rational>{rational(1), rational(0), rational(1)});
+  EXPECT_TRUE(marginally_stable(e));
+}
+
+TEST(PassivityBound, RepeatedUnitCirclePolesAreRefused) {
+  // 1/(z-1)^2 and -(z-1)/(z+1)^2 were once given finite bounds (0.125, 0.25)
+  for (const char* h : {"1/(z-1)^2", "-(z-1)/(z+1)^2", "1/(z^2+1)^2"}) {
+    try {
+      bound_certified(make(h, "1"));
+      ADD_FAILURE() << h << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("repeated pole on the unit circle"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(PassivityBound, IntegratorPoleIsInfiniteWhateverItsSign) {
+  // residue > 0: Re -> +inf as w -> 0; residue < 0: Re -> -inf there, and (45) alone would give
+  // -T/4 for -z/(z-1), but the loop with a spring operator diverges for every b (see the
+  // simulation test IntegratorWithNegativeResidueDivergesForEveryDamping)
+  for (const char* h : {"z/(z-1)", "-z/(z-1)", "-1/(z-1)", "1000 - 3*z/(z-1)", "(z+1/2)/((z-1)*(z-1/3))"}) {
+    for (Method m : {Method::certified, Method::fast, Method::grid}) {
+      Bound b = bound(make(h, "1/1000"), m, 30, 1000);
+      EXPECT_TRUE(b.infinite) << h << " " << to_string(m) << " gave " << b.value;
+      EXPECT_EQ(b.value, "inf");
+      EXPECT_NE(b.where.find("pole of H at z = 1"), std::string::npos) << b.where;
+    }
+  }
+  // cancelled: (z-1)/(z(z-1)) = 1/z is finite
+  EXPECT_FALSE(bound_certified(make("(z-1)/(z*(z-1))", "1")).infinite);
 }
 
 TEST(PassivityBound, EtaAdds) {

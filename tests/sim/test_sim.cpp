@@ -233,6 +233,47 @@ TEST(Sim, PassivityBoundTightnessBothSides) {
   }
 }
 
+// Paper 001 assumes H stable. An integrator in H with a negative residue, H = rho z/(z - 1) with
+// rho < 0, makes (45) finite (its objective -> -inf as w -> 0), yet the loop with a passive spring
+// operator diverges for every damping b: at low frequency it is m s^3 + b s^2 + k_o s + rho/T with
+// a negative constant term. hapstab bound therefore reports b* = +inf for any uncancelled pole at
+// z = 1 (passivity/bound.cpp, integrator_pole); this is the simulation that backs it.
+TEST(Sim, IntegratorWithNegativeResidueDivergesForEveryDamping) {
+  const Q T(1, 1000), rho(-20);
+  // H = rho z/(z-1) = rho + rho/(z-1): q_{k+1} = q_k + x_k, u_k = rho q_k + rho x_k
+  StateSpace<Q> H{Mat<Q>::Ones(1, 1), Mat<Q>::Ones(1, 1), Mat<Q>::Constant(1, 1, rho), Mat<Q>::Constant(1, 1, rho), T};
+  for (int b : {1, 10, 100}) {
+    LoopSpec s;
+    s.T = T;
+    s.devices.push_back(mass_damper("dev", Q(1, 10), Q(b)));
+    s.operators.push_back(mass_spring_damper_operator("spring", 0, Q(0), Q(0), Q(300)));
+    s.environment = H;
+    s.impulses.push_back({0, 0, Q(1, 1000)});
+    Simulator sim(s);
+    SimOptions o;
+    o.steps = 4000;
+    o.record_every = 0;
+    o.max_velocity = 1e3;
+    auto sum = sim.run(o).summary;
+    EXPECT_TRUE(sum.diverged || sum.trend == "growing") << "b = " << b << ": " << sum.trend;
+  }
+  // the same loop with the integrator removed (H = rho, a negative spring weaker than the
+  // operator's 300 N/m) and b = 10 settles: the divergence is the integrator's
+  LoopSpec s;
+  s.T = T;
+  s.devices.push_back(mass_damper("dev", Q(1, 10), Q(10)));
+  s.operators.push_back(mass_spring_damper_operator("spring", 0, Q(0), Q(0), Q(300)));
+  s.environment = StateSpace<Q>{Mat<Q>(0, 0), Mat<Q>(0, 1), Mat<Q>(1, 0), Mat<Q>::Constant(1, 1, rho), T};
+  s.impulses.push_back({0, 0, Q(1, 1000)});
+  Simulator sim(s);
+  SimOptions o;
+  o.steps = 4000;
+  o.record_every = 0;
+  auto sum = sim.run(o).summary;
+  EXPECT_FALSE(sum.diverged);
+  EXPECT_NE(sum.trend, "growing");
+}
+
 TEST(Sim, BadInputIsRefusedByName) {
   LoopSpec s;
   s.T = Q(1, 1000);

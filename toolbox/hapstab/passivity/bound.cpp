@@ -123,7 +123,7 @@ double Bound::value_double() const {
 // ---------------------------------------------------------------------------------------------
 // assumptions: causality, stability (Schur-Cohn on the part off the unit circle, exact root
 // isolation on it)
-bool poles_in_closed_unit_disk(const P& d, std::string* detail) {
+bool marginally_stable(const P& d, std::string* detail) {
   if (d.is_zero()) throw InputError("the denominator of H is zero");
   if (d.degree() == 0) return true;
   P g = gcd(d, reversed(d));  // every unit-circle root of d, and reciprocal pairs (r, 1/r)
@@ -139,6 +139,12 @@ bool poles_in_closed_unit_disk(const P& d, std::string* detail) {
     if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
     if (on != m) {
       if (detail) *detail = "a reciprocal pair of poles (r, 1/r) off the unit circle: one has |z| > 1";
+      return false;
+    }
+    // a pole on the circle must be simple: a repeated one is a root of d' too (z/(z-1)^2 has an
+    // impulse response k that grows without bound)
+    if (gcd(s, d.derivative()).degree() > 0) {
+      if (detail) *detail = "a repeated pole on the unit circle |z| = 1 (its impulse response grows without bound)";
       return false;
     }
   }
@@ -181,7 +187,7 @@ void check_assumptions(const BoundProblem& p) {
                      " > denominator degree " + std::to_string(p.H.den().degree()) + " + n = " +
                      std::to_string(p.delay) + " in z (the FIR form (47) needs --allow-noncausal or --delay >= 1)");
   std::string why;
-  if (!poles_in_closed_unit_disk(p.H.den(), &why))
+  if (!marginally_stable(p.H.den(), &why))
     throw InputError("H is unstable (assumption of (45): H stable): " + why);
 }
 
@@ -460,8 +466,8 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
         out.value = "inf";
         RootInterval rr = r.is_exact() ? r : refine_root(square_free_part(B), r, pow10(-40));
         Candidate c{0, 0, rr.lo, rr.hi, rr.is_exact(), rr.is_exact() && rr.lo == 1, rr.is_exact() && rr.lo == -1};
-        out.where = c.endpoint_zero ? "pole at z = 1 (w = 0) not cancelled" :
-                    c.endpoint_pi ? "pole at z = -1 (w = pi/T): Re -> +inf" : "pole on the unit circle: Re -> +inf";
+        // (a pole at z = 1 never gets here: integrator_pole decided it)
+        out.where = c.endpoint_pi ? "pole at z = -1 (w = pi/T): Re -> +inf" : "pole on the unit circle: Re -> +inf";
         omega_of<D>(c, pb.T, std::min(digits, 17), out);
         return true;
       }
@@ -762,9 +768,31 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
 
 }  // namespace
 
+namespace {
+/// An uncancelled pole of H at z = 1 (an integrator, residue rho): b* = +inf whatever the sign of
+/// rho. Near w = 0 the objective is ~ T rho/(wT)^2, so rho > 0 sends it to +inf; for rho < 0 it goes
+/// to -inf and (45) alone would give a finite number, but (45) assumes H stable and its sufficiency
+/// proof (Sec. IV) fails: with a passive spring operator Z_O = k_o/s the loop at low frequency is
+/// m s^3 + b s^2 + k_o s + rho/T, whose constant term is negative, so it has a real root s > 0 for
+/// every b (tests/passivity: the simulator confirms the divergence).
+std::optional<Bound> integrator_pole(const BoundProblem& p) {
+  if (p.H.den()(rational(1)) != 0) return std::nullopt;
+  Bound out;
+  out.infinite = true;
+  out.status = Status::exact;
+  out.value = "inf";
+  out.omega = "0";
+  out.omega_lo = out.omega_hi = 0;
+  out.where = "pole of H at z = 1 (w = 0) not cancelled: an integrator; no finite b makes the loop passive";
+  out.method = "exact: H(z) has a simple pole at z = 1 (the denominator vanishes at 1 after cancellation)";
+  return out;
+}
+}  // namespace
+
 Bound bound_certified(const BoundProblem& p, int digits) {
   check_assumptions(p);
   if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
+  if (auto inf = integrator_pole(p)) return *inf;
   BoundProblem q = p;
   // a fractional delay that is a multiple of T is an integer delay
   if (q.frac_delay) {
@@ -1010,6 +1038,7 @@ std::optional<std::pair<double, double>> FastBound::evaluate() const {
 Bound bound_grid(const BoundProblem& p, long N) {
   check_assumptions(p);
   if (N < 2) throw InputError("grid: N must be >= 2");
+  if (auto inf = integrator_pole(p)) return *inf;
   Bound out;
   out.status = Status::numeric;
   out.method = "grid (" + std::to_string(N) + " points, double)";

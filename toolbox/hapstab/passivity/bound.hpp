@@ -42,11 +42,13 @@ struct BoundProblem {
 /// Checks the assumptions of (45)/(54): T > 0, n >= 0, eta >= 0, t_d >= 0, H z^{-n} causal (deg num
 /// <= deg den + n, unless allow_noncausal), non-zero denominator, H stable (no pole with |z| > 1; decided exactly by Schur-Cohn
 /// on the part of the denominator without unit-circle roots, and by exact root isolation on the unit circle for
-/// the rest). A pole ON the unit circle is allowed. Throws InputError naming the failed assumption.
+/// the rest). A simple pole ON the unit circle is allowed (a repeated one is unstable); an uncancelled
+/// pole at z = 1 makes b* = +inf (see bound_certified). Throws InputError naming the failed assumption.
 void check_assumptions(const BoundProblem& p);
 
-/// True iff every root of d satisfies |z| <= 1 (exact). `detail` receives an explanation.
-bool poles_in_closed_unit_disk(const Polynomial<rational>& d, std::string* detail = nullptr);
+/// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
+/// poles H may have. `detail` receives the reason when false.
+bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);
 
 /// The exact objective as a function of c = cos(wT), without eta (see the header comment).
 struct Objective {
