@@ -50,15 +50,18 @@ inline R objective(const RationalFunction<rational>& H, const rational& T, int n
 }
 
 /// sup over θ in (0, π] (θ = 0 as the limit θ = 1e-30).
+/// `resonances`: angles θ around which 601 extra samples `resonance_step` apart are taken (the
+/// step must be below the peak width, ~ 1 - pole radius).
 inline Ref reference(const RationalFunction<rational>& H, const rational& T, int n, const rational& tau = 0,
-                     const std::vector<double>& resonances = {}, int samples = 3000) {
+                     const std::vector<double>& resonances = {}, int samples = 3000,
+                     const char* resonance_step = "1e-5") {
   const R pi = boost::math::constants::pi<R>();
   std::vector<R> th;
   th.push_back(R("1e-30"));
   for (int k = 1; k <= samples; ++k) th.push_back(pi * k / samples);
   for (double a : resonances)
     for (int k = -300; k <= 300; ++k) {
-      R x = R(a) + R(k) * R("1e-5");
+      R x = R(a) + R(k) * R(resonance_step);
       if (x > 0 && x <= pi) th.push_back(x);
     }
   std::sort(th.begin(), th.end());

@@ -415,8 +415,18 @@ bool enclose_critical(const CriticalContext<D>& cx, RootInterval r, int digits, 
   return common_decimal(out.vlo, out.vhi, digits).has_value() || out.vhi - out.vlo < abs(out.vlo) * pow10(-digits - 2);
 }
 
+/// The domain of the maximisation in certified_rational: c in [c_end, 1], where c = cos(wT/q) and
+/// c_end = cos(pi/q) is the image of w = pi/T. q = 1 (c = cos wT, c_end = -1) without a fractional
+/// delay; q > 1 for t_d = (p/q) T (certified_frac_exact). [end_lo, end_hi] are rational bounds of
+/// c_end, equal when c_end is rational (q = 1, 2, 3).
+struct Domain {
+  rational end_lo = -1, end_hi = -1;
+  int q = 1;
+  bool end_exact() const { return end_lo == end_hi; }
+};
+
 template <unsigned D>
-void omega_of(const Candidate& c, const rational& T, int digits, Bound& b) {
+void omega_of(const Candidate& c, const rational& T, int q, int digits, Bound& b) {
   if (c.endpoint_zero) {
     b.omega = "0";
     b.omega_lo = b.omega_hi = 0;
@@ -428,7 +438,7 @@ void omega_of(const Candidate& c, const rational& T, int digits, Bound& b) {
     w = ipi<D>() / ival<D>(T, T);
     b.where = "w = pi/T";
   } else {
-    w = acos(ival<D>(c.clo, c.chi)) / ival<D>(T, T);
+    w = acos(ival<D>(c.clo, c.chi)) * interval<D>(q) / ival<D>(T, T);
     if (b.where.empty()) b.where = "interior";
   }
   b.omega_lo = rlo(w);
@@ -437,13 +447,13 @@ void omega_of(const Candidate& c, const rational& T, int digits, Bound& b) {
 }
 
 template <unsigned D>
-bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& out) {
+bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& out, const Domain& dom = {}) {
   const P& A = f.num();
   const P& B = f.den();
   out = Bound{};
   out.method = "certified: exact f(cos wT), Descartes root isolation, MPFR Newton, MPFI enclosure (" +
                std::to_string(digits) + " digits)";
-  const rational one(1), mone(-1);
+  const rational one(1), mone = dom.end_lo;
   // constant objective
   P Pd = A.derivative() * B - A * B.derivative();
   if (Pd.is_zero()) {
@@ -459,7 +469,13 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
   // otherwise), i.e. when gcd(D, z^deg D D(1/z)) is non-trivial -- skips a root isolation
   const bool circle_poles = gcd(pb.H.den(), reversed(pb.H.den())).degree() > 0;
   if (circle_poles && B.degree() > 0) {
-    for (const auto& r : isolate_real_roots(B, mone, one)) {
+    for (auto r : isolate_real_roots(B, mone, one)) {
+      if (!dom.end_exact()) {  // a pole near the irrational end cos(pi/q): inside or outside?
+        if (r.lo < dom.end_hi) r = refine_root(square_free_part(B), r, (dom.end_hi - dom.end_lo) / 4);
+        if (r.hi <= dom.end_lo) continue;
+        if (r.lo < dom.end_hi)
+          throw NumericalError("a pole of the objective at w = pi/T could not be placed inside or outside [0, pi/T]");
+      }
       if (pole_goes_to_plus_inf(A, B, r)) {
         out.infinite = true;
         out.status = Status::exact;
@@ -468,7 +484,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
         Candidate c{0, 0, rr.lo, rr.hi, rr.is_exact(), rr.is_exact() && rr.lo == 1, rr.is_exact() && rr.lo == -1};
         // (a pole at z = 1 never gets here: integrator_pole decided it)
         out.where = c.endpoint_pi ? "pole at z = -1 (w = pi/T): Re -> +inf" : "pole on the unit circle: Re -> +inf";
-        omega_of<D>(c, pb.T, std::min(digits, 17), out);
+        omega_of<D>(c, pb.T, dom.q, std::min(digits, 17), out);
         return true;
       }
     }
@@ -478,26 +494,46 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
     rational v = A(one) / B(one);
     cands.push_back({v, v, one, one, true, true, false});
   }
-  if (B(mone) != 0) {
+  if (dom.end_exact() && B(mone) != 0) {
     rational v = A(mone) / B(mone);
     cands.push_back({v, v, mone, mone, true, false, true});
+  } else if (!dom.end_exact()) {  // w = pi/T at the irrational c = cos(pi/q): an MPFI enclosure
+    using I = interval<D>;
+    I X = ival<D>(dom.end_lo, dom.end_hi);
+    I Bx = B.template cast<I>()(X);
+    if (!(lower(Bx) > 0 || upper(Bx) < 0))
+      throw NumericalError("the objective at w = pi/T could not be enclosed (denominator interval contains 0)");
+    I v = A.template cast<I>()(X) / Bx;
+    cands.push_back({rlo(v), rhi(v), dom.end_lo, dom.end_hi, false, false, true});
   }
+  // a critical point that may lie just outside an irrational end only widens the upper end of the
+  // enclosure (its value differs from the end's by ~f'' (end_hi - end_lo)^2): its lower end is the end's
+  const size_t end_index = cands.empty() ? 0 : cands.size() - 1;
   // critical points: roots of Pd that are not poles
   P Pc = Pd;
   for (P g = gcd(Pc, B); g.degree() > 0; g = gcd(Pc, B)) Pc = divmod(Pc, g).first;
   if (Pc.degree() > 0) {
     P q = primitive(square_free_part(Pc));
     std::optional<CriticalContext<D>> cx;  // built at the first irrational critical point
-    for (const auto& r : isolate_real_roots(q, mone, one)) {
+    for (auto r : isolate_real_roots(q, mone, one)) {
+      bool straddles = false;  // isolated only up to the irrational end cos(pi/q): in or out?
+      if (!dom.end_exact() && r.lo < dom.end_hi) {
+        r = refine_root(q, r, (dom.end_hi - dom.end_lo) / 4);
+        if (r.hi <= dom.end_lo) continue;
+        straddles = r.lo < dom.end_hi;
+      }
       if (r.is_exact()) {
-        if (r.lo == 1 || r.lo == -1) continue;  // the endpoint value is already a candidate
+        if (r.lo == 1 || r.lo == dom.end_lo) continue;  // the endpoint value is already a candidate
         rational v = A(r.lo) / B(r.lo);
-        cands.push_back({v, v, r.lo, r.lo, true, false, false});
+        Candidate c{v, v, r.lo, r.lo, true, false, false};
+        if (straddles) c.vlo = std::min(c.vlo, cands[end_index].vlo), c.exact = false;
+        cands.push_back(c);
         continue;
       }
       Candidate c;
       if (!cx) cx.emplace(q, A, B, Pd);
       if (!enclose_critical<D>(*cx, r, digits, c)) return false;
+      if (straddles) c.vlo = std::min(c.vlo, cands[end_index].vlo);
       cands.push_back(c);
     }
   }
@@ -522,7 +558,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
     out.status = Status::certified;
     out.value = enclosure_decimal(out.lo, out.hi, digits);
   }
-  omega_of<D>(cb, pb.T, digits, out);
+  omega_of<D>(cb, pb.T, dom.q, digits, out);
   return true;
 }
 
@@ -667,6 +703,45 @@ interval<D> frac_derivative(const Objective& o, const rational& T, const rationa
   return f.d;
 }
 
+/// The fractional delay t_d = (p/q) T (q >= 2) made exact. With w = e^{j phi}, theta = wT = q phi,
+/// z = w^q, e^{-j w t_d} = w^{-p} and T/(1 - w^q) = T/((1 - w) S(w)), S = 1 + w + ... + w^{q-1}, so
+///   Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} = Re{T Ht(w) w^-(nq+p)/(1 - w)},  Ht(w) = H(w^q)/S(w):
+/// the integer-delay objective of Ht in c = cos(phi), on c in [cos(pi/q), 1] (w in [0, pi/T]).
+/// S's roots (w^q = 1, w != 1) lie at phi >= 2 pi/q, outside the domain. Returns false when the
+/// objective's degree exceeds `max_degree` (the branch-and-bound then takes over).
+template <unsigned D>
+bool certified_frac_exact(const BoundProblem& pb, int digits, int max_degree, Bound& out) {
+  const rational tau = *pb.frac_delay / pb.T;
+  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();
+  const long degree = q * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + p + q;
+  if (q < 2 || degree > max_degree) return false;
+  auto spread = [q](const P& a) {  // a(w^q)
+    std::vector<rational> c(static_cast<size_t>(a.degree() * q + 1), rational(0));
+    for (int k = 0; k <= a.degree(); ++k) c[static_cast<size_t>(k * q)] = a.coeffs()[static_cast<size_t>(k)];
+    return P(std::move(c));
+  };
+  BoundProblem pt = pb;
+  pt.frac_delay.reset();
+  pt.H = RF(spread(pb.H.num()), spread(pb.H.den()) * P(std::vector<rational>(static_cast<size_t>(q), rational(1))));
+  pt.delay = static_cast<int>(pb.delay * q + p);
+  Domain dom;
+  dom.q = static_cast<int>(q);
+  if (q == 2) dom.end_lo = dom.end_hi = 0;
+  else if (q == 3) dom.end_lo = dom.end_hi = rational(1, 2);
+  else {
+    interval<D> ce = cos(ipi<D>() / interval<D>(static_cast<double>(q)));
+    dom.end_lo = rlo(ce);
+    dom.end_hi = rhi(ce);
+  }
+  Objective o = objective(pt.H, pt.T, pt.delay);
+  if (!certified_rational<D>(o.f, pt, digits, out, dom)) return false;
+  out.method = "certified: t_d = " + to_decimal(tau, 12) + " T made exact by w = e^{j wT/" + std::to_string(q) +
+               "} (objective rational in cos(wT/" + std::to_string(q) + "), degree " +
+               std::to_string(o.f.den().degree()) + "), Descartes root isolation, MPFR Newton, MPFI enclosure (" +
+               std::to_string(digits) + " digits)";
+  return true;
+}
+
 template <unsigned D>
 Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
   using I = interval<D>;
@@ -687,10 +762,13 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
     out.omega = enclosure_decimal(out.omega_lo, out.omega_hi, 17);
     return out;
   }
-  // interior or w = 0 poles of B are outside this path
+  if (certified_frac_exact<D>(pb, digits, 96, out)) return out;
+  // branch-and-bound (t_d/T with a large denominator): poles on the unit circle are outside it
   for (const auto& r : isolate_real_roots(o.B, rational(-1), rational(1)))
     if (!(r.is_exact() && r.lo == -1))
-      throw NumericalError("fractional delay with a pole of H on the unit circle other than z = -1 is not supported");
+      throw NumericalError("fractional delay t_d = " + to_decimal(tau, 12) + " T with a pole of H on the unit circle: "
+                           "decided exactly only when t_d/T has a denominator q with q (order + n + 1) <= 96; "
+                           "round t_d to such a fraction of T");
   const int dig = std::min(digits, 20);  // branch-and-bound: at most 20 digits
   const R tol = pow(R(10), -dig - 1);
   struct Box { R a, b; R ub; };
@@ -698,12 +776,13 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
   const R pimax = R(mpfloat<D>(upper(ipi<D>())));
   auto eval_box = [&](const R& a, const R& b) {
     R ub = R(mpfloat<D>(upper(frac_objective<D>(o, pb.T, tau, I(a, b)))));
+    if (isnan(ub)) ub = std::numeric_limits<R>::infinity();  // an undefined bound is no bound
     if (a > 0) {  // mean-value form, intersected with the natural one
       R m = (a + b) / 2;
       I X(a, b), Mi(m, m);
       I mv = frac_objective<D>(o, pb.T, tau, Mi) + frac_derivative<D>(o, pb.T, tau, X) * (X - Mi);
       R u2 = R(mpfloat<D>(upper(mv)));
-      if (u2 < ub) ub = u2;
+      if (!isnan(u2) && u2 < ub) ub = u2;
     }
     return ub;
   };
@@ -726,22 +805,26 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
   long evals = 0;
   const long budget = 200000;
   R maxub = best;
+  R unresolved = -std::numeric_limits<R>::infinity();  // upper bounds of boxes too narrow to split
   bool converged = false;
   while (evals < budget) {
     // drop dominated boxes, find the largest upper bound
     R thresh = best + tol * std::max(R(1), abs(best));
     std::vector<Box> keep;
-    maxub = best;
+    maxub = std::max(best, unresolved);
     for (auto& bx : work)
-      if (bx.ub > thresh) { keep.push_back(bx); maxub = std::max(maxub, bx.ub); }
-    if (keep.empty()) { converged = true; break; }
+      if (!(bx.ub <= thresh)) { keep.push_back(bx); maxub = std::max(maxub, bx.ub); }
+    if (keep.empty()) { converged = unresolved <= thresh; break; }
     std::sort(keep.begin(), keep.end(), [](const Box& x, const Box& y) { return x.ub > y.ub; });
     std::vector<Box> next;
     size_t nsplit = std::min<size_t>(keep.size(), 16);
     for (size_t i = 0; i < keep.size(); ++i) {
       if (i >= nsplit) { next.push_back(keep[i]); continue; }
       R mid = (keep[i].a + keep[i].b) / 2;
-      if (keep[i].b - keep[i].a < pow(R(10), -static_cast<int>(D) + 5)) continue;  // too narrow: give up on it
+      if (keep[i].b - keep[i].a < pow(R(10), -static_cast<int>(D) + 5)) {  // too narrow to split: its
+        unresolved = std::max(unresolved, keep[i].ub);                        // bound stays in the answer
+        continue;
+      }
       point(mid);
       next.push_back({keep[i].a, mid, eval_box(keep[i].a, mid)});
       next.push_back({mid, keep[i].b, eval_box(mid, keep[i].b)});
@@ -749,16 +832,25 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
     }
     work = std::move(next);
   }
+  if (!converged) {
+    if (!isfinite(maxub))
+      throw NumericalError("fractional delay t_d = " + to_decimal(tau, 12) + " T: the branch-and-bound found b* >= " +
+                           to_decimal(exact_rational(mpfloat<D>(best)) + pb.eta, 12) +
+                           " but could not bound it from above within its budget; round t_d to a fraction p/q of T "
+                           "with a small q (decided exactly)");
+  }
   rational lo = exact_rational(mpfloat<D>(best)) + pb.eta;
-  rational hi = exact_rational(mpfloat<D>(converged ? best + tol * std::max(R(1), abs(best)) : maxub)) + pb.eta;
+  const R thresh = best + tol * std::max(R(1), abs(best));  // every dropped box lies below it
+  rational hi = exact_rational(mpfloat<D>(converged ? thresh : std::max(maxub, thresh))) + pb.eta;
   out.lo = lo;
   out.hi = std::max(lo, hi);
-  out.status = converged ? Status::certified : Status::numeric;
+  // not converged: [best point value, largest remaining box bound] is still a proven enclosure
+  out.status = Status::certified;
   out.value = enclosure_decimal(out.lo, out.hi, dig);
   out.method = "certified: interval branch-and-bound over w (MPFI, " + std::to_string(D) +
                "-digit arithmetic, enclosure to " + std::to_string(dig) + " digits)";
   if (digits > dig) out.note = std::to_string(digits) + " digits asked; the branch-and-bound for a fractional delay stops at 20";
-  if (!converged) out.note = "branch-and-bound budget exhausted; enclosure is the last bracket";
+  if (!converged) out.note = "branch-and-bound budget exhausted: the enclosure is the proven bracket it reached";
   R w = best_at / mpfloat<D>(to_real<R>(pb.T));
   out.omega_lo = out.omega_hi = exact_rational(mpfloat<D>(w));
   out.omega = to_decimal(out.omega_lo, std::min(dig, 12));
