@@ -136,3 +136,54 @@ TEST(CmdBound, BatchAndExplain) {
   EXPECT_NE(e.out.find("(53)"), std::string::npos) << e.out;
   EXPECT_NE(e.out.find("agrees"), std::string::npos) << e.out;
 }
+
+TEST(CmdBound, DampingCheckNecessaryConditionAndExitCode) {
+  // b* = KT/2 + B = 12: b = 12.5 passes (exit 0), b = 11 fails (exit 1); at w* = pi/T the
+  // small-gain form (14) and its rewriting (15) give the same verdict as b > b*
+  const std::string wall = "bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --set K=20000 --set B=2 --json --damping ";
+  CliRun ok = run(wall + "12.5");
+  ASSERT_EQ(ok.code, 0) << ok.out;
+  auto j = nlohmann::json::parse(ok.out);
+  EXPECT_TRUE(j["damping"]["passive"].get<bool>());
+  EXPECT_TRUE(j["damping"]["eq14_holds"].get<bool>());
+  EXPECT_TRUE(j["damping"]["eq15_holds"].get<bool>());
+  EXPECT_NEAR(j["damping"]["eq15_rhs"].get<double>(), 12.0, 1e-12);
+  CliRun bad = run(wall + "11");
+  ASSERT_EQ(bad.code, 1) << bad.out;
+  auto k = nlohmann::json::parse(bad.out);
+  EXPECT_FALSE(k["damping"]["passive"].get<bool>());
+  EXPECT_FALSE(k["damping"]["eq14_holds"].get<bool>());
+  EXPECT_FALSE(k["damping"]["eq15_holds"].get<bool>());
+  // an integrator: no damping suffices
+  EXPECT_EQ(run("bound --H \"z/(z-1)\" --T 1 --damping 1000").code, 1);
+  EXPECT_EQ(run("bound --H \"1\" --T 1 --damping -1").code, 2);
+}
+
+TEST(CmdBound, ExplainSeesWholeSampleFractionalDelayAndDirichletConstants) {
+  // t_d = T is the integer delay n = 1: Tustin with n = 1, KT/2 + B + |KT - 2B| = 14.5 (once the
+  // matcher took it for the delay-free Tustin wall, -4.5, and printed DISAGREES)
+  CliRun t = run("bound --H \"K + 2*B/T*(z-1)/(z+1)\" --T 1/1000 --set K=1000 --set B=5 --frac-delay 1/1000 --json");
+  ASSERT_EQ(t.code, 0) << t.out;
+  auto j = nlohmann::json::parse(t.out);
+  EXPECT_EQ(j["bound"], "14.5");
+  EXPECT_EQ(j["closed_form"], "Tustin wall with delay n = 1");
+  EXPECT_EQ(j["closed_form_value"], "14.5");
+  // Dirichlet kernel (50): C and D to the digits asked, enclosing 0.21723362821122165740827932556...
+  CliRun d = run("bound --H \"(z-1)*(1+z^-1+z^-2+z^-3+z^-4+z^-5)\" --T 1 --allow-noncausal --json --digits 25");
+  ASSERT_EQ(d.code, 0) << d.out;
+  auto k = nlohmann::json::parse(d.out);
+  const R C("0.2172336282112216574082793255624707342");
+  EXPECT_LE(R(k["dirichlet_C"][0].get<std::string>()), C);
+  EXPECT_GE(R(k["dirichlet_C"][1].get<std::string>()), C);
+  EXPECT_LE(R(k["dirichlet_C"][1].get<std::string>()) - R(k["dirichlet_C"][0].get<std::string>()), R("1e-25"));
+  EXPECT_LE(abs(R(k["dirichlet_D"][0].get<std::string>()) - (1 - C) / 2), R("1e-25"));
+}
+
+TEST(CmdBound, BatchLineWithTwoExpressionsIsAnError) {
+  const std::string f = ::testing::TempDir() + "/two_exprs.txt";
+  std::ofstream(f) << "z/(z-0.5) --T 1 1/(z-0.25)\n1/(z-0.5) --T 1\n";
+  CliRun r = run("bound --batch " + f);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("unexpected '1/(z-0.25)'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"bound\":\"5\""), std::string::npos) << r.out;  // the next line still runs
+}

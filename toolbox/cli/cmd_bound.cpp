@@ -5,7 +5,8 @@
 //                 [--explain] [--json] [--curve FILE]
 //   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
 // JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
-// closed_form (name or null), plus method, where, closed_form_value.
+// closed_form (name or null), plus method, where, closed_form_value; dirichlet_C/_D (certified
+// enclosures) for (50); damping {b, passive, eq14_lhs, eq14_holds, eq15_rhs, eq15_holds} with --damping.
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -24,7 +25,7 @@ using namespace hapstab;
 using namespace hapstab::passivity;
 
 struct BoundOpts {
-  std::string H, T, frac, eta = "0", method = "certified", curve;
+  std::string H, T, frac, eta = "0", method = "certified", curve, damping;
   std::vector<std::string> sets;
   int delay = 0, digits = 30;
   long grid = 100000;
@@ -45,6 +46,9 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   app.add_option("--grid-points", o.grid, "N for --method grid")->capture_default_str();
   app.add_flag("--explain", o.explain, "name the closed form of Sec. VI/VII that applies and show it beside the result");
   app.add_flag("--allow-noncausal", o.allow_noncausal, "evaluate (45) for a non-causal H (FIR form (47) as written)");
+  app.add_option("--damping", o.damping,
+                 "device damping b to check: passive iff b > b* (exit 1 when not), with the necessary condition "
+                 "(14) <=> (15) evaluated at the maximiser");
   if (!batch_line) {
     app.add_flag("--json", o.json, "JSON output");
     app.add_option("--curve", o.curve, "write 'omega objective' samples (2001 points, 50 digits) to FILE");
@@ -57,10 +61,20 @@ std::string exact_or_outward(const rational& q, int digits, int dir) {
   return decimal_outward(q, digits, dir);
 }
 
+/// `--damping b`: the verdict b > b* and, at the maximiser w*, the small-gain condition (14)
+/// |rH/(2b + rH)| < 1 beside its rewriting (15) b > Re{-rH} (paper 001, Sec. III), for H z^-n.
+struct DampingCheck {
+  rational b;
+  bool passive = false;
+  std::optional<NecessaryCheck> at_max;  ///< when w* > 0, t_d = 0 and eta = 0
+};
+
 struct Outcome {
   Bound b;
   std::optional<catalogue::Match> cf;
   BoundProblem p;
+  std::optional<DampingCheck> damping;
+  std::optional<std::pair<Enclosure<rational>, Enclosure<rational>>> dirichlet;  ///< C, D of (50)
 };
 
 Outcome compute(const BoundOpts& o) {
@@ -92,6 +106,26 @@ Outcome compute(const BoundOpts& o) {
   else if (o.method != "certified") throw InputError("--method must be certified, fast or grid (got " + o.method + ")");
   r.b = bound(r.p, m, o.digits, o.grid);
   r.cf = catalogue::match(r.p);
+  if (r.cf && r.cf->equation.rfind("(50)", 0) == 0)
+    r.dirichlet = {catalogue::dirichlet_C(o.digits), catalogue::dirichlet_D(o.digits)};
+  if (!o.damping.empty()) {
+    DampingCheck d;
+    d.b = cli::option_rational(o.damping, "--damping");
+    if (d.b <= 0) throw InputError("--damping must be > 0 (got " + o.damping + ")");
+    if (r.b.status == Status::numeric && m != Method::certified)
+      throw InputError("--damping needs a proven b*: use --method certified (the default)");
+    d.passive = !r.b.infinite && d.b > r.b.hi;
+    if (!r.b.infinite && d.b > r.b.lo && d.b <= r.b.hi)
+      throw NumericalError("--damping " + o.damping + " lies inside the enclosure of b*; raise --digits");
+    const BoundProblem q = with_integer_delay(r.p);
+    if (!r.b.infinite && !q.frac_delay && q.eta == 0 && r.b.omega_lo > 0) {
+      std::vector<rational> zn(static_cast<size_t>(q.delay) + 1, rational(0));
+      zn.back() = 1;
+      RationalFunction<rational> Hn(q.H.num(), q.H.den() * Polynomial<rational>(std::move(zn)));  // H z^-n
+      d.at_max = necessary_condition(Hn, q.T, d.b, (r.b.omega_lo + r.b.omega_hi) / 2);
+    }
+    r.damping = d;
+  }
   return r;
 }
 
@@ -129,6 +163,22 @@ nlohmann::json to_json(const Outcome& r, int digits) {
     j["closed_form_equation"] = r.cf->equation;
   }
   if (!b.note.empty()) j["note"] = b.note;
+  if (r.dirichlet) {
+    j["dirichlet_C"] = {exact_or_outward(r.dirichlet->first.lo, digits + 3, -1), exact_or_outward(r.dirichlet->first.hi, digits + 3, +1)};
+    j["dirichlet_D"] = {exact_or_outward(r.dirichlet->second.lo, digits + 3, -1), exact_or_outward(r.dirichlet->second.hi, digits + 3, +1)};
+  }
+  if (r.damping) {
+    nlohmann::json d;
+    d["b"] = to_decimal(r.damping->b, 17);
+    d["passive"] = r.damping->passive;
+    if (const auto& c = r.damping->at_max) {
+      d["eq14_lhs"] = c->lhs14;
+      d["eq14_holds"] = c->holds14;
+      d["eq15_rhs"] = c->rhs15;
+      d["eq15_holds"] = c->holds15;
+    }
+    j["damping"] = d;
+  }
   return j;
 }
 
@@ -165,7 +215,22 @@ void print_human(const Outcome& r, const BoundOpts& o) {
       else if (r.cf->approx) agree = true;
       std::cout << "  generic: " << (b.infinite ? "+inf" : b.value) << " -> "
                 << (r.cf->approx ? "compare (approximation)" : (agree ? "agrees" : "DISAGREES")) << "\n";
+      if (r.dirichlet) {
+        const auto& [C, D] = *r.dirichlet;
+        std::cout << "  C = -min sin(y)/y = " << to_decimal((C.lo + C.hi) / 2, o.digits) << ", D = (1 - C)/2 = "
+                  << to_decimal((D.lo + D.hi) / 2, o.digits) << "   [certified, " << o.digits << " digits]\n";
+      }
     }
+  }
+  if (r.damping) {
+    const DampingCheck& d = *r.damping;
+    std::cout << "damping b = " << to_decimal(d.b, 17) << ": " << (d.passive ? "passive (b > b*)" : "NOT passive (b <= b*)")
+              << "\n";
+    if (d.at_max)
+      std::cout << "  at w* (paper 001, Sec. III): (14) |rH/(2b + rH)| = " << d.at_max->lhs14
+                << (d.at_max->holds14 ? " < 1" : " >= 1") << ";  (15) Re{-rH} = " << d.at_max->rhs15
+                << (d.at_max->holds15 ? " < b" : " >= b") << "  -> "
+                << (d.at_max->holds14 == d.at_max->holds15 ? "(14) and (15) agree" : "(14) and (15) DISAGREE") << "\n";
   }
 }
 
@@ -214,8 +279,11 @@ int run_batch(const std::string& file) {
       std::vector<std::string> args(toks.rbegin(), toks.rend());
       app.parse(args);
       auto extras = app.remaining();
-      if (o.H.empty() && !extras.empty()) o.H = extras.front();
-      else if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "'");
+      if (o.H.empty() && !extras.empty()) {
+        o.H = extras.front();
+        extras.erase(extras.begin());
+      }
+      if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "' (one expression per line)");
       Outcome r = compute(o);
       j = to_json(r, o.digits);
     } catch (const CLI::ParseError& e) {
@@ -259,7 +327,7 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                              }
                              if (o->json) cli::print_json(to_json(r, o->digits));
                              else print_human(r, *o);
-                             return cli::exit_ok;
+                             return r.damping && !r.damping->passive ? cli::exit_property_fails : cli::exit_ok;
                            };
                          }});
 

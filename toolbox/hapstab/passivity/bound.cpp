@@ -175,6 +175,14 @@ bool marginally_stable(const P& d, std::string* detail) {
   return true;
 }
 
+BoundProblem with_integer_delay(BoundProblem p) {
+  if (p.frac_delay && p.T > 0 && den(*p.frac_delay / p.T) == 1) {
+    p.delay += static_cast<int>(num(*p.frac_delay / p.T).convert_to<long>());
+    p.frac_delay.reset();
+  }
+  return p;
+}
+
 void check_assumptions(const BoundProblem& p) {
   if (p.T <= 0) throw InputError("T must be > 0 (got " + to_decimal(p.T, 17) + ")");
   if (p.delay < 0) throw InputError("the delay n must be >= 0 (got " + std::to_string(p.delay) + ")");
@@ -885,15 +893,7 @@ Bound bound_certified(const BoundProblem& p, int digits) {
   check_assumptions(p);
   if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
   if (auto inf = integrator_pole(p)) return *inf;
-  BoundProblem q = p;
-  // a fractional delay that is a multiple of T is an integer delay
-  if (q.frac_delay) {
-    rational tau = *q.frac_delay / q.T;
-    if (den(tau) == 1) {
-      q.delay += static_cast<int>(num(tau).convert_to<long>());
-      q.frac_delay.reset();
-    }
-  }
+  const BoundProblem q = with_integer_delay(p);
   Objective o = objective(q.H, q.T, q.delay);
   if (q.frac_delay) {
     if (digits <= 30) return certified_frac<50>(o, q, digits);
@@ -1027,8 +1027,8 @@ void roots_in(const std::vector<double>& c, double a, double b, std::vector<doub
 }  // namespace
 
 FastBound::FastBound(const BoundProblem& p) {
-  if (p.frac_delay && den(*p.frac_delay / p.T) != 1) { ok_ = false; return; }
-  int n = p.delay + (p.frac_delay ? static_cast<int>(num(*p.frac_delay / p.T).convert_to<long>()) : 0);
+  if (with_integer_delay(p).frac_delay) { ok_ = false; return; }
+  const int n = with_integer_delay(p).delay;
   T_ = to_real<double>(p.T);
   eta_ = to_real<double>(p.eta);
   // the c-form in double-double from double-double coefficients of N and D z^n

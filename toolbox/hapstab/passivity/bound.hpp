@@ -46,6 +46,10 @@ struct BoundProblem {
 /// pole at z = 1 makes b* = +inf (see bound_certified). Throws InputError naming the failed assumption.
 void check_assumptions(const BoundProblem& p);
 
+/// p with a fractional delay that is a whole multiple kT moved into the integer delay (n + k): the
+/// form every method and the closed-form matcher work on.
+BoundProblem with_integer_delay(BoundProblem p);
+
 /// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
 /// poles H may have. `detail` receives the reason when false.
 bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);

@@ -191,7 +191,8 @@ std::optional<std::vector<rational>> fir_coefficients(const RF& H, int n) {
 
 }  // namespace
 
-std::optional<Match> match(const BoundProblem& p) {
+std::optional<Match> match(const BoundProblem& raw) {
+  const BoundProblem p = with_integer_delay(raw);  // t_d = kT is the integer delay n + k
   const rational& T = p.T;
   const int n = p.delay;
   const rational eta = p.eta;
@@ -264,6 +265,12 @@ std::optional<Match> match(const BoundProblem& p) {
                          std::string(K * T >= 4 * B ? "KT/2 + B + (KT - 2B) (KT >= 4B)" : "KT/2 + B + K^2T^2/(8B) (KT < 4B)") +
                              " with K = " + dec(K) + ", B = " + dec(B),
                          delayed_wall_n1(K, B, T), std::nullopt, false, true});
+      }
+      if (n >= 2 && a.size() <= 2) {
+        rational K = a[0], B = a.size() > 1 ? a[1] : rational(0);
+        return with_eta({"virtual wall with delay n = " + std::to_string(n) + " (conservative)", "(53)",
+                         "(2n+1) KT/2 + B with K = " + dec(K) + ", B = " + dec(B) + " (upper bound)",
+                         delayed_wall_conservative(n, K, B, T), std::nullopt, false, false});
       }
     }
   }
