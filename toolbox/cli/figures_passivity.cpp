@@ -114,18 +114,24 @@ void bound_curve(const std::string& dir) {
 }
 
 void kb_region(const std::string& dir) {
-  // For device damping b = 1 N s/m and T = 1 ms: the largest K with b*(K, B, n) < b, for B in
-  // [0, 2] N s/m, delays n = 0..3, backward-difference wall K + B(z-1)/(Tz) and Tustin wall.
+  // For device damping b = 1 N s/m and T = 1 ms: the passive stiffnesses K (b*(K, B, n) < b), for B
+  // in [0, 2] N s/m, delays n = 0..3, backward-difference wall K + B(z-1)/(Tz) and Tustin wall.
+  // b*(K) = sup_w [K g(w) + h(w)] is convex in K (a supremum of affine functions), so the passive
+  // set is one interval [Kmin, Kmax): Kmin = 0 for the backward-difference walls, but not for the
+  // delayed Tustin walls (n = 1, B in (1/3, 1/2]: K in [2(3B - 1)/T, 2(1 + B)/(3T))).
   auto f = open_out(dir, "passivity_kb_region.dat");
-  const rational T(1, 1000), bdev(1);
-  f << "# (K, B) passivity regions: largest K [N/m] with b*(K,B,n) < b = 1 N s/m, T = 1 ms\n"
-    << "# columns: B[N s/m]  Kmax_bd(n=0) Kmax_bd(n=1) Kmax_bd(n=2) Kmax_bd(n=3)  Kmax_tu(n=0) ... Kmax_tu(n=3)\n";
-  for (int i = 0; i <= 40; ++i) {
-    rational B = rational(i, 20);
+  const double bdev = 1, Kcap = 1e6;
+  f << "# (K, B) passivity regions: passive K in [Kmin, Kmax) with b*(K,B,n) < b = 1 N s/m, T = 1 ms\n"
+    << "# columns: B[N s/m], then Kmin Kmax [N/m] for the backward-difference wall n = 0..3, then for the\n"
+    << "# Tustin wall n = 0..3 (NaN NaN: no passive K; Kmax = 1e6: the search cap)\n";
+  const rational T(1, 1000);
+  for (int i = 0; i <= 80; ++i) {
+    rational B = rational(i, 40);
     f << to_real<double>(B);
     for (int tustin = 0; tustin < 2; ++tustin)
       for (int n = 0; n <= 3; ++n) {
-        auto bstar = [&](const rational& K) {
+        auto bstar = [&](double Kd) {
+          const rational K = exact_rational(Kd);
           BoundProblem p;
           Polynomial<rational> z = Polynomial<rational>::monomial(1);
           Polynomial<rational> one(rational(1));
@@ -136,14 +142,38 @@ void kb_region(const std::string& dir) {
           Bound r = bound_certified(p, 10);
           return r.infinite ? 1e300 : r.value_double();
         };
-        double lo = 0, hi = 1e6;
-        if (bstar(rational(0)) >= 1.0) { f << " NaN"; continue; }
-        if (bstar(exact_rational(hi)) < 1.0) { f << " " << hi; continue; }
-        for (int it = 0; it < 40; ++it) {
-          double mid = 0.5 * (lo + hi);
-          if (bstar(exact_rational(mid)) < to_real<double>(bdev)) lo = mid; else hi = mid;
+        // a passive K: K = 0, else the minimiser of the convex b*(K) (golden section)
+        double Kin = 0;
+        if (bstar(0) >= bdev) {
+          double a = 0, c = Kcap;
+          const double g = 0.6180339887498949;
+          double x1 = c - g * (c - a), x2 = a + g * (c - a), f1 = bstar(x1), f2 = bstar(x2);
+          for (int it = 0; it < 50 && std::min(f1, f2) >= bdev; ++it) {
+            if (f1 < f2) { c = x2; x2 = x1; f2 = f1; x1 = c - g * (c - a); f1 = bstar(x1); }
+            else { a = x1; x1 = x2; f1 = f2; x2 = a + g * (c - a); f2 = bstar(x2); }
+          }
+          if (std::min(f1, f2) >= bdev) { f << " NaN NaN"; continue; }
+          Kin = f1 < f2 ? x1 : x2;
         }
-        f << " " << lo;
+        double Kmin = 0;
+        if (Kin > 0) {  // bisect the lower edge in [0, Kin]
+          double lo = 0, hi = Kin;
+          for (int it = 0; it < 40; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (bstar(mid) < bdev ? hi : lo) = mid;
+          }
+          Kmin = hi;
+        }
+        double Kmax = Kcap;
+        if (bstar(Kcap) >= bdev) {  // bisect the upper edge in [Kin, Kcap]
+          double lo = Kin, hi = Kcap;
+          for (int it = 0; it < 40; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (bstar(mid) < bdev ? lo : hi) = mid;
+          }
+          Kmax = lo;
+        }
+        f << " " << Kmin << " " << Kmax;
       }
     f << "\n";
   }
