@@ -15,8 +15,8 @@ set xzeroaxis ls 8
 set yzeroaxis ls 8
 ttl(i) = i==0 ? '(a) Z_O: Re {/Symbol \263} -{/Symbol h}' : i==1 ? '(b) Z_O + b' : i==2 ? '(c) R_1 = 1/(Z_O + b)' : i==3 ? '(d) r(j{/Symbol w}) R_1' : '(e) 2(b-{/Symbol h})/(Z_O+b) - 1'
 tttl(i) = i==0 ? '(a) $Z_O(j\omega)$' : i==1 ? '(b) $Z_O + b$' : i==2 ? '(c) $R_1 = 1/(Z_O+b)$' : i==3 ? '(d) $r(j\omega) R_1$' : '(e) unit disk'
-unitx(i) = i<=1 ? 'Re [N s/m]' : i==2 ? 'Re [m/(N s)]' : i==3 ? 'Re [10^{-3} m/(N s)]' : 'Re'
-unity(i) = i<=1 ? 'Im [N s/m]' : i==2 ? 'Im [m/(N s)]' : i==3 ? 'Im [10^{-3} m/(N s)]' : 'Im'
+unitx(i) = i<=1 ? 'Re [N s/m]' : i==2 ? 'Re [m/(N s)]' : i==3 ? 'Re [10^{-3} m/N]' : 'Re'
+unity(i) = i<=1 ? 'Im [N s/m]' : i==2 ? 'Im [m/(N s)]' : i==3 ? 'Im [10^{-3} m/N]' : 'Im'
 sc(i) = i==3 ? 1e3 : 1
 do for [i=0:4] {
   set title (tex ? tttl(i) : ttl(i))

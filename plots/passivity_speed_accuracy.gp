@@ -14,7 +14,7 @@ set xlabel (tex ? 'time per case [$\mu$s]' : 'time per case [{/Symbol m}s]')
 set ylabel 'relative error of b*'
 set yrange [1e-41:10]
 set key outside right top
-set title 'Passivity bound: speed vs accuracy (5 cases incl. pole radius 0.9999)'
+set title 'Passivity bound: speed vs accuracy (6 cases, pole radius up to 0.99999)'
 plot f using (strcol(3) eq 'fast' ? $1 : 1/0):2 with points ls 1 pt 7 ps 1.5 title 'fast (double-double)', \
      f using (strstrt(strcol(3),'certified_16') ? $1 : 1/0):2 with points ls 2 pt 5 ps 1.5 title 'certified, 16 digits', \
      f using (strstrt(strcol(3),'certified_30') ? $1 : 1/0):2 with points ls 3 pt 9 ps 1.5 title 'certified, 30 digits', \

@@ -186,7 +186,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
   check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", PM::certified, ok,
               std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0");
   check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B)",
-              PM::certified, ok1, "24 (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
+              PM::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
   // conservative bound (2n+1)KT/2 + B for n = 0..5 is an upper bound
   ok = true;
   for (int n = 0; n <= 5; ++n)
@@ -266,6 +266,24 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
               "K in {0, 1000, 10000}, B in {1/2, 5, 50}");
   check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive)",
               PM::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)");
+  // a fractional delay t_d = (p/q) T made exact (bound.cpp, certified_frac_exact): for H_1 z^-n,
+  // Re{T H_1 z^-n e^{-j w t_d}/(1 - z)} = -cos((n + 1 + t_d/T) wT), so b* = 1, attained at
+  // w = pi/((n + 1 + t_d/T) T) -- an interior maximiser at an irrational cos(wT/q) for most p/q
+  ok = true;
+  int fcount = 0;
+  for (int n = 0; n <= 2; ++n)
+    for (rational tau : {rational(1, 2), rational(1, 3), rational(2, 5), rational(3, 7), rational(5, 4), rational(9, 10)}) {
+      BoundProblem p = prob(Hm(1, T), T, n);
+      p.frac_delay = tau * T;
+      Bound b = bound_certified(p, 30);
+      const double w = M_PI / (to_real<double>((n + 1 + tau) * T));
+      ok = ok && agrees(b, rational(1)) && b.method.find("made exact") != std::string::npos &&
+           std::abs(to_real<double>((b.omega_lo + b.omega_hi) / 2) - w) <= 1e-12 * w;
+      ++fcount;
+    }
+  check.claim("001.eq45.fractional_exact", "(45), Example 3", "with t_d = (p/q) T the objective is rational in cos(wT/q): "
+              "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T)", PM::certified, ok,
+              std::to_string(fcount) + " cases, n = 0..2, t_d/T in {1/2, 1/3, 2/5, 3/7, 5/4, 9/10}");
   // eta (54) adds
   ok = true;
   for (rational eta : {rational(0), rational(1, 10), rational(7)}) {
