@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 
 #include "hapstab/lmi/ccl.hpp"
 
@@ -74,4 +75,33 @@ TEST(Ccl, UnstabilisableReportsFailure) {
   auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
   EXPECT_FALSE(res.success) << res.reason;
   EXPECT_FALSE(res.reason.empty());
+}
+
+// The same unstabilisable plant without the `accept` shortcut: only CCL's own stop rules
+// decide. tr(Y Q) = n would make Y = P^{-1}, i.e. a Lyapunov certificate for a closed loop that
+// keeps the eigenvalue 1.5, so the linearised objective cannot reach 2n = 4: the run must stop
+// on a stall, the iteration limit or a failed sub-problem, with the log showing the objective
+// above the target -- on every back-end.
+TEST(Ccl, UnstabilisableStallsAboveTarget) {
+  MatrixXd A(2, 2), B(2, 1), C(1, 2);
+  A << 1.5, 0, 0, 0.5;
+  B << 1, 1;
+  C << 0, 1;
+  for (Backend b : {Backend::automatic, Backend::dsdp, Backend::csdp}) {
+    Sof s = sof_program(A, B, C);
+    CclOptions o;
+    o.max_iter = 30;
+    o.solver.backend = b;
+    auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
+    EXPECT_FALSE(res.success) << to_string(b) << ": " << res.reason;
+    EXPECT_FALSE(res.reason.empty()) << to_string(b);
+    EXPECT_EQ(res.target, 4.0);
+    ASSERT_FALSE(res.log.empty()) << to_string(b) << ": " << res.reason;
+    EXPECT_LE(static_cast<int>(res.log.size()), o.max_iter);
+    // the last finite objective stays clearly above 2n (never within the success tolerance)
+    double last = NAN;
+    for (const auto& st : res.log)
+      if (std::isfinite(st.objective)) last = st.objective;
+    if (std::isfinite(last)) EXPECT_GT(last, 4.0 * (1 + o.tol)) << to_string(b) << ": " << res.reason;
+  }
 }

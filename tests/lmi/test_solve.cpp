@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <chrono>
+#include <cstdio>
 #include <random>
 
+#include "hapstab/lmi/ccl.hpp"
 #include "hapstab/lmi/certificate.hpp"
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -166,6 +169,138 @@ TEST(LmiSolve, ContradictoryBoundsInfeasibleBothBackends) {
     Result r = Solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
+  }
+}
+
+// min -x s.t. x >= 1 (as a 1x1 LMI, and as a linear inequality): unbounded below. DSDP
+// bounds |y| by 1e7 internally and used to stop there "converged" with objective -1e7.
+TEST(LmiSolve, UnboundedBelowAllBackends) {
+  for (bool as_lmi : {true, false})
+    for (Backend b : kBoth) {
+      Program prog;
+      auto x = prog.NewScalar("x");
+      if (as_lmi) prog.AddLmi("x >= 1", Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
+      else prog.AddLinearInequality("x >= 1", Expr(x), MatrixXd::Ones(1, 1));
+      prog.SetMinimize(-Expr(x));
+      Result r = Solve(prog, only(b));
+      EXPECT_EQ(r.status, SolveStatus::unbounded) << to_string(b) << " " << r.detail;
+      EXPECT_FALSE(r.is_success()) << to_string(b);
+      EXPECT_FALSE(r.certified()) << to_string(b);
+    }
+  // min -(y + z) s.t. [[y, 1], [1, z]] >= 0: unbounded along y = z -> inf. (Not [[1, y], [y, z]]
+  // with min -y: that one is only weakly unbounded -- no multiplier ray exists -- and CSDP
+  // stops with code 7.)
+  for (Backend b : kBoth) {
+    Program prog;
+    auto y = prog.NewScalar("y");
+    auto z = prog.NewScalar("z");
+    prog.AddLmi("[[y,1],[1,z]]", {{Expr(y), Expr::Scalar(1)}, {Expr(), Expr(z)}}, Strictness::nonstrict);
+    prog.SetMinimize(-Expr(y) - Expr(z));
+    Result r = Solve(prog, only(b));
+    EXPECT_EQ(r.status, SolveStatus::unbounded) << to_string(b) << " " << r.detail;
+  }
+}
+
+// CSDP's easy_sdp loops without end on the OSP-level LMI (Lemma 1) of (z^2 + 1)/(z^2 - 1/4),
+// whose zeros +-j lie on the unit circle (the strict LMI has no interior: the frequency
+// inequality is an equality at theta = pi/2 for every delta). The child is stopped at the
+// time limit, reported as numerical trouble, and its private folder is removed.
+TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
+  // (z^2 + 1)/(z^2 - 1/4) = 1 + (5/4)/(z^2 - 1/4), controllable canonical form
+  MatrixXd A = M2(0, 1, 0.25, 0), B(2, 1), C(1, 2), D(1, 1);
+  B << 0, 1;
+  C << 1.25, 0;
+  D << 1;
+  Program prog;
+  auto P = prog.NewSymmetric(2, "P");
+  auto d = prog.NewScalar("delta");
+  Expr Pe(P), de(d);
+  Expr M11 = A.transpose() * Pe * A - Pe + kron(MatrixXd(C.transpose() * C), de);
+  Expr M12 = A.transpose() * Pe * B - Expr(MatrixXd(0.5 * C.transpose())) + kron(MatrixXd(C.transpose() * D), de);
+  Expr M22 = B.transpose() * Pe * B - Expr(MatrixXd(D)) + kron(MatrixXd(D.transpose() * D), de);
+  prog.AddLmi("P > 0", Pe);
+  prog.AddLmi("Lemma 1 (2) < 0", -blocks({{M11, M12}, {Expr(), M22}}));
+  prog.SetMinimize(-de);
+  Options o = only(Backend::csdp);
+  o.scale = Scaling::never;
+  o.csdp_time_limit = 1.0;
+  auto count_dirs = [] {
+    int n = 0;
+    if (FILE* f = popen("ls -d /tmp/hapstab-csdp-* 2>/dev/null | wc -l", "r")) {
+      if (std::fscanf(f, "%d", &n) != 1) n = -1;
+      pclose(f);
+    }
+    return n;
+  };
+  const int before = count_dirs();
+  const auto t0 = std::chrono::steady_clock::now();
+  Result r = Solve(prog, o);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_FALSE(r.is_success());
+  EXPECT_FALSE(r.certified());
+  if (r.status == SolveStatus::numerical_trouble && r.detail.find("time limit") != std::string::npos) {
+    EXPECT_LT(secs, 5.0);  // 1 s limit plus the kill; a generous bound, not a benchmark
+  } else {
+    // a CSDP build that does not loop here must still not call this program feasible
+    EXPECT_NE(r.verdict, Feasibility::feasible) << r.detail;
+  }
+  EXPECT_EQ(count_dirs(), before);
+  EXPECT_THROW(
+      {
+        Options bad = o;
+        bad.csdp_time_limit = -1;
+        Solve(prog, bad);
+      },
+      InputError);
+}
+
+// The same random programs on DSDP and CSDP (no fallback): the verdicts must agree, and the
+// optimal values of the minimisation agree to the solvers' tolerance. Family: min tr(W P)
+// s.t. P >= 0, A'PA - P + I <= 0 (a Lyapunov bound, feasible iff rho(A) < 1, optimum =
+// tr(W X) with X the Lyapunov solution, W = I), A random 3x3 scaled to spectral radius
+// 0.6 (feasible) or 1.3 (infeasible). DSDP stops on short steps on some infeasible ones; its
+// multipliers then still hold a Farkas ray, which Solve checks (solve.cpp).
+TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
+  std::mt19937 g(2026);
+  std::normal_distribution<double> N(0, 1);
+  for (int trial = 0; trial < 12; ++trial) {
+    MatrixXd A(3, 3);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) A(i, j) = N(g);
+    const double rho = trial % 3 == 2 ? 1.3 : 0.6;
+    A *= rho / Eigen::EigenSolver<MatrixXd>(A, false).eigenvalues().cwiseAbs().maxCoeff();
+    // exact optimum: X = sum_k (A')^k A^k, the minimal solution of A'XA - X + I = 0
+    MatrixXd X = MatrixXd::Identity(3, 3), T = MatrixXd::Identity(3, 3);
+    for (int k = 0; k < 4000; ++k) {
+      T = A.transpose() * T * A;
+      X += T;
+    }
+    Program prog;
+    auto P = prog.NewSymmetric(3, "P");
+    prog.AddLmi("P >= 0", Expr(P), Strictness::nonstrict);
+    prog.AddLmi("A'PA - P + I <= 0", -(A.transpose() * Expr(P) * A - Expr(P) + Expr::Identity(3)), Strictness::nonstrict);
+    prog.SetMinimize(trace(Expr(P)));
+    Result rd = Solve(prog, only(Backend::dsdp)), rc = Solve(prog, only(Backend::csdp));
+    ASSERT_EQ(rd.verdict, rc.verdict) << "trial " << trial << ": DSDP " << rd.detail << " | CSDP " << rc.detail;
+    if (rho < 1) {
+      ASSERT_EQ(rd.verdict, Feasibility::feasible) << rd.detail;
+      // relative 1e-6: both solvers stop at relative gaps <= 1e-8..1e-9; the Lyapunov
+      // conditioning (|A| up to ~5 after scaling) costs at most two more digits.
+      // A solver that stopped early at a feasible point (status numerical_trouble, verdict
+      // feasible) gives an upper bound only.
+      for (const Result* r : {&rd, &rc}) {
+        if (r->status == SolveStatus::optimal) EXPECT_NEAR(r->objective, X.trace(), 1e-6 * X.trace()) << "trial " << trial;
+        else EXPECT_GE(r->objective, X.trace() * (1 - 1e-9)) << "trial " << trial << " " << r->detail;
+      }
+    } else {
+      // Every Farkas ray of this family is supported on A's unstable eigenvectors (a ray needs
+      // Z >= 0 with A Z A' >= Z), irrational for a random A: no rational certificate exists
+      // and numeric_only is the honest answer; never "none" or a feasible claim.
+      EXPECT_EQ(rd.verdict, Feasibility::infeasible) << rd.detail;
+      for (const Result* r : {&rd, &rc})
+        EXPECT_TRUE(r->certificate == Certificate::infeasible_exact || r->certificate == Certificate::numeric_only)
+            << r->detail;
+    }
   }
 }
 

@@ -110,9 +110,9 @@ std::array<double, 6> dimacs_errors(const StandardForm& sf, const Eigen::VectorX
 // ---------------------------------------------------------------------------------------------
 // DSDP: maximise b^T y s.t. C - sum A_i y_i >= 0, so its A_i are our -A_k. Data in packed
 // lower-triangular storage, element (i, j), i >= j, at i(i+1)/2 + j.
-BackendResult solve_dsdp(const StandardForm& sf) {
-  validate(sf);
-  std::lock_guard<std::mutex> lock(sdp_mutex());
+namespace {
+// One DSDP run; ybound > 0 replaces DSDP's default box |y_k| <= 1e7; *box: the box used.
+BackendResult dsdp_once(const StandardForm& sf, double ybound, double* box) {
   BackendResult r;
   // Every array DSDP sees lives until DSDPDestroy.
   std::vector<std::vector<int>> idx;
@@ -176,6 +176,7 @@ BackendResult solve_dsdp(const StandardForm& sf) {
   }
   check(DSDPSetGapTolerance(dsdp, 1e-9), "DSDPSetGapTolerance");
   check(DSDPSetMaxIts(dsdp, 300), "DSDPSetMaxIts");
+  if (ybound > 0) check(DSDPSetYBounds(dsdp, -ybound, ybound), "DSDPSetYBounds");
   check(DSDPSetup(dsdp), "DSDPSetup");
   int info = DSDPSolve(dsdp);
   DSDPTerminationReason reason = CONTINUE_ITERATING;
@@ -185,6 +186,8 @@ BackendResult solve_dsdp(const StandardForm& sf) {
   DSDPGetIts(dsdp, &r.iterations);
   r.y.resize(sf.m);
   DSDPGetY(dsdp, r.y.data(), sf.m);
+  double ylo = -INFINITY, yhi = INFINITY;
+  DSDPGetYBounds(dsdp, &ylo, &yhi);
   int xinfo = DSDPComputeX(dsdp);
   r.X.resize(static_cast<size_t>(J));
   for (int j = 0; j < J; ++j) {
@@ -217,6 +220,7 @@ BackendResult solve_dsdp(const StandardForm& sf) {
     r.status = SolveStatus::numerical_trouble;
   }
   r.dimacs = dimacs_errors(sf, r.y, r.X);
+  *box = std::min(-ylo, yhi);
   // DSDP often ends on "short steps" (-2) next to the optimum. Accept the point as optimal when
   // our own DIMACS measures say so (primal/dual infeasibility and relative gap <= 1e-6); the
   // exact certificate remains the judge of feasibility.
@@ -226,6 +230,38 @@ BackendResult solve_dsdp(const StandardForm& sf) {
     r.detail += " (short steps; accepted on DIMACS errors <= 1e-6)";
   }
   return r;
+}
+
+}  // namespace
+
+// DSDP keeps every y_k in a box (default |y_k| <= 1e7) and on an unbounded program stops
+// "converged" on it: min -x s.t. x >= 1 gave x = 1e7, optimal. A y on the box whose objective
+// is of the box's magnitude and where S(y) >= 0 holds is re-solved with the box at 1e10; the program is called unbounded
+// when the objective grows with the box (by 100x or more). A y on the box with a modest
+// objective is a normal solution of a program whose feasible set is unbounded (a homogeneous
+// Lyapunov LMI with the margin objective; badly scaled data as given).
+BackendResult solve_dsdp(const StandardForm& sf) {
+  validate(sf);
+  std::lock_guard<std::mutex> lock(sdp_mutex());
+  double box = 0;
+  BackendResult r = dsdp_once(sf, 0, &box);
+  auto on_box = [&](const BackendResult& q, double bx) {
+    const double obj = std::abs(sf.b.dot(q.y)), bmax = sf.b.cwiseAbs().maxCoeff();
+    // S(y) >= 0 at the box (DIMACS err4): an infeasible program also drifts to the box, but
+    // through points that violate the LMIs
+    return q.status != SolveStatus::infeasible && std::isfinite(bx) && q.y.allFinite() &&
+           q.y.cwiseAbs().maxCoeff() >= 0.5 * bx && obj >= 1e-3 * bx * bmax && q.dimacs[3] <= 1e-6;
+  };
+  if (!on_box(r, box)) return r;
+  BackendResult w = dsdp_once(sf, 1e10, &box);
+  if (w.dimacs[3] <= 1e-6 && std::abs(sf.b.dot(w.y)) >= 100 * std::abs(sf.b.dot(r.y))) {
+    w.status = SolveStatus::unbounded;
+    w.detail += "; the objective follows DSDP's variable box (b'y = " + std::to_string(sf.b.dot(r.y)) +
+                " at |y| <= 1e7, " + std::to_string(sf.b.dot(w.y)) + " at 1e10): unbounded";
+    return w;
+  }
+  w.detail = "y reached DSDP's box 1e7, re-solved with 1e10: " + w.detail;
+  return w;
 }
 
 }  // namespace hapstab::lmi

@@ -69,15 +69,17 @@ struct BackendResult {
 void validate(const StandardForm& sf);
 
 BackendResult solve_dsdp(const StandardForm& sf);
-BackendResult solve_csdp(const StandardForm& sf);
+/// CSDP in a forked child; the child is killed after `time_limit` seconds (easy_sdp can loop
+/// forever on some degenerate programs), which is reported as numerical_trouble.
+BackendResult solve_csdp(const StandardForm& sf, double time_limit = 30);
 /// The built-in dense primal-dual interior-point method (ipm.cpp): HKM direction, Mehrotra
 /// predictor-corrector, infeasible start. For small programs only (dense n^2 x m data per
 /// block); it has no infeasibility detection of its own (diverging iterates end in
 /// numerical_trouble), so Solve trusts it only through an exact certificate (solve.hpp).
 BackendResult solve_ipm(const StandardForm& sf);
 /// `automatic` is resolved by Solve (solve.hpp); here it means DSDP.
-inline BackendResult solve_standard(const StandardForm& sf, Backend b) {
-  return b == Backend::csdp ? solve_csdp(sf) : b == Backend::ipm ? solve_ipm(sf) : solve_dsdp(sf);
+inline BackendResult solve_standard(const StandardForm& sf, Backend b, double csdp_time_limit = 30) {
+  return b == Backend::csdp ? solve_csdp(sf, csdp_time_limit) : b == Backend::ipm ? solve_ipm(sf) : solve_dsdp(sf);
 }
 
 /// DIMACS errors of (y, X) for the standard form above (S from y).

@@ -5,14 +5,19 @@
 // 0 optimal, 1 primal infeasible (our LMI problem unbounded), 2 dual infeasible (our LMI
 // infeasible; X is a ray with tr(A_k X) = 0, tr(C' X) = 1), 3 partial success, 4+ failures.
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -38,9 +43,21 @@ bool write_all(int fd, const void* p, size_t n) {
   }
   return true;
 }
-bool read_all(int fd, void* p, size_t n) {
+// Reads n bytes, waiting at most until `deadline`; false on EOF, error or timeout (*timed_out).
+using Clock = std::chrono::steady_clock;
+bool read_all(int fd, void* p, size_t n, Clock::time_point deadline, bool* timed_out) {
   char* c = static_cast<char*>(p);
   while (n) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) {
+      *timed_out = true;
+      return false;
+    }
+    pollfd pfd{fd, POLLIN, 0};
+    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left, 1 << 30)));
+    if (pr < 0 && errno == EINTR) continue;
+    if (pr < 0) return false;
+    if (pr == 0) continue;  // re-check the deadline
     ssize_t r = ::read(fd, c, n);
     if (r < 0) {
       if (errno == EINTR) continue;
@@ -60,21 +77,15 @@ const char* kParams =
     "minstepfrac=0.90\nmaxstepfrac=0.97\nminstepp=1.0e-8\nminstepd=1.0e-8\nusexzgap=1\ntweakgap=0\n"
     "affine=0\nprintlevel=0\nperturbobj=1\nfastmode=0\n";
 
-// Runs in the child: builds CSDP's structures, solves, streams (code, pobj, dobj, y, X) to fd.
-[[noreturn]] void child(const StandardForm& sf, int fd) {
+// Runs in the child, in the private folder `dir` that holds our param.csdp: builds CSDP's
+// structures, solves, streams (code, pobj, dobj, y, X) to fd.
+[[noreturn]] void child(const StandardForm& sf, int fd, const char* dir) {
   int devnull = ::open("/dev/null", O_WRONLY);
   if (devnull >= 0) {
     ::dup2(devnull, STDOUT_FILENO);
     ::dup2(devnull, STDERR_FILENO);
   }
-  char dir[] = "/tmp/hapstab-csdp-XXXXXX";
-  if (!::mkdtemp(dir) || ::chdir(dir) != 0) ::_exit(90);
-  if (FILE* f = std::fopen("param.csdp", "w")) {
-    std::fputs(kParams, f);
-    std::fclose(f);
-  } else {
-    ::_exit(91);
-  }
+  if (::chdir(dir) != 0) ::_exit(90);
   const int J = static_cast<int>(sf.blocks.size());
   const int k = sf.m;
   struct blockmatrix C;
@@ -131,8 +142,6 @@ const char* kParams =
   double pobj = 0, dobj = 0;
   initsoln(n, k, C, a, constraints, &X, &y, &Z);
   int code = easy_sdp(n, k, C, a, constraints, 0.0, &X, &y, &Z, &pobj, &dobj);
-  ::unlink("param.csdp");
-  if (::chdir("/") == 0) ::rmdir(dir);
   bool ok = write_all(fd, &code, sizeof code) && write_all(fd, &pobj, sizeof pobj) && write_all(fd, &dobj, sizeof dobj);
   for (int i = 1; i <= k && ok; ++i) ok = write_all(fd, &y[i], sizeof(double));
   for (int j = 1; j <= J && ok; ++j) {
@@ -144,46 +153,75 @@ const char* kParams =
 
 }  // namespace
 
-BackendResult solve_csdp(const StandardForm& sf) {
+BackendResult solve_csdp(const StandardForm& sf, double time_limit) {
   validate(sf);
+  if (!(time_limit > 0)) throw InputError("CSDP: the time limit must be positive");
   std::lock_guard<std::mutex> lock(sdp_mutex());
+  // The parent owns the private folder, so it is removed even when the child is killed.
+  char dir[] = "/tmp/hapstab-csdp-XXXXXX";
+  if (!::mkdtemp(dir)) throw NumericalError("CSDP: cannot create a private folder in /tmp");
+  const std::string param = std::string(dir) + "/param.csdp";
+  auto cleanup = [&] {
+    ::unlink(param.c_str());
+    ::rmdir(dir);
+  };
+  if (FILE* f = std::fopen(param.c_str(), "w")) {
+    std::fputs(kParams, f);
+    std::fclose(f);
+  } else {
+    cleanup();
+    throw NumericalError("CSDP: cannot write " + param);
+  }
   int fds[2];
-  if (::pipe(fds) != 0) throw NumericalError("CSDP: cannot create a pipe");
+  if (::pipe(fds) != 0) {
+    cleanup();
+    throw NumericalError("CSDP: cannot create a pipe");
+  }
   std::fflush(stdout);
   std::fflush(stderr);
   pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
+    cleanup();
     throw NumericalError("CSDP: cannot fork the solver process");
   }
   if (pid == 0) {
     ::close(fds[0]);
-    child(sf, fds[1]);
+    child(sf, fds[1], dir);
   }
   ::close(fds[1]);
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit));
+  bool timed_out = false;
   BackendResult r;
   int code = -1;
   double pobj = 0, dobj = 0;
-  bool ok = read_all(fds[0], &code, sizeof code) && read_all(fds[0], &pobj, sizeof pobj) &&
-            read_all(fds[0], &dobj, sizeof dobj);
+  auto get = [&](void* p, size_t bytes) { return read_all(fds[0], p, bytes, deadline, &timed_out); };
+  bool ok = get(&code, sizeof code) && get(&pobj, sizeof pobj) && get(&dobj, sizeof dobj);
   r.y.resize(sf.m);
-  for (int i = 0; i < sf.m && ok; ++i) ok = read_all(fds[0], &r.y(i), sizeof(double));
+  for (int i = 0; i < sf.m && ok; ++i) ok = get(&r.y(i), sizeof(double));
   r.X.resize(sf.blocks.size());
   for (size_t j = 0; j < sf.blocks.size() && ok; ++j) {
     const auto s = sf.blocks[j].C.rows();
     r.X[j].resize(s, s);  // column-major, as CSDP's Fortran layout
-    ok = read_all(fds[0], r.X[j].data(), sizeof(double) * static_cast<size_t>(s * s));
+    ok = get(r.X[j].data(), sizeof(double) * static_cast<size_t>(s * s));
   }
   ::close(fds[0]);
+  // easy_sdp can loop without end (seen: the OSP-level LMI of (z^2+1)/(z^2-0.25), whose
+  // zeros lie on the unit circle): past the deadline the child is killed.
+  if (timed_out) ::kill(pid, SIGKILL);
   int wstatus = 0;
   while (::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
   }
+  cleanup();
   if (!ok || !WIFEXITED(wstatus) || WEXITSTATUS(wstatus) != 0) {
     r.status = SolveStatus::numerical_trouble;
-    r.detail = "CSDP process ended without a result (" +
-               (WIFEXITED(wstatus) ? "exit code " + std::to_string(WEXITSTATUS(wstatus))
-                                   : "signal " + std::to_string(WTERMSIG(wstatus))) + ")";
+    r.detail = timed_out ? "CSDP did not finish within its time limit of " +
+                               std::to_string(static_cast<int>(std::ceil(time_limit))) + " s and was stopped"
+                         : "CSDP process ended without a result (" +
+                               (WIFEXITED(wstatus) ? "exit code " + std::to_string(WEXITSTATUS(wstatus))
+                                                   : "signal " + std::to_string(WTERMSIG(wstatus))) +
+                               ")";
     r.y.setZero();
     for (size_t j = 0; j < sf.blocks.size(); ++j) r.X[j] = Eigen::MatrixXd::Zero(sf.blocks[j].C.rows(), sf.blocks[j].C.rows());
     r.dimacs.fill(NAN);

@@ -5,6 +5,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -44,6 +45,13 @@ MatQ Result::GetExactSolution(const MatrixVariable& v) const {
 }
 
 namespace {
+
+// A double for a message: 3 significant digits ("-2.1e-09", not to_string's "-0.000000").
+std::string g3(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
 
 struct Block {
   std::string name;
@@ -375,7 +383,8 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   }
 
   // ---- (4) back-end ----
-  BackendResult br = solve_standard(sf, opt.backend);
+  const double csdp_limit = opt.csdp_time_limit > 0 ? opt.csdp_time_limit : 5.0 + 0.02 * sf.m;
+  BackendResult br = solve_standard(sf, opt.backend, csdp_limit);
   res.status = br.status;
   res.detail = br.detail;
   res.dimacs = br.dimacs;
@@ -401,7 +410,7 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   // penalty method can stop "converged" on an infeasible problem.
   if (br.status == SolveStatus::optimal && !(br.dimacs[3] <= 1e-6)) {
     res.status = SolveStatus::numerical_trouble;
-    res.detail += "; the back-end's point violates the LMIs (DIMACS err4 = " + std::to_string(br.dimacs[3]) + ")";
+    res.detail += "; the back-end's point violates the LMIs (DIMACS err4 = " + g3(br.dimacs[3]) + ")";
   }
   // The point's own margin: smallest eigenvalue of the strict posed blocks at y (equilibrated,
   // without the t term and the strict_threshold shift). Solver tolerances (~1e-8) must not turn
@@ -423,15 +432,22 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
     if (!use_t && !(minimize && actual <= 0.5 * opt.strict_threshold)) res.verdict = Feasibility::feasible;
     else if (!use_t) {
       res.verdict = Feasibility::undecided;
-      res.detail += "; the strict LMIs hold only with margin " + std::to_string(actual) + " at the solver's point";
+      res.detail += "; the strict LMIs hold only with margin " + g3(actual) + " at the solver's point";
     } else if (std::min(res.margin, actual) > opt.strict_threshold) res.verdict = Feasibility::feasible;
     else if (res.margin < -opt.strict_threshold) res.verdict = Feasibility::infeasible;
     else {
       res.verdict = Feasibility::undecided;
       try_strict_farkas = true;
-      res.detail += "; margin " + std::to_string(res.margin) + " within +-" + std::to_string(opt.strict_threshold) +
+      res.detail += "; margin " + g3(res.margin) + " within +-" + g3(opt.strict_threshold) +
                     ": strictness not decided numerically";
     }
+  } else if (res.status == SolveStatus::numerical_trouble && br.y.allFinite() && br.dimacs[3] == 0.0 &&
+             (!any_strict || actual > opt.strict_threshold)) {
+    // Feasibility needs a feasible point, not optimality: DSDP stopping early (-9, short steps)
+    // at a point where every LMI holds has found one (seen on min tr P s.t. A'PA - P + I <= 0:
+    // relative gap 4e-5 left). The status stays numerical_trouble: the objective is not optimal.
+    res.verdict = Feasibility::feasible;
+    res.detail += "; the solver stopped early at a point where every LMI holds: feasible, objective not optimal";
   } else {
     res.verdict = Feasibility::undecided;
   }
@@ -492,8 +508,12 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
     return res;
   }
 
-  const bool dsdp_false_feasible = res.status == SolveStatus::numerical_trouble && br.status == SolveStatus::optimal;
-  if (res.verdict == Feasibility::infeasible || try_strict_farkas || dsdp_false_feasible) {
+  // A back-end in numerical trouble (DSDP's "optimal" point that violates the LMIs, its short
+  // steps on an infeasible program) may still hold a usable Farkas ray: the exact check below
+  // decides, so trying costs time only.
+  const bool trouble = res.status == SolveStatus::numerical_trouble && res.verdict == Feasibility::undecided &&
+                       ymap.size() <= 20;  // same cost bound as the strict check above
+  if (res.verdict == Feasibility::infeasible || try_strict_farkas || trouble) {
     // strict mode: Z != 0 on a strict block and sum tr(F_j0 Z_j) <= 0 proves that the STRICT
     // system has no solution (homogeneous LMIs such as Lyapunov's have margin exactly 0 when
     // infeasible); otherwise sum tr(F_j0 Z_j) < 0 proves that even F_j >= 0 is infeasible.
@@ -542,7 +562,8 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
     // (a Farkas ray usually lies on a face of the PSD cone: its tiny eigenvalues are noise that
     // the exact projection would turn negative), then shifted by delta I.
     struct Attempt { double drop, delta; };
-    for (Attempt at : {Attempt{0, 0}, Attempt{1e-7, 0}, Attempt{1e-5, 0}, Attempt{0, 1e-7}}) {
+    for (Attempt at : {Attempt{0, 0}, Attempt{1e-7, 0}, Attempt{1e-5, 0}, Attempt{0, 1e-7}, Attempt{1e-7, 1e-5},
+                       Attempt{1e-7, 1e-3}}) {
       std::vector<MatQ> Z(J);
       for (size_t j = 0; j < J; ++j) {
         Eigen::MatrixXd Zd = res.multipliers[j] / xscale;
@@ -615,6 +636,41 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
       return res;
     }
     res.detail += "; no rounding of the multipliers passed the exact Farkas check";
+    // A Farkas ray can be irrational (A'PA - P + I <= 0 with an unstable real eigenvalue of A:
+    // every ray is supported on its eigenvector), so no rational rounding passes. A back-end in
+    // trouble whose ray Z (scaled to max entry 1) is PSD to -1e-9 with sum tr(F_j0 Z_j) = obj < 0
+    // and residuals r_k = sum tr(F_jk Z_j) proves, in floating point, that no z with
+    // max |z_k| < R = |obj| / sum |r_k| is feasible (0 <= sum tr(F_j(z) Z_j) = obj + r'z).
+    // R >= 1e4 is called infeasible, numerically only (as a back-end's own "infeasible" is).
+    if (trouble && !strict_mode) {
+      Eigen::VectorXd rk = Eigen::VectorXd::Zero(K);
+      double obj = 0, min_eig = INFINITY;
+      for (size_t j = 0; j < J; ++j) {
+        Eigen::MatrixXd Zd = res.multipliers[j] / xscale;
+        Zd = 0.5 * (Zd + Zd.transpose());
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Zd, Eigen::EigenvaluesOnly);
+        min_eig = std::min(min_eig, es.eigenvalues()(0));
+        obj += red[j].G0.cwiseProduct(Zd).sum();
+        for (const auto& [k, m] : red[j].G) {
+          const int y = zmap[static_cast<size_t>(k)];
+          if (y < 0) continue;
+          for (int o = 0; o < m.outerSize(); ++o)
+            for (SpMat::InnerIterator it(m, o); it; ++it) rk(y) += it.value() * Zd(it.row(), it.col());
+        }
+      }
+      const double R = obj < 0 ? -obj / rk.cwiseAbs().sum() : 0;
+      const std::string what = "residual " + g3(rk.cwiseAbs().sum()) + ", min eig " + g3(min_eig) +
+                               ", sum tr(F_j0 Z_j) = " + g3(obj);
+      if (min_eig >= -1e-9 && obj <= -1e-6 && R >= 1e4) {
+        res.verdict = Feasibility::infeasible;
+        res.status = SolveStatus::infeasible;
+        res.certificate = Certificate::numeric_only;
+        res.detail += "; the back-end's Farkas ray holds in floating point (" + what + "): no solution with max |x| < " +
+                      g3(R) + ", infeasible numerically only";
+      } else {
+        res.detail += "; nor in floating point (" + what + ")";
+      }
+    }
   }
   return res;
 }
@@ -660,6 +716,8 @@ Result solve_with_fallback(const Program& prog, const Options& opt) {
 }  // namespace
 
 Result Solve(const Program& prog, const Options& opt) {
+  if (!(opt.csdp_time_limit >= 0) || !std::isfinite(opt.csdp_time_limit))
+    throw InputError("lmi options: csdp_time_limit must be a finite number of seconds >= 0 (0 = automatic)");
   if (opt.backend != Backend::automatic) return solve_with_fallback(prog, opt);
   Options o = opt;
   std::string note;

@@ -55,6 +55,11 @@ struct Options {
   /// (Result::solver and detail say so). Off in the back-end agreement tests.
   bool fallback = true;
   bool certify = true;             ///< run the exact checks
+  /// Seconds after which a CSDP call is stopped (reported as numerical trouble): CSDP's
+  /// easy_sdp can loop without end on degenerate programs. 0 = automatic, 5 s + 20 ms per
+  /// decision variable (CSDP needs 9 s for the 760-variable m = 32 bench program). DSDP and
+  /// the IPM stop on their iteration limits.
+  double csdp_time_limit = 0;
 };
 
 enum class Feasibility { feasible, infeasible, undecided };
