@@ -7,6 +7,7 @@
 #include "cli/cli_run.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -33,14 +34,39 @@ TEST(CmdPassivityLevel, TransferFunctionIspAndOsp) {
     ASSERT_EQ(r.code, 0) << r.out;
     auto j = nlohmann::json::parse(r.out);
     ASSERT_TRUE(j.contains("level") && j.contains("method") && j.contains("status") && j.contains("certified"));
-    // LMI level: within the strict threshold + solver tolerance (1e-5, see lmi tests).
-    EXPECT_NEAR(j["level"].get<double>(), 1.0 / 3.0, 1e-5) << r.out;
-    EXPECT_EQ(j["status"], "numeric");
+    // SISO: the certified frequency path is the main result, exact here (minimiser at theta =
+    // pi or 0, rational)
+    EXPECT_EQ(j["level"].get<double>(), 1.0 / 3.0) << r.out;
+    EXPECT_EQ(j["status"], "exact") << r.out;
     EXPECT_TRUE(j["certified"].get<bool>()) << r.out;
-    // the certified lower bound never exceeds the true level 1/3
-    EXPECT_LE(parse_rational(j["lower_bound"].get<std::string>()), rational(1, 3));
+    EXPECT_EQ(parse_rational(j["lower_bound"].get<std::string>()), parse_rational(j["upper_bound"].get<std::string>()));
+    EXPECT_EQ(j["value"], "0.33333333333333333");
+    // LMI level: within the strict threshold + solver tolerance (1e-5, see lmi tests); its
+    // certified lower bound never exceeds the true level 1/3
+    EXPECT_NEAR(j["lmi"]["level"].get<double>(), 1.0 / 3.0, 1e-5) << r.out;
+    EXPECT_TRUE(j["lmi"]["certified"].get<bool>()) << r.out;
+    EXPECT_LE(parse_rational(j["lmi"]["lower_bound"].get<std::string>()), rational(1, 3));
     EXPECT_NEAR(j["frequency"]["level"].get<double>(), 1.0 / 3.0, 1e-13);
   }
+}
+
+// Zeros +-j on the unit circle: Re(1/G) = 3/8 wherever G != 0, Re G >= 0 = Re G(j). The strict
+// Lemma 1 LMI has no solution (tight at theta = pi/2 for every delta); the certified path
+// gives both levels exactly. --backend ipm keeps the run short (CSDP loops on this LMI until
+// its time limit, tests/lmi/test_solve.cpp).
+TEST(CmdPassivityLevel, ZerosOnTheUnitCircleCertified) {
+  CliRun o = run("--H \"(z^2+1)/(z^2-1/4)\" --T 1/100 --kind osp --backend ipm --json");
+  ASSERT_EQ(o.code, 0) << o.out;
+  auto jo = nlohmann::json::parse(o.out);
+  EXPECT_EQ(jo["status"], "exact") << o.out;
+  EXPECT_EQ(jo["level"].get<double>(), 0.375);
+  EXPECT_EQ(jo["lmi"]["status"], "failed") << o.out;
+  CliRun i = run("--H \"(z^2+1)/(z^2-1/4)\" --T 1/100 --kind isp --json");
+  ASSERT_EQ(i.code, 0) << i.out;
+  auto ji = nlohmann::json::parse(i.out);
+  EXPECT_EQ(ji["level"].get<double>(), 0.0);
+  EXPECT_EQ(ji["value"], "0");
+  EXPECT_NEAR(ji["theta"].get<double>(), M_PI / 2, 1e-12);
 }
 
 TEST(CmdPassivityLevel, StateSpaceFileMimo) {
@@ -60,6 +86,10 @@ TEST(CmdPassivityLevel, BadInputExits2) {
   EXPECT_EQ(run("--H \"1/(z-0.5)\" --T 0.01 --kind xsp").code, 2);   // bad kind
   EXPECT_EQ(run("--ss /nonexistent/file.json").code, 2);
   EXPECT_EQ(run("--H \"z^2/(z-0.5)\" --T 0.01").code, 2);            // not causal
+  CliRun circle = run("--H \"1/(z-1)\" --T 0.01");                    // pole on the unit circle
+  EXPECT_EQ(circle.code, 2) << circle.out;
+  EXPECT_NE(circle.out.find("unit circle"), std::string::npos) << circle.out;
+  EXPECT_EQ(run("--H \"1/(z-0.5)\" --T 0.01 --digits 5").code, 2);
   std::string bad = write_tmp("pl_bad.json", R"({"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1, 2]], "T": 0.01})");
   CliRun r = run("--ss " + bad);
   EXPECT_EQ(r.code, 2) << r.out;

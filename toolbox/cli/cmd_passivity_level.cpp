@@ -1,5 +1,5 @@
 // `hapstab passivity-level (--H EXPR --T T [--set NAME=VALUE]... | --ss FILE) [--kind osp|isp]
-//   [--backend auto|dsdp|csdp|ipm] [--lemma 1|2] [--grid N] [--json]`
+//   [--backend auto|dsdp|csdp|ipm] [--lemma 1|2] [--grid N] [--digits D] [--json]`
 // OSP level delta or ISP level phi (scalar, Delta = delta I, Phi = phi I) of a discrete-time
 // system, paper 000 Definition 2, by the Lemma 1 (or Lemma 2) LMI with an exact certificate
 // of a lower bound, cross-checked by the frequency-domain computation (lmi/passivity_level.hpp).
@@ -8,13 +8,21 @@
 //   {"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"}
 // Entries may be numbers or strings with exact decimals/fractions ("1/3"); they are rounded
 // to double for the SDP (the certificate then holds for these doubles' exact values).
-// JSON output keys: level, method, status (numeric|failed), certified (a proven lower bound
-// exists), lower_bound (exact, decimal), kind, frequency {level, theta, status, note}, note.
-// Exit codes: 0 a level was computed, 2 bad input, 3 numerical failure (no method gave a level).
+// SISO systems also get the certified frequency-domain level (passivity_level_certified: an
+// enclosure of the level itself, exact when the minimiser is rational), which is then the main
+// result; MIMO systems report the LMI level (numeric, with an exactly certified lower bound).
+// JSON output keys: level, method, status (exact|certified|numeric|failed), certified,
+// lower_bound / upper_bound (decimal; the level lies between them when both are given),
+// value (the certified level to --digits), theta (minimiser), kind, lmi {level, method, status,
+// certified, lower_bound, note}, frequency {level, theta, status, note} (grid), note.
+// Exit codes: 0 a level was computed, 2 bad input (including a pole on or outside the unit
+// circle), 3 numerical failure (no method gave a level).
 #include <Eigen/Eigenvalues>
 #include <fstream>
 #include <iostream>
+#include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli/command.hpp"
@@ -30,7 +38,7 @@ namespace {
 struct Opts {
   std::string H, T, ss, kind = "osp", backend = "auto";
   std::vector<std::string> sets;
-  int lemma = 1, grid = 4096;
+  int lemma = 1, grid = 4096, digits = 17;
   bool json = false;
 };
 
@@ -83,13 +91,17 @@ StateSpace<double> read_ss(const std::string& file) {
   return s;
 }
 
+nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
 int run(const Opts& o) {
   if (o.kind != "osp" && o.kind != "isp") throw InputError("--kind: expected osp or isp, got '" + o.kind + "'");
   const auto backend = lmi::parse_backend(o.backend);
   if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
   if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
+  if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
   if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
   StateSpace<double> sys;
+  std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
   if (!o.ss.empty()) {
     if (!o.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
     sys = read_ss(o.ss);
@@ -100,73 +112,99 @@ int run(const Opts& o) {
     po.T = option_rational(o.T, "--T");
     if (!(po.T > 0)) throw InputError("--T: must be > 0");
     po.parameters = parse_sets(o.sets);
-    TransferFunction G = parse_tf(o.H, po);
-    if (!G.is_proper()) throw InputError("--H: the transfer function is not causal (deg num > deg den)");
-    sys = tf2ss(G).cast<double>();
+    TransferFunction tfG = parse_tf(o.H, po);
+    if (!tfG.is_proper()) throw InputError("--H: the transfer function is not causal (deg num > deg den)");
+    G = tfG.H;
+    sys = tf2ss(tfG).cast<double>();
     sys.T = po.T;
   }
-  if (sys.states() > 0) {  // the levels of Lemmas 1-2 are defined for stable systems
+  if (sys.states() > 0) {  // the levels of Lemmas 1-2 are defined for (Schur) stable systems
     const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(sys.A).eigenvalues();
     for (Eigen::Index i = 0; i < ev.size(); ++i)
-      if (std::abs(ev(i)) > 1 + 1e-9) {
+      if (std::abs(ev(i)) > 1 - 1e-9) {
         std::ostringstream os;
-        os << (o.ss.empty() ? "--H" : "--ss") << ": the system is unstable (pole at z = " << ev(i).real()
-           << (ev(i).imag() >= 0 ? " + " : " - ") << std::abs(ev(i).imag()) << "j, |z| = " << std::abs(ev(i))
-           << " > 1); passivity levels (Lemmas 1-2) need a stable system";
+        os << (o.ss.empty() ? "--H" : "--ss") << ": pole at z = " << ev(i).real() << (ev(i).imag() >= 0 ? " + " : " - ")
+           << std::abs(ev(i).imag()) << "j, |z| = " << std::abs(ev(i))
+           << (std::abs(ev(i)) > 1 + 1e-9 ? " > 1: the system is unstable" : ": on the unit circle (within 1e-9)")
+           << "; passivity levels (Lemmas 1-2) need a Schur-stable system";
         throw InputError(os.str());
       }
   }
   const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
-  lmi::PassivityLevel l;
-  if (sys.states() > 0) l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
-  else {
-    l.status = "failed";
-    l.note = "static gain: no state";
+  lmi::PassivityLevel l, f, c;
+  l.status = f.status = c.status = "failed";
+  if (sys.states() == 0) l.note = f.note = c.note = "static gain: no state";
+  if (sys.states() > 0) {
+    l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
+    f = lmi::passivity_level_freq(sys, kind, o.grid);
+    if (sys.inputs() == 1) c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
+    else c.note = "certified frequency path: SISO only";
   }
-  lmi::PassivityLevel f;
-  if (sys.states() > 0) f = lmi::passivity_level_freq(sys, kind, o.grid);
-  else {
-    f.status = "failed";
-  }
-  const bool lmi_ok = l.status != "failed";
-  const bool freq_ok = f.status != "failed";
-  const auto& main = lmi_ok ? l : f;
-  std::string note = lmi_ok ? l.note : "LMI: " + l.note;
-  if (lmi_ok && freq_ok && std::abs(l.level - f.level) > 1e-5 * std::max(1.0, std::abs(f.level)))
+  const bool lmi_ok = l.status != "failed", freq_ok = f.status != "failed", cert_ok = c.status != "failed";
+  // main result: the certified SISO level (an enclosure of the level itself), else the LMI
+  // (a numeric level with a certified lower bound), else the frequency grid (numeric)
+  const auto& main = cert_ok ? c : lmi_ok ? l : f;
+  std::string note = main.note;
+  if (!cert_ok && sys.inputs() == 1 && !c.note.empty()) note += (note.empty() ? "" : "; ") + std::string("certified path: ") + c.note;
+  if (!lmi_ok) note += (note.empty() ? "" : "; ") + std::string("LMI: ") + l.note;
+  const double ref = cert_ok ? c.level : f.level;
+  if (lmi_ok && (cert_ok || freq_ok) && std::isfinite(ref) && std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
     note += (note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
+  const bool any = cert_ok || lmi_ok || freq_ok;
   if (o.json) {
+    auto dec = [&](bool ok, const rational& q) { return ok ? nlohmann::json(to_decimal(q, 17)) : nlohmann::json(nullptr); };
     nlohmann::json j{{"kind", o.kind},
-                     {"level", (lmi_ok || freq_ok) ? nlohmann::json(main.level) : nlohmann::json(nullptr)},
+                     {"level", any ? (std::isfinite(main.level) ? nlohmann::json(main.level) : nlohmann::json(main.value))
+                                   : nlohmann::json(nullptr)},
                      {"method", main.method},
-                     {"status", (lmi_ok || freq_ok) ? "numeric" : "failed"},
-                     {"certified", lmi_ok && l.certified},
-                     {"lower_bound", (lmi_ok && l.certified) ? nlohmann::json(to_decimal(l.lower_bound, 17)) : nlohmann::json(nullptr)},
+                     {"status", any ? main.status : "failed"},
+                     {"certified", main.certified},
+                     {"lower_bound", dec(main.certified && std::isfinite(main.level), main.lower_bound)},
+                     {"upper_bound", dec(main.enclosure, main.upper_bound)},
+                     {"value", cert_ok ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
+                     {"lmi",
+                      {{"level", json_or_null(lmi_ok, l.level)},
+                       {"method", l.method},
+                       {"status", l.status},
+                       {"certified", l.certified},
+                       {"lower_bound", dec(l.certified, l.lower_bound)},
+                       {"note", l.note}}},
                      {"frequency",
-                      {{"level", freq_ok ? nlohmann::json(f.level) : nlohmann::json(nullptr)},
-                       {"theta", freq_ok ? nlohmann::json(f.theta_min) : nlohmann::json(nullptr)},
+                      {{"level", json_or_null(freq_ok, f.level)},
+                       {"theta", json_or_null(freq_ok, f.theta_min)},
                        {"status", freq_ok ? "numeric" : "failed"},
                        {"note", f.note}}},
+                     {"theta", json_or_null(cert_ok || freq_ok, cert_ok ? c.theta_min : f.theta_min)},
                      {"note", note}};
     print_json(j);
   } else {
     std::cout << o.kind << " level";
-    if (lmi_ok || freq_ok) {
+    if (cert_ok) {
+      std::cout << " = " << c.value << "   [" << c.status << ", " << c.method << "]\n";
+      if (c.enclosure && c.lower_bound != c.upper_bound)
+        std::cout << "  enclosure: [" << to_decimal(c.lower_bound, o.digits) << ", " << to_decimal(c.upper_bound, o.digits) << "]\n";
+      std::cout.precision(12);
+      std::cout << "  at theta = " << c.theta_min << " (omega = theta/T)\n";
+    } else if (lmi_ok || freq_ok) {
       std::cout.precision(12);
       std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
-      if (lmi_ok && l.certified)
-        std::cout << "  certified: " << o.kind << " level >= " << to_decimal(l.lower_bound, 17)
-                  << (l.lower_bound > 0 ? " > 0: the system is " + o.kind
-                                        : " (not positive: the system is not shown " + o.kind + ")")
-                  << "   [exact LDL^T check of the rounded LMI solution]\n";
-      if (freq_ok)
-        std::cout << "  frequency domain: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
     } else {
       std::cout << ": no method produced a level\n";
     }
+    std::cout.precision(12);
+    if (lmi_ok) {
+      std::cout << "  LMI: " << l.level << "   [numeric, " << l.method << "]\n";
+      if (l.certified)
+        std::cout << "  LMI certificate: " << o.kind << " level >= " << to_decimal(l.lower_bound, 17)
+                  << (l.lower_bound > 0 ? " > 0: the system is " + o.kind
+                                        : " (not positive: the system is not shown " + o.kind + ")")
+                  << "   [exact LDL^T check of the rounded LMI solution]\n";
+    }
+    if (freq_ok) std::cout << "  frequency grid: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
     if (!note.empty()) std::cout << "  note: " << note << "\n";
     if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";
   }
-  return (lmi_ok || freq_ok) ? exit_ok : exit_numerical;
+  return any ? exit_ok : exit_numerical;
 }
 
 const Register reg({"passivity-level",
@@ -182,8 +220,10 @@ const Register reg({"passivity-level",
                       app.add_option("--backend", o->backend, "auto (default: built-in IPM when exactly certified, else DSDP), dsdp, csdp or ipm");
                       app.add_option("--lemma", o->lemma, "1 (KYP LMI (2), default) or 2 (Schur form)");
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
+                      app.add_option("--digits", o->digits, "Digits of the certified SISO level (10..100, default 17)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
-                                                      "lower_bound, kind, frequency, note)");
+                                                      "lower_bound, upper_bound, value, theta, kind, lmi, "
+                                                      "frequency, note)");
                       return [o]() { return run(*o); };
                     }});
 

@@ -72,6 +72,8 @@ BackendResult solve_dsdp(const StandardForm& sf);
 /// CSDP in a forked child; the child is killed after `time_limit` seconds (easy_sdp can loop
 /// forever on some degenerate programs), which is reported as numerical_trouble.
 BackendResult solve_csdp(const StandardForm& sf, double time_limit = 30);
+/// The words BackendResult::detail starts with when CSDP was stopped at its time limit.
+inline constexpr const char* kCsdpTimedOut = "CSDP did not finish within its time limit";
 /// The built-in dense primal-dual interior-point method (ipm.cpp): HKM direction, Mehrotra
 /// predictor-corrector, infeasible start. For small programs only (dense n^2 x m data per
 /// block); it has no infeasibility detection of its own (diverging iterates end in

@@ -216,7 +216,7 @@ BackendResult solve_csdp(const StandardForm& sf, double time_limit) {
   cleanup();
   if (!ok || !WIFEXITED(wstatus) || WEXITSTATUS(wstatus) != 0) {
     r.status = SolveStatus::numerical_trouble;
-    r.detail = timed_out ? "CSDP did not finish within its time limit of " +
+    r.detail = timed_out ? std::string(kCsdpTimedOut) + " of " +
                                std::to_string(static_cast<int>(std::ceil(time_limit))) + " s and was stopped"
                          : "CSDP process ended without a result (" +
                                (WIFEXITED(wstatus) ? "exit code " + std::to_string(WEXITSTATUS(wstatus))

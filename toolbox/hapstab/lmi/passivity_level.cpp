@@ -9,6 +9,9 @@
 #include <complex>
 
 #include "hapstab/lmi/solve.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/passivity/bound.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::lmi {
@@ -293,6 +296,78 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
     out.note = "G vanishes on the whole grid: the OSP level is unbounded";
   }
   return out;
+}
+
+PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, PassivityKind kind, int digits) {
+  PassivityLevel out;
+  out.method = "frequency domain, certified: -b* of (z - 1)" + std::string(kind == PassivityKind::isp ? " G" : "/G") +
+               " at T = 1 (exact objective in cos theta, Descartes isolation, MPFI)";
+  out.status = "failed";
+  if (G.num().is_zero()) {
+    out.note = "G = 0";
+    return out;
+  }
+  std::string why;
+  if (!passivity::marginally_stable(G.den(), &why)) {
+    out.note = "G is not stable (" + why + ")";
+    return out;
+  }
+  // Schur stability: no pole on the circle either (marginally_stable allows simple ones). With
+  // no root outside the disk, d has a root on the circle iff it shares one with its reciprocal
+  // z^n d(1/z) (a root r with |r| < 1 would need 1/r, outside, as a root).
+  std::vector<rational> rc = G.den().coeffs();
+  std::reverse(rc.begin(), rc.end());
+  if (gcd(G.den(), Polynomial<rational>(rc)).degree() > 0) {
+    out.note = "G has a pole on the unit circle: its passivity levels are not defined (Lemma 1 needs a stable A)";
+    return out;
+  }
+  const RationalFunction<rational> W = kind == PassivityKind::isp ? G : RationalFunction<rational>(G.den(), G.num());
+  passivity::BoundProblem p;
+  p.H = RationalFunction<rational>(Polynomial<rational>({rational(-1), rational(1)})) * W;
+  p.T = 1;
+  p.allow_noncausal = true;
+  passivity::Bound b;
+  try {
+    b = passivity::bound_certified(p, digits);
+  } catch (const InputError& e) {
+    out.note = kind == PassivityKind::osp
+                   ? std::string("1/G does not meet the assumptions of the certified path (zeros of G outside the unit "
+                                 "circle, or repeated on it): ") + e.what()
+                   : std::string(e.what());
+    return out;
+  } catch (const NumericalError& e) {
+    out.note = e.what();
+    return out;
+  }
+  out.status = "certified";
+  out.certified = true;
+  out.enclosure = !b.infinite;
+  if (b.infinite) {
+    out.level = -INFINITY;
+    out.value = "-inf";
+    out.note = "Re W -> -inf at " + b.where;
+  } else {
+    out.lower_bound = -b.hi;
+    out.upper_bound = -b.lo;
+    out.level = -b.value_double() + 0.0;  // no -0
+    out.value = b.value.empty() || b.value == "0" ? b.value : (b.value[0] == '-' ? b.value.substr(1) : "-" + b.value);
+    if (b.status == Status::exact) out.status = "exact";
+  }
+  out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
+  out.method += ", maximiser: " + b.where;
+  return out;
+}
+
+PassivityLevel passivity_level_certified(const StateSpace<double>& sys, PassivityKind kind, int digits) {
+  check_system(sys);
+  if (sys.inputs() != 1) throw InputError("certified frequency level: SISO systems only (got " + std::to_string(sys.inputs()) + " inputs)");
+  StateSpace<rational> q;
+  q.A = sys.A.unaryExpr([](double v) { return exact_rational(v); });
+  q.B = sys.B.unaryExpr([](double v) { return exact_rational(v); });
+  q.C = sys.C.unaryExpr([](double v) { return exact_rational(v); });
+  q.D = sys.D.unaryExpr([](double v) { return exact_rational(v); });
+  q.T = sys.T;
+  return passivity_level_certified(ss2tf(q)(0, 0).H, kind, digits);
 }
 
 }  // namespace hapstab::lmi

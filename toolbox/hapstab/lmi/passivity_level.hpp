@@ -40,6 +40,7 @@
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/lti/state_space.hpp"
 #include "hapstab/numeric/scalar.hpp"
+#include "hapstab/poly/rational_function.hpp"
 
 namespace hapstab::lmi {
 
@@ -52,6 +53,9 @@ struct PassivityLevel {
   std::string status = "numeric";  ///< numeric | failed
   bool certified = false;       ///< true: lower_bound is proven exactly
   rational lower_bound;         ///< exact: the system is lower_bound-OSP/ISP (when certified)
+  rational upper_bound;         ///< certified frequency method: the level is in [lower_bound, upper_bound]
+  bool enclosure = false;       ///< true when [lower_bound, upper_bound] encloses the level itself
+  std::string value;            ///< certified frequency method: the level to `digits` digits ("-inf")
   double theta_min = -1;        ///< frequency methods: the minimising theta in [0, pi]
   std::string note;             ///< caveats, failure reasons
 };
@@ -67,6 +71,20 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
 /// Delta = delta I, Phi = phi I; returns the margin (> 0: feasible). Used by proofs/.
 double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo = false,
                     Backend backend = Backend::automatic);
+
+/// SISO, certified: phi* = min_theta Re G(e^{j theta}) (isp) or delta* = min_theta Re(1/G) (osp,
+/// where G != 0) as an exact enclosure. With W = G (isp) or 1/G (osp), -min Re W is the
+/// passivity bound (45) of H = (z - 1) W at T = 1, no delay: T H/(1 - z) = -W. So the certified
+/// path of passivity/bound.hpp applies unchanged -- the exact objective as a rational function
+/// of c = cos theta (the t = tan(theta/2) substitution without 1/t), Descartes isolation of its
+/// critical points, MPFI enclosure -- with `digits` correct digits. G must be Schur stable;
+/// osp needs 1/G without poles outside the unit circle (zeros of G in |z| <= 1, simple on it),
+/// otherwise status "failed" with the reason. A zero of G on the circle where Re G < 0 nearby
+/// gives delta* = -inf.
+PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, PassivityKind kind, int digits = 30);
+/// The same for a SISO state-space model, through its exact transfer function (the doubles'
+/// exact values, ss2tf).
+PassivityLevel passivity_level_certified(const StateSpace<double>& sys, PassivityKind kind, int digits = 30);
 
 /// lambda_min((G + G^*)/2) at theta (numeric, double).
 double isp_index_at(const StateSpace<double>& sys, double theta);

@@ -683,8 +683,11 @@ Result solve_scaled(const Program& prog, const Options& opt) {
     return r;
   }
   Result raw = solve_once(prog, opt, false);
-  if (raw.verdict != Feasibility::undecided && raw.status != SolveStatus::numerical_trouble &&
-      raw.certificate != Certificate::rounding_failed) {
+  // a CSDP run stopped at its time limit is not retried on equilibrated data (seen: both loop)
+  const bool timed_out = raw.detail.find(kCsdpTimedOut) != std::string::npos;
+  if (timed_out ||
+      (raw.verdict != Feasibility::undecided && raw.status != SolveStatus::numerical_trouble &&
+       raw.certificate != Certificate::rounding_failed)) {
     raw.detail += " [data as given]";
     return raw;
   }
@@ -728,7 +731,11 @@ Result Solve(const Program& prog, const Options& opt) {
     o.backend = Backend::ipm;
     if (o.scale == Scaling::automatic) o.scale = Scaling::never;
     Result r = solve_scaled(prog, o);
-    if (r.certificate == Certificate::feasible_exact || r.certificate == Certificate::infeasible_exact) return r;
+    // kept only when certified and finished (a certified point where the IPM stopped early has
+    // a non-optimal objective: DSDP then solves)
+    if ((r.certificate == Certificate::feasible_exact || r.certificate == Certificate::infeasible_exact) &&
+        r.status != SolveStatus::numerical_trouble)
+      return r;
     note = "hapstab IPM first: " + std::string(to_string(r.verdict)) + ", not certified (" + r.detail + "); ";
     o.scale = opt.scale;
   }
