@@ -69,6 +69,20 @@ TEST(CmdPassivityLevel, ZerosOnTheUnitCircleCertified) {
   EXPECT_NEAR(ji["theta"].get<double>(), M_PI / 2, 1e-12);
 }
 
+// G = 1/(z - 1/2): Re(1/G) = cos(theta) - 1/2 >= -3/2, but D = 0 makes (2)'s bottom-right
+// block B'PB > 0, so Lemma 1 holds for no delta: -3/2 is only an upper bound, never "the level".
+TEST(CmdPassivityLevel, NegativeOspFrequencyValueIsAnUpperBound) {
+  CliRun r = run("--H \"1/(z-1/2)\" --T 1/100 --kind osp --backend csdp --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "upper_bound") << r.out;
+  EXPECT_FALSE(j["certified"].get<bool>());
+  EXPECT_TRUE(j["lower_bound"].is_null());
+  EXPECT_EQ(parse_rational(j["upper_bound"].get<std::string>()), rational(-3, 2));
+  EXPECT_FALSE(j["certified_frequency"]["is_level"].get<bool>());
+  EXPECT_EQ(j["lmi"]["status"], "failed");
+}
+
 TEST(CmdPassivityLevel, StateSpaceFileMimo) {
   // blockdiag(1 + 1/(z - 1/2), 2 + 0.5/(z + 0.3)): ISP = min(1/3, 2 - 0.5/0.7) = 1/3.
   std::string f = write_tmp("pl_mimo.json",

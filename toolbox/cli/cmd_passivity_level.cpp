@@ -11,9 +11,11 @@
 // SISO systems also get the certified frequency-domain level (passivity_level_certified: an
 // enclosure of the level itself, exact when the minimiser is rational), which is then the main
 // result; MIMO systems report the LMI level (numeric, with an exactly certified lower bound).
-// JSON output keys: level, method, status (exact|certified|numeric|failed), certified,
+// JSON output keys: level, method, status (exact|certified|numeric|upper_bound|failed), certified,
 // lower_bound / upper_bound (decimal; the level lies between them when both are given),
-// value (the certified level to --digits), theta (minimiser), kind, lmi {level, method, status,
+// value (the certified level to --digits), theta (minimiser), kind, certified_frequency {level,
+// value, status, is_level, lower_bound, upper_bound, theta, note} (SISO; is_level false for an
+// OSP value <= 0, an upper bound on Lemma 1's level only), lmi {level, method, status,
 // certified, lower_bound, note}, frequency {level, theta, status, note} (grid), note.
 // Exit codes: 0 a level was computed, 2 bad input (including a pole on or outside the unit
 // circle), 3 numerical failure (no method gave a level).
@@ -141,12 +143,19 @@ int run(const Opts& o) {
     else c.note = "certified frequency path: SISO only";
   }
   const bool lmi_ok = l.status != "failed", freq_ok = f.status != "failed", cert_ok = c.status != "failed";
+  // The certified SISO value is the level of Definition 2 for ISP, and for OSP when delta* > 0
+  // (passivity_level.hpp); an OSP delta* <= 0 is an upper bound on Lemma 1's level only.
+  const bool cert_is_level = cert_ok && (kind == lmi::PassivityKind::isp || c.level > 0);
   // main result: the certified SISO level (an enclosure of the level itself), else the LMI
   // (a numeric level with a certified lower bound), else the frequency grid (numeric)
-  const auto& main = cert_ok ? c : lmi_ok ? l : f;
+  const auto& main = cert_is_level ? c : lmi_ok ? l : cert_ok ? c : f;
+  const bool only_bound = &main == &c && !cert_is_level;  // OSP delta* <= 0 and no LMI level
   std::string note = main.note;
-  if (!cert_ok && sys.inputs() == 1 && !c.note.empty()) note += (note.empty() ? "" : "; ") + std::string("certified path: ") + c.note;
-  if (!lmi_ok) note += (note.empty() ? "" : "; ") + std::string("LMI: ") + l.note;
+  auto add = [&](const std::string& what, const std::string& n) {
+    if (!n.empty() && &n != &main.note) note += (note.empty() ? "" : "; ") + what + n;
+  };
+  if (sys.inputs() == 1) add("certified frequency path: ", c.note);
+  if (!lmi_ok) add("LMI: ", l.note);
   const double ref = cert_ok ? c.level : f.level;
   if (lmi_ok && (cert_ok || freq_ok) && std::isfinite(ref) && std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
     note += (note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
@@ -157,11 +166,21 @@ int run(const Opts& o) {
                      {"level", any ? (std::isfinite(main.level) ? nlohmann::json(main.level) : nlohmann::json(main.value))
                                    : nlohmann::json(nullptr)},
                      {"method", main.method},
-                     {"status", any ? main.status : "failed"},
-                     {"certified", main.certified},
-                     {"lower_bound", dec(main.certified && std::isfinite(main.level), main.lower_bound)},
+                     {"status", !any ? "failed" : only_bound ? "upper_bound" : main.status},
+                     {"certified", main.certified && !only_bound},
+                     {"lower_bound", dec(main.certified && !only_bound && std::isfinite(main.level), main.lower_bound)},
                      {"upper_bound", dec(main.enclosure, main.upper_bound)},
-                     {"value", cert_ok ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
+                     {"value", &main == &c ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
+                     {"certified_frequency",
+                      {{"level", cert_ok ? (std::isfinite(c.level) ? nlohmann::json(c.level) : nlohmann::json(c.value))
+                                         : nlohmann::json(nullptr)},
+                       {"value", c.value},
+                       {"status", c.status},
+                       {"is_level", cert_is_level},
+                       {"lower_bound", dec(c.enclosure, c.lower_bound)},
+                       {"upper_bound", dec(c.enclosure, c.upper_bound)},
+                       {"theta", json_or_null(cert_ok, c.theta_min)},
+                       {"note", c.note}}},
                      {"lmi",
                       {{"level", json_or_null(lmi_ok, l.level)},
                        {"method", l.method},
@@ -179,13 +198,14 @@ int run(const Opts& o) {
     print_json(j);
   } else {
     std::cout << o.kind << " level";
-    if (cert_ok) {
-      std::cout << " = " << c.value << "   [" << c.status << ", " << c.method << "]\n";
+    if (&main == &c) {
+      std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << c.status << (only_bound ? " upper bound" : "")
+                << ", " << c.method << "]\n";
       if (c.enclosure && c.lower_bound != c.upper_bound)
         std::cout << "  enclosure: [" << to_decimal(c.lower_bound, o.digits) << ", " << to_decimal(c.upper_bound, o.digits) << "]\n";
       std::cout.precision(12);
       std::cout << "  at theta = " << c.theta_min << " (omega = theta/T)\n";
-    } else if (lmi_ok || freq_ok) {
+    } else if (any) {
       std::cout.precision(12);
       std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
     } else {
@@ -200,6 +220,9 @@ int run(const Opts& o) {
                                         : " (not positive: the system is not shown " + o.kind + ")")
                   << "   [exact LDL^T check of the rounded LMI solution]\n";
     }
+    if (cert_ok && &main != &c)
+      std::cout << "  certified frequency value: " << c.value << " at theta = " << c.theta_min << "   [" << c.status
+                << ", not the level: see note]\n";
     if (freq_ok) std::cout << "  frequency grid: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
     if (!note.empty()) std::cout << "  note: " << note << "\n";
     if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";

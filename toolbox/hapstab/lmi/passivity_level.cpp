@@ -354,6 +354,19 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
     if (b.status == Status::exact) out.status = "exact";
   }
   out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
+  if (kind == PassivityKind::osp) {
+    // zeros in |z| <= 1 here (else bound_certified refused 1/G), so a common root of the
+    // numerator and its reciprocal is a zero on the circle
+    std::vector<rational> rn = G.num().coeffs();
+    std::reverse(rn.begin(), rn.end());
+    if (G.num().degree() > 0 && gcd(G.num(), Polynomial<rational>(rn)).degree() > 0)
+      out.note = "G has a zero on the unit circle: delta* is the supremum of the non-strict levels; the strict "
+                 "inequality (1) holds for no delta (Lemma 1's strict LMI is infeasible)";
+    if (!(out.level > 0))
+      out.note += std::string(out.note.empty() ? "" : "; ") +
+                  "delta* <= 0: a frequency-domain index and an upper bound on Lemma 1's level only (Lemma 1 "
+                  "also needs P > 0, which the frequency inequality does not impose)";
+  }
   out.method += ", maximiser: " + b.where;
   return out;
 }

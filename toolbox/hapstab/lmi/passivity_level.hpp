@@ -80,7 +80,10 @@ double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, doub
 /// critical points, MPFI enclosure -- with `digits` correct digits. G must be Schur stable;
 /// osp needs 1/G without poles outside the unit circle (zeros of G in |z| <= 1, simple on it),
 /// otherwise status "failed" with the reason. A zero of G on the circle where Re G < 0 nearby
-/// gives delta* = -inf.
+/// gives delta* = -inf. The ISP value is Lemma 1's level (A^T P A - P < 0 forces P > 0). The OSP
+/// value is Lemma 1's level only when delta* > 0 and G has no zero on the circle: with a zero
+/// on it, delta* is the supremum of non-strict levels only; with delta* <= 0 it is an upper
+/// bound only (G = 1/(z - 1/2): delta* = -3/2, but (2) has no solution) -- `note` says which.
 PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, PassivityKind kind, int digits = 30);
 /// The same for a SISO state-space model, through its exact transfer function (the doubles'
 /// exact values, ss2tf).
