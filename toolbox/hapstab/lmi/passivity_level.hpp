@@ -5,7 +5,7 @@
 //  Lemma 1 (KYP, (2)): sup delta (resp. phi) s.t. P > 0 and
 //     [[A'PA - P + C'DeltaC,  A'PB - C'/2 + C'DeltaD], [.., B'PB - (D+D')/2 + D'DeltaD + Phi]] < 0.
 //  Lemma 2: Schur complement of (2) with Q = P^{-1}. The correct S has (D+D')/2 - Phi in its
-//     top-left block; the transcription's "+Phi" is a typo (proofs/lmi_lemma2.cpp: with +Phi
+//     top-left block; the transcription's "+Phi" is a typo (proofs/lmi_lemmas.cpp: with +Phi
 //     a non-ISP system passes as ISP). Posed as an LMI in (Q, mu = 1/delta) through a second
 //     Schur complement: Q > 0, S(Q, mu) - R Q R' > 0, R = [C/2; A; C]; needs Delta > 0, so the
 //     OSP level by Lemma 2 exists only when it is positive. The ISP form (Delta = 0) drops
@@ -19,20 +19,21 @@
 //     1e-12. lambda_min(theta) is continuous and piecewise analytic, so this finds the global
 //     minimum unless a narrower dip than the grid spacing exists (stated as the caveat).
 //
-// Comparison (see docs in proofs/lmi_kyp.cpp): python-control's ispassive() solves a KYP LMI
-// with cvxopt for a feasibility verdict only (no level, continuous-time by default); its
-// get_input_ff_index/get_output_fb_index (>= 0.9.4) bisect on that LMI and inherit cvxopt's
-// tolerances. MATLAB getPassiveIndex(G,'input'|'output') evaluates the frequency-domain
-// indices ("relative passivity index") on a frequency grid with refinement. Failure modes: a
-// zero of G on the unit circle makes G^*G singular there (OSP pencil degenerate: that
-// direction imposes no constraint, we skip it and report it); a pole on the circle makes the
-// frequency minimum -inf / undefined and the strict LMI infeasible; V(1) = 0 systems (paper
-// 000's V-hat, G-hat) have a frequency inequality that is an equality at theta = 0, so Lemma 1
-// with Phi = 0 holds only non-strictly (DESIGN.md) and the LMI margin there is noise.
+//     The SISO frequency levels are also certified (passivity_level_certified, below).
+//  Lemma 1 = frequency: for ISP always (A'PA - P < 0 forces P > 0); for OSP only when
+//     delta* > 0 and G has no zero on the unit circle. A zero on the circle makes the
+//     frequency inequality tight there for every delta (the strict LMI has no solution; the
+//     grid notes the degenerate pencil only when a sample hits the zero, e.g. at theta = 0 for
+//     paper 000's V-hat with V(1) = 0); delta* <= 0 is an upper bound on Lemma 1's level only.
 //
-// LMI results come with an exact certificate: the rounded (P, level_q) passes the exact
-// LDL^T check of Lemma 1's LMIs, proving that the system IS level_q-OSP/ISP (a certified lower
-// bound level_q <= sup). The reported `level` itself is numeric.
+// Comparison with python-control (solve_passivity_LMI: one non-strict cvxopt SDP that
+// maximises the index, discrete time from the system's dt, since 0.9.3) and MATLAB
+// (getPassiveIndex: frequency-domain indices, documented as invalid with zeros on the
+// stability boundary): docs/passivity-levels.md.
+//
+// LMI results, when the exact check passes (`certified`): the rounded (P, level_q) satisfies
+// the LMIs of the lemma used, exactly (LDL^T), proving that the system IS level_q-OSP/ISP (a
+// certified lower bound level_q <= sup). The reported `level` itself is numeric.
 #pragma once
 
 #include <string>
