@@ -3,24 +3,28 @@
 // IPM in the same run, and `auto` (Solve's default: the IPM, kept because certified).
 //
 // Problem (Theorem 5's structure, with a random stable m-input environment E of n states;
-// size benchmark: m = 2, n = 8 (blocks 10x10 and 4x4, 43 scalar variables), B, C entries
+// size benchmarks: m = 2, n = 8 (blocks 10x10 and 4x4, 43 scalar variables) and m = 4, n = 8
+// (blocks 12x12 and 8x8, 54 variables: Theorem5Size12), B, C entries
 // 0.3 N(0,1); scaling sweep m = 2..32: n = m/2 + 2 states (a Fig. 5-like environment has m + 2;
 // n = 2m, as before, makes P alone 2080 variables at m = 32, minutes per solve on reference
 // BLAS), B, C entries 0.6/sqrt(n) N(0,1) so that every size is strictly feasible:
 //   P > 0,  X in G(m; 1..1) > 0,  Q_V in BD(m; 1..1) > 0,  Q_E symmetric,
 //   [[A'PA - P, A'PB - C'X/2], [., B'PB - (XD + D'X)/2 - Q_E]] < 0,
-//   [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0,  X <= 10 I (bounded),
+//   [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0,  X <= 10 I, Q_V <= 10 I (bounded),
 // feasibility with the best margin. (The real Ê has an accumulator with eigenvalues at 1 and
 // needs facial_reduce; a stable E keeps the timing about the solver.)
 // Counters: vars, block (largest LMI size), feasible, certified (1/0), csdp_fallback (1/0),
-// bits (rounding that passed the exact check), min_eig (smallest eigenvalue of the LMIs at
-// the solution, original coordinates: the certification margin reached).
+// bits (rounding that passed the exact check), min_eig (smallest eigenvalue of the strict LMIs
+// at the solution, original coordinates: the certification margin reached).
 //
-//   bench_lmi --benchmark_format=json > lmi.json;  bench/chart-lmi lmi.json OUTDIR
+//   bench/chart-lmi OUTDIR  (runs bench_lmi and writes lmi_scaling.dat)
+// HAPSTAB_BENCH_DETAIL=1 prints each solve's solver and detail to stderr (why a point failed).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <random>
 
 #include "hapstab/lmi/solve.hpp"
@@ -35,7 +39,7 @@ struct Problem {
   int vars = 0, block = 0;
 };
 
-Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3) {
+Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3, bool cap_qv = false) {
   std::mt19937 g(seed);
   std::normal_distribution<double> N(0, 1);
   MatrixXd A(n, n), B(n, m), C(m, n), D(m, m);
@@ -58,6 +62,9 @@ Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3) {
   p.prog.AddLmi("X > 0", Xe);
   p.prog.AddLmi("X <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - Xe, Strictness::nonstrict);
   p.prog.AddLmi("Q_V > 0", QVe);
+  // scaling sweep: Q_V bounded too -- with only X capped, the m = 8 instance drifted along an
+  // unbounded Q_V (DSDP: indefinite Schur matrix; the IPM: 60 iterations without convergence)
+  if (cap_qv) p.prog.AddLmi("Q_V <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - QVe, Strictness::nonstrict);
   Expr M11 = A.transpose() * Pe * A - Pe;
   Expr M12 = A.transpose() * Pe * B - 0.5 * (C.transpose() * Xe);
   Expr M22 = B.transpose() * Pe * B - 0.5 * (Xe * D + D.transpose() * Xe) - QEe;
@@ -68,8 +75,8 @@ Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3) {
   return p;
 }
 
-void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc = 0.3) {
-  Problem p = theorem5_shape(m, n, 1234u + static_cast<unsigned>(m), bc);
+void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc = 0.3, bool cap_qv = false) {
+  Problem p = theorem5_shape(m, n, 1234u + static_cast<unsigned>(m), bc, cap_qv);
   Options o;
   o.backend = b;
   o.certify = certify;
@@ -78,6 +85,7 @@ void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc 
     r = Solve(p.prog, o);
     benchmark::DoNotOptimize(r.margin);
   }
+  if (getenv("HAPSTAB_BENCH_DETAIL")) fprintf(stderr, "%s: %s\n", r.solver.c_str(), r.detail.c_str());
   st.counters["vars"] = p.vars;
   st.counters["block"] = p.block;
   st.counters["m"] = m;
@@ -88,8 +96,11 @@ void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc 
   // 1 when DSDP stopped in trouble and Solve's CSDP fallback produced the result (the time is
   // then DSDP's attempts plus CSDP's; seen at m = 8: DSDP stop reason -8, indefinite Schur matrix)
   st.counters["csdp_fallback"] = r.solver.find("fallback") != std::string::npos;
+  // the certification margin: smallest eigenvalue over the STRICT LMIs at the solution
+  // (original coordinates); the non-strict caps X, Q_V <= 10 I may be active (eigenvalue 0)
   double me = INFINITY;
-  for (double e : r.min_eigenvalue) me = std::min(me, e);
+  for (size_t i = 0; i < r.min_eigenvalue.size(); ++i)
+    if (p.prog.lmis()[i].strictness == Strictness::strict) me = std::min(me, r.min_eigenvalue[i]);
   st.counters["min_eig"] = me;
   st.counters["err_max"] = std::max({std::abs(r.dimacs[0]), std::abs(r.dimacs[1]), std::abs(r.dimacs[3]),
                                      std::abs(r.dimacs[4]), std::abs(r.dimacs[5])});
@@ -107,6 +118,10 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("Theorem5Size/solve_certify/" + bn).c_str(),
                                  [b](benchmark::State& st) { run(st, b, 2, 8, true); })
         ->Unit(benchmark::kMillisecond);
+    // the upper size: blocks 12x12 (m = 4, n = 8; the second LMI of (16) is 8x8), 54 variables
+    benchmark::RegisterBenchmark(("Theorem5Size12/solve_certify/" + bn).c_str(),
+                                 [b](benchmark::State& st) { run(st, b, 4, 8, true); })
+        ->Unit(benchmark::kMillisecond);
     if (b == Backend::automatic) continue;  // without certify, automatic is DSDP
     benchmark::RegisterBenchmark(("Theorem5Size/solve_only/" + bn).c_str(),
                                  [b](benchmark::State& st) { run(st, b, 2, 8, false); })
@@ -117,7 +132,7 @@ int main(int argc, char** argv) {
     for (int m : {2, 4, 8, 16, 32}) {
       auto* bm = benchmark::RegisterBenchmark(("Scaling/" + bn + "/" + std::to_string(m)).c_str(), [b, m](benchmark::State& st) {
         const int n = m / 2 + 2;
-        run(st, b, m, n, true, 0.6 / std::sqrt(static_cast<double>(n)));
+        run(st, b, m, n, true, 0.6 / std::sqrt(static_cast<double>(n)), true);
       });
       bm->Unit(benchmark::kMillisecond);
       if (m >= 16) bm->Iterations(1);  // 0.2 s (m = 16) to 9 s (m = 32) per solve: one timed run

@@ -62,7 +62,7 @@ struct BackendResult {
   double primal_objective = 0;     ///< b^T y
   double dual_objective = 0;       ///< sum tr(C X)
   std::array<double, 6> dimacs{};  ///< DIMACS err1..err6 (computed by hapstab from y, X)
-  int iterations = 0;
+  int iterations = 0;              ///< -1: not reported (CSDP's easy_sdp does not return it)
 };
 
 /// Checks sizes, symmetry and finiteness; throws InputError (never reaches the C code).

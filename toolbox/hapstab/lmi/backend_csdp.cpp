@@ -194,6 +194,7 @@ BackendResult solve_csdp(const StandardForm& sf, double time_limit) {
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(time_limit));
   bool timed_out = false;
   BackendResult r;
+  r.iterations = -1;  // easy_sdp does not return its iteration count
   int code = -1;
   double pobj = 0, dobj = 0;
   auto get = [&](void* p, size_t bytes) { return read_all(fds[0], p, bytes, deadline, &timed_out); };

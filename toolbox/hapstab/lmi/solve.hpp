@@ -84,7 +84,7 @@ class Result {
   double margin = 0;               ///< t* (equilibrated), NaN when the program has no strict LMI
   double objective = 0;            ///< value of the linear objective (minimise) at x
   std::array<double, 6> dimacs{};  ///< DIMACS errors (equilibrated standard form)
-  int iterations = 0;
+  int iterations = 0;              ///< back-end iterations; -1 when not reported (CSDP)
   int rounding_bits = 0;           ///< bits of the dyadic rounding that passed (53 = exact double)
   std::vector<double> x;           ///< all scalar variables
   std::vector<rational> x_exact;   ///< the certified point (when certificate == feasible_exact)
