@@ -29,7 +29,8 @@ plot f index 0 using 2:4 with linespoints ls 1 title 'DSDP', \
      2 with lines ls 8 title '2 ms'
 set title '(b) certification margin reached'
 set ylabel 'min eigenvalue, strict LMIs'
-set key bottom left Left reverse
+set yrange [1e-3:100]
+set key top right
 plot f index 0 using 2:($5 == 1 ? $6 : 1/0) with linespoints ls 1 title 'DSDP', \
      f index 1 using 2:($5 == 1 ? $6 : 1/0) with linespoints ls 2 title 'CSDP', \
      f index 2 using 2:($5 == 1 ? $6 : 1/0) with linespoints ls 3 title 'built-in IPM', \

@@ -341,6 +341,35 @@ TEST(LmiModel, MalformedProgramsNameTheConstraint) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("rect"), std::string::npos);
   }
+  // A mismatch inside an expression built before the constraint (C++ evaluates it first) is
+  // reported by the constraint that receives it, with the block and the operation.
+  Expr bad_sum = Expr(P) + Expr(MatrixXd::Ones(3, 3));  // no throw here
+  EXPECT_FALSE(bad_sum.ok());
+  Expr chained = 2.0 * bad_sum.transpose() + Expr(P);  // the first error survives
+  try {
+    prog.AddLmi("(16) first", {{Expr(P), Expr(MatrixXd::Zero(2, 2))}, {Expr(), chained}});
+    FAIL() << "invalid block accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("(16) first"), std::string::npos) << m;
+    EXPECT_NE(m.find("block (2,2)"), std::string::npos) << m;
+    EXPECT_NE(m.find("cannot add a 2x2 and a 3x3"), std::string::npos) << m;
+  }
+  try {
+    prog.AddLinearInequality("L x >= 0", MatrixXd::Ones(1, 3) * Expr(P), MatrixXd::Zero(1, 2));
+    FAIL() << "bad product accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("L x >= 0"), std::string::npos) << m;
+    EXPECT_NE(m.find("cannot multiply a 1x3 constant by a 2x2 expression"), std::string::npos) << m;
+  }
+  try {
+    prog.SetMinimize(kron(MatrixXd::Ones(1, 1), Expr(P)));
+    FAIL() << "kron with a 2x2 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("objective"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(bad_sum.value({0, 0, 0, 0}), InputError);
   prog.AddLmi("ok", Expr(P));
   EXPECT_THROW(prog.AddLmi("ok", Expr(P)), InputError);  // duplicate name
   EXPECT_THROW(prog.AddLmi("nan", Expr(MatrixXd::Constant(1, 1, NAN)) + Expr(x)), InputError);

@@ -8,6 +8,7 @@
 namespace hapstab::lmi {
 
 Expr trace(const Expr& E) {
+  if (!E.ok()) return E;  // the constraint that receives it names the error
   if (E.rows() != E.cols()) throw InputError("trace: expression is not square");
   Expr t = Expr::Scalar(0);
   for (int i = 0; i < E.rows(); ++i) {

@@ -44,7 +44,15 @@ Expr Expr::Zero(int rows, int cols) { return Expr(MatrixXd::Zero(rows, cols)); }
 Expr Expr::Identity(int n) { return Expr(MatrixXd::Identity(n, n)); }
 Expr Expr::Scalar(double c) { return Expr(MatrixXd::Constant(1, 1, c)); }
 
+Expr Expr::invalid(std::string why) {
+  Expr e;
+  e.rows_ = e.cols_ = -1;
+  e.error_ = std::move(why);
+  return e;
+}
+
 Expr Expr::transpose() const {
+  if (!ok()) return *this;
   Expr t;
   t.rows_ = cols_;
   t.cols_ = rows_;
@@ -55,6 +63,7 @@ Expr Expr::transpose() const {
 Expr transpose(const Expr& e) { return e.transpose(); }
 
 MatrixXd Expr::value(const std::vector<double>& x) const {
+  if (!ok()) throw InputError("lmi expression: " + error_);
   MatrixXd v = c0_;
   for (const auto& [k, m] : terms_) {
     const double xk = x.at(static_cast<size_t>(k));
@@ -65,11 +74,12 @@ MatrixXd Expr::value(const std::vector<double>& x) const {
 }
 
 Expr& Expr::operator+=(const Expr& o) {
+  if (!ok()) return *this;
+  if (!o.ok()) return *this = o;
   if (o.empty()) return *this;
   if (empty()) return *this = o;
   if (rows_ != o.rows_ || cols_ != o.cols_)
-    throw InputError("lmi expression: cannot add a " + dims(rows_, cols_) + " and a " + dims(o.rows_, o.cols_) +
-                     " matrix");
+    return *this = invalid("cannot add a " + dims(rows_, cols_) + " and a " + dims(o.rows_, o.cols_) + " matrix");
   c0_ += o.c0_;
   for (const auto& [k, m] : o.terms_) {
     auto it = terms_.find(k);
@@ -80,12 +90,14 @@ Expr& Expr::operator+=(const Expr& o) {
 }
 Expr& Expr::operator-=(const Expr& o) { return *this += -o; }
 Expr Expr::scaled(Expr a, double s) {
+  if (!a.ok()) return a;
   a.c0_ *= s;
   for (auto& [k, m] : a.terms_) m *= s;
   return a;
 }
 Expr Expr::scalar_times(const MatrixXd& M, const Expr& s) {
-  if (s.rows_ != 1 || s.cols_ != 1) throw InputError("lmi expression: kron(M, s) needs a 1x1 s");
+  if (!s.ok()) return s;
+  if (s.rows_ != 1 || s.cols_ != 1) return invalid("kron(M, s) needs a 1x1 s, got " + dims(s.rows_, s.cols_));
   Expr r;
   r.rows_ = static_cast<int>(M.rows());
   r.cols_ = static_cast<int>(M.cols());
@@ -95,9 +107,10 @@ Expr Expr::scalar_times(const MatrixXd& M, const Expr& s) {
 }
 
 Expr Expr::left(const MatrixXd& L, const Expr& a) {
+  if (!a.ok()) return a;
   if (L.cols() != a.rows_)
-    throw InputError("lmi expression: cannot multiply a " + dims(static_cast<int>(L.rows()), static_cast<int>(L.cols())) +
-                     " constant by a " + dims(a.rows_, a.cols_) + " expression");
+    return invalid("cannot multiply a " + dims(static_cast<int>(L.rows()), static_cast<int>(L.cols())) +
+                   " constant by a " + dims(a.rows_, a.cols_) + " expression");
   Expr r;
   r.rows_ = static_cast<int>(L.rows());
   r.cols_ = a.cols_;
@@ -106,9 +119,10 @@ Expr Expr::left(const MatrixXd& L, const Expr& a) {
   return r;
 }
 Expr Expr::right(const Expr& a, const MatrixXd& R) {
+  if (!a.ok()) return a;
   if (a.cols_ != R.rows())
-    throw InputError("lmi expression: cannot multiply a " + dims(a.rows_, a.cols_) + " expression by a " +
-                     dims(static_cast<int>(R.rows()), static_cast<int>(R.cols())) + " constant");
+    return invalid("cannot multiply a " + dims(a.rows_, a.cols_) + " expression by a " +
+                   dims(static_cast<int>(R.rows()), static_cast<int>(R.cols())) + " constant");
   Expr r;
   r.rows_ = a.rows_;
   r.cols_ = static_cast<int>(R.cols());
@@ -119,12 +133,12 @@ Expr Expr::right(const Expr& a, const MatrixXd& R) {
 
 Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
   const size_t R = b.size();
-  if (R == 0) throw InputError(where + ": empty block list");
+  if (R == 0) return Expr::invalid(where + ": empty block list");
   const size_t C = b[0].size();
   for (size_t i = 0; i < R; ++i)
     if (b[i].size() != C)
-      throw InputError(where + ": block row " + std::to_string(i + 1) + " has " + std::to_string(b[i].size()) +
-                       " blocks, row 1 has " + std::to_string(C));
+      return Expr::invalid(where + ": block row " + std::to_string(i + 1) + " has " + std::to_string(b[i].size()) +
+                           " blocks, row 1 has " + std::to_string(C));
   const bool square = R == C;
   auto given = [&](size_t i, size_t j) -> const Expr* {
     if (!b[i][j].empty()) return &b[i][j];
@@ -133,12 +147,15 @@ Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
   // Row heights and column widths from the given blocks (mirrors count for the lower part).
   std::vector<int> h(R, -1), w(C, -1);
   auto name = [&](size_t i, size_t j) { return "block (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ")"; };
+  for (size_t i = 0; i < R; ++i)
+    for (size_t j = 0; j < C; ++j)
+      if (!b[i][j].ok()) return Expr::invalid(where + ": " + name(i, j) + ": " + b[i][j].error());
+  std::string bad;  // the first mismatch
   auto setdim = [&](std::vector<int>& v, size_t idx, int d, size_t i, size_t j, const char* what) {
     if (v[idx] < 0) v[idx] = d;
-    else if (v[idx] != d)
-      throw InputError(where + ": " + name(i, j) + " has " + std::to_string(d) + " " + what + ", but block " +
-                       (std::string(what) == "rows" ? "row " : "column ") + std::to_string(idx + 1) + " has " +
-                       std::to_string(v[idx]));
+    else if (v[idx] != d && bad.empty())
+      bad = where + ": " + name(i, j) + " has " + std::to_string(d) + " " + what + ", but block " +
+            (std::string(what) == "rows" ? "row " : "column ") + std::to_string(idx + 1) + " has " + std::to_string(v[idx]);
   };
   for (size_t i = 0; i < R; ++i)
     for (size_t j = 0; j < C; ++j)
@@ -153,10 +170,11 @@ Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
           setdim(h, i, given(j, i)->cols(), i, j, "rows");
           setdim(w, j, given(j, i)->rows(), i, j, "columns");
         }
+  if (!bad.empty()) return Expr::invalid(bad);
   for (size_t i = 0; i < R; ++i)
-    if (h[i] < 0) throw InputError(where + ": the height of block row " + std::to_string(i + 1) + " is not determined");
+    if (h[i] < 0) return Expr::invalid(where + ": the height of block row " + std::to_string(i + 1) + " is not determined");
   for (size_t j = 0; j < C; ++j)
-    if (w[j] < 0) throw InputError(where + ": the width of block column " + std::to_string(j + 1) + " is not determined");
+    if (w[j] < 0) return Expr::invalid(where + ": the width of block column " + std::to_string(j + 1) + " is not determined");
   Expr out;
   out.rows_ = 0;
   for (int x : h) out.rows_ += x;
@@ -310,6 +328,7 @@ void check_vars(const Expr& F, int nvars, const std::string& where) {
 int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
   check_name(name);
   const std::string where = "constraint '" + name + "'";
+  if (!F.ok()) throw InputError(where + ": " + F.error());
   if (F.empty()) throw InputError(where + ": empty matrix");
   if (F.rows() != F.cols()) throw InputError(where + ": the matrix is " + dims(F.rows(), F.cols()) + ", not square");
   check_vars(F, num_scalars(), where);
@@ -336,12 +355,13 @@ int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
 
 int Program::AddLmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s) {
   check_name(name);
-  return AddLmi(name, blocks(b, "constraint '" + name + "'"), s);
+  return AddLmi(name, blocks(b), s);
 }
 
 void Program::AddLinearEquality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
   check_name(name);
   const std::string where = "constraint '" + name + "'";
+  if (!lhs.ok()) throw InputError(where + ": " + lhs.error());
   if (lhs.empty() || lhs.rows() != rhs.rows() || lhs.cols() != rhs.cols())
     throw InputError(where + ": left side is " + dims(lhs.rows(), lhs.cols()) + ", right side is " +
                      dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
@@ -353,6 +373,7 @@ void Program::AddLinearEquality(const std::string& name, const Expr& lhs, const 
 void Program::AddLinearInequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
   check_name(name);
   const std::string where = "constraint '" + name + "'";
+  if (!lhs.ok()) throw InputError(where + ": " + lhs.error());
   if (lhs.empty() || lhs.rows() != rhs.rows() || lhs.cols() != rhs.cols())
     throw InputError(where + ": left side is " + dims(lhs.rows(), lhs.cols()) + ", right side is " +
                      dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
@@ -369,6 +390,7 @@ void Program::SetMarginObjective(double cap) {
 }
 
 void Program::SetMinimize(const Expr& c) {
+  if (!c.ok()) throw InputError("objective: " + c.error());
   if (c.rows() != 1 || c.cols() != 1) throw InputError("objective: must be a 1x1 expression");
   check_vars(c, num_scalars(), "objective");
   objective_ = ObjectiveKind::minimize;

@@ -40,6 +40,12 @@ struct MatrixVariable {
 };
 
 /// An affine matrix expression F0 + sum_k x_k F_k (F_k sparse).
+///
+/// A dimension mismatch in an operation does not throw where it happens (a C++ expression has
+/// no name there): the result is an invalid Expr carrying the message (`ok()` false, the
+/// first error wins through later operations), and the constraint or objective that receives
+/// it throws InputError naming itself, the block (for blocks()) and the operation, e.g.
+///   constraint '(16) first': block matrix: block (1,2): cannot add a 2x3 and a 2x2 matrix.
 class Expr {
  public:
   Expr() = default;  ///< the empty expression: "unspecified" in a block list (see blocks())
@@ -52,6 +58,8 @@ class Expr {
   int rows() const { return rows_; }
   int cols() const { return cols_; }
   bool empty() const { return rows_ == 0 && cols_ == 0; }
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }  ///< why the expression is invalid
   const MatrixXd& constant() const { return c0_; }
   const std::map<int, SpMat>& terms() const { return terms_; }
 
@@ -77,18 +85,20 @@ class Expr {
   static Expr scalar_times(const MatrixXd& M, const Expr& s);
   static Expr left(const MatrixXd& L, const Expr& a);
   static Expr right(const Expr& a, const MatrixXd& R);
+  static Expr invalid(std::string why);
   friend Expr blocks(const std::vector<std::vector<Expr>>&, const std::string&);
-  int rows_ = 0, cols_ = 0;
+  int rows_ = 0, cols_ = 0;  // -1 x -1 when invalid
   MatrixXd c0_;
   std::map<int, SpMat> terms_;
+  std::string error_;
 };
 
 Expr transpose(const Expr& e);
 
 /// Block assembly [[A, B], [C, D]]. An empty Expr() below the diagonal of a square layout
 /// means "the transpose of its mirror block"; an empty Expr() elsewhere is a zero block whose
-/// size is taken from its row and column. Every mismatch throws InputError naming `where`
-/// and the block (row, column).
+/// size is taken from its row and column. A mismatch, or an invalid block, gives an invalid
+/// Expr whose message names `where` and the block (row, column) (see Expr).
 Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where = "block matrix");
 
 enum class Strictness { strict, nonstrict };
