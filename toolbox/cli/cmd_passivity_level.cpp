@@ -33,6 +33,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/passivity/bound.hpp"
 
 namespace hapstab::cli {
 namespace {
@@ -201,8 +202,10 @@ int run(const Opts& o) {
     if (&main == &c) {
       std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << c.status << (only_bound ? " upper bound" : "")
                 << ", " << c.method << "]\n";
-      if (c.enclosure && c.lower_bound != c.upper_bound)
-        std::cout << "  enclosure: [" << to_decimal(c.lower_bound, o.digits) << ", " << to_decimal(c.upper_bound, o.digits) << "]\n";
+      if (c.enclosure && c.lower_bound != c.upper_bound) {
+        const std::string lo = passivity::decimal_outward(c.lower_bound, o.digits, -1), hi = passivity::decimal_outward(c.upper_bound, o.digits, +1);
+        if (lo != hi) std::cout << "  enclosure: [" << lo << ", " << hi << "]\n";
+      }
       std::cout.precision(12);
       std::cout << "  at theta = " << c.theta_min << " (omega = theta/T)\n";
     } else if (any) {

@@ -367,7 +367,12 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
                   "delta* <= 0: a frequency-domain index and an upper bound on Lemma 1's level only (Lemma 1 "
                   "also needs P > 0, which the frequency inequality does not impose)";
   }
-  out.method += ", maximiser: " + b.where;
+  // b*'s maximiser over w (T = 1) is the level's minimiser over theta
+  std::string where = b.where;
+  for (auto [from, to] : {std::pair<std::string, std::string>{"w = pi/T", "theta = pi"}, {"w = 0", "theta = 0"},
+                          {"every w", "every theta"}})
+    if (auto i = where.find(from); i != std::string::npos) where.replace(i, from.size(), to);
+  out.method += ", minimiser: " + where;
   return out;
 }
 
