@@ -126,6 +126,9 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("Theorem5Size/solve_only/" + bn).c_str(),
                                  [b](benchmark::State& st) { run(st, b, 2, 8, false); })
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Theorem5Size12/solve_only/" + bn).c_str(),
+                                 [b](benchmark::State& st) { run(st, b, 4, 8, false); })
+        ->Unit(benchmark::kMillisecond);
   }
   for (Backend b : {Backend::dsdp, Backend::csdp, Backend::ipm}) {
     const std::string bn = name(b);
