@@ -140,7 +140,8 @@ int run(const Opts& o) {
   if (sys.states() > 0) {
     l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
     f = lmi::passivity_level_freq(sys, kind, o.grid);
-    if (sys.inputs() == 1) c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
+    if (sys.inputs() == 1)
+      c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
     else c.note = "certified frequency path: SISO only";
   }
   const bool lmi_ok = l.status != "failed", freq_ok = f.status != "failed", cert_ok = c.status != "failed";
@@ -203,7 +204,8 @@ int run(const Opts& o) {
       std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << c.status << (only_bound ? " upper bound" : "")
                 << ", " << c.method << "]\n";
       if (c.enclosure && c.lower_bound != c.upper_bound) {
-        const std::string lo = passivity::decimal_outward(c.lower_bound, o.digits, -1), hi = passivity::decimal_outward(c.upper_bound, o.digits, +1);
+        const std::string lo = passivity::decimal_outward(c.lower_bound, o.digits, -1);
+        const std::string hi = passivity::decimal_outward(c.upper_bound, o.digits, +1);
         if (lo != hi) std::cout << "  enclosure: [" << lo << ", " << hi << "]\n";
       }
       std::cout.precision(12);

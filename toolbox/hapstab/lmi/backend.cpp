@@ -235,11 +235,11 @@ BackendResult dsdp_once(const StandardForm& sf, double ybound, double* box) {
 }  // namespace
 
 // DSDP keeps every y_k in a box (default |y_k| <= 1e7) and on an unbounded program stops
-// "converged" on it: min -x s.t. x >= 1 gave x = 1e7, optimal. A y on the box whose objective
-// is of the box's magnitude and where S(y) >= 0 holds is re-solved with the box at 1e10; the program is called unbounded
-// when the objective grows with the box (by 100x or more). A y on the box with a modest
-// objective is a normal solution of a program whose feasible set is unbounded (a homogeneous
-// Lyapunov LMI with the margin objective; badly scaled data as given).
+// "converged" on it: min -x s.t. x >= 1 gave x = 1e7, optimal. A y on the box where S(y) >= 0
+// holds and whose objective is of the box's magnitude is re-solved with the box at 1e10; the
+// program is called unbounded when the objective grows with the box (by 100x or more). A y on
+// the box with a modest objective is a normal solution of a program whose feasible set is
+// unbounded (a homogeneous Lyapunov LMI with the margin objective; badly scaled data as given).
 BackendResult solve_dsdp(const StandardForm& sf) {
   validate(sf);
   std::lock_guard<std::mutex> lock(sdp_mutex());

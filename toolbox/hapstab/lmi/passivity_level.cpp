@@ -378,7 +378,8 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
 
 PassivityLevel passivity_level_certified(const StateSpace<double>& sys, PassivityKind kind, int digits) {
   check_system(sys);
-  if (sys.inputs() != 1) throw InputError("certified frequency level: SISO systems only (got " + std::to_string(sys.inputs()) + " inputs)");
+  if (sys.inputs() != 1)
+    throw InputError("certified frequency level: SISO systems only (got " + std::to_string(sys.inputs()) + " inputs)");
   StateSpace<rational> q;
   q.A = sys.A.unaryExpr([](double v) { return exact_rational(v); });
   q.B = sys.B.unaryExpr([](double v) { return exact_rational(v); });
