@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -206,11 +207,14 @@ MatC freqresp(const StateSpace<double>& s, double theta) {
   return s.C.cast<cplx>() * X + s.D.cast<cplx>();
 }
 
-double osp_index_at(const StateSpace<double>& s, double theta, bool& singular) {
+double osp_index_at(const StateSpace<double>& s, double theta, bool& singular, double* smin = nullptr,
+                    double* smax = nullptr) {
   MatC G = freqresp(s, theta);
   MatC H = 0.5 * (G + G.adjoint());
   Eigen::JacobiSVD<MatC> svd(G, Eigen::ComputeFullV);
   const auto sv = svd.singularValues();
+  if (smin) *smin = sv(sv.size() - 1);
+  if (smax) *smax = sv(0);
   const double tol = 1e-10 * std::max(1.0, sv(0));
   int r = 0;
   while (r < sv.size() && sv(r) > tol) ++r;
@@ -248,9 +252,18 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
   bool singular = false;
   auto f = [&](double th) { return kind == PassivityKind::isp ? isp_index_at(sys, th) : osp_index_at(sys, th, singular); };
   std::vector<double> th(static_cast<size_t>(grid)), v(static_cast<size_t>(grid));
+  // OSP: smallest sigma_min(G) and largest sigma_max(G) on the grid (a zero near the circle)
+  double smin_all = INFINITY, smax_all = 0, near_zero_th = 0;
   for (int i = 0; i < grid; ++i) {
     th[static_cast<size_t>(i)] = M_PI * i / (grid - 1);
-    v[static_cast<size_t>(i)] = f(th[static_cast<size_t>(i)]);
+    if (kind == PassivityKind::osp) {
+      double lo = INFINITY, hi = 0;
+      v[static_cast<size_t>(i)] = osp_index_at(sys, th[static_cast<size_t>(i)], singular, &lo, &hi);
+      if (lo < smin_all) smin_all = lo, near_zero_th = th[static_cast<size_t>(i)];
+      smax_all = std::max(smax_all, hi);
+    } else {
+      v[static_cast<size_t>(i)] = f(th[static_cast<size_t>(i)]);
+    }
   }
   // local minima of the grid (ends included), 8 smallest
   std::vector<int> mins;
@@ -291,6 +304,16 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
   if (singular)
     out.note = "G(e^{j theta}) is singular at some frequency (a zero on the unit circle): those directions impose no "
                "OSP constraint and were skipped";
+  else if (const double near_zero = smin_all / smax_all; near_zero < 1e-3) {
+    // a zero on or near the circle between grid points (the pencil value there is mostly
+    // rounding): say where, since the strict LMI then has (almost) no interior
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "G(e^{j theta}) is nearly singular near theta = %.6g (min sigma_min / max sigma_max = %.2g on the grid): a zero "
+                  "on or near the unit circle",
+                  near_zero_th, near_zero);
+    out.note = buf;
+  }
   if (!std::isfinite(best)) {
     out.status = "failed";
     out.note = "G vanishes on the whole grid: the OSP level is unbounded";
