@@ -13,9 +13,10 @@
 // wide mutex. DSDP keeps pointers into our arrays until DSDPDestroy (they live until then).
 // CSDP's easy_sdp prints to stdout, reads ./param.csdp if one exists and calls exit() on some
 // malformed input: we validate the data first, and run CSDP in a forked child process whose
-// stdout is /dev/null and whose working directory is a fresh private folder holding our own
-// param.csdp (default parameters, printlevel 0), so neither a stray param.csdp nor an exit()
-// can change results or end the caller. The DIMACS error measures are computed by us, from the
+// stdout is /dev/null and whose working directory is a fresh private folder ($TMPDIR or /tmp,
+// created and removed by the parent) holding our own param.csdp (default parameters,
+// printlevel 0), so neither a stray param.csdp nor an exit() can change results or end the
+// caller. The DIMACS error measures are computed by us, from the
 // returned (y, X), with the same formulas for both back-ends.
 #pragma once
 

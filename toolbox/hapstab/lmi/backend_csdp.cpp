@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -158,8 +159,13 @@ BackendResult solve_csdp(const StandardForm& sf, double time_limit) {
   if (!(time_limit > 0)) throw InputError("CSDP: the time limit must be positive");
   std::lock_guard<std::mutex> lock(sdp_mutex());
   // The parent owns the private folder, so it is removed even when the child is killed.
-  char dir[] = "/tmp/hapstab-csdp-XXXXXX";
-  if (!::mkdtemp(dir)) throw NumericalError("CSDP: cannot create a private folder in /tmp");
+  // ($TMPDIR, else /tmp)
+  const char* tmp = std::getenv("TMPDIR");
+  std::string templ = std::string(tmp && *tmp ? tmp : "/tmp") + "/hapstab-csdp-XXXXXX";
+  std::vector<char> buf(templ.begin(), templ.end());
+  buf.push_back('\0');
+  char* dir = buf.data();
+  if (!::mkdtemp(dir)) throw NumericalError("CSDP: cannot create a private folder in " + templ.substr(0, templ.rfind('/')));
   const std::string param = std::string(dir) + "/param.csdp";
   auto cleanup = [&] {
     ::unlink(param.c_str());
