@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
@@ -238,20 +237,17 @@ TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
   const char* old_tmp = std::getenv("TMPDIR");
   const std::string saved = old_tmp ? old_tmp : "";
   ::setenv("TMPDIR", tmpl, 1);
-  const auto t0 = std::chrono::steady_clock::now();
   Result r = Solve(prog, o);
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (old_tmp) ::setenv("TMPDIR", saved.c_str(), 1);
   else ::unsetenv("TMPDIR");
   EXPECT_EQ(::rmdir(tmpl), 0) << "the CSDP folder was left in " << tmpl;  // rmdir fails unless empty
   EXPECT_FALSE(r.is_success());
   EXPECT_FALSE(r.certified());
-  if (r.status == SolveStatus::numerical_trouble && r.detail.find("time limit") != std::string::npos) {
-    EXPECT_LT(secs, 5.0);  // 1 s limit plus the kill; a generous bound, not a benchmark
-  } else {
-    // a CSDP build that does not loop here must still not call this program feasible
-    EXPECT_NE(r.verdict, Feasibility::feasible) << r.detail;
-  }
+  // Either CSDP was stopped at the limit (the detail says so; no wall-clock assertion here:
+  // timing lives in bench/), or a CSDP build that does not loop here answered -- which must
+  // still not call this program feasible.
+  if (r.detail.find(kCsdpTimedOut) != std::string::npos) EXPECT_EQ(r.status, SolveStatus::numerical_trouble);
+  else EXPECT_NE(r.verdict, Feasibility::feasible) << r.detail;
   EXPECT_THROW(
       {
         Options bad = o;
