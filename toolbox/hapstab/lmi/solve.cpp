@@ -511,8 +511,10 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   // A back-end in numerical trouble (DSDP's "optimal" point that violates the LMIs, its short
   // steps on an infeasible program) may still hold a usable Farkas ray: the exact check below
   // decides, so trying costs time only.
+  // (the cost bound of the strict check above, except for DSDP's "optimal" at an infeasible point,
+  // which was always checked)
   const bool trouble = res.status == SolveStatus::numerical_trouble && res.verdict == Feasibility::undecided &&
-                       ymap.size() <= 20;  // same cost bound as the strict check above
+                       (ymap.size() <= 20 || br.status == SolveStatus::optimal);
   if (res.verdict == Feasibility::infeasible || try_strict_farkas || trouble) {
     // strict mode: Z != 0 on a strict block and sum tr(F_j0 Z_j) <= 0 proves that the STRICT
     // system has no solution (homogeneous LMIs such as Lyapunov's have margin exactly 0 when
@@ -736,7 +738,8 @@ Result Solve(const Program& prog, const Options& opt) {
     if ((r.certificate == Certificate::feasible_exact || r.certificate == Certificate::infeasible_exact) &&
         r.status != SolveStatus::numerical_trouble)
       return r;
-    note = "hapstab IPM first: " + std::string(to_string(r.verdict)) + ", not certified (" + r.detail + "); ";
+    note = "hapstab IPM first: " + std::string(to_string(r.verdict)) + ", " +
+           (r.certified() ? "certified but not finished" : "not certified") + " (" + r.detail + "); ";
     o.scale = opt.scale;
   }
   o.backend = Backend::dsdp;
