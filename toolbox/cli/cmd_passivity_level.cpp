@@ -236,8 +236,8 @@ int run(const Opts& o) {
 }
 
 const Register reg({"passivity-level",
-                    "OSP level delta / ISP level phi of a discrete LTI system (paper 000 Lemmas 1-2): LMI with an "
-                    "exact lower-bound certificate, cross-checked in the frequency domain",
+                    "OSP level delta / ISP level phi of a discrete LTI system (paper 000 Lemmas 1-2): certified "
+                    "frequency-domain level (SISO), LMI with an exact lower-bound certificate, frequency grid",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       app.add_option("--H", o->H, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\")");
@@ -250,8 +250,8 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified SISO level (10..100, default 17)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
-                                                      "lower_bound, upper_bound, value, theta, kind, lmi, "
-                                                      "frequency, note)");
+                                                      "lower_bound, upper_bound, value, theta, kind, "
+                                                      "certified_frequency, lmi, frequency, note)");
                       return [o]() { return run(*o); };
                     }});
 
