@@ -301,6 +301,21 @@ TEST(PassivityBound, StabilityExact) {
   EXPECT_TRUE(marginally_stable(e));
 }
 
+// Distinct roots on |z| = 1, exact: counted by hand from the factorisations.
+TEST(PassivityBound, UnitCircleRootsCounted) {
+  using P = Polynomial<rational>;
+  auto p = [](std::vector<rational> c) { return P(std::move(c)); };
+  EXPECT_EQ(unit_circle_roots(p({1, 0, 1})), 2);                                    // z^2 + 1: +-j
+  EXPECT_EQ(unit_circle_roots(p({-1, 0, 1})), 2);                                   // +-1
+  EXPECT_EQ(unit_circle_roots(p({1, -1, 1})), 2);                                   // e^{+-j pi/3}
+  EXPECT_EQ(unit_circle_roots(p({1, -2, 1})), 1);                                   // (z - 1)^2: one distinct
+  EXPECT_EQ(unit_circle_roots(p({1, rational(-5, 2), 1})), 0);                      // (z - 2)(z - 1/2): reciprocal pair
+  EXPECT_EQ(unit_circle_roots(p({rational(-1, 4), 0, 1})), 0);                      // +-1/2
+  EXPECT_EQ(unit_circle_roots(p({rational(-1, 2), 1}) * p({1, 0, 1}) * p({2, 1})), 2);  // (z - 1/2)(z^2 + 1)(z + 2)
+  EXPECT_EQ(unit_circle_roots(p({3})), 0);
+  EXPECT_THROW(unit_circle_roots(P()), InputError);
+}
+
 TEST(PassivityBound, RepeatedUnitCirclePolesAreRefused) {
   // 1/(z-1)^2 and -(z-1)/(z+1)^2 were once given finite bounds (0.125, 0.25)
   for (const char* h : {"1/(z-1)^2", "-(z-1)/(z+1)^2", "1/(z^2+1)^2"}) {

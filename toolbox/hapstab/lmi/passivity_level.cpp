@@ -335,12 +335,8 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
     out.note = "G is not stable (" + why + ")";
     return out;
   }
-  // Schur stability: no pole on the circle either (marginally_stable allows simple ones). With
-  // no root outside the disk, d has a root on the circle iff it shares one with its reciprocal
-  // z^n d(1/z) (a root r with |r| < 1 would need 1/r, outside, as a root).
-  std::vector<rational> rc = G.den().coeffs();
-  std::reverse(rc.begin(), rc.end());
-  if (gcd(G.den(), Polynomial<rational>(rc)).degree() > 0) {
+  // Schur stability: no pole on the circle either (marginally_stable allows simple ones)
+  if (passivity::unit_circle_roots(G.den()) > 0) {
     out.note = "G has a pole on the unit circle: its passivity levels are not defined (Lemma 1 needs a stable A)";
     return out;
   }
@@ -378,11 +374,7 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
   }
   out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
   if (kind == PassivityKind::osp) {
-    // zeros in |z| <= 1 here (else bound_certified refused 1/G), so a common root of the
-    // numerator and its reciprocal is a zero on the circle
-    std::vector<rational> rn = G.num().coeffs();
-    std::reverse(rn.begin(), rn.end());
-    if (G.num().degree() > 0 && gcd(G.num(), Polynomial<rational>(rn)).degree() > 0)
+    if (passivity::unit_circle_roots(G.num()) > 0)
       out.note = "G has a zero on the unit circle: delta* is the supremum of the non-strict levels; the strict "
                  "inequality (1) holds for no delta (Lemma 1's strict LMI is infeasible)";
     if (!(out.level > 0))

@@ -123,6 +123,26 @@ double Bound::value_double() const {
 // ---------------------------------------------------------------------------------------------
 // assumptions: causality, stability (Schur-Cohn on the part off the unit circle, exact root
 // isolation on it)
+namespace {
+// Distinct roots of the square-free s on |z| = 1: z = -1, and the real roots t of the common
+// factor of Re, Im of (1 - jt)^m s(z(t)) (the other points of the circle).
+int circle_roots_of_square_free(const P& s) {
+  const int m = s.degree();
+  int on = (s(rational(-1)) == 0) ? 1 : 0;
+  ComplexPolynomial cp = unit_circle_polynomial(s, m);
+  P h = cp.re.is_zero() ? cp.im : (cp.im.is_zero() ? cp.re : gcd(cp.re, cp.im));
+  if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
+  return on;
+}
+}  // namespace
+
+int unit_circle_roots(const P& p) {
+  if (p.is_zero()) throw InputError("unit_circle_roots: the zero polynomial");
+  if (p.degree() <= 0) return 0;
+  P g = gcd(p, reversed(p));  // every unit-circle root of p, and reciprocal pairs (r, 1/r)
+  return g.degree() > 0 ? circle_roots_of_square_free(square_free_part(g)) : 0;
+}
+
 bool marginally_stable(const P& d, std::string* detail) {
   if (d.is_zero()) throw InputError("the denominator of H is zero");
   if (d.degree() == 0) return true;
@@ -132,12 +152,7 @@ bool marginally_stable(const P& d, std::string* detail) {
     for (P h = gcd(d1, g); h.degree() > 0; h = gcd(d1, g)) d1 = divmod(d1, h).first;
     // all roots of g must lie on the circle
     P s = square_free_part(g);
-    int m = s.degree();
-    int on = (s(rational(-1)) == 0) ? 1 : 0;
-    ComplexPolynomial cp = unit_circle_polynomial(s, m);
-    P h = cp.re.is_zero() ? cp.im : (cp.im.is_zero() ? cp.re : gcd(cp.re, cp.im));
-    if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
-    if (on != m) {
+    if (circle_roots_of_square_free(s) != s.degree()) {
       if (detail) *detail = "a reciprocal pair of poles (r, 1/r) off the unit circle: one has |z| > 1";
       return false;
     }

@@ -50,6 +50,9 @@ void check_assumptions(const BoundProblem& p);
 /// form every method and the closed-form matcher work on.
 BoundProblem with_integer_delay(BoundProblem p);
 
+/// Number of distinct roots of p on the unit circle |z| = 1 (exact). p must not be zero.
+int unit_circle_roots(const Polynomial<rational>& p);
+
 /// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
 /// poles H may have. `detail` receives the reason when false.
 bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);
