@@ -158,8 +158,12 @@ int run(const Opts& o) {
   };
   if (sys.inputs() == 1) add("certified frequency path: ", c.note);
   if (!lmi_ok) add("LMI: ", l.note);
+  // compared only where the frequency value is the level (ISP; OSP > 0): an OSP value <= 0 is
+  // an upper bound that the LMI level may lie below
   const double ref = cert_ok ? c.level : f.level;
-  if (lmi_ok && (cert_ok || freq_ok) && std::isfinite(ref) && std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
+  const bool comparable = kind == lmi::PassivityKind::isp || ref > 0;
+  if (lmi_ok && (cert_ok || freq_ok) && comparable && std::isfinite(ref) &&
+      std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
     note += (note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
   const bool any = cert_ok || lmi_ok || freq_ok;
   if (o.json) {
