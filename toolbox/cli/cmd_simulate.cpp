@@ -24,6 +24,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/simulator.hpp"
 
@@ -71,12 +72,15 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
   {
     std::ofstream f(dir / "samples.csv");
     if (!f) throw InputError("--out: cannot write " + (dir / "samples.csv").string());
-    f << "t";
+    // The header through the CSV writer (report/escape.hpp) like every CSV cell of text.
+    const char* names[] = {"x", "v", "u", "fh", "E_port", "E_act", "E_po", "storage"};
+    const char* units[] = {"m", "m/s", "N", "N", "J", "J", "J", "J"};
+    f << report::csv::cell("t");
     for (int j = 0; j < N; ++j)
-      f << ",x" << j << ",v" << j << ",u" << j << ",fh" << j << ",E_port" << j << ",E_act" << j << ",E_po" << j
-        << ",storage" << j;
-    f << "\ns";
-    for (int j = 0; j < N; ++j) f << ",m,m/s,N,N,J,J,J,J";
+      for (const char* n : names) f << ',' << report::csv::cell(n + std::to_string(j));
+    f << '\n' << report::csv::cell("s");
+    for (int j = 0; j < N; ++j)
+      for (const char* u : units) f << ',' << report::csv::cell(u);
     f << "\n" << std::setprecision(17);
     for (size_t i = 0; i < S.rows(); ++i) {
       f << S.t[i];
@@ -106,9 +110,12 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
   }
 }
 
+// Every string from the scene reaches the script as a gnuplot string literal (report::gnuplot::quote),
+// and for the cairolatex terminal, whose text LaTeX typesets, LaTeX-escaped first.
 void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine) {
+  using report::gnuplot::quote;
   std::ofstream g(dir / "plot.gp");
-  g << "# Draws the series of `hapstab simulate` (scene " << sc.file << ").\n"
+  g << "# Draws the series of `hapstab simulate` (scene " << report::comment(sc.file) << ").\n"
     << "# Run in this folder: gnuplot plot.gp   (or gnuplot -e \"fmt='pdf'\" plot.gp; fmt: png pdf svg tex)\n"
     << "if (!exists(\"fmt\")) fmt = 'png'\n"
     << "set datafile separator ','\nset datafile missing 'NaN'\n"
@@ -117,9 +124,12 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
     << "if (fmt eq 'png') set terminal pngcairo size 1600,1000 enhanced font 'DejaVu Sans,20' linewidth 2\n"
     << "if (fmt eq 'pdf') set terminal pdfcairo size 6in,3.75in enhanced font 'DejaVu Sans,10'\n"
     << "if (fmt eq 'svg') set terminal svg size 1200,750 enhanced background rgb 'white'\n"
-    << "if (fmt eq 'tex') set terminal cairolatex pdf size 5in,3.1in\n";
+    << "if (fmt eq 'tex') set terminal cairolatex pdf size 5in,3.1in\n"
+    << "int_fhv = (fmt eq 'tex') ? '$\\int f_h v\\,dt$' : '{/Symbol \\362} f_h v dt'\n"
+    << "int_uv = (fmt eq 'tex') ? '$\\int u v\\,dt$' : '{/Symbol \\362} u v dt'\n"
+    << "scene_title = (fmt eq 'tex') ? " << quote(report::latex::escape(sc.name)) << " : " << quote(sc.name) << "\n";
   auto cols = [&](const char* what, int off, const char* ylabel, bool with_fine) {
-    g << "set output '" << what << ".'.ext\nset ylabel '" << ylabel << "'\nset title '" << sc.name << "' noenhanced\nplot ";
+    g << "set output '" << what << ".'.ext\nset ylabel '" << ylabel << "'\nset title scene_title noenhanced\nplot ";
     for (int j = 0; j < N; ++j) {
       if (j) g << ", ";
       if (with_fine && fine)
@@ -138,9 +148,9 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
       g << "set output 'energy.'.ext\nset ylabel 'energy [J]'\nset title 'port energies' noenhanced\nplot ";
       for (int j = 0; j < N; ++j) {
         if (j) g << ", ";
-        g << "'samples.csv' skip 2 using 1:" << 6 + 8 * j << " with lines title 'DOF " << j << ": {/Symbol \\362} f_h v dt', "
+        g << "'samples.csv' skip 2 using 1:" << 6 + 8 * j << " with lines title sprintf('DOF %d: %s', " << j << ", int_fhv), "
           << "'samples.csv' skip 2 using 1:" << 8 + 8 * j << " with lines dt 2 title 'DOF " << j << ": passivity observer', "
-          << "'samples.csv' skip 2 using 1:" << 7 + 8 * j << " with lines dt 3 title 'DOF " << j << ": {/Symbol \\362} u v dt'";
+          << "'samples.csv' skip 2 using 1:" << 7 + 8 * j << " with lines dt 3 title sprintf('DOF %d: %s', " << j << ", int_uv)";
       }
       g << "\n";
     }
@@ -250,7 +260,7 @@ void write_tightness(const fs::path& dir) {
     sc.simulate.substeps = 1;
     auto r = run_scene(sc);
     std::ofstream f(dir / (std::string("sim_tightness_") + side + ".dat"));
-    f << "# t  v  int f_h v dt   (" << sc.name << ")\n" << std::setprecision(12);
+    f << "# t  v  int f_h v dt   (" << report::comment(sc.name) << ")\n" << std::setprecision(12);
     for (size_t i = 0; i < r.samples.rows(); ++i) f << r.samples.t[i] << ' ' << r.samples.v[i] << ' ' << r.samples.e_port[i] << '\n';
   }
   // Random passive operators Z_O = mo s + bo + ko/s at b = 1.01 b*.

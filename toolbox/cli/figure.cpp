@@ -4,8 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/process.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
+#include "hapstab/report/paths.hpp"
+#include "hapstab/report/process.hpp"
 
 namespace hapstab::cli {
 
@@ -33,20 +35,31 @@ fs::path plots_dir() {
 
 fs::path examples_dir() { return plots_dir().parent_path() / "examples"; }
 
+fs::path self_exe() {
+  std::error_code ec;
+  fs::path p = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw NumericalError("cannot find the hapstab executable (/proc/self/exe): " + ec.message());
+  return p;
+}
+
 void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& figdir, const std::string& format) {
   const fs::path dir = plots_dir();
   const fs::path outdir = format == "tex" ? figdir / "tex" : figdir;  // cairolatex also writes NAME.pdf
+  report::file_component(script, "figure name");
   const fs::path gp = dir / (script + ".gp");
-  if (!fs::exists(gp)) throw InputError("no gnuplot script " + gp.string());
-  // gnuplot strings are single-quoted too: the paths handed to it must not hold a quote
+  if (!fs::exists(gp)) throw InputError("no gnuplot script " + report::text(gp.string()));
+  // The folders reach gnuplot as string literals (report::gnuplot::quote); a control character
+  // in a path would be replaced there and point gnuplot elsewhere, so such a path is refused.
   for (const auto& p : {datadir, outdir, dir})
-    if (p.string().find('\'') != std::string::npos) throw InputError("path must not contain a quote: " + p.string());
+    if (!report::is_clean_text(p.string()))
+      throw InputError("--out: the path '" + report::text(p.string()) + "' holds control characters");
   fs::create_directories(outdir);
-  std::ostringstream vars;
-  vars << "plotdir='" << dir.string() << "'; datadir='" << fs::absolute(datadir).string() << "'; outdir='"
-       << fs::absolute(outdir).string() << "'; fmt='" << format << "'";
-  run_logged("gnuplot -e " + shell_quote(vars.str()) + " " + shell_quote(gp.string()),
-             fs::absolute(outdir) / (script + "." + format + ".log"), "gnuplot on " + gp.string() + " (" + format + ")");
+  using report::gnuplot::quote;
+  const std::string vars = "plotdir=" + quote(dir.string()) + "; datadir=" + quote(fs::absolute(datadir).string()) +
+                           "; outdir=" + quote(fs::absolute(outdir).string()) + "; fmt=" + quote(format);
+  report::ProcessOptions po;
+  po.time_limit = 600;  // the slowest figure takes a few seconds; a hung gnuplot must not hang the job
+  report::run_checked({"gnuplot", "-e", vars, gp.string()}, "gnuplot on " + gp.string() + " (" + format + ")", po);
 }
 
 void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {
@@ -56,9 +69,7 @@ void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {
   if (!fs::exists(build / "bench" / ("bench_" + bench)))
     throw FigureSkipped("benchmark program bench_" + bench + " not built next to this hapstab (configure with "
                         "-DHAPSTAB_BENCH=ON and build the target bench_" + bench + ")");
-  run_logged(shell_quote(script.string()) + " " + shell_quote(fs::absolute(datadir).string()) + " " +
-                 shell_quote(build.string()),
-             fs::absolute(datadir) / ("chart-" + bench + ".log"), "bench/chart-" + bench);
+  report::run_checked({script.string(), fs::absolute(datadir).string(), build.string()}, "bench/chart-" + bench);
 }
 
 void draw_figure(const Figure& fig, const fs::path& datadir, const fs::path& outdir,

@@ -36,6 +36,8 @@ struct FigureSkipped : std::runtime_error {
 std::filesystem::path plots_dir();
 /// The example scenes (examples/*.toml), next to plots/.
 std::filesystem::path examples_dir();
+/// The path of the running `hapstab` executable (/proc/self/exe).
+std::filesystem::path self_exe();
 
 /// Data of a bench/ speed-accuracy chart: runs `bench/chart-NAME DATADIR BUILD_DIR`, which runs
 /// the Google Benchmark program bench_NAME built next to this executable and converts its JSON.

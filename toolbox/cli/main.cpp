@@ -5,6 +5,7 @@
 #include "cli/command.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
 
 namespace hapstab::cli {
 
@@ -33,6 +34,12 @@ void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; 
 
 }  // namespace hapstab::cli
 
+namespace {
+// Messages quote input (a scene's name, an expression): on a terminal a control character in it
+// could move the cursor or retitle the window, so they are printed through report::text.
+std::string shown(const std::exception& e) { return hapstab::report::text(e.what(), true); }
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace hapstab::cli;
   CLI::App app{"hapstab -- passivity and stability of sampled-data haptic systems.\n"
@@ -56,20 +63,20 @@ int main(int argc, char** argv) {
     app.exit(e);
     return exit_bad_input;
   } catch (const hapstab::InputError& e) {
-    std::cerr << "hapstab: " << e.what() << "\n";
+    std::cerr << "hapstab: " << shown(e) << "\n";
     return exit_bad_input;
   }
   try {
     for (auto& [sub, run] : runners)
       if (sub->parsed()) return run();
   } catch (const hapstab::InputError& e) {
-    std::cerr << "hapstab: error: " << e.what() << "\n";
+    std::cerr << "hapstab: error: " << shown(e) << "\n";
     return exit_bad_input;
   } catch (const hapstab::NumericalError& e) {
-    std::cerr << "hapstab: numerical failure: " << e.what() << "\n";
+    std::cerr << "hapstab: numerical failure: " << shown(e) << "\n";
     return exit_numerical;
   } catch (const std::exception& e) {
-    std::cerr << "hapstab: internal error: " << e.what() << "\n";
+    std::cerr << "hapstab: internal error: " << shown(e) << "\n";
     return exit_numerical;
   }
   return exit_bad_input;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
 
 namespace hapstab::cli {
 
@@ -57,25 +58,11 @@ namespace {
 
 const char* const kPapers[] = {"001", "002", "000", "toolbox"};
 
-std::string md_cell(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
-  return o;
-}
-
-std::string html(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
+using report::markdown::cell;
+using report::markdown::code;
+using report::html::attribute;
+using report::html::url_component;
+std::string html(const std::string& s) { return report::html::text(s); }
 
 std::ofstream open_out(const fs::path& p) {
   fs::create_directories(p.parent_path());
@@ -129,25 +116,25 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
       md << "\n| claim | equation | statement | status | verdict | evidence |\n|---|---|---|---|---|---|\n";
       for (const auto& c : in.claims)
         if (c.paper == paper)
-          md << "| `" << c.id << "` | " << md_cell(c.equation) << " | " << md_cell(c.statement) << " | "
+          md << "| " << code(c.id) << " | " << cell(c.equation) << " | " << cell(c.statement) << " | "
              << proofs::to_string(c.method) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
-             << md_cell(c.evidence) << " |\n";
+             << cell(c.evidence) << " |\n";
     }
     if (any_of_paper(in.scenes, paper)) {
       md << "\n### Example scenes\n\n| scene | claim | command | expected | got | verdict |\n|---|---|---|---|---|---|\n";
       for (const auto& r : in.scenes)
         if (r.paper == paper)
-          md << "| `examples/" << r.file << "` | " << md_cell(r.claim) << " | `hapstab " << r.command << "` | "
-             << md_cell(r.expected.empty() ? "runs" : r.expected) << " | " << md_cell(r.got) << " | "
-             << (r.ok ? "as expected" : "**FAILS**: " + md_cell(r.error)) << " |\n";
+          md << "| " << code("examples/" + r.file) << " | " << cell(r.claim) << " | " << code("hapstab " + r.command) << " | "
+             << cell(r.expected.empty() ? "runs" : r.expected) << " | " << cell(r.got) << " | "
+             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error)) << " |\n";
     }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
-        md << "\n**" << f.name << ".** " << f.caption;
+        md << "\n**" << cell(f.name) << ".** " << cell(f.caption);
         if (f.ok)
-          md << "\n\n![" << f.name << "](figures/" << f.name << ".png)\n";
+          md << "\n\n![" << cell(f.name) << "](figures/" << url_component(f.name + ".png") << ")\n";
         else
-          md << " — **not reproduced" << (f.skipped ? "" : " (FAILED)") << "**: " << md_cell(f.error) << "\n";
+          md << " — **not reproduced" << (f.skipped ? "" : " (FAILED)") << "**: " << cell(f.error) << "\n";
       }
   }
 }
@@ -194,16 +181,17 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
     }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
-        h << "<figure id=\"" << html(f.name) << "\">";
+        const std::string file = url_component(f.name);
+        h << "<figure id=\"" << attribute(f.name) << "\">";
         if (f.ok)
-          h << "<img src=\"figures/" << html(f.name) << ".png\" alt=\"" << html(f.caption) << "\">";
+          h << "<img src=\"figures/" << file << ".png\" alt=\"" << attribute(f.caption) << "\">";
         else
           h << "<p class=\"" << (f.skipped ? "skipped" : "fails") << "\">not reproduced" << (f.skipped ? "" : " (FAILED)")
             << ": " << html(f.error) << "</p>";
         h << "<figcaption><b>" << html(f.name) << ".</b> " << html(f.caption);
         if (f.ok)
-          h << " (<a href=\"figures/" << html(f.name) << ".pdf\">PDF</a>, <a href=\"figures/" << html(f.name)
-            << ".svg\">SVG</a>, <a href=\"figures/tex/" << html(f.name) << ".tex\">LaTeX</a>)";
+          h << " (<a href=\"figures/" << file << ".pdf\">PDF</a>, <a href=\"figures/" << file
+            << ".svg\">SVG</a>, <a href=\"figures/tex/" << file << ".tex\">LaTeX</a>)";
         h << "</figcaption></figure>\n";
       }
   }

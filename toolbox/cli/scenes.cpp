@@ -10,7 +10,10 @@
 #include <toml++/toml.h>
 
 #include "cli/figure.hpp"
-#include "cli/process.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
+#include "hapstab/report/paths.hpp"
+#include "hapstab/report/process.hpp"
 
 namespace hapstab::cli {
 
@@ -66,24 +69,29 @@ SceneRun run_one(const fs::path& file, const std::string& command, const std::ve
   auto t0 = std::chrono::steady_clock::now();
   std::vector<std::string> argv{self_exe().string()};
   argv.insert(argv.end(), args.begin(), args.end());
-  std::string out;
   fs::create_directories(outdir);
-  const std::string base = file.stem().string() + "." + command.substr(command.rfind(' ') + 1);  // NAME.analyze
-  const fs::path errfile = outdir / (base + ".stderr");
-  const int rc = run_capture(argv, out, errfile);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::ofstream(outdir / (base + ".json")) << out;
-  if (rc == 0 || rc == 1) {  // 1 = the property does not hold: a result, judged by the expectations
-    std::error_code ec;
-    if (fs::file_size(errfile, ec) == 0) fs::remove(errfile, ec);
-  } else {
-    std::ifstream e(errfile);
-    std::stringstream ss;
-    ss << e.rdbuf();
+  // NAME.analyze: the scene's file stem is a name from a folder listing; it must still be one
+  // clean file name (report/paths.hpp) before it names outputs.
+  std::string base;
+  try {
+    base = report::file_component(file.stem().string(), "examples/" + report::text(r.file)) + "." +
+           command.substr(command.rfind(' ') + 1);
+  } catch (const InputError& e) {
     r.ok = false;
-    r.error = "exit code " + std::to_string(rc) + ": " + ss.str();
+    r.error = e.what();
     return r;
   }
+  const fs::path errfile = outdir / (base + ".stderr");
+  const auto run = report::run_process(argv);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ofstream(outdir / (base + ".json")) << run.out;
+  if (!run.err.empty()) std::ofstream(errfile) << run.err;
+  if (!run.started || (run.exit_code != 0 && run.exit_code != 1)) {  // 1 = the property does not hold: a result
+    r.ok = false;
+    r.error = run.describe() + ": " + run.err;
+    return r;
+  }
+  const std::string& out = run.out;
   json j;
   try {
     j = json::parse(out);

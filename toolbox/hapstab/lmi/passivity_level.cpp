@@ -25,7 +25,7 @@ const char* to_string(PassivityKind k) { return k == PassivityKind::osp ? "osp" 
 
 namespace {
 
-void check_system(const StateSpace<double>& sys) {
+void check_state_space(const StateSpace<double>& sys) {
   sys.validate("system");
   if (!sys.is_discrete()) throw InputError("system: the passivity levels of paper 000 need a discrete system (T > 0)");
   if (sys.inputs() != sys.outputs())
@@ -104,7 +104,7 @@ rational exact_scalar(const Result& r, const MatrixVariable& v) { return r.GetEx
 }  // namespace
 
 PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma, Backend backend) {
-  check_system(sys);
+  check_state_space(sys);
   if (lemma != 1 && lemma != 2) throw InputError("passivity level: lemma must be 1 or 2");
   PassivityLevel out;
   out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + to_string(backend) + ")";
@@ -177,7 +177,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
 }
 
 double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo, Backend backend) {
-  check_system(sys);
+  check_state_space(sys);
   const int n = static_cast<int>(sys.states());
   Program prog;
   Options opt;
@@ -238,7 +238,7 @@ double isp_index_at(const StateSpace<double>& sys, double theta) {
 }
 
 PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind kind, int grid) {
-  check_system(sys);
+  check_state_space(sys);
   if (grid < 16) throw InputError("passivity level: the frequency grid needs at least 16 points");
   PassivityLevel out;
   out.method = "frequency domain (" + std::to_string(grid) + "-point grid + golden-section refinement)";
@@ -392,7 +392,7 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
 }
 
 PassivityLevel passivity_level_certified(const StateSpace<double>& sys, PassivityKind kind, int digits) {
-  check_system(sys);
+  check_state_space(sys);
   if (sys.inputs() != 1)
     throw InputError("certified frequency level: SISO systems only (got " + std::to_string(sys.inputs()) + " inputs)");
   StateSpace<rational> q;

@@ -2,6 +2,7 @@
 #include "hapstab/scene/scene.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -14,6 +15,8 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
+#include "hapstab/report/paths.hpp"
 
 namespace hapstab::scene {
 
@@ -31,6 +34,24 @@ struct Ctx {
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
     throw InputError(file + ": " + key + ": " + what);
+  }
+
+  // Names and descriptions are free text (examples/README.md, "Names"): any Unicode, at most
+  // `max` bytes, no control characters (a description may hold newlines) and well-formed UTF-8.
+  // Everything they reach -- gnuplot, CSV, LaTeX, HTML, a terminal -- escapes them
+  // (report/escape.hpp); they never name a file.
+  std::string free_text(const toml::table& t, const char* k, const std::string& key, const std::string& fallback,
+                        size_t max, bool newlines = false) const {
+    const toml::node* n = t.get(k);
+    if (!n) return fallback;
+    const auto* v = n->as_string();
+    if (!v) fail(key + "." + k, "expected a string");
+    const std::string& text = v->get();
+    if (text.size() > max) fail(key + "." + k, "longer than " + std::to_string(max) + " bytes");
+    if (report::text(text, newlines) != text)
+      fail(key + "." + k, "'" + report::text(text) + "' holds control characters or malformed UTF-8 (each shown "
+                              "as U+FFFD); write plain text");
+    return text;
   }
 
   // An exact number: integer, or string holding a decimal/fraction/expression of T and parameters.
@@ -293,8 +314,8 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   auto s = section(root, "scene", c);
   if (!s) c.fail("scene", "missing: every scene starts with [scene] and its sample period T = \"1/1000\"");
   c.only_keys(*s, "scene", {"name", "description", "T"});
-  if (auto n = s->get("name")) sc.name = n->value_or(std::string());
-  if (auto n = s->get("description")) sc.description = n->value_or(std::string());
+  sc.name = c.free_text(*s, "name", "scene", "", 256);
+  sc.description = c.free_text(*s, "description", "scene", "", 8192, true);
   if (!s->contains("T")) c.fail("scene.T", "missing: the sample period, e.g. T = \"1/1000\"");
   c.T = c.number(*s->get("T"), "scene.T", false);
   if (c.T <= 0) c.fail("scene.T", "the sample period must be > 0, got " + c.T.str());
@@ -303,7 +324,15 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   // ---- [parameters]: literals or constant expressions of T and other parameters (any order)
   if (auto p = section(root, "parameters", c)) {
     std::map<std::string, const toml::node*> todo;
-    for (const auto& [k, v] : *p) todo[std::string(k.str())] = &v;
+    for (const auto& [k, v] : *p) {
+      const std::string name(k.str());  // parameters are read in expressions: identifiers only
+      bool ok = !name.empty() && name.size() <= 64 && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+      for (char ch : name) ok = ok && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+      if (!ok)
+        c.fail("parameters", "'" + report::text(name) + "' is not a parameter name (letters, digits and _, " +
+                                 "starting with a letter or _, at most 64)");
+      todo[name] = &v;
+    }
     for (const auto& [k, v] : overrides) {
       if (!todo.count(k)) c.fail("parameters." + k, "--set names a parameter the scene does not define");
       todo.erase(k);
@@ -331,7 +360,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   // ---- devices
   each_table(root, "device", c, [&](const toml::table& t, const std::string& key, int) {
     c.only_keys(t, key, {"name", "m", "b", "tf", "ss", "passive"});
-    std::string name = t["name"].value_or(key);
+    const std::string name = c.free_text(t, "name", key, key, 256);
     sim::DeviceBlock d;
     if (t.contains("m") || t.contains("b")) {
       if (t.contains("tf") || t.contains("ss")) c.fail(key, "give either m, b (a mass-damper) or tf/ss, not both");
@@ -357,7 +386,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   // ---- operators
   each_table(root, "operator", c, [&](const toml::table& t, const std::string& key, int) {
     c.only_keys(t, key, {"name", "dofs", "m", "b", "k", "tf", "ss", "mass", "passive"});
-    std::string name = t["name"].value_or(key);
+    const std::string name = c.free_text(t, "name", key, key, 256);
     std::vector<int> dofs = t.contains("dofs") ? c.dofs_of(*t.get("dofs"), key + ".dofs") : std::vector<int>{};
     sim::OperatorBlock o;
     if (t.contains("tf") || t.contains("ss")) {
@@ -479,11 +508,12 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
       if (auto a = t["values"].as_array()) {
         for (size_t i = 0; i < a->size(); ++i) p.samples.push_back(c.real((*a)[i], key + ".values"));
       } else {
-        std::string f = t["file"].value_or(std::string());
-        std::filesystem::path path = f;
-        if (path.is_relative()) path = std::filesystem::path(c.base_dir) / path;
+        const auto* f = t["file"].as_string();
+        if (!f) c.fail(key + ".file", "expected a file name (a string)");
+        // A scene reads only regular files in its own folder, at most 64 MB (docs/security.md).
+        const auto path = report::input_file_inside(c.base_dir, f->get(), c.file + ": " + key + ".file", 64u << 20);
         std::ifstream in(path);
-        if (!in) c.fail(key + ".file", "cannot read '" + path.string() + "'");
+        if (!in) c.fail(key + ".file", "cannot read '" + report::text(f->get()) + "'");
         std::string line;
         while (std::getline(in, line)) {
           if (line.empty() || line[0] == '#') continue;
@@ -492,7 +522,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
           try {
             p.samples.push_back(std::stod(cell));
           } catch (...) {
-            c.fail(key + ".file", "'" + line + "' is not a number (one force per line, or t,force)");
+            c.fail(key + ".file", "'" + report::text(line.substr(0, 80)) + "' is not a number (one force per line, or t,force)");
           }
         }
       }
