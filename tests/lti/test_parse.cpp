@@ -123,3 +123,28 @@ TEST(Parse, InterconnectionsAreExact) {
   auto c = parse("1/s", {}, 0);
   EXPECT_THROW(series(a, c), InputError);
 }
+
+// Resource limits (numeric/limits.hpp), checked before the work they bound: no input, however
+// long or deep, may exhaust the stack or memory. Messages show an excerpt, not the whole input.
+TEST(Parse, LimitsOnLengthDepthDegreeAndCoefficientSize) {
+  const rational T(1, 1000);
+  auto nested = [](int depth) { return std::string(size_t(depth), '(') + "z" + std::string(size_t(depth), ')'); };
+  EXPECT_NO_THROW(parse(nested(200), {}, T));
+  expect_error(nested(201), {"nested deeper than 200 levels", "column 201"});
+  expect_error(nested(50000), {"100001 characters, more than the limit of 100000"});
+  // signs are a loop, not recursion: 99,990 of them parse
+  EXPECT_EQ(parse(std::string(99990, '-') + "z", {}, T).H.num(), P({0, 1}));
+  expect_error(std::string(100001, '-'), {"more than the limit of 100000"});
+  expect_error("(z^5000)*(z^5001)", {"degree 10001, more than the limit of 10000"});
+  expect_error("(z^100 + 1)^101", {"the power has degree 10100"});
+  expect_error("(1e999999)^9999", {"bits, more than the limit of 1048576"});
+  expect_error("(1e999999)*(1e999999)", {"more than 1048576 bits"});
+  // an error in a long expression quotes a window of it
+  try {
+    parse(std::string(5000, '1') + "+" + std::string(5000, '1') + "+*z", {}, T);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 400u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("column 10003"), std::string::npos) << e.what();
+  }
+}

@@ -9,6 +9,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/catalogue.hpp"
 #include "passivity/reference.hpp"
 
 using namespace hapstab;
@@ -179,6 +180,41 @@ TEST(PassivityBound, GridIsBelowAndConverges) {
     EXPECT_LE(err, prev_err);
     prev_err = err;
   }
+}
+
+// A long pure delay H = 1, z^-n: Re{T z^-n/(1 - z)} = (T/2)(cos n th + cot(th/2) sin n th), whose
+// sup is its limit (n + 1/2) T at w -> 0.
+// The grid used to evaluate the c-form A(c)/B(c) in double, whose monomial coefficients grow like
+// 2^n: it returned 0.34 for n = 50 (b* = 0.0505) and 1e171 for n = 500. Evaluated on the unit
+// circle it is accurate to a few ulps of b*, a bound of 64 ulps leaves room for Horner's error.
+TEST(PassivityBound, GridIsAccurateForLongDelays) {
+  for (int n : {1, 10, 50, 150, 200}) {
+    auto p = make("1", "1/1000", {}, n);
+    const double want = (n + 0.5) / 1000;
+    const Bound g = bound_grid(p, 2001);
+    EXPECT_NEAR(g.value_double(), want, 64 * std::numeric_limits<double>::epsilon() * want) << "n = " << n;
+    EXPECT_NEAR(objective_at(p, 0), want, 1e-15 * want) << "n = " << n;
+    for (long double th : {1e-3L, 0.5L, 3.0L}) {  // the closed form above, in long double
+      const long double ref = 0.0005L * (std::cos(n * th) + std::sin(n * th) / std::tan(th / 2));
+      EXPECT_NEAR(objective_at(p, double(th) * 1000), double(ref), 1e-12 * want) << "n = " << n << ", th = " << double(th);
+    }
+  }
+}
+
+// The objective's degree is limited before any work (numeric/limits.hpp): the exact path costs
+// about degree^4, and catalogue::match runs polynomial products of that size too.
+TEST(PassivityBound, ObjectiveDegreeIsLimited) {
+  for (Method m : {Method::certified, Method::fast, Method::grid}) {
+    auto p = make("1", "1/1000", {}, 201);
+    try {
+      bound(p, m);
+      ADD_FAILURE() << "accepted degree 201 with " << to_string(m);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("degree 201"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("limit of 200"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(catalogue::match(make("1/z^300", "1/1000")), InputError);
 }
 
 TEST(PassivityBound, FractionalDelay) {

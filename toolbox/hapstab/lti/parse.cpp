@@ -1,12 +1,15 @@
 #include "hapstab/lti/parse.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <vector>
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab {
 namespace {
@@ -29,6 +32,15 @@ std::string describe(const Token& t) {
     case Tok::name: return "name '" + t.text + "'";
     default: return "'" + t.text + "'";
   }
+}
+
+// The expression as messages show it: whole up to 120 characters, else a window around
+// `column` with the cut ends marked.
+std::string excerpt(std::string_view src, size_t column) {
+  if (src.size() <= 120) return std::string(src);
+  const size_t at = column == 0 ? 0 : std::min(column - 1, src.size());
+  const size_t from = at > 60 ? at - 60 : 0, to = std::min(src.size(), from + 120);
+  return (from > 0 ? "..." : "") + std::string(src.substr(from, to - from)) + (to < src.size() ? "..." : "");
 }
 
 class Parser {
@@ -54,12 +66,35 @@ class Parser {
   char var_;
   std::vector<Token> tokens_;
   size_t pos_ = 0;
+  int depth_ = 0;
   bool used_T_ = false;
 
   [[noreturn]] void fail(const Token& at, const std::string& what) const {
     std::ostringstream os;
-    os << "expression '" << src_ << "', column " << at.column << ": " << what;
+    os << "expression '" << excerpt(src_, at.column) << "', column " << at.column << ": " << what;
     throw InputError(os.str());
+  }
+
+  // Size of the result of every operation: degree and coefficient bits (numeric/limits.hpp).
+  static long bits(const rational& c) {
+    const auto* q = c.backend().data();
+    return long(mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2));
+  }
+  static long max_bits(const RF& r) {
+    long b = 0;
+    for (const auto* p : {&r.num(), &r.den()})
+      for (const auto& c : p->coeffs()) b = std::max(b, bits(c));
+    return b;
+  }
+  static int max_degree(const RF& r) { return std::max(r.num().degree(), r.den().degree()); }
+  const RF& checked(const RF& r, const Token& at) const {
+    if (max_degree(r) > limits::degree)
+      fail(at, "the result has degree " + std::to_string(max_degree(r)) + ", more than the limit of " +
+                   std::to_string(limits::degree));
+    if (max_bits(r) > limits::coefficient_bits)
+      fail(at, "a coefficient of the result has more than " + std::to_string(limits::coefficient_bits) +
+                   " bits (about 315,000 digits), the limit");
+    return r;
   }
 
   void lex() {
@@ -120,9 +155,9 @@ class Parser {
   RF expr() {
     RF r = term();
     while (peek().kind == Tok::plus || peek().kind == Tok::minus) {
-      bool plus = next().kind == Tok::plus;
+      const Token& op = next();
       RF t = term();
-      r = plus ? r + t : r - t;
+      r = checked(op.kind == Tok::plus ? r + t : r - t, op);
     }
     return r;
   }
@@ -134,26 +169,21 @@ class Parser {
       const Token& op = next();
       RF f = unary();
       if (op.kind == Tok::star) {
-        r = r * f;
+        r = checked(r * f, op);
       } else {
         if (f.num().is_zero()) fail(op, "division by zero");
-        r = r / f;
+        r = checked(r / f, op);
       }
     }
     return r;
   }
 
-  // unary := ('+'|'-') unary | power
+  // unary := ('+'|'-')* power   (a loop, not recursion: "------z" cannot exhaust the stack)
   RF unary() {
-    if (peek().kind == Tok::minus) {
-      next();
-      return -unary();
-    }
-    if (peek().kind == Tok::plus) {
-      next();
-      return unary();
-    }
-    return power();
+    bool negate = false;
+    while (peek().kind == Tok::minus || peek().kind == Tok::plus) negate ^= next().kind == Tok::minus;
+    RF r = power();
+    return negate ? -r : r;
   }
 
   // power := primary ('^' exponent)?   exponent := [+-]? integer | '(' [+-]? integer ')'
@@ -181,7 +211,15 @@ class Parser {
     }
     if (n < 0 && base.num().is_zero()) fail(caret, "division by zero (zero raised to a negative power)");
     if (peek().kind == Tok::caret) fail(peek(), "write (a^b)^c with parentheses: a^b^c is ambiguous");
-    return base.pow(n);
+    // The size of the power is known before it is computed: refuse it before it fills memory.
+    const long k = std::abs(n);
+    if (long(max_degree(base)) * k > limits::degree)
+      fail(caret, "the power has degree " + std::to_string(long(max_degree(base)) * k) + ", more than the limit of " +
+                      std::to_string(limits::degree));
+    if (max_bits(base) * k > limits::coefficient_bits)
+      fail(caret, "the power's coefficients would have about " + std::to_string(max_bits(base) * k) +
+                      " bits, more than the limit of " + std::to_string(limits::coefficient_bits));
+    return checked(base.pow(n), caret);
   }
 
   // primary := number | name | '(' expr ')'
@@ -213,7 +251,10 @@ class Parser {
       case Tok::lparen: {
         next();
         if (peek().kind == Tok::rparen) fail(peek(), "empty parentheses");
+        if (++depth_ > limits::nesting_depth)
+          fail(t, "parentheses nested deeper than " + std::to_string(limits::nesting_depth) + " levels, the limit");
         RF r = expr();
+        --depth_;
         if (peek().kind != Tok::rparen)
           fail(peek(), "expected ')' to close '(' at column " + std::to_string(t.column) + ", found " + describe(peek()));
         next();
@@ -241,7 +282,7 @@ char infer_variable(std::string_view text, const ParseOptions& opt) {
     }
     i = j - 1;
   }
-  if (has_z && has_s) throw InputError("expression '" + std::string(text) + "' mixes the variables s and z");
+  if (has_z && has_s) throw InputError("expression '" + excerpt(text, 1) + "' mixes the variables s and z");
   if (has_z) return 'z';
   if (has_s) return 's';
   return opt.T > 0 ? 'z' : 's';
@@ -256,6 +297,9 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
       throw InputError("parameter name '" + k + "' must start with a letter");
     if (k == "T") throw InputError("parameter 'T' is the sample period: give it with --T, not --set");
   }
+  if (text.size() > limits::expression_chars)
+    throw InputError("expression '" + excerpt(text, 1) + "': " + std::to_string(text.size()) +
+                     " characters, more than the limit of " + std::to_string(limits::expression_chars));
   char var = infer_variable(text, options);
   if (options.parameters.count(std::string(1, var)))
     throw InputError(std::string("parameter '") + var + "' clashes with the variable " + var);
@@ -266,7 +310,7 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
   out.domain = var == 'z' ? Domain::z : Domain::s;
   if (out.domain == Domain::z) {
     if (options.T <= 0)
-      throw InputError("expression '" + std::string(text) + "' is in z: a sample period T > 0 is required (--T)");
+      throw InputError("expression '" + excerpt(text, 1) + "' is in z: a sample period T > 0 is required (--T)");
     out.T = options.T;
   } else {
     out.T = 0;

@@ -193,6 +193,7 @@ std::optional<std::vector<rational>> fir_coefficients(const RF& H, int n) {
 
 std::optional<Match> match(const BoundProblem& raw) {
   const BoundProblem p = with_integer_delay(raw);  // t_d = kT is the integer delay n + k
+  check_problem_size(p);
   const rational& T = p.T;
   const int n = p.delay;
   const rational eta = p.eta;
