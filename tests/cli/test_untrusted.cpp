@@ -76,6 +76,14 @@ TEST(Untrusted, CraftedSceneNameRunsNothingInGnuplotOrLatex) {
   for (const auto& e : entries(dir))
     if (!before.count(e) && e.rfind("out", 0) != 0) added.insert(e);
   EXPECT_TRUE(added.empty()) << *added.begin();
+  // samples.csv parses with Python's csv module into the same columns in every row
+  const auto csv = run_process({"python3", "-c",
+                                "import csv, sys\n"
+                                "rows = list(csv.reader(open(sys.argv[1], newline='', encoding='utf-8')))\n"
+                                "print(len(rows), sorted(set(len(r) for r in rows)), rows[0][:3])",
+                                (dir / "out" / "samples.csv").string()});
+  ASSERT_TRUE(csv.ok()) << csv.describe() << csv.err;
+  EXPECT_NE(csv.out.find(" [9] ['t', 'x0', 'v0']"), std::string::npos) << csv.out;  // t + 8 columns for one DOF
   // the script draws with the real gnuplot, in PNG and in the cairolatex terminal
   ProcessOptions in_out;
   in_out.working_dir = dir / "out";

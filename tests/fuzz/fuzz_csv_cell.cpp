@@ -1,4 +1,6 @@
 // fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-seeds: tests/fuzz/seeds_text
+// fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::csv::cell. The cell must parse by RFC 4180 as one field (quoted:
 // "" is a quote, nothing after the closing quote; unquoted: no , " CR LF) whose value is
 // text(input), prefixed with ' exactly when a spreadsheet would read a formula (= + - @ tab

@@ -1,4 +1,6 @@
 // fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-seeds: tests/fuzz/seeds_text
+// fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::gnuplot::quote. The expression must read back, by gnuplot's rules
 // (nothing is special inside single quotes; "'" is a quote; '.' concatenates), as
 // text(input), and hold no line break (which would end the command).

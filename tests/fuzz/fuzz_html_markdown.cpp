@@ -1,4 +1,6 @@
 // fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-seeds: tests/fuzz/seeds_text
+// fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::html and report::markdown. HTML text and attributes hold no
 // < > " ' (attributes no `) and decode to text(input); URL segments hold only unreserved
 // characters and %XX and decode to the input bytes; a Markdown cell has no unescaped | ` [ ] \

@@ -1,4 +1,6 @@
 // fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-seeds: tests/fuzz/seeds_text
+// fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::latex::escape. Outside the commands the escape writes itself, no
 // character that LaTeX treats specially may remain (so no \write18, \input, ^^5c, $...$, {, #
 // can be formed), and undoing those commands gives text(input) with tabs as spaces.

@@ -124,3 +124,14 @@ TEST(Scene, PassiveClaimCanBeWithdrawn) {
   auto text = replace(kWall, "m = \"1/5\"\nb = \"2\"\nk = \"500\"", "tf = \"1/(s-3)\"\npassive = false");
   EXPECT_NO_THROW(parse_scene(text, "s.toml"));
 }
+
+// Inputs the fuzzer (tests/fuzz/fuzz_scene.cpp) found: each must be an InputError naming the
+// place, never a crash. A table header key starting with a character TOML does not allow
+// ([[$device ]]) tripped an assertion inside toml++ 3.3's header-only parser.
+TEST(Scene, FuzzerFindingsAreInputErrors) {
+  for (const std::string text : {std::string(kWall) + "\n[[$device ]]\n", std::string("[[$device ]]\n")}) {
+    const std::string msg = error_of(text);
+    EXPECT_NE(msg.find("s.toml:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("expected bare key starting character"), std::string::npos) << msg;
+  }
+}

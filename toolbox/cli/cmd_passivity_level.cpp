@@ -20,6 +20,7 @@
 // Exit codes: 0 a level was computed, 2 bad input (including a pole on or outside the unit
 // circle), 3 numerical failure (no method gave a level).
 #include <Eigen/Eigenvalues>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <cmath>
@@ -31,6 +32,7 @@
 #include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/lti/state_space_json.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
@@ -45,53 +47,16 @@ struct Opts {
   bool json = false;
 };
 
-double entry(const nlohmann::json& v, const std::string& where) {
-  if (v.is_number()) return v.get<double>();
-  if (v.is_string()) return to_real<double>(parse_rational(v.get<std::string>(), where));
-  throw InputError(where + ": expected a number or a string with an exact number");
-}
-
-Mat<double> matrix(const nlohmann::json& j, const std::string& key, const std::string& file) {
-  const std::string where = "--ss " + file + ": \"" + key + "\"";
-  if (!j.contains(key)) throw InputError(where + " is missing");
-  const auto& m = j.at(key);
-  if (!m.is_array()) throw InputError(where + " must be an array of rows");
-  if (m.empty()) return Mat<double>(0, 0);
-  const size_t rows = m.size();
-  if (!m[0].is_array()) throw InputError(where + " must be an array of rows");
-  const size_t cols = m[0].size();
-  Mat<double> M(rows, cols);
-  for (size_t i = 0; i < rows; ++i) {
-    if (!m[i].is_array() || m[i].size() != cols)
-      throw InputError(where + ": row " + std::to_string(i + 1) + " does not have " + std::to_string(cols) + " entries");
-    for (size_t c = 0; c < cols; ++c)
-      M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) =
-          entry(m[i][c], where + "[" + std::to_string(i + 1) + "][" + std::to_string(c + 1) + "]");
-  }
-  return M;
-}
-
 StateSpace<double> read_ss(const std::string& file) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError("--ss: cannot read '" + file + "': " + ec.message());
+  if (size > 64u << 20) throw InputError("--ss " + file + ": " + std::to_string(size) + " bytes, more than 64 MB");
   std::ifstream in(file);
   if (!in) throw InputError("--ss: cannot read '" + file + "'");
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const std::exception& e) {
-    throw InputError("--ss " + file + ": not valid JSON (" + e.what() + ")");
-  }
-  if (!j.is_object()) throw InputError("--ss " + file + ": expected a JSON object with A, B, C, D, T");
-  StateSpace<double> s;
-  s.A = matrix(j, "A", file);
-  s.B = matrix(j, "B", file);
-  s.C = matrix(j, "C", file);
-  s.D = matrix(j, "D", file);
-  if (!j.contains("T")) throw InputError("--ss " + file + ": \"T\" (sample period) is missing");
-  const auto& t = j.at("T");
-  s.T = t.is_string() ? parse_rational(t.get<std::string>(), "--ss T") : exact_rational(t.get<double>());
-  if (!(s.T > 0)) throw InputError("--ss " + file + ": \"T\" must be > 0 (a discrete-time system)");
-  s.validate("--ss " + file);
-  return s;
+  std::stringstream text;
+  text << in.rdbuf();
+  return state_space_from_json(text.str(), "--ss " + file);
 }
 
 nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }

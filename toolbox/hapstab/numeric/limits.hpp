@@ -19,8 +19,6 @@ inline constexpr long coefficient_bits = 1L << 20;
 /// Degree of the passivity bound's objective, max(deg N, deg D + n) (passivity/bound.hpp): the
 /// exact path costs about degree^4 (0.8 s at 100, 4 s at 160, 18 s at 200 on one core).
 inline constexpr long bound_degree = 200;
-/// Lines of a --batch file.
-inline constexpr std::size_t batch_lines = 1000000;
 /// States, inputs or outputs of a state space read from a file (--ss).
 inline constexpr int state_space_dim = 500;
 

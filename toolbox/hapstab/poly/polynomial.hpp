@@ -118,9 +118,16 @@ class Polynomial {
   friend Polynomial operator-(Polynomial a, const Polynomial& b) { return a -= b; }
   friend Polynomial operator*(const Polynomial& a, const Polynomial& b) {
     if (a.is_zero() || b.is_zero()) return Polynomial();
+    // Zero coefficients are skipped: delays z^-n and powers of them are sparse, and z^9999
+    // costs 14 products this way instead of ~10^8.
+    std::vector<size_t> nz;
+    for (size_t j = 0; j < b.c_.size(); ++j)
+      if (b.c_[j] != F(0)) nz.push_back(j);
     std::vector<F> r(a.c_.size() + b.c_.size() - 1, F(0));
-    for (size_t i = 0; i < a.c_.size(); ++i)
-      for (size_t j = 0; j < b.c_.size(); ++j) r[i + j] += a.c_[i] * b.c_[j];
+    for (size_t i = 0; i < a.c_.size(); ++i) {
+      if (a.c_[i] == F(0)) continue;
+      for (size_t j : nz) r[i + j] += a.c_[i] * b.c_[j];
+    }
     return Polynomial(std::move(r));
   }
   friend bool operator==(const Polynomial& a, const Polynomial& b) { return a.c_ == b.c_; }
