@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/batch_line.hpp"
 #include "cli/command.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -234,32 +235,6 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   }
 }
 
-std::vector<std::string> split_shell(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool in = false, any = false;
-  char q = 0;
-  for (char ch : line) {
-    if (q) {
-      if (ch == q) q = 0;
-      else cur += ch;
-    } else if (ch == '\'' || ch == '"') {
-      q = ch;
-      any = true;
-    } else if (ch == ' ' || ch == '\t') {
-      if (in || any) out.push_back(cur);
-      cur.clear();
-      in = any = false;
-    } else {
-      cur += ch;
-      in = true;
-    }
-  }
-  if (q) throw InputError("unterminated quote in batch line");
-  if (in || any) out.push_back(cur);
-  return out;
-}
-
 int run_batch(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw InputError("--batch: cannot open '" + file + "'");
@@ -271,7 +246,7 @@ int run_batch(const std::string& file) {
     if (first == std::string::npos || line[first] == '#') continue;
     nlohmann::json j;
     try {
-      auto toks = split_shell(line);
+      auto toks = cli::split_batch_line(line);
       BoundOpts o;
       CLI::App app{"batch line"};
       add_options(app, o, true);
