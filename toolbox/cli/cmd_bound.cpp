@@ -105,6 +105,8 @@ Outcome compute(const BoundOpts& o) {
   if (o.method == "grid") m = Method::grid;
   else if (o.method == "fast") m = Method::fast;
   else if (o.method != "certified") throw InputError("--method must be certified, fast or grid (got " + o.method + ")");
+  if (o.grid < 2 || o.grid > 100000000)
+    throw InputError("--grid-points must be in [2, 1e8] (got " + std::to_string(o.grid) + ")");
   r.b = bound(r.p, m, o.digits, o.grid);
   r.cf = catalogue::match(r.p);
   if (r.cf && r.cf->equation.rfind("(50)", 0) == 0)

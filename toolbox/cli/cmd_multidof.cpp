@@ -175,6 +175,10 @@ std::pair<bool, std::string> decays(const sim::SimResult& r, double T) {
 }
 
 int run_design(const Opts& o) {
+  if (o.iterations < 1 || o.iterations > 10000)
+    throw InputError("--iterations must be in [1, 10000], got " + std::to_string(o.iterations));
+  if (!(o.duration > 0 && o.duration <= 1e6))
+    throw InputError("--duration must be in (0, 1e6] seconds, got " + std::to_string(o.duration));
   const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
   const auto sp = multidof::problem_from_scene(sc);
   multidof::DesignOptions dop;

@@ -36,6 +36,9 @@ struct Opts {
 int run(const Opts& o) {
   static const std::set<std::string> papers{"", "000", "001", "002"};
   if (!papers.count(o.only)) throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001 or 002)");
+  // Inputs and outputs are checked before the proofs run (they take a while).
+  if (!o.out.empty()) output_folder(o.out, "--out");
+  if (!o.table.empty() && !std::ifstream(o.table)) throw InputError("--table: cannot read '" + o.table + "'");
   double seconds = 0;
   auto claims = run_proofs(o.only, o.quiet || o.json, seconds);
   size_t fails = 0;

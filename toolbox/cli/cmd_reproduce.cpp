@@ -47,7 +47,7 @@ int run(const Opts& o) {
   if (!papers.count(o.only))
     throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002 or toolbox)");
   const auto formats = parse_formats(o.format);
-  const fs::path dir = o.out;
+  const fs::path dir = output_folder(o.out, "--out");
   auto t0 = std::chrono::steady_clock::now();
   ReportInput rep;
   if (!o.quiet) std::cerr << "reproduce: running the proofs\n";
@@ -151,9 +151,10 @@ const Register fig_reg({"figure", "Draw one figure (or --list them): data into D
                             }
                             for (const auto& f : figures())
                               if (*name == f.name) {
+                                const auto formats = parse_formats(*format);
+                                output_folder(*out, "--out");
                                 try {
-                                  draw_figure(f, fs::path(*out) / "data", fs::path(*out) / "figures",
-                                              parse_formats(*format));
+                                  draw_figure(f, fs::path(*out) / "data", fs::path(*out) / "figures", formats);
                                 } catch (const FigureSkipped& e) {
                                   throw InputError("figure " + *name + " cannot be drawn here: " + e.what());
                                 }

@@ -207,10 +207,7 @@ int run(const Opts& o) {
     throw InputError(o.scene + ": " + e.what());
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  fs::path dir = o.out;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out: cannot create '" + o.out + "': " + ec.message());
+  const fs::path dir = output_folder(o.out, "--out");
   write_csv(dir, r);
   write_gnuplot(dir, sc, N, r.fine.rows() > 0);
   auto j = summary_json(r.summary, sc);

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -42,6 +43,10 @@ rational option_rational(const std::string& text, const std::string& option);
 
 /// Parses repeated `--set NAME=VALUE` into exact parameters (error names the bad entry).
 std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets);
+
+/// Creates the output folder `dir` of option `option` ("--out") before any work, and checks that
+/// a file can be written in it; InputError (exit 2) naming the option otherwise.
+std::filesystem::path output_folder(const std::string& dir, const std::string& option);
 
 /// Prints JSON (2-space indented) to stdout.
 void print_json(const nlohmann::json& j);

@@ -1,5 +1,6 @@
 // cli/main.cpp -- the `hapstab` command: dispatches to the registered subcommands and maps
 // errors to exit codes (0 ok, 1 property fails, 2 bad input, 3 numerical failure).
+#include <fstream>
 #include <iostream>
 
 #include "cli/command.hpp"
@@ -28,6 +29,22 @@ std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets)
     out[name] = parse_rational(s.substr(eq + 1), "--set " + name);
   }
   return out;
+}
+
+std::filesystem::path output_folder(const std::string& dir, const std::string& option) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) throw InputError(option + ": an empty folder name");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec))
+    throw InputError(option + ": cannot create '" + dir + "': " + (ec ? ec.message() : "not a folder"));
+  const fs::path probe = fs::path(dir) / ".hapstab-write-test";
+  {
+    std::ofstream f(probe);
+    if (!f) throw InputError(option + ": cannot write in '" + dir + "'");
+  }
+  fs::remove(probe, ec);
+  return dir;
 }
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }

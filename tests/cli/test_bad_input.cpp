@@ -1,0 +1,176 @@
+// tests/cli: the bad-input catalogue. Every option of every command (read from its --help, so a
+// new option without a row here fails the first test) has at least one bad value below; each
+// must exit 2 with a message that names what is wrong -- never a crash, an "internal error",
+// exit 3, or work done before the input is checked. Arguments go to the command as an argument
+// vector (report::run_process), never through a shell.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hapstab/report/process.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using hapstab::report::run_process;
+
+struct Case {
+  std::string command;            ///< "bound", "multidof design", ...
+  std::string option;             ///< the option whose value is bad ("name" for a positional)
+  std::vector<std::string> args;  ///< the whole argument list after the command
+  std::string says;               ///< a fragment the message must hold
+};
+
+std::vector<std::string> words(const std::string& command) {
+  std::vector<std::string> w;
+  std::stringstream ss(command);
+  for (std::string x; ss >> x;) w.push_back(x);
+  return w;
+}
+
+hapstab::report::ProcessResult run(const std::string& command, const std::vector<std::string>& args) {
+  std::vector<std::string> argv{HAPSTAB_CLI};
+  for (const auto& w : words(command)) argv.push_back(w);
+  argv.insert(argv.end(), args.begin(), args.end());
+  hapstab::report::ProcessOptions o;
+  o.time_limit = 120;
+  return run_process(argv, o);
+}
+
+const std::string kWall = "K + B*(z-1)/(T*z)";
+const std::string kScene = std::string(HAPSTAB_SOURCE_DIR) + "/examples/001_tightness_below.toml";
+const std::string kMulti = std::string(HAPSTAB_SOURCE_DIR) + "/examples/multidof_case_ii_nominal.toml";
+
+std::vector<Case> catalogue(const std::string& out) {
+  const std::vector<std::string> rlim{"--H", "1/(z-1/2)", "--T", "1", "--gain", "1", "--rho", "1/10"};
+  auto with = [](std::vector<std::string> a, std::initializer_list<std::string> more) {
+    a.insert(a.end(), more);
+    return a;
+  };
+  return {
+      {"r", "--T", {"--T", "0", "--omega", "1"}, "--T"},
+      {"r", "--omega", {"--T", "1", "--omega", "abc"}, "--omega"},
+      {"r", "--terms", {"--T", "1", "--omega", "1", "--terms", "-5"}, "--terms"},
+      {"r", "--digits", {"--T", "1", "--omega", "1", "--digits", "0"}, "--digits"},
+      {"r", "--json", {"--T", "1", "--omega", "1", "--json=maybe"}, "--json"},
+      {"bound", "--H", {"--H", "1/(z-", "--T", "1/1000"}, "column 6"},
+      {"bound", "--H", {"--H", std::string(300, '(') + "z" + std::string(300, ')'), "--T", "1"}, "nested deeper than 200"},
+      {"bound", "--T", {"--H", "1", "--T", "-1"}, "--T"},
+      {"bound", "--set", {"--H", "K", "--T", "1", "--set", "K"}, "--set 'K'"},
+      {"bound", "--set", {"--H", "K", "--T", "1", "--set", "K=x"}, "--set K"},
+      {"bound", "--delay", {"--H", "1", "--T", "1", "--delay", "-2"}, "--delay"},
+      {"bound", "--delay", {"--H", "1", "--T", "1", "--delay", "500"}, "more than the limit of 200"},
+      {"bound", "--frac-delay", {"--H", "1", "--T", "1", "--frac-delay", "x"}, "--frac-delay"},
+      {"bound", "--eta", {"--H", "1", "--T", "1", "--eta", "-1"}, "--eta"},
+      {"bound", "--digits", {"--H", "1", "--T", "1", "--digits", "5"}, "--digits"},
+      {"bound", "--method", {"--H", "1", "--T", "1", "--method", "fastest"}, "--method"},
+      {"bound", "--grid-points", {"--H", "1", "--T", "1", "--method", "grid", "--grid-points", "1"}, "--grid-points"},
+      {"bound", "--explain", {"--H", "1", "--T", "1", "--explain=maybe"}, "--explain"},
+      {"bound", "--allow-noncausal", {"--H", "z", "--T", "1", "--allow-noncausal=maybe"}, "--allow-noncausal"},
+      {"bound", "--damping", {"--H", "1", "--T", "1", "--damping", "abc"}, "--damping"},
+      {"bound", "--json", {"--H", "1", "--T", "1", "--json=maybe"}, "--json"},
+      {"bound", "--curve", {"--H", "1", "--T", "1", "--curve", "/nonexistent-dir/x.dat"}, "--curve"},
+      {"bound", "--batch", {"--batch", "/nonexistent.txt"}, "--batch"},
+      {"wedge", "--H", {"--H", "1/(", "--T", "1"}, "--H"},
+      {"wedge", "--T", {"--H", "1", "--T", "x"}, "--T"},
+      {"wedge", "--set", {"--H", "K", "--T", "1", "--set", "=3"}, "--set"},
+      {"wedge", "--digits", {"--H", "1", "--T", "1", "--digits", "100"}, "--digits"},
+      {"wedge", "--json", {"--H", "1", "--T", "1", "--json=maybe"}, "--json"},
+      {"passivity-level", "--H", {"--H", "z+", "--T", "1"}, "column 3"},
+      {"passivity-level", "--T", {"--H", "1", "--T", "0"}, "--T"},
+      {"passivity-level", "--set", {"--H", "K", "--T", "1", "--set", "K=abc"}, "--set K"},
+      {"passivity-level", "--ss", {"--ss", "/nonexistent.json"}, "--ss"},
+      {"passivity-level", "--kind", {"--H", "1", "--T", "1", "--kind", "wrong"}, "--kind"},
+      {"passivity-level", "--backend", {"--H", "1", "--T", "1", "--backend", "magic"}, "--backend"},
+      {"passivity-level", "--lemma", {"--H", "1", "--T", "1", "--lemma", "3"}, "--lemma"},
+      {"passivity-level", "--grid", {"--H", "1", "--T", "1", "--grid", "1"}, "--grid"},
+      {"passivity-level", "--digits", {"--H", "1", "--T", "1", "--digits", "5"}, "--digits"},
+      {"passivity-level", "--json", {"--H", "1", "--T", "1", "--json=maybe"}, "--json"},
+      {"limit-cycle", "--H", {"--H", "(", "--T", "1", "--gain", "1", "--rho", "1"}, "--H"},
+      {"limit-cycle", "--T", {"--H", "1/(z-1/2)", "--T", "-1", "--gain", "1", "--rho", "1"}, "--T"},
+      {"limit-cycle", "--gain", {"--H", "1/(z-1/2)", "--T", "1", "--gain", "abc", "--rho", "1"}, "--gain"},
+      {"limit-cycle", "--rho", {"--H", "1/(z-1/2)", "--T", "1", "--gain", "1", "--rho", "x"}, "--rho"},
+      {"limit-cycle", "--steps", with(rlim, {"--steps", "-1"}), "--steps"},
+      {"limit-cycle", "--set", with(rlim, {"--set", "K"}), "--set"},
+      {"limit-cycle", "--exact", with(rlim, {"--exact=maybe"}), "--exact"},
+      {"limit-cycle", "--json", with(rlim, {"--json=maybe"}), "--json"},
+      {"simulate", "--scene", {"--scene", "/nonexistent.toml", "--out", out}, "cannot read the scene file"},
+      {"simulate", "--out", {"--scene", kScene, "--out", "/proc/nope"}, "--out"},
+      {"simulate", "--json", {"--scene", kScene, "--out", out, "--json=maybe"}, "--json"},
+      {"simulate", "--quiet", {"--scene", kScene, "--out", out, "--quiet=maybe"}, "--quiet"},
+      {"simulate", "--force", {"--scene", kScene, "--out", out, "--force=maybe"}, "--force"},
+      {"simulate", "--max-output", {"--scene", kScene, "--out", out, "--max-output", "abc"}, "--max-output"},
+      {"simulate", "--set", {"--scene", kScene, "--out", out, "--set", "nope=1"}, "parameters.nope"},
+      {"proofs", "--only", {"--only", "999"}, "--only"},
+      {"proofs", "--out", {"--out", "/proc/nope/x"}, "--out"},
+      {"proofs", "--quiet", {"--quiet=maybe"}, "--quiet"},
+      {"proofs", "--json", {"--json=maybe"}, "--json"},
+      {"proofs", "--table", {"--table", "/nonexistent.md"}, "--table"},
+      {"reproduce", "--out", {"--out", "/proc/nope", "--only", "toolbox"}, "--out"},
+      {"reproduce", "--only", {"--out", out, "--only", "999"}, "--only"},
+      {"reproduce", "--format", {"--out", out, "--format", "gif"}, "--format"},
+      {"reproduce", "--quiet", {"--out", out, "--quiet=maybe"}, "--quiet"},
+      {"figure", "name", {"nosuchfigure", "--out", out}, "unknown figure"},
+      {"figure", "name", {"../../escape", "--out", out}, "unknown figure"},
+      {"figure", "--out", {"sim_tightness", "--out", "/proc/nope"}, "--out"},
+      {"figure", "--format", {"sim_tightness", "--out", out, "--format", "gif"}, "--format"},
+      {"figure", "--list", {"--list=maybe"}, "--list"},
+      {"multidof analyze", "--scene", {"--scene", "/nonexistent.toml"}, "cannot read the scene file"},
+      {"multidof analyze", "--backend", {"--scene", kMulti, "--backend", "magic"}, "--backend"},
+      {"multidof analyze", "--set", {"--scene", kMulti, "--set", "nope=1"}, "parameters.nope"},
+      {"multidof analyze", "--json", {"--scene", kMulti, "--json=maybe"}, "--json"},
+      {"multidof design", "--scene", {"--scene", "/nonexistent.toml"}, "cannot read the scene file"},
+      {"multidof design", "--backend", {"--scene", kMulti, "--backend", "magic"}, "--backend"},
+      {"multidof design", "--set", {"--scene", kMulti, "--set", "nope=1"}, "parameters.nope"},
+      {"multidof design", "--json", {"--scene", kMulti, "--json=maybe"}, "--json"},
+      {"multidof design", "--duration", {"--scene", kMulti, "--duration", "-1"}, "--duration"},
+      {"multidof design", "--iterations", {"--scene", kMulti, "--iterations", "0"}, "--iterations"},
+  };
+}
+
+const char* const kCommands[] = {"r",           "bound",    "wedge",     "passivity-level", "limit-cycle",    "simulate",
+                                 "proofs",      "reproduce", "figure",   "multidof analyze", "multidof design"};
+
+TEST(BadInput, EveryOptionOfEveryCommandHasACase) {
+  const auto cases = catalogue("unused");
+  std::set<std::pair<std::string, std::string>> covered;
+  for (const auto& c : cases) covered.insert({c.command, c.option});
+  const std::regex option(R"(^\s+(?:-[a-zA-Z], ?)?(--[A-Za-z][A-Za-z-]*))");
+  for (const std::string command : kCommands) {
+    const auto help = run(command, {"--help"});
+    ASSERT_EQ(help.exit_code, 0) << command << ": " << help.err;
+    std::stringstream lines(help.out);
+    int options = 0;
+    for (std::string line; std::getline(lines, line);) {
+      std::smatch m;
+      if (!std::regex_search(line, m, option) || m[1] == "--help") continue;
+      ++options;
+      EXPECT_TRUE(covered.count({command, m[1]})) << "hapstab " << command << " " << m[1] << " has no bad-input case";
+    }
+    EXPECT_GT(options, 0) << command << ": no option read from --help";
+  }
+  // a positional argument is in the catalogue too
+  EXPECT_TRUE(covered.count({"figure", "name"}));
+}
+
+TEST(BadInput, EachCaseExitsTwoAndSaysWhat) {
+  const auto dir = hapstab_test::fresh_dir("bad_input");
+  const auto out = (dir / "out").string();
+  for (const auto& c : catalogue(out)) {
+    const auto r = run(c.command, c.args);
+    const std::string all = r.out + r.err;
+    EXPECT_EQ(r.exit_code, 2) << "hapstab " << c.command << " (" << c.option << "): " << r.describe() << "\n" << all;
+    EXPECT_NE(all.find(c.says), std::string::npos) << "hapstab " << c.command << " (" << c.option << ") did not say '"
+                                                    << c.says << "':\n" << all.substr(0, 600);
+    EXPECT_EQ(all.find("internal error"), std::string::npos) << all;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
