@@ -185,6 +185,7 @@ int run(const Opts& o) {
        << " MB; raise simulate.record_every, narrow simulate.window, or pass --force (or --max-output MB)";
     throw InputError(os.str());
   }
+  const fs::path dir = output_folder(o.out, "--out");  // before the run, which may take long
   sim::SimOptions so;
   so.steps = S.steps;
   so.record_every = S.record_every;
@@ -207,7 +208,6 @@ int run(const Opts& o) {
     throw InputError(o.scene + ": " + e.what());
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const fs::path dir = output_folder(o.out, "--out");
   write_csv(dir, r);
   write_gnuplot(dir, sc, N, r.fine.rows() > 0);
   auto j = summary_json(r.summary, sc);
