@@ -59,6 +59,10 @@ TEST(Process, AMissingProgramIsNamed) {
   EXPECT_FALSE(r.ok());
   EXPECT_NE(r.describe().find("hapstab-no-such-program-xyz"), std::string::npos) << r.describe();
   EXPECT_FALSE(run_process({}).started);
+  ProcessOptions o;
+  o.working_dir = "/nonexistent-hapstab-folder";
+  EXPECT_NE(run_process({"true"}, o).describe().find("working folder '/nonexistent-hapstab-folder' does not exist"),
+            std::string::npos);
 }
 
 TEST(Process, StdinIsEmptyAndWorkingDirIsHonoured) {
@@ -77,7 +81,7 @@ TEST(Process, TimeLimitStopsTheChild) {
   const auto r = run_process({"sleep", "60"}, o);
   EXPECT_TRUE(r.timed_out);
   EXPECT_FALSE(r.ok());
-  EXPECT_NE(r.describe(o).find("time limit of 0.3 s"), std::string::npos) << r.describe(o);
+  EXPECT_NE(r.describe().find("time limit of 0.3 s"), std::string::npos) << r.describe();
 }
 
 TEST(Process, OutputBeyondTheLimitIsDroppedWithoutBlockingTheChild) {

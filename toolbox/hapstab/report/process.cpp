@@ -75,10 +75,10 @@ bool drain(Pipe& out, Pipe& err, ProcessResult& r, const ProcessOptions& o) {
 
 }  // namespace
 
-std::string ProcessResult::describe(const ProcessOptions& o) const {
+std::string ProcessResult::describe() const {
   std::ostringstream s;
   if (!started) s << "could not be run: " << err;
-  else if (timed_out) s << "stopped at the time limit of " << o.time_limit << " s";
+  else if (timed_out) s << "stopped at the time limit of " << time_limit << " s";
   else if (signal) s << "killed by signal " << signal << " (" << strsignal(signal) << ")";
   else s << "exit code " << exit_code;
   return s.str();
@@ -86,6 +86,7 @@ std::string ProcessResult::describe(const ProcessOptions& o) const {
 
 ProcessResult run_process(const std::vector<std::string>& argv, const ProcessOptions& o) {
   ProcessResult r;
+  r.time_limit = o.time_limit;
   if (argv.empty() || argv[0].empty()) {
     r.err = "no program named";
     return r;
@@ -111,7 +112,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, const ProcessOpt
   out.close_end(1);
   err.close_end(1);
   if (rc != 0) {
-    r.err = "'" + argv[0] + "': " + std::strerror(rc);
+    std::error_code ec;
+    r.err = !o.working_dir.empty() && !std::filesystem::is_directory(o.working_dir, ec)
+                ? "the working folder '" + o.working_dir.string() + "' does not exist"
+                : "'" + argv[0] + "': " + std::strerror(rc);
     return r;
   }
   r.started = true;
@@ -131,7 +135,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const ProcessOpt
 ProcessResult run_checked(const std::vector<std::string>& argv, const std::string& what, const ProcessOptions& o) {
   ProcessResult r = run_process(argv, o);
   if (!r.ok())
-    throw NumericalError(what + " failed (" + r.describe(o) + ")" + (r.err.empty() && r.out.empty() ? "" : ":\n") +
+    throw NumericalError(what + " failed (" + r.describe() + ")" + (r.err.empty() && r.out.empty() ? "" : ":\n") +
                          r.err + r.out);
   return r;
 }

@@ -22,11 +22,12 @@ struct ProcessResult {
   int exit_code = -1;      ///< the child's exit status; -1 when it did not exit normally
   int signal = 0;          ///< the signal that ended it, 0 if none
   bool timed_out = false;  ///< stopped at ProcessOptions::time_limit
+  double time_limit = 0;   ///< the limit it ran under (seconds; 0 = none)
   bool started = false;    ///< false: the program could not be run (`err` says why)
   std::string out, err;
   bool ok() const { return started && exit_code == 0; }
   /// "exit code 3", "killed by signal 11", "stopped at the time limit of 300 s", "could not be run: ...".
-  std::string describe(const ProcessOptions& o = {}) const;
+  std::string describe() const;
 };
 
 /// Runs argv[0] (looked up in PATH when it holds no '/') with arguments argv[1..].
