@@ -25,3 +25,26 @@ hapstab_find_c_library(MPFR mpfr mpfr.h)
 hapstab_find_c_library(MPFI mpfi mpfi.h)
 hapstab_find_c_library(DSDP dsdp dsdp5.h dsdp)
 hapstab_find_c_library(CSDP sdp declarations.h csdp)
+
+# FLINT (exact polynomial and matrix algebra) and Arb (ball arithmetic). FLINT 3 ships Arb
+# inside it (flint/arb.h, one libflint); FLINT 2.9 (Debian 12) has Arb as a separate library
+# (libflint-arb, headers arb.h ... in the include root). Both are found here; code includes
+# hapstab/numeric/flint.hpp, which picks the right header by HAPSTAB_FLINT3.
+if(NOT TARGET hapstab_dep_flint)
+  find_library(FLINT_LIBRARY NAMES flint REQUIRED)
+  find_path(FLINT_INCLUDE_DIR NAMES flint/fmpq_poly.h REQUIRED)
+  add_library(hapstab_dep_flint INTERFACE IMPORTED GLOBAL)
+  if(EXISTS "${FLINT_INCLUDE_DIR}/flint/arb.h")
+    set_target_properties(hapstab_dep_flint PROPERTIES
+      INTERFACE_LINK_LIBRARIES "${FLINT_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${FLINT_INCLUDE_DIR}"
+      INTERFACE_COMPILE_DEFINITIONS "HAPSTAB_FLINT3=1")
+  else()
+    find_library(ARB_LIBRARY NAMES flint-arb arb REQUIRED)
+    find_path(ARB_INCLUDE_DIR NAMES arb.h PATH_SUFFIXES arb REQUIRED)
+    set_target_properties(hapstab_dep_flint PROPERTIES
+      INTERFACE_LINK_LIBRARIES "${ARB_LIBRARY};${FLINT_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${FLINT_INCLUDE_DIR};${ARB_INCLUDE_DIR}"
+      INTERFACE_COMPILE_DEFINITIONS "HAPSTAB_FLINT3=0")
+  endif()
+endif()

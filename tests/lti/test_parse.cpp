@@ -126,7 +126,7 @@ TEST(Parse, InterconnectionsAreExact) {
 
 // Resource limits (numeric/limits.hpp), checked before the work they bound: no input, however
 // long or deep, may exhaust the stack or memory. Messages show an excerpt, not the whole input.
-TEST(Parse, LimitsOnLengthDepthDegreeAndCoefficientSize) {
+TEST(Parse, LimitsOnLengthDepthDegreeAndSize) {
   const rational T(1, 1000);
   auto nested = [](int depth) { return std::string(size_t(depth), '(') + "z" + std::string(size_t(depth), ')'); };
   EXPECT_NO_THROW(parse(nested(200), {}, T));
@@ -137,8 +137,18 @@ TEST(Parse, LimitsOnLengthDepthDegreeAndCoefficientSize) {
   expect_error(std::string(100001, '-'), {"more than the limit of 100000"});
   expect_error("(z^5000)*(z^5001)", {"degree 10001, more than the limit of 10000"});
   expect_error("(z^100 + 1)^101", {"the power has degree 10100"});
-  expect_error("(1e999999)^9999", {"bits, more than the limit of 1048576"});
-  expect_error("(1e999999)*(1e999999)", {"more than 1048576 bits"});
+  // size: 2^20 bits per intermediate result, predicted for a power before FLINT computes it
+  expect_error("(1e999999)^9999", {"could take up to", "bits, more than the limit of 1048576"});
+  expect_error("(1e199999)*(1e199999)", {"bits, more than the limit of 1048576"});
+  expect_error("(z-1/3)^9999", {"could take up to", "more than the limit of 1048576"});
+  expect_error("1/(z-1/3)^5000 + 1/(z-2/7)^5000", {"more than the limit of 1048576"});
+  // the prediction counts terms, not degree: a sparse power of a delay is small
+  EXPECT_EQ(parse("(z^100-1)^50/z^5000", {}, T).H.num().nonzero_terms(), 51u);
+  EXPECT_EQ(parse("(z-1/3)^300", {}, T).H.num().coeff(0), rational(integer(1), boost::multiprecision::pow(integer(3), 300)));
+  // total: 2^24 bits produced by all operations of one expression
+  std::string many = "(z-1/3)^200";
+  for (int i = 0; i < 200; ++i) many += "+(z-1/3)^200";
+  expect_error(many, {"produced", "more than the limit of 16777216"});
   // an error in a long expression quotes a window of it
   try {
     parse(std::string(5000, '1') + "+" + std::string(5000, '1') + "+*z", {}, T);

@@ -67,6 +67,7 @@ class Parser {
   std::vector<Token> tokens_;
   size_t pos_ = 0;
   int depth_ = 0;
+  long spent_bits_ = 0;
   bool used_T_ = false;
 
   [[noreturn]] void fail(const Token& at, const std::string& what) const {
@@ -75,25 +76,51 @@ class Parser {
     throw InputError(os.str());
   }
 
-  // Size of the result of every operation: degree and coefficient bits (numeric/limits.hpp).
+  // Size of every intermediate result (numeric/limits.hpp): its degree, its bits (all the
+  // coefficients of numerator and denominator), and the bits the expression has produced so far.
   static long bits(const rational& c) {
     const auto* q = c.backend().data();
     return long(mpz_sizeinbase(mpq_numref(q), 2) + mpz_sizeinbase(mpq_denref(q), 2));
   }
-  static long max_bits(const RF& r) {
+  static long max_bits(const P& p) {
+    long b = 0;
+    for (const auto& c : p.coeffs()) b = std::max(b, bits(c));
+    return b;
+  }
+  static long size_bits(const RF& r) {
     long b = 0;
     for (const auto* p : {&r.num(), &r.den()})
-      for (const auto& c : p->coeffs()) b = std::max(b, bits(c));
+      for (const auto& c : p->coeffs()) b += bits(c);
     return b;
   }
   static int max_degree(const RF& r) { return std::max(r.num().degree(), r.den().degree()); }
-  const RF& checked(const RF& r, const Token& at) const {
+  // An upper bound on the bits of p^k, known before it is computed: at most
+  // min(k deg p + 1, C(k + t - 1, t - 1)) terms for t nonzero terms (the monomials of a
+  // multinomial), each at most k (bits + log2 t + 1) bits. Saturates at 2^62.
+  static long predicted_power_bits(const P& p, long k) {
+    const long t = long(p.nonzero_terms());
+    if (t == 0) return 0;
+    long terms = 1;
+    for (long i = 1; i < t && terms <= long(limits::degree) + 1; ++i)  // C(k+t-1, t-1), capped
+      terms = terms > (1L << 40) / (k + i) ? (1L << 40) : terms * (k + i) / i;
+    terms = std::min(terms, long(p.degree()) * k + 1);
+    long log_t = 1;
+    while ((1L << log_t) < t) ++log_t;
+    const long per_term = k * (max_bits(p) + log_t + 1);
+    return per_term > (1L << 62) / terms ? (1L << 62) : terms * per_term;
+  }
+  const RF& checked(const RF& r, const Token& at) {
     if (max_degree(r) > limits::degree)
       fail(at, "the result has degree " + std::to_string(max_degree(r)) + ", more than the limit of " +
                    std::to_string(limits::degree));
-    if (max_bits(r) > limits::coefficient_bits)
-      fail(at, "a coefficient of the result has more than " + std::to_string(limits::coefficient_bits) +
-                   " bits (about 315,000 digits), the limit");
+    const long b = size_bits(r);
+    if (b > limits::expression_bits)
+      fail(at, "the result's exact coefficients take " + std::to_string(b) + " bits, more than the limit of " +
+                   std::to_string(limits::expression_bits));
+    spent_bits_ += b;
+    if (spent_bits_ > limits::expansion_bits)
+      fail(at, "expanding the expression up to here has produced " + std::to_string(spent_bits_) +
+                   " bits of exact coefficients, more than the limit of " + std::to_string(limits::expansion_bits));
     return r;
   }
 
@@ -216,9 +243,10 @@ class Parser {
     if (long(max_degree(base)) * k > limits::degree)
       fail(caret, "the power has degree " + std::to_string(long(max_degree(base)) * k) + ", more than the limit of " +
                       std::to_string(limits::degree));
-    if (max_bits(base) * k > limits::coefficient_bits)
-      fail(caret, "the power's coefficients would have about " + std::to_string(max_bits(base) * k) +
-                      " bits, more than the limit of " + std::to_string(limits::coefficient_bits));
+    const long predicted = predicted_power_bits(base.num(), k) + predicted_power_bits(base.den(), k);
+    if (predicted > limits::expression_bits)
+      fail(caret, "the power's exact coefficients could take up to " + std::to_string(predicted) +
+                      " bits, more than the limit of " + std::to_string(limits::expression_bits));
     return checked(base.pow(n), caret);
   }
 

@@ -14,8 +14,14 @@ inline constexpr std::size_t expression_chars = 100000;
 inline constexpr int nesting_depth = 200;
 /// Degree of the numerator or denominator of a parsed transfer function.
 inline constexpr int degree = 10000;
-/// Bits of one exact coefficient (numerator + denominator): about 315,000 decimal digits.
-inline constexpr long coefficient_bits = 1L << 20;
+/// Size of one exact intermediate result of an expression: the bits of all its coefficients,
+/// numerator and denominator polynomials together (2^20 bits = 128 KB; a dense degree-100
+/// model with 1000-bit coefficients is a tenth of it). The cost of one operation (a FLINT
+/// product, quotient or gcd) is bounded by the size of its operands.
+inline constexpr long expression_bits = 1L << 20;
+/// Bits produced by all the operations of one expression together (2^24 = 16 x the above): an
+/// expression cannot repeat a near-limit operation thousands of times.
+inline constexpr long expansion_bits = 1L << 24;
 /// Degree of the passivity bound's objective, max(deg N, deg D + n) (passivity/bound.hpp): the
 /// exact path costs about degree^4 (0.8 s at 100, 4 s at 160, 18 s at 200 on one core).
 inline constexpr long bound_degree = 200;

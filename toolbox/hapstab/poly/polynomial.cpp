@@ -1,9 +1,12 @@
-// Explicit instantiations of the exact (rational) polynomial algebra, and to_string.
+// Explicit instantiations of the exact (rational) polynomial algebra, its FLINT kernels, and
+// to_string.
 #include "hapstab/poly/polynomial.hpp"
 
 #include "hapstab/poly/rational_function.hpp"
 
-#include <cstdint>
+#include <vector>
+
+#include "hapstab/numeric/flint.hpp"
 
 namespace hapstab {
 
@@ -14,70 +17,56 @@ template class RationalFunction<rational>;
 
 namespace {
 
-using u64 = std::uint64_t;
-
-// arithmetic modulo a prime p < 2^31: products fit in 64 bits (no 128-bit division)
-u64 mulmod(u64 a, u64 b, u64 p) { return a * b % p; }
-u64 invmod(u64 a, u64 p) {  // extended Euclid; a != 0 mod p
-  std::int64_t r0 = static_cast<std::int64_t>(p), r1 = static_cast<std::int64_t>(a), s0 = 0, s1 = 1;
-  while (r1 != 0) {
-    const std::int64_t qt = r0 / r1;
-    std::swap(r0, r1);
-    r1 -= qt * r0;
-    std::swap(s0, s1);
-    s1 -= qt * s0;
-  }
-  return static_cast<u64>(s0 < 0 ? s0 + static_cast<std::int64_t>(p) : s0);
+// Polynomial<rational> -> fmpq_poly (one common denominator; exact).
+void to_flint(const Polynomial<rational>& a, flint::QPoly& out) {
+  const auto& c = a.coeffs();
+  std::vector<__mpq_struct> view(c.size());  // shallow views of the coefficients, read only
+  for (size_t i = 0; i < c.size(); ++i) view[i] = *c[i].backend().data();
+  fmpq_poly_set_array_mpq(out.get(), reinterpret_cast<const mpq_t*>(view.data()), slong(c.size()));
 }
-u64 mod_p(const integer& z, u64 p) { return mpz_fdiv_ui(z.backend().data(), p); }  // in [0, p), z < 0 too
-
-// a mod p as a dense vector (ascending), scaled by the (nonzero mod p) lcm of the denominators;
-// false if p divides a denominator or the leading numerator (the degree would drop).
-bool reduce(const Polynomial<rational>& a, u64 p, std::vector<u64>& out) {
-  out.clear();
-  for (const auto& c : a.coeffs()) {
-    const u64 d = mod_p(den(c), p);
-    if (d == 0) return false;
-    out.push_back(mulmod(mod_p(num(c), p), invmod(d, p), p));
-  }
-  return out.back() != 0;
-}
-
-// degree of gcd(a, b) over Z/p (a, b nonzero with their true degrees)
-int gcd_degree_mod(std::vector<u64> a, std::vector<u64> b, u64 p) {
-  if (a.size() < b.size()) std::swap(a, b);
-  while (!b.empty()) {
-    const u64 inv = invmod(b.back(), p);
-    const size_t db = b.size() - 1;
-    while (a.size() >= b.size()) {
-      const u64 f = mulmod(a.back(), inv, p);
-      const size_t shift = a.size() - b.size();
-      for (size_t i = 0; i < db; ++i) a[shift + i] = (a[shift + i] + p - mulmod(f, b[i], p)) % p;
-      a.pop_back();
-      while (!a.empty() && a.back() == 0) a.pop_back();
-    }
-    std::swap(a, b);
-  }
-  return static_cast<int>(a.size()) - 1;
+Polynomial<rational> from_flint(const flint::QPoly& p) {
+  std::vector<rational> c(size_t(fmpq_poly_length(p.get())));
+  for (size_t i = 0; i < c.size(); ++i) fmpq_poly_get_coeff_mpq(c[i].backend().data(), p.get(), slong(i));
+  return Polynomial<rational>(std::move(c));
 }
 
 }  // namespace
 
-bool coprime_modular(const Polynomial<rational>& a, const Polynomial<rational>& b) {
-  if (a.is_zero() || b.is_zero()) return false;
-  if (a.degree() == 0 || b.degree() == 0) return true;
-  // primes just below 2^31; a prime dividing a leading numerator or a denominator is skipped
-  static const u64 primes[] = {2147483647ULL, 2147483629ULL, 2147483587ULL, 2147483579ULL, 2147483563ULL};
-  std::vector<u64> ra, rb;
-  for (u64 p : primes)
-    if (reduce(a, p, ra) && reduce(b, p, rb)) return gcd_degree_mod(ra, rb, p) == 0;
-  return false;
+namespace detail {
+
+Polynomial<rational> flint_mul(const Polynomial<rational>& a, const Polynomial<rational>& b) {
+  flint::QPoly fa, fb, r;
+  to_flint(a, fa);
+  to_flint(b, fb);
+  fmpq_poly_mul(r.get(), fa.get(), fb.get());
+  return from_flint(r);
 }
+
+Polynomial<rational> flint_pow(const Polynomial<rational>& a, unsigned n) {
+  flint::QPoly fa, r;
+  to_flint(a, fa);
+  fmpq_poly_pow(r.get(), fa.get(), n);
+  return from_flint(r);
+}
+
+std::pair<Polynomial<rational>, Polynomial<rational>> flint_divrem(const Polynomial<rational>& a,
+                                                                   const Polynomial<rational>& b) {
+  flint::QPoly fa, fb, q, r;
+  to_flint(a, fa);
+  to_flint(b, fb);
+  fmpq_poly_divrem(q.get(), r.get(), fa.get(), fb.get());
+  return {from_flint(q), from_flint(r)};
+}
+
+}  // namespace detail
 
 template <>
 Polynomial<rational> gcd(Polynomial<rational> a, Polynomial<rational> b) {
-  if (coprime_modular(a, b)) return Polynomial<rational>(rational(1));
-  return detail::euclid_gcd(std::move(a), std::move(b));
+  flint::QPoly fa, fb, g;
+  to_flint(a, fa);
+  to_flint(b, fb);
+  fmpq_poly_gcd(g.get(), fa.get(), fb.get());  // monic; gcd(0, 0) = 0
+  return from_flint(g);
 }
 
 std::string to_string(const Polynomial<rational>& p, const std::string& var) {

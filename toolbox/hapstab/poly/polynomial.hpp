@@ -9,13 +9,12 @@
 // scalar_cast: complex<double>, mpfloat<D>, interval<D> (outward-rounded, so evaluating an
 // exact rational polynomial at an interval encloses the true value), rational.
 //
-// gcd is Euclid's algorithm with monic normalisation at every step (Boost.Math's polynomial
-// has no gcd over rationals); the result is monic, gcd(0, 0) = 0. Over `rational` a modular
-// filter runs first: if a and b are coprime modulo a prime p that divides no denominator and
-// neither leading numerator, they are coprime over Q (a common factor g would survive mod p
-// with its degree, since lc(g) divides the leading coefficients) -- the usual case (the
-// square-free test gcd(p, p'), the cancellation of a transfer function), decided in machine
-// integers instead of by coefficient-exploding rational Euclid.
+// Over `rational`, products beyond a few terms, powers, division and gcd run on FLINT's
+// fmpq_poly (polynomial.cpp): Kronecker/Schönhage-Strassen products and a modular gcd instead
+// of schoolbook loops and coefficient-exploding Euclid (a degree-26 gcd with a common factor:
+// 45 ms -> 32 us). Small and sparse products (delays z^-n) stay on the loop below, which skips
+// zero coefficients. Over floating types gcd is Euclid's algorithm with monic normalisation at
+// every step. gcd is monic; gcd(0, 0) = 0.
 #pragma once
 
 #include <complex>
@@ -61,6 +60,19 @@ X scalar_cast(const F& c) {
 }
 
 template <class F>
+class Polynomial;
+
+namespace detail {
+// The exact operations on FLINT (polynomial.cpp). A product goes there when it has at least
+// flint_min_products nonzero coefficient products (below that the conversion costs more).
+inline constexpr size_t flint_min_products = 64;
+Polynomial<rational> flint_mul(const Polynomial<rational>& a, const Polynomial<rational>& b);
+Polynomial<rational> flint_pow(const Polynomial<rational>& a, unsigned n);
+std::pair<Polynomial<rational>, Polynomial<rational>> flint_divrem(const Polynomial<rational>& a,
+                                                                   const Polynomial<rational>& b);
+}  // namespace detail
+
+template <class F>
 class Polynomial {
  public:
   using value_type = F;
@@ -85,6 +97,11 @@ class Polynomial {
   }
 
   int degree() const { return static_cast<int>(c_.size()) - 1; }
+  size_t nonzero_terms() const {
+    size_t n = 0;
+    for (const auto& x : c_) n += x != F(0);
+    return n;
+  }
   F coeff(int i) const { return (i >= 0 && i < static_cast<int>(c_.size())) ? c_[i] : F(0); }
   const std::vector<F>& coeffs() const { return c_; }
   const F& leading() const {
@@ -123,6 +140,9 @@ class Polynomial {
     std::vector<size_t> nz;
     for (size_t j = 0; j < b.c_.size(); ++j)
       if (b.c_[j] != F(0)) nz.push_back(j);
+    if constexpr (std::is_same_v<F, rational>) {
+      if (nz.size() * a.nonzero_terms() >= detail::flint_min_products) return detail::flint_mul(a, b);
+    }
     std::vector<F> r(a.c_.size() + b.c_.size() - 1, F(0));
     for (size_t i = 0; i < a.c_.size(); ++i) {
       if (a.c_[i] == F(0)) continue;
@@ -134,6 +154,9 @@ class Polynomial {
   friend bool operator!=(const Polynomial& a, const Polynomial& b) { return !(a == b); }
 
   Polynomial pow(unsigned n) const {
+    if constexpr (std::is_same_v<F, rational>) {
+      if (n >= 2 && nonzero_terms() >= 2) return detail::flint_pow(*this, n);
+    }
     Polynomial r(F(1)), b = *this;
     while (n) {
       if (n & 1u) r = r * b;
@@ -199,6 +222,9 @@ std::pair<Polynomial<F>, Polynomial<F>> divmod(const Polynomial<F>& a, const Pol
   if (b.is_zero()) throw InputError("divmod: division by the zero polynomial");
   const int db = b.degree();
   if (a.degree() < db) return {Polynomial<F>(), a};
+  if constexpr (std::is_same_v<F, rational>) {
+    if (size_t(a.degree() - db + 1) * b.nonzero_terms() >= detail::flint_min_products) return detail::flint_divrem(a, b);
+  }
   std::vector<F> r = a.coeffs();
   std::vector<F> q(static_cast<size_t>(a.degree() - db) + 1, F(0));
   const F& lb = b.leading();
@@ -229,8 +255,8 @@ Polynomial<F> euclid_gcd(Polynomial<F> a, Polynomial<F> b) {
 }
 }  // namespace detail
 
-/// Monic greatest common divisor (Euclid, monic normalisation each step); gcd(0,0) = 0.
-/// Over `rational`, preceded by the exact modular coprimality filter described above.
+/// Monic greatest common divisor; gcd(0,0) = 0. Over `rational` FLINT's fmpq_poly_gcd, over
+/// floating types Euclid with monic normalisation at each step.
 template <class F>
 Polynomial<F> gcd(Polynomial<F> a, Polynomial<F> b) {
   return detail::euclid_gcd(std::move(a), std::move(b));
@@ -243,10 +269,5 @@ extern template class Polynomial<rational>;
 extern template std::pair<Polynomial<rational>, Polynomial<rational>> divmod(const Polynomial<rational>&,
                                                                              const Polynomial<rational>&);
 template <> Polynomial<rational> gcd(Polynomial<rational>, Polynomial<rational>);
-
-/// True when a and b provably have no common factor over Q, decided modulo a 31-bit prime
-/// (false also when every tried prime divided a leading numerator or a denominator: then
-/// "don't know"). Exact: never true for polynomials with a common non-constant factor.
-bool coprime_modular(const Polynomial<rational>& a, const Polynomial<rational>& b);
 
 }  // namespace hapstab

@@ -1,0 +1,43 @@
+// hapstab/numeric/flint.hpp -- the one door to FLINT (exact polynomials and matrices over Z
+// and Q) and Arb (ball arithmetic). It hides the two layouts the libraries come in: FLINT 2.9
+// with Arb as a separate library (Debian 12: arb.h in the include root) and FLINT 3 with Arb
+// inside (flint/arb.h); HAPSTAB_FLINT3 is set by cmake/hapstabDependencies.cmake.
+//
+// Only the .cpp files of numeric/, poly/ and lmi/ include this header: no other public header
+// names a FLINT or Arb type, and Boost.Multiprecision (numeric/scalar.hpp) stays the scalar
+// tower users see. The owners below are move-only RAII wrappers; the conversions are exact.
+#pragma once
+
+#include <utility>
+
+#include <flint/fmpq.h>
+#include <flint/fmpq_poly.h>
+#include <flint/fmpz.h>
+
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::flint {
+
+/// An fmpq_poly_t that clears itself.
+class QPoly {
+ public:
+  QPoly() { fmpq_poly_init(p_); }
+  ~QPoly() { fmpq_poly_clear(p_); }
+  QPoly(const QPoly&) = delete;
+  QPoly& operator=(const QPoly&) = delete;
+  fmpq_poly_struct* get() { return p_; }
+  const fmpq_poly_struct* get() const { return p_; }
+
+ private:
+  fmpq_poly_t p_;
+};
+
+/// Exact rational -> fmpq and back.
+inline void set(fmpq_t out, const rational& q) { fmpq_set_mpq(out, q.backend().data()); }
+inline rational to_rational(const fmpq_t q) {
+  rational r;
+  fmpq_get_mpq(r.backend().data(), q);
+  return r;
+}
+
+}  // namespace hapstab::flint
