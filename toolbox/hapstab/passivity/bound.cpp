@@ -795,7 +795,11 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
     out.omega = enclosure_decimal(out.omega_lo, out.omega_hi, 17);
     return out;
   }
+  // t_d = (p/q) T with a small q: exact, raising the working precision as the integer-delay path
+  // does (a degree-100 objective in cos(wT/q) can need more than 50 digits to isolate its roots)
   if (certified_frac_exact<D>(pb, digits, 96, out)) return out;
+  if (D < 100 && digits <= 80 && certified_frac_exact<100>(pb, digits, 96, out)) return out;
+  if (certified_frac_exact<300>(pb, digits, 96, out)) return out;
   // branch-and-bound (t_d/T with a large denominator): poles on the unit circle are outside it
   for (const auto& r : isolate_real_roots(o.B, rational(-1), rational(1)))
     if (!(r.is_exact() && r.lo == -1))
