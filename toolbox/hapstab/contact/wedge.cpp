@@ -338,22 +338,6 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
   return best;
 }
 
-bool schur_stable(const Polynomial<rational>& p0) {
-  if (p0.is_zero()) throw InputError("schur_stable: the zero polynomial");
-  Poly p = p0.monic();
-  while (p.degree() > 0) {
-    const int n = p.degree();
-    const rational a0 = p.coeff(0), an = p.leading();
-    if (abs(a0) >= abs(an)) return false;
-    std::vector<rational> rev(static_cast<size_t>(n) + 1);
-    for (int i = 0; i <= n; ++i) rev[i] = p.coeff(n - i);
-    Poly q = p * an - Poly(std::move(rev)) * a0;  // constant term cancels
-    std::vector<rational> c(q.coeffs().begin() + 1, q.coeffs().end());
-    p = Poly(std::move(c)).monic();
-  }
-  return true;
-}
-
 bool has_root_on_unit_circle(const Polynomial<rational>& p) {
   if (p.is_zero()) throw InputError("has_root_on_unit_circle: the zero polynomial");
   if (p.degree() <= 0) return false;

@@ -30,6 +30,7 @@
 #include "hapstab/lti/tf.hpp"
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/poly/rational_function.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::contact {
 
@@ -77,8 +78,6 @@ struct Assumptions {
 };
 Assumptions check_assumptions(const TransferFunction& H, const rational& k = 1);
 
-/// Exact Schur stability of a polynomial in z (all roots in |z| < 1), Schur-Cohn-Jury over Q.
-bool schur_stable(const Polynomial<rational>& p);
 /// Exact: p has a root on the unit circle |z| = 1.
 bool has_root_on_unit_circle(const Polynomial<rational>& p);
 

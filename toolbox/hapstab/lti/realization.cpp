@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/flint_poly.hpp"
 
 namespace hapstab {
 
@@ -67,17 +68,16 @@ StateSpace<Q> tf2ss(const TransferMatrix& G) {
 }
 
 Polynomial<Q> charpoly(const MQ& A) {
-  // Faddeev-LeVerrier: M_0 = 0, c_n = 1; M_k = A M_{k-1} + c_{n-k+1} I, c_{n-k} = -tr(A M_k)/k.
-  const auto n = A.rows();
-  std::vector<Q> c(n + 1);
-  c[n] = 1;
-  MQ M = MQ::Zero(n, n);
-  const MQ I = MQ::Identity(n, n);
-  for (Eigen::Index k = 1; k <= n; ++k) {
-    M = A * M + c[n - k + 1] * I;
-    c[n - k] = -(A * M).trace() / Q(k);
-  }
-  return Polynomial<Q>(c);
+  // FLINT's fmpq_mat_charpoly (fraction-free over the common denominator): an order-40 matrix in
+  // milliseconds, where Faddeev-LeVerrier in rationals took seconds.
+  const long n = static_cast<long>(A.rows());
+  if (n == 0) return Polynomial<Q>(Q(1));
+  flint::QMat M(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) flint::set(M.at(i, j), A(i, j));
+  flint::QPoly p;
+  fmpq_mat_charpoly(p.get(), M.get());
+  return flint::from_flint(p);
 }
 
 TransferMatrix ss2tf(const StateSpace<Q>& sys) {

@@ -135,44 +135,7 @@ StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& e
   return {A, B, C, D, T};
 }
 
-bool schur_stable(const MatQ& A) {
-  if (A.rows() == 0) return true;
-  P p = charpoly(A);
-  std::vector<rational> a = p.coeffs();
-  while (a.size() > 1) {
-    const size_t n = a.size() - 1;
-    const rational an = a[n], a0 = a[0];
-    if (abs(a0) >= abs(an)) return false;
-    std::vector<rational> q(n);
-    for (size_t k = 0; k < n; ++k) q[k] = an * a[k + 1] - a0 * a[n - k - 1];
-    a = P(std::move(q)).coeffs();
-    if (a.size() != n) return false;  // cannot happen when |a0| < |an| (leading an^2 - a0^2 > 0)
-  }
-  return true;
-}
-
-bool hurwitz_stable(const P& p) {
-  if (p.is_zero()) return false;
-  const int n = p.degree();
-  if (n == 0) return true;
-  // Routh array in exact arithmetic: stable iff the n+1 first-column entries are all nonzero
-  // with the sign of a_n (a zero entry means a root on or right of the axis, or a symmetric pair).
-  std::vector<rational> r0, r1;
-  for (int k = n; k >= 0; k -= 2) r0.push_back(p.coeff(k));
-  for (int k = n - 1; k >= 0; k -= 2) r1.push_back(p.coeff(k));
-  const bool positive = p.leading() > 0;
-  for (int row = 1; row <= n; ++row) {
-    if (r1.empty() || r1[0] == 0 || (r1[0] > 0) != positive) return false;
-    const size_t L = std::max(r0.size(), r1.size());
-    r0.resize(L, rational(0));
-    r1.resize(L, rational(0));
-    std::vector<rational> r2(L > 1 ? L - 1 : 1, rational(0));
-    for (size_t k = 0; k + 1 < L; ++k) r2[k] = (r1[0] * r0[k + 1] - r0[0] * r1[k + 1]) / r1[0];
-    r0 = std::move(r1);
-    r1 = std::move(r2);
-  }
-  return true;
-}
+bool schur_stable(const MatQ& A) { return A.rows() == 0 || hapstab::schur_stable(charpoly(A)); }
 
 MatQ dc_gain(const StateSpace<rational>& E) {
   const auto n = E.states();

@@ -28,6 +28,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/lti/state_space.hpp"
 #include "hapstab/multidof/structure.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::multidof {
 
@@ -56,11 +57,9 @@ StateSpace<rational> mechanical_environment(const MechanicalEnvironment& env, co
 /// m + 2 states (not minimal: the contact delays are kept even when B_i = 0), exact.
 StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& env, const rational& T);
 
-/// Exact Schur stability (every eigenvalue of A in |z| < 1): Schur-Cohn-Jury recursion on the
-/// exact characteristic polynomial. Returns false also for eigenvalues ON the unit circle.
+/// Exact Schur stability of a matrix (every eigenvalue of A in |z| < 1): poly/stability.hpp on
+/// the exact characteristic polynomial. False also for eigenvalues ON the unit circle.
 bool schur_stable(const MatQ& A);
-/// Exact Hurwitz stability (every root of p in Re s < 0): Routh array in rational arithmetic.
-bool hurwitz_stable(const Polynomial<rational>& p);
 
 /// Static gain E(1) = C (I - A)^{-1} B + D; InputError if 1 is an eigenvalue of A.
 MatQ dc_gain(const StateSpace<rational>& E);

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include <flint/fmpq.h>
+#include <flint/fmpq_mat.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz.h>
 
@@ -30,6 +31,20 @@ class QPoly {
 
  private:
   fmpq_poly_t p_;
+};
+
+/// An fmpq_mat_t that clears itself.
+class QMat {
+ public:
+  QMat(long rows, long cols) { fmpq_mat_init(m_, rows, cols); }
+  ~QMat() { fmpq_mat_clear(m_); }
+  QMat(const QMat&) = delete;
+  QMat& operator=(const QMat&) = delete;
+  fmpq_mat_struct* get() { return m_; }
+  fmpq* at(long i, long j) { return fmpq_mat_entry(m_, i, j); }
+
+ private:
+  fmpq_mat_t m_;
 };
 
 /// Exact rational -> fmpq and back.

@@ -10,6 +10,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/poly/stability.hpp"
 #include "hapstab/poly/sturm.hpp"
 #include "hapstab/poly/unit_circle.hpp"
 
@@ -164,29 +165,11 @@ bool marginally_stable(const P& d, std::string* detail) {
       return false;
     }
   }
-  // Schur-Cohn-Jury recursion on d1 (no roots on the circle): all roots inside iff |a0| < |an|
-  // at every step of p -> (an p - a0 p*)/z. The test is scale-free, so p is kept as a primitive
-  // integer polynomial (integer arithmetic, no rational canonicalisation).
-  integer scale;
-  std::vector<integer> p = integer_coeffs(d1.coeffs(), scale);
-  while (p.size() > 1) {
-    const integer a0 = p.front(), an = p.back();
-    if (abs(a0) >= abs(an)) {
-      if (detail) *detail = "Schur-Cohn test: a pole with |z| > 1 (|p(0)| >= |leading| at degree " +
-                            std::to_string(p.size() - 1) + ")";
-      return false;
-    }
-    const size_t n = p.size() - 1;
-    std::vector<integer> next(n);
-    integer g = 0;
-    for (size_t k = 1; k <= n; ++k) {  // coefficient k of an p - a0 p*, k >= 1 (the constant vanishes)
-      next[k - 1] = an * p[k] - a0 * p[n - k];
-      g = bmp::gcd(g, next[k - 1]);
-    }
-    if (g > 1)
-      for (auto& c : next) c /= g;
-    while (next.size() > 1 && next.back() == 0) next.pop_back();
-    p = std::move(next);
+  // d1 has no roots on the circle: Schur-Cohn (poly/stability.hpp) decides the rest
+  std::string why;
+  if (!schur_stable(d1, &why)) {
+    if (detail) *detail = why;
+    return false;
   }
   return true;
 }

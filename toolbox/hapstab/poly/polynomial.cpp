@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "hapstab/numeric/flint.hpp"
+#include "hapstab/poly/flint_poly.hpp"
 
 namespace hapstab {
 
@@ -15,22 +15,24 @@ template std::pair<Polynomial<rational>, Polynomial<rational>> divmod(const Poly
                                                                       const Polynomial<rational>&);
 template class RationalFunction<rational>;
 
-namespace {
+namespace flint {
 
-// Polynomial<rational> -> fmpq_poly (one common denominator; exact).
-void to_flint(const Polynomial<rational>& a, flint::QPoly& out) {
+void to_flint(const Polynomial<rational>& a, QPoly& out) {
   const auto& c = a.coeffs();
   std::vector<__mpq_struct> view(c.size());  // shallow views of the coefficients, read only
   for (size_t i = 0; i < c.size(); ++i) view[i] = *c[i].backend().data();
   fmpq_poly_set_array_mpq(out.get(), reinterpret_cast<const mpq_t*>(view.data()), slong(c.size()));
 }
-Polynomial<rational> from_flint(const flint::QPoly& p) {
+Polynomial<rational> from_flint(const QPoly& p) {
   std::vector<rational> c(size_t(fmpq_poly_length(p.get())));
   for (size_t i = 0; i < c.size(); ++i) fmpq_poly_get_coeff_mpq(c[i].backend().data(), p.get(), slong(i));
   return Polynomial<rational>(std::move(c));
 }
 
-}  // namespace
+}  // namespace flint
+
+using flint::from_flint;
+using flint::to_flint;
 
 namespace detail {
 

@@ -1,0 +1,14 @@
+// hapstab/poly/flint_poly.hpp -- exact conversions between Polynomial<rational> and FLINT's
+// fmpq_poly (one common denominator). For the .cpp files that hand exact algebra to FLINT
+// (numeric/flint.hpp says which); no public header includes it.
+#pragma once
+
+#include "hapstab/numeric/flint.hpp"
+#include "hapstab/poly/polynomial.hpp"
+
+namespace hapstab::flint {
+
+void to_flint(const Polynomial<rational>& a, QPoly& out);
+Polynomial<rational> from_flint(const QPoly& p);
+
+}  // namespace hapstab::flint
