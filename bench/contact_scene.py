@@ -1,0 +1,41 @@
+#!/usr/bin/env python3
+"""Writes the N-device scene of issue 15: paper 000's Fig. 5 environment generalised to N contact
+points on one virtual mass M (tied to ground by k, B; contact i through k_i, B_i), N 1-DOF
+operators and N mass-damper devices (case ii: Gamma in G(N; 1, ..., 1)). Backward Euler, T = 0.01 s.
+
+    E(s) = diag(k_i + B_i s) - c c^T / (M s^2 + (B + sum B_i) s + k + sum k_i),  c_i = k_i + B_i s
+
+Usage: bench/contact_scene.py N > scene.toml ; build/hapstab multidof analyze --scene scene.toml
+"""
+import sys
+
+def scene(n):
+    out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',
+           '[parameters]', 'M = "0.3"', 'k = "1000"', 'B = "5"']
+    for i in range(1, n + 1):
+        out += [f'k{i} = "{500 + 100 * ((i - 1) % 4)}"', f'B{i} = "{["1", "2", "3/2", "5/2"][(i - 1) % 4]}"']
+    out.append('')
+    for i in range(1, n + 1):
+        out += ['[[device]]', f'name = "d{i}"', 'm = "1/10"', 'b = "1.37"', '']
+    for i in range(1, n + 1):
+        gain = ["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4]
+        out += ['[[operator]]', f'name = "H{i}"', f'dofs = ["d{i}"]', f'tf = "{gain}*(s^2+5*s+10)/(s^2+s+1)"', '']
+    den = ('(M*s^2 + (B' + ''.join(f'+B{i}' for i in range(1, n + 1)) + ')*s + k'
+           + ''.join(f'+k{i}' for i in range(1, n + 1)) + ')')
+    rows = []
+    for i in range(1, n + 1):
+        ci = f'(k{i} + B{i}*s)'
+        row = []
+        for j in range(1, n + 1):
+            cj = f'(k{j} + B{j}*s)'
+            row.append(f'"k{i} + B{i}*s - {ci}^2/{den}"' if i == j else f'"-{ci}*{cj}/{den}"')
+        rows.append('[' + ', '.join(row) + ']')
+    out += ['[environment]', 'domain = "s"', 'method = "backward_euler"', 'tf = [' + ',\n      '.join(rows) + ']', '']
+    out += ['[multidof]', 'osp = [' + ', '.join(['"1.37"'] * n) + ']', 'qv_block_diagonal = false', '']
+    out += ['[multidof.coupling]', 'mbar = [' + ', '.join(['1'] * n) + ']', 'nbar = [' + ', '.join(['1'] * n) + ']']
+    return '\n'.join(out) + '\n'
+
+if __name__ == '__main__':
+    if len(sys.argv) != 2 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 64:
+        sys.exit('usage: bench/contact_scene.py N   (1 <= N <= 64)')
+    sys.stdout.write(scene(int(sys.argv[1])))
