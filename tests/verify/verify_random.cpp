@@ -73,6 +73,18 @@ rational pow10(int e) {
   return e >= 0 ? rational(p) : rational(integer(1), p);
 }
 Ref ref(const rational& q) { return to_real<Ref>(q); }
+
+// min of f on [a, b] by golden section in 100 digits (80 steps: the bracket shrinks by
+// 0.618^80 ~ 1e-17), started from a grid cell around a grid minimum
+Ref golden_min(const std::function<Ref(const Ref&)>& f, Ref a, Ref b) {
+  const Ref gr = (sqrt(Ref(5)) - 1) / 2;
+  for (int it = 0; it < 80; ++it) {
+    const Ref x1 = b - gr * (b - a), x2 = a + gr * (b - a);
+    if (f(x1) < f(x2)) b = x2;
+    else a = x1;
+  }
+  return f((a + b) / 2);
+}
 Ref ref_pi() { return boost::math::constants::pi<Ref>(); }
 
 // |printed - v| <= 1/2 unit in the last of `digits` places (relative slack 1e-90 for v's own error)
@@ -217,16 +229,9 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   }
   std::partial_sort(best.begin(), best.begin() + 3, best.end(), std::greater<>());
   Ref top = std::max(objective(p, w0), objective(p, w_end));
-  for (int k = 0; k < 3; ++k) {
-    Ref a = w_end * (best[k].second - 1) / n, c = w_end * (best[k].second + 1) / n;
-    const Ref gr = (sqrt(Ref(5)) - 1) / 2;
-    for (int it = 0; it < 80; ++it) {  // golden section: the bracket shrinks by 0.618^80 ~ 1e-17
-      const Ref x1 = c - gr * (c - a), x2 = a + gr * (c - a);
-      if (objective(p, x1) > objective(p, x2)) c = x2;
-      else a = x1;
-    }
-    top = std::max(top, objective(p, (a + c) / 2));
-  }
+  for (int k = 0; k < 3; ++k)
+    top = std::max(top, -golden_min([&](const Ref& w) { return -objective(p, w); }, w_end * (best[k].second - 1) / n,
+                                    w_end * (best[k].second + 1) / n));
   if (top > hi + eps) ok = false, why << "  the objective reaches " << top << " > hi = " << hi << "\n";
   return ok;
 }
@@ -273,16 +278,9 @@ bool check_criterion(const RF& H, const contact::CriterionReport& c, bool wedge,
     grid.push_back({h.real() + (wedge ? std::abs(h.imag()) / std::tan(th / 2) : 0.0), i});
   }
   std::partial_sort(grid.begin(), grid.begin() + 3, grid.end());
-  for (int k = 0; k < 3; ++k) {
-    Ref a = pi_ * (grid[k].second - 1) / n, b = pi_ * (grid[k].second + 1) / n;
-    const Ref gr = (sqrt(Ref(5)) - 1) / 2;
-    for (int it = 0; it < 80; ++it) {
-      const Ref x1 = b - gr * (b - a), x2 = a + gr * (b - a);
-      if (wedge_side(H, x1, wedge) < wedge_side(H, x2, wedge)) b = x2;
-      else a = x1;
-    }
-    low = std::min(low, wedge_side(H, (a + b) / 2, wedge));
-  }
+  for (int k = 0; k < 3; ++k)
+    low = std::min(low, golden_min([&](const Ref& th) { return wedge_side(H, th, wedge); }, pi_ * (grid[k].second - 1) / n,
+                                   pi_ * (grid[k].second + 1) / n));
   if (low < lo - eps) ok = false, why << "  " << c.name << ": the reference reaches " << low << " < lo = " << lo << "\n";
   // (3) the exact verdict: holds iff the margin is positive
   if (c.holds != (lo > 0)) ok = false, why << "  " << c.name << ": holds = " << c.holds << " but the margin is [" << lo << ", " << hi << "]\n";
@@ -347,16 +345,8 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
     grid.push_back({(tf.H.num()(z) / tf.H.den()(z)).real(), i});
   }
   std::partial_sort(grid.begin(), grid.begin() + 3, grid.end());
-  for (int k = 0; k < 3; ++k) {
-    Ref a = pi_ * (grid[k].second - 1) / n, b = pi_ * (grid[k].second + 1) / n;
-    const Ref gr = (sqrt(Ref(5)) - 1) / 2;
-    for (int it = 0; it < 80; ++it) {
-      const Ref x1 = b - gr * (b - a), x2 = a + gr * (b - a);
-      if (re_g(x1) < re_g(x2)) b = x2;
-      else a = x1;
-    }
-    low = std::min(low, re_g((a + b) / 2));
-  }
+  for (int k = 0; k < 3; ++k)
+    low = std::min(low, golden_min(re_g, pi_ * (grid[k].second - 1) / n, pi_ * (grid[k].second + 1) / n));
   bool ok = true;
   if (low < lo - eps) ok = false, why << "  Re G reaches " << low << " < lower bound " << lo << "\n";
   if (c.theta_min >= 0) {  // the minimiser is a double: Re G there exceeds phi* by |G'| 2^-52 theta
