@@ -20,7 +20,9 @@
 //         section in 100 digits around its three best points, and neither end (w -> 0, wT = pi)
 //         exceeds hi. H: orders 1-8, complex poles of radius up to 1 - 1e-6, real poles up to
 //         +-(1 - 1e-6), integer delays 0-4, fractional delays (orders 1-3), eta; a quarter of the cases are
-//         virtual walls K + B (z - 1)/(T z), whose maximiser is at wT = pi (or w = 0 with delays).
+//         virtual walls K + B (z - 1)/(T z), whose maximiser is at wT = pi (or w = 0 with delays);
+//         a tenth are FIR H built so that the objective's derivative has a double root (a
+//         horizontal inflection) or a triple one (a flat maximum) at a chosen frequency.
 #include <Eigen/Eigenvalues>
 
 #include <chrono>
@@ -173,6 +175,48 @@ Ref objective(const passivity::BoundProblem& p, const Ref& omega) {
   return (CRef(ref(p.T), 0) * W / (CRef(1, 0) - z)).real() + ref(p.eta);
 }
 
+// An H whose objective has a stationary point of multiplicity >= 2 at c0 = cos(w0 T): with
+// H(z) = (1 - z) sum_{k>=1} q_k z^-k / T (proper) the objective T H/(1 - z) has real part
+// f(c) - q_0 = sum_{k>=1} q_k T_k(c), c = cos wT (T_k Chebyshev), any polynomial f we like. We take
+// f' = s (c - c0)^2 r(c) (a horizontal inflection: df/dw has a double root at w0) or
+// f' = -s (c - c0)^3 (1 + (c - c1)^2) (a flat maximum, f(c0) - f ~ (c - c0)^4), r random of
+// degree 0-2, integrate exactly and convert to the Chebyshev basis exactly.
+RF double_root_H(std::mt19937_64& g, const rational& T, std::ostream& why) {
+  const rational c0(uniform(g, -99, 99), 100), s(uniform(g, 1, 1000), uniform(g, 1, 10));
+  const P x({rational(0), rational(1)}), lin({-c0, rational(1)});
+  P df;
+  if (chance(g, 0.5)) {
+    std::vector<rational> rc(static_cast<size_t>(uniform(g, 0, 2)) + 1);
+    for (auto& c : rc) c = rational(uniform(g, -100, 100), uniform(g, 1, 20));
+    if (rc.back() == 0) rc.back() = 1;
+    df = P(s) * lin * lin * P(rc);
+    why << "  objective with a double root of its derivative at cos wT = " << c0 << "\n";
+  } else {
+    const rational c1(uniform(g, -100, 100), 100);
+    df = P(-s) * lin * lin * lin * (P(rational(1)) + P({-c1, rational(1)}) * P({-c1, rational(1)}));
+    why << "  objective with a flat maximum (triple root of its derivative) at cos wT = " << c0 << "\n";
+  }
+  std::vector<rational> f(static_cast<size_t>(df.degree()) + 2);  // f = integral of df + constant
+  f[0] = rational(uniform(g, -1000, 1000), 100);
+  for (int k = 0; k <= df.degree(); ++k) f[static_cast<size_t>(k) + 1] = df.coeff(k) / (k + 1);
+  // monomials -> Chebyshev: peel the leading term with T_d (leading coefficient 2^(d-1))
+  const int d = static_cast<int>(f.size()) - 1;
+  std::vector<P> Tk = {P(rational(1)), x};
+  while (static_cast<int>(Tk.size()) <= d) Tk.push_back(P(rational(2)) * x * Tk.back() - Tk[Tk.size() - 2]);
+  P rest(f);
+  std::vector<rational> q(static_cast<size_t>(d) + 1);
+  for (int k = d; k >= 0; --k) {
+    q[static_cast<size_t>(k)] = rest.coeff(k) / Tk[static_cast<size_t>(k)].coeff(k);
+    rest = rest - P(q[static_cast<size_t>(k)]) * Tk[static_cast<size_t>(k)];
+  }
+  // sum_{k>=1} q_k z^-k = (sum_k q_k z^(d-k)) / z^d. The constant q_0 is left out: it only
+  // shifts the objective, and without it H is proper (T H/(1 - z) = -T H z^-1/(1 - z^-1)).
+  std::vector<rational> num(static_cast<size_t>(d) + 1), zd(static_cast<size_t>(d) + 1);
+  for (int k = 1; k <= d; ++k) num[static_cast<size_t>(d - k)] = q[static_cast<size_t>(k)];
+  zd[static_cast<size_t>(d)] = T;
+  return RF(P({rational(1), rational(-1)}) * P(num), P(zd));
+}
+
 bool check_bound(std::mt19937_64& g, std::ostream& why) {
   passivity::BoundProblem p;
   p.T = chance(g, 0.5) ? rational(1, 1000) : rational(uniform(g, 1, 100), uniform(g, 100, 100000));
@@ -182,13 +226,16 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   // The branch-and-bound (q = 100) gets orders 1-2: on an order-3 resonance it can spend 50 s
   // before it gives up (an honest NumericalError, counted as undecided).
   const bool frac = chance(g, 0.06), generic_frac = frac && chance(g, 1.0 / 6);
-  if (chance(g, 0.25)) {  // virtual wall K + B (z - 1)/(T z)
+  const bool degenerate = !frac && chance(g, 0.1);
+  if (degenerate) {  // a stationary point of multiplicity >= 2 (double_root_H)
+    p.H = double_root_H(g, p.T, why);
+  } else if (chance(g, 0.25)) {  // virtual wall K + B (z - 1)/(T z)
     const rational K(uniform(g, 0, 100000)), B(uniform(g, -100, 1000), 10);
     p.H = RF(P(K)) + RF(P({-B, B}), P({rational(0), p.T}));
   } else {
     p.H = random_stable_H(g, static_cast<int>(uniform(g, 1, generic_frac ? 2 : frac ? 3 : 8)));
   }
-  p.delay = static_cast<int>(uniform(g, 0, frac ? 1 : 4));
+  p.delay = degenerate ? 0 : static_cast<int>(uniform(g, 0, frac ? 1 : 4));
   if (frac) {
     const long q = generic_frac ? 100 : uniform(g, 2, 8);
     p.frac_delay = p.T * rational(uniform(g, 1, q - 1), q);
