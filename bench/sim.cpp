@@ -16,6 +16,7 @@
 #include <filesystem>
 
 #include "hapstab/lti/discretize.hpp"
+#include "hapstab/numeric/ball_expm.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/simulator.hpp"
@@ -222,5 +223,45 @@ void BM_odeint(benchmark::State& st) {
 BENCHMARK(BM_odeint)->Arg(6)->Arg(9)->Arg(12)->Arg(14)->Unit(benchmark::kMillisecond)->Name("odeint");
 
 }  // namespace
+
+// ---- the set-up: the exact-ZOH step matrices, 50-digit Taylor (lti/discretize.hpp, the
+// method before issue 15) against Arb's arb_mat_exp enclosure (numeric/ball_expm.hpp, what the
+// simulator uses), on a chain of n masses and dampers (A n x n, B n x 2) at T = 1 ms.
+// Counters: radius = the Arb enclosure's proven bound on |exact - double midpoint|.
+MatRational chain(int n, MatRational& B) {
+  MatRational A = MatRational::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    A(i, i) = rational(-(i + 2), 3);
+    if (i + 1 < n) A(i, i + 1) = rational(1, i + 1), A(i + 1, i) = rational(-7, i + 2);
+  }
+  B = MatRational::Zero(n, 2);
+  B(0, 0) = 1;
+  B(n - 1, 1) = rational(1, 10);
+  return A;
+}
+void BM_zoh_setup(benchmark::State& st) {
+  const int n = static_cast<int>(st.range(0));
+  const bool arb = st.range(1) == 1;
+  MatRational B;
+  const MatRational A = chain(n, B);
+  const rational T(1, 1000);
+  double radius = 0;
+  for (auto _ : st) {
+    if (arb) {
+      auto z = zoh_enclosure(A, B, T);
+      radius = std::max(z.Phi.radius, z.Gamma.radius);
+      keep(z.Phi.mid);
+    } else {
+      Mat<mp50> Am(n, n), Bm(n, 2);
+      for (Eigen::Index i = 0; i < A.size(); ++i) Am.data()[i] = to_real<mp50>(A.data()[i]);
+      for (Eigen::Index i = 0; i < B.size(); ++i) Bm.data()[i] = to_real<mp50>(B.data()[i]);
+      auto z = zoh_pair<mp50>(Am, Bm, to_real<mp50>(T));
+      keep(z.Phi);
+    }
+  }
+  st.counters["radius"] = radius;
+  st.SetLabel(arb ? "arb_mat_exp enclosure" : "mp50 Taylor (before)");
+}
+BENCHMARK(BM_zoh_setup)->ArgsProduct({{4, 16, 32}, {0, 1}})->Unit(benchmark::kMillisecond)->Name("zoh_setup");
 
 BENCHMARK_MAIN();

@@ -14,6 +14,11 @@
 #include <flint/fmpq_mat.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz.h>
+#if HAPSTAB_FLINT3
+#include <flint/arb_mat.h>
+#else
+#include <arb_mat.h>
+#endif
 
 #include "hapstab/numeric/scalar.hpp"
 
@@ -45,6 +50,23 @@ class QMat {
 
  private:
   fmpq_mat_t m_;
+};
+
+/// An arb_mat_t (a matrix of real balls) that clears itself.
+class BallMat {
+ public:
+  BallMat(long rows, long cols) { arb_mat_init(m_, rows, cols); }
+  ~BallMat() { arb_mat_clear(m_); }
+  BallMat(const BallMat&) = delete;
+  BallMat& operator=(const BallMat&) = delete;
+  arb_mat_struct* get() { return m_; }
+  const arb_mat_struct* get() const { return m_; }
+  arb_struct* at(long i, long j) { return arb_mat_entry(m_, i, j); }
+  long rows() const { return arb_mat_nrows(m_); }
+  long cols() const { return arb_mat_ncols(m_); }
+
+ private:
+  arb_mat_t m_;
 };
 
 /// Exact rational -> fmpq and back.

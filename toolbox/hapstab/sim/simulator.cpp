@@ -5,50 +5,39 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hapstab/lti/discretize.hpp"
+#include "hapstab/numeric/ball_expm.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::sim {
 
 namespace {
 
-using MP = mp50;
-
-Mat<MP> to_mp(const Mat<rational>& M) {
-  Mat<MP> R(M.rows(), M.cols());
-  for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = to_real<MP>(M.data()[i]);
-  return R;
-}
-Mat<double> to_double(const Mat<MP>& M) {
-  Mat<double> R(M.rows(), M.cols());
-  for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = static_cast<double>(M.data()[i]);
-  return R;
-}
 Mat<double> to_double(const Mat<rational>& M) {
   Mat<double> R(M.rows(), M.cols());
   for (Eigen::Index i = 0; i < M.size(); ++i) R.data()[i] = to_real<double>(M.data()[i]);
   return R;
 }
 
-// Exact (50-digit) propagation over [0, tau] of a step whose input is u_old on [0, f) and
-// u_new on [f, T): s(tau) = P s + Qo u_old + Qn u_new + Qw w.
+// Propagation over [0, tau] of a step whose input is u_old on [0, f) and u_new on [f, T):
+// s(tau) = P s + Qo u_old + Qn u_new + Qw w (the intersample grid). Each piece is enclosed
+// (numeric/ball_expm.hpp); the composition of the two pieces is one double product.
 struct Prop {
-  Mat<MP> P, Qo, Qn, Qw;
+  Mat<double> P, Qo, Qn, Qw;
 };
-Prop propagate(const Mat<MP>& A, const Mat<MP>& B, int N, const MP& f, const MP& tau) {
+Prop propagate(const Mat<rational>& A, const Mat<rational>& B, int N, const rational& f, const rational& tau) {
   const auto n = A.rows();
   Prop p;
-  auto first = zoh_pair<MP>(A, B, tau < f ? tau : f);
-  p.P = first.Phi;
-  p.Qo = first.Gamma.leftCols(N);
-  p.Qn = Mat<MP>::Zero(n, N);
-  p.Qw = first.Gamma.rightCols(N);
+  const ZohEnclosure first = zoh_enclosure(A, B, tau < f ? tau : f);
+  p.P = first.Phi.mid;
+  p.Qo = first.Gamma.mid.leftCols(N);
+  p.Qn = Mat<double>::Zero(n, N);
+  p.Qw = first.Gamma.mid.rightCols(N);
   if (tau > f) {
-    auto second = zoh_pair<MP>(A, B, tau - f);
-    p.P = (second.Phi * p.P).eval();
-    p.Qo = (second.Phi * p.Qo).eval();
-    p.Qw = (second.Phi * p.Qw + second.Gamma.rightCols(N)).eval();
-    p.Qn = second.Gamma.leftCols(N);
+    const ZohEnclosure second = zoh_enclosure(A, B, tau - f);
+    p.P = (second.Phi.mid * p.P).eval();
+    p.Qo = (second.Phi.mid * p.Qo).eval();
+    p.Qw = (second.Phi.mid * p.Qw + second.Gamma.mid.rightCols(N)).eval();
+    p.Qn = second.Gamma.mid.leftCols(N);
   }
   return p;
 }
@@ -81,57 +70,28 @@ Simulator::Simulator(const LoopSpec& spec) : spec_(spec), loop_(compose(spec)) {
 Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
   const int N = loop_.N;
   const auto& P = loop_.plant;
-  const Mat<MP> A = to_mp(P.A), B = to_mp(P.B), C = to_mp(P.C), D = to_mp(P.D);
-  const auto n = A.rows(), nz = n + 2 * N;
+  const auto n = P.A.rows(), nz = n + 2 * N;
   Piece pc;
   pc.h = to_real<double>(h);
-  const MP hm = to_real<MP>(h);
-  auto zp = zoh_pair<MP>(A, B, hm);
-  pc.Phi = to_double(zp.Phi);
-  pc.Gu = to_double(Mat<MP>(zp.Gamma.leftCols(N)));
-  pc.Gw = to_double(Mat<MP>(zp.Gamma.rightCols(N)));
+  const ZohEnclosure zp = zoh_enclosure(P.A, P.B, h);
+  pc.Phi = zp.Phi.mid;
+  pc.Gu = zp.Gamma.mid.leftCols(N);
+  pc.Gw = zp.Gamma.mid.rightCols(N);
+  pc.radius = std::max(zp.Phi.radius, zp.Gamma.radius);
   if (!energy) return pc;
-  // z = [s; u; w], z' = M z. Power at port j: (a_j z)(b_j z), a = f_h row, b = v row.
-  Mat<MP> M = Mat<MP>::Zero(nz, nz);
-  M.topLeftCorner(n, n) = A;
-  M.topRightCorner(n, 2 * N) = B;
+  // z = [s; u; w], z' = M z. Power at port j: (a_j z)(b_j z), a = f_h row, b = v row;
+  // W_j = int_0^h e^{M^T t} Q_j e^{M t} dt with Q_j = (a^T b + b^T a)/2.
+  Mat<rational> M = Mat<rational>::Zero(nz, nz);
+  M.topLeftCorner(n, n) = P.A;
+  M.topRightCorner(n, 2 * N) = P.B;
   for (int j = 0; j < N; ++j) {
-    Mat<MP> a(1, nz), b(1, nz);
-    a << C.row(2 * N + j), D.row(2 * N + j);
-    b << C.row(N + j), D.row(N + j);
-    Mat<MP> Q = (a.transpose() * b + b.transpose() * a) / MP(2);
-    // Van Loan's block exponential exp([[-M^T, Q], [0, M]] h0) = [[., F12], [0, F22]] gives
-    // W(h0) = F22^T F12, but e^{-M^T h} grows like e^{|lambda| h} for damped modes and the
-    // product cancels catastrophically when h is long against them (stiff devices). So it is
-    // used only on h0 = h/2^s with ||M|| h0 <= 1/2, then doubled exactly:
-    //   W(2t) = W(t) + e^{M^T t} W(t) e^{M t},   e^{M 2t} = (e^{M t})^2.
-    int sq = 0;
-    MP h0 = hm;
-    {
-      MP nrm = 0;
-      for (Eigen::Index r = 0; r < nz; ++r) {
-        MP row = 0;
-        for (Eigen::Index c2 = 0; c2 < nz; ++c2) row += abs(M(r, c2));
-        if (row > nrm) nrm = row;
-      }
-      while (nrm * h0 > MP(0.5)) {
-        h0 /= 2;
-        ++sq;
-      }
-    }
-    Mat<MP> V = Mat<MP>::Zero(2 * nz, 2 * nz);
-    V.topLeftCorner(nz, nz) = -M.transpose() * h0;
-    V.topRightCorner(nz, nz) = Q * h0;
-    V.bottomRightCorner(nz, nz) = M * h0;
-    Mat<MP> E = expm<MP>(V);
-    Mat<MP> Ph = E.bottomRightCorner(nz, nz);
-    Mat<MP> W = Ph.transpose() * E.topRightCorner(nz, nz);
-    for (int i = 0; i < sq; ++i) {
-      W = (W + Ph.transpose() * W * Ph).eval();
-      Ph = (Ph * Ph).eval();
-    }
-    W = ((W + W.transpose()) / MP(2)).eval();
-    pc.W.push_back(to_double(W));
+    Mat<rational> a(1, nz), b(1, nz);
+    a << P.C.row(2 * N + j), P.D.row(2 * N + j);
+    b << P.C.row(N + j), P.D.row(N + j);
+    const Mat<rational> Q = (a.transpose() * b + b.transpose() * a) / rational(2);
+    const DoubleEnclosure W = gram_enclosure(M, Q, h);
+    pc.W.push_back(W.mid);
+    pc.radius = std::max(pc.radius, W.radius);
   }
   return pc;
 }
@@ -238,16 +198,15 @@ struct Engine {
     std::vector<Mat<double>> FP, FQo, FQn, FQw;
     const bool fine = M > 1 && o.fine_to >= o.fine_from;
     if (fine) {
-      const Mat<MP> A = to_mp(L.plant.A), B = to_mp(L.plant.B);
       rational q = spec.delay / L.T;
       long ndl = long(bmp::numerator(q) / bmp::denominator(q));
-      const MP fx = to_real<MP>(spec.delay - rational(ndl) * L.T);
+      const rational fx = spec.delay - rational(ndl) * L.T;
       for (int i = 1; i < M; ++i) {
-        Prop p = propagate(A, B, N, fx, to_real<MP>(L.T * rational(i, M)));
-        FP.push_back(to_double(p.P));
-        FQo.push_back(to_double(p.Qo));
-        FQn.push_back(to_double(p.Qn));
-        FQw.push_back(to_double(p.Qw));
+        Prop p = propagate(L.plant.A, L.plant.B, N, fx, L.T * rational(i, M));
+        FP.push_back(p.P);
+        FQo.push_back(p.Qo);
+        FQn.push_back(p.Qn);
+        FQw.push_back(p.Qw);
       }
     }
     auto& ST = R.samples;

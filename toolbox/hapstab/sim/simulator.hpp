@@ -5,9 +5,11 @@
 // Exactness. Between samples the continuous plant sees a piecewise-constant input (held
 // actuator force, changing once inside the period at kT + f when the delay has a fractional
 // part f; held exogenous force), so the state at every sample instant and at every requested
-// intersample instant is x(t) = Phi(t) x + Gamma(t) u: no integration error. Phi, Gamma are
-// computed once in 50-digit arithmetic (Van Loan, lti/discretize.hpp) and rounded to double;
-// the only errors are the double rounding of those matrices and of the recursion itself.
+// intersample instant is x(t) = Phi(t) x + Gamma(t) u: no integration error. Phi, Gamma and
+// the energy Gram matrices are enclosed once in ball arithmetic from the exact (rational) loop
+// (numeric/ball_expm.hpp, Arb) and rounded to double; Piece::radius bounds the difference
+// from the exact matrices (rounding included, typically one ulp). The remaining error is the
+// double recursion itself.
 //
 // Contact. The unilateral wall is evaluated at the sample instants (the papers' sampled wall,
 // paper 002's xi on the sampled position): the environment sees max(0, x_j(kT)); the device and
@@ -96,6 +98,7 @@ class Simulator {
     double h = 0;
     Mat<double> Phi, Gu, Gw;              ///< s+ = Phi s + Gu u + Gw w over a piece of length h
     std::vector<Mat<double>> W;           ///< per DOF, (n+2N)^2: int f_h v dt = z^T W z
+    double radius = 0;                    ///< every entry above is within this of the exact value
   };
   const Piece& piece_before() const { return p1_; }  ///< [kT, kT+f) (h = 0 when f = 0)
   const Piece& piece_after() const { return p2_; }   ///< [kT+f, (k+1)T)
