@@ -64,24 +64,8 @@ lmi::Options lmi_options(const Opts& o) {
 
 json assumptions(const multidof::SceneProblem& sp) {
   json a = json::array();
-  for (size_t i = 0; i < sp.operators.size(); ++i) {
-    const auto pc = multidof::operator_passive(sp.operators[i]);
-    a.push_back({{"name", "Assumption 1(b): operator '" + sp.operator_names[i] + "' passive (He(jw) >= 0 for all w)"},
-                 {"holds", pc.passive},
-                 {"certified", pc.certified},
-                 {"detail", pc.detail}});
-  }
-  for (const auto& op : sp.problem.structure.operators)
-    for (const auto& d : op.devices) {
-      const bool pd = lmi::exact_definiteness(d.osp).pd;
-      std::ostringstream lv;
-      lv << multidof::to_double(d.osp).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
-      a.push_back({{"name", "Assumption 1(a): device '" + d.name + "' OSP level"},
-                   {"holds", pd},
-                   {"certified", true},
-                   {"detail", "Delta_d = " + lv.str() +
-                                  " (a mass-damper 1/(m s + b) has level b)"}});
-    }
+  for (const auto& c : multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names))
+    a.push_back({{"name", c.name}, {"holds", c.holds}, {"certified", c.certified}, {"detail", c.detail}});
   return a;
 }
 

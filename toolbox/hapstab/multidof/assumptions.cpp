@@ -1,7 +1,11 @@
 #include "hapstab/multidof/assumptions.hpp"
 
+#include <algorithm>
 #include <numeric>
+#include <sstream>
 
+#include "hapstab/lmi/certificate.hpp"
+#include "hapstab/multidof/analysis.hpp"
 #include "hapstab/multidof/environment.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/poly/sturm.hpp"
@@ -145,6 +149,29 @@ PassivityCheck operator_passive(const TransferMatrix& H) {
   pc.detail = "every entry stable (exact Routh); all " + std::to_string((1u << m) - 1) +
               " principal minors of He(jw) >= 0 for all real w (exact root isolation)";
   return pc;
+}
+
+std::vector<AssumptionCheck> check_assumptions(const Structure& structure, const std::vector<TransferMatrix>& operators,
+                                               const std::vector<std::string>& operator_names) {
+  std::vector<AssumptionCheck> out;
+  for (size_t i = 0; i < operators.size(); ++i) {
+    const auto pc = operator_passive(operators[i]);
+    const std::string name = i < operator_names.size() ? operator_names[i] : "H" + std::to_string(i + 1);
+    out.push_back({"Assumption 1(b): operator '" + name + "' passive (He(jw) >= 0 for all w)", pc.passive, pc.certified,
+                   pc.detail});
+  }
+  for (const auto& op : structure.operators)
+    for (const auto& d : op.devices) {
+      std::ostringstream lv;
+      lv << to_double(d.osp).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
+      out.push_back({"Assumption 1(a): device '" + d.name + "' OSP level", lmi::exact_definiteness(d.osp).pd, true,
+                     "Delta_d = " + lv.str() + " (a mass-damper 1/(m s + b) has level b)"});
+    }
+  return out;
+}
+
+bool all_hold(const std::vector<AssumptionCheck>& checks) {
+  return std::all_of(checks.begin(), checks.end(), [](const AssumptionCheck& c) { return c.holds; });
 }
 
 }  // namespace hapstab::multidof

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/multidof/structure.hpp"
 
 namespace hapstab::multidof {
 
@@ -26,5 +27,18 @@ struct PassivityCheck {
 
 /// H must be square, continuous (Domain::s), proper entries. Up to 4 x 4 (Leibniz minors).
 PassivityCheck operator_passive(const TransferMatrix& H);
+
+/// One line of Assumption 1 as checked on a problem's data.
+struct AssumptionCheck {
+  std::string name;  ///< e.g. "Assumption 1(b): operator 'H1' passive (He(jw) >= 0 for all w)"
+  bool holds = false;
+  bool certified = false;
+  std::string detail;
+};
+/// (b) for every operator (its Z_O(s) and name) and (a) for every device of `structure`
+/// (OSP level positive definite, exactly). Theorem 5/6's conclusions need every line to hold.
+std::vector<AssumptionCheck> check_assumptions(const Structure& structure, const std::vector<TransferMatrix>& operators,
+                                               const std::vector<std::string>& operator_names);
+bool all_hold(const std::vector<AssumptionCheck>& checks);
 
 }  // namespace hapstab::multidof
