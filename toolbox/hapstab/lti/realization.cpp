@@ -114,52 +114,72 @@ TransferMatrix ss2tf(const StateSpace<Q>& sys) {
 
 namespace {
 
-// Exact column echelon basis of the column space of M (Gaussian elimination over Q).
-MQ column_basis(const MQ& M) {
-  MQ R = M.transpose();  // rows of R span the column space
-  const auto rows = R.rows(), cols = R.cols();
-  Eigen::Index rank = 0;
-  for (Eigen::Index c = 0; c < cols && rank < rows; ++c) {
-    Eigen::Index piv = -1;
-    for (Eigen::Index r = rank; r < rows; ++r)
-      if (R(r, c) != 0) {
-        piv = r;
-        break;
-      }
-    if (piv < 0) continue;
-    R.row(piv).swap(R.row(rank));
-    for (Eigen::Index r = 0; r < rows; ++r)
-      if (r != rank && R(r, c) != 0) R.row(r) -= (R(r, c) / R(rank, c)) * R.row(rank);
-    ++rank;
+flint::QMat to_qmat(const MQ& M) {
+  flint::QMat q(static_cast<long>(M.rows()), static_cast<long>(M.cols()));
+  for (long i = 0; i < M.rows(); ++i)
+    for (long j = 0; j < M.cols(); ++j) flint::set(q.at(i, j), M(i, j));
+  return q;
+}
+MQ from_qmat(flint::QMat& q, long rows, long cols, long r0 = 0, long c0 = 0) {
+  MQ M(rows, cols);
+  for (long i = 0; i < rows; ++i)
+    for (long j = 0; j < cols; ++j) M(i, j) = flint::to_rational(q.at(r0 + i, c0 + j));
+  return M;
+}
+// Columns of M (n x c) that are pivots of its reduced row echelon form: the first linearly
+// independent columns, left to right (FLINT's fraction-free rref).
+std::vector<long> pivot_columns(flint::QMat& M) {
+  const long n = fmpq_mat_nrows(M.get()), c = fmpq_mat_ncols(M.get());
+  flint::QMat R(n, c);
+  const long rank = fmpq_mat_rref(R.get(), M.get());
+  std::vector<long> piv;
+  for (long i = 0, j = 0; i < rank; ++i) {
+    while (j < c && fmpq_is_zero(R.at(i, j))) ++j;
+    piv.push_back(j++);
   }
-  return R.topRows(rank).transpose();
+  return piv;
 }
 
-// Keeps the controllable part: projects onto the Krylov space span[B, AB, ...].
+// Keeps the controllable part. The Krylov blocks B, AB, A^2 B, ... are appended until the rank
+// stops growing; the independent Krylov columns K, completed by unit vectors to V = [K, E],
+// give the coordinates x = V xi in which the uncontrollable part is the trailing block.
+// Everything on fmpq_mat (multimodular / fraction-free): the N = 32 contact scene's 96-state
+// realisation in ~0.1 s, where Gaussian elimination on Boost rationals took 20 s.
 StateSpace<Q> controllable_part(const StateSpace<Q>& s) {
-  const auto n = s.states();
+  const long n = static_cast<long>(s.states()), m = static_cast<long>(s.B.cols());
   if (n == 0) return s;
+  flint::QMat A = to_qmat(s.A), blk = to_qmat(s.B);
   MQ K(n, 0);
-  MQ blk = s.B;
-  for (Eigen::Index k = 0; k < n; ++k) {
-    MQ next(n, K.cols() + blk.cols());
-    next << K, blk;
-    K = column_basis(next);
-    blk = s.A * blk;
+  long rank = 0;
+  for (long k = 0; k < n; ++k) {
+    MQ next(n, K.cols() + m);
+    next << K, from_qmat(blk, n, m);
+    flint::QMat nq = to_qmat(next);
+    const std::vector<long> piv = pivot_columns(nq);
+    MQ basis(n, static_cast<Eigen::Index>(piv.size()));
+    for (size_t c = 0; c < piv.size(); ++c) basis.col(static_cast<Eigen::Index>(c)) = next.col(piv[c]);
+    const bool grew = static_cast<long>(piv.size()) > rank;
+    K = basis;
+    rank = static_cast<long>(piv.size());
+    if (!grew || rank == n) break;
+    flint::QMat prod(n, m);
+    fmpq_mat_mul(prod.get(), A.get(), blk.get());
+    fmpq_mat_swap(prod.get(), blk.get());
   }
-  const auto r = K.cols();
-  if (r == n) return s;
-  // Coordinates x = V xi with V = [K, E]: E are unit vectors completing K to a basis.
-  MQ V = K;
-  for (Eigen::Index i = 0; i < n && V.cols() < n; ++i) {
-    MQ cand(n, V.cols() + 1);
-    cand << V, MQ::Identity(n, n).col(i);
-    if (column_basis(cand).cols() > V.cols()) V = cand;
-  }
-  Eigen::FullPivLU<MQ> lu(V);
-  MQ Vi = lu.inverse();
-  MQ At = Vi * s.A * V, Bt = Vi * s.B, Ct = s.C * V;
-  return {At.topLeftCorner(r, r), Bt.topRows(r), Ct.leftCols(r), s.D, s.T};
+  if (rank == n) return s;
+  MQ KI(n, rank + n);
+  KI << K, MQ::Identity(n, n);
+  flint::QMat kiq = to_qmat(KI);
+  const std::vector<long> piv = pivot_columns(kiq);  // K's columns first, then the unit vectors
+  MQ V(n, n);
+  for (long c = 0; c < n; ++c) V.col(c) = KI.col(piv[static_cast<size_t>(c)]);
+  MQ rhs(n, n + m);
+  rhs << s.A * V, s.B;
+  flint::QMat Vq = to_qmat(V), Rq = to_qmat(rhs), X(n, n + m);
+  if (!fmpq_mat_solve(X.get(), Vq.get(), Rq.get())) throw NumericalError("minreal: singular change of coordinates");
+  const MQ At = from_qmat(X, rank, rank), Bt = from_qmat(X, rank, m, 0, n);
+  const MQ Ct = s.C * V.leftCols(rank);
+  return {At, Bt, Ct, s.D, s.T};
 }
 
 StateSpace<Q> dual(const StateSpace<Q>& s) {

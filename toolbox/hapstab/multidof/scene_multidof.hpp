@@ -41,7 +41,7 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   Problem& pb = sp.problem;
   const std::string f = sc.file + ": ";
   if (!sc.loop.environment) throw InputError(f + "the scene has no [environment] (Theorem 5 needs E)");
-  pb.E = *sc.loop.environment;
+  pb.E = minreal(*sc.loop.environment);  // Theorem 5 is realisation-independent; P has one row per state
   const toml::table* md = sc.root["multidof"].as_table();
   const int N = sc.loop.dofs();
   if (pb.E.inputs() != N || pb.E.outputs() != N)

@@ -43,6 +43,10 @@ class QMat {
  public:
   QMat(long rows, long cols) { fmpq_mat_init(m_, rows, cols); }
   ~QMat() { fmpq_mat_clear(m_); }
+  QMat(QMat&& o) noexcept {
+    fmpq_mat_init(m_, 0, 0);
+    fmpq_mat_swap(m_, o.m_);
+  }
   QMat(const QMat&) = delete;
   QMat& operator=(const QMat&) = delete;
   fmpq_mat_struct* get() { return m_; }
