@@ -1,5 +1,5 @@
 // hapstab/lmi/backend.hpp -- the SDP back-ends behind one interface: DSDP 5.8 (default),
-// CSDP 6 (cross-check) and a built-in dense primal-dual IPM for small programs (ipm.cpp: DSDP
+// CSDP 6 (cross-check) and a built-in primal-dual IPM (ipm.cpp: DSDP
 // and CSDP spend ~300 us of bookkeeping per iteration on a 43-variable program). All solve the
 // standard form
 //
@@ -27,9 +27,11 @@
 #include <string>
 #include <vector>
 
+#include "hapstab/lmi/program.hpp"
+
 namespace hapstab::lmi {
 
-/// automatic (Solve's default): small programs are first solved by the built-in dense IPM and
+/// automatic (Solve's default): programs are first solved by the built-in IPM and
 /// that answer is kept only when exactly certified; otherwise DSDP (then CSDP), as `dsdp`.
 enum class Backend { automatic, dsdp, csdp, ipm };
 const char* to_string(Backend b);
@@ -41,10 +43,14 @@ struct SdpTerm {
   Eigen::SparseMatrix<double> A;    ///< symmetric block coefficient, both triangles stored, no
                                     ///< explicit zeros (a Lyapunov term A^T E_ij A is dense, a
                                     ///< Q_E(i,j) entry has 2 non-zeros: storage follows the data)
+  /// Optional: A = sum of s * basis.col(u) * basis.col(v)^T over these (program.hpp's LowRank).
+  /// Empty = not known. The IPM checks it against A before it uses it; DSDP and CSDP ignore it.
+  std::vector<Factor> factors = {};
 };
 struct SdpBlock {
   Eigen::MatrixXd C;   ///< symmetric constant
   std::vector<SdpTerm> terms;
+  Eigen::MatrixXd basis = {};  ///< the columns the terms' factors index (may be empty)
 };
 struct StandardForm {
   int m = 0;                   ///< number of y variables
@@ -75,9 +81,10 @@ BackendResult solve_dsdp(const StandardForm& sf);
 BackendResult solve_csdp(const StandardForm& sf, double time_limit = 30);
 /// The words BackendResult::detail starts with when CSDP was stopped at its time limit.
 inline constexpr const char* kCsdpTimedOut = "CSDP did not finish within its time limit";
-/// The built-in dense primal-dual interior-point method (ipm.cpp): HKM direction, Mehrotra
-/// predictor-corrector, infeasible start. For small programs only (dense n^2 x m data per
-/// block); it has no infeasibility detection of its own (diverging iterates end in
+/// The built-in primal-dual interior-point method (ipm.cpp): HKM direction, Mehrotra
+/// predictor-corrector, infeasible start; the Schur complement from the terms' low-rank pieces
+/// (SdpTerm::factors) where given, else dense (n^2 x m per block: a block whose dense data would
+/// exceed 2^26 doubles declines at once with numerical_trouble); no infeasibility detection of its own (diverging iterates end in
 /// numerical_trouble), so Solve trusts it only through an exact certificate (solve.hpp).
 BackendResult solve_ipm(const StandardForm& sf);
 /// `automatic` is resolved by Solve (solve.hpp); here it means DSDP.

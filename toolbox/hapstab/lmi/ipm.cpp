@@ -7,13 +7,18 @@
 // residuals rp_k = -b_k - tr(A_k X), Rd = C + sum y_k A_k - S and a target sigma mu:
 //   M dy = tr(A_k R) - rp_k,   M_kl = tr(A_k X A_l S^-1),   R = sigma mu S^-1 - X - X Rd S^-1 [- dXa dSa S^-1]
 //   dS = sum dy_l A_l + Rd,    dX = sym(R - X (sum dy_l A_l) S^-1).
-// The Schur complement is formed per block as G^T G with G = [vec Ls^T A_k Lx] (X = Lx Lx^T,
-// S^-1 = Ls Ls^T), or entry by entry for blocks of sparse terms: dense level-3 work with no
-// per-entry library overhead, which is what small problems need.
+// The Schur complement is formed per block in one of three ways: from the terms' rank-one
+// pieces over a shared basis Bm when the program supplies them (SdpTerm::factors; a Lyapunov
+// term A^T E_ij A - E_ij has 4): M_kl = sum s_f s_g Xt(v_f, u_g) Zt(v_g, u_f) with
+// Xt = Bm^T X Bm, Zt = Bm^T S^-1 Bm, O(pieces^2) per entry; entry by entry for blocks of sparse
+// terms; else as G^T G with G = [vec Ls^T A_k Lx] (X = Lx Lx^T, S^-1 = Ls Ls^T), dense level-3
+// work. The first is what makes the 32-device Theorem 5 program (1700 variables, a 66 x 66
+// Lyapunov block) a matter of seconds: the dense form costs q^2 n^2 / 2 = 1.4e10 per iteration.
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "hapstab/lmi/backend.hpp"
 
@@ -32,11 +37,70 @@ struct DenseBlock {
   int n = 0;
   MatrixXd C;
   std::vector<int> vars;                   // k of each column of V
-  MatrixXd V;                              // n^2 x |vars|: vec(A_k)
+  Eigen::SparseMatrix<double> V;           // n^2 x |vars|: vec(A_k)
   std::vector<std::vector<Entry>> entries; // A_k's non-zeros (both triangles)
   std::vector<bool> sparse;                // nnz(A_k) <= n: outer products beat a GEMM
   bool all_sparse = true;
+  // The low-rank path (SdpTerm::factors): A_k = sum s b_u b_v^T over the columns of Bm.
+  bool low_rank = false;
+  MatrixXd Bm;
+  std::vector<std::vector<Factor>> factors;
 };
+
+// Deduplicated basis and per-term pieces for block B, when every piece checks out against its
+// sparse term (relative 1e-12) and the low-rank Schur complement is cheaper than the dense
+// one: R^2 n + sum_{k<=l} |f_k| |f_l| against q^2 n^2 / 2. Terms without pieces get unit
+// vectors (one piece per non-zero).
+void setup_low_rank(const SdpBlock& B, DenseBlock& D) {
+  const int n = D.n;
+  const size_t q = B.terms.size();
+  bool any = false;
+  for (const auto& t : B.terms) any = any || !t.factors.empty();
+  if (!any || D.all_sparse) return;
+  std::map<std::vector<double>, int> index;  // exact column -> position in the new basis
+  std::vector<VectorXd> cols;
+  auto column = [&](const VectorXd& c) {
+    std::vector<double> key(c.data(), c.data() + c.size());
+    auto [it, fresh] = index.emplace(std::move(key), static_cast<int>(cols.size()));
+    if (fresh) cols.push_back(c);
+    return it->second;
+  };
+  std::vector<int> remap(static_cast<size_t>(B.basis.cols()), -1);
+  auto basis_col = [&](int u) {
+    if (remap[static_cast<size_t>(u)] < 0) remap[static_cast<size_t>(u)] = column(B.basis.col(u));
+    return remap[static_cast<size_t>(u)];
+  };
+  std::vector<std::vector<Factor>> f(q);
+  double pairs = 0, total = 0;
+  for (size_t t = 0; t < q; ++t) {
+    const auto& T = B.terms[t];
+    const MatrixXd A(T.A);
+    if (!T.factors.empty()) {
+      MatrixXd rec = MatrixXd::Zero(n, n);
+      for (const Factor& x : T.factors) {
+        if (x.u < 0 || x.v < 0 || x.u >= B.basis.cols() || x.v >= B.basis.cols()) return;
+        rec.noalias() += x.s * B.basis.col(x.u) * B.basis.col(x.v).transpose();
+      }
+      if ((rec - A).cwiseAbs().maxCoeff() <= 1e-12 * std::max(1.0, A.cwiseAbs().maxCoeff())) {
+        std::map<std::pair<int, int>, double> merged;  // pieces on the same (u, v) after dedup
+        for (const Factor& x : T.factors) merged[{basis_col(x.u), basis_col(x.v)}] += x.s;
+        for (const auto& [uv, c] : merged)
+          if (c != 0.0) f[t].push_back({uv.first, uv.second, c});
+      }
+    }
+    if (f[t].empty())
+      for (const auto& e : D.entries[t]) f[t].push_back({column(VectorXd::Unit(n, e.a)), column(VectorXd::Unit(n, e.b)), e.v});
+    total += static_cast<double>(f[t].size());
+  }
+  for (size_t t = 0; t < q; ++t) pairs += static_cast<double>(f[t].size()) * total / 2;
+  const double R = static_cast<double>(cols.size()), dn = n;
+  const double low = 2 * (R * R * dn + R * dn * dn) + pairs, dense = static_cast<double>(q) * q * dn * dn / 2;
+  if (!(low < dense)) return;
+  D.low_rank = true;
+  D.Bm.resize(n, static_cast<Eigen::Index>(cols.size()));
+  for (size_t c = 0; c < cols.size(); ++c) D.Bm.col(static_cast<Eigen::Index>(c)) = cols[c];
+  D.factors = std::move(f);
+}
 
 // largest alpha in (0, inf] with P + alpha dP >= 0, P > 0 (L = chol(P)), or any value
 // >= `enough` when P + enough dP > 0 (one Cholesky instead of an eigenvalue problem: near
@@ -69,23 +133,35 @@ BackendResult solve_ipm(const StandardForm& sf) {
     N += D.n;
     D.C = B.C;
     cnorm = std::max(cnorm, B.C.norm());
-    D.V = MatrixXd::Zero(static_cast<Eigen::Index>(D.n) * D.n, static_cast<Eigen::Index>(B.terms.size()));
+    std::vector<Eigen::Triplet<double>> vt;
     for (size_t t = 0; t < B.terms.size(); ++t) {
       D.vars.push_back(B.terms[t].var);
       std::vector<Entry> e;
       for (int o = 0; o < B.terms[t].A.outerSize(); ++o)
-        for (Eigen::SparseMatrix<double>::InnerIterator i(B.terms[t].A, o); i; ++i)
+        for (Eigen::SparseMatrix<double>::InnerIterator i(B.terms[t].A, o); i; ++i) {
           e.push_back({static_cast<int>(i.row()), static_cast<int>(i.col()), i.value()});
+          vt.emplace_back(static_cast<int>(i.col()) * D.n + static_cast<int>(i.row()), static_cast<int>(t), i.value());
+        }
       D.sparse.push_back(static_cast<int>(e.size()) <= D.n);
       D.all_sparse = D.all_sparse && D.sparse.back();
       D.entries.push_back(std::move(e));
-      MatrixXd A = MatrixXd(B.terms[t].A);
-      amax = std::max(amax, A.norm());
-      D.V.col(static_cast<Eigen::Index>(t)) = Eigen::Map<const VectorXd>(A.data(), A.size());
+      amax = std::max(amax, B.terms[t].A.norm());
     }
+    D.V.resize(static_cast<Eigen::Index>(D.n) * D.n, static_cast<Eigen::Index>(B.terms.size()));
+    D.V.setFromTriplets(vt.begin(), vt.end());
+    setup_low_rank(B, D);
   }
   BackendResult r;
   r.y = VectorXd::Zero(m);
+  for (const auto& D : blk)  // the dense path's n^2 x q work matrices must fit: else decline at once
+    if (!D.low_rank && !D.all_sparse &&
+        static_cast<double>(D.n) * D.n * static_cast<double>(D.vars.size()) > static_cast<double>(1 << 26)) {
+      r.status = SolveStatus::numerical_trouble;
+      r.detail = "hapstab IPM: a " + std::to_string(D.n) + "x" + std::to_string(D.n) + " block with " +
+                 std::to_string(D.vars.size()) + " dense terms is too large for its dense Schur complement";
+      r.X.resize(J);
+      return r;
+    }
   r.X.resize(J);
   // CSDP's starting point (initsoln): X = 10 alpha I, S = 10 beta I
   double alpha = 0;
@@ -118,6 +194,7 @@ BackendResult solve_ipm(const StandardForm& sf) {
   };
   std::vector<Work> work(J);
   MatrixXd M;               // Schur complement, reused across iterations
+  Eigen::LLT<MatrixXd> LL;
   Eigen::LDLT<MatrixXd> LM;
   const int max_iter = 60;
   double mu0 = 0;
@@ -173,7 +250,18 @@ BackendResult solve_ipm(const StandardForm& sf) {
       if (q == 0) continue;
       MatrixXd& Mj = work[j].Mj;
       Mj.setZero(q, q);
-      if (D.all_sparse) {
+      if (D.low_rank) {
+        // M_kl = sum_{f in k, g in l} s_f s_g Xt(v_f, u_g) Zt(v_g, u_f), Xt = B^T X B, Zt = B^T S^-1 B
+        const MatrixXd XB = X[j] * D.Bm, ZB = Sinv[j] * D.Bm;
+        const MatrixXd Xt = D.Bm.transpose() * XB, Zt = D.Bm.transpose() * ZB;
+        for (Eigen::Index k = 0; k < q; ++k)
+          for (Eigen::Index l = 0; l <= k; ++l) {
+            double acc = 0;
+            for (const Factor& f : D.factors[static_cast<size_t>(k)])
+              for (const Factor& g : D.factors[static_cast<size_t>(l)]) acc += f.s * g.s * Xt(f.v, g.u) * Zt(g.v, f.u);
+            Mj(k, l) = Mj(l, k) = acc;
+          }
+      } else if (D.all_sparse) {
         for (Eigen::Index k = 0; k < q; ++k)
           for (Eigen::Index l = 0; l <= k; ++l) {
             double acc = 0;
@@ -195,8 +283,10 @@ BackendResult solve_ipm(const StandardForm& sf) {
         MatrixXd& Uv = work[j].Uv;      // [Ls^T A_t; ...] stacked vertically
         MatrixXd& G = work[j].G;
         Abig.resize(n, n * qd);
-        for (Eigen::Index i = 0; i < qd; ++i)
-          Abig.middleCols(i * n, n) = Eigen::Map<const MatrixXd>(D.V.col(dense[static_cast<size_t>(i)]).data(), n, n);
+        for (Eigen::Index i = 0; i < qd; ++i) {
+          const VectorXd a = D.V.col(dense[static_cast<size_t>(i)]);
+          Abig.middleCols(i * n, n) = Eigen::Map<const MatrixXd>(a.data(), n, n);
+        }
         work[j].U.noalias() = Ls.transpose() * Abig;  // [Ls^T A_t ...]
         Uv.resize(n * qd, n);
         for (Eigen::Index i = 0; i < qd; ++i) Uv.middleRows(i * n, n) = work[j].U.middleCols(i * n, n);
@@ -216,8 +306,12 @@ BackendResult solve_ipm(const StandardForm& sf) {
       for (Eigen::Index a = 0; a < q; ++a)
         for (Eigen::Index b = 0; b < q; ++b) M(D.vars[static_cast<size_t>(a)], D.vars[static_cast<size_t>(b)]) += Mj(a, b);
     }
-    LM.compute(M);  // M is symmetric by construction; LDLT reads its lower triangle
-    if (LM.info() != Eigen::Success || !(LM.vectorD().minCoeff() > 0)) {
+    // M is symmetric positive definite in exact arithmetic: Cholesky (blocked, 3-5x Eigen's
+    // unblocked LDL^T at m ~ 1000); LDL^T with a shift only when it fails.
+    LL.compute(M);
+    const bool cholesky = LL.info() == Eigen::Success;
+    if (!cholesky) LM.compute(M);
+    if (!cholesky && (LM.info() != Eigen::Success || !(LM.vectorD().minCoeff() > 0))) {
       // Near a degenerate optimum (a face of non-unique solutions, e.g. the m = 8 bench
       // program) M loses rank in floating point: a relative 1e-12 diagonal shift keeps the
       // Newton step (inexact by that much) instead of stopping.
@@ -228,7 +322,7 @@ BackendResult solve_ipm(const StandardForm& sf) {
       }
     }
     auto direction = [&](VectorXd& dy) {  // from R: dy, dS, dX
-      dy = LM.solve(trace_A(R) - rp);
+      dy = cholesky ? VectorXd(LL.solve(trace_A(R) - rp)) : VectorXd(LM.solve(trace_A(R) - rp));
       for (size_t j = 0; j < J; ++j) {
         MatrixXd Ady = apply_A(j, dy);
         dS[j] = Ady + Rd[j];

@@ -24,19 +24,60 @@ double max_abs(const SpMat& m) {
   for (Eigen::Index i = 0; i < m.nonZeros(); ++i) v = std::max(v, std::abs(m.valuePtr()[i]));
   return v;
 }
+// a + b on the low-rank forms: bases side by side, b's pieces re-indexed; a variable keeps
+// its pieces only when every operand that has its term has them
+LowRank concat(const LowRank& a, const std::map<int, SpMat>& ta, const LowRank& b, const std::map<int, SpMat>& tb) {
+  LowRank r;
+  r.L.resize(std::max(a.L.rows(), b.L.rows()), a.L.cols() + b.L.cols());
+  r.R.resize(std::max(a.R.rows(), b.R.rows()), a.R.cols() + b.R.cols());
+  r.L << a.L, b.L;
+  r.R << a.R, b.R;
+  const int du = static_cast<int>(a.L.cols()), dv = static_cast<int>(a.R.cols());
+  std::set<int> vars;
+  for (const auto& [k, m] : ta) vars.insert(k);
+  for (const auto& [k, m] : tb) vars.insert(k);
+  for (int k : vars) {
+    const bool in_a = ta.count(k) > 0, in_b = tb.count(k) > 0;
+    if ((in_a && !a.factors.count(k)) || (in_b && !b.factors.count(k))) continue;
+    std::vector<Factor> f;
+    if (in_a) f = a.factors.at(k);
+    if (in_b)
+      for (const Factor& g : b.factors.at(k)) f.push_back({g.u + du, g.v + dv, g.s});
+    r.factors.emplace(k, std::move(f));
+  }
+  return r;
+}
+
+// places `a` (rows x cols) at (r0, c0) of a rows_out x cols_out expression
+LowRank embed(const LowRank& a, int r0, int c0, int rows_out, int cols_out) {
+  LowRank r;
+  r.L = MatrixXd::Zero(rows_out, a.L.cols());
+  r.R = MatrixXd::Zero(cols_out, a.R.cols());
+  r.L.middleRows(r0, a.L.rows()) = a.L;
+  r.R.middleRows(c0, a.R.rows()) = a.R;
+  r.factors = a.factors;
+  return r;
+}
 }  // namespace
 
-Expr::Expr(const MatrixXd& constant) : rows_(static_cast<int>(constant.rows())), cols_(static_cast<int>(constant.cols())), c0_(constant) {}
+Expr::Expr(const MatrixXd& constant) : rows_(static_cast<int>(constant.rows())), cols_(static_cast<int>(constant.cols())), c0_(constant) {
+  lr_.L.resize(rows_, 0);
+  lr_.R.resize(cols_, 0);
+}
 
 Expr::Expr(const MatrixVariable& v) : rows_(v.rows), cols_(v.cols), c0_(MatrixXd::Zero(v.rows, v.cols)) {
   std::map<int, std::vector<Eigen::Triplet<double>>> trip;
   for (int j = 0; j < v.cols; ++j)
     for (int i = 0; i < v.rows; ++i)
       if (int k = v.at(i, j); k >= 0) trip[k].emplace_back(i, j, 1.0);
+  lr_.L = MatrixXd::Identity(rows_, rows_);
+  lr_.R = MatrixXd::Identity(cols_, cols_);
   for (auto& [k, t] : trip) {
     SpMat m(rows_, cols_);
     m.setFromTriplets(t.begin(), t.end());
     terms_.emplace(k, std::move(m));
+    auto& f = lr_.factors[k];
+    for (const auto& e : t) f.push_back({static_cast<int>(e.row()), static_cast<int>(e.col()), e.value()});
   }
 }
 
@@ -58,6 +99,12 @@ Expr Expr::transpose() const {
   t.cols_ = rows_;
   t.c0_ = c0_.transpose();
   for (const auto& [k, m] : terms_) t.terms_.emplace(k, SpMat(m.transpose()));
+  t.lr_.L = lr_.R;
+  t.lr_.R = lr_.L;
+  for (const auto& [k, f] : lr_.factors) {
+    auto& g = t.lr_.factors[k];
+    for (const Factor& x : f) g.push_back({x.v, x.u, x.s});
+  }
   return t;
 }
 Expr transpose(const Expr& e) { return e.transpose(); }
@@ -81,6 +128,7 @@ Expr& Expr::operator+=(const Expr& o) {
   if (rows_ != o.rows_ || cols_ != o.cols_)
     return *this = invalid("cannot add a " + dims(rows_, cols_) + " and a " + dims(o.rows_, o.cols_) + " matrix");
   c0_ += o.c0_;
+  lr_ = concat(lr_, terms_, o.lr_, o.terms_);
   for (const auto& [k, m] : o.terms_) {
     auto it = terms_.find(k);
     if (it == terms_.end()) terms_.emplace(k, m);
@@ -93,6 +141,8 @@ Expr Expr::scaled(Expr a, double s) {
   if (!a.ok()) return a;
   a.c0_ *= s;
   for (auto& [k, m] : a.terms_) m *= s;
+  for (auto& [k, f] : a.lr_.factors)
+    for (Factor& x : f) x.s *= s;
   return a;
 }
 Expr Expr::scalar_times(const MatrixXd& M, const Expr& s) {
@@ -102,6 +152,8 @@ Expr Expr::scalar_times(const MatrixXd& M, const Expr& s) {
   r.rows_ = static_cast<int>(M.rows());
   r.cols_ = static_cast<int>(M.cols());
   r.c0_ = s.c0_(0, 0) * M;
+  r.lr_.L.resize(r.rows_, 0);  // the terms c_k M have no low-rank form here
+  r.lr_.R.resize(r.cols_, 0);
   for (const auto& [k, m] : s.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(m.coeff(0, 0) * M)));
   return r;
 }
@@ -116,6 +168,9 @@ Expr Expr::left(const MatrixXd& L, const Expr& a) {
   r.cols_ = a.cols_;
   r.c0_ = L * a.c0_;
   for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(L * m)));
+  r.lr_.L = L * a.lr_.L;
+  r.lr_.R = a.lr_.R;
+  r.lr_.factors = a.lr_.factors;
   return r;
 }
 Expr Expr::right(const Expr& a, const MatrixXd& R) {
@@ -128,6 +183,9 @@ Expr Expr::right(const Expr& a, const MatrixXd& R) {
   r.cols_ = static_cast<int>(R.cols());
   r.c0_ = a.c0_ * R;
   for (const auto& [k, m] : a.terms_) r.terms_.emplace(k, dense_to_sparse(MatrixXd(m * R)));
+  r.lr_.L = a.lr_.L;
+  r.lr_.R = R.transpose() * a.lr_.R;
+  r.lr_.factors = a.lr_.factors;
   return r;
 }
 
@@ -181,6 +239,9 @@ Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
   out.cols_ = 0;
   for (int x : w) out.cols_ += x;
   out.c0_ = MatrixXd::Zero(out.rows_, out.cols_);
+  out.lr_.L.resize(out.rows_, 0);
+  out.lr_.R.resize(out.cols_, 0);
+  std::map<int, SpMat> seen;  // the variables met so far (for concat's bookkeeping)
   std::map<int, std::vector<Eigen::Triplet<double>>> trip;
   int r0 = 0;
   for (size_t i = 0; i < R; ++i) {
@@ -191,6 +252,8 @@ Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
       else if (square && i > j && given(j, i)) blk = given(j, i)->transpose();
       if (!blk.empty()) {
         out.c0_.block(r0, cc0, h[i], w[j]) = blk.c0_;
+        out.lr_ = concat(out.lr_, seen, embed(blk.lr_, r0, cc0, out.rows_, out.cols_), blk.terms_);
+        for (const auto& [k, m] : blk.terms_) seen.emplace(k, SpMat());
         for (const auto& [k, m] : blk.terms_)
           for (int o = 0; o < m.outerSize(); ++o)
             for (SpMat::InnerIterator it(m, o); it; ++it)

@@ -39,6 +39,24 @@ struct MatrixVariable {
   int at(int i, int j) const { return index[static_cast<size_t>(j) * rows + i]; }
 };
 
+/// One rank-one piece s * u v^T of a term, u and v columns of a basis (LowRank).
+struct Factor {
+  int u, v;
+  double s;
+};
+
+/// The terms F_k as sums of rank-one pieces over shared bases: F_k = sum over factors(k) of
+/// s * L.col(u) * R.col(v)^T. A matrix variable starts with L = R = I and its unit pieces;
+/// congruences multiply the bases (L <- A L), sums and block assembly concatenate them. A
+/// Lyapunov term A^T E_ij A - E_ij keeps 4 pieces over the columns of [A^T, I], which the
+/// interior-point method uses to form its Schur complement in O(pieces^2) per entry instead
+/// of O(n^2) (lmi/ipm.cpp). A variable whose term lost the form (kron with a scalar
+/// expression) has no entry in `factors`; the sparse term is always the reference.
+struct LowRank {
+  MatrixXd L, R;
+  std::map<int, std::vector<Factor>> factors;
+};
+
 /// An affine matrix expression F0 + sum_k x_k F_k (F_k sparse).
 ///
 /// A dimension mismatch in an operation does not throw where it happens (a C++ expression has
@@ -62,6 +80,7 @@ class Expr {
   const std::string& error() const { return error_; }  ///< why the expression is invalid
   const MatrixXd& constant() const { return c0_; }
   const std::map<int, SpMat>& terms() const { return terms_; }
+  const LowRank& low_rank() const { return lr_; }
 
   Expr transpose() const;
   /// Value at the scalar variables x (double).
@@ -90,6 +109,7 @@ class Expr {
   int rows_ = 0, cols_ = 0;  // -1 x -1 when invalid
   MatrixXd c0_;
   std::map<int, SpMat> terms_;
+  LowRank lr_;
   std::string error_;
 };
 

@@ -153,6 +153,8 @@ bool eliminate(const Program& prog, Affine& af, std::string& why) {
 struct Reduced {
   Eigen::MatrixXd G0;
   std::map<int, SpMat> G;
+  Eigen::MatrixXd basis;                       ///< G[k] = sum over factors[k] of s b_u b_v^T
+  std::map<int, std::vector<Factor>> factors;  ///< (symmetrised; see LowRank in program.hpp)
 };
 SpMat sym_sparse(const SpMat& M) {
   SpMat S = 0.5 * (M + SpMat(M.transpose()));
@@ -176,12 +178,47 @@ SpMat congruence(const SpMat& m, const Eigen::VectorXd& d, double s) {
     for (SpMat::InnerIterator it(r, o); it; ++it) it.valueRef() = s * d(it.row()) * it.value() * d(it.col());
   return r;
 }
+// The low-rank form of the reduced, symmetrised terms: one basis [L, R]; each piece s u v^T
+// of F_i becomes s/2 (u v^T + v u^T), weighted by the elimination's N_ik.
+void reduce_low_rank(const Expr& F, const Affine& af, Reduced& r) {
+  const LowRank& lr = F.low_rank();
+  const int p = static_cast<int>(lr.L.cols());
+  r.basis.resize(F.rows(), lr.L.cols() + lr.R.cols());
+  r.basis << lr.L, lr.R;
+  auto add = [&](std::vector<Factor>& out, const std::vector<Factor>& f, double c) {
+    for (const Factor& x : f) {
+      out.push_back({x.u, p + x.v, 0.5 * c * x.s});
+      out.push_back({p + x.v, x.u, 0.5 * c * x.s});
+    }
+  };
+  if (af.identity) {
+    for (const auto& [k, f] : lr.factors) add(r.factors[k], f, 1.0);
+    return;
+  }
+  for (const auto& [k, m] : r.G) {
+    std::vector<Factor> out;
+    bool ok = true;
+    for (const auto& [i, mi] : F.terms()) {
+      const double c = af.Nd(i, k);
+      if (c == 0.0) continue;
+      auto it = lr.factors.find(i);
+      if (it == lr.factors.end()) {
+        ok = false;
+        break;
+      }
+      add(out, it->second, c);
+    }
+    if (ok) r.factors.emplace(k, std::move(out));
+  }
+}
+
 Reduced reduce(const Expr& F, const Affine& af) {
   Reduced r;
   auto sym = [](const Eigen::MatrixXd& M) -> Eigen::MatrixXd { return 0.5 * (M + M.transpose()); };
   if (af.identity) {
     r.G0 = sym(F.constant());
     for (const auto& [k, m] : F.terms()) r.G[k] = sym_sparse(m);
+    reduce_low_rank(F, af, r);
     return r;
   }
   Eigen::MatrixXd G0 = F.constant();
@@ -197,6 +234,7 @@ Reduced reduce(const Expr& F, const Affine& af) {
   }
   r.G0 = sym(G0);
   for (auto& [k, m] : r.G) m = sym_sparse(m);
+  reduce_low_rank(F, af, r);
   return r;
 }
 
@@ -360,11 +398,17 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
     B.C = Dj * red[j].G0 * Dj;
     if (strict && prog.objective_kind() == ObjectiveKind::minimize)
       B.C -= opt.strict_threshold * Eigen::MatrixXd::Identity(B.C.rows(), B.C.cols());
+    B.basis = Dj * red[j].basis;
     for (const auto& [k, m] : red[j].G) {
       if (zmap[static_cast<size_t>(k)] < 0) continue;
       SpMat A = congruence(m, D[j], s(k));  // exact: powers of two
       if (max_abs(A) == 0) continue;
-      B.terms.push_back({zmap[static_cast<size_t>(k)], std::move(A)});
+      std::vector<Factor> f;
+      if (auto it = red[j].factors.find(k); it != red[j].factors.end()) {
+        f = it->second;
+        for (Factor& x : f) x.s *= s(k);
+      }
+      B.terms.push_back({zmap[static_cast<size_t>(k)], std::move(A), std::move(f)});
     }
     if (strict && use_t) {
       SpMat I(B.C.rows(), B.C.cols());

@@ -1,5 +1,7 @@
 #include "hapstab/multidof/analysis.hpp"
 
+#include <chrono>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -189,11 +191,16 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
     const MatrixXd AE = to_double(MatQ(sp.t.A.topLeftCorner(n, n)));
     const MatrixXd Bt = to_double(MatQ(sp.t.B.topRows(n)));
     const MatrixXd CE = to_double(MatQ(sp.t.C.leftCols(n)));
-    const Expr F11 = AE.transpose() * P * AE - P;
-    const Expr F12 = AE.transpose() * P * Bt - 0.5 * (CE.transpose() * ev.X);
-    F22 += Bt.transpose() * P * Bt;
-    prog.AddLmi("(16) first LMI, reduced (facial reduction)", -1.0 * lmi::blocks({{F11, F12}, {Expr(), F22}}),
-                Strictness::strict);
+    // [[AE^T P AE - P, AE^T P Bt - CE^T X/2], [., Bt^T P Bt + F22]] written as
+    // W^T P W - J^T P J + [[0, -CE^T X/2], [., F22]], W = [AE, Bt], J = [I, 0]: the same
+    // entries, and each P_ij term keeps its 4 rank-one pieces (w_i w_j^T + w_j w_i^T - e_i e_j^T
+    // - e_j e_i^T), which the IPM's Schur complement uses (lmi/program.hpp, LowRank).
+    MatrixXd W(n, n + m), J = MatrixXd::Zero(n, n + m);
+    W << AE, Bt;
+    J.leftCols(n).setIdentity();
+    const Expr rest = lmi::blocks({{Expr::Zero(n, n), -0.5 * (CE.transpose() * ev.X)}, {Expr(), F22}});
+    prog.AddLmi("(16) first LMI, reduced (facial reduction)",
+                -1.0 * (W.transpose() * P * W - J.transpose() * P * J + rest), Strictness::strict);
   } else {
     prog.AddLmi("(16) first LMI, reduced (facial reduction)", -1.0 * F22, Strictness::strict);
   }
@@ -461,9 +468,22 @@ rational normaliser(const MatQ& X) {
 }
 }  // namespace
 
+lmi::Result timed_solve(const Program& prog, const lmi::Options& opt, double& seconds) {
+  const auto t0 = std::chrono::steady_clock::now();
+  lmi::Result r = lmi::Solve(prog, opt);
+  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode) {
   pb.validate(false);
   AnalysisResult res;
+  const auto start = std::chrono::steady_clock::now();
+  struct Stamp {  // res.seconds on every return
+    AnalysisResult& r;
+    std::chrono::steady_clock::time_point t0;
+    ~Stamp() { r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+  } stamp{res, start};
   res.facial = facial_conditions(pb);
   const int m = pb.structure.m();
   if (!res.facial.symmetric_possible) {
@@ -478,7 +498,7 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
     Program prog;
     const EnvVars ev = add_environment(prog, pb, sp, res.facial, true);
     prog.SetMarginObjective(1.0);
-    const lmi::Result r = lmi::Solve(prog, opt);
+    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
     res.verdict = r.verdict;
     res.margin = r.margin;
     res.solver_detail = verdict_text(r);
@@ -539,7 +559,7 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
     MatrixVariable QV;
     build(prog, ev, QV);
     prog.SetMarginObjective(1.0);
-    const lmi::Result r = lmi::Solve(prog, opt);
+    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
     res.verdict = r.verdict;
     res.margin = r.margin;
     res.solver_detail = verdict_text(r);
@@ -577,7 +597,7 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
     const MatrixVariable t = prog.NewScalar("t");
     prog.AddLmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
     prog.SetMinimize(Expr(t));
-    const lmi::Result r = lmi::Solve(prog, opt);
+    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
     if (r.status == lmi::SolveStatus::optimal && !r.x.empty()) {
       ExactEnv x = exact_env(r, ev);
       MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));

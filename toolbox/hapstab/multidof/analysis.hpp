@@ -73,6 +73,8 @@ struct AnalysisResult {
   double Q_V_min_norm = 0;
   std::vector<double> gamma_sqrt_min;
   std::string solver_detail;
+  double seconds = 0;      ///< wall time of analyze()
+  double sdp_seconds = 0;  ///< ... of it in lmi::Solve (the rest: Ê, facial reduction, exact checks)
 };
 
 /// full: the margin program (16) in (P, X, Q_E, Q_V), then the least dissipative coupling.
