@@ -124,6 +124,29 @@ TEST(PassivityBound, PolesAtPlusMinusOne) {
   EXPECT_THROW(bound_certified(make("z^2/(z+1)^2", "1")), InputError);
 }
 
+TEST(PassivityBound, ClusterOfPolesNearMinusOneIsNotLost) {
+  // Found by the 100,000-case campaign (verify_random --seed 7 --criterion bound --case 17002):
+  // real poles at -0.999999, -0.999998, -0.99995 make the objective climb from -1.4e13 at
+  // wT = pi to +1.7e12 at cos wT = -1 + 3e-12. At 30 digits the interval value of that critical
+  // point was [-inf, inf], which exact_rational turned into [0, 0]: b* = 1.14 was printed as
+  // certified. Now the unbounded interval asks for more precision, and a non-finite value can
+  // never become a rational (it throws).
+  auto p = make("(61/38*z^6 + 23/3*z^5 + 701/47*z^4 - 151/17*z^3 - 732/85*z^2 - 98/5*z - 710/13)/"
+                "((z + 999999/1000000)*(z + 999998/1000000)*(z + 99995/100000)*(z - 92/100)*"
+                "(z^2 - 2*2278041825/10000000000*z + 6409999999/10000000000)*(z^2 - 2*202394513/1000000000*z + 9063600000/10000000000))",
+                "1/1000");
+  p.eta = rational(121, 125);
+  const Bound b = bound_certified(p, 30);
+  ASSERT_FALSE(b.infinite);
+  // the 100-digit objective at the certified maximiser lies in the enclosure, and exceeds 1e12
+  const R w = (R(b.omega_lo) + R(b.omega_hi)) / 2;
+  const R f = testref::objective(p.H, p.T, 0, rational(0), w * R(p.T)) + R(p.eta);
+  EXPECT_GT(f, R(1e12));
+  EXPECT_LE(R(b.lo) - f, R(1e-25) * f);
+  EXPECT_LE(f - R(b.hi), R(1e-25) * f);
+  EXPECT_THROW(exact_rational(mpfloat<30>(std::numeric_limits<double>::infinity())), NumericalError);
+}
+
 TEST(PassivityBound, WPiEndpointExact) {
   auto p = make("((z-1)/(T*z))^2", "1/100");
   Bound b = bound_certified(p);

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab {
@@ -33,7 +34,10 @@ std::optional<std::string> common_decimal(const rational& lo, const rational& hi
 rational exact_rational(double x);
 template <unsigned D>
 rational exact_rational(const mpfloat<D>& x) {
-  // x = m * 2^e exactly (mpfr_get_z_2exp); x must be finite.
+  // x = m * 2^e exactly (mpfr_get_z_2exp). An infinite or NaN x has no rational value:
+  // mpfr_get_z_2exp would return 0 (the verify-random campaign found an interval [-inf, inf]
+  // turned into the exact value [0, 0] this way), so it is refused.
+  if (!mpfr_number_p(x.backend().data())) throw NumericalError("exact_rational: value is not finite");
   integer m;
   long e = mpfr_get_z_2exp(m.backend().data(), x.backend().data());
   rational q(m);

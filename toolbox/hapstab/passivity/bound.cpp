@@ -422,6 +422,9 @@ bool enclose_critical(const CriticalContext<D>& cx, RootInterval r, int digits, 
   I fm = cx.A_I(Mi) / cx.B_I(Mi);
   I BX = cx.B_I(X);
   I fx = fm + (cx.Pd_I(X) / (BX * BX)) * (X - Mi);
+  // cancellation in f = A/B near a cluster of poles (B ~ 1e-24 at c = -1 + 3e-12 in the
+  // campaign's case) can leave an unbounded interval: not enough precision, never a value
+  if (!isfinite(lower(fx)) || !isfinite(upper(fx))) return false;
   out.vlo = rlo(fx);
   out.vhi = rhi(fx);
   out.clo = lo;
@@ -554,6 +557,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
     }
   }
   if (cands.empty()) throw NumericalError("no candidate for the maximum (f -> -inf everywhere?)");
+
   // max over candidates: b* in [max lo, max hi]
   size_t best = 0;
   for (size_t i = 1; i < cands.size(); ++i)
