@@ -122,6 +122,55 @@ TEST(LmiSolve, LyapunovFeasibleCertifiedBothBackends) {
   }
 }
 
+// The low-rank form (program.hpp LowRank) through congruences, sums, transposes, scaling and
+// block assembly: for every variable, the sum of its pieces equals its sparse term to rounding.
+// Then a Lyapunov program that takes the IPM's low-rank Schur complement (a dense 20-state A:
+// 210 variables with 4 pieces each against up to n^2 = 400 entries) is solved and certified by
+// the IPM, and by DSDP.
+TEST(LmiModel, LowRankPiecesMatchTheTerms) {
+  std::mt19937 g(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int n = 20;
+  MatrixXd A(n, n), B(n, 1);
+  for (int i = 0; i < A.size(); ++i) A.data()[i] = u(g);
+  for (int i = 0; i < n; ++i) B(i, 0) = u(g);
+  A *= 0.9 / Eigen::EigenSolver<MatrixXd>(A).eigenvalues().cwiseAbs().maxCoeff();  // Schur stable
+  MatrixXd W(n, n + 1), J = MatrixXd::Zero(n, n + 1);
+  W << A, B;
+  J.leftCols(n).setIdentity();
+  Program prog;
+  auto P = prog.NewSymmetric(n, "P");
+  auto t = prog.NewScalar("t");
+  const Expr F = -1.0 * (W.transpose() * Expr(P) * W - J.transpose() * Expr(P) * J) +
+                 blocks({{Expr::Zero(n, n), Expr::Zero(n, 1)}, {Expr(), kron(MatrixXd::Identity(1, 1), Expr(t))}});
+  const LowRank& lr = F.low_rank();
+  for (const auto& [k, m] : F.terms()) {
+    auto it = lr.factors.find(k);
+    if (k == t.index[0]) {  // kron: no pieces
+      EXPECT_EQ(it, lr.factors.end());
+      continue;
+    }
+    ASSERT_NE(it, lr.factors.end()) << "variable " << k;
+    MatrixXd rec = MatrixXd::Zero(F.rows(), F.cols());
+    for (const Factor& f : it->second) rec += f.s * lr.L.col(f.u) * lr.R.col(f.v).transpose();
+    EXPECT_LE((rec - MatrixXd(m)).cwiseAbs().maxCoeff(), 1e-13) << "variable " << k;
+  }
+  // the transpose keeps them too
+  const Expr Ft = F.transpose();
+  for (const auto& [k, f] : Ft.low_rank().factors) {
+    MatrixXd rec = MatrixXd::Zero(Ft.rows(), Ft.cols());
+    for (const Factor& x : f) rec += x.s * Ft.low_rank().L.col(x.u) * Ft.low_rank().R.col(x.v).transpose();
+    EXPECT_LE((rec - MatrixXd(Ft.terms().at(k))).cwiseAbs().maxCoeff(), 1e-13);
+  }
+  MatrixVariable Pv;
+  Program lyap = lyapunov(A, &Pv);
+  for (Backend b : {Backend::ipm, Backend::dsdp}) {
+    const Result r = Solve(lyap, only(b));
+    ASSERT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
+    EXPECT_EQ(r.verdict, Feasibility::feasible);
+  }
+}
+
 // A = diag(1.2, 0.5) is not Schur: no P > 0 with A^T P A - P < 0. Farkas: Z = e1 e1^T on the
 // Lyapunov block and 0.44 e1 e1^T on P: tr((P - A^T P A) Z) + 0.44... -> the back-end's Z is
 // checked exactly.
