@@ -514,10 +514,15 @@ TEST(LmiCertificate, ExactDefiniteness) {
 
 TEST(LmiCertificate, BareissAgreesWithLdlOnRandomMatrices) {
   std::srand(7);
-  for (int trial = 0; trial < 40; ++trial) {
-    int n = 1 + trial % 7;
-    MatrixXd R = MatrixXd::Random(n, n);
-    MatrixXd S = R * R.transpose() - (trial % 3) * 0.2 * MatrixXd::Identity(n, n);
+  // n >= 8 goes through Arb's ball Cholesky first (it may only prove "yes"); the shifts put the
+  // smallest eigenvalue near 0 (positive, zero, negative) and a rank-deficient R R^T (n - 1
+  // columns) is singular: each verdict must be LDL^T's
+  for (int trial = 0; trial < 80; ++trial) {
+    const int n = 1 + trial % 14;
+    MatrixXd R = MatrixXd::Random(n, trial % 5 == 4 ? std::max(1, n - 1) : n);
+    MatrixXd S = R * R.transpose();
+    const double lmin = Eigen::SelfAdjointEigenSolver<MatrixXd>(S).eigenvalues()(0);
+    S -= (trial % 4 == 0 ? lmin * (1 - 1e-9) : (trial % 3) * 0.2) * MatrixXd::Identity(n, n);
     MatQ Q = to_rational(S);
     EXPECT_EQ(exact_pd_bareiss(Q), exact_definiteness(Q).pd) << trial;
   }
