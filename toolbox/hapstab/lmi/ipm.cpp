@@ -92,7 +92,7 @@ void setup_low_rank(const SdpBlock& B, DenseBlock& D) {
       for (const auto& e : D.entries[t]) f[t].push_back({column(VectorXd::Unit(n, e.a)), column(VectorXd::Unit(n, e.b)), e.v});
     total += static_cast<double>(f[t].size());
   }
-  for (size_t t = 0; t < q; ++t) pairs += static_cast<double>(f[t].size()) * total / 2;
+  pairs = total * total / 2;  // sum over k <= l of |f_k| |f_l|, about
   const double R = static_cast<double>(cols.size()), dn = n;
   const double low = 2 * (R * R * dn + R * dn * dn) + pairs, dense = static_cast<double>(q) * q * dn * dn / 2;
   if (!(low < dense)) return;

@@ -45,6 +45,13 @@ LowRank concat(const LowRank& a, const std::map<int, SpMat>& ta, const LowRank& 
       for (const Factor& g : b.factors.at(k)) f.push_back({g.u + du, g.v + dv, g.s});
     r.factors.emplace(k, std::move(f));
   }
+  // Long sums of small pieces could grow the bases without bound (and every later congruence
+  // multiplies them): past 16 columns per row the form is dropped, the sparse terms stay.
+  if (r.L.cols() + r.R.cols() > 16 * (r.L.rows() + r.R.rows()) + 256) {
+    r.L.resize(r.L.rows(), 0);
+    r.R.resize(r.R.rows(), 0);
+    r.factors.clear();
+  }
   return r;
 }
 
