@@ -54,6 +54,7 @@ nlohmann::json summary_json(const sim::Summary& s, const scene::Scene& sc) {
     j["limit_cycle"] = nullptr;
   }
   j["trend"] = s.trend;
+  j["step_matrix_radius"] = s.step_matrix_radius;  // the exact ZOH matrices' proven error (Arb)
   j["steps_run"] = s.steps_run;
   j["min_port_energy"] = num_or_null(s.min_port_energy);
   j["port_energy"] = s.e_port;

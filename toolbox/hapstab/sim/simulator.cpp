@@ -404,6 +404,7 @@ SimResult Simulator::run(const SimOptions& o) const {
   else if (N == 1 && n == 2 && nc == 2) Engine<2, 2, 1>::run(*this, spec_, o, R);
   else if (N == 2 && n == 6 && nc == 4) Engine<6, 4, 2>::run(*this, spec_, o, R);
   else Engine<D, D, D>::run(*this, spec_, o, R);
+  R.summary.step_matrix_radius = std::max(p1_.radius, p2_.radius);
   return R;
 }
 

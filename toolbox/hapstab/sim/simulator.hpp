@@ -77,6 +77,7 @@ struct Summary {
   double min_port_energy = 0;         ///< min_t sum_j E_port_j(t)
   std::vector<double> e_port, e_act, e_po;  ///< final values per DOF
   std::string trend;                  ///< "rest", "decaying", "steady", "growing", "diverged"
+  double step_matrix_radius = 0;      ///< proven bound on |exact - double| of the step matrices (Piece::radius)
   std::optional<LimitCycle> limit_cycle;
 };
 
