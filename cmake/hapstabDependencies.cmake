@@ -1,13 +1,23 @@
 # The libraries hapstab links, found the same way by the build and by find_package(hapstab).
 # GMP/MPFR/MPFI and the SDP libraries ship neither CMake nor pkg-config files on Debian,
 # so they are found by hand and wrapped as hapstab_dep_<lib> imported targets.
+# Each package is REQUIRED in the build. Inside find_package(hapstab) (hapstabConfig.cmake)
+# find_dependency marks hapstab NOT FOUND with the missing package's name, and the config stops
+# before it imports targets that would name the missing libraries.
 include(CMakeFindDependencyMacro)
-find_dependency(Eigen3 3.3 NO_MODULE)
-find_dependency(Boost 1.74)
-find_dependency(nlohmann_json 3)
-find_dependency(tomlplusplus)
-find_dependency(Threads)
-find_dependency(LAPACK)
+macro(hapstab_dependency)
+  if(CMAKE_FIND_PACKAGE_NAME STREQUAL "hapstab")
+    find_dependency(${ARGN})
+  else()
+    find_package(${ARGN} REQUIRED)
+  endif()
+endmacro()
+hapstab_dependency(Eigen3 3.3 NO_MODULE)
+hapstab_dependency(Boost 1.74)
+hapstab_dependency(nlohmann_json 3)
+hapstab_dependency(tomlplusplus)
+hapstab_dependency(Threads)
+hapstab_dependency(LAPACK)
 
 function(hapstab_find_c_library var lib header)
   if(TARGET hapstab_dep_${lib})
