@@ -1,4 +1,4 @@
-// fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-modules: report
 // fuzz-seeds: tests/fuzz/seeds_text
 // fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::csv::cell. The cell must parse by RFC 4180 as one field (quoted:

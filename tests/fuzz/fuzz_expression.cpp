@@ -1,4 +1,4 @@
-// fuzz-sources: toolbox/hapstab/lti/parse.cpp toolbox/hapstab/lti/tf.cpp toolbox/hapstab/numeric/decimal.cpp toolbox/hapstab/poly/polynomial.cpp
+// fuzz-modules: lti
 // fuzz-seeds: tests/fuzz/seeds_expression
 // fuzz-dict: tests/fuzz/expression.dict
 // libFuzzer target: the exact expression parser behind --H, a scene's tf, a --batch line, and

@@ -1,4 +1,4 @@
-// fuzz-sources: toolbox/hapstab/report/escape.cpp
+// fuzz-modules: report
 // fuzz-seeds: tests/fuzz/seeds_text
 // fuzz-dict: tests/fuzz/escape.dict
 // libFuzzer target: report::gnuplot::quote. The expression must read back, by gnuplot's rules

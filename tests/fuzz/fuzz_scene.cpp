@@ -1,4 +1,4 @@
-// fuzz-sources: toolbox/hapstab/scene/scene.cpp toolbox/hapstab/lti/parse.cpp toolbox/hapstab/lti/tf.cpp toolbox/hapstab/lti/discretize.cpp toolbox/hapstab/lti/realization.cpp toolbox/hapstab/poly/polynomial.cpp toolbox/hapstab/poly/sturm.cpp toolbox/hapstab/poly/unit_circle.cpp toolbox/hapstab/numeric/decimal.cpp toolbox/hapstab/numeric/ball_expm.cpp toolbox/hapstab/sim/loop.cpp toolbox/hapstab/sim/simulator.cpp toolbox/hapstab/report/escape.cpp toolbox/hapstab/report/paths.cpp
+// fuzz-modules: scene
 // fuzz-seeds: examples tests/fuzz/seeds_scene
 // fuzz-dict: tests/fuzz/scene.dict
 // libFuzzer target: the scene loader (TOML -> scene, every section) on arbitrary text, with a

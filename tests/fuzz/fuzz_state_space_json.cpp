@@ -1,4 +1,4 @@
-// fuzz-sources: toolbox/hapstab/lti/state_space_json.cpp toolbox/hapstab/numeric/decimal.cpp
+// fuzz-modules: lti
 // fuzz-seeds: tests/fuzz/seeds_state_space
 // fuzz-dict: tests/fuzz/state_space.dict
 // libFuzzer target: the --ss JSON reader of `hapstab passivity-level` (lti/state_space_json.hpp).
