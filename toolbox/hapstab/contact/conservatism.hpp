@@ -5,6 +5,8 @@
 // k_osc at which the simulated loop of Fig. 5 oscillates (and the linear stability limit of
 // (1 + kH)^{-1}). A case where a criterion's k* exceeds k_osc (it claims "no oscillation" where
 // the simulation finds one) is flagged as a contradiction.
+//
+// Implements: paper 002 (21), (25), Fig. 5.
 #pragma once
 
 #include <optional>

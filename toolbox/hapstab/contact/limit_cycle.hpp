@@ -21,6 +21,8 @@
 //    monodromy matrix).
 // Because (4) is positively homogeneous in (y, rho), a limit cycle's amplitude scales with rho
 // and whether one exists does not depend on rho > 0.
+//
+// Implements: paper 002 (3), (4), Fig. 2, Fig. 5.
 #pragma once
 
 #include <optional>

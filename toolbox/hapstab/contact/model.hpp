@@ -12,6 +12,8 @@
 // significant digits, and the rest is exact. So the poles at z = 1 are exact and every other
 // coefficient carries a relative error of about 10^-digits (stated in `coefficient_error`).
 // Walls: backward-difference and Tustin spring-dampers with a delay of d samples.
+//
+// Implements: paper 002 Fig. 1, Fig. 2.
 #pragma once
 
 #include <string>

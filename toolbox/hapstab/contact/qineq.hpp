@@ -7,6 +7,8 @@
 //   the impossible 0 > 0.
 // Every boundary line passes through H = -1; the arrows of Fig. 6 point along the normal (nx, ny).
 // Templates on the real type (double for plots, mpfloat<D> for the proofs).
+//
+// Implements: paper 002 (21), (22), (24), Fig. 6.
 #pragma once
 
 #include <cmath>

@@ -21,6 +21,8 @@
 // Assumptions of the paper (Sec. 2) are checked exactly (Schur-Cohn-Jury test over Q) and
 // reported, never thrown: H stable, (1+kH)^{-1} stable, H(1) >= 0. r_k > 0 is a property of the
 // bias input, not of H (the limit-cycle simulation takes rho > 0 and checks it).
+//
+// Implements: paper 002 (21), (25).
 #pragma once
 
 #include <optional>

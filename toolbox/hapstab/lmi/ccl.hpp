@@ -13,6 +13,8 @@
 //               consecutive steps) above the target, max_iter is reached, or a sub-problem
 //               is infeasible / fails. A failure is never reported as success.
 // Every step is recorded in the iteration log.
+//
+// Implements: paper 000 (22).
 #pragma once
 
 #include <functional>

@@ -34,6 +34,8 @@
 // LMI results, when the exact check passes (`certified`): the rounded (P, level_q) satisfies
 // the LMIs of the lemma used, exactly (LDL^T), proving that the system IS level_q-OSP/ISP (a
 // certified lower bound level_q <= sup). The reported `level` itself is numeric.
+//
+// Implements: paper 000 Definition 2, Lemma 1, Lemma 2, (2).
 #pragma once
 
 #include <string>

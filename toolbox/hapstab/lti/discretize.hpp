@@ -13,6 +13,8 @@
 // 2 ||X||^{k+1}/(k+1)! and stopped below eps/8), so the same code is accurate to a few
 // hundred ulps in double and in mpfloat<D> (tests/lti/test_discretize.cpp states the
 // tolerances). It is for set-up, not for hot loops.
+//
+// Implements: paper 001 Fig. 1.
 #pragma once
 
 #include <string>

@@ -25,6 +25,8 @@
 // On the coupling side V-hat carries (z-1)/(Tz), V-hat(1) = 0, and Lemma 1 for V-hat holds
 // only non-strictly: its kernel vectors [0; u; u] (state of V zero, delayed input = input)
 // are removed by lmi::facial_reduce before the rest is posed with margin.
+//
+// Implements: paper 000 (14), (16), Theorem 4, Theorem 5.
 #pragma once
 
 #include <optional>

@@ -9,6 +9,8 @@
 //      between real roots).
 //  (a) device OSP levels: a mass-damper 1/(m s + b) has OSP level b (storage 1/2 m v^2:
 //      d/dt(1/2 m v^2) = v f - b v^2); the levels used in the analysis are reported.
+//
+// Implements: paper 000 Assumption 1.
 #pragma once
 
 #include <string>

@@ -14,6 +14,8 @@
 // for every V (analysis.hpp). The designed V is then returned by (23), (24) and verified
 // independently (never trusted from the design LMIs): V-hat's OSP level by Lemma 1 against
 // Gamma^-1 Q_V Gamma^-1, and Theorem 4 with levels computed afresh (check_theorem4).
+//
+// Implements: paper 000 (18), (19), (20), (22), (23), (24), Theorem 6.
 #pragma once
 
 #include <string>

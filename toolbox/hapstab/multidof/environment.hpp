@@ -19,6 +19,8 @@
 // Z_i = k_i + B_i s, z = (Z_1..Z_m)^T. It is improper (the dampers), so it is discretised by
 // substituting s (backward Euler s = (z-1)/(Tz), Tustin s = (2/T)(z-1)/(z+1)); ZOH needs a
 // proper E(s) and is refused for it with an InputError.
+//
+// Implements: paper 000 (15), (17), (23).
 #pragma once
 
 #include <string>

@@ -10,6 +10,8 @@
 //   operators: H(s) of Sec. VI (2x2, case i) and its diagonal (case ii).
 //   the paper's controller (27) and the decentralised coupling structure N-bar = 2,
 //   n-bar_i = m-bar_i = 1.
+//
+// Implements: paper 000 (25), (26), (27), Sec. VI.
 #pragma once
 
 #include "hapstab/multidof/analysis.hpp"

@@ -10,6 +10,8 @@
 // outputs and n-bar_i states. Everything is exact (rational). Inconsistent structures (block
 // sizes that do not add up, a device level that is not positive definite) throw InputError
 // naming the offending operator/device/block.
+//
+// Implements: paper 000 (7), (8), (9), (12).
 #pragma once
 
 #include <string>

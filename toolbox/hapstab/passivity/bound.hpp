@@ -17,6 +17,8 @@
 // derivative-recursion root finding, Newton polish; status numeric), grid (N samples, comparison
 // only). A fractional delay t_d (not rational in c) is handled by an exact divergence test at
 // wT = pi (Tustin-like poles at z = -1) and by interval branch-and-bound over w (MPFI).
+//
+// Implements: paper 001 (45), (54).
 #pragma once
 
 #include <optional>

@@ -13,6 +13,8 @@
 //     wall (53): n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, KT/2 + B + K^2T^2/(8B) if KT < 4B;
 //     conservative (2n+1)KT/2 + B; Tustin wall n = 1: KT/2 + B + |KT - 2B|
 //   non-passive operator (54): add eta
+//
+// Implements: paper 001 (46), (47), (49), (50), (52), (53), Sec. VI, Sec. VII.
 #pragma once
 
 #include <optional>

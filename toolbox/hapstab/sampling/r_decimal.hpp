@@ -6,6 +6,8 @@
 //   im = -(T/2) cot(wT/2)            (44)/(38), certified enclosure -> correctly rounded digits
 //   series_re/im                    (34) truncated at |n| <= N, certified -> correctly rounded
 //   series_error_bound              |r - r_N| <= 2T|sin(wT/2)| tau_N (series.hpp), rounded UP to 3 digits
+//
+// Implements: paper 001 (34), (38), (44).
 #pragma once
 
 #include <optional>

@@ -9,6 +9,8 @@
 // Each form is T times a function of theta alone (T enters as a scalar factor: T/2, T/4, -T/2, T),
 // so the identity of the t-functions proves the identity for every T; proofs/sampling_identities.cpp
 // also carries T as a polynomial variable over Q(t).
+//
+// Implements: paper 001 (35), (36), (37), (38), (44).
 #pragma once
 
 #include <string>

@@ -33,6 +33,8 @@
 //                 ~ -theta/2 has absolute error ~ eps, so re has relative error ~ eps/theta (8e7 eps
 //                 at wT = 1e-8); near wT = pi, Im ~ (T/2)(pi - wT)/2 is lost the same way (4.5e15 eps
 //                 at the double nearest pi).
+//
+// Implements: paper 001 (34), (35), (36), (37), (38), (44).
 #pragma once
 
 #include <boost/math/constants/constants.hpp>

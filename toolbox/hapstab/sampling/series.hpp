@@ -30,6 +30,8 @@
 //
 // CERTIFIED ENCLOSURE. In interval<D> arithmetic: rhat in rhat_N + sum over both tails of
 // (S_K + [0, 1] * next term); every operation outward-rounded (MPFI), pi enclosed by mpfi_const_pi.
+//
+// Implements: paper 001 (9), (34).
 #pragma once
 
 #include <complex>

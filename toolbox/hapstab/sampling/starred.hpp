@@ -8,6 +8,8 @@
 // Because e^{-(s + j n w_s) T} = e^{-sT}, C(s + j n w_s) = (1 - e^{-sT})^2/(s + j n w_s)^2, and
 // |s + j n w_s| >= |w + n w_s| (s = sigma + j w), so the tail of C*(s) beyond |n| > N is bounded by
 // (1/T)|1 - e^{-sT}|^2 T^2 tau_N(wT) with tau_N the bound of series.hpp: a certified enclosure.
+//
+// Implements: paper 001 (4), (40), (41), (42), (43).
 #pragma once
 
 #include <complex>

@@ -22,6 +22,8 @@
 // Composition is exact (rational arithmetic): the continuous plant (devices + operators) and
 // the discrete controller (contact-free part: E, V and the algebraic loop) come out as two
 // state-space models, which sim/simulator.hpp discretises and runs.
+//
+// Implements: paper 000 (11); paper 001 Fig. 1; paper 002 Fig. 1.
 #pragma once
 
 #include <optional>

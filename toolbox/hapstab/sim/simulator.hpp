@@ -27,6 +27,8 @@
 //
 // The hot loop uses fixed-size Eigen types for the common sizes and preallocated dynamic ones
 // otherwise; it allocates nothing per step.
+//
+// Implements: paper 000 Sec. VI; paper 001 Fig. 1; paper 002 Fig. 1.
 #pragma once
 
 #include <functional>
