@@ -14,6 +14,7 @@
 
 #include "cli/batch_line.hpp"
 #include "cli/command.hpp"
+#include "cli/tf_options.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -26,18 +27,18 @@ using namespace hapstab;
 using namespace hapstab::passivity;
 
 struct BoundOpts {
-  std::string H, T, frac, eta = "0", method = "certified", curve, damping;
-  std::vector<std::string> sets;
-  int delay = 0, digits = 30;
+  cli::TfOptions tf;
+  std::string frac, eta = "0", method = "certified", curve, damping;
+  int digits = 30;
   long grid = 100000;
   bool explain = false, json = false, allow_noncausal = false;
 };
 
+// Causality is the library's check: H z^-n may be causal where H is not (bound.hpp).
+const cli::TfRules tf_rules{/*period_required=*/true, /*causal=*/false, /*with_delay=*/true};
+
 void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
-  app.add_option("--H", o.H, "H(z) as an exact expression, e.g. \"K + B*(z-1)/(T*z)\"");
-  app.add_option("--T", o.T, "sample period T > 0 (exact: 0.001 or 1/1000)");
-  app.add_option("--set", o.sets, "parameter NAME=VALUE (repeatable)");
-  app.add_option("--delay", o.delay, "integer delay n >= 0: z^-n")->capture_default_str();
+  cli::add_tf_options(app, o.tf, tf_rules, "H(z) as an exact expression, e.g. \"K + B*(z-1)/(T*z)\"");
   app.add_option("--frac-delay", o.frac, "delay t_d >= 0 in seconds: e^{-j w t_d}");
   app.add_option("--eta", o.eta, "operator shortage of passivity eta >= 0 (54)")->capture_default_str();
   app.add_option("--digits", o.digits,
@@ -79,17 +80,10 @@ struct Outcome {
 };
 
 Outcome compute(const BoundOpts& o) {
-  if (o.H.empty()) throw InputError("--H is required (the virtual environment H(z))");
-  if (o.T.empty()) throw InputError("--T is required (the sample period)");
-  ParseOptions po;
-  po.variable = 'z';
-  po.T = cli::option_rational(o.T, "--T");
-  if (po.T <= 0) throw InputError("--T must be > 0 (got " + o.T + ")");
-  po.parameters = cli::parse_sets(o.sets);
-  if (o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
+  const TransferFunction tf = cli::parse_tf_options(o.tf, tf_rules);
   Outcome r;
-  r.p.T = po.T;
-  r.p.delay = o.delay;
+  r.p.T = tf.T;
+  r.p.delay = o.tf.delay;
   r.p.eta = cli::option_rational(o.eta, "--eta");
   if (r.p.eta < 0) throw InputError("--eta must be >= 0 (got " + o.eta + ")");
   if (!o.frac.empty()) {
@@ -98,8 +92,6 @@ Outcome compute(const BoundOpts& o) {
     if (td > 0) r.p.frac_delay = td;
   }
   r.p.allow_noncausal = o.allow_noncausal;
-  TransferFunction tf = parse_tf(o.H, po);
-  if (tf.den().is_zero()) throw InputError("--H has a zero denominator");
   r.p.H = tf.H;
   Method m = Method::certified;
   if (o.method == "grid") m = Method::grid;
@@ -256,22 +248,17 @@ int run_batch(const std::string& file) {
       std::vector<std::string> args(toks.rbegin(), toks.rend());
       app.parse(args);
       auto extras = app.remaining();
-      if (o.H.empty() && !extras.empty()) {
-        o.H = extras.front();
+      if (o.tf.H.empty() && !extras.empty()) {
+        o.tf.H = extras.front();
         extras.erase(extras.begin());
       }
       if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "' (one expression per line)");
       Outcome r = compute(o);
       j = to_json(r, o.digits);
-    } catch (const CLI::ParseError& e) {
-      j = {{"error", std::string(e.what())}, {"exit", 2}};
-      worst = std::max(worst, 2);
-    } catch (const InputError& e) {
-      j = {{"error", std::string(e.what())}, {"exit", 2}};
-      worst = std::max(worst, 2);
-    } catch (const NumericalError& e) {
-      j = {{"error", std::string(e.what())}, {"exit", 3}};
-      worst = std::max(worst, 3);
+    } catch (const std::exception& e) {
+      const int code = cli::exit_code_for(e).code;
+      j = {{"error", std::string(e.what())}, {"exit", code}};
+      worst = std::max(worst, code);
     }
     j["line"] = lineno;
     std::cout << j.dump() << std::endl;

@@ -8,43 +8,30 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/tf_options.hpp"
 #include "hapstab/contact/limit_cycle.hpp"
-#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
 namespace {
 
+// The loop is H(z) alone: --T is needed only when the expression names T.
+const TfRules tf_rules{/*period_required=*/false, /*causal=*/true, /*with_delay=*/false};
+
 struct Opts {
-  std::string H, gain, rho = "1", T;
-  std::vector<std::string> sets;
+  TfOptions tf;
+  std::string gain, rho = "1";
   long steps = 200000;
   bool exact = false, json = false;
 };
 
 int run(const Opts& o) {
-  ParseOptions po;
-  po.variable = 'z';
-  po.parameters = parse_sets(o.sets);
-  po.T = 1;
-  if (!o.T.empty()) {
-    po.T = option_rational(o.T, "--T");
-    if (po.T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
-  }
   const rational k = option_rational(o.gain, "--gain");
-  if (k < 0) throw InputError("--gain: the gain must be >= 0, got '" + o.gain + "'");
   const rational rho = option_rational(o.rho, "--rho");
-  if (rho <= 0) throw InputError("--rho: rho must be > 0, got '" + o.rho + "'");
   if (o.steps < 1000 || o.steps > 2000000000L)
     throw InputError("--steps must be in [1000, 2e9], got " + std::to_string(o.steps));
-  TransferFunction H;
-  try {
-    H = parse_tf(o.H, po);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--H: ") + e.what());
-  }
-  if (!H.is_discrete()) throw InputError("--H: expected a transfer function in z");
+  const TransferFunction H = parse_tf_options(o.tf, tf_rules);
   contact::LureLoop L = contact::make_lure_loop(H, k, rho);
   contact::Oscillation osc = contact::find_oscillation(L, o.steps, std::min<long>(8192, o.steps / 4));
   std::optional<contact::ExactOrbit> ex;
@@ -92,12 +79,10 @@ const Register reg({"limit-cycle",
                     "Simulate the unilateral-contact loop of paper 002 (Fig. 5) and detect sustained oscillations",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
-                      app.add_option("--H", o->H, "H(z) as an exact expression")->required();
+                      add_tf_options(app, o->tf, tf_rules, "H(z) as an exact expression");
                       app.add_option("--gain", o->gain, "Loop gain k >= 0 (the loop is k*H)")->required();
                       app.add_option("--rho", o->rho, "rho > 0 of Fig. 4 (default 1; amplitudes scale with it)");
                       app.add_option("--steps", o->steps, "Samples simulated per initial state (default 200000)");
-                      app.add_option("--T", o->T, "Sample period (only if the expression names T)");
-                      app.add_option("--set", o->sets, "Parameter NAME=VALUE (repeatable)");
                       app.add_flag("--exact", o->exact, "Certify the periodic orbit in rational arithmetic");
                       app.add_flag("--json", o->json, "JSON output");
                       return [o]() { return run(*o); };

@@ -25,6 +25,15 @@ namespace hapstab::cli {
 
 enum ExitCode { exit_ok = 0, exit_property_fails = 1, exit_bad_input = 2, exit_numerical = 3 };
 
+/// How an error ends the command: its exit code and the word printed before its message.
+/// InputError and CLI11's parse errors -> 2 "error"; NumericalError -> 3 "numerical failure";
+/// anything else -> 3 "internal error". The one mapping main and `bound --batch` share.
+struct ErrorExit {
+  ExitCode code;
+  const char* kind;
+};
+ErrorExit exit_code_for(const std::exception& e);
+
 using Runner = std::function<int()>;
 struct Command {
   std::string name;

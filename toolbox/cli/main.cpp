@@ -49,6 +49,13 @@ std::filesystem::path output_folder(const std::string& dir, const std::string& o
 
 void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
 
+ErrorExit exit_code_for(const std::exception& e) {
+  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const CLI::ParseError*>(&e))
+    return {exit_bad_input, "error"};
+  if (dynamic_cast<const NumericalError*>(&e)) return {exit_numerical, "numerical failure"};
+  return {exit_numerical, "internal error"};
+}
+
 }  // namespace hapstab::cli
 
 namespace {
@@ -62,7 +69,7 @@ int main(int argc, char** argv) {
   CLI::App app{"hapstab -- passivity and stability of sampled-data haptic systems.\n"
                "Exit codes: 0 success, 1 the property does not hold, 2 bad input, 3 numerical failure."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hapstab 0.1.0");
+  app.set_version_flag("--version", "hapstab " HAPSTAB_VERSION);
   std::vector<std::pair<CLI::App*, Runner>> runners;
   for (auto& c : commands()) {
     CLI::App* sub = app.add_subcommand(c.name, c.help);
@@ -86,15 +93,10 @@ int main(int argc, char** argv) {
   try {
     for (auto& [sub, run] : runners)
       if (sub->parsed()) return run();
-  } catch (const hapstab::InputError& e) {
-    std::cerr << "hapstab: error: " << shown(e) << "\n";
-    return exit_bad_input;
-  } catch (const hapstab::NumericalError& e) {
-    std::cerr << "hapstab: numerical failure: " << shown(e) << "\n";
-    return exit_numerical;
   } catch (const std::exception& e) {
-    std::cerr << "hapstab: internal error: " << shown(e) << "\n";
-    return exit_numerical;
+    const ErrorExit exit = exit_code_for(e);
+    std::cerr << "hapstab: " << exit.kind << ": " << shown(e) << "\n";
+    return exit.code;
   }
   return exit_bad_input;
 }
