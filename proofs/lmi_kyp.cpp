@@ -88,10 +88,10 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
      << " Lemma 1 = Lemma 2 = frequency (worst " << worst_osp << ")" << bad.str();
   check.claim("000.lemma1.kyp_frequency", "Lemma 1, (2)",
               "sup phi, sup delta of the LMI (2) equal the frequency-domain ISP/OSP levels (tolerance 1e-5 rel.)",
-              hapstab::proofs::Method::numeric, ok_isp == n_isp && n_osp > 0 && ok_osp == n_osp && lb_ok == certified,
+              hapstab::Status::numeric, ok_isp == n_isp && n_osp > 0 && ok_osp == n_osp && lb_ok == certified,
               ev.str());
   check.claim("000.lemma2.levels", "Lemma 2", "Lemma 2 (Schur form in Q) gives the same ISP level as Lemma 1",
-              hapstab::proofs::Method::numeric, ok_l2 == n_isp, ev.str());
+              hapstab::Status::numeric, ok_l2 == n_isp, ev.str());
 }
 
 HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the certified SISO frequency-domain level") {
@@ -130,7 +130,7 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
   check.claim("000.lemma1.kyp_certified", "Lemma 1, (2)",
               "on random SISO systems the Lemma 1 ISP/OSP level equals the certified frequency-domain level (1e-5 rel.) "
               "and every exact LMI lower bound lies below the certified enclosure",
-              hapstab::proofs::Method::certified,
+              hapstab::Status::certified,
               n >= 8 && agree == n && consistent == certified_lmi && certified_lmi > 0 && bad.str().empty(), ev.str());
 }
 
