@@ -505,14 +505,14 @@ bool check_multidof(std::mt19937_64& g, std::ostream& why) {
   if (!multidof::all_hold(multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names))) return true;
   ++multidof_tally.applicable;
   const auto design = multidof::design(sp.problem);
-  if (!design.feasible || !design.certified) return true;
+  if (!design.verdict.holds() || !design.verdict.proven()) return true;
   ++multidof_tally.designed;
   Stopwatch reference_time;
   bool ok = true;
   const auto t5 = multidof::analyze(sp.problem, {}, multidof::AnalysisMode::stability_only);
-  if (t5.verdict == lmi::Feasibility::feasible) ++multidof_tally.t5_feasible;
-  if (t5.verdict == lmi::Feasibility::infeasible && t5.certified)
-    ok = false, why << "  Theorem 6 returned a verified coupling but Theorem 5 is certified infeasible: " << t5.certificate << "\n";
+  if (t5.verdict.holds()) ++multidof_tally.t5_feasible;
+  if (t5.verdict.fails() && t5.verdict.proven())
+    ok = false, why << "  Theorem 6 returned a verified coupling but Theorem 5 is certified infeasible: " << t5.verdict.evidence << "\n";
   sim::LoopSpec spec = sc.loop;
   spec.coupling = design.V;
   sim::SimOptions so;
