@@ -62,7 +62,7 @@ StateSpace<double> read_ss(const std::string& file) {
 nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The system of --H (exact SISO G kept in `G`) or --ss, which must be Schur stable.
-StateSpace<double> read_system(const Opts& o, std::optional<RationalFunction<rational>>& G) {
+StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rational>>& G) {
   StateSpace<double> sys;
   if (!o.ss.empty()) {
     if (!o.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
@@ -237,7 +237,7 @@ int run(const Opts& o) {
   if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
   if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
   std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
-  const StateSpace<double> sys = read_system(o, G);
+  const StateSpace<double> sys = read_model(o, G);
   const Levels v = compute_levels(o, backend, sys, G);
   if (o.json) report_json(o, v);
   else report_text(o, v);
