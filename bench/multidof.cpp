@@ -84,8 +84,8 @@ void BM_AnalyzeExample(benchmark::State& st) {
   o.backend = st.range(2) ? lmi::Backend::csdp : lmi::Backend::dsdp;
   AnalysisResult r;
   for (auto _ : st) r = analyze(pb, o);
-  st.counters["feasible"] = r.verdict == lmi::Feasibility::feasible;
-  st.counters["certified"] = r.certified;
+  st.counters["feasible"] = r.verdict.holds();
+  st.counters["certified"] = r.verdict.proven();
   st.counters["margin"] = r.margin;
   st.SetLabel(std::string(st.range(2) ? "csdp" : "dsdp") + (st.range(0) == 1 ? " case i" : " case ii") +
               (st.range(1) ? " perturbed" : " nominal"));
@@ -98,8 +98,8 @@ void BM_DesignExample(benchmark::State& st) {
   const auto pb = example::problem(static_cast<int>(st.range(0)), st.range(1) != 0);
   DesignResult r;
   for (auto _ : st) r = design(pb);
-  st.counters["feasible"] = r.feasible;
-  st.counters["certified"] = r.certified;
+  st.counters["feasible"] = r.verdict.holds();
+  st.counters["certified"] = r.verdict.holds() && r.verdict.proven();
   st.counters["iterations"] = r.iterations;
   st.SetLabel(std::string(st.range(0) == 1 ? "case i" : "case ii") + (st.range(1) ? " perturbed" : " nominal"));
 }
@@ -116,10 +116,10 @@ void BM_Scaling(benchmark::State& st) {
   for (int s = 0; s < samples; ++s) {
     const auto ps = random_problem(N, one, 7u * static_cast<unsigned>(s) + 31u * static_cast<unsigned>(N));
     const auto rs = analyze(ps, {}, AnalysisMode::stability_only);
-    certified += rs.verdict == lmi::Feasibility::feasible && rs.certified;
+    certified += rs.verdict.holds() && rs.verdict.proven();
   }
   st.counters["m"] = pb.structure.m();
-  st.counters["certified"] = r.certified;
+  st.counters["certified"] = r.verdict.proven();
   st.counters["fraction"] = static_cast<double>(certified) / samples;
   st.counters["samples"] = samples;
   st.SetLabel(one ? "case-i structure (one operator)" : "case-ii structure (one operator per device)");
@@ -181,7 +181,7 @@ void BM_ContactScene(benchmark::State& st) {
   st.counters["realisation_s"] = realisation;
   st.counters["sdp_s"] = sdp;
   st.counters["certificate_s"] = certificate;
-  st.counters["certified"] = r.certified && r.verdict == lmi::Feasibility::feasible;
+  st.counters["certified"] = r.verdict.proven() && r.verdict.holds();
   st.SetLabel(dsdp ? "DSDP" : "auto (built-in IPM, low-rank Schur complement)");
 }
 BENCHMARK(BM_ContactScene)

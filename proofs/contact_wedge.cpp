@@ -51,7 +51,7 @@ hapstab::TransferFunction random_h(std::mt19937& g, int& kind) {
 
 HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (25); wedge vs Tsypkin; simulation") {
   using namespace hapstab::contact;
-  using hapstab::proofs::Method;
+  using hapstab::Status;
   // ---- q = 1, N-1 bind at theta = 2 pi/N ------------------------------------------------------
   {
     const R pi = boost::multiprecision::acos(R(-1));
@@ -96,14 +96,14 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
     check.claim("002.eq25.q1_qN1_binding", "(22)/(24) -> (25)",
                 "at theta = 2 pi/N the inequalities q = 1 and q = N-1 are the binding ones: any h satisfying "
                 "some (21)/(24) satisfies q = 1 or q = N-1",
-                Method::numeric, violations == 0 && pts > 0, ev.str());
+                Status::numeric, violations == 0 && pts > 0, ev.str());
     std::ostringstream ev2;
     ev2 << weaker_cases << " (N, k) pairs with k > 1, gcd(k,N) = 1 have points satisfying some q but not q = 1, N-1 ("
         << weaker_pts << " grid points): there the pair of (25) is sufficient, not the weakest";
     check.claim("002.eq25.general_k", "(25) for theta = 2 pi k/N, k > 1",
                 "for k > 1 the q = 1, N-1 branches of (25) are implied-by-sufficient only: a q with qk = 1 mod N "
                 "gives the weaker cot(pi/N) branch (the paper's Fig. 6 shows k = 1)",
-                Method::numeric, weaker_cases > 0, ev2.str());
+                Status::numeric, weaker_cases > 0, ev2.str());
   }
   // ---- wedge contains Tsypkin; certified <= grid; no oscillation below k*_wedge ---------------
   std::mt19937 gen(25);
@@ -155,23 +155,23 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
   ev << n_h << " random stable H of order 2-4 (delays 0-2): Tsypkin holds for " << t_holds << ", wedge for "
      << w_holds << "; " << bad_contain << " with Tsypkin but not wedge";
   check.claim("002.wedge_contains_tsypkin", "(25) vs (21)",
-              "every H satisfying Tsypkin's Re H > -1 satisfies the wedge criterion (exact verdicts)", Method::exact,
+              "every H satisfying Tsypkin's Re H > -1 satisfies the wedge criterion (exact verdicts)", Status::exact,
               bad_contain == 0 && n_h > 20, ev.str());
   std::ostringstream ev2;
   ev2 << n_h << " H: " << bad_gain << " with k*_wedge < k*_Tsypkin; largest ratio k*_wedge/k*_Tsypkin = " << max_ratio;
   check.claim("002.wedge_gain_ge_tsypkin", "k* of (25) vs (21)",
-              "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H)", Method::certified,
+              "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H)", Status::certified,
               bad_gain == 0 && n_h > 20, ev2.str());
   std::ostringstream ev3;
   ev3 << n_h << " H: certified lower end of min_theta w(theta) above a 4001-point grid minimum in " << bad_grid
       << " cases (a grid can only overestimate the minimum)";
   check.claim("002.eq25.certified_below_grid", "(25) min over theta",
-              "the certified minimum of the wedge margin is <= the minimum over any grid", Method::certified,
+              "the certified minimum of the wedge margin is <= the minimum over any grid", Status::certified,
               bad_grid == 0 && n_h > 20, ev3.str());
   std::ostringstream ev4;
   ev4 << sims << " simulations (Fig. 5, 16 initial states x 20000 samples each) at 0.5 and 0.97 k*_wedge (or k = 1, 10, 100 "
       << "when k* = inf) with every assumption holding: " << contradictions << " sustained oscillations" << contra;
   check.claim("002.eq25.not_contradicted", "(25) vs simulation",
-              "no H satisfying the wedge criterion (and the assumptions) oscillates in simulation", Method::numeric,
+              "no H satisfying the wedge criterion (and the assumptions) oscillates in simulation", Status::numeric,
               contradictions == 0 && sims >= 10, ev4.str());
 }

@@ -58,27 +58,27 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
     const double e1 = std::abs(l1.level - f.level), e2 = std::abs(l2.level - l1.level);
     worst_isp = std::max(worst_isp, e1 / std::max(1.0, std::abs(f.level)));
     worst_l2 = std::max(worst_l2, e2 / std::max(1.0, std::abs(f.level)));
-    ok_isp += l1.status == "numeric" && e1 < tol;
-    ok_l2 += l2.status == "numeric" && e2 < tol;
-    if (!(l1.status == "numeric" && e1 < tol) || !(l2.status == "numeric" && e2 < tol))
+    ok_isp += l1.status == Status::numeric && e1 < tol;
+    ok_l2 += l2.status == Status::numeric && e2 < tol;
+    if (!(l1.status == Status::numeric && e1 < tol) || !(l2.status == Status::numeric && e2 < tol))
       bad << " [trial " << trial << " n=" << n << " m=" << m << ": freq " << f.level << ", L1 " << l1.level << " ("
-          << l1.status << " " << l1.note << "), L2 " << l2.level << " (" << l2.status << " " << l2.note << ")]";
-    if (l1.certified) {
+          << to_string(l1.status) << " " << l1.note << "), L2 " << l2.level << " (" << to_string(l2.status) << " " << l2.note << ")]";
+    if (l1.lower_bound) {
       ++certified;
-      lb_ok += to_real<double>(l1.lower_bound) <= f.level + 1e-12 * std::max(1.0, std::abs(f.level));
+      lb_ok += to_real<double>(*l1.lower_bound) <= f.level + 1e-12 * std::max(1.0, std::abs(f.level));
     }
     auto fo = passivity_level_freq(sys, PassivityKind::osp);
-    if (fo.status == "numeric" && fo.level > 0) {
+    if (fo.status == Status::numeric && fo.level > 0) {
       ++n_osp;
       auto o1 = passivity_level_lmi(sys, PassivityKind::osp, 1);
       auto o2 = passivity_level_lmi(sys, PassivityKind::osp, 2);
       const double t2 = 1e-5 * std::max(1.0, std::abs(fo.level));
       const double eo = std::max(std::abs(o1.level - fo.level), std::abs(o2.level - fo.level));
       worst_osp = std::max(worst_osp, eo / std::max(1.0, std::abs(fo.level)));
-      ok_osp += o1.status == "numeric" && o2.status == "numeric" && eo < t2;
-      if (!(o1.status == "numeric" && o2.status == "numeric" && eo < t2))
-        bad << " [OSP trial " << trial << ": freq " << fo.level << ", L1 " << o1.level << " (" << o1.status << " "
-            << o1.note << "), L2 " << o2.level << " (" << o2.status << " " << o2.note << ")]";
+      ok_osp += o1.status == Status::numeric && o2.status == Status::numeric && eo < t2;
+      if (!(o1.status == Status::numeric && o2.status == Status::numeric && eo < t2))
+        bad << " [OSP trial " << trial << ": freq " << fo.level << ", L1 " << o1.level << " (" << to_string(o1.status) << " "
+            << o1.note << "), L2 " << o2.level << " (" << to_string(o2.status) << " " << o2.note << ")]";
     }
   }
   std::ostringstream ev;
@@ -88,10 +88,10 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
      << " Lemma 1 = Lemma 2 = frequency (worst " << worst_osp << ")" << bad.str();
   check.claim("000.lemma1.kyp_frequency", "Lemma 1, (2)",
               "sup phi, sup delta of the LMI (2) equal the frequency-domain ISP/OSP levels (tolerance 1e-5 rel.)",
-              hapstab::proofs::Method::numeric, ok_isp == n_isp && n_osp > 0 && ok_osp == n_osp && lb_ok == certified,
+              hapstab::Status::numeric, ok_isp == n_isp && n_osp > 0 && ok_osp == n_osp && lb_ok == certified,
               ev.str());
   check.claim("000.lemma2.levels", "Lemma 2", "Lemma 2 (Schur form in Q) gives the same ISP level as Lemma 1",
-              hapstab::proofs::Method::numeric, ok_l2 == n_isp, ev.str());
+              hapstab::Status::numeric, ok_l2 == n_isp, ev.str());
 }
 
 HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the certified SISO frequency-domain level") {
@@ -104,7 +104,7 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
     auto sys = random_system(g, 1 + trial % 4, 1);
     const auto kind = trial % 2 ? PassivityKind::osp : PassivityKind::isp;
     auto c = passivity_level_certified(sys, kind, 20);
-    if (c.status == "failed") {
+    if (c.status == Status::failed) {
       if (kind == PassivityKind::isp) bad << " [trial " << trial << ": certified ISP failed: " << c.note << "]";
       continue;  // OSP: 1/G unstable (a zero of G outside the circle) -- the path refuses
     }
@@ -114,14 +114,16 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
     auto l = passivity_level_lmi(sys, kind, 1);
     const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
     worst = std::max(worst, e);
-    agree += l.status == "numeric" && e < 1e-5;
-    if (l.certified) {
+    agree += l.status == Status::numeric && e < 1e-5;
+    // exact rationals (c has an enclosure: its level is finite here)
+    const bool below = l.lower_bound && c.enclosure && *l.lower_bound <= c.enclosure->hi;
+    if (l.lower_bound) {
       ++certified_lmi;
-      consistent += l.lower_bound <= c.upper_bound;  // exact rationals
+      consistent += below;
     }
-    if (!(l.status == "numeric" && e < 1e-5) || (l.certified && !(l.lower_bound <= c.upper_bound)))
+    if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
       bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
-          << l.status << " " << l.note << ")]";
+          << to_string(l.status) << " " << l.note << ")]";
   }
   std::ostringstream ev;
   ev << cert_freq << " certified frequency levels (20 digits); " << agree << "/" << n
@@ -130,7 +132,7 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
   check.claim("000.lemma1.kyp_certified", "Lemma 1, (2)",
               "on random SISO systems the Lemma 1 ISP/OSP level equals the certified frequency-domain level (1e-5 rel.) "
               "and every exact LMI lower bound lies below the certified enclosure",
-              hapstab::proofs::Method::certified,
+              hapstab::Status::certified,
               n >= 8 && agree == n && consistent == certified_lmi && certified_lmi > 0 && bad.str().empty(), ev.str());
 }
 

@@ -118,9 +118,9 @@ HAPSTAB_PROOF(lmi_lemma1_lemma2_schur, "000", "Lemma 1 <=> Lemma 2: the Schur co
      << " instances where Lemma 1 (2) < 0, Lemma 2 > 0 and S - RQR' > 0 agree (exact LDL^T; " << pd_count
      << " feasible, " << total - pd_count << " infeasible instances)";
   check.claim("000.lemma1.schur_identity", "(2)", "-M(P) = W - N' blockdiag(P, Delta) N, the first Schur step",
-              hapstab::proofs::Method::exact, identity_ok == total, ev.str());
+              hapstab::Status::exact, identity_ok == total, ev.str());
   check.claim("000.lemma2.equivalence", "Lemma 2", "Lemma 1's (2) < 0 <=> [[Q^{-1}, R'], [R, S]] > 0 <=> S - R Q R' > 0 at Q = P^{-1}",
-              hapstab::proofs::Method::exact, equiv_ok == total && pd_count > 0 && pd_count < total, ev.str());
+              hapstab::Status::exact, equiv_ok == total && pd_count > 0 && pd_count < total, ev.str());
 }
 
 HAPSTAB_PROOF(lmi_lemma2_typo, "000", "Lemma 2's S: (D+D')/2 - Phi, not + Phi") {
@@ -141,6 +141,6 @@ HAPSTAB_PROOF(lmi_lemma2_typo, "000", "Lemma 2's S: (D+D')/2 - Phi, not + Phi") 
   ev << "G = 1/2 + 1/(z-1/2), phi = 0.3 > phi* = " << fq << " (frequency domain; exact -1/6): margins Lemma 1 " << m1
      << ", Lemma 2 with -Phi " << m2 << ", Lemma 2 with +Phi " << m2typo << " (> 0 means 'is 0.3-ISP'; with +Phi the test is the correct one at -Phi)";
   check.claim("000.lemma2.typo", "Lemma 2 S", "the transcribed +Phi accepts a non-ISP system; (D+D')/2 - Phi agrees with Lemma 1",
-              hapstab::proofs::Method::numeric, m1 < -1e-6 && m2 < -1e-6 && m2typo > 1e-6 && std::abs(fq + 1.0 / 6) < 1e-12,
+              hapstab::Status::numeric, m1 < -1e-6 && m2 < -1e-6 && m2typo > 1e-6 && std::abs(fq + 1.0 / 6) < 1e-12,
               ev.str());
 }

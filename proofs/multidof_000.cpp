@@ -3,6 +3,7 @@
 // (the reconstructed Fig. 5 environment, DESIGN.md).
 #include <sstream>
 
+#include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/example.hpp"
@@ -11,7 +12,7 @@
 namespace {
 using namespace hapstab;
 using namespace hapstab::multidof;
-using hapstab::proofs::Method;
+using hapstab::Status;
 using Q = rational;
 
 MatQ sym(const MatQ& M) { return (M + MatQ(M.transpose())) / 2; }
@@ -55,7 +56,7 @@ HAPSTAB_PROOF(multidof_k_and_realisations, "000", "Theorem 2's K, realisations (
   const MatQ G = s2.scalar_blocks(std::vector<Q>{Q(3, 2), Q(5, 4)});
   const bool kok = K == MatQ(Q(1, 274) * MatQ::Identity(2, 2)) && s2.K(T) == K && MatQ(G * K) == MatQ(K * G);
   check.claim("000.eq12.K", "(12)", "K = (T/2) Delta_D^-1 = 1/274 I for T = 0.01, Delta = 1.37; K commutes with every Gamma in G(2; 1, 1), so K^Gamma = K in (11), (17)",
-              Method::exact, kok, "exact rationals");
+              Status::exact, kok, "exact rationals");
 
   bool ok15 = true;
   for (bool pert : {false, true}) {
@@ -73,7 +74,7 @@ HAPSTAB_PROOF(multidof_k_and_realisations, "000", "Theorem 2's K, realisations (
   }
   const auto E = example::environment(false);
   check.claim("000.eq15.realisation", "(15)", "(A_Ehat, B_Ehat, C_Ehat, D_Ehat) of (15) realises E(z) T z/(z-1), and (A, B Gamma^-1, Gamma C, Gamma D Gamma^-1) realises Gamma Ehat Gamma^-1 (nominal and perturbed E, 4-state minimal E)",
-              Method::exact, ok15 && E.states() == 4, "ss2tf entry by entry, exact; E has " + std::to_string(E.states()) + " states");
+              Status::exact, ok15 && E.states() == 4, "ss2tf entry by entry, exact; E has " + std::to_string(E.states()) + " states");
 
   bool ok17 = true;
   for (int seed : {0, 1}) {
@@ -85,7 +86,7 @@ HAPSTAB_PROOF(multidof_k_and_realisations, "000", "Theorem 2's K, realisations (
         ok17 &= Vh(i, j).H == series(dif, parallel(Vt(i, j), constant(-K(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)), T))).H;
   }
   check.claim("000.eq17.realisation", "(17)", "(17) realises Vhat_Gamma = (z-1)/(Tz) (V^Gamma - K) (paper's (27) and a full 2x2 second-order V)",
-              Method::exact, ok17, "ss2tf entry by entry, exact");
+              Status::exact, ok17, "ss2tf entry by entry, exact");
 
   // (23)-(24): X = diag(9/4, 25/16) has the exact square root Gamma = diag(3/2, 5/4)
   const MatQ X = s2.scalar_blocks(std::vector<Q>{Q(9, 4), Q(25, 16)});
@@ -98,7 +99,7 @@ HAPSTAB_PROOF(multidof_k_and_realisations, "000", "Theorem 2's K, realisations (
       ok23 &= tv(i, j).H == series(tg(i, j), constant(G(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)) /
                                                       G(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)), T)).H;
   check.claim("000.eq23.eq24", "(23), (24)", "(A_V^G, B_V^G Gamma, Gamma^-1 C_V^G, Gamma^-1 D_V^G Gamma) realises V = Gamma^-1 V^Gamma Gamma, with Gamma = sqrt(X)",
-              Method::exact, ok23, "ss2tf entry by entry; Gamma^2 = X exactly");
+              Status::exact, ok23, "ss2tf entry by entry; Gamma^2 = X exactly");
 }
 
 HAPSTAB_PROOF(multidof_congruence, "000", "Theorem 4 -> LMIs (16) by congruence; facial reduction of (16)") {
@@ -126,7 +127,7 @@ HAPSTAB_PROOF(multidof_congruence, "000", "Theorem 4 -> LMIs (16) by congruence;
   const MatQ C2 = blkdiag(G, G);
   const bool second = MatQ(C2 * S14 * C2) == S16;
   check.claim("000.eq16.congruence", "(14) -> (16)", "diag(I, Gamma) [Lemma 1 for Ehat^Gamma, Phi = -Phi_E] diag(I, Gamma) is (16)'s first matrix with X = Gamma^2, Q_E = Gamma Phi_E Gamma; diag(Gamma, Gamma) (14) diag(Gamma, Gamma) is its second with Q_V = Gamma Delta_V Gamma",
-              Method::exact, first && second, "exact identities for the Sec. VI E-hat, Gamma = diag(3/2, 5/4), rational P, Q_E, Delta_V");
+              Status::exact, first && second, "exact identities for the Sec. VI E-hat, Gamma = diag(3/2, 5/4), rational P, Q_E, Delta_V");
 
   // facial reduction: with P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1, M1 [v_b; 0] = 0 for all P11
   const auto sp = ehat_split(E);
@@ -147,7 +148,7 @@ HAPSTAB_PROOF(multidof_congruence, "000", "Theorem 4 -> LMIs (16) by congruence;
   const bool kern = MatQ(N1 * Vk).isZero(0) && MatQ(H.A * Vk.topRows(6)) == MatQ(Vk.topRows(6));
   const auto fcp = facial_conditions(example::problem(1, true));
   check.claim("000.eq16.facial", "(15), (16)", "E-hat has m = 2 eigenvalues at 1 (eigenvectors [V_a b; b]); (16)'s first LMI is singular along [v; 0] for every P; the equalities hold iff P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1 with X E(1) symmetric; for the perturbed E no X = g I qualifies",
-              Method::exact, kern && !fcp.symmetric_possible, "exact kernel identity with rational P11, X = 7/3 I; perturbed E(1) asymmetric");
+              Status::exact, kern && !fcp.symmetric_possible, "exact kernel identity with rational P11, X = 7/3 I; perturbed E(1) asymmetric");
 
 }
 
@@ -156,28 +157,28 @@ HAPSTAB_PROOF(multidof_section6, "000", "Sec. VI: feasibility table, the paper's
   const auto a2 = analyze(example::problem(1, true));
   const auto a3 = analyze(example::problem(2, true));
   const auto a4 = analyze(example::problem(2, false));
+  auto word = [](const Verdict& v) { return lmi::to_string(lmi::feasibility_of(v.outcome)); };
   std::ostringstream ev;
-  ev << "case i nominal " << lmi::to_string(a1.verdict) << (a1.certified ? " (exact)" : "") << "; case i perturbed "
-     << lmi::to_string(a2.verdict) << (a2.certified ? " (exact: X E_p(1) cannot be symmetric)" : "") << "; case ii perturbed "
-     << lmi::to_string(a3.verdict) << (a3.certified ? " (exact)" : "") << "; case ii nominal " << lmi::to_string(a4.verdict);
-  const bool table = a1.verdict == lmi::Feasibility::feasible && a1.certified && a2.verdict == lmi::Feasibility::infeasible &&
-                     a2.certified && a3.verdict == lmi::Feasibility::feasible && a3.certified &&
-                     a4.verdict == lmi::Feasibility::feasible && a4.certified;
+  ev << "case i nominal " << word(a1.verdict) << (a1.verdict.proven() ? " (exact)" : "") << "; case i perturbed "
+     << word(a2.verdict) << (a2.verdict.proven() ? " (exact: X E_p(1) cannot be symmetric)" : "") << "; case ii perturbed "
+     << word(a3.verdict) << (a3.verdict.proven() ? " (exact)" : "") << "; case ii nominal " << word(a4.verdict);
+  const bool table = a1.verdict.holds() && a1.verdict.proven() && a2.verdict.fails() && a2.verdict.proven() &&
+                     a3.verdict.holds() && a3.verdict.proven() && a4.verdict.holds() && a4.verdict.proven();
   check.claim("000.sec6.table", "Sec. VI", "Theorem 5 on the reconstructed example: case i nominal feasible, case i perturbed infeasible, case ii perturbed feasible (as the paper claims), case ii nominal feasible",
-              Method::exact, table, ev.str());
+              Status::exact, table, ev.str());
 
   const auto V = example::controller27();
   const MatQ K = example::structure(1).K(example::T());
   const auto cc = check_theorem4(example::problem(1, false), V);
   const auto l = vhat_osp_level(V, K);
   std::ostringstream e2;
-  e2 << "Theorem 4 " << lmi::to_string(cc.verdict) << (cc.certified ? " (exact)" : "") << "; Vhat OSP level in [" << l.delta << ", "
+  e2 << "Theorem 4 " << word(cc.verdict) << (cc.verdict.proven() ? " (exact)" : "") << "; Vhat OSP level in [" << l.delta << ", "
      << l.upper << "]";
   check.claim("000.eq27.theorem4", "(27), Theorem 4", "the paper's controller (27) satisfies Theorem 4 for case i with the nominal reconstructed E; its Vhat has a positive OSP level",
-              Method::exact, cc.verdict == lmi::Feasibility::feasible && cc.certified && l.certified && l.delta > 0, e2.str());
+              Status::exact, cc.verdict.holds() && cc.verdict.proven() && l.verdict.proven() && l.delta > 0, e2.str());
 
   const auto p1 = operator_passive(example::operator_H(1));
   const auto p2 = operator_passive(example::operator_H(2));
   check.claim("000.assumption1.operator", "Assumption 1(b), Sec. VI", "the diagonal H(s) of case ii is passive; the 2x2 H(s) given for case i is NOT (its Hermitian part is indefinite near w = 1.84 rad/s), so Assumption 1(b) fails for the paper's case-i simulation operator",
-              Method::exact, p2.passive && p2.certified && !p1.passive && p1.certified, "case i: " + p1.detail + "; case ii: " + p2.detail);
+              Status::exact, p2.passive && p2.certified && !p1.passive && p1.certified, "case i: " + p1.detail + "; case ii: " + p2.detail);
 }

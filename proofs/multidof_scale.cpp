@@ -32,7 +32,7 @@
 namespace {
 
 using namespace hapstab;
-using hapstab::proofs::Method;
+
 using MatQ = Eigen::Matrix<rational, Eigen::Dynamic, Eigen::Dynamic>;
 
 MatQ random_dyadic(std::mt19937& g, int rows, int cols) {
@@ -95,15 +95,15 @@ HAPSTAB_PROOF(multidof_realisation_independence, "000",
   std::ostringstream ev;
   for (int i = 0; i < 3; ++i) {
     const auto a = multidof::analyze(*cases[i], {}, multidof::AnalysisMode::stability_only);
-    const bool ok = a.verdict == lmi::Feasibility::feasible && a.certified;
+    const bool ok = a.verdict.holds() && a.verdict.proven();
     all = all && ok;
-    ev << (i ? "; " : "") << names[i] << " (" << cases[i]->E.A.rows() << " states): " << lmi::to_string(a.verdict)
-       << (a.certified ? ", certified" : ", NOT certified");
+    ev << (i ? "; " : "") << names[i] << " (" << cases[i]->E.A.rows() << " states): (16) "
+       << to_string(a.verdict.outcome) << ", " << to_string(a.verdict.status);
   }
   check.claim("000.thm5.realisation_independence", "(15), (16)",
               "(16) is feasible for E's realisation as given, after a similarity and with a stable "
               "uncontrollable mode added (Sec. VI case ii): the same verdict, each certified exactly",
-              Method::certified, all, ev.str());
+              Status::certified, all, ev.str());
 }
 
 HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement equals tr(F_k X F_l Z)") {
@@ -151,10 +151,10 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
       }
   }
   check.claim("000.ipm.low_rank_pieces", "(16) first LMI",
-              "the rank-one pieces kept for A^T P A - P add up to each term F_k exactly (n = 2, 3, 5)", Method::exact,
+              "the rank-one pieces kept for A^T P A - P add up to each term F_k exactly (n = 2, 3, 5)", Status::exact,
               pieces_exact, std::to_string(terms_checked) + " terms rebuilt from their pieces in rational arithmetic");
   check.claim("000.ipm.low_rank_schur", "(16) first LMI",
               "tr(F_k X F_l Z) = sum s_f s_g (R_v^T X L_u)(R_v'^T Z L_u') for the pieces of A^T P A - P (lmi/ipm.cpp)",
-              Method::exact, identity_holds,
+              Status::exact, identity_holds,
               std::to_string(entries_checked) + " Schur complement entries, random rational X and Z, exact");
 }

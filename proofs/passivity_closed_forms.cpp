@@ -18,7 +18,6 @@ using namespace hapstab;
 using namespace hapstab::passivity;
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
-using PM = hapstab::proofs::Method;
 
 const P z = P::monomial(1);
 RF zpow(int k) { return k >= 0 ? RF(P::monomial(k)) : RF(P(rational(1)), P::monomial(-k)); }
@@ -73,7 +72,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
   // Re{T H_1/(1-z)} = -cos wT
   bool ok = true;
   for (const auto& T : Ts) ok = ok && re_t(RF(T) * Hm(1, T) / one_minus_z()) == -cos_k(1);
-  check.claim("001.sec6.H1", "Example 1", "Re{T H_1(z)/(1-z)} = -cos wT, H_1 = (z-1)/(Tz), as an identity in t", PM::exact,
+  check.claim("001.sec6.H1", "Example 1", "Re{T H_1(z)/(1-z)} = -cos wT, H_1 = (z-1)/(Tz), as an identity in t", Status::exact,
               ok, "on_unit_circle of T H_1/(1-z) equals -(1-t^2)/(1+t^2) for T in {1, 1/1000, 7/3}");
   // Re{T H_m/(1-z)} = T^{1-m} sum_k C(m-1,k)(-1)^{k+1} cos(k+1)wT, max (2/T)^{m-1} at wT = pi
   ok = true;
@@ -86,7 +85,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
         ok = ok && re_t(RF(T) * Hm(m, T) / (one_minus_z() * zpow(n))) == rhs;
       }
   check.claim("001.ex4.Hm_delay", "Example 4", "Re{T H_m/((1-z)z^n)} = T^{1-m} sum_k C(m-1,k)(-1)^{k+1} cos(n+k+1)wT",
-              PM::exact, ok, "exact identity in t for m = 1..6, n = 0..4, T in {1, 1/1000, 7/3}");
+              Status::exact, ok, "exact identity in t for m = 1..6, n = 0..4, T in {1, 1/1000, 7/3}");
   // partial fractions 1/((1-z) z^n) = 1/(1-z) + z^-1 + ... + z^-n
   ok = true;
   for (int n = 0; n <= 12; ++n) {
@@ -94,7 +93,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     for (int k = 1; k <= n; ++k) rhs += zpow(-k);
     ok = ok && (RF(rational(1)) / (one_minus_z() * zpow(n))) == rhs;
   }
-  check.claim("001.ex4.partial_fractions", "Example 4", "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k", PM::exact, ok,
+  check.claim("001.ex4.partial_fractions", "Example 4", "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k", Status::exact, ok,
               "equal as reduced rational functions of z for n = 0..12");
   // (52): T/(1-z) (z-1)/(z+1) = -(T/2)[1 - j tan(wT/2)]
   ok = true;
@@ -102,7 +101,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     ReIm ri = on_unit_circle(RF(T) / one_minus_z() * RF(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)})));
     ok = ok && ri.re == RF(-T / 2) && ri.im == RF(P::monomial(1, T / 2));
   }
-  check.claim("001.eq52", "(52)", "T/(1-z) (z-1)/(z+1) = -(T/2)(1 - j tan(wT/2)) on the unit circle", PM::exact, ok,
+  check.claim("001.eq52", "(52)", "T/(1-z) (z-1)/(z+1) = -(T/2)(1 - j tan(wT/2)) on the unit circle", Status::exact, ok,
               "real part -T/2 and imaginary part (T/2) t exactly, T in {1, 1/1000, 7/3}");
   // (51): Re{T/(1-z) (z-1)/(z+a)} = -T (cos wT + a)/(a^2 + 2 a cos wT + 1)
   ok = true;
@@ -111,7 +110,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     RF c = cos_k(1);
     ok = ok && lhs == RF(rational(-1)) * (c + RF(a)) / (RF(a * a + 1) + RF(2 * a) * c);
   }
-  check.claim("001.eq51", "(51)", "Re{T/(1-z) (z-1)/(z+a)} = -T (cos wT + a)/(a^2 + 2a cos wT + 1)", PM::exact, ok,
+  check.claim("001.eq51", "(51)", "Re{T/(1-z) (z-1)/(z+a)} = -T (cos wT + a)/(a^2 + 2a cos wT + 1)", Status::exact, ok,
               "exact identity in t (T = 1; both sides are linear in T) for a in {-9/10, 0, 1/3, 999/1000}");
   // (53): Re{T H/((1-z) z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT, H = K + B(z-1)/(Tz); linear in (KT, B),
   // so the two basis cases (KT, B) = (1, 0), (0, 1) prove it for every K, B, T.
@@ -121,7 +120,7 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     RF damper = re_t(Hm(1, rational(1)) / (one_minus_z() * zpow(n)));             // B = 1 (T = 1)
     ok = ok && spring == RF(rational(1, 2)) * dirichlet(n, false) && damper == RF(rational(-1)) * cos_k(n + 1);
   }
-  check.claim("001.eq53", "(53)", "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT", PM::exact, ok,
+  check.claim("001.eq53", "(53)", "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT", Status::exact, ok,
               "exact identity in t for n = 0..8 on the basis (KT,B) = (1,0), (0,1) (the expression is linear in KT and B)");
   // Tustin with delay: (KT/2) D_n(wT) - B (-1)^n D_n(wT + pi); n = 1: KT/2 + B + (KT - 2B) cos wT
   ok = true;
@@ -131,12 +130,12 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     ok = ok && damper == RF(rational(n % 2 ? 1 : -1)) * dirichlet(n, true);
   }
   check.claim("001.ex4.tustin_delay", "Example 4",
-              "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi)", PM::exact, ok,
+              "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi)", Status::exact, ok,
               "exact identity in t for n = 0..8 (damper part; the spring part is (53)'s)");
   RF n1 = re_t(RF(rational(1)) / (one_minus_z() * zpow(1)));
   RF n1b = re_t(tust / (one_minus_z() * zpow(1)));
   bool ok1 = n1 == RF(rational(1, 2)) + cos_k(1) && n1b == RF(rational(1)) - RF(rational(2)) * cos_k(1);
-  check.claim("001.ex4.tustin_n1", "Example 4", "n = 1: Re = KT/2 + B + (KT - 2B) cos wT", PM::exact, ok1,
+  check.claim("001.ex4.tustin_n1", "Example 4", "n = 1: Re = KT/2 + B + (KT - 2B) cos wT", Status::exact, ok1,
               "spring part 1/2 + cos wT, damper part 1 - 2 cos wT, exactly in t");
 }
 
@@ -162,7 +161,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     ok = ok && agrees(bound_certified(prob(H, T)), cf);
     ++count;
   }
-  check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0", PM::certified, ok,
+  check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0", Status::certified, ok,
               std::to_string(count) + " random non-negative combinations up to H_4; closed form inside the certified enclosure");
   // virtual wall KT/2 + B and with delay n = 1 (both cases, boundary KT = 4B)
   ok = true;
@@ -183,10 +182,10 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       RF H = RF(K) + RF(B) * Hm(1, T);
       ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
     }
-  check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", PM::certified, ok,
+  check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", Status::certified, ok,
               std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0");
   check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B)",
-              PM::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
+              Status::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
   // conservative bound (2n+1)KT/2 + B for n = 0..5 is an upper bound
   ok = true;
   for (int n = 0; n <= 5; ++n)
@@ -195,7 +194,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       Bound b = bound_certified(prob(H, T, n));
       ok = ok && b.lo <= catalogue::delayed_wall_conservative(n, K, rational(5), T);
     }
-  check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall", PM::certified, ok,
+  check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall", Status::certified, ok,
               "n = 0..5, K in {1000, 30000}, B = 5");
   // H_m z^-n: (2/T)^{m-1}, tight for even n; H_0 z^-n: (2n+1)T/2
   ok = true;
@@ -208,7 +207,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     }
   for (int n = 0; n <= 6; ++n) ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
   check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2",
-              PM::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0");
+              Status::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0");
   // FIR (47)-(49): non-negative and alternating sign structures are tight, others bounded
   ok = true;
   bool okb = true;
@@ -235,7 +234,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     okb = okb && b.lo <= v;
   }
   check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs",
-              PM::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)");
+              Status::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)");
   // IIR: T/(1-a), T/(1+a), a -> +-1, a = 1 (52)
   ok = true;
   for (rational a : {rational(-999999, 1000000), rational(-9, 10), rational(0), rational(1, 2), rational(999999, 1000000)}) {
@@ -245,7 +244,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
   }
   RF H52(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)}));
   ok = ok && agrees(bound_certified(prob(H52, T)), catalogue::iir_zero_at_one(rational(1), T));
-  check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2", PM::certified,
+  check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2", Status::certified,
               ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1");
   // Tustin wall KT/2 - B, with n = 1 KT/2 + B + |KT - 2B|, with 0 < t_d < T: +inf
   ok = true;
@@ -262,10 +261,10 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
         okf = okf && b.infinite && b.status == Status::exact;
       }
     }
-  check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B|", PM::certified, ok,
+  check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B|", Status::certified, ok,
               "K in {0, 1000, 10000}, B in {1/2, 5, 50}");
   check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive)",
-              PM::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)");
+              Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)");
   // a fractional delay t_d = (p/q) T made exact (bound.cpp, certified_frac_exact): for H_1 z^-n,
   // Re{T H_1 z^-n e^{-j w t_d}/(1 - z)} = -cos((n + 1 + t_d/T) wT), so b* = 1, attained at
   // w = pi/((n + 1 + t_d/T) T) -- an interior maximiser at an irrational cos(wT/q) for most p/q
@@ -282,7 +281,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       ++fcount;
     }
   check.claim("001.eq45.fractional_exact", "(45), Example 3", "with t_d = (p/q) T the objective is rational in cos(wT/q): "
-              "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T)", PM::certified, ok,
+              "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T)", Status::certified, ok,
               std::to_string(fcount) + " cases, n = 0..2, t_d/T in {1/2, 1/3, 2/5, 3/7, 5/4, 9/10}");
   // eta (54) adds
   ok = true;
@@ -291,7 +290,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     p.eta = eta;
     ok = ok && agrees(bound_certified(p), catalogue::virtual_wall(1000, 5, T) + eta);
   }
-  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", PM::certified, ok, "eta in {0, 1/10, 7}");
+  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", Status::certified, ok, "eta in {0, 1/10, 7}");
 }
 
 HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and b ~ (CN - D)T") {
@@ -302,7 +301,7 @@ HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and 
              parse_rational("0.3913831859") - rational(1, 20000000000LL) < D.lo &&
              D.hi < parse_rational("0.3913831859") + rational(1, 20000000000LL);
   check.claim("001.dirichlet.C", "(50)", "C = -min sin(y)/y = 0.2172336282..., D = (1 - C)/2 = 0.3913831859...",
-              PM::certified, okc,
+              Status::certified, okc,
               "C in [" + to_decimal(C.lo, 25) + ", " + to_decimal(C.hi, 25) + "] (root of tan y = y in (pi, 3pi/2), width < 1e-60)");
   // b*_N / T - (C N - D) for growing N: the generic certified bound of (z-1) sum_0^N z^-k
   const rational T(1, 1000);
@@ -322,5 +321,5 @@ HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and 
   bool ok = true;
   for (size_t i = 1; i < err.size(); ++i) ok = ok && err[i] < err[i - 1];
   ok = ok && err.back() < err.front() / 4;
-  check.claim("001.dirichlet.approx", "(50)", "the error of b ~ (CN - D)T tends to 0 as N grows", PM::certified, ok, ev.str());
+  check.claim("001.dirichlet.approx", "(50)", "the error of b ~ (CN - D)T tends to 0 as N grows", Status::certified, ok, ev.str());
 }

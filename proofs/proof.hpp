@@ -2,7 +2,8 @@
 //
 // Each file in proofs/ re-derives claims of one paper and *checks* them with the toolbox:
 //   HAPSTAB_PROOF(r_forms_identity, "001", "(35)-(38) and (44) are one rational function of t") {
-//     check.claim("001.eq44.identity", "(44)=(38)", "T/(e^{jwT}-1) = ...", Method::exact, ok, "...");
+//     check.claim("001.eq44.identity", "(44)=(38)", "T/(e^{jwT}-1) = ...", Status::exact, ok, "...");
+// A claim's status is hapstab::Status (numeric/result.hpp): exact, certified or numeric.
 //   }
 // Every claim id must have its row in proofs/README.md (the claim table); `hapstab proofs
 // --table proofs/README.md` fails when a claim and the table disagree. `hapstab proofs` and
@@ -12,19 +13,16 @@
 #include <string>
 #include <vector>
 
-namespace hapstab::proofs {
+#include "hapstab/numeric/result.hpp"
 
-enum class Method { exact, certified, numeric };
-inline const char* to_string(Method m) {
-  return m == Method::exact ? "exact" : m == Method::certified ? "certified" : "numeric";
-}
+namespace hapstab::proofs {
 
 struct ClaimResult {
   std::string id;         ///< stable id, e.g. "001.eq44.identity" (paper.equation.what)
   std::string paper;      ///< "000", "001" or "002" (shared/papers numbering)
   std::string equation;   ///< e.g. "(44) = (35)"
   std::string statement;  ///< what is claimed, in words
-  Method method;
+  Status status;          ///< how the claim is checked: exact, certified or numeric
   bool holds;
   std::string evidence;   ///< what was computed: counts, maximum errors, enclosures
 };
@@ -33,9 +31,9 @@ class Checker {
  public:
   explicit Checker(std::string paper) : paper_(std::move(paper)) {}
   /// Records one claim and its computed verdict. Returns `holds` for chaining.
-  bool claim(std::string id, std::string equation, std::string statement, Method method, bool holds,
+  bool claim(std::string id, std::string equation, std::string statement, Status status, bool holds,
              std::string evidence) {
-    results_.push_back({std::move(id), paper_, std::move(equation), std::move(statement), method, holds,
+    results_.push_back({std::move(id), paper_, std::move(equation), std::move(statement), status, holds,
                         std::move(evidence)});
     return holds;
   }

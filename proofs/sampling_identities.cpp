@@ -55,19 +55,19 @@ HAPSTAB_PROOF(sampling_r_identities, "001", "(35)=(36)=(37)=(38)=(44) as rationa
      << "; r/T = " << to_string(f44.re.coeff(1)) << " + j " << to_string(f44.im.coeff(1));
   check.claim("001.eq35-44.identity", "(35) = (36) = (37) = (38) = (44)",
               "all five forms of r(jw) are the same rational function of t = tan(wT/2), for every T",
-              hapstab::proofs::Method::exact, all && lib, ev.str());
+              hapstab::Status::exact, all && lib, ev.str());
 
   // Re r = -T/2 exactly; Im r = -(T/2) cot(wT/2) = -T/(2t)
   const bool re_ok = f44.re == PT::monomial(1, RF(P(rational(-1, 2))));
   const bool im_ok = f44.im == PT::monomial(1, RF(P(rational(-1, 2)), P::monomial(1)));
   check.claim("001.eq38.re_minus_T_half", "(38), (44)", "Re r(jw) = -T/2 and Im r(jw) = -(T/2) cot(wT/2) exactly",
-              hapstab::proofs::Method::exact, re_ok && im_ok,
+              hapstab::Status::exact, re_ok && im_ok,
               "Re = " + to_string(f44.re.coeff(1)) + " * T, Im = " + to_string(f44.im.coeff(1)) + " * T");
 
   // (40)-(44) on s = jw: k = (1 - e^{-jwT}) r = T e^{-jwT}
   const ComplexRF k_over_T = (constant(1) - emj) * r_over_T_eq44();
   check.claim("001.eq40.k_is_T_exp", "(40), (44)", "k(jw) = (1 - e^{-jwT}) r(jw) equals T e^{-jwT} exactly",
-              hapstab::proofs::Method::exact, k_over_T == emj,
+              hapstab::Status::exact, k_over_T == emj,
               "(1 - e^{-jwT}) / (e^{jwT} - 1) = e^{-jwT} in Q(t): " + to_string(k_over_T.re) + " + j " +
                   to_string(k_over_T.im));
 
@@ -83,7 +83,7 @@ HAPSTAB_PROOF(sampling_r_identities, "001", "(35)=(36)=(37)=(38)=(44) as rationa
                         den_roots.size() == 1 && den_roots[0].lo <= 0 && 0 <= den_roots[0].hi;
   check.claim("001.eq9.rhat_real_positive", "(9), Theorem 1",
               "rhat(w) = r(jw)/(T(e^{-jwT}-1)) is real and > 0 for every wT not a multiple of 2 pi",
-              hapstab::proofs::Method::exact, real && is_expected && positive,
+              hapstab::Status::exact, real && is_expected && positive,
               "rhat = " + to_string(rh.re) + " (= 1/(4 sin^2(wT/2))), Im rhat = 0 identically; Sturm: numerator " +
                   std::to_string(num_roots.size()) + " real roots, denominator = t^2 (> 0 for t != 0)");
 }

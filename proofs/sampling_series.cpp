@@ -50,10 +50,10 @@ HAPSTAB_PROOF(sampling_series_certified, "001", "Certified enclosures of the inf
   check.claim("001.eq34.certified_contains_eq44", "(34) = (44)",
               "the infinite series (34), enclosed rigorously (interval partial sum + Euler-Maclaurin remainder), "
               "contains the closed form (44)",
-              hapstab::proofs::Method::certified, re_in == count && im_in == count && worst_width < 1e-30, ev.str());
+              hapstab::Status::certified, re_in == count && im_in == count && worst_width < 1e-30, ev.str());
   check.claim("001.eq9.rhat_positive_certified", "(9), Theorem 1",
               "the enclosure of rhat = sum_n 1/(wT + 2 n pi)^2 is strictly positive at every point",
-              hapstab::proofs::Method::certified, rhat_pos == count,
+              hapstab::Status::certified, rhat_pos == count,
               std::to_string(rhat_pos) + " of " + std::to_string(count) + " enclosures have a positive lower end");
 
   // integral tail bound: the truncated series error lies within the bound (certified, 60 digits)
@@ -69,7 +69,7 @@ HAPSTAB_PROOF(sampling_series_certified, "001", "Certified enclosures of the inf
   check.claim("001.eq34.tail_bound", "(34), (9)",
               "tail of the truncated series: 1/(2pi(2pi(N+1)+wT)) + 1/(2pi(2pi(N+1)-wT)) <= tau_N <= "
               "1/(2pi(2pi N+wT)) + 1/(2pi(2pi N-wT))",
-              hapstab::proofs::Method::certified, tb_ok == tb_n,
+              hapstab::Status::certified, tb_ok == tb_n,
               std::to_string(tb_ok) + " of " + std::to_string(tb_n) +
                   " cases (N = 1..1000, wT = 1e-3, 1, 3) consistent with tau_N = 1/(4 sin^2(wT/2)) - rhat_N");
 }
@@ -84,7 +84,7 @@ HAPSTAB_PROOF(sampling_triangle_k, "001", "The triangle (43): c(kT) = T [k = 1],
               triangle_c(3 * T / 2, T) == T / 2;
   }
   check.claim("001.eq43.triangle_samples", "(43)", "c(kT) = T for k = 1 and 0 for every other integer k",
-              hapstab::proofs::Method::exact, samples, "k = -3..50 at T = 1/1000, 7/3, 1 (exact rationals)");
+              hapstab::Status::exact, samples, "k = -3..50 at T = 1/1000, 7/3, 1 (exact rationals)");
 
   // Certified C*(s) = (1/T) sum_n C(s + j n w_s) vs T e^{-sT}, s = sigma + j w
   int pts = 0, ok = 0;
@@ -103,7 +103,7 @@ HAPSTAB_PROOF(sampling_triangle_k, "001", "The triangle (43): c(kT) = T [k = 1],
   }
   check.claim("001.eq42.starred_triangle_is_T_exp", "(42), (44)",
               "C*(s) = (1/T) sum_n C(s + j n w_s) with C = ((1 - e^{-sT})/s)^2 encloses k(s) = T e^{-sT}",
-              hapstab::proofs::Method::certified, ok == pts,
+              hapstab::Status::certified, ok == pts,
               std::to_string(ok) + " of " + std::to_string(pts) +
                   " points s = sigma + j w (sigma in {0, 1/(2T), -1/(3T)}, wT in {1e-3, 1/2, 3, -2}): "
                   "|n| <= 2000 in intervals + tail disc (1/T)|1-e^{-sT}|^2 T^2 tau_N");

@@ -42,13 +42,13 @@ TEST(PassivityLevel, FirstOrderIspAllMethods) {
   for (Backend b : kBoth)
     for (int lemma : {1, 2}) {
       auto l = passivity_level_lmi(sys, PassivityKind::isp, lemma, b);
-      ASSERT_EQ(l.status, "numeric") << l.method << " " << l.note;
+      ASSERT_EQ(l.status, Status::numeric) << l.method << " " << l.note;
       // The LMI optimum is approached within the strict threshold 1e-7 (equilibrated) plus
       // the solver's gap tolerance; 1e-5 absolute covers both with margin.
       EXPECT_NEAR(l.level, exact, 1e-5) << l.method;
-      ASSERT_TRUE(l.certified) << l.method << " " << l.note;
-      EXPECT_LE(l.lower_bound, rational(1, 3)) << l.method;  // a proven lower bound can't exceed sup
-      EXPECT_GT(l.lower_bound, rational(1, 3) - rational(1, 10000)) << l.method;
+      ASSERT_TRUE(l.proven()) << l.method << " " << l.note;
+      EXPECT_LE(*l.lower_bound, rational(1, 3)) << l.method;  // a proven lower bound can't exceed sup
+      EXPECT_GT(*l.lower_bound, rational(1, 3) - rational(1, 10000)) << l.method;
     }
 }
 
@@ -61,10 +61,10 @@ TEST(PassivityLevel, FirstOrderOspAllMethods) {
   for (Backend b : kBoth)
     for (int lemma : {1, 2}) {
       auto l = passivity_level_lmi(sys, PassivityKind::osp, lemma, b);
-      ASSERT_EQ(l.status, "numeric") << l.method << " " << l.note;
+      ASSERT_EQ(l.status, Status::numeric) << l.method << " " << l.note;
       EXPECT_NEAR(l.level, exact, 1e-5) << l.method;
-      ASSERT_TRUE(l.certified) << l.method << " " << l.note;
-      EXPECT_LE(l.lower_bound, rational(1, 3)) << l.method;
+      ASSERT_TRUE(l.proven()) << l.method << " " << l.note;
+      EXPECT_LE(*l.lower_bound, rational(1, 3)) << l.method;
     }
 }
 
@@ -84,7 +84,7 @@ TEST(PassivityLevel, RotatedMimoIsp) {
   for (Backend b : kBoth) {
     auto l = passivity_level_lmi(sys, PassivityKind::isp, 1, b);
     EXPECT_NEAR(l.level, 1.0 / 3.0, 1e-5) << l.method << " " << l.note;
-    EXPECT_TRUE(l.certified) << l.method;
+    EXPECT_TRUE(l.proven()) << l.method;
   }
 }
 
@@ -104,8 +104,8 @@ TEST(PassivityLevel, ZeroOnTheUnitCircle) {
   EXPECT_NEAR(fo.level, 0.5, 1e-7);
   EXPECT_FALSE(fo.note.empty());
   auto l = passivity_level_lmi(sys, PassivityKind::osp, 1);
-  EXPECT_EQ(l.status, "failed") << l.level;
-  EXPECT_FALSE(l.certified);
+  EXPECT_EQ(l.status, Status::failed) << l.level;
+  EXPECT_FALSE(l.proven());
 }
 
 TEST(PassivityLevel, BadInput) {
@@ -116,7 +116,7 @@ TEST(PassivityLevel, BadInput) {
   cont.T = 0;
   EXPECT_THROW(passivity_level_lmi(cont, PassivityKind::isp), InputError);  // continuous
   auto unstable = first_order(1.5, 1, 1);
-  EXPECT_EQ(passivity_level_freq(unstable, PassivityKind::isp).status, "failed");
+  EXPECT_EQ(passivity_level_freq(unstable, PassivityKind::isp).status, Status::failed);
 }
 
 namespace {
@@ -145,10 +145,10 @@ TEST(PassivityLevel, CertifiedSisoKnownLevels) {
   auto G = G_of("1 + 1/(z - 1/2)");
   for (PassivityKind k : {PassivityKind::isp, PassivityKind::osp}) {
     auto c = passivity_level_certified(G, k);
-    ASSERT_TRUE(c.certified) << c.note;
-    EXPECT_EQ(c.status, "exact") << c.method;  // minimum at theta = pi (isp) / 0 (osp): rational
-    EXPECT_EQ(c.lower_bound, rational(1, 3));
-    EXPECT_EQ(c.upper_bound, rational(1, 3));
+    ASSERT_TRUE(c.proven()) << c.note;
+    EXPECT_EQ(c.status, Status::exact) << c.method;  // minimum at theta = pi (isp) / 0 (osp): rational
+    EXPECT_EQ(c.lower_bound.value_or(rational(-1)), rational(1, 3));
+    EXPECT_EQ(c.enclosure.value_or(Enclosure<rational>{-1, -1}).hi, rational(1, 3));
     EXPECT_NEAR(c.theta_min, k == PassivityKind::isp ? M_PI : 0.0, 1e-15);
   }
   // (z^2 + 1)/(z^2 - 1/4): zeros +-j ON the circle. Re(1/G) = 3/8 for every theta != pi/2
@@ -158,21 +158,21 @@ TEST(PassivityLevel, CertifiedSisoKnownLevels) {
   // delta): only this path gives a proven level here.
   auto H = G_of("(z^2 + 1)/(z^2 - 1/4)");
   auto o = passivity_level_certified(H, PassivityKind::osp);
-  ASSERT_TRUE(o.certified) << o.note;
-  EXPECT_EQ(o.lower_bound, rational(3, 8)) << o.method;
-  EXPECT_EQ(o.upper_bound, rational(3, 8));
+  ASSERT_TRUE(o.proven()) << o.note;
+  EXPECT_EQ(o.lower_bound.value_or(rational(-1)), rational(3, 8)) << o.method;
+  EXPECT_EQ(o.enclosure.value_or(Enclosure<rational>{-1, -1}).hi, rational(3, 8));
   auto i = passivity_level_certified(H, PassivityKind::isp);
-  ASSERT_TRUE(i.certified) << i.note;
-  EXPECT_EQ(i.lower_bound, rational(0));
-  EXPECT_EQ(i.upper_bound, rational(0));
+  ASSERT_TRUE(i.proven()) << i.note;
+  EXPECT_EQ(i.lower_bound.value_or(rational(-1)), rational(0));
+  EXPECT_EQ(i.enclosure.value_or(Enclosure<rational>{-1, -1}).hi, rational(0));
   EXPECT_NEAR(i.theta_min, M_PI / 2, 1e-12);
   // a zero of G outside the circle (z = -3/2) is a pole of 1/G outside it: the OSP path
   // refuses and says why (the ISP path is unaffected)
   auto R = G_of("(z - 1)*(z + 3/2)/(z*(z + 1/2))");
   auto r = passivity_level_certified(R, PassivityKind::osp);
-  EXPECT_EQ(r.status, "failed") << r.value;
+  EXPECT_EQ(r.status, Status::failed) << r.value;
   EXPECT_NE(r.note.find("outside"), std::string::npos) << r.note;
-  EXPECT_TRUE(passivity_level_certified(R, PassivityKind::isp).certified);
+  EXPECT_TRUE(passivity_level_certified(R, PassivityKind::isp).proven());
 }
 
 // A narrow resonance: poles at radius 0.99999, angle acos(0.54); the peak of |G| is ~1e-5 rad
@@ -183,9 +183,10 @@ TEST(PassivityLevel, CertifiedSisoKnownLevels) {
 TEST(PassivityLevel, CertifiedSisoFindsANarrowResonance) {
   auto G = G_of("1 - (1/1000)*z/(z^2 - 2*(54/100)*(99999/100000)*z + (99999/100000)^2)");
   auto c = passivity_level_certified(G, PassivityKind::isp);
-  ASSERT_TRUE(c.certified) << c.note;
-  ASSERT_LE(c.lower_bound, c.upper_bound);
-  EXPECT_LT(to_real<double>(c.upper_bound - c.lower_bound), 1e-25);  // 30 digits
+  ASSERT_TRUE(c.proven()) << c.note;
+  ASSERT_TRUE(c.enclosure);
+  ASSERT_LE(c.enclosure->lo, c.enclosure->hi);
+  EXPECT_LT(to_real<double>(c.enclosure->hi - c.enclosure->lo), 1e-25);  // 30 digits
   const long double at = re_G(G, c.theta_min);
   // theta_min is a double: |d Re G/d theta| ~ 0 at the minimiser, curvature ~ 1e11 (peak ~60
   // over 1e-5 rad): a theta error of 1e-16 costs < 1e-20; long double evaluation ~1e-17.
@@ -198,13 +199,13 @@ TEST(PassivityLevel, CertifiedSisoFindsANarrowResonance) {
 }
 
 TEST(PassivityLevel, CertifiedSisoRefusals) {
-  EXPECT_EQ(passivity_level_certified(G_of("1/(z - 1)"), PassivityKind::isp).status, "failed");  // pole on the circle
-  EXPECT_EQ(passivity_level_certified(G_of("1/(z - 3/2)"), PassivityKind::isp).status, "failed");  // unstable
+  EXPECT_EQ(passivity_level_certified(G_of("1/(z - 1)"), PassivityKind::isp).status, Status::failed);  // pole on the circle
+  EXPECT_EQ(passivity_level_certified(G_of("1/(z - 3/2)"), PassivityKind::isp).status, Status::failed);  // unstable
   MatrixXd A = MatrixXd::Zero(1, 1), B = MatrixXd::Ones(1, 2), C = MatrixXd::Ones(2, 1), D = MatrixXd::Identity(2, 2);
   EXPECT_THROW(passivity_level_certified(ss<double>(A, B, C, D, rational(1, 100)), PassivityKind::isp), InputError);
   // state space -> exact transfer function: the first-order system of the tests above
   auto s = first_order(0.5, 1.0, 1.0);
   auto c = passivity_level_certified(s, PassivityKind::isp);
-  EXPECT_EQ(c.lower_bound, rational(1, 3)) << c.note;
+  EXPECT_EQ(c.lower_bound.value_or(rational(-1)), rational(1, 3)) << c.note;
 }
 

@@ -382,13 +382,13 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
   if (chance(g, 0.5)) tf.H = tf.H + RF(P(rational(uniform(g, 0, 1000), 10)));  // a feedthrough
   why << "level: G = (" << to_string(tf.H.num(), "z") << ")/(" << to_string(tf.H.den(), "z") << ")\n";
   const auto c = lmi::passivity_level_certified(tf.H, lmi::PassivityKind::isp, 30);
-  if (c.status == "failed") throw NumericalError("certified level failed: " + c.note);
+  if (c.status == Status::failed) throw NumericalError("certified level failed: " + c.note);
   Stopwatch reference_time;
   if (!c.enclosure) {
     why << "  no enclosure\n";
     return false;
   }
-  const Ref lo = ref(c.lower_bound), hi = ref(c.upper_bound);
+  const Ref lo = ref(c.enclosure->lo), hi = ref(c.enclosure->hi);
   const Ref eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));
   auto re_g = [&](const Ref& th) {
     const CRef z(cos(th), sin(th));
@@ -419,10 +419,10 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
   const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(sys.A).eigenvalues();
   if (ev.size() > 0 && ev.cwiseAbs().maxCoeff() < 0.99) {
     const auto l = lmi::passivity_level_lmi(sys, lmi::PassivityKind::isp, 1);
-    if (l.status == "failed") {  // the SDP solver's failure, not a wrong number: counted
+    if (l.status == Status::failed) {  // the SDP solver's failure, not a wrong number: counted
       ++level_lmi_failed;
     } else {
-      const double mid = static_cast<double>((c.lower_bound + c.upper_bound) / 2);
+      const double mid = static_cast<double>((c.enclosure->lo + c.enclosure->hi) / 2);
       const double dev = std::abs(l.level - mid) / std::max(1.0, std::abs(mid));
       ++level_lmi_compared;
       level_lmi_deviation = std::max(level_lmi_deviation, dev);
@@ -505,14 +505,14 @@ bool check_multidof(std::mt19937_64& g, std::ostream& why) {
   if (!multidof::all_hold(multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names))) return true;
   ++multidof_tally.applicable;
   const auto design = multidof::design(sp.problem);
-  if (!design.feasible || !design.certified) return true;
+  if (!design.verdict.holds() || !design.verdict.proven()) return true;
   ++multidof_tally.designed;
   Stopwatch reference_time;
   bool ok = true;
   const auto t5 = multidof::analyze(sp.problem, {}, multidof::AnalysisMode::stability_only);
-  if (t5.verdict == lmi::Feasibility::feasible) ++multidof_tally.t5_feasible;
-  if (t5.verdict == lmi::Feasibility::infeasible && t5.certified)
-    ok = false, why << "  Theorem 6 returned a verified coupling but Theorem 5 is certified infeasible: " << t5.certificate << "\n";
+  if (t5.verdict.holds()) ++multidof_tally.t5_feasible;
+  if (t5.verdict.fails() && t5.verdict.proven())
+    ok = false, why << "  Theorem 6 returned a verified coupling but Theorem 5 is certified infeasible: " << t5.verdict.evidence << "\n";
   sim::LoopSpec spec = sc.loop;
   spec.coupling = design.V;
   sim::SimOptions so;

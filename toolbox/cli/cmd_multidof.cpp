@@ -27,6 +27,7 @@
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
@@ -79,19 +80,21 @@ int run_analyze(const Opts& o) {
   const auto sp = multidof::problem_from_scene(sc);
   const double realisation = since(t0);
   const auto r = multidof::analyze(sp.problem, lmi_options(o));
-  const bool feasible = r.verdict == lmi::Feasibility::feasible;
+  const bool feasible = r.verdict.holds();
+  const bool certified = r.verdict.proven();
+  const char* verdict = lmi::to_string(lmi::feasibility_of(r.verdict.outcome));
   const auto t1 = std::chrono::steady_clock::now();
   const json assume = assumptions(sp);
   const double assumption_seconds = since(t1);
   bool assumptions_hold = true;
   for (const auto& a : assume) assumptions_hold = assumptions_hold && a["holds"].get<bool>();
   // Theorem 5 concludes stability only when the LMIs are certified feasible AND Assumption 1 holds
-  const bool stable = feasible && r.certified && assumptions_hold;
+  const bool stable = feasible && certified && assumptions_hold;
   json j{{"feasible", feasible},
          {"stability_concluded", stable},
-         {"certified", r.certified},
-         {"verdict", lmi::to_string(r.verdict)},
-         {"certificate", r.certificate},
+         {"certified", certified},
+         {"verdict", verdict},
+         {"certificate", r.verdict.evidence},
          {"gamma", r.gamma_sqrt},
          {"x", r.gamma},
          {"q_v", mat(r.Q_V)},
@@ -114,9 +117,9 @@ int run_analyze(const Opts& o) {
   if (o.json) {
     print_json(j);
   } else {
-    std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << lmi::to_string(r.verdict)
-              << (r.certified ? " (certified)" : " (not certified)") << "\n  " << r.certificate << "\n";
-    if (r.certificate.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
+    std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << verdict
+              << (certified ? " (certified)" : " (not certified)") << "\n  " << r.verdict.evidence << "\n";
+    if (r.verdict.evidence.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
     if (feasible) {
       std::cout << "  one feasible point (the SDP solver's): Gamma = sqrt(X): gamma =";
       for (double g : r.gamma_sqrt) std::cout << " " << g;
@@ -131,7 +134,7 @@ int run_analyze(const Opts& o) {
     for (const auto& a : j["assumptions"])
       std::cout << "  [" << (a["holds"].get<bool>() ? "ok" : "FAILS") << "] " << a["name"].get<std::string>() << ": "
                 << a["detail"].get<std::string>() << "\n";
-    if (feasible && r.certified && !assumptions_hold)
+    if (feasible && certified && !assumptions_hold)
       std::cout << "  => the LMIs are feasible, but Assumption 1 fails: Theorem 5 does not conclude stability\n";
   }
   return stable ? exit_ok : exit_property_fails;
@@ -182,23 +185,30 @@ int run_design(const Opts& o) {
   dop.max_iterations = o.iterations;
   dop.lmi = lmi_options(o);
   auto r = multidof::design(sp.problem, dop);
+  // the library's verdict, and the CLI's own (numeric) check: the simulated loop decays
+  bool feasible = r.verdict.holds();
+  const bool certified = feasible && r.verdict.proven();
   if (r.V.D.rows() > 0) {
     const auto sr = simulate_loop(sc, sp.problem, &r.V, o.duration);
     const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
-    r.verification.push_back({"closed loop simulated, velocities -> 0 (scene's devices, operators, inputs)", ok, false, text});
-    r.feasible = r.feasible && ok;
+    r.verification.push_back({"closed loop simulated, velocities -> 0 (scene's devices, operators, inputs)",
+                              Verdict::of(ok, Status::numeric, text)});
+    feasible = feasible && ok;
   }
   json ver = json::array();
   for (const auto& v : r.verification)
-    ver.push_back({{"name", v.name}, {"verdict", v.pass ? "pass" : "fail"}, {"certified", v.certified}, {"detail", v.detail}});
+    ver.push_back({{"name", v.name},
+                   {"verdict", v.verdict.holds() ? "pass" : "fail"},
+                   {"certified", v.verdict.proven()},
+                   {"detail", v.verdict.evidence}});
   const bool hasV = r.V.D.rows() > 0;
-  json j{{"feasible", r.feasible},
-         {"certified", r.certified},
+  json j{{"feasible", feasible},
+         {"certified", certified},
          {"converged", r.converged},
          {"iterations", r.iterations},
          {"trace_gap", r.trace_gap},
-         {"convex_infeasible", r.convex_infeasible},
-         {"convex_certified", r.convex_certified},
+         {"convex_infeasible", r.verdict.fails()},
+         {"convex_certified", r.verdict.fails() && r.verdict.proven()},
          {"A_V", hasV ? mat(multidof::to_double(r.V.A)) : json::array()},
          {"B_V", hasV ? mat(multidof::to_double(r.V.B)) : json::array()},
          {"C_V", hasV ? mat(multidof::to_double(r.V.C)) : json::array()},
@@ -206,22 +216,22 @@ int run_design(const Opts& o) {
          {"gamma", r.gamma_sqrt},
          {"q_v", mat(r.Q_V)},
          {"verification", ver},
-         {"message", r.message},
+         {"message", r.verdict.evidence},
          {"assumptions", assumptions(sp)}};
   if (o.json) {
     print_json(j);
   } else {
-    std::cout << "Theorem 6 design for " << o.scene << ": " << (r.feasible ? "a stabilising V found" : "no verified V")
-              << (r.certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged") << " after "
-              << r.iterations << " iterations. " << r.message << "\n";
+    std::cout << "Theorem 6 design for " << o.scene << ": " << (feasible ? "a stabilising V found" : "no verified V")
+              << (certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged") << " after "
+              << r.iterations << " iterations. " << r.verdict.evidence << "\n";
     if (hasV)
       std::cout << "A_V =\n" << multidof::to_double(r.V.A) << "\nB_V =\n" << multidof::to_double(r.V.B) << "\nC_V =\n"
                 << multidof::to_double(r.V.C) << "\nD_V =\n" << multidof::to_double(r.V.D) << "\n";
     for (const auto& v : r.verification)
-      std::cout << "  [" << (v.pass ? "pass" : "FAIL") << (v.certified ? ", certified" : "") << "] " << v.name << "\n      "
-                << v.detail << "\n";
+      std::cout << "  [" << (v.verdict.holds() ? "pass" : "FAIL") << (v.verdict.proven() ? ", certified" : "") << "] "
+                << v.name << "\n      " << v.verdict.evidence << "\n";
   }
-  return r.feasible ? exit_ok : exit_property_fails;
+  return feasible ? exit_ok : exit_property_fails;
 }
 
 // Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27)
@@ -231,7 +241,7 @@ void write_velocity_data(const std::string& scene_name, const std::string& stem,
   const auto sc = scene::load_scene(file);
   const auto sp = multidof::problem_from_scene(sc);
   const auto d = multidof::design(sp.problem, multidof::DesignOptions{});
-  if (d.V.D.rows() == 0) throw NumericalError(file + ": Theorem 6 found no coupling to simulate (" + d.message + ")");
+  if (d.V.D.rows() == 0) throw NumericalError(file + ": Theorem 6 found no coupling to simulate (" + d.verdict.evidence + ")");
   std::vector<std::pair<std::string, const StateSpace<rational>*>> runs{{"none", nullptr}, {"designed", &d.V}};
   const auto V27 = multidof::example::controller27();
   if (sp.problem.structure.m() == 2) runs.emplace_back("paper27", &V27);

@@ -61,15 +61,9 @@ StateSpace<double> read_ss(const std::string& file) {
 
 nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-int run(const Opts& o) {
-  if (o.kind != "osp" && o.kind != "isp") throw InputError("--kind: expected osp or isp, got '" + o.kind + "'");
-  const auto backend = lmi::parse_backend(o.backend);
-  if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
-  if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
-  if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
-  if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
+// The system of --H (exact SISO G kept in `G`) or --ss, which must be Schur stable.
+StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rational>>& G) {
   StateSpace<double> sys;
-  std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
   if (!o.ss.empty()) {
     if (!o.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
     sys = read_ss(o.ss);
@@ -98,9 +92,27 @@ int run(const Opts& o) {
         throw InputError(os.str());
       }
   }
-  const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
+  return sys;
+}
+
+// The three levels (LMI l, frequency grid f, certified frequency c) and which is the result.
+struct Levels {
   lmi::PassivityLevel l, f, c;
-  l.status = f.status = c.status = "failed";
+  bool lmi_ok = false, freq_ok = false, cert_ok = false;
+  bool cert_is_level = false;  ///< c is the level (ISP, or OSP with delta* > 0)
+  bool only_bound = false;     ///< the result is c as an upper bound (OSP delta* <= 0, no LMI level)
+  bool any = false;            ///< some method gave a level
+  enum class Main { lmi, freq, cert } which = Main::freq;
+  std::string note;
+  const lmi::PassivityLevel& main() const { return which == Main::cert ? c : which == Main::lmi ? l : f; }
+};
+
+Levels compute_levels(const Opts& o, lmi::Backend backend, const StateSpace<double>& sys,
+                      const std::optional<RationalFunction<rational>>& G) {
+  const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
+  Levels v;
+  auto &l = v.l, &f = v.f, &c = v.c;
+  l.status = f.status = c.status = Status::failed;
   if (sys.states() == 0) l.note = f.note = c.note = "static gain: no state";
   if (sys.states() > 0) {
     l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
@@ -109,99 +121,127 @@ int run(const Opts& o) {
       c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
     else c.note = "certified frequency path: SISO only";
   }
-  const bool lmi_ok = l.status != "failed", freq_ok = f.status != "failed", cert_ok = c.status != "failed";
+  v.lmi_ok = l.status != Status::failed, v.freq_ok = f.status != Status::failed, v.cert_ok = c.status != Status::failed;
   // The certified SISO value is the level of Definition 2 for ISP, and for OSP when delta* > 0
   // (passivity_level.hpp); an OSP delta* <= 0 is an upper bound on Lemma 1's level only.
-  const bool cert_is_level = cert_ok && (kind == lmi::PassivityKind::isp || c.level > 0);
+  v.cert_is_level = v.cert_ok && (kind == lmi::PassivityKind::isp || c.level > 0);
   // main result: the certified SISO level (an enclosure of the level itself), else the LMI
   // (a numeric level with a certified lower bound), else the frequency grid (numeric)
-  const auto& main = cert_is_level ? c : lmi_ok ? l : cert_ok ? c : f;
-  const bool only_bound = &main == &c && !cert_is_level;  // OSP delta* <= 0 and no LMI level
-  std::string note = main.note;
-  auto add = [&](const std::string& what, const std::string& n) {
-    if (!n.empty() && &n != &main.note) note += (note.empty() ? "" : "; ") + what + n;
+  using M = Levels::Main;
+  v.which = v.cert_is_level ? M::cert : v.lmi_ok ? M::lmi : v.cert_ok ? M::cert : M::freq;
+  v.only_bound = v.which == M::cert && !v.cert_is_level;  // OSP delta* <= 0 and no LMI level
+  v.note = v.main().note;
+  auto add = [&](const std::string& what, const std::string& n, M from) {
+    if (!n.empty() && v.which != from) v.note += (v.note.empty() ? "" : "; ") + what + n;
   };
-  if (sys.inputs() == 1) add("certified frequency path: ", c.note);
-  if (!lmi_ok) add("LMI: ", l.note);
+  if (sys.inputs() == 1) add("certified frequency path: ", c.note, M::cert);
+  if (!v.lmi_ok) add("LMI: ", l.note, M::lmi);
   // compared only where the frequency value is the level (ISP; OSP > 0): an OSP value <= 0 is
   // an upper bound that the LMI level may lie below
-  const double ref = cert_ok ? c.level : f.level;
+  const double ref = v.cert_ok ? c.level : f.level;
   const bool comparable = kind == lmi::PassivityKind::isp || ref > 0;
-  if (lmi_ok && (cert_ok || freq_ok) && comparable && std::isfinite(ref) &&
+  if (v.lmi_ok && (v.cert_ok || v.freq_ok) && comparable && std::isfinite(ref) &&
       std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
-    note += (note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
-  const bool any = cert_ok || lmi_ok || freq_ok;
-  if (o.json) {
-    auto dec = [&](bool ok, const rational& q) { return ok ? nlohmann::json(to_decimal(q, 17)) : nlohmann::json(nullptr); };
-    nlohmann::json j{{"kind", o.kind},
-                     {"level", any ? (std::isfinite(main.level) ? nlohmann::json(main.level) : nlohmann::json(main.value))
-                                   : nlohmann::json(nullptr)},
-                     {"method", main.method},
-                     {"status", !any ? "failed" : only_bound ? "upper_bound" : main.status},
-                     {"certified", main.certified && !only_bound},
-                     {"lower_bound", dec(main.certified && !only_bound && std::isfinite(main.level), main.lower_bound)},
-                     {"upper_bound", dec(main.enclosure, main.upper_bound)},
-                     {"value", &main == &c ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
-                     {"certified_frequency",
-                      {{"level", cert_ok ? (std::isfinite(c.level) ? nlohmann::json(c.level) : nlohmann::json(c.value))
-                                         : nlohmann::json(nullptr)},
-                       {"value", c.value},
-                       {"status", c.status},
-                       {"is_level", cert_is_level},
-                       {"lower_bound", dec(c.enclosure, c.lower_bound)},
-                       {"upper_bound", dec(c.enclosure, c.upper_bound)},
-                       {"theta", json_or_null(cert_ok, c.theta_min)},
-                       {"note", c.note}}},
-                     {"lmi",
-                      {{"level", json_or_null(lmi_ok, l.level)},
-                       {"method", l.method},
-                       {"status", l.status},
-                       {"certified", l.certified},
-                       {"lower_bound", dec(l.certified, l.lower_bound)},
-                       {"note", l.note}}},
-                     {"frequency",
-                      {{"level", json_or_null(freq_ok, f.level)},
-                       {"theta", json_or_null(freq_ok, f.theta_min)},
-                       {"status", freq_ok ? "numeric" : "failed"},
-                       {"note", f.note}}},
-                     {"theta", json_or_null(cert_ok || freq_ok, cert_ok ? c.theta_min : f.theta_min)},
-                     {"note", note}};
-    print_json(j);
-  } else {
-    std::cout << o.kind << " level";
-    if (&main == &c) {
-      std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << c.status << (only_bound ? " upper bound" : "")
-                << ", " << c.method << "]\n";
-      if (c.enclosure && c.lower_bound != c.upper_bound) {
-        const std::string lo = passivity::decimal_outward(c.lower_bound, o.digits, -1);
-        const std::string hi = passivity::decimal_outward(c.upper_bound, o.digits, +1);
-        if (lo != hi) std::cout << "  enclosure: [" << lo << ", " << hi << "]\n";
-      }
-      std::cout.precision(12);
-      std::cout << "  at theta = " << c.theta_min << " (omega = theta/T)\n";
-    } else if (any) {
-      std::cout.precision(12);
-      std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
-    } else {
-      std::cout << ": no method produced a level\n";
+    v.note += (v.note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
+  v.any = v.cert_ok || v.lmi_ok || v.freq_ok;
+  return v;
+}
+
+void report_json(const Opts& o, const Levels& v) {
+  const auto &main = v.main(), &l = v.l, &f = v.f, &c = v.c;
+  const bool any = v.any, only_bound = v.only_bound, cert_ok = v.cert_ok, lmi_ok = v.lmi_ok, freq_ok = v.freq_ok;
+  const bool cert_is_level = v.cert_is_level;
+  const std::string& note = v.note;
+  auto dec = [&](const std::optional<rational>& q) { return q ? nlohmann::json(to_decimal(*q, 17)) : nlohmann::json(nullptr); };
+  auto lo = [](const lmi::PassivityLevel& p) { return p.enclosure ? std::optional<rational>(p.enclosure->lo) : std::nullopt; };
+  auto hi = [](const lmi::PassivityLevel& p) { return p.enclosure ? std::optional<rational>(p.enclosure->hi) : std::nullopt; };
+  nlohmann::json j{{"kind", o.kind},
+                   {"level", any ? (std::isfinite(main.level) ? nlohmann::json(main.level) : nlohmann::json(main.value))
+                                 : nlohmann::json(nullptr)},
+                   {"method", main.method},
+                   {"status", !any ? "failed" : only_bound ? "upper_bound" : to_string(main.status)},
+                   {"certified", main.proven() && !only_bound},
+                   {"lower_bound", dec(!only_bound && std::isfinite(main.level) ? main.lower_bound : std::nullopt)},
+                   {"upper_bound", dec(hi(main))},
+                   {"value", &main == &c ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
+                   {"certified_frequency",
+                    {{"level", cert_ok ? (std::isfinite(c.level) ? nlohmann::json(c.level) : nlohmann::json(c.value))
+                                       : nlohmann::json(nullptr)},
+                     {"value", c.value},
+                     {"status", to_string(c.status)},
+                     {"is_level", cert_is_level},
+                     {"lower_bound", dec(lo(c))},
+                     {"upper_bound", dec(hi(c))},
+                     {"theta", json_or_null(cert_ok, c.theta_min)},
+                     {"note", c.note}}},
+                   {"lmi",
+                    {{"level", json_or_null(lmi_ok, l.level)},
+                     {"method", l.method},
+                     {"status", to_string(l.status)},
+                     {"certified", l.proven()},
+                     {"lower_bound", dec(l.lower_bound)},
+                     {"note", l.note}}},
+                   {"frequency",
+                    {{"level", json_or_null(freq_ok, f.level)},
+                     {"theta", json_or_null(freq_ok, f.theta_min)},
+                     {"status", freq_ok ? "numeric" : "failed"},
+                     {"note", f.note}}},
+                   {"theta", json_or_null(cert_ok || freq_ok, cert_ok ? c.theta_min : f.theta_min)},
+                   {"note", note}};
+  print_json(j);
+}
+
+void report_text(const Opts& o, const Levels& v) {
+  const auto &main = v.main(), &l = v.l, &f = v.f, &c = v.c;
+  const bool any = v.any, only_bound = v.only_bound, cert_ok = v.cert_ok, lmi_ok = v.lmi_ok, freq_ok = v.freq_ok;
+  const std::string& note = v.note;
+  std::cout << o.kind << " level";
+  if (&main == &c) {
+    std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << to_string(c.status) << (only_bound ? " upper bound" : "")
+              << ", " << c.method << "]\n";
+    if (c.enclosure && c.enclosure->lo != c.enclosure->hi) {
+      const std::string lo = passivity::decimal_outward(c.enclosure->lo, o.digits, -1);
+      const std::string hi = passivity::decimal_outward(c.enclosure->hi, o.digits, +1);
+      if (lo != hi) std::cout << "  enclosure: [" << lo << ", " << hi << "]\n";
     }
     std::cout.precision(12);
-    if (lmi_ok) {
-      std::cout << "  LMI: " << l.level << "   [numeric, " << l.method << "]\n";
-      if (l.certified)
-        std::cout << "  LMI certificate: " << o.kind << " level >= " << to_decimal(l.lower_bound, 17)
-                  << (l.lower_bound > 0 ? " > 0: the system is " + o.kind
-                                        : " (not positive: the system is not shown " + o.kind + ")")
-                  << "   [exact LDL^T check of the rounded LMI solution]\n";
-    }
-    if (cert_ok && &main != &c)
-      std::cout << "  certified frequency value: " << c.value << " at theta = " << c.theta_min << "   [" << c.status
-                << ", not the level: see note]\n";
-    if (freq_ok) std::cout << "  frequency grid: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
-    if (!note.empty()) std::cout << "  note: " << note << "\n";
-    if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";
+    std::cout << "  at theta = " << c.theta_min << " (omega = theta/T)\n";
+  } else if (any) {
+    std::cout.precision(12);
+    std::cout << " = " << main.level << "   [numeric, " << main.method << "]\n";
+  } else {
+    std::cout << ": no method produced a level\n";
   }
-  return any ? exit_ok : exit_numerical;
+  std::cout.precision(12);
+  if (lmi_ok) {
+    std::cout << "  LMI: " << l.level << "   [numeric, " << l.method << "]\n";
+    if (l.lower_bound)
+      std::cout << "  LMI certificate: " << o.kind << " level >= " << to_decimal(*l.lower_bound, 17)
+                << (*l.lower_bound > 0 ? " > 0: the system is " + o.kind
+                                      : " (not positive: the system is not shown " + o.kind + ")")
+                << "   [exact LDL^T check of the rounded LMI solution]\n";
+  }
+  if (cert_ok && &main != &c)
+    std::cout << "  certified frequency value: " << c.value << " at theta = " << c.theta_min << "   [" << to_string(c.status)
+              << ", not the level: see note]\n";
+  if (freq_ok) std::cout << "  frequency grid: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
+  if (!note.empty()) std::cout << "  note: " << note << "\n";
+  if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";
+}
+
+int run(const Opts& o) {
+  if (o.kind != "osp" && o.kind != "isp") throw InputError("--kind: expected osp or isp, got '" + o.kind + "'");
+  const auto backend = lmi::parse_backend(o.backend);
+  if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
+  if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
+  if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
+  if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
+  std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
+  const StateSpace<double> sys = read_model(o, G);
+  const Levels v = compute_levels(o, backend, sys, G);
+  if (o.json) report_json(o, v);
+  else report_text(o, v);
+  return v.any ? exit_ok : exit_numerical;
 }
 
 const Register reg({"passivity-level",

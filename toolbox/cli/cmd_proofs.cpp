@@ -57,7 +57,7 @@ int run(const Opts& o) {
                    {"paper", c.paper},
                    {"equation", c.equation},
                    {"statement", c.statement},
-                   {"method", proofs::to_string(c.method)},
+                   {"method", to_string(c.status)},
                    {"holds", c.holds},
                    {"evidence", c.evidence}});
     print_json(j);

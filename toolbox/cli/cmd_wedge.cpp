@@ -22,7 +22,7 @@ struct Opts {
   bool json = false;
 };
 
-std::string dec(const Result<rational>& r, int digits) {
+std::string dec(const Certified<rational>& r, int digits) {
   if (r.enclosure) {
     if (auto s = common_decimal(r.enclosure->lo, r.enclosure->hi, digits)) return *s;
   }

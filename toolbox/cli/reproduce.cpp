@@ -37,7 +37,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
       p.run(check);
     } catch (const std::exception& e) {
       check.claim(std::string(p.paper) + "." + p.id + ".completes", "-",
-                  std::string("proof ran to the end: ") + p.title, proofs::Method::exact, false,
+                  std::string("proof ran to the end: ") + p.title, Status::exact, false,
                   std::string("threw: ") + e.what());
     }
     double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
@@ -46,7 +46,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
                 << check.results().size() << " claims, " << dt << " s\n";
       for (const auto& c : check.results())
         std::cout << (c.holds ? "  holds  " : "  FAILS  ") << c.id << "  " << c.equation << "  ["
-                  << proofs::to_string(c.method) << "]  " << c.evidence << "\n";
+                  << to_string(c.status) << "]  " << c.evidence << "\n";
     }
     all.insert(all.end(), check.results().begin(), check.results().end());
   }
@@ -117,7 +117,7 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
       for (const auto& c : in.claims)
         if (c.paper == paper)
           md << "| " << code(c.id) << " | " << cell(c.equation) << " | " << cell(c.statement) << " | "
-             << proofs::to_string(c.method) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
+             << to_string(c.status) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
              << cell(c.evidence) << " |\n";
     }
     if (any_of_paper(in.scenes, paper)) {
@@ -164,7 +164,7 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
       for (const auto& c : in.claims)
         if (c.paper == paper)
           h << "<tr><td><code>" << html(c.id) << "</code></td><td>" << html(c.equation) << "</td><td>"
-            << html(c.statement) << "</td><td>" << proofs::to_string(c.method) << "</td><td class=\""
+            << html(c.statement) << "</td><td>" << to_string(c.status) << "</td><td class=\""
             << (c.holds ? "holds\">holds" : "fails\">FAILS") << "</td><td>" << html(c.evidence) << "</td></tr>\n";
       h << "</table>\n";
     }

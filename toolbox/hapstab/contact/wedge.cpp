@@ -381,9 +381,9 @@ CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>
   MinOfMax mm = min_of_max(plus1, digits);
   const rational mid = (mm.value.lo + mm.value.hi) / 2;
   if (mm.value.lo == mm.value.hi)
-    r.margin = Result<rational>::exact_value(mm.value.lo, "exact value at an end point");
+    r.margin = Certified<rational>::exact_value(mm.value.lo, "exact value at an end point");
   else
-    r.margin = Result<rational>::certified_value(mid, mm.value, "exact root isolation + MPFI enclosure");
+    r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + MPFI enclosure");
   if (!mm.decided) r.margin.note = "enclosure too wide to decide every requested digit";
   r.theta_at_min = mm.at_infinity ? M_PI : theta_of_u((mm.u.lo + mm.u.hi) / 2);
   r.gain_infinite = max_positive(sides, false);
@@ -394,11 +394,11 @@ CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>
       Enclosure<rational> k{rational(-1) / glo, rational(-1) / ghi};
       const rational km = rational(-1) / (mid - 1);
       if (k.lo == k.hi)
-        r.max_gain = Result<rational>::exact_value(k.lo, "-1/min_theta(left side)");
+        r.max_gain = Certified<rational>::exact_value(k.lo, "-1/min_theta(left side)");
       else
-        r.max_gain = Result<rational>::certified_value(km, k, "-1/min_theta(left side), certified");
+        r.max_gain = Certified<rational>::certified_value(km, k, "-1/min_theta(left side), certified");
     } else {
-      r.max_gain = Result<rational>::numeric_value(rational(-1) / (mid - 1), "-1/min: enclosure touches 0");
+      r.max_gain = Certified<rational>::numeric_value(rational(-1) / (mid - 1), "-1/min: enclosure touches 0");
       r.max_gain.note = "min of the left side is negative (exact) but within the enclosure width of 0";
     }
   }

@@ -88,10 +88,10 @@ struct CriterionReport {
   std::string name;                 ///< "wedge (25)" or "Tsypkin (21)"
   bool evaluated = false;           ///< false when H has a pole on the unit circle
   bool holds = false;               ///< exact: left side + 1 > 0 for every theta in [0, pi]
-  Result<rational> margin;          ///< min over theta of left side + 1 (certified enclosure)
+  Certified<rational> margin;          ///< min over theta of left side + 1 (certified enclosure)
   double theta_at_min = 0;          ///< radians (numeric, from the certified enclosure of u*)
   bool gain_infinite = false;       ///< exact: k*H satisfies the criterion for every k > 0
-  Result<rational> max_gain;        ///< k* when finite (certified enclosure)
+  Certified<rational> max_gain;        ///< k* when finite (certified enclosure)
 };
 
 struct ContactAnalysis {

@@ -9,7 +9,7 @@
 #include <complex>
 #include <cstdio>
 
-#include "hapstab/lmi/solve.hpp"
+#include "hapstab/lmi/certify.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/passivity/bound.hpp"
@@ -99,19 +99,39 @@ Expr lemma2_matrix(const StateSpace<double>& s, const Expr& Q, const Expr* mu, d
   return S - R * Q * R.transpose();
 }
 
-rational exact_scalar(const Result& r, const MatrixVariable& v) { return r.GetExactSolution(v)(0, 0); }
+// Solves a level program and reads the level from its scalar variable L: level = L, or 1/L
+// when `reciprocal` (Lemma 2's mu = 1/delta). An exactly certified point proves lower_bound
+// (for 1/L only when L > 0). `hint` explains a failure.
+PassivityLevel solve_level(const Program& prog, Backend backend, int lemma, const MatrixVariable& L, bool reciprocal,
+                           const std::string& hint = "") {
+  Options opt;
+  opt.backend = backend;
+  const CertifiedSolve cs = certify_lmi(prog, opt);
+  const Result& r = cs.result;
+  PassivityLevel out;
+  out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
+  if (!r.is_success()) {
+    out.status = Status::failed;
+    out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + hint + ": " + r.detail;
+    return out;
+  }
+  const double x = r.GetSolution(L)(0, 0);
+  out.level = reciprocal ? 1.0 / x : x;
+  if (cs.verdict.holds() && cs.verdict.proven()) {
+    const rational q = cs.point(L)(0, 0);
+    if (!reciprocal) out.lower_bound = q;
+    else if (q > 0) out.lower_bound = 1 / q;
+  }
+  return out;
+}
 
 }  // namespace
 
 PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma, Backend backend) {
   check_state_space(sys);
   if (lemma != 1 && lemma != 2) throw InputError("passivity level: lemma must be 1 or 2");
-  PassivityLevel out;
-  out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + to_string(backend) + ")";
   const int n = static_cast<int>(sys.states());
   Program prog;
-  Options opt;
-  opt.backend = backend;
   if (lemma == 1) {
     auto P = prog.NewSymmetric(n, "P");
     auto L = prog.NewScalar(kind == PassivityKind::osp ? "delta" : "phi");
@@ -119,19 +139,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     prog.AddLmi("P > 0", Expr(P));
     prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
     prog.SetMinimize(-Lx);
-    Result r = Solve(prog, opt);
-    out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
-    if (!r.is_success()) {
-      out.status = "failed";
-      out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
-      return out;
-    }
-    out.level = r.GetSolution(L)(0, 0);
-    if (r.certified()) {
-      out.certified = true;
-      out.lower_bound = exact_scalar(r, L);
-    }
-    return out;
+    return solve_level(prog, backend, lemma, L, false);
   }
   // Lemma 2
   auto Q = prog.NewSymmetric(n, "Q");
@@ -141,39 +149,13 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     Expr mx(mu);
     prog.AddLmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
     prog.SetMinimize(mx);
-    Result r = Solve(prog, opt);
-    out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
-    if (!r.is_success()) {
-      out.status = "failed";
-      out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) +
-                 " (Lemma 2 needs Delta > 0: the OSP level may be <= 0): " + r.detail;
-      return out;
-    }
-    const double m = r.GetSolution(mu)(0, 0);
-    out.level = 1.0 / m;
-    if (r.certified() && exact_scalar(r, mu) > 0) {
-      out.certified = true;
-      out.lower_bound = 1 / exact_scalar(r, mu);
-    }
-    return out;
+    return solve_level(prog, backend, lemma, mu, true, " (Lemma 2 needs Delta > 0: the OSP level may be <= 0)");
   }
   auto phi = prog.NewScalar("phi");
   Expr px(phi);
   prog.AddLmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
   prog.SetMinimize(-px);
-  Result r = Solve(prog, opt);
-  out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
-  if (!r.is_success()) {
-    out.status = "failed";
-    out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + ": " + r.detail;
-    return out;
-  }
-  out.level = r.GetSolution(phi)(0, 0);
-  if (r.certified()) {
-    out.certified = true;
-    out.lower_bound = exact_scalar(r, phi);
-  }
-  return out;
+  return solve_level(prog, backend, lemma, phi, false);
 }
 
 double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo, Backend backend) {
@@ -244,7 +226,7 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
   out.method = "frequency domain (" + std::to_string(grid) + "-point grid + golden-section refinement)";
   const double rho = spectral_radius(sys.A);
   if (!(rho < 1)) {
-    out.status = "failed";
+    out.status = Status::failed;
     out.note = "A is not Schur stable (spectral radius " + std::to_string(rho) +
                "): the frequency-domain level is not a passivity level";
     return out;
@@ -315,7 +297,7 @@ PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind
     out.note = buf;
   }
   if (!std::isfinite(best)) {
-    out.status = "failed";
+    out.status = Status::failed;
     out.note = "G vanishes on the whole grid: the OSP level is unbounded";
   }
   return out;
@@ -325,7 +307,7 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
   PassivityLevel out;
   out.method = "frequency domain, certified: -b* of (z - 1)" + std::string(kind == PassivityKind::isp ? " G" : "/G") +
                " at T = 1 (exact objective in cos theta, Descartes isolation, MPFI)";
-  out.status = "failed";
+  out.status = Status::failed;
   if (G.num().is_zero()) {
     out.note = "G = 0";
     return out;
@@ -358,19 +340,17 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
     out.note = e.what();
     return out;
   }
-  out.status = "certified";
-  out.certified = true;
-  out.enclosure = !b.infinite;
+  out.status = Status::certified;
   if (b.infinite) {
     out.level = -INFINITY;
     out.value = "-inf";
     out.note = "Re W -> -inf at " + b.where;
   } else {
+    out.enclosure = Enclosure<rational>{-b.hi, -b.lo};
     out.lower_bound = -b.hi;
-    out.upper_bound = -b.lo;
     out.level = -b.value_double() + 0.0;  // no -0
     out.value = b.value.empty() || b.value == "0" ? b.value : (b.value[0] == '-' ? b.value.substr(1) : "-" + b.value);
-    if (b.status == Status::exact) out.status = "exact";
+    if (b.status == Status::exact) out.status = Status::exact;
   }
   out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
   if (kind == PassivityKind::osp) {

@@ -31,17 +31,20 @@
 // (getPassiveIndex: frequency-domain indices, documented as invalid with zeros on the
 // stability boundary): docs/passivity-levels.md.
 //
-// LMI results, when the exact check passes (`certified`): the rounded (P, level_q) satisfies
-// the LMIs of the lemma used, exactly (LDL^T), proving that the system IS level_q-OSP/ISP (a
-// certified lower bound level_q <= sup). The reported `level` itself is numeric.
+// LMI results, when the exact check passes (`lower_bound` set): the rounded (P, level_q)
+// satisfies the LMIs of the lemma used, exactly (LDL^T), proving that the system IS
+// level_q-OSP/ISP (a certified lower bound level_q <= sup). The reported `level` itself is
+// numeric. The statuses are hapstab::Status (numeric/result.hpp).
 //
 // Implements: paper 000 Definition 2, Lemma 1, Lemma 2, (2).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/lti/state_space.hpp"
+#include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/rational_function.hpp"
 
@@ -53,14 +56,19 @@ const char* to_string(PassivityKind k);
 struct PassivityLevel {
   double level = 0;             ///< numeric value of the level (sup)
   std::string method;           ///< "Lemma 1 LMI (DSDP)", "frequency grid+golden", ...
-  std::string status = "numeric";  ///< numeric | failed
-  bool certified = false;       ///< true: lower_bound is proven exactly
-  rational lower_bound;         ///< exact: the system is lower_bound-OSP/ISP (when certified)
-  rational upper_bound;         ///< certified frequency method: the level is in [lower_bound, upper_bound]
-  bool enclosure = false;       ///< true when [lower_bound, upper_bound] encloses the level itself
+  /// numeric (LMI, frequency grid); exact | certified (certified frequency method: the
+  /// enclosure, or the level -inf); failed (reason in `note`)
+  Status status = Status::numeric;
+  /// Proven exactly: LMI, the system is lower_bound-OSP/ISP; certified frequency method, the
+  /// enclosure's lower end.
+  std::optional<rational> lower_bound;
+  std::optional<Enclosure<rational>> enclosure;  ///< certified frequency method: the level is in [lo, hi]
   std::string value;            ///< certified frequency method: the level to `digits` digits ("-inf")
   double theta_min = -1;        ///< frequency methods: the minimising theta in [0, pi]
   std::string note;             ///< caveats, failure reasons
+
+  /// Something is proven: a lower bound, or the certified frequency method's level.
+  bool proven() const { return lower_bound || status == Status::exact || status == Status::certified; }
 };
 
 /// Lemma 1 (lemma = 1) or Lemma 2 (lemma = 2) LMI. Requires a discrete, square system.

@@ -5,7 +5,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <algorithm>
 #include <sstream>
 
 #include "hapstab/multidof/detail.hpp"
@@ -13,11 +12,7 @@
 
 namespace hapstab::multidof {
 
-using lmi::Expr;
-using lmi::MatrixVariable;
-using lmi::Program;
-using lmi::Strictness;
-using Eigen::MatrixXd;
+using namespace detail;
 
 Eigen::MatrixXd to_double(const MatQ& M) {
   MatrixXd D(M.rows(), M.cols());
@@ -214,11 +209,8 @@ void add_condition14(Program& prog, const Problem& pb, const EnvVars& ev, const 
               Strictness::strict);
 }
 
-ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev) {
-  auto get = [&](const MatrixVariable& v) -> MatQ {
-    if (r.certified()) return r.GetExactSolution(v);
-    return lmi::to_rational(r.GetSolution(v));
-  };
+ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev) {
+  auto get = [&](const MatrixVariable& v) { return cs.point(v); };
   ExactEnv x;
   const int m = ev.X.rows();
   x.X = MatQ::Zero(m, m);
@@ -447,16 +439,7 @@ bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const s
   return true;
 }
 
-std::string verdict_text(const lmi::Result& r) {
-  std::ostringstream o;
-  o << r.solver << ": " << lmi::to_string(r.verdict) << ", certificate " << lmi::to_string(r.certificate)
-    << ", margin " << r.margin << ". " << r.detail;
-  return o.str();
-}
-
 }  // namespace detail
-
-using namespace detail;
 
 namespace {
 // Scales an exact Theorem 5 point so that min g_i = 1 (the LMIs are homogeneous in
@@ -466,14 +449,139 @@ rational normaliser(const MatQ& X) {
   for (Eigen::Index i = 1; i < X.rows(); ++i) mn = std::min(mn, X(i, i));
   return mn > 1 ? rational(1) / mn : rational(1);
 }
-}  // namespace
 
-lmi::Result timed_solve(const Program& prog, const lmi::Options& opt, double& seconds) {
-  const auto t0 = std::chrono::steady_clock::now();
-  lmi::Result r = lmi::Solve(prog, opt);
-  seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+// The solver's point of (16) -- environment side and Q_V -- in exact rationals, scaled by
+// normaliser (min g_i = 1).
+struct ScaledPoint {
+  ExactEnv env;
+  MatQ QV;
+  rational scale;
+};
+ScaledPoint scaled_point(const lmi::CertifiedSolve& cs, const EnvVars& ev, const MatrixVariable& QV) {
+  ScaledPoint p{exact_env(cs, ev), cs.point(QV), rational(1)};
+  p.scale = normaliser(p.env.X);
+  p.env.X *= p.scale;
+  p.env.QE *= p.scale;
+  p.env.P11 *= p.scale;
+  for (auto& t : p.env.theta) t *= p.scale;
+  p.QV *= p.scale;
+  return p;
 }
+
+// The verdict of (16) before any point is re-checked: infeasible with Solve's exact Farkas
+// certificate (evidence `farkas`) or numerically ("numeric only"); otherwise the solver's
+// outcome, numeric, no evidence yet.
+Verdict unchecked_verdict(const lmi::CertifiedSolve& cs, const std::string& farkas) {
+  if (cs.verdict.fails()) return {Outcome::fails, cs.verdict.status, cs.verdict.proven() ? farkas : "numeric only"};
+  return {cs.verdict.outcome, Status::numeric, ""};
+}
+
+// The reported feasible point: X, Q_E, Q_V, Gamma and the coupling requirement delta_V.
+void store_point(AnalysisResult& res, const Problem& pb, const MatQ& X, const MatQ& QE, const MatQ& QV) {
+  res.X = to_double(X);
+  res.Q_E = to_double(QE);
+  res.Q_V = to_double(QV);
+  res.gamma_sqrt = gamma_sqrt(pb, res.X);
+  for (double g : res.gamma_sqrt) res.gamma.push_back(g * g);
+  res.delta_V = gamma_inv_scale(res.Q_V, res.X);
+}
+
+// (16) in (P, X, Q_E, Q_V): the environment side, Q_V > 0 and the scaled (14).
+void pose_16(Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc, EnvVars& ev,
+             MatrixVariable& QV) {
+  ev = add_environment(prog, pb, sp, fc);
+  QV = pb.qv_block_diagonal ? prog.NewBlockDiagonal(pb.structure.operator_sizes(), "Q_V")
+                            : prog.NewSymmetric(pb.structure.m(), "Q_V");
+  prog.AddLmi("Q_V > 0", Expr(QV), Strictness::strict);
+  add_condition14(prog, pb, ev, Expr(QV));
+}
+
+// Stability-only mode (analysis.hpp): Q_E := Delta_D X eliminated; only P11, X (theta) remain.
+void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt, AnalysisResult& res) {
+  const int m = pb.structure.m();
+  Program prog;
+  const EnvVars ev = add_environment(prog, pb, sp, res.facial, true);
+  prog.SetMarginObjective(1.0);
+  const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
+  res.sdp_seconds += cs.seconds;
+  res.margin = cs.margin();
+  res.solver_detail = cs.solver_text();
+  res.verdict = unchecked_verdict(cs, "exact Farkas certificate of the posed (reduced) LMI with Q_E = Delta_D X "
+                                      "(infeasible there implies (16) infeasible)");
+  if (cs.verdict.fails() || !cs.has_point()) return;
+  // mu: smallest eigenvalue of the reduced first LMI at the solver's point (original scale)
+  double mu = INFINITY;
+  for (size_t i = 0; i < prog.lmis().size(); ++i)
+    if (prog.lmis()[i].name.rfind("(16) first LMI", 0) == 0) mu = std::min(mu, cs.result.min_eigenvalue[i]);
+  ExactEnv x = exact_env(cs, ev);
+  const rational s = normaliser(x.X);
+  x.X *= s;
+  x.P11 *= s;
+  const MatQ DX = pb.structure.delta_D() * x.X;
+  std::string why = "the first LMI with Q_E = Delta_D X has no margin at the solver's point";
+  bool ok = false;
+  MatQ QV;
+  for (double f : {0.5, 0.0625}) {
+    if (!(mu > 0)) break;
+    const rational eps = lmi::round_dyadic(f * mu * to_real<double>(s), 20);
+    if (!(eps > 0)) break;
+    x.QE = DX - eps * MatQ::Identity(m, m);
+    QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+    ok = exact_recheck(pb, sp, x, QV, why);
+    if (ok) break;
+  }
+  if (ok && cs.margin() > 0)  // the exact check is the proof
+    why += "; Q_E = Delta_D X - eps I and Q_V = Q_E + Q_E^2/eps + eps I constructed exactly (stability-only mode)";
+  res.verdict = cs.recheck(ok, why);
+  if (ok) store_point(res, pb, x.X, x.QE, QV);
+}
+
+// Full mode: (16) with margin, its point re-checked exactly on the rational data (15).
+void analyze_margin(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt, AnalysisResult& res) {
+  Program prog;
+  EnvVars ev;
+  MatrixVariable QV;
+  pose_16(prog, pb, sp, res.facial, ev, QV);
+  prog.SetMarginObjective(1.0);
+  const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
+  res.sdp_seconds += cs.seconds;
+  res.margin = cs.margin();
+  res.solver_detail = cs.solver_text();
+  res.verdict = unchecked_verdict(cs, "exact Farkas certificate of the posed (reduced) LMIs");
+  if (cs.verdict.fails() || !cs.has_point()) return;
+  const ScaledPoint p = scaled_point(cs, ev, QV);
+  std::string why;
+  const bool ok = exact_recheck(pb, sp, p.env, p.QV, why);
+  res.verdict = cs.recheck(ok, why);
+  store_point(res, pb, p.env.X, p.env.QE, p.QV);
+}
+
+// The least dissipative coupling: minimise t with Q_V <= t I subject to (16).
+void least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt, AnalysisResult& res) {
+  const int m = pb.structure.m();
+  Program prog;
+  EnvVars ev;
+  MatrixVariable QV;
+  pose_16(prog, pb, sp, res.facial, ev, QV);
+  const MatrixVariable t = prog.NewScalar("t");
+  prog.AddLmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
+  prog.SetMinimize(Expr(t));
+  const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
+  res.sdp_seconds += cs.seconds;
+  if (cs.result.status != lmi::SolveStatus::optimal || !cs.has_point()) return;
+  const ScaledPoint p = scaled_point(cs, ev, QV);
+  std::string why;
+  res.min_found = true;
+  res.min_certified = exact_recheck(pb, sp, p.env, p.QV, why);
+  res.Q_V_min = to_double(p.QV);
+  const MatrixXd X = to_double(p.env.X);
+  res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);
+  res.gamma_sqrt_min = gamma_sqrt(pb, X);
+  Eigen::SelfAdjointEigenSolver<MatrixXd> es(res.Q_V_min);
+  res.Q_V_min_norm = es.eigenvalues().maxCoeff();
+}
+
+}  // namespace
 
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode) {
   pb.validate(false);
@@ -485,141 +593,20 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
     ~Stamp() { r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
   } stamp{res, start};
   res.facial = facial_conditions(pb);
-  const int m = pb.structure.m();
   if (!res.facial.symmetric_possible) {
-    res.verdict = lmi::Feasibility::infeasible;
-    res.certified = true;
-    res.certificate = "exact: " + res.facial.explanation;
+    res.verdict = {Outcome::fails, Status::exact, "exact: " + res.facial.explanation};
     return res;
   }
   const EhatSplit sp = ehat_split(pb.E);
   if (mode == AnalysisMode::stability_only && !pb.qv_block_diagonal) {
-    // Q_E := Delta_D X eliminated (see analysis.hpp); only P11, X (theta) remain.
-    Program prog;
-    const EnvVars ev = add_environment(prog, pb, sp, res.facial, true);
-    prog.SetMarginObjective(1.0);
-    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
-    res.verdict = r.verdict;
-    res.margin = r.margin;
-    res.solver_detail = verdict_text(r);
-    if (r.verdict == lmi::Feasibility::infeasible) {
-      res.certified = r.certificate == lmi::Certificate::infeasible_exact;
-      res.certificate = res.certified ? "exact Farkas certificate of the posed (reduced) LMI with Q_E = Delta_D X "
-                                        "(infeasible there implies (16) infeasible)"
-                                      : "numeric only";
-      return res;
-    }
-    if (r.x.empty()) return res;
-    // mu: smallest eigenvalue of the reduced first LMI at the solver's point (original scale)
-    double mu = INFINITY;
-    for (size_t i = 0; i < prog.lmis().size(); ++i)
-      if (prog.lmis()[i].name.rfind("(16) first LMI", 0) == 0) mu = std::min(mu, r.min_eigenvalue[i]);
-    ExactEnv x = exact_env(r, ev);
-    const rational s = normaliser(x.X);
-    x.X *= s;
-    x.P11 *= s;
-    const MatQ DX = pb.structure.delta_D() * x.X;
-    std::string why = "the first LMI with Q_E = Delta_D X has no margin at the solver's point";
-    bool ok = false;
-    MatQ QV;
-    for (double f : {0.5, 0.0625}) {
-      if (!(mu > 0)) break;
-      const rational eps = lmi::round_dyadic(f * mu * to_real<double>(s), 20);
-      if (!(eps > 0)) break;
-      x.QE = DX - eps * MatQ::Identity(m, m);
-      QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
-      ok = exact_recheck(pb, sp, x, QV, why);
-      if (ok) break;
-    }
-    res.certified = ok && r.margin > 0;
-    if (res.certified) {
-      res.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
-      why += "; Q_E = Delta_D X - eps I and Q_V = Q_E + Q_E^2/eps + eps I constructed exactly (stability-only mode)";
-    }
-    res.certificate = why;
-    if (ok) {
-      res.X = to_double(x.X);
-      res.Q_E = to_double(x.QE);
-      res.Q_V = to_double(QV);
-      res.gamma_sqrt = gamma_sqrt(pb, res.X);
-      for (double g : res.gamma_sqrt) res.gamma.push_back(g * g);
-      res.delta_V = gamma_inv_scale(res.Q_V, res.X);
-    }
+    analyze_stability_only(pb, sp, opt, res);
     return res;
   }
-  auto build = [&](Program& prog, EnvVars& ev, MatrixVariable& QV) {
-    ev = add_environment(prog, pb, sp, res.facial);
-    QV = pb.qv_block_diagonal ? prog.NewBlockDiagonal(pb.structure.operator_sizes(), "Q_V") : prog.NewSymmetric(m, "Q_V");
-    prog.AddLmi("Q_V > 0", Expr(QV), Strictness::strict);
-    add_condition14(prog, pb, ev, Expr(QV));
-  };
-  {
-    Program prog;
-    EnvVars ev;
-    MatrixVariable QV;
-    build(prog, ev, QV);
-    prog.SetMarginObjective(1.0);
-    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
-    res.verdict = r.verdict;
-    res.margin = r.margin;
-    res.solver_detail = verdict_text(r);
-    if (r.verdict == lmi::Feasibility::infeasible) {
-      res.certified = r.certificate == lmi::Certificate::infeasible_exact;
-      res.certificate = res.certified ? "exact Farkas certificate of the posed (reduced) LMIs" : "numeric only";
-    } else if (!r.x.empty()) {
-      ExactEnv x = exact_env(r, ev);
-      MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
-      const rational s = normaliser(x.X);
-      x.X *= s;
-      x.QE *= s;
-      x.P11 *= s;
-      QVx *= s;
-      std::string why;
-      const bool ok = exact_recheck(pb, sp, x, QVx, why);
-      res.certified = ok && r.margin > 0;
-      if (res.certified) res.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
-      res.certificate = why;
-      res.X = to_double(x.X);
-      res.Q_E = to_double(x.QE);
-      res.Q_V = to_double(QVx);
-      res.gamma_sqrt = gamma_sqrt(pb, res.X);
-      for (double g : res.gamma_sqrt) res.gamma.push_back(g * g);
-      res.delta_V = gamma_inv_scale(res.Q_V, res.X);
-    }
-  }
-  if (res.verdict != lmi::Feasibility::feasible || mode == AnalysisMode::stability_only) return res;
-  {
-    // least dissipative coupling: minimise t with Q_V <= t I
-    Program prog;
-    EnvVars ev;
-    MatrixVariable QV;
-    build(prog, ev, QV);
-    const MatrixVariable t = prog.NewScalar("t");
-    prog.AddLmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
-    prog.SetMinimize(Expr(t));
-    const lmi::Result r = timed_solve(prog, opt, res.sdp_seconds);
-    if (r.status == lmi::SolveStatus::optimal && !r.x.empty()) {
-      ExactEnv x = exact_env(r, ev);
-      MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
-      const rational s = normaliser(x.X);
-      x.X *= s;
-      x.QE *= s;
-      x.P11 *= s;
-      QVx *= s;
-      std::string why;
-      res.min_found = true;
-      res.min_certified = exact_recheck(pb, sp, x, QVx, why);
-      res.Q_V_min = to_double(QVx);
-      const MatrixXd X = to_double(x.X);
-      res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);
-      res.gamma_sqrt_min = gamma_sqrt(pb, X);
-      Eigen::SelfAdjointEigenSolver<MatrixXd> es(res.Q_V_min);
-      res.Q_V_min_norm = es.eigenvalues().maxCoeff();
-    }
-  }
+  analyze_margin(pb, sp, opt, res);
+  if (!res.verdict.holds() || mode == AnalysisMode::stability_only) return res;
+  least_dissipative(pb, sp, opt, res);
   return res;
 }
-
 
 CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt) {
   pb.validate(false);
@@ -631,9 +618,7 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   const MatQ K = pb.structure.K(pb.T());
   const FacialConditions fc = facial_conditions(pb, {MatQ(dc_gain(V) - K)});
   if (!fc.symmetric_possible) {
-    cc.verdict = lmi::Feasibility::infeasible;
-    cc.certified = true;
-    cc.detail = "exact: " + fc.explanation;
+    cc.verdict = {Outcome::fails, Status::exact, "exact: " + fc.explanation};
     return cc;
   }
   const EhatSplit sp = ehat_split(pb.E);
@@ -646,35 +631,21 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   for (const auto& t : ev.theta) th.emplace_back(t);
   const VhatVars vv = add_vhat(prog, V, K, ev.Xk, th, Expr(QV));
   prog.SetMarginObjective(1.0);
-  const lmi::Result r = lmi::Solve(prog, opt);
-  cc.verdict = r.verdict;
-  cc.margin = r.margin;
-  cc.detail = verdict_text(r);
-  if (r.verdict == lmi::Feasibility::infeasible) {
-    cc.certified = r.certificate == lmi::Certificate::infeasible_exact;
-    return cc;
-  }
-  if (r.x.empty()) return cc;
-  ExactEnv x = exact_env(r, ev);
-  MatQ QVx = r.certified() ? r.GetExactSolution(QV) : lmi::to_rational(r.GetSolution(QV));
-  MatQ P11v = vv.P11.rows > 0 ? (r.certified() ? r.GetExactSolution(vv.P11) : lmi::to_rational(r.GetSolution(vv.P11)))
-                              : MatQ(0, 0);
-  const rational s = normaliser(x.X);
-  x.X *= s;
-  x.QE *= s;
-  x.P11 *= s;
-  for (auto& t : x.theta) t *= s;
-  QVx *= s;
-  P11v *= s;
+  const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
+  cc.verdict = cs.verdict;
+  cc.margin = cs.margin();
+  if (cs.verdict.fails() || !cs.has_point()) return cc;
+  const ScaledPoint p = scaled_point(cs, ev, QV);
+  MatQ P11v = vv.P11.rows > 0 ? cs.point(vv.P11) : MatQ(0, 0);
+  P11v *= p.scale;
   std::string why1, why2;
-  const bool ok1 = exact_recheck(pb, sp, x, QVx, why1);
-  const bool ok2 = ok1 && exact_recheck_vhat(vv, ev.Xk, x.theta, QVx, P11v, why2);
-  cc.certified = ok1 && ok2 && r.margin > 0;
-  if (cc.certified) cc.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
-  cc.detail += " | environment side: " + why1 + (ok1 ? " | coupling side: " + why2 : "");
-  const MatrixXd X = to_double(x.X);
+  const bool ok1 = exact_recheck(pb, sp, p.env, p.QV, why1);
+  const bool ok2 = ok1 && exact_recheck_vhat(vv, ev.Xk, p.env.theta, p.QV, P11v, why2);
+  cc.verdict = cs.recheck(ok1 && ok2, cs.solver_text() + " | environment side: " + why1 +
+                                          (ok1 ? " | coupling side: " + why2 : ""));
+  const MatrixXd X = to_double(p.env.X);
   cc.gamma_sqrt = gamma_sqrt(pb, X);
-  cc.Q_V = to_double(QVx);
+  cc.Q_V = to_double(p.QV);
   cc.delta_V = gamma_inv_scale(cc.Q_V, X);
   return cc;
 }
@@ -686,9 +657,8 @@ OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ
   OspCheck oc;
   const MatQ S = X * MatQ(dc_gain(V) - K);
   if (S != MatQ(S.transpose())) {
-    oc.verdict = lmi::Feasibility::infeasible;
-    oc.certified = true;
-    oc.detail = "exact: X (V(1) - K) is not symmetric, so no storage function can satisfy Lemma 1's facial equalities";
+    oc.verdict = {Outcome::fails, Status::exact,
+                  "exact: X (V(1) - K) is not symmetric, so no storage function can satisfy Lemma 1's facial equalities"};
     return oc;
   }
   Program prog;
@@ -696,22 +666,14 @@ OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ
   prog.AddLinearEquality("unit = 1", Expr(one), MatrixXd::Ones(1, 1));
   const VhatVars vv = add_vhat(prog, V, K, {X}, {Expr(one)}, Expr(to_double(Q)));
   prog.SetMarginObjective(1.0);
-  const lmi::Result r = lmi::Solve(prog, opt);
-  oc.verdict = r.verdict;
-  oc.margin = r.margin;
-  oc.detail = verdict_text(r);
-  if (r.verdict == lmi::Feasibility::infeasible) {
-    oc.certified = r.certificate == lmi::Certificate::infeasible_exact;
-    return oc;
-  }
-  if (r.x.empty()) return oc;
-  const MatQ P11 = vv.P11.rows > 0 ? (r.certified() ? r.GetExactSolution(vv.P11) : lmi::to_rational(r.GetSolution(vv.P11)))
-                                   : MatQ(0, 0);
+  const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
+  oc.verdict = cs.verdict;
+  oc.margin = cs.margin();
+  if (cs.verdict.fails() || !cs.has_point()) return oc;
+  const MatQ P11 = vv.P11.rows > 0 ? cs.point(vv.P11) : MatQ(0, 0);
   std::string why;
   const bool ok = exact_recheck_vhat(vv, {X}, {rational(1)}, Q, P11, why);
-  oc.certified = ok && r.margin > 0;
-  if (oc.certified) oc.verdict = lmi::Feasibility::feasible;  // the exact check is the proof
-  oc.detail += " | " + why;
+  oc.verdict = cs.recheck(ok, cs.solver_text() + " | " + why);
   return oc;
 }
 
@@ -721,12 +683,11 @@ OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi:
   OspLevel l;
   auto ok = [&](double d) {
     const OspCheck c = check_vhat_osp(V, K, I, lmi::round_dyadic(d, 30) * I, opt);
-    return c.verdict == lmi::Feasibility::feasible && c.certified;
+    return c.verdict.holds() && c.verdict.proven();
   };
   double lo = 0, hi = 1;
   if (!ok(0)) {
-    l.detail = "Vhat is not certified passive (delta = 0 fails): no positive OSP level";
-    l.found = true;
+    l.verdict = {Outcome::undecided, Status::numeric, "Vhat is not certified passive (delta = 0 fails): no positive OSP level"};
     return l;
   }
   int guard = 0;
@@ -738,11 +699,10 @@ OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi:
     const double mid = 0.5 * (lo + hi);
     (ok(mid) ? lo : hi) = mid;
   }
-  l.found = true;
-  l.certified = true;
   l.delta = to_real<double>(lmi::round_dyadic(lo, 30));
   l.upper = hi;
-  l.detail = "bisection on Lemma 1 (non-strict, facial reduction): level >= delta certified exactly";
+  l.verdict = {Outcome::holds, Status::exact,
+               "bisection on Lemma 1 (non-strict, facial reduction): level >= delta certified exactly"};
   return l;
 }
 

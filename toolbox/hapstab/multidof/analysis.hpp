@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "hapstab/lmi/solve.hpp"
+#include "hapstab/numeric/result.hpp"
 #include "hapstab/multidof/environment.hpp"
 #include "hapstab/multidof/structure.hpp"
 
@@ -60,10 +61,12 @@ struct FacialConditions {
 /// `extra`: further static gains G that X G must keep symmetric (the coupling's V(1) - K).
 FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& extra = {});
 
+// Every verdict below is a hapstab::Verdict (numeric/result.hpp): holds = the LMIs are feasible,
+// fails = infeasible (lmi::feasibility_of maps back); status exact when an exact certificate
+// passed (feasible: the rounded point re-checked in rational arithmetic on the original data,
+// with a positive margin; infeasible: Farkas or the facial conditions), numeric otherwise.
 struct AnalysisResult {
-  lmi::Feasibility verdict = lmi::Feasibility::undecided;
-  bool certified = false;           ///< exact certificate (feasible: exact re-check; infeasible: exact)
-  std::string certificate;          ///< what was proven, in words
+  Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates)
   std::vector<double> gamma;        ///< g_i (Gamma = sqrt(X) has sqrt(g_i) ... see gamma_sqrt)
   std::vector<double> gamma_sqrt;   ///< the gamma_i of Gamma = sqrt(X)
@@ -99,12 +102,10 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt = {}, Analysis
 /// V-hat^Gamma's OSP level by Lemma 1 (non-strict, facial reduction), E-hat^Gamma's ISP level
 /// and (14), over X in G, Q_E, Q_V and both storage functions -- one LMI program.
 struct CouplingCheck {
-  lmi::Feasibility verdict = lmi::Feasibility::undecided;
-  bool certified = false;
+  Verdict verdict;  ///< evidence: the solver's account, then both exact re-checks
   double margin = 0;
   std::vector<double> gamma_sqrt;
   Eigen::MatrixXd Q_V, delta_V;
-  std::string detail;
 };
 CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt = {});
 
@@ -115,21 +116,19 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
 /// DC). These are imposed exactly; the rest (P11 block) is posed with margin and the rounded
 /// point re-checked exactly on the rational data.
 struct OspCheck {
-  lmi::Feasibility verdict = lmi::Feasibility::undecided;
-  bool certified = false;
+  Verdict verdict;  ///< evidence: the solver's account, then the exact re-check
   double margin = 0;
-  std::string detail;
 };
 OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
                         const lmi::Options& opt = {});
 
 /// The largest scalar delta with V-hat delta-OSP (Delta = delta I, Gamma = I): bisection on
 /// check_vhat_osp; `delta` is the largest level certified exactly (a lower bound), `upper` the
-/// smallest level found infeasible numerically.
+/// smallest level found infeasible numerically. `verdict` holds (exact) when the bisection ran:
+/// V-hat is delta-OSP; undecided when not even delta = 0 was certified.
 struct OspLevel {
   double delta = 0, upper = 0;
-  bool found = false, certified = false;
-  std::string detail;
+  Verdict verdict;
 };
 OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi::Options& opt = {});
 

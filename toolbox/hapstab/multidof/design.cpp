@@ -8,11 +8,6 @@
 
 namespace hapstab::multidof {
 
-using lmi::Expr;
-using lmi::MatrixVariable;
-using lmi::Program;
-using lmi::Strictness;
-using Eigen::MatrixXd;
 using namespace detail;
 
 namespace {
@@ -103,6 +98,31 @@ MatQ round_q(const MatrixXd& M, int bits = 30) {
   return R;
 }
 
+// X = sum theta_k X_k at the solver's point.
+MatrixXd solution_X(const lmi::Result& r, const DesignVars& dv, int m) {
+  MatrixXd X = MatrixXd::Zero(m, m);
+  for (size_t k = 0; k < dv.ev.theta.size(); ++k) X += r.GetSolution(dv.ev.theta[k])(0, 0) * to_double(dv.ev.Xk[k]);
+  return X;
+}
+
+// (24), (23): V from the solver's V^Gamma with Gamma = sqrt(X), dyadic-rounded (round_q).
+StateSpace<rational> coupling_from(const Problem& pb, const lmi::Result& r, const DesignVars& dv, const MatrixXd& X) {
+  const int m = pb.structure.m();
+  MatrixXd G = MatrixXd::Zero(m, m), Gi = MatrixXd::Zero(m, m);
+  for (int i = 0; i < m; ++i) {
+    G(i, i) = std::sqrt(X(i, i));
+    Gi(i, i) = 1.0 / G(i, i);
+  }
+  const int nb = pb.coupling.n();
+  StateSpace<rational> V;
+  V.T = pb.T();
+  V.A = nb ? round_q(r.GetSolution(dv.A)) : MatQ(0, 0);
+  V.B = nb ? round_q(MatrixXd(r.GetSolution(dv.B) * G)) : MatQ(0, m);
+  V.C = nb ? round_q(MatrixXd(Gi * r.GetSolution(dv.C))) : MatQ(m, 0);
+  V.D = round_q(MatrixXd(Gi * r.GetSolution(dv.D) * G));
+  return V;
+}
+
 }  // namespace
 
 std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<rational>& V,
@@ -119,31 +139,31 @@ std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<ra
     const MatQ Gi = inverse(G, "Gamma");
     const MatQ Delta = Gi * round_q(Q_V) * Gi;
     const OspCheck c = check_vhat_osp(V, K, G, Delta, opt);
-    Verification v{"Vhat^Gamma OSP level >= Gamma^-1 Q_V Gamma^-1 (Lemma 1, non-strict, facial reduction)",
-                   c.verdict == lmi::Feasibility::feasible, c.certified, c.detail};
-    out.push_back(v);
+    out.push_back({"Vhat^Gamma OSP level >= Gamma^-1 Q_V Gamma^-1 (Lemma 1, non-strict, facial reduction)", c.verdict});
   }
   // 1b) the scalar OSP level of Vhat (Gamma = I), certified lower bound.
   {
     const OspLevel l = vhat_osp_level(V, K, opt);
     std::ostringstream o;
-    o << "certified delta >= " << l.delta << " (infeasible at " << l.upper << "); " << l.detail;
-    out.push_back({"Vhat OSP level (Lemma 1, bisection)", l.delta > 0, l.certified && l.delta > 0, o.str()});
+    o << "certified delta >= " << l.delta << " (infeasible at " << l.upper << "); " << l.verdict.evidence;
+    const bool positive = l.delta > 0;
+    out.push_back({"Vhat OSP level (Lemma 1, bisection)",
+                   Verdict::of(positive, positive && l.verdict.proven() ? Status::exact : Status::numeric, o.str())});
   }
   // 2) Theorem 4 with freshly computed levels.
   {
     const CouplingCheck c = check_theorem4(pb, V, opt);
     std::ostringstream o;
-    o << c.detail;
+    o << c.verdict.evidence;
     if (!c.gamma_sqrt.empty()) {
       o << " | gamma =";
       for (double x : c.gamma_sqrt) o << " " << x;
     }
     out.push_back({"Theorem 4 / condition (14) with computed levels (P_E, P_V, X, Q_E, Q_V free)",
-                   c.verdict == lmi::Feasibility::feasible, c.certified, o.str()});
+                   {c.verdict.outcome, c.verdict.status, o.str()}});
   }
   // 3) V itself stable (exact), so the loop's internal coupling state cannot diverge.
-  out.push_back({"V is Schur stable (exact)", schur_stable(V.A), true, "Schur-Cohn on det(zI - A_V)"});
+  out.push_back({"V is Schur stable (exact)", Verdict::of(schur_stable(V.A), Status::exact, "Schur-Cohn on det(zI - A_V)")});
   return out;
 }
 
@@ -154,9 +174,7 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   const int nQ = pb.coupling.n() + m;
   const FacialConditions fc = facial_conditions(pb);
   if (!fc.symmetric_possible) {
-    res.convex_infeasible = true;
-    res.convex_certified = true;
-    res.message = "no solution: the convex part (19) is infeasible (exact): " + fc.explanation;
+    res.verdict = {Outcome::fails, Status::exact, "no solution: the convex part (19) is infeasible (exact): " + fc.explanation};
     return res;
   }
   const EhatSplit sp = ehat_split(pb.E);
@@ -164,6 +182,7 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   MatrixXd Yk, Qk, Sk, QVk;
   lmi::Result last;
   DesignVars dv;
+  std::string message;
   for (int it = 0; it <= opt.max_iterations; ++it) {
     Program prog;
     dv = build(prog, pb, sp, fc);
@@ -177,18 +196,19 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
       prog.SetMinimize(trace_product(Yk, Expr(dv.Q)) + trace_product(Qk, Expr(dv.Y)) +
                        trace_product(Sk, Expr(dv.QV)) + trace_product(QVk, Expr(dv.Sig)));
     }
-    const lmi::Result r = lmi::Solve(prog, opt.lmi);
+    const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt.lmi);
+    const lmi::Result& r = cs.result;
     res.iterations = it;
-    if (r.x.empty() || r.status != lmi::SolveStatus::optimal) {
+    if (!cs.has_point() || r.status != lmi::SolveStatus::optimal) {
       if (it == 0) {
-        res.convex_infeasible = r.verdict == lmi::Feasibility::infeasible;
-        res.convex_certified = r.certificate == lmi::Certificate::infeasible_exact;
-        res.message = std::string("the convex part (19)-(20) without (22): ") + lmi::to_string(r.verdict) + ", " +
-                      lmi::to_string(r.certificate) + ". " + r.detail;
+        const bool infeasible = cs.verdict.fails();  // status exact: Farkas (or equalities) checked exactly
+        res.verdict = {infeasible ? Outcome::fails : Outcome::undecided, infeasible ? cs.verdict.status : Status::numeric,
+                       std::string("the convex part (19)-(20) without (22): ") + lmi::to_string(r.verdict) + ", " +
+                           lmi::to_string(r.certificate) + ". " + r.detail};
         return res;
       }
-      res.message = "CCL step " + std::to_string(it) + ": solver " + lmi::to_string(r.status) + " (" + r.detail +
-                    "); keeping the previous iterate";
+      message = "CCL step " + std::to_string(it) + ": solver " + lmi::to_string(r.status) + " (" + r.detail +
+                "); keeping the previous iterate";
       break;
     }
     last = r;
@@ -205,25 +225,9 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
     }
   }
   if (last.x.empty()) return res;
-  // (24), (23)
-  const MatrixXd X = [&] {
-    MatrixXd Xd = MatrixXd::Zero(m, m);
-    for (size_t k = 0; k < dv.ev.theta.size(); ++k) Xd += last.GetSolution(dv.ev.theta[k])(0, 0) * to_double(dv.ev.Xk[k]);
-    return Xd;
-  }();
+  const MatrixXd X = solution_X(last, dv, m);
   res.gamma_sqrt = gamma_sqrt(pb, X);
-  MatrixXd G = MatrixXd::Zero(m, m), Gi = MatrixXd::Zero(m, m);
-  for (int i = 0; i < m; ++i) {
-    G(i, i) = std::sqrt(X(i, i));
-    Gi(i, i) = 1.0 / G(i, i);
-  }
-  const int nb = pb.coupling.n();
-  StateSpace<rational> V;
-  V.T = pb.T();
-  V.A = nb ? round_q(last.GetSolution(dv.A)) : MatQ(0, 0);
-  V.B = nb ? round_q(MatrixXd(last.GetSolution(dv.B) * G)) : MatQ(0, m);
-  V.C = nb ? round_q(MatrixXd(Gi * last.GetSolution(dv.C))) : MatQ(m, 0);
-  V.D = round_q(MatrixXd(Gi * last.GetSolution(dv.D) * G));
+  const StateSpace<rational> V = coupling_from(pb, last, dv, X);
   res.V = V;
   res.Q_V = QVk;
   res.delta_V = gamma_inv_scale(QVk, X);
@@ -232,14 +236,13 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   for (const auto& v : res.verification) {
     // the Gamma^-1 Q_V Gamma^-1 check is at the design's own (boundary) level; Theorem 4 is decisive
     if (v.name.rfind("Theorem 4", 0) == 0 || v.name.rfind("V is Schur", 0) == 0) {
-      all &= v.pass;
-      cert &= v.certified;
+      all &= v.verdict.holds();
+      cert &= v.verdict.proven();
     }
   }
-  res.feasible = all;
-  res.certified = all && cert;
-  if (res.message.empty())
-    res.message = res.converged ? "CCL converged" : "CCL did not reach the trace target in " + std::to_string(res.iterations) + " iterations";
+  if (message.empty())
+    message = res.converged ? "CCL converged" : "CCL did not reach the trace target in " + std::to_string(res.iterations) + " iterations";
+  res.verdict = {all ? Outcome::holds : Outcome::undecided, all && cert ? Status::exact : Status::numeric, message};
   return res;
 }
 

@@ -31,19 +31,18 @@ struct DesignOptions {
   lmi::Options lmi;
 };
 
+/// One independent check of a coupling: holds = pass; proven() = certified exactly.
 struct Verification {
   std::string name;
-  bool pass = false;
-  bool certified = false;
-  std::string detail;
+  Verdict verdict;
 };
 
 struct DesignResult {
-  bool feasible = false;       ///< a V was produced that passes every independent check
-  bool certified = false;      ///< ... with exact certificates
+  /// holds: a V was produced that passes every independent check (status exact: with exact
+  /// certificates); fails: the convex part (19)-(20) without (22) has no solution (status
+  /// exact: certified); undecided otherwise. evidence: what happened, in words.
+  Verdict verdict;
   bool converged = false;      ///< CCL reached the trace target
-  bool convex_infeasible = false;   ///< the convex part (19)-(20) without (22) has no solution
-  bool convex_certified = false;    ///< ... and that is certified (exact)
   int iterations = 0;
   double trace_gap = 0;        ///< final tr(...) - 2(n + m) - 2m
   std::vector<double> trace_history;
@@ -51,7 +50,6 @@ struct DesignResult {
   std::vector<double> gamma_sqrt;
   Eigen::MatrixXd Q_V, delta_V;  ///< design's Q_V and Gamma^-1 Q_V Gamma^-1
   std::vector<Verification> verification;
-  std::string message;
 };
 
 DesignResult design(const Problem& pb, const DesignOptions& opt = {});

@@ -10,10 +10,17 @@
 #include <string>
 #include <vector>
 
-#include "hapstab/lmi/solve.hpp"
+#include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/analysis.hpp"
 
 namespace hapstab::multidof::detail {
+
+// The lmi names analysis.cpp and design.cpp both use (they open `using namespace detail`).
+using Eigen::MatrixXd;
+using lmi::Expr;
+using lmi::MatrixVariable;
+using lmi::Program;
+using lmi::Strictness;
 
 struct EnvVars {
   std::vector<lmi::MatrixVariable> theta;            ///< X = sum theta_k X_k
@@ -32,7 +39,8 @@ struct ExactEnv {
   std::vector<rational> theta;
   MatQ X, QE, P11;
 };
-ExactEnv exact_env(const lmi::Result& r, const EnvVars& ev);
+/// The solver's point of the environment side, exact (lmi::CertifiedSolve::point).
+ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev);
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why);
 
 Eigen::MatrixXd gamma_inv_scale(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& X);
@@ -49,6 +57,5 @@ VhatVars add_vhat(lmi::Program& prog, const StateSpace<rational>& V, const MatQ&
 /// Exact re-check of the coupling side at exact theta, Q_V, P11.
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
                         const MatQ& QV, const MatQ& P11, std::string& why);
-std::string verdict_text(const lmi::Result& r);
 
 }  // namespace hapstab::multidof::detail
