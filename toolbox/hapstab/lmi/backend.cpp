@@ -111,100 +111,130 @@ std::array<double, 6> dimacs_errors(const StandardForm& sf, const Eigen::VectorX
 // DSDP: maximise b^T y s.t. C - sum A_i y_i >= 0, so its A_i are our -A_k. Data in packed
 // lower-triangular storage, element (i, j), i >= j, at i(i+1)/2 + j.
 namespace {
-// One DSDP run; ybound > 0 replaces DSDP's default box |y_k| <= 1e7; *box: the box used.
-BackendResult dsdp_once(const StandardForm& sf, double ybound, double* box) {
-  BackendResult r;
-  // Every array DSDP sees lives until DSDPDestroy.
-  std::vector<std::vector<int>> idx;
-  std::vector<std::vector<double>> val;
-  DSDP dsdp = nullptr;
-  SDPCone cone = nullptr;
-  auto check = [&](int info, const char* what) {
-    if (info) {
-      if (dsdp) DSDPDestroy(dsdp);
-      throw NumericalError(std::string("DSDP: ") + what + " failed (code " + std::to_string(info) + ")");
+
+// Throws NumericalError naming the DSDP call that failed (the solver object is destroyed on
+// the way out: DsdpRun::Handle).
+void check(int info, const char* what) {
+  if (info) throw NumericalError(std::string("DSDP: ") + what + " failed (code " + std::to_string(info) + ")");
+}
+
+// One DSDP solver object and every array it was given: DSDP keeps pointers into them until
+// DSDPDestroy, so they live exactly as long.
+class DsdpRun {
+ public:
+  DsdpRun(const StandardForm& sf, double ybound);
+  int solve() { return DSDPSolve(dsdp_.p); }
+  /// reason, type, iterations, y, the y box and the multipliers X after solve()
+  void read(const StandardForm& sf, BackendResult& r, DSDPTerminationReason& reason, DSDPSolutionType& type,
+            double& ylo, double& yhi);
+
+ private:
+  void push(int j, int var, int n, std::vector<std::pair<int, double>>& e);
+  void add_dense(int j, int var, const Eigen::MatrixXd& M, double sign);
+  void add_sparse(int j, int var, const Eigen::SparseMatrix<double>& M, double sign);
+
+  struct Handle {  // destroyed also when the constructor throws
+    DSDP p = nullptr;
+    Handle() = default;
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    ~Handle() {
+      if (p) DSDPDestroy(p);
     }
   };
-  check(DSDPCreate(sf.m, &dsdp), "DSDPCreate");
-  for (int k = 0; k < sf.m; ++k) check(DSDPSetDualObjective(dsdp, k + 1, sf.b(k)), "DSDPSetDualObjective");
+  // declared before the handle: destroyed after it
+  std::vector<std::vector<int>> idx_;
+  std::vector<std::vector<double>> val_;
+  Handle dsdp_;
+  SDPCone cone_ = nullptr;
+};
+
+// The data (DSDP's A_i are our -A_k; the constant is variable 0), tolerances, iteration limit,
+// and the box |y_k| <= ybound when ybound > 0 (else DSDP's default 1e7).
+DsdpRun::DsdpRun(const StandardForm& sf, double ybound) {
+  check(DSDPCreate(sf.m, &dsdp_.p), "DSDPCreate");
+  for (int k = 0; k < sf.m; ++k) check(DSDPSetDualObjective(dsdp_.p, k + 1, sf.b(k)), "DSDPSetDualObjective");
   const int J = static_cast<int>(sf.blocks.size());
-  check(DSDPCreateSDPCone(dsdp, J, &cone), "DSDPCreateSDPCone");
-  // Packed lower-triangular (index, value) pairs in increasing index order.
-  auto push = [&](int j, int var, int n, std::vector<std::pair<int, double>>& e) {
-    if (e.empty()) return;
-    std::sort(e.begin(), e.end());
-    std::vector<int> ii;
-    std::vector<double> vv;
-    ii.reserve(e.size());
-    vv.reserve(e.size());
-    for (const auto& [i, v] : e) {
-      ii.push_back(i);
-      vv.push_back(v);
-    }
-    idx.push_back(std::move(ii));
-    val.push_back(std::move(vv));
-    check(SDPConeSetASparseVecMat(cone, j, var, n, 1.0, 0, idx.back().data(), val.back().data(),
-                                  static_cast<int>(idx.back().size())),
-          "SDPConeSetASparseVecMat");
-  };
-  auto add_dense = [&](int j, int var, const Eigen::MatrixXd& M, double sign) {
-    const int n = static_cast<int>(M.rows());
-    std::vector<std::pair<int, double>> e;
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c <= i; ++c)
-        if (M(i, c) != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * M(i, c));
-    push(j, var, n, e);
-  };
-  auto add_sparse = [&](int j, int var, const Eigen::SparseMatrix<double>& M, double sign) {
-    std::vector<std::pair<int, double>> e;
-    e.reserve(static_cast<size_t>(M.nonZeros() / 2 + M.rows()));
-    for (int o = 0; o < M.outerSize(); ++o)
-      for (Eigen::SparseMatrix<double>::InnerIterator it(M, o); it; ++it) {
-        const int i = static_cast<int>(it.row()), c = static_cast<int>(it.col());
-        if (i >= c && it.value() != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * it.value());
-      }
-    push(j, var, static_cast<int>(M.rows()), e);
-  };
-  idx.reserve(1024);
-  val.reserve(1024);
+  check(DSDPCreateSDPCone(dsdp_.p, J, &cone_), "DSDPCreateSDPCone");
+  idx_.reserve(1024);
+  val_.reserve(1024);
   for (int j = 0; j < J; ++j) {
     const auto& B = sf.blocks[static_cast<size_t>(j)];
-    check(SDPConeSetBlockSize(cone, j, static_cast<int>(B.C.rows())), "SDPConeSetBlockSize");
-    check(SDPConeSetSparsity(cone, j, static_cast<int>(B.terms.size()) + 1), "SDPConeSetSparsity");
+    check(SDPConeSetBlockSize(cone_, j, static_cast<int>(B.C.rows())), "SDPConeSetBlockSize");
+    check(SDPConeSetSparsity(cone_, j, static_cast<int>(B.terms.size()) + 1), "SDPConeSetSparsity");
     add_dense(j, 0, B.C, 1.0);
     for (const auto& t : B.terms) add_sparse(j, t.var + 1, t.A, -1.0);
   }
-  check(DSDPSetGapTolerance(dsdp, 1e-9), "DSDPSetGapTolerance");
-  check(DSDPSetMaxIts(dsdp, 300), "DSDPSetMaxIts");
-  if (ybound > 0) check(DSDPSetYBounds(dsdp, -ybound, ybound), "DSDPSetYBounds");
-  check(DSDPSetup(dsdp), "DSDPSetup");
-  int info = DSDPSolve(dsdp);
-  DSDPTerminationReason reason = CONTINUE_ITERATING;
-  DSDPSolutionType type = DSDP_PDUNKNOWN;
-  DSDPStopReason(dsdp, &reason);
-  DSDPGetSolutionType(dsdp, &type);
-  DSDPGetIts(dsdp, &r.iterations);
+  check(DSDPSetGapTolerance(dsdp_.p, 1e-9), "DSDPSetGapTolerance");
+  check(DSDPSetMaxIts(dsdp_.p, 300), "DSDPSetMaxIts");
+  if (ybound > 0) check(DSDPSetYBounds(dsdp_.p, -ybound, ybound), "DSDPSetYBounds");
+  check(DSDPSetup(dsdp_.p), "DSDPSetup");
+}
+
+// Packed lower-triangular (index, value) pairs in increasing index order.
+void DsdpRun::push(int j, int var, int n, std::vector<std::pair<int, double>>& e) {
+  if (e.empty()) return;
+  std::sort(e.begin(), e.end());
+  std::vector<int> ii;
+  std::vector<double> vv;
+  ii.reserve(e.size());
+  vv.reserve(e.size());
+  for (const auto& [i, v] : e) {
+    ii.push_back(i);
+    vv.push_back(v);
+  }
+  idx_.push_back(std::move(ii));
+  val_.push_back(std::move(vv));
+  check(SDPConeSetASparseVecMat(cone_, j, var, n, 1.0, 0, idx_.back().data(), val_.back().data(),
+                                static_cast<int>(idx_.back().size())),
+        "SDPConeSetASparseVecMat");
+}
+
+void DsdpRun::add_dense(int j, int var, const Eigen::MatrixXd& M, double sign) {
+  const int n = static_cast<int>(M.rows());
+  std::vector<std::pair<int, double>> e;
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c <= i; ++c)
+      if (M(i, c) != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * M(i, c));
+  push(j, var, n, e);
+}
+
+void DsdpRun::add_sparse(int j, int var, const Eigen::SparseMatrix<double>& M, double sign) {
+  std::vector<std::pair<int, double>> e;
+  e.reserve(static_cast<size_t>(M.nonZeros() / 2 + M.rows()));
+  for (int o = 0; o < M.outerSize(); ++o)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, o); it; ++it) {
+      const int i = static_cast<int>(it.row()), c = static_cast<int>(it.col());
+      if (i >= c && it.value() != 0.0) e.emplace_back(i * (i + 1) / 2 + c, sign * it.value());
+    }
+  push(j, var, static_cast<int>(M.rows()), e);
+}
+
+void DsdpRun::read(const StandardForm& sf, BackendResult& r, DSDPTerminationReason& reason, DSDPSolutionType& type,
+                   double& ylo, double& yhi) {
+  DSDPStopReason(dsdp_.p, &reason);
+  DSDPGetSolutionType(dsdp_.p, &type);
+  DSDPGetIts(dsdp_.p, &r.iterations);
   r.y.resize(sf.m);
-  DSDPGetY(dsdp, r.y.data(), sf.m);
-  double ylo = -INFINITY, yhi = INFINITY;
-  DSDPGetYBounds(dsdp, &ylo, &yhi);
-  int xinfo = DSDPComputeX(dsdp);
+  DSDPGetY(dsdp_.p, r.y.data(), sf.m);
+  DSDPGetYBounds(dsdp_.p, &ylo, &yhi);
+  int xinfo = DSDPComputeX(dsdp_.p);
+  const int J = static_cast<int>(sf.blocks.size());
   r.X.resize(static_cast<size_t>(J));
   for (int j = 0; j < J; ++j) {
     const int n = static_cast<int>(sf.blocks[static_cast<size_t>(j)].C.rows());
     Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, n);
     double* xx = nullptr;
     int nn = 0;
-    if (!xinfo && !SDPConeGetXArray(cone, j, &xx, &nn) && nn == n * (n + 1) / 2)
+    if (!xinfo && !SDPConeGetXArray(cone_, j, &xx, &nn) && nn == n * (n + 1) / 2)
       for (int i = 0; i < n; ++i)
         for (int c = 0; c <= i; ++c) X(i, c) = X(c, i) = xx[i * (i + 1) / 2 + c];
     r.X[static_cast<size_t>(j)] = X;
   }
-  DSDPDestroy(dsdp);
-  r.primal_objective = sf.b.dot(r.y);
-  double trCX = 0;
-  for (int j = 0; j < J; ++j) trCX += sf.blocks[static_cast<size_t>(j)].C.cwiseProduct(r.X[static_cast<size_t>(j)]).sum();
-  r.dual_objective = trCX;
+}
+
+// DSDP's return code, stop reason and solution type in our status words.
+void classify(int info, DSDPTerminationReason reason, DSDPSolutionType type, BackendResult& r) {
   r.detail = "DSDP stop reason " + std::to_string(static_cast<int>(reason)) + ", solution type " +
              std::to_string(static_cast<int>(type));
   if (info) {
@@ -219,6 +249,25 @@ BackendResult dsdp_once(const StandardForm& sf, double ybound, double* box) {
   } else {
     r.status = SolveStatus::numerical_trouble;
   }
+}
+
+// One DSDP run; ybound > 0 replaces DSDP's default box |y_k| <= 1e7; *box: the box used.
+BackendResult dsdp_once(const StandardForm& sf, double ybound, double* box) {
+  BackendResult r;
+  int info = 0;
+  DSDPTerminationReason reason = CONTINUE_ITERATING;
+  DSDPSolutionType type = DSDP_PDUNKNOWN;
+  double ylo = -INFINITY, yhi = INFINITY;
+  {
+    DsdpRun run(sf, ybound);
+    info = run.solve();
+    run.read(sf, r, reason, type, ylo, yhi);
+  }
+  r.primal_objective = sf.b.dot(r.y);
+  double trCX = 0;
+  for (size_t j = 0; j < sf.blocks.size(); ++j) trCX += sf.blocks[j].C.cwiseProduct(r.X[j]).sum();
+  r.dual_objective = trCX;
+  classify(info, reason, type, r);
   r.dimacs = dimacs_errors(sf, r.y, r.X);
   *box = std::min(-ylo, yhi);
   // DSDP often ends on "short steps" (-2) next to the optimum. Accept the point as optimal when

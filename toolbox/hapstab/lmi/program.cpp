@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "hapstab/lmi/sparse_ops.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::lmi {
@@ -19,11 +20,6 @@ SpMat dense_to_sparse(const MatrixXd& d) {
   return s;
 }
 
-double max_abs(const SpMat& m) {
-  double v = 0;
-  for (Eigen::Index i = 0; i < m.nonZeros(); ++i) v = std::max(v, std::abs(m.valuePtr()[i]));
-  return v;
-}
 // a + b on the low-rank forms: bases side by side, b's pieces re-indexed; a variable keeps
 // its pieces only when every operand that has its term has them
 LowRank concat(const LowRank& a, const std::map<int, SpMat>& ta, const LowRank& b, const std::map<int, SpMat>& tb) {
