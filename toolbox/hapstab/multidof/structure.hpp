@@ -20,8 +20,6 @@
 
 namespace hapstab::multidof {
 
-using MatQ = Mat<rational>;
-
 struct Device {
   std::string name;
   int dof = 1;     ///< m_ij
