@@ -8,7 +8,9 @@
 #include <optional>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/double_double.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interval.hpp"
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/poly/sturm.hpp"
@@ -48,46 +50,6 @@ std::vector<integer> integer_coeffs(const std::vector<rational>& p, integer& sca
   return out;
 }
 
-int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
-template <unsigned D>
-interval<D> ival(const rational& a, const rational& b) {
-  interval<D> x;
-  mpfi_interv_q(x.backend().data(), a.backend().data(), b.backend().data());
-  return x;
-}
-template <unsigned D>
-rational rlo(const interval<D>& x) { return exact_rational(mpfloat<D>(lower(x))); }
-template <unsigned D>
-rational rhi(const interval<D>& x) { return exact_rational(mpfloat<D>(upper(x))); }
-template <unsigned D>
-interval<D> ipi() {
-  interval<D> x;
-  mpfi_const_pi(x.backend().data());
-  return x;
-}
-
-rational pow10(int e) {
-  rational r(1);
-  for (int i = 0; i < std::abs(e); ++i) r *= 10;
-  return e >= 0 ? r : rational(1) / r;
-}
-
-/// Decimal string of q rounded outward (dir = -1 down, +1 up) to `digits` significant digits.
-}  // namespace
-std::string decimal_outward(const rational& q, int digits, int dir) {
-  if (q == 0) return "0";
-  rational nudge = abs(q) * pow10(1 - digits);
-  for (int k = 0; k < 6; ++k) {
-    std::string s = to_decimal(q + rational(dir) * nudge, digits);
-    rational back = parse_rational(s);
-    if ((dir < 0 && back <= q) || (dir > 0 && back >= q)) return s;
-    nudge *= 10;
-  }
-  return to_decimal(q, digits);  // unreachable in practice
-}
-namespace {
-
 /// Best decimal for an enclosure: the common rounding at `digits` digits, else fewer digits.
 std::string enclosure_decimal(const rational& lo, const rational& hi, int digits) {
   if (lo == hi) return to_decimal(lo, digits);
@@ -109,12 +71,6 @@ P primitive(const P& p) {
   return P(std::move(v));
 }
 
-P reversed(const P& p) {
-  std::vector<rational> c = p.coeffs();
-  std::reverse(c.begin(), c.end());
-  return P(std::move(c));
-}
-
 }  // namespace
 
 double Bound::value_double() const {
@@ -123,57 +79,8 @@ double Bound::value_double() const {
 }
 
 // ---------------------------------------------------------------------------------------------
-// assumptions: causality, stability (Schur-Cohn on the part off the unit circle, exact root
-// isolation on it)
-namespace {
-// Distinct roots of the square-free s on |z| = 1: z = -1, and the real roots t of the common
-// factor of Re, Im of (1 - jt)^m s(z(t)) (the other points of the circle).
-int circle_roots_of_square_free(const P& s) {
-  const int m = s.degree();
-  int on = (s(rational(-1)) == 0) ? 1 : 0;
-  ComplexPolynomial cp = unit_circle_polynomial(s, m);
-  P h = cp.re.is_zero() ? cp.im : (cp.im.is_zero() ? cp.re : gcd(cp.re, cp.im));
-  if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
-  return on;
-}
-}  // namespace
-
-int unit_circle_roots(const P& p) {
-  if (p.is_zero()) throw InputError("unit_circle_roots: the zero polynomial");
-  if (p.degree() <= 0) return 0;
-  P g = gcd(p, reversed(p));  // every unit-circle root of p, and reciprocal pairs (r, 1/r)
-  return g.degree() > 0 ? circle_roots_of_square_free(square_free_part(g)) : 0;
-}
-
-bool marginally_stable(const P& d, std::string* detail) {
-  if (d.is_zero()) throw InputError("the denominator of H is zero");
-  if (d.degree() == 0) return true;
-  P g = gcd(d, reversed(d));  // every unit-circle root of d, and reciprocal pairs (r, 1/r)
-  P d1 = d;
-  if (g.degree() > 0) {
-    for (P h = gcd(d1, g); h.degree() > 0; h = gcd(d1, g)) d1 = divmod(d1, h).first;
-    // all roots of g must lie on the circle
-    P s = square_free_part(g);
-    if (circle_roots_of_square_free(s) != s.degree()) {
-      if (detail) *detail = "a reciprocal pair of poles (r, 1/r) off the unit circle: one has |z| > 1";
-      return false;
-    }
-    // a pole on the circle must be simple: a repeated one is a root of d' too (z/(z-1)^2 has an
-    // impulse response k that grows without bound)
-    if (gcd(s, d.derivative()).degree() > 0) {
-      if (detail) *detail = "a repeated pole on the unit circle |z| = 1 (its impulse response grows without bound)";
-      return false;
-    }
-  }
-  // d1 has no roots on the circle: Schur-Cohn (poly/stability.hpp) decides the rest
-  std::string why;
-  if (!schur_stable(d1, &why)) {
-    if (detail) *detail = why;
-    return false;
-  }
-  return true;
-}
-
+// assumptions: causality, stability (poly/stability.hpp: Schur-Cohn on the part off the unit
+// circle, exact root isolation on it)
 BoundProblem with_integer_delay(BoundProblem p) {
   if (p.frac_delay && p.T > 0 && den(*p.frac_delay / p.T) == 1) {
     p.delay += static_cast<int>(num(*p.frac_delay / p.T).convert_to<long>());
@@ -425,8 +332,8 @@ bool enclose_critical(const CriticalContext<D>& cx, RootInterval r, int digits, 
   // cancellation in f = A/B near a cluster of poles (B ~ 1e-24 at c = -1 + 3e-12 in the
   // campaign's case) can leave an unbounded interval: not enough precision, never a value
   if (!isfinite(lower(fx)) || !isfinite(upper(fx))) return false;
-  out.vlo = rlo(fx);
-  out.vhi = rhi(fx);
+  out.vlo = lower_rational(fx);
+  out.vhi = upper_rational(fx);
   out.clo = lo;
   out.chi = hi;
   out.exact = false;
@@ -460,8 +367,8 @@ void omega_of(const Candidate& c, const rational& T, int q, int digits, Bound& b
     w = acos(ival<D>(c.clo, c.chi)) * interval<D>(q) / ival<D>(T, T);
     if (b.where.empty()) b.where = "interior";
   }
-  b.omega_lo = rlo(w);
-  b.omega_hi = rhi(w);
+  b.omega_lo = lower_rational(w);
+  b.omega_hi = upper_rational(w);
   b.omega = enclosure_decimal(b.omega_lo, b.omega_hi, digits);
 }
 
@@ -523,7 +430,7 @@ bool certified_rational(const RF& f, const BoundProblem& pb, int digits, Bound& 
     if (!(lower(Bx) > 0 || upper(Bx) < 0))
       throw NumericalError("the objective at w = pi/T could not be enclosed (denominator interval contains 0)");
     I v = A.template cast<I>()(X) / Bx;
-    cands.push_back({rlo(v), rhi(v), dom.end_lo, dom.end_hi, false, false, true});
+    cands.push_back({lower_rational(v), upper_rational(v), dom.end_lo, dom.end_hi, false, false, true});
   }
   // a critical point that may lie just outside an irrational end only widens the upper end of the
   // enclosure (its value differs from the end's by ~f'' (end_hi - end_lo)^2): its lower end is the end's
@@ -750,8 +657,8 @@ bool certified_frac_exact(const BoundProblem& pb, int digits, int max_degree, Bo
   else if (q == 3) dom.end_lo = dom.end_hi = rational(1, 2);
   else {
     interval<D> ce = cos(ipi<D>() / interval<D>(static_cast<double>(q)));
-    dom.end_lo = rlo(ce);
-    dom.end_hi = rhi(ce);
+    dom.end_lo = lower_rational(ce);
+    dom.end_hi = upper_rational(ce);
   }
   Objective o = objective(pt.H, pt.T, pt.delay);
   if (!certified_rational<D>(o.f, pt, digits, out, dom)) return false;
@@ -777,8 +684,8 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
     out.where = "w -> pi/T: a pole of H z^-n at z = -1 meets e^{-j w t_d} (Tustin-like): Re -> +inf";
     out.method = "exact divergence test at wT = pi (leading terms in pi - wT)";
     I w = ipi<D>() / ival<D>(pb.T, pb.T);
-    out.omega_lo = rlo(w);
-    out.omega_hi = rhi(w);
+    out.omega_lo = lower_rational(w);
+    out.omega_hi = upper_rational(w);
     out.omega = enclosure_decimal(out.omega_lo, out.omega_hi, 17);
     return out;
   }
@@ -925,44 +832,6 @@ Bound bound_certified(const BoundProblem& p, int digits) {
 // ---------------------------------------------------------------------------------------------
 // grid and fast paths
 namespace {
-struct dd {
-  double hi = 0, lo = 0;
-};
-inline dd two_sum(double a, double b) {
-  double s = a + b, bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb)};
-}
-inline dd fast_two_sum(double a, double b) {
-  double s = a + b;
-  return {s, b - (s - a)};
-}
-inline dd operator+(dd a, dd b) {
-  dd s = two_sum(a.hi, b.hi);
-  s.lo += a.lo + b.lo;
-  return fast_two_sum(s.hi, s.lo);
-}
-inline dd operator-(dd a) { return {-a.hi, -a.lo}; }
-inline dd operator-(dd a, dd b) { return a + (-b); }
-inline dd operator*(dd a, dd b) {
-  double p = a.hi * b.hi;
-  double e = std::fma(a.hi, b.hi, -p);
-  e += a.hi * b.lo + a.lo * b.hi;
-  return fast_two_sum(p, e);
-}
-inline dd operator/(dd a, dd b) {
-  double q1 = a.hi / b.hi;
-  dd r = a - b * dd{q1, 0};
-  double q2 = r.hi / b.hi;
-  r = r - b * dd{q2, 0};
-  double q3 = r.hi / b.hi;
-  return dd{q1, 0} + dd{q2, 0} + dd{q3, 0};
-}
-dd to_dd(const rational& q) {
-  // hi = q truncated to double (mpq_get_d), lo = the exact remainder rounded: |hi + lo - q| <= 2^-106 |q|
-  double h = mpq_get_d(q.backend().data());
-  rational r = q - exact_rational(h);
-  return {h, mpq_get_d(r.backend().data())};
-}
 /// Monomial coefficients of T_m and U_m (m <= 63), exact integers in double for m < 50.
 struct ChebTables {
   std::vector<std::vector<double>> T, U;
@@ -984,11 +853,6 @@ struct ChebTables {
 const ChebTables& cheb_tables() {
   static const ChebTables t;
   return t;
-}
-inline dd horner(const std::vector<double>& hi, const std::vector<double>& lo, double x) {
-  dd r{0, 0};
-  for (size_t i = hi.size(); i-- > 0;) r = r * dd{x, 0} + dd{hi[i], lo[i]};
-  return r;
 }
 inline double horner_d(const std::vector<double>& c, double x) {
   double r = 0;
@@ -1112,7 +976,7 @@ std::optional<std::pair<double, double>> FastBound::evaluate() const {
   // is lost (radius 1 - 1e-8 gave -2.8e-4 for a true 66666.7; 1 - 1e-7 an error of 3e-12). Such
   // cases go to the certified path, which is exact about them (~0.1-0.3 ms).
   for (double x : rb)
-    if (horner(Bhi_, Blo_, x).hi <= 1e-11 * bscale) return std::nullopt;
+    if (horner_dd(Bhi_, Blo_, x).hi <= 1e-11 * bscale) return std::nullopt;
   // P = A'B - AB' in double-double
   const size_t na = Ahi_.size(), nb = Bhi_.size();
   std::vector<dd> Pd(na + nb, dd{0, 0});
@@ -1139,9 +1003,9 @@ std::optional<std::pair<double, double>> FastBound::evaluate() const {
   }
   auto polish = [&](double& x) {
     for (int it = 0; it < 12; ++it) {
-      dd d = horner(dPh, dPl, x);
+      dd d = horner_dd(dPh, dPl, x);
       if (d.hi == 0) return false;
-      const double step = (horner(Ph, Pl, x) / d).hi;
+      const double step = (horner_dd(Ph, Pl, x) / d).hi;
       if (!std::isfinite(step) || x - step < -1 || x - step > 1) return false;
       x -= step;
       if (std::abs(step) <= 2e-16 * std::max(1.0, std::abs(x))) return true;
@@ -1159,7 +1023,7 @@ std::optional<std::pair<double, double>> FastBound::evaluate() const {
   crit.push_back(-1.0);
   double best = -std::numeric_limits<double>::infinity(), bc = 1;
   for (double x : crit) {
-    dd v = horner(Ahi_, Alo_, x) / horner(Bhi_, Blo_, x);
+    dd v = horner_dd(Ahi_, Alo_, x) / horner_dd(Bhi_, Blo_, x);
     double vv = (v + dd{eta_, 0}).hi;
     if (vv > best) { best = vv; bc = x; }
   }
