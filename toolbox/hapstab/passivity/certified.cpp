@@ -146,7 +146,8 @@ mpfloat<D> polish_root(const CriticalContext<D>& cx, const RootInterval& r) {
 /// continued-fraction convergents of x with denominators below 10^12; the rational root of q in
 /// r, or nullopt.
 template <unsigned D>
-std::optional<rational> rational_root_near(const CriticalContext<D>& cx, const RootInterval& r, const mpfloat<D>& x) {
+std::optional<rational> rational_root_near(const CriticalContext<D>& cx, const RootInterval& r,
+                                           const mpfloat<D>& x) {
   using R = mpfloat<D>;
   R y = x;
   integer h0 = 0, h1 = 1, k0 = 1, k1 = 0;
@@ -221,6 +222,7 @@ bool enclose_critical(const CriticalContext<D>& cx, RootInterval r, int digits, 
   return common_decimal(out.vlo, out.vhi, digits).has_value() || out.vhi - out.vlo < abs(out.vlo) * pow10(-digits - 2);
 }
 
+/// The maximiser w = q acos(c)/T of candidate c (w = 0, pi/T at the ends), enclosed, into b.
 template <unsigned D>
 void omega_of(const Candidate& c, const rational& T, int q, int digits, Bound& b) {
   if (c.endpoint_zero) {
@@ -255,7 +257,8 @@ void constant_objective(const QPoly& A, const QPoly& B, const BoundProblem& pb, 
 
 /// True (and `out` set to b* = +inf) when f = A/B has a pole in the domain near which f -> +inf.
 template <unsigned D>
-bool pole_to_plus_infinity(const QPoly& A, const QPoly& B, const BoundProblem& pb, int digits, const Domain& dom, Bound& out) {
+bool pole_to_plus_infinity(const QPoly& A, const QPoly& B, const BoundProblem& pb, int digits, const Domain& dom,
+                           Bound& out) {
   const rational one(1), mone = dom.end_lo;
   // poles of f on [-1, 1]: only possible when H has a pole on the unit circle (B = |D z^n|^2 > 0
   // otherwise), i.e. when gcd(D, z^deg D D(1/z)) is non-trivial -- skips a root isolation
