@@ -228,13 +228,13 @@ BENCHMARK(BM_odeint)->Arg(6)->Arg(9)->Arg(12)->Arg(14)->Unit(benchmark::kMillise
 // method before issue 15) against Arb's arb_mat_exp enclosure (numeric/ball_expm.hpp, what the
 // simulator uses), on a chain of n masses and dampers (A n x n, B n x 2) at T = 1 ms.
 // Counters: radius = the Arb enclosure's proven bound on |exact - double midpoint|.
-MatRational chain(int n, MatRational& B) {
-  MatRational A = MatRational::Zero(n, n);
+MatQ chain(int n, MatQ& B) {
+  MatQ A = MatQ::Zero(n, n);
   for (int i = 0; i < n; ++i) {
     A(i, i) = rational(-(i + 2), 3);
     if (i + 1 < n) A(i, i + 1) = rational(1, i + 1), A(i + 1, i) = rational(-7, i + 2);
   }
-  B = MatRational::Zero(n, 2);
+  B = MatQ::Zero(n, 2);
   B(0, 0) = 1;
   B(n - 1, 1) = rational(1, 10);
   return A;
@@ -242,8 +242,8 @@ MatRational chain(int n, MatRational& B) {
 void BM_zoh_setup(benchmark::State& st) {
   const int n = static_cast<int>(st.range(0));
   const bool arb = st.range(1) == 1;
-  MatRational B;
-  const MatRational A = chain(n, B);
+  MatQ B;
+  const MatQ A = chain(n, B);
   const rational T(1, 1000);
   double radius = 0;
   for (auto _ : st) {

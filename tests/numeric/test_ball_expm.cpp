@@ -25,7 +25,7 @@ void expect_encloses(const DoubleEnclosure& e, Eigen::Index i, Eigen::Index j, c
 
 TEST(BallExpm, RotationOnTheImaginaryAxis) {
   // A = [[0, 1], [-w^2, 0]], w = 3, t = 7/10: e^{At} = [[cos wt, sin(wt)/w], [-w sin wt, cos wt]]
-  MatRational A(2, 2);
+  MatQ A(2, 2);
   A << 0, 1, -9, 0;
   const auto e = expm_enclosure(A, rational(7, 10));
   const R wt = R(21) / 10;
@@ -38,7 +38,7 @@ TEST(BallExpm, RotationOnTheImaginaryAxis) {
 TEST(BallExpm, StiffDampedModeAndZohPair) {
   // mass-damper v' = (-b v + u)/m, x' = v with b/m = 2e4 (a stiff device), t = 1 s:
   // e^{-at} = e^{-20000} underflows double: the enclosure must still hold (mid 0, tiny radius)
-  MatRational A(2, 2), B(2, 1);
+  MatQ A(2, 2), B(2, 1);
   A << rational(-20000), 0, 1, 0;  // states [v; x]
   B << rational(1000), 0;            // 1/m, m = 1/1000
   const rational t(1);
@@ -55,7 +55,7 @@ TEST(BallExpm, StiffDampedModeAndZohPair) {
 TEST(BallExpm, GramIntegralOfADecayingMode) {
   // M = [[-a, 1], [0, 0]] (a state driven by a held input), Q = e1 e1^T:
   // W_11 = int_0^t e^{-2as} ds = (1 - e^{-2at})/(2a); a = 50, t = 1/10 (||M|| t = 5: two halvings)
-  MatRational M(2, 2), Q = MatRational::Zero(2, 2);
+  MatQ M(2, 2), Q = MatQ::Zero(2, 2);
   M << -50, 1, 0, 0;
   Q(0, 0) = 1;
   const auto W = gram_enclosure(M, Q, rational(1, 10));
@@ -69,12 +69,12 @@ TEST(BallExpm, GramIntegralOfADecayingMode) {
 }
 
 TEST(BallExpm, BadInputIsRefusedByName) {
-  MatRational A(2, 3), B(3, 1);
+  MatQ A(2, 3), B(3, 1);
   A.setZero();
   B.setZero();
   EXPECT_THROW(expm_enclosure(A, rational(1)), InputError);
-  MatRational S = MatRational::Zero(2, 2);
+  MatQ S = MatQ::Zero(2, 2);
   EXPECT_THROW(zoh_enclosure(S, B, rational(1)), InputError);
-  EXPECT_THROW(zoh_enclosure(S, MatRational::Zero(2, 1), rational(-1)), InputError);
-  EXPECT_THROW(gram_enclosure(S, MatRational::Zero(3, 3), rational(1)), InputError);
+  EXPECT_THROW(zoh_enclosure(S, MatQ::Zero(2, 1), rational(-1)), InputError);
+  EXPECT_THROW(gram_enclosure(S, MatQ::Zero(3, 3), rational(1)), InputError);
 }

@@ -12,8 +12,8 @@ namespace hapstab::contact {
 
 namespace {
 
-using Poly = Polynomial<rational>;
-using RatFun = RationalFunction<rational>;
+using Poly = QPoly;
+using RatFun = QRatFun;
 
 // Z{1/s^i} (samples of t^{i-1}/(i-1)! at t = kT), i = 1..4, exact.
 RatFun z_of_inverse_power(int i, const rational& T) {

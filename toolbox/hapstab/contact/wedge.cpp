@@ -6,6 +6,7 @@
 #include <deque>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/interval.hpp"
 #include "hapstab/poly/sturm.hpp"
 #include "hapstab/poly/unit_circle.hpp"
 
@@ -13,10 +14,8 @@ namespace hapstab::contact {
 
 namespace {
 
-using Poly = Polynomial<rational>;
+using Poly = QPoly;
 using Ival = interval<100>;
-
-int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
 
 // p(t) even (no odd powers) -> q(u) with p(t) = q(t^2). Throws if p is not even.
 Poly even_to_u(const Poly& p) {
@@ -32,18 +31,6 @@ Poly even_to_u(const Poly& p) {
 }
 
 RatFun rf_even_to_u(const RatFun& f) { return RatFun(even_to_u(f.num()), even_to_u(f.den())); }
-
-// 1 + max |a_i/a_n| (Cauchy): every root has |x| < bound.
-rational cauchy_bound(const Poly& p) {
-  rational m = 0;
-  const rational& an = p.leading();
-  for (int i = 0; i < p.degree(); ++i) {
-    rational r = p.coeffs()[i] / an;
-    if (r < 0) r = -r;
-    if (r > m) m = r;
-  }
-  return m + 1;
-}
 
 // Distinct roots of p in [0, inf), sorted (p nonzero, degree >= 0).
 std::vector<RootInterval> nonneg_roots(const Poly& p) {
@@ -68,22 +55,6 @@ rational value_at_infinity(const RatFun& f) {
   return f.num().leading() / f.den().leading();
 }
 
-Ival ival(const rational& lo, const rational& hi) {
-  Ival x;
-  mpfi_interv_q(x.backend().data(), lo.backend().data(), hi.backend().data());
-  return x;
-}
-rational left(const Ival& x) {
-  mpfloat<100> y;
-  mpfi_get_left(y.backend().data(), x.backend().data());
-  return exact_rational(y);
-}
-rational right(const Ival& x) {
-  mpfloat<100> y;
-  mpfi_get_right(y.backend().data(), x.backend().data());
-  return exact_rational(y);
-}
-
 // Enclosure of max_i f_i over [lo, hi].
 Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const rational& lo, const rational& hi) {
   Enclosure<rational> r{rational(0), rational(0)};
@@ -93,10 +64,10 @@ Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const rational& lo, 
     if (lo == hi) {
       a = b = f(lo);
     } else {
-      Ival x = ival(lo, hi);
+      Ival x = ival<100>(lo, hi);
       Ival v = f.num()(x) / f.den()(x);
-      a = left(v);
-      b = right(v);
+      a = lower_rational(v);
+      b = upper_rational(v);
     }
     if (first || a > r.lo) r.lo = a;
     if (first || b > r.hi) r.hi = b;
@@ -340,11 +311,7 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
 
 bool has_root_on_unit_circle(const Polynomial<rational>& p) {
   if (p.is_zero()) throw InputError("has_root_on_unit_circle: the zero polynomial");
-  if (p.degree() <= 0) return false;
-  if (p(rational(-1)) == 0) return true;  // z = -1 is t = infinity
-  ComplexPolynomial c = unit_circle_polynomial(p, p.degree());
-  Poly g = gcd(c.re, c.im);  // common real roots t <-> roots e^{j theta}, theta in (-pi, pi)
-  return g.degree() > 0 && !isolate_real_roots(g).empty();
+  return unit_circle_roots(p) > 0;  // poly/stability.hpp
 }
 
 Assumptions check_assumptions(const TransferFunction& H, const rational& k) {

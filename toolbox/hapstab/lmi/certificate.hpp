@@ -34,8 +34,6 @@
 
 namespace hapstab::lmi {
 
-using MatQ = Eigen::Matrix<rational, Eigen::Dynamic, Eigen::Dynamic>;
-
 struct Definiteness {
   bool psd = false;       ///< positive semidefinite (exact)
   bool pd = false;        ///< positive definite (exact)

@@ -14,8 +14,8 @@
 namespace hapstab {
 namespace {
 
-using RF = RationalFunction<rational>;
-using P = Polynomial<rational>;
+using RF = QRatFun;
+using P = QPoly;
 
 enum class Tok { number, name, plus, minus, star, slash, caret, lparen, rparen, end };
 

@@ -75,7 +75,7 @@ Polynomial<Q> charpoly(const MQ& A) {
   flint::QMat M(n, n);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) flint::set(M.at(i, j), A(i, j));
-  flint::QPoly p;
+  flint::FmpqPoly p;
   fmpq_mat_charpoly(p.get(), M.get());
   return flint::from_flint(p);
 }

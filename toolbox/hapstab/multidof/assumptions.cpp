@@ -13,7 +13,7 @@
 namespace hapstab::multidof {
 
 namespace {
-using P = Polynomial<rational>;
+using P = QPoly;
 struct CP {  // complex polynomial in real w: re + j im
   P re, im;
 };

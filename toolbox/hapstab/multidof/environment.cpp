@@ -6,7 +6,6 @@
 
 namespace hapstab::multidof {
 
-using P = Polynomial<rational>;
 
 void MechanicalEnvironment::validate() const {
   if (kc.empty()) throw InputError("environment: no contact point (give k_i, B_i for each DOF)");
@@ -28,16 +27,16 @@ TransferMatrix mechanical_impedance(const MechanicalEnvironment& env) {
     Bs += env.Bc[i];
     ks += env.kc[i];
   }
-  const P den(std::vector<rational>{ks, Bs, env.M});
-  std::vector<P> Z(m);
-  for (size_t i = 0; i < m; ++i) Z[i] = P(std::vector<rational>{env.kc[i], env.Bc[i]});
+  const QPoly den(std::vector<rational>{ks, Bs, env.M});
+  std::vector<QPoly> Z(m);
+  for (size_t i = 0; i < m; ++i) Z[i] = QPoly(std::vector<rational>{env.kc[i], env.Bc[i]});
   TransferMatrix E;
   E.domain = Domain::s;
   E.T = 0;
   E.entries.assign(m, std::vector<TransferFunction>(m));
   for (size_t i = 0; i < m; ++i)
     for (size_t j = 0; j < m; ++j) {
-      P num = -(Z[i] * Z[j]);
+      QPoly num = -(Z[i] * Z[j]);
       if (i == j) num += Z[i] * den;
       E.entries[i][j] = tf(num, den, 0);
     }
@@ -46,8 +45,8 @@ TransferMatrix mechanical_impedance(const MechanicalEnvironment& env) {
 
 namespace {
 // p(s) with s = a(z)/b(z), times b(z)^d: sum_k p_k a^k b^(d-k).
-P substitute(const P& p, const P& a, const P& b, int d) {
-  P r;
+QPoly substitute(const QPoly& p, const QPoly& a, const QPoly& b, int d) {
+  QPoly r;
   for (int k = 0; k <= p.degree(); ++k) r += p.coeff(k) * (a.pow(static_cast<unsigned>(k)) * b.pow(static_cast<unsigned>(d - k)));
   return r;
 }
@@ -56,13 +55,13 @@ P substitute(const P& p, const P& a, const P& b, int d) {
 TransferMatrix c2d(const TransferMatrix& Hs, const rational& T, C2dMethod method) {
   if (Hs.domain != Domain::s) throw InputError("c2d: the transfer matrix is already discrete");
   if (T <= 0) throw InputError("c2d: sample period T must be > 0");
-  P a, b;
+  QPoly a, b;
   if (method == C2dMethod::backward_euler) {
-    a = P(std::vector<rational>{rational(-1), rational(1)});  // z - 1
-    b = P(std::vector<rational>{rational(0), T});             // T z
+    a = QPoly(std::vector<rational>{rational(-1), rational(1)});  // z - 1
+    b = QPoly(std::vector<rational>{rational(0), T});             // T z
   } else if (method == C2dMethod::tustin) {
-    a = P(std::vector<rational>{rational(-2) / T, rational(2) / T});  // (2/T)(z - 1)
-    b = P(std::vector<rational>{rational(1), rational(1)});           // z + 1
+    a = QPoly(std::vector<rational>{rational(-2) / T, rational(2) / T});  // (2/T)(z - 1)
+    b = QPoly(std::vector<rational>{rational(1), rational(1)});           // z + 1
   } else {
     throw InputError("c2d: ZOH of a transfer matrix in s is refused here: the contact dampers make E(s) improper "
                      "(B_i s); give a proper continuous state space, or use backward_euler or tustin");
@@ -75,7 +74,7 @@ TransferMatrix c2d(const TransferMatrix& Hs, const rational& T, C2dMethod method
     for (size_t j = 0; j < Hs.inputs(); ++j) {
       const auto& e = Hs.entries[i][j];
       const int d = std::max(e.num().degree(), e.den().degree());
-      P n = substitute(e.num(), a, b, d), q = substitute(e.den(), a, b, d);
+      QPoly n = substitute(e.num(), a, b, d), q = substitute(e.den(), a, b, d);
       if (q.is_zero()) throw InputError("c2d: entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") has a pole at the substitution's singular point");
       Hz.entries[i][j] = tf(n, q, T);
       if (!Hz.entries[i][j].is_proper())

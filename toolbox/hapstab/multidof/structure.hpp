@@ -22,8 +22,6 @@
 
 namespace hapstab::multidof {
 
-using MatQ = Mat<rational>;
-
 struct Device {
   std::string name;
   int dof = 1;     ///< m_ij

@@ -12,7 +12,7 @@ namespace {
 
 constexpr long kPrec = 128;
 
-void load(flint::BallMat& out, const MatRational& A, const rational& scale) {
+void load(flint::BallMat& out, const MatQ& A, const rational& scale) {
   flint::QMat q(static_cast<long>(A.rows()), static_cast<long>(A.cols()));
   for (Eigen::Index i = 0; i < A.rows(); ++i)
     for (Eigen::Index j = 0; j < A.cols(); ++j) flint::set(q.at(static_cast<long>(i), static_cast<long>(j)), A(i, j) * scale);
@@ -42,13 +42,13 @@ DoubleEnclosure extract(flint::BallMat& B, long r0, long c0, long nr, long nc) {
   return e;
 }
 
-void check_square(const MatRational& A, const char* what) {
+void check_square(const MatQ& A, const char* what) {
   if (A.rows() != A.cols()) throw InputError(std::string(what) + ": the matrix must be square");
 }
 
 }  // namespace
 
-DoubleEnclosure expm_enclosure(const MatRational& A, const rational& t) {
+DoubleEnclosure expm_enclosure(const MatQ& A, const rational& t) {
   check_square(A, "expm_enclosure");
   const long n = static_cast<long>(A.rows());
   flint::BallMat X(n, n), E(n, n);
@@ -57,12 +57,12 @@ DoubleEnclosure expm_enclosure(const MatRational& A, const rational& t) {
   return extract(E, 0, 0, n, n);
 }
 
-ZohEnclosure zoh_enclosure(const MatRational& A, const MatRational& B, const rational& t) {
+ZohEnclosure zoh_enclosure(const MatQ& A, const MatQ& B, const rational& t) {
   check_square(A, "zoh_enclosure");
   if (B.rows() != A.rows()) throw InputError("zoh_enclosure: B must have A's rows");
   if (t < 0) throw InputError("zoh_enclosure: negative time step");
   const long n = static_cast<long>(A.rows()), m = static_cast<long>(B.cols());
-  MatRational M = MatRational::Zero(n + m, n + m);
+  MatQ M = MatQ::Zero(n + m, n + m);
   M.topLeftCorner(n, n) = A;
   M.topRightCorner(n, m) = B;
   flint::BallMat X(n + m, n + m), E(n + m, n + m);
@@ -71,7 +71,7 @@ ZohEnclosure zoh_enclosure(const MatRational& A, const MatRational& B, const rat
   return {extract(E, 0, 0, n, n), extract(E, 0, n, n, m)};
 }
 
-DoubleEnclosure gram_enclosure(const MatRational& M, const MatRational& Q, const rational& t) {
+DoubleEnclosure gram_enclosure(const MatQ& M, const MatQ& Q, const rational& t) {
   check_square(M, "gram_enclosure");
   if (Q.rows() != M.rows() || Q.cols() != M.cols()) throw InputError("gram_enclosure: Q must have M's size");
   if (t < 0) throw InputError("gram_enclosure: negative time step");
@@ -89,7 +89,7 @@ DoubleEnclosure gram_enclosure(const MatRational& M, const MatRational& Q, const
     h /= 2;
     ++k;
   }
-  MatRational V = MatRational::Zero(2 * n, 2 * n);
+  MatQ V = MatQ::Zero(2 * n, 2 * n);
   V.topLeftCorner(n, n) = -M.transpose();
   V.topRightCorner(n, n) = Q;
   V.bottomRightCorner(n, n) = M;

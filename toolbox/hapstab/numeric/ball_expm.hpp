@@ -22,20 +22,18 @@
 
 namespace hapstab {
 
-using MatRational = Eigen::Matrix<rational, Eigen::Dynamic, Eigen::Dynamic>;
-
 struct DoubleEnclosure {
   Eigen::MatrixXd mid;
   double radius = 0;  ///< max over entries of |exact - mid| (an upper bound)
 };
 
-DoubleEnclosure expm_enclosure(const MatRational& A, const rational& t);
+DoubleEnclosure expm_enclosure(const MatQ& A, const rational& t);
 
 struct ZohEnclosure {
   DoubleEnclosure Phi, Gamma;
 };
-ZohEnclosure zoh_enclosure(const MatRational& A, const MatRational& B, const rational& t);
+ZohEnclosure zoh_enclosure(const MatQ& A, const MatQ& B, const rational& t);
 
-DoubleEnclosure gram_enclosure(const MatRational& M, const MatRational& Q, const rational& t);
+DoubleEnclosure gram_enclosure(const MatQ& M, const MatQ& Q, const rational& t);
 
 }  // namespace hapstab

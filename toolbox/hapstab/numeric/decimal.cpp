@@ -7,12 +7,12 @@
 
 namespace hapstab {
 
-namespace {
-
 rational pow10(long e) {
   integer p = bmp::pow(integer(10), static_cast<unsigned>(e < 0 ? -e : e));
   return e >= 0 ? rational(p) : rational(integer(1), p);
 }
+
+namespace {
 
 // One decimal: [+-] digits [. digits] [(e|E) [+-] digits], at least one mantissa digit.
 std::optional<rational> parse_decimal(std::string_view s) {
@@ -159,6 +159,18 @@ rational exact_rational(double x) {
   if (e >= 0) q *= rational(integer(1) << e);
   else q /= rational(integer(1) << -e);
   return q;
+}
+
+std::string decimal_outward(const rational& q, int digits, int dir) {
+  if (q == 0) return "0";
+  rational nudge = abs(q) * pow10(1 - digits);
+  for (int k = 0; k < 6; ++k) {
+    std::string s = to_decimal(q + rational(dir) * nudge, digits);
+    rational back = parse_rational(s);
+    if ((dir < 0 && back <= q) || (dir > 0 && back >= q)) return s;
+    nudge *= 10;
+  }
+  return to_decimal(q, digits);  // unreachable in practice
 }
 
 }  // namespace hapstab

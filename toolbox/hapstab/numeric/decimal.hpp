@@ -3,7 +3,8 @@
 // Input is exact (DESIGN.md): "0.001", "1e-3", "1/1000" and "+.001" all parse to the
 // rational 1/1000. Output: decimal strings with D significant digits, correctly rounded
 // (round-half-even) from an exact rational, or from an enclosure when the enclosure is
-// narrow enough to decide every printed digit.
+// narrow enough to decide every printed digit, or rounded outward (decimal_outward) so that a
+// printed enclosure still contains the value.
 #pragma once
 
 #include <optional>
@@ -29,6 +30,13 @@ std::string to_decimal(const rational& x, int digits);
 /// The decimal string with `digits` significant digits that both ends of [lo, hi] round to,
 /// or nullopt when the enclosure is too wide to decide them (caller then raises precision).
 std::optional<std::string> common_decimal(const rational& lo, const rational& hi, int digits);
+
+/// q as a decimal with `digits` significant digits rounded outward (dir = -1 down, +1 up), so that
+/// printed enclosures still contain the value.
+std::string decimal_outward(const rational& q, int digits, int dir);
+
+/// 10^e, exact.
+rational pow10(long e);
 
 /// Exact rational value of a finite binary floating number (double or MPFR).
 rational exact_rational(double x);

@@ -4,7 +4,8 @@
 // a wrong lowest()), so this header replaces it; never include both. Covered: every
 // bmp::number<Backend, et_off> used in scalar.hpp (rational, mpfloat<D>, interval<D>).
 // For `rational`, epsilon() and dummy_precision() are 0: exact arithmetic has no rounding,
-// so Eigen's pivoting thresholds compare against an exact zero.
+// so Eigen's pivoting thresholds compare against an exact zero. MatQ, the exact matrix, is
+// defined here once.
 #pragma once
 
 #include <Eigen/Core>
@@ -53,3 +54,10 @@ struct NumTraits<boost::multiprecision::number<Backend, boost::multiprecision::e
 };
 
 }  // namespace Eigen
+
+namespace hapstab {
+
+/// A dynamic-size matrix of exact rationals: the one name for it in every module.
+using MatQ = Eigen::Matrix<rational, Eigen::Dynamic, Eigen::Dynamic>;
+
+}  // namespace hapstab

@@ -25,12 +25,12 @@
 namespace hapstab::flint {
 
 /// An fmpq_poly_t that clears itself.
-class QPoly {
+class FmpqPoly {
  public:
-  QPoly() { fmpq_poly_init(p_); }
-  ~QPoly() { fmpq_poly_clear(p_); }
-  QPoly(const QPoly&) = delete;
-  QPoly& operator=(const QPoly&) = delete;
+  FmpqPoly() { fmpq_poly_init(p_); }
+  ~FmpqPoly() { fmpq_poly_clear(p_); }
+  FmpqPoly(const FmpqPoly&) = delete;
+  FmpqPoly& operator=(const FmpqPoly&) = delete;
   fmpq_poly_struct* get() { return p_; }
   const fmpq_poly_struct* get() const { return p_; }
 

@@ -39,6 +39,9 @@ using ival100 = interval<100>;
 inline integer num(const rational& q) { return bmp::numerator(q); }
 inline integer den(const rational& q) { return bmp::denominator(q); }
 
+/// The sign of an exact rational: -1, 0 or +1.
+inline int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+
 /// Converts an exact rational to a floating type, correctly rounded for MPFR types
 /// (mpfr_set_q) and for double (within 1/2 ulp via a 60-digit intermediate).
 template <class Real>

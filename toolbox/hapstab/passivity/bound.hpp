@@ -25,9 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/rational_function.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::passivity {
 
@@ -55,12 +57,10 @@ void check_problem_size(const BoundProblem& p);
 /// form every method and the closed-form matcher work on.
 BoundProblem with_integer_delay(BoundProblem p);
 
-/// Number of distinct roots of p on the unit circle |z| = 1 (exact). p must not be zero.
-int unit_circle_roots(const Polynomial<rational>& p);
-
-/// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
-/// poles H may have. `detail` receives the reason when false.
-bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);
+/// unit_circle_roots(p) (distinct roots on |z| = 1) and marginally_stable(d) (every root in
+/// |z| <= 1, those on the circle simple: the poles H may have) live in poly/stability.hpp.
+using hapstab::marginally_stable;
+using hapstab::unit_circle_roots;
 
 /// The exact objective as a function of c = cos(wT), without eta (see the header comment).
 struct Objective {
@@ -128,8 +128,7 @@ NecessaryCheck necessary_condition(const RationalFunction<rational>& H, const ra
 /// through the c-form (no cancellation at w -> 0). Used by figures and the grid method.
 double objective_at(const BoundProblem& p, double omega);
 
-/// q as a decimal with `digits` significant digits rounded outward (dir = -1 down, +1 up), so that
-/// printed enclosures still contain the value.
-std::string decimal_outward(const rational& q, int digits, int dir);
+/// decimal_outward(q, digits, dir): q rounded outward to `digits` digits (numeric/decimal.hpp).
+using hapstab::decimal_outward;
 
 }  // namespace hapstab::passivity

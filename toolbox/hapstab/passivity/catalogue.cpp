@@ -3,11 +3,10 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interval.hpp"
 
 namespace hapstab::passivity::catalogue {
 
-using P = Polynomial<rational>;
-using RF = RationalFunction<rational>;
 
 namespace {
 rational ipow(const rational& x, int e) {
@@ -134,10 +133,8 @@ Enclosure<rational> dirichlet_C(int digits) {
   I glo = gI(lo), ghi = gI(hi);
   // g' = y sin y < 0 on (pi, 3pi/2): g decreasing, so g(lo) > 0 > g(hi) certifies the root
   if (!(lower(glo) > 0 && upper(ghi) < 0)) throw NumericalError("dirichlet_C: root of tan y = y not certified");
-  I Y;
-  mpfi_interv_q(Y.backend().data(), lo.backend().data(), hi.backend().data());
-  I C = -cos(Y);
-  return {exact_rational(mp1000(lower(C))), exact_rational(mp1000(upper(C)))};
+  I C = -cos(ival<1000>(lo, hi));
+  return {lower_rational(C), upper_rational(C)};
 }
 
 Enclosure<rational> dirichlet_D(int digits) {
@@ -154,16 +151,16 @@ double dirichlet_approx(int N, const rational& T) {
 namespace {
 
 /// H = sum alpha_m ((z-1)/(Tz))^m exactly? (den = z^k). Returns alpha or nullopt.
-std::optional<std::vector<rational>> backward_difference_coefficients(const RF& H, const rational& T) {
-  const P& d = H.den();
+std::optional<std::vector<rational>> backward_difference_coefficients(const QRatFun& H, const rational& T) {
+  const QPoly& d = H.den();
   if (d.degree() < 0) return std::nullopt;
   for (int i = 0; i < d.degree(); ++i)
     if (d.coeff(i) != 0) return std::nullopt;  // den must be z^k (monic)
   const int k = d.degree();
   if (H.num().degree() > k) return std::nullopt;
   // z = 1/(1 - T w): H = sum_j n_j (1 - T w)^{k - j}
-  P lin(std::vector<rational>{rational(1), -T});
-  P acc;
+  QPoly lin(std::vector<rational>{rational(1), -T});
+  QPoly acc;
   for (int j = 0; j <= H.num().degree(); ++j)
     if (H.num().coeff(j) != 0) acc += lin.pow(static_cast<unsigned>(k - j)) * H.num().coeff(j);
   std::vector<rational> alpha;
@@ -173,12 +170,12 @@ std::optional<std::vector<rational>> backward_difference_coefficients(const RF& 
 }
 
 /// W = H z^-n = (1 - z) sum beta_j z^-j ? Returns beta or nullopt.
-std::optional<std::vector<rational>> fir_coefficients(const RF& H, int n) {
-  const P& d = H.den();
+std::optional<std::vector<rational>> fir_coefficients(const QRatFun& H, int n) {
+  const QPoly& d = H.den();
   for (int i = 0; i < d.degree(); ++i)
     if (d.coeff(i) != 0) return std::nullopt;
   const int k = d.degree() + n;  // W = N / z^k
-  P one_minus_z(std::vector<rational>{rational(1), rational(-1)});
+  QPoly one_minus_z(std::vector<rational>{rational(1), rational(-1)});
   auto [q, r] = divmod(H.num(), one_minus_z);
   if (!r.is_zero() || H.num().is_zero()) return std::nullopt;
   // W = (1 - z) q(z) / z^k, q of degree <= k: beta_j = coefficient of z^{k-j}
@@ -208,7 +205,7 @@ std::optional<Match> match(const BoundProblem& raw) {
   };
   const bool frac = p.frac_delay && den(*p.frac_delay / T) != 1;
   // Tustin wall: den z + 1, deg num <= 1
-  if (p.H.den() == P(std::vector<rational>{rational(1), rational(1)}) && p.H.num().degree() <= 1) {
+  if (p.H.den() == QPoly(std::vector<rational>{rational(1), rational(1)}) && p.H.num().degree() <= 1) {
     rational n0 = p.H.num().coeff(0), n1 = p.H.num().coeff(1);
     rational K = (n0 + n1) / 2, B = (n1 - n0) / 2 * T / 2;
     std::string kb = "K = " + dec(K) + ", B = " + dec(B);

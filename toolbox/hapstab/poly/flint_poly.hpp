@@ -8,7 +8,7 @@
 
 namespace hapstab::flint {
 
-void to_flint(const Polynomial<rational>& a, QPoly& out);
-Polynomial<rational> from_flint(const QPoly& p);
+void to_flint(const Polynomial<rational>& a, FmpqPoly& out);
+Polynomial<rational> from_flint(const FmpqPoly& p);
 
 }  // namespace hapstab::flint

@@ -17,13 +17,13 @@ template class RationalFunction<rational>;
 
 namespace flint {
 
-void to_flint(const Polynomial<rational>& a, QPoly& out) {
+void to_flint(const Polynomial<rational>& a, FmpqPoly& out) {
   const auto& c = a.coeffs();
   std::vector<__mpq_struct> view(c.size());  // shallow views of the coefficients, read only
   for (size_t i = 0; i < c.size(); ++i) view[i] = *c[i].backend().data();
   fmpq_poly_set_array_mpq(out.get(), reinterpret_cast<const mpq_t*>(view.data()), slong(c.size()));
 }
-Polynomial<rational> from_flint(const QPoly& p) {
+Polynomial<rational> from_flint(const FmpqPoly& p) {
   std::vector<rational> c(size_t(fmpq_poly_length(p.get())));
   for (size_t i = 0; i < c.size(); ++i) fmpq_poly_get_coeff_mpq(c[i].backend().data(), p.get(), slong(i));
   return Polynomial<rational>(std::move(c));
@@ -37,7 +37,7 @@ using flint::to_flint;
 namespace detail {
 
 Polynomial<rational> flint_mul(const Polynomial<rational>& a, const Polynomial<rational>& b) {
-  flint::QPoly fa, fb, r;
+  flint::FmpqPoly fa, fb, r;
   to_flint(a, fa);
   to_flint(b, fb);
   fmpq_poly_mul(r.get(), fa.get(), fb.get());
@@ -45,7 +45,7 @@ Polynomial<rational> flint_mul(const Polynomial<rational>& a, const Polynomial<r
 }
 
 Polynomial<rational> flint_pow(const Polynomial<rational>& a, unsigned n) {
-  flint::QPoly fa, r;
+  flint::FmpqPoly fa, r;
   to_flint(a, fa);
   fmpq_poly_pow(r.get(), fa.get(), n);
   return from_flint(r);
@@ -53,7 +53,7 @@ Polynomial<rational> flint_pow(const Polynomial<rational>& a, unsigned n) {
 
 std::pair<Polynomial<rational>, Polynomial<rational>> flint_divrem(const Polynomial<rational>& a,
                                                                    const Polynomial<rational>& b) {
-  flint::QPoly fa, fb, q, r;
+  flint::FmpqPoly fa, fb, q, r;
   to_flint(a, fa);
   to_flint(b, fb);
   fmpq_poly_divrem(q.get(), r.get(), fa.get(), fb.get());
@@ -64,7 +64,7 @@ std::pair<Polynomial<rational>, Polynomial<rational>> flint_divrem(const Polynom
 
 template <>
 Polynomial<rational> gcd(Polynomial<rational> a, Polynomial<rational> b) {
-  flint::QPoly fa, fb, g;
+  flint::FmpqPoly fa, fb, g;
   to_flint(a, fa);
   to_flint(b, fb);
   fmpq_poly_gcd(g.get(), fa.get(), fb.get());  // monic; gcd(0, 0) = 0

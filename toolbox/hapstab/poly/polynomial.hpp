@@ -17,6 +17,7 @@
 // every step. gcd is monic; gcd(0, 0) = 0.
 #pragma once
 
+#include <algorithm>
 #include <complex>
 #include <initializer_list>
 #include <string>
@@ -262,10 +263,22 @@ Polynomial<F> gcd(Polynomial<F> a, Polynomial<F> b) {
   return detail::euclid_gcd(std::move(a), std::move(b));
 }
 
+/// The reciprocal polynomial x^deg p p(1/x): the coefficients in reverse order. A root r != 0 of
+/// p is a root 1/r of it, so gcd(p, reversed(p)) holds p's roots on |x| = 1 and its reciprocal pairs.
+template <class F>
+Polynomial<F> reversed(const Polynomial<F>& p) {
+  std::vector<F> c = p.coeffs();
+  std::reverse(c.begin(), c.end());
+  return Polynomial<F>(std::move(c));
+}
+
 /// "3*x^2 - 1/2*x + 1" (descending powers; "0" for the zero polynomial).
 std::string to_string(const Polynomial<rational>& p, const std::string& var = "x");
 
 extern template class Polynomial<rational>;
+
+/// The exact polynomial over Q: the one name for it in every module.
+using QPoly = Polynomial<rational>;
 extern template std::pair<Polynomial<rational>, Polynomial<rational>> divmod(const Polynomial<rational>&,
                                                                              const Polynomial<rational>&);
 template <> Polynomial<rational> gcd(Polynomial<rational>, Polynomial<rational>);

@@ -96,4 +96,7 @@ class RationalFunction {
 
 extern template class RationalFunction<rational>;
 
+/// The exact rational function (every transfer function of the toolbox): the one name for it.
+using QRatFun = RationalFunction<rational>;
+
 }  // namespace hapstab

@@ -1,7 +1,11 @@
-// Exact Schur-Cohn-Jury and Routh tests (see stability.hpp).
+// Exact Schur-Cohn-Jury and Routh tests, unit-circle roots and marginal stability (see
+// stability.hpp).
 #include "hapstab/poly/stability.hpp"
 
 #include <vector>
+
+#include "hapstab/poly/sturm.hpp"
+#include "hapstab/poly/unit_circle.hpp"
 
 namespace hapstab {
 
@@ -53,6 +57,58 @@ bool hurwitz_stable(const Polynomial<rational>& p) {
     for (size_t k = 0; k + 1 < L; ++k) r2[k] = (r1[0] * r0[k + 1] - r0[0] * r1[k + 1]) / r1[0];
     r0 = std::move(r1);
     r1 = std::move(r2);
+  }
+  return true;
+}
+
+namespace {
+
+
+// Distinct roots of the square-free s on |z| = 1: z = -1, and the real roots t of the common
+// factor of Re, Im of (1 - jt)^m s(z(t)) (the other points of the circle).
+int circle_roots_of_square_free(const QPoly& s) {
+  const int m = s.degree();
+  int on = (s(rational(-1)) == 0) ? 1 : 0;
+  ComplexPolynomial cp = unit_circle_polynomial(s, m);
+  QPoly h = cp.re.is_zero() ? cp.im : (cp.im.is_zero() ? cp.re : gcd(cp.re, cp.im));
+  if (h.degree() > 0) on += static_cast<int>(isolate_real_roots(h).size());
+  return on;
+}
+
+}  // namespace
+
+int unit_circle_roots(const QPoly& p) {
+  if (p.is_zero()) throw InputError("unit_circle_roots: the zero polynomial");
+  if (p.degree() <= 0) return 0;
+  QPoly g = gcd(p, reversed(p));  // every unit-circle root of p, and reciprocal pairs (r, 1/r)
+  return g.degree() > 0 ? circle_roots_of_square_free(square_free_part(g)) : 0;
+}
+
+bool marginally_stable(const QPoly& d, std::string* detail) {
+  if (d.is_zero()) throw InputError("the denominator of H is zero");
+  if (d.degree() == 0) return true;
+  QPoly g = gcd(d, reversed(d));  // every unit-circle root of d, and reciprocal pairs (r, 1/r)
+  QPoly d1 = d;
+  if (g.degree() > 0) {
+    for (QPoly h = gcd(d1, g); h.degree() > 0; h = gcd(d1, g)) d1 = divmod(d1, h).first;
+    // all roots of g must lie on the circle
+    QPoly s = square_free_part(g);
+    if (circle_roots_of_square_free(s) != s.degree()) {
+      if (detail) *detail = "a reciprocal pair of poles (r, 1/r) off the unit circle: one has |z| > 1";
+      return false;
+    }
+    // a pole on the circle must be simple: a repeated one is a root of d' too (z/(z-1)^2 has an
+    // impulse response k that grows without bound)
+    if (gcd(s, d.derivative()).degree() > 0) {
+      if (detail) *detail = "a repeated pole on the unit circle |z| = 1 (its impulse response grows without bound)";
+      return false;
+    }
+  }
+  // d1 has no roots on the circle: Schur-Cohn decides the rest
+  std::string why;
+  if (!schur_stable(d1, &why)) {
+    if (detail) *detail = why;
+    return false;
   }
   return true;
 }

@@ -10,6 +10,14 @@
 //                      coefficients stay at the size of subresultants instead of doubling each
 //                      step (a raw rational recursion on a degree-40 det(zI - A) never finished).
 //   hurwitz_stable(p): every root in Re s < 0 (Routh array, exact).
+//   unit_circle_roots(p): the number of distinct roots on |z| = 1. Every such root is a root of
+//                      g = gcd(p, z^deg p p(1/z)) (with the reciprocal pairs (r, 1/r) off the
+//                      circle); the roots of g's square-free part s on the circle are z = -1 and
+//                      the real roots t of gcd(Re, Im) of (1 - jt)^m s(z(t)), z = (1 + jt)/(1 - jt)
+//                      (poly/unit_circle.hpp), counted by exact isolation (poly/sturm.hpp).
+//   marginally_stable(d): every root in |z| <= 1, those on the circle simple: the poles the
+//                      passivity bound (45) allows in H. The unit-circle and reciprocal part g is
+//                      divided out and checked as above; Schur-Cohn decides the rest.
 #pragma once
 
 #include <string>
@@ -24,5 +32,12 @@ bool schur_stable(const Polynomial<rational>& p, std::string* why = nullptr);
 
 /// True iff every root of p satisfies Re s < 0 (false for the zero polynomial).
 bool hurwitz_stable(const Polynomial<rational>& p);
+
+/// Number of distinct roots of p on the unit circle |z| = 1 (exact). p must not be zero.
+int unit_circle_roots(const Polynomial<rational>& p);
+
+/// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
+/// poles H may have in (45). `detail` receives the reason when false. Throws InputError for d = 0.
+bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);
 
 }  // namespace hapstab

@@ -6,8 +6,6 @@ namespace hapstab {
 
 namespace {
 
-int sgn(const rational& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
-
 void require_nonzero(const Polynomial<rational>& p, const char* who) {
   if (p.is_zero())
     throw InputError(std::string(who) + ": the zero polynomial vanishes everywhere (infinitely many roots)");
@@ -38,7 +36,8 @@ int sign_at(const Polynomial<rational>& p, const rational& x) {
   return h > 0 ? 1 : (h < 0 ? -1 : 0);
 }
 
-// 1 + max |a_i / a_n|: every root x has |x| < bound (Cauchy).
+}  // namespace
+
 rational cauchy_bound(const Polynomial<rational>& p) {
   rational m = 0;
   const rational& an = p.leading();
@@ -49,9 +48,6 @@ rational cauchy_bound(const Polynomial<rational>& p) {
   }
   return m + 1;
 }
-
-
-}  // namespace
 
 Polynomial<rational> square_free_part(const Polynomial<rational>& p) {
   require_nonzero(p, "square_free_part");

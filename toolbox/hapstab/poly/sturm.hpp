@@ -31,6 +31,9 @@ namespace hapstab {
 /// InputError for the zero polynomial.
 Polynomial<rational> square_free_part(const Polynomial<rational>& p);
 
+/// 1 + max |a_i / a_n| (Cauchy): every root x of p has |x| < bound. p must not be zero.
+rational cauchy_bound(const Polynomial<rational>& p);
+
 /// The Sturm sequence of the square-free part of p: s0 = square_free_part(p), s1 = s0',
 /// s_{k+1} = -rem(s_{k-1}, s_k) (each scaled by a positive constant to keep coefficients
 /// small), ending in a nonzero constant. Throws InputError for the zero polynomial.

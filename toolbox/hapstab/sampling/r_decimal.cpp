@@ -2,6 +2,7 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interval.hpp"
 #include "hapstab/sampling/series.hpp"
 
 namespace hapstab::sampling {
@@ -16,7 +17,7 @@ bool bounded(const interval<D>& x) {
 template <unsigned D>
 std::optional<std::string> decide(const interval<D>& x, int digits) {
   if (!bounded(x)) return std::nullopt;
-  return common_decimal(exact_rational(mpfloat<D>(lower(x))), exact_rational(mpfloat<D>(upper(x))), digits);
+  return common_decimal(lower_rational(x), upper_rational(x), digits);
 }
 
 // im of (44) at working precision D: -(T/2) cot(theta/2) with mpfi_cot (finite near theta/2 = pi/2).
@@ -108,7 +109,7 @@ RDecimal r_decimal(const rational& T, const rational& omega, long N, int digits)
   const I twopi = 2 * pi_value<I>();
   if (N >= 1 && certainly_greater(I(twopi * I(N)), I(abs(th)))) {
     I b = r_series_error_bound(scalar_cast<I>(T), th, N);
-    rational hi = exact_rational(mpfloat<60>(upper(b)));
+    rational hi = upper_rational(b);
     out.series_error_bound = to_decimal(hi * rational(101, 100), 3);  // >= hi (see r_decimal.hpp)
   }
   return out;

@@ -2,8 +2,6 @@
 
 namespace hapstab::sampling {
 
-using RF = RationalFunction<rational>;
-using P = Polynomial<rational>;
 
 ComplexRF operator+(const ComplexRF& a, const ComplexRF& b) { return {a.re + b.re, a.im + b.im}; }
 ComplexRF operator-(const ComplexRF& a, const ComplexRF& b) { return {a.re - b.re, a.im - b.im}; }
@@ -11,7 +9,7 @@ ComplexRF operator*(const ComplexRF& a, const ComplexRF& b) {
   return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
 }
 ComplexRF operator/(const ComplexRF& a, const ComplexRF& b) {
-  RF d = b.re * b.re + b.im * b.im;
+  QRatFun d = b.re * b.re + b.im * b.im;
   if (d.is_zero()) throw InputError("ComplexRF: division by zero");
   return {(a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d};
 }
@@ -19,9 +17,9 @@ bool operator==(const ComplexRF& a, const ComplexRF& b) { return a.re == b.re &&
 ComplexRF conj(const ComplexRF& a) { return {a.re, -a.im}; }
 
 namespace tform {
-ComplexRF t() { return {RF(P::monomial(1)), RF(P())}; }
-ComplexRF j() { return {RF(P()), RF(P(rational(1)))}; }
-ComplexRF constant(const rational& c) { return {RF(P(c)), RF(P())}; }
+ComplexRF t() { return {QRatFun(QPoly::monomial(1)), QRatFun(QPoly())}; }
+ComplexRF j() { return {QRatFun(QPoly()), QRatFun(QPoly(rational(1)))}; }
+ComplexRF constant(const rational& c) { return {QRatFun(QPoly(c)), QRatFun(QPoly())}; }
 ComplexRF exp_j_theta() { return (constant(1) + j() * t()) / (constant(1) - j() * t()); }
 ComplexRF cos_theta() { return (constant(1) - t() * t()) / (constant(1) + t() * t()); }
 ComplexRF sin_theta() { return constant(2) * t() / (constant(1) + t() * t()); }
@@ -49,7 +47,7 @@ ComplexRF r_over_T_eq44() { return constant(1) / (exp_j_theta() - constant(1)); 
 ComplexRF rhat_from_eq44() { return r_over_T_eq44() / (conj(exp_j_theta()) - constant(1)); }
 
 std::string to_string(const RationalFunction<rational>& f, const std::string& var) {
-  if (f.den() == P(rational(1))) return "(" + hapstab::to_string(f.num(), var) + ")";
+  if (f.den() == QPoly(rational(1))) return "(" + hapstab::to_string(f.num(), var) + ")";
   return "(" + hapstab::to_string(f.num(), var) + ")/(" + hapstab::to_string(f.den(), var) + ")";
 }
 

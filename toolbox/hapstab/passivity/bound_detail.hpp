@@ -1,0 +1,146 @@
+// hapstab/passivity/bound_detail.hpp -- internal to the passivity bound (45), (54): what its
+// implementation files share. Not part of the public API (bound.hpp is).
+//
+//   objective.cpp         the c = cos(wT) form of the objective, exact (objective) and in
+//                         double-double (FastBound) from ONE template, c_form<C> below; the
+//                         objective evaluated on the unit circle (grid, objective_at)
+//   certified.cpp         certified maximisation of the rational objective f(c) (bound_certified)
+//   fractional_delay.cpp  t_d not a multiple of T (54): exact when t_d/T = p/q with small q,
+//                         else interval branch-and-bound over w
+//   fast.cpp              the double-double fast path (FastBound)
+//   grid.cpp              the comparison grid (bound_grid)
+//   bound.cpp             assumptions, the dispatcher bound(), the necessary condition (14), (15)
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/passivity/bound.hpp"
+
+namespace hapstab::passivity::detail {
+
+// ---- the c-form of the objective, for any coefficient type ---------------------------------
+// With W = N/D' (D' = D z^n) and c = cos(wT) (see bound.hpp):
+//   N conj(D') = sum_m (a_m cos m wT + j cs_m sin m wT),  |D'|^2 = sum_m e_m cos m wT,
+//   R = sum a_m T_m(c),  Q = sum cs_m U_{m-1}(c),  B = sum e_m T_m(c),  A = R - (1 + c) Q,
+// so that the objective without delay is f(c) = (T/2) A(c)/B(c).
+
+/// Monomial coefficients (ascending) of the Chebyshev polynomials T_0..T_M and U_0..U_M, by the
+/// recurrence X_{m+1} = 2c X_m - X_{m-1}. Integers (exact in double for M < 50).
+template <class C>
+struct ChebyshevTables {
+  std::vector<std::vector<C>> T, U;
+};
+template <class C>
+ChebyshevTables<C> chebyshev_tables(int M) {
+  ChebyshevTables<C> t;
+  t.T = {{C(1)}};
+  t.U = {{C(1)}};
+  if (M >= 1) {
+    t.T.push_back({C(0), C(1)});
+    t.U.push_back({C(0), C(2)});
+  }
+  for (int m = 2; m <= M; ++m) {
+    for (auto* tab : {&t.T, &t.U}) {
+      const auto& a = (*tab)[m - 1];
+      const auto& b = (*tab)[m - 2];
+      std::vector<C> c(static_cast<size_t>(m) + 1, C(0));
+      for (size_t i = 0; i < a.size(); ++i) c[i + 1] += 2 * a[i];
+      for (size_t i = 0; i < b.size(); ++i) c[i] -= b[i];
+      tab->push_back(std::move(c));
+    }
+  }
+  return t;
+}
+
+/// The pieces R, Q, B and A = R - (1 + c) Q in monomials of c, for coefficients C (integer
+/// for the exact objective, dd for the fast path), with a Chebyshev table of entries Basis.
+template <class C>
+struct CForm {
+  std::vector<C> R, Q, B, A;
+};
+
+/// N (ascending, numerator of W) and Dn (ascending, D z^n). `is_zero(x)` skips a vanishing
+/// Chebyshev coefficient; `to_coeff(b)` turns a table entry into a coefficient. The sums run in
+/// the same order for every C (the fast path's double-double rounding depends on it).
+template <class C, class Basis, class IsZero, class ToCoeff>
+CForm<C> c_form(const std::vector<C>& N, const std::vector<C>& Dn, const ChebyshevTables<Basis>& ct, IsZero is_zero,
+                ToCoeff to_coeff) {
+  const int nn = static_cast<int>(N.size()), nd = static_cast<int>(Dn.size());
+  const int M = std::max(nn, nd);
+  std::vector<C> a(M + 1, C{}), cs(M + 1, C{}), e(M + 1, C{});
+  for (int k = 0; k < nn; ++k)
+    for (int l = 0; l < nd; ++l) {
+      const C pr = N[k] * Dn[l];
+      const int m = k - l;
+      if (m == 0) a[0] = a[0] + pr;
+      else if (m > 0) { a[m] = a[m] + pr; cs[m] = cs[m] + pr; }
+      else { a[-m] = a[-m] + pr; cs[-m] = cs[-m] - pr; }
+    }
+  for (int l = 0; l < nd; ++l)
+    for (int l2 = l; l2 < nd; ++l2) {
+      const C pr = Dn[l] * Dn[l2];
+      if (l2 == l) e[0] = e[0] + pr;
+      else e[l2 - l] = e[l2 - l] + pr + pr;
+    }
+  // Chebyshev -> monomial
+  auto add_cheb = [&](std::vector<C>& acc, const std::vector<Basis>& basis, const C& coef) {
+    if (is_zero(coef)) return;
+    if (acc.size() < basis.size()) acc.resize(basis.size(), C{});
+    for (size_t i = 0; i < basis.size(); ++i)
+      if (basis[i] != 0) acc[i] = acc[i] + coef * to_coeff(basis[i]);
+  };
+  CForm<C> f;
+  for (int m = 0; m <= M; ++m) {
+    add_cheb(f.R, ct.T[m], a[m]);
+    if (m >= 1) add_cheb(f.Q, ct.U[m - 1], cs[m]);
+    add_cheb(f.B, ct.T[m], e[m]);
+  }
+  // A = R - (1 + c) Q
+  f.A.assign(std::max(f.R.size(), f.Q.size() + 1), C{});
+  for (size_t i = 0; i < f.R.size(); ++i) f.A[i] = f.A[i] + f.R[i];
+  for (size_t i = 0; i < f.Q.size(); ++i) {
+    f.A[i] = f.A[i] - f.Q[i];
+    f.A[i + 1] = f.A[i + 1] - f.Q[i];
+  }
+  return f;
+}
+
+// ---- shared by the methods -------------------------------------------------------------------
+
+/// An uncancelled pole of H at z = 1: b* = +inf (see certified.cpp); nullopt otherwise.
+std::optional<Bound> integrator_pole(const BoundProblem& p);
+
+/// Best decimal for an enclosure: the common rounding at `digits` digits, else fewer digits.
+std::string enclosure_decimal(const rational& lo, const rational& hi, int digits);
+
+/// The objective at theta = wT > 0 evaluated on the unit circle in the scalar R (double, mp50).
+template <class R>
+R objective_on_circle(const BoundProblem& p, const R& th);
+/// The limit of the objective at theta = 0 (exact c-form value at c = 1, with t_d's term).
+double objective_at_zero(const BoundProblem& p);
+
+/// The domain of the maximisation in certified_rational: c in [c_end, 1], where c = cos(wT/q) and
+/// c_end = cos(pi/q) is the image of w = pi/T. q = 1 (c = cos wT, c_end = -1) without a fractional
+/// delay; q > 1 for t_d = (p/q) T (certified_frac_exact). [end_lo, end_hi] are rational bounds of
+/// c_end, equal when c_end is rational (q = 1, 2, 3).
+struct Domain {
+  rational end_lo = -1, end_hi = -1;
+  int q = 1;
+  bool end_exact() const { return end_lo == end_hi; }
+};
+
+/// Certified maximum of the rational f(c) over the domain at working precision D (50, 100, 300);
+/// false when D was not enough for `digits` digits (certified.cpp).
+template <unsigned D>
+bool certified_rational(const RationalFunction<rational>& f, const BoundProblem& pb, int digits, Bound& out,
+                        const Domain& dom = {});
+
+/// bound_certified for a fractional delay t_d (fractional_delay.cpp); o is the objective of pb
+/// without t_d.
+Bound certified_fractional_delay(const Objective& o, const BoundProblem& pb, int digits);
+
+}  // namespace hapstab::passivity::detail

@@ -1,0 +1,99 @@
+// The objective of (45) in c = cos(wT), exact (see bound.hpp for why the c-form never cancels),
+// and the objective evaluated on the unit circle itself (grid method, objective_at).
+#include <cmath>
+
+#include "hapstab/passivity/bound_detail.hpp"
+
+namespace hapstab::passivity {
+
+
+namespace {
+// p scaled to integer coefficients: p = ints / scale, scale > 0 the lcm of the denominators
+std::vector<integer> integer_coeffs(const std::vector<rational>& p, integer& scale) {
+  scale = 1;
+  for (const auto& c : p) scale = bmp::lcm(scale, den(c));
+  std::vector<integer> out;
+  for (const auto& c : p) out.push_back(num(c) * (scale / den(c)));
+  return out;
+}
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// the exact objective in c = cos(wT)
+Objective objective(const QRatFun& H, const rational& T, int delay) {
+  // in integers: N = alpha n, D = beta d (shifted by z^n), so a, cs carry alpha beta and e beta^2
+  integer alpha, beta;
+  const std::vector<integer> n = integer_coeffs(H.num().coeffs(), alpha);
+  std::vector<integer> d = integer_coeffs(H.den().coeffs(), beta);
+  d.insert(d.begin(), static_cast<size_t>(delay), integer(0));  // D' = D z^n
+  const int M = std::max(static_cast<int>(n.size()), static_cast<int>(d.size()));
+  const detail::CForm<integer> cf = detail::c_form(
+      n, d, detail::chebyshev_tables<integer>(M), [](const integer& x) { return x == 0; },
+      [](const integer& x) { return x; });
+  auto poly = [](const std::vector<integer>& c, const rational& scale) {
+    std::vector<rational> r;
+    for (const auto& x : c) r.emplace_back(rational(x) * scale);
+    return QPoly(std::move(r));
+  };
+  const rational ab = 1 / rational(alpha * beta), bb = 1 / rational(beta * beta);
+  Objective o;
+  o.R = poly(cf.R, ab);
+  o.Q = poly(cf.Q, ab);
+  o.B = poly(cf.B, bb);
+  // f = (T/2)(R - (1 + c) Q) / B = (T/2)(beta/alpha)(R' - (1 + c) Q') / B' in the integer pieces
+  o.f = QRatFun(poly(cf.A, T / 2 * rational(beta) / rational(alpha)), poly(cf.B, rational(1)));
+  return o;
+}
+
+namespace detail {
+
+// The objective at theta = wT > 0 evaluated on the unit circle itself, in the scalar R:
+//   Re{T W/(1 - z)} = (T/2) (Re W - cot(theta/2) Im W),  W = H(z) z^-n e^{-j theta t_d/T},
+// since 1/(1 - e^{j theta}) = 1/2 + (j/2) cot(theta/2). Horner on |z| = 1 keeps the relative
+// accuracy of R whatever the degree; the c-form A(c)/B(c) does not: its monomial coefficients
+// grow like 2^degree, and in double it returned 0.34 for z^-50 (b* = 0.0505) and 1e171 for
+// z^-500. At theta = 0 the limit is the exact c-form value at c = 1.
+template <class R>
+R objective_on_circle(const BoundProblem& p, const R& th) {
+  const R zr = cos(th), zi = sin(th);
+  auto horner = [&](const QPoly& poly, R& re, R& im) {
+    re = 0, im = 0;
+    for (size_t i = poly.coeffs().size(); i-- > 0;) {
+      const R nr = re * zr - im * zi + to_real<R>(poly.coeffs()[i]);
+      im = re * zi + im * zr;
+      re = nr;
+    }
+  };
+  R nr, ni, dr, di;
+  horner(p.H.num(), nr, ni);
+  horner(p.H.den(), dr, di);
+  const R d2 = dr * dr + di * di;
+  const R hr = (nr * dr + ni * di) / d2, hi = (ni * dr - nr * di) / d2;
+  R lag = th * R(p.delay);
+  if (p.frac_delay) lag += th * to_real<R>(*p.frac_delay / p.T);
+  const R cr = cos(lag), ci = -sin(lag);
+  const R wr = hr * cr - hi * ci, wi = hr * ci + hi * cr;
+  return to_real<R>(p.T) / 2 * (wr - wi * cos(th / 2) / sin(th / 2)) + to_real<R>(p.eta);
+}
+template double objective_on_circle<double>(const BoundProblem&, const double&);
+template mp50 objective_on_circle<mp50>(const BoundProblem&, const mp50&);
+
+// The limit at theta = 0 (exact: the c-form at c = 1, plus the fractional delay's term).
+double objective_at_zero(const BoundProblem& p) {
+  using R = mp50;
+  Objective o = objective(p.H, p.T, p.delay);
+  const R one(1);
+  if (!p.frac_delay) return static_cast<double>(to_real<R>(o.f.num()(rational(1)) / o.f.den()(rational(1))) + to_real<R>(p.eta));
+  const R tau = to_real<R>(*p.frac_delay / p.T);
+  const R num = (to_real<R>(o.R(rational(1))) - 2 * to_real<R>(o.Q(rational(1)))) + to_real<R>(o.R(rational(1))) * 2 * tau;
+  return static_cast<double>(to_real<R>(p.T) / 2 * num / to_real<R>(o.B(rational(1))) + to_real<R>(p.eta));
+}
+
+}  // namespace detail
+
+double objective_at(const BoundProblem& p, double omega) {
+  if (omega == 0) return detail::objective_at_zero(p);
+  return static_cast<double>(detail::objective_on_circle<mp50>(p, mp50(omega) * to_real<mp50>(p.T)));
+}
+
+}  // namespace hapstab::passivity
