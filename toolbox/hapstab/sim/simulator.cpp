@@ -487,23 +487,59 @@ SimResult Simulator::run(const SimOptions& o) const {
 }
 
 // ---------------------------------------------------------------------------------------
+namespace {
+
+// Half the peak-to-peak of y[a, b).
+double half_range(const std::vector<double>& y, size_t a, size_t b) {
+  double lo = y[a], hi = y[a];
+  for (size_t i = a; i < b; ++i) {
+    lo = std::min(lo, y[i]);
+    hi = std::max(hi, y[i]);
+  }
+  return 0.5 * (hi - lo);
+}
+
+// The shortest period P >= 2 with which the second half repeats exactly (within 1e-6 of the
+// amplitude a2); 0 when there is none.
+size_t exact_period(const std::vector<double>& y, double a2) {
+  const size_t n = y.size(), h = n / 2;
+  for (size_t P = 2; P <= h / 2; ++P) {
+    bool ok = true;
+    for (size_t i = h + P; i < n && ok; ++i) ok = std::fabs(y[i] - y[i - P]) <= 1e-6 * a2;
+    if (ok) return P;
+  }
+  return 0;
+}
+
+// The mean period (in samples) between upward crossings of the mean over the second half
+// (quasi-periodic cycles); none below three crossings.
+std::optional<double> crossing_period(const std::vector<double>& y) {
+  const size_t n = y.size(), h = n / 2;
+  double mean = 0;
+  for (size_t i = h; i < n; ++i) mean += y[i];
+  mean /= double(n - h);
+  long first = -1, last = -1, count = 0;
+  for (size_t i = h + 1; i < n; ++i)
+    if (y[i - 1] < mean && y[i] >= mean) {
+      if (first < 0) first = long(i);
+      last = long(i);
+      ++count;
+    }
+  if (count < 3) return std::nullopt;
+  return double(last - first) / double(count - 1);
+}
+
+}  // namespace
+
 std::optional<LimitCycle> detect_limit_cycle(const std::vector<double>& y, double T, std::string& trend) {
   const size_t n = y.size();
   if (n < 16) {
     trend = "rest";
     return std::nullopt;
   }
-  auto amp_of = [&](size_t a, size_t b) {
-    double lo = y[a], hi = y[a];
-    for (size_t i = a; i < b; ++i) {
-      lo = std::min(lo, y[i]);
-      hi = std::max(hi, y[i]);
-    }
-    return 0.5 * (hi - lo);
-  };
   double scale = 0;
   for (double x : y) scale = std::max(scale, std::fabs(x));
-  const double a1 = amp_of(0, n / 2), a2 = amp_of(n / 2, n);
+  const double a1 = half_range(y, 0, n / 2), a2 = half_range(y, n / 2, n);
   // At rest: the oscillation is below 1e-9 of the signal's size (or below 1e-15 absolute).
   if (a2 <= 1e-9 * scale + 1e-15) {
     trend = "rest";
@@ -521,32 +557,15 @@ std::optional<LimitCycle> detect_limit_cycle(const std::vector<double>& y, doubl
   LimitCycle lc;
   lc.amplitude = a2;
   // Exact repetition of the sampled sequence over the second half.
-  const size_t h = n / 2;
-  for (size_t P = 2; P <= h / 2; ++P) {
-    bool ok = true;
-    for (size_t i = h + P; i < n && ok; ++i) ok = std::fabs(y[i] - y[i - P]) <= 1e-6 * a2;
-    if (ok) {
-      lc.period_samples = long(P);
-      lc.period = double(P) * T;
-      return lc;
-    }
+  if (const size_t P = exact_period(y, a2)) {
+    lc.period_samples = long(P);
+    lc.period = double(P) * T;
+    return lc;
   }
-  // Otherwise the mean period between upward crossings of the mean (quasi-periodic cycles).
-  double mean = 0;
-  for (size_t i = h; i < n; ++i) mean += y[i];
-  mean /= double(n - h);
-  long first = -1, last = -1, count = 0;
-  for (size_t i = h + 1; i < n; ++i)
-    if (y[i - 1] < mean && y[i] >= mean) {
-      if (first < 0) first = long(i);
-      last = long(i);
-      ++count;
-    }
-  if (count < 3) {
-    trend = "steady";
-    return std::nullopt;  // no oscillation to speak of (a slow drift)
-  }
-  lc.period = double(last - first) / double(count - 1) * T;
+  // Otherwise the mean period between upward crossings of the mean.
+  const auto samples = crossing_period(y);
+  if (!samples) return std::nullopt;  // no oscillation to speak of (a slow drift); trend stays "steady"
+  lc.period = *samples * T;
   return lc;
 }
 
