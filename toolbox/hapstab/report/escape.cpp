@@ -63,6 +63,25 @@ std::string map_text(std::string_view s, F each, bool keep_newlines = false) {
 
 void plain(std::string& o, char c) { o += c; }
 
+// One ASCII character and what it becomes in the target language.
+struct Substitution {
+  char c;
+  const char* with;
+};
+
+// map_text with a table: each listed character becomes its replacement, the others stay.
+template <size_t K>
+std::string substitute(std::string_view s, const Substitution (&table)[K]) {
+  return map_text(s, [&](std::string& o, char c) {
+    for (const auto& r : table)
+      if (r.c == c) {
+        o += r.with;
+        return;
+      }
+    o += c;
+  });
+}
+
 }  // namespace
 
 std::string text(std::string_view s, bool keep_newlines) { return map_text(s, plain, keep_newlines); }
@@ -78,7 +97,8 @@ bool is_clean_text(std::string_view s) {
 }
 
 std::string comment(std::string_view s) {
-  return map_text(s, [](std::string& o, char c) { o += c == '\t' ? ' ' : c; });
+  static constexpr Substitution table[] = {{'\t', " "}};
+  return substitute(s, table);
 }
 
 namespace gnuplot {
@@ -126,40 +146,19 @@ std::string cell(std::string_view s) {
 
 namespace latex {
 std::string escape(std::string_view s) {
-  return map_text(s, [](std::string& o, char c) {
-    switch (c) {
-      case '\\': o += "\\textbackslash{}"; break;
-      case '{': o += "\\{"; break;
-      case '}': o += "\\}"; break;
-      case '$': o += "\\$"; break;
-      case '&': o += "\\&"; break;
-      case '#': o += "\\#"; break;
-      case '^': o += "\\textasciicircum{}"; break;
-      case '_': o += "\\_"; break;
-      case '~': o += "\\textasciitilde{}"; break;
-      case '%': o += "\\%"; break;
-      case '<': o += "\\textless{}"; break;  // in the default OT1 encoding < > | print as other glyphs
-      case '>': o += "\\textgreater{}"; break;
-      case '|': o += "\\textbar{}"; break;
-      case '\t': o += ' '; break;
-      default: o += c;
-    }
-  });
+  static constexpr Substitution table[] = {
+      {'\\', "\\textbackslash{}"}, {'{', "\\{"}, {'}', "\\}"}, {'$', "\\$"}, {'&', "\\&"}, {'#', "\\#"},
+      {'^', "\\textasciicircum{}"}, {'_', "\\_"}, {'~', "\\textasciitilde{}"}, {'%', "\\%"},
+      // in the default OT1 encoding < > | print as other glyphs
+      {'<', "\\textless{}"}, {'>', "\\textgreater{}"}, {'|', "\\textbar{}"}, {'\t', " "}};
+  return substitute(s, table);
 }
 }  // namespace latex
 
 namespace html {
 std::string text(std::string_view s) {
-  return map_text(s, [](std::string& o, char c) {
-    switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&#39;"; break;
-      default: o += c;
-    }
-  });
+  static constexpr Substitution table[] = {{'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}, {'\'', "&#39;"}};
+  return substitute(s, table);
 }
 
 std::string attribute(std::string_view s) {
@@ -185,18 +184,9 @@ std::string url_component(std::string_view s) {
 
 namespace markdown {
 std::string cell(std::string_view s) {
-  return map_text(s, [](std::string& o, char c) {
-    switch (c) {
-      case '|': case '\\': case '`': case '[': case ']':
-        o += '\\';
-        o += c;
-        break;
-      case '<': o += "&lt;"; break;
-      case '&': o += "&amp;"; break;
-      case '\t': o += ' '; break;
-      default: o += c;
-    }
-  });
+  static constexpr Substitution table[] = {{'|', "\\|"},   {'\\', "\\\\"}, {'`', "\\`"}, {'[', "\\["}, {']', "\\]"},
+                                           {'<', "&lt;"}, {'&', "&amp;"}, {'\t', " "}};
+  return substitute(s, table);
 }
 
 std::string code(std::string_view s) {

@@ -26,16 +26,14 @@ int LoopSpec::dofs() const {
   return n;
 }
 
-ComposedLoop compose(const LoopSpec& spec) {
-  if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
-  if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());
-  const int N = spec.dofs();
-  if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
-  ComposedLoop L;
-  L.N = N;
-  L.T = spec.T;
+namespace {
 
-  // ---- devices: block diagonal, force -> velocity ----
+// ---- devices: block diagonal, force -> velocity ----
+struct DeviceStack {
+  MQ A, B, C;  ///< s_d' = A s_d + B F, v = C s_d
+};
+
+DeviceStack stack_devices(const LoopSpec& spec, int N, std::vector<std::optional<Q>>& mass) {
   Eigen::Index nd = 0;
   for (const auto& d : spec.devices) {
     d.G.validate(d.name);
@@ -45,60 +43,73 @@ ComposedLoop compose(const LoopSpec& spec) {
     if (!d.G.D.isZero()) throw InputError(d.name + ": a device must be strictly proper (D = 0: force cannot move it instantly)");
     nd += d.G.states();
   }
-  MQ Ad = zeros(nd, nd), Bd = zeros(nd, N), Cd = zeros(N, nd);
-  L.mass.assign(N, std::nullopt);
-  {
-    Eigen::Index so = 0;
-    int dof = 0;
-    for (const auto& d : spec.devices) {
-      auto n = d.G.states(), k = d.G.inputs();
-      Ad.block(so, so, n, n) = d.G.A;
-      Bd.block(so, dof, n, k) = d.G.B;
-      Cd.block(dof, so, k, n) = d.G.C;
-      if (d.mass)
-        for (Eigen::Index i = 0; i < k && i < Eigen::Index(d.mass->size()); ++i) L.mass[dof + i] = (*d.mass)[i];
-      so += n;
-      dof += int(k);
-    }
+  DeviceStack st{zeros(nd, nd), zeros(nd, N), zeros(N, nd)};
+  mass.assign(N, std::nullopt);
+  Eigen::Index so = 0;
+  int dof = 0;
+  for (const auto& d : spec.devices) {
+    auto n = d.G.states(), k = d.G.inputs();
+    st.A.block(so, so, n, n) = d.G.A;
+    st.B.block(so, dof, n, k) = d.G.B;
+    st.C.block(dof, so, k, n) = d.G.C;
+    if (d.mass)
+      for (Eigen::Index i = 0; i < k && i < Eigen::Index(d.mass->size()); ++i) mass[dof + i] = (*d.mass)[i];
+    so += n;
+    dof += int(k);
   }
+  return st;
+}
 
-  // ---- operators: proper part Z (ports) and inertia Mo ----
+// ---- operators: proper part Z (ports) and inertia Mo ----
+struct OperatorStack {
+  MQ A, B, C, D, M;  ///< s_o' = A s_o + B v, force C s_o + D v + M v' (on every DOF)
+};
+
+void check_operator(const OperatorBlock& o, int N) {
+  o.Z.validate(o.name);
+  if (o.Z.is_discrete()) throw InputError(o.name + ": an operator must be continuous (T = 0)");
+  const auto p = Eigen::Index(o.ports.size());
+  if (o.Z.inputs() != p || o.Z.outputs() != p)
+    throw InputError(o.name + ": acts on " + std::to_string(p) + " DOF(s) but its impedance is " + dims(o.Z));
+  for (int j : o.ports)
+    if (j < 0 || j >= N)
+      throw InputError(o.name + ": port DOF " + std::to_string(j) + " does not exist (the devices give " +
+                       std::to_string(N) + " DOFs, numbered from 0)");
+  if (!o.mass.empty() && Eigen::Index(o.mass.size()) != p)
+    throw InputError(o.name + ": mass needs one entry per port (" + std::to_string(p) + ")");
+  for (const auto& m : o.mass)
+    if (m < 0) throw InputError(o.name + ": operator mass must be >= 0");
+}
+
+OperatorStack stack_operators(const LoopSpec& spec, int N) {
   Eigen::Index no = 0;
   for (const auto& o : spec.operators) {
-    o.Z.validate(o.name);
-    if (o.Z.is_discrete()) throw InputError(o.name + ": an operator must be continuous (T = 0)");
-    const auto p = Eigen::Index(o.ports.size());
-    if (o.Z.inputs() != p || o.Z.outputs() != p)
-      throw InputError(o.name + ": acts on " + std::to_string(p) + " DOF(s) but its impedance is " + dims(o.Z));
-    for (int j : o.ports)
-      if (j < 0 || j >= N)
-        throw InputError(o.name + ": port DOF " + std::to_string(j) + " does not exist (the devices give " +
-                         std::to_string(N) + " DOFs, numbered from 0)");
-    if (!o.mass.empty() && Eigen::Index(o.mass.size()) != p)
-      throw InputError(o.name + ": mass needs one entry per port (" + std::to_string(p) + ")");
-    for (const auto& m : o.mass)
-      if (m < 0) throw InputError(o.name + ": operator mass must be >= 0");
+    check_operator(o, N);
     no += o.Z.states();
   }
-  MQ Ao = zeros(no, no), Bo = zeros(no, N), Co = zeros(N, no), Do = zeros(N, N), Mo = zeros(N, N);
-  {
-    Eigen::Index so = 0;
-    for (const auto& o : spec.operators) {
-      const auto n = o.Z.states();
-      Ao.block(so, so, n, n) = o.Z.A;
-      for (size_t a = 0; a < o.ports.size(); ++a) {
-        const int ja = o.ports[a];
-        Bo.block(so, ja, n, 1) += o.Z.B.col(Eigen::Index(a));
-        Co.block(ja, so, 1, n) += o.Z.C.row(Eigen::Index(a));
-        for (size_t b = 0; b < o.ports.size(); ++b) Do(ja, o.ports[b]) += o.Z.D(Eigen::Index(a), Eigen::Index(b));
-        if (!o.mass.empty()) Mo(ja, ja) += o.mass[a];
-      }
-      so += n;
+  OperatorStack st{zeros(no, no), zeros(no, N), zeros(N, no), zeros(N, N), zeros(N, N)};
+  Eigen::Index so = 0;
+  for (const auto& o : spec.operators) {
+    const auto n = o.Z.states();
+    st.A.block(so, so, n, n) = o.Z.A;
+    for (size_t a = 0; a < o.ports.size(); ++a) {
+      const int ja = o.ports[a];
+      st.B.block(so, ja, n, 1) += o.Z.B.col(Eigen::Index(a));
+      st.C.block(ja, so, 1, n) += o.Z.C.row(Eigen::Index(a));
+      for (size_t b = 0; b < o.ports.size(); ++b) st.D(ja, o.ports[b]) += o.Z.D(Eigen::Index(a), Eigen::Index(b));
+      if (!o.mass.empty()) st.M(ja, ja) += o.mass[a];
     }
+    so += n;
   }
+  return st;
+}
 
-  // ---- plant: s = [s_d; x; s_o], in = [u; w] ----
-  // F = u + w - Co s_o - Do v  (v = Cd s_d); s_d' = K (Ad s_d + Bd F), K = (I + Bd Mo Cd)^{-1}.
+// ---- plant: s = [s_d; x; s_o], in = [u; w] ----
+// F = u + w - Co s_o - Do v  (v = Cd s_d); s_d' = K (Ad s_d + Bd F), K = (I + Bd Mo Cd)^{-1}.
+StateSpace<Q> plant_of(const DeviceStack& dev, const OperatorStack& op, int N) {
+  const MQ &Ad = dev.A, &Bd = dev.B, &Cd = dev.C;
+  const MQ &Ao = op.A, &Bo = op.B, &Co = op.C, &Do = op.D, &Mo = op.M;
+  const Eigen::Index nd = Ad.rows(), no = Ao.rows();
   const Eigen::Index n = nd + N + no;
   MQ Kinv = MQ::Identity(nd, nd) + Bd * Mo * Cd;
   Eigen::FullPivLU<MQ> klu(Kinv);
@@ -125,35 +136,21 @@ ComposedLoop compose(const LoopSpec& spec) {
   C.block(2 * N, 0, N, n) = -Mo * vdot_s + Fs;
   D.block(2 * N, 0, N, 2 * N) = -Mo * vdot_i + Fi;
   D.block(2 * N, 0, N, N) -= MQ::Identity(N, N);
-  L.plant = StateSpace<Q>{A, B, C, D, 0};
-  L.position_state.resize(N);
-  for (int j = 0; j < N; ++j) L.position_state[j] = int(nd + j);
+  return StateSpace<Q>{A, B, C, D, 0};
+}
 
-  // ---- controller: positions -> u, with E (impedance) and V (admittance) ----
-  auto check_discrete = [&](const StateSpace<Q>& G, const std::string& what) {
-    G.validate(what);
-    if (!G.is_discrete()) throw InputError(what + ": must be a discrete block (z domain, T > 0)");
-    if (G.T != spec.T)
-      throw InputError(what + ": sample period " + G.T.str() + " differs from the scene's T = " + spec.T.str());
-    if (G.inputs() != N || G.outputs() != N)
-      throw InputError(what + ": must be " + std::to_string(N) + "x" + std::to_string(N) + " (one row/column per DOF), got " +
-                       dims(G));
-  };
-  for (int j : spec.contact)
-    if (j < 0 || j >= N) throw InputError("contact: DOF " + std::to_string(j) + " does not exist");
-  if (!spec.environment) {
-    if (spec.coupling) throw InputError("coupling: a coupling needs an environment");
-    L.controller = StateSpace<Q>{zeros(0, 0), zeros(0, N), zeros(N, 0), zeros(N, N), spec.T};
-    return L;
-  }
-  const auto& E = *spec.environment;
-  check_discrete(E, "environment");
-  if (!spec.coupling) {
-    L.controller = StateSpace<Q>{E.A, E.B, -E.C, -E.D, spec.T};
-    return L;
-  }
-  const auto& V = *spec.coupling;
-  check_discrete(V, "coupling");
+// ---- controller: positions -> u, with E (impedance) and V (admittance) ----
+void check_discrete(const StateSpace<Q>& G, const std::string& what, const Q& T, int N) {
+  G.validate(what);
+  if (!G.is_discrete()) throw InputError(what + ": must be a discrete block (z domain, T > 0)");
+  if (G.T != T) throw InputError(what + ": sample period " + G.T.str() + " differs from the scene's T = " + T.str());
+  if (G.inputs() != N || G.outputs() != N)
+    throw InputError(what + ": must be " + std::to_string(N) + "x" + std::to_string(N) + " (one row/column per DOF), got " +
+                     dims(G));
+}
+
+// E with the coupling V in parallel with the device (paper 000 (11)).
+StateSpace<Q> coupled_controller(const StateSpace<Q>& E, const StateSpace<Q>& V, int N, const Q& T) {
   // u = -(Ce se + De (m + Cv sv + Dv u))  =>  (I + De Dv) u = -(Ce se + De Cv sv + De m)
   MQ S = MQ::Identity(N, N) + E.D * V.D;
   Eigen::FullPivLU<MQ> slu(S);
@@ -176,7 +173,40 @@ ComposedLoop compose(const LoopSpec& spec) {
   Ac.block(ne, 0, nv, ne + nv) = V.B * Cu;
   Ac.block(ne, ne, nv, nv) += V.A;
   Bc.block(ne, 0, nv, N) = V.B * Du;
-  L.controller = StateSpace<Q>{Ac, Bc, Cu, Du, spec.T};
+  return StateSpace<Q>{Ac, Bc, Cu, Du, T};
+}
+
+StateSpace<Q> controller_of(const LoopSpec& spec, int N) {
+  for (int j : spec.contact)
+    if (j < 0 || j >= N) throw InputError("contact: DOF " + std::to_string(j) + " does not exist");
+  if (!spec.environment) {
+    if (spec.coupling) throw InputError("coupling: a coupling needs an environment");
+    return StateSpace<Q>{zeros(0, 0), zeros(0, N), zeros(N, 0), zeros(N, N), spec.T};
+  }
+  const auto& E = *spec.environment;
+  check_discrete(E, "environment", spec.T, N);
+  if (!spec.coupling) return StateSpace<Q>{E.A, E.B, -E.C, -E.D, spec.T};
+  const auto& V = *spec.coupling;
+  check_discrete(V, "coupling", spec.T, N);
+  return coupled_controller(E, V, N, spec.T);
+}
+
+}  // namespace
+
+ComposedLoop compose(const LoopSpec& spec) {
+  if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
+  if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());
+  const int N = spec.dofs();
+  if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
+  ComposedLoop L;
+  L.N = N;
+  L.T = spec.T;
+  const DeviceStack dev = stack_devices(spec, N, L.mass);
+  const OperatorStack op = stack_operators(spec, N);
+  L.plant = plant_of(dev, op, N);
+  L.position_state.resize(N);
+  for (int j = 0; j < N; ++j) L.position_state[j] = int(dev.A.rows() + j);
+  L.controller = controller_of(spec, N);
   return L;
 }
 

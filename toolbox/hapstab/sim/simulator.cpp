@@ -97,6 +97,52 @@ Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
 }
 
 // ---------------------------------------------------------------------------------------
+namespace {
+
+// An exogenous event at the sample instant k: an impulse (state jump Bw I) or a bias step.
+struct Event {
+  long k;
+  int dof;
+  double val;
+  bool impulse;
+};
+
+// Biases are held from the first sample instant at or after their start; impulses act at the
+// nearest sample instant (round half up). In time order; at one instant, in the scene's order.
+std::vector<Event> exogenous_events(const LoopSpec& spec, const rational& T) {
+  std::vector<Event> ev;
+  for (const auto& b : spec.biases) {
+    rational q = b.start / T;
+    long k = long(bmp::numerator(q) / bmp::denominator(q));
+    if (rational(k) * T < b.start) ++k;  // held from the first sample instant at or after start
+    ev.push_back({k, b.dof, to_real<double>(b.force), false});
+  }
+  for (const auto& im : spec.impulses) {
+    rational q = im.time / T + rational(1, 2);
+    long k = long(integer(bmp::numerator(q) / bmp::denominator(q)).convert_to<long>());  // round half up
+    ev.push_back({k, im.dof, to_real<double>(im.magnitude), true});
+  }
+  std::stable_sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) { return a.k < b.k; });
+  return ev;
+}
+
+// The intersample grid's propagations over [0, i T/M], i = 1 .. M-1.
+std::vector<Prop> fine_propagations(const LoopSpec& spec, const ComposedLoop& L, int M) {
+  std::vector<Prop> props;
+  rational q = spec.delay / L.T;
+  long ndl = long(bmp::numerator(q) / bmp::denominator(q));
+  const rational fx = spec.delay - rational(ndl) * L.T;
+  for (int i = 1; i < M; ++i) props.push_back(propagate(L.plant.A, L.plant.B, L.N, fx, L.T * rational(i, M)));
+  return props;
+}
+
+}  // namespace
+
+// One run, in the sizes NX (plant states), NC (controller states), NN (DOFs); Eigen::Dynamic
+// for any other size. The constructor sets up the discretised pieces, the initial state, the
+// events and the output buffers; run() steps period by period: events, sampler/contact/
+// controller, passivity observer, exact propagation over the period (with the port and
+// actuator energies), the intersample grid, the divergence check; then the summary.
 template <int NX, int NC, int NN>
 struct Engine {
   static constexpr int D = Eigen::Dynamic;
@@ -113,32 +159,91 @@ struct Engine {
   using VN = Eigen::Matrix<double, NN, 1>;
   using VC = Eigen::Matrix<double, NC, 1>;
   using VZ = Eigen::Matrix<double, NZ, 1>;
+  using Grams = std::vector<MZ, Eigen::aligned_allocator<MZ>>;
 
-  static void run(const Simulator& S, const LoopSpec& spec, const SimOptions& o, SimResult& R) {
-    const ComposedLoop& L = S.loop_;
-    const int N = L.N;
-    const Eigen::Index n = L.plant.states(), nc = L.controller.states(), nz = n + 2 * N;
-    const double T = to_real<double>(L.T);
-    const bool split = S.f_ > 0;
-    const bool energy = o.energy;
-    // --- matrices in the engine's sizes
-    const MX Phi1 = S.p1_.Phi, Phi2 = S.p2_.Phi;
-    const MXN Gu1 = S.p1_.Gu, Gw1 = S.p1_.Gw, Gu2 = S.p2_.Gu, Gw2 = S.p2_.Gw, Bw = S.Bw_;
-    const MNX Cx = S.Cx_, Cv = S.Cv_, Cf = S.Cf_;
-    const MNN Dfu = S.Dfu_, Dfw = S.Dfw_;
-    const MC Ac = S.Ac_;
-    const MCN Bc = S.Bc_;
-    const MNC Cc = S.Cc_;
-    const MNN Dc = S.Dc_;
-    std::vector<MZ, Eigen::aligned_allocator<MZ>> W1, W2;
+  const Simulator& S;
+  const LoopSpec& spec;
+  const SimOptions& o;
+  const ComposedLoop& L;
+  const int N;
+  const Eigen::Index n, nc, nz;
+  const double T;
+  const bool split;   ///< the delay has a fractional part: two pieces per period
+  const bool energy;
+  // --- the step matrices in the engine's sizes (piece 1: [kT, kT+f), piece 2: [kT+f, (k+1)T))
+  const MX Phi1, Phi2;
+  const MXN Gu1, Gw1, Gu2, Gw2, Bw;
+  const MNX Cx, Cv, Cf;
+  const MNN Dfu, Dfw;
+  const MC Ac;
+  const MCN Bc;
+  const MNC Cc;
+  const MNN Dc;
+  Grams W1, W2;
+  std::vector<char> contact;
+  // --- state and work vectors
+  VX s, tmp, s0;
+  VC xc, xc1;
+  VN pos, meas, u, uo, un, w, wbase, v, fh, xa, xb;
+  VZ z, Wz;
+  // --- delay ring: u_k stored at slot k % Rn
+  const long nd, Rn;
+  std::vector<VN, Eigen::aligned_allocator<VN>> ring;
+  // --- exogenous events
+  const std::vector<Event> ev;
+  size_t next_ev = 0;
+  // --- energy accumulators, velocity watch
+  std::vector<double> e_port, e_act, e_po;
+  double min_port = 0;
+  double maxv = 0;
+  bool diverged = false;
+  // --- limit-cycle watch buffer
+  int watch = 0;
+  long tail = 0;
+  std::vector<double> tailbuf;
+  Eigen::Index wpos = 0;
+  // --- intersample grid
+  const int M;
+  const bool fine;
+  std::vector<Prop> fine_props;
+  // --- output
+  SampleTrace& ST;
+  FineTrace& FT;
+  const long rec;
+
+  Engine(const Simulator& sim, const LoopSpec& sp, const SimOptions& opt, SimResult& R)
+      : S(sim), spec(sp), o(opt), L(sim.loop_), N(L.N), n(L.plant.states()), nc(L.controller.states()),
+        nz(n + 2 * N), T(to_real<double>(L.T)), split(sim.f_ > 0), energy(opt.energy), Phi1(sim.p1_.Phi),
+        Phi2(sim.p2_.Phi), Gu1(sim.p1_.Gu), Gw1(sim.p1_.Gw), Gu2(sim.p2_.Gu), Gw2(sim.p2_.Gw), Bw(sim.Bw_),
+        Cx(sim.Cx_), Cv(sim.Cv_), Cf(sim.Cf_), Dfu(sim.Dfu_), Dfw(sim.Dfw_), Ac(sim.Ac_), Bc(sim.Bc_), Cc(sim.Cc_),
+        Dc(sim.Dc_), nd(sim.nd_), Rn(sim.nd_ + 2), ev(exogenous_events(sp, L.T)), M(opt.substeps),
+        fine(opt.substeps > 1 && opt.fine_to >= opt.fine_from), ST(R.samples), FT(R.fine), rec(opt.record_every) {
     for (int j = 0; j < N; ++j) {
       W1.emplace_back(S.p1_.W[j]);
       W2.emplace_back(S.p2_.W[j]);
     }
-    std::vector<char> contact(N, 0);
+    contact.assign(size_t(N), 0);
     for (int j : spec.contact) contact[j] = 1;
-    // --- state
-    VX s = VX::Zero(n), s1(n), tmp(n), s0(n);
+    initial_state();
+    ring.assign(size_t(Rn), VN::Zero(N));
+    e_port.assign(size_t(N), 0.0);
+    e_act.assign(size_t(N), 0.0);
+    e_po.assign(size_t(N), 0.0);
+    watch = o.watch_dof;
+    if (watch < 0) watch = spec.contact.empty() ? 0 : spec.contact.front();
+    if (watch >= N) throw InputError("watch DOF " + std::to_string(watch) + " does not exist");
+    tail = std::min<long>(o.steps, std::max<long>(4096, std::min<long>(o.steps / 2, 1L << 18)));
+    tailbuf.assign(size_t(tail), 0.0);
+    wpos = L.position_state[watch];
+    if (fine) fine_props = fine_propagations(spec, L, M);
+    ST.N = FT.N = N;
+    reserve_samples();
+  }
+
+  void initial_state() {
+    s = VX::Zero(n);
+    tmp.resize(n);
+    s0.resize(n);
     for (int j = 0; j < N; ++j) {
       if (j < int(spec.x0.size())) s(L.position_state[j]) = to_real<double>(spec.x0[j]);
     }
@@ -150,226 +255,166 @@ struct Engine {
       Vec<double> sv = Cvd.completeOrthogonalDecomposition().solve(Vec<double>(v0));
       s += VX(sv);
     }
-    VC xc = VC::Zero(nc), xc1(nc);
-    VN pos(N), meas(N), u(N), uo(N), un(N), w(N), wbase(N), v(N), fh(N), xa(N), xb(N);
-    VZ z(nz), Wz(nz);
+    xc = VC::Zero(nc);
+    xc1.resize(nc);
+    for (VN* x : {&pos, &meas, &u, &uo, &un, &w, &wbase, &v, &fh, &xa, &xb}) x->resize(N);
+    z.resize(nz);
+    Wz.resize(nz);
     u.setZero();
     wbase.setZero();
-    // delay ring: u_k stored at slot k % R
-    const long nd = S.nd_;
-    const long Rn = nd + 2;
-    std::vector<VN, Eigen::aligned_allocator<VN>> ring(size_t(Rn), VN::Zero(N));
-    // exogenous events
-    struct Ev {
-      long k;
-      int dof;
-      double val;
-      bool impulse;
-    };
-    std::vector<Ev> ev;
-    for (const auto& b : spec.biases) {
-      rational q = b.start / L.T;
-      long k = long(bmp::numerator(q) / bmp::denominator(q));
-      if (rational(k) * L.T < b.start) ++k;  // held from the first sample instant at or after start
-      ev.push_back({k, b.dof, to_real<double>(b.force), false});
+  }
+
+  void reserve_samples() {
+    if (rec <= 0) return;
+    const size_t rows = size_t(o.steps / rec + 2);
+    ST.t.reserve(rows);
+    for (auto* vec : {&ST.x, &ST.v, &ST.u, &ST.fh, &ST.e_port, &ST.e_act, &ST.e_po, &ST.storage})
+      vec->reserve(rows * size_t(N));
+  }
+
+  /// The ring slot of sample i (i may be negative).
+  size_t slot(long i) const { return size_t((i % Rn + Rn) % Rn); }
+
+  void record_sample(long k) {
+    ST.t.push_back(double(k) * T);
+    pos.noalias() = Cx * s;
+    v.noalias() = Cv * s;
+    // f_h just after kT: the input active then
+    const VN& ua = split ? ring[slot(k - nd - 1)] : ring[slot(k - nd)];
+    fh.noalias() = Cf * s;
+    fh.noalias() += Dfu * ua;
+    fh.noalias() += Dfw * w;
+    for (int j = 0; j < N; ++j) {
+      ST.x.push_back(pos(j));
+      ST.v.push_back(v(j));
+      ST.u.push_back(ua(j));
+      ST.fh.push_back(fh(j));
+      ST.e_port.push_back(e_port[j]);
+      ST.e_act.push_back(e_act[j]);
+      ST.e_po.push_back(e_po[j]);
+      ST.storage.push_back(L.mass[j] ? 0.5 * to_real<double>(*L.mass[j]) * v(j) * v(j) : std::nan(""));
     }
-    for (const auto& im : spec.impulses) {
-      rational q = im.time / L.T + rational(1, 2);
-      long k = long(integer(bmp::numerator(q) / bmp::denominator(q)).convert_to<long>());  // round half up
-      ev.push_back({k, im.dof, to_real<double>(im.magnitude), true});
-    }
-    std::stable_sort(ev.begin(), ev.end(), [](const Ev& a, const Ev& b) { return a.k < b.k; });
-    size_t next_ev = 0;
-    const bool has_profile = !spec.profiles.empty();
-    // energy accumulators
-    std::vector<double> e_port(N, 0.0), e_act(N, 0.0), e_po(N, 0.0);
-    double min_port = 0;
-    double maxv = 0;
-    bool diverged = false;
-    // limit-cycle watch buffer
-    int watch = o.watch_dof;
-    if (watch < 0) watch = spec.contact.empty() ? 0 : spec.contact.front();
-    if (watch >= N) throw InputError("watch DOF " + std::to_string(watch) + " does not exist");
-    const long tail = std::min<long>(o.steps, std::max<long>(4096, std::min<long>(o.steps / 2, 1L << 18)));
-    std::vector<double> tailbuf(size_t(tail), 0.0);
-    const Eigen::Index wpos = L.position_state[watch];
-    // intersample matrices
-    const int M = o.substeps;
-    std::vector<Mat<double>> FP, FQo, FQn, FQw;
-    const bool fine = M > 1 && o.fine_to >= o.fine_from;
-    if (fine) {
-      rational q = spec.delay / L.T;
-      long ndl = long(bmp::numerator(q) / bmp::denominator(q));
-      const rational fx = spec.delay - rational(ndl) * L.T;
-      for (int i = 1; i < M; ++i) {
-        Prop p = propagate(L.plant.A, L.plant.B, N, fx, L.T * rational(i, M));
-        FP.push_back(p.P);
-        FQo.push_back(p.Qo);
-        FQn.push_back(p.Qn);
-        FQw.push_back(p.Qw);
-      }
-    }
-    auto& ST = R.samples;
-    auto& FT = R.fine;
-    ST.N = FT.N = N;
-    const long rec = o.record_every;
-    auto record_sample = [&](long k) {
-      ST.t.push_back(double(k) * T);
-      pos.noalias() = Cx * s;
-      v.noalias() = Cv * s;
-      // f_h just after kT: the input active then
-      const VN& ua = split ? ring[size_t(((k - nd - 1) % Rn + Rn) % Rn)] : ring[size_t(((k - nd) % Rn + Rn) % Rn)];
-      fh.noalias() = Cf * s;
-      fh.noalias() += Dfu * ua;
-      fh.noalias() += Dfw * w;
-      for (int j = 0; j < N; ++j) {
-        ST.x.push_back(pos(j));
-        ST.v.push_back(v(j));
-        ST.u.push_back(ua(j));
-        ST.fh.push_back(fh(j));
-        ST.e_port.push_back(e_port[j]);
-        ST.e_act.push_back(e_act[j]);
-        ST.e_po.push_back(e_po[j]);
-        ST.storage.push_back(L.mass[j] ? 0.5 * to_real<double>(*L.mass[j]) * v(j) * v(j) : std::nan(""));
-      }
-    };
-    if (rec > 0) {
-      const size_t rows = size_t(o.steps / rec + 2);
-      ST.t.reserve(rows);
-      for (auto* vec : {&ST.x, &ST.v, &ST.u, &ST.fh, &ST.e_port, &ST.e_act, &ST.e_po, &ST.storage})
-        vec->reserve(rows * size_t(N));
-    }
-    const long prog_every = std::max<long>(1, o.steps / 100);
-    long next_prog = o.progress ? prog_every : o.steps + 1;
-    long k = 0;
-    for (; k < o.steps; ++k) {
-      // ---- exogenous events at this sample instant
-      while (next_ev < ev.size() && ev[next_ev].k <= k) {
-        const Ev& e = ev[next_ev++];
-        if (e.impulse) {
-          const double vb = (Cv.row(e.dof) * s)(0);
-          s.noalias() += Bw.col(e.dof) * e.val;
-          const double va = (Cv.row(e.dof) * s)(0);
-          maxv = std::fabs(va) > maxv ? std::fabs(va) : maxv;  // the recorded sample k holds it
-          if (energy) {
-            e_port[size_t(e.dof)] += e.val * 0.5 * (vb + va);
-            e_po[size_t(e.dof)] += e.val * 0.5 * (vb + va);
-          }
-        } else {
-          wbase(e.dof) += e.val;
+  }
+
+  // Exogenous events at the sample instant k (impulses jump the state; their port energy is
+  // I (v- + v+)/2), then the held exogenous force w of this period.
+  void apply_events(long k) {
+    while (next_ev < ev.size() && ev[next_ev].k <= k) {
+      const Event& e = ev[next_ev++];
+      if (e.impulse) {
+        const double vb = (Cv.row(e.dof) * s)(0);
+        s.noalias() += Bw.col(e.dof) * e.val;
+        const double va = (Cv.row(e.dof) * s)(0);
+        maxv = std::fabs(va) > maxv ? std::fabs(va) : maxv;  // the recorded sample k holds it
+        if (energy) {
+          e_port[size_t(e.dof)] += e.val * 0.5 * (vb + va);
+          e_po[size_t(e.dof)] += e.val * 0.5 * (vb + va);
         }
-      }
-      w = wbase;
-      if (has_profile)
-        for (const auto& p : spec.profiles)
-          if (k < long(p.samples.size())) w(p.dof) += p.samples[size_t(k)];
-      // ---- sampler, contact, controller
-      pos.noalias() = Cx * s;
-      tailbuf[size_t(k % tail)] = s(wpos);
-      meas = pos;
-      for (int j = 0; j < N; ++j)
-        if (contact[size_t(j)]) meas(j) = meas(j) > 0 ? meas(j) : 0.0;
-      if (nc > 0) {
-        u.noalias() = Cc * xc;
-        u.noalias() += Dc * meas;
-        xc1.noalias() = Ac * xc;
-        xc1.noalias() += Bc * meas;
-        xc = xc1;
       } else {
-        u.noalias() = Dc * meas;
+        wbase(e.dof) += e.val;
       }
-      ring[size_t(k % Rn)] = u;
-      un = ring[size_t(((k - nd) % Rn + Rn) % Rn)];
-      if (k < nd) un.setZero();
-      if (rec > 0 && k % rec == 0) record_sample(k);
-      if (fine && double(k) * T >= o.fine_from && double(k) * T <= o.fine_to) s0 = s;
-      // ---- passivity observer (sampled f_h, v)
-      if (split) {
-        uo = ring[size_t(((k - nd - 1) % Rn + Rn) % Rn)];
-        if (k < nd + 1) uo.setZero();
-      }
-      if (energy) {
-        v.noalias() = Cv * s;
-        fh.noalias() = Cf * s;
-        fh.noalias() += Dfu * (split ? uo : un);
-        fh.noalias() += Dfw * w;
-        for (int j = 0; j < N; ++j) e_po[size_t(j)] += T * fh(j) * v(j);
-      }
-      // ---- exact propagation over the period
-      if (split) {
-        if (energy) {
-          z << s, uo, w;
-          xa.noalias() = Cx * s;
-          for (int j = 0; j < N; ++j) {
-            Wz.noalias() = W1[size_t(j)] * z;
-            e_port[size_t(j)] += z.dot(Wz);
-          }
-        }
-        tmp.noalias() = Phi1 * s;
-        tmp.noalias() += Gu1 * uo;
-        tmp.noalias() += Gw1 * w;
-        s = tmp;
-        if (energy) {
-          xb.noalias() = Cx * s;
-          for (int j = 0; j < N; ++j) e_act[size_t(j)] += uo(j) * (xb(j) - xa(j));
-        }
-      }
-      if (energy) {
-        z << s, un, w;
-        xa.noalias() = Cx * s;
-        for (int j = 0; j < N; ++j) {
-          Wz.noalias() = W2[size_t(j)] * z;
-          e_port[size_t(j)] += z.dot(Wz);
-        }
-      }
-      tmp.noalias() = Phi2 * s;
-      tmp.noalias() += Gu2 * un;
-      tmp.noalias() += Gw2 * w;
-      s = tmp;
-      if (energy) {
-        xb.noalias() = Cx * s;
-        double tot = 0;
-        for (int j = 0; j < N; ++j) {
-          e_act[size_t(j)] += un(j) * (xb(j) - xa(j));
-          tot += e_port[size_t(j)];
-        }
-        min_port = tot < min_port ? tot : min_port;
-      }
-      // ---- intersample grid (exact)
-      if (fine && double(k) * T >= o.fine_from && double(k) * T <= o.fine_to) {
-        if (!split) uo.setZero();
-        for (int i = 0; i < M; ++i) {
-          Vec<double> si = i == 0 ? Vec<double>(s0)
-                                  : Vec<double>(FP[size_t(i - 1)] * Vec<double>(s0) + FQo[size_t(i - 1)] * Vec<double>(uo) +
-                                                FQn[size_t(i - 1)] * Vec<double>(un) + FQw[size_t(i - 1)] * Vec<double>(w));
-          FT.t.push_back((double(k) + double(i) / M) * T);
-          for (int j = 0; j < N; ++j) {
-            FT.x.push_back((S.Cx_.row(j) * si)(0));
-            FT.v.push_back((S.Cv_.row(j) * si)(0));
-          }
-        }
-      }
-      // ---- divergence, max velocity
-      v.noalias() = Cv * s;
+    }
+    w = wbase;
+    if (!spec.profiles.empty())
+      for (const auto& p : spec.profiles)
+        if (k < long(p.samples.size())) w(p.dof) += p.samples[size_t(k)];
+  }
+
+  // Sampler, contact (the environment sees max(0, x_j) on contact DOFs), controller; u_k goes
+  // into the delay ring, un is the force applied from kT + f on (zero before the first).
+  void sample_and_control(long k) {
+    pos.noalias() = Cx * s;
+    tailbuf[size_t(k % tail)] = s(wpos);
+    meas = pos;
+    for (int j = 0; j < N; ++j)
+      if (contact[size_t(j)]) meas(j) = meas(j) > 0 ? meas(j) : 0.0;
+    if (nc > 0) {
+      u.noalias() = Cc * xc;
+      u.noalias() += Dc * meas;
+      xc1.noalias() = Ac * xc;
+      xc1.noalias() += Bc * meas;
+      xc = xc1;
+    } else {
+      u.noalias() = Dc * meas;
+    }
+    ring[slot(k)] = u;
+    un = ring[slot(k - nd)];
+    if (k < nd) un.setZero();
+  }
+
+  // The passivity observer: T f_h(kT) v(kT), with uo the force held over [kT, kT+f) when split.
+  void observe(long k) {
+    if (split) {
+      uo = ring[slot(k - nd - 1)];
+      if (k < nd + 1) uo.setZero();
+    }
+    if (!energy) return;
+    v.noalias() = Cv * s;
+    fh.noalias() = Cf * s;
+    fh.noalias() += Dfu * (split ? uo : un);
+    fh.noalias() += Dfw * w;
+    for (int j = 0; j < N; ++j) e_po[size_t(j)] += T * fh(j) * v(j);
+  }
+
+  // One piece of constant input ui: s+ = Phi s + Gu ui + Gw w; E_port_j += z^T W_j z with
+  // z = [s; ui; w]; E_act_j += ui_j (x_j+ - x_j).
+  void propagate_piece(const MX& Phi, const MXN& Gu, const MXN& Gw, const Grams& W, const VN& ui) {
+    if (energy) {
+      z << s, ui, w;
+      xa.noalias() = Cx * s;
       for (int j = 0; j < N; ++j) {
-        const double a = std::fabs(v(j));
-        if (!(a <= o.max_velocity)) diverged = true;
-        maxv = a > maxv ? a : maxv;
-      }
-      if (diverged) {
-        ++k;
-        break;
-      }
-      if (k + 1 == next_prog) {
-        o.progress(double(k + 1) / double(o.steps));
-        next_prog += prog_every;
+        Wz.noalias() = W[size_t(j)] * z;
+        e_port[size_t(j)] += z.dot(Wz);
       }
     }
-    if (rec > 0 && !diverged && k % rec == 0) {
-      w = wbase;
-      record_sample(k);
+    tmp.noalias() = Phi * s;
+    tmp.noalias() += Gu * ui;
+    tmp.noalias() += Gw * w;
+    s = tmp;
+    if (energy) {
+      xb.noalias() = Cx * s;
+      for (int j = 0; j < N; ++j) e_act[size_t(j)] += ui(j) * (xb(j) - xa(j));
     }
-    auto& SU = R.summary;
+  }
+
+  // The exact propagation over the period, and the running minimum of sum_j E_port_j.
+  void propagate_period() {
+    if (split) propagate_piece(Phi1, Gu1, Gw1, W1, uo);
+    propagate_piece(Phi2, Gu2, Gw2, W2, un);
+    if (energy) {
+      double tot = 0;
+      for (int j = 0; j < N; ++j) tot += e_port[size_t(j)];
+      min_port = tot < min_port ? tot : min_port;
+    }
+  }
+
+  // The exact intersample grid from s0 = s(kT): t = (k + i/M) T, i = 0 .. M-1.
+  void fine_grid(long k) {
+    if (!split) uo.setZero();
+    for (int i = 0; i < M; ++i) {
+      Vec<double> si = i == 0 ? Vec<double>(s0) : Vec<double>(fine_props[size_t(i - 1)].P * Vec<double>(s0) +
+                                                               fine_props[size_t(i - 1)].Qo * Vec<double>(uo) +
+                                                               fine_props[size_t(i - 1)].Qn * Vec<double>(un) +
+                                                               fine_props[size_t(i - 1)].Qw * Vec<double>(w));
+      FT.t.push_back((double(k) + double(i) / M) * T);
+      for (int j = 0; j < N; ++j) {
+        FT.x.push_back((S.Cx_.row(j) * si)(0));
+        FT.v.push_back((S.Cv_.row(j) * si)(0));
+      }
+    }
+  }
+
+  // Max |v_j((k+1)T)|; diverged when one exceeds max_velocity or is not finite.
+  void check_velocity() {
+    v.noalias() = Cv * s;
+    for (int j = 0; j < N; ++j) {
+      const double a = std::fabs(v(j));
+      if (!(a <= o.max_velocity)) diverged = true;
+      maxv = a > maxv ? a : maxv;
+    }
+  }
+
+  void summarise(long k, Summary& SU) const {
     SU.diverged = diverged;
     SU.steps_run = k;
     SU.max_velocity = maxv;
@@ -386,6 +431,39 @@ struct Engine {
       for (long i = 0; i < len; ++i) y[size_t(i)] = tailbuf[size_t((k - len + i) % tail)];
       SU.limit_cycle = detect_limit_cycle(y, T, SU.trend);
     }
+  }
+
+  static void run(const Simulator& S, const LoopSpec& spec, const SimOptions& o, SimResult& R) {
+    Engine e(S, spec, o, R);
+    e.summarise(e.step_all(), R.summary);
+  }
+
+  /// Runs the periods; returns the number run.
+  long step_all() {
+    const long prog_every = std::max<long>(1, o.steps / 100);
+    long next_prog = o.progress ? prog_every : o.steps + 1;
+    long k = 0;
+    for (; k < o.steps; ++k) {
+      apply_events(k);
+      sample_and_control(k);
+      if (rec > 0 && k % rec == 0) record_sample(k);
+      const bool in_window = fine && double(k) * T >= o.fine_from && double(k) * T <= o.fine_to;
+      if (in_window) s0 = s;
+      observe(k);
+      propagate_period();
+      if (in_window) fine_grid(k);
+      check_velocity();
+      if (diverged) return k + 1;
+      if (k + 1 == next_prog) {
+        o.progress(double(k + 1) / double(o.steps));
+        next_prog += prog_every;
+      }
+    }
+    if (rec > 0 && k % rec == 0) {
+      w = wbase;
+      record_sample(k);
+    }
+    return k;
   }
 };
 
@@ -409,23 +487,59 @@ SimResult Simulator::run(const SimOptions& o) const {
 }
 
 // ---------------------------------------------------------------------------------------
+namespace {
+
+// Half the peak-to-peak of y[a, b).
+double half_range(const std::vector<double>& y, size_t a, size_t b) {
+  double lo = y[a], hi = y[a];
+  for (size_t i = a; i < b; ++i) {
+    lo = std::min(lo, y[i]);
+    hi = std::max(hi, y[i]);
+  }
+  return 0.5 * (hi - lo);
+}
+
+// The shortest period P >= 2 with which the second half repeats exactly (within 1e-6 of the
+// amplitude a2); 0 when there is none.
+size_t exact_period(const std::vector<double>& y, double a2) {
+  const size_t n = y.size(), h = n / 2;
+  for (size_t P = 2; P <= h / 2; ++P) {
+    bool ok = true;
+    for (size_t i = h + P; i < n && ok; ++i) ok = std::fabs(y[i] - y[i - P]) <= 1e-6 * a2;
+    if (ok) return P;
+  }
+  return 0;
+}
+
+// The mean period (in samples) between upward crossings of the mean over the second half
+// (quasi-periodic cycles); none below three crossings.
+std::optional<double> crossing_period(const std::vector<double>& y) {
+  const size_t n = y.size(), h = n / 2;
+  double mean = 0;
+  for (size_t i = h; i < n; ++i) mean += y[i];
+  mean /= double(n - h);
+  long first = -1, last = -1, count = 0;
+  for (size_t i = h + 1; i < n; ++i)
+    if (y[i - 1] < mean && y[i] >= mean) {
+      if (first < 0) first = long(i);
+      last = long(i);
+      ++count;
+    }
+  if (count < 3) return std::nullopt;
+  return double(last - first) / double(count - 1);
+}
+
+}  // namespace
+
 std::optional<LimitCycle> detect_limit_cycle(const std::vector<double>& y, double T, std::string& trend) {
   const size_t n = y.size();
   if (n < 16) {
     trend = "rest";
     return std::nullopt;
   }
-  auto amp_of = [&](size_t a, size_t b) {
-    double lo = y[a], hi = y[a];
-    for (size_t i = a; i < b; ++i) {
-      lo = std::min(lo, y[i]);
-      hi = std::max(hi, y[i]);
-    }
-    return 0.5 * (hi - lo);
-  };
   double scale = 0;
   for (double x : y) scale = std::max(scale, std::fabs(x));
-  const double a1 = amp_of(0, n / 2), a2 = amp_of(n / 2, n);
+  const double a1 = half_range(y, 0, n / 2), a2 = half_range(y, n / 2, n);
   // At rest: the oscillation is below 1e-9 of the signal's size (or below 1e-15 absolute).
   if (a2 <= 1e-9 * scale + 1e-15) {
     trend = "rest";
@@ -443,32 +557,15 @@ std::optional<LimitCycle> detect_limit_cycle(const std::vector<double>& y, doubl
   LimitCycle lc;
   lc.amplitude = a2;
   // Exact repetition of the sampled sequence over the second half.
-  const size_t h = n / 2;
-  for (size_t P = 2; P <= h / 2; ++P) {
-    bool ok = true;
-    for (size_t i = h + P; i < n && ok; ++i) ok = std::fabs(y[i] - y[i - P]) <= 1e-6 * a2;
-    if (ok) {
-      lc.period_samples = long(P);
-      lc.period = double(P) * T;
-      return lc;
-    }
+  if (const size_t P = exact_period(y, a2)) {
+    lc.period_samples = long(P);
+    lc.period = double(P) * T;
+    return lc;
   }
-  // Otherwise the mean period between upward crossings of the mean (quasi-periodic cycles).
-  double mean = 0;
-  for (size_t i = h; i < n; ++i) mean += y[i];
-  mean /= double(n - h);
-  long first = -1, last = -1, count = 0;
-  for (size_t i = h + 1; i < n; ++i)
-    if (y[i - 1] < mean && y[i] >= mean) {
-      if (first < 0) first = long(i);
-      last = long(i);
-      ++count;
-    }
-  if (count < 3) {
-    trend = "steady";
-    return std::nullopt;  // no oscillation to speak of (a slow drift)
-  }
-  lc.period = double(last - first) / double(count - 1) * T;
+  // Otherwise the mean period between upward crossings of the mean.
+  const auto samples = crossing_period(y);
+  if (!samples) return std::nullopt;  // no oscillation to speak of (a slow drift); trend stays "steady"
+  lc.period = *samples * T;
   return lc;
 }
 

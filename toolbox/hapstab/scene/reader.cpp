@@ -1,0 +1,265 @@
+// Typed values out of a scene's TOML (see reader.hpp).
+#include "hapstab/scene/reader.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <sstream>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
+
+namespace hapstab::scene {
+
+using Q = rational;
+
+void Reader::fail(const std::string& key, const std::string& what) const {
+  throw InputError(file + ": " + key + ": " + what);
+}
+
+std::string Reader::free_text(const toml::table& t, const char* k, const std::string& key, const std::string& fallback,
+                              size_t max, bool newlines) const {
+  const toml::node* n = t.get(k);
+  if (!n) return fallback;
+  const auto* v = n->as_string();
+  if (!v) fail(key + "." + k, "expected a string");
+  const std::string& text = v->get();
+  if (text.size() > max) fail(key + "." + k, "longer than " + std::to_string(max) + " bytes");
+  if (report::text(text, newlines) != text)
+    fail(key + "." + k, "'" + report::text(text) + "' holds control characters or malformed UTF-8 (each shown "
+                            "as U+FFFD); write plain text");
+  return text;
+}
+
+Q Reader::number(const toml::node& n, const std::string& key, bool allow_names) const {
+  if (auto i = n.as_integer()) return Q(i->get());
+  if (n.is_floating_point())
+    fail(key, "write the value as a string (\"0.001\") so that it is exact; TOML floats are binary approximations");
+  auto s = n.as_string();
+  if (!s) fail(key, "expected a number (a string like \"1/1000\" or an integer)");
+  const std::string text = s->get();
+  if (auto q = try_parse_rational(text)) return *q;
+  if (!allow_names) fail(key, "'" + text + "' is not a number");
+  ParseOptions po;
+  po.variable = 's';
+  po.T = T;
+  po.parameters = params;
+  TransferFunction tf;
+  try {
+    tf = parse_tf(text, po);
+  } catch (const InputError& e) {
+    fail(key, e.what());
+  }
+  if (tf.num().degree() > 0 || tf.den().degree() > 0) fail(key, "'" + text + "' must be a constant");
+  return tf.num().is_zero() ? Q(0) : Q(tf.num().coeff(0) / tf.den().coeff(0));
+}
+
+Q Reader::number(const toml::table& t, const std::string& k, const std::string& key) const {
+  auto n = t.get(k);
+  if (!n) fail(key + "." + k, "missing");
+  return number(*n, key + "." + k);
+}
+
+double Reader::real(const toml::node& n, const std::string& key) const {
+  if (auto f = n.as_floating_point()) return f->get();
+  return to_real<double>(number(n, key));
+}
+
+void Reader::only_keys(const toml::table& t, const std::string& key, std::set<std::string> allowed) const {
+  for (const auto& [k, v] : t) {
+    (void)v;
+    if (!allowed.count(std::string(k.str()))) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      fail(key + "." + std::string(k.str()), "unknown key (expected one of: " + list + ")");
+    }
+  }
+}
+
+Mat<Q> Reader::matrix(const toml::node& n, const std::string& key) const {
+  auto a = n.as_array();
+  if (!a) fail(key, "expected a matrix: an array of rows, e.g. [[\"0\", \"1\"], [\"-1\", \"0\"]]");
+  const Eigen::Index r = Eigen::Index(a->size());
+  if (r == 0) return Mat<Q>(0, 0);
+  Eigen::Index c = -1;
+  Mat<Q> M;
+  for (Eigen::Index i = 0; i < r; ++i) {
+    auto row = (*a)[size_t(i)].as_array();
+    if (!row) fail(key, "row " + std::to_string(i) + " is not an array");
+    if (c < 0) {
+      c = Eigen::Index(row->size());
+      M = Mat<Q>::Zero(r, c);
+    }
+    if (Eigen::Index(row->size()) != c) fail(key, "rows have different lengths");
+    for (Eigen::Index j = 0; j < c; ++j)
+      M(i, j) = number((*row)[size_t(j)], key + "[" + std::to_string(i) + "][" + std::to_string(j) + "]");
+  }
+  return M;
+}
+
+TransferFunction Reader::tf_of(const std::string& text, const std::string& key, char var) const {
+  ParseOptions po;
+  po.variable = var;
+  po.T = T;
+  po.parameters = params;
+  try {
+    return parse_tf(text, po);
+  } catch (const InputError& e) {
+    fail(key, std::string("'") + text + "': " + e.what());
+  }
+}
+
+// `var`: 's' or 'z' (0: infer, then the result's domain tells).
+StateSpace<Q> Reader::block(const toml::table& t, const std::string& key, char var,
+                            const std::function<TransferFunction(const TransferFunction&)>& to_z) const {
+  const bool has_tf = t.contains("tf"), has_ss = t.contains("ss");
+  if (has_tf == has_ss) fail(key, "give exactly one of tf = \"...\" or ss = { A = ..., B = ..., C = ..., D = ... }");
+  if (has_ss) return ss_block(t, key, var);
+  try {
+    return tf_block(*t.get("tf"), key, var, to_z);
+  } catch (const InputError& e) {
+    // The realisation's own errors do not name the key yet.
+    const std::string w = e.what();
+    if (w.rfind(file, 0) == 0) throw;
+    fail(key + ".tf", w);
+  }
+}
+
+StateSpace<Q> Reader::ss_block(const toml::table& t, const std::string& key, char var) const {
+  auto s = t["ss"].as_table();
+  if (!s) fail(key + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
+  only_keys(*s, key + ".ss", {"A", "B", "C", "D"});
+  StateSpace<Q> G;
+  for (const char* k : {"A", "B", "C", "D"})
+    if (!s->contains(k)) fail(key + ".ss." + k, "missing");
+  G.A = matrix(*s->get("A"), key + ".ss.A");
+  G.B = matrix(*s->get("B"), key + ".ss.B");
+  G.C = matrix(*s->get("C"), key + ".ss.C");
+  G.D = matrix(*s->get("D"), key + ".ss.D");
+  // empty A with inputs/outputs: shape it
+  if (G.A.size() == 0) {
+    G.A = Mat<Q>(0, 0);
+    G.B = Mat<Q>(0, G.D.cols());
+    G.C = Mat<Q>(G.D.rows(), 0);
+  }
+  G.T = var == 'z' ? T : Q(0);
+  try {
+    G.validate(key + ".ss");
+  } catch (const InputError& e) {
+    fail(key + ".ss", e.what());
+  }
+  return G;
+}
+
+StateSpace<Q> Reader::tf_block(const toml::node& n, const std::string& key, char var,
+                               const std::function<TransferFunction(const TransferFunction&)>& to_z) const {
+  if (auto s = n.as_string()) {
+    auto tf = tf_of(s->get(), key + ".tf", var);
+    if (to_z) tf = to_z(tf);
+    if (!tf.is_proper()) fail(key + ".tf", "'" + s->get() + "' is improper (more zeros than poles); not realisable");
+    return tf2ss(tf);
+  }
+  auto a = n.as_array();
+  if (!a) fail(key + ".tf", "expected a string or a matrix of strings");
+  TransferMatrix M;
+  M.domain = (var == 's' && !to_z) ? Domain::s : Domain::z;
+  M.T = (var == 's' && !to_z) ? Q(0) : T;
+  for (size_t i = 0; i < a->size(); ++i) {
+    auto row = (*a)[i].as_array();
+    if (!row) fail(key + ".tf", "row " + std::to_string(i) + " is not an array");
+    M.entries.emplace_back();
+    for (size_t j = 0; j < row->size(); ++j) {
+      auto s = (*row)[j].as_string();
+      const std::string k2 = key + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+      if (!s) fail(k2, "expected a string expression");
+      auto tf = tf_of(s->get(), k2, var);
+      if (to_z) tf = to_z(tf);
+      if (!tf.is_proper()) fail(k2, "improper transfer function");
+      M.entries.back().push_back(tf);
+    }
+    if (M.entries.back().size() != M.entries.front().size()) fail(key + ".tf", "rows have different lengths");
+  }
+  return tf2ss(M);
+}
+
+// Numeric eigenvalues, tolerance 1e-9 relative to the pole's size; poles on the axis --
+// springs, integrators -- pass.
+void Reader::check_passive_claim(const StateSpace<Q>& G, const std::string& key) const {
+  if (G.states() == 0) {
+    // static: passive iff D + D^T >= 0 (checked on the eigenvalues of the symmetric part)
+    Mat<double> D(G.D.rows(), G.D.cols());
+    for (Eigen::Index i = 0; i < D.size(); ++i) D.data()[i] = to_real<double>(G.D.data()[i]);
+    if (D.rows() == D.cols() && D.rows() > 0) {
+      Eigen::SelfAdjointEigenSolver<Mat<double>> es(D + D.transpose());
+      if (es.eigenvalues().minCoeff() < -1e-12 * (1 + D.norm()))
+        fail(key, "claimed passive but D + D^T is not positive semidefinite");
+    }
+    return;
+  }
+  Mat<double> A(G.A.rows(), G.A.cols());
+  for (Eigen::Index i = 0; i < A.size(); ++i) A.data()[i] = to_real<double>(G.A.data()[i]);
+  Eigen::EigenSolver<Mat<double>> es(A, false);
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    auto l = es.eigenvalues()(i);
+    if (l.real() > 1e-9 * (1 + std::abs(l))) {
+      std::ostringstream os;
+      os << "unstable continuous block claimed passive (pole at s = " << l.real()
+         << (l.imag() >= 0 ? " + " : " - ") << std::abs(l.imag()) << "j); a passive impedance has no pole with Re s > 0";
+      fail(key, os.str());
+    }
+  }
+}
+
+const std::pair<int, int>& Reader::device(const std::string& name, const std::string& key) const {
+  auto it = device_dofs.find(name);
+  if (it == device_dofs.end()) fail(key, "names the block '" + name + "', which the scene does not define");
+  return it->second;
+}
+
+int Reader::dof_of(const toml::node& n, const std::string& key) const {
+  if (auto i = n.as_integer()) {
+    if (i->get() < 0 || i->get() >= N)
+      fail(key, "DOF " + std::to_string(i->get()) + " does not exist (the devices give " + std::to_string(N) +
+                    " DOF(s), numbered from 0)");
+    return int(i->get());
+  }
+  if (auto s = n.as_string()) {
+    const auto& [first, count] = device(s->get(), key);
+    if (count != 1) fail(key, "device '" + s->get() + "' has " + std::to_string(count) + " DOFs; give DOF numbers");
+    return first;
+  }
+  fail(key, "expected a DOF number or a device name");
+}
+
+std::vector<int> Reader::dofs_of(const toml::node& n, const std::string& key) const {
+  std::vector<int> out;
+  const auto all_of = [&](const std::string& name) {
+    const auto& [first, count] = device(name, key);
+    for (int j = 0; j < count; ++j) out.push_back(first + j);
+  };
+  if (auto a = n.as_array()) {
+    for (size_t i = 0; i < a->size(); ++i) {
+      const auto& e = (*a)[i];
+      if (auto s = e.as_string()) all_of(s->get());
+      else out.push_back(dof_of(e, key + "[" + std::to_string(i) + "]"));
+    }
+    return out;
+  }
+  if (auto s = n.as_string()) {
+    all_of(s->get());
+    return out;
+  }
+  return {dof_of(n, key)};
+}
+
+const toml::table* section(const toml::table& root, const char* k, const Reader& c) {
+  auto n = root.get(k);
+  if (!n) return nullptr;
+  auto t = n->as_table();
+  if (!t) c.fail(k, "expected a table [" + std::string(k) + "]");
+  return t;
+}
+
+}  // namespace hapstab::scene

@@ -1,0 +1,93 @@
+// hapstab/scene/reader.hpp -- typed values out of a scene's TOML, for the section readers of
+// scene.cpp (internal to the scene module). Every error is an InputError
+// "FILE: KEY: what is wrong", KEY the dotted path of the value (examples/README.md). A scene is
+// untrusted input (docs/security.md): these are the checks that keep it so (sizes of names,
+// exact numbers only, DOF indices in range, blocks realisable and, when claimed, passive).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <toml++/toml.h>
+#include <utility>
+#include <vector>
+
+#include "hapstab/lti/state_space.hpp"
+#include "hapstab/lti/tf.hpp"
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::scene {
+
+/// What a section reader knows of the scene so far: the file (for messages), its folder (for
+/// files a scene reads), T and the parameters (for expressions) and the devices' DOFs (for
+/// DOF names).
+struct Reader {
+  std::string file;
+  std::string base_dir;
+  rational T = 0;
+  std::map<std::string, rational> params;
+  std::map<std::string, std::pair<int, int>> device_dofs;  ///< name -> [first, count]
+  int N = 0;                                               ///< DOFs given by the devices so far
+
+  /// Throws InputError("file: key: what").
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+  /// Free text (names, descriptions; examples/README.md, "Names"): any Unicode, at most `max`
+  /// bytes, no control characters (a description may hold newlines), well-formed UTF-8.
+  /// Everything they reach escapes them (report/escape.hpp); they never name a file.
+  std::string free_text(const toml::table& t, const char* k, const std::string& key, const std::string& fallback,
+                        size_t max, bool newlines = false) const;
+  /// An exact number: integer, or a string holding a decimal/fraction, or (allow_names) a
+  /// constant expression of T and the parameters. TOML floats are refused.
+  rational number(const toml::node& n, const std::string& key, bool allow_names = true) const;
+  /// The number t[k], which must be present (key names the table).
+  rational number(const toml::table& t, const std::string& k, const std::string& key) const;
+  /// A plotting/profile value: a TOML float, or an exact number rounded to double.
+  double real(const toml::node& n, const std::string& key) const;
+  /// Refuses any key of `t` outside `allowed`, listing them.
+  void only_keys(const toml::table& t, const std::string& key, std::set<std::string> allowed) const;
+  /// A matrix of exact numbers: an array of rows of equal length.
+  Mat<rational> matrix(const toml::node& n, const std::string& key) const;
+  /// A transfer function in `var` ('s' or 'z') of T and the parameters.
+  TransferFunction tf_of(const std::string& text, const std::string& key, char var) const;
+  /// A block given as tf (string or matrix of strings) or ss = {A,B,C,D}; `to_z` maps each
+  /// s-domain entry to z (environment discretisation) before realisation.
+  StateSpace<rational> block(const toml::table& t, const std::string& key, char var,
+                             const std::function<TransferFunction(const TransferFunction&)>& to_z = {}) const;
+  /// A continuous block claimed passive: no pole with Re s > 0 (static: D + D^T >= 0).
+  void check_passive_claim(const StateSpace<rational>& G, const std::string& key) const;
+  /// One DOF: a number in [0, N) or the name of a one-DOF device.
+  int dof_of(const toml::node& n, const std::string& key) const;
+  /// A list of DOFs (numbers and device names; a name stands for all its DOFs), or one.
+  std::vector<int> dofs_of(const toml::node& n, const std::string& key) const;
+
+ private:
+  StateSpace<rational> ss_block(const toml::table& t, const std::string& key, char var) const;
+  StateSpace<rational> tf_block(const toml::node& n, const std::string& key, char var,
+                                const std::function<TransferFunction(const TransferFunction&)>& to_z) const;
+  const std::pair<int, int>& device(const std::string& name, const std::string& key) const;
+};
+
+/// The table root[k], or nullptr when absent; an error when it is not a table.
+const toml::table* section(const toml::table& root, const char* k, const Reader& c);
+
+/// Calls f(table, "k[i]", i) for each [[k]] table (a single [k] table counts as k[0]).
+template <class F>
+void each_table(const toml::table& root, const char* k, const Reader& c, F f) {
+  auto n = root.get(k);
+  if (!n) return;
+  if (auto t = n->as_table()) {
+    f(*t, std::string(k) + "[0]", 0);
+    return;
+  }
+  auto a = n->as_array();
+  if (!a) c.fail(k, "expected [[" + std::string(k) + "]] tables");
+  for (size_t i = 0; i < a->size(); ++i) {
+    auto t = (*a)[i].as_table();
+    if (!t) c.fail(std::string(k) + "[" + std::to_string(i) + "]", "expected a table");
+    f(*t, std::string(k) + "[" + std::to_string(i) + "]", int(i));
+  }
+}
+
+}  // namespace hapstab::scene
