@@ -52,24 +52,24 @@ Problem theorem5_shape(int m, int n, unsigned seed, double bc = 0.3, bool cap_qv
     for (int j = 0; j < m; ++j) B(i, j) = bc * N(g), C(j, i) = bc * N(g);
   D = 2.0 * MatrixXd::Identity(m, m);
   Problem p;
-  auto P = p.prog.NewSymmetric(n, "P");
-  auto X = p.prog.NewScalarIdentityBlocks(std::vector<int>(static_cast<size_t>(m), 1), "X");
-  auto QV = p.prog.NewBlockDiagonal(std::vector<int>(static_cast<size_t>(m), 1), "Q_V");
-  auto QE = p.prog.NewSymmetric(m, "Q_E");
+  auto P = p.prog.new_symmetric(n, "P");
+  auto X = p.prog.new_scalar_identity_blocks(std::vector<int>(static_cast<size_t>(m), 1), "X");
+  auto QV = p.prog.new_block_diagonal(std::vector<int>(static_cast<size_t>(m), 1), "Q_V");
+  auto QE = p.prog.new_symmetric(m, "Q_E");
   const double DeltaD = 1.37;
   Expr Pe(P), Xe(X), QVe(QV), QEe(QE);
-  p.prog.AddLmi("P > 0", Pe);
-  p.prog.AddLmi("X > 0", Xe);
-  p.prog.AddLmi("X <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - Xe, Strictness::nonstrict);
-  p.prog.AddLmi("Q_V > 0", QVe);
+  p.prog.add_lmi("P > 0", Pe);
+  p.prog.add_lmi("X > 0", Xe);
+  p.prog.add_lmi("X <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - Xe, Strictness::nonstrict);
+  p.prog.add_lmi("Q_V > 0", QVe);
   // scaling sweep: Q_V bounded too -- with only X capped, the m = 8 instance drifted along an
   // unbounded Q_V (DSDP: indefinite Schur matrix; the IPM: 60 iterations without convergence)
-  if (cap_qv) p.prog.AddLmi("Q_V <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - QVe, Strictness::nonstrict);
+  if (cap_qv) p.prog.add_lmi("Q_V <= 10 I", Expr(MatrixXd(10 * MatrixXd::Identity(m, m))) - QVe, Strictness::nonstrict);
   Expr M11 = A.transpose() * Pe * A - Pe;
   Expr M12 = A.transpose() * Pe * B - 0.5 * (C.transpose() * Xe);
   Expr M22 = B.transpose() * Pe * B - 0.5 * (Xe * D + D.transpose() * Xe) - QEe;
-  p.prog.AddLmi("(16) first", -blocks({{M11, M12}, {Expr(), M22}}));
-  p.prog.AddLmi("(16) second", {{DeltaD * Xe - QEe, -QEe}, {Expr(), QVe - QEe}});
+  p.prog.add_lmi("(16) first", -blocks({{M11, M12}, {Expr(), M22}}));
+  p.prog.add_lmi("(16) second", {{DeltaD * Xe - QEe, -QEe}, {Expr(), QVe - QEe}});
   p.vars = p.prog.num_scalars();
   p.block = n + m;
   return p;
@@ -80,9 +80,9 @@ void run(benchmark::State& st, Backend b, int m, int n, bool certify, double bc 
   Options o;
   o.backend = b;
   o.certify = certify;
-  Result r;
+  SolveResult r;
   for (auto _ : st) {
-    r = Solve(p.prog, o);
+    r = solve(p.prog, o);
     benchmark::DoNotOptimize(r.margin);
   }
   if (getenv("HAPSTAB_BENCH_DETAIL")) fprintf(stderr, "%s: %s\n", r.solver.c_str(), r.detail.c_str());

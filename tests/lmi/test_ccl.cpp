@@ -25,14 +25,14 @@ struct Sof {
 Sof sof_program(const MatrixXd& A, const MatrixXd& B, const MatrixXd& C) {
   Sof s;
   const int n = static_cast<int>(A.rows());
-  s.P = s.prog.NewSymmetric(n, "P");
-  s.Y = s.prog.NewSymmetric(n, "Y");
-  s.K = s.prog.NewFull(static_cast<int>(B.cols()), static_cast<int>(C.rows()), "K");
+  s.P = s.prog.new_symmetric(n, "P");
+  s.Y = s.prog.new_symmetric(n, "Y");
+  s.K = s.prog.new_full(static_cast<int>(B.cols()), static_cast<int>(C.rows()), "K");
   Expr Acl = Expr(A) + B * Expr(s.K) * C;
-  s.prog.AddLmi("closed loop", {{Expr(s.Y), Acl}, {Expr(), Expr(s.P)}});
-  s.prog.AddLmi("P > 0", Expr(s.P));
+  s.prog.add_lmi("closed loop", {{Expr(s.Y), Acl}, {Expr(), Expr(s.P)}});
+  s.prog.add_lmi("P > 0", Expr(s.P));
   // keep the search bounded: P <= 100 I
-  s.prog.AddLmi("P < 100 I", Expr(MatrixXd(100 * MatrixXd::Identity(n, n))) - Expr(s.P));
+  s.prog.add_lmi("P < 100 I", Expr(MatrixXd(100 * MatrixXd::Identity(n, n))) - Expr(s.P));
   return s;
 }
 
@@ -52,10 +52,10 @@ TEST(Ccl, StaticOutputFeedbackKnownAnswer) {
     auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
     ASSERT_TRUE(res.success) << to_string(b) << ": " << res.reason;
     ASSERT_FALSE(res.log.empty());
-    const double K = res.last.GetSolution(s.K)(0, 0);
+    const double K = res.last.solution(s.K)(0, 0);
     EXPECT_GT(K, -0.52) << to_string(b);
     EXPECT_LT(K, -0.12) << to_string(b);
-    EXPECT_LT(rho(A + B * res.last.GetSolution(s.K) * C), 1.0);
+    EXPECT_LT(rho(A + B * res.last.solution(s.K) * C), 1.0);
     // The objective must have come down to 2n = 4 (tolerance 1e-6 relative, ccl.hpp).
     EXPECT_LE(res.log.back().objective, 4.0 * (1 + 1e-6));
   }
@@ -71,7 +71,7 @@ TEST(Ccl, UnstabilisableReportsFailure) {
   Sof s = sof_program(A, B, C);
   CclOptions o;
   o.max_iter = 25;
-  o.accept = [&](const Result& r) { return rho(A + B * r.GetSolution(s.K) * C) < 1; };
+  o.accept = [&](const SolveResult& r) { return rho(A + B * r.solution(s.K) * C) < 1; };
   auto res = ccl_solve(s.prog, {{s.Y, s.P}}, o);
   EXPECT_FALSE(res.success) << res.reason;
   EXPECT_FALSE(res.reason.empty());

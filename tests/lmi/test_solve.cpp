@@ -41,9 +41,9 @@ MatrixXd M2(double a, double b, double c, double d) {
 // Lyapunov program: P > 0, A^T P A - P < 0 (margin objective).
 Program lyapunov(const MatrixXd& A, MatrixVariable* Pout = nullptr) {
   Program prog;
-  auto P = prog.NewSymmetric(static_cast<int>(A.rows()), "P");
-  prog.AddLmi("P > 0", Expr(P));
-  prog.AddLmi("Lyapunov", -(A.transpose() * Expr(P) * A - Expr(P)));
+  auto P = prog.new_symmetric(static_cast<int>(A.rows()), "P");
+  prog.add_lmi("P > 0", Expr(P));
+  prog.add_lmi("Lyapunov", -(A.transpose() * Expr(P) * A - Expr(P)));
   if (Pout) *Pout = P;
   return prog;
 }
@@ -54,10 +54,10 @@ Program lyapunov(const MatrixXd& A, MatrixVariable* Pout = nullptr) {
 TEST(LmiSolve, KnownMinimumBothBackends) {
   for (Backend b : kAll) {
     Program prog;
-    auto x = prog.NewScalar("x");
-    prog.AddLmi("[[x,1],[1,x]]", {{Expr(x), Expr::Scalar(1)}, {Expr(), Expr(x)}}, Strictness::nonstrict);
-    prog.SetMinimize(Expr(x));
-    Result r = Solve(prog, only(b));
+    auto x = prog.new_scalar("x");
+    prog.add_lmi("[[x,1],[1,x]]", {{Expr(x), Expr::scalar(1)}, {Expr(), Expr(x)}}, Strictness::nonstrict);
+    prog.set_minimize(Expr(x));
+    SolveResult r = solve(prog, only(b));
     ASSERT_EQ(r.status, SolveStatus::optimal) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.is_success());
     // Interior-point accuracy: gap tolerance 1e-9 (DSDP, IPM) / 1e-8 (CSDP) relative; 1e-6 absolute is
@@ -82,20 +82,20 @@ TEST(LmiSolve, KnownMinimumBothBackends) {
 TEST(LmiSolve, EqualitiesAndInequalitiesBothBackends) {
   for (Backend b : kAll) {
     Program prog;
-    auto X = prog.NewDiagonal(2, "X");
-    prog.AddLmi("X > 0", Expr(X));
+    auto X = prog.new_diagonal(2, "X");
+    prog.add_lmi("X > 0", Expr(X));
     MatrixXd e1 = MatrixXd::Zero(1, 2), e2 = MatrixXd::Zero(2, 1);
     e1(0, 0) = 1;
     e2(0, 0) = 1;
     MatrixXd ones = MatrixXd::Ones(1, 2), onesc = MatrixXd::Ones(2, 1);
-    prog.AddLinearEquality("x1 + x2 = 1", ones * Expr(X) * onesc, MatrixXd::Ones(1, 1));
-    prog.AddLinearInequality("x1 <= 0.3", -(e1 * Expr(X) * e2), MatrixXd::Constant(1, 1, -0.3));
+    prog.add_linear_equality("x1 + x2 = 1", ones * Expr(X) * onesc, MatrixXd::Ones(1, 1));
+    prog.add_linear_inequality("x1 <= 0.3", -(e1 * Expr(X) * e2), MatrixXd::Constant(1, 1, -0.3));
     Options o = only(b);
     o.scale = Scaling::never;  // keep t in original units for this known answer
-    Result r = Solve(prog, o);
+    SolveResult r = solve(prog, o);
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_NEAR(r.margin, 0.3, 1e-6) << to_string(b);
-    MatrixXd Xv = r.GetSolution(X);
+    MatrixXd Xv = r.solution(X);
     EXPECT_NEAR(Xv(0, 0), 0.3, 1e-6);
     EXPECT_NEAR(Xv(1, 1), 0.7, 1e-6);
     ASSERT_TRUE(r.certified()) << r.detail;
@@ -110,12 +110,12 @@ TEST(LmiSolve, LyapunovFeasibleCertifiedBothBackends) {
   for (Backend b : kAll) {
     MatrixVariable P;
     Program prog = lyapunov(A, &P);
-    Result r = Solve(prog, only(b));
+    SolveResult r = solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_GT(r.margin, 1e-3);
     ASSERT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
     // Independent exact re-check of the returned certificate.
-    MatQ Pq = r.GetExactSolution(P);
+    MatQ Pq = r.exact_solution(P);
     MatQ Aq = to_rational(A);
     EXPECT_TRUE(exact_definiteness(Pq).pd);
     EXPECT_TRUE(exact_definiteness(MatQ(Pq - Aq.transpose() * Pq * Aq)).pd);
@@ -139,10 +139,10 @@ TEST(LmiModel, LowRankPiecesMatchTheTerms) {
   W << A, B;
   J.leftCols(n).setIdentity();
   Program prog;
-  auto P = prog.NewSymmetric(n, "P");
-  auto t = prog.NewScalar("t");
+  auto P = prog.new_symmetric(n, "P");
+  auto t = prog.new_scalar("t");
   const Expr F = -1.0 * (W.transpose() * Expr(P) * W - J.transpose() * Expr(P) * J) +
-                 blocks({{Expr::Zero(n, n), Expr::Zero(n, 1)}, {Expr(), kron(MatrixXd::Identity(1, 1), Expr(t))}});
+                 blocks({{Expr::zero(n, n), Expr::zero(n, 1)}, {Expr(), kron(MatrixXd::Identity(1, 1), Expr(t))}});
   const LowRank& lr = F.low_rank();
   for (const auto& [k, m] : F.terms()) {
     auto it = lr.factors.find(k);
@@ -165,7 +165,7 @@ TEST(LmiModel, LowRankPiecesMatchTheTerms) {
   MatrixVariable Pv;
   Program lyap = lyapunov(A, &Pv);
   for (Backend b : {Backend::ipm, Backend::dsdp}) {
-    const Result r = Solve(lyap, only(b));
+    const SolveResult r = solve(lyap, only(b));
     ASSERT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
     EXPECT_EQ(r.verdict, Feasibility::feasible);
   }
@@ -178,7 +178,7 @@ TEST(LmiSolve, LyapunovInfeasibleBothBackendsExactFarkas) {
   MatrixXd A = M2(1.2, 0.0, 0.0, 0.5);
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, only(b));
+    SolveResult r = solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_FALSE(r.is_success());
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
@@ -189,27 +189,27 @@ TEST(LmiSolve, LyapunovInfeasibleBothBackendsExactFarkas) {
 // infeasibility itself); Solve's default (automatic) then lets DSDP decide, exactly, and says so.
 TEST(LmiSolve, AutomaticKeepsTheIpmOnlyWhenCertified) {
   Program bad = lyapunov(M2(1.2, 0.0, 0.0, 0.5));
-  Result ri = Solve(bad, only(Backend::ipm));
+  SolveResult ri = solve(bad, only(Backend::ipm));
   EXPECT_NE(ri.verdict, Feasibility::feasible) << ri.detail;
   EXPECT_FALSE(ri.certified());
-  Result ra = Solve(bad, Options{});
+  SolveResult ra = solve(bad, Options{});
   EXPECT_EQ(ra.verdict, Feasibility::infeasible) << ra.detail;
   EXPECT_EQ(ra.certificate, Certificate::infeasible_exact) << ra.detail;
   if (ra.solver == "hapstab IPM") EXPECT_EQ(ra.certificate, Certificate::infeasible_exact);
   else EXPECT_NE(ra.detail.find("hapstab IPM first"), std::string::npos) << ra.detail;
   // a feasible small program: the IPM's certified answer is the one returned
   Program good = lyapunov(M2(0.9, 0.5, -0.2, 0.7));
-  Result rg = Solve(good, Options{});
+  SolveResult rg = solve(good, Options{});
   EXPECT_EQ(rg.solver, "hapstab IPM") << rg.detail;
   EXPECT_EQ(rg.certificate, Certificate::feasible_exact) << rg.detail;
   // without certification automatic means DSDP
   Options nc;
   nc.certify = false;
-  EXPECT_EQ(Solve(good, nc).solver, "DSDP");
+  EXPECT_EQ(solve(good, nc).solver, "DSDP");
   // a program above ipm_max_rows goes to DSDP directly
   Options tiny;
   tiny.ipm_max_rows = 3;
-  Result rd = Solve(good, tiny);
+  SolveResult rd = solve(good, tiny);
   EXPECT_EQ(rd.solver, "DSDP");
   EXPECT_EQ(rd.certificate, Certificate::feasible_exact);
 }
@@ -218,11 +218,11 @@ TEST(LmiSolve, AutomaticKeepsTheIpmOnlyWhenCertified) {
 TEST(LmiSolve, ContradictoryBoundsInfeasibleBothBackends) {
   for (Backend b : kBoth) {
     Program prog;
-    auto x = prog.NewScalar("x");
-    prog.AddLmi("x >= 1", Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
-    prog.AddLmi("x <= -1", -Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
-    prog.SetMinimize(Expr(x));
-    Result r = Solve(prog, only(b));
+    auto x = prog.new_scalar("x");
+    prog.add_lmi("x >= 1", Expr(x) - Expr::scalar(1), Strictness::nonstrict);
+    prog.add_lmi("x <= -1", -Expr(x) - Expr::scalar(1), Strictness::nonstrict);
+    prog.set_minimize(Expr(x));
+    SolveResult r = solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_EQ(r.certificate, Certificate::infeasible_exact) << to_string(b) << " " << r.detail;
   }
@@ -234,11 +234,11 @@ TEST(LmiSolve, UnboundedBelowAllBackends) {
   for (bool as_lmi : {true, false})
     for (Backend b : kBoth) {
       Program prog;
-      auto x = prog.NewScalar("x");
-      if (as_lmi) prog.AddLmi("x >= 1", Expr(x) - Expr::Scalar(1), Strictness::nonstrict);
-      else prog.AddLinearInequality("x >= 1", Expr(x), MatrixXd::Ones(1, 1));
-      prog.SetMinimize(-Expr(x));
-      Result r = Solve(prog, only(b));
+      auto x = prog.new_scalar("x");
+      if (as_lmi) prog.add_lmi("x >= 1", Expr(x) - Expr::scalar(1), Strictness::nonstrict);
+      else prog.add_linear_inequality("x >= 1", Expr(x), MatrixXd::Ones(1, 1));
+      prog.set_minimize(-Expr(x));
+      SolveResult r = solve(prog, only(b));
       EXPECT_EQ(r.status, SolveStatus::unbounded) << to_string(b) << " " << r.detail;
       EXPECT_FALSE(r.is_success()) << to_string(b);
       EXPECT_FALSE(r.certified()) << to_string(b);
@@ -248,11 +248,11 @@ TEST(LmiSolve, UnboundedBelowAllBackends) {
   // stops with code 7.)
   for (Backend b : kBoth) {
     Program prog;
-    auto y = prog.NewScalar("y");
-    auto z = prog.NewScalar("z");
-    prog.AddLmi("[[y,1],[1,z]]", {{Expr(y), Expr::Scalar(1)}, {Expr(), Expr(z)}}, Strictness::nonstrict);
-    prog.SetMinimize(-Expr(y) - Expr(z));
-    Result r = Solve(prog, only(b));
+    auto y = prog.new_scalar("y");
+    auto z = prog.new_scalar("z");
+    prog.add_lmi("[[y,1],[1,z]]", {{Expr(y), Expr::scalar(1)}, {Expr(), Expr(z)}}, Strictness::nonstrict);
+    prog.set_minimize(-Expr(y) - Expr(z));
+    SolveResult r = solve(prog, only(b));
     EXPECT_EQ(r.status, SolveStatus::unbounded) << to_string(b) << " " << r.detail;
   }
 }
@@ -268,15 +268,15 @@ TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
   C << 1.25, 0;
   D << 1;
   Program prog;
-  auto P = prog.NewSymmetric(2, "P");
-  auto d = prog.NewScalar("delta");
+  auto P = prog.new_symmetric(2, "P");
+  auto d = prog.new_scalar("delta");
   Expr Pe(P), de(d);
   Expr M11 = A.transpose() * Pe * A - Pe + kron(MatrixXd(C.transpose() * C), de);
   Expr M12 = A.transpose() * Pe * B - Expr(MatrixXd(0.5 * C.transpose())) + kron(MatrixXd(C.transpose() * D), de);
   Expr M22 = B.transpose() * Pe * B - Expr(MatrixXd(D)) + kron(MatrixXd(D.transpose() * D), de);
-  prog.AddLmi("P > 0", Pe);
-  prog.AddLmi("Lemma 1 (2) < 0", -blocks({{M11, M12}, {Expr(), M22}}));
-  prog.SetMinimize(-de);
+  prog.add_lmi("P > 0", Pe);
+  prog.add_lmi("Lemma 1 (2) < 0", -blocks({{M11, M12}, {Expr(), M22}}));
+  prog.set_minimize(-de);
   Options o = only(Backend::csdp);
   o.scale = Scaling::never;
   o.csdp_time_limit = 1.0;
@@ -286,7 +286,7 @@ TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
   const char* old_tmp = std::getenv("TMPDIR");
   const std::string saved = old_tmp ? old_tmp : "";
   ::setenv("TMPDIR", tmpl, 1);
-  Result r = Solve(prog, o);
+  SolveResult r = solve(prog, o);
   if (old_tmp) ::setenv("TMPDIR", saved.c_str(), 1);
   else ::unsetenv("TMPDIR");
   EXPECT_EQ(::rmdir(tmpl), 0) << "the CSDP folder was left in " << tmpl;  // rmdir fails unless empty
@@ -301,7 +301,7 @@ TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
       {
         Options bad = o;
         bad.csdp_time_limit = -1;
-        Solve(prog, bad);
+        solve(prog, bad);
       },
       InputError);
 }
@@ -328,11 +328,11 @@ TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
       X += T;
     }
     Program prog;
-    auto P = prog.NewSymmetric(3, "P");
-    prog.AddLmi("P >= 0", Expr(P), Strictness::nonstrict);
-    prog.AddLmi("A'PA - P + I <= 0", -(A.transpose() * Expr(P) * A - Expr(P) + Expr::Identity(3)), Strictness::nonstrict);
-    prog.SetMinimize(trace(Expr(P)));
-    Result rd = Solve(prog, only(Backend::dsdp)), rc = Solve(prog, only(Backend::csdp));
+    auto P = prog.new_symmetric(3, "P");
+    prog.add_lmi("P >= 0", Expr(P), Strictness::nonstrict);
+    prog.add_lmi("A'PA - P + I <= 0", -(A.transpose() * Expr(P) * A - Expr(P) + Expr::identity(3)), Strictness::nonstrict);
+    prog.set_minimize(trace(Expr(P)));
+    SolveResult rd = solve(prog, only(Backend::dsdp)), rc = solve(prog, only(Backend::csdp));
     ASSERT_EQ(rd.verdict, rc.verdict) << "trial " << trial << ": DSDP " << rd.detail << " | CSDP " << rc.detail;
     if (rho < 1) {
       ASSERT_EQ(rd.verdict, Feasibility::feasible) << rd.detail;
@@ -340,7 +340,7 @@ TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
       // conditioning (|A| up to ~5 after scaling) costs at most two more digits.
       // A solver that stopped early at a feasible point (status numerical_trouble, verdict
       // feasible) gives an upper bound only.
-      for (const Result* r : {&rd, &rc}) {
+      for (const SolveResult* r : {&rd, &rc}) {
         if (r->status == SolveStatus::optimal) EXPECT_NEAR(r->objective, X.trace(), 1e-6 * X.trace()) << "trial " << trial;
         else EXPECT_GE(r->objective, X.trace() * (1 - 1e-9)) << "trial " << trial << " " << r->detail;
       }
@@ -349,7 +349,7 @@ TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
       // Z >= 0 with A Z A' >= Z), irrational for a random A: no rational certificate exists
       // and numeric_only is the honest answer; never "none" or a feasible claim.
       EXPECT_EQ(rd.verdict, Feasibility::infeasible) << rd.detail;
-      for (const Result* r : {&rd, &rc})
+      for (const SolveResult* r : {&rd, &rc})
         EXPECT_TRUE(r->certificate == Certificate::infeasible_exact || r->certificate == Certificate::numeric_only)
             << r->detail;
     }
@@ -358,11 +358,11 @@ TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
 
 TEST(LmiSolve, InconsistentEqualitiesAreExactlyInfeasible) {
   Program prog;
-  auto x = prog.NewScalar("x");
-  prog.AddLmi("x > 0", Expr(x));
-  prog.AddLinearEquality("x = 1", Expr(x), MatrixXd::Ones(1, 1));
-  prog.AddLinearEquality("2x = 3", 2.0 * Expr(x), MatrixXd::Constant(1, 1, 3));
-  Result r = Solve(prog);
+  auto x = prog.new_scalar("x");
+  prog.add_lmi("x > 0", Expr(x));
+  prog.add_linear_equality("x = 1", Expr(x), MatrixXd::Ones(1, 1));
+  prog.add_linear_equality("2x = 3", 2.0 * Expr(x), MatrixXd::Constant(1, 1, 3));
+  SolveResult r = solve(prog);
   EXPECT_EQ(r.verdict, Feasibility::infeasible);
   EXPECT_EQ(r.certificate, Certificate::infeasible_exact);
   EXPECT_NE(r.detail.find("2x = 3"), std::string::npos) << r.detail;
@@ -370,11 +370,11 @@ TEST(LmiSolve, InconsistentEqualitiesAreExactlyInfeasible) {
 
 TEST(LmiModel, MalformedProgramsNameTheConstraint) {
   Program prog;
-  auto P = prog.NewSymmetric(2, "P");
-  auto x = prog.NewScalar("x");
+  auto P = prog.new_symmetric(2, "P");
+  auto x = prog.new_scalar("x");
   // (1,2) block is 2x1 but (2,2) is 3x3: the second block row has inconsistent heights.
   try {
-    prog.AddLmi("coupling", {{Expr(P), Expr(MatrixXd::Ones(2, 1))}, {Expr(), Expr::Identity(3)}});
+    prog.add_lmi("coupling", {{Expr(P), Expr(MatrixXd::Ones(2, 1))}, {Expr(), Expr::identity(3)}});
     FAIL() << "dimension mismatch accepted";
   } catch (const InputError& e) {
     std::string m = e.what();
@@ -382,13 +382,13 @@ TEST(LmiModel, MalformedProgramsNameTheConstraint) {
     EXPECT_NE(m.find("block (2,2)"), std::string::npos) << m;
   }
   try {
-    prog.AddLmi("skew", {{Expr(x), Expr::Scalar(1)}, {Expr::Scalar(2), Expr(x)}});
+    prog.add_lmi("skew", {{Expr(x), Expr::scalar(1)}, {Expr::scalar(2), Expr(x)}});
     FAIL() << "non-symmetric LMI accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("skew"), std::string::npos);
   }
   try {
-    prog.AddLmi("rect", Expr(MatrixXd::Ones(2, 3)));
+    prog.add_lmi("rect", Expr(MatrixXd::Ones(2, 3)));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("rect"), std::string::npos);
@@ -399,7 +399,7 @@ TEST(LmiModel, MalformedProgramsNameTheConstraint) {
   EXPECT_FALSE(bad_sum.ok());
   Expr chained = 2.0 * bad_sum.transpose() + Expr(P);  // the first error survives
   try {
-    prog.AddLmi("(16) first", {{Expr(P), Expr(MatrixXd::Zero(2, 2))}, {Expr(), chained}});
+    prog.add_lmi("(16) first", {{Expr(P), Expr(MatrixXd::Zero(2, 2))}, {Expr(), chained}});
     FAIL() << "invalid block accepted";
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -408,7 +408,7 @@ TEST(LmiModel, MalformedProgramsNameTheConstraint) {
     EXPECT_NE(m.find("cannot add a 2x2 and a 3x3"), std::string::npos) << m;
   }
   try {
-    prog.AddLinearInequality("L x >= 0", MatrixXd::Ones(1, 3) * Expr(P), MatrixXd::Zero(1, 2));
+    prog.add_linear_inequality("L x >= 0", MatrixXd::Ones(1, 3) * Expr(P), MatrixXd::Zero(1, 2));
     FAIL() << "bad product accepted";
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -416,31 +416,31 @@ TEST(LmiModel, MalformedProgramsNameTheConstraint) {
     EXPECT_NE(m.find("cannot multiply a 1x3 constant by a 2x2 expression"), std::string::npos) << m;
   }
   try {
-    prog.SetMinimize(kron(MatrixXd::Ones(1, 1), Expr(P)));
+    prog.set_minimize(kron(MatrixXd::Ones(1, 1), Expr(P)));
     FAIL() << "kron with a 2x2 accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("objective"), std::string::npos) << e.what();
   }
   EXPECT_THROW(bad_sum.value({0, 0, 0, 0}), InputError);
-  prog.AddLmi("ok", Expr(P));
-  EXPECT_THROW(prog.AddLmi("ok", Expr(P)), InputError);  // duplicate name
-  EXPECT_THROW(prog.AddLmi("nan", Expr(MatrixXd::Constant(1, 1, NAN)) + Expr(x)), InputError);
+  prog.add_lmi("ok", Expr(P));
+  EXPECT_THROW(prog.add_lmi("ok", Expr(P)), InputError);  // duplicate name
+  EXPECT_THROW(prog.add_lmi("nan", Expr(MatrixXd::Constant(1, 1, NAN)) + Expr(x)), InputError);
   Program other;
-  auto y = other.NewScalar("y");
+  auto y = other.new_scalar("y");
   (void)y;
-  EXPECT_THROW(other.AddLmi("foreign", Expr(P)), InputError);  // P belongs to prog
+  EXPECT_THROW(other.add_lmi("foreign", Expr(P)), InputError);  // P belongs to prog
 }
 
 TEST(LmiModel, StructuredVariables) {
   Program prog;
-  auto BD = prog.NewBlockDiagonal(std::vector<int>{2, 1}, "Q");
+  auto BD = prog.new_block_diagonal(std::vector<int>{2, 1}, "Q");
   EXPECT_EQ(prog.num_scalars(), 3 + 1);
-  auto G = prog.NewScalarIdentityBlocks({2, 3}, "X");
+  auto G = prog.new_scalar_identity_blocks({2, 3}, "X");
   EXPECT_EQ(prog.num_scalars(), 6);
   EXPECT_EQ(G.at(0, 0), G.at(1, 1));
   EXPECT_EQ(G.at(2, 2), G.at(4, 4));
   EXPECT_EQ(G.at(0, 2), -1);
-  auto NS = prog.NewBlockDiagonal(std::vector<std::pair<int, int>>{{2, 1}, {1, 3}}, "B");
+  auto NS = prog.new_block_diagonal(std::vector<std::pair<int, int>>{{2, 1}, {1, 3}}, "B");
   EXPECT_EQ(NS.rows, 3);
   EXPECT_EQ(NS.cols, 4);
   EXPECT_EQ(NS.at(2, 0), -1);
@@ -457,19 +457,19 @@ TEST(LmiSolve, BadlyScaledFeasible) {
   // the built-in IPM (no scaling safeguards of its own) diverges on these data; Solve's default
   // must still certify, through DSDP
   {
-    Result r = Solve(lyapunov(A), Options{});
+    SolveResult r = solve(lyapunov(A), Options{});
     EXPECT_TRUE(r.certified()) << r.solver << " " << r.detail;
-    EXPECT_NE(Solve(lyapunov(A), only(Backend::ipm)).verdict, Feasibility::infeasible);
+    EXPECT_NE(solve(lyapunov(A), only(Backend::ipm)).verdict, Feasibility::infeasible);
   }
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, only(b));
+    SolveResult r = solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail << " margin " << r.margin << " its "
                                 << r.iterations << " err4 " << r.dimacs[3] << " err5 " << r.dimacs[4];
     EXPECT_TRUE(r.certified()) << to_string(b) << " " << r.detail;
     Options eq = only(b);
     eq.scale = Scaling::always;
-    EXPECT_NE(Solve(prog, eq).verdict, Feasibility::infeasible) << to_string(b);
+    EXPECT_NE(solve(prog, eq).verdict, Feasibility::infeasible) << to_string(b);
   }
 }
 
@@ -478,7 +478,7 @@ TEST(LmiSolve, BadlyScaledInfeasible) {
   MatrixXd A = M2(0.5, 1e6, -2e-6, 0.3);
   for (Backend b : kBoth) {
     Program prog = lyapunov(A);
-    Result r = Solve(prog, only(b));
+    SolveResult r = solve(prog, only(b));
     EXPECT_EQ(r.verdict, Feasibility::infeasible) << to_string(b) << " " << r.detail;
     EXPECT_FALSE(r.certified());
     // the infeasibility is either proven (an exact Farkas ray) or explicitly numeric
@@ -535,15 +535,15 @@ TEST(LmiCertificate, BareissAgreesWithLdlOnRandomMatrices) {
 TEST(LmiCertificate, FacialReductionCertifiesSingularLmi) {
   for (Backend b : kBoth) {
     Program prog;
-    auto p = prog.NewScalar("p");
-    prog.AddLmi("singular", {{Expr(p) - Expr::Scalar(1), Expr::Zero(1, 1)}, {Expr(), Expr::Zero(1, 1)}},
+    auto p = prog.new_scalar("p");
+    prog.add_lmi("singular", {{Expr(p) - Expr::scalar(1), Expr::zero(1, 1)}, {Expr(), Expr::zero(1, 1)}},
                 Strictness::nonstrict);
-    prog.AddLinearInequality("p <= 3", -Expr(p), MatrixXd::Constant(1, 1, -3));
+    prog.add_linear_inequality("p <= 3", -Expr(p), MatrixXd::Constant(1, 1, -3));
     // Without reduction: margin objective has no strict LMI, feasibility only; posed directly.
     MatrixXd V = MatrixXd::Zero(2, 1);
     V(1, 0) = 1;
     facial_reduce(prog, "singular", V);
-    Result r = Solve(prog, only(b));
+    SolveResult r = solve(prog, only(b));
     ASSERT_TRUE(r.is_success()) << to_string(b) << " " << r.detail;
     EXPECT_TRUE(r.certified()) << r.detail;
   }
@@ -556,7 +556,7 @@ TEST(LmiCertificate, FacialReductionCertifiesSingularLmi) {
 // strict fails, non-strict holds), and one just beyond it (both fail).
 TEST(ExactCertificate, IntegerRouteAgreesWithRationalRoute) {
   Program p;
-  auto a = p.NewScalar("a"), b = p.NewScalar("b");
+  auto a = p.new_scalar("a"), b = p.new_scalar("b");
   std::mt19937 g(7);
   std::uniform_int_distribution<int> e(-40, 40), v(-9, 9);
   auto rnd_sym = [&](int n) {

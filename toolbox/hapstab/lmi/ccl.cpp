@@ -10,7 +10,7 @@ namespace hapstab::lmi {
 Expr trace(const Expr& E) {
   if (!E.ok()) return E;  // the constraint that receives it names the error
   if (E.rows() != E.cols()) throw InputError("trace: expression is not square");
-  Expr t = Expr::Scalar(0);
+  Expr t = Expr::scalar(0);
   for (int i = 0; i < E.rows(); ++i) {
     Eigen::MatrixXd ei = Eigen::MatrixXd::Zero(E.rows(), 1);
     ei(i, 0) = 1;
@@ -31,13 +31,13 @@ CclResult ccl_solve(const Program& prog0, const std::vector<InversePair>& pairs,
                        ") must be square and of equal size");
     const int n = pr.Y.rows;
     ntot += n;
-    prog.AddLmi("ccl coupling [[" + pr.Y.name + ", I], [I, " + pr.Q.name + "]] >= 0",
-                {{Expr(pr.Y), Expr::Identity(n)}, {Expr(), Expr(pr.Q)}}, Strictness::nonstrict);
+    prog.add_lmi("ccl coupling [[" + pr.Y.name + ", I], [I, " + pr.Q.name + "]] >= 0",
+                {{Expr(pr.Y), Expr::identity(n)}, {Expr(), Expr(pr.Q)}}, Strictness::nonstrict);
   }
   out.target = 2.0 * ntot;
   // Starting point: any feasible point of the relaxation (margin objective).
-  prog.SetMarginObjective();
-  Result r = Solve(prog, opt.solver);
+  prog.set_margin_objective();
+  SolveResult r = solve(prog, opt.solver);
   if (!r.is_success()) {
     out.reason = std::string("the convex relaxation is not feasible (") + to_string(r.verdict) + ": " + r.detail + ")";
     out.last = r;
@@ -45,21 +45,21 @@ CclResult ccl_solve(const Program& prog0, const std::vector<InversePair>& pairs,
   }
   std::vector<Eigen::MatrixXd> Yk, Qk;
   for (const auto& pr : pairs) {
-    Yk.push_back(r.GetSolution(pr.Y));
-    Qk.push_back(r.GetSolution(pr.Q));
+    Yk.push_back(r.solution(pr.Y));
+    Qk.push_back(r.solution(pr.Q));
   }
   double prev = INFINITY;
   int stalls = 0;
   for (int k = 1; k <= opt.max_iter; ++k) {
-    Expr obj = Expr::Scalar(0);
+    Expr obj = Expr::scalar(0);
     for (size_t p = 0; p < pairs.size(); ++p)
       obj += trace(Yk[p] * Expr(pairs[p].Q)) + trace(Expr(pairs[p].Y) * Qk[p]);
-    prog.SetMinimize(obj);
-    r = Solve(prog, opt.solver);
+    prog.set_minimize(obj);
+    r = solve(prog, opt.solver);
     CclStep step{k, r.objective, 0.0, to_string(r.status)};
     for (size_t p = 0; p < pairs.size(); ++p) {
-      Yk[p] = r.GetSolution(pairs[p].Y);
-      Qk[p] = r.GetSolution(pairs[p].Q);
+      Yk[p] = r.solution(pairs[p].Y);
+      Qk[p] = r.solution(pairs[p].Q);
       step.trace_yq += (Yk[p] * Qk[p]).trace();
     }
     out.log.push_back(step);

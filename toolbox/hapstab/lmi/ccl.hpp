@@ -37,7 +37,7 @@ struct CclOptions {
   int stall_iters = 6;
   Options solver;           ///< back-end and thresholds for each sub-problem
   /// Optional independent acceptance test, called after every step with its solution.
-  std::function<bool(const Result&)> accept;
+  std::function<bool(const SolveResult&)> accept;
 };
 
 struct CclStep {
@@ -52,7 +52,7 @@ struct CclResult {
   std::string reason;
   double target = 0;    ///< 2 sum n
   std::vector<CclStep> log;
-  Result last;          ///< the last sub-problem's result (the candidate solution)
+  SolveResult last;          ///< the last sub-problem's result (the candidate solution)
 };
 
 /// Runs CCL on a copy of `prog` (its objective is replaced).

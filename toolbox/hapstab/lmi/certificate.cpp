@@ -231,18 +231,18 @@ int facial_reduce(Program& prog, const std::string& lmi_name, const Eigen::Matri
   const Eigen::MatrixXd Q = qr.householderQ();
   const Eigen::MatrixXd U = Q.rightCols(n - V.cols());
   // 1) the equalities F(x) V = 0 (imposed exactly by the elimination in solve.cpp);
-  prog.AddLinearEquality(lmi_name + " [F*V = 0]", c.F * V, Eigen::MatrixXd::Zero(n, V.cols()));
+  prog.add_linear_equality(lmi_name + " [F*V = 0]", c.F * V, Eigen::MatrixXd::Zero(n, V.cols()));
   // 2) the original constraint, non-strict, checked exactly but not posed;
   c.strictness = Strictness::nonstrict;
   c.posed = false;
-  prog.ReplaceLmi(idx, c);
+  prog.replace_lmi(idx, c);
   // 3) the reduced constraint U^T F U > 0, posed to the solver (it has an interior).
   Expr R = U.transpose() * c.F * U;
   Expr Rs = 0.5 * (R + R.transpose());
-  int r = prog.AddLmi(lmi_name + " [reduced]", Rs, Strictness::strict);
+  int r = prog.add_lmi(lmi_name + " [reduced]", Rs, Strictness::strict);
   LmiConstraint rc = prog.lmis()[static_cast<size_t>(r)];
   rc.auxiliary = true;
-  prog.ReplaceLmi(r, rc);
+  prog.replace_lmi(r, rc);
   return r;
 }
 

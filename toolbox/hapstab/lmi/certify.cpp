@@ -1,4 +1,4 @@
-// hapstab/lmi/certify.cpp -- lmi::Solve's result as a hapstab::Verdict (certify.hpp).
+// hapstab/lmi/certify.cpp -- lmi::solve's result as a hapstab::Verdict (certify.hpp).
 #include "hapstab/lmi/certify.hpp"
 
 #include <chrono>
@@ -32,7 +32,7 @@ std::string CertifiedSolve::solver_text() const {
 }
 
 MatQ CertifiedSolve::point(const MatrixVariable& v) const {
-  return result.certified() ? result.GetExactSolution(v) : to_rational(result.GetSolution(v));
+  return result.certified() ? result.exact_solution(v) : to_rational(result.solution(v));
 }
 
 Verdict CertifiedSolve::recheck(bool passed, std::string why) const {
@@ -43,7 +43,7 @@ Verdict CertifiedSolve::recheck(bool passed, std::string why) const {
 CertifiedSolve certify_lmi(const Program& prog, const Options& opt) {
   CertifiedSolve c;
   const auto t0 = std::chrono::steady_clock::now();
-  c.result = Solve(prog, opt);
+  c.result = solve(prog, opt);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Certificate k = c.result.certificate;
   const bool exact = k == Certificate::feasible_exact || k == Certificate::infeasible_exact;

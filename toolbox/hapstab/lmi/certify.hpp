@@ -1,6 +1,6 @@
 // hapstab/lmi/certify.hpp -- one protocol from an LMI program to a hapstab::Verdict.
 //
-// certify_lmi(prog, opt) runs lmi::Solve and states its answer in the project's vocabulary
+// certify_lmi(prog, opt) runs lmi::solve and states its answer in the project's vocabulary
 // (numeric/result.hpp): feasible -> holds, infeasible -> fails, undecided -> undecided; the
 // status is exact when Solve's own exact certificate passed (the rounded point satisfies every
 // constraint in rational arithmetic, or the Farkas ray / inconsistent equalities were checked
@@ -21,7 +21,7 @@ Outcome outcome_of(Feasibility f);
 Feasibility feasibility_of(Outcome o);
 
 struct CertifiedSolve {
-  Result result;        ///< Solve's result: solution access, status, margin, multipliers
+  SolveResult result;        ///< Solve's result: solution access, status, margin, multipliers
   Verdict verdict;      ///< evidence: solver_text()
   double seconds = 0;   ///< wall time of Solve
 
@@ -38,7 +38,7 @@ struct CertifiedSolve {
   Verdict recheck(bool passed, std::string why) const;
 };
 
-/// lmi::Solve(prog, opt) as a CertifiedSolve (see the header comment).
+/// lmi::solve(prog, opt) as a CertifiedSolve (see the header comment).
 CertifiedSolve certify_lmi(const Program& prog, const Options& opt = {});
 
 }  // namespace hapstab::lmi

@@ -90,7 +90,7 @@ Expr lemma2_matrix(const StateSpace<double>& s, const Expr& Q, const Expr* mu, d
   if (third) {
     Expr S33 = mu ? kron(MatrixXd::Identity(m, m), *mu) : Expr(MatrixXd(inv_delta * MatrixXd::Identity(m, m)));
     S = blocks({{S11, Expr(MatrixXd(B.transpose())), Expr(MatrixXd(D.transpose()))},
-                {Expr(), Q, Expr::Zero(static_cast<int>(n), static_cast<int>(m))},
+                {Expr(), Q, Expr::zero(static_cast<int>(n), static_cast<int>(m))},
                 {Expr(), Expr(), S33}},
                "Lemma 2 S");
   } else {
@@ -107,7 +107,7 @@ PassivityLevel solve_level(const Program& prog, Backend backend, int lemma, cons
   Options opt;
   opt.backend = backend;
   const CertifiedSolve cs = certify_lmi(prog, opt);
-  const Result& r = cs.result;
+  const SolveResult& r = cs.result;
   PassivityLevel out;
   out.method = std::string("Lemma ") + std::to_string(lemma) + " LMI (" + r.solver + ")";
   if (!r.is_success()) {
@@ -115,7 +115,7 @@ PassivityLevel solve_level(const Program& prog, Backend backend, int lemma, cons
     out.note = std::string("LMI ") + to_string(r.status) + "/" + to_string(r.verdict) + hint + ": " + r.detail;
     return out;
   }
-  const double x = r.GetSolution(L)(0, 0);
+  const double x = r.solution(L)(0, 0);
   out.level = reciprocal ? 1.0 / x : x;
   if (cs.verdict.holds() && cs.verdict.proven()) {
     const rational q = cs.point(L)(0, 0);
@@ -133,28 +133,28 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
   const int n = static_cast<int>(sys.states());
   Program prog;
   if (lemma == 1) {
-    auto P = prog.NewSymmetric(n, "P");
-    auto L = prog.NewScalar(kind == PassivityKind::osp ? "delta" : "phi");
+    auto P = prog.new_symmetric(n, "P");
+    auto L = prog.new_scalar(kind == PassivityKind::osp ? "delta" : "phi");
     Expr Lx(L);
-    prog.AddLmi("P > 0", Expr(P));
-    prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
-    prog.SetMinimize(-Lx);
+    prog.add_lmi("P > 0", Expr(P));
+    prog.add_lmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
+    prog.set_minimize(-Lx);
     return solve_level(prog, backend, lemma, L, false);
   }
   // Lemma 2
-  auto Q = prog.NewSymmetric(n, "Q");
-  prog.AddLmi("Q > 0", Expr(Q));
+  auto Q = prog.new_symmetric(n, "Q");
+  prog.add_lmi("Q > 0", Expr(Q));
   if (kind == PassivityKind::osp) {
-    auto mu = prog.NewScalar("mu = 1/delta");
+    auto mu = prog.new_scalar("mu = 1/delta");
     Expr mx(mu);
-    prog.AddLmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
-    prog.SetMinimize(mx);
+    prog.add_lmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
+    prog.set_minimize(mx);
     return solve_level(prog, backend, lemma, mu, true, " (Lemma 2 needs Delta > 0: the OSP level may be <= 0)");
   }
-  auto phi = prog.NewScalar("phi");
+  auto phi = prog.new_scalar("phi");
   Expr px(phi);
-  prog.AddLmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
-  prog.SetMinimize(-px);
+  prog.add_lmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
+  prog.set_minimize(-px);
   return solve_level(prog, backend, lemma, phi, false);
 }
 
@@ -166,15 +166,15 @@ double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, doub
   opt.backend = backend;
   opt.certify = false;
   if (lemma == 1) {
-    auto P = prog.NewSymmetric(n, "P");
-    prog.AddLmi("P > 0", Expr(P));
-    prog.AddLmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), nullptr, PassivityKind::osp, delta, phi));
+    auto P = prog.new_symmetric(n, "P");
+    prog.add_lmi("P > 0", Expr(P));
+    prog.add_lmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), nullptr, PassivityKind::osp, delta, phi));
   } else {
-    auto Q = prog.NewSymmetric(n, "Q");
-    prog.AddLmi("Q > 0", Expr(Q));
-    prog.AddLmi("Lemma 2 > 0", lemma2_matrix(sys, Expr(Q), nullptr, delta > 0 ? 1.0 / delta : -1.0, nullptr, phi, typo));
+    auto Q = prog.new_symmetric(n, "Q");
+    prog.add_lmi("Q > 0", Expr(Q));
+    prog.add_lmi("Lemma 2 > 0", lemma2_matrix(sys, Expr(Q), nullptr, delta > 0 ? 1.0 / delta : -1.0, nullptr, phi, typo));
   }
-  Result r = Solve(prog, opt);
+  SolveResult r = solve(prog, opt);
   if (r.status != SolveStatus::optimal) throw NumericalError("lemma_margin: solver " + std::string(to_string(r.status)) + ": " + r.detail);
   return r.margin;
 }

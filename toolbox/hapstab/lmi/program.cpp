@@ -84,9 +84,9 @@ Expr::Expr(const MatrixVariable& v) : rows_(v.rows), cols_(v.cols), c0_(MatrixXd
   }
 }
 
-Expr Expr::Zero(int rows, int cols) { return Expr(MatrixXd::Zero(rows, cols)); }
-Expr Expr::Identity(int n) { return Expr(MatrixXd::Identity(n, n)); }
-Expr Expr::Scalar(double c) { return Expr(MatrixXd::Constant(1, 1, c)); }
+Expr Expr::zero(int rows, int cols) { return Expr(MatrixXd::Zero(rows, cols)); }
+Expr Expr::identity(int n) { return Expr(MatrixXd::Identity(n, n)); }
+Expr Expr::scalar(double c) { return Expr(MatrixXd::Constant(1, 1, c)); }
 
 Expr Expr::invalid(std::string why) {
   Expr e;
@@ -275,42 +275,42 @@ Expr blocks(const std::vector<std::vector<Expr>>& b, const std::string& where) {
 }
 
 // ---------------------------------------------------------------------------------------------
-int Program::new_scalar(const std::string& name) {
+int Program::add_scalar(const std::string& name) {
   scalar_names_.push_back(name);
   return static_cast<int>(scalar_names_.size()) - 1;
 }
 
-MatrixVariable Program::NewScalar(const std::string& name) { return {name, 1, 1, {new_scalar(name)}}; }
+MatrixVariable Program::new_scalar(const std::string& name) { return {name, 1, 1, {add_scalar(name)}}; }
 
-MatrixVariable Program::NewSymmetric(int n, const std::string& name) {
+MatrixVariable Program::new_symmetric(int n, const std::string& name) {
   if (n <= 0) throw InputError("variable '" + name + "': size must be positive");
   MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
   for (int j = 0; j < n; ++j)
     for (int i = j; i < n; ++i) {
-      int k = new_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
+      int k = add_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
       v.index[static_cast<size_t>(j) * n + i] = k;
       v.index[static_cast<size_t>(i) * n + j] = k;
     }
   return v;
 }
 
-MatrixVariable Program::NewFull(int rows, int cols, const std::string& name) {
+MatrixVariable Program::new_full(int rows, int cols, const std::string& name) {
   if (rows <= 0 || cols <= 0) throw InputError("variable '" + name + "': sizes must be positive");
   MatrixVariable v{name, rows, cols, std::vector<int>(static_cast<size_t>(rows) * cols, -1)};
   for (int j = 0; j < cols; ++j)
     for (int i = 0; i < rows; ++i)
-      v.index[static_cast<size_t>(j) * rows + i] = new_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
+      v.index[static_cast<size_t>(j) * rows + i] = add_scalar(name + "(" + std::to_string(i) + "," + std::to_string(j) + ")");
   return v;
 }
 
-MatrixVariable Program::NewDiagonal(int n, const std::string& name) {
+MatrixVariable Program::new_diagonal(int n, const std::string& name) {
   if (n <= 0) throw InputError("variable '" + name + "': size must be positive");
   MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
-  for (int i = 0; i < n; ++i) v.index[static_cast<size_t>(i) * n + i] = new_scalar(name + "(" + std::to_string(i) + ")");
+  for (int i = 0; i < n; ++i) v.index[static_cast<size_t>(i) * n + i] = add_scalar(name + "(" + std::to_string(i) + ")");
   return v;
 }
 
-MatrixVariable Program::NewBlockDiagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric) {
+MatrixVariable Program::new_block_diagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric) {
   int n = 0;
   for (int s : sizes) {
     if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
@@ -323,7 +323,7 @@ MatrixVariable Program::NewBlockDiagonal(const std::vector<int>& sizes, const st
     ++b;
     for (int j = 0; j < s; ++j)
       for (int i = symmetric ? j : 0; i < s; ++i) {
-        int k = new_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
+        int k = add_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
         v.index[static_cast<size_t>(o + j) * n + o + i] = k;
         if (symmetric) v.index[static_cast<size_t>(o + i) * n + o + j] = k;
       }
@@ -332,7 +332,7 @@ MatrixVariable Program::NewBlockDiagonal(const std::vector<int>& sizes, const st
   return v;
 }
 
-MatrixVariable Program::NewBlockDiagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name) {
+MatrixVariable Program::new_block_diagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name) {
   int R = 0, C = 0;
   for (auto [r, c] : sizes) {
     if (r <= 0 || c <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
@@ -347,14 +347,14 @@ MatrixVariable Program::NewBlockDiagonal(const std::vector<std::pair<int, int>>&
     for (int j = 0; j < c; ++j)
       for (int i = 0; i < r; ++i)
         v.index[static_cast<size_t>(co + j) * R + ro + i] =
-            new_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
+            add_scalar(name + "[" + std::to_string(b) + "](" + std::to_string(i) + "," + std::to_string(j) + ")");
     ro += r;
     co += c;
   }
   return v;
 }
 
-MatrixVariable Program::NewScalarIdentityBlocks(const std::vector<int>& sizes, const std::string& name) {
+MatrixVariable Program::new_scalar_identity_blocks(const std::vector<int>& sizes, const std::string& name) {
   int n = 0;
   for (int s : sizes) {
     if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
@@ -364,7 +364,7 @@ MatrixVariable Program::NewScalarIdentityBlocks(const std::vector<int>& sizes, c
   MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
   int o = 0, b = 0;
   for (int s : sizes) {
-    int k = new_scalar(name + "[" + std::to_string(++b) + "]");
+    int k = add_scalar(name + "[" + std::to_string(++b) + "]");
     for (int i = 0; i < s; ++i) v.index[static_cast<size_t>(o + i) * n + o + i] = k;
     o += s;
   }
@@ -391,7 +391,7 @@ void check_vars(const Expr& F, int nvars, const std::string& where) {
 }
 }  // namespace
 
-int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
+int Program::add_lmi(const std::string& name, const Expr& F, Strictness s) {
   check_name(name);
   const std::string where = "constraint '" + name + "'";
   if (!F.ok()) throw InputError(where + ": " + F.error());
@@ -419,24 +419,12 @@ int Program::AddLmi(const std::string& name, const Expr& F, Strictness s) {
   return static_cast<int>(lmis_.size()) - 1;
 }
 
-int Program::AddLmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s) {
+int Program::add_lmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s) {
   check_name(name);
-  return AddLmi(name, blocks(b), s);
+  return add_lmi(name, blocks(b), s);
 }
 
-void Program::AddLinearEquality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
-  check_name(name);
-  const std::string where = "constraint '" + name + "'";
-  if (!lhs.ok()) throw InputError(where + ": " + lhs.error());
-  if (lhs.empty() || lhs.rows() != rhs.rows() || lhs.cols() != rhs.cols())
-    throw InputError(where + ": left side is " + dims(lhs.rows(), lhs.cols()) + ", right side is " +
-                     dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
-  check_vars(lhs, num_scalars(), where);
-  if (!rhs.allFinite()) throw InputError(where + ": right side is not finite");
-  linear_.push_back({name, lhs, rhs, true});
-}
-
-void Program::AddLinearInequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
+void Program::add_linear(const std::string& name, const Expr& lhs, const MatrixXd& rhs, bool equality) {
   check_name(name);
   const std::string where = "constraint '" + name + "'";
   if (!lhs.ok()) throw InputError(where + ": " + lhs.error());
@@ -445,17 +433,25 @@ void Program::AddLinearInequality(const std::string& name, const Expr& lhs, cons
                      dims(static_cast<int>(rhs.rows()), static_cast<int>(rhs.cols())));
   check_vars(lhs, num_scalars(), where);
   if (!rhs.allFinite()) throw InputError(where + ": right side is not finite");
-  linear_.push_back({name, lhs, rhs, false});
+  linear_.push_back({name, lhs, rhs, equality});
 }
 
-void Program::SetMarginObjective(double cap) {
+void Program::add_linear_equality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
+  add_linear(name, lhs, rhs, true);
+}
+
+void Program::add_linear_inequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs) {
+  add_linear(name, lhs, rhs, false);
+}
+
+void Program::set_margin_objective(double cap) {
   if (!(cap > 0) || !std::isfinite(cap)) throw InputError("margin objective: the cap on t must be positive and finite");
   objective_ = ObjectiveKind::margin;
   cap_ = cap;
   cost_ = Expr();
 }
 
-void Program::SetMinimize(const Expr& c) {
+void Program::set_minimize(const Expr& c) {
   if (!c.ok()) throw InputError("objective: " + c.error());
   if (c.rows() != 1 || c.cols() != 1) throw InputError("objective: must be a 1x1 expression");
   check_vars(c, num_scalars(), "objective");
@@ -463,6 +459,6 @@ void Program::SetMinimize(const Expr& c) {
   cost_ = c;
 }
 
-void Program::ReplaceLmi(int i, LmiConstraint c) { lmis_.at(static_cast<size_t>(i)) = std::move(c); }
+void Program::replace_lmi(int i, LmiConstraint c) { lmis_.at(static_cast<size_t>(i)) = std::move(c); }
 
 }  // namespace hapstab::lmi

@@ -69,9 +69,9 @@ class Expr {
   Expr() = default;  ///< the empty expression: "unspecified" in a block list (see blocks())
   Expr(const MatrixXd& constant);  // NOLINT: constants convert implicitly
   Expr(const MatrixVariable& v);   // NOLINT
-  static Expr Zero(int rows, int cols);
-  static Expr Identity(int n);
-  static Expr Scalar(double c);
+  static Expr zero(int rows, int cols);
+  static Expr identity(int n);
+  static Expr scalar(double c);
 
   int rows() const { return rows_; }
   int cols() const { return cols_; }
@@ -143,30 +143,30 @@ enum class ObjectiveKind { margin, minimize };
 class Program {
  public:
   // ---- decision variables ----
-  MatrixVariable NewScalar(const std::string& name);
-  MatrixVariable NewSymmetric(int n, const std::string& name);
-  MatrixVariable NewFull(int rows, int cols, const std::string& name);
-  MatrixVariable NewDiagonal(int n, const std::string& name);
+  MatrixVariable new_scalar(const std::string& name);
+  MatrixVariable new_symmetric(int n, const std::string& name);
+  MatrixVariable new_full(int rows, int cols, const std::string& name);
+  MatrixVariable new_diagonal(int n, const std::string& name);
   /// BD(m; m1..mN): square blocks, symmetric (symmetric = true) or full.
-  MatrixVariable NewBlockDiagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric = true);
+  MatrixVariable new_block_diagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric = true);
   /// BD(m1 x n1, ..., mN x nN): non-square full blocks.
-  MatrixVariable NewBlockDiagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name);
+  MatrixVariable new_block_diagonal(const std::vector<std::pair<int, int>>& sizes, const std::string& name);
   /// G(m; m1..mN) = blockdiag(g1 I_m1, ..., gN I_mN).
-  MatrixVariable NewScalarIdentityBlocks(const std::vector<int>& sizes, const std::string& name);
+  MatrixVariable new_scalar_identity_blocks(const std::vector<int>& sizes, const std::string& name);
 
   // ---- constraints (each with a user-given name that every error message repeats) ----
   /// F > 0 (strict) or F >= 0. F must be square and symmetric (checked, tolerance 1e-12
   /// relative to its largest entry); throws InputError naming the constraint.
-  int AddLmi(const std::string& name, const Expr& F, Strictness s = Strictness::strict);
-  int AddLmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s = Strictness::strict);
-  void AddLinearEquality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);
-  void AddLinearInequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);  ///< lhs >= rhs
+  int add_lmi(const std::string& name, const Expr& F, Strictness s = Strictness::strict);
+  int add_lmi(const std::string& name, const std::vector<std::vector<Expr>>& b, Strictness s = Strictness::strict);
+  void add_linear_equality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);
+  void add_linear_inequality(const std::string& name, const Expr& lhs, const MatrixXd& rhs);  ///< lhs >= rhs
 
   // ---- objectives ----
   /// Maximise t s.t. strict F_j >= t I, t <= cap (the default objective, cap = 1).
-  void SetMarginObjective(double cap = 1.0);
+  void set_margin_objective(double cap = 1.0);
   /// Minimise the 1x1 expression c (strict LMIs become F >= strict_threshold I).
-  void SetMinimize(const Expr& c);
+  void set_minimize(const Expr& c);
 
   // ---- inspection ----
   int num_scalars() const { return static_cast<int>(scalar_names_.size()); }
@@ -177,10 +177,11 @@ class Program {
   const Expr& objective() const { return cost_; }
   double margin_cap() const { return cap_; }
   /// Replaces LMI i (used by facial_reduce).
-  void ReplaceLmi(int i, LmiConstraint c);
+  void replace_lmi(int i, LmiConstraint c);
 
  private:
-  int new_scalar(const std::string& name);
+  int add_scalar(const std::string& name);
+  void add_linear(const std::string& name, const Expr& lhs, const MatrixXd& rhs, bool equality);
   void check_name(const std::string& name) const;
   std::vector<std::string> scalar_names_;
   std::vector<LmiConstraint> lmis_;

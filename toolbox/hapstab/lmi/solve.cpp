@@ -30,7 +30,7 @@ const char* to_string(Certificate c) {
   return "none";
 }
 
-Eigen::MatrixXd Result::GetSolution(const MatrixVariable& v) const {
+Eigen::MatrixXd SolveResult::solution(const MatrixVariable& v) const {
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(v.rows, v.cols);
   for (int j = 0; j < v.cols; ++j)
     for (int i = 0; i < v.rows; ++i)
@@ -38,8 +38,8 @@ Eigen::MatrixXd Result::GetSolution(const MatrixVariable& v) const {
   return M;
 }
 
-MatQ Result::GetExactSolution(const MatrixVariable& v) const {
-  if (!certified()) throw NumericalError("GetExactSolution: the solution of variable '" + v.name + "' is not certified");
+MatQ SolveResult::exact_solution(const MatrixVariable& v) const {
+  if (!certified()) throw NumericalError("exact_solution: the solution of variable '" + v.name + "' is not certified");
   MatQ M = MatQ::Zero(v.rows, v.cols);
   for (int j = 0; j < v.cols; ++j)
     for (int i = 0; i < v.rows; ++i)
@@ -62,7 +62,7 @@ std::string g3(double v) {
 // the LMIs). Returns whether a strict-form Farkas certificate is worth trying (the margin is
 // within +-strict_threshold).
 bool decide_verdict(const Program& prog, const Options& opt, const Reduction& rd, const BackendResult& br,
-                    const Eigen::VectorXd& z, Result& res) {
+                    const Eigen::VectorXd& z, SolveResult& res) {
   // A back-end's "optimal" is trusted only if S(y) is PSD to 1e-6 (DIMACS err4): DSDP's
   // penalty method can stop "converged" on an infeasible problem.
   if (br.status == SolveStatus::optimal && !(br.dimacs[3] <= 1e-6)) {
@@ -128,7 +128,7 @@ bool holds_exactly(const Program& prog, const std::vector<Block>& blocks, const 
 }
 
 // Round z (the scaled y, so the relative grid is uniform), rebuild exactly, check all.
-void certify_feasible(const Program& prog, const Reduction& rd, const BackendResult& br, Result& res) {
+void certify_feasible(const Program& prog, const Reduction& rd, const BackendResult& br, SolveResult& res) {
   res.certificate = Certificate::rounding_failed;
   for (int bits : {20, 30, 40, 53}) {
     std::vector<rational> zq(static_cast<size_t>(rd.af.nz), rational(0));
@@ -264,7 +264,7 @@ bool projected_ray_holds(const FarkasSystem& fs, const Reduction& rd, std::vecto
 // and residuals r_k = sum tr(F_jk Z_j) proves, in floating point, that no z with
 // max |z_k| < R = |obj| / sum |r_k| is feasible (0 <= sum tr(F_j(z) Z_j) = obj + r'z).
 // R >= 1e4 is called infeasible, numerically only (as a back-end's own "infeasible" is).
-void check_ray_in_floating_point(const Reduction& rd, double xscale, Result& res) {
+void check_ray_in_floating_point(const Reduction& rd, double xscale, SolveResult& res) {
   const int K = static_cast<int>(rd.ymap.size());
   Eigen::VectorXd rk = Eigen::VectorXd::Zero(K);
   double obj = 0, min_eig = INFINITY;
@@ -299,7 +299,7 @@ void check_ray_in_floating_point(const Reduction& rd, double xscale, Result& res
 // system has no solution (homogeneous LMIs such as Lyapunov's have margin exactly 0 when
 // infeasible); otherwise sum tr(F_j0 Z_j) < 0 proves that even F_j >= 0 is infeasible.
 // `trouble`: the back-end is in numerical trouble; its ray may still pass.
-void certify_infeasible(const Reduction& rd, bool strict_mode, bool trouble, Result& res) {
+void certify_infeasible(const Reduction& rd, bool strict_mode, bool trouble, SolveResult& res) {
   if (res.verdict == Feasibility::infeasible) res.certificate = Certificate::numeric_only;
   bool aux = false;
   for (int b : rd.posed) aux |= !rd.blocks[static_cast<size_t>(b)].exact;
@@ -330,7 +330,7 @@ void certify_infeasible(const Reduction& rd, bool strict_mode, bool trouble, Res
   if (trouble && !strict_mode) check_ray_in_floating_point(rd, xscale, res);
 }
 
-Result inconsistent_equalities(Result res, const std::string& why) {
+SolveResult inconsistent_equalities(SolveResult res, const std::string& why) {
   res.status = SolveStatus::infeasible;
   res.verdict = Feasibility::infeasible;
   res.certificate = Certificate::infeasible_exact;
@@ -339,7 +339,7 @@ Result inconsistent_equalities(Result res, const std::string& why) {
   return res;
 }
 
-Result unbounded_objective(Result res) {
+SolveResult unbounded_objective(SolveResult res) {
   res.status = SolveStatus::unbounded;
   res.verdict = Feasibility::undecided;
   res.detail = "the objective depends on a variable that no constraint bounds";
@@ -350,8 +350,8 @@ Result unbounded_objective(Result res) {
 }  // namespace
 
 // One solve on the data as given (scale = false) or equilibrated: the pipeline of solve.hpp.
-Result solve_once(const Program& prog, const Options& opt, bool scale) {
-  Result res;
+SolveResult solve_once(const Program& prog, const Options& opt, bool scale) {
+  SolveResult res;
   res.solver = to_string(opt.backend);
   if (prog.num_scalars() == 0) throw InputError("lmi program: no decision variables");
   if (!(opt.strict_threshold > 0)) throw InputError("lmi options: strict_threshold must be positive");
@@ -398,14 +398,14 @@ Result solve_once(const Program& prog, const Options& opt, bool scale) {
   return res;
 }
 
-Result solve_scaled(const Program& prog, const Options& opt) {
+SolveResult solve_scaled(const Program& prog, const Options& opt) {
   if (opt.scale == Scaling::never) return solve_once(prog, opt, false);
   if (opt.scale == Scaling::always) {
-    Result r = solve_once(prog, opt, true);
+    SolveResult r = solve_once(prog, opt, true);
     r.detail += " [equilibrated]";
     return r;
   }
-  Result raw = solve_once(prog, opt, false);
+  SolveResult raw = solve_once(prog, opt, false);
   // a CSDP run stopped at its time limit is not retried on equilibrated data (seen: both loop)
   const bool timed_out = raw.detail.find(kCsdpTimedOut) != std::string::npos;
   if (timed_out ||
@@ -414,7 +414,7 @@ Result solve_scaled(const Program& prog, const Options& opt) {
     raw.detail += " [data as given]";
     return raw;
   }
-  Result eq = solve_once(prog, opt, true);
+  SolveResult eq = solve_once(prog, opt, true);
   if (eq.verdict != Feasibility::undecided && eq.certificate != Certificate::rounding_failed) {
     eq.detail += " [equilibrated; as given: " + std::string(to_string(raw.verdict)) + "]";
     return eq;
@@ -424,13 +424,13 @@ Result solve_scaled(const Program& prog, const Options& opt) {
 }
 
 namespace {
-Result solve_with_fallback(const Program& prog, const Options& opt) {
-  Result r = solve_scaled(prog, opt);
+SolveResult solve_with_fallback(const Program& prog, const Options& opt) {
+  SolveResult r = solve_scaled(prog, opt);
   if (!opt.fallback || opt.backend != Backend::dsdp) return r;
   if (r.verdict != Feasibility::undecided && r.status != SolveStatus::numerical_trouble) return r;
   Options o = opt;
   o.backend = Backend::csdp;
-  Result c = solve_scaled(prog, o);
+  SolveResult c = solve_scaled(prog, o);
   if (c.verdict == Feasibility::undecided && c.status == SolveStatus::numerical_trouble) {
     r.detail += "; CSDP fallback also undecided (" + c.detail + ")";
     return r;
@@ -441,7 +441,7 @@ Result solve_with_fallback(const Program& prog, const Options& opt) {
 }
 }  // namespace
 
-Result Solve(const Program& prog, const Options& opt) {
+SolveResult solve(const Program& prog, const Options& opt) {
   if (!(opt.csdp_time_limit >= 0) || !std::isfinite(opt.csdp_time_limit))
     throw InputError("lmi options: csdp_time_limit must be a finite number of seconds >= 0 (0 = automatic)");
   if (opt.backend != Backend::automatic) return solve_with_fallback(prog, opt);
@@ -453,7 +453,7 @@ Result Solve(const Program& prog, const Options& opt) {
     // one attempt on the data as given (equilibration is DSDP's retry, not the IPM's)
     o.backend = Backend::ipm;
     if (o.scale == Scaling::automatic) o.scale = Scaling::never;
-    Result r = solve_scaled(prog, o);
+    SolveResult r = solve_scaled(prog, o);
     // kept only when certified and finished (a certified point where the IPM stopped early has
     // a non-optimal objective: DSDP then solves)
     if ((r.certificate == Certificate::feasible_exact || r.certificate == Certificate::infeasible_exact) &&
@@ -464,7 +464,7 @@ Result Solve(const Program& prog, const Options& opt) {
     o.scale = opt.scale;
   }
   o.backend = Backend::dsdp;
-  Result r = solve_with_fallback(prog, o);
+  SolveResult r = solve_with_fallback(prog, o);
   r.detail = note + r.detail;
   return r;
 }

@@ -1,4 +1,4 @@
-// hapstab/lmi/solve.hpp -- Solve(prog) -> Result, in the spirit of Drake's solvers::Solve.
+// hapstab/lmi/solve.hpp -- solve(prog) -> SolveResult, in the spirit of Drake's solvers::Solve.
 //
 // Pipeline: (1) linear equalities are eliminated EXACTLY (rational Gauss-Jordan on the
 // doubles' exact values: x = x0 + N z), so a rounded z always satisfies them exactly;
@@ -8,12 +8,12 @@
 // power of two (coefficients ~ 1). Powers of two are exact, congruence keeps definiteness, so
 // the solver's verdict is unchanged in exact arithmetic while DSDP/CSDP see data of magnitude
 // ~1 instead of 1e-6..1e6. The margin t and strict_threshold are measured in these
-// equilibrated coordinates; Result::min_eigenvalue gives the original ones.
+// equilibrated coordinates; SolveResult::min_eigenvalue gives the original ones.
 // Equilibration is not always a gain: on homogeneous LMIs (Lyapunov, KYP) whose solution set
 // is a cone, the margin t <= cap is reached by a scaled-up solution and the congruence changes
 // which direction the margin measures; bench and tests showed cases where the raw data certify
 // and the equilibrated do not, and the reverse. Scaling::automatic therefore tries both (raw
-// first) and keeps the first decided verdict; Result::detail says which one was used.
+// first) and keeps the first decided verdict; SolveResult::detail says which one was used.
 // (4) The built-in IPM first (kept only when certified), else DSDP or CSDP
 // (backend.hpp). (5) Verdict and exact certificate (certificate.hpp).
 //
@@ -44,7 +44,7 @@ struct Options {
   /// automatic: a program with at most `ipm_max_rows` LMI rows in all is first solved by the
   /// built-in IPM, and that result is returned only when its exact certificate passed (a
   /// rounded feasible point or a Farkas ray); anything else goes to DSDP (and the CSDP
-  /// fallback), whose Result::detail then records the IPM attempt. Needs certify; without it
+  /// fallback), whose SolveResult::detail then records the IPM attempt. Needs certify; without it
   /// automatic is DSDP. dsdp / csdp / ipm: that back-end only.
   /// Measured (bench_lmi, bench_multidof): with the low-rank Schur complement the IPM is the
   /// fastest back-end at every size tried -- the 32-device contact scene 0.1 s / 1 s / 10 s
@@ -56,7 +56,7 @@ struct Options {
   Scaling scale = Scaling::automatic;  ///< equilibration (see above)
   /// DSDP stops with an indefinite Schur matrix (-8) or short steps on some KYP LMIs that CSDP
   /// solves: when the DSDP verdict is undecided or in numerical trouble, re-solve with CSDP
-  /// (Result::solver and detail say so). Off in the back-end agreement tests.
+  /// (SolveResult::solver and detail say so). Off in the back-end agreement tests.
   bool fallback = true;
   bool certify = true;             ///< run the exact checks
   /// Seconds after which a CSDP call is stopped (reported as numerical trouble): CSDP's
@@ -78,7 +78,7 @@ enum class Certificate {
 };
 const char* to_string(Certificate c);
 
-class Result {
+class SolveResult {
  public:
   SolveStatus status = SolveStatus::numerical_trouble;
   Feasibility verdict = Feasibility::undecided;
@@ -97,11 +97,11 @@ class Result {
 
   bool is_success() const { return status == SolveStatus::optimal && verdict == Feasibility::feasible; }
   bool certified() const { return certificate == Certificate::feasible_exact; }
-  Eigen::MatrixXd GetSolution(const MatrixVariable& v) const;
-  MatQ GetExactSolution(const MatrixVariable& v) const;  ///< throws unless certified()
-  double GetSolution(int scalar) const { return x.at(static_cast<size_t>(scalar)); }
+  Eigen::MatrixXd solution(const MatrixVariable& v) const;
+  MatQ exact_solution(const MatrixVariable& v) const;  ///< throws unless certified()
+  double solution(int scalar) const { return x.at(static_cast<size_t>(scalar)); }
 };
 
-Result Solve(const Program& prog, const Options& opt = {});
+SolveResult solve(const Program& prog, const Options& opt = {});
 
 }  // namespace hapstab::lmi

@@ -27,7 +27,7 @@ std::vector<Block> collect_blocks(const Program& prog) {
         Eigen::MatrixXd ei = Eigen::MatrixXd::Zero(1, c.lhs.rows()), ej = Eigen::MatrixXd::Zero(c.lhs.cols(), 1);
         ei(0, i) = 1;
         ej(0 + j, 0) = 1;
-        Expr e = ei * c.lhs * ej - Expr::Scalar(c.rhs(i, j));
+        Expr e = ei * c.lhs * ej - Expr::scalar(c.rhs(i, j));
         blocks.push_back({c.name + "(" + std::to_string(i) + "," + std::to_string(j) + ")", e, false, true, true, -1});
       }
   }
@@ -380,7 +380,7 @@ void build_standard_form(const Program& prog, const Options& opt, Reduction& rd)
 
 // ---- back to the program's coordinates ----
 
-Eigen::VectorXd map_back(const Program& prog, const Reduction& rd, const BackendResult& br, Result& res) {
+Eigen::VectorXd map_back(const Program& prog, const Reduction& rd, const BackendResult& br, SolveResult& res) {
   const Affine& af = rd.af;
   const int n = prog.num_scalars();
   res.status = br.status;

@@ -30,7 +30,7 @@
 namespace hapstab::lmi {
 
 struct Options;
-class Result;
+class SolveResult;
 
 /// One constraint block as the solver poses it.
 struct Block {
@@ -104,7 +104,7 @@ void build_standard_form(const Program& prog, const Options& opt, Reduction& rd)
 
 /// The back-end's answer in the original coordinates: res.status, detail, dimacs, iterations,
 /// x, margin, objective, min_eigenvalue, multipliers. Returns z (unscaled, x = x0 + N z).
-Eigen::VectorXd map_back(const Program& prog, const Reduction& rd, const BackendResult& br, Result& res);
+Eigen::VectorXd map_back(const Program& prog, const Reduction& rd, const BackendResult& br, SolveResult& res);
 
 /// Smallest eigenvalue of the strict posed blocks at z (equilibrated, without the t term and
 /// the strict_threshold shift); +inf when there is none.

@@ -23,7 +23,7 @@ Eigen::MatrixXd to_double(const MatQ& M) {
 
 Expr scalar_times(const Expr& se, const MatrixXd& M) {
   // M = sum_i col_i e_i^T  ->  s M = sum_i col_i * s * e_i^T
-  Expr r = Expr::Zero(static_cast<int>(M.rows()), static_cast<int>(M.cols()));
+  Expr r = Expr::zero(static_cast<int>(M.rows()), static_cast<int>(M.cols()));
   for (Eigen::Index j = 0; j < M.cols(); ++j) {
     if (M.col(j).isZero(0.0)) continue;
     MatrixXd e = MatrixXd::Zero(1, M.cols());
@@ -156,10 +156,10 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
   const double Td = to_real<double>(T);
   ev.basis = fc.gamma_basis;
   const int N = static_cast<int>(pb.structure.operators.size());
-  ev.X = Expr::Zero(m, m);
-  ev.g = Expr::Zero(N, 1);
+  ev.X = Expr::zero(m, m);
+  ev.g = Expr::zero(N, 1);
   for (size_t k = 0; k < ev.basis.size(); ++k) {
-    ev.theta.push_back(prog.NewScalar("theta" + std::to_string(k + 1)));
+    ev.theta.push_back(prog.new_scalar("theta" + std::to_string(k + 1)));
     std::vector<rational> gk = ev.basis[k];
     MatQ Xk = pb.structure.scalar_blocks(gk);
     ev.Xk.push_back(Xk);
@@ -169,20 +169,20 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
     ev.g += scalar_times(ev.theta.back(), gv);
   }
   // g_i >= 1 (9)
-  prog.AddLinearInequality("gamma_i >= 1 (9)", ev.g, MatrixXd::Ones(N, 1));
-  if (!qe_is_delta_x) ev.QE = prog.NewSymmetric(m, "Q_E");
+  prog.add_linear_inequality("gamma_i >= 1 (9)", ev.g, MatrixXd::Ones(N, 1));
+  if (!qe_is_delta_x) ev.QE = prog.new_symmetric(m, "Q_E");
   const MatrixXd E1 = to_double(sp.E1);
   const MatrixXd DE = to_double(pb.E.D);
   // XE1s = (X E(1) + E(1)^T X)/2 (= X E(1) exactly for the exact basis)
   const Expr XE1s = 0.5 * (ev.X * E1 + E1.transpose() * ev.X);
   // W = X E(1)/(2T) > 0  (the P22 block in the split coordinates)
-  prog.AddLmi("P > 0: X E(1)/(2T) block", (0.5 / Td) * XE1s, Strictness::strict);
+  prog.add_lmi("P > 0: X E(1)/(2T) block", (0.5 / Td) * XE1s, Strictness::strict);
   const Expr QEe = qe_is_delta_x ? to_double(pb.structure.delta_D()) * ev.X : Expr(ev.QE);
   Expr F22 = (Td / 2) * XE1s - (Td / 2) * (ev.X * DE + DE.transpose() * ev.X) - QEe;
   if (n > 0) {
-    ev.P11 = prog.NewSymmetric(n, "P11");
+    ev.P11 = prog.new_symmetric(n, "P11");
     const Expr P(ev.P11);
-    prog.AddLmi("P > 0: P11 block", P, Strictness::strict);
+    prog.add_lmi("P > 0: P11 block", P, Strictness::strict);
     const MatrixXd AE = to_double(MatQ(sp.t.A.topLeftCorner(n, n)));
     const MatrixXd Bt = to_double(MatQ(sp.t.B.topRows(n)));
     const MatrixXd CE = to_double(MatQ(sp.t.C.leftCols(n)));
@@ -193,11 +193,11 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
     MatrixXd W(n, n + m), J = MatrixXd::Zero(n, n + m);
     W << AE, Bt;
     J.leftCols(n).setIdentity();
-    const Expr rest = lmi::blocks({{Expr::Zero(n, n), -0.5 * (CE.transpose() * ev.X)}, {Expr(), F22}});
-    prog.AddLmi("(16) first LMI, reduced (facial reduction)",
+    const Expr rest = lmi::blocks({{Expr::zero(n, n), -0.5 * (CE.transpose() * ev.X)}, {Expr(), F22}});
+    prog.add_lmi("(16) first LMI, reduced (facial reduction)",
                 -1.0 * (W.transpose() * P * W - J.transpose() * P * J + rest), Strictness::strict);
   } else {
-    prog.AddLmi("(16) first LMI, reduced (facial reduction)", -1.0 * F22, Strictness::strict);
+    prog.add_lmi("(16) first LMI, reduced (facial reduction)", -1.0 * F22, Strictness::strict);
   }
   return ev;
 }
@@ -205,7 +205,7 @@ EnvVars add_environment(Program& prog, const Problem& pb, const EhatSplit& sp, c
 void add_condition14(Program& prog, const Problem& pb, const EnvVars& ev, const Expr& QV) {
   const MatrixXd DD = to_double(pb.structure.delta_D());
   const Expr QE(ev.QE);
-  prog.AddLmi("(16) second LMI (scaled (14))", lmi::blocks({{DD * ev.X - QE, -1.0 * QE}, {Expr(), QV - QE}}),
+  prog.add_lmi("(16) second LMI (scaled (14))", lmi::blocks({{DD * ev.X - QE, -1.0 * QE}, {Expr(), QV - QE}}),
               Strictness::strict);
 }
 
@@ -369,7 +369,7 @@ VhatVars add_vhat(Program& prog, const StateSpace<rational>& V, const MatQ& K, c
   const MatQ G = dc_gain(V) - K;  // V(1) - K
   MatQ Minv;
   if (nb) Minv = inverse(MatQ(V.A.transpose() - MatQ::Identity(nb, nb)), "A_V^T - I (V has a pole at z = 1)");
-  Expr p1 = Expr::Zero(nb, m), P22 = Expr::Zero(m, m);
+  Expr p1 = Expr::zero(nb, m), P22 = Expr::zero(m, m);
   for (size_t k = 0; k < Xk.size(); ++k) {
     const MatQ p1k = nb ? MatQ(Minv * V.C.transpose() * Xk[k] / 2) : MatQ(0, m);
     const MatQ P22k = G.transpose() * Xk[k] / (2 * T);
@@ -380,16 +380,16 @@ VhatVars add_vhat(Program& prog, const StateSpace<rational>& V, const MatQ& K, c
     P22 += scalar_times(theta[k], MatrixXd(0.5 * (P22d + P22d.transpose())));
   }
   if (nb) {
-    vv.P11 = prog.NewSymmetric(nb, "P_V11");
+    vv.P11 = prog.new_symmetric(nb, "P_V11");
     vv.PV = lmi::blocks({{Expr(vv.P11), p1}, {Expr(), P22}});
   } else {
     vv.PV = P22;
   }
-  prog.AddLmi("P_V > 0 (storage of Vhat^Gamma)", vv.PV, Strictness::strict);
+  prog.add_lmi("P_V > 0 (storage of Vhat^Gamma)", vv.PV, Strictness::strict);
   // reduced Lemma 1 (state block): -(A^T P A - P + C^T Q_V C) > 0; the input rows follow from
   // the pinned blocks (the full matrix times [0; I; I] is exactly 0).
   const MatrixXd A = to_double(vv.Vh.A), C = to_double(vv.Vh.C);
-  prog.AddLmi("Vhat^Gamma OSP (Lemma 1), reduced (facial reduction)",
+  prog.add_lmi("Vhat^Gamma OSP (Lemma 1), reduced (facial reduction)",
               -1.0 * (A.transpose() * vv.PV * A - vv.PV + C.transpose() * QV * C), Strictness::strict);
   return vv;
 }
@@ -490,9 +490,9 @@ void store_point(AnalysisResult& res, const Problem& pb, const MatQ& X, const Ma
 void pose_16(Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc, EnvVars& ev,
              MatrixVariable& QV) {
   ev = add_environment(prog, pb, sp, fc);
-  QV = pb.qv_block_diagonal ? prog.NewBlockDiagonal(pb.structure.operator_sizes(), "Q_V")
-                            : prog.NewSymmetric(pb.structure.m(), "Q_V");
-  prog.AddLmi("Q_V > 0", Expr(QV), Strictness::strict);
+  QV = pb.qv_block_diagonal ? prog.new_block_diagonal(pb.structure.operator_sizes(), "Q_V")
+                            : prog.new_symmetric(pb.structure.m(), "Q_V");
+  prog.add_lmi("Q_V > 0", Expr(QV), Strictness::strict);
   add_condition14(prog, pb, ev, Expr(QV));
 }
 
@@ -501,7 +501,7 @@ void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::O
   const int m = pb.structure.m();
   Program prog;
   const EnvVars ev = add_environment(prog, pb, sp, res.facial, true);
-  prog.SetMarginObjective(1.0);
+  prog.set_margin_objective(1.0);
   const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
   res.sdp_seconds += cs.seconds;
   res.margin = cs.margin();
@@ -542,7 +542,7 @@ void analyze_margin(const Problem& pb, const EhatSplit& sp, const lmi::Options& 
   EnvVars ev;
   MatrixVariable QV;
   pose_16(prog, pb, sp, res.facial, ev, QV);
-  prog.SetMarginObjective(1.0);
+  prog.set_margin_objective(1.0);
   const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
   res.sdp_seconds += cs.seconds;
   res.margin = cs.margin();
@@ -563,9 +563,9 @@ void least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Option
   EnvVars ev;
   MatrixVariable QV;
   pose_16(prog, pb, sp, res.facial, ev, QV);
-  const MatrixVariable t = prog.NewScalar("t");
-  prog.AddLmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
-  prog.SetMinimize(Expr(t));
+  const MatrixVariable t = prog.new_scalar("t");
+  prog.add_lmi("Q_V <= t I", scalar_times(t, MatrixXd::Identity(m, m)) - Expr(QV), Strictness::nonstrict);
+  prog.set_minimize(Expr(t));
   const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
   res.sdp_seconds += cs.seconds;
   if (cs.result.status != lmi::SolveStatus::optimal || !cs.has_point()) return;
@@ -624,13 +624,13 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   const EhatSplit sp = ehat_split(pb.E);
   Program prog;
   EnvVars ev = add_environment(prog, pb, sp, fc);
-  const MatrixVariable QV = prog.NewSymmetric(m, "Q_V");
-  prog.AddLmi("Q_V > 0 (Delta_V > 0)", Expr(QV), Strictness::strict);
+  const MatrixVariable QV = prog.new_symmetric(m, "Q_V");
+  prog.add_lmi("Q_V > 0 (Delta_V > 0)", Expr(QV), Strictness::strict);
   add_condition14(prog, pb, ev, Expr(QV));
   std::vector<Expr> th;
   for (const auto& t : ev.theta) th.emplace_back(t);
   const VhatVars vv = add_vhat(prog, V, K, ev.Xk, th, Expr(QV));
-  prog.SetMarginObjective(1.0);
+  prog.set_margin_objective(1.0);
   const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
   cc.verdict = cs.verdict;
   cc.margin = cs.margin();
@@ -662,10 +662,10 @@ OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ
     return oc;
   }
   Program prog;
-  const MatrixVariable one = prog.NewScalar("unit");
-  prog.AddLinearEquality("unit = 1", Expr(one), MatrixXd::Ones(1, 1));
+  const MatrixVariable one = prog.new_scalar("unit");
+  prog.add_linear_equality("unit = 1", Expr(one), MatrixXd::Ones(1, 1));
   const VhatVars vv = add_vhat(prog, V, K, {X}, {Expr(one)}, Expr(to_double(Q)));
-  prog.SetMarginObjective(1.0);
+  prog.set_margin_objective(1.0);
   const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt);
   oc.verdict = cs.verdict;
   oc.margin = cs.margin();

@@ -79,7 +79,7 @@ struct AnalysisResult {
   std::vector<double> gamma_sqrt_min;
   std::string solver_detail;
   double seconds = 0;      ///< wall time of analyze()
-  double sdp_seconds = 0;  ///< ... of it in lmi::Solve (the rest: Ê, facial reduction, exact checks)
+  double sdp_seconds = 0;  ///< ... of it in lmi::solve (the rest: Ê, facial reduction, exact checks)
 };
 
 /// full: the margin program (16) in (P, X, Q_E, Q_V), then the least dissipative coupling.

@@ -14,7 +14,7 @@ namespace {
 
 // tr(M V) as a 1x1 expression.
 Expr trace_product(const MatrixXd& M, const Expr& V) {
-  Expr r = Expr::Zero(1, 1);
+  Expr r = Expr::zero(1, 1);
   for (Eigen::Index i = 0; i < M.rows(); ++i) {
     MatrixXd e = MatrixXd::Zero(V.cols(), 1);
     e(i, 0) = 1;
@@ -37,12 +37,12 @@ DesignVars build(Program& prog, const Problem& pb, const EhatSplit& sp, const Fa
   const MatrixXd K = to_double(pb.structure.K(pb.T()));
   d.ev = add_environment(prog, pb, sp, fc);
   const auto qs = common_refinement(pb.structure.operator_sizes(), cs.mbar);
-  d.QV = prog.NewBlockDiagonal(qs, "Q_V");
-  d.Sig = prog.NewBlockDiagonal(qs, "Sigma");
-  prog.AddLmi("Q_V > 0", Expr(d.QV), Strictness::strict);
+  d.QV = prog.new_block_diagonal(qs, "Q_V");
+  d.Sig = prog.new_block_diagonal(qs, "Sigma");
+  prog.add_lmi("Q_V > 0", Expr(d.QV), Strictness::strict);
   add_condition14(prog, pb, d.ev, Expr(d.QV));
-  d.Q = prog.NewSymmetric(nb + m, "Q");
-  d.Y = prog.NewSymmetric(nb + m, "Y");
+  d.Q = prog.new_symmetric(nb + m, "Q");
+  d.Y = prog.new_symmetric(nb + m, "Y");
   std::vector<int> nsz, msz;
   std::vector<std::pair<int, int>> bsz, csz;
   for (size_t i = 0; i < cs.mbar.size(); ++i) {
@@ -53,37 +53,37 @@ DesignVars build(Program& prog, const Problem& pb, const EhatSplit& sp, const Fa
   if (has_states) {
     std::vector<int> nonzero_n;
     for (int x : cs.nbar) nonzero_n.push_back(x);
-    d.A = prog.NewBlockDiagonal(nonzero_n, "A_V^G", false);
-    d.B = prog.NewBlockDiagonal(bsz, "B_V^G");
-    d.C = prog.NewBlockDiagonal(csz, "C_V^G");
+    d.A = prog.new_block_diagonal(nonzero_n, "A_V^G", false);
+    d.B = prog.new_block_diagonal(bsz, "B_V^G");
+    d.C = prog.new_block_diagonal(csz, "C_V^G");
   }
-  d.D = prog.NewBlockDiagonal(cs.mbar, "D_V^G", false);
+  d.D = prog.new_block_diagonal(cs.mbar, "D_V^G", false);
   // V-hat_Gamma of (17), affine in the V^Gamma variables
   const Expr Dv(d.D);
   Expr Ah, Bh, Ch;
   const Expr Dh = (1.0 / T) * (Dv - Expr(K));
   if (has_states) {
-    Ah = lmi::blocks({{Expr(d.A), (-1.0 / T) * Expr(d.B)}, {Expr::Zero(m, nb), Expr::Zero(m, m)}}, "A_Vhat");
-    Bh = lmi::blocks({{(1.0 / T) * Expr(d.B)}, {Expr::Identity(m)}}, "B_Vhat");
+    Ah = lmi::blocks({{Expr(d.A), (-1.0 / T) * Expr(d.B)}, {Expr::zero(m, nb), Expr::zero(m, m)}}, "A_Vhat");
+    Bh = lmi::blocks({{(1.0 / T) * Expr(d.B)}, {Expr::identity(m)}}, "B_Vhat");
     Ch = lmi::blocks({{Expr(d.C), (-1.0 / T) * (Dv - Expr(K))}}, "C_Vhat");
   } else {
-    Ah = Expr::Zero(m, m);
-    Bh = Expr::Identity(m);
+    Ah = Expr::zero(m, m);
+    Bh = Expr::identity(m);
     Ch = (-1.0 / T) * (Dv - Expr(K));
   }
-  prog.AddLmi("(20) Q > 0", Expr(d.Q), Strictness::strict);
+  prog.add_lmi("(20) Q > 0", Expr(d.Q), Strictness::strict);
   const Expr R = lmi::blocks({{0.5 * Ch}, {Ah}, {Ch}}, "R of (21)");
   const Expr S = lmi::blocks({{0.5 * (Dh + Dh.transpose()), Bh.transpose(), Dh.transpose()},
-                              {Bh, Expr(d.Q), Expr::Zero(nb + m, m)},
-                              {Dh, Expr::Zero(m, nb + m), Expr(d.Sig)}},
+                              {Bh, Expr(d.Q), Expr::zero(nb + m, m)},
+                              {Dh, Expr::zero(m, nb + m), Expr(d.Sig)}},
                              "S of (21)");
-  prog.AddLmi("(20) Lemma 2 for Vhat_Gamma (non-strict: Vhat(1) = 0)", lmi::blocks({{Expr(d.Y), R.transpose()}, {R, S}}),
+  prog.add_lmi("(20) Lemma 2 for Vhat_Gamma (non-strict: Vhat(1) = 0)", lmi::blocks({{Expr(d.Y), R.transpose()}, {R, S}}),
               Strictness::nonstrict);
-  prog.AddLmi("CCL [[Y, I], [I, Q]] >= 0",
-              lmi::blocks({{Expr(d.Y), Expr::Identity(nb + m)}, {Expr::Identity(nb + m), Expr(d.Q)}}),
+  prog.add_lmi("CCL [[Y, I], [I, Q]] >= 0",
+              lmi::blocks({{Expr(d.Y), Expr::identity(nb + m)}, {Expr::identity(nb + m), Expr(d.Q)}}),
               Strictness::nonstrict);
-  prog.AddLmi("CCL [[Sigma, I], [I, Q_V]] >= 0",
-              lmi::blocks({{Expr(d.Sig), Expr::Identity(m)}, {Expr::Identity(m), Expr(d.QV)}}), Strictness::nonstrict);
+  prog.add_lmi("CCL [[Sigma, I], [I, Q_V]] >= 0",
+              lmi::blocks({{Expr(d.Sig), Expr::identity(m)}, {Expr::identity(m), Expr(d.QV)}}), Strictness::nonstrict);
   return d;
 }
 
@@ -99,14 +99,14 @@ MatQ round_q(const MatrixXd& M, int bits = 30) {
 }
 
 // X = sum theta_k X_k at the solver's point.
-MatrixXd solution_X(const lmi::Result& r, const DesignVars& dv, int m) {
+MatrixXd solution_X(const lmi::SolveResult& r, const DesignVars& dv, int m) {
   MatrixXd X = MatrixXd::Zero(m, m);
-  for (size_t k = 0; k < dv.ev.theta.size(); ++k) X += r.GetSolution(dv.ev.theta[k])(0, 0) * to_double(dv.ev.Xk[k]);
+  for (size_t k = 0; k < dv.ev.theta.size(); ++k) X += r.solution(dv.ev.theta[k])(0, 0) * to_double(dv.ev.Xk[k]);
   return X;
 }
 
 // (24), (23): V from the solver's V^Gamma with Gamma = sqrt(X), dyadic-rounded (round_q).
-StateSpace<rational> coupling_from(const Problem& pb, const lmi::Result& r, const DesignVars& dv, const MatrixXd& X) {
+StateSpace<rational> coupling_from(const Problem& pb, const lmi::SolveResult& r, const DesignVars& dv, const MatrixXd& X) {
   const int m = pb.structure.m();
   MatrixXd G = MatrixXd::Zero(m, m), Gi = MatrixXd::Zero(m, m);
   for (int i = 0; i < m; ++i) {
@@ -116,10 +116,10 @@ StateSpace<rational> coupling_from(const Problem& pb, const lmi::Result& r, cons
   const int nb = pb.coupling.n();
   StateSpace<rational> V;
   V.T = pb.T();
-  V.A = nb ? round_q(r.GetSolution(dv.A)) : MatQ(0, 0);
-  V.B = nb ? round_q(MatrixXd(r.GetSolution(dv.B) * G)) : MatQ(0, m);
-  V.C = nb ? round_q(MatrixXd(Gi * r.GetSolution(dv.C))) : MatQ(m, 0);
-  V.D = round_q(MatrixXd(Gi * r.GetSolution(dv.D) * G));
+  V.A = nb ? round_q(r.solution(dv.A)) : MatQ(0, 0);
+  V.B = nb ? round_q(MatrixXd(r.solution(dv.B) * G)) : MatQ(0, m);
+  V.C = nb ? round_q(MatrixXd(Gi * r.solution(dv.C))) : MatQ(m, 0);
+  V.D = round_q(MatrixXd(Gi * r.solution(dv.D) * G));
   return V;
 }
 
@@ -180,7 +180,7 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   const EhatSplit sp = ehat_split(pb.E);
   const double target = 2.0 * nQ + 2.0 * m;
   MatrixXd Yk, Qk, Sk, QVk;
-  lmi::Result last;
+  lmi::SolveResult last;
   DesignVars dv;
   std::string message;
   for (int it = 0; it <= opt.max_iterations; ++it) {
@@ -188,16 +188,16 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
     dv = build(prog, pb, sp, fc);
     if (it == 0) {
       // initial point: minimise tr(Y + Q + Sigma + Q_V) over the convex set
-      prog.SetMinimize(trace_product(MatrixXd::Identity(nQ, nQ), Expr(dv.Y)) +
+      prog.set_minimize(trace_product(MatrixXd::Identity(nQ, nQ), Expr(dv.Y)) +
                        trace_product(MatrixXd::Identity(nQ, nQ), Expr(dv.Q)) +
                        trace_product(MatrixXd::Identity(m, m), Expr(dv.Sig)) +
                        trace_product(MatrixXd::Identity(m, m), Expr(dv.QV)));
     } else {
-      prog.SetMinimize(trace_product(Yk, Expr(dv.Q)) + trace_product(Qk, Expr(dv.Y)) +
+      prog.set_minimize(trace_product(Yk, Expr(dv.Q)) + trace_product(Qk, Expr(dv.Y)) +
                        trace_product(Sk, Expr(dv.QV)) + trace_product(QVk, Expr(dv.Sig)));
     }
     const lmi::CertifiedSolve cs = lmi::certify_lmi(prog, opt.lmi);
-    const lmi::Result& r = cs.result;
+    const lmi::SolveResult& r = cs.result;
     res.iterations = it;
     if (!cs.has_point() || r.status != lmi::SolveStatus::optimal) {
       if (it == 0) {
@@ -212,10 +212,10 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
       break;
     }
     last = r;
-    Yk = r.GetSolution(dv.Y);
-    Qk = r.GetSolution(dv.Q);
-    Sk = r.GetSolution(dv.Sig);
-    QVk = r.GetSolution(dv.QV);
+    Yk = r.solution(dv.Y);
+    Qk = r.solution(dv.Q);
+    Sk = r.solution(dv.Sig);
+    QVk = r.solution(dv.QV);
     const double tr = (Yk * Qk).trace() + (Sk * QVk).trace();
     res.trace_history.push_back(2 * tr);
     res.trace_gap = 2 * tr - target;
