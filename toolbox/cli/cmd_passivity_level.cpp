@@ -29,8 +29,8 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/tf_options.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
-#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/lti/state_space_json.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -40,9 +40,11 @@
 namespace hapstab::cli {
 namespace {
 
+const TfRules tf_rules{/*period_required=*/true, /*causal=*/true, /*with_delay=*/false};
+
 struct Opts {
-  std::string H, T, ss, kind = "osp", backend = "auto";
-  std::vector<std::string> sets;
+  TfOptions tf;
+  std::string ss, kind = "osp", backend = "auto";
   int lemma = 1, grid = 4096, digits = 17;
   bool json = false;
 };
@@ -65,20 +67,13 @@ nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ?
 StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rational>>& G) {
   StateSpace<double> sys;
   if (!o.ss.empty()) {
-    if (!o.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
+    if (!o.tf.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
     sys = read_ss(o.ss);
   } else {
-    if (o.T.empty()) throw InputError("--T: required with --H");
-    ParseOptions po;
-    po.variable = 'z';
-    po.T = option_rational(o.T, "--T");
-    if (!(po.T > 0)) throw InputError("--T: must be > 0");
-    po.parameters = parse_sets(o.sets);
-    TransferFunction tfG = parse_tf(o.H, po);
-    if (!tfG.is_proper()) throw InputError("--H: the transfer function is not causal (deg num > deg den)");
+    const TransferFunction tfG = parse_tf_options(o.tf, tf_rules);
     G = tfG.H;
     sys = tf2ss(tfG).cast<double>();
-    sys.T = po.T;
+    sys.T = tfG.T;
   }
   if (sys.states() > 0) {  // the levels of Lemmas 1-2 are defined for (Schur) stable systems
     const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(sys.A).eigenvalues();
@@ -235,7 +230,7 @@ int run(const Opts& o) {
   if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
   if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
   if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
-  if (o.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
+  if (o.tf.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
   std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
   const StateSpace<double> sys = read_model(o, G);
   const Levels v = compute_levels(o, backend, sys, G);
@@ -249,9 +244,7 @@ const Register reg({"passivity-level",
                     "frequency-domain level (SISO), LMI with an exact lower-bound certificate, frequency grid",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
-                      app.add_option("--H", o->H, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\")");
-                      app.add_option("--T", o->T, "Sample period, exact (0.01 or 1/100); required with --H");
-                      app.add_option("--set", o->sets, "Parameter of --H, NAME=VALUE (repeatable)");
+                      add_tf_options(app, o->tf, tf_rules, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\"); needs --T");
                       app.add_option("--ss", o->ss, "JSON file {\"A\":[[..]],\"B\":..,\"C\":..,\"D\":..,\"T\":\"1/100\"}");
                       app.add_option("--kind", o->kind, "osp (default) or isp");
                       app.add_option("--backend", o->backend, "auto (default: built-in IPM when exactly certified, else DSDP), dsdp, csdp or ipm");

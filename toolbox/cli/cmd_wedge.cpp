@@ -7,17 +7,19 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/tf_options.hpp"
 #include "hapstab/contact/wedge.hpp"
-#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
 namespace {
 
+// H(z) alone is analysed: --T is needed only when the expression names T.
+const TfRules tf_rules{/*period_required=*/false, /*causal=*/true, /*with_delay=*/false};
+
 struct Opts {
-  std::string H, T;
-  std::vector<std::string> sets;
+  TfOptions tf;
   int digits = 20;
   bool json = false;
 };
@@ -44,24 +46,8 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
 }
 
 int run(const Opts& o) {
-  ParseOptions po;
-  po.variable = 'z';
-  po.parameters = parse_sets(o.sets);
-  if (!o.T.empty()) {
-    po.T = option_rational(o.T, "--T");
-    if (po.T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
-  } else {
-    po.T = 1;  // H(z) alone does not depend on T; the expression may still name T only with --T
-  }
   if (o.digits < 1 || o.digits > 60) throw InputError("--digits must be in [1, 60], got " + std::to_string(o.digits));
-  TransferFunction H;
-  try {
-    H = parse_tf(o.H, po);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--H: ") + e.what());
-  }
-  if (!H.is_discrete()) throw InputError("--H: expected a transfer function in z");
-  if (!H.is_proper()) throw InputError("--H: H(z) = " + H.to_string() + " is not causal (deg num > deg den)");
+  const TransferFunction H = parse_tf_options(o.tf, tf_rules);
   contact::ContactAnalysis a = contact::analyze_contact(H, o.digits);
   const bool applies = a.applies();
   const auto& w = a.wedge;
@@ -126,10 +112,7 @@ const Register reg({"wedge",
                     "nonlinearity (paper 002), decided over all theta in [0, pi]",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
-                      app.add_option("--H", o->H, "H(z) as an exact expression, e.g. \"0.5*(z+1)/(z^2-0.5*z)\"")
-                          ->required();
-                      app.add_option("--T", o->T, "Sample period (only needed if the expression names T)");
-                      app.add_option("--set", o->sets, "Parameter NAME=VALUE (repeatable)");
+                      add_tf_options(app, o->tf, tf_rules, "H(z) as an exact expression, e.g. \"0.5*(z+1)/(z^2-0.5*z)\"");
                       app.add_option("--digits", o->digits, "Significant digits of the margins (1..60, default 20)");
                       app.add_flag("--json", o->json, "JSON output");
                       return [o]() { return run(*o); };
