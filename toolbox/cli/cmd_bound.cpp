@@ -57,12 +57,6 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   }
 }
 
-std::string exact_or_outward(const rational& q, int digits, int dir) {
-  std::string s = to_decimal(q, digits);
-  if (parse_rational(s) == q) return s;
-  return decimal_outward(q, digits, dir);
-}
-
 /// `--damping b`: the verdict b > b* and, at the maximiser w*, the small-gain condition (14)
 /// |rH/(2b + rH)| < 1 beside its rewriting (15) b > Re{-rH} (paper 001, Sec. III), for H z^-n.
 struct DampingCheck {
@@ -124,28 +118,14 @@ Outcome compute(const BoundOpts& o) {
   return r;
 }
 
-bool is_grid(const Bound& b) { return b.status == Status::numeric && b.method.rfind("grid", 0) == 0; }
-
-// The enclosure every output states: rigorous for exact/certified results; for the fast path its
-// stated relative error 1e-13 (not a proof); for a grid [its maximum, inf) (a lower estimate).
-std::pair<std::string, std::string> enclosure(const Bound& b, int digits) {
-  if (b.infinite) return {"inf", "inf"};
-  if (is_grid(b)) return {exact_or_outward(b.lo, 17, -1), "inf"};
-  if (b.status == Status::numeric) {
-    const rational e = abs(b.lo) * rational(1, 10000000000000LL);
-    return {decimal_outward(b.lo - e, 17, -1), decimal_outward(b.hi + e, 17, +1)};
-  }
-  return {exact_or_outward(b.lo, digits + 5, -1), exact_or_outward(b.hi, digits + 5, +1)};
-}
-
 nlohmann::json to_json(const Outcome& r, int digits) {
   nlohmann::json j;
   const Bound& b = r.b;
   j["bound"] = b.infinite ? "inf" : b.value;
   j["omega"] = b.omega ? nlohmann::json(*b.omega) : nlohmann::json(nullptr);
-  const auto [lo, hi] = enclosure(b, digits);
+  const auto [lo, hi] = reported_enclosure(b, digits);
   j["enclosure"] = {lo, hi};
-  j["enclosure_rigorous"] = b.status == Status::exact || b.status == Status::certified || b.infinite;
+  j["enclosure_rigorous"] = enclosure_rigorous(b);
   j["status"] = to_string(b.status);
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
   j["method"] = b.method;
@@ -159,8 +139,9 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   }
   if (!b.note.empty()) j["note"] = b.note;
   if (r.dirichlet) {
-    j["dirichlet_C"] = {exact_or_outward(r.dirichlet->first.lo, digits + 3, -1), exact_or_outward(r.dirichlet->first.hi, digits + 3, +1)};
-    j["dirichlet_D"] = {exact_or_outward(r.dirichlet->second.lo, digits + 3, -1), exact_or_outward(r.dirichlet->second.hi, digits + 3, +1)};
+    const auto& [C, D] = *r.dirichlet;
+    j["dirichlet_C"] = {decimal_exact_or_outward(C.lo, digits + 3, -1), decimal_exact_or_outward(C.hi, digits + 3, +1)};
+    j["dirichlet_D"] = {decimal_exact_or_outward(D.lo, digits + 3, -1), decimal_exact_or_outward(D.hi, digits + 3, +1)};
   }
   if (r.damping) {
     nlohmann::json d;
@@ -182,17 +163,18 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.value) << "   [" << to_string(b.status)
             << "]\n";
   if (!b.infinite && b.status != Status::exact) {
-    const auto [lo, hi] = enclosure(b, o.digits);
+    const bool grid = b.kind == Method::grid;
+    const auto [lo, hi] = reported_enclosure(b, o.digits);
     std::cout << "  enclosure [" << lo << ", " << hi << "]"
-              << (b.status == Status::certified ? "" : is_grid(b) ? "  (a grid maximum only bounds b* from below)"
-                                                                    : "  (stated error, not a proof)")
+              << (b.status == Status::certified ? "" : grid ? "  (a grid maximum only bounds b* from below)"
+                                                              : "  (stated error, not a proof)")
               << "\n";
   }
   if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";
   std::cout << "  method: " << b.method << "\n";
   if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
   if (!b.infinite) {
-    if (is_grid(b)) std::cout << "  passive only if b > " << b.value << " (necessary; the grid may miss the peak)\n";
+    if (b.kind == Method::grid) std::cout << "  passive only if b > " << b.value << " (necessary; the grid may miss the peak)\n";
     else std::cout << "  passive iff b > " << b.value << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
   }
   if (o.explain) {
@@ -204,12 +186,9 @@ void print_human(const Outcome& r, const BoundOpts& o) {
       else if (r.cf->value) std::cout << to_decimal(*r.cf->value, o.digits);
       else if (r.cf->approx) std::cout << *r.cf->approx << " (approximation)";
       std::cout << (r.cf->tight ? "" : "  (upper bound / approximation, not tight)") << "\n";
-      bool agree = false;
-      if (r.cf->infinite) agree = b.infinite;
-      else if (r.cf->value && !b.infinite) agree = r.cf->tight ? (b.lo <= *r.cf->value && *r.cf->value <= b.hi) : (b.lo <= *r.cf->value);
-      else if (r.cf->approx) agree = true;
+      const std::optional<bool> agree = catalogue::agrees(*r.cf, b);
       std::cout << "  generic: " << (b.infinite ? "+inf" : b.value) << " -> "
-                << (r.cf->approx ? "compare (approximation)" : (agree ? "agrees" : "DISAGREES")) << "\n";
+                << (!agree ? "compare (approximation)" : *agree ? "agrees" : "DISAGREES") << "\n";
       if (r.dirichlet) {
         const auto& [C, D] = *r.dirichlet;
         std::cout << "  C = -min sin(y)/y = " << to_decimal((C.lo + C.hi) / 2, o.digits) << ", D = (1 - C)/2 = "

@@ -173,4 +173,10 @@ std::string decimal_outward(const rational& q, int digits, int dir) {
   return to_decimal(q, digits);  // unreachable in practice
 }
 
+std::string decimal_exact_or_outward(const rational& q, int digits, int dir) {
+  std::string s = to_decimal(q, digits);
+  if (parse_rational(s) == q) return s;
+  return decimal_outward(q, digits, dir);
+}
+
 }  // namespace hapstab

@@ -34,6 +34,8 @@ std::optional<std::string> common_decimal(const rational& lo, const rational& hi
 /// q as a decimal with `digits` significant digits rounded outward (dir = -1 down, +1 up), so that
 /// printed enclosures still contain the value.
 std::string decimal_outward(const rational& q, int digits, int dir);
+/// q itself when `digits` significant digits show it exactly, else decimal_outward(q, digits, dir).
+std::string decimal_exact_or_outward(const rational& q, int digits, int dir);
 
 /// 10^e, exact.
 rational pow10(long e);

@@ -64,9 +64,12 @@ Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
     if (auto r = FastBound::run(p)) {
       Bound out;
       out.status = Status::numeric;
+      out.kind = Method::fast;
       out.method = "fast: double-double coefficients, root finding in double, Newton polish";
-      out.lo = out.hi = exact_rational(r->first);
-      out.value = to_decimal(out.lo, 16);
+      const rational v = exact_rational(r->first), e = abs(v) * pow10(-fast_error_digits);
+      out.lo = v - e;
+      out.hi = v + e;
+      out.value = to_decimal(v, 16);
       out.omega = to_decimal(exact_rational(r->second), 16);
       out.omega_lo = out.omega_hi = exact_rational(r->second);
       out.where = "numeric maximiser";
@@ -74,6 +77,17 @@ Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
     }
   }
   return bound_certified(p, digits);
+}
+
+bool enclosure_rigorous(const Bound& b) {
+  return b.infinite || b.status == Status::exact || b.status == Status::certified;
+}
+
+Enclosure<std::string> reported_enclosure(const Bound& b, int digits) {
+  if (b.infinite) return {"inf", "inf"};
+  if (b.kind == Method::grid && b.status == Status::numeric) return {decimal_exact_or_outward(b.lo, 17, -1), "inf"};
+  if (b.status == Status::numeric) return {decimal_outward(b.lo, 17, -1), decimal_outward(b.hi, 17, +1)};
+  return {decimal_exact_or_outward(b.lo, digits + 5, -1), decimal_exact_or_outward(b.hi, digits + 5, +1)};
 }
 
 // ---------------------------------------------------------------------------------------------

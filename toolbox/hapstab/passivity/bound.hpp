@@ -79,7 +79,8 @@ inline const char* to_string(Method m) {
 struct Bound {
   bool infinite = false;
   Status status = Status::numeric;
-  rational lo = 0, hi = 0;
+  Method kind = Method::certified;     ///< the method that produced it (fast hands hard cases to certified)
+  rational lo = 0, hi = 0;             ///< fast: the value -+ its stated error; grid: lo = hi = the grid maximum
   std::string value;                   ///< decimal with the requested digits, or "inf"
   std::optional<std::string> omega;    ///< maximiser in rad/s (decimal), nullopt when none
   std::string where;                   ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
@@ -88,6 +89,18 @@ struct Bound {
   std::string note;
   double value_double() const;         ///< nearest double of the midpoint (+inf when infinite)
 };
+
+/// The error the fast path states (not a proof): relative 10^-fast_error_digits, checked against
+/// the certified path on narrow resonances (tests/passivity, FastPathNeverWrongOnVeryNarrowResonances).
+constexpr int fast_error_digits = 13;
+
+/// The enclosure every output of b* states, as decimal strings: [lo, hi] rounded outward to
+/// digits + 5 for exact and certified results (rigorous); the fast path's stated error band to 17
+/// digits (not a proof); [grid maximum, inf) for the grid, whose maximum only estimates b* from
+/// below. {"inf", "inf"} when b* is infinite.
+Enclosure<std::string> reported_enclosure(const Bound& b, int digits);
+/// True when reported_enclosure is proven to contain b* (exact, certified or infinite).
+bool enclosure_rigorous(const Bound& b);
 
 /// Certified bound to `digits` significant digits (10 <= digits <= 280; default 30).
 Bound bound_certified(const BoundProblem& p, int digits = 30);

@@ -307,4 +307,11 @@ std::optional<Match> match(const BoundProblem& raw) {
   return std::nullopt;
 }
 
+std::optional<bool> agrees(const Match& m, const Bound& b) {
+  if (m.approx) return std::nullopt;
+  if (m.infinite) return b.infinite;
+  if (!m.value || b.infinite) return false;
+  return m.tight ? (b.lo <= *m.value && *m.value <= b.hi) : b.lo <= *m.value;
+}
+
 }  // namespace hapstab::passivity::catalogue

@@ -62,4 +62,9 @@ struct Match {
 /// Recognises the closed form that applies to the problem, or nullopt.
 std::optional<Match> match(const BoundProblem& p);
 
+/// Does the generic bound b agree with the closed form m? Infinite with infinite; a tight value
+/// inside b's enclosure; an upper bound (not tight) at or above b's lower end. nullopt for an
+/// approximation (Dirichlet's C N - D), which is shown beside b, not judged.
+std::optional<bool> agrees(const Match& m, const Bound& b);
+
 }  // namespace hapstab::passivity::catalogue

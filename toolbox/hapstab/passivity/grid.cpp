@@ -14,6 +14,7 @@ Bound bound_grid(const BoundProblem& p, long N) {
   if (auto inf = detail::integrator_pole(p)) return *inf;
   Bound out;
   out.status = Status::numeric;
+  out.kind = Method::grid;
   out.method = "grid (" + std::to_string(N) + " points, double, evaluated on the unit circle)";
   const double T = to_real<double>(p.T);
   const double pi = 3.14159265358979323846;
