@@ -33,7 +33,6 @@ namespace {
 
 using namespace hapstab;
 
-using MatQ = Eigen::Matrix<rational, Eigen::Dynamic, Eigen::Dynamic>;
 
 MatQ random_dyadic(std::mt19937& g, int rows, int cols) {
   std::uniform_int_distribution<int> k(-8, 8);
@@ -116,7 +115,7 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) A(i, j) = to_real<double>(Aq(i, j));  // dyadic: exact
     lmi::Program prog;
-    const lmi::Expr P = prog.NewSymmetric(n, "P");
+    const lmi::Expr P = prog.new_symmetric(n, "P");
     const Eigen::MatrixXd At = A.transpose();
     const lmi::Expr F = At * P * A - P;
     const lmi::LowRank& lr = F.low_rank();
