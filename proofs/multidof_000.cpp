@@ -180,5 +180,5 @@ HAPSTAB_PROOF(multidof_section6, "000", "Sec. VI: feasibility table, the paper's
   const auto p1 = operator_passive(example::operator_H(1));
   const auto p2 = operator_passive(example::operator_H(2));
   check.claim("000.assumption1.operator", "Assumption 1(b), Sec. VI", "the diagonal H(s) of case ii is passive; the 2x2 H(s) given for case i is NOT (its Hermitian part is indefinite near w = 1.84 rad/s), so Assumption 1(b) fails for the paper's case-i simulation operator",
-              Status::exact, p2.passive && p2.certified && !p1.passive && p1.certified, "case i: " + p1.detail + "; case ii: " + p2.detail);
+              Status::exact, p2.holds() && p2.proven() && p1.fails() && p1.proven(), "case i: " + p1.evidence + "; case ii: " + p2.evidence);
 }

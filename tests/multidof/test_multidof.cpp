@@ -205,11 +205,11 @@ TEST(MultidofAssumptions, OperatorPassivity) {
   // has det = 0.005 f(w)^2 - 0.0025 < 0 where f = Re((s^2+5s+10)/(s^2+s+1)) at s = jw dips to
   // about 0.127 near w^2 = 3.4.
   const auto p2 = operator_passive(example::operator_H(2));
-  EXPECT_TRUE(p2.passive) << p2.detail;
-  EXPECT_TRUE(p2.certified);
+  EXPECT_TRUE(p2.holds()) << p2.evidence;
+  EXPECT_TRUE(p2.proven());
   const auto p1 = operator_passive(example::operator_H(1));
-  EXPECT_FALSE(p1.passive) << p1.detail;
-  EXPECT_TRUE(p1.certified);
+  EXPECT_TRUE(p1.fails()) << p1.evidence;
+  EXPECT_TRUE(p1.proven());
   EXPECT_TRUE(hurwitz_stable(Polynomial<Q>(std::vector<Q>{Q(1), Q(1), Q(1)})));
   EXPECT_FALSE(hurwitz_stable(Polynomial<Q>(std::vector<Q>{Q(1), Q(0), Q(1)})));
   EXPECT_FALSE(hurwitz_stable(Polynomial<Q>(std::vector<Q>{Q(1), Q(-1), Q(1)})));

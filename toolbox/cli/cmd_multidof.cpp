@@ -67,7 +67,10 @@ lmi::Options lmi_options(const Opts& o) {
 json assumptions(const multidof::SceneProblem& sp) {
   json a = json::array();
   for (const auto& c : multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names))
-    a.push_back({{"name", c.name}, {"holds", c.holds}, {"certified", c.certified}, {"detail", c.detail}});
+    a.push_back({{"name", c.name},
+                 {"holds", c.verdict.holds()},
+                 {"certified", c.verdict.decided() && c.verdict.status == Status::exact},
+                 {"detail", c.verdict.evidence}});
   return a;
 }
 

@@ -81,8 +81,7 @@ bool nonnegative_on_R(const P& p, rational& witness) {
 }
 }  // namespace
 
-PassivityCheck operator_passive(const TransferMatrix& H) {
-  PassivityCheck pc;
+Verdict operator_passive(const TransferMatrix& H) {
   const size_t m = H.outputs();
   if (m == 0 || H.inputs() != m) throw InputError("operator H(s) must be square");
   if (H.domain != Domain::s) throw InputError("operator H must be continuous (a transfer matrix in s)");
@@ -95,12 +94,11 @@ PassivityCheck operator_passive(const TransferMatrix& H) {
       const auto& e = H(i, j);
       if (!e.is_proper()) throw InputError("operator H(s) entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") is improper");
       if (!e.num().is_zero() && !hurwitz_stable(e.den())) {
-        pc.detail = "entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") " + e.to_string() +
+        return {Outcome::undecided, Status::failed,
+                "entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") " + e.to_string() +
                     " has a pole in Re s >= 0 (exact Routh array): not certified passive (this test covers operators "
                     "analytic in Re s >= 0; a positive-real operator with imaginary-axis poles, e.g. a spring k/s, "
-                    "is outside it, so no verdict either way)";
-        pc.certified = false;
-        return pc;
+                    "is outside it, so no verdict either way)"};
       }
       const CP D = at_jw(e.den());
       num[i][j] = at_jw(e.num()) * conj(D);  // H = N conj(D) / |D|^2
@@ -139,39 +137,36 @@ PassivityCheck operator_passive(const TransferMatrix& H) {
     if (!nonnegative_on_R(d.re, w)) {
       std::string rows;
       for (size_t a : idx) rows += (rows.empty() ? "" : ",") + std::to_string(a + 1);
-      pc.detail = "the principal minor {" + rows + "} of He(jw) is negative at w = " + w.str() + ": not passive (exact)";
-      pc.certified = true;
-      return pc;
+      return Verdict::of(false, Status::exact,
+                         "the principal minor {" + rows + "} of He(jw) is negative at w = " + w.str() + ": not passive (exact)");
     }
   }
-  pc.passive = true;
-  pc.certified = true;
-  pc.detail = "every entry stable (exact Routh); all " + std::to_string((1u << m) - 1) +
-              " principal minors of He(jw) >= 0 for all real w (exact root isolation)";
-  return pc;
+  return Verdict::of(true, Status::exact,
+                     "every entry stable (exact Routh); all " + std::to_string((1u << m) - 1) +
+                         " principal minors of He(jw) >= 0 for all real w (exact root isolation)");
 }
 
 std::vector<AssumptionCheck> check_assumptions(const Structure& structure, const std::vector<TransferMatrix>& operators,
                                                const std::vector<std::string>& operator_names) {
   std::vector<AssumptionCheck> out;
   for (size_t i = 0; i < operators.size(); ++i) {
-    const auto pc = operator_passive(operators[i]);
     const std::string name = i < operator_names.size() ? operator_names[i] : "H" + std::to_string(i + 1);
-    out.push_back({"Assumption 1(b): operator '" + name + "' passive (He(jw) >= 0 for all w)", pc.passive, pc.certified,
-                   pc.detail});
+    out.push_back({"Assumption 1(b): operator '" + name + "' passive (He(jw) >= 0 for all w)",
+                   operator_passive(operators[i])});
   }
   for (const auto& op : structure.operators)
     for (const auto& d : op.devices) {
       std::ostringstream lv;
       lv << to_double(d.osp).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"));
-      out.push_back({"Assumption 1(a): device '" + d.name + "' OSP level", lmi::exact_definiteness(d.osp).pd, true,
-                     "Delta_d = " + lv.str() + " (a mass-damper 1/(m s + b) has level b)"});
+      out.push_back({"Assumption 1(a): device '" + d.name + "' OSP level",
+                     Verdict::of(lmi::exact_definiteness(d.osp).pd, Status::exact,
+                                 "Delta_d = " + lv.str() + " (a mass-damper 1/(m s + b) has level b)")});
     }
   return out;
 }
 
 bool all_hold(const std::vector<AssumptionCheck>& checks) {
-  return std::all_of(checks.begin(), checks.end(), [](const AssumptionCheck& c) { return c.holds; });
+  return std::all_of(checks.begin(), checks.end(), [](const AssumptionCheck& c) { return c.verdict.holds(); });
 }
 
 }  // namespace hapstab::multidof

@@ -18,24 +18,20 @@
 
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/multidof/structure.hpp"
+#include "hapstab/numeric/result.hpp"
 
 namespace hapstab::multidof {
 
-struct PassivityCheck {
-  bool passive = false;
-  bool certified = false;   ///< exact (Routh + root isolation) verdict
-  std::string detail;       ///< which minor / entry fails, or what was proven
-};
-
-/// H must be square, continuous (Domain::s), proper entries. Up to 4 x 4 (Leibniz minors).
-PassivityCheck operator_passive(const TransferMatrix& H);
+/// Is the operator H passive? holds / fails, exact (Routh + root isolation), the evidence naming
+/// the minor or entry that fails or what was proven; undecided (status failed) for an entry with
+/// a pole in Re s >= 0, which this test does not cover. H must be square, continuous (Domain::s),
+/// with proper entries; up to 4 x 4 (Leibniz minors).
+Verdict operator_passive(const TransferMatrix& H);
 
 /// One line of Assumption 1 as checked on a problem's data.
 struct AssumptionCheck {
   std::string name;  ///< e.g. "Assumption 1(b): operator 'H1' passive (He(jw) >= 0 for all w)"
-  bool holds = false;
-  bool certified = false;
-  std::string detail;
+  Verdict verdict;
 };
 /// (b) for every operator (its Z_O(s) and name) and (a) for every device of `structure`
 /// (OSP level positive definite, exactly). Theorem 5/6's conclusions need every line to hold.
