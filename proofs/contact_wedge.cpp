@@ -115,12 +115,12 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
     int kind;
     hapstab::TransferFunction H = random_h(gen, kind);
     ContactAnalysis a = analyze_contact(H, 12);
-    if (!a.wedge.evaluated || !a.tsypkin.evaluated) continue;
+    if (!a.wedge.evaluated() || !a.tsypkin.evaluated()) continue;
     ++n_h;
-    t_holds += a.tsypkin.holds;
-    w_holds += a.wedge.holds;
-    both_hold += a.tsypkin.holds && a.wedge.holds;
-    if (a.tsypkin.holds && !a.wedge.holds) ++bad_contain;
+    t_holds += a.tsypkin.verdict.holds();
+    w_holds += a.wedge.verdict.holds();
+    both_hold += a.tsypkin.verdict.holds() && a.wedge.verdict.holds();
+    if (a.tsypkin.verdict.holds() && !a.wedge.verdict.holds()) ++bad_contain;
     if (!a.wedge.gain_infinite) {
       if (a.tsypkin.gain_infinite || a.wedge.max_gain.enclosure->hi < a.tsypkin.max_gain.enclosure->lo) ++bad_gain;
       else if (!a.tsypkin.gain_infinite)

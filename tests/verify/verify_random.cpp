@@ -304,7 +304,7 @@ Ref wedge_side(const RF& H, const Ref& theta, bool wedge) {
 
 bool check_criterion(const RF& H, const contact::CriterionReport& c, bool wedge, int digits, std::ostream& why) {
   Stopwatch reference_time;
-  if (!c.evaluated || !c.margin.enclosure) {
+  if (!c.evaluated() || !c.margin.enclosure) {
     why << "  " << c.name << " not evaluated\n";
     return false;
   }
@@ -340,8 +340,9 @@ bool check_criterion(const RF& H, const contact::CriterionReport& c, bool wedge,
                                    pi_ * (grid[k].second + 1) / n));
   if (low < lo - eps) ok = false, why << "  " << c.name << ": the reference reaches " << low << " < lo = " << lo << "\n";
   // (3) the exact verdict: holds iff the margin is positive
-  if (c.holds != (lo > 0)) ok = false, why << "  " << c.name << ": holds = " << c.holds << " but the margin is [" << lo << ", " << hi << "]\n";
-  if (c.holds && low <= 0) ok = false, why << "  " << c.name << " holds but the reference reaches " << low << "\n";
+  if (c.verdict.holds() != (lo > 0))
+    ok = false, why << "  " << c.name << ": holds = " << c.verdict.holds() << " but the margin is [" << lo << ", " << hi << "]\n";
+  if (c.verdict.holds() && low <= 0) ok = false, why << "  " << c.name << " holds but the reference reaches " << low << "\n";
   // (4) k* = -1/(min - 1) when the minimum of the left side (margin - 1) is negative
   if (c.gain_infinite != (lo >= 1)) {
     if (!(lo < 1 && hi >= 1)) ok = false, why << "  " << c.name << ": gain_infinite = " << c.gain_infinite << " with margin [" << lo << ", " << hi << "]\n";

@@ -33,9 +33,9 @@ std::string dec(const Certified<rational>& r, int digits) {
 
 nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
   nlohmann::json j;
-  j["evaluated"] = c.evaluated;
-  if (!c.evaluated) return j;
-  j["holds"] = c.holds;
+  j["evaluated"] = c.evaluated();
+  if (!c.evaluated()) return j;
+  j["holds"] = c.verdict.holds();
   j["margin"] = dec(c.margin, digits);
   j["margin_enclosure"] = {to_decimal(c.margin.enclosure->lo, digits + 5), to_decimal(c.margin.enclosure->hi, digits + 5)};
   j["margin_status"] = to_string(c.margin.status);
@@ -53,30 +53,30 @@ int run(const Opts& o) {
   const auto& w = a.wedge;
   const auto& ts = a.tsypkin;
   std::string status = "not evaluated";
-  if (w.evaluated || ts.evaluated) {
-    bool all_exact = (!w.evaluated || w.margin.status == Status::exact) && (!ts.evaluated || ts.margin.status == Status::exact);
+  if (w.evaluated() || ts.evaluated()) {
+    bool all_exact = (!w.evaluated() || w.margin.status == Status::exact) && (!ts.evaluated() || ts.margin.status == Status::exact);
     status = all_exact ? "exact" : "certified";
   }
   std::string verdict;
-  if (!w.evaluated)
+  if (!w.evaluated())
     verdict = "wedge criterion not evaluated: its branches are unbounded (H has a pole on the unit circle); the "
               "criteria do not apply";
   else if (!applies)
     verdict = "the criteria do not apply: a paper assumption is violated";
   else
-    verdict = std::string(w.holds ? "wedge criterion holds: no sustained oscillation (paper 002, (25))"
+    verdict = std::string(w.verdict.holds() ? "wedge criterion holds: no sustained oscillation (paper 002, (25))"
                                   : "wedge criterion fails: oscillations are not excluded") +
-              "; Tsypkin " + (ts.holds ? "holds" : "fails");
+              "; Tsypkin " + (ts.verdict.holds() ? "holds" : "fails");
   if (o.json) {
     nlohmann::json j;
     j["H"] = H.to_string();
-    j["wedge_holds"] = w.evaluated && w.holds;
-    j["tsypkin_holds"] = ts.evaluated && ts.holds;
-    j["wedge_margin"] = w.evaluated ? nlohmann::json(dec(w.margin, o.digits)) : nlohmann::json(nullptr);
-    j["tsypkin_margin"] = ts.evaluated ? nlohmann::json(dec(ts.margin, o.digits)) : nlohmann::json(nullptr);
-    j["max_gain_wedge"] = !w.evaluated ? nlohmann::json(nullptr)
+    j["wedge_holds"] = w.evaluated() && w.verdict.holds();
+    j["tsypkin_holds"] = ts.evaluated() && ts.verdict.holds();
+    j["wedge_margin"] = w.evaluated() ? nlohmann::json(dec(w.margin, o.digits)) : nlohmann::json(nullptr);
+    j["tsypkin_margin"] = ts.evaluated() ? nlohmann::json(dec(ts.margin, o.digits)) : nlohmann::json(nullptr);
+    j["max_gain_wedge"] = !w.evaluated() ? nlohmann::json(nullptr)
                                        : nlohmann::json(w.gain_infinite ? std::string("inf") : dec(w.max_gain, o.digits));
-    j["max_gain_tsypkin"] = !ts.evaluated ? nlohmann::json(nullptr)
+    j["max_gain_tsypkin"] = !ts.evaluated() ? nlohmann::json(nullptr)
                                           : nlohmann::json(ts.gain_infinite ? std::string("inf") : dec(ts.max_gain, o.digits));
     j["status"] = status;
     j["assumptions"] = a.assumptions.violated;
@@ -90,11 +90,11 @@ int run(const Opts& o) {
     std::cout << "H(z) = " << H.to_string() << "\n";
     {
       for (const auto* c : {&w, &ts}) {
-        if (!c->evaluated) {
+        if (!c->evaluated()) {
           std::cout << c->name << ": not evaluated (unbounded on the unit circle)\n";
           continue;
         }
-        std::cout << c->name << ": " << (c->holds ? "holds" : "fails") << " [exact]; min over theta of left side + 1 = "
+        std::cout << c->name << ": " << (c->verdict.holds() ? "holds" : "fails") << " [exact]; min over theta of left side + 1 = "
                   << dec(c->margin, o.digits) << " [" << to_string(c->margin.status) << "] at theta = " << c->theta_at_min
                   << " rad; max gain k* = " << (c->gain_infinite ? std::string("inf") : dec(c->max_gain, o.digits))
                   << "\n";
@@ -104,7 +104,7 @@ int run(const Opts& o) {
     for (const auto& v : a.assumptions.violated) std::cout << "\n  - " << v;
     std::cout << "\n(r_k > 0 is a property of the bias input, not of H)\n" << verdict << "\n";
   }
-  return (w.evaluated && w.holds && applies) ? exit_ok : exit_property_fails;
+  return (w.evaluated() && w.verdict.holds() && applies) ? exit_ok : exit_property_fails;
 }
 
 const Register reg({"wedge",

@@ -45,13 +45,13 @@ ConservatismRow evaluate_case(const ConservatismCase& c, long steps) {
   r.H = mh.H;
   ContactAnalysis a = analyze_contact(r.H, 12);
   r.assumptions = a.assumptions.violated;
-  r.criteria_evaluated = a.wedge.evaluated;
-  r.tsypkin_evaluated = a.tsypkin.evaluated;
-  if (a.wedge.evaluated) {
+  r.criteria_evaluated = a.wedge.evaluated();
+  r.tsypkin_evaluated = a.tsypkin.evaluated();
+  if (a.wedge.evaluated()) {
     r.wedge_inf = a.wedge.gain_infinite;
     if (!r.wedge_inf) r.k_wedge = static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
   }
-  if (a.tsypkin.evaluated) {
+  if (a.tsypkin.evaluated()) {
     r.tsypkin_inf = a.tsypkin.gain_infinite;
     if (!r.tsypkin_inf) r.k_tsypkin = static_cast<double>(mpfloat<30>(a.tsypkin.max_gain.value));
   }

@@ -341,10 +341,12 @@ namespace {
 CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>& sides, int digits) {
   CriterionReport r;
   r.name = name;
-  r.evaluated = true;
   std::vector<RatFun> plus1;
   for (const auto& f : sides) plus1.push_back(f + RatFun(1));
-  r.holds = max_positive(plus1, true);
+  const bool holds = max_positive(plus1, true);
+  r.verdict = Verdict::of(holds, Status::exact,
+                          std::string("left side + 1 ") + (holds ? "> 0" : "<= 0 somewhere") +
+                              " on [0, pi]: exact real-root isolation of the numerators in u = tan^2(theta/2)");
   MinOfMax mm = min_of_max(plus1, digits);
   const rational mid = (mm.value.lo + mm.value.hi) / 2;
   if (mm.value.lo == mm.value.hi)

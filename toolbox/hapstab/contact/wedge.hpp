@@ -86,8 +86,11 @@ bool has_root_on_unit_circle(const Polynomial<rational>& p);
 /// One criterion's verdict for H.
 struct CriterionReport {
   std::string name;                 ///< "wedge (25)" or "Tsypkin (21)"
-  bool evaluated = false;           ///< false when H has a pole on the unit circle
-  bool holds = false;               ///< exact: left side + 1 > 0 for every theta in [0, pi]
+  /// holds / fails, exact: left side + 1 > 0 for every theta in [0, pi]. Undecided (status
+  /// failed) when the criterion was not evaluated: a branch is unbounded (a pole of H on the
+  /// unit circle); then margin and max_gain are unset.
+  Verdict verdict{Outcome::undecided, Status::failed, "not evaluated: a pole of H on the unit circle"};
+  bool evaluated() const { return verdict.decided(); }
   Certified<rational> margin;          ///< min over theta of left side + 1 (certified enclosure)
   double theta_at_min = 0;          ///< radians (numeric, from the certified enclosure of u*)
   bool gain_infinite = false;       ///< exact: k*H satisfies the criterion for every k > 0
