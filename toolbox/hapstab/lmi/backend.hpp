@@ -31,7 +31,7 @@
 
 namespace hapstab::lmi {
 
-/// automatic (Solve's default): programs are first solved by the built-in IPM and
+/// automatic (solve()'s default): programs are first solved by the built-in IPM and
 /// that answer is kept only when exactly certified; otherwise DSDP (then CSDP), as `dsdp`.
 enum class Backend { automatic, dsdp, csdp, ipm };
 const char* to_string(Backend b);
@@ -85,9 +85,9 @@ inline constexpr const char* kCsdpTimedOut = "CSDP did not finish within its tim
 /// predictor-corrector, infeasible start; the Schur complement from the terms' low-rank pieces
 /// (SdpTerm::factors) where given, else dense (n^2 x m per block: a block whose dense data would
 /// exceed 2^26 doubles declines at once with numerical_trouble); no infeasibility detection of its own (diverging iterates end in
-/// numerical_trouble), so Solve trusts it only through an exact certificate (solve.hpp).
+/// numerical_trouble), so solve() trusts it only through an exact certificate (solve.hpp).
 BackendResult solve_ipm(const StandardForm& sf);
-/// `automatic` is resolved by Solve (solve.hpp); here it means DSDP.
+/// `automatic` is resolved by solve() (solve.hpp); here it means DSDP.
 inline BackendResult solve_standard(const StandardForm& sf, Backend b, double csdp_time_limit = 30) {
   return b == Backend::csdp ? solve_csdp(sf, csdp_time_limit) : b == Backend::ipm ? solve_ipm(sf) : solve_dsdp(sf);
 }

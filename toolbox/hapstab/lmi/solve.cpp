@@ -1,4 +1,4 @@
-// hapstab/lmi/solve.cpp -- Solve (solve.hpp): the standard form of standard_form.hpp, the
+// hapstab/lmi/solve.cpp -- solve() (solve.hpp): the standard form of standard_form.hpp, the
 // back-end call, then (5) decide_verdict and the exact certificates, certify_feasible (a
 // rounded point) and certify_infeasible (a Farkas ray); the equilibrated retry, the CSDP
 // fallback and the built-in IPM first (Options::backend).

@@ -1,5 +1,5 @@
 // hapstab/lmi/sparse_ops.hpp -- internal to lmi/: small operations on the sparse terms
-// (program.hpp's SpMat) shared by the program object and Solve's standard-form builder.
+// (program.hpp's SpMat) shared by the program object and solve()'s standard-form builder.
 #pragma once
 
 #include <algorithm>

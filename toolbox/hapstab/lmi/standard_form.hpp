@@ -1,4 +1,4 @@
-// hapstab/lmi/standard_form.hpp -- internal to lmi/: steps (1)-(3) of Solve's pipeline
+// hapstab/lmi/standard_form.hpp -- internal to lmi/: steps (1)-(3) of solve()'s pipeline
 // (solve.hpp), a Program turned into the back-ends' StandardForm (backend.hpp), and back.
 //
 //   collect_blocks      the LMIs, then every entry of a linear inequality as a 1x1 block;

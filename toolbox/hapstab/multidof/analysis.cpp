@@ -468,7 +468,7 @@ ScaledPoint scaled_point(const lmi::CertifiedSolve& cs, const EnvVars& ev, const
   return p;
 }
 
-// The verdict of (16) before any point is re-checked: infeasible with Solve's exact Farkas
+// The verdict of (16) before any point is re-checked: infeasible with solve()'s exact Farkas
 // certificate (evidence `farkas`) or numerically ("numeric only"); otherwise the solver's
 // outcome, numeric, no evidence yet.
 Verdict unchecked_verdict(const lmi::CertifiedSolve& cs, const std::string& farkas) {
