@@ -9,6 +9,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/poly/stability.hpp"
 #include "hapstab/passivity/catalogue.hpp"
 #include "passivity/reference.hpp"
 

@@ -195,8 +195,8 @@ void report_text(const Opts& o, const Levels& v) {
     std::cout << (only_bound ? " <= " : " = ") << c.value << "   [" << to_string(c.status) << (only_bound ? " upper bound" : "")
               << ", " << c.method << "]\n";
     if (c.enclosure && c.enclosure->lo != c.enclosure->hi) {
-      const std::string lo = passivity::decimal_outward(c.enclosure->lo, o.digits, -1);
-      const std::string hi = passivity::decimal_outward(c.enclosure->hi, o.digits, +1);
+      const std::string lo = decimal_outward(c.enclosure->lo, o.digits, -1);
+      const std::string hi = decimal_outward(c.enclosure->hi, o.digits, +1);
       if (lo != hi) std::cout << "  enclosure: [" << lo << ", " << hi << "]\n";
     }
     std::cout.precision(12);

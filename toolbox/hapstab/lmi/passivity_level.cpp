@@ -13,6 +13,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/poly/stability.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::lmi {
@@ -313,12 +314,12 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
     return out;
   }
   std::string why;
-  if (!passivity::marginally_stable(G.den(), &why)) {
+  if (!marginally_stable(G.den(), &why)) {
     out.note = "G is not stable (" + why + ")";
     return out;
   }
   // Schur stability: no pole on the circle either (marginally_stable allows simple ones)
-  if (passivity::unit_circle_roots(G.den()) > 0) {
+  if (unit_circle_roots(G.den()) > 0) {
     out.note = "G has a pole on the unit circle: its passivity levels are not defined (Lemma 1 needs a stable A)";
     return out;
   }
@@ -354,7 +355,7 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
   }
   out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
   if (kind == PassivityKind::osp) {
-    if (passivity::unit_circle_roots(G.num()) > 0)
+    if (unit_circle_roots(G.num()) > 0)
       out.note = "G has a zero on the unit circle: delta* is the supremum of the non-strict levels; the strict "
                  "inequality (1) holds for no delta (Lemma 1's strict LMI is infeasible)";
     if (!(out.level > 0))

@@ -25,11 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/rational_function.hpp"
-#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::passivity {
 
@@ -56,11 +54,6 @@ void check_problem_size(const BoundProblem& p);
 /// p with a fractional delay that is a whole multiple kT moved into the integer delay (n + k): the
 /// form every method and the closed-form matcher work on.
 BoundProblem with_integer_delay(BoundProblem p);
-
-/// unit_circle_roots(p) (distinct roots on |z| = 1) and marginally_stable(d) (every root in
-/// |z| <= 1, those on the circle simple: the poles H may have) live in poly/stability.hpp.
-using hapstab::marginally_stable;
-using hapstab::unit_circle_roots;
 
 /// The exact objective as a function of c = cos(wT), without eta (see the header comment).
 struct Objective {
@@ -140,8 +133,5 @@ NecessaryCheck necessary_condition(const RationalFunction<rational>& H, const ra
 /// Re{T H(e^{jwT}) z^{-n} e^{-j w t_d}/(1 - e^{jwT})} + eta at one w, in 50-digit arithmetic
 /// through the c-form (no cancellation at w -> 0). Used by figures and the grid method.
 double objective_at(const BoundProblem& p, double omega);
-
-/// decimal_outward(q, digits, dir): q rounded outward to `digits` digits (numeric/decimal.hpp).
-using hapstab::decimal_outward;
 
 }  // namespace hapstab::passivity
