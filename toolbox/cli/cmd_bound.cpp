@@ -127,6 +127,7 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   j["enclosure"] = {lo, hi};
   j["enclosure_rigorous"] = enclosure_rigorous(b);
   j["status"] = to_string(b.status);
+  if (b.status == Status::exact && !b.infinite) j["exact"] = b.lo.str();  // "p/q": the value itself
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
   j["method"] = b.method;
   j["where"] = b.where;

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -47,6 +48,21 @@ struct Register {
   explicit Register(Command c) { commands().push_back(std::move(c)); }
 };
 
+/// The `hapstab` application with every registered command as a subcommand; `runners` receives
+/// each subcommand's body. main and run_in_process build it the same way.
+std::unique_ptr<CLI::App> make_app(std::vector<std::pair<CLI::App*, Runner>>& runners);
+
+/// One in-process run of a command: its exit code and the last JSON it printed (null if none).
+struct InProcessRun {
+  int code;
+  nlohmann::json json;
+};
+/// Runs `hapstab args...` (without the program name) in this process, capturing what print_json
+/// prints on this thread instead of writing it. Errors propagate as exceptions (exit_code_for
+/// maps them). `hapstab sweep` and the Python module call this, so their numbers are the
+/// command's own, by construction.
+InProcessRun run_in_process(const std::vector<std::string>& args);
+
 /// Parses an exact rational option value; the error names the option.
 rational option_rational(const std::string& text, const std::string& option);
 
@@ -57,7 +73,7 @@ std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets)
 /// a file can be written in it; InputError (exit 2) naming the option otherwise.
 std::filesystem::path output_folder(const std::string& dir, const std::string& option);
 
-/// Prints JSON (2-space indented) to stdout.
+/// Prints JSON (2-space indented) to stdout (or into run_in_process's capture on its thread).
 void print_json(const nlohmann::json& j);
 
 }  // namespace hapstab::cli

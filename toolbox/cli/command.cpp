@@ -1,0 +1,101 @@
+// cli/command.cpp -- the command registry, the shared option helpers, the one exception-to-exit-code
+// mapping, and the in-process runner that `hapstab sweep` and the Python module use.
+#include "cli/command.hpp"
+
+#include <fstream>
+#include <iostream>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::cli {
+
+std::vector<Command>& commands() {
+  static std::vector<Command> c;
+  return c;
+}
+
+rational option_rational(const std::string& text, const std::string& option) {
+  return parse_rational(text, option);
+}
+
+std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets) {
+  std::map<std::string, rational> out;
+  for (const auto& s : sets) {
+    auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--set '" + s + "': expected NAME=VALUE, e.g. --set K=1000");
+    std::string name = s.substr(0, eq);
+    out[name] = parse_rational(s.substr(eq + 1), "--set " + name);
+  }
+  return out;
+}
+
+std::filesystem::path output_folder(const std::string& dir, const std::string& option) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) throw InputError(option + ": an empty folder name");
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec))
+    throw InputError(option + ": cannot create '" + dir + "': " + (ec ? ec.message() : "not a folder"));
+  const fs::path probe = fs::path(dir) / ".hapstab-write-test";
+  {
+    std::ofstream f(probe);
+    if (!f) throw InputError(option + ": cannot write in '" + dir + "'");
+  }
+  fs::remove(probe, ec);
+  return dir;
+}
+
+namespace {
+// Where print_json writes on this thread: stdout, or the capture of run_in_process.
+thread_local std::vector<nlohmann::json>* json_capture = nullptr;
+}  // namespace
+
+void print_json(const nlohmann::json& j) {
+  if (json_capture) json_capture->push_back(j);
+  else std::cout << j.dump(2) << std::endl;
+}
+
+std::unique_ptr<CLI::App> make_app(std::vector<std::pair<CLI::App*, Runner>>& runners) {
+  auto app = std::make_unique<CLI::App>(
+      "hapstab -- passivity and stability of sampled-data haptic systems.\n"
+      "Exit codes: 0 success, 1 the property does not hold, 2 bad input, 3 numerical failure.");
+  app->require_subcommand(1);
+  app->set_version_flag("--version", "hapstab " HAPSTAB_VERSION);
+  runners.clear();
+  for (auto& c : commands()) {
+    CLI::App* sub = app->add_subcommand(c.name, c.help);
+    runners.emplace_back(sub, c.setup(*sub));
+  }
+  return app;
+}
+
+InProcessRun run_in_process(const std::vector<std::string>& args) {
+  std::vector<std::pair<CLI::App*, Runner>> runners;
+  auto app = make_app(runners);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  app->parse(reversed);
+  struct Capture {
+    std::vector<nlohmann::json> printed;
+    Capture() { json_capture = &printed; }
+    ~Capture() { json_capture = nullptr; }
+  } capture;
+  InProcessRun out{exit_bad_input, nullptr};
+  for (auto& [sub, run] : runners)
+    if (sub->parsed()) {
+      out.code = run();
+      break;
+    }
+  if (!capture.printed.empty()) out.json = std::move(capture.printed.back());
+  return out;
+}
+
+ErrorExit exit_code_for(const std::exception& e) {
+  if (dynamic_cast<const InputError*>(&e) || dynamic_cast<const CLI::ParseError*>(&e))
+    return {exit_bad_input, "error"};
+  if (dynamic_cast<const NumericalError*>(&e)) return {exit_numerical, "numerical failure"};
+  return {exit_numerical, "internal error"};
+}
+
+}  // namespace hapstab::cli
