@@ -50,7 +50,7 @@ const rational& reference(int i) {
   if (refs.empty())
     for (size_t k = 0; k < std::size(cases); ++k) {
       Bound b = bound_certified(problem(static_cast<int>(k)), 100);
-      refs.push_back((b.lo + b.hi) / 2);
+      refs.push_back(b.value);
     }
   return refs[i];
 }
@@ -84,9 +84,9 @@ void BM_certified(benchmark::State& st) {
   Bound b;
   for (auto _ : st) {
     b = bound_certified(p, digits);
-    keep(b.lo);
+    keep(b.enclosure->lo);
   }
-  set_error(st, (b.lo + b.hi) / 2, i);
+  set_error(st, b.value, i);
   st.SetLabel(cases[i].name);
 }
 
@@ -98,9 +98,9 @@ void BM_grid(benchmark::State& st) {
   Bound b;
   for (auto _ : st) {
     b = bound_grid(p, N);
-    keep(b.lo);
+    keep(b.enclosure->lo);
   }
-  set_error(st, b.lo, i);
+  set_error(st, b.enclosure->lo, i);
   st.SetLabel(cases[i].name);
 }
 

@@ -259,7 +259,7 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
     return false;
   }
   Stopwatch reference_time;
-  const Ref lo = ref(b.lo), hi = ref(b.hi);
+  const Ref lo = ref(b.enclosure->lo), hi = ref(b.enclosure->hi);
   const Ref eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));  // 30 digits asked, 3 for the maximiser's width
   const Ref w_end = ref_pi() / ref(p.T);
   // w -> 0: the objective is even and analytic in w, so f(w0) = f(0) + O((w0 T)^2) = f(0) + 1e-60;
@@ -267,8 +267,8 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   const Ref w0 = Ref("1e-30") / ref(p.T);
   bool ok = true;
   // (1) the reference at the certified maximiser lies in the enclosure
-  if (b.omega) {
-    Ref w = (ref(b.omega_lo) + ref(b.omega_hi)) / 2;
+  if (b.omega_enclosure) {
+    Ref w = (ref(b.omega_enclosure->lo) + ref(b.omega_enclosure->hi)) / 2;
     if (w < w0) w = w0;
     const Ref f = objective(p, w);
     if (f < lo - eps || f > hi + eps)

@@ -103,15 +103,15 @@ Outcome compute(const BoundOpts& o) {
     if (d.b <= 0) throw InputError("--damping must be > 0 (got " + o.damping + ")");
     if (r.b.status == Status::numeric && m != Method::certified)
       throw InputError("--damping needs a proven b*: use --method certified (the default)");
-    d.passive = !r.b.infinite && d.b > r.b.hi;
-    if (!r.b.infinite && d.b > r.b.lo && d.b <= r.b.hi)
+    d.passive = !r.b.infinite && d.b > r.b.enclosure->hi;
+    if (!r.b.infinite && d.b > r.b.enclosure->lo && d.b <= r.b.enclosure->hi)
       throw NumericalError("--damping " + o.damping + " lies inside the enclosure of b*; raise --digits");
     const BoundProblem q = with_integer_delay(r.p);
-    if (!r.b.infinite && !q.frac_delay && q.eta == 0 && r.b.omega_lo > 0) {
+    if (!r.b.infinite && !q.frac_delay && q.eta == 0 && r.b.omega_enclosure && r.b.omega_enclosure->lo > 0) {
       std::vector<rational> zn(static_cast<size_t>(q.delay) + 1, rational(0));
       zn.back() = 1;
       RationalFunction<rational> Hn(q.H.num(), q.H.den() * Polynomial<rational>(std::move(zn)));  // H z^-n
-      d.at_max = necessary_condition(Hn, q.T, d.b, (r.b.omega_lo + r.b.omega_hi) / 2);
+      d.at_max = necessary_condition(Hn, q.T, d.b, (r.b.omega_enclosure->lo + r.b.omega_enclosure->hi) / 2);
     }
     r.damping = d;
   }
@@ -121,13 +121,13 @@ Outcome compute(const BoundOpts& o) {
 nlohmann::json to_json(const Outcome& r, int digits) {
   nlohmann::json j;
   const Bound& b = r.b;
-  j["bound"] = b.infinite ? "inf" : b.value;
+  j["bound"] = b.decimal;
   j["omega"] = b.omega ? nlohmann::json(*b.omega) : nlohmann::json(nullptr);
   const auto [lo, hi] = reported_enclosure(b, digits);
   j["enclosure"] = {lo, hi};
   j["enclosure_rigorous"] = enclosure_rigorous(b);
   j["status"] = to_string(b.status);
-  if (b.status == Status::exact && !b.infinite) j["exact"] = b.lo.str();  // "p/q": the value itself
+  if (b.status == Status::exact && !b.infinite) j["exact"] = b.value.str();  // "p/q": the value itself
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
   j["method"] = b.method;
   j["where"] = b.where;
@@ -161,7 +161,7 @@ nlohmann::json to_json(const Outcome& r, int digits) {
 
 void print_human(const Outcome& r, const BoundOpts& o) {
   const Bound& b = r.b;
-  std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.value) << "   [" << to_string(b.status)
+  std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.decimal) << "   [" << to_string(b.status)
             << "]\n";
   if (!b.infinite && b.status != Status::exact) {
     const bool grid = b.kind == Method::grid;
@@ -175,8 +175,8 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   std::cout << "  method: " << b.method << "\n";
   if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
   if (!b.infinite) {
-    if (b.kind == Method::grid) std::cout << "  passive only if b > " << b.value << " (necessary; the grid may miss the peak)\n";
-    else std::cout << "  passive iff b > " << b.value << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
+    if (b.kind == Method::grid) std::cout << "  passive only if b > " << b.decimal << " (necessary; the grid may miss the peak)\n";
+    else std::cout << "  passive iff b > " << b.decimal << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
   }
   if (o.explain) {
     if (!r.cf) {
@@ -188,7 +188,7 @@ void print_human(const Outcome& r, const BoundOpts& o) {
       else if (r.cf->approx) std::cout << *r.cf->approx << " (approximation)";
       std::cout << (r.cf->tight ? "" : "  (upper bound / approximation, not tight)") << "\n";
       const std::optional<bool> agree = catalogue::agrees(*r.cf, b);
-      std::cout << "  generic: " << (b.infinite ? "+inf" : b.value) << " -> "
+      std::cout << "  generic: " << (b.infinite ? "+inf" : b.decimal) << " -> "
                 << (!agree ? "compare (approximation)" : *agree ? "agrees" : "DISAGREES") << "\n";
       if (r.dirichlet) {
         const auto& [C, D] = *r.dirichlet;
@@ -260,7 +260,7 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                                if (!f) throw InputError("--curve: cannot write '" + o->curve + "'");
                                const double T = to_real<double>(r.p.T), pi = 3.14159265358979323846;
                                f << "# omega[rad/s]  Re{T H z^-n e^{-jw t_d}/(1-z)} + eta   (paper 001, (45)/(54))\n";
-                               f << "# b* = " << (r.b.infinite ? "inf" : r.b.value) << " at omega = "
+                               f << "# b* = " << r.b.decimal << " at omega = "
                                  << (r.b.omega ? *r.b.omega : "-") << "\n";
                                f.precision(17);
                                for (int k = 0; k <= 2000; ++k) {

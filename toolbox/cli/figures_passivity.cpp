@@ -101,14 +101,14 @@ void bound_curve(const std::string& dir) {
     p.T = po.T;
     p.delay = c.n;
     Bound b = bound_certified(p, 20);
-    f << "# " << c.label << "  b* = " << b.value << "\n";
+    f << "# " << c.label << "  b* = " << b.decimal << "\n";
     for (int k = 0; k <= 1000; ++k) {
       double w = pi / T * k / 1000.0;
       f << w << " " << objective_at(p, w) << "\n";
     }
     f << "\n\n";
     double ws = b.omega ? to_real<double>(parse_rational(*b.omega)) : 0.0;
-    g << ws << " " << b.value_double() << " " << idx << "  # " << c.label << " b* = " << b.value << "\n";
+    g << ws << " " << b.value_double() << " " << idx << "  # " << c.label << " b* = " << b.decimal << "\n";
     ++idx;
   }
 }

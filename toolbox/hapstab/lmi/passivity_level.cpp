@@ -347,13 +347,15 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
     out.value = "-inf";
     out.note = "Re W -> -inf at " + b.where;
   } else {
-    out.enclosure = Enclosure<rational>{-b.hi, -b.lo};
-    out.lower_bound = -b.hi;
+    out.enclosure = Enclosure<rational>{-b.enclosure->hi, -b.enclosure->lo};
+    out.lower_bound = -b.enclosure->hi;
     out.level = -b.value_double() + 0.0;  // no -0
-    out.value = b.value.empty() || b.value == "0" ? b.value : (b.value[0] == '-' ? b.value.substr(1) : "-" + b.value);
+    const std::string& d = b.decimal;
+    out.value = d.empty() || d == "0" ? d : (d[0] == '-' ? d.substr(1) : "-" + d);
     if (b.status == Status::exact) out.status = Status::exact;
   }
-  out.theta_min = to_real<double>((b.omega_lo + b.omega_hi) / 2);  // T = 1: omega = theta
+  if (b.omega_enclosure)  // T = 1: omega = theta
+    out.theta_min = to_real<double>((b.omega_enclosure->lo + b.omega_enclosure->hi) / 2);
   if (kind == PassivityKind::osp) {
     if (unit_circle_roots(G.num()) > 0)
       out.note = "G has a zero on the unit circle: delta* is the supremum of the non-strict levels; the strict "

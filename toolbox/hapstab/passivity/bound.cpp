@@ -18,7 +18,12 @@ namespace hapstab::passivity {
 
 double Bound::value_double() const {
   if (infinite) return std::numeric_limits<double>::infinity();
-  return to_real<double>((lo + hi) / 2);
+  return to_real<double>(value);
+}
+
+void Bound::enclose(rational lo, rational hi) {
+  value = (lo + hi) / 2;
+  enclosure = Enclosure<rational>{std::move(lo), std::move(hi)};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -67,11 +72,11 @@ Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
       out.kind = Method::fast;
       out.method = "fast: double-double coefficients, root finding in double, Newton polish";
       const rational v = exact_rational(r->first), e = abs(v) * pow10(-fast_error_digits);
-      out.lo = v - e;
-      out.hi = v + e;
-      out.value = to_decimal(v, 16);
-      out.omega = to_decimal(exact_rational(r->second), 16);
-      out.omega_lo = out.omega_hi = exact_rational(r->second);
+      out.enclose(v - e, v + e);
+      out.decimal = to_decimal(v, 16);
+      const rational w = exact_rational(r->second);
+      out.omega = to_decimal(w, 16);
+      out.omega_enclosure = Enclosure<rational>{w, w};
       out.where = "numeric maximiser";
       return out;
     }
@@ -85,9 +90,10 @@ bool enclosure_rigorous(const Bound& b) {
 
 Enclosure<std::string> reported_enclosure(const Bound& b, int digits) {
   if (b.infinite) return {"inf", "inf"};
-  if (b.kind == Method::grid && b.status == Status::numeric) return {decimal_exact_or_outward(b.lo, 17, -1), "inf"};
-  if (b.status == Status::numeric) return {decimal_outward(b.lo, 17, -1), decimal_outward(b.hi, 17, +1)};
-  return {decimal_exact_or_outward(b.lo, digits + 5, -1), decimal_exact_or_outward(b.hi, digits + 5, +1)};
+  const auto& [lo, hi] = *b.enclosure;
+  if (b.kind == Method::grid && b.status == Status::numeric) return {decimal_exact_or_outward(lo, 17, -1), "inf"};
+  if (b.status == Status::numeric) return {decimal_outward(lo, 17, -1), decimal_outward(hi, 17, +1)};
+  return {decimal_exact_or_outward(lo, digits + 5, -1), decimal_exact_or_outward(hi, digits + 5, +1)};
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -67,20 +67,21 @@ inline const char* to_string(Method m) {
   return m == Method::certified ? "certified" : m == Method::fast ? "fast" : "grid";
 }
 
-/// The result. `lo`/`hi` enclose b* (lo == hi when exact); `value` is the decimal string to
-/// report ("inf" when no finite b makes the system passive).
-struct Bound {
+/// b* as a Certified<rational>: `value` the midpoint of `enclosure` (b* itself when `status` is
+/// exact), `enclosure` [lo, hi] always set when b* is finite (exact: [b*, b*]; certified: proven;
+/// fast: the value -+ its stated error, not a proof; grid: [max, max], the grid maximum, which
+/// only estimates b* from below), `method` the algorithm in words, `note` caveats. What only b*
+/// has: `infinite` (no finite b makes the system passive; value 0 and no enclosure then), the
+/// method family `kind`, the decimal to report, and the maximiser.
+struct Bound : Certified<rational> {
   bool infinite = false;
-  Status status = Status::numeric;
-  Method kind = Method::certified;     ///< the method that produced it (fast hands hard cases to certified)
-  rational lo = 0, hi = 0;             ///< fast: the value -+ its stated error; grid: lo = hi = the grid maximum
-  std::string value;                   ///< decimal with the requested digits, or "inf"
-  std::optional<std::string> omega;    ///< maximiser in rad/s (decimal), nullopt when none
-  std::string where;                   ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
-  rational omega_lo = 0, omega_hi = 0; ///< enclosure of the maximiser (rad/s), when known
-  std::string method;                  ///< e.g. "certified: exact f(cos wT), Descartes root isolation, ..."
-  std::string note;
-  double value_double() const;         ///< nearest double of the midpoint (+inf when infinite)
+  Method kind = Method::certified;                 ///< the family that produced it (fast hands hard cases to certified)
+  std::string decimal;                             ///< b* to the requested digits, or "inf"
+  std::optional<std::string> omega;                ///< maximiser in rad/s (decimal), nullopt when none
+  std::optional<Enclosure<rational>> omega_enclosure;  ///< enclosure of the maximiser (rad/s), when known
+  std::string where;                               ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
+  double value_double() const;                     ///< nearest double of `value` (+inf when infinite)
+  void enclose(rational lo, rational hi);          ///< enclosure = [lo, hi], value = its midpoint
 };
 
 /// The error the fast path states (not a proof): relative 10^-fast_error_digits, checked against

@@ -311,7 +311,7 @@ std::optional<bool> agrees(const Match& m, const Bound& b) {
   if (m.approx) return std::nullopt;
   if (m.infinite) return b.infinite;
   if (!m.value || b.infinite) return false;
-  return m.tight ? (b.lo <= *m.value && *m.value <= b.hi) : b.lo <= *m.value;
+  return m.tight ? b.enclosure->contains(*m.value) : b.enclosure->lo <= *m.value;
 }
 
 }  // namespace hapstab::passivity::catalogue

@@ -227,7 +227,7 @@ template <unsigned D>
 void omega_of(const Candidate& c, const rational& T, int q, int digits, Bound& b) {
   if (c.endpoint_zero) {
     b.omega = "0";
-    b.omega_lo = b.omega_hi = 0;
+    b.omega_enclosure = Enclosure<rational>{0, 0};
     b.where = "w = 0";
     return;
   }
@@ -239,9 +239,8 @@ void omega_of(const Candidate& c, const rational& T, int q, int digits, Bound& b
     w = acos(ival<D>(c.clo, c.chi)) * interval<D>(q) / ival<D>(T, T);
     if (b.where.empty()) b.where = "interior";
   }
-  b.omega_lo = lower_rational(w);
-  b.omega_hi = upper_rational(w);
-  b.omega = enclosure_decimal(b.omega_lo, b.omega_hi, digits);
+  b.omega_enclosure = Enclosure<rational>{lower_rational(w), upper_rational(w)};
+  b.omega = enclosure_decimal(b.omega_enclosure->lo, b.omega_enclosure->hi, digits);
 }
 
 /// The objective does not depend on c (f' = 0): every w attains it, exactly.
@@ -249,9 +248,10 @@ void constant_objective(const QPoly& A, const QPoly& B, const BoundProblem& pb, 
   const rational one(1);
   rational v = A(one) / B(one) + pb.eta;
   out.status = Status::exact;
-  out.lo = out.hi = v;
-  out.value = to_decimal(v, digits);
+  out.enclose(v, v);
+  out.decimal = to_decimal(v, digits);
   out.omega = "0";
+  out.omega_enclosure = Enclosure<rational>{0, 0};
   out.where = "constant (every w attains it)";
 }
 
@@ -274,7 +274,7 @@ bool pole_to_plus_infinity(const QPoly& A, const QPoly& B, const BoundProblem& p
     if (pole_goes_to_plus_inf(A, B, r)) {
       out.infinite = true;
       out.status = Status::exact;
-      out.value = "inf";
+      out.decimal = "inf";
       RootInterval rr = r.is_exact() ? r : refine_root(square_free_part(B), r, pow10(-40));
       Candidate c{0, 0, rr.lo, rr.hi, rr.is_exact(), rr.is_exact() && rr.lo == 1, rr.is_exact() && rr.lo == -1};
       // (a pole at z = 1 never gets here: integrator_pole decided it)
@@ -364,15 +364,14 @@ void maximum_of(const std::vector<Candidate>& cands, const BoundProblem& pb, int
   bool dominated = true;  // is the best exact candidate >= every other upper bound?
   for (size_t i = 0; i < cands.size(); ++i)
     if (i != best && cands[i].vhi > cb.vlo) dominated = false;
-  out.lo = mlo + pb.eta;
-  out.hi = cb.vhi + pb.eta;
   if (cb.exact && dominated) {
     out.status = Status::exact;
-    out.lo = out.hi = cb.vlo + pb.eta;
-    out.value = to_decimal(out.lo, digits);
+    out.enclose(cb.vlo + pb.eta, cb.vlo + pb.eta);
+    out.decimal = to_decimal(out.value, digits);
   } else {
     out.status = Status::certified;
-    out.value = enclosure_decimal(out.lo, out.hi, digits);
+    out.enclose(mlo + pb.eta, cb.vhi + pb.eta);
+    out.decimal = enclosure_decimal(out.enclosure->lo, out.enclosure->hi, digits);
   }
   omega_of<D>(cb, pb.T, dom.q, digits, out);
 }
@@ -414,9 +413,9 @@ std::optional<Bound> integrator_pole(const BoundProblem& p) {
   Bound out;
   out.infinite = true;
   out.status = Status::exact;
-  out.value = "inf";
+  out.decimal = "inf";
   out.omega = "0";
-  out.omega_lo = out.omega_hi = 0;
+  out.omega_enclosure = Enclosure<rational>{0, 0};
   out.where = "pole of H at z = 1 (w = 0) not cancelled: an integrator; no finite b makes the loop passive";
   out.method = "exact: H(z) has a simple pole at z = 1 (the denominator vanishes at 1 after cancellation)";
   return out;

@@ -207,13 +207,12 @@ std::optional<Bound> frac_divergence(const Objective& o, const BoundProblem& pb,
   if (!(decided && div > 0)) return std::nullopt;
   out.infinite = true;
   out.status = Status::exact;
-  out.value = "inf";
+  out.decimal = "inf";
   out.where = "w -> pi/T: a pole of H z^-n at z = -1 meets e^{-j w t_d} (Tustin-like): Re -> +inf";
   out.method = "exact divergence test at wT = pi (leading terms in pi - wT)";
   I w = ipi<D>() / ival<D>(pb.T, pb.T);
-  out.omega_lo = lower_rational(w);
-  out.omega_hi = upper_rational(w);
-  out.omega = enclosure_decimal(out.omega_lo, out.omega_hi, 17);
+  out.omega_enclosure = Enclosure<rational>{lower_rational(w), upper_rational(w)};
+  out.omega = enclosure_decimal(out.omega_enclosure->lo, out.omega_enclosure->hi, 17);
   return out;
 }
 
@@ -313,18 +312,18 @@ Bound frac_bound(const FracSearch<D>& sr, const BoundProblem& pb, const rational
   rational lo = exact_rational(mpfloat<D>(best)) + pb.eta;
   const R thresh = best + tol * std::max(R(1), abs(best));  // every dropped box lies below it
   rational hi = exact_rational(mpfloat<D>(converged ? thresh : std::max(maxub, thresh))) + pb.eta;
-  out.lo = lo;
-  out.hi = std::max(lo, hi);
+  out.enclose(lo, std::max(lo, hi));
   // not converged: [best point value, largest remaining box bound] is still a proven enclosure
   out.status = Status::certified;
-  out.value = enclosure_decimal(out.lo, out.hi, dig);
+  out.decimal = enclosure_decimal(out.enclosure->lo, out.enclosure->hi, dig);
   out.method = "certified: interval branch-and-bound over w (MPFI, " + std::to_string(D) +
                "-digit arithmetic, enclosure to " + std::to_string(dig) + " digits)";
   if (digits > dig) out.note = std::to_string(digits) + " digits asked; the branch-and-bound for a fractional delay stops at 20";
   if (!converged) out.note = "branch-and-bound budget exhausted: the enclosure is the proven bracket it reached";
   R w = best_at / mpfloat<D>(to_real<R>(pb.T));
-  out.omega_lo = out.omega_hi = exact_rational(mpfloat<D>(w));
-  out.omega = to_decimal(out.omega_lo, std::min(dig, 12));
+  const rational w_exact = exact_rational(mpfloat<D>(w));
+  out.omega_enclosure = Enclosure<rational>{w_exact, w_exact};
+  out.omega = to_decimal(w_exact, std::min(dig, 12));
   out.where = best_at == 0 ? "w = 0" : (best_at >= pi ? "w = pi/T" : "interior");
   return out;
 }

@@ -24,11 +24,12 @@ Bound bound_grid(const BoundProblem& p, long N) {
     const double v = detail::objective_on_circle<double>(p, th);
     if (v > best) best = v, bw = th / T;
   }
-  if (std::isinf(best) && best > 0) { out.infinite = true; out.value = "inf"; return out; }
-  out.lo = out.hi = exact_rational(best);
-  out.value = to_decimal(out.lo, 17);
-  out.omega = to_decimal(exact_rational(bw), 17);
-  out.omega_lo = out.omega_hi = exact_rational(bw);
+  if (std::isinf(best) && best > 0) { out.infinite = true; out.decimal = "inf"; return out; }
+  const rational max = exact_rational(best), w = exact_rational(bw);
+  out.enclose(max, max);
+  out.decimal = to_decimal(max, 17);
+  out.omega = to_decimal(w, 17);
+  out.omega_enclosure = Enclosure<rational>{w, w};
   out.where = "grid point";
   return out;
 }
