@@ -181,9 +181,9 @@ TEST(Wedge, Assumptions) {
   EXPECT_TRUE(schur_stable(H_of("1/(z^2-0.5*z+0.06)").den()));
   EXPECT_FALSE(schur_stable(H_of("1/(z^2-2.5*z+1)").den()));  // roots 2, 0.5
   EXPECT_FALSE(schur_stable(H_of("1/(z^2+1)").den()));        // on the circle
-  EXPECT_TRUE(has_root_on_unit_circle(H_of("1/(z^2+1)").den()));
-  EXPECT_TRUE(has_root_on_unit_circle(H_of("1/(z^2-z+1)").den()));  // e^{+-j pi/3}
-  EXPECT_FALSE(has_root_on_unit_circle(H_of("1/(z^2-z+0.99)").den()));
+  EXPECT_TRUE(unit_circle_roots(H_of("1/(z^2+1)").den()) > 0);
+  EXPECT_TRUE(unit_circle_roots(H_of("1/(z^2-z+1)").den()) > 0);  // e^{+-j pi/3}
+  EXPECT_FALSE(unit_circle_roots(H_of("1/(z^2-z+0.99)").den()) > 0);
   Assumptions a = check_assumptions(H_of("-0.5/(z-0.5)"));  // H(1) = -1 < 0, (1+H)^-1: pole 1 -> unstable
   EXPECT_FALSE(a.dc_gain_nonnegative);
   EXPECT_FALSE(a.closed_loop_stable);

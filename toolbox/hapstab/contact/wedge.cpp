@@ -309,16 +309,11 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
   return best;
 }
 
-bool has_root_on_unit_circle(const Polynomial<rational>& p) {
-  if (p.is_zero()) throw InputError("has_root_on_unit_circle: the zero polynomial");
-  return unit_circle_roots(p) > 0;  // poly/stability.hpp
-}
-
 Assumptions check_assumptions(const TransferFunction& H, const rational& k) {
   Assumptions a;
   const Poly& N = H.num();
   const Poly& D = H.den();
-  a.pole_on_unit_circle = has_root_on_unit_circle(D);
+  a.pole_on_unit_circle = unit_circle_roots(D) > 0;  // poly/stability.hpp
   a.h_stable = schur_stable(D);
   a.closed_loop_stable = !(D + N * k).is_zero() && schur_stable(D + N * k);
   const rational d1 = D(rational(1));

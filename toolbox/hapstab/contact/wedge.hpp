@@ -80,9 +80,6 @@ struct Assumptions {
 };
 Assumptions check_assumptions(const TransferFunction& H, const rational& k = 1);
 
-/// Exact: p has a root on the unit circle |z| = 1.
-bool has_root_on_unit_circle(const Polynomial<rational>& p);
-
 /// One criterion's verdict for H.
 struct CriterionReport {
   std::string name;                 ///< "wedge (25)" or "Tsypkin (21)"
