@@ -12,5 +12,5 @@ set ylabel yname noenhanced
 set cblabel zname noenhanced
 set title zname.' over ('.xname.', '.yname.')' noenhanced
 set key outside right top
-set palette viridis
+set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')  # viridis
 eval map_plot
