@@ -235,6 +235,7 @@ Runner setup(CLI::App& app) {
   CLI::App* merge = app.add_subcommand("merge", "Merge finished shard folders into one points.csv");
   merge->add_option("dirs", m->first, "Shard folders")->required();
   merge->add_option("--out", m->second, "Output folder")->required();
+  merge->add_flag("--quiet", r->quiet, "No summary on stderr");
 
   auto s = std::make_shared<sweep::SlurmOptions>();
   CLI::App* slurm = app.add_subcommand("slurm", "Write (and --submit) a Slurm array job and its merge job");
