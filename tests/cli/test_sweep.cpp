@@ -287,3 +287,18 @@ TEST(Sweep, PlotDrawsTheMap) {
   EXPECT_NE(r.out.find("--z 'nothing'"), std::string::npos);
   fs::remove_all(d);
 }
+
+// The README's recipe for machines without Slurm: GNU parallel runs the shards, then merge.
+TEST(Sweep, GnuParallelRecipe) {
+  if (shell("command -v parallel") != 0) GTEST_SKIP() << "GNU parallel is not installed";
+  const fs::path d = unique_dir("parallel");
+  write(d / "spec.toml", wall_spec(4, 4));
+  const std::string h = HAPSTAB_CLI, dir = d.string();
+  ASSERT_EQ(shell("cd " + dir + " && parallel --halt now,fail=1 " + h +
+                  " sweep spec.toml --out shard-{} --shard {}/4 --jobs 1 --quiet ::: 0 1 2 3 && " + h +
+                  " sweep merge shard-0 shard-1 shard-2 shard-3 --out all --quiet"),
+            0);
+  ASSERT_EQ(run_cli("sweep " + dir + "/spec.toml --out " + dir + "/one --quiet").code, 0);
+  EXPECT_EQ(read(d / "all" / "points.csv"), read(d / "one" / "points.csv"));
+  fs::remove_all(d);
+}
