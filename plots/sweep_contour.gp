@@ -11,9 +11,9 @@ set xlabel xname noenhanced
 set ylabel yname noenhanced
 set title zname.' over ('.xname.', '.yname.'): contour lines' noenhanced
 set view map
+set size noratio
 unset surface
 set contour base
 set cntrparam levels auto 10
-set cntrlabel onecolor format '%.4g' start 5 interval 40
 set key outside right top
-splot datadir.'/grid.dat' using 1:2:3 with lines lw 2 title zname
+splot datadir.'/grid.dat' using 1:2:3 with lines lw 2 title zname.' ='  # each level: its own line type and key entry

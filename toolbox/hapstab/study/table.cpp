@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "hapstab/numeric/error.hpp"
 
@@ -150,38 +150,72 @@ nlohmann::json RecordStore::parse_record(const std::string& s) {
   return j;
 }
 
+namespace {
+
+// The scratch file between write_table's two passes: per row, its cells as (column id, text) and
+// then exit and error, length-prefixed, so that each record is parsed once.
+void put_text(std::FILE* f, const std::string& s) {
+  const auto n = static_cast<uint32_t>(s.size());
+  if (std::fwrite(&n, sizeof n, 1, f) != 1 || std::fwrite(s.data(), 1, n, f) != n)
+    throw InputError("sweep: cannot write the scratch file");
+}
+uint32_t get_u32(std::FILE* f) {
+  uint32_t n = 0;
+  if (std::fread(&n, sizeof n, 1, f) != 1) throw InputError("sweep: the scratch file is short");
+  return n;
+}
+std::string get_text(std::FILE* f) {
+  std::string s(get_u32(f), '\0');
+  if (!s.empty() && std::fread(s.data(), 1, s.size(), f) != s.size()) throw InputError("sweep: the scratch file is short");
+  return s;
+}
+
+}  // namespace
+
 TableCounts write_table(const Spec& spec, const RecordStore& store, const fs::path& dir) {
   const PointRange& r = store.range();
   std::vector<std::string> columns;  // the command's flattened keys, in order of first appearance
-  std::unordered_set<std::string> seen;
-  for (uint64_t k = 0; k < r.count; ++k) {
-    const nlohmann::json rec = store.record(k);
-    if (rec.contains("json"))
-      for (auto& [key, v] : flatten(rec["json"]))
-        if (seen.insert(key).second) columns.push_back(key);
-  }
+  std::unordered_map<std::string, uint32_t> column_id;
   AtomicFile results(dir / "results.txt"), csv(dir / "points.csv");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> scratch(std::tmpfile(), &std::fclose);
+  if (!scratch) throw InputError("sweep: cannot create a scratch file");
+  TableCounts counts;
+  for (uint64_t k = 0; k < r.count; ++k) {  // pass 1: results.txt, the columns, the cells
+    const std::string line = store.line(k);
+    results.write(line + "\n");
+    const nlohmann::json rec = RecordStore::parse_record(line);
+    const auto flat = rec.contains("json") ? flatten(rec["json"]) : std::vector<std::pair<std::string, std::string>>{};
+    const auto n = static_cast<uint32_t>(flat.size());
+    std::fwrite(&n, sizeof n, 1, scratch.get());
+    for (const auto& [key, text] : flat) {
+      auto [it, added] = column_id.emplace(key, static_cast<uint32_t>(columns.size()));
+      if (added) columns.push_back(key);
+      std::fwrite(&it->second, sizeof it->second, 1, scratch.get());
+      put_text(scratch.get(), text);
+    }
+    const std::string error = rec.value("error", std::string());
+    put_text(scratch.get(), rec["exit"].dump());
+    put_text(scratch.get(), error);
+    ++(error.empty() ? counts.ok : counts.failed);
+  }
   std::string head = "index";
   for (const Axis& a : spec.axes) head += "," + csv_field(a.name);
   for (const auto& c : columns) head += "," + csv_field(c);
   csv.write(head + ",exit,error\n");
-  TableCounts counts;
-  for (uint64_t k = 0; k < r.count; ++k) {
-    const std::string line = store.line(k);
-    results.write(line + "\n");
-    const nlohmann::json rec = RecordStore::parse_record(line);
+  std::rewind(scratch.get());
+  std::vector<std::string> cells(columns.size());
+  for (uint64_t k = 0; k < r.count; ++k) {  // pass 2: the rows
+    std::fill(cells.begin(), cells.end(), std::string());
+    for (uint32_t c = 0, n = get_u32(scratch.get()); c < n; ++c) {
+      const uint32_t id = get_u32(scratch.get());
+      cells.at(id) = get_text(scratch.get());
+    }
     std::string row = std::to_string(r.index(k));
     for (const auto& v : point_values(spec, r.index(k))) row += "," + csv_field(v);
-    std::vector<std::pair<std::string, std::string>> flat = rec.contains("json") ? flatten(rec["json"]) : decltype(flat){};
-    std::unordered_map<std::string, std::string> by_key(flat.begin(), flat.end());
-    for (const auto& c : columns) {
-      auto it = by_key.find(c);
-      row += "," + (it == by_key.end() ? std::string() : csv_field(it->second));
-    }
-    const std::string error = rec.value("error", std::string());
-    row += "," + rec["exit"].dump() + "," + csv_field(error) + "\n";
+    for (const auto& c : cells) row += "," + csv_field(c);
+    const std::string exit = get_text(scratch.get());
+    row += "," + exit + "," + csv_field(get_text(scratch.get())) + "\n";
     csv.write(row);
-    ++(error.empty() ? counts.ok : counts.failed);
   }
   results.commit();
   csv.commit();
