@@ -31,7 +31,7 @@ struct SlurmOptions {
 int slurm(const SlurmOptions& o);
 
 struct PlotOptions {
-  std::string dir, x, y, z, format = "png", out;
+  std::string dir, x, y, z, format = "png";
   bool contour = false;
 };
 int plot(const PlotOptions& o);
