@@ -155,3 +155,25 @@ TEST(Table, StoreIgnoresTornLineAndReportsDuplicatesAndMissing) {
   EXPECT_THROW(t.add_file(dir / "b.txt"), InputError);
   fs::remove_all(dir);
 }
+
+TEST(Table, WritesRowsInIndexOrderWithKeysRenamedOnClash) {
+  const fs::path dir = unique_dir("table");
+  const Spec s = parse_spec(head + "bound = { values = [\"1\", \"1/3\"] }\nK = { values = [\"7\"] }\n", "s.toml");
+  {
+    std::ofstream f(dir / "r.txt");  // index 1 first: the table is in index order all the same
+    f << record_line(1, {{"exit", 2}, {"error", "bad, \"quoted\""}}) << "\n"
+      << record_line(0, {{"exit", 0}, {"json", {{"bound", "0.5"}, {"enclosure", {"0.4", "0.6"}}, {"total_seconds", 3}}}}) << "\n";
+  }
+  RecordStore store(PointRange::shard_of(s.points, 0, 1));
+  store.add_file(dir / "r.txt");
+  const TableCounts c = write_table(s, store, dir);
+  EXPECT_EQ(c.ok, 1u);
+  EXPECT_EQ(c.failed, 1u);
+  std::ifstream in(dir / "points.csv");
+  const std::string csv((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(csv,
+            "index,bound,K,json_bound,enclosure_lo,enclosure_hi,exit,error\n"
+            "0,1,7,0.5,0.4,0.6,0,\n"
+            "1,1/3,7,,,,2,\"bad, \"\"quoted\"\"\"\n");
+  fs::remove_all(dir);
+}

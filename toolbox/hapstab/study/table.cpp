@@ -200,7 +200,11 @@ TableCounts write_table(const Spec& spec, const RecordStore& store, const fs::pa
   }
   std::string head = "index";
   for (const Axis& a : spec.axes) head += "," + csv_field(a.name);
-  for (const auto& c : columns) head += "," + csv_field(c);
+  for (const auto& c : columns) {  // a key named like an axis or a fixed column gets a json_ prefix
+    const bool taken = c == "index" || c == "exit" || c == "error" ||
+                       std::any_of(spec.axes.begin(), spec.axes.end(), [&](const Axis& a) { return a.name == c; });
+    head += "," + csv_field(taken ? "json_" + c : c);
+  }
   csv.write(head + ",exit,error\n");
   std::rewind(scratch.get());
   std::vector<std::string> cells(columns.size());

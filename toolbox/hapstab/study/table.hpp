@@ -8,7 +8,8 @@
 // arrays NAME_0, NAME_1, ...; keys named "seconds" or ending in "_seconds" (timings) are dropped,
 // so that two runs of one spec give the same bytes. The columns are the union of every row's keys
 // in order of first appearance over the points in index order: they depend on the points only,
-// not on how they were split into jobs or shards.
+// not on how they were split into jobs or shards. A key named like an axis, index, exit or error
+// is written json_KEY.
 #pragma once
 
 #include <cstdint>
