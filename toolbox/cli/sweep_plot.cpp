@@ -3,6 +3,7 @@
 // plots/sweep_contour.gp) into DIR/figures/. Points are told apart by the row's `status`
 // column: certified or exact (filled squares), numeric (open squares, not proven), infinite
 // values (crosses) and failed points (red x). The data files are written to DIR/plot-data/.
+// The figures sweep_map and sweep_contour of `hapstab reproduce` are the (K, B) region as a sweep.
 #include <array>
 #include <cctype>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "cli/sweep_cli.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/process.hpp"
 
 namespace hapstab::cli::sweep {
 
@@ -61,26 +63,23 @@ std::string number_for_plot(const std::string& text) {
   return os.str();
 }
 
-}  // namespace
-
-int plot(const PlotOptions& o) {
-  for (const auto& [name, option] : {std::pair{o.x, "--x"}, {o.y, "--y"}, {o.z, "--z"}})
+/// Writes the plot data of column z over (x, y) from sweep/points.csv into `data`: proven.dat,
+/// numeric.dat, infinite.dat, failed.dat, grid.dat and labels.gp. Returns the number of points.
+size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::string& y, const std::string& z,
+                       const fs::path& data) {
+  for (const auto& [name, option] : {std::pair{x, "--x"}, {y, "--y"}, {z, "--z"}})
     for (char c : name)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
         throw InputError(std::string(option) + " '" + name + "': a column name (letters, digits, _)");
-  if (o.format != "png" && o.format != "pdf" && o.format != "svg")
-    throw InputError("--format must be png, pdf or svg (got " + o.format + ")");
-  const fs::path dir(o.dir);
-  std::ifstream in(dir / "points.csv", std::ios::binary);
-  if (!in) throw InputError("sweep plot: no points.csv in '" + o.dir + "'");
+  std::ifstream in(sweep / "points.csv", std::ios::binary);
+  if (!in) throw InputError("sweep plot: no points.csv in '" + sweep.string() + "'");
   std::vector<std::string> head, row;
   read_csv_record(in, head);
-  const size_t cx = column_of(head, o.x, "--x"), cy = column_of(head, o.y, "--y"), cz = column_of(head, o.z, "--z");
+  const size_t cx = column_of(head, x, "--x"), cy = column_of(head, y, "--y"), cz = column_of(head, z, "--z");
   const size_t cerr = column_of(head, "error", "error");
   std::optional<size_t> cstatus;
   for (size_t k = 0; k < head.size(); ++k)
     if (head[k] == "status") cstatus = k;
-  const fs::path data = dir / "plot-data";
   fs::create_directories(data);
   std::ofstream proven(data / "proven.dat"), numeric(data / "numeric.dat"), infinite(data / "infinite.dat"),
       failed(data / "failed.dat"), grid(data / "grid.dat");
@@ -89,24 +88,25 @@ int plot(const PlotOptions& o) {
   std::string last_x;
   while (read_csv_record(in, row)) {
     if (row.size() != head.size()) continue;
-    const std::string x = number_for_plot(row[cx]), y = number_for_plot(row[cy]);
-    if (x.empty() || y.empty()) throw InputError("--x/--y: the row of point " + row[0] + " has no number there");
+    const std::string px = number_for_plot(row[cx]), py = number_for_plot(row[cy]);
+    if (px.empty() || py.empty()) throw InputError("--x/--y: the row of point " + row[0] + " has no number there");
     ++rows;
-    const std::string z = number_for_plot(row[cz]);
+    const std::string pz = number_for_plot(row[cz]);
     const std::string status = cstatus ? row[*cstatus] : "numeric";
-    if (!last_x.empty() && x != last_x) grid << "\n";  // gnuplot's grid format: a blank line per x block
-    last_x = x;
-    grid << x << " " << y << " " << (z.empty() || !row[cerr].empty() ? "NaN" : z) << "\n";
+    if (!last_x.empty() && px != last_x) grid << "\n";  // gnuplot's grid format: a blank line per x block
+    last_x = px;
+    grid << px << " " << py << " " << (pz.empty() || !row[cerr].empty() ? "NaN" : pz) << "\n";
     const bool is_proven = status == "certified" || status == "exact";
-    const int kind = !row[cerr].empty() ? 3 : z.empty() ? 2 : is_proven ? 0 : 1;
+    const int kind = !row[cerr].empty() ? 3 : pz.empty() ? 2 : is_proven ? 0 : 1;
     ++counts[static_cast<size_t>(kind)];
-    if (kind == 3) failed << x << " " << y << "\n";
-    else if (kind == 2) infinite << x << " " << y << "\n";
-    else (kind == 0 ? proven : numeric) << x << " " << y << " " << z << "\n";
+    if (kind == 3) failed << px << " " << py << "\n";
+    else if (kind == 2) infinite << px << " " << py << "\n";
+    else (kind == 0 ? proven : numeric) << px << " " << py << " " << pz << "\n";
   }
+  if (rows == 0) throw InputError("sweep plot: points.csv in '" + sweep.string() + "' has no points");
   // The labels, and the plot's parts that have points (gnuplot refuses an empty data file).
   std::ofstream labels(data / "labels.gp");
-  labels << "xname = '" << o.x << "'\nyname = '" << o.y << "'\nzname = '" << o.z << "'\n";
+  labels << "xname = '" << x << "'\nyname = '" << y << "'\nzname = '" << z << "'\n";
   const char* parts[] = {
       "datadir.'/proven.dat' using 1:2:3 with points pt 5 ps 1.2 lc palette title 'certified / exact'",
       "datadir.'/numeric.dat' using 1:2:3 with points pt 4 ps 1.2 lc palette title 'numeric (not proven)'",
@@ -115,10 +115,48 @@ int plot(const PlotOptions& o) {
   std::string plot_line;
   for (size_t k = 0; k < 4; ++k)
     if (counts[k]) plot_line += (plot_line.empty() ? "plot " : ", ") + std::string(parts[k]);
-  if (rows == 0) throw InputError("sweep plot: points.csv in '" + o.dir + "' has no points");
   labels << "map_plot = \"" << plot_line << "\"\n";
-  for (auto* f : {&proven, &numeric, &infinite, &failed, &grid, &labels}) f->close();
-  run_gnuplot(o.contour ? "sweep_contour" : "sweep_map", data, dir / "figures", o.format);
+  return rows;
+}
+
+// The (K, B) passivity region of the delayed backward-difference wall (paper 001, Example 4, n = 1)
+// as a sweep: docs/sweep_kb_region.toml. `hapstab reproduce` draws its map and level lines.
+const char* const kb_region_spec = R"spec(command = "bound"
+[args]
+H = "K + B*(z-1)/(T*z)"
+T = "1/1000"
+delay = 1
+digits = 30
+[axes]
+B = { from = "0", to = "2", points = 41 }
+K = { from = "0", to = "3000", points = 41 }
+)spec";
+
+void kb_region_data(const fs::path& datadir) {
+  const fs::path spec = datadir / "sweep_kb_region.toml", out = datadir / "sweep_kb_region";
+  std::ofstream(spec) << kb_region_spec;
+  report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
+                      "hapstab sweep (the (K, B) region)");
+  write_plot_data(out, "B", "K", "bound", datadir);
+}
+
+const RegisterFigure map_figure({"sweep_map", "toolbox",
+                                 "hapstab sweep: certified b* of the delayed backward-difference wall K + B(z-1)/(Tz) "
+                                 "(n = 1, T = 1 ms, 30 digits) on a 41 x 41 exact (B, K) grid",
+                                 kb_region_data});
+const RegisterFigure contour_figure({"sweep_contour", "toolbox",
+                                     "hapstab sweep: level lines of b*(B, K) of the same wall; the b* = 1 line is the "
+                                     "passivity boundary of passivity_kb_region (n = 1) for b = 1 N s/m",
+                                     kb_region_data});
+
+}  // namespace
+
+int plot(const PlotOptions& o) {
+  if (o.format != "png" && o.format != "pdf" && o.format != "svg")
+    throw InputError("--format must be png, pdf or svg (got " + o.format + ")");
+  const fs::path dir(o.dir);
+  const size_t rows = write_plot_data(dir, o.x, o.y, o.z, dir / "plot-data");
+  run_gnuplot(o.contour ? "sweep_contour" : "sweep_map", dir / "plot-data", dir / "figures", o.format);
   std::cout << (dir / "figures" / ((o.contour ? "sweep_contour." : "sweep_map.") + o.format)).string() << " (" << rows
             << " points)\n";
   return exit_ok;
