@@ -71,9 +71,28 @@ std::unique_ptr<CLI::App> make_app(std::vector<std::pair<CLI::App*, Runner>>& ru
   return app;
 }
 
+namespace {
+// The application with only the command `name` (a point of `hapstab sweep` runs one command; building
+// every command's options for each point cost more than a fast-path bound). Fresh each call, so no
+// option value can pass from one run to the next. nullptr when no command has that name.
+std::unique_ptr<CLI::App> make_app_for(const std::string& name, std::vector<std::pair<CLI::App*, Runner>>& runners) {
+  for (auto& c : commands())
+    if (c.name == name) {
+      auto app = std::make_unique<CLI::App>("hapstab");
+      app->require_subcommand(1);
+      runners.clear();
+      CLI::App* sub = app->add_subcommand(c.name, c.help);
+      runners.emplace_back(sub, c.setup(*sub));
+      return app;
+    }
+  return nullptr;
+}
+}  // namespace
+
 InProcessRun run_in_process(const std::vector<std::string>& args) {
   std::vector<std::pair<CLI::App*, Runner>> runners;
-  auto app = make_app(runners);
+  auto app = args.empty() ? nullptr : make_app_for(args.front(), runners);
+  if (!app) app = make_app(runners);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
   app->parse(reversed);
   struct Capture {

@@ -1,0 +1,307 @@
+// Tests of `hapstab sweep`: a whole run = shards + merge = a run killed (SIGKILL) and resumed,
+// byte for byte, whatever --jobs; sampled rows equal single `hapstab bound` runs; a failing
+// point is a row with its error (exit 1); merge names missing and duplicate points and refuses
+// shards of different specs; bad specs exit 2 naming the key; the Slurm scripts and the map.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "cli/cli_run.hpp"
+
+namespace fs = std::filesystem;
+using hapstab_test::run_cli;
+
+namespace {
+
+fs::path unique_dir(const std::string& tag) {
+  std::string t = (fs::temp_directory_path() / ("hapstab-sweep-" + tag + "-XXXXXX")).string();
+  EXPECT_NE(::mkdtemp(t.data()), nullptr);
+  return t;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+void write(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
+
+// The delayed backward-difference wall over an exact (K, B) grid.
+std::string wall_spec(int k_points, int b_points) {
+  return "command = \"bound\"\n[args]\nH = \"K + B*(z-1)/(T*z)\"\nT = \"1/1000\"\ndelay = 1\ndigits = 30\n[axes]\n"
+         "K = { from = \"0\", to = \"30000\", points = " + std::to_string(k_points) + " }\n"
+         "B = { from = \"0\", to = \"20\", points = " + std::to_string(b_points) + " }\n";
+}
+
+std::vector<std::vector<std::string>> csv_rows(const fs::path& p) {  // fields without quotes (none here)
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read(p));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> f;
+    std::string cell;
+    bool q = false;
+    for (char c : line) {
+      if (c == '"') q = !q;
+      else if (c == ',' && !q) f.push_back(cell), cell.clear();
+      else cell += c;
+    }
+    f.push_back(cell);
+    rows.push_back(f);
+  }
+  return rows;
+}
+
+size_t column(const std::vector<std::string>& head, const std::string& name) {
+  for (size_t k = 0; k < head.size(); ++k)
+    if (head[k] == name) return k;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+/// A command run by the shell (not hapstab): its exit code.
+int shell(const std::string& cmd) {
+  const int st = std::system((cmd + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+size_t checkpoint_lines(const fs::path& dir) {
+  size_t n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir / "checkpoints", ec)) {
+    const std::string s = read(e.path());
+    n += static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(Sweep, ShardsMergeAndJobsGiveTheSameBytes) {
+  const fs::path d = unique_dir("shards");
+  write(d / "spec.toml", wall_spec(6, 5));
+  const std::string spec = (d / "spec.toml").string();
+  auto r = run_cli("sweep " + spec + " --out " + (d / "whole").string() + " --jobs 1 --quiet");
+  ASSERT_EQ(r.code, 0) << r.out;
+  r = run_cli("sweep " + spec + " --out " + (d / "jobs3").string() + " --jobs 3 --quiet");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (int k = 0; k < 4; ++k) {
+    r = run_cli("sweep " + spec + " --out " + (d / ("s" + std::to_string(k))).string() + " --shard " +
+                std::to_string(k) + "/4 --jobs 2 --quiet");
+    ASSERT_EQ(r.code, 0) << r.out;
+  }
+  // Shards given in any order.
+  r = run_cli("sweep merge " + (d / "s2").string() + " " + (d / "s0").string() + " " + (d / "s3").string() + " " +
+              (d / "s1").string() + " --out " + (d / "merged").string() + " --quiet");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string whole = read(d / "whole" / "points.csv");
+  EXPECT_EQ(csv_rows(d / "whole" / "points.csv").size(), 31u);
+  EXPECT_EQ(whole, read(d / "jobs3" / "points.csv"));
+  EXPECT_EQ(whole, read(d / "merged" / "points.csv"));
+  EXPECT_EQ(read(d / "whole" / "results.txt"), read(d / "merged" / "results.txt"));
+  const auto m = nlohmann::json::parse(read(d / "s1" / "manifest.json"));
+  EXPECT_EQ(m["shard"], "1/4");
+  EXPECT_EQ(m["points"]["here"], 8);  // indices 1, 5, ..., 29 of 0..29
+  EXPECT_EQ(m["spec_sha256"].get<std::string>().size(), 64u);
+  EXPECT_FALSE(fs::exists(d / "whole" / "checkpoints"));
+  fs::remove_all(d);
+}
+
+TEST(Sweep, KilledRunResumesToTheSameBytes) {
+  const fs::path d = unique_dir("resume");
+  write(d / "spec.toml", wall_spec(30, 30));
+  const std::string spec = (d / "spec.toml").string();
+  ASSERT_EQ(run_cli("sweep " + spec + " --out " + (d / "whole").string() + " --jobs 2 --quiet").code, 0);
+
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::setpgid(0, 0);  // the workers join this group: one kill stops them all
+    const std::string out = (d / "killed").string();
+    ::execl(HAPSTAB_CLI, HAPSTAB_CLI, "sweep", spec.c_str(), "--out", out.c_str(), "--jobs", "2", "--quiet",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::setpgid(pid, pid);
+  int status = 0;
+  bool ended = false;  // the run ended by itself (an error): no point in waiting for checkpoints
+  while (checkpoint_lines(d / "killed") < 40 && !(ended = ::waitpid(pid, &status, WNOHANG) == pid))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_FALSE(ended) << "the sweep ended before it was killed (exit " << WEXITSTATUS(status) << ")";
+  ::kill(-pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_FALSE(fs::exists(d / "killed" / "points.csv"));
+  const size_t kept = checkpoint_lines(d / "killed");
+  EXPECT_LT(kept, 900u);
+  // A torn last write, as a kill in the middle of write(2) would leave it.
+  write(d / "killed" / "checkpoints" / "part-torn.txt", "899 {\"exit\":0,\"json\":{\"bou");
+
+  auto r = run_cli("sweep " + spec + " --out " + (d / "killed").string() + " --quiet");
+  EXPECT_EQ(r.code, 2) << r.out;  // without --resume a started folder is refused
+  EXPECT_NE(r.out.find("--resume"), std::string::npos);
+  r = run_cli("sweep " + spec + " --out " + (d / "killed").string() + " --resume --jobs 2");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("(" + std::to_string(900 - kept) + " run now)"), std::string::npos) << r.out;
+  EXPECT_EQ(read(d / "whole" / "points.csv"), read(d / "killed" / "points.csv"));
+  // Resuming a finished folder redoes nothing and writes the same bytes.
+  r = run_cli("sweep " + spec + " --out " + (d / "killed").string() + " --resume");
+  EXPECT_NE(r.out.find("(0 run now)"), std::string::npos) << r.out;
+  EXPECT_EQ(read(d / "whole" / "points.csv"), read(d / "killed" / "points.csv"));
+  // --resume with another spec is refused.
+  write(d / "other.toml", wall_spec(30, 31));
+  r = run_cli("sweep " + (d / "other.toml").string() + " --out " + (d / "killed").string() + " --resume");
+  EXPECT_EQ(r.code, 2) << r.out;
+  fs::remove_all(d);
+}
+
+TEST(Sweep, SampledRowsEqualSingleBoundRuns) {
+  const fs::path d = unique_dir("sample");
+  write(d / "spec.toml", wall_spec(4, 3));
+  ASSERT_EQ(run_cli("sweep " + (d / "spec.toml").string() + " --out " + d.string() + "/o --quiet").code, 0);
+  const auto rows = csv_rows(d / "o" / "points.csv");
+  const auto& head = rows[0];
+  for (size_t i : {2u, 7u, 11u}) {
+    const auto& row = rows[i + 1];
+    ASSERT_EQ(row[0], std::to_string(i));
+    const auto r = run_cli("bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --delay 1 --digits 30 --json --set K=" +
+                           row[column(head, "K")] + " --set B=" + row[column(head, "B")]);
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["bound"], row[column(head, "bound")]);
+    EXPECT_EQ(j["enclosure"][0], row[column(head, "enclosure_lo")]);
+    EXPECT_EQ(j["enclosure"][1], row[column(head, "enclosure_hi")]);
+    EXPECT_EQ(j["status"], row[column(head, "status")]);
+  }
+  EXPECT_EQ(rows[3][column(head, "K")], "0");
+  EXPECT_EQ(rows[4][column(head, "K")], "10000");  // exact grid values as decimals
+  fs::remove_all(d);
+}
+
+TEST(Sweep, FailingPointIsARowNotTheEnd) {
+  const fs::path d = unique_dir("fail");
+  write(d / "spec.toml",
+        "command = \"bound\"\n[args]\nH = \"K + 1/(z-c)\"\nT = \"1/1000\"\n[axes]\nK = { values = [\"1\"] }\n"
+        "c = { values = [\"1/2\", \"2\", \"-1/4\"] }\n");
+  const auto r = run_cli("sweep " + (d / "spec.toml").string() + " --out " + d.string() + "/o --quiet");
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto rows = csv_rows(d / "o" / "points.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const size_t err = column(rows[0], "error"), bound = column(rows[0], "bound");
+  EXPECT_EQ(rows[1][err], "");
+  EXPECT_NE(rows[2][err].find("unstable"), std::string::npos) << rows[2][err];
+  EXPECT_EQ(rows[2][bound], "");
+  EXPECT_EQ(rows[3][err], "");
+  EXPECT_NE(rows[3][bound], "");
+  EXPECT_EQ(nlohmann::json::parse(read(d / "o" / "manifest.json"))["points"]["failed"], 1);
+  fs::remove_all(d);
+}
+
+TEST(Sweep, MergeNamesMissingAndDuplicatePointsAndForeignSpecs) {
+  const fs::path d = unique_dir("merge");
+  write(d / "a.toml", wall_spec(3, 2));
+  write(d / "b.toml", wall_spec(3, 3));
+  for (int k = 0; k < 3; ++k)
+    ASSERT_EQ(run_cli("sweep " + (d / "a.toml").string() + " --out " + d.string() + "/s" + std::to_string(k) +
+                      " --shard " + std::to_string(k) + "/3 --quiet")
+                  .code,
+              0);
+  ASSERT_EQ(run_cli("sweep " + (d / "b.toml").string() + " --out " + d.string() + "/b0 --shard 0/3 --quiet").code, 0);
+  const std::string s = d.string() + "/s";
+  auto r = run_cli("sweep merge " + s + "0 " + s + "2 --out " + d.string() + "/m");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("2 points missing: 1, 4"), std::string::npos) << r.out;
+  r = run_cli("sweep merge " + s + "0 " + s + "1 " + s + "2 " + s + "1 --out " + d.string() + "/m");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("more than one shard: 1, 4"), std::string::npos) << r.out;
+  r = run_cli("sweep merge " + s + "0 " + d.string() + "/b0 --out " + d.string() + "/m");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("another spec"), std::string::npos) << r.out;
+  fs::remove_all(d);
+}
+
+TEST(Sweep, BadSpecsExit2NamingTheKey) {
+  const fs::path d = unique_dir("bad");
+  const std::string axes = "[axes]\nK = { values = [\"1\"] }\n";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"command = \"bound\"\n[args]\nH = \"K\"\nT = \"1/1000\"\nwrong = 1\n" + axes, "args.wrong"},
+      {"command = \"bound\"\n[args]\ncurve = \"/etc/x\"\n" + axes, "args.curve"},
+      {"command = \"bound\"\n[args]\nset = \"K=1\"\n" + axes, "args.set"},
+      {"command = \"reproduce\"\n" + axes, "command"},
+      {"command = \"sweep\"\n" + axes, "command"},
+      {"command = \"nope\"\n" + axes, "command"},
+      {"command = \"bound\"\n[axes]\nK = { values = [1.5] }\n", "axes.K.values[0]"},
+      {"command = \"bound\"\n[axes]\nK = { from = \"0\", to = \"1\", points = 0 }\n", "axes.K.points"}};
+  for (const auto& [text, key] : cases) {
+    write(d / "s.toml", text);
+    const auto r = run_cli("sweep " + (d / "s.toml").string() + " --out " + d.string() + "/o --quiet");
+    EXPECT_EQ(r.code, 2) << text << r.out;
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << ": " << r.out;
+  }
+  EXPECT_FALSE(fs::exists(d / "o" / "points.csv"));
+  write(d / "s.toml", wall_spec(2, 2));
+  const auto r = run_cli("sweep " + (d / "s.toml").string() + " --out " + d.string() + "/o --shard 4/4");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--shard"), std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST(Sweep, SlurmScriptsRunEachShardAndMerge) {
+  const fs::path d = unique_dir("slurm");
+  write(d / "s.toml", wall_spec(2, 2));
+  const auto r = run_cli("sweep slurm " + (d / "s.toml").string() + " --shards 3 --cpus 2 --time 00:10:00 --out " +
+                         d.string() + "/run");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string array = read(d / "run" / "sweep.sbatch"), merge = read(d / "run" / "merge.sbatch");
+  EXPECT_NE(array.find("#SBATCH --array=0-2\n"), std::string::npos) << array;
+  EXPECT_NE(array.find("#SBATCH --cpus-per-task=2\n"), std::string::npos);
+  EXPECT_NE(array.find("#SBATCH --time=00:10:00\n"), std::string::npos);
+  EXPECT_NE(array.find("--shard \"$SLURM_ARRAY_TASK_ID\"/3"), std::string::npos);
+  EXPECT_NE(merge.find("sweep merge '" + d.string() + "/run/shards/0' '" + d.string() + "/run/shards/1' '"),
+            std::string::npos)
+      << merge;
+  // The array script runs as written when the task id is set, as Slurm sets it.
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(shell("SLURM_ARRAY_TASK_ID=" + std::to_string(k) + " bash " + (d / "run" / "sweep.sbatch").string()), 0);
+  ASSERT_EQ(shell("bash " + (d / "run" / "merge.sbatch").string()), 0);
+  ASSERT_EQ(run_cli("sweep " + (d / "s.toml").string() + " --out " + d.string() + "/one --quiet").code, 0);
+  EXPECT_EQ(read(d / "run" / "points.csv"), read(d / "one" / "points.csv"));
+  EXPECT_EQ(run_cli("sweep slurm " + (d / "s.toml").string() + " --shards 2 --partition 'a b' --out " + d.string() + "/x").code, 2);
+  fs::remove_all(d);
+}
+
+TEST(Sweep, PlotDrawsTheMap) {
+  const fs::path d = unique_dir("plot");
+  write(d / "s.toml", wall_spec(3, 3));
+  ASSERT_EQ(run_cli("sweep " + (d / "s.toml").string() + " --out " + d.string() + "/o --quiet").code, 0);
+  auto r = run_cli("sweep plot " + d.string() + "/o --x K --y B --z bound --format svg");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(read(d / "o" / "figures" / "sweep_map.svg").find("certified / exact"), std::string::npos);
+  EXPECT_EQ(read(d / "o" / "plot-data" / "proven.dat").size() > 0, true);
+  r = run_cli("sweep plot " + d.string() + "/o --x K --y B --z nothing");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--z 'nothing'"), std::string::npos);
+  fs::remove_all(d);
+}
+
+// The README's recipe for machines without Slurm: GNU parallel runs the shards, then merge.
+TEST(Sweep, GnuParallelRecipe) {
+  if (shell("command -v parallel") != 0) GTEST_SKIP() << "GNU parallel is not installed";
+  const fs::path d = unique_dir("parallel");
+  write(d / "spec.toml", wall_spec(4, 4));
+  const std::string h = HAPSTAB_CLI, dir = d.string();
+  ASSERT_EQ(shell("cd " + dir + " && parallel --halt now,fail=1 " + h +
+                  " sweep spec.toml --out shard-{} --shard {}/4 --jobs 1 --quiet ::: 0 1 2 3 && " + h +
+                  " sweep merge shard-0 shard-1 shard-2 shard-3 --out all --quiet"),
+            0);
+  ASSERT_EQ(run_cli("sweep " + dir + "/spec.toml --out " + dir + "/one --quiet").code, 0);
+  EXPECT_EQ(read(d / "all" / "points.csv"), read(d / "one" / "points.csv"));
+  fs::remove_all(d);
+}

@@ -1,0 +1,179 @@
+// Tests of hapstab/study: SHA-256 against the FIPS 180-4 / NIST test vectors, exact axes (linear,
+// log, random reproducible from integer draws), point enumeration, spec errors naming their key,
+// record flattening and the record store (torn lines, duplicates, missing points).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/study/sha256.hpp"
+#include "hapstab/study/spec.hpp"
+#include "hapstab/study/table.hpp"
+
+using namespace hapstab;
+using namespace hapstab::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path unique_dir(const std::string& tag) {
+  std::string t = (fs::temp_directory_path() / ("hapstab-study-" + tag + "-XXXXXX")).string();
+  EXPECT_NE(::mkdtemp(t.data()), nullptr);
+  return t;
+}
+
+std::string error_of(const std::string& spec) {
+  try {
+    parse_spec(spec, "s.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string head = "command = \"bound\"\n[args]\nH = \"K\"\nT = \"1/1000\"\n[axes]\n";
+
+}  // namespace
+
+TEST(Sha256, NistVectors) {
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+  // 55, 56 and 64 bytes: the padding edges (one block, two blocks).
+  EXPECT_EQ(sha256_hex(std::string(55, 'a')), "9f4390f8d30c2dd92ec9f095b65e2b9ae9b0a925a5258e241c9f1e910f734318");
+  EXPECT_EQ(sha256_hex(std::string(56, 'a')), "b35439a4ac6f0948b6d6f9e3c6af0f5f590ce20f1bde7090ef7970686ec6738a");
+  EXPECT_EQ(sha256_hex(std::string(64, 'a')), "ffe054fe7ae0cb6dc65c3af9b61d5209f439851db43d0ba5997337df154668eb");
+}
+
+TEST(Axes, LinearGridIsExact) {
+  const Spec s = parse_spec(head + "K = { from = \"0\", to = \"40000\", points = 7 }\nB = { values = [\"1/2\", 3] }\n",
+                            "s.toml");
+  ASSERT_EQ(s.axes.size(), 2u);
+  EXPECT_EQ(s.axes[0].name, "K");  // file order, not alphabetical
+  EXPECT_EQ(s.axes[0].values,
+            (std::vector<std::string>{"0", "20000/3", "40000/3", "20000", "80000/3", "100000/3", "40000"}));
+  EXPECT_EQ(s.axes[1].values, (std::vector<std::string>{"1/2", "3"}));
+  EXPECT_EQ(s.points, 14u);
+  EXPECT_EQ(point_values(s, 0), (std::vector<std::string>{"0", "1/2"}));
+  EXPECT_EQ(point_values(s, 13), (std::vector<std::string>{"40000", "3"}));  // the last axis varies fastest
+  const auto args = point_args(s, 3, {"--json"});
+  EXPECT_EQ(args, (std::vector<std::string>{"bound", "--H", "K", "--T", "1/1000", "--json", "--set", "K=20000/3",
+                                            "--set", "B=3"}));
+}
+
+TEST(Axes, ExactTextOfDecimalsAndFractions) {
+  EXPECT_EQ(exact_text(rational(1, 8)), "0.125");
+  EXPECT_EQ(exact_text(rational(-3, 40)), "-0.075");
+  EXPECT_EQ(exact_text(rational(1, 3)), "1/3");
+  EXPECT_EQ(exact_text(rational(250)), "250");
+  EXPECT_EQ(parse_rational(exact_text(rational(7, 1024))), rational(7, 1024));
+}
+
+TEST(Axes, LogScaleRoundedToStatedDigits) {
+  const Spec s = parse_spec(head + "K = { from = \"1\", to = \"1000\", points = 4, scale = \"log\", digits = 3 }\n", "s");
+  EXPECT_EQ(s.axes[0].values, (std::vector<std::string>{"1", "10", "100", "1000"}));
+  const Spec t = parse_spec(head + "K = { from = \"1\", to = \"10\", points = 3, scale = \"log\", digits = 4 }\n", "s");
+  EXPECT_EQ(t.axes[0].values, (std::vector<std::string>{"1", "3.162", "10"}));  // sqrt(10) = 3.16227...
+}
+
+TEST(Axes, RandomIsReproducibleFromIntegerDraws) {
+  // splitmix64's published first output for seed 0 (Vigna's reference implementation).
+  EXPECT_EQ(splitmix64(0, 0), 0xe220a8397b1dcdafULL);
+  const std::string axis = "K = { random = 5, from = \"-1\", to = \"1\", seed = 42 }\n";
+  const Spec a = parse_spec(head + axis, "s"), b = parse_spec(head + axis, "s");
+  EXPECT_EQ(a.axes[0].values, b.axes[0].values);
+  for (size_t k = 0; k < 5; ++k) {
+    const rational v = parse_rational(a.axes[0].values[k]);
+    EXPECT_GE(v, -1);
+    EXPECT_LT(v, 1);
+    const rational expect = rational(-1) + 2 * rational(integer(splitmix64(42, k) >> 11)) / rational(integer(1) << 53);
+    EXPECT_EQ(v, expect);
+  }
+  EXPECT_NE(a.axes[0].values, parse_spec(head + "K = { random = 5, from = \"-1\", to = \"1\", seed = 43 }\n", "s").axes[0].values);
+}
+
+TEST(Spec, ErrorsNameTheKey) {
+  EXPECT_NE(error_of("[axes]\nK = { values = [\"1\"] }\n").find("command"), std::string::npos);
+  EXPECT_NE(error_of(head).find("axes"), std::string::npos);
+  EXPECT_NE(error_of(head + "K = { values = [0.1] }\n").find("axes.K.values[0]"), std::string::npos);
+  EXPECT_NE(error_of(head + "K = { values = [\"x\"] }\n").find("axes.K.values[0]"), std::string::npos);
+  EXPECT_NE(error_of(head + "K = { from = \"0\", to = \"1\" }\n").find("axes.K.points"), std::string::npos);
+  EXPECT_NE(error_of(head + "K = { from = \"0\", to = \"1\", points = 3, step = 1 }\n").find("axes.K.step"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "K = { from = \"0\", to = \"1\", points = 3, scale = \"log\" }\n").find("axes.K"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "index = { values = [\"1\"] }\n").find("axes.index"), std::string::npos);
+  EXPECT_NE(error_of("command = \"bound\"\n[args]\ndigits = 1.5\n[axes]\nK = { values = [\"1\"] }\n").find("args.digits"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "K = { from = \"0\", to = \"1\", points = 100000 }\nB = { from = \"0\", to = \"1\", points = "
+                            "100000 }\n").find("10^9"),
+            std::string::npos);
+  EXPECT_NE(error_of("command = \"bound\"\nextra = 1\n[axes]\nK = { values = [\"1\"] }\n").find("extra"), std::string::npos);
+  EXPECT_NE(error_of("command = \n").find("s.toml:1"), std::string::npos);  // TOML syntax: file:line
+}
+
+TEST(Table, FlattenDropsTimingsAndSplitsEnclosures) {
+  const auto j = nlohmann::json::parse(
+      R"({"bound":"5","enclosure":["4.9","5.1"],"seconds":{"total":1.5},"run_seconds":2,"d":{"b":"1","ok":true},"v":[1,2,3],"n":null})");
+  const auto f = flatten(j);
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : f) keys.push_back(k);
+  EXPECT_EQ(keys, (std::vector<std::string>{"bound", "d_b", "d_ok", "enclosure_lo", "enclosure_hi", "n", "v_0", "v_1", "v_2"}));
+  EXPECT_EQ(f[2].second, "true");
+  EXPECT_EQ(f[3].second, "4.9");
+  EXPECT_EQ(f[5].second, "");
+  EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+TEST(Table, StoreIgnoresTornLineAndReportsDuplicatesAndMissing) {
+  const fs::path dir = unique_dir("store");
+  const PointRange r = PointRange::shard_of(10, 1, 3);  // indices 1, 4, 7
+  ASSERT_EQ(r.count, 3u);
+  {
+    std::ofstream f(dir / "a.txt");
+    f << record_line(4, {{"exit", 0}, {"json", {{"x", 1}}}}) << "\n" << record_line(1, {{"exit", 2}, {"error", "bad"}})
+      << "\n7 {\"exit\":0,\"js";  // torn by a kill
+  }
+  RecordStore s(r);
+  s.add_file(dir / "a.txt");
+  EXPECT_EQ(s.present(), 2u);
+  EXPECT_EQ(s.missing(5), (std::vector<uint64_t>{7}));
+  EXPECT_EQ(s.record(1)["json"]["x"], 1);
+  s.add_file(dir / "a.txt");
+  EXPECT_EQ(s.duplicates(), (std::vector<uint64_t>{4, 1}));
+  {
+    std::ofstream f(dir / "b.txt");
+    f << record_line(5, {{"exit", 0}}) << "\n";  // not in shard 1/3
+  }
+  RecordStore t(r);
+  EXPECT_THROW(t.add_file(dir / "b.txt"), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(Table, WritesRowsInIndexOrderWithKeysRenamedOnClash) {
+  const fs::path dir = unique_dir("table");
+  const Spec s = parse_spec(head + "bound = { values = [\"1\", \"1/3\"] }\nK = { values = [\"7\"] }\n", "s.toml");
+  {
+    std::ofstream f(dir / "r.txt");  // index 1 first: the table is in index order all the same
+    f << record_line(1, {{"exit", 2}, {"error", "bad, \"quoted\""}}) << "\n"
+      << record_line(0, {{"exit", 0}, {"json", {{"bound", "0.5"}, {"enclosure", {"0.4", "0.6"}}, {"total_seconds", 3}}}}) << "\n";
+  }
+  RecordStore store(PointRange::shard_of(s.points, 0, 1));
+  store.add_file(dir / "r.txt");
+  const TableCounts c = write_table(s, store, dir);
+  EXPECT_EQ(c.ok, 1u);
+  EXPECT_EQ(c.failed, 1u);
+  std::ifstream in(dir / "points.csv");
+  const std::string csv((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(csv,
+            "index,bound,K,json_bound,enclosure_lo,enclosure_hi,exit,error\n"
+            "0,1,7,0.5,0.4,0.6,0,\n"
+            "1,1/3,7,,,,2,\"bad, \"\"quoted\"\"\"\n");
+  fs::remove_all(dir);
+}

@@ -1,0 +1,254 @@
+// Spec files -> Spec: the TOML is read with toml++, each key checked and named in errors; axes
+// are taken in file order (toml++ tables are sorted, so by source position).
+#include "hapstab/study/spec.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/study/sha256.hpp"
+
+namespace hapstab::study {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& file, const std::string& key, const std::string& what) {
+  throw InputError(file + ": " + key + ": " + what);
+}
+
+bool is_name(const std::string& s) {
+  if (s.empty() || s.size() > 64 || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+/// The (key, node) pairs of a table in file order.
+std::vector<std::pair<std::string, const toml::node*>> in_file_order(const toml::table& t) {
+  std::vector<std::pair<std::string, const toml::node*>> out;
+  for (auto&& [k, v] : t) out.emplace_back(std::string(k.str()), &v);
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    const auto& sa = a.second->source().begin;
+    const auto& sb = b.second->source().begin;
+    return sa.line != sb.line ? sa.line < sb.line : sa.column < sb.column;
+  });
+  return out;
+}
+
+/// An exact number given as a string or an integer (a TOML float is refused: its text is lost).
+std::string number_text(const toml::node& n, const std::string& file, const std::string& key) {
+  if (auto s = n.as_string()) {
+    if (!try_parse_rational(s->get())) fail(file, key, "'" + s->get() + "' is not an exact number");
+    return s->get();
+  }
+  if (auto i = n.as_integer()) return std::to_string(i->get());
+  if (n.is_floating_point()) fail(file, key, "write decimals as strings (\"0.1\") so that they stay exact");
+  fail(file, key, "expected an exact number as a string, e.g. \"1/2\"");
+}
+
+rational number(const toml::table& t, const char* name, const std::string& file, const std::string& key) {
+  const toml::node* n = t.get(name);
+  if (!n) fail(file, key + "." + name, "missing");
+  return parse_rational(number_text(*n, file, key + "." + name));
+}
+
+int64_t integer_in(const toml::table& t, const char* name, int64_t lo, int64_t hi, const std::string& file,
+                   const std::string& key) {
+  const toml::node* n = t.get(name);
+  if (!n) fail(file, key + "." + name, "missing");
+  auto i = n->as_integer();
+  if (!i || i->get() < lo || i->get() > hi)
+    fail(file, key + "." + name, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return i->get();
+}
+
+void only_keys(const toml::table& t, std::initializer_list<const char*> allowed, const std::string& file,
+               const std::string& key) {
+  for (auto&& [k, v] : t)
+    if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k.str() == a; }))
+      fail(file, key + "." + std::string(k.str()), "unknown key");
+}
+
+std::vector<std::string> linear_axis(const toml::table& t, const std::string& file, const std::string& key) {
+  only_keys(t, {"from", "to", "points", "scale", "digits"}, file, key);
+  const rational from = number(t, "from", file, key), to = number(t, "to", file, key);
+  const int64_t n = integer_in(t, "points", 1, max_axis_values, file, key);
+  std::string scale = "linear";
+  if (const toml::node* s = t.get("scale")) {
+    if (!s->as_string() || (s->as_string()->get() != "linear" && s->as_string()->get() != "log"))
+      fail(file, key + ".scale", "expected \"linear\" or \"log\"");
+    scale = s->as_string()->get();
+  }
+  std::vector<std::string> out;
+  out.reserve(static_cast<size_t>(n));
+  if (scale == "linear") {
+    if (t.get("digits")) fail(file, key + ".digits", "only for scale = \"log\"");
+    for (int64_t k = 0; k < n; ++k) out.push_back(exact_text(n == 1 ? from : from + (to - from) * k / (n - 1)));
+    return out;
+  }
+  const int digits = t.get("digits") ? static_cast<int>(integer_in(t, "digits", 1, 30, file, key)) : 6;
+  if (from <= 0 || to <= 0) fail(file, key, "a log scale needs from > 0 and to > 0");
+  const mp100 lf = log(mp100(from)), lt = log(mp100(to));
+  for (int64_t k = 0; k < n; ++k) {
+    const mp100 x = n == 1 ? mp100(from) : exp(lf + (lt - lf) * k / (n - 1));
+    out.push_back(exact_text(parse_rational(to_decimal(exact_rational(x), digits))));
+  }
+  return out;
+}
+
+std::vector<std::string> random_axis(const toml::table& t, const std::string& file, const std::string& key) {
+  only_keys(t, {"random", "from", "to", "seed"}, file, key);
+  const int64_t n = integer_in(t, "random", 1, max_axis_values, file, key);
+  const rational from = number(t, "from", file, key), to = number(t, "to", file, key);
+  const auto seed = static_cast<uint64_t>(integer_in(t, "seed", 0, INT64_MAX, file, key));
+  const rational two53 = rational(integer(1) << 53);
+  std::vector<std::string> out;
+  for (int64_t k = 0; k < n; ++k) {
+    const uint64_t u = splitmix64(seed, static_cast<uint64_t>(k)) >> 11;
+    out.push_back(exact_text(from + (to - from) * rational(integer(u)) / two53));
+  }
+  return out;
+}
+
+Axis read_axis(const std::string& name, const toml::node& node, const std::string& file) {
+  const std::string key = "axes." + name;
+  if (!is_name(name) || name == "index" || name == "error" || name == "exit")
+    fail(file, key, "an axis is a parameter name (letters, digits, _), not index/error/exit");
+  const toml::table* t = node.as_table();
+  if (!t) fail(file, key, "expected a table, e.g. { values = [\"1\", \"2\"] }");
+  Axis a{name, {}};
+  if (const toml::node* v = t->get("values")) {
+    only_keys(*t, {"values"}, file, key);
+    const toml::array* arr = v->as_array();
+    if (!arr || arr->empty() || arr->size() > max_axis_values) fail(file, key + ".values", "expected a non-empty list");
+    for (size_t i = 0; i < arr->size(); ++i)
+      a.values.push_back(number_text(*arr->get(i), file, key + ".values[" + std::to_string(i) + "]"));
+  } else if (t->get("random")) {
+    a.values = random_axis(*t, file, key);
+  } else if (t->get("from")) {
+    a.values = linear_axis(*t, file, key);
+  } else {
+    fail(file, key, "expected values = [...], from/to/points, or random/from/to/seed");
+  }
+  return a;
+}
+
+Arg read_arg(const std::string& name, const toml::node& v, const std::string& file) {
+  const std::string key = "args." + name;
+  if (name.empty() || name.size() > 64 ||
+      !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; }) ||
+      name[0] == '-')
+    fail(file, key, "not an option name");
+  if (auto s = v.as_string()) {
+    if (s->get().size() > 4096) fail(file, key, "longer than 4096 characters");
+    return {name, s->get(), false};
+  }
+  if (auto i = v.as_integer()) return {name, std::to_string(i->get()), false};
+  if (auto b = v.as_boolean()) return {name, "", b->get(), !b->get()};
+  if (v.is_floating_point()) fail(file, key, "write decimals as strings (\"0.1\") so that they stay exact");
+  fail(file, key, "expected a string, an integer or true/false");
+}
+
+std::vector<std::string> split_words(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> w;
+  for (std::string x; in >> x;) w.push_back(x);
+  return w;
+}
+
+}  // namespace
+
+std::string exact_text(const rational& q) {
+  integer d = den(q), r = d;
+  while (r % 2 == 0) r /= 2;
+  while (r % 5 == 0) r /= 5;
+  if (d == 1) return num(q).str();
+  if (r != 1) return q.str();
+  // A terminating decimal: q = m / 10^k exactly for the smallest such k.
+  int k = 0;
+  integer p = 1;
+  while (p % d != 0) p *= 10, ++k;
+  integer m = num(q) * (p / d);
+  const bool neg = m < 0;
+  std::string digits = (neg ? integer(-m) : m).str();
+  if (digits.size() <= static_cast<size_t>(k)) digits.insert(0, static_cast<size_t>(k) + 1 - digits.size(), '0');
+  digits.insert(digits.size() - static_cast<size_t>(k), ".");
+  return (neg ? "-" : "") + digits;
+}
+
+uint64_t splitmix64(uint64_t seed, uint64_t k) {
+  uint64_t z = seed + (k + 1) * 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+Spec parse_spec(const std::string& text, const std::string& file) {
+  if (text.size() > max_spec_bytes) fail(file, "(file)", "larger than 1 MiB");
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << file << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw InputError(os.str());
+  }
+  only_keys(root, {"command", "args", "axes"}, file, "(top level)");
+  Spec spec;
+  spec.sha256 = sha256_hex(text);
+  const toml::node* cmd = root.get("command");
+  if (!cmd || !cmd->as_string()) fail(file, "command", "missing: the command to run, e.g. command = \"bound\"");
+  spec.command = split_words(cmd->as_string()->get());
+  if (spec.command.empty() || spec.command.size() > 2) fail(file, "command", "expected one or two words");
+  if (const toml::node* a = root.get("args")) {
+    if (!a->as_table()) fail(file, "args", "expected a table [args]");
+    for (const auto& [k, v] : in_file_order(*a->as_table())) spec.args.push_back(read_arg(k, *v, file));
+  }
+  const toml::node* axes = root.get("axes");
+  if (!axes || !axes->as_table() || axes->as_table()->empty())
+    fail(file, "axes", "missing: at least one axis, e.g. [axes] K = { values = [\"1\", \"2\"] }");
+  for (const auto& [k, v] : in_file_order(*axes->as_table())) {
+    spec.axes.push_back(read_axis(k, *v, file));
+    const uint64_t n = spec.axes.back().values.size();
+    if (spec.points > max_points / n) fail(file, "axes." + k, "the sweep would have more than 10^9 points");
+    spec.points *= n;
+  }
+  return spec;
+}
+
+std::string read_spec_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError("cannot read the spec file '" + path + "'");
+  std::string text(max_spec_bytes + 1, '\0');
+  f.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(f.gcount()));
+  if (text.size() > max_spec_bytes) throw InputError(path + ": larger than 1 MiB");
+  return text;
+}
+
+std::vector<std::string> point_values(const Spec& spec, uint64_t index) {
+  std::vector<std::string> out(spec.axes.size());
+  for (size_t a = spec.axes.size(); a-- > 0;) {
+    const auto& v = spec.axes[a].values;
+    out[a] = v[index % v.size()];
+    index /= v.size();
+  }
+  return out;
+}
+
+std::vector<std::string> point_args(const Spec& spec, uint64_t index, const std::vector<std::string>& extra) {
+  std::vector<std::string> args = spec.command;
+  for (const Arg& a : spec.args) {
+    if (a.omit) continue;  // key = false
+    args.push_back("--" + a.key);
+    if (!a.flag) args.push_back(a.value);
+  }
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto values = point_values(spec, index);
+  for (size_t a = 0; a < values.size(); ++a) args.insert(args.end(), {"--set", spec.axes[a].name + "=" + values[a]});
+  return args;
+}
+
+}  // namespace hapstab::study
