@@ -107,7 +107,10 @@ std::string run_forked(const std::vector<std::string>& args) {
       else if (n == 0) break;  // the child closed its end: the answer is complete
       else if (errno != EINTR && errno != EAGAIN) break;
     } else if (ready < 0 && errno != EINTR) {
-      break;
+      const int err = errno;
+      ::close(fds[0]);
+      reap(true);
+      throw std::runtime_error(std::string("hapstab: poll: ") + std::strerror(err));
     }
     if (PyErr_CheckSignals() != 0) {  // Ctrl-C: a Python exception is set
       ::close(fds[0]);
@@ -117,6 +120,12 @@ std::string run_forked(const std::vector<std::string>& args) {
   }
   ::close(fds[0]);
   const int status = reap(false);
+  // Ctrl-C in a terminal reaches the whole process group: the child may have died of it first
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) {
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
   if (data.empty() || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("hapstab: the computation ended abnormally (" + describe_status(status) + ")");
   return data;

@@ -364,13 +364,16 @@ def _children(pid):
         return []
 
 
-def test_ctrl_c_stops_a_long_call():
+@pytest.mark.parametrize("to_group", [False, True])
+def test_ctrl_c_stops_a_long_call(to_group):
     # two billion steps (about a minute of computing): SIGINT, sent while the forked child
-    # computes, must end the call with KeyboardInterrupt, kill the child, and leave the module usable
+    # computes, must end the call with KeyboardInterrupt, kill the child, and leave the module
+    # usable; to_group: as a terminal's Ctrl-C does, to the parent and the child together
     code = (f"import hapstab\nprint('started', flush=True)\ntry:\n    hapstab.simulate({LONG_SCENE!r})\n"
             "    print('completed')\nexcept KeyboardInterrupt:\n    print('interrupted', flush=True)\n"
             "    print(hapstab.bound('1', T=1).value)\n")
-    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         start_new_session=True)
     assert p.stdout.readline().strip() == "started"
     deadline = time.monotonic() + 60  # a hang guard, not a measurement
     while not _children(p.pid) and time.monotonic() < deadline:
@@ -378,7 +381,10 @@ def test_ctrl_c_stops_a_long_call():
     computing = _children(p.pid)
     assert computing, "the call never forked its child"
     time.sleep(0.2)
-    p.send_signal(signal.SIGINT)
+    if to_group:
+        os.killpg(p.pid, signal.SIGINT)
+    else:
+        p.send_signal(signal.SIGINT)
     out, err = p.communicate(timeout=120)
     assert out.split() == ["interrupted", "0.5"], (out, err)
     assert p.returncode == 0, err
