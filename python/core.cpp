@@ -6,7 +6,7 @@
 // checks for signals every 20 ms, so Ctrl-C (KeyboardInterrupt) stops a long computation at once:
 // the child is killed, since C++ code (FLINT, the SDP solvers) cannot be interrupted from inside.
 // A crash in the child cannot take the interpreter down either. The cost is a fork per call
-// (about a millisecond; README "Python"). The child answers with one JSON document:
+// (a few milliseconds; README "Python"). The child answers with one JSON document:
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
 //   {"error": "<message>", "code": 2|3, "kind": "error"|"numerical failure"|"internal error"}
 #include <fcntl.h>
