@@ -34,6 +34,7 @@ for j in range(v.shape[1]):
 ax1.set_ylabel(f"v [{s.units['v']}]")
 ax2.set_ylabel(r"$\int f_h v\,dt$ " + f"[{s.units['E_port']}]")
 ax2.set_xlabel("t [s]")
+ax2.set_xlim(0, 3)  # the transient; the run goes on to 10 s, decaying
 ax1.legend()
 ax1.set_title(f"Paper 000, the 2-DOF loop without coupling: diverged = {s.diverged}, trend {s.trend}")
 fig.tight_layout()
