@@ -54,11 +54,23 @@ TEST(CmdSimulate, WritesSeriesScriptAndSummary) {
   EXPECT_TRUE(fs::exists(out / "plot.gp"));
   EXPECT_EQ(nlohmann::json::parse(std::ifstream(out / "summary.json")), j);
   std::ifstream csv(out / "samples.csv");
-  std::string h1, h2;
+  // ONE header row, `name_j [unit]`, then numbers (pandas.read_csv / readtable read it as is)
+  std::string h1, row1;
   std::getline(csv, h1);
-  std::getline(csv, h2);
-  EXPECT_EQ(h1.rfind("t,x0,v0,u0,fh0,E_port0", 0), 0u) << h1;
-  EXPECT_EQ(h2.rfind("s,m,m/s,N,N,J", 0), 0u) << h2;
+  std::getline(csv, row1);
+  EXPECT_EQ(h1, "t [s],x_0 [m],v_0 [m/s],u_0 [N],fh_0 [N],E_port_0 [J],E_act_0 [J],E_po_0 [J],storage_0 [J]") << h1;
+  EXPECT_EQ(row1.rfind("0,", 0), 0u) << row1;
+  std::ifstream fine(out / "fine.csv");
+  std::getline(fine, h1);
+  std::getline(fine, row1);
+  EXPECT_EQ(h1, "t [s],x_0 [m],v_0 [m/s]") << h1;
+  EXPECT_NE(row1.find_first_of("0123456789"), std::string::npos) << row1;
+  EXPECT_EQ(row1.find_first_of("[]"), std::string::npos) << row1;
+  // plot.gp skips exactly that one row
+  std::stringstream gp;
+  gp << std::ifstream(out / "plot.gp").rdbuf();
+  EXPECT_NE(gp.str().find("'samples.csv' skip 1 "), std::string::npos);
+  EXPECT_EQ(gp.str().find("skip 2"), std::string::npos);
 }
 
 TEST(CmdSimulate, TightnessBothSidesOfTheBound) {

@@ -83,7 +83,7 @@ TEST(Untrusted, CraftedSceneNameRunsNothingInGnuplotOrLatex) {
                                 "print(len(rows), sorted(set(len(r) for r in rows)), rows[0][:3])",
                                 (dir / "out" / "samples.csv").string()});
   ASSERT_TRUE(csv.ok()) << csv.describe() << csv.err;
-  EXPECT_NE(csv.out.find(" [9] ['t', 'x0', 'v0']"), std::string::npos) << csv.out;  // t + 8 columns for one DOF
+  EXPECT_NE(csv.out.find(" [9] ['t [s]', 'x_0 [m]', 'v_0 [m/s]']"), std::string::npos) << csv.out;  // t + 8 columns for one DOF
   // the script draws with the real gnuplot, in PNG and in the cairolatex terminal
   ProcessOptions in_out;
   in_out.working_dir = dir / "out";

@@ -1,6 +1,6 @@
 // `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE]`:
 // runs a scene's sampled-data loop with the exact-ZOH simulator (sim/) and writes
-//   DIR/samples.csv   time series at the sample instants (row 1: names, row 2: units)
+//   DIR/samples.csv   time series at the sample instants (one header row: t [s], x_0 [m], v_0 [m/s], ...)
 //   DIR/fine.csv      the exact intersample grid (when [simulate] substeps > 1)
 //   DIR/plot.gp       the gnuplot script that draws them (gnuplot plot.gp, in DIR)
 //   DIR/summary.json  {diverged, max_velocity, energy_generated, limit_cycle: {period, amplitude} | null, ...}
@@ -67,21 +67,24 @@ nlohmann::json summary_json(const sim::Summary& s, const scene::Scene& sc) {
   return j;
 }
 
+/// A CSV column header: "v_0 [m/s]".
+std::string column_name(const char* name, int dof, const char* unit) {
+  return std::string(name) + "_" + std::to_string(dof) + " [" + unit + "]";
+}
+
 void write_csv(const fs::path& dir, const sim::SimResult& r) {
   const auto& S = r.samples;
   const int N = S.N;
   {
     std::ofstream f(dir / "samples.csv");
     if (!f) throw InputError("--out: cannot write " + (dir / "samples.csv").string());
-    // The header through the CSV writer (report/escape.hpp) like every CSV cell of text.
+    // One header row, `name_j [unit]` (j the DOF index, as in watch_dof), so pandas.read_csv and
+    // MATLAB's readtable read the file without options; through the CSV writer (report/escape.hpp).
     const char* names[] = {"x", "v", "u", "fh", "E_port", "E_act", "E_po", "storage"};
     const char* units[] = {"m", "m/s", "N", "N", "J", "J", "J", "J"};
-    f << report::csv::cell("t");
+    f << report::csv::cell("t [s]");
     for (int j = 0; j < N; ++j)
-      for (const char* n : names) f << ',' << report::csv::cell(n + std::to_string(j));
-    f << '\n' << report::csv::cell("s");
-    for (int j = 0; j < N; ++j)
-      for (const char* u : units) f << ',' << report::csv::cell(u);
+      for (int c = 0; c < 8; ++c) f << ',' << report::csv::cell(column_name(names[c], j, units[c]));
     f << "\n" << std::setprecision(17);
     for (size_t i = 0; i < S.rows(); ++i) {
       f << S.t[i];
@@ -98,10 +101,9 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
   if (r.fine.rows() > 0) {
     const auto& F = r.fine;
     std::ofstream f(dir / "fine.csv");
-    f << "t";
-    for (int j = 0; j < N; ++j) f << ",x" << j << ",v" << j;
-    f << "\ns";
-    for (int j = 0; j < N; ++j) f << ",m,m/s";
+    f << report::csv::cell("t [s]");
+    for (int j = 0; j < N; ++j)
+      f << ',' << report::csv::cell(column_name("x", j, "m")) << ',' << report::csv::cell(column_name("v", j, "m/s"));
     f << "\n" << std::setprecision(17);
     for (size_t i = 0; i < F.rows(); ++i) {
       f << F.t[i];
@@ -134,9 +136,9 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
     for (int j = 0; j < N; ++j) {
       if (j) g << ", ";
       if (with_fine && fine)
-        g << "'fine.csv' skip 2 using 1:" << (off == 2 ? 2 + 2 * j : 3 + 2 * j) << " with lines lw 1 title 'DOF " << j
+        g << "'fine.csv' skip 1 using 1:" << (off == 2 ? 2 + 2 * j : 3 + 2 * j) << " with lines lw 1 title 'DOF " << j
           << " (exact, between samples)', ";
-      g << "'samples.csv' skip 2 using 1:" << (off + 8 * j) << " with " << (with_fine && fine ? "points pt 7 ps 0.6" : "lines")
+      g << "'samples.csv' skip 1 using 1:" << (off + 8 * j) << " with " << (with_fine && fine ? "points pt 7 ps 0.6" : "lines")
         << " title 'DOF " << j << (with_fine && fine ? " at samples" : "") << "'";
     }
     g << "\n";
@@ -149,9 +151,9 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
       g << "set output 'energy.'.ext\nset ylabel 'energy [J]'\nset title 'port energies' noenhanced\nplot ";
       for (int j = 0; j < N; ++j) {
         if (j) g << ", ";
-        g << "'samples.csv' skip 2 using 1:" << 6 + 8 * j << " with lines title sprintf('DOF %d: %s', " << j << ", int_fhv), "
-          << "'samples.csv' skip 2 using 1:" << 8 + 8 * j << " with lines dt 2 title 'DOF " << j << ": passivity observer', "
-          << "'samples.csv' skip 2 using 1:" << 7 + 8 * j << " with lines dt 3 title sprintf('DOF %d: %s', " << j << ", int_uv)";
+        g << "'samples.csv' skip 1 using 1:" << 6 + 8 * j << " with lines title sprintf('DOF %d: %s', " << j << ", int_fhv), "
+          << "'samples.csv' skip 1 using 1:" << 8 + 8 * j << " with lines dt 2 title 'DOF " << j << ": passivity observer', "
+          << "'samples.csv' skip 1 using 1:" << 7 + 8 * j << " with lines dt 3 title sprintf('DOF %d: %s', " << j << ", int_uv)";
       }
       g << "\n";
     }
