@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hapstab::cli {
@@ -50,8 +51,14 @@ void draw_figure(const Figure& fig, const std::filesystem::path& datadir, const 
                  const std::vector<std::string>& formats);
 
 /// Runs gnuplot on plots/<script>.gp with datadir/outdir/fmt set (for scripts whose data
-/// another step wrote, e.g. bench charts).
+/// another step wrote, e.g. bench charts); a non-empty `figname` is passed as the variable
+/// figname (scripts drawing a figure of the user's, whose file name the user picks).
 void run_gnuplot(const std::string& script, const std::filesystem::path& datadir, const std::filesystem::path& outdir,
-                 const std::string& format);
+                 const std::string& format, const std::string& figname = "");
+
+/// Polygon P (points in the Nyquist plane) clipped to the half-plane {nx (re + 1) + ny im <= 0}
+/// through -1 (Sutherland-Hodgman): the forbidden regions of paper 002's criteria in a window.
+std::vector<std::pair<double, double>> clip_to_halfplane(const std::vector<std::pair<double, double>>& P, double nx,
+                                                         double ny);
 
 }  // namespace hapstab::cli

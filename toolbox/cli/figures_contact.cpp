@@ -53,22 +53,6 @@ void fig4_5(const fs::path& dir) {
   o << "-3 -3\n-3 0\n0 0\n-3 -3\n";
 }
 
-// Sutherland-Hodgman: clips polygon P to {nx (re+1) + ny im <= 0}.
-std::vector<std::pair<double, double>> clip(const std::vector<std::pair<double, double>>& P, double nx, double ny) {
-  std::vector<std::pair<double, double>> out;
-  auto f = [&](const std::pair<double, double>& p) { return nx * (p.first + 1) + ny * p.second; };
-  for (size_t i = 0; i < P.size(); ++i) {
-    auto a = P[i], b = P[(i + 1) % P.size()];
-    double fa = f(a), fb = f(b);
-    if (fa <= 0) out.push_back(a);
-    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) {
-      double t = fa / (fa - fb);
-      out.push_back({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)});
-    }
-  }
-  return out;
-}
-
 void fig6(const fs::path& dir) {
   const double th = M_PI / 4;
   auto o = open_out(dir / "contact_fig6.dat");
@@ -95,7 +79,7 @@ void fig6(const fs::path& dir) {
   std::vector<std::pair<double, double>> box{{-5, -3}, {1.5, -3}, {1.5, 3}, {-5, 3}};
   for (int q = 0; q <= 7; ++q) {
     auto hp = q_halfplane(th, q);
-    box = clip(box, hp.nx, hp.ny);
+    box = clip_to_halfplane(box, hp.nx, hp.ny);
   }
   o << "# forbidden region (polygon)\n";
   for (auto& p : box) o << p.first << " " << p.second << "\n";
@@ -133,8 +117,8 @@ void nyquist(const fs::path& dir) {
     const double m = std::sin(th) / (1 - std::cos(th));
     std::vector<std::pair<double, double>> box{{-4.5, -3.2}, {3.5, -3.2}, {3.5, 2.2}, {-4.5, 2.2}};  // plot window
     // Re h + m Im h + 1 <= 0  and  Re h - m Im h + 1 <= 0
-    box = clip(box, 1, m);
-    box = clip(box, 1, -m);
+    box = clip_to_halfplane(box, 1, m);
+    box = clip_to_halfplane(box, 1, -m);
     o << "\n\n# wedge at theta = " << th << " (polygon), then the point\n";
     for (auto& p : box) o << p.first << " " << p.second << " " << th << "\n";
     if (!box.empty()) o << box[0].first << " " << box[0].second << " " << th << "\n";

@@ -17,7 +17,8 @@
 //   FILE:VAR       VAR a struct with fields num, den (vectors) or A, B, C, D (matrices);
 //                  a 1x2 cell {num, den}; or a 2-row matrix [num; den]
 //   FILE           variables named num and den, else A, B, C and D
-// A vector may also be a 1x1 cell holding the vector (MATLAB's tfdata without 'v').
+// A vector may also be a 1x1 cell holding the vector (MATLAB's tfdata without 'v'). A SISO
+// state space is turned into H(z) exactly by the commands that take a transfer function.
 #pragma once
 
 #include <filesystem>

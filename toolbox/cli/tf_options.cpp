@@ -4,6 +4,7 @@
 #include "cli/command.hpp"
 #include "cli/mat_file.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
@@ -92,12 +93,28 @@ TransferFunction parse_expression(const TfOptions& o, const rational& T) {
   }
 }
 
+// A SISO state space of at most this many states becomes H = C (zI - A)^-1 B + D exactly (the
+// exact characteristic polynomial of a matrix of 53-bit entries grows fast with its size).
+constexpr int max_ss2tf_states = 50;
+
 TransferFunction from_mat(const TfOptions& o, const rational& T) {
   const MatModel m = read_mat_model(o.mat, "--mat");
-  if (!m.tf)
-    throw InputError("--mat " + m.where + " holds a state space (A, B, C, D); this command takes a transfer function "
-                     "(num, den)");
-  return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den");
+  if (m.tf) return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den");
+  StateSpace<double> s = *m.ss;
+  s.T = T;
+  s.validate("--mat " + m.where);
+  if (s.inputs() != 1 || s.outputs() != 1 || s.states() > max_ss2tf_states)
+    throw InputError("--mat " + m.where + ": a state space with " + std::to_string(s.inputs()) + " input(s), " +
+                     std::to_string(s.outputs()) + " output(s) and " + std::to_string(s.states()) +
+                     " states; this command takes a SISO H (num, den, or A, B, C, D of at most " +
+                     std::to_string(max_ss2tf_states) + " states)");
+  auto exact = [](const Mat<double>& M) {
+    Mat<rational> Q(M.rows(), M.cols());
+    for (Eigen::Index i = 0; i < M.rows(); ++i)
+      for (Eigen::Index j = 0; j < M.cols(); ++j) Q(i, j) = exact_rational(M(i, j));
+    return Q;
+  };
+  return ss2tf(StateSpace<rational>{exact(s.A), exact(s.B), exact(s.C), exact(s.D), T})(0, 0);
 }
 
 }  // namespace
