@@ -111,18 +111,11 @@ std::vector<Sample> sample_curve(F f, Dist dist, double lo, double hi, double st
   return s;
 }
 
-std::ofstream open_out(const fs::path& p) {
-  std::ofstream o(p);
-  if (!o) throw InputError("--out: cannot write " + report::text(p.string()));
-  o << std::setprecision(12);
-  return o;
-}
-
 // The strings a script shows (H as the user wrote it: untrusted) as gnuplot literals, plain and
 // LaTeX-escaped for the cairolatex terminal.
 void write_labels(const fs::path& file, const std::vector<std::pair<std::string, std::string>>& text,
                   const std::vector<std::pair<std::string, double>>& numbers) {
-  auto o = open_out(file);
+  auto o = open_data_file(file);
   o << std::setprecision(17);
   for (const auto& [k, v] : text)
     o << k << " = " << report::gnuplot::quote(v) << "\n" << k << "_tex = " << report::gnuplot::quote(report::latex::escape(v)) << "\n";
@@ -200,7 +193,7 @@ void nyquist_data(const Opts& o, const TransferFunction& H, const fs::path& data
   s = sample_curve(f, [&](cplx a, cplx b) { return w.dist(a, b); }, pi * 1e-6, pi, 2e-3, extra);
   w = Window(s, res.b.infinite);
   const double re_lo = w.re_lo, re_hi = w.re_hi, ylim = w.ylim, xw = w.xw;
-  auto o_ = open_out(datadir / (o.name + ".dat"));
+  auto o_ = open_data_file(datadir / (o.name + ".dat"));
   o_ << "# " << report::comment(describe(o, H)) << "\n# index 0: G = T H z^-n/(1 - z) at z = e^{j w T}: theta = wT, w [rad/s], Re G, Im G"
      << " (points with |Im G| > " << 10 * ylim << " dropped)\n";
   for (const auto& p : s) {
@@ -237,7 +230,7 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
     return std::max(db / 0.25, deg / 1.0) * 1e-3;
   };
   std::vector<Sample> s = sample_curve(f, dist, pi * 1e-4, pi, 1e-3, critical_angles(r, T, res.b));
-  auto o_ = open_out(datadir / (o.name + ".dat"));
+  auto o_ = open_data_file(datadir / (o.name + ".dat"));
   o_ << "# " << report::comment(describe(o, H)) << "\n# index 0: w [rad/s], |H z^-n| [dB], phase [deg] (unwrapped), theta = wT\n";
   double prev = 0, unwrap = 0, db_lo = 1e300, db_hi = -1e300;
   for (size_t i = 0; i < s.size(); ++i) {
@@ -279,7 +272,7 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
   }
   const double px = 0.1 * (x1 - x0), py = 0.1 * (y1 - y0);
   x0 -= px, x1 += px, y0 -= py, y1 += py;
-  auto w = open_out(datadir / (o.name + "_wedge.dat"));
+  auto w = open_data_file(datadir / (o.name + "_wedge.dat"));
   w << "# " << report::comment(describe(o, H)) << "\n# index 0: H(e^{j theta}): Re, Im, theta\n";
   for (int i = 0; i <= 4000; ++i) {
     const cplx h = r(M_PI * i / 4000);
@@ -305,18 +298,6 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
                {{"xmin", x0}, {"xmax", x1}, {"ymin", y0}, {"ymax", y1}, {"theta_crit", crit}});
 }
 
-std::vector<std::string> parse_formats(const std::string& list) {
-  std::vector<std::string> f;
-  std::stringstream ss(list);
-  for (std::string w; std::getline(ss, w, ',');) {
-    if (w != "png" && w != "pdf" && w != "svg" && w != "tex")
-      throw InputError("--format: expected a list of png, pdf, svg, tex (got '" + report::text(w) + "')");
-    f.push_back(w);
-  }
-  if (f.empty()) throw InputError("--format: empty");
-  return f;
-}
-
 // plots/<script>.gp draws DIR/figures/<stem>.<format> from DIR/data/<name>*.
 void draw(const std::string& script, const std::string& name, const std::string& stem, const fs::path& dir,
           const std::vector<std::string>& formats, Result& res) {
@@ -335,7 +316,7 @@ int run(const Opts& o) {
   Opts opt = o;
   if (opt.name.empty()) opt.name = o.kind;
   report::file_component(opt.name, "--name");
-  const auto formats = parse_formats(o.format);
+  const auto formats = figure_formats(o.format);
   const TransferFunction H = parse_tf_options(o.tf, tf_rules);
   const fs::path dir = output_folder(o.out, "--out");
   fs::create_directories(dir / "data");

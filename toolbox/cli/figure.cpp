@@ -1,6 +1,8 @@
 #include "cli/figure.hpp"
 
 #include <cstdlib>
+#include <iomanip>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -62,6 +64,27 @@ void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::p
   report::ProcessOptions po;
   po.time_limit = 600;  // the slowest figure takes a few seconds; a hung gnuplot must not hang the job
   report::run_checked({"gnuplot", "-e", vars, gp.string()}, "gnuplot on " + gp.string() + " (" + format + ")", po);
+}
+
+std::vector<std::string> figure_formats(const std::string& text) {
+  static const std::set<std::string> known{"png", "pdf", "svg", "tex"};
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string f;
+  while (std::getline(ss, f, ','))
+    if (!f.empty()) {
+      if (!known.count(f)) throw InputError("--format: unknown format '" + report::text(f) + "' (expected png, pdf, svg, tex)");
+      out.push_back(f);
+    }
+  if (out.empty()) throw InputError("--format: no format given (expected e.g. png,pdf,svg,tex)");
+  return out;
+}
+
+std::ofstream open_data_file(const fs::path& p) {
+  std::ofstream o(p);
+  if (!o) throw InputError("cannot write " + report::text(p.string()));
+  o << std::setprecision(12);
+  return o;
 }
 
 std::vector<std::pair<double, double>> clip_to_halfplane(const std::vector<std::pair<double, double>>& P, double nx,

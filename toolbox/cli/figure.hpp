@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -44,6 +45,12 @@ std::filesystem::path self_exe();
 /// the Google Benchmark program bench_NAME built next to this executable and converts its JSON.
 /// Throws FigureSkipped when the program or the script is not there (an installed hapstab).
 void write_bench_chart_data(const std::string& bench, const std::filesystem::path& datadir);
+
+/// The formats of a --format list "png,pdf,svg,tex" (InputError naming --format otherwise).
+std::vector<std::string> figure_formats(const std::string& text);
+
+/// A data file of a figure, opened for writing with 12 significant digits (InputError otherwise).
+std::ofstream open_data_file(const std::filesystem::path& p);
 
 /// Writes the data of `fig` into datadir and draws it with gnuplot in each format
 /// (png, pdf, svg, tex) into outdir. Throws NumericalError when gnuplot fails.

@@ -28,13 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using contact::q_halfplane;
 
-std::ofstream open_out(const fs::path& p) {
-  std::ofstream o(p);
-  if (!o) throw InputError("cannot write " + p.string());
-  o << std::setprecision(12);
-  return o;
-}
-
 TransferFunction H_of(const std::string& s) {
   ParseOptions po;
   po.variable = 'z';
@@ -43,7 +36,7 @@ TransferFunction H_of(const std::string& s) {
 }
 
 void fig4_5(const fs::path& dir) {
-  auto o = open_out(dir / "contact_fig4_5.dat");
+  auto o = open_data_file(dir / "contact_fig4_5.dat");
   o << "# y  xi(y+rho)-rho for rho = 0.5, 1, 2   (index 0)\n";
   for (int i = 0; i <= 400; ++i) {
     const double y = -3 + 6.0 * i / 400;
@@ -55,7 +48,7 @@ void fig4_5(const fs::path& dir) {
 
 void fig6(const fs::path& dir) {
   const double th = M_PI / 4;
-  auto o = open_out(dir / "contact_fig6.dat");
+  auto o = open_data_file(dir / "contact_fig6.dat");
   // index 0..6: boundary line of q = 1..7 (through -1), points +-L along the line
   for (int q = 1; q <= 7; ++q) {
     auto hp = q_halfplane(th, q);
@@ -93,7 +86,7 @@ void nyquist(const fs::path& dir) {
   contact::ContactAnalysis a = contact::analyze_contact(H, 12);
   const double k = a.wedge.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
   const double kt = a.tsypkin.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.tsypkin.max_gain.value));
-  auto o = open_out(dir / "contact_nyquist.dat");
+  auto o = open_data_file(dir / "contact_nyquist.dat");
   o << "# H = " << kNyquistH << "; k*_wedge = " << k << "; k*_Tsypkin = " << kt << "\n# index 0: k*_wedge H(e^{j theta}): re im theta\n";
   auto eval = [&](double th) {
     std::complex<double> z = std::polar(1.0, th);
@@ -137,7 +130,7 @@ void limit_cycle_series(const fs::path& dir) {
   TransferFunction H = H_of("0.5/((z-0.5)*z)");
   contact::ContactAnalysis a = contact::analyze_contact(H, 12);
   const double kw = a.wedge.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
-  auto o = open_out(dir / "contact_limit_cycle.dat");
+  auto o = open_data_file(dir / "contact_limit_cycle.dat");
   o << "# H = 0.5/((z-0.5) z), r = 1; columns: k  theta_k at k = 0.9 k*_wedge (" << 0.9 * kw
     << "), at k = 2.6 (above the linear limit 2)\n";
   auto s1 = contact::simulate_fig2(H, 0.9 * kw, 1.0, 80), s2 = contact::simulate_fig2(H, 2.6, 1.0, 80);
@@ -146,7 +139,7 @@ void limit_cycle_series(const fs::path& dir) {
 
 void conservatism(const fs::path& dir) {
   auto fam = contact::default_family();
-  auto o = open_out(dir / "contact_conservatism.dat");
+  auto o = open_data_file(dir / "contact_conservatism.dat");
   o << "# device m = 0.2 kg, b = 0.5 Ns/m, T = 1 ms; wall K (1 + 0.002 D(z)) z^-d\n"
     << "# idx  name  k_tsypkin  k_wedge  k_linear  k_osc  wedge_contradicted  tsypkin_contradicted  applies"
        "  (k in N/m; 0 = not available; wedge/Tsypkin -1 = not evaluated)\n";
