@@ -78,7 +78,7 @@ StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rati
     if (!o.tf.sets.empty()) throw InputError("--set names parameters of --H; --mat holds numbers");
     sys = *m->ss;
     sys.T = parse_period(o.tf, tf_rules);
-    sys.validate("--mat " + m->where);
+    sys.validate(m->where);
   } else {
     const TransferFunction tfG = parse_tf_options(o.tf, tf_rules);
     G = tfG.H;

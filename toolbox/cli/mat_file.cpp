@@ -101,7 +101,9 @@ class MatReader {
     return v;
   }
 
-  std::string where_of(const std::string& var) const { return report::text(file_) + ":" + report::text(var); }
+  /// "--mat FILE:VAR", how messages name a variable
+  std::string where_of(const std::string& var) const { return where_ + ":" + report::text(var); }
+  const std::string& where() const { return where_; }
 
  private:
   // The classes and sizes a model can have: doubles up to state_space_dim x state_space_dim or
@@ -261,7 +263,7 @@ MatModel read_mat_model(const std::string& spec, const std::string& option) {
     model_of_variable(m, r.read(var1).get());
     return m;
   }
-  m.where = report::text(file);
+  m.where = r.where();
   if (r.has("num") && r.has("den")) {
     m.tf = {coefficients(dense(r.read("num").get(), r.where_of("num")), r.where_of("num")),
             coefficients(dense(r.read("den").get(), r.where_of("den")), r.where_of("den"))};

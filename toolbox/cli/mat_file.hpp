@@ -35,7 +35,7 @@ namespace hapstab::cli {
 /// A model from a .mat file: a transfer function (coefficients in descending powers, exact
 /// values of the doubles) or a state space (T = 0: the sample period comes from --T).
 struct MatModel {
-  std::string where;  ///< "FILE:VAR" for messages
+  std::string where;  ///< "--mat FILE:VAR" for messages
   std::optional<std::pair<std::vector<rational>, std::vector<rational>>> tf;  ///< num, den
   std::optional<StateSpace<double>> ss;
 };

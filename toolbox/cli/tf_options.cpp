@@ -102,9 +102,9 @@ TransferFunction from_mat(const TfOptions& o, const rational& T) {
   if (m.tf) return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den");
   StateSpace<double> s = *m.ss;
   s.T = T;
-  s.validate("--mat " + m.where);
+  s.validate(m.where);
   if (s.inputs() != 1 || s.outputs() != 1 || s.states() > max_ss2tf_states)
-    throw InputError("--mat " + m.where + ": a state space with " + std::to_string(s.inputs()) + " input(s), " +
+    throw InputError(m.where + ": a state space with " + std::to_string(s.inputs()) + " input(s), " +
                      std::to_string(s.outputs()) + " output(s) and " + std::to_string(s.states()) +
                      " states; this command takes a SISO H (num, den, or A, B, C, D of at most " +
                      std::to_string(max_ss2tf_states) + " states)");
