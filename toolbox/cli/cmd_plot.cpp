@@ -8,7 +8,7 @@
 //            When H(1) != 0, Im G ~ T H(1)/(wT) grows without bound as w -> 0: the window is cut at
 //            |Im| <= the extent of the curve for wT >= pi/20 (and 2 max|Re|), the figure says below
 //            which w the curve leaves it, and the JSON gives that w (clip_omega).
-//            --wedge adds NAME_wedge: H(e^{j theta}) with the forbidden wedges of the wedge criterion
+//            --wedge adds NAME_wedge: H(e^{j theta}) z^-n with the forbidden wedges of the wedge criterion
 //            (25) of paper 002 at theta = pi/6, pi/3, 5 pi/6 and its critical theta (contact/wedge.hpp).
 //   bode     |H(e^{jwT}) z^-n| in dB and its phase in degrees (unwrapped) against w on a log axis,
 //            from 10^-4 pi/T to the Nyquist frequency pi/T, with w* of b* marked.
@@ -252,32 +252,33 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
                 {"db_min", db_lo - 5}, {"db_max", db_hi + 5 + 0.05 * (db_hi - db_lo)}});
 }
 
-// H(e^{j theta}) with the forbidden wedges of (25): {Re h + m Im h <= -1 and Re h - m Im h <= -1},
-// m = cot(theta/2), clipped to the window.
+// H(e^{j theta}) z^-n with the forbidden wedges of (25): {Re h + m Im h <= -1 and Re h - m Im h
+// <= -1}, m = cot(theta/2), clipped to the window; k*_wedge of H z^-n (contact/wedge.hpp).
 void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadir) {
+  std::vector<rational> zn(static_cast<size_t>(o.tf.delay) + 1, rational(0));
+  zn.back() = 1;
+  const TransferFunction Hn = tf(H.num(), H.den() * Polynomial<rational>(std::move(zn)), H.T);  // H z^-n: the loop's H
   contact::ContactAnalysis a;
   try {
-    a = contact::analyze_contact(H, 20);
+    a = contact::analyze_contact(Hn, 20);
   } catch (const InputError& e) {
     throw InputError(std::string("--wedge: ") + e.what());
   }
-  const Response r(H, 0);
-  std::vector<cplx> pts;
+  const Response r(Hn, 0);
+  std::vector<Sample> curve;
   double x0 = -1.5, x1 = 0.5, y0 = -1, y1 = 1;
   for (int i = 0; i <= 4000; ++i) {
-    const cplx h = r(M_PI * i / 4000);
+    const double th = M_PI * i / 4000;
+    const cplx h = r(th);
     if (!std::isfinite(h.real()) || !std::isfinite(h.imag())) continue;
-    pts.push_back(h);
+    curve.push_back({th, h});
     x0 = std::min(x0, h.real()), x1 = std::max(x1, h.real()), y0 = std::min(y0, h.imag()), y1 = std::max(y1, h.imag());
   }
   const double px = 0.1 * (x1 - x0), py = 0.1 * (y1 - y0);
   x0 -= px, x1 += px, y0 -= py, y1 += py;
   auto w = open_data_file(datadir / (o.name + "_wedge.dat"));
-  w << "# " << report::comment(describe(o, H)) << "\n# index 0: H(e^{j theta}): Re, Im, theta\n";
-  for (int i = 0; i <= 4000; ++i) {
-    const cplx h = r(M_PI * i / 4000);
-    if (std::isfinite(h.real()) && std::isfinite(h.imag())) w << h.real() << " " << h.imag() << " " << M_PI * i / 4000 << "\n";
-  }
+  w << "# " << report::comment(describe(o, H)) << "\n# index 0: H(e^{j theta}) e^{-j n theta}: Re, Im, theta\n";
+  for (const auto& p : curve) w << p.g.real() << " " << p.g.imag() << " " << p.theta << "\n";
   const double crit = a.wedge.evaluated() ? a.wedge.theta_at_min : M_PI / 2;
   const double thetas[] = {M_PI / 6, M_PI / 3, crit, 5 * M_PI / 6};
   for (double th : thetas) {

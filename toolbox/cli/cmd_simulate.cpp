@@ -1,4 +1,4 @@
-// `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE]`:
+// `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE] [--format csv|mat|csv,mat]`:
 // runs a scene's sampled-data loop with the exact-ZOH simulator (sim/) and writes
 //   DIR/samples.csv   time series at the sample instants (row 1: names, row 2: units)
 //   DIR/fine.csv      the exact intersample grid (when [simulate] substeps > 1)
@@ -189,7 +189,7 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
 
 int run(const Opts& o) {
   if (o.format != "csv" && o.format != "mat" && o.format != "csv,mat" && o.format != "mat,csv")
-    throw InputError("--format: expected csv, mat or csv,mat (got '" + o.format + "')");
+    throw InputError("--format: expected csv, mat or csv,mat (got '" + report::text(o.format) + "')");
   const bool csv = o.format.find("csv") != std::string::npos, mat = o.format.find("mat") != std::string::npos;
   auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
   if (!sc.simulate.present)
