@@ -58,3 +58,9 @@ if(NOT TARGET hapstab_dep_flint)
       INTERFACE_COMPILE_DEFINITIONS "HAPSTAB_FLINT3=0")
   endif()
 endif()
+
+# matio (MATLAB .mat files): a dependency of the command only (toolbox/cli/mat_file.cpp), not of
+# the library, so find_package(hapstab) does not look for it.
+if(NOT CMAKE_FIND_PACKAGE_NAME STREQUAL "hapstab")
+  hapstab_find_c_library(MATIO matio matio.h)
+endif()

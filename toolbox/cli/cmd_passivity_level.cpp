@@ -1,4 +1,5 @@
-// `hapstab passivity-level (--H EXPR --T T [--set NAME=VALUE]... | --ss FILE) [--kind osp|isp]
+// `hapstab passivity-level (--H EXPR | --num C --den C | --mat FILE[:VAR]) --T T [--set NAME=VALUE]... | --ss FILE)
+//   [--kind osp|isp]
 //   [--backend auto|dsdp|csdp|ipm] [--lemma 1|2] [--grid N] [--digits D] [--json]`
 // OSP level delta or ISP level phi (scalar, Delta = delta I, Phi = phi I) of a discrete-time
 // system, paper 000 Definition 2, by the Lemma 1 (or Lemma 2) LMI with an exact certificate
@@ -8,6 +9,8 @@
 //   {"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"}
 // Entries may be numbers or strings with exact decimals/fractions ("1/3"); they are rounded
 // to double for the SDP (the certificate then holds for these doubles' exact values).
+// --mat FILE:VAR takes num/den or A, B, C, D from a MATLAB .mat file (cli/mat_file.hpp; the
+// doubles at their exact values), with the sample period from --T.
 // SISO systems also get the certified frequency-domain level (passivity_level_certified: an
 // enclosure of the level itself, exact when the minimiser is rational), which is then the main
 // result; MIMO systems report the LMI level (numeric, with an exactly certified lower bound).
@@ -29,6 +32,7 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/mat_file.hpp"
 #include "cli/tf_options.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -69,6 +73,12 @@ StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rati
   if (!o.ss.empty()) {
     if (!o.tf.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
     sys = read_ss(o.ss);
+  } else if (std::optional<MatModel> m = o.tf.mat.empty() ? std::nullopt : std::optional(read_mat_model(o.tf.mat, "--mat"));
+             m && m->ss) {
+    if (!o.tf.sets.empty()) throw InputError("--set names parameters of --H; --mat holds numbers");
+    sys = *m->ss;
+    sys.T = parse_period(o.tf, tf_rules);
+    sys.validate(m->where);
   } else {
     const TransferFunction tfG = parse_tf_options(o.tf, tf_rules);
     G = tfG.H;
@@ -80,7 +90,7 @@ StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rati
     for (Eigen::Index i = 0; i < ev.size(); ++i)
       if (std::abs(ev(i)) > 1 - 1e-9) {
         std::ostringstream os;
-        os << (o.ss.empty() ? "--H" : "--ss") << ": pole at z = " << ev(i).real() << (ev(i).imag() >= 0 ? " + " : " - ")
+        os << (!o.ss.empty() ? "--ss" : !o.tf.mat.empty() ? "--mat" : "--H") << ": pole at z = " << ev(i).real() << (ev(i).imag() >= 0 ? " + " : " - ")
            << std::abs(ev(i).imag()) << "j, |z| = " << std::abs(ev(i))
            << (std::abs(ev(i)) > 1 + 1e-9 ? " > 1: the system is unstable" : ": on the unit circle (within 1e-9)")
            << "; passivity levels (Lemmas 1-2) need a Schur-stable system";
@@ -230,7 +240,8 @@ int run(const Opts& o) {
   if (o.lemma != 1 && o.lemma != 2) throw InputError("--lemma: expected 1 or 2");
   if (o.grid < 16 || o.grid > 10000000) throw InputError("--grid: expected 16..10^7 points");
   if (o.digits < 10 || o.digits > 100) throw InputError("--digits: expected 10..100");
-  if (o.tf.H.empty() == o.ss.empty()) throw InputError("give exactly one of --H EXPR (with --T) or --ss FILE");
+  if (has_tf(o.tf) == !o.ss.empty())
+    throw InputError("give exactly one of --H EXPR, --num/--den or --mat FILE:VAR (with --T), or --ss FILE");
   std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
   const StateSpace<double> sys = read_model(o, G);
   const Levels v = compute_levels(o, backend, sys, G);

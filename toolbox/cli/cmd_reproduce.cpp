@@ -22,16 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<std::string> parse_formats(const std::string& text) {
-  static const std::set<std::string> known{"png", "pdf", "svg", "tex"};
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string f;
-  while (std::getline(ss, f, ','))
-    if (!f.empty()) {
-      if (!known.count(f)) throw InputError("--format: unknown format '" + f + "' (expected png, pdf, svg, tex)");
-      out.push_back(f);
-    }
-  if (out.empty()) throw InputError("--format: no format given (expected e.g. png,pdf,svg,tex)");
+  std::vector<std::string> out = figure_formats(text);
   if (out.front() != "png" && std::find(out.begin(), out.end(), "png") == out.end())
     out.insert(out.begin(), "png");  // the HTML report shows PNGs
   return out;

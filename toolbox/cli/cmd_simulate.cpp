@@ -1,8 +1,9 @@
-// `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE]`:
+// `hapstab simulate --scene FILE --out DIR [--json] [--quiet] [--force] [--set NAME=VALUE] [--format csv|mat|csv,mat]`:
 // runs a scene's sampled-data loop with the exact-ZOH simulator (sim/) and writes
 //   DIR/samples.csv   time series at the sample instants (one header row: t [s], x_0 [m], v_0 [m/s], ...)
 //   DIR/fine.csv      the exact intersample grid (when [simulate] substeps > 1)
 //   DIR/plot.gp       the gnuplot script that draws them (gnuplot plot.gp, in DIR)
+//   DIR/samples.mat   with --format mat: the same series as MATLAB matrices (write_mat_samples)
 //   DIR/summary.json  {diverged, max_velocity, energy_generated, limit_cycle: {period, amplitude} | null, ...}
 // It also registers the simulator's figures (experiments of paper 001 and 002) with
 // `hapstab figure` / `hapstab reproduce`.
@@ -18,6 +19,7 @@
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "cli/mat_file.hpp"
 #include "hapstab/contact/limit_cycle.hpp"
 #include "hapstab/lti/discretize.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -36,6 +38,7 @@ namespace fs = std::filesystem;
 struct Opts {
   std::string scene, out;
   bool json = false, quiet = false, force = false;
+  std::string format = "csv";
   double max_mb = 200;
   std::vector<std::string> sets;
 };
@@ -113,6 +116,32 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
   }
 }
 
+// --format mat: DIR/samples.mat (level 5, zlib; MATLAB's load and scipy.io.loadmat read it) with
+// t (rows x 1, s) and per quantity a rows x N matrix, column j = DOF j: x [m], v [m/s], u [N],
+// fh [N], E_port, E_act, E_po, storage [J] (NaN where undefined); T (s); and when the scene asks
+// for the intersample grid, fine_t, fine_x, fine_v.
+void write_mat_samples(const fs::path& file, const sim::SimResult& r, const rational& T) {
+  const auto& S = r.samples;
+  const size_t N = size_t(S.N), rows = S.rows();
+  auto per_dof = [&](const char* name, const std::vector<double>& row_major, size_t n_rows) {
+    MatMatrix m{name, n_rows, N, std::vector<double>(n_rows * N)};
+    for (size_t i = 0; i < n_rows; ++i)
+      for (size_t j = 0; j < N; ++j) m.data[j * n_rows + i] = row_major[i * N + j];
+    return m;
+  };
+  std::vector<MatMatrix> vars{{"T", 1, 1, {to_real<double>(T)}}, {"t", rows, 1, S.t}};
+  const std::pair<const char*, const std::vector<double>*> series[] = {
+      {"x", &S.x},           {"v", &S.v},         {"u", &S.u},       {"fh", &S.fh},
+      {"E_port", &S.e_port}, {"E_act", &S.e_act}, {"E_po", &S.e_po}, {"storage", &S.storage}};
+  for (const auto& [name, data] : series) vars.push_back(per_dof(name, *data, rows));
+  if (r.fine.rows() > 0) {
+    vars.push_back({"fine_t", r.fine.rows(), 1, r.fine.t});
+    vars.push_back(per_dof("fine_x", r.fine.x, r.fine.rows()));
+    vars.push_back(per_dof("fine_v", r.fine.v, r.fine.rows()));
+  }
+  write_mat(file, vars);
+}
+
 // Every string from the scene reaches the script as a gnuplot string literal (report::gnuplot::quote),
 // and for the cairolatex terminal, whose text LaTeX typesets, LaTeX-escaped first.
 void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine) {
@@ -161,6 +190,9 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
 }
 
 int run(const Opts& o) {
+  if (o.format != "csv" && o.format != "mat" && o.format != "csv,mat" && o.format != "mat,csv")
+    throw InputError("--format: expected csv, mat or csv,mat (got '" + report::text(o.format) + "')");
+  const bool csv = o.format.find("csv") != std::string::npos, mat = o.format.find("mat") != std::string::npos;
   auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
   if (!sc.simulate.present)
     throw InputError(o.scene + ": simulate: missing; add [simulate] with duration = \"...\" (seconds) or steps = N");
@@ -211,8 +243,9 @@ int run(const Opts& o) {
     throw InputError(o.scene + ": " + e.what());
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_csv(dir, r);
-  write_gnuplot(dir, sc, N, r.fine.rows() > 0);
+  if (csv) write_csv(dir, r);
+  if (csv) write_gnuplot(dir, sc, N, r.fine.rows() > 0);
+  if (mat) write_mat_samples(dir / "samples.mat", r, sc.T);
   auto j = summary_json(r.summary, sc);
   j["seconds"] = secs;
   {
@@ -233,8 +266,8 @@ int run(const Opts& o) {
                 << " m" << (s.limit_cycle->period_samples > 0 ? " (sampled sequence exactly periodic)" : "") << "\n";
     else
       std::cout << "  limit cycle       none\n";
-    std::cout << "  files             " << (dir / "samples.csv").string() << (r.fine.rows() > 0 ? ", fine.csv" : "")
-              << ", plot.gp, summary.json\n";
+    std::cout << "  files             " << (csv ? (dir / "samples.csv").string() + (r.fine.rows() > 0 ? ", fine.csv" : "") + ", plot.gp, " : "")
+              << (mat ? (dir / "samples.mat").string() + ", " : "") << "summary.json\n";
   }
   return exit_ok;
 }
@@ -361,6 +394,7 @@ const Register simulate_cmd({"simulate",
                                app.add_flag("--force", o->force, "Write even when the output exceeds --max-output");
                                app.add_option("--max-output", o->max_mb, "Output size limit in MB (default 200)");
                                app.add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
+                               app.add_option("--format", o->format, "csv (default), mat (MATLAB samples.mat) or csv,mat");
                                return [o]() { return run(*o); };
                              }});
 

@@ -1,6 +1,8 @@
 #include "cli/figure.hpp"
 
 #include <cstdlib>
+#include <iomanip>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -42,7 +44,8 @@ fs::path self_exe() {
   return p;
 }
 
-void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& figdir, const std::string& format) {
+void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& figdir, const std::string& format,
+                 const std::string& figname) {
   const fs::path dir = plots_dir();
   const fs::path outdir = format == "tex" ? figdir / "tex" : figdir;  // cairolatex also writes NAME.pdf
   report::file_component(script, "figure name");
@@ -56,10 +59,48 @@ void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::p
   fs::create_directories(outdir);
   using report::gnuplot::quote;
   const std::string vars = "plotdir=" + quote(dir.string()) + "; datadir=" + quote(fs::absolute(datadir).string()) +
-                           "; outdir=" + quote(fs::absolute(outdir).string()) + "; fmt=" + quote(format);
+                           "; outdir=" + quote(fs::absolute(outdir).string()) + "; fmt=" + quote(format) +
+                           (figname.empty() ? "" : "; figname=" + quote(report::file_component(figname, "figure name")));
   report::ProcessOptions po;
   po.time_limit = 600;  // the slowest figure takes a few seconds; a hung gnuplot must not hang the job
   report::run_checked({"gnuplot", "-e", vars, gp.string()}, "gnuplot on " + gp.string() + " (" + format + ")", po);
+}
+
+std::vector<std::string> figure_formats(const std::string& text) {
+  static const std::set<std::string> known{"png", "pdf", "svg", "tex"};
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string f;
+  while (std::getline(ss, f, ','))
+    if (!f.empty()) {
+      if (!known.count(f)) throw InputError("--format: unknown format '" + report::text(f) + "' (expected png, pdf, svg, tex)");
+      out.push_back(f);
+    }
+  if (out.empty()) throw InputError("--format: no format given (expected e.g. png,pdf,svg,tex)");
+  return out;
+}
+
+std::ofstream open_data_file(const fs::path& p) {
+  std::ofstream o(p);
+  if (!o) throw InputError("cannot write " + report::text(p.string()));
+  o << std::setprecision(12);
+  return o;
+}
+
+std::vector<std::pair<double, double>> clip_to_halfplane(const std::vector<std::pair<double, double>>& P, double nx,
+                                                         double ny) {
+  std::vector<std::pair<double, double>> out;
+  auto f = [&](const std::pair<double, double>& p) { return nx * (p.first + 1) + ny * p.second; };
+  for (size_t i = 0; i < P.size(); ++i) {
+    auto a = P[i], b = P[(i + 1) % P.size()];
+    double fa = f(a), fb = f(b);
+    if (fa <= 0) out.push_back(a);
+    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) {
+      double t = fa / (fa - fb);
+      out.push_back({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)});
+    }
+  }
+  return out;
 }
 
 void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {

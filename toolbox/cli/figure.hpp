@@ -6,8 +6,10 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hapstab::cli {
@@ -44,14 +46,26 @@ std::filesystem::path self_exe();
 /// Throws FigureSkipped when the program or the script is not there (an installed hapstab).
 void write_bench_chart_data(const std::string& bench, const std::filesystem::path& datadir);
 
+/// The formats of a --format list "png,pdf,svg,tex" (InputError naming --format otherwise).
+std::vector<std::string> figure_formats(const std::string& text);
+
+/// A data file of a figure, opened for writing with 12 significant digits (InputError otherwise).
+std::ofstream open_data_file(const std::filesystem::path& p);
+
 /// Writes the data of `fig` into datadir and draws it with gnuplot in each format
 /// (png, pdf, svg, tex) into outdir. Throws NumericalError when gnuplot fails.
 void draw_figure(const Figure& fig, const std::filesystem::path& datadir, const std::filesystem::path& outdir,
                  const std::vector<std::string>& formats);
 
 /// Runs gnuplot on plots/<script>.gp with datadir/outdir/fmt set (for scripts whose data
-/// another step wrote, e.g. bench charts).
+/// another step wrote, e.g. bench charts); a non-empty `figname` is passed as the variable
+/// figname (scripts drawing a figure of the user's, whose file name the user picks).
 void run_gnuplot(const std::string& script, const std::filesystem::path& datadir, const std::filesystem::path& outdir,
-                 const std::string& format);
+                 const std::string& format, const std::string& figname = "");
+
+/// Polygon P (points in the Nyquist plane) clipped to the half-plane {nx (re + 1) + ny im <= 0}
+/// through -1 (Sutherland-Hodgman): the forbidden regions of paper 002's criteria in a window.
+std::vector<std::pair<double, double>> clip_to_halfplane(const std::vector<std::pair<double, double>>& P, double nx,
+                                                         double ny);
 
 }  // namespace hapstab::cli

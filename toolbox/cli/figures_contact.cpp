@@ -28,13 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using contact::q_halfplane;
 
-std::ofstream open_out(const fs::path& p) {
-  std::ofstream o(p);
-  if (!o) throw InputError("cannot write " + p.string());
-  o << std::setprecision(12);
-  return o;
-}
-
 TransferFunction H_of(const std::string& s) {
   ParseOptions po;
   po.variable = 'z';
@@ -43,7 +36,7 @@ TransferFunction H_of(const std::string& s) {
 }
 
 void fig4_5(const fs::path& dir) {
-  auto o = open_out(dir / "contact_fig4_5.dat");
+  auto o = open_data_file(dir / "contact_fig4_5.dat");
   o << "# y  xi(y+rho)-rho for rho = 0.5, 1, 2   (index 0)\n";
   for (int i = 0; i <= 400; ++i) {
     const double y = -3 + 6.0 * i / 400;
@@ -53,25 +46,9 @@ void fig4_5(const fs::path& dir) {
   o << "-3 -3\n-3 0\n0 0\n-3 -3\n";
 }
 
-// Sutherland-Hodgman: clips polygon P to {nx (re+1) + ny im <= 0}.
-std::vector<std::pair<double, double>> clip(const std::vector<std::pair<double, double>>& P, double nx, double ny) {
-  std::vector<std::pair<double, double>> out;
-  auto f = [&](const std::pair<double, double>& p) { return nx * (p.first + 1) + ny * p.second; };
-  for (size_t i = 0; i < P.size(); ++i) {
-    auto a = P[i], b = P[(i + 1) % P.size()];
-    double fa = f(a), fb = f(b);
-    if (fa <= 0) out.push_back(a);
-    if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) {
-      double t = fa / (fa - fb);
-      out.push_back({a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)});
-    }
-  }
-  return out;
-}
-
 void fig6(const fs::path& dir) {
   const double th = M_PI / 4;
-  auto o = open_out(dir / "contact_fig6.dat");
+  auto o = open_data_file(dir / "contact_fig6.dat");
   // index 0..6: boundary line of q = 1..7 (through -1), points +-L along the line
   for (int q = 1; q <= 7; ++q) {
     auto hp = q_halfplane(th, q);
@@ -95,7 +72,7 @@ void fig6(const fs::path& dir) {
   std::vector<std::pair<double, double>> box{{-5, -3}, {1.5, -3}, {1.5, 3}, {-5, 3}};
   for (int q = 0; q <= 7; ++q) {
     auto hp = q_halfplane(th, q);
-    box = clip(box, hp.nx, hp.ny);
+    box = clip_to_halfplane(box, hp.nx, hp.ny);
   }
   o << "# forbidden region (polygon)\n";
   for (auto& p : box) o << p.first << " " << p.second << "\n";
@@ -109,7 +86,7 @@ void nyquist(const fs::path& dir) {
   contact::ContactAnalysis a = contact::analyze_contact(H, 12);
   const double k = a.wedge.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
   const double kt = a.tsypkin.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.tsypkin.max_gain.value));
-  auto o = open_out(dir / "contact_nyquist.dat");
+  auto o = open_data_file(dir / "contact_nyquist.dat");
   o << "# H = " << kNyquistH << "; k*_wedge = " << k << "; k*_Tsypkin = " << kt << "\n# index 0: k*_wedge H(e^{j theta}): re im theta\n";
   auto eval = [&](double th) {
     std::complex<double> z = std::polar(1.0, th);
@@ -133,8 +110,8 @@ void nyquist(const fs::path& dir) {
     const double m = std::sin(th) / (1 - std::cos(th));
     std::vector<std::pair<double, double>> box{{-4.5, -3.2}, {3.5, -3.2}, {3.5, 2.2}, {-4.5, 2.2}};  // plot window
     // Re h + m Im h + 1 <= 0  and  Re h - m Im h + 1 <= 0
-    box = clip(box, 1, m);
-    box = clip(box, 1, -m);
+    box = clip_to_halfplane(box, 1, m);
+    box = clip_to_halfplane(box, 1, -m);
     o << "\n\n# wedge at theta = " << th << " (polygon), then the point\n";
     for (auto& p : box) o << p.first << " " << p.second << " " << th << "\n";
     if (!box.empty()) o << box[0].first << " " << box[0].second << " " << th << "\n";
@@ -153,7 +130,7 @@ void limit_cycle_series(const fs::path& dir) {
   TransferFunction H = H_of("0.5/((z-0.5)*z)");
   contact::ContactAnalysis a = contact::analyze_contact(H, 12);
   const double kw = a.wedge.gain_infinite ? 1.0 : static_cast<double>(mpfloat<30>(a.wedge.max_gain.value));
-  auto o = open_out(dir / "contact_limit_cycle.dat");
+  auto o = open_data_file(dir / "contact_limit_cycle.dat");
   o << "# H = 0.5/((z-0.5) z), r = 1; columns: k  theta_k at k = 0.9 k*_wedge (" << 0.9 * kw
     << "), at k = 2.6 (above the linear limit 2)\n";
   auto s1 = contact::simulate_fig2(H, 0.9 * kw, 1.0, 80), s2 = contact::simulate_fig2(H, 2.6, 1.0, 80);
@@ -162,7 +139,7 @@ void limit_cycle_series(const fs::path& dir) {
 
 void conservatism(const fs::path& dir) {
   auto fam = contact::default_family();
-  auto o = open_out(dir / "contact_conservatism.dat");
+  auto o = open_data_file(dir / "contact_conservatism.dat");
   o << "# device m = 0.2 kg, b = 0.5 Ns/m, T = 1 ms; wall K (1 + 0.002 D(z)) z^-d\n"
     << "# idx  name  k_tsypkin  k_wedge  k_linear  k_osc  wedge_contradicted  tsypkin_contradicted  applies"
        "  (k in N/m; 0 = not available; wedge/Tsypkin -1 = not evaluated)\n";

@@ -2,43 +2,143 @@
 #include "cli/tf_options.hpp"
 
 #include "cli/command.hpp"
+#include "cli/mat_file.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::cli {
 
 void add_tf_options(CLI::App& app, TfOptions& o, const TfRules& rules, const std::string& h_help) {
   app.add_option("--H", o.H, h_help);
+  app.add_option("--num", o.num, "numerator coefficients, descending powers of z: \"1 -0.5\" or \"[1, -1/2]\" (instead of --H)");
+  app.add_option("--den", o.den, "denominator coefficients, descending powers of z (with --num)");
+  app.add_option("--mat", o.mat, "MATLAB .mat file (save -v7): FILE (variables num, den), FILE:VAR or FILE:NUM,DEN (instead of --H)");
   app.add_option("--T", o.T,
                  rules.period_required ? "sample period T > 0 (exact: 0.001 or 1/1000)"
                                        : "sample period T > 0 (exact; only if the expression names T)");
-  app.add_option("--set", o.sets, "parameter NAME=VALUE (repeatable)");
+  app.add_option("--set", o.sets, "parameter NAME=VALUE of --H (repeatable)");
   if (rules.with_delay) app.add_option("--delay", o.delay, "integer delay n >= 0: z^-n")->capture_default_str();
 }
 
-TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules) {
-  if (o.H.empty()) throw InputError("--H is required (the virtual environment H(z))");
+bool has_tf(const TfOptions& o) { return !o.H.empty() || !o.num.empty() || !o.den.empty() || !o.mat.empty(); }
+
+rational parse_period(const TfOptions& o, const TfRules& rules) {
+  if (o.T.empty()) {
+    if (rules.period_required) throw InputError("--T is required (the sample period)");
+    return 1;
+  }
+  const rational T = option_rational(o.T, "--T");
+  if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
+  return T;
+}
+
+std::vector<rational> parse_coefficients(const std::string& text, const std::string& option) {
+  if (text.size() > limits::expression_chars)
+    throw InputError(option + ": " + std::to_string(text.size()) + " characters, more than the limit of " +
+                     std::to_string(limits::expression_chars));
+  std::string s = text;
+  const auto first = s.find_first_not_of(" \t"), last = s.find_last_not_of(" \t");
+  if (first != std::string::npos && s[first] == '[') {  // MATLAB's brackets, both or none
+    if (s[last] != ']') throw InputError(option + ": '[' without a closing ']'");
+    s = s.substr(first + 1, last - first - 1);
+  }
+  std::vector<rational> c;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    if (s[i] == ' ' || s[i] == ',' || s[i] == '\t') {
+      ++i;
+      continue;
+    }
+    const std::size_t j = s.find_first_of(" ,\t", i);
+    const std::string word = s.substr(i, j == std::string::npos ? std::string::npos : j - i);
+    if (c.size() > static_cast<std::size_t>(limits::degree))
+      throw InputError(option + ": more than " + std::to_string(limits::degree + 1) + " coefficients (degree limit " +
+                       std::to_string(limits::degree) + ")");
+    c.push_back(parse_rational(word, option + ": coefficient " + std::to_string(c.size() + 1)));
+    i = j == std::string::npos ? s.size() : j;
+  }
+  if (c.empty()) throw InputError(option + ": no coefficients (expected e.g. \"1 -0.5\", descending powers of z)");
+  return c;
+}
+
+TransferFunction tf_from_coefficients(const std::vector<rational>& num, const std::vector<rational>& den,
+                                      const rational& T, const std::string& num_name, const std::string& den_name) {
+  const auto too_long = [](const std::vector<rational>& v) { return v.size() > static_cast<std::size_t>(limits::degree) + 1; };
+  if (too_long(num) || too_long(den))
+    throw InputError((too_long(num) ? num_name : den_name) + ": more than " + std::to_string(limits::degree + 1) +
+                     " coefficients (degree limit " + std::to_string(limits::degree) + ")");
+  if (den.empty() || num.empty()) throw InputError((num.empty() ? num_name : den_name) + ": no coefficients");
+  if (den.front() == 0)
+    throw InputError(den_name + ": the leading coefficient (of z^" + std::to_string(den.size() - 1) +
+                     ") is 0; drop it (descending powers of z)");
+  // descending -> ascending; the numerator's leading zeros (tfdata pads it) vanish in trim()
+  return tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())),
+            Polynomial<rational>(std::vector<rational>(den.rbegin(), den.rend())), T);
+}
+
+namespace {
+
+TransferFunction parse_expression(const TfOptions& o, const rational& T) {
   ParseOptions po;
   po.variable = 'z';
-  po.T = 1;
-  if (!o.T.empty()) {
-    po.T = option_rational(o.T, "--T");
-    if (po.T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
-  } else if (rules.period_required) {
-    throw InputError("--T is required (the sample period)");
-  }
+  po.T = T;
   po.parameters = parse_sets(o.sets);
-  if (rules.with_delay && o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
-  TransferFunction H;
   try {
-    H = parse_tf(o.H, po);
+    return parse_tf(o.H, po);
   } catch (const InputError& e) {
     throw InputError(std::string("--H: ") + e.what());
   }
-  if (!H.is_discrete()) throw InputError("--H: expected a transfer function in z");
-  if (H.den().is_zero()) throw InputError("--H has a zero denominator");
+}
+
+// A SISO state space of at most this many states becomes H = C (zI - A)^-1 B + D exactly (the
+// exact characteristic polynomial of a matrix of 53-bit entries grows fast with its size).
+constexpr int max_ss2tf_states = 50;
+
+TransferFunction from_mat(const TfOptions& o, const rational& T) {
+  const MatModel m = read_mat_model(o.mat, "--mat");
+  if (m.tf) return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den");
+  StateSpace<double> s = *m.ss;
+  s.T = T;
+  s.validate(m.where);
+  if (s.inputs() != 1 || s.outputs() != 1 || s.states() > max_ss2tf_states)
+    throw InputError(m.where + ": a state space with " + std::to_string(s.inputs()) + " input(s), " +
+                     std::to_string(s.outputs()) + " output(s) and " + std::to_string(s.states()) +
+                     " states; this command takes a SISO H (num, den, or A, B, C, D of at most " +
+                     std::to_string(max_ss2tf_states) + " states)");
+  auto exact = [](const Mat<double>& M) {
+    Mat<rational> Q(M.rows(), M.cols());
+    for (Eigen::Index i = 0; i < M.rows(); ++i)
+      for (Eigen::Index j = 0; j < M.cols(); ++j) Q(i, j) = exact_rational(M(i, j));
+    return Q;
+  };
+  return ss2tf(StateSpace<rational>{exact(s.A), exact(s.B), exact(s.C), exact(s.D), T})(0, 0);
+}
+
+}  // namespace
+
+TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules) {
+  const bool expr = !o.H.empty(), coeffs = !o.num.empty() || !o.den.empty(), mat = !o.mat.empty();
+  if (int(expr) + int(coeffs) + int(mat) != 1)
+    throw InputError(int(expr) + int(coeffs) + int(mat) == 0
+                         ? "--H is required (the virtual environment H(z)), or --num/--den, or --mat FILE:VAR"
+                         : "give only one of --H, --num/--den and --mat");
+  if (coeffs && (o.num.empty() || o.den.empty())) throw InputError(o.num.empty() ? "--den needs --num" : "--num needs --den");
+  if (!expr && !o.sets.empty()) throw InputError("--set names parameters of --H; --num/--den and --mat hold numbers");
+  const rational T = parse_period(o, rules);
+  if (rules.with_delay && o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
+  const TransferFunction H =
+      expr ? parse_expression(o, T)
+           : mat ? from_mat(o, T)
+                 : tf_from_coefficients(parse_coefficients(o.num, "--num"), parse_coefficients(o.den, "--den"), T, "--num",
+                                        "--den");
+  const std::string name = expr ? "--H" : mat ? "--mat" : "--num/--den";
+  if (!H.is_discrete()) throw InputError(name + ": expected a transfer function in z");
+  if (H.den().is_zero()) throw InputError(name + " has a zero denominator");
   if (rules.causal && !H.is_proper())
-    throw InputError("--H: H(z) = " + H.to_string() + " is not causal (deg num > deg den)");
+    throw InputError(name + ": H(z) = " + H.to_string() + " is not causal (deg num > deg den)");
   return H;
 }
 

@@ -1,7 +1,10 @@
 // cli/tf_options.hpp -- the options of every command that takes a virtual environment H(z):
-// --H EXPR, --T T, --set NAME=VALUE (repeatable) and, where the command has it, --delay n.
+// --H EXPR, or --num "c0 c1 ..." --den "d0 d1 ..." (descending powers of z, the python-control
+// and MATLAB convention), or --mat FILE:VAR (a MATLAB .mat file, cli/mat_file.hpp); with
+// --T T, --set NAME=VALUE (repeatable, for --H) and, where the command has it, --delay n.
 // One parser for all of them, so each error names the option in the same way:
-//   "--H: column 7: expected ')' ...", "--T: the sample period must be > 0, got '0'".
+//   "--H: column 7: expected ')' ...", "--T: the sample period must be > 0, got '0'",
+//   "--den: the leading coefficient (of z^2) is 0".
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -14,6 +17,8 @@ namespace hapstab::cli {
 
 struct TfOptions {
   std::string H, T;
+  std::string num, den;  ///< --num/--den: coefficients in descending powers of z
+  std::string mat;       ///< --mat FILE[:VAR[,VAR]]
   std::vector<std::string> sets;
   int delay = 0;  ///< --delay n (z^-n), only where add_tf_options was asked for it
 };
@@ -24,10 +29,27 @@ struct TfRules {
   bool with_delay = false;      ///< the command has --delay
 };
 
-/// Adds --H, --T, --set (and --delay) to `app`; `h_help` describes H for this command.
+/// Adds --H, --num, --den, --mat, --T, --set (and --delay) to `app`; `h_help` describes H for this command.
 void add_tf_options(CLI::App& app, TfOptions& o, const TfRules& rules, const std::string& h_help);
+
+/// True when the options name H in some way (--H, --num/--den or --mat).
+bool has_tf(const TfOptions& o);
 
 /// The exact discrete transfer function of the options, or InputError naming the option.
 TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules);
+
+/// The exact sample period of --T (T = 1 when absent and not required); InputError naming --T.
+rational parse_period(const TfOptions& o, const TfRules& rules);
+
+/// A coefficient list "c0 c1 ...", "[1, -0.5]", "1,1/3 2e-3": exact rationals separated by
+/// spaces and/or commas, optionally inside MATLAB's [ ]. InputError naming `option` when it is
+/// empty, holds a non-number, or has more than limits::degree + 1 entries.
+std::vector<rational> parse_coefficients(const std::string& text, const std::string& option);
+
+/// H(z) = num(z)/den(z) from coefficients in descending powers of z (leading zeros of the
+/// numerator are dropped, as MATLAB's tfdata pads it); the leading denominator coefficient must
+/// not be 0. `num_name`/`den_name` name the inputs in errors ("--num", "plant.mat: den").
+TransferFunction tf_from_coefficients(const std::vector<rational>& num, const std::vector<rational>& den,
+                                      const rational& T, const std::string& num_name, const std::string& den_name);
 
 }  // namespace hapstab::cli
