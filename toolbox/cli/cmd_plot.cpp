@@ -136,7 +136,7 @@ struct Result {
 };
 
 double omega_star(const passivity::Bound& b) {
-  return b.omega ? to_real<double>((b.omega_lo + b.omega_hi) / 2) : std::nan("");
+  return b.omega_enclosure ? to_real<double>((b.omega_enclosure->lo + b.omega_enclosure->hi) / 2) : std::nan("");
 }
 
 // The angles where the curves change fastest: each pole of H near the unit circle (|p| > 0.5),
@@ -156,7 +156,7 @@ std::vector<double> critical_angles(const Response& r, double T, const passivity
         for (double k : {0.0, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0}) th.push_back(phi + k * d), th.push_back(phi - k * d);
     }
   }
-  if (b.omega) th.push_back(to_real<double>((b.omega_lo + b.omega_hi) / 2) * T);
+  if (b.omega_enclosure) th.push_back(omega_star(b) * T);
   return th;
 }
 
@@ -212,7 +212,7 @@ void nyquist_data(const Opts& o, const TransferFunction& H, const fs::path& data
   else o_ << "NaN NaN NaN\n";
   const double bstar = res.b.infinite ? std::nan("") : res.b.value_double();
   write_labels(datadir / (o.name + "_labels.gp"),
-               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal((res.b.lo + res.b.hi) / 2, 8)},
+               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)},
                 {"mark_note", mark ? "" : res.b.infinite ? " (" + res.b.where + ")" : " (approached as w -> 0)"},
                 {"clip_text", res.clip_omega ? "curve leaves the window for w < " + to_decimal(exact_rational(*res.clip_omega), 4) + " rad/s" : ""}},
                {{"bstar", bstar}, {"has_bstar", std::isfinite(bstar) ? 1 : 0}, {"has_mark", mark ? 1 : 0},
@@ -247,7 +247,7 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
   res.points = s.size();
   const double ws = omega_star(res.b);
   write_labels(datadir / (o.name + "_labels.gp"),
-               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal((res.b.lo + res.b.hi) / 2, 8)}},
+               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)}},
                {{"omega_star", ws}, {"has_mark", std::isfinite(ws) && ws > 0 ? 1 : 0}, {"wmin", pi * 1e-4 / T}, {"wmax", pi / T},
                 {"db_min", db_lo - 5}, {"db_max", db_hi + 5 + 0.05 * (db_hi - db_lo)}});
 }
@@ -332,7 +332,7 @@ int run(const Opts& o) {
     wedge_data(opt, H, dir / "data");
     draw("user_wedge", opt.name, opt.name + "_wedge", dir, formats, res);
   }
-  nlohmann::json j{{"bound", res.b.infinite ? "inf" : res.b.value},
+  nlohmann::json j{{"bound", res.b.decimal},
                    {"omega", res.b.omega ? nlohmann::json(*res.b.omega) : nlohmann::json(nullptr)},
                    {"status", to_string(res.b.status)},
                    {"clip_omega", res.clip_omega ? nlohmann::json(*res.clip_omega) : nlohmann::json(nullptr)},
