@@ -2,7 +2,7 @@
 // made a primitive integer polynomial once (square-free part, denominators cleared, content
 // divided out, sign kept), and every inner loop -- pseudo-remainders, Taylor shifts, halvings,
 // sign variations, sign evaluations -- runs on integers. Each result is the same as the
-// previous rational/Boost implementation's (bench/exact_core_before.cpp keeps it as the
+// previous rational/Boost implementation's (bench/exact_core_before.hpp keeps it as the
 // reference): the polynomials differ from it at most by a positive constant, which changes no
 // sign and no variation count.
 #include "hapstab/poly/sturm.hpp"
