@@ -163,7 +163,11 @@ std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<ra
                    {c.verdict.outcome, c.verdict.status, o.str()}});
   }
   // 3) V itself stable (exact), so the loop's internal coupling state cannot diverge.
-  out.push_back({"V is Schur stable (exact)", Verdict::of(schur_stable(V.A), Status::exact, "Schur-Cohn on det(zI - A_V)")});
+  std::string how;
+  const bool v_stable = schur_stable(V.A, &how);
+  out.push_back({"V is Schur stable (exact)",
+                 how.rfind("Lyapunov", 0) == 0 ? Verdict::of(v_stable, Status::certified, how)
+                                                : Verdict::of(v_stable, Status::exact, "Schur-Cohn on det(zI - A_V)")});
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "hapstab/multidof/environment.hpp"
 
+#include "hapstab/numeric/lyapunov.hpp"
+
 #include <algorithm>
 
 #include "hapstab/numeric/error.hpp"
@@ -134,7 +136,14 @@ StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& e
   return {A, B, C, D, T};
 }
 
-bool schur_stable(const MatQ& A) { return A.rows() == 0 || hapstab::schur_stable(charpoly(A)); }
+bool schur_stable(const MatQ& A, std::string* method) {
+  if (A.rows() >= kLyapunovFromStates && lyapunov_proves_schur_stable(A)) {
+    if (method) *method = "Lyapunov certificate: P > 0, P - A^T P A > 0 by ball Cholesky on the exact A";
+    return true;
+  }
+  if (method) *method = "Schur-Cohn on the exact det(zI - A)";
+  return A.rows() == 0 || hapstab::schur_stable(charpoly(A));
+}
 
 MatQ dc_gain(const StateSpace<rational>& E) {
   const auto n = E.states();

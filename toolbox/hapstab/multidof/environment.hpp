@@ -59,9 +59,19 @@ StateSpace<rational> mechanical_environment(const MechanicalEnvironment& env, co
 /// m + 2 states (not minimal: the contact delays are kept even when B_i = 0), exact.
 StateSpace<rational> mechanical_environment_be_ss(const MechanicalEnvironment& env, const rational& T);
 
-/// Exact Schur stability of a matrix (every eigenvalue of A in |z| < 1): poly/stability.hpp on
-/// the exact characteristic polynomial. False also for eigenvalues ON the unit circle.
-bool schur_stable(const MatQ& A);
+/// Schur stability of a matrix (every eigenvalue of A in |z| < 1), decided rigorously. From
+/// kLyapunovFromStates states on, a Lyapunov certificate (numeric/lyapunov.hpp: solve in double,
+/// verify P > 0 and P - A^T P A > 0 with Arb balls on the exact A) is tried first; when it proves
+/// nothing, and always for smaller A, the exact Schur-Cohn test on det(zI - A) decides
+/// (poly/stability.hpp). False also for eigenvalues ON the unit circle. `method`, if given,
+/// receives which of the two decided.
+bool schur_stable(const MatQ& A, std::string* method = nullptr);
+/// The certificate costs O(n^3) ball operations whatever the entries (0.5 ms at 18 states, 2 ms at
+/// 34); Schur-Cohn's cost grows with the characteristic polynomial's coefficients: 0.1-0.3 ms on
+/// the sparse scene environments (18, 34 states), but 71 ms at 32 states and 2.4 s at 64 for dense
+/// matrices of small rationals (bench/exact_core.cpp, schur_stable). Trying the certificate first
+/// from 12 states on risks milliseconds to save seconds.
+inline constexpr Eigen::Index kLyapunovFromStates = 12;
 
 /// Static gain E(1) = C (I - A)^{-1} B + D; InputError if 1 is an eigenvalue of A.
 MatQ dc_gain(const StateSpace<rational>& E);

@@ -14,6 +14,7 @@
 #include <flint/fmpq_mat.h>
 #include <flint/fmpq_poly.h>
 #include <flint/fmpz.h>
+#include <flint/fmpz_poly.h>
 #if HAPSTAB_FLINT3
 #include <flint/arb_mat.h>
 #else
@@ -23,6 +24,50 @@
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::flint {
+
+/// An fmpz_t (integer) that clears itself.
+class Fmpz {
+ public:
+  Fmpz() { fmpz_init(z_); }
+  ~Fmpz() { fmpz_clear(z_); }
+  Fmpz(const Fmpz&) = delete;
+  Fmpz& operator=(const Fmpz&) = delete;
+  fmpz* get() { return z_; }
+  const fmpz* get() const { return z_; }
+
+ private:
+  fmpz_t z_;
+};
+
+/// An fmpz_poly_t (integer polynomial) that clears itself.
+class FmpzPoly {
+ public:
+  FmpzPoly() { fmpz_poly_init(p_); }
+  ~FmpzPoly() { fmpz_poly_clear(p_); }
+  FmpzPoly(const FmpzPoly& o) {
+    fmpz_poly_init(p_);
+    fmpz_poly_set(p_, o.p_);
+  }
+  FmpzPoly& operator=(const FmpzPoly& o) {
+    fmpz_poly_set(p_, o.p_);
+    return *this;
+  }
+  FmpzPoly(FmpzPoly&& o) noexcept {
+    fmpz_poly_init(p_);
+    fmpz_poly_swap(p_, o.p_);
+  }
+  FmpzPoly& operator=(FmpzPoly&& o) noexcept {
+    fmpz_poly_swap(p_, o.p_);
+    return *this;
+  }
+  fmpz_poly_struct* get() { return p_; }
+  const fmpz_poly_struct* get() const { return p_; }
+  long length() const { return fmpz_poly_length(p_); }
+  const fmpz* coeff(long i) const { return fmpz_poly_get_coeff_ptr(p_, i); }  ///< i < length()
+
+ private:
+  fmpz_poly_t p_;
+};
 
 /// An fmpq_poly_t that clears itself.
 class FmpqPoly {
@@ -73,8 +118,14 @@ class BallMat {
   arb_mat_t m_;
 };
 
-/// Exact rational -> fmpq and back.
+/// Exact integer -> fmpz, rational -> fmpq and back.
 inline void set(fmpq_t out, const rational& q) { fmpq_set_mpq(out, q.backend().data()); }
+inline void set(fmpz_t out, const integer& z) { fmpz_set_mpz(out, z.backend().data()); }
+inline integer to_integer(const fmpz_t z) {
+  integer r;
+  fmpz_get_mpz(r.backend().data(), z);
+  return r;
+}
 inline rational to_rational(const fmpq_t q) {
   rational r;
   fmpq_get_mpq(r.backend().data(), q);

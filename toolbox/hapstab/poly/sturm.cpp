@@ -1,8 +1,20 @@
+// Sturm sequences and Descartes isolation on FLINT's fmpz_poly: the polynomial of interest is
+// made a primitive integer polynomial once (square-free part, denominators cleared, content
+// divided out, sign kept), and every inner loop -- pseudo-remainders, Taylor shifts, halvings,
+// sign variations, sign evaluations -- runs on integers. Each result is the same as the
+// previous rational/Boost implementation's (bench/exact_core_before.hpp keeps it as the
+// reference): the polynomials differ from it at most by a positive constant, which changes no
+// sign and no variation count.
 #include "hapstab/poly/sturm.hpp"
 
 #include <algorithm>
 
+#include "hapstab/poly/flint_poly.hpp"
+
 namespace hapstab {
+
+using flint::Fmpz;
+using flint::FmpzPoly;
 
 namespace {
 
@@ -11,29 +23,87 @@ void require_nonzero(const Polynomial<rational>& p, const char* who) {
     throw InputError(std::string(who) + ": the zero polynomial vanishes everywhere (infinitely many roots)");
 }
 
-// Scales by a positive constant to the primitive integer polynomial (coefficients coprime
-// integers): keeps Sturm signs, tames growth, and lets sign_at evaluate without any gcd.
-Polynomial<rational> positive_normalise(const Polynomial<rational>& p) {
-  if (p.is_zero()) return p;
-  integer L = 1, G = 0;
-  for (const auto& c : p.coeffs()) L = bmp::lcm(L, den(c));
-  for (const auto& c : p.coeffs()) G = bmp::gcd(G, num(c) * (L / den(c)));
-  return p * rational(L, G);
+// p divided by its (non-negative) content: primitive, same signs everywhere.
+void make_primitive(FmpzPoly& p) {
+  Fmpz c;
+  fmpz_poly_content(c.get(), p.get());
+  if (!fmpz_is_zero(c.get()) && !fmpz_is_one(c.get())) fmpz_poly_scalar_divexact_fmpz(p.get(), p.get(), c.get());
 }
 
-// sign of p(a/b), b > 0: for integer coefficients the sign of sum c_i a^i b^(n-i), all in
-// integers (exact, and no rational canonicalisation); otherwise by rational evaluation.
-int sign_at(const Polynomial<rational>& p, const rational& x) {
-  const auto& c = p.coeffs();
-  for (const auto& ci : c)
-    if (den(ci) != 1) return sgn(p(x));
-  const integer a = num(x), b = den(x);
-  integer h = num(c.back()), bp = 1;
-  for (int i = static_cast<int>(c.size()) - 2; i >= 0; --i) {
-    bp *= b;
-    h = h * a + num(c[static_cast<size_t>(i)]) * bp;
+// The primitive integer polynomial that is a positive multiple of p.
+FmpzPoly primitive_integer(const Polynomial<rational>& p) {
+  flint::FmpqPoly q;
+  flint::to_flint(p, q);
+  FmpzPoly z;
+  fmpq_poly_get_numerator(z.get(), q.get());  // times the positive common denominator
+  make_primitive(z);
+  return z;
+}
+
+Polynomial<rational> to_polynomial(const FmpzPoly& p) {
+  std::vector<rational> c;
+  for (long i = 0; i < p.length(); ++i) c.emplace_back(flint::to_integer(p.coeff(i)));
+  return Polynomial<rational>(std::move(c));
+}
+
+// sign of p(a/b), b > 0: the sign of the homogeneous sum c_i a^i b^(n-i), in integers.
+int sign_at(const FmpzPoly& p, const rational& x) {
+  const long len = p.length();
+  if (len == 0) return 0;
+  Fmpz a, b, h, bp;
+  flint::set(a.get(), num(x));
+  flint::set(b.get(), den(x));
+  fmpz_set(h.get(), p.coeff(len - 1));
+  fmpz_one(bp.get());
+  for (long i = len - 2; i >= 0; --i) {
+    fmpz_mul(bp.get(), bp.get(), b.get());
+    fmpz_mul(h.get(), h.get(), a.get());
+    fmpz_addmul(h.get(), p.coeff(i), bp.get());
   }
-  return h > 0 ? 1 : (h < 0 ? -1 : 0);
+  return fmpz_sgn(h.get());
+}
+
+// the primitive integer square-free part of p (a positive multiple of square_free_part(p))
+FmpzPoly square_free_integer(const Polynomial<rational>& p) { return primitive_integer(square_free_part(p)); }
+
+// -prem(a, b) made primitive: lc(b)^d a = Q b + R, so R is a positive multiple of rem(a, b)
+// unless lc(b) < 0 and d is odd; the result is the primitive POSITIVE multiple of -rem(a, b)
+// (Sturm signs kept).
+FmpzPoly negated_pseudo_remainder(const FmpzPoly& a, const FmpzPoly& b) {
+  FmpzPoly r;
+  ulong d = 0;
+  fmpz_poly_pseudo_rem(r.get(), &d, a.get(), b.get());
+  const bool lc_negative = fmpz_sgn(b.coeff(b.length() - 1)) < 0;
+  if (!(lc_negative && (d % 2 == 1))) fmpz_poly_neg(r.get(), r.get());
+  make_primitive(r);
+  return r;
+}
+
+std::vector<FmpzPoly> integer_sturm_sequence(const Polynomial<rational>& p) {
+  std::vector<FmpzPoly> s;
+  s.push_back(square_free_integer(p));
+  if (s[0].length() <= 1) return s;
+  FmpzPoly d;
+  fmpz_poly_derivative(d.get(), s[0].get());
+  make_primitive(d);
+  s.push_back(std::move(d));
+  for (;;) {
+    FmpzPoly r = negated_pseudo_remainder(s[s.size() - 2], s.back());
+    if (r.length() == 0) break;
+    s.push_back(std::move(r));
+  }
+  return s;
+}
+
+int variations_at(const std::vector<FmpzPoly>& seq, const rational& x) {
+  int v = 0, last = 0;
+  for (const auto& p : seq) {
+    const int s = sign_at(p, x);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++v;
+    last = s;
+  }
+  return v;
 }
 
 }  // namespace
@@ -52,64 +122,33 @@ rational cauchy_bound(const Polynomial<rational>& p) {
 Polynomial<rational> square_free_part(const Polynomial<rational>& p) {
   require_nonzero(p, "square_free_part");
   if (p.degree() <= 0) return p.monic();
-  Polynomial<rational> g = gcd(p, p.derivative());
-  return divmod(p, g).first.monic();
+  flint::FmpqPoly f, d, g, q;
+  flint::to_flint(p, f);
+  fmpq_poly_derivative(d.get(), f.get());
+  fmpq_poly_gcd(g.get(), f.get(), d.get());
+  fmpq_poly_div(q.get(), f.get(), g.get());
+  fmpq_poly_make_monic(q.get(), q.get());
+  return flint::from_flint(q);
 }
-
-namespace {
-// -prem(a, b) made primitive, for integer a, b with deg a >= deg b: each step multiplies the
-// running remainder by |lc(b)| > 0 before cancelling its leading term, so the result is a
-// POSITIVE multiple of -rem(a, b) (Sturm signs kept), computed without any rational arithmetic.
-Polynomial<rational> negated_pseudo_remainder(const Polynomial<rational>& a, const Polynomial<rational>& b) {
-  std::vector<integer> r, B;
-  for (const auto& c : a.coeffs()) r.push_back(num(c));
-  for (const auto& c : b.coeffs()) B.push_back(num(c));
-  const integer absL = abs(B.back());
-  const bool neg = B.back() < 0;
-  while (!r.empty() && r.size() >= B.size()) {
-    const integer c = neg ? integer(-r.back()) : r.back();
-    const size_t k = r.size() - B.size();
-    for (auto& x : r) x *= absL;
-    for (size_t i = 0; i + 1 < B.size(); ++i) r[k + i] -= c * B[i];
-    r.pop_back();  // |L| r_top - sgn(L) r_top L = 0
-    while (!r.empty() && r.back() == 0) r.pop_back();
-  }
-  std::vector<rational> out;
-  for (auto& x : r) out.emplace_back(-x);
-  return positive_normalise(Polynomial<rational>(std::move(out)));
-}
-}  // namespace
 
 std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& p) {
   require_nonzero(p, "sturm_sequence");
-  std::vector<Polynomial<rational>> s;
-  s.push_back(positive_normalise(square_free_part(p)));
-  if (s[0].degree() <= 0) return s;
-  s.push_back(positive_normalise(s[0].derivative()));
-  for (;;) {
-    Polynomial<rational> r = negated_pseudo_remainder(s[s.size() - 2], s.back());
-    if (r.is_zero()) break;
-    s.push_back(std::move(r));
-  }
-  return s;
+  std::vector<Polynomial<rational>> out;
+  for (const auto& s : integer_sturm_sequence(p)) out.push_back(to_polynomial(s));
+  return out;
 }
 
 int sign_variations(const std::vector<Polynomial<rational>>& seq, const rational& x) {
-  int v = 0, last = 0;
-  for (const auto& p : seq) {
-    int s = sign_at(p, x);
-    if (s == 0) continue;
-    if (last != 0 && s != last) ++v;
-    last = s;
-  }
-  return v;
+  std::vector<FmpzPoly> z;
+  for (const auto& p : seq) z.push_back(primitive_integer(p));  // positive multiples: same signs
+  return variations_at(z, x);
 }
 
 int count_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b) {
   require_nonzero(p, "count_real_roots");
   if (a >= b) return 0;
-  auto s = sturm_sequence(p);
-  return sign_variations(s, a) - sign_variations(s, b);
+  const auto s = integer_sturm_sequence(p);
+  return variations_at(s, a) - variations_at(s, b);
 }
 
 namespace {
@@ -118,22 +157,24 @@ namespace {
 // A node is a polynomial P(y) whose roots in (0, 1) are those of q in one sub-interval, y = 0 at
 // its left end and y = 1 at its right end. var(node) = sign variations of the coefficients of
 // (1 + y)^n P(1 / (1 + y)) bounds the number of roots in (0, 1) and is exact when 0 or 1; the
-// halves are 2^n P(y/2) and 2^n P((y+1)/2). Integer additions and shifts only: the coefficients
-// stay near the size of q's, where a Sturm sequence of degree n grows to ~n times that size.
-using Z = std::vector<integer>;
+// halves are 2^n P(y/2) and 2^n P((y+1)/2). Integer shifts and Taylor shifts only (FLINT's
+// fmpz_poly_taylor_shift): the coefficients stay near the size of q's, where a Sturm sequence of
+// degree n grows to ~n times that size.
 
-void taylor_shift_1(Z& c) {  // c(y) -> c(y + 1), in place (O(n^2) additions)
-  const size_t n = c.size();
-  for (size_t i = 0; i + 1 < n; ++i)
-    for (size_t j = n - 1; j-- > i;) c[j] += c[j + 1];
+void taylor_shift_1(FmpzPoly& c) {  // c(y) -> c(y + 1), in place
+  Fmpz one;
+  fmpz_one(one.get());
+  fmpz_poly_taylor_shift(c.get(), c.get(), one.get());
 }
 
-int descartes_var(const Z& c) {  // variations of (1 + y)^n c(1 / (1 + y)); stops at 2
-  Z r(c.rbegin(), c.rend());
+int descartes_var(const FmpzPoly& c) {  // variations of (1 + y)^n c(1 / (1 + y)); stops at 2
+  const long len = c.length();
+  FmpzPoly r;
+  fmpz_poly_reverse(r.get(), c.get(), len);
   taylor_shift_1(r);
   int v = 0, last = 0;
-  for (const auto& x : r) {
-    const int s = x > 0 ? 1 : (x < 0 ? -1 : 0);
+  for (long i = 0; i < r.length(); ++i) {
+    const int s = fmpz_sgn(r.coeff(i));
     if (s == 0) continue;
     if (last != 0 && s != last && ++v >= 2) return v;
     last = s;
@@ -141,18 +182,37 @@ int descartes_var(const Z& c) {  // variations of (1 + y)^n c(1 / (1 + y)); stop
   return v;
 }
 
-// q(lo + (hi - lo) y) with integer coefficients (a positive multiple)
-Z to_unit_interval(const Polynomial<rational>& q, const rational& lo, const rational& hi) {
-  std::vector<rational> c = q.coeffs();
-  const size_t n = c.size();
-  for (size_t i = 0; i + 1 < n; ++i)  // Taylor shift by lo
-    for (size_t j = n - 1; j-- > i;) c[j] += lo * c[j + 1];
-  rational w = 1;
-  for (size_t k = 1; k < n; ++k) c[k] *= (w *= hi - lo);
-  const Polynomial<rational> moved = positive_normalise(Polynomial<rational>(std::move(c)));
-  Z out;  // same degree: the leading coefficient is multiplied by (hi - lo)^n != 0
-  for (const auto& x : moved.coeffs()) out.push_back(num(x));
-  return out;
+// a positive multiple of q(lo + (hi - lo) y), primitive, q integer of degree n:
+// with lo = a/b and hi - lo = c/d, b^n d^n q(a/b + (c/d) y) = sum_i [q~(x + a)]_i (b c)^i d^(n-i),
+// q~(x) = b^n q(x/b) = sum_i q_i b^(n-i) x^i.
+FmpzPoly to_unit_interval(const FmpzPoly& q, const rational& lo, const rational& hi) {
+  const long len = q.length(), n = len - 1;
+  const rational w = hi - lo;
+  Fmpz a, b, bc, d, pw;
+  flint::set(a.get(), num(lo));
+  flint::set(b.get(), den(lo));
+  flint::set(d.get(), den(w));
+  flint::set(bc.get(), num(w));
+  fmpz_mul(bc.get(), bc.get(), b.get());
+  FmpzPoly t(q);
+  fmpz_one(pw.get());
+  for (long i = n - 1; i >= 0; --i) {  // q~: coefficient i times b^(n-i)
+    fmpz_mul(pw.get(), pw.get(), b.get());
+    fmpz_mul(t.get()->coeffs + i, t.get()->coeffs + i, pw.get());
+  }
+  fmpz_poly_taylor_shift(t.get(), t.get(), a.get());
+  fmpz_one(pw.get());
+  for (long i = n; i >= 0; --i) {  // times d^(n-i)
+    fmpz_mul(t.get()->coeffs + i, t.get()->coeffs + i, pw.get());
+    fmpz_mul(pw.get(), pw.get(), d.get());
+  }
+  fmpz_one(pw.get());
+  for (long i = 1; i <= n; ++i) {  // times (b c)^i
+    fmpz_mul(pw.get(), pw.get(), bc.get());
+    fmpz_mul(t.get()->coeffs + i, t.get()->coeffs + i, pw.get());
+  }
+  make_primitive(t);  // same degree: the leading coefficient gets the factor (bc)^n != 0
+  return t;
 }
 
 struct Descartes {
@@ -160,22 +220,23 @@ struct Descartes {
   std::vector<RootInterval>* out;
   rational at(const integer& k, unsigned depth) const { return lo + width * rational(k, integer(1) << depth); }
   // roots of c in (0, 1), i.e. in (at(k, depth), at(k + 1, depth))
-  void run(Z c, const integer& k, unsigned depth) const {
+  void run(FmpzPoly c, const integer& k, unsigned depth) const {
     const int v = descartes_var(c);
     if (v == 0) return;
     if (v == 1) {
       out->push_back({at(k, depth), at(k + 1, depth)});
       return;
     }
-    const size_t n = c.size() - 1;
-    for (size_t i = 0; i <= n; ++i) c[i] <<= static_cast<unsigned>(n - i);  // 2^n c(y/2)
-    Z right = c;
+    const long n = c.length() - 1;
+    for (long i = 0; i < n; ++i)  // 2^n c(y/2)
+      fmpz_mul_2exp(c.get()->coeffs + i, c.get()->coeffs + i, static_cast<ulong>(n - i));
+    FmpzPoly right(c);
     taylor_shift_1(right);  // 2^n c((y + 1)/2)
-    const bool mid_root = right[0] == 0;
+    const bool mid_root = fmpz_is_zero(right.coeff(0));
     run(std::move(c), 2 * k, depth + 1);
     if (mid_root) {
       out->push_back({at(2 * k + 1, depth + 1), at(2 * k + 1, depth + 1)});
-      right.erase(right.begin());  // divide by y: the midpoint root is reported
+      fmpz_poly_shift_right(right.get(), right.get(), 1);  // divide by y: the midpoint root is reported
     }
     run(std::move(right), 2 * k + 1, depth + 1);
   }
@@ -194,8 +255,8 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, cons
   require_nonzero(p, "isolate_real_roots");
   if (a > b) throw InputError("isolate_real_roots: empty interval [" + a.str() + ", " + b.str() + "]");
   std::vector<RootInterval> out;
-  const Polynomial<rational> q = positive_normalise(square_free_part(p));
-  if (q.degree() <= 0) return out;
+  const FmpzPoly q = square_free_integer(p);
+  if (q.length() <= 1) return out;
   const bool root_a = sign_at(q, a) == 0, root_b = sign_at(q, b) == 0;
   if (a == b) {
     if (root_a) out.push_back({a, a});
@@ -228,12 +289,13 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
   require_nonzero(p, "refine_root");
   if (!(width > 0)) throw InputError("refine_root: width must be positive, got " + width.str());
   if (r.lo > r.hi) throw InputError("refine_root: lo > hi");
-  const Polynomial<rational> q = positive_normalise(square_free_part(p));
+  const FmpzPoly qz = square_free_integer(p);
+  const Polynomial<rational> q = to_polynomial(qz);
   if (r.is_exact()) {
     if (q(r.lo) != 0) throw InputError("refine_root: " + r.lo.str() + " is not a root");
     return r;
   }
-  int slo = sign_at(q, r.lo), shi = sign_at(q, r.hi);
+  int slo = sign_at(qz, r.lo), shi = sign_at(qz, r.hi);
   if (slo == 0) return {r.lo, r.lo};
   if (shi == 0) return {r.hi, r.hi};
   if (slo == shi)
@@ -254,8 +316,8 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
       rational cells = (xs - r.lo) / w * rational(N);
       integer k = num(cells) / den(cells);  // floor (cells >= 0)
       const rational a = r.lo + w * rational(k) / rational(N), b = r.lo + w * rational(k + 1) / rational(N);
-      const int sa = (k == 0) ? slo : sign_at(q, a);
-      const int sb = (k + 1 == N) ? shi : sign_at(q, b);
+      const int sa = (k == 0) ? slo : sign_at(qz, a);
+      const int sb = (k + 1 == N) ? shi : sign_at(qz, b);
       if (sa == 0) return {a, a};
       if (sb == 0) return {b, b};
       if (sa != sb) {
@@ -270,7 +332,7 @@ RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const ra
     }
     if (!done) {
       const rational m = (r.lo + r.hi) / 2;
-      const int sm = sign_at(q, m);
+      const int sm = sign_at(qz, m);
       if (sm == 0) return {m, m};
       if (sm == slo) r.lo = m;
       else r.hi = m;

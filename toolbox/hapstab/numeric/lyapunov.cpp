@@ -1,0 +1,74 @@
+// Certified Schur stability by a Lyapunov inequality (see lyapunov.hpp).
+#include "hapstab/numeric/lyapunov.hpp"
+
+#include <cmath>
+
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/flint.hpp"
+
+namespace hapstab {
+
+namespace {
+
+constexpr long kPrec = 128;
+
+// P = sum_k (A^T)^k A^k (the solution of A^T P A - P = -I) by doubling; false when the series
+// does not converge in double (spectral radius not clearly below 1).
+bool smith_doubling(Eigen::MatrixXd Ak, Eigen::MatrixXd& P) {
+  const auto n = Ak.rows();
+  P = Eigen::MatrixXd::Identity(n, n);
+  for (int k = 0; k < 64; ++k) {
+    P += Ak.transpose() * P * Ak;
+    Ak = Ak * Ak;
+    const double a = Ak.norm();
+    if (!std::isfinite(a) || !P.allFinite() || a > 1e100) return false;
+    if (a < 1e-20) return true;  // the remaining terms are below 1e-40 |P|: P is converged
+  }
+  return false;
+}
+
+// M = P - A^T P A in balls (P exact, A exact up to 2^-128 relative).
+void lyapunov_residual(flint::BallMat& M, flint::BallMat& P, const MatQ& A) {
+  const long n = static_cast<long>(A.rows());
+  flint::QMat q(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) flint::set(q.at(i, j), A(i, j));
+  flint::BallMat Ab(n, n), AT(n, n), PA(n, n);
+  arb_mat_set_fmpq_mat(Ab.get(), q.get(), kPrec);
+  arb_mat_transpose(AT.get(), Ab.get());
+  arb_mat_mul(PA.get(), P.get(), Ab.get(), kPrec);
+  arb_mat_mul(M.get(), AT.get(), PA.get(), kPrec);
+  arb_mat_sub(M.get(), P.get(), M.get(), kPrec);
+}
+
+}  // namespace
+
+bool lyapunov_proves_schur_stable(const MatQ& A, std::string* why) {
+  if (A.rows() != A.cols()) throw InputError("lyapunov_proves_schur_stable: the matrix must be square");
+  const long n = static_cast<long>(A.rows());
+  if (n == 0) return true;
+  Eigen::MatrixXd Ad(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) Ad(i, j) = static_cast<double>(A(i, j));
+  Eigen::MatrixXd Pd;
+  if (!smith_doubling(Ad, Pd)) {
+    if (why) *why = "the Lyapunov series does not converge in double (spectral radius not clearly below 1)";
+    return false;
+  }
+  const Eigen::MatrixXd Ps = 0.5 * (Pd + Pd.transpose());  // exactly symmetric doubles
+  flint::BallMat P(n, n), M(n, n), L(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) arb_set_d(P.at(i, j), Ps(i, j));  // exact: P is this dyadic matrix
+  if (!arb_mat_cho(L.get(), P.get(), kPrec)) {
+    if (why) *why = "the rounded Lyapunov matrix P is not certainly positive definite";
+    return false;
+  }
+  lyapunov_residual(M, P, A);
+  if (!arb_mat_cho(L.get(), M.get(), kPrec)) {
+    if (why) *why = "P - A^T P A is not certainly positive definite (ball Cholesky)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace hapstab
