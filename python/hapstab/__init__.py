@@ -35,7 +35,7 @@ InputError.__module__ = NumericalError.__module__ = "hapstab"
 
 __all__ = ["r", "bound", "wedge", "passivity_level", "simulate", "multidof", "run", "examples_dir",
            "InputError", "NumericalError", "Result", "R", "Bound", "Wedge", "PassivityLevel", "Simulation",
-           "Analysis", "Design"]
+           "Analysis", "Design", "sweep", "Sweep"]
 
 
 def run(*args: str) -> Result:
@@ -204,3 +204,4 @@ def simulate(scene: Any, *, out: Optional[str] = None, force: bool = False, max_
 
 
 from . import multidof  # noqa: E402  (uses _SceneFile, _json, _sets above)
+from ._sweep import Sweep, sweep  # noqa: E402
