@@ -66,3 +66,22 @@ TEST(CmdReproduce, MalformedExpectationIsAFailureThatSaysWhy) {
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(read(root / "out" / "report.md").find("cannot read the number in '> lots'"), std::string::npos);
 }
+
+// The Python examples are figures of the report (issue 18): each PNG an example prints is a
+// figure of the section "From Python", with its PDF beside it.
+TEST(CmdReproduce, PythonExamplesAreFiguresOfTheReport) {
+  if (!fs::is_directory(fs::path(HAPSTAB_CLI).parent_path() / "python" / "hapstab"))
+    GTEST_SKIP() << "the Python package was not built (HAPSTAB_PYTHON=OFF)";
+  const fs::path root = fs::path(::testing::TempDir()) / "repro_python";
+  fs::remove_all(root);
+  const auto r = hapstab_test::run_cli("reproduce --only python --format png --quiet --out " + (root / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("3 figures drawn, 0 failed"), std::string::npos) << r.out;
+  const std::string md = read(root / "out" / "report.md");
+  EXPECT_NE(md.find("## From Python"), std::string::npos) << md;
+  for (const char* fig : {"python_fig2_nyquist_maps", "python_kb_map", "python_multidof_velocities"}) {
+    EXPECT_NE(md.find(std::string("](figures/") + fig + ".png)"), std::string::npos) << fig;
+    EXPECT_TRUE(fs::exists(root / "out" / "figures" / (std::string(fig) + ".pdf"))) << fig;
+  }
+  EXPECT_NE(read(root / "out" / "index.html").find("python_kb_map.pdf"), std::string::npos);
+}

@@ -13,6 +13,7 @@
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "cli/python_examples.hpp"
 #include "cli/reproduce.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -34,16 +35,16 @@ struct Opts {
 };
 
 int run(const Opts& o) {
-  static const std::set<std::string> papers{"", "000", "001", "002", "toolbox"};
+  static const std::set<std::string> papers{"", "000", "001", "002", "toolbox", "python"};
   if (!papers.count(o.only))
-    throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002 or toolbox)");
+    throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002, toolbox or python)");
   const auto formats = parse_formats(o.format);
   const fs::path dir = output_folder(o.out, "--out");
   auto t0 = std::chrono::steady_clock::now();
   ReportInput rep;
   if (!o.quiet) std::cerr << "reproduce: running the proofs\n";
   double s = 0;
-  if (o.only != "toolbox") rep.claims = run_proofs(o.only, true, s);
+  if (o.only != "toolbox" && o.only != "python") rep.claims = run_proofs(o.only, true, s);
   size_t claim_fails = 0;
   for (const auto& c : rep.claims) {
     claim_fails += !c.holds;
@@ -90,6 +91,10 @@ int run(const Opts& o) {
     if (!o.quiet) std::cerr << "reproduce: [figure " << n << "/" << total << "] " << f.name << " (" << e.seconds << " s)\n";
     rep.figures.push_back(e);
   }
+  if (o.only.empty() || o.only == "python") {
+    if (!o.quiet) std::cerr << "reproduce: running the Python examples (examples/python)\n";
+    for (auto& e : run_python_examples(dir / "figures", o.quiet)) rep.figures.push_back(std::move(e));
+  }
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   write_report_md(rep, dir);
   write_index_html(rep, dir);
@@ -110,7 +115,7 @@ const Register reg({"reproduce",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       app.add_option("--out", o->out, "Output folder")->capture_default_str();
-                      app.add_option("--only", o->only, "Only this paper: 000, 001, 002, or toolbox (own charts)");
+                      app.add_option("--only", o->only, "Only this paper: 000, 001, 002, toolbox (own charts) or python (the Python examples)");
                       app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex (tex = cairolatex, in figures/tex/)")
                           ->capture_default_str();
                       app.add_flag("--quiet", o->quiet, "No progress on stderr");

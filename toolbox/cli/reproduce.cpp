@@ -19,8 +19,16 @@ const char* paper_title(const std::string& p) {
            "haptic systems";
   if (p == "001") return "Roberts, Moore, Colgate: A new expression for the passivity bound for a class of sampled-data systems";
   if (p == "002") return "Tsai, Colgate: Stability of discrete time systems with unilateral nonlinearities";
+  if (p == "python") return "From Python: the examples in examples/python, drawn with matplotlib";
   return "The toolbox's own charts";
 }
+
+namespace {
+/// "Paper 001: ..." for a paper, the title alone for the toolbox's and Python's sections.
+std::string section_title(const std::string& p) {
+  return (p == "toolbox" || p == "python" ? "" : "Paper " + p + ": ") + paper_title(p);
+}
+}  // namespace
 
 std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double& seconds) {
   std::vector<ClaimResult> all;
@@ -56,7 +64,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
 
 namespace {
 
-const char* const kPapers[] = {"001", "002", "000", "toolbox"};
+const char* const kPapers[] = {"001", "002", "000", "toolbox", "python"};
 
 using report::markdown::cell;
 using report::markdown::code;
@@ -111,7 +119,7 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
   for (std::string paper : kPapers) {
     if (!any_of_paper(in.claims, paper) && !any_of_paper(in.figures, paper) && !any_of_paper(in.scenes, paper))
       continue;
-    md << "\n## " << (paper == "toolbox" ? "" : "Paper " + paper + ": ") << paper_title(paper) << "\n";
+    md << "\n## " << section_title(paper) << "\n";
     if (any_of_paper(in.claims, paper)) {
       md << "\n| claim | equation | statement | status | verdict | evidence |\n|---|---|---|---|---|---|\n";
       for (const auto& c : in.claims)
@@ -157,7 +165,7 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
   for (std::string paper : kPapers) {
     if (!any_of_paper(in.claims, paper) && !any_of_paper(in.figures, paper) && !any_of_paper(in.scenes, paper))
       continue;
-    h << "<h2>" << html((paper == "toolbox" ? "" : "Paper " + paper + ": ") + paper_title(paper)) << "</h2>\n";
+    h << "<h2>" << html(section_title(paper)) << "</h2>\n";
     if (any_of_paper(in.claims, paper)) {
       h << "<table><tr><th>claim</th><th>equation</th><th>statement</th><th>status</th><th>verdict</th>"
            "<th>evidence</th></tr>\n";
@@ -189,7 +197,9 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
           h << "<p class=\"" << (f.skipped ? "skipped" : "fails") << "\">not reproduced" << (f.skipped ? "" : " (FAILED)")
             << ": " << html(f.error) << "</p>";
         h << "<figcaption><b>" << html(f.name) << ".</b> " << html(f.caption);
-        if (f.ok)
+        if (f.ok && f.matplotlib)
+          h << " (<a href=\"figures/" << file << ".pdf\">PDF</a>)";
+        else if (f.ok)
           h << " (<a href=\"figures/" << file << ".pdf\">PDF</a>, <a href=\"figures/" << file
             << ".svg\">SVG</a>, <a href=\"figures/tex/" << file << ".tex\">LaTeX</a>)";
         h << "</figcaption></figure>\n";

@@ -19,6 +19,7 @@ struct FigureEntry {
   std::string name, paper, caption;
   bool ok = true;
   bool skipped = false;  ///< not reproduced on this build, not a failure (e.g. bench programs not built)
+  bool matplotlib = false;  ///< drawn by a Python example (examples/python): PNG and PDF only
   std::string error;     ///< why it was not drawn
   double seconds = 0;
 };
