@@ -66,9 +66,18 @@ bool maybe_zero(const S& x) {
   }
 }
 
+/// pi in S. For intervals straight from MPFI: Boost's pi<> for an MPFI type would instantiate
+/// its constant initializer, which computes pi, ln 2, Euler's and Catalan's constants at every
+/// precision used when the program starts (measured: 40 ms per process at 4000 digits).
 template <class S>
 S pi_value() {
-  return boost::math::constants::pi<S>();
+  if constexpr (detail::is_interval<S>::value) {
+    S x;
+    mpfi_const_pi(x.backend().data());
+    return x;
+  } else {
+    return boost::math::constants::pi<S>();
+  }
 }
 
 /// (35): T/2 (e^{-j theta} - 1)/(1 - cos theta), as written.
