@@ -532,7 +532,7 @@ bool check_multidof(std::mt19937_64& g, std::ostream& why) {
 }
 
 int main(int argc, char** argv) {
-  long cases = 1000, only = -1;
+  long cases = 1000, only = -1, first = 0;
   unsigned long seed = 1;
   std::string criterion = "all";
   for (int i = 1; i < argc; ++i) {
@@ -549,9 +549,10 @@ int main(int argc, char** argv) {
       else if (a == "--seed") seed = std::stoul(value());
       else if (a == "--criterion") criterion = value();
       else if (a == "--case") only = std::stol(value());
+      else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--criterion all|r,bound,wedge,level,multidof] [--case K])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof] [--case K])\n";
       return 2;
     }
   }
@@ -578,7 +579,7 @@ int main(int argc, char** argv) {
     Tally t;
     reference_seconds = 0;
     const auto start = std::chrono::steady_clock::now();
-    for (long k = (only >= 0 ? only : 0); k < (only >= 0 ? only + 1 : cases); ++k) {
+    for (long k = (only >= 0 ? only : first); k < (only >= 0 ? only + 1 : first + cases); ++k) {
       auto g = case_rng(seed, c, k);
       std::ostringstream why;
       ++t.cases;

@@ -34,8 +34,8 @@ struct Opts {
 };
 
 int run(const Opts& o) {
-  static const std::set<std::string> papers{"", "000", "001", "002"};
-  if (!papers.count(o.only)) throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001 or 002)");
+  static const std::set<std::string> papers{"", "000", "001", "002", "ext"};
+  if (!papers.count(o.only)) throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002 or ext)");
   // Inputs and outputs are checked before the proofs run (they take a while).
   if (!o.out.empty()) output_folder(o.out, "--out");
   if (!o.table.empty() && !std::ifstream(o.table)) throw InputError("--table: cannot read '" + o.table + "'");
@@ -71,7 +71,7 @@ int run(const Opts& o) {
 
 const Register reg({"proofs", "Run every checked derivation (proofs/) and print the claim verdicts", [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
-                      app.add_option("--only", o->only, "Only this paper: 000, 001 or 002");
+                      app.add_option("--only", o->only, "Only this part: a paper (000, 001, 002) or ext (beyond the papers)");
                       app.add_option("--out", o->out, "Also write DIR/report.md");
                       app.add_flag("--quiet", o->quiet, "Print only the summary line");
                       app.add_flag("--json", o->json, "Print the claims as JSON");

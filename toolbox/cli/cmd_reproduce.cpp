@@ -35,9 +35,9 @@ struct Opts {
 };
 
 int run(const Opts& o) {
-  static const std::set<std::string> papers{"", "000", "001", "002", "toolbox", "python"};
+  static const std::set<std::string> papers{"", "000", "001", "002", "ext", "toolbox", "python"};
   if (!papers.count(o.only))
-    throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002, toolbox or python)");
+    throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002, ext, toolbox or python)");
   const auto formats = parse_formats(o.format);
   const fs::path dir = output_folder(o.out, "--out");
   auto t0 = std::chrono::steady_clock::now();
@@ -115,7 +115,7 @@ const Register reg({"reproduce",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       app.add_option("--out", o->out, "Output folder")->capture_default_str();
-                      app.add_option("--only", o->only, "Only this paper: 000, 001, 002, toolbox (own charts) or python (the Python examples)");
+                      app.add_option("--only", o->only, "Only this part: a paper (000, 001, 002), ext (beyond the papers), toolbox (own charts) or python (the Python examples)");
                       app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex (tex = cairolatex, in figures/tex/)")
                           ->capture_default_str();
                       app.add_flag("--quiet", o->quiet, "No progress on stderr");

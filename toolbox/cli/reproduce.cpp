@@ -19,6 +19,9 @@ const char* paper_title(const std::string& p) {
            "haptic systems";
   if (p == "001") return "Roberts, Moore, Colgate: A new expression for the passivity bound for a class of sampled-data systems";
   if (p == "002") return "Tsai, Colgate: Stability of discrete time systems with unilateral nonlinearities";
+  if (p == "ext")
+    return "Beyond the papers: the stability boundary of the haptic loop, quantization and Coulomb friction, "
+           "passivity control in time, Z-width";
   if (p == "python") return "From Python: the examples in examples/python, drawn with matplotlib";
   return "The toolbox's own charts";
 }
@@ -26,7 +29,7 @@ const char* paper_title(const std::string& p) {
 namespace {
 /// "Paper 001: ..." for a paper, the title alone for the toolbox's and Python's sections.
 std::string section_title(const std::string& p) {
-  return (p == "toolbox" || p == "python" ? "" : "Paper " + p + ": ") + paper_title(p);
+  return (p == "toolbox" || p == "python" || p == "ext" ? "" : "Paper " + p + ": ") + paper_title(p);
 }
 }  // namespace
 
@@ -64,7 +67,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
 
 namespace {
 
-const char* const kPapers[] = {"001", "002", "000", "toolbox", "python"};
+const char* const kPapers[] = {"001", "002", "000", "ext", "toolbox", "python"};
 
 using report::markdown::cell;
 using report::markdown::code;
