@@ -15,21 +15,12 @@
 #include "cli/mat_fixture.hpp"
 
 namespace fs = std::filesystem;
+using hapstab_test::json_of;
 using hapstab_test::run_cli;
 
 namespace {
 
-fs::path tmp(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("hapstab_plot_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d / name;
-}
-
-nlohmann::json json_of(const std::string& args) {
-  const auto r = run_cli(args);
-  EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
-  return r.code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
-}
+fs::path tmp(const std::string& name) { return hapstab_test::temp_path("plot", name); }
 
 bool nonempty(const fs::path& p) { return fs::exists(p) && fs::file_size(p) > 100; }
 

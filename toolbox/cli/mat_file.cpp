@@ -1,6 +1,8 @@
 // cli/mat_file.cpp -- see mat_file.hpp.
 #include "cli/mat_file.hpp"
 
+#include "cli/mat_level5.hpp"
+
 #include <matio.h>
 
 #include <cmath>
@@ -57,6 +59,10 @@ void check_header(const std::string& file, const std::string& where) {
   if (version == 0x0200)
     throw InputError(where + ": a v7.3 (HDF5) .mat file, which hapstab does not read; save it with -v7");
   if (version != 0x0100) throw InputError(where + ": not a MATLAB level-5 .mat file (save it with -v7)");
+  in.seekg(0);
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) throw InputError(where + ": cannot read it whole");
+  check_level5_structure(bytes, where);  // matio trusts the sizes a file declares: check them first
 }
 
 class MatReader {
