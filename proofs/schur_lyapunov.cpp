@@ -22,6 +22,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/multidof/environment.hpp"
 #include "hapstab/numeric/lyapunov.hpp"
+#include "proofs/known_spectrum.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -38,32 +39,8 @@ multidof::MechanicalEnvironment scene_environment(int n) {  // bench/contact_sce
   return env;
 }
 
-// S^-1 D S, S = I + L with L strictly lower triangular (exact inverse by the Neumann sum)
-MatQ dense_similar(const MatQ& D, std::mt19937& g) {
-  const auto n = D.rows();
-  std::uniform_int_distribution<int> k(-4, 4);
-  MatQ L = MatQ::Zero(n, n);
-  for (Eigen::Index i = 1; i < n; ++i)
-    for (Eigen::Index j = 0; j < i; ++j) L(i, j) = rational(k(g), 4);
-  MatQ Si = MatQ::Identity(n, n), P = MatQ::Identity(n, n);
-  for (Eigen::Index p = 1; p < n; ++p) {
-    P = (-P * L).eval();
-    Si += P;
-  }
-  return Si * D * (MatQ::Identity(n, n) + L);
-}
-
-MatQ rotation_blocks(int blocks, const rational& r) {
-  MatQ D = MatQ::Zero(2 * blocks, 2 * blocks);
-  for (int b = 0; b < blocks; ++b) {
-    const rational t(b + 1, blocks + 2), c = (1 - t * t) / (1 + t * t), s = 2 * t / (1 + t * t);
-    D(2 * b, 2 * b) = r * c;
-    D(2 * b, 2 * b + 1) = -r * s;
-    D(2 * b + 1, 2 * b) = r * s;
-    D(2 * b + 1, 2 * b + 1) = r * c;
-  }
-  return D;
-}
+using proofs::dense_similar;
+using proofs::rotation_blocks;
 
 }  // namespace
 

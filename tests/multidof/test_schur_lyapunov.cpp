@@ -11,40 +11,18 @@
 #include "hapstab/multidof/environment.hpp"
 #include "hapstab/numeric/lyapunov.hpp"
 #include "hapstab/poly/stability.hpp"
+#include "proofs/known_spectrum.hpp"
 
 using namespace hapstab;
 
 namespace {
 
-// S^-1 D S with S = I + strictly-lower dyadic L (exact inverse by the Neumann sum): a dense
-// rational matrix with the eigenvalues (and Jordan structure) of D.
+// a dense rational matrix with the eigenvalues and Jordan structure of D (proofs/known_spectrum.hpp)
 MatQ similar(const MatQ& D, unsigned seed) {
-  const auto n = D.rows();
   std::mt19937 g(seed);
-  std::uniform_int_distribution<int> k(-4, 4);
-  MatQ L = MatQ::Zero(n, n);
-  for (Eigen::Index i = 1; i < n; ++i)
-    for (Eigen::Index j = 0; j < i; ++j) L(i, j) = rational(k(g), 4);
-  MatQ S = MatQ::Identity(n, n) + L, Si = MatQ::Identity(n, n), P = MatQ::Identity(n, n);
-  for (Eigen::Index p = 1; p < n; ++p) {
-    P = (-P * L).eval();
-    Si += P;
-  }
-  return Si * D * S;
+  return proofs::dense_similar(D, g);
 }
-
-// 2x2 rotation-scaling blocks r (cos, sin) with rational cos = (1 - t^2)/(1 + t^2)
-MatQ rotations(int blocks, const rational& r) {
-  MatQ D = MatQ::Zero(2 * blocks, 2 * blocks);
-  for (int b = 0; b < blocks; ++b) {
-    const rational t(b + 1, blocks + 2), c = (1 - t * t) / (1 + t * t), s = 2 * t / (1 + t * t);
-    D(2 * b, 2 * b) = r * c;
-    D(2 * b, 2 * b + 1) = -r * s;
-    D(2 * b + 1, 2 * b) = r * s;
-    D(2 * b + 1, 2 * b + 1) = r * c;
-  }
-  return D;
-}
+using proofs::rotation_blocks;
 
 bool exact_schur(const MatQ& A) { return schur_stable(charpoly(A)); }
 
@@ -52,7 +30,7 @@ bool exact_schur(const MatQ& A) { return schur_stable(charpoly(A)); }
 
 TEST(Lyapunov, ProvesStableDenseMatrices) {
   for (int blocks : {2, 6, 10}) {
-    const MatQ A = similar(rotations(blocks, rational(9, 10)), 7u + static_cast<unsigned>(blocks));
+    const MatQ A = similar(rotation_blocks(blocks, rational(9, 10)), 7u + static_cast<unsigned>(blocks));
     ASSERT_TRUE(exact_schur(A));
     std::string why;
     EXPECT_TRUE(lyapunov_proves_schur_stable(A, &why)) << blocks << ": " << why;
@@ -61,7 +39,7 @@ TEST(Lyapunov, ProvesStableDenseMatrices) {
 
 TEST(Lyapunov, ProvesEigenvaluesAtRadiusOneMinus1e9) {
   const rational r = 1 - rational(1, 1000000000);
-  const MatQ A = similar(rotations(6, r), 3);  // 12 x 12, |lambda| = 1 - 1e-9
+  const MatQ A = similar(rotation_blocks(6, r), 3);  // 12 x 12, |lambda| = 1 - 1e-9
   ASSERT_TRUE(exact_schur(A));
   std::string why;
   EXPECT_TRUE(lyapunov_proves_schur_stable(A, &why)) << why;
@@ -70,7 +48,7 @@ TEST(Lyapunov, ProvesEigenvaluesAtRadiusOneMinus1e9) {
 
 TEST(Lyapunov, NoProofForUnstableOrMarginal) {
   for (const rational r : {rational(1), rational(1000000001, 1000000000), rational(11, 10)}) {
-    const MatQ A = similar(rotations(6, r), 5);
+    const MatQ A = similar(rotation_blocks(6, r), 5);
     EXPECT_FALSE(exact_schur(A));
     std::string why;
     EXPECT_FALSE(lyapunov_proves_schur_stable(A, &why)) << r;
@@ -78,7 +56,7 @@ TEST(Lyapunov, NoProofForUnstableOrMarginal) {
     EXPECT_FALSE(multidof::schur_stable(A)) << r;
   }
   // one eigenvalue just outside among stable ones
-  MatQ D = rotations(6, rational(1, 2));
+  MatQ D = rotation_blocks(6, rational(1, 2));
   D(11, 11) = rational(-1000001, 1000000);
   D(11, 10) = 0;
   D(10, 11) = 0;
