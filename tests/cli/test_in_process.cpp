@@ -48,3 +48,40 @@ TEST(InProcess, EachThreadCapturesItsOwnOutput) {
   EXPECT_EQ(b, run_in_process({"r", "--T", "1/1000", "--omega", "200", "--json"}).json.at("im"));
   EXPECT_NE(a, b);
 }
+
+// A prepared parser run point after point gives each point the JSON of a fresh run, for every
+// command a sweep can run (and an error at one point does not reach the next); a run naming other
+// options than the first is refused.
+TEST(InProcess, PreparedCommandEqualsFreshRunsPointAfterPoint) {
+  using hapstab::cli::PreparedCommand;
+  const std::string scene = std::string(HAPSTAB_SOURCE_DIR) + "/examples/multidof_case_i_nominal.toml";
+  const std::vector<std::vector<std::vector<std::string>>> commands = {
+      {{"bound", "--H", "K + B*(z-1)/(T*z)", "--T", "1/1000", "--delay", "1", "--json", "--set", "K=1000", "--set", "B=1"},
+       {"bound", "--H", "K + B*(z-1)/(T*z)", "--T", "1/1000", "--delay", "1", "--json", "--set", "K=0", "--set", "B=1/3"},
+       {"bound", "--H", "K + B*(z-1)/(T*z)", "--T", "1/1000", "--delay", "1", "--json", "--set", "K=20000", "--set", "B=0"}},
+      {{"bound", "--H", "1/(z-c)", "--T", "1", "--method", "fast", "--json", "--set", "c=2"},  // unstable: an error
+       {"bound", "--H", "1/(z-c)", "--T", "1", "--method", "fast", "--json", "--set", "c=1/2"}},
+      {{"wedge", "--H", "K*(z-1)/z", "--T", "1/100", "--json", "--set", "K=3"},
+       {"wedge", "--H", "K*(z-1)/z", "--T", "1/100", "--json", "--set", "K=1/7"}},
+      {{"multidof", "analyze", "--scene", scene, "--json", "--set", "k=1000"},
+       {"multidof", "analyze", "--scene", scene, "--json", "--set", "k=x"},  // bad value: an error
+       {"multidof", "analyze", "--scene", scene, "--json", "--set", "k=3000"}},
+  };
+  const auto outcome = [](auto&& run) -> std::string {
+    try {
+      auto r = run();
+      if (r.json.is_object()) r.json.erase("seconds");  // timings: the one thing that differs
+      return std::to_string(r.code) + " " + r.json.dump();
+    } catch (const std::exception& e) {
+      return "exception " + std::to_string(hapstab::cli::exit_code_for(e).code) + ": " + e.what();
+    }
+  };
+  for (const auto& points : commands) {
+    PreparedCommand prepared(points.front().front());
+    for (const auto& args : points)
+      EXPECT_EQ(outcome([&] { return prepared.run(args); }), outcome([&] { return run_in_process(args); })) << args[0] << " " << args.back();
+  }
+  PreparedCommand prepared("r");
+  prepared.run({"r", "--T", "1/1000", "--omega", "100", "--json"});
+  EXPECT_THROW(prepared.run({"r", "--T", "1/1000", "--json"}), std::logic_error);
+}

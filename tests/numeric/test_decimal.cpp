@@ -13,6 +13,12 @@ TEST(Decimal, SameRationalWhateverTheSpelling) {
   EXPECT_EQ(parse_rational("-2.5e+3"), rational(-2500));
   EXPECT_EQ(parse_rational("3/4"), rational(3, 4));
   EXPECT_EQ(parse_rational("7"), rational(7));
+  // leading zeros are decimal, not octal; long mantissas are exact
+  EXPECT_EQ(parse_rational("007"), rational(7));
+  EXPECT_EQ(parse_rational("0.09"), rational(9, 100));
+  EXPECT_EQ(parse_rational("00.5e1"), rational(5));
+  EXPECT_EQ(parse_rational("-000"), rational(0));
+  EXPECT_EQ(parse_rational("123456789012345678901234567890.5"), rational(integer("246913578024691357802469135781"), 2));
 }
 
 TEST(Decimal, MalformedIsRefusedByName) {

@@ -71,7 +71,10 @@ nlohmann::json run_point(const Spec& spec, const CommandShape& shape, const fs::
   if (shape.has_quiet) extra.push_back("--quiet");
   if (shape.has_out) extra.insert(extra.end(), {"--out", (dir / "points" / std::to_string(index)).string()});
   try {
-    InProcessRun r = run_in_process(study::point_args(spec, index, extra));
+    // one parser per process for all its points: every point names the same options
+    static std::unique_ptr<PreparedCommand> prepared;
+    if (!prepared) prepared = std::make_unique<PreparedCommand>(spec.command.front());
+    InProcessRun r = prepared->run(study::point_args(spec, index, extra));
     if (r.json.is_null())
       return {{"exit", r.code}, {"error", "the command printed no JSON (exit code " + std::to_string(r.code) + ")"}};
     return {{"exit", r.code}, {"json", std::move(r.json)}};

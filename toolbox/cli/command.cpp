@@ -87,14 +87,12 @@ std::unique_ptr<CLI::App> make_app_for(const std::string& name, std::vector<std:
     }
   return nullptr;
 }
-}  // namespace
 
-InProcessRun run_in_process(const std::vector<std::string>& args) {
-  std::vector<std::pair<CLI::App*, Runner>> runners;
-  auto app = args.empty() ? nullptr : make_app_for(args.front(), runners);
-  if (!app) app = make_app(runners);
+// Parses `args` with `app` and runs the subcommand parsed, capturing what it prints as JSON.
+InProcessRun parse_and_run(CLI::App& app, std::vector<std::pair<CLI::App*, Runner>>& runners,
+                           const std::vector<std::string>& args) {
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-  app->parse(reversed);
+  app.parse(reversed);
   struct Capture {
     std::vector<nlohmann::json> printed;
     Capture() { json_capture = &printed; }
@@ -108,6 +106,28 @@ InProcessRun run_in_process(const std::vector<std::string>& args) {
     }
   if (!capture.printed.empty()) out.json = std::move(capture.printed.back());
   return out;
+}
+}  // namespace
+
+InProcessRun run_in_process(const std::vector<std::string>& args) {
+  std::vector<std::pair<CLI::App*, Runner>> runners;
+  auto app = args.empty() ? nullptr : make_app_for(args.front(), runners);
+  if (!app) app = make_app(runners);
+  return parse_and_run(*app, runners, args);
+}
+
+PreparedCommand::PreparedCommand(const std::string& command) : app_(make_app_for(command, runners_)) {
+  if (!app_) throw InputError("no command '" + command + "'");
+}
+
+InProcessRun PreparedCommand::run(const std::vector<std::string>& args) {
+  std::vector<std::string> names;
+  for (const auto& a : args)
+    if (a.rfind("--", 0) == 0) names.push_back(a.substr(0, a.find('=')));
+  if (!ran_) names_ = names, ran_ = true;
+  if (names != names_) throw std::logic_error("PreparedCommand::run: the options differ from the first run's");
+  app_->clear();
+  return parse_and_run(*app_, runners_, args);
 }
 
 ErrorExit exit_code_for(const std::exception& e) {

@@ -1,14 +1,33 @@
 #include "hapstab/numeric/decimal.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <vector>
 
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab {
 
+namespace {
+// 10^k as an integer; the powers up to 10^400 computed once (formatting and parsing every
+// number asked for three or four of them, each allocating).
+const integer& ten_to(unsigned k) {
+  static const std::vector<integer> table = [] {
+    std::vector<integer> t(401);
+    t[0] = 1;
+    for (size_t i = 1; i < t.size(); ++i) t[i] = t[i - 1] * 10;
+    return t;
+  }();
+  if (k < table.size()) return table[k];
+  thread_local integer big;
+  big = bmp::pow(integer(10), k);
+  return big;
+}
+}  // namespace
+
 rational pow10(long e) {
-  integer p = bmp::pow(integer(10), static_cast<unsigned>(e < 0 ? -e : e));
+  const integer& p = ten_to(static_cast<unsigned>(e < 0 ? -e : e));
   return e >= 0 ? rational(p) : rational(integer(1), p);
 }
 
@@ -19,22 +38,17 @@ std::optional<rational> parse_decimal(std::string_view s) {
   size_t i = 0;
   bool neg = false;
   if (i < s.size() && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
-  integer mant = 0;
+  std::string digits;  // the mantissa's digits without the point: one GMP conversion, not one per digit
   long scale = 0;
-  int ndigits = 0;
-  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
-    mant = mant * 10 + (s[i++] - '0');
-    ++ndigits;
-  }
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) digits += s[i++];
   if (i < s.size() && s[i] == '.') {
     ++i;
     while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) {
-      mant = mant * 10 + (s[i++] - '0');
-      ++ndigits;
+      digits += s[i++];
       --scale;
     }
   }
-  if (ndigits == 0) return std::nullopt;
+  if (digits.empty()) return std::nullopt;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
     ++i;
     bool eneg = false;
@@ -49,8 +63,10 @@ std::optional<rational> parse_decimal(std::string_view s) {
     scale += eneg ? -ex : ex;
   }
   if (i != s.size()) return std::nullopt;
-  rational q = rational(mant) * pow10(scale);
-  return neg ? rational(-q) : q;
+  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));  // "007" would be octal to GMP
+  integer mant(digits.c_str());
+  if (neg) mant = -mant;
+  return scale == 0 ? rational(mant) : rational(mant) * pow10(scale);
 }
 
 std::string_view trim(std::string_view s) {
@@ -92,11 +108,15 @@ std::string to_decimal(const rational& x, int digits) {
   const bool neg = x < 0;
   // all in integers (no rational canonicalisation): |x| = P/Q, and |x| 10^k = N/M
   const integer P = abs(num(x)), Q = den(x);
+  if (Q == 1) {  // an integer of at most `digits` digits is itself
+    std::string s = P.str();
+    if (static_cast<long>(s.size()) <= digits) return neg ? "-" + s : s;
+  }
   auto scaled = [&](long k, integer& N, integer& M) {
     N = P;
     M = Q;
-    if (k >= 0) N *= bmp::pow(integer(10), static_cast<unsigned>(k));
-    else M *= bmp::pow(integer(10), static_cast<unsigned>(-k));
+    if (k >= 0) N *= ten_to(static_cast<unsigned>(k));
+    else M *= ten_to(static_cast<unsigned>(-k));
   };
   // e = floor(log10 |x|), estimated from the binary exponents and then fixed exactly
   long ep = 0, eq = 0;
@@ -113,7 +133,7 @@ std::string to_decimal(const rational& x, int digits) {
   scaled(digits - 1 - e, N, M);
   integer n = N / M, r = N - n * M;  // floor; round half to even
   if (2 * r > M || (2 * r == M && (n % 2) != 0)) n += 1;
-  if (n == bmp::pow(integer(10), static_cast<unsigned>(digits))) {
+  if (n == ten_to(static_cast<unsigned>(digits))) {
     n /= 10;
     ++e;
   }
