@@ -657,6 +657,24 @@ bool narrow_enough(const MaxGain& m, int digits) {
 
 }  // namespace
 
+Loop mass_damper_wall(const rational& m, const rational& b, const rational& B, const rational& T, int n) {
+  if (m < 0 || T <= 0 || (m == 0 && b == 0))
+    throw InputError("mass_damper_wall: need m >= 0, T > 0 and m, b not both 0");
+  Loop loop;
+  loop.T = T;
+  loop.delay = n;
+  loop.plant = tf(QP(rational(1)), QP{rational(0), b, m});
+  loop.H = tf(QP{-B, B}, QP{rational(0), T}, T);  // B (z - 1)/(T z)
+  loop.H_gain = tf(QP(rational(1)), QP(rational(1)), T);
+  return loop;
+}
+
+CirclePolynomials circle_polynomials(const Polynomial<rational>& c0, const Polynomial<rational>& c1) {
+  if (c0.is_zero() || c1.is_zero()) throw InputError("circle_polynomials: c0 and c1 must not be zero");
+  const CirclePolys<rational> c = circle_polys<rational>(c0.coeffs(), c1.coeffs());
+  return {QP(c.Q), QP(c.R), QP(c.S)};
+}
+
 MaxGain max_gain(const Loop& loop, int digits) {
   if (!loop.H_gain) throw InputError("max_gain: H_gain (the part of H multiplied by the gain) is missing");
   if (loop.H_gain->H.is_zero()) throw InputError("the gain does not appear in H");

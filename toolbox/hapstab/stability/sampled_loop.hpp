@@ -74,4 +74,16 @@ struct MaxGain {
 /// status says why not).
 MaxGain max_gain(const Loop& loop, int digits);
 
+/// The standard case of the literature (Gil et al. 2004, Hulin et al. 2006) and of paper 001's
+/// wall: device 1/(m s^2 + b s), H = K + B (z - 1)/(T z) with the gain K free (H = H0 + K * 1),
+/// delay n. InputError for m < 0, T <= 0 or m = b = 0.
+Loop mass_damper_wall(const rational& m, const rational& b, const rational& B, const rational& T, int n);
+
+/// The crossing polynomials of max_gain, exact, for real polynomials c0, c1 and x = cos(theta):
+/// Im(c0 conj c1)(e^{j theta}) = sin(theta) Q(x), Re(c0 conj c1) = R(x), |c1|^2 = S(x).
+struct CirclePolynomials {
+  Polynomial<rational> Q, R, S;
+};
+CirclePolynomials circle_polynomials(const Polynomial<rational>& c0, const Polynomial<rational>& c1);
+
 }  // namespace hapstab::stability
