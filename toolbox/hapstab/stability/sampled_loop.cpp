@@ -490,10 +490,45 @@ Ball newton(const Vec<Ball>& Q, const Vec<Ball>& dQ, Ball X) {
 
 int sign_of(const Ball& b) { return arb_is_positive(b.get()) ? 1 : arb_is_negative(b.get()) ? -1 : 0; }
 
-/// Every root of Q in (-1, 1), isolated by bisection (centered form, monotonicity, sign change)
-/// and refined by interval Newton; nullopt when some piece cannot be decided at this precision.
+/// The roots of Q in (-1, 1) from all its complex roots (acb_poly_find_roots, every one isolated;
+/// the real ones proven real by acb_poly_validate_real_roots); nullopt when that does not succeed.
+std::optional<std::vector<Ball>> real_roots_from_complex(Vec<Ball> Q, const Vec<Ball>& dQ) {
+  while (!Q.empty() && arb_is_zero(Q.back().get())) Q.pop_back();  // exact zeros on top (c1(0) = 0, ...)
+  const slong deg = static_cast<slong>(Q.size()) - 1;
+  if (deg < 1 || arb_contains_zero(Q.back().get())) return std::nullopt;
+  acb_poly_t p;
+  acb_poly_init(p);
+  for (slong i = 0; i <= deg; ++i) {
+    acb_t z;
+    acb_init(z);
+    acb_set_arb(z, Q[static_cast<size_t>(i)].get());
+    acb_poly_set_coeff_acb(p, i, z);
+    acb_clear(z);
+  }
+  acb_ptr roots = _acb_vec_init(deg);
+  std::optional<std::vector<Ball>> out;
+  if (acb_poly_find_roots(roots, p, nullptr, 0, g_prec) == deg && acb_poly_validate_real_roots(roots, p, g_prec)) {
+    out.emplace();
+    const Ball one(rational(1)), minus_one(rational(-1));
+    for (slong i = 0; i < deg && out; ++i) {
+      if (!arb_contains_zero(acb_imagref(roots + i))) continue;  // a non-real root
+      const Ball X(acb_realref(roots + i));
+      if (arb_gt(X.get(), one.get()) || arb_lt(X.get(), minus_one.get())) continue;
+      if (arb_lt(X.get(), one.get()) && arb_gt(X.get(), minus_one.get())) out->push_back(newton(Q, dQ, X));
+      else out.reset();  // a real root not separated from x = +-1
+    }
+  }
+  _acb_vec_clear(roots, deg);
+  acb_poly_clear(p);
+  return out;
+}
+
+/// Every root of Q in (-1, 1): from the complex roots when they are all isolated, else by
+/// bisection (centered form, monotonicity, sign change); each refined by interval Newton.
+/// nullopt when some piece cannot be decided at this precision.
 std::optional<std::vector<Ball>> roots_in_unit_interval(const Vec<Ball>& Q) {
   const Vec<Ball> dQ = derivative(Q);
+  if (auto r = real_roots_from_complex(Q, dQ)) return r;
   struct Piece { rational lo, hi; int depth; };
   std::vector<Piece> todo{{rational(-1), rational(1), 0}};
   std::vector<Ball> out;
