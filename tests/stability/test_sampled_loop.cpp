@@ -209,3 +209,17 @@ TEST(Loop, BadDataAreInputErrors) {
   loop.H = parse_tf("z^2", pz);  // z^-n H not causal
   EXPECT_THROW(stability::decide(loop), InputError);
 }
+
+TEST(MaxGain, LightDeviceCrossesAtMinusOne) {
+  // n = 0, B = 0: c = z^2 + (K alpha - 1 - e) z + e + K beta; with bT/m = 10 the root leaves at
+  // z = -1 first, at K = 2(1 + e)/(alpha - beta) (closed form in 60-digit MPFR).
+  const Case c{"1/10000", "1", "0", "1/1000", 0};
+  const stability::MaxGain g = stability::max_gain(wall_loop(c, std::nullopt), 20);
+  ASSERT_EQ(g.outcome, Outcome::holds);
+  EXPECT_EQ(g.crossing, "z = -1");
+  const F m("0.0001"), b(1), T("0.001"), a = b / m, e = exp(-a * T);
+  const F alpha = (T - (1 - e) / a) / b, beta = ((1 - e) / a - T * e) / b, K = 2 * (1 + e) / (alpha - beta);
+  EXPECT_LT(abs(mid(g.enclosure) - K) / K, F("1e-19"));
+  ASSERT_TRUE(g.theta);
+  EXPECT_NEAR(to_real<double>(g.theta->lo), 3.14159265358979, 1e-12);
+}
