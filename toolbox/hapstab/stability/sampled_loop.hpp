@@ -19,9 +19,10 @@
 // number of roots inside |z| < 1 changes only at a K where c has a root on the circle: at
 // z = 1 (K = -c0(1)/c1(1)), z = -1, or z = e^{+-j theta}, where c0 conj(c1) is real, i.e.
 // Im(c0 conj c1)(theta) = sin(theta) Q(cos theta) = 0, and then K = -Re(c0 conj c1)/|c1|^2 =
-// -R(x)/S(x) with x = cos(theta) (Chebyshev T and U bases). The supremum is the smallest
-// positive such K when the loop is stable just above K = 0 (checked at one K below it),
-// proven in proofs/ext_stability.cpp (ext.stability.crossing).
+// -R(x)/S(x) with x = cos(theta) (Chebyshev T and U bases; the identity is the claim
+// ext.stability.crossing of proofs/ext_stability.cpp). The roots move continuously with K and
+// their number is fixed (the leading coefficient does not depend on K), so the supremum is the
+// smallest positive such K when the loop is stable at one K below it (docs/stability.md).
 #pragma once
 
 #include <optional>
