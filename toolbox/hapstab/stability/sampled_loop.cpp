@@ -448,7 +448,7 @@ CirclePolys<C> circle_polys(const Vec<C>& a, const Vec<C>& b) {
 std::optional<Vec<Ball>> roots_poly(const Vec<rational>& Q) {
   QP q = squarefree(QP(Q));
   if (q.is_zero()) return std::nullopt;
-  for (const rational x : {rational(1), rational(-1)})
+  for (const rational& x : {rational(1), rational(-1)})
     while (q.degree() > 0 && q(x) == 0) q = divmod(q, QP{-x, rational(1)}).first;
   return lift<Ball>(q);
 }
