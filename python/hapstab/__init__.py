@@ -26,16 +26,16 @@ from typing import Any, Dict, Mapping, Optional, Sequence
 
 from . import _core
 from ._exact import exact, state_space_json, transfer_function
-from ._results import Analysis, Bound, Design, PassivityLevel, R, Result, Simulation, Wedge
+from ._results import Analysis, Bound, Design, PassivityLevel, R, Result, Simulation, Stability, Wedge
 
 __version__: str = _core.__version__
 InputError = _core.InputError
 NumericalError = _core.NumericalError
 InputError.__module__ = NumericalError.__module__ = "hapstab"
 
-__all__ = ["r", "bound", "wedge", "passivity_level", "simulate", "multidof", "run", "examples_dir",
+__all__ = ["r", "bound", "stability", "wedge", "passivity_level", "simulate", "multidof", "run", "examples_dir",
            "InputError", "NumericalError", "Result", "R", "Bound", "Wedge", "PassivityLevel", "Simulation",
-           "Analysis", "Design", "sweep", "Sweep"]
+           "Analysis", "Design", "sweep", "Sweep", "Stability"]
 
 
 def run(*args: str) -> Result:
@@ -90,6 +90,24 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
     if allow_noncausal:
         args.append("--allow-noncausal")
     return Bound(*_json(args))
+
+
+def stability(plant: str, H: Any, T: Any = None, delay: int = 0, operator: Optional[str] = None,
+              max: Optional[str] = None, digits: int = 20,  # noqa: A002 -- the command's option name
+              params: Optional[Mapping[str, Any]] = None) -> Stability:
+    """Schur stability of the sampled loop: device plant(s) (force -> position, an expression in s)
+    behind a zero-order hold, wall force -z^-n H(z) x(kT), optional operator impedance Z_op(s).
+    With max="K" (a gain H is affine in): the largest K with the loop stable on (0, K)."""
+    expr, T_text = transfer_function(H, T)
+    if T_text is None:
+        raise InputError("T is required (the sample period)")
+    args = ["stability", f"--plant={plant}", f"--H={expr}", f"--T={T_text}", f"--delay={int(delay)}",
+            f"--digits={int(digits)}", "--json", *_sets(params)]
+    if operator is not None:
+        args.append(f"--operator={operator}")
+    if max is not None:
+        args.append(f"--max={max}")
+    return Stability(*_json(args))
 
 
 def wedge(H: Any, T: Any = None, digits: int = 20, params: Optional[Mapping[str, Any]] = None) -> Wedge:

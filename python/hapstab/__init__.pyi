@@ -44,6 +44,12 @@ class Bound(Result):
     @property
     def enclosure(self) -> Tuple[str, str]: ...
 
+class Stability(Result):
+    status: str
+    @property
+    def value(self) -> Any: ...
+    def __bool__(self) -> bool: ...
+
 class Wedge(Result):
     verdict: str
     wedge_holds: bool
@@ -83,6 +89,9 @@ def r(T: Exact, omega: Exact, digits: int = ..., terms: Optional[int] = ...) -> 
 def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,
           eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[Mapping[str, Exact]] = ...,
           damping: Optional[Exact] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...) -> Bound: ...
+def stability(plant: str, H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ...,
+              operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
+              params: Optional[Mapping[str, Exact]] = ...) -> Stability: ...
 def wedge(H: TransferFunctionInput, T: Optional[Exact] = ..., digits: int = ...,
           params: Optional[Mapping[str, Exact]] = ...) -> Wedge: ...
 def passivity_level(H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,

@@ -97,6 +97,20 @@ class Bound(Result):
                 f"omega={self._data.get('omega')!r})")
 
 
+class Stability(Result):
+    """Schur stability of the sampled haptic loop (`hapstab stability`); with max=NAME the largest
+    stable gain: value is `max` (a decimal string, "inf", or "0" when unstable for every small gain)."""
+
+    @property
+    def value(self) -> Any:
+        return self._data["max"] if "max" in self._data else self._data.get("stable")
+
+    def __bool__(self) -> bool:
+        if "max" in self._data:
+            return self._data["max"] not in (None, "0")
+        return bool(self._data.get("stable"))
+
+
 class Wedge(Result):
     """The wedge criterion (25) and Tsypkin's condition (21) of paper 002 (`hapstab wedge`)."""
 

@@ -80,6 +80,19 @@ std::vector<Case> catalogue(const std::string& out) {
       {"bound", "--num", {"--num", "1 x", "--den", "1", "--T", "1"}, "--num: coefficient 2"},
       {"bound", "--den", {"--num", "1", "--den", "0 1", "--T", "1"}, "--den: the leading coefficient"},
       {"bound", "--mat", {"--mat", "/nonexistent.mat:G", "--T", "1"}, "--mat /nonexistent.mat"},
+      {"stability", "--plant", {"--plant", "1/(s", "--H", "1", "--T", "1"}, "--plant: expression"},
+      {"stability", "--plant", {"--plant", "s", "--H", "1", "--T", "1"}, "not strictly proper"},
+      {"stability", "--H", {"--plant", "1/s^2", "--H", "z^3", "--T", "1"}, "not causal"},
+      {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
+      {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "-1"}, "--delay"},
+      {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "500"}, "--delay"},
+      {"stability", "--operator", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--operator", "q"}, "--operator"},
+      {"stability", "--set", {"--plant", "1/s^2", "--H", "K", "--T", "1", "--set", "K"}, "--set 'K'"},
+      {"stability", "--max", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--max", "K"}, "does not depend on K"},
+      {"stability", "--max", {"--plant", "1/(m*s^2)", "--H", "1", "--T", "1", "--max", "m"}, "appears in --plant"},
+      {"stability", "--max", {"--plant", "1/s^2", "--H", "1/(1+K*z)", "--T", "1", "--max", "K"}, "affine"},
+      {"stability", "--digits", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--digits", "0"}, "--digits"},
+      {"stability", "--json", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--json=maybe"}, "--json"},
       {"wedge", "--H", {"--H", "1/(", "--T", "1"}, "--H"},
       {"wedge", "--num", {"--num", "[1", "--den", "1"}, "--num: '['"},
       {"wedge", "--den", {"--num", "1", "--den", "[]"}, "--den: no coefficients"},
@@ -162,7 +175,8 @@ std::vector<Case> catalogue(const std::string& out) {
 }
 
 const char* const kCommands[] = {"r",           "bound",    "wedge",     "passivity-level", "limit-cycle",    "simulate",
-                                 "proofs",      "reproduce", "figure",   "multidof analyze", "multidof design", "plot"};
+                                 "proofs",      "reproduce", "figure",   "multidof analyze", "multidof design", "plot",
+                                 "stability"};
 
 TEST(BadInput, EveryOptionOfEveryCommandHasACase) {
   const auto cases = catalogue("unused");

@@ -416,3 +416,24 @@ def test_other_threads_run_while_hapstab_computes():
 def test_run_is_the_escape_hatch():
     res = hapstab.run("bound", "--H", WALL, "--T", "1/1000", "--set", "K=1000", "--set", "B=5", "--json")
     assert res.bound == "5.5" and res.exit_code == 0
+
+
+# ---- stability (issue 19) --------------------------------------------------------------------
+
+def test_stability_max_equals_the_command_line():
+    device = dict(plant="1/(m*s^2 + b*s)", H=WALL, T="1/1000", delay=2, params={"m": 1, "b": 1, "B": 2})
+    s = hapstab.stability(**device, max="K", digits=25)
+    code, j = cli("stability", "--plant", device["plant"], "--H", WALL, "--T", "1/1000", "--delay", "2",
+                  "--set", "m=1", "--set", "b=1", "--set", "B=2", "--max", "K", "--digits", "25")
+    assert code == 0 and s.exit_code == 0
+    assert s.value == j["max"] and s.status == "certified" and s.crossing["at"] == "complex pair"
+    assert bool(s)
+    K = float(s)
+    assert hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 0.99)}}).stable is True
+    above = hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 1.01)}})
+    assert above.stable is False and above.exit_code == 1 and not above
+
+
+def test_stability_bad_input_raises():
+    with pytest.raises(hapstab.InputError, match="strictly proper"):
+        hapstab.stability("s", "1", T="1/1000")

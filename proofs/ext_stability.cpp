@@ -1,0 +1,190 @@
+// proofs/ext_stability.cpp -- beyond the papers (issue 19): the exact stability boundary of the
+// sampled haptic loop against the passivity boundary of paper 001.
+//
+// The loop: device 1/(m s^2 + b s) behind a zero-order hold, wall H = K + B (z-1)/(T z), delay
+// z^-n (stability/sampled_loop.hpp). Claims:
+//   crossing identity   the polynomials max_gain solves are Im/Re/|.|^2 of c0 conj c1 on |z| = 1;
+//   pure mass, n = 0    K_max = (2B/T)(2m - BT)/(2m + BT) (Jury on the cubic; never passive);
+//   damper, B = 0, n=0  K_max = b(1-e)/((m/b)(1-e) - T e), e = e^{-bT/m}, and K_max > 2b/T, the
+//                       passivity limit (Colgate; Gil et al. 2004 give 2b/T as the first-order
+//                       stability limit): f(x) = x - 2 + (2+x)e^{-x} > 0 for x = bT/m > 0;
+//   passivity => stability on the chart's grid (b*(K_stab) >= b: the passive gains lie below);
+//   the small-T law K_stab ~ 2(b + B)/((2n+1) T) against passivity's 2(b - B)/T at n = 0.
+#include <sstream>
+
+#include <boost/multiprecision/mpfi.hpp>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/interval.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "hapstab/poly/stability.hpp"
+#include "hapstab/poly/unit_circle.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
+#include "proofs/proof.hpp"
+
+namespace {
+
+using namespace hapstab;
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+
+RF horner(const P& p, const RF& x) {
+  RF r(rational(0));
+  for (int i = p.degree(); i >= 0; --i) r = r * x + RF(p.coeff(i));
+  return r;
+}
+
+HAPSTAB_PROOF(ext_stability_crossing, "ext", "the crossing polynomials of stability --max") {
+  // c0, c1 real; with z = (1 + jt)/(1 - jt), x = cos(theta) = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2):
+  // Im(c0 conj c1) = sin(theta) Q(x), Re = R(x), |c1|^2 = S(x), as rational functions of t.
+  int cases = 0, ok = 0;
+  const RF one_plus(P{rational(1), rational(0), rational(1)});
+  const RF x = RF(P{rational(1), rational(0), rational(-1)}) / one_plus, sin_t = RF(P{rational(0), rational(2)}) / one_plus;
+  for (int d0 = 1; d0 <= 6; ++d0)
+    for (int d1 = 0; d1 <= 5; ++d1) {
+      std::vector<rational> a, b;
+      for (int i = 0; i <= d0; ++i) a.push_back(rational((i * 7 + d1 * 3) % 11 - 5, 1 + i % 3));
+      for (int i = 0; i <= d1; ++i) b.push_back(rational((i * 5 + d0) % 7 - 3 + (i == d1 ? 7 : 0), 2 + i % 2));
+      const P c0(a), c1(b);
+      const stability::CirclePolynomials cp = stability::circle_polynomials(c0, c1);
+      const int n = std::max(d0, d1);
+      const ComplexPolynomial u0 = unit_circle_polynomial(c0, n), u1 = unit_circle_polynomial(c1, n);
+      const ComplexPolynomial prod = u0 * conj(u1);  // = (1 + t^2)^n c0 conj c1
+      const RF scale = one_plus.pow(static_cast<unsigned>(n));
+      const bool im = RF(prod.im) == scale * sin_t * horner(cp.Q, x);
+      const bool re = RF(prod.re) == scale * horner(cp.R, x);
+      const bool s = RF(norm(u1)) == scale * horner(cp.S, x);
+      ++cases;
+      ok += im && re && s;
+    }
+  check.claim("ext.stability.crossing", "Im/Re(c0 conj c1)",
+              "on |z| = 1, Im(c0 conj c1) = sin(theta) Q(cos theta), Re = R(cos theta), |c1|^2 = S(cos theta) for the "
+              "Q, R, S that stability --max isolates",
+              Status::exact, ok == cases, std::to_string(ok) + "/" + std::to_string(cases) + " polynomial pairs (degrees 1..6 by 0..5), identities in Q(t)");
+}
+
+HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stable stiffness") {
+  // c(z) = z (z-1)^2 + (T^2/2m)(z+1)(K z + (B/T)(z-1)) = z^3 + (k+q-2) z^2 + (1+k) z - q with
+  // k = K T^2/(2m), q = B T/(2m). Jury: c(1) = 2k > 0, c(-1) = -4 < 0, q < 1 and
+  // 1 - q^2 > k(1+q) + (1-q)^2, i.e. k < 2q(1-q)/(1+q): K < (2B/T)(2m - BT)/(2m + BT).
+  int cases = 0, ok = 0, inside = 0;
+  std::ostringstream ev;
+  for (const rational m : {rational(1, 10), rational(1), rational(5)})
+    for (const rational B : {rational(1, 10), rational(2), rational(50)})
+      for (const rational T : {rational(1, 1000), rational(1, 100)}) {
+        if (B * T >= 2 * m) continue;
+        const rational K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
+        stability::Loop loop = stability::mass_damper_wall(m, 0, B, T, 0);
+        const stability::MaxGain g = stability::max_gain(loop, 20);
+        const rational k = K * T * T / (2 * m), q = B * T / (2 * m);
+        const P c{-q, 1 + k, k + q - 2, rational(1)};  // the cubic at the closed form: a pair on |z| = 1
+        auto at = [&](const rational& KK) {
+          stability::Loop l = loop;
+          l.H = tf((loop.H.H + RF(KK)).num(), (loop.H.H + RF(KK)).den(), T);
+          l.H_gain.reset();
+          return stability::decide(l);
+        };
+        const auto below = at(K * rational(999, 1000)), above = at(K * rational(1001, 1000));
+        ++cases;
+        const bool good = unit_circle_roots(c) == 2 && below.verdict.holds() && below.verdict.status == Status::exact &&
+                          above.verdict.fails() && g.outcome == Outcome::holds && g.enclosure.contains(K);
+        ok += good;
+        inside += g.enclosure.contains(K);
+      }
+  ev << ok << "/" << cases << " (m, B, T): the cubic at the closed form has a root pair on |z| = 1 (exact count), exact "
+     << "Schur-Cohn stable at 0.999 K*, unstable at 1.001 K*, and stability --max's enclosure contains K* (" << inside
+     << "/" << cases << ")";
+  check.claim("ext.stability.pure_mass", "Jury, n = 0",
+              "device 1/(m s^2), wall K + B(z-1)/(Tz): stable iff 0 < BT < 2m and 0 < K < (2B/T)(2m - BT)/(2m + BT) "
+              "(never passive: b = 0 < b* = KT/2 + B)",
+              Status::exact, ok == cases, ev.str());
+}
+
+HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0: exact limit above 2b/T") {
+  // P_d = (alpha z + beta)/((z-1)(z-e)), c = z^2 + (K alpha - 1 - e) z + e + K beta. Jury: c(1) = K(alpha+beta) > 0,
+  // c(-1) > 0 iff K < 2(1+e)/(alpha - beta), and e + K beta < 1 iff K < (1-e)/beta = b(1-e)/((m/b)(1-e) - T e).
+  // With x = bT/m: (1-e)/beta > 2b/T  <=>  f(x) = x - 2 + (2+x)e^{-x} > 0, f(0) = 0, f' = 1 - (1+x)e^{-x} > 0.
+  using I = interval<60>;
+  int cases = 0, ok = 0;
+  for (const rational m : {rational(1, 10), rational(1), rational(10)})
+    for (const rational b : {rational(1, 100), rational(1), rational(20)})
+      for (const rational T : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
+        const I mi(to_decimal(m, 40)), bi(to_decimal(b, 40)), Ti(to_decimal(T, 40));
+        const I a = bi / mi, e = exp(-a * Ti), alpha = (Ti - (1 - e) / a) / bi, beta = ((1 - e) / a - Ti * e) / bi;
+        const I K1 = (1 - e) / beta, K2 = 2 * (1 + e) / (alpha - beta);
+        const stability::MaxGain g = stability::max_gain(stability::mass_damper_wall(m, b, 0, T, 0), 20);
+        ++cases;
+        const bool binds = upper_rational(K1) < lower_rational(K2);  // the complex pair, not z = -1
+        const bool agree = g.outcome == Outcome::holds && g.crossing == "complex pair" &&
+                           g.enclosure.lo <= upper_rational(K1) && lower_rational(K1) <= g.enclosure.hi;
+        const bool above = lower_rational(K1) > 2 * b / T;
+        ok += binds && agree && above;
+      }
+  check.claim("ext.stability.damper_n0", "Jury, n = 0, B = 0",
+              "device 1/(m s^2 + b s), spring K, no delay: K_max = b(1-e)/((m/b)(1-e) - Te), e = e^{-bT/m} (the complex "
+              "pair; z = -1 comes later), and K_max > 2b/T (passivity's limit) since x - 2 + (2+x)e^{-x} > 0",
+              Status::certified, ok == cases,
+              std::to_string(ok) + "/" + std::to_string(cases) + " (m, b, T): interval closed forms (60 digits) against "
+              "stability --max; both Jury limits and the comparison with 2b/T certified");
+}
+
+HAPSTAB_PROOF(ext_stability_passive_implies_stable, "ext", "passivity => stability on the chart's grid") {
+  // At K = K_stab (the first root on |z| = 1) the loop is not passive: b*(K_stab, B, n) >= b. The passive gains
+  // {K >= 0 : b*(K, B) < b} form an interval containing 0 (b* is convex in K, b*(0) = B), so they lie below K_stab.
+  int cases = 0, ok = 0;
+  double worst = 1e300, widest = 0;
+  std::string worst_at;
+  const rational b(1), T(1, 1000);
+  for (const rational m : {rational(1), rational(1, 100), rational(1, 1000)})  // the chart's masses
+    for (int n = 0; n <= 3; ++n)
+      for (int i = 0; i <= 12; ++i) {
+        const rational B(i, 10);
+        const stability::MaxGain g = stability::max_gain(stability::mass_damper_wall(m, b, B, T, n), 12);
+        passivity::BoundProblem p;
+        p.H = RF(g.enclosure.lo) + RF(P{-B, B}, P{rational(0), T});
+        p.T = T;
+        p.delay = n;
+        const passivity::Bound bs = passivity::bound(p, passivity::Method::certified, 12);
+        ++cases;
+        const bool good = g.outcome == Outcome::holds && !bs.infinite && bs.enclosure && bs.enclosure->lo >= b;
+        ok += good;
+        const double ratio = bs.enclosure ? to_real<double>(bs.enclosure->lo / b) : 0;
+        if (ratio < worst) {
+          worst = ratio;
+          worst_at = "m = " + m.str() + ", n = " + std::to_string(n) + ", B = " + B.str();
+        }
+        widest = std::max(widest, ratio);
+      }
+  std::ostringstream ev;
+  ev << ok << "/" << cases << " grid points (m = 1, 0.01, 0.001 kg; n = 0..3; B = 0, 0.1, .., 1.2; b = 1, T = 1 ms): b*(K_stab)/b >= "
+     << worst << " (closest at " << worst_at << "), up to " << widest;
+  check.claim("ext.stability.passive_implies_stable", "(45)/(53) vs Schur",
+              "every passive wall (b > b*) of the chart is stable: at the stability limit K_stab, b*(K_stab, B, n) >= b",
+              Status::certified, ok == cases, ev.str());
+}
+
+HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T, against passivity") {
+  // Observed: K_stab T (2n+1)/(2(b + B)) -> 1 as T -> 0, while passivity at n = 0 allows K < 2(b - B)/T:
+  // B adds to the damping for stability and subtracts from it for passivity, and the delay divides by 2n+1.
+  int cases = 0, ok = 0;
+  double worst = 0;
+  const rational m(1), b(1);
+  for (int n = 0; n <= 3; ++n)
+    for (const rational B : {rational(0), rational(1, 2), rational(2)}) {
+      const rational T(1, 100000);
+      const stability::MaxGain g = stability::max_gain(stability::mass_damper_wall(m, b, B, T, n), 12);
+      const double law = 2 * to_real<double>(b + B) / ((2 * n + 1) * to_real<double>(T));
+      const double err = std::abs(to_real<double>(g.enclosure.lo) / law - 1);
+      worst = std::max(worst, err);
+      ++cases;
+      ok += g.outcome == Outcome::holds && err < 1e-3;
+    }
+  std::ostringstream ev;
+  ev << ok << "/" << cases << " (n = 0..3, B = 0, 0.5, 2; m = b = 1, T = 1e-5): max |K_stab/law - 1| = " << worst;
+  check.claim("ext.stability.small_T_law", "numeric observation",
+              "for small T, K_stab ~ 2(b + B)/((2n + 1) T) (relative error < 1e-3 at T = 1e-5), against passivity's "
+              "2(b - B)/T at n = 0: the gap (b + B)/(b - B) grows with B; with delay passivity is not monotone in B",
+              Status::numeric, ok == cases, ev.str());
+}
+
+}  // namespace

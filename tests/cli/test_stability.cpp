@@ -1,0 +1,75 @@
+// `hapstab stability` end to end (in process, as sweep and Python call it): the JSON keys and
+// exit codes of the verdict and of --max, and a sweep of --max over the wall's damper B.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli/cli_run.hpp"
+#include "cli/command.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using hapstab::cli::run_in_process;
+
+const std::vector<std::string> kDevice{"--plant", "1/(m*s^2 + b*s)", "--set", "m=1", "--set", "b=1",
+                                       "--H",     "K + B*(z-1)/(T*z)", "--T", "1/1000", "--set", "B=2"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
+  a.insert(a.begin(), "stability");
+  a.insert(a.end(), more.begin(), more.end());
+  a.push_back("--json");
+  return a;
+}
+
+TEST(StabilityCli, MaxThenVerdictOnBothSides) {
+  const auto m = run_in_process(with(kDevice, {"--max", "K", "--delay", "1", "--digits", "25"}));
+  ASSERT_EQ(m.code, 0) << m.json.dump();
+  EXPECT_EQ(m.json["status"], "certified");
+  EXPECT_EQ(m.json["crossing"]["at"], "complex pair");
+  ASSERT_EQ(m.json["enclosure"].size(), 2u);
+  const std::string max = m.json["max"];
+  EXPECT_EQ(max.size(), 26u) << max;  // 25 significant digits and the point
+  const double K = std::stod(max);
+  auto at = [&](double k) { return run_in_process(with(kDevice, {"--set", "K=" + std::to_string(k), "--delay", "1"})); };
+  const auto below = at(K * 0.999), above = at(K * 1.001);
+  EXPECT_EQ(below.code, 0);
+  EXPECT_EQ(below.json["stable"], true);
+  EXPECT_EQ(below.json["status"], "certified");
+  EXPECT_EQ(above.code, 1);
+  EXPECT_EQ(above.json["stable"], false);
+  ASSERT_EQ(above.json["spectral_radius"].size(), 2u);
+  EXPECT_GT(std::stod(above.json["spectral_radius"][0].get<std::string>()), 1.0);
+}
+
+TEST(StabilityCli, UnstableForEverySmallGainExitsOne) {
+  std::vector<std::string> a = kDevice;
+  a.back() = "B=-2";  // a wall that pushes harder than b damps (B = -b: a double root at z = 1, undecided)
+  const auto r = run_in_process(with(a, {"--max", "K"}));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.json["max"], "0");
+}
+
+TEST(StabilityCli, PureMassIsExact) {
+  const auto r = run_in_process({"stability", "--plant", "1/s^2", "--H", "100 + 5*(z-1)/(T*z)", "--T", "1/1000", "--json"});
+  EXPECT_EQ(r.json["status"], "exact");
+  EXPECT_EQ(r.json["stable"], true);
+  EXPECT_EQ(r.code, 0);
+}
+
+TEST(StabilityCli, SweepsMaxOverTheDamper) {
+  const auto dir = hapstab_test::fresh_dir("stability_sweep");
+  const auto spec = dir / "spec.toml";
+  std::ofstream(spec) << "command = \"stability\"\n[args]\nplant = \"1/(s^2 + s)\"\nH = \"K + B*(z-1)/(T*z)\"\n"
+                         "T = \"1/1000\"\nmax = \"K\"\ndelay = 2\ndigits = 20\n[axes]\n"
+                         "B = { from = \"0\", to = \"4\", points = 3 }\n";
+  const auto r = hapstab_test::run_cli("sweep " + spec.string() + " --out " + (dir / "out").string() + " --jobs 1 --quiet");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string csv = hapstab_test::slurp(dir / "out" / "points.csv");
+  // B = 0, 2, 4 each give a supremum; the B = 0 one is the 400.17... of the library test
+  EXPECT_NE(csv.find("400.1732410011606020"), std::string::npos) << csv;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,198 @@
+// cli/cmd_stability.cpp -- `hapstab stability`: Schur stability of the sampled-data haptic loop
+// (issue 19), and the largest gain that keeps it stable.
+//
+//   hapstab stability --plant "1/(m*s^2 + b*s)" --H "K + B*(z-1)/(T*z)" --T 1/1000
+//                     --set m=1 --set b=1/10 --set K=1000 --set B=2 [--delay n]
+//                     [--operator "bh + kh/s"] [--max K] [--digits D] [--json]
+// The loop (stability/sampled_loop.hpp): device P(s) (force -> position) behind a zero-order
+// hold, position sampled every T, force = -z^-n H(z) x(kT); the operator impedance Z_op(s) acts
+// on the device as force -Z_op(s) * velocity, so the loop sees 1/(1/P + s Z_op).
+// JSON: stable, status, spectral_radius [lo, hi], degree, device; with --max NAME: max ("inf"
+// when stable for every NAME > 0), enclosure [lo, hi], status, crossing {at, theta, omega}.
+// Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
+// 2 bad input, 3 undecided (a root on or too near the unit circle).
+#include <iostream>
+#include <memory>
+
+#include "cli/command.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
+
+namespace {
+
+using namespace hapstab;
+
+struct StabilityOpts {
+  std::string plant, H, T, op, max_name;
+  std::vector<std::string> sets;
+  int delay = 0, digits = 20;
+  bool json = false;
+};
+
+TransferFunction parse_option(const std::string& text, const std::string& option, char variable, const rational& T,
+                              const std::map<std::string, rational>& params) {
+  if (text.empty()) throw InputError(option + " is required");
+  ParseOptions po;
+  po.variable = variable;
+  po.T = T;
+  po.parameters = params;
+  try {
+    return parse_tf(text, po);
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
+}
+
+bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
+
+/// H = H0 + K H1 from the expression of --H: checked affine in K at three more values.
+void split_gain(stability::Loop& loop, const StabilityOpts& o, const rational& T, std::map<std::string, rational> params) {
+  const std::string& K = o.max_name;
+  auto at = [&](const rational& k) {
+    params[K] = k;
+    return parse_option(o.H, "--H", 'z', T, params);
+  };
+  const TransferFunction H0 = at(0), H1 = tf((at(1).H - H0.H).num(), (at(1).H - H0.H).den(), T);
+  if (H1.H.is_zero()) throw InputError("--max " + K + ": --H does not depend on " + K);
+  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
+    const RationalFunction<rational> affine = H0.H + RationalFunction<rational>(k) * H1.H;
+    if (!same(at(k), tf(affine.num(), affine.den(), T)))
+      throw InputError("--max " + K + ": --H must be affine in " + K + " (H = H0 + " + K + " H1), e.g. a stiffness");
+  }
+  loop.H = H0;
+  loop.H_gain = H1;
+}
+
+stability::Loop make_loop(const StabilityOpts& o) {
+  if (o.T.empty()) throw InputError("--T is required (the sample period)");
+  const rational T = cli::option_rational(o.T, "--T");
+  if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
+  if (o.delay < 0 || o.delay > limits::bound_degree)
+    throw InputError("--delay must be in [0, " + std::to_string(limits::bound_degree) + "], got " + std::to_string(o.delay));
+  if (o.digits < 1 || o.digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(o.digits));
+  std::map<std::string, rational> params = cli::parse_sets(o.sets);
+  stability::Loop loop;
+  loop.T = T;
+  loop.delay = o.delay;
+  auto device_at = [&](const std::optional<rational>& k) {
+    std::map<std::string, rational> p = params;
+    if (k) p[o.max_name] = *k;
+    return std::make_pair(parse_option(o.plant, "--plant", 's', T, p),
+                          o.op.empty() ? std::optional<TransferFunction>()
+                                       : parse_option(o.op, "--operator", 's', T, p));
+  };
+  if (o.max_name.empty()) {
+    std::tie(loop.plant, loop.operator_impedance) = device_at(std::nullopt);
+    loop.H = parse_option(o.H, "--H", 'z', T, params);
+    return loop;
+  }
+  const auto a = device_at(rational(1)), b = device_at(rational(2));
+  if (!same(a.first, b.first) || (a.second && !same(*a.second, *b.second)))
+    throw InputError("--max " + o.max_name + ": only a gain of --H can be maximised, but " + o.max_name +
+                     " appears in --plant or --operator");
+  std::tie(loop.plant, loop.operator_impedance) = a;
+  split_gain(loop, o, T, params);
+  return loop;
+}
+
+nlohmann::json enclosure_json(const Enclosure<rational>& e, int digits) {
+  return {decimal_exact_or_outward(e.lo, digits, -1), decimal_exact_or_outward(e.hi, digits, +1)};
+}
+
+int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
+  const stability::StabilityResult r = stability::decide(loop);
+  const bool undecided = !r.verdict.decided();
+  nlohmann::json j;
+  j["stable"] = undecided ? nlohmann::json(nullptr) : nlohmann::json(r.verdict.holds());
+  j["status"] = undecided ? "undecided" : to_string(r.verdict.status);
+  j["spectral_radius"] = r.spectral_radius ? enclosure_json(*r.spectral_radius, 17) : nlohmann::json(nullptr);
+  j["degree"] = r.degree;
+  j["device"] = tf(stability::effective_device(loop).num(), stability::effective_device(loop).den()).to_string();
+  j["evidence"] = r.verdict.evidence;
+  j["precision_bits"] = r.precision_bits;
+  if (o.json) cli::print_json(j);
+  else {
+    std::cout << (undecided ? "undecided" : r.verdict.holds() ? "stable" : "NOT stable") << "   ["
+              << j["status"].get<std::string>() << "]\n  " << r.verdict.evidence << "\n";
+    if (r.spectral_radius)
+      std::cout << "  spectral radius in [" << j["spectral_radius"][0].get<std::string>() << ", "
+                << j["spectral_radius"][1].get<std::string>() << "]\n";
+  }
+  if (undecided) return cli::exit_numerical;
+  return r.verdict.holds() ? cli::exit_ok : cli::exit_property_fails;
+}
+
+nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, const rational& T) {
+  nlohmann::json j;
+  j["name"] = o.max_name;
+  const bool found = m.outcome == Outcome::holds;
+  j["status"] = m.outcome == Outcome::undecided ? "undecided" : to_string(m.status);
+  if (!found) j["max"] = m.outcome == Outcome::fails ? nlohmann::json("0") : nlohmann::json(nullptr);
+  else if (m.infinite) j["max"] = "inf";
+  else if (m.exact) j["max"] = to_decimal(*m.exact, o.digits);
+  else {
+    const auto d = common_decimal(m.enclosure.lo, m.enclosure.hi, o.digits);
+    j["max"] = d ? *d : to_decimal((m.enclosure.lo + m.enclosure.hi) / 2, o.digits);
+  }
+  j["enclosure"] = found && !m.infinite ? enclosure_json(m.enclosure, o.digits + 3) : nlohmann::json(nullptr);
+  if (m.exact) j["exact"] = m.exact->str();
+  if (found && !m.infinite) {
+    nlohmann::json c{{"at", m.crossing}};
+    if (m.theta) {
+      c["theta"] = enclosure_json(*m.theta, 17);
+      c["omega"] = enclosure_json({m.theta->lo / T, m.theta->hi / T}, 17);  // rad/s
+    }
+    j["crossing"] = c;
+  } else {
+    j["crossing"] = nullptr;
+  }
+  j["note"] = m.note;
+  j["precision_bits"] = m.precision_bits;
+  j["digits"] = o.digits;
+  return j;
+}
+
+int run_max(const StabilityOpts& o, const stability::Loop& loop) {
+  const stability::MaxGain m = stability::max_gain(loop, o.digits);
+  const nlohmann::json j = max_json(m, o, loop.T);
+  if (o.json) cli::print_json(j);
+  else {
+    std::cout << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [" << j["status"].get<std::string>()
+              << "]\n";
+    if (!j["enclosure"].is_null())
+      std::cout << "  enclosure [" << j["enclosure"][0].get<std::string>() << ", "
+                << j["enclosure"][1].get<std::string>() << "]\n  roots leave the unit disk at "
+                << j["crossing"]["at"].get<std::string>()
+                << (j["crossing"].contains("omega") ? ", omega = " + j["crossing"]["omega"][0].get<std::string>() + " rad/s"
+                                                    : std::string())
+                << "\n";
+    std::cout << "  " << m.note << "\n";
+  }
+  if (m.outcome == Outcome::undecided) return cli::exit_numerical;
+  return m.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_ok;
+}
+
+const cli::Register reg(
+    {"stability",
+     "Schur stability of the sampled haptic loop (device P(s), ZOH, wall H(z), delay); --max NAME: the largest stable gain",
+     [](CLI::App& app) {
+       auto o = std::make_shared<StabilityOpts>();
+       app.add_option("--plant", o->plant, "device P(s), force -> position, e.g. \"1/(m*s^2 + b*s)\"");
+       app.add_option("--H", o->H, "virtual environment H(z), e.g. \"K + B*(z-1)/(T*z)\" (force = -z^-n H x)");
+       app.add_option("--T", o->T, "sample period T > 0 (exact: 0.001 or 1/1000)");
+       app.add_option("--delay", o->delay, "integer delay n >= 0: z^-n")->capture_default_str();
+       app.add_option("--operator", o->op, "operator impedance Z_op(s) on the device (force per velocity), e.g. \"bh + kh/s\"");
+       app.add_option("--set", o->sets, "parameter NAME=VALUE (repeatable)");
+       app.add_option("--max", o->max_name, "gain NAME of --H (affine in it) to maximise: sup{NAME : stable on (0, sup)}");
+       app.add_option("--digits", o->digits, "significant digits of --max (1..1000)")->capture_default_str();
+       app.add_flag("--json", o->json, "JSON output");
+       return [o]() -> int {
+         const stability::Loop loop = make_loop(*o);
+         return o->max_name.empty() ? run_decide(*o, loop) : run_max(*o, loop);
+       };
+     }});
+
+}  // namespace
