@@ -168,3 +168,14 @@ TEST(Scene, EncoderAndCoulombKeys) {
   const std::string tf = error_of(replace(kWall, dev, "tf = \"1/(s + 1)\"\ncoulomb = \"1\""));
   EXPECT_NE(tf.find("need a mass-damper device"), std::string::npos) << tf;
 }
+
+TEST(Scene, PassivityControllerSection) {
+  auto sc = parse_scene(std::string(kWall) + "[passivity_controller]\ndofs = [\"haptic\"]\n", "pc.toml");
+  EXPECT_EQ(sc.loop.passivity_controller, std::vector<int>{0});
+  std::string msg = error_of(std::string(kWall) + "[passivity_controller]\ndofs = [\"nope\"]\n");
+  EXPECT_NE(msg.find("passivity_controller.dofs"), std::string::npos) << msg;
+  msg = error_of(std::string(kWall) + "[passivity_controller]\n");
+  EXPECT_NE(msg.find("passivity_controller.dofs: missing"), std::string::npos) << msg;
+  msg = error_of(std::string(kWall) + "[passivity_controller]\ndofs = [\"haptic\"]\ngain = 2\n");
+  EXPECT_NE(msg.find("passivity_controller.gain"), std::string::npos) << msg;
+}

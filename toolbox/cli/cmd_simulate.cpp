@@ -71,6 +71,10 @@ nlohmann::json summary_json(const sim::Summary& s, const scene::Scene& sc) {
                   "matrix exponentials (sim/coulomb.hpp)";
     j["friction_events"] = s.friction_events;
   }
+  if (!sc.loop.passivity_controller.empty()) {
+    j["pc_dissipated"] = s.pc_dissipated;
+    j["pc_active_samples"] = s.pc_active;
+  }
   if (!sc.loop.quantizers.empty()) j["quantum"] = to_decimal(sc.loop.quantizers.front().step, 17);
   j["scene"] = sc.file;
   j["T"] = to_decimal(sc.T, 17);

@@ -260,6 +260,16 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
 }
 
 // ---- [contact]: the DOFs with the unilateral wall (default: all)
+// [passivity_controller] dofs = [...]: Hannaford-Ryu's PO/PC at the actuator of those DOFs.
+void read_passivity_controller(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
+  auto t = section(root, "passivity_controller", c);
+  if (!t) return;
+  c.only_keys(*t, "passivity_controller", {"dofs"});
+  if (!loop.environment) c.fail("passivity_controller", "it acts on the wall's force: the scene needs an [environment]");
+  if (!t->contains("dofs")) c.fail("passivity_controller.dofs", "missing (the DOFs whose actuator it controls)");
+  loop.passivity_controller = c.dofs_of(*t->get("dofs"), "passivity_controller.dofs");
+}
+
 void read_contact(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "contact", c);
   if (!t) return;
@@ -449,6 +459,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   sc.loop.coupling = read_discrete_block(root, "coupling", c);
   if (sc.loop.coupling && !sc.loop.environment) c.fail("coupling", "a coupling needs an [environment]");
   read_contact(root, c, sc.loop);
+  read_passivity_controller(root, c, sc.loop);
   read_delay(root, c, sc.loop);
   read_inputs(root, c, sc.loop);
   read_initial(root, c, sc.loop);

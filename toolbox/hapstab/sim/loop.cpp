@@ -209,6 +209,8 @@ void check_sensors_and_friction(const LoopSpec& spec, int N) {
       throw InputError("coulomb friction on DOF " + std::to_string(c.dof) + ": f_c must be >= 0, got " + c.force.str());
     if (f[size_t(c.dof)]++) throw InputError("coulomb friction: DOF " + std::to_string(c.dof) + " has two");
   }
+  for (int j : spec.passivity_controller)
+    if (j < 0 || j >= N) throw InputError("passivity controller: DOF " + std::to_string(j) + " does not exist");
 }
 
 }  // namespace

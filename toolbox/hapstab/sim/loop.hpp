@@ -100,6 +100,7 @@ struct LoopSpec {
   std::vector<rational> x0, v0;           ///< initial positions / velocities per DOF (optional)
   std::vector<Quantizer> quantizers;      ///< at most one per DOF
   std::vector<Coulomb> coulomb;           ///< at most one per DOF
+  std::vector<int> passivity_controller;  ///< DOFs with Hannaford-Ryu's PO/PC at the actuator (sim/simulator.hpp)
   int dofs() const;
 };
 

@@ -61,6 +61,9 @@ Simulator::Simulator(const LoopSpec& spec) : spec_(spec), loop_(compose(spec)) {
   Dfw_ = to_double(Mat<rational>(P.D.bottomRows(N).rightCols(N)));
   Bw_ = to_double(Mat<rational>(P.B.rightCols(N)));
   const auto& C = loop_.controller;
+  if (!spec.passivity_controller.empty() && f_ > 0)
+    throw InputError("passivity controller: the delay must be a whole number of samples (the applied force would "
+                     "change inside the period)");
   for (const Coulomb& c : spec.coulomb)
     if (c.force > 0) coulomb_.emplace(loop_.plant, c.force, std::vector<double>{p1_.h, p2_.h});
   Ac_ = to_double(C.A);
@@ -186,6 +189,9 @@ struct Engine {
   std::vector<double> quantum;     ///< per DOF, 0: no encoder
   std::vector<char> round_q;       ///< per DOF: round (half up) instead of floor
   long friction_events = 0;
+  std::vector<char> pc;            ///< per DOF: passivity controller on
+  std::vector<double> e_obs, pc_diss;  ///< observer energy; energy the PC's damper removed
+  long pc_active = 0;
   // --- state and work vectors
   VX s, tmp, s0;
   VC xc, xc1;
@@ -229,6 +235,10 @@ struct Engine {
     }
     contact.assign(size_t(N), 0);
     for (int j : spec.contact) contact[j] = 1;
+    pc.assign(size_t(N), 0);
+    for (int j : spec.passivity_controller) pc[size_t(j)] = 1;
+    e_obs.assign(size_t(N), 0.0);
+    pc_diss.assign(size_t(N), 0.0);
     quantum.assign(size_t(N), 0.0);
     round_q.assign(size_t(N), 0);
     for (const Quantizer& e : spec.quantizers) {
@@ -291,7 +301,7 @@ struct Engine {
     pos.noalias() = Cx * s;
     v.noalias() = Cv * s;
     // f_h just after kT: the input active then
-    const VN& ua = split ? ring[slot(k - nd - 1)] : ring[slot(k - nd)];
+    const VN& ua = split ? ring[slot(k - nd - 1)] : un;  // un: after the passivity controller
     fh.noalias() = Cf * s;
     fh.noalias() += Dfu * ua;
     fh.noalias() += Dfw * w;
@@ -338,7 +348,7 @@ struct Engine {
     tailbuf[size_t(k % tail)] = s(wpos);
     meas = pos;
     for (int j = 0; j < N; ++j) {
-      if (const double q = quantum[size_t(j)]; q > 0) meas(j) = q * std::floor(meas(j) / q + (round_q[size_t(j)] ? 0.5 : 0.0));
+      meas(j) = quantized(j, meas(j));
       if (contact[size_t(j)]) meas(j) = meas(j) > 0 ? meas(j) : 0.0;
     }
     if (nc > 0) {
@@ -353,6 +363,28 @@ struct Engine {
     ring[slot(k)] = u;
     un = ring[slot(k - nd)];
     if (k < nd) un.setZero();
+    if (!spec.passivity_controller.empty()) passivity_control();
+  }
+
+  // Hannaford-Ryu PO/PC on the applied force un (see simulator.hpp).
+  void passivity_control() {
+    v.noalias() = Cv * s;
+    for (int j = 0; j < N; ++j) {
+      if (!pc[size_t(j)]) continue;
+      double& E = e_obs[size_t(j)];
+      E -= T * un(j) * v(j);
+      if (E < 0 && v(j) != 0) {
+        un(j) += E / (T * v(j));  // -alpha v with alpha = -E/(T v^2)
+        pc_diss[size_t(j)] -= E;
+        E = 0;
+        ++pc_active;
+      }
+    }
+  }
+
+  double quantized(int j, double x) const {
+    const double q = quantum[size_t(j)];
+    return q > 0 ? q * std::floor(x / q + (round_q[size_t(j)] ? 0.5 : 0.0)) : x;
   }
 
   // The passivity observer: T f_h(kT) v(kT), with uo the force held over [kT, kT+f) when split.
@@ -448,6 +480,8 @@ struct Engine {
     SU.e_act = e_act;
     SU.e_po = e_po;
     SU.friction_events = friction_events;
+    SU.pc_dissipated = pc_diss;
+    SU.pc_active = pc_active;
     if (diverged) {
       SU.trend = "diverged";
     } else {
