@@ -10,6 +10,8 @@
 
 #include "cli/cli_run.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -77,5 +79,31 @@ TEST(ExtFigures, PassivityControllerFigureData) {
   double early = 0;  // |x| over the first 0.1 s (the impulse starts at x = 0)
   for (size_t i = 0; i < 100; ++i) early = std::max(early, std::fabs(on[i][1]));
   EXPECT_LT(std::fabs(on.back()[1]), 1e-3 * early);  // decays
+  fs::remove_all(d);
+}
+
+TEST(ExtFigures, SimulateReportsFrictionEventsAndThePassivityController) {
+  const fs::path d = fresh_dir("sim");
+  const std::string src = HAPSTAB_SOURCE_DIR;
+  auto r = hapstab_test::run_cli("simulate --scene " + src + "/examples/ext_friction_below.toml --json --quiet --out " +
+                                 (d / "below").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["friction_events"].get<long>(), 100);
+  EXPECT_EQ(j["quantum"], "0.001");
+  EXPECT_NE(j["method"].get<std::string>().find("Coulomb friction"), std::string::npos);
+  // a scene file with the PC section
+  const fs::path scene = d / "pc.toml";
+  {
+    std::ifstream in(src + "/examples/001_tightness_below.toml");
+    std::ofstream out(scene);
+    out << in.rdbuf() << "\n[passivity_controller]\ndofs = [\"haptic\"]\n";
+  }
+  r = hapstab_test::run_cli("simulate --scene " + scene.string() + " --json --quiet --out " + (d / "pc").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["trend"], "decaying");
+  EXPECT_GT(j["pc_active_samples"].get<long>(), 0);
+  EXPECT_GT(j["pc_dissipated"][0].get<double>(), 0.0);
   fs::remove_all(d);
 }
