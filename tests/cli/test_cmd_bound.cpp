@@ -159,6 +159,51 @@ TEST(CmdBound, DampingCheckNecessaryConditionAndExitCode) {
   EXPECT_EQ(run("bound --H \"1\" --T 1 --damping -1").code, 2);
 }
 
+TEST(CmdBound, QuantumAndCoulombReportTheFrictionConditionBesideBstar) {
+  // Abbott-Okamura: the spring K = 1000 with Delta = 1 mm needs f_c >= K Delta/2 = 1/2 N (exact,
+  // tight); b* = KT/2 = 1/2 as before.
+  const std::string spring = "bound --H K --T 1/1000 --set K=1000 --json --quantum 1/1000 ";
+  CliRun ok = run(spring + "--coulomb 1/2 --damping 1");
+  ASSERT_EQ(ok.code, 0) << ok.out;
+  auto j = nlohmann::json::parse(ok.out);
+  EXPECT_EQ(j["bound"], "0.5");
+  EXPECT_EQ(j["friction"]["fc_star_exact"], "1/2");
+  EXPECT_EQ(j["friction"]["status"], "exact");
+  EXPECT_TRUE(j["friction"]["tight"].get<bool>());
+  EXPECT_TRUE(j["friction"]["holds"].get<bool>());  // equality is still passive
+  EXPECT_TRUE(j["passive"].get<bool>());
+  // f_c below the condition: exit 1 even though b > b*
+  CliRun low = run(spring + "--coulomb 0.499 --damping 1");
+  ASSERT_EQ(low.code, 1) << low.out;
+  auto k = nlohmann::json::parse(low.out);
+  EXPECT_FALSE(k["friction"]["holds"].get<bool>());
+  EXPECT_TRUE(k["damping"]["passive"].get<bool>());
+  EXPECT_FALSE(k["passive"].get<bool>());
+  // --quantum alone reports f_c* and exits 0 (nothing to check)
+  CliRun only = run(spring);
+  ASSERT_EQ(only.code, 0) << only.out;
+  EXPECT_FALSE(nlohmann::json::parse(only.out)["friction"].contains("holds"));
+}
+
+TEST(CmdBound, FrictionConditionOfTheDelayedSpringDamper) {
+  // K + B(z-1)/(Tz) with delay n = 3: taps (K + B/T) z^-3 - (B/T) z^-4, f_c* = Delta (K/2 + B/T)
+  // = 1e-3 (500 + 2000) = 5/2, independent of n; the witness (blocks of n + 1 = 4) makes it tight.
+  CliRun r = run("bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --set K=1000 --set B=2 --delay 3 --json "
+                 "--quantum 1/1000 --coulomb 3");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["friction"]["fc_star_exact"], "5/2");
+  EXPECT_EQ(j["friction"]["taps"], nlohmann::json({"0", "0", "0", "3000", "-2000"}));
+  EXPECT_TRUE(j["friction"]["tight"].get<bool>());
+  // the human text names the verdict
+  CliRun h = run("bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --set K=1000 --set B=2 --quantum 1/1000 --coulomb 2");
+  ASSERT_EQ(h.code, 1) << h.out;
+  EXPECT_NE(h.out.find("f_c* = Delta/2 sum|w_k| = 5/2"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("friction condition FAILS"), std::string::npos) << h.out;
+  // an IIR wall: the condition is not derived -> exit 2 naming why
+  EXPECT_EQ(run("bound --H \"1/(z-1/2)\" --T 1 --quantum 1").code, 2);
+}
+
 TEST(CmdBound, ExplainSeesWholeSampleFractionalDelayAndDirichletConstants) {
   // t_d = T is the integer delay n = 1: Tustin with n = 1, KT/2 + B + |KT - 2B| = 14.5 (once the
   // matcher took it for the delay-free Tustin wall, -4.5, and printed DISAGREES)

@@ -135,3 +135,47 @@ TEST(Scene, FuzzerFindingsAreInputErrors) {
     EXPECT_NE(msg.find("expected bare key starting character"), std::string::npos) << msg;
   }
 }
+
+TEST(Scene, EncoderAndCoulombKeys) {
+  const std::string dev = "m = \"1/10\"\nb = \"bstar\"";
+  auto sc = parse_scene(replace(kWall, dev, dev + "\nquantum = \"1/4096\"\nquantizer = \"round\"\ncoulomb = \"3/10\""), "q.toml");
+  ASSERT_EQ(sc.loop.quantizers.size(), 1u);
+  EXPECT_EQ(sc.loop.quantizers[0].step, rational(1, 4096));
+  EXPECT_TRUE(sc.loop.quantizers[0].round);
+  ASSERT_EQ(sc.loop.coulomb.size(), 1u);
+  EXPECT_EQ(sc.loop.coulomb[0].force, rational(3, 10));
+  auto fl = parse_scene(replace(kWall, dev, dev + "\nquantum = \"1/4096\""), "q.toml");
+  EXPECT_FALSE(fl.loop.quantizers.at(0).round);  // floor is the default
+  struct Case {
+    std::string add, key, what;
+  };
+  const std::vector<Case> cases = {
+      {"quantum = \"0\"", "device[0].quantum", "must be > 0"},
+      {"quantum = \"-1/1000\"", "device[0].quantum", "must be > 0"},
+      {"quantum = 0.001", "device[0].quantum", "exact"},
+      {"quantum = \"1/1000\"\nquantizer = \"ceil\"", "device[0].quantizer", "\"floor\" or \"round\""},
+      {"quantum = \"1/1000\"\nquantizer = 3", "device[0].quantizer", "\"floor\" or \"round\""},
+      {"quantizer = \"round\"", "device[0].quantizer", "needs quantum"},
+      {"coulomb = \"-1\"", "device[0].coulomb", "must be >= 0"},
+      {"coulomb = \"x\"", "device[0].coulomb", "x"},
+  };
+  for (const auto& c : cases) {
+    const std::string msg = error_of(replace(kWall, dev, dev + "\n" + c.add));
+    EXPECT_NE(msg.find(c.key), std::string::npos) << "key " << c.key << " not in: " << msg;
+    EXPECT_NE(msg.find(c.what), std::string::npos) << "'" << c.what << "' not in: " << msg;
+  }
+  // only a mass-damper device carries them
+  const std::string tf = error_of(replace(kWall, dev, "tf = \"1/(s + 1)\"\ncoulomb = \"1\""));
+  EXPECT_NE(tf.find("need a mass-damper device"), std::string::npos) << tf;
+}
+
+TEST(Scene, PassivityControllerSection) {
+  auto sc = parse_scene(std::string(kWall) + "[passivity_controller]\ndofs = [\"haptic\"]\n", "pc.toml");
+  EXPECT_EQ(sc.loop.passivity_controller, std::vector<int>{0});
+  std::string msg = error_of(std::string(kWall) + "[passivity_controller]\ndofs = [\"nope\"]\n");
+  EXPECT_NE(msg.find("passivity_controller.dofs"), std::string::npos) << msg;
+  msg = error_of(std::string(kWall) + "[passivity_controller]\n");
+  EXPECT_NE(msg.find("passivity_controller.dofs: missing"), std::string::npos) << msg;
+  msg = error_of(std::string(kWall) + "[passivity_controller]\ndofs = [\"haptic\"]\ngain = 2\n");
+  EXPECT_NE(msg.find("passivity_controller.gain"), std::string::npos) << msg;
+}

@@ -2,11 +2,14 @@
 //
 //   hapstab bound --H "K + B*(z-1)/(T*z)" --T 1/1000 --set K=1000 --set B=5 [--delay N]
 //                 [--frac-delay TD] [--eta ETA] [--digits D] [--method certified|fast|grid]
-//                 [--explain] [--json] [--curve FILE]
+//                 [--explain] [--json] [--curve FILE] [--quantum DELTA [--coulomb FC]]
 //   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
 // JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
 // closed_form (name or null), plus method, where, closed_form_value; dirichlet_C/_D (certified
-// enclosures) for (50); damping {b, passive, eq14_lhs, eq14_holds, eq15_rhs, eq15_holds} with --damping.
+// enclosures) for (50); damping {b, passive, eq14_lhs, eq14_holds, eq15_rhs, eq15_holds} with --damping;
+// friction {quantum, fc_star, fc_star_exact, l1_norm, taps, tight, status, why, coulomb, holds} with
+// --quantum (passivity/friction.hpp: passive iff b > b* and f_c >= f_c* = Delta/2 sum |w_k|), and
+// passive (both verdicts) when --damping and --coulomb are given. Exit 1 when a given b or f_c fails.
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -20,6 +23,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/catalogue.hpp"
+#include "hapstab/passivity/friction.hpp"
 
 namespace {
 
@@ -28,7 +32,7 @@ using namespace hapstab::passivity;
 
 struct BoundOpts {
   cli::TfOptions tf;
-  std::string frac, eta = "0", method = "certified", curve, damping;
+  std::string frac, eta = "0", method = "certified", curve, damping, quantum, coulomb;
   int digits = 30;
   long grid = 100000;
   bool explain = false, json = false, allow_noncausal = false;
@@ -51,6 +55,10 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   app.add_option("--damping", o.damping,
                  "device damping b to check: passive iff b > b* (exit 1 when not), with the necessary condition "
                  "(14) <=> (15) evaluated at the maximiser");
+  app.add_option("--quantum", o.quantum,
+                 "encoder resolution Delta > 0 (m): report the Coulomb-friction condition f_c >= f_c* = Delta/2 sum|w_k| "
+                 "beside b* (FIR walls; Abbott-Okamura 2005, docs/friction.md)");
+  app.add_option("--coulomb", o.coulomb, "device Coulomb friction f_c >= 0 (N) to check against f_c* (needs --quantum; exit 1 when f_c < f_c*)");
   if (!batch_line) {
     app.add_flag("--json", o.json, "JSON output");
     app.add_option("--curve", o.curve, "write 'omega objective' samples (2001 points, 50 digits) to FILE");
@@ -65,8 +73,17 @@ struct DampingCheck {
   std::optional<NecessaryCheck> at_max;  ///< when w* > 0, t_d = 0 and eta = 0
 };
 
+/// `--quantum Delta [--coulomb f_c]`: the friction condition of passivity/friction.hpp.
+struct FrictionCheck {
+  rational quantum;
+  FrictionCondition c;
+  std::optional<rational> coulomb;
+  bool holds() const { return !coulomb || *coulomb >= c.fc_star; }
+};
+
 struct Outcome {
   Bound b;
+  std::optional<FrictionCheck> friction;
   std::optional<catalogue::Match> cf;
   BoundProblem p;
   std::optional<DampingCheck> damping;
@@ -115,7 +132,45 @@ Outcome compute(const BoundOpts& o) {
     }
     r.damping = d;
   }
+  if (!o.coulomb.empty() && o.quantum.empty()) throw InputError("--coulomb needs --quantum (the encoder resolution)");
+  if (!o.quantum.empty()) {
+    FrictionCheck f;
+    f.quantum = cli::option_rational(o.quantum, "--quantum");
+    if (f.quantum <= 0) throw InputError("--quantum must be > 0 (got " + o.quantum + ")");
+    if (!o.coulomb.empty()) {
+      f.coulomb = cli::option_rational(o.coulomb, "--coulomb");
+      if (*f.coulomb < 0) throw InputError("--coulomb must be >= 0 (got " + o.coulomb + ")");
+    }
+    const BoundProblem q = with_integer_delay(r.p);
+    f.c = friction_condition(q.H, q.delay, f.quantum, q.frac_delay.has_value());
+    r.friction = f;
+  }
   return r;
+}
+
+int exit_code(const Outcome& r) {
+  const bool fails = (r.damping && !r.damping->passive) || (r.friction && !r.friction->holds());
+  return fails ? cli::exit_property_fails : cli::exit_ok;
+}
+
+nlohmann::json friction_json(const FrictionCheck& f) {
+  nlohmann::json j;
+  j["quantum"] = to_decimal(f.quantum, 17);
+  j["fc_star"] = to_decimal(f.c.fc_star, 17);
+  j["fc_star_exact"] = f.c.fc_star.str();
+  j["l1_norm"] = f.c.l1.str();
+  std::vector<std::string> taps;
+  for (const rational& w : f.c.taps) taps.push_back(w.str());
+  j["taps"] = taps;
+  j["status"] = "exact";
+  j["tight"] = f.c.tight;
+  j["why"] = f.c.why;
+  j["condition"] = "f_c >= Delta/2 * sum_k |w_k|";
+  if (f.coulomb) {
+    j["coulomb"] = to_decimal(*f.coulomb, 17);
+    j["holds"] = f.holds();
+  }
+  return j;
 }
 
 nlohmann::json to_json(const Outcome& r, int digits) {
@@ -156,7 +211,24 @@ nlohmann::json to_json(const Outcome& r, int digits) {
     }
     j["damping"] = d;
   }
+  if (r.friction) {
+    j["friction"] = friction_json(*r.friction);
+    if (r.damping && r.friction->coulomb) j["passive"] = r.damping->passive && r.friction->holds();
+  }
   return j;
+}
+
+void print_friction(const FrictionCheck& f) {
+  std::cout << "friction (Delta = " << to_decimal(f.quantum, 17) << "): f_c* = Delta/2 sum|w_k| = " << f.c.fc_star.str();
+  if (f.c.fc_star.str().find('/') != std::string::npos) std::cout << " = " << to_decimal(f.c.fc_star, 17);
+  std::cout << "   [exact]\n  " << (f.c.tight ? "passive iff b > b* and f_c >= f_c*" : "passive if b > b* and f_c >= f_c*")
+            << "  (" << f.c.why << ")\n";
+  if (f.coulomb)
+    std::cout << "coulomb f_c = " << to_decimal(*f.coulomb, 17) << ": "
+              << (f.holds() ? "friction condition holds (f_c >= f_c*)"
+                            : f.c.tight ? "friction condition FAILS (f_c < f_c*): not passive"
+                                        : "friction condition FAILS (f_c < f_c*): passivity not shown")
+              << "\n";
 }
 
 void print_human(const Outcome& r, const BoundOpts& o) {
@@ -207,6 +279,7 @@ void print_human(const Outcome& r, const BoundOpts& o) {
                 << (d.at_max->holds15 ? " < b" : " >= b") << "  -> "
                 << (d.at_max->holds14 == d.at_max->holds15 ? "(14) and (15) agree" : "(14) and (15) DISAGREE") << "\n";
   }
+  if (r.friction) print_friction(*r.friction);
 }
 
 int run_batch(const std::string& file) {
@@ -271,7 +344,7 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                              }
                              if (o->json) cli::print_json(to_json(r, o->digits));
                              else print_human(r, *o);
-                             return r.damping && !r.damping->passive ? cli::exit_property_fails : cli::exit_ok;
+                             return exit_code(r);
                            };
                          }});
 

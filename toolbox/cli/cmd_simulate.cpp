@@ -65,6 +65,17 @@ nlohmann::json summary_json(const sim::Summary& s, const scene::Scene& sc) {
   j["passivity_observer"] = s.e_po;
   j["status"] = "numeric";
   j["method"] = "exact ZOH discretisation (50-digit Van Loan exponentials rounded to double), double recursion";
+  if (!sc.loop.coulomb.empty()) {
+    j["method"] = j["method"].get<std::string>() +
+                  "; Coulomb friction: stick/slip events located by bisection (1e-15 T) on T/16 sub-steps, double "
+                  "matrix exponentials (sim/coulomb.hpp)";
+    j["friction_events"] = s.friction_events;
+  }
+  if (!sc.loop.passivity_controller.empty()) {
+    j["pc_dissipated"] = s.pc_dissipated;
+    j["pc_active_samples"] = s.pc_active;
+  }
+  if (!sc.loop.quantizers.empty()) j["quantum"] = to_decimal(sc.loop.quantizers.front().step, 17);
   j["scene"] = sc.file;
   j["T"] = to_decimal(sc.T, 17);
   return j;

@@ -100,7 +100,9 @@ void read_parameters(const toml::table& root, const std::map<std::string, Q>& ov
 
 // ---- [[device]]: a mass-damper (m, b) or a strictly proper force -> velocity block
 sim::DeviceBlock read_device(const toml::table& t, const std::string& key, const Reader& c) {
-  c.only_keys(t, key, {"name", "m", "b", "tf", "ss", "passive"});
+  c.only_keys(t, key, {"name", "m", "b", "tf", "ss", "passive", "quantum", "quantizer", "coulomb"});
+  if ((t.contains("quantum") || t.contains("quantizer") || t.contains("coulomb")) && !t.contains("m"))
+    c.fail(key, "quantum, quantizer and coulomb need a mass-damper device (m, b)");
   const std::string name = c.free_text(t, "name", key, key, 256);
   sim::DeviceBlock d;
   if (t.contains("m") || t.contains("b")) {
@@ -120,6 +122,31 @@ sim::DeviceBlock read_device(const toml::table& t, const std::string& key, const
   return d;
 }
 
+// [[device]] quantum = Delta (> 0), quantizer = "floor" (default) | "round", coulomb = f_c (>= 0).
+void read_encoder_and_friction(const toml::table& t, const std::string& key, const Reader& c, int dof,
+                               sim::LoopSpec& loop) {
+  if (t.contains("quantizer") && !t.contains("quantum")) c.fail(key + ".quantizer", "needs quantum (the encoder resolution)");
+  if (t.contains("quantum")) {
+    sim::Quantizer q;
+    q.dof = dof;
+    q.step = c.number(t, "quantum", key);
+    if (q.step <= 0) c.fail(key + ".quantum", "must be > 0, got " + q.step.str());
+    if (t.contains("quantizer")) {
+      const auto kind = t["quantizer"].value<std::string>();
+      if (!kind || (*kind != "floor" && *kind != "round")) c.fail(key + ".quantizer", "must be \"floor\" or \"round\"");
+      q.round = *kind == "round";
+    }
+    loop.quantizers.push_back(q);
+  }
+  if (t.contains("coulomb")) {
+    sim::Coulomb f;
+    f.dof = dof;
+    f.force = c.number(t, "coulomb", key);
+    if (f.force < 0) c.fail(key + ".coulomb", "must be >= 0, got " + f.force.str());
+    loop.coulomb.push_back(f);
+  }
+}
+
 // Devices number the DOFs in their order; the names become DOF names for later sections.
 void read_devices(const toml::table& root, Reader& c, sim::LoopSpec& loop) {
   each_table(root, "device", c, [&](const toml::table& t, const std::string& key, int) {
@@ -127,6 +154,7 @@ void read_devices(const toml::table& root, Reader& c, sim::LoopSpec& loop) {
     const std::string& name = d.name;
     if (c.device_dofs.count(name)) c.fail(key + ".name", "'" + name + "' is defined twice");
     c.device_dofs[name] = {c.N, int(d.dofs())};
+    read_encoder_and_friction(t, key, c, c.N, loop);
     c.N += int(d.dofs());
     loop.devices.push_back(std::move(d));
   });
@@ -232,6 +260,16 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
 }
 
 // ---- [contact]: the DOFs with the unilateral wall (default: all)
+// [passivity_controller] dofs = [...]: Hannaford-Ryu's PO/PC at the actuator of those DOFs.
+void read_passivity_controller(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
+  auto t = section(root, "passivity_controller", c);
+  if (!t) return;
+  c.only_keys(*t, "passivity_controller", {"dofs"});
+  if (!loop.environment) c.fail("passivity_controller", "it acts on the wall's force: the scene needs an [environment]");
+  if (!t->contains("dofs")) c.fail("passivity_controller.dofs", "missing (the DOFs whose actuator it controls)");
+  loop.passivity_controller = c.dofs_of(*t->get("dofs"), "passivity_controller.dofs");
+}
+
 void read_contact(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "contact", c);
   if (!t) return;
@@ -421,6 +459,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   sc.loop.coupling = read_discrete_block(root, "coupling", c);
   if (sc.loop.coupling && !sc.loop.environment) c.fail("coupling", "a coupling needs an [environment]");
   read_contact(root, c, sc.loop);
+  read_passivity_controller(root, c, sc.loop);
   read_delay(root, c, sc.loop);
   read_inputs(root, c, sc.loop);
   read_initial(root, c, sc.loop);

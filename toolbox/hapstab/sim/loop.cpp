@@ -193,11 +193,34 @@ StateSpace<Q> controller_of(const LoopSpec& spec, int N) {
 
 }  // namespace
 
+namespace {
+
+// Encoders and Coulomb friction: DOFs in range, one of each per DOF, Delta > 0, f_c >= 0.
+void check_sensors_and_friction(const LoopSpec& spec, int N) {
+  std::vector<char> q(size_t(N), 0), f(size_t(N), 0);
+  for (const Quantizer& e : spec.quantizers) {
+    if (e.dof < 0 || e.dof >= N) throw InputError("encoder: DOF " + std::to_string(e.dof) + " does not exist");
+    if (e.step <= 0) throw InputError("encoder on DOF " + std::to_string(e.dof) + ": quantum must be > 0, got " + e.step.str());
+    if (q[size_t(e.dof)]++) throw InputError("encoder: DOF " + std::to_string(e.dof) + " has two");
+  }
+  for (const Coulomb& c : spec.coulomb) {
+    if (c.dof < 0 || c.dof >= N) throw InputError("coulomb friction: DOF " + std::to_string(c.dof) + " does not exist");
+    if (c.force < 0)
+      throw InputError("coulomb friction on DOF " + std::to_string(c.dof) + ": f_c must be >= 0, got " + c.force.str());
+    if (f[size_t(c.dof)]++) throw InputError("coulomb friction: DOF " + std::to_string(c.dof) + " has two");
+  }
+  for (int j : spec.passivity_controller)
+    if (j < 0 || j >= N) throw InputError("passivity controller: DOF " + std::to_string(j) + " does not exist");
+}
+
+}  // namespace
+
 ComposedLoop compose(const LoopSpec& spec) {
   if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
   if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());
   const int N = spec.dofs();
   if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
+  check_sensors_and_friction(spec, N);
   ComposedLoop L;
   L.N = N;
   L.T = spec.T;

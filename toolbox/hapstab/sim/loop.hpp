@@ -8,7 +8,8 @@
 //             -Z_O v (a passive Z_O absorbs energy). Each operator acts on a list of DOFs.
 //   exogenous forces w (impulses, constant bias, profiles) act beside the operator; the
 //             human port force is f_h = -Z_O v + w.
-//   sampler   positions x(kT); optional unilateral contact (paper 002's xi): the wall
+//   sampler   positions x(kT), optionally through an encoder of resolution Delta (the
+//             controller sees Delta floor(x/Delta), or Delta round(x/Delta) half up); optional unilateral contact (paper 002's xi): the wall
 //             occupies x > 0 and the environment sees the penetration max(0, x_j(kT)).
 //   environment E(z) (an impedance, displacement -> force; paper 001's H(z)), optional
 //             coupling V(z) (an admittance, force -> displacement, in parallel with the
@@ -71,6 +72,20 @@ struct Profile {
   std::vector<double> samples;  ///< force at t = kT (k = 0, 1, ...), held over [kT, (k+1)T); 0 after the end
 };
 
+/// An encoder on DOF `dof`: the sampled position is Delta floor(x/Delta) (an incremental
+/// encoder's count), or Delta floor(x/Delta + 1/2) when `round`. Applied before the contact clip.
+struct Quantizer {
+  int dof = 0;
+  rational step = 0;  ///< Delta > 0 (m)
+  bool round = false;
+};
+/// Coulomb friction f_c >= 0 on DOF `dof`: -f_c sgn(v) while slipping, any force in [-f_c, f_c]
+/// while stuck (v = 0); sim/coulomb.hpp. One-DOF loops whose other states rest when v = 0.
+struct Coulomb {
+  int dof = 0;
+  rational force = 0;
+};
+
 struct LoopSpec {
   rational T = 0;                         ///< sample period (> 0)
   std::vector<DeviceBlock> devices;        ///< DOFs numbered in this order
@@ -83,6 +98,9 @@ struct LoopSpec {
   std::vector<Bias> biases;
   std::vector<Profile> profiles;
   std::vector<rational> x0, v0;           ///< initial positions / velocities per DOF (optional)
+  std::vector<Quantizer> quantizers;      ///< at most one per DOF
+  std::vector<Coulomb> coulomb;           ///< at most one per DOF
+  std::vector<int> passivity_controller;  ///< DOFs with Hannaford-Ryu's PO/PC at the actuator (sim/simulator.hpp)
   int dofs() const;
 };
 

@@ -61,6 +61,11 @@ Simulator::Simulator(const LoopSpec& spec) : spec_(spec), loop_(compose(spec)) {
   Dfw_ = to_double(Mat<rational>(P.D.bottomRows(N).rightCols(N)));
   Bw_ = to_double(Mat<rational>(P.B.rightCols(N)));
   const auto& C = loop_.controller;
+  if (!spec.passivity_controller.empty() && f_ > 0)
+    throw InputError("passivity controller: the delay must be a whole number of samples (the applied force would "
+                     "change inside the period)");
+  for (const Coulomb& c : spec.coulomb)
+    if (c.force > 0) coulomb_.emplace(loop_.plant, c.force, std::vector<double>{p1_.h, p2_.h});
   Ac_ = to_double(C.A);
   Bc_ = to_double(C.B);
   Cc_ = to_double(C.C);
@@ -181,6 +186,12 @@ struct Engine {
   const MNN Dc;
   Grams W1, W2;
   std::vector<char> contact;
+  std::vector<double> quantum;     ///< per DOF, 0: no encoder
+  std::vector<char> round_q;       ///< per DOF: round (half up) instead of floor
+  long friction_events = 0;
+  std::vector<char> pc;            ///< per DOF: passivity controller on
+  std::vector<double> e_obs, pc_diss;  ///< observer energy; energy the PC's damper removed
+  long pc_active = 0;
   // --- state and work vectors
   VX s, tmp, s0;
   VC xc, xc1;
@@ -224,6 +235,16 @@ struct Engine {
     }
     contact.assign(size_t(N), 0);
     for (int j : spec.contact) contact[j] = 1;
+    pc.assign(size_t(N), 0);
+    for (int j : spec.passivity_controller) pc[size_t(j)] = 1;
+    e_obs.assign(size_t(N), 0.0);
+    pc_diss.assign(size_t(N), 0.0);
+    quantum.assign(size_t(N), 0.0);
+    round_q.assign(size_t(N), 0);
+    for (const Quantizer& e : spec.quantizers) {
+      quantum[size_t(e.dof)] = to_real<double>(e.step);
+      round_q[size_t(e.dof)] = e.round;
+    }
     initial_state();
     ring.assign(size_t(Rn), VN::Zero(N));
     e_port.assign(size_t(N), 0.0);
@@ -280,7 +301,7 @@ struct Engine {
     pos.noalias() = Cx * s;
     v.noalias() = Cv * s;
     // f_h just after kT: the input active then
-    const VN& ua = split ? ring[slot(k - nd - 1)] : ring[slot(k - nd)];
+    const VN& ua = split ? ring[slot(k - nd - 1)] : un;  // un: after the passivity controller
     fh.noalias() = Cf * s;
     fh.noalias() += Dfu * ua;
     fh.noalias() += Dfw * w;
@@ -326,8 +347,10 @@ struct Engine {
     pos.noalias() = Cx * s;
     tailbuf[size_t(k % tail)] = s(wpos);
     meas = pos;
-    for (int j = 0; j < N; ++j)
+    for (int j = 0; j < N; ++j) {
+      meas(j) = quantized(j, meas(j));
       if (contact[size_t(j)]) meas(j) = meas(j) > 0 ? meas(j) : 0.0;
+    }
     if (nc > 0) {
       u.noalias() = Cc * xc;
       u.noalias() += Dc * meas;
@@ -340,6 +363,28 @@ struct Engine {
     ring[slot(k)] = u;
     un = ring[slot(k - nd)];
     if (k < nd) un.setZero();
+    if (!spec.passivity_controller.empty()) passivity_control();
+  }
+
+  // Hannaford-Ryu PO/PC on the applied force un (see simulator.hpp).
+  void passivity_control() {
+    v.noalias() = Cv * s;
+    for (int j = 0; j < N; ++j) {
+      if (!pc[size_t(j)]) continue;
+      double& E = e_obs[size_t(j)];
+      E -= T * un(j) * v(j);
+      if (E < 0 && v(j) != 0) {
+        un(j) += E / (T * v(j));  // -alpha v with alpha = -E/(T v^2)
+        pc_diss[size_t(j)] -= E;
+        E = 0;
+        ++pc_active;
+      }
+    }
+  }
+
+  double quantized(int j, double x) const {
+    const double q = quantum[size_t(j)];
+    return q > 0 ? q * std::floor(x / q + (round_q[size_t(j)] ? 0.5 : 0.0)) : x;
   }
 
   // The passivity observer: T f_h(kT) v(kT), with uo the force held over [kT, kT+f) when split.
@@ -358,7 +403,18 @@ struct Engine {
 
   // One piece of constant input ui: s+ = Phi s + Gu ui + Gw w; E_port_j += z^T W_j z with
   // z = [s; ui; w]; E_act_j += ui_j (x_j+ - x_j).
-  void propagate_piece(const MX& Phi, const MXN& Gu, const MXN& Gw, const Grams& W, const VN& ui) {
+  void propagate_piece(const MX& Phi, const MXN& Gu, const MXN& Gw, const Grams& W, const VN& ui, double h) {
+    if (S.coulomb_) {  // one DOF: events inside the piece (sim/coulomb.hpp)
+      Vec<double> sd = s;
+      double ep = 0, ea = 0;
+      friction_events += S.coulomb_->advance(sd, ui(0), w(0), h, ep, ea);
+      s = VX(sd);
+      if (energy) {
+        e_port[0] += ep;
+        e_act[0] += ea;
+      }
+      return;
+    }
     if (energy) {
       z << s, ui, w;
       xa.noalias() = Cx * s;
@@ -379,8 +435,8 @@ struct Engine {
 
   // The exact propagation over the period, and the running minimum of sum_j E_port_j.
   void propagate_period() {
-    if (split) propagate_piece(Phi1, Gu1, Gw1, W1, uo);
-    propagate_piece(Phi2, Gu2, Gw2, W2, un);
+    if (split) propagate_piece(Phi1, Gu1, Gw1, W1, uo, S.p1_.h);
+    propagate_piece(Phi2, Gu2, Gw2, W2, un, S.p2_.h);
     if (energy) {
       double tot = 0;
       for (int j = 0; j < N; ++j) tot += e_port[size_t(j)];
@@ -423,6 +479,9 @@ struct Engine {
     SU.e_port = e_port;
     SU.e_act = e_act;
     SU.e_po = e_po;
+    SU.friction_events = friction_events;
+    SU.pc_dissipated = pc_diss;
+    SU.pc_active = pc_active;
     if (diverged) {
       SU.trend = "diverged";
     } else {
@@ -472,6 +531,8 @@ SimResult Simulator::run(const SimOptions& o) const {
   if (o.substeps < 1) throw InputError("substeps must be >= 1, got " + std::to_string(o.substeps));
   if (o.record_every < 0) throw InputError("record_every must be >= 0");
   if (!(o.max_velocity > 0)) throw InputError("max_velocity must be > 0");
+  if (coulomb_ && o.substeps > 1 && o.fine_to >= o.fine_from)
+    throw InputError("substeps > 1 (the intersample grid) is not available with Coulomb friction (its events move the state)");
   SimResult R;
   const auto n = loop_.plant.states(), nc = loop_.controller.states();
   const int N = loop_.N;

@@ -11,6 +11,21 @@
 // from the exact matrices (rounding included, typically one ulp). The remaining error is the
 // double recursion itself.
 //
+// Encoders and Coulomb friction (LoopSpec::quantizers, ::coulomb). The controller sees the
+// quantized sampled position (before the contact clip). Coulomb friction with stiction is
+// event-located inside each piece (sim/coulomb.hpp: one-DOF loops; the pieces are then
+// propagated with double matrix exponentials, and the energies too).
+//
+// Passivity controller (LoopSpec::passivity_controller; Hannaford and Ryu, IEEE T-RO 18(1),
+// 2002), in its original form: at sample k the observer adds the energy the wall's actuator
+// absorbs over the coming period as the samples see it, E_obs -= T u_k v_k (u the force applied
+// over the period, after the delay; v the exact sampled velocity: a velocity measurement); when
+// E_obs < 0 the controller adds a damper u_k -= alpha v_k with alpha = -E_obs/(T v_k^2), which
+// brings E_obs back to 0 (nothing when v_k = 0). Summary::pc_dissipated is the sum of -E_obs
+// removed, pc_active the samples at which it acted. The rectangle rule T u_k v_k is the
+// observer's own error: it is not the exact energy int u v (Summary::e_act) and can miss what
+// a wall generates (docs/friction.md). Integer delays only.
+//
 // Contact. The unilateral wall is evaluated at the sample instants (the papers' sampled wall,
 // paper 002's xi on the sampled position): the environment sees max(0, x_j(kT)); the device and
 // operator dynamics are continuous and the force is held. No event detection inside the period:
@@ -35,6 +50,7 @@
 #include <optional>
 #include <vector>
 
+#include "hapstab/sim/coulomb.hpp"
 #include "hapstab/sim/loop.hpp"
 
 namespace hapstab::sim {
@@ -81,6 +97,9 @@ struct Summary {
   std::string trend;                  ///< "rest", "decaying", "steady", "growing", "diverged"
   double step_matrix_radius = 0;      ///< proven bound on |exact - double| of the step matrices (Piece::radius)
   std::optional<LimitCycle> limit_cycle;
+  long friction_events = 0;           ///< times the device velocity reached 0 inside a period (Coulomb friction)
+  std::vector<double> pc_dissipated;  ///< per DOF: energy the passivity controller's damper removed (observer units)
+  long pc_active = 0;                 ///< samples at which the passivity controller acted
 };
 
 struct SimResult {
@@ -113,6 +132,7 @@ class Simulator {
   long nd_ = 0;       ///< integer part of the delay in samples
   double f_ = 0;      ///< fractional part (seconds)
   Piece p1_, p2_;
+  std::optional<CoulombStepper> coulomb_;  ///< when the spec has Coulomb friction f_c > 0
   Mat<double> Ac_, Bc_, Cc_, Dc_;  ///< controller
   Mat<double> Cx_, Cv_, Cf_, Dfu_, Dfw_, Bw_;  ///< plant outputs / impulse input
   Piece make_piece(const rational& h, bool energy) const;

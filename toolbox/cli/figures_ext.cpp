@@ -1,0 +1,109 @@
+// cli/figures_ext.cpp -- the figures of part "ext" (beyond the papers; issue 19), registered with
+// `hapstab figure` / `hapstab reproduce` (data for plots/ext_*.gp):
+//
+//   ext_pc_wall   paper 001's wall beyond b* (b = 0.99 b*, operator tuned to wT = pi), simulated
+//                 without and with Hannaford-Ryu's passivity observer/controller: position,
+//                 actuator force (the PC's chatter), human-port energy.
+//   ext_zwidth    the Z-width of a device of damping b: the walls K + B(z-1)/(Tz) z^-n it
+//                 renders passively (region in the (K, B) plane, n = 0..3, from certified b*)
+//                 and the largest |Z(jw)| = |H(e^{jwT}) e^{-jnwT}|/w over them.
+// Files: DATADIR/<name>_*.dat, columns in each file's header.
+#include <cmath>
+#include <complex>
+#include <fstream>
+#include <iomanip>
+
+#include "cli/figure.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "hapstab/report/escape.hpp"
+#include "hapstab/scene/scene.hpp"
+#include "hapstab/sim/simulator.hpp"
+
+namespace {
+
+using namespace hapstab;
+using namespace hapstab::cli;
+namespace fs = std::filesystem;
+
+void write_pc_wall(const fs::path& dir) {
+  auto sc = scene::load_scene((examples_dir() / "001_tightness_below.toml").string());
+  for (const bool on : {false, true}) {
+    sim::LoopSpec spec = sc.loop;
+    if (on) spec.passivity_controller = {0};
+    sim::SimOptions so;
+    so.steps = sc.simulate.steps;
+    so.max_velocity = sc.simulate.max_velocity;
+    const sim::SimResult r = sim::Simulator(spec).run(so);
+    std::ofstream f = open_data_file(dir / (std::string("ext_pc_wall_") + (on ? "on" : "off") + ".dat"));
+    f << "# " << report::comment(sc.name) << (on ? ", with" : ", without") << " the passivity controller\n"
+      << "# trend " << r.summary.trend << ", energy generated " << r.summary.energy_generated;
+    if (on) f << ", PC dissipated " << r.summary.pc_dissipated[0] << " J at " << r.summary.pc_active << " samples";
+    f << "\n# t [s]  x [m]  u (actuator force) [N]  int f_h v dt [J]\n";
+    for (size_t i = 0; i < r.samples.rows(); ++i)
+      f << r.samples.t[i] << ' ' << r.samples.x[i] << ' ' << r.samples.u[i] << ' ' << r.samples.e_port[i] << '\n';
+  }
+}
+
+// b* of the unit wall cos(t) + sin(t) (z-1)/(Tz) with delay n (certified, 20 digits): by
+// homogeneity b*(r K, r B) = r b*(K, B), so r_max = b / b* on the ray of angle t.
+double unit_bstar(double t, const rational& T, int n) {
+  passivity::BoundProblem p;
+  const rational c = exact_rational(std::cos(t)), s = exact_rational(std::sin(t));
+  // (c + s/T) - (s/T) z^-1 = ((c + s/T) z - s/T)/z
+  p.H = RationalFunction<rational>(Polynomial<rational>(std::vector<rational>{-s / T, c + s / T}),
+                                   Polynomial<rational>::monomial(1));
+  p.T = T;
+  p.delay = n;
+  const passivity::Bound b = passivity::bound(p, passivity::Method::certified, 20);
+  if (b.infinite) return INFINITY;
+  return to_real<double>(b.enclosure->hi);  // the upper end: the region drawn is inside the proven one
+}
+
+void write_zwidth(const fs::path& dir) {
+  const rational T(1, 1000);
+  const double b = 2, Td = 1e-3;  // device damping N s/m
+  std::ofstream reg = open_data_file(dir / "ext_zwidth_region.dat");
+  std::ofstream zw = open_data_file(dir / "ext_zwidth_magnitude.dat");
+  reg << "# passive walls K + B(z-1)/(Tz) z^-n of a device with b = " << b << " N s/m, T = 1 ms: boundary K, B\n"
+      << "# (K, B) = (b / b*_hi(t)) (cos t, sin t), b* certified (upper enclosure end: inside the region)\n"
+      << "# one block per n = 0..3: K [N/m]  B [N s/m]\n";
+  zw << "# largest |Z(jw)| = |H(e^{jwT}) e^{-jnwT}|/w over the boundary walls above (60 directions), and\n"
+     << "# the device's own |m jw + b| for m = 0.1 kg; columns: w [rad/s]  n=0  n=1  n=2  n=3  device\n";
+  const int dirs = 60;
+  std::vector<std::vector<std::pair<double, double>>> walls(4);
+  for (int n = 0; n <= 3; ++n) {
+    for (int i = 0; i <= dirs; ++i) {
+      const double t = (M_PI / 2) * i / dirs;
+      const double r = b / unit_bstar(t, T, n);
+      walls[size_t(n)].push_back({r * std::cos(t), r * std::sin(t)});
+      reg << walls[size_t(n)].back().first << ' ' << walls[size_t(n)].back().second << '\n';
+    }
+    reg << "\n\n";
+  }
+  for (int k = 0; k <= 400; ++k) {
+    const double w = std::pow(10.0, 0.0 + k * (std::log10(M_PI / Td * 0.999)) / 400);
+    zw << w;
+    for (int n = 0; n <= 3; ++n) {
+      double best = 0;
+      const std::complex<double> z = std::exp(std::complex<double>(0, w * Td));
+      for (const auto& [K, B] : walls[size_t(n)]) {
+        const std::complex<double> H = (K + B * (z - 1.0) / (Td * z)) * std::pow(z, -n);
+        best = std::max(best, std::abs(H) / w);
+      }
+      zw << ' ' << best;
+    }
+    zw << ' ' << std::abs(std::complex<double>(b, 0.1 * w)) << '\n';
+  }
+}
+
+const RegisterFigure fig_pc({"ext_pc_wall", "ext",
+                             "A wall beyond b* (b = 0.99 b*, operator tuned to wT = pi) without and with the "
+                             "Hannaford-Ryu passivity controller: position, force chatter, port energy",
+                             &write_pc_wall});
+const RegisterFigure fig_zwidth({"ext_zwidth", "ext",
+                                 "Z-width of a device with b = 2 N s/m, T = 1 ms: the walls K + B(z-1)/(Tz) z^-n it "
+                                 "renders passively (certified b*) and their largest |Z(jw)|",
+                                 &write_zwidth});
+
+}  // namespace
