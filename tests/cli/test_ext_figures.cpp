@@ -1,8 +1,10 @@
 // The figures of part "ext" (cli/figures_ext.cpp): the Z-width region's closed-form corners
-// (n = 0: K_max = 2b/T at B = 0, B_max = b at K = 0) and the passivity controller's effect.
+// (n = 0: K_max = 2b/T at B = 0, B_max = b at K = 0), the stability limit's closed form at B = 0,
+// and the passivity controller's effect.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +60,14 @@ TEST(ExtFigures, ZWidthRegionHasTheClosedFormCorners) {
   const auto n3 = block(d / "data" / "ext_zwidth_region.dat", 3);
   ASSERT_EQ(n3.size(), 61u);
   EXPECT_LT(n3.front()[0], n0.front()[0]);
+  // the stable walls of the device with m = 0.1 kg: at B = 0, n = 0 the closed form of claim
+  // ext.stability.damper_n0, K = b(1 - e)/((m/b)(1 - e) - T e) with e = exp(-bT/m), above 2b/T
+  const auto s0 = block(d / "data" / "ext_zwidth_stable.dat", 0);
+  ASSERT_EQ(s0.size(), 60u);  // every ray but the pure damper
+  const double e = std::exp(-2 * 1e-3 / 0.1), k_stab = 2 * (1 - e) / ((0.1 / 2) * (1 - e) - 1e-3 * e);
+  EXPECT_NEAR(s0.front()[0], k_stab, 1e-8 * k_stab);
+  EXPECT_GT(s0.front()[0], 4000);
+  EXPECT_EQ(s0.front()[1], 0);
   EXPECT_TRUE(fs::exists(d / "figures" / "ext_zwidth.png"));
   fs::remove_all(d);
 }

@@ -6,7 +6,8 @@
 //                 actuator force (the PC's chatter), human-port energy.
 //   ext_zwidth    the Z-width of a device of damping b: the walls K + B(z-1)/(Tz) z^-n it
 //                 renders passively (region in the (K, B) plane, n = 0..3, from certified b*)
-//                 and the largest |Z(jw)| = |H(e^{jwT}) e^{-jnwT}|/w over them.
+//                 beside those it renders stably (mass 0.1 kg; certified stability limit), and
+//                 the largest |Z(jw)| = |H(e^{jwT}) e^{-jnwT}|/w over the passive ones.
 // Files: DATADIR/<name>_*.dat, columns in each file's header.
 #include <cmath>
 #include <complex>
@@ -19,6 +20,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/simulator.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 namespace {
 
@@ -60,6 +62,20 @@ double unit_bstar(double t, const rational& T, int n) {
   return to_real<double>(b.enclosure->hi);  // the upper end: the region drawn is inside the proven one
 }
 
+// The stability limit on the same ray for a device 1/(m s^2 + b s): sup r with the wall
+// r (c + s (z-1)/(Tz)) z^-n stable for all smaller r (stability::max_gain, certified, 12 digits;
+// the lower enclosure end, inside the stable region). NaN when no r > 0 is stable (a pure damper
+// leaves the device's integrator at z = 1) or the test cannot decide.
+double unit_stability_limit(double t, const rational& m, const rational& b, const rational& T, int n) {
+  const rational c = exact_rational(std::cos(t)), s = exact_rational(std::sin(t));
+  stability::Loop loop = stability::mass_damper_wall(m, b, rational(0), T, n);
+  loop.H = tf(Polynomial<rational>(rational(0)), Polynomial<rational>(rational(1)), T);
+  loop.H_gain = tf(Polynomial<rational>(std::vector<rational>{-s / T, c + s / T}), Polynomial<rational>::monomial(1), T);
+  const stability::MaxGain g = stability::max_gain(loop, 12);
+  if (g.outcome != Outcome::holds || g.infinite) return NAN;
+  return to_real<double>(g.enclosure.lo);
+}
+
 void write_zwidth(const fs::path& dir) {
   const rational T(1, 1000);
   const double b = 2, Td = 1e-3;  // device damping N s/m
@@ -80,6 +96,19 @@ void write_zwidth(const fs::path& dir) {
       reg << walls[size_t(n)].back().first << ' ' << walls[size_t(n)].back().second << '\n';
     }
     reg << "\n\n";
+  }
+  // the stable walls of the same device with mass m = 0.1 kg (passivity does not depend on m)
+  std::ofstream st = open_data_file(dir / "ext_zwidth_stable.dat");
+  st << "# stable walls K + B(z-1)/(Tz) z^-n of the device 1/(m s^2 + b s), m = 0.1 kg, b = " << b
+     << " N s/m, T = 1 ms: boundary from the certified stability limit (stability::max_gain) on each ray\n"
+     << "# one block per n = 0..3: K [N/m]  B [N s/m]\n";
+  for (int n = 0; n <= 3; ++n) {
+    for (int i = 0; i < dirs; ++i) {  // the last ray (pure damper) is never stable for small r
+      const double t = (M_PI / 2) * i / dirs;
+      const double r = unit_stability_limit(t, rational(1, 10), exact_rational(b), T, n);
+      if (std::isfinite(r)) st << r * std::cos(t) << ' ' << r * std::sin(t) << '\n';
+    }
+    st << "\n\n";
   }
   for (int k = 0; k <= 400; ++k) {
     const double w = std::pow(10.0, 0.0 + k * (std::log10(M_PI / Td * 0.999)) / 400);
@@ -103,7 +132,8 @@ const RegisterFigure fig_pc({"ext_pc_wall", "ext",
                              &write_pc_wall});
 const RegisterFigure fig_zwidth({"ext_zwidth", "ext",
                                  "Z-width of a device with b = 2 N s/m, T = 1 ms: the walls K + B(z-1)/(Tz) z^-n it "
-                                 "renders passively (certified b*) and their largest |Z(jw)|",
+                                 "renders passively (certified b*) and stably (m = 0.1 kg, certified limit), and the passive "
+                                 "walls' largest |Z(jw)|",
                                  &write_zwidth});
 
 }  // namespace

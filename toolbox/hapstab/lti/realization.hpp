@@ -32,7 +32,7 @@ StateSpace<rational> tf2ss(const TransferFunction& G);
 StateSpace<rational> tf2ss(const TransferMatrix& G);
 /// Transfer matrix of a state-space model, exact; entries reduced.
 TransferMatrix ss2tf(const StateSpace<rational>& sys);
-/// Characteristic polynomial det(xI - A), exact (Faddeev-LeVerrier).
+/// Characteristic polynomial det(xI - A), exact (FLINT's fraction-free fmpq_mat_charpoly).
 Polynomial<rational> charpoly(const Mat<rational>& A);
 /// Minimal realisation: keeps the controllable and observable part (exact rank decisions).
 StateSpace<rational> minreal(const StateSpace<rational>& sys);
