@@ -1,6 +1,8 @@
 // Exact decimal parsing and correctly rounded decimal output (numeric/decimal.hpp).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -56,9 +58,42 @@ TEST(Decimal, ExactRationalOfBinaryFloats) {
   EXPECT_NE(exact_rational(0.1), rational(1, 10));  // 0.1 is not a double
   EXPECT_EQ(exact_rational(mp50(0.1)), exact_rational(0.1));
   EXPECT_EQ(exact_rational(1e300) * exact_rational(1e-300) > 0, true);
+  EXPECT_EQ(exact_rational(0.1), rational(integer(3602879701896397), integer(1) << 55));
+  EXPECT_EQ(exact_rational(5e-324), rational(integer(1), integer(1) << 1074));  // the least subnormal
+  EXPECT_EQ(exact_rational(-std::numeric_limits<double>::max()), -rational((integer(1) << 1024) - (integer(1) << 971)));
+  EXPECT_EQ(exact_rational(-0.0), rational(0));
+  EXPECT_THROW(exact_rational(std::numeric_limits<double>::quiet_NaN()), InputError);
 }
 
 TEST(Decimal, CommonDecimalDecidesOnlyWhenBothEndsAgree) {
   EXPECT_EQ(common_decimal(rational(33332, 100000), rational(33334, 100000), 3).value(), "0.333");
   EXPECT_FALSE(common_decimal(rational(3344, 10000), rational(3356, 10000), 3).has_value());
+}
+
+// decimal_outward is the nearest decimal of `digits` digits on the asked side: an enclosure
+// printed with it still contains the value, and is no wider than one unit in the last digit.
+TEST(Decimal, OutwardIsTheNearestDecimalOnTheAskedSide) {
+  EXPECT_EQ(decimal_outward(rational(1, 3), 5, -1), "0.33333");
+  EXPECT_EQ(decimal_outward(rational(1, 3), 5, +1), "0.33334");
+  EXPECT_EQ(decimal_outward(rational(-1, 3), 5, -1), "-0.33334");
+  EXPECT_EQ(decimal_outward(rational(-1, 3), 5, +1), "-0.33333");
+  EXPECT_EQ(decimal_outward(rational(2, 3), 5, -1), "0.66666");  // not to nearest
+  for (int dir : {-1, +1}) {
+    EXPECT_EQ(decimal_outward(rational(1, 8), 5, dir), "0.125");  // exact: itself
+    EXPECT_EQ(decimal_outward(rational(-1234), 4, dir), "-1234");
+    EXPECT_EQ(decimal_outward(rational(0), 5, dir), "0");
+  }
+  EXPECT_EQ(decimal_outward(rational(999999, 100000), 5, +1), "10");  // carry into a new digit
+  EXPECT_EQ(decimal_outward(rational(999999, 100000), 5, -1), "9.9999");
+  EXPECT_EQ(decimal_outward(rational(123456789), 3, +1), "1.24e+08");
+  EXPECT_EQ(decimal_outward(rational(123456789), 3, -1), "1.23e+08");
+  // containment and width on many values: lo <= q <= hi, hi - lo <= one unit of the last digit
+  for (long p = -997; p <= 997; p += 13)
+    for (long q : {7L, 1000L, 999983L}) {
+      const rational x(p, q);
+      const rational lo = parse_rational(decimal_outward(x, 6, -1)), hi = parse_rational(decimal_outward(x, 6, +1));
+      EXPECT_LE(lo, x);
+      EXPECT_GE(hi, x);
+      EXPECT_LE(hi - lo, abs(x) * rational(1, 10000)) << p << "/" << q;  // 10^-5 relative >= one unit of 6 digits
+    }
 }

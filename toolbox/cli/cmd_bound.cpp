@@ -196,8 +196,8 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   if (!b.note.empty()) j["note"] = b.note;
   if (r.dirichlet) {
     const auto& [C, D] = *r.dirichlet;
-    j["dirichlet_C"] = {decimal_exact_or_outward(C.lo, digits + 3, -1), decimal_exact_or_outward(C.hi, digits + 3, +1)};
-    j["dirichlet_D"] = {decimal_exact_or_outward(D.lo, digits + 3, -1), decimal_exact_or_outward(D.hi, digits + 3, +1)};
+    j["dirichlet_C"] = {decimal_outward(C.lo, digits + 3, -1), decimal_outward(C.hi, digits + 3, +1)};
+    j["dirichlet_D"] = {decimal_outward(D.lo, digits + 3, -1), decimal_outward(D.hi, digits + 3, +1)};
   }
   if (r.damping) {
     nlohmann::json d;

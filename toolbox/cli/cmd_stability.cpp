@@ -99,7 +99,7 @@ stability::Loop make_loop(const StabilityOpts& o) {
 }
 
 nlohmann::json enclosure_json(const Enclosure<rational>& e, int digits) {
-  return {decimal_exact_or_outward(e.lo, digits, -1), decimal_exact_or_outward(e.hi, digits, +1)};
+  return {decimal_outward(e.lo, digits, -1), decimal_outward(e.hi, digits, +1)};
 }
 
 int run_decide(const StabilityOpts& o, const stability::Loop& loop) {

@@ -102,7 +102,13 @@ rational parse_rational(std::string_view text, std::string_view what) {
   return *q;
 }
 
-std::string to_decimal(const rational& x, int digits) {
+namespace {
+
+enum class Rounding { nearest_even, down, up };  // down: toward -inf; up: toward +inf
+
+// x with `digits` significant digits, rounded as `mode` says: the one formatter behind
+// to_decimal and decimal_outward.
+std::string format_decimal(const rational& x, int digits, Rounding mode) {
   if (digits < 1) digits = 1;
   if (x == 0) return "0";
   const bool neg = x < 0;
@@ -131,8 +137,10 @@ std::string to_decimal(const rational& x, int digits) {
     break;
   }
   scaled(digits - 1 - e, N, M);
-  integer n = N / M, r = N - n * M;  // floor; round half to even
-  if (2 * r > M || (2 * r == M && (n % 2) != 0)) n += 1;
+  integer n = N / M, r = N - n * M;  // the magnitude, truncated; then rounded as asked
+  const bool away = mode == Rounding::nearest_even ? 2 * r > M || (2 * r == M && (n % 2) != 0)
+                                                   : r != 0 && neg == (mode == Rounding::down);
+  if (away) n += 1;
   if (n == ten_to(static_cast<unsigned>(digits))) {
     n /= 10;
     ++e;
@@ -162,6 +170,15 @@ std::string to_decimal(const rational& x, int digits) {
   return out;
 }
 
+}  // namespace
+
+std::string to_decimal(const rational& x, int digits) { return format_decimal(x, digits, Rounding::nearest_even); }
+
+std::string decimal_outward(const rational& q, int digits, int dir) {
+  return format_decimal(q, digits, dir < 0 ? Rounding::down : Rounding::up);
+}
+
+
 std::optional<std::string> common_decimal(const rational& lo, const rational& hi, int digits) {
   std::string a = to_decimal(lo, digits), b = to_decimal(hi, digits);
   if (a == b) return a;
@@ -170,33 +187,9 @@ std::optional<std::string> common_decimal(const rational& lo, const rational& hi
 
 rational exact_rational(double x) {
   if (!std::isfinite(x)) throw InputError("exact_rational: value is not finite");
-  int e = 0;
-  double m = std::frexp(x, &e);  // x = m * 2^e, 0.5 <= |m| < 1
-  // 53-bit integer mantissa
-  auto mi = static_cast<long long>(std::ldexp(m, 53));
-  e -= 53;
-  rational q{integer(mi)};
-  if (e >= 0) q *= rational(integer(1) << e);
-  else q /= rational(integer(1) << -e);
+  rational q;
+  mpq_set_d(q.backend().data(), x);  // exact: a double is m 2^e (GMP: "no rounding")
   return q;
-}
-
-std::string decimal_outward(const rational& q, int digits, int dir) {
-  if (q == 0) return "0";
-  rational nudge = abs(q) * pow10(1 - digits);
-  for (int k = 0; k < 6; ++k) {
-    std::string s = to_decimal(q + rational(dir) * nudge, digits);
-    rational back = parse_rational(s);
-    if ((dir < 0 && back <= q) || (dir > 0 && back >= q)) return s;
-    nudge *= 10;
-  }
-  return to_decimal(q, digits);  // unreachable in practice
-}
-
-std::string decimal_exact_or_outward(const rational& q, int digits, int dir) {
-  std::string s = to_decimal(q, digits);
-  if (parse_rational(s) == q) return s;
-  return decimal_outward(q, digits, dir);
 }
 
 }  // namespace hapstab

@@ -31,11 +31,10 @@ std::string to_decimal(const rational& x, int digits);
 /// or nullopt when the enclosure is too wide to decide them (caller then raises precision).
 std::optional<std::string> common_decimal(const rational& lo, const rational& hi, int digits);
 
-/// q as a decimal with `digits` significant digits rounded outward (dir = -1 down, +1 up), so that
-/// printed enclosures still contain the value.
+/// q with `digits` significant digits rounded outward (dir = -1 toward -inf, +1 toward +inf): the
+/// nearest such decimal on that side, q itself when it has at most `digits` digits, so that a
+/// printed enclosure still contains the value.
 std::string decimal_outward(const rational& q, int digits, int dir);
-/// q itself when `digits` significant digits show it exactly, else decimal_outward(q, digits, dir).
-std::string decimal_exact_or_outward(const rational& q, int digits, int dir);
 
 /// 10^e, exact.
 rational pow10(long e);

@@ -91,9 +91,9 @@ bool enclosure_rigorous(const Bound& b) {
 Enclosure<std::string> reported_enclosure(const Bound& b, int digits) {
   if (b.infinite) return {"inf", "inf"};
   const auto& [lo, hi] = *b.enclosure;
-  if (b.kind == Method::grid && b.status == Status::numeric) return {decimal_exact_or_outward(lo, 17, -1), "inf"};
+  if (b.kind == Method::grid && b.status == Status::numeric) return {decimal_outward(lo, 17, -1), "inf"};
   if (b.status == Status::numeric) return {decimal_outward(lo, 17, -1), decimal_outward(hi, 17, +1)};
-  return {decimal_exact_or_outward(lo, digits + 5, -1), decimal_exact_or_outward(hi, digits + 5, +1)};
+  return {decimal_outward(lo, digits + 5, -1), decimal_outward(hi, digits + 5, +1)};
 }
 
 // ---------------------------------------------------------------------------------------------
