@@ -35,6 +35,13 @@ template <class T> struct is_std_complex : std::false_type {};
 template <class T> struct is_std_complex<std::complex<T>> : std::true_type {};
 template <class T> struct is_interval : std::false_type {};
 template <unsigned D> struct is_interval<interval<D>> : std::true_type {};
+/// c == 0 without building a zero: for an exact rational, F(0) is an mpq_init and an mpq_clear,
+/// and the polynomial loops ask this of every coefficient.
+template <class F>
+bool is_zero_coefficient(const F& c) {
+  if constexpr (std::is_same_v<F, rational>) return c.is_zero();
+  else return c == F(0);
+}
 }  // namespace detail
 
 /// Converts a coefficient to the evaluation scalar X. rational -> interval is an outward-rounded
@@ -80,7 +87,7 @@ class Polynomial {
 
   Polynomial() = default;
   Polynomial(F c) {  // NOLINT: a constant is a polynomial
-    if (c != F(0)) c_.push_back(std::move(c));
+    if (!detail::is_zero_coefficient(c)) c_.push_back(std::move(c));
   }
   template <class A, std::enable_if_t<std::is_arithmetic_v<A> && !std::is_same_v<A, F>, int> = 0>
   Polynomial(A c) : Polynomial(F(c)) {}  // NOLINT: Polynomial<rational> p = 1;
@@ -100,7 +107,7 @@ class Polynomial {
   int degree() const { return static_cast<int>(c_.size()) - 1; }
   size_t nonzero_terms() const {
     size_t n = 0;
-    for (const auto& x : c_) n += x != F(0);
+    for (const auto& x : c_) n += !detail::is_zero_coefficient(x);
     return n;
   }
   F coeff(int i) const { return (i >= 0 && i < static_cast<int>(c_.size())) ? c_[i] : F(0); }
@@ -140,13 +147,13 @@ class Polynomial {
     // costs 14 products this way instead of ~10^8.
     std::vector<size_t> nz;
     for (size_t j = 0; j < b.c_.size(); ++j)
-      if (b.c_[j] != F(0)) nz.push_back(j);
+      if (!detail::is_zero_coefficient(b.c_[j])) nz.push_back(j);
     if constexpr (std::is_same_v<F, rational>) {
       if (nz.size() * a.nonzero_terms() >= detail::flint_min_products) return detail::flint_mul(a, b);
     }
     std::vector<F> r(a.c_.size() + b.c_.size() - 1, F(0));
     for (size_t i = 0; i < a.c_.size(); ++i) {
-      if (a.c_[i] == F(0)) continue;
+      if (detail::is_zero_coefficient(a.c_[i])) continue;
       for (size_t j : nz) r[i + j] += a.c_[i] * b.c_[j];
     }
     return Polynomial(std::move(r));
@@ -205,7 +212,7 @@ class Polynomial {
  private:
   std::vector<F> c_;
   void trim() {
-    while (!c_.empty() && c_.back() == F(0)) c_.pop_back();
+    while (!c_.empty() && detail::is_zero_coefficient(c_.back())) c_.pop_back();
   }
 };
 

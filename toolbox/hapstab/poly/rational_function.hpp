@@ -32,16 +32,24 @@ class RationalFunction {
   bool is_zero() const { return num_.is_zero(); }
 
   RationalFunction operator-() const { return RationalFunction(-num_, den_, raw{}); }
+  // With a constant c on one side the result is canonical without a gcd: gcd(n + c d, d) =
+  // gcd(c n, d) = gcd(n, d) = 1 and d stays monic. The parser meets a constant at every number
+  // and parameter, and the gcd was most of the cost of parsing H.
   friend RationalFunction operator+(const RationalFunction& a, const RationalFunction& b) {
+    if (b.is_exact_constant()) return a.plus_constant(b.num_);
+    if (a.is_exact_constant()) return b.plus_constant(a.num_);
     if (a.den_ == b.den_) return RationalFunction(a.num_ + b.num_, a.den_);
     return RationalFunction(a.num_ * b.den_ + b.num_ * a.den_, a.den_ * b.den_);
   }
   friend RationalFunction operator-(const RationalFunction& a, const RationalFunction& b) { return a + (-b); }
   friend RationalFunction operator*(const RationalFunction& a, const RationalFunction& b) {
+    if (b.is_exact_constant()) return a.times_constant(b.num_);
+    if (a.is_exact_constant()) return b.times_constant(a.num_);
     return RationalFunction(a.num_ * b.num_, a.den_ * b.den_);
   }
   friend RationalFunction operator/(const RationalFunction& a, const RationalFunction& b) {
     if (b.num_.is_zero()) throw InputError("RationalFunction: division by the zero rational function");
+    if (b.is_exact_constant()) return a.times_constant(Polynomial<F>(F(1) / b.num_.leading()));
     return RationalFunction(a.num_ * b.den_, a.den_ * b.num_);
   }
   RationalFunction& operator+=(const RationalFunction& o) { return *this = *this + o; }
@@ -75,13 +83,25 @@ class RationalFunction {
  private:
   struct raw {};
   RationalFunction(Polynomial<F> n, Polynomial<F> d, raw) : num_(std::move(n)), den_(std::move(d)) {}
+  /// Canonical (exact) and constant: num = c (or 0), den = 1.
+  bool is_exact_constant() const { return std::is_same_v<F, rational> && den_.degree() == 0 && num_.degree() <= 0; }
+  /// this + c and this * c for a constant polynomial c, canonical as the comment above says.
+  RationalFunction plus_constant(const Polynomial<F>& c) const {
+    Polynomial<F> n = num_ + den_ * c;
+    if (n.is_zero()) return RationalFunction(std::move(n));
+    return RationalFunction(std::move(n), den_, raw{});
+  }
+  RationalFunction times_constant(const Polynomial<F>& c) const {
+    if (c.is_zero()) return RationalFunction(Polynomial<F>());
+    return RationalFunction(num_ * c, den_, raw{});
+  }
   // When one side is a monomial c z^k (a constant, or the T z of a backward difference), the
   // gcd is the power of z both share: returns it. -1 when neither side is a monomial. (The
   // parser builds most haptic H this way; a polynomial gcd there cost 60% of parsing H.)
   int common_power_of_z() const {
     const auto low = [](const Polynomial<F>& p) {
       int k = 0;
-      while (p.coeff(k) == F(0)) ++k;
+      while (detail::is_zero_coefficient(p.coeffs()[k])) ++k;
       return k;
     };
     const int num_low = low(num_), den_low = low(den_);
@@ -107,8 +127,8 @@ class RationalFunction {
           den_ = divmod(den_, g).first;
         }
       }
-      const F l = den_.leading();
-      if (l != F(1)) {
+      const F& l = den_.leading();
+      if (l != 1) {
         num_ = num_ * Polynomial<F>(F(1) / l);
         den_ = den_.monic();
       }
