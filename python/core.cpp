@@ -26,6 +26,7 @@
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "cli/mat_file.hpp"
 
 namespace py = pybind11;
 
@@ -81,6 +82,7 @@ std::string run_forked(const std::vector<std::string>& args) {
   }
   if (pid == 0) {
     ::close(fds[0]);
+    hapstab::cli::restore_gmp_allocator();  // cli/mat_file.hpp: GnuTLS, loaded with matio, zeroes every GMP block
     child_main(args, fds[1]);
   }
   ::close(fds[1]);

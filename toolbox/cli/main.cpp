@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command.hpp"
+#include "cli/mat_file.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
 
@@ -14,6 +15,7 @@ std::string shown(const std::exception& e) { return hapstab::report::text(e.what
 
 int main(int argc, char** argv) {
   using namespace hapstab::cli;
+  restore_gmp_allocator();
   std::vector<std::pair<CLI::App*, Runner>> runners;
   const auto app_ptr = make_app(runners);
   CLI::App& app = *app_ptr;

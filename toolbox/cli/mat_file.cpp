@@ -3,6 +3,8 @@
 
 #include "cli/mat_level5.hpp"
 
+#include <dlfcn.h>
+#include <gmp.h>
 #include <matio.h>
 
 #include <cmath>
@@ -305,6 +307,17 @@ void write_mat(const fs::path& file, const std::vector<MatMatrix>& vars) {
       throw NumericalError("cannot write variable " + m.name + " to " + report::text(file.string()) + matio_said());
   }
   if (Mat_Close(mat.release()) != 0) throw NumericalError("cannot close " + report::text(file.string()) + matio_said());
+}
+
+void restore_gmp_allocator() {
+  void* (*alloc)(size_t) = nullptr;
+  void* (*realloc)(void*, size_t, size_t) = nullptr;
+  void (*free)(void*, size_t) = nullptr;
+  mp_get_memory_functions(&alloc, &realloc, &free);
+  // only GnuTLS's: functions another library set (a Python extension's, say) are left alone
+  Dl_info where{};
+  if (dladdr(reinterpret_cast<void*>(free), &where) != 0 && where.dli_fname && std::strstr(where.dli_fname, "libgnutls"))
+    mp_set_memory_functions(nullptr, nullptr, nullptr);
 }
 
 }  // namespace hapstab::cli
