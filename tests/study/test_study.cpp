@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -118,17 +121,132 @@ TEST(Spec, ErrorsNameTheKey) {
 }
 
 TEST(Table, FlattenDropsTimingsAndSplitsEnclosures) {
-  const auto j = nlohmann::json::parse(
-      R"({"bound":"5","enclosure":["4.9","5.1"],"seconds":{"total":1.5},"run_seconds":2,"d":{"b":"1","ok":true},"v":[1,2,3],"n":null})");
-  const auto f = flatten(j);
+  const nlohmann::json j = nlohmann::json::parse(
+      R"({"bound":"5","enclosure":["4.9","5.1"],"seconds":{"total":1.5},"run_seconds":2,"d":{"b":"1","ok":true},"v":[1,2,3],"n":null,)"
+      R"("w":0.1,"m":[[1,2],{"x":[true,false]},[]],"big":-12345678901234})");
+  const FlatRecord r = flatten_record(record_line(3, {{"exit", 0}, {"json", j}}));
+  const auto& f = r.cells;
   std::vector<std::string> keys;
   for (const auto& [k, v] : f) keys.push_back(k);
-  EXPECT_EQ(keys, (std::vector<std::string>{"bound", "d_b", "d_ok", "enclosure_lo", "enclosure_hi", "n", "v_0", "v_1", "v_2"}));
-  EXPECT_EQ(f[2].second, "true");
-  EXPECT_EQ(f[3].second, "4.9");
-  EXPECT_EQ(f[5].second, "");
+  EXPECT_EQ(keys, (std::vector<std::string>{"big", "bound", "d_b", "d_ok", "enclosure_lo", "enclosure_hi", "m_0_lo", "m_0_hi",
+                                            "m_1_x_lo", "m_1_x_hi", "n", "v_0", "v_1", "v_2", "w"}));
+  EXPECT_EQ(f[0].second, "-12345678901234");
+  EXPECT_EQ(f[3].second, "true");
+  EXPECT_EQ(f[4].second, "4.9");
+  EXPECT_EQ(f[10].second, "");
+  EXPECT_EQ(f[14].second, nlohmann::json(0.1).dump());  // a number reads as json::dump writes it
+  EXPECT_EQ(r.exit, "0");
+  EXPECT_EQ(r.error, "");
+  const FlatRecord e = flatten_record(record_line(9, {{"exit", 2}, {"error", "--H: bad, \"quoted\""}}));
+  EXPECT_TRUE(e.cells.empty());
+  EXPECT_EQ(e.exit, "2");
+  EXPECT_EQ(e.error, "--H: bad, \"quoted\"");
+  // not records: no index, not JSON, not an object, no exit, a column twice, a torn line
+  for (const char* bad : {"{\"exit\":0}", "1 [1,2]", "1 {\"json\":{}}", "1 {\"exit\":0,\"json\":{\"a\":1,\"a\":2}}",
+                          "1 {\"exit\":0,\"json\":{\"a_b\":1,\"a\":{\"b\":2}}}", "1 {\"exit\":0,\"js", "1 nonsense"})
+    EXPECT_THROW(flatten_record(bad), InputError) << bad;
   EXPECT_EQ(csv_field("a,b"), "\"a,b\"");
   EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+}
+
+// The reference: the record parsed by nlohmann into a tree and flattened as table.hpp says.
+void reference_flatten(const nlohmann::json& j, const std::string& name, std::vector<std::pair<std::string, std::string>>& out) {
+  const std::string pre = name.empty() ? "" : name + "_";
+  const auto timing = [](const std::string& k) {
+    return k == "seconds" || (k.size() > 8 && k.compare(k.size() - 8, 8, "_seconds") == 0);
+  };
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it)
+      if (!timing(it.key())) reference_flatten(it.value(), pre + it.key(), out);
+  } else if (j.is_array()) {
+    for (size_t i = 0; i < j.size(); ++i)
+      reference_flatten(j[i], pre + (j.size() == 2 ? (i == 0 ? "lo" : "hi") : std::to_string(i)), out);
+  } else {
+    out.emplace_back(name.empty() ? "value" : name, j.is_null() ? "" : j.is_string() ? j.get<std::string>() : j.dump());
+  }
+}
+
+nlohmann::json random_value(std::mt19937& g, int depth) {
+  static const std::vector<std::string> keys{"a", "b", "bound", "enclosure", "seconds", "t_seconds", "x_y", "\u00e9t\u00e9", "k\"q"};
+  static const std::vector<std::string> texts{"", "plain", "a,b", "say \"hi\"", "tab\there", "line\nbreak", "back\\slash",
+                                              "\u00b5s \u03c9 \u2264 \U0001F600", std::string("nul\0in", 6), "\x7f"};
+  switch (std::uniform_int_distribution<int>(0, depth > 3 ? 4 : 6)(g)) {
+    case 0: return nullptr;
+    case 1: return std::uniform_int_distribution<int>(0, 1)(g) == 1;
+    case 2: return std::uniform_int_distribution<long long>(-(1LL << 62), 1LL << 62)(g);
+    case 3: return std::ldexp(std::uniform_real_distribution<double>(-1, 1)(g), std::uniform_int_distribution<int>(-1070, 1020)(g));
+    case 4: return texts[std::uniform_int_distribution<size_t>(0, texts.size() - 1)(g)];
+    case 5: {
+      nlohmann::json a = nlohmann::json::array();
+      for (int n = std::uniform_int_distribution<int>(0, 4)(g); n > 0; --n) a.push_back(random_value(g, depth + 1));
+      return a;
+    }
+    default: {
+      nlohmann::json o = nlohmann::json::object();
+      for (int n = std::uniform_int_distribution<int>(0, 4)(g); n > 0; --n)
+        o[keys[std::uniform_int_distribution<size_t>(0, keys.size() - 1)(g)]] = random_value(g, depth + 1);
+      return o;
+    }
+  }
+}
+
+// flatten_record reads its own JSON: on 3000 random records (nesting, escapes, UTF-8, NUL, every
+// number shape dump writes) it gives the cells of the tree flattening, and on every truncation
+// and byte mutation of them it either refuses (InputError) or agrees with nlohmann's parse.
+TEST(Table, FlattenRecordEqualsTheTreeFlatteningAndRefusesWhatIsNotJson) {
+  std::mt19937 g(2026);
+  int refused = 0, mutated = 0;
+  for (int n = 0; n < 3000; ++n) {
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = std::uniform_int_distribution<int>(0, 5)(g); k > 0; --k) j["k" + std::to_string(k)] = random_value(g, 1);
+    const nlohmann::json rec = {{"exit", 0}, {"json", j}};
+    const std::string line = record_line(n, rec);
+    std::vector<std::pair<std::string, std::string>> want;
+    reference_flatten(j, "", want);
+    std::vector<std::string> names;
+    for (const auto& c : want) names.push_back(c.first);
+    std::sort(names.begin(), names.end());
+    const bool clash = std::adjacent_find(names.begin(), names.end()) != names.end();  // "x_y" against {"x": {"y"}}
+    if (clash) {
+      EXPECT_THROW(flatten_record(line), InputError) << line;
+      continue;
+    }
+    const FlatRecord got = flatten_record(line);
+    ASSERT_EQ(got.cells, want) << line;
+    EXPECT_EQ(got.exit, "0");
+    for (size_t cut = 2; cut + 1 < line.size(); cut += 7) EXPECT_THROW(flatten_record(line.substr(0, cut)), InputError);
+    std::string m = line;  // one byte changed
+    m[std::uniform_int_distribution<size_t>(2, m.size() - 1)(g)] = char(std::uniform_int_distribution<int>(0, 255)(g));
+    const auto tree = nlohmann::json::parse(m.substr(m.find(' ') + 1), nullptr, false);
+    const bool record = !tree.is_discarded() && tree.is_object() && tree.contains("exit");
+    try {
+      const FlatRecord r = flatten_record(m);
+      ASSERT_TRUE(record) << "accepted what nlohmann refuses: " << m;
+      ++mutated;
+      if (tree.contains("json")) {
+        std::vector<std::pair<std::string, std::string>> w;
+        reference_flatten(tree["json"], "", w);
+        std::vector<std::string> a, b;  // the same columns (in the text's order, where a tree sorts them)
+        for (const auto& c : r.cells) a.push_back(c.first);
+        for (const auto& c : w) b.push_back(c.first);
+        std::sort(a.begin(), a.end());
+        std::sort(b.begin(), b.end());
+        ASSERT_EQ(a, b) << m;
+      }
+    } catch (const InputError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 1000);  // most mutations break the JSON
+  EXPECT_GT(mutated, 100);   // and many do not
+  // nesting: 60 levels are read; deeper is refused, however deep (no recursion, no quadratic paths)
+  const auto nested = [](size_t n) {
+    return "0 {\"exit\":0,\"json\":{\"a\":" + std::string(n, '[') + "1" + std::string(n, ']') + "}}";
+  };
+  std::string path = "a";
+  for (int i = 0; i < 60; ++i) path += "_0";
+  EXPECT_EQ(flatten_record(nested(60)).cells.at(0).first, path);
+  for (size_t n : {64, 1000, 1000000}) EXPECT_THROW(flatten_record(nested(n)), InputError) << n;
 }
 
 TEST(Table, StoreIgnoresTornLineAndReportsDuplicatesAndMissing) {
@@ -144,7 +262,7 @@ TEST(Table, StoreIgnoresTornLineAndReportsDuplicatesAndMissing) {
   s.add_file(dir / "a.txt");
   EXPECT_EQ(s.present(), 2u);
   EXPECT_EQ(s.missing(5), (std::vector<uint64_t>{7}));
-  EXPECT_EQ(s.record(1)["json"]["x"], 1);
+  EXPECT_EQ(flatten_record(s.line(1)).cells, (std::vector<std::pair<std::string, std::string>>{{"x", "1"}}));
   s.add_file(dir / "a.txt");
   EXPECT_EQ(s.duplicates(), (std::vector<uint64_t>{4, 1}));
   {

@@ -3,9 +3,10 @@
 //
 // Each worker is a fork()ed copy that runs its share of the pending points (position k of the
 // pending list goes to worker k mod jobs) and appends one record line per point to its own file
-// DIR/checkpoints/part-PID.txt with a single write(2), fdatasync'ed at least once a second and at
-// the end. A kill can only tear the last line, which the reader ignores; --resume skips every
-// point with a complete line. Point i's record depends on i only, never on jobs or shards.
+// DIR/checkpoints/part-PID.txt, in writes of whole lines at least every 0.1 s (or 64 KiB),
+// fdatasync'ed at least once a second and at the end. A kill loses at most the last 0.1 s of
+// points and can only tear the last line, which the reader ignores; --resume runs the points
+// without a complete line again. Point i's record depends on i only, never on jobs or shards.
 #pragma once
 
 #include <cstdint>

@@ -36,8 +36,17 @@ struct PointRange {
 /// One record line, without its newline.
 std::string record_line(uint64_t index, const nlohmann::json& record);
 
-/// The command's JSON flattened to (column, text) pairs, timings dropped.
-std::vector<std::pair<std::string, std::string>> flatten(const nlohmann::json& j);
+/// A record line taken apart: the command's JSON flattened to (column, text) pairs (timings
+/// dropped), the exit code as written, and the error message ("" when none).
+struct FlatRecord {
+  std::vector<std::pair<std::string, std::string>> cells;
+  std::string exit, error;
+};
+/// Flattens a record line in one pass over its text, without building the JSON (a fast sweep
+/// point costs less than parsing its record into a JSON tree did). InputError when the line is
+/// not a record: not "INDEX JSON", not an object, no "exit", a key twice in an object, or a
+/// column twice ("a_b" beside {"a": {"b": ...}}).
+FlatRecord flatten_record(const std::string& line);
 
 /// Record lines of the points of a range, read from files (each a sequence of complete lines; an
 /// unterminated last line -- a write torn by a kill -- is ignored).
@@ -51,10 +60,8 @@ class RecordStore {
   /// Indices without a record, and indices with two (at most `limit` of each).
   std::vector<uint64_t> missing(size_t limit) const;
   const std::vector<uint64_t>& duplicates() const { return duplicates_; }
-  /// The record line of position k, and its record (InputError if the line is not a record).
+  /// The record line of position k (InputError when it has none).
   std::string line(uint64_t k) const;
-  nlohmann::json record(uint64_t k) const { return parse_record(line(k)); }
-  static nlohmann::json parse_record(const std::string& line);
   const PointRange& range() const { return range_; }
 
  private:
@@ -66,6 +73,7 @@ class RecordStore {
   PointRange range_;
   std::vector<std::filesystem::path> files_;
   mutable std::vector<std::unique_ptr<std::ifstream>> streams_;
+  mutable std::vector<uint64_t> position_;  ///< where each stream will read next
   std::vector<Loc> at_;
   std::vector<uint64_t> duplicates_;
   uint64_t present_ = 0;
