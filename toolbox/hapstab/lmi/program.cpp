@@ -56,8 +56,9 @@ LowRank embed(const LowRank& a, int r0, int c0, int rows_out, int cols_out) {
   LowRank r;
   r.L = MatrixXd::Zero(rows_out, a.L.cols());
   r.R = MatrixXd::Zero(cols_out, a.R.cols());
-  r.L.middleRows(r0, a.L.rows()) = a.L;
-  r.R.middleRows(c0, a.R.rows()) = a.R;
+  // an empty factor has no data to offset (a block of it at r0 > 0 is pointer arithmetic on null)
+  if (a.L.size() > 0) r.L.middleRows(r0, a.L.rows()) = a.L;
+  if (a.R.size() > 0) r.R.middleRows(c0, a.R.rows()) = a.R;
   r.factors = a.factors;
   return r;
 }

@@ -66,9 +66,11 @@ int64_t integer_in(const toml::table& t, const char* name, int64_t lo, int64_t h
 
 void only_keys(const toml::table& t, std::initializer_list<const char*> allowed, const std::string& file,
                const std::string& key) {
-  for (auto&& [k, v] : t)
-    if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k.str() == a; }))
-      fail(file, key + "." + std::string(k.str()), "unknown key");
+  for (auto&& entry : t) {
+    const std::string_view name = entry.first.str();
+    if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return name == a; }))
+      fail(file, key + "." + std::string(name), "unknown key");
+  }
 }
 
 std::vector<std::string> linear_axis(const toml::table& t, const std::string& file, const std::string& key) {
