@@ -178,7 +178,6 @@ std::string decimal_outward(const rational& q, int digits, int dir) {
   return format_decimal(q, digits, dir < 0 ? Rounding::down : Rounding::up);
 }
 
-
 std::optional<std::string> common_decimal(const rational& lo, const rational& hi, int digits) {
   std::string a = to_decimal(lo, digits), b = to_decimal(hi, digits);
   if (a == b) return a;
