@@ -227,3 +227,32 @@ TEST(RationalFunction, Algebra) {
   RF c = 5;  // constants convert
   EXPECT_EQ(c(rational(9)), 5);
 }
+
+// A sum, product or quotient with a constant skips the gcd (rational_function.hpp): the result
+// must be the canonical form the general path gives. The reference builds num/den over a common
+// denominator and lets the constructor reduce them (the gcd path), on random functions with
+// common factors, zero results and negative constants.
+TEST(RationalFunction, ConstantShortcutsGiveTheCanonicalForm) {
+  std::mt19937 g(17);
+  std::uniform_int_distribution<int> d(-4, 4);
+  const auto poly = [&](int deg) {
+    std::vector<rational> c;
+    for (int i = 0; i <= deg; ++i) c.emplace_back(d(g), 1 + std::abs(d(g)));
+    return P(std::move(c));
+  };
+  for (int n = 0; n < 300; ++n) {
+    P num = poly(n % 4), den = poly(1 + n % 3);
+    if (den.is_zero()) continue;
+    const RF f(num, den);
+    const rational c(d(g), 1 + std::abs(d(g)));
+    const RF k{P(c)};
+    const auto same = [](const RF& a, const RF& b) { return a.num() == b.num() && a.den() == b.den(); };
+    EXPECT_TRUE(same(f + k, RF(f.num() + f.den() * P(c), f.den())));
+    EXPECT_TRUE(same(k + f, RF(f.num() + f.den() * P(c), f.den())));
+    EXPECT_TRUE(same(f * k, RF(f.num() * P(c), f.den())));
+    EXPECT_TRUE(same(k * f, RF(f.num() * P(c), f.den())));
+    if (c != 0) EXPECT_TRUE(same(f / k, RF(f.num(), f.den() * P(c))));
+    EXPECT_TRUE(same(f - f + k, k));  // zero plus a constant, and a zero result on the way
+    EXPECT_TRUE((f + RF(P(-c)) + k) == f);
+  }
+}
