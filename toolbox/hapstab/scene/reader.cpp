@@ -67,17 +67,6 @@ double Reader::real(const toml::node& n, const std::string& key) const {
   return to_real<double>(number(n, key));
 }
 
-void Reader::only_keys(const toml::table& t, const std::string& key, std::set<std::string> allowed) const {
-  for (const auto& [k, v] : t) {
-    (void)v;
-    if (!allowed.count(std::string(k.str()))) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      fail(key + "." + std::string(k.str()), "unknown key (expected one of: " + list + ")");
-    }
-  }
-}
-
 Mat<Q> Reader::matrix(const toml::node& n, const std::string& key) const {
   auto a = n.as_array();
   if (!a) fail(key, "expected a matrix: an array of rows, e.g. [[\"0\", \"1\"], [\"-1\", \"0\"]]");
@@ -130,7 +119,6 @@ StateSpace<Q> Reader::block(const toml::table& t, const std::string& key, char v
 StateSpace<Q> Reader::ss_block(const toml::table& t, const std::string& key, char var) const {
   auto s = t["ss"].as_table();
   if (!s) fail(key + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
-  only_keys(*s, key + ".ss", {"A", "B", "C", "D"});
   StateSpace<Q> G;
   for (const char* k : {"A", "B", "C", "D"})
     if (!s->contains(k)) fail(key + ".ss." + k, "missing");

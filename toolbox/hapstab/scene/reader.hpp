@@ -1,13 +1,12 @@
 // hapstab/scene/reader.hpp -- typed values out of a scene's TOML, for the section readers of
 // scene.cpp (internal to the scene module). Every error is an InputError
-// "FILE: KEY: what is wrong", KEY the dotted path of the value (examples/README.md). A scene is
+// "FILE: KEY: what is wrong", KEY the dotted path of the value (docs/scene.md). A scene is
 // untrusted input (docs/security.md): these are the checks that keep it so (sizes of names,
 // exact numbers only, DOF indices in range, blocks realisable and, when claimed, passive).
 #pragma once
 
 #include <functional>
 #include <map>
-#include <set>
 #include <string>
 #include <toml++/toml.h>
 #include <utility>
@@ -45,8 +44,6 @@ struct Reader {
   rational number(const toml::table& t, const std::string& k, const std::string& key) const;
   /// A plotting/profile value: a TOML float, or an exact number rounded to double.
   double real(const toml::node& n, const std::string& key) const;
-  /// Refuses any key of `t` outside `allowed`, listing them.
-  void only_keys(const toml::table& t, const std::string& key, std::set<std::string> allowed) const;
   /// A matrix of exact numbers: an array of rows of equal length.
   Mat<rational> matrix(const toml::node& n, const std::string& key) const;
   /// A transfer function in `var` ('s' or 'z') of T and the parameters.

@@ -1,4 +1,4 @@
-// Scene files -> models (see scene.hpp; the schema is documented in examples/README.md). One
+// Scene files -> models (see scene.hpp; the schema is scene/schema.cpp, docs/scene.md). One
 // reader per section, in the order parse_scene calls them: a section may use what the earlier
 // ones defined (T and the parameters in expressions, the devices' DOFs in DOF lists). The
 // typed values and their checks are in reader.hpp.
@@ -17,6 +17,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/paths.hpp"
 #include "hapstab/scene/reader.hpp"
+#include "hapstab/scene/schema.hpp"
 
 namespace hapstab::scene {
 
@@ -38,7 +39,6 @@ toml::table parse_toml(const std::string& text, const std::string& file) {
 void read_scene_header(const toml::table& root, Reader& c, Scene& sc) {
   auto s = section(root, "scene", c);
   if (!s) c.fail("scene", "missing: every scene starts with [scene] and its sample period T = \"1/1000\"");
-  c.only_keys(*s, "scene", {"name", "description", "T"});
   sc.name = c.free_text(*s, "name", "scene", "", 256);
   sc.description = c.free_text(*s, "description", "scene", "", 8192, true);
   if (!s->contains("T")) c.fail("scene.T", "missing: the sample period, e.g. T = \"1/1000\"");
@@ -100,7 +100,6 @@ void read_parameters(const toml::table& root, const std::map<std::string, Q>& ov
 
 // ---- [[device]]: a mass-damper (m, b) or a strictly proper force -> velocity block
 sim::DeviceBlock read_device(const toml::table& t, const std::string& key, const Reader& c) {
-  c.only_keys(t, key, {"name", "m", "b", "tf", "ss", "passive", "quantum", "quantizer", "coulomb"});
   if ((t.contains("quantum") || t.contains("quantizer") || t.contains("coulomb")) && !t.contains("m"))
     c.fail(key, "quantum, quantizer and coulomb need a mass-damper device (m, b)");
   const std::string name = c.free_text(t, "name", key, key, 256);
@@ -197,7 +196,6 @@ sim::OperatorBlock read_operator_msd(const toml::table& t, const std::string& ke
 
 void read_operators(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   each_table(root, "operator", c, [&](const toml::table& t, const std::string& key, int) {
-    c.only_keys(t, key, {"name", "dofs", "m", "b", "k", "tf", "ss", "mass", "passive"});
     const std::string name = c.free_text(t, "name", key, key, 256);
     std::vector<int> dofs = t.contains("dofs") ? c.dofs_of(*t.get("dofs"), key + ".dofs") : std::vector<int>{};
     sim::OperatorBlock o = t.contains("tf") || t.contains("ss") ? read_operator_block(t, key, name, dofs, c)
@@ -242,7 +240,6 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
   auto t = section(root, k, c);
   if (!t) return std::nullopt;
   const std::string key = k;
-  c.only_keys(*t, key, {"tf", "ss", "method", "domain"});
   const std::string domain = (*t)["domain"].value_or(std::string("z"));
   if (domain != "z" && domain != "s") c.fail(key + ".domain", "expected \"z\" or \"s\"");
   StateSpace<Q> G;
@@ -264,7 +261,6 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
 void read_passivity_controller(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "passivity_controller", c);
   if (!t) return;
-  c.only_keys(*t, "passivity_controller", {"dofs"});
   if (!loop.environment) c.fail("passivity_controller", "it acts on the wall's force: the scene needs an [environment]");
   if (!t->contains("dofs")) c.fail("passivity_controller.dofs", "missing (the DOFs whose actuator it controls)");
   loop.passivity_controller = c.dofs_of(*t->get("dofs"), "passivity_controller.dofs");
@@ -273,7 +269,6 @@ void read_passivity_controller(const toml::table& root, const Reader& c, sim::Lo
 void read_contact(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "contact", c);
   if (!t) return;
-  c.only_keys(*t, "contact", {"dofs"});
   if (!loop.environment) c.fail("contact", "a wall needs an [environment] (the wall's E(z))");
   if (t->contains("dofs")) loop.contact = c.dofs_of(*t->get("dofs"), "contact.dofs");
   else
@@ -284,7 +279,6 @@ void read_contact(const toml::table& root, const Reader& c, sim::LoopSpec& loop)
 void read_delay(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "delay", c);
   if (!t) return;
-  c.only_keys(*t, "delay", {"time", "samples"});
   if (t->contains("time") == t->contains("samples")) c.fail("delay", "give exactly one of time or samples");
   loop.delay = t->contains("time") ? c.number(*t, std::string("time"), std::string("delay"))
                                    : c.number(*t, std::string("samples"), std::string("delay")) * c.T;
@@ -293,7 +287,6 @@ void read_delay(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
 
 // ---- [[input]]: impulses, biases and force profiles
 sim::Impulse read_impulse(const toml::table& t, const std::string& key, int dof, const Reader& c) {
-  c.only_keys(t, key, {"type", "dof", "time", "magnitude"});
   sim::Impulse im;
   im.dof = dof;
   im.time = t.contains("time") ? c.number(t, "time", key) : Q(0);
@@ -303,7 +296,6 @@ sim::Impulse read_impulse(const toml::table& t, const std::string& key, int dof,
 }
 
 sim::Bias read_bias(const toml::table& t, const std::string& key, int dof, const Reader& c) {
-  c.only_keys(t, key, {"type", "dof", "force", "start"});
   sim::Bias b;
   b.dof = dof;
   b.force = c.number(t, "force", key);
@@ -335,7 +327,6 @@ std::vector<double> read_profile_file(const toml::table& t, const std::string& k
 }
 
 sim::Profile read_profile(const toml::table& t, const std::string& key, int dof, const Reader& c) {
-  c.only_keys(t, key, {"type", "dof", "values", "file"});
   sim::Profile p;
   p.dof = dof;
   if (t.contains("values") == t.contains("file")) c.fail(key, "give exactly one of values = [...] or file = \"...\"");
@@ -362,7 +353,6 @@ void read_inputs(const toml::table& root, const Reader& c, sim::LoopSpec& loop) 
 void read_initial(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "initial", c);
   if (!t) return;
-  c.only_keys(*t, "initial", {"x", "v"});
   for (const char* k : {"x", "v"}) {
     if (!t->contains(k)) continue;
     auto a = (*t)[k].as_array();
@@ -407,8 +397,6 @@ std::vector<std::string> simulate_plots(const toml::node& n, const Reader& c) {
 SimulateSection read_simulate(const toml::table& t, const Reader& c) {
   SimulateSection S;
   S.present = true;
-  c.only_keys(t, "simulate", {"duration", "steps", "record_every", "substeps", "window", "max_velocity", "watch_dof",
-                              "energy", "plots"});
   S.steps = simulate_steps(t, c);
   if (auto n = t.get("record_every")) {
     auto i = n->as_integer();
@@ -450,6 +438,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   c.base_dir = base_dir;
   sc.root = parse_toml(text, file);
   const toml::table& root = sc.root;
+  check_names(root, file);  // every section and key is one the schema declares (schema.hpp)
   read_scene_header(root, c, sc);
   read_parameters(root, overrides, c);
   sc.parameters = c.params;
@@ -464,6 +453,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   read_inputs(root, c, sc.loop);
   read_initial(root, c, sc.loop);
   if (auto t = section(root, "simulate", c)) sc.simulate = read_simulate(*t, c);
+  check_schema(root, file);  // the values the readers above leave to other modules, or default
   return sc;
 }
 

@@ -1,8 +1,10 @@
 // hapstab/scene/scene.hpp -- scene files (TOML) -> models. A scene names only the blocks a
-// study needs; examples/README.md documents the schema. This module reads the common part
-// (T, parameters, devices, operators, environment, coupling, contact, delay, inputs, initial
-// state) and the [simulate] section; other analyses read their own sections from `root`
-// (unknown top-level sections are kept for them, unknown keys inside a known section are errors).
+// study needs; every section and key it may hold is declared once in scene/schema.hpp (docs/
+// scene.md is generated from it), and anything else, at any depth, is refused with its line.
+// This module reads the common part (T, parameters, devices, operators, environment, coupling,
+// contact, delay, inputs, initial state) and the [simulate] section; other analyses read their
+// own declared sections ([multidof], [reproduce]) from `root`, and each command refuses the
+// parts of a scene it does not model (scene::check_command).
 //
 // Every error is an InputError naming the file, the key and what is wrong, e.g.
 //   "wall.toml: operator[0].tf: unstable continuous block claimed passive (pole at s = 3)".
@@ -39,7 +41,7 @@ struct Scene {
   std::map<std::string, rational> parameters;
   sim::LoopSpec loop;
   SimulateSection simulate;
-  toml::table root;  ///< the whole file, for sections other modules define
+  toml::table root;  ///< the whole file (checked against the schema), for sections other modules read
 };
 
 /// Parses and validates a scene file. `overrides` replace [parameters] (CLI --set).
