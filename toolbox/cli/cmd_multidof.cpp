@@ -3,7 +3,7 @@
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
 // dissipative Q_V) and Theorem 6 (structured coupling design by CCL, returned by (23)-(24) and
-// verified independently). Scene schema: examples/README.md plus the [multidof] section of
+// verified independently). Scene schema: docs/scene.md (scene/schema.hpp), [multidof] read by
 // hapstab/multidof/scene_multidof.hpp.
 // JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds),
 //   certified, verdict, certificate, gamma (gamma_i of Gamma),
@@ -32,6 +32,7 @@
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/simulator.hpp"
 #include "hapstab/multidof/example.hpp"
 
@@ -80,6 +81,7 @@ int run_analyze(const Opts& o) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+  scene::check_command(sc.root, o.scene, "multidof analyze");  // what it does not model is refused
   const auto sp = multidof::problem_from_scene(sc);
   const double realisation = since(t0);
   const auto r = multidof::analyze(sp.problem, lmi_options(o));
@@ -183,6 +185,7 @@ int run_design(const Opts& o) {
   if (!(o.duration > 0 && o.duration <= 1e6))
     throw InputError("--duration must be in (0, 1e6] seconds, got " + std::to_string(o.duration));
   const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+  scene::check_command(sc.root, o.scene, "multidof design");  // what it does not model is refused
   const auto sp = multidof::problem_from_scene(sc);
   multidof::DesignOptions dop;
   dop.max_iterations = o.iterations;

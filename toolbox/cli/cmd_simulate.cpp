@@ -28,6 +28,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/simulator.hpp"
 
 namespace hapstab::cli {
@@ -205,6 +206,7 @@ int run(const Opts& o) {
     throw InputError("--format: expected csv, mat or csv,mat (got '" + report::text(o.format) + "')");
   const bool csv = o.format.find("csv") != std::string::npos, mat = o.format.find("mat") != std::string::npos;
   auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+  scene::check_command(sc.root, o.scene, "simulate");  // what it does not model is refused (scene/schema.hpp)
   if (!sc.simulate.present)
     throw InputError(o.scene + ": simulate: missing; add [simulate] with duration = \"...\" (seconds) or steps = N");
   const auto& S = sc.simulate;

@@ -14,6 +14,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/paths.hpp"
 #include "hapstab/report/process.hpp"
+#include "hapstab/scene/schema.hpp"
 
 namespace hapstab::cli {
 
@@ -31,14 +32,31 @@ std::string show(const toml::node& v) {
   return "(a table or array)";
 }
 
+// "true (a boolean)", "\"growing\" (a string)", "null": what the command printed, typed.
+std::string typed(const json& j) {
+  if (j.is_null()) return "null";
+  const char* kind = j.is_boolean() ? "a boolean" : j.is_number() ? "a number" : j.is_string() ? "a string"
+                     : j.is_array() ? "a list" : "an object";
+  std::string v = j.dump();
+  if (v.size() > 80) v = v.substr(0, 77) + "...";
+  return v + " (" + kind + ")";
+}
+
 // Checks one expectation (TOML value) against the command's JSON value; "" when it holds,
-// else the reason.
+// else the reason. Types must match: a boolean against a boolean, a string against a string,
+// a comparison or a number against a number; "!= null" / "== null" against anything.
 std::string check(const std::string& key, const toml::node& want, const json& got) {
-  if (auto b = want.value<bool>(); b && want.is_boolean()) {
-    const bool g = got.is_boolean() ? got.get<bool>() : !got.is_null();
-    return g == *b ? "" : key + " is " + show(got) + ", expected " + (*b ? "true" : "false");
+  if (want.is_boolean()) {
+    const bool b = *want.value<bool>();
+    if (!got.is_boolean())
+      return key + " is " + typed(got) + ", expected a boolean (" + (b ? "true" : "false") + ")";
+    return got.get<bool>() == b ? "" : key + " is " + show(got) + ", expected " + (b ? "true" : "false");
   }
-  if (auto s = want.value<std::string>()) {
+  if (auto s = want.value<std::string>(); s && want.is_string()) {
+    if (*s == "!= null" || *s == "== null") {
+      const bool holds = (*s == "== null") == got.is_null();
+      return holds ? "" : key + " is " + typed(got) + ", expected " + *s;
+    }
     for (const char* op : {">=", "<=", "==", ">", "<"}) {
       const std::string o = op;
       if (s->rfind(o, 0) != 0) continue;
@@ -48,17 +66,20 @@ std::string check(const std::string& key, const toml::node& want, const json& go
       } catch (const std::exception&) {
         return key + ": cannot read the number in '" + *s + "'";
       }
-      if (!got.is_number()) return key + " is " + show(got) + ", expected a number " + *s;
+      if (!got.is_number()) return key + " is " + typed(got) + ", expected a number " + *s;
       const double g = got.get<double>();
       const bool holds = o == ">=" ? g >= x : o == "<=" ? g <= x : o == "==" ? g == x : o == ">" ? g > x : g < x;
       return holds ? "" : key + " = " + show(got) + ", expected " + *s;
     }
-    return got.is_string() && got.get<std::string>() == *s ? "" : key + " is " + show(got) + ", expected " + *s;
+    if (!got.is_string()) return key + " is " + typed(got) + ", expected the string '" + *s + "'";
+    return got.get<std::string>() == *s ? "" : key + " is " + show(got) + ", expected " + *s;
   }
-  if (auto d = want.value<double>()) {
-    return got.is_number() && got.get<double>() == *d ? "" : key + " is " + show(got) + ", expected " + std::to_string(*d);
+  if (want.is_integer() || want.is_floating_point()) {
+    const double d = *want.value<double>();
+    if (!got.is_number()) return key + " is " + typed(got) + ", expected the number " + show(want);
+    return got.get<double>() == d ? "" : key + " is " + show(got) + ", expected " + show(want);
   }
-  return key + ": unsupported expectation (use true/false, a string, or \"> x\"-style comparisons)";
+  return key + ": unsupported expectation (use true/false, a string, a number, or \"> x\"-style comparisons)";
 }
 
 SceneRun run_one(const fs::path& file, const std::string& command, const std::vector<std::string>& args,
@@ -100,12 +121,26 @@ SceneRun run_one(const fs::path& file, const std::string& command, const std::ve
     r.error = std::string("unreadable JSON output: ") + e.what();
     return r;
   }
-  if (!expect) return r;
+  // every command a scene runs states what it expects (no silent pass on exit 0 or 1)
+  if (!expect || expect->empty()) {
+    const std::string cmd = command.substr(command.rfind(' ') + 1);
+    r.ok = false;
+    r.error = "the scene states no expectation for " + command + ": add [reproduce] " + cmd +
+              " = { KEY = VALUE, ... } (docs/scene.md)";
+    return r;
+  }
   for (const auto& [k, v] : *expect) {
     const std::string key(k.str());
-    const json got = j.contains(key) ? j[key] : json(nullptr);
+    if (!j.is_object() || !j.contains(key)) {
+      r.ok = false;
+      r.expected += (r.expected.empty() ? "" : "; ") + key + " = " + show(v);
+      r.got += (r.got.empty() ? "" : "; ") + key + " not printed";
+      r.error += (r.error.empty() ? "" : "; ") + key + ": " + command + " does not print it";
+      continue;
+    }
+    const json got = j[key];
     const std::string w = show(v);
-    const bool op = v.is_string() && w.find_first_of("<>=") == 0;  // "> 1" reads as "key > 1"
+    const bool op = v.is_string() && w.find_first_of("<>=!") == 0;  // "> 1" reads as "key > 1"
     r.expected += (r.expected.empty() ? "" : "; ") + key + (op ? " " : " = ") + w;
     r.got += (r.got.empty() ? "" : "; ") + key + " = " + show(got);
     const std::string why = check(key, v, got);
@@ -135,6 +170,17 @@ std::vector<SceneRun> run_scenes(const std::string& paper, const fs::path& outdi
       r.paper = "toolbox";
       r.ok = false;
       r.error = std::string("cannot read the scene: ") + std::string(e.description());
+      runs.push_back(r);
+      continue;
+    }
+    try {  // the schema refuses unknown sections and keys, expectation keys included
+      scene::check_schema(root, f.string());
+    } catch (const InputError& e) {
+      SceneRun r;
+      r.file = f.filename().string();
+      r.paper = "toolbox";
+      r.ok = false;
+      r.error = e.what();
       runs.push_back(r);
       continue;
     }

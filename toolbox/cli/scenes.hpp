@@ -7,9 +7,12 @@
 //   paper = "001"                               # the report section it belongs to
 //   claim = "below b* the interface generates energy"
 //   simulate = { trend = "growing", energy_generated = "> 0" }   # per command: JSON key = expected
-//   analyze = { feasible = true }               # booleans/strings compare equal; "> x", ">= x",
-//   design = { feasible = true }                # "< x", "<= x", "== x" compare numbers; for a key
-//                                               # that may be null (limit_cycle) true = present
+//   analyze = { feasible = true }               # booleans/strings/numbers compare equal, of the same
+//   design = { feasible = true }                # type; "> x", ">= x", "< x", "<= x", "== x" compare
+//                                               # numbers; "!= null" / "== null" (limit_cycle)
+// Strict: the scene is checked against the schema first (an unknown expectation key is refused,
+// scene/schema.hpp); every command a scene runs must have a non-empty expectation table; an
+// expected key the command does not print, or a value of another type, is a failure.
 #pragma once
 
 #include <filesystem>
@@ -23,7 +26,7 @@ struct SceneRun {
   std::string paper;     ///< [reproduce].paper, or "toolbox"
   std::string claim;     ///< [reproduce].claim, or the scene's name
   std::string command;   ///< "simulate", "multidof analyze", "multidof design"
-  std::string expected;  ///< "key = value; ..." (empty: nothing stated, the run only has to succeed)
+  std::string expected;  ///< "key = value; ..."
   std::string got;       ///< the same keys' values in the command's JSON
   bool ok = true;
   std::string error;     ///< why it failed (exit code, unreadable JSON, unmet expectation)
