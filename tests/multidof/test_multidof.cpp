@@ -323,7 +323,7 @@ TEST(MultidofAssumptions, DeviceOspLevels) {
 // [delay]: z^-n E realised exactly (ss2tf of the folded realisation is z^-n E(z)), a fractional
 // delay refused naming simulate and bound --frac-delay, a declared osp above the level refused.
 TEST(MultidofScene, DelayFoldedAndOspChecked) {
-  const std::string base = R"([scene]
+  const std::string base = R"toml([scene]
 T = "1/1000"
 [[device]]
 name = "d"
@@ -335,7 +335,7 @@ dofs = ["d"]
 b = "2"
 [environment]
 tf = "20000 + 5*(z-1)/(T*z)"
-)";
+)toml";
   const auto sc = scene::parse_scene(base + "[delay]\nsamples = \"2\"\n", "delay.toml");
   const SceneProblem sp = problem_from_scene(sc);
   EXPECT_EQ(sp.delay, 2);
