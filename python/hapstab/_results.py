@@ -135,7 +135,9 @@ class Analysis(Result):
     _value_key = "verdict"
 
     def __bool__(self) -> bool:
-        return bool(self._data["stability_concluded"])
+        # as the exit code: Theorem 5 concludes and the loop as written is not proven unstable
+        law = self._data.get("loop_as_written") or {}
+        return bool(self._data["stability_concluded"]) and law.get("stable") is not False
 
     def __repr__(self) -> str:
         return (f"hapstab.Analysis(verdict={self._data['verdict']!r}, certified={self._data['certified']!r}, "

@@ -19,7 +19,8 @@ def _args(command: str, path: str, backend: Optional[str], overrides: dict) -> l
 
 def analyze(scene: Any, *, backend: Optional[str] = None, **overrides: Any) -> Analysis:
     """Theorem 5: the LMIs (16) with an exact certificate, and Assumption 1. bool(result) is
-    True when stability is concluded (certified feasible and the assumptions hold)."""
+    True when stability is concluded (certified feasible and the assumptions hold) and the
+    scene's loop as written (result.loop_as_written) is not proven unstable."""
     with _SceneFile(scene) as path:
         return Analysis(*_json(_args("analyze", path, backend, overrides)))
 

@@ -98,3 +98,120 @@ TEST(CmdMultidof, InconsistentScenesExit2) {
   EXPECT_EQ(r.code, 2) << r.out;
   EXPECT_NE(r.out.find("osp"), std::string::npos) << r.out;
 }
+
+// ---- issue 29: the scene as written, premises checked, conclusions stated exactly ----------
+namespace {
+std::string scene29(const std::string& f) { return std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/" + f; }
+// The human output ends with one verdict line "=> ...".
+std::string verdict_line(const std::string& out) {
+  const auto p = out.rfind("\n=> ");
+  if (p == std::string::npos) return out.rfind("=> ", 0) == 0 ? out.substr(0, out.find('\n')) : "";
+  return out.substr(p + 1, out.find('\n', p + 1) - p - 1);
+}
+}  // namespace
+
+// The one-DOF wall with [delay] samples = "1": the answer is about the delayed loop. Before,
+// multidof ignored the delay: "feasible (certified)", exit 0, while `stability` said NOT stable
+// (spectral radius 1.0292) and simulate diverged.
+TEST(CmdMultidof, DelayIsFoldedIntoTheEnvironment) {
+  const auto r = run("multidof analyze --json --scene " + scene29("multidof_delay_wall.toml"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["delay"].get<int>(), 1);
+  EXPECT_EQ(j["loop_as_written"]["stable"], nlohmann::json(false)) << j["loop_as_written"].dump();
+  EXPECT_NE(j["loop_as_written"]["why"].get<std::string>().find("delay z^-1"), std::string::npos);
+  EXPECT_NE(j["loop_as_written"]["why"].get<std::string>().find("1.029"), std::string::npos)
+      << j["loop_as_written"]["why"];
+  const auto h = run("multidof analyze --scene " + scene29("multidof_delay_wall.toml"));
+  EXPECT_EQ(h.code, 1);
+  EXPECT_NE(h.out.find("E := z^-1 E"), std::string::npos) << h.out;
+  EXPECT_NE(verdict_line(h.out).find("NOT stable"), std::string::npos) << h.out;
+  // the same scene without the delay: the loop as written is stable (b = 16 > 15)
+  const std::string text = read(scene29("multidof_delay_wall.toml"));
+  const auto n = run("multidof analyze --json --scene " + tmp_scene("md29_nodelay.toml", replace(text, "samples = \"1\"", "samples = \"0\"")));
+  const auto jn = nlohmann::json::parse(n.out);
+  EXPECT_EQ(jn["loop_as_written"]["stable"], nlohmann::json(true)) << jn["loop_as_written"].dump();
+  EXPECT_EQ(n.code, jn["stability_concluded"].get<bool>() ? 0 : 1) << n.out;
+  // a fractional delay is refused, naming the commands that model it
+  const auto f = run("multidof analyze --scene " + tmp_scene("md29_frac.toml", replace(text, "samples = \"1\"", "samples = \"3/2\"")));
+  EXPECT_EQ(f.code, 2) << f.out;
+  EXPECT_NE(f.out.find("simulate"), std::string::npos) << f.out;
+  EXPECT_NE(f.out.find("bound --frac-delay"), std::string::npos) << f.out;
+  const auto fd = run("multidof design --scene " + tmp_scene("md29_frac.toml", replace(text, "samples = \"1\"", "samples = \"3/2\"")));
+  EXPECT_EQ(fd.code, 2) << fd.out;
+}
+
+// b = 1 < b* = 15 and no coupling: Theorem 5 may conclude "for every coupling with Delta_V >= ...",
+// but the loop as written is unstable: exit 1, loop_as_written.stable false.
+TEST(CmdMultidof, LoopAsWrittenUnstableIsNotExitZero) {
+  const auto r = run("multidof analyze --json --scene " + scene29("multidof_underdamped.toml"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["loop_as_written"]["stable"], nlohmann::json(false)) << j["loop_as_written"].dump();
+  EXPECT_EQ(j["loop_as_written"]["coupling"].get<std::string>(), "none (the direct connection)");
+  EXPECT_TRUE(j.contains("stability_concluded"));
+  const auto h = run("multidof analyze --scene " + scene29("multidof_underdamped.toml"));
+  EXPECT_EQ(h.code, 1);
+  const std::string v = verdict_line(h.out);
+  EXPECT_NE(v.find("NOT stable"), std::string::npos) << h.out;
+  if (j["feasible"].get<bool>()) EXPECT_NE(h.out.find("stable for every coupling V whose"), std::string::npos) << h.out;
+}
+
+// A declared OSP level above the device's computed one is refused, naming both numbers; a lower
+// one is accepted (conservative).
+TEST(CmdMultidof, DeclaredOspAboveTheDeviceLevelRefused) {
+  const auto r = run("multidof analyze --scene " + scene29("multidof_osp_above.toml"));
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("100"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("b = 16"), std::string::npos) << r.out;
+  const auto d = run("multidof design --scene " + scene29("multidof_osp_above.toml"));
+  EXPECT_EQ(d.code, 2) << d.out;
+  const std::string text = read(scene29("multidof_osp_above.toml"));
+  const auto lower = run("multidof analyze --json --scene " + tmp_scene("md29_osp10.toml", replace(text, "osp = [\"100\"]", "osp = [\"10\"]")));
+  ASSERT_NE(lower.code, 2) << lower.out;
+  const auto j = nlohmann::json::parse(lower.out);
+  bool seen = false;
+  for (const auto& a : j["assumptions"])
+    if (a["name"].get<std::string>().find("device") != std::string::npos) {
+      seen = true;
+      EXPECT_NE(a["detail"].get<std::string>().find("Delta_d = 10 (declared"), std::string::npos) << a.dump();
+    }
+  EXPECT_TRUE(seen);
+}
+
+// The hand m s + b + k/s is positive real: Assumption 1(b) holds (it said FAILS before).
+TEST(CmdMultidof, SpringHandIsPassive) {
+  const auto r = run("multidof analyze --json --scene " + scene29("multidof_spring_hand.toml"));
+  ASSERT_NE(r.code, 2) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& a : j["assumptions"]) {
+    EXPECT_TRUE(a["holds"].get<bool>()) << a.dump();
+    EXPECT_EQ(a["outcome"].get<std::string>(), "holds");
+  }
+  EXPECT_NE(j["loop_as_written"]["stable"], nlohmann::json(nullptr)) << j["loop_as_written"].dump();
+  const auto h = run("multidof analyze --scene " + scene29("multidof_spring_hand.toml"));
+  EXPECT_EQ(h.out.find("FAILS"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("simple on the imaginary axis"), std::string::npos) << h.out;
+}
+
+// Every human-readable analyze and design output ends with a verdict line: success, infeasible,
+// Assumption 1 failing, loop as written unstable.
+TEST(CmdMultidof, VerdictLineEndsEveryOutput) {
+  for (const std::string& f : {ex("multidof_case_ii_nominal.toml"), ex("multidof_case_i_perturbed.toml"),
+                               ex("multidof_case_i_nominal.toml"), scene29("multidof_delay_wall.toml"),
+                               scene29("multidof_underdamped.toml"), scene29("multidof_spring_hand.toml")}) {
+    const auto a = run("multidof analyze --scene " + f);
+    EXPECT_FALSE(verdict_line(a.out).empty()) << f << "\n" << a.out;
+    EXPECT_EQ(a.out.back(), '\n');
+  }
+  for (const std::string& f : {ex("multidof_case_ii_perturbed.toml"), ex("multidof_case_i_perturbed.toml")}) {
+    const auto d = run("multidof design --scene " + f);
+    EXPECT_FALSE(verdict_line(d.out).empty()) << f << "\n" << d.out;
+  }
+  // the Sec. VI verdicts are unchanged
+  EXPECT_NE(verdict_line(run("multidof analyze --scene " + ex("multidof_case_ii_nominal.toml")).out)
+                .find("stable for every coupling with Delta_V >="),
+            std::string::npos);
+  EXPECT_NE(verdict_line(run("multidof analyze --scene " + ex("multidof_case_i_nominal.toml")).out).find("Assumption 1 fails"),
+            std::string::npos);
+}

@@ -12,6 +12,8 @@
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/multidof/scene_multidof.hpp"
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 
 using namespace hapstab;
@@ -242,4 +244,117 @@ TEST(MultidofAnalysis, StabilityOnlyModeAgreesWithFullProgram) {
     EXPECT_GT(es.eigenvalues()(0), 0.0) << "problem " << i;
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(fast.Q_V).eigenvalues()(0), 0.0);
   }
+}
+
+// ---- issue 29: positive-real operators with imaginary-axis poles, device levels, delays --------
+namespace {
+TransferMatrix siso_s(const std::string& text) {
+  ParseOptions po;
+  po.variable = 's';
+  const TransferFunction t = parse_tf(text, po);
+  TransferMatrix G;
+  G.domain = Domain::s;
+  G.entries = {{t}};
+  return G;
+}
+}  // namespace
+
+// Decided exactly from the definition of positive realness: the spring k/s (residue k at s = 0),
+// the hand m s + b + k/s without its inertia, a resonant pair k s/(s^2 + 3) (poles +-j sqrt 3,
+// irrational: the residue's sign is read at an isolated root), and their failures: a negative
+// residue (-1/s, whose He is 0 everywhere), a double pole (1/s^2), a pole in Re s > 0, and He < 0
+// between the poles (s/(s^2+3) - 1/(s+1), He = -1/(1 + w^2)).
+TEST(MultidofAssumptions, PositiveRealWithImaginaryAxisPoles) {
+  for (const char* pr : {"300/s", "2 + 300/s", "5*s/(s^2 + 3)", "(s^2 + 1)/(s*(s^2 + 4))", "1 + 2*s/(s^2+2) + 3/s"}) {
+    const Verdict v = operator_passive(siso_s(pr));
+    EXPECT_TRUE(v.holds()) << pr << ": " << v.evidence;
+    EXPECT_EQ(v.status, Status::exact) << pr;
+  }
+  for (const char* no : {"-1/s", "1/s^2", "1/(s - 1)", "s/(s^2 + 3) - 1/(s + 1)", "(s^2 + 4)/(s*(s^2 + 1))", "-5*s/(s^2+3)"}) {
+    const Verdict v = operator_passive(siso_s(no));
+    EXPECT_TRUE(v.fails()) << no << ": " << v.evidence;
+    EXPECT_EQ(v.status, Status::exact) << no;
+  }
+  // a 2x2 spring coupling two DOFs, K/s with K = [[2, -1], [-1, 2]] > 0 passes; K = [[1, 2], [2, 1]] (indefinite) fails
+  for (const auto& [k12, ok] : {std::pair<const char*, bool>{"-1", true}, {"2", false}}) {
+    TransferMatrix G;
+    G.domain = Domain::s;
+    const std::string d = k12 == std::string("-1") ? "2" : "1";
+    G.entries = {{siso_s(d + "/s")(0, 0), siso_s(std::string(k12) + "/s")(0, 0)},
+                 {siso_s(std::string(k12) + "/s")(0, 0), siso_s(d + "/s")(0, 0)}};
+    const Verdict v = operator_passive(G);
+    EXPECT_EQ(v.holds(), ok) << k12 << ": " << v.evidence;
+    EXPECT_TRUE(v.decided());
+  }
+}
+
+// Device OSP levels: 1/(m s + b) has level b exactly; for any other device the bisection's
+// enclosure contains the level min_w Re(1/G(jw)) found independently on a fine grid in double
+// (for 1/(s + 2) + 1/(s + 4): Re 1/G(jw) = (48 + 6 w^2)/(36 + 4 w^2), minimum 4/3 at w = 0), and
+// its ends are proven (lo OSP, hi not). (s + 3)/((s + 1)(s + 2)) has Re 1/G(jw) = 6/(9 + w^2):
+// infimum 0, no positive level. A pure mass 1/s has a pole on the axis: no positive level.
+TEST(MultidofAssumptions, DeviceOspLevels) {
+  const DeviceLevel md = device_osp_level(siso_s("1/(1/10*s + 16)"), std::make_pair(Q(1, 10), Q(16)));
+  EXPECT_TRUE(md.exact);
+  EXPECT_EQ(md.lo, 16);
+  EXPECT_TRUE(device_is_osp(siso_s("1/(1/10*s + 16)"), 16).holds());
+  EXPECT_TRUE(device_is_osp(siso_s("1/(1/10*s + 16)"), Q(1601, 100)).fails());
+  // a two-mode device: the level is min_w Re(1/G(jw)), here found on a fine grid in double
+  const TransferMatrix G = siso_s("1/(s + 2) + 1/(s + 4)");
+  double ref = 1e300;
+  for (int i = 0; i <= 200000; ++i) {
+    const double w = i * 1e-3;
+    const std::complex<double> s(0, w), g = 1.0 / (s + 2.0) + 1.0 / (s + 4.0);
+    ref = std::min(ref, (1.0 / g).real());
+  }
+  const DeviceLevel L = device_osp_level(G, std::nullopt);
+  EXPECT_TRUE(L.verdict.holds()) << L.verdict.evidence;
+  EXPECT_FALSE(L.exact);
+  EXPECT_LE(to_real<double>(L.lo), ref * (1 + 1e-9));
+  EXPECT_GE(to_real<double>(L.hi), ref * (1 - 1e-6));  // the grid's minimum is within 1e-6 of the true one
+  EXPECT_TRUE(device_is_osp(G, L.lo).holds());
+  EXPECT_TRUE(device_is_osp(G, L.hi).fails());
+  // no positive level: relative degree 1 with 1/G growing like s, but Re 1/G -> 0
+  EXPECT_FALSE(device_osp_level(siso_s("(s + 3)/((s + 1)*(s + 2))"), std::nullopt).verdict.holds());
+  // a pure mass: a pole at s = 0, no positive level (exact)
+  EXPECT_TRUE(device_is_osp(siso_s("1/s"), Q(1, 1000)).fails());
+}
+
+// [delay]: z^-n E realised exactly (ss2tf of the folded realisation is z^-n E(z)), a fractional
+// delay refused naming simulate and bound --frac-delay, a declared osp above the level refused.
+TEST(MultidofScene, DelayFoldedAndOspChecked) {
+  const std::string base = R"toml([scene]
+T = "1/1000"
+[[device]]
+name = "d"
+m = "1/10"
+b = "16"
+[[operator]]
+name = "hand"
+dofs = ["d"]
+b = "2"
+[environment]
+tf = "20000 + 5*(z-1)/(T*z)"
+)toml";
+  const auto sc = scene::parse_scene(base + "[delay]\nsamples = \"2\"\n", "delay.toml");
+  const SceneProblem sp = problem_from_scene(sc);
+  EXPECT_EQ(sp.delay, 2);
+  const TransferMatrix E = ss2tf(sp.E_undelayed), Ed = ss2tf(sp.problem.E);
+  const RationalFunction<Q> zinv2(Polynomial<Q>(Q(1)), Polynomial<Q>(std::vector<Q>{0, 0, 1}));
+  EXPECT_TRUE(Ed(0, 0).H == E(0, 0).H * zinv2) << Ed(0, 0).to_string();
+  try {
+    problem_from_scene(scene::parse_scene(base + "[delay]\ntime = \"0.0015\"\n", "frac.toml"));
+    ADD_FAILURE() << "a fractional delay was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bound --frac-delay"), std::string::npos) << e.what();
+  }
+  try {
+    problem_from_scene(scene::parse_scene(base + "[multidof]\nosp = [\"100\"]\n", "osp.toml"));
+    ADD_FAILURE() << "osp 100 above b = 16 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("100 is above"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("b = 16"), std::string::npos) << e.what();
+  }
+  const SceneProblem low = problem_from_scene(scene::parse_scene(base + "[multidof]\nosp = [\"8\"]\n", "osp.toml"));
+  EXPECT_EQ(low.problem.structure.delta_D()(0, 0), 8);
 }

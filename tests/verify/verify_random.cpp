@@ -4,7 +4,7 @@
 // contain its reference; a correctly rounded decimal must be within half a unit in its last
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
-//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof] [--case K]
+//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency] [--case K]
 //
 // Case K of seed S is generated from its own generator (seed, K), so `--case K` replays one.
 //
@@ -26,6 +26,9 @@
 // wedge, level: see their sections below.
 // multidof: Theorems 5 and 6 of paper 000 on random case-ii scenes against the exact-ZOH
 //         simulation of the loop with the designed coupling (check_multidof).
+// consistency: one random scene, three commands' verdicts on its loop as written (multidof
+//         analyze's loop_as_written, stability's Schur test, simulate's trend): none may prove
+//         stable where another proves unstable (check_consistency).
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -45,14 +48,17 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
+#include "hapstab/multidof/loop_as_written.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/sampling/r_decimal.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/simulator.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 using namespace hapstab;
 using Ref = mp100;  // the reference precision: 100 digits, > 2 x the 40 digits under test
@@ -531,6 +537,185 @@ bool check_multidof(std::mt19937_64& g, std::ostream& why) {
   return ok;
 }
 
+// ---- consistency: one scene, three verdicts on the loop as written ---------------------------
+// A random scene: N = 1-3 DOF (1 in 60% of the cases), mass-damper devices 1/(m s + b), hands
+// m_h s + b_h + k_h/s (springs included), walls E = K + B (z - 1)/(T z) per DOF with a spring Kc
+// between neighbouring DOFs, an integer delay 0-3, a coupling (admittance T z/((k_c T + b_c) z - b_c)
+// per DOF) in 40% and a unilateral [contact] in 15% of the cases, an impulse on the first DOF,
+// T = 1, 2 or 5 ms. Its loop is decided three ways:
+//   multidof analyze: loop_as_written (Theorem 4 with the scene's coupling, or the exact Schur
+//     test of a one-DOF loop; null otherwise -- always null with contact, which it must not claim);
+//   stability: the one-DOF loop built again from the generator's numbers, as `hapstab stability`
+//     parses them (--plant "1/(m*s^2 + b*s)" --operator "mh*s + bh + kh/s" --H "E/(1 + E*V)" --delay n),
+//     decided by stability::decide;
+//   simulate: 20000 periods of the scene (sim/, exact ZOH, doubles): proven stable when the last
+//     tenth's largest |v| is below 1e-6 of the run's peak, unstable when it diverges or the last
+//     tenth's |v| exceeds 100 times the first tenth's peak; otherwise no claim.
+// Any two that claim opposite verdicts are a miss. multidof's reference is the library's own
+// double simulator (and the Schur test).
+struct ConsistencyTally {
+  long contact = 0, law_decided = 0, law_stable = 0, stab_decided = 0, sim_claims = 0, compared = 0;
+} consistency_tally;
+
+struct ConsistencyScene {
+  std::string text;
+  int N = 1, delay = 0;
+  bool coupling = false, contact = false;
+  rational T;
+  std::vector<std::string> m, b, mh, bh, kh, K, B, kc, bc;
+  std::string Kc;
+};
+
+ConsistencyScene random_consistency_scene(std::mt19937_64& g) {
+  ConsistencyScene c;
+  const long u = uniform(g, 1, 20);
+  c.N = u <= 12 ? 1 : u <= 17 ? 2 : 3;
+  const long T_ms = std::vector<long>{1, 2, 5}[static_cast<size_t>(uniform(g, 0, 2))];
+  c.T = rational(T_ms, 1000);
+  c.delay = chance(g, 0.5) ? 0 : static_cast<int>(uniform(g, 1, 3));
+  c.coupling = chance(g, 0.4);
+  c.contact = chance(g, 0.15);
+  auto q = [&](long lo, long hi, long den) { return std::to_string(uniform(g, lo, hi)) + "/" + std::to_string(den); };
+  for (int i = 0; i < c.N; ++i) {
+    c.m.push_back(q(5, 100, 100));
+    c.b.push_back(q(1, 300, 10));
+    c.mh.push_back(chance(g, 0.5) ? q(0, 50, 100) : "0");
+    c.bh.push_back(q(0, 50, 10));
+    c.kh.push_back(chance(g, 0.6) ? q(1, 300, 1) : "0");
+    c.K.push_back(q(100, 30000, 1));
+    c.B.push_back(q(0, 200, 10));
+    // coupling stiffness around 2 b / T, where V-hat's OSP requirement k_c < 2 b / T sits
+    const long b_over_T = std::max<long>(1, static_cast<long>(to_real<double>(parse_rational(c.b.back()) / c.T)));
+    c.kc.push_back(q(std::max<long>(1, b_over_T / 4), 4 * b_over_T, 1));
+    c.bc.push_back(q(0, 100, 10));
+  }
+  c.Kc = c.N > 1 ? q(0, 5000, 1) : "0";
+  std::ostringstream s;
+  s << "[scene]\nname = \"consistency, " << c.N << " DOF\"\nT = \"" << T_ms << "/1000\"\n\n[parameters]\nKc = \"" << c.Kc << "\"\n";
+  for (int i = 0; i < c.N; ++i)
+    s << "K" << i << " = \"" << c.K[size_t(i)] << "\"\nB" << i << " = \"" << c.B[size_t(i)] << "\"\nkc" << i << " = \""
+      << c.kc[size_t(i)] << "\"\nbc" << i << " = \"" << c.bc[size_t(i)] << "\"\n";
+  for (int i = 0; i < c.N; ++i)
+    s << "\n[[device]]\nname = \"d" << i << "\"\nm = \"" << c.m[size_t(i)] << "\"\nb = \"" << c.b[size_t(i)] << "\"\n";
+  for (int i = 0; i < c.N; ++i)
+    s << "\n[[operator]]\nname = \"h" << i << "\"\ndofs = [\"d" << i << "\"]\nm = \"" << c.mh[size_t(i)] << "\"\nb = \""
+      << c.bh[size_t(i)] << "\"\nk = \"" << c.kh[size_t(i)] << "\"\n";
+  auto matrix = [&](const std::function<std::string(int, int)>& entry) {
+    std::string t = "[";
+    for (int i = 0; i < c.N; ++i) {
+      t += i ? ", [" : "[";
+      for (int j = 0; j < c.N; ++j) t += (j ? ", \"" : "\"") + entry(i, j) + "\"";
+      t += "]";
+    }
+    return t + "]";
+  };
+  s << "\n[environment]\ntf = " << matrix([&](int i, int j) -> std::string {
+    if (i == j) {
+      const int springs = (i > 0) + (i + 1 < c.N);
+      return "K" + std::to_string(i) + " + " + std::to_string(springs) + "*Kc + B" + std::to_string(i) + "*(z-1)/(T*z)";
+    }
+    return std::abs(i - j) == 1 ? "-Kc" : "0";
+  }) << "\n";
+  if (c.coupling)
+    s << "\n[coupling]\ntf = " << matrix([&](int i, int j) -> std::string {
+      if (i != j) return "0";
+      const std::string k = "kc" + std::to_string(i), b = "bc" + std::to_string(i);
+      return "T*z/((" + k + "*T + " + b + ")*z - " + b + ")";
+    }) << "\n";
+  if (c.delay) s << "\n[delay]\nsamples = \"" << c.delay << "\"\n";
+  if (c.contact) s << "\n[contact]\n";
+  s << "\n[[input]]\ntype = \"impulse\"\ndof = \"d0\"\nmagnitude = \"1/10\"\n";
+  c.text = s.str();
+  return c;
+}
+
+// The one-DOF loop as `hapstab stability` would be given it, from the generator's numbers.
+stability::StabilityResult stability_command(const ConsistencyScene& c) {
+  ParseOptions ps, pz;
+  ps.variable = 's';
+  pz.variable = 'z';
+  ps.T = pz.T = c.T;
+  const std::map<std::string, rational> par{{"m", parse_rational(c.m[0])},   {"b", parse_rational(c.b[0])},   {"mh", parse_rational(c.mh[0])},
+                                            {"bh", parse_rational(c.bh[0])}, {"kh", parse_rational(c.kh[0])}, {"K", parse_rational(c.K[0])},
+                                            {"B", parse_rational(c.B[0])},   {"kc", parse_rational(c.kc[0])}, {"bc", parse_rational(c.bc[0])}};
+  ps.parameters = pz.parameters = par;
+  stability::Loop loop;
+  loop.T = c.T;
+  loop.delay = c.delay;
+  loop.plant = parse_tf("1/(m*s^2 + b*s)", ps);
+  loop.operator_impedance = parse_tf("mh*s + bh + kh/s", ps);
+  const std::string E = "(K + B*(z-1)/(T*z))", V = "(T*z/((kc*T + bc)*z - bc))";
+  loop.H = parse_tf(c.coupling ? E + "/(1 + " + E + "*" + V + ")" : E, pz);
+  return stability::decide(loop);
+}
+
+bool check_consistency(std::mt19937_64& g, std::ostream& why) {
+  const ConsistencyScene c = random_consistency_scene(g);
+  why << "consistency scene:\n" << c.text;
+  const scene::Scene sc = scene::parse_scene(c.text, "random scene");
+  // multidof analyze's loop as written
+  const multidof::SceneProblem sp = multidof::problem_from_scene(sc);
+  const bool holds = multidof::all_hold(
+      multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence));
+  const multidof::LoopAsWritten law = multidof::loop_as_written(sc, sp, holds);
+  std::vector<std::pair<std::string, int>> claims;  // +1 stable, -1 unstable
+  if (c.contact) {
+    ++consistency_tally.contact;
+    if (law.stable) {
+      why << "  multidof claims a verdict on a loop with [contact]: " << law.why << "\n";
+      return false;
+    }
+  }
+  if (law.stable) {
+    ++consistency_tally.law_decided;
+    consistency_tally.law_stable += *law.stable;
+    claims.emplace_back("multidof loop_as_written (" + law.method + ")", *law.stable ? 1 : -1);
+  }
+  Stopwatch reference_time;
+  if (c.N == 1 && !c.contact) {
+    const auto r = stability_command(c);
+    if (r.verdict.decided()) {
+      ++consistency_tally.stab_decided;
+      claims.emplace_back("stability (" + r.verdict.evidence + ")", r.verdict.holds() ? 1 : -1);
+    }
+  }
+  sim::SimOptions so;
+  so.steps = 20000;
+  so.energy = false;
+  so.max_velocity = 1e4;
+  const auto run = sim::Simulator(sc.loop).run(so);
+  const auto& tr = run.samples;
+  const size_t rows = tr.rows(), tenth = std::max<size_t>(1, rows / 10);
+  double peak = 0, first = 0, last = 0;
+  for (size_t i = 0; i < rows; ++i)
+    for (int j = 0; j < tr.N; ++j) {
+      const double a = std::fabs(tr.v[i * size_t(tr.N) + size_t(j)]);
+      peak = std::max(peak, a);
+      if (i < tenth) first = std::max(first, a);
+      if (i + tenth >= rows) last = std::max(last, a);
+    }
+  int sim_claim = 0;
+  if (run.summary.diverged || last > 100 * first) sim_claim = -1;
+  else if (last <= 1e-6 * peak) sim_claim = 1;
+  if (sim_claim) {
+    ++consistency_tally.sim_claims;
+    std::ostringstream o;
+    o << "simulate (" << run.summary.steps_run << " periods, peak |v| " << peak << ", first tenth " << first
+      << ", last tenth " << last << (run.summary.diverged ? ", diverged" : "") << ")";
+    claims.emplace_back(o.str(), sim_claim);
+  }
+  if (claims.size() >= 2) ++consistency_tally.compared;
+  bool ok = true;
+  for (size_t a = 0; a < claims.size(); ++a)
+    for (size_t b = a + 1; b < claims.size(); ++b)
+      if (claims[a].second != claims[b].second) {
+        ok = false;
+        why << "  " << claims[a].first << ": " << (claims[a].second > 0 ? "stable" : "UNSTABLE") << "\n  but "
+            << claims[b].first << ": " << (claims[b].second > 0 ? "stable" : "UNSTABLE") << "\n";
+      }
+  return ok;
+}
+
 int main(int argc, char** argv) {
   long cases = 1000, only = -1, first = 0;
   unsigned long seed = 1;
@@ -552,19 +737,20 @@ int main(int argc, char** argv) {
       else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof] [--case K])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency] [--case K])\n";
       return 2;
     }
   }
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
-      {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof}};
+      {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
+      {"consistency", check_consistency}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
     const std::string name = criterion.substr(a, b - a);
     const bool known = name == "all" || std::any_of(criteria.begin(), criteria.end(), [&](const auto& c) { return c.first == name; });
     if (!known) {
-      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof or all (comma-separated), not '" << name << "'\n";
+      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency or all (comma-separated), not '" << name << "'\n";
       return 2;
     }
     chosen.insert(name);
@@ -618,6 +804,11 @@ int main(int argc, char** argv) {
                   "           in %ld of those; the loop with the coupling settled in %ld, neither settled nor grew in 3000 periods in %ld)\n",
                   multidof_tally.applicable, multidof_tally.designed, multidof_tally.t5_feasible, multidof_tally.settled,
                   multidof_tally.steady);
+    if (name == "consistency")
+      std::printf("          (contact %ld; multidof decided the loop as written in %ld (stable in %ld), stability in %ld,\n"
+                  "           simulate claimed a verdict in %ld; two or more verdicts compared in %ld)\n",
+                  consistency_tally.contact, consistency_tally.law_decided, consistency_tally.law_stable,
+                  consistency_tally.stab_decided, consistency_tally.sim_claims, consistency_tally.compared);
     if (t.misses > 0 || t.refused > 0) failed = 1;
   }
   return failed;

@@ -5,23 +5,31 @@
 // dissipative Q_V) and Theorem 6 (structured coupling design by CCL, returned by (23)-(24) and
 // verified independently). Scene schema: docs/scene.md (scene/schema.hpp), [multidof] read by
 // hapstab/multidof/scene_multidof.hpp.
-// JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds),
+// JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds:
+//   Theorem 5's conclusion, stable for every coupling whose Delta_V >= delta_v_required),
+//   loop_as_written {stable (true|false|null), coupling, method, status, why} (the scene's own
+//   loop: multidof/loop_as_written.hpp), delay (n of [delay] z^-n, folded into E),
 //   certified, verdict, certificate, gamma (gamma_i of Gamma),
 //   x (the g_i of X), q_v, delta_v_required, margin, facial_reduction, least_dissipative
-//   {q_v, norm, delta_v, gamma, certified}, assumptions [{name, holds, certified, detail}].
+//   {q_v, norm, delta_v, gamma, certified}, assumptions [{name, holds, outcome (holds|fails|
+//   undecided), certified, detail}].
 // JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
 //   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict, certified,
 //   detail}], message, assumptions.
 // It also registers Fig. 6 and Fig. 7 of paper 000 (`hapstab figure multidof_fig6|multidof_fig7`):
 // velocity data without coupling, with the designed V and with the paper's (27).
-// Exit codes: 0 stability concluded (analyze) / a stabilising V found and verified (design),
-// 1 not feasible, not verified, or Assumption 1 fails,
-// 2 bad input (inconsistent block sizes, unstable E, non-square E), 3 numerical failure.
+// Human output ends with a verdict line "=> ..." in every case.
+// Exit codes: 0 stability concluded and the loop as written not proven unstable (analyze) / a
+// stabilising V found and verified (design), 1 not feasible, not verified, Assumption 1 fails
+// or is undecided, or the loop as written is proven unstable, 2 bad input (inconsistent block
+// sizes, unstable E, non-square E, a fractional [delay], a declared osp above the device's
+// level), 3 numerical failure.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <chrono>
+#include <iomanip>
 #include <sstream>
 #include <memory>
 
@@ -30,6 +38,7 @@
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
+#include "hapstab/multidof/loop_as_written.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/scene/schema.hpp"
@@ -65,14 +74,61 @@ lmi::Options lmi_options(const Opts& o) {
   return op;
 }
 
+const char* outcome_word(const Verdict& v) { return v.holds() ? "holds" : v.fails() ? "fails" : "undecided"; }
+
 json assumptions(const multidof::SceneProblem& sp) {
   json a = json::array();
-  for (const auto& c : multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names))
+  for (const auto& c :
+       multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence))
     a.push_back({{"name", c.name},
                  {"holds", c.verdict.holds()},
+                 {"outcome", outcome_word(c.verdict)},
                  {"certified", c.verdict.decided() && c.verdict.status == Status::exact},
                  {"detail", c.verdict.evidence}});
   return a;
+}
+
+void print_assumptions(const json& assume) {
+  for (const auto& a : assume) {
+    const std::string o = a["outcome"].get<std::string>();
+    std::cout << "  [" << (o == "holds" ? "ok" : o == "fails" ? "FAILS" : "undecided") << "] "
+              << a["name"].get<std::string>() << ": " << a["detail"].get<std::string>() << "\n";
+  }
+}
+
+// "Assumption 1 fails" / "... is undecided" (the first line that does not hold)
+std::string assumption_failure(const json& assume) {
+  for (const auto& a : assume)
+    if (!a["holds"].get<bool>())
+      return "Assumption 1 " + std::string(a["outcome"].get<std::string>() == "fails" ? "fails" : "is undecided") + " (" +
+             a["name"].get<std::string>() + ")";
+  return "";
+}
+
+std::string delay_text(const multidof::SceneProblem& sp) {
+  const int m = sp.problem.structure.m();
+  return "[delay] " + std::to_string(sp.delay) + " sample period(s): E := z^-" + std::to_string(sp.delay) +
+         " E (the force computed at kT acts from (k + " + std::to_string(sp.delay) + ")T; " +
+         std::to_string(sp.delay * m) + " shift states folded into E's realisation, exact)";
+}
+
+// Prints a matrix row by row, indented; beyond 8 x 8 only its size and largest |entry|.
+void print_matrix(const Eigen::MatrixXd& M) {
+  if (M.rows() > 8 || M.cols() > 8) {
+    std::cout << "    (" << M.rows() << " x " << M.cols() << ", largest |entry| " << M.cwiseAbs().maxCoeff()
+              << "; --json gives every entry)\n";
+    return;
+  }
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    std::cout << "   ";
+    for (Eigen::Index j = 0; j < M.cols(); ++j) std::cout << " " << std::setw(12) << M(i, j);
+    std::cout << "\n";
+  }
+}
+
+std::string law_word(const multidof::LoopAsWritten& l) {
+  if (!l.stable) return "not decided";
+  return std::string(*l.stable ? "stable" : "NOT stable") + " [" + to_string(l.status) + "]";
 }
 
 int run_analyze(const Opts& o) {
@@ -95,8 +151,17 @@ int run_analyze(const Opts& o) {
   for (const auto& a : assume) assumptions_hold = assumptions_hold && a["holds"].get<bool>();
   // Theorem 5 concludes stability only when the LMIs are certified feasible AND Assumption 1 holds
   const bool stable = feasible && certified && assumptions_hold;
+  const auto t2 = std::chrono::steady_clock::now();
+  const multidof::LoopAsWritten law = multidof::loop_as_written(sc, sp, assumptions_hold, lmi_options(o));
+  const double law_seconds = since(t2);
   json j{{"feasible", feasible},
          {"stability_concluded", stable},
+         {"loop_as_written", {{"stable", law.stable ? json(*law.stable) : json(nullptr)},
+                              {"coupling", law.coupling},
+                              {"method", law.method},
+                              {"status", law.stable ? to_string(law.status) : "undecided"},
+                              {"why", law.why}}},
+         {"delay", sp.delay},
          {"certified", certified},
          {"verdict", verdict},
          {"certificate", r.verdict.evidence},
@@ -112,6 +177,7 @@ int run_analyze(const Opts& o) {
                       {"sdp", r.sdp_seconds},
                       {"certificate", r.seconds - r.sdp_seconds},
                       {"assumptions", assumption_seconds},
+                      {"loop_as_written", law_seconds},
                       {"total", since(t0)}}}};
   if (r.min_found)
     j["least_dissipative"] = {{"q_v", mat(r.Q_V_min)},
@@ -119,30 +185,48 @@ int run_analyze(const Opts& o) {
                               {"delta_v", mat(r.delta_V_min)},
                               {"gamma", r.gamma_sqrt_min},
                               {"certified", r.min_certified}};
+  const bool as_written_unstable = law.stable && !*law.stable;
   if (o.json) {
     print_json(j);
   } else {
     std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << verdict
               << (certified ? " (certified)" : " (not certified)") << "\n  " << r.verdict.evidence << "\n";
     if (r.verdict.evidence.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
+    if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "\n";
     if (feasible) {
       std::cout << "  one feasible point (the SDP solver's): Gamma = sqrt(X): gamma =";
       for (double g : r.gamma_sqrt) std::cout << " " << g;
-      std::cout << "\n  Q_V =\n" << r.Q_V << "\n  with this point the coupling must satisfy Delta_V >= Gamma^-1 Q_V Gamma^-1 =\n"
-                << r.delta_V << "\n";
+      std::cout << "\n  Q_V =\n";
+      print_matrix(r.Q_V);
+      std::cout << "  Theorem 5 then concludes: the loop is stable for every coupling V whose V-hat^Gamma is "
+                   "Delta_V-OSP with Delta_V >= Gamma^-1 Q_V Gamma^-1 =\n";
+      print_matrix(r.delta_V);
       if (r.min_found)
         std::cout << "  least dissipative point: ||Q_V||_2 = " << r.Q_V_min_norm
                   << (r.min_certified ? " (certified point)" : "")
                   << "; Q_V > 0 can be made this small, so the requirement on the coupling shrinks with it "
                      "(the infimum 0 is not attained)\n";
     }
-    for (const auto& a : j["assumptions"])
-      std::cout << "  [" << (a["holds"].get<bool>() ? "ok" : "FAILS") << "] " << a["name"].get<std::string>() << ": "
-                << a["detail"].get<std::string>() << "\n";
-    if (feasible && certified && !assumptions_hold)
-      std::cout << "  => the LMIs are feasible, but Assumption 1 fails: Theorem 5 does not conclude stability\n";
+    print_assumptions(j["assumptions"]);
+    std::cout << "  loop as written (coupling: " << law.coupling << "): " << law_word(law) << "\n    " << law.why << "\n";
+    const std::string law_tail = "; the loop as written (coupling: " + law.coupling + "): " + law_word(law);
+    std::cout << "=> ";
+    if (stable && !as_written_unstable)
+      std::cout << "stable for every coupling with Delta_V >= Gamma^-1 Q_V Gamma^-1 (Theorem 5, certified)" << law_tail;
+    else if (stable)
+      std::cout << "NOT stable as written: Theorem 5 concludes stability only for a coupling with Delta_V >= Gamma^-1 Q_V "
+                   "Gamma^-1" << law_tail;
+    else if (feasible && certified)
+      std::cout << "no conclusion from Theorem 5: the LMIs are feasible, but " << assumption_failure(j["assumptions"])
+                << law_tail;
+    else if (feasible)
+      std::cout << "no conclusion from Theorem 5: the LMIs are feasible but not certified" << law_tail;
+    else
+      std::cout << "no conclusion from Theorem 5: the LMIs (16) are " << verdict << (certified ? " (certified)" : "")
+                << ", and Theorem 5 is sufficient only" << law_tail;
+    std::cout << "\n";
   }
-  return stable ? exit_ok : exit_property_fails;
+  return stable && !as_written_unstable ? exit_ok : exit_property_fails;
 }
 
 // Closed loop of the scene with coupling V (none if V is empty), from the scene's inputs and
@@ -150,7 +234,8 @@ int run_analyze(const Opts& o) {
 sim::SimResult simulate_loop(const scene::Scene& sc, const multidof::Problem& pb, const StateSpace<rational>* V,
                              double duration) {
   sim::LoopSpec spec = sc.loop;
-  spec.environment = pb.E;
+  spec.environment = pb.E;  // holds the [delay] as z^-n E: the coupling is fed the applied force, as in Theorem 6
+  spec.delay = 0;
   if (V) spec.coupling = *V;
   else spec.coupling.reset();
   sim::SimOptions so;
@@ -236,6 +321,22 @@ int run_design(const Opts& o) {
     for (const auto& v : r.verification)
       std::cout << "  [" << (v.verdict.holds() ? "pass" : "FAIL") << (v.verdict.proven() ? ", certified" : "") << "] "
                 << v.name << "\n      " << v.verdict.evidence << "\n";
+    if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "; the designed V is fed the applied force\n";
+    print_assumptions(j["assumptions"]);
+    const std::string premise = assumption_failure(j["assumptions"]);
+    std::cout << "=> ";
+    if (feasible && premise.empty())
+      std::cout << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
+                << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and by simulation)";
+    else if (feasible)
+      std::cout << "a coupling V passed the LMI checks, but " << premise << ": no stability conclusion";
+    else if (r.verdict.fails())
+      std::cout << "no stabilising coupling of this structure from Theorem 6: its convex part is infeasible"
+                << (r.verdict.proven() ? " (certified)" : "");
+    else
+      std::cout << "no verified coupling V (" << (hasV ? "a candidate failed its independent checks" : "CCL found none")
+                << "); Theorem 6 is sufficient only";
+    std::cout << "\n";
   }
   return feasible ? exit_ok : exit_property_fails;
 }

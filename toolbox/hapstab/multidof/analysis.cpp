@@ -128,10 +128,18 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
   o << "Facial reduction of (16)'s first LMI: E-hat has " << m << " eigenvalues at z = 1, so (16) needs "
     << "(A^T - I) P v = 0 and (B^T P - X C/2) v = 0 for each eigenvector v; these hold iff "
     << "P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1, which requires X E(1) symmetric and positive definite. "
-    << "E(1) (static stiffness) = [";
-  for (int i = 0; i < m; ++i) {
-    for (int j = 0; j < m; ++j) o << (j ? ", " : "") << str(fc.E1(i, j));
-    o << (i + 1 < m ? "; " : "]");
+    << "E(1) (static stiffness) = ";
+  if (m <= 4) {  // in full; a larger one summarised (one line of text, not m^2 numbers)
+    o << "[";
+    for (int i = 0; i < m; ++i) {
+      for (int j = 0; j < m; ++j) o << (j ? ", " : "") << str(fc.E1(i, j));
+      o << (i + 1 < m ? "; " : "]");
+    }
+  } else {
+    rational lo = fc.E1(0, 0), hi = lo;
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) lo = std::min(lo, fc.E1(i, j)), hi = std::max(hi, fc.E1(i, j));
+    o << "(" << m << " x " << m << ", entries in [" << str(lo) << ", " << str(hi) << "])";
   }
   if (fc.E1 == MatQ(fc.E1.transpose()))
     o << " is symmetric, so every X in G(m; ...) keeps X E(1) symmetric";

@@ -1,24 +1,36 @@
 // hapstab/multidof/scene_multidof.hpp -- a scene (scene/scene.hpp: devices, operators,
-// environment) -> a multidof::Problem, plus the scene's own [multidof] section:
+// environment, delay) -> a multidof::Problem, plus the scene's own [multidof] section:
 //
 //   [multidof]
-//   osp = ["1.37", "1.37"]          # device OSP levels (default: b of a mass-damper device)
+//   osp = ["1.37", "1.37"]          # device OSP levels (default: the certified level)
 //   perturb_C = [["0","1"],["1","0"]]  # optional: C_E := Pi C_E (D_E unchanged), Sec. VI
 //   qv_block_diagonal = false       # Remark 3
 //   [multidof.coupling]             # Theorem 6 structure (R2)
 //   mbar = [1, 1]                   # default: one block per device
 //   nbar = [1, 1]                   # default: 1 state per block
 //
+// Device OSP levels (Assumption 1(a)) are computed from the device model (assumptions.hpp: b
+// of 1/(m s + b) exactly, else a certified lower bound). A declared `osp` is accepted only where
+// the device is proven OSP at that level (a lower level is conservative); a level above the
+// certified one is an InputError naming both numbers.
+//
+// [delay]: the computation delay t_d = n T holds the force computed at kT until (k + n)T, so
+// the force on the devices is z^-n E x: E is replaced by z^-n E, realised exactly by n*m shift
+// states after E's output (perturb_C acts on E before the delay). Theorem 5's conclusion is then
+// about the delayed loop. A delay that is not a whole number of periods is an InputError naming
+// `hapstab simulate` and `hapstab bound --frac-delay`, which model it.
+//
 // The operators' DOFs define the structure: operator i acts on m_i consecutive DOFs (in
 // device order) and uses the devices on them (case i: one operator on both devices; case ii:
 // one operator per device). Inconsistencies (a DOF without operator, a device split between
-// operators, non-contiguous operator DOFs, a general device without `osp`) are InputErrors
-// naming the scene entry. Header-only so that the multidof library does not depend on scene/.
+// operators, non-contiguous operator DOFs) are InputErrors naming the scene entry. Header-only
+// so that the multidof library does not depend on scene/.
 #pragma once
 
 #include <string>
 
 #include "hapstab/multidof/analysis.hpp"
+#include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/scene/scene.hpp"
 
@@ -28,7 +40,35 @@ struct SceneProblem {
   Problem problem;
   std::vector<TransferMatrix> operators;  ///< each operator's Z_O(s) (for Assumption 1(b))
   std::vector<std::string> operator_names;
+  std::vector<std::string> device_evidence;  ///< per device: where its OSP level comes from
+  int delay = 0;                             ///< n of the [delay] z^-n (folded into problem.E)
+  StateSpace<rational> E_undelayed;          ///< E as analysed before the delay (perturb_C applied)
 };
+
+/// z^-n E: n shift registers of m states after E's output (exact).
+inline StateSpace<rational> delayed(const StateSpace<rational>& E, int n) {
+  if (n == 0) return E;
+  const Eigen::Index ne = E.states(), m = E.outputs(), p = E.inputs(), N = ne + n * m;
+  StateSpace<rational> D{MatQ::Zero(N, N), MatQ::Zero(N, p), MatQ::Zero(m, N), MatQ::Zero(m, p), E.T};
+  D.A.topLeftCorner(ne, ne) = E.A;
+  D.A.block(ne, 0, m, ne) = E.C;  // w_1(k+1) = C x + D u
+  D.B.topRows(ne) = E.B;
+  D.B.middleRows(ne, m) = E.D;
+  for (int k = 1; k < n; ++k) D.A.block(ne + k * m, ne + (k - 1) * m, m, m) = MatQ::Identity(m, m);
+  D.C.rightCols(m) = MatQ::Identity(m, m);  // y = w_n
+  return D;
+}
+
+/// The whole number n of sample periods in `delay` seconds; InputError otherwise.
+inline int delay_in_periods(const rational& delay, const rational& T, const std::string& where) {
+  const rational q = delay / T;
+  if (bmp::denominator(q) != 1)
+    throw InputError(where + "[delay] is " + q.str() + " sample periods, not a whole number: multidof analyze/design "
+                     "model an integer delay z^-n only (folded into E); a fractional delay is modelled by "
+                     "`hapstab simulate` and `hapstab bound --frac-delay`");
+  if (q > 1000) throw InputError(where + "[delay] of " + q.str() + " periods is more than the 1000 multidof models");
+  return static_cast<int>(bmp::numerator(q).convert_to<long>());
+}
 
 inline rational scene_rational(const toml::node& n, const std::string& where) {
   if (auto s = n.value<std::string>()) return parse_rational(*s, where);
@@ -62,6 +102,9 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
     }
     if (auto b = (*md)["qv_block_diagonal"].value<bool>()) pb.qv_block_diagonal = *b;
   }
+  sp.E_undelayed = pb.E;
+  sp.delay = delay_in_periods(sc.loop.delay, sc.T, f);
+  if (sp.delay > 0) pb.E = minreal(delayed(pb.E, sp.delay));
   // devices: DOF ranges and OSP levels
   std::vector<int> dev_first;
   int off = 0;
@@ -75,12 +118,29 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
     const int k = static_cast<int>(dev.dofs());
     dev_first.push_back(off);
     off += k;
+    std::optional<std::pair<rational, rational>> md_mb;  // 1/(m s + b): level b
+    if (dev.mass && k == 1 && dev.G.states() == 1) md_mb = std::make_pair(1 / dev.G.B(0, 0), -dev.G.A(0, 0) / dev.G.B(0, 0));
+    const TransferMatrix G = ss2tf(dev.G);
+    const DeviceLevel level = device_osp_level(G, md_mb);
+    const std::string at = f + "multidof.osp[" + std::to_string(d) + "]";
     if (ospa) {
-      osp.push_back(scene_rational((*ospa)[d], f + "multidof.osp[" + std::to_string(d) + "]") * MatQ::Identity(k, k));
-    } else if (dev.mass && k == 1 && dev.G.states() == 1) {
-      osp.push_back(MatQ::Constant(1, 1, -dev.G.A(0, 0) / dev.G.B(0, 0)));  // 1/(m s + b): level b
+      const rational declared = scene_rational((*ospa)[d], at);
+      if (declared > 0) {
+        const bool ok = level.verdict.holds() && (declared <= level.lo || (!level.exact && device_is_osp(G, declared).holds()));
+        if (!ok)
+          throw InputError(at + " = " + declared.str() + " is above the OSP level of device '" + dev.name +
+                           "' computed from its model: " + level.verdict.evidence +
+                           ". A declared level may only be lower (conservative); remove osp to use the computed one");
+      }
+      osp.push_back(declared * MatQ::Identity(k, k));
+      sp.device_evidence.push_back(declared == level.lo && level.exact ? level.verdict.evidence
+                                   : "declared; at most the level from the model: " + level.verdict.evidence);
     } else {
-      throw InputError(f + "device '" + dev.name + "' is not a 1-DOF mass-damper: give its OSP level in multidof.osp");
+      if (!level.verdict.holds())
+        throw InputError(f + "device '" + dev.name + "': " + level.verdict.evidence +
+                         "; Assumption 1(a) needs a positive OSP level, so Theorems 5 and 6 do not apply");
+      osp.push_back(level.lo * MatQ::Identity(k, k));
+      sp.device_evidence.push_back(level.verdict.evidence);
     }
   }
   // operators: contiguous DOFs, whole devices
