@@ -93,8 +93,46 @@ TEST(CmdPassivityLevel, StateSpaceFileMimo) {
   CliRun r = run("--ss " + f + " --kind isp --backend csdp --json");
   ASSERT_EQ(r.code, 0) << r.out;
   auto j = nlohmann::json::parse(r.out);
-  EXPECT_NEAR(j["level"].get<double>(), 1.0 / 3.0, 1e-5);
-  EXPECT_NE(j["method"].get<std::string>().find("CSDP"), std::string::npos);
+  // the certified frequency level is the result (exact: 1/3 at theta = pi); the LMI beside it
+  EXPECT_EQ(j["status"], "exact") << r.out;
+  EXPECT_EQ(j["lower_bound"], "0.33333333333333333") << r.out;  // 1/3 to 17 digits
+  EXPECT_EQ(j["upper_bound"], "0.33333333333333333") << r.out;
+  EXPECT_NEAR(j["theta"].get<double>(), M_PI, 1e-12);
+  EXPECT_NEAR(j["lmi"]["level"].get<double>(), 1.0 / 3.0, 1e-5);
+  EXPECT_NE(j["lmi"]["method"].get<std::string>().find("CSDP"), std::string::npos);
+}
+
+// Issue 33's example: R diag(g1, g2) R^T, R = (3/5, 4/5; -4/5, 3/5) exactly as written (not its
+// doubles), g1 = 1 + z^-1/2, g2 = 1 + (3/4) z^-2. ISP level exactly 1/4 at theta = pi/2 (the LMI
+// alone gave 0.249999699484, numeric). The OSP level is enclosed, and the LMI's certified lower
+// bound lies below the enclosure.
+TEST(CmdPassivityLevel, StateSpaceFileMimoCertified) {
+  std::string f = write_tmp("pl_mimo_rot.json",
+                            R"({"A": [[0, 0, 0], [0, 0, 0], [0, 1, 0]],
+                                "B": [["3/5", "-4/5"], ["4/5", "3/5"], [0, 0]],
+                                "C": [["3/10", 0, "3/5"], ["-2/5", 0, "9/20"]],
+                                "D": [[1, 0], [0, 1]], "T": "1/1000"})");
+  CliRun r = run("--ss " + f + " --kind isp --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "exact") << r.out;
+  EXPECT_EQ(j["value"], "0.25") << r.out;
+  EXPECT_EQ(parse_rational(j["lower_bound"].get<std::string>()), rational(1, 4));
+  EXPECT_EQ(parse_rational(j["upper_bound"].get<std::string>()), rational(1, 4));
+  EXPECT_NEAR(j["theta"].get<double>(), M_PI / 2, 1e-12);
+  ASSERT_TRUE(j["lmi"]["lower_bound"].is_string()) << r.out;
+  EXPECT_LE(parse_rational(j["lmi"]["lower_bound"].get<std::string>()), rational(1, 4));
+  CliRun o = run("--ss " + f + " --kind osp --json");
+  ASSERT_EQ(o.code, 0) << o.out;
+  auto k = nlohmann::json::parse(o.out);
+  ASSERT_TRUE(k["status"] == "certified" || k["status"] == "exact") << o.out;
+  const rational lo = parse_rational(k["lower_bound"].get<std::string>()),
+                 hi = parse_rational(k["upper_bound"].get<std::string>());
+  EXPECT_LE(lo, hi);
+  EXPECT_LE(hi - lo, rational(1, 1000000000000LL));
+  if (k["lmi"]["lower_bound"].is_string()) EXPECT_LE(parse_rational(k["lmi"]["lower_bound"].get<std::string>()), hi);
+  CliRun t = run("--ss " + f + " --kind isp");
+  EXPECT_NE(t.out.find("isp level = 0.25   [exact"), std::string::npos) << t.out;
 }
 
 TEST(CmdPassivityLevel, BadInputExits2) {

@@ -4,7 +4,7 @@
 // contain its reference; a correctly rounded decimal must be within half a unit in its last
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
-//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency] [--case K]
+//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level] [--case K]
 //
 // Case K of seed S is generated from its own generator (seed, K), so `--case K` replays one.
 //
@@ -24,6 +24,7 @@
 //         a tenth are FIR H built so that the objective's derivative has a double root (a
 //         horizontal inflection) or a triple one (a flat maximum) at a chosen frequency.
 // wedge, level: see their sections below.
+// mimo_level: certified MIMO passivity levels against a 100-digit scan (its section below).
 // multidof: Theorems 5 and 6 of paper 000 on random case-ii scenes against the exact-ZOH
 //         simulation of the loop with the designed coupling (check_multidof).
 // consistency: one random scene, three commands' verdicts on its loop as written (multidof
@@ -39,6 +40,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <set>
 #include <sstream>
@@ -447,6 +449,174 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
   return ok;
 }
 
+// ---- mimo_level: certified MIMO passivity levels (issue 33) --------------------------------
+// phi* = min_theta lambda_min(He G) (ISP, 70%) or delta* = min_theta lambda_min(He G^{-1}) (OSP,
+// G invertible on the circle: D = 2 I + small) of a random stable 2x2..4x4 system of order 1..6
+// (dyadic entries, so the doubles the LMI sees are the model itself), by
+// passivity_level_certified_mimo, against a 100-digit scan: G(e^{j theta}) by complex Gaussian
+// elimination in 100 digits, the eigenvalues of the real symmetric embedding [[Re H, -Im H],
+// [Im H, Re H]] by cyclic Jacobi; a 2048-point double grid, golden section in 100 digits on the
+// cells of its three best points, and both ends. The scan's minimum is an upper bound on the
+// level: the certified lower end must not exceed it, the upper end must be within 1e-30 of it
+// (the scan's accuracy), and the enclosure at most 1e-12 wide (relative) unless exact. The LMI
+// (Lemma 1, on the same model) must not prove a lower bound above the certified upper end.
+struct MimoLevelTally {
+  long exact = 0, certified = 0, lmi_proven = 0;
+  double widest = 0;
+} mimo_level_tally;
+
+template <class R>
+R lambda_min_on_circle(const StateSpace<rational>& s, bool osp, const R& th) {
+  using C = std::complex<R>;
+  const auto n = s.A.rows(), m = s.B.cols();
+  const C z(cos(th), sin(th));
+  auto cv = [](const rational& q) { return C(to_real<R>(q), R(0)); };
+  // X = (zI - A)^{-1} B by Gaussian elimination with partial pivoting
+  std::vector<std::vector<C>> M(static_cast<size_t>(n), std::vector<C>(static_cast<size_t>(n + m)));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) M[i][j] = (i == j ? z : C(0)) - cv(s.A(i, j));
+    for (Eigen::Index j = 0; j < m; ++j) M[i][n + j] = cv(s.B(i, j));
+  }
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index p = k;
+    for (Eigen::Index i = k + 1; i < n; ++i)
+      if (abs(M[i][k]) > abs(M[p][k])) p = i;
+    std::swap(M[k], M[p]);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (i != k) {
+        const C f = M[i][k] / M[k][k];
+        for (Eigen::Index j = k; j < n + m; ++j) M[i][j] -= f * M[k][j];
+      }
+  }
+  std::vector<std::vector<C>> G(static_cast<size_t>(m), std::vector<C>(static_cast<size_t>(m)));
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) {
+      C v = cv(s.D(i, j));
+      for (Eigen::Index k = 0; k < n; ++k) v += cv(s.C(i, k)) * M[k][n + j] / M[k][k];
+      G[i][j] = v;
+    }
+  if (osp) {  // G^{-1} by Gauss-Jordan
+    std::vector<std::vector<C>> E(static_cast<size_t>(m), std::vector<C>(static_cast<size_t>(2 * m)));
+    for (Eigen::Index i = 0; i < m; ++i)
+      for (Eigen::Index j = 0; j < m; ++j) E[i][j] = G[i][j], E[i][m + j] = i == j ? C(1) : C(0);
+    for (Eigen::Index k = 0; k < m; ++k) {
+      Eigen::Index p = k;
+      for (Eigen::Index i = k + 1; i < m; ++i)
+        if (abs(E[i][k]) > abs(E[p][k])) p = i;
+      std::swap(E[k], E[p]);
+      const C d = E[k][k];
+      for (auto& x : E[k]) x /= d;
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (i != k) {
+          const C f = E[i][k];
+          for (Eigen::Index j = 0; j < 2 * m; ++j) E[i][j] -= f * E[k][j];
+        }
+    }
+    for (Eigen::Index i = 0; i < m; ++i)
+      for (Eigen::Index j = 0; j < m; ++j) G[i][j] = E[i][m + j];
+  }
+  // He G as the real symmetric [[Re H, -Im H], [Im H, Re H]] (its eigenvalues, each twice)
+  const auto m2 = static_cast<size_t>(2 * m);
+  std::vector<std::vector<R>> S(m2, std::vector<R>(m2));
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const C h = (G[i][j] + std::conj(G[j][i])) / R(2);
+      S[i][j] = S[m + i][m + j] = h.real();
+      S[m + i][j] = h.imag();
+      S[i][m + j] = -h.imag();
+    }
+  // cyclic Jacobi until the off-diagonal part is below the precision
+  const R tiny = std::numeric_limits<R>::epsilon();
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    R off = 0, diag = 0;
+    for (size_t i = 0; i < m2; ++i)
+      for (size_t j = 0; j < m2; ++j) (i == j ? diag : off) += S[i][j] * S[i][j];
+    if (off <= tiny * tiny * diag || off == 0) break;
+    for (size_t p = 0; p < m2; ++p)
+      for (size_t q = p + 1; q < m2; ++q) {
+        if (S[p][q] == 0) continue;
+        const R theta = (S[q][q] - S[p][p]) / (2 * S[p][q]);
+        const R t = (theta >= 0 ? R(1) : R(-1)) / (abs(theta) + sqrt(theta * theta + 1));
+        const R c = 1 / sqrt(t * t + 1), sn = t * c;
+        for (size_t k = 0; k < m2; ++k) {
+          const R a = S[k][p], b = S[k][q];
+          S[k][p] = c * a - sn * b;
+          S[k][q] = sn * a + c * b;
+        }
+        for (size_t k = 0; k < m2; ++k) {
+          const R a = S[p][k], b = S[q][k];
+          S[p][k] = c * a - sn * b;
+          S[q][k] = sn * a + c * b;
+        }
+      }
+  }
+  R best = S[0][0];
+  for (size_t i = 1; i < m2; ++i) best = std::min(best, S[i][i]);
+  return best;
+}
+
+bool check_mimo_level(std::mt19937_64& g, std::ostream& why) {
+  const bool osp = chance(g, 0.3);
+  const auto m = static_cast<Eigen::Index>(uniform(g, 2, 4)), n = static_cast<Eigen::Index>(uniform(g, 1, 6));
+  auto dyadic = [&](long range, int bits) { return rational(uniform(g, -range, range)) / rational(integer(1) << bits); };
+  StateSpace<rational> s;
+  s.T = rational(1, 1000);
+  s.A = Mat<rational>(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) s.A(i, j) = dyadic(16, 5);  // |a_ij| <= 1/2
+  // scale A by 1/2 until Schur stable with spectral radius < 0.97 (exact test on the charpoly)
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(s.A.cast<double>()).eigenvalues();
+    if (ev.cwiseAbs().maxCoeff() < 0.97) break;
+    s.A /= rational(2);
+  }
+  s.B = Mat<rational>(n, m);
+  s.C = Mat<rational>(m, n);
+  s.D = Mat<rational>(m, m);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) s.B(i, j) = dyadic(8, 3), s.C(j, i) = dyadic(8, 3);
+  for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index j = 0; j < m; ++j) s.D(i, j) = (i == j ? rational(osp ? 2 : uniform(g, 0, 2)) : rational(0)) + dyadic(2, 3);
+  why << "mimo_level: " << (osp ? "osp" : "isp") << ", " << m << "x" << m << ", order " << n << "\n";
+  auto dbl = [](const Mat<rational>& M) { return Eigen::MatrixXd(M.unaryExpr([](const rational& x) { return to_real<double>(x); })); };
+  const StateSpace<double> sd{dbl(s.A), dbl(s.B), dbl(s.C), dbl(s.D), s.T};
+  const auto kind = osp ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
+  const auto f = lmi::passivity_level_freq(sd, kind, 1024);  // the hint, as the CLI gives it
+  const auto c = lmi::passivity_level_certified_mimo(s, kind, 17, f.status == Status::failed ? -1.0 : f.theta_min);
+  if (c.status == Status::failed) throw NumericalError("certified MIMO level failed: " + c.note);
+  if (!c.enclosure) {
+    why << "  no enclosure\n";
+    return false;
+  }
+  (c.status == Status::exact ? mimo_level_tally.exact : mimo_level_tally.certified)++;
+  const Ref lo = ref(c.enclosure->lo), hi = ref(c.enclosure->hi);
+  const Ref scale = std::max(Ref(1), abs(hi));
+  mimo_level_tally.widest = std::max(mimo_level_tally.widest, static_cast<double>((hi - lo) / scale));
+  bool ok = true;
+  if (hi - lo > Ref("1e-12") * scale) ok = false, why << "  enclosure " << (hi - lo) << " wide\n";
+  {
+    Stopwatch reference_time;
+    auto lam = [&](const Ref& th) { return lambda_min_on_circle<Ref>(s, osp, th); };
+    const Ref pi_ = ref_pi();
+    Ref low = std::min(lam(Ref(0)), lam(pi_));
+    const int N = 2048;
+    std::vector<std::pair<double, int>> grid;
+    for (int i = 1; i < N; ++i) grid.push_back({lambda_min_on_circle<double>(s, osp, M_PI * i / N), i});
+    std::partial_sort(grid.begin(), grid.begin() + 3, grid.end());
+    for (int k = 0; k < 3; ++k) low = std::min(low, golden_min(lam, pi_ * (grid[k].second - 1) / N, pi_ * (grid[k].second + 1) / N));
+    const Ref eps = Ref("1e-30") * scale;
+    if (lo > low + Ref("1e-80") * scale) ok = false, why << "  the scan reaches " << low << " < lower end " << lo << "\n";
+    if (low > hi + eps) ok = false, why << "  the scan's minimum " << low << " is above the upper end " << hi << " + 1e-30\n";
+  }
+  const auto l = lmi::passivity_level_lmi(sd, kind, 1);
+  if (l.lower_bound) {
+    ++mimo_level_tally.lmi_proven;
+    if (*l.lower_bound > c.enclosure->hi)
+      ok = false, why << "  the LMI proves " << to_decimal(*l.lower_bound, 20) << " > upper end " << hi << "\n";
+  }
+  return ok;
+}
+
 }  // namespace
 
 // ---- multidof: Theorems 5 and 6 against simulation ---------------------------------------
@@ -737,20 +907,20 @@ int main(int argc, char** argv) {
       else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency] [--case K])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level] [--case K])\n";
       return 2;
     }
   }
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
       {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
-      {"consistency", check_consistency}};
+      {"consistency", check_consistency}, {"mimo_level", check_mimo_level}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
     const std::string name = criterion.substr(a, b - a);
     const bool known = name == "all" || std::any_of(criteria.begin(), criteria.end(), [&](const auto& c) { return c.first == name; });
     if (!known) {
-      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency or all (comma-separated), not '" << name << "'\n";
+      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level or all (comma-separated), not '" << name << "'\n";
       return 2;
     }
     chosen.insert(name);
@@ -799,6 +969,9 @@ int main(int argc, char** argv) {
       std::printf("          (LMI: compared on %ld cases, largest relative deviation from the certified level %.1e;"
                   " the SDP solver failed on %ld; beyond 1e-3 on %ld)\n", level_lmi_compared, level_lmi_deviation,
                   level_lmi_failed, level_lmi_disagreed);
+    if (name == "mimo_level")
+      std::printf("          (exact %ld, certified %ld; widest enclosure %.1e relative; the LMI proved a lower bound in %ld)\n",
+                  mimo_level_tally.exact, mimo_level_tally.certified, mimo_level_tally.widest, mimo_level_tally.lmi_proven);
     if (name == "multidof")
       std::printf("          (Assumption 1 held in %ld cases; Theorem 6 designed a verified coupling in %ld, Theorem 5 feasible\n"
                   "           in %ld of those; the loop with the coupling settled in %ld, neither settled nor grew in 3000 periods in %ld)\n",

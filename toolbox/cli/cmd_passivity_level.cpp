@@ -11,13 +11,15 @@
 // to double for the SDP (the certificate then holds for these doubles' exact values).
 // --mat FILE:VAR takes num/den or A, B, C, D from a MATLAB .mat file (cli/mat_file.hpp; the
 // doubles at their exact values), with the sample period from --T.
-// SISO systems also get the certified frequency-domain level (passivity_level_certified: an
-// enclosure of the level itself, exact when the minimiser is rational), which is then the main
-// result; MIMO systems report the LMI level (numeric, with an exactly certified lower bound).
+// Every system also gets the certified frequency-domain level (an enclosure of the level
+// itself, exact when it is rational; SISO: passivity_level_certified, exact when the minimiser
+// is rational; square MIMO: passivity_level_certified_mimo, about the model as written in
+// --ss), which is then the main result; otherwise the LMI level (numeric, with an exactly
+// certified lower bound).
 // JSON output keys: level, method, status (exact|certified|numeric|upper_bound|failed), certified,
 // lower_bound / upper_bound (decimal; the level lies between them when both are given),
 // value (the certified level to --digits), theta (minimiser), kind, certified_frequency {level,
-// value, status, is_level, lower_bound, upper_bound, theta, note} (SISO; is_level false for an
+// value, status, is_level, lower_bound, upper_bound, theta, note} (is_level false for an
 // OSP value <= 0, an upper bound on Lemma 1's level only), lmi {level, method, status,
 // certified, lower_bound, note}, frequency {level, theta, status, note} (grid), note.
 // Exit codes: 0 a level was computed, 2 bad input (including a pole on or outside the unit
@@ -53,7 +55,7 @@ struct Opts {
   bool json = false;
 };
 
-StateSpace<double> read_ss(const std::string& file) {
+StateSpace<rational> read_ss(const std::string& file) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) throw InputError("--ss: cannot read '" + file + "': " + ec.message());
@@ -62,23 +64,34 @@ StateSpace<double> read_ss(const std::string& file) {
   if (!in) throw InputError("--ss: cannot read '" + file + "'");
   std::stringstream text;
   text << in.rdbuf();
-  return state_space_from_json(text.str(), "--ss " + file);
+  return state_space_from_json_exact(text.str(), "--ss " + file);
 }
 
 nlohmann::json json_or_null(bool ok, double v) { return ok && std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-// The system of --H (exact SISO G kept in `G`) or --ss, which must be Schur stable.
-StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rational>>& G) {
+// The system of --H (exact SISO G kept in `G`) or --ss, which must be Schur stable; `exact` is
+// the model as written (--ss: its exact entries; --mat: the doubles' exact values), what the
+// certified MIMO level is about (the SDP works on the doubles).
+StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rational>>& G,
+                              std::optional<StateSpace<rational>>& exact) {
   StateSpace<double> sys;
   if (!o.ss.empty()) {
     if (!o.tf.T.empty()) throw InputError("--T: the sample period of --ss comes from the file");
-    sys = read_ss(o.ss);
+    exact = read_ss(o.ss);
+    auto rounded = [](const Mat<rational>& M) {
+      return Mat<double>(M.unaryExpr([](const rational& x) { return to_real<double>(x); }));
+    };
+    sys = {rounded(exact->A), rounded(exact->B), rounded(exact->C), rounded(exact->D), exact->T};
+    for (const auto* M : {&sys.A, &sys.B, &sys.C, &sys.D})
+      if (!M->allFinite()) throw InputError("--ss " + o.ss + ": an entry is not finite (a number beyond the range of double)");
   } else if (std::optional<MatModel> m = o.tf.mat.empty() ? std::nullopt : std::optional(read_mat_model(o.tf.mat, "--mat"));
              m && m->ss) {
     if (!o.tf.sets.empty()) throw InputError("--set names parameters of --H; --mat holds numbers");
     sys = *m->ss;
     sys.T = parse_period(o.tf, tf_rules);
     sys.validate(m->where);
+    auto ex = [](const Mat<double>& M) { return Mat<rational>(M.unaryExpr([](double x) { return exact_rational(x); })); };
+    exact = StateSpace<rational>{ex(sys.A), ex(sys.B), ex(sys.C), ex(sys.D), sys.T};
   } else {
     const TransferFunction tfG = parse_tf_options(o.tf, tf_rules);
     G = tfG.H;
@@ -113,7 +126,7 @@ struct Levels {
 };
 
 Levels compute_levels(const Opts& o, lmi::Backend backend, const StateSpace<double>& sys,
-                      const std::optional<RationalFunction<rational>>& G) {
+                      const std::optional<RationalFunction<rational>>& G, const std::optional<StateSpace<rational>>& exact) {
   const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
   Levels v;
   auto &l = v.l, &f = v.f, &c = v.c;
@@ -124,13 +137,15 @@ Levels compute_levels(const Opts& o, lmi::Backend backend, const StateSpace<doub
     f = lmi::passivity_level_freq(sys, kind, o.grid);
     if (sys.inputs() == 1)
       c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
-    else c.note = "certified frequency path: SISO only";
+    else if (exact)
+      c = lmi::passivity_level_certified_mimo(*exact, kind, o.digits, f.status != Status::failed ? f.theta_min : -1.0);
+    else c.note = "certified frequency path: no exact model";
   }
   v.lmi_ok = l.status != Status::failed, v.freq_ok = f.status != Status::failed, v.cert_ok = c.status != Status::failed;
-  // The certified SISO value is the level of Definition 2 for ISP, and for OSP when delta* > 0
+  // The certified value is the level of Definition 2 for ISP, and for OSP when delta* > 0
   // (passivity_level.hpp); an OSP delta* <= 0 is an upper bound on Lemma 1's level only.
   v.cert_is_level = v.cert_ok && (kind == lmi::PassivityKind::isp || c.level > 0);
-  // main result: the certified SISO level (an enclosure of the level itself), else the LMI
+  // main result: the certified level (an enclosure of the level itself), else the LMI
   // (a numeric level with a certified lower bound), else the frequency grid (numeric)
   using M = Levels::Main;
   v.which = v.cert_is_level ? M::cert : v.lmi_ok ? M::lmi : v.cert_ok ? M::cert : M::freq;
@@ -139,7 +154,7 @@ Levels compute_levels(const Opts& o, lmi::Backend backend, const StateSpace<doub
   auto add = [&](const std::string& what, const std::string& n, M from) {
     if (!n.empty() && v.which != from) v.note += (v.note.empty() ? "" : "; ") + what + n;
   };
-  if (sys.inputs() == 1) add("certified frequency path: ", c.note, M::cert);
+  add(sys.inputs() == 1 ? "certified frequency path: " : "", c.note, M::cert);
   if (!v.lmi_ok) add("LMI: ", l.note, M::lmi);
   // compared only where the frequency value is the level (ISP; OSP > 0): an OSP value <= 0 is
   // an upper bound that the LMI level may lie below
@@ -243,8 +258,9 @@ int run(const Opts& o) {
   if (has_tf(o.tf) == !o.ss.empty())
     throw InputError("give exactly one of --H EXPR, --num/--den or --mat FILE:VAR (with --T), or --ss FILE");
   std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
-  const StateSpace<double> sys = read_model(o, G);
-  const Levels v = compute_levels(o, backend, sys, G);
+  std::optional<StateSpace<rational>> exact;     // the model as written (--ss, --mat)
+  const StateSpace<double> sys = read_model(o, G, exact);
+  const Levels v = compute_levels(o, backend, sys, G, exact);
   if (o.json) report_json(o, v);
   else report_text(o, v);
   return v.any ? exit_ok : exit_numerical;
@@ -252,7 +268,7 @@ int run(const Opts& o) {
 
 const Register reg({"passivity-level",
                     "OSP level delta / ISP level phi of a discrete LTI system (paper 000 Lemmas 1-2): certified "
-                    "frequency-domain level (SISO), LMI with an exact lower-bound certificate, frequency grid",
+                    "frequency-domain level, LMI with an exact lower-bound certificate, frequency grid",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       add_tf_options(app, o->tf, tf_rules, "Transfer function in z, exact (e.g. \"1 + 1/(z-0.5)\"); needs --T");
@@ -261,7 +277,7 @@ const Register reg({"passivity-level",
                       app.add_option("--backend", o->backend, "auto (default: built-in IPM when exactly certified, else DSDP), dsdp, csdp or ipm");
                       app.add_option("--lemma", o->lemma, "1 (KYP LMI (2), default) or 2 (Schur form)");
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
-                      app.add_option("--digits", o->digits, "Digits of the certified SISO level (10..100, default 17)");
+                      app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
                                                       "lower_bound, upper_bound, value, theta, kind, "
                                                       "certified_frequency, lmi, frequency, note)");

@@ -19,7 +19,8 @@
 //     1e-12. lambda_min(theta) is continuous and piecewise analytic, so this finds the global
 //     minimum unless a narrower dip than the grid spacing exists (stated as the caveat).
 //
-//     The SISO frequency levels are also certified (passivity_level_certified, below).
+//     The frequency levels are also certified: SISO by passivity_level_certified, square MIMO
+//     by passivity_level_certified_mimo (below).
 //  Lemma 1 = frequency: for ISP always (A'PA - P < 0 forces P > 0); for OSP only when
 //     delta* > 0 and G has no zero on the unit circle. A zero on the circle makes the
 //     frequency inequality tight there for every delta (the strict LMI has no solution; the
@@ -99,6 +100,18 @@ PassivityLevel passivity_level_certified(const RationalFunction<rational>& G, Pa
 /// The same for a SISO state-space model, through its exact transfer function (the doubles'
 /// exact values, ss2tf).
 PassivityLevel passivity_level_certified(const StateSpace<double>& sys, PassivityKind kind, int digits = 30);
+
+/// Square MIMO (any size; also SISO), certified: phi* = min_theta lambda_min(He G(e^{j theta}))
+/// (isp) or delta* = sup {delta : He G - delta G^* G >= 0 on the circle} (osp) for the exact
+/// realisation `sys`, as an exact enclosure [lo, hi] with hi - lo <= 10^-(digits+3) max(1, |level|),
+/// or exactly (status exact) when the level is rational. det(He G - nu W) is an exact polynomial
+/// in (cos theta, nu); each candidate nu is decided exactly by root isolation in cos theta and
+/// inertia counts between the roots (passivity_level_mimo.cpp). `theta_hint` (e.g. the grid's
+/// minimiser; < 0: none) starts the search; the result does not depend on it being right. G
+/// must be Schur stable (checked exactly); the same notes as the SISO path for OSP (a zero of G
+/// on the circle, delta* <= 0). Not attempted (status failed, `note`) when inputs x states > 64.
+PassivityLevel passivity_level_certified_mimo(const StateSpace<rational>& sys, PassivityKind kind, int digits = 17,
+                                              double theta_hint = -1);
 
 /// lambda_min((G + G^*)/2) at theta (numeric, double).
 double isp_index_at(const StateSpace<double>& sys, double theta);

@@ -1,5 +1,7 @@
 #include "hapstab/lti/state_space_json.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -10,18 +12,22 @@ namespace hapstab {
 
 namespace {
 
-double entry(const nlohmann::json& v, const std::string& where) {
-  if (v.is_number()) return v.get<double>();
-  if (v.is_string()) return to_real<double>(parse_rational(v.get<std::string>(), where));
+rational entry(const nlohmann::json& v, const std::string& where) {
+  if (v.is_number()) {
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) throw InputError(where + ": an entry is not finite (a number beyond the range of double)");
+    return exact_rational(x);
+  }
+  if (v.is_string()) return parse_rational(v.get<std::string>(), where);
   throw InputError(where + ": expected a number or a string with an exact number");
 }
 
-Mat<double> matrix(const nlohmann::json& j, const std::string& key, const std::string& file) {
+Mat<rational> matrix(const nlohmann::json& j, const std::string& key, const std::string& file) {
   const std::string where = file + ": \"" + key + "\"";
   if (!j.contains(key)) throw InputError(where + " is missing");
   const auto& m = j.at(key);
   if (!m.is_array()) throw InputError(where + " must be an array of rows");
-  if (m.empty()) return Mat<double>(0, 0);
+  if (m.empty()) return Mat<rational>(0, 0);
   const size_t rows = m.size();
   if (!m[0].is_array()) throw InputError(where + " must be an array of rows");
   const size_t cols = m[0].size();
@@ -29,7 +35,7 @@ Mat<double> matrix(const nlohmann::json& j, const std::string& key, const std::s
   if (rows > limit || cols > limit)
     throw InputError(where + " is " + std::to_string(rows) + "x" + std::to_string(cols) + ", more than the limit of " +
                      std::to_string(limit) + " rows or columns");
-  Mat<double> M(rows, cols);
+  Mat<rational> M(rows, cols);
   for (size_t i = 0; i < rows; ++i) {
     if (!m[i].is_array() || m[i].size() != cols)
       throw InputError(where + ": row " + std::to_string(i + 1) + " does not have " + std::to_string(cols) + " entries");
@@ -42,7 +48,7 @@ Mat<double> matrix(const nlohmann::json& j, const std::string& key, const std::s
 
 }  // namespace
 
-StateSpace<double> state_space_from_json(std::string_view text, const std::string& where) {
+StateSpace<rational> state_space_from_json_exact(std::string_view text, const std::string& where) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
@@ -50,7 +56,7 @@ StateSpace<double> state_space_from_json(std::string_view text, const std::strin
     throw InputError(where + ": not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object()) throw InputError(where + ": expected a JSON object with A, B, C, D, T");
-  StateSpace<double> s;
+  StateSpace<rational> s;
   s.A = matrix(j, "A", where);
   s.B = matrix(j, "B", where);
   s.C = matrix(j, "C", where);
@@ -61,9 +67,18 @@ StateSpace<double> state_space_from_json(std::string_view text, const std::strin
   else if (t.is_number()) s.T = exact_rational(t.get<double>());
   else throw InputError(where + ": \"T\" must be a number or a string with an exact number");
   if (!(s.T > 0)) throw InputError(where + ": \"T\" must be > 0 (a discrete-time system)");
+  s.validate(where);
+  return s;
+}
+
+StateSpace<double> state_space_from_json(std::string_view text, const std::string& where) {
+  const StateSpace<rational> q = state_space_from_json_exact(text, where);
+  auto rounded = [](const Mat<rational>& M) {
+    return Mat<double>(M.unaryExpr([](const rational& x) { return to_real<double>(x); }));
+  };
+  StateSpace<double> s{rounded(q.A), rounded(q.B), rounded(q.C), rounded(q.D), q.T};
   for (const auto* M : {&s.A, &s.B, &s.C, &s.D})
     if (!M->allFinite()) throw InputError(where + ": an entry is not finite (a number beyond the range of double)");
-  s.validate(where);
   return s;
 }
 

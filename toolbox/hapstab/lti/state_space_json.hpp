@@ -14,5 +14,8 @@
 namespace hapstab {
 
 StateSpace<double> state_space_from_json(std::string_view text, const std::string& where);
+/// The same model at the exact values written (numbers at their doubles' exact values, strings
+/// such as "3/5" exactly): what the certified passivity levels are about.
+StateSpace<rational> state_space_from_json_exact(std::string_view text, const std::string& where);
 
 }  // namespace hapstab
