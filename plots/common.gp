@@ -22,5 +22,9 @@ set style line 3 lc rgb '#009E73' lw 2 pt 9 ps 1.0
 set style line 4 lc rgb '#CC79A7' lw 2 pt 11 ps 1.0
 set style line 5 lc rgb '#E69F00' lw 2 pt 13 ps 1.0
 set style line 6 lc rgb '#56B4E9' lw 2 pt 3 ps 1.0
+# the same colours as a list (word(pal, i) is line style i's), and as the default line types
+pal = '#0072B2 #D55E00 #009E73 #CC79A7 #E69F00 #56B4E9'
+do for [i=1:6] { set linetype i lc rgb word(pal, i) lw 2 }
+set linetype cycle 6
 set style line 7 lc rgb '#000000' lw 1.5 dt 2
 set style line 8 lc rgb '#808080' lw 1 dt 3

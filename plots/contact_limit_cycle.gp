@@ -12,6 +12,7 @@ set xlabel 'sample k'
 set ylabel (tex ? 'penetration $\theta_k$ (units of $r$)' : 'penetration {/Symbol q}_k (units of r)')
 set title 'Fig. 2 loop from rest: settling vs limit cycle'
 set xzeroaxis ls 7
-set key outside bottom center horizontal
-plot f using 1:2 with linespoints ls 1 title (tex ? '$k = 0.9\,k^*_{\mathrm{wedge}}$' : 'k = 0.9 k*_{wedge}'), \
-     f using 1:3 with linespoints ls 2 title 'k = 2.6 (limit cycle)'
+set key at screen 0.5, screen 0.01 center bottom horizontal  # below the x label, not on it
+set bmargin 6
+plot f using 1:3 with linespoints ls 2 title 'k = 2.6 (limit cycle)', \
+     f using 1:2 with linespoints ls 1 title (tex ? '$k = 0.9\,k^*_{\mathrm{wedge}}$' : 'k = 0.9 k*_{wedge}')

@@ -10,6 +10,7 @@ set xlabel (tex ? '$t$ [s]' : 't [s]')
 set ylabel (tex ? '$x$ [mm] (wall at $x>0$)' : 'x [mm]  (the wall occupies x > 0)')
 set title 'limit cycle at a sampled wall'
 set key top right
+set autoscale xfix  # the axis ends with the data
 plot datadir.'/sim_bias_wall_fine.dat' using 1:($2*1000) with lines ls 1 title 'full model, between samples', \
      datadir.'/sim_bias_wall_samples.dat' using 1:($2*1000) with points ls 1 pt 7 title 'full model at kT', \
      datadir.'/sim_bias_wall_samples.dat' using 1:($3*1000) with points ls 2 pt 6 ps 1.6 title 'reduced model (Fig. 2)', \

@@ -14,12 +14,21 @@ set xrange [xmin:xmax]
 set yrange [-ymax:ymax]
 set clip two
 set xzeroaxis ls 8; set yzeroaxis ls 8
-set xlabel (tex ? '$\mathrm{Re}\,G$' : 'Re G')
-set ylabel (tex ? '$\mathrm{Im}\,G$' : 'Im G')
-set title (tex ? '$G = T H(z) z^{-n}/(1-z)$: '.what_tex : 'G = T H(z) z^-n/(1 - z): '.what) noenhanced
-if (strlen(clip_text) > 0) set label 2 (tex ? clip_text_tex : clip_text) at graph 0.02, graph 0.04 left noenhanced font ',14'
-set key below noenhanced
+# G = T H/(1 - z): H in N/m (force per displacement) times T in s gives N s/m, the unit of b*
+set xlabel (tex ? '$\mathrm{Re}\,G$ [N\,s/m]' : 'Re G [N s/m]')
+set ylabel (tex ? '$\mathrm{Im}\,G$ [N\,s/m]' : 'Im G [N s/m]')
+# the window is cut where Im G grows without bound as w -> 0: said in the title's last line
+cut = strlen(clip_omega_text) == 0 ? '' : (tex ? '; the curve leaves the window for $\omega <$ '.clip_omega_text_tex.' rad/s' : "\n(the curve leaves the window for ω < ".clip_omega_text.' rad/s)')
+inf = has_bstar ? '' : (tex ? '; $b^* = \infty$ ('.infinite_note_tex.')' : '; b* = inf ('.infinite_note.')')
+set title (tex ? '$G = T H(z) z^{-n}/(1-z)$: '.what_tex.inf.cut : "G = T H(z) z⁻ⁿ/(1 − z)\n".what.inf.cut) noenhanced
+# the legend below the axes, where it covers neither the curve nor the x label
+set key at screen 0.5, screen 0.01 center bottom horizontal samplen 2
+set bmargin 6
+# Re G = b*: drawn, with its legend entry, when b* is finite; the maximiser is marked when there is
+# one (b* can be approached as w -> 0 only: then no point, and no legend entry for it)
 if (has_bstar) set arrow 1 from bstar, graph 0 to bstar, graph 1 nohead ls 7
-plot f index 0 using 3:4 with lines ls 1 title (tex ? '$G(\omega)$, $0 < \omega \le \pi/T$' : 'G(w), 0 < w <= pi/T'), \
-     f index 1 using 1:2 with points pt 7 ps 2 lc rgb '#D55E00' \
-        title (tex ? '$b^* = $ '.bstar_text_tex : 'b* = '.bstar_text).(tex ? mark_note_tex : mark_note)
+bline = !has_bstar ? '' : (tex ? '$\mathrm{Re}\,G = b^* = $ '.bstar_text_tex : 'Re G = b* = '.bstar_text) \
+        .(has_mark ? '' : (tex ? ' (approached as $\omega \to 0$)' : ' (approached as {/Symbol w} → 0)'))
+plot f index 0 using 3:4 with lines ls 1 title (tex ? '$G(\omega)$, $0 < \omega \le \pi/T$' : 'G({/Symbol w}), 0 < {/Symbol w} ≤ {/Symbol p}/T'), \
+     NaN with lines ls 7 title bline, \
+     f index 1 using 1:2 with points pt 7 ps 2 lc rgb '#D55E00' title (has_mark ? (tex ? 'its maximiser $\omega^*$' : 'its maximiser {/Symbol w}*') : '')

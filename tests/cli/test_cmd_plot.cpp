@@ -39,6 +39,11 @@ TEST(CmdPlot, NyquistMarksTheBoundOfHapstabBound) {
   EXPECT_TRUE(nonempty(out / "figures" / "nyquist.png"));
   EXPECT_TRUE(nonempty(out / "figures" / "nyquist.svg"));
   EXPECT_FALSE(j["clip_omega"].is_null()) << "H(1) = K != 0: Im G -> inf as w -> 0";
+  // the title shows the parameter values the expression was drawn at
+  std::stringstream labels;
+  labels << std::ifstream(out / "data" / "nyquist_labels.gp").rdbuf();
+  EXPECT_NE(labels.str().find("what = 'H = K + B*(z-1)/(T*z), K = 1000, B = 5, T = 0.001 s, n = 1'"), std::string::npos)
+      << labels.str();
   // the curve's largest real part is b* (to the plot's double evaluation), the mark sits on it
   std::ifstream d(out / "data" / "nyquist.dat");
   std::string line;

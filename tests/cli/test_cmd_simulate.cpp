@@ -71,6 +71,11 @@ TEST(CmdSimulate, WritesSeriesScriptAndSummary) {
   gp << std::ifstream(out / "plot.gp").rdbuf();
   EXPECT_NE(gp.str().find("'samples.csv' skip 1 "), std::string::npos);
   EXPECT_EQ(gp.str().find("skip 2"), std::string::npos);
+  // each DOF is named by its device (the scene's "display"), in one colour of the shared palette
+  EXPECT_NE(gp.str().find("dof_0 = (fmt eq 'tex') ? 'display' : 'display'"), std::string::npos) << gp.str();
+  EXPECT_EQ(gp.str().find("'DOF 0"), std::string::npos) << gp.str();
+  EXPECT_NE(gp.str().find("set linetype 1 lc rgb '#0072B2'"), std::string::npos);
+  EXPECT_NE(gp.str().find("lt 1 title dof_0"), std::string::npos);
 }
 
 TEST(CmdSimulate, TightnessBothSidesOfTheBound) {

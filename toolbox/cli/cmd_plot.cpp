@@ -125,7 +125,14 @@ void write_labels(const fs::path& file, const std::vector<std::pair<std::string,
 std::string describe(const Opts& o, const TransferFunction& H) {
   std::string s = !o.tf.H.empty() ? o.tf.H : !o.tf.mat.empty() ? "--mat " + o.tf.mat : H.to_string();
   if (s.size() > 80) s = s.substr(0, 77) + "...";
-  return "H = " + s + ", T = " + to_decimal(H.T, 6) + " s" + (o.tf.delay ? ", n = " + std::to_string(o.tf.delay) : "");
+  std::string values;  // the --set values the expression was drawn at: "K = 1000, B = 5"
+  if (!o.tf.H.empty())
+    for (const auto& a : o.tf.sets) {
+      const size_t eq = a.find('=');
+      const std::string v = eq == std::string::npos ? a : a.substr(0, eq) + " = " + a.substr(eq + 1);
+      values += ", " + (v.size() > 40 ? v.substr(0, 37) + "..." : v);
+    }
+  return "H = " + s + values + ", T = " + to_decimal(H.T, 6) + " s" + (o.tf.delay ? ", n = " + std::to_string(o.tf.delay) : "");
 }
 
 struct Result {
@@ -213,8 +220,8 @@ void nyquist_data(const Opts& o, const TransferFunction& H, const fs::path& data
   const double bstar = res.b.infinite ? std::nan("") : res.b.value_double();
   write_labels(datadir / (o.name + "_labels.gp"),
                {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)},
-                {"mark_note", mark ? "" : res.b.infinite ? " (" + res.b.where + ")" : " (approached as w -> 0)"},
-                {"clip_text", res.clip_omega ? "curve leaves the window for w < " + to_decimal(exact_rational(*res.clip_omega), 4) + " rad/s" : ""}},
+                {"infinite_note", res.b.infinite ? res.b.where : ""},
+                {"clip_omega_text", res.clip_omega ? to_decimal(exact_rational(*res.clip_omega), 4) : ""}},
                {{"bstar", bstar}, {"has_bstar", std::isfinite(bstar) ? 1 : 0}, {"has_mark", mark ? 1 : 0},
                 {"ymax", ylim}, {"xmin", std::min(re_lo, std::isfinite(bstar) ? bstar : re_lo) - 0.08 * xw},
                 {"xmax", std::max(re_hi, std::isfinite(bstar) ? bstar : re_hi) + 0.08 * xw}});

@@ -155,7 +155,10 @@ void write_mat_samples(const fs::path& file, const sim::SimResult& r, const rati
 }
 
 // Every string from the scene reaches the script as a gnuplot string literal (report::gnuplot::quote),
-// and for the cairolatex terminal, whose text LaTeX typesets, LaTeX-escaped first.
+// and for the cairolatex terminal, whose text LaTeX typesets, LaTeX-escaped first. Each DOF is
+// named by its device ("left", or "arm[1]" for the second DOF of a 2-DOF device) and keeps one
+// colour of the Okabe-Ito palette (plots/common.gp's) in every panel; the quantities of the energy
+// plot are told apart by dash type.
 void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine) {
   using report::gnuplot::quote;
   std::ofstream g(dir / "plot.gp");
@@ -163,24 +166,37 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
     << "# Run in this folder: gnuplot plot.gp   (or gnuplot -e \"fmt='pdf'\" plot.gp; fmt: png pdf svg tex)\n"
     << "if (!exists(\"fmt\")) fmt = 'png'\n"
     << "set datafile separator ','\nset datafile missing 'NaN'\n"
-    << "set grid\nset key box opaque\nset xlabel 't [s]'\n"
+    << "set grid lc rgb '#d0d0d0' lw 0.5\nset key box opaque samplen 2\nset xlabel 't [s]'\n"
     << "ext = (fmt eq 'tex') ? 'tex' : fmt\n"
     << "if (fmt eq 'png') set terminal pngcairo size 1600,1000 enhanced font 'DejaVu Sans,20' linewidth 2\n"
     << "if (fmt eq 'pdf') set terminal pdfcairo size 6in,3.75in enhanced font 'DejaVu Sans,10'\n"
     << "if (fmt eq 'svg') set terminal svg size 1200,750 enhanced background rgb 'white'\n"
     << "if (fmt eq 'tex') set terminal cairolatex pdf size 5in,3.1in\n"
-    << "int_fhv = (fmt eq 'tex') ? '$\\int f_h v\\,dt$' : '{/Symbol \\362} f_h v dt'\n"
-    << "int_uv = (fmt eq 'tex') ? '$\\int u v\\,dt$' : '{/Symbol \\362} u v dt'\n"
+    << "# the Okabe-Ito palette (colour-blind safe), one colour per DOF\n";
+  const char* palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"};
+  for (int k = 0; k < 8; ++k) g << "set linetype " << k + 1 << " lc rgb '" << palette[k] << "' lw 2\n";
+  g << "set linetype cycle 8\n"
+    << "int_fhv = (fmt eq 'tex') ? '$\\int f_h v\\,dt$' : '\xE2\x88\xAB f_h v dt'\n"
+    << "int_uv = (fmt eq 'tex') ? '$\\int u v\\,dt$' : '\xE2\x88\xAB u v dt'\n"
     << "scene_title = (fmt eq 'tex') ? " << quote(report::latex::escape(sc.name)) << " : " << quote(sc.name) << "\n";
+  // dof_J: the label of DOF J, by its device's name
+  int j = 0;
+  for (const auto& d : sc.loop.devices)
+    for (Eigen::Index k = 0; k < d.dofs(); ++k, ++j) {
+      const std::string label = d.dofs() == 1 ? d.name : d.name + "[" + std::to_string(k) + "]";
+      g << "dof_" << j << " = (fmt eq 'tex') ? " << quote(report::latex::escape(label)) << " : " << quote(label) << "\n";
+    }
+  for (; j < N; ++j) g << "dof_" << j << " = 'DOF " << j << "'\n";  // not reached: the devices hold every DOF
   auto cols = [&](const char* what, int off, const char* ylabel, bool with_fine) {
     g << "set output '" << what << ".'.ext\nset ylabel '" << ylabel << "'\nset title scene_title noenhanced\nplot ";
     for (int j = 0; j < N; ++j) {
       if (j) g << ", ";
       if (with_fine && fine)
-        g << "'fine.csv' skip 1 using 1:" << (off == 2 ? 2 + 2 * j : 3 + 2 * j) << " with lines lw 1 title 'DOF " << j
-          << " (exact, between samples)', ";
-      g << "'samples.csv' skip 1 using 1:" << (off + 8 * j) << " with " << (with_fine && fine ? "points pt 7 ps 0.6" : "lines")
-        << " title 'DOF " << j << (with_fine && fine ? " at samples" : "") << "'";
+        g << "'fine.csv' skip 1 using 1:" << (off == 2 ? 2 + 2 * j : 3 + 2 * j) << " with lines lt " << j + 1
+          << " lw 1 title dof_" << j << ".' (exact, between samples)' noenhanced, ";
+      g << "'samples.csv' skip 1 using 1:" << (off + 8 * j) << " with "
+        << (with_fine && fine ? "points pt 7 ps 0.6" : "lines") << " lt " << j + 1 << " title dof_" << j
+        << (with_fine && fine ? ".' at samples'" : "") << " noenhanced";
     }
     g << "\n";
   };
@@ -192,9 +208,12 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
       g << "set output 'energy.'.ext\nset ylabel 'energy [J]'\nset title 'port energies' noenhanced\nplot ";
       for (int j = 0; j < N; ++j) {
         if (j) g << ", ";
-        g << "'samples.csv' skip 1 using 1:" << 6 + 8 * j << " with lines title sprintf('DOF %d: %s', " << j << ", int_fhv), "
-          << "'samples.csv' skip 1 using 1:" << 8 + 8 * j << " with lines dt 2 title 'DOF " << j << ": passivity observer', "
-          << "'samples.csv' skip 1 using 1:" << 7 + 8 * j << " with lines dt 3 title sprintf('DOF %d: %s', " << j << ", int_uv)";
+        g << "'samples.csv' skip 1 using 1:" << 6 + 8 * j << " with lines lt " << j + 1 << " title dof_" << j
+          << ".': '.int_fhv noenhanced, "
+          << "'samples.csv' skip 1 using 1:" << 8 + 8 * j << " with lines lt " << j + 1 << " dt 2 title dof_" << j
+          << ".': passivity observer' noenhanced, "
+          << "'samples.csv' skip 1 using 1:" << 7 + 8 * j << " with lines lt " << j + 1 << " dt 3 title dof_" << j
+          << ".': '.int_uv noenhanced";
       }
       g << "\n";
     }

@@ -1,8 +1,8 @@
 // cli/sweep_plot.cpp -- `hapstab sweep plot DIR --x K --y B --z bound`: a heat map (or contour
 // lines) of one column of DIR/points.csv over two others, drawn by plots/sweep_map.gp (or
 // plots/sweep_contour.gp) into DIR/figures/. Points are told apart by the row's `status`
-// column: certified or exact (filled squares), numeric (open squares, not proven), infinite
-// values (crosses) and failed points (red x). The data files are written to DIR/plot-data/.
+// column: certified or exact (solid cells), numeric (hatched cells, not proven), infinite
+// values (grey cells) and failed points (crossed cells). The data files are written to DIR/plot-data/.
 // The figures sweep_map and sweep_contour of `hapstab reproduce` are the (K, B) region as a sweep.
 #include <array>
 #include <cctype>
@@ -107,11 +107,15 @@ size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::s
   // The labels, and the plot's parts that have points (gnuplot refuses an empty data file).
   std::ofstream labels(data / "labels.gp");
   labels << "xname = '" << x << "'\nyname = '" << y << "'\nzname = '" << z << "'\n";
-  const char* parts[] = {
-      "datadir.'/proven.dat' using 1:2:3 with points pt 5 ps 1.2 lc palette title 'certified / exact'",
-      "datadir.'/numeric.dat' using 1:2:3 with points pt 4 ps 1.2 lc palette title 'numeric (not proven)'",
-      "datadir.'/infinite.dat' using 1:2 with points pt 2 ps 1.2 lc rgb 'black' title zname.' = inf'",
-      "datadir.'/failed.dat' using 1:2 with points pt 1 ps 1.5 lc rgb 'red' title 'failed'"};
+  const char* parts[] = {  // cells of dx by dy centred on the points (plots/sweep_map.gp)
+      "datadir.'/proven.dat' using 1:2:(cx):(cy):3 with boxxyerror fs solid 1.0 noborder fc palette "
+      "title 'certified / exact'",
+      "datadir.'/numeric.dat' using 1:2:(cx):(cy):3 with boxxyerror fs pattern 4 border lc palette fc palette "
+      "title 'numeric (not proven)'",
+      "datadir.'/infinite.dat' using 1:2:(cx):(cy) with boxxyerror fs solid 1.0 noborder fc rgb '#999999' "
+      "title zname.' = inf'",
+      "datadir.'/failed.dat' using 1:2:(cx):(cy) with boxxyerror fs pattern 5 border lc rgb '#D55E00' "
+      "fc rgb '#D55E00' title 'failed'"};
   std::string plot_line;
   for (size_t k = 0; k < 4; ++k)
     if (counts[k]) plot_line += (plot_line.empty() ? "plot " : ", ") + std::string(parts[k]);
@@ -138,6 +142,8 @@ void kb_region_data(const fs::path& datadir) {
   report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
                       "hapstab sweep (the (K, B) region)");
   write_plot_data(out, "B", "K", "bound", datadir);
+  // the units of this sweep's columns, for the axes (plots/sweep_map.gp reads them when present)
+  std::ofstream(datadir / "labels.gp", std::ios::app) << "xunit = 'N s/m'\nyunit = 'N/m'\nzunit = 'N s/m'\n";
 }
 
 const RegisterFigure map_figure({"sweep_map", "toolbox",
