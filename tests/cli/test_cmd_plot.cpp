@@ -81,7 +81,7 @@ TEST(CmdPlot, BodeAndTheWedgeInPaperFormats) {
 // (z^2 - z/2) has k*_wedge = 10/9 (`hapstab wedge`), so the curve starts at k* H(1) = 10/9 * 3.6 = 4.
 TEST(CmdPlot, WedgeDrawsTheLoopGainAtTheWedgeGain) {
   const auto out = tmp("wedge");
-  json_of("plot nyquist --json --wedge --format png --H "0.9*(z+1)/(z^2-0.5*z)" --T 1/1000 --out " + out.string());
+  json_of("plot nyquist --json --wedge --format png --H \"0.9*(z+1)/(z^2-0.5*z)\" --T 1/1000 --out " + out.string());
   std::ifstream d(out / "data" / "nyquist_wedge.dat");
   std::string line, header;
   double re = 0, im = 1, theta = 1;
