@@ -24,7 +24,14 @@ import tempfile
 import warnings
 from typing import Any, Dict, Mapping, Optional, Sequence
 
-from . import _core
+try:
+    from . import _core
+except ImportError:  # the pure-Python files without the C++ extension next to them: say so
+    _here = os.path.dirname(os.path.abspath(__file__))
+    if any(name.startswith("_core.") for name in os.listdir(_here)):
+        raise  # it is there and does not load: the loader's own message says why
+    raise ImportError(f"hapstab: the C++ extension hapstab._core is not built in {_here} (in the build tree: "
+                      f"cmake --build build --target hapstab_python; or pip install . from the source tree)") from None
 from ._exact import exact, state_space_json, transfer_function
 from ._results import Analysis, Bound, Design, PassivityLevel, R, Result, Simulation, Stability, Wedge
 
@@ -44,8 +51,28 @@ def run(*args: str) -> Result:
     return Result(json.loads(text) if text is not None else {}, code)
 
 
+_OPTION = re.compile(r"(?<![\w-])--([A-Za-z][A-Za-z0-9-]*)")
+
+
+def _pythonic(message: str, command: str) -> str:
+    """A command's error message in the words of the Python call: the keyword for an option
+    (--frac-delay -> frac_delay), params={'K': ...} (or the keyword K=... of simulate and
+    multidof) for --set NAME=VALUE."""
+    keywords = command in ("simulate", "multidof")  # their parameters are keyword arguments
+    unknown = re.search(r"unknown name '([^']+)'", message)
+    name = unknown.group(1) if unknown else "NAME"
+    message = message.replace("give parameters with --set NAME=VALUE",
+                              f"pass {name}=... as a keyword argument" if keywords else f"pass params={{'{name}': ...}}")
+    message = re.sub(r"--set[ =]'?([A-Za-z_]\w*)'?", (r"\1" if keywords else r"params['\1']"), message)
+    message = message.replace("--set NAME=VALUE", "keyword arguments" if keywords else "params")
+    return _OPTION.sub(lambda m: m.group(1).replace("-", "_"), message)
+
+
 def _json(args: Sequence[str]):
-    code, text = _core.run(list(args))
+    try:
+        code, text = _core.run(list(args))
+    except InputError as e:  # the command's message names its options: say it as the call was made
+        raise InputError(_pythonic(str(e), args[0])) from None
     if text is None:
         raise RuntimeError(f"hapstab {' '.join(args[:1])} printed no JSON (exit code {code})")
     return json.loads(text), code

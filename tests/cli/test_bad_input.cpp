@@ -215,8 +215,62 @@ TEST(BadInput, EachCaseExitsTwoAndSaysWhat) {
     EXPECT_NE(all.find(c.says), std::string::npos) << "hapstab " << c.command << " (" << c.option << ") did not say '"
                                                     << c.says << "':\n" << all.substr(0, 600);
     EXPECT_EQ(all.find("internal error"), std::string::npos) << all;
+    // every error, CLI11's parse errors included, is one line starting "hapstab: error: " (issue 31)
+    EXPECT_EQ(r.err.rfind("hapstab: error: ", 0), 0u) << "hapstab " << c.command << " (" << c.option << "):\n" << r.err;
   }
   std::filesystem::remove_all(dir);
+}
+
+// A word where a command belongs is named, with the nearest command (issue 31: these printed
+// "A subcommand is required / Run with --help" without naming the word).
+TEST(BadInput, UnknownCommandIsNamedWithTheNearestOne) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"boundd"}, "hapstab: error: unknown command 'boundd'; did you mean 'bound'?\n"},
+      {{"stabilty", "--max", "K"}, "hapstab: error: unknown command 'stabilty'; did you mean 'stability'?\n"},
+      {{"figures", "--list"}, "hapstab: error: unknown command 'figures'; did you mean 'figure'?\n"},
+      {{"limit"}, "hapstab: error: unknown command 'limit'; did you mean 'limit-cycle'?\n"},
+      {{"multidof", "analyse", "--scene", "x.toml"},
+       "hapstab: error: unknown command 'analyse' of 'multidof'; did you mean 'analyze'?\n"},
+  };
+  for (const auto& [args, says] : cases) {
+    std::vector<std::string> argv{HAPSTAB_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto r = run_process(argv);
+    EXPECT_EQ(r.exit_code, 2) << args[0];
+    EXPECT_EQ(r.err, says);
+    EXPECT_EQ(r.out, "");
+  }
+  // nothing near: the commands are listed; no command at all: which ones there are
+  auto r = run_process({HAPSTAB_CLI, "xyzzy"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("hapstab: error: unknown command 'xyzzy' (commands: r, bound, wedge, limit-cycle, "
+                        "passivity-level, multidof, ", 0), 0u) << r.err;
+  r = run_process({HAPSTAB_CLI});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("hapstab: error: hapstab needs a command: r, bound, ", 0), 0u) << r.err;
+  r = run_process({HAPSTAB_CLI, "multidof"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("hapstab: error: hapstab multidof needs a command: analyze, design ", 0), 0u) << r.err;
+  // an unknown option of a known command: CLI11's message, with the prefix
+  r = run_process({HAPSTAB_CLI, "bound", "--bogus"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("hapstab: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+}
+
+// `hapstab --help` lists the papers' commands first (001, 002, 000), then the tools, then the
+// reproduction, each group under its heading.
+TEST(BadInput, HelpListsTheCommandsInTheirGroups) {
+  const auto r = run_process({HAPSTAB_CLI, "--help"});
+  ASSERT_EQ(r.exit_code, 0);
+  size_t at = 0;
+  for (const char* word : {"Paper 001", "  r ", "  bound ", "Paper 002", "  wedge ", "  limit-cycle ", "Paper 000",
+                           "  passivity-level ", "  multidof ", "Tools", "  stability ", "  simulate ", "  plot ",
+                           "  sweep ", "Reproduction", "  proofs ", "  figure ", "  reproduce "}) {
+    const size_t next = r.out.find(word, at);
+    ASSERT_NE(next, std::string::npos) << "'" << word << "' not after position " << at << " in\n" << r.out;
+    at = next + 1;
+  }
 }
 
 }  // namespace

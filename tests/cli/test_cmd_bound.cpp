@@ -137,6 +137,21 @@ TEST(CmdBound, BatchAndExplain) {
   EXPECT_NE(e.out.find("agrees"), std::string::npos) << e.out;
 }
 
+// Example 4's backward difference H_m z^-n is tight for an even n, and for m = 1 at every n: the
+// closed form's name says which (issue 31: with n = 1 it said "with even delay n").
+TEST(CmdBound, ExplainNamesTheDelayOfTheBackwardDifference) {
+  CliRun odd = run("bound --explain --H 'B*(z-1)/(T*z)' --T 1/1000 --set B=5 --delay 1");
+  EXPECT_EQ(odd.code, 0) << odd.out;
+  EXPECT_NE(odd.out.find("closed form: backward difference H_1 with delay n = 1 (m = 1: any n) Example 4"),
+            std::string::npos) << odd.out;
+  EXPECT_EQ(odd.out.find("even"), std::string::npos) << odd.out;
+  EXPECT_NE(odd.out.find("-> agrees"), std::string::npos) << odd.out;
+  CliRun even = run("bound --explain --H 'B*(z-1)^2/(T^2*z^2)' --T 1/1000 --set B=5 --delay 2");
+  EXPECT_EQ(even.code, 0) << even.out;
+  EXPECT_NE(even.out.find("closed form: backward difference H_2 with delay n = 2 (even) Example 4"), std::string::npos)
+      << even.out;
+}
+
 TEST(CmdBound, DampingCheckNecessaryConditionAndExitCode) {
   // b* = KT/2 + B = 12: b = 12.5 passes (exit 0), b = 11 fails (exit 1); at w* = pi/T the
   // small-gain form (14) and its rewriting (15) give the same verdict as b > b*
@@ -179,6 +194,13 @@ TEST(CmdBound, QuantumAndCoulombReportTheFrictionConditionBesideBstar) {
   EXPECT_FALSE(k["friction"]["holds"].get<bool>());
   EXPECT_TRUE(k["damping"]["passive"].get<bool>());
   EXPECT_FALSE(k["passive"].get<bool>());
+  // the human output does not call the device passive before saying it is not (issue 31)
+  CliRun text = run("bound --H K --T 1/1000 --set K=1000 --quantum 1/1000 --coulomb 0.499 --damping 1");
+  ASSERT_EQ(text.code, 1) << text.out;
+  EXPECT_EQ(text.out.find("passive (b > b*)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("damping b = 1: b > b* (the damping condition holds; the friction condition below)"),
+            std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("friction condition FAILS (f_c < f_c*): not passive"), std::string::npos) << text.out;
   // --quantum alone reports f_c* and exits 0 (nothing to check)
   CliRun only = run(spring);
   ASSERT_EQ(only.code, 0) << only.out;

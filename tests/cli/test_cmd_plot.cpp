@@ -81,6 +81,33 @@ TEST(CmdPlot, BodeAndTheWedgeInPaperFormats) {
   EXPECT_EQ(w["figures"].size(), 2u);
 }
 
+// --wedge draws the loop gain k*H at the wedge gain, as contact_nyquist does: the wedges' apex is
+// -1, a criterion on k H (issue 31: it drew H, thousands across, against them). H = 0.9 (z+1)/
+// (z^2 - z/2) has k*_wedge = 10/9 (`hapstab wedge`), so the curve starts at k* H(1) = 10/9 * 3.6 = 4.
+TEST(CmdPlot, WedgeDrawsTheLoopGainAtTheWedgeGain) {
+  const auto out = tmp("wedge");
+  json_of("plot nyquist --json --wedge --format png --H \"0.9*(z+1)/(z^2-0.5*z)\" --T 1/1000 --out " + out.string());
+  std::ifstream d(out / "data" / "nyquist_wedge.dat");
+  std::string line, header;
+  double re = 0, im = 1, theta = 1;
+  while (std::getline(d, line)) {
+    if (line.rfind("# index 0:", 0) == 0) header = line;
+    if (!line.empty() && line[0] != '#') {
+      std::stringstream(line) >> re >> im >> theta;
+      break;
+    }
+  }
+  EXPECT_NE(header.find("k H(e^{j theta})"), std::string::npos) << header;
+  EXPECT_NE(header.find("(k*_wedge)"), std::string::npos) << header;
+  EXPECT_EQ(theta, 0.0);
+  EXPECT_NEAR(re, 4.0, 1e-12);  // k*_wedge to 17 digits times H(1) in double
+  EXPECT_NEAR(im, 0.0, 1e-12);
+  std::ifstream l(out / "data" / "nyquist_wedge_labels.gp");
+  std::stringstream labels;
+  labels << l.rdbuf();
+  EXPECT_NE(labels.str().find("curve = 'k*H'"), std::string::npos) << labels.str();
+}
+
 TEST(CmdPlot, HostileNamesInTitlesDraw) {
   // the --mat file name reaches the title: quotes, backslashes, LaTeX and gnuplot syntax
   const auto dir = tmp("hostile");

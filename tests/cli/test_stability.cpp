@@ -51,6 +51,18 @@ TEST(StabilityCli, UnstableForEverySmallGainExitsOne) {
   EXPECT_EQ(r.json["max"], "0");
 }
 
+// The note names the gain maximised (issue 31: `--set K=500 --max B` ended "stable at K = 414").
+TEST(StabilityCli, NoteNamesTheGainMaximised) {
+  std::vector<std::string> a = kDevice;
+  a.back() = "K=500";  // B free
+  const auto r = run_in_process(with(a, {"--max", "B", "--delay", "1"}));
+  ASSERT_EQ(r.code, 0) << r.json.dump();
+  EXPECT_EQ(r.json["name"], "B");
+  const std::string note = r.json["note"];
+  EXPECT_EQ(note.rfind("stable at B = ", 0), 0u) << note;
+  EXPECT_EQ(note.find("K"), std::string::npos) << note;
+}
+
 TEST(StabilityCli, PureMassIsExact) {
   const auto r = run_in_process({"stability", "--plant", "1/s^2", "--H", "100 + 5*(z-1)/(T*z)", "--T", "1/1000", "--json"});
   EXPECT_EQ(r.json["status"], "exact");

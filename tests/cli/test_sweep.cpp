@@ -197,6 +197,10 @@ TEST(Sweep, FailingPointIsARowNotTheEnd) {
   const size_t err = column(rows[0], "error"), bound = column(rows[0], "bound");
   EXPECT_EQ(rows[1][err], "");
   EXPECT_NE(rows[2][err].find("unstable"), std::string::npos) << rows[2][err];
+  // the cell is the message: its column is named "error" and exit 2 says bad input (issue 31: the
+  // rows read "error: error: ...")
+  EXPECT_EQ(rows[2][err].rfind("H is unstable", 0), 0u) << rows[2][err];
+  EXPECT_EQ(rows[2][column(rows[0], "exit")], "2");
   EXPECT_EQ(rows[2][bound], "");
   EXPECT_EQ(rows[3][err], "");
   EXPECT_NE(rows[3][bound], "");

@@ -42,6 +42,40 @@ def test_import_from_the_build_tree():
     assert (EXAMPLES / "002_bias_wall.toml").exists()
 
 
+def test_import_without_the_extension_says_it_is_not_built(tmp_path):
+    # the pure-Python files alone (a build folder before hapstab_python is built): a clear
+    # ImportError naming what is missing, not a package without attributes (issue 31)
+    package = tmp_path / "hapstab"
+    package.mkdir()
+    for f in Path(hapstab.__file__).parent.glob("*.py"):
+        (package / f.name).write_text(f.read_text(encoding="utf-8"), encoding="utf-8")
+    p = subprocess.run([sys.executable, "-c", "import hapstab"], capture_output=True, text=True, check=False,
+                       env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+    assert p.returncode == 1
+    assert "ImportError: hapstab: the C++ extension hapstab._core is not built in " + str(package) in p.stderr, p.stderr
+    assert "cmake --build build --target hapstab_python" in p.stderr
+
+
+def test_errors_speak_python():
+    # the command's words (--set NAME=VALUE, --H, --frac-delay) become the call's (issue 31)
+    with pytest.raises(hapstab.InputError) as e:
+        hapstab.bound("K", T="1/1000")
+    assert "unknown name 'K'" in str(e.value) and "pass params={'K': ...}" in str(e.value), str(e.value)
+    assert "--" not in str(e.value)
+    with pytest.raises(hapstab.InputError) as e:
+        hapstab.bound(WALL, T="1/1000", params={"K": 1000})
+    assert "pass params={'B': ...}" in str(e.value), str(e.value)
+    with pytest.raises(hapstab.InputError) as e:
+        hapstab.bound("1", T="1/1000", frac_delay=-1)
+    assert str(e.value).startswith("frac_delay"), str(e.value)
+    with pytest.raises(hapstab.InputError) as e:  # simulate's parameters are keyword arguments
+        hapstab.simulate(EXAMPLES / "002_bias_wall.toml", out_of_range="1")
+    assert "--" not in str(e.value), str(e.value)
+    # the escape hatch keeps the command's words: it takes them
+    with pytest.raises(hapstab.InputError, match="--set NAME=VALUE"):
+        hapstab.run("bound", "--H", "K", "--T", "1/1000", "--json")
+
+
 # ---- bound: the cases of paper 001 give the CLI's digits -----------------------------------
 
 PAPER_001 = [
@@ -148,17 +182,17 @@ def test_a_python_control_transfer_function():
 # ---- errors ---------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("call,match", [
-    (lambda: hapstab.bound("K + (", T=1), "--H"),                      # malformed expression
+    (lambda: hapstab.bound("K + (", T=1), "^H: "),                     # malformed expression (the keyword H)
     (lambda: hapstab.bound("z/(z-2)", T=1), "unstable"),               # H not stable
-    (lambda: hapstab.bound("1", T=0), "--T"),
+    (lambda: hapstab.bound("1", T=0), "^T: "),
     (lambda: hapstab.bound("1"), "T is required"),
-    (lambda: hapstab.bound("1", T=1, eta=-1), "--eta"),
+    (lambda: hapstab.bound("1", T=1, eta=-1), "^eta"),
     (lambda: hapstab.bound(([1, "abc"], [1]), T=1), "not an exact number"),
     (lambda: hapstab.bound(([1, float("nan")], [1]), T=1), "finite"),
     (lambda: hapstab.bound(([], [1]), T=1), "empty"),
     (lambda: hapstab.bound(([[1, 2], [3, 4]], [1]), T=1), "SISO"),
     (lambda: hapstab.bound(([True], [1]), T=1), "bool"),
-    (lambda: hapstab.bound("1", T="1/0"), "--T"),
+    (lambda: hapstab.bound("1", T="1/0"), "^T"),
     (lambda: hapstab.bound("1", T=1, params={"K": "1; rm -rf /"}), "not an exact number"),
     (lambda: hapstab.r(T=1, omega=0), "omega"),
     (lambda: hapstab.passivity_level("1"), "T is required"),

@@ -46,7 +46,7 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   app.add_option("--frac-delay", o.frac, "delay t_d >= 0 in seconds: e^{-j w t_d}");
   app.add_option("--eta", o.eta, "operator shortage of passivity eta >= 0 (54)")->capture_default_str();
   app.add_option("--digits", o.digits,
-                 "significant digits of the certified result (10..280; with --frac-delay at most 20)")
+                 "significant digits of the certified result (10..280, also with --frac-delay t_d = (p/q) T when the objective in cos(wT/q) has degree <= 96; above that degree the interval branch-and-bound gives at most 20)")
       ->capture_default_str();
   app.add_option("--method", o.method, "certified (default) | fast (double) | grid (comparison only)");
   app.add_option("--grid-points", o.grid, "N for --method grid")->capture_default_str();
@@ -271,7 +271,12 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   }
   if (r.damping) {
     const DampingCheck& d = *r.damping;
-    std::cout << "damping b = " << to_decimal(d.b, 17) << ": " << (d.passive ? "passive (b > b*)" : "NOT passive (b <= b*)")
+    // with a friction check the verdict is both conditions' (the coulomb line): b > b* alone is not "passive"
+    const bool friction_checked = r.friction && r.friction->coulomb;
+    std::cout << "damping b = " << to_decimal(d.b, 17) << ": "
+              << (!d.passive ? "NOT passive (b <= b*)"
+                  : friction_checked ? "b > b* (the damping condition holds; the friction condition below)"
+                                     : "passive (b > b*)")
               << "\n";
     if (d.at_max)
       std::cout << "  at w* (paper 001, Sec. III): (14) |rH/(2b + rH)| = " << d.at_max->lhs14

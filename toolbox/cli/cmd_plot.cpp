@@ -8,8 +8,9 @@
 //            When H(1) != 0, Im G ~ T H(1)/(wT) grows without bound as w -> 0: the window is cut at
 //            |Im| <= the extent of the curve for wT >= pi/20 (and 2 max|Re|), the figure says below
 //            which w the curve leaves it, and the JSON gives that w (clip_omega).
-//            --wedge adds NAME_wedge: H(e^{j theta}) z^-n with the forbidden wedges of the wedge criterion
-//            (25) of paper 002 at theta = pi/6, pi/3, 5 pi/6 and its critical theta (contact/wedge.hpp).
+//            --wedge adds NAME_wedge: k* H(e^{j theta}) z^-n at the wedge gain k* = k*_wedge with the
+//            forbidden wedges (apex -1) of the wedge criterion (25) of paper 002 at theta = pi/6, pi/3,
+//            5 pi/6 and its critical theta (contact/wedge.hpp), as contact_nyquist draws k*H.
 //   bode     |H(e^{jwT}) z^-n| in dB and its phase in degrees (unwrapped) against w on a log axis,
 //            from 10^-4 pi/T to the Nyquist frequency pi/T, with w* of b* marked.
 // The curves are numeric (double evaluation of the exact H's rounded coefficients, refined where
@@ -259,8 +260,11 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
                 {"db_min", db_lo - 5}, {"db_max", db_hi + 5 + 0.05 * (db_hi - db_lo)}});
 }
 
-// H(e^{j theta}) z^-n with the forbidden wedges of (25): {Re h + m Im h <= -1 and Re h - m Im h
-// <= -1}, m = cot(theta/2), clipped to the window; k*_wedge of H z^-n (contact/wedge.hpp).
+// k* H(e^{j theta}) z^-n with the forbidden wedges of (25): {Re h + m Im h <= -1 and Re h - m Im h
+// <= -1}, m = cot(theta/2), clipped to the window; k* = k*_wedge of H z^-n (contact/wedge.hpp).
+// The wedges (apex -1) are the criterion's for the loop gain k H: at k = k*_wedge the curve touches
+// the wedge of its critical theta, as in contact_nyquist. When k*_wedge is infinite (every k > 0
+// passes) or not evaluated, the curve is H itself (k = 1) and the title says so.
 void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadir) {
   std::vector<rational> zn(static_cast<size_t>(o.tf.delay) + 1, rational(0));
   zn.back() = 1;
@@ -271,7 +275,10 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
   } catch (const InputError& e) {
     throw InputError(std::string("--wedge: ") + e.what());
   }
-  const Response r(Hn, 0);
+  const bool at_kstar = a.wedge.evaluated() && !a.wedge.gain_infinite;
+  const double k = at_kstar ? to_real<double>(a.wedge.max_gain.value) : 1.0;
+  const Response response(Hn, 0);
+  const auto r = [&](double th) { return k * response(th); };  // the loop gain k H on the circle
   std::vector<Sample> curve;
   double x0 = -1.5, x1 = 0.5, y0 = -1, y1 = 1;
   for (int i = 0; i <= 4000; ++i) {
@@ -284,7 +291,8 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
   const double px = 0.1 * (x1 - x0), py = 0.1 * (y1 - y0);
   x0 -= px, x1 += px, y0 -= py, y1 += py;
   auto w = open_data_file(datadir / (o.name + "_wedge.dat"));
-  w << "# " << report::comment(describe(o, H)) << "\n# index 0: H(e^{j theta}) e^{-j n theta}: Re, Im, theta\n";
+  w << "# " << report::comment(describe(o, H)) << "\n# index 0: k H(e^{j theta}) e^{-j n theta} with k = " << k
+    << (at_kstar ? " (k*_wedge)" : "") << ": Re, Im, theta\n";
   for (const auto& p : curve) w << p.g.real() << " " << p.g.imag() << " " << p.theta << "\n";
   const double crit = a.wedge.evaluated() ? a.wedge.theta_at_min : M_PI / 2;
   const double thetas[] = {M_PI / 6, M_PI / 3, crit, 5 * M_PI / 6};
@@ -297,12 +305,16 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
     if (!poly.empty()) w << poly[0].first << " " << poly[0].second << " " << th << "\n";
     else w << "NaN NaN NaN\n";
   }
-  w << "\n\n# index 5: H(e^{j theta}) at the wedge thetas\n";
+  w << "\n\n# index 5: k H(e^{j theta}) at the wedge thetas\n";
   for (double th : thetas) w << r(th).real() << " " << r(th).imag() << " " << th << "\n";
   const std::string verdict = !a.wedge.evaluated() ? "wedge (25) not evaluated: " + a.wedge.verdict.evidence
                               : a.wedge.gain_infinite ? "k*_wedge = inf"
                                                       : "k*_wedge = " + to_decimal(a.wedge.max_gain.value, 6);
-  write_labels(datadir / (o.name + "_wedge_labels.gp"), {{"what", describe(o, H)}, {"verdict", verdict}},
+  // the curve's name in the legend and on the axes: k*H at the wedge gain, else H
+  const std::string curve_name = at_kstar ? "k*H" : "H";
+  write_labels(datadir / (o.name + "_wedge_labels.gp"),
+               {{"what", describe(o, H)}, {"verdict", verdict + (at_kstar ? ": the curve is k*H" : ": the curve is H")},
+                {"curve", curve_name}},
                {{"xmin", x0}, {"xmax", x1}, {"ymin", y0}, {"ymax", y1}, {"theta_crit", crit}});
 }
 

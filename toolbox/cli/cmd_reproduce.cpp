@@ -1,5 +1,6 @@
 // `hapstab reproduce`: the main job. Every proof (proofs/), every example scene (examples/*.toml,
-// cli/scenes.hpp), every figure (plots/*.gp: data + gnuplot, in every requested format), then
+// cli/scenes.hpp), every figure (plots/*.gp but common*.gp and `hapstab plot`'s user_*.gp: data +
+// gnuplot, in every requested format), then
 // DIR/report.md and DIR/index.html. Exit 1 when a claim fails, a scene does not behave as its
 // [reproduce] table says, a figure cannot be drawn, or a plots/ script has no figure behind it.
 // The bench charts run the bench programs (bench/README.md); without them they are reported
@@ -55,12 +56,14 @@ int run(const Opts& o) {
   rep.scenes = run_scenes(o.only, dir, o.quiet);
   for (const auto& r : rep.scenes)
     if (!r.ok) std::cerr << "reproduce: scene " << r.file << " (" << r.command << ") FAILS: " << r.error << "\n";
-  // Every plots/ script is a figure (common*.gp are shared pieces they load).
+  // Every plots/ script is a figure, except common*.gp (shared pieces the scripts load) and
+  // user_*.gp (`hapstab plot`'s figures of the user's own H: no data of their own to reproduce).
   std::set<std::string> registered;
   for (const auto& f : figures()) registered.insert(f.name);
   for (const auto& e : fs::directory_iterator(plots_dir())) {
     const std::string stem = e.path().stem().string();
-    if (e.path().extension() == ".gp" && stem.rfind("common", 0) != 0 && !registered.count(stem) && o.only.empty()) {
+    const bool piece = stem.rfind("common", 0) == 0 || stem.rfind("user_", 0) == 0;
+    if (e.path().extension() == ".gp" && !piece && !registered.count(stem) && o.only.empty()) {
       FigureEntry f{stem, "toolbox", "plots/" + stem + ".gp"};
       f.ok = false;
       f.error = "plots/" + stem + ".gp has no registered figure (RegisterFigure) to write its data";

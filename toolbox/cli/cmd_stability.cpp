@@ -156,7 +156,7 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
 }
 
 int run_max(const StabilityOpts& o, const stability::Loop& loop) {
-  const stability::MaxGain m = stability::max_gain(loop, o.digits);
+  const stability::MaxGain m = stability::max_gain(loop, o.digits, o.max_name);
   const nlohmann::json j = max_json(m, o, loop.T);
   if (o.json) cli::print_json(j);
   else {

@@ -79,8 +79,11 @@ nlohmann::json run_point(const Spec& spec, const CommandShape& shape, const fs::
       return {{"exit", r.code}, {"error", "the command printed no JSON (exit code " + std::to_string(r.code) + ")"}};
     return {{"exit", r.code}, {"json", std::move(r.json)}};
   } catch (const std::exception& e) {
+    // the cell is the message (its column is already named "error"; exit 2 says bad input); a
+    // numerical failure or an internal error says which it is
     const ErrorExit x = exit_code_for(e);
-    return {{"exit", static_cast<int>(x.code)}, {"error", std::string(x.kind) + ": " + e.what()}};
+    return {{"exit", static_cast<int>(x.code)},
+            {"error", x.code == exit_bad_input ? std::string(e.what()) : std::string(x.kind) + ": " + e.what()}};
   }
 }
 

@@ -2,6 +2,7 @@
 // mapping, and the in-process runner that `hapstab sweep` and the Python module use.
 #include "cli/command.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -57,6 +58,22 @@ void print_json(const nlohmann::json& j) {
   else std::cout << j.dump(2) << std::endl;
 }
 
+namespace {
+// The order and the groups of `hapstab --help`: the papers' commands in the README's order, then
+// the tools beyond them, then the reproduction. A command missing here is listed last, under "Other".
+const std::vector<std::pair<std::string, std::vector<std::string>>>& help_groups() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> g{
+      {"Paper 001 (passivity bound)", {"r", "bound"}},
+      {"Paper 002 (unilateral contact)", {"wedge", "limit-cycle"}},
+      {"Paper 000 (multi-DOF LMI framework)", {"passivity-level", "multidof"}},
+      {"Tools", {"stability", "simulate", "plot", "sweep"}},
+      {"Reproduction", {"proofs", "figure", "reproduce"}},
+  };
+  return g;
+}
+
+}  // namespace
+
 std::unique_ptr<CLI::App> make_app(std::vector<std::pair<CLI::App*, Runner>>& runners) {
   auto app = std::make_unique<CLI::App>(
       "hapstab -- passivity and stability of sampled-data haptic systems.\n"
@@ -64,9 +81,20 @@ std::unique_ptr<CLI::App> make_app(std::vector<std::pair<CLI::App*, Runner>>& ru
   app->require_subcommand(1);
   app->set_version_flag("--version", "hapstab " HAPSTAB_VERSION);
   runners.clear();
-  for (auto& c : commands()) {
-    CLI::App* sub = app->add_subcommand(c.name, c.help);
-    runners.emplace_back(sub, c.setup(*sub));
+  std::vector<const Command*> ordered;
+  for (const auto& [group, names] : help_groups())
+    for (const auto& name : names)
+      for (const auto& c : commands())
+        if (c.name == name) ordered.push_back(&c);
+  for (const auto& c : commands())
+    if (std::find(ordered.begin(), ordered.end(), &c) == ordered.end()) ordered.push_back(&c);
+  for (const Command* c : ordered) {
+    CLI::App* sub = app->add_subcommand(c->name, c->help);
+    std::string group = "Other";
+    for (const auto& [g, names] : help_groups())
+      if (std::find(names.begin(), names.end(), c->name) != names.end()) group = g;
+    sub->group(group);
+    runners.emplace_back(sub, c->setup(*sub));
   }
   return app;
 }

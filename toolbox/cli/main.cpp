@@ -1,6 +1,9 @@
 // cli/main.cpp -- the `hapstab` command: dispatches to the registered subcommands and maps
 // errors to exit codes (0 ok, 1 property fails, 2 bad input, 3 numerical failure).
+#include <algorithm>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli/command.hpp"
 #include "cli/mat_file.hpp"
@@ -11,6 +14,58 @@ namespace {
 // Messages quote input (a scene's name, an expression): on a terminal a control character in it
 // could move the cursor or retitle the window, so they are printed through report::text.
 std::string shown(const std::exception& e) { return hapstab::report::text(e.what(), true); }
+
+// Optimal string alignment distance (Levenshtein with adjacent transpositions).
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+/// The message for a parse error of `hapstab args...` (args without the program name): where a
+/// command is expected and the word given is none (`hapstab boundd`, `hapstab multidof analyse`),
+/// "unknown command 'boundd'; did you mean 'bound'?" (the nearest command by edit distance, a
+/// prefix counting as near, else the list of commands); where a command is expected and none is
+/// given, which ones there are; otherwise CLI11's own message.
+std::string parse_error_message(const CLI::App& app, const std::vector<std::string>& args, const CLI::ParseError& e) {
+  const CLI::App* level = &app;
+  std::string path = "hapstab";
+  for (size_t i = 0; i <= args.size(); ++i) {
+    const auto subs = level->get_subcommands([](const CLI::App*) { return true; });
+    if (subs.empty() || level->get_require_subcommand_min() == 0) break;  // options and operands from here on
+    if (i < args.size() && !args[i].empty() && args[i][0] == '-') break;  // an option where a command belongs: CLI11 says
+    std::vector<std::string> names;
+    for (const CLI::App* s : subs) names.push_back(s->get_name());
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    if (i == args.size()) return path + " needs a command: " + list + " (" + path + " --help says what each does)";
+    const std::string& word = args[i];
+    const auto match = std::find(names.begin(), names.end(), word);
+    if (match != names.end()) {
+      level = level->get_subcommand(word);
+      path += " " + word;
+      continue;
+    }
+    std::string best;
+    size_t best_d = std::string::npos;
+    for (const auto& n : names) {
+      const size_t d = n.rfind(word, 0) == 0 ? 1 : edit_distance(word, n);  // a prefix counts as near
+      if (d < best_d) best_d = d, best = n;
+    }
+    const std::string where = path == "hapstab" ? "" : " of '" + path.substr(8) + "'";
+    if (best_d <= std::max<size_t>(2, word.size() / 3))
+      return "unknown command '" + word + "'" + where + "; did you mean '" + best + "'?";
+    return "unknown command '" + word + "'" + where + " (commands: " + list + ")";
+  }
+  return e.what();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -28,10 +83,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // every error starts "hapstab: error:", the parser's included (an unknown command named)
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    std::cerr << "hapstab: error: " << hapstab::report::text(parse_error_message(app, args, e), true) << "\n";
     return exit_bad_input;
   } catch (const hapstab::InputError& e) {
-    std::cerr << "hapstab: " << shown(e) << "\n";
+    std::cerr << "hapstab: error: " << shown(e) << "\n";
     return exit_bad_input;
   }
   try {

@@ -43,6 +43,19 @@ FigureEntry skipped(const std::string& name, const std::string& caption, const s
   return e;
 }
 
+/// "" when `dir` holds the package with its C++ extension, else what is missing. The folder alone
+/// proves nothing: CMake creates it when it configures, and without __init__.py and _core an empty
+/// folder imports as a namespace package without attributes.
+std::string built_package(const fs::path& dir) {
+  const std::string how = " (cmake --build build --target hapstab_python)";
+  if (!fs::is_regular_file(dir / "__init__.py"))
+    return "the Python package is not built next to this hapstab: no " + (dir / "__init__.py").string() + how;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind("_core.", 0) == 0) return "";
+  return "the Python package's C++ extension is not built next to this hapstab: no " + (dir / "_core*.so").string() + how;
+}
+
 }  // namespace
 
 std::vector<FigureEntry> run_python_examples(const fs::path& figures_dir, bool quiet) {
@@ -55,11 +68,11 @@ std::vector<FigureEntry> run_python_examples(const fs::path& figures_dir, bool q
   std::sort(scripts.begin(), scripts.end());
   const fs::path package = self_exe().parent_path() / "python";
   const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string missing = built_package(package / "hapstab");
   for (const auto& script : scripts) {
     const std::string stem = script.stem().string(), caption = caption_of(script);
-    if (!fs::is_directory(package / "hapstab")) {
-      out.push_back(skipped("python_" + stem, caption,
-                            "the Python package was not built next to this hapstab (" + (package / "hapstab").string() + ")"));
+    if (!missing.empty()) {
+      out.push_back(skipped("python_" + stem, caption, missing));
       continue;
     }
     const auto t0 = std::chrono::steady_clock::now();

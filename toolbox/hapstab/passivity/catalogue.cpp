@@ -254,8 +254,10 @@ std::optional<Match> match(const BoundProblem& raw) {
         bool tight = false;
         rational v = a[last] * delayed_backward_difference(last, n, T, &tight);
         if (tight)
-          return with_eta({"backward difference H_m with even delay n", "Example 4", "alpha_m (2/T)^{m-1}", v,
-                           std::nullopt, false, true});
+          // tight for an even delay n (attained at wT = pi), and for m = 1 at any n (at wT = pi/(n+1))
+          return with_eta({"backward difference H_" + std::to_string(last) + " with delay n = " + std::to_string(n) +
+                               (n % 2 == 0 ? " (even)" : " (m = 1: any n)"),
+                           "Example 4", "alpha_m (2/T)^{m-1}", v, std::nullopt, false, true});
       }
       if (n == 1 && a.size() <= 2) {
         rational K = a[0], B = a.size() > 1 ? a[1] : rational(0);

@@ -631,14 +631,14 @@ std::optional<std::vector<Candidate>> crossings(const Characteristic<C>& ch, boo
 }
 
 template <class C>
-MaxGain attempt(const Characteristic<C>& ch) {
+MaxGain attempt(const Characteristic<C>& ch, const std::string& K) {
   MaxGain m;
   bool fixed = false;
   const auto cands = crossings(ch, fixed, m.note);
   if (fixed) {
     m.outcome = Outcome::fails;
     m.status = std::is_same_v<C, rational> ? Status::exact : Status::certified;
-    m.note = "a closed-loop root stays at z = +-1 for every K: unstable for every K";
+    m.note = "a closed-loop root stays at z = +-1 for every " + K + ": unstable for every " + K;
     return m;
   }
   if (!cands) return m;
@@ -654,19 +654,19 @@ MaxGain attempt(const Characteristic<C>& ch) {
   m.status = std::is_same_v<C, rational> ? Status::exact : Status::certified;
   if (t.outcome == Outcome::undecided) {
     m.status = Status::failed;
-    m.note = "stability at K = " + probe.str() + " undecided";
+    m.note = "stability at " + K + " = " + probe.str() + " undecided";
     return m;
   }
   if (t.outcome == Outcome::fails) {
     m.outcome = Outcome::fails;
-    m.note = "unstable at K = " + probe.str() + " and no root meets the unit circle in between: unstable for every "
-             "small K > 0";
+    m.note = "unstable at " + K + " = " + probe.str() +
+             " and no root meets the unit circle in between: unstable for every small " + K + " > 0";
     return m;
   }
   m.outcome = Outcome::holds;
   if (cands->empty()) {
     m.infinite = true;
-    m.note = "stable at K = 1 and no root meets the unit circle for any K > 0";
+    m.note = "stable at " + K + " = 1 and no root meets the unit circle for any " + K + " > 0";
     return m;
   }
   m.enclosure = {lo, hi};
@@ -681,7 +681,7 @@ MaxGain attempt(const Characteristic<C>& ch) {
     m.crossing = "not separated";
   }
   if (!m.exact) m.status = Status::certified;
-  m.note = "stable at K = " + probe.str() + "; the first root on the unit circle is at the supremum";
+  m.note = "stable at " + K + " = " + probe.str() + "; the first root on the unit circle is at the supremum";
   return m;
 }
 
@@ -710,7 +710,9 @@ CirclePolynomials circle_polynomials(const Polynomial<rational>& c0, const Polyn
   return {QP(c.Q), QP(c.R), QP(c.S)};
 }
 
-MaxGain max_gain(const Loop& loop, int digits) {
+MaxGain max_gain(const Loop& loop, int digits) { return max_gain(loop, digits, "K"); }
+
+MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name) {
   if (!loop.H_gain) throw InputError("max_gain: H_gain (the part of H multiplied by the gain) is missing");
   if (loop.H_gain->H.is_zero()) throw InputError("the gain does not appear in H");
   if (digits < 1 || digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(digits));
@@ -719,8 +721,8 @@ MaxGain max_gain(const Loop& loop, int digits) {
   MaxGain last;
   for (slong prec = first; prec <= 64 * first; prec *= 2) {
     g_prec = prec;
-    last = p.exact ? attempt(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay))
-                   : attempt(characteristic(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay));
+    last = p.exact ? attempt(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay), gain_name)
+                   : attempt(characteristic(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay), gain_name);
     last.precision_bits = prec;
     if (last.outcome != Outcome::undecided && narrow_enough(last, digits)) return last;
   }

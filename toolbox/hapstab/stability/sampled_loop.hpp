@@ -74,6 +74,8 @@ struct MaxGain {
 /// to `digits` significant digits (the enclosure is at most 10^-digits relative wide, or the
 /// status says why not).
 MaxGain max_gain(const Loop& loop, int digits);
+/// The same, with the gain named `gain_name` in the notes (`stability --max B`: "stable at B = ...").
+MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name);
 
 /// The standard case of the literature (Gil et al. 2004, Hulin et al. 2006) and of paper 001's
 /// wall: device 1/(m s^2 + b s), H = K + B (z - 1)/(T z) with the gain K free (H = H0 + K * 1),
