@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "cli/cli_run.hpp"
 
@@ -19,8 +20,10 @@ std::string read(const fs::path& f) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// A data tree with plots/ and examples/001_*.toml, plus `extra` as examples/001_zz_check.toml.
-fs::path data_tree(const std::string& name, const std::string& extra) {
+// A data tree with plots/ and examples/001_*.toml, plus `extra` as examples/001_zz_check.toml
+// (and each of `more` as examples/001_zz_NAME.toml).
+fs::path data_tree(const std::string& name, const std::string& extra,
+                   const std::vector<std::pair<std::string, std::string>>& more = {}) {
   const fs::path root = fs::path(::testing::TempDir()) / name;
   fs::remove_all(root);
   fs::create_directories(root / "examples");
@@ -28,6 +31,7 @@ fs::path data_tree(const std::string& name, const std::string& extra) {
   for (const auto& e : fs::directory_iterator(fs::path(HAPSTAB_SOURCE_DIR) / "examples"))
     if (e.path().filename().string().rfind("001_", 0) == 0) fs::copy(e.path(), root / "examples" / e.path().filename());
   std::ofstream(root / "examples" / "001_zz_check.toml") << extra;
+  for (const auto& [stem, text] : more) std::ofstream(root / "examples" / ("001_zz_" + stem + ".toml")) << text;
   return root;
 }
 
@@ -65,6 +69,36 @@ TEST(CmdReproduce, MalformedExpectationIsAFailureThatSaysWhy) {
   const auto r = reproduce(root);
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(read(root / "out" / "report.md").find("cannot read the number in '> lots'"), std::string::npos);
+}
+
+// Strict expectations (issue 29): a misspelled key, a key the command does not print, a value
+// of another type and a command without expectations each fail the scene, saying why; before,
+// a missing key read as null = false, a non-boolean counted as true when non-null, and a scene
+// without expectations passed on exit 0 or 1.
+TEST(CmdReproduce, ExpectationsAreStrict) {
+  struct Case {
+    std::string name, table, why;
+  };
+  const std::vector<Case> cases = {
+      {"typo", "simulate = { trend = \"growing\", diverged_typo = false }",
+       "001_zz_typo.toml:53: unknown key reproduce.simulate.diverged_typo; did you mean reproduce.simulate.diverged?"},
+      {"missing", "", "the scene states no expectation for simulate: add"},
+      {"empty", "simulate = {}", "the scene states no expectation for simulate"},
+      {"not_printed", "simulate = { trend = \"growing\", friction_events = \"== 0\" }",
+       "friction_events: simulate does not print it"},
+      {"bool_vs_string", "simulate = { trend = true }", "trend is \"growing\" (a string), expected a boolean (true)"},
+      {"string_vs_bool", "simulate = { diverged = \"false\" }", "diverged is false (a boolean), expected the string 'false'"},
+      {"number_vs_object", "simulate = { limit_cycle = \"> 0\" }", "limit_cycle is null, expected a number > 0"},
+  };
+  // one reproduce run for all of them (each scene is a row of the report), beside one that holds
+  std::vector<std::pair<std::string, std::string>> scenes;
+  for (const auto& c : cases) scenes.emplace_back(c.name, below_with(c.table));
+  const fs::path root = data_tree("repro_strict", below_with("simulate = { limit_cycle = \"== null\", trend = \"growing\" }"), scenes);
+  const auto r = reproduce(root);
+  EXPECT_EQ(r.code, 1) << r.out;
+  const std::string md = read(root / "out" / "report.md");
+  for (const auto& c : cases) EXPECT_NE(md.find(c.why), std::string::npos) << c.name << ": " << md.substr(0, 4000);
+  EXPECT_NE(md.find("10 scene runs (3 as expected, 7 not)"), std::string::npos) << md.substr(0, 4000);
 }
 
 // The Python examples are figures of the report (issue 18): each PNG an example prints is a

@@ -206,6 +206,24 @@ def test_bad_input_raises_input_error(call, match):
         call()
 
 
+SCENE_DATA = Path(__file__).resolve().parents[1] / "scene" / "data"
+
+
+@pytest.mark.parametrize("call,match", [
+    # issue 29: a scene's misspelled name or unmodelled part is refused, never dropped
+    (lambda: hapstab.simulate(SCENE_DATA / "bias_wall_contacts.toml"),
+     r"bias_wall_contacts.toml:41: unknown section \[contacts\]; did you mean \[contact\]\?"),
+    (lambda: hapstab.multidof.analyze(SCENE_DATA / "multidof_ops.toml"),
+     "unknown key multidof.ops; did you mean multidof.osp"),
+    (lambda: hapstab.multidof.analyze(SCENE_DATA / "multidof_contact.toml"),
+     r"multidof analyze does not model \[contact\] .*`hapstab simulate` does"),
+    (lambda: hapstab.multidof.design(SCENE_DATA / "multidof_contact.toml"), r"multidof design does not model \[contact\]"),
+])
+def test_scene_refusals_raise_input_error(call, match):
+    with pytest.raises(hapstab.InputError, match=match):
+        call()
+
+
 def test_wrong_types_raise_type_error():
     with pytest.raises(TypeError):
         hapstab.bound(42, T=1)

@@ -179,6 +179,7 @@ std::vector<SceneRun> run_scenes(const std::string& paper, const fs::path& outdi
       SceneRun r;
       r.file = f.filename().string();
       r.paper = "toolbox";
+      r.command = "scene load";
       r.ok = false;
       r.error = e.what();
       runs.push_back(r);

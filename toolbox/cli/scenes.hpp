@@ -25,7 +25,7 @@ struct SceneRun {
   std::string file;      ///< examples/NAME.toml (file name only)
   std::string paper;     ///< [reproduce].paper, or "toolbox"
   std::string claim;     ///< [reproduce].claim, or the scene's name
-  std::string command;   ///< "simulate", "multidof analyze", "multidof design"
+  std::string command;   ///< "simulate", "multidof analyze", "multidof design" ("scene load": refused by the schema)
   std::string expected;  ///< "key = value; ..."
   std::string got;       ///< the same keys' values in the command's JSON
   bool ok = true;
