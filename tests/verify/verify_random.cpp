@@ -41,6 +41,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -823,11 +824,17 @@ bool check_consistency(std::mt19937_64& g, std::ostream& why) {
   const ConsistencyScene c = random_consistency_scene(g);
   why << "consistency scene:\n" << c.text;
   const scene::Scene sc = scene::parse_scene(c.text, "random scene");
-  // multidof analyze's loop as written
-  const multidof::SceneProblem sp = multidof::problem_from_scene(sc);
-  const bool holds = multidof::all_hold(
-      multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence));
-  const multidof::LoopAsWritten law = multidof::loop_as_written(sc, sp, holds);
+  // multidof analyze's loop as written (with [contact]: no verdict, or the scene refused)
+  std::optional<multidof::LoopAsWritten> law_opt;
+  try {
+    const multidof::SceneProblem sp = multidof::problem_from_scene(sc);
+    const bool holds = multidof::all_hold(
+        multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence));
+    law_opt = multidof::loop_as_written(sc, sp, holds);
+  } catch (const InputError&) {
+    if (!c.contact) throw;  // only the unilateral wall may be refused
+  }
+  const multidof::LoopAsWritten law = law_opt ? *law_opt : multidof::LoopAsWritten{};
   std::vector<std::pair<std::string, int>> claims;  // +1 stable, -1 unstable
   if (c.contact) {
     ++consistency_tally.contact;
