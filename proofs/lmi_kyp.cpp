@@ -41,6 +41,24 @@ StateSpace<double> random_system(std::mt19937& g, int n, int m) {
   return ss<double>(A, B, C, D, rational(1, 100));
 }
 
+// Lemma 1's level for `sys` against the certified frequency level c (finite, with an enclosure):
+// agreement to 1e-5 rel., and an exact LMI lower bound below the certified upper end.
+void compare_with_lmi(const StateSpace<double>& sys, PassivityKind kind, const PassivityLevel& c, int trial, double& worst,
+                      int& agree, int& certified_lmi, int& consistent, std::ostringstream& bad) {
+  auto l = passivity_level_lmi(sys, kind, 1);
+  const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
+  worst = std::max(worst, e);
+  agree += l.status == Status::numeric && e < 1e-5;
+  const bool below = l.lower_bound && c.enclosure && *l.lower_bound <= c.enclosure->hi;  // exact rationals
+  if (l.lower_bound) {
+    ++certified_lmi;
+    consistent += below;
+  }
+  if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
+    bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
+        << to_string(l.status) << " " << l.note << ")]";
+}
+
 }  // namespace
 
 HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain levels on random systems") {
@@ -113,19 +131,7 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
     ++cert_freq;
     if (kind == PassivityKind::osp && !(c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
-    auto l = passivity_level_lmi(sys, kind, 1);
-    const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
-    worst = std::max(worst, e);
-    agree += l.status == Status::numeric && e < 1e-5;
-    // exact rationals (c has an enclosure: its level is finite here)
-    const bool below = l.lower_bound && c.enclosure && *l.lower_bound <= c.enclosure->hi;
-    if (l.lower_bound) {
-      ++certified_lmi;
-      consistent += below;
-    }
-    if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
-      bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
-          << to_string(l.status) << " " << l.note << ")]";
+    compare_with_lmi(sys, kind, c, trial, worst, agree, certified_lmi, consistent, bad);
   }
   std::ostringstream ev;
   ev << cert_freq << " certified frequency levels (20 digits); " << agree << "/" << n
@@ -167,18 +173,7 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
     tight += c.enclosure->hi - c.enclosure->lo <= rational(1, 1000000000000LL) * std::max(rational(1), abs(c.enclosure->hi));
     if (kind == PassivityKind::osp && !(c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
-    auto l = passivity_level_lmi(sys, kind, 1);
-    const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
-    worst = std::max(worst, e);
-    agree += l.status == Status::numeric && e < 1e-5;
-    const bool below = l.lower_bound && *l.lower_bound <= c.enclosure->hi;
-    if (l.lower_bound) {
-      ++certified_lmi;
-      consistent += below;
-    }
-    if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
-      bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
-          << to_string(l.status) << " " << l.note << ")]";
+    compare_with_lmi(sys, kind, c, trial, worst, agree, certified_lmi, consistent, bad);
   }
   // issue 33's example
   Mat<rational> A = Mat<rational>::Zero(3, 3), B(3, 2), C(2, 3), D = Mat<rational>::Identity(2, 2);
