@@ -63,6 +63,32 @@ HAPSTAB_PROOF(ext_stability_crossing, "ext", "the crossing polynomials of stabil
               Status::exact, ok == cases, std::to_string(ok) + "/" + std::to_string(cases) + " polynomial pairs (degrees 1..6 by 0..5), identities in Q(t)");
 }
 
+// The Jury reduction of the pure-mass cubic, symbolically in k = K T^2/(2m) and q = B T/(2m):
+// polynomials in z over Q[q][k]. Jury's conditions for z^3 + a2 z^2 + a1 z + a0 (necessary and
+// sufficient): c(1) > 0, -c(-1) > 0, |a0| < 1, |a0^2 - 1| > |a0 a2 - a1|. Returns the evidence,
+// empty when an identity fails.
+std::string pure_mass_jury_symbolic() {
+  using Pq = Polynomial<rational>;   // in q
+  using Pk = Polynomial<Pq>;         // in k over Q[q]
+  using Pz = Polynomial<Pk>;         // in z over Q[q][k]
+  const Pk one(Pq(rational(1))), q(Pq::monomial(1)), k = Pk::monomial(1, Pq(rational(1)));
+  const Pz z = Pz::monomial(1, one), zm1 = z - Pz(one);
+  // the loop: z (z-1)^2 + (T^2/2m)(z+1)(K z + (B/T)(z-1)) = z (z-1)^2 + (z+1)(k z + q (z-1))
+  const Pz c = z * zm1 * zm1 + (z + Pz(one)) * (Pz(k) * z + Pz(q) * zm1);
+  const Pk a2 = k + q - Pk(Pq(rational(2))), a1 = one + k, a0 = Pk() - q;
+  const bool cubic = c == Pz(std::vector<Pk>{a0, a1, a2, one});
+  const bool c1 = a2 + a1 + a0 + one == Pk(Pq(rational(2))) * k;           // c(1) = 2k
+  const bool cm1 = a2 - a1 + a0 - one == Pk(Pq(rational(-4)));            // c(-1) = -4
+  const Pk s = k * (one + q) + (one - q) * (one - q);                      // -(a0 a2 - a1)
+  const bool last = a0 * a2 - a1 == Pk() - s &&
+                    (one - q * q) - s == Pk(Pq(rational(2))) * q * (one - q) - k * (one + q);
+  if (!(cubic && c1 && cm1 && last)) return "";
+  return "symbolic in (k, q) = (K T^2/2m, B T/2m), identities in Q[q][k][z]: c(z) = z^3 + (k+q-2) z^2 + (1+k) z - q, "
+         "c(1) = 2k, c(-1) = -4, a0 a2 - a1 = -(k(1+q) + (1-q)^2) and (1 - q^2) - (k(1+q) + (1-q)^2) = 2q(1-q) - k(1+q); "
+         "so Jury holds iff k > 0, |q| < 1 and (for k > 0, where a0 a2 - a1 < 0) 2q(1-q) > k(1+q), which needs q > 0: "
+         "0 < BT < 2m and 0 < K < (2B/T)(2m - BT)/(2m + BT) (k(1+q) < 2q(1-q) scaled by 2m/T^2)";
+}
+
 HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stable stiffness") {
   // c(z) = z (z-1)^2 + (T^2/2m)(z+1)(K z + (B/T)(z-1)) = z^3 + (k+q-2) z^2 + (1+k) z - q with
   // k = K T^2/(2m), q = B T/(2m). Jury: c(1) = 2k > 0, c(-1) = -4 < 0, q < 1 and
@@ -91,13 +117,15 @@ HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stabl
         ok += good;
         inside += g.enclosure.contains(K);
       }
-  ev << ok << "/" << cases << " (m, B, T): the cubic at the closed form has a root pair on |z| = 1 (exact count), exact "
+  const std::string proof = pure_mass_jury_symbolic();
+  ev << (proof.empty() ? "the symbolic Jury reduction FAILS" : proof) << "; cross-check against the library's loop at "
+     << ok << "/" << cases << " (m, B, T): the cubic at the closed form has a root pair on |z| = 1 (exact count), exact "
      << "Schur-Cohn stable at 0.999 K*, unstable at 1.001 K*, and stability --max's enclosure contains K* (" << inside
      << "/" << cases << ")";
   check.claim("ext.stability.pure_mass", "Jury, n = 0",
               "device 1/(m s^2), wall K + B(z-1)/(Tz): stable iff 0 < BT < 2m and 0 < K < (2B/T)(2m - BT)/(2m + BT) "
               "(never passive: b = 0 < b* = KT/2 + B)",
-              Status::exact, ok == cases, ev.str());
+              Status::exact, !proof.empty() && ok == cases, ev.str());
 }
 
 HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0: exact limit above 2b/T") {

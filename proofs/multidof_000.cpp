@@ -7,6 +7,7 @@
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/numeric/flint.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -40,6 +41,87 @@ MatQ lemma1(const StateSpace<Q>& s, const MatQ& P, const MatQ& Delta, const MatQ
   L.bottomLeftCorner(m, n) = L.topRightCorner(n, m).transpose();
   L.bottomRightCorner(m, m) = s.B.transpose() * P * s.B - (s.D + s.D.transpose()) / 2 + s.D.transpose() * Delta * s.D + Phi;
   return L;
+}
+long exact_rank(const MatQ& M) {
+  flint::QMat q(M.rows(), M.cols());
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    for (Eigen::Index j = 0; j < M.cols(); ++j) flint::set(q.at(i, j), M(i, j));
+  flint::QMat rref(M.rows(), M.cols());
+  return fmpq_mat_rref(rref.get(), q.get());
+}
+// The facial reduction of (16)'s first LMI for one environment E, proven in both directions.
+// Ehat = (A, B, C, D) has eigenvalue 1 with eigenvectors Vb = [V_a; I]. For (P, X) (P symmetric
+// 6x6, X symmetric 2x2: 24 unknowns) the facial equalities M1 [Vb; 0] = 0 are the linear map
+//   L(P, X) = [(A^T P A - P) Vb; (B^T P A - X C/2) Vb]           (16 rows)
+// and "P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1" is the linear map
+//   R(P, X) = [(Pi0^T P Pi0)_12; (Pi0^T P Pi0)_22 - X E(1)/(2T)]  (12 rows),
+// whose kernel is that family (and P symmetric makes X E(1) symmetric there). ker L = ker R,
+// both directions of the "iff", exactly when rank L = rank R = rank [L; R].
+struct Facial {
+  bool eig = false, iff = false;
+  long rank_l = 0, rank_r = 0, rank_lr = 0, rank_a_minus_i = 0;
+};
+Facial facial_proof(const StateSpace<Q>& E) {
+  const auto H = ehat(E);
+  const auto sp = ehat_split(E);
+  const Eigen::Index n = H.A.rows(), m = H.B.cols(), r = n - m;
+  MatQ Vb = MatQ::Zero(n, m);
+  Vb.topRows(r) = sp.Va;
+  Vb.bottomRows(m) = MatQ::Identity(m, m);
+  Facial f;
+  // eigenvalue 1: algebraic multiplicity m ((z-1)^m divides det(zI - A), (z-1)^{m+1} does not),
+  // geometric m (rank(A - I) = n - m), eigenvectors Vb
+  const Polynomial<Q> cp = charpoly(H.A), zm1{Q(-1), Q(1)};
+  Polynomial<Q> rest = cp;
+  bool divides = true;
+  for (Eigen::Index k = 0; k < m; ++k) {
+    auto [quo, rem] = divmod(rest, zm1);
+    divides = divides && rem.is_zero();
+    rest = quo;
+  }
+  f.rank_a_minus_i = exact_rank(MatQ(H.A - MatQ::Identity(n, n)));
+  f.eig = divides && rest(Q(1)) != 0 && f.rank_a_minus_i == n - m && MatQ(H.A * Vb) == Vb;
+  const Q T = E.T;
+  const MatQ Pi0 = sp.Pi0;
+  auto columns = [&](bool left) {
+    MatQ M(left ? n * m + m * m : r * m + m * m, n * (n + 1) / 2 + m * (m + 1) / 2);
+    Eigen::Index col = 0;
+    auto put = [&](const MatQ& P, const MatQ& X) {
+      MatQ v;
+      if (left) {
+        const MatQ top = H.A.transpose() * P * H.A * Vb - P * Vb, bot = H.B.transpose() * P * H.A * Vb - X * H.C * Vb / 2;
+        v.resize(n * m + m * m, 1);
+        v << top.reshaped(), bot.reshaped();
+      } else {
+        const MatQ Pt = Pi0.transpose() * P * Pi0;
+        const MatQ b12 = Pt.topRightCorner(r, m), b22 = Pt.bottomRightCorner(m, m) - X * sp.E1 / (2 * T);
+        v.resize(r * m + m * m, 1);
+        v << b12.reshaped(), b22.reshaped();
+      }
+      M.col(col++) = v;
+    };
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = i; j < n; ++j) {
+        MatQ P = MatQ::Zero(n, n);
+        P(i, j) = P(j, i) = 1;
+        put(P, MatQ::Zero(m, m));
+      }
+    for (Eigen::Index i = 0; i < m; ++i)
+      for (Eigen::Index j = i; j < m; ++j) {
+        MatQ X = MatQ::Zero(m, m);
+        X(i, j) = X(j, i) = 1;
+        put(MatQ::Zero(n, n), X);
+      }
+    return M;
+  };
+  const MatQ Lm = columns(true), Rm = columns(false);
+  MatQ LR(Lm.rows() + Rm.rows(), Lm.cols());
+  LR << Lm, Rm;
+  f.rank_l = exact_rank(Lm);
+  f.rank_r = exact_rank(Rm);
+  f.rank_lr = exact_rank(LR);
+  f.iff = f.rank_l == f.rank_r && f.rank_r == f.rank_lr;
+  return f;
 }
 MatQ blkdiag(const MatQ& a, const MatQ& b) {
   MatQ M = MatQ::Zero(a.rows() + b.rows(), a.cols() + b.cols());
@@ -147,8 +229,19 @@ HAPSTAB_PROOF(multidof_congruence, "000", "Theorem 4 -> LMIs (16) by congruence;
   Vk.block(4, 0, 2, 2) = MatQ::Identity(2, 2);
   const bool kern = MatQ(N1 * Vk).isZero(0) && MatQ(H.A * Vk.topRows(6)) == MatQ(Vk.topRows(6));
   const auto fcp = facial_conditions(example::problem(1, true));
-  check.claim("000.eq16.facial", "(15), (16)", "E-hat has m = 2 eigenvalues at 1 (eigenvectors [V_a b; b]); (16)'s first LMI is singular along [v; 0] for every P; the equalities hold iff P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1 with X E(1) symmetric; for the perturbed E no X = g I qualifies",
-              Status::exact, kern && !fcp.symmetric_possible, "exact kernel identity with rational P11, X = 7/3 I; perturbed E(1) asymmetric");
+  std::ostringstream fev;
+  bool fok = kern && !fcp.symmetric_possible;
+  for (bool pert : {false, true}) {
+    const Facial f = facial_proof(example::environment(pert));
+    fok = fok && f.eig && f.iff;
+    fev << (pert ? "perturbed" : "nominal") << " E: (z-1)^2 || det(zI - A), rank(A - I) = " << f.rank_a_minus_i
+        << "; rank L = " << f.rank_l << ", rank R = " << f.rank_r << ", rank [L; R] = " << f.rank_lr << "; ";
+  }
+  fev << "L: the equalities M1 [v; 0] = 0, R: the form of P, linear maps of (P, X) (P, X symmetric, 24 unknowns), "
+         "equal ranks => ker L = ker R (both directions); v'(A'PA - P)v = 0 for every P since A v = v; cross-check: "
+         "M1 [v; 0] = 0 at a rational P11, X = 7/3 I; perturbed E(1): no X = g I makes X E(1) symmetric";
+  check.claim("000.eq16.facial", "(15), (16)", "for the nominal and the perturbed reconstructed E: E-hat has eigenvalue 1 of algebraic and geometric multiplicity m = 2 (eigenvectors [V_a b; b]); the quadratic form of (16)'s first LMI vanishes along [v; 0] for every P; the facial equalities M1 [v; 0] = 0 hold iff P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1 (then X E(1) is symmetric), for every symmetric P and X; for the perturbed E no X = g I qualifies",
+              Status::exact, fok, fev.str());
 
 }
 

@@ -17,6 +17,17 @@
 
 namespace hapstab::proofs {
 
+/// A claimed upper bound v of a quantity known by its enclosure e is proven only when e.hi <= v
+/// (e.lo <= v merely fails to refute it); a lower bound only when e.lo >= v.
+template <class T>
+bool proves_upper_bound(const Enclosure<T>& e, const T& v) {
+  return e.hi <= v;
+}
+template <class T>
+bool proves_lower_bound(const Enclosure<T>& e, const T& v) {
+  return e.lo >= v;
+}
+
 struct ClaimResult {
   std::string id;         ///< stable id, e.g. "001.eq44.identity" (paper.equation.what)
   std::string paper;      ///< "000", "001" or "002" (shared/papers numbering)

@@ -47,10 +47,12 @@ void eval100(const TransferFunction& H, const R& th, R& re, R& im) {
   im = (ni * dr - nr * di) / d2;
 }
 
+// The wedge left side + 1 in its closed form Re H + |Im H| cot(theta/2) + 1 (the max of the two
+// branches Re h +- cot(theta/2) Im h), independent of the library's wedge_lhs/q_lhs.
 R side100(const TransferFunction& H, const R& th, bool wedge) {
   R re, im;
   eval100(H, th, re, im);
-  return wedge ? wedge_lhs(th, re, im) : re + 1;
+  return wedge ? re + abs(im) * cos(th / 2) / sin(th / 2) + 1 : re + 1;
 }
 
 // min over theta in (0, pi] of the left side + 1: 6000-point scan, then golden section around
@@ -240,10 +242,13 @@ TEST(QInequalities, HalfPlanesOfFig6) {
     const double lhs22 = re + std::sin(q * th) / (1 - std::cos(q * th)) * im + 1;
     EXPECT_NEAR(lhs24 / (1 - std::cos(q * th)), lhs22, 1e-13);
   }
-  // the wedge pair equals max over q = 1, N - 1
+  // the wedge pair equals max over q = 1, N - 1, and its closed form Re h + |Im h| cot(theta/2) + 1
+  // (the independent form the 100-digit reference above uses); 1e-13: a few ulps of terms of size ~2
   const double re = -1.5, im = -0.3;
   EXPECT_NEAR(wedge_lhs(th, re, im),
               std::max(q_lhs(th, 1, re, im) / (1 - std::cos(th)), q_lhs(th, 7, re, im) / (1 - std::cos(th))), 1e-13);
+  for (const double imh : {-0.3, 0.0, 0.7})
+    EXPECT_NEAR(wedge_lhs(th, re, imh), re + std::abs(imh) / std::tan(th / 2) + 1, 1e-13) << imh;
 }
 
 TEST(Wedge, BadInput) {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 using namespace hapstab;
@@ -68,6 +69,24 @@ TEST(Decimal, ExactRationalOfBinaryFloats) {
 TEST(Decimal, CommonDecimalDecidesOnlyWhenBothEndsAgree) {
   EXPECT_EQ(common_decimal(rational(33332, 100000), rational(33334, 100000), 3).value(), "0.333");
   EXPECT_FALSE(common_decimal(rational(3344, 10000), rational(3356, 10000), 3).has_value());
+}
+
+// What `stability --max`, `wedge` and `bound` print of an enclosure that did not narrow to the
+// asked digits: only the digits both ends share, and how many (issue 30; before, the midpoint
+// was printed to all the asked digits).
+TEST(Decimal, SharedDecimalKeepsOnlyTheDigitsBothEndsShare) {
+  auto s = shared_decimal(rational(123441, 100000), rational(123444, 100000), 20);  // [1.23441, 1.23444]
+  EXPECT_EQ(s.text, "1.2344");
+  EXPECT_EQ(s.digits, 5);
+  s = shared_decimal(rational(1, 3), rational(1, 3), 12);  // exact: every asked digit
+  EXPECT_EQ(s.text, "0.333333333333");
+  EXPECT_EQ(s.digits, 12);
+  s = shared_decimal(rational(14, 10), rational(16, 10), 20);  // no first digit in common
+  EXPECT_EQ(s.text, "");
+  EXPECT_EQ(s.digits, 0);
+  s = shared_decimal(rational(-2001, 1000), rational(-1999, 1000), 20);  // both round to -2.00 ... -2
+  EXPECT_EQ(s.digits, 3);
+  EXPECT_EQ(s.text, "-2");
 }
 
 // decimal_outward is the nearest decimal of `digits` digits on the asked side: an enclosure

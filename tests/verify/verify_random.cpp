@@ -5,6 +5,12 @@
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
 //   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level] [--case K]
+//                 [--max-undecided F]
+//
+// Apart from misses: refused (the criterion rejected a generated input) fails the run; failed (a
+// certified computation returned Status::failed) fails the run; undecided (a NumericalError, an
+// honest "cannot decide") fails it only above F of the cases per criterion (default 0.005;
+// `--inject-undecided` makes every case undecided, for the test that a flood fails the run).
 //
 // Case K of seed S is generated from its own generator (seed, K), so `--case K` replays one.
 //
@@ -45,6 +51,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -71,8 +78,14 @@ using RF = RationalFunction<rational>;
 
 namespace {
 
+// A certified computation that returned Status::failed on an input in its scope: not a wrong
+// number and not an honest "undecided" (NumericalError) either -- counted as failed, fails the run.
+struct CertifiedFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 struct Tally {
-  long cases = 0, misses = 0, refused = 0, undecided = 0;
+  long cases = 0, misses = 0, refused = 0, undecided = 0, failed = 0;
   double seconds = 0, slowest = 0;
   long slowest_case = -1;
 };
@@ -392,7 +405,7 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
   if (chance(g, 0.5)) tf.H = tf.H + RF(P(rational(uniform(g, 0, 1000), 10)));  // a feedthrough
   why << "level: G = (" << to_string(tf.H.num(), "z") << ")/(" << to_string(tf.H.den(), "z") << ")\n";
   const auto c = lmi::passivity_level_certified(tf.H, lmi::PassivityKind::isp, 30);
-  if (c.status == Status::failed) throw NumericalError("certified level failed: " + c.note);
+  if (c.status == Status::failed) throw CertifiedFailed("certified level failed: " + c.note);
   Stopwatch reference_time;
   if (!c.enclosure) {
     why << "  no enclosure\n";
@@ -895,6 +908,8 @@ bool check_consistency(std::mt19937_64& g, std::ostream& why) {
 
 int main(int argc, char** argv) {
   long cases = 1000, only = -1, first = 0;
+  double max_undecided = 0.005;  // per criterion: more undecided cases than this fraction fail the run
+  bool inject_undecided = false;  // test hook: every case throws NumericalError (the flood test)
   unsigned long seed = 1;
   std::string criterion = "all";
   for (int i = 1; i < argc; ++i) {
@@ -912,9 +927,11 @@ int main(int argc, char** argv) {
       else if (a == "--criterion") criterion = value();
       else if (a == "--case") only = std::stol(value());
       else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
+      else if (a == "--max-undecided") max_undecided = std::stod(value());
+      else if (a == "--inject-undecided") inject_undecided = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level] [--case K])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level] [--case K] [--max-undecided F])\n";
       return 2;
     }
   }
@@ -950,6 +967,7 @@ int main(int argc, char** argv) {
                          std::to_string(k) + ")\n";
       const auto case_start = std::chrono::steady_clock::now();
       try {
+        if (inject_undecided) throw NumericalError("injected (--inject-undecided)");
         if (!check(g, why)) {
           ++t.misses;
           std::cerr << "MISS case " << k << rerun << why.str();
@@ -959,6 +977,9 @@ int main(int argc, char** argv) {
       } catch (const InputError& e) {  // the generator made an input the criterion refuses: its bug
         ++t.refused;
         std::cerr << "REFUSED case " << k << ": " << e.what() << rerun << why.str();
+      } catch (const CertifiedFailed& e) {  // a certified path that failed: reported as failed
+        ++t.failed;
+        std::cerr << "FAILED case " << k << ": " << e.what() << rerun << why.str();
       } catch (const NumericalError& e) {  // an honest "cannot decide": counted, not a wrong number
         ++t.undecided;
         if (only >= 0) std::cerr << "undecided case " << k << ": " << e.what() << rerun << why.str();
@@ -990,6 +1011,18 @@ int main(int argc, char** argv) {
                   consistency_tally.contact, consistency_tally.law_decided, consistency_tally.law_stable,
                   consistency_tally.stab_decided, consistency_tally.sim_claims, consistency_tally.compared);
     if (t.misses > 0 || t.refused > 0) failed = 1;
+    // Undecided and failed are reported apart from misses; a flood of undecided (a regression that
+    // made a method give up everywhere would otherwise pass) and any failed certified path fail the run.
+    const long undecided_cap = static_cast<long>(max_undecided * static_cast<double>(t.cases));
+    if (t.undecided > undecided_cap) {
+      std::printf("          undecided: %ld of %ld cases, above the cap of %ld (--max-undecided %g)\n", t.undecided,
+                  t.cases, undecided_cap, max_undecided);
+      failed = 1;
+    }
+    if (t.failed > 0) {
+      std::printf("          failed: %ld certified computations returned failed\n", t.failed);
+      failed = 1;
+    }
   }
   return failed;
 }

@@ -12,25 +12,21 @@
 namespace hapstab::cli {
 namespace {
 
-// Every claim id must stand in the claim table (proofs/README.md) in backquotes.
-int check_table(const std::vector<proofs::ClaimResult>& claims, const std::string& table) {
+// Every claim must stand in the claim table (proofs/README.md) with the row it states: each
+// column is compared (reproduce.hpp, compare_claim_table) and every difference named.
+int check_table(const std::vector<proofs::ClaimResult>& claims, const std::string& table, const std::string& only) {
   std::ifstream in(table);
   if (!in) throw InputError("--table: cannot read '" + table + "'");
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
-  int missing = 0;
-  for (const auto& c : claims)
-    if (text.find("`" + c.id + "`") == std::string::npos) {
-      std::cerr << "hapstab proofs: claim `" << c.id << "` has no row in " << table << "\n";
-      ++missing;
-    }
-  return missing;
+  const auto msgs = compare_claim_table(claims, ss.str(), only);
+  for (const auto& m : msgs) std::cerr << "hapstab proofs: " << table << ": " << m << "\n";
+  return static_cast<int>(msgs.size());
 }
 
 struct Opts {
   std::string only, out, table;
-  bool quiet = false, json = false;
+  bool quiet = false, json = false, print_table = false;
 };
 
 int run(const Opts& o) {
@@ -40,7 +36,7 @@ int run(const Opts& o) {
   if (!o.out.empty()) output_folder(o.out, "--out");
   if (!o.table.empty() && !std::ifstream(o.table)) throw InputError("--table: cannot read '" + o.table + "'");
   double seconds = 0;
-  auto claims = run_proofs(o.only, o.quiet || o.json, seconds);
+  auto claims = run_proofs(o.only, o.quiet || o.json || o.print_table, seconds);
   size_t fails = 0;
   for (const auto& c : claims) fails += !c.holds;
   if (!o.out.empty()) {
@@ -49,8 +45,11 @@ int run(const Opts& o) {
     rep.seconds = seconds;
     write_report_md(rep, o.out);
   }
-  int missing = o.table.empty() ? 0 : check_table(claims, o.table);
-  if (o.json) {
+  int missing = o.table.empty() ? 0 : check_table(claims, o.table, o.only);
+  if (o.print_table) {
+    std::cout << claim_table_header();
+    for (const auto& c : claims) std::cout << claim_table_row(c) << "\n";
+  } else if (o.json) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& c : claims)
       j.push_back({{"id", c.id},
@@ -63,7 +62,7 @@ int run(const Opts& o) {
     print_json(j);
   } else {
     std::cout << "proofs: " << claims.size() - fails << " passed, " << fails << " failed";
-    if (missing) std::cout << ", " << missing << " without a row in " << o.table;
+    if (missing) std::cout << ", " << missing << " difference" << (missing == 1 ? "" : "s") << " from " << o.table;
     std::cout << "\n";
   }
   return (fails || missing) ? exit_property_fails : exit_ok;
@@ -76,7 +75,10 @@ const Register reg({"proofs", "Run every checked derivation (proofs/) and print 
                       app.add_flag("--quiet", o->quiet, "Print only the summary line");
                       app.add_flag("--json", o->json, "Print the claims as JSON");
                       app.add_option("--table", o->table,
-                                     "Fail unless every claim id has a row in this claim table (proofs/README.md)");
+                                     "Fail unless every claim has its row, every column equal, in this claim table "
+                                     "(proofs/README.md); each difference is named");
+                      app.add_flag("--print-table", o->print_table,
+                                   "Print the claim table's rows as the claims state them (to regenerate proofs/README.md)");
                       return [o]() { return run(*o); };
                     }});
 

@@ -17,6 +17,7 @@
 #include "cli/command.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
@@ -130,13 +131,16 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
   j["name"] = o.max_name;
   const bool found = m.outcome == Outcome::holds;
   j["status"] = m.outcome == Outcome::undecided ? "undecided" : to_string(m.status);
+  int shared = o.digits;  // the significant digits of "max" that are certified
   if (!found) j["max"] = m.outcome == Outcome::fails ? nlohmann::json("0") : nlohmann::json(nullptr);
   else if (m.infinite) j["max"] = "inf";
   else if (m.exact) j["max"] = to_decimal(*m.exact, o.digits);
-  else {
-    const auto d = common_decimal(m.enclosure.lo, m.enclosure.hi, o.digits);
-    j["max"] = d ? *d : to_decimal((m.enclosure.lo + m.enclosure.hi) / 2, o.digits);
+  else {  // only the digits both ends of the enclosure share
+    const SharedDecimal d = shared_decimal(m.enclosure.lo, m.enclosure.hi, o.digits);
+    j["max"] = d.text;
+    shared = d.digits;
   }
+  j["max_digits"] = found && !m.infinite ? nlohmann::json(shared) : nlohmann::json(nullptr);
   j["enclosure"] = found && !m.infinite ? enclosure_json(m.enclosure, o.digits + 3) : nlohmann::json(nullptr);
   if (m.exact) j["exact"] = m.exact->str();
   if (found && !m.infinite) {
@@ -160,8 +164,12 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   const nlohmann::json j = max_json(m, o, loop.T);
   if (o.json) cli::print_json(j);
   else {
-    std::cout << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [" << j["status"].get<std::string>()
-              << "]\n";
+    const int shared = j["max_digits"].is_null() ? o.digits : j["max_digits"].get<int>();
+    std::cout << "sup " << o.max_name << " = " << (shared > 0 ? j["max"].get<std::string>() : "(no digit certified)") << "   ["
+              << j["status"].get<std::string>();
+    if (shared < o.digits)
+      std::cout << ", " << shared << " of " << o.digits << " digits: the enclosure did not narrow further";
+    std::cout << "]\n";
     if (!j["enclosure"].is_null())
       std::cout << "  enclosure [" << j["enclosure"][0].get<std::string>() << ", "
                 << j["enclosure"][1].get<std::string>() << "]\n  roots leave the unit disk at "

@@ -10,6 +10,7 @@
 #include "cli/tf_options.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
@@ -24,11 +25,17 @@ struct Opts {
   bool json = false;
 };
 
+// Only the digits both ends of the enclosure share (numeric/decimal.hpp, shared_decimal); when the
+// enclosure did not narrow to `digits`, how many they are is said.
+SharedDecimal shared(const Certified<rational>& r, int digits) {
+  if (r.enclosure) return shared_decimal(r.enclosure->lo, r.enclosure->hi, digits);
+  return {to_decimal(r.value, digits), r.status == Status::exact ? digits : 0};
+}
 std::string dec(const Certified<rational>& r, int digits) {
-  if (r.enclosure) {
-    if (auto s = common_decimal(r.enclosure->lo, r.enclosure->hi, digits)) return *s;
-  }
-  return to_decimal(r.value, digits);
+  const SharedDecimal s = shared(r, digits);
+  if (s.digits == digits) return s.text;
+  if (s.digits == 0) return "(no digit certified)";
+  return s.text + " (" + std::to_string(s.digits) + " of " + std::to_string(digits) + " digits certified)";
 }
 
 nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
@@ -36,11 +43,13 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
   j["evaluated"] = c.evaluated();
   if (!c.evaluated()) return j;
   j["holds"] = c.verdict.holds();
-  j["margin"] = dec(c.margin, digits);
+  j["margin"] = shared(c.margin, digits).text;
+  j["margin_digits"] = shared(c.margin, digits).digits;
   j["margin_enclosure"] = {to_decimal(c.margin.enclosure->lo, digits + 5), to_decimal(c.margin.enclosure->hi, digits + 5)};
   j["margin_status"] = to_string(c.margin.status);
   j["theta_at_min"] = c.theta_at_min;
-  j["max_gain"] = c.gain_infinite ? std::string("inf") : dec(c.max_gain, digits);
+  j["max_gain"] = c.gain_infinite ? std::string("inf") : shared(c.max_gain, digits).text;
+  j["max_gain_digits"] = c.gain_infinite ? digits : shared(c.max_gain, digits).digits;
   j["max_gain_status"] = c.gain_infinite ? "exact" : to_string(c.max_gain.status);
   return j;
 }
@@ -72,12 +81,12 @@ int run(const Opts& o) {
     j["H"] = H.to_string();
     j["wedge_holds"] = w.evaluated() && w.verdict.holds();
     j["tsypkin_holds"] = ts.evaluated() && ts.verdict.holds();
-    j["wedge_margin"] = w.evaluated() ? nlohmann::json(dec(w.margin, o.digits)) : nlohmann::json(nullptr);
-    j["tsypkin_margin"] = ts.evaluated() ? nlohmann::json(dec(ts.margin, o.digits)) : nlohmann::json(nullptr);
+    j["wedge_margin"] = w.evaluated() ? nlohmann::json(shared(w.margin, o.digits).text) : nlohmann::json(nullptr);
+    j["tsypkin_margin"] = ts.evaluated() ? nlohmann::json(shared(ts.margin, o.digits).text) : nlohmann::json(nullptr);
     j["max_gain_wedge"] = !w.evaluated() ? nlohmann::json(nullptr)
-                                       : nlohmann::json(w.gain_infinite ? std::string("inf") : dec(w.max_gain, o.digits));
+                                       : nlohmann::json(w.gain_infinite ? std::string("inf") : shared(w.max_gain, o.digits).text);
     j["max_gain_tsypkin"] = !ts.evaluated() ? nlohmann::json(nullptr)
-                                          : nlohmann::json(ts.gain_infinite ? std::string("inf") : dec(ts.max_gain, o.digits));
+                                          : nlohmann::json(ts.gain_infinite ? std::string("inf") : shared(ts.max_gain, o.digits).text);
     j["status"] = status;
     j["assumptions"] = a.assumptions.violated;
     j["applies"] = applies;

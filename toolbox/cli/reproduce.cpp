@@ -3,6 +3,8 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "hapstab/numeric/error.hpp"
@@ -32,6 +34,89 @@ std::string section_title(const std::string& p) {
   return (p == "toolbox" || p == "python" || p == "ext" ? "" : "Paper " + p + ": ") + paper_title(p);
 }
 }  // namespace
+
+namespace {
+const char* const claim_table_columns[] = {"claim", "equation", "statement", "method", "verdict"};
+
+// The cells of a markdown table line "| a | b \\| c |": split at each '|' that no backslash
+// escapes, trimmed (an escaped character is kept with its backslash, as md::cell wrote it).
+std::vector<std::string> split_row(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cur;
+  bool started = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '\\' && i + 1 < line.size()) {
+      cur += line.substr(i, 2);
+      ++i;
+    } else if (line[i] == '|') {
+      if (started) cells.push_back(cur);
+      started = true;
+      cur.clear();
+    } else {
+      cur += line[i];
+    }
+  }
+  for (auto& c : cells) {
+    const size_t a = c.find_first_not_of(' '), b = c.find_last_not_of(' ');
+    c = a == std::string::npos ? "" : c.substr(a, b - a + 1);
+  }
+  return cells;
+}
+}  // namespace
+
+std::vector<std::string> claim_table_cells(const ClaimResult& c) {
+  using report::markdown::cell;
+  return {report::markdown::code(c.id), cell(c.equation), cell(c.statement), to_string(c.status),
+          c.holds ? "holds" : "FAILS"};
+}
+
+std::string claim_table_row(const ClaimResult& c) {
+  std::string row = "|";
+  for (const auto& x : claim_table_cells(c)) row += " " + x + " |";
+  return row;
+}
+
+std::string claim_table_header() { return "| claim | equation | statement | method | verdict |\n|---|---|---|---|---|\n"; }
+
+std::vector<std::string> compare_claim_table(const std::vector<ClaimResult>& claims, const std::string& text,
+                                             const std::string& papers_run) {
+  std::map<std::string, std::vector<std::string>> rows;  // id -> cells
+  std::vector<std::string> msgs, order;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("| `", 0) != 0) continue;
+    auto cells = split_row(line);
+    if (cells.empty() || cells[0].size() < 2) continue;
+    const std::string id = cells[0].substr(1, cells[0].size() - 2);
+    if (rows.count(id)) msgs.push_back("claim `" + id + "`: more than one row in the table");
+    rows[id] = std::move(cells);
+    order.push_back(id);
+  }
+  std::set<std::string> seen;
+  for (const auto& c : claims) {
+    seen.insert(c.id);
+    const auto it = rows.find(c.id);
+    if (it == rows.end()) {
+      msgs.push_back("claim `" + c.id + "` has no row in the table");
+      continue;
+    }
+    const auto want = claim_table_cells(c);
+    const auto& got = it->second;
+    if (got.size() != want.size()) {
+      msgs.push_back("claim `" + c.id + "`: its row has " + std::to_string(got.size()) + " columns, not " +
+                     std::to_string(want.size()));
+      continue;
+    }
+    for (size_t k = 1; k < want.size(); ++k)
+      if (got[k] != want[k])
+        msgs.push_back("claim `" + c.id + "`: column " + claim_table_columns[k] + ": the table says '" + got[k] +
+                       "', the claim '" + want[k] + "'");
+  }
+  for (const auto& id : order)
+    if (!seen.count(id) && (papers_run.empty() || id.rfind(papers_run + ".", 0) == 0))
+      msgs.push_back("claim `" + id + "`: a row in the table, but no such claim");
+  return msgs;
+}
 
 std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double& seconds) {
   std::vector<ClaimResult> all;

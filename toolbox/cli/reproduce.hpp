@@ -39,4 +39,17 @@ void write_index_html(const ReportInput& in, const std::filesystem::path& dir);
 
 const char* paper_title(const std::string& paper);
 
+/// The claim table (proofs/README.md): one row per claim, its cells (`id`, equation, statement,
+/// method, verdict) as the claim states them, a '|' in a cell escaped as "\|".
+std::vector<std::string> claim_table_cells(const proofs::ClaimResult& c);
+std::string claim_table_row(const proofs::ClaimResult& c);
+/// The header and separator lines of the claim table.
+std::string claim_table_header();
+/// Compares every claim with its row of the claim table `text`, cell by cell; one message per
+/// difference, naming the claim and the column ("claim `001.eq51`: column method: the table says
+/// 'numeric', the claim 'exact'"), a claim without a row, and a row of the papers `papers_run`
+/// ("" = all) without a claim. Empty when they agree.
+std::vector<std::string> compare_claim_table(const std::vector<proofs::ClaimResult>& claims, const std::string& text,
+                                             const std::string& papers_run);
+
 }  // namespace hapstab::cli

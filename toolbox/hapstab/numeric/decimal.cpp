@@ -1,4 +1,5 @@
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -182,6 +183,13 @@ std::optional<std::string> common_decimal(const rational& lo, const rational& hi
   std::string a = to_decimal(lo, digits), b = to_decimal(hi, digits);
   if (a == b) return a;
   return std::nullopt;
+}
+
+SharedDecimal shared_decimal(const rational& lo, const rational& hi, int digits) {
+  if (lo == hi) return {to_decimal(lo, digits), digits};
+  for (int d = digits; d >= 1; --d)
+    if (auto s = common_decimal(lo, hi, d)) return {*s, d};
+  return {};
 }
 
 rational exact_rational(double x) {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interval.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
@@ -17,10 +18,8 @@ namespace hapstab::passivity {
 namespace detail {
 
 std::string enclosure_decimal(const rational& lo, const rational& hi, int digits) {
-  if (lo == hi) return to_decimal(lo, digits);
-  for (int d = digits; d >= 2; --d)
-    if (auto s = common_decimal(lo, hi, d)) return *s;
-  return to_decimal((lo + hi) / 2, 3);
+  const SharedDecimal s = shared_decimal(lo, hi, digits);
+  return s.digits >= 2 || lo == hi ? s.text : to_decimal((lo + hi) / 2, 3);
 }
 
 namespace {

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 
@@ -34,9 +35,20 @@ bool write_all(int fd, const std::string& s) {
   return true;
 }
 
+/// Test hook (tests/cli/test_sweep.cpp, KilledRunResumesToTheSameBytes): with the environment
+/// variable HAPSTAB_TEST_SWEEP_KILL_AFTER=N, worker 0 writes and syncs its first N records, then
+/// SIGKILLs the sweep's process group -- a kill at a known point, not at a wall-clock moment.
+long kill_after_points() {
+  const char* v = std::getenv("HAPSTAB_TEST_SWEEP_KILL_AFTER");
+  if (!v || !*v) return -1;
+  char* end = nullptr;
+  const long n = std::strtol(v, &end, 10);
+  return *end == '\0' && n >= 0 ? n : -1;
+}
+
 /// The body of worker w: its points, one record line each, then _exit (never returns).
 [[noreturn]] void worker(const RunPlan& plan, const std::vector<uint64_t>& pending, unsigned w, unsigned jobs,
-                         int progress_fd, const PointRunner& run_point) {
+                         int progress_fd, const PointRunner& run_point, long kill_after) {
   const int null = ::open("/dev/null", O_WRONLY);
   if (null >= 0) ::dup2(null, STDOUT_FILENO);  // a command's human output must not reach the sweep's
   const fs::path file = plan.dir / "checkpoints" / ("part-" + std::to_string(::getpid()) + ".txt");
@@ -64,6 +76,11 @@ bool write_all(int fd, const std::string& s) {
     }
     records += record_line(index, rec) + "\n";
     ++ticks;
+    if (w == 0 && kill_after >= 0 && static_cast<long>(p / jobs + 1) == kill_after) {
+      flush();
+      ::fdatasync(fd);
+      ::kill(0, SIGKILL);
+    }
     const auto now = Clock::now();
     if (now - flushed > std::chrono::milliseconds(100) || records.size() > (64u << 10)) flush();
     if (now - synced > std::chrono::seconds(1)) {
@@ -139,13 +156,14 @@ RunResult run_pending(const RunPlan& plan, const RecordStore& done, const PointR
   int pipe_fd[2];
   if (::pipe2(pipe_fd, O_CLOEXEC) != 0) throw NumericalError("sweep: cannot create a pipe");
   std::cout.flush(), std::cerr.flush(), std::fflush(nullptr);
+  const long kill_after = kill_after_points();
   std::vector<pid_t> workers;
   for (unsigned w = 0; w < jobs; ++w) {
     const pid_t pid = ::fork();
     if (pid < 0) throw NumericalError("sweep: cannot start a worker process");
     if (pid == 0) {
       ::close(pipe_fd[0]);
-      worker(plan, pending, w, jobs, pipe_fd[1], run_point);
+      worker(plan, pending, w, jobs, pipe_fd[1], run_point, kill_after);
     }
     workers.push_back(pid);
   }
