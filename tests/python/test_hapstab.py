@@ -50,7 +50,7 @@ def test_import_without_the_extension_says_it_is_not_built(tmp_path):
     for f in Path(hapstab.__file__).parent.glob("*.py"):
         (package / f.name).write_text(f.read_text(encoding="utf-8"), encoding="utf-8")
     p = subprocess.run([sys.executable, "-c", "import hapstab"], capture_output=True, text=True, check=False,
-                       env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+                       env=dict(os.environ, PYTHONPATH=str(tmp_path)), cwd=tmp_path)  # not the build's python/
     assert p.returncode == 1
     assert "ImportError: hapstab: the C++ extension hapstab._core is not built in " + str(package) in p.stderr, p.stderr
     assert "cmake --build build --target hapstab_python" in p.stderr

@@ -1,0 +1,72 @@
+"""setuptools' half of pyproject.toml: builds the C++ extension hapstab._core with CMake.
+
+    HAPSTAB_BUILD_DIR=DIR   reuse the CMake build folder DIR (e.g. build, already configured by
+                            scripts/test or cmake -S . -B build): only hapstab_python is built there,
+                            so an up-to-date folder costs the link of one module, not the library.
+    (unset)                 configure a folder of its own under setuptools' build_temp (Release,
+                            no tests, no benchmarks) and build the library and the module: minutes.
+    HAPSTAB_JOBS=N          parallel compile jobs (default: the CPU count).
+
+The extension must be built for the interpreter that installs it (CMake uses /usr/bin/python3
+unless Python3_EXECUTABLE is given: a fresh folder is configured with this interpreter); a
+module built for another Python is refused by name.
+"""
+import importlib.machinery
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+SOURCE = Path(__file__).resolve().parent
+
+
+def version() -> str:
+    m = re.search(r"project\(hapstab VERSION (\S+)", (SOURCE / "CMakeLists.txt").read_text(encoding="utf-8"))
+    if not m:
+        raise RuntimeError("setup.py: no project(hapstab VERSION ...) in CMakeLists.txt")
+    return m.group(1)
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext: Extension) -> None:
+        given = os.environ.get("HAPSTAB_BUILD_DIR")
+        jobs = os.environ.get("HAPSTAB_JOBS", str(os.cpu_count() or 1))
+        if given:
+            build = Path(given) if os.path.isabs(given) else SOURCE / given
+            if not (build / "CMakeCache.txt").is_file():
+                raise RuntimeError(f"HAPSTAB_BUILD_DIR={given}: {build} is not a configured CMake build folder")
+        else:
+            build = Path(self.build_temp).resolve() / "cmake"
+            subprocess.check_call(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                                   "-DHAPSTAB_TESTS=OFF", "-DHAPSTAB_BENCH=OFF", "-DHAPSTAB_PYTHON=ON",
+                                   f"-DPython3_EXECUTABLE={sys.executable}"])
+        cache = (build / "CMakeCache.txt").read_text(encoding="utf-8", errors="replace")
+        if not re.search(r"^HAPSTAB_PYTHON:BOOL=ON$", cache, re.M):
+            raise RuntimeError(f"{build}: the Python module is off there (HAPSTAB_PYTHON=OFF, or pybind11 was not "
+                               "found: Debian pybind11-dev python3-dev)")
+        subprocess.check_call(["cmake", "--build", str(build), "--target", "hapstab_python", "-j", jobs])
+        package = build / "python" / "hapstab"
+        suffix = importlib.machinery.EXTENSION_SUFFIXES[0]
+        built = package / f"_core{suffix}"
+        if not built.is_file():
+            found = ", ".join(p.name for p in package.glob("_core*")) or "nothing"
+            raise RuntimeError(f"{package}: no _core{suffix} for this Python ({sys.executable}); found {found}. "
+                               "Configure the build folder with -DPython3_EXECUTABLE=<this python>.")
+        target = Path(self.get_ext_fullpath(ext.name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built, target)
+
+
+(SOURCE / "build-pip").mkdir(exist_ok=True)
+setup(
+    version=version(),
+    ext_modules=[Extension("hapstab._core", sources=[])],
+    cmdclass={"build_ext": CMakeBuild},
+    # setuptools' own folders, apart from CMake's build/ (in-tree builds are pip's default)
+    options={"build": {"build_base": "build-pip"}, "egg_info": {"egg_base": "build-pip"}},
+)
