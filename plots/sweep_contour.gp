@@ -2,11 +2,11 @@
 # --contour). The values at the grid points are the sweep's (certified or numeric, as points.csv
 # says); the lines between them are gnuplot's linear interpolation, a picture, not a proof.
 # Needs a full grid: X the slower axis, Y the faster one (each X block ends with a blank line).
-# Data: DIR/plot-data/grid.dat (x y z, NaN for an infinite or failed value) and labels.gp.
+# Data: DATA/grid.dat (x y z, NaN for an infinite or failed value), in a private folder hapstab
+# made; hapstab sets the column names xname, yname, zname with gnuplot -e.
 name = 'sweep_contour'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
-load datadir.'/labels.gp'
 set xlabel xname noenhanced
 set ylabel yname noenhanced
 set title zname.' over ('.xname.', '.yname.'): contour lines' noenhanced
