@@ -3,11 +3,11 @@
 # says); the lines between them are gnuplot's linear interpolation, a picture, not a proof.
 # Each line is coloured by its level (the colour bar) and labelled with it.
 # Needs a full grid: X the slower axis, Y the faster one (each X block ends with a blank line).
-# Data: DIR/plot-data/grid.dat (x y z, NaN for an infinite or failed value) and labels.gp.
+# Data: DATA/grid.dat (x y z, NaN for an infinite or failed value), in a private folder hapstab
+# made; hapstab sets the column names xname, yname, zname with gnuplot -e.
 name = 'sweep_contour'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
-load datadir.'/labels.gp'
 unit(u) = strlen(u) > 0 ? ' ['.u.']' : ''
 if (!exists("xunit")) xunit = ''
 if (!exists("yunit")) yunit = ''

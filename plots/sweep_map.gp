@@ -3,13 +3,13 @@
 # hatched cells: numeric values (not proven); grey cells: Z infinite (e.g. b* = inf); crossed
 # cells: the point failed (its row says why). On a grid the cells tile the plane; the cell size
 # is the smallest step between consecutive points (grid.dat, in the sweep's order).
-# Data: DIR/plot-data/{proven,numeric,infinite,failed,grid}.dat (x y [z]); labels.gp holds the
-# column names (and units, xunit/yunit/zunit, when known) and the plot command of the non-empty
-# parts (map_plot), which draws boxes of half-widths `cx`, `cy`.
+# Data: DATA/{proven,numeric,infinite,failed,grid}.dat (x y [z]), in a private folder hapstab
+# made; hapstab sets the column names xname, yname, zname (units xunit, yunit, zunit when known)
+# and has_proven, has_numeric, has_infinite, has_failed (1 when that file has points: gnuplot
+# refuses an empty data file) with gnuplot -e. Cells are boxes of half-widths `cx`, `cy`.
 name = 'sweep_map'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
-load datadir.'/labels.gp'
 unit(u) = strlen(u) > 0 ? ' ['.u.']' : ''
 if (!exists("xunit")) xunit = ''
 if (!exists("yunit")) yunit = ''
@@ -34,4 +34,10 @@ set key at screen 0.5, screen 0.01 center bottom horizontal samplen 1.5
 set bmargin 6
 set style fill solid 1.0 noborder
 set palette defined (0 '#440154', 1 '#3b528b', 2 '#21918c', 3 '#5ec962', 4 '#fde725')  # viridis
-eval map_plot
+# the plot command of the non-empty parts; only this script's own text is evaluated
+parts = ''
+if (has_proven) parts = parts.", datadir.'/proven.dat' using 1:2:(cx):(cy):3 with boxxyerror fs solid 1.0 noborder fc palette title 'certified / exact'"
+if (has_numeric) parts = parts.", datadir.'/numeric.dat' using 1:2:(cx):(cy):3 with boxxyerror fs pattern 4 border lc palette fc palette title 'numeric (not proven)'"
+if (has_infinite) parts = parts.", datadir.'/infinite.dat' using 1:2:(cx):(cy) with boxxyerror fs solid 1.0 noborder fc rgb '#999999' title zname.' = inf'"
+if (has_failed) parts = parts.", datadir.'/failed.dat' using 1:2:(cx):(cy) with boxxyerror fs pattern 5 border lc rgb '#D55E00' fc rgb '#D55E00' title 'failed'"
+eval 'plot '.parts[3:]

@@ -1,13 +1,12 @@
 # plots/user_bode.gp -- `hapstab plot bode`: |H(e^{jwT}) z^-n| in dB and its unwrapped phase in
 # degrees against w (log axis) up to the Nyquist frequency pi/T, with the maximiser w* of the
 # passivity bound b* (paper 001 (45)) marked.
-# Data: DATA/NAME.dat (w, dB, deg, theta) and DATA/NAME_labels.gp, both by hapstab plot.
+# Data: DATA/NAME.dat (w, dB, deg, theta); titles and limits are variables hapstab plot sets (gnuplot -e).
 if (!exists("figname")) figname = 'bode'
 name = figname
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
 f = datadir.'/'.name.'.dat'
-load datadir.'/'.name.'_labels.gp'
 set logscale x
 set xrange [wmin:wmax]
 set format x (tex ? '$10^{%T}$' : '10^{%T}')

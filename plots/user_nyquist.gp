@@ -1,15 +1,14 @@
 # plots/user_nyquist.gp -- `hapstab plot nyquist`: the curve G(w) = T H(z) z^-n/(1 - z), z = e^{jwT},
 # 0 < w <= pi/T, of the user's H, whose largest real part is the passivity bound b* of paper 001
 # (45): the line Re = b* (certified) and the maximiser are marked. Im G grows like T H(1)/(wT) as
-# w -> 0 when H(1) != 0; the window is cut (the labels file says below which w).
+# w -> 0 when H(1) != 0; the window is cut (clip_text says below which w).
 # Data: DATA/NAME.dat (index 0 the curve: theta w Re Im; index 1 the maximiser) and
-# DATA/NAME_labels.gp (titles as gnuplot string literals, the window, b*), both by hapstab plot.
+# titles, the window and b* as variables hapstab plot sets (gnuplot -e).
 if (!exists("figname")) figname = 'nyquist'
 name = figname
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
 f = datadir.'/'.name.'.dat'
-load datadir.'/'.name.'_labels.gp'
 set xrange [xmin:xmax]
 set yrange [-ymax:ymax]
 set clip two

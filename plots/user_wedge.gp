@@ -2,15 +2,14 @@
 # user's H at its wedge gain k* = k*_wedge, with the forbidden wedges of the wedge criterion (25) of
 # paper 002 (apex -1, half-angle pi/2 - theta/2 about the negative real axis) at theta = pi/6, pi/3,
 # 5 pi/6 and at the critical theta of (25); the marked points are k* H at those theta and lie outside
-# their wedge (on its edge at the critical theta), as in contact_nyquist. `curve` (labels file) is
+# their wedge (on its edge at the critical theta), as in contact_nyquist. `curve` (a gnuplot -e value) is
 # 'k*H', or 'H' when k*_wedge is infinite or not evaluated (the curve is then H itself).
-# Data: DATA/NAME_wedge.dat and DATA/NAME_wedge_labels.gp, both by hapstab plot.
+# Data: DATA/NAME_wedge.dat; titles, names and limits are variables hapstab plot sets (gnuplot -e).
 if (!exists("figname")) figname = 'nyquist'
 name = figname.'_wedge'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
 f = datadir.'/'.name.'.dat'
-load datadir.'/'.name.'_labels.gp'
 set size ratio -1
 set clip two
 set xrange [xmin:xmax]; set yrange [ymin:ymax]

@@ -1,6 +1,7 @@
 // fuzz-modules: lti
 // fuzz-seeds: tests/fuzz/seeds_expression
 // fuzz-dict: tests/fuzz/expression.dict
+// fuzz-max-len: 131072
 // libFuzzer target: the exact expression parser behind --H, a scene's tf, a --batch line, and
 // the number reader behind --T, --set values and every exact decimal. The first byte picks the
 // options (variable s / z / inferred, T given or not, a parameter K defined or not); the rest is
@@ -25,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (mode & 16) o.parameters["B_1"] = hapstab::rational(-5, 3);
   try {
     const auto tf = hapstab::parse_tf(text, o);
-    if (tf.H.num().degree() > hapstab::limits::degree || tf.H.den().degree() > hapstab::limits::degree) std::abort();
+    if (tf.H.num().degree() > hapstab::limits::model_degree || tf.H.den().degree() > hapstab::limits::model_degree) std::abort();
   } catch (const hapstab::InputError&) {
   }
   try {

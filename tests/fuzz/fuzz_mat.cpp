@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (!m.tf && !m.ss) std::abort();
       if (m.ss && (m.ss->A.rows() > hapstab::limits::state_space_dim || m.ss->A.cols() > hapstab::limits::state_space_dim))
         std::abort();
-      if (m.tf && (m.tf->first.size() > size_t(hapstab::limits::degree) + 1 || m.tf->second.size() > size_t(hapstab::limits::degree) + 1))
+      if (m.tf && (m.tf->first.size() > size_t(hapstab::limits::model_degree) + 1 || m.tf->second.size() > size_t(hapstab::limits::model_degree) + 1))
         std::abort();
     } catch (const hapstab::InputError&) {
     }

@@ -24,6 +24,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/catalogue.hpp"
 #include "hapstab/passivity/friction.hpp"
+#include "hapstab/report/paths.hpp"
 
 namespace {
 
@@ -288,8 +289,12 @@ void print_human(const Outcome& r, const BoundOpts& o) {
 }
 
 int run_batch(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError("--batch: cannot open '" + file + "'");
+  // a regular file of at most 64 MB (not /dev/zero or a FIFO); the files its lines name (--mat)
+  // must lie in its folder, as a scene's files lie in the scene's (docs/security.md)
+  std::istringstream in(report::read_input_file(file, "--batch", 64u << 20));
+  const std::filesystem::path folder = std::filesystem::path(file).parent_path().empty()
+                                           ? std::filesystem::path(".")
+                                           : std::filesystem::path(file).parent_path();
   std::string line;
   int worst = 0, lineno = 0;
   while (std::getline(in, line)) {
@@ -311,6 +316,7 @@ int run_batch(const std::string& file) {
         extras.erase(extras.begin());
       }
       if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "' (one expression per line)");
+      if (!o.tf.mat.empty()) o.tf.mat = cli::input_file_in_folder(folder, "mat", o.tf.mat, "--batch line " + std::to_string(lineno) + ": --mat");
       Outcome r = compute(o);
       j = to_json(r, o.digits);
     } catch (const std::exception& e) {

@@ -112,17 +112,6 @@ std::vector<Sample> sample_curve(F f, Dist dist, double lo, double hi, double st
   return s;
 }
 
-// The strings a script shows (H as the user wrote it: untrusted) as gnuplot literals, plain and
-// LaTeX-escaped for the cairolatex terminal.
-void write_labels(const fs::path& file, const std::vector<std::pair<std::string, std::string>>& text,
-                  const std::vector<std::pair<std::string, double>>& numbers) {
-  auto o = open_data_file(file);
-  o << std::setprecision(17);
-  for (const auto& [k, v] : text)
-    o << k << " = " << report::gnuplot::quote(v) << "\n" << k << "_tex = " << report::gnuplot::quote(report::latex::escape(v)) << "\n";
-  for (const auto& [k, v] : numbers) o << k << " = " << (std::isfinite(v) ? v : 0.0) << "\n";
-}
-
 std::string describe(const Opts& o, const TransferFunction& H) {
   std::string s = !o.tf.H.empty() ? o.tf.H : !o.tf.mat.empty() ? "--mat " + o.tf.mat : H.to_string();
   if (s.size() > 80) s = s.substr(0, 77) + "...";
@@ -141,6 +130,7 @@ struct Result {
   std::optional<double> clip_omega;
   size_t points = 0;
   std::vector<std::string> figures;
+  GnuplotVars labels, wedge_labels;  ///< what the scripts show (H as the user wrote it: untrusted)
 };
 
 double omega_star(const passivity::Bound& b) {
@@ -219,13 +209,13 @@ void nyquist_data(const Opts& o, const TransferFunction& H, const fs::path& data
   if (mark) o_ << res.b.value_double() << " " << f(ws * T).imag() << " " << ws << "\n";
   else o_ << "NaN NaN NaN\n";
   const double bstar = res.b.infinite ? std::nan("") : res.b.value_double();
-  write_labels(datadir / (o.name + "_labels.gp"),
-               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)},
-                {"infinite_note", res.b.infinite ? res.b.where : ""},
-                {"clip_omega_text", res.clip_omega ? to_decimal(exact_rational(*res.clip_omega), 4) : ""}},
-               {{"bstar", bstar}, {"has_bstar", std::isfinite(bstar) ? 1 : 0}, {"has_mark", mark ? 1 : 0},
-                {"ymax", ylim}, {"xmin", std::min(re_lo, std::isfinite(bstar) ? bstar : re_lo) - 0.08 * xw},
-                {"xmax", std::max(re_hi, std::isfinite(bstar) ? bstar : re_hi) + 0.08 * xw}});
+  close_data_file(o_, datadir / (o.name + ".dat"));
+  res.labels = {{{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)},
+                 {"infinite_note", res.b.infinite ? res.b.where : ""},
+                 {"clip_omega_text", res.clip_omega ? to_decimal(exact_rational(*res.clip_omega), 4) : ""}},
+                {{"bstar", bstar}, {"has_bstar", std::isfinite(bstar) ? 1 : 0}, {"has_mark", mark ? 1 : 0},
+                 {"ymax", ylim}, {"xmin", std::min(re_lo, std::isfinite(bstar) ? bstar : re_lo) - 0.08 * xw},
+                 {"xmax", std::max(re_hi, std::isfinite(bstar) ? bstar : re_hi) + 0.08 * xw}}};
 }
 
 void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir, Result& res) {
@@ -254,10 +244,10 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
   db_lo = std::max(db_lo, db_hi - 100);
   res.points = s.size();
   const double ws = omega_star(res.b);
-  write_labels(datadir / (o.name + "_labels.gp"),
-               {{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)}},
-               {{"omega_star", ws}, {"has_mark", std::isfinite(ws) && ws > 0 ? 1 : 0}, {"wmin", pi * 1e-4 / T}, {"wmax", pi / T},
-                {"db_min", db_lo - 5}, {"db_max", db_hi + 5 + 0.05 * (db_hi - db_lo)}});
+  close_data_file(o_, datadir / (o.name + ".dat"));
+  res.labels = {{{"what", describe(o, H)}, {"bstar_text", res.b.infinite ? "inf" : to_decimal(res.b.value, 8)}},
+                {{"omega_star", ws}, {"has_mark", std::isfinite(ws) && ws > 0 ? 1 : 0}, {"wmin", pi * 1e-4 / T}, {"wmax", pi / T},
+                 {"db_min", db_lo - 5}, {"db_max", db_hi + 5 + 0.05 * (db_hi - db_lo)}}};
 }
 
 // k* H(e^{j theta}) z^-n with the forbidden wedges of (25): {Re h + m Im h <= -1 and Re h - m Im h
@@ -265,7 +255,7 @@ void bode_data(const Opts& o, const TransferFunction& H, const fs::path& datadir
 // The wedges (apex -1) are the criterion's for the loop gain k H: at k = k*_wedge the curve touches
 // the wedge of its critical theta, as in contact_nyquist. When k*_wedge is infinite (every k > 0
 // passes) or not evaluated, the curve is H itself (k = 1) and the title says so.
-void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadir) {
+void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadir, Result& res) {
   std::vector<rational> zn(static_cast<size_t>(o.tf.delay) + 1, rational(0));
   zn.back() = 1;
   const TransferFunction Hn = tf(H.num(), H.den() * Polynomial<rational>(std::move(zn)), H.T);  // H z^-n: the loop's H
@@ -312,18 +302,18 @@ void wedge_data(const Opts& o, const TransferFunction& H, const fs::path& datadi
                                                       : "k*_wedge = " + to_decimal(a.wedge.max_gain.value, 6);
   // the curve's name in the legend and on the axes: k*H at the wedge gain, else H
   const std::string curve_name = at_kstar ? "k*H" : "H";
-  write_labels(datadir / (o.name + "_wedge_labels.gp"),
-               {{"what", describe(o, H)}, {"verdict", verdict + (at_kstar ? ": the curve is k*H" : ": the curve is H")},
-                {"curve", curve_name}},
-               {{"xmin", x0}, {"xmax", x1}, {"ymin", y0}, {"ymax", y1}, {"theta_crit", crit}});
+  close_data_file(w, datadir / (o.name + "_wedge.dat"));
+  res.wedge_labels = {{{"what", describe(o, H)}, {"verdict", verdict + (at_kstar ? ": the curve is k*H" : ": the curve is H")},
+                       {"curve", curve_name}},
+                      {{"xmin", x0}, {"xmax", x1}, {"ymin", y0}, {"ymax", y1}, {"theta_crit", crit}}};
 }
 
 // plots/<script>.gp draws DIR/figures/<stem>.<format> from DIR/data/<name>*.
 void draw(const std::string& script, const std::string& name, const std::string& stem, const fs::path& dir,
-          const std::vector<std::string>& formats, Result& res) {
+          const std::vector<std::string>& formats, const GnuplotVars& labels, Result& res) {
   for (const auto& f : formats) {
     // the script reads DIR/data/<name>*.dat: its name comes from --name, passed as `name`
-    run_gnuplot(script, dir / "data", dir / "figures", f, name);
+    run_gnuplot(script, dir / "data", dir / "figures", f, name, labels);
     const std::string ext = f == "tex" ? "tex" : f;
     res.figures.push_back(((f == "tex" ? dir / "figures" / "tex" : dir / "figures") / (stem + "." + ext)).string());
   }
@@ -346,10 +336,10 @@ int run(const Opts& o) {
   res.b = passivity::bound(p, passivity::Method::certified, o.digits);
   if (o.kind == "nyquist") nyquist_data(opt, H, dir / "data", res);
   else bode_data(opt, H, dir / "data", res);
-  draw("user_" + o.kind, opt.name, opt.name, dir, formats, res);
+  draw("user_" + o.kind, opt.name, opt.name, dir, formats, res.labels, res);
   if (o.wedge) {
-    wedge_data(opt, H, dir / "data");
-    draw("user_wedge", opt.name, opt.name + "_wedge", dir, formats, res);
+    wedge_data(opt, H, dir / "data", res);
+    draw("user_wedge", opt.name, opt.name + "_wedge", dir, formats, res.wedge_labels, res);
   }
   nlohmann::json j{{"bound", res.b.decimal},
                    {"omega", res.b.omega ? nlohmann::json(*res.b.omega) : nlohmann::json(nullptr)},

@@ -112,10 +112,11 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
       }
       f << '\n';
     }
+    close_data_file(f, dir / "samples.csv");
   }
   if (r.fine.rows() > 0) {
     const auto& F = r.fine;
-    std::ofstream f(dir / "fine.csv");
+    std::ofstream f = open_data_file(dir / "fine.csv");
     f << report::csv::cell("t [s]");
     for (int j = 0; j < N; ++j)
       f << ',' << report::csv::cell(column_name("x", j, "m")) << ',' << report::csv::cell(column_name("v", j, "m/s"));
@@ -125,6 +126,7 @@ void write_csv(const fs::path& dir, const sim::SimResult& r) {
       for (int j = 0; j < N; ++j) f << ',' << F.x[i * size_t(N) + size_t(j)] << ',' << F.v[i * size_t(N) + size_t(j)];
       f << '\n';
     }
+    close_data_file(f, dir / "fine.csv");
   }
 }
 
@@ -161,7 +163,8 @@ void write_mat_samples(const fs::path& file, const sim::SimResult& r, const rati
 // plot are told apart by dash type.
 void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine) {
   using report::gnuplot::quote;
-  std::ofstream g(dir / "plot.gp");
+  // checked: a plot.gp left in --out that could not be replaced would be run by the user instead
+  std::ofstream g = open_data_file(dir / "plot.gp");
   g << "# Draws the series of `hapstab simulate` (scene " << report::comment(sc.file) << ").\n"
     << "# Run in this folder: gnuplot plot.gp   (or gnuplot -e \"fmt='pdf'\" plot.gp; fmt: png pdf svg tex)\n"
     << "if (!exists(\"fmt\")) fmt = 'png'\n"
@@ -218,6 +221,7 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
       g << "\n";
     }
   }
+  close_data_file(g, dir / "plot.gp");
 }
 
 int run(const Opts& o) {
@@ -281,8 +285,9 @@ int run(const Opts& o) {
   auto j = summary_json(r.summary, sc);
   j["seconds"] = secs;
   {
-    std::ofstream f(dir / "summary.json");
+    std::ofstream f = open_data_file(dir / "summary.json");
     f << j.dump(2) << "\n";
+    close_data_file(f, dir / "summary.json");
   }
   if (o.json) {
     print_json(j);

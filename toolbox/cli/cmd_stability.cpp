@@ -71,8 +71,8 @@ stability::Loop make_loop(const StabilityOpts& o) {
   if (o.T.empty()) throw InputError("--T is required (the sample period)");
   const rational T = cli::option_rational(o.T, "--T");
   if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
-  if (o.delay < 0 || o.delay > limits::bound_degree)
-    throw InputError("--delay must be in [0, " + std::to_string(limits::bound_degree) + "], got " + std::to_string(o.delay));
+  if (o.delay < 0 || o.delay > limits::model_degree)
+    throw InputError("--delay must be in [0, " + std::to_string(limits::model_degree) + "], got " + std::to_string(o.delay));
   if (o.digits < 1 || o.digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(o.digits));
   std::map<std::string, rational> params = cli::parse_sets(o.sets);
   stability::Loop loop;

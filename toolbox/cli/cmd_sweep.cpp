@@ -47,7 +47,9 @@ struct CommandShape {
   bool has_out = false, has_quiet = false;
 };
 
-CommandShape check_command(const Spec& spec, const std::string& file) {
+/// Checks the spec's command and [args] against the registry, and resolves the files [args] name
+/// inside the spec's folder (input_file_in_folder: a spec cannot read /etc/passwd or /dev/zero).
+CommandShape check_command(Spec& spec, const std::string& file) {
   std::vector<std::pair<CLI::App*, Runner>> runners;
   auto app = make_app(runners);
   std::string name;
@@ -56,11 +58,13 @@ CommandShape check_command(const Spec& spec, const std::string& file) {
   if (!cmd || name == "sweep") throw InputError(file + ": command: no command '" + name + "' to sweep");
   if (!cmd->get_option_no_throw("--set") || !cmd->get_option_no_throw("--json"))
     throw InputError(file + ": command: '" + name + "' cannot be swept (it takes no --set NAME=VALUE and --json)");
-  for (const auto& a : spec.args) {
+  for (auto& a : spec.args) {
     if (std::find(reserved_keys.begin(), reserved_keys.end(), a.key) != reserved_keys.end())
       throw InputError(file + ": args." + a.key + ": set by the sweep itself (or writes files): not allowed in a spec");
     if (!cmd->get_option_no_throw("--" + a.key))
       throw InputError(file + ": args." + a.key + ": '" + name + "' has no option --" + a.key);
+    const fs::path folder = fs::path(file).parent_path();
+    a.value = input_file_in_folder(folder.empty() ? "." : folder, a.key, a.value, file + ": args." + a.key);
   }
   return {cmd->get_option_no_throw("--out") != nullptr, cmd->get_option_no_throw("--quiet") != nullptr};
 }
@@ -151,7 +155,7 @@ Spec load_spec(const std::string& path) {
 int run(const RunOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const std::string text = study::read_spec_file(o.spec);
-  const Spec spec = study::parse_spec(text, o.spec);
+  Spec spec = study::parse_spec(text, o.spec);
   const CommandShape shape = check_command(spec, o.spec);
   const auto [shard, shards] = parse_shard(o.shard);
   const std::string shard_text = std::to_string(shard) + "/" + std::to_string(shards);

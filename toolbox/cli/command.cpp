@@ -6,8 +6,10 @@
 #include <fstream>
 #include <iostream>
 
+#include "cli/mat_file.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/paths.hpp"
 
 namespace hapstab::cli {
 
@@ -46,6 +48,19 @@ std::filesystem::path output_folder(const std::string& dir, const std::string& o
   }
   fs::remove(probe, ec);
   return dir;
+}
+
+const std::vector<std::string>& input_file_options() {
+  static const std::vector<std::string> names{"scene", "ss", "mat"};
+  return names;
+}
+
+std::string input_file_in_folder(const std::filesystem::path& folder, const std::string& option,
+                                 const std::string& value, const std::string& what) {
+  const auto& names = input_file_options();
+  if (std::find(names.begin(), names.end(), option) == names.end()) return value;
+  const auto [file, vars] = option == "mat" ? split_mat_spec(value) : std::pair{value, std::string()};
+  return report::input_file_inside(folder, file, what, 64u << 20).string() + vars;
 }
 
 namespace {

@@ -90,6 +90,20 @@ std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets)
 /// a file can be written in it; InputError (exit 2) naming the option otherwise.
 std::filesystem::path output_folder(const std::string& dir, const std::string& option);
 
+/// The options that name a file hapstab reads: "scene", "ss", "mat" (without "--"; --batch and
+/// the spec itself are the files these are named in). tests/cli/test_untrusted.cpp checks that
+/// every option whose help says it reads a file is here.
+const std::vector<std::string>& input_file_options();
+
+/// The value of option `option` (without "--") as named by an untrusted file in `folder` (a sweep
+/// spec's [args], a --batch line): for an option of input_file_options(), the file must be inside
+/// `folder` under the rule of the files a scene names (report::input_file_inside: relative, no
+/// "..", no link out, a regular file of at most 64 MB), and the value returned names it by its
+/// resolved path (for --mat FILE:VAR, the FILE part); any other option's value is returned as is.
+/// InputError naming `what` otherwise.
+std::string input_file_in_folder(const std::filesystem::path& folder, const std::string& option,
+                                 const std::string& value, const std::string& what);
+
 /// Prints JSON (2-space indented) to stdout (or into run_in_process's capture on its thread).
 void print_json(const nlohmann::json& j);
 

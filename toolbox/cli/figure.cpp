@@ -1,5 +1,8 @@
 #include "cli/figure.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <set>
@@ -44,8 +47,23 @@ fs::path self_exe() {
   return p;
 }
 
+std::string GnuplotVars::assignments() const {
+  auto name = [](const std::string& n) {
+    const bool ok = !n.empty() && !std::isdigit(static_cast<unsigned char>(n[0])) &&
+                    std::all_of(n.begin(), n.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+    if (!ok) throw std::logic_error("GnuplotVars: '" + n + "' is not a gnuplot variable name");
+    return n;
+  };
+  std::ostringstream o;
+  o << std::setprecision(17);
+  for (const auto& [k, v] : text)
+    o << "; " << name(k) << "=" << report::gnuplot::quote(v) << "; " << k << "_tex=" << report::gnuplot::quote(report::latex::escape(v));
+  for (const auto& [k, v] : numbers) o << "; " << name(k) << "=" << (std::isfinite(v) ? v : 0.0);
+  return o.str();
+}
+
 void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::path& figdir, const std::string& format,
-                 const std::string& figname) {
+                 const std::string& figname, const GnuplotVars& extra) {
   const fs::path dir = plots_dir();
   const fs::path outdir = format == "tex" ? figdir / "tex" : figdir;  // cairolatex also writes NAME.pdf
   report::file_component(script, "figure name");
@@ -60,7 +78,8 @@ void run_gnuplot(const std::string& script, const fs::path& datadir, const fs::p
   using report::gnuplot::quote;
   const std::string vars = "plotdir=" + quote(dir.string()) + "; datadir=" + quote(fs::absolute(datadir).string()) +
                            "; outdir=" + quote(fs::absolute(outdir).string()) + "; fmt=" + quote(format) +
-                           (figname.empty() ? "" : "; figname=" + quote(report::file_component(figname, "figure name")));
+                           (figname.empty() ? "" : "; figname=" + quote(report::file_component(figname, "figure name"))) +
+                           extra.assignments();
   report::ProcessOptions po;
   po.time_limit = 600;  // the slowest figure takes a few seconds; a hung gnuplot must not hang the job
   report::run_checked({"gnuplot", "-e", vars, gp.string()}, "gnuplot on " + gp.string() + " (" + format + ")", po);
@@ -85,6 +104,11 @@ std::ofstream open_data_file(const fs::path& p) {
   if (!o) throw InputError("cannot write " + report::text(p.string()));
   o << std::setprecision(12);
   return o;
+}
+
+void close_data_file(std::ofstream& o, const fs::path& p) {
+  o.close();
+  if (!o) throw NumericalError("cannot write " + report::text(p.string()) + " (disk full?)");
 }
 
 std::vector<std::pair<double, double>> clip_to_halfplane(const std::vector<std::pair<double, double>>& P, double nx,
@@ -117,7 +141,8 @@ void draw_figure(const Figure& fig, const fs::path& datadir, const fs::path& out
                  const std::vector<std::string>& formats) {
   fs::create_directories(datadir);
   fig.write_data(datadir);
-  for (const auto& f : formats) run_gnuplot(fig.name, datadir, outdir, f);
+  const GnuplotVars vars = fig.vars ? fig.vars(datadir) : GnuplotVars{};
+  for (const auto& f : formats) run_gnuplot(fig.name, datadir, outdir, f, "", vars);
 }
 
 }  // namespace hapstab::cli

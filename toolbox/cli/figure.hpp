@@ -14,11 +14,23 @@
 
 namespace hapstab::cli {
 
+/// Values a figure script shows (titles, labels, window limits), handed to gnuplot as `-e`
+/// assignments: each text as a gnuplot literal (report::gnuplot::quote) NAME, and LaTeX-escaped
+/// as NAME_tex for the cairolatex terminal; each number as itself (0 when not finite). Strings
+/// from input reach a script this way only, never through a file the script loads.
+struct GnuplotVars {
+  std::vector<std::pair<std::string, std::string>> text;
+  std::vector<std::pair<std::string, double>> numbers;
+  /// "name='...'; name_tex='...'; x=1.5" (names checked: letters, digits, _).
+  std::string assignments() const;
+};
+
 struct Figure {
   const char* name;     ///< plots/<name>.gp draws it; files <name>.png/.pdf/.svg/.tex
   const char* paper;    ///< "000", "001", "002", or "toolbox" for the toolbox's own charts
   const char* caption;  ///< one sentence: what it shows
   void (*write_data)(const std::filesystem::path& datadir);  ///< writes the .dat files the script reads
+  GnuplotVars (*vars)(const std::filesystem::path& datadir) = nullptr;  ///< values the script shows, if any
 };
 
 std::vector<Figure>& figures();
@@ -51,6 +63,8 @@ std::vector<std::string> figure_formats(const std::string& text);
 
 /// A data file of a figure, opened for writing with 12 significant digits (InputError otherwise).
 std::ofstream open_data_file(const std::filesystem::path& p);
+/// Closes a file written through open_data_file; NumericalError when any write to it failed.
+void close_data_file(std::ofstream& o, const std::filesystem::path& p);
 
 /// Writes the data of `fig` into datadir and draws it with gnuplot in each format
 /// (png, pdf, svg, tex) into outdir. Throws NumericalError when gnuplot fails.
@@ -59,9 +73,10 @@ void draw_figure(const Figure& fig, const std::filesystem::path& datadir, const 
 
 /// Runs gnuplot on plots/<script>.gp with datadir/outdir/fmt set (for scripts whose data
 /// another step wrote, e.g. bench charts); a non-empty `figname` is passed as the variable
-/// figname (scripts drawing a figure of the user's, whose file name the user picks).
+/// figname (scripts drawing a figure of the user's, whose file name the user picks), and `vars`
+/// as further variables.
 void run_gnuplot(const std::string& script, const std::filesystem::path& datadir, const std::filesystem::path& outdir,
-                 const std::string& format, const std::string& figname = "");
+                 const std::string& format, const std::string& figname = "", const GnuplotVars& vars = {});
 
 /// Polygon P (points in the Nyquist plane) clipped to the half-plane {nx (re + 1) + ny im <= 0}
 /// through -1 (Sutherland-Hodgman): the forbidden regions of paper 002's criteria in a window.

@@ -121,7 +121,7 @@ class MatReader {
     if (v->rank != 2 || !v->dims) throw InputError(where + ": has " + std::to_string(v->rank) + " dimensions, expected a matrix");
     const std::size_t r = v->dims[0], c = v->dims[1];
     const auto dim = static_cast<std::size_t>(limits::state_space_dim);
-    const auto len = static_cast<std::size_t>(limits::degree) + 1;
+    const auto len = static_cast<std::size_t>(limits::model_degree) + 1;
     const std::string size = std::to_string(r) + "x" + std::to_string(c);
     switch (v->class_type) {
       case MAT_C_DOUBLE:
@@ -247,15 +247,25 @@ bool is_name(const std::string& s) {
 
 }  // namespace
 
-MatModel read_mat_model(const std::string& spec, const std::string& option) {
+std::pair<std::string, std::string> split_mat_spec(const std::string& spec) {
   // FILE:SPEC when what follows the last ':' is one or two MATLAB names, else FILE alone
-  std::string file = spec, var1, var2;
   const auto colon = spec.rfind(':');
   if (colon != std::string::npos) {
     const std::string tail = spec.substr(colon + 1);
     const auto comma = tail.find(',');
     const std::string a = tail.substr(0, comma), b = comma == std::string::npos ? "" : tail.substr(comma + 1);
-    if (is_name(a) && (comma == std::string::npos || is_name(b))) file = spec.substr(0, colon), var1 = a, var2 = b;
+    if (is_name(a) && (comma == std::string::npos || is_name(b))) return {spec.substr(0, colon), spec.substr(colon)};
+  }
+  return {spec, ""};
+}
+
+MatModel read_mat_model(const std::string& spec, const std::string& option) {
+  const auto [file, tail] = split_mat_spec(spec);
+  std::string var1, var2;
+  if (!tail.empty()) {
+    const auto comma = tail.find(',');
+    var1 = tail.substr(1, comma == std::string::npos ? std::string::npos : comma - 1);
+    var2 = comma == std::string::npos ? "" : tail.substr(comma + 1);
   }
   if (file.empty()) throw InputError(option + ": expected FILE, FILE:VAR or FILE:NUM,DEN");
   MatReader r(file, option + " " + report::text(file));

@@ -40,6 +40,10 @@ struct MatModel {
   std::optional<StateSpace<double>> ss;
 };
 
+/// `spec` split into the file and ":VAR" / ":NUM,DEN" (empty when `spec` names the file alone):
+/// FILE:SPEC when what follows the last ':' is one or two MATLAB names, else FILE alone.
+std::pair<std::string, std::string> split_mat_spec(const std::string& spec);
+
 /// Reads `spec` ("FILE", "FILE:VAR" or "FILE:NUM,DEN") of option `option` ("--mat").
 MatModel read_mat_model(const std::string& spec, const std::string& option);
 

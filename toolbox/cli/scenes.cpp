@@ -15,6 +15,7 @@
 #include "hapstab/report/paths.hpp"
 #include "hapstab/report/process.hpp"
 #include "hapstab/scene/schema.hpp"
+#include "hapstab/report/toml_limits.hpp"
 
 namespace hapstab::cli {
 
@@ -163,13 +164,17 @@ std::vector<SceneRun> run_scenes(const std::string& paper, const fs::path& outdi
   for (const auto& f : files) {
     toml::table root;
     try {
-      root = toml::parse_file(f.string());
-    } catch (const toml::parse_error& e) {
+      // a regular file of at most 64 MB (not a FIFO, which would block), no deeper than toml++ can take
+      const std::string text = report::read_input_file(f, "the scene", 64u << 20);
+      report::check_toml_depth(text, f.filename().string());
+      root = toml::parse(text, f.string());
+    } catch (const std::exception& e) {
       SceneRun r;
       r.file = f.filename().string();
       r.paper = "toolbox";
       r.ok = false;
-      r.error = std::string("cannot read the scene: ") + std::string(e.description());
+      const auto* pe = dynamic_cast<const toml::parse_error*>(&e);
+      r.error = "cannot read the scene: " + (pe ? std::string(pe->description()) : std::string(e.what()));
       runs.push_back(r);
       continue;
     }

@@ -54,9 +54,9 @@ std::vector<rational> parse_coefficients(const std::string& text, const std::str
     }
     const std::size_t j = s.find_first_of(" ,\t", i);
     const std::string word = s.substr(i, j == std::string::npos ? std::string::npos : j - i);
-    if (c.size() > static_cast<std::size_t>(limits::degree))
-      throw InputError(option + ": more than " + std::to_string(limits::degree + 1) + " coefficients (degree limit " +
-                       std::to_string(limits::degree) + ")");
+    if (c.size() > static_cast<std::size_t>(limits::model_degree))
+      throw InputError(option + ": more than " + std::to_string(limits::model_degree + 1) + " coefficients (degree limit " +
+                       std::to_string(limits::model_degree) + ")");
     c.push_back(parse_rational(word, option + ": coefficient " + std::to_string(c.size() + 1)));
     i = j == std::string::npos ? s.size() : j;
   }
@@ -66,10 +66,10 @@ std::vector<rational> parse_coefficients(const std::string& text, const std::str
 
 TransferFunction tf_from_coefficients(const std::vector<rational>& num, const std::vector<rational>& den,
                                       const rational& T, const std::string& num_name, const std::string& den_name) {
-  const auto too_long = [](const std::vector<rational>& v) { return v.size() > static_cast<std::size_t>(limits::degree) + 1; };
+  const auto too_long = [](const std::vector<rational>& v) { return v.size() > static_cast<std::size_t>(limits::model_degree) + 1; };
   if (too_long(num) || too_long(den))
-    throw InputError((too_long(num) ? num_name : den_name) + ": more than " + std::to_string(limits::degree + 1) +
-                     " coefficients (degree limit " + std::to_string(limits::degree) + ")");
+    throw InputError((too_long(num) ? num_name : den_name) + ": more than " + std::to_string(limits::model_degree + 1) +
+                     " coefficients (degree limit " + std::to_string(limits::model_degree) + ")");
   if (den.empty() || num.empty()) throw InputError((num.empty() ? num_name : den_name) + ": no coefficients");
   if (den.front() == 0)
     throw InputError(den_name + ": the leading coefficient (of z^" + std::to_string(den.size() - 1) +

@@ -43,7 +43,7 @@ rational parse_period(const TfOptions& o, const TfRules& rules);
 
 /// A coefficient list "c0 c1 ...", "[1, -0.5]", "1,1/3 2e-3": exact rationals separated by
 /// spaces and/or commas, optionally inside MATLAB's [ ]. InputError naming `option` when it is
-/// empty, holds a non-number, or has more than limits::degree + 1 entries.
+/// empty, holds a non-number, or has more than limits::model_degree + 1 entries.
 std::vector<rational> parse_coefficients(const std::string& text, const std::string& option);
 
 /// H(z) = num(z)/den(z) from coefficients in descending powers of z (leading zeros of the

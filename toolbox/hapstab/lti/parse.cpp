@@ -43,6 +43,31 @@ std::string excerpt(std::string_view src, size_t column) {
   return (from > 0 ? "..." : "") + std::string(src.substr(from, to - from)) + (to < src.size() ? "..." : "");
 }
 
+// The end of the number starting at i ("12.5", "1e-3"), or i when none starts there.
+size_t number_end(std::string_view s, size_t i) {
+  if (!(std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.')) return i;
+  size_t j = i;
+  while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.')) ++j;
+  // exponent only when 'e' is followed by digits (optionally signed): "1e-3", not "2e"
+  if (j < s.size() && (s[j] == 'e' || s[j] == 'E')) {
+    size_t k = j + 1;
+    if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+    if (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) {
+      while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+      j = k;
+    }
+  }
+  return j;
+}
+
+// The end of the name starting at i (letters, digits, _; not starting with a digit), or i.
+size_t name_end(std::string_view s, size_t i) {
+  if (!(std::isalpha(static_cast<unsigned char>(s[i])) || s[i] == '_')) return i;
+  size_t j = i;
+  while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+  return j;
+}
+
 class Parser {
  public:
   Parser(std::string_view text, const ParseOptions& opt, char var) : src_(text), opt_(opt), var_(var) {
@@ -101,7 +126,7 @@ class Parser {
     const long t = long(p.nonzero_terms());
     if (t == 0) return 0;
     long terms = 1;
-    for (long i = 1; i < t && terms <= long(limits::degree) + 1; ++i)  // C(k+t-1, t-1), capped
+    for (long i = 1; i < t && terms <= long(limits::intermediate_degree) + 1; ++i)  // C(k+t-1, t-1), capped
       terms = terms > (1L << 40) / (k + i) ? (1L << 40) : terms * (k + i) / i;
     terms = std::min(terms, long(p.degree()) * k + 1);
     long log_t = 1;
@@ -110,9 +135,9 @@ class Parser {
     return per_term > (1L << 62) / terms ? (1L << 62) : terms * per_term;
   }
   const RF& checked(const RF& r, const Token& at) {
-    if (max_degree(r) > limits::degree)
+    if (max_degree(r) > limits::intermediate_degree)
       fail(at, "the result has degree " + std::to_string(max_degree(r)) + ", more than the limit of " +
-                   std::to_string(limits::degree));
+                   std::to_string(limits::intermediate_degree));
     const long b = size_bits(r);
     if (b > limits::expression_bits)
       fail(at, "the result's exact coefficients take " + std::to_string(b) + " bits, more than the limit of " +
@@ -133,25 +158,12 @@ class Parser {
         continue;
       }
       size_t col = i + 1;
-      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
-        size_t j = i;
-        while (j < src_.size() && (std::isdigit(static_cast<unsigned char>(src_[j])) || src_[j] == '.')) ++j;
-        // exponent only when 'e' is followed by digits (optionally signed): "1e-3", not "2e"
-        if (j < src_.size() && (src_[j] == 'e' || src_[j] == 'E')) {
-          size_t k = j + 1;
-          if (k < src_.size() && (src_[k] == '+' || src_[k] == '-')) ++k;
-          if (k < src_.size() && std::isdigit(static_cast<unsigned char>(src_[k]))) {
-            while (k < src_.size() && std::isdigit(static_cast<unsigned char>(src_[k]))) ++k;
-            j = k;
-          }
-        }
+      if (const size_t j = number_end(src_, i); j > i) {
         tokens_.push_back({Tok::number, std::string(src_.substr(i, j - i)), col});
         i = j;
         continue;
       }
-      if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-        size_t j = i;
-        while (j < src_.size() && (std::isalnum(static_cast<unsigned char>(src_[j])) || src_[j] == '_')) ++j;
+      if (const size_t j = name_end(src_, i); j > i) {
         tokens_.push_back({Tok::name, std::string(src_.substr(i, j - i)), col});
         i = j;
         continue;
@@ -240,9 +252,9 @@ class Parser {
     if (peek().kind == Tok::caret) fail(peek(), "write (a^b)^c with parentheses: a^b^c is ambiguous");
     // The size of the power is known before it is computed: refuse it before it fills memory.
     const long k = std::abs(n);
-    if (long(max_degree(base)) * k > limits::degree)
+    if (long(max_degree(base)) * k > limits::intermediate_degree)
       fail(caret, "the power has degree " + std::to_string(long(max_degree(base)) * k) + ", more than the limit of " +
-                      std::to_string(limits::degree));
+                      std::to_string(limits::intermediate_degree));
     const long predicted = predicted_power_bits(base.num(), k) + predicted_power_bits(base.den(), k);
     if (predicted > limits::expression_bits)
       fail(caret, "the power's exact coefficients could take up to " + std::to_string(predicted) +
@@ -318,6 +330,21 @@ char infer_variable(std::string_view text, const ParseOptions& opt) {
 
 }  // namespace
 
+std::set<std::string> names_in(std::string_view text) {
+  std::set<std::string> names;
+  for (size_t i = 0; i < text.size();) {
+    if (size_t j = number_end(text, i); j > i) {
+      i = j;
+    } else if (j = name_end(text, i); j > i) {
+      names.emplace(text.substr(i, j - i));
+      i = j;
+    } else {
+      ++i;
+    }
+  }
+  return names;
+}
+
 TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
   if (options.T < 0) throw InputError("sample period T must be > 0, got " + to_decimal(options.T, 17));
   for (const auto& [k, v] : options.parameters) {
@@ -333,6 +360,10 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
     throw InputError(std::string("parameter '") + var + "' clashes with the variable " + var);
   Parser p(text, options, var);
   RF H = p.parse();
+  const int degree = std::max(H.num().degree(), H.den().degree());
+  if (degree > limits::model_degree)
+    throw InputError("expression '" + excerpt(text, 1) + "' has degree " + std::to_string(degree) +
+                     ", more than the limit of " + std::to_string(limits::model_degree) + " for a model");
   TransferFunction out;
   out.H = H;
   out.domain = var == 'z' ? Domain::z : Domain::s;

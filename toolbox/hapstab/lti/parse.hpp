@@ -9,6 +9,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,10 @@ struct ParseOptions {
   rational T = 0;
   std::map<std::string, rational> parameters;
 };
+
+/// The names `text` refers to (parameters, T, the variable), found by the parser's own lexer:
+/// "K*(1e-3 + B_2)" -> {B_2, K}. For resolving parameters in dependency order.
+std::set<std::string> names_in(std::string_view text);
 
 /// Parses `text` into an exact transfer function. Throws InputError on malformed input, an
 /// unknown name, division by zero, or a missing/invalid T.

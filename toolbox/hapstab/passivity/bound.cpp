@@ -39,9 +39,9 @@ BoundProblem with_integer_delay(BoundProblem p) {
 
 void check_problem_size(const BoundProblem& p) {
   const long degree = std::max<long>(p.H.num().degree(), long(p.H.den().degree()) + p.delay);
-  if (degree > limits::bound_degree)
+  if (degree > limits::model_degree)
     throw InputError("the objective of (45) has degree " + std::to_string(degree) +
-                     " (max(deg N, deg D + n)), more than the limit of " + std::to_string(limits::bound_degree) +
+                     " (max(deg N, deg D + n)), more than the limit of " + std::to_string(limits::model_degree) +
                      " (the exact path costs about degree^4: 4 s at 160, 18 s at 200)");
 }
 

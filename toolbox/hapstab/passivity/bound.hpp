@@ -48,7 +48,7 @@ struct BoundProblem {
 /// pole at z = 1 makes b* = +inf (see bound_certified). Throws InputError naming the failed assumption.
 void check_assumptions(const BoundProblem& p);
 /// Throws InputError when the objective's degree max(deg N, deg D + n) exceeds
-/// limits::bound_degree (numeric/limits.hpp); check_assumptions and catalogue::match call it first.
+/// limits::model_degree (numeric/limits.hpp); check_assumptions and catalogue::match call it first.
 void check_problem_size(const BoundProblem& p);
 
 /// p with a fractional delay that is a whole multiple kT moved into the integer delay (n + k): the

@@ -23,4 +23,33 @@ std::string file_component(std::string_view name, const std::string& what);
 std::filesystem::path input_file_inside(const std::filesystem::path& base, std::string_view relative,
                                         const std::string& what, std::uintmax_t max_bytes);
 
+/// The bytes of an input file: a regular file (not a FIFO, a device or a folder; symbolic links
+/// followed) of at most `max_bytes`, checked before it is opened and again while it is read.
+/// Throws InputError naming `what` otherwise.
+std::string read_input_file(const std::filesystem::path& path, const std::string& what, std::uintmax_t max_bytes);
+
+/// A fresh folder only this user can enter (mkdtemp, mode 0700) in $TMPDIR (else /tmp), removed
+/// with everything in it when the object goes. For files hapstab writes and then hands to another
+/// program (gnuplot): nobody else can have put a file there, or replace one.
+class PrivateFolder {
+ public:
+  explicit PrivateFolder(const std::string& prefix);  ///< prefix: "hapstab-plot" -> /tmp/hapstab-plot-XXXXXX
+  ~PrivateFolder();
+  PrivateFolder(const PrivateFolder&) = delete;
+  PrivateFolder& operator=(const PrivateFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// Copies `source` to dir/name, where dir is a folder the user named (created when missing) and
+/// may hold anything: dir itself must not be a symbolic link (refused), and dir/name is written
+/// as a new file (O_EXCL | O_NOFOLLOW) renamed over the old name, so a symbolic link planted at
+/// dir/name is replaced, never followed. Every write is checked. Returns dir/name; InputError
+/// naming `what` when dir is a symbolic link, not a folder or not writable (a read-only mount),
+/// NumericalError when a write fails (disk full).
+std::filesystem::path install_file(const std::filesystem::path& source, const std::filesystem::path& dir,
+                                   const std::string& name, const std::string& what);
+
 }  // namespace hapstab::report

@@ -3,7 +3,9 @@
 
 #include <Eigen/LU>
 
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::sim {
 
@@ -218,6 +220,10 @@ void check_sensors_and_friction(const LoopSpec& spec, int N) {
 ComposedLoop compose(const LoopSpec& spec) {
   if (spec.T <= 0) throw InputError("sample period T must be > 0, got " + spec.T.str());
   if (spec.delay < 0) throw InputError("delay must be >= 0, got " + spec.delay.str());
+  // checked before anything converts t_d / T to an integer (1e30 s wrapped to a negative count)
+  if (spec.delay > spec.T * limits::delay_samples)
+    throw InputError("delay: " + to_decimal(spec.delay / spec.T, 6) + " sample periods (t_d / T), more than the limit of " +
+                     std::to_string(limits::delay_samples));
   const int N = spec.dofs();
   if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
   check_sensors_and_friction(spec, N);

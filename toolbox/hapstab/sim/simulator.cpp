@@ -197,9 +197,11 @@ struct Engine {
   VC xc, xc1;
   VN pos, meas, u, uo, un, w, wbase, v, fh, xa, xb;
   VZ z, Wz;
-  // --- delay ring: u_k stored at slot k % Rn
+  // --- delay ring: u_k stored at slot k % Rn; a force delayed past the run's end is never read,
+  // so the ring holds at most steps + 2 (a delay longer than the run costs no more than the run)
   const long nd, Rn;
   std::vector<VN, Eigen::aligned_allocator<VN>> ring;
+  VN zero_force;  ///< the force before the first delayed one arrives
   // --- exogenous events
   const std::vector<Event> ev;
   size_t next_ev = 0;
@@ -227,7 +229,7 @@ struct Engine {
         nz(n + 2 * N), T(to_real<double>(L.T)), split(sim.f_ > 0), energy(opt.energy), Phi1(sim.p1_.Phi),
         Phi2(sim.p2_.Phi), Gu1(sim.p1_.Gu), Gw1(sim.p1_.Gw), Gu2(sim.p2_.Gu), Gw2(sim.p2_.Gw), Bw(sim.Bw_),
         Cx(sim.Cx_), Cv(sim.Cv_), Cf(sim.Cf_), Dfu(sim.Dfu_), Dfw(sim.Dfw_), Ac(sim.Ac_), Bc(sim.Bc_), Cc(sim.Cc_),
-        Dc(sim.Dc_), nd(sim.nd_), Rn(sim.nd_ + 2), ev(exogenous_events(sp, L.T)), M(opt.substeps),
+        Dc(sim.Dc_), nd(sim.nd_), Rn(std::min(sim.nd_, opt.steps) + 2), ev(exogenous_events(sp, L.T)), M(opt.substeps),
         fine(opt.substeps > 1 && opt.fine_to >= opt.fine_from), ST(R.samples), FT(R.fine), rec(opt.record_every) {
     for (int j = 0; j < N; ++j) {
       W1.emplace_back(S.p1_.W[j]);
@@ -247,6 +249,7 @@ struct Engine {
     }
     initial_state();
     ring.assign(size_t(Rn), VN::Zero(N));
+    zero_force = VN::Zero(N);
     e_port.assign(size_t(N), 0.0);
     e_act.assign(size_t(N), 0.0);
     e_po.assign(size_t(N), 0.0);
@@ -301,7 +304,7 @@ struct Engine {
     pos.noalias() = Cx * s;
     v.noalias() = Cv * s;
     // f_h just after kT: the input active then
-    const VN& ua = split ? ring[slot(k - nd - 1)] : un;  // un: after the passivity controller
+    const VN& ua = split ? (k < nd + 1 ? zero_force : ring[slot(k - nd - 1)]) : un;  // un: after the passivity controller
     fh.noalias() = Cf * s;
     fh.noalias() += Dfu * ua;
     fh.noalias() += Dfw * w;

@@ -325,9 +325,9 @@ Prepared prepare(const Loop& loop) {
   p.exact = p.r == p.den.degree();
   p.wall = wall_polys(loop);
   const long degree = static_cast<long>(loop.delay) + p.wall.L.degree() + p.den.degree();
-  if (degree > limits::bound_degree)
+  if (degree > limits::model_degree)
     throw InputError("the characteristic polynomial would have degree " + std::to_string(degree) +
-                     ", more than the limit of " + std::to_string(limits::bound_degree) + " (delay + wall + device)");
+                     ", more than the limit of " + std::to_string(limits::model_degree) + " (delay + wall + device)");
   const int room = p.wall.L.degree() + loop.delay;
   if (p.wall.A0.degree() > room || p.wall.A1.degree() > room)
     throw InputError("z^-n H(z) is not causal (degree of numerator > degree of denominator + n): the wall "

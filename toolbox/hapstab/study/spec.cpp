@@ -10,6 +10,8 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/paths.hpp"
+#include "hapstab/report/toml_limits.hpp"
 #include "hapstab/study/sha256.hpp"
 
 namespace hapstab::study {
@@ -37,10 +39,21 @@ std::vector<std::pair<std::string, const toml::node*>> in_file_order(const toml:
   return out;
 }
 
-/// An exact number given as a string or an integer (a TOML float is refused: its text is lost).
+/// The bits of q's numerator and denominator together.
+size_t bits_of(const rational& q) {
+  return mpz_sizeinbase(num(q).backend().data(), 2) + mpz_sizeinbase(den(q).backend().data(), 2);
+}
+
+/// An exact number given as a string or an integer (a TOML float is refused: its text is lost),
+/// of at most max_value_bits.
 std::string number_text(const toml::node& n, const std::string& file, const std::string& key) {
   if (auto s = n.as_string()) {
-    if (!try_parse_rational(s->get())) fail(file, key, "'" + s->get() + "' is not an exact number");
+    const auto q = try_parse_rational(s->get());
+    if (!q) fail(file, key, "'" + s->get() + "' is not an exact number");
+    if (bits_of(*q) > max_value_bits)
+      fail(file, key, "'" + s->get().substr(0, 40) + "' has " + std::to_string(bits_of(*q)) +
+                          " bits of numerator and denominator, more than the limit of " + std::to_string(max_value_bits) +
+                          " (about 300 digits)");
     return s->get();
   }
   if (auto i = n.as_integer()) return std::to_string(i->get());
@@ -114,6 +127,18 @@ std::vector<std::string> random_axis(const toml::table& t, const std::string& fi
   return out;
 }
 
+/// The number of values of an axis, from its table alone (nothing generated): values = [...],
+/// points or random. 1 for a malformed axis, which read_axis then refuses by name.
+uint64_t axis_size(const std::string& name, const toml::node& node, const std::string& file) {
+  const toml::table* t = node.as_table();
+  if (!t) return 1;
+  const std::string key = "axes." + name;
+  if (const toml::node* v = t->get("values")) return v->as_array() && !v->as_array()->empty() ? v->as_array()->size() : 1;
+  if (t->get("random")) return static_cast<uint64_t>(integer_in(*t, "random", 1, max_axis_values, file, key));
+  if (t->get("points")) return static_cast<uint64_t>(integer_in(*t, "points", 1, max_axis_values, file, key));
+  return 1;
+}
+
 Axis read_axis(const std::string& name, const toml::node& node, const std::string& file) {
   const std::string key = "axes." + name;
   if (!is_name(name) || name == "index" || name == "error" || name == "exit")
@@ -163,16 +188,22 @@ std::vector<std::string> split_words(const std::string& s) {
 }  // namespace
 
 std::string exact_text(const rational& q) {
-  integer d = den(q), r = d;
-  while (r % 2 == 0) r /= 2;
-  while (r % 5 == 0) r /= 5;
+  const integer d = den(q);
   if (d == 1) return num(q).str();
+  // d = 2^a 5^b r: found by GMP's valuation functions (the loops `while (r % 5 == 0) r /= 5` and
+  // `while (p % d) p *= 10` they replace took time quadratic in the size of d).
+  integer r = d;
+  const mp_bitcnt_t a = mpz_scan1(d.backend().data(), 0);
+  mpz_tdiv_q_2exp(r.backend().data(), r.backend().data(), a);
+  const mp_bitcnt_t b = mpz_remove(r.backend().data(), r.backend().data(), integer(5).backend().data());
   if (r != 1) return q.str();
-  // A terminating decimal: q = m / 10^k exactly for the smallest such k.
-  int k = 0;
-  integer p = 1;
-  while (p % d != 0) p *= 10, ++k;
-  integer m = num(q) * (p / d);
+  // A terminating decimal: q = m / 10^k exactly for the smallest such k = max(a, b),
+  // m = num(q) 2^(k-a) 5^(k-b).
+  const mp_bitcnt_t k = std::max(a, b);
+  integer m = num(q), five;
+  mpz_mul_2exp(m.backend().data(), m.backend().data(), k - a);
+  mpz_ui_pow_ui(five.backend().data(), 5, k - b);
+  m *= five;
   const bool neg = m < 0;
   std::string digits = (neg ? integer(-m) : m).str();
   if (digits.size() <= static_cast<size_t>(k)) digits.insert(0, static_cast<size_t>(k) + 1 - digits.size(), '0');
@@ -189,6 +220,7 @@ uint64_t splitmix64(uint64_t seed, uint64_t k) {
 
 Spec parse_spec(const std::string& text, const std::string& file) {
   if (text.size() > max_spec_bytes) fail(file, "(file)", "larger than 1 MiB");
+  report::check_toml_depth(text, file);  // before toml++, which recurses per level
   toml::table root;
   try {
     root = toml::parse(text, file);
@@ -211,23 +243,28 @@ Spec parse_spec(const std::string& text, const std::string& file) {
   const toml::node* axes = root.get("axes");
   if (!axes || !axes->as_table() || axes->as_table()->empty())
     fail(file, "axes", "missing: at least one axis, e.g. [axes] K = { values = [\"1\", \"2\"] }");
-  for (const auto& [k, v] : in_file_order(*axes->as_table())) {
-    spec.axes.push_back(read_axis(k, *v, file));
-    const uint64_t n = spec.axes.back().values.size();
-    if (spec.points > max_points / n) fail(file, "axes." + k, "the sweep would have more than 10^9 points");
+  // The number of points from the axes' sizes, before any value is generated.
+  const auto axes_in_order = in_file_order(*axes->as_table());
+  for (const auto& [k, v] : axes_in_order) {
+    const uint64_t n = axis_size(k, *v, file);
+    if (spec.points > max_points / n)
+      fail(file, "axes." + k, "the axes up to this one make " + std::to_string(spec.points * n) +
+                                  " points, more than the limit of 10^9 (nothing was generated)");
     spec.points *= n;
+  }
+  size_t text_bytes = 0;
+  for (const auto& [k, v] : axes_in_order) {
+    spec.axes.push_back(read_axis(k, *v, file));
+    for (const auto& value : spec.axes.back().values) text_bytes += value.size();
+    if (text_bytes > max_values_bytes)
+      fail(file, "axes." + k, "the axes' values take " + std::to_string(text_bytes) + " bytes as text, more than the limit of " +
+                                  std::to_string(max_values_bytes));
   }
   return spec;
 }
 
 std::string read_spec_file(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot read the spec file '" + path + "'");
-  std::string text(max_spec_bytes + 1, '\0');
-  f.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<size_t>(f.gcount()));
-  if (text.size() > max_spec_bytes) throw InputError(path + ": larger than 1 MiB");
-  return text;
+  return report::read_input_file(path, "the spec file", max_spec_bytes);
 }
 
 std::vector<std::string> point_values(const Spec& spec, uint64_t index) {

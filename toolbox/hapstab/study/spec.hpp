@@ -49,6 +49,12 @@ struct Spec {
 constexpr size_t max_spec_bytes = 1u << 20;
 constexpr uint64_t max_points = 1000000000;     ///< 10^9 points per sweep
 constexpr uint64_t max_axis_values = 10000000;  ///< 10^7 values per axis
+/// Bits of the numerator and denominator of one exact number of a spec (from, to, values): about
+/// 300 digits. "1e-200000" is 9 bytes of text and 660,000 bits.
+constexpr size_t max_value_bits = 1024;
+/// Bytes of all axis values as text (checked as they are generated; the number of points is
+/// checked from the axes' sizes before that).
+constexpr size_t max_values_bytes = size_t(256) << 20;
 
 /// Parses a spec from its text; `file` names it in messages.
 Spec parse_spec(const std::string& text, const std::string& file);
