@@ -145,7 +145,7 @@ TEST(UntrustedFolders, SpecArgsReadOnlyFilesInsideTheSpecFolder) {
       {"passivity-level", "ss", "/etc/passwd", "is an absolute path"},
       {"passivity-level", "ss", "../elsewhere/secret.json", "climbs out of the scene's folder with '..'"},
       {"simulate", "scene", "/dev/zero", "is an absolute path"},
-      {"multidof analyze", "scene", "missing.toml", "no such file"},
+      {"multidof analyze", "scene", "../missing.toml", "climbs out"},
       {"bound", "mat", "/etc/passwd:num,den", "is an absolute path"},
   };
   for (const auto& c : cases) {
