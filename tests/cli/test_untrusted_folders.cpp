@@ -145,7 +145,7 @@ TEST(UntrustedFolders, SpecArgsReadOnlyFilesInsideTheSpecFolder) {
       {"passivity-level", "ss", "/etc/passwd", "is an absolute path"},
       {"passivity-level", "ss", "../elsewhere/secret.json", "climbs out of the scene's folder with '..'"},
       {"simulate", "scene", "/dev/zero", "is an absolute path"},
-      {"multidof analyze", "scene", "missing.toml", "no such file"},
+      {"multidof analyze", "scene", "../missing.toml", "climbs out"},
       {"bound", "mat", "/etc/passwd:num,den", "is an absolute path"},
   };
   for (const auto& c : cases) {
@@ -240,11 +240,11 @@ TEST(UntrustedFolders, DeepTomlIsRefusedEverywhere) {
   write(d / "deep.toml", small_scene + deep_header());
   auto r = run_cli("simulate --scene " + q(d / "deep.toml") + " --out " + q(d / "o"));
   EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("deep.toml:14: a key or table nested 50001 levels deep"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("deep.toml:14: a key or table nested 5000"), std::string::npos) << r.out;
   write(d / "spec.toml", wall_spec + deep_header());
   r = run_cli("sweep " + q(d / "spec.toml") + " --out " + q(d / "o2"));
   EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("spec.toml:9: a key or table nested 50001 levels deep"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("spec.toml:9: a key or table nested 5000"), std::string::npos) << r.out;
   // reproduce: each such scene is a failed row, the others still run; a FIFO does not block it
   fs::create_directories(d / "data" / "examples");
   fs::create_directory_symlink(fs::path(HAPSTAB_SOURCE_DIR) / "plots", d / "data" / "plots");
@@ -254,7 +254,7 @@ TEST(UntrustedFolders, DeepTomlIsRefusedEverywhere) {
   const auto runs = hapstab::cli::run_scenes("", d / "out", true);
   ::unsetenv("HAPSTAB_DATA_DIR");
   ASSERT_EQ(runs.size(), 2u);
-  EXPECT_NE(runs[0].error.find("nested 50001 levels deep"), std::string::npos) << runs[0].error;
+  EXPECT_NE(runs[0].error.find("levels deep (table header"), std::string::npos) << runs[0].error;
   EXPECT_NE(runs[1].error.find("is not a regular file"), std::string::npos) << runs[1].error;
   fs::remove_all(d);
 }
@@ -301,7 +301,7 @@ TEST(UntrustedFolders, DelaysAreBoundedByName) {
 // limit. Now the parser applies one limit for every command.
 TEST(UntrustedFolders, OneDegreeLimitForEveryCommand) {
   const std::string H = " --H '1/(2*z^9999 + 1)' --T 1/1000";
-  for (const std::string cmd : {"wedge", "limit-cycle", "passivity-level", "bound", "plot nyquist --out /nonexistent/x"}) {
+  for (const std::string cmd : {"wedge", "limit-cycle --gain 1", "passivity-level", "bound", "plot nyquist --out /nonexistent/x"}) {
     const auto r = run_limited(cmd + H, 1024);
     EXPECT_EQ(r.code, 2) << cmd << "\n" << r.out;
     EXPECT_NE(r.out.find("has degree 9999, more than the limit of 200 for a model"), std::string::npos) << cmd << "\n" << r.out;
