@@ -157,6 +157,7 @@ std::vector<Case> catalogue(const std::string& out) {
       {"proofs", "--quiet", {"--quiet=maybe"}, "--quiet"},
       {"proofs", "--json", {"--json=maybe"}, "--json"},
       {"proofs", "--table", {"--table", "/nonexistent.md"}, "--table"},
+      {"proofs", "--print-table", {"--print-table=maybe"}, "--print-table"},
       {"reproduce", "--out", {"--out", "/proc/nope", "--only", "toolbox"}, "--out"},
       {"reproduce", "--only", {"--out", out, "--only", "999"}, "--only"},
       {"reproduce", "--format", {"--out", out, "--format", "gif"}, "--format"},
