@@ -127,7 +127,7 @@ BENCHMARK(BM_zoh_wall)->Args({5000000, 0})->Args({5000000, 1})->Unit(benchmark::
 
 // 2-DOF loop with a 2x2 operator (the example scene).
 void BM_zoh_2dof(benchmark::State& st) {
-  auto sc = scene::load_scene((std::filesystem::path(__FILE__).parent_path().parent_path() / "examples" / "000_two_dof_loop.toml").string());
+  auto sc = scene::load_scene((std::filesystem::path(HAPSTAB_SOURCE_DIR) / "examples" / "000_two_dof_loop.toml").string());
   Simulator sim(sc.loop);
   SimOptions fast;
   fast.steps = st.range(0);
