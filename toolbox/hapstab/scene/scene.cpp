@@ -479,12 +479,11 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
 }
 
 Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  // a regular file of bounded size (not a FIFO, /dev/zero or a folder: docs/security.md), as
+  // reproduce reads its scenes
+  const std::string text = report::read_input_file(path, "the scene file", 64u << 20);
   auto dir = std::filesystem::path(path).parent_path();
-  return parse_scene(ss.str(), path, overrides, dir.empty() ? "." : dir.string());
+  return parse_scene(text, path, overrides, dir.empty() ? "." : dir.string());
 }
 
 }  // namespace hapstab::scene
