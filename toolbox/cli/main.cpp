@@ -9,24 +9,12 @@
 #include "cli/mat_file.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
+#include "hapstab/scene/schema.hpp"  // edit_distance, the one "did you mean" metric
 
 namespace {
 // Messages quote input (a scene's name, an expression): on a terminal a control character in it
 // could move the cursor or retitle the window, so they are printed through report::text.
 std::string shown(const std::exception& e) { return hapstab::report::text(e.what(), true); }
-
-// Optimal string alignment distance (Levenshtein with adjacent transpositions).
-size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (size_t i = 1; i <= a.size(); ++i)
-    for (size_t j = 1; j <= b.size(); ++j) {
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  return d[a.size()][b.size()];
-}
 
 /// The message for a parse error of `hapstab args...` (args without the program name): where a
 /// command is expected and the word given is none (`hapstab boundd`, `hapstab multidof analyse`),
@@ -55,7 +43,7 @@ std::string parse_error_message(const CLI::App& app, const std::vector<std::stri
     std::string best;
     size_t best_d = std::string::npos;
     for (const auto& n : names) {
-      const size_t d = n.rfind(word, 0) == 0 ? 1 : edit_distance(word, n);  // a prefix counts as near
+      const size_t d = n.rfind(word, 0) == 0 ? 1 : hapstab::scene::edit_distance(word, n);  // a prefix counts as near
       if (d < best_d) best_d = d, best = n;
     }
     const std::string where = path == "hapstab" ? "" : " of '" + path.substr(8) + "'";
