@@ -3,7 +3,9 @@
 //
 //   ext_pc_wall   paper 001's wall beyond b* (b = 0.99 b*, operator tuned to wT = pi), simulated
 //                 without and with Hannaford-Ryu's passivity observer/controller: position,
-//                 actuator force (the PC's chatter), human-port energy.
+//                 the wall force commanded and the force applied (the PC cancels the wall's
+//                 force at every sample at which it pushes: applied 0 up to rounding),
+//                 human-port energy.
 //   ext_zwidth    the Z-width of a device of damping b: the walls K + B(z-1)/(Tz) z^-n it
 //                 renders passively (region in the (K, B) plane, n = 0..3, from certified b*)
 //                 beside those it renders stably (mass 0.1 kg; certified stability limit), and
@@ -13,9 +15,12 @@
 #include <complex>
 #include <fstream>
 #include <iomanip>
+#include <stdexcept>
+#include <vector>
 
 #include "cli/figure.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/report/escape.hpp"
 #include "hapstab/scene/scene.hpp"
@@ -28,6 +33,24 @@ using namespace hapstab;
 using namespace hapstab::cli;
 namespace fs = std::filesystem;
 
+// The force the wall commands at each recorded sample (the controller's output on the sampled
+// positions, before the passivity controller): the composed loop's discrete controller run over
+// x(kT). Without the PC it is the applied force; with it, what the PC's damper cancelled.
+std::vector<double> wall_force(const sim::LoopSpec& spec, const sim::SampleTrace& s) {
+  if (spec.delay != 0 || !spec.contact.empty() || !spec.quantizers.empty() || s.N != 1)
+    throw std::logic_error("ext_pc_wall: the wall force is rebuilt for one DOF without delay, contact or encoder");
+  const StateSpace<double> c = sim::compose(spec).controller.cast<double>();
+  Vec<double> xc = Vec<double>::Zero(c.states());
+  std::vector<double> u(s.rows());
+  for (size_t k = 0; k < s.rows(); ++k) {
+    Vec<double> y(1);
+    y(0) = s.x[k];
+    u[k] = (c.C * xc + c.D * y)(0);
+    xc = c.A * xc + c.B * y;
+  }
+  return u;
+}
+
 void write_pc_wall(const fs::path& dir) {
   auto sc = scene::load_scene((examples_dir() / "001_tightness_below.toml").string());
   for (const bool on : {false, true}) {
@@ -37,13 +60,25 @@ void write_pc_wall(const fs::path& dir) {
     so.steps = sc.simulate.steps;
     so.max_velocity = sc.simulate.max_velocity;
     const sim::SimResult r = sim::Simulator(spec).run(so);
+    const std::vector<double> uw = wall_force(spec, r.samples);
+    // The rebuilt wall force is the applied force when no PC acts (a check on the rebuild; the
+    // last row, recorded after the last period, holds the force of the period before it).
+    for (size_t k = 0; !on && k + 1 < uw.size(); ++k)
+      if (std::fabs(uw[k] - r.samples.u[k]) > 1e-9 * (std::fabs(uw[k]) + 1e-12))
+        throw NumericalError("ext_pc_wall: the rebuilt wall force differs from the applied one at t = " +
+                             std::to_string(r.samples.t[k]) + " s");
     std::ofstream f = open_data_file(dir / (std::string("ext_pc_wall_") + (on ? "on" : "off") + ".dat"));
     f << "# " << report::comment(sc.name) << (on ? ", with" : ", without") << " the passivity controller\n"
       << "# trend " << r.summary.trend << ", energy generated " << r.summary.energy_generated;
     if (on) f << ", PC dissipated " << r.summary.pc_dissipated[0] << " J at " << r.summary.pc_active << " samples";
-    f << "\n# t [s]  x [m]  u (actuator force) [N]  int f_h v dt [J]\n";
-    for (size_t i = 0; i < r.samples.rows(); ++i)
-      f << r.samples.t[i] << ' ' << r.samples.x[i] << ' ' << r.samples.u[i] << ' ' << r.samples.e_port[i] << '\n';
+    f << "\n# t [s]  x [m]  u (actuator force applied, after the PC) [N]  int f_h v dt [J]  "
+         "wall force commanded (before the PC) [N]\n"
+         "# (the last row is recorded after the last period: u is the force held over it, no wall force: NaN)\n";
+    for (size_t i = 0; i < r.samples.rows(); ++i) {
+      f << r.samples.t[i] << ' ' << r.samples.x[i] << ' ' << r.samples.u[i] << ' ' << r.samples.e_port[i] << ' ';
+      if (i + 1 < r.samples.rows()) f << uw[i] << '\n';
+      else f << "NaN\n";  // recorded after the last period: its u is the force held over that period
+    }
   }
 }
 
@@ -128,7 +163,8 @@ void write_zwidth(const fs::path& dir) {
 
 const RegisterFigure fig_pc({"ext_pc_wall", "ext",
                              "A wall beyond b* (b = 0.99 b*, operator tuned to wT = pi) without and with the "
-                             "Hannaford-Ryu passivity controller: position, force chatter, port energy",
+                             "Hannaford-Ryu passivity controller: position, the wall force commanded and the force applied (the PC "
+                             "cancels it), port energy",
                              &write_pc_wall});
 const RegisterFigure fig_zwidth({"ext_zwidth", "ext",
                                  "Z-width of a device with b = 2 N s/m, T = 1 ms: the walls K + B(z-1)/(Tz) z^-n it "
