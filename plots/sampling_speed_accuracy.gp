@@ -3,41 +3,74 @@
 # and (44)-naive in double/mp50/mp100 (worst over 64 wT in [1e-8, pi]), the series (34) truncated at
 # N = 10..10^6 (wT = 1.2345), the Euler-Maclaurin accelerated series and the certified enclosure;
 # (right) the accuracy sweep of each double form over wT in [1e-8, pi] in units of eps = 2^-52.
-# Data: bench/chart-sampling OUTDIR (runs bench_sampling). Terminal: fmt = png | pdf | svg | tex.
+# Left: colour = scalar (double, mp50, mp100), marker = closed form; the series and the accelerated
+# series are lines (N or the digits grow to the right). Errors below 1e-110 are exact to the plot.
+# Data: bench/chart-sampling OUTDIR (runs bench_sampling); `timing` (machine, load) from
+# `hapstab figure`. Terminal: fmt = png | pdf | svg | tex.
 name = 'sampling_speed_accuracy'
 if (!exists("plotdir")) plotdir = 'plots'
+wide = 1  # three / two panels: the PDF and LaTeX versions get a two-column canvas
 load plotdir.'/common.gp'
 f = datadir.'/sampling_speed_accuracy.dat'
 g = datadir.'/sampling_sweep.dat'
-set multiplot layout 1,2 title (tex ? '$r(j\omega)$ of paper 001: speed against accuracy' : 'r(j{/Symbol w}) of paper 001: speed against accuracy')
+if (!exists("timing")) { timing = ''; timing_tex = '' }
+# the closed form of a row (column 3) as a marker: (35) (36) (37) (38) (44) (44) naive
+form_pt(s) = (s eq 'eq35' ? 4 : s eq 'eq36' ? 8 : s eq 'eq37' ? 10 : s eq 'eq38' ? 12 : s eq 'eq44' ? 7 : 14)
+set multiplot title (tex ? '$r(j\omega)$ of paper 001: speed against accuracy' : 'r(j{/Symbol w}) of paper 001: speed against accuracy')
+if (strlen(timing) > 0) { set label 99 (tex ? timing_tex : timing) at screen 0.01, screen 0.02 left font note }
 # ---- left: error vs time
+set lmargin at screen 6*emx
+set rmargin at screen 0.36
+set tmargin at screen 1 - 6*emy
+set bmargin at screen 7.5*emy
 set logscale xy
 set format x (tex ? '$10^{%T}$' : '10^{%T}')
 set format y (tex ? '$10^{%T}$' : '10^{%T}')
+set xrange [1:1e9]
+set xtics 100
 set xlabel 'CPU time per evaluation [ns]'
 set ylabel 'relative error of r (componentwise)'
 set yrange [1e-111:10]
-set key bottom right font ',8' spacing 0.9
-set title 'forms x scalar, series (34), accelerated'
-plot f index 0 using 1:2 with points ls 1 pt 7 ps 1.4 title 'closed forms, double', \
-     f index 0 using 1:2:3 with labels font ',7' offset 0,0.7 notitle, \
-     f index 1 using 1:2 with points ls 2 pt 5 ps 1.4 title 'closed forms, mp50', \
-     f index 2 using 1:2 with points ls 3 pt 9 ps 1.4 title 'closed forms, mp100', \
-     f index 3 using 1:2 with linespoints ls 1 pt 6 dt 2 title 'series N=10..1e6, double', \
-     f index 4 using 1:2 with linespoints ls 2 pt 4 dt 2 title 'series N=10..1e6, mp50', \
-     f index 5 using 1:2 with linespoints ls 3 pt 8 dt 2 title 'series N=10..1e6, mp100', \
-     f index 6 using 1:2 with linespoints ls 4 pt 11 title 'accelerated, double', \
-     f index 7 using 1:2 with linespoints ls 5 pt 13 title 'accelerated, mp50 (10..40 digits)', \
-     f index 8 using 1:2 with linespoints ls 6 pt 3 title 'accelerated, mp100 (30..90 digits)', \
-     f index 9 using 1:2 with points ls 7 pt 12 ps 2 title 'certified enclosure (60 digits, width)', \
-     1e-30 with lines ls 8 title '30 digits'
+set ytics 1e-100, 1e20
+set key at screen 0.365, screen 1 - 6*emy top left Left reverse font note spacing 1.0 samplen 1.5
+set title 'time against error'
+plot f index 0 using 1:2:(form_pt(strcol(3))) with points ls 1 pt variable ps 2.0 lw 2 notitle, \
+     f index 1 using 1:2:(form_pt(strcol(3))) with points ls 2 pt variable ps 2.0 lw 2 notitle, \
+     f index 2 using 1:2:(form_pt(strcol(3))) with points ls 3 pt variable ps 2.0 lw 2 notitle, \
+     f index 3 using 1:2 with linespoints ls 1 pt 7 ps 0.6 dt 2 notitle, \
+     f index 4 using 1:2 with linespoints ls 2 pt 7 ps 0.6 dt 2 notitle, \
+     f index 5 using 1:2 with linespoints ls 3 pt 7 ps 0.6 dt 2 notitle, \
+     f index 6 using 1:2 with linespoints ls 1 pt 7 ps 1.0 notitle, \
+     f index 7 using 1:2 with linespoints ls 2 pt 7 ps 1.0 notitle, \
+     f index 8 using 1:2 with linespoints ls 3 pt 7 ps 1.0 notitle, \
+     f index 9 using 1:2 with points lc rgb '#000000' pt 3 ps 2.5 lw 2 notitle, \
+     1e-30 with lines ls 8 lw 2 notitle, \
+     NaN with lines ls 1 lw 8 title 'double', \
+     NaN with lines ls 2 lw 8 title 'mp50', \
+     NaN with lines ls 3 lw 8 title 'mp100', \
+     NaN with points lc rgb '#000000' pt 4 ps 2 lw 2 title '(35)', \
+     NaN with points lc rgb '#000000' pt 8 ps 2 lw 2 title '(36)', \
+     NaN with points lc rgb '#000000' pt 10 ps 2 lw 2 title '(37)', \
+     NaN with points lc rgb '#000000' pt 12 ps 2 lw 2 title '(38)', \
+     NaN with points lc rgb '#000000' pt 7 ps 2 lw 2 title '(44)', \
+     NaN with points lc rgb '#000000' pt 14 ps 2 lw 2 title '(44) naive', \
+     NaN with linespoints lc rgb '#000000' dt 2 pt 7 ps 0.6 title 'series (34), N = 10..10^6', \
+     NaN with linespoints lc rgb '#000000' pt 7 ps 1.0 title 'accelerated series', \
+     NaN with points lc rgb '#000000' pt 3 ps 2.5 lw 2 title 'certified (60 digits, width)', \
+     NaN with lines ls 8 lw 2 title '30 digits'
+unset label 99
 # ---- right: accuracy sweep of the double forms
+set lmargin at screen 0.735 + 4*emx - 0.055
+set rmargin at screen 1 - 1.1*emx
 set xlabel (tex ? '$\omega T$ [rad]' : '{/Symbol w}T [rad]')
 set ylabel (tex ? 'relative error [$\epsilon = 2^{-52}$]' : 'relative error [eps = 2^{-52}]')
 set xrange [1e-8:3.2]
-set yrange [1e-2:1e17]
-set key top right font ',8'
-set title 'double: where each form loses accuracy'
+set xtics 100
+set yrange [1e-2:1e26]
+set ytics 1e-4, 1e4
+unset key
+set key inside top right Left reverse font note spacing 1.0 samplen 1.5
+set title 'double forms against {/Symbol w}T'
 plot g index 0 using 1:3 with lines ls 1 title (tex ? '(35): $1-\cos\omega T$' : '(35): 1 - cos {/Symbol w}T'), \
      g index 1 using 1:3 with lines ls 2 dt 3 title (tex ? '(36): $\cos\omega T-1$' : '(36): cos {/Symbol w}T - 1'), \
      g index 2 using 1:3 with lines ls 3 title '(37): rounded angle', \

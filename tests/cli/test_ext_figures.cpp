@@ -1,16 +1,20 @@
 // The figures of part "ext" (cli/figures_ext.cpp): the Z-width region's closed-form corners
 // (n = 0: K_max = 2b/T at B = 0, B_max = b at K = 0), the stability limit's closed form at B = 0,
-// and the passivity controller's effect.
+// and the passivity controller's effect; and the benchmark charts' timing line (cli/figure.hpp,
+// bench_timing_vars: the machine from the Google Benchmark JSON's context, a warning when the load
+// average exceeded the CPU count, "not recorded" rather than a failure without it).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
 #include "cli/cli_run.hpp"
+#include "cli/figure.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -45,6 +49,12 @@ std::vector<std::vector<double>> block(const fs::path& f, int index) {
   return rows;
 }
 
+std::string timing_of(const hapstab::cli::GnuplotVars& v) {
+  for (const auto& [k, t] : v.text)
+    if (k == "timing") return t;
+  return "(no timing variable)";
+}
+
 }  // namespace
 
 TEST(ExtFigures, ZWidthRegionHasTheClosedFormCorners) {
@@ -74,7 +84,7 @@ TEST(ExtFigures, ZWidthRegionHasTheClosedFormCorners) {
 
 TEST(ExtFigures, PassivityControllerFigureData) {
   const fs::path d = fresh_dir("pc");
-  const auto r = hapstab_test::run_cli("figure ext_pc_wall --format png --out " + d.string());
+  const auto r = hapstab_test::run_cli("figure ext_pc_wall --format png,svg --out " + d.string());
   ASSERT_EQ(r.code, 0) << r.out;
   const auto off = block(d / "data" / "ext_pc_wall_off.dat", 0), on = block(d / "data" / "ext_pc_wall_on.dat", 0);
   ASSERT_EQ(off.size(), on.size());
@@ -89,6 +99,27 @@ TEST(ExtFigures, PassivityControllerFigureData) {
   double early = 0;  // |x| over the first 0.1 s (the impulse starts at x = 0)
   for (size_t i = 0; i < 100; ++i) early = std::max(early, std::fabs(on[i][1]));
   EXPECT_LT(std::fabs(on.back()[1]), 1e-3 * early);  // decays
+  // Column 5, the force the wall commands (before the PC): without the PC it is the applied force;
+  // with it the applied force is 0 up to rounding at every sample where the wall commands one --
+  // the PC cancels the wall, it does not chatter. (The old |u| curve drew that rounding residue,
+  // ~1e-17 N, on a log axis.) The last row has no commanded force (NaN, not read here).
+  size_t commanded = 0, cancelled = 0;
+  for (size_t i = 0; i + 1 < on.size(); ++i) {
+    ASSERT_EQ(on[i].size(), 5u) << "row " << i;
+    ASSERT_EQ(off[i].size(), 5u) << "row " << i;
+    EXPECT_LE(std::fabs(off[i][4] - off[i][2]), 1e-9 * std::fabs(off[i][2])) << "row " << i;
+    if (on[i][4] == 0) continue;
+    ++commanded;
+    if (std::fabs(on[i][2]) <= 1e-12 * std::fabs(on[i][4])) ++cancelled;
+  }
+  EXPECT_GT(commanded, 900u);
+  EXPECT_EQ(cancelled, commanded);
+  EXPECT_EQ(on.back().size(), 4u);
+  // the figure says so, with the count (gnuplot computes it from the data)
+  std::ifstream svg(d / "figures" / "ext_pc_wall.svg");
+  const std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("at " + std::to_string(cancelled) + " of the " + std::to_string(commanded) + " samples"),
+            std::string::npos);
   fs::remove_all(d);
 }
 
@@ -115,5 +146,23 @@ TEST(ExtFigures, SimulateReportsFrictionEventsAndThePassivityController) {
   EXPECT_EQ(j["trend"], "decaying");
   EXPECT_GT(j["pc_active_samples"].get<long>(), 0);
   EXPECT_GT(j["pc_dissipated"][0].get<double>(), 0.0);
+  fs::remove_all(d);
+}
+
+TEST(BenchCharts, TimingLineNamesTheMachineAndWarnsWhenLoaded) {
+  const fs::path d = fresh_dir("benchtiming");
+  std::ofstream(d / "sim_bench.json") << R"({"context": {"date": "2026-11-25T20:23:39+00:00", "num_cpus": 2,
+    "mhz_per_cpu": 2096, "load_avg": [10.9482, 10.4, 8.6]}, "benchmarks": []})";
+  const std::string loaded = timing_of(hapstab::cli::bench_timing_vars("sim", d));
+  EXPECT_NE(loaded.find("timed 2026-11-25 on 2 CPUs at 2096 MHz, load average 10.9"), std::string::npos) << loaded;
+  EXPECT_NE(loaded.find("(loaded:"), std::string::npos) << loaded;
+  std::ofstream(d / "lmi_bench.json") << R"({"context": {"date": "2026-11-25T20:23:39+00:00", "num_cpus": 8,
+    "mhz_per_cpu": 3000, "load_avg": [0.5, 0.4, 0.3]}, "benchmarks": []})";
+  const std::string idle = timing_of(hapstab::cli::bench_timing_vars("lmi", d));
+  EXPECT_NE(idle.find("load average 0.5"), std::string::npos) << idle;
+  EXPECT_EQ(idle.find("(loaded:"), std::string::npos) << idle;
+  EXPECT_EQ(timing_of(hapstab::cli::bench_timing_vars("contact", d)), "timing conditions not recorded");
+  std::ofstream(d / "passivity_bench.json") << "{\"context\": {\"num_cpus\": 2}}";  // no load_avg
+  EXPECT_NE(timing_of(hapstab::cli::bench_timing_vars("passivity", d)).find("not recorded"), std::string::npos);
   fs::remove_all(d);
 }

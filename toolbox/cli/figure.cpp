@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/paths.hpp"
@@ -135,6 +137,28 @@ void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {
     throw FigureSkipped("benchmark program bench_" + bench + " not built next to this hapstab (configure with "
                         "-DHAPSTAB_BENCH=ON and build the target bench_" + bench + ")");
   report::run_checked({script.string(), fs::absolute(datadir).string(), build.string()}, "bench/chart-" + bench);
+}
+
+GnuplotVars bench_timing_vars(const std::string& bench, const fs::path& datadir) {
+  std::string note = "timing conditions not recorded";
+  try {
+    std::ifstream in(datadir / (bench + "_bench.json"));
+    if (in) {
+      const nlohmann::json c = nlohmann::json::parse(in).at("context");
+      const long cpus = c.at("num_cpus").get<long>();
+      const double load = c.at("load_avg").at(0).get<double>();
+      std::ostringstream o;
+      o << std::fixed << std::setprecision(1) << "timed " << c.at("date").get<std::string>().substr(0, 10) << " on "
+        << cpus << " CPUs at " << c.at("mhz_per_cpu").get<long>() << " MHz, load average " << load;
+      if (load > double(cpus)) o << " (loaded: compare the methods, not absolute times)";
+      note = o.str();
+    }
+  } catch (const nlohmann::json::exception&) {
+    note = "timing conditions not recorded (" + bench + "_bench.json unreadable)";
+  }
+  GnuplotVars v;
+  v.text.push_back({"timing", note});
+  return v;
 }
 
 void draw_figure(const Figure& fig, const fs::path& datadir, const fs::path& outdir,

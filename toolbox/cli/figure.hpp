@@ -58,6 +58,11 @@ std::filesystem::path self_exe();
 /// Throws FigureSkipped when the program or the script is not there (an installed hapstab).
 void write_bench_chart_data(const std::string& bench, const std::filesystem::path& datadir);
 
+/// The conditions a bench chart's timings were taken in, for the figure to print: the text
+/// variable `timing` ("timed DATE on N CPUs at F MHz, load average L", and a warning when L > N)
+/// from the Google Benchmark context in DATADIR/<bench>_bench.json ("not recorded" without it).
+GnuplotVars bench_timing_vars(const std::string& bench, const std::filesystem::path& datadir);
+
 /// The formats of a --format list "png,pdf,svg,tex" (InputError naming --format otherwise).
 std::vector<std::string> figure_formats(const std::string& text);
 

@@ -11,19 +11,23 @@ const RegisterFigure sampling({"sampling_speed_accuracy", "toolbox",
                                "r(jw) (paper 001): time per evaluation against relative error for every closed form "
                                "and scalar, the truncated series (34), the accelerated series and the certified "
                                "enclosure; and each double form's error over wT in [1e-8, pi]",
-                               [](const std::filesystem::path& d) { write_bench_chart_data("sampling", d); }});
+                               [](const std::filesystem::path& d) { write_bench_chart_data("sampling", d); },
+                               [](const std::filesystem::path& d) { return bench_timing_vars("sampling", d); }});
 const RegisterFigure passivity({"passivity_speed_accuracy", "toolbox",
                                 "Passivity bound b*: time per case against relative error for the fast path, the "
                                 "certified method at 16/30/100 digits and N-point grids",
-                                [](const std::filesystem::path& d) { write_bench_chart_data("passivity", d); }});
+                                [](const std::filesystem::path& d) { write_bench_chart_data("passivity", d); },
+                                [](const std::filesystem::path& d) { return bench_timing_vars("passivity", d); }});
 const RegisterFigure contact({"contact_speed_accuracy", "toolbox",
                               "Wedge criterion: time per check against the margin's relative error (exact verdict "
                               "with certified margin against grids)",
-                              [](const std::filesystem::path& d) { write_bench_chart_data("contact", d); }});
+                              [](const std::filesystem::path& d) { write_bench_chart_data("contact", d); },
+                              [](const std::filesystem::path& d) { return bench_timing_vars("contact", d); }});
 const RegisterFigure lmi({"lmi_scaling", "toolbox",
                           "LMI layer: solve + exact certificate time against problem size on Theorem 5's "
                           "structure, DSDP, CSDP and the built-in IPM",
-                          [](const std::filesystem::path& d) { write_bench_chart_data("lmi", d); }});
+                          [](const std::filesystem::path& d) { write_bench_chart_data("lmi", d); },
+                          [](const std::filesystem::path& d) { return bench_timing_vars("lmi", d); }});
 const RegisterFigure multidof({"multidof_scaling", "toolbox",
                                "Theorem 5 scaling: analysis time against total DOF and the fraction of random "
                                "environments certified stable, one operator (case i) against one per device (case ii)",
@@ -31,7 +35,8 @@ const RegisterFigure multidof({"multidof_scaling", "toolbox",
 const RegisterFigure sim({"sim_speed_accuracy", "toolbox",
                           "Simulator: steps per second against maximum relative error for exact ZOH, RK4 with n "
                           "substeps and adaptive Odeint on the same run",
-                          [](const std::filesystem::path& d) { write_bench_chart_data("sim", d); }});
+                          [](const std::filesystem::path& d) { write_bench_chart_data("sim", d); },
+                          [](const std::filesystem::path& d) { return bench_timing_vars("sim", d); }});
 
 }  // namespace
 }  // namespace hapstab::cli

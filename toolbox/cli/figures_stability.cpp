@@ -70,7 +70,8 @@ const RegisterFigure vs_passivity({"ext_stability_vs_passivity", "ext",
 const RegisterFigure speed({"ext_stability_speed", "ext",
                             "stability --max: time per call against the requested digits (10..100) for four loops, "
                             "each result a certified enclosure",
-                            [](const std::filesystem::path& d) { write_bench_chart_data("stability", d); }});
+                            [](const std::filesystem::path& d) { write_bench_chart_data("stability", d); },
+                            [](const std::filesystem::path& d) { return bench_timing_vars("stability", d); }});
 
 }  // namespace
 }  // namespace hapstab::cli
