@@ -57,6 +57,9 @@ HAPSTAB_PROOF(ext_friction_closed_forms, "ext", "Friction condition: Abbott-Okam
   int cases = 0;
   bool ok = true;
   std::string bad;
+  // Instances (proof.hpp): every enumerated case is an exact equality, non-trivial; (K, B) = (0, 0)
+  // is skipped for the spring-damper
+  proofs::Instances springs{"(K, Delta, T) cases", 24}, walls{"(n, K, B) cases with (K, B) != (0, 0)", 77};
   for (int K : {1, 50, 1000, 20000})
     for (const rational& D : {rational(1, 1000), rational(1, 4096), rational(3, 7)})
       for (const rational& T : {rational(1, 1000), rational(1, 250)}) {
@@ -69,23 +72,26 @@ HAPSTAB_PROOF(ext_friction_closed_forms, "ext", "Friction condition: Abbott-Okam
                           c.tight;
         ok = ok && good;
         if (!good && bad.empty()) bad = "K = " + std::to_string(K) + ", Delta = " + D.str();
+        springs.count(true);
         ++cases;
       }
   check.claim("ext.friction.abbott_okamura", "A&O 2005", "spring K: b* = KT/2 and f_c* = K Delta/2, both exact; f_c* tight (witness found)",
-              Status::exact, ok, std::to_string(cases) + " (K, Delta, T) cases" + (bad.empty() ? "" : "; first failure " + bad));
+              Status::exact, ok, std::to_string(cases) + " (K, Delta, T) cases" + (bad.empty() ? "" : "; first failure " + bad),
+              {springs});
   cases = 0;
   ok = true;
   for (int n = 0; n <= 6; ++n)
     for (int K : {0, 1000, 20000})
       for (int B : {0, 1, 5, 40}) {
-        if (K == 0 && B == 0) continue;
+        if (!walls.count(K != 0 || B != 0)) continue;
         const rational T(1, 1000), D(1, 2048);
         const FrictionCondition c = friction_condition(spring_damper(rational(K), rational(B), T), n, D);
         ok = ok && c.fc_star == D * (rational(K) / 2 + rational(B) / T) && c.tight;
         ++cases;
       }
   check.claim("ext.friction.spring_damper", "extension", "K + B(z-1)/(Tz) with delay n: f_c* = Delta (K/2 + B/T), independent of n, tight",
-              Status::exact, ok, std::to_string(cases) + " cases, n = 0..6, K in {0, 1000, 20000}, B in {0, 1, 5, 40}");
+              Status::exact, ok, std::to_string(cases) + " cases, n = 0..6, K in {0, 1000, 20000}, B in {0, 1, 5, 40}",
+              {walls});
 }
 
 HAPSTAB_PROOF(ext_friction_sufficiency, "ext", "Friction condition: the energy split behind sufficiency, on random motions") {
@@ -96,6 +102,9 @@ HAPSTAB_PROOF(ext_friction_sufficiency, "ext", "Friction condition: the energy s
   int cases = 0;
   bool ok = true;
   rational worst_ratio = 0;
+  // non-trivial (proof.hpp): a motion that travels, a wall with a tap, and a non-zero
+  // quantization part -- else both sides of the bound are 0
+  proofs::Instances moving{"motions with travel > 0, sum|w_k| > 0 and a non-zero quantization part", 250};
   for (int c = 0; c < 300; ++c) {
     std::vector<rational> w(size_t(len(rng)));
     for (auto& x : w) x = rational(tap(rng));
@@ -117,13 +126,15 @@ HAPSTAB_PROOF(ext_friction_sufficiency, "ext", "Friction condition: the energy s
       quant += ue * dx;
       travel += abs_r(dx);
     }
+    moving.count(l1 * travel > 0 && quant != 0);
     ok = ok && full == lin - quant && abs_r(quant) <= D / 2 * l1 * travel;
     if (l1 * travel > 0) worst_ratio = std::max(worst_ratio, abs_r(quant) / (D / 2 * l1 * travel));
     ++cases;
   }
   check.claim("ext.friction.energy_split", "sufficiency", "wall work = linear part - quantization part, |quantization part| <= (Delta/2) sum|w_k| sum|dx_j|",
               Status::exact, ok, std::to_string(cases) + " random FIR walls and motions; largest ratio to the bound " +
-                                     to_decimal(worst_ratio, 6));
+                                     to_decimal(worst_ratio, 6),
+              {moving});
 }
 
 HAPSTAB_PROOF(ext_friction_necessity, "ext", "Friction condition: the witness motion extracts energy when f_c < f_c*") {
@@ -136,6 +147,8 @@ HAPSTAB_PROOF(ext_friction_necessity, "ext", "Friction condition: the witness mo
   bool ok = true;
   int cases = 0;
   std::ostringstream ev;
+  // non-trivial (proof.hpp): a witness that switches (a constant one does no work)
+  proofs::Instances switching{"(n, b) cases whose witness switches", 15};
   for (int n = 0; n <= 4; ++n) {
     const FrictionCondition c = friction_condition(spring_damper(K, B, T), n, D);
     const rational eps = D / 100000, mid = D * 7 + D / 2;
@@ -147,11 +160,13 @@ HAPSTAB_PROOF(ext_friction_necessity, "ext", "Friction condition: the witness mo
       const rational below = human_work_per_period(x, c.taps, D, T, b, c.fc_star * 99 / 100);
       const rational above = human_work_per_period(x, c.taps, D, T, b, c.fc_star * 101 / 100);
       const rational predicted = switches * (2 * eps * (c.fc_star * 99 / 100 - c.fc_star) + 4 * eps * eps * b / T);
-      ok = ok && c.tight && switches > 0 && below == predicted && below < 0 && above > 0;
+      switching.count(c.tight && switches > 0);
+      ok = ok && below == predicted && below < 0 && above > 0;
       if (b == 10) ev << (n ? ", " : "") << "n = " << n << ": " << to_decimal(below, 4) << " J/period";
       ++cases;
     }
   }
   check.claim("ext.friction.witness_extracts", "necessity", "K + B(z-1)/(Tz), delay n = 0..4: the witness motion's work per period is exactly switches [2 eps (f_c - f_c*) + 4 eps^2 b/T]: energy extracted at f_c = 0.99 f_c*, none at 1.01 f_c*",
-              Status::exact, ok, std::to_string(cases) + " (n, b) cases, eps = Delta/1e5; work per period at b = 10: " + ev.str());
+              Status::exact, ok, std::to_string(cases) + " (n, b) cases, eps = Delta/1e5; work per period at b = 10: " + ev.str(),
+              {switching});
 }

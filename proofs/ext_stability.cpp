@@ -38,6 +38,8 @@ HAPSTAB_PROOF(ext_stability_crossing, "ext", "the crossing polynomials of stabil
   // c0, c1 real; with z = (1 + jt)/(1 - jt), x = cos(theta) = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2):
   // Im(c0 conj c1) = sin(theta) Q(x), Re = R(x), |c1|^2 = S(x), as rational functions of t.
   int cases = 0, ok = 0;
+  // non-trivial (proof.hpp): c0, c1 both non-zero (else every identity reads 0 = 0)
+  proofs::Instances pairs{"pairs with c0 != 0 and c1 != 0", 36};
   const RF one_plus(P{rational(1), rational(0), rational(1)});
   const RF x = RF(P{rational(1), rational(0), rational(-1)}) / one_plus, sin_t = RF(P{rational(0), rational(2)}) / one_plus;
   for (int d0 = 1; d0 <= 6; ++d0)
@@ -46,6 +48,7 @@ HAPSTAB_PROOF(ext_stability_crossing, "ext", "the crossing polynomials of stabil
       for (int i = 0; i <= d0; ++i) a.push_back(rational((i * 7 + d1 * 3) % 11 - 5, 1 + i % 3));
       for (int i = 0; i <= d1; ++i) b.push_back(rational((i * 5 + d0) % 7 - 3 + (i == d1 ? 7 : 0), 2 + i % 2));
       const P c0(a), c1(b);
+      pairs.count(!c0.is_zero() && !c1.is_zero());
       const stability::CirclePolynomials cp = stability::circle_polynomials(c0, c1);
       const int n = std::max(d0, d1);
       const ComplexPolynomial u0 = unit_circle_polynomial(c0, n), u1 = unit_circle_polynomial(c1, n);
@@ -60,7 +63,8 @@ HAPSTAB_PROOF(ext_stability_crossing, "ext", "the crossing polynomials of stabil
   check.claim("ext.stability.crossing", "Im/Re(c0 conj c1)",
               "on |z| = 1, Im(c0 conj c1) = sin(theta) Q(cos theta), Re = R(cos theta), |c1|^2 = S(cos theta) for the "
               "Q, R, S that stability --max isolates",
-              Status::exact, ok == cases, std::to_string(ok) + "/" + std::to_string(cases) + " polynomial pairs (degrees 1..6 by 0..5), identities in Q(t)");
+              Status::exact, ok == cases, std::to_string(ok) + "/" + std::to_string(cases) + " polynomial pairs (degrees 1..6 by 0..5), identities in Q(t)",
+              {pairs});
 }
 
 // The Jury reduction of the pure-mass cubic, symbolically in k = K T^2/(2m) and q = B T/(2m):
@@ -95,10 +99,13 @@ HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stabl
   // 1 - q^2 > k(1+q) + (1-q)^2, i.e. k < 2q(1-q)/(1+q): K < (2B/T)(2m - BT)/(2m + BT).
   int cases = 0, ok = 0, inside = 0;
   std::ostringstream ev;
+  // the claim is proven symbolically; its cross-check against the library skips the (m, B, T)
+  // outside 0 < BT < 2m, where there is no stable K (proof.hpp, Instances)
+  proofs::Instances stable_range{"cross-check (m, B, T) with 0 < BT < 2m", 17};
   for (const rational m : {rational(1, 10), rational(1), rational(5)})
     for (const rational B : {rational(1, 10), rational(2), rational(50)})
       for (const rational T : {rational(1, 1000), rational(1, 100)}) {
-        if (B * T >= 2 * m) continue;
+        if (!stable_range.count(B * T < 2 * m)) continue;
         const rational K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
         stability::Loop loop = stability::mass_damper_wall(m, 0, B, T, 0);
         const stability::MaxGain g = stability::max_gain(loop, 20);
@@ -125,7 +132,7 @@ HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stabl
   check.claim("ext.stability.pure_mass", "Jury, n = 0",
               "device 1/(m s^2), wall K + B(z-1)/(Tz): stable iff 0 < BT < 2m and 0 < K < (2B/T)(2m - BT)/(2m + BT) "
               "(never passive: b = 0 < b* = KT/2 + B)",
-              Status::exact, !proof.empty() && ok == cases, ev.str());
+              Status::exact, !proof.empty() && ok == cases, ev.str(), {stable_range});
 }
 
 HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0: exact limit above 2b/T") {
@@ -134,6 +141,7 @@ HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0
   // With x = bT/m: (1-e)/beta > 2b/T  <=>  f(x) = x - 2 + (2+x)e^{-x} > 0, f(0) = 0, f' = 1 - (1+x)e^{-x} > 0.
   using I = interval<60>;
   int cases = 0, ok = 0;
+  proofs::Instances grid{"(m, b, T) cases, each compared in full", 27};
   for (const rational m : {rational(1, 10), rational(1), rational(10)})
     for (const rational b : {rational(1, 100), rational(1), rational(20)})
       for (const rational T : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
@@ -142,6 +150,7 @@ HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0
         const I K1 = (1 - e) / beta, K2 = 2 * (1 + e) / (alpha - beta);
         const stability::MaxGain g = stability::max_gain(stability::mass_damper_wall(m, b, 0, T, 0), 20);
         ++cases;
+        grid.count(true);
         const bool binds = upper_rational(K1) < lower_rational(K2);  // the complex pair, not z = -1
         const bool agree = g.outcome == Outcome::holds && g.crossing == "complex pair" &&
                            g.enclosure.lo <= upper_rational(K1) && lower_rational(K1) <= g.enclosure.hi;
@@ -153,13 +162,17 @@ HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0
               "pair; z = -1 comes later), and K_max > 2b/T (passivity's limit) since x - 2 + (2+x)e^{-x} > 0",
               Status::certified, ok == cases,
               std::to_string(ok) + "/" + std::to_string(cases) + " (m, b, T): interval closed forms (60 digits) against "
-              "stability --max; both Jury limits and the comparison with 2b/T certified");
+              "stability --max; both Jury limits and the comparison with 2b/T certified",
+              {grid});
 }
 
 HAPSTAB_PROOF(ext_stability_passive_implies_stable, "ext", "passivity => stability on the chart's grid") {
   // At K = K_stab (the first root on |z| = 1) the loop is not passive: b*(K_stab, B, n) >= b. The passive gains
   // {K >= 0 : b*(K, B) < b} form an interval containing 0 (b* is convex in K, b*(0) = B), so they lie below K_stab.
   int cases = 0, ok = 0;
+  // non-trivial (proof.hpp): a finite stability limit and a finite certified b* there (ok == cases
+  // requires both at every point, so all are)
+  proofs::Instances limits{"grid points with a finite K_stab and a finite b*(K_stab)", 156};
   double worst = 1e300, widest = 0;
   std::string worst_at;
   const rational b(1), T(1, 1000);
@@ -174,6 +187,7 @@ HAPSTAB_PROOF(ext_stability_passive_implies_stable, "ext", "passivity => stabili
         p.delay = n;
         const passivity::Bound bs = passivity::bound(p, passivity::Method::certified, 12);
         ++cases;
+        limits.count(g.outcome == Outcome::holds && !bs.infinite && bs.enclosure);
         const bool good = g.outcome == Outcome::holds && !bs.infinite && bs.enclosure && bs.enclosure->lo >= b;
         ok += good;
         const double ratio = bs.enclosure ? to_real<double>(bs.enclosure->lo / b) : 0;
@@ -188,7 +202,7 @@ HAPSTAB_PROOF(ext_stability_passive_implies_stable, "ext", "passivity => stabili
      << worst << " (closest at " << worst_at << "), up to " << widest;
   check.claim("ext.stability.passive_implies_stable", "(45)/(53) vs Schur",
               "every passive wall (b > b*) of the chart is stable: at the stability limit K_stab, b*(K_stab, B, n) >= b",
-              Status::certified, ok == cases, ev.str());
+              Status::certified, ok == cases, ev.str(), {limits});
 }
 
 HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T, against passivity") {
@@ -196,6 +210,7 @@ HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T
   // B adds to the damping for stability and subtracts from it for passivity, and the delay divides by 2n+1.
   int cases = 0, ok = 0;
   double worst = 0;
+  proofs::Instances finite{"(n, B) with a finite K_stab", 12};
   const rational m(1), b(1);
   for (int n = 0; n <= 3; ++n)
     for (const rational B : {rational(0), rational(1, 2), rational(2)}) {
@@ -205,6 +220,7 @@ HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T
       const double err = std::abs(to_real<double>(g.enclosure.lo) / law - 1);
       worst = std::max(worst, err);
       ++cases;
+      finite.count(g.outcome == Outcome::holds);
       ok += g.outcome == Outcome::holds && err < 1e-3;
     }
   std::ostringstream ev;
@@ -212,7 +228,7 @@ HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T
   check.claim("ext.stability.small_T_law", "numeric observation",
               "for small T, K_stab ~ 2(b + B)/((2n + 1) T) (relative error < 1e-3 at T = 1e-5), against passivity's "
               "2(b - B)/T at n = 0: the gap (b + B)/(b - B) grows with B; with delay passivity is not monotone in B",
-              Status::numeric, ok == cases, ev.str());
+              Status::numeric, ok == cases, ev.str(), {finite});
 }
 
 }  // namespace

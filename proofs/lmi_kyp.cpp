@@ -44,16 +44,13 @@ StateSpace<double> random_system(std::mt19937& g, int n, int m) {
 // Lemma 1's level for `sys` against the certified frequency level c (finite, with an enclosure):
 // agreement to 1e-5 rel., and an exact LMI lower bound below the certified upper end.
 void compare_with_lmi(const StateSpace<double>& sys, PassivityKind kind, const PassivityLevel& c, int trial, double& worst,
-                      int& agree, int& certified_lmi, int& consistent, std::ostringstream& bad) {
+                      int& agree, proofs::Instances& exact_lb, int& consistent, std::ostringstream& bad) {
   auto l = passivity_level_lmi(sys, kind, 1);
   const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
   worst = std::max(worst, e);
   agree += l.status == Status::numeric && e < 1e-5;
   const bool below = l.lower_bound && c.enclosure && *l.lower_bound <= c.enclosure->hi;  // exact rationals
-  if (l.lower_bound) {
-    ++certified_lmi;
-    consistent += below;
-  }
+  if (exact_lb.count(l.lower_bound.has_value())) consistent += below;
   if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
     bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
         << to_string(l.status) << " " << l.note << ")]";
@@ -67,6 +64,10 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
   double worst_isp = 0, worst_osp = 0, worst_l2 = 0;
   std::ostringstream bad;
   bad.precision(8);
+  // non-trivial (proof.hpp): OSP trials with a positive frequency-domain level (the only ones
+  // compared); exact LMI lower bounds (the only ones compared with the frequency minimum)
+  proofs::Instances isp{"ISP trials", 24}, osp{"trials with a positive OSP level", 10},
+      lower{"trials with an exact Lemma 1 lower bound", 12};
   for (int trial = 0; trial < 24; ++trial) {
     const int n = 1 + trial % 4, m = 1 + (trial / 4) % 2;
     auto sys = random_system(g, n, m);
@@ -74,6 +75,7 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
     auto l1 = passivity_level_lmi(sys, PassivityKind::isp, 1, trial % 2 ? Backend::csdp : Backend::dsdp);
     auto l2 = passivity_level_lmi(sys, PassivityKind::isp, 2);
     ++n_isp;
+    isp.count(true);
     const double tol = 1e-5 * std::max(1.0, std::abs(f.level));  // strict-threshold + gap tolerance
     const double e1 = std::abs(l1.level - f.level), e2 = std::abs(l2.level - l1.level);
     worst_isp = std::max(worst_isp, e1 / std::max(1.0, std::abs(f.level)));
@@ -83,12 +85,12 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
     if (!(l1.status == Status::numeric && e1 < tol) || !(l2.status == Status::numeric && e2 < tol))
       bad << " [trial " << trial << " n=" << n << " m=" << m << ": freq " << f.level << ", L1 " << l1.level << " ("
           << to_string(l1.status) << " " << l1.note << "), L2 " << l2.level << " (" << to_string(l2.status) << " " << l2.note << ")]";
-    if (l1.lower_bound) {
+    if (lower.count(l1.lower_bound.has_value())) {
       ++certified;
       lb_ok += to_real<double>(*l1.lower_bound) <= f.level + 1e-12 * std::max(1.0, std::abs(f.level));
     }
     auto fo = passivity_level_freq(sys, PassivityKind::osp);
-    if (fo.status == Status::numeric && fo.level > 0) {
+    if (osp.count(fo.status == Status::numeric && fo.level > 0)) {
       ++n_osp;
       auto o1 = passivity_level_lmi(sys, PassivityKind::osp, 1);
       auto o2 = passivity_level_lmi(sys, PassivityKind::osp, 2);
@@ -108,18 +110,22 @@ HAPSTAB_PROOF(lmi_kyp_sweep, "000", "Lemma 1/2 LMI levels = frequency-domain lev
      << " Lemma 1 = Lemma 2 = frequency (worst " << worst_osp << ")" << bad.str();
   check.claim("000.lemma1.kyp_frequency", "Lemma 1, (2)",
               "sup phi, sup delta of the LMI (2) equal the frequency-domain ISP/OSP levels (tolerance 1e-5 rel.)",
-              hapstab::Status::numeric, ok_isp == n_isp && n_osp > 0 && ok_osp == n_osp && lb_ok == certified,
-              ev.str());
+              hapstab::Status::numeric, ok_isp == n_isp && ok_osp == n_osp && lb_ok == certified, ev.str(),
+              {isp, osp, lower});
   check.claim("000.lemma2.levels", "Lemma 2", "Lemma 2 (Schur form in Q) gives the same ISP level as Lemma 1",
-              hapstab::Status::numeric, ok_l2 == n_isp, ev.str());
+              hapstab::Status::numeric, ok_l2 == n_isp, ev.str(), {isp});
 }
 
 HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the certified SISO frequency-domain level") {
   std::mt19937 g(11);
-  int n = 0, agree = 0, consistent = 0, certified_lmi = 0, cert_freq = 0;
+  int n = 0, agree = 0, consistent = 0, cert_freq = 0;
   double worst = 0;
   std::ostringstream bad;
   bad.precision(10);
+  // non-trivial (proof.hpp): trials with a certified level that Lemma 1 is compared with (OSP
+  // only when positive); of those, the ones with an exact LMI lower bound
+  proofs::Instances compared{"certified levels compared with Lemma 1 (ISP, or OSP > 0)", 8},
+      exact_lb{"compared levels with an exact LMI lower bound", 8};
   for (int trial = 0; trial < 16; ++trial) {
     auto sys = random_system(g, 1 + trial % 4, 1);
     const auto kind = trial % 2 ? PassivityKind::osp : PassivityKind::isp;
@@ -129,24 +135,24 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
       continue;  // OSP: 1/G unstable (a zero of G outside the circle) -- the path refuses
     }
     ++cert_freq;
-    if (kind == PassivityKind::osp && !(c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
+    if (!compared.count(kind == PassivityKind::isp || c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
-    compare_with_lmi(sys, kind, c, trial, worst, agree, certified_lmi, consistent, bad);
+    compare_with_lmi(sys, kind, c, trial, worst, agree, exact_lb, consistent, bad);
   }
   std::ostringstream ev;
   ev << cert_freq << " certified frequency levels (20 digits); " << agree << "/" << n
-     << " Lemma 1 levels within 1e-5 rel. (worst " << worst << "); " << consistent << "/" << certified_lmi
+     << " Lemma 1 levels within 1e-5 rel. (worst " << worst << "); " << consistent << "/" << exact_lb.nontrivial
      << " exact LMI lower bounds <= the certified upper end" << bad.str();
   // Two claims: the comparison of exact LMI lower bounds with certified enclosures is a proof;
   // the agreement of the SDP's double level with the certified level (1e-5) is numeric.
   check.claim("000.lemma1.kyp_certified", "Lemma 1, (2)",
               "on random SISO systems every exact Lemma 1 lower bound of the ISP/OSP level lies at or below the upper "
               "end of the certified frequency-domain enclosure (exact comparison)",
-              hapstab::Status::certified, consistent == certified_lmi && certified_lmi >= 8, ev.str());
+              hapstab::Status::certified, consistent == exact_lb.nontrivial, ev.str(), {exact_lb});
   check.claim("000.lemma1.kyp_level_numeric", "Lemma 1, (2)",
               "on the same systems the Lemma 1 ISP/OSP level of the SDP (double) equals the certified frequency-domain "
               "level within 1e-5 relative",
-              hapstab::Status::numeric, n >= 8 && agree == n && bad.str().empty(), ev.str());
+              hapstab::Status::numeric, agree == n && bad.str().empty(), ev.str(), {compared});
 }
 
 
@@ -157,7 +163,9 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
 // exactly, g1 = 1 + z^-1/2, g2 = 1 + (3/4) z^-2: ISP level exactly 1/4 (Re g2 at theta = pi/2).
 HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the certified MIMO frequency-domain level") {
   std::mt19937 g(17);
-  int n = 0, agree = 0, consistent = 0, certified_lmi = 0, cert_freq = 0, tight = 0;
+  int n = 0, agree = 0, consistent = 0, cert_freq = 0, tight = 0;
+  proofs::Instances compared{"certified levels compared with Lemma 1 (ISP, or OSP > 0)", 6},
+      exact_lb{"compared levels with an exact LMI lower bound", 1};
   double worst = 0;
   std::ostringstream bad;
   bad.precision(10);
@@ -176,9 +184,9 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
     }
     ++cert_freq;
     tight += c.enclosure->hi - c.enclosure->lo <= rational(1, 1000000000000LL) * std::max(rational(1), abs(c.enclosure->hi));
-    if (kind == PassivityKind::osp && !(c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
+    if (!compared.count(kind == PassivityKind::isp || c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
-    compare_with_lmi(sys, kind, c, trial, worst, agree, certified_lmi, consistent, bad);
+    compare_with_lmi(sys, kind, c, trial, worst, agree, exact_lb, consistent, bad);
   }
   // issue 33's example
   Mat<rational> A = Mat<rational>::Zero(3, 3), B(3, 2), C(2, 3), D = Mat<rational>::Identity(2, 2);
@@ -190,7 +198,7 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
                        ex.enclosure->hi == rational(1, 4) && std::abs(ex.theta_min - M_PI / 2) < 1e-12;
   std::ostringstream ev;
   ev << cert_freq << " certified MIMO frequency levels, " << tight << " enclosed within 1e-12 (rel.) or exact; " << agree
-     << "/" << n << " Lemma 1 levels within 1e-5 rel. (worst " << worst << "); " << consistent << "/" << certified_lmi
+     << "/" << n << " Lemma 1 levels within 1e-5 rel. (worst " << worst << "); " << consistent << "/" << exact_lb.nontrivial
      << " exact LMI lower bounds <= the certified upper end; issue 33's example: ISP " << ex.value << " ["
      << to_string(ex.status) << "] at theta = " << ex.theta_min << bad.str();
   check.claim("000.lemma1.kyp_certified_mimo", "Lemma 1, (2)",
@@ -198,7 +206,6 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
               "(1e-5 rel.), every exact LMI lower bound lies below the certified enclosure, and R diag(1 + z^-1/2, "
               "1 + (3/4) z^-2) R^T (R a rational rotation) has ISP level exactly 1/4 at theta = pi/2",
               hapstab::Status::certified,
-              n >= 6 && agree == n && consistent == certified_lmi && certified_lmi > 0 && tight == cert_freq && quarter &&
-                  bad.str().empty(),
-              ev.str());
+              agree == n && consistent == exact_lb.nontrivial && tight == cert_freq && quarter && bad.str().empty(), ev.str(),
+              {compared, exact_lb});
 }

@@ -70,6 +70,10 @@ MatQ vcat(std::initializer_list<MatQ> parts) {
 HAPSTAB_PROOF(lmi_lemma1_lemma2_schur, "000", "Lemma 1 <=> Lemma 2: the Schur complement steps in exact arithmetic") {
   std::mt19937 g(20260522);
   int identity_ok = 0, equiv_ok = 0, pd_count = 0, total = 0;
+  // non-trivial (proof.hpp): the equivalence must be met from both sides, on feasible
+  // instances (Lemma 1 holds) and on infeasible ones (it fails)
+  proofs::Instances feasible{"instances where Lemma 1's (2) < 0 holds", 10},
+      infeasible{"instances where it fails", 10}, instances{"random (A, B, C, D, P, Delta, Phi), each identity between non-zero matrices", 60};
   for (int trial = 0; trial < 60; ++trial) {
     const Eigen::Index n = 1 + trial % 3, m = 1 + (trial / 3) % 2;
     MatQ A = rand_q(g, n, n, 1, static_cast<int>(3 * n)), B = rand_q(g, n, m), C = rand_q(g, m, n), D = rand_q(g, m, m);
@@ -111,6 +115,9 @@ HAPSTAB_PROOF(lmi_lemma1_lemma2_schur, "000", "Lemma 1 <=> Lemma 2: the Schur co
     const bool l2s = exact_definiteness(MatQ(S - R * Q * R.transpose())).pd;
     equiv_ok += (l1 == l2) && (l2 == l2s);
     pd_count += l1;
+    feasible.count(l1);
+    infeasible.count(!l1);
+    instances.count(true);
     ++total;
   }
   std::ostringstream ev;
@@ -118,9 +125,9 @@ HAPSTAB_PROOF(lmi_lemma1_lemma2_schur, "000", "Lemma 1 <=> Lemma 2: the Schur co
      << " instances where Lemma 1 (2) < 0, Lemma 2 > 0 and S - RQR' > 0 agree (exact LDL^T; " << pd_count
      << " feasible, " << total - pd_count << " infeasible instances)";
   check.claim("000.lemma1.schur_identity", "(2)", "-M(P) = W - N' blockdiag(P, Delta) N, the first Schur step",
-              hapstab::Status::exact, identity_ok == total, ev.str());
+              hapstab::Status::exact, identity_ok == total, ev.str(), {instances});
   check.claim("000.lemma2.equivalence", "Lemma 2", "Lemma 1's (2) < 0 <=> [[Q^{-1}, R'], [R, S]] > 0 <=> S - R Q R' > 0 at Q = P^{-1}",
-              hapstab::Status::exact, equiv_ok == total && pd_count > 0 && pd_count < total, ev.str());
+              hapstab::Status::exact, equiv_ok == total, ev.str(), {feasible, infeasible});
 }
 
 HAPSTAB_PROOF(lmi_lemma2_typo, "000", "Lemma 2's S: (D+D')/2 - Phi, not + Phi") {

@@ -109,6 +109,9 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
   std::mt19937 g(15);
   bool pieces_exact = true, identity_holds = true;
   int terms_checked = 0, entries_checked = 0;
+  // non-trivial (proof.hpp): a term F_k != 0 rebuilt from its pieces; a Schur entry whose trace
+  // is not 0 (else a formula returning 0 would pass)
+  proofs::Instances terms{"non-zero terms F_k", 20}, entries{"entries with tr(F_k X F_l Z) != 0", 200};
   for (int n : {2, 3, 5}) {
     const MatQ Aq = random_dyadic(g, n, n);
     Eigen::MatrixXd A(n, n);
@@ -131,6 +134,7 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
       MatQ sum = MatQ::Zero(n, n);
       for (const lmi::Factor& f : it->second) sum += exact_rational(f.s) * L.col(f.u) * R.col(f.v).transpose();
       const MatQ reference = exact(Eigen::MatrixXd(term));
+      terms.count(reference != MatQ(MatQ::Zero(n, n)));
       pieces_exact = pieces_exact && sum == reference;
       vars.push_back(k);
       Fk.push_back(reference);
@@ -145,15 +149,16 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
         for (const lmi::Factor& f : lr.factors.at(vars[k]))
           for (const lmi::Factor& h : lr.factors.at(vars[l]))
             formula += exact_rational(f.s) * exact_rational(h.s) * Xt(f.v, h.u) * Zt(h.v, f.u);
+        entries.count(trace != 0);
         identity_holds = identity_holds && formula == trace;
         ++entries_checked;
       }
   }
   check.claim("000.ipm.low_rank_pieces", "(16) first LMI",
               "the rank-one pieces kept for A^T P A - P add up to each term F_k exactly (n = 2, 3, 5)", Status::exact,
-              pieces_exact, std::to_string(terms_checked) + " terms rebuilt from their pieces in rational arithmetic");
+              pieces_exact, std::to_string(terms_checked) + " terms rebuilt from their pieces in rational arithmetic", {terms});
   check.claim("000.ipm.low_rank_schur", "(16) first LMI",
               "tr(F_k X F_l Z) = sum s_f s_g (R_v^T X L_u)(R_v'^T Z L_u') for the pieces of A^T P A - P (lmi/ipm.cpp)",
               Status::exact, identity_holds,
-              std::to_string(entries_checked) + " Schur complement entries, random rational X and Z, exact");
+              std::to_string(entries_checked) + " Schur complement entries, random rational X and Z, exact", {entries});
 }

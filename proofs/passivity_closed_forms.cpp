@@ -123,13 +123,17 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
               "exact), so this proves every T (cross-checked at T = 1/1000, 7/3)");
   // partial fractions 1/((1-z) z^n) = 1/(1-z) + z^-1 + ... + z^-n
   ok = true;
+  // an identity stated for every n, checked at n = 0..12: each n compares two non-zero rational
+  // functions, so each is non-trivial (proof.hpp, Instances)
+  proofs::Instances delays{"delays n", 13};
   for (int n = 0; n <= 12; ++n) {
+    delays.count(true);
     RF rhs = RF(rational(1)) / one_minus_z();
     for (int k = 1; k <= n; ++k) rhs += zpow(-k);
     ok = ok && (RF(rational(1)) / (one_minus_z() * zpow(n))) == rhs;
   }
   check.claim("001.ex4.partial_fractions", "Example 4", "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k", Status::exact, ok,
-              "equal as reduced rational functions of z for n = 0..12");
+              "equal as reduced rational functions of z for n = 0..12", {delays});
   // (52): T/(1-z) (z-1)/(z+1) = -(T/2)[1 - j tan(wT/2)]
   // T is a factor of the left side and of the right: the identity at T = 1 times T is the identity
   // for every T (the other T cross-check it).
@@ -161,23 +165,28 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
   // (53): Re{T H/((1-z) z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT, H = K + B(z-1)/(Tz); linear in (KT, B),
   // so the two basis cases (KT, B) = (1, 0), (0, 1) prove it for every K, B, T.
   ok = true;
+  proofs::Instances basis{"delays n with both basis parts non-zero", 9};
   for (int n = 0; n <= 8; ++n) {
     RF spring = re_t(RF(rational(1)) / (one_minus_z() * zpow(n)));                // KT = 1
     RF damper = re_t(Hm(1, rational(1)) / (one_minus_z() * zpow(n)));             // B = 1 (T = 1)
+    basis.count(!spring.is_zero() && !damper.is_zero());
     ok = ok && spring == RF(rational(1, 2)) * dirichlet(n, false) && damper == RF(rational(-1)) * cos_k(n + 1);
   }
   check.claim("001.eq53", "(53)", "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT", Status::exact, ok,
-              "exact identity in t for n = 0..8 on the basis (KT,B) = (1,0), (0,1) (the expression is linear in KT and B)");
+              "exact identity in t for n = 0..8 on the basis (KT,B) = (1,0), (0,1) (the expression is linear in KT and B)",
+              {basis});
   // Tustin with delay: (KT/2) D_n(wT) - B (-1)^n D_n(wT + pi); n = 1: KT/2 + B + (KT - 2B) cos wT
   ok = true;
   RF tust = RF(P(std::vector<rational>{rational(-2), rational(2)}), P(std::vector<rational>{rational(1), rational(1)}));  // 2(z-1)/(z+1), T = 1
+  proofs::Instances tustin_delays{"delays n with a non-zero damper part", 9};
   for (int n = 0; n <= 8; ++n) {
     RF damper = re_t(tust / (one_minus_z() * zpow(n)));
+    tustin_delays.count(!damper.is_zero());
     ok = ok && damper == RF(rational(n % 2 ? 1 : -1)) * dirichlet(n, true);
   }
   check.claim("001.ex4.tustin_delay", "Example 4",
               "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi)", Status::exact, ok,
-              "exact identity in t for n = 0..8 (damper part; the spring part is (53)'s)");
+              "exact identity in t for n = 0..8 (damper part; the spring part is (53)'s)", {tustin_delays});
   RF n1 = re_t(RF(rational(1)) / (one_minus_z() * zpow(1)));
   RF n1b = re_t(tust / (one_minus_z() * zpow(1)));
   bool ok1 = n1 == RF(rational(1, 2)) + cos_k(1) && n1b == RF(rational(1)) - RF(rational(2)) * cos_k(1);
@@ -193,6 +202,11 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
   std::uniform_int_distribution<int> pick(0, 40);
   int count = 0;
   bool ok = true;
+  // Instances (proof.hpp): H = 0 is skipped; every other H is non-trivial, agrees() failing an
+  // infinite b*. Below, each closed form's instances likewise, and each branch of a closed form
+  // (KT >= 4B or not, tight or bound only) is a family of its own with its minimum.
+  using proofs::Instances;
+  Instances combos{"H != 0", 10};
   for (int trial = 0; trial < 12; ++trial) {
     std::vector<rational> alpha;
     RF H(rational(0));
@@ -202,23 +216,26 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       alpha.push_back(a);
       H += RF(a) * Hm(m, T);
     }
-    if (H.is_zero()) continue;
+    if (!combos.count(!H.is_zero())) continue;
     rational cf = catalogue::backward_difference_sum(alpha, T);
     ok = ok && agrees(bound_certified(prob(H, T)), cf);
     ++count;
   }
   check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0", Status::certified, ok,
-              std::to_string(count) + " random non-negative combinations up to H_4; closed form inside the certified enclosure");
+              std::to_string(count) + " random non-negative combinations up to H_4; closed form inside the certified enclosure",
+              {combos});
   // virtual wall KT/2 + B and with delay n = 1 (both cases, boundary KT = 4B)
   ok = true;
   bool ok1 = true;
   count = 0;
+  Instances walls{"(K, B) not both 0", 23}, stiff{"n = 1 cases with KT >= 4B", 5}, soft{"n = 1 cases with KT < 4B", 5};
   for (rational K : {rational(0), rational(100), rational(1000), rational(4000), rational(20000), rational(100000)})
     for (rational B : {rational(0), rational(1), rational(5), rational(50)}) {
-      if (K == 0 && B == 0) continue;
+      if (!walls.count(K != 0 || B != 0)) continue;
       RF H = RF(K) + RF(B) * Hm(1, T);
       ok = ok && agrees(bound_certified(prob(H, T)), catalogue::virtual_wall(K, B, T));
-      if (B > 0 || K > 0) ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
+      (K * T >= 4 * B ? stiff : soft).count(true);
+      ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
       ++count;
     }
   // exactly on the boundary KT = 4B and just beside it
@@ -226,37 +243,49 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     for (rational eps : {rational(0), rational(1, 1000000), rational(-1, 1000000)}) {
       rational K = 4 * B / T * (1 + eps);
       RF H = RF(K) + RF(B) * Hm(1, T);
+      (K * T >= 4 * B ? stiff : soft).count(true);
       ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
     }
   check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", Status::certified, ok,
-              std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0");
+              std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0", {walls});
   check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B)",
-              Status::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}");
+              Status::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}",
+              {stiff, soft});
   // conservative bound (2n+1)KT/2 + B for n = 0..5 is an upper bound
   ok = true;
+  Instances delayed{"(n, K) cases; below() fails an infinite b*", 12};
   for (int n = 0; n <= 5; ++n)
     for (rational K : {rational(1000), rational(30000)}) {
       RF H = RF(K) + RF(rational(5)) * Hm(1, T);
       Bound b = bound_certified(prob(H, T, n));
+      delayed.count(true);
       ok = ok && below(b, catalogue::delayed_wall_conservative(n, K, rational(5), T));
     }
   check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall", Status::certified, ok,
-              "n = 0..5, K in {1000, 30000}, B = 5");
+              "n = 0..5, K in {1000, 30000}, B = 5", {delayed});
   // H_m z^-n: (2/T)^{m-1}, tight for even n; H_0 z^-n: (2n+1)T/2
   ok = true;
+  Instances hm_tight{"(m, n) where the bound is tight", 5}, hm_bound{"(m, n) where it is an upper bound only", 5},
+      h0{"H_0 delays", 7};
   for (int m = 1; m <= 4; ++m)
     for (int n = 0; n <= 4; ++n) {
       bool tight = false;
       rational v = catalogue::delayed_backward_difference(m, n, T, &tight);
       Bound b = bound_certified(prob(Hm(m, T), T, n));
+      (tight ? hm_tight : hm_bound).count(true);
       ok = ok && (tight ? agrees(b, v) : below(b, v));
     }
-  for (int n = 0; n <= 6; ++n) ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
+  for (int n = 0; n <= 6; ++n) {
+    h0.count(true);
+    ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
+  }
   check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2",
-              Status::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0");
+              Status::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0", {hm_tight, hm_bound, h0});
   // FIR (47)-(49): non-negative and alternating sign structures are tight, others bounded
   ok = true;
   bool okb = true;
+  Instances fir_tight{"non-zero FIRs whose bound is tight (alpha >= 0 or alternating)", 5},
+      fir_bound{"non-zero FIRs with mixed signs (upper bound only)", 3};
   std::uniform_int_distribution<int> sgnd(-20, 20);
   for (int trial = 0; trial < 15; ++trial) {
     int N = 2 + trial % 5;
@@ -270,52 +299,62 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     RF H(rational(0));
     for (int k = 0; k <= N; ++k) H += RF(alpha[k]) * zpow(-k);
     H = H * one_minus_z();
-    if (H.is_zero()) continue;
+    if (H.is_zero()) continue;  // not counted: both families below need H != 0
     BoundProblem p = prob(H, T);
     p.allow_noncausal = true;  // (47) as written has a z^{+1} term
     bool tight = false;
     rational v = catalogue::fir_bound(alpha, T, &tight);
     Bound b = bound_certified(p);
+    (tight ? fir_tight : fir_bound).count(true);
     if (tight) ok = ok && agrees(b, v);
     okb = okb && (tight ? agrees(b, v) : below(b, v));
   }
   check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs",
-              Status::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)");
+              Status::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)",
+              {fir_tight, fir_bound});
   // IIR: T/(1-a), T/(1+a), a -> +-1, a = 1 (52)
   ok = true;
+  Instances iir{"(a, sign) cases", 11};
   for (rational a : {rational(-999999, 1000000), rational(-9, 10), rational(0), rational(1, 2), rational(999999, 1000000)}) {
+    iir.count(true);
+    iir.count(true);
     RF Hp(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{a, rational(1)}));
     ok = ok && agrees(bound_certified(prob(Hp, T)), catalogue::iir_zero_at_one(a, T));
     ok = ok && agrees(bound_certified(prob(RF(rational(-1)) * Hp, T)), catalogue::iir_zero_at_one_neg(a, T));
   }
   RF H52(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)}));
+  iir.count(true);
   ok = ok && agrees(bound_certified(prob(H52, T)), catalogue::iir_zero_at_one(rational(1), T));
   check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2", Status::certified,
-              ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1");
+              ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1", {iir});
   // Tustin wall KT/2 - B, with n = 1 KT/2 + B + |KT - 2B|, with 0 < t_d < T: +inf
   ok = true;
   bool okf = true;
+  Instances tustin{"(K, B, n) cases", 18}, frac{"(K, B, t_d) cases", 27};
   for (rational K : {rational(0), rational(1000), rational(10000)})
     for (rational B : {rational(1, 2), rational(5), rational(50)}) {
       RF H = RF(K) + RF(2 * B / T) * H52;
+      tustin.count(true);
+      tustin.count(true);
       ok = ok && agrees(bound_certified(prob(H, T)), catalogue::tustin_wall(K, B, T));
       ok = ok && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_tustin_n1(K, B, T));
       for (rational td : {T / 100, T / 2, T * 99 / 100}) {
         BoundProblem p = prob(H, T);
         p.frac_delay = td;
         Bound b = bound_certified(p, 16);
+        frac.count(true);
         okf = okf && b.infinite && b.status == Status::exact;
       }
     }
   check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B|", Status::certified, ok,
-              "K in {0, 1000, 10000}, B in {1/2, 5, 50}");
+              "K in {0, 1000, 10000}, B in {1/2, 5, 50}", {tustin});
   check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive)",
-              Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)");
+              Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)", {frac});
   // a fractional delay t_d = (p/q) T made exact (bound.cpp, certified_frac_exact): for H_1 z^-n,
   // Re{T H_1 z^-n e^{-j w t_d}/(1 - z)} = -cos((n + 1 + t_d/T) wT), so b* = 1, attained at
   // w = pi/((n + 1 + t_d/T) T) -- an interior maximiser at an irrational cos(wT/q) for most p/q
   ok = true;
-  int fcount = 0;
+  Instances fractional{"(n, t_d/T) cases", 18};
   for (int n = 0; n <= 2; ++n)
     for (rational tau : {rational(1, 2), rational(1, 3), rational(2, 5), rational(3, 7), rational(5, 4), rational(9, 10)}) {
       BoundProblem p = prob(Hm(1, T), T, n);
@@ -325,21 +364,23 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       const interval<60> w = ipi<60>() / ival<60>((n + 1 + tau) * T, (n + 1 + tau) * T);
       ok = ok && agrees(b, rational(1)) && b.method.find("made exact") != std::string::npos && b.omega_enclosure &&
            b.omega_enclosure->lo <= lower_rational(w) && upper_rational(w) <= b.omega_enclosure->hi;
-      ++fcount;
+      fractional.count(true);
     }
   check.claim("001.eq45.fractional_exact", "(45), Example 3", "with t_d = (p/q) T the objective is rational in cos(wT/q): "
               "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T)", Status::certified, ok,
-              std::to_string(fcount) + " cases, n = 0..2, t_d/T in {1/2, 1/3, 2/5, 3/7, 5/4, 9/10}: 1 inside the certified "
+              std::to_string(fractional.total) + " cases, n = 0..2, t_d/T in {1/2, 1/3, 2/5, 3/7, 5/4, 9/10}: 1 inside the certified "
               "enclosure of b*, and the certified enclosure of the maximiser contains a 60-digit enclosure of "
-              "pi/((n + 1 + t_d/T) T)");
+              "pi/((n + 1 + t_d/T) T)", {fractional});
   // eta (54) adds
   ok = true;
+  Instances etas{"values of eta", 3};
   for (rational eta : {rational(0), rational(1, 10), rational(7)}) {
+    etas.count(true);
     BoundProblem p = prob(RF(rational(1000)) + RF(rational(5)) * Hm(1, T), T);
     p.eta = eta;
     ok = ok && agrees(bound_certified(p), catalogue::virtual_wall(1000, 5, T) + eta);
   }
-  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", Status::certified, ok, "eta in {0, 1/10, 7}");
+  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", Status::certified, ok, "eta in {0, 1/10, 7}", {etas});
 }
 
 HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and b ~ (CN - D)T") {

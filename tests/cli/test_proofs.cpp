@@ -1,6 +1,7 @@
 // tests/cli: the claim table (proofs/README.md) is compared with the claims column by column
 // (`hapstab proofs --table`), and a claimed bound is accepted only from the right end of its
-// enclosure (proofs/proof.hpp) -- issue 30.
+// enclosure and a claim over instances holds only on enough non-trivial ones (proofs/proof.hpp)
+// -- issue 30.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -51,6 +52,46 @@ TEST(ProofBounds, AnUpperBoundIsProvenOnlyByTheUpperEnd) {
   EXPECT_FALSE(proves_upper_bound(Enclosure<rational>{rational(1, 2), rational(1000001, 1000000)}, v));
   EXPECT_TRUE(proves_lower_bound(Enclosure<rational>{rational(1), rational(2)}, v));
   EXPECT_FALSE(proves_lower_bound(Enclosure<rational>{rational(999999, 1000000), rational(2)}, v));
+}
+
+// A claim over instances whose premise never holds (issue 30, item 5: 002.wedge_contains_tsypkin
+// could pass on 40 H none of which satisfied Tsypkin's condition) fails, and its evidence names
+// the counts and the minimum; at the minimum it holds; a failed check stays failed.
+TEST(ProofInstances, TooFewNonTrivialInstancesFailTheClaim) {
+  using hapstab::proofs::Checker;
+  using hapstab::proofs::Instances;
+  auto run = [](long nontrivial, bool check_holds) {
+    Instances tsypkin{"H satisfying Tsypkin's condition", 3};
+    for (long i = 0; i < 40; ++i) tsypkin.count(i < nontrivial);
+    Checker c("002");
+    const bool holds = c.claim("002.wedge_contains_tsypkin", "(25) vs (21)", "Tsypkin => wedge", Status::exact,
+                               check_holds, "0 with Tsypkin but not wedge", {tsypkin});
+    EXPECT_EQ(c.results().size(), 1u);
+    EXPECT_EQ(c.results()[0].holds, holds);
+    return c.results()[0];
+  };
+  const ClaimResult none = run(0, true);  // the implication holds vacuously on every H
+  EXPECT_FALSE(none.holds);
+  EXPECT_EQ(none.id, "002.wedge_contains_tsypkin");
+  EXPECT_NE(none.evidence.find("0 of 40 instances non-trivial (H satisfying Tsypkin's condition), minimum 3: TOO FEW"),
+            std::string::npos)
+      << none.evidence;
+  EXPECT_FALSE(run(2, true).holds);
+  const ClaimResult three = run(3, true);
+  EXPECT_TRUE(three.holds);
+  EXPECT_EQ(three.evidence,
+            "0 with Tsypkin but not wedge; 3 of 40 instances non-trivial (H satisfying Tsypkin's condition), minimum 3");
+  EXPECT_FALSE(run(40, false).holds);
+  // every family must reach its minimum
+  Instances a{"a", 1}, b{"b", 1};
+  a.count(true);
+  b.count(false);
+  Checker c("001");
+  EXPECT_FALSE(c.claim("001.x", "(1)", "s", Status::exact, true, "e", {a, b}));
+  EXPECT_NE(c.results()[0].evidence.find("1 of 1 instances non-trivial (a), minimum 1; 0 of 1 instances non-trivial (b), "
+                                         "minimum 1: TOO FEW"),
+            std::string::npos)
+      << c.results()[0].evidence;
 }
 
 TEST(ProofTable, EveryColumnIsCompared) {
