@@ -277,21 +277,33 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
   // balls at the precision a round needs: its width 10^-(digits+8) per round, plus 64 bits
   std::vector<BallRationalFunction> balls;
   long prec = 0;
-  auto refine = [&](Cand& c, const rational& w, long bits) {
-    if (bits > prec) {
-      prec = bits;
-      balls.clear();
-      for (const auto& f : fs) balls.emplace_back(f, prec);
+  // When a denominator's ball over the interval contains 0 (a small |D|^2 near a pole close to
+  // the unit circle), the root is refined 2^32 times further and the balls get 32 more bits:
+  // D has no root on [0, inf], so this ends.
+  auto refine = [&](Cand& c, rational w, long bits) {
+    for (int tries = 0;; ++tries) {
+      if (bits > prec) {
+        prec = bits;
+        balls.clear();
+        for (const auto& f : fs) balls.emplace_back(f, prec);
+      }
+      if (!c.iv.is_exact()) c.iv = c.p->refine(c.iv, w * std::max(rational(1), c.iv.hi));
+      try {
+        c.v = eval_max(fs, balls, c.iv.lo, c.iv.hi, prec);
+        return;
+      } catch (const NumericalError&) {
+        if (c.iv.is_exact() || tries == 16) throw;
+      }
+      w /= rational(integer(1) << 32);
+      bits += 32;
     }
-    if (!c.iv.is_exact()) c.iv = c.p->refine(c.iv, w * std::max(rational(1), c.iv.hi));
-    c.v = eval_max(fs, balls, c.iv.lo, c.iv.hi, prec);
   };
-  // A coarse pass (roots to ~1e-12, a cheap enclosure of max_i f_i there) drops the candidates
+  // A coarse pass (roots to ~1e-6, a cheap enclosure of max_i f_i there) drops the candidates
   // whose lower bound is above some candidate's upper bound (or the value at infinity): they
   // cannot hold the minimum, and refining them to `digits` would be wasted. The minimum's
   // enclosure is unchanged: a dropped lower bound is above the final upper bound.
   {
-    const rational coarse(1, 1000000000000LL);
+    const rational coarse(1, 1000000);
     rational g = inf_val;
     for (auto& c : cands) {
       refine(c, coarse, 128);

@@ -329,25 +329,6 @@ bool narrow_enough(const Fmpz& L, const Fmpz& R, ulong E, const Fmpz& wa, const 
   return fmpz_cmp(l.get(), r.get()) <= 0;
 }
 
-// r as refined, or [x, x] when the simplest rational x in r (smallest denominator, by continued
-// fractions) is the root: a rational root p/s of q has s | lc(q), and in a narrow bracket it is
-// usually the simplest rational there (a non-dyadic one is never met as a grid point).
-RootInterval exact_if_simple(const FmpzPoly& q, RootInterval r) {
-  fmpq_t l, h, x;
-  fmpq_init(l);
-  fmpq_init(h);
-  fmpq_init(x);
-  flint::set(l, r.lo);
-  flint::set(h, r.hi);
-  fmpq_simplest_between(x, l, h);
-  const rational xr = flint::to_rational(x);
-  fmpq_clear(l);
-  fmpq_clear(h);
-  fmpq_clear(x);
-  if (sign_at(q, xr) == 0) return {xr, xr};
-  return r;
-}
-
 RootInterval refine_integer(const FmpzPoly& q, RootInterval r, const rational& width) {
   if (!(width > 0)) throw InputError("refine_root: width must be positive, got " + width.str());
   if (r.lo > r.hi) throw InputError("refine_root: lo > hi");
@@ -370,9 +351,9 @@ RootInterval refine_integer(const FmpzPoly& q, RootInterval r, const rational& w
   //    is the short piece [lo, L] or [R, hi] (<= 1/8 of the width) and the step repeats.
   Fmpz L, R, HL, HR;
   ulong E = 0;
-  for (bool narrowed = false;; narrowed = true) {
+  for (;;) {
     const rational w = r.hi - r.lo;
-    if (w <= width) return narrowed ? exact_if_simple(q, r) : r;
+    if (w <= width) return r;
     // w = a/b > 2^(bits a - 1 - bits b), so 2^E w >= 8 for E = bits b - bits a + 4
     const long e = static_cast<long>(bmp::msb(den(w))) - static_cast<long>(bmp::msb(num(w))) + 4;
     E = static_cast<ulong>(std::max(0L, e));
@@ -462,7 +443,7 @@ RootInterval refine_integer(const FmpzPoly& q, RootInterval r, const rational& w
       fmpz_swap(HR.get(), Ha.get());
     }
   }
-  return exact_if_simple(q, {dyadic(L, E), dyadic(R, E)});
+  return {dyadic(L, E), dyadic(R, E)};
 }
 
 }  // namespace
