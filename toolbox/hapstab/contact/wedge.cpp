@@ -373,7 +373,7 @@ CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>
   if (mm.value.lo == mm.value.hi)
     r.margin = Certified<rational>::exact_value(mm.value.lo, "exact value at an end point");
   else
-    r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + MPFI enclosure");
+    r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + Arb ball enclosure");
   if (!mm.decided) r.margin.note = "enclosure too wide to decide every requested digit";
   r.theta_at_min = mm.at_infinity ? M_PI : theta_of_u((mm.u.lo + mm.u.hi) / 2);
   r.gain_infinite = max_positive(sides, false);
