@@ -4,9 +4,10 @@
 #include <cmath>
 #include <complex>
 #include <deque>
+#include <memory>
 
 #include "hapstab/numeric/decimal.hpp"
-#include "hapstab/numeric/interval.hpp"
+#include "hapstab/poly/ball_range.hpp"
 #include "hapstab/poly/sturm.hpp"
 #include "hapstab/poly/unit_circle.hpp"
 
@@ -15,7 +16,6 @@ namespace hapstab::contact {
 namespace {
 
 using Poly = QPoly;
-using Ival = interval<100>;
 
 // p(t) even (no odd powers) -> q(u) with p(t) = q(t^2). Throws if p is not even.
 Poly even_to_u(const Poly& p) {
@@ -55,23 +55,16 @@ rational value_at_infinity(const RatFun& f) {
   return f.num().leading() / f.den().leading();
 }
 
-// Enclosure of max_i f_i over [lo, hi].
-Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const rational& lo, const rational& hi) {
+// Enclosure of max_i f_i over [lo, hi]: exact at a point, else ball Horner at prec bits
+Enclosure<rational> eval_max(const std::vector<RatFun>& fs, const std::vector<BallRationalFunction>& balls,
+                             const rational& lo, const rational& hi, long prec) {
   Enclosure<rational> r{rational(0), rational(0)};
-  bool first = true;
-  for (const auto& f : fs) {
-    rational a, b;
-    if (lo == hi) {
-      a = b = f(lo);
-    } else {
-      Ival x = ival<100>(lo, hi);
-      Ival v = f.num()(x) / f.den()(x);
-      a = lower_rational(v);
-      b = upper_rational(v);
-    }
-    if (first || a > r.lo) r.lo = a;
-    if (first || b > r.hi) r.hi = b;
-    first = false;
+  for (size_t i = 0; i < fs.size(); ++i) {
+    Enclosure<rational> v{rational(0), rational(0)};
+    if (lo == hi) v.lo = v.hi = fs[i](lo);
+    else v = balls[i].range(lo, hi, prec);
+    if (i == 0 || v.lo > r.lo) r.lo = v.lo;
+    if (i == 0 || v.hi > r.hi) r.hi = v.hi;
   }
   return r;
 }
@@ -264,14 +257,15 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
   for (const auto& f : fs) require_no_pole(f);
   struct Cand {
     RootInterval iv;
-    Poly p;  // the polynomial the interval isolates a root of (zero for exact points)
+    std::shared_ptr<const RootRefiner> p;  // refines the root iv isolates (null for exact points)
     Enclosure<rational> v;
   };
   std::vector<Cand> cands;
-  cands.push_back({{rational(0), rational(0)}, Poly(), {}});
+  cands.push_back({{rational(0), rational(0)}, nullptr, {}});
   auto add_roots = [&](const Poly& p) {
     if (p.is_zero() || p.degree() <= 0) return;
-    for (const auto& r : nonneg_roots(p)) cands.push_back({r, square_free_part(p), {}});
+    auto ref = std::make_shared<const RootRefiner>(p);  // one square-free part per polynomial
+    for (const auto& r : ref->isolate(rational(0), cauchy_bound(p))) cands.push_back({r, ref, {}});
   };
   for (const auto& f : fs) add_roots(f.derivative().num());
   for (size_t i = 0; i < fs.size(); ++i)
@@ -280,16 +274,48 @@ MinOfMax min_of_max(const std::vector<RatFun>& fs, int digits) {
   rational inf_val = value_at_infinity(fs[0]);
   for (const auto& f : fs) inf_val = std::max(inf_val, value_at_infinity(f));
 
+  // balls at the precision a round needs: its width 10^-(digits+8) per round, plus 64 bits
+  std::vector<BallRationalFunction> balls;
+  long prec = 0;
+  // When a denominator's ball over the interval contains 0 (a small |D|^2 near a pole close to
+  // the unit circle), the root is refined 2^32 times further and the balls get 32 more bits:
+  // D has no root on [0, inf], so this ends.
+  auto refine = [&](Cand& c, rational w, long bits) {
+    for (int tries = 0;; ++tries) {
+      if (bits > prec) {
+        prec = bits;
+        balls.clear();
+        for (const auto& f : fs) balls.emplace_back(f, prec);
+      }
+      if (!c.iv.is_exact()) c.iv = c.p->refine(c.iv, w * std::max(rational(1), c.iv.hi));
+      try {
+        c.v = eval_max(fs, balls, c.iv.lo, c.iv.hi, prec);
+        return;
+      } catch (const NumericalError&) {
+        if (c.iv.is_exact() || tries == 16) throw;
+      }
+      w /= rational(integer(1) << 32);
+      bits += 32;
+    }
+  };
+  // A coarse pass (roots to ~1e-6, a cheap enclosure of max_i f_i there) drops the candidates
+  // whose lower bound is above some candidate's upper bound (or the value at infinity): they
+  // cannot hold the minimum, and refining them to `digits` would be wasted. The minimum's
+  // enclosure is unchanged: a dropped lower bound is above the final upper bound.
+  {
+    const rational coarse(1, 1000000);
+    rational g = inf_val;
+    for (auto& c : cands) {
+      refine(c, coarse, 128);
+      g = std::min(g, c.v.hi);
+    }
+    cands.erase(std::remove_if(cands.begin(), cands.end(), [&](const Cand& c) { return c.v.lo > g; }), cands.end());
+  }
   rational width = rational(1) / bmp::pow(integer(10), static_cast<unsigned>(digits + 8));
   MinOfMax best;
   for (int round = 0; round < 6; ++round) {
-    for (auto& c : cands) {
-      if (!c.iv.is_exact()) {
-        rational scale = std::max(rational(1), c.iv.hi);
-        c.iv = refine_root(c.p, c.iv, width * scale);
-      }
-      c.v = eval_max(fs, c.iv.lo, c.iv.hi);
-    }
+    const long bits = 64 + static_cast<long>(3.33 * (digits + 8) * (round + 1));
+    for (auto& c : cands) refine(c, width, bits);
     Enclosure<rational> g{inf_val, inf_val};
     best.at_infinity = true;
     best.u = {rational(0), rational(0)};
@@ -347,7 +373,7 @@ CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>
   if (mm.value.lo == mm.value.hi)
     r.margin = Certified<rational>::exact_value(mm.value.lo, "exact value at an end point");
   else
-    r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + MPFI enclosure");
+    r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + Arb ball enclosure");
   if (!mm.decided) r.margin.note = "enclosure too wide to decide every requested digit";
   r.theta_at_min = mm.at_infinity ? M_PI : theta_of_u((mm.u.lo + mm.u.hi) / 2);
   r.gain_infinite = max_positive(sides, false);

@@ -13,8 +13,10 @@
 //    touching 0) is found by a gcd. So "holds" is proven, never sampled.
 //  * margin (certified): min over theta of w, as an enclosure: the minimum of a max of smooth
 //    branches lies at an end point, at a critical point of a branch, or where branches cross;
-//    all these are isolated exactly, refined, and the branches evaluated there in interval
-//    arithmetic (MPFI) until `digits` decimals are decided.
+//    all these are isolated exactly (Descartes), refined on dyadic points with exact integer
+//    sign tests (poly/sturm.hpp), and the branches evaluated there in Arb ball arithmetic
+//    (poly/ball_range.hpp) until `digits` decimals are decided; a candidate whose coarse
+//    enclosure lies above another's is dropped before the fine refinement.
 //  * max gain (certified): k* = -1/min_theta max(f+, f-) when the minimum is negative, else +inf
 //    (decided exactly); Tsypkin: the same with R. k*H satisfies the criterion for 0 < k < k*.
 //  * grid_margin: the same quantity on an N-point theta grid in double, kept for comparison.

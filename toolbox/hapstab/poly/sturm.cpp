@@ -251,11 +251,12 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p) {
   return isolate_real_roots(p, -B, B);
 }
 
-std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b) {
-  require_nonzero(p, "isolate_real_roots");
+namespace {
+
+// isolate_real_roots on [a, b] for q, the primitive square-free integer part of p
+std::vector<RootInterval> isolate_integer(const FmpzPoly& q, const rational& a, const rational& b) {
   if (a > b) throw InputError("isolate_real_roots: empty interval [" + a.str() + ", " + b.str() + "]");
   std::vector<RootInterval> out;
-  const FmpzPoly q = square_free_integer(p);
   if (q.length() <= 1) return out;
   const bool root_a = sign_at(q, a) == 0, root_b = sign_at(q, b) == 0;
   if (a == b) {
@@ -285,60 +286,181 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, cons
   return out;
 }
 
-RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const rational& width) {
-  require_nonzero(p, "refine_root");
+}  // namespace
+
+std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b) {
+  require_nonzero(p, "isolate_real_roots");
+  return isolate_integer(square_free_integer(p), a, b);
+}
+
+namespace {
+
+// 2^(E n) q(X / 2^E), n = deg q: the value of q at the dyadic X / 2^E times a positive power of
+// two (same sign), by Horner in integers: h <- h X + q_i 2^(E (n - i)).
+void value_at_dyadic(Fmpz& h, const FmpzPoly& q, const Fmpz& X, ulong E) {
+  const long n = q.length() - 1;
+  Fmpz t;
+  fmpz_set(h.get(), q.coeff(n));
+  for (long i = n - 1; i >= 0; --i) {
+    fmpz_mul(h.get(), h.get(), X.get());
+    fmpz_mul_2exp(t.get(), q.coeff(i), E * static_cast<ulong>(n - i));
+    fmpz_add(h.get(), h.get(), t.get());
+  }
+}
+
+rational dyadic(const Fmpz& X, ulong E) { return rational(flint::to_integer(X.get()), integer(1) << E); }
+
+// x * 2^E rounded up (ceil) or down, x rational
+void scaled_round(Fmpz& out, const rational& x, ulong E, bool up) {
+  Fmpz a, b;
+  flint::set(a.get(), num(x));
+  flint::set(b.get(), den(x));
+  fmpz_mul_2exp(a.get(), a.get(), E);
+  if (up) fmpz_cdiv_q(out.get(), a.get(), b.get());
+  else fmpz_fdiv_q(out.get(), a.get(), b.get());
+}
+
+// (R - L) / 2^E <= width = a/b  <=>  (R - L) b <= a 2^E
+bool narrow_enough(const Fmpz& L, const Fmpz& R, ulong E, const Fmpz& wa, const Fmpz& wb) {
+  Fmpz l, r;
+  fmpz_sub(l.get(), R.get(), L.get());
+  fmpz_mul(l.get(), l.get(), wb.get());
+  fmpz_mul_2exp(r.get(), wa.get(), E);
+  return fmpz_cmp(l.get(), r.get()) <= 0;
+}
+
+RootInterval refine_integer(const FmpzPoly& q, RootInterval r, const rational& width) {
   if (!(width > 0)) throw InputError("refine_root: width must be positive, got " + width.str());
   if (r.lo > r.hi) throw InputError("refine_root: lo > hi");
-  const FmpzPoly qz = square_free_integer(p);
-  const Polynomial<rational> q = to_polynomial(qz);
   if (r.is_exact()) {
-    if (q(r.lo) != 0) throw InputError("refine_root: " + r.lo.str() + " is not a root");
+    if (sign_at(q, r.lo) != 0) throw InputError("refine_root: " + r.lo.str() + " is not a root");
     return r;
   }
-  int slo = sign_at(qz, r.lo), shi = sign_at(qz, r.hi);
+  int slo = sign_at(q, r.lo), shi = sign_at(q, r.hi);
   if (slo == 0) return {r.lo, r.lo};
   if (shi == 0) return {r.hi, r.hi};
   if (slo == shi)
     throw InputError("refine_root: [" + r.lo.str() + ", " + r.hi.str() + "] does not bracket a root");
-  // Quadratic interval refinement (Abbott): try a secant point rounded to a grid of N cells;
-  // if the root is in the grid cell around it, the width shrinks by N and N is squared;
-  // otherwise bisect and fall back to N = 4.
-  integer N = 4;
-  bool first = true;
-  while (r.hi - r.lo > width) {
+  const long n = q.length() - 1;
+  if (n == 1) {  // the root -q0/q1, exactly
+    const rational x = -rational(flint::to_integer(q.coeff(0)), flint::to_integer(q.coeff(1)));
+    return {x, x};
+  }
+  // 1. onto dyadic end points: with 2^-E <= (hi - lo)/8, L = ceil(lo 2^E) and R = floor(hi 2^E)
+  //    lie inside and R - L >= 6; where a sign test shows the root outside [L, R], the bracket
+  //    is the short piece [lo, L] or [R, hi] (<= 1/8 of the width) and the step repeats.
+  Fmpz L, R, HL, HR;
+  ulong E = 0;
+  for (;;) {
     const rational w = r.hi - r.lo;
-    bool done = false;
-    const rational flo = q(r.lo), fhi = q(r.hi);
-    {
-      rational xs = r.lo - flo * w / (fhi - flo);  // in (lo, hi) since signs differ
-      if (first && q(xs) == 0) return {xs, xs};     // catches rational roots of linear factors
-      first = false;
-      rational cells = (xs - r.lo) / w * rational(N);
-      integer k = num(cells) / den(cells);  // floor (cells >= 0)
-      const rational a = r.lo + w * rational(k) / rational(N), b = r.lo + w * rational(k + 1) / rational(N);
-      const int sa = (k == 0) ? slo : sign_at(qz, a);
-      const int sb = (k + 1 == N) ? shi : sign_at(qz, b);
-      if (sa == 0) return {a, a};
-      if (sb == 0) return {b, b};
-      if (sa != sb) {
-        r = {a, b};
-        slo = sa;
-        shi = sb;
-        N = N * N;
-        done = true;
-      } else {
-        N = (N > 16) ? integer(bmp::sqrt(N)) : integer(4);
-      }
+    if (w <= width) return r;
+    // w = a/b > 2^(bits a - 1 - bits b), so 2^E w >= 8 for E = bits b - bits a + 4
+    const long e = static_cast<long>(bmp::msb(den(w))) - static_cast<long>(bmp::msb(num(w))) + 4;
+    E = static_cast<ulong>(std::max(0L, e));
+    scaled_round(L, r.lo, E, true);
+    scaled_round(R, r.hi, E, false);
+    value_at_dyadic(HL, q, L, E);
+    const int sl = fmpz_sgn(HL.get());
+    if (sl == 0) return {dyadic(L, E), dyadic(L, E)};
+    if (sl != slo) {
+      r.hi = dyadic(L, E);
+      shi = sl;
+      continue;
     }
-    if (!done) {
-      const rational m = (r.lo + r.hi) / 2;
-      const int sm = sign_at(qz, m);
-      if (sm == 0) return {m, m};
-      if (sm == slo) r.lo = m;
-      else r.hi = m;
+    value_at_dyadic(HR, q, R, E);
+    const int sr = fmpz_sgn(HR.get());
+    if (sr == 0) return {dyadic(R, E), dyadic(R, E)};
+    if (sr != shi) {
+      r.lo = dyadic(R, E);
+      slo = sr;
+      continue;
+    }
+    break;
+  }
+  // 2. quadratic interval refinement on [L, R] / 2^E: the secant guess k = floor(N HL/(HL - HR))
+  //    picks one of N = 2^j cells; if q changes sign across it, it is the new bracket and j
+  //    doubles, else j halves (at least 2) and the bracket is bisected. Every test is exact.
+  Fmpz wa, wb, W, k, t, a, b, Ha, Hb;
+  flint::set(wa.get(), num(width));
+  flint::set(wb.get(), den(width));
+  ulong j = 2;
+  auto rescale = [&](ulong s) {  // X / 2^E -> (X 2^s) / 2^(E + s); values times 2^(s n)
+    fmpz_mul_2exp(L.get(), L.get(), s);
+    fmpz_mul_2exp(R.get(), R.get(), s);
+    fmpz_mul_2exp(HL.get(), HL.get(), s * static_cast<ulong>(n));
+    fmpz_mul_2exp(HR.get(), HR.get(), s * static_cast<ulong>(n));
+    E += s;
+  };
+  while (!narrow_enough(L, R, E, wa, wb)) {
+    fmpz_sub(W.get(), R.get(), L.get());
+    {  // no cells finer than the target needs: (R - L) / 2^E / width < 2^need
+      const long need = static_cast<long>(fmpz_bits(W.get()) + fmpz_bits(wb.get())) -
+                        static_cast<long>(fmpz_bits(wa.get())) - static_cast<long>(E) + 2;
+      j = std::min<ulong>(j, static_cast<ulong>(std::max(2L, need)));
+    }
+    const ulong v = fmpz_val2(W.get());
+    if (v < j) {
+      rescale(j - v);
+      fmpz_sub(W.get(), R.get(), L.get());
+    }
+    fmpz_mul_2exp(t.get(), HL.get(), j);
+    fmpz_sub(a.get(), HL.get(), HR.get());
+    fmpz_fdiv_q(k.get(), t.get(), a.get());  // in [0, N - 1]: HL, HR have opposite signs
+    fmpz_fdiv_q_2exp(W.get(), W.get(), j);   // the cell width
+    fmpz_set(a.get(), L.get());
+    fmpz_addmul(a.get(), k.get(), W.get());
+    fmpz_add(b.get(), a.get(), W.get());
+    if (fmpz_is_zero(k.get())) fmpz_set(Ha.get(), HL.get());
+    else value_at_dyadic(Ha, q, a, E);
+    if (fmpz_equal(b.get(), R.get())) fmpz_set(Hb.get(), HR.get());
+    else value_at_dyadic(Hb, q, b, E);
+    const int sa = fmpz_sgn(Ha.get()), sb = fmpz_sgn(Hb.get());
+    if (sa == 0) return {dyadic(a, E), dyadic(a, E)};
+    if (sb == 0) return {dyadic(b, E), dyadic(b, E)};
+    if (sa != sb) {
+      fmpz_swap(L.get(), a.get());
+      fmpz_swap(R.get(), b.get());
+      fmpz_swap(HL.get(), Ha.get());
+      fmpz_swap(HR.get(), Hb.get());
+      j *= 2;
+      continue;
+    }
+    j = std::max<ulong>(2, j / 2);
+    fmpz_add(t.get(), L.get(), R.get());
+    if (fmpz_is_odd(t.get())) {
+      rescale(1);
+      fmpz_add(t.get(), L.get(), R.get());
+    }
+    fmpz_fdiv_q_2exp(t.get(), t.get(), 1);  // the midpoint
+    value_at_dyadic(Ha, q, t, E);
+    const int sm = fmpz_sgn(Ha.get());
+    if (sm == 0) return {dyadic(t, E), dyadic(t, E)};
+    if (sm == fmpz_sgn(HL.get())) {
+      fmpz_swap(L.get(), t.get());
+      fmpz_swap(HL.get(), Ha.get());
+    } else {
+      fmpz_swap(R.get(), t.get());
+      fmpz_swap(HR.get(), Ha.get());
     }
   }
-  return r;
+  return {dyadic(L, E), dyadic(R, E)};
+}
+
+}  // namespace
+
+RootRefiner::RootRefiner(const Polynomial<rational>& p) {
+  require_nonzero(p, "refine_root");
+  q_ = std::make_shared<const FmpzPoly>(square_free_integer(p));
+}
+
+std::vector<RootInterval> RootRefiner::isolate(const rational& a, const rational& b) const {
+  return isolate_integer(*q_, a, b);
+}
+
+RootInterval RootRefiner::refine(RootInterval r, const rational& width) const { return refine_integer(*q_, r, width); }
+
+RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const rational& width) {
+  return RootRefiner(p).refine(r, width);
 }
 
 }  // namespace hapstab

@@ -21,6 +21,7 @@
 // exactly one root, at which q changes sign.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "hapstab/poly/polynomial.hpp"
@@ -59,10 +60,30 @@ std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p);
 /// lies inside [a, b]. Throws InputError if a > b or p = 0.
 std::vector<RootInterval> isolate_real_roots(const Polynomial<rational>& p, const rational& a, const rational& b);
 
-/// Shrinks r (which must isolate one root of p) until hi - lo <= width (width > 0), by
-/// bisection with exact sign tests, accelerated by secant (regula falsi, Illinois) steps that
-/// are accepted only when they shrink the bracket by at least half; a rational root hit on the
-/// way is returned exactly. Throws InputError if r does not bracket a root of p.
+/// Shrinks r (which must isolate one root of p) until hi - lo <= width (width > 0) by quadratic
+/// interval refinement (Abbott): a secant guess rounded to a grid of N cells, N squared when
+/// the root is in the guessed cell, else a bisection. The bracket is moved onto dyadic points
+/// x = X / 2^E first, so every sign test is one integer evaluation 2^(E n) q(X / 2^E) of the
+/// primitive square-free integer q (no rational arithmetic, no gcd in the loop). A root of a
+/// linear q, or a dyadic root met as a grid point, is returned exactly. Throws InputError if r
+/// does not bracket a root of p.
 RootInterval refine_root(const Polynomial<rational>& p, RootInterval r, const rational& width);
+
+namespace flint {
+class FmpzPoly;
+}
+
+/// isolate_real_roots and refine_root for many roots of one polynomial: the square-free
+/// integer part (a gcd) is computed once, not per call. isolate(a, b) ==
+/// isolate_real_roots(p, a, b) and refine(r, width) == refine_root(p, r, width).
+class RootRefiner {
+ public:
+  explicit RootRefiner(const Polynomial<rational>& p);
+  std::vector<RootInterval> isolate(const rational& a, const rational& b) const;
+  RootInterval refine(RootInterval r, const rational& width) const;
+
+ private:
+  std::shared_ptr<const flint::FmpzPoly> q_;  // primitive square-free integer part of p
+};
 
 }  // namespace hapstab

@@ -29,21 +29,22 @@ ComplexPolynomial unit_circle_polynomial(const Polynomial<rational>& p, int n) {
   const Polynomial<rational> t = Polynomial<rational>::monomial(1);
   const ComplexPolynomial plus{Polynomial<rational>(rational(1)), t};    // 1 + j t
   const ComplexPolynomial minus{Polynomial<rational>(rational(1)), -t};  // 1 - j t
-  // powers of (1 + jt) and (1 - jt), built once
-  std::vector<ComplexPolynomial> pp(static_cast<size_t>(n) + 1), pm(static_cast<size_t>(n) + 1);
-  pp[0] = pm[0] = ComplexPolynomial{Polynomial<rational>(rational(1)), Polynomial<rational>()};
-  for (int k = 1; k <= n; ++k) {
-    pp[k] = pp[k - 1] * plus;
-    pm[k] = pm[k - 1] * minus;
-  }
-  ComplexPolynomial r;
-  for (int k = 0; k <= p.degree(); ++k) {
+  const int d = p.degree();
+  if (d < 0) return {};
+  // powers of (1 - jt), built once
+  std::vector<ComplexPolynomial> pm(static_cast<size_t>(n) + 1);
+  pm[0] = ComplexPolynomial{Polynomial<rational>(rational(1)), Polynomial<rational>()};
+  for (int k = 1; k <= n; ++k) pm[k] = pm[k - 1] * minus;
+  // Horner in (1 + jt): s = sum_k a_k (1 + jt)^k (1 - jt)^(d-k), then r = s (1 - jt)^(n-d);
+  // products with the linear 1 + jt only, O(n^2) coefficient operations instead of O(n^3)
+  const auto scaled = [](const ComplexPolynomial& c, const rational& a) { return ComplexPolynomial{c.re * a, c.im * a}; };
+  ComplexPolynomial s = scaled(pm[0], p.coeffs()[d]);
+  for (int k = d - 1; k >= 0; --k) {
+    s = s * plus;
     const rational& a = p.coeffs()[k];
-    if (a == 0) continue;
-    ComplexPolynomial term = pp[k] * pm[n - k];
-    r = r + ComplexPolynomial{term.re * a, term.im * a};
+    if (a != 0) s = s + scaled(pm[d - k], a);
   }
-  return r;
+  return n == d ? s : s * pm[n - d];
 }
 
 ReIm re_im(const ComplexPolynomial& N, const ComplexPolynomial& D) {
