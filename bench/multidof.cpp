@@ -194,7 +194,7 @@ BENCHMARK(BM_ContactScene)
     ->Args({2, 0})->Args({4, 0})->Args({8, 0})->Args({16, 0})->Args({24, 0})->Args({32, 0})->Args({48, 0})
     ->Args({64, 0})->Args({96, 0})->Args({128, 0})
     ->Args({2, 1})->Args({4, 1})->Args({8, 1})->Args({16, 1})
-    ->Args({8, 2})->Args({16, 2})->Args({24, 2})->Args({32, 2})->Args({48, 2})
+    ->Args({2, 2})->Args({4, 2})->Args({8, 2})->Args({16, 2})->Args({24, 2})->Args({32, 2})->Args({48, 2})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
