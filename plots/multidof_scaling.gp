@@ -35,20 +35,20 @@ set key bottom left
 plot fi u 2:4 w lp ls 1 t 'one operator (case i)', \
      fii u 2:4 w lp ls 2 t 'operator per device (case ii)'
 unset yrange
-set title '(c) contact scenes: whole certified analysis'
+set title '(c) contact scenes, certified'
 set xlabel (tex ? 'devices $N$' : 'devices N')
 set ylabel 'time [s]'
 set logscale xy
 set format y (tex ? '$10^{%T}$' : '10^{%T}')
-set key top left
+set key top left Left reverse
 # N^3 reference through the structured path's N = 16 point
 stats sa u ($1 == 16 ? $2+$3+$4 : NaN) nooutput
 t16 = STATS_max
 set datafile missing '-'
-plot sb u 1:($2+$3+$4) w lp ls 2 t 'before: generic SDP (IPM), recorded', \
-     sb u 1:($6+$7+$8) w lp ls 4 t 'after, the same recorded run', \
-     sa u 1:($2+$3+$4) w lp ls 1 lw 2 t 'after: structured KYP path (live)', \
-     sa u 1:3 w lp ls 3 t 'after: its Riccati share', \
-     sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP (generic SDP)', \
-     [16:128] t16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'reference N^3')
+plot sb u 1:($2+$3+$4) w lp ls 2 t 'before (recorded)', \
+     sb u 1:($6+$7+$8) w lp ls 4 t 'after, same run', \
+     sa u 1:($2+$3+$4) w lp ls 1 lw 2 t 'after (live)', \
+     sa u 1:3 w lp ls 3 t 'its Riccati part', \
+     sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP', \
+     [16:128] t16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
 unset multiplot
