@@ -692,7 +692,8 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 // attained along Q_E = r g I, ||Q_V|| -> g d r / (d - r) (r >= 0; 0 when r < 0), least at g = 1 and
 // the least r with the first LMI feasible. That r is found by bisection on the Riccati
 // equation's solvability (lmi/kyp.hpp), the point at r slightly above it re-checked exactly.
-// False when Delta_D X_1 is not a multiple of I (the caller then runs the generic program).
+// False when Delta_D X_1 is not a multiple of I or no Riccati point is found there (the caller
+// then runs the generic program).
 bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
   const int m = pb.structure.m();
   const MatQ DX = pb.structure.delta_D() * px.X;
@@ -720,8 +721,8 @@ bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned&
   const lmi::KypData k = data(to_real<double>(rc));
   const lmi::KypPoint kp = lmi::kyp_interior_point(k);
   res.sdp_seconds += since(t0);
+  if (!kp.found) return false;  // no point to report: the generic program decides
   res.min_found = true;
-  if (!kp.found) return true;  // found the value, no certified point
   ExactEnv x;
   x.X = px.X;
   x.theta = {px.theta};
