@@ -36,6 +36,6 @@ def scene(n):
     return '\n'.join(out) + '\n'
 
 if __name__ == '__main__':
-    if len(sys.argv) != 2 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 64:
-        sys.exit('usage: bench/contact_scene.py N   (1 <= N <= 64)')
+    if len(sys.argv) != 2 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 256:
+        sys.exit('usage: bench/contact_scene.py N   (1 <= N <= 256)')
     sys.stdout.write(scene(int(sys.argv[1])))

@@ -162,11 +162,15 @@ std::string contact_scene(int n) {
   return s.str();
 }
 
+// mode 0: automatic (the structured KYP path of analysis.hpp from 8 DOF on), 1: DSDP (generic
+// programs), 2: the generic programs on the built-in IPM (AnalysisPath::generic_sdp: the path
+// before issue 33; N <= 48 here, about 30 s there, more than 300 s at N = 64).
 void BM_ContactScene(benchmark::State& st) {
   const int N = static_cast<int>(st.range(0));
-  const bool dsdp = st.range(1) == 1;
+  const int mode = static_cast<int>(st.range(1));
   lmi::Options opt;
-  if (dsdp) opt.backend = lmi::Backend::dsdp;
+  if (mode == 1) opt.backend = lmi::Backend::dsdp;
+  const AnalysisPath path = mode == 2 ? AnalysisPath::generic_sdp : AnalysisPath::automatic;
   const std::string text = contact_scene(N);
   double realisation = 0, sdp = 0, certificate = 0;
   AnalysisResult r;
@@ -174,7 +178,7 @@ void BM_ContactScene(benchmark::State& st) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto sp = problem_from_scene(scene::parse_scene(text, "contact scene"));
     realisation = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r = analyze(sp.problem, opt);
+    r = analyze(sp.problem, opt, AnalysisMode::full, path);
     sdp = r.sdp_seconds;
     certificate = r.seconds - r.sdp_seconds;
   }
@@ -182,11 +186,15 @@ void BM_ContactScene(benchmark::State& st) {
   st.counters["sdp_s"] = sdp;
   st.counters["certificate_s"] = certificate;
   st.counters["certified"] = r.verdict.proven() && r.verdict.holds();
-  st.SetLabel(dsdp ? "DSDP" : "auto (built-in IPM, low-rank Schur complement)");
+  st.counters["least_dissipative_norm"] = r.Q_V_min_norm;
+  st.counters["least_dissipative_certified"] = r.min_certified;
+  st.SetLabel(mode == 1 ? "DSDP" : mode == 2 ? "generic SDP, built-in IPM (before)" : "automatic (structured KYP path)");
 }
 BENCHMARK(BM_ContactScene)
-    ->Args({2, 0})->Args({4, 0})->Args({8, 0})->Args({16, 0})->Args({24, 0})->Args({32, 0})
+    ->Args({2, 0})->Args({4, 0})->Args({8, 0})->Args({16, 0})->Args({24, 0})->Args({32, 0})->Args({48, 0})
+    ->Args({64, 0})->Args({96, 0})->Args({128, 0})
     ->Args({2, 1})->Args({4, 1})->Args({8, 1})->Args({16, 1})
+    ->Args({2, 2})->Args({4, 2})->Args({8, 2})->Args({16, 2})->Args({24, 2})->Args({32, 2})->Args({48, 2})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

@@ -4,8 +4,11 @@
 # Fig. 5-type environments (half with per-device force-gain miscalibration) certified stable,
 # for one operator on all devices (case-i-like, Gamma = g I) and one operator per device
 # (case-ii-like, Gamma block-scalar per device): how much the structure reduces conservatism;
-# (c) the whole certified analysis of the N-device contact scenes (bench/contact_scene.py) per
-# stage: realisation, SDP and exact certificate with the built-in IPM, and the DSDP total.
+# (c) the whole certified analysis (full mode) of the N-device contact scenes
+# (bench/contact_scene.py), log-log against N: before issue 33 (the generic SDP on the built-in
+# IPM, recorded with the after series in one run: bench/multidof_contact_before.dat), after (the
+# structured KYP path, live), its
+# Riccati share, DSDP, and an N^3 reference line.
 name = 'multidof_scaling'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
@@ -13,6 +16,7 @@ fi = datadir.'/multidof_scaling_case_i.dat'
 fii = datadir.'/multidof_scaling_case_ii.dat'
 sa = datadir.'/multidof_stages_auto.dat'
 sd = datadir.'/multidof_stages_dsdp.dat'
+sb = datadir.'/multidof_stages_before.dat'
 set multiplot layout 1,3 title (tex ? 'Theorem 5 as the number of devices grows' : 'Theorem 5 as the number of devices grows')
 set title '(a) certified Theorem 5 verdict: time'
 set xlabel (tex ? 'total DOF $m$' : 'total DOF m')
@@ -31,15 +35,20 @@ set key bottom left
 plot fi u 2:4 w lp ls 1 t 'one operator (case i)', \
      fii u 2:4 w lp ls 2 t 'operator per device (case ii)'
 unset yrange
-set title '(c) contact scenes: certified analysis by stage'
+set title '(c) contact scenes, certified'
 set xlabel (tex ? 'devices $N$' : 'devices N')
 set ylabel 'time [s]'
 set logscale xy
 set format y (tex ? '$10^{%T}$' : '10^{%T}')
-set key top left
-plot sa u 1:2 w lp ls 3 t 'realisation (IPM run)', \
-     sa u 1:3 w lp ls 1 t 'SDP (IPM)', \
-     sa u 1:4 w lp ls 4 t 'certificate', \
-     sa u 1:($2+$3+$4) w lp ls 2 lw 2 t 'total (IPM)', \
-     sd u 1:($2+$3+$4) w lp ls 5 t 'total (DSDP)'
+set key top left Left reverse
+# N^3 reference through the structured path's N = 16 point
+stats sa u ($1 == 16 ? $2+$3+$4 : NaN) nooutput
+t16 = STATS_max
+set datafile missing '-'
+plot sb u 1:($2+$3+$4) w lp ls 2 t 'before (recorded)', \
+     sb u 1:($6+$7+$8) w lp ls 4 t 'after, same run', \
+     sa u 1:($2+$3+$4) w lp ls 1 lw 2 t 'after (live)', \
+     sa u 1:3 w lp ls 3 t 'its Riccati part', \
+     sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP', \
+     [16:128] t16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
 unset multiplot

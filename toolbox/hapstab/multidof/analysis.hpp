@@ -67,7 +67,8 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
 // with a positive margin; infeasible: Farkas or the facial conditions), numeric otherwise.
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
-  double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates)
+  double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
+                                    ///< path: lambda_min of (16)'s first LMI at the point (original coordinates)
   std::vector<double> gamma;        ///< g_i (Gamma = sqrt(X) has sqrt(g_i) ... see gamma_sqrt)
   std::vector<double> gamma_sqrt;   ///< the gamma_i of Gamma = sqrt(X)
   Eigen::MatrixXd X, Q_E, Q_V, delta_V;  ///< delta_V = Gamma^-1 Q_V Gamma^-1 (coupling requirement)
@@ -96,7 +97,28 @@ struct AnalysisResult {
 /// without the least-dissipative step. Q_V, delta_V of the result are the constructed ones.
 enum class AnalysisMode { full, stability_only };
 
-AnalysisResult analyze(const Problem& pb, const lmi::Options& opt = {}, AnalysisMode mode = AnalysisMode::full);
+/// Which numeric route finds the points (the exact re-check on the rational data (15) decides
+/// either way, and the verdict's evidence says which route found the point):
+///   generic_sdp  the LMI programs above through lmi::solve (the built-in IPM first): its Schur
+///                complement has all n(n+1)/2 entries of P11 (plus Q_E, Q_V): O(n^6) work per
+///                iteration, about N^5 over the contact scenes (bench/contact_scene.py).
+///   kyp_riccati  when the facial conditions pin X to one direction (X = g X_1; min g_i = 1 by
+///                homogeneity), (16)'s first LMI is a KYP LMI in P11 alone: its interior point
+///                is the stabilising solution of a shifted DARE (lmi/kyp.hpp, O(n^3)). The
+///                verdict is the stability-only construction above on that point. The least
+///                dissipative coupling, when Delta_D X_1 = d I: Q_E enters the first LMI only as
+///                -Q_E and Q_V > f(Q_E) = Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E is matrix monotone,
+///                so the minimum is along Q_E = r I: bisection on r (DARE solvability), the point
+///                re-checked exactly; otherwise that step runs the generic program. X not pinned,
+///                Problem::qv_block_diagonal, no Riccati point or a failed exact check: the whole
+///                analysis falls back to generic_sdp (never a weaker verdict).
+///   automatic    kyp_riccati from kKypMinDof DOF on with the automatic back-end, generic_sdp
+///                otherwise (the small problems, e.g. paper 000's Sec. VI, keep the IPM's points).
+enum class AnalysisPath { automatic, generic_sdp, kyp_riccati };
+inline constexpr int kKypMinDof = 8;
+
+AnalysisResult analyze(const Problem& pb, const lmi::Options& opt = {}, AnalysisMode mode = AnalysisMode::full,
+                       AnalysisPath path = AnalysisPath::automatic);
 
 /// Independent verification of a coupling V (given by its realisation): Theorem 4 with
 /// V-hat^Gamma's OSP level by Lemma 1 (non-strict, facial reduction), E-hat^Gamma's ISP level
