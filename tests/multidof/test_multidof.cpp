@@ -139,6 +139,23 @@ TEST(MultidofAnalysis, FeasibilityTableOfSectionVI) {
   EXPECT_NEAR(r3.gamma[1] / r3.gamma[0], to_real<double>(fc.E1(0, 1) / fc.E1(1, 0)), 1e-12);
 }
 
+TEST(MultidofAnalysis, FacialTextSaysWhenASymmetricStiffnessPinsX) {
+  // Sec. VI nominal: E(1) is symmetric with E(1)_12 != 0. One operator (case i): every X = g I
+  // keeps X E(1) symmetric. Two operators (case ii): only g1 = g2 does (a 1-dimensional set),
+  // which the text used to deny ("every X keeps X E(1) symmetric").
+  const auto one = facial_conditions(example::problem(1, false));
+  ASSERT_EQ(one.gamma_basis.size(), 1u);
+  EXPECT_NE(one.explanation.find("so every X in G(m; ...) keeps X E(1) symmetric"), std::string::npos);
+  const auto two = facial_conditions(example::problem(2, false));
+  ASSERT_NE(two.E1(0, 1), 0);
+  ASSERT_EQ(two.E1, MatQ(two.E1.transpose()));
+  ASSERT_EQ(two.gamma_basis.size(), 1u);
+  EXPECT_EQ(two.explanation.find("every X in G"), std::string::npos) << two.explanation;
+  EXPECT_NE(two.explanation.find("is symmetric; X E(1) is symmetric only on a 1-dimensional set of X"),
+            std::string::npos)
+      << two.explanation;
+}
+
 TEST(MultidofAnalysis, UnstableEnvironmentRejected) {
   auto pb = example::problem(1, false);
   pb.E.A(0, 0) = 2;  // eigenvalue outside the unit circle

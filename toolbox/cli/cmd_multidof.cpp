@@ -194,7 +194,7 @@ int run_analyze(const Opts& o) {
     if (r.verdict.evidence.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
     if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "\n";
     if (feasible) {
-      std::cout << "  one feasible point (the SDP solver's): Gamma = sqrt(X): gamma =";
+      std::cout << "  one feasible point (" << (r.solver_detail.find("Riccati") == std::string::npos ? "the SDP solver's" : "the Riccati equation's") << "): Gamma = sqrt(X): gamma =";
       for (double g : r.gamma_sqrt) std::cout << " " << g;
       std::cout << "\n  Q_V =\n";
       print_matrix(r.Q_V);

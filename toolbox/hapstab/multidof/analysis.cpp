@@ -143,8 +143,11 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
       for (int j = 0; j < m; ++j) lo = std::min(lo, fc.E1(i, j)), hi = std::max(hi, fc.E1(i, j));
     o << "(" << m << " x " << m << ", entries in [" << str(lo) << ", " << str(hi) << "])";
   }
-  if (fc.E1 == MatQ(fc.E1.transpose()))
+  if (fc.E1 == MatQ(fc.E1.transpose()) && static_cast<int>(fc.gamma_basis.size()) == N)
     o << " is symmetric, so every X in G(m; ...) keeps X E(1) symmetric";
+  else if (fc.E1 == MatQ(fc.E1.transpose()))
+    o << " is symmetric; X E(1) is symmetric only on a " << fc.gamma_basis.size()
+      << "-dimensional set of X (g_i = g_j wherever E(1) couples operators i and j)";
   else if (!fc.symmetric_possible)
     o << " is not symmetric and no X in G(m; m_1..m_N) makes X E(1) symmetric: (16) has NO solution for this "
          "structure (exact; no SDP needed)";
