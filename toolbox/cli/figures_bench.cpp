@@ -31,7 +31,8 @@ const RegisterFigure lmi({"lmi_scaling", "toolbox",
 const RegisterFigure multidof({"multidof_scaling", "toolbox",
                                "Theorem 5 scaling: analysis time against total DOF and the fraction of random "
                                "environments certified stable, one operator (case i) against one per device (case ii)",
-                               [](const std::filesystem::path& d) { write_bench_chart_data("multidof", d); }});
+                               [](const std::filesystem::path& d) { write_bench_chart_data("multidof", d); },
+                               [](const std::filesystem::path& d) { return bench_timing_vars("multidof", d); }});
 const RegisterFigure sim({"sim_speed_accuracy", "toolbox",
                           "Simulator: steps per second against maximum relative error for exact ZOH, RK4 with n "
                           "substeps and adaptive Odeint on the same run",
