@@ -618,7 +618,7 @@ std::optional<Pinned> pinned_x(const Problem& pb, const EhatSplit& sp, const Fac
   Pinned px;
   px.theta = rational(1) / mn;
   px.X = px.theta * X1;
-  const int n = static_cast<int>(pb.E.states()), m = pb.structure.m();
+  const int n = static_cast<int>(pb.E.states());
   const double Td = to_real<double>(pb.T());
   const MatrixXd X = to_double(px.X), E1 = to_double(sp.E1), DE = to_double(pb.E.D);
   px.kyp.A = to_double(MatQ(sp.t.A.topLeftCorner(n, n)));
@@ -626,7 +626,6 @@ std::optional<Pinned> pinned_x(const Problem& pb, const EhatSplit& sp, const Fac
   px.kyp.S = 0.5 * to_double(MatQ(sp.t.C.leftCols(n))).transpose() * X;
   const MatrixXd XE1s = 0.5 * (X * E1 + E1.transpose() * X);
   px.kyp.R = (Td / 2) * XE1s - (Td / 2) * (X * DE + DE.transpose() * X);
-  (void)m;
   return px;
 }
 
@@ -761,7 +760,7 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
   struct Stamp {  // res.seconds on every return
     AnalysisResult& r;
     std::chrono::steady_clock::time_point t0;
-    ~Stamp() { r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); }
+    ~Stamp() { r.seconds = since(t0); }
   } stamp{res, start};
   res.facial = facial_conditions(pb);
   if (!res.facial.symmetric_possible) {

@@ -132,4 +132,22 @@ inline rational to_rational(const fmpq_t q) {
   return r;
 }
 
+/// A rational as a real ball at `prec` bits (exact when it is a short dyadic).
+inline void set(arb_t out, const rational& q, long prec) {
+  fmpq_t f;
+  fmpq_init(f);
+  set(f, q);
+  arb_set_fmpq(out, f, prec);
+  fmpq_clear(f);
+}
+/// A finite arf m 2^e as the exact rational it is.
+inline rational to_rational(const arf_t a) {
+  Fmpz m, e;
+  arf_get_fmpz_2exp(m.get(), e.get(), a);
+  rational r(to_integer(m.get()));
+  const long ex = fmpz_get_si(e.get());
+  if (ex >= 0) return r * rational(integer(1) << static_cast<unsigned>(ex));
+  return r / rational(integer(1) << static_cast<unsigned>(-ex));
+}
+
 }  // namespace hapstab::flint

@@ -13,34 +13,11 @@ namespace hapstab {
 
 namespace {
 
-// a rational as a ball at prec bits (exact when it is a short dyadic)
-void set_ball(arb_t out, const rational& x, long prec) {
-  fmpq_t q;
-  fmpq_init(q);
-  flint::set(q, x);
-  arb_set_fmpq(out, q, prec);
-  fmpq_clear(q);
-}
-
 void set_poly(arb_poly_t out, const Polynomial<rational>& p, long prec) {
   arb_poly_fit_length(out, p.degree() + 1);
-  for (int i = 0; i <= p.degree(); ++i) set_ball(out->coeffs + i, p.coeff(i), prec);
+  for (int i = 0; i <= p.degree(); ++i) flint::set(out->coeffs + i, p.coeff(i), prec);
   _arb_poly_set_length(out, p.degree() + 1);
   _arb_poly_normalise(out);
-}
-
-// an arf (finite) as an exact rational: m 2^e
-rational to_rational(const arf_t a) {
-  fmpz_t m, e;
-  fmpz_init(m);
-  fmpz_init(e);
-  arf_get_fmpz_2exp(m, e, a);
-  rational r(flint::to_integer(m));
-  const long ex = fmpz_get_si(e);
-  fmpz_clear(m);
-  fmpz_clear(e);
-  if (ex >= 0) return r * rational(integer(1) << static_cast<unsigned>(ex));
-  return r / rational(integer(1) << static_cast<unsigned>(-ex));
 }
 
 }  // namespace
@@ -71,9 +48,9 @@ Enclosure<rational> BallRationalFunction::range(const rational& lo, const ration
   arb_init(x);
   arb_init(y);
   arb_init(d);
-  set_ball(x, lo, prec);
+  flint::set(x, lo, prec);
   if (hi != lo) {
-    set_ball(y, hi, prec);
+    flint::set(y, hi, prec);
     arb_union(x, x, y, prec);
   }
   arb_poly_evaluate(y, b_->num, x, prec);
@@ -90,7 +67,7 @@ Enclosure<rational> BallRationalFunction::range(const rational& lo, const ration
     arf_init(u);
     arb_get_lbound_arf(l, y, prec);
     arb_get_ubound_arf(u, y, prec);
-    r = {to_rational(l), to_rational(u)};
+    r = {flint::to_rational(l), flint::to_rational(u)};
     arf_clear(l);
     arf_clear(u);
   }

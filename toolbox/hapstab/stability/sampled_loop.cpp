@@ -30,11 +30,7 @@ class Ball {
   Ball() { arb_init(x_); }
   Ball(const rational& q) {  // NOLINT: exact data -> ball (exact when dyadic)
     arb_init(x_);
-    fmpq_t f;
-    fmpq_init(f);
-    flint::set(f, q);
-    arb_set_fmpq(x_, f, g_prec);
-    fmpq_clear(f);
+    flint::set(x_, q, g_prec);
   }
   Ball(const arb_t x) { arb_init(x_); arb_set(x_, x); }  // NOLINT
   Ball(const Ball& o) { arb_init(x_); arb_set(x_, o.x_); }
@@ -56,15 +52,6 @@ class Ball {
 bool is_zero(const rational& q) { return q == 0; }
 bool is_zero(const Ball& b) { return arb_is_zero(b.get()); }
 
-rational to_rational(const arf_t x) {
-  flint::Fmpz man, e;
-  arf_get_fmpz_2exp(man.get(), e.get(), x);
-  rational q(flint::to_integer(man.get()));
-  const long ex = fmpz_get_si(e.get());
-  if (ex >= 0) q *= rational(integer(1) << ex);
-  else q /= rational(integer(1) << -ex);
-  return q;
-}
 Enclosure<rational> bounds(const arb_t x) {
   if (!arb_is_finite(x)) throw NumericalError("stability: Arb lost the enclosure (non-finite ball)");
   arf_t lo, hi;
@@ -72,7 +59,7 @@ Enclosure<rational> bounds(const arb_t x) {
   arf_init(hi);
   arb_get_lbound_arf(lo, x, g_prec);
   arb_get_ubound_arf(hi, x, g_prec);
-  Enclosure<rational> e{to_rational(lo), to_rational(hi)};
+  Enclosure<rational> e{flint::to_rational(lo), flint::to_rational(hi)};
   arf_clear(lo);
   arf_clear(hi);
   return e;
