@@ -198,6 +198,29 @@ BENCHMARK(BM_ContactScene)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
+// Theorem 6 on the contact scene with one first-order SISO coupling block per device (as
+// bench/contact_scene.py writes): mode 0 automatic (the block-wise path of design.hpp from 8 DOF
+// on), 1 the generic CCL (DesignPath::generic_sdp: the path before issue 33; 5.7 s at N = 8,
+// 55 s at N = 16, more than 15 min at N = 32). Library time only (the CLI also simulates).
+void BM_ContactDesign(benchmark::State& st) {
+  const int N = static_cast<int>(st.range(0));
+  DesignOptions opt;
+  opt.path = st.range(1) == 1 ? DesignPath::generic_sdp : DesignPath::automatic;
+  auto sp = problem_from_scene(scene::parse_scene(contact_scene(N), "contact scene"));
+  sp.problem.coupling.mbar.assign(static_cast<size_t>(N), 1);
+  sp.problem.coupling.nbar.assign(static_cast<size_t>(N), 1);
+  DesignResult r;
+  for (auto _ : st) r = design(sp.problem, opt);
+  st.counters["certified"] = r.verdict.holds() && r.verdict.proven();
+  st.counters["iterations"] = r.iterations;
+  st.SetLabel(st.range(1) == 1 ? "generic CCL (before)" : "automatic (block-wise path)");
+}
+BENCHMARK(BM_ContactDesign)
+    ->Args({2, 0})->Args({4, 0})->Args({8, 0})->Args({16, 0})->Args({32, 0})->Args({64, 0})->Args({128, 0})
+    ->Args({2, 1})->Args({4, 1})->Args({8, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
 }  // namespace
 
 BENCHMARK_MAIN();

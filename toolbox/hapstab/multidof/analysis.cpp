@@ -1,6 +1,7 @@
 #include "hapstab/multidof/analysis.hpp"
 
 #include <chrono>
+#include <functional>
 #include <optional>
 
 #include <Eigen/Eigenvalues>
@@ -694,15 +695,14 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 // attained along Q_E = r g I, ||Q_V|| -> g d r / (d - r) (r >= 0; 0 when r < 0), least at g = 1 and
 // the least r with the first LMI feasible. That r is found by bisection on the Riccati
 // equation's solvability (lmi/kyp.hpp), the point at r slightly above it re-checked exactly.
-// False when Delta_D X_1 is not a multiple of I or no Riccati point is found there (the caller
-// then runs the generic program).
-bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
+// nullopt when Delta_D X_1 is not a multiple of I or no Riccati point is found there (the caller
+// then runs the generic program; design.cpp then designs by the generic CCL).
+std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px) {
   const int m = pb.structure.m();
   const MatQ DX = pb.structure.delta_D() * px.X;
-  if (DX != MatQ(DX(0, 0) * MatQ::Identity(m, m))) return false;
+  if (DX != MatQ(DX(0, 0) * MatQ::Identity(m, m))) return std::nullopt;
   const rational dq = DX(0, 0);
   const double d = to_real<double>(dq);
-  const auto t0 = std::chrono::steady_clock::now();
   auto data = [&](double r) {
     lmi::KypData k = px.kyp;
     k.R -= r * MatrixXd::Identity(m, m);
@@ -712,6 +712,7 @@ bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned&
   Eigen::SelfAdjointEigenSolver<MatrixXd> es(0.5 * (px.kyp.R + px.kyp.R.transpose()), Eigen::EigenvaluesOnly);
   double lo = es.eigenvalues()(m - 1), hi = d;
   const double width = hi - lo;
+  const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
   while (hi - lo > 1e-7 * width && solves < 60) {
     const double mid = 0.5 * (lo + hi);
@@ -722,26 +723,35 @@ bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned&
   const rational rc = lmi::round_dyadic(std::min(d, hi + 1e-6 * width), 30);
   const lmi::KypData k = data(to_real<double>(rc));
   const lmi::KypPoint kp = lmi::kyp_interior_point(k);
-  res.sdp_seconds += since(t0);
-  if (!kp.found) return false;  // no point to report: the generic program decides
-  res.min_found = true;
-  ExactEnv x;
-  x.X = px.X;
-  x.theta = {px.theta};
-  x.P11 = rounded_p11(k, kp);
-  x.QE = rc * MatQ::Identity(m, m);
+  if (!kp.found) return std::nullopt;
+  KypMinPoint p;
+  p.numeric_seconds = since(t0);
+  p.r = rc;
+  p.env.X = px.X;
+  p.env.theta = {px.theta};
+  p.env.P11 = rounded_p11(k, kp);
+  p.env.QE = rc * MatQ::Identity(m, m);
   const rational f = rc * dq / (dq - rc);  // Q_E + Q_E (d I - Q_E)^-1 Q_E = f I
   const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, d), 20);
-  const MatQ QV = ((f > 0 ? f : rational(0)) + e) * MatQ::Identity(m, m);
-  std::string why;
-  res.min_certified = exact_recheck(pb, sp, x, QV, why);
-  res.Q_V_min = to_double(QV);
-  const MatrixXd X = to_double(x.X);
+  p.QV = ((f > 0 ? f : rational(0)) + e) * MatQ::Identity(m, m);
+  p.certified = exact_recheck(pb, sp, p.env, p.QV, p.why);
+  p.riccati_solves = solves + kp.riccati_solves;
+  return p;
+}
+
+bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
+  const std::optional<KypMinPoint> p = least_dissipative_point(pb, sp, px);
+  if (!p) return false;  // no point to report: the generic program decides
+  res.sdp_seconds += p->numeric_seconds;
+  res.min_found = true;
+  res.min_certified = p->certified;
+  res.Q_V_min = to_double(p->QV);
+  const MatrixXd X = to_double(p->env.X);
   res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);
   res.gamma_sqrt_min = gamma_sqrt(pb, X);
-  res.Q_V_min_norm = to_real<double>((f > 0 ? f : rational(0)) + e);
-  res.solver_detail += "; least dissipative: Q_E = r I with r = " + std::to_string(to_real<double>(rc)) + " (" +
-                       std::to_string(solves + kp.riccati_solves) + " DARE solves)";
+  res.Q_V_min_norm = to_real<double>(p->QV(0, 0));
+  res.solver_detail += "; least dissipative: Q_E = r I with r = " + std::to_string(to_real<double>(p->r)) + " (" +
+                       std::to_string(p->riccati_solves) + " DARE solves)";
   return true;
 }
 
@@ -752,6 +762,12 @@ bool use_kyp(const Problem& pb, const lmi::Options& opt, AnalysisPath path) {
 }
 
 }  // namespace
+
+std::optional<detail::KypMinPoint> detail::kyp_min_point(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc) {
+  const std::optional<Pinned> px = pinned_x(pb, sp, fc);
+  if (!px) return std::nullopt;
+  return least_dissipative_point(pb, sp, *px);
+}
 
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode, AnalysisPath path) {
   pb.validate(false);
@@ -827,10 +843,8 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   return cc;
 }
 
-OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
-                        const lmi::Options& opt) {
-  const MatQ X = Gamma * Gamma;
-  const MatQ Q = Gamma * Delta * Gamma;
+OspCheck detail::check_vhat_lemma1(const StateSpace<rational>& V, const MatQ& K, const MatQ& X, const MatQ& Q,
+                                   const lmi::Options& opt) {
   OspCheck oc;
   const MatQ S = X * MatQ(dc_gain(V) - K);
   if (S != MatQ(S.transpose())) {
@@ -854,14 +868,14 @@ OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ
   return oc;
 }
 
-OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi::Options& opt) {
-  const Eigen::Index m = V.inputs();
-  const MatQ I = MatQ::Identity(m, m);
+OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
+                        const lmi::Options& opt) {
+  return check_vhat_lemma1(V, K, MatQ(Gamma * Gamma), MatQ(Gamma * Delta * Gamma), opt);
+}
+
+OspLevel detail::osp_level_bisection(const std::function<bool(double)>& certified_at) {
   OspLevel l;
-  auto ok = [&](double d) {
-    const OspCheck c = check_vhat_osp(V, K, I, lmi::round_dyadic(d, 30) * I, opt);
-    return c.verdict.holds() && c.verdict.proven();
-  };
+  auto ok = [&](double d) { return certified_at(to_real<double>(lmi::round_dyadic(d, 30))); };
   double lo = 0, hi = 1;
   if (!ok(0)) {
     l.verdict = {Outcome::undecided, Status::numeric, "Vhat is not certified passive (delta = 0 fails): no positive OSP level"};
@@ -881,6 +895,15 @@ OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi:
   l.verdict = {Outcome::holds, Status::exact,
                "bisection on Lemma 1 (non-strict, facial reduction): level >= delta certified exactly"};
   return l;
+}
+
+OspLevel vhat_osp_level(const StateSpace<rational>& V, const MatQ& K, const lmi::Options& opt) {
+  const Eigen::Index m = V.inputs();
+  const MatQ I = MatQ::Identity(m, m);
+  return detail::osp_level_bisection([&](double d) {
+    const OspCheck c = check_vhat_osp(V, K, I, rational(d) * I, opt);
+    return c.verdict.holds() && c.verdict.proven();
+  });
 }
 
 }  // namespace hapstab::multidof

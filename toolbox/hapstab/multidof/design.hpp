@@ -15,6 +15,24 @@
 // independently (never trusted from the design LMIs): V-hat's OSP level by Lemma 1 against
 // Gamma^-1 Q_V Gamma^-1, and Theorem 4 with levels computed afresh (check_theorem4).
 //
+//
+// Two routes (DesignPath); the independent checks decide either way:
+//   generic_sdp  the above as one program per CCL step, Q and Y full (nbar + m square): its
+//                Schur complement grows like N^6 (N = 16 took 23 s, N = 32 did not finish in 15 min).
+//   blockwise    when the structured analysis path applies (analysis.hpp, kyp_riccati: X pinned,
+//                Delta_D X = d I) and K is block diagonal in V's blocks: Q_V is fixed at the least
+//                dissipative point's q I (certified exactly), which satisfies (14) with that
+//                point's X and Q_E. (20) and (22) then separate: with Q, Y block diagonal in V's
+//                blocks and Sigma = ((1 + 1/16) q)^-1 I fixed, the CCL of the whole is one small
+//                CCL per block (each block's LMIs are principal submatrices of the whole's). The
+//                checks are block-wise too (Lemma 1 for V-hat holds iff it holds for each block,
+//                P_V = blockdiag(P_V,b)); Theorem 4 is certified by the environment side's exact
+//                certificate at that point and the blocks' storage functions. Fixing Q_V and the
+//                block-diagonal Q, Y restrict the search: a block that finds no point, or a
+//                certificate that fails, falls back to generic_sdp (never a weaker verdict).
+//   automatic    blockwise from kKypMinDof DOF on with the automatic back-end (paper 000's
+//                Sec. VI keeps the generic design), generic_sdp otherwise.
+//
 // Implements: paper 000 (18), (19), (20), (22), (23), (24), Theorem 6.
 #pragma once
 
@@ -25,8 +43,11 @@
 
 namespace hapstab::multidof {
 
+enum class DesignPath { automatic, generic_sdp, blockwise };
+
 struct DesignOptions {
   int max_iterations = 40;
+  DesignPath path = DesignPath::automatic;
   double tolerance = 1e-6;  ///< relative gap of the CCL trace to 2(n + m) + 2m
   lmi::Options lmi;
 };

@@ -7,6 +7,8 @@
 // exact re-check of a Theorem 5 solution on the rational data (15). Not a public API.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,22 @@ struct ExactEnv {
 ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev);
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why);
 
+/// The structured path's least dissipative point of (16) (analysis.hpp, AnalysisPath::kyp_riccati),
+/// exact: X pinned by the facial conditions (min g_i = 1), Q_E = r I, P11 from the Riccati
+/// equation, Q_V = q I; `certified` when exact_recheck passed on the rational data (15) (`why`
+/// says what was checked, or what failed). nullopt when X is not pinned to one direction,
+/// Delta_D X is not a multiple of I, or no Riccati point is found.
+struct KypMinPoint {
+  ExactEnv env;
+  MatQ QV;
+  rational r;
+  bool certified = false;
+  std::string why;
+  int riccati_solves = 0;
+  double numeric_seconds = 0;  ///< the Riccati bisection and point (not the exact check)
+};
+std::optional<KypMinPoint> kyp_min_point(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc);
+
 Eigen::MatrixXd gamma_inv_scale(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& X);
 std::vector<double> gamma_sqrt(const Problem& pb, const Eigen::MatrixXd& X);
 /// Coupling side: P_V with its facial block pinned by X (basis Xk, scalars theta), reduced LMI.
@@ -57,5 +75,12 @@ VhatVars add_vhat(lmi::Program& prog, const StateSpace<rational>& V, const MatQ&
 /// Exact re-check of the coupling side at exact theta, Q_V, P11.
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
                         const MatQ& QV, const MatQ& P11, std::string& why);
+
+/// Lemma 1 for V-hat (check_vhat_osp) with X = Gamma^2 and Q_V = Gamma Delta Gamma given exactly.
+OspCheck check_vhat_lemma1(const StateSpace<rational>& V, const MatQ& K, const MatQ& X, const MatQ& QV,
+                           const lmi::Options& opt);
+/// vhat_osp_level's bisection on a predicate "Lemma 1 certified exactly at level delta" (delta a
+/// dyadic double).
+OspLevel osp_level_bisection(const std::function<bool(double)>& certified_at);
 
 }  // namespace hapstab::multidof::detail
