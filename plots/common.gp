@@ -8,14 +8,16 @@
 if (!exists("fmt")) fmt = 'png'
 if (!exists("datadir")) datadir = 'out/data'
 if (!exists("outdir")) outdir = 'out/figures'
-if (fmt eq 'png') { set terminal pngcairo size 1600,1000 enhanced font 'DejaVu Sans,22' linewidth 2; set output outdir.'/'.name.'.png' }
 # wide = 1 (set before loading this file): a figure of several panels whose PDF / LaTeX version
 # needs 1.5x the canvas at the same font size (a two-column figure*)
+# tall = 1: two rows of panels, 1.6x the height in every format
 if (!exists("wide")) wide = 0
-pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0)
-if (fmt eq 'pdf') { set terminal pdfcairo size pdf_w*1in,pdf_w*0.625in enhanced font 'DejaVu Sans,10' linewidth 1.5; set output outdir.'/'.name.'.pdf' }
-if (fmt eq 'svg') { set terminal svg size 1200,750 enhanced font 'DejaVu Sans,16' linewidth 2 background rgb 'white'; set output outdir.'/'.name.'.svg' }
-if (fmt eq 'tex') { set terminal cairolatex pdf size tex_w*1in,tex_w*0.62in linewidth 1.5; set output outdir.'/'.name.'.tex' }
+if (!exists("tall")) tall = 0
+pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0); hf = (tall ? 1.6 : 1.0)
+if (fmt eq 'png') { set terminal pngcairo size 1600,1000*hf enhanced font 'DejaVu Sans,22' linewidth 2; set output outdir.'/'.name.'.png' }
+if (fmt eq 'pdf') { set terminal pdfcairo size pdf_w*1in,pdf_w*0.625*hf*1in enhanced font 'DejaVu Sans,10' linewidth 1.5; set output outdir.'/'.name.'.pdf' }
+if (fmt eq 'svg') { set terminal svg size 1200,750*hf enhanced font 'DejaVu Sans,16' linewidth 2 background rgb 'white'; set output outdir.'/'.name.'.svg' }
+if (fmt eq 'tex') { set terminal cairolatex pdf size tex_w*1in,tex_w*0.62*hf*1in linewidth 1.5; set output outdir.'/'.name.'.tex' }
 tex = (fmt eq 'tex')
 # font sizes relative to the terminal's own (22 pt png, 10 pt pdf/tex, 16 pt svg), for keys,
 # labels and notes: `font small`, `font note` (an absolute ',16' would be tiny in one format
@@ -26,7 +28,7 @@ note = sprintf(',%g', 0.65 * basefont)
 # one font size (em) as a fraction of the canvas width / height, for margins that keep their room
 # for text in every format: `set lmargin at screen 6*emx`
 emx = basefont / (fmt eq 'png' ? 1600.0 : fmt eq 'svg' ? 1200.0 : fmt eq 'pdf' ? 72 * pdf_w : 72 * tex_w)
-emy = basefont / (fmt eq 'png' ? 1000.0 : fmt eq 'svg' ? 750.0 : fmt eq 'pdf' ? 45 * pdf_w : 44.64 * tex_w)
+emy = basefont / (hf * (fmt eq 'png' ? 1000.0 : fmt eq 'svg' ? 750.0 : fmt eq 'pdf' ? 45 * pdf_w : 44.64 * tex_w))
 set border lw 1
 set grid lc rgb '#d0d0d0' lw 0.5
 set key box opaque samplen 2 spacing 1.1

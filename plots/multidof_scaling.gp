@@ -8,9 +8,12 @@
 # (bench/contact_scene.py), log-log against N: before issue 33 (the generic SDP on the built-in
 # IPM, recorded with the after series in one run: bench/multidof_contact_before.dat), after (the
 # structured KYP path, live), its
-# Riccati share, DSDP, and an N^3 reference line.
+# Riccati share, DSDP, and an N^3 reference line; (d) Theorem 6's design of their coupling (one
+# first-order SISO block per device), library time: the generic CCL (recorded with the after
+# series in one run: bench/multidof_design_before.dat) and the block-wise path (live), N^3 line.
 name = 'multidof_scaling'
-wide = 1  # three panels: the PDF and LaTeX versions get a two-column canvas
+wide = 1  # four panels: the PDF and LaTeX versions get a two-column canvas, two rows
+tall = 1
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
 if (!exists("timing")) { timing = ''; timing_tex = '' }
@@ -19,7 +22,9 @@ fii = datadir.'/multidof_scaling_case_ii.dat'
 sa = datadir.'/multidof_stages_auto.dat'
 sd = datadir.'/multidof_stages_dsdp.dat'
 sb = datadir.'/multidof_stages_before.dat'
-set multiplot layout 1,3 title (tex ? 'Theorem 5 as the number of devices grows' : 'Theorem 5 as the number of devices grows')
+da = datadir.'/multidof_design_auto.dat'
+db = datadir.'/multidof_design_before.dat'
+set multiplot layout 2,2 title 'Theorems 5 and 6 as the number of devices grows'
 if (strlen(timing) > 0) { set label 99 (tex ? timing_tex : timing) at screen 0.01, screen 0.02 left font note }
 set bmargin 5
 set title '(a) verdict time, random env.' font small
@@ -57,4 +62,14 @@ plot sb u 1:($2+$3+$4) w lp ls 2 t 'generic SDP, recorded', \
      sa u 1:3 w lp ls 3 t 'its Riccati part', \
      sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP', \
      [16:128] t16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
+set title '(d) contact scenes, Theorem 6 design' font small
+set xrange [1:200]
+set yrange [1e-3:1e3]
+set key top left Left reverse font note spacing 1.0 samplen 1
+stats da u ($1 == 16 ? $2 : NaN) nooutput
+d16 = STATS_max
+plot db u 1:2 w lp ls 2 t 'generic CCL, recorded', \
+     db u 1:4 w lp ls 4 t 'block-wise, same run', \
+     da u 1:2 w lp ls 1 lw 2 t 'block-wise, this run', \
+     [16:128] d16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
 unset multiplot
