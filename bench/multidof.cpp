@@ -129,39 +129,11 @@ BENCHMARK(BM_Scaling)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-// ---- the contact scenes of bench/contact_scene.py (N devices, N 1-DOF operators, paper
-// 000's Fig. 5 environment with N contact points on one mass, case ii), the whole certified
+// ---- the contact scenes of bench/contact_scene.py (example::contact_scene: N devices, N 1-DOF
+// operators, paper 000's Fig. 5 environment with N contact points on one mass, case ii), the whole certified
 // analysis (full mode: the margin program, then the least dissipative coupling), per stage:
 // realisation (scene -> minimal E), SDP, certificate (Ê, facial reduction, exact checks), for
 // the built-in IPM (auto's first choice) beside DSDP (N <= 16: 226 s at N = 32).
-std::string contact_scene(int n) {
-  std::ostringstream s;
-  s << "[scene]\nname = \"contact scene\"\nT = \"0.01\"\n[parameters]\nM = \"0.3\"\nk = \"1000\"\nB = \"5\"\n";
-  const char* b[] = {"1", "2", "3/2", "5/2"};
-  for (int i = 1; i <= n; ++i) s << "k" << i << " = \"" << 500 + 100 * ((i - 1) % 4) << "\"\nB" << i << " = \"" << b[(i - 1) % 4] << "\"\n";
-  const char* g[] = {"0.1", "0.05", "0.08", "0.06"};
-  for (int i = 1; i <= n; ++i) s << "[[device]]\nname = \"d" << i << "\"\nm = \"1/10\"\nb = \"1.37\"\n";
-  for (int i = 1; i <= n; ++i)
-    s << "[[operator]]\nname = \"H" << i << "\"\ndofs = [\"d" << i << "\"]\ntf = \"" << g[(i - 1) % 4] << "*(s^2+5*s+10)/(s^2+s+1)\"\n";
-  std::string den = "(M*s^2 + (B", ks = "k";
-  for (int i = 1; i <= n; ++i) den += "+B" + std::to_string(i), ks += "+k" + std::to_string(i);
-  den += ")*s + " + ks + ")";
-  s << "[environment]\ndomain = \"s\"\nmethod = \"backward_euler\"\ntf = [";
-  for (int i = 1; i <= n; ++i) {
-    const std::string ci = "(k" + std::to_string(i) + " + B" + std::to_string(i) + "*s)";
-    s << (i > 1 ? ", [" : "[");
-    for (int j = 1; j <= n; ++j) {
-      const std::string cj = "(k" + std::to_string(j) + " + B" + std::to_string(j) + "*s)";
-      s << (j > 1 ? ", \"" : "\"") << (i == j ? ci + " - " + ci + "^2/" + den : "-" + ci + "*" + cj + "/" + den) << "\"";
-    }
-    s << "]";
-  }
-  s << "]\n[multidof]\nosp = [";
-  for (int i = 1; i <= n; ++i) s << (i > 1 ? ", " : "") << "\"1.37\"";
-  s << "]\n";
-  return s.str();
-}
-
 // mode 0: automatic (the structured KYP path of analysis.hpp from 8 DOF on), 1: DSDP (generic
 // programs), 2: the generic programs on the built-in IPM (AnalysisPath::generic_sdp: the path
 // before issue 33; N <= 48 here, about 30 s there, more than 300 s at N = 64).
@@ -171,7 +143,7 @@ void BM_ContactScene(benchmark::State& st) {
   lmi::Options opt;
   if (mode == 1) opt.backend = lmi::Backend::dsdp;
   const AnalysisPath path = mode == 2 ? AnalysisPath::generic_sdp : AnalysisPath::automatic;
-  const std::string text = contact_scene(N);
+  const std::string text = example::contact_scene(N);
   double realisation = 0, sdp = 0, certificate = 0;
   AnalysisResult r;
   for (auto _ : st) {
@@ -198,17 +170,14 @@ BENCHMARK(BM_ContactScene)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-// Theorem 6 on the contact scene with one first-order SISO coupling block per device (as
-// bench/contact_scene.py writes): mode 0 automatic (the block-wise path of design.hpp from 8 DOF
+// Theorem 6 on the contact scene with one first-order SISO coupling block per device: mode 0 automatic (the block-wise path of design.hpp from 8 DOF
 // on), 1 the generic CCL (DesignPath::generic_sdp: the path before issue 33; 5.7 s at N = 8,
 // 55 s at N = 16, more than 15 min at N = 32). Library time only (the CLI also simulates).
 void BM_ContactDesign(benchmark::State& st) {
   const int N = static_cast<int>(st.range(0));
   DesignOptions opt;
   opt.path = st.range(1) == 1 ? DesignPath::generic_sdp : DesignPath::automatic;
-  auto sp = problem_from_scene(scene::parse_scene(contact_scene(N), "contact scene"));
-  sp.problem.coupling.mbar.assign(static_cast<size_t>(N), 1);
-  sp.problem.coupling.nbar.assign(static_cast<size_t>(N), 1);
+  const auto sp = problem_from_scene(scene::parse_scene(example::contact_scene(N), "contact scene"));
   DesignResult r;
   for (auto _ : st) r = design(sp.problem, opt);
   st.counters["certified"] = r.verdict.holds() && r.verdict.proven();

@@ -366,33 +366,6 @@ TEST(MultidofAnalysis, StructuredKypPathAgreesWithGenericSdp) {
 
 // ---- issue 33: Theorem 6 block by block (DesignPath::blockwise) ----
 namespace {
-// N active contacts (negative contact damping B_i = -3, stable through the ground damper B =
-// 200): the environment lacks passivity, so the least dissipative coupling needs Q_V = q I with
-// q about 0.8 (d = 1.37), not the vanishing q of the passive contact scenes.
-Problem active_contact_problem(int N) {  // (mechanical_environment_be_ss refuses negative dampers)
-  std::ostringstream t;
-  t << "[scene]\nname = \"active contacts\"\nT = \"1/100\"\n";
-  for (int i = 1; i <= N; ++i) t << "[[device]]\nname = \"d" << i << "\"\nm = \"1/10\"\nb = \"1.37\"\n";
-  for (int i = 1; i <= N; ++i) t << "[[operator]]\nname = \"H" << i << "\"\ndofs = [\"d" << i << "\"]\ntf = \"1/10\"\n";
-  std::string den = "(3/10*s^2 + (200";
-  for (int i = 1; i <= N; ++i) den += "-3";
-  den += ")*s + 1000";
-  for (int i = 1; i <= N; ++i) den += "+" + std::to_string(500 + 100 * ((i - 1) % 4));
-  den += ")";
-  auto c = [](int i) { return "(" + std::to_string(500 + 100 * ((i - 1) % 4)) + " - 3*s)"; };
-  t << "[environment]\ndomain = \"s\"\nmethod = \"backward_euler\"\ntf = [";
-  for (int i = 1; i <= N; ++i) {
-    t << (i > 1 ? ", [" : "[");
-    for (int j = 1; j <= N; ++j)
-      t << (j > 1 ? ", \"" : "\"") << (i == j ? c(i) + " - " + c(i) + "^2/" + den : "-" + c(i) + "*" + c(j) + "/" + den) << "\"";
-    t << "]";
-  }
-  t << "]\n[multidof]\nosp = [";
-  for (int i = 1; i <= N; ++i) t << (i > 1 ? ", " : "") << "\"1.37\"";
-  t << "]\n";
-  return problem_from_scene(scene::parse_scene(t.str(), "active contacts")).problem;
-}
-
 Problem with_siso_coupling(Problem pb) {  // one first-order SISO block per device
   const size_t N = pb.structure.operators.size();
   pb.coupling.mbar.assign(N, 1);
@@ -415,7 +388,7 @@ TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
   };
   const std::vector<Case> cases{
       {"N = 3 passive contacts (q vanishes)", with_siso_coupling(contact_problem(3, 1, Q(1), {}, q("1.37"))), true},
-      {"N = 3 active contacts (q about 0.8)", with_siso_coupling(active_contact_problem(3)), true},
+      {"N = 3 active contacts (q about 0.8)", problem_from_scene(scene::parse_scene(example::contact_scene(3, true), "active contacts")).problem, true},
       {"N = 3 miscalibrated: X pinned off I, falls back",
        with_siso_coupling(contact_problem(3, 3, Q(1), {Q(1, 2), Q(3, 2), Q(2)}, q("1.37"))), false},
   };

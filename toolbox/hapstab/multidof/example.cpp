@@ -1,5 +1,7 @@
 #include "hapstab/multidof/example.hpp"
 
+#include <sstream>
+
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 
@@ -78,6 +80,37 @@ Problem problem(int which_case, bool perturbed) {
   p.coupling.mbar = {1, 1};
   p.coupling.nbar = {1, 1};
   return p;
+}
+
+
+std::string contact_scene(int n, bool active) {
+  std::ostringstream s;
+  s << "[scene]\nname = \"contact scene\"\nT = \"0.01\"\n[parameters]\nM = \"0.3\"\nk = \"1000\"\nB = \"" << (active ? "200" : "5")
+    << "\"\n";
+  const char* b[] = {"1", "2", "3/2", "5/2"};
+  for (int i = 1; i <= n; ++i)
+    s << "k" << i << " = \"" << 500 + 100 * ((i - 1) % 4) << "\"\nB" << i << " = \"" << (active ? "-3" : b[(i - 1) % 4]) << "\"\n";
+  const char* g[] = {"0.1", "0.05", "0.08", "0.06"};
+  for (int i = 1; i <= n; ++i) s << "[[device]]\nname = \"d" << i << "\"\nm = \"1/10\"\nb = \"1.37\"\n";
+  for (int i = 1; i <= n; ++i)
+    s << "[[operator]]\nname = \"H" << i << "\"\ndofs = [\"d" << i << "\"]\ntf = \"" << g[(i - 1) % 4] << "*(s^2+5*s+10)/(s^2+s+1)\"\n";
+  std::string den = "(M*s^2 + (B", ks = "k";
+  for (int i = 1; i <= n; ++i) den += "+B" + std::to_string(i), ks += "+k" + std::to_string(i);
+  den += ")*s + " + ks + ")";
+  s << "[environment]\ndomain = \"s\"\nmethod = \"backward_euler\"\ntf = [";
+  for (int i = 1; i <= n; ++i) {
+    const std::string ci = "(k" + std::to_string(i) + " + B" + std::to_string(i) + "*s)";
+    s << (i > 1 ? ", [" : "[");
+    for (int j = 1; j <= n; ++j) {
+      const std::string cj = "(k" + std::to_string(j) + " + B" + std::to_string(j) + "*s)";
+      s << (j > 1 ? ", \"" : "\"") << (i == j ? ci + " - " + ci + "^2/" + den : "-" + ci + "*" + cj + "/" + den) << "\"";
+    }
+    s << "]";
+  }
+  std::string ones, osp;
+  for (int i = 1; i <= n; ++i) ones += (i > 1 ? ", 1" : "1"), osp += (i > 1 ? ", \"1.37\"" : "\"1.37\"");
+  s << "]\n[multidof]\nosp = [" << osp << "]\n[multidof.coupling]\nmbar = [" << ones << "]\nnbar = [" << ones << "]\n";
+  return s.str();
 }
 
 }  // namespace hapstab::multidof::example

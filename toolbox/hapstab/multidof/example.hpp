@@ -11,8 +11,16 @@
 //   the paper's controller (27) and the decentralised coupling structure N-bar = 2,
 //   n-bar_i = m-bar_i = 1.
 //
+// The scaling scenes (issue 15) generalise Fig. 5 to N contact points on the one mass:
+// contact_scene(N) is the scene TOML of bench/contact_scene.py (N mass-damper devices, N 1-DOF
+// operators, case ii, one first-order SISO coupling block per device). `active`: every contact
+// damper is -3 (ground damper 200 keeps E stable), so E lacks passivity and the least
+// dissipative coupling needs Q_V = q I with q about 0.8 (the passive scene's q vanishes).
+//
 // Implements: paper 000 (25), (26), (27), Sec. VI.
 #pragma once
+
+#include <string>
 
 #include "hapstab/multidof/analysis.hpp"
 
@@ -26,5 +34,6 @@ Structure structure(int which_case);        ///< 1 = case i (25), 2 = case ii (2
 TransferMatrix operator_H(int which_case);  ///< Sec. VI H(s) (case 1) or its diagonal (case 2)
 StateSpace<rational> controller27();        ///< (27), decimals read exactly
 Problem problem(int which_case, bool perturbed);
+std::string contact_scene(int N, bool active = false);
 
 }  // namespace hapstab::multidof::example
