@@ -366,6 +366,24 @@ TEST(MultidofAnalysis, StructuredKypPathAgreesWithGenericSdp) {
 
 // ---- issue 33: Theorem 6 block by block (DesignPath::blockwise) ----
 namespace {
+Problem with_siso_coupling(Problem pb);
+
+// Two uncoupled walls K_i + B (z - 1)/(T z) (K = 100, 200; B = 1; T = 0.01): E(1) is diagonal, so
+// the facial conditions leave g_1 and g_2 free and the structured path does not apply.
+Problem two_walls() {
+  Problem pb;
+  pb.E.T = Q(1, 100);
+  pb.E.A = MatQ::Zero(2, 2);
+  pb.E.B = MatQ::Identity(2, 2);
+  pb.E.C = Q(-100) * MatQ::Identity(2, 2);
+  pb.E.D = MatQ::Zero(2, 2);
+  pb.E.D(0, 0) = Q(200);
+  pb.E.D(1, 1) = Q(300);
+  for (int j = 0; j < 2; ++j)
+    pb.structure.operators.push_back(Operator{"H" + std::to_string(j), 1, {device("d" + std::to_string(j), 1, q("1.37"))}});
+  return with_siso_coupling(pb);
+}
+
 Problem with_siso_coupling(Problem pb) {  // one first-order SISO block per device
   const size_t N = pb.structure.operators.size();
   pb.coupling.mbar.assign(N, 1);
@@ -377,8 +395,7 @@ Problem with_siso_coupling(Problem pb) {  // one first-order SISO block per devi
 // The block-wise design returns a V whose every independent check passes exactly, and the
 // generic program of Theorem 4 -- over all of P_E, P_V, X, Q_E, Q_V, not the block-wise
 // certificate's fixed point -- proves the same V stabilising. Where the structured analysis
-// path does not apply (X pinned off a multiple of I: Delta_D X != d I) the design falls back to
-// the generic CCL. The generic design never contradicts it (on the active contacts its first
+// path does not apply (X not pinned to one direction) the design falls back to the generic CCL. The generic design never contradicts it (on the active contacts its first
 // CCL step stops early on the IPM, "lost positive definiteness": undecided, no V).
 TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
   struct Case {
@@ -389,8 +406,9 @@ TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
   const std::vector<Case> cases{
       {"N = 3 passive contacts (q vanishes)", with_siso_coupling(contact_problem(3, 1, Q(1), {}, q("1.37"))), true},
       {"N = 3 active contacts (q about 0.8)", problem_from_scene(scene::parse_scene(example::contact_scene(3, true), "active contacts")).problem, true},
-      {"N = 3 miscalibrated: X pinned off I, falls back",
-       with_siso_coupling(contact_problem(3, 3, Q(1), {Q(1, 2), Q(3, 2), Q(2)}, q("1.37"))), false},
+      {"N = 3 miscalibrated: X pinned off I, Delta_D X diagonal, not a multiple of I (Q_V diagonal)",
+       with_siso_coupling(contact_problem(3, 3, Q(1), {Q(1, 2), Q(3, 2), Q(2)}, q("1.37"))), true},
+      {"two independent walls: E(1) diagonal, X not pinned (g_1, g_2 free), falls back", two_walls(), false},
   };
   for (const auto& c : cases) {
     DesignOptions o;

@@ -695,25 +695,35 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 // attained along Q_E = r g I, ||Q_V|| -> g d r / (d - r) (r >= 0; 0 when r < 0), least at g = 1 and
 // the least r with the first LMI feasible. That r is found by bisection on the Riccati
 // equation's solvability (lmi/kyp.hpp), the point at r slightly above it re-checked exactly.
-// nullopt when Delta_D X_1 is not a multiple of I or no Riccati point is found there (the caller
-// then runs the generic program; design.cpp then designs by the generic CCL).
-std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px) {
+// `diagonal`: Delta_D X = diag(d_i) need not be a multiple of I. The same bisection along
+// Q_E = r I (r < min d_i) then gives the certified point Q_V = diag(r d_i / (d_i - r)): a
+// coupling requirement, not necessarily the least one (design.cpp's block-wise path uses it).
+// nullopt when Delta_D X is not a multiple of I (not diagonal, with `diagonal`), or no Riccati
+// point is found there (the caller then runs the generic program; design.cpp then designs by
+// the generic CCL).
+std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px,
+                                                   bool diagonal) {
   const int m = pb.structure.m();
   const MatQ DX = pb.structure.delta_D() * px.X;
-  if (DX != MatQ(DX(0, 0) * MatQ::Identity(m, m))) return std::nullopt;
-  const rational dq = DX(0, 0);
+  const bool scalar = DX == MatQ(DX(0, 0) * MatQ::Identity(m, m));
+  if (!scalar && !(diagonal && DX.isDiagonal(0))) return std::nullopt;
+  rational dq = DX(0, 0);
+  for (int i = 1; i < m; ++i) dq = std::min(dq, DX(i, i));
   const double d = to_real<double>(dq);
   auto data = [&](double r) {
     lmi::KypData k = px.kyp;
     k.R -= r * MatrixXd::Identity(m, m);
     return k;
   };
-  // lo: infeasible (-R must be > 0, i.e. r > lambda_max(F22)); hi = d: feasible (the verdict)
+  // lo: infeasible (-R must be > 0, i.e. r > lambda_max(F22)); hi = d: feasible when Delta_D X = d I
+  // (the verdict), checked otherwise
   Eigen::SelfAdjointEigenSolver<MatrixXd> es(0.5 * (px.kyp.R + px.kyp.R.transpose()), Eigen::EigenvaluesOnly);
   double lo = es.eigenvalues()(m - 1), hi = d;
   const double width = hi - lo;
+  if (!(width > 0)) return std::nullopt;
   const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
+  if (!scalar && !lmi::kyp_riccati_point(data(hi - 1e-6 * width), 1e-9 * width).found) return std::nullopt;
   while (hi - lo > 1e-7 * width && solves < 60) {
     const double mid = 0.5 * (lo + hi);
     ++solves;
@@ -721,6 +731,7 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   }
   // the point: r_c a little above the least r, where the LMI has room for a rounded point
   const rational rc = lmi::round_dyadic(std::min(d, hi + 1e-6 * width), 30);
+  if (!scalar && !(rc < dq)) return std::nullopt;
   const lmi::KypData k = data(to_real<double>(rc));
   const lmi::KypPoint kp = lmi::kyp_interior_point(k);
   if (!kp.found) return std::nullopt;
@@ -731,16 +742,19 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   p.env.theta = {px.theta};
   p.env.P11 = rounded_p11(k, kp);
   p.env.QE = rc * MatQ::Identity(m, m);
-  const rational f = rc * dq / (dq - rc);  // Q_E + Q_E (d I - Q_E)^-1 Q_E = f I
   const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, d), 20);
-  p.QV = ((f > 0 ? f : rational(0)) + e) * MatQ::Identity(m, m);
+  p.QV = MatQ::Zero(m, m);
+  for (int i = 0; i < m; ++i) {
+    const rational f = rc * DX(i, i) / (DX(i, i) - rc);  // Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E, channel i
+    p.QV(i, i) = (f > 0 ? f : rational(0)) + e;
+  }
   p.certified = exact_recheck(pb, sp, p.env, p.QV, p.why);
   p.riccati_solves = solves + kp.riccati_solves;
   return p;
 }
 
 bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
-  const std::optional<KypMinPoint> p = least_dissipative_point(pb, sp, px);
+  const std::optional<KypMinPoint> p = least_dissipative_point(pb, sp, px, false);
   if (!p) return false;  // no point to report: the generic program decides
   res.sdp_seconds += p->numeric_seconds;
   res.min_found = true;
@@ -766,7 +780,7 @@ bool use_kyp(const Problem& pb, const lmi::Options& opt, AnalysisPath path) {
 std::optional<detail::KypMinPoint> detail::kyp_min_point(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc) {
   const std::optional<Pinned> px = pinned_x(pb, sp, fc);
   if (!px) return std::nullopt;
-  return least_dissipative_point(pb, sp, *px);
+  return least_dissipative_point(pb, sp, *px, true);
 }
 
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode, AnalysisPath path) {

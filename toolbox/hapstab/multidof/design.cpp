@@ -1,5 +1,6 @@
 #include "hapstab/multidof/design.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -309,6 +310,18 @@ bool block_diagonal_in(const MatQ& M, const std::vector<CouplingBlock>& blocks) 
 
 MatQ square(const MatQ& M, const CouplingBlock& b) { return M.block(b.c, b.c, b.m, b.m); }
 
+// "q = x" for Q_V = x I, "q_i in [lo, hi]" otherwise (diagonal Q_V).
+std::string qv_range(const MatQ& QV) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (Eigen::Index i = 0; i < QV.rows(); ++i) lo = std::min(lo, to_real<double>(QV(i, i))), hi = std::max(hi, to_real<double>(QV(i, i)));
+  std::ostringstream o;
+  if (lo == hi)
+    o << "q = " << lo;
+  else
+    o << "q_i in [" << lo << ", " << hi << "]";
+  return o.str();
+}
+
 StateSpace<rational> block_of(const StateSpace<rational>& V, const CouplingBlock& b) {
   StateSpace<rational> Vb;
   Vb.T = V.T;
@@ -335,7 +348,7 @@ Verdict all_blocks(const std::vector<Verdict>& v, const std::string& what) {
 }
 
 // The independent checks of the block-wise design (the names of verify_coupling's): Lemma 1 for
-// each block of V-hat at the least dissipative point's X and Q_V; V-hat's scalar OSP level as the
+// each block of V-hat at the structured path's X and Q_V; V-hat's scalar OSP level as the
 // least of its blocks'; Theorem 4 from the environment side's exact certificate at that point and
 // the blocks' storage functions; V's stability block by block. nullopt when the block-wise
 // Theorem 4 certificate does not hold (the caller then runs verify_coupling).
@@ -373,13 +386,13 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
   });
   out.push_back(osp_level_item(level));
   std::ostringstream o;
-  o << "block-wise certificate at the structured path's least dissipative point (X pinned by the facial conditions, "
+  o << "block-wise certificate at the structured path's point (X pinned by the facial conditions, "
        "min g_i = 1; Q_E = r I with r = "
-    << to_real<double>(mp.r) << "; P11 from a Riccati equation; Q_V = q I with q = " << to_real<double>(mp.QV(0, 0))
+    << to_real<double>(mp.r) << "; P11 from a Riccati equation; Q_V diagonal, " << qv_range(mp.QV)
     << "): environment side: " << mp.why << " | coupling side: Lemma 1 for Vhat^Gamma at that X and Q_V, block by block "
     << "(the first item) | gamma =";
   for (double g : gamma_sqrt(pb, to_double(mp.env.X))) o << " " << g;
-  out.push_back({"Theorem 4 / condition (14) with computed levels (block-wise: X, Q_E, Q_V at the least dissipative "
+  out.push_back({"Theorem 4 / condition (14) with computed levels (block-wise: X, Q_E, Q_V at the structured path's "
                  "point; P_E, P_V found)",
                  {Outcome::holds, Status::exact, o.str()}});
   out.push_back(schur_item(Ab));
@@ -399,8 +412,7 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   if (!block_diagonal_in(K, blocks)) return std::nullopt;
   const std::optional<KypMinPoint> mp = kyp_min_point(pb, sp, fc);
   if (!mp || !mp->certified) return std::nullopt;
-  // each block designed for Q_V = (1 + kBlockwiseMargin) q I, verified at q I
-  const double sigma = 1.0 / to_real<double>(mp->QV(0, 0) * (1 + kBlockwiseMargin));
+  // each block designed for (1 + kBlockwiseMargin) Q_V (diagonal), verified at Q_V
   const double T = to_real<double>(pb.T());
   const MatrixXd X = to_double(mp->env.X);
   const Eigen::VectorXd gamma = X.diagonal().cwiseSqrt();
@@ -417,7 +429,7 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   for (const CouplingBlock& b : blocks) {
     const CouplingStructure cb{{b.m}, {b.n}};
     const MatrixXd Kb = to_double(square(K, b));
-    const MatrixXd Sigma = sigma * MatrixXd::Identity(b.m, b.m);
+    const MatrixXd Sigma = to_double(MatQ(square(mp->QV, b) * (1 + kBlockwiseMargin))).inverse();
     const CclRun run = run_ccl(
         [&](Program& prog) {
           DesignVars d;
@@ -454,9 +466,9 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   const bool blockwise_certificate = checks.has_value();
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, res.gamma_sqrt, res.Q_V, opt.lmi);
   std::ostringstream o;
-  o << "block-wise design: the structured path's least dissipative Q_V = q I (q = " << to_real<double>(mp->QV(0, 0))
+  o << "block-wise design: Q_V from the structured path (the least along Q_E = r I; diagonal, " << qv_range(mp->QV)
     << ", certified), then CCL for each of the " << blocks.size() << " blocks of V with Q, Y block diagonal and Q_V fixed at (1 + "
-    << to_real<double>(kBlockwiseMargin) << ") q I; "
+    << to_real<double>(kBlockwiseMargin) << ") times it; "
     << (res.converged ? "CCL converged in every block" : "CCL did not reach the trace target in " + std::to_string(unconverged) + " blocks")
     << (blockwise_certificate ? "" : "; the block-wise certificate did not hold, checked by the generic programs");
   res.verdict = decisive_verdict(res.verification, o.str());

@@ -48,8 +48,10 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
 /// The structured path's least dissipative point of (16) (analysis.hpp, AnalysisPath::kyp_riccati),
 /// exact: X pinned by the facial conditions (min g_i = 1), Q_E = r I, P11 from the Riccati
 /// equation, Q_V = q I; `certified` when exact_recheck passed on the rational data (15) (`why`
-/// says what was checked, or what failed). nullopt when X is not pinned to one direction,
-/// Delta_D X is not a multiple of I, or no Riccati point is found.
+/// says what was checked, or what failed). Where Delta_D X = diag(d_i) is diagonal but not a
+/// multiple of I, the point of the same bisection along Q_E = r I, Q_V = diag(r d_i/(d_i - r))
+/// (certified, not necessarily least). nullopt when X is not pinned to one direction, Delta_D X
+/// is not diagonal, or no Riccati point is found.
 struct KypMinPoint {
   ExactEnv env;
   MatQ QV;
