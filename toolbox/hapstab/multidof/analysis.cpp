@@ -53,40 +53,76 @@ void Problem::validate(bool with_coupling) const {
 
 namespace {
 
-// Rational nullspace basis of the rows of A (k x N), by reduced row echelon form.
-std::vector<std::vector<rational>> nullspace(MatQ A, int N) {
-  std::vector<int> pivcol;
-  Eigen::Index r = 0;
-  for (int c = 0; c < N && r < A.rows(); ++c) {
-    Eigen::Index p = r;
-    while (p < A.rows() && A(p, c) == 0) ++p;
-    if (p == A.rows()) continue;
-    A.row(r).swap(A.row(p));
-    const rational piv = A(r, c);
-    A.row(r) /= piv;
-    for (Eigen::Index i = 0; i < A.rows(); ++i)
-      if (i != r && A(i, c) != 0) {
-        const rational f = A(i, c);
-        A.row(i) -= f * A.row(r);
+// The rational basis of {g in Q^N : X(g) G symmetric for every G in `gains`}, X(g) the block
+// diagonal with g_b I on operator b's block (blk[i] = the operator of DOF i). Each condition
+// (X G)_ij = (X G)_ji (i < j) reads g_p G_ij - g_q G_ji = 0, p = blk[i], q = blk[j]: at most two
+// unknowns. So the conditions are a graph on the operators: an edge a g_p = b g_q (a, b != 0)
+// fixes the ratio g_q / g_p; a condition with one nonzero coefficient (or p = q with
+// G_ij != G_ji) forces g_p = 0, and so does a cycle whose ratios do not multiply to 1. Each
+// connected component without such a contradiction contributes one basis vector w (the ratios,
+// w = 1 at its largest column); the others contribute nothing. O(m^2) work where the rational
+// RREF of the m(m-1)/2 x N condition matrix took O(m^2 N^2).
+//
+// The basis is the one the RREF gives, vector for vector (tests/multidof compares both): the
+// RREF of a component's rows (rank = size - 1) has its largest column free, so its null vector
+// is w with w = 1 there; vectors come in the order of their free columns, and each is signed so
+// that its first nonzero entry is positive (g >= 1 wants positive directions).
+std::vector<std::vector<rational>> symmetric_gain_basis(const std::vector<int>& blk, int N,
+                                                        const std::vector<MatQ>& gains) {
+  struct Edge {
+    int to;
+    rational a, b;  // a g_from = b g_to
+  };
+  std::vector<std::vector<Edge>> adj(static_cast<size_t>(N));
+  std::vector<char> forced_zero(static_cast<size_t>(N), 0);
+  const int m = static_cast<int>(blk.size());
+  for (const auto& G : gains)
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) {
+        const int p = blk[static_cast<size_t>(i)], q = blk[static_cast<size_t>(j)];
+        const rational &a = G(i, j), &b = G(j, i);
+        if (p == q) {
+          if (a != b) forced_zero[static_cast<size_t>(p)] = 1;
+        } else if (a == 0 || b == 0) {
+          if (a != 0) forced_zero[static_cast<size_t>(p)] = 1;
+          if (b != 0) forced_zero[static_cast<size_t>(q)] = 1;
+        } else {
+          adj[static_cast<size_t>(p)].push_back({q, a, b});
+          adj[static_cast<size_t>(q)].push_back({p, b, a});
+        }
       }
-    pivcol.push_back(c);
-    ++r;
-  }
   std::vector<std::vector<rational>> basis;
-  for (int f = 0; f < N; ++f) {
-    if (std::find(pivcol.begin(), pivcol.end(), f) != pivcol.end()) continue;
-    std::vector<rational> v(static_cast<size_t>(N), rational(0));
-    v[static_cast<size_t>(f)] = 1;
-    for (size_t k = 0; k < pivcol.size(); ++k) v[static_cast<size_t>(pivcol[k])] = -A(static_cast<Eigen::Index>(k), f);
-    // scale so that the first nonzero entry is positive (g >= 1 wants positive directions)
-    for (auto& x : v)
-      if (x != 0) {
-        if (x < 0)
-          for (auto& y : v) y = -y;
-        break;
+  std::vector<rational> w(static_cast<size_t>(N));
+  std::vector<char> seen(static_cast<size_t>(N), 0);
+  // From the largest column down: an unseen column is the largest of its component.
+  for (int f = N - 1; f >= 0; --f) {
+    if (seen[static_cast<size_t>(f)]) continue;
+    std::vector<int> comp{f};
+    seen[static_cast<size_t>(f)] = 1;
+    w[static_cast<size_t>(f)] = 1;
+    bool zero = false;
+    for (size_t k = 0; k < comp.size(); ++k) {
+      const int u = comp[k];
+      zero = zero || forced_zero[static_cast<size_t>(u)];
+      for (const Edge& e : adj[static_cast<size_t>(u)]) {
+        const size_t v = static_cast<size_t>(e.to);
+        if (!seen[v]) {
+          seen[v] = 1;
+          w[v] = e.a * w[static_cast<size_t>(u)] / e.b;
+          comp.push_back(e.to);
+        } else if (!zero && e.a * w[static_cast<size_t>(u)] != e.b * w[v]) {
+          zero = true;  // the ratios around a cycle do not multiply to 1
+        }
       }
+    }
+    if (zero) continue;
+    std::vector<rational> v(static_cast<size_t>(N), rational(0));
+    const int first = *std::min_element(comp.begin(), comp.end());
+    const bool flip = w[static_cast<size_t>(first)] < 0;
+    for (int c : comp) v[static_cast<size_t>(c)] = flip ? rational(-w[static_cast<size_t>(c)]) : w[static_cast<size_t>(c)];
     basis.push_back(std::move(v));
   }
+  std::reverse(basis.begin(), basis.end());  // in the order of their largest (free) columns
   return basis;
 }
 
@@ -108,23 +144,9 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
   std::vector<int> blk;
   for (int i = 0; i < N; ++i)
     for (int k = 0; k < sizes[static_cast<size_t>(i)]; ++k) blk.push_back(i);
-  std::vector<std::vector<rational>> rows;
   std::vector<MatQ> gains{fc.E1};
   for (const auto& g : extra) gains.push_back(g);
-  for (const auto& Gm : gains)
-    for (int i = 0; i < m; ++i)
-      for (int j = i + 1; j < m; ++j) {
-        std::vector<rational> r(static_cast<size_t>(N), rational(0));
-        r[static_cast<size_t>(blk[static_cast<size_t>(i)])] += Gm(i, j);
-        r[static_cast<size_t>(blk[static_cast<size_t>(j)])] -= Gm(j, i);
-        bool nz = false;
-        for (auto& x : r) nz |= x != 0;
-        if (nz) rows.push_back(r);
-      }
-  MatQ A(static_cast<Eigen::Index>(rows.size()), N);
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (int j = 0; j < N; ++j) A(static_cast<Eigen::Index>(i), j) = rows[i][static_cast<size_t>(j)];
-  fc.gamma_basis = rows.empty() ? nullspace(MatQ::Zero(0, N), N) : nullspace(A, N);
+  fc.gamma_basis = symmetric_gain_basis(blk, N, gains);
   fc.symmetric_possible = !fc.gamma_basis.empty();
   std::ostringstream o;
   o << "Facial reduction of (16)'s first LMI: E-hat has " << m << " eigenvalues at z = 1, so (16) needs "
