@@ -11,6 +11,7 @@
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 
 namespace hapstab::multidof {
 
@@ -259,49 +260,6 @@ ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev) {
   return x;
 }
 
-namespace {
-// Exact product A B through common denominators: integer multiply-adds (no gcd per operation, as
-// an mpq product has), then one canonicalisation per entry of the result.
-MatQ qmul(const MatQ& A, const MatQ& B) {
-  if (A.cols() != B.rows()) throw InputError("qmul: inner dimensions differ");
-  auto scale = [](const MatQ& M, integer& d, std::vector<integer>& I) {
-    d = 1;
-    for (Eigen::Index j = 0; j < M.cols(); ++j)
-      for (Eigen::Index i = 0; i < M.rows(); ++i)
-        if (den(M(i, j)) != 1) d = boost::multiprecision::lcm(d, den(M(i, j)));
-    I.assign(static_cast<size_t>(M.rows() * M.cols()), integer(0));
-    for (Eigen::Index i = 0; i < M.rows(); ++i)
-      for (Eigen::Index j = 0; j < M.cols(); ++j)
-        if (M(i, j) != 0) I[static_cast<size_t>(i * M.cols() + j)] = num(M(i, j)) * (d / den(M(i, j)));
-  };
-  integer da, db;
-  std::vector<integer> Ai, Bi;
-  scale(A, da, Ai);
-  scale(B, db, Bi);
-  const integer d = da * db;
-  const Eigen::Index R = A.rows(), K = A.cols(), Cc = B.cols();
-  MatQ C(R, Cc);
-  std::vector<integer> acc(static_cast<size_t>(Cc));
-  integer t;
-  for (Eigen::Index i = 0; i < R; ++i) {
-    for (auto& a : acc) a = 0;
-    for (Eigen::Index k = 0; k < K; ++k) {
-      const integer& a = Ai[static_cast<size_t>(i * K + k)];
-      if (a == 0) continue;
-      for (Eigen::Index j = 0; j < Cc; ++j) {
-        const integer& b = Bi[static_cast<size_t>(k * Cc + j)];
-        if (b == 0) continue;
-        t = a;
-        t *= b;
-        acc[static_cast<size_t>(j)] += t;
-      }
-    }
-    for (Eigen::Index j = 0; j < Cc; ++j) C(i, j) = rational(acc[static_cast<size_t>(j)], d);
-  }
-  return C;
-}
-}  // namespace
-
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
   const int m = pb.structure.m();
   const int n = static_cast<int>(pb.E.states());
@@ -310,11 +268,11 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   // P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1
   MatQ Pt = MatQ::Zero(n + m, n + m);
   if (n) Pt.topLeftCorner(n, n) = x.P11;
-  Pt.bottomRightCorner(m, m) = x.X * sp.E1 / (2 * T);
+  Pt.bottomRightCorner(m, m) = exact_product(x.X, sp.E1) / (2 * T);
   // Pi0 = [[I, Va], [0, I]] has the exact inverse [[I, -Va], [0, I]] (no elimination needed)
   MatQ Pi0i = MatQ::Identity(n + m, n + m);
   if (n) Pi0i.topRightCorner(n, m) = -sp.Va;
-  const MatQ P = qmul(qmul(MatQ(Pi0i.transpose()), Pt), Pi0i);
+  const MatQ P = exact_product(exact_product(MatQ(Pi0i.transpose()), Pt), Pi0i);
   if (P != MatQ(P.transpose())) {
     why = "X E(1) is not exactly symmetric at the rounded point";
     return false;
@@ -328,16 +286,17 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   const MatQ& C = H.C;
   const MatQ& D = H.D;
   MatQ M1(n + 2 * m, n + 2 * m);
-  const MatQ AtP = qmul(MatQ(A.transpose()), P);
-  M1.topLeftCorner(n + m, n + m) = qmul(AtP, A) - P;
-  M1.topRightCorner(n + m, m) = qmul(AtP, B) - qmul(MatQ(C.transpose()), x.X) / 2;
+  const MatQ AtP = exact_product(MatQ(A.transpose()), P);
+  M1.topLeftCorner(n + m, n + m) = exact_product(AtP, A) - P;
+  M1.topRightCorner(n + m, m) = exact_product(AtP, B) - exact_product(MatQ(C.transpose()), x.X) / 2;
   M1.bottomLeftCorner(m, n + m) = M1.topRightCorner(n + m, m).transpose();
-  M1.bottomRightCorner(m, m) = qmul(qmul(MatQ(B.transpose()), P), B) - (qmul(x.X, D) + qmul(MatQ(D.transpose()), x.X)) / 2 - x.QE;
+  M1.bottomRightCorner(m, m) = exact_product(exact_product(MatQ(B.transpose()), P), B) -
+                               (exact_product(x.X, D) + exact_product(MatQ(D.transpose()), x.X)) / 2 - x.QE;
   // facial equalities M1 [v_b; 0] = 0 for v_b = [Va b; b]
   MatQ Vk = MatQ::Zero(n + 2 * m, m);
   if (n) Vk.topRows(n) = sp.Va;
   Vk.block(n, 0, m, m) = MatQ::Identity(m, m);
-  if (!qmul(M1, Vk).isZero(0)) {
+  if (!exact_product(M1, Vk).isZero(0)) {
     why = "facial equality M1 v = 0 fails exactly";
     return false;
   }
@@ -360,7 +319,7 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   }
   const MatQ DD = pb.structure.delta_D();
   MatQ S(2 * m, 2 * m);
-  S << qmul(DD, x.X) - x.QE, -x.QE, -x.QE, QV - x.QE;
+  S << exact_product(DD, x.X) - x.QE, -x.QE, -x.QE, QV - x.QE;
   if (!lmi::exact_pd_bareiss(S)) {
     why = "the scaled (14) > 0 fails exactly";
     return false;
