@@ -511,7 +511,7 @@ void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::O
   const rational s = normaliser(x.X);
   x.X *= s;
   x.P11 *= s;
-  const MatQ DX = pb.structure.delta_D() * x.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), x.X);
   std::string why = "the first LMI with Q_E = Delta_D X has no margin at the solver's point";
   bool ok = false;
   MatQ QV;
@@ -520,7 +520,7 @@ void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::O
     const rational eps = lmi::round_dyadic(f * mu * to_real<double>(s), 20);
     if (!(eps > 0)) break;
     x.QE = DX - eps * MatQ::Identity(m, m);
-    QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+    QV = x.QE + exact_product(x.QE, x.QE) / eps + eps * MatQ::Identity(m, m);
     ok = exact_recheck(pb, sp, x, QV, why);
     if (ok) break;
   }
@@ -630,7 +630,7 @@ MatQ rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp) {
 // finds no point that passes: the caller falls back to the generic SDP.
 bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
   const int m = pb.structure.m();
-  const MatQ DX = pb.structure.delta_D() * px.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
   lmi::KypData d = px.kyp;
   d.R -= to_double(DX);
   const auto t0 = std::chrono::steady_clock::now();
@@ -649,7 +649,7 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
     const rational eps = lmi::round_dyadic(f * kp.min_eig, 20);
     if (!(eps > 0)) break;
     x.QE = DX - eps * MatQ::Identity(m, m);
-    QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+    QV = x.QE + exact_product(x.QE, x.QE) / eps + eps * MatQ::Identity(m, m);
     ok = exact_recheck(pb, sp, x, QV, why);
     if (ok) {
       res.margin = kp.min_eig - to_real<double>(eps);
@@ -679,7 +679,7 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 // then runs the generic program).
 bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
   const int m = pb.structure.m();
-  const MatQ DX = pb.structure.delta_D() * px.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
   if (DX != MatQ(DX(0, 0) * MatQ::Identity(m, m))) return false;
   const rational dq = DX(0, 0);
   const double d = to_real<double>(dq);
