@@ -171,3 +171,64 @@ TEST(Parse, HighPowersOfZAreSparse) {
   const auto tf = parse("(z^9999 + 1/2)/(z^9999 + 1/2)", {}, rational(1, 1000));
   EXPECT_EQ(tf.H.num().degree(), 0);
 }
+
+namespace {
+// "ok <num>/<den>" or "error <message>": a parse's whole outcome, to compare with and without a memo.
+std::string outcome(const std::string& s, std::map<std::string, rational> params, rational T, ParseMemo* memo) {
+  ParseOptions o;
+  o.parameters = std::move(params);
+  o.T = T;
+  o.memo = memo;
+  try {
+    const auto G = parse_tf(s, o);
+    return "ok " + G.to_string();
+  } catch (const InputError& e) {
+    return std::string("error ") + e.what();
+  }
+}
+}  // namespace
+
+// ParseMemo (the scene reader's: one long denominator in N^2 entries) must never change an
+// outcome: values follow the parameters and T, and the depth and expansion limits fail where
+// they fail without it.
+TEST(Parse, MemoNeverChangesAnOutcome) {
+  const std::string den = "(M*z^2 + (B+B1+B2+B3)*z + k+k1+k2+k3)";
+  std::map<std::string, rational> p1{{"M", rational(3, 10)}, {"B", 5},   {"B1", 1},    {"B2", 2},
+                                     {"B3", rational(3, 2)}, {"k", 1000}, {"k1", 500}, {"k2", 600}, {"k3", 700}};
+  auto p2 = p1;
+  p2["B2"] = 7;
+  const rational T(1, 100);
+  ParseMemo memo;
+  for (const std::string& s : {"1/" + den, "(k1 + B1*z)*(k2 + B2*z)/" + den, "k1 + B1*z - (k1 + B1*z)^2/" + den}) {
+    EXPECT_EQ(outcome(s, p1, T, &memo), outcome(s, p1, T, nullptr)) << s;
+    EXPECT_EQ(outcome(s, p2, T, &memo), outcome(s, p2, T, nullptr)) << s;  // a parameter changed: parsed again
+    EXPECT_NE(outcome(s, p1, T, nullptr), outcome(s, p2, T, nullptr)) << s;
+  }
+  ASSERT_NE(memo.find("z" + den), nullptr);
+  EXPECT_EQ(memo.find("z(k1 + B1*z)"), nullptr);  // short groups are not kept
+  // it is the memo that answers: a stored (wrong) value for exactly these parameters is what
+  // the parse returns -- and only for them
+  ParseMemo poisoned;
+  ParseMemo::Group g{QRatFun(P(rational(42))), {}, false, rational(0), 0, 1};
+  for (const auto& kv : p1) g.parameters.push_back(kv);
+  poisoned.add("z" + den, g);
+  EXPECT_EQ(outcome("1/" + den, p1, T, &poisoned), outcome("1/42", {}, T, nullptr));
+  EXPECT_EQ(outcome("1/" + den, p2, T, &poisoned), outcome("1/" + den, p2, T, nullptr));
+  // T: a group naming T is reused only for the same T
+  const std::string withT = "(T*z + k + k + k + k + k + k + k + 1)";
+  EXPECT_EQ(outcome("1/" + withT, p1, T, &memo), outcome("1/" + withT, p1, T, nullptr));
+  EXPECT_EQ(outcome("1/" + withT, p1, rational(1, 1000), &memo), outcome("1/" + withT, p1, rational(1, 1000), nullptr));
+  // depth: a group 3 deep, stored at the top level, inside 198 more parentheses exceeds 200
+  const std::string deep = "(((z + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 1)))";
+  EXPECT_EQ(outcome(deep, {}, T, &memo).rfind("ok", 0), 0u);
+  const std::string nested = std::string(198, '(') + deep + std::string(198, ')');
+  EXPECT_EQ(outcome(nested, {}, T, &memo), outcome(nested, {}, T, nullptr));
+  EXPECT_NE(outcome(nested, {}, T, nullptr).find("nested deeper than 200 levels"), std::string::npos);
+  // expansion: 201 copies of a stored group exceed 2^24 bits at the same term, with the same text
+  const std::string big = "((z-1/3)^200+z-z+z-z+z-z)";
+  std::string many = big;
+  for (int i = 0; i < 200; ++i) many += "+" + big;
+  EXPECT_EQ(outcome(big, {}, T, &memo).rfind("ok", 0), 0u);
+  EXPECT_EQ(outcome(many, {}, T, &memo), outcome(many, {}, T, nullptr));
+  EXPECT_NE(outcome(many, {}, T, nullptr).find("more than the limit of 16777216"), std::string::npos);
+}

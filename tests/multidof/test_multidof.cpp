@@ -117,6 +117,47 @@ TEST(MultidofEnvironment, Realisations15And17AgainstTransferFunctions) {
   EXPECT_EQ(MatQ(sp.t.C.rightCols(2)), sp.E1);
 }
 
+TEST(MultidofEnvironment, SplitByBlocksEqualsDenseTripleProduct) {
+  // ehat_split and dc_gain compute by blocks and FLINT solves; the reference is the dense
+  // Gauss-Jordan inverse and the triple products Pi0^-1 H Pi0 on the definitions.
+  MechanicalEnvironment env;
+  env.M = q("0.3");
+  env.k = 1000;
+  env.B = 5;
+  for (int i = 0; i < 5; ++i) {
+    env.kc.push_back(Q(500 + 100 * i));
+    env.Bc.push_back(Q(i + 2, 2));
+  }
+  for (const auto& E : {example::environment(false), example::environment(true),
+                        mechanical_environment_be_ss(env, example::T()), mechanical_environment(env, example::T())}) {
+    const Eigen::Index n = E.states(), m = E.inputs();
+    const MatQ Va = inverse(MatQ(MatQ::Identity(n, n) - E.A), "I - A") * E.B;
+    const auto H = ehat(E);
+    MatQ Pi0 = MatQ::Identity(n + m, n + m), Pi0i = Pi0;
+    Pi0.topRightCorner(n, m) = Va;
+    Pi0i.topRightCorner(n, m) = -Va;
+    const auto sp = ehat_split(E);
+    EXPECT_EQ(sp.Va, Va);
+    EXPECT_EQ(sp.Pi0, Pi0);
+    EXPECT_EQ(sp.t.A, MatQ(Pi0i * H.A * Pi0));
+    EXPECT_EQ(sp.t.B, MatQ(Pi0i * H.B));
+    EXPECT_EQ(sp.t.C, MatQ(H.C * Pi0));
+    EXPECT_EQ(sp.t.D, H.D);
+    EXPECT_EQ(sp.t.T, H.T);
+    EXPECT_EQ(sp.E1, MatQ(E.C * Va + E.D));
+    EXPECT_EQ(dc_gain(E), sp.E1);
+  }
+  // a pole at z = 1 is refused by name, as before
+  StateSpace<Q> integ{MatQ::Identity(1, 1), MatQ::Ones(1, 1), MatQ::Ones(1, 1), MatQ::Zero(1, 1), Q(1, 100)};
+  try {
+    dc_gain(integ);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("I - A_E (E has a pole at z = 1) is singular"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ehat_split(integ), InputError);
+}
+
 TEST(MultidofAnalysis, FeasibilityTableOfSectionVI) {
   // case i nominal: feasible (certified on the exact data)
   const auto r1 = analyze(example::problem(1, false));
@@ -156,6 +197,137 @@ TEST(MultidofAnalysis, FacialTextSaysWhenASymmetricStiffnessPinsX) {
   EXPECT_NE(two.explanation.find("is symmetric; X E(1) is symmetric only on a 1-dimensional set of X"),
             std::string::npos)
       << two.explanation;
+}
+
+namespace {
+// The reference for facial_conditions' basis: the rows g_p G_ij - g_q G_ji (i < j, p, q the
+// operators of DOF i, j; zero rows dropped) reduced to RREF in rationals, the null vector of
+// each free column f with v_f = 1 and -R(k, f) at the pivots, signed so that its first nonzero
+// entry is positive. (This was facial_conditions' own algorithm; O(m^2 N^2).)
+std::vector<std::vector<Q>> rref_gain_basis(const std::vector<int>& blk, int N, const std::vector<MatQ>& gains) {
+  std::vector<std::vector<Q>> rows;
+  const int m = static_cast<int>(blk.size());
+  for (const auto& G : gains)
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) {
+        std::vector<Q> r(static_cast<size_t>(N), Q(0));
+        r[static_cast<size_t>(blk[static_cast<size_t>(i)])] += G(i, j);
+        r[static_cast<size_t>(blk[static_cast<size_t>(j)])] -= G(j, i);
+        bool nz = false;
+        for (auto& x : r) nz |= x != 0;
+        if (nz) rows.push_back(r);
+      }
+  MatQ A(static_cast<Eigen::Index>(rows.size()), N);
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (int j = 0; j < N; ++j) A(static_cast<Eigen::Index>(i), j) = rows[i][static_cast<size_t>(j)];
+  std::vector<int> pivcol;
+  Eigen::Index r = 0;
+  for (int c = 0; c < N && r < A.rows(); ++c) {
+    Eigen::Index p = r;
+    while (p < A.rows() && A(p, c) == 0) ++p;
+    if (p == A.rows()) continue;
+    A.row(r).swap(A.row(p));
+    const Q piv = A(r, c);
+    A.row(r) /= piv;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+      if (i != r && A(i, c) != 0) {
+        const Q f = A(i, c);
+        A.row(i) -= f * A.row(r);
+      }
+    pivcol.push_back(c);
+    ++r;
+  }
+  std::vector<std::vector<Q>> basis;
+  for (int f = 0; f < N; ++f) {
+    if (std::find(pivcol.begin(), pivcol.end(), f) != pivcol.end()) continue;
+    std::vector<Q> v(static_cast<size_t>(N), Q(0));
+    v[static_cast<size_t>(f)] = 1;
+    for (size_t k = 0; k < pivcol.size(); ++k) v[static_cast<size_t>(pivcol[k])] = -A(static_cast<Eigen::Index>(k), f);
+    for (auto& x : v)
+      if (x != 0) {
+        if (x < 0)
+          for (auto& y : v) y = -y;
+        break;
+      }
+    basis.push_back(std::move(v));
+  }
+  return basis;
+}
+}  // namespace
+
+TEST(MultidofAnalysis, FacialBasisByComponentsEqualsRrefBasis) {
+  // Random structured cases: gains built around hidden g (so cycles are consistent), with
+  // single-entry conditions, inconsistent cycles, blocks of size > 1 (conditions inside a
+  // block) and `extra` gains. The graph algorithm must give the RREF's vectors exactly, in
+  // its order and normalisation.
+  std::mt19937 rng(20261125);
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  auto nonzero = [&] { return Q(pick(1, 9) * (pick(0, 1) ? 1 : -1), pick(1, 7)); };
+  int empty = 0, several = 0, one = 0, inconsistent_cycles = 0, blocks = 0, extras = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int N = pick(1, 7);
+    Problem pb;
+    std::vector<int> blk;
+    for (int b = 0; b < N; ++b) {
+      const int size = pick(0, 3) == 0 ? pick(2, 3) : 1;
+      blocks += size > 1;
+      pb.structure.operators.push_back(Operator{"H" + std::to_string(b), size, {device("d", size, Q(1))}});
+      for (int k = 0; k < size; ++k) blk.push_back(b);
+    }
+    const int m = static_cast<int>(blk.size());
+    std::vector<Q> g(static_cast<size_t>(N));
+    for (auto& x : g) x = nonzero();
+    // per trial: how often a pair is coupled, and how often a condition is broken
+    const int p_zero = pick(0, 9), p_bad = pick(0, 9) < 3 ? pick(1, 3) : 0;
+    auto gain = [&] {
+      MatQ G = MatQ::Zero(m, m);
+      for (int i = 0; i < m; ++i) {
+        G(i, i) = nonzero();
+        for (int j = i + 1; j < m; ++j) {
+          if (pick(0, 9) < p_zero) continue;
+          const Q &gp = g[static_cast<size_t>(blk[static_cast<size_t>(i)])], &gq = g[static_cast<size_t>(blk[static_cast<size_t>(j)])];
+          G(i, j) = nonzero();
+          G(j, i) = gp * G(i, j) / gq;  // g_p G_ij = g_q G_ji
+          if (pick(0, 19) < p_bad) {
+            const int how = pick(0, 2);
+            if (how == 0) G(i, j) = 0;             // one nonzero coefficient
+            else if (how == 1) G(j, i) = 0;
+            else G(j, i) += nonzero();             // an inconsistent ratio
+            inconsistent_cycles += how == 2;
+          }
+        }
+      }
+      return G;
+    };
+    pb.E.D = gain();
+    pb.E.A = MatQ(0, 0);
+    pb.E.B = MatQ(0, m);
+    pb.E.C = MatQ(m, 0);
+    pb.E.T = Q(1, 100);
+    std::vector<MatQ> extra;
+    for (int k = pick(0, 3) == 0 ? pick(1, 2) : 0; k > 0; --k) extra.push_back(gain());
+    extras += !extra.empty();
+    std::vector<MatQ> all{pb.E.D};
+    all.insert(all.end(), extra.begin(), extra.end());
+    const auto fc = facial_conditions(pb, extra);
+    const auto ref = rref_gain_basis(blk, N, all);
+    ASSERT_EQ(fc.gamma_basis, ref) << "trial " << trial;
+    ASSERT_EQ(fc.symmetric_possible, !ref.empty());
+    for (const auto& v : fc.gamma_basis) {  // and each vector does what it is for
+      const MatQ X = pb.structure.scalar_blocks(v);
+      for (const auto& G : all) ASSERT_EQ(MatQ(X * G), MatQ((X * G).transpose())) << "trial " << trial;
+    }
+    empty += ref.empty();
+    one += ref.size() == 1;
+    several += ref.size() > 1;
+  }
+  // the campaign reached every kind of answer
+  EXPECT_GT(empty, 20);
+  EXPECT_GT(one, 20);
+  EXPECT_GT(several, 20);
+  EXPECT_GT(inconsistent_cycles, 20);
+  EXPECT_GT(blocks, 20);
+  EXPECT_GT(extras, 20);
 }
 
 TEST(MultidofAnalysis, UnstableEnvironmentRejected) {

@@ -90,8 +90,10 @@ class Parser {
   const ParseOptions& opt_;
   char var_;
   std::vector<Token> tokens_;
+  std::vector<size_t> close_;  // for each '(' token, the index of its ')' (npos when unmatched)
   size_t pos_ = 0;
   int depth_ = 0;
+  int deepest_ = 0;  // the deepest depth_ reached (a group's depth, for the memo)
   long spent_bits_ = 0;
   bool used_T_ = false;
 
@@ -185,6 +187,42 @@ class Parser {
       ++i;
     }
     tokens_.push_back({Tok::end, "", src_.size() + 1});
+    close_.assign(tokens_.size(), std::string::npos);
+    std::vector<size_t> open;
+    for (size_t k = 0; k < tokens_.size(); ++k)
+      if (tokens_[k].kind == Tok::lparen) {
+        open.push_back(k);
+      } else if (tokens_[k].kind == Tok::rparen && !open.empty()) {
+        close_[open.back()] = k;
+        open.pop_back();
+      }
+  }
+
+  // ParseMemo: a stored group stands in for parsing it again when the names it uses have the
+  // values it was parsed with and the limits admit it as they did (so the outcome is the same).
+  bool admits(const ParseMemo::Group& g) const {
+    if (depth_ + g.depth > limits::nesting_depth || spent_bits_ + g.bits > limits::expansion_bits) return false;
+    if (g.used_T && opt_.T != g.T) return false;
+    for (const auto& [name, value] : g.parameters) {
+      auto it = opt_.parameters.find(name);
+      if (it == opt_.parameters.end() || it->second != value) return false;
+    }
+    return true;
+  }
+  void remember(std::string key, size_t open, size_t close, const RF& value, long bits, int depth) {
+    ParseMemo::Group g{value, {}, false, rational(0), bits, depth};
+    std::set<std::string> seen;
+    for (size_t k = open + 1; k < close; ++k) {
+      const Token& t = tokens_[k];
+      if (t.kind != Tok::name || (t.text.size() == 1 && t.text[0] == var_) || !seen.insert(t.text).second) continue;
+      if (auto it = opt_.parameters.find(t.text); it != opt_.parameters.end()) {
+        g.parameters.emplace_back(*it);
+      } else if (t.text == "T") {
+        g.used_T = true;
+        g.T = opt_.T;
+      }
+    }
+    opt_.memo->add(std::move(key), std::move(g));
   }
 
   const Token& peek() const { return tokens_[pos_]; }
@@ -289,15 +327,34 @@ class Parser {
         fail(t, "unknown name '" + t.text + "' (known: " + known + "; give parameters with --set NAME=VALUE)");
       }
       case Tok::lparen: {
+        const size_t open = pos_, close = close_[pos_];
         next();
         if (peek().kind == Tok::rparen) fail(peek(), "empty parentheses");
+        const bool memoise = opt_.memo && close != std::string::npos && close - open - 1 >= ParseMemo::kMinTokens;
+        std::string key;
+        if (memoise) {
+          key = var_ + std::string(src_.substr(t.column - 1, tokens_[close].column - t.column + 1));
+          if (const ParseMemo::Group* g = opt_.memo->find(key); g && admits(*g)) {
+            pos_ = close + 1;
+            spent_bits_ += g->bits;
+            used_T_ = used_T_ || g->used_T;
+            deepest_ = std::max(deepest_, depth_ + g->depth);
+            return g->value;
+          }
+        }
+        const long bits0 = spent_bits_;
+        const int depth0 = depth_, deepest0 = deepest_;
+        deepest_ = depth_;
         if (++depth_ > limits::nesting_depth)
           fail(t, "parentheses nested deeper than " + std::to_string(limits::nesting_depth) + " levels, the limit");
+        deepest_ = std::max(deepest_, depth_);
         RF r = expr();
         --depth_;
         if (peek().kind != Tok::rparen)
           fail(peek(), "expected ')' to close '(' at column " + std::to_string(t.column) + ", found " + describe(peek()));
         next();
+        if (memoise) remember(std::move(key), open, close, r, spent_bits_ - bits0, deepest_ - depth0);
+        deepest_ = std::max(deepest_, deepest0);
         return r;
       }
       case Tok::end: fail(t, "the expression ends where a number, a name or '(' was expected");
@@ -329,6 +386,19 @@ char infer_variable(std::string_view text, const ParseOptions& opt) {
 }
 
 }  // namespace
+
+const ParseMemo::Group* ParseMemo::find(const std::string& key) const {
+  auto it = groups_.find(key);
+  return it == groups_.end() ? nullptr : &it->second;
+}
+
+void ParseMemo::add(std::string key, Group g) {
+  // the text, the coefficients (at most the bits the parse expanded) and the named values
+  const size_t bytes = key.size() + static_cast<size_t>(g.bits / 8) + 64 * (g.parameters.size() + 1);
+  if (used_bytes_ + bytes > kBudgetBytes) return;
+  used_bytes_ += bytes;
+  groups_.emplace(std::move(key), std::move(g));
+}
 
 std::set<std::string> names_in(std::string_view text) {
   std::set<std::string> names;

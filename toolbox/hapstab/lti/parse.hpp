@@ -12,10 +12,42 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "hapstab/lti/tf.hpp"
 
 namespace hapstab {
+
+/// Parenthesised groups already parsed, for parses that repeat one long subexpression (a
+/// scene's N x N environment writes the same "(M*s^2 + (B+B1+...+BN)*s + k+k1+...+kN)" in every
+/// entry: parsing it N^2 times was a quarter of `multidof analyze` at N = 128). A group of at
+/// least `kMinTokens` tokens is taken from the memo only when every parameter it names has the
+/// value it was parsed with (and T too, when it names T), in the same variable, and when the
+/// parse's limits (nesting depth, bits expanded so far) admit it as they did: so a parse with a
+/// memo gives the same result, and the same error, as one without. Bounded: groups stop being
+/// added once their text and coefficients fill `kBudgetBytes`.
+class ParseMemo {
+ public:
+  static constexpr size_t kMinTokens = 16;
+  static constexpr size_t kBudgetBytes = size_t(32) << 20;
+  struct Group {
+    QRatFun value;
+    std::vector<std::pair<std::string, rational>> parameters;  ///< the parameters it names, as parsed
+    bool used_T = false;
+    rational T;         ///< when used_T
+    long bits = 0;      ///< the bits its parse expanded (the parser's expansion limit)
+    int depth = 0;      ///< the nesting depth it reaches, its own parentheses included
+  };
+  /// The group stored under `key` (the variable, then the group's text), or nullptr.
+  const Group* find(const std::string& key) const;
+  void add(std::string key, Group g);
+
+ private:
+  std::unordered_map<std::string, Group> groups_;
+  size_t used_bytes_ = 0;
+};
 
 struct ParseOptions {
   /// 'z', 's', or 0 to infer from the expression (z if it names z, s if it names s,
@@ -24,6 +56,8 @@ struct ParseOptions {
   /// Sample period; required when the expression uses `T` or the variable is z.
   rational T = 0;
   std::map<std::string, rational> parameters;
+  /// Optional (not owned): see ParseMemo.
+  ParseMemo* memo = nullptr;
 };
 
 /// The names `text` refers to (parameters, T, the variable), found by the parser's own lexer:

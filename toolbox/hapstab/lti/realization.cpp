@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/poly/flint_poly.hpp"
 
 namespace hapstab {
@@ -114,18 +115,9 @@ TransferMatrix ss2tf(const StateSpace<Q>& sys) {
 
 namespace {
 
-flint::QMat to_qmat(const MQ& M) {
-  flint::QMat q(static_cast<long>(M.rows()), static_cast<long>(M.cols()));
-  for (long i = 0; i < M.rows(); ++i)
-    for (long j = 0; j < M.cols(); ++j) flint::set(q.at(i, j), M(i, j));
-  return q;
-}
-MQ from_qmat(flint::QMat& q, long rows, long cols, long r0 = 0, long c0 = 0) {
-  MQ M(rows, cols);
-  for (long i = 0; i < rows; ++i)
-    for (long j = 0; j < cols; ++j) M(i, j) = flint::to_rational(q.at(r0 + i, c0 + j));
-  return M;
-}
+using flint::from_qmat;
+using flint::to_qmat;
+
 // Columns of M (n x c) that are pivots of its reduced row echelon form: the first linearly
 // independent columns, left to right (FLINT's fraction-free rref).
 std::vector<long> pivot_columns(flint::QMat& M) {
@@ -174,11 +166,11 @@ StateSpace<Q> controllable_part(const StateSpace<Q>& s) {
   MQ V(n, n);
   for (long c = 0; c < n; ++c) V.col(c) = KI.col(piv[static_cast<size_t>(c)]);
   MQ rhs(n, n + m);
-  rhs << s.A * V, s.B;
+  rhs << exact_product(s.A, V), s.B;
   flint::QMat Vq = to_qmat(V), Rq = to_qmat(rhs), X(n, n + m);
   if (!fmpq_mat_solve(X.get(), Vq.get(), Rq.get())) throw NumericalError("minreal: singular change of coordinates");
   const MQ At = from_qmat(X, rank, rank), Bt = from_qmat(X, rank, m, 0, n);
-  const MQ Ct = s.C * V.leftCols(rank);
+  const MQ Ct = exact_product(s.C, MQ(V.leftCols(rank)));
   return {At, Bt, Ct, s.D, s.T};
 }
 

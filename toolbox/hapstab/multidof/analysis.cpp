@@ -12,6 +12,7 @@
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 
 namespace hapstab::multidof {
 
@@ -54,40 +55,76 @@ void Problem::validate(bool with_coupling) const {
 
 namespace {
 
-// Rational nullspace basis of the rows of A (k x N), by reduced row echelon form.
-std::vector<std::vector<rational>> nullspace(MatQ A, int N) {
-  std::vector<int> pivcol;
-  Eigen::Index r = 0;
-  for (int c = 0; c < N && r < A.rows(); ++c) {
-    Eigen::Index p = r;
-    while (p < A.rows() && A(p, c) == 0) ++p;
-    if (p == A.rows()) continue;
-    A.row(r).swap(A.row(p));
-    const rational piv = A(r, c);
-    A.row(r) /= piv;
-    for (Eigen::Index i = 0; i < A.rows(); ++i)
-      if (i != r && A(i, c) != 0) {
-        const rational f = A(i, c);
-        A.row(i) -= f * A.row(r);
+// The rational basis of {g in Q^N : X(g) G symmetric for every G in `gains`}, X(g) the block
+// diagonal with g_b I on operator b's block (blk[i] = the operator of DOF i). Each condition
+// (X G)_ij = (X G)_ji (i < j) reads g_p G_ij - g_q G_ji = 0, p = blk[i], q = blk[j]: at most two
+// unknowns. So the conditions are a graph on the operators: an edge a g_p = b g_q (a, b != 0)
+// fixes the ratio g_q / g_p; a condition with one nonzero coefficient (or p = q with
+// G_ij != G_ji) forces g_p = 0, and so does a cycle whose ratios do not multiply to 1. Each
+// connected component without such a contradiction contributes one basis vector w (the ratios,
+// w = 1 at its largest column); the others contribute nothing. O(m^2) work where the rational
+// RREF of the m(m-1)/2 x N condition matrix took O(m^2 N^2).
+//
+// The basis is the one the RREF gives, vector for vector (tests/multidof compares both): the
+// RREF of a component's rows (rank = size - 1) has its largest column free, so its null vector
+// is w with w = 1 there; vectors come in the order of their free columns, and each is signed so
+// that its first nonzero entry is positive (g >= 1 wants positive directions).
+std::vector<std::vector<rational>> symmetric_gain_basis(const std::vector<int>& blk, int N,
+                                                        const std::vector<MatQ>& gains) {
+  struct Edge {
+    int to;
+    rational a, b;  // a g_from = b g_to
+  };
+  std::vector<std::vector<Edge>> adj(static_cast<size_t>(N));
+  std::vector<char> forced_zero(static_cast<size_t>(N), 0);
+  const int m = static_cast<int>(blk.size());
+  for (const auto& G : gains)
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) {
+        const int p = blk[static_cast<size_t>(i)], q = blk[static_cast<size_t>(j)];
+        const rational &a = G(i, j), &b = G(j, i);
+        if (p == q) {
+          if (a != b) forced_zero[static_cast<size_t>(p)] = 1;
+        } else if (a == 0 || b == 0) {
+          if (a != 0) forced_zero[static_cast<size_t>(p)] = 1;
+          if (b != 0) forced_zero[static_cast<size_t>(q)] = 1;
+        } else {
+          adj[static_cast<size_t>(p)].push_back({q, a, b});
+          adj[static_cast<size_t>(q)].push_back({p, b, a});
+        }
       }
-    pivcol.push_back(c);
-    ++r;
-  }
   std::vector<std::vector<rational>> basis;
-  for (int f = 0; f < N; ++f) {
-    if (std::find(pivcol.begin(), pivcol.end(), f) != pivcol.end()) continue;
-    std::vector<rational> v(static_cast<size_t>(N), rational(0));
-    v[static_cast<size_t>(f)] = 1;
-    for (size_t k = 0; k < pivcol.size(); ++k) v[static_cast<size_t>(pivcol[k])] = -A(static_cast<Eigen::Index>(k), f);
-    // scale so that the first nonzero entry is positive (g >= 1 wants positive directions)
-    for (auto& x : v)
-      if (x != 0) {
-        if (x < 0)
-          for (auto& y : v) y = -y;
-        break;
+  std::vector<rational> w(static_cast<size_t>(N));
+  std::vector<char> seen(static_cast<size_t>(N), 0);
+  // From the largest column down: an unseen column is the largest of its component.
+  for (int f = N - 1; f >= 0; --f) {
+    if (seen[static_cast<size_t>(f)]) continue;
+    std::vector<int> comp{f};
+    seen[static_cast<size_t>(f)] = 1;
+    w[static_cast<size_t>(f)] = 1;
+    bool zero = false;
+    for (size_t k = 0; k < comp.size(); ++k) {
+      const int u = comp[k];
+      zero = zero || forced_zero[static_cast<size_t>(u)];
+      for (const Edge& e : adj[static_cast<size_t>(u)]) {
+        const size_t v = static_cast<size_t>(e.to);
+        if (!seen[v]) {
+          seen[v] = 1;
+          w[v] = e.a * w[static_cast<size_t>(u)] / e.b;
+          comp.push_back(e.to);
+        } else if (!zero && e.a * w[static_cast<size_t>(u)] != e.b * w[v]) {
+          zero = true;  // the ratios around a cycle do not multiply to 1
+        }
       }
+    }
+    if (zero) continue;
+    std::vector<rational> v(static_cast<size_t>(N), rational(0));
+    const int first = *std::min_element(comp.begin(), comp.end());
+    const bool flip = w[static_cast<size_t>(first)] < 0;
+    for (int c : comp) v[static_cast<size_t>(c)] = flip ? rational(-w[static_cast<size_t>(c)]) : w[static_cast<size_t>(c)];
     basis.push_back(std::move(v));
   }
+  std::reverse(basis.begin(), basis.end());  // in the order of their largest (free) columns
   return basis;
 }
 
@@ -109,23 +146,9 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
   std::vector<int> blk;
   for (int i = 0; i < N; ++i)
     for (int k = 0; k < sizes[static_cast<size_t>(i)]; ++k) blk.push_back(i);
-  std::vector<std::vector<rational>> rows;
   std::vector<MatQ> gains{fc.E1};
   for (const auto& g : extra) gains.push_back(g);
-  for (const auto& Gm : gains)
-    for (int i = 0; i < m; ++i)
-      for (int j = i + 1; j < m; ++j) {
-        std::vector<rational> r(static_cast<size_t>(N), rational(0));
-        r[static_cast<size_t>(blk[static_cast<size_t>(i)])] += Gm(i, j);
-        r[static_cast<size_t>(blk[static_cast<size_t>(j)])] -= Gm(j, i);
-        bool nz = false;
-        for (auto& x : r) nz |= x != 0;
-        if (nz) rows.push_back(r);
-      }
-  MatQ A(static_cast<Eigen::Index>(rows.size()), N);
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (int j = 0; j < N; ++j) A(static_cast<Eigen::Index>(i), j) = rows[i][static_cast<size_t>(j)];
-  fc.gamma_basis = rows.empty() ? nullspace(MatQ::Zero(0, N), N) : nullspace(A, N);
+  fc.gamma_basis = symmetric_gain_basis(blk, N, gains);
   fc.symmetric_possible = !fc.gamma_basis.empty();
   std::ostringstream o;
   o << "Facial reduction of (16)'s first LMI: E-hat has " << m << " eigenvalues at z = 1, so (16) needs "
@@ -238,49 +261,6 @@ ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev) {
   return x;
 }
 
-namespace {
-// Exact product A B through common denominators: integer multiply-adds (no gcd per operation, as
-// an mpq product has), then one canonicalisation per entry of the result.
-MatQ qmul(const MatQ& A, const MatQ& B) {
-  if (A.cols() != B.rows()) throw InputError("qmul: inner dimensions differ");
-  auto scale = [](const MatQ& M, integer& d, std::vector<integer>& I) {
-    d = 1;
-    for (Eigen::Index j = 0; j < M.cols(); ++j)
-      for (Eigen::Index i = 0; i < M.rows(); ++i)
-        if (den(M(i, j)) != 1) d = boost::multiprecision::lcm(d, den(M(i, j)));
-    I.assign(static_cast<size_t>(M.rows() * M.cols()), integer(0));
-    for (Eigen::Index i = 0; i < M.rows(); ++i)
-      for (Eigen::Index j = 0; j < M.cols(); ++j)
-        if (M(i, j) != 0) I[static_cast<size_t>(i * M.cols() + j)] = num(M(i, j)) * (d / den(M(i, j)));
-  };
-  integer da, db;
-  std::vector<integer> Ai, Bi;
-  scale(A, da, Ai);
-  scale(B, db, Bi);
-  const integer d = da * db;
-  const Eigen::Index R = A.rows(), K = A.cols(), Cc = B.cols();
-  MatQ C(R, Cc);
-  std::vector<integer> acc(static_cast<size_t>(Cc));
-  integer t;
-  for (Eigen::Index i = 0; i < R; ++i) {
-    for (auto& a : acc) a = 0;
-    for (Eigen::Index k = 0; k < K; ++k) {
-      const integer& a = Ai[static_cast<size_t>(i * K + k)];
-      if (a == 0) continue;
-      for (Eigen::Index j = 0; j < Cc; ++j) {
-        const integer& b = Bi[static_cast<size_t>(k * Cc + j)];
-        if (b == 0) continue;
-        t = a;
-        t *= b;
-        acc[static_cast<size_t>(j)] += t;
-      }
-    }
-    for (Eigen::Index j = 0; j < Cc; ++j) C(i, j) = rational(acc[static_cast<size_t>(j)], d);
-  }
-  return C;
-}
-}  // namespace
-
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
   const int m = pb.structure.m();
   const int n = static_cast<int>(pb.E.states());
@@ -289,11 +269,11 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   // P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1
   MatQ Pt = MatQ::Zero(n + m, n + m);
   if (n) Pt.topLeftCorner(n, n) = x.P11;
-  Pt.bottomRightCorner(m, m) = x.X * sp.E1 / (2 * T);
+  Pt.bottomRightCorner(m, m) = exact_product(x.X, sp.E1) / (2 * T);
   // Pi0 = [[I, Va], [0, I]] has the exact inverse [[I, -Va], [0, I]] (no elimination needed)
   MatQ Pi0i = MatQ::Identity(n + m, n + m);
   if (n) Pi0i.topRightCorner(n, m) = -sp.Va;
-  const MatQ P = qmul(qmul(MatQ(Pi0i.transpose()), Pt), Pi0i);
+  const MatQ P = exact_product(exact_product(MatQ(Pi0i.transpose()), Pt), Pi0i);
   if (P != MatQ(P.transpose())) {
     why = "X E(1) is not exactly symmetric at the rounded point";
     return false;
@@ -307,16 +287,17 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   const MatQ& C = H.C;
   const MatQ& D = H.D;
   MatQ M1(n + 2 * m, n + 2 * m);
-  const MatQ AtP = qmul(MatQ(A.transpose()), P);
-  M1.topLeftCorner(n + m, n + m) = qmul(AtP, A) - P;
-  M1.topRightCorner(n + m, m) = qmul(AtP, B) - qmul(MatQ(C.transpose()), x.X) / 2;
+  const MatQ AtP = exact_product(MatQ(A.transpose()), P);
+  M1.topLeftCorner(n + m, n + m) = exact_product(AtP, A) - P;
+  M1.topRightCorner(n + m, m) = exact_product(AtP, B) - exact_product(MatQ(C.transpose()), x.X) / 2;
   M1.bottomLeftCorner(m, n + m) = M1.topRightCorner(n + m, m).transpose();
-  M1.bottomRightCorner(m, m) = qmul(qmul(MatQ(B.transpose()), P), B) - (qmul(x.X, D) + qmul(MatQ(D.transpose()), x.X)) / 2 - x.QE;
+  M1.bottomRightCorner(m, m) = exact_product(exact_product(MatQ(B.transpose()), P), B) -
+                               (exact_product(x.X, D) + exact_product(MatQ(D.transpose()), x.X)) / 2 - x.QE;
   // facial equalities M1 [v_b; 0] = 0 for v_b = [Va b; b]
   MatQ Vk = MatQ::Zero(n + 2 * m, m);
   if (n) Vk.topRows(n) = sp.Va;
   Vk.block(n, 0, m, m) = MatQ::Identity(m, m);
-  if (!qmul(M1, Vk).isZero(0)) {
+  if (!exact_product(M1, Vk).isZero(0)) {
     why = "facial equality M1 v = 0 fails exactly";
     return false;
   }
@@ -339,7 +320,7 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   }
   const MatQ DD = pb.structure.delta_D();
   MatQ S(2 * m, 2 * m);
-  S << qmul(DD, x.X) - x.QE, -x.QE, -x.QE, QV - x.QE;
+  S << exact_product(DD, x.X) - x.QE, -x.QE, -x.QE, QV - x.QE;
   if (!lmi::exact_pd_bareiss(S)) {
     why = "the scaled (14) > 0 fails exactly";
     return false;
@@ -531,7 +512,7 @@ void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::O
   const rational s = normaliser(x.X);
   x.X *= s;
   x.P11 *= s;
-  const MatQ DX = pb.structure.delta_D() * x.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), x.X);
   std::string why = "the first LMI with Q_E = Delta_D X has no margin at the solver's point";
   bool ok = false;
   MatQ QV;
@@ -540,7 +521,7 @@ void analyze_stability_only(const Problem& pb, const EhatSplit& sp, const lmi::O
     const rational eps = lmi::round_dyadic(f * mu * to_real<double>(s), 20);
     if (!(eps > 0)) break;
     x.QE = DX - eps * MatQ::Identity(m, m);
-    QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+    QV = x.QE + exact_product(x.QE, x.QE) / eps + eps * MatQ::Identity(m, m);
     ok = exact_recheck(pb, sp, x, QV, why);
     if (ok) break;
   }
@@ -650,7 +631,7 @@ MatQ rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp) {
 // finds no point that passes: the caller falls back to the generic SDP.
 bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
   const int m = pb.structure.m();
-  const MatQ DX = pb.structure.delta_D() * px.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
   lmi::KypData d = px.kyp;
   d.R -= to_double(DX);
   const auto t0 = std::chrono::steady_clock::now();
@@ -669,7 +650,7 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
     const rational eps = lmi::round_dyadic(f * kp.min_eig, 20);
     if (!(eps > 0)) break;
     x.QE = DX - eps * MatQ::Identity(m, m);
-    QV = x.QE + x.QE * x.QE / eps + eps * MatQ::Identity(m, m);
+    QV = x.QE + exact_product(x.QE, x.QE) / eps + eps * MatQ::Identity(m, m);
     ok = exact_recheck(pb, sp, x, QV, why);
     if (ok) {
       res.margin = kp.min_eig - to_real<double>(eps);
@@ -704,7 +685,7 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px,
                                                    bool diagonal) {
   const int m = pb.structure.m();
-  const MatQ DX = pb.structure.delta_D() * px.X;
+  const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
   const bool scalar = DX == MatQ(DX(0, 0) * MatQ::Identity(m, m));
   if (!scalar && !(diagonal && DX.isDiagonal(0))) return std::nullopt;
   rational dq = DX(0, 0);

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 
 namespace hapstab::multidof {
 
@@ -148,8 +149,8 @@ bool schur_stable(const MatQ& A, std::string* method) {
 MatQ dc_gain(const StateSpace<rational>& E) {
   const auto n = E.states();
   if (n == 0) return E.D;
-  MatQ IA = MatQ::Identity(n, n) - E.A;
-  return E.C * inverse(IA, "I - A_E (E has a pole at z = 1)") * E.B + E.D;
+  const MatQ Va = exact_solve(MatQ(MatQ::Identity(n, n) - E.A), E.B, "I - A_E (E has a pole at z = 1)");
+  return MatQ(exact_product(E.C, Va) + E.D);
 }
 
 StateSpace<rational> ehat(const StateSpace<rational>& E) {
@@ -214,13 +215,23 @@ EhatSplit ehat_split(const StateSpace<rational>& E) {
   const StateSpace<rational> H = ehat(E);
   const auto n = E.states(), m = E.inputs();
   EhatSplit s;
-  s.Va = n ? MatQ(inverse(MatQ(MatQ::Identity(n, n) - E.A), "I - A_E (E has a pole at z = 1)") * E.B) : MatQ(0, m);
+  s.Va = n ? exact_solve(MatQ(MatQ::Identity(n, n) - E.A), E.B, "I - A_E (E has a pole at z = 1)") : MatQ(0, m);
   s.Pi0 = MatQ::Identity(n + m, n + m);
   if (n) s.Pi0.topRightCorner(n, m) = s.Va;
-  MatQ Pi0i = MatQ::Identity(n + m, n + m);
-  if (n) Pi0i.topRightCorner(n, m) = -s.Va;
-  s.t = StateSpace<rational>{Pi0i * H.A * s.Pi0, Pi0i * H.B, H.C * s.Pi0, H.D, H.T};
-  s.E1 = dc_gain(E);
+  // Pi0^-1 H Pi0 by blocks (Pi0 = [[I, Va], [0, I]], Pi0^-1 = [[I, -Va], [0, I]]): with
+  // H.A = [[A_E, B_E], [0, I]], H.B = [B_E T; T I], H.C = [C_E, D_E] the transformed system is
+  //   A = [[A_E, A_E Va + B_E - Va], [0, I]],  B = [(B_E - Va) T; T I],  C = [C_E, C_E Va + D_E],
+  // the same exact entries as the dense triple product in O(n^2 m) instead of O((n + m)^3). The
+  // top-right block of A is (A_E - I) Va + B_E = 0 by the definition of Va (computed, not assumed);
+  // C_E Va + D_E is E(1).
+  const MatQ AVa = exact_product(E.A, s.Va), CVa = exact_product(E.C, s.Va);
+  s.E1 = n ? MatQ(CVa + E.D) : E.D;
+  s.t = H;
+  if (n) {
+    s.t.A.topRightCorner(n, m) = AVa + E.B - s.Va;
+    s.t.B.topRows(n) = (E.B - s.Va) * E.T;
+  }
+  s.t.C.rightCols(m) = s.E1;
   return s;
 }
 

@@ -21,6 +21,7 @@
 #include <arb_mat.h>
 #endif
 
+#include "hapstab/numeric/eigen_traits.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::flint {
@@ -130,6 +131,20 @@ inline rational to_rational(const fmpq_t q) {
   rational r;
   fmpq_get_mpq(r.backend().data(), q);
   return r;
+}
+
+/// An exact matrix as an fmpq_mat, and the block (r0, c0, rows x cols) of one back.
+inline QMat to_qmat(const MatQ& M) {
+  QMat q(static_cast<long>(M.rows()), static_cast<long>(M.cols()));
+  for (long i = 0; i < M.rows(); ++i)
+    for (long j = 0; j < M.cols(); ++j) set(q.at(i, j), M(i, j));
+  return q;
+}
+inline MatQ from_qmat(QMat& q, long rows, long cols, long r0 = 0, long c0 = 0) {
+  MatQ M(rows, cols);
+  for (long i = 0; i < rows; ++i)
+    for (long j = 0; j < cols; ++j) M(i, j) = to_rational(q.at(r0 + i, c0 + j));
+  return M;
 }
 
 /// A rational as a real ball at `prec` bits (exact when it is a short dyadic).

@@ -100,6 +100,7 @@ TransferFunction Reader::tf_of(const std::string& text, const std::string& key, 
   po.variable = var;
   po.T = T;
   po.parameters = params_named_in(text);
+  po.memo = &memo;
   try {
     return parse_tf(text, po);
   } catch (const InputError& e) {

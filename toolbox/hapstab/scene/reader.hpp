@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/state_space.hpp"
 #include "hapstab/lti/tf.hpp"
 #include "hapstab/numeric/scalar.hpp"
@@ -28,6 +29,9 @@ struct Reader {
   std::map<std::string, rational> params;
   std::map<std::string, std::pair<int, int>> device_dofs;  ///< name -> [first, count]
   int N = 0;                                               ///< DOFs given by the devices so far
+  /// The long parenthesised groups tf_of has parsed (lti/parse.hpp, ParseMemo: used only where
+  /// the names in them still have the values they were parsed with).
+  mutable ParseMemo memo;
 
   /// Throws InputError("file: key: what").
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
