@@ -19,7 +19,8 @@ namespace {
 using Q = rational;
 
 // DOF 0: a pure-inertia hand; DOFs 1, 2: one 2-port operator (two states, cross terms, inertia);
-// DOF 3: no operator. A static 4 x 4 environment couples all DOFs (through the held force only).
+// DOF 3: an operator Z = 0 (an idle state). A static 4 x 4 environment couples all DOFs
+// (through the held force only).
 // Fractional delay 3T/10: two pieces per period, both with energy Gram matrices.
 LoopSpec four_dof_loop() {
   LoopSpec s;
@@ -38,6 +39,13 @@ LoopSpec four_dof_loop() {
   D << 1, Q(1, 2), Q(1, 2), 2;
   pair.Z = StateSpace<Q>{A, B, C, D, 0};
   s.operators.push_back(pair);
+  // DOF 3: Z = 0 with one idle state (neither driven nor seen): a component of the plant that
+  // no input feeds (Gamma's block has no columns)
+  OperatorBlock idle;
+  idle.name = "idle";
+  idle.ports = {3};
+  idle.Z = StateSpace<Q>{Mat<Q>::Constant(1, 1, Q(-1)), Mat<Q>::Zero(1, 1), Mat<Q>::Zero(1, 1), Mat<Q>::Zero(1, 1), 0};
+  s.operators.push_back(idle);
   Mat<Q> De = Mat<Q>::Constant(4, 4, Q(-5));
   for (int i = 0; i < 4; ++i) De(i, i) = 100;
   s.environment = StateSpace<Q>{Mat<Q>::Zero(0, 0), Mat<Q>::Zero(0, 4), Mat<Q>::Zero(4, 0), De, s.T};
@@ -115,7 +123,7 @@ TEST(SimBlocks, PortSupportsFollowTheCoupling) {
     EXPECT_EQ(g.W.rows(), Eigen::Index(g.support.size()));
     EXPECT_TRUE(std::is_sorted(g.support.begin(), g.support.end()));
   }
-  // DOF 3 (device state 3, no operator): v_3 = s_3, f_h3 = w_3, and s_3' involves u_3 and w_3
+  // DOF 3 (device state 3, Z = 0): v_3 = s_3, f_h3 = w_3, and s_3' involves u_3 and w_3
   const std::vector<Eigen::Index> dof3 = {3, n + 3, n + L.N + 3};
   EXPECT_EQ(W[3].support, dof3);
 }
