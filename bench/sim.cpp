@@ -264,4 +264,49 @@ void BM_zoh_setup(benchmark::State& st) {
 }
 BENCHMARK(BM_zoh_setup)->ArgsProduct({{4, 16, 32}, {0, 1}})->Unit(benchmark::kMillisecond)->Name("zoh_setup");
 
+// ---- the simulator's set-up (issue 33): Simulator::Simulator on an N-device loop shaped like
+// bench/contact_scene.py's (N mass-dampers 1/(m s + b), N one-port operators with two states,
+// 0.1 (s^2 + 5 s + 10)/(s^2 + s + 1), an N x N discrete environment: a wall K_i + B_i (z - 1)/(T z)
+// per DOF plus a rank-one coupling of all DOFs), T = 10 ms, with a fractional delay (two pieces,
+// energy Gram matrices for both). Counters: states of the plant, radius = Piece::radius.
+LoopSpec n_device_loop(int N) {
+  LoopSpec s;
+  s.T = Q(1, 100);
+  s.delay = Q(1, 300);
+  for (int i = 0; i < N; ++i) s.devices.push_back(mass_damper("d" + std::to_string(i), Q(1, 10), Q(137, 100)));
+  for (int i = 0; i < N; ++i) {  // Z = 1/10 + (2/5 s + 9/10)/(s^2 + s + 1)
+    OperatorBlock o;
+    o.name = "H" + std::to_string(i);
+    o.ports = {i};
+    Mat<Q> A(2, 2), B(2, 1), C(1, 2), D(1, 1);
+    A << 0, 1, -1, -1;
+    B << 0, 1;
+    C << Q(9, 10), Q(2, 5);
+    D << Q(1, 10);
+    o.Z = StateSpace<Q>{A, B, C, D, 0};
+    s.operators.push_back(o);
+  }
+  Mat<Q> Ae = Mat<Q>::Zero(N, N), Be = Mat<Q>::Identity(N, N), Ce = Mat<Q>::Zero(N, N), De(N, N);
+  for (int i = 0; i < N; ++i) {
+    const Q K(500 + 100 * (i % 4)), B(1 + i % 3);
+    Ce(i, i) = -B / s.T;
+    for (int j = 0; j < N; ++j) De(i, j) = Q(-1, 10 * N) + (i == j ? K + B / s.T : Q(0));
+  }
+  s.environment = StateSpace<Q>{Ae, Be, Ce, De, s.T};
+  return s;
+}
+void BM_sim_setup(benchmark::State& st) {
+  const LoopSpec spec = n_device_loop(int(st.range(0)));
+  double radius = 0, states = 0;
+  for (auto _ : st) {
+    Simulator sim(spec);
+    radius = std::max(sim.piece_before().radius, sim.piece_after().radius);
+    states = double(sim.loop().plant.states());
+    keep(radius);
+  }
+  st.counters["radius"] = radius;
+  st.counters["states"] = states;
+}
+BENCHMARK(BM_sim_setup)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond)->Name("sim_setup");
+
 BENCHMARK_MAIN();

@@ -124,6 +124,11 @@ struct ComposedLoop {
 /// det(I + D_E D_V) = 0, T <= 0 or a negative delay.
 ComposedLoop compose(const LoopSpec& spec);
 
+/// The connected components of the graph of a square A (i ~ k when A(i, k) != 0 or A(k, i) != 0),
+/// each in increasing order, in order of their first index: A is block diagonal over them (up to
+/// a permutation). The N DOFs of a loop whose blocks couple none of them fall apart into N.
+std::vector<std::vector<Eigen::Index>> components(const Mat<rational>& A);
+
 /// A physical mass-damper device 1/(m s + b) (m > 0, b >= 0), one DOF, kinetic storage 1/2 m v^2.
 /// (Inline: the scene module builds these without linking the sim library.)
 /// Operator Z_O(s) = m s + b + k/s on DOF `port` (mass, damper and spring; passive for

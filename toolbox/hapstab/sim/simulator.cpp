@@ -18,6 +18,68 @@ Mat<double> to_double(const Mat<rational>& M) {
   return R;
 }
 
+// ---- The enclosures on the parts of the plant each result depends on (issue 33) ----
+//
+// Lemma (exact). Let z' = M z and let R be a set of indices closed under M's dependencies:
+// i in R and M(i, k) != 0 imply k in R. Then M[R, R^c] = 0, so (M^p)[R, :] = M[R, R] (M^(p-1))[R, :]
+// and by induction on p, (M^p)[R, :] is zero outside the columns R and equals M[R, R]^p there.
+// Summing the exponential series: (e^{M t})[R, :] is zero outside the columns R and equals
+// e^{M[R, R] t} there. The rows R of the flow see z_R only.
+//
+// ZOH: M = [[A, B], [0, 0]] (z = [s; in], in held). A connected component C of the graph of A
+// (i ~ k when A(i, k) != 0 or A(k, i) != 0) with the inputs I_C that B feeds into C is closed,
+// and the components partition the states: Phi is block diagonal, Phi[C, C] = e^{A[C, C] h},
+// Gamma[C, I_C] = int_0^h e^{A[C, C] t} dt B[C, I_C], every other entry of Phi, Gamma is 0.
+//
+// Energy: Q_j = (a^T b + b^T a)/2 is zero outside S_j x S_j (S_j: the entries of z that port j's
+// rows a = f_h, b = v involve). With R_j the closure of S_j and E = (e^{M t})[R_j, :],
+// e^{M^T t} Q_j e^{M t} = E^T Q_j[R_j, R_j] E, so W_j = int_0^h e^{M^T t} Q_j e^{M t} dt is zero
+// outside R_j x R_j and W_j[R_j, R_j] = int_0^h e^{M[R,R]^T t} Q_j[R, R] e^{M[R,R] t} dt: Van Loan
+// on the small block.
+//
+// These are identities of the exact matrices, so the Arb enclosure of a block encloses the
+// corresponding entries of the whole, and the entries outside the blocks are exact zeros (no
+// radius): Piece::radius stays a proven bound. Cost, N DOFs coupled only through the controller
+// (the held input): N exponentials of a few states per piece instead of one of n states, and N
+// Gram enclosures of a few states instead of N of 2(n + 2N) (O(N^4) ball arithmetic).
+using Indices = std::vector<Eigen::Index>;
+
+// The smallest R containing S with i in R, M(i, k) != 0 => k in R; increasing.
+Indices dependency_closure(const Mat<rational>& M, const Indices& S) {
+  std::vector<char> in(static_cast<size_t>(M.rows()), 0);
+  Indices todo;
+  for (Eigen::Index i : S)
+    if (!in[size_t(i)]) in[size_t(i)] = 1, todo.push_back(i);
+  while (!todo.empty()) {
+    const Eigen::Index i = todo.back();
+    todo.pop_back();
+    for (Eigen::Index k = 0; k < M.cols(); ++k)
+      if (!in[size_t(k)] && M(i, k) != 0) in[size_t(k)] = 1, todo.push_back(k);
+  }
+  Indices R;
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    if (in[size_t(i)]) R.push_back(i);
+  return R;
+}
+
+// (Phi, Gamma) of s' = A s + B in over h, component by component (the lemma above).
+ZohEnclosure plant_zoh(const Mat<rational>& A, const Mat<rational>& B, const rational& h) {
+  ZohEnclosure z;
+  z.Phi.mid = Mat<double>::Zero(A.rows(), A.rows());
+  z.Gamma.mid = Mat<double>::Zero(A.rows(), B.cols());
+  for (const Indices& C : components(A)) {
+    Indices I;  // the inputs B feeds into C
+    for (Eigen::Index k = 0; k < B.cols(); ++k)
+      if (std::any_of(C.begin(), C.end(), [&](Eigen::Index i) { return B(i, k) != 0; })) I.push_back(k);
+    const ZohEnclosure b = zoh_enclosure(Mat<rational>(A(C, C)), Mat<rational>(B(C, I)), h);
+    z.Phi.mid(C, C) = b.Phi.mid;
+    z.Gamma.mid(C, I) = b.Gamma.mid;
+    z.Phi.radius = std::max(z.Phi.radius, b.Phi.radius);
+    z.Gamma.radius = std::max(z.Gamma.radius, b.Gamma.radius);
+  }
+  return z;
+}
+
 // Propagation over [0, tau] of a step whose input is u_old on [0, f) and u_new on [f, T):
 // s(tau) = P s + Qo u_old + Qn u_new + Qw w (the intersample grid). Each piece is enclosed
 // (numeric/ball_expm.hpp); the composition of the two pieces is one double product.
@@ -27,13 +89,13 @@ struct Prop {
 Prop propagate(const Mat<rational>& A, const Mat<rational>& B, int N, const rational& f, const rational& tau) {
   const auto n = A.rows();
   Prop p;
-  const ZohEnclosure first = zoh_enclosure(A, B, tau < f ? tau : f);
+  const ZohEnclosure first = plant_zoh(A, B, tau < f ? tau : f);
   p.P = first.Phi.mid;
   p.Qo = first.Gamma.mid.leftCols(N);
   p.Qn = Mat<double>::Zero(n, N);
   p.Qw = first.Gamma.mid.rightCols(N);
   if (tau > f) {
-    const ZohEnclosure second = zoh_enclosure(A, B, tau - f);
+    const ZohEnclosure second = plant_zoh(A, B, tau - f);
     p.P = (second.Phi.mid * p.P).eval();
     p.Qo = (second.Phi.mid * p.Qo).eval();
     p.Qw = (second.Phi.mid * p.Qw + second.Gamma.mid.rightCols(N)).eval();
@@ -72,20 +134,27 @@ Simulator::Simulator(const LoopSpec& spec) : spec_(spec), loop_(compose(spec)) {
   Dc_ = to_double(C.D);
 }
 
+Mat<double> Simulator::PortGram::dense(Eigen::Index nz) const {
+  Mat<double> D = Mat<double>::Zero(nz, nz);
+  D(support, support) = W;
+  return D;
+}
+
 Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
   const int N = loop_.N;
   const auto& P = loop_.plant;
   const auto n = P.A.rows(), nz = n + 2 * N;
   Piece pc;
   pc.h = to_real<double>(h);
-  const ZohEnclosure zp = zoh_enclosure(P.A, P.B, h);
+  const ZohEnclosure zp = plant_zoh(P.A, P.B, h);
   pc.Phi = zp.Phi.mid;
   pc.Gu = zp.Gamma.mid.leftCols(N);
   pc.Gw = zp.Gamma.mid.rightCols(N);
   pc.radius = std::max(zp.Phi.radius, zp.Gamma.radius);
   if (!energy) return pc;
   // z = [s; u; w], z' = M z. Power at port j: (a_j z)(b_j z), a = f_h row, b = v row;
-  // W_j = int_0^h e^{M^T t} Q_j e^{M t} dt with Q_j = (a^T b + b^T a)/2.
+  // W_j = int_0^h e^{M^T t} Q_j e^{M t} dt with Q_j = (a^T b + b^T a)/2, on the closure R_j of
+  // the entries a and b involve (the lemma above: exact).
   Mat<rational> M = Mat<rational>::Zero(nz, nz);
   M.topLeftCorner(n, n) = P.A;
   M.topRightCorner(n, 2 * N) = P.B;
@@ -93,10 +162,21 @@ Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
     Mat<rational> a(1, nz), b(1, nz);
     a << P.C.row(2 * N + j), P.D.row(2 * N + j);
     b << P.C.row(N + j), P.D.row(N + j);
-    const Mat<rational> Q = (a.transpose() * b + b.transpose() * a) / rational(2);
-    const DoubleEnclosure W = gram_enclosure(M, Q, h);
-    pc.W.push_back(W.mid);
-    pc.radius = std::max(pc.radius, W.radius);
+    Indices S;
+    for (Eigen::Index i = 0; i < nz; ++i)
+      if (a(0, i) != 0 || b(0, i) != 0) S.push_back(i);
+    PortGram g;
+    g.support = dependency_closure(M, S);
+    if (g.support.empty()) {
+      g.W = Mat<double>(0, 0);  // no power at this port: W_j = 0
+    } else {
+      const Mat<rational> aR = a(0, g.support), bR = b(0, g.support);
+      const Mat<rational> Q = (aR.transpose() * bR + bR.transpose() * aR) / rational(2);
+      const DoubleEnclosure W = gram_enclosure(Mat<rational>(M(g.support, g.support)), Q, h);
+      g.W = W.mid;
+      pc.radius = std::max(pc.radius, W.radius);
+    }
+    pc.W.push_back(std::move(g));
   }
   return pc;
 }
@@ -184,7 +264,8 @@ struct Engine {
   const MCN Bc;
   const MNC Cc;
   const MNN Dc;
-  Grams W1, W2;
+  Grams W1, W2;      ///< the port Gram matrices, dense (fixed sizes only: a few states)
+  Vec<double> zr, Wzr;  ///< z and W_j z on a port's support (dynamic sizes)
   std::vector<char> contact;
   std::vector<double> quantum;     ///< per DOF, 0: no encoder
   std::vector<char> round_q;       ///< per DOF: round (half up) instead of floor
@@ -231,9 +312,17 @@ struct Engine {
         Cx(sim.Cx_), Cv(sim.Cv_), Cf(sim.Cf_), Dfu(sim.Dfu_), Dfw(sim.Dfw_), Ac(sim.Ac_), Bc(sim.Bc_), Cc(sim.Cc_),
         Dc(sim.Dc_), nd(sim.nd_), Rn(std::min(sim.nd_, opt.steps) + 2), ev(exogenous_events(sp, L.T)), M(opt.substeps),
         fine(opt.substeps > 1 && opt.fine_to >= opt.fine_from), ST(R.samples), FT(R.fine), rec(opt.record_every) {
-    for (int j = 0; j < N; ++j) {
-      W1.emplace_back(S.p1_.W[j]);
-      W2.emplace_back(S.p2_.W[j]);
+    if constexpr (NZ != D) {
+      for (int j = 0; j < N; ++j) {
+        W1.emplace_back(S.p1_.W[j].dense(nz));
+        W2.emplace_back(S.p2_.W[j].dense(nz));
+      }
+    } else {
+      size_t r = 0;
+      for (const Simulator::Piece* p : {&S.p1_, &S.p2_})
+        for (const auto& g : p->W) r = std::max(r, g.support.size());
+      zr.resize(Eigen::Index(r));
+      Wzr.resize(Eigen::Index(r));
     }
     contact.assign(size_t(N), 0);
     for (int j : spec.contact) contact[j] = 1;
@@ -404,9 +493,29 @@ struct Engine {
     for (int j = 0; j < N; ++j) e_po[size_t(j)] += T * fh(j) * v(j);
   }
 
+  // E_port_j += z^T W_j z: dense in the fixed sizes; otherwise on the supports R_j (sum_j |R_j|^2
+  // per step instead of N (n + 2N)^2; W_j is exactly zero elsewhere).
+  void port_energies(const Grams& W, const std::vector<Simulator::PortGram>& G) {
+    if constexpr (NZ != D) {
+      for (int j = 0; j < N; ++j) {
+        Wz.noalias() = W[size_t(j)] * z;
+        e_port[size_t(j)] += z.dot(Wz);
+      }
+    } else {
+      for (int j = 0; j < N; ++j) {
+        const Simulator::PortGram& g = G[size_t(j)];
+        const Eigen::Index r = Eigen::Index(g.support.size());
+        zr.head(r) = z(g.support);
+        Wzr.head(r).noalias() = g.W * zr.head(r);
+        e_port[size_t(j)] += zr.head(r).dot(Wzr.head(r));
+      }
+    }
+  }
+
   // One piece of constant input ui: s+ = Phi s + Gu ui + Gw w; E_port_j += z^T W_j z with
   // z = [s; ui; w]; E_act_j += ui_j (x_j+ - x_j).
-  void propagate_piece(const MX& Phi, const MXN& Gu, const MXN& Gw, const Grams& W, const VN& ui, double h) {
+  void propagate_piece(const MX& Phi, const MXN& Gu, const MXN& Gw, const Grams& W,
+                       const std::vector<Simulator::PortGram>& G, const VN& ui, double h) {
     if (S.coulomb_) {  // one DOF: events inside the piece (sim/coulomb.hpp)
       Vec<double> sd = s;
       double ep = 0, ea = 0;
@@ -421,10 +530,7 @@ struct Engine {
     if (energy) {
       z << s, ui, w;
       xa.noalias() = Cx * s;
-      for (int j = 0; j < N; ++j) {
-        Wz.noalias() = W[size_t(j)] * z;
-        e_port[size_t(j)] += z.dot(Wz);
-      }
+      port_energies(W, G);
     }
     tmp.noalias() = Phi * s;
     tmp.noalias() += Gu * ui;
@@ -438,8 +544,8 @@ struct Engine {
 
   // The exact propagation over the period, and the running minimum of sum_j E_port_j.
   void propagate_period() {
-    if (split) propagate_piece(Phi1, Gu1, Gw1, W1, uo, S.p1_.h);
-    propagate_piece(Phi2, Gu2, Gw2, W2, un, S.p2_.h);
+    if (split) propagate_piece(Phi1, Gu1, Gw1, W1, S.p1_.W, uo, S.p1_.h);
+    propagate_piece(Phi2, Gu2, Gw2, W2, S.p2_.W, un, S.p2_.h);
     if (energy) {
       double tot = 0;
       for (int j = 0; j < N; ++j) tot += e_port[size_t(j)];

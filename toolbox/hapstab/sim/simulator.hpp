@@ -9,7 +9,10 @@
 // the energy Gram matrices are enclosed once in ball arithmetic from the exact (rational) loop
 // (numeric/ball_expm.hpp, Arb) and rounded to double; Piece::radius bounds the difference
 // from the exact matrices (rounding included, typically one ulp). The remaining error is the
-// double recursion itself.
+// double recursion itself. Each enclosure is taken on the part of the plant its result depends
+// on (a connected component of the plant for Phi, Gamma; the states and inputs port j's power
+// depends on for W_j): an exact restriction (simulator.cpp states the lemma), so N DOFs coupled
+// only through the controller cost N small enclosures, not O(N^4) ball arithmetic.
 //
 // Encoders and Coulomb friction (LoopSpec::quantizers, ::coulomb). The controller sees the
 // quantized sampled position (before the contact clip). Coulomb friction with stiction is
@@ -116,11 +119,19 @@ class Simulator {
   const ComposedLoop& loop() const { return loop_; }
 
   // The exact step matrices (double), exposed for tests and the bench.
+  /// The energy Gram matrix of one port on its support: W_j (size (n+2N)^2) is exactly zero
+  /// outside support x support (simulator.cpp, make_piece), so int f_h v dt = z_R^T W z_R with
+  /// z_R = z(support).
+  struct PortGram {
+    std::vector<Eigen::Index> support;    ///< R_j, increasing indices into z = [s; u; w]
+    Mat<double> W;                        ///< W_j[R_j, R_j]
+    Mat<double> dense(Eigen::Index nz) const;  ///< W_j itself, nz x nz
+  };
   struct Piece {
     double h = 0;
     Mat<double> Phi, Gu, Gw;              ///< s+ = Phi s + Gu u + Gw w over a piece of length h
-    std::vector<Mat<double>> W;           ///< per DOF, (n+2N)^2: int f_h v dt = z^T W z
-    double radius = 0;                    ///< every entry above is within this of the exact value
+    std::vector<PortGram> W;              ///< per DOF: int f_h v dt = z^T W_j z
+    double radius = 0;                    ///< every entry above (and W_j's zeros) is within this of the exact value
   };
   const Piece& piece_before() const { return p1_; }  ///< [kT, kT+f) (h = 0 when f = 0)
   const Piece& piece_after() const { return p2_; }   ///< [kT+f, (k+1)T)
