@@ -26,6 +26,7 @@
 #include "hapstab/lmi/program.hpp"
 #include "hapstab/multidof/analysis.hpp"
 #include "hapstab/multidof/design.hpp"
+#include "hapstab/multidof/detail.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -169,25 +170,15 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
 // 3. Theorem 6 block by block (multidof/design.hpp, DesignPath::blockwise). For V =
 //    blockdiag(V_b), K = blockdiag(K_b), X and Q_V diagonal, V-hat's Lemma 1 matrix
 //    F(P) = [[A^T P A - P + C^T Q C, A^T P B - C^T X/2 + C^T Q D], [., B^T P B - (X D + D^T X)/2 + D^T Q D]]
-//    separates: (i) for every symmetric P its principal submatrix on block b's indices (V_b's
-//    states, its delayed inputs, its inputs) is F_b(P_bb), so the whole LMI implies each block's;
+//    (multidof/detail.hpp, lemma1_matrix: the matrix the exact re-check tests) separates:
+//    (i) for every symmetric P its principal submatrix on block b's indices (V_b's states, its
+//    delayed inputs, its inputs) is F_b(P_bb), so the whole LMI implies each block's;
 //    (ii) for P = blockdiag(P_b) placed on those indices, F(P) is zero off the blocks and F_b(P_b)
 //    on them, so the blocks' LMIs give the whole's. Hence Lemma 1 for V-hat holds iff it holds
 //    for every block. Both identities are checked in rational arithmetic on random instances;
 //    then the block-wise design of an N = 8 contact scene whose environment lacks passivity is
 //    verified by the generic Theorem 4 program (all of P_E, P_V, X, Q_E, Q_V free).
 namespace {
-
-MatQ lemma1_matrix(const StateSpace<rational>& Vh, const MatQ& P, const MatQ& X, const MatQ& Q) {
-  const Eigen::Index nn = Vh.states(), m = Vh.inputs();
-  const MatQ &A = Vh.A, &B = Vh.B, &C = Vh.C, &D = Vh.D;
-  MatQ F(nn + m, nn + m);
-  F.topLeftCorner(nn, nn) = A.transpose() * P * A - P + C.transpose() * Q * C;
-  F.topRightCorner(nn, m) = A.transpose() * P * B - C.transpose() * X / 2 + C.transpose() * Q * D;
-  F.bottomLeftCorner(m, nn) = F.topRightCorner(nn, m).transpose();
-  F.bottomRightCorner(m, m) = B.transpose() * P * B - (X * D + D.transpose() * X) / 2 + D.transpose() * Q * D;
-  return F;
-}
 
 MatQ random_symmetric(std::mt19937& g, int n) {
   const MatQ R = random_dyadic(g, n, n);
@@ -241,7 +232,7 @@ HAPSTAB_PROOF(multidof_blockwise, "000", "Theorem 6 block by block: Lemma 1 for 
     const StateSpace<rational> Vh = multidof::vhat(V, K);
     const int nn = ns + m;
     const MatQ P = random_symmetric(g, nn);
-    const MatQ F = lemma1_matrix(Vh, P, X, Q);
+    const MatQ F = multidof::detail::lemma1_matrix(Vh, P, X, Q);
     MatQ Pb = MatQ::Zero(nn, nn);
     std::vector<MatQ> Fb;
     std::vector<Eigen::Index> covered(static_cast<size_t>(nn + m), -1);
@@ -255,19 +246,19 @@ HAPSTAB_PROOF(multidof_blockwise, "000", "Theorem 6 block by block: Lemma 1 for 
       const StateSpace<rational> Vhb = multidof::vhat(Vb, K.block(c, c, mbk, mbk));
       const MatQ Xb = X.block(c, c, mbk, mbk), Qb = Q.block(c, c, mbk, mbk);
       // (i) the principal submatrix of F(P) on block b's indices is F_b(P_bb)
-      principal = principal && sub(F, fidx[static_cast<size_t>(b)]) == lemma1_matrix(Vhb, sub(P, sidx[static_cast<size_t>(b)]), Xb, Qb);
+      principal = principal && sub(F, fidx[static_cast<size_t>(b)]) == multidof::detail::lemma1_matrix(Vhb, sub(P, sidx[static_cast<size_t>(b)]), Xb, Qb);
       // (ii) a block storage P_b placed on block b's state indices
       const MatQ Pk = random_symmetric(g, nbk + mbk);
       for (size_t i = 0; i < sidx[static_cast<size_t>(b)].size(); ++i)
         for (size_t j = 0; j < sidx[static_cast<size_t>(b)].size(); ++j)
           Pb(sidx[static_cast<size_t>(b)][i], sidx[static_cast<size_t>(b)][j]) = Pk(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-      Fb.push_back(lemma1_matrix(Vhb, Pk, Xb, Qb));
+      Fb.push_back(multidof::detail::lemma1_matrix(Vhb, Pk, Xb, Qb));
       nonzero = nonzero || Fb.back() != MatQ(MatQ::Zero(Fb.back().rows(), Fb.back().cols()));
       for (Eigen::Index i : fidx[static_cast<size_t>(b)]) covered[static_cast<size_t>(i)] = b;
       s += nbk;
       c += mbk;
     }
-    const MatQ FP = lemma1_matrix(Vh, Pb, X, Q);
+    const MatQ FP = multidof::detail::lemma1_matrix(Vh, Pb, X, Q);
     for (Eigen::Index i = 0; i < nn + m; ++i)
       for (Eigen::Index j = 0; j < nn + m; ++j)
         if (covered[static_cast<size_t>(i)] != covered[static_cast<size_t>(j)]) assembly = assembly && FP(i, j) == 0;

@@ -567,8 +567,9 @@ Problem with_siso_coupling(Problem pb) {  // one first-order SISO block per devi
 // The block-wise design returns a V whose every independent check passes exactly, and the
 // generic program of Theorem 4 -- over all of P_E, P_V, X, Q_E, Q_V, not the block-wise
 // certificate's fixed point -- proves the same V stabilising. Where the structured analysis
-// path does not apply (X not pinned to one direction) the design falls back to the generic CCL. The generic design never contradicts it (on the active contacts its first
-// CCL step stops early on the IPM, "lost positive definiteness": undecided, no V).
+// path does not apply (X not pinned to one direction) the design falls back to the generic CCL.
+// The generic design never contradicts it (on the active contacts its first CCL step stops early
+// on the IPM, "lost positive definiteness": undecided, no V).
 TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
   struct Case {
     const char* what;

@@ -389,6 +389,17 @@ VhatVars add_vhat(Program& prog, const StateSpace<rational>& V, const MatQ& K, c
   return vv;
 }
 
+MatQ lemma1_matrix(const StateSpace<rational>& Vh, const MatQ& P, const MatQ& X, const MatQ& QV) {
+  const Eigen::Index nn = Vh.states(), m = Vh.inputs();
+  const MatQ &A = Vh.A, &B = Vh.B, &C = Vh.C, &D = Vh.D;
+  MatQ F(nn + m, nn + m);
+  F.topLeftCorner(nn, nn) = A.transpose() * P * A - P + C.transpose() * QV * C;
+  F.topRightCorner(nn, m) = A.transpose() * P * B - C.transpose() * X / 2 + C.transpose() * QV * D;
+  F.bottomLeftCorner(m, nn) = F.topRightCorner(nn, m).transpose();
+  F.bottomRightCorner(m, m) = B.transpose() * P * B - (X * D + D.transpose() * X) / 2 + D.transpose() * QV * D;
+  return F;
+}
+
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
                         const MatQ& QV, const MatQ& P11, std::string& why) {
   const auto& Vh = vv.Vh;
@@ -411,12 +422,7 @@ bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const s
     why = "P_V > 0 fails exactly";
     return false;
   }
-  const MatQ &A = Vh.A, &B = Vh.B, &C = Vh.C, &D = Vh.D;
-  MatQ F(nn + m, nn + m);
-  F.topLeftCorner(nn, nn) = A.transpose() * P * A - P + C.transpose() * QV * C;
-  F.topRightCorner(nn, m) = A.transpose() * P * B - C.transpose() * X / 2 + C.transpose() * QV * D;
-  F.bottomLeftCorner(m, nn) = F.topRightCorner(nn, m).transpose();
-  F.bottomRightCorner(m, m) = B.transpose() * P * B - (X * D + D.transpose() * X) / 2 + D.transpose() * QV * D;
+  const MatQ F = lemma1_matrix(Vh, P, X, QV);
   MatQ W = MatQ::Zero(nn + m, m);
   W.block(nb, 0, m, m) = MatQ::Identity(m, m);
   W.block(nn, 0, m, m) = MatQ::Identity(m, m);

@@ -74,6 +74,8 @@ struct VhatVars {
 };
 VhatVars add_vhat(lmi::Program& prog, const StateSpace<rational>& V, const MatQ& K, const std::vector<MatQ>& Xk,
                   const std::vector<lmi::Expr>& theta, const lmi::Expr& QV);
+/// Lemma 1's matrix for V-hat (the congruence form above) at a storage P, exact.
+MatQ lemma1_matrix(const StateSpace<rational>& Vh, const MatQ& P, const MatQ& X, const MatQ& QV);
 /// Exact re-check of the coupling side at exact theta, Q_V, P11.
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
                         const MatQ& QV, const MatQ& P11, std::string& why);
