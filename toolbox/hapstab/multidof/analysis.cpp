@@ -682,57 +682,61 @@ bool kyp_verdict(const Problem& pb, const EhatSplit& sp, const Pinned& px, Analy
 // attained along Q_E = r g I, ||Q_V|| -> g d r / (d - r) (r >= 0; 0 when r < 0), least at g = 1 and
 // the least r with the first LMI feasible. That r is found by bisection on the Riccati
 // equation's solvability (lmi/kyp.hpp), the point at r slightly above it re-checked exactly.
-// `diagonal`: Delta_D X = diag(d_i) need not be a multiple of I. The same bisection along
-// Q_E = r I (r < min d_i) then gives the certified point Q_V = diag(r d_i / (d_i - r)): a
-// coupling requirement, not necessarily the least one (design.cpp's block-wise path uses it).
-// nullopt when Delta_D X is not a multiple of I (not diagonal, with `diagonal`), or no Riccati
-// point is found there (the caller then runs the generic program; design.cpp then designs by
-// the generic CCL).
+// `diagonal`: Delta_D X = diag(d_i) need not be a multiple of I. The same bisection then runs
+// along Q_E = s Delta_D X (0 < s < 1; the verdict's Q_E = Delta_D X - eps I is its end s -> 1):
+// the certified point Q_V = diag(s d_i / (1 - s)) is a coupling requirement, not necessarily the
+// least one (design.cpp's block-wise path uses it). nullopt when Delta_D X is not a multiple of I
+// (not diagonal, with `diagonal`), or no Riccati point is found there (the caller then runs the
+// generic program; design.cpp then designs by the generic CCL).
 std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px,
                                                    bool diagonal) {
   const int m = pb.structure.m();
   const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
   const bool scalar = DX == MatQ(DX(0, 0) * MatQ::Identity(m, m));
   if (!scalar && !(diagonal && DX.isDiagonal(0))) return std::nullopt;
-  rational dq = DX(0, 0);
-  for (int i = 1; i < m; ++i) dq = std::min(dq, DX(i, i));
-  const double d = to_real<double>(dq);
-  auto data = [&](double r) {
+  // Q_E = t G: G = I and t = r in (lo, d) when Delta_D X = d I; G = Delta_D X and t = s in (lo, 1)
+  // otherwise. lo: -(R - t G) must be > 0, i.e. t > lambda_max(G^-1/2 R G^-1/2); the upper end is
+  // feasible (the verdict).
+  const MatQ G = scalar ? MatQ(MatQ::Identity(m, m)) : DX;
+  const rational t_end = scalar ? DX(0, 0) : rational(1);
+  const double d = to_real<double>(t_end);
+  const MatrixXd Gd = to_double(G);
+  const Eigen::VectorXd gi = Gd.diagonal().cwiseSqrt().cwiseInverse();
+  auto data = [&](double t) {
     lmi::KypData k = px.kyp;
-    k.R -= r * MatrixXd::Identity(m, m);
+    k.R -= t * Gd;
     return k;
   };
-  // lo: infeasible (-R must be > 0, i.e. r > lambda_max(F22)); hi = d: feasible when Delta_D X = d I
-  // (the verdict), checked otherwise
-  Eigen::SelfAdjointEigenSolver<MatrixXd> es(0.5 * (px.kyp.R + px.kyp.R.transpose()), Eigen::EigenvaluesOnly);
+  const MatrixXd Rs = gi.asDiagonal() * (0.5 * (px.kyp.R + px.kyp.R.transpose())) * gi.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<MatrixXd> es(Rs, Eigen::EigenvaluesOnly);
   double lo = es.eigenvalues()(m - 1), hi = d;
   const double width = hi - lo;
   if (!(width > 0)) return std::nullopt;
   const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
-  if (!scalar && !lmi::kyp_riccati_point(data(hi - 1e-6 * width), 1e-9 * width).found) return std::nullopt;
   while (hi - lo > 1e-7 * width && solves < 60) {
     const double mid = 0.5 * (lo + hi);
     ++solves;
     (lmi::kyp_riccati_point(data(mid), 1e-9 * width).found ? hi : lo) = mid;
   }
-  // the point: r_c a little above the least r, where the LMI has room for a rounded point
-  const rational rc = lmi::round_dyadic(std::min(d, hi + 1e-6 * width), 30);
-  if (!scalar && !(rc < dq)) return std::nullopt;
-  const lmi::KypData k = data(to_real<double>(rc));
+  // the point: t_c a little above the least t, where the LMI has room for a rounded point
+  const rational tc = lmi::round_dyadic(std::min(d, hi + 1e-6 * width), 30);
+  if (!(tc < t_end)) return std::nullopt;  // (14) needs Delta_D X - Q_E > 0
+  const lmi::KypData k = data(to_real<double>(tc));
   const lmi::KypPoint kp = lmi::kyp_interior_point(k);
   if (!kp.found) return std::nullopt;
   KypMinPoint p;
   p.numeric_seconds = since(t0);
-  p.r = rc;
+  p.r = tc;
   p.env.X = px.X;
   p.env.theta = {px.theta};
   p.env.P11 = rounded_p11(k, kp);
-  p.env.QE = rc * MatQ::Identity(m, m);
-  const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, d), 20);
+  p.env.QE = tc * G;
+  const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, to_real<double>(DX(0, 0))), 20);
   p.QV = MatQ::Zero(m, m);
   for (int i = 0; i < m; ++i) {
-    const rational f = rc * DX(i, i) / (DX(i, i) - rc);  // Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E, channel i
+    const rational q = p.env.QE(i, i);
+    const rational f = q * DX(i, i) / (DX(i, i) - q);  // Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E, channel i
     p.QV(i, i) = (f > 0 ? f : rational(0)) + e;
   }
   p.certified = exact_recheck(pb, sp, p.env, p.QV, p.why);

@@ -310,6 +310,14 @@ bool block_diagonal_in(const MatQ& M, const std::vector<CouplingBlock>& blocks) 
 
 MatQ square(const MatQ& M, const CouplingBlock& b) { return M.block(b.c, b.c, b.m, b.m); }
 
+// "r I with r = x" or "s Delta_D X with s = x": the structured path's direction of Q_E.
+std::string qe_text(const KypMinPoint& mp) {
+  const bool scalar = mp.env.QE == MatQ(mp.env.QE(0, 0) * MatQ::Identity(mp.env.QE.rows(), mp.env.QE.rows()));
+  std::ostringstream o;
+  o << (scalar ? "r I with r = " : "s Delta_D X with s = ") << to_real<double>(mp.r);
+  return o.str();
+}
+
 // "q = x" for Q_V = x I, "q_i in [lo, hi]" otherwise (diagonal Q_V).
 std::string qv_range(const MatQ& QV) {
   double lo = INFINITY, hi = -INFINITY;
@@ -387,8 +395,7 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
   out.push_back(osp_level_item(level));
   std::ostringstream o;
   o << "block-wise certificate at the structured path's point (X pinned by the facial conditions, "
-       "min g_i = 1; Q_E = r I with r = "
-    << to_real<double>(mp.r) << "; P11 from a Riccati equation; Q_V diagonal, " << qv_range(mp.QV)
+       "min g_i = 1; Q_E = " << qe_text(mp) << "; P11 from a Riccati equation; Q_V diagonal, " << qv_range(mp.QV)
     << "): environment side: " << mp.why << " | coupling side: Lemma 1 for Vhat^Gamma at that X and Q_V, block by block "
     << "(the first item) | gamma =";
   for (double g : gamma_sqrt(pb, to_double(mp.env.X))) o << " " << g;
@@ -466,7 +473,7 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   const bool blockwise_certificate = checks.has_value();
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, res.gamma_sqrt, res.Q_V, opt.lmi);
   std::ostringstream o;
-  o << "block-wise design: Q_V from the structured path (the least along Q_E = r I; diagonal, " << qv_range(mp->QV)
+  o << "block-wise design: Q_V from the structured path (the least along Q_E = " << qe_text(*mp) << "; diagonal, " << qv_range(mp->QV)
     << ", certified), then CCL for each of the " << blocks.size() << " blocks of V with Q, Y block diagonal and Q_V fixed at (1 + "
     << to_real<double>(kBlockwiseMargin) << ") times it; "
     << (res.converged ? "CCL converged in every block" : "CCL did not reach the trace target in " + std::to_string(unconverged) + " blocks")

@@ -21,11 +21,11 @@
 //                Schur complement grows like N^6 (N = 16 took 23 s, N = 32 did not finish in 15 min).
 //   blockwise    when the structured analysis path applies (analysis.hpp, kyp_riccati: X pinned,
 //                Delta_D X diagonal) and K is block diagonal in V's blocks: Q_V is fixed at the
-//                certified point of that path's bisection along Q_E = r I (Q_V = diag(r d_i /
-//                (d_i - r)), the least dissipative when Delta_D X = d I), which satisfies (14)
-//                with that point's X and Q_E. (20) and (22) then separate: with Q, Y block
-//                diagonal in V's blocks and Sigma = ((1 + 1/16) Q_V)^-1 fixed, the CCL of the
-//                whole is one small CCL per block (each block's LMIs are principal submatrices
+//                certified point of that path's bisection along Q_E = r I (Q_V = q I, the least
+//                dissipative, when Delta_D X = d I) or along Q_E = s Delta_D X (Q_V = diag(s d_i /
+//                (1 - s)) otherwise), which satisfies (14) with that point's X and Q_E. (20) and
+//                (22) then separate: with Q, Y block diagonal in V's blocks and Sigma =
+//                ((1 + 1/16) Q_V)^-1 fixed, the CCL of the whole is one small CCL per block (each block's LMIs are principal submatrices
 //                of the whole's). The checks are block-wise too (Lemma 1 for V-hat holds iff it
 //                holds for each block, P_V = blockdiag(P_V,b)); Theorem 4 is certified by the
 //                environment side's exact certificate at that point and the blocks' storage

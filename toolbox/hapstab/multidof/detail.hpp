@@ -49,13 +49,13 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
 /// exact: X pinned by the facial conditions (min g_i = 1), Q_E = r I, P11 from the Riccati
 /// equation, Q_V = q I; `certified` when exact_recheck passed on the rational data (15) (`why`
 /// says what was checked, or what failed). Where Delta_D X = diag(d_i) is diagonal but not a
-/// multiple of I, the point of the same bisection along Q_E = r I, Q_V = diag(r d_i/(d_i - r))
-/// (certified, not necessarily least). nullopt when X is not pinned to one direction, Delta_D X
-/// is not diagonal, or no Riccati point is found.
+/// multiple of I, the point of the same bisection along Q_E = s Delta_D X, Q_V = diag(s d_i/(1 - s))
+/// (certified, not necessarily least; `r` is then s). nullopt when X is not pinned to one
+/// direction, Delta_D X is not diagonal, or no Riccati point is found.
 struct KypMinPoint {
   ExactEnv env;
   MatQ QV;
-  rational r;
+  rational r;  ///< Q_E = r I (Delta_D X = d I), or Q_E = r Delta_D X
   bool certified = false;
   std::string why;
   int riccati_solves = 0;
