@@ -137,9 +137,9 @@ std::vector<long> pivot_columns(flint::QMat& M) {
 // give the coordinates x = V xi in which the uncontrollable part is the trailing block.
 // Everything on fmpq_mat (multimodular / fraction-free): the N = 32 contact scene's 96-state
 // realisation in ~0.1 s, where Gaussian elimination on Boost rationals took 20 s.
-StateSpace<Q> controllable_part(const StateSpace<Q>& s) {
+KalmanSplit split(const StateSpace<Q>& s) {
   const long n = static_cast<long>(s.states()), m = static_cast<long>(s.B.cols());
-  if (n == 0) return s;
+  if (n == 0) return {s, MQ(0, 0)};
   flint::QMat A = to_qmat(s.A), blk = to_qmat(s.B);
   MQ K(n, 0);
   long rank = 0;
@@ -158,7 +158,7 @@ StateSpace<Q> controllable_part(const StateSpace<Q>& s) {
     fmpq_mat_mul(prod.get(), A.get(), blk.get());
     fmpq_mat_swap(prod.get(), blk.get());
   }
-  if (rank == n) return s;
+  if (rank == n) return {s, MQ(0, 0)};
   MQ KI(n, rank + n);
   KI << K, MQ::Identity(n, n);
   flint::QMat kiq = to_qmat(KI);
@@ -171,8 +171,10 @@ StateSpace<Q> controllable_part(const StateSpace<Q>& s) {
   if (!fmpq_mat_solve(X.get(), Vq.get(), Rq.get())) throw NumericalError("minreal: singular change of coordinates");
   const MQ At = from_qmat(X, rank, rank), Bt = from_qmat(X, rank, m, 0, n);
   const MQ Ct = exact_product(s.C, MQ(V.leftCols(rank)));
-  return {At, Bt, Ct, s.D, s.T};
+  return {{At, Bt, Ct, s.D, s.T}, from_qmat(X, n - rank, n - rank, rank, rank)};
 }
+
+StateSpace<Q> controllable_part(const StateSpace<Q>& s) { return split(s).controllable; }
 
 StateSpace<Q> dual(const StateSpace<Q>& s) {
   return {s.A.transpose(), s.C.transpose(), s.B.transpose(), s.D.transpose(), s.T};
@@ -183,6 +185,28 @@ StateSpace<Q> dual(const StateSpace<Q>& s) {
 StateSpace<Q> minreal(const StateSpace<Q>& sys) {
   sys.validate("minreal");
   return dual(controllable_part(dual(controllable_part(sys))));
+}
+
+KalmanSplit controllable_split(const StateSpace<Q>& sys) {
+  sys.validate("controllable_split");
+  return split(sys);
+}
+
+HiddenModes hidden_modes(const StateSpace<Q>& sys) {
+  sys.validate("hidden_modes");
+  const StateSpace<Q> c = controllable_part(sys);
+  HiddenModes h;
+  h.minimal = dual(controllable_part(dual(c)));
+  // det(xI - A) over det(xI - A_c): exact division (the Kalman form is block triangular)
+  auto quotient = [](const MQ& big, const MQ& small) {
+    if (big.rows() == small.rows()) return Polynomial<Q>(Q(1));
+    const auto [q, r] = divmod(charpoly(big), charpoly(small));
+    if (!r.is_zero()) throw NumericalError("hidden_modes: the characteristic polynomials do not divide");
+    return q.monic();
+  };
+  h.uncontrollable = quotient(sys.A, c.A);
+  h.unobservable = quotient(c.A, h.minimal.A);
+  return h;
 }
 
 }  // namespace hapstab

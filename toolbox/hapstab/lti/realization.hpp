@@ -37,4 +37,28 @@ Polynomial<rational> charpoly(const Mat<rational>& A);
 /// Minimal realisation: keeps the controllable and observable part (exact rank decisions).
 StateSpace<rational> minreal(const StateSpace<rational>& sys);
 
+/// The Kalman split of (A, B): in coordinates x = V xi with V = [controllable basis, completion],
+/// A = [[A_c, A_12], [0, A_u]]. `controllable` is (A_c, B_c, C V_c, D) (what minreal keeps first),
+/// `uncontrollable_A` the block A_u (0 x 0 when (A, B) is controllable): its eigenvalues are the
+/// modes no input reaches.
+struct KalmanSplit {
+  StateSpace<rational> controllable;
+  Mat<rational> uncontrollable_A;
+};
+KalmanSplit controllable_split(const StateSpace<rational>& sys);
+
+/// The modes a realisation hides from its input or its output, exactly (the Kalman
+/// decompositions minreal makes): with A_c the controllable part and A_min the minimal one,
+///   det(xI - A) = uncontrollable(x) * det(xI - A_c),   det(xI - A_c) = unobservable(x) * det(xI - A_min).
+/// A mode both uncontrollable and unobservable is counted as uncontrollable. Both factors are
+/// monic (1 when nothing is hidden). Every hidden mode stays an eigenvalue of any loop the block
+/// is connected into (no input reaches it, or no output shows it): a verdict about the loop as
+/// written must check them before it works on `minimal` (DESIGN.md, Theorem 5 and realisations).
+struct HiddenModes {
+  Polynomial<rational> uncontrollable, unobservable;
+  StateSpace<rational> minimal;  ///< minreal(sys)
+  bool any() const { return uncontrollable.degree() > 0 || unobservable.degree() > 0; }
+};
+HiddenModes hidden_modes(const StateSpace<rational>& sys);
+
 }  // namespace hapstab
