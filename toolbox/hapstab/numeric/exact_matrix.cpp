@@ -17,6 +17,12 @@ MatQ exact_product(const MatQ& A, const MatQ& B) {
   return flint::from_qmat(c, static_cast<long>(A.rows()), static_cast<long>(B.cols()));
 }
 
+long exact_rank(const MatQ& A) {
+  if (A.rows() == 0 || A.cols() == 0) return 0;
+  flint::QMat a = flint::to_qmat(A), r(static_cast<long>(A.rows()), static_cast<long>(A.cols()));
+  return fmpq_mat_rref(r.get(), a.get());
+}
+
 MatQ exact_solve(const MatQ& A, const MatQ& B, const std::string& what) {
   if (A.rows() != A.cols()) throw InputError(what + " is not square");
   if (A.rows() != B.rows())

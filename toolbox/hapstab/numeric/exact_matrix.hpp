@@ -17,6 +17,9 @@ namespace hapstab {
 /// A B, exact. InputError when the inner dimensions differ.
 MatQ exact_product(const MatQ& A, const MatQ& B);
 
+/// The rank of A, exact (FLINT's fraction-free reduction).
+long exact_rank(const MatQ& A);
+
 /// The X with A X = B, exact (A square). InputError naming `what` when A is singular.
 MatQ exact_solve(const MatQ& A, const MatQ& B, const std::string& what);
 

@@ -1,0 +1,71 @@
+// hapstab/numeric/ball_matrix.hpp -- real matrices known to within a proven radius per entry
+// (midpoint-radius form), the data of a sampled-data loop once exponentials enter: e^{AT} of
+// exact A is enclosed (numeric/ball_expm.hpp), not known exactly. Every exact value lies within
+// rad(i, j) of mid(i, j). Products are taken in Arb ball arithmetic at 128 bits and rounded back
+// to double outward (the rounding of the midpoint is added to the radius), so the enclosure
+// property survives every operation here.
+//
+// And the certified decisions made on such matrices (the Stein inertia theorem, proven in
+// proofs/schur_lyapunov.cpp):
+//   positive_definite(S):  every symmetric matrix inside the balls of S is positive definite.
+//                          Congruence by an exact upper-triangular X ~ L^-T (L the double Cholesky
+//                          factor of mid S), then Gershgorin on X^T S X ~ I in balls: O(n^3), and
+//                          robust where ball Cholesky loses its radii (n ~ 500).
+//   schur_decide(M):       stable (every eigenvalue of every matrix in M inside |z| < 1) or not
+//                          stable (an eigenvalue with |z| > 1), certified, or undecided with the
+//                          numeric spectral radius as the margin. A P (exact dyadic, symmetric) is
+//                          solved from P - M^T P M = I in double (complex Schur form, O(n^3)); then
+//                            P - M^T P M > 0 in balls   and   P > 0      =>  Schur stable
+//                            P - M^T P M > 0 in balls   and   w^T P w < 0 =>  an eigenvalue |z| > 1
+//                          (if M were Schur stable, P would be the unique solution sum (M^T)^k Q M^k
+//                          > 0 of the Stein equation with Q = P - M^T P M; and |z| = 1 is excluded
+//                          since v^*(P - M^T P M)v = (1 - |z|^2) v^* P v = 0 for M v = z v).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "hapstab/numeric/eigen_traits.hpp"
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab {
+
+struct BallMatrix {
+  Eigen::MatrixXd mid, rad;  ///< rad >= 0 entrywise; rad = 0 where the entry is exactly mid
+
+  BallMatrix() = default;
+  BallMatrix(Eigen::Index rows, Eigen::Index cols)
+      : mid(Eigen::MatrixXd::Zero(rows, cols)), rad(Eigen::MatrixXd::Zero(rows, cols)) {}
+  Eigen::Index rows() const { return mid.rows(); }
+  Eigen::Index cols() const { return mid.cols(); }
+  /// An exact matrix: each entry rounded to nearest, the rounding as its radius (0 for dyadics).
+  static BallMatrix exact(const MatQ& A);
+  /// A double matrix taken as exact.
+  static BallMatrix exact(const Eigen::MatrixXd& A);
+  /// mid with the same radius r on every entry.
+  static BallMatrix uniform(const Eigen::MatrixXd& mid, double r);
+  /// The block at (r0, c0) of size (other's size) := other.
+  void set_block(Eigen::Index r0, Eigen::Index c0, const BallMatrix& other);
+  double max_radius() const;
+};
+
+/// A B, enclosed (Arb, 128 bits; rounded outward to double).
+BallMatrix operator*(const BallMatrix& A, const BallMatrix& B);
+/// A + B, enclosed.
+BallMatrix operator+(const BallMatrix& A, const BallMatrix& B);
+
+/// True when every symmetric matrix inside S's balls is positive definite (see the header). S
+/// must be square; a non-symmetric midpoint is treated through its symmetric part plus the
+/// asymmetry as radius.
+bool positive_definite(const BallMatrix& S, std::string* why = nullptr);
+
+struct SchurDecision {
+  std::optional<bool> stable;   ///< nullopt: undecided (why says so, with the margin)
+  double spectral_radius = 0;   ///< of mid M, in double (numeric; the verdict does not rest on it)
+  std::string why;              ///< the certificate in words, or why there is none
+};
+SchurDecision schur_decide(const BallMatrix& M);
+
+}  // namespace hapstab
