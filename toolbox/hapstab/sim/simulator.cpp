@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "hapstab/numeric/ball_expm.hpp"
+#include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::sim {
@@ -62,22 +63,11 @@ Indices dependency_closure(const Mat<rational>& M, const Indices& S) {
   return R;
 }
 
-// (Phi, Gamma) of s' = A s + B in over h, component by component (the lemma above).
-ZohEnclosure plant_zoh(const Mat<rational>& A, const Mat<rational>& B, const rational& h) {
-  ZohEnclosure z;
-  z.Phi.mid = Mat<double>::Zero(A.rows(), A.rows());
-  z.Gamma.mid = Mat<double>::Zero(A.rows(), B.cols());
-  for (const Indices& C : components(A)) {
-    Indices I;  // the inputs B feeds into C
-    for (Eigen::Index k = 0; k < B.cols(); ++k)
-      if (std::any_of(C.begin(), C.end(), [&](Eigen::Index i) { return B(i, k) != 0; })) I.push_back(k);
-    const ZohEnclosure b = zoh_enclosure(Mat<rational>(A(C, C)), Mat<rational>(B(C, I)), h);
-    z.Phi.mid(C, C) = b.Phi.mid;
-    z.Gamma.mid(C, I) = b.Gamma.mid;
-    z.Phi.radius = std::max(z.Phi.radius, b.Phi.radius);
-    z.Gamma.radius = std::max(z.Gamma.radius, b.Gamma.radius);
-  }
-  return z;
+// (Phi, Gamma) of s' = A s + B in over h, component by component (the lemma above):
+// closed_loop.hpp's plant_zoh, its radii folded into one (every entry within it).
+ZohEnclosure zoh_of(const Mat<rational>& A, const Mat<rational>& B, const rational& h) {
+  const PlantZoh p = sim::plant_zoh(A, B, h);
+  return {{p.Phi.mid, p.Phi.max_radius()}, {p.Gamma.mid, p.Gamma.max_radius()}};
 }
 
 // Propagation over [0, tau] of a step whose input is u_old on [0, f) and u_new on [f, T):
@@ -89,13 +79,13 @@ struct Prop {
 Prop propagate(const Mat<rational>& A, const Mat<rational>& B, int N, const rational& f, const rational& tau) {
   const auto n = A.rows();
   Prop p;
-  const ZohEnclosure first = plant_zoh(A, B, tau < f ? tau : f);
+  const ZohEnclosure first = zoh_of(A, B, tau < f ? tau : f);
   p.P = first.Phi.mid;
   p.Qo = first.Gamma.mid.leftCols(N);
   p.Qn = Mat<double>::Zero(n, N);
   p.Qw = first.Gamma.mid.rightCols(N);
   if (tau > f) {
-    const ZohEnclosure second = plant_zoh(A, B, tau - f);
+    const ZohEnclosure second = zoh_of(A, B, tau - f);
     p.P = (second.Phi.mid * p.P).eval();
     p.Qo = (second.Phi.mid * p.Qo).eval();
     p.Qw = (second.Phi.mid * p.Qw + second.Gamma.mid.rightCols(N)).eval();
@@ -146,7 +136,7 @@ Simulator::Piece Simulator::make_piece(const rational& h, bool energy) const {
   const auto n = P.A.rows(), nz = n + 2 * N;
   Piece pc;
   pc.h = to_real<double>(h);
-  const ZohEnclosure zp = plant_zoh(P.A, P.B, h);
+  const ZohEnclosure zp = zoh_of(P.A, P.B, h);
   pc.Phi = zp.Phi.mid;
   pc.Gu = zp.Gamma.mid.leftCols(N);
   pc.Gw = zp.Gamma.mid.rightCols(N);

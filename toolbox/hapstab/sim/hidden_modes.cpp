@@ -1,0 +1,89 @@
+#include "hapstab/sim/hidden_modes.hpp"
+
+#include <sstream>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/poly/stability.hpp"
+
+namespace hapstab::sim {
+
+namespace {
+
+// The roots of one hidden factor, each marked stable or not. The factor's verdict is exact
+// (Schur-Cohn / Routh on the exact polynomial); a root is marked unstable from its enclosure
+// (|z| or Re s not certainly inside), so a factor that is not exactly stable always names at
+// least one root (the enclosures are certified).
+void add_factor(const Polynomial<rational>& p, const std::string& block, const std::string& kind, bool discrete,
+                std::vector<HiddenMode>& out) {
+  if (p.degree() < 1) return;
+  const bool stable = discrete ? schur_stable(p) : hurwitz_stable(p);
+  for (const RootEnclosure& r : enclose_roots(p)) {
+    if (r.im_hi < 0) continue;  // the conjugate of a root listed as a pair (p is real)
+    HiddenMode h;
+    h.pair = r.im_lo > 0;
+    h.block = block;
+    h.kind = kind;
+    h.discrete = discrete;
+    h.where = r;
+    h.stable = stable || (discrete ? r.abs_hi < 1 : r.re_hi < 0);
+    out.push_back(h);
+  }
+}
+
+}  // namespace
+
+std::string HiddenMode::text() const {
+  std::ostringstream o;
+  o.precision(6);
+  o << block << ": " << kind << (pair ? " modes " : " mode ") << where.text(discrete ? "z" : "s", pair);
+  if (discrete)
+    o << " (|z| in [" << decimal_outward(rational(where.abs_lo), 6, -1) << ", " << decimal_outward(rational(where.abs_hi), 6, +1)
+      << "]" << (stable ? ", inside the unit circle)" : ": not inside the unit circle)");
+  else
+    o << (stable ? " (Re s < 0)" : " (Re s >= 0: |e^{sT}| >= 1 after the hold)");
+  return o.str();
+}
+
+bool LoopHiddenModes::stable() const {
+  for (const auto& h : modes)
+    if (!h.stable) return false;
+  return true;
+}
+
+std::string LoopHiddenModes::summary() const {
+  if (modes.empty()) return "";
+  std::string bad, good;
+  int n_good = 0;
+  for (const auto& h : modes) {
+    if (!h.stable)
+      bad += (bad.empty() ? "" : "; ") + h.text();
+    else if (++n_good <= 6)
+      good += (good.empty() ? "" : "; ") + h.text();
+  }
+  if (!bad.empty()) return "unstable hidden mode(s), exact: " + bad;
+  return "stable hidden modes (exact; they do not move in any loop): " + good +
+         (n_good > 6 ? "; and " + std::to_string(n_good - 6) + " more" : "");
+}
+
+std::vector<HiddenMode> block_hidden_modes(const HiddenModes& h, bool discrete, const std::string& name) {
+  std::vector<HiddenMode> out;
+  add_factor(h.uncontrollable, name, "uncontrollable", discrete, out);
+  add_factor(h.unobservable, name, "unobservable", discrete, out);
+  return out;
+}
+
+LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environment) {
+  LoopHiddenModes r;
+  auto add = [&](const StateSpace<rational>& s, const std::string& name, const HiddenModes* known = nullptr) {
+    if (s.states() == 0) return;
+    for (auto& h : block_hidden_modes(known ? *known : hapstab::hidden_modes(s), s.is_discrete(), name))
+      r.modes.push_back(std::move(h));
+  };
+  for (const auto& d : spec.devices) add(d.G, "device '" + d.name + "'");
+  for (const auto& o : spec.operators) add(o.Z, "operator '" + o.name + "'");
+  if (spec.environment) add(*spec.environment, "environment", environment);
+  if (spec.coupling) add(*spec.coupling, "coupling");
+  return r;
+}
+
+}  // namespace hapstab::sim

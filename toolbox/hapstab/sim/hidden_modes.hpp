@@ -1,0 +1,55 @@
+// hapstab/sim/hidden_modes.hpp -- the modes each block of a loop hides, checked exactly on the
+// realisations as the scene writes them (before anything is reduced).
+//
+// A mode of a block that its input cannot reach (uncontrollable) or its output cannot show
+// (unobservable) is an eigenvalue of every loop the block is part of: no interconnection
+// through the block's ports moves it. So the loop as written is internally unstable when any
+// block hides a mode with
+//   |z| >= 1   (discrete blocks: environment E(z), coupling V(z); exact Schur-Cohn), or
+//   Re s >= 0  (continuous blocks: devices G(s), operators Z(s); exact Routh; after the
+//               zero-order hold such a mode has |e^{sT}| >= 1),
+// whatever a reduced model of the loop says -- and the sampled outputs may stay at rest (an
+// uncontrollable mode with zero initial state). A hidden mode inside the stability region is
+// harmless to stability and is reported once. Each mode is named by its block, its kind and a
+// certified enclosure of where it is (poly/roots.hpp). lti::hidden_modes does the exact Kalman
+// decompositions.
+//
+// Used by every command that decides the loop as written (`multidof analyze|design`,
+// `stability --scene`, `simulate`), so that they agree.
+// Implements: paper 000 Theorem 5.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/poly/roots.hpp"
+#include "hapstab/sim/loop.hpp"
+
+namespace hapstab::sim {
+
+struct HiddenMode {
+  std::string block;  ///< "environment", "coupling", "device 'd_a'", "operator 'H1'"
+  std::string kind;   ///< "uncontrollable" or "unobservable"
+  bool discrete = true;
+  RootEnclosure where;  ///< z (discrete) or s (continuous), certified; the one with Im > 0 of a pair
+  bool pair = false;    ///< a complex pair: `where` and its conjugate
+  bool stable = true;   ///< |z| < 1 or Re s < 0 (decided exactly for the block's hidden factor)
+  std::string text() const;  ///< "environment: unobservable mode z = 2 (|z| >= 1)"
+};
+
+struct LoopHiddenModes {
+  std::vector<HiddenMode> modes;  ///< every hidden mode of every block
+  bool stable() const;            ///< no hidden mode outside the stability region
+  /// One line: "" when nothing is hidden; the unstable modes when any; else "stable hidden modes: ...".
+  std::string summary() const;
+};
+
+/// The hidden modes of one block (`name` as above), from its Kalman decompositions (lti).
+std::vector<HiddenMode> block_hidden_modes(const HiddenModes& decomposed, bool discrete, const std::string& name);
+
+/// Every block of the loop: devices, operators, environment, coupling. `environment`, when given,
+/// is the environment's decomposition already computed (lti::hidden_modes of spec.environment).
+LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environment = nullptr);
+
+}  // namespace hapstab::sim
