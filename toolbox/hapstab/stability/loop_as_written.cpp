@@ -1,0 +1,166 @@
+// The loop as written, decided (see loop_as_written.hpp).
+#include "hapstab/stability/loop_as_written.hpp"
+
+#include <sstream>
+
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/poly/stability.hpp"
+#include "hapstab/sim/closed_loop.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
+
+namespace hapstab::stability {
+
+namespace {
+
+std::string num(double x, int digits = 6) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << x;
+  return o.str();
+}
+
+bool one_dof(const sim::LoopSpec& s) {
+  return s.dofs() == 1 && s.devices.size() == 1 && s.operators.size() <= 1;
+}
+
+// Step 2: the one-DOF loop on transfer functions (sampled_loop.hpp). nullopt when that test
+// does not apply (a fractional delay) or refuses the loop (its size limits): the matrix decides.
+std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out) {
+  const rational q = L.delay / L.T;
+  if (bmp::denominator(q) != 1) return std::nullopt;  // fractional delay: the matrix models it
+  const TransferFunction g = ss2tf(L.devices[0].G)(0, 0);
+  const Polynomial<rational> s_poly(std::vector<rational>{rational(0), rational(1)});
+  Loop loop;
+  loop.T = L.T;
+  loop.plant = tf(g.num(), g.den() * s_poly, 0);  // force -> position
+  if (!L.operators.empty()) {
+    const auto& op = L.operators[0];
+    TransferFunction z = ss2tf(op.Z)(0, 0);
+    if (!op.mass.empty() && op.mass[0] != 0) z = parallel(z, tf(op.mass[0] * s_poly, Polynomial<rational>(rational(1)), 0));
+    loop.operator_impedance = z;
+  }
+  if (!L.environment) return std::nullopt;  // no controller: the matrix (a free device) decides
+  const TransferFunction E = ss2tf(*L.environment)(0, 0);
+  loop.H = E;
+  std::string hidden;
+  if (L.coupling) {
+    const TransferFunction V = ss2tf(*L.coupling)(0, 0);
+    loop.H = feedback(E, V);  // u = -E (x + V u): force -E/(1 + E V) x
+    // the full controller's characteristic polynomial over the reduced one: the cancelled modes
+    const Polynomial<rational> full = E.den() * V.den() + E.num() * V.num();
+    if (full.is_zero()) throw InputError("the coupling's algebraic loop 1 + E V is identically zero");
+    const auto [cancelled, rem] = divmod(full, loop.H.den());
+    if (!rem.is_zero()) throw NumericalError("loop as written: E/(1 + E V) does not divide the controller's polynomial");
+    if (cancelled.degree() > 0 && !hapstab::schur_stable(cancelled)) {
+      out.stable = false;
+      out.status = Status::exact;
+      out.method = "exact Schur test (one DOF)";
+      out.why = "the controller E/(1 + E V) cancels a mode outside the open unit disk (Schur-Cohn on the exact "
+                "cancelled factor of degree " + std::to_string(cancelled.degree()) + "): NOT stable as written (exact)";
+      return out;
+    }
+    if (cancelled.degree() > 0)
+      hidden = "; the " + std::to_string(cancelled.degree()) + " modes E/(1 + E V) cancels are stable (exact)";
+  }
+  loop.delay = static_cast<int>(static_cast<long>(bmp::numerator(q)));
+  StabilityResult r;
+  try {
+    r = decide(loop);
+  } catch (const InputError&) {  // a size the transfer-function test refuses: the matrix decides
+    return std::nullopt;
+  }
+  if (!r.verdict.decided()) return std::nullopt;
+  out.method = "exact Schur test (one DOF; the loop of `hapstab stability`)";
+  out.stable = r.verdict.holds();
+  out.status = r.verdict.status;
+  std::ostringstream o;
+  o << (r.verdict.holds() ? "stable" : "NOT stable") << " [" << to_string(r.verdict.status)
+    << "]: the one-DOF sampled loop (device, operator, ZOH, " << (L.coupling ? "E/(1 + E V)" : "E")
+    << (loop.delay ? ", delay z^-" + std::to_string(loop.delay) : std::string()) << ")";
+  if (r.spectral_radius) {
+    o.precision(6);
+    o << ", spectral radius in [" << to_real<double>(r.spectral_radius->lo) << ", " << to_real<double>(r.spectral_radius->hi) << "]";
+    out.spectral_radius = to_real<double>(r.spectral_radius->hi);
+  }
+  out.why = o.str() + hidden;
+  return out;
+}
+
+// Step 3: the closed-loop matrix.
+LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out) {
+  const sim::SampledClosedLoop cl = sim::sampled_closed_loop(L);
+  out.states = static_cast<long>(cl.M.rows());
+  if (cl.removed_unstable) {
+    out.stable = false;
+    out.status = Status::exact;
+    out.method = "closed-loop matrix, exact Kalman split of the plant";
+    out.why = "NOT stable [exact]: " + cl.removed;
+    return out;
+  }
+  const std::string dims = "closed-loop matrix M of order " + std::to_string(out.states) + " (" +
+                           std::to_string(cl.plant_states) + " plant, " + std::to_string(cl.controller_states) +
+                           " controller, " + std::to_string(cl.buffer_states) + " delay states; realisations as written" +
+                           (cl.removed.empty() ? "" : "; " + cl.removed) + ")";
+  if (cl.exact && out.states <= kExactOrder) {
+    const Polynomial<rational> c = charpoly(*cl.exact);
+    std::string why;
+    const bool st = hapstab::schur_stable(c, &why);
+    out.stable = st;
+    out.status = Status::exact;
+    out.method = "closed-loop matrix, exact (Schur-Cohn on det(zI - M))";
+    out.why = std::string(st ? "stable" : "NOT stable") + " [exact]: " + dims +
+              " is rational (every plant pole at s = 0, so e^{AT} is a finite sum); Schur-Cohn on its characteristic "
+              "polynomial of degree " + std::to_string(c.degree()) + (st ? "" : ": " + why);
+    return out;
+  }
+  const SchurDecision d = schur_decide(cl.M);
+  out.spectral_radius = d.spectral_radius;
+  if (d.stable) {
+    out.stable = *d.stable;
+    out.status = Status::certified;
+    out.method = "closed-loop matrix, Stein certificate in ball arithmetic";
+    out.why = std::string(*d.stable ? "stable" : "NOT stable") + " [certified]: " + dims + " enclosed (largest radius " +
+              num(cl.M.max_radius(), 3) + "); " + d.why;
+    return out;
+  }
+  // the certificate cannot decide: z = 1 exactly (closed_loop.hpp, G1)
+  if (exact_rank(cl.dc) < cl.dc.rows()) {
+    out.stable = false;
+    out.status = Status::exact;
+    out.method = "closed-loop matrix, exact test of z = 1";
+    out.why = "NOT stable [exact]: " + dims + " has the eigenvalue z = 1 (the DC equations A s + B u = 0, "
+              "(A_c - I) xi + B_c y = 0, u = C_c xi + D_c y have a nonzero solution: a family of equilibria, exact rank "
+              "test); " + d.why;
+    return out;
+  }
+  out.method = "closed-loop matrix";
+  out.why = "undecided: " + dims + ": " + d.why + "; z = 1 is not an eigenvalue (exact)";
+  return out;
+}
+
+}  // namespace
+
+LoopVerdict decide_loop(const sim::LoopSpec& spec, LoopPath path) {
+  LoopVerdict out;
+  const std::string nl = sim::nonlinear_parts(spec);
+  if (!nl.empty()) {
+    out.why = "the loop has " + nl + ", which the Schur test of the linear loop does not model (`hapstab simulate` does)";
+    return out;
+  }
+  out.hidden = sim::hidden_modes(spec);
+  if (!out.hidden.stable()) {
+    out.stable = false;
+    out.status = Status::exact;
+    out.method = "hidden mode";
+    out.why = "NOT stable [exact]: " + out.hidden.summary() +
+              ". A mode no input reaches or no output shows is an eigenvalue of the loop whatever the rest does";
+    return out;
+  }
+  if (path == LoopPath::automatic && one_dof(spec))
+    if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
+  return matrix_test(spec, out);
+}
+
+}  // namespace hapstab::stability

@@ -1,0 +1,50 @@
+// hapstab/stability/loop_as_written.hpp -- Schur stability of a scene's loop exactly as it is
+// written (sim/loop.hpp: devices, operators, environment, coupling, delay), for any number of
+// DOF: the one decider behind `hapstab stability --scene`, the `loop_as_written` of `hapstab
+// multidof analyze|design`, and the internal-stability line of `hapstab simulate`.
+//
+//  1. Hidden modes (sim/hidden_modes.hpp): a block that hides a mode outside the stability
+//     region makes the loop NOT stable [exact], the mode named -- whatever the rest does.
+//  2. One-DOF loops (one device of one DOF, at most one operator): the exact/certified test of
+//     stability/sampled_loop.hpp on the transfer functions (device behind the ZOH, operator,
+//     E or E/(1 + E V), z^-n); modes that E/(1 + E V) cancels are checked exactly. Its every
+//     mode counts (the blocks' hidden modes are step 1).
+//  3. Otherwise (and where step 2 refuses a size): the closed-loop matrix M of
+//     sim/closed_loop.hpp from the realisations as written. Exact M (all plant poles at s = 0)
+//     of order <= kExactOrder: Schur-Cohn on det(zI - M), exact. Otherwise the Stein
+//     certificate in ball arithmetic (numeric/ball_matrix.hpp): stable or NOT stable,
+//     certified. Where it cannot decide, z = 1 is decided exactly (the DC equations,
+//     closed_loop.hpp); else undecided, with the numeric spectral radius as the margin.
+// Loops with contact, encoders, Coulomb friction or a passivity controller are not linear: not
+// decided (`hapstab simulate` runs them).
+// Implements: paper 000 Sec. VI; paper 001 Fig. 1.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "hapstab/numeric/result.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
+#include "hapstab/sim/loop.hpp"
+
+namespace hapstab::stability {
+
+struct LoopVerdict {
+  std::optional<bool> stable;  ///< nullopt: not decided (why says why, with the margin)
+  Status status = Status::failed;  ///< exact or certified when decided
+  std::string method;          ///< "hidden mode", "exact Schur test (one DOF)", "closed-loop matrix: ..."
+  std::string why;             ///< what was proven, or why nothing was
+  sim::LoopHiddenModes hidden; ///< every block's hidden modes (stable ones are not repeated in why)
+  long states = 0;             ///< order of the closed loop (the matrix method), 0 otherwise
+  double spectral_radius = 0;  ///< numeric (double) spectral radius of the closed loop, when computed
+};
+
+/// Exact M up to this order is decided by Schur-Cohn on det(zI - M); beyond, by balls.
+inline constexpr long kExactOrder = 64;
+
+/// automatic: as above; matrix: step 3 even for one DOF (the campaign and the tests compare the two).
+enum class LoopPath { automatic, matrix };
+
+LoopVerdict decide_loop(const sim::LoopSpec& spec, LoopPath path = LoopPath::automatic);
+
+}  // namespace hapstab::stability
