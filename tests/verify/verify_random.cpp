@@ -899,7 +899,7 @@ bool check_consistency(std::mt19937_64& g, std::ostream& why) {
     const multidof::SceneProblem sp = multidof::problem_from_scene(sc);
     const bool holds = multidof::all_hold(
         multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence));
-    law_opt = multidof::loop_as_written(sc, sp, holds);
+    law_opt = multidof::loop_as_written(sp, holds);
   } catch (const InputError&) {
     if (!c.contact) throw;  // only the unilateral wall may be refused
   }

@@ -77,10 +77,13 @@ lmi::Options lmi_options(const Opts& o) {
 
 const char* outcome_word(const Verdict& v) { return v.holds() ? "holds" : v.fails() ? "fails" : "undecided"; }
 
+// Assumption 1 on the reduced blocks, then the premises the realisations as written must meet
+// (their hidden modes: multidof::hidden_mode_premises).
 json assumptions(const multidof::SceneProblem& sp) {
   json a = json::array();
-  for (const auto& c :
-       multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence))
+  auto checks = multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence);
+  for (auto& c : multidof::hidden_mode_premises(sp)) checks.push_back(std::move(c));
+  for (const auto& c : checks)
     a.push_back({{"name", c.name},
                  {"holds", c.verdict.holds()},
                  {"outcome", outcome_word(c.verdict)},
@@ -100,9 +103,11 @@ void print_assumptions(const json& assume) {
 // "Assumption 1 fails" / "... is undecided" (the first line that does not hold)
 std::string assumption_failure(const json& assume) {
   for (const auto& a : assume)
-    if (!a["holds"].get<bool>())
-      return "Assumption 1 " + std::string(a["outcome"].get<std::string>() == "fails" ? "fails" : "is undecided") + " (" +
-             a["name"].get<std::string>() + ")";
+    if (!a["holds"].get<bool>()) {
+      const std::string name = a["name"].get<std::string>();
+      return (name.rfind("Assumption 1", 0) == 0 ? "Assumption 1 " : "a premise ") +
+             std::string(a["outcome"].get<std::string>() == "fails" ? "fails" : "is undecided") + " (" + name + ")";
+    }
   return "";
 }
 
@@ -125,6 +130,30 @@ void print_matrix(const Eigen::MatrixXd& M) {
     for (Eigen::Index j = 0; j < M.cols(); ++j) std::cout << " " << std::setw(12) << M(i, j);
     std::cout << "\n";
   }
+}
+
+json law_json(const multidof::LoopAsWritten& law) {
+  return {{"stable", law.stable ? json(*law.stable) : json(nullptr)},
+          {"coupling", law.coupling},
+          {"method", law.method},
+          {"status", law.stable ? to_string(law.status) : "undecided"},
+          {"why", law.why},
+          {"states", law.states},
+          {"spectral_radius_numeric", law.spectral_radius}};
+}
+
+// Every hidden mode of every block as written: {block, kind, where, abs ([lo, hi], discrete
+// blocks) or re ([lo, hi], continuous), stable}.
+json hidden_json(const sim::LoopHiddenModes& h) {
+  json a = json::array();
+  for (const auto& m : h.modes)
+    a.push_back({{"block", m.block},
+                 {"kind", m.kind},
+                 {"where", m.where.text(m.discrete ? "z" : "s", m.pair)},
+                 {m.discrete ? "abs" : "re", m.discrete ? json::array({m.where.abs_lo, m.where.abs_hi})
+                                                        : json::array({m.where.re_lo, m.where.re_hi})},
+                 {"stable", m.stable}});
+  return a;
 }
 
 std::string law_word(const multidof::LoopAsWritten& l) {
@@ -153,15 +182,12 @@ int run_analyze(const Opts& o) {
   // Theorem 5 concludes stability only when the LMIs are certified feasible AND Assumption 1 holds
   const bool stable = feasible && certified && assumptions_hold;
   const auto t2 = std::chrono::steady_clock::now();
-  const multidof::LoopAsWritten law = multidof::loop_as_written(sc, sp, assumptions_hold, lmi_options(o));
+  const multidof::LoopAsWritten law = multidof::loop_as_written(sp, assumptions_hold, lmi_options(o));
   const double law_seconds = since(t2);
   json j{{"feasible", feasible},
          {"stability_concluded", stable},
-         {"loop_as_written", {{"stable", law.stable ? json(*law.stable) : json(nullptr)},
-                              {"coupling", law.coupling},
-                              {"method", law.method},
-                              {"status", law.stable ? to_string(law.status) : "undecided"},
-                              {"why", law.why}}},
+         {"loop_as_written", law_json(law)},
+         {"hidden_modes", hidden_json(sp.hidden)},
          {"delay", sp.delay},
          {"certified", certified},
          {"verdict", verdict},
@@ -218,8 +244,8 @@ int run_analyze(const Opts& o) {
     if (stable && !as_written_unstable)
       std::cout << "stable for every coupling with Delta_V >= Gamma^-1 Q_V Gamma^-1 (Theorem 5, certified)" << law_tail;
     else if (stable)
-      std::cout << "NOT stable as written: Theorem 5 concludes stability only for a coupling with Delta_V >= Gamma^-1 Q_V "
-                   "Gamma^-1" << law_tail;
+      std::cout << "stable for every coupling with Delta_V >= Gamma^-1 Q_V Gamma^-1 (Theorem 5, certified), but NOT stable "
+                   "as written" << law_tail;
     else if (feasible && certified)
       std::cout << "no conclusion from Theorem 5: the LMIs are feasible, but " << assumption_failure(j["assumptions"])
                 << law_tail;
@@ -233,20 +259,31 @@ int run_analyze(const Opts& o) {
   return stable && !as_written_unstable ? exit_ok : exit_property_fails;
 }
 
-// Closed loop of the scene with coupling V (none if V is empty), from the scene's inputs and
-// the multidof environment (perturbation applied). Returns the sampled trace.
-sim::SimResult simulate_loop(const scene::Scene& sc, const multidof::Problem& pb, const StateSpace<rational>* V,
-                             double duration) {
-  sim::LoopSpec spec = sc.loop;
-  spec.environment = pb.E;  // holds the [delay] as z^-n E: the coupling is fed the applied force, as in Theorem 6
+std::string seconds_text(double s) {
+  std::ostringstream o;
+  o << s;
+  return o.str();
+}
+
+// The loop Theorem 6 designs V for, as the scene writes its blocks: the environment as written
+// (perturb_C applied) with the [delay] folded in as z^-n E (V is fed the applied force), and V
+// (none if V is null) in parallel with the devices.
+sim::LoopSpec design_loop(const multidof::SceneProblem& sp, const StateSpace<rational>* V) {
+  sim::LoopSpec spec = sp.loop;
+  spec.environment = multidof::delayed(sp.E_written, sp.delay);
   spec.delay = 0;
   if (V) spec.coupling = *V;
   else spec.coupling.reset();
+  return spec;
+}
+
+// That loop simulated from the scene's inputs and initial state (exact ZOH).
+sim::SimResult simulate_loop(const multidof::SceneProblem& sp, const StateSpace<rational>* V, double duration) {
   sim::SimOptions so;
-  so.steps = static_cast<long>(std::ceil(duration / to_real<double>(pb.T())));
+  so.steps = static_cast<long>(std::ceil(duration / to_real<double>(sp.problem.T())));
   so.energy = false;
   so.max_velocity = 1e6;
-  return sim::Simulator(spec).run(so);
+  return sim::Simulator(design_loop(sp, V)).run(so);
 }
 
 // velocities -> 0: the last second's largest |v| below 1e-3 of the run's peak (or 1e-9 absolute)
@@ -280,25 +317,51 @@ int run_design(const Opts& o) {
   dop.max_iterations = o.iterations;
   dop.lmi = lmi_options(o);
   auto r = multidof::design(sp.problem, dop);
-  // the library's verdict, and the CLI's own (numeric) check: the simulated loop decays
+  const bool hasV = r.V.D.rows() > 0;
+  const json assume = assumptions(sp);
+  const std::string premise = assumption_failure(assume);  // "" when Assumption 1 and the blocks' premises hold
+  // The library's verdict rests on certified checks (Theorem 4, V Schur stable). Beside them: the
+  // loop with this V decided as written (certified), and the simulation, a numeric cross-check
+  // that can warn but never decides; a simulation that diverges where a certificate proves
+  // stability is a contradiction (exit 3).
   bool feasible = r.verdict.holds();
   const bool certified = feasible && r.verdict.proven();
-  if (r.V.D.rows() > 0) {
-    const auto sr = simulate_loop(sc, sp.problem, &r.V, o.duration);
+  std::optional<multidof::LoopAsWritten> law;
+  std::string warning, contradiction;
+  if (hasV) {
+    law = multidof::decided_loop(design_loop(sp, &r.V), "the designed V");
+    r.verification.push_back({"the loop with this V, as written, is Schur stable (" + law->method + ")",
+                              law->stable ? Verdict::of(*law->stable, law->status, law->why)
+                                          : Verdict{Outcome::undecided, Status::failed, law->why}});
+    if (law->stable && !*law->stable) feasible = false;
+    const auto sr = simulate_loop(sp, &r.V, o.duration);
     const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
-    r.verification.push_back({"closed loop simulated, velocities -> 0 (scene's devices, operators, inputs)",
+    r.verification.push_back({"closed loop simulated, velocities -> 0 (numeric cross-check; scene's devices, operators, inputs)",
                               Verdict::of(ok, Status::numeric, text)});
-    feasible = feasible && ok;
+    // Theorem 6's certificate proves the loop stable only when its premises hold (hidden modes
+    // included); the closed-loop decision proves or refutes it directly
+    const bool theorem_proves = certified && premise.empty();
+    const bool law_proves = law->stable && *law->stable, law_refutes = law->stable && !*law->stable;
+    if (theorem_proves && law_refutes)
+      contradiction = "Theorem 6's certified checks and Assumption 1 say the loop with this V is stable, but the closed-loop "
+                      "decision proves it NOT stable (" + law->why + "): a contradiction to investigate";
+    else if (sr.summary.diverged && (law_proves || (theorem_proves && !law_refutes)))
+      contradiction = "the simulation diverged although the loop with this V is proven stable (" +
+                      (law_proves ? law->why : r.verdict.evidence) + "): a contradiction to investigate";
+    const bool proven_stable = law_proves || (theorem_proves && !law_refutes);
+    if (contradiction.empty() && !ok)
+      warning = "the simulated velocities have not decayed within " + seconds_text(o.duration) + " s (" + text +
+                "); this is a numeric observation, not a verdict" +
+                (proven_stable ? std::string(" (the loop is proven stable: slow decay)") : std::string());
   }
   json ver = json::array();
   for (const auto& v : r.verification)
     ver.push_back({{"name", v.name},
-                   {"verdict", v.verdict.holds() ? "pass" : "fail"},
+                   {"verdict", v.verdict.holds() ? "pass" : v.verdict.fails() ? "fail" : "undecided"},
                    {"certified", v.verdict.proven()},
                    {"detail", v.verdict.evidence}});
-  const bool hasV = r.V.D.rows() > 0;
   json j{{"feasible", feasible},
-         {"certified", certified},
+         {"certified", certified && feasible},
          {"converged", r.converged},
          {"iterations", r.iterations},
          {"trace_gap", r.trace_gap},
@@ -311,27 +374,37 @@ int run_design(const Opts& o) {
          {"gamma", r.gamma_sqrt},
          {"q_v", mat(r.Q_V)},
          {"verification", ver},
+         {"loop_with_v", law ? law_json(*law) : json(nullptr)},
+         {"facial_reduction", r.facial.explanation},
+         {"hidden_modes", hidden_json(sp.hidden)},
+         {"warning", warning.empty() ? json(nullptr) : json(warning)},
+         {"contradiction", contradiction.empty() ? json(nullptr) : json(contradiction)},
          {"message", r.verdict.evidence},
-         {"assumptions", assumptions(sp)}};
+         {"assumptions", assume}};
   if (o.json) {
     print_json(j);
   } else {
     std::cout << "Theorem 6 design for " << o.scene << ": " << (feasible ? "a stabilising V found" : "no verified V")
-              << (certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged") << " after "
-              << r.iterations << " iterations. " << r.verdict.evidence << "\n";
+              << (certified && feasible ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged")
+              << " after " << r.iterations << " iterations. " << r.verdict.evidence << "\n";
+    if (!r.facial.explanation.empty()) std::cout << "  " << r.facial.explanation << "\n";
     if (hasV)
       std::cout << "A_V =\n" << multidof::to_double(r.V.A) << "\nB_V =\n" << multidof::to_double(r.V.B) << "\nC_V =\n"
                 << multidof::to_double(r.V.C) << "\nD_V =\n" << multidof::to_double(r.V.D) << "\n";
     for (const auto& v : r.verification)
-      std::cout << "  [" << (v.verdict.holds() ? "pass" : "FAIL") << (v.verdict.proven() ? ", certified" : "") << "] "
+      std::cout << "  [" << (v.verdict.holds() ? "pass" : v.verdict.fails() ? "FAIL" : "undecided")
+                << (v.verdict.proven() ? ", certified" : v.verdict.status == Status::numeric ? ", numeric" : "") << "] "
                 << v.name << "\n      " << v.verdict.evidence << "\n";
     if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "; the designed V is fed the applied force\n";
     print_assumptions(j["assumptions"]);
-    const std::string premise = assumption_failure(j["assumptions"]);
+    if (!warning.empty()) std::cout << "  warning: " << warning << "\n";
     std::cout << "=> ";
-    if (feasible && premise.empty())
+    if (!contradiction.empty())
+      std::cout << "CONTRADICTION: " << contradiction;
+    else if (feasible && premise.empty())
       std::cout << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
-                << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and by simulation)";
+                << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision; "
+                   "simulated as a numeric cross-check)";
     else if (feasible)
       std::cout << "a coupling V passed the LMI checks, but " << premise << ": no stability conclusion";
     else if (r.verdict.fails())
@@ -342,7 +415,8 @@ int run_design(const Opts& o) {
                 << "); Theorem 6 is sufficient only";
     std::cout << "\n";
   }
-  return feasible ? exit_ok : exit_property_fails;
+  if (!contradiction.empty()) return exit_numerical;
+  return feasible && premise.empty() ? exit_ok : exit_property_fails;
 }
 
 // Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27)
@@ -357,7 +431,7 @@ void write_velocity_data(const std::string& scene_name, const std::string& stem,
   const auto V27 = multidof::example::controller27();
   if (sp.problem.structure.m() == 2) runs.emplace_back("paper27", &V27);
   for (const auto& [name, V] : runs) {
-    const auto sr = simulate_loop(sc, sp.problem, V, 10.0);
+    const auto sr = simulate_loop(sp, V, 10.0);
     std::ofstream f(datadir / (stem + "_" + name + ".dat"));
     const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
     f << "# t[s] v_1 ... v_N [m/s]  (" << name << " coupling; " << scene_name << ")\n# "

@@ -29,6 +29,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/sim/simulator.hpp"
 
 namespace hapstab::cli {
@@ -284,6 +285,15 @@ int run(const Opts& o) {
   if (mat) write_mat_samples(dir / "samples.mat", r, sc.T);
   auto j = summary_json(r.summary, sc);
   j["seconds"] = secs;
+  // Internal stability from the blocks' hidden modes (exact; sim/hidden_modes.hpp): a mode no
+  // input reaches or no output shows may leave the sampled outputs at rest while it grows.
+  const sim::LoopHiddenModes hidden = sim::hidden_modes(sc.loop);
+  nlohmann::json hj = nlohmann::json::array();
+  for (const auto& h : hidden.modes)
+    hj.push_back({{"block", h.block}, {"kind", h.kind}, {"where", h.where.text(h.discrete ? "z" : "s", h.pair)}, {"stable", h.stable}});
+  j["hidden_modes"] = hj;
+  j["internally_unstable"] = !hidden.stable();
+  if (!hidden.stable()) j["internal_instability"] = hidden.summary();
   {
     std::ofstream f = open_data_file(dir / "summary.json");
     f << j.dump(2) << "\n";
@@ -298,6 +308,10 @@ int run(const Opts& o) {
               << "  max |v|           " << s.max_velocity << " m/s\n"
               << "  energy generated  " << s.energy_generated << " J  (max over t of -sum_j int f_h v dt; numeric)\n"
               << "  trend             " << s.trend << "\n";
+    if (!hidden.stable())
+      std::cout << "  INTERNALLY UNSTABLE (exact, whatever the samples show): " << hidden.summary() << "\n";
+    else if (!hidden.modes.empty())
+      std::cout << "  hidden modes      " << hidden.summary() << "\n";
     if (s.limit_cycle)
       std::cout << "  limit cycle       period " << s.limit_cycle->period << " s, amplitude " << s.limit_cycle->amplitude
                 << " m" << (s.limit_cycle->period_samples > 0 ? " (sampled sequence exactly periodic)" : "") << "\n";

@@ -9,6 +9,12 @@
 // on the device as force -Z_op(s) * velocity, so the loop sees 1/(1/P + s Z_op).
 // JSON: stable, status, spectral_radius [lo, hi], degree, device; with --max NAME: max ("inf"
 // when stable for every NAME > 0), enclosure [lo, hi], status, crossing {at, theta, omega}.
+//   hapstab stability --scene FILE [--set NAME=VALUE]... [--json]
+// The loop a scene writes, any number of DOF, each block's realisation as written
+// (stability/loop_as_written.hpp: hidden modes, the one-DOF exact test, the closed-loop matrix
+// with a certified Schur decision): the decider `multidof analyze` and `simulate` share.
+// JSON: stable (true|false|null), status, method, evidence, states, spectral_radius_numeric,
+// hidden_modes [{block, kind, where, stable}].
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -20,6 +26,9 @@
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/scene/scene.hpp"
+#include "hapstab/scene/schema.hpp"
+#include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace {
@@ -27,7 +36,7 @@ namespace {
 using namespace hapstab;
 
 struct StabilityOpts {
-  std::string plant, H, T, op, max_name;
+  std::string plant, H, T, op, max_name, scene;
   std::vector<std::string> sets;
   int delay = 0, digits = 20;
   bool json = false;
@@ -183,11 +192,41 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   return m.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_ok;
 }
 
+// --scene: the loop as written (stability/loop_as_written.hpp).
+int run_scene(const StabilityOpts& o) {
+  for (const auto& [given, name] : {std::pair{!o.plant.empty(), "--plant"}, {!o.H.empty(), "--H"}, {!o.T.empty(), "--T"},
+                                    {!o.op.empty(), "--operator"}, {!o.max_name.empty(), "--max"}, {o.delay != 0, "--delay"}})
+    if (given)
+      throw InputError(std::string(name) + " cannot be combined with --scene (the scene gives the loop; --set changes its parameters)");
+  const auto sc = scene::load_scene(o.scene, cli::parse_sets(o.sets));
+  scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
+  const stability::LoopVerdict v = stability::decide_loop(sc.loop);
+  nlohmann::json hidden = nlohmann::json::array();
+  for (const auto& h : v.hidden.modes)
+    hidden.push_back({{"block", h.block}, {"kind", h.kind}, {"where", h.where.text(h.discrete ? "z" : "s", h.pair)}, {"stable", h.stable}});
+  nlohmann::json j{{"stable", v.stable ? nlohmann::json(*v.stable) : nlohmann::json(nullptr)},
+                   {"status", v.stable ? to_string(v.status) : "undecided"},
+                   {"method", v.method},
+                   {"evidence", v.why},
+                   {"dofs", sc.loop.dofs()},
+                   {"states", v.states},
+                   {"spectral_radius_numeric", v.spectral_radius},
+                   {"hidden_modes", hidden}};
+  if (o.json) cli::print_json(j);
+  else
+    std::cout << (v.stable ? (*v.stable ? "stable" : "NOT stable") : "undecided") << "   [" << j["status"].get<std::string>()
+              << "]   (" << sc.loop.dofs() << " DOF, " << (v.method.empty() ? "not decided" : v.method) << ")\n  " << v.why << "\n"
+              << (v.hidden.modes.empty() || !v.hidden.stable() ? "" : "  " + v.hidden.summary() + "\n");
+  if (!v.stable) return cli::exit_numerical;  // undecided (the nonlinear parts were refused above)
+  return *v.stable ? cli::exit_ok : cli::exit_property_fails;
+}
+
 const cli::Register reg(
     {"stability",
      "Schur stability of the sampled haptic loop (device P(s), ZOH, wall H(z), delay); --max NAME: the largest stable gain",
      [](CLI::App& app) {
        auto o = std::make_shared<StabilityOpts>();
+       app.add_option("--scene", o->scene, "a scene file (TOML): its loop as written, any number of DOF (instead of --plant/--H/--T)");
        app.add_option("--plant", o->plant, "device P(s), force -> position, e.g. \"1/(m*s^2 + b*s)\"");
        app.add_option("--H", o->H, "virtual environment H(z), e.g. \"K + B*(z-1)/(T*z)\" (force = -z^-n H x)");
        app.add_option("--T", o->T, "sample period T > 0 (exact: 0.001 or 1/1000)");
@@ -198,6 +237,7 @@ const cli::Register reg(
        app.add_option("--digits", o->digits, "significant digits of --max (1..1000)")->capture_default_str();
        app.add_flag("--json", o->json, "JSON output");
        return [o]() -> int {
+         if (!o->scene.empty()) return run_scene(*o);
          const stability::Loop loop = make_loop(*o);
          return o->max_name.empty() ? run_decide(*o, loop) : run_max(*o, loop);
        };

@@ -73,13 +73,15 @@ struct DesignResult {
   std::vector<double> gamma_sqrt;
   Eigen::MatrixXd Q_V, delta_V;  ///< design's Q_V and Gamma^-1 Q_V Gamma^-1
   std::vector<Verification> verification;
+  FacialConditions facial;     ///< the facial conditions of (16) (the same X set analyze reports)
 };
 
 DesignResult design(const Problem& pb, const DesignOptions& opt = {});
 
-/// Independent checks of any coupling V (also used for the paper's (27)).
-std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<rational>& V,
-                                          const std::vector<double>& gamma_sqrt, const Eigen::MatrixXd& Q_V,
-                                          const lmi::Options& opt = {});
+/// Independent checks of any coupling V (also used for the paper's (27)): Lemma 1 for V-hat^Gamma
+/// at the exact X = Gamma^2 and Q_V, V-hat's scalar OSP level, Theorem 4 with every level free,
+/// V Schur stable.
+std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<rational>& V, const MatQ& X,
+                                          const MatQ& Q_V, const lmi::Options& opt = {});
 
 }  // namespace hapstab::multidof

@@ -1,24 +1,22 @@
-// hapstab/multidof/loop_as_written.hpp -- the scene's own loop, decided where it can be.
+// hapstab/multidof/loop_as_written.hpp -- the scene's own loop, decided.
 //
 // Theorem 5 concludes stability "for every coupling V whose V-hat^Gamma is Delta_V-OSP with
 // Delta_V >= Gamma^-1 Q_V Gamma^-1": a statement about a family of loops. The scene writes one
-// loop: its devices, operators, environment, [delay] and its [coupling] (or none). That loop is
-// decided as follows, and left undecided (null) with the reason otherwise:
+// loop: its devices, operators, environment (perturb_C applied), [delay] and its [coupling] (or
+// none), each realisation as written. That loop is decided as follows:
 //
-//  1. With a [coupling] V and no delay, Theorem 4 for that V (check_theorem4: V-hat^Gamma's OSP
-//     level, E-hat^Gamma's ISP level and (14) in one LMI program, exact re-check) proves the
-//     loop stable when Assumption 1 holds. It is sufficient only: when it does not conclude,
-//     step 2 decides. (With a delay the scene's V is fed the computed force and the devices the
-//     delayed one (sim/loop.hpp), a loop Theorem 4 with z^-n E does not describe: step 2 only.)
-//  2. A one-DOF loop (one device, at most one operator) is the loop of `hapstab stability`
-//     (stability/sampled_loop.hpp): device P(s) = G(s)/s behind a ZOH, operator Z_op(s) =
-//     m_op s + Z(s), force -z^-n H(z) x(kT) with H = E (no coupling) or H = E/(1 + E V) (the
-//     coupling in the algebraic loop of the controller, as the simulator composes it). Its
-//     exact/certified Schur test decides stable or not stable. Modes the reduction E/(1 + E V)
-//     cancels are roots of (d_E d_V + n_E n_V)/den H, checked exactly by Schur-Cohn (an unstable
-//     hidden mode makes the loop unstable whatever the rest does).
-//  Loops with [contact], an encoder, Coulomb friction or a passivity controller are not linear:
-//  neither step models them (null, naming `hapstab simulate`).
+//  1. A block that hides a mode outside the stability region: NOT stable [exact], the mode
+//     named (sim/hidden_modes.hpp).
+//  2. With a [coupling] V and no delay, when Assumption 1 holds: Theorem 4 for that V
+//     (check_theorem4: V-hat^Gamma's OSP level, E-hat^Gamma's ISP level and (14) in one LMI
+//     program, exact re-check) proves the loop stable. It is sufficient only: when it does not
+//     conclude, step 3 decides. (With a delay the scene's V is fed the computed force and the
+//     devices the delayed one (sim/loop.hpp), a loop Theorem 4 with z^-n E does not describe.)
+//  3. stability::decide_loop (stability/loop_as_written.hpp), the decider `hapstab stability
+//     --scene` and `hapstab simulate` use: the one-DOF exact test, or the closed-loop matrix of
+//     any number of DOF with a certified Schur decision.
+// Loops with [contact], an encoder, Coulomb friction or a passivity controller are not linear:
+// not decided (null, naming `hapstab simulate`).
 #pragma once
 
 #include <optional>
@@ -26,6 +24,7 @@
 
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
+#include "hapstab/stability/loop_as_written.hpp"
 
 namespace hapstab::multidof {
 
@@ -33,12 +32,17 @@ struct LoopAsWritten {
   std::optional<bool> stable;       ///< nullopt: not decided (see why)
   Status status = Status::failed;   ///< exact or certified when decided
   std::string coupling;             ///< "none (the direct connection)" or the scene's [coupling]
-  std::string method;               ///< "Theorem 4 with the scene's coupling", "exact Schur test", ""
+  std::string method;               ///< "hidden mode", "Theorem 4 with the scene's coupling", the decider's method
   std::string why;                  ///< what was proven, or why nothing was
+  long states = 0;                  ///< order of the closed-loop matrix when that decided
+  double spectral_radius = 0;       ///< numeric, when computed
 };
 
-/// `assumptions_hold`: Assumption 1 holds for the scene (needed by step 1).
-LoopAsWritten loop_as_written(const scene::Scene& sc, const SceneProblem& sp, bool assumptions_hold,
+/// `assumptions_hold`: Assumption 1 holds for the scene (needed by step 2).
+LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
                               const lmi::Options& opt = {});
+
+/// The same decider on any loop (design's loop with its V): stability::decide_loop, as a LoopAsWritten.
+LoopAsWritten decided_loop(const sim::LoopSpec& spec, const std::string& coupling);
 
 }  // namespace hapstab::multidof

@@ -27,12 +27,15 @@
 // so that the multidof library does not depend on scene/.
 #pragma once
 
+#include <algorithm>
 #include <string>
 
 #include "hapstab/multidof/analysis.hpp"
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
 
 namespace hapstab::multidof {
 
@@ -43,6 +46,10 @@ struct SceneProblem {
   std::vector<std::string> device_evidence;  ///< per device: where its OSP level comes from
   int delay = 0;                             ///< n of the [delay] z^-n (folded into problem.E)
   StateSpace<rational> E_undelayed;          ///< E as analysed before the delay (perturb_C applied)
+  StateSpace<rational> E_written;            ///< the scene's realisation of E, perturb_C applied, not reduced
+  sim::LoopHiddenModes hidden;               ///< every block's hidden modes, as written (sim/hidden_modes.hpp)
+  /// The scene's loop with E_written as its environment: the loop the verdicts are about.
+  sim::LoopSpec loop;
 };
 
 /// z^-n E: n shift registers of m states after E's output (exact).
@@ -66,7 +73,9 @@ inline int delay_in_periods(const rational& delay, const rational& T, const std:
     throw InputError(where + "[delay] is " + q.str() + " sample periods, not a whole number: multidof analyze/design "
                      "model an integer delay z^-n only (folded into E); a fractional delay is modelled by "
                      "`hapstab simulate` and `hapstab bound --frac-delay`");
-  if (q > 1000) throw InputError(where + "[delay] of " + q.str() + " periods is more than the 1000 multidof models");
+  if (q > limits::multidof_states)
+    throw InputError(where + "[delay] of " + q.str() + " periods is more than the " + std::to_string(limits::multidof_states) +
+                     " multidof models");
   return static_cast<int>(bmp::numerator(q).convert_to<long>());
 }
 
@@ -81,12 +90,13 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   Problem& pb = sp.problem;
   const std::string f = sc.file + ": ";
   if (!sc.loop.environment) throw InputError(f + "the scene has no [environment] (Theorem 5 needs E)");
-  pb.E = minreal(*sc.loop.environment);  // Theorem 5 is realisation-independent; P has one row per state
+  sp.E_written = *sc.loop.environment;
   const toml::table* md = sc.root["multidof"].as_table();
   const int N = sc.loop.dofs();
-  if (pb.E.inputs() != N || pb.E.outputs() != N)
-    throw InputError(f + "environment is " + std::to_string(pb.E.outputs()) + "x" + std::to_string(pb.E.inputs()) +
-                     " but the devices have " + std::to_string(N) + " DOF (a square N x N E is required)");
+  if (sp.E_written.inputs() != N || sp.E_written.outputs() != N)
+    throw InputError(f + "environment is " + std::to_string(sp.E_written.outputs()) + "x" +
+                     std::to_string(sp.E_written.inputs()) + " but the devices have " + std::to_string(N) +
+                     " DOF (a square N x N E is required)");
   if (md) {
     if (auto* pc = (*md)["perturb_C"].as_array()) {
       MatQ Pi(static_cast<Eigen::Index>(pc->size()), N);
@@ -98,12 +108,25 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
           Pi(static_cast<Eigen::Index>(i), j) = scene_rational((*row)[static_cast<size_t>(j)], f + "multidof.perturb_C");
       }
       if (Pi.rows() != N) throw InputError(f + "multidof.perturb_C must be " + std::to_string(N) + "x" + std::to_string(N));
-      pb.E.C = Pi * pb.E.C;
+      sp.E_written.C = Pi * sp.E_written.C;  // C_E := Pi C_E: the same transfer matrix on every realisation
     }
     if (auto b = (*md)["qv_block_diagonal"].value<bool>()) pb.qv_block_diagonal = *b;
   }
+  // Hidden modes first, on the realisations as written; then E is reduced (Theorem 5 is about
+  // the input-output behaviour, valid once the hidden modes are known: multidof::premises)
+  sp.loop = sc.loop;
+  sp.loop.environment = sp.E_written;
+  const HiddenModes env = hidden_modes(sp.E_written);
+  sp.hidden = sim::hidden_modes(sp.loop, &env);
+  pb.E = env.minimal;  // P has one row per state of the minimal E
   sp.E_undelayed = pb.E;
   sp.delay = delay_in_periods(sc.loop.delay, sc.T, f);
+  const long folded = static_cast<long>(pb.E.states()) + static_cast<long>(sp.delay) * N;
+  if (folded > limits::multidof_states)
+    throw InputError(f + "[delay] of " + std::to_string(sp.delay) + " samples folds " + std::to_string(sp.delay * N) +
+                     " shift states into E (" + std::to_string(folded) + " states with E's own " +
+                     std::to_string(pb.E.states()) + "), more than the limit of " + std::to_string(limits::multidof_states) +
+                     " that multidof analyze|design model (`hapstab stability --scene` and `simulate` run longer delays)");
   if (sp.delay > 0) pb.E = minreal(delayed(pb.E, sp.delay));
   // devices: DOF ranges and OSP levels
   std::vector<int> dev_first;
@@ -192,6 +215,8 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
       for (const auto& e : *a) {
         auto v = e.value<int64_t>();
         if (!v) throw InputError(f + "multidof.coupling." + key + " must be a list of integers");
+        if (*v < -1000000 || *v > 1000000)
+          throw InputError(f + "multidof.coupling." + key + ": " + std::to_string(*v) + " is out of range");
         out.push_back(static_cast<int>(*v));
       }
     }
@@ -201,7 +226,51 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   if (pb.coupling.mbar.empty())
     for (const auto& d : sc.loop.devices) pb.coupling.mbar.push_back(static_cast<int>(d.dofs()));
   if (pb.coupling.nbar.empty()) pb.coupling.nbar.assign(pb.coupling.mbar.size(), 1);
+  // the structure as a whole, for analyze as for design (sizes first: nothing is allocated yet)
+  long total = 0;
+  for (size_t i = 0; i < pb.coupling.nbar.size(); ++i) {
+    const int n = pb.coupling.nbar[i];
+    if (n > limits::coupling_block_states)
+      throw InputError(f + "multidof.coupling.nbar[" + std::to_string(i) + "] = " + std::to_string(n) +
+                       " states, more than the limit of " + std::to_string(limits::coupling_block_states) + " per block");
+    total += n;
+  }
+  if (total > limits::coupling_states)
+    throw InputError(f + "multidof.coupling.nbar: " + std::to_string(total) + " states in all, more than the limit of " +
+                     std::to_string(limits::coupling_states));
+  try {
+    pb.coupling.validate(N);
+  } catch (const InputError& e) {
+    throw InputError(f + "multidof.coupling: " + e.what());
+  }
   return sp;
+}
+
+/// The premises the realisations as written must meet, from their hidden modes (an empty list
+/// when no block hides a mode): E Schur stable (Theorem 5) for the environment, Assumption 1(a)
+/// for a device, 1(b) for an operator. A hidden mode outside the stability region fails the
+/// premise by name (exact); Theorem 5's LMIs are posed on the reduced blocks, which is legitimate
+/// only when every line here holds. The coupling's hidden modes concern the loop as written only.
+inline std::vector<AssumptionCheck> hidden_mode_premises(const SceneProblem& sp) {
+  std::vector<AssumptionCheck> out;
+  auto premise = [&](const std::string& block) {
+    if (block == "environment") return std::string("E Schur stable as written (Theorem 5): the environment's hidden modes");
+    if (block.rfind("device", 0) == 0) return "Assumption 1(a): " + block + " as written: its hidden modes";
+    return "Assumption 1(b): " + block + " as written: its hidden modes";
+  };
+  std::vector<std::string> blocks;
+  for (const auto& h : sp.hidden.modes)
+    if (h.block != "coupling" && std::find(blocks.begin(), blocks.end(), h.block) == blocks.end()) blocks.push_back(h.block);
+  for (const auto& b : blocks) {
+    std::string bad, good;
+    for (const auto& h : sp.hidden.modes)
+      if (h.block == b) (h.stable ? good : bad) += (h.stable ? good : bad).empty() ? h.text() : "; " + h.text();
+    out.push_back({premise(b), bad.empty() ? Verdict::of(true, Status::exact, "stable hidden modes only (they never move): " + good)
+                                           : Verdict::of(false, Status::exact,
+                                                         "a hidden mode outside the stability region (no input reaches or "
+                                                         "no output shows it, so no coupling or loop moves it): " + bad)});
+  }
+  return out;
 }
 
 }  // namespace hapstab::multidof

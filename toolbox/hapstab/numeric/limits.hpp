@@ -40,6 +40,24 @@ inline constexpr int scene_parameters = 1000;
 /// T = 1 ms. The delay line holds min(delay, run length) + 2 forces, so a delay longer than the
 /// run costs no more memory than the run.
 inline constexpr long delay_samples = 10000000;
+/// Paper 000's multi-DOF problems (`multidof analyze|design`, multidof/scene_multidof.hpp),
+/// checked when the scene is read, before any realisation is built:
+/// states of one block V_i of the designed coupling ([multidof.coupling] nbar_i): a coupling
+/// filter of order 32 per block is far above the first-order controllers of paper 000 (27);
+/// `nbar = [200]` ran 56 s into the design program before it ran out of memory.
+inline constexpr int coupling_block_states = 32;
+/// ... and of the whole coupling (sum of nbar_i): the block-wise design solves one small program
+/// per block, the generic one a program in (sum nbar_i + m)^2 unknowns.
+inline constexpr int coupling_states = 256;
+/// States of the environment realisation Theorem 5 analyses: the minimal E plus n m shift states
+/// of a [delay] of n samples folded into it (z^-n E). The exact re-check of (16) is on matrices
+/// of twice this order.
+inline constexpr int multidof_states = 1000;
+/// Memory of the generic SDP's Schur complement (8 v^2 bytes for v scalar unknowns), checked
+/// before the program is posed: a scene whose structure needs the generic path beyond it is
+/// refused, naming the order that makes it so.
+inline constexpr double generic_sdp_bytes = 2e9;
+
 /// Depth of a node of a TOML text (scene, sweep spec): table header components + dotted-key
 /// components + enclosing arrays and inline tables (report/toml_limits.hpp). The deepest example
 /// scene is 6 levels deep; toml++ recursed over 50,000 dotted components until the stack ended.

@@ -396,63 +396,76 @@ struct Checker {
 
 // ---- which command models which part of a scene
 
-const std::string kSim = "simulate", kAnalyze = "multidof analyze", kDesign = "multidof design";
+const std::string kSim = "simulate", kAnalyze = "multidof analyze", kDesign = "multidof design", kStab = "stability";
 
 std::vector<Part> make_uses() {
   using U = Use;
   const auto all = [](std::string name, std::string what, std::string section) {
     return Part{std::move(name), std::move(what), std::move(section), {},
-                {{kSim, U::models, ""}, {kAnalyze, U::models, ""}, {kDesign, U::models, ""}}};
+                {{kSim, U::models, ""}, {kAnalyze, U::models, ""}, {kDesign, U::models, ""}, {kStab, U::models, ""}}};
   };
+  // Parts only the simulator models: why Theorems 5 and 6 do not, and why the Schur test of the
+  // linear loop (`stability --scene`) does not.
   const auto sim_only = [](std::string name, std::string what, std::string section, std::vector<std::string> keys,
-                           std::string why) {
+                           std::string why, std::string why_stab) {
     return Part{std::move(name), std::move(what), std::move(section), std::move(keys),
-                {{kSim, U::models, ""}, {kAnalyze, U::refuses, why}, {kDesign, U::refuses, why}}};
+                {{kSim, U::models, ""}, {kAnalyze, U::refuses, why}, {kDesign, U::refuses, why}, {kStab, U::refuses, why_stab}}};
   };
   const std::string nonlinear = "Theorems 5 and 6 are about the linear loop";
+  const std::string schur = "the Schur test decides the linear loop";
   std::vector<Part> p;
   p.push_back(all("[scene]", "the sample period", "scene"));
   p.push_back(all("[parameters]", "named exact values", "parameters"));
   p.push_back(all("[[device]] m, b, tf, ss", "the devices", "device"));
   p.push_back(sim_only("[[device]] quantum, quantizer", "encoder quantization", "device", {"quantum", "quantizer"},
-                       nonlinear + "; a quantizer is not in it"));
-  p.push_back(sim_only("[[device]] coulomb", "Coulomb friction", "device", {"coulomb"}, nonlinear + "; friction is not in it"));
+                       nonlinear + "; a quantizer is not in it", schur + "; a quantizer is not in it"));
+  p.push_back(sim_only("[[device]] coulomb", "Coulomb friction", "device", {"coulomb"}, nonlinear + "; friction is not in it",
+                       schur + "; friction is not in it"));
   p.push_back(all("[[operator]]", "the human operators", "operator"));
   p.push_back(all("[environment]", "the virtual environment E(z)", "environment"));
   p.push_back({"[coupling]", "the coupling V(z)", "coupling", {},
                {{kSim, U::models, ""},
                 {kAnalyze, U::models, "checked against Theorem 5's requirement on Delta_V (the loop as written)"},
-                {kDesign, U::outside, "design computes the coupling; the scene's own is not used"}}});
-  p.push_back(sim_only("[contact]", "a unilateral wall", "contact", {}, "Theorems 5 and 6 model a two-sided linear wall"));
+                {kDesign, U::outside, "design computes the coupling; the scene's own is not used"},
+                {kStab, U::models, ""}}});
+  p.push_back(sim_only("[contact]", "a unilateral wall", "contact", {}, "Theorems 5 and 6 model a two-sided linear wall",
+                       "the Schur test models a two-sided linear wall"));
   p.push_back(sim_only("[passivity_controller]", "Hannaford-Ryu's passivity controller", "passivity_controller", {},
-                       nonlinear + "; the controller is a time-varying damper"));
+                       nonlinear + "; the controller is a time-varying damper", schur + "; the controller is a time-varying damper"));
   p.push_back({"[delay]", "a computation delay", "delay", {},
                {{kSim, U::models, ""},
                 {kAnalyze, U::models, "an integer delay z^-n in the environment's realisation; a fractional one is refused"},
-                {kDesign, U::models, "as analyze"}}});
+                {kDesign, U::models, "as analyze"},
+                {kStab, U::models, "integer and fractional: the forces still to act are states of the closed loop"}}});
   p.push_back({"[[input]]", "exogenous forces", "input", {},
                {{kSim, U::models, ""},
                 {kAnalyze, U::outside, "an excitation: the stability of the linear loop does not depend on it"},
-                {kDesign, U::models, "drives the simulated verification of the designed V"}}});
+                {kDesign, U::models, "drives the simulated verification of the designed V"},
+                {kStab, U::outside, "an excitation: the stability of the linear loop does not depend on it"}}});
   p.push_back({"[initial]", "the initial state", "initial", {},
                {{kSim, U::models, ""},
                 {kAnalyze, U::outside, "the stability of the linear loop does not depend on it"},
-                {kDesign, U::models, "the initial state of the simulated verification"}}});
+                {kDesign, U::models, "the initial state of the simulated verification"},
+                {kStab, U::outside, "the stability of the linear loop does not depend on it"}}});
   p.push_back({"[simulate]", "how simulate runs the scene", "simulate", {},
                {{kSim, U::models, ""},
                 {kAnalyze, U::outside, "configures `hapstab simulate`"},
-                {kDesign, U::outside, "configures `hapstab simulate` (design's run length is --duration)"}}});
+                {kDesign, U::outside, "configures `hapstab simulate` (design's run length is --duration)"},
+                {kStab, U::outside, "configures `hapstab simulate`"}}});
   p.push_back({"[multidof] osp, qv_block_diagonal, [multidof.coupling]", "Theorems 5 and 6's premises and structure",
                "multidof", {"osp", "qv_block_diagonal", "coupling"},
-               {{kSim, U::outside, "configures `hapstab multidof`"}, {kAnalyze, U::models, ""}, {kDesign, U::models, ""}}});
+               {{kSim, U::outside, "configures `hapstab multidof`"}, {kAnalyze, U::models, ""}, {kDesign, U::models, ""},
+                {kStab, U::outside, "configures `hapstab multidof`"}}});
   p.push_back({"multidof.perturb_C", "Sec. VI's perturbed environment C_E := Pi C_E", "multidof", {"perturb_C"},
                {{kSim, U::refuses, "the simulator reads [environment] as written"},
                 {kAnalyze, U::models, ""},
-                {kDesign, U::models, ""}}});
+                {kDesign, U::models, ""},
+                {kStab, U::refuses, "the Schur test reads [environment] as written"}}});
   p.push_back({"[reproduce]", "what `hapstab reproduce` expects", "reproduce", {},
                {{kSim, U::outside, "configures `hapstab reproduce`"},
                 {kAnalyze, U::outside, "configures `hapstab reproduce`"},
-                {kDesign, U::outside, "configures `hapstab reproduce`"}}});
+                {kDesign, U::outside, "configures `hapstab reproduce`"},
+                {kStab, U::outside, "configures `hapstab reproduce`"}}});
   return p;
 }
 
@@ -510,7 +523,7 @@ void check_names(const toml::table& root, const std::string& file) { Checker{fil
 void check_schema(const toml::table& root, const std::string& file) { Checker{file, true}.root(root); }
 
 const std::vector<std::string>& scene_commands() {
-  static const std::vector<std::string> c = {kSim, kAnalyze, kDesign};
+  static const std::vector<std::string> c = {kSim, kAnalyze, kDesign, kStab};
   return c;
 }
 
