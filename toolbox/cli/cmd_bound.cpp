@@ -197,8 +197,8 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   if (!b.note.empty()) j["note"] = b.note;
   if (r.dirichlet) {
     const auto& [C, D] = *r.dirichlet;
-    j["dirichlet_C"] = {decimal_outward(C.lo, digits + 3, -1), decimal_outward(C.hi, digits + 3, +1)};
-    j["dirichlet_D"] = {decimal_outward(D.lo, digits + 3, -1), decimal_outward(D.hi, digits + 3, +1)};
+    j["dirichlet_C"] = cli::enclosure_json(C, digits + 3);  // outward (cli/command.hpp)
+    j["dirichlet_D"] = cli::enclosure_json(D, digits + 3);
   }
   if (r.damping) {
     nlohmann::json d;
