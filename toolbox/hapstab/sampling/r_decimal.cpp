@@ -110,8 +110,9 @@ void check_inputs(const rational& T, const rational& omega, int digits) {
     throw InputError("digits = " + std::to_string(digits) + " is outside [1, 1000]");
   // r is 2 pi periodic in theta = w T; reducing theta needs pi to as many digits as theta has
   // (reduced_angle): beyond the limit that is refused, not attempted
+  static const rational limit = pow10(limits::periodic_argument_digits);  // once (GMP compares sizes first)
   const rational theta = abs(omega * T);
-  if (theta >= pow10(limits::periodic_argument_digits))
+  if (theta >= limit)
     throw InputError("omega: |w T| = " + decimal_outward(theta, 3, -1) + " is not below 10^" +
                      std::to_string(limits::periodic_argument_digits) +
                      " (r(jw) is periodic in w T; reducing w T modulo 2 pi takes pi to as many digits as w T has)");
