@@ -256,7 +256,7 @@ HAPSTAB_PROOF(contact_circulant_algebra, "002", "Circulant algebra (12)-(20), (A
   // Instances, not a proof for every (a_j, b_j): the rows below say so (issue 30). P_powers is a
   // statement about N = 3..8 only and is proven for each.
   const std::string inst = " -- at N = 3..8 and " + std::to_string(trials) + " pseudo-random rational (a_j, b_j) (seed 2002)";
-  check.claim("002.appendix.P_powers", "(A3)-(A5)", "P^N = I, P^-1 = P^{N-1} = P', P^-2 = (P^2)' for the P of (12)",
+  check.claim("002.appendix.P_powers", "(A3)-(A5)", "P^N = I, P^-1 = P^{N-1} = P', P^-2 = (P^2)' for the P of (12) -- at N = 3..8",
               Status::exact, p_ok, "N = 3..8, exact rational matrices");
   check.claim("002.appendix.commute", "(A12) remark", "circulant matrices commute (A B = B A, M1 P = P M1)" + inst,
               Status::exact, commute_ok, ev.str(), {drawn});

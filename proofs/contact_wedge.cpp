@@ -171,7 +171,8 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
   ev2 << n_h << " H: " << bad_gain
       << " with k*_wedge < k*_Tsypkin not proven; largest ratio k*_wedge/k*_Tsypkin = " << max_ratio;
   check.claim("002.wedge_gain_ge_tsypkin", "k* of (25) vs (21)",
-              "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H)", Status::certified,
+              "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H) -- on the 40 random "
+              "stable H above", Status::certified,
               bad_gain == 0, ev2.str(), {evaluated, finite_gain});
   std::ostringstream ev3;
   ev3 << n_h << " H: certified lower end of min_theta w(theta) above a 4001-point grid minimum (double, + 1e-12) in "

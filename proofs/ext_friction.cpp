@@ -75,7 +75,8 @@ HAPSTAB_PROOF(ext_friction_closed_forms, "ext", "Friction condition: Abbott-Okam
         springs.count(true);
         ++cases;
       }
-  check.claim("ext.friction.abbott_okamura", "A&O 2005", "spring K: b* = KT/2 and f_c* = K Delta/2, both exact; f_c* tight (witness found)",
+  check.claim("ext.friction.abbott_okamura", "A&O 2005", "spring K: b* = KT/2 and f_c* = K Delta/2, both exact; f_c* tight (witness found) -- at K in {1, 50, "
+              "1000, 20000}, Delta in {1/1000, 1/4096, 3/7}, T in {1/1000, 1/250}",
               Status::exact, ok, std::to_string(cases) + " (K, Delta, T) cases" + (bad.empty() ? "" : "; first failure " + bad),
               {springs});
   cases = 0;
@@ -89,7 +90,8 @@ HAPSTAB_PROOF(ext_friction_closed_forms, "ext", "Friction condition: Abbott-Okam
         ok = ok && c.fc_star == D * (rational(K) / 2 + rational(B) / T) && c.tight;
         ++cases;
       }
-  check.claim("ext.friction.spring_damper", "extension", "K + B(z-1)/(Tz) with delay n: f_c* = Delta (K/2 + B/T), independent of n, tight",
+  check.claim("ext.friction.spring_damper", "extension", "K + B(z-1)/(Tz) with delay n: f_c* = Delta (K/2 + B/T), independent of n, tight -- at n = 0..6, K in "
+              "{0, 1000, 20000}, B in {0, 1, 5, 40}",
               Status::exact, ok, std::to_string(cases) + " cases, n = 0..6, K in {0, 1000, 20000}, B in {0, 1, 5, 40}",
               {walls});
 }

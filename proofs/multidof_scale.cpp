@@ -162,7 +162,8 @@ HAPSTAB_PROOF(lmi_low_rank_schur, "000", "The IPM's low-rank Schur complement eq
               "the rank-one pieces kept for A^T P A - P add up to each term F_k exactly (n = 2, 3, 5)", Status::exact,
               pieces_exact, std::to_string(terms_checked) + " terms rebuilt from their pieces in rational arithmetic", {terms});
   check.claim("000.ipm.low_rank_schur", "(16) first LMI",
-              "tr(F_k X F_l Z) = sum s_f s_g (R_v^T X L_u)(R_v'^T Z L_u') for the pieces of A^T P A - P (lmi/ipm.cpp)",
+              "tr(F_k X F_l Z) = sum s_f s_g (R_v^T X L_u)(R_v'^T Z L_u') for the pieces of A^T P A - P (lmi/ipm.cpp) -- "
+              "at random rational X and Z (n = 2, 3, 5)",
               Status::exact, identity_holds,
               std::to_string(entries_checked) + " Schur complement entries, random rational X and Z, exact", {entries});
 }

@@ -121,19 +121,25 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
               Status::exact, ok,
               "exact identity in t at T = 1; both sides are T^{1-m} times their value at T = 1 (H_m(T) = T^-m H_m(1), "
               "exact), so this proves every T (cross-checked at T = 1/1000, 7/3)");
-  // partial fractions 1/((1-z) z^n) = 1/(1-z) + z^-1 + ... + z^-n
-  ok = true;
-  // an identity stated for every n, checked at n = 0..12: each n compares two non-zero rational
-  // functions, so each is non-trivial (proof.hpp, Instances)
+  // partial fractions 1/((1-z) z^n) = 1/(1-z) + z^-1 + ... + z^-n, for every n by induction: n = 0
+  // is 1/(1-z) itself; multiplying the identity at n by z^-1 gives the one at n + 1 exactly when
+  // z^-1/(1-z) = 1/(1-z) + z^-1 (one identity of rational functions, free of n: the step)
+  const RF one(rational(1));
+  bool step_pf = zpow(-1) / one_minus_z() == one / one_minus_z() + zpow(-1);
+  ok = step_pf;
+  // cross-check: the identity itself at n = 0..12, each comparing two non-zero rational functions
   proofs::Instances delays{"delays n", 13};
   for (int n = 0; n <= 12; ++n) {
     delays.count(true);
-    RF rhs = RF(rational(1)) / one_minus_z();
+    RF rhs = one / one_minus_z();
     for (int k = 1; k <= n; ++k) rhs += zpow(-k);
-    ok = ok && (RF(rational(1)) / (one_minus_z() * zpow(n))) == rhs;
+    ok = ok && (one / (one_minus_z() * zpow(n))) == rhs;
   }
-  check.claim("001.ex4.partial_fractions", "Example 4", "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k", Status::exact, ok,
-              "equal as reduced rational functions of z for n = 0..12", {delays});
+  check.claim("001.ex4.partial_fractions", "Example 4",
+              "1/((1-z)z^n) = 1/(1-z) + sum_{k=1}^n z^-k for every n >= 0 (induction on n)", Status::exact, ok,
+              std::string("induction: n = 0 is trivial, the step z^-1/(1-z) = 1/(1-z) + z^-1 holds exactly: ") +
+                  (step_pf ? "yes" : "NO") + "; cross-checked as reduced rational functions of z at n = 0..12",
+              {delays});
   // (52): T/(1-z) (z-1)/(z+1) = -(T/2)[1 - j tan(wT/2)]
   // T is a factor of the left side and of the right: the identity at T = 1 times T is the identity
   // for every T (the other T cross-check it).
@@ -163,8 +169,16 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
               "cross-multiplied identity of polynomials in a over Q(t) (T = 1; T is a factor of both sides), both "
               "denominators not identically zero; cross-checked through on_unit_circle at a in {-9/10, 0, 1/3, 999/1000}");
   // (53): Re{T H/((1-z) z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT, H = K + B(z-1)/(Tz); linear in (KT, B),
-  // so the two basis cases (KT, B) = (1, 0), (0, 1) prove it for every K, B, T.
-  ok = true;
+  // so the two basis cases (KT, B) = (1, 0), (0, 1) prove it for every K, B, T. For every n:
+  //   spring, by induction: n = 0, Re{1/(1-z)} = 1/2 = D_0/2 (exact in t); the step from n to n + 1
+  //     adds (z^-1 - 1)/((1-z) z^n) = z^-(n+1) -- exactly when (z^-1 - 1)/(1 - z) = z^-1 -- whose
+  //     real part cos(n+1)wT is (D_{n+1} - D_n)/2 (D_n = 1 + 2 sum_{k<=n} cos k wT, by definition);
+  //   damper: (z-1)/(z(1-z)) = -z^-1 exactly, so it is -Re z^-(n+1) = -cos(n+1)wT for every n.
+  // (Re z^-k = cos k wT on |z| = 1 is de Moivre's formula, not re-derived.)
+  const bool spring_base = re_t(one / one_minus_z()) == RF(rational(1, 2));
+  const bool spring_step = (zpow(-1) - one) / one_minus_z() == zpow(-1);
+  const bool damper_all = Hm(1, rational(1)) / one_minus_z() == RF(rational(-1)) * zpow(-1);
+  ok = spring_base && spring_step && damper_all;
   proofs::Instances basis{"delays n with both basis parts non-zero", 9};
   for (int n = 0; n <= 8; ++n) {
     RF spring = re_t(RF(rational(1)) / (one_minus_z() * zpow(n)));                // KT = 1
@@ -172,12 +186,24 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     basis.count(!spring.is_zero() && !damper.is_zero());
     ok = ok && spring == RF(rational(1, 2)) * dirichlet(n, false) && damper == RF(rational(-1)) * cos_k(n + 1);
   }
-  check.claim("001.eq53", "(53)", "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT", Status::exact, ok,
-              "exact identity in t for n = 0..8 on the basis (KT,B) = (1,0), (0,1) (the expression is linear in KT and B)",
+  check.claim("001.eq53", "(53)",
+              "Re{T(K + B(z-1)/(Tz))/((1-z)z^n)} = (KT/2) D_n(wT) - B cos(n+1)wT for every K, B, T and n >= 0 "
+              "(linear in KT and B; induction on n)",
+              Status::exact, ok,
+              std::string("basis (KT,B) = (1,0), (0,1); spring: n = 0 exact in t, step (z^-1 - 1)/(1 - z) = z^-1 exact; "
+                          "damper: (z-1)/(z(1-z)) = -z^-1 exact: ") +
+                  (spring_base && spring_step && damper_all ? "all hold" : "one FAILS") +
+                  "; cross-checked as exact identities in t for n = 0..8",
               {basis});
-  // Tustin with delay: (KT/2) D_n(wT) - B (-1)^n D_n(wT + pi); n = 1: KT/2 + B + (KT - 2B) cos wT
-  ok = true;
+  // Tustin with delay: (KT/2) D_n(wT) - B (-1)^n D_n(wT + pi); n = 1: KT/2 + B + (KT - 2B) cos wT.
+  // Damper part f_n = Re{2(z-1)/(z+1)/((1-z)z^n)} for every n, by induction: n = 0 exact in t; the
+  // step f_n + f_{n+1} = -2 Re z^-(n+1) = -2 cos(n+1)wT holds exactly when (1 + z^-1)/(z + 1) = z^-1,
+  // and -(-1)^n D_n(wT + pi) satisfies the same recurrence (D_{n+1}(x + pi) = D_n(x + pi) +
+  // 2 (-1)^{n+1} cos(n+1)x, by definition). The spring part is (53)'s.
   RF tust = RF(P(std::vector<rational>{rational(-2), rational(2)}), P(std::vector<rational>{rational(1), rational(1)}));  // 2(z-1)/(z+1), T = 1
+  const bool tustin_base = re_t(tust / one_minus_z()) == RF(rational(-1)) * dirichlet(0, true);
+  const bool tustin_step = (one + zpow(-1)) / RF(P(std::vector<rational>{rational(1), rational(1)})) == zpow(-1);
+  ok = tustin_base && tustin_step;
   proofs::Instances tustin_delays{"delays n with a non-zero damper part", 9};
   for (int n = 0; n <= 8; ++n) {
     RF damper = re_t(tust / (one_minus_z() * zpow(n)));
@@ -185,8 +211,13 @@ HAPSTAB_PROOF(passivity_sec6_identities, "001", "Sec. VI identities as exact rat
     ok = ok && damper == RF(rational(n % 2 ? 1 : -1)) * dirichlet(n, true);
   }
   check.claim("001.ex4.tustin_delay", "Example 4",
-              "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi)", Status::exact, ok,
-              "exact identity in t for n = 0..8 (damper part; the spring part is (53)'s)", {tustin_delays});
+              "Re{T(K + (2B/T)(z-1)/(z+1))/((1-z)z^n)} = (KT/2)D_n(wT) - B(-1)^n D_n(wT + pi) for every n >= 0 "
+              "(induction on n)",
+              Status::exact, ok,
+              std::string("damper part: n = 0 exact in t, step (1 + z^-1)/(z + 1) = z^-1 exact: ") +
+                  (tustin_base && tustin_step ? "both hold" : "one FAILS") +
+                  "; the spring part is (53)'s; cross-checked as exact identities in t for n = 0..8",
+              {tustin_delays});
   RF n1 = re_t(RF(rational(1)) / (one_minus_z() * zpow(1)));
   RF n1b = re_t(tust / (one_minus_z() * zpow(1)));
   bool ok1 = n1 == RF(rational(1, 2)) + cos_k(1) && n1b == RF(rational(1)) - RF(rational(2)) * cos_k(1);
@@ -221,7 +252,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     ok = ok && agrees(bound_certified(prob(H, T)), cf);
     ++count;
   }
-  check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0", Status::certified, ok,
+  check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0 -- at T = 1/1000 on 12 pseudo-random combinations up to H_4 (seed 46)", Status::certified, ok,
               std::to_string(count) + " random non-negative combinations up to H_4; closed form inside the certified enclosure",
               {combos});
   // virtual wall KT/2 + B and with delay n = 1 (both cases, boundary KT = 4B)
@@ -246,9 +277,10 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       (K * T >= 4 * B ? stiff : soft).count(true);
       ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
     }
-  check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B", Status::certified, ok,
+  check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B -- at T = 1/1000, K in {0, 100, 1000, 4000, 20000, 100000}, B in {0, 1, 5, 50}", Status::certified, ok,
               std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0", {walls});
-  check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B)",
+  check.claim("001.eq53.n1.generic", "(53)", "n = 1: KT/2 + B + (KT - 2B) if KT >= 4B, else KT/2 + B + K^2T^2/(8B) -- at T = 1/1000 on the (K, B) "
+              "above and KT = 4B(1 + {0, +-1e-6}), B in {1, 5}",
               Status::certified, ok1, std::to_string(count) + " (K, B) pairs and KT = 4B(1 + {0, +-1e-6}) for B in {1, 5}",
               {stiff, soft});
   // conservative bound (2n+1)KT/2 + B for n = 0..5 is an upper bound
@@ -261,7 +293,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       delayed.count(true);
       ok = ok && below(b, catalogue::delayed_wall_conservative(n, K, rational(5), T));
     }
-  check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall", Status::certified, ok,
+  check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall -- at T = 1/1000, n = 0..5, K in {1000, 30000}, B = 5", Status::certified, ok,
               "n = 0..5, K in {1000, 30000}, B = 5", {delayed});
   // H_m z^-n: (2/T)^{m-1}, tight for even n; H_0 z^-n: (2n+1)T/2
   ok = true;
@@ -279,7 +311,8 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     h0.count(true);
     ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
   }
-  check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2",
+  check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2 -- at T = 1/1000, m = "
+              "1..4, n = 0..4 (H_0: n = 0..6)",
               Status::certified, ok, "m = 1..4, n = 0..4; n = 0..6 for H_0", {hm_tight, hm_bound, h0});
   // FIR (47)-(49): non-negative and alternating sign structures are tight, others bounded
   ok = true;
@@ -309,7 +342,8 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     if (tight) ok = ok && agrees(b, v);
     okb = okb && (tight ? agrees(b, v) : below(b, v));
   }
-  check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs",
+  check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs -- at T = 1/1000 on 15 "
+              "pseudo-random FIRs of length 3..7 (seed 46)",
               Status::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)",
               {fir_tight, fir_bound});
   // IIR: T/(1-a), T/(1+a), a -> +-1, a = 1 (52)
@@ -325,7 +359,8 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
   RF H52(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)}));
   iir.count(true);
   ok = ok && agrees(bound_certified(prob(H52, T)), catalogue::iir_zero_at_one(rational(1), T));
-  check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2", Status::certified,
+  check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2 -- at T = 1/1000, a in {-0.999999, -0.9, 0, "
+              "0.5, 0.999999} and a = 1", Status::certified,
               ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1", {iir});
   // Tustin wall KT/2 - B, with n = 1 KT/2 + B + |KT - 2B|, with 0 < t_d < T: +inf
   ok = true;
@@ -346,9 +381,11 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
         okf = okf && b.infinite && b.status == Status::exact;
       }
     }
-  check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B|", Status::certified, ok,
+  check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B| -- at T = 1/1000, K in {0, 1000, 10000}, B in "
+              "{1/2, 5, 50}", Status::certified, ok,
               "K in {0, 1000, 10000}, B in {1/2, 5, 50}", {tustin});
-  check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive)",
+  check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive) -- at T = 1/1000, t_d/T in {1/100, "
+              "1/2, 99/100}, the nine (K, B) above",
               Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)", {frac});
   // a fractional delay t_d = (p/q) T made exact (bound.cpp, certified_frac_exact): for H_1 z^-n,
   // Re{T H_1 z^-n e^{-j w t_d}/(1 - z)} = -cos((n + 1 + t_d/T) wT), so b* = 1, attained at
@@ -367,7 +404,8 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
       fractional.count(true);
     }
   check.claim("001.eq45.fractional_exact", "(45), Example 3", "with t_d = (p/q) T the objective is rational in cos(wT/q): "
-              "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T)", Status::certified, ok,
+              "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T) -- at T = 1/1000, n = 0..2, t_d/T in "
+              "{1/2, 1/3, 2/5, 3/7, 5/4, 9/10}", Status::certified, ok,
               std::to_string(fractional.total) + " cases, n = 0..2, t_d/T in {1/2, 1/3, 2/5, 3/7, 5/4, 9/10}: 1 inside the certified "
               "enclosure of b*, and the certified enclosure of the maximiser contains a 60-digit enclosure of "
               "pi/((n + 1 + t_d/T) T)", {fractional});
@@ -380,7 +418,7 @@ HAPSTAB_PROOF(passivity_closed_forms_vs_generic, "001", "Every closed form of Se
     p.eta = eta;
     ok = ok && agrees(bound_certified(p), catalogue::virtual_wall(1000, 5, T) + eta);
   }
-  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound", Status::certified, ok, "eta in {0, 1/10, 7}", {etas});
+  check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound -- at eta in {0, 1/10, 7} on the wall K = 1000, B = 5, T = 1/1000", Status::certified, ok, "eta in {0, 1/10, 7}", {etas});
 }
 
 HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and b ~ (CN - D)T") {
@@ -392,7 +430,7 @@ HAPSTAB_PROOF(passivity_dirichlet, "001", "Dirichlet kernel case (50): C, D and 
              D.hi < parse_rational("0.3913831859") + rational(1, 20000000000LL);
   check.claim("001.dirichlet.C", "(50)", "C = -min sin(y)/y = 0.2172336282..., D = (1 - C)/2 = 0.3913831859...",
               Status::certified, okc,
-              "C in [" + to_decimal(C.lo, 25) + ", " + to_decimal(C.hi, 25) + "] (root of tan y = y in (pi, 3pi/2), width < 1e-60)");
+              "C in [" + decimal_outward(C.lo, 25, -1) + ", " + decimal_outward(C.hi, 25, +1) + "] (root of tan y = y in (pi, 3pi/2), width < 1e-60)");
   // b*_N / T - (C N - D) for growing N: the generic certified bound of (z-1) sum_0^N z^-k
   const rational T(1, 1000);
   std::ostringstream ev;

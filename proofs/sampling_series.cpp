@@ -102,7 +102,7 @@ HAPSTAB_PROOF(sampling_triangle_k, "001", "The triangle (43): c(kT) = T [k = 1],
     samples = samples && triangle_c(T, T) == T && triangle_c(2 * T, T) == 0 && triangle_c(T / 2, T) == T / 2 &&
               triangle_c(3 * T / 2, T) == T / 2;
   }
-  check.claim("001.eq43.triangle_samples", "(43)", "c(kT) = T for k = 1 and 0 for every other integer k",
+  check.claim("001.eq43.triangle_samples", "(43)", "c(kT) = T for k = 1 and 0 for every other integer k -- at k = -3..50, T in {1/1000, 7/3, 1}",
               hapstab::Status::exact, samples, "k = -3..50 at T = 1/1000, 7/3, 1 (exact rationals)", {peaks, zeros});
 
   // Certified C*(s) = (1/T) sum_n C(s + j n w_s) vs T e^{-sT}, s = sigma + j w

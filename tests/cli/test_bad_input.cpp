@@ -56,6 +56,8 @@ std::vector<Case> catalogue(const std::string& out) {
   return {
       {"r", "--T", {"--T", "0", "--omega", "1"}, "--T"},
       {"r", "--omega", {"--T", "1", "--omega", "abc"}, "--omega"},
+      // beyond the argument-reduction limit: refused at once (issue 40: 1e50000 ran past 20 s)
+      {"r", "--omega", {"--T", "1/1000", "--omega", "1e100004"}, "not below 10^100000"},
       {"r", "--terms", {"--T", "1", "--omega", "1", "--terms", "-5"}, "--terms"},
       {"r", "--digits", {"--T", "1", "--omega", "1", "--digits", "0"}, "--digits"},
       {"r", "--json", {"--T", "1", "--omega", "1", "--json=maybe"}, "--json"},
@@ -140,6 +142,10 @@ std::vector<Case> catalogue(const std::string& out) {
       {"simulate", "--quiet", {"--scene", kScene, "--out", out, "--quiet=maybe"}, "--quiet"},
       {"simulate", "--force", {"--scene", kScene, "--out", out, "--force=maybe"}, "--force"},
       {"simulate", "--max-output", {"--scene", kScene, "--out", out, "--max-output", "abc"}, "--max-output"},
+      // a NaN, infinite or negative limit disabled the check (issue 40)
+      {"simulate", "--max-output", {"--scene", kScene, "--out", out, "--max-output", "nan"}, "--max-output"},
+      {"simulate", "--max-output", {"--scene", kScene, "--out", out, "--max-output", "inf"}, "--max-output"},
+      {"simulate", "--max-output", {"--scene", kScene, "--out", out, "--max-output", "-1"}, "--max-output"},
       {"simulate", "--set", {"--scene", kScene, "--out", out, "--set", "nope=1"}, "parameters.nope"},
       {"simulate", "--format", {"--scene", kScene, "--out", out, "--format", "xls"}, "--format"},
       {"plot", "name", {"polar", "--H", "1", "--T", "1", "--out", out}, "expected nyquist or bode"},

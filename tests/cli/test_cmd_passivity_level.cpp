@@ -39,7 +39,10 @@ TEST(CmdPassivityLevel, TransferFunctionIspAndOsp) {
     EXPECT_EQ(j["level"].get<double>(), 1.0 / 3.0) << r.out;
     EXPECT_EQ(j["status"], "exact") << r.out;
     EXPECT_TRUE(j["certified"].get<bool>()) << r.out;
-    EXPECT_EQ(parse_rational(j["lower_bound"].get<std::string>()), parse_rational(j["upper_bound"].get<std::string>()));
+    // the exact level 1/3, and its bounds rounded outward (issue 40: both were 0.33333333333333333)
+    EXPECT_EQ(j["exact"], "1/3") << r.out;
+    EXPECT_EQ(j["lower_bound"], "0.33333333333333333") << r.out;
+    EXPECT_EQ(j["upper_bound"], "0.33333333333333334") << r.out;
     EXPECT_EQ(j["value"], "0.33333333333333333");
     // LMI level: within the strict threshold + solver tolerance (1e-5, see lmi tests); its
     // certified lower bound never exceeds the true level 1/3
@@ -95,8 +98,9 @@ TEST(CmdPassivityLevel, StateSpaceFileMimo) {
   auto j = nlohmann::json::parse(r.out);
   // the certified frequency level is the result (exact: 1/3 at theta = pi); the LMI beside it
   EXPECT_EQ(j["status"], "exact") << r.out;
-  EXPECT_EQ(j["lower_bound"], "0.33333333333333333") << r.out;  // 1/3 to 17 digits
-  EXPECT_EQ(j["upper_bound"], "0.33333333333333333") << r.out;
+  EXPECT_EQ(j["lower_bound"], "0.33333333333333333") << r.out;  // 1/3 to 17 digits, rounded down
+  EXPECT_EQ(j["upper_bound"], "0.33333333333333334") << r.out;  // and up
+  EXPECT_EQ(j["exact"], "1/3") << r.out;
   EXPECT_NEAR(j["theta"].get<double>(), M_PI, 1e-12);
   EXPECT_NEAR(j["lmi"]["level"].get<double>(), 1.0 / 3.0, 1e-5);
   EXPECT_NE(j["lmi"]["method"].get<std::string>().find("CSDP"), std::string::npos);

@@ -82,6 +82,23 @@ TEST(CmdR, BadInputExits2WithAClearMessage) {
   EXPECT_EQ(run_r("--help").code, 0);
 }
 
+// Issue 40: w = 1e9999 exited 3, 1e50000 and 1e99999 ran past 20 s. w T is now reduced modulo 2 pi
+// with pi to as many digits as w T has (sampling/r_decimal.cpp): an answer, and the right one --
+// Im r = -(T/2) cot(w T/2) at T = 1/1000, w = 1e9999 is -6.5054773000921679218e-6 (mpmath at 10100
+// digits). Beyond |w T| < 10^100000 (numeric/limits.hpp) the refusal states the limit.
+TEST(CmdR, HugeOmegaIsReducedOrRefusedByItsLimit) {
+  CmdRun r = run_r("--T 1/1000 --omega 1e9999 --digits 20 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["im"], "-6.5054773000921679218e-06");
+  for (const char* w : {"1e50000", "1e99999"}) {
+    r = run_r(std::string("--T 1/1000 --omega ") + w + " --digits 20 --json");
+    EXPECT_EQ(r.code, 0) << w << "\n" << r.out;
+  }
+  r = run_r("--T 1/1000 --omega 1e999999/1e-999999");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("is not below 10^100000"), std::string::npos) << r.out;
+}
+
 TEST(CmdR, NoErrorBoundWhenTooFewTerms) {
   // wT = 100 rad: the integral bound needs N > 100/(2 pi) ~ 15.9
   CmdRun r = run_r("--T 1 --omega 100 --terms 10 --digits 10 --json");

@@ -101,6 +101,21 @@ TEST(CmdSimulate, BadInputExitsTwoWithAMessage) {
       {"[scene]\nT = \"0\"\n[[device]]\nm = \"1\"\n[simulate]\nsteps = 10\n", "scene.T"},
       {base + "[simulate]\nsteps = -5\n", "simulate.steps"},
       {base + "[simulate]\nsteps = 100000000\n", "--force"},
+      // issue 40: times converted to a sample index are range-checked first (a bias start of
+      // 1e16 s acted from t = 0), non-finite and inverted values are refused by name, and an empty
+      // [delay] is not "no delay"
+      {base + "[[input]]\ntype = \"bias\"\nforce = \"1\"\nstart = \"1e16\"\n[simulate]\nsteps = 10\n", "input[0].start"},
+      {base + "[[input]]\ntype = \"bias\"\nforce = \"1\"\nstart = \"1e19\"\n[simulate]\nsteps = 10\n", "input[0].start"},
+      {base + "[[input]]\ntype = \"bias\"\nforce = \"1\"\nstart = \"-1\"\n[simulate]\nsteps = 10\n", "input[0].start"},
+      {base + "[[input]]\ntype = \"impulse\"\nmagnitude = \"1\"\ntime = \"1e19\"\n[simulate]\nsteps = 10\n", "input[0].time"},
+      {base + "[[input]]\ntype = \"profile\"\nvalues = [nan, 1.0, inf]\n[simulate]\nsteps = 10\n", "input[0].values[0]: must be a finite number"},
+      {base + "[[input]]\ntype = \"profile\"\nvalues = [1.0, inf]\n[simulate]\nsteps = 10\n", "input[0].values[1]"},
+      {base + "[simulate]\nsteps = 10\nsubsteps = 2\nwindow = [nan, inf]\n", "simulate.window: must be a finite number"},
+      {base + "[simulate]\nsteps = 10\nsubsteps = 2\nwindow = [\"0.009\", \"0.001\"]\n", "simulate.window: reversed"},
+      {base + "[simulate]\nsteps = 10\nmax_velocity = inf\n", "simulate.max_velocity"},
+      {base + "[delay]\n[simulate]\nsteps = 10\n", "delay: empty"},
+      {base + "[delay]\ntime = \"1e16\"\n[simulate]\nsteps = 10\n", "delay.time"},
+      {base + "[delay]\nsamples = \"1e8\"\n[simulate]\nsteps = 10\n", "delay.samples"},
   };
   for (const auto& c : cases) {
     auto file = write_scene("bad.toml", c.text);

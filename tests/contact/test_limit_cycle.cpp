@@ -91,6 +91,27 @@ TEST(LimitCycle, SlowDecayIsNotAnOscillation) {
   EXPECT_FALSE(o.oscillates) << o.note;
 }
 
+// Issue 40: the red team's loop, whose in-contact linear part (1 + kH)^-1 has a pole pair of radius
+// about 1.0005 (unstable). At 1,000 and 10,000 steps the motion is still in contact: growing,
+// decided by the exact Schur-Cohn test, not the amplitude ratio. At 100,000 and the CLI's default
+// 200,000 it has left contact and grown past 1e9 rho: diverged (it was "sustained oscillation",
+// diverged false, amplitude 1e20). The window is the CLI's: min(8192, steps/4).
+TEST(LimitCycle, GrowthIsDecidedWhateverTheRunLength) {
+  const LureLoop L = make_lure_loop(H_of("(1/1000)*(z+1)/(z^2 - (108/100)*(99999/100000)*z + (99999/100000)^2)"), 1, 1);
+  EXPECT_FALSE(L.contact_stable);
+  for (long steps : {1000L, 10000L}) {
+    const Oscillation o = find_oscillation(L, steps, std::min<long>(8192, steps / 4));
+    EXPECT_TRUE(o.growing && o.oscillates) << steps << ": " << o.note;
+    EXPECT_FALSE(o.diverged) << steps << ": " << o.note;
+    EXPECT_NE(o.note.find("exact, Schur-Cohn"), std::string::npos) << o.note;
+  }
+  for (long steps : {100000L, 200000L}) {
+    const Oscillation o = find_oscillation(L, steps, 8192);
+    EXPECT_TRUE(o.diverged && o.growing && o.oscillates) << steps << ": " << o.note;
+    EXPECT_GT(o.amplitude, 1e6) << steps;
+  }
+}
+
 TEST(Model, MassOnlyClosedForm) {
   // F = 1/(m s^3): G(z) = T^2 (z + 1)/(2 m (z - 1)^2) exactly
   PhysicalModel pm;

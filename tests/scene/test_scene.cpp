@@ -1,6 +1,10 @@
 // Scene files (scene/scene.hpp): the common schema, exact numbers, and errors that name the
 // file, the key and what is wrong.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/sim/simulator.hpp"
@@ -120,6 +124,36 @@ TEST(Scene, ErrorsNameFileKeyAndProblem) {
   EXPECT_NE(error_of("T = ").find("s.toml"), std::string::npos);  // TOML syntax error names the file
 }
 
+// A profile file's forces must be finite, and a line's t (t,force) the instant kT of its sample
+// (to half a period): a file sampled at another rate was replayed at T with its t dropped (issue 40).
+TEST(Scene, ProfileFileTimesAndForcesAreChecked) {
+  const auto dir = std::filesystem::temp_directory_path() / ("hapstab_profile_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string scene = replace(kWall, "type = \"bias\"\ndof = \"haptic\"\nforce = \"2\"",
+                                    "type = \"profile\"\ndof = \"haptic\"\nfile = \"p.csv\"");
+  auto error = [&](const std::string& file) -> std::string {
+    std::ofstream(dir / "p.csv") << file;
+    try {
+      const auto sc = parse_scene(scene, "s.toml", {}, dir.string());
+      EXPECT_FALSE(sc.loop.profiles.empty());
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error("# t, force\n0,1\n0.001,2.5\n0.0020000001,-1\n"), "");  // t = kT (to half a period)
+  EXPECT_EQ(error("1\n2\n-3e-2\n"), "");                                   // forces only
+  EXPECT_NE(error("0,1\n0.0001,2\n").find("input[0].file: line 2: t = 0.0001 s is not this line's instant 0.001 s"),
+            std::string::npos)
+      << error("0,1\n0.0001,2\n");
+  EXPECT_NE(error("0,1\n1e16,2\n").find("input[0].file: line 2"), std::string::npos);
+  EXPECT_NE(error("1\nnan\n").find("line 2: the force nan is not finite"), std::string::npos) << error("1\nnan\n");
+  EXPECT_NE(error("1\ninf\n").find("is not finite"), std::string::npos);
+  EXPECT_NE(error("1\n2x\n").find("line 2: '2x' is not a number"), std::string::npos) << error("1\n2x\n");
+  EXPECT_NE(error("x,1\n").find("line 1: t = 'x' is not a number"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Scene, PassiveClaimCanBeWithdrawn) {
   // The same unstable operator is accepted when the scene does not claim passivity.
   auto text = replace(kWall, "m = \"1/5\"\nb = \"2\"\nk = \"500\"", "tf = \"1/(s-3)\"\npassive = false");
@@ -237,18 +271,28 @@ TEST(SceneLimits, DeepHeadersAreRefusedBeforeToml) {
 // sample count ("negative time step"). Both are refused by name before any allocation; a delay
 // within the limit but longer than the run runs, its forces never arriving.
 TEST(SceneLimits, DelaysBeyondTheLimitAreRefusedByName) {
-  for (const std::string& delay : {std::string("samples = \"200000000\""), std::string("time = \"1e30\"")}) {
-    const auto sc = parse_scene(kHead + kLoop + "[delay]\n" + delay + "\n", "s.toml");
+  // the scene reader refuses it naming the key (issue 40), before anything converts t_d / T
+  for (const std::string& key : {std::string("samples"), std::string("time")}) {
+    const std::string delay = key + (key == "samples" ? " = \"200000000\"" : " = \"1e30\"");
     try {
-      sim::Simulator s(sc.loop);
+      parse_scene(kHead + kLoop + "[delay]\n" + delay + "\n", "s.toml");
       ADD_FAILURE() << delay << " accepted";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("delay: "), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("sample periods (t_d / T), more than the limit of 10000000"), std::string::npos)
-          << e.what();
+      EXPECT_NE(std::string(e.what()).find("s.toml: delay." + key + ": "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("sample periods, more than the limit of 10000000"), std::string::npos) << e.what();
     }
   }
-  const auto sc = parse_scene(kHead + kLoop + "[delay]\nsamples = \"10000000\"\n", "s.toml");
+  auto sc = parse_scene(kHead + kLoop + "[delay]\nsamples = \"10000000\"\n", "s.toml");
+  // and the simulator's own check, for a loop built without a scene
+  sim::LoopSpec spec = sc.loop;
+  spec.delay = rational(bmp::pow(integer(10), 30));  // 1e30 s
+  try {
+    sim::Simulator s(spec);
+    ADD_FAILURE() << "a delay of 1e30 s accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sample periods (t_d / T), more than the limit of 10000000"), std::string::npos)
+        << e.what();
+  }
   sim::Simulator s(sc.loop);
   EXPECT_EQ(s.delay_steps(), 10000000);
   sim::SimOptions o;

@@ -10,9 +10,18 @@
 // Apart from misses: refused (the criterion rejected a generated input) fails the run; failed (a
 // certified computation returned Status::failed) fails the run; undecided (a NumericalError, an
 // honest "cannot decide") fails it only above F of the cases per criterion (default 0.005;
-// `--inject-undecided` makes every case undecided, for the test that a flood fails the run).
+// `--inject-undecided` makes every case undecided, for the test that a flood fails the run;
+// `--inject-nothing-compared` makes every case pass without comparing, for the test that too few
+// compared cases fail it).
 //
 // Case K of seed S is generated from its own generator (seed, K), so `--case K` replays one.
+//
+// Compared cases: a campaign that compared nothing would pass (a regression that switched a path
+// off would still pass), so every criterion counts, per kind, the cases its check could have
+// failed on (compared, non-trivial) and states the least share of the cases run that must be of
+// that kind (minimum_compared in main, printed under each criterion); fewer fail the run. The
+// shares are about a third of the rates seen at seed 1 (docs/verification.md). A replayed case
+// (--case K) checks no minimum.
 //
 // r:      r(jw) = T/(e^{jwT} - 1) of paper 001 (44) as `hapstab r` prints it (r_decimal: MPFI
 //         intervals on -(T/2)cot(wT/2), Ziv's loop) against T/(e^{jwT} - 1) evaluated from the
@@ -134,6 +143,10 @@ bool correctly_rounded(const std::string& printed, const Ref& v, int digits) {
 }
 
 // ---- r(jw) --------------------------------------------------------------------------------
+struct RTally {
+  long compared = 0, bounds = 0;  ///< closed form and series compared; error bounds compared
+} r_tally;
+
 bool check_r(std::mt19937_64& g, std::ostream& why) {
   const rational T(uniform(g, 1, 1000), uniform(g, 1, 100000));
   const int digits = static_cast<int>(uniform(g, 10, 40));
@@ -163,6 +176,8 @@ bool check_r(std::mt19937_64& g, std::ostream& why) {
   const CRef rN = CRef(Tr, 0) * (CRef(cos(th), -sin(th)) - CRef(1, 0)) * CRef(s, 0);
   if (!correctly_rounded(r.series_re, rN.real(), digits)) ok = false, why << "  series re " << r.series_re << " vs " << rN.real() << "\n";
   if (!correctly_rounded(r.series_im, rN.imag(), digits)) ok = false, why << "  series im " << r.series_im << " vs " << rN.imag() << "\n";
+  ++r_tally.compared;
+  if (r.series_error_bound) ++r_tally.bounds;
   if (r.series_error_bound && abs(rN - rv) > ref(parse_rational(*r.series_error_bound)))
     ok = false, why << "  |r_N - r| = " << abs(rN - rv) << " exceeds the bound " << *r.series_error_bound << "\n";
   return ok;
@@ -252,6 +267,10 @@ RF double_root_H(std::mt19937_64& g, const rational& T, std::ostream& why) {
   return RF(P({rational(1), rational(-1)}) * P(num), P(zd));
 }
 
+struct BoundTally {
+  long maximiser = 0, grid = 0, fractional = 0, degenerate = 0;  ///< compared at the maximiser; on the grid; of them
+} bound_tally;
+
 bool check_bound(std::mt19937_64& g, std::ostream& why) {
   passivity::BoundProblem p;
   p.T = chance(g, 0.5) ? rational(1, 1000) : rational(uniform(g, 1, 100), uniform(g, 100, 100000));
@@ -292,7 +311,11 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   const Ref w0 = Ref("1e-30") / ref(p.T);
   bool ok = true;
   // (1) the reference at the certified maximiser lies in the enclosure
+  ++bound_tally.grid;
+  bound_tally.fractional += p.frac_delay.has_value();
+  bound_tally.degenerate += degenerate;
   if (b.omega_enclosure) {
+    ++bound_tally.maximiser;
     Ref w = (ref(b.omega_enclosure->lo) + ref(b.omega_enclosure->hi)) / 2;
     if (w < w0) w = w0;
     const Ref f = objective(p, w);
@@ -327,12 +350,17 @@ Ref wedge_side(const RF& H, const Ref& theta, bool wedge) {
   return h.real() + (wedge ? Ref(abs(h.imag()) * cos(theta / 2) / sin(theta / 2)) : Ref(0)) + 1;
 }
 
+struct WedgeTally {
+  long margins = 0, gains = 0;  ///< criteria whose margin was compared; finite k* compared
+} wedge_tally;
+
 bool check_criterion(const RF& H, const contact::CriterionReport& c, bool wedge, int digits, std::ostream& why) {
   Stopwatch reference_time;
   if (!c.evaluated() || !c.margin.enclosure) {
     why << "  " << c.name << " not evaluated\n";
     return false;
   }
+  ++wedge_tally.margins;
   const Ref lo = ref(c.margin.enclosure->lo), hi = ref(c.margin.enclosure->hi);
   const Ref scale = std::max(Ref(1), Ref(abs(hi)));
   const Ref eps = pow(Ref(10), -(digits - 3)) * scale;
@@ -372,6 +400,7 @@ bool check_criterion(const RF& H, const contact::CriterionReport& c, bool wedge,
   if (c.gain_infinite != (lo >= 1)) {
     if (!(lo < 1 && hi >= 1)) ok = false, why << "  " << c.name << ": gain_infinite = " << c.gain_infinite << " with margin [" << lo << ", " << hi << "]\n";
   } else if (!c.gain_infinite && c.max_gain.enclosure) {
+    ++wedge_tally.gains;
     const Ref klo = ref(c.max_gain.enclosure->lo), khi = ref(c.max_gain.enclosure->hi);
     const Ref k_ref = -1 / (at - 1);  // from the reference at the minimiser (|w*-1| >= |at-1| - off)
     const Ref k_tol = k_ref * (eps + off) / abs(at - 1);
@@ -399,7 +428,7 @@ bool check_wedge(std::mt19937_64& g, std::ostream& why) {
 // well-conditioned cases: agreement to 1e-3 relative is expected (8.6e-5 seen in 1000 cases);
 // the largest deviation, the solver's failures and the disagreements are reported, not misses).
 double level_lmi_deviation = 0;
-long level_lmi_compared = 0, level_lmi_failed = 0, level_lmi_disagreed = 0;
+long level_lmi_compared = 0, level_lmi_failed = 0, level_lmi_disagreed = 0, level_scan_compared = 0;
 
 bool check_level(std::mt19937_64& g, std::ostream& why) {
   TransferFunction tf;
@@ -414,6 +443,7 @@ bool check_level(std::mt19937_64& g, std::ostream& why) {
     why << "  no enclosure\n";
     return false;
   }
+  ++level_scan_compared;
   const Ref lo = ref(c.enclosure->lo), hi = ref(c.enclosure->hi);
   const Ref eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));
   auto re_g = [&](const Ref& th) {
@@ -966,6 +996,7 @@ int main(int argc, char** argv) {
   long cases = 1000, only = -1, first = 0;
   double max_undecided = 0.005;  // per criterion: more undecided cases than this fraction fail the run
   bool inject_undecided = false;  // test hook: every case throws NumericalError (the flood test)
+  bool inject_nothing = false;    // test hook: every case passes without comparing (a switched-off path)
   unsigned long seed = 1;
   std::string criterion = "all";
   for (int i = 1; i < argc; ++i) {
@@ -985,6 +1016,7 @@ int main(int argc, char** argv) {
       else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
       else if (a == "--max-undecided") max_undecided = std::stod(value());
       else if (a == "--inject-undecided") inject_undecided = true;
+      else if (a == "--inject-nothing-compared") inject_nothing = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
       std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise] [--case K] [--max-undecided F])\n";
@@ -1007,6 +1039,31 @@ int main(int argc, char** argv) {
     chosen.insert(name);
     a = b + 1;
   }
+  // The least share of the cases run that must be compared, per criterion and kind (see the top of
+  // this file): the counters are the criteria's tallies.
+  struct MinimumCompared {
+    std::string criterion, kind;
+    double min_share;
+    const long* count;
+  };
+  const std::vector<MinimumCompared> minimum_compared = {
+      {"r", "closed form and truncated series compared", 0.9, &r_tally.compared},
+      {"r", "series error bounds compared (N > |wT|/(2 pi))", 0.3, &r_tally.bounds},
+      {"bound", "finite b* compared on the grid", 0.9, &bound_tally.grid},
+      {"bound", "certified maximisers compared", 0.3, &bound_tally.maximiser},
+      {"bound", "fractional delays compared", 0.01, &bound_tally.fractional},
+      {"bound", "stationary points of multiplicity >= 2 compared", 0.03, &bound_tally.degenerate},
+      {"wedge", "wedge and Tsypkin margins compared (two per case)", 1.8, &wedge_tally.margins},
+      {"wedge", "finite k* compared", 0.3, &wedge_tally.gains},
+      {"level", "certified levels compared with the 100-digit scan", 0.9, &level_scan_compared},
+      {"level", "LMI levels compared", 0.15, &level_lmi_compared},
+      {"mimo_level", "certified (inexact) levels compared with the scan", 0.3, &mimo_level_tally.certified},
+      {"mimo_level", "exact LMI lower bounds compared", 0.3, &mimo_level_tally.lmi_proven},
+      {"multidof", "designed couplings simulated", 0.3, &multidof_tally.designed},
+      // a regression that switched the block-wise path off compares none: the run fails
+      {"multidof_blockwise", "block-wise designs compared with the generic Theorem 4 program", 0.2,
+       &blockwise_tally.blockwise},
+      {"consistency", "scenes with two or more verdicts compared", 0.2, &consistency_tally.compared}};
   int failed = 0;
   std::printf("%-9s %8s %7s %8s %10s %10s %10s  %s\n", "criterion", "cases", "misses", "refused", "undecided", "seconds",
               "reference", "slowest case");
@@ -1025,6 +1082,7 @@ int main(int argc, char** argv) {
       const auto case_start = std::chrono::steady_clock::now();
       try {
         if (inject_undecided) throw NumericalError("injected (--inject-undecided)");
+        if (inject_nothing) continue;  // the case "holds" having compared nothing
         if (!check(g, why)) {
           ++t.misses;
           std::cerr << "MISS case " << k << rerun << why.str();
@@ -1085,6 +1143,14 @@ int main(int argc, char** argv) {
     if (t.failed > 0) {
       std::printf("          failed: %ld certified computations returned failed\n", t.failed);
       failed = 1;
+    }
+    for (const MinimumCompared& m : minimum_compared) {
+      if (m.criterion != name) continue;
+      const long least = static_cast<long>(std::ceil(m.min_share * static_cast<double>(t.cases)));
+      const bool enough = only >= 0 || *m.count >= least;  // a replayed case checks no minimum
+      std::printf("          %s: %ld, minimum %ld%s\n", m.kind.c_str(), *m.count, only >= 0 ? 0L : least,
+                  enough ? "" : ": TOO FEW COMPARED");
+      if (!enough) failed = 1;
     }
   }
   return failed;

@@ -197,8 +197,8 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   if (!b.note.empty()) j["note"] = b.note;
   if (r.dirichlet) {
     const auto& [C, D] = *r.dirichlet;
-    j["dirichlet_C"] = {decimal_outward(C.lo, digits + 3, -1), decimal_outward(C.hi, digits + 3, +1)};
-    j["dirichlet_D"] = {decimal_outward(D.lo, digits + 3, -1), decimal_outward(D.hi, digits + 3, +1)};
+    j["dirichlet_C"] = cli::enclosure_json(C, digits + 3);  // outward (cli/command.hpp)
+    j["dirichlet_D"] = cli::enclosure_json(D, digits + 3);
   }
   if (r.damping) {
     nlohmann::json d;
@@ -265,8 +265,11 @@ void print_human(const Outcome& r, const BoundOpts& o) {
                 << (!agree ? "compare (approximation)" : *agree ? "agrees" : "DISAGREES") << "\n";
       if (r.dirichlet) {
         const auto& [C, D] = *r.dirichlet;
-        std::cout << "  C = -min sin(y)/y = " << to_decimal((C.lo + C.hi) / 2, o.digits) << ", D = (1 - C)/2 = "
-                  << to_decimal((D.lo + D.hi) / 2, o.digits) << "   [certified, " << o.digits << " digits]\n";
+        // the enclosures the JSON prints (dirichlet_C, dirichlet_D), rounded outward: a midpoint
+        // rounded to nearest is not a certified digit string
+        const auto Cj = cli::enclosure_json(C, o.digits + 3), Dj = cli::enclosure_json(D, o.digits + 3);
+        std::cout << "  C = -min sin(y)/y in [" << Cj[0].get<std::string>() << ", " << Cj[1].get<std::string>()
+                  << "], D = (1 - C)/2 in [" << Dj[0].get<std::string>() << ", " << Dj[1].get<std::string>() << "]   [certified]\n";
       }
     }
   }

@@ -3,7 +3,10 @@
 // in double from several initial states and reports a sustained oscillation (period in
 // samples, amplitude of y). With --exact the periodic orbit is solved and replayed in rational
 // arithmetic: an exactly repeated state proves the periodic solution.
-// Exit 0: no sustained oscillation; 1: an oscillation (or divergence) was found; 2: bad input.
+// Growth is decided whatever --steps is (contact/limit_cycle.hpp, detect): in contact by the exact
+// stability of the linear loop (1 + kH)^-1, out of contact by the envelope (diverged when it grows
+// beyond 1e6 rho). JSON: oscillates, growing, diverged, period, amplitude, note, exact {...}.
+// Exit 0: no sustained oscillation; 1: an oscillation (or growth, or divergence) was found; 2: bad input.
 #include <iostream>
 #include <memory>
 
@@ -43,6 +46,7 @@ int run(const Opts& o) {
     j["gain"] = to_decimal(k, 17);
     j["rho"] = to_decimal(rho, 17);
     j["oscillates"] = oscillates;
+    j["growing"] = osc.growing;
     j["diverged"] = osc.diverged;
     j["period"] = osc.period ? nlohmann::json(*osc.period) : nlohmann::json(nullptr);
     j["amplitude"] = osc.amplitude;
@@ -52,6 +56,7 @@ int run(const Opts& o) {
       j["exact"] = {{"orbit_found", ex->found},
                     {"period", ex->period},
                     {"amplitude", ex->found ? to_decimal(ex->amplitude, 20) : std::string()},
+                    {"amplitude_fraction", ex->found ? exact_json(ex->amplitude) : nlohmann::json(nullptr)},  // exactly
                     {"stable", ex->stable},
                     {"free_steps_per_period", ex->free_steps},
                     {"note", ex->note}};
@@ -61,7 +66,8 @@ int run(const Opts& o) {
   } else {
     std::cout << "H(z) = " << H.to_string() << ", k = " << to_decimal(k, 17) << ", rho = " << to_decimal(rho, 17)
               << "\n"
-              << (oscillates ? "sustained oscillation" : "no sustained oscillation") << ": " << osc.note
+              << (osc.diverged ? "diverged" : osc.growing ? "growing" : oscillates ? "sustained oscillation" : "no sustained oscillation")
+              << ": " << osc.note
               << "; amplitude of y = " << osc.amplitude << " [numeric]\n";
     if (ex) {
       if (ex->found)

@@ -17,9 +17,10 @@
 // --ss), which is then the main result; otherwise the LMI level (numeric, with an exactly
 // certified lower bound).
 // JSON output keys: level, method, status (exact|certified|numeric|upper_bound|failed), certified,
-// lower_bound / upper_bound (decimal; the level lies between them when both are given),
-// value (the certified level to --digits), theta (minimiser), kind, certified_frequency {level,
-// value, status, is_level, lower_bound, upper_bound, theta, note} (is_level false for an
+// lower_bound / upper_bound (decimal to --digits, rounded outward: the level lies between them when
+// both are given), exact ("p/q" when the level is exact, else null), value (the certified level to
+// --digits), theta (minimiser), kind, certified_frequency {level,
+// value, status, is_level, lower_bound, upper_bound, exact, theta, note} (is_level false for an
 // OSP value <= 0, an upper bound on Lemma 1's level only), lmi {level, method, status,
 // certified, lower_bound, note}, frequency {level, theta, status, note} (grid), note.
 // Exit codes: 0 a level was computed, 2 bad input (including a pole on or outside the unit
@@ -172,17 +173,24 @@ void report_json(const Opts& o, const Levels& v) {
   const bool any = v.any, only_bound = v.only_bound, cert_ok = v.cert_ok, lmi_ok = v.lmi_ok, freq_ok = v.freq_ok;
   const bool cert_is_level = v.cert_is_level;
   const std::string& note = v.note;
-  auto dec = [&](const std::optional<rational>& q) { return q ? nlohmann::json(to_decimal(*q, 17)) : nlohmann::json(nullptr); };
+  // bounds rounded outward (cli/command.hpp), the exact level as a fraction where it is exact
+  const auto down = [&](const std::optional<rational>& q) { return lower_bound_json(q, o.digits); };
+  const auto up = [&](const std::optional<rational>& q) { return upper_bound_json(q, o.digits); };
   auto lo = [](const lmi::PassivityLevel& p) { return p.enclosure ? std::optional<rational>(p.enclosure->lo) : std::nullopt; };
   auto hi = [](const lmi::PassivityLevel& p) { return p.enclosure ? std::optional<rational>(p.enclosure->hi) : std::nullopt; };
+  auto exact = [](const lmi::PassivityLevel& p) {
+    return p.status == Status::exact && p.enclosure && p.enclosure->lo == p.enclosure->hi ? std::optional<rational>(p.enclosure->lo)
+                                                                                          : std::nullopt;
+  };
   nlohmann::json j{{"kind", o.kind},
                    {"level", any ? (std::isfinite(main.level) ? nlohmann::json(main.level) : nlohmann::json(main.value))
                                  : nlohmann::json(nullptr)},
                    {"method", main.method},
                    {"status", !any ? "failed" : only_bound ? "upper_bound" : to_string(main.status)},
                    {"certified", main.proven() && !only_bound},
-                   {"lower_bound", dec(!only_bound && std::isfinite(main.level) ? main.lower_bound : std::nullopt)},
-                   {"upper_bound", dec(hi(main))},
+                   {"lower_bound", down(!only_bound && std::isfinite(main.level) ? main.lower_bound : std::nullopt)},
+                   {"upper_bound", up(hi(main))},
+                   {"exact", exact_json(any && !only_bound ? exact(main) : std::nullopt)},
                    {"value", &main == &c ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
                    {"certified_frequency",
                     {{"level", cert_ok ? (std::isfinite(c.level) ? nlohmann::json(c.level) : nlohmann::json(c.value))
@@ -190,8 +198,9 @@ void report_json(const Opts& o, const Levels& v) {
                      {"value", c.value},
                      {"status", to_string(c.status)},
                      {"is_level", cert_is_level},
-                     {"lower_bound", dec(lo(c))},
-                     {"upper_bound", dec(hi(c))},
+                     {"lower_bound", down(lo(c))},
+                     {"upper_bound", up(hi(c))},
+                     {"exact", exact_json(exact(c))},
                      {"theta", json_or_null(cert_ok, c.theta_min)},
                      {"note", c.note}}},
                    {"lmi",
@@ -199,7 +208,7 @@ void report_json(const Opts& o, const Levels& v) {
                      {"method", l.method},
                      {"status", to_string(l.status)},
                      {"certified", l.proven()},
-                     {"lower_bound", dec(l.lower_bound)},
+                     {"lower_bound", down(l.lower_bound)},
                      {"note", l.note}}},
                    {"frequency",
                     {{"level", json_or_null(freq_ok, f.level)},
@@ -236,7 +245,7 @@ void report_text(const Opts& o, const Levels& v) {
   if (lmi_ok) {
     std::cout << "  LMI: " << l.level << "   [numeric, " << l.method << "]\n";
     if (l.lower_bound)
-      std::cout << "  LMI certificate: " << o.kind << " level >= " << to_decimal(*l.lower_bound, 17)
+      std::cout << "  LMI certificate: " << o.kind << " level >= " << decimal_outward(*l.lower_bound, o.digits, -1)
                 << (*l.lower_bound > 0 ? " > 0: the system is " + o.kind
                                       : " (not positive: the system is not shown " + o.kind + ")")
                 << "   [exact LDL^T check of the rounded LMI solution]\n";
@@ -279,7 +288,7 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
-                                                      "lower_bound, upper_bound, value, theta, kind, "
+                                                      "lower_bound, upper_bound, exact, value, theta, kind, "
                                                       "certified_frequency, lmi, frequency, note)");
                       return [o]() { return run(*o); };
                     }});

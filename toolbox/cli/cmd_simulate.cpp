@@ -228,6 +228,12 @@ void write_gnuplot(const fs::path& dir, const scene::Scene& sc, int N, bool fine
 int run(const Opts& o) {
   if (o.format != "csv" && o.format != "mat" && o.format != "csv,mat" && o.format != "mat,csv")
     throw InputError("--format: expected csv, mat or csv,mat (got '" + report::text(o.format) + "')");
+  // a limit that is NaN, infinite or negative would disable or invert the check: refused
+  if (!std::isfinite(o.max_mb) || o.max_mb < 0) {
+    std::ostringstream os;
+    os << "--max-output: the output size limit must be a finite number of MB >= 0, got " << o.max_mb;
+    throw InputError(os.str());
+  }
   const bool csv = o.format.find("csv") != std::string::npos, mat = o.format.find("mat") != std::string::npos;
   auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
   scene::check_command(sc.root, o.scene, "simulate");  // what it does not model is refused (scene/schema.hpp)

@@ -108,9 +108,7 @@ stability::Loop make_loop(const StabilityOpts& o) {
   return loop;
 }
 
-nlohmann::json enclosure_json(const Enclosure<rational>& e, int digits) {
-  return {decimal_outward(e.lo, digits, -1), decimal_outward(e.hi, digits, +1)};
-}
+using cli::enclosure_json;  // every printed enclosure rounds outward (cli/command.hpp)
 
 int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
   const stability::StabilityResult r = stability::decide(loop);

@@ -45,7 +45,9 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
   j["holds"] = c.verdict.holds();
   j["margin"] = shared(c.margin, digits).text;
   j["margin_digits"] = shared(c.margin, digits).digits;
-  j["margin_enclosure"] = {to_decimal(c.margin.enclosure->lo, digits + 5), to_decimal(c.margin.enclosure->hi, digits + 5)};
+  j["margin_enclosure"] = enclosure_json(*c.margin.enclosure, digits + 5);  // outward (cli/command.hpp)
+  if (c.margin.status == Status::exact && c.margin.enclosure->lo == c.margin.enclosure->hi)
+    j["margin_exact"] = exact_json(c.margin.enclosure->lo);
   j["margin_status"] = to_string(c.margin.status);
   j["theta_at_min"] = c.theta_at_min;
   j["max_gain"] = c.gain_infinite ? std::string("inf") : shared(c.max_gain, digits).text;

@@ -73,6 +73,17 @@ void print_json(const nlohmann::json& j) {
   else std::cout << j.dump(2) << std::endl;
 }
 
+nlohmann::json lower_bound_json(const std::optional<rational>& q, int digits) {
+  return q ? nlohmann::json(decimal_outward(*q, digits, -1)) : nlohmann::json(nullptr);
+}
+nlohmann::json upper_bound_json(const std::optional<rational>& q, int digits) {
+  return q ? nlohmann::json(decimal_outward(*q, digits, +1)) : nlohmann::json(nullptr);
+}
+nlohmann::json enclosure_json(const Enclosure<rational>& e, int digits) {
+  return {decimal_outward(e.lo, digits, -1), decimal_outward(e.hi, digits, +1)};
+}
+nlohmann::json exact_json(const std::optional<rational>& q) { return q ? nlohmann::json(q->str()) : nlohmann::json(nullptr); }
+
 namespace {
 // The order and the groups of `hapstab --help`: the papers' commands in the README's order, then
 // the tools beyond them, then the reproduction. A command missing here is listed last, under "Other".

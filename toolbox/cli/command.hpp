@@ -16,10 +16,12 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::cli {
@@ -106,5 +108,16 @@ std::string input_file_in_folder(const std::filesystem::path& folder, const std:
 
 /// Prints JSON (2-space indented) to stdout (or into run_in_process's capture on its thread).
 void print_json(const nlohmann::json& j);
+
+/// The JSON of a printed bound, for every command and format (issue 40): a decimal string with
+/// `digits` significant digits rounded OUTWARD (numeric/decimal.hpp, decimal_outward) -- a lower
+/// bound toward -inf, an upper bound toward +inf -- so that what is printed still bounds the value;
+/// null when there is none. An enclosure is [lower, upper]. A value known exactly is printed
+/// exactly beside its bounds (exact_json: "55/96").
+nlohmann::json lower_bound_json(const std::optional<rational>& q, int digits);
+nlohmann::json upper_bound_json(const std::optional<rational>& q, int digits);
+nlohmann::json enclosure_json(const Enclosure<rational>& e, int digits);
+/// "p/q" of an exact value, null when there is none.
+nlohmann::json exact_json(const std::optional<rational>& q);
 
 }  // namespace hapstab::cli

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <sstream>
 
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -183,6 +184,10 @@ LureLoop make_lure_loop(const TransferFunction& H, const rational& gain, const r
   if (1 + L.sys.D(0, 0) <= 0)
     throw InputError("limit cycle: 1 + k H(inf) = " + to_decimal(1 + L.sys.D(0, 0), 17) +
                      " <= 0: the algebraic loop of Fig. 5 has no unique solution");
+  if (L.order() > 0) {
+    const Mat<rational> Ac = L.sys.A - L.sys.B * L.sys.C / (1 + L.sys.D(0, 0));
+    L.contact_stable = schur_stable(charpoly(Ac));
+  }
   return L;
 }
 
@@ -236,8 +241,9 @@ Oscillation detect(const LureLoop& L, const std::vector<double>& s0, long steps,
   SimTrace t = simulate(L, s0, steps, 2 * window);
   const double rho = dbl(L.rho);
   if (t.diverged) {
-    o.diverged = true;
-    o.note = "diverged (the linear loop is unstable)";
+    o.diverged = o.growing = true;
+    o.note = std::string("diverged: |y| passed 1e150") +
+             (L.contact_stable ? "" : " (the linear loop (1 + kH)^-1 is unstable: exact, Schur-Cohn)");
     return o;
   }
   const double* prev = t.y.data();
@@ -246,17 +252,32 @@ Oscillation detect(const LureLoop& L, const std::vector<double>& s0, long steps,
   o.amplitude = amplitude(last, window);
   o.window.assign(last, last + window);
   o.state = t.state;
+  const double ratio = o.amplitude / o.previous_amplitude;
   const bool loses_contact = *std::min_element(last, last + window) < -rho;
-  if (!loses_contact && o.amplitude > 1e-12 * rho && o.amplitude > o.previous_amplitude * (1 + 1e-9)) {
-    // still in contact but growing: the linear loop (1 + kH)^{-1} is unstable and the motion
-    // will leave the wall -- sustained, not decaying
-    o.oscillates = true;
-    o.note = "growing in contact (the linear loop is unstable), amplitude ratio over one window " +
-             std::to_string(o.amplitude / o.previous_amplitude);
+  if (!loses_contact) {  // linear over the last window: the exact test of (1 + kH)^-1 decides
+    if (!L.contact_stable) {
+      // the motion grows until it leaves the wall -- sustained, not decaying
+      o.oscillates = o.growing = true;
+      o.note = "growing in contact: the linear loop (1 + kH)^-1 is unstable (exact, Schur-Cohn); amplitude ratio "
+               "over one window " + std::to_string(ratio);
+    } else {
+      o.note = o.amplitude <= 1e-9 * rho ? "decays to the equilibrium y = 0"
+                                         : "stays in contact, where the loop (1 + kH)^-1 is stable (exact): decays";
+    }
     return o;
   }
-  if (o.amplitude <= 1e-9 * rho || !loses_contact) {
-    o.note = o.amplitude <= 1e-9 * rho ? "decays to the equilibrium y = 0" : "stays in contact (linear, decaying)";
+  if (o.amplitude >= 1e6 * rho && ratio > 1 + 1e-6) {
+    // far beyond rho the loop is the scale-free cone u = -max(y, 0) (limit_cycle.hpp): the growth
+    // does not stop
+    o.oscillates = o.growing = o.diverged = true;
+    std::ostringstream os;
+    os << "diverges: the envelope grows by " << ratio << " per window of " << window << " samples at an amplitude of "
+       << o.amplitude / rho << " rho (numeric: beyond 1e6 rho the loop is scale-free, so the growth does not stop)";
+    o.note = os.str();
+    return o;
+  }
+  if (o.amplitude <= 1e-9 * rho) {
+    o.note = "decays to the equilibrium y = 0";
     return o;
   }
   // smallest period with max |y_k - y_{k-p}| <= 1e-7 * amplitude over the last window

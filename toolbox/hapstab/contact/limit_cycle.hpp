@@ -38,6 +38,9 @@ namespace hapstab::contact {
 struct LureLoop {
   StateSpace<rational> sys;  ///< realisation of gain*H (controllable form)
   rational rho = 1;
+  /// The loop in contact is linear, (1 + k H)^-1: A - B C/(1 + D) Schur stable, decided exactly
+  /// (Schur-Cohn on its characteristic polynomial) by make_lure_loop.
+  bool contact_stable = true;
   int order() const { return static_cast<int>(sys.A.rows()); }
 };
 /// Throws InputError for rho <= 0, gain < 0, H not proper, or 1 + gain*H(inf) <= 0 (ill-posed loop).
@@ -60,7 +63,8 @@ double run_steps(const LureLoop& L, std::vector<double>& state, long steps);
 
 struct Oscillation {
   bool oscillates = false;   ///< sustained oscillation (not decaying, amplitude above threshold)
-  bool diverged = false;     ///< unbounded growth (the linear loop is unstable)
+  bool growing = false;      ///< the motion grows: in contact with an unstable linear loop, or diverged
+  bool diverged = false;     ///< unbounded growth: overflow, or the envelope grows far beyond rho
   std::optional<long> period;  ///< in samples, when periodic to ~1e-9 relative
   double amplitude = 0;      ///< (max - min)/2 of y over the last window
   double previous_amplitude = 0;  ///< same over the window before it
@@ -71,6 +75,14 @@ struct Oscillation {
 };
 
 /// Runs from s0 and classifies. window = samples per window (two windows are compared).
+/// Growth is decided, whatever `steps` is:
+///  * the last window in contact (y >= -rho throughout): the loop is linear there, and grows iff
+///    (1 + k H)^-1 is unstable -- the exact contact_stable, not the amplitude ratio;
+///  * leaving contact: by the envelope. (4) is positively homogeneous in (y, rho), so at an
+///    amplitude A the loop is the one with rho/A; at A >= 10^6 rho it is within 10^-6 of the cone
+///    u = -max(y, 0), which has no scale: a growing envelope there keeps growing -- diverged
+///    (numeric). Below that, growth may end on a limit cycle, and the period search decides.
+///  * |y| >= 1e150 (overflow guard): diverged.
 Oscillation detect(const LureLoop& L, const std::vector<double>& s0, long steps, long window = 4096);
 
 /// Tries several initial states (directions x scales relative to rho); the first oscillation

@@ -44,9 +44,10 @@ double kyp_min_eigenvalue(const KypData& d, const Eigen::MatrixXd& P);
 /// R0 is not positive definite, the doubling breaks down or does not converge, or the check fails.
 KypPoint kyp_riccati_point(const KypData& d, double delta);
 
-/// A well-interior point: delta = delta_hi 4^-k (delta_hi = lambda_min(-R)) for k = 1, 2, ...
-/// down to delta_hi * floor_rel; the first delta that works (within a factor 4 of the largest
-/// one) is halved once more when that works too. found = false when none does.
+/// A well-interior point: kyp_riccati_point at delta = delta_hi 4^-k (delta_hi = lambda_min(-R))
+/// for k = 1, 2, ... down to delta_hi * floor_rel, and the first delta that works is returned (so
+/// its shift is within a factor 4 of the largest on that ladder; riccati_solves counts the
+/// tries). found = false when none does (-R not positive definite, or no delta on the ladder).
 KypPoint kyp_interior_point(const KypData& d, double floor_rel = 1e-12);
 
 }  // namespace hapstab::lmi

@@ -36,6 +36,11 @@ inline constexpr long expansion_bits = 1L << 24;
 inline constexpr int state_space_dim = 500;
 /// Parameters of one scene ([parameters]); each is resolved once, after those it names.
 inline constexpr int scene_parameters = 1000;
+/// Periods of one simulated run (simulate.steps, or simulate.duration / T rounded up), and the
+/// range of every time a scene turns into a sample index (an impulse's time, a bias's start, a
+/// profile file's t): checked before the conversion (a bias start of 1e16 s at T = 1 ms was 10^19
+/// periods, beyond a long, and acted from t = 0).
+inline constexpr long run_steps = 4000000000000L;
 /// Computation delay of a simulated loop in sample periods (t_d / T): 10^7 is almost 3 hours at
 /// T = 1 ms. The delay line holds min(delay, run length) + 2 forces, so a delay longer than the
 /// run costs no more memory than the run.
@@ -58,6 +63,10 @@ inline constexpr int multidof_states = 1000;
 /// refused, naming the order that makes it so.
 inline constexpr double generic_sdp_bytes = 2e9;
 
+/// Decimal digits of the integer part of an argument reduced modulo 2 pi (r(jw) of paper 001 at
+/// |w T| < 10^this: `hapstab r`). The reduction computes pi to that many digits (10^5 digits:
+/// about 0.1 s); the exact parser takes exponents up to 10^6 and quotients square them.
+inline constexpr long periodic_argument_digits = 100000;
 /// Depth of a node of a TOML text (scene, sweep spec): table header components + dotted-key
 /// components + enclosing arrays and inline tables (report/toml_limits.hpp). The deepest example
 /// scene is 6 levels deep; toml++ recursed over 50,000 dotted components until the stack ended.

@@ -124,6 +124,10 @@ std::string quote(std::string_view s) {
 
 namespace csv {
 bool is_plain_number(std::string_view s) {
+  // the non-finite values the commands print ("inf", "-inf", "nan"): numbers, and no formula
+  // (a spreadsheet reads -inf as the name inf, which a CSV cannot define)
+  const std::string_view unsigned_part = !s.empty() && (s[0] == '+' || s[0] == '-') ? s.substr(1) : s;
+  if (unsigned_part == "inf" || unsigned_part == "nan") return true;
   bool digit = false;
   for (char c : s) {
     if (c >= '0' && c <= '9') digit = true;
@@ -134,7 +138,7 @@ bool is_plain_number(std::string_view s) {
 
 std::string cell(std::string_view s) {
   std::string t = text(s);
-  if (!t.empty() && (t[0] == '=' || t[0] == '+' || t[0] == '-' || t[0] == '@' || t[0] == '\t') && !is_plain_number(t))
+  if (!t.empty() && (t[0] == '=' || t[0] == '+' || t[0] == '-' || t[0] == '@' || t[0] == '\t' || t[0] == '\r') && !is_plain_number(t))
     t.insert(t.begin(), '\'');
   const bool quote = t.find_first_of(",\"\r\n") != std::string::npos || (!t.empty() && (t.front() == ' ' || t.back() == ' '));
   if (!quote) return t;

@@ -14,7 +14,9 @@
 //   CSV         RFC 4180: a cell holding , " CR LF or a leading/trailing space is quoted, "
 //               doubled. A cell a spreadsheet would take as a formula (first character
 //               = + - @ tab CR) is prefixed with ' unless it is a plain number
-//               (characters 0-9 + - . / e E only: "-1/2", "-3.5e-7" stay as they are).
+//               (characters 0-9 + - . / e E only, or [+-]inf, nan: "-1/2", "-3.5e-7", "-inf"
+//               stay as they are). The sweep's points.csv and simulate's CSV use it (OWASP's
+//               CSV-injection rule).
 //   LaTeX       \ { } $ & # ^ _ ~ % (and < > |, misprinted in OT1) become their text-mode
 //               commands, so no control sequence (\write18, \input, ^^5c...) can be formed
 //               from input.
@@ -49,7 +51,8 @@ std::string quote(std::string_view s);
 namespace csv {
 /// One RFC 4180 cell holding `text(s)`, formula-neutralised (see above).
 std::string cell(std::string_view s);
-/// True when `s` would be read as a plain number (0-9 + - . / e E, at least one digit).
+/// True when `s` would be read as a plain number (0-9 + - . / e E, at least one digit; or
+/// [+-]inf, [+-]nan).
 bool is_plain_number(std::string_view s);
 }  // namespace csv
 

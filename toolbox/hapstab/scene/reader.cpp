@@ -70,8 +70,15 @@ Q Reader::number(const toml::table& t, const std::string& k, const std::string& 
 }
 
 double Reader::real(const toml::node& n, const std::string& key) const {
-  if (auto f = n.as_floating_point()) return f->get();
-  return to_real<double>(number(n, key));
+  // TOML writes nan and inf as floats, and an exact number may be beyond the range of double:
+  // neither is a force, a time or a velocity
+  const double v = n.as_floating_point() ? n.as_floating_point()->get() : to_real<double>(number(n, key));
+  if (!std::isfinite(v)) {
+    std::ostringstream os;
+    os << "must be a finite number, got " << v;
+    fail(key, os.str());
+  }
+  return v;
 }
 
 Mat<Q> Reader::matrix(const toml::node& n, const std::string& key) const {

@@ -46,7 +46,8 @@ struct Reader {
   rational number(const toml::node& n, const std::string& key, bool allow_names = true) const;
   /// The number t[k], which must be present (key names the table).
   rational number(const toml::table& t, const std::string& k, const std::string& key) const;
-  /// A plotting/profile value: a TOML float, or an exact number rounded to double.
+  /// A plotting/profile value: a TOML float, or an exact number rounded to double; refused unless
+  /// finite (nan, inf, or an exact number beyond the range of double).
   double real(const toml::node& n, const std::string& key) const;
   /// A matrix of exact numbers: an array of rows of equal length.
   Mat<rational> matrix(const toml::node& n, const std::string& key) const;

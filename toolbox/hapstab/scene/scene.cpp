@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -14,6 +15,7 @@
 
 #include "hapstab/lti/discretize.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/report/escape.hpp"
@@ -296,23 +298,39 @@ void read_contact(const toml::table& root, const Reader& c, sim::LoopSpec& loop)
     for (int j = 0; j < c.N; ++j) loop.contact.push_back(j);
 }
 
+// A time in seconds that the simulator turns into a sample index (t / T): in [0, run_steps T]
+// (limits.hpp), checked here so that the message names the key.
+Q sample_time(const toml::table& t, const std::string& k, const std::string& key, const Reader& c) {
+  const Q v = c.number(t, k, key);
+  if (v < 0) c.fail(key + "." + k, "must be >= 0, got " + v.str());
+  if (v > c.T * limits::run_steps)
+    c.fail(key + "." + k, decimal_outward(v, 6, -1) + " s is " + decimal_outward(v / c.T, 3, -1) +
+                              " sample periods, beyond the longest run of " + std::to_string(limits::run_steps));
+  return v;
+}
+
 // ---- [delay]: time (seconds) or samples (periods)
 void read_delay(const toml::table& root, const Reader& c, sim::LoopSpec& loop) {
   auto t = section(root, "delay", c);
   if (!t) return;
-  if (t->contains("time") == t->contains("samples")) c.fail("delay", "give exactly one of time or samples");
-  loop.delay = t->contains("time") ? c.number(*t, std::string("time"), std::string("delay"))
-                                   : c.number(*t, std::string("samples"), std::string("delay")) * c.T;
-  if (loop.delay < 0) c.fail("delay", "must be >= 0");
+  if (t->contains("time") == t->contains("samples"))
+    c.fail("delay", t->empty() ? "empty: give exactly one of time or samples (or leave [delay] out: no delay)"
+                               : "give exactly one of time or samples");
+  const std::string k = t->contains("time") ? "time" : "samples";
+  const Q v = c.number(*t, k, std::string("delay"));
+  loop.delay = k == "time" ? v : v * c.T;
+  if (loop.delay < 0) c.fail("delay." + k, "must be >= 0, got " + v.str());
+  if (loop.delay > c.T * limits::delay_samples)  // before anything converts t_d / T to an integer
+    c.fail("delay." + k, decimal_outward(loop.delay / c.T, 6, -1) + " sample periods, more than the limit of " +
+                             std::to_string(limits::delay_samples));
 }
 
 // ---- [[input]]: impulses, biases and force profiles
 sim::Impulse read_impulse(const toml::table& t, const std::string& key, int dof, const Reader& c) {
   sim::Impulse im;
   im.dof = dof;
-  im.time = t.contains("time") ? c.number(t, "time", key) : Q(0);
+  im.time = t.contains("time") ? sample_time(t, "time", key, c) : Q(0);
   im.magnitude = c.number(t, "magnitude", key);
-  if (im.time < 0) c.fail(key + ".time", "must be >= 0");
   return im;
 }
 
@@ -320,11 +338,14 @@ sim::Bias read_bias(const toml::table& t, const std::string& key, int dof, const
   sim::Bias b;
   b.dof = dof;
   b.force = c.number(t, "force", key);
-  b.start = t.contains("start") ? c.number(t, "start", key) : Q(0);
+  b.start = t.contains("start") ? sample_time(t, "start", key, c) : Q(0);
   return b;
 }
 
-// A profile file: one force per line, or t,force; '#' starts a comment line.
+// A profile file: one force per line, or t,force; '#' starts a comment line. The forces are
+// sampled at the scene's T from t = 0: a line's t, when given, must be that line's instant kT
+// (to half a period) -- a file sampled at another rate is refused, not replayed at T. Every force
+// must be finite.
 std::vector<double> read_profile_file(const toml::table& t, const std::string& key, const Reader& c) {
   const auto* f = t["file"].as_string();
   if (!f) c.fail(key + ".file", "expected a file name (a string)");
@@ -334,15 +355,32 @@ std::vector<double> read_profile_file(const toml::table& t, const std::string& k
   if (!in) c.fail(key + ".file", "cannot read '" + report::text(f->get()) + "'");
   std::vector<double> samples;
   std::string line;
+  long number = 0;
   while (std::getline(in, line)) {
+    ++number;
     if (line.empty() || line[0] == '#') continue;
+    const std::string where = key + ".file", at = "line " + std::to_string(number) + ": ";
     auto comma = line.find(',');
     std::string cell = comma == std::string::npos ? line : line.substr(comma + 1);  // t,f or f
-    try {
-      samples.push_back(std::stod(cell));
-    } catch (...) {
-      c.fail(key + ".file", "'" + report::text(line.substr(0, 80)) + "' is not a number (one force per line, or t,force)");
+    if (comma != std::string::npos) {
+      const auto tk = try_parse_rational(line.substr(0, comma));
+      if (!tk) c.fail(where, at + "t = '" + report::text(line.substr(0, std::min<size_t>(comma, 80))) + "' is not a number");
+      const Q k = *tk / c.T - Q(static_cast<long>(samples.size()));  // t/T - (this line's sample)
+      if (abs(k) >= Q(1, 2))
+        c.fail(where, at + "t = " + decimal_outward(*tk, 8, -1) + " s is not this line's instant " +
+                          to_decimal(Q(static_cast<long>(samples.size())) * c.T, 8) +
+                          " s: the profile is one force per sample period T from t = 0");
     }
+    double f = 0;
+    try {
+      size_t used = 0;
+      f = std::stod(cell, &used);
+      if (cell.find_first_not_of(" \t\r", used) != std::string::npos) throw std::invalid_argument(cell);
+    } catch (...) {
+      c.fail(where, at + "'" + report::text(line.substr(0, 80)) + "' is not a number (one force per line, or t,force)");
+    }
+    if (!std::isfinite(f)) c.fail(where, at + "the force " + report::text(cell.substr(0, 40)) + " is not finite");
+    samples.push_back(f);
   }
   return samples;
 }
@@ -352,7 +390,7 @@ sim::Profile read_profile(const toml::table& t, const std::string& key, int dof,
   p.dof = dof;
   if (t.contains("values") == t.contains("file")) c.fail(key, "give exactly one of values = [...] or file = \"...\"");
   if (auto a = t["values"].as_array()) {
-    for (size_t i = 0; i < a->size(); ++i) p.samples.push_back(c.real((*a)[i], key + ".values"));
+    for (size_t i = 0; i < a->size(); ++i) p.samples.push_back(c.real((*a)[i], key + ".values[" + std::to_string(i) + "]"));
   } else {
     p.samples = read_profile_file(t, key, c);
   }
@@ -391,6 +429,7 @@ long simulate_steps(const toml::table& t, const Reader& c) {
     auto n = t["steps"].as_integer();
     if (!n) c.fail("simulate.steps", "expected an integer");
     if (n->get() <= 0) c.fail("simulate.steps", "the step count must be > 0, got " + std::to_string(n->get()));
+    if (n->get() > limits::run_steps) c.fail("simulate.steps", "more than " + std::to_string(limits::run_steps) + " steps");
     return long(n->get());
   }
   const Q d = c.number(t, std::string("duration"), std::string("simulate"));
@@ -398,7 +437,7 @@ long simulate_steps(const toml::table& t, const Reader& c) {
   const Q q = d / c.T;
   integer k = bmp::numerator(q) / bmp::denominator(q);
   if (Q(k) < q) k += 1;
-  if (k > integer(4000000000000LL)) c.fail("simulate.duration", "more than 4e12 steps");
+  if (k > integer(limits::run_steps)) c.fail("simulate.duration", "more than " + std::to_string(limits::run_steps) + " steps");
   return k.convert_to<long>();
 }
 
@@ -432,8 +471,13 @@ SimulateSection read_simulate(const toml::table& t, const Reader& c) {
   if (auto n = t.get("window")) {
     auto a = n->as_array();
     if (!a || a->size() != 2) c.fail("simulate.window", "expected [from, to] in seconds");
-    S.window_from = c.real((*a)[0], "simulate.window");
+    S.window_from = c.real((*a)[0], "simulate.window");  // finite (Reader::real)
     S.window_to = c.real((*a)[1], "simulate.window");
+    if (S.window_from > S.window_to) {
+      std::ostringstream os;
+      os << "reversed: from = " << S.window_from << " s is after to = " << S.window_to << " s (expected [from, to])";
+      c.fail("simulate.window", os.str());
+    }
   } else if (S.substeps > 1) {
     S.window_from = 0;
     S.window_to = 1e300;

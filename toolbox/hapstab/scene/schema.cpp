@@ -33,165 +33,231 @@ std::vector<Key> expectations(std::vector<std::pair<std::string, std::string>> k
 // What a block's tf/ss mean, shared by device, operator, environment and coupling.
 const char* kSs = "a state-space realisation instead of tf: { A = [[..]], B = .., C = .., D = .. }";
 
+Section scene_section() {
+  return {"scene", true, false, true, false, "Required: what the scene is and its sample period.",
+          {k("name", T::text, "", "title of plots and reports (free text, at most 256 bytes)"),
+           k("description", T::text, "", "free text, may hold newlines (at most 8192 bytes)"),
+           k("T", T::exact, "s", "sample period, > 0 (a number, not an expression)")}};
+}
+
+Section parameters_section() {
+  return {"parameters", true, false, false, true,
+          "Named exact values usable in every expression below; each may refer to T and to other parameters, "
+          "in any order (`bstar = \"K*T/2 + B\"`). Names are identifiers (letters, digits and _, not starting "
+          "with a digit, at most 64). `--set NAME=VALUE` overrides one exactly.",
+          {}};
+}
+
+Section device_section() {
+  return {"device", true, true, true, false,
+          "One table per haptic device (force -> velocity); the DOFs are numbered in device order from 0. Either "
+          "a mass-damper 1/(m s + b) or a strictly proper block tf/ss.",
+          {k("name", T::text, "", "the device's name; later sections use it as a DOF name"),
+           k("m", T::exact, "kg", "mass of the mass-damper 1/(m s + b)"),
+           k("b", T::exact, "N s/m", "damping of the mass-damper (default 0)"),
+           k("tf", T::tf, "m/(N s)", "or a strictly proper force -> velocity block: \"1/(m*s + b)\" or a matrix of strings"),
+           sub("ss", "ss", kSs),
+           k("passive", T::boolean, "", "claims the block passive (default true): checked, no pole with Re s > 0"),
+           k("quantum", T::exact, "m", "(mass-damper only) encoder resolution Delta > 0: the controller sees a quantised position"),
+           k("quantizer", T::text, "", "(with quantum) \"floor\" (default): Delta floor(x/Delta); \"round\": Delta floor(x/Delta + 1/2)"),
+           k("coulomb", T::exact, "N", "(mass-damper only) Coulomb friction f_c >= 0 with stiction (docs/friction.md)")}};
+}
+
+Section operator_section() {
+  return {"operator", true, true, false, false,
+          "Human operator impedance Z_O(s), velocity -> force; the force on the device is -Z_O v. Either m, b, k "
+          "on one DOF or a proper block tf/ss (plus optional masses).",
+          {k("name", T::text, "", "the operator's name"),
+           k("dofs", T::dofs, "", "device names or DOF numbers it acts on (default: the first |Z_O| DOFs)"),
+           k("m", T::exact, "kg", "Z_O = m s + b + k/s: mass moving with the device"),
+           k("b", T::exact, "N s/m", "damper of Z_O = m s + b + k/s"),
+           k("k", T::exact, "N/m", "spring of Z_O = m s + b + k/s"),
+           k("tf", T::tf, "N s/m", "or a proper square impedance in s, |dofs| x |dofs|"),
+           sub("ss", "ss", kSs),
+           k("mass", T::exact_list, "kg", "with tf/ss: a mass per DOF moving with the device"),
+           k("passive", T::boolean, "", "claims the block passive (default true): checked, no pole with Re s > 0")}};
+}
+
+// The keys of a discrete block: environment and coupling.
+std::vector<Key> discrete_keys() {
+  return {k("tf", T::tf, "", "a SISO string or an N x N matrix of strings, in z (or in s with domain = \"s\")"),
+          sub("ss", "ss", kSs),
+          k("domain", T::text, "", "\"z\" (default) or \"s\": a continuous model discretised exactly"),
+          k("method", T::text, "", "(domain = \"s\") \"backward_euler\" (s = (z-1)/(Tz)) or \"tustin\"; s-improper is fine")};
+}
+
+Section environment_section() {
+  return {"environment", true, false, false, false,
+          "The virtual environment E(z), displacement [m] -> force [N], N x N (paper 001's H(z)).", discrete_keys()};
+}
+
+Section coupling_section() {
+  return {"coupling", true, false, false, false,
+          "A coupling V(z), force [N] -> displacement [m], in parallel with the device (paper 000 (11)): "
+          "x_e = xi(x) + V u, u = -E x_e; det(I + D_E D_V) = 0 is an error. Needs [environment].",
+          discrete_keys()};
+}
+
+Section contact_section() {
+  return {"contact", true, false, false, false,
+          "The unilateral wall at x = 0, occupying x > 0 (paper 002's xi): the environment sees max(0, x_j(kT)).",
+          {k("dofs", T::dofs, "", "the DOFs in contact (default: every DOF)")}};
+}
+
+Section passivity_controller_section() {
+  return {"passivity_controller", true, false, false, false,
+          "Hannaford-Ryu's passivity observer/controller at the actuator (docs/friction.md): E_obs -= T u_k v_k; "
+          "while E_obs < 0 a damper alpha v_k with alpha = -E_obs/(T v_k^2). Needs [environment].",
+          {k("dofs", T::dofs, "", "the DOFs whose actuator it controls (required)")}};
+}
+
+Section delay_section() {
+  return {"delay", true, false, false, false,
+          "Computation delay: u_k is applied from kT + t_d on. Give exactly one key (an empty [delay] is refused).",
+          {k("time", T::exact, "s", "t_d >= 0 (integer and fractional parts of t_d/T both exact)"),
+           k("samples", T::exact, "T", "t_d / T >= 0, e.g. \"3/2\" (at most 1e7)")}};
+}
+
+Section input_section() {
+  return {"input", true, true, false, false,
+          "Exogenous forces on the devices (beside the operator); the keys a table takes depend on its type.",
+          {k("type", T::text, "", "\"impulse\", \"bias\" or \"profile\""),
+           k("dof", T::dof, "", "the DOF it acts on (default 0)"),
+           for_input("time", T::exact, "s", "state jump at the sample instant nearest time, in [0, 4e12 T] (default 0)", "impulse"),
+           for_input("magnitude", T::exact, "N s", "the impulse", "impulse"),
+           for_input("force", T::exact, "N", "constant force from the first sample >= start", "bias"),
+           for_input("start", T::exact, "s", "when the bias starts, in [0, 4e12 T] (default 0)", "bias"),
+           for_input("values", T::real_list, "N", "force at t = kT, held (floats allowed; finite)", "profile"),
+           for_input("file", T::text, "", "or a file in the scene's folder, one finite force (or t,force with t = kT) per line", "profile")}};
+}
+
+Section initial_section() {
+  return {"initial", true, false, false, false, "The initial state, one value per DOF (default 0).",
+          {k("x", T::exact_list, "m", "positions"), k("v", T::exact_list, "m/s", "velocities")}};
+}
+
+Section simulate_section() {
+  return {"simulate", true, false, false, false,
+          "How `hapstab simulate` runs the scene (exactly one of duration and steps).",
+          {k("duration", T::exact, "s", "run length > 0 (rounded up to whole periods)"),
+           k("steps", T::integer, "", "or the number of periods > 0"),
+           k("record_every", T::integer, "", "write every n-th sample (0: summary only; default 1)"),
+           k("substeps", T::integer, "", "exact intersample output every T/substeps (fine.csv; 1..10000)"),
+           k("window", T::real_list, "s", "[from, to], finite, from <= to: the intersample output only in this window"),
+           k("max_velocity", T::real, "m/s", "|v| above this (finite, > 0) stops the run: diverged (default 1e4)"),
+           k("watch_dof", T::dof, "", "whose sampled position the limit-cycle detector watches"),
+           k("energy", T::boolean, "", "exact port energies and the passivity observer (default true)"),
+           k("plots", T::text_list, "", "what plot.gp draws: position, velocity, force, energy, intersample")}};
+}
+
+Section multidof_section() {
+  return {"multidof", true, false, false, false,
+          "Paper 000's Theorems 5 and 6 (`hapstab multidof analyze|design`, multidof/scene_multidof.hpp).",
+          {k("osp", T::exact_list, "N s/m", "device OSP levels, one per device (default: b of a 1-DOF mass-damper)"),
+           k("perturb_C", T::matrix, "", "N x N: C_E := Pi C_E with D_E unchanged (Sec. VI's perturbed environment)"),
+           k("qv_block_diagonal", T::boolean, "", "Remark 3: Q_V block diagonal (default false)"),
+           sub("coupling", "multidof.coupling", "Theorem 6's coupling structure (R2)")}};
+}
+
+Section multidof_coupling_section() {
+  return {"multidof.coupling", false, false, false, false, "Theorem 6's coupling structure (R2), [multidof.coupling].",
+          {k("mbar", T::integer_list, "", "DOFs per coupling block (default: one block per device)"),
+           k("nbar", T::integer_list, "", "states per block (default 1 each)")}};
+}
+
+Section reproduce_section() {
+  return {"reproduce", true, false, false, false,
+          "What `hapstab reproduce` checks when it runs the scene (toolbox/cli/scenes.hpp). Every command the "
+          "scene runs needs its expectation table: [simulate] -> simulate; [multidof] -> analyze and design.",
+          {k("paper", T::text, "", "the report section: \"000\", \"001\", \"002\" (default: the toolbox's)"),
+           k("claim", T::text, "", "the claim the scene shows, one line"),
+           sub("simulate", "reproduce.simulate", "expectations on `hapstab simulate --json`"),
+           sub("analyze", "reproduce.analyze", "expectations on `hapstab multidof analyze --json`"),
+           sub("design", "reproduce.design", "expectations on `hapstab multidof design --json`")}};
+}
+
+Section ss_section() {
+  return {"ss", false, false, false, false, "A state-space block { A = .., B = .., C = .., D = .. }: all four required.",
+          {k("A", T::matrix, "", "state matrix"), k("B", T::matrix, "", "input matrix"),
+           k("C", T::matrix, "", "output matrix"), k("D", T::matrix, "", "feedthrough")}};
+}
+
+Section reproduce_simulate_section() {
+  return {"reproduce.simulate", false, false, false, false,
+          "`hapstab simulate --json` keys (summary.json). A value is true/false (the key must be a boolean), a "
+          "string compared for equality, \"> x\", \">= x\", \"< x\", \"<= x\", \"== x\" on a number, or "
+          "\"!= null\" / \"== null\" (limit_cycle).",
+          expectations({{"diverged", "|v| passed max_velocity (boolean)"},
+                        {"max_velocity", "largest |v| [m/s]"},
+                        {"energy_generated", "max over t of -sum_j int f_h v dt [J]"},
+                        {"limit_cycle", "{period, amplitude} or null"},
+                        {"trend", "\"growing\", \"decaying\", \"steady\", \"rest\", ..."},
+                        {"step_matrix_radius", "proven error of the ZOH matrices"},
+                        {"steps_run", "periods simulated"},
+                        {"min_port_energy", "least human-port energy [J]"},
+                        {"port_energy", "port energy per DOF [J]"},
+                        {"actuator_energy", "actuator energy per DOF [J]"},
+                        {"passivity_observer", "passivity observer per DOF [J]"},
+                        {"status", "\"numeric\""},
+                        {"method", "how the run was computed"},
+                        {"friction_events", "(with coulomb) stick/slip events"},
+                        {"pc_dissipated", "(with [passivity_controller]) energy it dissipated [J]"},
+                        {"pc_active_samples", "(with [passivity_controller]) samples it acted"},
+                        {"quantum", "(with quantum) the encoder resolution"},
+                        {"scene", "the scene file"},
+                        {"T", "the sample period"},
+                        {"seconds", "run time"}})};
+}
+
+Section reproduce_analyze_section() {
+  return {"reproduce.analyze", false, false, false, false, "`hapstab multidof analyze --json` keys (values as for simulate).",
+          expectations({{"feasible", "LMIs (16) feasible"},
+                        {"stability_concluded", "Theorem 5 concludes stability (all premises checked)"},
+                        {"loop_as_written", "the scene's own loop: {stable, coupling, why}"},
+                        {"certified", "the verdict is proven"},
+                        {"verdict", "feasible / infeasible / ..."},
+                        {"certificate", "the certificate's description"},
+                        {"gamma", "gamma_i of Gamma"},
+                        {"x", "the g_i of X"},
+                        {"q_v", "Q_V"},
+                        {"delta_v_required", "Gamma^-1 Q_V Gamma^-1"},
+                        {"margin", "the LMIs' margin"},
+                        {"facial_reduction", "what facial reduction did"},
+                        {"solver", "the SDP solver's report"},
+                        {"assumptions", "Assumption 1's checks"},
+                        {"least_dissipative", "the least dissipative point"},
+                        {"seconds", "run times"}})};
+}
+
+Section reproduce_design_section() {
+  return {"reproduce.design", false, false, false, false, "`hapstab multidof design --json` keys (values as for simulate).",
+          expectations({{"feasible", "a stabilising V found and verified"},
+                        {"certified", "the design's verdict is proven"},
+                        {"converged", "CCL converged"},
+                        {"iterations", "CCL iterations"},
+                        {"trace_gap", "CCL's trace gap"},
+                        {"convex_infeasible", "the convex relaxation is infeasible"},
+                        {"convex_certified", "... and that is proven"},
+                        {"A_V", "the coupling V"},
+                        {"B_V", "the coupling V"},
+                        {"C_V", "the coupling V"},
+                        {"D_V", "the coupling V"},
+                        {"gamma", "gamma_i of Gamma"},
+                        {"q_v", "Q_V"},
+                        {"verification", "the independent checks of V"},
+                        {"message", "the design's evidence"},
+                        {"assumptions", "Assumption 1's checks"}})};
+}
+
+// The whole schema, one function per section above (the order is the order docs/scene.md lists them).
 std::vector<Section> make_schema() {
-  std::vector<Section> s;
-  s.push_back({"scene", true, false, true, false, "Required: what the scene is and its sample period.",
-               {k("name", T::text, "", "title of plots and reports (free text, at most 256 bytes)"),
-                k("description", T::text, "", "free text, may hold newlines (at most 8192 bytes)"),
-                k("T", T::exact, "s", "sample period, > 0 (a number, not an expression)")}});
-  s.push_back({"parameters", true, false, false, true,
-               "Named exact values usable in every expression below; each may refer to T and to other parameters, "
-               "in any order (`bstar = \"K*T/2 + B\"`). Names are identifiers (letters, digits and _, not starting "
-               "with a digit, at most 64). `--set NAME=VALUE` overrides one exactly.",
-               {}});
-  s.push_back({"device", true, true, true, false,
-               "One table per haptic device (force -> velocity); the DOFs are numbered in device order from 0. Either "
-               "a mass-damper 1/(m s + b) or a strictly proper block tf/ss.",
-               {k("name", T::text, "", "the device's name; later sections use it as a DOF name"),
-                k("m", T::exact, "kg", "mass of the mass-damper 1/(m s + b)"),
-                k("b", T::exact, "N s/m", "damping of the mass-damper (default 0)"),
-                k("tf", T::tf, "m/(N s)", "or a strictly proper force -> velocity block: \"1/(m*s + b)\" or a matrix of strings"),
-                sub("ss", "ss", kSs),
-                k("passive", T::boolean, "", "claims the block passive (default true): checked, no pole with Re s > 0"),
-                k("quantum", T::exact, "m", "(mass-damper only) encoder resolution Delta > 0: the controller sees a quantised position"),
-                k("quantizer", T::text, "", "(with quantum) \"floor\" (default): Delta floor(x/Delta); \"round\": Delta floor(x/Delta + 1/2)"),
-                k("coulomb", T::exact, "N", "(mass-damper only) Coulomb friction f_c >= 0 with stiction (docs/friction.md)")}});
-  s.push_back({"operator", true, true, false, false,
-               "Human operator impedance Z_O(s), velocity -> force; the force on the device is -Z_O v. Either m, b, k "
-               "on one DOF or a proper block tf/ss (plus optional masses).",
-               {k("name", T::text, "", "the operator's name"),
-                k("dofs", T::dofs, "", "device names or DOF numbers it acts on (default: the first |Z_O| DOFs)"),
-                k("m", T::exact, "kg", "Z_O = m s + b + k/s: mass moving with the device"),
-                k("b", T::exact, "N s/m", "damper of Z_O = m s + b + k/s"),
-                k("k", T::exact, "N/m", "spring of Z_O = m s + b + k/s"),
-                k("tf", T::tf, "N s/m", "or a proper square impedance in s, |dofs| x |dofs|"),
-                sub("ss", "ss", kSs),
-                k("mass", T::exact_list, "kg", "with tf/ss: a mass per DOF moving with the device"),
-                k("passive", T::boolean, "", "claims the block passive (default true): checked, no pole with Re s > 0")}});
-  const std::vector<Key> discrete = {
-      k("tf", T::tf, "", "a SISO string or an N x N matrix of strings, in z (or in s with domain = \"s\")"),
-      sub("ss", "ss", kSs),
-      k("domain", T::text, "", "\"z\" (default) or \"s\": a continuous model discretised exactly"),
-      k("method", T::text, "", "(domain = \"s\") \"backward_euler\" (s = (z-1)/(Tz)) or \"tustin\"; s-improper is fine")};
-  s.push_back({"environment", true, false, false, false,
-               "The virtual environment E(z), displacement [m] -> force [N], N x N (paper 001's H(z)).", discrete});
-  s.push_back({"coupling", true, false, false, false,
-               "A coupling V(z), force [N] -> displacement [m], in parallel with the device (paper 000 (11)): "
-               "x_e = xi(x) + V u, u = -E x_e; det(I + D_E D_V) = 0 is an error. Needs [environment].",
-               discrete});
-  s.push_back({"contact", true, false, false, false,
-               "The unilateral wall at x = 0, occupying x > 0 (paper 002's xi): the environment sees max(0, x_j(kT)).",
-               {k("dofs", T::dofs, "", "the DOFs in contact (default: every DOF)")}});
-  s.push_back({"passivity_controller", true, false, false, false,
-               "Hannaford-Ryu's passivity observer/controller at the actuator (docs/friction.md): E_obs -= T u_k v_k; "
-               "while E_obs < 0 a damper alpha v_k with alpha = -E_obs/(T v_k^2). Needs [environment].",
-               {k("dofs", T::dofs, "", "the DOFs whose actuator it controls (required)")}});
-  s.push_back({"delay", true, false, false, false,
-               "Computation delay: u_k is applied from kT + t_d on. Give exactly one key.",
-               {k("time", T::exact, "s", "t_d >= 0 (integer and fractional parts of t_d/T both exact)"),
-                k("samples", T::exact, "T", "t_d / T >= 0, e.g. \"3/2\"")}});
-  s.push_back({"input", true, true, false, false,
-               "Exogenous forces on the devices (beside the operator); the keys a table takes depend on its type.",
-               {k("type", T::text, "", "\"impulse\", \"bias\" or \"profile\""),
-                k("dof", T::dof, "", "the DOF it acts on (default 0)"),
-                for_input("time", T::exact, "s", "state jump at the sample instant nearest time (default 0)", "impulse"),
-                for_input("magnitude", T::exact, "N s", "the impulse", "impulse"),
-                for_input("force", T::exact, "N", "constant force from the first sample >= start", "bias"),
-                for_input("start", T::exact, "s", "when the bias starts (default 0)", "bias"),
-                for_input("values", T::real_list, "N", "force at t = kT, held (floats allowed)", "profile"),
-                for_input("file", T::text, "", "or a file in the scene's folder, one force (or t,force) per line", "profile")}});
-  s.push_back({"initial", true, false, false, false, "The initial state, one value per DOF (default 0).",
-               {k("x", T::exact_list, "m", "positions"), k("v", T::exact_list, "m/s", "velocities")}});
-  s.push_back({"simulate", true, false, false, false,
-               "How `hapstab simulate` runs the scene (exactly one of duration and steps).",
-               {k("duration", T::exact, "s", "run length > 0 (rounded up to whole periods)"),
-                k("steps", T::integer, "", "or the number of periods > 0"),
-                k("record_every", T::integer, "", "write every n-th sample (0: summary only; default 1)"),
-                k("substeps", T::integer, "", "exact intersample output every T/substeps (fine.csv; 1..10000)"),
-                k("window", T::real_list, "s", "[from, to]: the intersample output only in this window"),
-                k("max_velocity", T::real, "m/s", "|v| above this stops the run: diverged (default 1e4)"),
-                k("watch_dof", T::dof, "", "whose sampled position the limit-cycle detector watches"),
-                k("energy", T::boolean, "", "exact port energies and the passivity observer (default true)"),
-                k("plots", T::text_list, "", "what plot.gp draws: position, velocity, force, energy, intersample")}});
-  s.push_back({"multidof", true, false, false, false,
-               "Paper 000's Theorems 5 and 6 (`hapstab multidof analyze|design`, multidof/scene_multidof.hpp).",
-               {k("osp", T::exact_list, "N s/m", "device OSP levels, one per device (default: b of a 1-DOF mass-damper)"),
-                k("perturb_C", T::matrix, "", "N x N: C_E := Pi C_E with D_E unchanged (Sec. VI's perturbed environment)"),
-                k("qv_block_diagonal", T::boolean, "", "Remark 3: Q_V block diagonal (default false)"),
-                sub("coupling", "multidof.coupling", "Theorem 6's coupling structure (R2)")}});
-  s.push_back({"multidof.coupling", false, false, false, false, "Theorem 6's coupling structure (R2), [multidof.coupling].",
-               {k("mbar", T::integer_list, "", "DOFs per coupling block (default: one block per device)"),
-                k("nbar", T::integer_list, "", "states per block (default 1 each)")}});
-  s.push_back({"reproduce", true, false, false, false,
-               "What `hapstab reproduce` checks when it runs the scene (toolbox/cli/scenes.hpp). Every command the "
-               "scene runs needs its expectation table: [simulate] -> simulate; [multidof] -> analyze and design.",
-               {k("paper", T::text, "", "the report section: \"000\", \"001\", \"002\" (default: the toolbox's)"),
-                k("claim", T::text, "", "the claim the scene shows, one line"),
-                sub("simulate", "reproduce.simulate", "expectations on `hapstab simulate --json`"),
-                sub("analyze", "reproduce.analyze", "expectations on `hapstab multidof analyze --json`"),
-                sub("design", "reproduce.design", "expectations on `hapstab multidof design --json`")}});
-  s.push_back({"ss", false, false, false, false, "A state-space block { A = .., B = .., C = .., D = .. }: all four required.",
-               {k("A", T::matrix, "", "state matrix"), k("B", T::matrix, "", "input matrix"),
-                k("C", T::matrix, "", "output matrix"), k("D", T::matrix, "", "feedthrough")}});
-  s.push_back({"reproduce.simulate", false, false, false, false,
-               "`hapstab simulate --json` keys (summary.json). A value is true/false (the key must be a boolean), a "
-               "string compared for equality, \"> x\", \">= x\", \"< x\", \"<= x\", \"== x\" on a number, or "
-               "\"!= null\" / \"== null\" (limit_cycle).",
-               expectations({{"diverged", "|v| passed max_velocity (boolean)"},
-                             {"max_velocity", "largest |v| [m/s]"},
-                             {"energy_generated", "max over t of -sum_j int f_h v dt [J]"},
-                             {"limit_cycle", "{period, amplitude} or null"},
-                             {"trend", "\"growing\", \"decaying\", \"steady\", \"rest\", ..."},
-                             {"step_matrix_radius", "proven error of the ZOH matrices"},
-                             {"steps_run", "periods simulated"},
-                             {"min_port_energy", "least human-port energy [J]"},
-                             {"port_energy", "port energy per DOF [J]"},
-                             {"actuator_energy", "actuator energy per DOF [J]"},
-                             {"passivity_observer", "passivity observer per DOF [J]"},
-                             {"status", "\"numeric\""},
-                             {"method", "how the run was computed"},
-                             {"friction_events", "(with coulomb) stick/slip events"},
-                             {"pc_dissipated", "(with [passivity_controller]) energy it dissipated [J]"},
-                             {"pc_active_samples", "(with [passivity_controller]) samples it acted"},
-                             {"quantum", "(with quantum) the encoder resolution"},
-                             {"scene", "the scene file"},
-                             {"T", "the sample period"},
-                             {"seconds", "run time"}})});
-  s.push_back({"reproduce.analyze", false, false, false, false, "`hapstab multidof analyze --json` keys (values as for simulate).",
-               expectations({{"feasible", "LMIs (16) feasible"},
-                             {"stability_concluded", "Theorem 5 concludes stability (all premises checked)"},
-                             {"loop_as_written", "the scene's own loop: {stable, coupling, why}"},
-                             {"certified", "the verdict is proven"},
-                             {"verdict", "feasible / infeasible / ..."},
-                             {"certificate", "the certificate's description"},
-                             {"gamma", "gamma_i of Gamma"},
-                             {"x", "the g_i of X"},
-                             {"q_v", "Q_V"},
-                             {"delta_v_required", "Gamma^-1 Q_V Gamma^-1"},
-                             {"margin", "the LMIs' margin"},
-                             {"facial_reduction", "what facial reduction did"},
-                             {"solver", "the SDP solver's report"},
-                             {"assumptions", "Assumption 1's checks"},
-                             {"least_dissipative", "the least dissipative point"},
-                             {"seconds", "run times"}})});
-  s.push_back({"reproduce.design", false, false, false, false, "`hapstab multidof design --json` keys (values as for simulate).",
-               expectations({{"feasible", "a stabilising V found and verified"},
-                             {"certified", "the design's verdict is proven"},
-                             {"converged", "CCL converged"},
-                             {"iterations", "CCL iterations"},
-                             {"trace_gap", "CCL's trace gap"},
-                             {"convex_infeasible", "the convex relaxation is infeasible"},
-                             {"convex_certified", "... and that is proven"},
-                             {"A_V", "the coupling V"},
-                             {"B_V", "the coupling V"},
-                             {"C_V", "the coupling V"},
-                             {"D_V", "the coupling V"},
-                             {"gamma", "gamma_i of Gamma"},
-                             {"q_v", "Q_V"},
-                             {"verification", "the independent checks of V"},
-                             {"message", "the design's evidence"},
-                             {"assumptions", "Assumption 1's checks"}})});
-  return s;
+  return {scene_section(),        parameters_section(),         device_section(),
+          operator_section(),     environment_section(),        coupling_section(),
+          contact_section(),      passivity_controller_section(), delay_section(),
+          input_section(),        initial_section(),            simulate_section(),
+          multidof_section(),     multidof_coupling_section(),  reproduce_section(),
+          ss_section(),           reproduce_simulate_section(), reproduce_analyze_section(),
+          reproduce_design_section()};
 }
 
 const Section* find_section(const std::string& path) {

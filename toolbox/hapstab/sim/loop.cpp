@@ -276,6 +276,15 @@ ComposedLoop compose(const LoopSpec& spec) {
   if (spec.delay > spec.T * limits::delay_samples)
     throw InputError("delay: " + to_decimal(spec.delay / spec.T, 6) + " sample periods (t_d / T), more than the limit of " +
                      std::to_string(limits::delay_samples));
+  // every time the simulator turns into a sample index (t / T) is checked first (limits.hpp)
+  for (const Bias& b : spec.biases)
+    if (b.start < 0 || b.start > spec.T * limits::run_steps)
+      throw InputError("bias start: " + to_decimal(b.start, 6) + " s is outside [0, " + std::to_string(limits::run_steps) +
+                       " T] (the longest run)");
+  for (const Impulse& im : spec.impulses)
+    if (im.time < 0 || im.time > spec.T * limits::run_steps)
+      throw InputError("impulse time: " + to_decimal(im.time, 6) + " s is outside [0, " + std::to_string(limits::run_steps) +
+                       " T] (the longest run)");
   const int N = spec.dofs();
   if (N == 0) throw InputError("the loop has no device (at least one device is needed)");
   check_sensors_and_friction(spec, N);

@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/escape.hpp"
 
 namespace hapstab::study {
 
@@ -341,13 +342,6 @@ std::string record_line(uint64_t index, const nlohmann::json& record) {
   return std::to_string(index) + " " + record.dump();
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
 RecordStore::RecordStore(PointRange range) : range_(range), at_(range.count) {}
 
 void RecordStore::add_file(const fs::path& file) {
@@ -463,11 +457,11 @@ TableCounts write_table(const Spec& spec, const RecordStore& store, const fs::pa
     ++(rec.error.empty() ? counts.ok : counts.failed);
   }
   std::string head = "index";
-  for (const Axis& a : spec.axes) head += "," + csv_field(a.name);
+  for (const Axis& a : spec.axes) head += "," + report::csv::cell(a.name);
   for (const auto& c : columns) {  // a key named like an axis or a fixed column gets a json_ prefix
     const bool taken = c == "index" || c == "exit" || c == "error" ||
                        std::any_of(spec.axes.begin(), spec.axes.end(), [&](const Axis& a) { return a.name == c; });
-    head += "," + csv_field(taken ? "json_" + c : c);
+    head += "," + report::csv::cell(taken ? "json_" + c : c);
   }
   csv.write(head + ",exit,error\n");
   std::rewind(scratch.get());
@@ -479,10 +473,10 @@ TableCounts write_table(const Spec& spec, const RecordStore& store, const fs::pa
       cells.at(id) = get_text(scratch.get());
     }
     std::string row = std::to_string(r.index(k));
-    for (const auto& v : point_values(spec, r.index(k))) row += "," + csv_field(v);
-    for (const auto& c : cells) row += "," + csv_field(c);
+    for (const auto& v : point_values(spec, r.index(k))) row += "," + report::csv::cell(v);
+    for (const auto& c : cells) row += "," + report::csv::cell(c);
     const std::string exit = get_text(scratch.get());
-    row += "," + exit + "," + csv_field(get_text(scratch.get())) + "\n";
+    row += "," + report::csv::cell(exit) + "," + report::csv::cell(get_text(scratch.get())) + "\n";
     csv.write(row);
   }
   results.commit();

@@ -9,7 +9,9 @@
 // so that two runs of one spec give the same bytes. The columns are the union of every row's keys
 // in order of first appearance over the points in index order: they depend on the points only,
 // not on how they were split into jobs or shards. A key named like an axis, index, exit or error
-// is written json_KEY.
+// is written json_KEY. Every cell of points.csv goes through report::csv::cell (the one CSV
+// writer, report/escape.hpp): RFC 4180 quoting, and a text cell a spreadsheet would evaluate as a
+// formula (a received shard's record is untrusted) is neutralised with a leading '.
 #pragma once
 
 #include <cstdint>
@@ -89,8 +91,5 @@ TableCounts write_table(const Spec& spec, const RecordStore& store, const std::f
 
 /// Writes `text` to `path` through a temporary file renamed into place (fsync'ed first).
 void write_atomically(const std::filesystem::path& path, const std::string& text);
-
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string csv_field(const std::string& s);
 
 }  // namespace hapstab::study
