@@ -13,6 +13,7 @@
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::multidof {
 
@@ -774,6 +775,22 @@ std::optional<detail::KypMinPoint> detail::kyp_min_point(const Problem& pb, cons
   return least_dissipative_point(pb, sp, *px, true);
 }
 
+void check_generic_size(const Problem& pb, long extra_unknowns, const std::string& what) {
+  const long n = static_cast<long>(pb.E.states());
+  const double v = static_cast<double>(n) * (n + 1) / 2 + static_cast<double>(extra_unknowns);
+  const double bytes = 8 * v * v;
+  if (bytes > limits::generic_sdp_bytes) {
+    std::ostringstream o;
+    o.precision(3);
+    o << what << " for an environment realisation of order " << n
+      << " (with any [delay] folded in) has about " << v << " scalar unknowns: its Schur complement would need "
+      << bytes / 1e9 << " GB, more than the limit of " << limits::generic_sdp_bytes / 1e9
+      << " GB. The structured path (X pinned to one direction by the facial conditions, from " << kKypMinDof
+      << " DOF) avoids it; a shorter [delay] or a smaller environment fits";
+    throw InputError(o.str());
+  }
+}
+
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode mode, AnalysisPath path) {
   pb.validate(false);
   AnalysisResult res;
@@ -792,10 +809,18 @@ AnalysisResult analyze(const Problem& pb, const lmi::Options& opt, AnalysisMode 
   if (use_kyp(pb, opt, path)) {
     const std::optional<Pinned> px = pinned_x(pb, sp, res.facial);
     if (px && kyp_verdict(pb, sp, *px, res)) {
-      if (mode == AnalysisMode::full && !kyp_least_dissipative(pb, sp, *px, res)) least_dissipative(pb, sp, opt, res);
+      if (mode == AnalysisMode::full && !kyp_least_dissipative(pb, sp, *px, res)) {
+        try {
+          check_generic_size(pb, 2L * pb.structure.m() * (pb.structure.m() + 1), "the least dissipative coupling's SDP");
+          least_dissipative(pb, sp, opt, res);
+        } catch (const InputError& e) {  // the verdict stands; only the optional minimisation is skipped
+          res.solver_detail += std::string("; least dissipative coupling not searched: ") + e.what();
+        }
+      }
       return res;
     }
   }
+  check_generic_size(pb, pb.structure.m() * (pb.structure.m() + 1), "Theorem 5's generic SDP (16)");
   if (mode == AnalysisMode::stability_only && !pb.qv_block_diagonal) {
     analyze_stability_only(pb, sp, opt, res);
     return res;
@@ -819,6 +844,8 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
     cc.verdict = {Outcome::fails, Status::exact, "exact: " + fc.explanation};
     return cc;
   }
+  check_generic_size(pb, m * (m + 1) + static_cast<long>(V.states() + m) * (V.states() + m + 1) / 2,
+                     "Theorem 4's program for the coupling");
   const EhatSplit sp = ehat_split(pb.E);
   Program prog;
   EnvVars ev = add_environment(prog, pb, sp, fc);

@@ -117,6 +117,11 @@ enum class AnalysisMode { full, stability_only };
 enum class AnalysisPath { automatic, generic_sdp, kyp_riccati };
 inline constexpr int kKypMinDof = 8;
 
+/// InputError when a generic SDP on pb would need a Schur complement above
+/// limits::generic_sdp_bytes (`extra_unknowns` beside E's storage P11), naming the order and the
+/// limit: checked before the program is posed.
+void check_generic_size(const Problem& pb, long extra_unknowns, const std::string& what);
+
 AnalysisResult analyze(const Problem& pb, const lmi::Options& opt = {}, AnalysisMode mode = AnalysisMode::full,
                        AnalysisPath path = AnalysisPath::automatic);
 

@@ -532,6 +532,8 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
     bw->facial = fc;
     return *bw;
   }
+  check_generic_size(pb, m * (m + 1) + static_cast<long>(nQ) * (nQ + 1) + 2L * m * m + static_cast<long>(pb.coupling.n()) * (pb.coupling.n() + 2 * m),
+                     "Theorem 6's generic design program (19)-(20)");
   const CclRun run = run_ccl([&](Program& prog) { return build(prog, pb, sp, fc); }, nQ, true, m, opt);
   res.iterations = run.iterations;
   res.converged = run.converged;

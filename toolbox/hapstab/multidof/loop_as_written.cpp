@@ -25,7 +25,12 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
   std::string note;
   if (sp.hidden.stable() && sim::nonlinear_parts(L).empty() && L.coupling && sp.delay == 0) {
     if (assumptions_hold) {
-      const CouplingCheck cc = check_theorem4(sp.problem, *L.coupling, opt);
+      CouplingCheck cc;
+      try {
+        cc = check_theorem4(sp.problem, *L.coupling, opt);
+      } catch (const InputError& e) {  // a program too large to pose: the decider below decides
+        cc.verdict = {Outcome::undecided, Status::failed, e.what()};
+      }
       if (cc.verdict.holds() && cc.verdict.proven()) {
         LoopAsWritten out;
         out.coupling = coupling;
