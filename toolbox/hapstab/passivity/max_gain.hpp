@@ -22,7 +22,8 @@
 //   when b - eta >= 5B, else KT = 2 sqrt(B(2(b - eta) - B)) - 2B; Tustin walls (Example 3, 4);
 //   n >= 2: the conservative (2n+1)KT/2 + B gives a lower bound of K_max.
 //
-// Implements: paper 001 (45), (46), (53), (54), Examples 3-4, solved for a parameter.
+// (Sec. VI-VII and Examples 3-4 solved for a parameter.)
+// Implements: paper 001 (45), (46), (53), (54), Sec. VI, Sec. VII.
 #pragma once
 
 #include <optional>
