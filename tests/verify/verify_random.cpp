@@ -391,7 +391,9 @@ bool check_max_gain(std::mt19937_64& g, std::ostream& why) {
   const passivity::BoundProblem lo = passivity::at_gain(q, m.enclosure->lo), hi = passivity::at_gain(q, m.enclosure->hi);
   Ref at_lo = reference_sup(lo), at_hi = reference_sup(hi);
   if (m.omega) {  // the crossing's frequency: a narrow resonance the grid may step over
-    const Ref w = std::max(Ref("1e-30") / ref(p.T), (ref(m.omega->lo) + ref(m.omega->hi)) / 2);
+    // inside (0, pi/T) by 1e-30 relative, as reference_sup's ends: a Tustin pole at z = -1 has a limit there, no value
+    const Ref w = std::min(std::max(Ref("1e-30") / ref(p.T), (ref(m.omega->lo) + ref(m.omega->hi)) / 2),
+                           ref_pi() / ref(p.T) * (1 - Ref("1e-30")));
     at_lo = std::max(at_lo, objective(lo, w));
     at_hi = std::max(at_hi, objective(hi, w));
   }
