@@ -15,7 +15,7 @@ if (!exists("wide")) wide = 0
 if (!exists("tall")) tall = 0
 pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0); hf = (tall ? 1.6 : 1.0)
 # canvas: png 1600 x 1000 px, svg 1200 x 750, pdf pdf_w x 0.625 pdf_w in, tex tex_w x 0.62 tex_w in
-png_w = 1600; png_h = 1000*hf; svg_w = 1200; svg_h = 750*hf; pdf_h = pdf_w*0.625*hf; tex_h = tex_w*0.62*hf
+png_w = 1600.0; png_h = 1000.0*hf; svg_w = 1200.0; svg_h = 750.0*hf; pdf_h = pdf_w*0.625*hf; tex_h = tex_w*0.62*hf
 # size_w_cm, size_h_cm (set by the caller, e.g. sweep plot --size): the paper size of pdf and tex,
 # and the same layout at the same font sizes for png (1600 px per 6 in) and svg (1200 px per 6 in)
 if (exists("size_w_cm")) { pdf_w = size_w_cm/2.54; pdf_h = size_h_cm/2.54; tex_w = pdf_w; tex_h = pdf_h; \
