@@ -254,11 +254,18 @@ RF double_root_H(std::mt19937_64& g, const rational& T, std::ostream& why) {
   return RF(P({rational(1), rational(-1)}) * P(num), P(zd));
 }
 
+// The last frequency the reference evaluates: pi/T, or just inside it (1e-30 relative) when H has
+// a pole at z = -1 (a Tustin wall's: the objective has a finite limit there but no value). Not
+// always inside: with a fractional delay the objective can have a steep slope at pi/T.
+Ref reference_end(const passivity::BoundProblem& p) {
+  const bool pole = p.H.den()(rational(-1)) == 0;
+  return ref_pi() / ref(p.T) * (pole ? 1 - Ref("1e-30") : Ref(1));
+}
+
 // The reference sup of the objective over w in [0, pi/T]: a 4096-point double grid, refined in 100
-// digits by golden section around its best three points, and both ends as limits (w T = 1e-30 and
-// pi - 1e-30: a pole of H at z = -1, a Tustin wall's, leaves a finite limit there but no value).
+// digits by golden section around its best three points, and both ends (w T = 1e-30 for w -> 0).
 Ref reference_sup(const passivity::BoundProblem& p) {
-  const Ref w_end = ref_pi() / ref(p.T) * (1 - Ref("1e-30")), w0 = Ref("1e-30") / ref(p.T);
+  const Ref w_end = reference_end(p), w0 = Ref("1e-30") / ref(p.T);
   const int n = 4096;
   std::vector<std::pair<double, int>> best;
   for (int i = 1; i < n; ++i) {
@@ -310,7 +317,6 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   Stopwatch reference_time;
   const Ref lo = ref(b.enclosure->lo), hi = ref(b.enclosure->hi);
   const Ref eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));  // 30 digits asked, 3 for the maximiser's width
-  const Ref w_end = ref_pi() / ref(p.T);
   // w -> 0: the objective is even and analytic in w, so f(w0) = f(0) + O((w0 T)^2) = f(0) + 1e-60;
   // 1 - cos(w0 T) = 5e-61 keeps 40 of the 100 digits (w0 T = 1e-40 would keep 20: too few).
   const Ref w0 = Ref("1e-30") / ref(p.T);
@@ -391,9 +397,9 @@ bool check_max_gain(std::mt19937_64& g, std::ostream& why) {
   const passivity::BoundProblem lo = passivity::at_gain(q, m.enclosure->lo), hi = passivity::at_gain(q, m.enclosure->hi);
   Ref at_lo = reference_sup(lo), at_hi = reference_sup(hi);
   if (m.omega) {  // the crossing's frequency: a narrow resonance the grid may step over
-    // inside (0, pi/T) by 1e-30 relative, as reference_sup's ends: a Tustin pole at z = -1 has a limit there, no value
+    // inside (0, pi/T] as reference_sup's ends (a Tustin pole at z = -1 has a limit at pi/T, no value)
     const Ref w = std::min(std::max(Ref("1e-30") / ref(p.T), (ref(m.omega->lo) + ref(m.omega->hi)) / 2),
-                           ref_pi() / ref(p.T) * (1 - Ref("1e-30")));
+                           std::min(reference_end(lo), reference_end(hi)));
     at_lo = std::max(at_lo, objective(lo, w));
     at_hi = std::max(at_hi, objective(hi, w));
   }
