@@ -375,6 +375,27 @@ TEST(Sweep, PlotForAPaperLabelsUnitsLevelsSizeFormatsAndLines) {
   fs::remove_all(d);
 }
 
+// bound --max K as a sweep column: the largest passive K over B, each row the closed form
+// 2(b - B)/T of (46) exactly (b = 3/2, T = 1 ms), and a line plot of it.
+TEST(Sweep, MaxGainIsAColumn) {
+  const fs::path d = unique_dir("maxgain");
+  write(d / "k.toml", "command = \"bound\"\n[args]\nH = \"K + B*(z-1)/(T*z)\"\nT = \"1/1000\"\nmax = \"K\"\ndamping = \"3/2\"\n"
+                      "[axes]\nB = { values = [\"0\", \"1/2\", \"1\", \"2\"] }\n[units]\nB = \"N s/m\"\nmax = \"N/m\"\n");
+  // B = 2: K_max = 0 (the row's exit 1, a result: the sweep exits 0)
+  ASSERT_EQ(run_cli("sweep " + (d / "k.toml").string() + " --out " + (d / "o").string() + " --quiet").code, 0);
+  const auto rows = csv_rows(d / "o" / "points.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  const size_t cmax = column(rows[0], "max"), cexact = column(rows[0], "exact"), cexit = column(rows[0], "exit");
+  EXPECT_EQ(rows[1][cexact], "3000");
+  EXPECT_EQ(rows[2][cexact], "2000");
+  EXPECT_EQ(rows[3][cexact], "1000");
+  EXPECT_EQ(rows[4][cmax], "0");  // not passive at K = 0: b*(0) = B = 2 >= 3/2
+  EXPECT_EQ(rows[4][cexit], "1");
+  ASSERT_EQ(run_cli("sweep plot " + (d / "o").string() + " --x B --z max --format svg").code, 0);
+  EXPECT_NE(read(d / "o" / "figures" / "sweep_line.svg").find("max [N/m]"), std::string::npos);
+  fs::remove_all(d);
+}
+
 // The README's recipe for machines without Slurm: GNU parallel runs the shards, then merge.
 TEST(Sweep, GnuParallelRecipe) {
   if (shell("command -v parallel") != 0) GTEST_SKIP() << "GNU parallel is not installed";
