@@ -14,10 +14,16 @@ if (!exists("outdir")) outdir = 'out/figures'
 if (!exists("wide")) wide = 0
 if (!exists("tall")) tall = 0
 pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0); hf = (tall ? 1.6 : 1.0)
-if (fmt eq 'png') { set terminal pngcairo size 1600,1000*hf enhanced font 'DejaVu Sans,22' linewidth 2; set output outdir.'/'.name.'.png' }
-if (fmt eq 'pdf') { set terminal pdfcairo size pdf_w*1in,pdf_w*0.625*hf*1in enhanced font 'DejaVu Sans,10' linewidth 1.5; set output outdir.'/'.name.'.pdf' }
-if (fmt eq 'svg') { set terminal svg size 1200,750*hf enhanced font 'DejaVu Sans,16' linewidth 2 background rgb 'white'; set output outdir.'/'.name.'.svg' }
-if (fmt eq 'tex') { set terminal cairolatex pdf size tex_w*1in,tex_w*0.62*hf*1in linewidth 1.5; set output outdir.'/'.name.'.tex' }
+# canvas: png 1600 x 1000 px, svg 1200 x 750, pdf pdf_w x 0.625 pdf_w in, tex tex_w x 0.62 tex_w in
+png_w = 1600.0; png_h = 1000.0*hf; svg_w = 1200.0; svg_h = 750.0*hf; pdf_h = pdf_w*0.625*hf; tex_h = tex_w*0.62*hf
+# size_w_cm, size_h_cm (set by the caller, e.g. sweep plot --size): the paper size of pdf and tex,
+# and the same layout at the same font sizes for png (1600 px per 6 in) and svg (1200 px per 6 in)
+if (exists("size_w_cm")) { pdf_w = size_w_cm/2.54; pdf_h = size_h_cm/2.54; tex_w = pdf_w; tex_h = pdf_h; \
+  png_w = pdf_w*1600/6.0; png_h = pdf_h*1600/6.0; svg_w = pdf_w*1200/6.0; svg_h = pdf_h*1200/6.0 }
+if (fmt eq 'png') { set terminal pngcairo size png_w,png_h enhanced font 'DejaVu Sans,22' linewidth 2; set output outdir.'/'.name.'.png' }
+if (fmt eq 'pdf') { set terminal pdfcairo size pdf_w*1in,pdf_h*1in enhanced font 'DejaVu Sans,10' linewidth 1.5; set output outdir.'/'.name.'.pdf' }
+if (fmt eq 'svg') { set terminal svg size svg_w,svg_h enhanced font 'DejaVu Sans,16' linewidth 2 background rgb 'white'; set output outdir.'/'.name.'.svg' }
+if (fmt eq 'tex') { set terminal cairolatex pdf size tex_w*1in,tex_h*1in linewidth 1.5; set output outdir.'/'.name.'.tex' }
 tex = (fmt eq 'tex')
 # font sizes relative to the terminal's own (22 pt png, 10 pt pdf/tex, 16 pt svg), for keys,
 # labels and notes: `font small`, `font note` (an absolute ',16' would be tiny in one format
@@ -27,8 +33,8 @@ small = sprintf(',%g', 0.8 * basefont)
 note = sprintf(',%g', 0.65 * basefont)
 # one font size (em) as a fraction of the canvas width / height, for margins that keep their room
 # for text in every format: `set lmargin at screen 6*emx`
-emx = basefont / (fmt eq 'png' ? 1600.0 : fmt eq 'svg' ? 1200.0 : fmt eq 'pdf' ? 72 * pdf_w : 72 * tex_w)
-emy = basefont / (hf * (fmt eq 'png' ? 1000.0 : fmt eq 'svg' ? 750.0 : fmt eq 'pdf' ? 45 * pdf_w : 44.64 * tex_w))
+emx = basefont / (fmt eq 'png' ? png_w : fmt eq 'svg' ? svg_w : fmt eq 'pdf' ? 72 * pdf_w : 72 * tex_w)
+emy = basefont / (fmt eq 'png' ? png_h : fmt eq 'svg' ? svg_h : fmt eq 'pdf' ? 72 * pdf_h : 72 * tex_h)
 set border lw 1
 set grid lc rgb '#d0d0d0' lw 0.5
 set key box opaque samplen 2 spacing 1.1

@@ -20,6 +20,12 @@ set xtics rotate by 60 right font ',14' nomirror noenhanced
 set key outside top center horizontal
 set bmargin 9
 set title 'Largest stiffness: Tsypkin vs wedge (25) vs linear limit vs simulated oscillation onset'
+# the "none" cases: the device alone, 1/(m s^2 + b s), puts H's pole at z = 1, so paper 002's
+# assumption fails (open symbols); Re H tends to a finite negative limit as w -> 0, and Tsypkin's
+# k* (about 1.25 N/m for every wall) is its inverse: a computed value, which the plot says
+set label 5 (tex ? 'no hand: $H$ has the device'."'".'s pole at $z = 1$ (assumption violated); Tsypkin'."'".'s $k^* \approx 1.25$ N/m is $-1/\lim_{\omega\to 0} \mathrm{Re}\,H$, computed' \
+              : "no hand: H has the device's pole at z = 1 (assumption violated); Tsypkin's k* = 1.25 N/m is -1/(lim Re H as w -> 0), computed") \
+    at first -0.4, first 2e-2 left font note
 ok(a, v) = (a == 1 && v > 0) ? v : 1/0
 bad(a, v) = (a == 0 && v > 0) ? v : 1/0
 pos(v) = v > 0 ? v : 1/0

@@ -1,7 +1,9 @@
 # plots/multidof_scaling.gp -- paper 000, Theorem 5 scaling (data: bench/chart-multidof DATADIR):
 # (a) time of the certified Theorem 5 verdict (stability-only mode: Q_E, Q_V eliminated exactly,
-# solve + exact re-check) against the total DOF m, (b) fraction of random
-# Fig. 5-type environments (half with per-device force-gain miscalibration) certified stable,
+# solve + exact re-check) against the total DOF m, median and min-max over the same n random
+# environments per point, (b) fraction of those n random
+# Fig. 5-type environments (half with per-device force-gain miscalibration) certified stable, with
+# its 95% Wilson score interval,
 # for one operator on all devices (case-i-like, Gamma = g I) and one operator per device
 # (case-ii-like, Gamma block-scalar per device): how much the structure reduces conservatism;
 # (c) the whole certified analysis (full mode) of the N-device contact scenes
@@ -27,40 +29,51 @@ db = datadir.'/multidof_design_before.dat'
 set multiplot layout 2,2 title 'Theorems 5 and 6 as the number of devices grows'
 if (strlen(timing) > 0) { set label 99 (tex ? timing_tex : timing) at screen 0.01, screen 0.02 left font note }
 set bmargin 5
-set title '(a) verdict time, random env.' font small
+stats fi u 9 nooutput
+nenv = int(STATS_max)  # environments per point (the bench's samples)
+set title sprintf('(a) verdict time, %d random env. per point', nenv) font small
 set xlabel (tex ? 'total DOF $m$' : 'total DOF m')
 set ylabel 'time [ms]'
 set logscale y
 set format y (tex ? '$10^{%T}$' : '10^{%T}')
-set key top left Left reverse font small spacing 1.0
-plot fi u 2:3 w lp ls 1 t 'one operator (i)', \
-     fii u 2:3 w lp ls 2 t 'one per device (ii)'
+set key top left Left reverse font note spacing 1.0 samplen 1
+set bars small
+# the median, bars from the fastest to the slowest environment (an infeasible one can be decided
+# without an SDP); case ii shifted right by 0.3 so that the bars do not hide each other
+plot fi u 2:3:4:5 w yerrorbars ls 1 pt 7 t 'one operator (i): median, min-max', \
+     fi u 2:3 w l ls 1 notitle, \
+     fii u ($2 + 0.3):3:4:5 w yerrorbars ls 2 pt 5 t 'one per device (ii)', \
+     fii u ($2 + 0.3):3 w l ls 2 notitle
 unset logscale y
 set format y '%g'
-set title '(b) random env. certified stable' font small
+set title sprintf('(b) fraction certified stable, n = %d per point', nenv) font small
 set ylabel 'fraction certified'
 set yrange [-0.05:1.05]
-set key bottom right Left reverse font small spacing 1.0
-plot fi u 2:4 w lp ls 1 t 'one operator (i)', \
-     fii u 2:4 w lp ls 2 t 'one per device (ii)'
+set key bottom right Left reverse font note spacing 1.0 samplen 1
+plot fi u 2:6:7:8 w yerrorbars ls 1 pt 7 t 'one operator (i), 95% Wilson interval', \
+     fi u 2:6 w l ls 1 notitle, \
+     fii u ($2 + 0.3):6:7:8 w yerrorbars ls 2 pt 5 t 'one per device (ii)', \
+     fii u ($2 + 0.3):6 w l ls 2 notitle
 unset yrange
 set title '(c) contact scenes, full analysis' font small
 set xlabel (tex ? 'devices $N$' : 'devices N')
 set ylabel 'time [s]'
 set logscale xy
 set format y (tex ? '$10^{%T}$' : '10^{%T}')
-# the key below the data (every series is above 2e-3 s): the generic SDP's curve rises to the top
-set yrange [1e-5:1e3]
-set key bottom right Left reverse font note spacing 1.0 samplen 1
+# every series lies between 3e-3 and 3e2 s; the key above them, in the empty top (the generic SDP's curve
+# rises on the right). "recorded": one earlier run (bench/multidof_contact_before.dat, 2026-11-25,
+# load ~10) that timed the generic SDP and the KYP path side by side; "this run": live
+set yrange [1e-3:1e5]
+set key top left Left reverse font note spacing 1.0 samplen 1
 # N^3 reference through the structured path's N = 16 point
 stats sa u ($1 == 16 ? $2+$3+$4 : NaN) nooutput
 t16 = STATS_max
 set datafile missing '-'
-plot sb u 1:($2+$3+$4) w lp ls 2 t 'generic SDP, recorded', \
-     sb u 1:($6+$7+$8) w lp ls 4 t 'KYP, same run', \
-     sa u 1:($2+$3+$4) w lp ls 1 lw 2 t 'KYP, this run', \
-     sa u 1:3 w lp ls 3 t 'its Riccati part', \
-     sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP', \
+plot sb u 1:($2+$3+$4) w lp ls 2 t 'generic SDP (recorded run at load 10)', \
+     sb u 1:($6+$7+$8) w lp ls 4 t 'KYP path, in that recorded run', \
+     sa u 1:($2+$3+$4) w lp ls 1 lw 2 t 'KYP path, this run', \
+     sa u 1:3 w lp ls 3 t 'its SDP/Riccati stage, this run', \
+     sd u 1:($2+$3+$4) w lp ls 5 t 'DSDP, this run', \
      [16:128] t16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
 set title '(d) contact scenes, Theorem 6 design' font small
 set xrange [1:200]
@@ -68,8 +81,8 @@ set yrange [1e-3:1e3]
 set key top left Left reverse font note spacing 1.0 samplen 1
 stats da u ($1 == 16 ? $2 : NaN) nooutput
 d16 = STATS_max
-plot db u 1:2 w lp ls 2 t 'generic CCL, recorded', \
-     db u 1:4 w lp ls 4 t 'block-wise, same run', \
+plot db u 1:2 w lp ls 2 t 'generic CCL (recorded run at load 3)', \
+     db u 1:4 w lp ls 4 t 'block-wise, in that recorded run', \
      da u 1:2 w lp ls 1 lw 2 t 'block-wise, this run', \
      [16:128] d16 * (x / 16.0)**3 w l ls 7 t (tex ? '$\propto N^3$' : 'N^3')
 unset multiplot

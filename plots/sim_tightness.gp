@@ -2,8 +2,9 @@
 # H(z) = K + B(z-1)/(Tz). Data: `hapstab figure sim_tightness` (runs examples/001_tightness_*.toml
 # and random passive operators). Left: velocity with the operator tuned to wT = pi, b = 0.99 b*
 # (grows) and 1.01 b* (decays). Right: the energy that entered the interface through the human
-# port, int f_h v dt; below b* it becomes negative (the interface generates energy); above b*
-# it stays >= 0 for the tuned and for random passive operators.
+# port, int f_h v dt, from t = 0- (at rest, 0): the force impulse at t = 0 is work done at that
+# port, the jump at t = 0 (0.25 mJ); below b* the energy becomes negative (the interface generates
+# energy); above b* it stays >= 0 for the tuned and for random passive operators.
 name = 'sim_tightness'
 if (!exists("plotdir")) plotdir = 'plots'
 load plotdir.'/common.gp'
@@ -28,8 +29,13 @@ emin = STATS_min
 stats datadir.'/sim_tightness_random.dat' matrix nooutput
 ncol = STATS_size_x
 set format y '%g'
-set ylabel (tex ? '$\int f_h v\,dt$ [mJ]' : 'energy in, {/Symbol \362} f_h v dt [mJ]')
+set ylabel (tex ? '$\int_{0^-}^t f_h v\,dt$ [mJ]' : 'energy in, {/Symbol \362}_{0-}^t f_h v dt [mJ]')
+# the impulse's work at the port: the jump at t = 0
+stats datadir.'/sim_tightness_above.dat' every ::1::1 using 3 nooutput
+e_impulse = STATS_max * 1000
+set label 3 sprintf(tex ? 'impulse: $+%.2f$\,mJ' : 'impulse: +%.2f mJ', e_impulse) at first 0.02, first e_impulse * 1.12 left font ',15'
 set yrange [-0.15:0.75]
+set xrange [-0.025:1]  # the jump at t = 0 off the axis line
 set title 'human-port energy'
 set key top right Left reverse width -3 font ',18' spacing 1.0
 set label 2 sprintf(tex ? 'down to $%.1f$\,J at $t = 1$\,s' : 'down to %.1f J at t = 1 s', emin) at graph 0.56, graph 0.125 left font ',15' textcolor rgb word(pal, 2)

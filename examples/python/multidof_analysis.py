@@ -8,6 +8,7 @@ perturbed environment, and the 2-DOF loop simulated (hapstab.simulate: numpy arr
 import os
 
 import matplotlib.pyplot as plt
+import numpy as np
 
 import hapstab
 from _common import output_folder, save
@@ -28,13 +29,16 @@ print(f"Theorem 6 on case ii (perturbed): feasible {d.feasible}, certified {d.ce
 s = hapstab.simulate(os.path.join(examples, "000_two_dof_loop.toml"))
 t, v = s.samples["t"], s.samples["v"]  # v: (rows, DOFs), float64
 fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+# the port energy from t = 0- (at rest, 0): the force impulse at t = 0 is work at the human port,
+# so each curve starts at 0 and jumps by the impulse's work there (the samples begin after it)
+t0 = np.concatenate(([0.0], t))
 for j in range(v.shape[1]):
     ax1.plot(t, v[:, j], label=f"DOF {j}")
-    ax2.plot(t, s.samples["E_port"][:, j], label=f"DOF {j}")
+    ax2.plot(t0, np.concatenate(([0.0], s.samples["E_port"][:, j])), label=f"DOF {j}")
 ax1.set_ylabel(f"v [{s.units['v']}]")
-ax2.set_ylabel(r"$\int f_h v\,dt$ " + f"[{s.units['E_port']}]")
+ax2.set_ylabel(r"$\int_{0^-}^t f_h v\,dt$ " + f"[{s.units['E_port']}]" + "\n(impulse at t = 0 included)")
 ax2.set_xlabel("t [s]")
-ax2.set_xlim(0, 3)  # the transient; the run goes on to 10 s, decaying
+ax2.set_xlim(-0.05, 3)  # the transient (the jump at t = 0 off the axis line); the run goes on to 10 s, decaying
 ax1.legend()
 ax1.set_title(f"Paper 000, the 2-DOF loop without coupling: diverged = {s.diverged}, trend {s.trend}")
 fig.tight_layout()

@@ -254,3 +254,67 @@ TEST(CmdBound, BatchLineWithTwoExpressionsIsAnError) {
   EXPECT_NE(r.out.find("unexpected '1/(z-0.25)'"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"bound\":\"5\""), std::string::npos) << r.out;  // the next line still runs
 }
+
+// `bound --max K --damping b` (passivity/max_gain.hpp): the closed form in JSON and text, b* at the
+// answer (--explain's check, and a separate `bound` run at the printed K), the exit codes, the --b
+// spelling, batch lines and the refusals.
+TEST(CmdBound, MaxGainAgainstTheClosedFormAndBoundAtTheAnswer) {
+  const std::string wall = "bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --set B=1/2 ";
+  // n = 0: K_max = 2(b - B)/T = 1000 exactly, and bound at K = 1000 prints b* = b = 1
+  auto j = nlohmann::json::parse(run(wall + "--damping 1 --max K --json").out);
+  EXPECT_EQ(j["max"], "1000");
+  EXPECT_EQ(j["exact"], "1000");
+  EXPECT_EQ(j["status"], "exact");
+  EXPECT_EQ(j["closed_form_equation"], "(46)");
+  EXPECT_EQ(j["closed_form_value"], "1000");
+  EXPECT_TRUE(j["closed_form_agrees"].get<bool>());
+  EXPECT_EQ(nlohmann::json::parse(run(wall + "--set K=1000 --json").out)["bound"], "1");
+  // n = 1, b = 3/2 < 5B: K T = 2 sqrt(B(2b - B)) - 2B = sqrt(5) - 1 (a newcomer's 1236.07 by hand)
+  CliRun h = run(wall + "--delay 1 --b 3/2 --max K --explain");
+  ASSERT_EQ(h.code, 0) << h.out;
+  EXPECT_NE(h.out.find("sup K = 1236.06797749978969640917366873   [certified]"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("virtual wall with delay n = 1 (53)"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("-> agrees"), std::string::npos) << h.out;
+  EXPECT_NE(h.out.find("b* = b within the enclosure"), std::string::npos) << h.out;
+  auto k = nlohmann::json::parse(run(wall + "--delay 1 --b 3/2 --max K --json --explain").out);
+  const R want = (2 * sqrt(R("1.25")) - 1) * 1000;
+  EXPECT_LE(R(k["enclosure"][0].get<std::string>()), want);
+  EXPECT_GE(R(k["enclosure"][1].get<std::string>()), want);
+  EXPECT_TRUE(k["check"]["holds"].get<bool>());
+  // bound at the printed (rounded) K: b* = 3/2 to the printed digits
+  auto at = nlohmann::json::parse(run(wall + "--delay 1 --json --set K=" + k["max"].get<std::string>()).out);
+  EXPECT_LE(abs(R(at["bound"].get<std::string>()) - R("1.5")), R("1e-28"));
+  // K_max = 0 (exit 1): not passive at K = 0; infinite: a Tustin wall in B
+  CliRun zero = run(wall + "--damping 1/2 --max K --json");
+  EXPECT_EQ(zero.code, 1) << zero.out;
+  EXPECT_EQ(nlohmann::json::parse(zero.out)["max"], "0");
+  auto inf = nlohmann::json::parse(
+      run("bound --H \"K + B*2*(z-1)/(T*(z+1))\" --T 1/1000 --set K=1000 --damping 1 --max B --json").out);
+  EXPECT_EQ(inf["max"], "inf");
+  EXPECT_EQ(inf["closed_form_value"], "inf");
+}
+
+TEST(CmdBound, MaxGainRefusesByNameAndRunsInBatches) {
+  const std::string wall = "bound --H \"K + B*(z-1)/(T*z)\" --T 1/1000 --set B=1/2 ";
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {wall + "--max K", "needs --damping"},
+      {wall + "--max K --damping 1 --method fast", "certified only"},
+      {wall + "--max K --damping 1 --quantum 1/1000", "friction condition"},
+      {wall + "--max K --damping 1 --set K=5", "do not --set it"},
+      {"bound --H \"K^2 + 1\" --T 1/1000 --max K --damping 1", "affine in K"},
+      {"bound --num \"1 0\" --den \"1 0\" --T 1/1000 --max K --damping 1", "needs H as an expression"},
+      {"bound --H \"1 + K/(z-2)\" --T 1/1000 --max K --damping 1", "the part of H in K"},
+      {wall + "--max K --damping 0", "must be > 0"}};
+  for (const auto& [args, says] : bad) {
+    CliRun r = run(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(says), std::string::npos) << args << "\n" << r.out;
+  }
+  const std::string f = ::testing::TempDir() + "/max_lines.txt";
+  std::ofstream(f) << "\"K + B*(z-1)/(T*z)\" --T 1/1000 --set B=1/2 --max K --damping 1\n"
+                   << "\"K + B*(z-1)/(T*z)\" --T 1/1000 --set B=2 --max K --damping 1\n";
+  CliRun r = run("bound --batch " + f);
+  EXPECT_EQ(r.code, 1) << r.out;  // the second line: K_max = 0
+  EXPECT_NE(r.out.find("\"max\":\"1000\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"max\":\"0\""), std::string::npos) << r.out;
+}

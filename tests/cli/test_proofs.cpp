@@ -155,3 +155,21 @@ TEST(ProofTable, CommandFailsOnAChangedMethodCell) {
             std::string::npos)
       << r.out;
 }
+
+// `hapstab proofs > file` keeps the layout README shows: each "[proof k/N]" header on stdout with
+// its claims (stderr is left out here), and a statement with "<" reads as written in report.md.
+TEST(ProofOutput, HeadersAndClaimsOnStdoutAndReadableCells) {
+  const std::string cmd = std::string(HAPSTAB_CLI) + " proofs --only 001 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string out;
+  char buf[4096];
+  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  pclose(p);
+  const size_t header = out.find("[proof 1/"), claim = out.find("  holds  001.");
+  ASSERT_NE(header, std::string::npos) << out.substr(0, 400);
+  ASSERT_NE(claim, std::string::npos);
+  EXPECT_LT(header, claim);  // the header precedes its claims, in one stream
+  ClaimResult c{"001.x", "001", "(1)", "b* < b when K <= 2(b - B)/T", Status::exact, true, "e"};
+  EXPECT_NE(hapstab::cli::claim_table_row(c).find("b* < b when K <= 2(b - B)/T"), std::string::npos);
+}

@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "cli/cli_run.hpp"
+#include "cli/sweep_cli.hpp"
 
 namespace fs = std::filesystem;
 using hapstab_test::run_cli;
@@ -291,6 +293,106 @@ TEST(Sweep, PlotDrawsTheMap) {
   r = run_cli("sweep plot " + d.string() + "/o --x K --y B --z nothing");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.out.find("--z 'nothing'"), std::string::npos);
+  fs::remove_all(d);
+}
+
+// README's wall.toml: K linear, B listed (0, 1/2, 5, 20), a constant in [set], units in [units].
+const char* const readme_wall =
+    "command = \"bound\"\n[args]\nH = \"K + B*(z-1)/(T*z) + c\"\nT = \"1/1000\"\ndelay = 1\n[set]\nc = \"0\"\n[axes]\n"
+    "K = { from = \"0\", to = \"40000\", points = 7 }\nB = { values = [\"0\", \"1/2\", \"5\", \"20\"] }\n"
+    "[units]\nK = \"N/m\"\nB = \"N s/m\"\nbound = \"N s/m\"\n";
+
+TEST(Sweep, PlotCellsOnUnevenAxesAndTheColourRangeCoverTheData) {
+  using hapstab::cli::sweep::cell_edges;
+  // B = 0, 1/2, 5, 20: each cell reaches halfway to its neighbours, the outer ones as far out
+  const auto e = cell_edges({20, 0, 5, 0.5, 5}, false);
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_EQ(e.at(0), std::make_pair(-0.25, 0.25));
+  EXPECT_EQ(e.at(0.5), std::make_pair(0.25, 2.75));
+  EXPECT_EQ(e.at(5), std::make_pair(2.75, 12.5));
+  EXPECT_EQ(e.at(20), std::make_pair(12.5, 27.5));
+  // log: geometric halfway (1, 10, 100 -> edges 10^-0.5 .. 10^2.5)
+  const auto l = cell_edges({1, 10, 100}, true);
+  EXPECT_NEAR(l.at(1).first, 1 / std::sqrt(10.0), 1e-15);
+  EXPECT_NEAR(l.at(10).first, std::sqrt(10.0), 1e-14);
+  EXPECT_NEAR(l.at(100).second, 100 * std::sqrt(10.0), 1e-12);
+  // the README map: b* from 0 (K = 0, B = 0) to 60 (K = 40000, B = 0), the colour bar exactly that;
+  // B listed: four equal rows at 0..3 labelled with the values, so 0 and 1/2 stay apart
+  const fs::path d = unique_dir("uneven");
+  write(d / "wall.toml", readme_wall);
+  ASSERT_EQ(run_cli("sweep " + (d / "wall.toml").string() + " --out " + (d / "o").string() + " --quiet").code, 0);
+  const auto spec = hapstab::cli::sweep::spec_of(d / "o");
+  ASSERT_TRUE(spec);
+  EXPECT_EQ(spec->constants.size(), 1u);
+  const auto data = hapstab::cli::sweep::read_plot_data(d / "o", "K", "B", "bound", spec, true);
+  EXPECT_EQ(data.zmin, 0);
+  EXPECT_EQ(data.zmax, 60);
+  EXPECT_EQ(data.ytics, "(\"0\" 0, \"0.5\" 1, \"5\" 2, \"20\" 3)");
+  EXPECT_TRUE(data.full_grid);
+  std::set<double> ys;
+  for (const auto& r : data.rows) ys.insert(r.y);
+  EXPECT_EQ(ys, (std::set<double>{0, 1, 2, 3}));
+  // without --y: one line per B
+  const auto lines = hapstab::cli::sweep::read_plot_data(d / "o", "K", "", "bound", spec);
+  EXPECT_EQ(lines.groups, (std::vector<std::string>{"B = 0", "B = 1/2", "B = 5", "B = 20"}));
+  fs::remove_all(d);
+}
+
+TEST(Sweep, PlotForAPaperLabelsUnitsLevelsSizeFormatsAndLines) {
+  const fs::path d = unique_dir("paper");
+  write(d / "wall.toml", readme_wall);
+  const std::string o = (d / "o").string();
+  ASSERT_EQ(run_cli("sweep " + (d / "wall.toml").string() + " --out " + o + " --quiet").code, 0);
+  // default labels: the column and its unit from [units]; --levels over the map; every format
+  auto r = run_cli("sweep plot " + o + " --x K --y B --z bound --levels 10,20,40 --size 8.5,6 --format png,pdf,svg,tex");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* f : {"sweep_map.png", "sweep_map.pdf", "sweep_map.svg", "tex/sweep_map.tex", "tex/sweep_map.pdf"})
+    EXPECT_TRUE(fs::exists(d / "o" / "figures" / f)) << f;
+  const std::string svg = read(d / "o" / "figures" / "sweep_map.svg");
+  for (const char* t : {"K [N/m]", "B [N s/m]", "bound [N s/m]", "level lines", ">20<"}) EXPECT_NE(svg.find(t), std::string::npos) << t;
+  EXPECT_NE(svg.find("width=\"669\""), std::string::npos);  // 8.5 cm = 3.35 in at 1200 px per 6 in
+  EXPECT_NE(read(d / "o" / "figures" / "tex" / "sweep_map.tex").find("N/m"), std::string::npos);
+  // labels given; a title; a line plot with one line per B, under its own name
+  r = run_cli("sweep plot " + o + " --x K --z bound --xlabel \"stiffness K (N/m)\" --zlabel \"b* (N s/m)\" --title \"delayed wall\" "
+              "--format svg --name bound_lines");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string line = read(d / "o" / "figures" / "bound_lines.svg");
+  for (const char* t : {"stiffness K (N/m)", "b* (N s/m)", "delayed wall", "B = 1/2", "B = 20"}) EXPECT_NE(line.find(t), std::string::npos) << t;
+  // contour lines with chosen levels
+  ASSERT_EQ(run_cli("sweep plot " + o + " --x K --y B --z bound --contour --levels 3 --format svg").code, 0);
+  // refused by name
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"--x K --z bound --contour", "--contour needs --y"},
+      {"--x B --y K --z bound --contour", "full grid"},
+      {"--x K --y B --z bound --levels 1,x", "--levels"},
+      {"--x K --y B --z bound --size 1,1", "--size"},
+      {"--x K --y B --z bound --format gif", "--format"}};
+  for (const auto& [args, says] : bad) {
+    r = run_cli("sweep plot " + o + " " + args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+    EXPECT_NE(r.out.find(says), std::string::npos) << args << "\n" << r.out;
+  }
+  fs::remove_all(d);
+}
+
+// bound --max K as a sweep column: the largest passive K over B, each row the closed form
+// 2(b - B)/T of (46) exactly (b = 3/2, T = 1 ms), and a line plot of it.
+TEST(Sweep, MaxGainIsAColumn) {
+  const fs::path d = unique_dir("maxgain");
+  write(d / "k.toml", "command = \"bound\"\n[args]\nH = \"K + B*(z-1)/(T*z)\"\nT = \"1/1000\"\nmax = \"K\"\ndamping = \"3/2\"\n"
+                      "[axes]\nB = { values = [\"0\", \"1/2\", \"1\", \"2\"] }\n[units]\nB = \"N s/m\"\nmax = \"N/m\"\n");
+  // B = 2: K_max = 0 (the row's exit 1, a result: the sweep exits 0)
+  ASSERT_EQ(run_cli("sweep " + (d / "k.toml").string() + " --out " + (d / "o").string() + " --quiet").code, 0);
+  const auto rows = csv_rows(d / "o" / "points.csv");
+  ASSERT_EQ(rows.size(), 5u);
+  const size_t cmax = column(rows[0], "max"), cexact = column(rows[0], "exact"), cexit = column(rows[0], "exit");
+  EXPECT_EQ(rows[1][cexact], "3000");
+  EXPECT_EQ(rows[2][cexact], "2000");
+  EXPECT_EQ(rows[3][cexact], "1000");
+  EXPECT_EQ(rows[4][cmax], "0");  // not passive at K = 0: b*(0) = B = 2 >= 3/2
+  EXPECT_EQ(rows[4][cexit], "1");
+  ASSERT_EQ(run_cli("sweep plot " + (d / "o").string() + " --x B --z max --format svg").code, 0);
+  EXPECT_NE(read(d / "o" / "figures" / "sweep_line.svg").find("max [N/m]"), std::string::npos);
   fs::remove_all(d);
 }
 

@@ -71,6 +71,27 @@ TEST(Axes, LinearGridIsExact) {
                                             "--set", "B=3"}));
 }
 
+TEST(Axes, ConstantsAndUnits) {
+  // [set]: --set NAME=VALUE at every point, before the axes; [units] for plots; the axis kinds
+  const Spec s = parse_spec(head + "K = { from = \"1\", to = \"100\", points = 3, scale = \"log\" }\n"
+                                   "B = { values = [\"0\", \"1/2\"] }\n[set]\nc = \"1/3\"\nd = 2\n[units]\nK = \"N/m\"\nbound = \"N s/m\"\n",
+                            "s.toml");
+  ASSERT_EQ(s.constants.size(), 2u);
+  EXPECT_EQ(point_args(s, 1, {}), (std::vector<std::string>{"bound", "--H", "K", "--T", "1/1000", "--set", "c=1/3", "--set",
+                                                            "d=2", "--set", "K=1", "--set", "B=1/2"}));
+  EXPECT_EQ(unit_of(s, "K"), "N/m");
+  EXPECT_EQ(unit_of(s, "bound"), "N s/m");
+  EXPECT_EQ(unit_of(s, "B"), "");
+  EXPECT_TRUE(s.axes[0].log && !s.axes[0].listed);
+  EXPECT_TRUE(s.axes[1].listed && !s.axes[1].log);
+  const std::string k = "K = { values = [\"1\"] }\n";
+  EXPECT_NE(error_of(head + k + "[set]\nK = \"2\"\n").find("set.K: is an axis too"), std::string::npos);
+  EXPECT_NE(error_of(head + k + "[set]\nc = 0.5\n").find("set.c"), std::string::npos);  // a TOML float: not exact
+  EXPECT_NE(error_of(head + k + "[set]\nindex = \"1\"\n").find("set.index"), std::string::npos);
+  EXPECT_NE(error_of(head + k + "[units]\nK = 3\n").find("units.K"), std::string::npos);
+  EXPECT_NE(error_of(head + k + "[units]\nK = \"" + std::string(65, 'm') + "\"\n").find("units.K"), std::string::npos);
+}
+
 TEST(Axes, ExactTextOfDecimalsAndFractions) {
   EXPECT_EQ(exact_text(rational(1, 8)), "0.125");
   EXPECT_EQ(exact_text(rational(-3, 40)), "-0.075");

@@ -4,7 +4,7 @@
 // contain its reference; a correctly rounded decimal must be within half a unit in its last
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
-//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise] [--case K]
+//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain] [--case K]
 //                 [--max-undecided F]
 //
 // Apart from misses: refused (the criterion rejected a generated input) fails the run; failed (a
@@ -44,6 +44,7 @@
 //         simulation of the loop with the designed coupling (check_multidof).
 // multidof_blockwise: the block-wise Theorem 6 design at N = 8-12 against the generic Theorem 4
 //         program and the simulation (check_multidof_blockwise).
+// max_gain: the largest passive K of b*(H0 + K H1) < b against the 100-digit sup (check_max_gain).
 // consistency: one random scene, three commands' verdicts on its loop as written (multidof
 //         analyze's loop_as_written, stability's Schur test, simulate's trend): none may prove
 //         stable where another proves unstable (check_consistency).
@@ -77,6 +78,7 @@
 #include "hapstab/multidof/loop_as_written.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/sampling/r_decimal.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/simulator.hpp"
@@ -271,6 +273,35 @@ struct BoundTally {
   long maximiser = 0, grid = 0, fractional = 0, degenerate = 0;  ///< compared at the maximiser; on the grid; of them
 } bound_tally;
 
+// The last frequency the reference evaluates: pi/T, or just inside it (1e-30 relative) when H has
+// a pole at z = -1 (a Tustin wall's: the objective has a finite limit there but no value). Not
+// always inside: with a fractional delay the objective can have a steep slope at pi/T.
+Ref reference_end(const passivity::BoundProblem& p) {
+  const bool pole = p.H.den()(rational(-1)) == 0;
+  return ref_pi() / ref(p.T) * (pole ? 1 - Ref("1e-30") : Ref(1));
+}
+
+// The reference sup of the objective over w in [0, pi/T]: a 4096-point double grid, refined in 100
+// digits by golden section around its best three points, and both ends (w T = 1e-30 for w -> 0).
+Ref reference_sup(const passivity::BoundProblem& p) {
+  const Ref w_end = reference_end(p), w0 = Ref("1e-30") / ref(p.T);
+  const int n = 4096;
+  std::vector<std::pair<double, int>> best;
+  for (int i = 1; i < n; ++i) {
+    const double th = M_PI * i / n;
+    const std::complex<double> z = std::polar(1.0, th);
+    std::complex<double> W = p.H.num()(z) / p.H.den()(z) * std::pow(z, -p.delay);
+    if (p.frac_delay) W *= std::polar(1.0, -th * static_cast<double>(*p.frac_delay / p.T));
+    best.push_back({(static_cast<double>(p.T) * W / (1.0 - z)).real(), i});
+  }
+  std::partial_sort(best.begin(), best.begin() + 3, best.end(), std::greater<>());
+  Ref top = std::max(objective(p, w0), objective(p, w_end));
+  for (int k = 0; k < 3; ++k)
+    top = std::max(top, -golden_min([&](const Ref& w) { return -objective(p, w); }, w_end * (best[k].second - 1) / n,
+                                    w_end * (best[k].second + 1) / n));
+  return top;
+}
+
 bool check_bound(std::mt19937_64& g, std::ostream& why) {
   passivity::BoundProblem p;
   p.T = chance(g, 0.5) ? rational(1, 1000) : rational(uniform(g, 1, 100), uniform(g, 100, 100000));
@@ -305,7 +336,6 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
   Stopwatch reference_time;
   const Ref lo = ref(b.enclosure->lo), hi = ref(b.enclosure->hi);
   const Ref eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));  // 30 digits asked, 3 for the maximiser's width
-  const Ref w_end = ref_pi() / ref(p.T);
   // w -> 0: the objective is even and analytic in w, so f(w0) = f(0) + O((w0 T)^2) = f(0) + 1e-60;
   // 1 - cos(w0 T) = 5e-61 keeps 40 of the 100 digits (w0 T = 1e-40 would keep 20: too few).
   const Ref w0 = Ref("1e-30") / ref(p.T);
@@ -322,22 +352,83 @@ bool check_bound(std::mt19937_64& g, std::ostream& why) {
     if (f < lo - eps || f > hi + eps)
       ok = false, why << "  at the certified maximiser w = " << w << " the objective is " << f << ", outside [" << lo << ", " << hi << "]\n";
   }
-  // (2) nothing exceeds hi: a double grid, refined in 100 digits around its best three points
-  const int n = 4096;
-  std::vector<std::pair<double, int>> best;
-  for (int i = 1; i < n; ++i) {
-    const double th = M_PI * i / n;
-    const std::complex<double> z = std::polar(1.0, th);
-    std::complex<double> W = p.H.num()(z) / p.H.den()(z) * std::pow(z, -p.delay);
-    if (p.frac_delay) W *= std::polar(1.0, -th * static_cast<double>(*p.frac_delay / p.T));
-    best.push_back({(static_cast<double>(p.T) * W / (1.0 - z)).real(), i});
-  }
-  std::partial_sort(best.begin(), best.begin() + 3, best.end(), std::greater<>());
-  Ref top = std::max(objective(p, w0), objective(p, w_end));
-  for (int k = 0; k < 3; ++k)
-    top = std::max(top, -golden_min([&](const Ref& w) { return -objective(p, w); }, w_end * (best[k].second - 1) / n,
-                                    w_end * (best[k].second + 1) / n));
+  // (2) nothing exceeds hi
+  const Ref top = reference_sup(p);
   if (top > hi + eps) ok = false, why << "  the objective reaches " << top << " > hi = " << hi << "\n";
+  return ok;
+}
+
+// ---- the largest passive gain (passivity/max_gain.hpp) -------------------------------------
+// K_max of b*(H0 + K H1) < b by max_gain against the same 100-digit sup of the objective as
+// check_bound (reference_sup: direct complex evaluation, a grid and golden section, not the
+// c-form): at the lower end of K_max's enclosure the sup is <= b, at the upper end >= b (both
+// up to 1e-27 relative, 30 digits asked, 3 for the maximiser's width; 1e-15 for the bracketing
+// path of t_d = (p/100) T, whose b* has 20 digits); K_max = inf: f1 <= 0 on the reference grid.
+// H0: walls, random stable H of order 1-4; H1: a stiffness 1, a damping (z - 1)/(Tz), or a random
+// stable H of order 1-2; delays 0-3, fractional delays in 8% (a quarter of them q = 100), eta;
+// b = b*(0) + a random margin.
+struct MaxGainTally {
+  long exact = 0, certified = 0, bracketed = 0, infinite = 0;
+} max_gain_tally;
+
+bool check_max_gain(std::mt19937_64& g, std::ostream& why) {
+  passivity::GainProblem q;
+  passivity::BoundProblem& p = q.base;
+  p.T = chance(g, 0.5) ? rational(1, 1000) : rational(uniform(g, 1, 100), uniform(g, 100, 100000));
+  const bool frac = chance(g, 0.08), generic_frac = frac && chance(g, 0.25);
+  if (chance(g, 0.4)) {  // a wall K + B (z - 1)/(T z) or a Tustin wall (not with t_d: b* = inf, Example 3)
+    const rational K(uniform(g, 0, 5000)), B(uniform(g, 0, 100), 10);
+    p.H = frac || chance(g, 0.7) ? RF(P(K)) + RF(P({-B, B}), P({rational(0), p.T}))
+                         : RF(P(K)) + RF(P({-2 * B, 2 * B}), P({p.T, p.T}));
+  } else {
+    p.H = random_stable_H(g, static_cast<int>(uniform(g, 1, frac ? 2 : 4)));
+  }
+  const long kind = uniform(g, 0, 2);
+  q.H1 = kind == 0 ? RF(P(rational(1))) : kind == 1 ? RF(P({rational(-1), rational(1)}), P({rational(0), p.T}))
+                                         : random_stable_H(g, static_cast<int>(uniform(g, 1, 2)));
+  p.delay = static_cast<int>(uniform(g, 0, frac ? 1 : 3));
+  if (frac) {
+    const long qd = generic_frac ? 100 : uniform(g, 2, 6);
+    p.frac_delay = p.T * rational(uniform(g, 1, qd - 1), qd);
+  }
+  if (chance(g, 0.2)) p.eta = rational(uniform(g, 0, 1000), 1000);
+  const passivity::Bound b0 = passivity::bound_certified(p, 30);
+  if (b0.infinite) throw InputError("the generated H0 has b* = inf");
+  q.b = std::max(rational(1, 100), b0.enclosure->hi * (1 + rational(uniform(g, 1, 300), 100)) + rational(uniform(g, 1, 100), 1000));
+  why << "max_gain: H0 = (" << to_string(p.H.num(), "z") << ")/(" << to_string(p.H.den(), "z") << "), H1 = ("
+      << to_string(q.H1.num(), "z") << ")/(" << to_string(q.H1.den(), "z") << "), T = " << p.T << ", delay = " << p.delay
+      << (p.frac_delay ? ", td = " + p.frac_delay->str() : "") << ", eta = " << p.eta << ", b = " << q.b << "\n";
+  const passivity::MaxGain m = passivity::max_gain(q, 30);
+  if (m.outcome != Outcome::holds) {
+    why << "  max_gain says K_max = 0 (b*(0) < b was generated): " << m.note << "\n";
+    return false;
+  }
+  Stopwatch reference_time;
+  const Ref b = ref(q.b);
+  if (m.infinite) {  // f1 <= 0: the objective of H1 alone (eta 0) nowhere above 0
+    ++max_gain_tally.infinite;
+    passivity::BoundProblem p1 = p;
+    p1.H = q.H1;
+    p1.eta = 0;
+    const Ref top = reference_sup(p1);
+    if (top > Ref("1e-27")) return why << "  K_max = inf but the objective of H1 reaches " << top << " > 0\n", false;
+    return true;
+  }
+  const bool bracket = m.method.rfind("certified bracket", 0) == 0;
+  ++(m.status == Status::exact ? max_gain_tally.exact : bracket ? max_gain_tally.bracketed : max_gain_tally.certified);
+  const Ref eps = (bracket ? Ref("1e-15") : Ref("1e-27")) * std::max(Ref(1), b);
+  const passivity::BoundProblem lo = passivity::at_gain(q, m.enclosure->lo), hi = passivity::at_gain(q, m.enclosure->hi);
+  Ref at_lo = reference_sup(lo), at_hi = reference_sup(hi);
+  if (m.omega) {  // the crossing's frequency: a narrow resonance the grid may step over
+    // inside (0, pi/T] as reference_sup's ends (a Tustin pole at z = -1 has a limit at pi/T, no value)
+    const Ref w = std::min(std::max(Ref("1e-30") / ref(p.T), (ref(m.omega->lo) + ref(m.omega->hi)) / 2),
+                           std::min(reference_end(lo), reference_end(hi)));
+    at_lo = std::max(at_lo, objective(lo, w));
+    at_hi = std::max(at_hi, objective(hi, w));
+  }
+  bool ok = true;
+  if (at_lo > b + eps) ok = false, why << "  at the lower end " << m.enclosure->lo << " the objective reaches " << at_lo << " > b\n";
+  if (at_hi < b - eps) ok = false, why << "  at the upper end " << m.enclosure->hi << " the objective stays at " << at_hi << " < b\n";
   return ok;
 }
 
@@ -1019,21 +1110,21 @@ int main(int argc, char** argv) {
       else if (a == "--inject-nothing-compared") inject_nothing = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise] [--case K] [--max-undecided F])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain] [--case K] [--max-undecided F])\n";
       return 2;
     }
   }
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
       {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
       {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
-      {"multidof_blockwise", check_multidof_blockwise}};
+      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
     const std::string name = criterion.substr(a, b - a);
     const bool known = name == "all" || std::any_of(criteria.begin(), criteria.end(), [&](const auto& c) { return c.first == name; });
     if (!known) {
-      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise or all (comma-separated), not '" << name << "'\n";
+      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise, max_gain or all (comma-separated), not '" << name << "'\n";
       return 2;
     }
     chosen.insert(name);
@@ -1063,7 +1154,11 @@ int main(int argc, char** argv) {
       // a regression that switched the block-wise path off compares none: the run fails
       {"multidof_blockwise", "block-wise designs compared with the generic Theorem 4 program", 0.2,
        &blockwise_tally.blockwise},
-      {"consistency", "scenes with two or more verdicts compared", 0.2, &consistency_tally.compared}};
+      {"consistency", "scenes with two or more verdicts compared", 0.2, &consistency_tally.compared},
+      // seed 1: 48 exact, 49 certified, 1 bracketed of 100 (about 2 bracketed per 100 expected)
+      {"max_gain", "exact K_max compared", 0.2, &max_gain_tally.exact},
+      {"max_gain", "certified K_max compared", 0.2, &max_gain_tally.certified},
+      {"max_gain", "K_max bracketed by certified b* compared", 0.01, &max_gain_tally.bracketed}};
   int failed = 0;
   std::printf("%-9s %8s %7s %8s %10s %10s %10s  %s\n", "criterion", "cases", "misses", "refused", "undecided", "seconds",
               "reference", "slowest case");
@@ -1126,6 +1221,9 @@ int main(int argc, char** argv) {
                   "           settled in %ld, neither settled nor grew in %ld)\n",
                   blockwise_tally.structured, blockwise_tally.blockwise, blockwise_tally.generic_certified, blockwise_tally.applicable,
                   blockwise_tally.settled, blockwise_tally.steady);
+    if (name == "max_gain")
+      std::printf("          (compared: exact %ld, certified %ld, bracketed by certified b* %ld, infinite %ld)\n",
+                  max_gain_tally.exact, max_gain_tally.certified, max_gain_tally.bracketed, max_gain_tally.infinite);
     if (name == "consistency")
       std::printf("          (contact %ld; multidof decided the loop as written in %ld (stable in %ld), stability in %ld,\n"
                   "           simulate claimed a verdict in %ld; two or more verdicts compared in %ld)\n",

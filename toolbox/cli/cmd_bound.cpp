@@ -10,12 +10,14 @@
 // friction {quantum, fc_star, fc_star_exact, l1_norm, taps, tight, status, why, coulomb, holds} with
 // --quantum (passivity/friction.hpp: passive iff b > b* and f_c >= f_c* = Delta/2 sum |w_k|), and
 // passive (both verdicts) when --damping and --coulomb are given. Exit 1 when a given b or f_c fails.
+// --max NAME --damping b: the largest NAME that b keeps passive (cli/bound_max.hpp has its keys).
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "cli/batch_line.hpp"
+#include "cli/bound_max.hpp"
 #include "cli/command.hpp"
 #include "cli/tf_options.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -33,7 +35,7 @@ using namespace hapstab::passivity;
 
 struct BoundOpts {
   cli::TfOptions tf;
-  std::string frac, eta = "0", method = "certified", curve, damping, quantum, coulomb;
+  std::string frac, eta = "0", method = "certified", curve, damping, quantum, coulomb, max;
   int digits = 30;
   long grid = 100000;
   bool explain = false, json = false, allow_noncausal = false;
@@ -53,9 +55,12 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   app.add_option("--grid-points", o.grid, "N for --method grid")->capture_default_str();
   app.add_flag("--explain", o.explain, "name the closed form of Sec. VI/VII that applies and show it beside the result");
   app.add_flag("--allow-noncausal", o.allow_noncausal, "evaluate (45) for a non-causal H (FIR form (47) as written)");
-  app.add_option("--damping", o.damping,
+  app.add_option("--damping,--b", o.damping,
                  "device damping b to check: passive iff b > b* (exit 1 when not), with the necessary condition "
                  "(14) <=> (15) evaluated at the maximiser");
+  app.add_option("--max", o.max,
+                 "parameter NAME of --H (affine in it) to maximise: sup{NAME0 : b > b*(NAME) for 0 <= NAME < NAME0} "
+                 "for the device damping --damping b, certified (passivity/max_gain.hpp)");
   app.add_option("--quantum", o.quantum,
                  "encoder resolution Delta > 0 (m): report the Coulomb-friction condition f_c >= f_c* = Delta/2 sum|w_k| "
                  "beside b* (FIR walls; Abbott-Okamura 2005, docs/friction.md)");
@@ -91,20 +96,43 @@ struct Outcome {
   std::optional<std::pair<Enclosure<rational>, Enclosure<rational>>> dirichlet;  ///< C, D of (50)
 };
 
-Outcome compute(const BoundOpts& o) {
-  const TransferFunction tf = cli::parse_tf_options(o.tf, tf_rules);
-  Outcome r;
-  r.p.T = tf.T;
-  r.p.delay = o.tf.delay;
-  r.p.eta = cli::option_rational(o.eta, "--eta");
-  if (r.p.eta < 0) throw InputError("--eta must be >= 0 (got " + o.eta + ")");
+BoundProblem problem_of(const BoundOpts& o, const TransferFunction& tf) {
+  BoundProblem p;
+  p.T = tf.T;
+  p.delay = o.tf.delay;
+  p.eta = cli::option_rational(o.eta, "--eta");
+  if (p.eta < 0) throw InputError("--eta must be >= 0 (got " + o.eta + ")");
   if (!o.frac.empty()) {
     rational td = cli::option_rational(o.frac, "--frac-delay");
     if (td < 0) throw InputError("--frac-delay must be >= 0 (got " + o.frac + ")");
-    if (td > 0) r.p.frac_delay = td;
+    if (td > 0) p.frac_delay = td;
   }
-  r.p.allow_noncausal = o.allow_noncausal;
-  r.p.H = tf.H;
+  p.allow_noncausal = o.allow_noncausal;
+  p.H = tf.H;
+  return p;
+}
+
+/// `--max NAME`: H = H0 + NAME H1, the device's b from --damping.
+cli::BoundMax compute_max(const BoundOpts& o) {
+  const std::string opt = "--max " + o.max;
+  if (o.damping.empty()) throw InputError(opt + " needs --damping b (the device's damping that must exceed b*)");
+  if (o.method != "certified") throw InputError(opt + " is certified only: leave out --method " + o.method);
+  if (!o.quantum.empty() || !o.coulomb.empty())
+    throw InputError(opt + ": the friction condition (--quantum, --coulomb) is not part of the maximisation; check it with bound at the value found");
+  if (!o.curve.empty()) throw InputError(opt + ": --curve draws b* at one value of the parameters; give --set " + o.max + "=VALUE instead");
+  const AffineSplit h = cli::parse_tf_affine(o.tf, tf_rules, o.max, "--max");
+  passivity::GainProblem g;
+  g.base = problem_of(o, h.H0);
+  g.H1 = h.H1.H;
+  g.b = cli::option_rational(o.damping, "--damping");
+  g.name = o.max;
+  return cli::bound_max(std::move(g), o.digits, o.explain);
+}
+
+Outcome compute(const BoundOpts& o) {
+  const TransferFunction tf = cli::parse_tf_options(o.tf, tf_rules);
+  Outcome r;
+  r.p = problem_of(o, tf);
   Method m = Method::certified;
   if (o.method == "grid") m = Method::grid;
   else if (o.method == "fast") m = Method::fast;
@@ -320,8 +348,13 @@ int run_batch(const std::string& file) {
       }
       if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "' (one expression per line)");
       if (!o.tf.mat.empty()) o.tf.mat = cli::input_file_in_folder(folder, "mat", o.tf.mat, "--batch line " + std::to_string(lineno) + ": --mat");
-      Outcome r = compute(o);
-      j = to_json(r, o.digits);
+      if (!o.max.empty()) {
+        const cli::BoundMax m = compute_max(o);
+        j = cli::bound_max_json(m, o.digits);
+        worst = std::max(worst, cli::bound_max_exit(m));
+      } else {
+        j = to_json(compute(o), o.digits);
+      }
     } catch (const std::exception& e) {
       const int code = cli::exit_code_for(e).code;
       j = {{"error", std::string(e.what())}, {"exit", code}};
@@ -341,6 +374,12 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                            app.add_option("--batch", *batch, "FILE with one case per line; prints one JSON line per case");
                            return [o, batch]() -> int {
                              if (!batch->empty()) return run_batch(*batch);
+                             if (!o->max.empty()) {
+                               const cli::BoundMax m = compute_max(*o);
+                               if (o->json) cli::print_json(cli::bound_max_json(m, o->digits));
+                               else cli::print_bound_max(m, o->digits);
+                               return cli::bound_max_exit(m);
+                             }
                              Outcome r = compute(*o);
                              if (!o->curve.empty()) {
                                std::ofstream f(o->curve);

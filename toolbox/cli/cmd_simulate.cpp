@@ -350,7 +350,10 @@ void write_tightness(const fs::path& dir) {
     sc.simulate.substeps = 1;
     auto r = run_scene(sc);
     std::ofstream f(dir / (std::string("sim_tightness_") + side + ".dat"));
-    f << "# t  v  int f_h v dt   (" << report::comment(sc.name) << ")\n" << std::setprecision(12);
+    // the first row is t = 0- (before the impulse: at rest, no energy in), so the energy curve starts
+    // at 0 and the impulse's work at the human port shows as the jump at t = 0
+    f << "# t  v  int f_h v dt   (" << report::comment(sc.name) << "); first row: t = 0-, before the impulse\n"
+      << std::setprecision(12) << "0 0 0\n";
     for (size_t i = 0; i < r.samples.rows(); ++i) f << r.samples.t[i] << ' ' << r.samples.v[i] << ' ' << r.samples.e_port[i] << '\n';
   }
   // Random passive operators Z_O = mo s + bo + ko/s at b = 1.01 b*.
@@ -371,7 +374,9 @@ void write_tightness(const fs::path& dir) {
     cols.push_back(r.samples.e_port);
   }
   std::ofstream f(dir / "sim_tightness_random.dat");
-  f << std::setprecision(12);
+  f << "# t  int f_h v dt of each operator; first row: t = 0-, before the impulse\n" << std::setprecision(12) << 0;
+  for (size_t k = 0; k < cols.size(); ++k) f << " 0";
+  f << '\n';
   for (size_t i = 0; i < t.size(); ++i) {
     f << t[i];
     for (const auto& c : cols) f << ' ' << (i < c.size() ? c[i] : 0.0);

@@ -58,22 +58,20 @@ TransferFunction parse_option(const std::string& text, const std::string& option
 
 bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
 
-/// H = H0 + K H1 from the expression of --H: checked affine in K at three more values.
-void split_gain(stability::Loop& loop, const StabilityOpts& o, const rational& T, std::map<std::string, rational> params) {
-  const std::string& K = o.max_name;
-  auto at = [&](const rational& k) {
-    params[K] = k;
-    return parse_option(o.H, "--H", 'z', T, params);
-  };
-  const TransferFunction H0 = at(0), H1 = tf((at(1).H - H0.H).num(), (at(1).H - H0.H).den(), T);
-  if (H1.H.is_zero()) throw InputError("--max " + K + ": --H does not depend on " + K);
-  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
-    const RationalFunction<rational> affine = H0.H + RationalFunction<rational>(k) * H1.H;
-    if (!same(at(k), tf(affine.num(), affine.den(), T)))
-      throw InputError("--max " + K + ": --H must be affine in " + K + " (H = H0 + " + K + " H1), e.g. a stiffness");
+/// H = H0 + K H1 from the expression of --H (lti/parse.hpp: split_affine).
+void split_gain(stability::Loop& loop, const StabilityOpts& o, const rational& T, const std::map<std::string, rational>& params) {
+  if (o.H.empty()) throw InputError("--H is required");
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = T;
+  po.parameters = params;
+  try {
+    const AffineSplit h = split_affine(o.H, po, o.max_name);
+    loop.H = h.H0;
+    loop.H_gain = h.H1;
+  } catch (const InputError& e) {
+    throw InputError("--max " + o.max_name + ": --H: " + e.what());
   }
-  loop.H = H0;
-  loop.H_gain = H1;
 }
 
 stability::Loop make_loop(const StabilityOpts& o) {

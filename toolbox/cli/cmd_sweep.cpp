@@ -4,7 +4,8 @@
 //   hapstab sweep SPEC --out DIR [--jobs N] [--shard I/N] [--resume] [--quiet]
 //   hapstab sweep merge DIR... --out DIR
 //   hapstab sweep slurm SPEC --shards N --out DIR [--submit] [--partition P] [--time T] [--cpus C]
-//   hapstab sweep plot DIR --x K --y B --z bound [--format png|pdf|svg] [--contour]
+//   hapstab sweep plot DIR --x K [--y B] --z bound [--format png,pdf,svg,tex] [--contour] [--levels L]
+//                      [--xlabel ..] [--ylabel ..] [--zlabel ..] [--title ..] [--size W,H] [--name NAME]
 // Exit codes: 0 every point ran, 1 some points failed (their rows say why), 2 bad spec or
 // options (the message names the key), 3 a worker died (rerun with --resume).
 #include <algorithm>
@@ -59,6 +60,8 @@ CommandShape check_command(Spec& spec, const std::string& file) {
   if (!cmd->get_option_no_throw("--set") || !cmd->get_option_no_throw("--json"))
     throw InputError(file + ": command: '" + name + "' cannot be swept (it takes no --set NAME=VALUE and --json)");
   for (auto& a : spec.args) {
+    if (a.key == "set")
+      throw InputError(file + ": args.set: constants go in a [set] table (B = \"1/2\"), axes in [axes]");
     if (std::find(reserved_keys.begin(), reserved_keys.end(), a.key) != reserved_keys.end())
       throw InputError(file + ": args." + a.key + ": set by the sweep itself (or writes files): not allowed in a spec");
     if (!cmd->get_option_no_throw("--" + a.key))
@@ -261,9 +264,16 @@ Runner setup(CLI::App& app) {
   CLI::App* plot = app.add_subcommand("plot", "Draw a sweep's map with gnuplot");
   plot->add_option("dir", p->dir, "Sweep folder (points.csv)")->required();
   plot->add_option("--x", p->x, "Column on the x axis")->required();
-  plot->add_option("--y", p->y, "Column on the y axis")->required();
-  plot->add_option("--z", p->z, "Column coloured")->required();
-  plot->add_option("--format", p->format, "png (default), pdf or svg");
+  plot->add_option("--y", p->y, "Column on the y axis (without it: a line plot of --z over --x, one line per value of the other axes)");
+  plot->add_option("--z", p->z, "Column coloured (the y axis of a line plot)")->required();
+  plot->add_option("--xlabel", p->xlabel, "x axis label (default: the column and its unit from the spec's [units], \"K [N/m]\")");
+  plot->add_option("--ylabel", p->ylabel, "y axis label (default as --xlabel)");
+  plot->add_option("--zlabel", p->zlabel, "colour bar label, or the line plot's y axis (default as --xlabel)");
+  plot->add_option("--title", p->title, "title (default: none; a paper's caption says it)");
+  plot->add_option("--levels", p->levels, "level lines: a count (10) or values (1,2,5): drawn over the map, or with --contour");
+  plot->add_option("--size", p->size, "W,H in cm (pdf, tex; png and svg scaled alike), e.g. 8.5,6; default 15.2,9.5");
+  plot->add_option("--format", p->format, "comma-separated: png (default), pdf, svg, tex (cairolatex: figures/tex/NAME.tex + .pdf)");
+  plot->add_option("--name", p->name, "file name of the figure (default sweep_map, sweep_contour or sweep_line)");
   plot->add_flag("--contour", p->contour, "Contour lines instead of a heat map");
 
   return [=]() -> int {

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <iterator>
 #include <iomanip>
 #include <set>
 #include <fstream>
@@ -139,12 +141,42 @@ void write_bench_chart_data(const std::string& bench, const fs::path& datadir) {
   report::run_checked({script.string(), fs::absolute(datadir).string(), build.string()}, "bench/chart-" + bench);
 }
 
+namespace {
+/// Google Benchmark writes a non-finite counter as a bare Infinity, -Infinity or NaN, which JSON
+/// (and nlohmann's reader) does not have: each such token outside a string becomes null.
+std::string json_without_nonfinite(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < text.size()) out += text[++i];
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') in_string = true;
+    bool replaced = false;
+    for (const char* token : {"-Infinity", "Infinity", "NaN"})
+      if (!replaced && text.compare(i, std::strlen(token), token) == 0) {
+        out += "null";
+        i += std::strlen(token) - 1;
+        replaced = true;
+      }
+    if (!replaced) out += c;
+  }
+  return out;
+}
+}  // namespace
+
 GnuplotVars bench_timing_vars(const std::string& bench, const fs::path& datadir) {
   std::string note = "timing conditions not recorded";
   try {
     std::ifstream in(datadir / (bench + "_bench.json"));
     if (in) {
-      const nlohmann::json c = nlohmann::json::parse(in).at("context");
+      const std::string text{std::istreambuf_iterator<char>(in), {}};
+      const nlohmann::json c = nlohmann::json::parse(json_without_nonfinite(text)).at("context");
       const long cpus = c.at("num_cpus").get<long>();
       const double load = c.at("load_avg").at(0).get<double>();
       std::ostringstream o;

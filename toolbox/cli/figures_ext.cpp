@@ -82,11 +82,23 @@ void write_pc_wall(const fs::path& dir) {
   }
 }
 
-// b* of the unit wall cos(t) + sin(t) (z-1)/(Tz) with delay n (certified, 20 digits): by
+// The rays of the (K, B) plane: (K, B) = r ((2/T) cos t, sin t), directions in (KT/2, B), the
+// coordinates in which b* = KT/2 + B (n = 0) is a straight line; the ratio B/(KT/2) = tan t runs
+// log-uniformly from 1e-3 to 1e3 between the two axes (t = 0, pi/2), as the figure's log axes
+// show them. (Rays of equal angle in (K, B) itself put all but one point at B > 1.96 -- K is 1000
+// times B on the passive boundary -- and left the boundary near B = 0 undrawn.)
+double ray_angle(int i, int dirs) {
+  if (i == 0) return 0;
+  if (i == dirs) return M_PI / 2;
+  return std::atan(std::pow(10.0, -3.0 + 6.0 * (i - 1) / (dirs - 2)));
+}
+rational ray_K(double t, const rational& T) { return exact_rational(std::cos(t)) * 2 / T; }
+
+// b* of the unit wall K(t) + sin(t) (z-1)/(Tz) with delay n (certified, 20 digits): by
 // homogeneity b*(r K, r B) = r b*(K, B), so r_max = b / b* on the ray of angle t.
 double unit_bstar(double t, const rational& T, int n) {
   passivity::BoundProblem p;
-  const rational c = exact_rational(std::cos(t)), s = exact_rational(std::sin(t));
+  const rational c = ray_K(t, T), s = exact_rational(std::sin(t));
   // (c + s/T) - (s/T) z^-1 = ((c + s/T) z - s/T)/z
   p.H = RationalFunction<rational>(Polynomial<rational>(std::vector<rational>{-s / T, c + s / T}),
                                    Polynomial<rational>::monomial(1));
@@ -102,7 +114,7 @@ double unit_bstar(double t, const rational& T, int n) {
 // the lower enclosure end, inside the stable region). NaN when no r > 0 is stable (a pure damper
 // leaves the device's integrator at z = 1) or the test cannot decide.
 double unit_stability_limit(double t, const rational& m, const rational& b, const rational& T, int n) {
-  const rational c = exact_rational(std::cos(t)), s = exact_rational(std::sin(t));
+  const rational c = ray_K(t, T), s = exact_rational(std::sin(t));
   stability::Loop loop = stability::mass_damper_wall(m, b, rational(0), T, n);
   loop.H = tf(Polynomial<rational>(rational(0)), Polynomial<rational>(rational(1)), T);
   loop.H_gain = tf(Polynomial<rational>(std::vector<rational>{-s / T, c + s / T}), Polynomial<rational>::monomial(1), T);
@@ -117,7 +129,7 @@ void write_zwidth(const fs::path& dir) {
   std::ofstream reg = open_data_file(dir / "ext_zwidth_region.dat");
   std::ofstream zw = open_data_file(dir / "ext_zwidth_magnitude.dat");
   reg << "# passive walls K + B(z-1)/(Tz) z^-n of a device with b = " << b << " N s/m, T = 1 ms: boundary K, B\n"
-      << "# (K, B) = (b / b*_hi(t)) (cos t, sin t), b* certified (upper enclosure end: inside the region)\n"
+      << "# (K, B) = (b / b*_hi(t)) ((2/T) cos t, sin t), b* certified (upper enclosure end: inside the region)\n"
       << "# one block per n = 0..3: K [N/m]  B [N s/m]\n";
   zw << "# largest |Z(jw)| = |H(e^{jwT}) e^{-jnwT}|/w over the boundary walls above (60 directions), and\n"
      << "# the device's own |m jw + b| for m = 0.1 kg; columns: w [rad/s]  n=0  n=1  n=2  n=3  device\n";
@@ -125,9 +137,9 @@ void write_zwidth(const fs::path& dir) {
   std::vector<std::vector<std::pair<double, double>>> walls(4);
   for (int n = 0; n <= 3; ++n) {
     for (int i = 0; i <= dirs; ++i) {
-      const double t = (M_PI / 2) * i / dirs;
+      const double t = ray_angle(i, dirs);
       const double r = b / unit_bstar(t, T, n);
-      walls[size_t(n)].push_back({r * std::cos(t), r * std::sin(t)});
+      walls[size_t(n)].push_back({r * to_real<double>(ray_K(t, T)), r * std::sin(t)});
       reg << walls[size_t(n)].back().first << ' ' << walls[size_t(n)].back().second << '\n';
     }
     reg << "\n\n";
@@ -139,9 +151,9 @@ void write_zwidth(const fs::path& dir) {
      << "# one block per n = 0..3: K [N/m]  B [N s/m]\n";
   for (int n = 0; n <= 3; ++n) {
     for (int i = 0; i < dirs; ++i) {  // the last ray (pure damper) is never stable for small r
-      const double t = (M_PI / 2) * i / dirs;
+      const double t = ray_angle(i, dirs);
       const double r = unit_stability_limit(t, rational(1, 10), exact_rational(b), T, n);
-      if (std::isfinite(r)) st << r * std::cos(t) << ' ' << r * std::sin(t) << '\n';
+      if (std::isfinite(r)) st << r * to_real<double>(ray_K(t, T)) << ' ' << r * std::sin(t) << '\n';
     }
     st << "\n\n";
   }

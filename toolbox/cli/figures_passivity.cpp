@@ -16,6 +16,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/max_gain.hpp"
 
 namespace {
 
@@ -118,7 +119,8 @@ void kb_region(const std::string& dir) {
   // in [0, 2] N s/m, delays n = 0..3, backward-difference wall K + B(z-1)/(Tz) and Tustin wall.
   // b*(K) = sup_w [K g(w) + h(w)] is convex in K (a supremum of affine functions), so the passive
   // set is one interval [Kmin, Kmax): Kmin = 0 for the backward-difference walls, but not for the
-  // delayed Tustin walls (n = 1, B in (1/3, 1/2]: K in [2(3B - 1)/T, 2(1 + B)/(3T))).
+  // delayed Tustin walls (n = 1, B in (1/3, 1/2]: K in [2(3B - 1)/T, 2(1 + B)/(3T))). A passive K
+  // is found first (a golden section on b*), then both ends by max_gain, certified.
   auto f = open_out(dir, "passivity_kb_region.dat");
   const double bdev = 1, Kcap = 1e6;
   f << "# (K, B) passivity regions: passive K in [Kmin, Kmax) with b*(K,B,n) < b = 1 N s/m, T = 1 ms\n"
@@ -155,24 +157,27 @@ void kb_region(const std::string& dir) {
           if (std::min(f1, f2) >= bdev) { f << " NaN NaN"; continue; }
           Kin = f1 < f2 ? x1 : x2;
         }
-        double Kmin = 0;
-        if (Kin > 0) {  // bisect the lower edge in [0, Kin]
-          double lo = 0, hi = Kin;
-          for (int it = 0; it < 40; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (bstar(mid) < bdev ? hi : lo) = mid;
-          }
-          Kmin = hi;
+        // the edges from the passive point Kin, certified (passivity/max_gain.hpp): b* is convex in
+        // K, so the passive interval is [Kin - t_down, Kin + t_up) with t the largest passive step
+        // along dH/dK = +1 and -1 (the ends drawn are the enclosures' inner ends: inside the region)
+        GainProblem g;
+        {
+          Polynomial<rational> z = Polynomial<rational>::monomial(1);
+          Polynomial<rational> one(rational(1));
+          const rational K = exact_rational(Kin);
+          if (!tustin) g.base.H = RationalFunction<rational>(z * K + (z - one) * (B / T), z);
+          else g.base.H = RationalFunction<rational>((z + one) * K + (z - one) * (2 * B / T), z + one);
         }
-        double Kmax = Kcap;
-        if (bstar(Kcap) >= bdev) {  // bisect the upper edge in [Kin, Kcap]
-          double lo = Kin, hi = Kcap;
-          for (int it = 0; it < 40; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (bstar(mid) < bdev ? lo : hi) = mid;
-          }
-          Kmax = lo;
-        }
+        g.base.T = T;
+        g.base.delay = n;
+        g.b = rational(1);
+        auto step = [&](int sign) {
+          g.H1 = RationalFunction<rational>(rational(sign));
+          const MaxGain m = max_gain(g, 12);
+          return m.infinite ? Kcap : to_real<double>(m.enclosure->lo);
+        };
+        const double Kmax = std::min(Kcap, Kin + step(+1));
+        const double Kmin = Kin > 0 ? std::max(0.0, Kin - step(-1)) : 0.0;
         f << " " << Kmin << " " << Kmax;
       }
     f << "\n";

@@ -16,11 +16,20 @@ namespace {
 // could move the cursor or retitle the window, so they are printed through report::text.
 std::string shown(const std::exception& e) { return hapstab::report::text(e.what(), true); }
 
+/// "bound", "sweep plot": the words of a (sub)command below `hapstab`.
+std::string path_of(const CLI::App* a) {
+  std::string p;
+  for (; a && a->get_parent(); a = a->get_parent()) p = a->get_name() + (p.empty() ? "" : " " + p);
+  return p;
+}
+
 /// The message for a parse error of `hapstab args...` (args without the program name): where a
 /// command is expected and the word given is none (`hapstab boundd`, `hapstab multidof analyse`),
 /// "unknown command 'boundd'; did you mean 'bound'?" (the nearest command by edit distance, a
 /// prefix counting as near, else the list of commands); where a command is expected and none is
-/// given, which ones there are; otherwise CLI11's own message.
+/// given, which ones there are; where an option is not one of the command's (`hapstab bound
+/// --dealy 3`), "unknown option '--dealy' of 'hapstab bound'; did you mean '--delay'?" (the same
+/// nearness); otherwise CLI11's own message.
 std::string parse_error_message(const CLI::App& app, const std::vector<std::string>& args, const CLI::ParseError& e) {
   const CLI::App* level = &app;
   std::string path = "hapstab";
@@ -50,6 +59,30 @@ std::string parse_error_message(const CLI::App& app, const std::vector<std::stri
     if (best_d <= std::max<size_t>(2, word.size() / 3))
       return "unknown command '" + word + "'" + where + "; did you mean '" + best + "'?";
     return "unknown command '" + word + "'" + where + " (commands: " + list + ")";
+  }
+  // an unknown option (`hapstab bound --dealy 3`): the nearest option of the command being parsed
+  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+    const CLI::App* at = &app;
+    for (std::vector<CLI::App*> parsed = at->get_subcommands(); !parsed.empty(); parsed = at->get_subcommands())
+      at = parsed.front();
+    std::vector<std::string> options;
+    for (const CLI::Option* o : at->get_options())
+      for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+    for (const std::string& arg : args) {
+      if (arg.rfind("--", 0) != 0 || arg.size() < 3) continue;
+      const std::string word = arg.substr(0, arg.find('='));
+      if (std::find(options.begin(), options.end(), word) != options.end()) continue;
+      std::string best;
+      size_t best_d = std::string::npos;
+      for (const auto& n : options) {
+        const size_t d = n.rfind(word, 0) == 0 ? 1 : hapstab::scene::edit_distance(word, n);  // a prefix counts as near
+        if (d < best_d) best_d = d, best = n;
+      }
+      const std::string cmd = at == &app ? "hapstab" : "hapstab " + path_of(at);
+      if (!best.empty() && best_d <= std::max<size_t>(2, word.size() / 3))
+        return "unknown option '" + word + "' of '" + cmd + "'; did you mean '" + best + "'?";
+      return "unknown option '" + word + "' of '" + cmd + "' (" + cmd + " --help lists its options)";
+    }
   }
   return e.what();
 }

@@ -138,7 +138,7 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
     }
     double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
     if (!quiet) {
-      std::cerr << "[proof " << i << "/" << total << "] " << p.paper << " " << p.id << ": "
+      std::cout << "[proof " << i << "/" << total << "] " << p.paper << " " << p.id << ": "
                 << check.results().size() << " claims, " << dt << " s\n";
       for (const auto& c : check.results())
         std::cout << (c.holds ? "  holds  " : "  FAILS  ") << c.id << "  " << c.equation << "  ["

@@ -11,7 +11,11 @@
 // report::install_file (a symbolic link at DIR/figures is refused, one at the figure's name is
 // replaced, never followed).
 // The figures sweep_map and sweep_contour of `hapstab reproduce` are the (K, B) region as a sweep.
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <map>
+#include <optional>
 #include <cctype>
 #include <fstream>
 #include <iostream>
@@ -21,6 +25,7 @@
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
 #include "cli/sweep_cli.hpp"
+#include "hapstab/study/spec.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
@@ -81,10 +86,39 @@ std::string number_for_plot(const std::string& text) {
 
 const char* const plot_files[] = {"proven.dat", "numeric.dat", "infinite.dat", "failed.dat"};
 
-/// Writes the plot data of column z over (x, y) from sweep/points.csv into `data`: proven.dat,
-/// numeric.dat, infinite.dat, failed.dat and grid.dat. Returns the number of points.
-size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::string& y, const std::string& z,
-                       const fs::path& data) {
+/// The edges of the cell of each distinct value v_0 < v_1 < ... of one axis: halfway to each
+/// neighbour (geometric halfway on a log axis), the outer edges as far out as the inner ones, so
+/// uneven values (B = 0, 1/2, 5, 20) get cells as wide as their gaps and never overlap.
+}  // namespace
+
+std::map<double, std::pair<double, double>> cell_edges(std::vector<double> v, bool log) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  std::map<double, std::pair<double, double>> e;
+  auto mid = [log](double a, double b) { return log ? std::sqrt(a * b) : (a + b) / 2; };
+  auto out = [log](double a, double m) { return log ? a * a / m : 2 * a - m; };  // a reflected over m
+  if (v.size() == 1) {
+    const double a = v[0], h = log ? 1.25 : std::max(std::abs(a) * 0.1, 0.5);
+    e[a] = log ? std::pair{a / h, a * h} : std::pair{a - h, a + h};
+    return e;
+  }
+  for (size_t i = 0; i < v.size(); ++i) {
+    const double lo = i > 0 ? mid(v[i - 1], v[i]) : out(v[0], mid(v[0], v[1]));
+    const double hi = i + 1 < v.size() ? mid(v[i], v[i + 1]) : out(v[i], mid(v[i - 1], v[i]));
+    e[v[i]] = {lo, hi};
+  }
+  return e;
+}
+
+std::optional<study::Spec> spec_of(const fs::path& sweep) {
+  std::error_code ec;
+  if (!fs::exists(sweep / "spec.toml", ec)) return std::nullopt;
+  const fs::path f = report::input_file_inside(sweep, "spec.toml", "sweep plot", study::max_spec_bytes);
+  return study::parse_spec(study::read_spec_file(f.string()), "spec.toml");
+}
+
+PlotData read_plot_data(const fs::path& sweep, const std::string& x, const std::string& y, const std::string& z,
+                        const std::optional<study::Spec>& spec, bool categorical) {
   for (const auto& [name, option] : {std::pair{x, "--x"}, {y, "--y"}, {z, "--z"}})
     for (char c : name)
       if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_')
@@ -95,52 +129,203 @@ size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::s
   if (!in) throw InputError("sweep plot: cannot read points.csv in '" + report::text(sweep.string()) + "'");
   std::vector<std::string> head, row;
   read_csv_record(in, head);
-  const size_t cx = column_of(head, x, "--x"), cy = column_of(head, y, "--y"), cz = column_of(head, z, "--z");
+  const size_t cx = column_of(head, x, "--x"), cz = column_of(head, z, "--z");
+  const std::optional<size_t> cy = y.empty() ? std::nullopt : std::optional<size_t>(column_of(head, y, "--y"));
   const size_t cerr = column_of(head, "error", "error");
   std::optional<size_t> cstatus;
   for (size_t k = 0; k < head.size(); ++k)
     if (head[k] == "status") cstatus = k;
-  fs::create_directories(data);
-  std::ofstream proven = open_data_file(data / plot_files[0]), numeric = open_data_file(data / plot_files[1]),
-                infinite = open_data_file(data / plot_files[2]), failed = open_data_file(data / plot_files[3]),
-                grid = open_data_file(data / "grid.dat");
-  size_t rows = 0;
-  std::string last_x;
+  PlotData d;
+  std::vector<size_t> group_columns;  // the line plot's other axes
+  bool xcat = false, ycat = false;     // listed axes of a map: one equal column/row per value
+  if (spec)
+    for (const auto& a : spec->axes) {
+      if (a.name == x) d.xlog = a.log, xcat = categorical && a.listed;
+      if (a.name == y) d.ylog = a.log, ycat = categorical && a.listed;
+      if (!cy && a.name != x) group_columns.push_back(column_of(head, a.name, "axis"));
+    }
+  constexpr size_t max_lines = 12;
+  bool first = true;
   while (read_csv_record(in, row)) {
     if (row.size() != head.size()) continue;
-    const std::string px = number_for_plot(row[cx]), py = number_for_plot(row[cy]);
+    const std::string px = number_for_plot(row[cx]), py = cy ? number_for_plot(row[*cy]) : "0";
     if (px.empty() || py.empty())
       throw InputError("--x/--y: the row of point " + report::text(row[0].substr(0, 40)) + " has no number there");
-    ++rows;
+    PlotRow r;
+    r.x = std::stod(px);
+    r.y = std::stod(py);
     const std::string pz = number_for_plot(row[cz]);
     const std::string status = cstatus ? row[*cstatus] : "numeric";
-    if (!last_x.empty() && px != last_x) grid << "\n";  // gnuplot's grid format: a blank line per x block
-    last_x = px;
-    grid << px << " " << py << " " << (pz.empty() || !row[cerr].empty() ? "NaN" : pz) << "\n";
-    const bool is_proven = status == "certified" || status == "exact";
-    const int kind = !row[cerr].empty() ? 3 : pz.empty() ? 2 : is_proven ? 0 : 1;
-    if (kind == 3) failed << px << " " << py << "\n";
-    else if (kind == 2) infinite << px << " " << py << "\n";
-    else (kind == 0 ? proven : numeric) << px << " " << py << " " << pz << "\n";
+    r.kind = !row[cerr].empty() ? 3 : pz.empty() ? 2 : (status == "certified" || status == "exact") ? 0 : 1;
+    if (r.kind <= 1) {
+      r.z = std::stod(pz);
+      d.zmin = first ? r.z : std::min(d.zmin, r.z);
+      d.zmax = first ? r.z : std::max(d.zmax, r.z);
+      first = false;
+    }
+    for (size_t c : group_columns) r.group += (r.group.empty() ? "" : ", ") + head[c] + " = " + row[c];
+    if (std::find(d.groups.begin(), d.groups.end(), r.group) == d.groups.end()) {
+      if (d.groups.size() == max_lines)
+        throw InputError("sweep plot without --y: more than " + std::to_string(max_lines) +
+                         " lines (one per value of the other axes); give --y for a map");
+      d.groups.push_back(r.group);
+    }
+    if ((d.xlog && r.x <= 0) || (d.ylog && r.y <= 0)) throw InputError("sweep plot: a log axis holds a value <= 0");
+    d.rows.push_back(std::move(r));
   }
-  if (rows == 0) throw InputError("sweep plot: points.csv in '" + report::text(sweep.string()) + "' has no points");
-  close_data_file(proven, data / plot_files[0]);
-  close_data_file(numeric, data / plot_files[1]);
-  close_data_file(infinite, data / plot_files[2]);
-  close_data_file(failed, data / plot_files[3]);
-  close_data_file(grid, data / "grid.dat");
-  return rows;
+  if (d.rows.empty()) throw InputError("sweep plot: points.csv in '" + report::text(sweep.string()) + "' has no points");
+  // a listed axis (values = [0, 1/2, 5, 20]) on a map: value k of the sorted list at position k,
+  // labelled with its exact value (study::exact_text of the parsed number: digits, '.', '/', '-' only)
+  auto categories = [&](double PlotRow::*coord, std::string& tics) {
+    std::vector<double> v;
+    for (const PlotRow& r : d.rows) v.push_back(r.*coord);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    tics = "(";
+    for (size_t k = 0; k < v.size(); ++k) {
+      std::ostringstream o;
+      o.precision(6);
+      o << v[k];
+      tics += (k ? ", \"" : "\"") + o.str() + "\" " + std::to_string(k);
+    }
+    tics += ")";
+    for (PlotRow& r : d.rows) r.*coord = static_cast<double>(std::lower_bound(v.begin(), v.end(), r.*coord) - v.begin());
+  };
+  if (xcat) categories(&PlotRow::x, d.xtics), d.xlog = false;
+  if (ycat) categories(&PlotRow::y, d.ytics), d.ylog = false;
+  if (first) d.zmin = 0, d.zmax = 1;  // nothing finite: the colour bar of an empty map
+  if (d.zmax == d.zmin) d.zmin -= 0.5, d.zmax += 0.5;
+  // a full grid, x slower: blocks of `run` rows of equal x, each block with the first block's y values
+  size_t run = 0;
+  while (run < d.rows.size() && d.rows[run].x == d.rows[0].x) ++run;
+  d.full_grid = d.rows.size() % run == 0;
+  for (size_t i = 0; d.full_grid && i < d.rows.size(); ++i) {
+    const size_t block = i - i % run;
+    d.full_grid = d.rows[i].x == d.rows[block].x && d.rows[i].y == d.rows[i % run].y &&
+                  (block == 0 || d.rows[block].x != d.rows[block - run].x);
+  }
+  return d;
 }
 
-/// What plots/sweep_*.gp show: the column names, and which parts have points (gnuplot refuses an
-/// empty data file), from the files write_plot_data wrote into `data`.
-GnuplotVars plot_vars(const fs::path& data, const std::string& x, const std::string& y, const std::string& z) {
-  GnuplotVars v{{{"xname", x}, {"yname", y}, {"zname", z}}, {}};
+namespace {
+
+/// Writes the plot data into `data`: per kind the cells (x y xlo xhi ylo yhi [z]) of the map,
+/// grid.dat (x y z, NaN where not a number; a blank line per x block) for level lines, and
+/// line.dat (x z per line, two blank lines between lines: gnuplot's index) for the line plot.
+void write_plot_files(const PlotData& d, const fs::path& data) {
+  fs::create_directories(data);
+  std::vector<double> xs, ys;
+  for (const PlotRow& r : d.rows) xs.push_back(r.x), ys.push_back(r.y);
+  const auto ex = cell_edges(xs, d.xlog), ey = cell_edges(ys, d.ylog);
+  std::ofstream f[4] = {open_data_file(data / plot_files[0]), open_data_file(data / plot_files[1]),
+                        open_data_file(data / plot_files[2]), open_data_file(data / plot_files[3])};
+  std::ofstream grid = open_data_file(data / "grid.dat"), line = open_data_file(data / "line.dat");
+  for (auto* o : {&f[0], &f[1], &f[2], &f[3], &grid, &line}) o->precision(17);
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const PlotRow& r = d.rows[i];
+    // 2% of overlap between neighbours (in the drawn scale): no hairline seams between cells
+    auto widen = [](std::pair<double, double> e, bool log) {
+      if (log) return std::pair{e.first * std::pow(e.second / e.first, -0.01), e.second * std::pow(e.second / e.first, 0.01)};
+      const double w = 0.01 * (e.second - e.first);
+      return std::pair{e.first - w, e.second + w};
+    };
+    const auto [xlo, xhi] = widen(ex.at(r.x), d.xlog);
+    const auto [ylo, yhi] = widen(ey.at(r.y), d.ylog);
+    f[r.kind] << r.x << " " << r.y << " " << xlo << " " << xhi << " " << ylo << " " << yhi;
+    if (r.kind <= 1) f[r.kind] << " " << r.z;
+    f[r.kind] << "\n";
+    if (i > 0 && r.x != d.rows[i - 1].x) grid << "\n";
+    grid << r.x << " " << r.y << " " << (r.kind <= 1 ? std::to_string(r.z) : std::string("NaN")) << "\n";
+  }
+  // line plot: per group, its points in order of x; kinds as a third column (0..3)
+  for (size_t g = 0; g < d.groups.size(); ++g) {
+    std::vector<const PlotRow*> pts;
+    for (const PlotRow& r : d.rows)
+      if (r.group == d.groups[g]) pts.push_back(&r);
+    std::stable_sort(pts.begin(), pts.end(), [](const PlotRow* a, const PlotRow* b) { return a->x < b->x; });
+    if (g > 0) line << "\n\n";
+    for (const PlotRow* r : pts) line << r->x << " " << (r->kind <= 1 ? r->z : 0.0) << " " << r->kind << "\n";
+  }
+  for (size_t k = 0; k < 4; ++k) close_data_file(f[k], data / plot_files[k]);
+  close_data_file(grid, data / "grid.dat");
+  close_data_file(line, data / "line.dat");
+}
+
+/// Writes the plot data of column z over (x, y) from sweep/points.csv into `data`. Returns the
+/// number of points. (The figures sweep_map and sweep_contour use it on their own sweep.)
+size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::string& y, const std::string& z,
+                       const fs::path& data) {
+  const PlotData d = read_plot_data(sweep, x, y, z, spec_of(sweep));
+  write_plot_files(d, data);
+  return d.rows.size();
+}
+
+/// A label: NAME [unit] (the unit from the spec's [units]) unless the user gave one.
+std::string label(const std::string& given, const std::string& name, const std::optional<study::Spec>& spec) {
+  if (!given.empty()) return given;
+  const std::string u = spec ? study::unit_of(*spec, name) : "";
+  return u.empty() ? name : name + " [" + u + "]";
+}
+
+/// --levels: "N" (N automatic levels) or "a,b,c" (those values), as gnuplot's cntrparam text
+/// built from the parsed numbers (only digits, '.', 'e', '-' and ',' reach gnuplot's eval).
+std::string levels_text(const std::string& text) {
+  if (text.empty()) return "";
+  if (text.find(',') == std::string::npos && std::all_of(text.begin(), text.end(), ::isdigit)) {
+    const long n = std::stol(text.substr(0, 6));
+    if (n < 1 || n > 100) throw InputError("--levels: a count in [1, 100] or a list of values (got '" + report::text(text) + "')");
+    return "auto " + std::to_string(n);
+  }
+  std::string out = "discrete ";
+  std::stringstream ss(text);
+  std::string w;
+  int count = 0;
+  while (std::getline(ss, w, ',')) {
+    const auto q = try_parse_rational(w);
+    if (!q || ++count > 100)
+      throw InputError("--levels: expected a count or comma-separated numbers, e.g. 1,2,5 (got '" + report::text(text) + "')");
+    std::ostringstream o;
+    o.precision(17);
+    o << to_real<double>(*q);
+    out += (count > 1 ? "," : "") + o.str();
+  }
+  return out;
+}
+
+/// --size W,H in centimetres: the figure's size on paper (pdf, tex), and the same layout in
+/// pixels for png (1600 px per 6 in) and svg (1200 px per 6 in).
+std::pair<double, double> size_cm(const std::string& text) {
+  const auto comma = text.find(',');
+  std::optional<rational> w, h;
+  if (comma != std::string::npos) w = try_parse_rational(text.substr(0, comma)), h = try_parse_rational(text.substr(comma + 1));
+  if (!w || !h || *w < 2 || *h < 2 || *w > 100 || *h > 100)
+    throw InputError("--size: W,H in centimetres, each in [2, 100], e.g. 8.5,6 (got '" + report::text(text) + "')");
+  return {to_real<double>(*w), to_real<double>(*h)};
+}
+
+/// What plots/sweep_*.gp show: the labels (with units), the colour range, which parts have points
+/// (gnuplot refuses an empty data file), log axes, levels, size and the line titles.
+GnuplotVars plot_vars(const PlotData& d, const fs::path& data, const std::string& xl, const std::string& yl,
+                      const std::string& zl) {
+  GnuplotVars v{{{"xlabel", xl}, {"ylabel", yl}, {"zlabel", zl}}, {}};
   const char* parts[] = {"has_proven", "has_numeric", "has_infinite", "has_failed"};
   for (size_t k = 0; k < 4; ++k) {
     std::error_code ec;
     v.numbers.emplace_back(parts[k], fs::file_size(data / plot_files[k], ec) > 0 && !ec ? 1 : 0);
   }
+  v.numbers.insert(v.numbers.end(), {{"zmin", d.zmin}, {"zmax", d.zmax}, {"xlog", d.xlog}, {"ylog", d.ylog},
+                                     {"ngroups", double(d.groups.size())}});
+  // the plotted window: the cells' outer edges
+  std::vector<double> xs, ys;
+  for (const PlotRow& r : d.rows) xs.push_back(r.x), ys.push_back(r.y);
+  const auto ex = cell_edges(xs, d.xlog), ey = cell_edges(ys, d.ylog);
+  v.numbers.insert(v.numbers.end(), {{"xmin", ex.begin()->second.first}, {"xmax", ex.rbegin()->second.second},
+                                     {"ymin", ey.begin()->second.first}, {"ymax", ey.rbegin()->second.second},
+                                     {"xfirst", ex.begin()->first}, {"xlast", ex.rbegin()->first},
+                                     {"yfirst", ey.begin()->first}, {"ylast", ey.rbegin()->first}});
+  for (size_t g = 0; g < d.groups.size(); ++g) v.text.push_back({"group" + std::to_string(g + 1), d.groups[g]});
+  if (!d.xtics.empty()) v.text.push_back({"xtics", d.xtics});
+  if (!d.ytics.empty()) v.text.push_back({"ytics", d.ytics});
   return v;
 }
 
@@ -164,13 +349,14 @@ void kb_region_data(const fs::path& datadir) {
   close_data_file(f, spec);
   report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
                       "hapstab sweep (the (K, B) region)");
-  write_plot_data(out, "B", "K", "bound", datadir);
+  write_plot_files(read_plot_data(out, "B", "K", "bound", std::nullopt), datadir);
 }
 
-// with the units of this sweep's columns, for the axes (plots/sweep_*.gp use them when set)
+// with the units of this sweep's columns, for the axes
 GnuplotVars kb_region_vars(const fs::path& datadir) {
-  GnuplotVars v = plot_vars(datadir, "B", "K", "bound");
-  v.text.insert(v.text.end(), {{"xunit", "N s/m"}, {"yunit", "N/m"}, {"zunit", "N s/m"}});
+  const PlotData d = read_plot_data(datadir / "sweep_kb_region", "B", "K", "bound", std::nullopt);
+  GnuplotVars v = plot_vars(d, datadir, "B [N s/m]", "K [N/m]", "b* [N s/m]");
+  v.text.push_back({"levels", levels_text("1,2,3,4")});
   return v;
 }
 
@@ -186,16 +372,38 @@ const RegisterFigure contour_figure({"sweep_contour", "toolbox",
 }  // namespace
 
 int plot(const PlotOptions& o) {
-  if (o.format != "png" && o.format != "pdf" && o.format != "svg")
-    throw InputError("--format must be png, pdf or svg (got " + report::text(o.format) + ")");
+  const std::vector<std::string> formats = figure_formats(o.format);
   const fs::path dir(o.dir);
-  const std::string script = o.contour ? "sweep_contour" : "sweep_map", figure = script + "." + o.format;
+  if (o.y.empty() && o.contour) throw InputError("--contour needs --y (level lines of z over x and y)");
+  const std::string script = o.y.empty() ? "sweep_line" : o.contour ? "sweep_contour" : "sweep_map";
+  const std::string name = o.name.empty() ? script : report::file_component(o.name, "--name");
+  const std::optional<study::Spec> spec = spec_of(dir);
+  const PlotData d = read_plot_data(dir, o.x, o.y, o.z, spec, script == "sweep_map");
+  const std::string levels = levels_text(o.levels);
+  if (!levels.empty() && !o.y.empty() && !d.full_grid)
+    throw InputError("--levels: level lines need a full grid with --x the slower axis (the spec's axes in the order y, x "
+                     "are not)");
+  if (o.contour && !d.full_grid)
+    throw InputError("--contour: level lines need a full grid with --x the slower axis (an axis listed before --y's in the spec)");
   const report::PrivateFolder work("hapstab-plot");  // the data and the figure, until it is copied into DIR
   const fs::path data = work.path() / "data", drawn = work.path() / "figures";
-  const size_t rows = write_plot_data(dir, o.x, o.y, o.z, data);
-  run_gnuplot(script, data, drawn, o.format, "", plot_vars(data, o.x, o.y, o.z));
-  const fs::path out = report::install_file(drawn / figure, dir / "figures", figure, "sweep plot");
-  std::cout << out.string() << " (" << rows << " points)\n";
+  write_plot_files(d, data);
+  GnuplotVars vars = plot_vars(d, data, label(o.xlabel, o.x, spec), o.y.empty() ? label(o.zlabel, o.z, spec) : label(o.ylabel, o.y, spec),
+                               label(o.zlabel, o.z, spec));
+  vars.text.push_back({"title", o.title});
+  if (!levels.empty()) vars.text.push_back({"levels", levels});
+  if (!o.size.empty()) {
+    const auto [w, h] = size_cm(o.size);
+    vars.numbers.insert(vars.numbers.end(), {{"size_w_cm", w}, {"size_h_cm", h}});
+  }
+  for (const std::string& f : formats) {
+    run_gnuplot(script, data, drawn, f, name, vars);
+    const bool tex = f == "tex";  // the cairolatex pair NAME.tex + NAME.pdf, in figures/tex/
+    for (const std::string& file : tex ? std::vector<std::string>{name + ".tex", name + ".pdf"} : std::vector<std::string>{name + "." + f})
+      std::cout << report::install_file(tex ? drawn / "tex" / file : drawn / file, tex ? dir / "figures" / "tex" : dir / "figures",
+                                        file, "sweep plot").string()
+                << " (" << d.rows.size() << " points)\n";
+  }
   return exit_ok;
 }
 

@@ -142,4 +142,25 @@ TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules) {
   return H;
 }
 
+AffineSplit parse_tf_affine(const TfOptions& o, const TfRules& rules, const std::string& name, const std::string& option) {
+  const std::string what = option + " " + name;
+  if (o.H.empty()) throw InputError(what + ": needs H as an expression in " + name + " (--H), not --num/--den or --mat");
+  if (parse_sets(o.sets).count(name)) throw InputError(what + ": " + name + " is the parameter maximised; do not --set it");
+  const rational T = parse_period(o, rules);
+  if (rules.with_delay && o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = T;
+  po.parameters = parse_sets(o.sets);
+  AffineSplit s;
+  try {
+    s = split_affine(o.H, po, name);
+  } catch (const InputError& e) {
+    throw InputError(what + ": --H: " + e.what());
+  }
+  for (const TransferFunction* h : {&s.H0, &s.H1})
+    if (!h->is_discrete()) throw InputError("--H: expected a transfer function in z");
+  return s;
+}
+
 }  // namespace hapstab::cli

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/tf.hpp"
 
 namespace hapstab::cli {
@@ -37,6 +38,10 @@ bool has_tf(const TfOptions& o);
 
 /// The exact discrete transfer function of the options, or InputError naming the option.
 TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules);
+
+/// --H as H = H0 + NAME H1 (split_affine, lti/parse.hpp), for `--max NAME`: InputError naming
+/// `option` when H is not given by --H, when --set gives NAME too, or when --H is not affine in NAME.
+AffineSplit parse_tf_affine(const TfOptions& o, const TfRules& rules, const std::string& name, const std::string& option);
 
 /// The exact sample period of --T (T = 1 when absent and not required); InputError naming --T.
 rational parse_period(const TfOptions& o, const TfRules& rules);

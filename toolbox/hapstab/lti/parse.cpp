@@ -447,4 +447,22 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
   return out;
 }
 
+AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name) {
+  ParseOptions po = options;
+  auto at = [&](const rational& k) {
+    po.parameters[name] = k;
+    return parse_tf(text, po);
+  };
+  AffineSplit s{at(0), at(1)};
+  const RationalFunction<rational> H1 = s.H1.H - s.H0.H;
+  if (H1.is_zero()) throw InputError("the expression does not depend on " + name);
+  s.H1.H = H1;
+  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2), rational(1234567, 891011)}) {
+    const TransferFunction Hk = at(k);
+    if (Hk.H != s.H0.H + RationalFunction<rational>(k) * H1)
+      throw InputError("the expression must be affine in " + name + " (H = H0 + " + name + " H1, e.g. a stiffness or a damping)");
+  }
+  return s;
+}
+
 }  // namespace hapstab

@@ -68,4 +68,14 @@ std::set<std::string> names_in(std::string_view text);
 /// unknown name, division by zero, or a missing/invalid T.
 TransferFunction parse_tf(std::string_view text, const ParseOptions& options = {});
 
+/// `text` as H = H0 + K H1 in its parameter `name` (a gain to maximise: `stability --max`, `bound
+/// --max`): parsed at K = 0 and K = 1, then checked equal to H0 + k H1 at k = 2, 1/3, -7/2 and
+/// 1234567/891011 (a rational function of K that is not affine in it differs at one of them
+/// unless its degree in K is above 3; the value of `name` in options.parameters is ignored).
+/// InputError when `text` does not depend on `name` or is not affine in it.
+struct AffineSplit {
+  TransferFunction H0, H1;
+};
+AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name);
+
 }  // namespace hapstab

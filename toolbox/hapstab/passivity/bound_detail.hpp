@@ -7,6 +7,7 @@
 //   certified.cpp         certified maximisation of the rational objective f(c) (bound_certified)
 //   fractional_delay.cpp  t_d not a multiple of T (54): exact when t_d/T = p/q with small q,
 //                         else interval branch-and-bound over w
+//   max_gain.cpp          the largest K with b*(H0 + K H1) < b (max_gain.hpp), on the same maximiser
 //   fast.cpp              the double-double fast path (FastBound)
 //   grid.cpp              the comparison grid (bound_grid)
 //   bound.cpp             assumptions, the dispatcher bound(), the necessary condition (14), (15)
@@ -138,6 +139,17 @@ struct Domain {
 template <unsigned D>
 bool certified_rational(const RationalFunction<rational>& f, const BoundProblem& pb, int digits, Bound& out,
                         const Domain& dom = {});
+
+/// t_d = (p/q) T (q >= 2) as an integer-delay problem in w = e^{j wT/q}: `problem` (H(w^q)/(1 + w + ...
+/// + w^{q-1}), delay nq + p, no t_d) maximised over `domain` gives b* exactly as t_d does
+/// (fractional_delay.cpp). nullopt without t_d, for q = 1, or when the degree q (order + n) + p + q
+/// exceeds max_degree. The end cos(pi/q) is enclosed at working precision D.
+struct FracExact {
+  BoundProblem problem;
+  Domain domain;
+};
+template <unsigned D>
+std::optional<FracExact> frac_exact_problem(const BoundProblem& pb, int max_degree);
 
 /// bound_certified for a fractional delay t_d (fractional_delay.cpp); o is the objective of pb
 /// without t_d.

@@ -148,9 +148,6 @@ double dirichlet_approx(int N, const rational& T) {
 }
 
 // ---------------------------------------------------------------------------------------------
-namespace {
-
-/// H = sum alpha_m ((z-1)/(Tz))^m exactly? (den = z^k). Returns alpha or nullopt.
 std::optional<std::vector<rational>> backward_difference_coefficients(const QRatFun& H, const rational& T) {
   const QPoly& d = H.den();
   if (d.degree() < 0) return std::nullopt;
@@ -168,6 +165,8 @@ std::optional<std::vector<rational>> backward_difference_coefficients(const QRat
   if (alpha.empty()) alpha.push_back(0);
   return alpha;
 }
+
+namespace {
 
 /// W = H z^-n = (1 - z) sum beta_j z^-j ? Returns beta or nullopt.
 std::optional<std::vector<rational>> fir_coefficients(const QRatFun& H, int n) {

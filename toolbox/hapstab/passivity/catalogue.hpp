@@ -49,6 +49,11 @@ Enclosure<rational> dirichlet_D(int digits);
 /// The approximation (C N - D) T of (50) (a number, not a bound: exact b* comes from the generic method).
 double dirichlet_approx(int N, const rational& T);
 /// Exact min over x of sum_{k=0}^{N} cos(kx), certified (via the generic bound of (50)).
+/// H = sum_m alpha_m ((z-1)/(Tz))^m exactly (the denominator a power of z, degree of H <= 0)? alpha_0,
+/// alpha_1, ... or nullopt. The classes (46), (53) and Example 4 are read off it.
+std::optional<std::vector<rational>> backward_difference_coefficients(const RationalFunction<rational>& H,
+                                                                       const rational& T);
+
 /// ---- the matcher ------------------------------------------------------------------------------
 struct Match {
   std::string name;        ///< e.g. "virtual wall (backward difference)"

@@ -158,38 +158,17 @@ interval<D> frac_derivative(const Objective& o, const rational& T, const rationa
   return f.d;
 }
 
-/// The fractional delay t_d = (p/q) T (q >= 2) made exact. With w = e^{j phi}, theta = wT = q phi,
-/// z = w^q, e^{-j w t_d} = w^{-p} and T/(1 - w^q) = T/((1 - w) S(w)), S = 1 + w + ... + w^{q-1}, so
-///   Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} = Re{T Ht(w) w^-(nq+p)/(1 - w)},  Ht(w) = H(w^q)/S(w):
-/// the integer-delay objective of Ht in c = cos(phi), on c in [cos(pi/q), 1] (w in [0, pi/T]).
-/// S's roots (w^q = 1, w != 1) lie at phi >= 2 pi/q, outside the domain. Returns false when the
-/// objective's degree exceeds `max_degree` (the branch-and-bound then takes over).
+/// The fractional delay t_d = (p/q) T (q >= 2) made exact (frac_exact_problem, bound_detail.hpp):
+/// the integer-delay objective of Ht in c = cos(phi), maximised on c in [cos(pi/q), 1].
+/// Returns false when the objective's degree exceeds `max_degree` (the branch-and-bound then takes over).
 template <unsigned D>
 bool certified_frac_exact(const BoundProblem& pb, int digits, int max_degree, Bound& out) {
+  const std::optional<FracExact> fe = frac_exact_problem<D>(pb, max_degree);
+  if (!fe) return false;
+  const long q = fe->domain.q;
   const rational tau = *pb.frac_delay / pb.T;
-  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();
-  const long degree = q * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + p + q;
-  if (q < 2 || degree > max_degree) return false;
-  auto spread = [q](const QPoly& a) {  // a(w^q)
-    std::vector<rational> c(static_cast<size_t>(a.degree() * q + 1), rational(0));
-    for (int k = 0; k <= a.degree(); ++k) c[static_cast<size_t>(k * q)] = a.coeffs()[static_cast<size_t>(k)];
-    return QPoly(std::move(c));
-  };
-  BoundProblem pt = pb;
-  pt.frac_delay.reset();
-  pt.H = QRatFun(spread(pb.H.num()), spread(pb.H.den()) * QPoly(std::vector<rational>(static_cast<size_t>(q), rational(1))));
-  pt.delay = static_cast<int>(pb.delay * q + p);
-  Domain dom;
-  dom.q = static_cast<int>(q);
-  if (q == 2) dom.end_lo = dom.end_hi = 0;
-  else if (q == 3) dom.end_lo = dom.end_hi = rational(1, 2);
-  else {
-    interval<D> ce = cos(ipi<D>() / interval<D>(static_cast<double>(q)));
-    dom.end_lo = lower_rational(ce);
-    dom.end_hi = upper_rational(ce);
-  }
-  Objective o = objective(pt.H, pt.T, pt.delay);
-  if (!certified_rational<D>(o.f, pt, digits, out, dom)) return false;
+  Objective o = objective(fe->problem.H, fe->problem.T, fe->problem.delay);
+  if (!certified_rational<D>(o.f, fe->problem, digits, out, fe->domain)) return false;
   out.method = "certified: t_d = " + to_decimal(tau, 12) + " T made exact by w = e^{j wT/" + std::to_string(q) +
                "} (objective rational in cos(wT/" + std::to_string(q) + "), degree " +
                std::to_string(o.f.den().degree()) + "), Descartes root isolation, MPFR Newton, MPFI enclosure (" +
@@ -349,6 +328,42 @@ Bound certified_frac(const Objective& o, const BoundProblem& pb, int digits) {
 }
 
 }  // namespace
+
+// With w = e^{j phi}, theta = wT = q phi, z = w^q, e^{-j w t_d} = w^{-p} and T/(1 - w^q) = T/((1 - w) S(w)),
+// S = 1 + w + ... + w^{q-1}, so
+//   Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} = Re{T Ht(w) w^-(nq+p)/(1 - w)},  Ht(w) = H(w^q)/S(w):
+// the integer-delay objective of Ht in c = cos(phi), on c in [cos(pi/q), 1] (w in [0, pi/T]).
+// S's roots (w^q = 1, w != 1) lie at phi >= 2 pi/q, outside the domain.
+template <unsigned D>
+std::optional<FracExact> frac_exact_problem(const BoundProblem& pb, int max_degree) {
+  if (!pb.frac_delay) return std::nullopt;
+  const rational tau = *pb.frac_delay / pb.T;
+  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();
+  const long degree = q * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + p + q;
+  if (q < 2 || degree > max_degree) return std::nullopt;
+  auto spread = [q](const QPoly& a) {  // a(w^q)
+    std::vector<rational> c(static_cast<size_t>(a.degree() * q + 1), rational(0));
+    for (int k = 0; k <= a.degree(); ++k) c[static_cast<size_t>(k * q)] = a.coeffs()[static_cast<size_t>(k)];
+    return QPoly(std::move(c));
+  };
+  FracExact fe;
+  fe.problem = pb;
+  fe.problem.frac_delay.reset();
+  fe.problem.H = QRatFun(spread(pb.H.num()), spread(pb.H.den()) * QPoly(std::vector<rational>(static_cast<size_t>(q), rational(1))));
+  fe.problem.delay = static_cast<int>(pb.delay * q + p);
+  fe.domain.q = static_cast<int>(q);
+  if (q == 2) fe.domain.end_lo = fe.domain.end_hi = 0;
+  else if (q == 3) fe.domain.end_lo = fe.domain.end_hi = rational(1, 2);
+  else {
+    interval<D> ce = cos(ipi<D>() / interval<D>(static_cast<double>(q)));
+    fe.domain.end_lo = lower_rational(ce);
+    fe.domain.end_hi = upper_rational(ce);
+  }
+  return fe;
+}
+template std::optional<FracExact> frac_exact_problem<50>(const BoundProblem&, int);
+template std::optional<FracExact> frac_exact_problem<100>(const BoundProblem&, int);
+template std::optional<FracExact> frac_exact_problem<300>(const BoundProblem&, int);
 
 Bound certified_fractional_delay(const Objective& o, const BoundProblem& pb, int digits) {
   if (digits <= 30) return certified_frac<50>(o, pb, digits);

@@ -1,5 +1,7 @@
 #include "hapstab/report/escape.hpp"
 
+#include <cctype>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -188,9 +190,28 @@ std::string url_component(std::string_view s) {
 
 namespace markdown {
 std::string cell(std::string_view s) {
-  static constexpr Substitution table[] = {{'|', "\\|"},   {'\\', "\\\\"}, {'`', "\\`"}, {'[', "\\["}, {']', "\\]"},
-                                           {'<', "&lt;"}, {'&', "&amp;"}, {'\t', " "}};
-  return substitute(s, table);
+  const std::string t = text(s);  // control characters, newlines, malformed UTF-8 -> U+FFFD
+  std::string o;
+  o.reserve(t.size());
+  for (size_t i = 0; i < t.size(); ++i) {
+    const char c = t[i], next = i + 1 < t.size() ? t[i + 1] : '\0';
+    const bool letter = std::isalpha(static_cast<unsigned char>(next)) != 0;
+    switch (c) {
+      case '|': o += "\\|"; break;
+      case '\\': o += "\\\\"; break;
+      case '`': o += "\\`"; break;
+      case '[': o += "\\["; break;
+      case ']': o += "\\]"; break;
+      case '\t': o += ' '; break;
+      // '<' opens raw HTML or an autolink only before a letter, '/', '!' or '?', and '&' an entity
+      // only before a letter or '#': those get CommonMark's backslash escape; the others stay as
+      // they are, so "b* < b" and "K <= 2b/T" read the same in the file and on the page
+      case '<': o += letter || next == '/' || next == '!' || next == '?' ? "\\<" : "<"; break;
+      case '&': o += letter || next == '#' ? "\\&" : "&"; break;
+      default: o += c;
+    }
+  }
+  return o;
 }
 
 std::string code(std::string_view s) {

@@ -22,8 +22,9 @@
 //               from input.
 //   HTML        & < > " ' become entities; `attribute` is the same for a double-quoted
 //               attribute value; `url_component` percent-encodes all but [A-Za-z0-9._~-].
-//   Markdown    a table cell: | \ ` [ ] escaped and < & as entities (no raw HTML, no link,
-//               no broken row; emphasis marks are left, they only change how text looks);
+//   Markdown    a table cell: | \ ` [ ] backslash-escaped, and < before a letter / ! ? and &
+//               before a letter or # (no raw HTML, autolink or entity, no link, no broken row;
+//               "b* < b" stays readable; emphasis marks are left, they only change how text looks);
 //               `code` is a code span whose fence is longer than any backtick run inside.
 // Lines written for file comments (`# ...` in a data file) go through `comment`.
 #pragma once

@@ -145,17 +145,20 @@ Axis read_axis(const std::string& name, const toml::node& node, const std::strin
     fail(file, key, "an axis is a parameter name (letters, digits, _), not index/error/exit");
   const toml::table* t = node.as_table();
   if (!t) fail(file, key, "expected a table, e.g. { values = [\"1\", \"2\"] }");
-  Axis a{name, {}};
+  Axis a{name, {}, false, false};
   if (const toml::node* v = t->get("values")) {
     only_keys(*t, {"values"}, file, key);
     const toml::array* arr = v->as_array();
     if (!arr || arr->empty() || arr->size() > max_axis_values) fail(file, key + ".values", "expected a non-empty list");
     for (size_t i = 0; i < arr->size(); ++i)
       a.values.push_back(number_text(*arr->get(i), file, key + ".values[" + std::to_string(i) + "]"));
+    a.listed = true;
   } else if (t->get("random")) {
     a.values = random_axis(*t, file, key);
   } else if (t->get("from")) {
     a.values = linear_axis(*t, file, key);
+    const toml::node* sc = t->get("scale");
+    a.log = sc && sc->as_string() && sc->as_string()->get() == "log";
   } else {
     fail(file, key, "expected values = [...], from/to/points, or random/from/to/seed");
   }
@@ -229,7 +232,7 @@ Spec parse_spec(const std::string& text, const std::string& file) {
     os << file << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
     throw InputError(os.str());
   }
-  only_keys(root, {"command", "args", "axes"}, file, "(top level)");
+  only_keys(root, {"command", "args", "axes", "set", "units"}, file, "(top level)");
   Spec spec;
   spec.sha256 = sha256_hex(text);
   const toml::node* cmd = root.get("command");
@@ -260,7 +263,37 @@ Spec parse_spec(const std::string& text, const std::string& file) {
       fail(file, "axes." + k, "the axes' values take " + std::to_string(text_bytes) + " bytes as text, more than the limit of " +
                                   std::to_string(max_values_bytes));
   }
+  if (const toml::node* c = root.get("set")) {
+    if (!c->as_table()) fail(file, "set", "expected a table [set] of constants, e.g. B = \"1/2\"");
+    for (const auto& [k, v] : in_file_order(*c->as_table())) {
+      if (!is_name(k) || k == "index" || k == "error" || k == "exit")
+        fail(file, "set." + k, "a constant is a parameter name (letters, digits, _), not index/error/exit");
+      if (std::any_of(spec.axes.begin(), spec.axes.end(), [&](const Axis& a) { return a.name == k; }))
+        fail(file, "set." + k, "is an axis too: a parameter is either constant or swept");
+      spec.constants.push_back({k, number_text(*v, file, "set." + k)});
+    }
+  }
+  if (const toml::node* u = root.get("units")) {
+    if (!u->as_table()) fail(file, "units", "expected a table [units], e.g. K = \"N/m\"");
+    for (const auto& [k, v] : in_file_order(*u->as_table())) {
+      if (!is_name(k)) fail(file, "units." + k, "not a column name (letters, digits, _)");
+      const auto* text = v->as_string();
+      if (!text || text->get().size() > 64 ||
+          !std::all_of(text->get().begin(), text->get().end(), [](char ch) {
+            const auto u = static_cast<unsigned char>(ch);
+            return u >= 0x20 && u != 0x7f;
+          }))
+        fail(file, "units." + k, "expected a unit as a string of at most 64 printable characters, e.g. \"N s/m\"");
+      spec.units.emplace_back(k, text->get());
+    }
+  }
   return spec;
+}
+
+std::string unit_of(const Spec& spec, const std::string& name) {
+  for (const auto& [k, u] : spec.units)
+    if (k == name) return u;
+  return "";
 }
 
 std::string read_spec_file(const std::string& path) {
@@ -285,6 +318,7 @@ std::vector<std::string> point_args(const Spec& spec, uint64_t index, const std:
     if (!a.flag) args.push_back(a.value);
   }
   args.insert(args.end(), extra.begin(), extra.end());
+  for (const Constant& c : spec.constants) args.insert(args.end(), {"--set", c.name + "=" + c.value});
   const auto values = point_values(spec, index);
   for (size_t a = 0; a < values.size(); ++a) args.insert(args.end(), {"--set", spec.axes[a].name + "=" + values[a]});
   return args;

@@ -9,6 +9,11 @@
 //   B = { values = ["0", "1/2", "5"] }                           # as given
 //   c = { from = "1e-3", to = "10", points = 9, scale = "log", digits = 6 }
 //   d = { random = 100, from = "0", to = "1", seed = 7 }         # reproducible everywhere
+//   [set]                                  # constants: --set NAME=VALUE at every point
+//   B = "1/2"
+//   [units]                                # for plots: the unit of an axis or a column
+//   K = "N/m"
+//   bound = "N s/m"
 //
 // Every axis value is an exact rational written exactly: as given, or as a terminating decimal,
 // or p/q. Log-scale values are 10-based geometric points rounded to `digits` significant digits
@@ -28,6 +33,13 @@ namespace hapstab::study {
 struct Axis {
   std::string name;                ///< the parameter set with --set NAME=VALUE
   std::vector<std::string> values; ///< exact values as shown in points.csv and passed to --set
+  bool log = false;                ///< scale = "log" (a plot draws this axis logarithmic)
+  bool listed = false;             ///< values = [...] (a map draws one equal row or column per value)
+};
+
+/// A constant of the spec's [set] table: --set NAME=VALUE at every point, before the axes.
+struct Constant {
+  std::string name, value;  ///< value: an exact number as written
 };
 
 /// An option of the command: `--key value`; `--key` alone when flag (true); left out when omit (false).
@@ -42,6 +54,8 @@ struct Spec {
   std::vector<std::string> command;  ///< {"bound"} or {"multidof", "analyze"}
   std::vector<Arg> args;
   std::vector<Axis> axes;
+  std::vector<Constant> constants;                              ///< [set], in file order
+  std::vector<std::pair<std::string, std::string>> units;       ///< [units]: name -> unit, for plots
   uint64_t points = 1;   ///< product of the axis sizes
   std::string sha256;    ///< of the spec file's bytes
 };
@@ -64,11 +78,15 @@ std::string read_spec_file(const std::string& path);
 /// The axis values of point `index` (last axis fastest).
 std::vector<std::string> point_values(const Spec& spec, uint64_t index);
 /// The command line of point `index` without the program name: command words, the spec's
-/// options, then one `--set NAME=VALUE` per axis. `extra` goes before the --set options.
+/// options, then one `--set NAME=VALUE` per constant and per axis. `extra` goes before the --set
+/// options.
 std::vector<std::string> point_args(const Spec& spec, uint64_t index, const std::vector<std::string>& extra);
 
 /// An exact rational written exactly: integer, terminating decimal ("0.125"), else "p/q".
 std::string exact_text(const rational& q);
+
+/// The unit [units] gives `name`, or "".
+std::string unit_of(const Spec& spec, const std::string& name);
 
 /// The k-th draw of splitmix64 seeded with `seed` (k = 0, 1, ...).
 uint64_t splitmix64(uint64_t seed, uint64_t k);

@@ -1,0 +1,201 @@
+// proofs/ext_max_gain.cpp -- beyond the papers: the passivity boundary as a number
+// (passivity/max_gain.hpp, `bound --max K`). The largest K with b*(H0 + K H1) < b, checked
+//   - against the closed forms of paper 001 solved for the parameter, written here from the
+//     paper's formulas (independent of max_gain.cpp's own table, which is checked too);
+//   - against b* itself: at the ends of K_max's enclosure b* brackets b (b*(K_max) = b exactly when
+//     K_max is rational), and just inside / outside the answer b* is proven below / above b;
+//   - on the convexity it rests on: b*((K1 + K2)/2) <= (b*(K1) + b*(K2))/2, proven by enclosures,
+//     while b* is not monotone in B with a delay (ext.stability.small_T_law).
+#include <random>
+#include <sstream>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/max_gain.hpp"
+#include "hapstab/poly/sturm.hpp"
+#include "proofs/proof.hpp"
+
+namespace {
+
+using namespace hapstab;
+using namespace hapstab::passivity;
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+
+RF backward(const rational& T) { return RF(P(std::vector<rational>{rational(-1), rational(1)}), P::monomial(1, T)); }
+RF tustin(const rational& T) {
+  return RF(P(std::vector<rational>{rational(-2), rational(2)}), P(std::vector<rational>{T, T}));  // (2/T)(z-1)/(z+1)
+}
+
+GainProblem gain(const RF& H0, const RF& H1, const rational& T, int n, const rational& b) {
+  GainProblem g;
+  g.base.H = H0;
+  g.base.T = T;
+  g.base.delay = n;
+  g.H1 = H1;
+  g.b = b;
+  return g;
+}
+
+/// The root of the polynomial p in (lo, hi] inside K_max's enclosure (an algebraic closed form).
+bool root_inside(const P& p, const rational& lo, const rational& hi, const MaxGain& m) {
+  const rational a = std::max(lo, m.enclosure->lo), c = std::min(hi, m.enclosure->hi);
+  return a <= c && (p(a) == 0 || count_real_roots(p, a, c) >= 1);
+}
+
+}  // namespace
+
+HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b at the answer, convexity") {
+  using proofs::Instances;
+  // ---- closed forms of paper 001 solved for the parameter --------------------------------------
+  Instances rational_cf{"instances whose closed form is rational (K_max exact and equal)", 60},
+      algebraic_cf{"(53) instances in the quadratic branch (the root inside the certified enclosure)", 10},
+      table_cf{"instances compared with max_gain_closed_form's own class and value", 80};
+  bool ok = true;
+  std::ostringstream bad;
+  auto fail = [&](const std::string& what) {
+    if (ok) bad << "; first failure: " << what;
+    ok = false;
+  };
+  auto table = [&](const GainProblem& g, const MaxGain& m) {  // every instance here has a closed form
+    const auto cf = max_gain_closed_form(g);
+    table_cf.count(true);
+    if (!cf || !agrees(*cf, m)) fail("max_gain_closed_form " + std::string(cf ? "disagrees" : "names no class") + " at b = " + g.b.str());
+  };
+  for (const rational T : {rational(1, 1000), rational(1, 250)})
+    for (const rational B : {rational(0), rational(1, 10), rational(1, 2), rational(2), rational(3)})
+      for (const rational b : {rational(1, 2), rational(3, 2), rational(5), rational(7), rational(12)}) {
+        if (B >= b) continue;
+        // (46) stiffness: K <= 2(b - B)/T
+        {
+          const GainProblem g = gain(RF(B) * backward(T), RF(rational(1)), T, 0, b);
+          const MaxGain m = max_gain(g, 30);
+          const rational want = 2 * (b - B) / T;
+          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == want)) fail("(46) K, B = " + B.str());
+          table(g, m);
+        }
+        // (46) damping at K = 400: B <= b - KT/2 when positive
+        const rational K(400);
+        if (b > K * T / 2) {
+          const GainProblem g = gain(RF(K), backward(T), T, 0, b);
+          const MaxGain m = max_gain(g, 30);
+          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == b - K * T / 2)) fail("(46) B, K = 400");
+          table(g, m);
+        }
+        // K z^-n, n = 1..3: K <= 2b/((2n+1)T)
+        for (int n = 1; n <= 3; ++n) {
+          const GainProblem g = gain(RF(rational(0)), RF(rational(1)), T, n, b);
+          const MaxGain m = max_gain(g, 30);
+          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * b / (rational(2 * n + 1) * T)))
+            fail("K z^-n, n = " + std::to_string(n));
+          table(g, m);
+        }
+        // (53), n = 1, stiffness: b >= 5B: K <= 2(b + B)/(3T); else K T = 2 sqrt(B(2b - B)) - 2B,
+        // the positive root of T^2 K^2 + 4 B T K + 8 B (B - b)
+        if (B > 0) {
+          const GainProblem g = gain(RF(B) * backward(T), RF(rational(1)), T, 1, b);
+          const MaxGain m = max_gain(g, 30);
+          if (b >= 5 * B) {
+            if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * (b + B) / (3 * T))) fail("(53) K, b >= 5B");
+          } else {
+            const P q(std::vector<rational>{8 * B * (B - b), 4 * B * T, T * T});
+            algebraic_cf.count(true);
+            if (!root_inside(q, rational(0), 4 * B / T, m)) fail("(53) K, b < 5B, B = " + B.str() + ", b = " + b.str());
+          }
+          table(g, m);
+        }
+        // Tustin walls, n = 0: K <= 2(b + B)/T; n = 1: K <= 2(b + B)/(3T) when b > 3B
+        {
+          const GainProblem g0 = gain(RF(B) * tustin(T), RF(rational(1)), T, 0, b);
+          const MaxGain m0 = max_gain(g0, 30);
+          if (rational_cf.count(true) && !(m0.status == Status::exact && m0.value == 2 * (b + B) / T)) fail("Tustin n = 0");
+          table(g0, m0);
+          if (b > 3 * B) {
+            const GainProblem g1 = gain(RF(B) * tustin(T), RF(rational(1)), T, 1, b);
+            const MaxGain m1 = max_gain(g1, 30);
+            if (rational_cf.count(true) && !(m1.status == Status::exact && m1.value == 2 * (b + B) / (3 * T))) fail("Tustin n = 1");
+            table(g1, m1);
+          }
+        }
+      }
+  check.claim("ext.max_gain.closed_forms", "(46), (53), Ex. 3-4 solved for K",
+              "bound --max equals paper 001's closed forms solved for the parameter: K <= 2(b - B)/T and B <= b - KT/2 (46), "
+              "K z^-n: K <= 2b/((2n+1)T), n = 1 wall (53): K <= 2(b + B)/(3T) if b >= 5B, else KT = 2 sqrt(B(2b - B)) - 2B, "
+              "Tustin walls n = 0, 1 -- at T = 1, 4 ms, B = 0..3, b = 1/2..12",
+              Status::certified, ok,
+              "rational closed forms equal the exact K_max; algebraic ones lie in its certified enclosure (exact Sturm count)" +
+                  bad.str(),
+              {rational_cf, algebraic_cf, table_cf});
+
+  // ---- b* = b at the answer ----------------------------------------------------------------------
+  Instances exact_at{"exact K_max with b*(K_max) = b exactly", 4}, bracket_at{"certified K_max bracketed by b*", 8},
+      sides{"b* proven < b at K_max(1 - 1e-12) and >= b at K_max(1 + 1e-12)", 12};
+  ok = true;
+  bad.str("");
+  const rational T(1, 1000);
+  std::vector<std::pair<std::string, GainProblem>> cases;
+  for (int n = 0; n <= 3; ++n)
+    cases.push_back({"wall K, n = " + std::to_string(n), gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, n, rational(3, 2))});
+  cases.push_back({"wall B, n = 1", gain(RF(rational(300)), backward(T), T, 1, rational(2))});
+  cases.push_back({"wall B, n = 2", gain(RF(rational(300)), backward(T), T, 2, rational(2))});
+  cases.push_back({"Tustin K, n = 2", gain(RF(rational(1, 2)) * tustin(T), RF(rational(1)), T, 2, rational(3))});
+  for (const rational td : {rational(1, 2000), rational(3, 10000), rational(37, 100000)}) {
+    GainProblem g = gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, 0, rational(3, 2));
+    g.base.frac_delay = td;
+    cases.push_back({"wall K, t_d = " + to_decimal(td, 6), g});
+  }
+  std::mt19937 rng(4141);
+  std::uniform_int_distribution<int> pick(-8, 8);
+  for (int k = 0; k < 6; ++k) {  // c (z - a)/(z - p) + K, |p| <= 0.8
+    const rational a(pick(rng), 10), p(pick(rng), 10), c(1 + (pick(rng) + 8), 4);
+    const RF H0 = RF(c) * RF(P(std::vector<rational>{-a, rational(1)}), P(std::vector<rational>{-p, rational(1)}));
+    cases.push_back({"random first-order H, n = " + std::to_string(k % 3),
+                     gain(H0, k % 2 ? RF(rational(1)) : backward(T), T, k % 3, rational(4))});
+  }
+  for (const auto& [what, g] : cases) {
+    const MaxGain m = max_gain(g, 30);
+    if (m.outcome != Outcome::holds || m.infinite) continue;
+    const BoundaryCheck c = check_boundary(g, m, 30);
+    if (m.status == Status::exact) {
+      exact_at.count(true);
+      if (!(c.at_lo.status == Status::exact && c.at_lo.value == g.b)) fail(what + ": b*(K_max) != b");
+    } else {
+      bracket_at.count(true);
+      if (!c.holds) fail(what + ": b* does not bracket b on K_max's enclosure");
+    }
+    const rational K = m.value, eps = pow10(-12);
+    const Bound below = bound_certified(at_gain(g, K * (1 - eps)), 30), above = bound_certified(at_gain(g, K * (1 + eps)), 30);
+    const bool sides_ok = !below.infinite && below.enclosure->hi < g.b && (above.infinite || above.enclosure->lo >= g.b);
+    sides.count(true);
+    if (!sides_ok) fail(what + ": b* not below b just inside, or not above just outside");
+  }
+  check.claim("ext.max_gain.boundary", "(45), (54)",
+              "b*(K_max) = b: bound at the ends of K_max's certified enclosure brackets b (exactly b for a rational K_max), "
+              "and b* is proven < b at K_max(1 - 1e-12), >= b at K_max(1 + 1e-12) -- walls in K and in B with n = 0..3, a "
+              "Tustin wall, t_d = T/2, 3T/10, 37T/100 (the bracketing path), 6 pseudo-random first-order H (seed 4141)",
+              Status::certified, ok, std::to_string(cases.size()) + " cases" + bad.str(), {exact_at, bracket_at, sides});
+
+  // ---- convexity in K, not monotonicity -----------------------------------------------------------
+  Instances pairs{"(K1, K2) pairs with both b* finite", 20};
+  ok = true;
+  std::uniform_int_distribution<int> gainpick(0, 4000);
+  for (int k = 0; k < 24; ++k) {
+    const GainProblem& g = cases[static_cast<size_t>(k) % cases.size()].second;
+    const rational K1(gainpick(rng)), K2(gainpick(rng));
+    const Bound b1 = bound_certified(at_gain(g, K1), 20), b2 = bound_certified(at_gain(g, K2), 20),
+                bm = bound_certified(at_gain(g, (K1 + K2) / 2), 20);
+    if (!pairs.count(!b1.infinite && !b2.infinite)) continue;
+    ok = ok && !bm.infinite && bm.enclosure->hi <= (b1.enclosure->hi + b2.enclosure->hi) / 2;
+  }
+  // the n = 1 wall in B at K = 2000, T = 1 ms: b*(0) = 3KT/2 = 3 > b*(KT/(2 sqrt 2)) ~ 2.41 < b*(2) = 3.25
+  const GainProblem wb = gain(RF(rational(2000)), backward(T), T, 1, rational(5));
+  const Bound at0 = bound_certified(at_gain(wb, 0), 20), atmid = bound_certified(at_gain(wb, rational(707, 1000)), 20),
+              at2 = bound_certified(at_gain(wb, 2), 20);
+  const bool not_monotone = atmid.enclosure->hi < at0.enclosure->lo && atmid.enclosure->hi < at2.enclosure->lo;
+  check.claim("ext.max_gain.convex", "(45) in K",
+              "b*(H0 + K H1) is convex in K (a supremum of affine functions), so {K : b* < b} is an interval and K_max = "
+              "min over w with f1 > 0 of (b - eta - f0)/f1: certified b* at the midpoint <= the mean of the ends on 24 pairs; "
+              "convex is not monotone: the n = 1 wall has b*(B = 0) = 3 > b*(B = 0.707) < b*(B = 2) at K = 2000, T = 1 ms",
+              Status::certified, ok && not_monotone,
+              "b*(B = 0, 0.707, 2) = " + at0.decimal + ", " + atmid.decimal + ", " + at2.decimal, {pairs});
+}
