@@ -316,7 +316,7 @@ class Parser {
         auto it = opt_.parameters.find(t.text);
         if (it != opt_.parameters.end()) return RF(P(it->second));
         if (t.text == "T") {
-          if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (--T)");
+          if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (" + opt_.period_hint + ")");
           used_T_ = true;
           return RF(P(opt_.T));
         }
@@ -324,7 +324,9 @@ class Parser {
           fail(t, std::string("the expression mixes the variables s and z (this one is in ") + var_ + ")");
         std::string known = std::string(1, var_) + ", T";
         for (const auto& [k, v] : opt_.parameters) known += ", " + k;
-        fail(t, "unknown name '" + t.text + "' (known: " + known + "; give parameters with --set NAME=VALUE)");
+        std::string hint = opt_.parameter_hint;
+        if (const size_t at = hint.find("{}"); at != std::string::npos) hint.replace(at, 2, t.text);
+        fail(t, "unknown name '" + t.text + "' (known: " + known + "; " + hint + ")");
       }
       case Tok::lparen: {
         const size_t open = pos_, close = close_[pos_];

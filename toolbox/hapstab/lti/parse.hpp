@@ -58,6 +58,11 @@ struct ParseOptions {
   std::map<std::string, rational> parameters;
   /// Optional (not owned): see ParseMemo.
   ParseMemo* memo = nullptr;
+  /// How the caller takes parameters and the sample period, for the messages of an unknown name
+  /// and of a missing T: the command line's words by default; the Python module says
+  /// "pass params={'K': ...}" ({} stands for the unknown name) and "T=...".
+  std::string parameter_hint = "give parameters with --set NAME=VALUE";
+  std::string period_hint = "--T";
 };
 
 /// The names `text` refers to (parameters, T, the variable), found by the parser's own lexer:
