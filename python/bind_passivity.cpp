@@ -150,10 +150,8 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
   const Columns cols = Columns::from_python(names, columns);
   check_names(expr, "H", 'z', fixed, cols);
   const size_t n = cols.points;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> value(n, nan), lo(n, nan), hi(n, nan), omega(n, nan);
-  std::vector<int8_t> status(n, code_failed);
-  std::vector<std::optional<std::string>> exact(n), error(n);
+  PointColumns c(n);
+  std::vector<double> omega(n, std::numeric_limits<double>::quiet_NaN());
   run_points(n, jobs, [&](uint64_t i) {
     try {
       ParseOptions po = parse_options('z', o.T, cols.at(fixed, i));
@@ -164,29 +162,23 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
         throw InputError(std::string("H: ") + e.what());
       }
       const Bound b = compute(problem(H.H, o), o);
-      status[i] = status_code(b.status);
+      c.status[i] = status_code(b.status);
       omega[i] = omega_double(b);
       if (b.infinite) {
-        value[i] = lo[i] = hi[i] = std::numeric_limits<double>::infinity();
+        c.value[i] = c.lo[i] = c.hi[i] = std::numeric_limits<double>::infinity();
         return;
       }
-      value[i] = b.value_double();
-      lo[i] = double_outward(b.enclosure->lo, -1);
-      hi[i] = b.kind == Method::grid && b.status == Status::numeric ? std::numeric_limits<double>::infinity()
-                                                                    : double_outward(b.enclosure->hi, +1);
-      if (b.status == Status::exact) exact[i] = b.value.str();
+      c.value[i] = b.value_double();
+      c.lo[i] = double_outward(b.enclosure->lo, -1);
+      c.hi[i] = b.kind == Method::grid && b.status == Status::numeric ? std::numeric_limits<double>::infinity()
+                                                                      : double_outward(b.enclosure->hi, +1);
+      if (b.status == Status::exact) c.exact[i] = b.value.str();
     } catch (const std::exception& e) {
-      error[i] = point_error(e);
+      c.error[i] = point_error(e);
     }
   });
-  py::dict d;
-  d["value"] = doubles(value);
-  d["lo"] = doubles(lo);
-  d["hi"] = doubles(hi);
-  d["status"] = codes(status);
+  py::dict d = c.dict();
   d["omega"] = doubles(omega);
-  d["exact"] = strings(exact);
-  d["error"] = strings(error);
   return d;
 }
 
@@ -262,12 +254,13 @@ py::dict r_many(const std::string& T_text, const py::array_t<double, py::array::
     run_points(blocks, jobs, [&](uint64_t k) {
       for (size_t i = k * block; i < std::min(n, (k + 1) * block); ++i) {
         const double theta = wp[i] * T;
-        const double v = sampling::r_eq44(T, theta).imag();
-        const double s = std::sin(theta / 2);
+        const double t = std::tan(theta / 2);
+        const double v = -(T / 2) / t;  // r_eq44 (sampling/r_forms.hpp), its tan kept for the band
         // 1.51 eps |Im| for the rounded theta (r_forms.hpp), plus theta's own rounding (and T's,
-        // when T is not a double) through |d Im/d theta| = (T/4)/sin^2(theta/2); 2x for safety
+        // when T is not a double) through |d Im/d theta| = (T/4)/sin^2(theta/2), sin^2 = t^2/(1 + t^2);
+        // 2x for safety
         const double dtheta = std::fabs(theta) * eps * (T_exact ? 0.5 : 1.5);
-        const double err = 2 * (1.51 * eps * std::fabs(v) + T / 4 * dtheta / (s * s));
+        const double err = 2 * (1.51 * eps * std::fabs(v) + T / 4 * dtheta * (1 + t * t) / (t * t));
         imp[i] = v;
         lop[i] = v - err;
         hip[i] = v + err;

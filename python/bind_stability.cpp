@@ -125,64 +125,49 @@ py::dict stability_many(const LoopInput& in, const std::map<std::string, std::st
   check_names(in.H, "H", 'z', named, cols);
   if (!in.op.empty()) check_names(in.op, "operator", 's', named, cols);
   const size_t n = cols.points;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<int8_t> stable(n, -1), status(n, code_failed);
-  std::vector<double> value(n, nan), lo(n, nan), hi(n, nan);
-  std::vector<std::optional<std::string>> exact(n), error(n);
+  PointColumns c(n);
+  std::vector<int8_t> stable(n, -1);
   run_points(n, jobs, [&](uint64_t i) {
     try {
       const stability::Loop loop = make_loop(in, cols.at(fixed, i));
-      if (in.gain.empty()) {
+      if (in.gain.empty()) {  // the spectral radius, and the verdict
         const auto r = stability::decide(loop);
         if (r.verdict.decided()) {
           stable[i] = r.verdict.holds() ? 1 : 0;
-          status[i] = status_code(r.verdict.status);
+          c.status[i] = status_code(r.verdict.status);
         } else {
-          error[i] = "undecided: " + r.verdict.evidence;
+          c.error[i] = "undecided: " + r.verdict.evidence;
         }
         if (r.spectral_radius) {
-          lo[i] = double_outward(r.spectral_radius->lo, -1);
-          hi[i] = double_outward(r.spectral_radius->hi, +1);
-          value[i] = to_real<double>((r.spectral_radius->lo + r.spectral_radius->hi) / 2);
+          c.lo[i] = double_outward(r.spectral_radius->lo, -1);
+          c.hi[i] = double_outward(r.spectral_radius->hi, +1);
+          c.value[i] = to_real<double>((r.spectral_radius->lo + r.spectral_radius->hi) / 2);
         }
         return;
       }
       const auto m = stability::max_gain(loop, in.digits, in.gain);
       if (m.outcome == Outcome::undecided) {
-        error[i] = "undecided: " + m.note;
+        c.error[i] = "undecided: " + m.note;
         return;
       }
-      status[i] = status_code(m.exact ? Status::exact : m.outcome == Outcome::fails ? Status::exact : m.status);
+      c.status[i] = status_code(m.exact || m.outcome == Outcome::fails ? Status::exact : m.status);
       if (m.outcome == Outcome::fails) {
-        value[i] = lo[i] = hi[i] = 0;
-        exact[i] = "0";
+        c.value[i] = c.lo[i] = c.hi[i] = 0;
+        c.exact[i] = "0";
       } else if (m.infinite) {
-        value[i] = lo[i] = hi[i] = std::numeric_limits<double>::infinity();
+        c.value[i] = c.lo[i] = c.hi[i] = std::numeric_limits<double>::infinity();
       } else {
-        lo[i] = double_outward(m.enclosure.lo, -1);
-        hi[i] = double_outward(m.enclosure.hi, +1);
-        value[i] = to_real<double>(m.exact ? *m.exact : (m.enclosure.lo + m.enclosure.hi) / 2);
-        if (m.exact) exact[i] = m.exact->str();
+        c.lo[i] = double_outward(m.enclosure.lo, -1);
+        c.hi[i] = double_outward(m.enclosure.hi, +1);
+        c.value[i] = to_real<double>(m.exact ? *m.exact : (m.enclosure.lo + m.enclosure.hi) / 2);
+        if (m.exact) c.exact[i] = m.exact->str();
       }
     } catch (const std::exception& e) {
-      error[i] = point_error(e);
+      c.error[i] = point_error(e);
     }
   });
-  py::dict d;
-  if (in.gain.empty()) {
-    d["stable"] = codes(stable);
-    d["status"] = codes(status);
-    d["radius_lo"] = doubles(lo);
-    d["radius_hi"] = doubles(hi);
-    d["radius"] = doubles(value);
-  } else {
-    d["value"] = doubles(value);
-    d["lo"] = doubles(lo);
-    d["hi"] = doubles(hi);
-    d["status"] = codes(status);
-    d["exact"] = strings(exact);
-  }
-  d["error"] = strings(error);
+  py::dict d = c.dict();
+  if (in.gain.empty()) d["stable"] = codes(stable);
   return d;
 }
 
@@ -305,10 +290,7 @@ py::dict levels_many(const std::string& expr, const std::string& T_text, const s
   const Columns cols = Columns::from_python(names, columns);
   check_names(expr, "H", 'z', fixed, cols);
   const size_t n = cols.points;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> value(n, nan), lo(n, nan), hi(n, nan);
-  std::vector<int8_t> status(n, code_failed);
-  std::vector<std::optional<std::string>> exact(n), error(n);
+  PointColumns c(n);
   run_points(n, jobs, [&](uint64_t i) {
     try {
       TransferFunction G;
@@ -320,33 +302,26 @@ py::dict levels_many(const std::string& expr, const std::string& T_text, const s
       const lmi::Levels v = lmi::passivity_levels(model_of(G), o.kind, o.lemma, o.backend, o.grid, o.digits);
       const lmi::PassivityLevel& main = v.main();
       if (!v.any) {
-        error[i] = "numerical failure: no method gave a level (" + v.note + ")";
+        c.error[i] = "numerical failure: no method gave a level (" + v.note + ")";
         return;
       }
       if (v.which == lmi::Levels::Main::cert && main.enclosure) {
-        lo[i] = v.only_bound ? -std::numeric_limits<double>::infinity() : double_outward(main.enclosure->lo, -1);
-        hi[i] = double_outward(main.enclosure->hi, +1);
-        value[i] = to_real<double>((main.enclosure->lo + main.enclosure->hi) / 2);
-        status[i] = v.only_bound ? code_numeric : status_code(main.status);
-        if (main.status == Status::exact && !v.only_bound) exact[i] = main.enclosure->lo.str();
-        if (v.only_bound) error[i] = "upper bound only: " + v.note;
+        c.lo[i] = v.only_bound ? -std::numeric_limits<double>::infinity() : double_outward(main.enclosure->lo, -1);
+        c.hi[i] = double_outward(main.enclosure->hi, +1);
+        c.value[i] = to_real<double>((main.enclosure->lo + main.enclosure->hi) / 2);
+        c.status[i] = v.only_bound ? code_numeric : status_code(main.status);
+        if (main.status == Status::exact && !v.only_bound) c.exact[i] = main.enclosure->lo.str();
+        if (v.only_bound) c.error[i] = "upper bound only: " + v.note;
       } else {
-        value[i] = hi[i] = main.level;
-        lo[i] = main.lower_bound ? double_outward(*main.lower_bound, -1) : main.level;
-        status[i] = status_code(main.status);
+        c.value[i] = c.hi[i] = main.level;
+        c.lo[i] = main.lower_bound ? double_outward(*main.lower_bound, -1) : main.level;
+        c.status[i] = status_code(main.status);
       }
     } catch (const std::exception& e) {
-      error[i] = point_error(e);
+      c.error[i] = point_error(e);
     }
   });
-  py::dict d;
-  d["value"] = doubles(value);
-  d["lo"] = doubles(lo);
-  d["hi"] = doubles(hi);
-  d["status"] = codes(status);
-  d["exact"] = strings(exact);
-  d["error"] = strings(error);
-  return d;
+  return c.dict();
 }
 
 }  // namespace

@@ -74,6 +74,17 @@ void run_points(size_t n, unsigned jobs, const std::function<void(uint64_t)>& fn
 /// A failed point's message (InputError, NumericalError, anything else as "internal error: ...").
 std::string point_error(const std::exception& e);
 
+/// The columns every vectorised call returns, one entry per point: value, lo, hi (NaN until the
+/// point runs), status (failed until it runs), exact (the exact value where the status is exact)
+/// and error (why the point failed). dict() hands them to Python as numpy arrays.
+struct PointColumns {
+  explicit PointColumns(size_t n);
+  std::vector<double> value, lo, hi;
+  std::vector<int8_t> status;
+  std::vector<std::optional<std::string>> exact, error;
+  py::dict dict() const;  ///< {"value", "lo", "hi", "status", "exact", "error"}
+};
+
 /// A float64 numpy array of n entries, and one of int8.
 py::array_t<double> doubles(const std::vector<double>& v);
 py::array_t<int8_t> codes(const std::vector<int8_t>& v);

@@ -23,6 +23,7 @@
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <nlohmann/json.hpp>
 
@@ -160,6 +161,21 @@ std::string point_error(const std::exception& e) {
   if (dynamic_cast<const InputError*>(&e)) return e.what();
   if (dynamic_cast<const NumericalError*>(&e)) return std::string("numerical failure: ") + e.what();
   return std::string("internal error: ") + e.what();
+}
+
+PointColumns::PointColumns(size_t n)
+    : value(n, std::numeric_limits<double>::quiet_NaN()), lo(value), hi(value), status(n, code_failed), exact(n),
+      error(n) {}
+
+py::dict PointColumns::dict() const {
+  py::dict d;
+  d["value"] = doubles(value);
+  d["lo"] = doubles(lo);
+  d["hi"] = doubles(hi);
+  d["status"] = codes(status);
+  d["exact"] = strings(exact);
+  d["error"] = strings(error);
+  return d;
 }
 
 py::array_t<double> doubles(const std::vector<double>& v) {

@@ -344,9 +344,7 @@ def stability(plant: str, H: Any, T: Any = None, delay: int = 0, operator: Optio
     if shape is not None:
         d = _call(_core.stability_many, plant, H_text, operator, T_text, delay, max, digits, fixed, names, columns,
                   _jobs(jobs))
-        if max is None:
-            d = {"value": d["radius"], "lo": d["radius_lo"], "hi": d["radius_hi"], "status": d["status"],
-                 "stable": d["stable"], "error": d["error"], "exact": [None] * len(d["radius"])}
+        if max is None:  # value/lo/hi: the spectral radius; stable: 1, 0, -1 undecided
             return ResultArray(Stability, d, shape, "spectral radius of the sampled loop (stability::decide)", arrays)
         return ResultArray(MaxGain, d, shape, f"largest stable {max} (stability::max_gain)", arrays)
     d = _call(_core.stability, plant, H_text, operator, T_text, delay, max, digits, fixed)
