@@ -5,7 +5,8 @@
 //   r_double       Im r(jw) of (44) in double at one w (r_eq44), as r(T, omega_array)
 //   bound_fast     the wall K + B(z-1)/(Tz), T = 1 ms, B = 5, delay 1, at one K: parse + fast b*
 //   bound_cert     the same, certified (30 digits), as bound(..., params={"K": array})
-//   parse          the parse alone (the part of a point that repeats per parameter value)
+//   parse          parse_tf of the wall at one K (what a point cost before the expression was parsed once)
+//   parsed_at      ParsedExpression::at, the wall at one K from the expression parsed once (the binding's)
 // K runs over the values Python sweeps (0 .. 40000), so the exact and certified cases mix alike.
 #include <benchmark/benchmark.h>
 
@@ -33,11 +34,14 @@ ParseOptions options(double K) {
 
 void bound_point(benchmark::State& st, passivity::Method m) {
   const long n = st.range(0);  // the number of K values of the Python sweep
+  ParseOptions fixed = options(0);
+  fixed.parameters.erase("K");
+  const ParsedExpression wall_of(wall, fixed, {"K"});
   long i = 0;
   for (auto _ : st) {
     const double K = 40000.0 * double(i % n) / double(n - 1);
     ++i;
-    const TransferFunction H = parse_tf(wall, options(K));
+    const TransferFunction H = wall_of.at({{"K", exact_rational(K)}});
     passivity::BoundProblem p;
     p.H = H.H;
     p.T = H.T;
@@ -58,6 +62,17 @@ void BM_parse(benchmark::State& st) {
   }
 }
 
+void BM_parsed_at(benchmark::State& st) {
+  ParseOptions fixed = options(0);
+  fixed.parameters.erase("K");
+  const ParsedExpression wall_of(wall, fixed, {"K"});
+  long i = 0;
+  for (auto _ : st) {
+    TransferFunction H = wall_of.at({{"K", exact_rational(double(++i % 40000))}});
+    keep(H);
+  }
+}
+
 void BM_r_double(benchmark::State& st) {
   const double T = 1e-3;
   double w = 0.5;
@@ -73,6 +88,7 @@ void BM_r_double(benchmark::State& st) {
 
 BENCHMARK(BM_r_double)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_parse)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_parsed_at)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_bound_fast)->Arg(100000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_bound_cert)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

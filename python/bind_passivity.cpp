@@ -82,20 +82,7 @@ Bound compute(const BoundProblem& p, const BoundOptions& o) {
 int enclosure_digits(const Bound& b, int digits) { return b.status == Status::numeric ? 17 : digits + 5; }
 
 py::dict bound_record(const Bound& b, int digits) {
-  if (b.infinite) {
-    py::dict d;
-    const double inf = std::numeric_limits<double>::infinity();
-    d["value_exact"] = py::none();
-    d["mid"] = inf;
-    d["lo"] = inf;
-    d["hi"] = inf;
-    d["lo_text"] = "inf";
-    d["hi_text"] = "inf";
-    d["status"] = to_string(b.status);
-    d["method"] = b.method;
-    d["note"] = b.note;
-    return d;
-  }
+  if (b.infinite) return record_infinite(b.status, b.method, b.note);
   py::dict d = record(b, enclosure_digits(b, digits));
   if (b.kind == Method::grid && b.status == Status::numeric) {  // the grid maximum only estimates b* from below
     d["hi"] = std::numeric_limits<double>::infinity();
@@ -148,16 +135,15 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
   std::map<std::string, rational> fixed;
   for (const auto& [k, v] : fixed_texts) fixed[k] = exact_arg(v, "params['" + k + "']");
   const Columns cols = Columns::from_python(names, columns);
-  check_names(expr, "H", 'z', fixed, cols);
+  const ParsedExpression H_of = parsed(expr, "H", 'z', o.T, fixed, cols);  // parsed once
   const size_t n = cols.points;
   PointColumns c(n);
   std::vector<double> omega(n, std::numeric_limits<double>::quiet_NaN());
   run_points(n, jobs, [&](uint64_t i) {
     try {
-      ParseOptions po = parse_options('z', o.T, cols.at(fixed, i));
       TransferFunction H;
       try {
-        H = parse_tf(expr, po);
+        H = H_of.at(cols.at({}, i));
       } catch (const InputError& e) {
         throw InputError(std::string("H: ") + e.what());
       }
@@ -168,10 +154,12 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
         c.value[i] = c.lo[i] = c.hi[i] = std::numeric_limits<double>::infinity();
         return;
       }
+      c.enclose(i, b.enclosure->lo, b.enclosure->hi, enclosure_digits(b, o.digits));
       c.value[i] = b.value_double();
-      c.lo[i] = double_outward(b.enclosure->lo, -1);
-      c.hi[i] = b.kind == Method::grid && b.status == Status::numeric ? std::numeric_limits<double>::infinity()
-                                                                      : double_outward(b.enclosure->hi, +1);
+      if (b.kind == Method::grid && b.status == Status::numeric) {  // the grid maximum estimates b* from below
+        c.hi[i] = std::numeric_limits<double>::infinity();
+        c.hi_exact[i] = "inf";
+      }
       if (b.status == Status::exact) c.exact[i] = b.value.str();
     } catch (const std::exception& e) {
       c.error[i] = point_error(e);

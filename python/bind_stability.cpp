@@ -66,19 +66,8 @@ py::dict max_record(const stability::MaxGain& m, const LoopInput& in) {
   d["name"] = in.gain;
   d["outcome"] = to_string(m.outcome);
   const bool found = m.outcome == Outcome::holds;
-  const double inf = std::numeric_limits<double>::infinity();
   if (found && m.infinite) {
-    py::dict v;
-    v["value_exact"] = py::none();
-    v["mid"] = inf;
-    v["lo"] = inf;
-    v["hi"] = inf;
-    v["lo_text"] = "inf";
-    v["hi_text"] = "inf";
-    v["status"] = to_string(m.status);
-    v["method"] = "stability::max_gain: stable for every gain > 0";
-    v["note"] = m.note;
-    d["max"] = v;
+    d["max"] = record_infinite(m.status, "stability::max_gain: stable for every gain > 0", m.note);
   } else if (found) {
     const rational mid = m.exact ? *m.exact : (m.enclosure.lo + m.enclosure.hi) / 2;
     d["max"] = record(m.enclosure, mid, m.exact ? Status::exact : m.status,
@@ -138,11 +127,7 @@ py::dict stability_many(const LoopInput& in, const std::map<std::string, std::st
         } else {
           c.error[i] = "undecided: " + r.verdict.evidence;
         }
-        if (r.spectral_radius) {
-          c.lo[i] = double_outward(r.spectral_radius->lo, -1);
-          c.hi[i] = double_outward(r.spectral_radius->hi, +1);
-          c.value[i] = to_real<double>((r.spectral_radius->lo + r.spectral_radius->hi) / 2);
-        }
+        if (r.spectral_radius) c.enclose(i, r.spectral_radius->lo, r.spectral_radius->hi, 17);
         return;
       }
       const auto m = stability::max_gain(loop, in.digits, in.gain);
@@ -157,10 +142,8 @@ py::dict stability_many(const LoopInput& in, const std::map<std::string, std::st
       } else if (m.infinite) {
         c.value[i] = c.lo[i] = c.hi[i] = std::numeric_limits<double>::infinity();
       } else {
-        c.lo[i] = double_outward(m.enclosure.lo, -1);
-        c.hi[i] = double_outward(m.enclosure.hi, +1);
-        c.value[i] = to_real<double>(m.exact ? *m.exact : (m.enclosure.lo + m.enclosure.hi) / 2);
-        if (m.exact) c.exact[i] = m.exact->str();
+        c.enclose(i, m.enclosure.lo, m.enclosure.hi, in.digits + 3);
+        if (m.exact) c.value[i] = to_real<double>(*m.exact), c.exact[i] = m.exact->str();
       }
     } catch (const std::exception& e) {
       c.error[i] = point_error(e);
@@ -288,14 +271,14 @@ py::dict levels_many(const std::string& expr, const std::string& T_text, const s
   std::map<std::string, rational> fixed;
   for (const auto& [k, v] : fixed_texts) fixed[k] = exact_arg(v, "params['" + k + "']");
   const Columns cols = Columns::from_python(names, columns);
-  check_names(expr, "H", 'z', fixed, cols);
+  const ParsedExpression G_of = parsed(expr, "H", 'z', T, fixed, cols);  // parsed once
   const size_t n = cols.points;
   PointColumns c(n);
   run_points(n, jobs, [&](uint64_t i) {
     try {
       TransferFunction G;
       try {
-        G = parse_tf(expr, parse_options('z', T, cols.at(fixed, i)));
+        G = G_of.at(cols.at({}, i));
       } catch (const InputError& e) {
         throw InputError(std::string("H: ") + e.what());
       }
@@ -306,9 +289,8 @@ py::dict levels_many(const std::string& expr, const std::string& T_text, const s
         return;
       }
       if (v.which == lmi::Levels::Main::cert && main.enclosure) {
-        c.lo[i] = v.only_bound ? -std::numeric_limits<double>::infinity() : double_outward(main.enclosure->lo, -1);
-        c.hi[i] = double_outward(main.enclosure->hi, +1);
-        c.value[i] = to_real<double>((main.enclosure->lo + main.enclosure->hi) / 2);
+        c.enclose(i, main.enclosure->lo, main.enclosure->hi, o.digits + 3);
+        if (v.only_bound) c.lo[i] = -std::numeric_limits<double>::infinity(), c.lo_exact[i] = "-inf";
         c.status[i] = v.only_bound ? code_numeric : status_code(main.status);
         if (main.status == Status::exact && !v.only_bound) c.exact[i] = main.enclosure->lo.str();
         if (v.only_bound) c.error[i] = "upper bound only: " + v.note;

@@ -46,6 +46,8 @@ ParseOptions parse_options(char variable, const rational& T, std::map<std::strin
 /// digits, outward (exact decimals that still enclose). Without an enclosure (a numeric value
 /// with no stated error): lo = hi = mid, texts of mid, and the status says numeric.
 py::dict record(const Certified<rational>& c, int digits);
+/// The record of an infinite value (b* = inf, a gain stable for every K): value, lo, hi all +inf.
+py::dict record_infinite(Status status, const std::string& method, const std::string& note);
 py::dict record(const std::optional<Enclosure<rational>>& e, const rational& mid, Status status, const std::string& method,
                 const std::string& note, int digits);
 
@@ -61,6 +63,11 @@ struct Columns {
   std::map<std::string, rational> at(const std::map<std::string, rational>& fixed, size_t i) const;
 };
 
+/// The expression `expr` (named `what` in messages) parsed once for the columns' parameters, the
+/// fixed ones given: lti/parse.hpp's ParsedExpression, the parser's messages in Python's words.
+ParsedExpression parsed(const std::string& expr, const std::string& what, char variable, const rational& T,
+                        const std::map<std::string, rational>& fixed, const Columns& cols);
+
 /// Refuses (InputError naming `what`) an expression that names anything but the variable, T and
 /// the parameters given (fixed or columns): a mistake of the whole call, raised before its points
 /// run, not a failure of each point.
@@ -75,14 +82,17 @@ void run_points(size_t n, unsigned jobs, const std::function<void(uint64_t)>& fn
 std::string point_error(const std::exception& e);
 
 /// The columns every vectorised call returns, one entry per point: value, lo, hi (NaN until the
-/// point runs), status (failed until it runs), exact (the exact value where the status is exact)
+/// point runs), status (failed until it runs), exact (the exact value where the status is exact),
+/// lo_exact/hi_exact (the ends as outward decimals, where the floats may not decide a comparison)
 /// and error (why the point failed). dict() hands them to Python as numpy arrays.
 struct PointColumns {
   explicit PointColumns(size_t n);
   std::vector<double> value, lo, hi;
   std::vector<int8_t> status;
-  std::vector<std::optional<std::string>> exact, error;
-  py::dict dict() const;  ///< {"value", "lo", "hi", "status", "exact", "error"}
+  std::vector<std::optional<std::string>> exact, lo_exact, hi_exact, error;
+  /// Point i's enclosure [a, b] (outward to floats and to `digits` decimals) and its midpoint.
+  void enclose(size_t i, const rational& a, const rational& b, int digits);
+  py::dict dict() const;  ///< {"value", "lo", "hi", "status", "exact", "lo_exact", "hi_exact", "error"}
 };
 
 /// A float64 numpy array of n entries, and one of int8.

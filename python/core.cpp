@@ -95,6 +95,21 @@ py::dict record(const Certified<rational>& c, int digits) {
   return record(c.enclosure, c.value, c.status, c.method, c.note, digits);
 }
 
+py::dict record_infinite(Status status, const std::string& method, const std::string& note) {
+  py::dict d;
+  const double inf = std::numeric_limits<double>::infinity();
+  d["value_exact"] = py::none();
+  d["mid"] = inf;
+  d["lo"] = inf;
+  d["hi"] = inf;
+  d["lo_text"] = "inf";
+  d["hi_text"] = "inf";
+  d["status"] = to_string(status);
+  d["method"] = method;
+  d["note"] = note;
+  return d;
+}
+
 Columns Columns::from_python(const std::vector<std::string>& names, const py::list& columns) {
   Columns c;
   c.names = names;
@@ -128,6 +143,15 @@ std::map<std::string, rational> Columns::at(const std::map<std::string, rational
   std::map<std::string, rational> p = fixed;
   for (size_t k = 0; k < names.size(); ++k) p[names[k]] = values[k][i];
   return p;
+}
+
+ParsedExpression parsed(const std::string& expr, const std::string& what, char variable, const rational& T,
+                        const std::map<std::string, rational>& fixed, const Columns& cols) {
+  try {
+    return ParsedExpression(expr, parse_options(variable, T, fixed), {cols.names.begin(), cols.names.end()});
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
 }
 
 void check_names(const std::string& expr, const std::string& what, char variable,
@@ -165,7 +189,15 @@ std::string point_error(const std::exception& e) {
 
 PointColumns::PointColumns(size_t n)
     : value(n, std::numeric_limits<double>::quiet_NaN()), lo(value), hi(value), status(n, code_failed), exact(n),
-      error(n) {}
+      lo_exact(n), hi_exact(n), error(n) {}
+
+void PointColumns::enclose(size_t i, const rational& a, const rational& b, int digits) {
+  lo[i] = double_outward(a, -1);
+  hi[i] = double_outward(b, +1);
+  value[i] = to_real<double>((a + b) / 2);
+  lo_exact[i] = decimal_outward(a, digits, -1);
+  hi_exact[i] = decimal_outward(b, digits, +1);
+}
 
 py::dict PointColumns::dict() const {
   py::dict d;
@@ -174,6 +206,8 @@ py::dict PointColumns::dict() const {
   d["hi"] = doubles(hi);
   d["status"] = codes(status);
   d["exact"] = strings(exact);
+  d["lo_exact"] = strings(lo_exact);
+  d["hi_exact"] = strings(hi_exact);
   d["error"] = strings(error);
   return d;
 }

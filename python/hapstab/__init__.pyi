@@ -176,8 +176,9 @@ class RArray:
 
 class ResultArray:
     """A vectorised call: value, lo, hi (float64, the broadcast shape of params), status (int8,
-    STATUS[code]), exact (object: str or None), error (object: str or None), params, method;
-    b* adds omega, stability adds stable (int8: 1, 0, -1 undecided)."""
+    STATUS[code]), exact (object: str or None), lo_exact/hi_exact (object: the ends as outward
+    decimals, which decide a comparison the float ends straddle), error (object: str or None),
+    params, method; b* adds omega, stability adds stable (int8: 1, 0, -1 undecided)."""
     shape: Tuple[int, ...]
     method: str
     params: Dict[str, npt.NDArray[Any]]
@@ -186,6 +187,8 @@ class ResultArray:
     hi: npt.NDArray[np.float64]
     status: npt.NDArray[np.int8]
     exact: npt.NDArray[np.object_]
+    lo_exact: npt.NDArray[np.object_]
+    hi_exact: npt.NDArray[np.object_]
     error: npt.NDArray[np.object_]
     @property
     def status_names(self) -> npt.NDArray[np.object_]: ...

@@ -16,7 +16,8 @@ A scalar result is a Result (a number with its enclosure):
 
 A vectorised call (an array in params, or an omega array) returns a ResultArray: value, lo, hi
 as float64 arrays of the broadcast shape, status as int8 codes (STATUS names them), exact (the
-exact values as strings, None where not exact), error (why a point failed, None where it ran);
+exact values as strings, None where not exact), lo_exact/hi_exact (the ends as outward decimals:
+they decide a comparison the float ends straddle), error (why a point failed, None where it ran);
 r[i] is point i as a Result, comparisons are elementwise (raising when an element is undecided),
 np.asarray(r) is the value array, to_numpy() a structured array and to_pandas() a DataFrame.
 """
@@ -474,9 +475,10 @@ class ResultArray:
         flat = {k: v.ravel()[i] for k, v in self._columns.items()}
         status = STATUS[int(flat["status"])]
         rec = {"value_exact": flat.get("exact"), "mid": float(flat["value"]), "lo": float(flat["lo"]),
-               "hi": float(flat["hi"]), "lo_text": flat.get("exact"), "hi_text": flat.get("exact"),
+               "hi": float(flat["hi"]), "lo_text": flat.get("lo_exact"), "hi_text": flat.get("hi_exact"),
                "status": status, "method": self.method, "note": flat.get("error") or ""}
-        extra = {k: flat[k] for k in self._columns if k not in ("value", "lo", "hi", "status", "exact", "error")}
+        extra = {k: flat[k] for k in self._columns
+                 if k not in ("value", "lo", "hi", "status", "exact", "lo_exact", "hi_exact", "error")}
         extra.update({name: np.broadcast_to(np.asarray(v), self.shape).ravel()[i] for name, v in self.params.items()})
         return self._kind(rec, **extra)
 
@@ -485,7 +487,7 @@ class ResultArray:
         import numpy as np
         if isinstance(other, (Result, ResultArray)):
             raise TypeError("compare a ResultArray with numbers (or a numpy array of numbers)")
-        y = np.asarray(other, dtype=np.float64)
+        y = np.broadcast_to(np.asarray(other, dtype=np.float64), self.shape)
         lo, hi = self.lo, self.hi
         bad = self.status == STATUS.index("failed")
         if op == "<":
@@ -496,7 +498,18 @@ class ResultArray:
             yes, no = lo > y, hi <= y
         else:
             yes, no = lo >= y, hi < y
-        undecided = ~(yes | no) | bad
+        undecided = ~(yes | no) & ~bad
+        # where the float ends straddle x (an end not a double, next to x), the exact ends decide
+        ends = getattr(self, "lo_exact", None), getattr(self, "hi_exact", None)
+        for i in map(tuple, np.argwhere(undecided)):
+            if ends[0] is None or ends[0][i] is None or not np.isfinite(y[i]):
+                continue
+            a, b, x = _end(ends[0][i], lo[i]), _end(ends[1][i], hi[i]), Fraction(float(y[i]))
+            yes_i = {"<": b < x, "<=": b <= x, ">": a > x, ">=": a >= x}[op]
+            no_i = {"<": a >= x, "<=": a > x, ">": b <= x, ">=": b < x}[op]
+            if yes_i or no_i:
+                yes[i], undecided[i] = yes_i, False
+        undecided |= bad
         if undecided.any():
             n = int(undecided.sum())
             first = np.argwhere(undecided)[0]
@@ -528,7 +541,7 @@ class ResultArray:
         import numpy as np
         names = list(self.params) + [k for k in self._columns]
         arrays = [np.broadcast_to(np.asarray(v), self.shape) for v in self.params.values()] + list(self._columns.values())
-        dtype = [(n, a.dtype if a.dtype != np.dtype("O") or n in ("exact", "error") else object) for n, a in zip(names, arrays)]
+        dtype = [(n, a.dtype) for n, a in zip(names, arrays)]
         out = np.empty(self.shape, dtype=dtype)
         for n, a in zip(names, arrays):
             out[n] = a

@@ -279,8 +279,9 @@ def test_bound_over_a_k_array_equals_scalar_calls():
     # elementwise comparisons, decided by each enclosure
     passive = bs < 5.5
     assert passive.dtype == bool and passive[0] and not passive[-1]
+    fast = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 5}, method="fast")
     with pytest.raises(hapstab.UndecidedComparison, match="cannot decide"):
-        bs < np.where(bs.lo < bs.hi, bs.hi, 0)  # x = hi lies inside a certified enclosure
+        fast < fast.value  # each estimate lies inside its stated band
     table = bs.to_numpy()
     assert table.dtype.names[:4] == ("K", "value", "lo", "hi") and table["status"].dtype == np.int8
 
@@ -776,3 +777,13 @@ def test_setup_py_names_a_python_that_cannot_build_offline():
     assert p.returncode != 0
     assert "hapstab: this Python (" in p.stderr and "/usr/bin/python3 -m venv" in p.stderr, p.stderr
     assert "invalid command 'bdist_wheel'" not in p.stderr
+
+
+def test_array_comparisons_decide_exact_values_exactly():
+    # b* = 1/2 + K/2000 exactly: at K = 1000 - 2^-50 it is just below 1 but not a double, so its
+    # float ends straddle 1; the comparison uses the exact value (kb_map.py met this case)
+    K = np.array([Fraction(1000) - Fraction(1, 2**50), 1000, Fraction(1000) + Fraction(1, 2**50)], dtype=object)
+    bs = hapstab.bound(WALL, T="1/1000", params={"K": K, "B": "1/2"})
+    assert list(bs.status_names) == ["exact"] * 3 and bs.lo[0] < 1 <= bs.hi[0]
+    assert list(bs < 1) == [True, False, False] and list(bs <= 1) == [True, True, False]
+    assert list(bs > 1) == [False, False, True] and list(bs >= 1) == [False, True, True]
