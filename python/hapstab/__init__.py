@@ -252,7 +252,10 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
     enclosure, exact where the maximiser is rational), 'fast' (double, numeric) or 'grid'.
     damping=b adds {b, passive} (passive iff b > b*, decided by the enclosure). An array in
     params gives a ResultArray (H an expression), its points on `jobs` threads (default: every
-    CPU). (The passivity boundary as a number, bound --max K, is bound beside this one.)"""
+    CPU)."""
+    # The passivity boundary as a number (`hapstab bound --max K`, issue 41: the sup of a gain with
+    # b* <= b) is not bound yet: it belongs here as bound(..., max="K") over the library function
+    # the command calls, beside _core.bound (python/bind_passivity.cpp's header says where).
     delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
     digits = integer(digits, "digits", 10, 280)
     grid_points = 100000 if grid_points is None else integer(grid_points, "grid_points", 2, 100000000)
