@@ -186,13 +186,7 @@ Enclosure<rational> correctly_rounded(const std::string& text, int digits) {
 }
 
 py::dict r_scalar(const std::string& T_text, const std::string& omega_text, int digits, long terms) {
-  const rational T = exact_arg(T_text, "T"), w = exact_arg(omega_text, "omega");
-  if (T <= 0) throw InputError("T: the sample period must be > 0, got " + T_text);
-  if (w == 0)
-    throw InputError("omega: w = 0 is a pole of r(jw) = T/(e^{jwT} - 1) (poles at w = 2 pi k/T; with T and w exact "
-                     "rationals only w = 0 is one)");
-  if (digits < 1 || digits > 1000) throw InputError("digits: " + std::to_string(digits) + " is outside [1, 1000]");
-  if (terms < 0 || terms > 100000000) throw InputError("terms: " + std::to_string(terms) + " is outside [0, 100000000]");
+  const rational T = exact_arg(T_text, "T"), w = exact_arg(omega_text, "omega");  // r_decimal checks them
   sampling::RDecimal r;
   {
     py::gil_scoped_release nogil;

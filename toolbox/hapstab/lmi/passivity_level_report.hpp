@@ -4,7 +4,7 @@
 // and which of them is the result (the certified level where it is the level, else the LMI, else
 // the grid), with the notes that explain the choice. One composition for both callers.
 //
-// Implements: paper 000 Definition 2, Lemmas 1-2 (through passivity_level.hpp).
+// Implements: paper 000 Definition 2, Lemma 1, Lemma 2.
 #pragma once
 
 #include <optional>
