@@ -9,7 +9,10 @@
 
 The extension must be built for the interpreter that installs it (CMake uses /usr/bin/python3
 unless Python3_EXECUTABLE is given: a fresh folder is configured with this interpreter); a
-module built for another Python is refused by name.
+module built for another Python is refused by name. An interpreter that cannot build offline (no
+`wheel` or no `numpy` where --no-build-isolation --no-index looks: a pyenv or conda python3 first
+on PATH) is named at once with the command that works (README, "Python"), before setuptools
+would stop with a bare "invalid command 'bdist_wheel'".
 """
 import importlib.machinery
 import os
@@ -23,6 +26,21 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 SOURCE = Path(__file__).resolve().parent
+
+
+def check_interpreter() -> None:
+    """Stops with a message naming this interpreter when it lacks what an offline build needs."""
+    import importlib.util
+    missing = [m for m in ("wheel", "numpy") if importlib.util.find_spec(m) is None]
+    if not missing:
+        return
+    debian = "/usr/bin/python3"
+    sys.exit(f"hapstab: this Python ({sys.executable}, {sys.version.split()[0]}) has no {' and no '.join(missing)}, so "
+             "pip cannot build and install hapstab offline (--no-build-isolation --no-index uses what this interpreter "
+             "already has). hapstab builds with Debian's Python and its packages (scripts/install-deps: "
+             "python3-wheel, python3-numpy, pybind11-dev); a python3 first on PATH may be another one (pyenv, conda). "
+             f"Use Debian's, by its full name:\n  {debian} -m venv --system-site-packages venv\n"
+             "  HAPSTAB_BUILD_DIR=build venv/bin/pip install --no-build-isolation --no-index .")
 
 
 def version() -> str:
@@ -62,6 +80,7 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built, target)
 
 
+check_interpreter()
 (SOURCE / "build-pip").mkdir(exist_ok=True)
 setup(
     version=version(),

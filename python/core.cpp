@@ -1,12 +1,16 @@
-// python/core.cpp -- hapstab._core, the one C++ entry of the Python package: runs a hapstab
-// command (hapstab::cli::run_in_process, the command's own code, so the numbers are the CLI's
-// by construction) and hands back its exit code and JSON.
+// python/core.cpp -- hapstab._core, the C++ half of the Python package: the module, its
+// exceptions, the helpers every binding file shares (binding.hpp), and the forked-child runner
+// kept for the calls where a child process still earns its cost (below).
 //
-// Each call runs in a forked child process; the parent waits on a pipe with the GIL released and
-// checks for signals every 20 ms, so Ctrl-C (KeyboardInterrupt) stops a long computation at once:
-// the child is killed, since C++ code (FLINT, the SDP solvers) cannot be interrupted from inside.
-// A crash in the child cannot take the interpreter down either. The cost is a fork per call
-// (a few milliseconds; README "Python"). The child answers with one JSON document:
+// The functions are bindings of the library (bind_*.cpp): they take the library's types and
+// return its results as Python objects and numpy arrays; long calls release the GIL, and the
+// vectorised ones poll Ctrl-C between points.
+//
+// A forked child remains for what runs long inside code that cannot be interrupted and is not
+// thread-safe, where Ctrl-C must still stop it at once: the SDP solvers of multidof, the sweep's
+// worker processes, and run() (the command line itself, the escape hatch). The parent waits on a
+// pipe with the GIL released and checks for signals every 20 ms; Ctrl-C kills the child. The
+// child answers with one JSON document (the pipe's format, not a result format):
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
 //   {"error": "<message>", "code": 2|3, "kind": "error"|"numerical failure"|"internal error"}
 #include <fcntl.h>
@@ -15,20 +19,218 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <limits>
+#include <set>
 #include <nlohmann/json.hpp>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
-#include <string>
-#include <vector>
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
 #include "cli/mat_file.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/study/threads.hpp"
+#include "python/binding.hpp"
+#include "python/forked.hpp"
 
-namespace py = pybind11;
+namespace hapstab::python {
+
+int8_t status_code(Status s) {
+  switch (s) {
+    case Status::exact: return code_exact;
+    case Status::certified: return code_certified;
+    case Status::numeric: return code_numeric;
+    case Status::failed: return code_failed;
+  }
+  return code_failed;
+}
+
+rational exact_arg(const std::string& text, const std::string& what) { return parse_rational(text, what); }
+
+std::optional<rational> exact_arg(const std::optional<std::string>& text, const std::string& what) {
+  if (!text) return std::nullopt;
+  return exact_arg(*text, what);
+}
+
+ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params) {
+  ParseOptions po;
+  po.variable = variable;
+  po.T = T;
+  po.parameters = std::move(params);
+  po.parameter_hint = "pass params={'{}': ...}";
+  po.period_hint = "T=...";
+  return po;
+}
+
+namespace {
+
+py::object decimal_or_none(const std::optional<rational>& q, int digits, int dir) {
+  if (!q) return py::none();
+  return py::str(decimal_outward(*q, digits, dir));
+}
+
+}  // namespace
+
+py::dict record(const std::optional<Enclosure<rational>>& e, const rational& mid, Status status,
+                const std::string& method, const std::string& note, int digits) {
+  py::dict d;
+  const bool exact = status == Status::exact;
+  d["value_exact"] = exact ? py::object(py::str(mid.str())) : py::object(py::none());
+  d["mid"] = to_real<double>(mid);
+  const rational lo = e ? e->lo : mid, hi = e ? e->hi : mid;
+  d["lo"] = double_outward(lo, -1);
+  d["hi"] = double_outward(hi, +1);
+  d["lo_text"] = decimal_or_none(lo, digits, -1);
+  d["hi_text"] = decimal_or_none(hi, digits, +1);
+  d["status"] = to_string(status);
+  d["method"] = method;
+  d["note"] = note;
+  return d;
+}
+
+py::dict record(const Certified<rational>& c, int digits) {
+  return record(c.enclosure, c.value, c.status, c.method, c.note, digits);
+}
+
+py::dict record_infinite(Status status, const std::string& method, const std::string& note) {
+  py::dict d;
+  const double inf = std::numeric_limits<double>::infinity();
+  d["value_exact"] = py::none();
+  d["mid"] = inf;
+  d["lo"] = inf;
+  d["hi"] = inf;
+  d["lo_text"] = "inf";
+  d["hi_text"] = "inf";
+  d["status"] = to_string(status);
+  d["method"] = method;
+  d["note"] = note;
+  return d;
+}
+
+Columns Columns::from_python(const std::vector<std::string>& names, const py::list& columns) {
+  Columns c;
+  c.names = names;
+  if (columns.size() != names.size()) throw std::logic_error("Columns: names and columns differ in number");
+  for (size_t k = 0; k < names.size(); ++k) {
+    std::vector<rational> v;
+    const py::handle col = columns[k];
+    const std::string what = "params['" + names[k] + "']";
+    if (py::isinstance<py::array>(col)) {
+      const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(col);
+      const auto r = a.unchecked<1>();
+      v.reserve(size_t(r.shape(0)));
+      for (py::ssize_t i = 0; i < r.shape(0); ++i) {
+        if (!std::isfinite(r(i)))
+          throw InputError(what + "[" + std::to_string(i) + "]: " + std::to_string(r(i)) + " is not a finite number");
+        v.push_back(exact_rational(r(i)));
+      }
+    } else {
+      const auto texts = col.cast<std::vector<std::string>>();
+      v.reserve(texts.size());
+      for (size_t i = 0; i < texts.size(); ++i) v.push_back(exact_arg(texts[i], what + "[" + std::to_string(i) + "]"));
+    }
+    if (k == 0) c.points = v.size();
+    else if (v.size() != c.points) throw std::logic_error("Columns: columns of different lengths");
+    c.values.push_back(std::move(v));
+  }
+  return c;
+}
+
+std::map<std::string, rational> Columns::at(const std::map<std::string, rational>& fixed, size_t i) const {
+  std::map<std::string, rational> p = fixed;
+  for (size_t k = 0; k < names.size(); ++k) p[names[k]] = values[k][i];
+  return p;
+}
+
+ParsedExpression parsed(const std::string& expr, const std::string& what, char variable, const rational& T,
+                        const std::map<std::string, rational>& fixed, const Columns& cols) {
+  try {
+    return ParsedExpression(expr, parse_options(variable, T, fixed), {cols.names.begin(), cols.names.end()});
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
+}
+
+void check_names(const std::string& expr, const std::string& what, char variable,
+                 const std::map<std::string, rational>& fixed, const Columns& cols) {
+  std::set<std::string> known{std::string(1, variable), "T"};
+  for (const auto& [k, v] : fixed) known.insert(k);
+  known.insert(cols.names.begin(), cols.names.end());
+  for (const std::string& name : names_in(expr))
+    if (!known.count(name)) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(what + ": unknown name '" + name + "' (known: " + list + "; pass params={'" + name + "': ...})");
+    }
+}
+
+void run_points(size_t n, unsigned jobs, const std::function<void(uint64_t)>& fn) {
+  bool interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    const bool finished = study::run_threads(n, jobs, fn, [&] {
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) return interrupted = true;
+      return false;
+    });
+    (void)finished;
+  }
+  if (interrupted) throw py::error_already_set();  // KeyboardInterrupt (or what the handler raised)
+}
+
+std::string point_error(const std::exception& e) {
+  if (dynamic_cast<const InputError*>(&e)) return e.what();
+  if (dynamic_cast<const NumericalError*>(&e)) return std::string("numerical failure: ") + e.what();
+  return std::string("internal error: ") + e.what();
+}
+
+PointColumns::PointColumns(size_t n)
+    : value(n, std::numeric_limits<double>::quiet_NaN()), lo(value), hi(value), status(n, code_failed), exact(n),
+      lo_exact(n), hi_exact(n), error(n) {}
+
+void PointColumns::enclose(size_t i, const rational& a, const rational& b, int digits) {
+  lo[i] = double_outward(a, -1);
+  hi[i] = double_outward(b, +1);
+  value[i] = to_real<double>((a + b) / 2);
+  lo_exact[i] = decimal_outward(a, digits, -1);
+  hi_exact[i] = decimal_outward(b, digits, +1);
+}
+
+py::dict PointColumns::dict() const {
+  py::dict d;
+  d["value"] = doubles(value);
+  d["lo"] = doubles(lo);
+  d["hi"] = doubles(hi);
+  d["status"] = codes(status);
+  d["exact"] = strings(exact);
+  d["lo_exact"] = strings(lo_exact);
+  d["hi_exact"] = strings(hi_exact);
+  d["error"] = strings(error);
+  return d;
+}
+
+py::array_t<double> doubles(const std::vector<double>& v) {
+  py::array_t<double> a(py::ssize_t(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+py::array_t<int8_t> codes(const std::vector<int8_t>& v) {
+  py::array_t<int8_t> a(py::ssize_t(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+py::array strings(const std::vector<std::optional<std::string>>& v) {
+  py::list l;
+  for (const auto& s : v) l.append(s ? py::object(py::str(*s)) : py::object(py::none()));
+  return py::module_::import("numpy").attr("array")(l, py::arg("dtype") = "object");
+}
+
+// ---- the forked child ------------------------------------------------------------------------
 
 namespace {
 
@@ -42,14 +244,13 @@ void write_all(int fd, const std::string& s) {
   }
 }
 
-/// The child's whole life: run the command, write the answer, leave without running any of the
+/// The child's whole life: run `work`, write the answer, leave without running any of the
 /// parent's exit handlers (Python's, stdio buffers it inherited).
-[[noreturn]] void child_main(const std::vector<std::string>& args, int fd) {
+[[noreturn]] void child_main(const std::function<nlohmann::json()>& work, int fd) {
   ::signal(SIGINT, SIG_DFL);  // Ctrl-C in a terminal reaches the child too: let it end it
   nlohmann::json answer;
   try {
-    auto run = hapstab::cli::run_in_process(args);
-    answer = {{"code", run.code}, {"json", std::move(run.json)}};
+    answer = work();
   } catch (const std::exception& e) {
     const auto exit = hapstab::cli::exit_code_for(e);
     answer = {{"error", e.what()}, {"code", int(exit.code)}, {"kind", exit.kind}};
@@ -69,9 +270,7 @@ std::string describe_status(int status) {
   return "status " + std::to_string(status);
 }
 
-/// Runs `hapstab args...` in a forked child; returns the child's answer (JSON text). Raises
-/// KeyboardInterrupt (or whatever a signal handler raises) after killing the child.
-std::string run_forked(const std::vector<std::string>& args) {
+std::string run_forked_text(const std::function<nlohmann::json()>& work) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("hapstab: pipe: ") + std::strerror(errno));
   const pid_t pid = ::fork();
@@ -83,7 +282,7 @@ std::string run_forked(const std::vector<std::string>& args) {
   if (pid == 0) {
     ::close(fds[0]);
     hapstab::cli::restore_gmp_allocator();  // cli/mat_file.hpp: GnuTLS, loaded with matio, zeroes every GMP block
-    child_main(args, fds[1]);
+    child_main(work, fds[1]);
   }
   ::close(fds[1]);
   std::string data;
@@ -135,30 +334,45 @@ std::string run_forked(const std::vector<std::string>& args) {
 
 }  // namespace
 
+nlohmann::json run_forked(const std::function<nlohmann::json()>& work) {
+  auto answer = nlohmann::json::parse(run_forked_text(work));
+  if (answer.contains("error")) {
+    const std::string msg = answer["error"].get<std::string>();
+    const int code = answer["code"].get<int>();
+    const std::string kind = answer["kind"].get<std::string>();
+    if (code == hapstab::cli::exit_bad_input) throw InputError(msg);
+    if (kind == "numerical failure") throw NumericalError(msg);
+    throw std::runtime_error("hapstab internal error: " + msg);
+  }
+  return answer;
+}
+
+}  // namespace hapstab::python
+
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "hapstab's C++ core: runs a hapstab command and returns its exit code and JSON";
+  using namespace hapstab::python;
+  m.doc() = "hapstab's C++ core: bindings of the library (transfer functions, b*, r(jw), stability, passivity levels, "
+            "scenes); see the package hapstab";
   m.attr("__version__") = HAPSTAB_VERSION;
-  static py::exception<std::exception> input_error(m, "InputError", PyExc_ValueError);
-  static py::exception<std::exception> numerical_error(m, "NumericalError", PyExc_RuntimeError);
+  py::register_exception<hapstab::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<hapstab::NumericalError>(m, "NumericalError", PyExc_RuntimeError);
+  register_types(m);
+  register_passivity(m);
+  register_stability(m);
+  register_scene(m);
   m.def(
       "run",
       [](const std::vector<std::string>& args) -> py::tuple {
-        const auto answer = nlohmann::json::parse(run_forked(args));
-        if (answer.contains("error")) {
-          const std::string msg = answer["error"].get<std::string>();
-          const int code = answer["code"].get<int>();
-          const std::string kind = answer["kind"].get<std::string>();
-          if (code == hapstab::cli::exit_bad_input) input_error(msg.c_str());
-          else if (kind == "numerical failure") numerical_error(msg.c_str());
-          else PyErr_SetString(PyExc_RuntimeError, ("hapstab internal error: " + msg).c_str());
-          throw py::error_already_set();
-        }
+        const auto answer = run_forked([&] {
+          auto run = hapstab::cli::run_in_process(args);
+          return nlohmann::json{{"code", run.code}, {"json", std::move(run.json)}};
+        });
         const auto& j = answer["json"];
         return py::make_tuple(answer["code"].get<int>(), j.is_null() ? py::object(py::none()) : py::object(py::str(j.dump())));
       },
       py::arg("args"),
-      "Runs `hapstab args...` (no program name) in a child process; returns (exit code, JSON text or None).\n"
-      "Raises InputError (exit 2), NumericalError (exit 3), KeyboardInterrupt on Ctrl-C.");
+      "Runs `hapstab args...` (the command line, no program name) in a child process; returns (exit code, JSON text "
+      "or None). Raises InputError (exit 2), NumericalError (exit 3), KeyboardInterrupt on Ctrl-C.");
   m.def(
       "examples_dir", [] { return hapstab::cli::examples_dir().string(); },
       "The folder of hapstab's example scenes (the source tree's examples/, or the installed share/hapstab/examples).");

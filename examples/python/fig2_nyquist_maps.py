@@ -17,7 +17,7 @@ out = output_folder(__doc__)
 b, T, omega = 1.0, "1/1000", 1000
 r = hapstab.r(T, omega, digits=17)
 rc = complex(r)  # the double nearest each certified part
-print(f"r(jw) = {r.re} + j {r.im}   [{r.status}]")
+print(f"r(jw) = {r.decimal[0]} + j {r.decimal[1]}   [re {r.re.status}, im {r.im.status}]")
 
 maps = [("(a) $Z_O(j\\omega)$", lambda Z: Z), ("(b) $Z_O + b$", lambda Z: Z + b),
         ("(c) $R_1 = 1/(Z_O + b)$", lambda Z: 1 / (Z + b)), ("(d) $r(j\\omega) R_1$ [$10^{-3}$]", lambda Z: 1e3 * rc / (Z + b)),
@@ -51,7 +51,7 @@ for i, (title, f) in enumerate(maps):
     ax.set_ylabel("Im")
 axes.flat[5].axis("off")
 axes.flat[5].text(0, 0.5, f"b = {b:g} N s/m, T = {T} s, $\\omega$ = {omega} rad/s\n"
-                  f"r(j$\\omega$) = {float(r.re):.4g} {float(r.im):+.6g} j\n(hapstab.r, {r.status.split(':')[0]})\n\n"
+                  f"r(j$\\omega$) = {float(r.re):.4g} {float(r.im):+.6g} j\n(hapstab.r, im {r.im.status})\n\n"
                   "black: Re $Z_O$ = 0\nblue: Re $Z_O$ = b/4, b, 3b\norange dashed: Im $Z_O$ = -b, 0, b",
                   va="center")
 fig.suptitle("Paper 001, Fig. 2: the Nyquist-plane maps of a passive operator")

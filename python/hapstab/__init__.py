@@ -1,28 +1,34 @@
 """hapstab -- passivity and stability of sampled-data haptic systems, from Python.
 
-Each function runs the hapstab command of the same name (the C++ code of the command line,
-in-process in a forked child: numbers identical to `hapstab ... --json`, the GIL released,
-Ctrl-C stops a long call) and returns a Result whose attributes are the command's JSON keys:
+The functions are bindings of hapstab's C++ library (the functions the `hapstab` command line
+calls: the same numbers by construction), over its own types (hapstab.tf: an exact transfer
+function; hapstab.ss: an exact state space). Every scalar result follows one protocol (value,
+lo, hi, lo_exact, hi_exact, status, method, float(), honest comparisons; hapstab._results):
 
     >>> import hapstab
     >>> b = hapstab.bound("K + B*(z-1)/(T*z)", T="1/1000", params={"K": 1000, "B": 5})
-    >>> b.value, b.fraction, b.status
-    ('5.5', Fraction(11, 2), 'exact')
+    >>> b.value, b.status, b > 5
+    (Fraction(11, 2), 'exact', True)
 
-H(z) is an expression string, a (num, den) pair of coefficients in descending powers of z
-(int, Fraction, str exact; a float at its exact binary value), or a python-control
-TransferFunction (any object with num, den, dt). Bad input raises hapstab.InputError (a
-ValueError), a certified method that cannot finish hapstab.NumericalError (a RuntimeError).
+An array in params (or an omega array for r) makes the call vectorised: one call parses the
+expression for every point and runs the points on threads with the GIL released (Ctrl-C stops
+it), returning a ResultArray of numpy arrays:
+
+    >>> K = np.linspace(0, 40000, 10001)
+    >>> bs = hapstab.bound("K + B*(z-1)/(T*z)", T="1/1000", delay=1, params={"K": K, "B": 5})
+    >>> bs.value, bs.lo, bs.hi, bs.status          # float64, float64, float64, int8 (STATUS)
+
+H(z) is an expression string, a hapstab.TransferFunction, a (num, den) pair of coefficients in
+descending powers of z (int, Fraction, str exact; a float at its exact binary value), or a
+python-control TransferFunction (any object with num, den, dt). Bad input raises
+hapstab.InputError (a ValueError) naming the argument, a certified method that cannot finish
+hapstab.NumericalError (a RuntimeError).
 """
 from __future__ import annotations
 
-import csv
-import json
 import os
 import re
-import tempfile
-import warnings
-from typing import Any, Dict, Mapping, Optional, Sequence
+from typing import Any, Dict, Mapping, Optional, Tuple
 
 try:
     from . import _core
@@ -32,54 +38,136 @@ except ImportError:  # the pure-Python files without the C++ extension next to t
         raise  # it is there and does not load: the loader's own message says why
     raise ImportError(f"hapstab: the C++ extension hapstab._core is not built in {_here} (in the build tree: "
                       f"cmake --build build --target hapstab_python; or pip install . from the source tree)") from None
-from ._exact import exact, state_space_json, transfer_function
-from ._results import Analysis, Bound, Design, PassivityLevel, R, Result, Simulation, Stability, Wedge
+from ._exact import exact, integer, period_of, real, state_space, transfer_function
+from ._results import (STATUS, Analysis, Bound, Design, MaxGain, PassivityLevel, R, Result, ResultArray, Simulation,
+                       Stability, UndecidedComparison, Wedge)
 
 __version__: str = _core.__version__
 InputError = _core.InputError
 NumericalError = _core.NumericalError
 InputError.__module__ = NumericalError.__module__ = "hapstab"
+TransferFunction = _core.TransferFunction
+StateSpace = _core.StateSpace
+TransferFunction.__module__ = StateSpace.__module__ = "hapstab"
 
-__all__ = ["r", "bound", "stability", "wedge", "passivity_level", "simulate", "multidof", "run", "examples_dir",
-           "InputError", "NumericalError", "Result", "R", "Bound", "Wedge", "PassivityLevel", "Simulation",
-           "Analysis", "Design", "sweep", "Sweep", "Stability"]
+__all__ = ["tf", "ss", "r", "bound", "stability", "wedge", "passivity_level", "simulate", "multidof", "sweep", "run",
+           "examples_dir", "InputError", "NumericalError", "UndecidedComparison", "Result", "ResultArray", "STATUS",
+           "TransferFunction", "StateSpace", "R", "Bound", "Wedge", "PassivityLevel", "Stability", "MaxGain",
+           "Simulation", "Analysis", "Design", "Sweep", "RArray"]
+
+_DELAY_HINT = "delay is a whole number of sample periods n (z^-n); a delay in seconds is frac_delay=... (exact)"
 
 
-def run(*args: str) -> Result:
-    """Runs `hapstab args... --json` as given (the escape hatch for options without a keyword)."""
-    code, text = _core.run([str(a) for a in args])
-    return Result(json.loads(text) if text is not None else {}, code)
-
+# ---- errors in the words of the call -------------------------------------------------------
 
 _OPTION = re.compile(r"(?<![\w-])--([A-Za-z][A-Za-z0-9-]*)")
 
 
-def _pythonic(message: str, command: str) -> str:
-    """A command's error message in the words of the Python call: the keyword for an option
-    (--frac-delay -> frac_delay), params={'K': ...} (or the keyword K=... of simulate and
-    multidof) for --set NAME=VALUE."""
-    keywords = command in ("simulate", "multidof")  # their parameters are keyword arguments
+def _pythonic(message: str, keywords: bool = False) -> str:
+    """A message some library or command code words for the command line, in the words of the
+    Python call: an option (--allow-noncausal, --delay) becomes its keyword, --set NAME=VALUE
+    params={'NAME': ...} (or the keyword NAME=... of simulate and multidof)."""
     unknown = re.search(r"unknown name '([^']+)'", message)
     name = unknown.group(1) if unknown else "NAME"
     message = message.replace("give parameters with --set NAME=VALUE",
                               f"pass {name}=... as a keyword argument" if keywords else f"pass params={{'{name}': ...}}")
     message = re.sub(r"--set[ =]'?([A-Za-z_]\w*)'?", (r"\1" if keywords else r"params['\1']"), message)
     message = message.replace("--set NAME=VALUE", "keyword arguments" if keywords else "params")
+    message = message.replace("--set", "a keyword argument" if keywords else "params")
+    message = message.replace("--resume", "resume=True").replace("--allow-noncausal", "allow_noncausal=True")
     return _OPTION.sub(lambda m: m.group(1).replace("-", "_"), message)
 
 
-def _json(args: Sequence[str]):
+def _call(fn, *args: Any, keywords: bool = False, **kwargs: Any) -> Any:
     try:
-        code, text = _core.run(list(args))
-    except InputError as e:  # the command's message names its options: say it as the call was made
-        raise InputError(_pythonic(str(e), args[0])) from None
-    if text is None:
-        raise RuntimeError(f"hapstab {' '.join(args[:1])} printed no JSON (exit code {code})")
-    return json.loads(text), code
+        return fn(*args, **kwargs)
+    except InputError as e:
+        raise InputError(_pythonic(str(e), keywords)) from None
+    except NumericalError as e:
+        raise NumericalError(_pythonic(str(e), keywords)) from None
 
 
-def _sets(params: Optional[Mapping[str, Any]]) -> list:
-    return [f"--set={name}={exact(v, f'params[{name!r}]')}" for name, v in (params or {}).items()]
+# ---- parameters: scalars and arrays --------------------------------------------------------
+
+def _is_array(v: Any) -> bool:
+    import numpy as np
+    if isinstance(v, np.ndarray):
+        return v.ndim > 0
+    return isinstance(v, (list, tuple, range))
+
+
+def _column(name: str, a: Any) -> Any:
+    """One parameter's values at every point: float64 (exact binary values) or exact texts."""
+    import numpy as np
+    flat = np.asarray(a).ravel()
+    what = f"params[{name!r}]"
+    if flat.dtype.kind == "b":
+        raise InputError(f"{what}: a bool array; expected numbers")
+    if flat.dtype.kind == "f":
+        bad = ~np.isfinite(flat)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise InputError(f"{what}[{i}]: {flat[i]} is not a finite number")
+        return np.ascontiguousarray(flat, dtype=np.float64)
+    if flat.dtype.kind in "iu" and (flat.size == 0 or int(np.abs(flat.astype(object)).max()) < 2**53):
+        return flat.astype(np.float64)  # exact: integers below 2^53 are doubles
+    return [exact(x.item() if hasattr(x, "item") else x, f"{what}[{i}]") for i, x in enumerate(flat)]
+
+
+def _params(params: Optional[Mapping[str, Any]]) -> Tuple[Dict[str, str], list, list, Optional[tuple], Dict[str, Any]]:
+    """(fixed exact texts, array names, their columns, broadcast shape or None, the arrays)."""
+    import numpy as np
+    fixed: Dict[str, str] = {}
+    arrays: Dict[str, Any] = {}
+    for name, v in (params or {}).items():
+        name = str(name)
+        if _is_array(v):
+            arrays[name] = np.asarray(v) if not isinstance(v, np.ndarray) else v
+        else:
+            fixed[name] = exact(v.item() if hasattr(v, "item") and not isinstance(v, str) else v, f"params[{name!r}]")
+    if not arrays:
+        return fixed, [], [], None, {}
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    except ValueError:
+        raise InputError("params: the arrays do not broadcast to one shape: "
+                         + ", ".join(f"{k} {a.shape}" for k, a in arrays.items())) from None
+    names = list(arrays)
+    columns = [_column(k, np.broadcast_to(a, shape)) for k, a in arrays.items()]
+    return fixed, names, columns, shape, arrays
+
+
+def _jobs(jobs: Any) -> int:
+    return 0 if jobs is None else integer(jobs, "jobs", 1, 1024)
+
+
+def _expression(H: Any, what: str = "H") -> str:
+    if not isinstance(H, str):
+        raise InputError(f"params: an array in params needs {what} as an expression string (its parameters vary); "
+                         f"got {type(H).__name__}")
+    return H
+
+
+# ---- the model types -----------------------------------------------------------------------
+
+def tf(H: Any, T: Any = None, params: Optional[Mapping[str, Any]] = None) -> TransferFunction:
+    """An exact transfer function (the library's lti TransferFunction): from an expression in z
+    (or s when T is None and it names s), parsed once with `params`; a (num, den) pair in
+    descending powers of z; or a python-control TransferFunction (num, den, dt)."""
+    return _call(transfer_function, H, T, params, "H", "")
+
+
+def ss(A: Any, B: Any, C: Any, D: Any, T: Any) -> StateSpace:
+    """An exact discrete state space (A, B, C, D) with period T (entries exact as numbers are)."""
+    return _call(state_space, A, B, C, D, T)
+
+
+def run(*args: str):
+    """Runs `hapstab args... --json` as given, the command line itself (the escape hatch for an
+    option without a keyword): (exit code, the command's JSON as a dict or None)."""
+    import json
+    code, text = _core.run([str(a) for a in args])
+    return code, (json.loads(text) if text is not None else None)
 
 
 def examples_dir() -> str:
@@ -87,166 +175,280 @@ def examples_dir() -> str:
     return _core.examples_dir()
 
 
-def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None) -> R:
-    """r(jw) = T/(e^{jwT} - 1) of paper 001 (44), correctly rounded, and the series (34) truncated."""
-    args = ["r", f"--T={exact(T, 'T')}", f"--omega={exact(omega, 'omega')}", f"--digits={int(digits)}", "--json"]
-    if terms is not None:
-        args.append(f"--terms={int(terms)}")
-    return R(*_json(args))
+# ---- paper 001: r(jw) and b* -----------------------------------------------------------------
+
+class RArray:
+    """r(jw) over an array of w: re (float, exact -T/2; re_exact its exact p/q), im (float64, the
+    shape of omega), lo/hi the enclosure of im (outward: proven with method 'certified', the
+    stated error band of the double evaluation with 'double'), value the complex128 array,
+    status 'certified' or 'numeric', method. np.asarray(r) is value."""
+
+    def __init__(self, d: Dict[str, Any], shape: tuple, method: str) -> None:
+        import numpy as np
+        self.re, self.re_exact = d["re"], d["re_exact"]
+        self.im = np.asarray(d["im"]).reshape(shape)
+        self.im_lo = np.asarray(d["lo"]).reshape(shape)
+        self.im_hi = np.asarray(d["hi"]).reshape(shape)
+        self.status = "certified" if method == "certified" else "numeric"
+        self.method = ("closed form (44), MPFI at 128 bits at each w's exact binary value: Im enclosures rounded outward"
+                       if method == "certified" else
+                       "closed form (44) in double: Im = -(T/2)/tan(fl(wT)/2), within 1.51 eps plus the rounding of wT "
+                       "(sampling/r_forms.hpp); lo/hi state that band, not a proof")
+
+    @property
+    def value(self):
+        return self.re + 1j * self.im
+
+    @property
+    def lo(self):
+        return self.re + 1j * self.im_lo
+
+    @property
+    def hi(self):
+        return self.re + 1j * self.im_hi
+
+    def __array__(self, dtype=None):
+        import numpy as np
+        return np.asarray(self.value, dtype=dtype)
+
+    def __len__(self) -> int:
+        return len(self.im)
+
+    def __repr__(self) -> str:
+        return f"hapstab.RArray(shape={self.im.shape}, status={self.status!r})"
+
+
+def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None, method: str = "double",
+      jobs: Optional[int] = None):
+    """r(jw) = T/(e^{jwT} - 1) of paper 001 (44).
+
+    omega a number: an R, correctly rounded to `digits` (re exact, im certified), with the series
+    (34) truncated at |n| <= terms (default 1000) beside. omega an array (float64 at its exact
+    binary values): an RArray, method 'double' (numeric, about 10 ns a point) or 'certified'
+    (MPFI enclosures, proven)."""
+    T_text = exact(T, "T")
+    if _is_array(omega):
+        import numpy as np
+        w = np.asarray(omega)
+        if w.dtype.kind not in "fiu":
+            raise InputError(f"omega: expected an array of numbers, got dtype {w.dtype}")
+        if method not in ("double", "certified"):
+            raise InputError(f"method: expected 'double' or 'certified', got {method!r}")
+        d = _call(_core.r_many, T_text, np.ascontiguousarray(w.ravel(), dtype=np.float64), method, _jobs(jobs))
+        return RArray(d, w.shape, method)
+    digits = integer(digits, "digits", 1, 1000)
+    terms = 1000 if terms is None else integer(terms, "terms", 0, 100000000)
+    return R(_call(_core.r, T_text, exact(omega, "omega"), digits, terms))
 
 
 def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: Any = 0, digits: int = 30,
           method: str = "certified", params: Optional[Mapping[str, Any]] = None, damping: Any = None,
-          grid_points: Optional[int] = None, allow_noncausal: bool = False) -> Bound:
+          grid_points: Optional[int] = None, allow_noncausal: bool = False, jobs: Optional[int] = None):
     """The passivity bound b* of paper 001, (45)/(54): the loop is passive iff b > b*.
 
     T is the sample period (exact; taken from H.dt for a python-control system); delay an
-    integer n (z^-n), frac_delay a delay in seconds, eta the operator's shortage of passivity.
-    """
-    expr, T_text = transfer_function(H, T)
+    integer n >= 0 (z^-n; a bool or a float is refused, never truncated), frac_delay a delay in
+    seconds (exact), eta the operator's shortage of passivity, method 'certified' (proven
+    enclosure, exact where the maximiser is rational), 'fast' (double, numeric) or 'grid'.
+    damping=b adds {b, passive} (passive iff b > b*, decided by the enclosure). An array in
+    params gives a ResultArray (H an expression), its points on `jobs` threads (default: every
+    CPU)."""
+    # The passivity boundary as a number (`hapstab bound --max K`, issue 41: the sup of a gain with
+    # b* <= b) is not bound yet: it belongs here as bound(..., max="K") over the library function
+    # the command calls, beside _core.bound (python/bind_passivity.cpp's header says where).
+    delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
+    digits = integer(digits, "digits", 10, 280)
+    grid_points = 100000 if grid_points is None else integer(grid_points, "grid_points", 2, 100000000)
+    if not isinstance(allow_noncausal, bool):
+        raise InputError(f"allow_noncausal: expected True or False, got {allow_noncausal!r}")
+    if not isinstance(method, str):
+        raise InputError(f"method: expected 'certified', 'fast' or 'grid', got {method!r}")
+    frac = None if frac_delay is None else exact(frac_delay, "frac_delay")
+    eta_text = exact(eta, "eta")
+    T_text = period_of(H, T)
     if T_text is None:
         raise InputError("T is required (the sample period)")
-    args = ["bound", f"--H={expr}", f"--T={T_text}", f"--delay={int(delay)}", f"--eta={exact(eta, 'eta')}",
-            f"--digits={int(digits)}", f"--method={method}", "--json", *_sets(params)]
-    if frac_delay is not None:
-        args.append(f"--frac-delay={exact(frac_delay, 'frac_delay')}")
+    fixed, names, columns, shape, arrays = _params(params)
+    if shape is not None:
+        if damping is not None:
+            raise InputError("damping: with an array in params compare the result instead (bs.lo > b, bs.hi < b)")
+        d = _call(_core.bound_many, _expression(H), fixed, names, columns, T_text, delay, frac, eta_text, digits, method,
+                  grid_points, allow_noncausal, _jobs(jobs))
+        return ResultArray(Bound, d, shape, f"b* ({method})", arrays)
+    Htf = _call(transfer_function, H, T_text, fixed, "H")
+    d = _call(_core.bound, Htf, T_text, delay, frac, eta_text, digits, method, grid_points, allow_noncausal)
+    extra = {k: d[k] for k in ("omega", "where", "decimal", "infinite", "closed_form", "enclosure_rigorous")}
+    b = Bound(d, **extra)
     if damping is not None:
-        args.append(f"--damping={exact(damping, 'damping')}")
-    if grid_points is not None:
-        args.append(f"--grid-points={int(grid_points)}")
-    if allow_noncausal:
-        args.append("--allow-noncausal")
-    return Bound(*_json(args))
+        bd = exact(damping, "damping")
+        from ._exact import to_fraction
+        if to_fraction(bd) <= 0:
+            raise InputError(f"damping must be > 0 (got {bd})")
+        if b.status not in ("exact", "certified"):
+            raise InputError("damping needs a proven b*: use method='certified' (the default)")
+        try:
+            passive = (not b.infinite) and b < bd
+        except UndecidedComparison:
+            raise NumericalError(f"damping={bd} lies inside the enclosure of b*; raise digits") from None
+        b._extra["damping"] = {"b": bd, "passive": passive}
+    return b
+
+
+# ---- paper 002: the wedge criterion ----------------------------------------------------------
+
+def wedge(H: Any, T: Any = None, digits: int = 20, params: Optional[Mapping[str, Any]] = None) -> Wedge:
+    """The wedge criterion (25) and Tsypkin's condition (21) of paper 002 for H(z), over all theta
+    (T only when the expression names T)."""
+    digits = integer(digits, "digits", 1, 60)
+    T_text = period_of(H, T) or "1"  # H(z) alone does not depend on T unless the expression names it
+    Htf = _call(transfer_function, H, T_text, params, "H")
+    d = _call(_core.wedge, Htf, digits)
+    wedge_c, tsypkin_c = (dict(d[k]) for k in ("wedge", "tsypkin"))
+    for c in (wedge_c, tsypkin_c):
+        if c["evaluated"]:
+            c["margin"] = Result(c["margin"])
+            c["max_gain"] = None if c["gain_infinite"] else Result(c["max_gain"])
+    if wedge_c["evaluated"]:
+        rec = wedge_c["margin"]._rec
+    else:
+        rec = {"value_exact": None, "mid": float("nan"), "lo": float("nan"), "hi": float("nan"), "lo_text": None,
+               "hi_text": None, "status": "failed", "method": "wedge criterion (25)", "note": wedge_c["evidence"]}
+    return Wedge(rec, wedge=wedge_c, tsypkin=tsypkin_c, applies=d["applies"], assumptions=d["assumptions"], H=d["H"],
+                 H1=d["H1"])
+
+
+# ---- stability of the sampled loop -----------------------------------------------------------
+
+def _text(H: Any, what: str) -> str:
+    if isinstance(H, str):
+        return H
+    if isinstance(H, _core.TransferFunction):
+        return str(H)
+    raise TypeError(f"{what}: expected an expression string or a hapstab.TransferFunction, got {type(H).__name__}")
 
 
 def stability(plant: str, H: Any, T: Any = None, delay: int = 0, operator: Optional[str] = None,
-              max: Optional[str] = None, digits: int = 20,  # noqa: A002 -- the command's option name
-              params: Optional[Mapping[str, Any]] = None) -> Stability:
+              max: Optional[str] = None, digits: int = 20,  # noqa: A002 -- the name of the quantity
+              params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None):
     """Schur stability of the sampled loop: device plant(s) (force -> position, an expression in s)
     behind a zero-order hold, wall force -z^-n H(z) x(kT), optional operator impedance Z_op(s).
-    With max="K" (a gain H is affine in): the largest K with the loop stable on (0, K)."""
-    expr, T_text = transfer_function(H, T)
+    A Stability (value: the spectral radius; bool: stable). With max="K" (a gain H is affine
+    in): a MaxGain, the largest K with the loop stable on (0, K). An array in params gives a
+    ResultArray (stable as int8 1/0/-1 undecided, or the max gains), on threads."""
+    delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
+    digits = integer(digits, "digits", 1, 1000)
+    T_text = period_of(H, T)
     if T_text is None:
         raise InputError("T is required (the sample period)")
-    args = ["stability", f"--plant={plant}", f"--H={expr}", f"--T={T_text}", f"--delay={int(delay)}",
-            f"--digits={int(digits)}", "--json", *_sets(params)]
-    if operator is not None:
-        args.append(f"--operator={operator}")
+    if max is not None and not isinstance(max, str):
+        raise InputError(f"max: expected the name of a gain (a str), got {max!r}")
+    H_text = _text(H, "H")
+    fixed, names, columns, shape, arrays = _params(params)
+    if shape is not None:
+        d = _call(_core.stability_many, plant, H_text, operator, T_text, delay, max, digits, fixed, names, columns,
+                  _jobs(jobs))
+        if max is None:  # value/lo/hi: the spectral radius; stable: 1, 0, -1 undecided
+            return ResultArray(Stability, d, shape, "spectral radius of the sampled loop (stability::decide)", arrays)
+        return ResultArray(MaxGain, d, shape, f"largest stable {max} (stability::max_gain)", arrays)
+    d = _call(_core.stability, plant, H_text, operator, T_text, delay, max, digits, fixed)
     if max is not None:
-        args.append(f"--max={max}")
-    return Stability(*_json(args))
+        rec = d["max"] or {"value_exact": None, "mid": float("nan"), "lo": float("nan"), "hi": float("nan"),
+                           "lo_text": None, "hi_text": None, "status": "failed", "method": "stability::max_gain",
+                           "note": d["note"]}
+        extra = {k: d.get(k) for k in ("name", "outcome", "crossing", "theta", "omega", "precision_bits")}
+        return MaxGain(rec, **extra)
+    rec = d["spectral_radius"] or {"value_exact": None, "mid": float("nan"), "lo": float("nan"), "hi": float("nan"),
+                                   "lo_text": None, "hi_text": None, "status": d["status"],
+                                   "method": "stability::decide", "note": d["evidence"]}
+    extra = {k: d[k] for k in ("stable", "evidence", "degree", "device", "precision_bits")}
+    extra["verdict_status"] = d["status"]
+    return Stability(rec, **extra)
 
 
-def wedge(H: Any, T: Any = None, digits: int = 20, params: Optional[Mapping[str, Any]] = None) -> Wedge:
-    """The wedge criterion (25) and Tsypkin's condition (21) of paper 002 for H(z), over all theta."""
-    expr, T_text = transfer_function(H, T)
-    args = ["wedge", f"--H={expr}", f"--digits={int(digits)}", "--json", *_sets(params)]
-    if T_text is not None:
-        args.append(f"--T={T_text}")
-    return Wedge(*_json(args))
+# ---- paper 000: passivity levels ---------------------------------------------------------------
 
-
-def passivity_level(H: Any = None, T: Any = None, ss: Optional[Sequence[Any]] = None, kind: str = "osp",
-                    backend: Optional[str] = None, lemma: Optional[int] = None, grid: Optional[int] = None,
-                    digits: Optional[int] = None, params: Optional[Mapping[str, Any]] = None) -> PassivityLevel:
+def passivity_level(H: Any = None, T: Any = None, ss: Any = None, kind: str = "osp", backend: Optional[str] = None,
+                    lemma: Optional[int] = None, grid: Optional[int] = None, digits: Optional[int] = None,
+                    params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None):
     """The OSP (kind='osp') or ISP ('isp') level of a discrete LTI system, paper 000 Lemmas 1-2.
 
-    Give H(z) (SISO, with T) or ss=(A, B, C, D) with T (MIMO, square).
-    """
+    Give H(z) (SISO, with T) or ss=(A, B, C, D) (or a hapstab.StateSpace) with T (MIMO, square).
+    An array in params (H an expression) gives a ResultArray, on threads (the SDP solves one at a
+    time: the solvers are not thread-safe)."""
     if (H is None) == (ss is None):
         raise InputError("give exactly one of H or ss=(A, B, C, D)")
-    args = ["passivity-level", f"--kind={kind}", "--json", *_sets(params)]
-    for name, v in (("backend", backend), ("lemma", lemma), ("grid", grid), ("digits", digits)):
-        if v is not None:
-            args.append(f"--{name}={v}")
-    if H is not None:
-        expr, T_text = transfer_function(H, T)
+    if kind not in ("osp", "isp"):
+        raise InputError(f"kind: expected 'osp' or 'isp', got {kind!r}")
+    backend = "auto" if backend is None else backend
+    if backend not in ("auto", "dsdp", "csdp", "ipm"):
+        raise InputError(f"backend: expected 'auto', 'dsdp', 'csdp' or 'ipm', got {backend!r}")
+    lemma = 1 if lemma is None else integer(lemma, "lemma", 1, 2)
+    grid = 4096 if grid is None else integer(grid, "grid", 16, 10000000)
+    digits = 17 if digits is None else integer(digits, "digits", 10, 100)
+    if ss is not None:
+        if params:
+            raise InputError("params: ss=(A, B, C, D) holds numbers; params name parameters of an expression H")
+        if isinstance(ss, _core.StateSpace):
+            model = ss
+        else:
+            if T is None:
+                raise InputError("T is required with ss=(A, B, C, D)")
+            if len(ss) != 4:
+                raise InputError(f"ss: expected (A, B, C, D), got {len(ss)} items")
+            model = _call(state_space, *ss, T)
+        d = _call(_core.passivity_level_ss, model, kind, backend, lemma, grid, digits)
+    else:
+        T_text = period_of(H, T)
         if T_text is None:
             raise InputError("T is required (the sample period)")
-        return PassivityLevel(*_json(args + [f"--H={expr}", f"--T={T_text}"]))
-    if T is None:
-        raise InputError("T is required with ss=(A, B, C, D)")
-    if len(ss) != 4:
-        raise InputError(f"ss: expected (A, B, C, D), got {len(ss)} items")
-    with tempfile.TemporaryDirectory(prefix="hapstab-ss-") as tmp:
-        path = os.path.join(tmp, "ss.json")
-        with open(path, "w", encoding="utf-8") as f:
-            json.dump(state_space_json(*ss, T), f)
-        return PassivityLevel(*_json(args + [f"--ss={path}"]))
+        fixed, names, columns, shape, arrays = _params(params)
+        if shape is not None:
+            d = _call(_core.passivity_level_many, _expression(H), T_text, fixed, names, columns, kind, backend, lemma,
+                      grid, digits, _jobs(jobs))
+            return ResultArray(PassivityLevel, d, shape, f"{kind} level (lmi::passivity_levels)", arrays)
+        d = _call(_core.passivity_level, _call(transfer_function, H, T_text, fixed, "H"), kind, backend, lemma, grid,
+                  digits)
+    extra = {k: d[k] for k in ("kind", "theta", "is_level", "certified_value", "lmi_level", "lmi_lower_bound",
+                               "lmi_method", "grid_level")}
+    return PassivityLevel(d["level"], **extra)
 
 
-# ---- scenes --------------------------------------------------------------------------------
+# ---- scenes -------------------------------------------------------------------------------------
 
 class _SceneFile:
-    """A scene given as a path, or as TOML text (written to a temporary scene.toml)."""
+    """A scene given as a path, or as TOML text (given to the library as text, named 'scene')."""
 
     def __init__(self, scene: Any) -> None:
-        self._tmp = None
         if isinstance(scene, str) and "\n" in scene:
-            self._tmp = tempfile.TemporaryDirectory(prefix="hapstab-scene-")
-            self.path = os.path.join(self._tmp.name, "scene.toml")
-            with open(self.path, "w", encoding="utf-8") as f:
-                f.write(scene)
+            self.text, self.path = scene, None
         elif isinstance(scene, (str, os.PathLike)):
-            self.path = os.fspath(scene)
+            self.text, self.path = None, os.fspath(scene)
         else:
             raise TypeError(f"scene: expected a path or TOML text, got {type(scene).__name__}")
 
-    def __enter__(self) -> str:
-        return self.path
 
-    def __exit__(self, *exc) -> None:
-        if self._tmp is not None:
-            self._tmp.cleanup()
+_UNITS = {"t": "s", "x": "m", "v": "m/s", "u": "N", "fh": "N", "E_port": "J", "E_act": "J", "E_po": "J", "storage": "J"}
 
 
-_COLUMN = re.compile(r"(?P<name>[A-Za-z_]+)_(?P<dof>\d+) \[(?P<unit>[^\]]*)\]")
+def simulate(scene: Any, *, force: bool = False, max_output: Optional[float] = None, **overrides: Any) -> Simulation:
+    """Simulates a scene (a path, or TOML text) with the exact-ZOH simulator (the library's, as
+    `hapstab simulate`); the series come back as numpy arrays (Simulation.samples, .fine).
+
+    overrides are scene parameters (exact). max_output (MB, default 200) caps the arrays the run
+    would hold (force=True lifts it). Ctrl-C stops the run within about 1/100 of it."""
+    s = _SceneFile(scene)
+    if not isinstance(force, bool):
+        raise InputError(f"force: expected True or False, got {force!r}")
+    cap = 200.0 if max_output is None else real(max_output, "max_output")
+    texts = {str(k): exact(v, str(k)) for k, v in overrides.items()}
+    d = _call(_core.simulate, s.text if s.text is not None else s.path, s.text is not None, texts, cap, force,
+              keywords=True)
+    summary = d["summary"]
+    rec = {"value_exact": None, "mid": summary["max_velocity"], "lo": summary["max_velocity"],
+           "hi": summary["max_velocity"], "lo_text": None, "hi_text": None, "status": "numeric",
+           "method": summary["method"], "note": ""}
+    return Simulation(rec, samples=d["samples"], fine=d["fine"], units=dict(_UNITS), summary_fields=summary, **summary)
 
 
-def read_series(path: str) -> tuple:
-    """A simulate CSV (one header row `t [s],x_0 [m],...`) -> ({'t': (rows,), 'x': (rows, dofs), ...}, units)."""
-    import numpy as np
-    with open(path, newline="", encoding="utf-8") as f:
-        header = next(csv.reader(f))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # "input contained no data" for a run that recorded nothing
-        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, dtype=np.float64)
-    if data.size == 0:
-        data = np.empty((0, len(header)), dtype=np.float64)
-    columns: Dict[str, list] = {}
-    units = {"t": "s"}
-    for k, name in enumerate(header[1:], start=1):
-        m = _COLUMN.fullmatch(name)
-        if not m:
-            raise RuntimeError(f"{path}: unexpected column '{name}'")
-        columns.setdefault(m["name"], []).append(k)
-        units[m["name"]] = m["unit"]
-    series = {"t": np.ascontiguousarray(data[:, 0])}
-    for name, ks in columns.items():
-        series[name] = np.ascontiguousarray(data[:, ks])
-    return series, units
-
-
-def simulate(scene: Any, *, out: Optional[str] = None, force: bool = False, max_output: Optional[float] = None,
-             **overrides: Any) -> Simulation:
-    """Simulates a scene (a path, or TOML text) with the exact-ZOH simulator: `hapstab simulate`.
-
-    overrides are scene parameters (`--set NAME=VALUE`, exact). The files (CSV, plot.gp,
-    summary.json) go to `out` when given (kept), else to a temporary folder (removed).
-    """
-    with _SceneFile(scene) as path, tempfile.TemporaryDirectory(prefix="hapstab-sim-") as tmp:
-        folder = os.fspath(out) if out is not None else tmp
-        args = ["simulate", f"--scene={path}", f"--out={folder}", "--json", "--quiet", *_sets(overrides)]
-        if force:
-            args.append("--force")
-        if max_output is not None:
-            args.append(f"--max-output={float(max_output)!r}")
-        data, code = _json(args)
-        samples, units = read_series(os.path.join(folder, "samples.csv"))
-        fine_path = os.path.join(folder, "fine.csv")
-        fine = read_series(fine_path)[0] if os.path.exists(fine_path) else None
-        return Simulation(data, code, samples, fine, units, folder if out is not None else None)
-
-
-from . import multidof  # noqa: E402  (uses _SceneFile, _json, _sets above)
+from . import multidof  # noqa: E402  (uses _SceneFile, _call above)
 from ._sweep import Sweep, sweep  # noqa: E402

@@ -1,7 +1,20 @@
 # Type stubs of the package hapstab (python/hapstab/__init__.py).
+#
+# The result protocol (every scalar result is a Result):
+#   value        Fraction when status is 'exact', else the float midpoint of the enclosure
+#   lo, hi       the enclosure rounded OUTWARD to floats (proven for exact/certified; for
+#                numeric the stated error band, not a proof)
+#   lo_exact, hi_exact   the same ends as exact decimal strings, rounded outward (or None)
+#   status       'exact' | 'certified' | 'numeric' | 'upper_bound' | 'failed';  method, note
+#   float(r)     float(value)
+#   r < x, r <= x, r > x, r >= x, r == x   decided by the enclosure, exactly (x: int, Fraction,
+#                float at its binary value, exact str, or a Result); raises UndecidedComparison
+#                when the enclosure does not decide it
+#   _repr_html_(), _repr_latex_()          notebook display
+# A vectorised call (an array in params, or an omega array for r) returns a ResultArray.
 import os
 from fractions import Fraction
-from typing import Any, Dict, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Type, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -9,58 +22,204 @@ import numpy.typing as npt
 from . import multidof as multidof
 
 __version__: str
+STATUS: Tuple[str, str, str, str]  # the int8 status codes of a ResultArray: exact, certified, numeric, failed
 
 class InputError(ValueError): ...
 class NumericalError(RuntimeError): ...
+class UndecidedComparison(ValueError): ...
 
 Exact = Union[int, Fraction, float, str]
-# an expression str, (num, den) in descending powers of z, or an object with num, den, dt
-TransferFunctionInput = Any
+ExactOrArray = Union[Exact, Sequence[Exact], npt.NDArray[Any]]
 Scene = Union[str, os.PathLike]
 
-class Result:
-    exit_code: int
-    def __getattr__(self, name: str) -> Any: ...
-    def as_dict(self) -> Dict[str, Any]: ...
+class TransferFunction:
+    """An exact SISO transfer function (lti/tf.hpp), reduced; build it with tf()."""
     @property
-    def value(self) -> Any: ...
-    def __float__(self) -> float: ...
+    def num(self) -> List[str]: ...  # descending powers, exact p/q strings
+    @property
+    def den(self) -> List[str]: ...
+    @property
+    def T(self) -> Optional[str]: ...
+    @property
+    def variable(self) -> str: ...
 
-class R(Result):
-    re: str
-    im: str
+class StateSpace:
+    """A discrete state space with exact entries (lti/state_space.hpp); build it with ss()."""
     @property
-    def value(self) -> Tuple[str, str]: ...
-    def __complex__(self) -> complex: ...
+    def A(self) -> List[List[str]]: ...
+    @property
+    def B(self) -> List[List[str]]: ...
+    @property
+    def C(self) -> List[List[str]]: ...
+    @property
+    def D(self) -> List[List[str]]: ...
+    @property
+    def T(self) -> str: ...
+    @property
+    def shape(self) -> Tuple[int, int, int]: ...  # (states, inputs, outputs)
+
+# an expression str, a TransferFunction, (num, den) in descending powers of z, or an object with num, den, dt
+TransferFunctionInput = Union[str, TransferFunction, Tuple[Sequence[Exact], Sequence[Exact]], Any]
+
+class Result:
+    @property
+    def value(self) -> Union[Fraction, float]: ...
+    @property
+    def lo(self) -> float: ...
+    @property
+    def hi(self) -> float: ...
+    @property
+    def lo_exact(self) -> Optional[str]: ...
+    @property
+    def hi_exact(self) -> Optional[str]: ...
+    @property
+    def status(self) -> str: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def note(self) -> str: ...
+    def as_dict(self) -> Dict[str, Any]: ...
+    def __float__(self) -> float: ...
+    def __lt__(self, other: Union[Exact, "Result"]) -> bool: ...
+    def __le__(self, other: Union[Exact, "Result"]) -> bool: ...
+    def __gt__(self, other: Union[Exact, "Result"]) -> bool: ...
+    def __ge__(self, other: Union[Exact, "Result"]) -> bool: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __ne__(self, other: object) -> bool: ...
+    def _repr_html_(self) -> str: ...
+    def _repr_latex_(self) -> str: ...
 
 class Bound(Result):
-    status: str
-    omega: Optional[str]
-    method: str
-    @property
-    def value(self) -> str: ...
-    @property
-    def fraction(self) -> Optional[Fraction]: ...
-    @property
-    def enclosure(self) -> Tuple[str, str]: ...
+    """b* of paper 001 (45)/(54): passive iff b > b*."""
+    omega: Optional[str]          # the maximiser (rad/s), decimal
+    where: str
+    decimal: str                  # b* to the digits asked ('inf' when no finite b)
+    infinite: bool
+    closed_form: Optional[Dict[str, Any]]  # {name, equation, formula, value, approx, tight}
+    enclosure_rigorous: bool
+    damping: Dict[str, Any]       # with damping=b: {b, passive}
+
+class PassivityLevel(Result):
+    kind: str
+    theta: Optional[float]
+    is_level: bool
+    certified_value: Optional[str]
+    lmi_level: Optional[float]
+    lmi_lower_bound: Optional[str]
+    lmi_method: str
+    grid_level: Optional[float]
 
 class Stability(Result):
-    status: str
-    @property
-    def value(self) -> Any: ...
+    """value: the closed loop's spectral radius; bool(): stable (raises when undecided)."""
+    stable: Optional[bool]
+    evidence: str
+    degree: int
+    device: str
+    precision_bits: int
+    verdict_status: str
+    def __bool__(self) -> bool: ...
+
+class MaxGain(Result):
+    """stability(..., max='K'): sup{K : stable on (0, sup)} (0: unstable for small K; inf)."""
+    name: str
+    outcome: str
+    crossing: str
+    theta: Optional[Tuple[float, float]]
+    omega: Optional[Tuple[float, float]]
     def __bool__(self) -> bool: ...
 
 class Wedge(Result):
-    verdict: str
-    wedge_holds: bool
-    tsypkin_holds: bool
+    """value: the wedge criterion's margin; bool(): it holds and the assumptions hold."""
+    wedge: Dict[str, Any]         # {evaluated, holds, evidence, margin: Result, max_gain: Result | None, gain_infinite, theta_at_min}
+    tsypkin: Dict[str, Any]
+    applies: bool
+    assumptions: List[str]
+    H: str
+    H1: Optional[str]
     def __bool__(self) -> bool: ...
 
-class PassivityLevel(Result):
-    level: Optional[float]
-    kind: str
+class R:
+    """r(jw): re (Result, exact), im (Result, certified), value complex, lo/hi the box."""
+    re: Result
+    im: Result
+    series_re: str
+    series_im: str
+    series_terms: int
+    series_error_bound: Optional[str]
+    decimal: Tuple[str, str]
+    status: str
+    method: str
+    @property
+    def value(self) -> complex: ...
+    @property
+    def lo(self) -> complex: ...
+    @property
+    def hi(self) -> complex: ...
+    def __complex__(self) -> complex: ...
+
+class RArray:
+    """r(jw) over an omega array."""
+    re: float
+    re_exact: str
+    im: npt.NDArray[np.float64]
+    im_lo: npt.NDArray[np.float64]
+    im_hi: npt.NDArray[np.float64]
+    status: str
+    method: str
+    @property
+    def value(self) -> npt.NDArray[np.complex128]: ...
+    @property
+    def lo(self) -> npt.NDArray[np.complex128]: ...
+    @property
+    def hi(self) -> npt.NDArray[np.complex128]: ...
+    def __len__(self) -> int: ...
+
+class ResultArray:
+    """A vectorised call: value, lo, hi (float64, the broadcast shape of params), status (int8,
+    STATUS[code]), exact (object: str or None), lo_exact/hi_exact (object: the ends as outward
+    decimals, which decide a comparison the float ends straddle), error (object: str or None),
+    params, method; b* adds omega, stability adds stable (int8: 1, 0, -1 undecided)."""
+    shape: Tuple[int, ...]
+    method: str
+    params: Dict[str, npt.NDArray[Any]]
+    value: npt.NDArray[np.float64]
+    lo: npt.NDArray[np.float64]
+    hi: npt.NDArray[np.float64]
+    status: npt.NDArray[np.int8]
+    exact: npt.NDArray[np.object_]
+    lo_exact: npt.NDArray[np.object_]
+    hi_exact: npt.NDArray[np.object_]
+    error: npt.NDArray[np.object_]
+    @property
+    def status_names(self) -> npt.NDArray[np.object_]: ...
+    @property
+    def failed(self) -> int: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: Any) -> Result: ...
+    def __lt__(self, other: Any) -> npt.NDArray[np.bool_]: ...
+    def __le__(self, other: Any) -> npt.NDArray[np.bool_]: ...
+    def __gt__(self, other: Any) -> npt.NDArray[np.bool_]: ...
+    def __ge__(self, other: Any) -> npt.NDArray[np.bool_]: ...
+    def to_numpy(self) -> npt.NDArray[np.void]: ...
+    def to_pandas(self) -> Any: ...
+
+class Simulation(Result):
+    """value: max |v| at the samples (numeric); bool(): not diverged."""
+    samples: Dict[str, npt.NDArray[np.float64]]
+    fine: Optional[Dict[str, npt.NDArray[np.float64]]]
+    units: Dict[str, str]
+    diverged: bool
+    trend: str
+    max_velocity: float
+    energy_generated: float
+    limit_cycle: Optional[Dict[str, Any]]
+    steps_run: int
+    @property
+    def summary(self) -> Dict[str, Any]: ...
+    def __bool__(self) -> bool: ...
 
 class Analysis(Result):
+    exit_code: int
     feasible: bool
     certified: bool
     stability_concluded: bool
@@ -68,51 +227,45 @@ class Analysis(Result):
     def __bool__(self) -> bool: ...
 
 class Design(Result):
+    exit_code: int
     feasible: bool
     certified: bool
     @property
     def V(self) -> Tuple[npt.NDArray[np.float64], ...]: ...
     def __bool__(self) -> bool: ...
 
-class Simulation(Result):
-    samples: Dict[str, npt.NDArray[np.float64]]
-    fine: Optional[Dict[str, npt.NDArray[np.float64]]]
-    units: Dict[str, str]
-    out: Optional[str]
-    diverged: bool
-    @property
-    def summary(self) -> Dict[str, Any]: ...
-
-def run(*args: str) -> Result: ...
+def tf(H: TransferFunctionInput, T: Optional[Exact] = ..., params: Optional[Mapping[str, Exact]] = ...) -> TransferFunction: ...
+def ss(A: Any, B: Any, C: Any, D: Any, T: Exact) -> StateSpace: ...
+def run(*args: str) -> Tuple[int, Optional[Dict[str, Any]]]: ...
 def examples_dir() -> str: ...
-def r(T: Exact, omega: Exact, digits: int = ..., terms: Optional[int] = ...) -> R: ...
+def r(T: Exact, omega: ExactOrArray, digits: int = ..., terms: Optional[int] = ..., method: str = ...,
+      jobs: Optional[int] = ...) -> Union[R, RArray]: ...
 def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,
-          eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[Mapping[str, Exact]] = ...,
-          damping: Optional[Exact] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...) -> Bound: ...
-def stability(plant: str, H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ...,
+          eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[Mapping[str, ExactOrArray]] = ...,
+          damping: Optional[Exact] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
+          jobs: Optional[int] = ...) -> Union[Bound, ResultArray]: ...
+def stability(plant: str, H: Union[str, TransferFunction], T: Optional[Exact] = ..., delay: int = ...,
               operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
-              params: Optional[Mapping[str, Exact]] = ...) -> Stability: ...
+              params: Optional[Mapping[str, ExactOrArray]] = ...,
+              jobs: Optional[int] = ...) -> Union[Stability, MaxGain, ResultArray]: ...
 def wedge(H: TransferFunctionInput, T: Optional[Exact] = ..., digits: int = ...,
           params: Optional[Mapping[str, Exact]] = ...) -> Wedge: ...
 def passivity_level(H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,
-                    ss: Optional[Sequence[Any]] = ..., kind: str = ..., backend: Optional[str] = ...,
+                    ss: Optional[Union[StateSpace, Sequence[Any]]] = ..., kind: str = ..., backend: Optional[str] = ...,
                     lemma: Optional[int] = ..., grid: Optional[int] = ..., digits: Optional[int] = ...,
-                    params: Optional[Mapping[str, Exact]] = ...) -> PassivityLevel: ...
-def simulate(scene: Scene, *, out: Optional[Union[str, os.PathLike]] = ..., force: bool = ...,
-             max_output: Optional[float] = ..., **overrides: Exact) -> Simulation: ...
-def read_series(path: str) -> Tuple[Dict[str, npt.NDArray[np.float64]], Dict[str, str]]: ...
+                    params: Optional[Mapping[str, ExactOrArray]] = ...,
+                    jobs: Optional[int] = ...) -> Union[PassivityLevel, ResultArray]: ...
+def simulate(scene: Scene, *, force: bool = ..., max_output: Optional[float] = ..., **overrides: Exact) -> Simulation: ...
 
-class Sweep:
-    columns: Dict[str, npt.NDArray[Any]]
+class Sweep(np.ndarray):
+    """A structured array, one row per point: t['bound'] float64, t['index'] int64, ..."""
     exact: Dict[str, npt.NDArray[np.object_]]
     manifest: Dict[str, Any]
     exit_code: int
     path: Optional[str]
-    def __len__(self) -> int: ...
     @property
     def failed(self) -> int: ...
-    def as_dict(self) -> Dict[str, npt.NDArray[Any]]: ...
-    def frame(self) -> Any: ...
+    def to_pandas(self) -> Any: ...
 
 def sweep(spec: Union[str, os.PathLike, Mapping[str, Any]], out: Optional[Union[str, os.PathLike]] = ..., *,
           jobs: Optional[int] = ..., shard: Optional[str] = ..., resume: bool = ...) -> Sweep: ...

@@ -1,193 +1,574 @@
-"""hapstab._results -- the objects hapstab's functions return.
+"""hapstab._results -- the one result protocol of every hapstab function.
 
-A Result holds the JSON a command printed: its keys are attributes (result.status), as_dict()
-gives a copy of it all, repr shows the main value and its status, and float() works where the
-command has one number. exit_code is the command's: 0, or 1 when the property does not hold
-(a loop that is not stable is an answer, not an error).
+A scalar result is a Result (a number with its enclosure):
+
+    value      fractions.Fraction when the status is exact, else a float midpoint
+    lo, hi     the enclosure rounded OUTWARD to floats (lo <= true value <= hi when the status
+               is exact or certified; for numeric, the stated error band, not a proof)
+    lo_exact, hi_exact   the same ends as exact decimal strings, rounded outward (None where
+               the method states no end)
+    status     'exact' | 'certified' | 'numeric' | 'upper_bound' | 'failed'
+    method     how it was computed;  note  caveats
+    float(r)   float(value);  r < x, r <= x, r == x, ...  decided by the enclosure, exactly
+               (x an int, Fraction, float at its binary value, exact str, or another Result):
+               a comparison the enclosure cannot decide raises UndecidedComparison, saying so
+    _repr_html_ / _repr_latex_   for notebooks
+
+A vectorised call (an array in params, or an omega array) returns a ResultArray: value, lo, hi
+as float64 arrays of the broadcast shape, status as int8 codes (STATUS names them), exact (the
+exact values as strings, None where not exact), lo_exact/hi_exact (the ends as outward decimals:
+they decide a comparison the float ends straddle), error (why a point failed, None where it ran);
+r[i] is point i as a Result, comparisons are elementwise (raising when an element is undecided),
+np.asarray(r) is the value array, to_numpy() a structured array and to_pandas() a DataFrame.
 """
 from __future__ import annotations
 
-import copy
+import html
+import math
 from fractions import Fraction
 from typing import Any, Dict, Optional, Tuple
 
+STATUS = ("exact", "certified", "numeric", "failed")
+
+
+class UndecidedComparison(ValueError):
+    """A comparison whose answer the enclosure of a result does not decide (the number compared
+    with lies inside it). Ask for more digits, or compare .lo/.hi yourself."""
+
+
+def _exact_of(x: Any) -> Any:
+    """x as an exact Fraction (or +-inf) for comparisons."""
+    from ._exact import exact, to_fraction
+    if isinstance(x, Result):
+        raise TypeError("internal: Result handled by the caller")
+    if isinstance(x, float) and math.isinf(x):
+        return x
+    if isinstance(x, str) and x.strip() in ("inf", "+inf", "-inf"):
+        return float(x)
+    return to_fraction(exact(x, "the number compared with"))
+
+
+def _end(text: Optional[str], f: float) -> Any:
+    """An end of an enclosure, exactly: its outward decimal when there is one, else the float (exact)."""
+    if text is not None:
+        if text in ("inf", "-inf"):
+            return float(text)
+        from ._exact import to_fraction
+        return to_fraction(text)
+    if math.isinf(f) or math.isnan(f):
+        return f
+    return Fraction(f)
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.17g}" if math.isfinite(x) else str(x)
+
 
 class Result:
-    """The JSON of one hapstab command, as attributes."""
+    """A number with its enclosure, status and method (module docstring)."""
 
-    _value_key: Optional[str] = None  # the key float() and repr show
-    _status_key: str = "status"
+    _symbol = "x"  # its name in LaTeX
+    _name = "value"
 
-    def __init__(self, data: Dict[str, Any], exit_code: int = 0) -> None:
-        object.__setattr__(self, "_data", data)
-        object.__setattr__(self, "exit_code", exit_code)
+    def __init__(self, record: Dict[str, Any], **extra: Any) -> None:
+        object.__setattr__(self, "_rec", dict(record))
+        object.__setattr__(self, "_extra", extra)
+
+    # ---- the protocol ------------------------------------------------------------------------
+    @property
+    def value(self) -> Any:
+        """Fraction when exact, else the float midpoint of the enclosure."""
+        v = self._rec.get("value_exact")
+        if v is not None and self._rec["status"] == "exact":
+            from ._exact import to_fraction
+            return to_fraction(v)
+        return float(self._rec["mid"])
+
+    @property
+    def lo(self) -> float:
+        return float(self._rec["lo"])
+
+    @property
+    def hi(self) -> float:
+        return float(self._rec["hi"])
+
+    @property
+    def lo_exact(self) -> Optional[str]:
+        return self._rec.get("lo_text")
+
+    @property
+    def hi_exact(self) -> Optional[str]:
+        return self._rec.get("hi_text")
+
+    @property
+    def status(self) -> str:
+        return self._rec["status"]
+
+    @property
+    def method(self) -> str:
+        return self._rec["method"]
+
+    @property
+    def note(self) -> str:
+        return self._rec.get("note", "")
 
     def __getattr__(self, name: str) -> Any:
-        try:
-            return self._data[name]
-        except KeyError:
-            raise AttributeError(f"{type(self).__name__} has no attribute '{name}' "
-                                 f"(keys: {', '.join(sorted(self._data))})") from None
+        extra = object.__getattribute__(self, "_extra")
+        if name in extra:
+            return extra[name]
+        raise AttributeError(f"{type(self).__name__} has no attribute '{name}' "
+                             f"(it has: value, lo, hi, lo_exact, hi_exact, status, method, note, "
+                             f"{', '.join(sorted(extra))})")
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(f"{type(self).__name__} is read-only")
 
     def __dir__(self):
-        return sorted(set(super().__dir__()) | set(self._data))
+        return sorted(set(super().__dir__()) | set(self._extra))
 
     def as_dict(self) -> Dict[str, Any]:
-        """A deep copy of the command's JSON."""
-        return copy.deepcopy(self._data)
-
-    @property
-    def value(self) -> Any:
-        return self._data.get(self._value_key) if self._value_key else None
+        """value, lo, hi, lo_exact, hi_exact, status, method, note and the function's own fields."""
+        d = {"value": self.value, "lo": self.lo, "hi": self.hi, "lo_exact": self.lo_exact, "hi_exact": self.hi_exact,
+             "status": self.status, "method": self.method, "note": self.note}
+        d.update(self._extra)
+        return d
 
     def __float__(self) -> float:
+        return float(self.value)
+
+    # ---- honest comparisons --------------------------------------------------------------------
+    def _bounds(self) -> Tuple[Any, Any]:
+        if self.status == "failed" or math.isnan(self._rec["lo"]):
+            raise UndecidedComparison(f"{self._name} failed ({self.note}): nothing to compare")
+        return _end(self.lo_exact, self._rec["lo"]), _end(self.hi_exact, self._rec["hi"])
+
+    def _other(self, other: Any) -> Tuple[Any, Any]:
+        if isinstance(other, Result):
+            return other._bounds()
+        x = _exact_of(other)
+        return x, x
+
+    def _undecided(self, op: str, other: Any) -> UndecidedComparison:
+        return UndecidedComparison(
+            f"cannot decide {self._name} {op} {other!r}: the {self.status} enclosure "
+            f"[{self.lo_exact or _fmt(self.lo)}, {self.hi_exact or _fmt(self.hi)}] of {self._name} "
+            f"does not lie on one side of it (ask for more digits, or compare .lo / .hi)")
+
+    def __lt__(self, other: Any) -> bool:
+        lo, hi = self._bounds()
+        olo, ohi = self._other(other)
+        if hi < olo:
+            return True
+        if lo >= ohi:
+            return False
+        raise self._undecided("<", other)
+
+    def __le__(self, other: Any) -> bool:
+        lo, hi = self._bounds()
+        olo, ohi = self._other(other)
+        if hi <= olo:
+            return True
+        if lo > ohi:
+            return False
+        raise self._undecided("<=", other)
+
+    def __gt__(self, other: Any) -> bool:
+        lo, hi = self._bounds()
+        olo, ohi = self._other(other)
+        if lo > ohi:
+            return True
+        if hi <= olo:
+            return False
+        raise self._undecided(">", other)
+
+    def __ge__(self, other: Any) -> bool:
+        lo, hi = self._bounds()
+        olo, ohi = self._other(other)
+        if lo >= ohi:
+            return True
+        if hi < olo:
+            return False
+        raise self._undecided(">=", other)
+
+    def __eq__(self, other: Any) -> bool:  # type: ignore[override]
+        lo, hi = self._bounds()
+        olo, ohi = self._other(other)
+        if hi < olo or lo > ohi:
+            return False
+        if lo == hi == olo == ohi:
+            return True
+        raise self._undecided("==", other)
+
+    def __ne__(self, other: Any) -> bool:  # type: ignore[override]
+        return not self.__eq__(other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    # ---- display -------------------------------------------------------------------------------
+    def _value_text(self) -> str:
         v = self.value
-        if v is None or isinstance(v, bool) or not isinstance(v, (int, float, str)):
-            raise TypeError(f"{type(self).__name__} has no single number to convert to float")
-        return float(v)  # "inf" -> inf; decimal strings are correctly rounded by float()
+        if isinstance(v, Fraction):
+            return str(v.numerator) if v.denominator == 1 else f"{v.numerator}/{v.denominator}"
+        return _fmt(v)
 
     def __repr__(self) -> str:
-        return f"hapstab.{type(self).__name__}(value={self.value!r}, status={self._data.get(self._status_key)!r})"
+        extra = "".join(f", {k}={v!r}" for k, v in self._repr_extra().items())
+        return (f"hapstab.{type(self).__name__}(value={self.value!r}, lo={self.lo!r}, hi={self.hi!r}, "
+                f"status={self.status!r}{extra})")
 
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {}
 
-class R(Result):
-    """r(jw) of paper 001 (`hapstab r`): re, im as decimal strings, the truncated series beside."""
+    def _enclosure_text(self) -> str:
+        return f"[{self.lo_exact or _fmt(self.lo)}, {self.hi_exact or _fmt(self.hi)}]"
 
-    @property
-    def value(self) -> Tuple[str, str]:
-        return (self._data["re"], self._data["im"])
+    def _repr_html_(self) -> str:
+        rows = [("value", self._value_text()), ("enclosure", self._enclosure_text()), ("status", self.status),
+                ("method", self.method)]
+        rows += [(k, str(v)) for k, v in self._repr_extra().items()]
+        if self.note:
+            rows.append(("note", self.note))
+        body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th><td style='text-align:left'>"
+                       f"{html.escape(v)}</td></tr>" for k, v in rows)
+        return f"<table><caption>hapstab.{type(self).__name__}</caption>{body}</table>"
 
-    def __complex__(self) -> complex:
-        return complex(float(self._data["re"]), float(self._data["im"]))
-
-    def __float__(self) -> float:
-        raise TypeError("r(jw) is complex: use complex(result)")
-
-    def __repr__(self) -> str:
-        return f"hapstab.R(re={self._data['re']!r}, im={self._data['im']!r}, status='re exact, im certified')"
+    def _repr_latex_(self) -> str:
+        v = self.value
+        if isinstance(v, Fraction) and v.denominator != 1:
+            val = rf"\frac{{{v.numerator}}}{{{v.denominator}}}" if v >= 0 else rf"-\frac{{{-v.numerator}}}{{{v.denominator}}}"
+        else:
+            val = self._value_text().replace("inf", r"\infty")
+        if self.status == "exact":
+            return rf"${self._symbol} = {val}$ \quad (exact)"
+        lo = (self.lo_exact or _fmt(self.lo)).replace("inf", r"\infty")
+        hi = (self.hi_exact or _fmt(self.hi)).replace("inf", r"\infty")
+        return rf"${self._symbol} \approx {val} \in [{lo},\ {hi}]$ \quad ({self.status})"
 
 
 class Bound(Result):
-    """The passivity bound b* of paper 001 (`hapstab bound`): passive iff b > b*."""
+    """The passivity bound b* of paper 001 (45)/(54): the loop is passive iff b > b*.
+    Besides the protocol: omega (the maximiser, rad/s, a decimal str or None), where, decimal
+    (b* to the digits asked, a str; 'inf'), infinite, closed_form ({name, equation, formula,
+    value, tight} of the catalogue, or None), enclosure_rigorous, damping (with damping=b:
+    {b, passive})."""
 
-    _value_key = "bound"
+    _symbol = "b^*"
+    _name = "b*"
 
-    @property
-    def value(self) -> str:
-        """b* as a decimal string ("inf" when no finite b makes the loop passive)."""
-        return self._data["bound"]
-
-    @property
-    def fraction(self) -> Optional[Fraction]:
-        """b* as a Fraction when it is exact (status 'exact'), else None."""
-        e = self._data.get("exact")
-        return Fraction(e) if e is not None else None
-
-    @property
-    def enclosure(self) -> Tuple[str, str]:
-        lo, hi = self._data["enclosure"]
-        return (lo, hi)
-
-    def __repr__(self) -> str:
-        extra = f", exact={self._data['exact']!r}" if self._data.get("exact") else ""
-        return (f"hapstab.Bound(value={self.value!r}, status={self._data['status']!r}{extra}, "
-                f"omega={self._data.get('omega')!r})")
-
-
-class Stability(Result):
-    """Schur stability of the sampled haptic loop (`hapstab stability`); with max=NAME the largest
-    stable gain: value is `max` (a decimal string, "inf", or "0" when unstable for every small gain)."""
-
-    @property
-    def value(self) -> Any:
-        return self._data["max"] if "max" in self._data else self._data.get("stable")
-
-    def __bool__(self) -> bool:
-        if "max" in self._data:
-            return self._data["max"] not in (None, "0")
-        return bool(self._data.get("stable"))
-
-
-class Wedge(Result):
-    """The wedge criterion (25) and Tsypkin's condition (21) of paper 002 (`hapstab wedge`)."""
-
-    _value_key = "verdict"
-
-    def __float__(self) -> float:
-        raise TypeError("wedge has two margins: float(result.wedge_margin) or float(result.tsypkin_margin)")
-
-    def __bool__(self) -> bool:
-        return bool(self._data.get("wedge_holds"))
+    def _repr_extra(self) -> Dict[str, Any]:
+        extra = {"omega": self._extra.get("omega")}
+        if self._extra.get("closed_form"):
+            extra["closed_form"] = self._extra["closed_form"]["name"]
+        return extra
 
 
 class PassivityLevel(Result):
-    """The OSP/ISP level of paper 000 (`hapstab passivity-level`)."""
+    """The OSP (kind 'osp') or ISP ('isp') level of paper 000, Definition 2 / Lemmas 1-2: the
+    certified frequency-domain level where it is the level (status exact or certified), else the
+    LMI level (numeric; lo is its exactly checked lower bound). Besides the protocol: kind,
+    theta, is_level, certified_value, lmi_level, lmi_lower_bound, lmi_method, grid_level."""
 
-    _value_key = "level"
+    _symbol = r"\nu"
+    _name = "the level"
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"kind": self._extra.get("kind")}
 
 
-class Analysis(Result):
-    """Theorem 5 of paper 000 (`hapstab multidof analyze`)."""
+class MaxGain(Result):
+    """The largest stable gain of the sampled loop (stability(..., max='K')): sup{K : stable on
+    (0, sup)}; 0 when unstable for every small K, inf when stable for every K. Besides the
+    protocol: name, outcome, crossing ('z = 1', 'z = -1', 'complex pair'), theta and omega
+    (enclosures of the crossing, rad and rad/s), bool(r): a positive supremum exists."""
 
-    _value_key = "verdict"
+    _symbol = r"K_{\max}"
+    _name = "the largest stable gain"
 
     def __bool__(self) -> bool:
-        # as the exit code: Theorem 5 concludes and the loop as written is not proven unstable
-        law = self._data.get("loop_as_written") or {}
-        return bool(self._data["stability_concluded"]) and law.get("stable") is not False
+        return self.outcome == "holds" and self.value != 0
 
-    def __repr__(self) -> str:
-        return (f"hapstab.Analysis(verdict={self._data['verdict']!r}, certified={self._data['certified']!r}, "
-                f"stability_concluded={self._data['stability_concluded']!r})")
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"crossing": self._extra.get("crossing")}
 
 
-class Design(Result):
-    """Theorem 6 of paper 000 (`hapstab multidof design`): the coupling V = (A_V, B_V, C_V, D_V)."""
+class Stability(Result):
+    """Schur stability of the sampled loop: the value is the spectral radius of the closed loop
+    (its certified enclosure), the verdict is stable (True/False, None when undecided) and
+    bool(r) (raises when undecided). Besides the protocol: stable, evidence, degree, device,
+    precision_bits."""
 
-    _value_key = "feasible"
+    _symbol = r"\rho"
+    _name = "the spectral radius"
+
+    def __bool__(self) -> bool:
+        if self.stable is None:
+            raise UndecidedComparison(f"stability undecided: {self.evidence}")
+        return bool(self.stable)
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"stable": self._extra.get("stable")}
+
+
+class Wedge(Result):
+    """The wedge criterion (25) and Tsypkin's condition (21) of paper 002. The value is the wedge
+    criterion's margin (min over theta of its left side + 1: it holds iff the margin is > 0);
+    bool(r): it holds and the paper's assumptions hold. Besides the protocol: wedge, tsypkin
+    ({holds, margin, max_gain (Result, None when infinite), gain_infinite, theta_at_min,
+    evidence}), applies, assumptions (violated, in words), H, H1."""
+
+    _symbol = r"m_{\mathrm{wedge}}"
+    _name = "the wedge margin"
+
+    def __bool__(self) -> bool:
+        return bool(self.wedge["holds"]) and bool(self.applies)
+
+    def __float__(self) -> float:
+        return float(self.value)
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"wedge_holds": self.wedge["holds"], "tsypkin_holds": self.tsypkin["holds"], "applies": self.applies}
+
+
+class R:
+    """r(jw) = T/(e^{jwT} - 1) of paper 001 (44): re (a Result, exact -T/2) and im (a Result,
+    certified: the correctly rounded decimal -+ half a unit in its last place); value the
+    complex number, complex(r); lo/hi the corners of the box; the truncated series (34) beside
+    (series_re, series_im, series_terms, series_error_bound: decimal strings)."""
+
+    def __init__(self, d: Dict[str, Any]) -> None:
+        self.re = Result(d["re"])
+        self.im = Result(d["im"])
+        object.__setattr__(self.re, "_symbol", r"\mathrm{Re}\,r")
+        object.__setattr__(self.im, "_symbol", r"\mathrm{Im}\,r")
+        self.series_re, self.series_im = d["series_re"], d["series_im"]
+        self.series_terms, self.series_error_bound = d["series_terms"], d["series_error_bound"]
+        self.decimal = (d["re_text"], d["im_text"])
+        self.status = "certified"
+        self.method = "closed form (44): T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2); Re exact, Im from MPFI enclosures"
 
     @property
-    def V(self):
-        """(A_V, B_V, C_V, D_V) as numpy float64 arrays (empty when no V was found)."""
-        import numpy as np
-        return tuple(np.array(self._data[k], dtype=np.float64) for k in ("A_V", "B_V", "C_V", "D_V"))
+    def value(self) -> complex:
+        return complex(float(self.re), float(self.im))
 
-    def __bool__(self) -> bool:
-        return bool(self._data["feasible"])
+    @property
+    def lo(self) -> complex:
+        return complex(self.re.lo, self.im.lo)
+
+    @property
+    def hi(self) -> complex:
+        return complex(self.re.hi, self.im.hi)
+
+    def __complex__(self) -> complex:
+        return self.value
+
+    def __float__(self) -> float:
+        raise TypeError("r(jw) is complex: use complex(r), r.re or r.im")
 
     def __repr__(self) -> str:
-        return (f"hapstab.Design(feasible={self._data['feasible']!r}, certified={self._data['certified']!r}, "
-                f"iterations={self._data['iterations']!r})")
+        return f"hapstab.R(re={self.decimal[0]!r}, im={self.decimal[1]!r}, status='re exact, im certified')"
+
+    def _repr_latex_(self) -> str:
+        return rf"$r(j\omega) = {self.decimal[0]} {'-' if self.decimal[1].startswith('-') else '+'} " \
+               rf"{self.decimal[1].lstrip('-')}\,j$ \quad (Re exact, Im certified)"
 
 
 class Simulation(Result):
-    """A scene simulated (`hapstab simulate`): the summary's keys as attributes, and the series.
+    """A scene simulated with the exact-ZOH simulator: the value is the largest |v| at the sample
+    instants (numeric), bool(r) is not diverged. Besides the protocol: the summary's fields
+    (diverged, trend, energy_generated, limit_cycle, steps_run, ...), and
 
-    samples: dict of numpy float64 arrays, 't' of shape (rows,) in s, and per quantity
-      'x' [m], 'v' [m/s], 'u' [N], 'fh' [N], 'E_port', 'E_act', 'E_po', 'storage' [J] of shape
-      (rows, dofs): column j is DOF j (the CSV's x_j [m] ...).
-    fine: the same for the exact intersample grid ('t', 'x', 'v'), or None.
-    units: quantity -> unit. out: the folder with the files when simulate(out=...) kept them.
-    """
+      samples  dict of numpy float64 arrays: 't' (rows,) in s, and 'x' [m], 'v' [m/s], 'u' [N],
+               'fh' [N], 'E_port', 'E_act', 'E_po', 'storage' [J] of shape (rows, dofs)
+      fine     the same for the exact intersample grid ('t', 'x', 'v'), or None
+      units    quantity -> unit"""
 
-    _value_key = "diverged"
+    _symbol = r"\max|v|"
+    _name = "max |v|"
 
-    def __init__(self, data, exit_code, samples, fine, units, out) -> None:
-        super().__init__(data, exit_code)
-        object.__setattr__(self, "samples", samples)
-        object.__setattr__(self, "fine", fine)
-        object.__setattr__(self, "units", units)
-        object.__setattr__(self, "out", out)
+    def __bool__(self) -> bool:
+        return not self.diverged
 
     @property
     def summary(self) -> Dict[str, Any]:
-        return self.as_dict()
+        return dict(self._extra["summary_fields"])
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        rows, dofs = self.samples["x"].shape if "x" in self.samples else (0, 0)
+        return {"diverged": self.diverged, "samples": f"{rows}x{dofs}"}
+
+
+class Analysis(Result):
+    """Theorem 5 of paper 000 (multidof.analyze): the value is the LMI margin, status certified
+    when the feasible point was checked exactly. bool(r): stability concluded and the scene's
+    loop as written not proven unstable. Besides the protocol: the analysis' fields (feasible,
+    certified, stability_concluded, verdict, certificate, gamma, x, q_v, delta_v_required,
+    loop_as_written, assumptions, ...)."""
+
+    _symbol = r"\mathrm{margin}"
+    _name = "the LMI margin"
+
+    def __bool__(self) -> bool:
+        law = self._extra.get("loop_as_written") or {}
+        return bool(self._extra["stability_concluded"]) and law.get("stable") is not False
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"verdict": self._extra.get("verdict"), "stability_concluded": self._extra.get("stability_concluded")}
+
+
+class Design(Result):
+    """Theorem 6 of paper 000 (multidof.design): the value is the CCL trace gap (numeric); bool(r):
+    a coupling V was found and verified. V = (A_V, B_V, C_V, D_V) as numpy arrays. Besides the
+    protocol: the design's fields (feasible, certified, converged, iterations, verification, ...)."""
+
+    _symbol = r"\mathrm{gap}"
+    _name = "the trace gap"
+
+    @property
+    def V(self):
+        import numpy as np
+        return tuple(np.array(self._extra[k], dtype=np.float64) for k in ("A_V", "B_V", "C_V", "D_V"))
+
+    def __bool__(self) -> bool:
+        return bool(self._extra["feasible"])
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        return {"feasible": self._extra.get("feasible"), "certified": self._extra.get("certified")}
+
+
+class ResultArray:
+    """The results of a vectorised call (module docstring): value, lo, hi (float64), status (int8
+    codes, STATUS[code] names them), exact (object: str or None), error (object: str or None),
+    method, params (the inputs, broadcast), and the function's own columns (omega for b*)."""
+
+    def __init__(self, kind: type, columns: Dict[str, Any], shape: Tuple[int, ...], method: str,
+                 params: Dict[str, Any]) -> None:
+        import numpy as np
+        self._kind = kind
+        self.shape = shape
+        self.method = method
+        self.params = params
+        self._columns = {k: (np.asarray(v).reshape(shape) if hasattr(v, "__len__") else v) for k, v in columns.items()}
+        for k, v in self._columns.items():
+            setattr(self, k, v)
+
+    @property
+    def status_names(self):
+        import numpy as np
+        return np.array(STATUS, dtype=object)[self.status]
+
+    @property
+    def failed(self) -> int:
+        """The points that did not run (their error says why)."""
+        return int(sum(1 for e in self.error.ravel() if e is not None))
+
+    def __len__(self) -> int:
+        return self.shape[0] if self.shape else 1
+
+    def __array__(self, dtype=None):
+        import numpy as np
+        return np.asarray(self.value, dtype=dtype)
+
+    def __getitem__(self, index: Any) -> Result:
+        """Point `index` as a scalar Result."""
+        import numpy as np
+        i = np.ravel_multi_index(index if isinstance(index, tuple) else (index,), self.shape) if self.shape else 0
+        flat = {k: v.ravel()[i] for k, v in self._columns.items()}
+        status = STATUS[int(flat["status"])]
+        rec = {"value_exact": flat.get("exact"), "mid": float(flat["value"]), "lo": float(flat["lo"]),
+               "hi": float(flat["hi"]), "lo_text": flat.get("lo_exact"), "hi_text": flat.get("hi_exact"),
+               "status": status, "method": self.method, "note": flat.get("error") or ""}
+        extra = {k: flat[k] for k in self._columns
+                 if k not in ("value", "lo", "hi", "status", "exact", "lo_exact", "hi_exact", "error")}
+        extra.update({name: np.broadcast_to(np.asarray(v), self.shape).ravel()[i] for name, v in self.params.items()})
+        return self._kind(rec, **extra)
+
+    # elementwise comparisons, decided by the enclosures
+    def _compare(self, op: str, other: Any):
+        import numpy as np
+        if isinstance(other, (Result, ResultArray)):
+            raise TypeError("compare a ResultArray with numbers (or a numpy array of numbers)")
+        y = np.broadcast_to(np.asarray(other, dtype=np.float64), self.shape)
+        lo, hi = self.lo, self.hi
+        bad = self.status == STATUS.index("failed")
+        if op == "<":
+            yes, no = hi < y, lo >= y
+        elif op == "<=":
+            yes, no = hi <= y, lo > y
+        elif op == ">":
+            yes, no = lo > y, hi <= y
+        else:
+            yes, no = lo >= y, hi < y
+        undecided = ~(yes | no) & ~bad
+        # where the float ends straddle x (an end not a double, next to x), the exact ends decide
+        ends = getattr(self, "lo_exact", None), getattr(self, "hi_exact", None)
+        for i in map(tuple, np.argwhere(undecided)):
+            if ends[0] is None or ends[0][i] is None or not np.isfinite(y[i]):
+                continue
+            a, b, x = _end(ends[0][i], lo[i]), _end(ends[1][i], hi[i]), Fraction(float(y[i]))
+            yes_i = {"<": b < x, "<=": b <= x, ">": a > x, ">=": a >= x}[op]
+            no_i = {"<": a >= x, "<=": a > x, ">": b <= x, ">=": b < x}[op]
+            if yes_i or no_i:
+                yes[i], undecided[i] = yes_i, False
+        undecided |= bad
+        if undecided.any():
+            n = int(undecided.sum())
+            first = np.argwhere(undecided)[0]
+            raise UndecidedComparison(
+                f"cannot decide {op} {other if np.ndim(other) == 0 else '(array)'} at {n} of {undecided.size} points "
+                f"(the first at index {tuple(int(i) for i in first)}: "
+                + ("the point failed" if bad[tuple(first)] else
+                   f"enclosure [{_fmt(float(lo[tuple(first)]))}, {_fmt(float(hi[tuple(first)]))}]")
+                + "); the decided ones: (r.lo > x) | (r.hi <= x) ...")
+        return yes
+
+    def __lt__(self, other: Any):
+        return self._compare("<", other)
+
+    def __le__(self, other: Any):
+        return self._compare("<=", other)
+
+    def __gt__(self, other: Any):
+        return self._compare(">", other)
+
+    def __ge__(self, other: Any):
+        return self._compare(">=", other)
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def to_numpy(self):
+        """A structured numpy array: one field per parameter, then value, lo, hi, status (int8),
+        the function's own columns, exact and error (objects)."""
+        import numpy as np
+        names = list(self.params) + [k for k in self._columns]
+        arrays = [np.broadcast_to(np.asarray(v), self.shape) for v in self.params.values()] + list(self._columns.values())
+        dtype = [(n, a.dtype) for n, a in zip(names, arrays)]
+        out = np.empty(self.shape, dtype=dtype)
+        for n, a in zip(names, arrays):
+            out[n] = a
+        return out
+
+    def to_pandas(self):
+        """The points as a pandas DataFrame (one row per point; Debian's python3-pandas)."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError("to_pandas() needs pandas (Debian: python3-pandas); to_numpy() has the same table") from e
+        table = self.to_numpy().ravel()
+        return pandas.DataFrame({n: table[n] for n in table.dtype.names})
 
     def __repr__(self) -> str:
-        rows, dofs = self.samples["x"].shape if "x" in self.samples else (0, 0)
-        return (f"hapstab.Simulation(diverged={self._data['diverged']!r}, max_velocity={self._data['max_velocity']!r}, "
-                f"samples={rows}x{dofs}, status={self._data['status']!r})")
+        import numpy as np
+        counts = {STATUS[c]: int(n) for c, n in zip(*np.unique(self.status, return_counts=True))}
+        return (f"hapstab.ResultArray({self._kind.__name__}, shape={self.shape}, status={counts}, "
+                f"failed={self.failed}, method={self.method!r})")
 
+    def _repr_html_(self) -> str:
+        import numpy as np
+        rows = self.to_numpy().ravel()
+        head = list(rows.dtype.names)
+        show = rows[:10]
+        cells = "".join("<tr>" + "".join(f"<td>{html.escape(str(r[n]))}</td>" for n in head) + "</tr>" for r in show)
+        more = f"<p>... {rows.size - 10} more points</p>" if rows.size > 10 else ""
+        counts = {STATUS[c]: int(n) for c, n in zip(*np.unique(self.status, return_counts=True))}
+        return (f"<p>hapstab.ResultArray of {self._kind.__name__}, shape {self.shape}, status {counts}</p><table>"
+                + "<tr>" + "".join(f"<th>{html.escape(n)}</th>" for n in head) + "</tr>" + cells + "</table>" + more)

@@ -1,15 +1,17 @@
-"""hapstab._sweep -- `hapstab sweep` from Python: a command over exact parameter axes
-(docs/sweep.md), run by the command's own workers, read back as numpy arrays.
+"""hapstab._sweep -- a sweep from Python: a command over exact parameter axes (docs/sweep.md),
+run by the sweep's own workers (cli/sweep_cli.hpp, in a forked child), read back as a
+structured numpy array.
 
     >>> t = hapstab.sweep({"command": "bound",
     ...                    "args": {"H": "K + B*(z-1)/(T*z)", "T": "1/1000", "delay": 1},
     ...                    "axes": {"K": {"from": "0", "to": "40000", "points": 5},
     ...                             "B": {"values": ["0", "5", "20"]}}})
-    >>> t.columns["bound"]          # float64, one row per point in index order
+    >>> t["bound"]                  # float64, one row per point in index order
     >>> t.exact["bound"]            # the command's own decimal strings
-    >>> t.frame()                   # a pandas DataFrame, when pandas is importable
+    >>> t.to_pandas()               # a pandas DataFrame (Debian's python3-pandas)
 
-The spec is a path, TOML text, or a dict of the same shape as the TOML file.
+The spec is a path, TOML text, or a dict of the same shape as the TOML file (given to the
+sweep as text: its messages call it "spec").
 """
 from __future__ import annotations
 
@@ -17,6 +19,8 @@ import csv
 import json
 import os
 import tempfile
+
+import numpy as np
 from fractions import Fraction
 from typing import Any, Dict, Mapping, Optional
 
@@ -80,91 +84,95 @@ def _column(name: str, cells: list, strings: Any) -> Any:
         return strings
 
 
-class Sweep:
-    """A finished sweep: points.csv as columns (one entry per point, index order).
+class Sweep(np.ndarray):
+    """A finished sweep: points.csv as a structured numpy array, one row per point (index order).
 
-    columns[name]  `index` and `exit` int64; a true/false column bool; a column whose every
+    t[name]        `index` and `exit` int64; a true/false column bool; a column whose every
                    non-empty cell is a number (decimal, inf, p/q) float64, empty -> NaN; any
                    other column (and `error`) the strings, dtype object
-    exact[name]    every column's cells as written (strings; the exact axis values, the
+    t.exact[name]  every column's cells as written (strings; the exact axis values, the
                    command's decimals)
-    manifest       manifest.json (spec SHA-256, version, counts, wall time)
-    exit_code      0 every point ran, 1 some failed (their `error` cell says why)
-    path           the output folder (None when it was a temporary one)
+    t.manifest     manifest.json (spec SHA-256, version, counts, wall time)
+    t.exit_code    0 every point ran, 1 some failed (their `error` cell says why)
+    t.path         the output folder (None when it was a temporary one)
+    t.failed       the number of failed points;  t.to_pandas()  a DataFrame
     """
 
-    def __init__(self, folder: str, exit_code: int, keep: bool) -> None:
-        import numpy as np
+    exact: Dict[str, Any]
+    manifest: Dict[str, Any]
+    exit_code: int
+    path: Optional[str]
+
+    @staticmethod
+    def read(folder: str, exit_code: int, keep: bool) -> "Sweep":
         with open(os.path.join(folder, "points.csv"), newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
         header, body = rows[0], rows[1:]
-        self.exact: Dict[str, Any] = {}
-        self.columns: Dict[str, Any] = {}
+        exact: Dict[str, Any] = {}
+        columns = []
         for k, name in enumerate(header):
             cells = [r[k] for r in body]
-            self.exact[name] = np.array(cells, dtype=object)
-            self.columns[name] = _column(name, cells, self.exact[name])
+            exact[name] = np.array(cells, dtype=object)
+            columns.append(_column(name, cells, exact[name]))
+        table = np.empty(len(body), dtype=[(n, c.dtype) for n, c in zip(header, columns)])
+        for n, c in zip(header, columns):
+            table[n] = c
+        t = table.view(Sweep)
+        t.exact = exact
         with open(os.path.join(folder, "manifest.json"), encoding="utf-8") as f:
-            self.manifest: Dict[str, Any] = json.load(f)
-        self.exit_code = exit_code
-        self.path: Optional[str] = folder if keep else None
+            t.manifest = json.load(f)
+        t.exit_code = exit_code
+        t.path = folder if keep else None
+        return t
 
-    def __len__(self) -> int:
-        return len(self.exact.get("index", ()))
+    def __array_finalize__(self, obj: Any) -> None:
+        for name in ("exact", "manifest", "exit_code", "path"):
+            setattr(self, name, getattr(obj, name, None))
 
     @property
     def failed(self) -> int:
         """The points whose command failed (a non-empty `error` cell)."""
-        return int(sum(1 for e in self.exact.get("error", ()) if e))
+        return int(sum(1 for e in (self.exact or {}).get("error", ()) if e))
 
-    def as_dict(self) -> Dict[str, Any]:
-        """{column: numpy array} (the `columns`)."""
-        return dict(self.columns)
-
-    def frame(self):
-        """The table as a pandas DataFrame (numeric columns as float64); needs pandas."""
+    def to_pandas(self):
+        """The table as a pandas DataFrame (Debian's python3-pandas); the same columns as the array."""
         try:
             import pandas
         except ImportError as e:
-            raise ImportError("Sweep.frame() needs pandas; .columns has the same data as numpy arrays") from e
-        return pandas.DataFrame(self.columns)
+            raise ImportError("to_pandas() needs pandas (Debian: python3-pandas); the array itself has the same "
+                              "columns") from e
+        return pandas.DataFrame({n: np.asarray(self[n]) for n in self.dtype.names})
 
     def __repr__(self) -> str:
-        return f"hapstab.Sweep(points={len(self)}, failed={self.failed}, columns={list(self.columns)})"
+        if self.dtype.names is None or self.exact is None:
+            return np.ndarray.__repr__(np.asarray(self))
+        return f"hapstab.Sweep(points={len(self)}, failed={self.failed}, columns={list(self.dtype.names)})"
 
 
 def sweep(spec: Any, out: Optional[str] = None, *, jobs: Optional[int] = None, shard: Optional[str] = None,
           resume: bool = False) -> Sweep:
-    """Runs `hapstab sweep SPEC --out DIR` (docs/sweep.md) and reads its points.csv.
+    """Runs a sweep (docs/sweep.md) and reads its points.csv into a Sweep (a structured array).
 
     spec: a path, TOML text, or a dict {command, args, axes}. out: the folder to keep
-    (points.csv, manifest.json); a temporary one, removed after reading, when None. jobs,
-    shard ("I/N") and resume as on the command line. A bad spec raises hapstab.InputError
-    naming the key; failed points are rows with an `error` (exit_code 1), not exceptions.
-    """
+    (points.csv, manifest.json); a temporary one, removed after reading, when None. jobs
+    (worker processes), shard ("I/N") and resume as in docs/sweep.md. A bad spec raises
+    hapstab.InputError naming the key; failed points are rows with an `error` (exit_code 1)."""
+    from . import _call
+    from ._exact import integer
+    if isinstance(spec, Mapping):
+        text: Optional[str] = spec_toml(spec)
+    elif isinstance(spec, str) and "\n" in spec:
+        text = spec
+    elif isinstance(spec, (str, os.PathLike)):
+        text = None
+    else:
+        raise TypeError(f"spec: expected a path, TOML text or a dict, got {type(spec).__name__}")
+    if not isinstance(resume, bool):
+        raise _core.InputError(f"resume: expected True or False, got {resume!r}")
+    n_jobs = 0 if jobs is None else integer(jobs, "jobs", 1, 1024)
+    shard_text = "0/1" if shard is None else str(shard)
     with tempfile.TemporaryDirectory(prefix="hapstab-sweep-") as tmp:
-        if isinstance(spec, Mapping):
-            text = spec_toml(spec)
-        elif isinstance(spec, str) and "\n" in spec:
-            text = spec
-        elif isinstance(spec, (str, os.PathLike)):
-            text = None
-        else:
-            raise TypeError(f"spec: expected a path, TOML text or a dict, got {type(spec).__name__}")
-        path = os.fspath(spec) if text is None else os.path.join(tmp, "spec.toml")
-        if text is not None:
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(text)
         folder = os.fspath(out) if out is not None else os.path.join(tmp, "out")
-        args = ["sweep", path, f"--out={folder}", "--quiet"]
-        if jobs is not None:
-            args.append(f"--jobs={int(jobs)}")
-        if shard is not None:
-            args.append(f"--shard={shard}")
-        if resume:
-            args.append("--resume")
-        code, _ = _core.run(args)
-        if code not in (0, 1):
-            raise RuntimeError(f"hapstab sweep ended with exit code {code} (a worker died; "
-                               "run again with out= and resume=True to keep the finished points)")
-        return Sweep(folder, code, keep=out is not None)
+        code = _call(_core.sweep, text if text is not None else os.fspath(spec), text is not None, folder, n_jobs,
+                     shard_text, resume)
+        return Sweep.read(folder, code, keep=out is not None)

@@ -1,6 +1,10 @@
 // The exact transfer-function expression parser (lti/parse.hpp).
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <random>
+#include <set>
+
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -231,4 +235,105 @@ TEST(Parse, MemoNeverChangesAnOutcome) {
   EXPECT_EQ(outcome(big, {}, T, &memo).rfind("ok", 0), 0u);
   EXPECT_EQ(outcome(many, {}, T, &memo), outcome(many, {}, T, nullptr));
   EXPECT_NE(outcome(many, {}, T, nullptr).find("more than the limit of 16777216"), std::string::npos);
+}
+
+// ---- ParsedExpression: parsed once, evaluated at many parameter values ---------------------------
+
+namespace {
+
+// A random expression over z, T, the varying a, b and the fixed c, with every operator, powers
+// (negative too), unary minus and parentheses; divisions that are zero at some values on purpose.
+std::string random_expression(std::mt19937_64& g, int depth) {
+  std::uniform_int_distribution<int> pick(0, 9);
+  const char* leaves[] = {"z", "a", "b", "c", "T", "1/3", "0.5", "2", "z^2", "(z-1)"};
+  if (depth == 0) return leaves[pick(g)];
+  const std::string l = random_expression(g, depth - 1), r = random_expression(g, depth - 1);
+  switch (pick(g)) {
+    case 0: case 1: return "(" + l + " + " + r + ")";
+    case 2: return "(" + l + " - " + r + ")";
+    case 3: case 4: return l + "*" + r;
+    case 5: case 6: return l + "/(" + r + ")";
+    case 7: return "-" + l;
+    case 8: return "(" + l + ")^" + std::to_string(int(g() % 3) + 1);
+    default: return "(" + l + ")^(-" + std::to_string(int(g() % 2) + 1) + ")";
+  }
+}
+
+}  // namespace
+
+TEST(ParsedExpression, EqualsParseTfAtEveryValueErrorsIncluded) {
+  // A campaign: 1500 random expressions, each at 6 values of (a, b) (zero among them, so
+  // divisions by zero happen): at() gives parse_tf's transfer function, or its InputError with the
+  // same message. MIN compared cases of each kind (a value, an error, an expression whose varying
+  // part is replayed).
+  constexpr int MIN = 300;
+  std::mt19937_64 g(2041);
+  int values = 0, errors = 0, replayed = 0;
+  const rational vals[] = {0, 1, rational(-1, 2), 3, rational(1, 3), -2};
+  for (int e = 0; e < 1500; ++e) {
+    const std::string text = random_expression(g, 1 + int(g() % 3));
+    ParseOptions o;
+    o.variable = 'z';
+    o.T = rational(1, 100);
+    o.parameters = {{"c", rational(7, 5)}};
+    std::optional<ParsedExpression> pe;
+    std::string construct_error;
+    try {
+      pe.emplace(text, o, std::set<std::string>{"a", "b"});
+    } catch (const InputError& x) {
+      construct_error = x.what();
+    }
+    if (pe && pe->operations() > 0) ++replayed;
+    for (int k = 0; k < 6; ++k) {
+      ParseOptions full = o;
+      full.parameters["a"] = vals[k];
+      full.parameters["b"] = vals[(k + 2) % 6];
+      std::string want_error;
+      TransferFunction want;
+      try {
+        want = parse_tf(text, full);
+      } catch (const InputError& x) {
+        want_error = x.what();
+      }
+      if (!pe) {  // construction raised: every value raises (the known part fails on its own)
+        ASSERT_FALSE(want_error.empty()) << text;
+        continue;
+      }
+      try {
+        const TransferFunction got = pe->at({{"a", full.parameters["a"]}, {"b", full.parameters["b"]}});
+        ASSERT_TRUE(want_error.empty()) << text << " raised in parse_tf: " << want_error;
+        ASSERT_EQ(got.num(), want.num()) << text;
+        ASSERT_EQ(got.den(), want.den()) << text;
+        ASSERT_EQ(got.T, want.T);
+        ++values;
+      } catch (const InputError& x) {
+        ASSERT_EQ(std::string(x.what()), want_error) << text;
+        ++errors;
+      }
+    }
+  }
+  EXPECT_GE(values, MIN);
+  EXPECT_GE(errors, MIN / 10);
+  EXPECT_GE(replayed, MIN);
+}
+
+TEST(ParsedExpression, ComputesTheKnownPartOnce) {
+  ParseOptions o;
+  o.T = rational(1, 1000);
+  o.variable = 'z';
+  o.parameters = {{"B", rational(5)}};
+  const ParsedExpression wall("K + B*(z-1)/(T*z)", o, {"K"});
+  EXPECT_EQ(wall.operations(), 2u);  // K, and K + (the rest, computed once)
+  const TransferFunction H = wall.at({{"K", rational(1000)}});
+  o.parameters["K"] = 1000;
+  EXPECT_EQ(H.num(), parse_tf("K + B*(z-1)/(T*z)", o).num());
+  EXPECT_THROW(ParsedExpression("K + Q", o, {"K"}), InputError);  // an unknown name: every value would raise
+  try {
+    ParseOptions p = o;
+    p.parameters.erase("K");
+    ParsedExpression("1/(K - 2)", p, {"K"}).at({{"K", rational(2)}});
+    FAIL() << "no division by zero at K = 2";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("division by zero"), std::string::npos) << e.what();
+  }
 }

@@ -1,9 +1,13 @@
-"""pytest for the Python package hapstab (python/): every function, exact inputs, errors, numpy
-dtypes and shapes, and numbers identical to the command line's (`hapstab ... --json`).
+"""pytest for the Python package hapstab (python/): a binding of the library (no command line
+inside), so every number is checked against the command line's (`hapstab ... --json`, the same
+library functions), the result protocol (value, lo/hi outward, exact strings, honest
+comparisons), the vectorised calls against scalar calls, the threads against one thread, errors
+in Python's words, and every numeric argument refusing what it cannot take (issue 40).
 
 Run: PYTHONPATH=build/python HAPSTAB_CLI=build/hapstab /usr/bin/python3 -m pytest tests/python
 (ctest runs it as python_tests)."""
 import json
+import math
 import os
 import signal
 import subprocess
@@ -31,15 +35,23 @@ def cli(*args):
     return p.returncode, json.loads(p.stdout)
 
 
+def F(text):
+    """An exact decimal / p/q string as a Fraction."""
+    num, _, den = text.partition("/")
+    return Fraction(num) / Fraction(den) if den else Fraction(num)
+
+
 # ---- the package ---------------------------------------------------------------------------
 
 def test_import_from_the_build_tree():
     assert hapstab.__version__.count(".") == 2
     assert issubclass(hapstab.InputError, ValueError)
     assert issubclass(hapstab.NumericalError, RuntimeError)
+    assert issubclass(hapstab.UndecidedComparison, ValueError)
     assert (Path(hapstab.__file__).parent / "py.typed").exists()
     assert (Path(hapstab.__file__).parent / "__init__.pyi").exists()
     assert (EXAMPLES / "002_bias_wall.toml").exists()
+    assert hapstab.STATUS == ("exact", "certified", "numeric", "failed")
 
 
 def test_import_without_the_extension_says_it_is_not_built(tmp_path):
@@ -56,8 +68,19 @@ def test_import_without_the_extension_says_it_is_not_built(tmp_path):
     assert "cmake --build build --target hapstab_python" in p.stderr
 
 
+def test_the_binding_runs_no_command_line():
+    # bound, r, stability, passivity_level, wedge, simulate: library calls (issue 41), not `hapstab ...`
+    for name in ("bound", "bound_many", "r", "r_many", "stability", "stability_many", "passivity_level",
+                 "passivity_level_many", "passivity_level_ss", "wedge", "simulate", "tf_from_expression"):
+        assert callable(getattr(hapstab._core, name)), name
+    src = Path(hapstab.__file__).read_text(encoding="utf-8")
+    body = src.split("def bound(")[1].split("\ndef ")[0]
+    assert "_core.run" not in body and "--json" not in body
+
+
+# ---- errors in the words of the call ---------------------------------------------------------
+
 def test_errors_speak_python():
-    # the command's words (--set NAME=VALUE, --H, --frac-delay) become the call's (issue 31)
     with pytest.raises(hapstab.InputError) as e:
         hapstab.bound("K", T="1/1000")
     assert "unknown name 'K'" in str(e.value) and "pass params={'K': ...}" in str(e.value), str(e.value)
@@ -71,12 +94,24 @@ def test_errors_speak_python():
     with pytest.raises(hapstab.InputError) as e:  # simulate's parameters are keyword arguments
         hapstab.simulate(EXAMPLES / "002_bias_wall.toml", out_of_range="1")
     assert "--" not in str(e.value), str(e.value)
+    with pytest.raises(hapstab.InputError) as e:  # a non-causal H: the keyword that allows it
+        hapstab.bound("z", T="1/1000")
+    assert "allow_noncausal=True" in str(e.value) and "--" not in str(e.value), str(e.value)
+    with pytest.raises(hapstab.InputError) as e:  # the vectorised path words its points the same way
+        hapstab.bound("K*Q", T="1/1000", params={"K": [1, 2]})
+    assert "pass params={'Q': ...}" in str(e.value) and "--" not in str(e.value), str(e.value)
     # the escape hatch keeps the command's words: it takes them
     with pytest.raises(hapstab.InputError, match="--set NAME=VALUE"):
         hapstab.run("bound", "--H", "K", "--T", "1/1000", "--json")
 
 
-# ---- bound: the cases of paper 001 give the CLI's digits -----------------------------------
+def test_a_dict_spec_error_names_no_temporary_file():
+    with pytest.raises(hapstab.InputError) as e:
+        hapstab.sweep({"command": "bound", "args": {"H": "K", "T": "1/1000"}, "axes": {"K": {"from": "0"}}})
+    assert "spec.toml" not in str(e.value) and "/tmp" not in str(e.value) and str(e.value).startswith("spec"), str(e.value)
+
+
+# ---- bound: the cases of paper 001 give the CLI's numbers -------------------------------------
 
 PAPER_001 = [
     # (H, T, delay, params, frac_delay, the value printed)
@@ -93,69 +128,114 @@ PAPER_001 = [
 
 
 @pytest.mark.parametrize("H,T,delay,params,frac,value", PAPER_001)
-def test_bound_gives_the_cli_digits(H, T, delay, params, frac, value):
+def test_bound_gives_the_cli_numbers(H, T, delay, params, frac, value):
     b = hapstab.bound(H, T=T, delay=delay, params=params, frac_delay=frac)
     args = ["bound", "--H", H, "--T", T, "--delay", str(delay)]
     args += [f"--set={k}={v}" for k, v in params.items()]
     if frac:
         args += ["--frac-delay", frac]
     code, j = cli(*args)
-    assert b.as_dict() == j
-    assert b.exit_code == code == 0
-    assert b.value == j["bound"] and b.status == j["status"] and b.omega == j["omega"] and b.method == j["method"]
-    assert b.enclosure == tuple(j["enclosure"])
+    assert code == 0
+    assert b.decimal == j["bound"] and b.status == j["status"] and b.omega == j["omega"] and b.method == j["method"]
+    assert (b.lo_exact, b.hi_exact) == tuple(j["enclosure"])  # the same outward decimals
+    assert b.closed_form == (None if j["closed_form"] is None else b.closed_form) and \
+        (b.closed_form is None or b.closed_form["name"] == j["closed_form"])
     if value is not None:
-        assert b.value == value
-    if b.status == "exact" and b.value != "inf":
-        assert b.fraction == Fraction(j["exact"])
-        assert float(b) == float(b.fraction)
+        assert b.decimal == value
+    if b.infinite:
+        assert b.value == math.inf and b.lo == b.hi == math.inf
+    elif b.status == "exact":
+        assert isinstance(b.value, Fraction) and b.value == F(j["exact"])
+        assert float(b) == float(b.value) and b.lo <= b.value <= b.hi
     else:
-        assert b.fraction is None
-    assert repr(b).startswith("hapstab.Bound(value=") and repr(j["status"]) in repr(b)
+        assert isinstance(b.value, float)
+        # the floats are the decimals rounded outward: never inside them
+        assert Fraction(b.lo) <= F(b.lo_exact) and Fraction(b.hi) >= F(b.hi_exact)
+        assert b.lo <= b.value <= b.hi
 
 
 def test_bound_of_the_wall_is_kt2_plus_b_exactly():
     for K, B, T in [(1000, 5, Fraction(1, 1000)), (20000, 2, Fraction(1, 1000)), (300, Fraction(1, 3), Fraction(1, 7))]:
         b = hapstab.bound(WALL, T=T, params={"K": K, "B": B})
-        assert b.fraction == K * T / 2 + B and b.status == "exact"
+        assert b.value == K * T / 2 + B and b.status == "exact"
+        assert b.closed_form["equation"] == "(46)"
 
 
 def test_bound_digits_method_eta_damping():
     H = "(z-1)/(z^2-2*0.9999*0.8*z+0.9999^2)"
     b = hapstab.bound(H, T="1/1000", digits=50)
-    assert b.status == "certified" and len(b.value.replace("-", "").replace(".", "").split("e")[0]) >= 49
-    lo, hi = (Fraction(x) for x in b.enclosure)  # the proven enclosure of b*; value is b* rounded
-    assert lo <= hi and abs(Fraction(b.value) - lo) <= Fraction(1, 10**45) * abs(lo)
+    assert b.status == "certified" and len(b.decimal.replace("-", "").replace(".", "").split("e")[0]) >= 49
+    lo, hi = F(b.lo_exact), F(b.hi_exact)  # the proven enclosure of b*, 55 digits
+    assert lo <= hi and (hi - lo) <= Fraction(1, 10**45) * abs(lo)
     assert hapstab.bound(H, T="1/1000", method="fast").status == "numeric"
     e = hapstab.bound(WALL, T="1/1000", params=KB, eta="1/2")
-    assert e.as_dict() == cli("bound", "--H", WALL, "--T", "1/1000", "--set=K=1000", "--set=B=5", "--eta", "1/2")[1]
-    assert hapstab.bound(WALL, T="1/1000", params={"K": 20000, "B": 2}, damping=11).exit_code == 1
+    assert e.value == Fraction(6)
+    assert e.decimal == cli("bound", "--H", WALL, "--T", "1/1000", "--set=K=1000", "--set=B=5", "--eta", "1/2")[1]["bound"]
+    assert hapstab.bound(WALL, T="1/1000", params={"K": 20000, "B": 2}, damping=11).damping["passive"] is False
     assert hapstab.bound(WALL, T="1/1000", params={"K": 20000, "B": 2}, damping="12.5").damping["passive"]
+    with pytest.raises(hapstab.NumericalError, match="inside the enclosure"):
+        hapstab.bound(H, T="1/1000", damping=b.lo_exact, digits=10)
 
 
-# ---- (num, den) and expression: the same exact result --------------------------------------
+# ---- the result protocol ------------------------------------------------------------------------
 
-def test_num_den_and_expression_agree_exactly():
+def test_comparisons_are_decided_by_the_enclosure_or_raise():
+    b = hapstab.bound(WALL, T="1/1000", params=KB)  # exactly 11/2
+    assert b > 5 and b >= Fraction(11, 2) and b <= "5.5" and b < 6 and b == 5.5 and b != 5
+    assert not (b < 5) and not (b > 6) and b == Fraction(11, 2)
+    c = hapstab.bound("(z-1)/(z^2-2*0.9999*0.8*z+0.9999^2)", T="1/1000", digits=12)
+    assert c.status == "certified" and c.lo < c.hi
+    assert c > F(c.lo_exact) - Fraction(1, 10**20) and c < F(c.hi_exact) + Fraction(1, 10**20)
+    mid = (F(c.lo_exact) + F(c.hi_exact)) / 2  # exactly inside the enclosure
+    for op in ("<", "<=", ">", ">=", "=="):
+        with pytest.raises(hapstab.UndecidedComparison, match="cannot decide b\\*"):
+            eval(f"c {op} mid")
+    assert (c > b) is True and (b < c) is True and (b >= c) is False  # Result against Result: enclosures apart
+    inf = hapstab.bound("1/(z-1)", T="1/1000")
+    assert inf > 10**100 and inf == math.inf and float(inf) == math.inf
+
+
+def test_protocol_fields_display_and_read_only():
+    b = hapstab.bound(WALL, T="1/1000", params=KB)
+    assert (b.value, b.lo, b.hi, b.lo_exact, b.hi_exact, b.status) == (Fraction(11, 2), 5.5, 5.5, "5.5", "5.5", "exact")
+    assert "closed form" in b.method or b.method
+    assert "<table>" in b._repr_html_() and "11/2" in b._repr_html_()
+    assert b._repr_latex_() == r"$b^* = \frac{11}{2}$ \quad (exact)"
+    c = hapstab.bound("(z-1)/(z+0.5)", T="1/1000", delay=1)
+    assert r"\in [" in c._repr_latex_() or c.status == "exact"
+    d = b.as_dict()
+    d["value"] = 0
+    assert b.value == Fraction(11, 2)  # as_dict is a copy
+    with pytest.raises(AttributeError):
+        b.status = "certified"
+    with pytest.raises(AttributeError, match="it has: value, lo, hi"):
+        b.no_such_field
+    assert repr(b).startswith("hapstab.Bound(value=Fraction(11, 2), lo=5.5, hi=5.5, status='exact'")
+
+
+# ---- (num, den), TransferFunction and expression: the same exact result ----------------------
+
+def test_num_den_tf_and_expression_agree_exactly():
     # K + B(z-1)/(Tz) with K = 1000, B = 5, T = 1/1000 is (6000 z - 5000)/z
     ref = hapstab.bound(WALL, T="1/1000", params=KB, delay=1)
-    for H in [([6000, -5000], [1, 0]),
-              ((Fraction(6000), Fraction(-5000)), (1, 0)),
-              (["6000", "-5e3"], ["1", "0"]),
-              ([6000.0, -5000.0], [1.0, 0.0]),
-              (np.array([6000, -5000], dtype=np.int64), np.array([1.0, 0.0])),
+    H = hapstab.tf(WALL, T="1/1000", params=KB)
+    assert isinstance(H, hapstab.TransferFunction) and H.num == ["6000", "-5000"] and H.den == ["1", "0"] and H.T == "1/1000"
+    for h in [H, ([6000, -5000], [1, 0]), ((Fraction(6000), Fraction(-5000)), (1, 0)), (["6000", "-5e3"], ["1", "0"]),
+              ([6000.0, -5000.0], [1.0, 0.0]), (np.array([6000, -5000], dtype=np.int64), np.array([1.0, 0.0])),
               ([[np.array([6000.0, -5000.0])]], [[np.array([1.0, 0.0])]])]:  # python-control's num[0][0]
-        b = hapstab.bound(H, T="1/1000", delay=1)
-        assert b.fraction == ref.fraction and b.as_dict() == ref.as_dict(), H
+        b = hapstab.bound(h, T="1/1000", delay=1)
+        assert (b.value, b.lo, b.hi, b.status, b.omega) == (ref.value, ref.lo, ref.hi, ref.status, ref.omega), h
+    assert hapstab.bound(H, delay=1).value == ref.value  # T from the TransferFunction
+    with pytest.raises(hapstab.InputError, match="built with T = 1/1000"):
+        hapstab.bound(H, T="1/100")
 
 
 def test_floats_are_taken_at_their_exact_binary_value():
-    # H = 0.1 (a constant): b* = T H / 2 with the double nearest 0.1, not 1/10
     b = hapstab.bound(([0.1], [1]), T=1)
     e = hapstab.bound(str(Fraction(0.1)), T=1)
-    assert b.fraction == e.fraction == Fraction(0.1) / 2 != Fraction(1, 20)
-    assert hapstab.bound((["0.1"], [1]), T=1).fraction == Fraction(1, 20)
-    # T as a float is exact too: 1/1024 is a binary fraction
-    assert hapstab.bound(WALL, T=1 / 1024, params=KB).fraction == Fraction(1000, 2048) + 5
+    assert b.value == e.value == Fraction(0.1) / 2 != Fraction(1, 20)
+    assert hapstab.bound((["0.1"], [1]), T=1).value == Fraction(1, 20)
+    assert hapstab.bound(WALL, T=1 / 1024, params=KB).value == Fraction(1000, 2048) + 5
 
 
 class TransferFunctionLike:
@@ -168,8 +248,8 @@ class TransferFunctionLike:
 def test_a_python_control_transfer_function():
     sys_ = TransferFunctionLike([6.0, -5.0], [1.0, 0.0], 1 / 1024)
     b = hapstab.bound(sys_)  # T from dt, exactly
-    assert b.fraction == hapstab.bound("(6*z - 5)/z", T="1/1024").fraction
-    assert hapstab.bound(sys_, T="1/1024").fraction == b.fraction  # T matching dt
+    assert b.value == hapstab.bound("(6*z - 5)/z", T="1/1024").value
+    assert hapstab.bound(sys_, T="1/1024").value == b.value
     with pytest.raises(hapstab.InputError, match="does not match"):
         hapstab.bound(sys_, T="1/1000")
     with pytest.raises(hapstab.InputError, match="continuous"):
@@ -177,6 +257,119 @@ def test_a_python_control_transfer_function():
     with pytest.raises(hapstab.InputError, match="pass T"):
         hapstab.bound(TransferFunctionLike([1.0], [1.0, 0.5], True))
     assert hapstab.bound(TransferFunctionLike([1.0], [1.0, 0.5], True), T="1/100").status == "exact"
+
+
+# ---- vectorised calls ----------------------------------------------------------------------------
+
+def test_bound_over_a_k_array_equals_scalar_calls():
+    K = np.linspace(0, 40000, 41) * 1.0001 + 0.3  # not only round stiffnesses: certified points too
+    bs = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 5})
+    assert isinstance(bs, hapstab.ResultArray) and bs.shape == (41,) and len(bs) == 41 and bs.failed == 0
+    assert bs.value.dtype == bs.lo.dtype == bs.hi.dtype == bs.omega.dtype == np.float64 and bs.status.dtype == np.int8
+    kinds = set()
+    for i in range(41):
+        one = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K[i], "B": 5})
+        kinds.add(one.status)
+        assert (bs.lo[i], bs.hi[i], bs.value[i]) == (one.lo, one.hi, float(one)), i
+        assert hapstab.STATUS[bs.status[i]] == one.status and bs.status_names[i] == one.status
+        assert (bs.exact[i] is None) == (one.status != "exact")
+        assert bs[i].status == one.status and bs[i].lo == one.lo and bs[i].K == K[i]
+    assert kinds == {"exact", "certified"}, kinds  # both kinds of point were compared
+    assert np.array_equal(np.asarray(bs), bs.value)
+    # elementwise comparisons, decided by each enclosure
+    passive = bs < 5.5
+    assert passive.dtype == bool and passive[0] and not passive[-1]
+    fast = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 5}, method="fast")
+    with pytest.raises(hapstab.UndecidedComparison, match="cannot decide"):
+        fast < fast.value  # each estimate lies inside its stated band
+    table = bs.to_numpy()
+    assert table.dtype.names[:4] == ("K", "value", "lo", "hi") and table["status"].dtype == np.int8
+
+
+def test_arrays_broadcast_and_keep_their_shape():
+    K = np.array([0, 1000, 20000])
+    B = np.array([[0], [5]])
+    bs = hapstab.bound(WALL, T="1/1000", params={"K": K, "B": B})  # no delay: exact KT/2 + B
+    assert bs.shape == (2, 3)
+    expected = np.array([[F(str(k)) / 2000 + b for k in K] for b in (0, 5)], dtype=object)
+    assert all(F(bs.exact[i, j]) == expected[i, j] for i in range(2) for j in range(3))
+    assert (bs.status == 0).all() and bs[1, 2].value == Fraction(15)
+    # the same as lists, and as exact strings / Fractions (an object array)
+    again = hapstab.bound(WALL, T="1/1000", params={"K": [0, 1000, 20000], "B": [["0"], [Fraction(5)]]})
+    assert np.array_equal(again.value, bs.value) and list(again.exact.ravel()) == list(bs.exact.ravel())
+    with pytest.raises(hapstab.InputError, match="do not broadcast"):
+        hapstab.bound(WALL, T="1/1000", params={"K": [1, 2, 3], "B": [1, 2]})
+    with pytest.raises(hapstab.InputError, match=r"params\['K'\]\[1\]: nan is not a finite"):
+        hapstab.bound(WALL, T="1/1000", params={"K": [1.0, float("nan")], "B": 1})
+    with pytest.raises(hapstab.InputError, match="expression string"):
+        hapstab.bound(([1], [1, 0]), T="1/1000", params={"K": [1, 2]})
+
+
+def test_a_failing_point_is_a_row_not_an_exception():
+    bs = hapstab.bound("1/(z-c)", T="1/1000", params={"c": ["1/2", "2", "-1/4"]})
+    assert list(bs.status_names) == ["exact", "failed", "exact"] or bs.status[1] == 3
+    assert bs.failed == 1 and "unstable" in bs.error[1] and bs.error[0] is None
+    assert math.isnan(bs.value[1]) and bs.value[0] == float(hapstab.bound("1/(z-0.5)", T="1/1000"))
+    with pytest.raises(hapstab.UndecidedComparison, match="the point failed"):
+        bs < 100
+
+
+def test_threads_give_the_serial_results_exactly():
+    # a campaign over 2000 values of K (exact and certified points of the delayed wall): the
+    # threaded run equals the one-thread run bit for bit, and each kind is compared at least
+    # MIN times (a regression that made every point exact would fail here)
+    MIN = 200
+    K = np.linspace(1, 60000, 2000)
+    one = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, jobs=1)
+    two = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, jobs=2)
+    for f in ("value", "lo", "hi", "status", "omega"):
+        assert np.array_equal(getattr(one, f), getattr(two, f), equal_nan=True), f
+    assert list(one.exact) == list(two.exact)
+    counts = {s: int((one.status == hapstab.STATUS.index(s)).sum()) for s in ("exact", "certified")}
+    assert min(counts.values()) >= MIN, counts
+    fast1 = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, method="fast", jobs=1)
+    fast2 = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, method="fast", jobs=2)
+    assert np.array_equal(fast1.value, fast2.value) and (fast1.status == 2).sum() >= MIN
+    # the fast path within its stated error of the certified value (13 digits, bound.hpp)
+    cert = one.value
+    assert np.all(np.abs(fast1.value - cert) <= 1e-12 * np.maximum(1, np.abs(cert)))
+
+
+def test_r_scalar_gives_the_cli_digits():
+    r = hapstab.r("1/1000", 100, digits=25, terms=50)
+    j = cli("r", "--T", "1/1000", "--omega", "100", "--digits", "25", "--terms", "50")[1]
+    assert r.decimal == (j["re"], j["im"]) and r.series_im == j["series_im"]
+    assert r.series_error_bound == j["series_error_bound"]
+    assert r.re.value == Fraction(-1, 2000) and r.re.status == "exact" and r.im.status == "certified"
+    assert F(r.im.lo_exact) <= F(j["im"]) <= F(r.im.hi_exact)
+    z = complex(r)
+    assert z.real == -0.0005 and z.imag == float(j["im"])
+    with pytest.raises(TypeError):
+        float(r)
+    assert hapstab.r(Fraction(1, 1000), 100.0).decimal == hapstab.r("1/1000", 100).decimal
+
+
+def test_r_arrays_double_and_certified_against_30_digit_references():
+    # wT over [1e-9, 2 pi) and the hard places: w -> 0, wT -> pi, just below 2 pi (near a pole)
+    T = 1e-3
+    wT = np.concatenate([np.geomspace(1e-9, 1, 60), np.linspace(1, 6.28, 60), [math.pi, math.pi * (1 - 1e-12),
+                                                                              2 * math.pi * (1 - 1e-9)]])
+    w = wT / T
+    d = hapstab.r(T, w)
+    c = hapstab.r(T, w, method="certified")
+    assert d.status == "numeric" and c.status == "certified" and d.im.shape == w.shape
+    compared = 0
+    for i in range(0, len(w), 3):
+        ref = hapstab.r(T, float(w[i]), digits=30)  # correctly rounded, 30 digits
+        im = F(ref.decimal[1])
+        assert Fraction(c.im_lo[i]) <= im <= Fraction(c.im_hi[i]), i           # proven enclosure
+        assert abs(Fraction(d.im[i]) - im) <= Fraction(d.im_hi[i] - d.im_lo[i]) / 2 + abs(im) * Fraction(1, 10**28), i
+        # the double value: within 1.51 eps of Im for the rounded theta, plus theta's rounding (r_forms.hpp)
+        compared += 1
+    assert compared >= 40
+    assert d.re == -T / 2 and d.re_exact == str(-Fraction(T) / 2).replace(" ", "") or d.re_exact
+    with pytest.raises(hapstab.InputError, match=r"omega\[1\]: 0\.0.* pole"):
+        hapstab.r(T, [1.0, 0.0])
 
 
 # ---- errors ---------------------------------------------------------------------------------
@@ -194,16 +387,22 @@ def test_a_python_control_transfer_function():
     (lambda: hapstab.bound(([True], [1]), T=1), "bool"),
     (lambda: hapstab.bound("1", T="1/0"), "^T"),
     (lambda: hapstab.bound("1", T=1, params={"K": "1; rm -rf /"}), "not an exact number"),
-    (lambda: hapstab.r(T=1, omega=0), "omega"),
+    (lambda: hapstab.bound("1", T=1, method="exact"), "^method"),
+    (lambda: hapstab.r(T=1, omega=0), "^omega"),
     (lambda: hapstab.passivity_level("1"), "T is required"),
     (lambda: hapstab.passivity_level("1", T=1, ss=([[1]], [[1]], [[1]], [[1]])), "exactly one"),
-    (lambda: hapstab.passivity_level(ss=([[0.5]], [[1, 2]], [[1]], [[1]]), T="1/100"), "ss"),
+    (lambda: hapstab.passivity_level(ss=([[0.5]], [[1, 2]], [[1]], [[1]]), T="1/100"), "^ss"),
+    (lambda: hapstab.passivity_level("1/(z-2)", T="1/100"), "^H: pole at z = 2"),
+    (lambda: hapstab.passivity_level("1/(z-0.5)", T="1/100", backend="mosek"), "^backend"),
+    (lambda: hapstab.stability("s", "1", T="1/1000"), "strictly proper"),
+    (lambda: hapstab.stability("1/s^2", "K*Q", T="1/1000", max="K"), "pass params={'Q': ...}"),
     (lambda: hapstab.multidof.analyze("/nonexistent.toml"), "nonexistent"),
     (lambda: hapstab.simulate(EXAMPLES / "002_bias_wall.toml", out_of_range="1"), "out_of_range"),
 ])
 def test_bad_input_raises_input_error(call, match):
-    with pytest.raises(hapstab.InputError, match=match):
+    with pytest.raises(hapstab.InputError, match=match) as e:
         call()
+    assert " --" not in str(e.value) and not str(e.value).startswith("--"), str(e.value)
 
 
 SCENE_DATA = Path(__file__).resolve().parents[1] / "scene" / "data"
@@ -233,6 +432,67 @@ def test_wrong_types_raise_type_error():
         hapstab.multidof.analyze(3)
 
 
+# issue 40: every numeric argument refuses a bool, a non-integer where an integer is meant, and
+# NaN / inf / <= 0 where a positive number is meant -- never truncates (delay=2.9 was delay 2)
+NUMERIC_ARGUMENTS = [
+    ("bound", "delay", lambda v: hapstab.bound(WALL, T="1/1000", params=KB, delay=v)),
+    ("bound", "digits", lambda v: hapstab.bound(WALL, T="1/1000", params=KB, digits=v)),
+    ("bound", "grid_points", lambda v: hapstab.bound(WALL, T="1/1000", params=KB, method="grid", grid_points=v)),
+    ("bound", "jobs", lambda v: hapstab.bound(WALL, T="1/1000", params={"K": [1, 2], "B": 1}, jobs=v)),
+    ("r", "digits", lambda v: hapstab.r("1/1000", 100, digits=v)),
+    ("r", "terms", lambda v: hapstab.r("1/1000", 100, terms=v)),
+    ("r", "jobs", lambda v: hapstab.r("1/1000", [100.0], jobs=v)),
+    ("stability", "delay", lambda v: hapstab.stability("1/s^2", WALL, T="1/1000", params=KB, delay=v)),
+    ("stability", "digits", lambda v: hapstab.stability("1/s^2", WALL, T="1/1000", params=KB, digits=v)),
+    ("wedge", "digits", lambda v: hapstab.wedge("0.5*(z+1)/(z^2-0.5*z)", digits=v)),
+    ("passivity_level", "lemma", lambda v: hapstab.passivity_level("1/(z-0.5)", T="1/100", lemma=v)),
+    ("passivity_level", "grid", lambda v: hapstab.passivity_level("1/(z-0.5)", T="1/100", grid=v)),
+    ("passivity_level", "digits", lambda v: hapstab.passivity_level("1/(z-0.5)", T="1/100", digits=v)),
+    ("sweep", "jobs", lambda v: hapstab.sweep({"command": "r", "args": {"T": "1"}, "axes": {"omega": {"values": ["1"]}}},
+                                             jobs=v)),
+    ("multidof.design", "iterations", lambda v: hapstab.multidof.design(EXAMPLES / "multidof_case_i_nominal.toml",
+                                                                        iterations=v)),
+]
+
+
+@pytest.mark.parametrize("function,name,call", NUMERIC_ARGUMENTS, ids=[f"{f}.{n}" for f, n, _ in NUMERIC_ARGUMENTS])
+@pytest.mark.parametrize("bad", [2.9, 1.5, 2.0, True, False, "2", Fraction(5, 2)])
+def test_integer_arguments_refuse_what_is_not_an_integer(function, name, call, bad):
+    with pytest.raises(hapstab.InputError, match=f"^{name}: expected an integer, got the") as e:
+        call(bad)
+    assert repr(bad) in str(e.value)
+
+
+def test_delay_is_never_truncated_and_says_where_seconds_go():
+    with pytest.raises(hapstab.InputError, match=r"^delay: expected an integer, got the float 2\.9; .*frac_delay"):
+        hapstab.bound(WALL, T="1/1000", params=KB, delay=2.9)
+    with pytest.raises(hapstab.InputError, match=r"^delay: -1 is outside \[0, 1000\]"):
+        hapstab.bound(WALL, T="1/1000", params=KB, delay=-1)
+    # a numpy integer is an integer; the delay in seconds is frac_delay (t_d = 2T is n = 2)
+    assert hapstab.bound(WALL, T="1/1000", params=KB, delay=np.int64(2)).value == \
+        hapstab.bound(WALL, T="1/1000", params=KB, frac_delay="2/1000").value
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -1.0, 0, True, "5"])
+def test_positive_real_arguments_refuse_nan_inf_and_bools(bad):
+    with pytest.raises(hapstab.InputError, match="^max_output: "):
+        hapstab.simulate(EXAMPLES / "002_bias_wall.toml", max_output=bad)
+    with pytest.raises(hapstab.InputError, match="^duration: "):
+        hapstab.multidof.design(EXAMPLES / "multidof_case_i_nominal.toml", duration=bad)
+
+
+@pytest.mark.parametrize("name,call", [
+    ("T", lambda v: hapstab.bound("1", T=v)), ("eta", lambda v: hapstab.bound("1", T=1, eta=v)),
+    ("frac_delay", lambda v: hapstab.bound("1", T=1, frac_delay=v)), ("damping", lambda v: hapstab.bound("1", T=1, damping=v)),
+    ("omega", lambda v: hapstab.r(1, v)), ("params['K']", lambda v: hapstab.bound("K", T=1, params={"K": v})),
+])
+@pytest.mark.parametrize("bad", [True, float("nan"), float("inf")])
+def test_exact_arguments_refuse_bools_and_non_finite_values(name, call, bad):
+    with pytest.raises(hapstab.InputError) as e:
+        call(bad)
+    assert str(e.value).startswith(name), str(e.value)
+
+
 def _pi_times_10_to(n):
     """floor(pi 10^n) within a few units, by Machin's formula in integers."""
     def atan_inv(x):
@@ -249,75 +509,87 @@ def test_numerical_error_is_a_runtime_error():
     omega = Fraction(2 * _pi_times_10_to(4200), 10**4200)
     with pytest.raises(hapstab.NumericalError, match="too close to a multiple of pi"):
         hapstab.r(T=1, omega=omega, digits=5)
-    p = subprocess.run([CLI, "r", "--T", "1", "--omega", f"{omega.numerator}/{omega.denominator}"],
-                       capture_output=True, check=False)
-    assert p.returncode == 3
 
 
-def test_results_are_read_only_and_say_what_they_hold():
-    b = hapstab.bound(WALL, T="1/1000", params=KB)
-    with pytest.raises(AttributeError, match="keys: "):
-        b.no_such_key
-    with pytest.raises(AttributeError):
-        b.status = "certified"
-    d = b.as_dict()
-    d["bound"] = "0"
-    assert b.value == "5.5"  # as_dict is a copy
-    assert "closed_form" in dir(b)
-
-
-# ---- r, wedge, passivity level -------------------------------------------------------------
-
-def test_r_gives_the_cli_digits():
-    r = hapstab.r("1/1000", 100, digits=25, terms=50)
-    assert r.as_dict() == cli("r", "--T", "1/1000", "--omega", "100", "--digits", "25", "--terms", "50")[1]
-    assert r.re == "-0.0005"  # exact: -T/2
-    z = complex(r)
-    assert z.real == -0.0005 and z.imag == float(r.im)
-    with pytest.raises(TypeError):
-        float(r)
-    assert hapstab.r(Fraction(1, 1000), 100.0).as_dict() == hapstab.r("1/1000", 100).as_dict()
-
+# ---- wedge, passivity level, stability -----------------------------------------------------------
 
 def test_wedge_gives_the_cli_verdict():
     H = "0.5*(z+1)/(z^2-0.5*z)"
     w = hapstab.wedge(H)
     code, j = cli("wedge", "--H", H)
-    assert w.as_dict() == j and w.exit_code == code == 0
-    assert bool(w) and w.wedge["holds"]
-    assert w.as_dict() == hapstab.wedge(([0.5, 0.5], [1, -0.5, 0])).as_dict()
+    assert bool(w) == (code == 0) and w.wedge["holds"] == j["wedge_holds"] and w.tsypkin["holds"] == j["tsypkin_holds"]
+    assert F(w.lo_exact) <= F(j["wedge"]["margin_enclosure"][0]) or w.lo_exact == j["wedge"]["margin_enclosure"][0]
+    assert w > 0 and w.wedge["margin"] > 0  # the criterion holds iff its margin is > 0
+    assert hapstab.wedge(([0.5, 0.5], [1, -0.5, 0])).value == w.value
     strong = hapstab.wedge("8*(z+1)/(z^2-0.5*z)")
-    assert strong.exit_code == cli("wedge", "--H", "8*(z+1)/(z^2-0.5*z)")[0]
+    assert bool(strong) == (cli("wedge", "--H", "8*(z+1)/(z^2-0.5*z)")[0] == 0)
 
 
 def test_passivity_level_from_h_and_from_state_space(tmp_path):
     v = hapstab.passivity_level("1 + 1/(z-0.5)", T="1/100")
-    assert v.as_dict() == cli("passivity-level", "--H", "1 + 1/(z-0.5)", "--T", "1/100")[1]
-    assert float(v) == pytest.approx(1 / 3) and v.status == "exact"
-    ss = ([[0.5]], [[1]], [[1]], [[1]])  # the same system
-    w = hapstab.passivity_level(ss=ss, T="1/100")
+    j = cli("passivity-level", "--H", "1 + 1/(z-0.5)", "--T", "1/100")[1]
+    assert v.status == j["status"] == "exact" and v.value == Fraction(1, 3) and v.lo <= 1 / 3 <= v.hi
+    assert v.method == j["method"] and v.kind == "osp"
+    w = hapstab.passivity_level(ss=([[0.5]], [[1]], [[1]], [[1]]), T="1/100")  # the same system
     f = tmp_path / "ss.json"
     f.write_text(json.dumps({"A": [[0.5]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"}))
-    assert w.as_dict() == cli("passivity-level", "--ss", str(f))[1]
+    jw = cli("passivity-level", "--ss", str(f))[1]
+    assert w.status == jw["status"] and w.value == Fraction(1, 3)
     A = np.array([[0.5, 0.1], [0.0, 0.25]])
     mimo = hapstab.passivity_level(ss=(A, np.eye(2), np.eye(2), 2 * np.eye(2)), T=Fraction(1, 100), kind="isp")
-    assert mimo.kind == "isp" and mimo.level is not None
+    assert mimo.kind == "isp" and mimo.status in ("exact", "certified") and mimo.lo <= mimo.hi
+    S = hapstab.ss(A, np.eye(2), np.eye(2), 2 * np.eye(2), Fraction(1, 100))
+    assert S.shape == (2, 2, 2) and hapstab.passivity_level(ss=S, kind="isp").value == mimo.value
+
+
+def test_passivity_level_over_an_array_equals_scalar_calls():
+    a = np.array(["0.1", "0.5", "0.9", "-0.3"], dtype=object)
+    v = hapstab.passivity_level("1 + 1/(z-a)", T="1/100", params={"a": a})
+    assert v.shape == (4,) and v.failed == 0
+    for i, x in enumerate(a):
+        one = hapstab.passivity_level("1 + 1/(z-a)", T="1/100", params={"a": x})
+        assert (v.lo[i], v.hi[i], hapstab.STATUS[v.status[i]]) == (one.lo, one.hi, one.status), x
+
+
+def test_stability_max_equals_the_command_line():
+    device = dict(plant="1/(m*s^2 + b*s)", H=WALL, T="1/1000", delay=2, params={"m": 1, "b": 1, "B": 2})
+    s = hapstab.stability(**device, max="K", digits=25)
+    code, j = cli("stability", "--plant", device["plant"], "--H", WALL, "--T", "1/1000", "--delay", "2",
+                  "--set", "m=1", "--set", "b=1", "--set", "B=2", "--max", "K", "--digits", "25")
+    assert code == 0 and isinstance(s, hapstab.MaxGain)
+    assert s.status == j["status"] == "certified" and s.crossing == j["crossing"]["at"] == "complex pair"
+    assert (s.lo_exact, s.hi_exact) == tuple(j["enclosure"]) and bool(s)
+    K = s.value
+    below = hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 0.99)}})
+    above = hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 1.01)}})
+    assert below.stable is True and bool(below) and below < 1  # the spectral radius
+    assert above.stable is False and not above and above > 1
+    with pytest.raises(hapstab.UndecidedComparison):
+        s == (F(s.lo_exact) + F(s.hi_exact)) / 2
+
+
+def test_stability_over_arrays_equals_scalar_calls():
+    K = np.array([100, 5000, 20000, 60000])
+    st = hapstab.stability("1/(m*s^2 + b*s)", WALL, T="1/1000", delay=1, params={"m": 1, "b": 1, "B": 2, "K": K})
+    for i, k in enumerate(K):
+        one = hapstab.stability("1/(m*s^2 + b*s)", WALL, T="1/1000", delay=1, params={"m": 1, "b": 1, "B": 2, "K": k})
+        assert st.stable[i] == (1 if one.stable else 0) and (st.lo[i], st.hi[i]) == (one.lo, one.hi)
+    assert set(st.stable) == {0, 1}
+    B = np.array([0, 2, 5])
+    mx = hapstab.stability("1/(m*s^2 + b*s)", WALL, T="1/1000", delay=1, max="K", params={"m": 1, "b": 1, "B": B})
+    for i, bb in enumerate(B):
+        one = hapstab.stability("1/(m*s^2 + b*s)", WALL, T="1/1000", delay=1, max="K", params={"m": 1, "b": 1, "B": bb})
+        assert (mx.lo[i], mx.hi[i]) == (one.lo, one.hi)
 
 
 # ---- multi-DOF (paper 000) -----------------------------------------------------------------
-
-def _without_times(d):
-    d = dict(d)
-    d.pop("seconds", None)
-    return d
-
 
 def test_multidof_analyze_and_design_give_the_cli_verdicts():
     scene = EXAMPLES / "multidof_case_i_nominal.toml"
     a = hapstab.multidof.analyze(scene)
     code, j = cli("multidof", "analyze", "--scene", str(scene))
-    assert _without_times(a.as_dict()) == _without_times(j) and a.exit_code == code
-    assert bool(a) == j["stability_concluded"] and repr(a).startswith("hapstab.Analysis(verdict=")
+    assert a.verdict == j["verdict"] and a.certified == j["certified"] and a.exit_code == code
+    assert bool(a) == j["stability_concluded"] and a.value == j["margin"] and a.status == "certified"
     d = hapstab.multidof.design(EXAMPLES / "multidof_case_ii_perturbed.toml", duration=2)
     code, j = cli("multidof", "design", "--scene", str(EXAMPLES / "multidof_case_ii_perturbed.toml"), "--duration", "2")
     assert d.feasible == j["feasible"] and d.certified == j["certified"] and d.D_V == j["D_V"]
@@ -325,24 +597,22 @@ def test_multidof_analyze_and_design_give_the_cli_verdicts():
     assert all(M.dtype == np.float64 for M in (A, B, C, D)) and D.shape == np.array(j["D_V"]).shape
 
 
-def test_multidof_overrides_are_scene_parameters():
-    scene = EXAMPLES / "multidof_case_i_nominal.toml"
-    text = scene.read_text()
-    name = next(line.split("=")[0].strip() for line in text.split("[parameters]")[1].splitlines()[1:]
-                if "=" in line)
-    a = hapstab.multidof.analyze(scene, **{name: "1/2"})
-    j = cli("multidof", "analyze", "--scene", str(scene), f"--set={name}=1/2")[1]
-    assert _without_times(a.as_dict()) == _without_times(j)
+def test_multidof_scene_text_names_no_temporary_file():
+    text = (EXAMPLES / "multidof_case_i_nominal.toml").read_text().replace("[multidof]", "[multidof]\nops = 1", 1)
+    with pytest.raises(hapstab.InputError) as e:
+        hapstab.multidof.analyze(text)
+    assert "/tmp" not in str(e.value) and "hapstab-scene" not in str(e.value), str(e.value)
 
 
 # ---- simulate: numpy arrays ----------------------------------------------------------------
 
 def test_simulate_returns_numpy_arrays_identical_to_the_csv(tmp_path):
     scene = EXAMPLES / "002_bias_wall.toml"
-    s = hapstab.simulate(scene, out=tmp_path / "py")
+    s = hapstab.simulate(scene)
     code, j = cli("simulate", "--scene", str(scene), "--out", str(tmp_path / "cli"), "--quiet")
-    assert _without_times(s.summary) == _without_times(j) and s.exit_code == code == 0
-    assert s.diverged is False and s.limit_cycle is not None
+    for k in ("diverged", "max_velocity", "energy_generated", "trend", "steps_run", "limit_cycle"):
+        assert s.summary[k] == j[k], k
+    assert s.diverged is False and bool(s) and s.value == j["max_velocity"] and s.status == "numeric"
     rows = s.samples["t"].shape[0]
     assert rows > 1000 and s.samples["t"].dtype == np.float64
     for q in ("x", "v", "u", "fh", "E_port", "E_act", "E_po", "storage"):
@@ -352,7 +622,6 @@ def test_simulate_returns_numpy_arrays_identical_to_the_csv(tmp_path):
     csv = np.loadtxt(tmp_path / "cli" / "samples.csv", delimiter=",", skiprows=1)
     assert np.array_equal(csv[:, 0], s.samples["t"]) and np.array_equal(csv[:, 2], s.samples["v"][:, 0])
     assert set(s.fine) == {"t", "x", "v"} and s.fine["x"].shape == (s.fine["t"].shape[0], 1)
-    assert s.out == str(tmp_path / "py") and (tmp_path / "py" / "plot.gp").exists()
 
 
 def test_simulate_scene_text_overrides_and_several_dofs():
@@ -380,10 +649,15 @@ def test_simulate_scene_text_overrides_and_several_dofs():
         steps = 200
         """)
     s = hapstab.simulate(text)
-    assert s.samples["v"].shape == (201, 2) and s.out is None
+    assert s.samples["v"].shape == (201, 2)
     stiff = hapstab.simulate(text, K=Fraction(400))
     assert not np.array_equal(stiff.samples["x"], s.samples["x"])
-    assert s.fine is None and "samples=201x2" in repr(s)
+    assert s.fine is None and "samples='201x2'" in repr(s)
+    with pytest.raises(hapstab.InputError, match="^scene:") as e:  # text scenes are called 'scene'
+        hapstab.simulate(text.replace("[simulate]", "[simulat]"))
+    assert "/tmp" not in str(e.value)
+    with pytest.raises(hapstab.InputError, match="max_output=1e-06 MB; .*force=True"):
+        hapstab.simulate(text, max_output=1e-6)
 
 
 # ---- the GIL is released, Ctrl-C stops a long call -----------------------------------------
@@ -408,39 +682,35 @@ record_every = 0
 energy = false
 """
 
+LONG_CALLS = {
+    "simulate": f"hapstab.simulate({LONG_SCENE!r})",
+    "bound_many": "hapstab.bound('K + B*(z-1)/(T*z)', T='1/1000', delay=1, params={'K': np.linspace(0, 4e4, 10**6), 'B': 5})",
+    "multidof": "hapstab.multidof.design(hapstab.examples_dir() + '/multidof_case_ii_perturbed.toml', iterations=10000, "
+                "duration=1e5)",
+}
 
-def _children(pid):
-    try:
-        return [int(c) for c in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
-    except FileNotFoundError:
-        return []
 
-
-@pytest.mark.parametrize("to_group", [False, True])
-def test_ctrl_c_stops_a_long_call(to_group):
-    # two billion steps (about a minute of computing): SIGINT, sent while the forked child
-    # computes, must end the call with KeyboardInterrupt, kill the child, and leave the module
-    # usable; to_group: as a terminal's Ctrl-C does, to the parent and the child together
-    code = (f"import hapstab\nprint('started', flush=True)\ntry:\n    hapstab.simulate({LONG_SCENE!r})\n"
+@pytest.mark.parametrize("what,to_group", [("simulate", False), ("bound_many", False), ("multidof", False),
+                                           ("simulate", True), ("multidof", True)])
+def test_ctrl_c_stops_a_long_call(what, to_group):
+    # SIGINT while the call computes (a minute or more of work) must end it with KeyboardInterrupt
+    # and leave the module usable; to_group: as a terminal's Ctrl-C does, to the process group
+    code = (f"import numpy as np, hapstab\nprint('started', flush=True)\ntry:\n    {LONG_CALLS[what]}\n"
             "    print('completed')\nexcept KeyboardInterrupt:\n    print('interrupted', flush=True)\n"
             "    print(hapstab.bound('1', T=1).value)\n")
     p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                          start_new_session=True)
     assert p.stdout.readline().strip() == "started"
-    deadline = time.monotonic() + 60  # a hang guard, not a measurement
-    while not _children(p.pid) and time.monotonic() < deadline:
-        time.sleep(0.01)
-    computing = _children(p.pid)
-    assert computing, "the call never forked its child"
-    time.sleep(0.2)
+    time.sleep(1.0)  # inside the call by now (the import printed 'started' right before it)
+    sent = time.monotonic()
     if to_group:
         os.killpg(p.pid, signal.SIGINT)
     else:
         p.send_signal(signal.SIGINT)
-    out, err = p.communicate(timeout=120)
-    assert out.split() == ["interrupted", "0.5"], (out, err)
+    out, err = p.communicate(timeout=120)  # a hang guard, not a measurement
+    assert out.split() == ["interrupted", "1/2"], (out, err)
     assert p.returncode == 0, err
-    assert not Path(f"/proc/{computing[0]}").exists()  # killed and reaped
+    assert time.monotonic() - sent < 60
 
 
 def test_other_threads_run_while_hapstab_computes():
@@ -457,7 +727,7 @@ def test_other_threads_run_while_hapstab_computes():
     t.start()
     try:
         before = len(ticks)
-        hapstab.simulate(LONG_SCENE.replace("2000000000", "3000000"))
+        hapstab.bound(WALL, T="1/1000", delay=1, params={"K": np.linspace(0, 4e4, 3000), "B": 5})
         during = len(ticks) - before
     finally:
         stop.set()
@@ -466,26 +736,54 @@ def test_other_threads_run_while_hapstab_computes():
 
 
 def test_run_is_the_escape_hatch():
-    res = hapstab.run("bound", "--H", WALL, "--T", "1/1000", "--set", "K=1000", "--set", "B=5", "--json")
-    assert res.bound == "5.5" and res.exit_code == 0
+    code, j = hapstab.run("bound", "--H", WALL, "--T", "1/1000", "--set", "K=1000", "--set", "B=5", "--json")
+    assert j["bound"] == "5.5" and code == 0
 
 
-# ---- stability (issue 19) --------------------------------------------------------------------
+# ---- README: the Python section's code, and the install block on another python3 ---------------
 
-def test_stability_max_equals_the_command_line():
-    device = dict(plant="1/(m*s^2 + b*s)", H=WALL, T="1/1000", delay=2, params={"m": 1, "b": 1, "B": 2})
-    s = hapstab.stability(**device, max="K", digits=25)
-    code, j = cli("stability", "--plant", device["plant"], "--H", WALL, "--T", "1/1000", "--delay", "2",
-                  "--set", "m=1", "--set", "b=1", "--set", "B=2", "--max", "K", "--digits", "25")
-    assert code == 0 and s.exit_code == 0
-    assert s.value == j["max"] and s.status == "certified" and s.crossing["at"] == "complex pair"
-    assert bool(s)
-    K = float(s)
-    assert hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 0.99)}}).stable is True
-    above = hapstab.stability(**{**device, "params": {**device["params"], "K": Fraction(K * 1.01)}})
-    assert above.stable is False and above.exit_code == 1 and not above
+SOURCE = Path(__file__).resolve().parents[2]
 
 
-def test_stability_bad_input_raises():
-    with pytest.raises(hapstab.InputError, match="strictly proper"):
-        hapstab.stability("s", "1", T="1/1000")
+def _readme_block(language):
+    text = (SOURCE / "README.md").read_text(encoding="utf-8").split("\n## Python\n", 1)[1].split("\n## ", 1)[0]
+    return text.split(f"```{language}\n", 1)[1].split("```", 1)[0]
+
+
+def test_readme_python_block_runs_as_shown(monkeypatch):
+    monkeypatch.chdir(SOURCE)  # its paths (examples/...) are relative to the top of the tree
+    namespace = {}
+    exec(compile(_readme_block("python"), "README.md (Python)", "exec"), namespace)
+    assert namespace["b"].status in ("exact", "certified") and namespace["bs"].shape == (10001,)
+    assert namespace["t"]["bound"].dtype == np.float64 and len(namespace["t"]) == 123
+
+
+def test_readme_install_block_names_the_interpreter():
+    block = _readme_block("sh")
+    assert block.startswith("/usr/bin/python3 -m venv --system-site-packages venv")
+    assert "HAPSTAB_BUILD_DIR=build venv/bin/pip install --no-build-isolation --no-index ." in block
+
+
+def test_setup_py_names_a_python_that_cannot_build_offline():
+    # the case README names: a python3 first on PATH that is not Debian's (this machine's pyenv)
+    import shutil
+    other = shutil.which("python3")
+    if other is None or os.path.realpath(other) == os.path.realpath("/usr/bin/python3"):
+        pytest.skip("the first python3 on PATH is Debian's")
+    probe = subprocess.run([other, "-c", "import wheel, numpy"], capture_output=True, check=False)
+    if probe.returncode == 0:
+        pytest.skip(f"{other} has wheel and numpy: it can build")
+    p = subprocess.run([other, "setup.py", "bdist_wheel"], cwd=SOURCE, capture_output=True, text=True, check=False)
+    assert p.returncode != 0
+    assert "hapstab: this Python (" in p.stderr and "/usr/bin/python3 -m venv" in p.stderr, p.stderr
+    assert "invalid command 'bdist_wheel'" not in p.stderr
+
+
+def test_array_comparisons_decide_exact_values_exactly():
+    # b* = 1/2 + K/2000 exactly: at K = 1000 - 2^-50 it is just below 1 but not a double, so its
+    # float ends straddle 1; the comparison uses the exact value (kb_map.py met this case)
+    K = np.array([Fraction(1000) - Fraction(1, 2**50), 1000, Fraction(1000) + Fraction(1, 2**50)], dtype=object)
+    bs = hapstab.bound(WALL, T="1/1000", params={"K": K, "B": "1/2"})
+    assert list(bs.status_names) == ["exact"] * 3 and bs.lo[0] < 1 <= bs.hi[0]
+    assert list(bs < 1) == [True, False, False] and list(bs <= 1) == [True, True, False]
+    assert list(bs > 1) == [False, False, True] and list(bs >= 1) == [False, True, True]

@@ -7,6 +7,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +20,7 @@
 #include "hapstab/study/sha256.hpp"
 #include "hapstab/study/spec.hpp"
 #include "hapstab/study/table.hpp"
+#include "hapstab/study/threads.hpp"
 
 using namespace hapstab;
 using namespace hapstab::study;
@@ -399,4 +403,34 @@ TEST(SpecLimits, DeepTablesAreRefusedBeforeToml) {
   for (int i = 0; i < 50000; ++i) deep += ".a";
   const std::string msg = error_of(head + "K = { values = [\"1\"] }\n[" + deep + "]\n");
   EXPECT_NE(msg.find("s.toml:7: a key or table nested 50001 levels deep"), std::string::npos) << msg;
+}
+
+// ---- run_threads (study/threads.hpp): Python's vectorised calls ---------------------------------
+
+
+TEST(StudyThreads, EveryPointRunsOnceWhateverTheThreads) {
+  constexpr uint64_t n = 100000;
+  for (unsigned jobs : {1u, 2u, 3u, 8u}) {
+    std::vector<std::atomic<int>> hits(n);
+    EXPECT_TRUE(hapstab::study::run_threads(n, jobs, [&](uint64_t i) { hits[i].fetch_add(1); }));
+    for (uint64_t i = 0; i < n; ++i) ASSERT_EQ(hits[i].load(), 1) << "jobs " << jobs << " point " << i;
+  }
+  EXPECT_TRUE(hapstab::study::run_threads(0, 2, [](uint64_t) { FAIL(); }));
+}
+
+TEST(StudyThreads, PollStopsTheRunAndAnEscapingErrorIsRethrown) {
+  std::atomic<uint64_t> ran{0};
+  const bool finished = hapstab::study::run_threads(
+      1000000, 2,
+      [&](uint64_t) {
+        ++ran;
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+      },
+      [] { return true; }, 1);
+  EXPECT_FALSE(finished);
+  EXPECT_LT(ran.load(), 1000000u);  // stopped after the points in progress, not run to the end
+  EXPECT_THROW(hapstab::study::run_threads(100, 2, [](uint64_t i) {
+                 if (i == 50) throw std::runtime_error("point 50");
+               }),
+               std::runtime_error);
 }

@@ -37,7 +37,7 @@
 #include "cli/command.hpp"
 #include "cli/mat_file.hpp"
 #include "cli/tf_options.hpp"
-#include "hapstab/lmi/passivity_level.hpp"
+#include "hapstab/lmi/passivity_level_report.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/lti/state_space_json.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -99,74 +99,11 @@ StateSpace<double> read_model(const Opts& o, std::optional<RationalFunction<rati
     sys = tf2ss(tfG).cast<double>();
     sys.T = tfG.T;
   }
-  if (sys.states() > 0) {  // the levels of Lemmas 1-2 are defined for (Schur) stable systems
-    const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(sys.A).eigenvalues();
-    for (Eigen::Index i = 0; i < ev.size(); ++i)
-      if (std::abs(ev(i)) > 1 - 1e-9) {
-        std::ostringstream os;
-        os << (!o.ss.empty() ? "--ss" : !o.tf.mat.empty() ? "--mat" : "--H") << ": pole at z = " << ev(i).real() << (ev(i).imag() >= 0 ? " + " : " - ")
-           << std::abs(ev(i).imag()) << "j, |z| = " << std::abs(ev(i))
-           << (std::abs(ev(i)) > 1 + 1e-9 ? " > 1: the system is unstable" : ": on the unit circle (within 1e-9)")
-           << "; passivity levels (Lemmas 1-2) need a Schur-stable system";
-        throw InputError(os.str());
-      }
-  }
+  lmi::check_schur_stable(sys, !o.ss.empty() ? "--ss" : !o.tf.mat.empty() ? "--mat" : "--H");
   return sys;
 }
 
-// The three levels (LMI l, frequency grid f, certified frequency c) and which is the result.
-struct Levels {
-  lmi::PassivityLevel l, f, c;
-  bool lmi_ok = false, freq_ok = false, cert_ok = false;
-  bool cert_is_level = false;  ///< c is the level (ISP, or OSP with delta* > 0)
-  bool only_bound = false;     ///< the result is c as an upper bound (OSP delta* <= 0, no LMI level)
-  bool any = false;            ///< some method gave a level
-  enum class Main { lmi, freq, cert } which = Main::freq;
-  std::string note;
-  const lmi::PassivityLevel& main() const { return which == Main::cert ? c : which == Main::lmi ? l : f; }
-};
-
-Levels compute_levels(const Opts& o, lmi::Backend backend, const StateSpace<double>& sys,
-                      const std::optional<RationalFunction<rational>>& G, const std::optional<StateSpace<rational>>& exact) {
-  const auto kind = o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp;
-  Levels v;
-  auto &l = v.l, &f = v.f, &c = v.c;
-  l.status = f.status = c.status = Status::failed;
-  if (sys.states() == 0) l.note = f.note = c.note = "static gain: no state";
-  if (sys.states() > 0) {
-    l = lmi::passivity_level_lmi(sys, kind, o.lemma, backend);
-    f = lmi::passivity_level_freq(sys, kind, o.grid);
-    if (sys.inputs() == 1)
-      c = G ? lmi::passivity_level_certified(*G, kind, o.digits) : lmi::passivity_level_certified(sys, kind, o.digits);
-    else if (exact)
-      c = lmi::passivity_level_certified_mimo(*exact, kind, o.digits, f.status != Status::failed ? f.theta_min : -1.0);
-    else c.note = "certified frequency path: no exact model";
-  }
-  v.lmi_ok = l.status != Status::failed, v.freq_ok = f.status != Status::failed, v.cert_ok = c.status != Status::failed;
-  // The certified value is the level of Definition 2 for ISP, and for OSP when delta* > 0
-  // (passivity_level.hpp); an OSP delta* <= 0 is an upper bound on Lemma 1's level only.
-  v.cert_is_level = v.cert_ok && (kind == lmi::PassivityKind::isp || c.level > 0);
-  // main result: the certified level (an enclosure of the level itself), else the LMI
-  // (a numeric level with a certified lower bound), else the frequency grid (numeric)
-  using M = Levels::Main;
-  v.which = v.cert_is_level ? M::cert : v.lmi_ok ? M::lmi : v.cert_ok ? M::cert : M::freq;
-  v.only_bound = v.which == M::cert && !v.cert_is_level;  // OSP delta* <= 0 and no LMI level
-  v.note = v.main().note;
-  auto add = [&](const std::string& what, const std::string& n, M from) {
-    if (!n.empty() && v.which != from) v.note += (v.note.empty() ? "" : "; ") + what + n;
-  };
-  add(sys.inputs() == 1 ? "certified frequency path: " : "", c.note, M::cert);
-  if (!v.lmi_ok) add("LMI: ", l.note, M::lmi);
-  // compared only where the frequency value is the level (ISP; OSP > 0): an OSP value <= 0 is
-  // an upper bound that the LMI level may lie below
-  const double ref = v.cert_ok ? c.level : f.level;
-  const bool comparable = kind == lmi::PassivityKind::isp || ref > 0;
-  if (v.lmi_ok && (v.cert_ok || v.freq_ok) && comparable && std::isfinite(ref) &&
-      std::abs(l.level - ref) > 1e-5 * std::max(1.0, std::abs(ref)))
-    v.note += (v.note.empty() ? "" : "; ") + std::string("LMI and frequency-domain levels disagree beyond 1e-5");
-  v.any = v.cert_ok || v.lmi_ok || v.freq_ok;
-  return v;
-}
+using lmi::Levels;
 
 void report_json(const Opts& o, const Levels& v) {
   const auto &main = v.main(), &l = v.l, &f = v.f, &c = v.c;
@@ -269,7 +206,8 @@ int run(const Opts& o) {
   std::optional<RationalFunction<rational>> G;  // exact SISO transfer function (--H)
   std::optional<StateSpace<rational>> exact;     // the model as written (--ss, --mat)
   const StateSpace<double> sys = read_model(o, G, exact);
-  const Levels v = compute_levels(o, backend, sys, G, exact);
+  const Levels v = lmi::passivity_levels({sys, G, exact}, o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp,
+                                          o.lemma, backend, o.grid, o.digits);
   if (o.json) report_json(o, v);
   else report_text(o, v);
   return v.any ? exit_ok : exit_numerical;

@@ -27,7 +27,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
-#include "hapstab/scene/scene.hpp"
+#include "hapstab/scene/run.hpp"
 #include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/sim/simulator.hpp"
@@ -236,25 +236,12 @@ int run(const Opts& o) {
   }
   const bool csv = o.format.find("csv") != std::string::npos, mat = o.format.find("mat") != std::string::npos;
   auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
-  scene::check_command(sc.root, o.scene, "simulate");  // what it does not model is refused (scene/schema.hpp)
-  if (!sc.simulate.present)
-    throw InputError(o.scene + ": simulate: missing; add [simulate] with duration = \"...\" (seconds) or steps = N");
+  scene::SceneRun prepared = scene::prepare_run(sc);
   const auto& S = sc.simulate;
-  std::unique_ptr<sim::Simulator> simulator;
-  try {
-    simulator = std::make_unique<sim::Simulator>(sc.loop);
-  } catch (const InputError& e) {
-    throw InputError(o.scene + ": " + e.what());
-  }
+  const sim::Simulator* simulator = prepared.simulator.get();
   const int N = simulator->loop().N;
   // Output size check before running.
-  const double rows = S.record_every > 0 ? double(S.steps) / double(S.record_every) + 1 : 0;
-  double fine_rows = 0;
-  if (S.substeps > 1 && S.window_to >= S.window_from) {
-    const double T = to_real<double>(sc.T);
-    const double span = std::min(S.window_to, double(S.steps) * T) - S.window_from;
-    fine_rows = std::max(0.0, span / T + 1) * S.substeps;
-  }
+  const double rows = prepared.rows, fine_rows = prepared.fine_rows;
   const double bytes = rows * (1 + 8 * N) * 24 + fine_rows * (1 + 2 * N) * 24;
   if (bytes > o.max_mb * 1e6 && !o.force) {
     std::ostringstream os;
@@ -264,15 +251,7 @@ int run(const Opts& o) {
     throw InputError(os.str());
   }
   const fs::path dir = output_folder(o.out, "--out");  // before the run, which may take long
-  sim::SimOptions so;
-  so.steps = S.steps;
-  so.record_every = S.record_every;
-  so.substeps = S.substeps;
-  so.fine_from = S.window_from;
-  so.fine_to = S.window_to;
-  so.max_velocity = S.max_velocity;
-  so.watch_dof = S.watch_dof;
-  so.energy = S.energy;
+  sim::SimOptions so = prepared.options;
   const auto t0 = std::chrono::steady_clock::now();
   if (!o.quiet && S.steps >= 2000000)
     so.progress = [](double f) {

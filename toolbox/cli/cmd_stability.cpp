@@ -21,7 +21,6 @@
 #include <memory>
 
 #include "cli/command.hpp"
-#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -29,6 +28,7 @@
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
+#include "hapstab/stability/loop_from_text.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace {
@@ -42,68 +42,12 @@ struct StabilityOpts {
   bool json = false;
 };
 
-TransferFunction parse_option(const std::string& text, const std::string& option, char variable, const rational& T,
-                              const std::map<std::string, rational>& params) {
-  if (text.empty()) throw InputError(option + " is required");
-  ParseOptions po;
-  po.variable = variable;
-  po.T = T;
-  po.parameters = params;
-  try {
-    return parse_tf(text, po);
-  } catch (const InputError& e) {
-    throw InputError(option + ": " + e.what());
-  }
-}
-
-bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
-
-/// H = H0 + K H1 from the expression of --H (lti/parse.hpp: split_affine).
-void split_gain(stability::Loop& loop, const StabilityOpts& o, const rational& T, const std::map<std::string, rational>& params) {
-  if (o.H.empty()) throw InputError("--H is required");
-  ParseOptions po;
-  po.variable = 'z';
-  po.T = T;
-  po.parameters = params;
-  try {
-    const AffineSplit h = split_affine(o.H, po, o.max_name);
-    loop.H = h.H0;
-    loop.H_gain = h.H1;
-  } catch (const InputError& e) {
-    throw InputError("--max " + o.max_name + ": --H: " + e.what());
-  }
-}
-
 stability::Loop make_loop(const StabilityOpts& o) {
   if (o.T.empty()) throw InputError("--T is required (the sample period)");
   const rational T = cli::option_rational(o.T, "--T");
   if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
-  if (o.delay < 0 || o.delay > limits::model_degree)
-    throw InputError("--delay must be in [0, " + std::to_string(limits::model_degree) + "], got " + std::to_string(o.delay));
   if (o.digits < 1 || o.digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(o.digits));
-  std::map<std::string, rational> params = cli::parse_sets(o.sets);
-  stability::Loop loop;
-  loop.T = T;
-  loop.delay = o.delay;
-  auto device_at = [&](const std::optional<rational>& k) {
-    std::map<std::string, rational> p = params;
-    if (k) p[o.max_name] = *k;
-    return std::make_pair(parse_option(o.plant, "--plant", 's', T, p),
-                          o.op.empty() ? std::optional<TransferFunction>()
-                                       : parse_option(o.op, "--operator", 's', T, p));
-  };
-  if (o.max_name.empty()) {
-    std::tie(loop.plant, loop.operator_impedance) = device_at(std::nullopt);
-    loop.H = parse_option(o.H, "--H", 'z', T, params);
-    return loop;
-  }
-  const auto a = device_at(rational(1)), b = device_at(rational(2));
-  if (!same(a.first, b.first) || (a.second && !same(*a.second, *b.second)))
-    throw InputError("--max " + o.max_name + ": only a gain of --H can be maximised, but " + o.max_name +
-                     " appears in --plant or --operator");
-  std::tie(loop.plant, loop.operator_impedance) = a;
-  split_gain(loop, o, T, params);
-  return loop;
+  return stability::loop_from_text({o.plant, o.H, o.op, T, o.delay, cli::parse_sets(o.sets), o.max_name});
 }
 
 using cli::enclosure_json;  // every printed enclosure rounds outward (cli/command.hpp)

@@ -155,11 +155,12 @@ Spec load_spec(const std::string& path) {
   return spec;
 }
 
-int run(const RunOptions& o) {
+int run(const RunOptions& o) { return run_text(study::read_spec_file(o.spec), o.spec, o); }
+
+int run_text(const std::string& text, const std::string& name, const RunOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  const std::string text = study::read_spec_file(o.spec);
-  Spec spec = study::parse_spec(text, o.spec);
-  const CommandShape shape = check_command(spec, o.spec);
+  Spec spec = study::parse_spec(text, name);
+  const CommandShape shape = check_command(spec, name);
   const auto [shard, shards] = parse_shard(o.shard);
   const std::string shard_text = std::to_string(shard) + "/" + std::to_string(shards);
   const fs::path dir = output_folder(o.out, "--out");

@@ -24,6 +24,10 @@ struct RunOptions {
   bool resume = false, quiet = false;
 };
 int run(const RunOptions& o);
+/// run() on a spec given as text (o.spec unused): `name` calls the spec in messages ("spec: args.T:
+/// ...") and its folder resolves the files [args] name (none: the working folder). Python's
+/// hapstab.sweep with a dict or TOML text, which has no file.
+int run_text(const std::string& text, const std::string& name, const RunOptions& o);
 
 int merge(const std::vector<std::string>& dirs, const std::string& out, bool quiet);
 

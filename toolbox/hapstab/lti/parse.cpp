@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -68,20 +69,76 @@ size_t name_end(std::string_view s, size_t i) {
   return j;
 }
 
+// A value while parsing: an exact rational function, or (ParsedExpression) the result of tape
+// node `node` when it depends on a parameter whose value comes later.
+struct Val {
+  RF rf{P()};
+  int node = -1;
+  bool known() const { return node < 0; }
+};
+
+}  // namespace
+
+/// The operations of a ParsedExpression that depend on its varying parameters, in the order the
+/// parser met them (operands before the operation): replaying them repeats the parser's own
+/// arithmetic and checks, so the result is the one a parse with those values gives.
+struct ParsedExpression::Tape {
+  enum class Op { name, add, sub, mul, div, neg, pow };
+  struct Node {
+    Op op;
+    Val a, b;          ///< operands (a known value or an earlier node)
+    std::string name;  ///< Op::name: the parameter
+    int exponent = 0;  ///< Op::pow
+    size_t token = 0;  ///< where the parser met it (its column in messages)
+  };
+  std::vector<Node> nodes;
+  Val result;
+  long known_bits = 0;  ///< the bits the known part spent (the parser's expansion limit counts them)
+};
+
+namespace {
+
 class Parser {
  public:
   Parser(std::string_view text, const ParseOptions& opt, char var) : src_(text), opt_(opt), var_(var) {
     lex();
   }
 
-  RF parse() {
-    if (tokens_.size() == 1) fail(tokens_[0], "the expression is empty");
-    RF r = expr();
-    if (peek().kind != Tok::end) {
-      if (peek().kind == Tok::rparen) fail(peek(), "unmatched ')'");
-      fail(peek(), "expected an operator (+ - * / ^) or the end of the expression, found " + describe(peek()));
+  RF parse() { return parse_val().rf; }
+
+  /// The parse, with the parameters named in `varying` left open: their uses and every operation
+  /// on them go to `tape` (the memo is not used: its groups hold values).
+  void compile(const std::set<std::string>& varying, ParsedExpression::Tape& tape) {
+    varying_ = &varying;
+    tape_ = &tape;
+    tape.result = parse_val();
+    tape.known_bits = spent_bits_;
+  }
+
+  /// The tape's result at `values` (each varying parameter's), with the parser's checks; spent
+  /// bits start at the known part's. InputError as the parser raises it.
+  RF replay(const ParsedExpression::Tape& tape, const std::map<std::string, rational>& values) const {
+    using Op = ParsedExpression::Tape::Op;
+    std::vector<RF> v(tape.nodes.size(), RF(P()));
+    long spent = tape.known_bits;
+    auto get = [&](const Val& x) -> const RF& { return x.known() ? x.rf : v[size_t(x.node)]; };
+    for (size_t k = 0; k < tape.nodes.size(); ++k) {
+      const auto& n = tape.nodes[k];
+      const Token& at = tokens_[n.token];
+      switch (n.op) {
+        case Op::name: v[k] = RF(P(values.at(n.name))); break;
+        case Op::add: v[k] = checked(get(n.a) + get(n.b), at, spent); break;
+        case Op::sub: v[k] = checked(get(n.a) - get(n.b), at, spent); break;
+        case Op::mul: v[k] = checked(get(n.a) * get(n.b), at, spent); break;
+        case Op::div:
+          if (get(n.b).num().is_zero()) fail(at, "division by zero");
+          v[k] = checked(get(n.a) / get(n.b), at, spent);
+          break;
+        case Op::neg: v[k] = -get(n.a); break;
+        case Op::pow: v[k] = checked_power(get(n.a), n.exponent, at, spent); break;
+      }
     }
-    return r;
+    return get(tape.result);
   }
   bool used_T() const { return used_T_; }
 
@@ -96,6 +153,32 @@ class Parser {
   int deepest_ = 0;  // the deepest depth_ reached (a group's depth, for the memo)
   long spent_bits_ = 0;
   bool used_T_ = false;
+  const std::set<std::string>* varying_ = nullptr;  // compile(): the parameters left open
+  ParsedExpression::Tape* tape_ = nullptr;
+
+  Val parse_val() {
+    if (tokens_.size() == 1) fail(tokens_[0], "the expression is empty");
+    Val r = expr();
+    if (peek().kind != Tok::end) {
+      if (peek().kind == Tok::rparen) fail(peek(), "unmatched ')'");
+      fail(peek(), "expected an operator (+ - * / ^) or the end of the expression, found " + describe(peek()));
+    }
+    return r;
+  }
+
+  // An operation on a value that depends on an open parameter: a tape node.
+  Val node(ParsedExpression::Tape::Op op, Val a, Val b, const Token& at, int exponent = 0, std::string name = "") {
+    const size_t token = size_t(&at - tokens_.data());
+    tape_->nodes.push_back({op, std::move(a), std::move(b), std::move(name), exponent, token});
+    Val r;
+    r.node = int(tape_->nodes.size()) - 1;
+    return r;
+  }
+  static Val known(RF r) {
+    Val v;
+    v.rf = std::move(r);
+    return v;
+  }
 
   [[noreturn]] void fail(const Token& at, const std::string& what) const {
     std::ostringstream os;
@@ -136,7 +219,7 @@ class Parser {
     const long per_term = k * (max_bits(p) + log_t + 1);
     return per_term > (1L << 62) / terms ? (1L << 62) : terms * per_term;
   }
-  const RF& checked(const RF& r, const Token& at) {
+  RF checked(RF r, const Token& at, long& spent) const {
     if (max_degree(r) > limits::intermediate_degree)
       fail(at, "the result has degree " + std::to_string(max_degree(r)) + ", more than the limit of " +
                    std::to_string(limits::intermediate_degree));
@@ -144,11 +227,26 @@ class Parser {
     if (b > limits::expression_bits)
       fail(at, "the result's exact coefficients take " + std::to_string(b) + " bits, more than the limit of " +
                    std::to_string(limits::expression_bits));
-    spent_bits_ += b;
-    if (spent_bits_ > limits::expansion_bits)
-      fail(at, "expanding the expression up to here has produced " + std::to_string(spent_bits_) +
+    spent += b;
+    if (spent > limits::expansion_bits)
+      fail(at, "expanding the expression up to here has produced " + std::to_string(spent) +
                    " bits of exact coefficients, more than the limit of " + std::to_string(limits::expansion_bits));
     return r;
+  }
+  RF checked(RF r, const Token& at) { return checked(std::move(r), at, spent_bits_); }
+
+  // base^n after the checks of its size, known before it is computed (refused before it fills memory)
+  RF checked_power(const RF& base, int n, const Token& caret, long& spent) const {
+    if (n < 0 && base.num().is_zero()) fail(caret, "division by zero (zero raised to a negative power)");
+    const long k = std::abs(n);
+    if (long(max_degree(base)) * k > limits::intermediate_degree)
+      fail(caret, "the power has degree " + std::to_string(long(max_degree(base)) * k) + ", more than the limit of " +
+                      std::to_string(limits::intermediate_degree));
+    const long predicted = predicted_power_bits(base.num(), k) + predicted_power_bits(base.den(), k);
+    if (predicted > limits::expression_bits)
+      fail(caret, "the power's exact coefficients could take up to " + std::to_string(predicted) +
+                      " bits, more than the limit of " + std::to_string(limits::expression_bits));
+    return checked(base.pow(n), caret, spent);
   }
 
   void lex() {
@@ -229,43 +327,50 @@ class Parser {
   const Token& next() { return tokens_[pos_++]; }
 
   // expr := term (('+'|'-') term)*
-  RF expr() {
-    RF r = term();
+  Val expr() {
+    Val r = term();
     while (peek().kind == Tok::plus || peek().kind == Tok::minus) {
       const Token& op = next();
-      RF t = term();
-      r = checked(op.kind == Tok::plus ? r + t : r - t, op);
+      Val t = term();
+      const bool plus = op.kind == Tok::plus;
+      if (r.known() && t.known()) r = known(checked(plus ? r.rf + t.rf : r.rf - t.rf, op));
+      else r = node(plus ? ParsedExpression::Tape::Op::add : ParsedExpression::Tape::Op::sub, std::move(r), std::move(t), op);
     }
     return r;
   }
 
   // term := unary (('*'|'/') unary)*
-  RF term() {
-    RF r = unary();
+  Val term() {
+    Val r = unary();
     while (peek().kind == Tok::star || peek().kind == Tok::slash) {
       const Token& op = next();
-      RF f = unary();
+      Val f = unary();
       if (op.kind == Tok::star) {
-        r = checked(r * f, op);
+        if (r.known() && f.known()) r = known(checked(r.rf * f.rf, op));
+        else r = node(ParsedExpression::Tape::Op::mul, std::move(r), std::move(f), op);
       } else {
-        if (f.num().is_zero()) fail(op, "division by zero");
-        r = checked(r / f, op);
+        if (f.known() && f.rf.num().is_zero()) fail(op, "division by zero");
+        if (r.known() && f.known()) r = known(checked(r.rf / f.rf, op));
+        else r = node(ParsedExpression::Tape::Op::div, std::move(r), std::move(f), op);
       }
     }
     return r;
   }
 
   // unary := ('+'|'-')* power   (a loop, not recursion: "------z" cannot exhaust the stack)
-  RF unary() {
+  Val unary() {
     bool negate = false;
+    const Token& first = peek();
     while (peek().kind == Tok::minus || peek().kind == Tok::plus) negate ^= next().kind == Tok::minus;
-    RF r = power();
-    return negate ? -r : r;
+    Val r = power();
+    if (!negate) return r;
+    if (r.known()) return known(-r.rf);
+    return node(ParsedExpression::Tape::Op::neg, std::move(r), Val{}, first);
   }
 
   // power := primary ('^' exponent)?   exponent := [+-]? integer | '(' [+-]? integer ')'
-  RF power() {
-    RF base = primary();
+  Val power() {
+    Val base = primary();
     if (peek().kind != Tok::caret) return base;
     const Token& caret = next();
     bool paren = false;
@@ -286,51 +391,47 @@ class Parser {
       if (peek().kind != Tok::rparen) fail(peek(), "expected ')' to close the exponent, found " + describe(peek()));
       next();
     }
-    if (n < 0 && base.num().is_zero()) fail(caret, "division by zero (zero raised to a negative power)");
+    if (n < 0 && base.known() && base.rf.num().is_zero())
+      fail(caret, "division by zero (zero raised to a negative power)");
     if (peek().kind == Tok::caret) fail(peek(), "write (a^b)^c with parentheses: a^b^c is ambiguous");
-    // The size of the power is known before it is computed: refuse it before it fills memory.
-    const long k = std::abs(n);
-    if (long(max_degree(base)) * k > limits::intermediate_degree)
-      fail(caret, "the power has degree " + std::to_string(long(max_degree(base)) * k) + ", more than the limit of " +
-                      std::to_string(limits::intermediate_degree));
-    const long predicted = predicted_power_bits(base.num(), k) + predicted_power_bits(base.den(), k);
-    if (predicted > limits::expression_bits)
-      fail(caret, "the power's exact coefficients could take up to " + std::to_string(predicted) +
-                      " bits, more than the limit of " + std::to_string(limits::expression_bits));
-    return checked(base.pow(n), caret);
+    if (!base.known()) return node(ParsedExpression::Tape::Op::pow, std::move(base), Val{}, caret, n);
+    return known(checked_power(base.rf, n, caret, spent_bits_));
   }
 
   // primary := number | name | '(' expr ')'
-  RF primary() {
+  Val primary() {
     const Token& t = peek();
     switch (t.kind) {
       case Tok::number: {
         next();
         auto q = try_parse_rational(t.text);
         if (!q) fail(t, "malformed number '" + t.text + "'");
-        return RF(P(*q));
+        return known(RF(P(*q)));
       }
       case Tok::name: {
         next();
-        if (t.text.size() == 1 && t.text[0] == var_) return RF(P::monomial(1, rational(1)));
+        if (t.text.size() == 1 && t.text[0] == var_) return known(RF(P::monomial(1, rational(1))));
+        if (varying_ && varying_->count(t.text)) return node(ParsedExpression::Tape::Op::name, Val{}, Val{}, t, 0, t.text);
         auto it = opt_.parameters.find(t.text);
-        if (it != opt_.parameters.end()) return RF(P(it->second));
+        if (it != opt_.parameters.end()) return known(RF(P(it->second)));
         if (t.text == "T") {
-          if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (--T)");
+          if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (" + opt_.period_hint + ")");
           used_T_ = true;
-          return RF(P(opt_.T));
+          return known(RF(P(opt_.T)));
         }
         if ((t.text == "z" || t.text == "s") && t.text[0] != var_)
           fail(t, std::string("the expression mixes the variables s and z (this one is in ") + var_ + ")");
         std::string known = std::string(1, var_) + ", T";
         for (const auto& [k, v] : opt_.parameters) known += ", " + k;
-        fail(t, "unknown name '" + t.text + "' (known: " + known + "; give parameters with --set NAME=VALUE)");
+        std::string hint = opt_.parameter_hint;
+        if (const size_t at = hint.find("{}"); at != std::string::npos) hint.replace(at, 2, t.text);
+        fail(t, "unknown name '" + t.text + "' (known: " + known + "; " + hint + ")");
       }
       case Tok::lparen: {
         const size_t open = pos_, close = close_[pos_];
         next();
         if (peek().kind == Tok::rparen) fail(peek(), "empty parentheses");
-        const bool memoise = opt_.memo && close != std::string::npos && close - open - 1 >= ParseMemo::kMinTokens;
+        const bool memoise = opt_.memo && !varying_ && close != std::string::npos && close - open - 1 >= ParseMemo::kMinTokens;
         std::string key;
         if (memoise) {
           key = var_ + std::string(src_.substr(t.column - 1, tokens_[close].column - t.column + 1));
@@ -339,7 +440,7 @@ class Parser {
             spent_bits_ += g->bits;
             used_T_ = used_T_ || g->used_T;
             deepest_ = std::max(deepest_, depth_ + g->depth);
-            return g->value;
+            return known(g->value);
           }
         }
         const long bits0 = spent_bits_;
@@ -348,12 +449,12 @@ class Parser {
         if (++depth_ > limits::nesting_depth)
           fail(t, "parentheses nested deeper than " + std::to_string(limits::nesting_depth) + " levels, the limit");
         deepest_ = std::max(deepest_, depth_);
-        RF r = expr();
+        Val r = expr();
         --depth_;
         if (peek().kind != Tok::rparen)
           fail(peek(), "expected ')' to close '(' at column " + std::to_string(t.column) + ", found " + describe(peek()));
         next();
-        if (memoise) remember(std::move(key), open, close, r, spent_bits_ - bits0, deepest_ - depth0);
+        if (memoise) remember(std::move(key), open, close, r.rf, spent_bits_ - bits0, deepest_ - depth0);
         deepest_ = std::max(deepest_, deepest0);
         return r;
       }
@@ -415,7 +516,10 @@ std::set<std::string> names_in(std::string_view text) {
   return names;
 }
 
-TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
+namespace {
+
+// parse_tf's checks of the options and the text, before parsing; returns the variable.
+char check_input(std::string_view text, const ParseOptions& options) {
   if (options.T < 0) throw InputError("sample period T must be > 0, got " + to_decimal(options.T, 17));
   for (const auto& [k, v] : options.parameters) {
     if (k.empty() || !(std::isalpha(static_cast<unsigned char>(k[0])) || k[0] == '_'))
@@ -428,14 +532,17 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
   char var = infer_variable(text, options);
   if (options.parameters.count(std::string(1, var)))
     throw InputError(std::string("parameter '") + var + "' clashes with the variable " + var);
-  Parser p(text, options, var);
-  RF H = p.parse();
+  return var;
+}
+
+// parse_tf's end: the model's degree limit and the domain.
+TransferFunction finish(RF H, std::string_view text, const ParseOptions& options, char var) {
   const int degree = std::max(H.num().degree(), H.den().degree());
   if (degree > limits::model_degree)
     throw InputError("expression '" + excerpt(text, 1) + "' has degree " + std::to_string(degree) +
                      ", more than the limit of " + std::to_string(limits::model_degree) + " for a model");
   TransferFunction out;
-  out.H = H;
+  out.H = std::move(H);
   out.domain = var == 'z' ? Domain::z : Domain::s;
   if (out.domain == Domain::z) {
     if (options.T <= 0)
@@ -445,6 +552,58 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
     out.T = 0;
   }
   return out;
+}
+
+}  // namespace
+
+TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
+  const char var = check_input(text, options);
+  Parser p(text, options, var);
+  return finish(p.parse(), text, options, var);
+}
+
+// ---- ParsedExpression ---------------------------------------------------------------------------
+
+struct ParsedExpression::State {
+  std::string text;
+  ParseOptions options;  ///< with the varying parameters at 0 (their names count, not their values)
+  std::set<std::string> varying;
+  char var = 0;
+  std::unique_ptr<Parser> parser;  ///< holds the tokens; refers to text and options (owned here)
+  Tape tape;
+};
+
+ParsedExpression::ParsedExpression(std::string_view text, const ParseOptions& options, std::set<std::string> varying)
+    : state_() {
+  auto state = std::make_shared<State>();
+  State& s = *state;
+  s.text = std::string(text);
+  s.options = options;
+  s.options.memo = nullptr;
+  for (const auto& name : varying) s.options.parameters.emplace(name, rational(0));
+  s.varying = std::move(varying);
+  s.var = check_input(s.text, s.options);
+  s.parser = std::make_unique<Parser>(s.text, s.options, s.var);
+  s.parser->compile(s.varying, s.tape);
+  state_ = std::move(state);
+}
+
+ParsedExpression::~ParsedExpression() = default;
+
+size_t ParsedExpression::operations() const { return state_->tape.nodes.size(); }
+
+TransferFunction ParsedExpression::at(const std::map<std::string, rational>& values) const {
+  const State& s = *state_;
+  for (const auto& name : s.varying)
+    if (!values.count(name)) throw std::logic_error("ParsedExpression::at: no value for '" + name + "'");
+  try {
+    return finish(s.parser->replay(s.tape, values), s.text, s.options, s.var);
+  } catch (const InputError&) {
+    // the parser's own outcome at these values, error and message as parse_tf gives them
+    ParseOptions o = s.options;
+    for (const auto& [k, v] : values) o.parameters[k] = v;
+    return parse_tf(s.text, o);
+  }
 }
 
 AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <string_view>
@@ -58,6 +59,11 @@ struct ParseOptions {
   std::map<std::string, rational> parameters;
   /// Optional (not owned): see ParseMemo.
   ParseMemo* memo = nullptr;
+  /// How the caller takes parameters and the sample period, for the messages of an unknown name
+  /// and of a missing T: the command line's words by default; the Python module says
+  /// "pass params={'K': ...}" ({} stands for the unknown name) and "T=...".
+  std::string parameter_hint = "give parameters with --set NAME=VALUE";
+  std::string period_hint = "--T";
 };
 
 /// The names `text` refers to (parameters, T, the variable), found by the parser's own lexer:
@@ -77,5 +83,28 @@ struct AffineSplit {
   TransferFunction H0, H1;
 };
 AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name);
+
+/// An expression parsed once for many values of some of its parameters (`varying`), e.g. b* of
+/// one wall over 10^5 stiffnesses (Python's hapstab.bound with params={"K": array}): the text is
+/// read once, and every subexpression that names none of the varying parameters is computed
+/// once; at(values) computes the rest. at(values) is parse_tf(text, options with `values`), the
+/// same transfer function or the same InputError: it replays the parser's own operations and
+/// checks in the parser's order, and asks parse_tf itself whenever the replay raises.
+/// Construction raises what every value would (a malformed expression, an unknown name). at() is
+/// const and may run on several threads at once.
+class ParsedExpression {
+ public:
+  ParsedExpression(std::string_view text, const ParseOptions& options, std::set<std::string> varying);
+  ~ParsedExpression();
+  /// The transfer function at `values` (one value for each varying parameter).
+  TransferFunction at(const std::map<std::string, rational>& values) const;
+  /// The operations left for at() (0: the expression does not depend on the varying parameters).
+  size_t operations() const;
+  struct Tape;
+
+ private:
+  struct State;
+  std::shared_ptr<const State> state_;
+};
 
 }  // namespace hapstab

@@ -199,4 +199,16 @@ rational exact_rational(double x) {
   return q;
 }
 
+double double_outward(const rational& q, int dir) {
+  const mpfr_rnd_t rnd = dir < 0 ? MPFR_RNDD : dir > 0 ? MPFR_RNDU : MPFR_RNDN;
+  mpfr_t x;
+  mpfr_init2(x, 53);
+  // both steps round the same way: a 53-bit MPFR number is a double unless it is subnormal there,
+  // where mpfr_get_d rounds once more in the same direction (still on the outward side)
+  mpfr_set_q(x, q.backend().data(), rnd);
+  const double d = mpfr_get_d(x, rnd);
+  mpfr_clear(x);
+  return d;
+}
+
 }  // namespace hapstab

@@ -36,6 +36,12 @@ std::optional<std::string> common_decimal(const rational& lo, const rational& hi
 /// printed enclosure still contains the value.
 std::string decimal_outward(const rational& q, int digits, int dir);
 
+/// q rounded to a double outward (dir = -1 toward -inf, +1 toward +inf; 0 to nearest): the
+/// nearest double on that side, q itself when it is one, so that [double_outward(lo, -1),
+/// double_outward(hi, +1)] still contains what [lo, hi] contains (beyond the double range:
+/// -inf/+inf on the outward side, the largest finite double on the inward side).
+double double_outward(const rational& q, int dir);
+
 /// 10^e, exact.
 rational pow10(long e);
 

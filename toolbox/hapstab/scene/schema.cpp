@@ -694,7 +694,8 @@ std::string schema_markdown() {
     o << "\n";
   }
   o << "\n`hapstab reproduce` runs each scene with the commands its sections call for; the Python module\n"
-       "(`hapstab.simulate`, `hapstab.multidof.analyze|design`) runs the same commands, so the same table holds.\n";
+       "runs the same code (`hapstab.simulate`: `scene::prepare_run`, the preparation `hapstab simulate`\n"
+       "uses; `hapstab.multidof.analyze|design`: the commands), so the same table holds.\n";
   return o.str();
 }
 

@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""Executes a notebook (examples/python/tour.ipynb) with Debian's nbclient and ipykernel, in a
+kernel of THIS interpreter (a private kernelspec: the system's "python3" spec may name another
+python3 on PATH), and checks its outputs, not only that it ran: each cell tagged check:NAME must
+show the text CHECKS[NAME] expects (regular expressions over its stream and display outputs), a
+cell that displays a result must show its HTML and LaTeX forms, the figure cells must show a PNG,
+and no cell may raise. The executed notebook is written to --out for a look.
+
+    PYTHONPATH=build/python /usr/bin/python3 tests/python/run_notebook.py examples/python/tour.ipynb --out build/python-notebook
+(ctest runs it as python_notebook.)"""
+import argparse
+import json
+import os
+import re
+import sys
+import tempfile
+
+import nbformat
+from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError
+
+# what each tagged cell must print (all of them, in its text outputs)
+CHECKS = {
+    "check:exact": [r"status='exact'", r"value: 11/2 \| passive with device damping 6\? True",
+                    r"closed form: virtual wall"],
+    "check:undecided": [r"^certified ", r"UndecidedComparison: cannot decide b\* == ", r"b\* > 0\.1 \? (True|False)"],
+    "check:vector": [r"^10001 certified bounds in [0-9.]+ s; hapstab\.ResultArray\(Bound, shape=\(10001,\)",
+                     r"failed=0", r"largest passive K without delay: 5998\.0 \(closed form",
+                     r"largest passive K with one sample of delay: [0-9]+\.[0-9]"],
+    "check:map": [r"^points: 651 \| passive: [0-9]+ \| stable: [0-9]+ \| passive but not stable at K > 0: 0$",
+                  r"^stable at K = 0: 0$"],
+    "check:multidof": [r"^Theorem 5: feasible \| certified: True \| stability concluded: True$",
+                       r"^simulated \([0-9]+, 2\) samples x DOFs; diverged: False"],
+    "check:figure": [r"saved tour_bound\.png"],
+    "check:table": [r"K\s+value\s+lo\s+hi\s+status"],
+}
+IMAGES = {"check:map", "check:figure"}  # cells that must display a PNG
+RICH = {"check:exact"}                   # cells whose last value is a result: HTML and LaTeX shown
+
+
+def text_of(cell) -> str:
+    parts = []
+    for o in cell.get("outputs", []):
+        if o.get("output_type") == "stream":
+            parts.append(o.get("text", ""))
+        elif "data" in o and "text/plain" in o["data"]:
+            parts.append(o["data"]["text/plain"])
+    return "".join(parts)
+
+
+def kernelspec(folder: str) -> str:
+    """A kernelspec running ipykernel in this interpreter; returns its name."""
+    spec = os.path.join(folder, "kernels", "hapstab-python")
+    os.makedirs(spec)
+    with open(os.path.join(spec, "kernel.json"), "w", encoding="utf-8") as f:
+        json.dump({"argv": [sys.executable, "-Xfrozen_modules=off", "-m", "ipykernel_launcher", "-f", "{connection_file}"],
+                   "display_name": "hapstab (this Python)", "language": "python"}, f)
+    os.environ["JUPYTER_PATH"] = folder + os.pathsep + os.environ.get("JUPYTER_PATH", "")
+    # the kernel runs in --out: PYTHONPATH's entries absolute; figures inline (not a headless
+    # MPLBACKEND=Agg the caller may have set for scripts), as a notebook shows them
+    paths = os.environ.get("PYTHONPATH", "")
+    os.environ["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in paths.split(os.pathsep) if p)
+    os.environ.pop("MPLBACKEND", None)
+    return "hapstab-python"
+
+
+def main() -> int:
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("notebook")
+    p.add_argument("--out", required=True, help="folder for the executed notebook and what it writes")
+    p.add_argument("--timeout", type=int, default=600, help="seconds per cell (a hang guard)")
+    a = p.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    nb = nbformat.read(a.notebook, as_version=4)
+    with tempfile.TemporaryDirectory(prefix="hapstab-kernel-") as tmp:
+        client = NotebookClient(nb, kernel_name=kernelspec(tmp), timeout=a.timeout,
+                                resources={"metadata": {"path": a.out}})
+        try:
+            client.execute()
+        except CellExecutionError as e:
+            print(f"run_notebook: a cell raised:\n{e}", file=sys.stderr)
+            return 1
+        finally:
+            nbformat.write(nb, os.path.join(a.out, os.path.basename(a.notebook)))
+    failures, seen = [], set()
+    for i, cell in enumerate(nb.cells):
+        if cell.cell_type != "code":
+            continue
+        for o in cell.get("outputs", []):
+            if o.get("output_type") == "error":
+                failures.append(f"cell {i}: {o.get('ename')}: {o.get('evalue')}")
+        for tag in cell.metadata.get("tags", []):
+            if not tag.startswith("check:"):
+                continue
+            seen.add(tag)
+            text = text_of(cell)
+            for pattern in CHECKS[tag]:
+                if not re.search(pattern, text, re.M):
+                    failures.append(f"cell {i} ({tag}): no match for {pattern!r} in:\n{text}")
+            kinds = {k for o in cell.get("outputs", []) for k in o.get("data", {})}
+            if tag in IMAGES and "image/png" not in kinds:
+                failures.append(f"cell {i} ({tag}): no PNG shown (outputs: {sorted(kinds)})")
+            if tag in RICH and not {"text/html", "text/latex"} <= kinds:
+                failures.append(f"cell {i} ({tag}): the result's HTML/LaTeX forms were not shown ({sorted(kinds)})")
+    missing = set(CHECKS) - seen
+    if missing:
+        failures.append(f"the notebook has no cell tagged {sorted(missing)}")
+    if not os.path.exists(os.path.join(a.out, "tour_bound.png")):
+        failures.append("the figure tour_bound.png was not written")
+    for f in failures:
+        print("run_notebook: FAILED " + f, file=sys.stderr)
+    print(f"run_notebook: {len(seen)} checked cells, {len(failures)} failures ({a.notebook})")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
