@@ -78,15 +78,15 @@ R objective_on_circle(const BoundProblem& p, const R& th) {
 template double objective_on_circle<double>(const BoundProblem&, const double&);
 template mp50 objective_on_circle<mp50>(const BoundProblem&, const mp50&);
 
-// The limit at theta = 0 (exact: the c-form at c = 1, plus the fractional delay's term).
+// The limit at theta = 0, exactly: with the c-form pieces of H without delay and nu = n + t_d/T,
+// f(0) = (T/2)(A(1) + 2 nu E(1))/B(1) + eta, A = R - (1 + c) Q, E = R + (1 - c) Q (long_delay.cpp);
+// nothing of degree n is formed.
 double objective_at_zero(const BoundProblem& p) {
-  using R = mp50;
-  Objective o = objective(p.H, p.T, p.delay);
-  const R one(1);
-  if (!p.frac_delay) return static_cast<double>(to_real<R>(o.f.num()(rational(1)) / o.f.den()(rational(1))) + to_real<R>(p.eta));
-  const R tau = to_real<R>(*p.frac_delay / p.T);
-  const R num = (to_real<R>(o.R(rational(1))) - 2 * to_real<R>(o.Q(rational(1)))) + to_real<R>(o.R(rational(1))) * 2 * tau;
-  return static_cast<double>(to_real<R>(p.T) / 2 * num / to_real<R>(o.B(rational(1))) + to_real<R>(p.eta));
+  const Objective o = objective(p.H, p.T, 0);
+  const rational one(1);
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational R1 = o.R(one), A1 = R1 - 2 * o.Q(one);
+  return to_real<double>(p.T / 2 * (A1 + 2 * nu * R1) / o.B(one) + p.eta);
 }
 
 }  // namespace detail
