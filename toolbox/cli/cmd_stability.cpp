@@ -81,7 +81,11 @@ stability::Loop scene_loop_of(const StabilityOpts& o) {
   auto at = [&](const std::optional<rational>& k) {
     std::map<std::string, rational> p = params;
     if (k) p[o.max_name] = *k;
-    return stability::scene_loop(scene::load_scene(o.scene, p));
+    try {
+      return stability::scene_loop(scene::load_scene(o.scene, p));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--scene: ") + e.what());
+    }
   };
   if (o.max_name.empty()) return at(std::nullopt);
   stability::Loop loop = at(rational(0));

@@ -56,15 +56,18 @@ void check_problem_size(const BoundProblem& p) {
 // ---------------------------------------------------------------------------------------------
 // the planner: exact path (degree^4) or long-delay path (~ nu), by estimated cost
 namespace {
-// Costs on one core of the reference machine, fitted to bench/passivity.cpp (BM_BoundDelay):
-// the exact path's time grows like its degree^4, the long-delay path's like its boxes 4 nu + 64.
+// Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_bound, the wall
+// 10 + 5 (z - 1)/(T z)): the exact path 0.8 ms at degree 11, 4.3 ms at 31, 47 ms at 61, 0.29 s at
+// 101 (~ degree^4); the long-delay path 1.5 ms at n = 10, 32 ms at 10^3, 0.29 s at 10^4 (~ its
+// 4 nu + 64 boxes). The exact path runs while it costs at most twice the long-delay path or 20 ms:
+// up to n ~ 45 for a low-order wall (it can prove an interior maximum exact).
 double exact_cost(long degree) {
   const double d = static_cast<double>(degree) / 100;
-  return 1e-3 + 0.5 * d * d * d * d;
+  return 5e-4 + 0.3 * d * d * d * d;
 }
 double long_cost(const rational& nu, long order) {
   const double boxes = 4 * to_real<double>(nu) + 64;
-  return 1e-3 + boxes * 2.5e-5 * (1 + 0.1 * static_cast<double>(order));
+  return 1e-3 + boxes * 8e-6 * (1 + 0.1 * static_cast<double>(order));
 }
 std::string seconds(double s) {
   char buf[32];
@@ -86,8 +89,8 @@ BoundPlan plan_bound(const BoundProblem& raw) {
   const bool long_ok = detail::delay_form(p, &why_not).has_value();
   const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
   plan.long_seconds = long_ok ? long_cost(nu, order) : std::numeric_limits<double>::infinity();
-  const std::string costs = "exact path ~" + (exact_ok ? seconds(plan.exact_seconds) : std::string("beyond its limit")) +
-                            ", long-delay path ~" + (long_ok ? seconds(plan.long_seconds) : std::string("n/a"));
+  const std::string costs = (exact_ok ? "exact path ~" + seconds(plan.exact_seconds) : std::string("exact path beyond its limit")) +
+                            (long_ok ? ", long-delay path ~" + seconds(plan.long_seconds) : std::string(", no long-delay path"));
   if (exact_ok && (!long_ok || plan.exact_seconds <= std::max(2 * plan.long_seconds, 0.02))) {
     plan.path = BoundPath::exact;
     plan.why = "exact path: its objective has degree " + std::to_string(plan.exact_degree) + " (" + costs + ")";

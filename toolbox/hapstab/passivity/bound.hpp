@@ -81,7 +81,7 @@ inline const char* to_string(BoundPath p) { return p == BoundPath::exact ? "exac
 /// deg D + n), or q (order + n) + p + q for t_d = (p/q) T) is small enough that it is no slower
 /// than about the long-delay path (or below 20 ms), the long-delay path otherwise and wherever the
 /// exact polynomial would exceed limits::model_degree. Both costs are estimates in seconds on one
-/// core of the reference machine (bench/passivity.cpp measures them: BM_BoundDelay).
+/// core of the reference machine (bench/delay.cpp measures them: BM_bound).
 struct BoundPlan {
   BoundPath path = BoundPath::exact;
   long exact_degree = 0;       ///< the degree the exact path would expand to

@@ -119,9 +119,20 @@ std::optional<Bound> integrator_pole(const BoundProblem& p);
 /// Best decimal for an enclosure: the common rounding at `digits` digits, else fewer digits.
 std::string enclosure_decimal(const rational& lo, const rational& hi, int digits);
 
-/// The objective at theta = wT > 0 evaluated on the unit circle in the scalar R (double, mp50).
+/// The objective at theta = wT > 0 evaluated on the unit circle in the scalar R (double, mp50),
+/// with the problem's numbers converted to R once (a grid evaluates it many times).
 template <class R>
-R objective_on_circle(const BoundProblem& p, const R& th);
+struct CircleObjective {
+  std::vector<R> num, den;  ///< H's coefficients, ascending
+  R T, eta, lag, frac;      ///< lag = n, frac = t_d/T (samples)
+  bool has_frac = false;
+  explicit CircleObjective(const BoundProblem& p);
+  R operator()(const R& th) const;
+};
+template <class R>
+R objective_on_circle(const BoundProblem& p, const R& th) {
+  return CircleObjective<R>(p)(th);
+}
 /// The limit of the objective at theta = 0 (exact c-form value at c = 1, with t_d's term).
 double objective_at_zero(const BoundProblem& p);
 

@@ -2,6 +2,8 @@
 #include "hapstab/stability/long_delay.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <complex>
 #include <cstdio>
 #include <type_traits>
 #include <vector>
@@ -358,9 +360,10 @@ RationalFunction<rational> effective_device(const Loop& loop) {
 namespace {
 
 // ---- the planner: the characteristic polynomial (existing paths) or the long-delay path --------
-// Costs on one core of the reference machine, fitted to bench/stability.cpp (BM_StabilityDelay):
-// the polynomial paths grow like degree^3 (the Schur test) and degree^4 (the crossings), the
-// long-delay path like its 4 n + 64 first boxes.
+// Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_kmax: device
+// 1/(s^2 + s), wall K + 0.5 (z - 1)/(T z)): sup K by the polynomial path 2.5 ms at degree 13,
+// 57 ms at 33, 0.27 s at 63 (~ degree^3.5), by the long-delay path 5.8 ms at n = 10, 0.1 s at 10^3,
+// 1.1 s at 10^4 (~ its 4 n + 64 first boxes); the Schur test alone ~ degree^3 (0.3 s at 100).
 struct Plan {
   bool long_delay = false;
   long degree = 0;
@@ -370,8 +373,8 @@ Plan plan(const Prepared& p, const Loop& loop, bool crossings) {
   Plan pl;
   pl.degree = static_cast<long>(loop.delay) + p.wall.L.degree() + p.den.degree();
   const double d = static_cast<double>(pl.degree) / 100;
-  const double poly_cost = crossings ? 3.4 * d * d * d * d : 0.3 * d * d * d;
-  const double long_cost = 2e-3 + (4.0 * static_cast<double>(loop.delay) + 64) * (crossings ? 8e-6 : 2e-6);
+  const double poly_cost = crossings ? 1e-3 + 2 * std::pow(d, 3.5) : 0.3 * d * d * d;
+  const double long_cost = 3e-3 + (4.0 * static_cast<double>(loop.delay) + 64) * (crossings ? 2.5e-5 : 2e-6);
   char buf[160];
   std::snprintf(buf, sizeof buf, " (polynomial path ~%.2g s, long-delay path ~%.2g s)", poly_cost, long_cost);
   if (loop.path == LoopPath::long_delay) {
@@ -826,6 +829,52 @@ bool narrow_enough(const MaxGain& m, int digits) {
 }
 
 }  // namespace
+
+std::optional<GridGain> max_gain_grid(const Loop& loop, long N) {
+  if (!loop.H_gain) throw InputError("max_gain_grid: H_gain (the part of H multiplied by the gain) is missing");
+  if (N < 2 || N > 100000000) throw InputError("max_gain_grid: N must be in [2, 1e8]");
+  const Prepared p = prepare(loop);
+  flint::BallPrecision scope(128);
+  const detail::DelayedLoop dl = p.exact ? delayed_loop(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay)
+                                         : delayed_loop(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay);
+  auto doubles = [](const Vec<Ball>& v) {
+    std::vector<double> d;
+    for (const Ball& b : v) d.push_back(b.to_double());
+    return d;
+  };
+  const std::vector<double> P = doubles(dl.P), Q0 = doubles(dl.Q0), Q1 = doubles(dl.Q1);
+  auto poly = [](const std::vector<double>& c, std::complex<double> z) {
+    std::complex<double> r = 0;
+    for (size_t i = c.size(); i-- > 0;) r = r * z + c[i];
+    return r;
+  };
+  const double pi = 3.14159265358979323846;
+  auto gain = [&](double th) {
+    const std::complex<double> z = std::polar(1.0, th);
+    return -(std::polar(1.0, static_cast<double>(loop.delay) * th) * poly(P, z) + poly(Q0, z)) / poly(Q1, z);
+  };
+  std::optional<GridGain> best;
+  auto consider = [&](double K, double th) {
+    if (K > 0 && std::isfinite(K) && (!best || K < best->K)) best = GridGain{K, th / to_real<double>(loop.T)};
+  };
+  // z = 1 (theta = 0, where Im K = 0 always): K = -c0(1)/c1(1) when c0(1) is not a structural zero
+  double size = 0;
+  for (double x : P) size += std::abs(x);
+  for (double x : Q0) size += std::abs(x);
+  const std::complex<double> at_one = gain(0);
+  if (std::abs(poly(P, 1.0) + poly(Q0, 1.0)) > 1e-12 * size) consider(at_one.real(), 0);
+  std::complex<double> prev = gain(pi / static_cast<double>(N));
+  for (long i = 2; i <= N; ++i) {
+    const double th = pi * static_cast<double>(i) / static_cast<double>(N);
+    const std::complex<double> k = gain(i == N ? pi : th);
+    if ((k.imag() > 0) != (prev.imag() > 0) && std::isfinite(k.imag()) && std::isfinite(prev.imag())) {
+      const double s = prev.imag() / (prev.imag() - k.imag());  // linear interpolation of the zero of Im K
+      consider(prev.real() + s * (k.real() - prev.real()), th - (1 - s) * pi / static_cast<double>(N));
+    }
+    prev = k;
+  }
+  return best;
+}
 
 Loop mass_damper_wall(const rational& m, const rational& b, const rational& B, const rational& T, int n) {
   if (m < 0 || T <= 0 || (m == 0 && b == 0))

@@ -94,6 +94,15 @@ MaxGain max_gain(const Loop& loop, int digits);
 /// The same, with the gain named `gain_name` in the notes (`stability --max B`: "stable at B = ...").
 MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name);
 
+/// The same supremum estimated on a grid (comparison only, status numeric): K(theta) = -c0/c1 in
+/// double at theta = pi i/N, every sign change of Im K between neighbours interpolated linearly, the
+/// smallest positive Re K there (and at z = +-1). It misses crossings once N under-samples the
+/// e^{-j n theta} of the delay (N ~ n). nullopt when no positive crossing is seen.
+struct GridGain {
+  double K = 0, omega = 0;  ///< the estimate and its crossing frequency (rad/s)
+};
+std::optional<GridGain> max_gain_grid(const Loop& loop, long N);
+
 /// The standard case of the literature (Gil et al. 2004, Hulin et al. 2006) and of paper 001's
 /// wall: device 1/(m s^2 + b s), H = K + B (z - 1)/(T z) with the gain K free (H = H0 + K * 1),
 /// delay n. InputError for m < 0, T <= 0 or m = b = 0.
