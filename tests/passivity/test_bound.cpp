@@ -19,17 +19,7 @@ using testref::R;
 
 namespace {
 
-BoundProblem make(const std::string& e, const std::string& T, std::map<std::string, rational> par = {}, int n = 0) {
-  ParseOptions o;
-  o.variable = 'z';
-  o.T = parse_rational(T);
-  o.parameters = std::move(par);
-  BoundProblem p;
-  p.H = parse_tf(e, o).H;
-  p.T = o.T;
-  p.delay = n;
-  return p;
-}
+using testref::make;
 
 /// |b - ref| <= 1e-27 |ref| (30 digits requested; the reference is good to ~40 digits: golden
 /// section to 1e-45 in θ gives value error ~ f'' 1e-90, sampling of 100-digit arithmetic ~1e-95;

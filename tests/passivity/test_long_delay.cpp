@@ -18,17 +18,7 @@ using testref::R;
 
 namespace {
 
-BoundProblem make(const std::string& e, const std::string& T, int n = 0, std::map<std::string, rational> par = {}) {
-  ParseOptions o;
-  o.variable = 'z';
-  o.T = parse_rational(T);
-  o.parameters = std::move(par);
-  BoundProblem p;
-  p.H = parse_tf(e, o).H;
-  p.T = o.T;
-  p.delay = n;
-  return p;
-}
+using testref::make;
 
 std::string describe(const BoundProblem& p) {
   return "H = (" + to_string(p.H.num(), "z") + ")/(" + to_string(p.H.den(), "z") + "), n = " + std::to_string(p.delay) +
@@ -76,16 +66,16 @@ TEST(LongDelay, AgreesWithTheExactPath) {
   };
   for (const auto& c : cases)
     for (int n : c.delays) {
-      BoundProblem p = make(c.H, "1/1000", n, KB);
+      BoundProblem p = make(c.H, "1/1000", KB, n);
       SCOPED_TRACE(describe(p));
       expect_paths_agree(p);
     }
   // eta, and a fractional delay t_d = (p/q) T with a small q (the exact path in cos(wT/q))
-  BoundProblem w = make("K + B*(z-1)/(T*z)", "1/1000", 2, KB);
+  BoundProblem w = make("K + B*(z-1)/(T*z)", "1/1000", KB, 2);
   w.eta = rational(3, 10);
   expect_paths_agree(w);
   for (const rational& td : {rational(1, 2000), rational(7, 3000), rational(13, 4000)}) {
-    BoundProblem f = make("K + B*(z-1)/(T*z)", "1/1000", 1, KB);
+    BoundProblem f = make("K + B*(z-1)/(T*z)", "1/1000", KB, 1);
     f.frac_delay = td;
     SCOPED_TRACE(describe(f));
     expect_paths_agree(f);
@@ -97,18 +87,18 @@ TEST(LongDelay, AgreesWithTheExactPath) {
 // the wall (53): at or below the conservative (2n+1) KT/2 + B and at or above its value at w = 0.
 TEST(LongDelay, ClosedFormsOfExample4AtLongDelays) {
   for (int n : {1000, 9999}) {
-    const Bound b = bound_certified(make("1", "1/1000", n), 30);
+    const Bound b = bound_certified(make("1", "1/1000", {}, n), 30);
     EXPECT_EQ(b.path, BoundPath::long_delay);
     EXPECT_EQ(b.status, Status::exact) << b.method << " " << b.note;
     EXPECT_EQ(b.value, rational(2 * n + 1, 2000)) << b.decimal;
     EXPECT_EQ(b.where, "w = 0");
   }
-  const Bound h1 = bound_certified(make("(z-1)/(T*z)", "1/1000", 2500), 30);
+  const Bound h1 = bound_certified(make("(z-1)/(T*z)", "1/1000", {}, 2500), 30);
   EXPECT_TRUE(h1.enclosure->contains(rational(1))) << h1.decimal;
   EXPECT_LT(h1.enclosure->hi - h1.enclosure->lo, pow10(-29));
   const std::map<std::string, rational> KB{{"K", rational(1000)}, {"B", rational(5)}};
   for (int n : {1000, 4000}) {
-    const Bound w = bound_certified(make("K + B*(z-1)/(T*z)", "1/1000", n, KB), 30);
+    const Bound w = bound_certified(make("K + B*(z-1)/(T*z)", "1/1000", KB, n), 30);
     const rational K = 1000, B = 5, T(1, 1000);
     EXPECT_LE(w.enclosure->hi, rational(2 * n + 1) * K * T / 2 + B) << n;
     EXPECT_GE(w.enclosure->hi, rational(2 * n + 1) * K * T / 2 - B) << n;  // (53) at w = 0
@@ -127,7 +117,7 @@ TEST(LongDelay, AgreesWithTheReferenceBeyondTheExactPath) {
                                 {"40 + 0.5*(z-1)/(T*z)", 300, rational(37, 100)},
                                 {"(z-1)/(z+1/2)", 555, rational(1, 7)}};
   for (const auto& c : cases) {
-    BoundProblem p = make(c.H, "1/1000", c.n);
+    BoundProblem p = make(c.H, "1/1000", {}, c.n);
     if (c.tau != 0) p.frac_delay = c.tau * p.T;
     SCOPED_TRACE(describe(p));
     const Bound b = bound_certified(p, 30);
@@ -161,7 +151,7 @@ TEST(LongDelay, TustinWallWithLongDelays) {
       (f(x1) < f(x2) ? a : b) = f(x1) < f(x2) ? x1 : x2;
       best = std::max(best, f((a + b) / 2));
     }
-    const Bound c = bound_certified(make("1000 + 2*5/T*(z-1)/(z+1)", "1/1000", n), 30);
+    const Bound c = bound_certified(make("1000 + 2*5/T*(z-1)/(z+1)", "1/1000", {}, n), 30);
     EXPECT_EQ(c.path, BoundPath::long_delay);
     EXPECT_LE(static_cast<double>(best), to_real<double>(c.enclosure->hi) * (1 + 1e-15)) << n << ": " << c.decimal;
     EXPECT_GE(static_cast<double>(best), to_real<double>(c.enclosure->lo) * (1 - 1e-13)) << n << ": " << c.decimal;
@@ -173,7 +163,7 @@ TEST(LongDelay, FastAgreesWithCertified) {
   for (const auto& [H, n] : std::vector<std::pair<std::string, int>>{
            {"40 + 0.5*(z-1)/(T*z)", 300}, {"40 + 0.5*(z-1)/(T*z)", 5000}, {"1", 2000},
            {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", 1500}, {"1000 + 2*5/T*(z-1)/(z+1)", 777}}) {
-    const BoundProblem p = make(H, "1/1000", n);
+    const BoundProblem p = make(H, "1/1000", {}, n);
     const Bound f = bound(p, Method::fast), c = bound_certified(p, 20);
     EXPECT_EQ(f.status, Status::numeric);
     EXPECT_EQ(f.path, BoundPath::long_delay);
@@ -185,12 +175,12 @@ TEST(LongDelay, FastAgreesWithCertified) {
 
 // The planner: the exact path where it is cheap, the long-delay path beyond; both say so.
 TEST(LongDelay, PlannerChoosesByCost) {
-  const BoundPlan small = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", 3));
+  const BoundPlan small = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 3));
   EXPECT_EQ(small.path, BoundPath::exact) << small.why;
-  const BoundPlan large = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", 1000));
+  const BoundPlan large = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 1000));
   EXPECT_EQ(large.path, BoundPath::long_delay) << large.why;
   EXPECT_NE(large.why.find("degree 1001"), std::string::npos) << large.why;
-  const Bound b = bound_certified(make("40 + 0.5*(z-1)/(T*z)", "1/1000", 3), 30);
+  const Bound b = bound_certified(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 3), 30);
   EXPECT_EQ(b.path, BoundPath::exact);
   EXPECT_EQ(b.plan, small.why);
 }
@@ -201,23 +191,23 @@ TEST(LongDelay, PlannerChoosesByCost) {
 TEST(LongDelay, WorkIsBoundedByName) {
   for (Method m : {Method::certified, Method::fast, Method::grid}) {
     try {
-      bound(make("1", "1/1000", 1000001), m);
+      bound(make("1", "1/1000", {}, 1000001), m);
       ADD_FAILURE() << "accepted n = 1000001 with " << to_string(m);
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("more than the limit of 1000000"), std::string::npos) << e.what();
     }
   }
-  BoundProblem frac = make("1", "1/1000", 999999);
+  BoundProblem frac = make("1", "1/1000", {}, 999999);
   frac.frac_delay = rational(3, 1000);  // 3 more samples
   EXPECT_THROW(bound_certified(frac), InputError);
   try {
-    bound_certified(make("1", "1/1000", 300), 30, BoundPath::exact);
+    bound_certified(make("1", "1/1000", {}, 300), 30, BoundPath::exact);
     ADD_FAILURE() << "the exact path accepted degree 300";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("limit of 200"), std::string::npos) << e.what();
   }
   try {  // poles at z = +-j: the exact path's degree is beyond its limit, the long-delay path does not apply
-    bound_certified(make("(z-1)/(z^2+1)", "1/1000", 500));
+    bound_certified(make("(z-1)/(z^2+1)", "1/1000", {}, 500));
     ADD_FAILURE() << "accepted a pole at z = j with n = 500";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("unit circle"), std::string::npos) << e.what();

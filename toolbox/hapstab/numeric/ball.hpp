@@ -102,6 +102,21 @@ class Ball {
   bool exact() const { return arb_is_exact(x_); }
   /// Every point of *this is below every point of b.
   bool below(const Ball& b) const { return arb_lt(x_, b.x_); }
+  /// The upper (lower) end of the ball as an exact ball of radius 0; +inf (-inf) when the ball is
+  /// not finite: the one-sided bounds a branch-and-bound compares exactly (arb_lt on exact balls).
+  Ball upper_end() const { return end(true); }
+  Ball lower_end() const { return end(false); }
+  /// +inf or -inf as an exact ball.
+  static Ball infinity(bool positive) {
+    Ball r;
+    arf_t a;
+    arf_init(a);
+    if (positive) arf_pos_inf(a);
+    else arf_neg_inf(a);
+    arb_set_arf(r.x_, a);
+    arf_clear(a);
+    return r;
+  }
   /// The midpoint as a ball of radius 0.
   Ball mid() const { Ball r; arb_get_mid_arb(r.x_, x_); return r; }
   /// An upper bound of the radius, as a double (for comparisons only).
@@ -132,6 +147,17 @@ class Ball {
   double to_double() const { return arf_get_d(arb_midref(x_), ARF_RND_NEAR); }
 
  private:
+  Ball end(bool up) const {
+    if (!arb_is_finite(x_)) return infinity(up);
+    Ball r;
+    arf_t a;
+    arf_init(a);
+    if (up) arb_get_ubound_arf(a, x_, ball_prec);
+    else arb_get_lbound_arf(a, x_, ball_prec);
+    arb_set_arf(r.x_, a);
+    arf_clear(a);
+    return r;
+  }
   arb_t x_;
 };
 

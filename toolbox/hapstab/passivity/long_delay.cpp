@@ -185,36 +185,9 @@ std::vector<Peak> double_peaks(const DelayForm& df, long M, size_t keep) {
 }
 
 // ---- certified: branch-and-bound over theta in Arb balls ------------------------------------
-Ball upper(const Ball& x) {  // the upper end as an exact ball (+inf when x is not finite)
-  Ball r;
-  arf_t u;
-  arf_init(u);
-  if (x.finite()) arb_get_ubound_arf(u, x.get(), flint::ball_prec);
-  else arf_pos_inf(u);
-  arb_set_arf(r.get(), u);
-  arf_clear(u);
-  return r;
-}
-Ball lower(const Ball& x) {
-  Ball r;
-  arf_t l;
-  arf_init(l);
-  if (x.finite()) arb_get_lbound_arf(l, x.get(), flint::ball_prec);
-  else arf_neg_inf(l);
-  arb_set_arf(r.get(), l);
-  arf_clear(l);
-  return r;
-}
+Ball upper(const Ball& x) { return x.upper_end(); }
+Ball lower(const Ball& x) { return x.lower_end(); }
 bool less(const Ball& a, const Ball& b) { return arb_lt(a.get(), b.get()); }  // exact balls: exact comparison
-Ball minus_infinity() {
-  Ball r;
-  arf_t m;
-  arf_init(m);
-  arf_neg_inf(m);
-  arb_set_arf(r.get(), m);
-  arf_clear(m);
-  return r;
-}
 
 /// sup over |t| <= r of d t + M t^2/2 for every d in the ball d and M = upper bound of f'' (the
 /// Taylor form's increment over a box of half-width r around its midpoint), as a ball.
@@ -409,7 +382,7 @@ class Maximiser {
   int max_level_ = 56;
   long budget_ = 0;
   Ball tol_factor_;
-  Ball L_, H_, H_other_ = minus_infinity(), best_hi_, best_at_;
+  Ball L_, H_, H_other_ = Ball::infinity(false), best_hi_, best_at_;
   Where best_where_ = Where::zero;
   long evals_ = 0, unresolved_ = 0;
 };

@@ -297,16 +297,7 @@ CrossingValues crossing_values(const CrossingForm& f, const Ball& theta) {
   return v;
 }
 
-Ball upper(const Ball& x) {
-  Ball r;
-  arf_t u;
-  arf_init(u);
-  if (x.finite()) arb_get_ubound_arf(u, x.get(), flint::ball_prec);
-  else arf_pos_inf(u);
-  arb_set_arf(r.get(), u);
-  arf_clear(u);
-  return r;
-}
+Ball upper(const Ball& x) { return x.upper_end(); }
 double lower_double(const Ball& x) { return x.finite() ? x.to_double() - x.radius() : -HUGE_VAL; }
 
 }  // namespace

@@ -679,6 +679,21 @@ RootTest test_at(const Characteristic<Ball>& ch, const rational& K) {
 }
 
 /// The candidates K > 0 at which a root is on the unit circle; nullopt: undecided here.
+/// The candidates with K > 0 (an exact K = 0, a crossing at the start, is dropped); nullopt when one
+/// is not separated from 0.
+std::optional<std::vector<Candidate>> positive_only(const std::vector<Candidate>& all, std::string& why) {
+  std::vector<Candidate> positive;
+  for (const Candidate& c : all) {
+    if (c.exact && *c.exact == 0) continue;
+    if (arb_is_positive(c.K.get())) positive.push_back(c);
+    else if (!arb_is_nonpositive(c.K.get())) {
+      why = "a crossing gain not separated from 0";
+      return std::nullopt;
+    }
+  }
+  return positive;
+}
+
 /// sup K from the candidate crossings (K > 0) and the stability test at one K below them.
 template <class C, class Test>
 MaxGain conclude(const std::optional<std::vector<Candidate>>& cands, bool fixed, const std::string& why, Test test_at,
@@ -713,16 +728,7 @@ std::optional<std::vector<Candidate>> crossings(const Characteristic<C>& ch, boo
     arb_acos(c.theta.get(), x.get(), flint::ball_prec);
     all.push_back(c);
   }
-  std::vector<Candidate> positive;
-  for (const Candidate& c : all) {
-    if (c.exact && *c.exact == 0) continue;
-    if (arb_is_positive(c.K.get())) positive.push_back(c);
-    else if (!arb_is_nonpositive(c.K.get())) {
-      why = "a crossing gain not separated from 0";
-      return std::nullopt;
-    }
-  }
-  return positive;
+  return positive_only(all, why);
 }
 
 /// The long-delay path's candidates: the crossings at z = +-1 as above, and those in (0, pi) by
@@ -735,18 +741,11 @@ std::optional<std::vector<Candidate>> crossings_long(const Edges<C>& e, const de
     why = "c1(+-1) not separated from 0";
     return std::nullopt;
   }
-  std::vector<Candidate> positive;
-  for (const Candidate& c : all) {
-    if (c.exact && *c.exact == 0) continue;
-    if (arb_is_positive(c.K.get())) positive.push_back(c);
-    else if (!arb_is_nonpositive(c.K.get())) {
-      why = "a crossing gain not separated from 0";
-      return std::nullopt;
-    }
-  }
+  std::optional<std::vector<Candidate>> positive = positive_only(all, why);
+  if (!positive) return std::nullopt;
   const auto search = detail::smallest_crossings(dl, why);
   if (!search) return std::nullopt;
-  for (const auto& c : search->crossings) positive.push_back({c.K, "complex pair", c.theta, std::nullopt});
+  for (const auto& c : search->crossings) positive->push_back({c.K, "complex pair", c.theta, std::nullopt});
   return positive;
 }
 
