@@ -448,10 +448,12 @@ StabilityResult decide(const Loop& loop) {
     }
     r.path = "long_delay";
     r.plan = pl.why;
-    return r;
+    // undecided (a root on or near the circle) and small enough: the polynomial path decides exactly
+    // where the data are exact (a root on the circle is then "not stable"), by root enclosures otherwise
+    if (r.verdict.decided() || pl.degree > limits::model_degree || loop.path == LoopPath::long_delay) return r;
   }
   r.path = "polynomial";
-  r.plan = pl.why;
+  r.plan = pl.long_delay ? pl.why + "; undecided there, so the polynomial path" : pl.why;
   if (p.exact) {
     flint::ball_prec = 256;
     const Sampled<rational> s = sample_exact(p.num, p.den, loop.T);
@@ -900,10 +902,16 @@ MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name) {
   if (loop.H_gain->H.is_zero()) throw InputError("the gain does not appear in H");
   if (digits < 1 || digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(digits));
   const Prepared p = prepare(loop);
-  const Plan pl = plan(p, loop, true);
+  Plan pl = plan(p, loop, true);
   const slong first = std::max<slong>(128, 4 * digits + 64);
   MaxGain last;
   for (slong prec = first; prec <= (pl.long_delay ? 8 : 64) * first; prec *= 2) {
+    // the long-delay path undecided at 8x its first precision, and the polynomial small enough: it takes over
+    if (pl.long_delay && prec == 8 * first && pl.degree <= limits::model_degree && loop.path != LoopPath::long_delay) {
+      pl.long_delay = false;
+      pl.why += "; undecided there, so the polynomial path";
+      prec = first;
+    }
     flint::BallPrecision scope(prec);
     if (pl.long_delay) {
       if (p.exact) {
