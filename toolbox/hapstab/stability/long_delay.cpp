@@ -180,7 +180,7 @@ Winding schur_by_winding(const DelayedLoop& L, const rational& K) {
         total += change;
         continue;
       }
-      if (pc.level >= max_level) {
+      if (pc.level >= max_level || w.boxes > 64 * (4 * L.n + 64) + 100000) {
         w.why = "a zero of the characteristic polynomial on or too near the unit circle near wT = " +
                 std::to_string(a.to_double()) + " (not decided at " + std::to_string(flint::ball_prec) + " bits)";
         return w;
@@ -313,6 +313,7 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
     bool operator<(const Piece& o) const { return key > o.key; }  // a min-queue
   };
   std::priority_queue<Piece> queue;
+  const long budget = 64 * M + 100000;  // arcs: a degenerate q (identically 0 on an arc) cannot run away
   std::optional<Ball> best;  // the smallest upper end of a positive crossing gain found so far
   auto above = [&](const Ball& K) {  // every point of K is above the best crossing (or <= 0)
     if (!K.finite()) return false;
@@ -378,9 +379,10 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
         }
       }
     }
-    if (pc.level >= max_level) {
+    if (pc.level >= max_level || out.boxes > budget) {
       why = "a crossing frequency could not be isolated near wT = " + std::to_string(a.to_double()) +
-            " (a double root, or one at a box end, at " + std::to_string(flint::ball_prec) + " bits)";
+            " (a double root, or one at a box end, at " + std::to_string(flint::ball_prec) + " bits" +
+            (out.boxes > budget ? ", or the work budget of " + std::to_string(budget) + " arcs" : std::string()) + ")";
       return std::nullopt;
     }
     keep(2 * pc.i, pc.level + 1);
