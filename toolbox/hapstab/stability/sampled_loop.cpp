@@ -389,7 +389,9 @@ Plan plan(const Prepared& p, const Loop& loop, bool crossings) {
     pl.long_delay = true;
     pl.why = "long-delay path: the characteristic polynomial would have degree " + std::to_string(pl.degree) +
              ", more than the limit of " + std::to_string(limits::model_degree) + " for the polynomial path";
-  } else if (poly_cost > std::max(2 * long_cost, 0.02)) {
+  } else if (poly_cost > std::max(2 * long_cost, crossings ? 0.02 : 0.5)) {
+    // the Schur test alone keeps the polynomial path up to ~0.5 s (degree ~110): it also encloses
+    // the spectral radius, which the argument principle does not give
     pl.long_delay = true;
     pl.why = "long-delay path: cheaper than the characteristic polynomial of degree " + std::to_string(pl.degree) + buf;
   } else {
