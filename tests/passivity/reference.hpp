@@ -9,10 +9,30 @@
 #include <algorithm>
 #include <vector>
 
+#include <map>
+#include <string>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/scalar.hpp"
+#include "hapstab/passivity/bound.hpp"
 #include "hapstab/poly/rational_function.hpp"
 
 namespace hapstab::testref {
+
+/// The bound problem of an exact expression of z with T, parameters and an integer delay n.
+inline passivity::BoundProblem make(const std::string& e, const std::string& T, std::map<std::string, rational> par = {},
+                                    int n = 0) {
+  ParseOptions o;
+  o.variable = 'z';
+  o.T = parse_rational(T);
+  o.parameters = std::move(par);
+  passivity::BoundProblem p;
+  p.H = parse_tf(e, o).H;
+  p.T = o.T;
+  p.delay = n;
+  return p;
+}
 
 using R = mp100;
 

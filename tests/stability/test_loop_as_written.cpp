@@ -14,7 +14,7 @@
 using namespace hapstab;
 using namespace hapstab::sim;
 using stability::decide_loop;
-using stability::LoopPath;
+using stability::Decider;
 
 namespace {
 using Q = rational;
@@ -35,7 +35,7 @@ TEST(LoopAsWritten, OneDofTwoDecidersAgree) {
     s.operators = {mass_spring_damper_operator("h", 0, Q(0), Q(u(g), 4), coin(g) ? Q(20 * u(g)) : Q(0))};
     s.environment = wall(Q(2000 * u(g)), Q(u(g), 4), s.T);
     s.delay = Q(dl(g)) * s.T;
-    const auto tf = decide_loop(s), mx = decide_loop(s, LoopPath::matrix);
+    const auto tf = decide_loop(s), mx = decide_loop(s, Decider::matrix);
     if (tf.stable && mx.stable) {
       ++both;
       EXPECT_EQ(*tf.stable, *mx.stable) << "case " << c << ": " << tf.why << " | " << mx.why;
@@ -86,7 +86,7 @@ TEST(LoopAsWritten, HiddenUnstableModeInEveryBlockIsNamed) {
   o.operators[0].mass.clear();
   for (const auto& [s, block, where] : {std::tuple{e, "environment", "z = 2"}, {v, "coupling", "z = 1.5"},
                                         {d, "device 'd'", "s = 1"}, {o, "operator 'hand'", "s = 2"}}) {
-    for (const LoopPath p : {LoopPath::automatic, LoopPath::matrix}) {
+    for (const Decider p : {Decider::automatic, Decider::matrix}) {
       const auto r = decide_loop(s, p);
       ASSERT_EQ(r.stable, std::optional<bool>(false)) << block << ": " << r.why;
       EXPECT_EQ(r.status, Status::exact) << block;

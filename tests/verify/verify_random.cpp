@@ -4,7 +4,7 @@
 // contain its reference; a correctly rounded decimal must be within half a unit in its last
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
-//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain] [--case K]
+//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain,delay] [--case K]
 //                 [--max-undecided F]
 //
 // Apart from misses: refused (the criterion rejected a generated input) fails the run; failed (a
@@ -48,6 +48,8 @@
 // consistency: one random scene, three commands' verdicts on its loop as written (multidof
 //         analyze's loop_as_written, stability's Schur test, simulate's trend): none may prove
 //         stable where another proves unstable (check_consistency).
+// delay:  the long-delay paths of b* and of the stability test against the exact paths and a
+//         100-digit reference, n in [0, 300] (check_delay, issue 43).
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -1083,6 +1085,148 @@ bool check_consistency(std::mt19937_64& g, std::ostream& why) {
   return ok;
 }
 
+// ---- delay: the long-delay paths against the exact paths (issue 43) -------------------------
+// b*: random H (stable, order 1-4; walls K + B(z-1)/(Tz); Tustin walls, a pole at z = -1; a
+// fractional t_d = (p/q) T, q <= 3; eta) with n in [0, 300]. Where the exact path runs in well under a
+// second (its degree <= 124), both certified paths must agree: enclosures overlap, an exact value
+// of either inside the other's enclosure (kind "bound vs exact"). Beyond, the long-delay path
+// alone against the 100-digit direct objective: the value at its maximiser inside [lo, hi], and
+// no point of an 8 nu + 4096 point double grid, refined by golden section in 100 digits around
+// its three best points, above hi (kind "bound vs reference").
+// sup K and the Schur test: device 1/(m s^2 + b s) (b = 0: exact data), an operator bh + kh/s in
+// a third of the cases, wall K + B(z-1)/(Tz), n in [0, 60]: the polynomial path and the long-delay
+// path give the same outcome and overlapping enclosures of sup K, and the same verdict at
+// K = sup/2 and 3 sup/2 (kind "stability").
+// Each kind has a minimum of compared cases (an eighth of the cases): fewer fail the run.
+struct DelayTally {
+  long bound_exact = 0, bound_reference = 0, stability = 0;
+} delay_tally;
+
+bool check_delay_bound(std::mt19937_64& g, std::ostream& why) {
+  passivity::BoundProblem p;
+  p.T = rational(1, 1000);
+  switch (uniform(g, 0, 4)) {
+    case 0: case 1: p.H = random_stable_H(g, static_cast<int>(uniform(g, 1, 4))); break;
+    case 2: {
+      const rational K(uniform(g, 0, 3000)), B(uniform(g, 0, 100), 10);
+      p.H = RF(P(K)) + RF(P({-B, B}), P({rational(0), p.T}));
+      break;
+    }
+    case 3: {  // Tustin: K + (2B/T)(z - 1)/(z + 1)
+      const rational K(uniform(g, 0, 3000)), B(uniform(g, 1, 100), 10);
+      p.H = RF(P(K)) + RF(P({-2 * B / p.T, 2 * B / p.T}), P({rational(1), rational(1)}));
+      break;
+    }
+    default: p.H = random_stable_H(g, static_cast<int>(uniform(g, 1, 2))); break;
+  }
+  p.delay = static_cast<int>(uniform(g, 0, 300));
+  if (chance(g, 0.1) && p.H.den()(rational(-1)) != 0) p.frac_delay = p.T * rational(uniform(g, 1, 2), 3);
+  if (chance(g, 0.2)) p.eta = rational(uniform(g, 0, 1000), 1000);
+  why << "delay bound: H = (" << to_string(p.H.num(), "z") << ")/(" << to_string(p.H.den(), "z") << "), n = " << p.delay
+      << (p.frac_delay ? ", td = " + p.frac_delay->str() : "") << ", eta = " << p.eta << "\n";
+  const passivity::BoundPlan plan = passivity::plan_bound(p);
+  const passivity::Bound l = passivity::bound_certified(p, 30, passivity::BoundPath::long_delay);
+  if (plan.exact_degree <= 124 && !p.frac_delay) {
+    const passivity::Bound e = passivity::bound_certified(p, 30, passivity::BoundPath::exact);
+    ++delay_tally.bound_exact;
+    if (e.infinite || l.infinite) {
+      if (e.infinite != l.infinite) why << "  infinite by one path only\n";
+      return e.infinite == l.infinite;
+    }
+    bool ok = l.enclosure->lo <= e.enclosure->hi && e.enclosure->lo <= l.enclosure->hi;
+    if (e.status == Status::exact) ok = ok && l.enclosure->contains(e.value);
+    if (l.status == Status::exact) ok = ok && e.enclosure->contains(l.value);
+    if (!ok) why << "  exact path " << e.decimal << " [" << to_string(e.status) << "], long-delay path " << l.decimal << " ["
+                 << to_string(l.status) << "]\n";
+    return ok;
+  }
+  ++delay_tally.bound_reference;
+  if (l.infinite) {
+    why << "  the long-delay path says infinite (no generated case diverges)\n";
+    return false;
+  }
+  Stopwatch reference_time;
+  const Ref lo = ref(l.enclosure->lo), hi = ref(l.enclosure->hi), eps = Ref("1e-27") * std::max(Ref(1), Ref(abs(hi)));
+  const Ref w_end = ref_pi() / ref(p.T), w0 = Ref("1e-30") / ref(p.T);
+  bool ok = true;
+  if (l.omega_enclosure) {
+    Ref w = (ref(l.omega_enclosure->lo) + ref(l.omega_enclosure->hi)) / 2;
+    if (w < w0) w = w0;
+    if (w > w_end * (1 - Ref("1e-30"))) w = w_end * (1 - Ref("1e-30"));  // a Tustin pole at z = -1: the limit
+    const Ref f = objective(p, w);
+    if (f < lo - eps || f > hi + eps) ok = false, why << "  at the maximiser w = " << w << " the objective is " << f << "\n";
+  }
+  const double nu = p.delay + (p.frac_delay ? to_real<double>(*p.frac_delay / p.T) : 0.0);
+  const int n = static_cast<int>(8 * nu) + 4096;
+  std::vector<std::pair<double, int>> best;
+  for (int i = 1; i < n; ++i) {
+    const double th = M_PI * i / n;
+    const std::complex<double> z = std::polar(1.0, th);
+    const std::complex<double> W = p.H.num()(z) / p.H.den()(z) * std::polar(1.0, -th * nu);
+    best.push_back({(to_real<double>(p.T) * W / (1.0 - z)).real(), i});
+  }
+  std::partial_sort(best.begin(), best.begin() + 3, best.end(), std::greater<>());
+  Ref top = objective(p, w0);
+  for (int k = 0; k < 3; ++k)
+    top = std::max(top, -golden_min([&](const Ref& w) { return -objective(p, w); }, w_end * (best[k].second - 1) / n,
+                                    w_end * (best[k].second + 1) / n));
+  if (top > hi + eps) ok = false, why << "  the objective reaches " << top << " > hi = " << hi << "\n";
+  return ok;
+}
+
+bool check_delay_stability(std::mt19937_64& g, std::ostream& why) {
+  ParseOptions ps, pz;
+  ps.variable = 's';
+  pz.variable = 'z';
+  ps.T = pz.T = rational(1, 1000);
+  const rational m(uniform(g, 1, 20), 10), b = chance(g, 0.25) ? rational(0) : rational(uniform(g, 1, 20), 10),
+      B(uniform(g, 0, 20), 10);
+  ps.parameters = pz.parameters = {{"m", m}, {"b", b}, {"B", B}, {"K", rational(0)},
+                                   {"bh", rational(uniform(g, 1, 30), 10)}, {"kh", rational(uniform(g, 0, 500))}};  // bh > 0: an undamped
+  // mass-spring device (b = bh = 0) has N_d(-1) = 0 exactly, which ball data cannot separate from 0 (both paths: undecided)
+  stability::Loop loop;
+  loop.T = rational(1, 1000);
+  loop.delay = static_cast<int>(uniform(g, 0, 60));
+  loop.plant = parse_tf(b == 0 ? "1/(m*s^2)" : "1/(m*s^2 + b*s)", ps);
+  const bool op = chance(g, 1.0 / 3);
+  if (op) loop.operator_impedance = parse_tf("bh + kh/s", ps);
+  loop.H = parse_tf("K + B*(z-1)/(T*z)", pz);
+  loop.H_gain = tf(P(rational(1)), P(rational(1)), loop.T);
+  why << "delay stability: m = " << m << ", b = " << b << ", B = " << B << ", n = " << loop.delay
+      << (op ? ", operator bh + kh/s" : "") << "\n";
+  stability::Loop lp = loop, ll = loop;
+  lp.path = stability::LoopPath::polynomial;
+  ll.path = stability::LoopPath::long_delay;
+  const stability::MaxGain gp = stability::max_gain(lp, 15), gl = stability::max_gain(ll, 15);
+  if (gp.outcome == Outcome::undecided || gl.outcome == Outcome::undecided)
+    throw NumericalError("sup K undecided: " + gp.note + " / " + gl.note);
+  ++delay_tally.stability;
+  bool ok = gp.outcome == gl.outcome && gp.infinite == gl.infinite;
+  if (!ok) why << "  outcome: polynomial " << gp.note << "; long-delay " << gl.note << "\n";
+  if (!ok || gp.outcome != Outcome::holds || gp.infinite) return ok;
+  if (!(gl.enclosure.lo <= gp.enclosure.hi && gp.enclosure.lo <= gl.enclosure.hi)) {
+    why << "  sup K: polynomial [" << to_decimal(gp.enclosure.lo, 20) << ", " << to_decimal(gp.enclosure.hi, 20)
+        << "], long-delay [" << to_decimal(gl.enclosure.lo, 20) << ", " << to_decimal(gl.enclosure.hi, 20) << "]\n";
+    return false;
+  }
+  for (const rational f : {rational(1, 2), rational(3, 2)}) {
+    pz.parameters["K"] = parse_rational(to_decimal(gp.enclosure.lo * f, 8));
+    stability::Loop a = lp, c = ll;
+    a.H_gain.reset(), c.H_gain.reset();
+    a.H = c.H = parse_tf("K + B*(z-1)/(T*z)", pz);
+    const auto va = stability::decide(a), vc = stability::decide(c);
+    if (!va.verdict.decided() || !vc.verdict.decided()) throw NumericalError("Schur test undecided");
+    if (va.verdict.holds() != vc.verdict.holds())
+      ok = false, why << "  at K = " << to_decimal(gp.enclosure.lo * f, 8) << ": " << va.verdict.evidence << " / "
+                      << vc.verdict.evidence << "\n";
+  }
+  return ok;
+}
+
+bool check_delay(std::mt19937_64& g, std::ostream& why) {
+  return chance(g, 0.6) ? check_delay_bound(g, why) : check_delay_stability(g, why);
+}
+
 int main(int argc, char** argv) {
   long cases = 1000, only = -1, first = 0;
   double max_undecided = 0.005;  // per criterion: more undecided cases than this fraction fail the run
@@ -1110,21 +1254,21 @@ int main(int argc, char** argv) {
       else if (a == "--inject-nothing-compared") inject_nothing = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain] [--case K] [--max-undecided F])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain,delay] [--case K] [--max-undecided F])\n";
       return 2;
     }
   }
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
       {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
       {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
-      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}};
+      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
     const std::string name = criterion.substr(a, b - a);
     const bool known = name == "all" || std::any_of(criteria.begin(), criteria.end(), [&](const auto& c) { return c.first == name; });
     if (!known) {
-      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise, max_gain or all (comma-separated), not '" << name << "'\n";
+      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise, max_gain, delay or all (comma-separated), not '" << name << "'\n";
       return 2;
     }
     chosen.insert(name);
@@ -1158,7 +1302,10 @@ int main(int argc, char** argv) {
       // seed 1: 48 exact, 49 certified, 1 bracketed of 100 (about 2 bracketed per 100 expected)
       {"max_gain", "exact K_max compared", 0.2, &max_gain_tally.exact},
       {"max_gain", "certified K_max compared", 0.2, &max_gain_tally.certified},
-      {"max_gain", "K_max bracketed by certified b* compared", 0.01, &max_gain_tally.bracketed}};
+      {"max_gain", "K_max bracketed by certified b* compared", 0.01, &max_gain_tally.bracketed},
+      {"delay", "b* of the long-delay path compared with the exact path", 0.125, &delay_tally.bound_exact},
+      {"delay", "b* of the long-delay path compared with the 100-digit reference", 0.125, &delay_tally.bound_reference},
+      {"delay", "the Schur test's long-delay path compared with the polynomial path", 0.125, &delay_tally.stability}};
   int failed = 0;
   std::printf("%-9s %8s %7s %8s %10s %10s %10s  %s\n", "criterion", "cases", "misses", "refused", "undecided", "seconds",
               "reference", "slowest case");
@@ -1224,6 +1371,9 @@ int main(int argc, char** argv) {
     if (name == "max_gain")
       std::printf("          (compared: exact %ld, certified %ld, bracketed by certified b* %ld, infinite %ld)\n",
                   max_gain_tally.exact, max_gain_tally.certified, max_gain_tally.bracketed, max_gain_tally.infinite);
+    if (name == "delay")
+      std::printf("          (bound vs exact path %ld, bound vs 100-digit reference %ld, stability polynomial vs long-delay %ld)\n",
+                  delay_tally.bound_exact, delay_tally.bound_reference, delay_tally.stability);
     if (name == "consistency")
       std::printf("          (contact %ld; multidof decided the loop as written in %ld (stable in %ld), stability in %ld,\n"
                   "           simulate claimed a verdict in %ld; two or more verdicts compared in %ld)\n",

@@ -5,7 +5,8 @@
 //                 [--explain] [--json] [--curve FILE] [--quantum DELTA [--coulomb FC]]
 //   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
 // JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
-// closed_form (name or null), plus method, where, closed_form_value; dirichlet_C/_D (certified
+// closed_form (name or null), plus method, path ("exact" or "long_delay") and plan (the planner's
+// reason), where, closed_form_value; dirichlet_C/_D (certified
 // enclosures) for (50); damping {b, passive, eq14_lhs, eq14_holds, eq15_rhs, eq15_holds} with --damping;
 // friction {quantum, fc_star, fc_star_exact, l1_norm, taps, tight, status, why, coulomb, holds} with
 // --quantum (passivity/friction.hpp: passive iff b > b* and f_c >= f_c* = Delta/2 sum |w_k|), and
@@ -214,6 +215,8 @@ nlohmann::json to_json(const Outcome& r, int digits) {
   if (b.status == Status::exact && !b.infinite) j["exact"] = b.value.str();  // "p/q": the value itself
   j["closed_form"] = r.cf ? nlohmann::json(r.cf->name) : nlohmann::json(nullptr);
   j["method"] = b.method;
+  j["path"] = b.kind == Method::grid ? "grid" : to_string(b.path);  // the path that ran, and why
+  j["plan"] = b.plan.empty() ? nlohmann::json(nullptr) : nlohmann::json(b.plan);
   j["where"] = b.where;
   if (r.cf) {
     if (r.cf->infinite) j["closed_form_value"] = "inf";
@@ -274,6 +277,7 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   }
   if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";
   std::cout << "  method: " << b.method << "\n";
+  if (!b.plan.empty() && b.path == BoundPath::long_delay) std::cout << "  path: " << b.plan << "\n";
   if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
   if (!b.infinite) {
     if (b.kind == Method::grid) std::cout << "  passive only if b > " << b.decimal << " (necessary; the grid may miss the peak)\n";

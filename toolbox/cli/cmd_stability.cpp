@@ -4,17 +4,20 @@
 //   hapstab stability --plant "1/(m*s^2 + b*s)" --H "K + B*(z-1)/(T*z)" --T 1/1000
 //                     --set m=1 --set b=1/10 --set K=1000 --set B=2 [--delay n]
 //                     [--operator "bh + kh/s"] [--max K] [--digits D] [--json]
+//   hapstab stability --scene FILE [--set NAME=VALUE] --max NAME      (a one-DOF scene, [delay] as z^-n)
 // The loop (stability/sampled_loop.hpp): device P(s) (force -> position) behind a zero-order
 // hold, position sampled every T, force = -z^-n H(z) x(kT); the operator impedance Z_op(s) acts
 // on the device as force -Z_op(s) * velocity, so the loop sees 1/(1/P + s Z_op).
-// JSON: stable, status, spectral_radius [lo, hi], degree, device; with --max NAME: max ("inf"
-// when stable for every NAME > 0), enclosure [lo, hi], status, crossing {at, theta, omega}.
+// JSON: stable, status, spectral_radius [lo, hi] (null on the long-delay path), degree, device,
+// path ("polynomial" or "long_delay") and plan (why); with --max NAME: max ("inf" when stable for
+// every NAME > 0), enclosure [lo, hi], status, crossing {at, theta, omega}, path, plan.
 //   hapstab stability --scene FILE [--set NAME=VALUE]... [--json]
 // The loop a scene writes, any number of DOF, each block's realisation as written
 // (stability/loop_as_written.hpp: hidden modes, the one-DOF exact test, the closed-loop matrix
 // with a certified Schur decision): the decider `multidof analyze` and `simulate` share.
 // JSON: stable (true|false|null), status, method, evidence, states, spectral_radius_numeric,
-// hidden_modes [{block, kind, where, stable}].
+// hidden_modes [{block, kind, where, stable}]. With --max NAME the scene must be one DOF
+// (stability/scene_loop.hpp) and NAME a gain of its [environment].
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -27,9 +30,11 @@
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
+#include "hapstab/stability/scene_loop.hpp"
 
 namespace {
 
@@ -42,7 +47,47 @@ struct StabilityOpts {
   bool json = false;
 };
 
+bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
+
+/// --scene: a one-DOF scene's loop (stability/scene_loop.hpp); with --max NAME, NAME is a scene
+/// parameter of [environment] only, split as --H is: H = H0 + NAME H1, checked affine at three
+/// more values.
+stability::Loop scene_loop_of(const StabilityOpts& o) {
+  if (!o.plant.empty() || !o.H.empty() || !o.op.empty() || !o.T.empty() || o.delay != 0)
+    throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
+  const std::map<std::string, rational> params = cli::parse_sets(o.sets);
+  auto at = [&](const std::optional<rational>& k) {
+    std::map<std::string, rational> p = params;
+    if (k) p[o.max_name] = *k;
+    try {
+      return stability::scene_loop(scene::load_scene(o.scene, p));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--scene: ") + e.what());
+    }
+  };
+  if (o.max_name.empty()) return at(std::nullopt);
+  stability::Loop loop = at(rational(0));
+  const stability::Loop one = at(rational(1));
+  const RationalFunction<rational> H1 = one.H.H - loop.H.H;
+  if (H1.is_zero()) throw InputError("--max " + o.max_name + ": the scene's [environment] does not depend on " + o.max_name);
+  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
+    const stability::Loop lk = at(k);
+    const bool device_same = same(lk.plant, loop.plant) && lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&
+                             (!lk.operator_impedance || same(*lk.operator_impedance, *loop.operator_impedance));
+    if (!device_same || lk.delay != loop.delay)
+      throw InputError("--max " + o.max_name + ": only a gain of [environment] can be maximised, but " + o.max_name +
+                       " changes the device, the operator or the delay");
+    const RationalFunction<rational> affine = loop.H.H + RationalFunction<rational>(k) * H1;
+    if (!same(lk.H, tf(affine.num(), affine.den(), loop.T)))
+      throw InputError("--max " + o.max_name + ": [environment] must be affine in " + o.max_name + " (H = H0 + " +
+                       o.max_name + " H1), e.g. a stiffness");
+  }
+  loop.H_gain = tf(H1.num(), H1.den(), loop.T);
+  return loop;
+}
+
 stability::Loop make_loop(const StabilityOpts& o) {
+  if (!o.scene.empty()) return scene_loop_of(o);
   if (o.T.empty()) throw InputError("--T is required (the sample period)");
   const rational T = cli::option_rational(o.T, "--T");
   if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
@@ -63,6 +108,8 @@ int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
   j["device"] = tf(stability::effective_device(loop).num(), stability::effective_device(loop).den()).to_string();
   j["evidence"] = r.verdict.evidence;
   j["precision_bits"] = r.precision_bits;
+  j["path"] = r.path;
+  j["plan"] = r.plan;
   if (o.json) cli::print_json(j);
   else {
     std::cout << (undecided ? "undecided" : r.verdict.holds() ? "stable" : "NOT stable") << "   ["
@@ -70,6 +117,7 @@ int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
     if (r.spectral_radius)
       std::cout << "  spectral radius in [" << j["spectral_radius"][0].get<std::string>() << ", "
                 << j["spectral_radius"][1].get<std::string>() << "]\n";
+    if (r.path == "long_delay") std::cout << "  path: " << r.plan << "\n";
   }
   if (undecided) return cli::exit_numerical;
   return r.verdict.holds() ? cli::exit_ok : cli::exit_property_fails;
@@ -105,6 +153,8 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
   j["note"] = m.note;
   j["precision_bits"] = m.precision_bits;
   j["digits"] = o.digits;
+  j["path"] = m.path;
+  j["plan"] = m.plan;
   return j;
 }
 
@@ -127,6 +177,7 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
                                                     : std::string())
                 << "\n";
     std::cout << "  " << m.note << "\n";
+    if (m.path == "long_delay") std::cout << "  path: " << m.plan << "\n";
   }
   if (m.outcome == Outcome::undecided) return cli::exit_numerical;
   return m.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_ok;
@@ -134,10 +185,8 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
 
 // --scene: the loop as written (stability/loop_as_written.hpp).
 int run_scene(const StabilityOpts& o) {
-  for (const auto& [given, name] : {std::pair{!o.plant.empty(), "--plant"}, {!o.H.empty(), "--H"}, {!o.T.empty(), "--T"},
-                                    {!o.op.empty(), "--operator"}, {!o.max_name.empty(), "--max"}, {o.delay != 0, "--delay"}})
-    if (given)
-      throw InputError(std::string(name) + " cannot be combined with --scene (the scene gives the loop; --set changes its parameters)");
+  if (!o.plant.empty() || !o.H.empty() || !o.op.empty() || !o.T.empty() || o.delay != 0)
+    throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
   const auto sc = scene::load_scene(o.scene, cli::parse_sets(o.sets));
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
   const stability::LoopVerdict v = stability::decide_loop(sc.loop);
@@ -166,18 +215,27 @@ const cli::Register reg(
      "Schur stability of the sampled haptic loop (device P(s), ZOH, wall H(z), delay); --max NAME: the largest stable gain",
      [](CLI::App& app) {
        auto o = std::make_shared<StabilityOpts>();
-       app.add_option("--scene", o->scene, "a scene file (TOML): its loop as written, any number of DOF (instead of --plant/--H/--T)");
        app.add_option("--plant", o->plant, "device P(s), force -> position, e.g. \"1/(m*s^2 + b*s)\"");
        app.add_option("--H", o->H, "virtual environment H(z), e.g. \"K + B*(z-1)/(T*z)\" (force = -z^-n H x)");
        app.add_option("--T", o->T, "sample period T > 0 (exact: 0.001 or 1/1000)");
-       app.add_option("--delay", o->delay, "integer delay n >= 0: z^-n")->capture_default_str();
+       app.add_option("--delay", o->delay, "integer delay n >= 0: z^-n (any n up to 10^6: beyond a few hundred samples the long-delay path)")->capture_default_str();
+       app.add_option("--scene", o->scene, "a scene (TOML) instead of --plant/--H/--operator/--T/--delay: its loop as written, any number of DOF (with --max: one DOF)");
        app.add_option("--operator", o->op, "operator impedance Z_op(s) on the device (force per velocity), e.g. \"bh + kh/s\"");
        app.add_option("--set", o->sets, "parameter NAME=VALUE (repeatable)");
        app.add_option("--max", o->max_name, "gain NAME of --H (affine in it) to maximise: sup{NAME : stable on (0, sup)}");
        app.add_option("--digits", o->digits, "significant digits of --max (1..1000)")->capture_default_str();
        app.add_flag("--json", o->json, "JSON output");
        return [o]() -> int {
-         if (!o->scene.empty()) return run_scene(*o);
+         if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
+         if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
+           const auto hidden = sim::hidden_modes(scene::load_scene(o->scene, cli::parse_sets(o->sets)).loop);
+           if (!hidden.stable()) {
+             const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
+             if (o->json) cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}});
+             else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
+             return cli::exit_property_fails;
+           }
+         }
          const stability::Loop loop = make_loop(*o);
          return o->max_name.empty() ? run_decide(*o, loop) : run_max(*o, loop);
        };

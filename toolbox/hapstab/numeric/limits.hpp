@@ -18,12 +18,20 @@ inline constexpr int nesting_depth = 200;
 inline constexpr int intermediate_degree = 10000;
 /// Degree of a model, one limit for every command: the numerator and denominator of a parsed
 /// expression (--H, a scene's tf; checked by the parser), of --num/--den and of a .mat model,
-/// and the polynomials the analyses build from them -- the passivity bound's objective
-/// max(deg N, deg D + n) (passivity/bound.hpp; its exact path costs about degree^4: 0.8 s at
-/// 100, 4 s at 160, 18 s at 200 on one core) and the stability test's characteristic polynomial
-/// (delay + wall + device). `wedge --H "1/(2*z^9999 + 1)"` reached 5.7 GB before this applied
-/// to every command.
+/// and the polynomials the exact paths expand from them -- the passivity bound's exact objective
+/// max(deg N, deg D + n) (passivity/bound.hpp; it costs about degree^4: 0.8 s at 100, 4 s at 160,
+/// 18 s at 200 on one core) and the stability test's exact characteristic polynomial (delay +
+/// wall + device). Beyond it the 1-DOF criteria take their long-delay paths, which never expand
+/// z^-n (criterion_delay). `wedge --H "1/(2*z^9999 + 1)"` reached 5.7 GB before this applied to
+/// every command.
 inline constexpr int model_degree = 200;
+/// Delay n (+ t_d/T) in samples that the 1-DOF criteria take (`bound`, `stability`, a scene's
+/// [delay] there): their long-delay paths never expand z^-n and their work grows like n --
+/// about 4n + 64 evaluations of a low-order formula in ball arithmetic (passivity/bound.hpp,
+/// stability/sampled_loop.hpp): measured at 10^5 samples 3 s and 22 MB for `bound`, 10 s and
+/// 26 MB for `stability --max` (its queue of arcs grows like n), so 10^6 is about half a minute
+/// and under two minutes, a few hundred MB at most.
+inline constexpr long criterion_delay = 1000000;
 /// Size of one exact intermediate result of an expression: the bits of all its coefficients,
 /// numerator and denominator polynomials together (2^20 bits = 128 KB; a dense degree-100
 /// model with 1000-bit coefficients is a tenth of it). The cost of one operation (a FLINT
@@ -58,6 +66,11 @@ inline constexpr int coupling_states = 256;
 /// of a [delay] of n samples folded into it (z^-n E). The exact re-check of (16) is on matrices
 /// of twice this order.
 inline constexpr int multidof_states = 1000;
+/// Order of the closed-loop matrix of a loop as written (sim/closed_loop.hpp: plant + controller +
+/// N (n + 1) delay states): its certified Schur decision costs O(order^3) in double and in Arb balls
+/// (1.5 s at 500 states). A one-DOF loop with a long delay does not need it (the one-DOF test's
+/// long-delay path takes any n up to criterion_delay).
+inline constexpr long closed_loop_states = 1500;
 /// Memory of the generic SDP's Schur complement (8 v^2 bytes for v scalar unknowns), checked
 /// before the program is posed: a scene whose structure needs the generic path beyond it is
 /// refused, naming the order that makes it so.

@@ -3,9 +3,11 @@
 // live beside it (bound_detail.hpp lists them): objective.cpp, certified.cpp,
 // fractional_delay.cpp, fast.cpp, grid.cpp.
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/bound_detail.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -38,11 +40,69 @@ BoundProblem with_integer_delay(BoundProblem p) {
 }
 
 void check_problem_size(const BoundProblem& p) {
-  const long degree = std::max<long>(p.H.num().degree(), long(p.H.den().degree()) + p.delay);
+  const long degree = std::max<long>(p.H.num().degree(), p.H.den().degree());
   if (degree > limits::model_degree)
-    throw InputError("the objective of (45) has degree " + std::to_string(degree) +
-                     " (max(deg N, deg D + n)), more than the limit of " + std::to_string(limits::model_degree) +
-                     " (the exact path costs about degree^4: 4 s at 160, 18 s at 200)");
+    throw InputError("H has degree " + std::to_string(degree) + ", more than the limit of " +
+                     std::to_string(limits::model_degree) + " for a model");
+  // the delay in samples, n + t_d/T, compared before any use (t_d/T may be a huge rational)
+  rational samples(p.delay);
+  if (p.frac_delay && p.T > 0) samples += *p.frac_delay / p.T;
+  if (samples > limits::criterion_delay)
+    throw InputError("the delay n + t_d/T = " + to_decimal(samples, 12) + " samples is more than the limit of " +
+                     std::to_string(limits::criterion_delay) +
+                     " (numeric/limits.hpp: the long-delay path's work grows like the delay)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// the planner: exact path (degree^4) or long-delay path (~ nu), by estimated cost
+namespace {
+// Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_bound, the wall
+// 10 + 5 (z - 1)/(T z)): the exact path 0.8 ms at degree 11, 4.3 ms at 31, 47 ms at 61, 0.29 s at
+// 101 (~ degree^4); the long-delay path 1.5 ms at n = 10, 32 ms at 10^3, 0.29 s at 10^4 (~ its
+// 4 nu + 64 boxes). The exact path runs while it costs at most twice the long-delay path or 20 ms:
+// up to n ~ 45 for a low-order wall (it can prove an interior maximum exact).
+double exact_cost(long degree) {
+  const double d = static_cast<double>(degree) / 100;
+  return 5e-4 + 0.3 * d * d * d * d;
+}
+double long_cost(const rational& nu, long order) {
+  const double boxes = 4 * to_real<double>(nu) + 64;
+  return 1e-3 + boxes * 8e-6 * (1 + 0.1 * static_cast<double>(order));
+}
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, s < 0.01 ? "%.1g s" : "%.2g s", s);
+  return buf;
+}
+}  // namespace
+
+BoundPlan plan_bound(const BoundProblem& raw) {
+  const BoundProblem p = with_integer_delay(raw);
+  BoundPlan plan;
+  const long order = std::max<long>(p.H.num().degree(), p.H.den().degree());
+  plan.exact_degree = p.frac_delay ? detail::fractional_exact_degree(p)
+                                   : std::max<long>(p.H.num().degree(), long(p.H.den().degree()) + p.delay);
+  const long exact_limit = p.frac_delay ? 96 : limits::model_degree;
+  const bool exact_ok = plan.exact_degree <= exact_limit;
+  plan.exact_seconds = exact_ok ? exact_cost(plan.exact_degree) : std::numeric_limits<double>::infinity();
+  std::string why_not;
+  const bool long_ok = detail::delay_form(p, &why_not).has_value();
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  plan.long_seconds = long_ok ? long_cost(nu, order) : std::numeric_limits<double>::infinity();
+  const std::string costs = (exact_ok ? "exact path ~" + seconds(plan.exact_seconds) : std::string("exact path beyond its limit")) +
+                            (long_ok ? ", long-delay path ~" + seconds(plan.long_seconds) : std::string(", no long-delay path"));
+  if (exact_ok && (!long_ok || plan.exact_seconds <= std::max(2 * plan.long_seconds, 0.02))) {
+    plan.path = BoundPath::exact;
+    plan.why = "exact path: its objective has degree " + std::to_string(plan.exact_degree) + " (" + costs + ")";
+  } else if (long_ok) {
+    plan.path = BoundPath::long_delay;
+    plan.why = "long-delay path: the exact objective would have degree " + std::to_string(plan.exact_degree) + " (" +
+               costs + ")";
+  } else {
+    plan.path = BoundPath::exact;  // neither: the exact path refuses by its limit (bound_certified)
+    plan.why = "exact path only: the long-delay path does not apply (" + why_not + ")";
+  }
+  return plan;
 }
 
 void check_assumptions(const BoundProblem& p) {
@@ -62,23 +122,86 @@ void check_assumptions(const BoundProblem& p) {
     throw InputError("H is unstable (assumption of (45): H stable): " + why);
 }
 
+Bound bound_certified(const BoundProblem& p, int digits) {
+  check_assumptions(p);
+  if (auto inf = detail::integrator_pole(p)) return *inf;
+  if (auto inf = detail::fractional_divergence(with_integer_delay(p))) return *inf;  // before any path: cheap, exact
+  const BoundPlan plan = plan_bound(p);
+  if (!std::isfinite(plan.exact_seconds) && !std::isfinite(plan.long_seconds)) {
+    std::string why;
+    detail::delay_form(with_integer_delay(p), &why);
+    throw InputError("no path takes this case: the exact objective would have degree " +
+                     std::to_string(plan.exact_degree) + ", more than the exact path's limit of " +
+                     std::to_string(p.frac_delay ? 96 : limits::model_degree) +
+                     ", and the long-delay path does not apply: " + why);
+  }
+  Bound b;
+  try {
+    b = bound_certified(p, digits, plan.path);
+  } catch (const NumericalError&) {  // the exact path could not decide its digits: the long-delay path may
+    if (plan.path != BoundPath::exact || !std::isfinite(plan.long_seconds)) throw;
+    b = bound_certified(p, digits, BoundPath::long_delay);
+  }
+  b.plan = plan.why;
+  return b;
+}
+
+Bound bound_certified(const BoundProblem& p, int digits, BoundPath path) {
+  check_assumptions(p);
+  if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
+  if (auto inf = detail::integrator_pole(p)) return *inf;
+  const BoundProblem q = with_integer_delay(p);
+  if (path == BoundPath::long_delay) return detail::certified_long_delay(q, digits);
+  const BoundPlan plan = plan_bound(q);
+  if (plan.exact_degree > (q.frac_delay ? 96 : limits::model_degree))
+    throw InputError("the exact objective of (45) would have degree " + std::to_string(plan.exact_degree) +
+                     ", more than the limit of " + std::to_string(q.frac_delay ? 96 : limits::model_degree) +
+                     " for the exact path (the long-delay path takes any delay)");
+  Bound b = detail::certified_exact(q, digits);
+  b.path = BoundPath::exact;
+  return b;
+}
+
+namespace {
+// the stated error of the fast paths (not a proof): relative 10^-fast_error_digits for f(c) in
+// double-double; the long-delay double path states its own (fast_long_delay)
+Bound fast_result(double value, double omega, double relative_error, const std::string& how, BoundPath path) {
+  Bound out;
+  out.status = Status::numeric;
+  out.kind = Method::fast;
+  out.path = path;
+  out.method = how;
+  const rational v = exact_rational(value), e = abs(v) * exact_rational(relative_error);
+  out.enclose(v - e, v + e);
+  out.decimal = to_decimal(v, 16);
+  const rational w = exact_rational(omega);
+  out.omega = to_decimal(w, 16);
+  out.omega_enclosure = Enclosure<rational>{w, w};
+  out.where = "numeric maximiser";
+  return out;
+}
+}  // namespace
+
 Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
   if (m == Method::grid) return bound_grid(p, grid_points);
   if (m == Method::fast) {
     check_assumptions(p);
-    if (auto r = FastBound::run(p)) {
-      Bound out;
-      out.status = Status::numeric;
-      out.kind = Method::fast;
-      out.method = "fast: double-double coefficients, root finding in double, Newton polish";
-      const rational v = exact_rational(r->first), e = abs(v) * pow10(-fast_error_digits);
-      out.enclose(v - e, v + e);
-      out.decimal = to_decimal(v, 16);
-      const rational w = exact_rational(r->second);
-      out.omega = to_decimal(w, 16);
-      out.omega_enclosure = Enclosure<rational>{w, w};
-      out.where = "numeric maximiser";
-      return out;
+    if (auto inf = detail::integrator_pole(p)) return *inf;
+    const BoundPlan plan = plan_bound(p);
+    if (plan.path == BoundPath::exact) {
+      if (auto r = FastBound::run(p)) {
+        Bound b = fast_result(r->first, r->second, std::pow(10.0, -fast_error_digits),
+                              "fast: double-double coefficients, root finding in double, Newton polish", BoundPath::exact);
+        b.plan = plan.why;
+        return b;
+      }
+    } else if (auto r = fast_long_delay(with_integer_delay(p))) {
+      Bound b = fast_result(r->value, r->omega, r->relative_error,
+                            "fast: the long-delay objective in double, sampled every pi/(4 nu + 64), its best local "
+                            "maxima polished by Newton",
+                            BoundPath::long_delay);
+      b.plan = plan.why;
+      return b;
     }
   }
   return bound_certified(p, digits);

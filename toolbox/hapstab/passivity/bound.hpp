@@ -11,12 +11,19 @@
 // on c in [-1, 1] (c = 1 <-> w = 0, c = -1 <-> w = pi/T). No 1/t is ever formed, so w -> 0 does not
 // cancel (Re{T/(1-z)} = T/2 exactly), and a pole of H at z = +-1 cancels or not exactly (gcd).
 //
-// Methods: certified (default; exact isolation of the critical points of f by Descartes' rule of
-// signs, Newton polish started in double and finished in MPFR, MPFI mean-value enclosure;
-// exact where the maximiser is rational), fast (double-double coefficients,
-// derivative-recursion root finding, Newton polish; status numeric), grid (N samples, comparison
-// only). A fractional delay t_d (not rational in c) is handled by an exact divergence test at
-// wT = pi (Tustin-like poles at z = -1) and by interval branch-and-bound over w (MPFI).
+// Methods: certified (default), fast (status numeric), grid (N samples, comparison only). The
+// certified method has two paths, chosen by cost (plan_bound):
+//   exact       the rational f(c) above, exact isolation of its critical points by Descartes' rule
+//               of signs, Newton polish in MPFR, MPFI mean-value enclosure; exact where the maximiser
+//               is rational. Its polynomials have degree max(deg N, deg D + n): cost ~ degree^4.
+//   long_delay  never expands z^-n: f(theta) = (T/2)[(A/B + rho) cos(nu theta) + (E/B + rho/2)
+//               S_nu(theta) + ...] (bound_detail.hpp) with low-order A, B, E, evaluated with its
+//               derivatives in Arb balls; interval branch-and-bound over w with Newton on f'.
+//               Cost ~ nu (the delay in samples), any integer or fractional delay.
+// fast: double-double coefficients, derivative-recursion root finding and Newton polish on f(c)
+// where the exact path would run; the long-delay f in double, sampled and polished, where it is
+// long. A fractional delay t_d = (p/q) T with a small q is exact in cos(wT/q); a Tustin-like pole
+// at z = -1 meeting a fractional delay is decided by an exact divergence test at wT = pi.
 //
 // Implements: paper 001 (45), (54).
 #pragma once
@@ -47,8 +54,10 @@ struct BoundProblem {
 /// the rest). A simple pole ON the unit circle is allowed (a repeated one is unstable); an uncancelled
 /// pole at z = 1 makes b* = +inf (see bound_certified). Throws InputError naming the failed assumption.
 void check_assumptions(const BoundProblem& p);
-/// Throws InputError when the objective's degree max(deg N, deg D + n) exceeds
-/// limits::model_degree (numeric/limits.hpp); check_assumptions and catalogue::match call it first.
+/// Throws InputError when the work of every path is beyond its limit (numeric/limits.hpp): H's
+/// degree above limits::model_degree, or the delay n + t_d/T above limits::criterion_delay samples
+/// (the long-delay path's work grows like the delay). check_assumptions and catalogue::match call
+/// it first, before anything is allocated.
 void check_problem_size(const BoundProblem& p);
 
 /// p with a fractional delay that is a whole multiple kT moved into the integer delay (n + k): the
@@ -63,6 +72,24 @@ struct Objective {
 Objective objective(const RationalFunction<rational>& H, const rational& T, int delay);
 
 enum class Method { certified, fast, grid };
+
+/// The two algorithms of the certified method (see the header comment).
+enum class BoundPath { exact, long_delay };
+inline const char* to_string(BoundPath p) { return p == BoundPath::exact ? "exact" : "long_delay"; }
+
+/// Which path computes b* and why: the exact path where its polynomial (degree max(deg N,
+/// deg D + n), or q (order + n) + p + q for t_d = (p/q) T) is small enough that it is no slower
+/// than about the long-delay path (or below 20 ms), the long-delay path otherwise and wherever the
+/// exact polynomial would exceed limits::model_degree. Both costs are estimates in seconds on one
+/// core of the reference machine (bench/delay.cpp measures them: BM_bound).
+struct BoundPlan {
+  BoundPath path = BoundPath::exact;
+  long exact_degree = 0;       ///< the degree the exact path would expand to
+  double exact_seconds = 0;    ///< estimated cost of the exact path (inf beyond its limit)
+  double long_seconds = 0;     ///< estimated cost of the long-delay path (inf when it does not apply)
+  std::string why;             ///< the choice in words
+};
+BoundPlan plan_bound(const BoundProblem& p);
 inline const char* to_string(Method m) {
   return m == Method::certified ? "certified" : m == Method::fast ? "fast" : "grid";
 }
@@ -80,6 +107,8 @@ struct Bound : Certified<rational> {
   std::optional<std::string> omega;                ///< maximiser in rad/s (decimal), nullopt when none
   std::optional<Enclosure<rational>> omega_enclosure;  ///< enclosure of the maximiser (rad/s), when known
   std::string where;                               ///< "w = 0", "w = pi/T", "interior", "constant", "pole ..."
+  BoundPath path = BoundPath::exact;               ///< the certified path that ran (or that fast/grid stand in for)
+  std::string plan;                                ///< the planner's reason, when it chose
   double value_double() const;                     ///< nearest double of `value` (+inf when infinite)
   void enclose(rational lo, rational hi);          ///< enclosure = [lo, hi], value = its midpoint
 };
@@ -96,8 +125,12 @@ Enclosure<std::string> reported_enclosure(const Bound& b, int digits);
 /// True when reported_enclosure is proven to contain b* (exact, certified or infinite).
 bool enclosure_rigorous(const Bound& b);
 
-/// Certified bound to `digits` significant digits (10 <= digits <= 280; default 30).
+/// Certified bound to `digits` significant digits (10 <= digits <= 280; default 30), by the path
+/// plan_bound chooses.
 Bound bound_certified(const BoundProblem& p, int digits = 30);
+/// The same by a given path (comparisons, benchmarks): InputError when the exact path's degree
+/// exceeds limits::model_degree, NumericalError when the long-delay path does not apply.
+Bound bound_certified(const BoundProblem& p, int digits, BoundPath path);
 
 /// Grid method with N equally spaced w in [0, pi/T] (comparison only; status numeric).
 Bound bound_grid(const BoundProblem& p, long N);
@@ -118,6 +151,17 @@ class FastBound {
   double T_ = 0, eta_ = 0;
   bool ok_ = true;
 };
+
+/// The fast path for a long delay (the long-delay objective in double, sampled on 4 nu + 64
+/// points, its best local maxima polished by Newton): b* (with eta), its maximiser w and the
+/// relative error it states -- a first-order rounding estimate at the maximiser (the condition of
+/// the Horner sums A, E, B in cos(wT), and the argument nu wT), times 16; not a proof, checked
+/// against the certified path (tests/passivity, LongDelay.FastAgreesWithCertified). nullopt when
+/// the long-delay path does not apply.
+struct FastLongDelay {
+  double value = 0, omega = 0, relative_error = 0;
+};
+std::optional<FastLongDelay> fast_long_delay(const BoundProblem& p);
 
 /// Dispatcher: certified / fast (falls back to certified when out of scope) / grid.
 Bound bound(const BoundProblem& p, Method m = Method::certified, int digits = 30, long grid_points = 100000);

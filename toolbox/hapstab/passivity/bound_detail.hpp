@@ -5,12 +5,14 @@
 //                         double-double (FastBound) from ONE template, c_form<C> below; the
 //                         objective evaluated on the unit circle (grid, objective_at)
 //   certified.cpp         certified maximisation of the rational objective f(c) (bound_certified)
-//   fractional_delay.cpp  t_d not a multiple of T (54): exact when t_d/T = p/q with small q,
-//                         else interval branch-and-bound over w
+//   fractional_delay.cpp  t_d not a multiple of T (54): exact when t_d/T = p/q with small q
 //   max_gain.cpp          the largest K with b*(H0 + K H1) < b (max_gain.hpp), on the same maximiser
+//   long_delay.cpp        any delay nu = n + t_d/T without expanding z^-n: ball branch-and-bound
+//                         over w (certified) and its double-precision twin (fast)
 //   fast.cpp              the double-double fast path (FastBound)
 //   grid.cpp              the comparison grid (bound_grid)
-//   bound.cpp             assumptions, the dispatcher bound(), the necessary condition (14), (15)
+//   bound.cpp             assumptions, the planner (exact or long-delay path), the dispatcher
+//                         bound(), the necessary condition (14), (15)
 #pragma once
 
 #include <algorithm>
@@ -118,9 +120,20 @@ std::optional<Bound> integrator_pole(const BoundProblem& p);
 /// Best decimal for an enclosure: the common rounding at `digits` digits, else fewer digits.
 std::string enclosure_decimal(const rational& lo, const rational& hi, int digits);
 
-/// The objective at theta = wT > 0 evaluated on the unit circle in the scalar R (double, mp50).
+/// The objective at theta = wT > 0 evaluated on the unit circle in the scalar R (double, mp50),
+/// with the problem's numbers converted to R once (a grid evaluates it many times).
 template <class R>
-R objective_on_circle(const BoundProblem& p, const R& th);
+struct CircleObjective {
+  std::vector<R> num, den;  ///< H's coefficients, ascending
+  R T, eta, lag, frac;      ///< lag = n, frac = t_d/T (samples)
+  bool has_frac = false;
+  explicit CircleObjective(const BoundProblem& p);
+  R operator()(const R& th) const;
+};
+template <class R>
+R objective_on_circle(const BoundProblem& p, const R& th) {
+  return CircleObjective<R>(p)(th);
+}
 /// The limit of the objective at theta = 0 (exact c-form value at c = 1, with t_d's term).
 double objective_at_zero(const BoundProblem& p);
 
@@ -140,10 +153,13 @@ template <unsigned D>
 bool certified_rational(const RationalFunction<rational>& f, const BoundProblem& pb, int digits, Bound& out,
                         const Domain& dom = {});
 
+/// The exact path of bound_certified for q = with_integer_delay(p) (certified.cpp).
+Bound certified_exact(const BoundProblem& q, int digits);
+
 /// t_d = (p/q) T (q >= 2) as an integer-delay problem in w = e^{j wT/q}: `problem` (H(w^q)/(1 + w + ...
 /// + w^{q-1}), delay nq + p, no t_d) maximised over `domain` gives b* exactly as t_d does
-/// (fractional_delay.cpp). nullopt without t_d, for q = 1, or when the degree q (order + n) + p + q
-/// exceeds max_degree. The end cos(pi/q) is enclosed at working precision D.
+/// (fractional_delay.cpp; max_gain.cpp uses it too). nullopt without t_d, for q = 1, or when the
+/// degree q (order + n) + p + q exceeds max_degree. The end cos(pi/q) is enclosed at working precision D.
 struct FracExact {
   BoundProblem problem;
   Domain domain;
@@ -151,8 +167,39 @@ struct FracExact {
 template <unsigned D>
 std::optional<FracExact> frac_exact_problem(const BoundProblem& pb, int max_degree);
 
-/// bound_certified for a fractional delay t_d (fractional_delay.cpp); o is the objective of pb
-/// without t_d.
-Bound certified_fractional_delay(const Objective& o, const BoundProblem& pb, int digits);
+/// bound_certified for a fractional delay t_d by the exact path (fractional_delay.cpp): t_d/T = p/q
+/// made exact in cos(wT/q); false when that objective's degree exceeds `max_degree`.
+bool certified_fractional_exact(const BoundProblem& pb, int digits, int max_degree, Bound& out);
+/// b* = +inf when a pole of H at z = -1 meets a fractional delay (exact divergence test at wT = pi);
+/// nullopt otherwise (the objective is then finite there, or its behaviour undecided by the test).
+std::optional<Bound> fractional_divergence(const BoundProblem& pb);
+/// The degree of that objective, q (max(deg N, deg D) + n) + p + q (0 without a fractional delay).
+long fractional_exact_degree(const BoundProblem& pb);
+
+/// Exact divergence test at wT = pi for a pole of W at z = -1 with e^{-j tau wT} (o: the
+/// objective of H z^-n without tau). +1: f -> +inf, -1: -> -inf, 0: finite or undecided
+/// (`decided` says which).
+int divergence_at_pi(const Objective& o, const rational& T, const rational& tau, bool& decided);
+
+// ---- the long-delay path (long_delay.cpp) ----------------------------------------------------
+/// The objective of (45)/(54) for the delay nu = n + t_d/T (samples) as low-order exact pieces:
+///   f(theta) = (T/2)[(A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta) + rho (-1)^n S_n(pi - theta)/2] + eta,
+/// S_nu(theta) = sin(nu theta) cot(theta/2) (numeric/jet.hpp), A = R - (1+c)Q, E = R + (1-c)Q, B
+/// the c-form of H~ = H - rho/(z + 1) without delay, rho = the residue of H at a simple pole z = -1.
+struct DelayForm {
+  QPoly A, E, B;
+  rational rho = 0, nu = 0, T = 0, eta = 0;
+  long n = 0;                     ///< nu when it is a whole number
+  bool integer_nu = true;
+  rational at_zero;               ///< f(0), exact
+  std::optional<rational> at_pi;  ///< f(pi), exact for an integer delay
+  bool constant = false;          ///< f = eta everywhere (H = 0)
+};
+/// nullopt (and why) when the long-delay path does not apply: a pole of H on the unit circle other
+/// than a simple one at z = -1, or that pole with a fractional delay.
+std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why);
+/// The certified long-delay path (the problem's assumptions already checked); its double twin is
+/// fast_long_delay (bound.hpp).
+Bound certified_long_delay(const BoundProblem& p, int digits);
 
 }  // namespace hapstab::passivity::detail

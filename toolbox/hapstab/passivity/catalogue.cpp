@@ -168,8 +168,13 @@ std::optional<std::vector<rational>> backward_difference_coefficients(const QRat
 
 namespace {
 
-/// W = H z^-n = (1 - z) sum beta_j z^-j ? Returns beta or nullopt.
-std::optional<std::vector<rational>> fir_coefficients(const QRatFun& H, int n) {
+/// W = H z^-n = (1 - z) sum beta_j z^-j ? Returns beta or nullopt; the first `offset` coefficients
+/// are zero and left out (beta[i] is beta_{offset + i}), so a delay of n samples costs nothing.
+struct Fir {
+  std::vector<rational> beta;
+  int offset = 0;
+};
+std::optional<Fir> fir_coefficients(const QRatFun& H, int n) {
   const QPoly& d = H.den();
   for (int i = 0; i < d.degree(); ++i)
     if (d.coeff(i) != 0) return std::nullopt;
@@ -177,12 +182,13 @@ std::optional<std::vector<rational>> fir_coefficients(const QRatFun& H, int n) {
   QPoly one_minus_z(std::vector<rational>{rational(1), rational(-1)});
   auto [q, r] = divmod(H.num(), one_minus_z);
   if (!r.is_zero() || H.num().is_zero()) return std::nullopt;
-  // W = (1 - z) q(z) / z^k, q of degree <= k: beta_j = coefficient of z^{k-j}
+  // W = (1 - z) q(z) / z^k, q of degree <= k: beta_j = coefficient of z^{k-j}, zero for j < k - deg q
   if (q.degree() > k) return std::nullopt;
-  std::vector<rational> beta(static_cast<size_t>(k) + 1, rational(0));
-  for (int j = 0; j <= k; ++j) beta[j] = q.coeff(k - j);
-  while (beta.size() > 1 && beta.back() == 0) beta.pop_back();
-  return beta;
+  Fir f;
+  f.offset = k - q.degree();
+  for (int j = f.offset; j <= k; ++j) f.beta.push_back(q.coeff(k - j));
+  while (f.beta.size() > 1 && f.beta.back() == 0) f.beta.pop_back();
+  return f;
 }
 
 }  // namespace
@@ -274,12 +280,15 @@ std::optional<Match> match(const BoundProblem& raw) {
     }
   }
   // FIR (47), with delay folded in
-  if (auto beta = fir_coefficients(p.H, n)) {
-    const auto& b = *beta;
+  if (auto fir = fir_coefficients(p.H, n)) {
+    // the leading zeros shift the sign pattern's parity: one zero in front of the nonzero taps when
+    // the offset is odd (fir_bound reads the alternating structure from the index)
+    std::vector<rational> b(static_cast<size_t>(fir->offset % 2), rational(0));
+    b.insert(b.end(), fir->beta.begin(), fir->beta.end());
     bool tight = false;
     rational v = fir_bound(b, T, &tight);
-    // Dirichlet: (z - 1) sum_{k=0}^N z^-k, i.e. beta_k = -g for all k
-    bool allneg_equal = b.size() >= 2 && b[0] < 0;
+    // Dirichlet: (z - 1) sum_{k=0}^N z^-k, i.e. beta_k = -g for all k (no leading zeros)
+    bool allneg_equal = fir->offset == 0 && b.size() >= 2 && b[0] < 0;
     for (auto& x : b) allneg_equal = allneg_equal && x == b[0];
     if (allneg_equal) {
       int N = static_cast<int>(b.size()) - 1;

@@ -420,20 +420,21 @@ std::optional<Bound> integrator_pole(const BoundProblem& p) {
   return out;
 }
 
-}  // namespace detail
-
-Bound bound_certified(const BoundProblem& p, int digits) {
-  check_assumptions(p);
-  if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
-  if (auto inf = detail::integrator_pole(p)) return *inf;
-  const BoundProblem q = with_integer_delay(p);
-  Objective o = objective(q.H, q.T, q.delay);
-  if (q.frac_delay) return detail::certified_fractional_delay(o, q, digits);
+Bound certified_exact(const BoundProblem& q, int digits) {
+  if (q.frac_delay) {
+    Bound b;
+    if (!certified_fractional_exact(q, digits, 96, b))
+      throw NumericalError("could not decide " + std::to_string(digits) + " digits of the bound by the exact path");
+    return b;
+  }
+  const Objective o = objective(q.H, q.T, q.delay);
   Bound b;
-  if (digits <= 30 && detail::certified_rational<50>(o.f, q, digits, b)) return b;
-  if (digits <= 80 && detail::certified_rational<100>(o.f, q, digits, b)) return b;
-  if (detail::certified_rational<300>(o.f, q, digits, b)) return b;
+  if (digits <= 30 && certified_rational<50>(o.f, q, digits, b)) return b;
+  if (digits <= 80 && certified_rational<100>(o.f, q, digits, b)) return b;
+  if (certified_rational<300>(o.f, q, digits, b)) return b;
   throw NumericalError("could not decide " + std::to_string(digits) + " digits of the bound");
 }
+
+}  // namespace detail
 
 }  // namespace hapstab::passivity

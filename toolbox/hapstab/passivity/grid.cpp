@@ -19,9 +19,10 @@ Bound bound_grid(const BoundProblem& p, long N) {
   const double T = to_real<double>(p.T);
   const double pi = 3.14159265358979323846;
   double best = detail::objective_at_zero(p), bw = 0;
+  const detail::CircleObjective<double> f(p);
   for (long k = 1; k < N; ++k) {
     const double th = pi * static_cast<double>(k) / static_cast<double>(N - 1);
-    const double v = detail::objective_on_circle<double>(p, th);
+    const double v = f(th);
     if (v > best) best = v, bw = th / T;
   }
   if (std::isinf(best) && best > 0) { out.infinite = true; out.decimal = "inf"; return out; }

@@ -54,39 +54,47 @@ namespace detail {
 // grow like 2^degree, and in double it returned 0.34 for z^-50 (b* = 0.0505) and 1e171 for
 // z^-500. At theta = 0 the limit is the exact c-form value at c = 1.
 template <class R>
-R objective_on_circle(const BoundProblem& p, const R& th) {
+CircleObjective<R>::CircleObjective(const BoundProblem& p)
+    : T(to_real<R>(p.T)), eta(to_real<R>(p.eta)), lag(R(p.delay)),
+      frac(p.frac_delay ? to_real<R>(*p.frac_delay / p.T) : R(0)), has_frac(p.frac_delay.has_value()) {
+  for (const auto& c : p.H.num().coeffs()) num.push_back(to_real<R>(c));
+  for (const auto& c : p.H.den().coeffs()) den.push_back(to_real<R>(c));
+}
+
+template <class R>
+R CircleObjective<R>::operator()(const R& th) const {
   const R zr = cos(th), zi = sin(th);
-  auto horner = [&](const QPoly& poly, R& re, R& im) {
+  auto horner = [&](const std::vector<R>& poly, R& re, R& im) {
     re = 0, im = 0;
-    for (size_t i = poly.coeffs().size(); i-- > 0;) {
-      const R nr = re * zr - im * zi + to_real<R>(poly.coeffs()[i]);
+    for (size_t i = poly.size(); i-- > 0;) {
+      const R nr = re * zr - im * zi + poly[i];
       im = re * zi + im * zr;
       re = nr;
     }
   };
   R nr, ni, dr, di;
-  horner(p.H.num(), nr, ni);
-  horner(p.H.den(), dr, di);
+  horner(num, nr, ni);
+  horner(den, dr, di);
   const R d2 = dr * dr + di * di;
   const R hr = (nr * dr + ni * di) / d2, hi = (ni * dr - nr * di) / d2;
-  R lag = th * R(p.delay);
-  if (p.frac_delay) lag += th * to_real<R>(*p.frac_delay / p.T);
-  const R cr = cos(lag), ci = -sin(lag);
+  R ph = th * lag;
+  if (has_frac) ph += th * frac;
+  const R cr = cos(ph), ci = -sin(ph);
   const R wr = hr * cr - hi * ci, wi = hr * ci + hi * cr;
-  return to_real<R>(p.T) / 2 * (wr - wi * cos(th / 2) / sin(th / 2)) + to_real<R>(p.eta);
+  return T / 2 * (wr - wi * cos(th / 2) / sin(th / 2)) + eta;
 }
-template double objective_on_circle<double>(const BoundProblem&, const double&);
-template mp50 objective_on_circle<mp50>(const BoundProblem&, const mp50&);
+template struct CircleObjective<double>;
+template struct CircleObjective<mp50>;
 
-// The limit at theta = 0 (exact: the c-form at c = 1, plus the fractional delay's term).
+// The limit at theta = 0, exactly: with the c-form pieces of H without delay and nu = n + t_d/T,
+// f(0) = (T/2)(A(1) + 2 nu E(1))/B(1) + eta, A = R - (1 + c) Q, E = R + (1 - c) Q (long_delay.cpp);
+// nothing of degree n is formed.
 double objective_at_zero(const BoundProblem& p) {
-  using R = mp50;
-  Objective o = objective(p.H, p.T, p.delay);
-  const R one(1);
-  if (!p.frac_delay) return static_cast<double>(to_real<R>(o.f.num()(rational(1)) / o.f.den()(rational(1))) + to_real<R>(p.eta));
-  const R tau = to_real<R>(*p.frac_delay / p.T);
-  const R num = (to_real<R>(o.R(rational(1))) - 2 * to_real<R>(o.Q(rational(1)))) + to_real<R>(o.R(rational(1))) * 2 * tau;
-  return static_cast<double>(to_real<R>(p.T) / 2 * num / to_real<R>(o.B(rational(1))) + to_real<R>(p.eta));
+  const Objective o = objective(p.H, p.T, 0);
+  const rational one(1);
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational R1 = o.R(one), A1 = R1 - 2 * o.Q(one);
+  return to_real<double>(p.T / 2 * (A1 + 2 * nu * R1) / o.B(one) + p.eta);
 }
 
 }  // namespace detail

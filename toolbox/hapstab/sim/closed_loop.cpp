@@ -7,6 +7,7 @@
 #include "hapstab/numeric/ball_expm.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/poly/stability.hpp"
 
@@ -140,7 +141,14 @@ SampledClosedLoop sampled_closed_loop(const LoopSpec& spec) {
   const MatQ Bu = ks.controllable.B.leftCols(N);
   const MatQ Cx = ks.controllable.C;
   const auto& K = L.controller;
-  const Eigen::Index ns = A.rows(), nc = K.A.rows(), nb = (n + (f > 0 ? 1 : 0)) * N;
+  const Eigen::Index ns = A.rows(), nc = K.A.rows();
+  const long slots = n + (f > 0 ? 1 : 0);
+  if (static_cast<double>(ns + nc) + static_cast<double>(slots) * N > static_cast<double>(limits::closed_loop_states))
+    throw InputError("the loop as one matrix per period would have " + std::to_string(ns) + " plant, " + std::to_string(nc) +
+                     " controller and " + std::to_string(slots) + " x " + std::to_string(N) +
+                     " delay states ([delay] of " + std::to_string(slots) + " sample(s)), more than the limit of " +
+                     std::to_string(limits::closed_loop_states) + " states");
+  const Eigen::Index nb = slots * N;
   out.plant_states = ns;
   out.controller_states = nc;
   out.buffer_states = nb;

@@ -6,6 +6,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
@@ -28,22 +29,10 @@ bool one_dof(const sim::LoopSpec& s) {
 // Step 2: the one-DOF loop on transfer functions (sampled_loop.hpp). nullopt when that test
 // does not apply (a fractional delay) or refuses the loop (its size limits): the matrix decides.
 std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out) {
-  const rational q = L.delay / L.T;
-  if (bmp::denominator(q) != 1) return std::nullopt;  // fractional delay: the matrix models it
-  const TransferFunction g = ss2tf(L.devices[0].G)(0, 0);
-  const Polynomial<rational> s_poly(std::vector<rational>{rational(0), rational(1)});
-  Loop loop;
-  loop.T = L.T;
-  loop.plant = tf(g.num(), g.den() * s_poly, 0);  // force -> position
-  if (!L.operators.empty()) {
-    const auto& op = L.operators[0];
-    TransferFunction z = ss2tf(op.Z)(0, 0);
-    if (!op.mass.empty() && op.mass[0] != 0) z = parallel(z, tf(op.mass[0] * s_poly, Polynomial<rational>(rational(1)), 0));
-    loop.operator_impedance = z;
-  }
+  if (bmp::denominator(L.delay / L.T) != 1) return std::nullopt;  // fractional delay: the matrix models it
   if (!L.environment) return std::nullopt;  // no controller: the matrix (a free device) decides
-  const TransferFunction E = ss2tf(*L.environment)(0, 0);
-  loop.H = E;
+  Loop loop = one_dof_loop(L);
+  const TransferFunction E = loop.H;
   std::string hidden;
   if (L.coupling) {
     const TransferFunction V = ss2tf(*L.coupling)(0, 0);
@@ -64,7 +53,6 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
     if (cancelled.degree() > 0)
       hidden = "; the " + std::to_string(cancelled.degree()) + " modes E/(1 + E V) cancels are stable (exact)";
   }
-  loop.delay = static_cast<int>(static_cast<long>(bmp::numerator(q)));
   StabilityResult r;
   try {
     r = decide(loop);
@@ -142,7 +130,31 @@ LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out) {
 
 }  // namespace
 
-LoopVerdict decide_loop(const sim::LoopSpec& spec, LoopPath path) {
+Loop one_dof_loop(const sim::LoopSpec& L) {
+  if (L.dofs() != 1 || L.devices.size() != 1 || L.operators.size() > 1 || !L.environment)
+    throw InputError("the one-DOF loop needs one device of one DOF, at most one operator and an [environment]");
+  const rational n = L.delay / L.T;
+  if (bmp::denominator(n) != 1)
+    throw InputError("[delay]: t_d/T = " + n.str() + " is not a whole number of samples (the one-DOF Schur test takes z^-n)");
+  if (n > limits::criterion_delay)
+    throw InputError("[delay]: " + n.str() + " samples, more than the limit of " + std::to_string(limits::criterion_delay));
+  Loop loop;
+  loop.T = L.T;
+  loop.delay = static_cast<int>(static_cast<long>(bmp::numerator(n)));
+  const Polynomial<rational> s_poly(std::vector<rational>{rational(0), rational(1)});
+  const TransferFunction g = ss2tf(L.devices[0].G)(0, 0);  // force -> velocity
+  loop.plant = tf(g.num(), g.den() * s_poly, 0);            // force -> position
+  if (!L.operators.empty()) {
+    const auto& op = L.operators[0];
+    TransferFunction z = ss2tf(op.Z)(0, 0);
+    if (!op.mass.empty() && op.mass[0] != 0) z = parallel(z, tf(op.mass[0] * s_poly, Polynomial<rational>(rational(1)), 0));
+    loop.operator_impedance = z;
+  }
+  loop.H = ss2tf(*L.environment)(0, 0);
+  return loop;
+}
+
+LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
   LoopVerdict out;
   const std::string nl = sim::nonlinear_parts(spec);
   if (!nl.empty()) {
@@ -158,7 +170,7 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, LoopPath path) {
               ". A mode no input reaches or no output shows is an eigenvalue of the loop whatever the rest does";
     return out;
   }
-  if (path == LoopPath::automatic && one_dof(spec))
+  if (decider == Decider::automatic && one_dof(spec))
     if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
   return matrix_test(spec, out);
 }

@@ -26,6 +26,7 @@
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/sim/loop.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::stability {
 
@@ -43,8 +44,13 @@ struct LoopVerdict {
 inline constexpr long kExactOrder = 64;
 
 /// automatic: as above; matrix: step 3 even for one DOF (the campaign and the tests compare the two).
-enum class LoopPath { automatic, matrix };
+enum class Decider { automatic, matrix };
 
-LoopVerdict decide_loop(const sim::LoopSpec& spec, LoopPath path = LoopPath::automatic);
+LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider = Decider::automatic);
+
+/// The one-DOF loop of sampled_loop.hpp from a loop spec (one device of one DOF, at most one
+/// operator, an environment): device G(s)/s, operator Z(s) + m s, H = E (the caller puts a
+/// coupling in), delay n = t_d/T (InputError unless whole). Shared with stability/scene_loop.
+Loop one_dof_loop(const sim::LoopSpec& spec);
 
 }  // namespace hapstab::stability

@@ -47,8 +47,8 @@ void split_gain(Loop& loop, const LoopText& t, const std::map<std::string, ratio
 }  // namespace
 
 Loop loop_from_text(const LoopText& t, const LoopNames& names) {
-  if (t.delay < 0 || t.delay > limits::model_degree)
-    throw InputError(names.delay + " must be in [0, " + std::to_string(limits::model_degree) + "], got " +
+  if (t.delay < 0 || t.delay > limits::criterion_delay)
+    throw InputError(names.delay + " must be in [0, " + std::to_string(limits::criterion_delay) + "] samples, got " +
                      std::to_string(t.delay));
   Loop loop;
   loop.T = t.T;

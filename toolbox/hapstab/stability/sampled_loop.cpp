@@ -1,6 +1,10 @@
 #include "hapstab/stability/sampled_loop.hpp"
+#include "hapstab/stability/long_delay.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
 #include <type_traits>
 #include <vector>
 
@@ -13,7 +17,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/decimal.hpp"
-#include "hapstab/numeric/flint.hpp"
+#include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/poly/stability.hpp"
 
@@ -22,32 +26,8 @@ namespace {
 
 using QP = Polynomial<rational>;
 
-// ---- a real ball as a value (Arb's arb_t at the working precision of this thread) -------------
-thread_local slong g_prec = 128;
-
-class Ball {
- public:
-  Ball() { arb_init(x_); }
-  Ball(const rational& q) {  // NOLINT: exact data -> ball (exact when dyadic)
-    arb_init(x_);
-    flint::set(x_, q, g_prec);
-  }
-  Ball(const arb_t x) { arb_init(x_); arb_set(x_, x); }  // NOLINT
-  Ball(const Ball& o) { arb_init(x_); arb_set(x_, o.x_); }
-  Ball& operator=(const Ball& o) { arb_set(x_, o.x_); return *this; }
-  ~Ball() { arb_clear(x_); }
-  arb_struct* get() { return x_; }
-  const arb_struct* get() const { return x_; }
-
-  friend Ball operator+(const Ball& a, const Ball& b) { Ball r; arb_add(r.x_, a.x_, b.x_, g_prec); return r; }
-  friend Ball operator-(const Ball& a, const Ball& b) { Ball r; arb_sub(r.x_, a.x_, b.x_, g_prec); return r; }
-  friend Ball operator*(const Ball& a, const Ball& b) { Ball r; arb_mul(r.x_, a.x_, b.x_, g_prec); return r; }
-  friend Ball operator/(const Ball& a, const Ball& b) { Ball r; arb_div(r.x_, a.x_, b.x_, g_prec); return r; }
-  Ball operator-() const { Ball r; arb_neg(r.x_, x_); return r; }
-
- private:
-  arb_t x_;
-};
+// ---- real balls (numeric/ball.hpp) at the working precision of this thread ---------------------
+using flint::Ball;
 
 bool is_zero(const rational& q) { return q == 0; }
 bool is_zero(const Ball& b) { return arb_is_zero(b.get()); }
@@ -57,8 +37,8 @@ Enclosure<rational> bounds(const arb_t x) {
   arf_t lo, hi;
   arf_init(lo);
   arf_init(hi);
-  arb_get_lbound_arf(lo, x, g_prec);
-  arb_get_ubound_arf(hi, x, g_prec);
+  arb_get_lbound_arf(lo, x, flint::ball_prec);
+  arb_get_ubound_arf(hi, x, flint::ball_prec);
   Enclosure<rational> e{flint::to_rational(lo), flint::to_rational(hi)};
   arf_clear(lo);
   arf_clear(hi);
@@ -143,14 +123,14 @@ void exp_ball(flint::BallMat& out, const Mat<rational>& M) {
   for (Eigen::Index i = 0; i < M.rows(); ++i)
     for (Eigen::Index j = 0; j < M.cols(); ++j) flint::set(q.at(i, j), M(i, j));
   flint::BallMat X(M.rows(), M.cols());
-  arb_mat_set_fmpq_mat(X.get(), q.get(), g_prec);
-  arb_mat_exp(out.get(), X.get(), g_prec);
+  arb_mat_set_fmpq_mat(X.get(), q.get(), flint::ball_prec);
+  arb_mat_exp(out.get(), X.get(), flint::ball_prec);
 }
 
 Vec<Ball> charpoly_ball(const flint::BallMat& A) {
   arb_poly_t p;
   arb_poly_init(p);
-  arb_mat_charpoly(p, A.get(), g_prec);
+  arb_mat_charpoly(p, A.get(), flint::ball_prec);
   Vec<Ball> v;
   for (slong i = 0; i < arb_poly_length(p); ++i) v.emplace_back(arb_poly_get_coeff_ptr(p, i));
   arb_poly_clear(p);
@@ -167,7 +147,7 @@ Sampled<Ball> sample_ball(const QP& num, const QP& den, const rational& T, int r
     for (Eigen::Index j = 0; j < n; ++j) {
       arb_set(Phi.at(i, j), E.at(i, j));
       const Ball g(E.at(i, n)), c(ss.C(0, j));
-      arb_sub(closed.at(i, j), E.at(i, j), (g * c).get(), g_prec);
+      arb_sub(closed.at(i, j), E.at(i, j), (g * c).get(), flint::ball_prec);
     }
   Sampled<Ball> s;
   Vec<Ball> open = charpoly_ball(Phi), shut = charpoly_ball(closed);
@@ -207,10 +187,15 @@ WallPolys wall_polys(const Loop& loop) {
   return {L, loop.H.num() * divmod(L, d0).first, loop.H_gain->num() * divmod(L, d1).first};
 }
 
+/// c0(1), c1(1), c0(-1), c1(-1) with structural zeros exact (they decide crossings at z = +-1).
 template <class C>
-struct Characteristic {
+struct Edges {
+  C at1_0, at1_1, atm1_0, atm1_1;
+};
+
+template <class C>
+struct Characteristic : Edges<C> {
   Vec<C> c0, c1;
-  C at1_0, at1_1, atm1_0, atm1_1;  // c0(1), c1(1), c0(-1), c1(-1) with structural zeros exact
 };
 
 template <class C>
@@ -220,17 +205,44 @@ C term_at(const QP& A, const rational& x, const Vec<C>& N) {
 }
 
 template <class C>
+Edges<C> edges(const WallPolys& w, const Sampled<C>& s, int n) {
+  Edges<C> e;
+  const C lead1 = s.r >= 1 ? C(rational(0)) : C(w.L(rational(1))) * eval(s.D, C(rational(1)));
+  e.at1_0 = lead1 + term_at(w.A0, rational(1), s.N);
+  e.at1_1 = term_at(w.A1, rational(1), s.N);
+  const rational sign = n % 2 == 0 ? 1 : -1;
+  e.atm1_0 = C(sign * w.L(rational(-1))) * eval(s.D, C(rational(-1))) + term_at(w.A0, rational(-1), s.N);
+  e.atm1_1 = term_at(w.A1, rational(-1), s.N);
+  return e;
+}
+
+template <class C>
 Characteristic<C> characteristic(const WallPolys& w, const Sampled<C>& s, int n) {
   Characteristic<C> ch;
+  static_cast<Edges<C>&>(ch) = edges(w, s, n);
   ch.c0 = add(shift(mul(lift<C>(w.L), s.D), n), mul(lift<C>(w.A0), s.N));
   ch.c1 = mul(lift<C>(w.A1), s.N);
-  const C lead1 = s.r >= 1 ? C(rational(0)) : C(w.L(rational(1))) * eval(s.D, C(rational(1)));
-  ch.at1_0 = lead1 + term_at(w.A0, rational(1), s.N);
-  ch.at1_1 = term_at(w.A1, rational(1), s.N);
-  const rational sign = n % 2 == 0 ? 1 : -1;
-  ch.atm1_0 = C(sign * w.L(rational(-1))) * eval(s.D, C(rational(-1))) + term_at(w.A0, rational(-1), s.N);
-  ch.atm1_1 = term_at(w.A1, rational(-1), s.N);
   return ch;
+}
+
+/// The long-delay form c = z^n P + Q0 + K Q1 (long_delay.hpp): P = L D_d, Q0 = A0 N_d, Q1 = A1 N_d.
+Vec<Ball> to_balls(const Vec<rational>& v) {
+  Vec<Ball> b;
+  for (const rational& c : v) b.emplace_back(c);
+  return b;
+}
+Vec<Ball> to_balls(const Vec<Ball>& v) { return v; }
+template <class C>
+detail::DelayedLoop delayed_loop(const WallPolys& w, const Sampled<C>& s, int n) {
+  detail::DelayedLoop d;
+  d.n = n;
+  const Vec<C> P = mul(lift<C>(w.L), s.D), Q0 = mul(lift<C>(w.A0), s.N), Q1 = mul(lift<C>(w.A1), s.N);
+  d.P = to_balls(P), d.Q0 = to_balls(Q0), d.Q1 = to_balls(Q1);
+  if constexpr (std::is_same_v<C, rational>) {
+    d.exact = true;
+    d.Pq = P, d.Q0q = Q0, d.Q1q = Q1;
+  }
+  return d;
 }
 
 // ---- certified roots: Schur decision and spectral radius -------------------------------------
@@ -258,12 +270,12 @@ RootTest root_test(const Vec<Ball>& c) {
     acb_clear(z);
   }
   acb_ptr roots = _acb_vec_init(deg);
-  const slong isolated = acb_poly_find_roots(roots, p, nullptr, 0, g_prec);
+  const slong isolated = acb_poly_find_roots(roots, p, nullptr, 0, flint::ball_prec);
   bool all_inside = true, one_outside = false;
   rational lo = 0, hi = 0;
   for (slong i = 0; i < deg; ++i) {
     Ball m;
-    acb_abs(m.get(), roots + i, g_prec);
+    acb_abs(m.get(), roots + i, flint::ball_prec);
     const Enclosure<rational> e = bounds(m.get());
     lo = std::max(lo, e.lo);
     hi = std::max(hi, e.hi);
@@ -301,9 +313,14 @@ struct Prepared {
 };
 
 Prepared prepare(const Loop& loop) {
+  // the delay first: the long-delay path's work grows like it (nothing of degree n is allocated)
+  if (loop.delay < 0) throw InputError("the delay n must be >= 0, got " + std::to_string(loop.delay));
+  if (loop.delay > limits::criterion_delay)
+    throw InputError("the delay n = " + std::to_string(loop.delay) + " samples is more than the limit of " +
+                     std::to_string(limits::criterion_delay) +
+                     " (numeric/limits.hpp: the long-delay path's work grows like the delay)");
   const RationalFunction<rational> P = effective_device(loop);
   if (loop.T <= 0) throw InputError("the sample period T must be > 0");
-  if (loop.delay < 0) throw InputError("the delay n must be >= 0, got " + std::to_string(loop.delay));
   if (!loop.H.is_discrete()) throw InputError("H must be a transfer function in z");
   Prepared p;
   p.num = P.num();
@@ -311,10 +328,6 @@ Prepared prepare(const Loop& loop) {
   p.r = zero_poles(p.den);
   p.exact = p.r == p.den.degree();
   p.wall = wall_polys(loop);
-  const long degree = static_cast<long>(loop.delay) + p.wall.L.degree() + p.den.degree();
-  if (degree > limits::model_degree)
-    throw InputError("the characteristic polynomial would have degree " + std::to_string(degree) +
-                     ", more than the limit of " + std::to_string(limits::model_degree) + " (delay + wall + device)");
   const int room = p.wall.L.degree() + loop.delay;
   if (p.wall.A0.degree() > room || p.wall.A1.degree() > room)
     throw InputError("z^-n H(z) is not causal (degree of numerator > degree of denominator + n): the wall "
@@ -344,13 +357,107 @@ RationalFunction<rational> effective_device(const Loop& loop) {
   return P;
 }
 
+namespace {
+
+// ---- the planner: the characteristic polynomial (existing paths) or the long-delay path --------
+// Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_kmax: device
+// 1/(s^2 + s), wall K + 0.5 (z - 1)/(T z)): sup K by the polynomial path 2.5 ms at degree 13,
+// 57 ms at 33, 0.27 s at 63 (~ degree^3.5), by the long-delay path 5.8 ms at n = 10, 0.1 s at 10^3,
+// 1.1 s at 10^4 (~ its 4 n + 64 first boxes); the Schur test alone ~ degree^3 (0.3 s at 100).
+struct Plan {
+  bool long_delay = false;
+  long degree = 0;
+  std::string why;
+};
+Plan plan(const Prepared& p, const Loop& loop, bool crossings) {
+  Plan pl;
+  pl.degree = static_cast<long>(loop.delay) + p.wall.L.degree() + p.den.degree();
+  const double d = static_cast<double>(pl.degree) / 100;
+  const double poly_cost = crossings ? 1e-3 + 2 * std::pow(d, 3.5) : 0.3 * d * d * d;
+  const double long_cost = 3e-3 + (4.0 * static_cast<double>(loop.delay) + 64) * (crossings ? 2.5e-5 : 2e-6);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, " (polynomial path ~%.2g s, long-delay path ~%.2g s)", poly_cost, long_cost);
+  if (loop.path == LoopPath::long_delay) {
+    pl.long_delay = true;
+    pl.why = "long-delay path (asked for)";
+  } else if (loop.path == LoopPath::polynomial) {
+    if (pl.degree > limits::model_degree)
+      throw InputError("the characteristic polynomial would have degree " + std::to_string(pl.degree) +
+                       ", more than the limit of " + std::to_string(limits::model_degree) + " for the polynomial path");
+    pl.why = "polynomial path (asked for)";
+  } else if (pl.degree > limits::model_degree) {
+    pl.long_delay = true;
+    pl.why = "long-delay path: the characteristic polynomial would have degree " + std::to_string(pl.degree) +
+             ", more than the limit of " + std::to_string(limits::model_degree) + " for the polynomial path";
+  } else if (poly_cost > std::max(2 * long_cost, crossings ? 0.02 : 0.5)) {
+    // the Schur test alone keeps the polynomial path up to ~0.5 s (degree ~110): it also encloses
+    // the spectral radius, which the argument principle does not give
+    pl.long_delay = true;
+    pl.why = "long-delay path: cheaper than the characteristic polynomial of degree " + std::to_string(pl.degree) + buf;
+  } else {
+    pl.why = "polynomial path: the characteristic polynomial has degree " + std::to_string(pl.degree) + buf;
+  }
+  return pl;
+}
+
+/// A root at z = +-1 exactly (exact data): the loop is not Schur stable, exactly.
+template <class C>
+std::optional<std::string> root_at_edge(const Edges<C>& e) {
+  if constexpr (std::is_same_v<C, rational>) {
+    if (e.at1_0 == 0) return std::string("z = 1");
+    if (e.atm1_0 == 0) return std::string("z = -1");
+  }
+  return std::nullopt;
+}
+
+template <class C>
+StabilityResult decide_long(const Prepared& p, const Loop& loop, const Sampled<C>& s, long prec) {
+  StabilityResult r;
+  r.exact_data = p.exact;
+  r.precision_bits = prec;
+  const detail::DelayedLoop dl = delayed_loop(p.wall, s, loop.delay);
+  r.degree = static_cast<int>(dl.degree());
+  if (const auto at = root_at_edge(edges(p.wall, s, loop.delay))) {
+    r.verdict = Verdict::of(false, Status::exact, "a closed-loop root at " + *at + " (exact): on the unit circle");
+    return r;
+  }
+  const detail::Winding w = detail::schur_by_winding(dl, rational(0));
+  if (w.outcome == Outcome::undecided) {
+    r.verdict = {Outcome::undecided, Status::failed, w.why};
+    return r;
+  }
+  r.verdict = Verdict::of(w.outcome == Outcome::holds, Status::certified,
+                          "argument principle on the unit circle in ball arithmetic (long-delay path, " +
+                              std::to_string(w.boxes) + " arcs): " + std::to_string(w.inside) + " of the " +
+                              std::to_string(dl.degree()) + " roots in |z| < 1");
+  return r;
+}
+
+}  // namespace
+
 StabilityResult decide(const Loop& loop) {
   if (loop.H_gain) throw InputError("stability::decide: H_gain is for max_gain");
   const Prepared p = prepare(loop);
+  const Plan pl = plan(p, loop, false);
   StabilityResult r;
   r.exact_data = p.exact;
+  if (pl.long_delay) {
+    for (slong prec = 128; prec <= 2048; prec *= 2) {
+      flint::BallPrecision scope(prec);
+      r = p.exact ? decide_long(p, loop, sample_exact(p.num, p.den, loop.T), prec)
+                  : decide_long(p, loop, sample_ball(p.num, p.den, loop.T, p.r), prec);
+      if (r.verdict.decided()) break;
+    }
+    r.path = "long_delay";
+    r.plan = pl.why;
+    // undecided (a root on or near the circle) and small enough: the polynomial path decides exactly
+    // where the data are exact (a root on the circle is then "not stable"), by root enclosures otherwise
+    if (r.verdict.decided() || pl.degree > limits::model_degree || loop.path == LoopPath::long_delay) return r;
+  }
+  r.path = "polynomial";
+  r.plan = pl.long_delay ? pl.why + "; undecided there, so the polynomial path" : pl.why;
   if (p.exact) {
-    g_prec = 256;
+    flint::ball_prec = 256;
     const Sampled<rational> s = sample_exact(p.num, p.den, loop.T);
     const QP c = to_qp(characteristic(p.wall, s, loop.delay).c0);
     r.degree = c.degree();
@@ -362,7 +469,7 @@ StabilityResult decide(const Loop& loop) {
     return r;
   }
   for (slong prec = 128; prec <= 8192; prec *= 2) {
-    g_prec = prec;
+    flint::ball_prec = prec;
     const Sampled<Ball> s = sample_ball(p.num, p.den, loop.T, p.r);
     const Vec<Ball> c = characteristic(p.wall, s, loop.delay).c0;
     r.degree = static_cast<int>(c.size()) - 1;
@@ -456,7 +563,7 @@ Vec<Ball> derivative(const Vec<Ball>& p) {
 
 Ball hull(const rational& lo, const rational& hi) {
   Ball r;
-  arb_union(r.get(), Ball(lo).get(), Ball(hi).get(), g_prec);
+  arb_union(r.get(), Ball(lo).get(), Ball(hi).get(), flint::ball_prec);
   return r;
 }
 
@@ -467,7 +574,7 @@ Ball newton(const Vec<Ball>& Q, const Vec<Ball>& dQ, Ball X) {
     arb_get_mid_arb(m.get(), X.get());
     const Ball N = m - eval(Q, m) / eval(dQ, X);
     Ball Y;
-    if (!arb_intersection(Y.get(), X.get(), N.get(), g_prec)) break;
+    if (!arb_intersection(Y.get(), X.get(), N.get(), flint::ball_prec)) break;
     const bool progress = mag_cmp(arb_radref(Y.get()), arb_radref(X.get())) < 0;
     X = Y;
     if (!progress) break;
@@ -494,7 +601,7 @@ std::optional<std::vector<Ball>> real_roots_from_complex(Vec<Ball> Q, const Vec<
   }
   acb_ptr roots = _acb_vec_init(deg);
   std::optional<std::vector<Ball>> out;
-  if (acb_poly_find_roots(roots, p, nullptr, 0, g_prec) == deg && acb_poly_validate_real_roots(roots, p, g_prec)) {
+  if (acb_poly_find_roots(roots, p, nullptr, 0, flint::ball_prec) == deg && acb_poly_validate_real_roots(roots, p, flint::ball_prec)) {
     out.emplace();
     const Ball one(rational(1)), minus_one(rational(-1));
     for (slong i = 0; i < deg && out; ++i) {
@@ -563,7 +670,7 @@ bool edge_candidate(const C& v0, const C& v1, bool at_one, std::vector<Candidate
   if (arb_contains_zero(to_ball(v1).get())) return false;
   Candidate c{to_ball(v0) / to_ball(v1), at_one ? "z = 1" : "z = -1", Ball(rational(0)), exact_quotient(v0, v1)};
   c.K = -c.K;
-  if (!at_one) arb_const_pi(c.theta.get(), g_prec);
+  if (!at_one) arb_const_pi(c.theta.get(), flint::ball_prec);
   out.push_back(c);
   return true;
 }
@@ -576,6 +683,26 @@ RootTest test_at(const Characteristic<Ball>& ch, const rational& K) {
 }
 
 /// The candidates K > 0 at which a root is on the unit circle; nullopt: undecided here.
+/// The candidates with K > 0 (an exact K = 0, a crossing at the start, is dropped); nullopt when one
+/// is not separated from 0.
+std::optional<std::vector<Candidate>> positive_only(const std::vector<Candidate>& all, std::string& why) {
+  std::vector<Candidate> positive;
+  for (const Candidate& c : all) {
+    if (c.exact && *c.exact == 0) continue;
+    if (arb_is_positive(c.K.get())) positive.push_back(c);
+    else if (!arb_is_nonpositive(c.K.get())) {
+      why = "a crossing gain not separated from 0";
+      return std::nullopt;
+    }
+  }
+  return positive;
+}
+
+/// sup K from the candidate crossings (K > 0) and the stability test at one K below them.
+template <class C, class Test>
+MaxGain conclude(const std::optional<std::vector<Candidate>>& cands, bool fixed, const std::string& why, Test test_at,
+                 const std::string& K);
+
 template <class C>
 std::optional<std::vector<Candidate>> crossings(const Characteristic<C>& ch, bool& fixed, std::string& why) {
   std::vector<Candidate> all;
@@ -602,18 +729,27 @@ std::optional<std::vector<Candidate>> crossings(const Characteristic<C>& ch, boo
       return std::nullopt;
     }
     Candidate c{-(eval(R, x) / s), "complex pair", Ball(), std::nullopt};
-    arb_acos(c.theta.get(), x.get(), g_prec);
+    arb_acos(c.theta.get(), x.get(), flint::ball_prec);
     all.push_back(c);
   }
-  std::vector<Candidate> positive;
-  for (const Candidate& c : all) {
-    if (c.exact && *c.exact == 0) continue;
-    if (arb_is_positive(c.K.get())) positive.push_back(c);
-    else if (!arb_is_nonpositive(c.K.get())) {
-      why = "a crossing gain not separated from 0";
-      return std::nullopt;
-    }
+  return positive_only(all, why);
+}
+
+/// The long-delay path's candidates: the crossings at z = +-1 as above, and those in (0, pi) by
+/// the best-first search of long_delay.hpp (only the ones that can be the smallest).
+template <class C>
+std::optional<std::vector<Candidate>> crossings_long(const Edges<C>& e, const detail::DelayedLoop& dl, bool& fixed,
+                                                     std::string& why) {
+  std::vector<Candidate> all;
+  if (!edge_candidate(e.at1_0, e.at1_1, true, all, fixed) || !edge_candidate(e.atm1_0, e.atm1_1, false, all, fixed)) {
+    why = "c1(+-1) not separated from 0";
+    return std::nullopt;
   }
+  std::optional<std::vector<Candidate>> positive = positive_only(all, why);
+  if (!positive) return std::nullopt;
+  const auto search = detail::smallest_crossings(dl, why);
+  if (!search) return std::nullopt;
+  for (const auto& c : search->crossings) positive->push_back({c.K, "complex pair", c.theta, std::nullopt});
   return positive;
 }
 
@@ -622,6 +758,24 @@ MaxGain attempt(const Characteristic<C>& ch, const std::string& K) {
   MaxGain m;
   bool fixed = false;
   const auto cands = crossings(ch, fixed, m.note);
+  return conclude<C>(cands, fixed, m.note, [&](const rational& k) { return test_at(ch, k); }, K);
+}
+
+template <class C>
+MaxGain attempt_long(const Edges<C>& e, const detail::DelayedLoop& dl, const std::string& K) {
+  MaxGain m;
+  bool fixed = false;
+  const auto cands = crossings_long(e, dl, fixed, m.note);
+  return conclude<C>(cands, fixed, m.note, [&](const rational& k) {
+    const detail::Winding w = detail::schur_by_winding(dl, k);
+    return RootTest{w.outcome, std::nullopt};
+  }, K);
+}
+template <class C, class Test>
+MaxGain conclude(const std::optional<std::vector<Candidate>>& cands, bool fixed, const std::string& why, Test test_at,
+                 const std::string& K) {
+  MaxGain m;
+  m.note = why;
   if (fixed) {
     m.outcome = Outcome::fails;
     m.status = std::is_same_v<C, rational> ? Status::exact : Status::certified;
@@ -637,7 +791,7 @@ MaxGain attempt(const Characteristic<C>& ch, const std::string& K) {
   }
   // a short rational in (0, lo): any K below the first crossing tells the sign of the whole interval
   const rational probe = cands->empty() ? rational(1) : parse_rational(decimal_outward(lo / 2, 3, -1));
-  const RootTest t = test_at(ch, probe);
+  const RootTest t = test_at(probe);
   m.status = std::is_same_v<C, rational> ? Status::exact : Status::certified;
   if (t.outcome == Outcome::undecided) {
     m.status = Status::failed;
@@ -679,6 +833,52 @@ bool narrow_enough(const MaxGain& m, int digits) {
 
 }  // namespace
 
+std::optional<GridGain> max_gain_grid(const Loop& loop, long N) {
+  if (!loop.H_gain) throw InputError("max_gain_grid: H_gain (the part of H multiplied by the gain) is missing");
+  if (N < 2 || N > 100000000) throw InputError("max_gain_grid: N must be in [2, 1e8]");
+  const Prepared p = prepare(loop);
+  flint::BallPrecision scope(128);
+  const detail::DelayedLoop dl = p.exact ? delayed_loop(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay)
+                                         : delayed_loop(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay);
+  auto doubles = [](const Vec<Ball>& v) {
+    std::vector<double> d;
+    for (const Ball& b : v) d.push_back(b.to_double());
+    return d;
+  };
+  const std::vector<double> P = doubles(dl.P), Q0 = doubles(dl.Q0), Q1 = doubles(dl.Q1);
+  auto poly = [](const std::vector<double>& c, std::complex<double> z) {
+    std::complex<double> r = 0;
+    for (size_t i = c.size(); i-- > 0;) r = r * z + c[i];
+    return r;
+  };
+  const double pi = 3.14159265358979323846;
+  auto gain = [&](double th) {
+    const std::complex<double> z = std::polar(1.0, th);
+    return -(std::polar(1.0, static_cast<double>(loop.delay) * th) * poly(P, z) + poly(Q0, z)) / poly(Q1, z);
+  };
+  std::optional<GridGain> best;
+  auto consider = [&](double K, double th) {
+    if (K > 0 && std::isfinite(K) && (!best || K < best->K)) best = GridGain{K, th / to_real<double>(loop.T)};
+  };
+  // z = 1 (theta = 0, where Im K = 0 always): K = -c0(1)/c1(1) when c0(1) is not a structural zero
+  double size = 0;
+  for (double x : P) size += std::abs(x);
+  for (double x : Q0) size += std::abs(x);
+  const std::complex<double> at_one = gain(0);
+  if (std::abs(poly(P, 1.0) + poly(Q0, 1.0)) > 1e-12 * size) consider(at_one.real(), 0);
+  std::complex<double> prev = gain(pi / static_cast<double>(N));
+  for (long i = 2; i <= N; ++i) {
+    const double th = pi * static_cast<double>(i) / static_cast<double>(N);
+    const std::complex<double> k = gain(i == N ? pi : th);
+    if ((k.imag() > 0) != (prev.imag() > 0) && std::isfinite(k.imag()) && std::isfinite(prev.imag())) {
+      const double s = prev.imag() / (prev.imag() - k.imag());  // linear interpolation of the zero of Im K
+      consider(prev.real() + s * (k.real() - prev.real()), th - (1 - s) * pi / static_cast<double>(N));
+    }
+    prev = k;
+  }
+  return best;
+}
+
 Loop mass_damper_wall(const rational& m, const rational& b, const rational& B, const rational& T, int n) {
   if (m < 0 || T <= 0 || (m == 0 && b == 0))
     throw InputError("mass_damper_wall: need m >= 0, T > 0 and m, b not both 0");
@@ -704,13 +904,32 @@ MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name) {
   if (loop.H_gain->H.is_zero()) throw InputError("the gain does not appear in H");
   if (digits < 1 || digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(digits));
   const Prepared p = prepare(loop);
+  Plan pl = plan(p, loop, true);
   const slong first = std::max<slong>(128, 4 * digits + 64);
   MaxGain last;
-  for (slong prec = first; prec <= 64 * first; prec *= 2) {
-    g_prec = prec;
-    last = p.exact ? attempt(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay), gain_name)
-                   : attempt(characteristic(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay), gain_name);
+  for (slong prec = first; prec <= (pl.long_delay ? 8 : 64) * first; prec *= 2) {
+    // the long-delay path undecided at 8x its first precision, and the polynomial small enough: it takes over
+    if (pl.long_delay && prec == 8 * first && pl.degree <= limits::model_degree && loop.path != LoopPath::long_delay) {
+      pl.long_delay = false;
+      pl.why += "; undecided there, so the polynomial path";
+      prec = first;
+    }
+    flint::BallPrecision scope(prec);
+    if (pl.long_delay) {
+      if (p.exact) {
+        const Sampled<rational> s = sample_exact(p.num, p.den, loop.T);
+        last = attempt_long(edges(p.wall, s, loop.delay), delayed_loop(p.wall, s, loop.delay), gain_name);
+      } else {
+        const Sampled<Ball> s = sample_ball(p.num, p.den, loop.T, p.r);
+        last = attempt_long(edges(p.wall, s, loop.delay), delayed_loop(p.wall, s, loop.delay), gain_name);
+      }
+    } else {
+      last = p.exact ? attempt(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay), gain_name)
+                     : attempt(characteristic(p.wall, sample_ball(p.num, p.den, loop.T, p.r), loop.delay), gain_name);
+    }
     last.precision_bits = prec;
+    last.path = pl.long_delay ? "long_delay" : "polynomial";
+    last.plan = pl.why;
     if (last.outcome != Outcome::undecided && narrow_enough(last, digits)) return last;
   }
   if (last.outcome == Outcome::holds)

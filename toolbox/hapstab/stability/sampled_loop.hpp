@@ -23,6 +23,14 @@
 // ext.stability.crossing of proofs/ext_stability.cpp). The roots move continuously with K and
 // their number is fixed (the leading coefficient does not depend on K), so the supremum is the
 // smallest positive such K when the loop is stable at one K below it (docs/stability.md).
+//
+// Long delays (stability/long_delay.hpp): c(z, K) = z^n P + Q0 + K Q1 with P, Q0, Q1 of low
+// degree; the Schur test by the argument principle on the unit circle and the crossings by a
+// best-first search over theta with q(theta) = Im(c0 conj c1)/sin(theta) evaluated as a sum of a
+// few kernels sin(m theta)/sin(theta), in Arb balls: nothing of degree n is formed and the work
+// grows like n. A planner takes it where the characteristic polynomial would exceed
+// limits::model_degree or cost more (path and plan in the results); delays up to
+// limits::criterion_delay samples.
 #pragma once
 
 #include <optional>
@@ -33,6 +41,10 @@
 
 namespace hapstab::stability {
 
+/// Which algorithm decides (see the header): the planner's choice, or one forced (comparisons,
+/// benchmarks; the polynomial path refuses a characteristic polynomial above limits::model_degree).
+enum class LoopPath { automatic, polynomial, long_delay };
+
 struct Loop {
   TransferFunction plant;                            ///< P(s), force -> position (continuous)
   std::optional<TransferFunction> operator_impedance;  ///< Z_op(s), force per velocity
@@ -40,6 +52,7 @@ struct Loop {
   std::optional<TransferFunction> H_gain;            ///< H1 of H = H0 + K H1 (max_gain only)
   int delay = 0;                                     ///< n of z^-n
   rational T = 0;                                    ///< sample period
+  LoopPath path = LoopPath::automatic;               ///< force a path (comparisons, benchmarks)
 };
 
 /// P_eff = P/(1 + s Z_op P), exact and reduced. InputError when it is not strictly proper (a
@@ -52,6 +65,8 @@ struct StabilityResult {
   int degree = 0;                                 ///< degree of the characteristic polynomial
   bool exact_data = false;                        ///< P_d rational (all device poles at s = 0)
   long precision_bits = 0;                        ///< Arb precision of the decision (0: exact)
+  std::string path;                               ///< "polynomial" or "long_delay" (see the header)
+  std::string plan;                               ///< why the planner chose it
 };
 
 /// Schur stability of the loop with H = loop.H (loop.H_gain must be empty).
@@ -68,6 +83,8 @@ struct MaxGain {
   std::optional<Enclosure<rational>> theta;  ///< angle of the crossing root (rad), when at the sup
   std::string note;                      ///< why it is undecided, or what was proven
   long precision_bits = 0;
+  std::string path;                      ///< "polynomial" or "long_delay" (see the header)
+  std::string plan;                      ///< why the planner chose it
 };
 
 /// sup{K >= 0 : the loop is stable for every K in (0, sup)} with H = loop.H + K loop.H_gain,
@@ -76,6 +93,15 @@ struct MaxGain {
 MaxGain max_gain(const Loop& loop, int digits);
 /// The same, with the gain named `gain_name` in the notes (`stability --max B`: "stable at B = ...").
 MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name);
+
+/// The same supremum estimated on a grid (comparison only, status numeric): K(theta) = -c0/c1 in
+/// double at theta = pi i/N, every sign change of Im K between neighbours interpolated linearly, the
+/// smallest positive Re K there (and at z = +-1). It misses crossings once N under-samples the
+/// e^{-j n theta} of the delay (N ~ n). nullopt when no positive crossing is seen.
+struct GridGain {
+  double K = 0, omega = 0;  ///< the estimate and its crossing frequency (rad/s)
+};
+std::optional<GridGain> max_gain_grid(const Loop& loop, long N);
 
 /// The standard case of the literature (Gil et al. 2004, Hulin et al. 2006) and of paper 001's
 /// wall: device 1/(m s^2 + b s), H = K + B (z - 1)/(T z) with the gain K free (H = H0 + K * 1),
@@ -88,5 +114,17 @@ struct CirclePolynomials {
   Polynomial<rational> Q, R, S;
 };
 CirclePolynomials circle_polynomials(const Polynomial<rational>& c0, const Polynomial<rational>& c1);
+
+/// The polynomials of the long-delay crossing search (stability/long_delay.hpp), exact, for
+/// c(z, K) = z^n P(z) + Q0(z) + K Q1(z) with real P, Q0, Q1, U = P conj Q1, V = Q0 conj Q1 on
+/// |z| = 1 and x = cos(theta): Re U = RU(x), Im U = sin(theta) SU(x), Re V = RV(x),
+/// Im V = sin(theta) SV(x), |Q1|^2 = H1(x). Then for every n (claim ext.stability.crossing_delay)
+///   Im(c0 conj c1)/sin(theta) = K_n(theta) RU + cos(n theta) SU + SV,  K_n = sin(n theta)/sin(theta),
+///   Re(c0 conj c1) = cos(n theta) RU - sin(n theta) sin(theta) SU + RV.
+struct DelayCirclePolynomials {
+  Polynomial<rational> RU, SU, RV, SV, H1;
+};
+DelayCirclePolynomials delay_circle_polynomials(const Polynomial<rational>& P, const Polynomial<rational>& Q0,
+                                                const Polynomial<rational>& Q1);
 
 }  // namespace hapstab::stability

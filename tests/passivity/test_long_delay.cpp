@@ -1,0 +1,215 @@
+// Tests of the long-delay path of the passivity bound (passivity/long_delay.cpp, issue 43): the
+// exact path is the reference where both run (the same b*, enclosures that overlap, exact values
+// contained), the independent 100-digit reference of reference.hpp beyond it, the closed forms of
+// paper 001's Example 4 at delays of thousands of samples, the planner, and the work limit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/passivity/bound.hpp"
+#include "passivity/reference.hpp"
+
+using namespace hapstab;
+using namespace hapstab::passivity;
+using testref::R;
+
+namespace {
+
+using testref::make;
+
+std::string describe(const BoundProblem& p) {
+  return "H = (" + to_string(p.H.num(), "z") + ")/(" + to_string(p.H.den(), "z") + "), n = " + std::to_string(p.delay) +
+         (p.frac_delay ? ", t_d = " + p.frac_delay->str() : "") + ", eta = " + p.eta.str();
+}
+
+/// The two certified paths on one problem: their enclosures overlap, an exact value of either lies
+/// in the other's enclosure, and the long-delay path's enclosure is 30 digits narrow.
+void expect_paths_agree(const BoundProblem& p) {
+  const Bound e = bound_certified(p, 30, BoundPath::exact), l = bound_certified(p, 30, BoundPath::long_delay);
+  ASSERT_EQ(e.infinite, l.infinite) << describe(p);
+  if (e.infinite) return;
+  EXPECT_EQ(l.path, BoundPath::long_delay);
+  EXPECT_LE(l.enclosure->lo, e.enclosure->hi) << describe(p) << ": long " << l.decimal << ", exact " << e.decimal;
+  EXPECT_LE(e.enclosure->lo, l.enclosure->hi) << describe(p) << ": long " << l.decimal << ", exact " << e.decimal;
+  if (e.status == Status::exact) EXPECT_TRUE(l.enclosure->contains(e.value)) << describe(p) << ": " << e.decimal;
+  if (l.status == Status::exact) EXPECT_TRUE(e.enclosure->contains(l.value)) << describe(p) << ": " << l.decimal;
+  const rational scale = std::max(abs(l.value), rational(1, 1000000));
+  EXPECT_LE(l.enclosure->hi - l.enclosure->lo, scale * pow10(-29)) << describe(p) << ": " << l.note;
+}
+
+}  // namespace
+
+// Where both paths run (delays 0..60), they agree: Sec. VI's walls and filters, Tustin's pole at
+// z = -1 (rho != 0), resonances near the unit circle, fractional delays, eta.
+TEST(LongDelay, AgreesWithTheExactPath) {
+  const std::map<std::string, rational> KB{{"K", rational(1000)}, {"B", rational(5)}};
+  struct C {
+    std::string H;
+    std::vector<int> delays;
+  };
+  const std::vector<C> cases = {
+      {"K + B*(z-1)/(T*z)", {0, 1, 2, 3, 8, 21, 60}},   // (53): max at w = 0 or inside
+      {"40 + 0.5*(z-1)/(T*z)", {0, 1, 5, 13, 40}},      // B >> KT: many equal-looking maxima
+      {"1", {0, 1, 7, 30}},                             // Dirichlet kernel: exact at w = 0
+      {"(z-1)/(T*z)", {0, 1, 4, 17}},                   // H_1: b* = 1 for every n
+      {"((z-1)/(T*z))^2", {0, 1, 2, 9}},
+      {"K + 2*B/T*(z-1)/(z+1)", {0, 1, 2, 5, 12}},      // Tustin: a pole at z = -1
+      {"(z-1)/(z+1)", {0, 3}},                          // (52)
+      {"(z-1)/(z+1/2)", {0, 2, 11}},                    // (51)
+      {"(1-z)/(z-0.9)", {1, 6}},
+      {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", {0, 2, 25}},     // a resonance of radius 0.99
+      {"0.01*(z-1)/(z^2 - 1.99*z + 0.999)", {0, 3, 10}},        // radius ~0.9995: a narrow peak
+      {"(z-1)*(1+z^-1+z^-2+z^-3+z^-4)", {1, 4, 20}},            // FIR (50)
+  };
+  for (const auto& c : cases)
+    for (int n : c.delays) {
+      BoundProblem p = make(c.H, "1/1000", KB, n);
+      SCOPED_TRACE(describe(p));
+      expect_paths_agree(p);
+    }
+  // eta, and a fractional delay t_d = (p/q) T with a small q (the exact path in cos(wT/q))
+  BoundProblem w = make("K + B*(z-1)/(T*z)", "1/1000", KB, 2);
+  w.eta = rational(3, 10);
+  expect_paths_agree(w);
+  for (const rational& td : {rational(1, 2000), rational(7, 3000), rational(13, 4000)}) {
+    BoundProblem f = make("K + B*(z-1)/(T*z)", "1/1000", KB, 1);
+    f.frac_delay = td;
+    SCOPED_TRACE(describe(f));
+    expect_paths_agree(f);
+  }
+}
+
+// The closed forms of Example 4 at delays of thousands of samples (never expanded):
+// H_0 z^-n: (2n+1) T/2 exactly at w = 0; H_1 z^-n: 1 (tight for every n, attained at wT = pi/(n+1));
+// the wall (53): at or below the conservative (2n+1) KT/2 + B and at or above its value at w = 0.
+TEST(LongDelay, ClosedFormsOfExample4AtLongDelays) {
+  for (int n : {1000, 9999}) {
+    const Bound b = bound_certified(make("1", "1/1000", {}, n), 30);
+    EXPECT_EQ(b.path, BoundPath::long_delay);
+    EXPECT_EQ(b.status, Status::exact) << b.method << " " << b.note;
+    EXPECT_EQ(b.value, rational(2 * n + 1, 2000)) << b.decimal;
+    EXPECT_EQ(b.where, "w = 0");
+  }
+  const Bound h1 = bound_certified(make("(z-1)/(T*z)", "1/1000", {}, 2500), 30);
+  EXPECT_TRUE(h1.enclosure->contains(rational(1))) << h1.decimal;
+  EXPECT_LT(h1.enclosure->hi - h1.enclosure->lo, pow10(-29));
+  const std::map<std::string, rational> KB{{"K", rational(1000)}, {"B", rational(5)}};
+  for (int n : {1000, 4000}) {
+    const Bound w = bound_certified(make("K + B*(z-1)/(T*z)", "1/1000", KB, n), 30);
+    const rational K = 1000, B = 5, T(1, 1000);
+    EXPECT_LE(w.enclosure->hi, rational(2 * n + 1) * K * T / 2 + B) << n;
+    EXPECT_GE(w.enclosure->hi, rational(2 * n + 1) * K * T / 2 - B) << n;  // (53) at w = 0
+  }
+}
+
+// Beyond the exact path: the independent 100-digit reference (direct complex evaluation, 8 nu
+// samples, golden section) lies in the certified enclosure, for integer and fractional delays.
+TEST(LongDelay, AgreesWithTheReferenceBeyondTheExactPath) {
+  struct C {
+    std::string H;
+    int n;
+    rational tau;  // t_d/T
+  };
+  const std::vector<C> cases = {{"40 + 0.5*(z-1)/(T*z)", 400, 0}, {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", 700, 0},
+                                {"40 + 0.5*(z-1)/(T*z)", 300, rational(37, 100)},
+                                {"(z-1)/(z+1/2)", 555, rational(1, 7)}};
+  for (const auto& c : cases) {
+    BoundProblem p = make(c.H, "1/1000", {}, c.n);
+    if (c.tau != 0) p.frac_delay = c.tau * p.T;
+    SCOPED_TRACE(describe(p));
+    const Bound b = bound_certified(p, 30);
+    EXPECT_EQ(b.path, BoundPath::long_delay);
+    const double nu = c.n + to_real<double>(c.tau);
+    const testref::Ref ref = testref::reference(p.H, p.T, c.n, c.tau, {}, static_cast<int>(8 * nu) + 2000);
+    // the reference is a lower bound of b* good to ~40 digits at its maximiser
+    const R lo(b.enclosure->lo), hi(b.enclosure->hi), tol = R("1e-35") * abs(ref.value);
+    EXPECT_LE(ref.value, hi + tol) << b.decimal << " vs " << ref.value.str(35);
+    EXPECT_GE(ref.value, lo - R("1e-27") * abs(ref.value)) << b.decimal << " vs " << ref.value.str(35);
+  }
+}
+
+// Tustin's wall with a delay (a pole at z = -1, rho != 0): (KT/2) D_n(theta) - B (-1)^n D_n(theta + pi)
+// (Example 4, the Dirichlet kernel D_n(x) = sin((n + 1/2) x)/sin(x/2)) evaluated on 64 n points in
+// long double and refined by golden section bounds b* from below; the certified enclosure holds it.
+TEST(LongDelay, TustinWallWithLongDelays) {
+  const long double K = 1000, B = 5, T = 1e-3L, pi = 3.14159265358979323846264338327950288L;
+  for (int n : {300, 301, 1200}) {
+    auto D = [&](long double x) {
+      const long double s = std::sin(x / 2);
+      return std::abs(s) < 1e-12L ? static_cast<long double>(2 * n + 1) : std::sin((n + 0.5L) * x) / s;
+    };
+    auto f = [&](long double th) { return K * T / 2 * D(th) - B * (n % 2 ? -1 : 1) * D(th + pi); };
+    long double best = std::max(f(0), f(pi)), at = 0;
+    const long N = 64L * n;
+    for (long i = 1; i < N; ++i)
+      if (f(pi * i / N) > best) best = f(pi * i / N), at = pi * i / N;
+    for (long double a = std::max(0.0L, at - pi / N), b = std::min(pi, at + pi / N), it = 0; it < 100; ++it) {
+      const long double x1 = b - 0.618034L * (b - a), x2 = a + 0.618034L * (b - a);
+      (f(x1) < f(x2) ? a : b) = f(x1) < f(x2) ? x1 : x2;
+      best = std::max(best, f((a + b) / 2));
+    }
+    const Bound c = bound_certified(make("1000 + 2*5/T*(z-1)/(z+1)", "1/1000", {}, n), 30);
+    EXPECT_EQ(c.path, BoundPath::long_delay);
+    EXPECT_LE(static_cast<double>(best), to_real<double>(c.enclosure->hi) * (1 + 1e-15)) << n << ": " << c.decimal;
+    EXPECT_GE(static_cast<double>(best), to_real<double>(c.enclosure->lo) * (1 - 1e-13)) << n << ": " << c.decimal;
+  }
+}
+
+// The fast long-delay path (double) against the certified one, within its stated error.
+TEST(LongDelay, FastAgreesWithCertified) {
+  for (const auto& [H, n] : std::vector<std::pair<std::string, int>>{
+           {"40 + 0.5*(z-1)/(T*z)", 300}, {"40 + 0.5*(z-1)/(T*z)", 5000}, {"1", 2000},
+           {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", 1500}, {"1000 + 2*5/T*(z-1)/(z+1)", 777}}) {
+    const BoundProblem p = make(H, "1/1000", {}, n);
+    const Bound f = bound(p, Method::fast), c = bound_certified(p, 20);
+    EXPECT_EQ(f.status, Status::numeric);
+    EXPECT_EQ(f.path, BoundPath::long_delay);
+    // the stated band (reported_enclosure) overlaps the certified enclosure
+    EXPECT_LE(f.enclosure->lo, c.enclosure->hi) << H << " n = " << n << ": fast " << f.decimal << " certified " << c.decimal;
+    EXPECT_GE(f.enclosure->hi, c.enclosure->lo) << H << " n = " << n << ": fast " << f.decimal << " certified " << c.decimal;
+  }
+}
+
+// The planner: the exact path where it is cheap, the long-delay path beyond; both say so.
+TEST(LongDelay, PlannerChoosesByCost) {
+  const BoundPlan small = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 3));
+  EXPECT_EQ(small.path, BoundPath::exact) << small.why;
+  const BoundPlan large = plan_bound(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 1000));
+  EXPECT_EQ(large.path, BoundPath::long_delay) << large.why;
+  EXPECT_NE(large.why.find("degree 1001"), std::string::npos) << large.why;
+  const Bound b = bound_certified(make("40 + 0.5*(z-1)/(T*z)", "1/1000", {}, 3), 30);
+  EXPECT_EQ(b.path, BoundPath::exact);
+  EXPECT_EQ(b.plan, small.why);
+}
+
+// Bounded work as a cost: the delay in samples is limited (10^6), before anything is allocated;
+// the exact path refuses above its degree when asked for; a pole on the unit circle other than
+// z = -1 with a delay beyond the exact path is refused by name.
+TEST(LongDelay, WorkIsBoundedByName) {
+  for (Method m : {Method::certified, Method::fast, Method::grid}) {
+    try {
+      bound(make("1", "1/1000", {}, 1000001), m);
+      ADD_FAILURE() << "accepted n = 1000001 with " << to_string(m);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("more than the limit of 1000000"), std::string::npos) << e.what();
+    }
+  }
+  BoundProblem frac = make("1", "1/1000", {}, 999999);
+  frac.frac_delay = rational(3, 1000);  // 3 more samples
+  EXPECT_THROW(bound_certified(frac), InputError);
+  try {
+    bound_certified(make("1", "1/1000", {}, 300), 30, BoundPath::exact);
+    ADD_FAILURE() << "the exact path accepted degree 300";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("limit of 200"), std::string::npos) << e.what();
+  }
+  try {  // poles at z = +-j: the exact path's degree is beyond its limit, the long-delay path does not apply
+    bound_certified(make("(z-1)/(z^2+1)", "1/1000", {}, 500));
+    ADD_FAILURE() << "accepted a pole at z = j with n = 500";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unit circle"), std::string::npos) << e.what();
+  }
+}

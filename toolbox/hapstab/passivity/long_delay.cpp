@@ -1,0 +1,510 @@
+// The passivity bound (45)/(54) for any delay nu = n + t_d/T samples without expanding z^-n
+// (the long-delay path; bound_detail.hpp). With H~ = H - rho/(z + 1) (rho = 0 unless H has a
+// simple pole at z = -1) and the c = cos(theta) pieces of H~ without delay (bound.hpp),
+// A = R - (1 + c) Q, E = R + (1 - c) Q, B = |D|^2, the objective is
+//   f(theta) = (T/2) [ (A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta)
+//                      + rho (-1)^n S_n(pi - theta)/2 ] + eta,        S_nu = sin(nu theta) cot(theta/2)
+// (claim 001.eq45.delay_form, proofs/delay_kernels.cpp): low-order rational functions of c times
+// two oscillating kernels, finite on all of [0, pi] in the sinc forms of numeric/jet.hpp.
+// f(0) = (T/2)[A(1)/B(1) + rho + nu (2 E(1)/B(1) + rho)] + eta exactly, and f'(0) = 0 (f is even).
+//
+// Certified: interval branch-and-bound over theta in [0, pi] in Arb balls with order-2 jets:
+// on each box the second-order Taylor form bounds f from above; a box whose bound is below the
+// best proven value is dropped, one where f' has one sign gives its end, one where f is concave
+// (f'' < 0) gives its maximum by interval Newton on f'. The first boxes are ~1/(4 nu) wide (the
+// kernels oscillate with period 2 pi/nu), so the work grows like nu (claim 001.eq45.taylor_bound).
+// Fast: the same f in double, sampled on the same grid, its best local maxima polished by Newton.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/jet.hpp"
+#include "hapstab/passivity/bound_detail.hpp"
+#include "hapstab/poly/sturm.hpp"
+
+namespace hapstab::passivity::detail {
+
+using flint::Ball;
+using jet::Jet;
+
+// ---- the exact pieces -------------------------------------------------------------------------
+std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why) {
+  DelayForm f;
+  f.nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  f.n = p.delay;
+  f.integer_nu = den(f.nu) == 1;
+  if (f.integer_nu) f.n = num(f.nu).convert_to<long>();
+  f.T = p.T;
+  f.eta = p.eta;
+  QRatFun Ht = p.H;
+  const QPoly& D = p.H.den();
+  const QPoly circle = gcd(D, reversed(D));  // H's poles on |z| = 1 (H is stable: no reciprocal pairs)
+  if (circle.degree() > 0) {
+    const QPoly plus_one({rational(1), rational(1)});
+    if (circle.degree() > 1 || !(circle == plus_one || circle == plus_one.monic())) {
+      if (why) *why = "H has a pole on the unit circle at z != -1 (" + to_string(circle, "z") + " divides its denominator)";
+      return std::nullopt;
+    }
+    // a simple pole at z = -1: H = H~ + rho/(z + 1), rho = N(-1)/D'(-1)
+    f.rho = p.H.num()(rational(-1)) / D.derivative()(rational(-1));
+    if (!f.integer_nu && f.rho != 0) {
+      if (why) *why = "H has a pole at z = -1 and the delay t_d/T = " + to_decimal(f.nu, 12) +
+                      " is not a whole number of samples (the objective is unbounded near wT = pi, or decided exactly "
+                      "only by the exact path)";
+      return std::nullopt;
+    }
+    Ht = p.H - QRatFun(QPoly(f.rho), plus_one);
+  }
+  const Objective o = objective(Ht, p.T, 0);
+  const QPoly one_plus_c({rational(1), rational(1)}), one_minus_c({rational(1), rational(-1)});
+  f.A = o.R - one_plus_c * o.Q;
+  f.E = o.R + one_minus_c * o.Q;
+  f.B = o.B;
+  const rational one(1), mone(-1);
+  f.at_zero = p.T / 2 * (f.A(one) / f.B(one) + f.rho + f.nu * (2 * f.E(one) / f.B(one) + f.rho)) + p.eta;
+  if (f.integer_nu) {
+    const rational sign = f.n % 2 == 0 ? 1 : -1;
+    f.at_pi = p.T / 2 * sign * (f.A(mone) / f.B(mone) + f.rho + f.rho * f.nu) + p.eta;
+  }
+  f.constant = f.A.is_zero() && f.E.is_zero() && f.rho == 0;
+  return f;
+}
+
+namespace {
+
+// ---- the objective as a jet, in double or in balls ------------------------------------------
+template <class S>
+struct Form {
+  std::vector<S> A, E, B;  // ascending in c
+  S half_T, rho, half_rho, nu, eta, pi;
+  S parity;           // (-1)^n (integer nu only)
+  S pole_weight;      // rho (-1)^n / 2
+  bool pole = false;  // a pole of H at z = -1 (rho != 0)
+  explicit Form(const DelayForm& f)
+      : half_T(jet::scalar<S>(f.T / 2)), rho(jet::scalar<S>(f.rho)), half_rho(jet::scalar<S>(f.rho / 2)),
+        nu(jet::scalar<S>(f.nu)), eta(jet::scalar<S>(f.eta)), pi(jet::scalar_pi<S>()),
+        parity(f.n % 2 == 0 ? 1.0 : -1.0), pole_weight(jet::scalar<S>(f.rho / 2 * (f.n % 2 == 0 ? 1 : -1))),
+        pole(f.rho != 0) {
+    auto fill = [](std::vector<S>& v, const QPoly& p) {
+      for (const rational& c : p.coeffs()) v.push_back(jet::scalar<S>(c));
+      if (v.empty()) v.push_back(S(0.0));
+    };
+    fill(A, f.A);
+    fill(E, f.E);
+    fill(B, f.B);
+  }
+};
+
+/// f, f', f'' at theta (a point, or every point of a ball).
+template <class S>
+Jet<S> objective_jet(const Form<S>& F, const S& theta) {
+  S sh, ch, snu, cnu;
+  jet::sin_cos(theta * S(0.5), sh, ch);
+  jet::sin_cos(F.nu * theta, snu, cnu);
+  const S s1 = S(2.0) * (sh * ch), c1 = S(1.0) - S(2.0) * (sh * sh);
+  const Jet<S> th = jet::variable(theta);
+  const Jet<S> c{c1, -s1, -c1};
+  const Jet<S> b = jet::horner(F.B, c);
+  const Jet<S> alpha = jet::horner(F.A, c) / b, gamma = jet::horner(F.E, c) / b;
+  const Jet<S> cos_nu{cnu, -(F.nu * snu), -((F.nu * F.nu) * cnu)};
+  const Jet<S> s_nu = jet::kernel_S(th, F.nu, snu, cnu, sh, ch);
+  Jet<S> f = (alpha + jet::constant(F.rho)) * cos_nu + (gamma + jet::constant(F.half_rho)) * s_nu;
+  if (F.pole) {  // S_n(eps), eps = pi - theta: sin(n eps) = -(-1)^n sin(n theta), cos(n eps) = (-1)^n cos(n theta),
+                 // sin(eps/2) = cos(theta/2), cos(eps/2) = sin(theta/2)
+    const Jet<S> eps = jet::constant(F.pi) - th;
+    f = f + F.pole_weight * jet::kernel_S(eps, F.nu, -(F.parity * snu), F.parity * cnu, ch, sh);
+  }
+  Jet<S> out = F.half_T * f;
+  out.v = out.v + F.eta;
+  return out;
+}
+
+// ---- the double scan: where the maximum is, in double (the fast path, and the certified path's
+// first lower bound) ---------------------------------------------------------------------------
+struct Peak {
+  double value, theta;
+};
+
+/// The objective in double on the grid theta_i = pi i/M, the local maxima within the margin a
+/// sample can miss a maximum by (|f''| h^2/2) polished by Newton on f', and the resonances of H
+/// (the minima of B(c)) searched more finely: the best points found, largest value first.
+std::vector<Peak> double_peaks(const DelayForm& df, long M, size_t keep) {
+  const Form<double> F(df);
+  const double pi = 3.14159265358979323846, h = pi / static_cast<double>(M);
+  std::vector<double> v(static_cast<size_t>(M) + 1);
+  v[0] = to_real<double>(df.at_zero);
+  for (long i = 1; i <= M; ++i) v[static_cast<size_t>(i)] = objective_jet(F, h * static_cast<double>(i)).v;
+  std::vector<Peak> peaks{{v[0], 0.0}};
+  // Newton on f' from a start, kept inside [lo, hi]: the best point met
+  auto polish = [&](double x, double lo, double hi) {
+    Peak best{objective_jet(F, x).v, x};
+    for (int it = 0; it < 30; ++it) {
+      const Jet<double> j = objective_jet(F, x);
+      if (j.v > best.value) best = {j.v, x};
+      if (!(j.dd < 0)) break;
+      const double xn = std::clamp(x - j.d / j.dd, lo, hi);
+      if (std::abs(xn - x) <= 1e-16 * std::max(1.0, x)) break;
+      x = xn;
+    }
+    const double fx = objective_jet(F, x).v;
+    if (fx > best.value) best = {fx, x};
+    peaks.push_back(best);
+  };
+  double top = v[0], curvature = 0;
+  std::vector<long> local;
+  for (long i = 1; i <= M; ++i) {
+    top = std::max(top, v[static_cast<size_t>(i)]);
+    if (v[static_cast<size_t>(i)] >= v[static_cast<size_t>(i) - 1] &&
+        (i == M || v[static_cast<size_t>(i)] >= v[static_cast<size_t>(i) + 1])) {
+      local.push_back(i);
+      curvature = std::max(curvature, std::abs(objective_jet(F, h * static_cast<double>(i)).dd));
+    }
+  }
+  const double margin = curvature * h * h / 2;
+  for (long i : local)
+    if (v[static_cast<size_t>(i)] >= top - margin)
+      polish(h * static_cast<double>(i), h * static_cast<double>(i - 1), std::min(pi, h * static_cast<double>(i + 1)));
+  // narrow resonances of H (minima of B(c), its critical points) may fall between samples
+  if (df.B.degree() >= 2)
+    for (const auto& r : isolate_real_roots(df.B.derivative(), rational(-1), rational(1))) {
+      const double c = to_real<double>((r.lo + r.hi) / 2), th = std::acos(std::clamp(c, -1.0, 1.0));
+      double at = th, val = -std::numeric_limits<double>::infinity();
+      for (int k = -16; k <= 16; ++k) {
+        const double x = std::clamp(th + k * h / 8, 0.0, pi);
+        const double fx = objective_jet(F, x).v;
+        if (fx > val) val = fx, at = x;
+      }
+      polish(at, std::max(0.0, at - h), std::min(pi, at + h));
+    }
+  std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.value > b.value; });
+  if (peaks.size() > keep) peaks.resize(keep);
+  return peaks;
+}
+
+// ---- certified: branch-and-bound over theta in Arb balls ------------------------------------
+Ball upper(const Ball& x) { return x.upper_end(); }
+Ball lower(const Ball& x) { return x.lower_end(); }
+bool less(const Ball& a, const Ball& b) { return arb_lt(a.get(), b.get()); }  // exact balls: exact comparison
+
+/// sup over |t| <= r of d t + M t^2/2 for every d in the ball d and M = upper bound of f'' (the
+/// Taylor form's increment over a box of half-width r around its midpoint), as a ball.
+Ball taylor_increment(const Ball& d, const Ball& M, const Ball& r) {
+  const Ball D = upper(flint::abs(d));
+  if (M.negative()) {
+    // concave: the maximum of D t + M t^2/2 is D^2/(-2M) at t = D/(-M), when that is inside [0, r]
+    const Ball t = D / (-M);
+    if (arb_le(upper(t).get(), lower(r).get())) return D * D / (-(M * 2L));
+  }
+  const Ball Mp = M.negative() ? Ball(0L) : M;
+  return D * r + Mp * r * r / Ball(2L);
+}
+
+struct Piece {  // theta in [pi i / (M 2^level), pi (i + 1) / (M 2^level)]
+  long i;
+  int level;
+};
+
+class Maximiser {
+ public:
+  enum class Where { zero, pi, interior };
+  Maximiser(const DelayForm& df, long boxes, int digits) : df_(df), F_(df), M_(boxes), digits_(digits) {
+    // the deepest level whose indices M 2^level stay below 2^62
+    while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
+    budget_ = 200 * M_ + 200000;
+    tol_factor_ = Ball(pow10(-(digits + 3)));
+    L_ = lower(Ball(df.at_zero));
+    H_ = upper(Ball(df.at_zero));
+    best_at_ = Ball(0L);
+    best_hi_ = H_;
+    if (df.at_pi) {
+      add_exact_end(*df.at_pi, Ball::pi());
+    } else {  // fractional nu: f(pi) = (T/2) A(-1)/B(-1) cos(nu pi) + eta, enclosed
+      Ball s, c;
+      jet::sin_cos(F_.nu * F_.pi, s, c);
+      const Ball v = F_.half_T * (Ball(df.A(rational(-1)) / df.B(rational(-1))) * c) + F_.eta;
+      add_candidate(v, F_.pi, Where::pi);
+    }
+  }
+
+  /// Runs the search; false when the work budget ran out before every piece was resolved.
+  bool run() {
+    // the best points of the double scan, evaluated in balls: a proven lower bound near b* from the start
+    for (const Peak& pk : double_peaks(df_, M_, 8)) {
+      if (pk.theta <= 0) continue;
+      raise(lower(eval(Ball(pk.theta)).v));
+    }
+    for (long i = 0; i < M_; ++i) {  // every box, depth first
+      std::vector<Piece> stack{{i, 0}};
+      while (!stack.empty()) {
+        const Piece p = stack.back();
+        stack.pop_back();
+        process(p, stack);
+      }
+    }
+    return unresolved_ == 0;
+  }
+
+  Ball lo() const { return L_; }
+  Ball hi() const { return less(H_, L_) ? L_ : H_; }
+  /// Every upper bound not at an exact end value lies below v (none: true).
+  bool others_below(const rational& v) const {
+    if (arf_is_neg_inf(arb_midref(H_other_.get()))) return true;
+    return H_other_.finite() && H_other_.bounds().hi < v;
+  }
+  const Ball& best_at() const { return best_at_; }
+  Where best_where() const { return best_where_; }
+  long evaluations() const { return evals_; }
+  long unresolved() const { return unresolved_; }  // pieces settled by tolerance, depth or budget
+
+ private:
+  Ball theta(long i, int level) const {  // pi i / (M 2^level)
+    Ball t(i);
+    arb_div_si(t.get(), t.get(), M_, flint::ball_prec);
+    arb_mul_2exp_si(t.get(), t.get(), -level);
+    return t * F_.pi;
+  }
+  Jet<Ball> eval(const Ball& th) {
+    ++evals_;
+    return objective_jet(F_, th);
+  }
+  void raise(const Ball& lo) {
+    if (less(L_, lo)) L_ = lo;
+  }
+  void best(const Ball& u, const Ball& at, Where where) {
+    if (less(best_hi_, u)) best_hi_ = u, best_at_ = at, best_where_ = where;
+  }
+  void add_candidate(const Ball& v, const Ball& at, Where where = Where::interior) {  // a piece's maximum lies in v
+    raise(lower(v));
+    const Ball u = upper(v);
+    if (less(H_, u)) H_ = u;
+    if (less(H_other_, u)) H_other_ = u;
+    best(u, at, where);
+  }
+  void add_exact_end(const rational& v, const Ball& at) {  // f(pi) for an integer delay
+    const Ball b(v);
+    raise(lower(b));
+    const Ball u = upper(b);
+    if (less(H_, u)) H_ = u;
+    best(u, at, Where::pi);
+  }
+  void unresolved(const Ball& ub, const Ball& at) {
+    ++unresolved_;
+    if (less(H_, ub)) H_ = ub;
+    if (less(H_other_, ub)) H_other_ = ub;
+    best(ub, at, Where::interior);
+  }
+  void end_value(long i, int level) {  // the candidate at the grid point pi i/(M 2^level)
+    if (i == 0) return;                            // f(0): an exact end, already counted
+    if (i == (M_ << level) && df_.at_pi) return;   // f(pi) for integer nu: likewise
+    const Ball th = theta(i, level);
+    add_candidate(eval(th).v, th);
+  }
+
+  void process(const Piece& p, std::vector<Piece>& stack) {
+    const long last = M_ << p.level;
+    const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
+    const Ball a = theta(p.i, p.level), b = theta(p.i + 1, p.level);
+    const Ball X = flint::hull(a, b);
+    const Jet<Ball> J = eval(X);
+    const Ball w = upper(b - a);
+    Ball ub;
+    if (at_zero || at_pi) {
+      // f'(0) = 0 (f is even) and f'(pi) = 0 for an integer delay (f is even about pi):
+      // f <= f(end) + max(f'', 0) w^2/2 on the box, and f(end) is the maximum there when f'' <= 0
+      const Ball M = upper(J.dd);
+      if (!M.positive()) return;
+      ub = upper(Ball(at_zero ? df_.at_zero : *df_.at_pi) + M * w * w / Ball(2L));
+    } else {
+      if (J.v.finite() && less(upper(J.v), L_)) return;  // the natural enclosure is enough: one evaluation
+      const Ball m = flint::hull(a, b).mid();
+      const Jet<Ball> Jm = eval(m);
+      raise(lower(Jm.v));
+      ub = upper(Jm.v + taylor_increment(Jm.d, upper(J.dd), upper(w / Ball(2L))));
+    }
+    if (J.v.finite()) ub = less(upper(J.v), ub) ? upper(J.v) : ub;
+    if (less(ub, L_)) return;  // below the best proven value: not the maximum
+    if (J.d.positive()) return end_value(p.i + 1, p.level);  // increasing: the maximum at the right end
+    if (J.d.negative()) return end_value(p.i, p.level);      // decreasing: at the left end
+    if (J.dd.negative() && !at_zero && !at_pi) return concave(X, J, p);
+    // settled: within the tolerance of the best proven value (a flat or degenerate piece), or out
+    // of depth or of budget; its upper bound stays in the enclosure
+    if (less(ub, L_ + tol(L_)) || p.level >= max_level_ || evals_ > budget_) return unresolved(ub, X);
+    stack.push_back({2 * p.i + 1, p.level + 1});
+    stack.push_back({2 * p.i, p.level + 1});
+  }
+
+  /// f'' < 0 on X: at most one critical point, the maximum over X; interval Newton on f' encloses it.
+  void concave(Ball X, Jet<Ball> J, const Piece& p) {
+    bool proven = false;
+    for (int it = 0; it < 80; ++it) {
+      const Ball m = X.mid();
+      const Jet<Ball> Jm = eval(m);
+      const Ball N = m - Jm.d / J.dd;
+      Ball Y;
+      if (!flint::intersect(Y, X, N)) {  // no critical point: f is monotone on X, the maximum at an end
+        end_value(p.i, p.level);
+        end_value(p.i + 1, p.level);
+        return;
+      }
+      if (arb_contains_interior(X.get(), N.get())) proven = true;
+      const bool progress = Y.radius() < 0.5 * X.radius();
+      X = Y;
+      if (!progress && it > 0) break;
+      J = eval(X);
+      if (!J.dd.negative()) break;
+    }
+    // the value over the last X by the mean-value form, intersected with the natural enclosure
+    const Ball m = X.mid();
+    const Jet<Ball> Jm = eval(m), Jx = eval(X);
+    Ball v = Jm.v + Jx.d * (X - m);
+    Ball both;
+    if (Jx.v.finite() && flint::intersect(both, v, Jx.v)) v = both;
+    add_candidate(v, X);
+    if (!proven) {  // the critical point was not shown to exist: the ends may hold the maximum
+      end_value(p.i, p.level);
+      end_value(p.i + 1, p.level);
+    }
+  }
+
+  /// 10^-(digits + 3) relative to |L| (or to T when L is 0): below it a piece needs no refinement.
+  Ball tol(const Ball& L) const {
+    const Ball scale = upper(flint::abs(L));
+    return upper((scale.is_zero() ? F_.half_T : scale) * tol_factor_);
+  }
+
+  const DelayForm& df_;
+  Form<Ball> F_;
+  long M_;
+  int digits_;
+  int max_level_ = 56;
+  long budget_ = 0;
+  Ball tol_factor_;
+  Ball L_, H_, H_other_ = Ball::infinity(false), best_hi_, best_at_;
+  Where best_where_ = Where::zero;
+  long evals_ = 0, unresolved_ = 0;
+};
+
+}  // namespace
+
+// ---- the drivers ----------------------------------------------------------------------------
+long grid_boxes(const rational& nu) {
+  // four boxes per period 2 pi/nu of the kernels over [0, pi] (period / 8 wide), at least 64
+  const integer up = (num(nu) + den(nu) - 1) / den(nu);
+  return 4 * up.convert_to<long>() + 64;
+}
+
+Bound certified_long_delay(const BoundProblem& p, int digits) {
+  std::string why;
+  const std::optional<DelayForm> df = delay_form(p, &why);
+  if (!df) {
+    if (auto inf = fractional_divergence(p)) {  // a pole at z = -1 meeting a fractional delay: +inf
+      inf->path = BoundPath::long_delay;
+      return *inf;
+    }
+    throw NumericalError("the long-delay path does not decide this case: " + why);
+  }
+  Bound out;
+  out.path = BoundPath::long_delay;
+  if (df->constant) {  // H = 0: the objective is eta everywhere
+    out.status = Status::exact;
+    out.enclose(df->eta, df->eta);
+    out.decimal = to_decimal(df->eta, digits);
+    out.omega = "0";
+    out.omega_enclosure = Enclosure<rational>{0, 0};
+    out.where = "constant (every w attains it)";
+    out.method = "exact: H = 0, the objective is eta";
+    return out;
+  }
+  const long boxes = grid_boxes(df->nu);
+  const double lognu = std::log10(to_real<double>(df->nu) + 1);
+  // 128 bits (two limbs, no allocation in Arb) while they hold the digits asked plus those the
+  // kernels' size ~nu costs; a retry doubles them when the enclosure came out wider
+  long bits = std::max<long>(128, static_cast<long>(3.33 * (digits + lognu)) + 12);
+  for (int attempt = 0;; ++attempt, bits *= 2) {
+    flint::BallPrecision scope(bits);
+    Maximiser mx(*df, boxes, digits);
+    const bool complete = mx.run();
+    if (!mx.hi().finite()) {
+      if (attempt < 2) continue;
+      throw NumericalError("the long-delay path could not bound b* from above (" + std::to_string(mx.unresolved()) +
+                           " pieces unresolved at " + std::to_string(bits) + " bits)");
+    }
+    const rational lo = mx.lo().bounds().lo, hi = mx.hi().bounds().hi;
+    const bool narrow = lo == hi || common_decimal(lo, hi, digits).has_value() ||
+                        hi - lo < std::max(abs(lo), abs(hi)) * pow10(-digits - 2);
+    if (!narrow && attempt < 2) continue;
+    // exact when the best value is an exact end (w = 0, or w = pi/T with an integer delay) and
+    // every other piece's upper bound lies below it
+    const rational best_end = df->at_pi ? std::max(df->at_zero, *df->at_pi) : df->at_zero;
+    const bool exact = mx.others_below(best_end) && lo <= best_end && best_end <= hi;
+    if (exact) {
+      out.status = Status::exact;
+      out.enclose(best_end, best_end);
+      out.decimal = to_decimal(best_end, digits);
+    } else {
+      out.status = Status::certified;
+      out.enclose(lo, std::max(lo, hi));
+      out.decimal = enclosure_decimal(lo, std::max(lo, hi), digits);
+    }
+    const bool at_zero = exact ? best_end == df->at_zero : mx.best_where() == Maximiser::Where::zero;
+    const bool at_pi = exact ? !at_zero : mx.best_where() == Maximiser::Where::pi;
+    if (at_zero) {
+      out.omega = "0";
+      out.omega_enclosure = Enclosure<rational>{0, 0};
+      out.where = "w = 0";
+    } else {
+      const Enclosure<rational> th = (at_pi ? Ball::pi() : mx.best_at()).bounds();
+      out.omega_enclosure = Enclosure<rational>{th.lo / p.T, th.hi / p.T};
+      out.omega = enclosure_decimal(out.omega_enclosure->lo, out.omega_enclosure->hi, std::min(digits, 17));
+      out.where = at_pi ? "w = pi/T" : "interior";
+    }
+    out.method = "certified: long-delay branch-and-bound over w in Arb balls (nu = " + to_decimal(df->nu, 12) +
+                 " samples, never expanded: " + std::to_string(boxes) + " boxes, " + std::to_string(mx.evaluations()) +
+                 " evaluations of f, f', f'', interval Newton; " + std::to_string(bits) + " bits)";
+    (void)complete;  // pieces settled within the tolerance, out of depth or budget: their bounds are in the enclosure
+    if (!narrow) out.note += std::string(out.note.empty() ? "" : "; ") + "the enclosure is wider than " +
+                             std::to_string(digits) + " digits at " + std::to_string(bits) + " bits";
+    return out;
+  }
+}
+
+}  // namespace hapstab::passivity::detail
+
+namespace hapstab::passivity {
+
+std::optional<FastLongDelay> fast_long_delay(const BoundProblem& p) {
+  using namespace detail;
+  const std::optional<DelayForm> df = delay_form(p, nullptr);
+  if (!df) return std::nullopt;
+  if (df->constant) return FastLongDelay{to_real<double>(df->eta), 0.0, 0.0};
+  const Peak best = double_peaks(*df, grid_boxes(df->nu), 1).front();
+  // the rounding error of f at the maximiser, to first order: each Horner sum p(c) is off by
+  // ~ deg eps sum|p_i c^i|, the argument nu theta by ~ eps nu theta (times f's derivative in it),
+  // and the sums of the terms by eps times their sizes
+  const Form<double> F(*df);
+  const double th = best.theta, c = std::cos(th), eps = std::ldexp(1.0, -52);
+  auto cond = [&](const std::vector<double>& q, double& value) {  // sum |q_i c^i| and q(c)
+    double s = 0, v = 0, ci = 1;
+    for (double x : q) s += std::abs(x) * ci, ci *= std::abs(c);
+    for (size_t i = q.size(); i-- > 0;) v = v * c + q[i];
+    value = v;
+    return s * static_cast<double>(q.size());
+  };
+  double a, e, b;
+  const double ca = cond(F.A, a), ce = cond(F.E, e), cb = cond(F.B, b);
+  const double nu = to_real<double>(df->nu), S = th > 0 ? std::abs(std::sin(nu * th) / std::tan(th / 2)) : 2 * nu;
+  const double half_T = to_real<double>(df->T) / 2, rho = std::abs(to_real<double>(df->rho));
+  const double alpha = std::abs(a / b), gamma = std::abs(e / b);
+  const double horner = half_T * ((ca + std::abs(a) * cb / std::abs(b)) + (ce + std::abs(e) * cb / std::abs(b)) * S) / std::abs(b);
+  const double sums = 4 * half_T * ((alpha + rho) + (gamma + rho) * S + rho * nu);
+  // d f/d(nu theta) <= (T/2)(|alpha| + rho + (|gamma| + rho) cot(theta/2)); nu theta is off by eps nu theta
+  const double argument = th > 0 ? nu * th * half_T * (alpha + rho + (gamma + rho) / std::tan(th / 2)) : 0;
+  const double err = eps * (horner + sums + argument);
+  return FastLongDelay{best.value, best.theta / to_real<double>(p.T),
+                       16 * err / std::max(std::abs(best.value), std::numeric_limits<double>::min())};
+}
+
+}  // namespace hapstab::passivity
