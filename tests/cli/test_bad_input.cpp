@@ -101,7 +101,7 @@ std::vector<Case> catalogue(const std::string& out) {
       {"stability", "--max", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--max", "K"}, "does not depend on K"},
       {"stability", "--max", {"--plant", "1/(m*s^2)", "--H", "1", "--T", "1", "--max", "m"}, "appears in --plant"},
       {"stability", "--scene", {"--scene", "no/such/scene.toml"}, "no/such/scene.toml"},
-      {"stability", "--scene", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/hidden_env.toml", "--H", "1"}, "--H cannot be combined with --scene"},
+      {"stability", "--scene", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/hidden_env.toml", "--H", "1"}, "--scene replaces --plant, --H"},
       {"stability", "--scene", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/scene/data/bias_wall_contacts.toml"}, "unknown section [contacts]"},
       {"stability", "--scene", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/002_bias_wall.toml"}, "stability does not model [contact]"},
       {"stability", "--max", {"--plant", "1/s^2", "--H", "1/(1+K*z)", "--T", "1", "--max", "K"}, "affine"},

@@ -528,7 +528,7 @@ TEST(MultidofAnalysis, StructuredKypPathAgreesWithGenericSdp) {
     if (!gen.verdict.holds()) continue;
     EXPECT_TRUE(kyp.verdict.proven()) << c.what;
     ASSERT_TRUE(kyp.min_found && gen.min_found) << c.what;
-    EXPECT_TRUE(kyp.min_certified) << c.what;
+    EXPECT_TRUE(kyp.min_point_certified) << c.what;
     // both approach the same infimum from above: the IPM to its relative gap 1e-8 with strict
     // LMIs shifted by 1e-7 (equilibrated), the bisection to 1e-7 of its bracket plus 1e-6 of it
     // for the certified point; 1e-4 relative (+1e-9 absolute, the positive floor) covers both

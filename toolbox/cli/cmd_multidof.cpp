@@ -7,15 +7,19 @@
 // hapstab/multidof/scene_multidof.hpp.
 // JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds:
 //   Theorem 5's conclusion, stable for every coupling whose Delta_V >= delta_v_required),
-//   loop_as_written {stable (true|false|null), coupling, method, status, why} (the scene's own
-//   loop: multidof/loop_as_written.hpp), delay (n of [delay] z^-n, folded into E),
-//   certified, verdict, certificate, gamma (gamma_i of Gamma),
-//   x (the g_i of X), q_v, delta_v_required, margin, facial_reduction, least_dissipative
-//   {q_v, norm, delta_v, gamma, certified}, assumptions [{name, holds, outcome (holds|fails|
-//   undecided), certified, detail}].
+//   loop_as_written {stable (true|false|null), coupling, method, status, why, states,
+//   spectral_radius_numeric} (the scene's own loop: multidof/loop_as_written.hpp), hidden_modes
+//   [{block, kind, where, abs|re, stable}] (sim/hidden_modes.hpp), delay (n of [delay] z^-n, folded
+//   into E), certified, verdict, certificate, gamma (gamma_i of Gamma), x (the g_i of X), q_v,
+//   delta_v_required, margin, facial_reduction, least_dissipative {q_v, norm, delta_v, gamma,
+//   point_certified, minimality (numeric: only the point is checked exactly)}, assumptions [{name,
+//   holds, outcome (holds|fails|undecided), certified, detail}] (Assumption 1, then the premises on
+//   the blocks' hidden modes).
 // JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
-//   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict, certified,
-//   detail}], message, assumptions.
+//   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict (pass|fail|
+//   undecided), certified, detail}], loop_with_v (as loop_as_written, for the loop with the designed
+//   V), facial_reduction, hidden_modes, warning (the simulation's numeric observation, or null),
+//   contradiction (a simulation against a certificate, or null: exit 3), message, assumptions.
 // It also registers Fig. 6 and Fig. 7 of paper 000 (`hapstab figure multidof_fig6|multidof_fig7`):
 // velocity data without coupling, with the designed V and with the paper's (27).
 // Human output ends with a verdict line "=> ..." in every case.
@@ -23,7 +27,8 @@
 // stabilising V found and verified (design), 1 not feasible, not verified, Assumption 1 fails
 // or is undecided, or the loop as written is proven unstable, 2 bad input (inconsistent block
 // sizes, unstable E, non-square E, a fractional [delay], a declared osp above the device's
-// level), 3 numerical failure.
+// level, a size beyond numeric/limits.hpp), 3 numerical failure or a contradiction between the
+// simulation and a certificate (design).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -211,7 +216,9 @@ int run_analyze(const Opts& o) {
                               {"norm", r.Q_V_min_norm},
                               {"delta_v", mat(r.delta_V_min)},
                               {"gamma", r.gamma_sqrt_min},
-                              {"certified", r.min_certified}};
+                              {"point_certified", r.min_point_certified},
+                              {"minimality", "numeric: the solver's optimum or the structured path's floating-point "
+                                             "bisection (only the point is checked exactly)"}};
   const bool as_written_unstable = law.stable && !*law.stable;
   if (o.json) {
     print_json(j);
@@ -230,7 +237,7 @@ int run_analyze(const Opts& o) {
       print_matrix(r.delta_V);
       if (r.min_found)
         std::cout << "  least dissipative point: ||Q_V||_2 = " << r.Q_V_min_norm
-                  << (r.min_certified ? " (certified point)" : "")
+                  << (r.min_point_certified ? " (certified point)" : "")
                   << (r.Q_V_min_norm < 1e-6 * std::max(1.0, r.Q_V.norm())
                           ? "; Q_V > 0 can be made this small, so the requirement on the coupling shrinks with it "
                             "(the infimum 0 is not attained)\n"

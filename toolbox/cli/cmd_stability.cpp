@@ -187,7 +187,13 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
 int run_scene(const StabilityOpts& o) {
   if (!o.plant.empty() || !o.H.empty() || !o.op.empty() || !o.T.empty() || o.delay != 0)
     throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
-  const auto sc = scene::load_scene(o.scene, cli::parse_sets(o.sets));
+  const auto sc = [&] {
+    try {
+      return scene::load_scene(o.scene, cli::parse_sets(o.sets));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--scene: ") + e.what());
+    }
+  }();
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
   const stability::LoopVerdict v = stability::decide_loop(sc.loop);
   nlohmann::json hidden = nlohmann::json::array();

@@ -574,7 +574,7 @@ void least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Option
   const ScaledPoint p = scaled_point(cs, ev, QV);
   std::string why;
   res.min_found = true;
-  res.min_certified = exact_recheck(pb, sp, p.env, p.QV, why);
+  res.min_point_certified = exact_recheck(pb, sp, p.env, p.QV, why);
   res.Q_V_min = to_double(p.QV);
   const MatrixXd X = to_double(p.env.X);
   res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);
@@ -750,7 +750,7 @@ bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned&
   if (!p) return false;  // no point to report: the generic program decides
   res.sdp_seconds += p->numeric_seconds;
   res.min_found = true;
-  res.min_certified = p->certified;
+  res.min_point_certified = p->certified;
   res.Q_V_min = to_double(p->QV);
   const MatrixXd X = to_double(p->env.X);
   res.delta_V_min = gamma_inv_scale(res.Q_V_min, X);

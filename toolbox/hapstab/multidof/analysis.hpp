@@ -73,8 +73,10 @@ struct AnalysisResult {
   std::vector<double> gamma_sqrt;   ///< the gamma_i of Gamma = sqrt(X)
   Eigen::MatrixXd X, Q_E, Q_V, delta_V;  ///< delta_V = Gamma^-1 Q_V Gamma^-1 (coupling requirement)
   FacialConditions facial;
-  // least dissipative coupling: minimise ||Q_V||_2 (spectral norm) subject to (16)
-  bool min_found = false, min_certified = false;
+  // least dissipative coupling: minimise ||Q_V||_2 (spectral norm) subject to (16). The point is
+  // re-checked exactly (min_point_certified); its minimality is numeric (the solver's optimum, or
+  // the structured path's floating-point bisection), never certified.
+  bool min_found = false, min_point_certified = false;
   Eigen::MatrixXd Q_V_min, delta_V_min;
   double Q_V_min_norm = 0;
   std::vector<double> gamma_sqrt_min;

@@ -505,8 +505,8 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   const bool blockwise_certificate = checks.has_value();
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, mp->env.X, mp->QV, opt.lmi);
   std::ostringstream o;
-  o << "block-wise design: Q_V from the structured path (the least along Q_E = " << qe_text(*mp) << "; diagonal, " << qv_range(mp->QV)
-    << ", certified), then CCL for each of the " << blocks.size() << " blocks of V with Q, Y block diagonal and Q_V fixed at (1 + "
+  o << "block-wise design: Q_V from the structured path (along Q_E = " << qe_text(*mp) << " at the least a floating-point "
+       "bisection found; diagonal, " << qv_range(mp->QV) << "; the point certified, its minimality numeric), then CCL for each of the " << blocks.size() << " blocks of V with Q, Y block diagonal and Q_V fixed at (1 + "
     << to_real<double>(kBlockwiseMargin) << ") times it; "
     << (res.converged ? "CCL converged in every block" : "CCL did not reach the trace target in " + std::to_string(unconverged) + " blocks")
     << (blockwise_certificate ? "" : "; the block-wise certificate did not hold, checked by the generic programs");

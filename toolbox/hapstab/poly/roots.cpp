@@ -18,6 +18,16 @@ namespace hapstab {
 
 namespace {
 
+// A rational rounded down / up to a double (exact when it is one).
+double to_real_down(const rational& q) {
+  const double d = to_real<double>(q);
+  return rational(d) > q ? std::nextafter(d, -INFINITY) : d;
+}
+double to_real_up(const rational& q) {
+  const double d = to_real<double>(q);
+  return rational(d) < q ? std::nextafter(d, INFINITY) : d;
+}
+
 // [lo, hi] of an arb, rounded outward to doubles.
 void outward(const arb_t x, double& lo, double& hi) {
   arf_t a;
@@ -47,7 +57,8 @@ std::string RootEnclosure::text(const char* var, bool pair) const {
 
 namespace {
 
-// The distinct roots of one square-free integer polynomial f, each with multiplicity `mult`.
+// The distinct roots of one square-free (here: irreducible) integer polynomial f, each with
+// multiplicity `mult`.
 void enclose_squarefree(const fmpz_poly_t f, int mult, std::vector<RootEnclosure>& out) {
   const slong deg = fmpz_poly_degree(f);
   if (deg < 1) return;
@@ -91,11 +102,26 @@ std::vector<RootEnclosure> enclose_roots(const Polynomial<rational>& p) {
   fmpz_poly_t num;
   fmpz_poly_init(num);
   fmpq_poly_get_numerator(num, P.get());
-  fmpz_poly_factor_t fac;  // p = c prod f_k^{e_k}, the f_k square-free and pairwise coprime (Yun)
+  fmpz_poly_factor_t fac;  // p = c prod f_k^{e_k}, the f_k irreducible over Z (Zassenhaus)
   fmpz_poly_factor_init(fac);
-  fmpz_poly_factor_squarefree(fac, num);
+  fmpz_poly_factor(fac, num);
   try {
-    for (slong k = 0; k < fac->num; ++k) enclose_squarefree(fac->p + k, static_cast<int>(fac->exp[k]), out);
+    for (slong k = 0; k < fac->num; ++k) {
+      const fmpz_poly_struct* f = fac->p + k;
+      const int mult = static_cast<int>(fac->exp[k]);
+      if (fmpz_poly_degree(f) == 1) {  // a rational root -b/a, exactly
+        const rational root = -rational(flint::to_integer(fmpz_poly_get_coeff_ptr(f, 0))) / rational(flint::to_integer(fmpz_poly_get_coeff_ptr(f, 1)));
+        RootEnclosure r;
+        r.re_lo = to_real_down(root);
+        r.re_hi = to_real_up(root);
+        r.abs_lo = root < 0 ? -r.re_hi : r.re_lo;
+        r.abs_hi = root < 0 ? -r.re_lo : r.re_hi;
+        r.multiplicity = mult;
+        out.push_back(r);
+      } else {
+        enclose_squarefree(f, mult, out);
+      }
+    }
   } catch (...) {
     fmpz_poly_factor_clear(fac);
     fmpz_poly_clear(num);

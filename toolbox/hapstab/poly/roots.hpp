@@ -1,11 +1,12 @@
 // hapstab/poly/roots.hpp -- certified enclosures of the complex roots of a polynomial with
 // rational coefficients: where a mode is, printed with a proof that it is there.
 //
-// The square-free part s = p / gcd(p, p') (exact, FLINT) is handed to Arb's acb_poly_find_roots
-// at 64, 128, ... bits until every root of s is isolated in its own complex ball (Arb proves that
-// each output ball holds exactly one root; the multiplicity is then counted exactly from p). Each
-// enclosure is returned as outward-rounded double intervals for Re, Im and |z|, so that a
-// caller can say "z in [1.9999999999999998, 2.0000000000000004]" and know it holds.
+// p is factored over Z (FLINT, Zassenhaus): a linear factor is a rational root, given exactly
+// (rounded outward to doubles: z = 2, s = 0 print as such); every other irreducible factor is
+// handed to Arb's acb_poly_find_roots at 64, 128, ... bits until each of its roots is isolated in
+// its own complex ball (Arb proves that each ball holds exactly one root); the multiplicity is the
+// factor's exponent, exactly. Each enclosure is returned as outward-rounded double intervals for
+// Re, Im and |z|, so that a caller can say "z in [0.4999999999, 0.5000000001]" and know it holds.
 #pragma once
 
 #include <string>
