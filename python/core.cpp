@@ -21,6 +21,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <future>
 #include <cstring>
 #include <iostream>
 #include <limits>
@@ -32,6 +34,7 @@
 #include "cli/mat_file.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interrupt.hpp"
 #include "hapstab/study/threads.hpp"
 #include "python/binding.hpp"
 #include "python/forked.hpp"
@@ -185,6 +188,38 @@ std::string point_error(const std::exception& e) {
   if (dynamic_cast<const InputError*>(&e)) return e.what();
   if (dynamic_cast<const NumericalError*>(&e)) return std::string("numerical failure: ") + e.what();
   return std::string("internal error: ") + e.what();
+}
+
+void run_interruptible(const std::function<void()>& work) {
+  std::atomic<bool> stop{false};
+  auto task = std::async(std::launch::async, [&] {
+    InterruptScope scope(stop);
+    work();
+  });
+  bool interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    while (task.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+      bool signalled;
+      {
+        py::gil_scoped_acquire gil;
+        signalled = PyErr_CheckSignals() != 0;  // the exception stays set for this thread
+      }
+      if (signalled) {
+        interrupted = stop = true;
+        task.wait();  // until the work reaches its next interruption point
+        break;
+      }
+    }
+  }
+  if (interrupted) {
+    try {
+      task.get();
+    } catch (...) {  // Interrupted, or whatever the work raised meanwhile: Ctrl-C is the answer
+    }
+    throw py::error_already_set();
+  }
+  task.get();
 }
 
 PointColumns::PointColumns(size_t n)
@@ -360,6 +395,7 @@ PYBIND11_MODULE(_core, m) {
   register_passivity(m);
   register_stability(m);
   register_scene(m);
+  register_multidof(m);
   m.def(
       "run",
       [](const std::vector<std::string>& args) -> py::tuple {
