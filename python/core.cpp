@@ -6,9 +6,12 @@
 // return its results as Python objects and numpy arrays; long calls release the GIL, and the
 // vectorised ones poll Ctrl-C between points.
 //
-// A forked child remains for what runs long inside code that cannot be interrupted and is not
-// thread-safe, where Ctrl-C must still stop it at once: the SDP solvers of multidof, the sweep's
-// worker processes, and run() (the command line itself, the escape hatch). The parent waits on a
+// A long library computation (a simulation, multidof's LMIs and design) runs on a worker thread
+// instead (run_interruptible): Ctrl-C asks it to stop at its next interruption point
+// (numeric/interrupt.hpp: each LMI solve -- the SDP back-ends are serialised by a mutex, CSDP in
+// a child process of its own --, IPM iteration, Riccati point, simulation block).
+// A forked child remains for the sweep's worker processes and run() (the command line itself,
+// the escape hatch), where Ctrl-C must stop a whole command at once. The parent waits on a
 // pipe with the GIL released and checks for signals every 20 ms; Ctrl-C kills the child. The
 // child answers with one JSON document (the pipe's format, not a result format):
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
