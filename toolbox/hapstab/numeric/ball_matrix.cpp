@@ -19,16 +19,7 @@ constexpr long kPrec = 128;
 
 // A ball as a double midpoint (nearest) and a radius that also covers that rounding.
 void to_double(const arb_t x, double& mid, double& rad) {
-  if (!arb_is_finite(x)) throw NumericalError("ball matrix: Arb lost the enclosure (non-finite ball)");
-  mid = arf_get_d(arb_midref(x), ARF_RND_NEAR);
-  arf_t d;
-  arf_init(d);
-  arf_set_d(d, mid);
-  arf_sub(d, d, arb_midref(x), 64, ARF_RND_UP);
-  const double rounding = std::fabs(arf_get_d(d, ARF_RND_UP));
-  arf_clear(d);
-  const double r = mag_get_d(arb_radref(x)) + rounding;  // mag_get_d rounds up
-  rad = r > 0 ? std::nextafter(r, INFINITY) : 0.0;
+  if (!flint::to_double_ball(x, mid, rad)) throw NumericalError("ball matrix: Arb lost the enclosure (non-finite ball)");
 }
 
 void load(flint::BallMat& out, const BallMatrix& A) {
