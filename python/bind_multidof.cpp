@@ -50,7 +50,7 @@ py::dict loop_dict(const multidof::LoopAsWritten& law) {
   d["status"] = law.stable ? to_string(law.status) : "undecided";
   d["why"] = law.why;
   d["states"] = law.states;
-  d["spectral_radius_numeric"] = law.spectral_radius;
+  d["spectral_radius_numeric"] = law.spectral_radius ? py::object(py::float_(*law.spectral_radius)) : py::object(py::none());
   return d;
 }
 

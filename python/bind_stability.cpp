@@ -178,7 +178,7 @@ py::dict scene_record(const stability::LoopVerdict& v, const scene::Scene& sc) {
   d["evidence"] = v.why;
   d["dofs"] = sc.loop.dofs();
   d["states"] = v.states;
-  d["spectral_radius_numeric"] = v.spectral_radius;
+  d["spectral_radius_numeric"] = v.spectral_radius ? py::object(py::float_(*v.spectral_radius)) : py::object(py::none());
   d["hidden_modes"] = hidden_modes(v.hidden);
   d["hidden_summary"] = v.hidden.summary();
   d["scene"] = sc.file;
@@ -222,7 +222,7 @@ py::dict stability_scene_many(const std::string& scene, bool is_text, const std:
     try {
       const scene::Scene sc = scene::parse_scene(text, file, cols.at(fixed, i), base);
       const stability::LoopVerdict v = stability::decide_loop(sc.loop);
-      c.value[i] = c.lo[i] = c.hi[i] = v.spectral_radius;
+      c.value[i] = c.lo[i] = c.hi[i] = v.spectral_radius.value_or(std::numeric_limits<double>::quiet_NaN());
       c.status[i] = code_numeric;
       states[i] = double(v.states);
       evidence[i] = v.why;

@@ -457,6 +457,8 @@ def _stability_scene(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operato
                            "spectral radius in double, verdict: stable/verdict_status", arrays)
     d = _call(_core.stability_scene, source, s.text is not None, fixed)
     radius = d["spectral_radius_numeric"]
+    if radius is None:  # not computed: a hidden mode decided the loop
+        radius = float("nan")
     rec = {"value_exact": None, "mid": radius, "lo": radius, "hi": radius, "lo_text": None, "hi_text": None,
            "status": "numeric", "method": "spectral radius of the closed-loop matrix in double (" + (d["method"] or
                                                                                                    "not decided") + ")",

@@ -122,7 +122,7 @@ json law_json(const multidof::LoopAsWritten& law) {
           {"status", law.stable ? to_string(law.status) : "undecided"},
           {"why", law.why},
           {"states", law.states},
-          {"spectral_radius_numeric", law.spectral_radius}};
+          {"spectral_radius_numeric", law.spectral_radius ? nlohmann::json(*law.spectral_radius) : nlohmann::json(nullptr)}};
 }
 
 // Every hidden mode of every block as written: {block, kind, where, abs ([lo, hi], discrete

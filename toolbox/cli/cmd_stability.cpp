@@ -205,7 +205,7 @@ int run_scene(const StabilityOpts& o) {
                    {"evidence", v.why},
                    {"dofs", sc.loop.dofs()},
                    {"states", v.states},
-                   {"spectral_radius_numeric", v.spectral_radius},
+                   {"spectral_radius_numeric", v.spectral_radius ? nlohmann::json(*v.spectral_radius) : nlohmann::json(nullptr)},
                    {"hidden_modes", hidden}};
   if (o.json) cli::print_json(j);
   else

@@ -35,7 +35,7 @@ struct LoopAsWritten {
   std::string method;               ///< "hidden mode", "Theorem 4 with the scene's coupling", the decider's method
   std::string why;                  ///< what was proven, or why nothing was
   long states = 0;                  ///< order of the closed-loop matrix when that decided
-  double spectral_radius = 0;       ///< numeric, when computed
+  std::optional<double> spectral_radius;  ///< numeric; nullopt when not computed
 };
 
 /// `assumptions_hold`: Assumption 1 holds for the scene (needed by step 2).

@@ -41,7 +41,7 @@ struct LoopVerdict {
   std::string why;             ///< what was proven, or why nothing was
   sim::LoopHiddenModes hidden; ///< every block's hidden modes (stable ones are not repeated in why)
   long states = 0;             ///< order of the closed loop (the matrix method), 0 otherwise
-  double spectral_radius = 0;  ///< numeric (double) spectral radius of the closed loop, when computed
+  std::optional<double> spectral_radius;  ///< numeric (double) spectral radius of the closed loop; nullopt when not computed (a hidden mode decided)
 };
 
 /// Exact M up to this order is decided by Schur-Cohn on det(zI - M); beyond, by balls.
