@@ -1,0 +1,544 @@
+// The supremum of a parameter of the loop as written, any number of DOF (see loop_max.hpp).
+#include "hapstab/stability/loop_max.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <sstream>
+
+#include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/ball_matrix.hpp"
+#include "hapstab/numeric/ball_matrix_arb.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/sim/closed_loop.hpp"
+#include "hapstab/stability/loop_as_written.hpp"
+
+namespace hapstab::stability {
+
+namespace {
+
+using flint::Ball;
+using flint::BallMat;
+
+bool equal(const MatQ& a, const MatQ& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      if (a(i, j) != b(i, j)) return false;
+  return true;
+}
+
+std::string num(double x, int digits = 6) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << x;
+  return o.str();
+}
+
+void load(BallMat& out, const MatQ& A, long prec) {
+  flint::QMat q = flint::to_qmat(A);
+  arb_mat_set_fmpq_mat(out.get(), q.get(), prec);
+}
+
+// dst[r0.., c0..] := src (or += when add)
+void put(BallMat& dst, long r0, long c0, const BallMat& src, bool add, long prec) {
+  for (long i = 0; i < src.rows(); ++i)
+    for (long j = 0; j < src.cols(); ++j) {
+      arb_struct* d = dst.at(r0 + i, c0 + j);
+      const arb_struct* s = arb_mat_entry(src.get(), i, j);
+      if (add) arb_add(d, d, s, prec);
+      else arb_set(d, s);
+    }
+}
+
+// The plant over the period at `prec` bits (sim/closed_loop.hpp): Phi_T, and the input matrices of
+// u_{k-n} (Gn) and, with a fractional delay, of u_{k-n-1} (Go). Van Loan: exp([[A, B], [0, 0]] h).
+struct ArbZoh {
+  std::unique_ptr<BallMat> Phi, Gn, Go;
+};
+void van_loan(BallMat& Phi, BallMat& G, const MatQ& A, const MatQ& B, const rational& h, long prec) {
+  const long ns = static_cast<long>(A.rows()), m = static_cast<long>(B.cols());
+  MatQ V = MatQ::Zero(ns + m, ns + m);
+  V.topLeftCorner(ns, ns) = A * h;
+  V.topRightCorner(ns, m) = B * h;
+  BallMat X(ns + m, ns + m), E(ns + m, ns + m);
+  load(X, V, prec);
+  arb_mat_exp(E.get(), X.get(), prec);
+  for (long i = 0; i < ns; ++i) {
+    for (long j = 0; j < ns; ++j) arb_set(Phi.at(i, j), E.at(i, j));
+    for (long j = 0; j < m; ++j) arb_set(G.at(i, j), E.at(i, ns + j));
+  }
+}
+ArbZoh plant_zoh(const LoopFamily& F, long prec) {
+  const long ns = static_cast<long>(F.A.rows()), N = F.N;
+  ArbZoh z{std::make_unique<BallMat>(ns, ns), std::make_unique<BallMat>(ns, N), std::make_unique<BallMat>(ns, N)};
+  BallMat G(ns, N);
+  van_loan(*z.Phi, G, F.A, F.Bu, F.T, prec);
+  if (F.f > 0) {
+    BallMat Pf(ns, ns), Gf(ns, N), Pr(ns, ns);
+    van_loan(Pf, Gf, F.A, F.Bu, F.f, prec);
+    van_loan(Pr, *z.Gn, F.A, F.Bu, F.T - F.f, prec);
+    arb_mat_mul(z.Go->get(), Pr.get(), Gf.get(), prec);
+  } else {
+    arb_mat_set(z.Gn->get(), G.get());
+  }
+  return z;
+}
+
+long slots(const LoopFamily& F) { return F.n + (F.f > 0 ? 1 : 0); }
+long order(const LoopFamily& F) { return static_cast<long>(F.A.rows() + F.Kx0.rows()) + slots(F) * F.N; }
+
+// M of sim/closed_loop.cpp with the controller rows (Ku, Kx); `constant` false leaves out what does
+// not depend on them (Phi, the delayed inputs' blocks, the buffer's shift): M1 from (dKu, dKx).
+void assemble(BallMat& M, const LoopFamily& F, const ArbZoh& z, const MatQ& Ku, const MatQ& Kx, bool constant, long prec) {
+  const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(Kx.rows()), N = F.N, n = F.n;
+  const long nb = slots(F) * N;
+  arb_mat_zero(M.get());
+  BallMat Kub(N, ns + nc), Kxb(nc, ns + nc);
+  load(Kub, Ku, prec);
+  load(Kxb, Kx, prec);
+  if (constant) put(M, 0, 0, *z.Phi, false, prec);
+  if (n == 0) {
+    BallMat GK(ns, ns + nc);
+    arb_mat_mul(GK.get(), z.Gn->get(), Kub.get(), prec);
+    put(M, 0, 0, GK, true, prec);
+  } else if (constant) {
+    put(M, 0, ns + nc + (n - 1) * N, *z.Gn, false, prec);
+  }
+  if (F.f > 0 && constant) put(M, 0, ns + nc + n * N, *z.Go, false, prec);
+  put(M, ns, 0, Kxb, false, prec);
+  if (nb > 0) {
+    put(M, ns + nc, 0, Kub, false, prec);
+    if (constant)
+      for (long j = N; j < nb; ++j) arb_one(M.at(ns + nc + j, ns + nc + j - N));
+  }
+}
+
+// M0 and M1 at `prec` bits.
+struct ArbFamily {
+  std::unique_ptr<BallMat> M0, M1;
+};
+ArbFamily arb_family(const LoopFamily& F, long prec) {
+  const long nx = order(F);
+  ArbFamily a{std::make_unique<BallMat>(nx, nx), std::make_unique<BallMat>(nx, nx)};
+  const ArbZoh z = plant_zoh(F, prec);
+  assemble(*a.M0, F, z, F.Ku0, F.Kx0, true, prec);
+  assemble(*a.M1, F, z, F.dKu, F.dKx, false, prec);
+  return a;
+}
+
+Eigen::MatrixXd mid(const BallMat& B) {
+  Eigen::MatrixXd m(B.rows(), B.cols());
+  for (long i = 0; i < B.rows(); ++i)
+    for (long j = 0; j < B.cols(); ++j) m(i, j) = arf_get_d(arb_midref(arb_mat_entry(B.get(), i, j)), ARF_RND_NEAR);
+  return m;
+}
+
+// ---- step 2: the Krawczyk operator of the crossing system (loop_max.hpp) ----
+struct CrossingSystem {
+  const BallMat& M0;
+  const BallMat& M1;
+  bool complex;          // unknowns (a, b, p, theta); else (a, p) with z = sigma
+  double sigma = 1;      // z = +-1 (real case)
+  Eigen::VectorXd cr, ci;  // the normalising vector c
+  long n() const { return M0.rows(); }
+  long size() const { return complex ? 2 * n() + 2 : n() + 1; }
+};
+
+// F(x) and, when J != nullptr, its Jacobian, for every point of the ball vector x (m x 1).
+void evaluate(const CrossingSystem& S, const BallMat& x, BallMat& Fv, BallMat* J, long prec) {
+  const long n = S.n(), m = S.size();
+  const long ip = S.complex ? 2 * n : n;
+  BallMat Mp(n, n), a(n, 1), b(n, 1), Ma(n, 1), Mb(n, 1), M1a(n, 1), M1b(n, 1);
+  arb_mat_scalar_mul_arb(Mp.get(), S.M1.get(), arb_mat_entry(x.get(), ip, 0), prec);
+  arb_mat_add(Mp.get(), Mp.get(), S.M0.get(), prec);
+  for (long i = 0; i < n; ++i) {
+    arb_set(a.at(i, 0), arb_mat_entry(x.get(), i, 0));
+    if (S.complex) arb_set(b.at(i, 0), arb_mat_entry(x.get(), n + i, 0));
+  }
+  arb_mat_mul(Ma.get(), Mp.get(), a.get(), prec);
+  arb_mat_mul(M1a.get(), S.M1.get(), a.get(), prec);
+  Ball c, s, t;
+  if (S.complex) {
+    arb_mat_mul(Mb.get(), Mp.get(), b.get(), prec);
+    arb_mat_mul(M1b.get(), S.M1.get(), b.get(), prec);
+    arb_sin_cos(s.get(), c.get(), arb_mat_entry(x.get(), ip + 1, 0), prec);
+  } else {
+    arb_set_d(c.get(), S.sigma);
+  }
+  arb_mat_zero(Fv.get());
+  for (long i = 0; i < n; ++i) {
+    arb_struct* f1 = Fv.at(i, 0);
+    arb_mul(t.get(), c.get(), a.at(i, 0), prec);
+    arb_sub(f1, Ma.at(i, 0), t.get(), prec);
+    if (S.complex) {
+      arb_addmul(f1, s.get(), b.at(i, 0), prec);
+      arb_struct* f2 = Fv.at(n + i, 0);
+      arb_mul(t.get(), c.get(), b.at(i, 0), prec);
+      arb_sub(f2, Mb.at(i, 0), t.get(), prec);
+      arb_submul(f2, s.get(), a.at(i, 0), prec);
+    }
+  }
+  // the normalisation rows
+  arb_struct* g1 = Fv.at(ip, 0);
+  for (long i = 0; i < n; ++i) {
+    arb_set_d(t.get(), S.cr(i));
+    arb_addmul(g1, t.get(), a.at(i, 0), prec);
+    if (S.complex) {
+      arb_struct* g2 = Fv.at(ip + 1, 0);
+      arb_set_d(t.get(), S.ci(i));
+      arb_addmul(g1, t.get(), b.at(i, 0), prec);
+      arb_submul(g2, t.get(), a.at(i, 0), prec);
+      arb_set_d(t.get(), S.cr(i));
+      arb_addmul(g2, t.get(), b.at(i, 0), prec);
+    }
+  }
+  arb_sub_ui(g1, g1, 1, prec);
+  if (!J) return;
+  arb_mat_zero(J->get());
+  for (long i = 0; i < n; ++i) {
+    for (long j = 0; j < n; ++j) {
+      arb_set(J->at(i, j), Mp.at(i, j));
+      if (S.complex) arb_set(J->at(n + i, n + j), Mp.at(i, j));
+    }
+    arb_sub(J->at(i, i), J->at(i, i), c.get(), prec);
+    arb_set(J->at(i, ip), M1a.at(i, 0));
+    if (S.complex) {
+      arb_sub(J->at(n + i, n + i), J->at(n + i, n + i), c.get(), prec);
+      arb_set(J->at(i, n + i), s.get());
+      arb_neg(J->at(n + i, i), s.get());
+      arb_set(J->at(n + i, ip), M1b.at(i, 0));
+      // d/dtheta: s a + c b and s b - c a
+      arb_mul(J->at(i, ip + 1), s.get(), a.at(i, 0), prec);
+      arb_addmul(J->at(i, ip + 1), c.get(), b.at(i, 0), prec);
+      arb_mul(J->at(n + i, ip + 1), s.get(), b.at(i, 0), prec);
+      arb_submul(J->at(n + i, ip + 1), c.get(), a.at(i, 0), prec);
+    }
+    arb_set_d(J->at(ip, i), S.cr(i));
+    if (S.complex) {
+      arb_set_d(J->at(ip, n + i), S.ci(i));
+      arb_set_d(J->at(ip + 1, i), -S.ci(i));
+      arb_set_d(J->at(ip + 1, n + i), S.cr(i));
+    }
+  }
+  (void)m;
+}
+
+struct Enclosed {
+  bool ok = false;
+  Enclosure<rational> p{0, 0}, theta{0, 0};
+  double rel_width = 0;
+  std::string why;
+};
+
+// Newton at `prec` from x (midpoints), then the Krawczyk test on a box around the result.
+Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
+  const long m = S.size(), n = S.n();
+  const long ip = S.complex ? 2 * n : n;
+  BallMat Fv(m, 1), J(m, m), d(m, 1);
+  for (int it = 0; it < 60; ++it) {
+    arb_mat_get_mid(x.get(), x.get());
+    evaluate(S, x, Fv, &J, prec);
+    if (!arb_mat_approx_solve(d.get(), J.get(), Fv.get(), prec)) return {false, {0, 0}, {0, 0}, 0, "the crossing system is singular"};
+    arb_mat_sub(x.get(), x.get(), d.get(), prec);
+    arb_mat_get_mid(x.get(), x.get());
+    // converged: the step is at the working precision's noise
+    bool small = true;
+    for (long i = 0; i < m && small; ++i) {
+      const double di = std::fabs(arf_get_d(arb_midref(d.at(i, 0)), ARF_RND_UP));
+      const double xi = std::fabs(arf_get_d(arb_midref(x.at(i, 0)), ARF_RND_UP));
+      small = di <= std::ldexp(1.0 + xi, static_cast<int>(-prec + 24)) || di == 0;
+    }
+    if (small && it > 1) break;
+  }
+  // Y ~ J(x~)^-1 (exact midpoints), r from Y F(x~)
+  evaluate(S, x, Fv, &J, prec);
+  BallMat Y(m, m), YF(m, 1);
+  if (!arb_mat_approx_inv(Y.get(), J.get(), prec)) return {false, {0, 0}, {0, 0}, 0, "the Jacobian of the crossing system is singular"};
+  arb_mat_get_mid(Y.get(), Y.get());
+  arb_mat_mul(YF.get(), Y.get(), Fv.get(), prec);
+  std::vector<double> r(static_cast<size_t>(m));
+  for (long i = 0; i < m; ++i) {
+    const double yi = mag_get_d(arb_radref(YF.at(i, 0))) + std::fabs(arf_get_d(arb_midref(YF.at(i, 0)), ARF_RND_UP));
+    const double xi = std::fabs(arf_get_d(arb_midref(x.at(i, 0)), ARF_RND_UP));
+    r[static_cast<size_t>(i)] = 4 * yi + std::ldexp(1.0 + xi, static_cast<int>(-prec + 16));
+  }
+  BallMat X(m, 1), JX(m, m), I(m, m), D(m, 1), K(m, 1);
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    for (long i = 0; i < m; ++i) {
+      arb_set(X.at(i, 0), x.at(i, 0));
+      mag_set_d(arb_radref(X.at(i, 0)), r[static_cast<size_t>(i)]);
+    }
+    // K(X) = x~ - Y F(x~) + (I - Y J(X)) (X - x~)
+    evaluate(S, X, D, &JX, prec);
+    arb_mat_mul(JX.get(), Y.get(), JX.get(), prec);
+    arb_mat_one(I.get());
+    arb_mat_sub(I.get(), I.get(), JX.get(), prec);
+    arb_mat_sub(D.get(), X.get(), x.get(), prec);
+    arb_mat_mul(K.get(), I.get(), D.get(), prec);
+    arb_mat_add(K.get(), K.get(), x.get(), prec);
+    arb_mat_sub(K.get(), K.get(), YF.get(), prec);
+    bool inside = true;
+    for (long i = 0; i < m && inside; ++i) inside = arb_contains_interior(X.at(i, 0), K.at(i, 0));
+    if (inside) {
+      Enclosed e;
+      e.ok = true;
+      e.p = Ball(K.at(ip, 0)).bounds();
+      if (S.complex) e.theta = Ball(K.at(ip + 1, 0)).bounds();
+      const double pm = std::fabs(arf_get_d(arb_midref(K.at(ip, 0)), ARF_RND_NEAR));
+      e.rel_width = 2 * mag_get_d(arb_radref(K.at(ip, 0))) / pm;
+      return e;
+    }
+    for (double& ri : r) ri *= 16;
+  }
+  return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
+}
+
+// ---- step 3: Stein certificates over intervals of p ----
+struct Cover {
+  const BallMatrix& M0;
+  const BallMatrix& M1;
+  long checks = 0;
+  // every matrix M0 + p M1, p in [lo, hi], Schur stable (certified)
+  bool stable_on(double lo, double hi) {
+    ++checks;
+    const long n = static_cast<long>(M0.rows());
+    BallMat A(n, n), B(n, n);
+    to_arb(A, M0);
+    to_arb(B, M1);
+    const Ball k = Ball::hull(rational(lo), rational(hi));
+    arb_mat_scalar_mul_arb(B.get(), B.get(), k.get(), 128);
+    arb_mat_add(A.get(), A.get(), B.get(), 128);
+    const SchurDecision d = schur_decide(from_arb(A));
+    return d.stable && *d.stable;
+  }
+};
+
+}  // namespace
+
+LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& name) {
+  if (p1 <= 0) throw InputError("--max " + name + ": the reference value must be > 0");
+  auto cl = [&](const rational& p) {
+    const sim::LoopSpec s = at(p);
+    const std::string nl = sim::nonlinear_parts(s);
+    if (!nl.empty())
+      throw InputError("--max " + name + ": the loop has " + nl +
+                       ", which the closed-loop matrix does not model (`hapstab simulate` runs it)");
+    return sim::sampled_closed_loop(s);
+  };
+  const rational p2 = p1 * 2;
+  const sim::SampledClosedLoop c1 = cl(p1), c2 = cl(p2);
+  auto same_plant = [&](const sim::SampledClosedLoop& c) {
+    return equal(c.A, c1.A) && equal(c.Bu, c1.Bu) && c.n == c1.n && c.f == c1.f && c.T == c1.T && c.Kx.rows() == c1.Kx.rows() &&
+           c.removed == c1.removed;
+  };
+  const std::string only = "--max " + name + ": only a parameter of [environment] or [coupling] that leaves the controller's order "
+                           "unchanged and enters the closed loop affinely (M(p) = M0 + p M1: a gain, `gain = \"" + name +
+                           "\"`, or a stiffness written linearly) can be maximised beyond one DOF";
+  if (!same_plant(c2)) throw InputError(only + "; " + name + " changes the device, the operator, the delay or the controller's order");
+  LoopFamily F;
+  F.A = c1.A;
+  F.Bu = c1.Bu;
+  F.n = c1.n;
+  F.f = c1.f;
+  F.T = c1.T;
+  F.N = c1.Ku.rows();
+  F.positions = c1.positions;
+  F.dKu = (c2.Ku - c1.Ku) / p1;
+  F.dKx = (c2.Kx - c1.Kx) / p1;
+  F.Ku0 = c1.Ku - F.dKu * p1;
+  F.Kx0 = c1.Kx - F.dKx * p1;
+  if (F.dKu.isZero(0) && F.dKx.isZero(0)) throw InputError("--max " + name + ": the loop does not depend on " + name);
+  for (const rational& p : {p1 / 3, p1 * 7 / 2}) {
+    const sim::SampledClosedLoop c = cl(p);
+    if (!same_plant(c) || !equal(c.Ku, MatQ(F.Ku0 + F.dKu * p)) || !equal(c.Kx, MatQ(F.Kx0 + F.dKx * p)))
+      throw InputError(only + "; the closed loop is not affine in " + name + " (checked exactly at " + name + " = " + p.str() + ")");
+  }
+  return F;
+}
+
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits) {
+  if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60] for a multi-DOF --max, got " + std::to_string(digits));
+  const LoopFamily F = loop_family(at, reference, name);
+  LoopMax out;
+  out.T = F.T;
+  out.states = order(F);
+  const ArbFamily base = arb_family(F, 128);
+  const Eigen::MatrixXd M0d = mid(*base.M0), M1d = mid(*base.M1);
+  auto rho = [&](double p) {
+    Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + p * M1d, false);
+    return es.eigenvalues().cwiseAbs().maxCoeff();
+  };
+  // step 1: isolation on a geometric grid, then bisection (numeric)
+  const double ref = static_cast<double>(reference);
+  const int G = 300;
+  auto grid = [&](int k) { return ref * std::pow(10.0, -6.0 + 12.0 * k / G); };
+  int ks = -1, ku = -1;
+  for (int k = 0; k <= G; ++k) {
+    const double r = rho(grid(k));
+    if (ks < 0 && r < 1 - 1e-12) ks = k;
+    if (ks >= 0 && r >= 1) {
+      ku = k;
+      break;
+    }
+  }
+  if (ks < 0) {
+    out.note = "no " + name + " in [" + num(grid(0)) + ", " + num(grid(G)) + "] with every eigenvalue of M inside the unit disk "
+               "(numeric scan of the spectral radius): no stable interval to maximise over";
+    return out;
+  }
+  if (ku < 0) {
+    out.note = "the spectral radius stays below 1 from " + name + " = " + num(grid(ks)) + " up to " + num(grid(G)) +
+               " (numeric scan): no crossing found, so no supremum is certified";
+    return out;
+  }
+  double lo = grid(ku - 1), hi = grid(ku);
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+    const double c = 0.5 * (lo + hi);
+    (rho(c) < 1 ? lo : hi) = c;
+  }
+  const double pstar = 0.5 * (lo + hi);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + pstar * M1d, true);
+  Eigen::Index imax = 0;
+  es.eigenvalues().cwiseAbs().maxCoeff(&imax);
+  std::complex<double> lambda = es.eigenvalues()(imax);
+  Eigen::VectorXcd v = es.eigenvectors().col(imax);
+  if (lambda.imag() < 0) {
+    lambda = std::conj(lambda);
+    v = v.conjugate();
+  }
+  const bool complex = std::fabs(lambda.imag()) > 1e-7 * std::abs(lambda);
+  const Eigen::VectorXcd c = v / v.squaredNorm();  // c^H v = 1
+  {  // the mode: |position| per DOF
+    Eigen::MatrixXd P(F.positions.rows(), F.positions.cols());
+    for (Eigen::Index i = 0; i < P.rows(); ++i)
+      for (Eigen::Index j = 0; j < P.cols(); ++j) P(i, j) = static_cast<double>(F.positions(i, j));
+    const Eigen::VectorXd amp = (P * v).cwiseAbs();
+    const double mx = amp.maxCoeff();
+    for (Eigen::Index i = 0; i < amp.size(); ++i) out.mode.push_back(mx > 0 ? amp(i) / mx : 0.0);
+  }
+  out.where = complex ? "complex pair" : (lambda.real() > 0 ? "z = 1" : "z = -1");
+  // step 2: the enclosure, precision raised until it is narrow enough
+  Enclosed e;
+  const double target = std::pow(10.0, -digits);
+  for (long prec = 128; prec <= 4096; prec *= 2) {
+    const ArbFamily af = prec == 128 ? ArbFamily{} : arb_family(F, prec);
+    const BallMat& M0 = prec == 128 ? *base.M0 : *af.M0;
+    const BallMat& M1 = prec == 128 ? *base.M1 : *af.M1;
+    CrossingSystem S{M0, M1, complex, complex ? 1.0 : (lambda.real() > 0 ? 1.0 : -1.0), c.real(), c.imag()};
+    const long n = S.n(), m = S.size();
+    BallMat x(m, 1);
+    for (long i = 0; i < n; ++i) {
+      arb_set_d(x.at(i, 0), v(i).real());
+      if (complex) arb_set_d(x.at(n + i, 0), v(i).imag());
+    }
+    arb_set_d(x.at(complex ? 2 * n : n, 0), pstar);
+    if (complex) arb_set_d(x.at(2 * n + 1, 0), std::arg(lambda));
+    e = krawczyk(S, x, prec);
+    out.precision_bits = prec;
+    if (e.ok && e.rel_width <= target) break;
+  }
+  if (!e.ok || e.rel_width > target) {
+    out.note = "the crossing near " + name + " = " + num(pstar, 17) + " (numeric) could not be enclosed to 10^-" +
+               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + num(e.rel_width, 3) : e.why);
+    return out;
+  }
+  out.crossing = e.p;
+  if (complex) out.theta = e.theta;
+  else if (lambda.real() < 0) {  // theta = pi, enclosed
+    flint::BallPrecision bp(out.precision_bits);
+    Ball pi;
+    arb_const_pi(pi.get(), out.precision_bits);
+    out.theta = pi.bounds();
+  }
+  // step 3: the cover below the crossing (certified), from a point of the stable run
+  const BallMatrix M0b = from_arb(*base.M0), M1b = from_arb(*base.M1);
+  Cover cov{M0b, M1b};
+  const double top = static_cast<double>(e.p.lo);
+  double p0 = 0.5 * top;
+  if (rho(p0) >= 1) p0 = grid(ku - 1) < top ? grid(ku - 1) : grid(ks);
+  double up = p0, down = p0;
+  {  // up towards the crossing: each interval at most half of what is left
+    double w = 0.25 * (top - up);
+    while (cov.checks < 160 && top - up > 1e-13 * top) {
+      const double h = std::min(up + w, top - 0.5 * (top - up) * 1e-3);
+      if (h <= up) break;
+      if (cov.stable_on(up, h)) {
+        up = h;
+        w = std::min(2 * w, 0.5 * (top - up));
+      } else {
+        w *= 0.25;
+        if (w < 1e-4 * (top - up)) break;
+      }
+    }
+  }
+  {  // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
+    double w = 0.5 * down;
+    const double floor = 1e-6 * top;
+    while (cov.checks < 320 && down > 0) {
+      if (down <= floor) {
+        if (cov.stable_on(0, down)) down = 0;
+        break;
+      }
+      const double l = w >= down ? 0.0 : down - w;
+      if (cov.stable_on(l, down)) {
+        down = l;
+        w = std::min(2 * w, down);
+      } else {
+        w *= 0.25;
+        if (w < 1e-3 * down) break;
+      }
+    }
+  }
+  out.cover_intervals = cov.checks;
+  if (up <= p0 && down >= p0) {
+    out.note = "the crossing at " + name + " in [" + num(static_cast<double>(e.p.lo), 17) + ", " + num(static_cast<double>(e.p.hi), 17) +
+               "] is certified, but no interval below it could be certified stable (an earlier crossing, or a margin too small "
+               "for the Stein certificate)";
+    return out;
+  }
+  out.stable_from = rational(down);
+  out.stable_to = rational(up);
+  out.sup = {out.stable_to, e.p.hi};
+  out.gap = (top - up) / top;
+  // step 4: the decider of `stability --scene` at both ends
+  const LoopVerdict below = decide_loop(at(out.stable_to));
+  if (!below.stable || !*below.stable) {
+    out.note = "decide_loop does not confirm stability at " + name + " = " + num(up, 17) + ": " + below.why;
+    return out;
+  }
+  for (const rational eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
+    const rational pa = e.p.hi * (1 + eps);
+    const LoopVerdict above = decide_loop(at(pa));
+    if (above.stable && !*above.stable) {
+      out.unstable_at = pa;
+      break;
+    }
+    if (above.stable && *above.stable) {
+      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + num(static_cast<double>(pa), 17) +
+                 "): the crossing is a touch, not an exit";
+      return out;
+    }
+  }
+  if (!out.unstable_at) {
+    out.note = "decide_loop could not decide the loop just above the crossing";
+    return out;
+  }
+  out.outcome = Outcome::holds;
+  out.status = Status::certified;
+  std::ostringstream o;
+  o.precision(6);
+  o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
+    << " in the enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name << " in ["
+    << down << ", " << up << "] is stable (" << cov.checks << " Stein certificates on intervals of " << name
+    << "); NOT stable at " << static_cast<double>(*out.unstable_at) << " (decide_loop). The supremum of the stable interval lies in ["
+    << up << ", crossing]: the crossing is it unless an eigenvalue leaves and re-enters within the last " << out.gap
+    << " (relative) below it";
+  if (down > 0) o << "; below " << down << " not examined (the loop nears a marginal mode as " << name << " -> 0)";
+  out.note = o.str();
+  return out;
+}
+
+}  // namespace hapstab::stability

@@ -1,0 +1,82 @@
+// hapstab/stability/loop_max.hpp -- the largest value of a scene parameter p for which the loop
+// as written is stable, for any number of DOF (`hapstab stability --scene S --max NAME` beyond one
+// DOF), certified, when the closed-loop matrix of sim/closed_loop.hpp is affine in p:
+//   M(p) = M0 + p M1,
+// i.e. p enters only the controller's exact rows Ku, Kx (a gain of [environment] or [coupling]:
+// `gain = "g"`, a stiffness written affinely; the plant, the delay and the controller's order do
+// not change). Checked exactly at two more values; anything else is refused (InputError naming p).
+//
+// A crossing is a p > 0 where M(p) has an eigenvalue z = e^{j theta} on the unit circle: with
+// z v = M(p) v, v = a + j b, the real system (a, b, p, theta) of 2n + 2 equations
+//   (M(p) - cos(theta)) a + sin(theta) b = 0,   (M(p) - cos(theta)) b - sin(theta) a = 0,
+//   Re(c^H v) = 1, Im(c^H v) = 0            (c: the numeric eigenvector, normalising v)
+// (for z = +-1 the real system (M(p) -+ I) a = 0, c^T a = 1 in (a, p)). The steps:
+//  1. Isolation (numeric): the spectral radius of M(p) in double on a geometric grid of p, the
+//     first stable run and the first p past it where it is >= 1; bisection to the crossing.
+//  2. Enclosure (certified): the Krawczyk operator of the system above in Arb balls on M0, M1
+//     enclosed at `prec` bits (the exponentials by arb_mat_exp), Newton at that precision first;
+//     K(X) inside X proves exactly one crossing in X. The precision is raised until the enclosure
+//     of p is 10^-digits relative or narrower.
+//  3. Below it (certified): stability for EVERY p in [stable_from, stable_to] by Stein
+//     certificates on intervals of p (numeric/ball_matrix.hpp's schur_decide on the ball matrix
+//     M0 + [p_lo, p_hi] M1), from a point of the stable run down towards 0 and up towards the
+//     crossing, each interval as wide as the certificate allows.
+//  4. Confirmation: stability::decide_loop (the decider of `stability --scene`) at stable_to
+//     (stable) and just above the crossing (NOT stable).
+// So the supremum of the stable interval that contains [stable_from, stable_to] lies in
+// [stable_to, crossing.hi] (certified), and the crossing found is that supremum unless an
+// eigenvalue leaves and re-enters the disk inside (stable_to, crossing.lo), a gap of relative
+// width `gap` that no certificate covers (reported). Step 1 can miss nothing that steps 2-4 would
+// then hide: a crossing below the one found breaks the cover of step 3 (undecided, exit 3).
+// Implements: paper 000 Sec. VI (the loop as written); issue 42.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hapstab/numeric/result.hpp"
+#include "hapstab/sim/loop.hpp"
+
+namespace hapstab::stability {
+
+/// The loop with the parameter set to p (a scene loaded with NAME = p).
+using LoopAt = std::function<sim::LoopSpec(const rational& p)>;
+
+struct LoopMax {
+  Outcome outcome = Outcome::undecided;  ///< holds: a crossing enclosed and the interval below it certified stable
+  Status status = Status::failed;        ///< certified when holds
+  Enclosure<rational> crossing{0, 0};    ///< p* where an eigenvalue of M(p*) is on |z| = 1 (certified)
+  Enclosure<rational> theta{0, 0};       ///< its angle in [0, pi] (rad; omega = theta / T)
+  Enclosure<rational> sup{0, 0};         ///< [stable_to, crossing.hi]: holds the supremum (certified)
+  rational stable_from = 0, stable_to = 0;  ///< stable for every p in [stable_from, stable_to] (certified)
+  double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered
+  std::optional<rational> unstable_at;   ///< decide_loop: NOT stable there (just above the crossing)
+  std::string where;                     ///< "z = 1", "z = -1" or "complex pair"
+  std::vector<double> mode;              ///< |position| of the crossing mode on each DOF, largest = 1
+  rational T = 0;                        ///< the sample period (omega = theta / T)
+  long states = 0;                       ///< order of M
+  long precision_bits = 0;               ///< of the enclosure in step 2
+  long cover_intervals = 0;              ///< Stein certificates of step 3
+  std::string note;                      ///< what was proven, or why nothing was
+};
+
+/// The exact data of the family (checked affine in p): M(p) is assembled as in
+/// sim/closed_loop.hpp from the reduced plant (A, Bu), the delay t_d = n T + f and the
+/// controller's rows Ku = Ku0 + p dKu, Kx = Kx0 + p dKx. `positions` reads the DOFs' sampled
+/// positions from the state. For comparisons and the claims of proofs/.
+struct LoopFamily {
+  MatQ A, Bu, Ku0, dKu, Kx0, dKx, positions;
+  long n = 0;
+  rational f = 0, T = 0;
+  long N = 0;
+};
+LoopFamily loop_family(const LoopAt& at, const rational& reference, const std::string& name);
+
+/// sup of p over the stable interval (see the header); `reference` > 0 is where the grid of step 1
+/// is centred (the scene's value of p; it spans reference 10^-6 .. 10^6), `digits` the width of
+/// the crossing's enclosure (1 .. 60).
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits = 16);
+
+}  // namespace hapstab::stability
