@@ -233,13 +233,14 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
     j["max"] = nullptr;
     return j;
   }
-  const SharedDecimal d = shared_decimal(m.crossing.lo, m.crossing.hi, o.digits);
+  const SharedDecimal d = shared_decimal(m.sup.lo, m.sup.hi, o.digits);
   j["max"] = d.text;
   j["max_digits"] = d.digits;
   j["enclosure"] = enclosure_json(m.crossing, o.digits + 3);
   j["sup_enclosure"] = enclosure_json(m.sup, 17);
   j["stable_on"] = enclosure_json({m.stable_from, m.stable_to}, 17);
   j["gap"] = m.gap;
+  j["stable_at"] = to_decimal(*m.stable_at, 17);
   j["unstable_at"] = to_decimal(*m.unstable_at, 17);
   nlohmann::json c{{"at", m.where}, {"theta", enclosure_json(m.theta, 17)}, {"omega", enclosure_json({m.theta.lo / m.T, m.theta.hi / m.T}, 17)}};
   nlohmann::json mode = nlohmann::json::object();

@@ -2,6 +2,11 @@
 #include "hapstab/stability/loop_max.hpp"
 
 #include <Eigen/Eigenvalues>
+#if HAPSTAB_FLINT3
+#include <flint/acb_mat.h>
+#else
+#include <acb_mat.h>
+#endif
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -296,23 +301,134 @@ Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
   return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
 }
 
-// ---- step 3: Stein certificates over intervals of p ----
+// ---- step 3: eigenvalue enclosures over intervals of p (Rump's test in Arb) ----
+struct AcbMat {
+  acb_mat_t m;
+  AcbMat(long r, long c) { acb_mat_init(m, r, c); }
+  ~AcbMat() { acb_mat_clear(m); }
+  AcbMat(const AcbMat&) = delete;
+  AcbMat& operator=(const AcbMat&) = delete;
+};
+struct AcbVec {
+  acb_ptr v;
+  long n;
+  explicit AcbVec(long k) : v(_acb_vec_init(k)), n(k) {}
+  ~AcbVec() { _acb_vec_clear(v, n); }
+  AcbVec(const AcbVec&) = delete;
+  AcbVec& operator=(const AcbVec&) = delete;
+};
+
+// A := M0 + [lo, hi] M1 (complex balls holding every matrix of the family on [lo, hi])
+void family_ball(AcbMat& A, const BallMat& M0, const BallMat& M1, const rational& lo, const rational& hi, long prec) {
+  flint::BallPrecision bp(prec);
+  const Ball k = Ball::hull(lo, hi);
+  BallMat B(M0.rows(), M0.cols());
+  arb_mat_scalar_mul_arb(B.get(), M1.get(), k.get(), prec);
+  arb_mat_add(B.get(), B.get(), M0.get(), prec);
+  acb_mat_set_arb_mat(A.m, B.get());
+}
+
+// Disjoint enclosures E of the n eigenvalues of every matrix in the ball A (each ball holds exactly
+// one, simple; Arb's arithmetic is inclusion-isotone, so the test run on the ball proves it for each
+// matrix the ball holds), and with L, R: L = R^-1, L A R = diag(E). false: not isolated.
+bool spectrum(AcbVec& E, AcbMat* L, AcbMat* R, const AcbMat& A, long prec) {
+  const long n = acb_mat_nrows(A.m);
+  AcbMat Am(n, n), Ra(n, n);
+  AcbVec Ea(n);
+  acb_mat_get_mid(Am.m, A.m);
+  acb_mat_approx_eig_qr(Ea.v, nullptr, Ra.m, Am.m, nullptr, 0, prec);
+  return acb_mat_eig_simple_rump(E.v, L ? L->m : nullptr, R ? R->m : nullptr, A.m, Ea.v, Ra.m, prec) != 0;
+}
+
+// |z| < 1 for every point of the ball z
+bool inside_disk(const acb_t z, long prec) {
+  Ball r;
+  acb_abs(r.get(), z, prec);
+  arb_sub_ui(r.get(), r.get(), 1, prec);
+  return arb_is_negative(r.get());
+}
+
 struct Cover {
-  const BallMatrix& M0;
-  const BallMatrix& M1;
+  const BallMat& M0;
+  const BallMat& M1;
+  long prec = 128;
   long checks = 0;
-  // every matrix M0 + p M1, p in [lo, hi], Schur stable (certified)
-  bool stable_on(double lo, double hi) {
+  // h >= 0 such that every M0 + p M1, |p - c| <= h, is Schur stable (certified; 0: none found).
+  // At p = c Rump's test encloses M(c) = R diag(lambda) L with L = R^-1; for every p,
+  // L M(p) R = diag(lambda) + (p - c) C, C = L M1 R, and Gershgorin's discs of that matrix,
+  // |z - lambda_i| <= |p - c| sum_j |C_ij|, hold its eigenvalues: inside the disk while
+  // |lambda_i| + h sum_j |C_ij| < 1 for every i.
+  rational radius(const rational& c) {
     ++checks;
-    const long n = static_cast<long>(M0.rows());
-    BallMat A(n, n), B(n, n);
-    to_arb(A, M0);
-    to_arb(B, M1);
-    const Ball k = Ball::hull(rational(lo), rational(hi));
-    arb_mat_scalar_mul_arb(B.get(), B.get(), k.get(), 128);
-    arb_mat_add(A.get(), A.get(), B.get(), 128);
-    const SchurDecision d = schur_decide(from_arb(A));
-    return d.stable && *d.stable;
+    const long n = M0.rows();
+    AcbMat A(n, n), L(n, n), R(n, n), C(n, n), M1c(n, n);
+    family_ball(A, M0, M1, c, c, prec);
+    AcbVec E(n);
+    if (!spectrum(E, &L, &R, A, prec)) return 0;
+    acb_mat_set_arb_mat(M1c.m, M1.get());
+    acb_mat_mul(C.m, L.m, M1c.m, prec);
+    acb_mat_mul(C.m, C.m, R.m, prec);
+    double h = INFINITY;
+    for (long i = 0; i < n; ++i) {
+      Ball margin;  // 1 - |lambda_i|
+      acb_abs(margin.get(), E.v + i, prec);
+      arb_sub_ui(margin.get(), margin.get(), 1, prec);
+      arb_neg(margin.get(), margin.get());
+      if (!arb_is_positive(margin.get())) return 0;
+      mag_t row, t;
+      mag_init(row);
+      mag_init(t);
+      for (long j = 0; j < n; ++j) {
+        acb_get_mag(t, acb_mat_entry(C.m, i, j));
+        mag_add(row, row, t);
+      }
+      arf_t lo;
+      arf_init(lo);
+      arb_get_lbound_arf(lo, margin.get(), prec);
+      const double m = arf_get_d(lo, ARF_RND_DOWN), r = mag_get_d(row);  // r rounded up
+      arf_clear(lo);
+      mag_clear(row);
+      mag_clear(t);
+      if (r > 0) h = std::min(h, m / r);
+    }
+    if (!std::isfinite(h)) return 0;  // the family does not move: not a question for this cover
+    return rational(h * 0.9);         // strictly inside the bound (and below the doubles' rounding)
+  }
+  // The last step, from `to` (stable) to the crossing's enclosure [lo, hi] (certified): on the ball
+  // p in [to, hi] every eigenvalue is either inside the disk or has d|lambda|^2/dp > 0
+  // (dlambda/dp = (L M1 R)_ii), and at p = lo every eigenvalue is inside: then every |lambda_i(p)|
+  // < 1 on [to, lo] (the moving ones only grow), so the supremum lies in [lo, hi].
+  bool close(const rational& to, const rational& lo, const rational& hi, const BallMat& M0p, const BallMat& M1p, long precp) {
+    ++checks;
+    const long n = M0.rows();
+    AcbMat A(n, n), L(n, n), R(n, n), D(n, n), M1c(n, n);
+    family_ball(A, M0, M1, to, hi, 128);
+    AcbVec E(n);
+    if (!spectrum(E, &L, &R, A, 128)) return false;
+    acb_mat_set_arb_mat(M1c.m, M1.get());
+    acb_mat_mul(D.m, L.m, M1c.m, 128);
+    acb_mat_mul(D.m, D.m, R.m, 128);
+    for (long i = 0; i < n; ++i) {
+      if (inside_disk(E.v + i, 128)) continue;
+      acb_t g;
+      acb_init(g);
+      acb_conj(g, E.v + i);
+      acb_mul(g, g, acb_mat_entry(D.m, i, i), 128);
+      const bool up = arb_is_positive(acb_realref(g));
+      acb_clear(g);
+      if (!up) return false;
+    }
+    // at p = lo, at the enclosure's precision (the moving eigenvalue is within ~ (p* - lo) of the circle)
+    for (long bits = precp; bits <= 4 * precp; bits *= 2) {
+      AcbMat B(n, n);
+      family_ball(B, M0p, M1p, lo, lo, bits);
+      AcbVec F(n);
+      if (!spectrum(F, nullptr, nullptr, B, bits)) continue;
+      bool all = true;
+      for (long i = 0; i < n && all; ++i) all = inside_disk(F.v + i, bits);
+      if (all) return true;
+    }
+    return false;
   }
 };
 
@@ -423,10 +539,11 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   // step 2: the enclosure, precision raised until it is narrow enough
   Enclosed e;
   const double target = std::pow(10.0, -digits);
+  ArbFamily fine;  // M0, M1 at the enclosure's precision (128 bits: base)
   for (long prec = 128; prec <= 4096; prec *= 2) {
-    const ArbFamily af = prec == 128 ? ArbFamily{} : arb_family(F, prec);
-    const BallMat& M0 = prec == 128 ? *base.M0 : *af.M0;
-    const BallMat& M1 = prec == 128 ? *base.M1 : *af.M1;
+    fine = prec == 128 ? ArbFamily{} : arb_family(F, prec);
+    const BallMat& M0 = prec == 128 ? *base.M0 : *fine.M0;
+    const BallMat& M1 = prec == 128 ? *base.M1 : *fine.M1;
     CrossingSystem S{M0, M1, complex, complex ? 1.0 : (lambda.real() > 0 ? 1.0 : -1.0), c.real(), c.imag()};
     const long n = S.n(), m = S.size();
     BallMat x(m, 1);
@@ -449,67 +566,78 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   if (complex) out.theta = e.theta;
   else if (lambda.real() < 0) {  // theta = pi, enclosed
     flint::BallPrecision bp(out.precision_bits);
-    Ball pi;
-    arb_const_pi(pi.get(), out.precision_bits);
-    out.theta = pi.bounds();
+    out.theta = Ball::pi().bounds();
   }
-  // step 3: the cover below the crossing (certified), from a point of the stable run
-  const BallMatrix M0b = from_arb(*base.M0), M1b = from_arb(*base.M1);
-  Cover cov{M0b, M1b};
-  const double top = static_cast<double>(e.p.lo);
-  double p0 = 0.5 * top;
-  if (rho(p0) >= 1) p0 = grid(ku - 1) < top ? grid(ku - 1) : grid(ks);
-  double up = p0, down = p0;
-  {  // up towards the crossing: each interval at most half of what is left
-    double w = 0.25 * (top - up);
-    while (cov.checks < 160 && top - up > 1e-13 * top) {
-      const double h = std::min(up + w, top - 0.5 * (top - up) * 1e-3);
-      if (h <= up) break;
-      if (cov.stable_on(up, h)) {
-        up = h;
-        w = std::min(2 * w, 0.5 * (top - up));
-      } else {
-        w *= 0.25;
-        if (w < 1e-4 * (top - up)) break;
-      }
-    }
-  }
-  {  // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
-    double w = 0.5 * down;
-    const double floor = 1e-6 * top;
-    while (cov.checks < 320 && down > 0) {
-      if (down <= floor) {
-        if (cov.stable_on(0, down)) down = 0;
+  const BallMat& M0p = out.precision_bits == 128 ? *base.M0 : *fine.M0;
+  const BallMat& M1p = out.precision_bits == 128 ? *base.M1 : *fine.M1;
+  // step 3: the cover below the crossing (certified), from a point of the stable run up to the
+  // crossing (each interval's width adapted to what Rump's test accepts; the last step closes on
+  // the crossing's enclosure by monotonicity), then down towards 0
+  Cover cov{*base.M0, *base.M1};
+  const rational top = e.p.lo;
+  const double topd = static_cast<double>(top);
+  double p0d = 0.5 * topd;
+  if (rho(p0d) >= 1) p0d = grid(ku - 1) < topd ? grid(ku - 1) : grid(ks);
+  const rational p0 = rational(p0d);
+  rational up = p0, down = p0;
+  bool closed = false;
+  // up: from p0 each step covers [up - h, up + h] and moves to up + h; near the crossing h is a
+  // fixed fraction of what is left, so the walk approaches it geometrically
+  rational tried = top;  // the distance left at the last attempt to close (each retry after it shrank 4x)
+  const rational enough = top * rational(std::pow(10.0, -digits - 1));  // sup enclosed as narrowly as the crossing
+  while (cov.checks < 2000 && top - up > enough) {
+    cov.prec = top - up > top / 100000000 ? 64 : 128;
+    if ((top - up) <= top / 1000000 && (top - up) * 4 <= tried) {
+      tried = top - up;
+      if (cov.close(up, e.p.lo, e.p.hi, M0p, M1p, out.precision_bits)) {
+        closed = true;
         break;
       }
-      const double l = w >= down ? 0.0 : down - w;
-      if (cov.stable_on(l, down)) {
-        down = l;
-        w = std::min(2 * w, down);
-      } else {
-        w *= 0.25;
-        if (w < 1e-3 * down) break;
-      }
     }
+    const rational h = cov.radius(up);
+    if (h <= 0 || up + h >= top) break;
+    up += h;
+  }
+  // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
+  const rational floor = top / 1000000;
+  cov.prec = 64;
+  for (const long budget = cov.checks + 100; cov.checks < budget && down > 0;) {
+    const rational h = cov.radius(down);
+    if (h <= 0) break;
+    down = h >= down ? rational(0) : down - h;
+    if (down < floor && down > 0) break;
   }
   out.cover_intervals = cov.checks;
-  if (up <= p0 && down >= p0) {
+  if (up <= p0 && !closed) {
     out.note = "the crossing at " + name + " in [" + num(static_cast<double>(e.p.lo), 17) + ", " + num(static_cast<double>(e.p.hi), 17) +
-               "] is certified, but no interval below it could be certified stable (an earlier crossing, or a margin too small "
-               "for the Stein certificate)";
+               "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
+               "to each other for Rump's test)";
     return out;
   }
-  out.stable_from = rational(down);
-  out.stable_to = rational(up);
+  out.stable_from = down;
+  out.stable_to = closed ? e.p.lo : up;
   out.sup = {out.stable_to, e.p.hi};
-  out.gap = (top - up) / top;
-  // step 4: the decider of `stability --scene` at both ends
-  const LoopVerdict below = decide_loop(at(out.stable_to));
-  if (!below.stable || !*below.stable) {
-    out.note = "decide_loop does not confirm stability at " + name + " = " + num(up, 17) + ": " + below.why;
+  out.gap = closed ? 0.0 : static_cast<double>((top - up) / top);
+  // step 4: the decider of `stability --scene` (an independent certificate) just below and above
+  for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
+    const rational pb = top * (1 - eps);
+    if (pb < out.stable_from) break;
+    const LoopVerdict below = decide_loop(at(pb));
+    if (below.stable && *below.stable) {
+      out.stable_at = pb;
+      break;
+    }
+    if (below.stable && !*below.stable) {
+      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + num(static_cast<double>(pb), 17) +
+                 ", inside the interval the cover certified stable: " + below.why;
+      return out;
+    }
+  }
+  if (!out.stable_at) {
+    out.note = "decide_loop could not confirm stability just below the crossing";
     return out;
   }
-  for (const rational eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
+  for (const rational& eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
     const rational pa = e.p.hi * (1 + eps);
     const LoopVerdict above = decide_loop(at(pa));
     if (above.stable && !*above.stable) {
@@ -531,12 +659,16 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   std::ostringstream o;
   o.precision(6);
   o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
-    << " in the enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name << " in ["
-    << down << ", " << up << "] is stable (" << cov.checks << " Stein certificates on intervals of " << name
-    << "); NOT stable at " << static_cast<double>(*out.unstable_at) << " (decide_loop). The supremum of the stable interval lies in ["
-    << up << ", crossing]: the crossing is it unless an eigenvalue leaves and re-enters within the last " << out.gap
-    << " (relative) below it";
-  if (down > 0) o << "; below " << down << " not examined (the loop nears a marginal mode as " << name << " -> 0)";
+    << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
+    << " in [" << static_cast<double>(out.stable_from) << ", " << static_cast<double>(out.stable_to) << "] is stable ("
+    << cov.checks << " eigenvalue enclosures by Rump's test, each with Gershgorin discs in its eigenbasis over an interval of " << name << "";
+  if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
+  o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
+  if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
+  else
+    o << "The supremum lies in [" << static_cast<double>(out.stable_to) << ", crossing]: the crossing is it unless an eigenvalue "
+      << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered";
+  if (out.stable_from > 0) o << "; below " << static_cast<double>(out.stable_from) << " not examined";
   out.note = o.str();
   return out;
 }

@@ -17,17 +17,19 @@
 //     enclosed at `prec` bits (the exponentials by arb_mat_exp), Newton at that precision first;
 //     K(X) inside X proves exactly one crossing in X. The precision is raised until the enclosure
 //     of p is 10^-digits relative or narrower.
-//  3. Below it (certified): stability for EVERY p in [stable_from, stable_to] by Stein
-//     certificates on intervals of p (numeric/ball_matrix.hpp's schur_decide on the ball matrix
-//     M0 + [p_lo, p_hi] M1), from a point of the stable run down towards 0 and up towards the
-//     crossing, each interval as wide as the certificate allows.
-//  4. Confirmation: stability::decide_loop (the decider of `stability --scene`) at stable_to
-//     (stable) and just above the crossing (NOT stable).
-// So the supremum of the stable interval that contains [stable_from, stable_to] lies in
-// [stable_to, crossing.hi] (certified), and the crossing found is that supremum unless an
-// eigenvalue leaves and re-enters the disk inside (stable_to, crossing.lo), a gap of relative
-// width `gap` that no certificate covers (reported). Step 1 can miss nothing that steps 2-4 would
-// then hide: a crossing below the one found breaks the cover of step 3 (undecided, exit 3).
+//  3. Below it (certified): every eigenvalue of every M0 + p M1, p in [a, b], inside the unit disk,
+//     by Rump's test in Arb (acb_mat_eig_simple_rump on the ball matrix M0 + [a, b] M1: disjoint
+//     balls, one simple eigenvalue each), on adjacent intervals from a point of the stable run up
+//     towards the crossing and down towards 0. The last interval reaches the crossing: on
+//     [a, crossing.hi] each eigenvalue ball either stays inside the disk or has d|lambda|^2/dp =
+//     2 Re(conj(lambda) (L M1 R)_ii) > 0 (L = R^-1, the eigenvector balls), and at p = crossing.lo
+//     all are inside: the moving ones only grow, so none reaches the circle before crossing.lo,
+//     and the supremum of the stable interval is in the crossing's enclosure.
+//  4. Confirmation: stability::decide_loop (the decider of `stability --scene`, Stein inertia) at
+//     a point just below the crossing (stable) and just above it (NOT stable).
+// When the last step fails, the supremum is only known to lie in [stable_to, crossing.hi] and the
+// relative gap not covered is reported (`gap`). Step 1 can miss nothing that steps 2-4 would then
+// hide: a crossing below the one found breaks the cover of step 3 (undecided, exit 3).
 // Implements: paper 000 Sec. VI (the loop as written); issue 42.
 #pragma once
 
@@ -51,14 +53,15 @@ struct LoopMax {
   Enclosure<rational> theta{0, 0};       ///< its angle in [0, pi] (rad; omega = theta / T)
   Enclosure<rational> sup{0, 0};         ///< [stable_to, crossing.hi]: holds the supremum (certified)
   rational stable_from = 0, stable_to = 0;  ///< stable for every p in [stable_from, stable_to] (certified)
-  double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered
+  double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered (0: sup = crossing)
+  std::optional<rational> stable_at;     ///< decide_loop: stable there (just below the crossing)
   std::optional<rational> unstable_at;   ///< decide_loop: NOT stable there (just above the crossing)
   std::string where;                     ///< "z = 1", "z = -1" or "complex pair"
   std::vector<double> mode;              ///< |position| of the crossing mode on each DOF, largest = 1
   rational T = 0;                        ///< the sample period (omega = theta / T)
   long states = 0;                       ///< order of M
   long precision_bits = 0;               ///< of the enclosure in step 2
-  long cover_intervals = 0;              ///< Stein certificates of step 3
+  long cover_intervals = 0;              ///< eigenvalue enclosures of step 3
   std::string note;                      ///< what was proven, or why nothing was
 };
 
