@@ -353,12 +353,13 @@ struct Cover {
   const BallMat& M1;
   long prec = 128;
   long checks = 0;
-  // h >= 0 such that every M0 + p M1, |p - c| <= h, is Schur stable (certified; 0: none found).
-  // At p = c Rump's test encloses M(c) = R diag(lambda) L with L = R^-1; for every p,
-  // L M(p) R = diag(lambda) + (p - c) C, C = L M1 R, and Gershgorin's discs of that matrix,
-  // |z - lambda_i| <= |p - c| sum_j |C_ij|, hold its eigenvalues: inside the disk while
-  // |lambda_i| + h sum_j |C_ij| < 1 for every i.
-  rational radius(const rational& c) {
+  // h >= 0 such that every M0 + p M1, p between c and c + dir h (dir = +-1), is Schur stable
+  // (certified; 0: none found). At p = c Rump's test encloses M(c) = R diag(lambda) L with
+  // L = R^-1; for every p, L M(p) R = diag(lambda) + t C, t = p - c, C = L M1 R, and Gershgorin's
+  // discs of that matrix, |z - lambda_i - t C_ii| <= |t| sum_{j != i} |C_ij|, hold its eigenvalues.
+  // |lambda_i + t C_ii| is convex in t, so every disc stays inside the unit disk for t between 0 and
+  // dir h when max(|lambda_i|, |lambda_i + dir h C_ii|) + h sum_{j != i} |C_ij| < 1 for every i.
+  rational radius(const rational& c, int dir) {
     ++checks;
     const long n = M0.rows();
     AcbMat A(n, n), L(n, n), R(n, n), C(n, n), M1c(n, n);
@@ -368,37 +369,62 @@ struct Cover {
     acb_mat_set_arb_mat(M1c.m, M1.get());
     acb_mat_mul(C.m, L.m, M1c.m, prec);
     acb_mat_mul(C.m, C.m, R.m, prec);
-    double h = INFINITY;
+    std::vector<Ball> off(static_cast<size_t>(n));  // sum_{j != i} |C_ij|, upper bounds
+    double h0 = INFINITY;                            // the zeroth-order radius: (1 - |lambda_i|) / sum_j |C_ij|
     for (long i = 0; i < n; ++i) {
-      Ball margin;  // 1 - |lambda_i|
+      Ball margin, t;
       acb_abs(margin.get(), E.v + i, prec);
       arb_sub_ui(margin.get(), margin.get(), 1, prec);
       arb_neg(margin.get(), margin.get());
       if (!arb_is_positive(margin.get())) return 0;
-      mag_t row, t;
-      mag_init(row);
-      mag_init(t);
+      Ball& o = off[static_cast<size_t>(i)];
       for (long j = 0; j < n; ++j) {
-        acb_get_mag(t, acb_mat_entry(C.m, i, j));
-        mag_add(row, row, t);
+        if (j == i) continue;
+        acb_abs(t.get(), acb_mat_entry(C.m, i, j), prec);
+        arb_add(o.get(), o.get(), t.get(), prec);
       }
-      arf_t lo;
-      arf_init(lo);
-      arb_get_lbound_arf(lo, margin.get(), prec);
-      const double m = arf_get_d(lo, ARF_RND_DOWN), r = mag_get_d(row);  // r rounded up
-      arf_clear(lo);
-      mag_clear(row);
-      mag_clear(t);
-      if (r > 0) h = std::min(h, m / r);
+      acb_abs(t.get(), acb_mat_entry(C.m, i, i), prec);
+      arb_add(t.get(), t.get(), o.get(), prec);
+      const double m = arf_get_d(arb_midref(margin.get()), ARF_RND_DOWN), r = arf_get_d(arb_midref(t.get()), ARF_RND_UP);
+      if (r > 0) h0 = std::min(h0, m / r);
     }
-    if (!std::isfinite(h)) return 0;  // the family does not move: not a question for this cover
-    return rational(h * 0.9);         // strictly inside the bound (and below the doubles' rounding)
+    if (!std::isfinite(h0)) return 0;  // the family does not move: not a question for this cover
+    // every disc inside for t = dir h (proven in balls)
+    auto holds = [&](double h) {
+      Ball hb(h * dir), ha(h), z;
+      acb_t w;
+      acb_init(w);
+      bool ok = true;
+      for (long i = 0; i < n && ok; ++i) {
+        acb_mul_arb(w, acb_mat_entry(C.m, i, i), hb.get(), prec);
+        acb_add(w, w, E.v + i, prec);
+        acb_abs(z.get(), w, prec);
+        Ball e0;
+        acb_abs(e0.get(), E.v + i, prec);
+        arb_max(z.get(), z.get(), e0.get(), prec);
+        arb_addmul(z.get(), ha.get(), off[static_cast<size_t>(i)].get(), prec);
+        arb_sub_ui(z.get(), z.get(), 1, prec);
+        ok = arb_is_negative(z.get());
+      }
+      acb_clear(w);
+      return ok;
+    };
+    double h = 0.5 * h0;
+    if (!holds(h)) return 0;
+    while (holds(2 * h)) h *= 2;
+    for (double f : {1.5, 1.25, 1.125})
+      if (holds(f * h)) {
+        h *= f;
+        break;
+      }
+    return rational(h);
   }
   // The last step, from `to` (stable) to the crossing's enclosure [lo, hi] (certified): on the ball
   // p in [to, hi] every eigenvalue is either inside the disk or has d|lambda|^2/dp > 0
-  // (dlambda/dp = (L M1 R)_ii), and at p = lo every eigenvalue is inside: then every |lambda_i(p)|
-  // < 1 on [to, lo] (the moving ones only grow), so the supremum lies in [lo, hi].
-  bool close(const rational& to, const rational& lo, const rational& hi, const BallMat& M0p, const BallMat& M1p, long precp) {
+  // (dlambda/dp = (L M1 R)_ii), and at p = q (just below the crossing's enclosure) every eigenvalue
+  // is inside: then every |lambda_i(p)| < 1 on [to, q] (the moving ones only grow), so the
+  // supremum lies in [q, hi].
+  bool close(const rational& to, const rational& q, const rational& hi, const BallMat& M0p, const BallMat& M1p, long precp) {
     ++checks;
     const long n = M0.rows();
     AcbMat A(n, n), L(n, n), R(n, n), D(n, n), M1c(n, n);
@@ -421,7 +447,7 @@ struct Cover {
     // at p = lo, at the enclosure's precision (the moving eigenvalue is within ~ (p* - lo) of the circle)
     for (long bits = precp; bits <= 4 * precp; bits *= 2) {
       AcbMat B(n, n);
-      family_ball(B, M0p, M1p, lo, lo, bits);
+      family_ball(B, M0p, M1p, q, q, bits);
       AcbVec F(n);
       if (!spectrum(F, nullptr, nullptr, B, bits)) continue;
       bool all = true;
@@ -587,14 +613,14 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   const rational enough = top * rational(std::pow(10.0, -digits - 1));  // sup enclosed as narrowly as the crossing
   while (cov.checks < 2000 && top - up > enough) {
     cov.prec = top - up > top / 100000000 ? 64 : 128;
-    if ((top - up) <= top / 1000000 && (top - up) * 4 <= tried) {
+    if ((top - up) <= top / 1000000000 && (top - up) * 4 <= tried) {
       tried = top - up;
-      if (cov.close(up, e.p.lo, e.p.hi, M0p, M1p, out.precision_bits)) {
+      if (cov.close(up, top - enough, e.p.hi, M0p, M1p, out.precision_bits)) {
         closed = true;
         break;
       }
     }
-    const rational h = cov.radius(up);
+    const rational h = cov.radius(up, 1);
     if (h <= 0 || up + h >= top) break;
     up += h;
   }
@@ -602,7 +628,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   const rational floor = top / 1000000;
   cov.prec = 64;
   for (const long budget = cov.checks + 100; cov.checks < budget && down > 0;) {
-    const rational h = cov.radius(down);
+    const rational h = cov.radius(down, -1);
     if (h <= 0) break;
     down = h >= down ? rational(0) : down - h;
     if (down < floor && down > 0) break;
@@ -615,9 +641,9 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     return out;
   }
   out.stable_from = down;
-  out.stable_to = closed ? e.p.lo : up;
+  out.stable_to = closed ? top - enough : up;
   out.sup = {out.stable_to, e.p.hi};
-  out.gap = closed ? 0.0 : static_cast<double>((top - up) / top);
+  out.gap = static_cast<double>((top - out.stable_to) / top);
   // step 4: the decider of `stability --scene` (an independent certificate) just below and above
   for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
     const rational pb = top * (1 - eps);

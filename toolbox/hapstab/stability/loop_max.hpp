@@ -18,13 +18,14 @@
 //     K(X) inside X proves exactly one crossing in X. The precision is raised until the enclosure
 //     of p is 10^-digits relative or narrower.
 //  3. Below it (certified): every eigenvalue of every M0 + p M1, p in [a, b], inside the unit disk,
-//     by Rump's test in Arb (acb_mat_eig_simple_rump on the ball matrix M0 + [a, b] M1: disjoint
-//     balls, one simple eigenvalue each), on adjacent intervals from a point of the stable run up
-//     towards the crossing and down towards 0. The last interval reaches the crossing: on
+//     on adjacent intervals from a point of the stable run up towards the crossing and down
+//     towards 0 (a walk of at most 2000 + 100 steps). The last interval reaches the crossing: on
 //     [a, crossing.hi] each eigenvalue ball either stays inside the disk or has d|lambda|^2/dp =
-//     2 Re(conj(lambda) (L M1 R)_ii) > 0 (L = R^-1, the eigenvector balls), and at p = crossing.lo
-//     all are inside: the moving ones only grow, so none reaches the circle before crossing.lo,
-//     and the supremum of the stable interval is in the crossing's enclosure.
+//     2 Re(conj(lambda) (L M1 R)_ii) > 0 (L = R^-1, the eigenvector balls), and at a point q
+//     10^-(digits+1) (relative) below crossing.lo all are inside: the moving ones only grow, so
+//     none reaches the circle before q, and the supremum of the stable interval is in [q, crossing.hi].
+//     The intervals of the walk: at each point c, Rump's enclosure of M(c) = R diag(lambda) R^-1
+//     and Gershgorin's discs of diag(lambda) + (p - c) R^-1 M1 R (centres lambda_i + (p - c) C_ii).
 //  4. Confirmation: stability::decide_loop (the decider of `stability --scene`, Stein inertia) at
 //     a point just below the crossing (stable) and just above it (NOT stable).
 // When the last step fails, the supremum is only known to lie in [stable_to, crossing.hi] and the

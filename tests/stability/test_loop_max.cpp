@@ -1,0 +1,147 @@
+// The supremum of a loop parameter beyond one DOF (stability/loop_max.hpp), against references
+// that share none of its numerics (no Arb exponential, no Krawczyk test, no eigenvalue enclosure):
+//  - 1 DOF, pure mass 1/(m s^2) on the wall K + B (z - 1)/(T z): the closed form of
+//    ext.stability.pure_mass, K* = (2B/T)(2m - BT)/(2m + BT), exact.
+//  - 2 DOF, two pure masses on a coupled spring-damper environment scaled by g: with pure masses the
+//    zero-order hold is exact (A nilpotent), so M(g) is a rational matrix; the reference is a
+//    bisection on g with the exact Schur test of M(g) (multidof::schur_stable: Schur-Cohn on
+//    det(zI - M) when its ball certificate cannot decide), to 2^-40 of a 2e-6 bracket.
+// Tolerance: the supremum's enclosure must be 1e-15 relative or narrower and meet the reference's
+// bracket (itself ~1e-18 wide): the "within 1e-15".
+//  - Refusals: a parameter that changes the controller's order or enters non-affinely, and one
+//    the loop does not depend on, are InputErrors naming it.
+#include <gtest/gtest.h>
+
+#include "hapstab/multidof/environment.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/sim/closed_loop.hpp"
+#include "hapstab/stability/loop_max.hpp"
+
+using namespace hapstab;
+using namespace hapstab::sim;
+
+namespace {
+using Q = rational;
+
+// K + B (z - 1)/(T z) per DOF, scaled by g; Kc couples the two DOFs through a spring (N = 1 or 2)
+StateSpace<Q> walls(const Q& g, const std::vector<Q>& K, const std::vector<Q>& B, const Q& Kc, const Q& T) {
+  const long N = static_cast<long>(K.size());
+  MatQ C = MatQ::Zero(N, N), D = MatQ::Zero(N, N);
+  for (long i = 0; i < N; ++i) {
+    C(i, i) = -g * B[static_cast<size_t>(i)] / T;
+    D(i, i) = g * (K[static_cast<size_t>(i)] + B[static_cast<size_t>(i)] / T + (N > 1 ? Kc : Q(0)));
+  }
+  if (N > 1) D(0, 1) = D(1, 0) = -g * Kc;
+  return {MatQ::Zero(N, N), MatQ::Identity(N, N), C, D, T};
+}
+
+// M(p) of the family, exactly, when the plant's A is nilpotent (pure masses) and there is no delay
+MatQ exact_M(const stability::LoopFamily& F, const Q& p) {
+  const long ns = F.A.rows(), nc = F.Kx0.rows();
+  MatQ Phi = MatQ::Identity(ns, ns), G = MatQ::Zero(ns, F.Bu.cols()), Ak = MatQ::Identity(ns, ns);
+  Q fact = 1, Tk = 1;
+  for (long k = 0; k <= ns; ++k) {  // Phi = sum (A T)^k / k!, G = sum A^k T^(k+1) / (k+1)! Bu
+    G += Ak * F.Bu * (Tk * F.T / (fact * (k + 1)));
+    Ak = MatQ(Ak * F.A);
+    fact *= k + 1;
+    Tk *= F.T;
+    if (k + 1 <= ns) Phi += Ak * (Tk / fact);
+  }
+  EXPECT_TRUE(Ak.isZero(0)) << "the plant is not nilpotent: the exact reference does not apply";
+  const MatQ Ku = F.Ku0 + F.dKu * p, Kx = F.Kx0 + F.dKx * p;
+  MatQ M = MatQ::Zero(ns + nc, ns + nc);
+  M.topLeftCorner(ns, ns) = Phi;
+  M.topRows(ns) += G * Ku;
+  M.bottomRows(nc) = Kx;
+  return M;
+}
+
+LoopSpec two_masses(const Q& g) {
+  LoopSpec s;
+  s.T = Q(1, 100);
+  s.devices = {mass_damper("left", Q(1, 10), Q(0)), mass_damper("right", Q(3, 10), Q(0))};
+  s.environment = walls(g, {Q(200), Q(300)}, {Q(2), Q(3)}, Q(50), s.T);
+  return s;
+}
+}  // namespace
+
+TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
+  int compared = 0;
+  for (const Q m : {Q(1, 10), Q(1)})
+    for (const Q B : {Q(2), Q(10)}) {
+      const Q T(1, 100);
+      if (!(B * T < 2 * m)) continue;
+      const Q K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
+      // the wall K' + B (z-1)/(Tz) with K' = p: affine in p (the damper's part rides along unscaled)
+      const stability::LoopAt at = [&](const Q& p) {
+        LoopSpec s;
+        s.T = T;
+        s.devices = {mass_damper("d", m, Q(0))};
+        s.environment = StateSpace<Q>{MatQ::Zero(1, 1), MatQ::Identity(1, 1), MatQ::Constant(1, 1, -B / T),
+                                      MatQ::Constant(1, 1, p + B / T), T};
+        return s;
+      };
+      const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 16);
+      ASSERT_EQ(r.outcome, Outcome::holds) << r.note;
+      EXPECT_EQ(r.status, Status::certified);
+      EXPECT_TRUE(r.sup.lo <= K && K <= r.sup.hi) << "K* = " << K.str() << " not in [" << r.sup.lo.str() << ", " << r.sup.hi.str() << "]";
+      EXPECT_LE(static_cast<double>((r.sup.hi - r.sup.lo) / K), 1e-15);
+      EXPECT_EQ(r.where, "complex pair");
+      ++compared;
+    }
+  EXPECT_GE(compared, 3);
+}
+
+TEST(LoopMax, TwoDofAgreesWithExactSchurBisection) {
+  const stability::LoopAt at = [](const Q& g) { return two_masses(g); };
+  const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", 16);
+  ASSERT_EQ(r.outcome, Outcome::holds) << r.note;
+  EXPECT_EQ(r.status, Status::certified);
+  const double width = static_cast<double>((r.sup.hi - r.sup.lo) / r.sup.hi);
+  EXPECT_LE(width, 1e-15);
+  const stability::LoopFamily F = stability::loop_family(at, Q(1), "g");
+  // the exact family is the closed loop of sim/closed_loop.hpp (its ball M holds the exact M)
+  for (const Q& p : {Q(1, 2), Q(3)}) {
+    const MatQ Me = exact_M(F, p);
+    const BallMatrix Mb = sampled_closed_loop(at(p)).M;
+    ASSERT_EQ(Mb.rows(), Me.rows());
+    for (Eigen::Index i = 0; i < Me.rows(); ++i)
+      for (Eigen::Index j = 0; j < Me.cols(); ++j)
+        EXPECT_LE(std::abs(static_cast<double>(Me(i, j)) - Mb.mid(i, j)), Mb.rad(i, j) + 1e-300) << i << "," << j;
+  }
+  // the reference: exact Schur verdicts, bisected
+  Q lo = r.sup.lo * (1 - Q(1, 1000000)), hi = r.sup.hi * (1 + Q(1, 1000000));
+  ASSERT_TRUE(multidof::schur_stable(exact_M(F, lo)));
+  ASSERT_FALSE(multidof::schur_stable(exact_M(F, hi)));
+  for (int it = 0; it < 40; ++it) {
+    const Q mid = (lo + hi) / 2;
+    (multidof::schur_stable(exact_M(F, mid)) ? lo : hi) = mid;
+  }
+  EXPECT_LE(static_cast<double>((hi - lo) / hi), 1e-17);
+  EXPECT_TRUE(r.sup.lo <= hi && lo <= r.sup.hi) << "reference [" << static_cast<double>(lo) << ", " << static_cast<double>(hi)
+                                               << "], sup [" << static_cast<double>(r.sup.lo) << ", " << static_cast<double>(r.sup.hi) << "]";
+}
+
+TEST(LoopMax, RefusesWhatItCannotModel) {
+  // the environment's pole moves with p: the closed loop is not affine in p
+  const stability::LoopAt pole = [](const Q& p) {
+    LoopSpec s = two_masses(Q(1));
+    s.environment->A = MatQ::Identity(2, 2) * (p / (p + 1));
+    return s;
+  };
+  try {
+    stability::max_parameter(pole, Q(1), "a", 16);
+    FAIL() << "accepted a non-affine parameter";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--max a"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("affine"), std::string::npos) << e.what();
+  }
+  const stability::LoopAt none = [](const Q&) { return two_masses(Q(1)); };
+  try {
+    stability::max_parameter(none, Q(1), "c", 16);
+    FAIL() << "accepted a parameter the loop does not depend on";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not depend on c"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(stability::max_parameter([](const Q& g) { return two_masses(g); }, Q(1), "g", 0), InputError);
+}
