@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "hapstab/numeric/error.hpp"
-#include "hapstab/numeric/ball_matrix_arb.hpp"
+#include "hapstab/numeric/flint.hpp"
 
 namespace hapstab {
 
@@ -29,9 +29,7 @@ void to_double(const arb_t x, double& mid, double& rad) {
   rad = r > 0 ? std::nextafter(r, INFINITY) : 0.0;
 }
 
-}  // namespace
-
-void to_arb(flint::BallMat& out, const BallMatrix& A) {
+void load(flint::BallMat& out, const BallMatrix& A) {
   for (Eigen::Index i = 0; i < A.rows(); ++i)
     for (Eigen::Index j = 0; j < A.cols(); ++j) {
       arb_struct* x = out.at(static_cast<long>(i), static_cast<long>(j));
@@ -40,14 +38,12 @@ void to_arb(flint::BallMat& out, const BallMatrix& A) {
     }
 }
 
-BallMatrix from_arb(flint::BallMat& B) {
+BallMatrix unload(flint::BallMat& B) {
   BallMatrix A(B.rows(), B.cols());
   for (long i = 0; i < B.rows(); ++i)
     for (long j = 0; j < B.cols(); ++j) to_double(B.at(i, j), A.mid(i, j), A.rad(i, j));
   return A;
 }
-
-namespace {
 
 void check_finite(const BallMatrix& A, const char* what) {
   if (!A.mid.allFinite() || !A.rad.allFinite()) throw NumericalError(std::string(what) + ": a non-finite entry");
@@ -58,7 +54,7 @@ void check_finite(const BallMatrix& A, const char* what) {
 void congruence(flint::BallMat& Y, const BallMatrix& S, const Eigen::MatrixXd& X) {
   const long n = static_cast<long>(S.rows());
   flint::BallMat Sb(n, n), St(n, n), Xb(n, n), Xt(n, n), T(n, n);
-  to_arb(Sb, S);
+  load(Sb, S);
   arb_mat_transpose(St.get(), Sb.get());
   arb_mat_add(Sb.get(), Sb.get(), St.get(), kPrec);
   arb_mat_scalar_mul_2exp_si(Sb.get(), Sb.get(), -1);
@@ -148,20 +144,20 @@ BallMatrix operator*(const BallMatrix& A, const BallMatrix& B) {
   const long r = static_cast<long>(A.rows()), k = static_cast<long>(A.cols()), c = static_cast<long>(B.cols());
   if (r == 0 || c == 0 || k == 0) return BallMatrix(A.rows(), B.cols());
   flint::BallMat a(r, k), b(k, c), p(r, c);
-  to_arb(a, A);
-  to_arb(b, B);
+  load(a, A);
+  load(b, B);
   arb_mat_mul(p.get(), a.get(), b.get(), kPrec);
-  return from_arb(p);
+  return unload(p);
 }
 
 BallMatrix operator+(const BallMatrix& A, const BallMatrix& B) {
   if (A.rows() != B.rows() || A.cols() != B.cols()) throw InputError("ball matrix sum: sizes differ");
   const long r = static_cast<long>(A.rows()), c = static_cast<long>(A.cols());
   flint::BallMat a(r, c), b(r, c);
-  to_arb(a, A);
-  to_arb(b, B);
+  load(a, A);
+  load(b, B);
   arb_mat_add(a.get(), a.get(), b.get(), kPrec);
-  return from_arb(a);
+  return unload(a);
 }
 
 bool positive_definite(const BallMatrix& S, std::string* why) {

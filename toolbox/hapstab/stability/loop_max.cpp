@@ -15,7 +15,6 @@
 
 #include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
-#include "hapstab/numeric/ball_matrix_arb.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
