@@ -226,6 +226,7 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   j["status"] = found ? to_string(m.status) : "undecided";
   j["path"] = "closed_loop_matrix";
   j["states"] = m.states;
+  j["fixed_modes"] = m.fixed_modes;
   j["note"] = m.note;
   j["digits"] = o.digits;
   j["precision_bits"] = m.precision_bits;
@@ -267,12 +268,18 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
     return scene::load_scene(o.scene, q).loop;
   };
   const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
+  if (m.outcome == Outcome::fails) {  // a mode no parameter moves is not inside: unstable for every value
+    if (o.json) cli::print_json({{"name", o.max_name}, {"max", "0"}, {"status", "exact"}, {"path", "closed_loop_matrix"}, {"note", m.note}});
+    else std::cout << "sup " << o.max_name << " = 0   [exact]\n  " << m.note << "\n";
+    return cli::exit_property_fails;
+  }
   const nlohmann::json j = loop_max_json(m, o, sc);
   if (o.json) cli::print_json(j);
   else if (m.outcome != Outcome::holds) std::cout << "sup " << o.max_name << ": undecided\n  " << m.note << "\n";
   else {
     std::cout << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
-              << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states << "]\n"
+              << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
+              << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
               << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
               << "  stable for every " << o.max_name << " in [" << j["stable_on"][0].get<std::string>() << ", "
               << j["stable_on"][1].get<std::string>() << "] (certified), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"

@@ -16,6 +16,9 @@
 #include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 
@@ -335,7 +338,19 @@ bool spectrum(AcbVec& E, AcbMat* L, AcbMat* R, const AcbMat& A, long prec) {
   AcbMat Am(n, n), Ra(n, n);
   AcbVec Ea(n);
   acb_mat_get_mid(Am.m, A.m);
-  acb_mat_approx_eig_qr(Ea.v, nullptr, Ra.m, Am.m, nullptr, 0, prec);
+  if (prec <= 64) {  // the approximation in double (Rump's test proves what it encloses either way)
+    Eigen::MatrixXd m(n, n);
+    for (long i = 0; i < n; ++i)
+      for (long j = 0; j < n; ++j) m(i, j) = arf_get_d(arb_midref(acb_realref(acb_mat_entry(Am.m, i, j))), ARF_RND_NEAR);
+    Eigen::EigenSolver<Eigen::MatrixXd> es(m, true);
+    if (es.info() != Eigen::Success) return false;
+    for (long i = 0; i < n; ++i) {
+      acb_set_d_d(Ea.v + i, es.eigenvalues()(i).real(), es.eigenvalues()(i).imag());
+      for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(Ra.m, j, i), es.eigenvectors()(j, i).real(), es.eigenvectors()(j, i).imag());
+    }
+  } else {
+    acb_mat_approx_eig_qr(Ea.v, nullptr, Ra.m, Am.m, nullptr, 0, prec);
+  }
   return acb_mat_eig_simple_rump(E.v, L ? L->m : nullptr, R ? R->m : nullptr, A.m, Ea.v, Ra.m, prec) != 0;
 }
 
@@ -368,23 +383,47 @@ struct Cover {
     acb_mat_set_arb_mat(M1c.m, M1.get());
     acb_mat_mul(C.m, L.m, M1c.m, prec);
     acb_mat_mul(C.m, C.m, R.m, prec);
-    std::vector<Ball> off(static_cast<size_t>(n));  // sum_{j != i} |C_ij|, upper bounds
-    double h0 = INFINITY;                            // the zeroth-order radius: (1 - |lambda_i|) / sum_j |C_ij|
+    // Gershgorin's discs after the diagonal similarity D = diag(d), d > 0 (any d is valid): row i's
+    // radius sum_{j != i} |C_ij| d_j / d_i. d: the Perron vector of diag(1/(1 - |lambda_i|)) |C_off|
+    // (in double; a choice, not part of the proof), which balances the radii against the margins.
+    std::vector<Ball> margin(static_cast<size_t>(n)), diag(static_cast<size_t>(n)), off(static_cast<size_t>(n));
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, n);
     for (long i = 0; i < n; ++i) {
-      Ball margin, t;
-      acb_abs(margin.get(), E.v + i, prec);
-      arb_sub_ui(margin.get(), margin.get(), 1, prec);
-      arb_neg(margin.get(), margin.get());
-      if (!arb_is_positive(margin.get())) return 0;
+      Ball& m = margin[static_cast<size_t>(i)];
+      acb_abs(m.get(), E.v + i, prec);
+      arb_sub_ui(m.get(), m.get(), 1, prec);
+      arb_neg(m.get(), m.get());
+      if (!arb_is_positive(m.get())) return 0;
+      acb_abs(diag[static_cast<size_t>(i)].get(), acb_mat_entry(C.m, i, i), prec);
+      const double mi = arf_get_d(arb_midref(m.get()), ARF_RND_DOWN);
+      for (long j = 0; j < n; ++j)
+        if (j != i) B(i, j) = mag_get_d(arb_radref(acb_realref(acb_mat_entry(C.m, i, j)))) +
+                              std::abs(std::complex<double>(arf_get_d(arb_midref(acb_realref(acb_mat_entry(C.m, i, j))), ARF_RND_UP),
+                                                            arf_get_d(arb_midref(acb_imagref(acb_mat_entry(C.m, i, j))), ARF_RND_UP))) / mi;
+    }
+    Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+    for (int it = 0; it < 60; ++it) {
+      Eigen::VectorXd nd = B * d + 1e-12 * d.sum() * Eigen::VectorXd::Ones(n);
+      const double mx = nd.maxCoeff();
+      if (!(mx > 0) || !std::isfinite(mx)) break;
+      d = nd / mx;
+    }
+    if (!(d.minCoeff() > 0) || !d.allFinite()) d = Eigen::VectorXd::Ones(n);
+    double h0 = INFINITY;  // the zeroth-order radius: (1 - |lambda_i|) / (|C_ii| + radius_i)
+    for (long i = 0; i < n; ++i) {
       Ball& o = off[static_cast<size_t>(i)];
+      Ball t, dj;
       for (long j = 0; j < n; ++j) {
         if (j == i) continue;
         acb_abs(t.get(), acb_mat_entry(C.m, i, j), prec);
+        arb_set_d(dj.get(), d(j));
+        arb_mul(t.get(), t.get(), dj.get(), prec);
         arb_add(o.get(), o.get(), t.get(), prec);
       }
-      acb_abs(t.get(), acb_mat_entry(C.m, i, i), prec);
-      arb_add(t.get(), t.get(), o.get(), prec);
-      const double m = arf_get_d(arb_midref(margin.get()), ARF_RND_DOWN), r = arf_get_d(arb_midref(t.get()), ARF_RND_UP);
+      arb_set_d(dj.get(), d(i));
+      arb_div(o.get(), o.get(), dj.get(), prec);
+      arb_add(t.get(), diag[static_cast<size_t>(i)].get(), o.get(), prec);
+      const double m = arf_get_d(arb_midref(margin[static_cast<size_t>(i)].get()), ARF_RND_DOWN), r = arf_get_d(arb_midref(t.get()), ARF_RND_UP);
       if (r > 0) h0 = std::min(h0, m / r);
     }
     if (!std::isfinite(h0)) return 0;  // the family does not move: not a question for this cover
@@ -457,7 +496,113 @@ struct Cover {
   }
 };
 
+// ---- the modes no p moves, deflated exactly ----
+// A basis (columns) of the kernel of A, exact (reduced row echelon form).
+MatQ kernel(const MatQ& A) {
+  MatQ R = A;
+  const long rows = R.rows(), cols = R.cols();
+  std::vector<long> pivot_col;
+  long r = 0;
+  for (long c = 0; c < cols && r < rows; ++c) {
+    long piv = -1;
+    for (long i = r; i < rows; ++i)
+      if (R(i, c) != 0) {
+        piv = i;
+        break;
+      }
+    if (piv < 0) continue;
+    R.row(r).swap(R.row(piv));
+    const rational inv = 1 / R(r, c);
+    for (long j = 0; j < cols; ++j) R(r, j) *= inv;
+    for (long i = 0; i < rows; ++i)
+      if (i != r && R(i, c) != 0) {
+        const rational f = R(i, c);
+        for (long j = 0; j < cols; ++j) R(i, j) -= f * R(r, j);
+      }
+    pivot_col.push_back(c);
+    ++r;
+  }
+  std::vector<bool> is_pivot(static_cast<size_t>(cols), false);
+  for (long c : pivot_col) is_pivot[static_cast<size_t>(c)] = true;
+  MatQ K = MatQ::Zero(cols, cols - r);
+  long k = 0;
+  for (long f = 0; f < cols; ++f) {
+    if (is_pivot[static_cast<size_t>(f)]) continue;
+    K(f, k) = 1;
+    for (long i = 0; i < r; ++i) K(pivot_col[static_cast<size_t>(i)], k) = -R(i, f);
+    ++k;
+  }
+  return K;
+}
+
+// The controller-state subspace V with Ku(p) V = 0 and Kx(p) V in V for every p (Ku, Kx restricted
+// to the controller's states): the largest such, by V_{j+1} = {v in V_j : X0 v, dX v in V_j}.
+// A mode in V is an eigenvalue of every M(p) (the hidden modes of a block: an environment's
+// unobservable states); the rest of the spectrum is that of M on the quotient.
+MatQ fixed_subspace(const MatQ& Kc0, const MatQ& dKc, const MatQ& X0, const MatQ& dX) {
+  MatQ S(Kc0.rows() + dKc.rows(), Kc0.cols());
+  S << Kc0, dKc;
+  MatQ V = kernel(S);
+  while (V.cols() > 0) {
+    const MatQ P = kernel(MatQ(V.transpose())).transpose();  // rows annihilate span(V)
+    if (P.rows() == 0) break;                                // V is everything
+    MatQ Cn(2 * P.rows(), V.cols());
+    Cn << exact_product(P, exact_product(X0, V)), exact_product(P, exact_product(dX, V));
+    const MatQ a = kernel(Cn);
+    if (a.cols() == V.cols()) break;
+    V = exact_product(V, a);
+  }
+  return V;
+}
+
 }  // namespace
+
+// Removes the controller's fixed modes (fixed_subspace) from F, exactly: with T = [W V]
+// invertible, T^-1 Kx T is block lower triangular and Ku T = [Ku W, 0]; F keeps the W block. The
+// V block must not move with p (else F is left as it is) and is recorded in F.fixed.
+void deflate(LoopFamily& F) {
+  const long ns = F.A.rows(), nc = F.Kx0.rows();
+  if (nc == 0) return;
+  const MatQ X0 = F.Kx0.rightCols(nc), dX = F.dKx.rightCols(nc);
+  const MatQ V = fixed_subspace(F.Ku0.rightCols(nc), F.dKu.rightCols(nc), X0, dX);
+  const long nv = V.cols();
+  if (nv == 0) return;
+  MatQ T(nc, nc);  // [W V]: W the unit vectors that complete V
+  long nw = 0;
+  MatQ basis = V;
+  for (long i = 0; i < nc && nw < nc - nv; ++i) {
+    MatQ trial(nc, basis.cols() + 1);
+    trial << basis, MatQ::Identity(nc, nc).col(i);
+    if (exact_rank(trial) == trial.cols()) {
+      basis = trial;
+      T.col(nw++) = MatQ::Identity(nc, nc).col(i);
+    }
+  }
+  T.rightCols(nv) = V;
+  const MatQ Ti = exact_solve(T, MatQ(MatQ::Identity(nc, nc)), "the fixed-mode basis");
+  const MatQ dXT = exact_product(Ti, exact_product(dX, T));
+  if (!dXT.bottomRightCorner(nv, nv).isZero(0)) return;  // V's own dynamics move with p: keep all
+  F.fixed = exact_product(Ti, exact_product(X0, T)).bottomRightCorner(nv, nv);
+  const long nw0 = nc - nv;
+  const MatQ W = T.leftCols(nw0), TiW = Ti.topRows(nw0);
+  auto rows_u = [&](const MatQ& Ku) {  // [Ku_s, Ku_c W]
+    MatQ r(Ku.rows(), ns + nw0);
+    r << Ku.leftCols(ns), exact_product(MatQ(Ku.rightCols(nc)), W);
+    return r;
+  };
+  auto rows_x = [&](const MatQ& Kx) {  // W rows of T^-1 [Kx_s, Kx_c W]
+    MatQ r(nw0, ns + nw0);
+    r << exact_product(TiW, MatQ(Kx.leftCols(ns))), exact_product(TiW, exact_product(MatQ(Kx.rightCols(nc)), W));
+    return r;
+  };
+  F.Ku0 = rows_u(F.Ku0);
+  F.dKu = rows_u(F.dKu);
+  F.Kx0 = rows_x(F.Kx0);
+  F.dKx = rows_x(F.dKx);
+  MatQ pos(F.positions.rows(), F.positions.cols() - nv);
+  pos << F.positions.leftCols(ns), exact_product(MatQ(F.positions.middleCols(ns, nc)), W), F.positions.rightCols(F.positions.cols() - ns - nc);
+  F.positions = pos;
+}
 
 LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& name) {
   if (p1 <= 0) throw InputError("--max " + name + ": the reference value must be > 0");
@@ -497,6 +642,7 @@ LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& 
     if (!same_plant(c) || !equal(c.Ku, MatQ(F.Ku0 + F.dKu * p)) || !equal(c.Kx, MatQ(F.Kx0 + F.dKx * p)))
       throw InputError(only + "; the closed loop is not affine in " + name + " (checked exactly at " + name + " = " + p.str() + ")");
   }
+  deflate(F);
   return F;
 }
 
@@ -506,6 +652,14 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   LoopMax out;
   out.T = F.T;
   out.states = order(F);
+  out.fixed_modes = F.fixed.rows();
+  if (F.fixed.rows() > 0 && !schur_stable(charpoly(F.fixed))) {
+    out.outcome = Outcome::fails;
+    out.status = Status::exact;
+    out.note = "NOT stable for any " + name + " [exact]: " + std::to_string(F.fixed.rows()) +
+               " mode(s) of the controller that no " + name + " moves (a block's hidden modes) are not all inside the unit circle";
+    return out;
+  }
   const ArbFamily base = arb_family(F, 128);
   const Eigen::MatrixXd M0d = mid(*base.M0), M1d = mid(*base.M1);
   auto rho = [&](double p) {
@@ -626,7 +780,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
   const rational floor = top / 1000000;
   cov.prec = 64;
-  for (const long budget = cov.checks + 100; cov.checks < budget && down > 0;) {
+  for (const long budget = cov.checks + 30; cov.checks < budget && down > 0;) {
     const rational h = cov.radius(down, -1);
     if (h <= 0) break;
     down = h >= down ? rational(0) : down - h;

@@ -31,6 +31,10 @@
 // When the last step fails, the supremum is only known to lie in [stable_to, crossing.hi] and the
 // relative gap not covered is reported (`gap`). Step 1 can miss nothing that steps 2-4 would then
 // hide: a crossing below the one found breaks the cover of step 3 (undecided, exit 3).
+// Before step 1 the controller's modes that no p moves (an environment's unobservable states:
+// Ku(p) V = 0, Kx(p) V in V, the V block constant) are deflated exactly and checked Schur stable
+// exactly (Schur-Cohn on their characteristic polynomial): repeated, they would defeat the
+// simple-eigenvalue tests of steps 2-3.
 // Implements: paper 000 Sec. VI (the loop as written); issue 42.
 #pragma once
 
@@ -60,7 +64,8 @@ struct LoopMax {
   std::string where;                     ///< "z = 1", "z = -1" or "complex pair"
   std::vector<double> mode;              ///< |position| of the crossing mode on each DOF, largest = 1
   rational T = 0;                        ///< the sample period (omega = theta / T)
-  long states = 0;                       ///< order of M
+  long states = 0;                       ///< order of M (without the fixed modes)
+  long fixed_modes = 0;                  ///< deflated: eigenvalues of every M(p), proven inside (exact)
   long precision_bits = 0;               ///< of the enclosure in step 2
   long cover_intervals = 0;              ///< eigenvalue enclosures of step 3
   std::string note;                      ///< what was proven, or why nothing was
@@ -75,6 +80,9 @@ struct LoopFamily {
   long n = 0;
   rational f = 0, T = 0;
   long N = 0;
+  /// The controller's modes no p moves (a block's hidden modes), deflated from Ku, Kx exactly:
+  /// their matrix; M(p)'s spectrum is that of the family above and eig(fixed).
+  MatQ fixed;
 };
 LoopFamily loop_family(const LoopAt& at, const rational& reference, const std::string& name);
 
