@@ -368,79 +368,111 @@ struct Cover {
   long prec = 128;
   long checks = 0;
   // h >= 0 such that every M0 + p M1, p between c and c + dir h (dir = +-1), is Schur stable
-  // (certified; 0: none found). At p = c Rump's test encloses M(c) = R diag(lambda) L with
-  // L = R^-1; for every p, L M(p) R = diag(lambda) + t C, t = p - c, C = L M1 R, and Gershgorin's
-  // discs of that matrix, |z - lambda_i - t C_ii| <= |t| sum_{j != i} |C_ij|, hold its eigenvalues.
-  // |lambda_i + t C_ii| is convex in t, so every disc stays inside the unit disk for t between 0 and
-  // dir h when max(|lambda_i|, |lambda_i + dir h C_ii|) + h sum_{j != i} |C_ij| < 1 for every i.
+  // (certified; 0: none found). R: approximate eigenvectors of M(c) (double, or Arb's QR at `prec`
+  // bits), made exact; L: a ball enclosure of R^-1. Then for every p, with t = p - c,
+  //   R^-1 M(p) R  in  B0 + t C,   B0 = L M(c) R (nearly diagonal),  C = L M1 R,
+  // a similarity: Gershgorin's discs of D^-1 (B0 + t C) D, D = diag(d) > 0 (any d), hold every
+  // eigenvalue of M(p). Row i: centre B0_ii + t C_ii (|.| convex in t: the larger of its ends),
+  // radius sum_{j != i} (|B0_ij| + h |C_ij|) d_j / d_i. d: the Perron vector of
+  // diag(1/(1 - |B0_ii|)) |C_off| (double; a choice, not part of the proof), which balances the
+  // radii against the margins. All discs inside the unit circle for t in [0, dir h]: h is proven.
   rational radius(const rational& c, int dir) {
     ++checks;
     const long n = M0.rows();
-    AcbMat A(n, n), L(n, n), R(n, n), C(n, n), M1c(n, n);
+    AcbMat A(n, n), R(n, n), L(n, n), B0(n, n), C(n, n), M1c(n, n);
     family_ball(A, M0, M1, c, c, prec);
-    AcbVec E(n);
-    if (!spectrum(E, &L, &R, A, prec)) return 0;
+    if (prec <= 64) {
+      Eigen::MatrixXd m(n, n);
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) m(i, j) = arf_get_d(arb_midref(acb_realref(acb_mat_entry(A.m, i, j))), ARF_RND_NEAR);
+      Eigen::EigenSolver<Eigen::MatrixXd> es(m, true);
+      if (es.info() != Eigen::Success) return 0;
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(R.m, i, j), es.eigenvectors()(i, j).real(), es.eigenvectors()(i, j).imag());
+    } else {
+      AcbMat Am(n, n);
+      AcbVec Ea(n);
+      acb_mat_get_mid(Am.m, A.m);
+      acb_mat_approx_eig_qr(Ea.v, nullptr, R.m, Am.m, nullptr, 0, prec);  // an approximation: its flag does not matter
+      acb_mat_get_mid(R.m, R.m);
+    }
+    if (!acb_mat_inv(L.m, R.m, prec)) return 0;
+    acb_mat_mul(B0.m, L.m, A.m, prec);
+    acb_mat_mul(B0.m, B0.m, R.m, prec);
     acb_mat_set_arb_mat(M1c.m, M1.get());
     acb_mat_mul(C.m, L.m, M1c.m, prec);
     acb_mat_mul(C.m, C.m, R.m, prec);
-    // Gershgorin's discs after the diagonal similarity D = diag(d), d > 0 (any d is valid): row i's
-    // radius sum_{j != i} |C_ij| d_j / d_i. d: the Perron vector of diag(1/(1 - |lambda_i|)) |C_off|
-    // (in double; a choice, not part of the proof), which balances the radii against the margins.
-    std::vector<Ball> margin(static_cast<size_t>(n)), diag(static_cast<size_t>(n)), off(static_cast<size_t>(n));
-    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, n);
-    for (long i = 0; i < n; ++i) {
-      Ball& m = margin[static_cast<size_t>(i)];
-      acb_abs(m.get(), E.v + i, prec);
+    auto upper = [&](const acb_struct* z) {  // |z|, rounded up, as a double
+      mag_t t;
+      mag_init(t);
+      acb_get_mag(t, z);
+      const double v = mag_get_d(t);
+      mag_clear(t);
+      return v;
+    };
+    auto margin = [&](long i, const Ball& minus) {  // 1 - |B0_ii| - minus, its lower end as a double
+      Ball m;
+      acb_abs(m.get(), acb_mat_entry(B0.m, i, i), prec);
+      arb_add(m.get(), m.get(), minus.get(), prec);
       arb_sub_ui(m.get(), m.get(), 1, prec);
       arb_neg(m.get(), m.get());
-      if (!arb_is_positive(m.get())) return 0;
-      acb_abs(diag[static_cast<size_t>(i)].get(), acb_mat_entry(C.m, i, i), prec);
-      const double mi = arf_get_d(arb_midref(m.get()), ARF_RND_DOWN);
+      arf_t lo;
+      arf_init(lo);
+      arb_get_lbound_arf(lo, m.get(), prec);
+      const double v = arf_get_d(lo, ARF_RND_DOWN);
+      arf_clear(lo);
+      return v;
+    };
+    Eigen::MatrixXd Bd = Eigen::MatrixXd::Zero(n, n);
+    for (long i = 0; i < n; ++i) {
+      const double mi = margin(i, Ball(0L));
+      if (!(mi > 0)) return 0;
       for (long j = 0; j < n; ++j)
-        if (j != i) B(i, j) = mag_get_d(arb_radref(acb_realref(acb_mat_entry(C.m, i, j)))) +
-                              std::abs(std::complex<double>(arf_get_d(arb_midref(acb_realref(acb_mat_entry(C.m, i, j))), ARF_RND_UP),
-                                                            arf_get_d(arb_midref(acb_imagref(acb_mat_entry(C.m, i, j))), ARF_RND_UP))) / mi;
+        if (j != i) Bd(i, j) = upper(acb_mat_entry(C.m, i, j)) / mi;
     }
     Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
     for (int it = 0; it < 60; ++it) {
-      Eigen::VectorXd nd = B * d + 1e-12 * d.sum() * Eigen::VectorXd::Ones(n);
+      Eigen::VectorXd nd = Bd * d + 1e-12 * d.sum() * Eigen::VectorXd::Ones(n);
       const double mx = nd.maxCoeff();
       if (!(mx > 0) || !std::isfinite(mx)) break;
       d = nd / mx;
     }
     if (!(d.minCoeff() > 0) || !d.allFinite()) d = Eigen::VectorXd::Ones(n);
-    double h0 = INFINITY;  // the zeroth-order radius: (1 - |lambda_i|) / (|C_ii| + radius_i)
+    // per row: the scaled radii of B0 and of C (upper bounds, balls)
+    std::vector<Ball> off0(static_cast<size_t>(n)), offC(static_cast<size_t>(n));
+    double h0 = INFINITY;  // the zeroth-order guess: (1 - |B0_ii| - r0_i) / (|C_ii| + rC_i)
     for (long i = 0; i < n; ++i) {
-      Ball& o = off[static_cast<size_t>(i)];
       Ball t, dj;
       for (long j = 0; j < n; ++j) {
         if (j == i) continue;
-        acb_abs(t.get(), acb_mat_entry(C.m, i, j), prec);
         arb_set_d(dj.get(), d(j));
-        arb_mul(t.get(), t.get(), dj.get(), prec);
-        arb_add(o.get(), o.get(), t.get(), prec);
+        acb_abs(t.get(), acb_mat_entry(B0.m, i, j), prec);
+        arb_addmul(off0[static_cast<size_t>(i)].get(), t.get(), dj.get(), prec);
+        acb_abs(t.get(), acb_mat_entry(C.m, i, j), prec);
+        arb_addmul(offC[static_cast<size_t>(i)].get(), t.get(), dj.get(), prec);
       }
       arb_set_d(dj.get(), d(i));
-      arb_div(o.get(), o.get(), dj.get(), prec);
-      arb_add(t.get(), diag[static_cast<size_t>(i)].get(), o.get(), prec);
-      const double m = arf_get_d(arb_midref(margin[static_cast<size_t>(i)].get()), ARF_RND_DOWN), r = arf_get_d(arb_midref(t.get()), ARF_RND_UP);
+      arb_div(off0[static_cast<size_t>(i)].get(), off0[static_cast<size_t>(i)].get(), dj.get(), prec);
+      arb_div(offC[static_cast<size_t>(i)].get(), offC[static_cast<size_t>(i)].get(), dj.get(), prec);
+      const double m = margin(i, off0[static_cast<size_t>(i)]);
+      const double r = upper(acb_mat_entry(C.m, i, i)) + arf_get_d(arb_midref(offC[static_cast<size_t>(i)].get()), ARF_RND_UP);
+      if (!(m > 0)) return 0;
       if (r > 0) h0 = std::min(h0, m / r);
     }
     if (!std::isfinite(h0)) return 0;  // the family does not move: not a question for this cover
-    // every disc inside for t = dir h (proven in balls)
-    auto holds = [&](double h) {
-      Ball hb(h * dir), ha(h), z;
+    auto holds = [&](double h) {       // every disc inside for t in [0, dir h] (proven in balls)
+      Ball hb(h * dir), ha(h), z, e0;
       acb_t w;
       acb_init(w);
       bool ok = true;
       for (long i = 0; i < n && ok; ++i) {
         acb_mul_arb(w, acb_mat_entry(C.m, i, i), hb.get(), prec);
-        acb_add(w, w, E.v + i, prec);
+        acb_add(w, w, acb_mat_entry(B0.m, i, i), prec);
         acb_abs(z.get(), w, prec);
-        Ball e0;
-        acb_abs(e0.get(), E.v + i, prec);
+        acb_abs(e0.get(), acb_mat_entry(B0.m, i, i), prec);
         arb_max(z.get(), z.get(), e0.get(), prec);
-        arb_addmul(z.get(), ha.get(), off[static_cast<size_t>(i)].get(), prec);
+        arb_add(z.get(), z.get(), off0[static_cast<size_t>(i)].get(), prec);
+        arb_addmul(z.get(), ha.get(), offC[static_cast<size_t>(i)].get(), prec);
         arb_sub_ui(z.get(), z.get(), 1, prec);
         ok = arb_is_negative(z.get());
       }
@@ -456,6 +488,42 @@ struct Cover {
         break;
       }
     return rational(h);
+  }
+  // Where the eigenbasis fails (two eigenvalues colliding: R near singular), a Stein certificate
+  // on the ball matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp's schur_decide: P - M^T P M > 0
+  // for every matrix of the ball): the largest of the widths tried, 0 when none is certified.
+  rational stein(const rational& c, int dir, const rational& scale) {
+    const long n = M0.rows();
+    rational w = scale / 10;
+    for (int k = 2; k <= 6; ++k) {
+      ++checks;
+      w /= 10;  // scale 10^-k
+      const rational a = dir > 0 ? c : c - w, b = dir > 0 ? c + w : c;
+      if (a < 0) continue;
+      flint::BallPrecision bp(128);
+      const Ball k_ = Ball::hull(a, b);
+      BallMat S(n, n);
+      arb_mat_scalar_mul_arb(S.get(), M1.get(), k_.get(), 128);
+      arb_mat_add(S.get(), S.get(), M0.get(), 128);
+      BallMatrix Mb(n, n);
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) {  // double midpoints, the rounding added to the radius (outward)
+          const arb_struct* x = arb_mat_entry(S.get(), i, j);
+          const double m = arf_get_d(arb_midref(x), ARF_RND_NEAR);
+          Ball e;
+          arb_set_d(e.get(), m);
+          arb_sub(e.get(), e.get(), x, 128);
+          mag_t t;
+          mag_init(t);
+          arb_get_mag(t, e.get());
+          Mb.mid(i, j) = m;
+          Mb.rad(i, j) = std::nextafter(mag_get_d(t), INFINITY);
+          mag_clear(t);
+        }
+      const SchurDecision d = schur_decide(Mb);
+      if (d.stable && *d.stable) return w;
+    }
+    return 0;
   }
   // The last step, from `to` (stable) to the crossing's enclosure [lo, hi] (certified): on the ball
   // p in [to, hi] every eigenvalue is either inside the disk or has d|lambda|^2/dp > 0
@@ -773,7 +841,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
         break;
       }
     }
-    const rational h = cov.radius(up, 1);
+    rational h = cov.radius(up, 1);
+    if (h <= 0) h = cov.stein(up, 1, top - up);
     if (h <= 0 || up + h >= top) break;
     up += h;
   }
@@ -781,7 +850,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   const rational floor = top / 1000000;
   cov.prec = 64;
   for (const long budget = cov.checks + 30; cov.checks < budget && down > 0;) {
-    const rational h = cov.radius(down, -1);
+    rational h = cov.radius(down, -1);
+    if (h <= 0) h = cov.stein(down, -1, down);
     if (h <= 0) break;
     down = h >= down ? rational(0) : down - h;
     if (down < floor && down > 0) break;
