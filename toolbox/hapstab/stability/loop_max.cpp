@@ -2,6 +2,7 @@
 #include "hapstab/stability/loop_max.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #if HAPSTAB_FLINT3
 #include <flint/acb_mat.h>
 #else
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <memory>
 #include <sstream>
 
@@ -367,6 +369,61 @@ struct Cover {
   const BallMat& M1;
   long prec = 128;
   long checks = 0;
+  // Eigenvalues of M(c) closer to each other than a quarter of their distance to the unit circle
+  // (or than 1e-7) form a cluster (grouped transitively): the 8 operators' modes s^2 + s + 1 of the
+  // 8-DOF contact scene, within 1e-5 of each other and 5e-3 inside. Their eigenvectors are nearly
+  // parallel where two of them collide, and R^-1 then amplifies rounding into B0. A cluster's
+  // columns are replaced by a basis of its invariant subspace (two steps of subspace inverse
+  // iteration at the cluster's centre from its eigenvectors, orthonormalised), turned so that the
+  // cluster's block of R^-1 M1 R is diagonal when that turn is well conditioned. A choice of R
+  // only: the proof (Gershgorin on B0 + t C, B0 = L M(c) R) holds for any invertible R.
+  void cluster_bases(Eigen::MatrixXcd& Rd, const Eigen::VectorXcd& ev, const Eigen::MatrixXd& Mc) const {
+    const long n = Rd.cols();
+    std::vector<long> group(static_cast<size_t>(n));
+    for (long i = 0; i < n; ++i) group[static_cast<size_t>(i)] = i;
+    std::function<long(long)> root = [&](long i) { return group[static_cast<size_t>(i)] == i ? i : root(group[static_cast<size_t>(i)]); };
+    for (long i = 0; i < n; ++i)
+      for (long j = i + 1; j < n; ++j) {
+        const double gap = std::abs(ev(j) - ev(i)), margin = std::min(1 - std::abs(ev(i)), 1 - std::abs(ev(j)));
+        if (gap <= std::max(1e-7 * (1 + std::abs(ev(i))), 0.25 * margin)) group[static_cast<size_t>(root(j))] = root(i);
+      }
+    Eigen::MatrixXcd Cd;  // R^-1 M1 R in double, once a cluster needs it
+    const Eigen::MatrixXcd Mcc = Mc.cast<std::complex<double>>();
+    for (long g = 0; g < n; ++g) {
+      std::vector<long> k;
+      for (long i = 0; i < n; ++i)
+        if (root(i) == g) k.push_back(i);
+      const long q = static_cast<long>(k.size());
+      if (q < 2) continue;
+      std::complex<double> centre = 0;
+      Eigen::MatrixXcd X(n, q);
+      for (long a = 0; a < q; ++a) {
+        centre += ev(k[static_cast<size_t>(a)]) / static_cast<double>(q);
+        X.col(a) = Rd.col(k[static_cast<size_t>(a)]);
+      }
+      Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Mcc - centre * Eigen::MatrixXcd::Identity(n, n));
+      for (int it = 0; it < 2; ++it) {
+        Eigen::HouseholderQR<Eigen::MatrixXcd> qr(X);
+        X = qr.householderQ() * Eigen::MatrixXcd::Identity(n, q);
+        X = lu.solve(X);
+      }
+      Eigen::HouseholderQR<Eigen::MatrixXcd> qr(X);
+      X = qr.householderQ() * Eigen::MatrixXcd::Identity(n, q);
+      if (!X.allFinite()) continue;
+      for (long a = 0; a < q; ++a) Rd.col(k[static_cast<size_t>(a)]) = X.col(a);
+      // turn the cluster so that its block of R^-1 M1 R is diagonal (when well conditioned)
+      Cd = Rd.partialPivLu().solve(mid(M1).cast<std::complex<double>>() * Rd);
+      Eigen::MatrixXcd blk(q, q);
+      for (long a = 0; a < q; ++a)
+        for (long b = 0; b < q; ++b) blk(a, b) = Cd(k[static_cast<size_t>(a)], k[static_cast<size_t>(b)]);
+      Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ce(blk, true);
+      if (ce.info() != Eigen::Success) continue;
+      Eigen::JacobiSVD<Eigen::MatrixXcd> sv(ce.eigenvectors());
+      if (!(sv.singularValues()(q - 1) > 1e-3 * sv.singularValues()(0))) continue;
+      const Eigen::MatrixXcd turned = X * ce.eigenvectors();
+      for (long a = 0; a < q; ++a) Rd.col(k[static_cast<size_t>(a)]) = turned.col(a);
+    }
+  }
   // h >= 0 such that every M0 + p M1, p between c and c + dir h (dir = +-1), is Schur stable
   // (certified; 0: none found). R: approximate eigenvectors of M(c) (double, or Arb's QR at `prec`
   // bits), made exact; L: a ball enclosure of R^-1. Then for every p, with t = p - c,
@@ -387,8 +444,10 @@ struct Cover {
         for (long j = 0; j < n; ++j) m(i, j) = arf_get_d(arb_midref(acb_realref(acb_mat_entry(A.m, i, j))), ARF_RND_NEAR);
       Eigen::EigenSolver<Eigen::MatrixXd> es(m, true);
       if (es.info() != Eigen::Success) return 0;
+      Eigen::MatrixXcd Rd = es.eigenvectors();
+      cluster_bases(Rd, es.eigenvalues(), m);
       for (long i = 0; i < n; ++i)
-        for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(R.m, i, j), es.eigenvectors()(i, j).real(), es.eigenvectors()(i, j).imag());
+        for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(R.m, i, j), Rd(i, j).real(), Rd(i, j).imag());
     } else {
       AcbMat Am(n, n);
       AcbVec Ea(n);
@@ -430,14 +489,31 @@ struct Cover {
       for (long j = 0; j < n; ++j)
         if (j != i) Bd(i, j) = upper(acb_mat_entry(C.m, i, j)) / mi;
     }
-    Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
-    for (int it = 0; it < 60; ++it) {
-      Eigen::VectorXd nd = Bd * d + 1e-12 * d.sum() * Eigen::VectorXd::Ones(n);
-      const double mx = nd.maxCoeff();
-      if (!(mx > 0) || !std::isfinite(mx)) break;
-      d = nd / mx;
+    auto perron = [&](const Eigen::MatrixXd& P) {
+      Eigen::VectorXd v = Eigen::VectorXd::Ones(n);
+      double rho = 0;
+      for (int it = 0; it < 60; ++it) {
+        Eigen::VectorXd nv = P * v + 1e-12 * v.sum() * Eigen::VectorXd::Ones(n);
+        const double mx = nv.maxCoeff();
+        if (!(mx > 0) || !std::isfinite(mx)) break;
+        rho = mx / v.maxCoeff();
+        v = nv / mx;
+      }
+      if (!(v.minCoeff() > 0) || !v.allFinite()) v = Eigen::VectorXd::Ones(n);
+      return std::make_pair(v, rho);
+    };
+    // first |C_off| alone (h_est = 1/rho: the step it allows), then with B0's own off-diagonal
+    // part (a near-defective cluster's coupling, which a scaling shrinks) at that step
+    const auto [d1, rho1] = perron(Bd);
+    Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(n, n);
+    const double h_est = rho1 > 0 ? 0.5 / rho1 : 0.0;
+    for (long i = 0; i < n; ++i) {
+      const double mi = margin(i, Ball(0L));
+      for (long j = 0; j < n; ++j)
+        if (j != i) Bt(i, j) = upper(acb_mat_entry(B0.m, i, j)) / mi + h_est * Bd(i, j);
     }
-    if (!(d.minCoeff() > 0) || !d.allFinite()) d = Eigen::VectorXd::Ones(n);
+    const Eigen::VectorXd d = perron(Bt).first;
+    (void)d1;
     // per row: the scaled radii of B0 and of C (upper bounds, balls)
     std::vector<Ball> off0(static_cast<size_t>(n)), offC(static_cast<size_t>(n));
     double h0 = INFINITY;  // the zeroth-order guess: (1 - |B0_ii| - r0_i) / (|C_ii| + rC_i)
