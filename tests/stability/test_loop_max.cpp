@@ -3,17 +3,18 @@
 //  - 1 DOF, pure mass 1/(m s^2) on the wall K + B (z - 1)/(T z): the closed form of
 //    ext.stability.pure_mass, K* = (2B/T)(2m - BT)/(2m + BT), exact.
 //  - 2 DOF, two pure masses on a coupled spring-damper environment scaled by g: with pure masses the
-//    zero-order hold is exact (A nilpotent), so M(g) is a rational matrix; the reference is a
-//    bisection on g with the exact Schur test of M(g) (multidof::schur_stable: Schur-Cohn on
-//    det(zI - M) when its ball certificate cannot decide), to 2^-40 of a 2e-6 bracket.
+//    zero-order hold is exact (A nilpotent), so M(g) is a rational matrix (sim/closed_loop.hpp's
+//    `exact`, built without loop_max's family or deflation); the reference is a bisection on g with
+//    Schur-Cohn on det(zI - M(g)), exact, to 2^-40 of a 2e-6 bracket.
 // Tolerance: the supremum's enclosure must be 1e-15 relative or narrower and meet the reference's
 // bracket (itself ~1e-18 wide): the "within 1e-15".
 //  - Refusals: a parameter that changes the controller's order or enters non-affinely, and one
 //    the loop does not depend on, are InputErrors naming it.
 #include <gtest/gtest.h>
 
-#include "hapstab/multidof/environment.hpp"
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_max.hpp"
 
@@ -35,25 +36,12 @@ StateSpace<Q> walls(const Q& g, const std::vector<Q>& K, const std::vector<Q>& B
   return {MatQ::Zero(N, N), MatQ::Identity(N, N), C, D, T};
 }
 
-// M(p) of the family, exactly, when the plant's A is nilpotent (pure masses) and there is no delay
-MatQ exact_M(const stability::LoopFamily& F, const Q& p) {
-  const long ns = F.A.rows(), nc = F.Kx0.rows();
-  MatQ Phi = MatQ::Identity(ns, ns), G = MatQ::Zero(ns, F.Bu.cols()), Ak = MatQ::Identity(ns, ns);
-  Q fact = 1, Tk = 1;
-  for (long k = 0; k <= ns; ++k) {  // Phi = sum (A T)^k / k!, G = sum A^k T^(k+1) / (k+1)! Bu
-    G += Ak * F.Bu * (Tk * F.T / (fact * (k + 1)));
-    Ak = MatQ(Ak * F.A);
-    fact *= k + 1;
-    Tk *= F.T;
-    if (k + 1 <= ns) Phi += Ak * (Tk / fact);
-  }
-  EXPECT_TRUE(Ak.isZero(0)) << "the plant is not nilpotent: the exact reference does not apply";
-  const MatQ Ku = F.Ku0 + F.dKu * p, Kx = F.Kx0 + F.dKx * p;
-  MatQ M = MatQ::Zero(ns + nc, ns + nc);
-  M.topLeftCorner(ns, ns) = Phi;
-  M.topRows(ns) += G * Ku;
-  M.bottomRows(nc) = Kx;
-  return M;
+// M(p) exactly (sim/closed_loop.hpp: the plant's exponentials are rational for pure masses), its
+// Schur verdict exactly: Schur-Cohn on det(zI - M) (poly/stability.hpp)
+bool exactly_stable(const LoopSpec& s) {
+  const std::optional<MatQ> M = sampled_closed_loop(s).exact;
+  EXPECT_TRUE(M.has_value()) << "no exact closed loop: the reference does not apply";
+  return M && schur_stable(charpoly(*M));
 }
 
 LoopSpec two_masses(const Q& g) {
@@ -99,23 +87,13 @@ TEST(LoopMax, TwoDofAgreesWithExactSchurBisection) {
   EXPECT_EQ(r.status, Status::certified);
   const double width = static_cast<double>((r.sup.hi - r.sup.lo) / r.sup.hi);
   EXPECT_LE(width, 1e-15);
-  const stability::LoopFamily F = stability::loop_family(at, Q(1), "g");
-  // the exact family is the closed loop of sim/closed_loop.hpp (its ball M holds the exact M)
-  for (const Q& p : {Q(1, 2), Q(3)}) {
-    const MatQ Me = exact_M(F, p);
-    const BallMatrix Mb = sampled_closed_loop(at(p)).M;
-    ASSERT_EQ(Mb.rows(), Me.rows());
-    for (Eigen::Index i = 0; i < Me.rows(); ++i)
-      for (Eigen::Index j = 0; j < Me.cols(); ++j)
-        EXPECT_LE(std::abs(static_cast<double>(Me(i, j)) - Mb.mid(i, j)), Mb.rad(i, j) + 1e-300) << i << "," << j;
-  }
   // the reference: exact Schur verdicts, bisected
   Q lo = r.sup.lo * (1 - Q(1, 1000000)), hi = r.sup.hi * (1 + Q(1, 1000000));
-  ASSERT_TRUE(multidof::schur_stable(exact_M(F, lo)));
-  ASSERT_FALSE(multidof::schur_stable(exact_M(F, hi)));
+  ASSERT_TRUE(exactly_stable(at(lo)));
+  ASSERT_FALSE(exactly_stable(at(hi)));
   for (int it = 0; it < 40; ++it) {
     const Q mid = (lo + hi) / 2;
-    (multidof::schur_stable(exact_M(F, mid)) ? lo : hi) = mid;
+    (exactly_stable(at(mid)) ? lo : hi) = mid;
   }
   EXPECT_LE(static_cast<double>((hi - lo) / hi), 1e-17);
   EXPECT_TRUE(r.sup.lo <= hi && lo <= r.sup.hi) << "reference [" << static_cast<double>(lo) << ", " << static_cast<double>(hi)
