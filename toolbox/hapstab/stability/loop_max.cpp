@@ -938,6 +938,17 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   out.stable_to = closed ? top - enough : up;
   out.sup = {out.stable_to, e.p.hi};
   out.gap = static_cast<double>((top - out.stable_to) / top);
+  if (!closed && top - up > enough) {  // the walk stopped short: the supremum is only bracketed
+    std::ostringstream o;
+    o.precision(17);
+    o << "the crossing at " << name << " in [" << static_cast<double>(e.p.lo) << ", " << static_cast<double>(e.p.hi)
+      << "] is certified and every " << name << " in [" << static_cast<double>(out.stable_from) << ", "
+      << static_cast<double>(out.stable_to) << "] is proven stable (" << cov.checks << " steps), but the walk stopped "
+      << out.gap << " (relative) short of the crossing: the supremum lies in [" << static_cast<double>(out.stable_to)
+      << ", " << static_cast<double>(e.p.hi) << "], not enclosed to 10^-" << digits;
+    out.note = o.str();
+    return out;
+  }
   // step 4: the decider of `stability --scene` (an independent certificate) just below and above
   for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
     const rational pb = top * (1 - eps);
@@ -981,7 +992,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
     << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
     << " in [" << static_cast<double>(out.stable_from) << ", " << static_cast<double>(out.stable_to) << "] is stable ("
-    << cov.checks << " eigenvalue enclosures by Rump's test, each with Gershgorin discs in its eigenbasis over an interval of " << name << "";
+    << cov.checks << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
   o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
   if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";

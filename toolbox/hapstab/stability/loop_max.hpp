@@ -17,24 +17,28 @@
 //     enclosed at `prec` bits (the exponentials by arb_mat_exp), Newton at that precision first;
 //     K(X) inside X proves exactly one crossing in X. The precision is raised until the enclosure
 //     of p is 10^-digits relative or narrower.
-//  3. Below it (certified): every eigenvalue of every M0 + p M1, p in [a, b], inside the unit disk,
-//     on adjacent intervals from a point of the stable run up towards the crossing and down
-//     towards 0 (a walk of at most 2000 + 100 steps). The last interval reaches the crossing: on
-//     [a, crossing.hi] each eigenvalue ball either stays inside the disk or has d|lambda|^2/dp =
-//     2 Re(conj(lambda) (L M1 R)_ii) > 0 (L = R^-1, the eigenvector balls), and at a point q
-//     10^-(digits+1) (relative) below crossing.lo all are inside: the moving ones only grow, so
-//     none reaches the circle before q, and the supremum of the stable interval is in [q, crossing.hi].
-//     The intervals of the walk: at each point c, Rump's enclosure of M(c) = R diag(lambda) R^-1
-//     and Gershgorin's discs of diag(lambda) + (p - c) R^-1 M1 R (centres lambda_i + (p - c) C_ii).
+//  3. Below it (certified): every eigenvalue of every M0 + p M1 inside the unit disk, on adjacent
+//     intervals of p, a walk from a point of the stable run up to within 10^-(digits+1) of the
+//     crossing (at most 2000 steps) and down towards 0 (at most 30). Each step, at a point c: R an
+//     approximate eigenbasis of M(c) (double; a cluster of close eigenvalues gets a basis of its
+//     invariant subspace), exact as it is, L a ball enclosure of R^-1; then R^-1 M(p) R lies in
+//     B0 + (p - c) C, B0 = L M(c) R, C = L M1 R, and Gershgorin's discs of D^-1 (B0 + t C) D
+//     (D = diag(d) > 0, a Perron scaling; centres B0_ii + t C_ii, convex in t) inside the unit
+//     circle prove the interval. Where no eigenbasis serves, a Stein certificate on the ball
+//     matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp). Should the walk stall within 10^-9 of the
+//     crossing, a last step closes it by monotonicity: on [a, crossing.hi] Rump's enclosures
+//     (acb_mat_eig_simple_rump) of the eigenvalues not inside the disk have d|lambda|^2/dp =
+//     2 Re(conj(lambda) (L M1 R)_ii) > 0, and at the walk's target all are inside.
 //  4. Confirmation: stability::decide_loop (the decider of `stability --scene`, Stein inertia) at
 //     a point just below the crossing (stable) and just above it (NOT stable).
-// When the last step fails, the supremum is only known to lie in [stable_to, crossing.hi] and the
-// relative gap not covered is reported (`gap`). Step 1 can miss nothing that steps 2-4 would then
-// hide: a crossing below the one found breaks the cover of step 3 (undecided, exit 3).
+// The supremum of the stable interval that holds [stable_from, stable_to] lies in
+// [stable_to, crossing.hi]; when the walk ends short of its target the relative gap not covered is
+// reported (`gap`) and the printed digits are only those the two ends share. Step 1 can miss
+// nothing that steps 2-4 would then hide: a crossing below the one found stops the walk.
 // Before step 1 the controller's modes that no p moves (an environment's unobservable states:
 // Ku(p) V = 0, Kx(p) V in V, the V block constant) are deflated exactly and checked Schur stable
 // exactly (Schur-Cohn on their characteristic polynomial): repeated, they would defeat the
-// simple-eigenvalue tests of steps 2-3.
+// eigenbasis of step 3 (an unstable one: NOT stable for every p, exact, exit 1).
 // Implements: paper 000 Sec. VI (the loop as written); issue 42.
 #pragma once
 
