@@ -39,7 +39,7 @@
 // Ku(p) V = 0, Kx(p) V in V, the V block constant) are deflated exactly and checked Schur stable
 // exactly (Schur-Cohn on their characteristic polynomial): repeated, they would defeat the
 // eigenbasis of step 3 (an unstable one: NOT stable for every p, exact, exit 1).
-// Implements: paper 000 Sec. VI (the loop as written); issue 42.
+// Implements: paper 000 Sec. VI, Theorem 5.
 #pragma once
 
 #include <functional>
