@@ -14,6 +14,10 @@ and the per-call cost of a scalar call (the old binding ran the command in a for
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python_binding.py [--bench build/bench/bench_python_binding]
         [--repeat 5] [--json FILE]
+
+--only fast_bound runs the fast b* target alone, once, and no C++ benchmark: a whole process to
+time from outside (import, the call on every thread, exit), e.g.
+    PYTHONPATH=build/python /usr/bin/time -v /usr/bin/python3 bench/python_binding.py --only fast_bound
 """
 import argparse
 import json
@@ -59,7 +63,15 @@ def main() -> int:
     ap.add_argument("--bench", default=os.path.join(here, "..", "build", "bench", "bench_python_binding"))
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--json", help="write the numbers to FILE")
+    ap.add_argument("--only", choices=["fast_bound"], help="run this target alone, once (a whole process to time)")
     a = ap.parse_args()
+    if a.only == "fast_bound":
+        K5 = np.linspace(0, 40000, 10**5)
+        t0 = time.perf_counter()
+        f = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K5, "B": 5}, method="fast")
+        print(f"fast b* over {K5.size} K: {time.perf_counter() - t0:.3f} s in the call, {f.failed} failed, "
+              f"load average {os.getloadavg()[0]:.1f}")
+        return 0 if f.failed == 0 else 1
     cpp = cpp_costs(a.bench)
     rows = []
 

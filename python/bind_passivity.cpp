@@ -2,14 +2,16 @@
 // bound.hpp, (45)/(54)), r(jw) (sampling/, (34), (44)) and the wedge criterion (contact/wedge.hpp,
 // paper 002 (25), (21)); each scalar, and b* and r vectorised over numpy arrays on threads.
 //
-// The passivity boundary as a number (issue 41, `bound --max K`: the sup of a gain with b* <= b)
-// belongs beside bound() here, as bound_max(...) over the library function that computes it,
-// and in Python as hapstab.bound(..., max="K") (python/hapstab/__init__.py says where).
+// The passivity boundary as a number (`bound --max K --damping b`: the sup of a gain with b* < b,
+// passivity/max_gain.hpp through cli/bound_max.hpp's composition with the closed form and the
+// check) is bound_max, scalar and vectorised.
 #include <mpfi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "cli/bound_max.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -167,6 +169,136 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
   });
   py::dict d = c.dict();
   d["omega"] = doubles(omega);
+  return d;
+}
+
+// ---- the passivity boundary as a number: sup K with b*(K) < b ---------------------------------
+
+/// H = H0 + name H1 from the expression at these parameter values (lti/parse.hpp split_affine, as
+/// `bound --max` splits --H), both in z.
+passivity::GainProblem gain_problem(const std::string& expr, const std::string& name,
+                                    const std::map<std::string, rational>& params, const rational& b,
+                                    const BoundOptions& o) {
+  AffineSplit h;
+  try {
+    h = split_affine(expr, parse_options('z', o.T, params), name);
+  } catch (const InputError& e) {
+    throw InputError("max='" + name + "': H: " + e.what());
+  }
+  for (const TransferFunction* t : {&h.H0, &h.H1})
+    if (!t->is_discrete()) throw InputError("H: expected a transfer function in z");
+  if (b <= 0) throw InputError("damping must be > 0 (got " + b.str() + ")");
+  passivity::GainProblem g;
+  g.base = problem(h.H0.H, o);
+  g.H1 = h.H1.H;
+  g.b = b;
+  g.name = name;
+  return g;
+}
+
+py::object omega_ends(const std::optional<Enclosure<rational>>& w) {
+  if (!w) return py::none();
+  return py::make_tuple(double_outward(w->lo, -1), double_outward(w->hi, +1));
+}
+
+/// K_max as a record (value, lo, hi, status, ...) and its fields: `bound --max` in Python.
+py::dict bound_max_scalar(const std::string& expr, const std::map<std::string, std::string>& fixed_texts,
+                          const std::string& name, const std::string& damping, const BoundOptions& o, bool check) {
+  std::map<std::string, rational> params;
+  for (const auto& [k, v] : fixed_texts) params[k] = exact_arg(v, "params['" + k + "']");
+  if (params.count(name)) throw InputError("params['" + name + "']: " + name + " is the parameter maximised (max='" + name + "'); leave it out of params");
+  passivity::GainProblem g = gain_problem(expr, name, params, exact_arg(damping, "damping"), o);
+  cli::BoundMax r;
+  {
+    py::gil_scoped_release nogil;
+    r = cli::bound_max(std::move(g), o.digits, check);
+  }
+  const passivity::MaxGain& m = r.max;
+  py::dict d = m.infinite ? record_infinite(m.status, m.method, m.note)
+                          : record(m, m.outcome == Outcome::holds ? o.digits + 3 : o.digits);
+  d["name"] = name;
+  d["outcome"] = to_string(m.outcome);
+  d["infinite"] = m.infinite;
+  d["decimal"] = m.decimal;
+  d["digits_certified"] = m.digits;
+  d["damping"] = r.problem.b.str();
+  d["b_at_zero"] = bound_record(m.at_zero, o.digits);
+  d["omega"] = omega_ends(m.omega);
+  d["where"] = m.where;
+  if (const auto& cf = r.closed_form) {
+    py::dict c;
+    c["name"] = cf->name;
+    c["equation"] = cf->equation;
+    c["formula"] = cf->formula;
+    c["value"] = passivity::closed_form_decimal(*cf, o.digits);
+    c["tight"] = cf->tight;
+    c["agrees"] = passivity::agrees(*cf, m);
+    d["closed_form"] = c;
+  } else {
+    d["closed_form"] = py::none();
+  }
+  if (const auto& k = r.check) {
+    py::dict c;
+    c["holds"] = k->holds;
+    c["bound_at_lo"] = bound_record(k->at_lo, o.digits);
+    c["bound_at_hi"] = bound_record(k->at_hi, o.digits);
+    d["check"] = c;
+  } else {
+    d["check"] = py::none();
+  }
+  return d;
+}
+
+/// K_max at every point of parameter columns (the other parameters of H, and the damping b when
+/// `damping` is a column), on threads: value/lo/hi (inf: passive for every K; 0: not passive at
+/// K = 0), omega (where b* = b at K_max, NaN when unknown), b_at_zero (b*(0), its value).
+py::dict bound_max_many(const std::string& expr, const std::map<std::string, std::string>& fixed_texts,
+                        const std::vector<std::string>& names, const py::list& columns, const std::string& name,
+                        const py::object& damping, const BoundOptions& o, unsigned jobs) {
+  std::map<std::string, rational> fixed;
+  for (const auto& [k, v] : fixed_texts) fixed[k] = exact_arg(v, "params['" + k + "']");
+  const Columns cols = Columns::from_python(names, columns);
+  if (fixed.count(name) || std::find(names.begin(), names.end(), name) != names.end())
+    throw InputError("params['" + name + "']: " + name + " is the parameter maximised (max='" + name + "'); leave it out of params");
+  std::optional<rational> b_fixed;
+  Columns b_col;
+  if (py::isinstance<py::str>(damping)) {
+    b_fixed = exact_arg(damping.cast<std::string>(), "damping");
+  } else {
+    py::list l;
+    l.append(damping);
+    b_col = Columns::from_python({"damping"}, l);
+    if (!names.empty() && b_col.points != cols.points)
+      throw std::logic_error("bound_max_many: damping and params differ in length");
+  }
+  {
+    std::map<std::string, rational> named = fixed;
+    named[name] = 0;
+    check_names(expr, "H", 'z', named, cols);  // a mistake of the whole call, raised once
+  }
+  const size_t n = b_fixed || !names.empty() ? cols.points : b_col.points;
+  PointColumns c(n);
+  std::vector<double> omega(n, std::numeric_limits<double>::quiet_NaN()), at_zero(omega);
+  run_points(n, jobs, [&](uint64_t i) {
+    try {
+      const rational b = b_fixed ? *b_fixed : b_col.values[0][i];
+      const passivity::MaxGain m = passivity::max_gain(gain_problem(expr, name, cols.at(fixed, i), b, o), o.digits);
+      at_zero[i] = m.at_zero.infinite ? std::numeric_limits<double>::infinity() : m.at_zero.value_double();
+      if (m.omega) omega[i] = to_real<double>((m.omega->lo + m.omega->hi) / 2);
+      c.status[i] = status_code(m.status);
+      if (m.infinite) {
+        c.value[i] = c.lo[i] = c.hi[i] = std::numeric_limits<double>::infinity();
+        return;
+      }
+      c.enclose(i, m.enclosure->lo, m.enclosure->hi, o.digits + 3);
+      if (m.status == Status::exact) c.value[i] = to_real<double>(m.value), c.exact[i] = m.value.str();
+    } catch (const std::exception& e) {
+      c.error[i] = point_error(e);
+    }
+  });
+  py::dict d = c.dict();
+  d["omega"] = doubles(omega);
+  d["b_at_zero"] = doubles(at_zero);
   return d;
 }
 
@@ -343,6 +475,33 @@ void register_passivity(py::module_& m) {
       py::arg("frac_delay"), py::arg("eta"), py::arg("digits"), py::arg("method"), py::arg("grid_points"),
       py::arg("allow_noncausal"), py::arg("jobs"),
       "b* at every point of parameter columns (numpy float64 arrays or lists of exact texts), on threads.");
+  m.def(
+      "bound_max",
+      [](const std::string& expr, const std::map<std::string, std::string>& fixed, const std::string& name,
+         const std::string& damping, const std::string& T, int delay, const std::optional<std::string>& frac_delay,
+         const std::string& eta, int digits, bool allow_noncausal, bool check) {
+        return bound_max_scalar(expr, fixed, name, damping,
+                                bound_options(T, delay, frac_delay, eta, digits, "certified", 100000, allow_noncausal),
+                                check);
+      },
+      py::arg("expr"), py::arg("fixed"), py::arg("name"), py::arg("damping"), py::arg("T"), py::arg("delay"),
+      py::arg("frac_delay"), py::arg("eta"), py::arg("digits"), py::arg("allow_noncausal"), py::arg("check"),
+      "sup of the gain `name` of H with b*(name) < damping (passivity::max_gain), its closed form, and with check "
+      "b* at the ends of its enclosure (`hapstab bound --max NAME --damping b`).");
+  m.def(
+      "bound_max_many",
+      [](const std::string& expr, const std::map<std::string, std::string>& fixed, const std::vector<std::string>& names,
+         const py::list& columns, const std::string& name, const py::object& damping, const std::string& T, int delay,
+         const std::optional<std::string>& frac_delay, const std::string& eta, int digits, bool allow_noncausal,
+         unsigned jobs) {
+        return bound_max_many(expr, fixed, names, columns, name, damping,
+                              bound_options(T, delay, frac_delay, eta, digits, "certified", 100000, allow_noncausal),
+                              jobs);
+      },
+      py::arg("expr"), py::arg("fixed"), py::arg("names"), py::arg("columns"), py::arg("name"), py::arg("damping"),
+      py::arg("T"), py::arg("delay"), py::arg("frac_delay"), py::arg("eta"), py::arg("digits"),
+      py::arg("allow_noncausal"), py::arg("jobs"),
+      "bound_max at every point of parameter columns (and of a damping column), on threads.");
   m.def("r", &r_scalar, py::arg("T"), py::arg("omega"), py::arg("digits"), py::arg("terms"),
         "r(jw) of paper 001: (44) correctly rounded (sampling::r_decimal) and the series (34) truncated.");
   m.def("r_many", &r_many, py::arg("T"), py::arg("omega"), py::arg("method"), py::arg("jobs"),

@@ -1,34 +1,24 @@
 // python/bind_scene.cpp -- scenes from Python: simulate (scene/run.hpp prepares the exact-ZOH
 // simulator of the scene's [simulate] section as `hapstab simulate` does; the series come back
-// as numpy arrays, no files), and the two calls that still run in a forked child (core.cpp says
-// why): a sweep (the command's own workers, cli/sweep_cli.hpp) and multidof analyze/design.
-//
-// multidof: the analysis and design of a scene compose the library (scene_multidof, analyze,
-// assumptions, loop_as_written; design and its verification) inside cmd_multidof.cpp, and that
-// composition is being reworked (multidof/); the narrowest entry that both callers share today is
-// the command itself, run in the forked child (a long SDP that only a kill can stop): its result
-// is read from the command's record. When multidof/ offers one analyze_scene/design_scene
-// function, it belongs here in place of the command.
-#include <atomic>
+// as numpy arrays, no files), run on a worker thread that Ctrl-C stops (run_interruptible), and
+// the sweep, which still runs in a forked child (core.cpp says why: its own worker processes).
+// Also the one reader of a scene argument (scene_arg) that every scene call shares.
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <iomanip>
 #include <sstream>
-#include <thread>
 
 #include "cli/command.hpp"
 #include "cli/sweep_cli.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interrupt.hpp"
 #include "hapstab/scene/run.hpp"
 #include "python/binding.hpp"
 #include "python/forked.hpp"
 
 namespace hapstab::python {
 namespace {
-
-struct Cancelled {};
 
 /// samples as {t: (rows,), name: (rows, N)} numpy arrays.
 py::array_t<double> per_dof(const std::vector<double>& row_major, size_t rows, int N) {
@@ -39,9 +29,7 @@ py::array_t<double> per_dof(const std::vector<double>& row_major, size_t rows, i
 
 py::dict simulate(const std::string& scene, bool is_text, const std::map<std::string, std::string>& overrides,
                   double max_output_mb, bool force) {
-  std::map<std::string, rational> over;
-  for (const auto& [k, v] : overrides) over[k] = exact_arg(v, k);
-  const scene::Scene sc = is_text ? scene::parse_scene(scene, "scene", over) : scene::load_scene(scene, over);
+  const scene::Scene sc = scene_arg(scene, is_text, overrides);
   scene::SceneRun prepared = scene::prepare_run(sc);
   const int N = prepared.simulator->loop().N;
   const double bytes = (prepared.rows * (1 + 8 * N) + prepared.fine_rows * (1 + 2 * N)) * 8;
@@ -52,42 +40,13 @@ py::dict simulate(const std::string& scene, bool is_text, const std::map<std::st
        << " MB; raise simulate.record_every, narrow simulate.window, or pass force=True (or max_output=MB)";
     throw InputError(os.str());
   }
-  // The run on its own thread; this one polls Ctrl-C and stops the run at its next progress call
-  // (every ~1/100 of the steps) through the cancel flag.
-  std::atomic<bool> cancel{false};
+  // The run on a worker thread; Ctrl-C stops it at its next progress call (every ~1/100 of the steps)
   sim::SimOptions so = prepared.options;
-  so.progress = [&cancel](double) {
-    if (cancel.load()) throw Cancelled{};
-  };
+  so.progress = [](double) { interruption_point(); };
   const auto t0 = std::chrono::steady_clock::now();
-  auto task = std::async(std::launch::async, [&] { return prepared.simulator->run(so); });
-  bool interrupted = false;
-  {
-    py::gil_scoped_release nogil;
-    while (task.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-      bool signalled;
-      {
-        py::gil_scoped_acquire gil;
-        signalled = PyErr_CheckSignals() != 0;  // the exception stays set for this thread
-      }
-      if (signalled) {
-        interrupted = cancel = true;
-        task.wait();
-        break;
-      }
-    }
-  }
-  if (interrupted) {
-    try {
-      task.get();
-    } catch (const Cancelled&) {
-    } catch (...) {
-    }
-    throw py::error_already_set();
-  }
   sim::SimResult r;
   try {
-    r = task.get();
+    run_interruptible([&] { r = prepared.simulator->run(so); });
   } catch (const InputError& e) {
     throw InputError(sc.file + ": " + e.what());
   }
@@ -147,6 +106,12 @@ py::dict simulate(const std::string& scene, bool is_text, const std::map<std::st
 }
 
 }  // namespace
+
+scene::Scene scene_arg(const std::string& scene, bool is_text, const std::map<std::string, std::string>& overrides) {
+  std::map<std::string, rational> over;
+  for (const auto& [k, v] : overrides) over[k] = exact_arg(v, k);
+  return is_text ? scene::parse_scene(scene, "scene", over) : scene::load_scene(scene, over);
+}
 
 void register_scene(py::module_& m) {
   m.def("simulate", &simulate, py::arg("scene"), py::arg("is_text"), py::arg("overrides"), py::arg("max_output_mb"),

@@ -1,14 +1,25 @@
 // python/bind_stability.cpp -- the sampled loop's Schur stability and largest stable gain
 // (stability/sampled_loop.hpp, built by stability/loop_from_text.hpp as `hapstab stability`
-// builds it) and the OSP/ISP levels of paper 000 (lmi/passivity_level_report.hpp, as `hapstab
-// passivity-level` reports them); each scalar and vectorised over parameter columns on threads.
+// builds it), a scene's loop as written for any number of DOF (stability/loop_as_written.hpp's
+// decide_loop, as `hapstab stability --scene`; the blocks' hidden modes with it), and the OSP/ISP
+// levels of paper 000 (lmi/passivity_level_report.hpp, as `hapstab passivity-level` reports
+// them); each scalar and vectorised over parameter columns on threads.
+//
+// `--max NAME` on a scene (the largest stable scene parameter; `hapstab stability --scene S --max
+// K`, one-DOF scenes today, multi-DOF in issue 42) is not bound yet: it belongs beside
+// stability_scene as stability_scene_max over the library function the command calls, and in
+// Python as hapstab.stability(scene=..., max="K"), which refuses it by name until then.
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "hapstab/lmi/passivity_level_report.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/paths.hpp"
+#include "hapstab/scene/schema.hpp"
+#include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
 #include "python/binding.hpp"
 
@@ -151,6 +162,83 @@ py::dict stability_many(const LoopInput& in, const std::map<std::string, std::st
   });
   py::dict d = c.dict();
   if (in.gain.empty()) d["stable"] = codes(stable);
+  return d;
+}
+
+// ---- a scene's loop as written (stability/loop_as_written.hpp) --------------------------------
+
+/// The outward float ends of an interval of doubles (already an enclosure).
+py::tuple ends(double lo, double hi) { return py::make_tuple(lo, hi); }
+
+py::dict scene_record(const stability::LoopVerdict& v, const scene::Scene& sc) {
+  py::dict d;
+  d["stable"] = v.stable ? py::object(py::bool_(*v.stable)) : py::object(py::none());
+  d["status"] = v.stable ? to_string(v.status) : "undecided";
+  d["method"] = v.method;
+  d["evidence"] = v.why;
+  d["dofs"] = sc.loop.dofs();
+  d["states"] = v.states;
+  d["spectral_radius_numeric"] = v.spectral_radius;
+  d["hidden_modes"] = hidden_modes(v.hidden);
+  d["hidden_summary"] = v.hidden.summary();
+  d["scene"] = sc.file;
+  return d;
+}
+
+/// `hapstab stability --scene`: the scene's loop as written, any number of DOF (decide_loop).
+py::dict stability_scene(const std::string& scene, bool is_text, const std::map<std::string, std::string>& overrides) {
+  const scene::Scene sc = scene_arg(scene, is_text, overrides);
+  scene::check_command(sc.root, sc.file, "stability");  // what it does not model is refused
+  stability::LoopVerdict v;
+  {
+    py::gil_scoped_release nogil;
+    v = stability::decide_loop(sc.loop);
+  }
+  return scene_record(v, sc);
+}
+
+/// The same at every point of scene-parameter columns, on threads: the scene's text read once,
+/// parsed with each point's values. value: the numeric spectral radius (status numeric); stable
+/// 1/0/-1 undecided and verdict_status (int8 codes) the certified verdict; states, evidence.
+py::dict stability_scene_many(const std::string& scene, bool is_text, const std::map<std::string, std::string>& fixed_texts,
+                              const std::vector<std::string>& names, const py::list& columns, unsigned jobs) {
+  std::map<std::string, rational> fixed;
+  for (const auto& [k, v] : fixed_texts) fixed[k] = exact_arg(v, k);
+  const Columns cols = Columns::from_python(names, columns);
+  const std::string text = is_text ? scene : report::read_input_file(scene, "the scene file", 64u << 20);
+  const std::string file = is_text ? std::string("scene") : scene;
+  const auto dir = std::filesystem::path(scene).parent_path();
+  const std::string base = is_text || dir.empty() ? std::string(".") : dir.string();
+  const size_t n = cols.points;
+  if (n > 0) {  // what the whole call cannot model is refused once, before the points run
+    const scene::Scene first = scene::parse_scene(text, file, cols.at(fixed, 0), base);
+    scene::check_command(first.root, first.file, "stability");
+  }
+  PointColumns c(n);
+  std::vector<int8_t> stable(n, -1), verdict(n, code_failed);
+  std::vector<double> states(n, 0);
+  std::vector<std::optional<std::string>> evidence(n);
+  run_points(n, jobs, [&](uint64_t i) {
+    try {
+      const scene::Scene sc = scene::parse_scene(text, file, cols.at(fixed, i), base);
+      const stability::LoopVerdict v = stability::decide_loop(sc.loop);
+      c.value[i] = c.lo[i] = c.hi[i] = v.spectral_radius;
+      c.status[i] = code_numeric;
+      states[i] = double(v.states);
+      evidence[i] = v.why;
+      if (v.stable) {
+        stable[i] = *v.stable ? 1 : 0;
+        verdict[i] = status_code(v.status);
+      }
+    } catch (const std::exception& e) {
+      c.error[i] = point_error(e);
+    }
+  });
+  py::dict d = c.dict();
+  d["stable"] = codes(stable);
+  d["verdict_status"] = codes(verdict);
+  d["states"] = doubles(states);
+  d["evidence"] = strings(evidence);
   return d;
 }
 
@@ -308,6 +396,24 @@ py::dict levels_many(const std::string& expr, const std::string& T_text, const s
 
 }  // namespace
 
+py::list hidden_modes(const sim::LoopHiddenModes& h) {
+  py::list l;
+  for (const auto& m : h.modes) {
+    py::dict d;
+    d["block"] = m.block;
+    d["kind"] = m.kind;
+    d["discrete"] = m.discrete;
+    d["pair"] = m.pair;
+    d["where"] = m.where.text(m.discrete ? "z" : "s", m.pair);
+    d["re"] = ends(m.where.re_lo, m.where.re_hi);
+    d["im"] = ends(m.where.im_lo, m.where.im_hi);
+    d["abs"] = ends(m.where.abs_lo, m.where.abs_hi);
+    d["stable"] = m.stable;
+    l.append(d);
+  }
+  return l;
+}
+
 void register_stability(py::module_& m) {
   m.def(
       "stability",
@@ -328,6 +434,11 @@ void register_stability(py::module_& m) {
       py::arg("plant"), py::arg("H"), py::arg("operator"), py::arg("T"), py::arg("delay"), py::arg("max"),
       py::arg("digits"), py::arg("fixed"), py::arg("names"), py::arg("columns"), py::arg("jobs"),
       "stability at every point of parameter columns, on threads.");
+  m.def("stability_scene", &stability_scene, py::arg("scene"), py::arg("is_text"), py::arg("overrides"),
+        "The loop a scene writes, decided as written (stability::decide_loop): any number of DOF, hidden modes.");
+  m.def("stability_scene_many", &stability_scene_many, py::arg("scene"), py::arg("is_text"), py::arg("fixed"),
+        py::arg("names"), py::arg("columns"), py::arg("jobs"),
+        "stability_scene at every point of scene-parameter columns, on threads.");
   m.def(
       "passivity_level",
       [](const TransferFunction& G, const std::string& kind, const std::string& backend, int lemma, int grid, int digits) {

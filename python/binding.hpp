@@ -24,6 +24,8 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/scalar.hpp"
+#include "hapstab/scene/scene.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
 
 namespace hapstab::python {
 
@@ -81,6 +83,19 @@ void run_points(size_t n, unsigned jobs, const std::function<void(uint64_t)>& fn
 /// A failed point's message (InputError, NumericalError, anything else as "internal error: ...").
 std::string point_error(const std::exception& e);
 
+/// Runs `work` on a worker thread with the GIL released, polling Ctrl-C every 20 ms. On Ctrl-C
+/// the work is asked to stop (numeric/interrupt.hpp: it stops at its next interruption point)
+/// and KeyboardInterrupt is raised once it has; an exception of `work` is raised here.
+void run_interruptible(const std::function<void()>& work);
+
+/// A scene from Python: a path, or TOML text (named "scene" in messages) with is_text; the
+/// overrides are exact texts of scene parameters.
+scene::Scene scene_arg(const std::string& scene, bool is_text, const std::map<std::string, std::string>& overrides);
+
+/// Every hidden mode of a loop's blocks as written (sim/hidden_modes.hpp): a list of
+/// {block, kind, discrete, pair, where, re, im, abs ((lo, hi) floats, outward), stable}.
+py::list hidden_modes(const sim::LoopHiddenModes& h);
+
 /// The columns every vectorised call returns, one entry per point: value, lo, hi (NaN until the
 /// point runs), status (failed until it runs), exact (the exact value where the status is exact),
 /// lo_exact/hi_exact (the ends as outward decimals, where the floats may not decide a comparison)
@@ -105,5 +120,6 @@ void register_types(py::module_& m);
 void register_passivity(py::module_& m);
 void register_stability(py::module_& m);
 void register_scene(py::module_& m);
+void register_multidof(py::module_& m);
 
 }  // namespace hapstab::python

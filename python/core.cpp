@@ -6,9 +6,12 @@
 // return its results as Python objects and numpy arrays; long calls release the GIL, and the
 // vectorised ones poll Ctrl-C between points.
 //
-// A forked child remains for what runs long inside code that cannot be interrupted and is not
-// thread-safe, where Ctrl-C must still stop it at once: the SDP solvers of multidof, the sweep's
-// worker processes, and run() (the command line itself, the escape hatch). The parent waits on a
+// A long library computation (a simulation, multidof's LMIs and design) runs on a worker thread
+// instead (run_interruptible): Ctrl-C asks it to stop at its next interruption point
+// (numeric/interrupt.hpp: each LMI solve -- the SDP back-ends are serialised by a mutex, CSDP in
+// a child process of its own --, IPM iteration, Riccati point, simulation block).
+// A forked child remains for the sweep's worker processes and run() (the command line itself,
+// the escape hatch), where Ctrl-C must stop a whole command at once. The parent waits on a
 // pipe with the GIL released and checks for signals every 20 ms; Ctrl-C kills the child. The
 // child answers with one JSON document (the pipe's format, not a result format):
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
@@ -21,6 +24,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <future>
 #include <cstring>
 #include <iostream>
 #include <limits>
@@ -32,6 +37,7 @@
 #include "cli/mat_file.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interrupt.hpp"
 #include "hapstab/study/threads.hpp"
 #include "python/binding.hpp"
 #include "python/forked.hpp"
@@ -185,6 +191,38 @@ std::string point_error(const std::exception& e) {
   if (dynamic_cast<const InputError*>(&e)) return e.what();
   if (dynamic_cast<const NumericalError*>(&e)) return std::string("numerical failure: ") + e.what();
   return std::string("internal error: ") + e.what();
+}
+
+void run_interruptible(const std::function<void()>& work) {
+  std::atomic<bool> stop{false};
+  auto task = std::async(std::launch::async, [&] {
+    InterruptScope scope(stop);
+    work();
+  });
+  bool interrupted = false;
+  {
+    py::gil_scoped_release nogil;
+    while (task.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+      bool signalled;
+      {
+        py::gil_scoped_acquire gil;
+        signalled = PyErr_CheckSignals() != 0;  // the exception stays set for this thread
+      }
+      if (signalled) {
+        interrupted = stop = true;
+        task.wait();  // until the work reaches its next interruption point
+        break;
+      }
+    }
+  }
+  if (interrupted) {
+    try {
+      task.get();
+    } catch (...) {  // Interrupted, or whatever the work raised meanwhile: Ctrl-C is the answer
+    }
+    throw py::error_already_set();
+  }
+  task.get();
 }
 
 PointColumns::PointColumns(size_t n)
@@ -360,6 +398,7 @@ PYBIND11_MODULE(_core, m) {
   register_passivity(m);
   register_stability(m);
   register_scene(m);
+  register_multidof(m);
   m.def(
       "run",
       [](const std::vector<std::string>& args) -> py::tuple {

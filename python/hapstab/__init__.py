@@ -39,8 +39,8 @@ except ImportError:  # the pure-Python files without the C++ extension next to t
     raise ImportError(f"hapstab: the C++ extension hapstab._core is not built in {_here} (in the build tree: "
                       f"cmake --build build --target hapstab_python; or pip install . from the source tree)") from None
 from ._exact import exact, integer, period_of, real, state_space, transfer_function
-from ._results import (STATUS, Analysis, Bound, Design, MaxGain, PassivityLevel, R, Result, ResultArray, Simulation,
-                       Stability, UndecidedComparison, Wedge)
+from ._results import (STATUS, Analysis, Bound, Design, MaxGain, MaxPassiveGain, PassivityLevel, R, Result, ResultArray,
+                       Simulation, Stability, UndecidedComparison, Wedge)
 
 __version__: str = _core.__version__
 InputError = _core.InputError
@@ -53,7 +53,7 @@ TransferFunction.__module__ = StateSpace.__module__ = "hapstab"
 __all__ = ["tf", "ss", "r", "bound", "stability", "wedge", "passivity_level", "simulate", "multidof", "sweep", "run",
            "examples_dir", "InputError", "NumericalError", "UndecidedComparison", "Result", "ResultArray", "STATUS",
            "TransferFunction", "StateSpace", "R", "Bound", "Wedge", "PassivityLevel", "Stability", "MaxGain",
-           "Simulation", "Analysis", "Design", "Sweep", "RArray"]
+           "MaxPassiveGain", "Simulation", "Analysis", "Design", "Sweep", "RArray"]
 
 _DELAY_HINT = "delay is a whole number of sample periods n (z^-n); a delay in seconds is frac_delay=... (exact)"
 
@@ -96,11 +96,11 @@ def _is_array(v: Any) -> bool:
     return isinstance(v, (list, tuple, range))
 
 
-def _column(name: str, a: Any) -> Any:
+def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
     """One parameter's values at every point: float64 (exact binary values) or exact texts."""
     import numpy as np
     flat = np.asarray(a).ravel()
-    what = f"params[{name!r}]"
+    what = what or f"params[{name!r}]"
     if flat.dtype.kind == "b":
         raise InputError(f"{what}: a bool array; expected numbers")
     if flat.dtype.kind == "f":
@@ -243,7 +243,8 @@ def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None, method:
 
 def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: Any = 0, digits: int = 30,
           method: str = "certified", params: Optional[Mapping[str, Any]] = None, damping: Any = None,
-          grid_points: Optional[int] = None, allow_noncausal: bool = False, jobs: Optional[int] = None):
+          grid_points: Optional[int] = None, allow_noncausal: bool = False, jobs: Optional[int] = None,
+          max: Optional[str] = None, check: bool = False):  # noqa: A002 -- max: the name of the quantity
     """The passivity bound b* of paper 001, (45)/(54): the loop is passive iff b > b*.
 
     T is the sample period (exact; taken from H.dt for a python-control system); delay an
@@ -252,10 +253,12 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
     enclosure, exact where the maximiser is rational), 'fast' (double, numeric) or 'grid'.
     damping=b adds {b, passive} (passive iff b > b*, decided by the enclosure). An array in
     params gives a ResultArray (H an expression), its points on `jobs` threads (default: every
-    CPU)."""
-    # The passivity boundary as a number (`hapstab bound --max K`, issue 41: the sup of a gain with
-    # b* <= b) is not bound yet: it belongs here as bound(..., max="K") over the library function
-    # the command calls, beside _core.bound (python/bind_passivity.cpp's header says where).
+    CPU).
+
+    max="K" (H an expression affine in K) with damping=b: the passivity boundary as a number, a
+    MaxPassiveGain: sup{K0 : b > b*(K) for 0 <= K < K0}, certified (exact where rational), with
+    the closed form of Secs. VI-VII that applies; check=True adds b* at the ends of its enclosure
+    (b* = b there). Arrays in params (the other parameters) or in damping give a ResultArray."""
     delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
     digits = integer(digits, "digits", 10, 280)
     grid_points = 100000 if grid_points is None else integer(grid_points, "grid_points", 2, 100000000)
@@ -268,6 +271,11 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
     T_text = period_of(H, T)
     if T_text is None:
         raise InputError("T is required (the sample period)")
+    if max is not None:
+        return _bound_max(H, T_text, delay, frac, eta_text, digits, method, params, damping, allow_noncausal, jobs,
+                          max, check)
+    if check is not False:
+        raise InputError("check: b* at the ends of the answer's enclosure belongs to max='K' (pass max=...)")
     fixed, names, columns, shape, arrays = _params(params)
     if shape is not None:
         if damping is not None:
@@ -292,6 +300,56 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
             raise NumericalError(f"damping={bd} lies inside the enclosure of b*; raise digits") from None
         b._extra["damping"] = {"b": bd, "passive": passive}
     return b
+
+
+def _bound_max(H: Any, T_text: str, delay: int, frac: Optional[str], eta_text: str, digits: int, method: str,
+               params: Optional[Mapping[str, Any]], damping: Any, allow_noncausal: bool, jobs: Any, name: Any,
+               check: Any):
+    """bound(..., max=NAME): passivity::max_gain (`hapstab bound --max NAME --damping b`)."""
+    import numpy as np
+    if not isinstance(name, str) or not name:
+        raise InputError(f"max: expected the name of a parameter of H (a str), got {name!r}")
+    if damping is None:
+        raise InputError(f"max={name!r} needs damping=b (the device's damping that must exceed b*)")
+    if method != "certified":
+        raise InputError(f"max={name!r} is certified only: leave out method={method!r}")
+    if not isinstance(check, bool):
+        raise InputError(f"check: expected True or False, got {check!r}")
+    if not isinstance(H, str):
+        raise InputError(f"max={name!r}: H must be an expression string in {name} (it is split as H0 + {name} H1), "
+                         f"got {type(H).__name__}")
+    fixed, names, columns, shape, arrays = _params(params)
+    if _is_array(damping):
+        b = np.asarray(damping)
+        try:
+            shape = np.broadcast_shapes(b.shape, *(a.shape for a in arrays.values()))
+        except ValueError:
+            raise InputError("damping: the array does not broadcast with the arrays in params: "
+                             + ", ".join(f"{k} {a.shape}" for k, a in {"damping": b, **arrays}.items())) from None
+        columns = [_column(k, np.broadcast_to(a, shape)) for k, a in arrays.items()]
+        damping_arg = _column("damping", np.broadcast_to(b, shape), "damping")
+        if not isinstance(damping_arg, list) and (damping_arg <= 0).any():
+            i = int(np.argmax(damping_arg <= 0))
+            raise InputError(f"damping[{i}] must be > 0 (got {damping_arg[i]!r})")
+        arrays = {**arrays, "damping": b}
+    else:
+        damping_arg = exact(damping, "damping")
+    if shape is not None:
+        if check:
+            raise InputError("check: with arrays the boundary check runs per scalar call (r = bs[i] has lo/hi; "
+                             "call bound(..., max=..., check=True) at one point)")
+        d = _call(_core.bound_max_many, H, fixed, names, columns, name, damping_arg, T_text, delay, frac, eta_text,
+                  digits, allow_noncausal, _jobs(jobs))
+        return ResultArray(MaxPassiveGain, d, shape, f"largest passive {name} (passivity::max_gain, certified)", arrays)
+    d = _call(_core.bound_max, H, fixed, name, damping_arg, T_text, delay, frac, eta_text, digits, allow_noncausal, check)
+    extra = {k: d[k] for k in ("name", "outcome", "infinite", "decimal", "digits_certified", "omega", "where",
+                               "closed_form")}
+    extra["damping"] = d["damping"]
+    extra["b_at_zero"] = Bound(d["b_at_zero"])
+    c = d["check"]
+    extra["check"] = None if c is None else {"holds": c["holds"], "bound_at_lo": Bound(c["bound_at_lo"]),
+                                             "bound_at_hi": Bound(c["bound_at_hi"])}
+    return MaxPassiveGain(d, **extra)
 
 
 # ---- paper 002: the wedge criterion ----------------------------------------------------------
@@ -327,14 +385,25 @@ def _text(H: Any, what: str) -> str:
     raise TypeError(f"{what}: expected an expression string or a hapstab.TransferFunction, got {type(H).__name__}")
 
 
-def stability(plant: str, H: Any, T: Any = None, delay: int = 0, operator: Optional[str] = None,
+def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: int = 0, operator: Optional[str] = None,
               max: Optional[str] = None, digits: int = 20,  # noqa: A002 -- the name of the quantity
-              params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None):
+              params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None, *, scene: Any = None):
     """Schur stability of the sampled loop: device plant(s) (force -> position, an expression in s)
     behind a zero-order hold, wall force -z^-n H(z) x(kT), optional operator impedance Z_op(s).
     A Stability (value: the spectral radius; bool: stable). With max="K" (a gain H is affine
     in): a MaxGain, the largest K with the loop stable on (0, K). An array in params gives a
-    ResultArray (stable as int8 1/0/-1 undecided, or the max gains), on threads."""
+    ResultArray (stable as int8 1/0/-1 undecided, or the max gains), on threads.
+
+    scene=S (a path or TOML text) instead of plant/H/T/operator/delay: the loop the scene writes,
+    any number of DOF, each block's realisation as written (`hapstab stability --scene`:
+    stability::decide_loop), params its parameters. A Stability whose value is the closed loop's
+    spectral radius in double (status numeric) and whose verdict (stable, verdict_status) is
+    certified or exact, with the blocks' hidden modes (hidden_modes). Arrays in params: a
+    ResultArray (stable, verdict_status, states, evidence), on threads."""
+    if scene is not None:
+        return _stability_scene(scene, plant, H, T, delay, operator, max, params, jobs)
+    if plant is None or H is None:
+        raise InputError("give plant and H (the device and the wall), or scene=... (a scene's loop as written)")
     delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
     digits = integer(digits, "digits", 1, 1000)
     T_text = period_of(H, T)
@@ -362,6 +431,40 @@ def stability(plant: str, H: Any, T: Any = None, delay: int = 0, operator: Optio
                                    "method": "stability::decide", "note": d["evidence"]}
     extra = {k: d[k] for k in ("stable", "evidence", "degree", "device", "precision_bits")}
     extra["verdict_status"] = d["status"]
+    return Stability(rec, **extra)
+
+
+def _stability_scene(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operator: Any, max: Any,  # noqa: A002
+                     params: Optional[Mapping[str, Any]], jobs: Any):
+    """stability(scene=...): stability::decide_loop on the scene's loop as written."""
+    given = [k for k, v in (("plant", plant), ("H", H), ("T", T), ("operator", operator)) if v is not None]
+    if delay != 0:
+        given.append("delay")
+    if given:
+        raise InputError(f"scene replaces plant, H, operator, T and delay (the scene holds them); got {', '.join(given)}")
+    if max is not None:
+        # The largest stable scene parameter (`hapstab stability --scene S --max K`: one-DOF scenes,
+        # multi-DOF in issue 42) is not bound yet: python/bind_stability.cpp says where it goes.
+        raise InputError(f"max={max!r} with scene: not available from Python yet; `hapstab stability --scene FILE "
+                         f"--max {max}` (one-DOF scenes) computes it, or hapstab.run('stability', '--scene', FILE, "
+                         f"'--max', {max!r}, '--json')")
+    s = _SceneFile(scene)
+    source = s.text if s.text is not None else s.path
+    fixed, names, columns, shape, arrays = _params(params)
+    if shape is not None:
+        d = _call(_core.stability_scene_many, source, s.text is not None, fixed, names, columns, _jobs(jobs))
+        return ResultArray(Stability, d, shape, "the scene's loop as written (stability::decide_loop); value: the "
+                           "spectral radius in double, verdict: stable/verdict_status", arrays)
+    d = _call(_core.stability_scene, source, s.text is not None, fixed)
+    radius = d["spectral_radius_numeric"]
+    rec = {"value_exact": None, "mid": radius, "lo": radius, "hi": radius, "lo_text": None, "hi_text": None,
+           "status": "numeric", "method": "spectral radius of the closed-loop matrix in double (" + (d["method"] or
+                                                                                                   "not decided") + ")",
+           "note": d["evidence"]}
+    extra = {k: d[k] for k in ("stable", "evidence", "method", "dofs", "states", "hidden_modes", "hidden_summary",
+                               "scene")}
+    extra["verdict_status"] = d["status"]
+    extra["decider"] = extra.pop("method")
     return Stability(rec, **extra)
 
 

@@ -110,13 +110,21 @@ class PassivityLevel(Result):
     grid_level: Optional[float]
 
 class Stability(Result):
-    """value: the closed loop's spectral radius; bool(): stable (raises when undecided)."""
+    """value: the closed loop's spectral radius; bool(): stable (raises when undecided).
+    With scene=...: value the spectral radius in double (status 'numeric'), the verdict
+    (stable, verdict_status) certified or exact, decided on the loop as written."""
     stable: Optional[bool]
     evidence: str
-    degree: int
+    degree: int                   # plant/H/T calls
     device: str
     precision_bits: int
-    verdict_status: str
+    verdict_status: str           # 'exact' | 'certified' | 'undecided'
+    decider: str                  # scene=...: the method that decided
+    dofs: int
+    states: int
+    hidden_modes: List[Dict[str, Any]]  # [{block, kind, discrete, pair, where, re, im, abs, stable}]
+    hidden_summary: str
+    scene: str
     def __bool__(self) -> bool: ...
 
 class MaxGain(Result):
@@ -126,6 +134,22 @@ class MaxGain(Result):
     crossing: str
     theta: Optional[Tuple[float, float]]
     omega: Optional[Tuple[float, float]]
+    def __bool__(self) -> bool: ...
+
+class MaxPassiveGain(Result):
+    """bound(H, max='K', damping=b): sup{K0 : b > b*(K) for 0 <= K < K0}; 0 when b <= b*(0), inf
+    when passive for every K; certified (exact where rational). bool(): K_max > 0."""
+    name: str
+    outcome: str                  # 'holds' when K_max > 0
+    infinite: bool
+    decimal: str
+    digits_certified: int
+    damping: str                  # b, exact
+    b_at_zero: Bound              # b*(0)
+    omega: Optional[Tuple[float, float]]  # where b* = b at K_max (rad/s, outward)
+    where: str
+    closed_form: Optional[Dict[str, Any]]  # {name, equation, formula, value, tight, agrees}
+    check: Optional[Dict[str, Any]]        # check=True: {holds, bound_at_lo: Bound, bound_at_hi: Bound}
     def __bool__(self) -> bool: ...
 
 class Wedge(Result):
@@ -178,7 +202,8 @@ class ResultArray:
     """A vectorised call: value, lo, hi (float64, the broadcast shape of params), status (int8,
     STATUS[code]), exact (object: str or None), lo_exact/hi_exact (object: the ends as outward
     decimals, which decide a comparison the float ends straddle), error (object: str or None),
-    params, method; b* adds omega, stability adds stable (int8: 1, 0, -1 undecided)."""
+    params, method; b* adds omega, stability adds stable (int8: 1, 0, -1 undecided); bound(max=) adds
+    omega, b_at_zero; stability(scene=) adds verdict_status (int8 codes), states, evidence."""
     shape: Tuple[int, ...]
     method: str
     params: Dict[str, npt.NDArray[Any]]
@@ -219,17 +244,69 @@ class Simulation(Result):
     def __bool__(self) -> bool: ...
 
 class Analysis(Result):
-    exit_code: int
+    """multidof.analyze: Theorem 5 on a scene (multidof::analyze_scene). value: the LMI margin;
+    bool(): ok (stability concluded and the loop as written not proven unstable)."""
+    ok: bool
     feasible: bool
     certified: bool
     stability_concluded: bool
-    verdict: str
+    premises_hold: bool
+    premise_failure: str          # '' or the first premise that does not hold
+    verdict: str                  # 'feasible' | 'infeasible' | 'undecided'
+    certificate: str
+    margin: float
+    gamma: List[float]
+    x: List[float]
+    q_v: npt.NDArray[np.float64]
+    delta_v_required: npt.NDArray[np.float64]
+    facial_reduction: str
+    solver: str
+    assumptions: List[Dict[str, Any]]      # [{name, holds, outcome, certified, detail}]
+    loop_as_written: Dict[str, Any]        # {stable, coupling, method, status, why, states, spectral_radius_numeric}
+    hidden_modes: List[Dict[str, Any]]
+    least_dissipative: Optional[Dict[str, Any]]
+    scene: str
+    T: str
+    dofs: int
+    delay: int
+    delay_text: Optional[str]
+    seconds: Dict[str, float]
     def __bool__(self) -> bool: ...
 
 class Design(Result):
-    exit_code: int
+    """multidof.design: Theorem 6 on a scene (multidof::design_scene). value: the CCL trace gap;
+    bool(): ok (a verified V, every premise holding). A contradiction raises NumericalError."""
+    ok: bool
     feasible: bool
     certified: bool
+    premise_failure: str
+    converged: bool
+    iterations: int
+    trace_gap: float
+    trace_history: List[float]
+    convex_infeasible: bool
+    convex_certified: bool
+    A_V: npt.NDArray[np.float64]
+    B_V: npt.NDArray[np.float64]
+    C_V: npt.NDArray[np.float64]
+    D_V: npt.NDArray[np.float64]
+    V_exact: Optional[StateSpace]
+    gamma: List[float]
+    q_v: npt.NDArray[np.float64]
+    delta_v: npt.NDArray[np.float64]
+    verification: List[Dict[str, Any]]     # [{name, verdict, certified, status, detail}]
+    loop_with_v: Optional[Dict[str, Any]]
+    simulation: Optional[Dict[str, Any]]   # {decays, text}
+    warning: Optional[str]
+    message: str
+    assumptions: List[Dict[str, Any]]
+    hidden_modes: List[Dict[str, Any]]
+    facial_reduction: str
+    scene: str
+    T: str
+    dofs: int
+    delay: int
+    delay_text: Optional[str]
     @property
     def V(self) -> Tuple[npt.NDArray[np.float64], ...]: ...
     def __bool__(self) -> bool: ...
@@ -242,12 +319,13 @@ def r(T: Exact, omega: ExactOrArray, digits: int = ..., terms: Optional[int] = .
       jobs: Optional[int] = ...) -> Union[R, RArray]: ...
 def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,
           eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[Mapping[str, ExactOrArray]] = ...,
-          damping: Optional[Exact] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
-          jobs: Optional[int] = ...) -> Union[Bound, ResultArray]: ...
-def stability(plant: str, H: Union[str, TransferFunction], T: Optional[Exact] = ..., delay: int = ...,
-              operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
-              params: Optional[Mapping[str, ExactOrArray]] = ...,
-              jobs: Optional[int] = ...) -> Union[Stability, MaxGain, ResultArray]: ...
+          damping: Optional[ExactOrArray] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
+          jobs: Optional[int] = ..., max: Optional[str] = ...,
+          check: bool = ...) -> Union[Bound, MaxPassiveGain, ResultArray]: ...
+def stability(plant: Optional[str] = ..., H: Optional[Union[str, TransferFunction]] = ..., T: Optional[Exact] = ...,
+              delay: int = ..., operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
+              params: Optional[Mapping[str, ExactOrArray]] = ..., jobs: Optional[int] = ..., *,
+              scene: Optional[Scene] = ...) -> Union[Stability, MaxGain, ResultArray]: ...
 def wedge(H: TransferFunctionInput, T: Optional[Exact] = ..., digits: int = ...,
           params: Optional[Mapping[str, Exact]] = ...) -> Wedge: ...
 def passivity_level(H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,

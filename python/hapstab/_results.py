@@ -294,19 +294,49 @@ class MaxGain(Result):
 class Stability(Result):
     """Schur stability of the sampled loop: the value is the spectral radius of the closed loop
     (its certified enclosure), the verdict is stable (True/False, None when undecided) and
-    bool(r) (raises when undecided). Besides the protocol: stable, evidence, degree, device,
-    precision_bits."""
+    bool(r) (raises when undecided). Besides the protocol: stable, evidence, verdict_status (the
+    verdict's status: exact, certified or undecided), degree, device, precision_bits.
+
+    With scene=...: the scene's loop as written, any number of DOF (stability::decide_loop). The
+    value is then the closed-loop matrix's spectral radius in double (status 'numeric'); the
+    verdict (stable, verdict_status) is decided by a certificate. Besides: decider (the method
+    that decided), dofs, states (order of the closed loop), hidden_modes ([{block, kind,
+    discrete, pair, where, re, im, abs, stable}]: every mode a block hides, as written; one
+    outside the stability region makes the loop NOT stable whatever the rest does),
+    hidden_summary, scene."""
 
     _symbol = r"\rho"
     _name = "the spectral radius"
 
     def __bool__(self) -> bool:
-        if self.stable is None:
-            raise UndecidedComparison(f"stability undecided: {self.evidence}")
-        return bool(self.stable)
+        stable = self.stable  # True/False/None, or a ResultArray point's code 1/0/-1
+        if stable is None or (not isinstance(stable, bool) and int(stable) < 0):
+            raise UndecidedComparison(f"stability undecided: {self._extra.get('evidence') or self.note}")
+        return bool(stable)
 
     def _repr_extra(self) -> Dict[str, Any]:
         return {"stable": self._extra.get("stable")}
+
+
+class MaxPassiveGain(Result):
+    """The passivity boundary as a number (bound(H, max='K', damping=b)): sup{K0 : b > b*(K) for
+    0 <= K < K0}, with b*(K_max) = b; 0 (exact) when not passive at K = 0, inf when passive for
+    every K >= 0. Certified (exact where K_max is rational). Besides the protocol: name, outcome
+    ('holds' when K_max > 0), infinite, decimal (the digits both ends share), digits_certified,
+    damping (exact str), b_at_zero (b*(0), a Bound), omega ((lo, hi) rad/s where b* = b at K_max,
+    or None), where, closed_form ({name, equation, formula, value, tight, agrees} of Secs. VI-VII,
+    or None), check (with check=True: {holds, bound_at_lo, bound_at_hi}: b* = b within the
+    enclosure). bool(r): K_max > 0."""
+
+    _symbol = r"K_{\max}"
+    _name = "the largest passive gain"
+
+    def __bool__(self) -> bool:
+        return self.outcome == "holds"
+
+    def _repr_extra(self) -> Dict[str, Any]:
+        cf = self._extra.get("closed_form")
+        return {"name": self._extra.get("name"), "closed_form": cf["name"] if cf else None}
 
 
 class Wedge(Result):
@@ -398,38 +428,46 @@ class Simulation(Result):
 
 
 class Analysis(Result):
-    """Theorem 5 of paper 000 (multidof.analyze): the value is the LMI margin, status certified
-    when the feasible point was checked exactly. bool(r): stability concluded and the scene's
-    loop as written not proven unstable. Besides the protocol: the analysis' fields (feasible,
-    certified, stability_concluded, verdict, certificate, gamma, x, q_v, delta_v_required,
-    loop_as_written, assumptions, ...)."""
+    """Theorem 5 of paper 000 (multidof.analyze, multidof::analyze_scene): the value is the LMI
+    margin, status certified when (16)'s verdict was proven exactly. bool(r): stability concluded
+    and the scene's loop as written not proven unstable (ok). Besides the protocol: feasible,
+    certified, verdict ('feasible', 'infeasible', 'undecided'), certificate, stability_concluded,
+    premises_hold, premise_failure ('' or the first premise that does not hold), assumptions
+    ([{name, holds, outcome, certified, detail}]: Assumption 1, then the blocks' hidden modes),
+    loop_as_written ({stable, coupling, method, status, why, states, spectral_radius_numeric}),
+    hidden_modes, gamma, x, q_v, delta_v_required (numpy arrays), margin, facial_reduction,
+    solver, least_dissipative ({q_v, norm, delta_v, gamma, point_certified, minimality} or None),
+    scene, T, dofs, delay, delay_text, seconds."""
 
     _symbol = r"\mathrm{margin}"
     _name = "the LMI margin"
 
     def __bool__(self) -> bool:
-        law = self._extra.get("loop_as_written") or {}
-        return bool(self._extra["stability_concluded"]) and law.get("stable") is not False
+        return bool(self._extra["ok"])
 
     def _repr_extra(self) -> Dict[str, Any]:
         return {"verdict": self._extra.get("verdict"), "stability_concluded": self._extra.get("stability_concluded")}
 
 
 class Design(Result):
-    """Theorem 6 of paper 000 (multidof.design): the value is the CCL trace gap (numeric); bool(r):
-    a coupling V was found and verified. V = (A_V, B_V, C_V, D_V) as numpy arrays. Besides the
-    protocol: the design's fields (feasible, certified, converged, iterations, verification, ...)."""
+    """Theorem 6 of paper 000 (multidof.design, multidof::design_scene): the value is the CCL
+    trace gap (numeric); bool(r): a coupling V was found and verified and every premise holds
+    (ok). V = (A_V, B_V, C_V, D_V) as numpy arrays, V_exact the exact hapstab.StateSpace (None
+    without a V). Besides the protocol: feasible, certified, converged, iterations, trace_gap,
+    trace_history, convex_infeasible, convex_certified, gamma, q_v, delta_v, verification
+    ([{name, verdict, certified, status, detail}]: the independent checks, the loop with V
+    decided, the simulation), loop_with_v, simulation ({decays, text}), warning, message,
+    assumptions, premise_failure, hidden_modes, facial_reduction, scene, T, dofs, delay."""
 
     _symbol = r"\mathrm{gap}"
     _name = "the trace gap"
 
     @property
     def V(self):
-        import numpy as np
-        return tuple(np.array(self._extra[k], dtype=np.float64) for k in ("A_V", "B_V", "C_V", "D_V"))
+        return tuple(self._extra[k] for k in ("A_V", "B_V", "C_V", "D_V"))
 
     def __bool__(self) -> bool:
-        return bool(self._extra["feasible"])
+        return bool(self._extra["ok"])
 
     def _repr_extra(self) -> Dict[str, Any]:
         return {"feasible": self._extra.get("feasible"), "certified": self._extra.get("certified")}
@@ -459,7 +497,8 @@ class ResultArray:
     @property
     def failed(self) -> int:
         """The points that did not run (their error says why)."""
-        return int(sum(1 for e in self.error.ravel() if e is not None))
+        import numpy as np
+        return int(np.count_nonzero(self.error != None))  # noqa: E711 -- elementwise, in numpy
 
     def __len__(self) -> int:
         return self.shape[0] if self.shape else 1

@@ -89,6 +89,33 @@ TEST(Decimal, SharedDecimalKeepsOnlyTheDigitsBothEndsShare) {
   EXPECT_EQ(s.text, "-2");
 }
 
+// The decimal exponent e (10^e <= |x| < 10^(e+1)) is estimated in double and fixed exactly: at
+// and next to every power of ten from 10^-40 to 10^40 (|x| 10^k (1 -+ 2^-200): the double estimate
+// cannot tell them apart), each output must hold x between its outward ends one unit apart, and
+// a power of ten must come back as itself.
+TEST(Decimal, ExponentFixedExactlyAtPowersOfTen) {
+  const rational tiny = rational(integer(1), integer(1) << 200);
+  int compared = 0;
+  for (int k = -40; k <= 40; ++k) {
+    const rational p = pow10(k);
+    for (int side : {-1, 0, +1})
+      for (int sign : {-1, +1}) {
+        const rational x = sign * p * (1 + side * tiny);
+        const int e = side < 0 ? k - 1 : k;  // floor(log10 |x|), exactly
+        for (int digits : {1, 5, 17, 30}) {
+          const rational lo = parse_rational(decimal_outward(x, digits, -1));
+          const rational hi = parse_rational(decimal_outward(x, digits, +1));
+          EXPECT_LE(lo, x);
+          EXPECT_GE(hi, x);
+          EXPECT_LE(hi - lo, pow10(e - digits + 1)) << k << " " << side << " " << digits;
+          if (side == 0) EXPECT_EQ(parse_rational(to_decimal(x, digits)), x) << k << " " << digits;
+          ++compared;
+        }
+      }
+  }
+  EXPECT_EQ(compared, 81 * 6 * 4);
+}
+
 // decimal_outward is the nearest decimal of `digits` digits on the asked side: an enclosure
 // printed with it still contains the value, and is no wider than one unit in the last digit.
 TEST(Decimal, OutwardIsTheNearestDecimalOnTheAskedSide) {

@@ -361,6 +361,36 @@ TEST(PassivityBound, StabilityExact) {
   EXPECT_TRUE(marginally_stable(e));
 }
 
+// marginally_stable keeps the last denominator's answer per thread (a vectorised b* asks about
+// one denominator at every point): alternating denominators, each must get its own answer and
+// its own reason, and the long-delay test (which keeps its own gcd) likewise.
+TEST(PassivityBound, KeptAnswersBelongToTheDenominatorAsked) {
+  using P = Polynomial<rational>;
+  const P stable(std::vector<rational>{rational(-1, 2), rational(1)});        // z - 1/2
+  const P unstable(std::vector<rational>{rational(-2), rational(1)});         // z - 2
+  const P repeated = P(std::vector<rational>{rational(1), rational(1)}).pow(2);  // (z + 1)^2
+  for (int round = 0; round < 3; ++round)
+    for (const P* d : {&stable, &unstable, &unstable, &repeated, &stable, &stable}) {
+      std::string why = "untouched";
+      const bool ok = marginally_stable(*d, &why);
+      EXPECT_EQ(ok, d == &stable) << round;
+      if (d == &stable) EXPECT_EQ(why, "untouched");  // a stable answer leaves the reason alone
+      if (d == &unstable) EXPECT_NE(why.find("|z|"), std::string::npos) << why;
+      if (d == &repeated) EXPECT_NE(why.find("repeated pole on the unit circle"), std::string::npos) << why;
+    }
+  // the planner's long-delay test after another H's: a pole at z = 1 has no long-delay path, a
+  // pole at z = -1 has one; asked alternately, each keeps its answer (plan_bound's `why`)
+  BoundProblem at_one, at_minus_one;
+  at_one.H = RationalFunction<rational>(P(rational(1)), P(std::vector<rational>{rational(-1), rational(1)}));
+  at_minus_one.H = RationalFunction<rational>(P(rational(1)), P(std::vector<rational>{rational(1), rational(1)}));
+  at_one.T = at_minus_one.T = rational(1, 1000);
+  at_one.delay = at_minus_one.delay = 60;  // long enough that the planner weighs both paths
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_NE(plan_bound(at_one).why.find("no long-delay path"), std::string::npos) << plan_bound(at_one).why;
+    EXPECT_EQ(plan_bound(at_minus_one).why.find("no long-delay path"), std::string::npos) << plan_bound(at_minus_one).why;
+  }
+}
+
 // Distinct roots on |z| = 1, exact: counted by hand from the factorisations.
 TEST(PassivityBound, UnitCircleRootsCounted) {
   using P = Polynomial<rational>;

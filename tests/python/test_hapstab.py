@@ -69,13 +69,17 @@ def test_import_without_the_extension_says_it_is_not_built(tmp_path):
 
 
 def test_the_binding_runs_no_command_line():
-    # bound, r, stability, passivity_level, wedge, simulate: library calls (issue 41), not `hapstab ...`
-    for name in ("bound", "bound_many", "r", "r_many", "stability", "stability_many", "passivity_level",
-                 "passivity_level_many", "passivity_level_ss", "wedge", "simulate", "tf_from_expression"):
+    # bound, r, stability, passivity_level, wedge, simulate, multidof: library calls (issue 41), not `hapstab ...`
+    for name in ("bound", "bound_many", "bound_max", "bound_max_many", "r", "r_many", "stability", "stability_many",
+                 "stability_scene", "stability_scene_many", "passivity_level", "passivity_level_many",
+                 "passivity_level_ss", "wedge", "simulate", "tf_from_expression", "multidof_analyze", "multidof_design"):
         assert callable(getattr(hapstab._core, name)), name
     src = Path(hapstab.__file__).read_text(encoding="utf-8")
-    body = src.split("def bound(")[1].split("\ndef ")[0]
-    assert "_core.run" not in body and "--json" not in body
+    for function in ("bound", "_bound_max", "stability", "_stability_scene"):
+        body = src.split(f"def {function}(")[1].split("\ndef ")[0]
+        assert "_core.run" not in body and "json.loads" not in body, function
+    multidof = (Path(hapstab.__file__).parent / "multidof.py").read_text(encoding="utf-8")
+    assert "_core.run" not in multidof and "json" not in multidof and "tempfile" not in multidof
 
 
 # ---- errors in the words of the call ---------------------------------------------------------
@@ -582,19 +586,216 @@ def test_stability_over_arrays_equals_scalar_calls():
         assert (mx.lo[i], mx.hi[i]) == (one.lo, one.hi)
 
 
+# ---- the passivity boundary as a number: bound(..., max="K") --------------------------------
+
+def _sqrt_enclosure(n, digits=60):
+    """[lo, hi] Fractions around sqrt(n), 10^-digits wide (integer square root: exact)."""
+    import math as _m
+    r = _m.isqrt(n * 10 ** (2 * digits))
+    return Fraction(r, 10**digits), Fraction(r + 1, 10**digits)
+
+
+def test_bound_max_equals_the_command_line_and_the_closed_form():
+    # README's case: the one-sample-delay wall, B = 1/2, b = 3/2: K_max = (2 sqrt(B(2b - B)) - 2B)/T
+    # = 1000 (sqrt(5) - 1), irrational; the reference is sqrt(5) to 60 digits in integers (more
+    # than the 30 asked), and the enclosure must contain it and be at most 10^-29 relative wide
+    m = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": "1/2"}, damping="3/2", max="K", check=True)
+    code, j = cli("bound", "--H", WALL, "--T", "1/1000", "--set", "B=1/2", "--delay", "1", "--damping", "3/2",
+                  "--max", "K", "--explain")
+    assert code == 0 and bool(m) and isinstance(m, hapstab.MaxPassiveGain)
+    assert (m.lo_exact, m.hi_exact) == tuple(j["enclosure"]) and m.decimal == j["max"] and m.status == j["status"]
+    lo5, hi5 = _sqrt_enclosure(5)
+    assert F(m.lo_exact) <= 1000 * (hi5 - 1) and 1000 * (lo5 - 1) <= F(m.hi_exact)
+    assert F(m.hi_exact) - F(m.lo_exact) <= Fraction(1236, 10**29)
+    assert m.lo <= float(F(m.lo_exact)) and float(F(m.hi_exact)) <= m.hi  # the floats rounded outward
+    assert m.closed_form["equation"] == "(53)" and m.closed_form["agrees"] and m.closed_form["value"] == j["closed_form_value"]
+    assert m.check["holds"] and m.b_at_zero.value == Fraction(1, 2) and F(m.damping) == Fraction(3, 2)
+    assert m.omega[0] <= m.omega[1] and m.where == "interior"  # where b* = b: the command's 17 digits
+    assert m.omega == pytest.approx((float(j["omega"][0]), float(j["omega"][1])), rel=4 * 2**-52)
+    # b* itself at the ends (an independent path: the maximiser of b*, 60 digits): <= b below, >= b above
+    at = lambda K: hapstab.bound(WALL, T="1/1000", delay=1, params={"K": F(K), "B": "1/2"}, digits=60)  # noqa: E731
+    assert at(m.lo_exact) < Fraction(3, 2) < at(m.hi_exact)
+    assert m > 1236 and m < 1237 and float(m) == pytest.approx(1236.0679774997897, rel=2**-52)
+
+
+def test_bound_max_exact_where_rational_and_at_the_edges():
+    # no delay: K_max = 2(b - B)/T exactly (the backward-difference wall, (46)); the Tustin wall:
+    # b* = KT/2 - B, K_max = 2(b + B)/T, its maximiser at omega T = pi (the band edge)
+    m = hapstab.bound(WALL, T="1/1000", params={"B": "1/2"}, damping="3/2", max="K")
+    assert m.status == "exact" and m.value == Fraction(2000) and m.lo == m.hi == 2000.0
+    t = hapstab.bound("K + 2*B/T*(z-1)/(z+1)", T="1/1000", params={"B": "1/2"}, damping="3/2", max="K")
+    assert t.value == Fraction(4000) and t.status == "exact"
+    # not passive at K = 0 (b <= b*(0) = B): 0, and bool is False; passive for every K: inf
+    z = hapstab.bound(WALL, T="1/1000", params={"B": 2}, damping="3/2", max="K")
+    assert z.value == 0 and not z and z.outcome != "holds"
+    # a negative stiffness lowers b* = B - KT/2 for every K: passive for every K >= 0
+    inf = hapstab.bound("B*(z-1)/(T*z) - K", T="1/1000", params={"B": "1/2"}, damping="3/2", max="K")
+    assert inf.infinite and math.isinf(inf.value) and bool(inf)
+    code, j = cli("bound", "--H", "B*(z-1)/(T*z) - K", "--T", "1/1000", "--set", "B=1/2", "--damping", "3/2", "--max", "K")
+    assert j["max"] == "inf" and code == 0
+
+
+def test_bound_max_over_arrays_equals_scalar_calls():
+    # B and b as arrays (broadcast), delay 0: every point is 2(b - B)/T exactly where b > B, else
+    # 0; delay 1: every point equals its scalar call's enclosure bit for bit (threads or not)
+    B = np.linspace(0, 3, 61)
+    b = np.array([[1.0], [2.5]])
+    ms = hapstab.bound(WALL, T="1/1000", params={"B": B}, damping=b, max="K")
+    assert ms.shape == (2, 61) and ms.failed == 0
+    expected = np.maximum(2 * (b - B) * 1000, 0)
+    compared = 0
+    for idx in np.ndindex(ms.shape):
+        if expected[idx] > 0:
+            assert F(ms.exact[idx]) == Fraction(2) * (Fraction(b[idx[0], 0]) - Fraction(B[idx[1]])) * 1000, idx
+            compared += 1
+        else:
+            assert ms.value[idx] == 0, idx
+    assert compared >= 60  # non-trivial (K_max > 0) points compared exactly
+    Bd = np.linspace(0.1, 2, 40)
+    md = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": Bd}, damping="3/2", max="K", jobs=2)
+    for i in range(0, 40, 3):
+        one = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": Bd[i]}, damping="3/2", max="K")
+        assert (md.lo[i], md.hi[i], md.lo_exact[i], md.hi_exact[i]) == (one.lo, one.hi, one.lo_exact, one.hi_exact), i
+        assert md.status_names[i] == one.status
+        assert md.omega[i] == pytest.approx((one.omega[0] + one.omega[1]) / 2) if one.omega else np.isnan(md.omega[i])
+    serial = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": Bd}, damping="3/2", max="K", jobs=1)
+    assert np.array_equal(serial.lo, md.lo) and np.array_equal(serial.hi, md.hi)
+
+
+@pytest.mark.parametrize("call,match", [
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1}, max="K"), r"^max='K' needs damping=b"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1}, damping=2, max="K", method="fast"), "certified only"),
+    (lambda: hapstab.bound("K^2 + B", T="1/1000", params={"B": 1}, damping=2, max="K"), "^max='K': H: .*affine"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1, "K": 2}, damping=2, max="K"), "maximised"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1}, damping=0, max="K"), "^damping must be > 0"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": [1, 2]}, damping=2, max="K", check=True), "^check"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1}, damping=[1, 2, 3], max="K"), None),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": [1, 2]}, damping=[1, 2, 3], max="K"), "^damping: .*broadcast"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params=KB, check=True), "^check"),
+    (lambda: hapstab.bound(WALL, T="1/1000", params={"B": 1}, damping=2, max="Q"), "Q"),
+])
+def test_bound_max_refuses_by_name(call, match):
+    if match is None:  # a damping array alone is a vector call, not an error
+        assert call().shape == (3,)
+        return
+    with pytest.raises(hapstab.InputError, match=match) as e:
+        call()
+    assert " --" not in str(e.value), str(e.value)
+
+
+# ---- stability(scene=...): the loop as written, any number of DOF, hidden modes ------------
+
+SCENES = Path(__file__).resolve().parents[1] / "cli" / "scenes"
+
+
+@pytest.mark.parametrize("scene", [EXAMPLES / "000_two_dof_loop.toml", SCENES / "hand_3dof.toml",
+                                   SCENES / "hidden_env.toml", SCENES / "hidden_device.toml",
+                                   SCENES / "hidden_operator.toml", SCENES / "two_dof_diverging.toml"])
+def test_stability_of_a_scene_is_the_commands_decision(scene):
+    s = hapstab.stability(scene=scene)
+    p = subprocess.run([CLI, "stability", "--scene", str(scene), "--json"], capture_output=True, text=True, check=False)
+    assert p.returncode in (0, 1), p.stderr
+    j = json.loads(p.stdout)
+    assert s.stable == j["stable"] and s.verdict_status == j["status"] and s.decider == j["method"]
+    assert s.evidence == j["evidence"] and s.dofs == j["dofs"] and s.states == j["states"]
+    assert s.value == j["spectral_radius_numeric"] and s.status == "numeric"
+    assert bool(s) == (p.returncode == 0)
+    assert [(m["block"], m["kind"], m["where"], m["stable"]) for m in s.hidden_modes] == \
+        [(m["block"], m["kind"], m["where"], m["stable"]) for m in j["hidden_modes"]]
+    for m in s.hidden_modes:  # the enclosure of |z| (or Re s) decides the mode's stability
+        assert m["abs"][0] <= m["abs"][1]
+        if m["discrete"]:
+            assert (m["abs"][1] < 1) if m["stable"] else (m["abs"][1] >= 1)
+
+
+def test_stability_of_a_scene_over_parameter_arrays():
+    # the 2-DOF loop of Sec. VI over the contact stiffness k1: each point equals its scalar call
+    scene = EXAMPLES / "000_two_dof_loop.toml"
+    k1 = np.array([50, 200, 1000, 5000, 20000, 100000])
+    sa = hapstab.stability(scene=scene, params={"k1": k1})
+    assert sa.shape == (6,) and sa.failed == 0
+    compared = 0
+    for i, k in enumerate(k1):
+        one = hapstab.stability(scene=scene, params={"k1": int(k)})
+        assert sa.stable[i] == {True: 1, False: 0, None: -1}[one.stable] and sa.value[i] == one.value
+        assert sa.evidence[i] == one.evidence
+        compared += one.stable is not None
+    assert compared == 6 and set(sa.stable) == {0, 1}  # both verdicts met on this range
+    assert sa[0].stable == 1 and bool(sa[0])
+
+
+@pytest.mark.parametrize("call,match", [
+    (lambda: hapstab.stability("1/s^2", scene=EXAMPLES / "000_two_dof_loop.toml"), "^scene replaces .*plant"),
+    (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", max="k1"), "^max='k1' with scene"),
+    (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", params={"kk": 1}), "kk"),
+    (lambda: hapstab.stability(scene=SCENE_DATA / "multidof_ops.toml"), "unknown key multidof.ops"),
+    (lambda: hapstab.stability(), "^give plant and H"),
+])
+def test_stability_of_a_scene_refuses_by_name(call, match):
+    with pytest.raises(hapstab.InputError, match=match) as e:
+        call()
+    assert " --" not in str(e.value).split("`")[0], str(e.value)
+
+
 # ---- multi-DOF (paper 000) -----------------------------------------------------------------
 
-def test_multidof_analyze_and_design_give_the_cli_verdicts():
-    scene = EXAMPLES / "multidof_case_i_nominal.toml"
-    a = hapstab.multidof.analyze(scene)
-    code, j = cli("multidof", "analyze", "--scene", str(scene))
-    assert a.verdict == j["verdict"] and a.certified == j["certified"] and a.exit_code == code
-    assert bool(a) == j["stability_concluded"] and a.value == j["margin"] and a.status == "certified"
-    d = hapstab.multidof.design(EXAMPLES / "multidof_case_ii_perturbed.toml", duration=2)
-    code, j = cli("multidof", "design", "--scene", str(EXAMPLES / "multidof_case_ii_perturbed.toml"), "--duration", "2")
-    assert d.feasible == j["feasible"] and d.certified == j["certified"] and d.D_V == j["D_V"]
+def _same_checks(py_list, cli_list, keys):
+    assert [{k: e[k] for k in keys} for e in py_list] == [{k: e[k] for k in keys} for e in cli_list]
+
+
+@pytest.mark.parametrize("scene", ["multidof_case_i_nominal.toml", "multidof_case_ii_perturbed.toml"])
+def test_multidof_analyze_is_the_commands_study(scene):
+    # one library entry point (multidof::analyze_scene) behind both: every field the command
+    # prints comes back, the same (floats bit for bit: the same computation, not a re-parse)
+    a = hapstab.multidof.analyze(EXAMPLES / scene)
+    code, j = cli("multidof", "analyze", "--scene", str(EXAMPLES / scene))
+    assert a.verdict == j["verdict"] and a.certified == j["certified"] and a.feasible == j["feasible"]
+    assert a.stability_concluded == j["stability_concluded"] and bool(a) == a.ok == (code == 0)
+    assert a.value == j["margin"] and a.status == "certified" and a.certificate == j["certificate"]
+    assert list(a.gamma) == j["gamma"] and np.array_equal(a.q_v, np.array(j["q_v"]))
+    assert np.array_equal(a.delta_v_required, np.array(j["delta_v_required"])) and a.q_v.dtype == np.float64
+    _same_checks(a.assumptions, j["assumptions"], ("name", "holds", "outcome", "certified", "detail"))
+    law = j["loop_as_written"]
+    assert {k: a.loop_as_written[k] for k in law} == law
+    assert [(m["block"], m["kind"], m["where"], m["stable"]) for m in a.hidden_modes] == \
+        [(m["block"], m["kind"], m["where"], m["stable"]) for m in j["hidden_modes"]]
+    assert a.premise_failure == "" if a.premises_hold else a.premise_failure.startswith(("Assumption 1", "a premise"))
+    assert set(a.seconds) == set(j["seconds"]) and a.dofs == 2
+
+
+def test_multidof_design_is_the_commands_study():
+    scene = EXAMPLES / "multidof_case_ii_perturbed.toml"
+    d = hapstab.multidof.design(scene, duration=2)
+    code, j = cli("multidof", "design", "--scene", str(scene), "--duration", "2")
+    for k in ("feasible", "certified", "converged", "iterations", "trace_gap", "convex_infeasible", "convex_certified",
+              "facial_reduction", "message", "warning"):
+        assert getattr(d, k) == j[k], k
+    assert bool(d) == d.ok == (code == 0) and d.value == j["trace_gap"] and d.status == "numeric"
     A, B, C, D = d.V
-    assert all(M.dtype == np.float64 for M in (A, B, C, D)) and D.shape == np.array(j["D_V"]).shape
+    for M, k in zip((A, B, C, D), ("A_V", "B_V", "C_V", "D_V")):
+        assert M.dtype == np.float64 and np.array_equal(M, np.array(j[k])), k
+    # the exact V the checks ran on: its doubles are the printed V
+    assert isinstance(d.V_exact, hapstab.StateSpace)
+    assert np.array_equal(np.array([[float(F(x)) for x in row] for row in d.V_exact.D]), D)
+    _same_checks(d.verification, j["verification"], ("name", "certified", "detail"))
+    assert [v["verdict"] for v in d.verification] == [v["verdict"].lower() for v in j["verification"]]
+    assert d.verification[-1]["status"] == "numeric" and "simulated" in d.verification[-1]["name"]
+    assert {k: d.loop_with_v[k] for k in j["loop_with_v"]} == j["loop_with_v"]
+    assert d.simulation["decays"] is False and d.simulation["text"] in d.warning  # 2 s: slow decay, warned
+    _same_checks(d.assumptions, j["assumptions"], ("name", "holds", "outcome", "certified", "detail"))
+
+
+def test_multidof_hidden_modes_and_premises():
+    # a block hiding an unstable mode: the premise fails by name, the loop as written is NOT
+    # stable (exact), and the mode is in the result with its location enclosed
+    scene = SOURCE / "tests" / "cli" / "scenes" / "hidden_env.toml"
+    code, j = cli("multidof", "analyze", "--scene", str(scene))
+    a = hapstab.multidof.analyze(scene)
+    assert not a and code == 1 and a.loop_as_written["stable"] is False and a.loop_as_written["status"] == "exact"
+    assert not a.premises_hold and a.premise_failure.startswith("a premise fails"), a.premise_failure
+    (m,) = a.hidden_modes
+    assert (m["block"], m["kind"], m["where"], m["stable"]) == ("environment", "unobservable", "z = 2", False)
+    assert m["abs"] == (2.0, 2.0) and m["re"] == (2.0, 2.0) and m["discrete"] is True
 
 
 def test_multidof_scene_text_names_no_temporary_file():

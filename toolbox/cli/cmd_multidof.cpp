@@ -3,8 +3,11 @@
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
 // dissipative Q_V) and Theorem 6 (structured coupling design by CCL, returned by (23)-(24) and
-// verified independently). Scene schema: docs/scene.md (scene/schema.hpp), [multidof] read by
-// hapstab/multidof/scene_multidof.hpp.
+// verified independently). The study itself -- the premises, the loop as written, the design's
+// closed-loop decision and simulated cross-check -- is hapstab/multidof/scene_analysis.hpp
+// (analyze_scene, design_scene), which Python's hapstab.multidof calls too; this file reads the
+// options and prints its results. Scene schema: docs/scene.md (scene/schema.hpp), [multidof] read
+// by hapstab/multidof/scene_multidof.hpp.
 // JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds:
 //   Theorem 5's conclusion, stable for every coupling whose Delta_V >= delta_v_required),
 //   loop_as_written {stable (true|false|null), coupling, method, status, why, states,
@@ -42,14 +45,9 @@
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
 #include "hapstab/lmi/certify.hpp"
-#include "hapstab/multidof/assumptions.hpp"
-#include "hapstab/multidof/design.hpp"
-#include "hapstab/multidof/loop_as_written.hpp"
-#include "hapstab/multidof/scene_multidof.hpp"
-#include "hapstab/numeric/error.hpp"
-#include "hapstab/scene/schema.hpp"
-#include "hapstab/sim/simulator.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/multidof/scene_analysis.hpp"
+#include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
 namespace {
@@ -83,11 +81,9 @@ lmi::Options lmi_options(const Opts& o) {
 const char* outcome_word(const Verdict& v) { return v.holds() ? "holds" : v.fails() ? "fails" : "undecided"; }
 
 // Assumption 1 on the reduced blocks, then the premises the realisations as written must meet
-// (their hidden modes: multidof::hidden_mode_premises).
-json assumptions(const multidof::SceneProblem& sp) {
+// (multidof::scene_premises).
+json assumptions_json(const std::vector<multidof::AssumptionCheck>& checks) {
   json a = json::array();
-  auto checks = multidof::check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence);
-  for (auto& c : multidof::hidden_mode_premises(sp)) checks.push_back(std::move(c));
   for (const auto& c : checks)
     a.push_back({{"name", c.name},
                  {"holds", c.verdict.holds()},
@@ -97,30 +93,12 @@ json assumptions(const multidof::SceneProblem& sp) {
   return a;
 }
 
-void print_assumptions(const json& assume) {
-  for (const auto& a : assume) {
-    const std::string o = a["outcome"].get<std::string>();
-    std::cout << "  [" << (o == "holds" ? "ok" : o == "fails" ? "FAILS" : "undecided") << "] "
-              << a["name"].get<std::string>() << ": " << a["detail"].get<std::string>() << "\n";
+void print_assumptions(const std::vector<multidof::AssumptionCheck>& checks) {
+  for (const auto& c : checks) {
+    const char* o = outcome_word(c.verdict);
+    std::cout << "  [" << (o == std::string("holds") ? "ok" : o == std::string("fails") ? "FAILS" : "undecided") << "] "
+              << c.name << ": " << c.verdict.evidence << "\n";
   }
-}
-
-// "Assumption 1 fails" / "... is undecided" (the first line that does not hold)
-std::string assumption_failure(const json& assume) {
-  for (const auto& a : assume)
-    if (!a["holds"].get<bool>()) {
-      const std::string name = a["name"].get<std::string>();
-      return (name.rfind("Assumption 1", 0) == 0 ? "Assumption 1 " : "a premise ") +
-             std::string(a["outcome"].get<std::string>() == "fails" ? "fails" : "is undecided") + " (" + name + ")";
-    }
-  return "";
-}
-
-std::string delay_text(const multidof::SceneProblem& sp) {
-  const int m = sp.problem.structure.m();
-  return "[delay] " + std::to_string(sp.delay) + " sample period(s): E := z^-" + std::to_string(sp.delay) +
-         " E (the force computed at kT acts from (k + " + std::to_string(sp.delay) + ")T; " +
-         std::to_string(sp.delay * m) + " shift states folded into E's realisation, exact)";
 }
 
 // Prints a matrix row by row, indented; beyond 8 x 8 only its size and largest |entry|.
@@ -166,29 +144,24 @@ std::string law_word(const multidof::LoopAsWritten& l) {
   return std::string(*l.stable ? "stable" : "NOT stable") + " [" + to_string(l.status) + "]";
 }
 
-int run_analyze(const Opts& o) {
+// The scene, its reading timed (multidof::SceneAnalysisOptions::load_seconds).
+scene::Scene read_scene(const Opts& o, double& seconds) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
-  scene::check_command(sc.root, o.scene, "multidof analyze");  // what it does not model is refused
-  const auto sp = multidof::problem_from_scene(sc);
-  const double realisation = since(t0);
-  const auto r = multidof::analyze(sp.problem, lmi_options(o));
-  const bool feasible = r.verdict.holds();
-  const bool certified = r.verdict.proven();
-  const char* verdict = lmi::to_string(lmi::feasibility_of(r.verdict.outcome));
-  const auto t1 = std::chrono::steady_clock::now();
-  const json assume = assumptions(sp);
-  const double assumption_seconds = since(t1);
-  bool assumptions_hold = true;
-  for (const auto& a : assume) assumptions_hold = assumptions_hold && a["holds"].get<bool>();
-  // Theorem 5 concludes stability only when the LMIs are certified feasible AND Assumption 1 holds
-  const bool stable = feasible && certified && assumptions_hold;
-  const auto t2 = std::chrono::steady_clock::now();
-  const multidof::LoopAsWritten law = multidof::loop_as_written(sp, assumptions_hold, lmi_options(o));
-  const double law_seconds = since(t2);
+  auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return sc;
+}
+
+int run_analyze(const Opts& o) {
+  multidof::SceneAnalysisOptions opt;
+  opt.lmi = lmi_options(o);
+  const auto sc = read_scene(o, opt.load_seconds);
+  const multidof::SceneAnalysis a = multidof::analyze_scene(sc, opt);
+  const auto& sp = a.scene;
+  const auto& r = a.lmis;
+  const auto& law = a.loop;
+  const bool feasible = a.feasible, certified = a.certified, stable = a.stability_concluded;
+  const std::string verdict = a.verdict();
   json j{{"feasible", feasible},
          {"stability_concluded", stable},
          {"loop_as_written", law_json(law)},
@@ -204,13 +177,13 @@ int run_analyze(const Opts& o) {
          {"margin", r.margin},
          {"facial_reduction", r.facial.explanation},
          {"solver", r.solver_detail},
-         {"assumptions", assume},
-         {"seconds", {{"realisation", realisation},
+         {"assumptions", assumptions_json(a.premises)},
+         {"seconds", {{"realisation", a.seconds.realisation},
                       {"sdp", r.sdp_seconds},
                       {"certificate", r.seconds - r.sdp_seconds},
-                      {"assumptions", assumption_seconds},
-                      {"loop_as_written", law_seconds},
-                      {"total", since(t0)}}}};
+                      {"assumptions", a.seconds.assumptions},
+                      {"loop_as_written", a.seconds.loop_as_written},
+                      {"total", a.seconds.total}}}};
   if (r.min_found)
     j["least_dissipative"] = {{"q_v", mat(r.Q_V_min)},
                               {"norm", r.Q_V_min_norm},
@@ -219,14 +192,14 @@ int run_analyze(const Opts& o) {
                               {"point_certified", r.min_point_certified},
                               {"minimality", "numeric: the solver's optimum or the structured path's floating-point "
                                              "bisection (only the point is checked exactly)"}};
-  const bool as_written_unstable = law.stable && !*law.stable;
+  const bool as_written_unstable = a.as_written_unstable();
   if (o.json) {
     print_json(j);
   } else {
     std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << verdict
               << (certified ? " (certified)" : " (not certified)") << "\n  " << r.verdict.evidence << "\n";
     if (r.verdict.evidence.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
-    if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "\n";
+    if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "\n";
     if (feasible) {
       std::cout << "  one feasible point (" << (r.solver_detail.find("Riccati") == std::string::npos ? "the SDP solver's" : "the Riccati equation's") << "): Gamma = sqrt(X): gamma =";
       for (double g : r.gamma_sqrt) std::cout << " " << g;
@@ -244,7 +217,7 @@ int run_analyze(const Opts& o) {
                           : "; no smaller Q_V was found (its minimality is numeric: the solver's optimum, or the "
                             "bisection of the structured path)\n");
     }
-    print_assumptions(j["assumptions"]);
+    print_assumptions(a.premises);
     std::cout << "  loop as written (coupling: " << law.coupling << "): " << law_word(law) << "\n    " << law.why << "\n";
     const std::string law_tail = "; the loop as written (coupling: " + law.coupling + "): " + law_word(law);
     std::cout << "=> ";
@@ -253,7 +226,7 @@ int run_analyze(const Opts& o) {
     else if (stable)
       std::cout << "stable for every coupling with Delta_V >= Gamma^-1 Q_V Gamma^-1 (Theorem 5, certified)" << law_tail;
     else if (feasible && certified)
-      std::cout << "no conclusion from Theorem 5: the LMIs are feasible, but " << assumption_failure(j["assumptions"])
+      std::cout << "no conclusion from Theorem 5: the LMIs are feasible, but " << multidof::premise_failure(a.premises)
                 << law_tail;
     else if (feasible)
       std::cout << "no conclusion from Theorem 5: the LMIs are feasible but not certified" << law_tail;
@@ -262,53 +235,7 @@ int run_analyze(const Opts& o) {
                 << ", and Theorem 5 is sufficient only" << law_tail;
     std::cout << "\n";
   }
-  return stable && !as_written_unstable ? exit_ok : exit_property_fails;
-}
-
-std::string seconds_text(double s) {
-  std::ostringstream o;
-  o << s;
-  return o.str();
-}
-
-// The loop Theorem 6 designs V for, as the scene writes its blocks: the environment as written
-// (perturb_C applied) with the [delay] folded in as z^-n E (V is fed the applied force), and V
-// (none if V is null) in parallel with the devices.
-sim::LoopSpec design_loop(const multidof::SceneProblem& sp, const StateSpace<rational>* V) {
-  sim::LoopSpec spec = sp.loop;
-  spec.environment = multidof::delayed(sp.E_written, sp.delay);
-  spec.delay = 0;
-  if (V) spec.coupling = *V;
-  else spec.coupling.reset();
-  return spec;
-}
-
-// That loop simulated from the scene's inputs and initial state (exact ZOH).
-sim::SimResult simulate_loop(const multidof::SceneProblem& sp, const StateSpace<rational>* V, double duration) {
-  sim::SimOptions so;
-  so.steps = static_cast<long>(std::ceil(duration / to_real<double>(sp.problem.T())));
-  so.energy = false;
-  so.max_velocity = 1e6;
-  return sim::Simulator(design_loop(sp, V)).run(so);
-}
-
-// velocities -> 0: the last second's largest |v| below 1e-3 of the run's peak (or 1e-9 absolute)
-std::pair<bool, std::string> decays(const sim::SimResult& r, double T) {
-  const auto& tr = r.samples;
-  const int N = tr.N;
-  double peak = 0, tail = 0;
-  const size_t rows = tr.rows();
-  const size_t tail_rows = static_cast<size_t>(std::max(1.0, 1.0 / T));
-  for (size_t i = 0; i < rows; ++i)
-    for (int j = 0; j < N; ++j) {
-      const double a = std::abs(tr.v[i * static_cast<size_t>(N) + static_cast<size_t>(j)]);
-      peak = std::max(peak, a);
-      if (i + tail_rows >= rows) tail = std::max(tail, a);
-    }
-  std::ostringstream o;
-  o << "simulated " << r.summary.steps_run << " steps (exact ZOH, sim/): peak |v| = " << peak << ", max |v| over the last second = "
-    << tail << ", trend " << r.summary.trend << (r.summary.diverged ? " (diverged)" : "");
-  return {!r.summary.diverged && (tail <= 1e-3 * peak || tail < 1e-9), o.str()};
+  return a.ok() ? exit_ok : exit_property_fails;
 }
 
 int run_design(const Opts& o) {
@@ -316,50 +243,17 @@ int run_design(const Opts& o) {
     throw InputError("--iterations must be in [1, 10000], got " + std::to_string(o.iterations));
   if (!(o.duration > 0 && o.duration <= 1e6))
     throw InputError("--duration must be in (0, 1e6] seconds, got " + std::to_string(o.duration));
-  const auto sc = scene::load_scene(o.scene, parse_sets(o.sets));
-  scene::check_command(sc.root, o.scene, "multidof design");  // what it does not model is refused
-  const auto sp = multidof::problem_from_scene(sc);
-  multidof::DesignOptions dop;
-  dop.max_iterations = o.iterations;
-  dop.lmi = lmi_options(o);
-  auto r = multidof::design(sp.problem, dop);
-  const bool hasV = r.V.D.rows() > 0;
-  const json assume = assumptions(sp);
-  const std::string premise = assumption_failure(assume);  // "" when Assumption 1 and the blocks' premises hold
-  // The library's verdict rests on certified checks (Theorem 4, V Schur stable). Beside them: the
-  // loop with this V decided as written (certified), and the simulation, a numeric cross-check
-  // that can warn but never decides; a simulation that diverges where a certificate proves
-  // stability is a contradiction (exit 3).
-  bool feasible = r.verdict.holds();
-  const bool certified = feasible && r.verdict.proven();
-  std::optional<multidof::LoopAsWritten> law;
-  std::string warning, contradiction;
-  if (hasV) {
-    law = multidof::decided_loop(design_loop(sp, &r.V), "the designed V");
-    r.verification.push_back({"the loop with this V, as written, is Schur stable (" + law->method + ")",
-                              law->stable ? Verdict::of(*law->stable, law->status, law->why)
-                                          : Verdict{Outcome::undecided, Status::failed, law->why}});
-    if (law->stable && !*law->stable) feasible = false;
-    const auto sr = simulate_loop(sp, &r.V, o.duration);
-    const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
-    r.verification.push_back({"closed loop simulated, velocities -> 0 (numeric cross-check; scene's devices, operators, inputs)",
-                              Verdict::of(ok, Status::numeric, text)});
-    // Theorem 6's certificate proves the loop stable only when its premises hold (hidden modes
-    // included); the closed-loop decision proves or refutes it directly
-    const bool theorem_proves = certified && premise.empty();
-    const bool law_proves = law->stable && *law->stable, law_refutes = law->stable && !*law->stable;
-    if (theorem_proves && law_refutes)
-      contradiction = "Theorem 6's certified checks and Assumption 1 say the loop with this V is stable, but the closed-loop "
-                      "decision proves it NOT stable (" + law->why + "): a contradiction to investigate";
-    else if (sr.summary.diverged && (law_proves || (theorem_proves && !law_refutes)))
-      contradiction = "the simulation diverged although the loop with this V is proven stable (" +
-                      (law_proves ? law->why : r.verdict.evidence) + "): a contradiction to investigate";
-    const bool proven_stable = law_proves || (theorem_proves && !law_refutes);
-    if (contradiction.empty() && !ok)
-      warning = "the simulated velocities have not decayed within " + seconds_text(o.duration) + " s (" + text +
-                "); this is a numeric observation, not a verdict" +
-                (proven_stable ? std::string(" (the loop is proven stable: slow decay)") : std::string());
-  }
+  double load_seconds = 0;
+  const auto sc = read_scene(o, load_seconds);
+  multidof::SceneDesignOptions opt;
+  opt.design.max_iterations = o.iterations;
+  opt.design.lmi = lmi_options(o);
+  opt.duration = o.duration;
+  const multidof::SceneDesign d = multidof::design_scene(sc, opt);
+  const auto& sp = d.scene;
+  const auto& r = d.design;
+  const bool hasV = d.has_v(), feasible = d.feasible, certified = d.certified;
+  const std::string& premise = d.premise_failure;
   json ver = json::array();
   for (const auto& v : r.verification)
     ver.push_back({{"name", v.name},
@@ -367,7 +261,7 @@ int run_design(const Opts& o) {
                    {"certified", v.verdict.proven()},
                    {"detail", v.verdict.evidence}});
   json j{{"feasible", feasible},
-         {"certified", certified && feasible},
+         {"certified", certified},
          {"converged", r.converged},
          {"iterations", r.iterations},
          {"trace_gap", r.trace_gap},
@@ -380,18 +274,18 @@ int run_design(const Opts& o) {
          {"gamma", r.gamma_sqrt},
          {"q_v", mat(r.Q_V)},
          {"verification", ver},
-         {"loop_with_v", law ? law_json(*law) : json(nullptr)},
+         {"loop_with_v", d.loop_with_v ? law_json(*d.loop_with_v) : json(nullptr)},
          {"facial_reduction", r.facial.explanation},
          {"hidden_modes", hidden_json(sp.hidden)},
-         {"warning", warning.empty() ? json(nullptr) : json(warning)},
-         {"contradiction", contradiction.empty() ? json(nullptr) : json(contradiction)},
+         {"warning", d.warning.empty() ? json(nullptr) : json(d.warning)},
+         {"contradiction", d.contradiction.empty() ? json(nullptr) : json(d.contradiction)},
          {"message", r.verdict.evidence},
-         {"assumptions", assume}};
+         {"assumptions", assumptions_json(d.premises)}};
   if (o.json) {
     print_json(j);
   } else {
     std::cout << "Theorem 6 design for " << o.scene << ": " << (feasible ? "a stabilising V found" : "no verified V")
-              << (certified && feasible ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged")
+              << (certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged")
               << " after " << r.iterations << " iterations. " << r.verdict.evidence << "\n";
     if (!r.facial.explanation.empty()) std::cout << "  " << r.facial.explanation << "\n";
     if (hasV)
@@ -401,12 +295,12 @@ int run_design(const Opts& o) {
       std::cout << "  [" << (v.verdict.holds() ? "pass" : v.verdict.fails() ? "FAIL" : "undecided")
                 << (v.verdict.proven() ? ", certified" : v.verdict.status == Status::numeric ? ", numeric" : "") << "] "
                 << v.name << "\n      " << v.verdict.evidence << "\n";
-    if (sp.delay > 0) std::cout << "  " << delay_text(sp) << "; the designed V is fed the applied force\n";
-    print_assumptions(j["assumptions"]);
-    if (!warning.empty()) std::cout << "  warning: " << warning << "\n";
+    if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "; the designed V is fed the applied force\n";
+    print_assumptions(d.premises);
+    if (!d.warning.empty()) std::cout << "  warning: " << d.warning << "\n";
     std::cout << "=> ";
-    if (!contradiction.empty())
-      std::cout << "CONTRADICTION: " << contradiction;
+    if (!d.contradiction.empty())
+      std::cout << "CONTRADICTION: " << d.contradiction;
     else if (feasible && premise.empty())
       std::cout << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
                 << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision; "
@@ -421,8 +315,8 @@ int run_design(const Opts& o) {
                 << "); Theorem 6 is sufficient only";
     std::cout << "\n";
   }
-  if (!contradiction.empty()) return exit_numerical;
-  return feasible && premise.empty() ? exit_ok : exit_property_fails;
+  if (!d.contradiction.empty()) return exit_numerical;
+  return d.ok() ? exit_ok : exit_property_fails;
 }
 
 // Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27)
@@ -437,9 +331,9 @@ void write_velocity_data(const std::string& scene_name, const std::string& stem,
   const auto V27 = multidof::example::controller27();
   if (sp.problem.structure.m() == 2) runs.emplace_back("paper27", &V27);
   for (const auto& [name, V] : runs) {
-    const auto sr = simulate_loop(sp, V, 10.0);
+    const auto sr = multidof::simulate_with_coupling(sp, V, 10.0);
     std::ofstream f(datadir / (stem + "_" + name + ".dat"));
-    const auto [ok, text] = decays(sr, to_real<double>(sp.problem.T()));
+    const auto [ok, text] = multidof::velocities_decay(sr, to_real<double>(sp.problem.T()));
     f << "# t[s] v_1 ... v_N [m/s]  (" << name << " coupling; " << scene_name << ")\n# "
       << (ok ? "velocities -> 0: " : "NOT decaying: ") << text << "\n";
     const auto& tr = sr.samples;

@@ -26,6 +26,7 @@
 #include <map>
 
 #include "hapstab/lmi/backend.hpp"
+#include "hapstab/numeric/interrupt.hpp"
 
 namespace hapstab::lmi {
 
@@ -444,6 +445,7 @@ BackendResult Ipm::run() {
   r.detail = "hapstab IPM: iteration limit";
   double last_err = INFINITY;  // max(pinf, dinf, gap) at the last iterate measured
   for (; it < max_iter; ++it) {
+    interruption_point();  // the caller may abandon the solve between iterations (numeric/interrupt.hpp)
     double trXS = 0, rdnorm2 = 0;
     if (!factor_iterate(trXS, rdnorm2)) {
       r.detail = "hapstab IPM: lost positive definiteness";

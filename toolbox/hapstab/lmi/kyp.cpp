@@ -7,6 +7,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "hapstab/numeric/interrupt.hpp"
+
 namespace hapstab::lmi {
 
 namespace {
@@ -27,6 +29,7 @@ double kyp_min_eigenvalue(const KypData& d, const MatrixXd& P) {
 }
 
 KypPoint kyp_riccati_point(const KypData& d, double delta) {
+  interruption_point();  // a caller's stop request, before each Riccati solve (numeric/interrupt.hpp)
   KypPoint kp;
   kp.delta = delta;
   kp.riccati_solves = 1;

@@ -13,6 +13,7 @@
 #include "hapstab/lmi/standard_form.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interrupt.hpp"
 
 namespace hapstab::lmi {
 
@@ -442,6 +443,7 @@ SolveResult solve_with_fallback(const Program& prog, const Options& opt) {
 }  // namespace
 
 SolveResult solve(const Program& prog, const Options& opt) {
+  interruption_point();  // a caller's stop request, before each solve (numeric/interrupt.hpp)
   if (!(opt.csdp_time_limit >= 0) || !std::isfinite(opt.csdp_time_limit))
     throw InputError("lmi options: csdp_time_limit must be a finite number of seconds >= 0 (0 = automatic)");
   if (opt.backend != Backend::automatic) return solve_with_fallback(prog, opt);

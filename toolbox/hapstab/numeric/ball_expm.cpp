@@ -26,18 +26,10 @@ DoubleEnclosure extract(flint::BallMat& B, long r0, long c0, long nr, long nc) {
   e.mid.resize(nr, nc);
   for (long i = 0; i < nr; ++i)
     for (long j = 0; j < nc; ++j) {
-      const arb_struct* x = B.at(r0 + i, c0 + j);
-      if (!arb_is_finite(x)) throw NumericalError("matrix exponential: Arb lost the enclosure (non-finite ball)");
-      const double m = arf_get_d(arb_midref(x), ARF_RND_NEAR);
-      arf_t d;
-      arf_init(d);
-      arf_set_d(d, m);
-      arf_sub(d, d, arb_midref(x), 64, ARF_RND_UP);
-      const double rounding = std::fabs(arf_get_d(d, ARF_RND_UP));
-      arf_clear(d);
-      const double r = mag_get_d(arb_radref(x)) + rounding;
-      e.mid(i, j) = m;
-      e.radius = std::max(e.radius, std::nextafter(r, INFINITY));
+      double r = 0;
+      if (!flint::to_double_ball(B.at(r0 + i, c0 + j), e.mid(i, j), r))
+        throw NumericalError("matrix exponential: Arb lost the enclosure (non-finite ball)");
+      e.radius = std::max(e.radius, r);
     }
   return e;
 }

@@ -129,16 +129,17 @@ std::string format_decimal(const rational& x, int digits, Rounding mode) {
   long ep = 0, eq = 0;
   const double mp = mpz_get_d_2exp(&ep, P.backend().data()), mq = mpz_get_d_2exp(&eq, Q.backend().data());
   long e = static_cast<long>(std::floor(std::log10(mp / mq) + static_cast<double>(ep - eq) * std::log10(2.0)));
-  integer N, M;
+  // |x| 10^(digits-1-e) = N/M truncated to n: 10^e <= |x| < 10^(e+1) iff 10^(digits-1) <= n <
+  // 10^digits (n = floor(N/M) and the ends are integers), so one division checks the estimate
+  integer N, M, n, r;
   for (;;) {
-    scaled(-e, N, M);
-    if (N < M) { --e; continue; }  // |x| < 10^e
-    scaled(-e - 1, N, M);
-    if (N >= M) { ++e; continue; }  // |x| >= 10^(e+1)
+    scaled(digits - 1 - e, N, M);
+    n = N / M;
+    if (n < ten_to(static_cast<unsigned>(digits - 1))) { --e; continue; }  // |x| < 10^e
+    if (n >= ten_to(static_cast<unsigned>(digits))) { ++e; continue; }     // |x| >= 10^(e+1)
     break;
   }
-  scaled(digits - 1 - e, N, M);
-  integer n = N / M, r = N - n * M;  // the magnitude, truncated; then rounded as asked
+  r = N - n * M;  // n is the magnitude, truncated; then rounded as asked
   const bool away = mode == Rounding::nearest_even ? 2 * r > M || (2 * r == M && (n % 2) != 0)
                                                    : r != 0 && neg == (mode == Rounding::down);
   if (away) n += 1;

@@ -9,6 +9,7 @@
 // tower users see. The owners below are move-only RAII wrappers; the conversions are exact.
 #pragma once
 
+#include <cmath>
 #include <utility>
 
 #include <flint/fmpq.h>
@@ -164,6 +165,22 @@ inline rational to_rational(const arf_t a) {
   const long ex = fmpz_get_si(e.get());
   if (ex >= 0) return r * rational(integer(1) << static_cast<unsigned>(ex));
   return r / rational(integer(1) << static_cast<unsigned>(-ex));
+}
+
+/// A finite ball as a double midpoint (nearest) and a double radius that covers the ball's radius
+/// and the rounding of the midpoint, rounded up; false when the ball is not finite.
+inline bool to_double_ball(const arb_t x, double& mid, double& rad) {
+  if (!arb_is_finite(x)) return false;
+  mid = arf_get_d(arb_midref(x), ARF_RND_NEAR);
+  arf_t d;
+  arf_init(d);
+  arf_set_d(d, mid);
+  arf_sub(d, d, arb_midref(x), 64, ARF_RND_UP);
+  const double rounding = std::fabs(arf_get_d(d, ARF_RND_UP));
+  arf_clear(d);
+  const double r = mag_get_d(arb_radref(x)) + rounding;  // mag_get_d rounds up
+  rad = r > 0 ? std::nextafter(r, INFINITY) : 0.0;
+  return true;
 }
 
 }  // namespace hapstab::flint

@@ -86,7 +86,7 @@ BoundPlan plan_bound(const BoundProblem& raw) {
   const bool exact_ok = plan.exact_degree <= exact_limit;
   plan.exact_seconds = exact_ok ? exact_cost(plan.exact_degree) : std::numeric_limits<double>::infinity();
   std::string why_not;
-  const bool long_ok = detail::delay_form(p, &why_not).has_value();
+  const bool long_ok = detail::long_delay_applies(p, &why_not).has_value();
   const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
   plan.long_seconds = long_ok ? long_cost(nu, order) : std::numeric_limits<double>::infinity();
   const std::string costs = (exact_ok ? "exact path ~" + seconds(plan.exact_seconds) : std::string("exact path beyond its limit")) +
@@ -129,7 +129,7 @@ Bound bound_certified(const BoundProblem& p, int digits) {
   const BoundPlan plan = plan_bound(p);
   if (!std::isfinite(plan.exact_seconds) && !std::isfinite(plan.long_seconds)) {
     std::string why;
-    detail::delay_form(with_integer_delay(p), &why);
+    detail::long_delay_applies(with_integer_delay(p), &why);
     throw InputError("no path takes this case: the exact objective would have degree " +
                      std::to_string(plan.exact_degree) + ", more than the exact path's limit of " +
                      std::to_string(p.frac_delay ? 96 : limits::model_degree) +

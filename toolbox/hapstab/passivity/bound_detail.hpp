@@ -198,6 +198,14 @@ struct DelayForm {
 /// nullopt (and why) when the long-delay path does not apply: a pole of H on the unit circle other
 /// than a simple one at z = -1, or that pole with a fractional delay.
 std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why);
+/// delay_form's test alone, without its exact pieces (the planner's question, plan_bound: a gcd
+/// instead of the objective): nullopt (and why) exactly when delay_form's is; else H's simple
+/// pole at z = -1, if any, and its residue rho.
+struct LongDelayPole {
+  bool at_minus_one = false;
+  rational rho = 0;
+};
+std::optional<LongDelayPole> long_delay_applies(const BoundProblem& p, std::string* why);
 /// The certified long-delay path (the problem's assumptions already checked); its double twin is
 /// fast_long_delay (bound.hpp).
 Bound certified_long_delay(const BoundProblem& p, int digits);

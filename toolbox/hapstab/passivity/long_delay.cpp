@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -31,7 +33,37 @@ using flint::Ball;
 using jet::Jet;
 
 // ---- the exact pieces -------------------------------------------------------------------------
+std::optional<LongDelayPole> long_delay_applies(const BoundProblem& p, std::string* why) {
+  LongDelayPole pole;
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const QPoly& D = p.H.den();
+  // H's poles on |z| = 1 (H is stable: no reciprocal pairs); the last D's kept on this thread (a
+  // vectorised b* over a parameter of H's numerator asks about one D at every point)
+  thread_local std::optional<std::pair<QPoly, QPoly>> last;
+  if (!last || !(last->first == D)) last.emplace(D, gcd(D, reversed(D)));
+  const QPoly& circle = last->second;
+  if (circle.degree() > 0) {
+    const QPoly plus_one({rational(1), rational(1)});
+    if (circle.degree() > 1 || !(circle == plus_one || circle == plus_one.monic())) {
+      if (why) *why = "H has a pole on the unit circle at z != -1 (" + to_string(circle, "z") + " divides its denominator)";
+      return std::nullopt;
+    }
+    // a simple pole at z = -1: H = H~ + rho/(z + 1), rho = N(-1)/D'(-1)
+    pole.at_minus_one = true;
+    pole.rho = p.H.num()(rational(-1)) / D.derivative()(rational(-1));
+    if (den(nu) != 1 && pole.rho != 0) {
+      if (why) *why = "H has a pole at z = -1 and the delay t_d/T = " + to_decimal(nu, 12) +
+                      " is not a whole number of samples (the objective is unbounded near wT = pi, or decided exactly "
+                      "only by the exact path)";
+      return std::nullopt;
+    }
+  }
+  return pole;
+}
+
 std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why) {
+  const std::optional<LongDelayPole> pole = long_delay_applies(p, why);
+  if (!pole) return std::nullopt;
   DelayForm f;
   f.nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
   f.n = p.delay;
@@ -40,23 +72,9 @@ std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why) {
   f.T = p.T;
   f.eta = p.eta;
   QRatFun Ht = p.H;
-  const QPoly& D = p.H.den();
-  const QPoly circle = gcd(D, reversed(D));  // H's poles on |z| = 1 (H is stable: no reciprocal pairs)
-  if (circle.degree() > 0) {
-    const QPoly plus_one({rational(1), rational(1)});
-    if (circle.degree() > 1 || !(circle == plus_one || circle == plus_one.monic())) {
-      if (why) *why = "H has a pole on the unit circle at z != -1 (" + to_string(circle, "z") + " divides its denominator)";
-      return std::nullopt;
-    }
-    // a simple pole at z = -1: H = H~ + rho/(z + 1), rho = N(-1)/D'(-1)
-    f.rho = p.H.num()(rational(-1)) / D.derivative()(rational(-1));
-    if (!f.integer_nu && f.rho != 0) {
-      if (why) *why = "H has a pole at z = -1 and the delay t_d/T = " + to_decimal(f.nu, 12) +
-                      " is not a whole number of samples (the objective is unbounded near wT = pi, or decided exactly "
-                      "only by the exact path)";
-      return std::nullopt;
-    }
-    Ht = p.H - QRatFun(QPoly(f.rho), plus_one);
+  if (pole->at_minus_one) {
+    f.rho = pole->rho;
+    Ht = p.H - QRatFun(QPoly(f.rho), QPoly({rational(1), rational(1)}));
   }
   const Objective o = objective(Ht, p.T, 0);
   const QPoly one_plus_c({rational(1), rational(1)}), one_minus_c({rational(1), rational(-1)});

@@ -2,6 +2,7 @@
 // stability.hpp).
 #include "hapstab/poly/stability.hpp"
 
+#include <optional>
 #include <vector>
 
 #include "hapstab/poly/sturm.hpp"
@@ -84,9 +85,32 @@ int unit_circle_roots(const QPoly& p) {
   return g.degree() > 0 ? circle_roots_of_square_free(square_free_part(g)) : 0;
 }
 
+namespace {
+bool marginally_stable_uncached(const QPoly& d, std::string* detail);
+}
+
 bool marginally_stable(const QPoly& d, std::string* detail) {
   if (d.is_zero()) throw InputError("the denominator of H is zero");
   if (d.degree() == 0) return true;
+  // The last question this thread asked, answered again without the exact work: a vectorised
+  // bound over a parameter of H's numerator asks about one denominator at every point.
+  struct Last {
+    QPoly d;
+    bool stable = false;
+    std::string detail;
+  };
+  thread_local std::optional<Last> last;
+  if (!last || !(last->d == d)) {
+    std::string why;
+    const bool stable = marginally_stable_uncached(d, &why);
+    last = Last{d, stable, std::move(why)};
+  }
+  if (!last->stable && detail) *detail = last->detail;
+  return last->stable;
+}
+
+namespace {
+bool marginally_stable_uncached(const QPoly& d, std::string* detail) {
   QPoly g = gcd(d, reversed(d));  // every unit-circle root of d, and reciprocal pairs (r, 1/r)
   QPoly d1 = d;
   if (g.degree() > 0) {
@@ -112,5 +136,6 @@ bool marginally_stable(const QPoly& d, std::string* detail) {
   }
   return true;
 }
+}  // namespace
 
 }  // namespace hapstab

@@ -38,6 +38,8 @@ int unit_circle_roots(const Polynomial<rational>& p);
 
 /// True iff every root of d satisfies |z| <= 1 and those with |z| = 1 are simple (exact): the
 /// poles H may have in (45). `detail` receives the reason when false. Throws InputError for d = 0.
+/// The answer for the last d asked on this thread is kept (a vectorised b* over a numerator
+/// parameter asks about one denominator at every point).
 bool marginally_stable(const Polynomial<rational>& d, std::string* detail = nullptr);
 
 }  // namespace hapstab

@@ -1,0 +1,162 @@
+// hapstab/multidof/scene_analysis.cpp -- see scene_analysis.hpp.
+#include "hapstab/multidof/scene_analysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "hapstab/lmi/certify.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interrupt.hpp"
+#include "hapstab/scene/schema.hpp"
+
+namespace hapstab::multidof {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string seconds_text(double s) {
+  std::ostringstream o;
+  o << s;
+  return o.str();
+}
+
+}  // namespace
+
+std::vector<AssumptionCheck> scene_premises(const SceneProblem& sp) {
+  auto checks = check_assumptions(sp.problem.structure, sp.operators, sp.operator_names, sp.device_evidence);
+  for (auto& c : hidden_mode_premises(sp)) checks.push_back(std::move(c));
+  return checks;
+}
+
+std::string premise_failure(const std::vector<AssumptionCheck>& premises) {
+  for (const auto& a : premises)
+    if (!a.verdict.holds())
+      return (a.name.rfind("Assumption 1", 0) == 0 ? "Assumption 1 " : "a premise ") +
+             std::string(a.verdict.fails() ? "fails" : "is undecided") + " (" + a.name + ")";
+  return "";
+}
+
+std::string delay_text(const SceneProblem& sp) {
+  const int m = sp.problem.structure.m();
+  return "[delay] " + std::to_string(sp.delay) + " sample period(s): E := z^-" + std::to_string(sp.delay) +
+         " E (the force computed at kT acts from (k + " + std::to_string(sp.delay) + ")T; " +
+         std::to_string(sp.delay * m) + " shift states folded into E's realisation, exact)";
+}
+
+std::string SceneAnalysis::verdict() const { return lmi::to_string(lmi::feasibility_of(lmis.verdict.outcome)); }
+
+SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& opt) {
+  const auto t0 = Clock::now();
+  SceneAnalysis a;
+  scene::check_command(sc.root, sc.file, "multidof analyze");  // what it does not model is refused
+  a.scene = problem_from_scene(sc);
+  a.seconds.realisation = opt.load_seconds + since(t0);
+  a.lmis = analyze(a.scene.problem, opt.lmi);
+  a.feasible = a.lmis.verdict.holds();
+  a.certified = a.lmis.verdict.proven();
+  const auto t1 = Clock::now();
+  a.premises = scene_premises(a.scene);
+  a.seconds.assumptions = since(t1);
+  a.premises_hold = all_hold(a.premises);
+  a.stability_concluded = a.feasible && a.certified && a.premises_hold;
+  const auto t2 = Clock::now();
+  a.loop = loop_as_written(a.scene, a.premises_hold, opt.lmi);
+  a.seconds.loop_as_written = since(t2);
+  a.seconds.total = opt.load_seconds + since(t0);
+  return a;
+}
+
+sim::LoopSpec loop_with_coupling(const SceneProblem& sp, const StateSpace<rational>* V) {
+  sim::LoopSpec spec = sp.loop;
+  spec.environment = delayed(sp.E_written, sp.delay);
+  spec.delay = 0;
+  if (V) spec.coupling = *V;
+  else spec.coupling.reset();
+  return spec;
+}
+
+sim::SimResult simulate_with_coupling(const SceneProblem& sp, const StateSpace<rational>* V, double duration) {
+  sim::SimOptions so;
+  so.steps = static_cast<long>(std::ceil(duration / to_real<double>(sp.problem.T())));
+  so.energy = false;
+  so.max_velocity = 1e6;
+  so.progress = [](double) { interruption_point(); };
+  return sim::Simulator(loop_with_coupling(sp, V)).run(so);
+}
+
+Decay velocities_decay(const sim::SimResult& r, double T) {
+  const auto& tr = r.samples;
+  const int N = tr.N;
+  double peak = 0, tail = 0;
+  const size_t rows = tr.rows();
+  const size_t tail_rows = static_cast<size_t>(std::max(1.0, 1.0 / T));
+  for (size_t i = 0; i < rows; ++i)
+    for (int j = 0; j < N; ++j) {
+      const double a = std::abs(tr.v[i * static_cast<size_t>(N) + static_cast<size_t>(j)]);
+      peak = std::max(peak, a);
+      if (i + tail_rows >= rows) tail = std::max(tail, a);
+    }
+  std::ostringstream o;
+  o << "simulated " << r.summary.steps_run << " steps (exact ZOH, sim/): peak |v| = " << peak
+    << ", max |v| over the last second = " << tail << ", trend " << r.summary.trend
+    << (r.summary.diverged ? " (diverged)" : "");
+  return {!r.summary.diverged && (tail <= 1e-3 * peak || tail < 1e-9), o.str()};
+}
+
+SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) {
+  if (opt.design.max_iterations < 1 || opt.design.max_iterations > 10000)
+    throw InputError("iterations must be in [1, 10000], got " + std::to_string(opt.design.max_iterations));
+  if (!(opt.duration > 0 && opt.duration <= 1e6))
+    throw InputError("duration must be in (0, 1e6] seconds, got " + seconds_text(opt.duration));
+  SceneDesign d;
+  scene::check_command(sc.root, sc.file, "multidof design");  // what it does not model is refused
+  d.scene = problem_from_scene(sc);
+  const SceneProblem& sp = d.scene;
+  d.design = design(sp.problem, opt.design);
+  DesignResult& r = d.design;
+  d.premises = scene_premises(sp);
+  d.premise_failure = premise_failure(d.premises);
+  // The design's verdict rests on certified checks (Theorem 4, V Schur stable). Beside them: the
+  // loop with this V decided as written (certified), and the simulation, a numeric cross-check
+  // that can warn but never decides.
+  d.feasible = r.verdict.holds();
+  const bool certified = d.feasible && r.verdict.proven();
+  if (d.has_v()) {
+    d.loop_with_v = decided_loop(loop_with_coupling(sp, &r.V), "the designed V");
+    const LoopAsWritten& law = *d.loop_with_v;
+    r.verification.push_back({"the loop with this V, as written, is Schur stable (" + law.method + ")",
+                              law.stable ? Verdict::of(*law.stable, law.status, law.why)
+                                         : Verdict{Outcome::undecided, Status::failed, law.why}});
+    if (law.stable && !*law.stable) d.feasible = false;
+    const auto sr = simulate_with_coupling(sp, &r.V, opt.duration);
+    d.simulation = velocities_decay(sr, to_real<double>(sp.problem.T()));
+    const Decay& sim = *d.simulation;
+    r.verification.push_back(
+        {"closed loop simulated, velocities -> 0 (numeric cross-check; scene's devices, operators, inputs)",
+         Verdict::of(sim.decays, Status::numeric, sim.text)});
+    // Theorem 6's certificate proves the loop stable only when its premises hold (hidden modes
+    // included); the closed-loop decision proves or refutes it directly
+    const bool theorem_proves = certified && d.premise_failure.empty();
+    const bool law_proves = law.stable && *law.stable, law_refutes = law.stable && !*law.stable;
+    if (theorem_proves && law_refutes)
+      d.contradiction = "Theorem 6's certified checks and Assumption 1 say the loop with this V is stable, but the "
+                        "closed-loop decision proves it NOT stable (" + law.why + "): a contradiction to investigate";
+    else if (sr.summary.diverged && (law_proves || (theorem_proves && !law_refutes)))
+      d.contradiction = "the simulation diverged although the loop with this V is proven stable (" +
+                        (law_proves ? law.why : r.verdict.evidence) + "): a contradiction to investigate";
+    const bool proven_stable = law_proves || (theorem_proves && !law_refutes);
+    if (d.contradiction.empty() && !sim.decays)
+      d.warning = "the simulated velocities have not decayed within " + seconds_text(opt.duration) + " s (" + sim.text +
+                  "); this is a numeric observation, not a verdict" +
+                  (proven_stable ? std::string(" (the loop is proven stable: slow decay)") : std::string());
+  }
+  d.certified = certified && d.feasible;
+  return d;
+}
+
+}  // namespace hapstab::multidof
