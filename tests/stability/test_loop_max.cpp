@@ -2,7 +2,7 @@
 // that share none of its numerics (no Arb exponential, no Krawczyk test, no eigenvalue enclosure):
 //  - 1 DOF, pure mass 1/(m s^2) on the wall K + B (z - 1)/(T z): the closed form of
 //    ext.stability.pure_mass, K* = (2B/T)(2m - BT)/(2m + BT), exact.
-//  - 2 DOF, two pure masses on a coupled spring-damper environment scaled by g: with pure masses the
+//  - 2 DOF, two pure masses on a coupled spring-damper environment (a scene, `gain = "g"`): with pure masses the
 //    zero-order hold is exact (A nilpotent), so M(g) is a rational matrix (sim/closed_loop.hpp's
 //    `exact`, built without loop_max's family or deflation); the reference is a bisection on g with
 //    Schur-Cohn on det(zI - M(g)), exact, to 2^-40 of a 2e-6 bracket.
@@ -15,6 +15,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/poly/stability.hpp"
+#include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_max.hpp"
 
@@ -24,17 +25,44 @@ using namespace hapstab::sim;
 namespace {
 using Q = rational;
 
-// K + B (z - 1)/(T z) per DOF, scaled by g; Kc couples the two DOFs through a spring (N = 1 or 2)
-StateSpace<Q> walls(const Q& g, const std::vector<Q>& K, const std::vector<Q>& B, const Q& Kc, const Q& T) {
-  const long N = static_cast<long>(K.size());
-  MatQ C = MatQ::Zero(N, N), D = MatQ::Zero(N, N);
-  for (long i = 0; i < N; ++i) {
-    C(i, i) = -g * B[static_cast<size_t>(i)] / T;
-    D(i, i) = g * (K[static_cast<size_t>(i)] + B[static_cast<size_t>(i)] / T + (N > 1 ? Kc : Q(0)));
-  }
-  if (N > 1) D(0, 1) = D(1, 0) = -g * Kc;
-  return {MatQ::Zero(N, N), MatQ::Identity(N, N), C, D, T};
+// Scenes as text (the proofs of proofs/ext_loop_max.cpp build the same kind of loop from state
+// space; here the environment goes through the scene's transfer-matrix realisation instead).
+sim::LoopSpec scene_loop(const std::string& text, const std::map<std::string, Q>& set) {
+  return scene::parse_scene(text, "test_loop_max", set).loop;
 }
+
+const char* kPureMass = R"toml([scene]
+name = "pure mass on K + B (z-1)/(T z)"
+T = "1/100"
+[parameters]
+m = "1"
+B = "2"
+K = "1"
+[[device]]
+name = "d"
+m = "m"
+b = "0"
+[environment]
+tf = "K + B*(z-1)/(T*z)"
+)toml";
+
+const char* kTwoMasses = R"toml([scene]
+name = "two pure masses, a coupled spring-damper environment scaled by g"
+T = "1/100"
+[parameters]
+g = "1"
+[[device]]
+name = "left"
+m = "1/10"
+b = "0"
+[[device]]
+name = "right"
+m = "3/10"
+b = "0"
+[environment]
+gain = "g"
+tf = [["250 + 2*(z-1)/(T*z)", "-50"], ["-50", "350 + 3*(z-1)/(T*z)"]]
+)toml";
 
 // M(p) exactly (sim/closed_loop.hpp: the plant's exponentials are rational for pure masses), its
 // Schur verdict exactly: Schur-Cohn on det(zI - M) (poly/stability.hpp)
@@ -44,13 +72,7 @@ bool exactly_stable(const LoopSpec& s) {
   return M && schur_stable(charpoly(*M));
 }
 
-LoopSpec two_masses(const Q& g) {
-  LoopSpec s;
-  s.T = Q(1, 100);
-  s.devices = {mass_damper("left", Q(1, 10), Q(0)), mass_damper("right", Q(3, 10), Q(0))};
-  s.environment = walls(g, {Q(200), Q(300)}, {Q(2), Q(3)}, Q(50), s.T);
-  return s;
-}
+LoopSpec two_masses(const Q& g) { return scene_loop(kTwoMasses, {{"g", g}}); }
 }  // namespace
 
 TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
@@ -61,14 +83,7 @@ TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
       if (!(B * T < 2 * m)) continue;
       const Q K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
       // the wall K' + B (z-1)/(Tz) with K' = p: affine in p (the damper's part rides along unscaled)
-      const stability::LoopAt at = [&](const Q& p) {
-        LoopSpec s;
-        s.T = T;
-        s.devices = {mass_damper("d", m, Q(0))};
-        s.environment = StateSpace<Q>{MatQ::Zero(1, 1), MatQ::Identity(1, 1), MatQ::Constant(1, 1, -B / T),
-                                      MatQ::Constant(1, 1, p + B / T), T};
-        return s;
-      };
+      const stability::LoopAt at = [&](const Q& p) { return scene_loop(kPureMass, {{"m", m}, {"B", B}, {"K", p}}); };
       const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 16);
       ASSERT_EQ(r.outcome, Outcome::holds) << r.note;
       EXPECT_EQ(r.status, Status::certified);
@@ -104,7 +119,8 @@ TEST(LoopMax, RefusesWhatItCannotModel) {
   // the environment's pole moves with p: the closed loop is not affine in p
   const stability::LoopAt pole = [](const Q& p) {
     LoopSpec s = two_masses(Q(1));
-    s.environment->A = MatQ::Identity(2, 2) * (p / (p + 1));
+    const long ne = s.environment->A.rows();
+    s.environment->A = MatQ::Identity(ne, ne) * (p / (p + 1));
     return s;
   };
   try {
