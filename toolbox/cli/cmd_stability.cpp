@@ -33,6 +33,7 @@
 #include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
+#include "hapstab/stability/loop_max.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 #include "hapstab/stability/scene_loop.hpp"
 
@@ -216,6 +217,80 @@ int run_scene(const StabilityOpts& o) {
   return *v.stable ? cli::exit_ok : cli::exit_property_fails;
 }
 
+// --scene --max NAME beyond one DOF (or with a [coupling]): the closed-loop matrix, affine in NAME
+// (stability/loop_max.hpp).
+nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o, const scene::Scene& sc) {
+  nlohmann::json j;
+  j["name"] = o.max_name;
+  const bool found = m.outcome == Outcome::holds;
+  j["status"] = found ? to_string(m.status) : "undecided";
+  j["path"] = "closed_loop_matrix";
+  j["states"] = m.states;
+  j["fixed_modes"] = m.fixed_modes;
+  j["note"] = m.note;
+  j["digits"] = o.digits;
+  j["precision_bits"] = m.precision_bits;
+  if (!found) {
+    j["max"] = nullptr;
+    return j;
+  }
+  const SharedDecimal d = shared_decimal(m.sup.lo, m.sup.hi, o.digits);
+  j["max"] = d.text;
+  j["max_digits"] = d.digits;
+  j["enclosure"] = enclosure_json(m.crossing, o.digits + 3);
+  j["sup_enclosure"] = enclosure_json(m.sup, 17);
+  j["stable_on"] = enclosure_json({m.stable_from, m.stable_to}, 17);
+  j["gap"] = m.gap;
+  j["stable_at"] = to_decimal(*m.stable_at, 17);
+  j["unstable_at"] = to_decimal(*m.unstable_at, 17);
+  nlohmann::json c{{"at", m.where}, {"theta", enclosure_json(m.theta, 17)}, {"omega", enclosure_json({m.theta.lo / m.T, m.theta.hi / m.T}, 17)}};
+  nlohmann::json mode = nlohmann::json::object();
+  size_t k = 0;
+  for (const auto& dev : sc.loop.devices)
+    for (Eigen::Index i = 0; i < dev.dofs() && k < m.mode.size(); ++i, ++k)
+      mode[dev.dofs() == 1 ? dev.name : dev.name + "[" + std::to_string(i) + "]"] = m.mode[k];
+  c["mode"] = mode;
+  j["crossing"] = c;
+  j["cover_intervals"] = m.cover_intervals;
+  return j;
+}
+
+int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
+  scene::check_command(sc.root, o.scene, "stability");
+  const std::map<std::string, rational> params = cli::parse_sets(o.sets);
+  const auto it = sc.parameters.find(o.max_name);
+  if (it == sc.parameters.end())
+    throw InputError("--max " + o.max_name + ": the scene has no parameter " + o.max_name + " ([parameters])");
+  const rational reference = it->second > 0 ? it->second : rational(1);
+  const stability::LoopAt at = [&](const rational& p) {
+    std::map<std::string, rational> q = params;
+    q[o.max_name] = p;
+    return scene::load_scene(o.scene, q).loop;
+  };
+  const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
+  if (m.outcome == Outcome::fails) {  // a mode no parameter moves is not inside: unstable for every value
+    if (o.json) cli::print_json({{"name", o.max_name}, {"max", "0"}, {"status", "exact"}, {"path", "closed_loop_matrix"}, {"note", m.note}});
+    else std::cout << "sup " << o.max_name << " = 0   [exact]\n  " << m.note << "\n";
+    return cli::exit_property_fails;
+  }
+  const nlohmann::json j = loop_max_json(m, o, sc);
+  if (o.json) cli::print_json(j);
+  else if (m.outcome != Outcome::holds) std::cout << "sup " << o.max_name << ": undecided\n  " << m.note << "\n";
+  else {
+    std::cout << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
+              << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
+              << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
+              << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
+              << "  stable for every " << o.max_name << " in [" << j["stable_on"][0].get<std::string>() << ", "
+              << j["stable_on"][1].get<std::string>() << "] (certified), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
+              << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
+              << " rad/s; mode |x| per DOF:";
+    for (auto& [dof, a] : j["crossing"]["mode"].items()) std::cout << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
+    std::cout << "\n  " << m.note << "\n";
+  }
+  return m.outcome == Outcome::holds ? cli::exit_ok : cli::exit_numerical;
+}
+
 const cli::Register reg(
     {"stability",
      "Schur stability of the sampled haptic loop (device P(s), ZOH, wall H(z), delay); --max NAME: the largest stable gain",
@@ -234,13 +309,25 @@ const cli::Register reg(
        return [o]() -> int {
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
          if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
-           const auto hidden = sim::hidden_modes(scene::load_scene(o->scene, cli::parse_sets(o->sets)).loop);
+           const auto sc = [&] {
+             try {
+               return scene::load_scene(o->scene, cli::parse_sets(o->sets));
+             } catch (const InputError& e) {
+               throw InputError(std::string("--scene: ") + e.what());
+             }
+           }();
+           const auto hidden = sim::hidden_modes(sc.loop);
            if (!hidden.stable()) {
              const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
              if (o->json) cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}});
              else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
              return cli::exit_property_fails;
            }
+           // beyond one DOF, or with a [coupling]: the closed-loop matrix (stability/loop_max.hpp)
+           if (!(o->plant.empty() && o->H.empty() && o->op.empty() && o->T.empty() && o->delay == 0))
+             throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
+           if (sc.loop.dofs() != 1 || sc.loop.devices.size() != 1 || sc.loop.operators.size() > 1 || sc.loop.coupling)
+             return run_loop_max(*o, sc);
          }
          const stability::Loop loop = make_loop(*o);
          return o->max_name.empty() ? run_decide(*o, loop) : run_max(*o, loop);

@@ -272,6 +272,11 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
     if (t->contains("method")) c.fail(key + ".method", "only for domain = \"s\"");
     G = c.block(*t, key, 'z');
   }
+  if (t->contains("gain")) {  // g E: the outputs scaled, the realisation's states as they are
+    const Q g = c.number(*t, "gain", key);
+    G.C *= g;
+    G.D *= g;
+  }
   if (G.inputs() != c.N || G.outputs() != c.N)
     c.fail(key, "incompatible dimensions: must be " + std::to_string(c.N) + "x" + std::to_string(c.N) +
                     " (one row and column per DOF), got " + std::to_string(G.outputs()) + "x" +

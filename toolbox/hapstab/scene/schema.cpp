@@ -83,7 +83,9 @@ std::vector<Key> discrete_keys() {
   return {k("tf", T::tf, "", "a SISO string or an N x N matrix of strings, in z (or in s with domain = \"s\")"),
           sub("ss", "ss", kSs),
           k("domain", T::text, "", "\"z\" (default) or \"s\": a continuous model discretised exactly"),
-          k("method", T::text, "", "(domain = \"s\") \"backward_euler\" (s = (z-1)/(Tz)) or \"tustin\"; s-improper is fine")};
+          k("method", T::text, "", "(domain = \"s\") \"backward_euler\" (s = (z-1)/(Tz)) or \"tustin\"; s-improper is fine"),
+          k("gain", T::exact, "", "a scale g of the block (default 1): g times its outputs (C and D), its states unchanged; "
+                                  "a parameter here is one `stability --max` can maximise")};
 }
 
 Section environment_section() {

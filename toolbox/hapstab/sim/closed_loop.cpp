@@ -185,6 +185,13 @@ SampledClosedLoop sampled_closed_loop(const LoopSpec& spec) {
       M.set_block(ns + nc + j * N, ns + nc + (j - 1) * N, BallMatrix::exact(Eigen::MatrixXd(Eigen::MatrixXd::Identity(N, N))));
   }
   out.M = M;
+  out.A = A;
+  out.Bu = Bu;
+  out.Ku = Ku;
+  out.Kx = Kx;
+  out.n = n;
+  out.f = f;
+  out.T = T;
   out.jump = MatQ::Zero(nx, N);
   out.jump.topRows(ns) = ks.controllable.B.rightCols(N);
   out.positions = MatQ::Zero(N, nx);

@@ -55,6 +55,12 @@ struct SampledClosedLoop {
   long conserved = 0;
   bool removed_unstable = false;
   std::string removed;
+  /// The exact data M is assembled from, for an enclosure at another precision or of a family
+  /// M(p) (stability/loop_max.hpp): the reduced plant (A, B_u), the controller's rows
+  /// u_k = Ku [s; xi], xi+ = Kx [s; xi], and the delay t_d = n T + f.
+  MatQ A, Bu, Ku, Kx;
+  long n = 0;
+  rational f = 0, T = 0;
 };
 
 /// What in the loop is not linear time-invariant ("" when nothing): contact, encoders, Coulomb

@@ -1,0 +1,1007 @@
+// The supremum of a parameter of the loop as written, any number of DOF (see loop_max.hpp).
+#include "hapstab/stability/loop_max.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+#if HAPSTAB_FLINT3
+#include <flint/acb_mat.h>
+#else
+#include <acb_mat.h>
+#endif
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <functional>
+#include <memory>
+#include <sstream>
+
+#include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/ball_matrix.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/lti/realization.hpp"
+#include "hapstab/poly/stability.hpp"
+#include "hapstab/sim/closed_loop.hpp"
+#include "hapstab/stability/loop_as_written.hpp"
+
+namespace hapstab::stability {
+
+namespace {
+
+using flint::Ball;
+using flint::BallMat;
+
+bool equal(const MatQ& a, const MatQ& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      if (a(i, j) != b(i, j)) return false;
+  return true;
+}
+
+std::string num(double x, int digits = 6) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << x;
+  return o.str();
+}
+
+void load(BallMat& out, const MatQ& A, long prec) {
+  flint::QMat q = flint::to_qmat(A);
+  arb_mat_set_fmpq_mat(out.get(), q.get(), prec);
+}
+
+// dst[r0.., c0..] := src (or += when add)
+void put(BallMat& dst, long r0, long c0, const BallMat& src, bool add, long prec) {
+  for (long i = 0; i < src.rows(); ++i)
+    for (long j = 0; j < src.cols(); ++j) {
+      arb_struct* d = dst.at(r0 + i, c0 + j);
+      const arb_struct* s = arb_mat_entry(src.get(), i, j);
+      if (add) arb_add(d, d, s, prec);
+      else arb_set(d, s);
+    }
+}
+
+// The plant over the period at `prec` bits (sim/closed_loop.hpp): Phi_T, and the input matrices of
+// u_{k-n} (Gn) and, with a fractional delay, of u_{k-n-1} (Go). Van Loan: exp([[A, B], [0, 0]] h).
+struct ArbZoh {
+  std::unique_ptr<BallMat> Phi, Gn, Go;
+};
+void van_loan(BallMat& Phi, BallMat& G, const MatQ& A, const MatQ& B, const rational& h, long prec) {
+  const long ns = static_cast<long>(A.rows()), m = static_cast<long>(B.cols());
+  MatQ V = MatQ::Zero(ns + m, ns + m);
+  V.topLeftCorner(ns, ns) = A * h;
+  V.topRightCorner(ns, m) = B * h;
+  BallMat X(ns + m, ns + m), E(ns + m, ns + m);
+  load(X, V, prec);
+  arb_mat_exp(E.get(), X.get(), prec);
+  for (long i = 0; i < ns; ++i) {
+    for (long j = 0; j < ns; ++j) arb_set(Phi.at(i, j), E.at(i, j));
+    for (long j = 0; j < m; ++j) arb_set(G.at(i, j), E.at(i, ns + j));
+  }
+}
+ArbZoh plant_zoh(const LoopFamily& F, long prec) {
+  const long ns = static_cast<long>(F.A.rows()), N = F.N;
+  ArbZoh z{std::make_unique<BallMat>(ns, ns), std::make_unique<BallMat>(ns, N), std::make_unique<BallMat>(ns, N)};
+  BallMat G(ns, N);
+  van_loan(*z.Phi, G, F.A, F.Bu, F.T, prec);
+  if (F.f > 0) {
+    BallMat Pf(ns, ns), Gf(ns, N), Pr(ns, ns);
+    van_loan(Pf, Gf, F.A, F.Bu, F.f, prec);
+    van_loan(Pr, *z.Gn, F.A, F.Bu, F.T - F.f, prec);
+    arb_mat_mul(z.Go->get(), Pr.get(), Gf.get(), prec);
+  } else {
+    arb_mat_set(z.Gn->get(), G.get());
+  }
+  return z;
+}
+
+long slots(const LoopFamily& F) { return F.n + (F.f > 0 ? 1 : 0); }
+long order(const LoopFamily& F) { return static_cast<long>(F.A.rows() + F.Kx0.rows()) + slots(F) * F.N; }
+
+// M of sim/closed_loop.cpp with the controller rows (Ku, Kx); `constant` false leaves out what does
+// not depend on them (Phi, the delayed inputs' blocks, the buffer's shift): M1 from (dKu, dKx).
+void assemble(BallMat& M, const LoopFamily& F, const ArbZoh& z, const MatQ& Ku, const MatQ& Kx, bool constant, long prec) {
+  const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(Kx.rows()), N = F.N, n = F.n;
+  const long nb = slots(F) * N;
+  arb_mat_zero(M.get());
+  BallMat Kub(N, ns + nc), Kxb(nc, ns + nc);
+  load(Kub, Ku, prec);
+  load(Kxb, Kx, prec);
+  if (constant) put(M, 0, 0, *z.Phi, false, prec);
+  if (n == 0) {
+    BallMat GK(ns, ns + nc);
+    arb_mat_mul(GK.get(), z.Gn->get(), Kub.get(), prec);
+    put(M, 0, 0, GK, true, prec);
+  } else if (constant) {
+    put(M, 0, ns + nc + (n - 1) * N, *z.Gn, false, prec);
+  }
+  if (F.f > 0 && constant) put(M, 0, ns + nc + n * N, *z.Go, false, prec);
+  put(M, ns, 0, Kxb, false, prec);
+  if (nb > 0) {
+    put(M, ns + nc, 0, Kub, false, prec);
+    if (constant)
+      for (long j = N; j < nb; ++j) arb_one(M.at(ns + nc + j, ns + nc + j - N));
+  }
+}
+
+// M0 and M1 at `prec` bits.
+struct ArbFamily {
+  std::unique_ptr<BallMat> M0, M1;
+};
+ArbFamily arb_family(const LoopFamily& F, long prec) {
+  const long nx = order(F);
+  ArbFamily a{std::make_unique<BallMat>(nx, nx), std::make_unique<BallMat>(nx, nx)};
+  const ArbZoh z = plant_zoh(F, prec);
+  assemble(*a.M0, F, z, F.Ku0, F.Kx0, true, prec);
+  assemble(*a.M1, F, z, F.dKu, F.dKx, false, prec);
+  return a;
+}
+
+Eigen::MatrixXd mid(const BallMat& B) {
+  Eigen::MatrixXd m(B.rows(), B.cols());
+  for (long i = 0; i < B.rows(); ++i)
+    for (long j = 0; j < B.cols(); ++j) m(i, j) = arf_get_d(arb_midref(arb_mat_entry(B.get(), i, j)), ARF_RND_NEAR);
+  return m;
+}
+
+// ---- step 2: the Krawczyk operator of the crossing system (loop_max.hpp) ----
+struct CrossingSystem {
+  const BallMat& M0;
+  const BallMat& M1;
+  bool complex;          // unknowns (a, b, p, theta); else (a, p) with z = sigma
+  double sigma = 1;      // z = +-1 (real case)
+  Eigen::VectorXd cr, ci;  // the normalising vector c
+  long n() const { return M0.rows(); }
+  long size() const { return complex ? 2 * n() + 2 : n() + 1; }
+};
+
+// F(x) and, when J != nullptr, its Jacobian, for every point of the ball vector x (m x 1).
+void evaluate(const CrossingSystem& S, const BallMat& x, BallMat& Fv, BallMat* J, long prec) {
+  const long n = S.n(), m = S.size();
+  const long ip = S.complex ? 2 * n : n;
+  BallMat Mp(n, n), a(n, 1), b(n, 1), Ma(n, 1), Mb(n, 1), M1a(n, 1), M1b(n, 1);
+  arb_mat_scalar_mul_arb(Mp.get(), S.M1.get(), arb_mat_entry(x.get(), ip, 0), prec);
+  arb_mat_add(Mp.get(), Mp.get(), S.M0.get(), prec);
+  for (long i = 0; i < n; ++i) {
+    arb_set(a.at(i, 0), arb_mat_entry(x.get(), i, 0));
+    if (S.complex) arb_set(b.at(i, 0), arb_mat_entry(x.get(), n + i, 0));
+  }
+  arb_mat_mul(Ma.get(), Mp.get(), a.get(), prec);
+  arb_mat_mul(M1a.get(), S.M1.get(), a.get(), prec);
+  Ball c, s, t;
+  if (S.complex) {
+    arb_mat_mul(Mb.get(), Mp.get(), b.get(), prec);
+    arb_mat_mul(M1b.get(), S.M1.get(), b.get(), prec);
+    arb_sin_cos(s.get(), c.get(), arb_mat_entry(x.get(), ip + 1, 0), prec);
+  } else {
+    arb_set_d(c.get(), S.sigma);
+  }
+  arb_mat_zero(Fv.get());
+  for (long i = 0; i < n; ++i) {
+    arb_struct* f1 = Fv.at(i, 0);
+    arb_mul(t.get(), c.get(), a.at(i, 0), prec);
+    arb_sub(f1, Ma.at(i, 0), t.get(), prec);
+    if (S.complex) {
+      arb_addmul(f1, s.get(), b.at(i, 0), prec);
+      arb_struct* f2 = Fv.at(n + i, 0);
+      arb_mul(t.get(), c.get(), b.at(i, 0), prec);
+      arb_sub(f2, Mb.at(i, 0), t.get(), prec);
+      arb_submul(f2, s.get(), a.at(i, 0), prec);
+    }
+  }
+  // the normalisation rows
+  arb_struct* g1 = Fv.at(ip, 0);
+  for (long i = 0; i < n; ++i) {
+    arb_set_d(t.get(), S.cr(i));
+    arb_addmul(g1, t.get(), a.at(i, 0), prec);
+    if (S.complex) {
+      arb_struct* g2 = Fv.at(ip + 1, 0);
+      arb_set_d(t.get(), S.ci(i));
+      arb_addmul(g1, t.get(), b.at(i, 0), prec);
+      arb_submul(g2, t.get(), a.at(i, 0), prec);
+      arb_set_d(t.get(), S.cr(i));
+      arb_addmul(g2, t.get(), b.at(i, 0), prec);
+    }
+  }
+  arb_sub_ui(g1, g1, 1, prec);
+  if (!J) return;
+  arb_mat_zero(J->get());
+  for (long i = 0; i < n; ++i) {
+    for (long j = 0; j < n; ++j) {
+      arb_set(J->at(i, j), Mp.at(i, j));
+      if (S.complex) arb_set(J->at(n + i, n + j), Mp.at(i, j));
+    }
+    arb_sub(J->at(i, i), J->at(i, i), c.get(), prec);
+    arb_set(J->at(i, ip), M1a.at(i, 0));
+    if (S.complex) {
+      arb_sub(J->at(n + i, n + i), J->at(n + i, n + i), c.get(), prec);
+      arb_set(J->at(i, n + i), s.get());
+      arb_neg(J->at(n + i, i), s.get());
+      arb_set(J->at(n + i, ip), M1b.at(i, 0));
+      // d/dtheta: s a + c b and s b - c a
+      arb_mul(J->at(i, ip + 1), s.get(), a.at(i, 0), prec);
+      arb_addmul(J->at(i, ip + 1), c.get(), b.at(i, 0), prec);
+      arb_mul(J->at(n + i, ip + 1), s.get(), b.at(i, 0), prec);
+      arb_submul(J->at(n + i, ip + 1), c.get(), a.at(i, 0), prec);
+    }
+    arb_set_d(J->at(ip, i), S.cr(i));
+    if (S.complex) {
+      arb_set_d(J->at(ip, n + i), S.ci(i));
+      arb_set_d(J->at(ip + 1, i), -S.ci(i));
+      arb_set_d(J->at(ip + 1, n + i), S.cr(i));
+    }
+  }
+  (void)m;
+}
+
+struct Enclosed {
+  bool ok = false;
+  Enclosure<rational> p{0, 0}, theta{0, 0};
+  double rel_width = 0;
+  std::string why;
+};
+
+// Newton at `prec` from x (midpoints), then the Krawczyk test on a box around the result.
+Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
+  const long m = S.size(), n = S.n();
+  const long ip = S.complex ? 2 * n : n;
+  BallMat Fv(m, 1), J(m, m), d(m, 1);
+  for (int it = 0; it < 60; ++it) {
+    arb_mat_get_mid(x.get(), x.get());
+    evaluate(S, x, Fv, &J, prec);
+    if (!arb_mat_approx_solve(d.get(), J.get(), Fv.get(), prec)) return {false, {0, 0}, {0, 0}, 0, "the crossing system is singular"};
+    arb_mat_sub(x.get(), x.get(), d.get(), prec);
+    arb_mat_get_mid(x.get(), x.get());
+    // converged: the step is at the working precision's noise
+    bool small = true;
+    for (long i = 0; i < m && small; ++i) {
+      const double di = std::fabs(arf_get_d(arb_midref(d.at(i, 0)), ARF_RND_UP));
+      const double xi = std::fabs(arf_get_d(arb_midref(x.at(i, 0)), ARF_RND_UP));
+      small = di <= std::ldexp(1.0 + xi, static_cast<int>(-prec + 24)) || di == 0;
+    }
+    if (small && it > 1) break;
+  }
+  // Y ~ J(x~)^-1 (exact midpoints), r from Y F(x~)
+  evaluate(S, x, Fv, &J, prec);
+  BallMat Y(m, m), YF(m, 1);
+  if (!arb_mat_approx_inv(Y.get(), J.get(), prec)) return {false, {0, 0}, {0, 0}, 0, "the Jacobian of the crossing system is singular"};
+  arb_mat_get_mid(Y.get(), Y.get());
+  arb_mat_mul(YF.get(), Y.get(), Fv.get(), prec);
+  std::vector<double> r(static_cast<size_t>(m));
+  for (long i = 0; i < m; ++i) {
+    const double yi = mag_get_d(arb_radref(YF.at(i, 0))) + std::fabs(arf_get_d(arb_midref(YF.at(i, 0)), ARF_RND_UP));
+    const double xi = std::fabs(arf_get_d(arb_midref(x.at(i, 0)), ARF_RND_UP));
+    r[static_cast<size_t>(i)] = 4 * yi + std::ldexp(1.0 + xi, static_cast<int>(-prec + 16));
+  }
+  BallMat X(m, 1), JX(m, m), I(m, m), D(m, 1), K(m, 1);
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    for (long i = 0; i < m; ++i) {
+      arb_set(X.at(i, 0), x.at(i, 0));
+      mag_set_d(arb_radref(X.at(i, 0)), r[static_cast<size_t>(i)]);
+    }
+    // K(X) = x~ - Y F(x~) + (I - Y J(X)) (X - x~)
+    evaluate(S, X, D, &JX, prec);
+    arb_mat_mul(JX.get(), Y.get(), JX.get(), prec);
+    arb_mat_one(I.get());
+    arb_mat_sub(I.get(), I.get(), JX.get(), prec);
+    arb_mat_sub(D.get(), X.get(), x.get(), prec);
+    arb_mat_mul(K.get(), I.get(), D.get(), prec);
+    arb_mat_add(K.get(), K.get(), x.get(), prec);
+    arb_mat_sub(K.get(), K.get(), YF.get(), prec);
+    bool inside = true;
+    for (long i = 0; i < m && inside; ++i) inside = arb_contains_interior(X.at(i, 0), K.at(i, 0));
+    if (inside) {
+      Enclosed e;
+      e.ok = true;
+      e.p = Ball(K.at(ip, 0)).bounds();
+      if (S.complex) e.theta = Ball(K.at(ip + 1, 0)).bounds();
+      const double pm = std::fabs(arf_get_d(arb_midref(K.at(ip, 0)), ARF_RND_NEAR));
+      e.rel_width = 2 * mag_get_d(arb_radref(K.at(ip, 0))) / pm;
+      return e;
+    }
+    for (double& ri : r) ri *= 16;
+  }
+  return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
+}
+
+// ---- step 3: eigenvalue enclosures over intervals of p (Rump's test in Arb) ----
+struct AcbMat {
+  acb_mat_t m;
+  AcbMat(long r, long c) { acb_mat_init(m, r, c); }
+  ~AcbMat() { acb_mat_clear(m); }
+  AcbMat(const AcbMat&) = delete;
+  AcbMat& operator=(const AcbMat&) = delete;
+};
+struct AcbVec {
+  acb_ptr v;
+  long n;
+  explicit AcbVec(long k) : v(_acb_vec_init(k)), n(k) {}
+  ~AcbVec() { _acb_vec_clear(v, n); }
+  AcbVec(const AcbVec&) = delete;
+  AcbVec& operator=(const AcbVec&) = delete;
+};
+
+// A := M0 + [lo, hi] M1 (complex balls holding every matrix of the family on [lo, hi])
+void family_ball(AcbMat& A, const BallMat& M0, const BallMat& M1, const rational& lo, const rational& hi, long prec) {
+  flint::BallPrecision bp(prec);
+  const Ball k = Ball::hull(lo, hi);
+  BallMat B(M0.rows(), M0.cols());
+  arb_mat_scalar_mul_arb(B.get(), M1.get(), k.get(), prec);
+  arb_mat_add(B.get(), B.get(), M0.get(), prec);
+  acb_mat_set_arb_mat(A.m, B.get());
+}
+
+// Disjoint enclosures E of the n eigenvalues of every matrix in the ball A (each ball holds exactly
+// one, simple; Arb's arithmetic is inclusion-isotone, so the test run on the ball proves it for each
+// matrix the ball holds), and with L, R: L = R^-1, L A R = diag(E). false: not isolated.
+bool spectrum(AcbVec& E, AcbMat* L, AcbMat* R, const AcbMat& A, long prec) {
+  const long n = acb_mat_nrows(A.m);
+  AcbMat Am(n, n), Ra(n, n);
+  AcbVec Ea(n);
+  acb_mat_get_mid(Am.m, A.m);
+  if (prec <= 64) {  // the approximation in double (Rump's test proves what it encloses either way)
+    Eigen::MatrixXd m(n, n);
+    for (long i = 0; i < n; ++i)
+      for (long j = 0; j < n; ++j) m(i, j) = arf_get_d(arb_midref(acb_realref(acb_mat_entry(Am.m, i, j))), ARF_RND_NEAR);
+    Eigen::EigenSolver<Eigen::MatrixXd> es(m, true);
+    if (es.info() != Eigen::Success) return false;
+    for (long i = 0; i < n; ++i) {
+      acb_set_d_d(Ea.v + i, es.eigenvalues()(i).real(), es.eigenvalues()(i).imag());
+      for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(Ra.m, j, i), es.eigenvectors()(j, i).real(), es.eigenvectors()(j, i).imag());
+    }
+  } else {
+    acb_mat_approx_eig_qr(Ea.v, nullptr, Ra.m, Am.m, nullptr, 0, prec);
+  }
+  return acb_mat_eig_simple_rump(E.v, L ? L->m : nullptr, R ? R->m : nullptr, A.m, Ea.v, Ra.m, prec) != 0;
+}
+
+// |z| < 1 for every point of the ball z
+bool inside_disk(const acb_t z, long prec) {
+  Ball r;
+  acb_abs(r.get(), z, prec);
+  arb_sub_ui(r.get(), r.get(), 1, prec);
+  return arb_is_negative(r.get());
+}
+
+struct Cover {
+  const BallMat& M0;
+  const BallMat& M1;
+  long prec = 128;
+  long checks = 0;
+  // Eigenvalues of M(c) closer to each other than a quarter of their distance to the unit circle
+  // (or than 1e-7) form a cluster (grouped transitively): the 8 operators' modes s^2 + s + 1 of the
+  // 8-DOF contact scene, within 1e-5 of each other and 5e-3 inside. Their eigenvectors are nearly
+  // parallel where two of them collide, and R^-1 then amplifies rounding into B0. A cluster's
+  // columns are replaced by a basis of its invariant subspace (two steps of subspace inverse
+  // iteration at the cluster's centre from its eigenvectors, orthonormalised), turned so that the
+  // cluster's block of R^-1 M1 R is diagonal when that turn is well conditioned. A choice of R
+  // only: the proof (Gershgorin on B0 + t C, B0 = L M(c) R) holds for any invertible R.
+  void cluster_bases(Eigen::MatrixXcd& Rd, const Eigen::VectorXcd& ev, const Eigen::MatrixXd& Mc) const {
+    const long n = Rd.cols();
+    std::vector<long> group(static_cast<size_t>(n));
+    for (long i = 0; i < n; ++i) group[static_cast<size_t>(i)] = i;
+    std::function<long(long)> root = [&](long i) { return group[static_cast<size_t>(i)] == i ? i : root(group[static_cast<size_t>(i)]); };
+    for (long i = 0; i < n; ++i)
+      for (long j = i + 1; j < n; ++j) {
+        const double gap = std::abs(ev(j) - ev(i)), margin = std::min(1 - std::abs(ev(i)), 1 - std::abs(ev(j)));
+        if (gap <= std::max(1e-7 * (1 + std::abs(ev(i))), 0.25 * margin)) group[static_cast<size_t>(root(j))] = root(i);
+      }
+    Eigen::MatrixXcd Cd;  // R^-1 M1 R in double, once a cluster needs it
+    const Eigen::MatrixXcd Mcc = Mc.cast<std::complex<double>>();
+    for (long g = 0; g < n; ++g) {
+      std::vector<long> k;
+      for (long i = 0; i < n; ++i)
+        if (root(i) == g) k.push_back(i);
+      const long q = static_cast<long>(k.size());
+      if (q < 2) continue;
+      std::complex<double> centre = 0;
+      Eigen::MatrixXcd X(n, q);
+      for (long a = 0; a < q; ++a) {
+        centre += ev(k[static_cast<size_t>(a)]) / static_cast<double>(q);
+        X.col(a) = Rd.col(k[static_cast<size_t>(a)]);
+      }
+      Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Mcc - centre * Eigen::MatrixXcd::Identity(n, n));
+      for (int it = 0; it < 2; ++it) {
+        Eigen::HouseholderQR<Eigen::MatrixXcd> qr(X);
+        X = qr.householderQ() * Eigen::MatrixXcd::Identity(n, q);
+        X = lu.solve(X);
+      }
+      Eigen::HouseholderQR<Eigen::MatrixXcd> qr(X);
+      X = qr.householderQ() * Eigen::MatrixXcd::Identity(n, q);
+      if (!X.allFinite()) continue;
+      for (long a = 0; a < q; ++a) Rd.col(k[static_cast<size_t>(a)]) = X.col(a);
+      // turn the cluster so that its block of R^-1 M1 R is diagonal (when well conditioned)
+      Cd = Rd.partialPivLu().solve(mid(M1).cast<std::complex<double>>() * Rd);
+      Eigen::MatrixXcd blk(q, q);
+      for (long a = 0; a < q; ++a)
+        for (long b = 0; b < q; ++b) blk(a, b) = Cd(k[static_cast<size_t>(a)], k[static_cast<size_t>(b)]);
+      Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ce(blk, true);
+      if (ce.info() != Eigen::Success) continue;
+      Eigen::JacobiSVD<Eigen::MatrixXcd> sv(ce.eigenvectors());
+      if (!(sv.singularValues()(q - 1) > 1e-3 * sv.singularValues()(0))) continue;
+      const Eigen::MatrixXcd turned = X * ce.eigenvectors();
+      for (long a = 0; a < q; ++a) Rd.col(k[static_cast<size_t>(a)]) = turned.col(a);
+    }
+  }
+  // h >= 0 such that every M0 + p M1, p between c and c + dir h (dir = +-1), is Schur stable
+  // (certified; 0: none found). R: approximate eigenvectors of M(c) in double, exact as they are;
+  // L: a ball enclosure of R^-1 (at `prec` bits, as everything below). Then for every p, with t = p - c,
+  //   R^-1 M(p) R  in  B0 + t C,   B0 = L M(c) R (nearly diagonal),  C = L M1 R,
+  // a similarity: Gershgorin's discs of D^-1 (B0 + t C) D, D = diag(d) > 0 (any d), hold every
+  // eigenvalue of M(p). Row i: centre B0_ii + t C_ii (|.| convex in t: the larger of its ends),
+  // radius sum_{j != i} (|B0_ij| + h |C_ij|) d_j / d_i. d: the Perron vector of
+  // diag(1/(1 - |B0_ii|)) |C_off| (double; a choice, not part of the proof), which balances the
+  // radii against the margins. All discs inside the unit circle for t in [0, dir h]: h is proven.
+  rational radius(const rational& c, int dir) {
+    ++checks;
+    const long n = M0.rows();
+    AcbMat A(n, n), R(n, n), L(n, n), B0(n, n), C(n, n), M1c(n, n);
+    family_ball(A, M0, M1, c, c, prec);
+    {  // the approximation in double, whatever `prec` (near the crossing the scaling d below makes its
+       // ~1e-16 off-diagonal residue in the crossing rows as small as their margins need)
+      Eigen::MatrixXd m(n, n);
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) m(i, j) = arf_get_d(arb_midref(acb_realref(acb_mat_entry(A.m, i, j))), ARF_RND_NEAR);
+      Eigen::EigenSolver<Eigen::MatrixXd> es(m, true);
+      if (es.info() != Eigen::Success) return 0;
+      Eigen::MatrixXcd Rd = es.eigenvectors();
+      cluster_bases(Rd, es.eigenvalues(), m);
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) acb_set_d_d(acb_mat_entry(R.m, i, j), Rd(i, j).real(), Rd(i, j).imag());
+    }
+    if (!acb_mat_inv(L.m, R.m, prec)) return 0;
+    acb_mat_mul(B0.m, L.m, A.m, prec);
+    acb_mat_mul(B0.m, B0.m, R.m, prec);
+    acb_mat_set_arb_mat(M1c.m, M1.get());
+    acb_mat_mul(C.m, L.m, M1c.m, prec);
+    acb_mat_mul(C.m, C.m, R.m, prec);
+    auto upper = [&](const acb_struct* z) {  // |z|, rounded up, as a double
+      mag_t t;
+      mag_init(t);
+      acb_get_mag(t, z);
+      const double v = mag_get_d(t);
+      mag_clear(t);
+      return v;
+    };
+    auto margin = [&](long i, const Ball& minus) {  // 1 - |B0_ii| - minus, its lower end as a double
+      Ball m;
+      acb_abs(m.get(), acb_mat_entry(B0.m, i, i), prec);
+      arb_add(m.get(), m.get(), minus.get(), prec);
+      arb_sub_ui(m.get(), m.get(), 1, prec);
+      arb_neg(m.get(), m.get());
+      arf_t lo;
+      arf_init(lo);
+      arb_get_lbound_arf(lo, m.get(), prec);
+      const double v = arf_get_d(lo, ARF_RND_DOWN);
+      arf_clear(lo);
+      return v;
+    };
+    Eigen::MatrixXd Bd = Eigen::MatrixXd::Zero(n, n);
+    for (long i = 0; i < n; ++i) {
+      const double mi = margin(i, Ball(0L));
+      if (!(mi > 0)) return 0;
+      for (long j = 0; j < n; ++j)
+        if (j != i) Bd(i, j) = upper(acb_mat_entry(C.m, i, j)) / mi;
+    }
+    auto perron = [&](const Eigen::MatrixXd& P) {
+      Eigen::VectorXd v = Eigen::VectorXd::Ones(n);
+      double rho = 0;
+      for (int it = 0; it < 60; ++it) {
+        Eigen::VectorXd nv = P * v + 1e-12 * v.sum() * Eigen::VectorXd::Ones(n);
+        const double mx = nv.maxCoeff();
+        if (!(mx > 0) || !std::isfinite(mx)) break;
+        rho = mx / v.maxCoeff();
+        v = nv / mx;
+      }
+      if (!(v.minCoeff() > 0) || !v.allFinite()) v = Eigen::VectorXd::Ones(n);
+      return std::make_pair(v, rho);
+    };
+    // first |C_off| alone (h_est = 1/rho: the step it allows), then with B0's own off-diagonal
+    // part (a near-defective cluster's coupling, which a scaling shrinks) at that step
+    const auto [d1, rho1] = perron(Bd);
+    Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(n, n);
+    const double h_est = rho1 > 0 ? 0.5 / rho1 : 0.0;
+    for (long i = 0; i < n; ++i) {
+      const double mi = margin(i, Ball(0L));
+      for (long j = 0; j < n; ++j)
+        if (j != i) Bt(i, j) = upper(acb_mat_entry(B0.m, i, j)) / mi + h_est * Bd(i, j);
+    }
+    const Eigen::VectorXd d = perron(Bt).first;
+    (void)d1;
+    // per row: the scaled radii of B0 and of C (upper bounds, balls)
+    std::vector<Ball> off0(static_cast<size_t>(n)), offC(static_cast<size_t>(n));
+    double h0 = INFINITY;  // the zeroth-order guess: (1 - |B0_ii| - r0_i) / (|C_ii| + rC_i)
+    for (long i = 0; i < n; ++i) {
+      Ball t, dj;
+      for (long j = 0; j < n; ++j) {
+        if (j == i) continue;
+        arb_set_d(dj.get(), d(j));
+        acb_abs(t.get(), acb_mat_entry(B0.m, i, j), prec);
+        arb_addmul(off0[static_cast<size_t>(i)].get(), t.get(), dj.get(), prec);
+        acb_abs(t.get(), acb_mat_entry(C.m, i, j), prec);
+        arb_addmul(offC[static_cast<size_t>(i)].get(), t.get(), dj.get(), prec);
+      }
+      arb_set_d(dj.get(), d(i));
+      arb_div(off0[static_cast<size_t>(i)].get(), off0[static_cast<size_t>(i)].get(), dj.get(), prec);
+      arb_div(offC[static_cast<size_t>(i)].get(), offC[static_cast<size_t>(i)].get(), dj.get(), prec);
+      const double m = margin(i, off0[static_cast<size_t>(i)]);
+      const double r = upper(acb_mat_entry(C.m, i, i)) + arf_get_d(arb_midref(offC[static_cast<size_t>(i)].get()), ARF_RND_UP);
+      if (!(m > 0)) return 0;
+      if (r > 0) h0 = std::min(h0, m / r);
+    }
+    if (!std::isfinite(h0)) return 0;  // the family does not move: not a question for this cover
+    auto holds = [&](double h) {       // every disc inside for t in [0, dir h] (proven in balls)
+      Ball hb(h * dir), ha(h), z, e0;
+      acb_t w;
+      acb_init(w);
+      bool ok = true;
+      for (long i = 0; i < n && ok; ++i) {
+        acb_mul_arb(w, acb_mat_entry(C.m, i, i), hb.get(), prec);
+        acb_add(w, w, acb_mat_entry(B0.m, i, i), prec);
+        acb_abs(z.get(), w, prec);
+        acb_abs(e0.get(), acb_mat_entry(B0.m, i, i), prec);
+        arb_max(z.get(), z.get(), e0.get(), prec);
+        arb_add(z.get(), z.get(), off0[static_cast<size_t>(i)].get(), prec);
+        arb_addmul(z.get(), ha.get(), offC[static_cast<size_t>(i)].get(), prec);
+        arb_sub_ui(z.get(), z.get(), 1, prec);
+        ok = arb_is_negative(z.get());
+      }
+      acb_clear(w);
+      return ok;
+    };
+    double h = 0.5 * h0;
+    if (!holds(h)) return 0;
+    while (holds(2 * h)) h *= 2;
+    for (double f : {1.5, 1.25, 1.125})
+      if (holds(f * h)) {
+        h *= f;
+        break;
+      }
+    return rational(h);
+  }
+  // Where the eigenbasis fails (two eigenvalues colliding: R near singular), a Stein certificate
+  // on the ball matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp's schur_decide: P - M^T P M > 0
+  // for every matrix of the ball): the largest of the widths tried, 0 when none is certified.
+  rational stein(const rational& c, int dir, const rational& scale) {
+    const long n = M0.rows();
+    rational w = scale / 10;
+    for (int k = 2; k <= 6; ++k) {
+      ++checks;
+      w /= 10;  // scale 10^-k
+      const rational a = dir > 0 ? c : c - w, b = dir > 0 ? c + w : c;
+      if (a < 0) continue;
+      flint::BallPrecision bp(128);
+      const Ball k_ = Ball::hull(a, b);
+      BallMat S(n, n);
+      arb_mat_scalar_mul_arb(S.get(), M1.get(), k_.get(), 128);
+      arb_mat_add(S.get(), S.get(), M0.get(), 128);
+      BallMatrix Mb(n, n);
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) {  // double midpoints, the rounding added to the radius (outward)
+          const arb_struct* x = arb_mat_entry(S.get(), i, j);
+          const double m = arf_get_d(arb_midref(x), ARF_RND_NEAR);
+          Ball e;
+          arb_set_d(e.get(), m);
+          arb_sub(e.get(), e.get(), x, 128);
+          mag_t t;
+          mag_init(t);
+          arb_get_mag(t, e.get());
+          Mb.mid(i, j) = m;
+          Mb.rad(i, j) = std::nextafter(mag_get_d(t), INFINITY);
+          mag_clear(t);
+        }
+      const SchurDecision d = schur_decide(Mb);
+      if (d.stable && *d.stable) return w;
+    }
+    return 0;
+  }
+  // The last step, from `to` (stable) to the crossing's enclosure [lo, hi] (certified): on the ball
+  // p in [to, hi] every eigenvalue is either inside the disk or has d|lambda|^2/dp > 0
+  // (dlambda/dp = (L M1 R)_ii), and at p = q (just below the crossing's enclosure) every eigenvalue
+  // is inside: then every |lambda_i(p)| < 1 on [to, q] (the moving ones only grow), so the
+  // supremum lies in [q, hi].
+  bool close(const rational& to, const rational& q, const rational& hi, const BallMat& M0p, const BallMat& M1p, long precp) {
+    ++checks;
+    const long n = M0.rows();
+    AcbMat A(n, n), L(n, n), R(n, n), D(n, n), M1c(n, n);
+    family_ball(A, M0, M1, to, hi, 128);
+    AcbVec E(n);
+    if (!spectrum(E, &L, &R, A, 128)) return false;
+    acb_mat_set_arb_mat(M1c.m, M1.get());
+    acb_mat_mul(D.m, L.m, M1c.m, 128);
+    acb_mat_mul(D.m, D.m, R.m, 128);
+    for (long i = 0; i < n; ++i) {
+      if (inside_disk(E.v + i, 128)) continue;
+      acb_t g;
+      acb_init(g);
+      acb_conj(g, E.v + i);
+      acb_mul(g, g, acb_mat_entry(D.m, i, i), 128);
+      const bool up = arb_is_positive(acb_realref(g));
+      acb_clear(g);
+      if (!up) return false;
+    }
+    // at p = lo, at the enclosure's precision (the moving eigenvalue is within ~ (p* - lo) of the circle)
+    for (long bits = precp; bits <= 4 * precp; bits *= 2) {
+      AcbMat B(n, n);
+      family_ball(B, M0p, M1p, q, q, bits);
+      AcbVec F(n);
+      if (!spectrum(F, nullptr, nullptr, B, bits)) continue;
+      bool all = true;
+      for (long i = 0; i < n && all; ++i) all = inside_disk(F.v + i, bits);
+      if (all) return true;
+    }
+    return false;
+  }
+};
+
+// ---- the modes no p moves, deflated exactly ----
+// A basis (columns) of the kernel of A, exact (reduced row echelon form).
+MatQ kernel(const MatQ& A) {
+  MatQ R = A;
+  const long rows = R.rows(), cols = R.cols();
+  std::vector<long> pivot_col;
+  long r = 0;
+  for (long c = 0; c < cols && r < rows; ++c) {
+    long piv = -1;
+    for (long i = r; i < rows; ++i)
+      if (R(i, c) != 0) {
+        piv = i;
+        break;
+      }
+    if (piv < 0) continue;
+    R.row(r).swap(R.row(piv));
+    const rational inv = 1 / R(r, c);
+    for (long j = 0; j < cols; ++j) R(r, j) *= inv;
+    for (long i = 0; i < rows; ++i)
+      if (i != r && R(i, c) != 0) {
+        const rational f = R(i, c);
+        for (long j = 0; j < cols; ++j) R(i, j) -= f * R(r, j);
+      }
+    pivot_col.push_back(c);
+    ++r;
+  }
+  std::vector<bool> is_pivot(static_cast<size_t>(cols), false);
+  for (long c : pivot_col) is_pivot[static_cast<size_t>(c)] = true;
+  MatQ K = MatQ::Zero(cols, cols - r);
+  long k = 0;
+  for (long f = 0; f < cols; ++f) {
+    if (is_pivot[static_cast<size_t>(f)]) continue;
+    K(f, k) = 1;
+    for (long i = 0; i < r; ++i) K(pivot_col[static_cast<size_t>(i)], k) = -R(i, f);
+    ++k;
+  }
+  return K;
+}
+
+// The controller-state subspace V with Ku(p) V = 0 and Kx(p) V in V for every p (Ku, Kx restricted
+// to the controller's states): the largest such, by V_{j+1} = {v in V_j : X0 v, dX v in V_j}.
+// A mode in V is an eigenvalue of every M(p) (the hidden modes of a block: an environment's
+// unobservable states); the rest of the spectrum is that of M on the quotient.
+MatQ fixed_subspace(const MatQ& Kc0, const MatQ& dKc, const MatQ& X0, const MatQ& dX) {
+  MatQ S(Kc0.rows() + dKc.rows(), Kc0.cols());
+  S << Kc0, dKc;
+  MatQ V = kernel(S);
+  while (V.cols() > 0) {
+    const MatQ P = kernel(MatQ(V.transpose())).transpose();  // rows annihilate span(V)
+    if (P.rows() == 0) break;                                // V is everything
+    MatQ Cn(2 * P.rows(), V.cols());
+    Cn << exact_product(P, exact_product(X0, V)), exact_product(P, exact_product(dX, V));
+    const MatQ a = kernel(Cn);
+    if (a.cols() == V.cols()) break;
+    V = exact_product(V, a);
+  }
+  return V;
+}
+
+}  // namespace
+
+// Removes the controller's fixed modes (fixed_subspace) from F, exactly: with T = [W V]
+// invertible, T^-1 Kx T is block lower triangular and Ku T = [Ku W, 0]; F keeps the W block. The
+// V block must not move with p (else F is left as it is) and is recorded in F.fixed.
+void deflate(LoopFamily& F) {
+  const long ns = F.A.rows(), nc = F.Kx0.rows();
+  if (nc == 0) return;
+  const MatQ X0 = F.Kx0.rightCols(nc), dX = F.dKx.rightCols(nc);
+  const MatQ V = fixed_subspace(F.Ku0.rightCols(nc), F.dKu.rightCols(nc), X0, dX);
+  const long nv = V.cols();
+  if (nv == 0) return;
+  MatQ T(nc, nc);  // [W V]: W the unit vectors that complete V
+  long nw = 0;
+  MatQ basis = V;
+  for (long i = 0; i < nc && nw < nc - nv; ++i) {
+    MatQ trial(nc, basis.cols() + 1);
+    trial << basis, MatQ::Identity(nc, nc).col(i);
+    if (exact_rank(trial) == trial.cols()) {
+      basis = trial;
+      T.col(nw++) = MatQ::Identity(nc, nc).col(i);
+    }
+  }
+  T.rightCols(nv) = V;
+  const MatQ Ti = exact_solve(T, MatQ(MatQ::Identity(nc, nc)), "the fixed-mode basis");
+  const MatQ dXT = exact_product(Ti, exact_product(dX, T));
+  if (!dXT.bottomRightCorner(nv, nv).isZero(0)) return;  // V's own dynamics move with p: keep all
+  F.fixed = exact_product(Ti, exact_product(X0, T)).bottomRightCorner(nv, nv);
+  const long nw0 = nc - nv;
+  const MatQ W = T.leftCols(nw0), TiW = Ti.topRows(nw0);
+  auto rows_u = [&](const MatQ& Ku) {  // [Ku_s, Ku_c W]
+    MatQ r(Ku.rows(), ns + nw0);
+    r << Ku.leftCols(ns), exact_product(MatQ(Ku.rightCols(nc)), W);
+    return r;
+  };
+  auto rows_x = [&](const MatQ& Kx) {  // W rows of T^-1 [Kx_s, Kx_c W]
+    MatQ r(nw0, ns + nw0);
+    r << exact_product(TiW, MatQ(Kx.leftCols(ns))), exact_product(TiW, exact_product(MatQ(Kx.rightCols(nc)), W));
+    return r;
+  };
+  F.Ku0 = rows_u(F.Ku0);
+  F.dKu = rows_u(F.dKu);
+  F.Kx0 = rows_x(F.Kx0);
+  F.dKx = rows_x(F.dKx);
+  MatQ pos(F.positions.rows(), F.positions.cols() - nv);
+  pos << F.positions.leftCols(ns), exact_product(MatQ(F.positions.middleCols(ns, nc)), W), F.positions.rightCols(F.positions.cols() - ns - nc);
+  F.positions = pos;
+}
+
+LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& name) {
+  if (p1 <= 0) throw InputError("--max " + name + ": the reference value must be > 0");
+  auto cl = [&](const rational& p) {
+    const sim::LoopSpec s = at(p);
+    const std::string nl = sim::nonlinear_parts(s);
+    if (!nl.empty())
+      throw InputError("--max " + name + ": the loop has " + nl +
+                       ", which the closed-loop matrix does not model (`hapstab simulate` runs it)");
+    return sim::sampled_closed_loop(s);
+  };
+  const rational p2 = p1 * 2;
+  const sim::SampledClosedLoop c1 = cl(p1), c2 = cl(p2);
+  auto same_plant = [&](const sim::SampledClosedLoop& c) {
+    return equal(c.A, c1.A) && equal(c.Bu, c1.Bu) && c.n == c1.n && c.f == c1.f && c.T == c1.T && c.Kx.rows() == c1.Kx.rows() &&
+           c.removed == c1.removed;
+  };
+  const std::string only = "--max " + name + ": only a parameter of [environment] or [coupling] that leaves the controller's order "
+                           "unchanged and enters the closed loop affinely (M(p) = M0 + p M1: a gain, `gain = \"" + name +
+                           "\"`, or a stiffness written linearly) can be maximised beyond one DOF";
+  if (!same_plant(c2)) throw InputError(only + "; " + name + " changes the device, the operator, the delay or the controller's order");
+  LoopFamily F;
+  F.A = c1.A;
+  F.Bu = c1.Bu;
+  F.n = c1.n;
+  F.f = c1.f;
+  F.T = c1.T;
+  F.N = c1.Ku.rows();
+  F.positions = c1.positions;
+  F.dKu = (c2.Ku - c1.Ku) / p1;
+  F.dKx = (c2.Kx - c1.Kx) / p1;
+  F.Ku0 = c1.Ku - F.dKu * p1;
+  F.Kx0 = c1.Kx - F.dKx * p1;
+  if (F.dKu.isZero(0) && F.dKx.isZero(0)) throw InputError("--max " + name + ": the loop does not depend on " + name);
+  for (const rational& p : {p1 / 3, p1 * 7 / 2}) {
+    const sim::SampledClosedLoop c = cl(p);
+    if (!same_plant(c) || !equal(c.Ku, MatQ(F.Ku0 + F.dKu * p)) || !equal(c.Kx, MatQ(F.Kx0 + F.dKx * p)))
+      throw InputError(only + "; the closed loop is not affine in " + name + " (checked exactly at " + name + " = " + p.str() + ")");
+  }
+  deflate(F);
+  return F;
+}
+
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits) {
+  if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60] for a multi-DOF --max, got " + std::to_string(digits));
+  const LoopFamily F = loop_family(at, reference, name);
+  LoopMax out;
+  out.T = F.T;
+  out.states = order(F);
+  out.fixed_modes = F.fixed.rows();
+  if (F.fixed.rows() > 0 && !schur_stable(charpoly(F.fixed))) {
+    out.outcome = Outcome::fails;
+    out.status = Status::exact;
+    out.note = "NOT stable for any " + name + " [exact]: " + std::to_string(F.fixed.rows()) +
+               " mode(s) of the controller that no " + name + " moves (a block's hidden modes) are not all inside the unit circle";
+    return out;
+  }
+  const ArbFamily base = arb_family(F, 128);
+  const Eigen::MatrixXd M0d = mid(*base.M0), M1d = mid(*base.M1);
+  auto rho = [&](double p) {
+    Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + p * M1d, false);
+    return es.eigenvalues().cwiseAbs().maxCoeff();
+  };
+  // step 1: isolation on a geometric grid, then bisection (numeric)
+  const double ref = static_cast<double>(reference);
+  const int G = 300;
+  auto grid = [&](int k) { return ref * std::pow(10.0, -6.0 + 12.0 * k / G); };
+  int ks = -1, ku = -1;
+  for (int k = 0; k <= G; ++k) {
+    const double r = rho(grid(k));
+    if (ks < 0 && r < 1 - 1e-12) ks = k;
+    if (ks >= 0 && r >= 1) {
+      ku = k;
+      break;
+    }
+  }
+  if (ks < 0) {
+    out.note = "no " + name + " in [" + num(grid(0)) + ", " + num(grid(G)) + "] with every eigenvalue of M inside the unit disk "
+               "(numeric scan of the spectral radius): no stable interval to maximise over";
+    return out;
+  }
+  if (ku < 0) {
+    out.note = "the spectral radius stays below 1 from " + name + " = " + num(grid(ks)) + " up to " + num(grid(G)) +
+               " (numeric scan): no crossing found, so no supremum is certified";
+    return out;
+  }
+  double lo = grid(ku - 1), hi = grid(ku);
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+    const double c = 0.5 * (lo + hi);
+    (rho(c) < 1 ? lo : hi) = c;
+  }
+  const double pstar = 0.5 * (lo + hi);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + pstar * M1d, true);
+  Eigen::Index imax = 0;
+  es.eigenvalues().cwiseAbs().maxCoeff(&imax);
+  std::complex<double> lambda = es.eigenvalues()(imax);
+  Eigen::VectorXcd v = es.eigenvectors().col(imax);
+  if (lambda.imag() < 0) {
+    lambda = std::conj(lambda);
+    v = v.conjugate();
+  }
+  const bool complex = std::fabs(lambda.imag()) > 1e-7 * std::abs(lambda);
+  const Eigen::VectorXcd c = v / v.squaredNorm();  // c^H v = 1
+  {  // the mode: |position| per DOF
+    Eigen::MatrixXd P(F.positions.rows(), F.positions.cols());
+    for (Eigen::Index i = 0; i < P.rows(); ++i)
+      for (Eigen::Index j = 0; j < P.cols(); ++j) P(i, j) = static_cast<double>(F.positions(i, j));
+    const Eigen::VectorXd amp = (P * v).cwiseAbs();
+    const double mx = amp.maxCoeff();
+    for (Eigen::Index i = 0; i < amp.size(); ++i) out.mode.push_back(mx > 0 ? amp(i) / mx : 0.0);
+  }
+  out.where = complex ? "complex pair" : (lambda.real() > 0 ? "z = 1" : "z = -1");
+  // step 2: the enclosure, precision raised until it is narrow enough
+  Enclosed e;
+  const double target = std::pow(10.0, -digits);
+  ArbFamily fine;  // M0, M1 at the enclosure's precision (128 bits: base)
+  for (long prec = 128; prec <= 4096; prec *= 2) {
+    fine = prec == 128 ? ArbFamily{} : arb_family(F, prec);
+    const BallMat& M0 = prec == 128 ? *base.M0 : *fine.M0;
+    const BallMat& M1 = prec == 128 ? *base.M1 : *fine.M1;
+    CrossingSystem S{M0, M1, complex, complex ? 1.0 : (lambda.real() > 0 ? 1.0 : -1.0), c.real(), c.imag()};
+    const long n = S.n(), m = S.size();
+    BallMat x(m, 1);
+    for (long i = 0; i < n; ++i) {
+      arb_set_d(x.at(i, 0), v(i).real());
+      if (complex) arb_set_d(x.at(n + i, 0), v(i).imag());
+    }
+    arb_set_d(x.at(complex ? 2 * n : n, 0), pstar);
+    if (complex) arb_set_d(x.at(2 * n + 1, 0), std::arg(lambda));
+    e = krawczyk(S, x, prec);
+    out.precision_bits = prec;
+    if (e.ok && e.rel_width <= target) break;
+  }
+  if (!e.ok || e.rel_width > target) {
+    out.note = "the crossing near " + name + " = " + num(pstar, 17) + " (numeric) could not be enclosed to 10^-" +
+               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + num(e.rel_width, 3) : e.why);
+    return out;
+  }
+  out.crossing = e.p;
+  if (complex) out.theta = e.theta;
+  else if (lambda.real() < 0) {  // theta = pi, enclosed
+    flint::BallPrecision bp(out.precision_bits);
+    out.theta = Ball::pi().bounds();
+  }
+  const BallMat& M0p = out.precision_bits == 128 ? *base.M0 : *fine.M0;
+  const BallMat& M1p = out.precision_bits == 128 ? *base.M1 : *fine.M1;
+  // step 3: the cover below the crossing (certified), from a point of the stable run up to the
+  // crossing (each interval's width adapted to what Rump's test accepts; the last step closes on
+  // the crossing's enclosure by monotonicity), then down towards 0
+  Cover cov{*base.M0, *base.M1};
+  const rational top = e.p.lo;
+  const double topd = static_cast<double>(top);
+  double p0d = 0.5 * topd;
+  if (rho(p0d) >= 1) p0d = grid(ku - 1) < topd ? grid(ku - 1) : grid(ks);
+  const rational p0 = rational(p0d);
+  rational up = p0, down = p0;
+  bool closed = false;
+  // up: from p0 each step covers [up - h, up + h] and moves to up + h; near the crossing h is a
+  // fixed fraction of what is left, so the walk approaches it geometrically
+  rational tried = top;  // the distance left at the last attempt to close (each retry after it shrank 4x)
+  const rational enough = top * rational(std::pow(10.0, -digits - 1));  // sup enclosed as narrowly as the crossing
+  while (cov.checks < 2000 && top - up > enough) {
+    cov.prec = top - up > top / 100000000 ? 64 : 128;
+    if ((top - up) <= top / 1000000000 && (top - up) * 4 <= tried) {
+      tried = top - up;
+      if (cov.close(up, top - enough, e.p.hi, M0p, M1p, out.precision_bits)) {
+        closed = true;
+        break;
+      }
+    }
+    rational h = cov.radius(up, 1);
+    if (h <= 0) h = cov.stein(up, 1, top - up);
+    if (h <= 0 || up + h >= top) break;
+    up += h;
+  }
+  // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
+  const rational floor = top / 1000000;
+  cov.prec = 64;
+  for (const long budget = cov.checks + 30; cov.checks < budget && down > 0;) {
+    rational h = cov.radius(down, -1);
+    if (h <= 0) h = cov.stein(down, -1, down);
+    if (h <= 0) break;
+    down = h >= down ? rational(0) : down - h;
+    if (down < floor && down > 0) break;
+  }
+  out.cover_intervals = cov.checks;
+  if (up <= p0 && !closed) {
+    out.note = "the crossing at " + name + " in [" + num(static_cast<double>(e.p.lo), 17) + ", " + num(static_cast<double>(e.p.hi), 17) +
+               "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
+               "to each other for Rump's test)";
+    return out;
+  }
+  out.stable_from = down;
+  out.stable_to = closed ? top - enough : up;
+  out.sup = {out.stable_to, e.p.hi};
+  out.gap = static_cast<double>((top - out.stable_to) / top);
+  if (!closed && top - up > enough) {  // the walk stopped short: the supremum is only bracketed
+    std::ostringstream o;
+    o.precision(17);
+    o << "the crossing at " << name << " in [" << static_cast<double>(e.p.lo) << ", " << static_cast<double>(e.p.hi)
+      << "] is certified and every " << name << " in [" << static_cast<double>(out.stable_from) << ", "
+      << static_cast<double>(out.stable_to) << "] is proven stable (" << cov.checks << " steps), but the walk stopped "
+      << out.gap << " (relative) short of the crossing: the supremum lies in [" << static_cast<double>(out.stable_to)
+      << ", " << static_cast<double>(e.p.hi) << "], not enclosed to 10^-" << digits;
+    out.note = o.str();
+    return out;
+  }
+  // step 4: the decider of `stability --scene` (an independent certificate) just below and above
+  for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
+    const rational pb = top * (1 - eps);
+    if (pb < out.stable_from) break;
+    const LoopVerdict below = decide_loop(at(pb));
+    if (below.stable && *below.stable) {
+      out.stable_at = pb;
+      break;
+    }
+    if (below.stable && !*below.stable) {
+      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + num(static_cast<double>(pb), 17) +
+                 ", inside the interval the cover certified stable: " + below.why;
+      return out;
+    }
+  }
+  if (!out.stable_at) {
+    out.note = "decide_loop could not confirm stability just below the crossing";
+    return out;
+  }
+  for (const rational& eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
+    const rational pa = e.p.hi * (1 + eps);
+    const LoopVerdict above = decide_loop(at(pa));
+    if (above.stable && !*above.stable) {
+      out.unstable_at = pa;
+      break;
+    }
+    if (above.stable && *above.stable) {
+      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + num(static_cast<double>(pa), 17) +
+                 "): the crossing is a touch, not an exit";
+      return out;
+    }
+  }
+  if (!out.unstable_at) {
+    out.note = "decide_loop could not decide the loop just above the crossing";
+    return out;
+  }
+  out.outcome = Outcome::holds;
+  out.status = Status::certified;
+  std::ostringstream o;
+  o.precision(6);
+  o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
+    << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
+    << " in [" << static_cast<double>(out.stable_from) << ", " << static_cast<double>(out.stable_to) << "] is stable ("
+    << cov.checks << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
+  if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
+  o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
+  if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
+  else
+    o << "The supremum lies in [" << static_cast<double>(out.stable_to) << ", crossing]: the crossing is it unless an eigenvalue "
+      << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered";
+  if (out.stable_from > 0) o << "; below " << static_cast<double>(out.stable_from) << " not examined";
+  out.note = o.str();
+  return out;
+}
+
+}  // namespace hapstab::stability
