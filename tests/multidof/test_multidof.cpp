@@ -14,6 +14,7 @@
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/multidof/planner.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -534,6 +535,79 @@ TEST(MultidofAnalysis, StructuredKypPathAgreesWithGenericSdp) {
     // for the certified point; 1e-4 relative (+1e-9 absolute, the positive floor) covers both
     EXPECT_NEAR(kyp.Q_V_min_norm, gen.Q_V_min_norm, 1e-4 * gen.Q_V_min_norm + 1e-6) << c.what;
   }
+}
+
+// ---- issue 40: the planner's hand-over (planner.hpp) ----
+// A structured path whose point fails the one exact re-check must hand over to the generic SDP,
+// and the verdict must say so and stay correct. The planner takes its candidate paths, so the
+// test gives it the structured path with its points spoiled (P11 := -P11: P > 0 fails exactly)
+// -- no hook in the production code.
+TEST(MultidofPlanner, SpoiledStructuredPointHandsOverToGenericSdp) {
+  const Problem pb = contact_problem(3, 1, Q(1), {}, q("1.37"));
+  lmi::Options o;
+  o.backend = lmi::Backend::ipm;
+  SolvePath spoiled = kyp_riccati_path(false);
+  const auto honest_search = spoiled.search;
+  int spoiled_points = 0;
+  spoiled.search = [&](const PathContext& c) {
+    PathResult r = honest_search(c);
+    for (auto& p : r.points) {
+      p.env.P11 = MatQ(-p.env.P11);
+      ++spoiled_points;
+    }
+    return r;
+  };
+  const auto honest = analyze_with(pb, {kyp_riccati_path(false), generic_sdp_path()}, o);
+  const auto generic = analyze_with(pb, {generic_sdp_path()}, o);
+  const auto r = analyze_with(pb, {spoiled, generic_sdp_path()}, o);
+  ASSERT_GT(spoiled_points, 0) << "the structured path found no point to spoil";
+  // unspoiled, the structured path decides and the generic SDP is not needed
+  EXPECT_EQ(honest.path, "structured KYP/Riccati");
+  ASSERT_EQ(honest.plan.size(), 2u);
+  EXPECT_EQ(honest.plan[1].fate, "not needed");
+  // spoiled: the re-check refuses every point, the generic SDP decides, and the verdict says so
+  EXPECT_EQ(r.path, "generic SDP");
+  ASSERT_EQ(r.plan.size(), 2u);
+  EXPECT_EQ(r.plan[0].path, "structured KYP/Riccati");
+  EXPECT_EQ(r.plan[0].fate, "point failed the exact re-check");
+  EXPECT_EQ(r.plan[0].why, "P > 0 fails exactly");
+  EXPECT_EQ(r.plan[1].fate, "decided");
+  EXPECT_NE(r.verdict.evidence.find("before it, the structured KYP/Riccati path: point failed the exact re-check "
+                                    "(P > 0 fails exactly); the generic SDP path decided"),
+            std::string::npos)
+      << r.verdict.evidence;
+  // ... and it is the generic SDP's verdict, point for point (the same deterministic solve)
+  EXPECT_TRUE(r.verdict.holds() && r.verdict.proven()) << r.verdict.evidence;
+  EXPECT_EQ(r.verdict.outcome, generic.verdict.outcome);
+  EXPECT_EQ(r.verdict.status, generic.verdict.status);
+  EXPECT_EQ(r.Q_V, generic.Q_V);
+  EXPECT_EQ(r.gamma, generic.gamma);
+  EXPECT_TRUE(honest.verdict.holds() && honest.verdict.proven());
+}
+
+// The planner's premises are recorded: a path whose premise fails is skipped with the reason, and
+// a generic SDP beyond its size limit is refused by that limit when no cheaper path decides.
+TEST(MultidofPlanner, SkippedPathsAreRecordedWithTheirPremise) {
+  Problem pb = contact_problem(3, 1, Q(1), {}, q("1.37"));
+  pb.qv_block_diagonal = true;  // Remark 3: the structured path's constructed Q_V is not block diagonal
+  lmi::Options o;
+  o.backend = lmi::Backend::ipm;
+  const auto r = analyze(pb, o, AnalysisMode::stability_only);
+  ASSERT_EQ(r.plan.size(), 2u);
+  EXPECT_EQ(r.plan[0].fate, "skipped");
+  EXPECT_NE(r.plan[0].why.find("block diagonal"), std::string::npos) << r.plan[0].why;
+  EXPECT_EQ(r.path, "generic SDP");
+  EXPECT_TRUE(r.verdict.holds() && r.verdict.proven()) << r.verdict.evidence;
+  // a path list with only a failing premise and no other path: an honest undecided naming it
+  SolvePath never{"never", [](const PathContext&) { return Premises::unmet("premise under test"); },
+                  [](const PathContext&) { return PathResult{}; }};
+  const auto u = analyze_with(pb, {never}, o);
+  EXPECT_FALSE(u.verdict.decided());
+  EXPECT_NE(u.verdict.evidence.find("premise under test"), std::string::npos) << u.verdict.evidence;
+  // the same premise as a size limit: refused by name (InputError, exit 2)
+  SolvePath too_big{"too big", [](const PathContext&) { return Premises::unmet("size limit under test", true); },
+                    [](const PathContext&) { return PathResult{}; }};
+  EXPECT_THROW(analyze_with(pb, {too_big}, o), InputError);
 }
 
 // ---- issue 33: Theorem 6 block by block (DesignPath::blockwise) ----

@@ -65,6 +65,13 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
 // fails = infeasible (lmi::feasibility_of maps back); status exact when an exact certificate
 // passed (feasible: the rounded point re-checked in rational arithmetic on the original data,
 // with a positive margin; infeasible: Farkas or the facial conditions), numeric otherwise.
+/// One path's fate in the planner (planner.hpp): which path, and what became of it.
+struct PlanStep {
+  std::string path;  ///< "structured KYP/Riccati", "generic SDP"
+  std::string fate;  ///< "decided", "skipped", "no point", "point failed the exact re-check", "not needed"
+  std::string why;   ///< the premise that failed, the re-check's failure, ... ("" when decided)
+};
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -81,6 +88,8 @@ struct AnalysisResult {
   double Q_V_min_norm = 0;
   std::vector<double> gamma_sqrt_min;
   std::string solver_detail;
+  std::string path;              ///< the path that decided (planner.hpp), "" when none ran
+  std::vector<PlanStep> plan;    ///< every path's fate, in the planner's order
   double seconds = 0;      ///< wall time of analyze()
   double sdp_seconds = 0;  ///< ... of it in lmi::solve (the rest: Ê, facial reduction, exact checks)
 };
