@@ -72,9 +72,6 @@ SolvePath kyp_riccati_path(bool backend_premise) {
       return Premises::unmet("Q_V is to be block diagonal (Remark 3): the constructed Q_V = Q_E + Q_E^2/eps + eps I is not");
     if (backend_premise && c.opt.backend != lmi::Backend::automatic)
       return Premises::unmet("an SDP back-end was chosen (--backend): that is the generic SDP");
-    if (backend_premise && c.pb.structure.m() < kKypMinDof)
-      return Premises::unmet("fewer than " + std::to_string(kKypMinDof) + " DOF (the structured path is tried from " +
-                             std::to_string(kKypMinDof) + " DOF on)");
     std::string why;
     if (!pinned_x(c.pb, c.split, c.facial, &why)) return Premises::unmet(why);
     return Premises::met();

@@ -94,7 +94,8 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
 
 /// The paths, each in its own file: the structured KYP/Riccati path (path_kyp.cpp;
 /// `backend_premise`: in automatic planning a chosen SDP back-end is the user's choice of the
-/// generic path) and the generic SDP (path_generic.cpp).
+/// generic path; no premise on the number of DOF: the path is chosen by cost) and the generic
+/// SDP (path_generic.cpp).
 SolvePath kyp_riccati_path(bool backend_premise);
 SolvePath generic_sdp_path();
 

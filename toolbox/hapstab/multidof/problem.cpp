@@ -84,8 +84,8 @@ std::string detail::generic_size_exceeded(const Problem& pb, long extra_unknowns
   o << what << " for an environment realisation of order " << n
     << " (with any [delay] folded in) has about " << v << " scalar unknowns: its Schur complement would need "
     << bytes / 1e9 << " GB, more than the limit of " << limits::generic_sdp_bytes / 1e9
-    << " GB. The structured path (X pinned to one direction by the facial conditions, from " << kKypMinDof
-    << " DOF) avoids it; a shorter [delay] or a smaller environment fits";
+    << " GB. The structured KYP/Riccati path (tried first whenever the facial conditions pin X to one direction)"
+       " avoids it; a shorter [delay] or a smaller environment fits";
   return o.str();
 }
 
