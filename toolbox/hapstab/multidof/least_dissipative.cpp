@@ -83,6 +83,18 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   if (!(width > 0)) return std::nullopt;
   const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
+  // The frequency side of the KYP lemma brackets the least t at once: t > lambda_max(G^-1/2 Phi(z)
+  // G^-1/2) on the whole circle (lmi/kyp.hpp: a sweep costs O(n^2 m) per frequency where a DARE
+  // costs O(n^3) per doubling step). The sweep's maximum is a lower bound; a DARE solve just above
+  // it confirms the upper end, and the bisection then needs a few steps, not ~25 (issue 39 item 5:
+  // a delay of 200 samples took a minute of DARE solves here).
+  const double f = lmi::kyp_frequency_bound(px.kyp, gi);
+  if (f > lo && f < hi) {
+    lo = f;
+    const double up = std::min(hi, f + 1e-6 * width);
+    ++solves;
+    if (lmi::kyp_riccati_point(data(up), 1e-9 * width).found) hi = up;
+  }
   while (hi - lo > 1e-7 * width && solves < 60) {
     const double mid = 0.5 * (lo + hi);
     ++solves;

@@ -20,10 +20,10 @@ using namespace detail;
 std::vector<SolvePath> default_paths(AnalysisPath path) {
   switch (path) {
     case AnalysisPath::generic_sdp: return {generic_sdp_path()};
-    case AnalysisPath::kyp_riccati: return {kyp_riccati_path(false), generic_sdp_path()};
+    case AnalysisPath::kyp_riccati: return {kyp_riccati_path(false), frequency_witness_path(), generic_sdp_path()};
     case AnalysisPath::automatic: break;
   }
-  return {kyp_riccati_path(true), generic_sdp_path()};
+  return {kyp_riccati_path(true), frequency_witness_path(), generic_sdp_path()};
 }
 
 namespace {
@@ -54,7 +54,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
   std::optional<PathResult> fallback;      // the last path that ran with a verdict of its own
   std::string fallback_why;                // ... and its re-check's failure
   std::optional<Pinned> pinned;            // the structure the deciding path used
-  std::vector<PlanStep> earlier;           // paths that ran and did not decide
+  std::vector<PlanStep> earlier;           // paths whose points failed the exact re-check
   for (const SolvePath& path : paths) {
     if (!res.path.empty()) {
       res.plan.push_back({path.name, "not needed", "the " + res.path + " path decided"});
@@ -94,7 +94,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
     }
     if (!res.path.empty()) continue;
     PlanStep step{path.name, tried ? "point failed the exact re-check" : "no point", why};
-    earlier.push_back(step);
+    if (tried) earlier.push_back(step);  // the verdict names a point that failed (issue 40)
     res.plan.push_back(step);
     if (r.unchecked) {
       fallback = std::move(r);

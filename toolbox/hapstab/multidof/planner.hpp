@@ -18,7 +18,8 @@
 // the problem by that limit (InputError, exit 2).
 //
 // The default paths, cheapest first (analysis.hpp, AnalysisPath): the structured KYP/Riccati
-// path (path_kyp.cpp), then the generic SDP (path_generic.cpp). The least dissipative coupling
+// path (path_kyp.cpp), the frequency-domain witness of infeasibility (path_witness.cpp), then the
+// generic SDP (path_generic.cpp). The least dissipative coupling
 // (least_dissipative.cpp) is planned the same way after a feasible verdict. Tests give the
 // planner their own paths (e.g. a path whose point is spoiled, to drive the hand-over).
 //
@@ -98,5 +99,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
 /// SDP (path_generic.cpp).
 SolvePath kyp_riccati_path(bool backend_premise);
 SolvePath generic_sdp_path();
+/// Certified infeasibility by a frequency-domain witness (path_witness.cpp; premise: X pinned).
+SolvePath frequency_witness_path();
 
 }  // namespace hapstab::multidof
