@@ -3,6 +3,7 @@
 
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 
 using namespace hapstab;
 
@@ -63,4 +64,36 @@ TEST(Realization, MinrealRemovesUnobservableState) {
   auto m = minreal(s);
   EXPECT_EQ(m.states(), 1);
   EXPECT_TRUE(same(ss2tf(m)(0, 0), ss2tf(s)(0, 0)));
+}
+
+// charpoly at large order with few distinct eigenvalues goes through the minimal polynomial and
+// exact nullities (lti/realization.cpp): against the known product, exactly. A = V J V^-1 with J
+// block diagonal: the rotation-scaling block of q(x) = x^2 - x + 1/2 repeated, a rational
+// eigenvalue 1/3 in a Jordan block of size 2 (minpoly has (x - 1/3)^2) and plain 1/3's, and
+// V unimodular (integer, det 1) so A is dense.
+TEST(Realization, CharpolyOfLargeOrderWithRepeatedFactors) {
+  for (const int copies : {30, 40}) {
+    const int n = 2 * copies + 2 + 3;
+    MatQ J = MatQ::Zero(n, n);
+    for (int k = 0; k < copies; ++k) {
+      J(2 * k, 2 * k) = rational(1, 2), J(2 * k, 2 * k + 1) = rational(-1, 2);
+      J(2 * k + 1, 2 * k) = rational(1, 2), J(2 * k + 1, 2 * k + 1) = rational(1, 2);
+    }
+    const int b = 2 * copies;
+    for (int i = b; i < n; ++i) J(i, i) = rational(1, 3);
+    J(b, b + 1) = 1;  // the Jordan block
+    MatQ V = MatQ::Identity(n, n), W = MatQ::Identity(n, n);  // V = U, W = U^-1 for U = I + N, N nilpotent
+    for (int i = 0; i + 1 < n; ++i) V(i, i + 1) = (i % 3) - 1;
+    // (I + N)^-1 = sum (-N)^k
+    MatQ Nm = V - MatQ::Identity(n, n), P = MatQ::Identity(n, n);
+    for (int k = 1; k < n; ++k) {
+      P = exact_product(P, MatQ(-Nm));
+      W += P;
+    }
+    ASSERT_EQ(exact_product(V, W), MatQ(MatQ::Identity(n, n)));
+    const MatQ A = exact_product(exact_product(V, J), W);
+    const Polynomial<rational> q(std::vector<rational>{rational(1, 2), rational(-1), rational(1)});
+    const Polynomial<rational> l(std::vector<rational>{rational(-1, 3), rational(1)});
+    EXPECT_EQ(charpoly(A), q.pow(static_cast<unsigned>(copies)) * l.pow(5)) << "copies " << copies;
+  }
 }

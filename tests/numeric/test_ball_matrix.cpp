@@ -131,6 +131,42 @@ TEST(BallMatrix, LargeOrderIsDecided) {
   }
 }
 
+TEST(BallMatrix, PositiveDefiniteIsNeverWrongNearSingular) {
+  // S = L D L^T exactly (rationals), L unit lower triangular, D diagonal with one entry +-eps:
+  // the inertia is D's (Sylvester), so S is PD iff every D_ii > 0 -- known exactly, whatever
+  // rounding S's entries go through (BallMatrix::exact keeps it as radius). positive_definite
+  // (the double-bound Cholesky first, the Arb congruence second) must never say PD for an
+  // indefinite S; it must decide the PD cases whose eps is far above n u ||S|| (1e-6 at
+  // ||S|| ~ 10, orders up to 120: ~1e6 times the double path's slack).
+  std::mt19937_64 g(11);
+  std::uniform_int_distribution<int> e(-4, 4), pick(0, 1);
+  const std::vector<rational> eps = {rational(1, 1000000), rational(1, 10000000000LL), rational(1, 100000000000000LL)};
+  int decided_far = 0, far = 0, pd_said = 0;
+  for (int c = 0; c < 60; ++c) {
+    const int n = c < 40 ? 4 + c : 120;
+    MatQ L = MatQ::Identity(n, n), D = MatQ::Zero(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < i; ++j) L(i, j) = rational(e(g), 8 * n);
+    for (int i = 0; i < n; ++i) D(i, i) = rational(1 + (i % 5), 2);
+    const rational ep = eps[static_cast<size_t>(c % 3)];
+    const bool pd = pick(g) == 1;
+    D(n / 2, n / 2) = pd ? ep : rational(-ep);
+    const MatQ S = exact_product(exact_product(L, D), MatQ(L.transpose()));
+    const bool said = positive_definite(BallMatrix::exact(S));
+    if (!pd) {
+      EXPECT_FALSE(said) << "case " << c << ": an indefinite matrix called positive definite";
+    } else {
+      pd_said += said;
+      if (ep == eps[0]) {
+        ++far;
+        decided_far += said;
+      }
+    }
+  }
+  EXPECT_EQ(decided_far, far);
+  EXPECT_GT(pd_said, 0);
+}
+
 TEST(BallMatrix, BadInput) {
   EXPECT_THROW(schur_decide(BallMatrix(2, 3)), InputError);
   EXPECT_THROW(BallMatrix(2, 3) * BallMatrix(2, 3), InputError);

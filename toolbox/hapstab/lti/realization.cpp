@@ -5,6 +5,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/poly/flint_poly.hpp"
+#include "hapstab/poly/roots.hpp"
 
 namespace hapstab {
 
@@ -68,17 +69,66 @@ StateSpace<Q> tf2ss(const TransferMatrix& G) {
   return {A, B, C, D, G.T};
 }
 
-Polynomial<Q> charpoly(const MQ& A) {
-  // FLINT's fmpq_mat_charpoly (fraction-free over the common denominator): an order-40 matrix in
-  // milliseconds, where Faddeev-LeVerrier in rationals took seconds.
+namespace {
+Polynomial<Q> flint_charpoly(const MQ& A) {
   const long n = static_cast<long>(A.rows());
-  if (n == 0) return Polynomial<Q>(Q(1));
   flint::QMat M(n, n);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) flint::set(M.at(i, j), A(i, j));
   flint::FmpqPoly p;
   fmpq_mat_charpoly(p.get(), M.get());
   return flint::from_flint(p);
+}
+
+// f(A) by Horner, exactly.
+MQ evaluate(const Polynomial<Q>& f, const MQ& A) {
+  const Eigen::Index n = A.rows();
+  MQ R = MQ::Identity(n, n) * f.coeff(f.degree());
+  for (int k = f.degree() - 1; k >= 0; --k) {
+    R = exact_product(R, A);
+    R.diagonal().array() += f.coeff(k);
+  }
+  return R;
+}
+}  // namespace
+
+Polynomial<Q> charpoly(const MQ& A) {
+  // FLINT's fmpq_mat_charpoly (fraction-free over the common denominator): an order-40 matrix in
+  // milliseconds, where Faddeev-LeVerrier in rationals took seconds. A large matrix with few
+  // distinct eigenvalues (the hidden part of a transfer-matrix realisation: one quadratic to the
+  // power 127 at order 254) goes through its minimal polynomial instead (FLINT, multimodular):
+  // m = prod f_k^{e_k} over Q, the algebraic multiplicity of f_k is nullity(f_k(A)^{e_k}) / deg f_k
+  // (exact rank), the last one by the degree count, and det(xI - A) = prod f_k^{mult_k}. The
+  // charpoly of the whole is what costs there (degree 254, coefficients of hundreds of digits).
+  const long n = static_cast<long>(A.rows());
+  if (n == 0) return Polynomial<Q>(Q(1));
+  if (n <= 48) return flint_charpoly(A);
+  flint::QMat M(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) flint::set(M.at(i, j), A(i, j));
+  flint::FmpqPoly mp;
+  fmpq_mat_minpoly(mp.get(), M.get());
+  const Polynomial<Q> m = flint::from_flint(mp);
+  if (m.degree() == n) return m;
+  const std::vector<IrreducibleFactor> factors = factor_over_q(m);
+  if (factors.size() > 4) return flint_charpoly(A);  // many nullities cost more than the charpoly
+  Polynomial<Q> p(Q(1));
+  long left = n;
+  for (size_t k = 0; k < factors.size(); ++k) {
+    const Polynomial<Q> f = factors[k].f.monic();
+    const long d = f.degree();
+    long mult = left / d;
+    if (k + 1 < factors.size()) {
+      const MQ F = evaluate(f.pow(static_cast<unsigned>(factors[k].multiplicity)), A);
+      const long nullity = n - exact_rank(F);
+      if (nullity % d != 0) throw NumericalError("charpoly: a nullity that is not a multiple of its factor's degree");
+      mult = nullity / d;
+    }
+    left -= mult * d;
+    p = p * f.pow(static_cast<unsigned>(mult));
+  }
+  if (left != 0) throw NumericalError("charpoly: the multiplicities do not add up to the order");
+  return p;
 }
 
 TransferMatrix ss2tf(const StateSpace<Q>& sys) {
@@ -194,18 +244,14 @@ KalmanSplit controllable_split(const StateSpace<Q>& sys) {
 
 HiddenModes hidden_modes(const StateSpace<Q>& sys) {
   sys.validate("hidden_modes");
-  const StateSpace<Q> c = controllable_part(sys);
+  // the Kalman forms are block triangular: the hidden factors are the charpolys of the blocks the
+  // splits remove (the uncontrollable block; the uncontrollable block of the dual of the rest)
+  const KalmanSplit c = split(sys);
+  const KalmanSplit o = split(dual(c.controllable));
   HiddenModes h;
-  h.minimal = dual(controllable_part(dual(c)));
-  // det(xI - A) over det(xI - A_c): exact division (the Kalman form is block triangular)
-  auto quotient = [](const MQ& big, const MQ& small) {
-    if (big.rows() == small.rows()) return Polynomial<Q>(Q(1));
-    const auto [q, r] = divmod(charpoly(big), charpoly(small));
-    if (!r.is_zero()) throw NumericalError("hidden_modes: the characteristic polynomials do not divide");
-    return q.monic();
-  };
-  h.uncontrollable = quotient(sys.A, c.A);
-  h.unobservable = quotient(c.A, h.minimal.A);
+  h.minimal = dual(o.controllable);
+  h.uncontrollable = charpoly(c.uncontrollable_A).monic();
+  h.unobservable = charpoly(o.uncontrollable_A).monic();
   return h;
 }
 

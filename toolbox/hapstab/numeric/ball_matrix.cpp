@@ -4,6 +4,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <sstream>
 
 #include "hapstab/numeric/error.hpp"
@@ -67,30 +69,113 @@ void congruence(flint::BallMat& Y, const BallMatrix& S, const Eigen::MatrixXd& X
 
 // Stein equation P - M^T P M = I for a real M by the complex Schur form M = U T U^*:
 // X - T^* X T = I with X = U^* P U, column by column (T^* is lower triangular):
-//   (I - T_jj T^*) X(:, j) = e_j + T^* sum_{l < j} X(:, l) T_lj.
-// false when a pivot 1 - T_jj conj(T_ii) vanishes (eigenvalues on the circle or a reciprocal pair).
-bool stein(const Eigen::MatrixXd& M, Eigen::MatrixXd& P) {
+//   (I - T_jj T^*) X(:, j) = e_j + T^* sum_{l < j} X(:, l) T_lj,
+// solved by forward substitution without forming the matrix (row i of T^* is column i of T,
+// conjugated: contiguous). O(n^3) in all, ~2 n^3 complex flops. The eigenvalues of M (T's
+// diagonal) are returned as well. false when a pivot 1 - T_jj conj(T_ii) vanishes (eigenvalues on
+// the circle or a reciprocal pair).
+bool stein(const Eigen::MatrixXd& M, Eigen::MatrixXd& P, Eigen::VectorXcd& eigenvalues) {
   const Eigen::Index n = M.rows();
   Eigen::ComplexSchur<Eigen::MatrixXd> cs(M);
   if (cs.info() != Eigen::Success) return false;
   const Eigen::MatrixXcd& T = cs.matrixT();
   const Eigen::MatrixXcd& U = cs.matrixU();
-  const Eigen::MatrixXcd Ts = T.adjoint();
+  eigenvalues = T.diagonal();
   Eigen::MatrixXcd X = Eigen::MatrixXcd::Zero(n, n);
+  Eigen::VectorXcd r(n), rhs(n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    Eigen::VectorXcd r = Eigen::VectorXcd::Zero(n);
-    if (j > 0) r = X.leftCols(j) * T.col(j).head(j);
-    Eigen::VectorXcd rhs = Ts.triangularView<Eigen::Lower>() * r;
+    const std::complex<double> tjj = T(j, j);
+    // rhs = e_j + T^* r, r = X(:, 0:j) T(0:j, j); (T^* r)_i = sum_{k <= i} conj(T(k, i)) r_k
+    if (j > 0) {
+      r.noalias() = X.leftCols(j) * T.col(j).head(j);
+      for (Eigen::Index i = 0; i < n; ++i) rhs(i) = T.col(i).head(i + 1).dot(r.head(i + 1));  // dot conjugates T
+    } else {
+      rhs.setZero();
+    }
     rhs(j) += 1.0;
-    Eigen::MatrixXcd L = -T(j, j) * Ts;
-    L.diagonal().array() += 1.0;
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (std::abs(L(i, i)) < 1e-14) return false;
-    X.col(j) = L.triangularView<Eigen::Lower>().solve(rhs);
+    // (I - tjj T^*) x = rhs: x_i = (rhs_i + tjj sum_{k < i} conj(T(k, i)) x_k) / (1 - tjj conj(T(i, i)))
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const std::complex<double> pivot = 1.0 - tjj * std::conj(T(i, i));
+      if (std::abs(pivot) < 1e-14) return false;
+      const std::complex<double> acc = i > 0 ? T.col(i).head(i).dot(X.col(j).head(i)) : std::complex<double>(0);
+      X(i, j) = (rhs(i) + tjj * acc) / pivot;
+    }
   }
   const Eigen::MatrixXcd Pc = U * X * U.adjoint();
   P = 0.5 * (Pc.real() + Pc.real().transpose());
   return P.allFinite();
+}
+
+// ---- certified bounds in double arithmetic (round to nearest, no rounding-mode switch) ----
+// The a priori error bounds of floating-point linear algebra (Higham, Accuracy and Stability of
+// Numerical Algorithms, 2nd ed.: Thm 3.5 for products, Thm 10.3 for Cholesky), with u = 2^-53
+// and gamma_k = k u / (1 - k u). They hold for any order of summation (blocked, FMA), so Eigen's
+// products may be used. Underflow adds at most k eta per inner product (eta the least subnormal):
+// covered by an absolute term. These make the large decisions (the closed loop of a 128-device
+// scene has order ~900) cost a few double products instead of 128-bit Arb products; where their
+// slack (a factor ~n of the true rounding) is too coarse, the Arb path decides instead.
+constexpr double kU = 0x1p-53;
+constexpr double kEta = std::numeric_limits<double>::denorm_min();
+
+// gamma_k, rounded up with room to spare (the 1.01 covers the rounding of this formula).
+double gamma_up(double k) { return 1.01 * k * kU / (1 - k * kU); }
+
+// A B for ball matrices in double: mid = fl(Am Bm); rad bounds gamma_k |Am||Bm| (the rounding of
+// mid) + |Am| Br + Ar (|Bm| + Br) (the members), each nonnegative product computed in fl being at
+// least (1 - gamma_{k+4}) times its true value: scaling by (1 + 2 gamma_{k+5}) restores an upper
+// bound. Throws NumericalError on overflow.
+BallMatrix product_fp(const BallMatrix& A, const BallMatrix& B) {
+  const double k = static_cast<double>(A.cols());
+  const double g = gamma_up(k + 5);
+  BallMatrix C;
+  C.mid.noalias() = A.mid * B.mid;
+  const Eigen::MatrixXd absA = A.mid.cwiseAbs(), absB = B.mid.cwiseAbs();
+  Eigen::MatrixXd R = absA * absB;
+  R *= g;
+  if (!B.rad.isZero(0)) R.noalias() += absA * B.rad;
+  if (!A.rad.isZero(0)) R.noalias() += A.rad * (absB + B.rad);
+  C.rad = (R * (1 + 2 * g)).array() + (3 * k + 10) * kEta;
+  if (!C.mid.allFinite() || !C.rad.allFinite()) throw NumericalError("ball matrix product (double bounds): overflow");
+  return C;
+}
+
+// A - B: mid = fl(Am - Bm), |fl(x) - x| <= u |fl(x)|.
+BallMatrix difference_fp(const BallMatrix& A, const BallMatrix& B) {
+  BallMatrix C;
+  C.mid = A.mid - B.mid;
+  C.rad = ((A.rad + B.rad + kU * C.mid.cwiseAbs()) * (1 + 4 * kU)).array() + 4 * kEta;
+  return C;
+}
+
+// Every symmetric matrix within S's balls is positive definite, proven in double: with
+// A = fl((Sm + Sm^T)/2) and r >= ||S - A||_2 for every symmetric S in the balls (the symmetric
+// part of the radii, the rounding u|A|, bounded by the largest row sum: ||.||_2 <= ||.||_inf for
+// a symmetric matrix), shift c = r + (gamma_{n+1}/(1 - gamma_{n+1})) tr(A) + u max A_ii (+ an
+// underflow term). If the plain Cholesky of fl(A - c I) runs to completion, R^T R = A - c I + E +
+// dA with |E_ii| <= u |A_ii - c|, ||dA||_2 <= gamma_{n+1} || |R^T||R| ||_2 <= gamma_{n+1} sum_i
+// ||r_i||^2 <= (gamma_{n+1}/(1 - gamma_{n+1})) tr(A - c I) (Thm 10.3 and Cauchy-Schwarz), so
+// lambda_min(A) > r and every S in the balls is positive definite.
+bool positive_definite_fp(const BallMatrix& S) {
+  const Eigen::Index n = S.rows();
+  const double nd = static_cast<double>(n);
+  const Eigen::MatrixXd A = 0.5 * (S.mid + S.mid.transpose());
+  const Eigen::MatrixXd Rs = 0.5 * (S.rad + S.rad.transpose()) + kU * A.cwiseAbs();
+  const double g = gamma_up(nd + 3);
+  const double r = Rs.rowwise().sum().maxCoeff() * (1 + 2 * g);
+  const double trace = A.trace(), dmax = A.diagonal().maxCoeff();
+  if (!(A.diagonal().minCoeff() > 0) || !std::isfinite(trace) || !std::isfinite(r)) return false;
+  const double gn = gamma_up(nd + 1);
+  const double c = (r + (gn / (1 - gn)) * trace * (1 + g) + kU * dmax) * 1.01 + nd * nd * 1e-300;
+  // plain (unblocked) Cholesky A - c I = U^T U, U upper triangular, column by column (contiguous)
+  Eigen::MatrixXd U = A;
+  U.diagonal().array() -= c;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    for (Eigen::Index i = 0; i < j; ++i) U(i, j) = (U(i, j) - U.col(i).head(i).dot(U.col(j).head(i))) / U(i, i);
+    const double d = U(j, j) - U.col(j).head(j).squaredNorm();
+    if (!(d > 0)) return false;
+    U(j, j) = std::sqrt(d);
+  }
+  return true;
 }
 
 std::string num(double x) {
@@ -165,6 +250,7 @@ bool positive_definite(const BallMatrix& S, std::string* why) {
   const long n = static_cast<long>(S.rows());
   if (n == 0) return true;
   check_finite(S, "positive_definite");
+  if (positive_definite_fp(S)) return true;  // the cheap proof first; the Arb congruence where its slack is too coarse
   const Eigen::MatrixXd Sm = 0.5 * (S.mid + S.mid.transpose());
   Eigen::LLT<Eigen::MatrixXd> llt(Sm);
   if (llt.info() != Eigen::Success) {
@@ -215,21 +301,23 @@ SchurDecision schur_decide(const BallMatrix& M) {
     d.why = "no state";
     return d;
   }
-  const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(M.mid, false).eigenvalues();
-  d.spectral_radius = ev.cwiseAbs().maxCoeff();
   Eigen::MatrixXd P;
-  if (!stein(M.mid, P)) {
+  Eigen::VectorXcd ev;
+  const bool solved = stein(M.mid, P, ev);
+  d.spectral_radius = ev.size() ? ev.cwiseAbs().maxCoeff() : Eigen::EigenSolver<Eigen::MatrixXd>(M.mid, false).eigenvalues().cwiseAbs().maxCoeff();
+  if (!solved) {
     d.why = "no Stein certificate: the double solve of P - M^T P M = I failed (an eigenvalue on or within ~1e-14 of the "
             "unit circle, or a pair z, 1/conj(z)); numeric spectral radius " + num(d.spectral_radius);
     return d;
   }
-  // R = P - M^T P M in balls (P exact: the doubles it holds)
+  // R = P - M^T P M in balls (P exact: the doubles it holds), by the double bounds first and in
+  // Arb at 128 bits when those do not prove R > 0
   const BallMatrix Pb = BallMatrix::exact(P);
   BallMatrix Mt;
   Mt.mid = M.mid.transpose();
   Mt.rad = M.rad.transpose();
-  BallMatrix R = Mt * (Pb * M);
-  R.mid = P - R.mid;
+  BallMatrix R = difference_fp(Pb, product_fp(Mt, product_fp(Pb, M)));
+  if (!positive_definite_fp(R)) R = difference_fp(Pb, Mt * (Pb * M));
   std::string why;
   if (!positive_definite(R, &why)) {
     d.why = "no Stein certificate: P - M^T P M is not certainly positive definite in balls (" + why +

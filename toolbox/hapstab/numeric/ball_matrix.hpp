@@ -8,13 +8,18 @@
 // And the certified decisions made on such matrices (the Stein inertia theorem, proven in
 // proofs/schur_lyapunov.cpp):
 //   positive_definite(S):  every symmetric matrix inside the balls of S is positive definite.
-//                          Congruence by an exact upper-triangular X ~ L^-T (L the double Cholesky
+//                          First in double: Cholesky of mid S - c I runs to completion, c
+//                          covering the radii and the rounding of the Cholesky itself (the a
+//                          priori bound of Higham's Thm 10.3; Rump's idea), O(n^3/3). Else:
+//                          congruence by an exact upper-triangular X ~ L^-T (L the double Cholesky
 //                          factor of mid S), then Gershgorin on X^T S X ~ I in balls: O(n^3), and
 //                          robust where ball Cholesky loses its radii (n ~ 500).
 //   schur_decide(M):       stable (every eigenvalue of every matrix in M inside |z| < 1) or not
 //                          stable (an eigenvalue with |z| > 1), certified, or undecided with the
 //                          numeric spectral radius as the margin. A P (exact dyadic, symmetric) is
-//                          solved from P - M^T P M = I in double (complex Schur form, O(n^3)); then
+//                          solved from P - M^T P M = I in double (complex Schur form, O(n^3)),
+//                          P - M^T P M enclosed by double products with a priori rounding
+//                          bounds (Higham Thm 3.5: gamma_n |A||B|), in Arb when those fail; then
 //                            P - M^T P M > 0 in balls   and   P > 0      =>  Schur stable
 //                            P - M^T P M > 0 in balls   and   w^T P w < 0 =>  an eigenvalue |z| > 1
 //                          (if M were Schur stable, P would be the unique solution sum (M^T)^k Q M^k

@@ -93,9 +93,9 @@ void enclose_squarefree(const fmpz_poly_t f, int mult, std::vector<RootEnclosure
 
 }  // namespace
 
-std::vector<RootEnclosure> enclose_roots(const Polynomial<rational>& p) {
-  if (p.is_zero()) throw InputError("enclose_roots: the zero polynomial");
-  std::vector<RootEnclosure> out;
+std::vector<IrreducibleFactor> factor_over_q(const Polynomial<rational>& p) {
+  if (p.is_zero()) throw InputError("factor_over_q: the zero polynomial");
+  std::vector<IrreducibleFactor> out;
   if (p.degree() < 1) return out;
   flint::FmpqPoly P;
   flint::to_flint(p, P);
@@ -105,30 +105,45 @@ std::vector<RootEnclosure> enclose_roots(const Polynomial<rational>& p) {
   fmpz_poly_factor_t fac;  // p = c prod f_k^{e_k}, the f_k irreducible over Z (Zassenhaus)
   fmpz_poly_factor_init(fac);
   fmpz_poly_factor(fac, num);
-  try {
-    for (slong k = 0; k < fac->num; ++k) {
-      const fmpz_poly_struct* f = fac->p + k;
-      const int mult = static_cast<int>(fac->exp[k]);
-      if (fmpz_poly_degree(f) == 1) {  // a rational root -b/a, exactly
-        const rational root = -rational(flint::to_integer(fmpz_poly_get_coeff_ptr(f, 0))) / rational(flint::to_integer(fmpz_poly_get_coeff_ptr(f, 1)));
-        RootEnclosure r;
-        r.re_lo = to_real_down(root);
-        r.re_hi = to_real_up(root);
-        r.abs_lo = root < 0 ? -r.re_hi : r.re_lo;
-        r.abs_hi = root < 0 ? -r.re_lo : r.re_hi;
-        r.multiplicity = mult;
-        out.push_back(r);
-      } else {
-        enclose_squarefree(f, mult, out);
-      }
-    }
-  } catch (...) {
-    fmpz_poly_factor_clear(fac);
-    fmpz_poly_clear(num);
-    throw;
+  for (slong k = 0; k < fac->num; ++k) {
+    const fmpz_poly_struct* f = fac->p + k;
+    std::vector<rational> c(static_cast<size_t>(fmpz_poly_length(f)));
+    for (slong i = 0; i < fmpz_poly_length(f); ++i) c[static_cast<size_t>(i)] = rational(flint::to_integer(fmpz_poly_get_coeff_ptr(f, i)));
+    out.push_back({Polynomial<rational>(std::move(c)), static_cast<int>(fac->exp[k])});
   }
   fmpz_poly_factor_clear(fac);
   fmpz_poly_clear(num);
+  return out;
+}
+
+std::vector<RootEnclosure> enclose_roots(const Polynomial<rational>& p) {
+  if (p.is_zero()) throw InputError("enclose_roots: the zero polynomial");
+  std::vector<RootEnclosure> out;
+  for (const IrreducibleFactor& F : factor_over_q(p)) {
+    if (F.f.degree() == 1) {  // a rational root -b/a, exactly
+      const rational root = -F.f.coeff(0) / F.f.coeff(1);
+      RootEnclosure r;
+      r.re_lo = to_real_down(root);
+      r.re_hi = to_real_up(root);
+      r.abs_lo = root < 0 ? -r.re_hi : r.re_lo;
+      r.abs_hi = root < 0 ? -r.re_lo : r.re_hi;
+      r.multiplicity = F.multiplicity;
+      out.push_back(r);
+    } else {
+      flint::FmpqPoly Q;
+      flint::to_flint(F.f, Q);
+      fmpz_poly_t f;
+      fmpz_poly_init(f);
+      fmpq_poly_get_numerator(f, Q.get());
+      try {
+        enclose_squarefree(f, F.multiplicity, out);
+      } catch (...) {
+        fmpz_poly_clear(f);
+        throw;
+      }
+      fmpz_poly_clear(f);
+    }
+  }
   return out;
 }
 

@@ -30,4 +30,13 @@ struct RootEnclosure {
 /// Arb has not isolated them at 4096 bits (never seen on the degrees hapstab meets).
 std::vector<RootEnclosure> enclose_roots(const Polynomial<rational>& p);
 
+/// p = c prod f_k^{e_k} over Q, each f_k irreducible (primitive, integer coefficients), exactly:
+/// what a caller decides per distinct factor (a degree-126 hidden factor that is one quadratic
+/// to the power 63 is decided as that quadratic).
+struct IrreducibleFactor {
+  Polynomial<rational> f;
+  int multiplicity = 1;
+};
+std::vector<IrreducibleFactor> factor_over_q(const Polynomial<rational>& p);
+
 }  // namespace hapstab

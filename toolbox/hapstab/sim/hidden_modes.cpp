@@ -9,24 +9,28 @@ namespace hapstab::sim {
 
 namespace {
 
-// The roots of one hidden factor, each marked stable or not. The factor's verdict is exact
-// (Schur-Cohn / Routh on the exact polynomial); a root is marked unstable from its enclosure
-// (|z| or Re s not certainly inside), so a factor that is not exactly stable always names at
-// least one root (the enclosures are certified).
+// The roots of one hidden factor, each marked stable or not. The polynomial is factored over Q
+// exactly (poly/roots.hpp) and each distinct irreducible factor is decided exactly (Schur-Cohn /
+// Routh): a factor q^63 of degree 126 costs what q costs. A root is marked unstable when its
+// factor is not exactly stable and its enclosure does not certify it inside (|z| < 1, Re s < 0),
+// so an unstable factor always names at least one root (the enclosures are certified).
 void add_factor(const Polynomial<rational>& p, const std::string& block, const std::string& kind, bool discrete,
                 std::vector<HiddenMode>& out) {
   if (p.degree() < 1) return;
-  const bool stable = discrete ? schur_stable(p) : hurwitz_stable(p);
-  for (const RootEnclosure& r : enclose_roots(p)) {
-    if (r.im_hi < 0) continue;  // the conjugate of a root listed as a pair (p is real)
-    HiddenMode h;
-    h.pair = r.im_lo > 0;
-    h.block = block;
-    h.kind = kind;
-    h.discrete = discrete;
-    h.where = r;
-    h.stable = stable || (discrete ? r.abs_hi < 1 : r.re_hi < 0);
-    out.push_back(h);
+  for (const IrreducibleFactor& F : factor_over_q(p)) {
+    const bool stable = discrete ? schur_stable(F.f) : hurwitz_stable(F.f);
+    for (RootEnclosure& r : enclose_roots(F.f)) {
+      if (r.im_hi < 0) continue;  // the conjugate of a root listed as a pair (p is real)
+      r.multiplicity = F.multiplicity;
+      HiddenMode h;
+      h.pair = r.im_lo > 0;
+      h.block = block;
+      h.kind = kind;
+      h.discrete = discrete;
+      h.where = r;
+      h.stable = stable || (discrete ? r.abs_hi < 1 : r.re_hi < 0);
+      out.push_back(h);
+    }
   }
 }
 
@@ -74,15 +78,17 @@ std::vector<HiddenMode> block_hidden_modes(const HiddenModes& h, bool discrete, 
 
 LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environment) {
   LoopHiddenModes r;
-  auto add = [&](const StateSpace<rational>& s, const std::string& name, const HiddenModes* known = nullptr) {
+  auto add = [&](const StateSpace<rational>& s, const std::string& name, const HiddenModes* known = nullptr,
+                 std::optional<StateSpace<rational>>* minimal = nullptr) {
     if (s.states() == 0) return;
-    for (auto& h : block_hidden_modes(known ? *known : hapstab::hidden_modes(s), s.is_discrete(), name))
-      r.modes.push_back(std::move(h));
+    const HiddenModes h = known ? *known : hapstab::hidden_modes(s);
+    for (auto& m : block_hidden_modes(h, s.is_discrete(), name)) r.modes.push_back(std::move(m));
+    if (minimal && h.any()) *minimal = h.minimal;
   };
   for (const auto& d : spec.devices) add(d.G, "device '" + d.name + "'");
   for (const auto& o : spec.operators) add(o.Z, "operator '" + o.name + "'");
-  if (spec.environment) add(*spec.environment, "environment", environment);
-  if (spec.coupling) add(*spec.coupling, "coupling");
+  if (spec.environment) add(*spec.environment, "environment", environment, &r.environment_minimal);
+  if (spec.coupling) add(*spec.coupling, "coupling", nullptr, &r.coupling_minimal);
   return r;
 }
 

@@ -19,6 +19,7 @@
 // Implements: paper 000 Theorem 5.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,11 @@ struct HiddenMode {
 
 struct LoopHiddenModes {
   std::vector<HiddenMode> modes;  ///< every hidden mode of every block
+  /// The minimal realisations of the discrete blocks that hide modes (nullopt: nothing hidden
+  /// there). The loop as written has the eigenvalues of the loop on these plus the hidden modes
+  /// (Kalman form: block triangular), so with every hidden mode stable both are equally stable:
+  /// stability::decide_loop builds its matrix on them (a tf environment of N DOF can hide ~2N).
+  std::optional<StateSpace<rational>> environment_minimal, coupling_minimal;
   bool stable() const;            ///< no hidden mode outside the stability region
   /// One line: "" when nothing is hidden; the unstable modes when any; else "stable hidden modes: ...".
   std::string summary() const;

@@ -77,7 +77,8 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
 }
 
 // Step 3: the closed-loop matrix.
-LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out) {
+// `reduced`: which blocks were replaced by their minimal realisations ("" when none).
+LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out, const std::string& reduced) {
   const sim::SampledClosedLoop cl = sim::sampled_closed_loop(L);
   out.states = static_cast<long>(cl.M.rows());
   if (cl.removed_unstable) {
@@ -89,7 +90,7 @@ LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out) {
   }
   const std::string dims = "closed-loop matrix M of order " + std::to_string(out.states) + " (" +
                            std::to_string(cl.plant_states) + " plant, " + std::to_string(cl.controller_states) +
-                           " controller, " + std::to_string(cl.buffer_states) + " delay states; realisations as written" +
+                           " controller, " + std::to_string(cl.buffer_states) + " delay states; realisations as written" + reduced +
                            (cl.removed.empty() ? "" : "; " + cl.removed) + ")";
   if (cl.exact && out.states <= kExactOrder) {
     const Polynomial<rational> c = charpoly(*cl.exact);
@@ -172,7 +173,14 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
   }
   if (decider == Decider::automatic && one_dof(spec))
     if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
-  return matrix_test(spec, out);
+  // the discrete blocks' hidden modes are stable: the matrix on their minimal realisations has
+  // the same stability and fewer states (sim/hidden_modes.hpp)
+  sim::LoopSpec L = spec;
+  std::string reduced;
+  if (out.hidden.environment_minimal) L.environment = *out.hidden.environment_minimal, reduced = "the environment's";
+  if (out.hidden.coupling_minimal) L.coupling = *out.hidden.coupling_minimal, reduced += reduced.empty() ? "the coupling's" : " and the coupling's";
+  if (!reduced.empty()) reduced = ", except " + reduced + ", cut to minimal: the loop as written only adds their hidden modes, stable (exact)";
+  return matrix_test(L, out, reduced);
 }
 
 }  // namespace hapstab::stability
