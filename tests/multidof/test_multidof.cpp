@@ -616,30 +616,10 @@ TEST(MultidofPlanner, SkippedPathsAreRecordedWithTheirPremise) {
 
 // ---- issue 39: the scene decomposed before solving (components.hpp) ----
 namespace {
-// The direct sum of two problems: E = blockdiag(E_a, E_b) (exact), operators of a then of b.
-Problem direct_sum(const Problem& a, const Problem& b) {
-  Problem p;
-  const StateSpace<Q>&Ea = a.E, &Eb = b.E;
-  const Eigen::Index na = Ea.states(), nb = Eb.states(), ma = Ea.inputs(), mb = Eb.inputs();
-  p.E.T = Ea.T;
-  p.E.A = MatQ::Zero(na + nb, na + nb);
-  p.E.B = MatQ::Zero(na + nb, ma + mb);
-  p.E.C = MatQ::Zero(ma + mb, na + nb);
-  p.E.D = MatQ::Zero(ma + mb, ma + mb);
-  p.E.A.topLeftCorner(na, na) = Ea.A;
-  p.E.A.bottomRightCorner(nb, nb) = Eb.A;
-  p.E.B.topLeftCorner(na, ma) = Ea.B;
-  p.E.B.bottomRightCorner(nb, mb) = Eb.B;
-  p.E.C.topLeftCorner(ma, na) = Ea.C;
-  p.E.C.bottomRightCorner(mb, nb) = Eb.C;
-  p.E.D.topLeftCorner(ma, ma) = Ea.D;
-  p.E.D.bottomRightCorner(mb, mb) = Eb.D;
-  p.structure.operators = a.structure.operators;
-  for (auto o : b.structure.operators) {
-    o.name += "b";
-    p.structure.operators.push_back(o);
-  }
-  return p;
+// The direct sum of two problems (components.hpp), the second's operators renamed "...b".
+Problem two_objects(const Problem& a, Problem b) {
+  for (auto& o : b.structure.operators) o.name += "b";
+  return direct_sum(a, b);
 }
 }  // namespace
 
@@ -662,7 +642,7 @@ TEST(MultidofComponents, DecomposedVerdictIsTheWholes) {
       {"5 devices, 2 objects (3 + 2)", scene_problem(5, false, 2), 2},
       {"one object (does not split)", scene_problem(3, false, 1), 1},
       {"a feasible object beside an infeasible delayed one",
-       direct_sum(contact_problem(3, 1, Q(1), {}, q("1.37")), delayed(contact_problem(2, 6, Q(10), {}, q("1/1000000")))), 2},
+       two_objects(contact_problem(3, 1, Q(1), {}, q("1.37")), delayed(contact_problem(2, 6, Q(10), {}, q("1/1000000")))), 2},
   };
   int compared = 0;
   for (const auto& c : cases) {

@@ -3,6 +3,8 @@
 
 #include <numeric>
 
+#include "hapstab/numeric/error.hpp"
+
 namespace hapstab::multidof {
 
 namespace {
@@ -92,6 +94,30 @@ std::vector<Component> components(const Problem& pb) {
     for (int o : c.operators) p.structure.operators.push_back(pb.structure.operators[static_cast<size_t>(o)]);
   }
   return out;
+}
+
+Problem direct_sum(const Problem& a, const Problem& b) {
+  if (a.E.T != b.E.T) throw InputError("direct_sum: the two environments have different sample periods");
+  const StateSpace<rational>&Ea = a.E, &Eb = b.E;
+  const Eigen::Index na = Ea.states(), nb = Eb.states(), ma = Ea.inputs(), mb = Eb.inputs();
+  Problem p;
+  p.qv_block_diagonal = a.qv_block_diagonal;
+  p.E.T = Ea.T;
+  p.E.A = MatQ::Zero(na + nb, na + nb);
+  p.E.B = MatQ::Zero(na + nb, ma + mb);
+  p.E.C = MatQ::Zero(Ea.outputs() + Eb.outputs(), na + nb);
+  p.E.D = MatQ::Zero(Ea.outputs() + Eb.outputs(), ma + mb);
+  p.E.A.topLeftCorner(na, na) = Ea.A;
+  p.E.A.bottomRightCorner(nb, nb) = Eb.A;
+  p.E.B.topLeftCorner(na, ma) = Ea.B;
+  p.E.B.bottomRightCorner(nb, mb) = Eb.B;
+  p.E.C.topLeftCorner(Ea.outputs(), na) = Ea.C;
+  p.E.C.bottomRightCorner(Eb.outputs(), nb) = Eb.C;
+  p.E.D.topLeftCorner(Ea.outputs(), ma) = Ea.D;
+  p.E.D.bottomRightCorner(Eb.outputs(), mb) = Eb.D;
+  p.structure.operators = a.structure.operators;
+  for (const auto& o : b.structure.operators) p.structure.operators.push_back(o);
+  return p;
 }
 
 std::string component_name(const Problem& whole, const Component& c) {

@@ -21,7 +21,7 @@
 // is the largest of the components' (the block-diagonal assembly attains it; a restriction
 // needs at least it).
 //
-// Implements: the decomposition of paper 000's (16) by the scene's graph (issue 39 item 1).
+// Implements: paper 000 (16), Theorem 5.
 #pragma once
 
 #include <string>
@@ -41,6 +41,10 @@ struct Component {
 /// The connected components of pb's graph (above), ordered by their first DOF. One component
 /// (the whole, with the whole's problem) when the scene does not split.
 std::vector<Component> components(const Problem& pb);
+
+/// The inverse of the split: E = blockdiag(E_a, E_b) in the realisation (states, inputs and outputs
+/// of a, then of b; exact), the operators of a then of b (same sample period: InputError otherwise).
+Problem direct_sum(const Problem& a, const Problem& b);
 
 /// "{H1, H2} (2 DOF, 5 states)": a component named by its operators, for verdicts and output.
 std::string component_name(const Problem& whole, const Component& c);

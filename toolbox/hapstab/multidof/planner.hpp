@@ -23,7 +23,9 @@
 // (least_dissipative.cpp) is planned the same way after a feasible verdict. Tests give the
 // planner their own paths (e.g. a path whose point is spoiled, to drive the hand-over).
 //
-// Implements: the path choice of DESIGN.md ("Structure to exploit, cheapest first").
+// The path choice of DESIGN.md ("Structure to exploit, cheapest first").
+//
+// Implements: paper 000 Theorem 5.
 #pragma once
 
 #include <functional>
