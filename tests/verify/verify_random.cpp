@@ -905,26 +905,25 @@ bool check_multidof_blockwise(std::mt19937_64& g, std::ostream& why) {
 
 // ---- multidof_paths: the planner's paths against each other (issue 39) ----------------------
 // Random Theorem 5 problems with N = 2-12 devices on K = 1-4 separate virtual objects (Fig. 5
-// masses, E block diagonal: the scene decomposes), random stiffness/damping (active contact
-// dampers in 40%), device OSP levels from 1e-6 to 3, and a delay of 1-2 samples in 35% (E := z^-d
-// E per DOF: infeasible scenes come mostly from there). The code under test is analyze()'s
+// masses, E block diagonal: the scene decomposes), random stiffness/damping,
+// device OSP levels from 1e-6 to 3, and a delay of 1-2 samples in 35% (E := z^-d E per DOF:
+// infeasible scenes come from there). The code under test is analyze()'s
 // automatic plan (decomposed -> structured KYP/Riccati -> frequency-domain witness -> generic
 // SDP); the references are other routes: per component, the generic SDP alone (lmi's IPM, one
 // program over P11, X); for small wholes (m <= 6, no delay), one generic SDP over the whole
-// scene (no decomposition). A miss: two PROVEN verdicts that differ, or a decomposed verdict
-// whose components disagree with it (the whole is feasible iff every component is). Numeric
-// reference verdicts that differ from a proven one are counted (printed), not misses: the IPM's
-// "numeric only" near a boundary is what the exact checks exist for.
+// scene (no decomposition). A miss: a proven planned verdict that a decided reference contradicts
+// (a numeric reference too: the IPM's "infeasible, numeric only" is what the witness certifies),
+// or a decomposed verdict that is not its components' conjunction. Delayed components of more
+// than 2 DOF are not compared (the generic SDP takes minutes there) and counted as skipped.
 struct PathsTally {
   long multi_object = 0, whole_compared = 0, components_compared = 0, delayed_compared = 0, infeasible_compared = 0,
-       witness = 0, structured = 0, generic = 0, numeric_disagreements = 0;
+       witness = 0, structured = 0, generic = 0, numeric_references = 0, skipped = 0;
 } paths_tally;
 
 multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& delay) {
   const int N = static_cast<int>(uniform(g, 2, 12));
   objects = static_cast<int>(uniform(g, 1, std::min(4, N)));
   delay = chance(g, 0.35) ? static_cast<int>(uniform(g, 1, 2)) : 0;
-  const bool active = chance(g, 0.4);
   const rational T(1, 100);
   multidof::Problem whole;
   for (int o = 0; o < objects; ++o) {
@@ -932,10 +931,10 @@ multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& de
     multidof::MechanicalEnvironment env;
     env.M = rational(uniform(g, 1, 10), 10);
     env.k = rational(uniform(g, 100, 2000));
-    env.B = rational(uniform(g, active ? 100 : 2, active ? 300 : 20), 2);
+    env.B = rational(uniform(g, 2, 20), 2);
     for (int i = first; i < last; ++i) {
       env.kc.push_back(rational(uniform(g, 100, 1000)));
-      env.Bc.push_back(active ? rational(-uniform(g, 1, 6), 2) : rational(uniform(g, 2, 12), 4));
+      env.Bc.push_back(rational(uniform(g, 2, 12), 4));
     }
     // E := z^-d E (the scene reader's fold of a [delay]); then the direct sum with what is there
     multidof::Problem object;
@@ -962,14 +961,13 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
   bool ok = true;
   auto compare = [&](const Verdict& a, const Verdict& ref, const std::string& what, long& counter) {
     if (!a.decided() || !ref.decided()) return;
-    if (a.proven() && ref.proven()) {
-      ++counter;
-      if (a.outcome != ref.outcome)
-        ok = false, why << "  " << what << ": the planned verdict is " << to_string(a.outcome) << " (" << a.evidence
-                        << "), the reference " << to_string(ref.outcome) << " (" << ref.evidence << ")\n";
-    } else if (a.outcome != ref.outcome) {
-      ++paths_tally.numeric_disagreements;
-    }
+    if (!a.proven()) return;
+    ++counter;
+    if (!ref.proven()) ++paths_tally.numeric_references;
+    if (a.outcome != ref.outcome)
+      ok = false, why << "  " << what << ": the planned verdict is " << to_string(a.outcome) << " [proven] (" << a.evidence
+                      << "), the reference " << to_string(ref.outcome) << (ref.proven() ? " [proven]" : " [numeric]") << " ("
+                      << ref.evidence << ")\n";
   };
   Stopwatch reference_time;
   const auto comps = multidof::components(pb);
@@ -977,9 +975,17 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
   // per component: the generic SDP alone
   bool all_hold = true, any_fail = false;
   for (size_t k = 0; k < comps.size(); ++k) {
+    const Verdict& mine = comps.size() > 1 ? planned.components[k].verdict : planned.verdict;
+    all_hold = all_hold && mine.holds() && mine.proven();
+    any_fail = any_fail || (mine.fails() && mine.proven());
+    // the generic SDP on an infeasible delayed program of more than 2 DOF takes minutes (issue 39's
+    // table: 82 s at 4 DOF): those components are not compared
+    if (delay > 0 && comps[k].dofs.size() > 2) {
+      ++paths_tally.skipped;
+      continue;
+    }
     const auto ref = multidof::analyze(comps[k].problem, ipm, multidof::AnalysisMode::stability_only,
                                        multidof::AnalysisPath::generic_sdp);
-    const Verdict& mine = comps.size() > 1 ? planned.components[k].verdict : planned.verdict;
     const std::string& path = comps.size() > 1 ? planned.components[k].path : planned.path;
     paths_tally.witness += path == "frequency-domain witness";
     paths_tally.structured += path == "structured KYP/Riccati";
@@ -990,8 +996,6 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
       if (delay > 0) ++paths_tally.delayed_compared;
       if (mine.fails()) ++paths_tally.infeasible_compared;
     }
-    all_hold = all_hold && mine.holds() && mine.proven();
-    any_fail = any_fail || (mine.fails() && mine.proven());
   }
   // the decomposed verdict is the components' conjunction
   if (comps.size() > 1) {
@@ -1467,7 +1471,9 @@ int main(int argc, char** argv) {
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
       {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
       {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
-      {"multidof_blockwise", check_multidof_blockwise}, {"multidof_paths", check_multidof_paths}, {"max_gain", check_max_gain}, {"delay", check_delay}};
+      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay},
+      // appended last: a criterion's index seeds its cases (case_rng), so the others keep theirs
+      {"multidof_paths", check_multidof_paths}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
@@ -1505,12 +1511,12 @@ int main(int argc, char** argv) {
       {"multidof_blockwise", "block-wise designs compared with the generic Theorem 4 program", 0.2,
        &blockwise_tally.blockwise},
       // issue 39: a plan that stopped decomposing, or a path that was switched off, compares none
-      {"multidof_paths", "components compared with the generic SDP (both proven)", 0.5, &paths_tally.components_compared},
-      {"multidof_paths", "multi-object scenes decomposed", 0.3, &paths_tally.multi_object},
+      {"multidof_paths", "components compared with the generic SDP", 0.7, &paths_tally.components_compared},
+      {"multidof_paths", "multi-object scenes decomposed", 0.25, &paths_tally.multi_object},
       {"multidof_paths", "delayed components compared", 0.1, &paths_tally.delayed_compared},
-      {"multidof_paths", "infeasible components compared", 0.05, &paths_tally.infeasible_compared},
-      {"multidof_paths", "small wholes compared with one generic SDP", 0.1, &paths_tally.whole_compared},
-      {"multidof_paths", "components decided by the structured path", 0.3, &paths_tally.structured},
+      {"multidof_paths", "infeasible components compared", 0.1, &paths_tally.infeasible_compared},
+      {"multidof_paths", "small wholes compared with one generic SDP", 0.12, &paths_tally.whole_compared},
+      {"multidof_paths", "components decided by the structured path", 0.6, &paths_tally.structured},
       {"consistency", "scenes whose verdicts were compared with a simulation", 0.2, &consistency_tally.compared},
       {"consistency", "multi-DOF loops decided", 0.1, &consistency_tally.multi_dof},
       {"consistency", "one-DOF loops decided by both deciders", 0.1, &consistency_tally.two_deciders},
@@ -1587,11 +1593,11 @@ int main(int argc, char** argv) {
                   multidof_tally.steady);
     if (name == "multidof_paths")
       std::printf("          (decided by the structured path %ld, the witness %ld, the generic SDP %ld components; proven\n"
-                  "           verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes; numeric reference\n"
-                  "           verdicts that differ from a proven one: %ld)\n",
+                  "           verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes; of them against a\n"
+                  "           numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
                   paths_tally.structured, paths_tally.witness, paths_tally.generic, paths_tally.components_compared,
                   paths_tally.delayed_compared, paths_tally.infeasible_compared, paths_tally.whole_compared,
-                  paths_tally.numeric_disagreements);
+                  paths_tally.numeric_references, paths_tally.skipped);
     if (name == "multidof_blockwise")
       std::printf("          (a certified structured-path point in %ld cases; of them the block-wise design verified a coupling\n"
                   "           in %ld, the generic Theorem 4 program certified it in %ld; with Assumption 1 (%ld) the loop\n"

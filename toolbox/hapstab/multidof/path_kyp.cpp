@@ -112,7 +112,7 @@ SolvePath kyp_riccati_path(bool backend_premise) {
     std::ostringstream o;
     o << "structured KYP path (X pinned to one direction by the facial conditions, min g_i = 1): P11 from the "
          "Riccati equation of (16)'s first LMI with Q_E = Delta_D X (lmi/kyp.hpp: "
-      << kp.riccati_solves << " DARE solve(s), " << kp.detail << "), " << r.numeric_seconds << " s";
+      << kp.riccati_solves << " DARE solve(s), " << kp.detail << ")";  // its time: AnalysisResult::sdp_seconds
     r.solver_detail = o.str();
     return r;
   };

@@ -111,7 +111,7 @@ SolvePath frequency_witness_path() {
     r.numeric_seconds = since(t0);
     std::ostringstream sd;
     sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << K + 60 + 41
-       << " frequencies: least " << num(best) << " at theta = " << num(bt) << " rad, " << r.numeric_seconds << " s";
+       << " frequencies: least " << num(best) << " at theta = " << num(bt) << " rad";
     r.solver_detail = sd.str();
     if (!(best < 0)) {
       r.no_point = "no frequency-domain witness: lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) >= " + num(best) +

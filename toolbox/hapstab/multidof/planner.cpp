@@ -142,7 +142,6 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
                           " independent components (multidof/components.hpp: E's realisation is their direct sum "
                           "exactly and no operator spans two, so (16) holds for the whole iff it holds for each)";
   std::map<std::string, int> count;
-  double lo = INFINITY, hi = 0;
   bool all_proven_hold = true, all_hold = true, all_points = true, all_min = true, all_min_cert = true;
   std::optional<size_t> proven_fail, numeric_fail, open;
   res.margin = INFINITY;
@@ -151,8 +150,6 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
     res.components.push_back({component_name(pb, comps[k]), comps[k].dofs, r.path, r.verdict, r.seconds});
     for (const PlanStep& st : r.plan) res.plan.push_back({"component " + std::to_string(k + 1) + ": " + st.path, st.fate, st.why});
     ++count[r.path.empty() ? "none" : r.path];
-    lo = std::min(lo, r.seconds);
-    hi = std::max(hi, r.seconds);
     res.sdp_seconds += r.sdp_seconds;
     res.margin = std::min(res.margin, r.margin);
     all_proven_hold = all_proven_hold && r.verdict.holds() && r.verdict.proven();
@@ -183,7 +180,7 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
   std::ostringstream o;
   o << "decomposed into " << K << " independent components on " << threads << " thread(s); decided by";
   for (const auto& [path, n] : count) o << " " << path << " x" << n;
-  o << "; " << lo << " - " << hi << " s per component; component 1: " << parts[0].solver_detail;
+  o << "; component 1: " << parts[0].solver_detail;  // times: AnalysisResult::components, ::seconds
   res.solver_detail = o.str();
   if (!all_points) return res;
   // the block-diagonal assembly of the points
