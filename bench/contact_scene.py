@@ -5,11 +5,17 @@ operators and N mass-damper devices (case ii: Gamma in G(N; 1, ..., 1)). Backwar
 
     E(s) = diag(k_i + B_i s) - c c^T / (M s^2 + (B + sum B_i) s + k + sum k_i),  c_i = k_i + B_i s
 
-Usage: bench/contact_scene.py N > scene.toml ; build/hapstab multidof analyze --scene scene.toml
+With --objects K (issue 39) the N devices split into K groups, each touching its own mass (E block
+diagonal: the scene decomposes into K independent problems); with --delay D a network delay of D
+samples ([delay]).
+
+Usage: bench/contact_scene.py N [--objects K] [--delay D] > scene.toml
+       build/hapstab multidof analyze --scene scene.toml
 """
+import argparse
 import sys
 
-def scene(n):
+def scene(n, objects=1, delay=0):
     out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',
            '[parameters]', 'M = "0.3"', 'k = "1000"', 'B = "5"']
     for i in range(1, n + 1):
@@ -20,22 +26,32 @@ def scene(n):
     for i in range(1, n + 1):
         gain = ["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4]
         out += ['[[operator]]', f'name = "H{i}"', f'dofs = ["d{i}"]', f'tf = "{gain}*(s^2+5*s+10)/(s^2+s+1)"', '']
-    den = ('(M*s^2 + (B' + ''.join(f'+B{i}' for i in range(1, n + 1)) + ')*s + k'
-           + ''.join(f'+k{i}' for i in range(1, n + 1)) + ')')
+    obj = {i: (i - 1) * objects // n for i in range(1, n + 1)}  # object touched by device i
+    den = {o: ('(M*s^2 + (B' + ''.join(f'+B{i}' for i in range(1, n + 1) if obj[i] == o) + ')*s + k'
+               + ''.join(f'+k{i}' for i in range(1, n + 1) if obj[i] == o) + ')') for o in range(objects)}
     rows = []
     for i in range(1, n + 1):
         ci = f'(k{i} + B{i}*s)'
         row = []
         for j in range(1, n + 1):
             cj = f'(k{j} + B{j}*s)'
-            row.append(f'"k{i} + B{i}*s - {ci}^2/{den}"' if i == j else f'"-{ci}*{cj}/{den}"')
+            d = den[obj[i]]
+            row.append('"0"' if obj[i] != obj[j] else
+                       f'"k{i} + B{i}*s - {ci}^2/{d}"' if i == j else f'"-{ci}*{cj}/{d}"')
         rows.append('[' + ', '.join(row) + ']')
     out += ['[environment]', 'domain = "s"', 'method = "backward_euler"', 'tf = [' + ',\n      '.join(rows) + ']', '']
+    if delay:
+        out += ['[delay]', f'samples = "{delay}"', '']
     out += ['[multidof]', 'osp = [' + ', '.join(['"1.37"'] * n) + ']', 'qv_block_diagonal = false', '']
     out += ['[multidof.coupling]', 'mbar = [' + ', '.join(['1'] * n) + ']', 'nbar = [' + ', '.join(['1'] * n) + ']']
     return '\n'.join(out) + '\n'
 
 if __name__ == '__main__':
-    if len(sys.argv) != 2 or not sys.argv[1].isdigit() or not 1 <= int(sys.argv[1]) <= 256:
-        sys.exit('usage: bench/contact_scene.py N   (1 <= N <= 256)')
-    sys.stdout.write(scene(int(sys.argv[1])))
+    ap = argparse.ArgumentParser(description='the contact scenes of issues 15 and 39')
+    ap.add_argument('N', type=int, help='devices (1..256)')
+    ap.add_argument('--objects', type=int, default=1, help='separate virtual objects (1..N)')
+    ap.add_argument('--delay', type=int, default=0, help='network delay in samples')
+    a = ap.parse_args()
+    if not 1 <= a.N <= 256 or not 1 <= a.objects <= a.N or a.delay < 0:
+        sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D]   (1 <= K <= N <= 256, D >= 0)')
+    sys.stdout.write(scene(a.N, a.objects, a.delay))

@@ -4,7 +4,7 @@
 // contain its reference; a correctly rounded decimal must be within half a unit in its last
 // place of the reference. Any miss prints the case (and how to rerun it) and exits 1.
 //
-//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain,delay] [--case K]
+//   verify_random --cases N --seed S [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,multidof_paths,max_gain,delay] [--case K]
 //                 [--max-undecided F]
 //
 // Apart from misses: refused (the criterion rejected a generated input) fails the run; failed (a
@@ -76,6 +76,7 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/multidof/assumptions.hpp"
+#include "hapstab/multidof/components.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/multidof/loop_as_written.hpp"
@@ -902,6 +903,115 @@ bool check_multidof_blockwise(std::mt19937_64& g, std::ostream& why) {
   return loop_settles(sc, design.V, blockwise_tally.settled, blockwise_tally.steady, why) && ok;
 }
 
+// ---- multidof_paths: the planner's paths against each other (issue 39) ----------------------
+// Random Theorem 5 problems with N = 2-12 devices on K = 1-4 separate virtual objects (Fig. 5
+// masses, E block diagonal: the scene decomposes), random stiffness/damping,
+// device OSP levels from 1e-6 to 3, and a delay of 1-2 samples in 35% (E := z^-d E per DOF:
+// infeasible scenes come from there). The code under test is analyze()'s
+// automatic plan (decomposed -> structured KYP/Riccati -> frequency-domain witness -> generic
+// SDP); the references are other routes: per component, the generic SDP alone (lmi's IPM, one
+// program over P11, X); for small wholes (m <= 6, no delay), one generic SDP over the whole
+// scene (no decomposition). A miss: a proven planned verdict that a decided reference contradicts
+// (a numeric reference too: the IPM's "infeasible, numeric only" is what the witness certifies),
+// or a decomposed verdict that is not its components' conjunction. Delayed components of more
+// than 2 DOF are not compared (the generic SDP takes minutes there) and counted as skipped.
+struct PathsTally {
+  long multi_object = 0, whole_compared = 0, components_compared = 0, delayed_compared = 0, infeasible_compared = 0,
+       witness = 0, structured = 0, generic = 0, numeric_references = 0, skipped = 0;
+} paths_tally;
+
+multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& delay) {
+  const int N = static_cast<int>(uniform(g, 2, 12));
+  objects = static_cast<int>(uniform(g, 1, std::min(4, N)));
+  delay = chance(g, 0.35) ? static_cast<int>(uniform(g, 1, 2)) : 0;
+  const rational T(1, 100);
+  multidof::Problem whole;
+  for (int o = 0; o < objects; ++o) {
+    const int first = o * N / objects, last = (o + 1) * N / objects;  // devices first .. last - 1
+    multidof::MechanicalEnvironment env;
+    env.M = rational(uniform(g, 1, 10), 10);
+    env.k = rational(uniform(g, 100, 2000));
+    env.B = rational(uniform(g, 2, 20), 2);
+    for (int i = first; i < last; ++i) {
+      env.kc.push_back(rational(uniform(g, 100, 1000)));
+      env.Bc.push_back(rational(uniform(g, 2, 12), 4));
+    }
+    // E := z^-d E (the scene reader's fold of a [delay]); then the direct sum with what is there
+    multidof::Problem object;
+    object.E = multidof::delayed(multidof::mechanical_environment_be_ss(env, T), delay);
+    for (int i = first; i < last; ++i) {
+      const long lv = uniform(g, 0, 3);
+      const rational osp = lv == 0 ? rational(1, 1000000) : rational(uniform(g, 1, 300), 100);
+      object.structure.operators.push_back(
+          multidof::Operator{"H" + std::to_string(i + 1), 1, {multidof::device("d" + std::to_string(i + 1), 1, osp)}});
+    }
+    whole = o == 0 ? object : multidof::direct_sum(whole, object);
+  }
+  return whole;
+}
+
+bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
+  int objects = 1, delay = 0;
+  const multidof::Problem pb = random_paths_problem(g, objects, delay);
+  why << "multidof_paths problem: " << pb.structure.m() << " devices, " << objects << " objects, delay " << delay
+      << " samples, E of order " << pb.E.states() << "\n";
+  lmi::Options ipm;
+  ipm.backend = lmi::Backend::ipm;
+  const auto planned = multidof::analyze(pb, {}, multidof::AnalysisMode::stability_only);
+  bool ok = true;
+  auto compare = [&](const Verdict& a, const Verdict& ref, const std::string& what, long& counter) {
+    if (!a.decided() || !ref.decided()) return;
+    if (!a.proven()) return;
+    ++counter;
+    if (!ref.proven()) ++paths_tally.numeric_references;
+    if (a.outcome != ref.outcome)
+      ok = false, why << "  " << what << ": the planned verdict is " << to_string(a.outcome) << " [proven] (" << a.evidence
+                      << "), the reference " << to_string(ref.outcome) << (ref.proven() ? " [proven]" : " [numeric]") << " ("
+                      << ref.evidence << ")\n";
+  };
+  Stopwatch reference_time;
+  const auto comps = multidof::components(pb);
+  if (comps.size() > 1) ++paths_tally.multi_object;
+  // per component: the generic SDP alone
+  bool all_hold = true, any_fail = false;
+  for (size_t k = 0; k < comps.size(); ++k) {
+    const Verdict& mine = comps.size() > 1 ? planned.components[k].verdict : planned.verdict;
+    all_hold = all_hold && mine.holds() && mine.proven();
+    any_fail = any_fail || (mine.fails() && mine.proven());
+    // the generic SDP on an infeasible delayed program of more than 2 DOF takes minutes (issue 39's
+    // table: 82 s at 4 DOF): those components are not compared
+    if (delay > 0 && comps[k].dofs.size() > 2) {
+      ++paths_tally.skipped;
+      continue;
+    }
+    const auto ref = multidof::analyze(comps[k].problem, ipm, multidof::AnalysisMode::stability_only,
+                                       multidof::AnalysisPath::generic_sdp);
+    const std::string& path = comps.size() > 1 ? planned.components[k].path : planned.path;
+    paths_tally.witness += path == "frequency-domain witness";
+    paths_tally.structured += path == "structured KYP/Riccati";
+    paths_tally.generic += path == "generic SDP";
+    long before = paths_tally.components_compared;
+    compare(mine, ref.verdict, "component " + std::to_string(k + 1), paths_tally.components_compared);
+    if (paths_tally.components_compared > before) {
+      if (delay > 0) ++paths_tally.delayed_compared;
+      if (mine.fails()) ++paths_tally.infeasible_compared;
+    }
+  }
+  // the decomposed verdict is the components' conjunction
+  if (comps.size() > 1) {
+    if (all_hold && !(planned.verdict.holds() && planned.verdict.proven()))
+      ok = false, why << "  every component proven feasible, the decomposed verdict is not: " << planned.verdict.evidence << "\n";
+    if (any_fail && !(planned.verdict.fails() && planned.verdict.proven()))
+      ok = false, why << "  a component proven infeasible, the decomposed verdict is not: " << planned.verdict.evidence << "\n";
+  }
+  // small wholes: one generic SDP over the whole scene
+  if (pb.structure.m() <= 6 && delay == 0) {
+    const auto whole = multidof::analyze(pb, ipm, multidof::AnalysisMode::stability_only, multidof::AnalysisPath::generic_sdp);
+    compare(planned.verdict, whole.verdict, "the whole (one generic SDP)", paths_tally.whole_compared);
+  }
+  return ok;
+}
+
 // ---- consistency: one scene, every command's verdict on its loop as written (issue 38) --------
 // A random scene: N = 1 (40%), 2-3 (30%) or 4-8 DOF (30%); mass-damper devices 1/(m s + b); hands
 // m_h s + b_h + k_h/s (springs in 60%: a position and the spring deflection integrate the same
@@ -1354,14 +1464,16 @@ int main(int argc, char** argv) {
       else if (a == "--inject-nothing-compared") inject_nothing = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
-      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,max_gain,delay] [--case K] [--max-undecided F])\n";
+      std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,multidof_paths,max_gain,delay] [--case K] [--max-undecided F])\n";
       return 2;
     }
   }
   const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
       {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
       {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
-      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay}};
+      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay},
+      // appended last: a criterion's index seeds its cases (case_rng), so the others keep theirs
+      {"multidof_paths", check_multidof_paths}};
   std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
@@ -1398,6 +1510,13 @@ int main(int argc, char** argv) {
       // a regression that switched the block-wise path off compares none: the run fails
       {"multidof_blockwise", "block-wise designs compared with the generic Theorem 4 program", 0.2,
        &blockwise_tally.blockwise},
+      // issue 39: a plan that stopped decomposing, or a path that was switched off, compares none
+      {"multidof_paths", "components compared with the generic SDP", 0.7, &paths_tally.components_compared},
+      {"multidof_paths", "multi-object scenes decomposed", 0.25, &paths_tally.multi_object},
+      {"multidof_paths", "delayed components compared", 0.1, &paths_tally.delayed_compared},
+      {"multidof_paths", "infeasible components compared", 0.1, &paths_tally.infeasible_compared},
+      {"multidof_paths", "small wholes compared with one generic SDP", 0.12, &paths_tally.whole_compared},
+      {"multidof_paths", "components decided by the structured path", 0.6, &paths_tally.structured},
       {"consistency", "scenes whose verdicts were compared with a simulation", 0.2, &consistency_tally.compared},
       {"consistency", "multi-DOF loops decided", 0.1, &consistency_tally.multi_dof},
       {"consistency", "one-DOF loops decided by both deciders", 0.1, &consistency_tally.two_deciders},
@@ -1472,6 +1591,13 @@ int main(int argc, char** argv) {
                   "           in %ld of those; the loop with the coupling settled in %ld, neither settled nor grew in 3000 periods in %ld)\n",
                   multidof_tally.applicable, multidof_tally.designed, multidof_tally.t5_feasible, multidof_tally.settled,
                   multidof_tally.steady);
+    if (name == "multidof_paths")
+      std::printf("          (decided by the structured path %ld, the witness %ld, the generic SDP %ld components; proven\n"
+                  "           verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes; of them against a\n"
+                  "           numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
+                  paths_tally.structured, paths_tally.witness, paths_tally.generic, paths_tally.components_compared,
+                  paths_tally.delayed_compared, paths_tally.infeasible_compared, paths_tally.whole_compared,
+                  paths_tally.numeric_references, paths_tally.skipped);
     if (name == "multidof_blockwise")
       std::printf("          (a certified structured-path point in %ld cases; of them the block-wise design verified a coupling\n"
                   "           in %ld, the generic Theorem 4 program certified it in %ld; with Assumption 1 (%ld) the loop\n"

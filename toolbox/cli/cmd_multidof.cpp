@@ -144,6 +144,33 @@ std::string law_word(const multidof::LoopAsWritten& l) {
   return std::string(*l.stable ? "stable" : "NOT stable") + " [" + to_string(l.status) + "]";
 }
 
+// The planner's record (multidof/planner.hpp): each path, what became of it and why.
+json plan_json(const multidof::AnalysisResult& r) {
+  json a = json::array();
+  for (const auto& s : r.plan) a.push_back({{"path", s.path}, {"fate", s.fate}, {"why", s.why}});
+  return a;
+}
+
+// How the scene split (multidof/components.hpp): one entry per independent component.
+json components_json(const multidof::AnalysisResult& r) {
+  json a = json::array();
+  for (const auto& c : r.components)
+    a.push_back({{"name", c.name}, {"dofs", c.dofs}, {"path", c.path}, {"verdict", to_string(c.verdict.outcome)},
+                 {"certified", c.verdict.proven()}, {"seconds", c.seconds}});
+  return a;
+}
+
+std::string plan_text(const multidof::AnalysisResult& r) {
+  if (!r.components.empty())
+    return "path: decomposed: the scene splits into " + std::to_string(r.components.size()) +
+           " independent components (E block diagonal exactly, no operator spans two), each planned alone:";
+  if (r.path == "facial conditions") return "path: none needed: the facial conditions decided, exactly, before any path ran";
+  std::string t = "path: " + (r.path.empty() ? std::string("no path decided") : "the " + r.path + " path decided");
+  for (const auto& s : r.plan)
+    if (s.fate != "decided") t += "; " + s.path + ": " + s.fate + (s.why.empty() || s.fate == "not needed" ? "" : " (" + s.why + ")");
+  return t;
+}
+
 // The scene, its reading timed (multidof::SceneAnalysisOptions::load_seconds).
 scene::Scene read_scene(const Opts& o, double& seconds) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -177,6 +204,9 @@ int run_analyze(const Opts& o) {
          {"margin", r.margin},
          {"facial_reduction", r.facial.explanation},
          {"solver", r.solver_detail},
+         {"path", r.path},
+         {"plan", plan_json(r)},
+         {"components", components_json(r)},
          {"assumptions", assumptions_json(a.premises)},
          {"seconds", {{"realisation", a.seconds.realisation},
                       {"sdp", r.sdp_seconds},
@@ -199,6 +229,13 @@ int run_analyze(const Opts& o) {
     std::cout << "Theorem 5 (LMIs (16)) for " << o.scene << ": " << verdict
               << (certified ? " (certified)" : " (not certified)") << "\n  " << r.verdict.evidence << "\n";
     if (r.verdict.evidence.find(r.facial.explanation) == std::string::npos) std::cout << "  " << r.facial.explanation << "\n";
+    std::cout << "  " << plan_text(r) << "\n";
+    for (size_t k = 0; k < r.components.size(); ++k) {
+      const auto& c = r.components[k];
+      std::cout << "    component " << k + 1 << " " << c.name << ": " << to_string(c.verdict.outcome) << " ["
+                << to_string(c.verdict.status) << "] by the " << (c.path.empty() ? "(no)" : c.path) << " path, " << c.seconds
+                << " s\n";
+    }
     if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "\n";
     if (feasible) {
       std::cout << "  one feasible point (" << (r.solver_detail.find("Riccati") == std::string::npos ? "the SDP solver's" : "the Riccati equation's") << "): Gamma = sqrt(X): gamma =";

@@ -98,4 +98,71 @@ KypPoint kyp_interior_point(const KypData& d, double floor_rel) {
   return none;
 }
 
+// ---- the frequency-domain side ----
+
+Eigen::MatrixXcd hessenberg_resolvent(const MatrixXd& H, std::complex<double> z, Eigen::MatrixXcd R) {
+  using cd = std::complex<double>;
+  const Eigen::Index n = H.rows();
+  Eigen::MatrixXcd M = -H.cast<cd>();
+  M.diagonal().array() += z;
+  for (Eigen::Index k = 0; k + 1 < n; ++k) {
+    if (std::abs(M(k + 1, k)) > std::abs(M(k, k))) {
+      M.row(k).swap(M.row(k + 1));
+      R.row(k).swap(R.row(k + 1));
+    }
+    if (M(k, k) == cd(0)) continue;
+    const cd f = M(k + 1, k) / M(k, k);
+    M.row(k + 1).tail(n - k) -= f * M.row(k).tail(n - k);
+    R.row(k + 1) -= f * R.row(k);
+  }
+  for (Eigen::Index k = n - 1; k >= 0; --k) {  // back substitution
+    R.row(k) -= M.row(k).tail(n - k - 1) * R.bottomRows(n - k - 1);
+    R.row(k) /= M(k, k);
+  }
+  return R;
+}
+
+CircleResponse::CircleResponse(const MatrixXd& A, const MatrixXd& B, const MatrixXd& C, const MatrixXd& D) : D_(D) {
+  if (A.rows() == 0) return;
+  Eigen::HessenbergDecomposition<MatrixXd> hd(A);
+  H_ = hd.matrixH();
+  const MatrixXd Q = hd.matrixQ();
+  QtB_ = (Q.transpose() * B).cast<std::complex<double>>();
+  CQ_ = (C * Q).cast<std::complex<double>>();
+}
+
+Eigen::MatrixXcd CircleResponse::at(double theta) const {
+  Eigen::MatrixXcd G = D_.cast<std::complex<double>>();
+  if (H_.rows() > 0) G += CQ_ * hessenberg_resolvent(H_, std::polar(1.0, theta), QtB_);
+  return G;
+}
+
+double kyp_frequency_bound(const KypData& d, const Eigen::VectorXd& g, int grid) {
+  const Eigen::Index p = d.R.rows();
+  const CircleResponse G(d.A, d.B, MatrixXd::Identity(d.A.rows(), d.A.rows()), MatrixXd::Zero(d.A.rows(), p));
+  auto value = [&](double th) {
+    const Eigen::MatrixXcd Gz = G.at(th);  // (zI - A)^-1 B
+    const Eigen::MatrixXcd SG = d.S.transpose().cast<std::complex<double>>() * Gz;
+    const Eigen::MatrixXcd Phi = d.R.cast<std::complex<double>>() - SG - SG.adjoint();
+    const Eigen::MatrixXcd Ps = g.asDiagonal() * Phi * g.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(0.5 * (Ps + Ps.adjoint()), Eigen::EigenvaluesOnly);
+    return es.eigenvalues()(p - 1);
+  };
+  double best = -INFINITY, bt = M_PI;
+  auto consider = [&](double th) {
+    const double v = value(th);
+    if (v > best) best = v, bt = th;
+  };
+  for (int k = 1; k <= grid; ++k) consider(M_PI * k / grid);
+  for (int k = 1; k <= 60; ++k) consider(M_PI / grid * std::pow(10.0, -k / 10.0));
+  double lo = std::max(1e-12, bt - M_PI / grid), hi = std::min(M_PI, bt + M_PI / grid);
+  for (int it = 0; it < 40; ++it) {
+    const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
+    if (value(a) > value(b)) hi = b;
+    else lo = a;
+  }
+  consider(0.5 * (lo + hi));
+  return best;
+}
+
 }  // namespace hapstab::lmi

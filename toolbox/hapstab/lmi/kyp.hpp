@@ -20,6 +20,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <complex>
 #include <string>
 
 namespace hapstab::lmi {
@@ -49,5 +50,30 @@ KypPoint kyp_riccati_point(const KypData& d, double delta);
 /// its shift is within a factor 4 of the largest on that ladder; riccati_solves counts the
 /// tries). found = false when none does (-R not positive definite, or no delta on the ladder).
 KypPoint kyp_interior_point(const KypData& d, double floor_rel = 1e-12);
+
+// ---- the frequency-domain side (the KYP lemma's other half), numeric ----
+// With A Schur stable, F(P) > 0 is feasible iff Phi(z) = R - S^T G(z) - G(z)^* S < 0 on the whole
+// unit circle, G(z) = (zI - A)^-1 B: a sweep of Phi costs O(n^2 p) per frequency after one O(n^3)
+// Hessenberg form, where each DARE solve costs O(n^3) per doubling step.
+
+/// (zI - H)^-1 R for an upper Hessenberg H (Gaussian elimination with partial pivoting between
+/// adjacent rows, O(n^2 p)). A delay's shift chain is a defective eigenvalue, which an
+/// eigendecomposition would not survive; a Hessenberg form does.
+Eigen::MatrixXcd hessenberg_resolvent(const Eigen::MatrixXd& H, std::complex<double> z, Eigen::MatrixXcd R);
+
+/// (C (zI - A)^-1 B + D) on the unit circle by one Hessenberg form of A.
+struct CircleResponse {
+  CircleResponse(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& C, const Eigen::MatrixXd& D);
+  Eigen::MatrixXcd at(double theta) const;  ///< at z = e^{j theta}
+ private:
+  Eigen::MatrixXd H_, D_;
+  Eigen::MatrixXcd QtB_, CQ_;
+};
+
+/// The least t with F(P) > 0 feasible for R - t diag(g)^-2 ... precisely: max over the sweep of
+/// lambda_max(diag(g) Phi(e^{j theta}) diag(g)), theta on a grid of (0, pi] (denser near 0) refined by
+/// golden section. A LOWER bound of the true least t (a grid misses nothing it samples; it may
+/// miss a narrow peak): the caller confirms by a DARE solve above it.
+double kyp_frequency_bound(const KypData& d, const Eigen::VectorXd& g, int grid = 1024);
 
 }  // namespace hapstab::lmi

@@ -65,6 +65,22 @@ FacialConditions facial_conditions(const Problem& pb, const std::vector<MatQ>& e
 // fails = infeasible (lmi::feasibility_of maps back); status exact when an exact certificate
 // passed (feasible: the rounded point re-checked in rational arithmetic on the original data,
 // with a positive margin; infeasible: Farkas or the facial conditions), numeric otherwise.
+/// One path's fate in the planner (planner.hpp): which path, and what became of it.
+struct PlanStep {
+  std::string path;  ///< "structured KYP/Riccati", "generic SDP"
+  std::string fate;  ///< "decided", "skipped", "no point", "point failed the exact re-check", "not needed"
+  std::string why;   ///< the premise that failed, the re-check's failure, ... ("" when decided)
+};
+
+/// One independent component's outcome when the scene splits (components.hpp).
+struct ComponentResult {
+  std::string name;              ///< "{H1, H2} (2 DOF, 5 states)"
+  std::vector<int> dofs;         ///< the whole's DOF indices
+  std::string path;              ///< the path that decided it
+  Verdict verdict;
+  double seconds = 0;
+};
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -81,8 +97,12 @@ struct AnalysisResult {
   double Q_V_min_norm = 0;
   std::vector<double> gamma_sqrt_min;
   std::string solver_detail;
+  std::string path;              ///< the path that decided (planner.hpp), "" when none ran
+  std::vector<PlanStep> plan;    ///< every path's fate, in the planner's order
+  std::vector<ComponentResult> components;  ///< how the scene split (empty: it did not; path "decomposed")
   double seconds = 0;      ///< wall time of analyze()
-  double sdp_seconds = 0;  ///< ... of it in lmi::solve (the rest: Ê, facial reduction, exact checks)
+  double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
+                           ///< facial reduction, exact checks); decomposed: their share of the wall time
 };
 
 /// full: the margin program (16) in (P, X, Q_E, Q_V), then the least dissipative coupling.
@@ -114,9 +134,12 @@ enum class AnalysisMode { full, stability_only };
 ///                re-checked exactly; otherwise that step runs the generic program. X not pinned,
 ///                Problem::qv_block_diagonal, no Riccati point or a failed exact check: the whole
 ///                analysis falls back to generic_sdp (never a weaker verdict).
-///   automatic    kyp_riccati from kKypMinDof DOF on with the automatic back-end, generic_sdp
-///                otherwise (the small problems, e.g. paper 000's Sec. VI, keep the IPM's points).
+///   automatic    the planner (planner.hpp) tries kyp_riccati whenever its premises hold (X
+///                pinned, Q_V not block diagonal, the automatic back-end), whatever the number of
+///                DOF, then generic_sdp: the path is chosen by cost, not by size. AnalysisResult::
+///                path and ::plan say which path decided and why the others did not apply.
 enum class AnalysisPath { automatic, generic_sdp, kyp_riccati };
+/// Theorem 6's automatic design path (design.hpp) goes block-wise from this many DOF on.
 inline constexpr int kKypMinDof = 8;
 
 /// InputError when a generic SDP on pb would need a Schur complement above

@@ -1,5 +1,6 @@
-// hapstab/multidof/detail.hpp -- internal building blocks shared by analysis.cpp and
-// design.cpp: the environment side of (16) in the split coordinates of ehat_split (facial
+// hapstab/multidof/detail.hpp -- internal building blocks shared by the paths of Theorem 5
+// (planner.hpp: path_generic.cpp, path_kyp.cpp, least_dissipative.cpp), the exact re-check
+// (recheck.cpp), Theorem 4's checks (coupling_check.cpp) and design.cpp: the environment side of (16) in the split coordinates of ehat_split (facial
 // reduction imposed exactly), the scaled (14), Lemma 1 for V-hat^Gamma in congruence form
 //   -[[A^T P A - P + C^T Q_V C, A^T P B - C^T X/2 + C^T Q_V D],
 //     [.,                       B^T P B - (X D + D^T X)/2 + D^T Q_V D]] >= 0
@@ -7,12 +8,14 @@
 // exact re-check of a Theorem 5 solution on the rational data (15). Not a public API.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hapstab/lmi/certify.hpp"
+#include "hapstab/lmi/kyp.hpp"
 #include "hapstab/multidof/analysis.hpp"
 
 namespace hapstab::multidof::detail {
@@ -37,13 +40,53 @@ EnvVars add_environment(lmi::Program& prog, const Problem& pb, const EhatSplit& 
                         bool qe_is_delta_x = false);
 void add_condition14(lmi::Program& prog, const Problem& pb, const EnvVars& ev, const lmi::Expr& QV);
 
+/// The environment side of a Theorem 5 point, exact: X = sum theta_k X_k (the facial basis),
+/// Q_E, and P11, the block of P in the split coordinates of ehat_split (P's other block,
+/// X E(1)/(2T), is pinned by the facial reduction).
 struct ExactEnv {
   std::vector<rational> theta;
   MatQ X, QE, P11;
 };
 /// The solver's point of the environment side, exact (lmi::CertifiedSolve::point).
 ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev);
+/// THE exact re-check of a Theorem 5 point (recheck.cpp): true when every condition of (16) holds
+/// in rational arithmetic on the exact data (15); `why` says what was checked, or what failed.
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why);
+
+/// Scales an exact Theorem 5 point so that min g_i = 1 (the LMIs are homogeneous in
+/// (P, X, Q_E, Q_V); g_i >= 1 is the only inhomogeneous constraint, Remark 2).
+rational normaliser(const MatQ& X);
+/// The solver's point of (16) -- environment side and Q_V -- in exact rationals, scaled by
+/// normaliser (min g_i = 1).
+struct ScaledPoint {
+  ExactEnv env;
+  MatQ QV;
+  rational scale;
+};
+ScaledPoint scaled_point(const lmi::CertifiedSolve& cs, const EnvVars& ev, const lmi::MatrixVariable& QV);
+/// The reported feasible point: X, Q_E, Q_V, Gamma and the coupling requirement delta_V.
+void store_point(AnalysisResult& res, const Problem& pb, const MatQ& X, const MatQ& QE, const MatQ& QV);
+/// (16) in (P, X, Q_E, Q_V): the environment side, Q_V > 0 and the scaled (14).
+void pose_16(lmi::Program& prog, const Problem& pb, const EhatSplit& sp, const FacialConditions& fc, EnvVars& ev,
+             lmi::MatrixVariable& QV);
+
+/// The generic SDP's size check (numeric/limits.hpp): "" when its Schur complement fits in
+/// limits::generic_sdp_bytes, else the reason, naming the order and the limit.
+std::string generic_size_exceeded(const Problem& pb, long extra_unknowns, const std::string& what);
+
+/// The structured path's data: X pinned by the facial conditions to one direction, scaled so
+/// that min g_i = 1, and the first LMI of (16) as the KYP data of lmi/kyp.hpp for Q_E = 0:
+/// A = A_E, B = B_t, S = C_E^T X / 2, R = F22 (a Q_E then enters as R - Q_E).
+struct Pinned {
+  MatQ X;
+  rational theta;  ///< X = theta X_1 (X_1 = scalar_blocks(gamma_basis[0]))
+  lmi::KypData kyp;
+};
+/// nullopt (with `why`) when the facial conditions leave X more than one direction, or none with X > 0.
+std::optional<Pinned> pinned_x(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
+                               std::string* why = nullptr);
+/// The Riccati point P11 rounded to dyadic rationals (the fewest bits that keep its margin).
+MatQ rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp);
 
 /// The structured path's least dissipative point of (16) (analysis.hpp, AnalysisPath::kyp_riccati),
 /// exact: X pinned by the facial conditions (min g_i = 1), Q_E = r I, P11 from the Riccati
@@ -63,6 +106,14 @@ struct KypMinPoint {
 };
 std::optional<KypMinPoint> kyp_min_point(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc);
 
+/// The least dissipative coupling (AnalysisResult::Q_V_min ...) after a feasible verdict,
+/// planned like the verdict (least_dissipative.cpp): the structured bisection when `px` is given
+/// and its premises hold (Delta_D X = d I), else the generic program when it fits the size limit
+/// (else a note in solver_detail: the verdict stands, only the optional minimisation is skipped).
+void plan_least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt,
+                            const std::optional<Pinned>& px, AnalysisResult& res);
+
+double since(std::chrono::steady_clock::time_point t0);
 Eigen::MatrixXd gamma_inv_scale(const Eigen::MatrixXd& Q, const Eigen::MatrixXd& X);
 std::vector<double> gamma_sqrt(const Problem& pb, const Eigen::MatrixXd& X);
 /// Coupling side: P_V with its facial block pinned by X (basis Xk, scalars theta), reduced LMI.

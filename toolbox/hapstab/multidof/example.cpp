@@ -1,6 +1,7 @@
 #include "hapstab/multidof/example.hpp"
 
 #include <sstream>
+#include <vector>
 
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -83,7 +84,8 @@ Problem problem(int which_case, bool perturbed) {
 }
 
 
-std::string contact_scene(int n, bool active) {
+std::string contact_scene(int n, bool active, int objects) {
+  if (objects < 1 || objects > n) objects = 1;
   std::ostringstream s;
   s << "[scene]\nname = \"contact scene\"\nT = \"0.01\"\n[parameters]\nM = \"0.3\"\nk = \"1000\"\nB = \"" << (active ? "200" : "5")
     << "\"\n";
@@ -94,16 +96,27 @@ std::string contact_scene(int n, bool active) {
   for (int i = 1; i <= n; ++i) s << "[[device]]\nname = \"d" << i << "\"\nm = \"1/10\"\nb = \"1.37\"\n";
   for (int i = 1; i <= n; ++i)
     s << "[[operator]]\nname = \"H" << i << "\"\ndofs = [\"d" << i << "\"]\ntf = \"" << g[(i - 1) % 4] << "*(s^2+5*s+10)/(s^2+s+1)\"\n";
-  std::string den = "(M*s^2 + (B", ks = "k";
-  for (int i = 1; i <= n; ++i) den += "+B" + std::to_string(i), ks += "+k" + std::to_string(i);
-  den += ")*s + " + ks + ")";
+  // object o is touched by devices first[o] .. first[o + 1] - 1 (as even a split as n allows)
+  std::vector<int> obj(static_cast<size_t>(n + 1));
+  for (int i = 1; i <= n; ++i) obj[static_cast<size_t>(i)] = (i - 1) * objects / n;
+  std::vector<std::string> den(static_cast<size_t>(objects));
+  for (int o = 0; o < objects; ++o) {
+    std::string d = "(M*s^2 + (B", ks = "k";
+    for (int i = 1; i <= n; ++i)
+      if (obj[static_cast<size_t>(i)] == o) d += "+B" + std::to_string(i), ks += "+k" + std::to_string(i);
+    den[static_cast<size_t>(o)] = d + ")*s + " + ks + ")";
+  }
   s << "[environment]\ndomain = \"s\"\nmethod = \"backward_euler\"\ntf = [";
   for (int i = 1; i <= n; ++i) {
     const std::string ci = "(k" + std::to_string(i) + " + B" + std::to_string(i) + "*s)";
+    const std::string& di = den[static_cast<size_t>(obj[static_cast<size_t>(i)])];
     s << (i > 1 ? ", [" : "[");
     for (int j = 1; j <= n; ++j) {
       const std::string cj = "(k" + std::to_string(j) + " + B" + std::to_string(j) + "*s)";
-      s << (j > 1 ? ", \"" : "\"") << (i == j ? ci + " - " + ci + "^2/" + den : "-" + ci + "*" + cj + "/" + den) << "\"";
+      s << (j > 1 ? ", \"" : "\"");
+      if (obj[static_cast<size_t>(i)] != obj[static_cast<size_t>(j)]) s << "0";
+      else s << (i == j ? ci + " - " + ci + "^2/" + di : "-" + ci + "*" + cj + "/" + di);
+      s << "\"";
     }
     s << "]";
   }

@@ -34,6 +34,8 @@ Structure structure(int which_case);        ///< 1 = case i (25), 2 = case ii (2
 TransferMatrix operator_H(int which_case);  ///< Sec. VI H(s) (case 1) or its diagonal (case 2)
 StateSpace<rational> controller27();        ///< (27), decimals read exactly
 Problem problem(int which_case, bool perturbed);
-std::string contact_scene(int N, bool active = false);
+/// `objects` > 1: the N devices split into that many groups, each touching its own Fig. 5 mass
+/// (E block diagonal: the scene decomposes, components.hpp; issue 39's multi-object scenes).
+std::string contact_scene(int N, bool active = false, int objects = 1);
 
 }  // namespace hapstab::multidof::example
