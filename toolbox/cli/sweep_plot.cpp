@@ -369,6 +369,39 @@ const RegisterFigure contour_figure({"sweep_contour", "toolbox",
                                      "passivity boundary of passivity_kb_region (n = 1) for b = 1 N s/m",
                                      kb_region_data, kb_region_vars});
 
+// The same wall against K, one line per B: the 1-D plot (`sweep plot DIR --x K --z bound`).
+const char* const line_spec = R"spec(command = "bound"
+[args]
+H = "K + B*(z-1)/(T*z)"
+T = "1/1000"
+delay = 1
+digits = 30
+[axes]
+B = { values = ["0", "1/2", "1", "2"] }
+K = { from = "0", to = "3000", points = 31 }
+)spec";
+
+void line_data(const fs::path& datadir) {
+  const fs::path spec = datadir / "sweep_line.toml", out = datadir / "sweep_line";
+  std::ofstream f = open_data_file(spec);
+  f << line_spec;
+  close_data_file(f, spec);
+  report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
+                      "hapstab sweep (b* against K)");
+  write_plot_files(read_plot_data(out, "K", "", "bound", spec_of(out)), datadir);
+}
+
+GnuplotVars line_vars(const fs::path& datadir) {
+  const fs::path out = datadir / "sweep_line";
+  const PlotData d = read_plot_data(out, "K", "", "bound", spec_of(out));
+  return plot_vars(d, datadir, "K [N/m]", "b* [N s/m]", "b* [N s/m]");
+}
+
+const RegisterFigure line_figure({"sweep_line", "toolbox",
+                                  "hapstab sweep: certified b* of the same wall against K, one line per B = 0, 1/2, 1, "
+                                  "2 N s/m (sweep plot's 1-D form, without --y)",
+                                  line_data, line_vars});
+
 }  // namespace
 
 int plot(const PlotOptions& o) {
