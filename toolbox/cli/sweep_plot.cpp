@@ -342,13 +342,19 @@ B = { from = "0", to = "2", points = 41 }
 K = { from = "0", to = "3000", points = 41 }
 )spec";
 
-void kb_region_data(const fs::path& datadir) {
-  const fs::path spec = datadir / "sweep_kb_region.toml", out = datadir / "sweep_kb_region";
+// A figure's own sweep: DATADIR/NAME.toml holds `spec`, run (resumable) into DATADIR/NAME.
+fs::path run_figure_sweep(const fs::path& datadir, const std::string& name, const char* spec_text, const std::string& what) {
+  const fs::path spec = datadir / (name + ".toml"), out = datadir / name;
   std::ofstream f = open_data_file(spec);
-  f << kb_region_spec;
+  f << spec_text;
   close_data_file(f, spec);
   report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
-                      "hapstab sweep (the (K, B) region)");
+                      "hapstab sweep (" + what + ")");
+  return out;
+}
+
+void kb_region_data(const fs::path& datadir) {
+  const fs::path out = run_figure_sweep(datadir, "sweep_kb_region", kb_region_spec, "the (K, B) region");
   write_plot_files(read_plot_data(out, "B", "K", "bound", std::nullopt), datadir);
 }
 
@@ -382,12 +388,7 @@ K = { from = "0", to = "3000", points = 31 }
 )spec";
 
 void line_data(const fs::path& datadir) {
-  const fs::path spec = datadir / "sweep_line.toml", out = datadir / "sweep_line";
-  std::ofstream f = open_data_file(spec);
-  f << line_spec;
-  close_data_file(f, spec);
-  report::run_checked({self_exe().string(), "sweep", spec.string(), "--out", out.string(), "--resume", "--quiet"},
-                      "hapstab sweep (b* against K)");
+  const fs::path out = run_figure_sweep(datadir, "sweep_line", line_spec, "b* against K");
   write_plot_files(read_plot_data(out, "K", "", "bound", spec_of(out)), datadir);
 }
 
