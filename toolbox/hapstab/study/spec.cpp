@@ -268,7 +268,8 @@ Spec parse_spec(const std::string& text, const std::string& file) {
     for (const auto& [k, v] : in_file_order(*c->as_table())) {
       if (!is_name(k) || k == "index" || k == "error" || k == "exit")
         fail(file, "set." + k, "a constant is a parameter name (letters, digits, _), not index/error/exit");
-      if (std::any_of(spec.axes.begin(), spec.axes.end(), [&](const Axis& a) { return a.name == k; }))
+      const std::string& name = k;  // a structured binding cannot be captured in C++17 (clang refuses it)
+      if (std::any_of(spec.axes.begin(), spec.axes.end(), [&](const Axis& a) { return a.name == name; }))
         fail(file, "set." + k, "is an axis too: a parameter is either constant or swept");
       spec.constants.push_back({k, number_text(*v, file, "set." + k)});
     }
