@@ -40,7 +40,9 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
     kp.detail = "R0 = -R - delta I is not positive definite";
     return kp;
   }
-  const MatrixXd RiSt = L.solve(MatrixXd(d.S.transpose())), RiBt = L.solve(MatrixXd(d.B.transpose()));
+  // (no state: empty solves; Eigen's triangular solve of an empty right-hand side touches a null pointer)
+  const MatrixXd RiSt = n > 0 ? MatrixXd(L.solve(MatrixXd(d.S.transpose()))) : MatrixXd(p, 0);
+  const MatrixXd RiBt = n > 0 ? MatrixXd(L.solve(MatrixXd(d.B.transpose()))) : MatrixXd(p, 0);
   MatrixXd Ak = d.A - d.B * RiSt;
   MatrixXd Gk = sym(d.B * RiBt);
   MatrixXd Hk = sym(-delta * MatrixXd::Identity(n, n) - d.S * RiSt);

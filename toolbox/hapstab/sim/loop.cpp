@@ -111,11 +111,13 @@ OperatorStack stack_operators(const LoopSpec& spec, int N) {
   Eigen::Index so = 0;
   for (const auto& o : spec.operators) {
     const auto n = o.Z.states();
-    st.A.block(so, so, n, n) = o.Z.A;
+    if (n > 0) st.A.block(so, so, n, n) = o.Z.A;  // a static operator has no states: no block (an empty block of an empty matrix is UB)
     for (size_t a = 0; a < o.ports.size(); ++a) {
       const int ja = o.ports[a];
-      st.B.block(so, ja, n, 1) += o.Z.B.col(Eigen::Index(a));
-      st.C.block(ja, so, 1, n) += o.Z.C.row(Eigen::Index(a));
+      if (n > 0) {
+        st.B.block(so, ja, n, 1) += o.Z.B.col(Eigen::Index(a));
+        st.C.block(ja, so, 1, n) += o.Z.C.row(Eigen::Index(a));
+      }
       for (size_t b = 0; b < o.ports.size(); ++b) st.D(ja, o.ports[b]) += o.Z.D(Eigen::Index(a), Eigen::Index(b));
       if (!o.mass.empty()) st.M(ja, ja) += o.mass[a];
     }

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include <flint/flint.h>
+
 #include "hapstab/study/run.hpp"
 
 namespace hapstab::study {
@@ -44,6 +46,7 @@ bool run_threads(uint64_t n, unsigned jobs, const std::function<void(uint64_t)>&
       if (!error) error = std::current_exception();
       stop = true;
     }
+    flint_cleanup();  // FLINT's thread-local caches (fmpz, Arb constants) belong to this thread: freed with it
     std::lock_guard<std::mutex> lock(m);
     if (--running == 0) done_cv.notify_all();
   };
