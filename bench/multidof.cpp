@@ -19,8 +19,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <sys/resource.h>
 
 #include "hapstab/multidof/design.hpp"
@@ -234,33 +237,20 @@ BENCHMARK(BM_ContactDesign)
 //                 where no structured path decides it (the plan falls back to the generic SDP).
 namespace structure {
 
-const char* kWall = R"toml([scene]
-name = "one-DOF wall behind a delay"
-T = "1/1000"
-[parameters]
-K = "STIFF"
-B = "DAMP"
-[[device]]
-name = "d"
-m = "1/10"
-b = "16"
-[[operator]]
-name = "hand"
-dofs = ["d"]
-b = "2"
-[environment]
-tf = "K + B*(z-1)/(T*z)"
-[delay]
-samples = "DELAY"
-)toml";
-
-std::string wall(int n, bool soft) {
-  std::string t = kWall;
-  auto put = [&](const std::string& key, const std::string& v) { t.replace(t.find(key), key.size(), v); };
-  put("STIFF", soft ? "50" : "20000");
-  put("DAMP", soft ? "1" : "5");
-  put("DELAY", std::to_string(n));
-  return t;
+// The wall of tests/cli/scenes/multidof_delay_wall.toml (K = 20000, B = 5 as written; soft: K = 50,
+// B = 1 by the scene's parameters) with its [delay] of one sample made n.
+Problem wall(int n, bool soft) {
+  std::ifstream in(std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/multidof_delay_wall.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  const std::string one = "samples = \"1\"";
+  const auto at = t.find(one);
+  if (at == std::string::npos) throw std::runtime_error("multidof_delay_wall.toml: no [delay] samples = \"1\"");
+  t.replace(at, one.size(), "samples = \"" + std::to_string(n) + "\"");
+  std::map<std::string, rational> set;
+  if (soft) set = {{"K", rational(50)}, {"B", rational(1)}};
+  return problem_from_scene(scene::parse_scene(t, "multidof_delay_wall.toml", set)).problem;
 }
 
 Problem from_text(const std::string& text) { return problem_from_scene(scene::parse_scene(text, "bench scene")).problem; }
@@ -290,8 +280,8 @@ Problem linked(Problem pb, const std::vector<std::pair<int, int>>& links, const 
 Problem problem(int kind, int size) {
   switch (kind) {
     case 0: return from_text(example::contact_scene(4 * size, false, size));
-    case 1: return from_text(wall(size, false));
-    case 2: return from_text(wall(size, true));
+    case 1: return wall(size, false);
+    case 2: return wall(size, true);
     case 3: return from_text(example::contact_scene(size) + "\n[delay]\nsamples = \"1\"\n");
     default: {
       std::vector<std::pair<int, int>> links;
