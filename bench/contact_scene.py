@@ -7,15 +7,17 @@ operators and N mass-damper devices (case ii: Gamma in G(N; 1, ..., 1)). Backwar
 
 With --objects K (issue 39) the N devices split into K groups, each touching its own mass (E block
 diagonal: the scene decomposes into K independent problems); with --delay D a network delay of D
-samples ([delay]).
+samples ([delay]); with --chain C each object is the first of C equal masses in a chain (mass to
+mass and the last to ground through k + B s): E has order 2C per object (`1 --chain 8`: the
+one-DOF environment of order 16 of issue 39's table).
 
-Usage: bench/contact_scene.py N [--objects K] [--delay D] > scene.toml
+Usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] > scene.toml
        build/hapstab multidof analyze --scene scene.toml
 """
 import argparse
 import sys
 
-def scene(n, objects=1, delay=0):
+def scene(n, objects=1, delay=0, chain=1):
     out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',
            '[parameters]', 'M = "0.3"', 'k = "1000"', 'B = "5"']
     for i in range(1, n + 1):
@@ -27,8 +29,14 @@ def scene(n, objects=1, delay=0):
         gain = ["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4]
         out += ['[[operator]]', f'name = "H{i}"', f'dofs = ["d{i}"]', f'tf = "{gain}*(s^2+5*s+10)/(s^2+s+1)"', '']
     obj = {i: (i - 1) * objects // n for i in range(1, n + 1)}  # object touched by device i
+    # the masses behind the first one: mass j sees the link k + B s to the one before and after it
+    # (the last: to ground); Y_j = M s^2 + 2 (k + B s) - (k + B s)^2 / Y_{j+1}, Y_C = M s^2 + 2 (k + B s)
+    behind = ''
+    for j in range(chain, 1, -1):
+        behind = f'M*s^2 + 2*(k + B*s)' + (f' - (k + B*s)^2/({behind})' if behind else '')
     den = {o: ('(M*s^2 + (B' + ''.join(f'+B{i}' for i in range(1, n + 1) if obj[i] == o) + ')*s + k'
-               + ''.join(f'+k{i}' for i in range(1, n + 1) if obj[i] == o) + ')') for o in range(objects)}
+               + ''.join(f'+k{i}' for i in range(1, n + 1) if obj[i] == o)
+               + (f' - (k + B*s)^2/({behind})' if behind else '') + ')') for o in range(objects)}
     rows = []
     for i in range(1, n + 1):
         ci = f'(k{i} + B{i}*s)'
@@ -51,7 +59,8 @@ if __name__ == '__main__':
     ap.add_argument('N', type=int, help='devices (1..256)')
     ap.add_argument('--objects', type=int, default=1, help='separate virtual objects (1..N)')
     ap.add_argument('--delay', type=int, default=0, help='network delay in samples')
+    ap.add_argument('--chain', type=int, default=1, help='masses per object, in a chain (1..32)')
     a = ap.parse_args()
-    if not 1 <= a.N <= 256 or not 1 <= a.objects <= a.N or a.delay < 0:
-        sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D]   (1 <= K <= N <= 256, D >= 0)')
-    sys.stdout.write(scene(a.N, a.objects, a.delay))
+    if not 1 <= a.N <= 256 or not 1 <= a.objects <= a.N or a.delay < 0 or not 1 <= a.chain <= 32:
+        sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C]   (1 <= K <= N <= 256, D >= 0, 1 <= C <= 32)')
+    sys.stdout.write(scene(a.N, a.objects, a.delay, a.chain))

@@ -10,10 +10,10 @@ if (!exists("datadir")) datadir = 'out/data'
 if (!exists("outdir")) outdir = 'out/figures'
 # wide = 1 (set before loading this file): a figure of several panels whose PDF / LaTeX version
 # needs 1.5x the canvas at the same font size (a two-column figure*)
-# tall = 1: two rows of panels, 1.6x the height in every format
+# tall = 1: two rows of panels, 1.6x the height in every format; tall = 2: three rows, 2.4x
 if (!exists("wide")) wide = 0
 if (!exists("tall")) tall = 0
-pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0); hf = (tall ? 1.6 : 1.0)
+pdf_w = (wide ? 9.0 : 6.0); tex_w = (wide ? 7.5 : 5.0); hf = (tall == 2 ? 2.4 : tall ? 1.6 : 1.0)
 # canvas: png 1600 x 1000 px, svg 1200 x 750, pdf pdf_w x 0.625 pdf_w in, tex tex_w x 0.62 tex_w in
 png_w = 1600.0; png_h = 1000.0*hf; svg_w = 1200.0; svg_h = 750.0*hf; pdf_h = pdf_w*0.625*hf; tex_h = tex_w*0.62*hf
 # size_w_cm, size_h_cm (set by the caller, e.g. sweep plot --size): the paper size of pdf and tex,

@@ -145,6 +145,49 @@ TEST(SceneSchema, ValuesOfTheWrongFormAreRefused) {
   EXPECT_NE(p.find("operator[0].passive: expected true or false"), std::string::npos) << p;
 }
 
+// [multidof] as the schema's typed values (scene::multidof_values, read by multidof analyze|design):
+// exact numbers mean what they mean for every other key (a fraction, a decimal, an integer, an
+// expression of T and the parameters), and a value that is none is refused naming the entry.
+TEST(SceneSchema, MultidofValuesAreTyped) {
+  const auto values = [](const std::string& add) { return scene::multidof_values(scene::parse_scene(kWall + add, "s.toml")); };
+  const auto none = values("");
+  EXPECT_FALSE(none.osp || none.perturb_C);
+  EXPECT_FALSE(none.qv_block_diagonal);
+  EXPECT_TRUE(none.mbar.empty() && none.nbar.empty());
+  const auto v = values(
+      "[multidof]\nosp = [\"137/100\"]\nperturb_C = [[\"1/2\", 3], [\"-0.25\", \"B/K\"]]\nqv_block_diagonal = true\n"
+      "[multidof.coupling]\nmbar = [1]\nnbar = [2]\n");
+  ASSERT_TRUE(v.osp && v.perturb_C);
+  EXPECT_EQ(*v.osp, std::vector<rational>{rational(137, 100)});
+  const std::vector<std::vector<rational>> pc{{rational(1, 2), rational(3)}, {rational(-1, 4), rational(1, 4000)}};
+  EXPECT_EQ(*v.perturb_C, pc);  // rows as written (the caller checks N x N); B/K = 5/20000 from [parameters]
+  EXPECT_TRUE(v.qv_block_diagonal);
+  EXPECT_EQ(v.mbar, std::vector<int>{1});
+  EXPECT_EQ(v.nbar, std::vector<int>{2});
+  EXPECT_EQ(*values("[multidof]\nosp = [\"2*T*K\"]\n").osp, std::vector<rational>{rational(40)});  // T = 1/1000
+  const auto error = [&](const std::string& add) {
+    try {
+      values(add);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  struct Case {
+    std::string add, message;
+  };
+  const std::vector<Case> cases = {
+      {"[multidof]\nosp = [\"1\", \"abc\"]\n", "s.toml: multidof.osp[1]: "},
+      {"[multidof]\nosp = [\"s + 1\"]\n", "s.toml: multidof.osp[0]: 's + 1' must be a constant"},
+      {"[multidof]\nperturb_C = [[\"1\"], [\"1/0\"]]\n", "s.toml: multidof.perturb_C[1][0]: "},
+      {"[multidof.coupling]\nnbar = [1, 2000000]\n", "s.toml: multidof.coupling.nbar[1]: 2000000 is out of range"},
+  };
+  for (const auto& c : cases) {
+    const std::string msg = error(c.add);
+    EXPECT_EQ(msg.rfind(c.message, 0), 0u) << c.add << ": " << msg;
+  }
+}
+
 // Each command refuses, by name, a part of the scene it does not model, and names the command that does.
 TEST(SceneSchema, CommandsRefuseWhatTheyDoNotModel) {
   const std::string contact = command_error(kDir + "multidof_contact.toml", "multidof analyze");

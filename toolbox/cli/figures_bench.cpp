@@ -31,7 +31,9 @@ const RegisterFigure lmi({"lmi_scaling", "toolbox",
 const RegisterFigure multidof({"multidof_scaling", "toolbox",
                                "Theorem 5 scaling: analysis time against total DOF and the fraction of random "
                                "environments certified stable, one operator (case i) against one per device (case ii); "
-                               "the contact scenes' analysis and Theorem 6 design against N",
+                               "the contact scenes' analysis and Theorem 6 design against N; the planned paths "
+                               "(decomposed, KYP/Riccati, witness) beside the generic SDP and DSDP on several objects, "
+                               "delays and infeasible scenes",
                                [](const std::filesystem::path& d) { write_bench_chart_data("multidof", d); },
                                [](const std::filesystem::path& d) { return bench_timing_vars("multidof", d); }});
 const RegisterFigure sim({"sim_speed_accuracy", "toolbox",

@@ -9,6 +9,10 @@
 //   mbar = [1, 1]                   # default: one block per device
 //   nbar = [1, 1]                   # default: 1 state per block
 //
+// The [multidof] values are the schema's typed ones (scene::multidof_values, scene/schema.hpp:
+// exact numbers as every other key, expressions of T and the parameters included); this header
+// checks them against the scene (sizes, levels, limits), naming the key.
+//
 // Device OSP levels (Assumption 1(a)) are computed from the device model (assumptions.hpp: b
 // of 1/(m s + b) exactly, else a certified lower bound). A declared `osp` is accepted only where
 // the device is proven OSP at that level (a lower level is conservative); a level above the
@@ -35,6 +39,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/limits.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/hidden_modes.hpp"
 
 namespace hapstab::multidof {
@@ -79,39 +84,29 @@ inline int delay_in_periods(const rational& delay, const rational& T, const std:
   return static_cast<int>(bmp::numerator(q).convert_to<long>());
 }
 
-inline rational scene_rational(const toml::node& n, const std::string& where) {
-  if (auto s = n.value<std::string>()) return parse_rational(*s, where);
-  if (auto i = n.value<int64_t>()) return rational(*i);
-  throw InputError(where + ": expected an exact number (string like \"1.37\" or an integer)");
-}
-
 inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   SceneProblem sp;
   Problem& pb = sp.problem;
   const std::string f = sc.file + ": ";
   if (!sc.loop.environment) throw InputError(f + "the scene has no [environment] (Theorem 5 needs E)");
   sp.E_written = *sc.loop.environment;
-  const toml::table* md = sc.root["multidof"].as_table();
   const int N = sc.loop.dofs();
   if (sp.E_written.inputs() != N || sp.E_written.outputs() != N)
     throw InputError(f + "environment is " + std::to_string(sp.E_written.outputs()) + "x" +
                      std::to_string(sp.E_written.inputs()) + " but the devices have " + std::to_string(N) +
                      " DOF (a square N x N E is required)");
-  if (md) {
-    if (auto* pc = (*md)["perturb_C"].as_array()) {
-      MatQ Pi(static_cast<Eigen::Index>(pc->size()), N);
-      for (size_t i = 0; i < pc->size(); ++i) {
-        auto* row = (*pc)[i].as_array();
-        if (!row || static_cast<int>(row->size()) != N)
-          throw InputError(f + "multidof.perturb_C must be " + std::to_string(N) + "x" + std::to_string(N));
-        for (int j = 0; j < N; ++j)
-          Pi(static_cast<Eigen::Index>(i), j) = scene_rational((*row)[static_cast<size_t>(j)], f + "multidof.perturb_C");
-      }
-      if (Pi.rows() != N) throw InputError(f + "multidof.perturb_C must be " + std::to_string(N) + "x" + std::to_string(N));
-      sp.E_written.C = Pi * sp.E_written.C;  // C_E := Pi C_E: the same transfer matrix on every realisation
-    }
-    if (auto b = (*md)["qv_block_diagonal"].value<bool>()) pb.qv_block_diagonal = *b;
+  const scene::MultidofValues md = scene::multidof_values(sc);  // [multidof], typed (scene/schema.hpp)
+  if (md.perturb_C) {
+    const auto& rows = *md.perturb_C;
+    const bool square = static_cast<int>(rows.size()) == N &&
+                        std::all_of(rows.begin(), rows.end(), [&](const auto& r) { return static_cast<int>(r.size()) == N; });
+    if (!square) throw InputError(f + "multidof.perturb_C must be " + std::to_string(N) + "x" + std::to_string(N));
+    MatQ Pi(N, N);
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) Pi(i, j) = rows[static_cast<size_t>(i)][static_cast<size_t>(j)];
+    sp.E_written.C = Pi * sp.E_written.C;  // C_E := Pi C_E: the same transfer matrix on every realisation
   }
+  pb.qv_block_diagonal = md.qv_block_diagonal;
   // Hidden modes first, on the realisations as written; then E is reduced (Theorem 5 is about
   // the input-output behaviour, valid once the hidden modes are known: multidof::premises)
   sp.loop = sc.loop;
@@ -132,9 +127,8 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   std::vector<int> dev_first;
   int off = 0;
   std::vector<MatQ> osp;
-  const toml::array* ospa = md ? (*md)["osp"].as_array() : nullptr;
-  if (ospa && ospa->size() != sc.loop.devices.size())
-    throw InputError(f + "multidof.osp has " + std::to_string(ospa->size()) + " levels but the scene has " +
+  if (md.osp && md.osp->size() != sc.loop.devices.size())
+    throw InputError(f + "multidof.osp has " + std::to_string(md.osp->size()) + " levels but the scene has " +
                      std::to_string(sc.loop.devices.size()) + " devices");
   for (size_t d = 0; d < sc.loop.devices.size(); ++d) {
     const auto& dev = sc.loop.devices[d];
@@ -146,8 +140,8 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
     const TransferMatrix G = ss2tf(dev.G);
     const DeviceLevel level = device_osp_level(G, md_mb);
     const std::string at = f + "multidof.osp[" + std::to_string(d) + "]";
-    if (ospa) {
-      const rational declared = scene_rational((*ospa)[d], at);
+    if (md.osp) {
+      const rational declared = (*md.osp)[d];
       if (declared > 0) {
         const bool ok = level.verdict.holds() && (declared <= level.lo || (!level.exact && device_is_osp(G, declared).holds()));
         if (!ok)
@@ -206,23 +200,8 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
     if (sc.loop.operators[i].ports.front() < sc.loop.operators[i - 1].ports.front())
       throw InputError(f + "operators must be listed in DOF order");
   // coupling structure
-  pb.coupling.mbar.clear();
-  pb.coupling.nbar.clear();
-  const toml::table* cp = md ? (*md)["coupling"].as_table() : nullptr;
-  auto ints = [&](const char* key, std::vector<int>& out) {
-    if (!cp) return;
-    if (auto* a = (*cp)[key].as_array()) {
-      for (const auto& e : *a) {
-        auto v = e.value<int64_t>();
-        if (!v) throw InputError(f + "multidof.coupling." + key + " must be a list of integers");
-        if (*v < -1000000 || *v > 1000000)
-          throw InputError(f + "multidof.coupling." + key + ": " + std::to_string(*v) + " is out of range");
-        out.push_back(static_cast<int>(*v));
-      }
-    }
-  };
-  ints("mbar", pb.coupling.mbar);
-  ints("nbar", pb.coupling.nbar);
+  pb.coupling.mbar = md.mbar;
+  pb.coupling.nbar = md.nbar;
   if (pb.coupling.mbar.empty())
     for (const auto& d : sc.loop.devices) pb.coupling.mbar.push_back(static_cast<int>(d.dofs()));
   if (pb.coupling.nbar.empty()) pb.coupling.nbar.assign(pb.coupling.mbar.size(), 1);

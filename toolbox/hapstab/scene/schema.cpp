@@ -7,6 +7,8 @@
 
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/escape.hpp"
+#include "hapstab/scene/reader.hpp"
+#include "hapstab/scene/scene.hpp"
 
 namespace hapstab::scene {
 
@@ -622,6 +624,43 @@ const std::vector<Key>& expectation_keys(const std::string& command) {
   const Section* s = find_section("reproduce." + c);
   if (!s) throw std::logic_error("expectation_keys: no command '" + command + "'");
   return s->keys;
+}
+
+MultidofValues multidof_values(const Scene& sc) {
+  MultidofValues v;
+  const toml::table* md = sc.root["multidof"].as_table();
+  if (!md) return v;
+  Reader c;  // the scene's T and parameters, for exact numbers written as expressions
+  c.file = sc.file;
+  c.T = sc.T;
+  c.params = sc.parameters;
+  if (const toml::array* osp = (*md)["osp"].as_array()) {
+    v.osp.emplace();
+    for (size_t d = 0; d < osp->size(); ++d) v.osp->push_back(c.number((*osp)[d], "multidof.osp[" + std::to_string(d) + "]"));
+  }
+  if (const toml::array* pc = (*md)["perturb_C"].as_array()) {
+    v.perturb_C.emplace();
+    for (size_t i = 0; i < pc->size(); ++i) {
+      const toml::array* row = (*pc)[i].as_array();
+      if (!row) c.fail("multidof.perturb_C[" + std::to_string(i) + "]", "expected a row (an array of exact numbers)");
+      auto& out = v.perturb_C->emplace_back();
+      for (size_t j = 0; j < row->size(); ++j)
+        out.push_back(c.number((*row)[j], "multidof.perturb_C[" + std::to_string(i) + "][" + std::to_string(j) + "]"));
+    }
+  }
+  if (auto b = (*md)["qv_block_diagonal"].value<bool>()) v.qv_block_diagonal = *b;
+  if (const toml::table* cp = (*md)["coupling"].as_table())
+    for (auto [key, out] : {std::pair{"mbar", &v.mbar}, std::pair{"nbar", &v.nbar}}) {
+      const toml::array* a = (*cp)[key].as_array();
+      for (size_t i = 0; a && i < a->size(); ++i) {
+        const std::string at = std::string("multidof.coupling.") + key + "[" + std::to_string(i) + "]";
+        const auto n = (*a)[i].value<int64_t>();
+        if (!n) c.fail(at, "expected an integer");
+        if (*n < -1000000 || *n > 1000000) c.fail(at, std::to_string(*n) + " is out of range");
+        out->push_back(static_cast<int>(*n));
+      }
+    }
+  return v;
 }
 
 size_t edit_distance(const std::string& a, const std::string& b) {

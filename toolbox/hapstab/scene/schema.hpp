@@ -9,11 +9,16 @@
 // the committed file).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <toml++/toml.h>
 #include <vector>
 
+#include "hapstab/numeric/scalar.hpp"
+
 namespace hapstab::scene {
+
+struct Scene;  // scene.hpp
 
 /// The TOML form a key's value must have (the section readers then check its content).
 enum class Type {
@@ -96,6 +101,24 @@ void check_command(const toml::table& root, const std::string& file, const std::
 
 /// The keys `hapstab reproduce` may state for a command ([reproduce] simulate/analyze/design).
 const std::vector<Key>& expectation_keys(const std::string& command);
+
+/// [multidof] and [multidof.coupling] (the schema's `multidof` sections) as typed values, read by
+/// the commands that model them (multidof analyze|design: multidof/scene_multidof.hpp) rather
+/// than by parse_scene, so that a scene another command runs is not refused for them. Their TOML
+/// forms were checked by parse_scene (check_schema); these readers give the values their
+/// meaning, as every other key of that type: `osp` and `perturb_C` entries are exact numbers
+/// (decimals, fractions, or constant expressions of T and the [parameters]), `mbar`/`nbar`
+/// integers in [-10^6, 10^6] (their meaning, and the limits of numeric/limits.hpp, are checked
+/// by the caller). Sizes against the scene's devices and DOFs are the caller's too: it names
+/// what they must match. Errors are InputErrors "FILE: multidof.osp[1]: 'x' is not ...", naming
+/// the key and the entry.
+struct MultidofValues {
+  std::optional<std::vector<rational>> osp;                     ///< one OSP level per device, as written
+  std::optional<std::vector<std::vector<rational>>> perturb_C;  ///< Pi's rows, as written (not yet N x N)
+  bool qv_block_diagonal = false;                               ///< Remark 3 (default false)
+  std::vector<int> mbar, nbar;  ///< [multidof.coupling]; empty when absent (the caller's defaults)
+};
+MultidofValues multidof_values(const Scene& sc);
 
 /// docs/scene.md: the schema and the command x part table, as Markdown.
 std::string schema_markdown();
