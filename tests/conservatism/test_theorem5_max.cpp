@@ -91,7 +91,7 @@ TEST(BisectVerdicts, NoYesAnywhereIsReportedAndBadInputRefused) {
 
 TEST(Theorem5Max, CaseIiWithCoupling27IsBelowLemma1sDcBoundAndTheExactBoundary) {
   const std::string text = example("multidof_case_ii_coupling.toml");
-  const auto t5 = conservatism::theorem5_max(at_kc(text), rational(1000), "kc", 4);
+  const auto t5 = conservatism::theorem5_max(at_kc(text), rational(1000), "kc", 2);
   ASSERT_TRUE(t5.lo && t5.hi) << t5.note;
   EXPECT_TRUE(t5.lo->proven() && *t5.lo->yes) << t5.lo->why;
   EXPECT_TRUE(t5.hi->proven() && !*t5.hi->yes) << t5.hi->why;
@@ -109,7 +109,7 @@ TEST(Theorem5Max, CaseIiWithCoupling27IsBelowLemma1sDcBoundAndTheExactBoundary) 
   EXPECT_GE(t5.hi->at, kc_dc * rational(999, 1000)) << "bracket [" << to_decimal(t5.lo->at, 8) << ", "
                                                    << to_decimal(t5.hi->at, 8) << "], DC bound " << to_decimal(kc_dc, 8);
   const auto ex = conservatism::exact_max_by_verdicts([&](const rational& kc) { return at_kc(text)(kc).loop; }, rational(1000),
-                                                      "kc", 4);
+                                                      "kc", 2);
   ASSERT_TRUE(ex.lo && ex.hi) << ex.note;
   EXPECT_LE(t5.lo->at, ex.hi->at) << "Theorem 5 concluded where the loop is proven NOT stable";
   const auto r = conservatism::ratio(ex.bracket(), t5);
