@@ -16,8 +16,12 @@
 // (stability/loop_as_written.hpp: hidden modes, the one-DOF exact test, the closed-loop matrix
 // with a certified Schur decision): the decider `multidof analyze` and `simulate` share.
 // JSON: stable (true|false|null), status, method, evidence, states, spectral_radius_numeric,
-// hidden_modes [{block, kind, where, stable}]. With --max NAME the scene must be one DOF
-// (stability/scene_loop.hpp) and NAME a gain of its [environment].
+// hidden_modes [{block, kind, where, stable}]. With --max NAME: a one-DOF scene without [coupling]
+// as above (stability/scene_loop.hpp, NAME a gain of its [environment]); any other scene through
+// its closed-loop matrix (stability/loop_max.hpp, NAME affine), or, where the loop is not affine in
+// NAME, by bisection on certified verdicts (conservatism/theorem5_max.hpp: a change of verdict).
+// --conservatism adds Theorem 5's largest NAME for the scene's [coupling] and the ratio exact /
+// Theorem 5 (JSON theorem5, conservatism; docs/stability.md).
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -396,7 +400,7 @@ const cli::Register reg(
        app.add_option("--H", o->H, "virtual environment H(z), e.g. \"K + B*(z-1)/(T*z)\" (force = -z^-n H x)");
        app.add_option("--T", o->T, "sample period T > 0 (exact: 0.001 or 1/1000)");
        app.add_option("--delay", o->delay, "integer delay n >= 0: z^-n (any n up to 10^6: beyond a few hundred samples the long-delay path)")->capture_default_str();
-       app.add_option("--scene", o->scene, "a scene (TOML) instead of --plant/--H/--operator/--T/--delay: its loop as written, any number of DOF (with --max: one DOF)");
+       app.add_option("--scene", o->scene, "a scene (TOML) instead of --plant/--H/--operator/--T/--delay: its loop as written, any number of DOF");
        app.add_option("--operator", o->op, "operator impedance Z_op(s) on the device (force per velocity), e.g. \"bh + kh/s\"");
        app.add_option("--set", o->sets, "parameter NAME=VALUE (repeatable)");
        app.add_option("--max", o->max_name, "gain NAME of --H (affine in it) to maximise: sup{NAME : stable on (0, sup)}");
