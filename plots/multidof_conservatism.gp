@@ -25,8 +25,8 @@ set format x (tex ? '$10^{%L}$' : '10^{%L}')
 set xtics font small
 set ytics font small
 unset key
-set multiplot layout 2,4 title (tex ? 'Largest coupling stiffness $k_c$ ($V = V_{27}/k_c$): exact vs Theorem 5' \
-                                    : 'Largest coupling stiffness k_c (V = V_{27}/k_c): exact vs Theorem 5')
+set multiplot layout 2,4 title (tex ? 'Largest coupling stiffness $k_c$ ($V = V_{27}/k_c$): exact vs Theorem 5 (ratios at g = 1)' \
+                                    : 'Largest coupling stiffness k_c (V = V_{27}/k_c): exact vs Theorem 5 (ratios at g = 1)')
 do for [k=0:6] {
   f = datadir.'/'.name.'_'.k.'.dat'
   s = datadir.'/'.name.'_'.k.'_sim.dat'
