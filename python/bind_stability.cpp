@@ -5,10 +5,11 @@
 // levels of paper 000 (lmi/passivity_level_report.hpp, as `hapstab passivity-level` reports
 // them); each scalar and vectorised over parameter columns on threads.
 //
-// `--max NAME` on a scene (the largest stable scene parameter; `hapstab stability --scene S --max
-// K`, one-DOF scenes today, multi-DOF in issue 42) is not bound yet: it belongs beside
-// stability_scene as stability_scene_max over the library function the command calls, and in
-// Python as hapstab.stability(scene=..., max="K"), which refuses it by name until then.
+// `--max NAME` on a scene (the largest stable scene parameter, any number of DOF, with
+// --conservatism Theorem 5's beside it: issue 42) is not bound here: hapstab.stability(scene=...,
+// max=..., conservatism=...) runs the command itself through _core.run (python/hapstab/__init__.py),
+// so its JSON -- three result shapes (one DOF, the certified crossing, the bisection on verdicts) --
+// has one writer.
 #include <cmath>
 #include <filesystem>
 #include <limits>

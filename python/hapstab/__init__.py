@@ -387,7 +387,8 @@ def _text(H: Any, what: str) -> str:
 
 def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: int = 0, operator: Optional[str] = None,
               max: Optional[str] = None, digits: int = 20,  # noqa: A002 -- the name of the quantity
-              params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None, *, scene: Any = None):
+              params: Optional[Mapping[str, Any]] = None, jobs: Optional[int] = None, *, scene: Any = None,
+              conservatism: bool = False):
     """Schur stability of the sampled loop: device plant(s) (force -> position, an expression in s)
     behind a zero-order hold, wall force -z^-n H(z) x(kT), optional operator impedance Z_op(s).
     A Stability (value: the spectral radius; bool: stable). With max="K" (a gain H is affine
@@ -399,8 +400,22 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
     stability::decide_loop), params its parameters. A Stability whose value is the closed loop's
     spectral radius in double (status numeric) and whose verdict (stable, verdict_status) is
     certified or exact, with the blocks' hidden modes (hidden_modes). Arrays in params: a
-    ResultArray (stable, verdict_status, states, evidence), on threads."""
+    ResultArray (stable, verdict_status, states, evidence), on threads.
+
+    scene=S with max="NAME": the largest NAME with the loop as written stable, as `hapstab
+    stability --scene S --max NAME` (the command runs it, so the numbers are its own): a MaxGain
+    whose extras are the command's JSON keys (path, stable_on or change_in, crossing, ...); with
+    conservatism=True also Theorem 5's largest NAME (theorem5: its bracket, what decided each end)
+    and the ratio exact / Theorem 5 (conservatism: [lo, hi] as decimal strings, or None). One
+    point per call (params scalars); `hapstab.sweep` runs grids."""
+    if not isinstance(conservatism, bool):
+        raise InputError(f"conservatism: expected True or False, got {conservatism!r}")
+    if conservatism and (scene is None or max is None):
+        raise InputError("conservatism=True compares Theorem 5 with the loop as written on a scene: it needs scene=... "
+                         "and max=...")
     if scene is not None:
+        if max is not None:
+            return _stability_scene_max(scene, plant, H, T, delay, operator, max, digits, params, conservatism)
         return _stability_scene(scene, plant, H, T, delay, operator, max, params, jobs)
     if plant is None or H is None:
         raise InputError("give plant and H (the device and the wall), or scene=... (a scene's loop as written)")
@@ -442,12 +457,6 @@ def _stability_scene(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operato
         given.append("delay")
     if given:
         raise InputError(f"scene replaces plant, H, operator, T and delay (the scene holds them); got {', '.join(given)}")
-    if max is not None:
-        # The largest stable scene parameter (`hapstab stability --scene S --max K`: one-DOF scenes,
-        # multi-DOF in issue 42) is not bound yet: python/bind_stability.cpp says where it goes.
-        raise InputError(f"max={max!r} with scene: not available from Python yet; `hapstab stability --scene FILE "
-                         f"--max {max}` (one-DOF scenes) computes it, or hapstab.run('stability', '--scene', FILE, "
-                         f"'--max', {max!r}, '--json')")
     s = _SceneFile(scene)
     source = s.text if s.text is not None else s.path
     fixed, names, columns, shape, arrays = _params(params)
@@ -468,6 +477,74 @@ def _stability_scene(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operato
     extra["verdict_status"] = d["status"]
     extra["decider"] = extra.pop("method")
     return Stability(rec, **extra)
+
+
+def _outward(text: Optional[str], direction: int) -> float:
+    """The float nearest the decimal `text` on its outer side (direction -1: below, +1: above)."""
+    import math
+    from fractions import Fraction
+    if text is None:
+        return float("nan")
+    if text in ("inf", "-inf"):
+        return float(text)
+    q = Fraction(text)
+    f = float(q)
+    if Fraction(f) != q and (Fraction(f) > q) != (direction > 0):
+        f = math.nextafter(f, direction * math.inf)
+    return f
+
+
+def _stability_scene_max(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operator: Any, name: Any, digits: Any,
+                         params: Optional[Mapping[str, Any]], conservatism: bool):
+    """stability(scene=..., max=NAME[, conservatism=True]): `hapstab stability --scene S --max NAME
+    [--conservatism] --json`, run by the command itself (stability/loop_max.hpp, or the bisection on
+    certified verdicts where the loop is not affine in NAME; conservatism/theorem5_max.hpp)."""
+    import json
+    import tempfile
+    from fractions import Fraction
+    given = [k for k, v in (("plant", plant), ("H", H), ("T", T), ("operator", operator)) if v is not None]
+    if delay != 0:
+        given.append("delay")
+    if given:
+        raise InputError(f"scene replaces plant, H, operator, T and delay (the scene holds them); got {', '.join(given)}")
+    if not isinstance(name, str):
+        raise InputError(f"max: expected the name of a scene parameter (a str), got {name!r}")
+    digits = integer(digits, "digits", 1, 1000)
+    fixed, names, columns, shape, arrays = _params(params)
+    if shape is not None:
+        raise InputError(f"max={name!r} with scene: one point per call (scalar params); hapstab.sweep runs a grid of them "
+                         f"(command 'stability', args scene, max, conservatism)")
+    s = _SceneFile(scene)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = s.path
+        if path is None:  # text: a file of its own (a text scene's relative paths are relative to the working folder)
+            path = os.path.join(tmp, "scene.toml")
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(s.text)
+        args = ["stability", "--scene", path, "--max", name, "--digits", str(digits), "--json"]
+        for k, v in fixed.items():
+            args += ["--set", f"{k}={v}"]
+        if conservatism:
+            args.append("--conservatism")
+        code, text = _core.run(args)
+    d = json.loads(text) if text is not None else {}
+    if "change_in" in d:  # not affine in NAME: a change of the certified verdict, not a proven supremum
+        lo_t, hi_t = d["change_in"] if d["change_in"] else (None, None)
+        value_exact, mid = None, float("nan")
+    else:
+        enc = d.get("sup_enclosure") or d.get("enclosure")
+        lo_t, hi_t = enc if enc else (d.get("max"), d.get("max"))
+        value_exact = d.get("exact")
+        mid = float(Fraction(d["max"])) if d.get("max") not in (None, "", "inf") else float(d.get("max") or "nan")
+    rec = {"value_exact": value_exact, "mid": mid, "lo": _outward(lo_t, -1), "hi": _outward(hi_t, 1), "lo_text": lo_t,
+           "hi_text": hi_t, "status": d.get("status", "failed"),
+           "method": "hapstab stability --scene --max" + (" --conservatism" if conservatism else "") + " (" +
+                     str(d.get("path", "")) + ")", "note": d.get("note", "")}
+    extra = {k: v for k, v in d.items() if k not in ("status", "note")}
+    extra["exit_code"] = code
+    extra.setdefault("conservatism", None)
+    extra.setdefault("theorem5", None)
+    return MaxGain(rec, **extra)
 
 
 # ---- paper 000: passivity levels ---------------------------------------------------------------

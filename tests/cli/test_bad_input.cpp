@@ -99,6 +99,7 @@ std::vector<Case> catalogue(const std::string& out) {
       {"stability", "--operator", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--operator", "q"}, "--operator"},
       {"stability", "--set", {"--plant", "1/s^2", "--H", "K", "--T", "1", "--set", "K"}, "--set 'K'"},
       {"stability", "--max", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--max", "K"}, "does not depend on K"},
+      {"stability", "--conservatism", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--conservatism"}, "--conservatism compares"},
       {"stability", "--max", {"--plant", "1/(m*s^2)", "--H", "1", "--T", "1", "--max", "m"}, "appears in --plant"},
       {"stability", "--scene", {"--scene", "no/such/scene.toml"}, "no/such/scene.toml"},
       {"stability", "--scene", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/hidden_env.toml", "--H", "1"}, "--scene replaces --plant, --H"},

@@ -120,3 +120,33 @@ TEST(StabilityCli, SweepsMaxOverTheDamper) {
 }
 
 }  // namespace
+
+// --conservatism (issue 42): the refusals by name, and on Sec. VI case ii with (27)/kc the JSON's
+// two brackets -- each end a certified verdict -- and a ratio >= 1 that is what the brackets give.
+TEST(StabilityCli, ConservatismRefusalsAndBrackets) {
+  const std::string ex = std::string(HAPSTAB_SOURCE_DIR) + "/examples/";
+  auto r = hapstab_test::run_cli("stability --scene " + ex + "multidof_case_ii_nominal.toml --max k --conservatism");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("[coupling]"), std::string::npos) << r.out;  // no coupling: Theorem 5 never concludes
+  r = hapstab_test::run_cli("stability --scene " + ex + "multidof_case_ii_coupling.toml --conservatism");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("--max"), std::string::npos) << r.out;
+  const auto m = run_in_process({"stability", "--scene", ex + "multidof_case_ii_coupling.toml", "--max", "kc", "--conservatism",
+                                 "--digits", "2", "--json"});
+  ASSERT_EQ(m.code, 0) << m.json.dump();
+  const auto& j = m.json;
+  EXPECT_EQ(j["path"], "bisection_on_verdicts");
+  EXPECT_EQ(j["supremum_proven"], false);
+  EXPECT_EQ(j["stable_at"]["status"], "certified");
+  EXPECT_EQ(j["unstable_at"]["status"], "certified");
+  EXPECT_EQ(j["theorem5"]["concludes_at"]["status"], "exact");
+  ASSERT_TRUE(j["theorem5"]["not_at"].is_object());
+  const double e_lo = std::stod(j["change_in"][0].get<std::string>()), e_hi = std::stod(j["change_in"][1].get<std::string>());
+  const double t_lo = std::stod(j["theorem5"]["bracket"][0].get<std::string>()),
+               t_hi = std::stod(j["theorem5"]["bracket"][1].get<std::string>());
+  const double c_lo = std::stod(j["conservatism"][0].get<std::string>()), c_hi = std::stod(j["conservatism"][1].get<std::string>());
+  EXPECT_LT(t_lo, e_hi);  // sound: Theorem 5 never concludes where the loop is NOT stable
+  EXPECT_LE(c_lo, e_lo / t_hi);  // rounded outward
+  EXPECT_GE(c_hi, e_hi / t_lo);
+  EXPECT_GE(c_hi, 1.0);
+}

@@ -410,3 +410,36 @@ TEST(Sweep, GnuParallelRecipe) {
   EXPECT_EQ(read(d / "all" / "points.csv"), read(d / "one" / "points.csv"));
   fs::remove_all(d);
 }
+
+// The multi-DOF `stability --scene S --max NAME --conservatism` (issue 42) as a sweep command: its
+// nested JSON flattens into columns (theorem5_bracket_lo, conservatism_hi, ...) that equal a single
+// run's, here over the environment gain g of Sec. VI case ii with the coupling (27)/kc.
+TEST(Sweep, MultiDofMaxWithConservatismRowsEqualASingleRun) {
+  const fs::path d = unique_dir("conservatism");
+  fs::copy_file(fs::path(HAPSTAB_SOURCE_DIR) / "examples" / "multidof_case_ii_coupling.toml", d / "coupled.toml");
+  write(d / "spec.toml", "command = \"stability\"\n[args]\nscene = \"coupled.toml\"\nmax = \"kc\"\nconservatism = true\n"
+                         "digits = 1\n[axes]\ng = { values = [\"1\", \"10\"] }\n");
+  const auto s = run_cli("sweep " + (d / "spec.toml").string() + " --out " + d.string() + "/o --quiet");
+  ASSERT_EQ(s.code, 0) << s.out;
+  const auto rows = csv_rows(d / "o" / "points.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const auto& head = rows[0];
+  const auto& row = rows[2];  // g = 10
+  EXPECT_EQ(row[column(head, "g")], "10");
+  const auto r = run_cli("stability --scene " + (d / "coupled.toml").string() + " --max kc --conservatism --digits 1 --json --set g=10");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& [key, col] : std::vector<std::pair<nlohmann::json, std::string>>{
+           {j["change_in"][0], "change_in_lo"},
+           {j["change_in"][1], "change_in_hi"},
+           {j["theorem5"]["bracket"][0], "theorem5_bracket_lo"},
+           {j["theorem5"]["bracket"][1], "theorem5_bracket_hi"},
+           {j["conservatism"][0], "conservatism_lo"},
+           {j["conservatism"][1], "conservatism_hi"}}) {
+    ASSERT_TRUE(key.is_string()) << col << ": " << r.out;
+    EXPECT_EQ(key.get<std::string>(), row[column(head, col)]) << col;
+  }
+  EXPECT_EQ(row[column(head, "path")], "bisection_on_verdicts");
+  EXPECT_GE(std::stod(row[column(head, "conservatism_hi")]), 1.0);  // Theorem 5 is sufficient only
+  fs::remove_all(d);
+}

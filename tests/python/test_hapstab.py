@@ -12,6 +12,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
 from fractions import Fraction
@@ -725,9 +726,39 @@ def test_stability_of_a_scene_over_parameter_arrays():
     assert sa[0].stable == 1 and bool(sa[0])
 
 
+def test_stability_of_a_scene_max_is_the_commands():
+    # multi-DOF --max (issue 42): the command runs it, so every number is its own. An affine gain
+    # (the environment's gain of the 2-DOF loop, a text scene): the certified supremum.
+    text = (EXAMPLES / "000_two_dof_loop.toml").read_text().replace("[parameters]\n", "[parameters]\ng = \"1\"\n", 1)
+    text = text.replace("[environment]\n", "[environment]\ngain = \"g\"\n", 1)
+    r = hapstab.stability(scene=text, max="g", digits=12)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "g.toml"
+        path.write_text(text)
+        code, j = cli("stability", "--scene", str(path), "--max", "g", "--digits", "12")
+    assert code == 0 and r.exit_code == 0 and r.path == j["path"] == "closed_loop_matrix"
+    assert r.status == j["status"] == "certified" and r.value == float(F(j["max"]))
+    assert (r.lo_exact, r.hi_exact) == tuple(j["sup_enclosure"]) and r.lo <= F(j["sup_enclosure"][0])
+    assert r.hi >= F(j["sup_enclosure"][1]) and r.crossing == j["crossing"] and r.conservatism is None
+    # with the coupling (27)/kc the loop is not affine in kc: a change of certified verdicts, and
+    # Theorem 5's bracket beside it (conservatism/theorem5_max.hpp)
+    scene = EXAMPLES / "multidof_case_ii_coupling.toml"
+    c = hapstab.stability(scene=scene, max="kc", conservatism=True, digits=1, params={"g": 10})
+    code, j = cli("stability", "--scene", str(scene), "--max", "kc", "--conservatism", "--digits", "1", "--set", "g=10")
+    assert code == 0 and c.path == j["path"] == "bisection_on_verdicts" and not c.supremum_proven
+    assert math.isnan(c.value) and (c.lo_exact, c.hi_exact) == tuple(j["change_in"])  # not called a supremum
+    assert c.lo <= F(j["change_in"][0]) and c.hi >= F(j["change_in"][1])
+    assert c.conservatism == j["conservatism"] and c.theorem5["bracket"] == j["theorem5"]["bracket"]
+    assert c.theorem5["concludes_at"] == j["theorem5"]["concludes_at"] and F(c.conservatism[1]) >= 1
+
+
 @pytest.mark.parametrize("call,match", [
     (lambda: hapstab.stability("1/s^2", scene=EXAMPLES / "000_two_dof_loop.toml"), "^scene replaces .*plant"),
-    (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", max="k1"), "^max='k1' with scene"),
+    (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", max="k1", params={"k1": [1, 2]}),
+     "^max='k1' with scene: one point per call"),
+    (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", conservatism=True), "^conservatism=True .*max="),
+    (lambda: hapstab.stability(scene=EXAMPLES / "multidof_case_ii_nominal.toml", max="k", conservatism=True),
+     r"\[coupling\]"),
     (lambda: hapstab.stability(scene=EXAMPLES / "000_two_dof_loop.toml", params={"kk": 1}), "kk"),
     (lambda: hapstab.stability(scene=SCENE_DATA / "multidof_ops.toml"), "unknown key multidof.ops"),
     (lambda: hapstab.stability(), "^give plant and H"),

@@ -16,14 +16,20 @@
 // (stability/loop_as_written.hpp: hidden modes, the one-DOF exact test, the closed-loop matrix
 // with a certified Schur decision): the decider `multidof analyze` and `simulate` share.
 // JSON: stable (true|false|null), status, method, evidence, states, spectral_radius_numeric,
-// hidden_modes [{block, kind, where, stable}]. With --max NAME the scene must be one DOF
-// (stability/scene_loop.hpp) and NAME a gain of its [environment].
+// hidden_modes [{block, kind, where, stable}]. With --max NAME: a one-DOF scene without [coupling]
+// as above (stability/scene_loop.hpp, NAME a gain of its [environment]); any other scene through
+// its closed-loop matrix (stability/loop_max.hpp, NAME affine), or, where the loop is not affine in
+// NAME, by bisection on certified verdicts (conservatism/theorem5_max.hpp: a change of verdict).
+// --conservatism adds Theorem 5's largest NAME for the scene's [coupling] and the ratio exact /
+// Theorem 5 (JSON theorem5, conservatism; docs/stability.md).
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
+#include <sstream>
 #include <memory>
 
 #include "cli/command.hpp"
+#include "hapstab/conservatism/theorem5_max.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -45,7 +51,7 @@ struct StabilityOpts {
   std::string plant, H, T, op, max_name, scene;
   std::vector<std::string> sets;
   int delay = 0, digits = 20;
-  bool json = false;
+  bool json = false, conservatism = false;
 };
 
 bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
@@ -255,6 +261,33 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   return j;
 }
 
+nlohmann::json point_json(const conservatism::PointVerdict& v) {
+  return {{"at", to_decimal(v.at, 17)}, {"status", to_string(v.status)}, {"why", v.why}};
+}
+
+/// The exact side when the closed loop is not affine in NAME (a coupling with a feedthrough):
+/// bisection on certified verdicts (conservatism/theorem5_max.hpp), a change of verdict.
+nlohmann::json verdict_change_json(const conservatism::VerdictBracket& b, const StabilityOpts& o, const std::string& why) {
+  nlohmann::json j{{"name", o.max_name}, {"path", "bisection_on_verdicts"}, {"supremum_proven", false}, {"not_affine", why},
+                   {"note", b.note}, {"verdicts", b.steps.size()}, {"digits", std::min(o.digits, 12)}};
+  j["status"] = b.lo && b.hi ? "certified" : "undecided";
+  j["max"] = nullptr;
+  j["change_in"] = b.lo && b.hi ? enclosure_json(b.bracket(), 17) : nlohmann::json(nullptr);
+  j["stable_at"] = b.lo ? point_json(*b.lo) : nlohmann::json(nullptr);
+  j["unstable_at"] = b.hi ? point_json(*b.hi) : nlohmann::json(nullptr);
+  return j;
+}
+
+nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
+  nlohmann::json j{{"criterion", "Theorem 5 concludes for the scene's coupling: Theorem 4's program with it (check_theorem4), "
+                                 "Assumption 1 and the blocks' hidden modes (docs/stability.md)"},
+                   {"note", b.note}, {"programs", b.steps.size()}, {"seconds", b.seconds}};
+  j["bracket"] = b.lo && b.hi ? enclosure_json(b.bracket(), 17) : nlohmann::json(nullptr);
+  j["concludes_at"] = b.lo ? point_json(*b.lo) : nlohmann::json(nullptr);
+  j["not_at"] = b.hi ? point_json(*b.hi) : nlohmann::json(nullptr);
+  return j;
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   scene::check_command(sc.root, o.scene, "stability");
   const std::map<std::string, rational> params = cli::parse_sets(o.sets);
@@ -262,33 +295,100 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   if (it == sc.parameters.end())
     throw InputError("--max " + o.max_name + ": the scene has no parameter " + o.max_name + " ([parameters])");
   const rational reference = it->second > 0 ? it->second : rational(1);
-  const stability::LoopAt at = [&](const rational& p) {
+  const conservatism::SceneAt scene_at = [&](const rational& p) {
     std::map<std::string, rational> q = params;
     q[o.max_name] = p;
-    return scene::load_scene(o.scene, q).loop;
+    return scene::load_scene(o.scene, q);
   };
-  const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
-  if (m.outcome == Outcome::fails) {  // a mode no parameter moves is not inside: unstable for every value
-    if (o.json) cli::print_json({{"name", o.max_name}, {"max", "0"}, {"status", "exact"}, {"path", "closed_loop_matrix"}, {"note", m.note}});
-    else std::cout << "sup " << o.max_name << " = 0   [exact]\n  " << m.note << "\n";
-    return cli::exit_property_fails;
+  const stability::LoopAt at = [&](const rational& p) { return scene_at(p).loop; };
+  // Theorem 5 first: its refusals (no [coupling], a [delay]) come before any long computation.
+  std::optional<conservatism::VerdictBracket> t5;
+  if (o.conservatism) t5 = conservatism::theorem5_max(scene_at, reference, o.max_name, std::min(o.digits, 6));
+  std::string not_affine;
+  try {
+    stability::loop_family(at, reference, o.max_name);
+  } catch (const InputError& e) {
+    not_affine = e.what();
   }
-  const nlohmann::json j = loop_max_json(m, o, sc);
+  nlohmann::json j;
+  int rc = cli::exit_ok;
+  std::optional<Enclosure<rational>> exact;  // holds the exact side's boundary (certified)
+  std::string text;
+  if (!not_affine.empty()) {
+    const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
+    j = verdict_change_json(b, o, not_affine);
+    std::ostringstream t;
+    if (b.lo && b.hi) {
+      exact = b.bracket();
+      t << o.max_name << ": stable at " << to_decimal(b.lo->at, 17) << ", NOT stable at " << to_decimal(b.hi->at, 17)
+        << "   [certified verdicts, bisection; " << sc.loop.dofs() << " DOF]\n";
+    } else if (b.lo) {  // stable at every value tried: an answer, not a failure
+      t << o.max_name << ": stable at every value tried, up to " << to_decimal(b.lo->at, 17) << "   [certified verdicts, bisection; "
+        << sc.loop.dofs() << " DOF]\n";
+    } else {
+      t << o.max_name << ": no certified stable value found\n";
+      rc = b.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_numerical;
+    }
+    t << "  " << b.note << "\n  (the closed loop is not affine in " << o.max_name
+      << ", so the certified crossing of --max does not apply: a coupling's feedthrough makes an algebraic loop)\n";
+    text = t.str();
+  } else {
+    const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
+    if (m.outcome == Outcome::fails) {  // a mode no parameter moves is not inside: unstable for every value
+      j = {{"name", o.max_name}, {"max", "0"}, {"status", "exact"}, {"path", "closed_loop_matrix"}, {"note", m.note}};
+      text = "sup " + o.max_name + " = 0   [exact]\n  " + m.note + "\n";
+      rc = cli::exit_property_fails;
+    } else {
+      j = loop_max_json(m, o, sc);
+      if (m.outcome != Outcome::holds) {
+        text = "sup " + o.max_name + ": undecided\n  " + m.note + "\n";
+        rc = cli::exit_numerical;
+      } else {
+        exact = m.sup;
+        std::ostringstream t;
+        t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
+          << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
+          << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
+          << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
+          << "  stable for every " << o.max_name << " in [" << j["stable_on"][0].get<std::string>() << ", "
+          << j["stable_on"][1].get<std::string>() << "] (certified), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
+          << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
+          << " rad/s; mode |x| per DOF:";
+        for (auto& [dof, a] : j["crossing"]["mode"].items()) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
+        t << "\n  " << m.note << "\n";
+        text = t.str();
+      }
+    }
+  }
+  if (t5) {
+    j["theorem5"] = theorem5_json(*t5);
+    const auto r = exact ? conservatism::ratio(*exact, *t5) : std::nullopt;
+    j["conservatism"] = r ? enclosure_json(*r, 4) : nlohmann::json(nullptr);
+    std::ostringstream t;
+    if (t5->lo && t5->hi)
+      t << "Theorem 5: concludes at " << o.max_name << " = " << to_decimal(t5->lo->at, 17) << ", not at "
+        << to_decimal(t5->hi->at, 17) << "   [" << t5->steps.size() << " LMI programs]\n";
+    else
+      t << "Theorem 5: no certified bracket   [" << t5->steps.size() << " LMI programs]\n";
+    t << "  " << t5->note << "\n";
+    if (t5->lo) t << "  at " << to_decimal(t5->lo->at, 17) << ": " << t5->lo->why << "\n";
+    if (t5->hi) t << "  at " << to_decimal(t5->hi->at, 17) << ": " << t5->hi->why << "\n";
+    if (r)
+      t << "conservatism: exact / Theorem 5 in [" << j["conservatism"][0].get<std::string>() << ", "
+        << j["conservatism"][1].get<std::string>() << "]   (certified: both brackets' ends are certified verdicts)\n";
+    else
+      t << "conservatism: not determined (a bracket has no certified upper end)\n";
+    text += t.str();
+    // Theorem 5 is sound: a conclusion above the exact side's NOT-stable end is a contradiction.
+    if (exact && t5->lo && t5->lo->at > exact->hi) {
+      text += "CONTRADICTION: Theorem 5 concludes above the value where the loop is proven NOT stable\n";
+      j["contradiction"] = true;
+      rc = cli::exit_numerical;
+    }
+  }
   if (o.json) cli::print_json(j);
-  else if (m.outcome != Outcome::holds) std::cout << "sup " << o.max_name << ": undecided\n  " << m.note << "\n";
-  else {
-    std::cout << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
-              << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
-              << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
-              << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
-              << "  stable for every " << o.max_name << " in [" << j["stable_on"][0].get<std::string>() << ", "
-              << j["stable_on"][1].get<std::string>() << "] (certified), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
-              << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
-              << " rad/s; mode |x| per DOF:";
-    for (auto& [dof, a] : j["crossing"]["mode"].items()) std::cout << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
-    std::cout << "\n  " << m.note << "\n";
-  }
-  return m.outcome == Outcome::holds ? cli::exit_ok : cli::exit_numerical;
+  else std::cout << text;
+  return rc;
 }
 
 const cli::Register reg(
@@ -300,13 +400,17 @@ const cli::Register reg(
        app.add_option("--H", o->H, "virtual environment H(z), e.g. \"K + B*(z-1)/(T*z)\" (force = -z^-n H x)");
        app.add_option("--T", o->T, "sample period T > 0 (exact: 0.001 or 1/1000)");
        app.add_option("--delay", o->delay, "integer delay n >= 0: z^-n (any n up to 10^6: beyond a few hundred samples the long-delay path)")->capture_default_str();
-       app.add_option("--scene", o->scene, "a scene (TOML) instead of --plant/--H/--operator/--T/--delay: its loop as written, any number of DOF (with --max: one DOF)");
+       app.add_option("--scene", o->scene, "a scene (TOML) instead of --plant/--H/--operator/--T/--delay: its loop as written, any number of DOF");
        app.add_option("--operator", o->op, "operator impedance Z_op(s) on the device (force per velocity), e.g. \"bh + kh/s\"");
        app.add_option("--set", o->sets, "parameter NAME=VALUE (repeatable)");
        app.add_option("--max", o->max_name, "gain NAME of --H (affine in it) to maximise: sup{NAME : stable on (0, sup)}");
        app.add_option("--digits", o->digits, "significant digits of --max (1..1000)")->capture_default_str();
+       app.add_flag("--conservatism", o->conservatism, "with --scene and --max: also the largest NAME for which Theorem 5 "
+                    "concludes (the scene's [coupling]) and the ratio exact / Theorem 5");
        app.add_flag("--json", o->json, "JSON output");
        return [o]() -> int {
+         if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
+           throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
          if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
            const auto sc = [&] {
@@ -326,7 +430,8 @@ const cli::Register reg(
            // beyond one DOF, or with a [coupling]: the closed-loop matrix (stability/loop_max.hpp)
            if (!(o->plant.empty() && o->H.empty() && o->op.empty() && o->T.empty() && o->delay == 0))
              throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
-           if (sc.loop.dofs() != 1 || sc.loop.devices.size() != 1 || sc.loop.operators.size() > 1 || sc.loop.coupling)
+           if (sc.loop.dofs() != 1 || sc.loop.devices.size() != 1 || sc.loop.operators.size() > 1 || sc.loop.coupling ||
+               o->conservatism)
              return run_loop_max(*o, sc);
          }
          const stability::Loop loop = make_loop(*o);
