@@ -168,6 +168,16 @@ py::dict design(const std::string& scene, bool is_text, const std::map<std::stri
     ver.append(e);
   }
   d["verification"] = ver;
+  d["path"] = r.path.empty() ? py::object(py::none()) : py::object(py::str(r.path));
+  py::list plan;  // the planner's record (multidof/planner.hpp), as the command's JSON "plan"
+  for (const auto& s : r.plan) {
+    py::dict e;
+    e["path"] = s.path;
+    e["fate"] = s.fate;
+    e["why"] = s.why;
+    plan.append(e);
+  }
+  d["plan"] = plan;
   d["loop_with_v"] = g.loop_with_v ? py::object(loop_dict(*g.loop_with_v)) : py::object(py::none());
   if (g.simulation) {
     py::dict s;

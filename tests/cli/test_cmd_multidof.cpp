@@ -219,3 +219,47 @@ TEST(CmdMultidof, VerdictLineEndsEveryOutput) {
   EXPECT_NE(verdict_line(run("multidof analyze --scene " + ex("multidof_case_i_nominal.toml")).out).find("Assumption 1 fails"),
             std::string::npos);
 }
+
+// Issue 39 item 3: two walls linked by a damper leave X a 2-dimensional facial set and do not
+// split; the planner's JSON names the path that decided (the structured path with X searched)
+// and why the pinned one did not apply, and the verdict is certified.
+TEST(CmdMultidof, PlanNamesTheSearchedPathWhereXIsNotPinned) {
+  const auto r = run("multidof analyze --json --scene " + scene29("linked_walls_2dof.toml"));
+  ASSERT_NE(r.code, 2) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["path"].get<std::string>(), "structured KYP/Riccati, X searched") << j["plan"].dump();
+  EXPECT_TRUE(j["feasible"].get<bool>() && j["certified"].get<bool>()) << j["certificate"];
+  ASSERT_EQ(j["plan"].size(), 4u) << j["plan"].dump();
+  EXPECT_EQ(j["plan"][0]["fate"].get<std::string>(), "skipped");
+  EXPECT_NE(j["plan"][0]["why"].get<std::string>().find("2-dimensional set"), std::string::npos) << j["plan"].dump();
+  EXPECT_EQ(j["plan"][1]["fate"].get<std::string>(), "decided");
+  for (size_t k : {2u, 3u}) EXPECT_EQ(j["plan"][k]["fate"].get<std::string>(), "not needed");
+  const auto h = run("multidof analyze --scene " + scene29("linked_walls_2dof.toml"));
+  EXPECT_NE(h.out.find("path: the structured KYP/Riccati, X searched path decided"), std::string::npos) << h.out;
+}
+
+// Issue 39 item 2 for design: one planner (multidof/planner.hpp) chooses the design path by its
+// premises, not by the number of DOF; the JSON says which path decided and why the others did
+// not. Sec. VI case ii: X pinned, K diagonal in V's 1x1 blocks, so the block-wise path is tried
+// at 2 DOF; its verdict is the generic design's (verified, certified). Case i perturbed: the
+// facial conditions decide before any path.
+TEST(CmdMultidof, DesignPlanNamesItsPath) {
+  const auto r = run("multidof design --json --scene " + ex("multidof_case_ii_nominal.toml"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["feasible"].get<bool>() && j["certified"].get<bool>());
+  ASSERT_EQ(j["plan"].size(), 2u) << j["plan"].dump();
+  EXPECT_EQ(j["plan"][0]["path"].get<std::string>(), "block-wise (structured KYP/Riccati)");
+  EXPECT_EQ(j["plan"][1]["path"].get<std::string>(), "generic SDP");
+  EXPECT_NE(j["path"], nlohmann::json(nullptr)) << j["plan"].dump();
+  bool one_decided = false;
+  for (const auto& s : j["plan"]) one_decided = one_decided || s["fate"].get<std::string>() == "decided";
+  EXPECT_TRUE(one_decided) << j["plan"].dump();
+  // a chosen back-end is the generic design: the block-wise path is skipped, saying why
+  const auto g = run("multidof design --json --backend ipm --scene " + ex("multidof_case_ii_nominal.toml"));
+  const auto jg = nlohmann::json::parse(g.out);
+  EXPECT_EQ(jg["plan"][0]["fate"].get<std::string>(), "skipped") << jg["plan"].dump();
+  EXPECT_NE(jg["plan"][0]["why"].get<std::string>().find("--backend"), std::string::npos) << jg["plan"].dump();
+  EXPECT_EQ(jg["path"].get<std::string>(), "generic SDP");
+  EXPECT_EQ(g.code, 0) << g.out;
+}

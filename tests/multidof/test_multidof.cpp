@@ -14,7 +14,9 @@
 #include "hapstab/multidof/assumptions.hpp"
 #include "hapstab/multidof/components.hpp"
 #include "hapstab/multidof/design.hpp"
+#include "hapstab/multidof/detail.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/multidof/loop_as_written.hpp"
 #include "hapstab/multidof/planner.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/scene/scene.hpp"
@@ -595,11 +597,14 @@ TEST(MultidofPlanner, SkippedPathsAreRecordedWithTheirPremise) {
   lmi::Options o;
   o.backend = lmi::Backend::ipm;
   const auto r = analyze(pb, o, AnalysisMode::stability_only);
-  ASSERT_EQ(r.plan.size(), 3u);
-  EXPECT_EQ(r.plan[0].fate, "skipped");
-  EXPECT_NE(r.plan[0].why.find("block diagonal"), std::string::npos) << r.plan[0].why;
-  EXPECT_EQ(r.plan[1].path, "frequency-domain witness");  // feasible: it finds no witness
-  EXPECT_EQ(r.plan[1].fate, "no point");
+  ASSERT_EQ(r.plan.size(), 4u);
+  for (int k : {0, 1}) {  // both structured paths: the constructed Q_V is not block diagonal
+    EXPECT_EQ(r.plan[static_cast<size_t>(k)].fate, "skipped");
+    EXPECT_NE(r.plan[static_cast<size_t>(k)].why.find("block diagonal"), std::string::npos) << r.plan[static_cast<size_t>(k)].why;
+  }
+  EXPECT_EQ(r.plan[1].path, "structured KYP/Riccati, X searched");
+  EXPECT_EQ(r.plan[2].path, "frequency-domain witness");  // feasible: it finds no witness
+  EXPECT_EQ(r.plan[2].fate, "no point");
   EXPECT_EQ(r.path, "generic SDP");
   EXPECT_TRUE(r.verdict.holds() && r.verdict.proven()) << r.verdict.evidence;
   // a path list with only a failing premise and no other path: an honest undecided naming it
@@ -674,6 +679,115 @@ TEST(MultidofComponents, DecomposedVerdictIsTheWholes) {
     EXPECT_NEAR(dec.Q_V_min_norm, whole.Q_V_min_norm, 1e-4 * whole.Q_V_min_norm + 1e-6) << c.what;
   }
   EXPECT_EQ(compared, 5);
+}
+
+// ---- issue 39 item 3: X with several free directions (path_kyp_search.cpp) ----
+namespace {
+// N one-DOF walls K_i + B_i (z - 1)/(T z) (T = 1/1000; A = 0, B = I, C = -diag(B)/T, D = diag(K + B/T)),
+// neighbours linked by dampers Bc (example::linked_by_dampers). E(1) = diag(K) couples no
+// operators, so the facial conditions leave X an N-dimensional set, while the links couple every
+// DOF: the scene does not split.
+Problem damper_chain(const std::vector<Q>& K, const std::vector<Q>& B, const Q& Bc, const Q& osp) {
+  const int N = static_cast<int>(K.size());
+  const Q T(1, 1000);
+  Problem pb;
+  pb.E.T = T;
+  pb.E.A = MatQ::Zero(N, N);
+  pb.E.B = MatQ::Identity(N, N);
+  pb.E.C = MatQ::Zero(N, N);
+  pb.E.D = MatQ::Zero(N, N);
+  std::vector<std::pair<int, int>> links;
+  for (int i = 0; i < N; ++i) {
+    pb.E.C(i, i) = -B[static_cast<size_t>(i)] / T;
+    pb.E.D(i, i) = K[static_cast<size_t>(i)] + B[static_cast<size_t>(i)] / T;
+    pb.structure.operators.push_back(Operator{"H" + std::to_string(i), 1, {device("d" + std::to_string(i), 1, osp)}});
+    if (i + 1 < N) links.push_back({i, i + 1});
+  }
+  return example::linked_by_dampers(pb, links, Bc);
+}
+
+// Objects (each a Fig. 5 contact problem) linked by a damper Bc between the first device of each
+// and the first of the next (example::linked_by_dampers): E(1) is the direct sum's, so the facial
+// set has one direction per object.
+Problem linked_objects(const std::vector<Problem>& objects, const Q& Bc) {
+  Problem pb = objects[0];
+  std::vector<std::pair<int, int>> links;
+  for (size_t k = 1; k < objects.size(); ++k) {
+    links.push_back({links.empty() ? 0 : links.back().second, pb.structure.m()});
+    Problem b = objects[k];
+    for (auto& o : b.structure.operators) o.name += "_" + std::to_string(k);
+    pb = direct_sum(pb, b);
+  }
+  return example::linked_by_dampers(pb, links, Bc);
+}
+}  // namespace
+
+// Where the facial conditions leave X a d-dimensional set (d > 1) and the scene does not split,
+// the planner's structured path with X searched decides: feasible, certified by the one exact
+// re-check, and the generic SDP (the whole, one program) agrees with the same status; where (16)
+// is infeasible no g passes and the path's witness at several frequencies certifies it (the
+// generic SDP, where it decides, agrees).
+TEST(MultidofPlanner, SearchedXDecidesWhereTheFacialSetHasSeveralDirections) {
+  struct Case {
+    const char* what;
+    Problem pb;
+    size_t d;
+    bool feasible;
+  };
+  std::vector<Case> cases{
+      {"2 walls linked by a damper", damper_chain({Q(2000), Q(3000)}, {Q(2), Q(3)}, Q(4), q("1.37")), 2, true},
+      {"3 walls in a damper chain, stiff and soft", damper_chain({Q(20000), Q(500), Q(5000)}, {Q(5), Q(1), Q(2)}, Q(3), Q(16)),
+       3, true},
+      {"2 contact objects (3 + 2 devices) linked by a damper",
+       linked_objects({contact_problem(3, 1, Q(1), {}, q("1.37")), contact_problem(2, 2, Q(1), {}, q("1.37"))}, Q(2)), 2,
+       true},
+      {"3 contact objects linked by dampers, miscalibrated first",
+       linked_objects({contact_problem(2, 3, Q(1), {Q(1, 2), Q(3, 2)}, q("1.37")), contact_problem(2, 4, Q(1), {}, q("1.37")),
+                       contact_problem(1, 5, Q(1), {}, q("1.37"))},
+                      Q(1)),
+       3, true},
+      {"2 walls linked, one sample of delay, almost no device damping: infeasible",
+       delayed(damper_chain({Q(20000), Q(30000)}, {Q(2), Q(3)}, Q(4), q("1/1000000"))), 2, false},
+      {"3 walls in a damper chain with negative wall damping (E lacks passivity): infeasible",
+       damper_chain({Q(2000), Q(3000), Q(1000)}, {Q(-5), Q(-1), Q(-3)}, Q(4), q("1.37")), 3, false},
+  };
+  int decided_by_search = 0, certified_infeasible = 0, compared = 0;
+  for (const auto& c : cases) {
+    ASSERT_EQ(components(c.pb).size(), 1u) << c.what;  // the scene does not split
+    ASSERT_EQ(facial_conditions(c.pb).gamma_basis.size(), c.d) << c.what;
+    lmi::Options o;
+    o.backend = lmi::Backend::ipm;
+    const auto planned = analyze_with(c.pb, {kyp_riccati_path(false), kyp_search_path(false), frequency_witness_path(),
+                                             generic_sdp_path()},
+                                      o, AnalysisMode::stability_only);
+    const auto generic = analyze(c.pb, o, AnalysisMode::stability_only, AnalysisPath::generic_sdp);
+    ASSERT_EQ(planned.plan.size(), 4u) << c.what;
+    EXPECT_EQ(planned.plan[0].fate, "skipped") << c.what;  // X is not pinned
+    EXPECT_NE(planned.plan[0].why.find(std::to_string(c.d) + "-dimensional set"), std::string::npos) << planned.plan[0].why;
+    EXPECT_EQ(planned.plan[1].path, "structured KYP/Riccati, X searched");
+    if (c.feasible) {
+      EXPECT_EQ(planned.path, "structured KYP/Riccati, X searched") << c.what << ": " << planned.verdict.evidence;
+      EXPECT_TRUE(planned.verdict.holds() && planned.verdict.proven()) << c.what << ": " << planned.verdict.evidence;
+      EXPECT_NE(planned.solver_detail.find(std::to_string(c.d) + "-dimensional set"), std::string::npos);
+      decided_by_search += planned.path == "structured KYP/Riccati, X searched";
+      // X on the facial set, min g_i = 1
+      EXPECT_NEAR(planned.X.diagonal().minCoeff(), 1.0, 1e-15) << c.what;
+    } else {  // no g passes: the searched path's witness at several frequencies proves it
+      EXPECT_EQ(planned.path, "structured KYP/Riccati, X searched") << c.what << ": " << planned.verdict.evidence;
+      EXPECT_TRUE(planned.verdict.fails() && planned.verdict.proven()) << c.what << ": " << planned.verdict.evidence;
+      EXPECT_NE(planned.verdict.evidence.find("exact frequency-domain witness at"), std::string::npos) << c.what;
+      ++certified_infeasible;
+    }
+    // the generic SDP on the whole agrees where it decides (on the infeasible scenes it mostly
+    // says "numeric only" or cannot decide: what the witness certifies), and proves no less
+    if (!generic.verdict.decided()) continue;
+    EXPECT_EQ(planned.verdict.outcome, generic.verdict.outcome) << c.what << ": " << planned.verdict.evidence;
+    if (generic.verdict.proven()) EXPECT_TRUE(planned.verdict.proven()) << c.what;
+    ++compared;
+  }
+  EXPECT_EQ(decided_by_search, 4);
+  EXPECT_EQ(certified_infeasible, 2);
+  EXPECT_GE(compared, 4);
 }
 
 // ---- issue 39: certified infeasibility by a frequency-domain witness (path_witness.cpp) ----
@@ -924,4 +1038,37 @@ tf = "20000 + 5*(z-1)/(T*z)"
   }
   const SceneProblem low = problem_from_scene(scene::parse_scene(base + "[multidof]\nosp = [\"8\"]\n", "osp.toml"));
   EXPECT_EQ(low.problem.structure.delta_D()(0, 0), 8);
+}
+
+// ---- issue 39: Theorem 4's program for a given coupling, the frequency-domain witness first ----
+// The consistency campaign's case 2652 (tests/cli/scenes/theorem4_witness_8dof.toml): Theorem 4's
+// program for the scene's coupling is infeasible; the exact Farkas row reduction on Boost
+// rationals took 4 min; the witness (path_witness.cpp, theorem4_witness) proves it from a sweep. Sound either way: the loop
+// itself is stable (Theorem 4 is sufficient only), which the closed-loop decider certifies. And
+// where Theorem 4 holds (Sec. VI case i with the paper's (27)) the sweep finds no witness and the
+// program's exact re-check decides, as before.
+TEST(MultidofWitness, Theorem4ProgramInfeasibleByWitness) {
+  const auto sp = problem_from_scene(
+      scene::load_scene(std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/theorem4_witness_8dof.toml"));
+  ASSERT_TRUE(sp.loop.coupling.has_value());
+  const StateSpace<Q>& V = *sp.loop.coupling;
+  const MatQ K = sp.problem.structure.K(sp.problem.T());
+  std::string tried;
+  const auto w = multidof::detail::theorem4_witness(sp.problem, facial_conditions(sp.problem, {MatQ(dc_gain(V) - K)}), vhat(V, K), tried);
+  ASSERT_TRUE(w.has_value()) << tried;
+  EXPECT_TRUE(w->fails() && w->proven()) << w->evidence;
+  // the loop as written: check_theorem4 proves the program infeasible (the solve's exact Farkas
+  // check does not conclude here; the witness does), and the loop itself is certified stable -- no
+  // contradiction, Theorem 4 being sufficient only
+  const auto loop = loop_as_written(sp, true);
+  EXPECT_NE(loop.why.find("infeasible, certified by a frequency-domain witness"), std::string::npos) << loop.why;
+  EXPECT_EQ(loop.stable, std::optional<bool>(true)) << loop.why;
+  // where Theorem 4 holds (Sec. VI case i with the paper's (27)) no witness may be found
+  const Problem p1 = example::problem(1, false);
+  const StateSpace<Q> V27 = example::controller27();
+  const MatQ K1 = p1.structure.K(p1.T());
+  EXPECT_FALSE(multidof::detail::theorem4_witness(p1, facial_conditions(p1, {MatQ(dc_gain(V27) - K1)}), vhat(V27, K1), tried))
+      << tried;
+  const auto holds = check_theorem4(p1, V27);
+  EXPECT_TRUE(holds.verdict.holds() && holds.verdict.proven()) << holds.verdict.evidence;
 }

@@ -79,6 +79,7 @@
 #include "hapstab/multidof/components.hpp"
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/detail.hpp"
+#include "hapstab/multidof/example.hpp"
 #include "hapstab/multidof/loop_as_written.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/passivity/bound.hpp"
@@ -907,9 +908,12 @@ bool check_multidof_blockwise(std::mt19937_64& g, std::ostream& why) {
 // Random Theorem 5 problems with N = 2-12 devices on K = 1-4 separate virtual objects (Fig. 5
 // masses, E block diagonal: the scene decomposes), random stiffness/damping,
 // device OSP levels from 1e-6 to 3, and a delay of 1-2 samples in 35% (E := z^-d E per DOF:
-// infeasible scenes come from there). The code under test is analyze()'s
-// automatic plan (decomposed -> structured KYP/Riccati -> frequency-domain witness -> generic
-// SDP); the references are other routes: per component, the generic SDP alone (lmi's IPM, one
+// infeasible scenes come from there). In 40% of the scenes with N <= 6 and K >= 2 the objects
+// are linked by dampers (example::linked_by_dampers, drawn last so that the other scenes stay
+// as they were): the scene then does not split and the facial conditions leave X a
+// K-dimensional set (issue 39 item 3). The code under test is analyze()'s
+// automatic plan (decomposed -> structured KYP/Riccati -> the same with X searched ->
+// frequency-domain witness -> generic SDP); the references are other routes: per component, the generic SDP alone (lmi's IPM, one
 // program over P11, X); for small wholes (m <= 6, no delay), one generic SDP over the whole
 // scene (no decomposition). A miss: a proven planned verdict that a decided reference contradicts
 // (a numeric reference too: the IPM's "infeasible, numeric only" is what the witness certifies),
@@ -917,10 +921,10 @@ bool check_multidof_blockwise(std::mt19937_64& g, std::ostream& why) {
 // than 2 DOF are not compared (the generic SDP takes minutes there) and counted as skipped.
 struct PathsTally {
   long multi_object = 0, whole_compared = 0, components_compared = 0, delayed_compared = 0, infeasible_compared = 0,
-       witness = 0, structured = 0, generic = 0, numeric_references = 0, skipped = 0;
+       witness = 0, structured = 0, searched = 0, linked_compared = 0, generic = 0, numeric_references = 0, skipped = 0;
 } paths_tally;
 
-multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& delay) {
+multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& delay, bool& linked) {
   const int N = static_cast<int>(uniform(g, 2, 12));
   objects = static_cast<int>(uniform(g, 1, std::min(4, N)));
   delay = chance(g, 0.35) ? static_cast<int>(uniform(g, 1, 2)) : 0;
@@ -947,14 +951,22 @@ multidof::Problem random_paths_problem(std::mt19937_64& g, int& objects, int& de
     }
     whole = o == 0 ? object : multidof::direct_sum(whole, object);
   }
+  linked = false;
+  if (N <= 6 && objects >= 2 && chance(g, 0.4)) {  // the first device of each object to the next one's
+    std::vector<std::pair<int, int>> links;
+    for (int o = 0; o + 1 < objects; ++o) links.push_back({o * N / objects, (o + 1) * N / objects});
+    whole = multidof::example::linked_by_dampers(whole, links, rational(uniform(g, 1, 8), 2));
+    linked = true;
+  }
   return whole;
 }
 
 bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
   int objects = 1, delay = 0;
-  const multidof::Problem pb = random_paths_problem(g, objects, delay);
-  why << "multidof_paths problem: " << pb.structure.m() << " devices, " << objects << " objects, delay " << delay
-      << " samples, E of order " << pb.E.states() << "\n";
+  bool linked = false;
+  const multidof::Problem pb = random_paths_problem(g, objects, delay, linked);
+  why << "multidof_paths problem: " << pb.structure.m() << " devices, " << objects << " objects"
+      << (linked ? " linked by dampers" : "") << ", delay " << delay << " samples, E of order " << pb.E.states() << "\n";
   lmi::Options ipm;
   ipm.backend = lmi::Backend::ipm;
   const auto planned = multidof::analyze(pb, {}, multidof::AnalysisMode::stability_only);
@@ -974,6 +986,7 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
   if (comps.size() > 1) ++paths_tally.multi_object;
   // per component: the generic SDP alone
   bool all_hold = true, any_fail = false;
+  std::optional<Verdict> whole_ref;  // the generic SDP over the whole, when it was solved
   for (size_t k = 0; k < comps.size(); ++k) {
     const Verdict& mine = comps.size() > 1 ? planned.components[k].verdict : planned.verdict;
     all_hold = all_hold && mine.holds() && mine.proven();
@@ -986,14 +999,17 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
     }
     const auto ref = multidof::analyze(comps[k].problem, ipm, multidof::AnalysisMode::stability_only,
                                        multidof::AnalysisPath::generic_sdp);
+    if (comps.size() == 1) whole_ref = ref.verdict;
     const std::string& path = comps.size() > 1 ? planned.components[k].path : planned.path;
     paths_tally.witness += path == "frequency-domain witness";
     paths_tally.structured += path == "structured KYP/Riccati";
+    paths_tally.searched += path == "structured KYP/Riccati, X searched";
     paths_tally.generic += path == "generic SDP";
     long before = paths_tally.components_compared;
     compare(mine, ref.verdict, "component " + std::to_string(k + 1), paths_tally.components_compared);
     if (paths_tally.components_compared > before) {
       if (delay > 0) ++paths_tally.delayed_compared;
+      if (linked) ++paths_tally.linked_compared;
       if (mine.fails()) ++paths_tally.infeasible_compared;
     }
   }
@@ -1005,9 +1021,10 @@ bool check_multidof_paths(std::mt19937_64& g, std::ostream& why) {
       ok = false, why << "  a component proven infeasible, the decomposed verdict is not: " << planned.verdict.evidence << "\n";
   }
   // small wholes: one generic SDP over the whole scene
-  if (pb.structure.m() <= 6 && delay == 0) {
-    const auto whole = multidof::analyze(pb, ipm, multidof::AnalysisMode::stability_only, multidof::AnalysisPath::generic_sdp);
-    compare(planned.verdict, whole.verdict, "the whole (one generic SDP)", paths_tally.whole_compared);
+  if (pb.structure.m() <= 6 && delay == 0) {  // one component: its reference above is this program
+    if (!whole_ref)
+      whole_ref = multidof::analyze(pb, ipm, multidof::AnalysisMode::stability_only, multidof::AnalysisPath::generic_sdp).verdict;
+    compare(planned.verdict, *whole_ref, "the whole (one generic SDP)", paths_tally.whole_compared);
   }
   return ok;
 }
@@ -1517,6 +1534,9 @@ int main(int argc, char** argv) {
       {"multidof_paths", "infeasible components compared", 0.1, &paths_tally.infeasible_compared},
       {"multidof_paths", "small wholes compared with one generic SDP", 0.12, &paths_tally.whole_compared},
       {"multidof_paths", "components decided by the structured path", 0.6, &paths_tally.structured},
+      // issue 39 item 3: objects linked by dampers, X searched over a d-dimensional facial set
+      {"multidof_paths", "linked scenes compared with the generic SDP", 0.04, &paths_tally.linked_compared},
+      {"multidof_paths", "components decided by the structured path with X searched", 0.04, &paths_tally.searched},
       {"consistency", "scenes whose verdicts were compared with a simulation", 0.2, &consistency_tally.compared},
       {"consistency", "multi-DOF loops decided", 0.1, &consistency_tally.multi_dof},
       {"consistency", "one-DOF loops decided by both deciders", 0.1, &consistency_tally.two_deciders},
@@ -1592,10 +1612,11 @@ int main(int argc, char** argv) {
                   multidof_tally.applicable, multidof_tally.designed, multidof_tally.t5_feasible, multidof_tally.settled,
                   multidof_tally.steady);
     if (name == "multidof_paths")
-      std::printf("          (decided by the structured path %ld, the witness %ld, the generic SDP %ld components; proven\n"
-                  "           verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes; of them against a\n"
-                  "           numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
-                  paths_tally.structured, paths_tally.witness, paths_tally.generic, paths_tally.components_compared,
+      std::printf("          (decided by the structured path %ld, with X searched %ld, the witness %ld, the generic SDP %ld\n"
+                  "           components; proven verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes;\n"
+                  "           of them against a numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
+                  paths_tally.structured, paths_tally.searched, paths_tally.witness, paths_tally.generic,
+                  paths_tally.components_compared,
                   paths_tally.delayed_compared, paths_tally.infeasible_compared, paths_tally.whole_compared,
                   paths_tally.numeric_references, paths_tally.skipped);
     if (name == "multidof_blockwise")

@@ -21,7 +21,8 @@
 // JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
 //   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict (pass|fail|
 //   undecided), certified, detail}], loop_with_v (as loop_as_written, for the loop with the designed
-//   V), facial_reduction, hidden_modes, warning (the simulation's numeric observation, or null),
+//   V), facial_reduction, path (the design path that decided, or null), plan [{path, fate, why}]
+//   (multidof/planner.hpp: every design path's fate), hidden_modes, warning (the simulation's numeric observation, or null),
 //   contradiction (a simulation against a certificate, or null: exit 3), message, assumptions.
 // It also registers Fig. 6 and Fig. 7 of paper 000 (`hapstab figure multidof_fig6|multidof_fig7`):
 // velocity data without coupling, with the designed V and with the paper's (27).
@@ -145,9 +146,9 @@ std::string law_word(const multidof::LoopAsWritten& l) {
 }
 
 // The planner's record (multidof/planner.hpp): each path, what became of it and why.
-json plan_json(const multidof::AnalysisResult& r) {
+json plan_json(const std::vector<multidof::PlanStep>& plan) {
   json a = json::array();
-  for (const auto& s : r.plan) a.push_back({{"path", s.path}, {"fate", s.fate}, {"why", s.why}});
+  for (const auto& s : plan) a.push_back({{"path", s.path}, {"fate", s.fate}, {"why", s.why}});
   return a;
 }
 
@@ -160,15 +161,18 @@ json components_json(const multidof::AnalysisResult& r) {
   return a;
 }
 
+std::string plan_text(const std::string& path, const std::vector<multidof::PlanStep>& plan) {
+  if (path == "facial conditions") return "path: none needed: the facial conditions decided, exactly, before any path ran";
+  std::string t = "path: " + (path.empty() ? std::string("no path decided") : "the " + path + " path decided");
+  for (const auto& s : plan)
+    if (s.fate != "decided") t += "; " + s.path + ": " + s.fate + (s.why.empty() || s.fate == "not needed" ? "" : " (" + s.why + ")");
+  return t;
+}
 std::string plan_text(const multidof::AnalysisResult& r) {
   if (!r.components.empty())
     return "path: decomposed: the scene splits into " + std::to_string(r.components.size()) +
            " independent components (E block diagonal exactly, no operator spans two), each planned alone:";
-  if (r.path == "facial conditions") return "path: none needed: the facial conditions decided, exactly, before any path ran";
-  std::string t = "path: " + (r.path.empty() ? std::string("no path decided") : "the " + r.path + " path decided");
-  for (const auto& s : r.plan)
-    if (s.fate != "decided") t += "; " + s.path + ": " + s.fate + (s.why.empty() || s.fate == "not needed" ? "" : " (" + s.why + ")");
-  return t;
+  return plan_text(r.path, r.plan);
 }
 
 // The scene, its reading timed (multidof::SceneAnalysisOptions::load_seconds).
@@ -205,7 +209,7 @@ int run_analyze(const Opts& o) {
          {"facial_reduction", r.facial.explanation},
          {"solver", r.solver_detail},
          {"path", r.path},
-         {"plan", plan_json(r)},
+         {"plan", plan_json(r.plan)},
          {"components", components_json(r)},
          {"assumptions", assumptions_json(a.premises)},
          {"seconds", {{"realisation", a.seconds.realisation},
@@ -313,6 +317,8 @@ int run_design(const Opts& o) {
          {"verification", ver},
          {"loop_with_v", d.loop_with_v ? law_json(*d.loop_with_v) : json(nullptr)},
          {"facial_reduction", r.facial.explanation},
+         {"path", r.path.empty() ? json(nullptr) : json(r.path)},
+         {"plan", plan_json(r.plan)},
          {"hidden_modes", hidden_json(sp.hidden)},
          {"warning", d.warning.empty() ? json(nullptr) : json(d.warning)},
          {"contradiction", d.contradiction.empty() ? json(nullptr) : json(d.contradiction)},
@@ -325,6 +331,7 @@ int run_design(const Opts& o) {
               << (certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged")
               << " after " << r.iterations << " iterations. " << r.verdict.evidence << "\n";
     if (!r.facial.explanation.empty()) std::cout << "  " << r.facial.explanation << "\n";
+    std::cout << "  " << plan_text(r.path, r.plan) << "\n";
     if (hasV)
       std::cout << "A_V =\n" << multidof::to_double(r.V.A) << "\nB_V =\n" << multidof::to_double(r.V.B) << "\nC_V =\n"
                 << multidof::to_double(r.V.C) << "\nD_V =\n" << multidof::to_double(r.V.D) << "\n";

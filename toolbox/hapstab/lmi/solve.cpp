@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "hapstab/lmi/standard_form.hpp"
+#include "hapstab/numeric/flint.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interrupt.hpp"
@@ -233,15 +234,21 @@ bool projected_ray_holds(const FarkasSystem& fs, const Reduction& rd, std::vecto
                          rational& obj) {
   const int K = fs.K;
   const std::vector<rational> r = ray_residuals(fs, Z);
-  std::vector<std::vector<rational>> aug(static_cast<size_t>(K));  // [M | r]
+  // [M | r] in reduced row echelon form by FLINT (fraction-free, multimodular): Gauss-Jordan on
+  // Boost rationals spent minutes here (consistency case 2652, K ~ 200: entries of thousands of bits)
+  flint::QMat aug(K, K + 1);
   for (int k = 0; k < K; ++k) {
-    aug[static_cast<size_t>(k)].assign(static_cast<size_t>(K + 1), rational(0));
-    for (int c = 0; c < K; ++c) aug[static_cast<size_t>(k)][static_cast<size_t>(c)] = fs.M(k, c);
-    aug[static_cast<size_t>(k)][static_cast<size_t>(K)] = r[static_cast<size_t>(k)];
+    for (int c = 0; c < K; ++c) flint::set(aug.at(k, c), fs.M(k, c));
+    flint::set(aug.at(k, K), r[static_cast<size_t>(k)]);
   }
-  const std::vector<int> piv = row_reduce(aug, K);
+  flint::QMat R(K, K + 1);
+  const long rank = fmpq_mat_rref(R.get(), aug.get());
   std::vector<rational> mu(static_cast<size_t>(K), rational(0));
-  for (size_t q = 0; q < piv.size(); ++q) mu[static_cast<size_t>(piv[q])] = aug[q][static_cast<size_t>(K)];
+  for (long i = 0, j = 0; i < rank; ++i) {
+    while (j <= K && fmpq_is_zero(R.at(i, j))) ++j;
+    if (j >= K) return false;  // r is not in the range of M: no projection (cannot happen for a Gram matrix)
+    mu[static_cast<size_t>(j++)] = flint::to_rational(R.at(i, K));
+  }
   bool ok = true, strict_nonzero = false;
   obj = 0;
   for (size_t j = 0; j < Z.size() && ok; ++j) {

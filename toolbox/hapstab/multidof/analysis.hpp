@@ -131,16 +131,19 @@ enum class AnalysisMode { full, stability_only };
 ///                dissipative coupling, when Delta_D X_1 = d I: Q_E enters the first LMI only as
 ///                -Q_E and Q_V > f(Q_E) = Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E is matrix monotone,
 ///                so the minimum is along Q_E = r I: bisection on r (DARE solvability), the point
-///                re-checked exactly; otherwise that step runs the generic program. X not pinned,
+///                re-checked exactly; otherwise that step runs the generic program. When the
+///                facial conditions leave X a d-dimensional set (d > 1), the same path with X
+///                searched (path_kyp_search.cpp: an outer search over X = sum g_i X_i by the KYP
+///                lemma's frequency form, linear in g; the Riccati point at the X it chose).
 ///                Problem::qv_block_diagonal, no Riccati point or a failed exact check: the whole
 ///                analysis falls back to generic_sdp (never a weaker verdict).
-///   automatic    the planner (planner.hpp) tries kyp_riccati whenever its premises hold (X
-///                pinned, Q_V not block diagonal, the automatic back-end), whatever the number of
-///                DOF, then generic_sdp: the path is chosen by cost, not by size. AnalysisResult::
-///                path and ::plan say which path decided and why the others did not apply.
+///   automatic    the planner (planner.hpp) tries the structured paths whenever their premises
+///                hold (X pinned, or X searched over d > 1 directions; Q_V not block diagonal; the
+///                automatic back-end), whatever the number of DOF, then the frequency-domain
+///                witness, then generic_sdp: the path is chosen by cost, not by size.
+///                AnalysisResult::path and ::plan say which path decided and why the others did
+///                not apply.
 enum class AnalysisPath { automatic, generic_sdp, kyp_riccati };
-/// Theorem 6's automatic design path (design.hpp) goes block-wise from this many DOF on.
-inline constexpr int kKypMinDof = 8;
 
 /// InputError when a generic SDP on pb would need a Schur complement above
 /// limits::generic_sdp_bytes (`extra_unknowns` beside E's storage P11), naming the order and the

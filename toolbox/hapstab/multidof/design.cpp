@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "hapstab/multidof/detail.hpp"
+#include "hapstab/multidof/planner.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 
@@ -437,19 +438,22 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
   return out;
 }
 
-// Theorem 6 block by block (design.hpp). nullopt when the path does not apply or finds nothing:
-// the caller runs the generic design.
+// Theorem 6 block by block (design.hpp), its premises checked by blockwise_premises. nullopt
+// (with `why`) when the structured point or a block's CCL finds nothing: the planner moves on.
 std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
-                                             const DesignOptions& opt) {
+                                             const DesignOptions& opt, std::string& why) {
   const int m = pb.structure.m();
-  if (opt.path == DesignPath::generic_sdp) return std::nullopt;
-  if (opt.path == DesignPath::automatic && (opt.lmi.backend != lmi::Backend::automatic || m < kKypMinDof))
-    return std::nullopt;
   const std::vector<CouplingBlock> blocks = coupling_blocks(pb.coupling);
   const MatQ K = pb.structure.K(pb.T());
-  if (!block_diagonal_in(K, blocks)) return std::nullopt;
   const std::optional<KypMinPoint> mp = kyp_min_point(pb, sp, fc);
-  if (!mp || !mp->certified) return std::nullopt;
+  if (!mp) {
+    why = "no Riccati point along Q_E = r I or s Delta_D X (Delta_D X not diagonal, or no stabilising solution)";
+    return std::nullopt;
+  }
+  if (!mp->certified) {
+    why = "the structured least dissipative point failed the exact re-check (" + mp->why + ")";
+    return std::nullopt;
+  }
   // each block designed for (1 + kBlockwiseMargin) Q_V (diagonal), verified at Q_V
   const double T = to_real<double>(pb.T());
   const MatrixXd X = to_double(mp->env.X);
@@ -475,7 +479,10 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
           return d;
         },
         b.n + b.m, false, b.m, opt);
-    if (!run.started) return std::nullopt;  // no point for this block: the generic design decides
+    if (!run.started) {  // no point for this block: the generic design decides
+      why = "CCL found no starting point for block " + std::to_string(&b - blocks.data() + 1) + " of V";
+      return std::nullopt;
+    }
     StateSpace<rational> Vb = coupling_from(pb.T(), b.n, run.last, run.dv, gamma.segment(b.c, b.m));
     project_coupling(Vb, square(K, b), square(mp->env.X, b));
     res.V.A.block(b.s, b.s, b.n, b.n) = Vb.A;
@@ -516,6 +523,11 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
 
 }  // namespace
 
+namespace {
+// Theorem 6 by the generic program (19)-(20) and CCL (design.hpp), then verify_coupling.
+DesignResult design_generic(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc, const DesignOptions& opt);
+}  // namespace
+
 DesignResult design(const Problem& pb, const DesignOptions& opt) {
   pb.validate(true);
   DesignResult res;
@@ -525,15 +537,67 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   res.facial = fc;
   if (!fc.symmetric_possible) {
     res.verdict = {Outcome::fails, Status::exact, "no solution: the convex part (19) is infeasible (exact): " + fc.explanation};
+    res.path = "facial conditions";
+    for (const char* p : {"block-wise (structured KYP/Riccati)", "generic SDP"})
+      res.plan.push_back({p, "not needed", "the facial conditions decided, exactly"});
     return res;
   }
   const EhatSplit sp = ehat_split(pb.E);
-  if (std::optional<DesignResult> bw = design_blockwise(pb, sp, fc, opt)) {
-    bw->facial = fc;
-    return *bw;
+  // one planner (planner.hpp, run_plan): the block-wise path whenever its premises hold, whatever
+  // the number of DOF (it is the cheaper: one small CCL per block of V), then the generic design
+  std::vector<StudyPath<DesignResult>> paths;
+  paths.push_back({"block-wise (structured KYP/Riccati)",
+                   [&] {
+                     if (opt.path == DesignPath::generic_sdp) return Premises::unmet("the generic design was asked for");
+                     if (opt.path == DesignPath::automatic && opt.lmi.backend != lmi::Backend::automatic)
+                       return Premises::unmet("an SDP back-end was chosen (--backend): that is the generic design");
+                     if (!block_diagonal_in(pb.structure.K(pb.T()), coupling_blocks(pb.coupling)))
+                       return Premises::unmet("K is not block diagonal in V's blocks (mbar)");
+                     std::string why;
+                     if (!pinned_x(pb, sp, fc, &why)) return Premises::unmet(why);
+                     return Premises::met();
+                   },
+                   [&](std::string& why, bool& decided) {
+                     std::optional<DesignResult> r = design_blockwise(pb, sp, fc, opt, why);
+                     decided = r && r->verdict.holds() && r->verdict.proven();
+                     if (r && !decided) why = "its coupling was not verified: " + r->verdict.evidence;
+                     return r;
+                   }});
+  paths.push_back({"generic SDP",
+                   [&] {
+                     const std::string too_big = generic_size_exceeded(
+                         pb, m * (m + 1) + static_cast<long>(nQ) * (nQ + 1) + 2L * m * m + static_cast<long>(pb.coupling.n()) * (pb.coupling.n() + 2 * m),
+                         "Theorem 6's generic design program (19)-(20)");
+                     return too_big.empty() ? Premises::met() : Premises::unmet(too_big, true);
+                   },
+                   [&](std::string& why, bool& decided) {
+                     std::optional<DesignResult> r = design_generic(pb, sp, fc, opt);
+                     decided = r->verdict.decided() && r->verdict.proven();
+                     if (!decided) why = r->verdict.evidence;
+                     return r;
+                   }});
+  std::vector<PlanStep> plan;
+  std::string decided_by, input_limit;
+  std::optional<DesignResult> r = run_plan(paths, plan, decided_by, input_limit);
+  if (!r) {
+    if (!input_limit.empty()) throw InputError(input_limit);
+    res.verdict = {Outcome::undecided, Status::numeric, "no design path found a coupling"};
+    res.plan = plan;
+    return res;
   }
-  check_generic_size(pb, m * (m + 1) + static_cast<long>(nQ) * (nQ + 1) + 2L * m * m + static_cast<long>(pb.coupling.n()) * (pb.coupling.n() + 2 * m),
-                     "Theorem 6's generic design program (19)-(20)");
+  r->facial = fc;
+  r->path = decided_by;
+  r->plan = plan;
+  return *r;
+}
+
+namespace {
+
+DesignResult design_generic(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc, const DesignOptions& opt) {
+  DesignResult res;
+  res.facial = fc;
+  const int m = pb.structure.m();
+  const int nQ = pb.coupling.n() + m;
   const CclRun run = run_ccl([&](Program& prog) { return build(prog, pb, sp, fc); }, nQ, true, m, opt);
   res.iterations = run.iterations;
   res.converged = run.converged;
@@ -573,5 +637,7 @@ DesignResult design(const Problem& pb, const DesignOptions& opt) {
   res.verdict = decisive_verdict(res.verification, message);
   return res;
 }
+
+}  // namespace
 
 }  // namespace hapstab::multidof

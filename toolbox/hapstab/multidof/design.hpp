@@ -32,8 +32,11 @@
 //                functions. Fixing Q_V and the block-diagonal Q, Y restrict the search: a block
 //                that finds no point, or a certificate that fails, falls back to generic_sdp
 //                (never a weaker verdict).
-//   automatic    blockwise from kKypMinDof DOF on with the automatic back-end (paper 000's
-//                Sec. VI keeps the generic design), generic_sdp otherwise.
+//   automatic    one planner (planner.hpp, run_plan, the rules of analyze's): blockwise whenever
+//                its premises hold (the automatic back-end, K block diagonal in V's blocks, X
+//                pinned), whatever the number of DOF; generic_sdp when blockwise is skipped, finds
+//                nothing or its coupling is not verified (and fits the size limit).
+//                DesignResult::path and ::plan say which path decided and why the others did not.
 //
 // Implements: paper 000 (18), (19), (20), (22), (23), (24), Theorem 6.
 #pragma once
@@ -74,6 +77,8 @@ struct DesignResult {
   Eigen::MatrixXd Q_V, delta_V;  ///< design's Q_V and Gamma^-1 Q_V Gamma^-1
   std::vector<Verification> verification;
   FacialConditions facial;     ///< the facial conditions of (16) (the same X set analyze reports)
+  std::string path;            ///< the path that decided (planner.hpp), "" when none did
+  std::vector<PlanStep> plan;  ///< every path's fate, in the planner's order
 };
 
 DesignResult design(const Problem& pb, const DesignOptions& opt = {});

@@ -82,9 +82,28 @@ struct Pinned {
   rational theta;  ///< X = theta X_1 (X_1 = scalar_blocks(gamma_basis[0]))
   lmi::KypData kyp;
 };
+/// (16)'s first LMI at an exact X as KYP data for Q_E = 0 (linear in X; a Q_E enters as R - Q_E).
+lmi::KypData kyp_data(const Problem& pb, const EhatSplit& sp, const MatQ& X);
 /// nullopt (with `why`) when the facial conditions leave X more than one direction, or none with X > 0.
 std::optional<Pinned> pinned_x(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
                                std::string* why = nullptr);
+/// The facial basis as matrices X_k when every operator lies in the support of exactly one basis
+/// vector, with positive entries (so X = sum theta_k X_k > 0 iff every theta_k > 0, and g_i >= 1
+/// forces theta_k > 0); else nullopt and `why` (path_kyp_search.cpp).
+std::optional<std::vector<MatQ>> positive_facial_basis(const Problem& pb, const FacialConditions& fc, std::string& why);
+/// Theorem 4's program for the coupling V (check_theorem4) proven infeasible by a frequency-domain
+/// witness (path_witness.cpp): a Fails verdict, exact; nullopt when none was found (`tried` says
+/// what was tried). `fc`: the facial conditions with V(1) - K; `Vh` = V-hat of (17).
+std::optional<Verdict> theorem4_witness(const Problem& pb, const FacialConditions& fc, const StateSpace<rational>& Vh,
+                                        std::string& tried);
+/// (16) proven infeasible for every X = sum g_k X_k, g > 0, by a witness at several frequencies
+/// (path_witness.cpp): weights w_j >= 0 (not all 0) and points (theta_j, u_j), theta_j in (0, pi],
+/// with sum_j w_j phi_k(z_j, u_j) <= 0 for every direction X_k, phi_k(z, u) = Re(u^* X_k E-hat(z) u)
+/// + u^* Delta_D X_k u, decided in rational arithmetic at rational points and directions; nullopt
+/// (with `why`) when the rounded certificate does not hold.
+std::optional<Verdict> multi_frequency_witness(const Problem& pb, const std::vector<MatQ>& Xk,
+                                               const std::vector<double>& theta, const std::vector<Eigen::VectorXcd>& u,
+                                               const std::vector<double>& w, std::string& why);
 /// The Riccati point P11 rounded to dyadic rationals (the fewest bits that keep its margin).
 MatQ rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp);
 

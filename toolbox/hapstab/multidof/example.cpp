@@ -126,4 +126,32 @@ std::string contact_scene(int n, bool active, int objects) {
   return s.str();
 }
 
+Problem linked_by_dampers(const Problem& pb, const std::vector<std::pair<int, int>>& links, const rational& Bc) {
+  const Eigen::Index n = pb.E.states(), m = pb.structure.m(), L = static_cast<Eigen::Index>(links.size());
+  Problem out = pb;
+  StateSpace<rational>& E = out.E;
+  E.A = MatQ::Zero(n + 2 * L, n + 2 * L);
+  E.A.topLeftCorner(n, n) = pb.E.A;
+  E.B = MatQ::Zero(n + 2 * L, m);
+  E.B.topRows(n) = pb.E.B;
+  E.C = MatQ::Zero(m, n + 2 * L);
+  E.C.leftCols(n) = pb.E.C;
+  const rational c = Bc / pb.T();
+  for (Eigen::Index l = 0; l < L; ++l) {
+    const auto [i, j] = links[static_cast<size_t>(l)];
+    // states w = (x_i, x_j) one sample back; force on i: c (x_i - w_i - x_j + w_j), on j the opposite
+    E.B(n + 2 * l, i) = 1;
+    E.B(n + 2 * l + 1, j) = 1;
+    E.C(i, n + 2 * l) -= c;
+    E.C(i, n + 2 * l + 1) += c;
+    E.C(j, n + 2 * l) += c;
+    E.C(j, n + 2 * l + 1) -= c;
+    E.D(i, i) += c;
+    E.D(j, j) += c;
+    E.D(i, j) -= c;
+    E.D(j, i) -= c;
+  }
+  return out;
+}
+
 }  // namespace hapstab::multidof::example

@@ -37,5 +37,10 @@ Problem problem(int which_case, bool perturbed);
 /// `objects` > 1: the N devices split into that many groups, each touching its own Fig. 5 mass
 /// (E block diagonal: the scene decomposes, components.hpp; issue 39's multi-object scenes).
 std::string contact_scene(int N, bool active = false, int objects = 1);
+/// Issue 39 item 3: `pb` with dampers Bc between pairs of DOFs (i, j), each a force
+/// Bc (1 - z^-1)/T (x_i - x_j) on i and its opposite on j (two states per link: x_i, x_j one sample
+/// back). E(1) is unchanged, so objects linked only so keep one direction of X each in the facial
+/// conditions (X is not pinned), while the scene no longer decomposes. Exact.
+Problem linked_by_dampers(const Problem& pb, const std::vector<std::pair<int, int>>& links, const rational& Bc);
 
 }  // namespace hapstab::multidof::example

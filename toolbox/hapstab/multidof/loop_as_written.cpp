@@ -42,8 +42,14 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
                   (sp.hidden.modes.empty() ? std::string() : "; " + sp.hidden.summary());
         return out;
       }
-      note = "Theorem 4 with the scene's coupling does not conclude (" +
-             std::string(cc.verdict.fails() ? "infeasible" : "not certified") + "; it is sufficient only)";
+      // how the program's infeasibility is known: the solver's Farkas ray checked exactly, the
+      // frequency-domain witness (path_witness.cpp), or the solver's numeric verdict
+      const std::string how = !cc.verdict.fails() ? "not certified"
+                              : !cc.verdict.proven() ? "infeasible, numerically"
+                              : cc.verdict.evidence.find("frequency-domain witness") != std::string::npos
+                                  ? "infeasible, certified by a frequency-domain witness"
+                                  : "infeasible, certified by an exact Farkas certificate";
+      note = "Theorem 4 with the scene's coupling does not conclude (" + how + "; it is sufficient only)";
     } else {
       note = "Theorem 4 with the scene's coupling needs Assumption 1, which does not hold";
     }

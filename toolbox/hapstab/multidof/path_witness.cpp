@@ -27,6 +27,7 @@
 //
 // Implements: paper 000 (14), (16) in the frequency domain (KYP lemma, Rantzer 1996).
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -35,6 +36,7 @@
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/multidof/planner.hpp"
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 
 namespace hapstab::multidof {
@@ -74,6 +76,256 @@ std::string num(double v) {
 }
 
 }  // namespace
+
+// ---- Theorem 4's program for a given coupling V (check_theorem4) ----
+// Every point of that program (X = sum theta_k X_k, g_i >= 1, Q_E, Q_V, P_E, P_V) satisfies, for
+// z1, z2 on the unit circle (not eigenvalues of E-hat's or V-hat's A) and complex p, u:
+//   (i)   the first LMI of (16) at [x; w], x = (z1 I - A)^-1 B w:  w^* Q_E w >= -Re(w^* X E-hat(z1) w);
+//   (ii)  Lemma 1 for V-hat (-F >= 0) at [x; u], x = (z2 I - A_V)^-1 B_V u, q = V-hat(z2) u (the P_V
+//         terms cancel as in (16)):  q^* Q_V q <= Re(u^* X q);
+//   (iii) the scaled (14) at [p; q]:  p^* Delta_D X p + q^* Q_V q - (p + q)^* Q_E (p + q) > 0.
+// With w = p + q, (iii) + (i) + (ii) give, with Q_E and Q_V gone,
+//   phi(X) := p^* Delta_D X p + Re(u^* X V-hat(z2) u) + Re(w^* X E-hat(z1) w) > 0,
+// linear in X. So z1, z2, p, u with phi(X_k) <= 0 for every facial basis element X_k (theta_k > 0
+// at every point: positive_facial_basis) prove the program infeasible. u = 0 is the environment
+// side's witness above. Found by a sweep of (theta1, theta2) -- lambda_min of phi's Hermitian
+// form in (p, u) at X = sum X_k -- and decided in rational arithmetic at rational points of the
+// circle, E-hat(z1) w and V-hat(z2) u by exact complex solves (FLINT).
+namespace {
+
+struct CVec {
+  MatQ re, im;
+};
+
+// S(z) u for z = za + zb j (rational, on the circle, not an eigenvalue of S.A), u complex: exact.
+CVec response(const StateSpace<rational>& S, const rational& za, const rational& zb, const CVec& u) {
+  const Eigen::Index n = S.states();
+  CVec y{exact_product(S.D, u.re), exact_product(S.D, u.im)};
+  if (n == 0) return y;
+  // [[za I - A, -zb I], [zb I, za I - A]] [xr; xi] = [B ur; B ui]
+  MatQ L = MatQ::Zero(2 * n, 2 * n), r(2 * n, 1);
+  const MatQ I = MatQ::Identity(n, n);
+  const MatQ D0 = za * I - S.A;
+  L.topLeftCorner(n, n) = D0;
+  L.bottomRightCorner(n, n) = D0;
+  L.topRightCorner(n, n) = -zb * I;
+  L.bottomLeftCorner(n, n) = zb * I;
+  r.topRows(n) = exact_product(S.B, u.re);
+  r.bottomRows(n) = exact_product(S.B, u.im);
+  const MatQ x = exact_solve(L, r, "zI - A at the witness frequency");
+  y.re += exact_product(S.C, MatQ(x.topRows(n)));
+  y.im += exact_product(S.C, MatQ(x.bottomRows(n)));
+  return y;
+}
+
+// Re(a^* M b) for a real M
+rational re_form(const CVec& a, const MatQ& M, const CVec& b) {
+  return exact_product(MatQ(a.re.transpose()), exact_product(M, b.re))(0, 0) +
+         exact_product(MatQ(a.im.transpose()), exact_product(M, b.im))(0, 0);
+}
+
+// the rational point of the unit circle near e^{j theta}, theta in (-pi, pi]
+std::pair<rational, rational> circle_point(double theta) {
+  if (std::abs(theta) > M_PI - 1e-9) return {rational(-1), rational(0)};
+  const rational t = lmi::round_dyadic(std::tan(theta / 2), 30);
+  const rational den = 1 + t * t;
+  return {(1 - t * t) / den, 2 * t / den};
+}
+
+}  // namespace
+
+std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialConditions& fc,
+                                                const StateSpace<rational>& Vh, std::string& tried) {
+  std::string why;
+  const std::optional<std::vector<MatQ>> Xk = positive_facial_basis(pb, fc, why);
+  if (!Xk) {
+    tried = "no frequency-domain witness tried: " + why;
+    return std::nullopt;
+  }
+  const Eigen::Index m = pb.structure.m();
+  const StateSpace<rational> Eh = ehat(pb.E);
+  MatQ Xs = MatQ::Zero(m, m);
+  for (const MatQ& X : *Xk) Xs += X;
+  const MatQ DD = pb.structure.delta_D();
+  const Eigen::MatrixXd X = to_double(Xs), DXd = to_double(exact_product(DD, Xs));
+  const Eigen::MatrixXcd DX = (0.5 * (DXd + DXd.transpose())).cast<std::complex<double>>();
+  const Eigen::MatrixXcd Xc = X.cast<std::complex<double>>();
+  const lmi::CircleResponse Er(to_double(Eh.A), to_double(Eh.B), to_double(Eh.C), to_double(Eh.D));
+  const lmi::CircleResponse Vr(to_double(Vh.A), to_double(Vh.B), to_double(Vh.C), to_double(Vh.D));
+  auto He = [](const Eigen::MatrixXcd& M) { return Eigen::MatrixXcd(0.5 * (M + M.adjoint())); };
+  // phi's Hermitian form in [p; u] at (theta1, theta2)
+  auto form = [&](const Eigen::MatrixXcd& H1, const Eigen::MatrixXcd& V2, const Eigen::MatrixXcd& K2) {
+    Eigen::MatrixXcd M(2 * m, 2 * m);
+    M.topLeftCorner(m, m) = DX + H1;
+    M.topRightCorner(m, m) = H1 * V2;
+    M.bottomLeftCorner(m, m) = V2.adjoint() * H1;
+    M.bottomRightCorner(m, m) = K2 + V2.adjoint() * H1 * V2;
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(He(M));
+    return std::make_pair(es.eigenvalues()(0), Eigen::VectorXcd(es.eigenvectors().col(0)));
+  };
+  auto env = [&](double th) { return He(Xc * Er.at(th)); };
+  auto cpl = [&](double th) {
+    const Eigen::MatrixXcd V = Vr.at(th);
+    return std::make_pair(V, He(Xc * V));
+  };
+  // theta1 in (0, pi] (E-hat has its poles at z = 1), theta2 in (-pi, pi]: phi at (-theta1, -theta2)
+  // is the conjugate of phi at (theta1, theta2)
+  // the grid: about 2 (K + 24)^2 pairs, each an eigenproblem of order 2m; K shrinks with m so that
+  // the sweep stays within ~2e9 flops (a sweep, not an IPM: at m = 64 the grid is coarse)
+  std::vector<double> t1, t2;
+  const double per_pair = 10.0 * std::pow(2.0 * static_cast<double>(m), 3);
+  const int K = static_cast<int>(std::clamp(std::sqrt(2e9 / (2 * per_pair)) - 24, 8.0, 96.0));
+  if (per_pair * 2 * (K + 24) * (K + 24) > 1e10) {
+    tried = "no frequency-domain witness tried: " + std::to_string(m) + " DOF make even the coarsest sweep of frequency "
+            "pairs (eigenproblems of order " + std::to_string(2 * m) + ") cost more than 1e10 flops";
+    return std::nullopt;
+  }
+  for (int k = 1; k <= K; ++k) t1.push_back(M_PI * k / K);
+  for (int k = 1; k <= 24; ++k) t1.push_back(M_PI / K * std::pow(10.0, -k / 8.0));
+  for (int k = -K + 1; k <= K; ++k) t2.push_back(M_PI * k / K);
+  for (int k = 1; k <= 24; ++k) t2.push_back(M_PI / K * std::pow(10.0, -k / 8.0)), t2.push_back(-t2.back());
+  std::vector<Eigen::MatrixXcd> H1(t1.size());
+  for (size_t i = 0; i < t1.size(); ++i) H1[i] = env(t1[i]);
+  std::vector<std::pair<Eigen::MatrixXcd, Eigen::MatrixXcd>> V2(t2.size());
+  for (size_t j = 0; j < t2.size(); ++j) V2[j] = cpl(t2[j]);
+  double best = INFINITY, b1 = t1[0], b2 = t2[0];
+  for (size_t i = 0; i < t1.size(); ++i)
+    for (size_t j = 0; j < t2.size(); ++j) {
+      const double v = form(H1[i], V2[j].first, V2[j].second).first;
+      if (v < best) best = v, b1 = t1[i], b2 = t2[j];
+    }
+  // refine: golden section in each coordinate in turn
+  auto value = [&](double a, double b) {
+    const auto c = cpl(b);
+    return form(env(a), c.first, c.second).first;
+  };
+  for (int round = 0; round < 3; ++round) {
+    for (int coord = 0; coord < 2; ++coord) {
+      const double h = M_PI / K;
+      double lo = coord ? b2 - h : std::max(1e-12, b1 - h), hi = coord ? b2 + h : std::min(M_PI, b1 + h);
+      for (int it = 0; it < 30; ++it) {
+        const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
+        const double fa = coord ? value(b1, a) : value(a, b2), fb = coord ? value(b1, b) : value(b, b2);
+        if (fa < fb) hi = b;
+        else lo = a;
+      }
+      const double c = 0.5 * (lo + hi), v = coord ? value(b1, c) : value(c, b2);
+      if (v < best) best = v, (coord ? b2 : b1) = c;
+    }
+  }
+  std::ostringstream o;
+  o << "frequency-domain witness of Theorem 4's program: sweep of lambda_min of phi's Hermitian form over "
+    << t1.size() << " x " << t2.size() << " frequency pairs (E-hat at theta1, V-hat at theta2) and a refinement: least "
+    << num(best) << " at theta1 = " << num(b1) << ", theta2 = " << num(b2) << " rad";
+  if (!(best < 0)) {
+    tried = o.str() + ": no witness (the frequency conditions may hold)";
+    return std::nullopt;
+  }
+  const auto c2 = cpl(b2);
+  const Eigen::VectorXcd v = form(env(b1), c2.first, c2.second).second;
+  const double mx = v.cwiseAbs().maxCoeff();
+  CVec p{MatQ(m, 1), MatQ(m, 1)}, u{MatQ(m, 1), MatQ(m, 1)};
+  for (Eigen::Index i = 0; i < m; ++i) {
+    p.re(i, 0) = lmi::round_dyadic(v(i).real() / mx, 24);
+    p.im(i, 0) = lmi::round_dyadic(v(i).imag() / mx, 24);
+    u.re(i, 0) = lmi::round_dyadic(v(m + i).real() / mx, 24);
+    u.im(i, 0) = lmi::round_dyadic(v(m + i).imag() / mx, 24);
+  }
+  const auto [z1a, z1b] = circle_point(b1);
+  const auto [z2a, z2b] = circle_point(b2);
+  CVec q, w, e;
+  try {
+    q = response(Vh, z2a, z2b, u);
+    w = {p.re + q.re, p.im + q.im};
+    e = response(Eh, z1a, z1b, w);
+  } catch (const InputError&) {  // the rational point is an eigenvalue of A (a pole on the circle)
+    tried = o.str() + ": the rational points of the circle hit a pole";
+    return std::nullopt;
+  }
+  std::ostringstream vals;
+  for (size_t k = 0; k < Xk->size(); ++k) {
+    const MatQ& Xq = (*Xk)[k];
+    const MatQ DXk = exact_product(DD, Xq);
+    const MatQ DXs = (DXk + MatQ(DXk.transpose())) / 2;
+    const rational phi = re_form(p, DXs, p) + re_form(u, Xq, q) + re_form(w, Xq, e);
+    if (phi > 0) {
+      tried = o.str() + ": it did not survive the exact evaluation at rational points and directions (phi(X_" +
+              std::to_string(k + 1) + ") = " + num(to_real<double>(phi)) + " > 0)";
+      return std::nullopt;
+    }
+    vals << (k ? ", " : "") << num(to_real<double>(phi));
+  }
+  o << "; exact: at the rational points z1 = (" << to_real<double>(z1a) << ", " << to_real<double>(z1b)
+    << " j), z2 = (" << to_real<double>(z2a) << ", " << to_real<double>(z2b)
+    << " j) of the unit circle and rational directions p, u, phi(X_k) = p^* Delta_D X_k p + Re(u^* X_k V-hat(z2) u) + "
+       "Re(w^* X_k E-hat(z1) w) (w = p + V-hat(z2) u) = "
+    << vals.str() << " <= 0 for every direction X_k of the facial set (rational arithmetic on the exact data), while "
+       "every point of Theorem 4's program makes phi(X) > 0 (the first LMI of (16) at z1, Lemma 1 for V-hat at z2, "
+       "and (14) at [p; V-hat(z2) u]): the program is infeasible";
+  return Verdict{Outcome::fails, Status::exact, o.str()};
+}
+
+// ---- several frequencies, X over a d-dimensional facial set (path_kyp_search.cpp) ----
+// Every point of (16) has phi(z, u) = sum_k g_k phi_k(z, u) > 0 at every (z, u) (the argument at
+// the top of this file, X = sum g_k X_k, g > 0). Weights w_j >= 0 with sum_j w_j phi_k(z_j, u_j) <= 0
+// for every k give sum_j w_j phi(z_j, u_j) = sum_k g_k sum_j w_j phi_k(z_j, u_j) <= 0: a
+// contradiction, so (16) is infeasible for every admissible X. (The weights are the dual of the
+// outer search's min_g max_j: a matrix game.)
+std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const std::vector<MatQ>& Xk,
+                                                       const std::vector<double>& theta,
+                                                       const std::vector<Eigen::VectorXcd>& u,
+                                                       const std::vector<double>& w, std::string& why) {
+  const StateSpace<rational> Eh = ehat(pb.E);
+  const MatQ DD = pb.structure.delta_D();
+  const Eigen::Index m = pb.structure.m();
+  std::vector<rational> sum(Xk.size(), rational(0));
+  double wmax = 0;
+  for (double x : w) wmax = std::max(wmax, x);
+  int used = 0;
+  for (size_t j = 0; j < theta.size(); ++j) {
+    const rational wj = lmi::round_dyadic(w[j] / wmax, 24);
+    if (!(wj > 0) || !(theta[j] > 0)) continue;
+    const double mx = u[j].cwiseAbs().maxCoeff();
+    CVec uq{MatQ(m, 1), MatQ(m, 1)};
+    for (Eigen::Index i = 0; i < m; ++i) {
+      uq.re(i, 0) = lmi::round_dyadic(u[j](i).real() / mx, 24);
+      uq.im(i, 0) = lmi::round_dyadic(u[j](i).imag() / mx, 24);
+    }
+    const auto [za, zb] = circle_point(theta[j]);
+    CVec e;
+    try {
+      e = response(Eh, za, zb, uq);
+    } catch (const InputError&) {
+      why = "a rational point of the circle hit a pole of E-hat";
+      return std::nullopt;
+    }
+    for (size_t k = 0; k < Xk.size(); ++k) {
+      const MatQ DXk = exact_product(DD, Xk[k]);
+      sum[k] += wj * (re_form(uq, Xk[k], e) + re_form(uq, MatQ((DXk + MatQ(DXk.transpose())) / 2), uq));
+    }
+    ++used;
+  }
+  std::ostringstream vals;
+  for (size_t k = 0; k < sum.size(); ++k) {
+    if (sum[k] > 0) {
+      why = "the weighted witness did not survive the exact evaluation (direction " + std::to_string(k + 1) + ": " +
+            num(to_real<double>(sum[k])) + " > 0)";
+      return std::nullopt;
+    }
+    vals << (k ? ", " : "") << num(to_real<double>(sum[k]));
+  }
+  if (used == 0) {
+    why = "no frequency with a positive weight";
+    return std::nullopt;
+  }
+  std::ostringstream o;
+  o << "exact frequency-domain witness at " << used << " pairs (z_j, u_j) -- rational points of the unit circle, rational "
+       "directions -- with weights w_j >= 0: sum_j w_j (Re(u_j^* X_k E-hat(z_j) u_j) + u_j^* Delta_D X_k u_j) = "
+    << vals.str() << " <= 0 for each of the " << Xk.size()
+    << " directions X_k of the facial set (rational arithmetic on the exact data (15)), while every point of (16) makes "
+       "each term > 0 for X = sum g_k X_k, g > 0: (16) is infeasible for every X the facial conditions allow";
+  return Verdict{Outcome::fails, Status::exact, o.str()};
+}
 
 SolvePath frequency_witness_path() {
   SolvePath p;

@@ -20,10 +20,11 @@ using namespace detail;
 std::vector<SolvePath> default_paths(AnalysisPath path) {
   switch (path) {
     case AnalysisPath::generic_sdp: return {generic_sdp_path()};
-    case AnalysisPath::kyp_riccati: return {kyp_riccati_path(false), frequency_witness_path(), generic_sdp_path()};
+    case AnalysisPath::kyp_riccati:
+      return {kyp_riccati_path(false), kyp_search_path(false), frequency_witness_path(), generic_sdp_path()};
     case AnalysisPath::automatic: break;
   }
-  return {kyp_riccati_path(true), frequency_witness_path(), generic_sdp_path()};
+  return {kyp_riccati_path(true), kyp_search_path(true), frequency_witness_path(), generic_sdp_path()};
 }
 
 namespace {

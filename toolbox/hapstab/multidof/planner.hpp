@@ -18,8 +18,9 @@
 // the problem by that limit (InputError, exit 2).
 //
 // The default paths, cheapest first (analysis.hpp, AnalysisPath): the structured KYP/Riccati
-// path (path_kyp.cpp), the frequency-domain witness of infeasibility (path_witness.cpp), then the
-// generic SDP (path_generic.cpp). The least dissipative coupling
+// path (path_kyp.cpp: X pinned to one direction), the same with X searched over a d-dimensional
+// facial set (path_kyp_search.cpp), the frequency-domain witness of infeasibility
+// (path_witness.cpp), then the generic SDP (path_generic.cpp). The least dissipative coupling
 // (least_dissipative.cpp) is planned the same way after a feasible verdict. Tests give the
 // planner their own paths (e.g. a path whose point is spoiled, to drive the hand-over).
 //
@@ -87,6 +88,50 @@ struct SolvePath {
   std::function<PathResult(const PathContext&)> search;
 };
 
+/// The planner's loop for a study whose paths decide by themselves (Theorem 6's design,
+/// design.cpp), the same rules as analyze_with's: paths cheapest first; a path whose premises
+/// fail is skipped (its fate names the premise); a path that runs and decides ends the plan (the
+/// later ones "not needed"); one that runs without deciding hands over, its result kept; every
+/// fate goes to `plan`. Returns the deciding path's result, else the last result any path
+/// produced (`decided_by` empty), else nullopt -- and then, when a path was skipped only for a
+/// size limit, that limit is in `input_limit` (the caller refuses by it).
+template <class R>
+struct StudyPath {
+  std::string name;
+  std::function<Premises()> premises;
+  /// nullopt: the path found nothing (`why` says so); else its result, `decided` when it decides
+  std::function<std::optional<R>(std::string& why, bool& decided)> run;
+};
+template <class R>
+std::optional<R> run_plan(const std::vector<StudyPath<R>>& paths, std::vector<PlanStep>& plan, std::string& decided_by,
+                          std::string& input_limit) {
+  std::optional<R> kept;
+  for (const auto& p : paths) {
+    if (!decided_by.empty()) {
+      plan.push_back({p.name, "not needed", "the " + decided_by + " path decided"});
+      continue;
+    }
+    const Premises pr = p.premises();
+    if (!pr.hold) {
+      plan.push_back({p.name, "skipped", pr.why});
+      if (pr.input_limit && input_limit.empty()) input_limit = pr.why;
+      continue;
+    }
+    std::string why;
+    bool decided = false;
+    std::optional<R> r = p.run(why, decided);
+    if (r && decided) {
+      plan.push_back({p.name, "decided", ""});
+      decided_by = p.name;
+      kept = std::move(r);
+      continue;
+    }
+    plan.push_back({p.name, r ? "did not decide" : "no point", why});
+    if (r) kept = std::move(r);
+  }
+  return kept;
+}
+
 /// The default paths for `path` (analysis.hpp), cheapest first.
 std::vector<SolvePath> default_paths(AnalysisPath path = AnalysisPath::automatic);
 
@@ -100,7 +145,25 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
 /// generic path; no premise on the number of DOF: the path is chosen by cost) and the generic
 /// SDP (path_generic.cpp).
 SolvePath kyp_riccati_path(bool backend_premise);
+
+/// The premises both structured KYP paths share (Q_V not block diagonal; in automatic planning
+/// no SDP back-end chosen): the first that fails, nullopt when both hold.
+std::optional<Premises> riccati_premises(const PathContext& c, bool backend_premise);
+/// The structured paths' candidate points at an exact X (path_kyp.cpp): P11 from the Riccati
+/// equation of (16)'s first LMI with Q_E = Delta_D X (`d` = detail::kyp_data at X, Q_E = 0), then
+/// Q_E = Delta_D X - eps I, Q_V = Q_E + Q_E^2/eps + eps I for two eps, for the exact re-check.
+struct RiccatiPoints {
+  std::vector<CandidatePoint> points;
+  lmi::KypPoint kp;
+  std::string no_point;  ///< why there is none
+  double numeric_seconds = 0;
+};
+RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector<rational>& theta, lmi::KypData d);
 SolvePath generic_sdp_path();
+/// The structured KYP/Riccati path when the facial conditions leave X a d-dimensional set (d > 1):
+/// an outer search over X = sum g_i X_i by the frequency-domain form of the KYP lemma, the
+/// Riccati point at the X it chose (path_kyp_search.cpp).
+SolvePath kyp_search_path(bool backend_premise);
 /// Certified infeasibility by a frequency-domain witness (path_witness.cpp; premise: X pinned).
 SolvePath frequency_witness_path();
 
