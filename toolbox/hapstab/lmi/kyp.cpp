@@ -49,9 +49,20 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
   MatrixXd Gk = sym(d.B * RiBt);
   MatrixXd Hk = sym(-delta * MatrixXd::Identity(n, n) - d.S * RiSt);
   const MatrixXd I = MatrixXd::Identity(n, n);
-  bool converged = false;
+  bool converged = false, stalled = false;
   int it = 0;
-  for (; it < 80 && !converged; ++it) {
+  // Where the DARE has no stabilising solution (the shift or the level beyond the frequency
+  // condition) the doubling cannot converge, and ran its 80 steps (most of a bisection's time: half
+  // its probes are infeasible). It shows early: A_k = (something bounded) Phi^(2^k) decays once
+  // 2^k passes the closed loop's transient, each step making a new least ||A_k|| (seen: halving
+  // near the boundary, then squaring), where without a solution ||A_k|| stops decreasing and
+  // wanders. So: stalled when 8 steps (a 256-fold horizon) pass without a new least ||A_k|| after
+  // the decrease began, or ||A_k|| never fell below ||A_0|| in 24 steps (a transient growth of
+  // ||Phi^j|| lasting 2^24 powers). A stall proves nothing (found = false, like a non-convergence).
+  double least = Ak.norm();
+  int since_least = 0;
+  bool decreasing = false;
+  for (; it < 80 && !converged && !stalled; ++it) {
     const Eigen::PartialPivLU<MatrixXd> W(I + Gk * Hk);
     const MatrixXd WA = W.solve(Ak), WG = W.solve(Gk);
     if (!WA.allFinite() || !WG.allFinite()) break;
@@ -61,10 +72,15 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
     const double change = (Hn - Hk).norm(), size = Hn.norm();
     Hk = Hn;
     if (!std::isfinite(size)) break;
-    converged = change <= 1e-14 * size || Ak.norm() <= 1e-300;
+    const double an = Ak.norm();
+    converged = change <= 1e-14 * size || an <= 1e-300;
+    if (an < least) least = an, since_least = 0, decreasing = true;
+    else ++since_least;
+    stalled = !converged && (decreasing ? since_least >= 8 : it + 1 >= 24);
   }
   std::ostringstream o;
-  o << "doubling " << (converged ? "converged" : "did not converge") << " in " << it << " steps";
+  o << "doubling " << (converged ? "converged" : stalled ? "stalled (no decrease of A_k in 8 steps)" : "did not converge")
+    << " in " << it << " steps";
   if (!converged) {
     kp.detail = o.str();
     return kp;
