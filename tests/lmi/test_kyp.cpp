@@ -196,11 +196,13 @@ TEST(Kyp, ShiftBoundIsTheClosedFormEdge) {
 // The ladder with its rungs above the frequency bound skipped finds the rung the whole ladder
 // finds (the skipped rungs have no DARE solution), with fewer solves: random stable systems of
 // order 2..12 with 1..3 inputs, and the shift chains of a delay (z^-d G: a defective eigenvalue 0
-// of multiplicity d, d = 6..48), against the ladder run rung by rung with kyp_riccati_point.
+// of multiplicity d, d = 6..48), against the ladder run rung by rung with kyp_riccati_point. The
+// rungs of that full ladder without a DARE solution end by the doubling's stall rule, never by its
+// 80-step cap.
 TEST(Kyp, SkippedRungsNeverChangeTheLaddersPoint) {
   std::mt19937 g(39);
   std::normal_distribution<double> N(0, 1);
-  int compared = 0, delayed = 0, skipped = 0;
+  int compared = 0, delayed = 0, skipped = 0, stalled = 0;
   for (int trial = 0; trial < 45; ++trial) {
     const bool chain = trial % 3 == 2;
     const int n = chain ? 5 + trial : 2 + trial % 11, p = chain ? 1 : 1 + trial % 3;
@@ -225,7 +227,12 @@ TEST(Kyp, SkippedRungsNeverChangeTheLaddersPoint) {
     int rungs = 0;
     Eigen::SelfAdjointEigenSolver<MatrixXd> es(-d.R, Eigen::EigenvaluesOnly);
     const double hi = es.eigenvalues()(0);
-    for (double delta = hi / 4; delta >= hi * 1e-12 && !full.found; delta /= 4, ++rungs) full = kyp_riccati_point(d, delta);
+    for (double delta = hi / 4; delta >= hi * 1e-12 && !full.found; delta /= 4, ++rungs) {
+      full = kyp_riccati_point(d, delta);
+      // a rung without a DARE solution ends by the stall rule, not after the 80-step cap
+      stalled += full.detail.find("stalled") != std::string::npos;
+      EXPECT_EQ(full.detail.find("did not converge in 80"), std::string::npos) << "trial " << trial << ": " << full.detail;
+    }
     ASSERT_EQ(fast.found, full.found) << "trial " << trial << ": " << fast.detail << " / " << full.detail;
     if (!full.found) continue;
     ++compared;
@@ -238,6 +245,7 @@ TEST(Kyp, SkippedRungsNeverChangeTheLaddersPoint) {
   EXPECT_GE(compared, 35) << "too few systems with a KYP point compared";  // 39 of 45 here
   EXPECT_GE(delayed, 12) << "too few delay chains compared";                // 13 of 15
   EXPECT_GE(skipped, 30) << "the sweep skipped rungs too rarely to be tested";  // 36
+  EXPECT_GE(stalled, 100) << "too few rungs stalled to test the stall rule";  // 179
 }
 
 // circle_max refines the largest local maxima of the grid, not only its best point: a peak of
