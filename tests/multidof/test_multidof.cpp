@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <complex>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <Eigen/Eigenvalues>
@@ -791,6 +792,22 @@ TEST(MultidofPlanner, SearchedXDecidesWhereTheFacialSetHasSeveralDirections) {
 }
 
 // ---- issue 39: certified infeasibility by a frequency-domain witness (path_witness.cpp) ----
+namespace {
+// tests/cli/scenes/multidof_delay_wall.toml behind d samples of delay (its samples = "1" replaced):
+// the one text of the delayed wall (bench/delay_wall_scene.py writes the same for measurements).
+std::string delayed_wall(int d) {
+  std::ifstream in(std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/multidof_delay_wall.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  const std::string one = "samples = \"1\"";
+  const size_t at = t.find(one);
+  if (at == std::string::npos) ADD_FAILURE() << "multidof_delay_wall.toml has no " << one;
+  else t.replace(at, one.size(), "samples = \"" + std::to_string(d) + "\"");
+  return t;
+}
+}  // namespace
+
 // The one-DOF wall of tests/cli/scenes/multidof_delay_wall.toml (K = 20000, B = 5, T = 1/1000,
 // device damping b = 16) behind d samples of delay. The reference, derived independently of the
 // code: as theta -> 0, Re E-hat(e^{j theta}) + b -> T K (1/2 - d) + B + b (E-hat = E T z/(z - 1),
@@ -799,29 +816,8 @@ TEST(MultidofPlanner, SearchedXDecidesWhereTheFacialSetHasSeveralDirections) {
 // it) and infeasible from d = 2 on -- certified by the witness, where the generic SDP mostly says
 // "numeric only" (it took 100 s at d = 16). Where the generic verdict is proven it must agree.
 TEST(MultidofWitness, DelayedWallInfeasibleCertified) {
-  const std::string wall = R"toml([scene]
-name = "one-DOF wall, delay"
-T = "1/1000"
-[parameters]
-K = "20000"
-B = "5"
-[[device]]
-name = "d"
-m = "1/10"
-b = "16"
-[[operator]]
-name = "hand"
-dofs = ["d"]
-b = "2"
-[environment]
-tf = "K + B*(z-1)/(T*z)"
-[delay]
-samples = "DELAY"
-)toml";
   auto problem = [&](int d) {
-    std::string t = wall;
-    t.replace(t.find("DELAY"), 5, std::to_string(d));
-    return problem_from_scene(scene::parse_scene(t, "wall")).problem;
+    return problem_from_scene(scene::parse_scene(delayed_wall(d), "wall")).problem;
   };
   lmi::Options o;
   o.backend = lmi::Backend::ipm;

@@ -83,32 +83,49 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   if (!(width > 0)) return std::nullopt;
   const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
+  // The point: t_c a little above the least t (1e-6 of the bracket), where the LMI has room for a
+  // rounded point; none when (14)'s Delta_D X - Q_E > 0 leaves no such t, or no Riccati point is found.
+  std::optional<std::pair<rational, lmi::KypPoint>> at_tc;
+  auto point_above = [&](double least) {
+    const rational tc = lmi::round_dyadic(std::min(d, least + 1e-6 * width), 30);
+    if (!(tc < t_end)) return;
+    lmi::KypPoint kp = lmi::kyp_interior_point(data(to_real<double>(tc)));
+    solves += kp.riccati_solves;
+    if (kp.found) at_tc.emplace(tc, std::move(kp));
+  };
   // The frequency side of the KYP lemma brackets the least t at once: t > lambda_max(G^-1/2 Phi(z)
   // G^-1/2) on the whole circle (lmi/kyp.hpp: a sweep costs O(n^2 m) per frequency where a DARE
-  // costs O(n^3) per doubling step). The sweep's maximum is a lower bound; a DARE solve just above
-  // it confirms the upper end, and the bisection then needs a few steps, not ~25 (issue 39 item 5:
-  // a delay of 200 samples took a minute of DARE solves here).
+  // costs O(n^3) per doubling step). The sweep's maximum f is a lower bound, refined to rounding:
+  // the point is tried at once where the bisection below would end (f + its tolerance 1e-7), and
+  // only if that fails (the grid missed a narrow peak) does the bisection run from f (issue 39
+  // item 5: a delay of 200 samples took ~40 DARE solves here, most at a t or delta too close to
+  // the boundary for the doubling to converge in its 80 steps).
   // Worth it when the sweep is cheap beside the DARE solves it saves: O(n^2 m + m^3) per frequency
   // against O(n^3) per doubling step -- few DOF (a delayed wall: m = 1), not the 128-DOF contact
   // scenes (there the sweep cost more than the bisection it shortened).
-  const double f = m <= 8 ? lmi::kyp_frequency_bound(px.kyp, gi) : -INFINITY;
-  if (f > lo && f < hi) {
+  const double f = lmi::kyp_sweep_pays(px.kyp) ? lmi::kyp_frequency_bound(px.kyp, gi) : -INFINITY;
+  const bool bracketed = f > lo && f < hi;
+  if (bracketed) {
     lo = f;
-    const double up = std::min(hi, f + 1e-6 * width);
-    ++solves;
-    if (lmi::kyp_riccati_point(data(up), 1e-9 * width).found) hi = up;
+    point_above(f + 1e-7 * width);
   }
-  while (hi - lo > 1e-7 * width && solves < 60) {
-    const double mid = 0.5 * (lo + hi);
-    ++solves;
-    (lmi::kyp_riccati_point(data(mid), 1e-9 * width).found ? hi : lo) = mid;
+  if (!at_tc) {
+    if (bracketed) {  // the sweep's bound, confirmed by a DARE just above it
+      const double up = std::min(hi, f + 1e-6 * width);
+      ++solves;
+      if (lmi::kyp_riccati_point(data(up), 1e-9 * width).found) hi = up;
+    }
+    while (hi - lo > 1e-7 * width && solves < 60) {
+      const double mid = 0.5 * (lo + hi);
+      ++solves;
+      (lmi::kyp_riccati_point(data(mid), 1e-9 * width).found ? hi : lo) = mid;
+    }
+    point_above(hi);
   }
-  // the point: t_c a little above the least t, where the LMI has room for a rounded point
-  const rational tc = lmi::round_dyadic(std::min(d, hi + 1e-6 * width), 30);
-  if (!(tc < t_end)) return std::nullopt;  // (14) needs Delta_D X - Q_E > 0
+  if (!at_tc) return std::nullopt;
+  const rational tc = at_tc->first;
   const lmi::KypData k = data(to_real<double>(tc));
-  const lmi::KypPoint kp = lmi::kyp_interior_point(k);
-  if (!kp.found) return std::nullopt;
+  const lmi::KypPoint& kp = at_tc->second;
   KypMinPoint p;
   p.numeric_seconds = since(t0);
   p.r = tc;
@@ -124,7 +141,7 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
     p.QV(i, i) = (f > 0 ? f : rational(0)) + e;
   }
   p.certified = exact_recheck(pb, sp, p.env, p.QV, p.why);
-  p.riccati_solves = solves + kp.riccati_solves;
+  p.riccati_solves = solves;
   return p;
 }
 

@@ -65,12 +65,49 @@ void congruence(flint::BallMat& Y, const BallMatrix& S, const Eigen::MatrixXd& X
 // conjugated: contiguous). O(n^3) in all, ~2 n^3 complex flops. The eigenvalues of M (T's
 // diagonal) are returned as well. false when a pivot 1 - T_jj conj(T_ii) vanishes (eigenvalues on
 // the circle or a reciprocal pair).
+// The complex Schur form of a real M from its real Schur form (MATLAB's rsf2csf; Golub & Van Loan
+// 7.4.1): each 2 x 2 block of a complex pair is made triangular by one unitary rotation, O(n) per
+// block. Eigen's ComplexSchur runs its QR iterations in complex arithmetic: about twice the work
+// of the real iterations, which at order 642 (the 128-device contact loop) was a second.
+bool complex_schur(const Eigen::MatrixXd& M, Eigen::MatrixXcd& T, Eigen::MatrixXcd& U) {
+  using cd = std::complex<double>;
+  const Eigen::RealSchur<Eigen::MatrixXd> rs(M);
+  if (rs.info() != Eigen::Success) return false;
+  T = rs.matrixT().cast<cd>();
+  U = rs.matrixU().cast<cd>();
+  const Eigen::Index n = M.rows();
+  for (Eigen::Index m = n - 1; m >= 1; --m) {
+    if (T(m, m - 1) == cd(0)) continue;
+    // an eigenvalue of the block [[a, b], [c, d]] at (m-1, m), minus d
+    const cd a = T(m - 1, m - 1), b = T(m - 1, m), c = T(m, m - 1), d = T(m, m);
+    const cd half = 0.5 * (a - d), mu = half + std::sqrt(half * half + b * c);
+    const double r = std::hypot(std::abs(mu), std::abs(c));
+    const cd cs = mu / r, sn = c / r;
+    // G = [[conj(cs), conj(sn)], [-sn, cs]] (unitary; sn real up to rounding): T := G T G^*, U := U G^*
+    for (Eigen::Index j = m - 1; j < n; ++j) {
+      const cd x = T(m - 1, j), y = T(m, j);
+      T(m - 1, j) = std::conj(cs) * x + std::conj(sn) * y;
+      T(m, j) = -sn * x + cs * y;
+    }
+    for (Eigen::Index i = 0; i <= m; ++i) {
+      const cd x = T(i, m - 1), y = T(i, m);
+      T(i, m - 1) = x * cs + y * sn;
+      T(i, m) = -x * std::conj(sn) + y * std::conj(cs);
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const cd x = U(i, m - 1), y = U(i, m);
+      U(i, m - 1) = x * cs + y * sn;
+      U(i, m) = -x * std::conj(sn) + y * std::conj(cs);
+    }
+    T(m, m - 1) = 0;
+  }
+  return T.allFinite() && U.allFinite();
+}
+
 bool stein(const Eigen::MatrixXd& M, Eigen::MatrixXd& P, Eigen::VectorXcd& eigenvalues) {
   const Eigen::Index n = M.rows();
-  Eigen::ComplexSchur<Eigen::MatrixXd> cs(M);
-  if (cs.info() != Eigen::Success) return false;
-  const Eigen::MatrixXcd& T = cs.matrixT();
-  const Eigen::MatrixXcd& U = cs.matrixU();
+  Eigen::MatrixXcd T, U;
+  if (!complex_schur(M, T, U)) return false;
   eigenvalues = T.diagonal();
   Eigen::MatrixXcd X = Eigen::MatrixXcd::Zero(n, n);
   Eigen::VectorXcd r(n), rhs(n);
