@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <Eigen/Eigenvalues>
@@ -21,7 +22,9 @@
 #include "hapstab/multidof/planner.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "hapstab/lmi/kyp.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/numeric/decimal.hpp"
 
 using namespace hapstab;
@@ -588,6 +591,78 @@ TEST(MultidofPlanner, SpoiledStructuredPointHandsOverToGenericSdp) {
   EXPECT_EQ(r.Q_V, generic.Q_V);
   EXPECT_EQ(r.gamma, generic.gamma);
   EXPECT_TRUE(honest.verdict.holds() && honest.verdict.proven());
+}
+
+// Issue 39 item 5: a one-DOF environment of order 12 or 16 (bench/contact_scene.py 1 --chain C: one
+// contact on the first of C masses in a chain). Its realisation is a companion form whose
+// eigenvectors have condition number ~1e8: there the Riccati doubling "converged" to a P with
+// lambda_min(F(P)) = -1659 on every rung of the ladder, and the generic SDP said "infeasible,
+// numeric only" after 87 s. Solved in the scaled modal basis (path_kyp.cpp, in_modal_basis) and
+// mapped back exactly, the verdict is certified by the exact re-check in the realisation as
+// written. Cross-check: the KYP lemma's frequency side, Phi(e^{j theta}) < 0 on the whole circle,
+// must hold on a 1024-point sweep (a lower bound of max Phi: -2.5 and -2.3 here, asserted < -0.1, some
+// 1e14 times double's rounding of Phi, so the sign is not in doubt).
+namespace {
+std::string chain_scene(int chain) {  // bench/contact_scene.py 1 --chain C, the same text
+  std::string behind;
+  for (int j = chain; j > 1; --j)
+    behind = "M*s^2 + 2*(k + B*s)" + (behind.empty() ? "" : " - (k + B*s)^2/(" + behind + ")");
+  const std::string den = "M*s^2 + (B+B1)*s + k+k1" + (behind.empty() ? "" : " - (k + B*s)^2/(" + behind + ")");
+  return R"toml([scene]
+T = "0.01"
+[parameters]
+M = "0.3"
+k = "1000"
+B = "5"
+k1 = "500"
+B1 = "1"
+[[device]]
+name = "d1"
+m = "1/10"
+b = "1.37"
+[[operator]]
+name = "H1"
+dofs = ["d1"]
+tf = "0.1*(s^2+5*s+10)/(s^2+s+1)"
+[environment]
+domain = "s"
+method = "backward_euler"
+tf = [["k1 + B1*s - (k1 + B1*s)^2/()toml" + den + R"toml()"]]
+[multidof]
+osp = ["1.37"]
+qv_block_diagonal = false
+)toml";
+}
+}  // namespace
+
+TEST(MultidofPlanner, HighOrderChainDecidedInModalBasis) {
+  for (int chain : {6, 8}) {
+    const Problem pb = problem_from_scene(scene::parse_scene(chain_scene(chain), "chain.toml")).problem;
+    ASSERT_EQ(pb.E.states(), static_cast<size_t>(2 * chain + 1)) << chain;  // + the backward Euler's z = 0
+    const auto r = analyze(pb, {}, AnalysisMode::stability_only);
+    EXPECT_TRUE(r.verdict.holds() && r.verdict.proven()) << chain << ": " << r.verdict.evidence;
+    EXPECT_EQ(r.path, "structured KYP/Riccati") << chain;
+    EXPECT_NE(r.solver_detail.find("in a scaled modal basis"), std::string::npos) << r.solver_detail;
+    // the frequency side of the KYP lemma agrees: (16)'s first LMI with Q_E = Delta_D X is feasible
+    const FacialConditions fc = facial_conditions(pb);
+    const EhatSplit sp = ehat_split(pb.E);
+    const std::optional<multidof::detail::Pinned> px = multidof::detail::pinned_x(pb, sp, fc);
+    ASSERT_TRUE(px.has_value()) << chain;
+    lmi::KypData d = px->kyp;
+    d.R -= to_double(exact_product(pb.structure.delta_D(), px->X));
+    const double phi_max = lmi::kyp_frequency_bound(d, Eigen::VectorXd::Ones(1));
+    EXPECT_LT(phi_max, -0.1) << chain;
+    // ... and in the modal basis the Riccati point is well inside: lambda_min(F) within the
+    // ladder's first rungs (>= 1e-3 lambda_min(-R)), not at its 1e-12 floor
+    const std::optional<multidof::detail::Pinned> mp = multidof::detail::in_modal_basis(*px);
+    ASSERT_TRUE(mp.has_value()) << chain;
+    lmi::KypData dm = mp->kyp;
+    dm.R = d.R;
+    const lmi::KypPoint kp = lmi::kyp_interior_point(dm);
+    ASSERT_TRUE(kp.found) << kp.detail;
+    EXPECT_GE(kp.min_eig, 1e-3 * -d.R(0, 0)) << kp.detail;
+    std::cout << "chain " << chain << ": max Phi on the sweep " << phi_max << ", modal " << kp.detail << "\n";
+  }
 }
 
 // The planner's premises are recorded: a path whose premise fails is skipped with the reason, and

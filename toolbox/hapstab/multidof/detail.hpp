@@ -80,7 +80,8 @@ std::string generic_size_exceeded(const Problem& pb, long extra_unknowns, const 
 struct Pinned {
   MatQ X;
   rational theta;  ///< X = theta X_1 (X_1 = scalar_blocks(gamma_basis[0]))
-  lmi::KypData kyp;
+  lmi::KypData kyp;  ///< in the state basis x' = basis x
+  MatQ basis;        ///< rational and invertible; empty: the realisation as written (x' = x)
 };
 /// (16)'s first LMI at an exact X as KYP data for Q_E = 0 (linear in X; a Q_E enters as R - Q_E).
 lmi::KypData kyp_data(const Problem& pb, const EhatSplit& sp, const MatQ& X);
@@ -104,8 +105,15 @@ std::optional<Verdict> theorem4_witness(const Problem& pb, const FacialCondition
 std::optional<Verdict> multi_frequency_witness(const Problem& pb, const std::vector<MatQ>& Xk,
                                                const std::vector<double>& theta, const std::vector<Eigen::VectorXcd>& u,
                                                const std::vector<double>& w, std::string& why);
-/// The Riccati point P11 rounded to dyadic rationals (the fewest bits that keep its margin).
-MatQ rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp);
+/// The same KYP data in a scaled modal basis x' = S x (S rational): for a realisation whose basis
+/// makes the Riccati equation badly conditioned (a companion form of order 12: eigenvectors with
+/// condition number 1e8), where the doubling "converges" to a P with lambda_min(F(P)) << 0.
+/// nullopt when A is not diagonalisable in double (a delay's shift chain) or already nearly modal.
+std::optional<Pinned> in_modal_basis(const Pinned& px);
+/// The Riccati point P' (in px's basis) rounded to dyadic rationals R (the fewest bits that keep
+/// its margin), as P11 of the realisation as written: S^T R S, exact (F(S^T R S) is the congruence
+/// diag(S, I)^T F'(R) diag(S, I), so the exact re-check decides as if R were checked in S's basis).
+MatQ rounded_p11(const Pinned& px, const lmi::KypData& d, const lmi::KypPoint& kp);
 
 /// The structured path's least dissipative point of (16) (analysis.hpp, AnalysisPath::kyp_riccati),
 /// exact: X pinned by the facial conditions (min g_i = 1), Q_E = r I, P11 from the Riccati

@@ -131,7 +131,7 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   p.r = tc;
   p.env.X = px.X;
   p.env.theta = {px.theta};
-  p.env.P11 = rounded_p11(k, kp);
+  p.env.P11 = rounded_p11(px, k, kp);
   p.env.QE = tc * G;
   const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, to_real<double>(DX(0, 0))), 20);
   p.QV = MatQ::Zero(m, m);

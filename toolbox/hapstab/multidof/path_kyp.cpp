@@ -8,11 +8,19 @@
 //   Q_E = Delta_D X - eps I,  Q_V = Q_E + Q_E^2/eps + eps I   (eps = mu/2, then mu/16),
 // which satisfy (14) (Schur complement eps I) and Q_V > 0 exactly; the planner's exact re-check
 // (recheck.cpp) decides. riccati_points builds them at any exact X (path_kyp_search.cpp calls it
-// at the X its outer search chose when X is not pinned). The search proves nothing by itself: no Riccati point, or a point that
-// fails the re-check, hands over to the next path (the generic SDP).
+// at the X its outer search chose when X is not pinned). When the realisation's basis leaves the
+// doubling no accuracy (a companion form of order 12 or more: no Riccati point on the whole
+// ladder), the equation is solved again in a scaled modal basis x' = S x, S rational, and the point
+// mapped back exactly (P11 = S^T P' S), so the re-check still decides in the realisation as
+// written. The search proves nothing by itself: no Riccati point, or a point that fails the
+// re-check, hands over to the next path (the generic SDP).
 //
 // Implements: paper 000 (16) via the KYP lemma (Rantzer 1996); DESIGN.md "Structure to exploit".
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <Eigen/SVD>
 #include <chrono>
+#include <cmath>
 #include <sstream>
 
 #include "hapstab/lmi/kyp.hpp"
@@ -55,10 +63,10 @@ std::optional<Pinned> detail::pinned_x(const Problem& pb, const EhatSplit& sp, c
   return px;
 }
 
-// The Riccati point P11 rounded to dyadic rationals: the fewest bits (24, 32, 44, 52) whose
-// rounding moves lambda_min of the first LMI by at most a tenth of its margin (double check;
-// the exact re-check decides).
-MatQ detail::rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp) {
+// The Riccati point rounded to dyadic rationals: the fewest bits (24, 32, 44, 52) whose rounding
+// moves lambda_min of the first LMI by at most a tenth of its margin (double check; the exact
+// re-check decides), mapped back to the realisation as written exactly.
+MatQ detail::rounded_p11(const Pinned& px, const lmi::KypData& d, const lmi::KypPoint& kp) {
   const Eigen::Index n = kp.P.rows();
   MatQ R(n, n);
   for (int bits : {24, 32, 44, 52}) {
@@ -66,7 +74,51 @@ MatQ detail::rounded_p11(const lmi::KypData& d, const lmi::KypPoint& kp) {
       for (Eigen::Index i = 0; i <= j; ++i) R(i, j) = R(j, i) = lmi::round_dyadic(kp.P(i, j), bits);
     if (std::abs(lmi::kyp_min_eigenvalue(d, to_double(R)) - kp.min_eig) <= 0.1 * kp.min_eig) break;
   }
-  return R;
+  if (px.basis.size() == 0) return R;
+  return exact_product(exact_product(MatQ(px.basis.transpose()), R), px.basis);
+}
+
+// The modal basis: the real eigenvectors of A (a complex pair as its real and imaginary parts),
+// each mode scaled so that its rows of B and S have equal norms (the Riccati solution then has
+// entries of one size: condition number 32 against 1e7 unscaled for the order-13 chain of
+// bench/contact_scene.py --chain 6). In double: any invertible S does, the exact re-check of
+// S^T R S decides.
+std::optional<Pinned> detail::in_modal_basis(const Pinned& px) {
+  const MatrixXd& A = px.kyp.A;
+  const Eigen::Index n = A.rows();
+  if (n < 2) return std::nullopt;
+  Eigen::EigenSolver<MatrixXd> es(A);
+  if (es.info() != Eigen::Success) return std::nullopt;
+  const Eigen::VectorXcd lam = es.eigenvalues();
+  const Eigen::MatrixXcd V = es.eigenvectors();
+  MatrixXd Vr(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const bool pair = lam(i).imag() != 0 && i + 1 < n;
+    Vr.col(i) = V.col(i).real();  // (Eigen's v has norm 1; a pair's parts keep their ratio: a real Jordan block)
+    if (pair) Vr.col(i + 1) = V.col(i).imag(), ++i;
+  }
+  const Eigen::JacobiSVD<MatrixXd> sv(Vr);
+  const double cond = sv.singularValues()(0) / sv.singularValues()(n - 1);
+  // near 1: the basis is modal already; beyond 1e12: a defective eigenvalue (a delay's shift chain)
+  if (!std::isfinite(cond) || cond < 1e3 || cond > 1e12) return std::nullopt;
+  MatrixXd S = Vr.inverse();
+  const MatrixXd SB = S * px.kyp.B, SS = Vr.transpose() * px.kyp.S;  // B' = S B, S' = S^-T S_kyp
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index k = lam(i).imag() != 0 && i + 1 < n ? 2 : 1;
+    const double b = SB.middleRows(i, k).norm(), s = SS.middleRows(i, k).norm();
+    if (b > 0 && s > 0) S.middleRows(i, k) *= std::sqrt(s / b);
+    i += k - 1;
+  }
+  Pinned out = px;
+  // S exactly as computed (53 bits): rounded coarser, S A S^-1 would no longer be block diagonal
+  // to the doubles' accuracy (S's condition number times the rounding couples the modes)
+  out.basis = lmi::to_rational(S);
+  const MatrixXd Si = Eigen::PartialPivLU<MatrixXd>(S).inverse();
+  if (!Si.allFinite()) return std::nullopt;
+  out.kyp.A = S * A * Si;
+  out.kyp.B = S * px.kyp.B;
+  out.kyp.S = Si.transpose() * px.kyp.S;
+  return out;
 }
 
 std::optional<Premises> riccati_premises(const PathContext& c, bool backend_premise) {
@@ -77,13 +129,35 @@ std::optional<Premises> riccati_premises(const PathContext& c, bool backend_prem
   return std::nullopt;
 }
 
-RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector<rational>& theta, lmi::KypData d) {
+RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector<rational>& theta,
+                             const lmi::KypData& d0) {
   RiccatiPoints rp;
   const int m = pb.structure.m();
   const MatQ DX = exact_product(pb.structure.delta_D(), X);
+  Pinned as_written;
+  as_written.X = X;
+  as_written.kyp = d0;
+  lmi::KypData d = d0;
   d.R -= to_double(DX);
   const auto t0 = std::chrono::steady_clock::now();
   rp.kp = lmi::kyp_interior_point(d);
+  if (!rp.kp.found) {  // a badly conditioned basis (in_modal_basis) leaves the doubling no accuracy
+    if (std::optional<Pinned> mp = in_modal_basis(as_written)) {
+      lmi::KypData dm = mp->kyp;
+      dm.R -= to_double(DX);
+      lmi::KypPoint km = lmi::kyp_interior_point(dm);
+      km.riccati_solves += rp.kp.riccati_solves;
+      if (km.found) {
+        rp.kp = std::move(km);
+        d = std::move(dm);
+        rp.modal = std::move(mp);
+        rp.basis_note = " in a scaled modal basis x' = S x, S rational, mapped back exactly: P11 = S^T P' S";
+      } else {
+        rp.kp.riccati_solves = km.riccati_solves;
+        rp.kp.detail += "; in a scaled modal basis: " + km.detail;
+      }
+    }
+  }
   rp.numeric_seconds = since(t0);
   const lmi::KypPoint& kp = rp.kp;
   if (!kp.found) {
@@ -93,7 +167,7 @@ RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector
   ExactEnv x;
   x.X = X;
   x.theta = theta;
-  x.P11 = rounded_p11(d, kp);
+  x.P11 = rounded_p11(rp.modal ? *rp.modal : as_written, d, kp);
   for (double f : {0.5, 0.0625}) {
     const rational eps = lmi::round_dyadic(f * kp.min_eig, 20);
     if (!(eps > 0)) break;
@@ -130,10 +204,14 @@ SolvePath kyp_riccati_path(bool backend_premise) {
     r.no_point = rp.no_point;
     const lmi::KypPoint& kp = rp.kp;
     if (!kp.found) return r;
+    if (rp.modal) {  // the least dissipative coupling then solves in this basis too
+      rp.modal->theta = px.theta;
+      r.pinned = std::move(rp.modal);
+    }
     std::ostringstream o;
     o << "structured KYP path (X pinned to one direction by the facial conditions, min g_i = 1): P11 from the "
          "Riccati equation of (16)'s first LMI with Q_E = Delta_D X (lmi/kyp.hpp: "
-      << kp.riccati_solves << " DARE solve(s), " << kp.detail << ")";  // its time: AnalysisResult::sdp_seconds
+      << kp.riccati_solves << " DARE solve(s)" << rp.basis_note << ", " << kp.detail << ")";  // its time: AnalysisResult::sdp_seconds
     r.solver_detail = o.str();
     return r;
   };

@@ -157,8 +157,11 @@ struct RiccatiPoints {
   lmi::KypPoint kp;
   std::string no_point;  ///< why there is none
   double numeric_seconds = 0;
+  std::optional<detail::Pinned> modal;  ///< set when the point was found in a scaled modal basis
+  std::string basis_note;               ///< says so, for the path's account
 };
-RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector<rational>& theta, lmi::KypData d);
+RiccatiPoints riccati_points(const Problem& pb, const MatQ& X, const std::vector<rational>& theta,
+                             const lmi::KypData& d);
 SolvePath generic_sdp_path();
 /// The structured KYP/Riccati path when the facial conditions leave X a d-dimensional set (d > 1):
 /// an outer search over X = sum g_i X_i by the frequency-domain form of the KYP lemma, the
