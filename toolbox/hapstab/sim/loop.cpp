@@ -6,6 +6,7 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::sim {
@@ -178,30 +179,37 @@ void check_discrete(const StateSpace<Q>& G, const std::string& what, const Q& T,
                      dims(G));
 }
 
-// E with the coupling V in parallel with the device (paper 000 (11)).
+// E with the coupling V in parallel with the device (paper 000 (11)). Products and the solve
+// through FLINT (numeric/exact_matrix.hpp): at 128 DOF, D_E is a dense 128 x 128 block and
+// Eigen's rational products and LU cost tens of seconds per composition.
 StateSpace<Q> coupled_controller(const StateSpace<Q>& E, const StateSpace<Q>& V, int N, const Q& T) {
   // u = -(Ce se + De (m + Cv sv + Dv u))  =>  (I + De Dv) u = -(Ce se + De Cv sv + De m)
-  MQ S = MQ::Identity(N, N) + E.D * V.D;
-  Eigen::FullPivLU<MQ> slu(S);
-  if (slu.rank() < N)
+  const MQ S = MQ::Identity(N, N) + exact_product(E.D, V.D);
+  if (exact_rank(S) < N)
     throw InputError("environment/coupling: the algebraic loop through their feedthrough terms is singular "
                      "(det(I + D_E D_V) = 0)");
-  const MQ Si = slu.inverse();
   const Eigen::Index ne = E.states(), nv = V.states();
-  MQ Cu = zeros(N, ne + nv), Du = -Si * E.D;
-  Cu.block(0, 0, N, ne) = -Si * E.C;
-  Cu.block(0, ne, N, nv) = -Si * E.D * V.C;
+  MQ rhs(N, ne + nv + N);  // S [Cu | Du] = -[Ce | De Cv | De]; empty blocks skipped (null data)
+  if (ne > 0) rhs.leftCols(ne) = -E.C;
+  if (nv > 0) rhs.middleCols(ne, nv) = -exact_product(E.D, V.C);
+  rhs.rightCols(N) = -E.D;
+  const MQ CuDu = exact_solve(S, rhs, "I + D_E D_V");
+  const MQ Cu = CuDu.leftCols(ne + nv), Du = CuDu.rightCols(N);
   // x_e = m + Cv sv + Dv u ; se' = Ae se + Be x_e ; sv' = Av sv + Bv u
-  MQ Xs = zeros(N, ne + nv), Xm = MQ::Identity(N, N) + V.D * Du;
-  Xs.block(0, ne, N, nv) = V.C;
-  Xs += V.D * Cu;
+  MQ Xs = exact_product(V.D, Cu);
+  if (nv > 0) Xs.rightCols(nv) += V.C;
+  const MQ Xm = MQ::Identity(N, N) + exact_product(V.D, Du);
   MQ Ac = zeros(ne + nv, ne + nv), Bc = zeros(ne + nv, N);
-  Ac.block(0, 0, ne, ne + nv) = E.B * Xs;
-  Ac.block(0, 0, ne, ne) += E.A;
-  Bc.block(0, 0, ne, N) = E.B * Xm;
-  Ac.block(ne, 0, nv, ne + nv) = V.B * Cu;
-  Ac.block(ne, ne, nv, nv) += V.A;
-  Bc.block(ne, 0, nv, N) = V.B * Du;
+  if (ne > 0) {
+    Ac.topRows(ne) = exact_product(E.B, Xs);
+    Ac.topLeftCorner(ne, ne) += E.A;
+    Bc.topRows(ne) = exact_product(E.B, Xm);
+  }
+  if (nv > 0) {
+    Ac.bottomRows(nv) = exact_product(V.B, Cu);
+    Ac.bottomRightCorner(nv, nv) += V.A;
+    Bc.bottomRows(nv) = exact_product(V.B, Du);
+  }
   return StateSpace<Q>{Ac, Bc, Cu, Du, T};
 }
 
