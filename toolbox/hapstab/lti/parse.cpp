@@ -616,7 +616,7 @@ AffineSplit split_affine(std::string_view text, const ParseOptions& options, con
   const RationalFunction<rational> H1 = s.H1.H - s.H0.H;
   if (H1.is_zero()) throw InputError("the expression does not depend on " + name);
   s.H1.H = H1;
-  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2), rational(1234567, 891011)}) {
+  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2), rational(1234567, 891011)}) {
     const TransferFunction Hk = at(k);
     if (Hk.H != s.H0.H + RationalFunction<rational>(k) * H1)
       throw InputError("the expression must be affine in " + name + " (H = H0 + " + name + " H1, e.g. a stiffness or a damping)");
