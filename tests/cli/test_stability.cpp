@@ -145,9 +145,11 @@ TEST(StabilityCli, ConservatismRefusalsAndBrackets) {
   const double e_lo = std::stod(j["change_in"][0].get<std::string>()), e_hi = std::stod(j["change_in"][1].get<std::string>());
   const double t_lo = std::stod(j["theorem5"]["bracket"][0].get<std::string>()),
                t_hi = std::stod(j["theorem5"]["bracket"][1].get<std::string>());
-  const double c_lo = std::stod(j["conservatism"][0].get<std::string>()), c_hi = std::stod(j["conservatism"][1].get<std::string>());
   EXPECT_LT(t_lo, e_hi);  // sound: Theorem 5 never concludes where the loop is NOT stable
-  EXPECT_LE(c_lo, e_lo / t_hi);  // rounded outward
-  EXPECT_GE(c_hi, e_hi / t_lo);
-  EXPECT_GE(c_hi, 1.0);
+  EXPECT_LT(e_lo, e_hi);
+  EXPECT_LT(t_lo, t_hi);
+  // kc is a coupling's stiffness: neither region is proven an interval (0, sup), so the brackets are
+  // boundaries and no ratio of suprema is stated (issue 46 item 6)
+  EXPECT_TRUE(j["conservatism"].is_null()) << j.dump();
+  EXPECT_NE(j["conservatism_note"].get<std::string>().find("not proven an interval"), std::string::npos) << j.dump();
 }

@@ -434,13 +434,12 @@ TEST(Sweep, MultiDofMaxWithConservatismRowsEqualASingleRun) {
            {j["change_in"][0], "change_in_lo"},
            {j["change_in"][1], "change_in_hi"},
            {j["theorem5"]["bracket"][0], "theorem5_bracket_lo"},
-           {j["theorem5"]["bracket"][1], "theorem5_bracket_hi"},
-           {j["conservatism"][0], "conservatism_lo"},
-           {j["conservatism"][1], "conservatism_hi"}}) {
+           {j["theorem5"]["bracket"][1], "theorem5_bracket_hi"}}) {
     ASSERT_TRUE(key.is_string()) << col << ": " << r.out;
     EXPECT_EQ(key.get<std::string>(), row[column(head, col)]) << col;
   }
   EXPECT_EQ(row[column(head, "path")], "bisection_on_verdicts");
-  EXPECT_GE(std::stod(row[column(head, "conservatism_hi")]), 1.0);  // Theorem 5 is sufficient only
+  // kc is not the environment's gain: no ratio of suprema (conservatism null, an empty column)
+  EXPECT_TRUE(j["conservatism"].is_null()) << r.out;
   fs::remove_all(d);
 }
