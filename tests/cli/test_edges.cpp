@@ -195,3 +195,17 @@ TEST(Edges, FastLongDelayFindsANarrowResonance) {
 }
 
 }  // namespace
+
+namespace {
+
+// A plant pole at -1e300 under a delay of 100 samples (m = 1e-300): the polynomial path's precision
+// ladder and its crossing search (2^80 pieces allowed) ran > 400 s; it answers or says undecided.
+TEST(Edges, StabilityMaxWithAnExtremeMassEnds) {
+  const auto r = run_cli("stability --plant \"1/(m*s^2 + b*s)\" --set m=1e-300 --set b=1 --H \"K + B*(z-1)/(T*z)\" "
+                         "--set B=1/2 --T 1/1000 --delay 100 --max K --json");
+  ASSERT_TRUE(r.code == 0 || r.code == 3) << r.code << "\n" << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  if (r.code == 3) EXPECT_EQ(j["status"], "undecided") << r.out;
+}
+
+}  // namespace

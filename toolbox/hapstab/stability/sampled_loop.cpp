@@ -626,7 +626,11 @@ std::optional<std::vector<Ball>> roots_in_unit_interval(const Vec<Ball>& Q) {
   struct Piece { rational lo, hi; int depth; };
   std::vector<Piece> todo{{rational(-1), rational(1), 0}};
   std::vector<Ball> out;
+  // a budget of pieces besides the depth: where the balls stay wide (coefficients spanning 10^600:
+  // m = 1e-300 under a delay of 100) every piece splits, and depth 80 alone allowed 2^80 of them
+  long pieces = 0;
   while (!todo.empty()) {
+    if (++pieces > 200000) return std::nullopt;
     const Piece pc = todo.back();
     todo.pop_back();
     const rational mid = (pc.lo + pc.hi) / 2;
@@ -907,7 +911,11 @@ MaxGain max_gain(const Loop& loop, int digits, const std::string& gain_name) {
   Plan pl = plan(p, loop, true);
   const slong first = std::max<slong>(128, 4 * digits + 64);
   MaxGain last;
-  for (slong prec = first; prec <= (pl.long_delay ? 8 : 64) * first; prec *= 2) {
+  // the polynomial path's ladder to 64x the first precision, or 8x beyond degree 50: there each
+  // rung's root finding costs seconds at thousands of bits, and a case undecided at 8x (a plant pole
+  // at -1e300 under a delay of 100: coefficients spanning 10^600) ran > 400 s before it said so
+  const auto top = [&] { return (pl.long_delay || pl.degree > 50 ? 8 : 64) * first; };
+  for (slong prec = first; prec <= top(); prec *= 2) {
     // the long-delay path undecided at 8x its first precision, and the polynomial small enough: it takes over
     if (pl.long_delay && prec == 8 * first && pl.degree <= limits::model_degree && loop.path != LoopPath::long_delay) {
       pl.long_delay = false;
