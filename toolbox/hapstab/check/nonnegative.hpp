@@ -4,8 +4,10 @@
 //   1. p = 0: yes.
 //   2. Yun's square-free decomposition p = c * prod_i a_i^i (gcds over Q); the odd part
 //      O = prod_{i odd} a_i holds exactly the roots where p changes sign.
-//   3. O with its roots at a and b divided out has no root in [a, b]: Sturm's theorem on the
-//      square-free O (V(a) - V(b) = number of distinct roots in (a, b], ends not roots).
+//   3. O with its roots at a and b divided out has no root in [a, b]: first by Descartes' rule
+//      of signs on R(y) = (1 + y)^d O(a + (b - a)/(1 + y)) (no sign variation: no root y > 0, i.e.
+//      none in (a, b)); when R has variations, by Sturm's theorem on the square-free O
+//      (V(a) - V(b) = number of distinct roots in (a, b], ends not roots).
 //   4. Then p has one sign on (a, b) away from its roots: p(x) > 0 at the first of deg p + 1
 //      distinct points x in (a, b) where p(x) != 0 (one of them is not a root).
 // Theorem (Sturm, 1829): for a square-free p with p(a), p(b) != 0, the number of real roots in
