@@ -7,13 +7,14 @@
 //                                  {"line", "verdict": "verified|refuted|malformed", "exit", "reason"}
 // docs/certificates.md has the format and each checker's theorem.
 #include <algorithm>
-#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <memory>
 
 #include "cli/command.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/report/paths.hpp"
 
 namespace hapstab::cli {
 namespace {
@@ -24,8 +25,8 @@ struct Opts {
 };
 
 int run_batch(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError("--batch: cannot read '" + file + "'");
+  // a regular file of at most 256 MB (not /dev/zero or a FIFO), as bound --batch reads its file
+  std::istringstream in(report::read_input_file(file, "--batch", 256u << 20));
   std::string line;
   int worst = 0, lineno = 0;
   while (std::getline(in, line)) {
