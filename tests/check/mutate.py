@@ -27,6 +27,7 @@ import copy
 import json
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -350,6 +351,7 @@ def main():
         if not ok:
             failures.append("%s / %s: expected %s, hapstab check %d (%s), independent %d (%s)" % (
                 kind, name, expect, ccode, creason[:160], pcode, preason[:160]))
+    shutil.rmtree(tmp, ignore_errors=True)
     n = len(mutants)
     accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py) if e in ("refute", "malformed") and (cj["exit"] == 0 or pc == 0))
     print("certificates: %d (%d bound, %d r); producer runs skipped: %s" % (

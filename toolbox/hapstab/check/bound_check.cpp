@@ -1,6 +1,7 @@
 // hapstab/check/bound_check.cpp -- see bound_check.hpp.
 #include "hapstab/check/bound_check.hpp"
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -51,6 +52,7 @@ std::string decimal(const rational& x) { return to_decimal(x, 12); }
 }  // namespace
 
 Verdict check_bound(const nlohmann::json& cert) {
+  constexpr long max_degree = 1000;
   using detail::exact_field;
   using detail::object_field;
   const nlohmann::json& model = object_field(cert, "model", "certificate");
@@ -88,6 +90,11 @@ Verdict check_bound(const nlohmann::json& cert) {
     throw InputError(std::string("model.H: ") + e.what());
   }
   if (!H.is_discrete()) throw InputError("model.H: expected a transfer function in z");
+  // the checker expands z^-n: its polynomials have degree max(deg N, deg D + n) (twice that in c)
+  const long degree = std::max<long>(H.num().degree(), H.den().degree() + n);
+  if (degree > max_degree)
+    throw InputError("model: H z^-n has degree " + std::to_string(degree) + ", beyond this checker's limit of " +
+                     std::to_string(max_degree) + " (it expands the delay exactly)");
 
   // ---- the claim
   if (!claim.contains("status") || !claim.at("status").is_string())

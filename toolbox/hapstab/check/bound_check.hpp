@@ -20,6 +20,8 @@
 //           Ar(c0)/Br(c0) + eta >= lo, exactly, with Ar/Br = A/B reduced (g = gcd(A, B)) and
 //           Br(c0) != 0: Ar/Br is continuous at c0 and equals f off the finitely many zeros of B,
 //           so it is f's value or limit at c0, and the supremum is at least that.
+// Size limit: max(deg N, deg D + n) <= 1000 (the check expands z^-n; degree 300 takes ~7 s), else
+// the certificate is refused (InputError) rather than checked for hours.
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), eta >= 0, lo <= hi,
 // the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers claimed, exactly.
 // Not verified here: that H is stable (the premise under which b* is the passivity bound of
