@@ -38,6 +38,8 @@ import sys
 from fractions import Fraction
 
 MAX_DEGREE = 64
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)  # exact numbers of any length (Python 3.11 limits str -> int to 4300 digits)
 
 
 class Malformed(Exception):
@@ -466,6 +468,11 @@ def objective_c(H, T, n):
     return hat(Eu), hat(Fu)
 
 
+def short(x):
+    s = str(x)
+    return s if len(s) <= 60 else s[:57] + "..."
+
+
 def check_bound(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
     model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
@@ -524,7 +531,7 @@ def check_bound(c):
     v = peval(Ar, c0) / f0 + eta
     if v < lo:
         return False, "b* >= %s (%.12g) not shown: the objective at the witness c0 = %s is %.12g < lo" % (
-            lo, float(lo), c0, float(v))
+            short(lo), float(lo), short(c0), float(v))
     return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
 
 
@@ -604,6 +611,8 @@ def check(c):
         return 3, str(e)
     except RecursionError:
         return 2, "model.H: nested too deep"
+    except (ZeroDivisionError, ValueError, TypeError, AssertionError) as e:  # never "verified"
+        return 3, "internal error of the checker: %r" % (e,)
 
 
 def main(argv):
