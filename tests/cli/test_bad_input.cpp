@@ -60,6 +60,7 @@ std::vector<Case> catalogue(const std::string& out) {
       // beyond the argument-reduction limit: refused at once (issue 40: 1e50000 ran past 20 s)
       {"r", "--omega", {"--T", "1/1000", "--omega", "1e100004"}, "not below 10^100000"},
       {"r", "--terms", {"--T", "1", "--omega", "1", "--terms", "-5"}, "--terms"},
+      {"r", "--certificate", {"--T", "1", "--omega", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"r", "--digits", {"--T", "1", "--omega", "1", "--digits", "0"}, "--digits"},
       {"r", "--json", {"--T", "1", "--omega", "1", "--json=maybe"}, "--json"},
       {"bound", "--H", {"--H", "1/(z-", "--T", "1/1000"}, "column 6"},
@@ -71,6 +72,8 @@ std::vector<Case> catalogue(const std::string& out) {
       {"bound", "--delay", {"--H", "1", "--T", "1", "--delay", "2000000"}, "more than the limit of 1000000"},
       {"bound", "--frac-delay", {"--H", "1", "--T", "1", "--frac-delay", "x"}, "--frac-delay"},
       {"bound", "--eta", {"--H", "1", "--T", "1", "--eta", "-1"}, "--eta"},
+      {"bound", "--certificate", {"--H", "1", "--T", "1", "--frac-delay", "1/2", "--certificate", "c.json"}, "not implemented yet"},
+      {"bound", "--certificate", {"--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"bound", "--digits", {"--H", "1", "--T", "1", "--digits", "5"}, "--digits"},
       {"bound", "--method", {"--H", "1", "--T", "1", "--method", "fastest"}, "--method"},
       {"bound", "--grid-points", {"--H", "1", "--T", "1", "--method", "grid", "--grid-points", "1"}, "--grid-points"},

@@ -4,6 +4,7 @@
 //                 [--frac-delay TD] [--eta ETA] [--digits D] [--method certified|fast|grid]
 //                 [--explain] [--json] [--curve FILE] [--quantum DELTA [--coulomb FC]]
 //   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
+//   --certificate FILE writes b*'s certificate for `hapstab check` (cli/certificate.hpp; integer delays)
 // JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
 // closed_form (name or null), plus method, path ("exact" or "long_delay") and plan (the planner's
 // reason), where, closed_form_value; dirichlet_C/_D (certified
@@ -19,6 +20,7 @@
 
 #include "cli/batch_line.hpp"
 #include "cli/bound_max.hpp"
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/tf_options.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -36,7 +38,7 @@ using namespace hapstab::passivity;
 
 struct BoundOpts {
   cli::TfOptions tf;
-  std::string frac, eta = "0", method = "certified", curve, damping, quantum, coulomb, max;
+  std::string frac, eta = "0", method = "certified", curve, damping, quantum, coulomb, max, certificate;
   int digits = 30;
   long grid = 100000;
   bool explain = false, json = false, allow_noncausal = false;
@@ -69,6 +71,8 @@ void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   if (!batch_line) {
     app.add_flag("--json", o.json, "JSON output");
     app.add_option("--curve", o.curve, "write 'omega objective' samples (2001 points, 50 digits) to FILE");
+    app.add_option("--certificate", o.certificate,
+                   "write b*'s certificate (JSON) to FILE, for `hapstab check FILE` (docs/certificates.md)");
   }
 }
 
@@ -382,6 +386,9 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                            app.add_option("--batch", *batch, "FILE with one case per line; prints one JSON line per case");
                            return [o, batch]() -> int {
                              if (!batch->empty()) return run_batch(*batch);
+                             if (!o->certificate.empty() && (!o->max.empty() || !o->frac.empty()))
+                               throw InputError(std::string("--certificate: a certificate of ") +
+                                                (o->max.empty() ? "b* with --frac-delay" : "bound --max") + " is not implemented yet");
                              if (!o->max.empty()) {
                                const cli::BoundMax m = compute_max(*o);
                                if (o->json) cli::print_json(cli::bound_max_json(m, o->digits));
@@ -389,6 +396,8 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                                return cli::bound_max_exit(m);
                              }
                              Outcome r = compute(*o);
+                             if (!o->certificate.empty())
+                               cli::write_certificate(o->certificate, cli::bound_certificate(o->tf, r.p, r.b, o->digits));
                              if (!o->curve.empty()) {
                                std::ofstream f(o->curve);
                                if (!f) throw InputError("--curve: cannot write '" + o->curve + "'");

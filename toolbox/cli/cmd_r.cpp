@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -16,7 +17,7 @@ namespace hapstab::cli {
 namespace {
 
 struct Opts {
-  std::string T, omega;
+  std::string T, omega, certificate;
   long terms = 1000;
   int digits = 20;
   bool json = false;
@@ -34,6 +35,7 @@ int run(const Opts& o) {
   if (o.terms < 0 || o.terms > 100000000)
     throw InputError("--terms: " + std::to_string(o.terms) + " is outside [0, 100000000]");
   const auto r = sampling::r_decimal(T, w, o.terms, o.digits);
+  if (!o.certificate.empty()) write_certificate(o.certificate, r_certificate(T, w, r.im, o.digits));
   if (o.json) {
     nlohmann::json j;
     j["T"] = T.str();
@@ -77,6 +79,8 @@ const Register reg({"r",
                           ->required();
                       app.add_option("--terms", o->terms, "Series (34) truncated at |n| <= N (default 1000)");
                       app.add_option("--digits", o->digits, "Significant digits, 1..1000 (default 20)");
+                      app.add_option("--certificate", o->certificate,
+                                     "Write the certificate of Re r, Im r (JSON) to FILE, for `hapstab check FILE`");
                       app.add_flag("--json", o->json, "Print JSON (keys re, im, series_re, series_im, "
                                                       "series_terms, series_error_bound)");
                       return [o]() { return run(*o); };

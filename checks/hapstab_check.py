@@ -1,0 +1,650 @@
+#!/usr/bin/env python3
+"""An independent checker of hapstab certificates (issue 47): it shares no code with hapstab.
+
+    python3 checks/hapstab_check.py CERT.json        "verified" (exit 0), "refuted: <why>" (exit 1),
+                                                     "malformed: <field>" (exit 2),
+                                                     "not checked: <why>" (exit 3, beyond the size limit)
+    python3 checks/hapstab_check.py --batch FILE     one certificate per line, one JSON verdict per line
+
+Python 3 standard library (fractions) for everything exact; mpmath's interval arithmetic (iv) only
+for the enclosure of cot in `r`. It reads the model as written (the expression of H(z) with its own
+parser, below) and derives every quantity by a route other than hapstab's (docs/certificates.md).
+
+Kinds and theorems:
+
+bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n/(1-z)} + eta, z = e^{jwT} (paper 001, (45)/(54)).
+       Route: t = tan(wT/2), z = (1+jt)/(1-jt), T/(1-z) = T/2 + jT/(2t). With H z^-n = N/D' and
+       d = max(deg N, deg D'), N(z) = Nt(t)/(1-jt)^d, D'(z) = Dt(t)/(1-jt)^d, so with
+       G = Nt conj(Dt) = Gr + j Gi (real polynomials in t):
+           f = (T/2) [Gr(t) - Gi(t)/t] / |Dt(t)|^2 + eta,
+       Gi odd and Gr, |Dt|^2 even in t (real coefficients), hence E(u)/F(u) in u = t^2 >= 0; with
+       u = (1-c)/(1+c), c = cos(wT), and m = max(deg E, deg F):
+           f(c) = (T/2) E^(c)/F^(c) + eta,  E^(c) = sum e_i (1-c)^i (1+c)^(m-i), F^ likewise,
+       F^ >= 0 on [-1, 1] (it is (1+c)^m |Dt|^2). Claim b* in [lo, hi] (or = v):
+         upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [-1, 1]: the distinct roots of P in [-1, 1]
+                isolated by bisection with Sturm counts of P's square-free part, and P > 0 at both
+                ends of every isolating interval and P >= 0 at -1 and 1 (P keeps its sign between
+                roots);
+         lower  the witness c0 in [-1, 1] with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced
+                by their gcd (at a removable point the value is f's limit, which the sup reaches).
+r      r(jw) = T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2) (paper 001, (44)): Re r = -T/2 exactly;
+       Im r in [im_lo, im_hi] by mpmath interval cot at 128, 256, ... 65536 bits.
+
+Size limit: bound models of degree max(deg N, deg D + n) <= 64 (exact Sturm sequences in
+Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond it exit 3.
+"""
+import json
+import sys
+from fractions import Fraction
+
+MAX_DEGREE = 64
+if hasattr(sys, "set_int_max_str_digits"):
+    sys.set_int_max_str_digits(0)  # exact numbers of any length (Python 3.11 limits str -> int to 4300 digits)
+
+
+class Malformed(Exception):
+    pass
+
+
+class TooLarge(Exception):
+    pass
+
+
+# ---------------------------------------------------------------- polynomials (ascending lists)
+def trim(p):
+    p = list(p)
+    while p and p[-1] == 0:
+        p.pop()
+    return p
+
+
+def padd(a, b):
+    n = max(len(a), len(b))
+    return trim([(a[i] if i < len(a) else 0) + (b[i] if i < len(b) else 0) for i in range(n)])
+
+
+def pneg(a):
+    return [-x for x in a]
+
+
+def psub(a, b):
+    return padd(a, pneg(b))
+
+
+def pmul(a, b):
+    if not a or not b:
+        return []
+    out = [Fraction(0)] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        if x == 0:
+            continue
+        for j, y in enumerate(b):
+            out[i + j] += x * y
+    return trim(out)
+
+
+def pscale(a, k):
+    return trim([x * k for x in a])
+
+
+def pdivmod(a, b):
+    a = list(a)
+    if not b:
+        raise ZeroDivisionError
+    q = [Fraction(0)] * max(len(a) - len(b) + 1, 0)
+    while len(a) >= len(b) and a:
+        k = Fraction(a[-1]) / b[-1]
+        s = len(a) - len(b)
+        q[s] = k
+        for i, y in enumerate(b):
+            a[s + i] -= k * y
+        a.pop()
+        a = trim(a)
+    return trim(q), a
+
+
+def pgcd(a, b):
+    a, b = trim(a), trim(b)
+    while b:
+        a, b = b, pdivmod(a, b)[1]
+    if not a:
+        return a
+    return [x / a[-1] for x in a]
+
+
+def pderiv(a):
+    return trim([i * a[i] for i in range(1, len(a))])
+
+
+def peval(a, x):
+    v = Fraction(0)
+    for c in reversed(a):
+        v = v * x + c
+    return v
+
+
+def ppow(a, n):
+    r = [Fraction(1)]
+    for _ in range(n):
+        r = pmul(r, a)
+    return r
+
+
+# ---------------------------------------------------------------- rational functions in z
+class RF:
+    def __init__(self, num, den=None):
+        self.num = trim(num)
+        self.den = trim(den) if den is not None else [Fraction(1)]
+        if not self.den:
+            raise ZeroDivisionError
+        self.reduce()
+
+    def reduce(self):
+        if not self.num:
+            self.den = [Fraction(1)]
+            return
+        g = pgcd(self.num, self.den)
+        if len(g) > 1:
+            self.num = pdivmod(self.num, g)[0]
+            self.den = pdivmod(self.den, g)[0]
+        lead = self.den[-1]
+        self.num = [x / lead for x in self.num]
+        self.den = [x / lead for x in self.den]
+
+    def __add__(self, o):
+        return RF(padd(pmul(self.num, o.den), pmul(o.num, self.den)), pmul(self.den, o.den))
+
+    def __sub__(self, o):
+        return RF(psub(pmul(self.num, o.den), pmul(o.num, self.den)), pmul(self.den, o.den))
+
+    def __mul__(self, o):
+        return RF(pmul(self.num, o.num), pmul(self.den, o.den))
+
+    def __truediv__(self, o):
+        if not o.num:
+            raise Malformed("model.H: division by zero")
+        return RF(pmul(self.num, o.den), pmul(self.den, o.num))
+
+    def __neg__(self):
+        return RF(pneg(self.num), self.den)
+
+    def degree(self):
+        return max(len(self.num), len(self.den)) - 1
+
+
+# ---------------------------------------------------------------- the expression of H(z), as written
+def lex(text):
+    toks, i = [], 0
+    while i < len(text):
+        ch = text[i]
+        if ch.isspace():
+            i += 1
+            continue
+        if ch.isdigit() or ch == '.':
+            j = i
+            while j < len(text) and (text[j].isdigit() or text[j] == '.'):
+                j += 1
+            if j < len(text) and text[j] in 'eE':
+                k = j + 1
+                if k < len(text) and text[k] in '+-':
+                    k += 1
+                if k < len(text) and text[k].isdigit():
+                    while k < len(text) and text[k].isdigit():
+                        k += 1
+                    j = k
+            toks.append(('num', text[i:j]))
+            i = j
+            continue
+        if ch.isascii() and (ch.isalpha() or ch == '_'):
+            j = i
+            while j < len(text) and text[j].isascii() and (text[j].isalnum() or text[j] == '_'):
+                j += 1
+            toks.append(('name', text[i:j]))
+            i = j
+            continue
+        if ch in '+-*/^()':
+            toks.append((ch, ch))
+            i += 1
+            continue
+        raise Malformed("model.H: unexpected character %r" % ch)
+    toks.append(('end', ''))
+    return toks
+
+
+def parse_h(text, T, params):
+    """H(z) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
+    z, T and the parameters; -z^2 is -(z^2); a^b^c is refused."""
+    toks = lex(text)
+    pos = [0]
+
+    def peek():
+        return toks[pos[0]][0]
+
+    def take():
+        t = toks[pos[0]]
+        pos[0] += 1
+        return t
+
+    def expr(depth):
+        r = term(depth)
+        while peek() in '+-' and peek() != 'end':
+            op = take()[0]
+            t = term(depth)
+            r = r + t if op == '+' else r - t
+        return r
+
+    def term(depth):
+        r = unary(depth)
+        while peek() in ('*', '/'):
+            op = take()[0]
+            f = unary(depth)
+            r = r * f if op == '*' else r / f
+        return r
+
+    def unary(depth):
+        neg = False
+        while peek() in ('+', '-'):
+            neg ^= take()[0] == '-'
+        r = power(depth)
+        return -r if neg else r
+
+    def power(depth):
+        base = primary(depth)
+        if peek() != '^':
+            return base
+        take()
+        paren = False
+        if peek() == '(':
+            paren = True
+            take()
+        sign = 1
+        if peek() in ('+', '-'):
+            sign = -1 if take()[0] == '-' else 1
+        kind, txt = take()
+        if kind != 'num' or not txt.isdigit() or len(txt) > 4:
+            raise Malformed("model.H: expected an integer exponent after '^'")
+        k = sign * int(txt)
+        if paren and take()[0] != ')':
+            raise Malformed("model.H: expected ')' to close the exponent")
+        if peek() == '^':
+            raise Malformed("model.H: a^b^c is ambiguous")
+        if abs(k) * max(base.degree(), 0) > MAX_DEGREE:
+            raise TooLarge("model.H: a power of degree above %d" % MAX_DEGREE)
+        if k < 0:
+            if not base.num:
+                raise Malformed("model.H: division by zero")
+            base = RF([Fraction(1)]) / base
+            k = -k
+        r = RF([Fraction(1)])
+        for _ in range(k):
+            r = r * base
+        return r
+
+    def primary(depth):
+        kind, txt = take()
+        if kind == 'num':
+            try:
+                return RF([Fraction(txt)])
+            except (ValueError, ZeroDivisionError):
+                raise Malformed("model.H: malformed number %r" % txt)
+        if kind == 'name':
+            if txt == 'z':
+                return RF([Fraction(0), Fraction(1)])
+            if txt in params:
+                return RF([params[txt]])
+            if txt == 'T':
+                return RF([T])
+            raise Malformed("model.H: unknown name %r" % txt)
+        if kind == '(':
+            if depth > 200:
+                raise Malformed("model.H: parentheses nested too deep")
+            r = expr(depth + 1)
+            if take()[0] != ')':
+                raise Malformed("model.H: expected ')'")
+            return r
+        raise Malformed("model.H: expected a number, a name or '('")
+
+    h = expr(0)
+    if peek() != 'end':
+        raise Malformed("model.H: unexpected %r" % toks[pos[0]][1])
+    return h
+
+
+# ---------------------------------------------------------------- certificate fields
+def exact(obj, key, where):
+    if not isinstance(obj, dict) or key not in obj:
+        raise Malformed("%s.%s: missing" % (where, key))
+    return exact_value(obj[key], "%s.%s" % (where, key))
+
+
+def exact_value(v, what):
+    if not isinstance(v, str):
+        raise Malformed("%s: expected a string \"p/q\"" % what)
+    s = v[1:] if v.startswith('-') else v
+    parts = s.split('/')
+    if len(parts) > 2 or not all(p.isascii() and p.isdigit() for p in parts):
+        raise Malformed("%s: %r is not \"p/q\" or \"p\" (integers)" % (what, v[:60]))
+    if len(parts) == 2 and int(parts[1]) == 0:
+        raise Malformed("%s: divides by zero" % what)
+    return Fraction(v)
+
+
+def obj_field(c, key):
+    if not isinstance(c, dict) or key not in c:
+        raise Malformed("%s: missing" % key)
+    if not isinstance(c[key], dict):
+        raise Malformed("%s: not an object" % key)
+    return c[key]
+
+
+def only(obj, known, where):
+    for k in obj:
+        if k not in known:
+            raise Malformed("%s.%s: a field this checker does not know (it would not be checked)" % (where, k))
+
+
+def printed_number(v, what):
+    if not isinstance(v, str):
+        raise Malformed("%s: not a string" % what)
+    try:
+        return Fraction(v.strip())
+    except (ValueError, ZeroDivisionError):
+        raise Malformed("%s: %r is not a number" % (what, v))
+
+
+# ---------------------------------------------------------------- P >= 0 on [a, b]
+def sturm_seq(p):
+    seq = [p, pderiv(p)]
+    while seq[-1] and len(seq[-1]) > 1:
+        r = pdivmod(seq[-2], seq[-1])[1]
+        if not r:
+            break
+        lead = abs(r[-1])
+        seq.append([-x / lead for x in r])
+    return seq
+
+
+def variations(seq, x):
+    signs = [s for s in (peval(q, x) for q in seq if q) if s != 0]
+    return sum(1 for u, v in zip(signs, signs[1:]) if (u > 0) != (v > 0))
+
+
+def nonneg_on(p, a, b):
+    """None when p >= 0 on [a, b], else the reason."""
+    if not p:
+        return None
+    for e in (a, b):
+        if peval(p, e) < 0:
+            return "negative at c = %s" % e
+    sq = pdivmod(p, pgcd(p, pderiv(p)))[0] if len(p) > 2 else p  # square-free part
+    if len(sq) <= 1:
+        return None if p[-1] > 0 else "a negative constant"
+    seq = sturm_seq(sq)
+
+    def count(lo, hi):  # distinct roots in (lo, hi]
+        return variations(seq, lo) - variations(seq, hi)
+
+    # isolate the roots in (a, b) by bisection; check p > 0 at every non-root end point met
+    stack = [(a, b)]
+    while stack:
+        lo, hi = stack.pop()
+        n = count(lo, hi) - (1 if peval(sq, hi) == 0 else 0)  # roots in (lo, hi)
+        for e in (lo, hi):
+            v = peval(p, e)
+            if v < 0:
+                return "negative at c = %s" % e
+        if n == 0:
+            # no root inside: p keeps the sign it has at a non-root end
+            for e in (lo, hi):
+                v = peval(p, e)
+                if v != 0:
+                    break
+            else:
+                mid = (lo + hi) / 2
+                if peval(p, mid) < 0:
+                    return "negative at c = %s" % mid
+            continue
+        if n == 1 and peval(sq, lo) != 0 and peval(sq, hi) != 0 and peval(p, lo) > 0 and peval(p, hi) > 0:
+            continue  # one root, p > 0 on both sides: p >= 0 on [lo, hi]
+        if hi - lo < Fraction(1, 2 ** 4000):
+            return "root isolation did not finish"
+        mid = (lo + hi) / 2
+        stack.append((lo, mid))
+        stack.append((mid, hi))
+    return None
+
+
+# ---------------------------------------------------------------- bound
+def objective_c(H, T, n):
+    """(E^, F^) with f(c) = (T/2) E^(c)/F^(c), by the tan(wT/2) route (module docstring)."""
+    N = H.num
+    Dp = [Fraction(0)] * n + H.den  # D' = D z^n
+    d = max(len(N), len(Dp)) - 1
+    if d > MAX_DEGREE:
+        raise TooLarge("degree %d of H z^-n is above this checker's limit %d" % (d, MAX_DEGREE))
+    # complex polynomials in t as (re, im) lists; 1 + jt and 1 - jt
+    def cmul(x, y):
+        return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
+    plus = ([Fraction(1)], [Fraction(0), Fraction(1)])
+    minus = ([Fraction(1)], [Fraction(0), Fraction(-1)])
+    pw_plus, pw_minus = [([Fraction(1)], [])], [([Fraction(1)], [])]
+    for _ in range(d):
+        pw_plus.append(cmul(pw_plus[-1], plus))
+        pw_minus.append(cmul(pw_minus[-1], minus))
+
+    def tilde(coeffs):
+        re, im = [], []
+        for k, a in enumerate(coeffs):
+            if a == 0:
+                continue
+            x = cmul(pw_plus[k], pw_minus[d - k])
+            re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
+        return re, im
+
+    Nr, Ni = tilde(N)
+    Dr, Di = tilde(Dp)
+    Gr = padd(pmul(Nr, Dr), pmul(Ni, Di))
+    Gi = psub(pmul(Ni, Dr), pmul(Nr, Di))
+    if Gi and Gi[0] != 0:
+        raise AssertionError("Im G(0) != 0 for a real H")
+    E = psub(Gr, Gi[1:])  # Gr - Gi/t
+    F = padd(pmul(Dr, Dr), pmul(Di, Di))
+    for p in (E, F):
+        if any(p[i] != 0 for i in range(1, len(p), 2)):
+            raise AssertionError("not even in t")
+    Eu, Fu = E[0::2], F[0::2]
+    m = max(len(Eu), len(Fu)) - 1
+    one_minus, one_plus = [Fraction(1), Fraction(-1)], [Fraction(1), Fraction(1)]
+    pm = [ppow(one_minus, i) for i in range(m + 1)]
+    pp = [ppow(one_plus, i) for i in range(m + 1)]
+
+    def hat(q):
+        out = []
+        for i, a in enumerate(q):
+            if a != 0:
+                out = padd(out, pscale(pmul(pm[i], pp[m - i]), a))
+        return out
+
+    return hat(Eu), hat(Fu)
+
+
+def short(x):
+    s = str(x)
+    return s if len(s) <= 60 else s[:57] + "..."
+
+
+def check_bound(c):
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("H", "set", "T", "delay", "eta"), "model")
+    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("witness_c",), "evidence")
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool):
+        raise Malformed("model.delay: missing or not an integer")
+    if n < 0 or n > 100000:
+        raise Malformed("model.delay: outside [0, 100000]")
+    eta = exact(model, "eta", "model")
+    if eta < 0:
+        raise Malformed("model.eta: must be >= 0")
+    params = {}
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    for k, v in sets.items():
+        params[k] = exact_value(v, "model.set." + k)
+    try:
+        H = parse_h(model["H"], T, params)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    status = claim.get("status")
+    if status == "exact":
+        lo = hi = exact(claim, "value", "claim")
+    elif status == "certified":
+        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo > hi:
+            return False, "claim: lo > hi"
+    else:
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    for key in ("printed_lo", "printed_hi", "printed"):
+        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    c0 = exact(evidence, "witness_c", "evidence")
+    E, F = objective_c(H, T, n)
+    A = pscale(E, T / 2)
+    P = psub(pscale(F, hi - eta), A)
+    why = nonneg_on(P, Fraction(-1), Fraction(1))
+    if why:
+        return False, "b* <= %s (%.12g) fails: (hi - eta) F(c) - (T/2) E(c) is %s" % (hi, float(hi), why)
+    if c0 < -1 or c0 > 1:
+        return False, "evidence.witness_c = %s is outside [-1, 1]" % c0
+    g = pgcd(A, F)  # reduced: at a removable point the value is f's limit, which the sup reaches
+    Ar, Fr = (pdivmod(A, g)[0], pdivmod(F, g)[0]) if g else (A, F)
+    f0 = peval(Fr, c0)
+    if f0 == 0:
+        return False, "evidence.witness_c = %s is a pole of the objective (a pole of H on the unit circle)" % c0
+    v = peval(Ar, c0) / f0 + eta
+    if v < lo:
+        return False, "b* >= %s (%.12g) not shown: the objective at the witness c0 = %s is %.12g < lo" % (
+            short(lo), float(lo), short(c0), float(v))
+    return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+# ---------------------------------------------------------------- r
+def check_r(c):
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim = obj_field(c, "model"), obj_field(c, "claim")
+    only(model, ("T", "omega"), "model")
+    only(claim, ("quantity", "re", "im_lo", "im_hi", "printed_im"), "claim")
+    if "evidence" in c:
+        only(obj_field(c, "evidence"), (), "evidence")
+    T, w = exact(model, "T", "model"), exact(model, "omega", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    if w == 0:
+        raise Malformed("model.omega: w = 0 is a pole of r")
+    re, lo, hi = exact(claim, "re", "claim"), exact(claim, "im_lo", "claim"), exact(claim, "im_hi", "claim")
+    if re != -T / 2:
+        return False, "claim.re = %s is not -T/2 = %s" % (re, -T / 2)
+    if lo > hi:
+        return False, "claim: im_lo > im_hi"
+    if "printed_im" in claim:
+        q = printed_number(claim["printed_im"], "claim.printed_im")
+        if q < lo or q > hi:
+            return False, "claim.printed_im is outside [im_lo, im_hi]"
+    from mpmath import iv
+    old = iv.prec
+    try:
+        bits = 128
+        while bits <= 65536:
+            iv.prec = bits
+            x = iv.mpf(w.numerator) * iv.mpf(T.numerator) / (iv.mpf(w.denominator) * iv.mpf(T.denominator) * 2)
+            y = -iv.cot(x) * iv.mpf(T.numerator) / (2 * iv.mpf(T.denominator))
+            a, b = (exact_mpf(e) for e in y._mpi_)
+            if a is not None and b is not None:
+                if lo <= a and b <= hi:
+                    return True, "Re r = -T/2, Im r in [%.12g, %.12g] (mpmath iv, %d bits)" % (float(lo), float(hi), bits)
+                if b < lo or a > hi:
+                    return False, "Im r = -(T/2) cot(wT/2) is outside [im_lo, im_hi] (mpmath iv at %d bits)" % bits
+            bits *= 2
+    finally:
+        iv.prec = old
+    return False, "Im r in [im_lo, im_hi] not shown at 65536 bits"
+
+
+def exact_mpf(t):
+    """The exact rational of an mpmath mpf tuple (sign, mantissa, exponent, bits), None when it is
+    not finite (inf and nan have mantissa 0 and a non-zero exponent)."""
+    sign, man, exp, _ = t
+    if man == 0 and exp != 0:  # inf, nan
+        return None
+    v = Fraction(man) * (Fraction(2) ** exp)
+    return -v if sign else v
+
+
+# ---------------------------------------------------------------- driver
+def check(c):
+    """(exit code, reason): 0 verified, 1 refuted, 2 malformed, 3 not checked (too large)."""
+    try:
+        if not isinstance(c, dict):
+            raise Malformed("certificate: not a JSON object")
+        if c.get("certificate") != "hapstab":
+            raise Malformed("certificate: missing or not \"hapstab\"")
+        if c.get("version") != 1 or isinstance(c.get("version"), bool):
+            raise Malformed("version: missing or not 1")
+        kind = c.get("kind")
+        if kind == "bound":
+            ok, why = check_bound(c)
+        elif kind == "r":
+            ok, why = check_r(c)
+        else:
+            raise Malformed("kind: %r has no checker (known: bound, r)" % (kind,))
+        return (0 if ok else 1), why
+    except Malformed as e:
+        return 2, str(e)
+    except TooLarge as e:
+        return 3, str(e)
+    except RecursionError:
+        return 2, "model.H: nested too deep"
+    except (ZeroDivisionError, ValueError, TypeError, AssertionError) as e:  # never "verified"
+        return 3, "internal error of the checker: %r" % (e,)
+
+
+def main(argv):
+    if len(argv) == 3 and argv[1] == "--batch":
+        worst = 0
+        with open(argv[2]) as f:
+            for lineno, line in enumerate(f, 1):
+                if not line.strip():
+                    continue
+                try:
+                    c = json.loads(line)
+                except ValueError as e:
+                    code, why = 2, "not JSON (%s)" % e
+                else:
+                    code, why = check(c)
+                worst = max(worst, code)
+                verdict = ["verified", "refuted", "malformed", "not checked"][code]
+                print(json.dumps({"line": lineno, "verdict": verdict, "exit": code, "reason": why}), flush=True)
+        return worst
+    if len(argv) != 2:
+        print("usage: hapstab_check.py CERT.json | --batch FILE", file=sys.stderr)
+        return 2
+    try:
+        with open(argv[1]) as f:
+            c = json.load(f)
+    except (OSError, ValueError) as e:
+        print("malformed: %s" % e)
+        return 2
+    code, why = check(c)
+    print(["verified", "refuted: " + why, "malformed: " + why, "not checked: " + why][code])
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

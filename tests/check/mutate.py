@@ -1,0 +1,377 @@
+#!/usr/bin/env python3
+"""Mutation testing of the certificate checkers (issue 47, item 5).
+
+    python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet]
+
+Produces certificates of `bound` (random virtual environments, integer delays, eta) and `r`
+(random T, w) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
+on every mutant: `hapstab check --batch` (check/) and checks/hapstab_check.py (imported; it shares
+no code with hapstab). Every mutant carries what must happen:
+  accept     the claim is true and its evidence intact (the unmutated certificate; an enclosure
+             widened): both must verify;
+  refute     the claim is false (b* claimed below the proven lower bound or above the proven upper
+             bound, an exact value moved, a printed number that is not the one claimed, a model
+             edited so that the claim misses the new model's certified b*): both must refute,
+             naming the reason;
+  malformed  a field deleted, a field added that no checker reads, a value of the wrong form, a
+             sign that makes an input invalid: both must exit 2 naming the field;
+  agree      the claim is true or unknown but the evidence was moved (a witness point moved, a
+             model edited with no certified verdict on the claim): the two independent checkers
+             must give the same verdict.
+Ground truth for an edited model is hapstab's own certified enclosure of the edited model at 40
+digits (the unmutated claims themselves are verified by both checkers first). Exit 0 when every
+expectation holds; prints the counts.
+"""
+import argparse
+import copy
+import json
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "checks"))
+import hapstab_check  # noqa: E402  (the independent checker)
+
+TEMPLATES = [
+    ("K + B*(z-1)/(T*z)", ["K", "B"]),                        # virtual wall, backward difference (001)
+    ("K + B*2*(z-1)/(T*(z+1))", ["K", "B"]),                  # Tustin damper: a pole at z = -1
+    ("K*(z - a)/(z^2 - b*z + c)", ["K", "a", "b", "c"]),
+    ("(K*z^2 - B)/(z*(z - a))", ["K", "B", "a"]),
+    ("K/(z + a)^2 + B*(z-1)/(T*z)", ["K", "B", "a"]),
+    ("K*(1 - a)/(z - a) + B*(z^2 - 1)/(T*z^2)", ["K", "B", "a"]),
+    ("K", ["K"]),
+]
+
+
+def rand_value(name, rng):
+    if name == "K":
+        return str(rng.choice([rng.randint(1, 50000), rng.randint(1, 100)]))
+    if name == "B":
+        return str(rng.randint(0, 40)) if rng.random() < 0.7 else "%d.%d" % (rng.randint(0, 9), rng.randint(0, 99))
+    # a, b, c: inside the unit disc (a stable H)
+    return "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 80))
+
+
+def rand_model(rng):
+    H, names = rng.choice(TEMPLATES)
+    sets = {n: rand_value(n, rng) for n in names}
+    if "b" in sets:  # z^2 - b z + c stable: |c| < 1, |b| < 1 + c
+        c = Fraction(sets["c"])
+        sets["b"] = str(Fraction(rng.randint(-90, 90), 100) * (1 + c))
+    T = rng.choice(["1/1000", "1/500", "0.002", "1/100", "1/4000"])
+    delay = rng.choice([0, 0, 1, 1, 2, 3, 5])
+    eta = rng.choice(["0", "0", "0", "1/10", "2.5"])
+    return {"H": H, "set": sets, "T": T, "delay": delay, "eta": eta}
+
+
+def bound_args(m, digits):
+    a = ["bound", "--H", m["H"], "--T", m["T"], "--delay", str(m["delay"]), "--eta", m["eta"], "--digits", str(digits)]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def run(hapstab, args):
+    p = subprocess.run([hapstab] + args, capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def certified_enclosure(hapstab, m, cache):
+    """hapstab's certified enclosure of b* for model m (40 digits): (lo, hi), "inf", or None."""
+    key = json.dumps(m, sort_keys=True)
+    if key in cache:
+        return cache[key]
+    rc, out, _ = run(hapstab, bound_args(m, 40) + ["--json"])
+    res = None
+    if rc == 0:
+        j = json.loads(out)
+        if j.get("bound") == "inf":
+            res = "inf"
+        elif j.get("enclosure_rigorous") and j["status"] in ("exact", "certified"):
+            res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
+    cache[key] = res
+    return res
+
+
+def claim_interval(cert):
+    c = cert["claim"]
+    if c["status"] == "exact":
+        v = Fraction(c["value"])
+        return v, v
+    return Fraction(c["lo"]), Fraction(c["hi"])
+
+
+def frac(x):
+    return "%d/%d" % (x.numerator, x.denominator) if x.denominator != 1 else str(x.numerator)
+
+
+def set_claim(cert, lo, hi):
+    """The certificate claiming [lo, hi] (exact when lo == hi was exact), printed fields dropped."""
+    c = copy.deepcopy(cert)
+    cl = c["claim"]
+    for k in ("printed", "printed_lo", "printed_hi"):
+        cl.pop(k, None)
+    if cl["status"] == "exact" and lo == hi:
+        cl["value"] = frac(lo)
+    else:
+        cl.pop("value", None)
+        cl["status"] = "certified"
+        cl["lo"], cl["hi"] = frac(lo), frac(hi)
+    return c
+
+
+def deleted(cert, path):
+    c = copy.deepcopy(cert)
+    o = c
+    for k in path[:-1]:
+        o = o[k]
+    del o[path[-1]]
+    return c
+
+
+def with_field(cert, path, value):
+    c = copy.deepcopy(cert)
+    o = c
+    for k in path[:-1]:
+        o = o[k]
+    o[path[-1]] = value
+    return c
+
+
+def model_truth(cert, new_model, hapstab, cache):
+    """The expectation for `cert` with its model replaced by new_model."""
+    enc = certified_enclosure(hapstab, new_model, cache)
+    lo, hi = claim_interval(cert)
+    if enc == "inf":
+        return "refute"  # a finite claim of an infinite b*
+    if enc is None:
+        return "agree"
+    tlo, thi = enc
+    if hi < tlo or lo > thi:
+        return "refute"
+    return "agree"  # true or undecided: the witness may or may not still reach lo
+
+
+def bound_mutants(cert, rng, hapstab, cache):
+    out = [("unmutated", cert, "accept")]
+    lo, hi = claim_interval(cert)
+    exact = cert["claim"]["status"] == "exact"
+    scale = max(abs(lo), Fraction(1))
+    tiny = scale / 10 ** rng.randint(40, 60)
+    gap = max(hi - lo, tiny)
+    # the claim moved past what the certificate's own evidence proves
+    out.append(("hi below the proven lower bound", set_claim(cert, lo - 2 * gap, lo - gap / 2 if not exact else lo - tiny), "refute"))
+    out.append(("lo above the proven upper bound", set_claim(cert, hi + gap / 2 if not exact else hi + tiny, hi + 2 * gap), "refute"))
+    if exact:
+        out.append(("exact value + tiny", set_claim(cert, lo + tiny, lo + tiny), "refute"))
+        out.append(("exact value - tiny", set_claim(cert, lo - tiny, lo - tiny), "refute"))
+    else:
+        out.append(("hi moved inward past lo", set_claim(cert, lo - tiny, lo - tiny / 2), "refute"))
+        out.append(("lo moved inward past hi", set_claim(cert, hi + tiny / 2, hi + tiny), "refute"))
+        pl = cert["claim"]["printed_lo"]
+        moved = pl[:-1] + str((int(pl[-1]) + 1) % 10) if pl[-1].isdigit() else pl + "1"
+        out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], moved), "refute"))
+    out.append(("enclosure widened", set_claim(cert, lo - tiny, hi + tiny), "accept"))
+    out.append(("enclosure widened a lot", set_claim(cert, lo - scale, hi + scale), "accept"))
+    out.append(("lo > hi", set_claim(cert, hi + tiny, lo - tiny) if not exact else set_claim(cert, lo + tiny, lo - tiny), "refute"))
+    # the witness moved
+    c0 = Fraction(cert["evidence"]["witness_c"])
+    for name, c1 in (("witness + tiny", c0 + tiny / scale), ("witness - 1/1000", c0 - Fraction(1, 1000)),
+                     ("witness negated", -c0), ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+        out.append((name, with_field(cert, ["evidence", "witness_c"], frac(c1)), "agree"))
+    out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"))
+    # the model edited
+    m = cert["model"]
+    edits = []
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
+            if y != x:
+                edits.append(("set %s %s" % (k, name), ["set", k], frac(y)))
+    edits.append(("T doubled", ["T"], frac(Fraction(m["T"]) * 2)))
+    edits.append(("T halved", ["T"], frac(Fraction(m["T"]) / 2)))
+    edits.append(("delay + 1", ["delay"], m["delay"] + 1))
+    if m["delay"] > 0:
+        edits.append(("delay - 1", ["delay"], m["delay"] - 1))
+    edits.append(("eta + 1/10", ["eta"], frac(Fraction(m["eta"]) + Fraction(1, 10))))
+    if Fraction(m["eta"]) > 0:
+        edits.append(("eta = 0", ["eta"], "0"))
+    h = m["H"]
+    if "+" in h:
+        i = [k for k, ch in enumerate(h) if ch == "+"][rng.randrange(h.count("+"))]
+        edits.append(("H: a '+' made '-'", ["H"], h[:i] + "-" + h[i + 1:]))
+    if "-" in h:
+        i = [k for k, ch in enumerate(h) if ch == "-"][rng.randrange(h.count("-"))]
+        edits.append(("H: a '-' made '+'", ["H"], h[:i] + "+" + h[i + 1:]))
+    for name, path, value in edits:
+        nm = copy.deepcopy(m)
+        o = nm
+        for k in path[:-1]:
+            o = o[k]
+        o[path[-1]] = value
+        # the edited model as the producer takes it (numbers in --set as "p/q" are fine)
+        expect = model_truth(cert, nm, hapstab, cache)
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    # malformed: deleted fields, unknown fields, wrong forms, invalid signs
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["version"], ["model", "H"], ["model", "T"],
+                 ["model", "delay"], ["model", "eta"], ["claim", "status"], ["evidence", "witness_c"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("deleted claim.value" if exact else "deleted claim.lo", deleted(cert, ["claim", "value" if exact else "lo"]), "malformed"))
+    if m["set"]:
+        out.append(("deleted model.set", deleted(cert, ["model", "set"]), "malformed"))
+    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    out.append(("added claim.omega", with_field(cert, ["claim", "omega"], "1"), "malformed"))
+    out.append(("T as a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
+    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
+    out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
+    out.append(("delay as a string", with_field(cert, ["model", "delay"], str(m["delay"])), "malformed"))
+    out.append(("eta negative", with_field(cert, ["model", "eta"], "-1/10"), "malformed"))
+    out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["kind"], "wedge"), "malformed"))
+    out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    return out
+
+
+def r_mutants(cert, rng, hapstab, cache):
+    out = [("unmutated", cert, "accept")]
+    cl = cert["claim"]
+    lo, hi, re = Fraction(cl["im_lo"]), Fraction(cl["im_hi"]), Fraction(cl["re"])
+    u = (hi - lo) / 2  # one unit in the last printed place, at least
+    mid = Fraction(cl["printed_im"])  # |Im r - mid| <= u/2: correctly rounded
+
+    def claim(l, h, r=re):
+        c = with_field(cert, ["claim", "im_lo"], frac(l))
+        c = with_field(c, ["claim", "im_hi"], frac(h))
+        c["claim"]["re"] = frac(r)
+        c["claim"].pop("printed_im", None)
+        return c
+
+    tiny = max(abs(mid), Fraction(1)) / 10 ** rng.randint(30, 50)
+    out.append(("Im claimed above the value", claim(mid + u, mid + 2 * u), "refute"))
+    out.append(("Im claimed below the value", claim(mid - 2 * u, mid - u), "refute"))
+    out.append(("Im enclosure widened", claim(lo - tiny, hi + tiny), "accept"))
+    out.append(("Re + tiny", claim(lo, hi, re + tiny), "refute"))
+    out.append(("Re sign flipped", claim(lo, hi, -re), "refute"))
+    out.append(("Im sign flipped", claim(-hi, -lo), "refute"))
+    out.append(("lo > hi", claim(hi, lo), "refute"))
+    out.append(("printed_im outside", with_field(cert, ["claim", "printed_im"], frac(hi + u)), "refute"))
+    T, w = Fraction(cert["model"]["T"]), Fraction(cert["model"]["omega"])
+    # an edited model: Im r = -(T/2) cot(wT/2) moves by far more than u (u ~ |Im| 10^-19)
+    out.append(("model: omega x 1.001", with_field(cert, ["model", "omega"], frac(w * Fraction(1001, 1000))), "refute"))
+    out.append(("model: T x 2", with_field(cert, ["model", "T"], frac(T * 2)), "refute"))
+    for path in (["model", "T"], ["model", "omega"], ["claim", "re"], ["claim", "im_lo"], ["claim", "im_hi"], ["claim"], ["model"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("omega = 0", with_field(cert, ["model", "omega"], "0"), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    return out
+
+
+def rand_r(rng):
+    T = rng.choice(["1/1000", "1/100", "3/7", "0.002", "1"])
+    w = "%s%d/%d" % (rng.choice(["", "-"]), rng.randint(1, 10 ** 6), rng.randint(1, 10 ** 3))
+    return T, w
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--hapstab", required=True)
+    ap.add_argument("--models", type=int, default=300, help="bound models (and as many r cases / 4)")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--quiet", action="store_true")
+    a = ap.parse_args()
+    rng = random.Random(a.seed)
+    cache = {}
+    tmp = tempfile.mkdtemp(prefix="hapstab-mutate-")
+    certs = []  # (kind, certificate)
+    skipped = {}
+    t0 = time.time()
+    for i in range(a.models):
+        m = rand_model(rng)
+        path = os.path.join(tmp, "b%d.json" % i)
+        digits = rng.choice([10, 15, 20, 30])
+        rc, out, err = run(a.hapstab, bound_args(m, digits) + ["--certificate", path])
+        if rc != 0:
+            why = err.strip().split(":")[0:2]
+            skipped[":".join(why)[:80]] = skipped.get(":".join(why)[:80], 0) + 1
+            continue
+        with open(path) as f:
+            certs.append(("bound", json.load(f)))
+    for i in range(max(a.models // 4, 2)):
+        T, w = rand_r(rng)
+        path = os.path.join(tmp, "r%d.json" % i)
+        rc, out, err = run(a.hapstab, ["r", "--T", T, "--omega", w, "--terms", "10", "--certificate", path])
+        if rc != 0:
+            skipped["r: " + err.strip()[:60]] = skipped.get("r: " + err.strip()[:60], 0) + 1
+            continue
+        with open(path) as f:
+            certs.append(("r", json.load(f)))
+    produced = time.time() - t0
+    mutants = []
+    for kind, cert in certs:
+        mk = bound_mutants if kind == "bound" else r_mutants
+        for name, c, expect in mk(cert, rng, a.hapstab, cache):
+            mutants.append((kind, name, c, expect))
+    # the C++ checker: one process over all mutants
+    batch = os.path.join(tmp, "mutants.jsonl")
+    with open(batch, "w") as f:
+        for _, _, c, _ in mutants:
+            f.write(json.dumps(c) + "\n")
+    t1 = time.time()
+    p = subprocess.run([a.hapstab, "check", "--batch", batch], capture_output=True, text=True)
+    cpp_seconds = time.time() - t1
+    cpp = [json.loads(line) for line in p.stdout.splitlines()]
+    if len(cpp) != len(mutants):
+        print("hapstab check --batch answered %d of %d lines: %s" % (len(cpp), len(mutants), p.stderr[-500:]))
+        return 1
+    t2 = time.time()
+    py = [hapstab_check.check(c) for _, _, c, _ in mutants]
+    py_seconds = time.time() - t2
+    counts, failures = {}, []
+    want_code = {"accept": 0, "refute": 1, "malformed": 2}
+    for (kind, name, c, expect), cj, (pcode, preason) in zip(mutants, cpp, py):
+        ccode, creason = cj["exit"], cj["reason"]
+        key = (kind, expect)
+        counts[key] = counts.get(key, 0) + 1
+        ok = True
+        if pcode == 3:
+            counts[("py not checked", kind)] = counts.get(("py not checked", kind), 0) + 1
+            ok = expect == "agree" or ccode == want_code[expect]
+        elif expect == "agree":
+            ok = ccode == pcode and ccode in (0, 1)
+        else:
+            ok = ccode == want_code[expect] and pcode == want_code[expect]
+        if ok and expect in ("refute", "malformed") and (not creason or not preason):
+            ok = False  # a rejection names what failed
+        if not ok:
+            failures.append("%s / %s: expected %s, hapstab check %d (%s), independent %d (%s)" % (
+                kind, name, expect, ccode, creason[:160], pcode, preason[:160]))
+    shutil.rmtree(tmp, ignore_errors=True)
+    n = len(mutants)
+    accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py) if e in ("refute", "malformed") and (cj["exit"] == 0 or pc == 0))
+    print("certificates: %d (%d bound, %d r); producer runs skipped: %s" % (
+        len(certs), sum(1 for k, _ in certs if k == "bound"), sum(1 for k, _ in certs if k == "r"), skipped or "none"))
+    print("mutants: %d; expected accept %d, refute %d, malformed %d, agree %d" % (
+        n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e == "refute"),
+        sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e == "agree")))
+    for key in sorted(k for k in counts if k[0] == "py not checked"):
+        print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
+    print("false or malformed claims accepted: %d" % accepted_false)
+    print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
+    if failures:
+        print("FAILURES: %d" % len(failures))
+        for f in failures[:40]:
+            print("  " + f)
+        return 1
+    if not a.quiet:
+        print("every expectation holds")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,152 @@
+// cli/certificate.cpp -- see certificate.hpp.
+#include "cli/certificate.hpp"
+
+#include <fstream>
+
+#include "cli/command.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/sturm.hpp"
+
+namespace hapstab::cli {
+
+namespace {
+
+using QPoly = Polynomial<rational>;
+
+// The continued-fraction convergents of x, smallest first, until one satisfies `ok` (at most 400).
+template <class Ok>
+std::optional<rational> first_convergent(const rational& x, Ok ok) {
+  integer h0 = 1, h1 = 0, k0 = 0, k1 = 1;  // h_{-1}/k_{-1} = 1/0, h_{-2}/k_{-2} = 0/1
+  integer p = numerator(x), q = denominator(x);
+  for (int step = 0; step < 400 && q != 0; ++step) {
+    integer a = p / q;
+    if (p < 0 && a * q != p) a -= 1;  // floor
+    const integer r = p - a * q;
+    const integer h = a * h0 + h1, k = a * k0 + k1;
+    h1 = h0;
+    h0 = h;
+    k1 = k0;
+    k0 = k;
+    const rational c(h, k);
+    if (ok(c)) return c;
+    p = q;
+    q = r;
+  }
+  return std::nullopt;
+}
+
+template <unsigned D>
+rational to_rational(const mpfloat<D>& x) {
+  return exact_rational(x);
+}
+
+// A rational c0 in [-1, 1] with f(c0) >= target (f = A/B without eta, B(c0) != 0).
+std::optional<rational> find_witness(const RationalFunction<rational>& f, const rational& target,
+                                     const passivity::Bound& b, const rational& T) {
+  auto ok = [&](const rational& c) {
+    if (c < -1 || c > 1) return false;
+    const rational d = f.den()(c);
+    return d != 0 && f.num()(c) / d >= target;
+  };
+  for (const rational c : {rational(1), rational(-1), rational(0)})
+    if (ok(c)) return c;
+  if (b.omega_enclosure) {  // cos(w T) at the midpoint of the maximiser's enclosure
+    using R = mpfloat<300>;
+    const rational w = (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2;
+    const R c = cos(R(w * T));
+    if (auto c0 = first_convergent(to_rational(c), ok)) return c0;
+  }
+  // every critical point of f in [-1, 1], refined to 2^-1000
+  const QPoly crit = f.num().derivative() * f.den() - f.num() * f.den().derivative();
+  if (crit.is_zero()) return std::nullopt;
+  const rational width = rational(1) / rational(pow(integer(2), 1000));
+  for (RootInterval r : isolate_real_roots(crit, rational(-1), rational(1))) {
+    if (!r.is_exact()) r = refine_root(crit, r, width);
+    if (ok(r.lo)) return r.lo;
+    if (ok(r.hi)) return r.hi;
+    if (auto c0 = first_convergent((r.lo + r.hi) / 2, ok)) return c0;
+  }
+  return std::nullopt;
+}
+
+nlohmann::json header(const char* kind) {
+  nlohmann::json j;
+  j["certificate"] = "hapstab";
+  j["version"] = 1;
+  j["kind"] = kind;
+  j["produced_by"] = std::string("hapstab ") + HAPSTAB_VERSION;  // informative; no time: the same model gives the same file
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
+                                 const passivity::Bound& b, int digits) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  if (p.frac_delay) throw InputError("--certificate: a certificate of b* with --frac-delay is not implemented yet");
+  if (b.infinite)
+    throw InputError("--certificate: b* = +inf (a pole on the unit circle where the objective tends to +inf) has no "
+                     "certificate yet");
+  if (b.status != Status::exact && b.status != Status::certified)
+    throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
+  nlohmann::json j = header("bound");
+  nlohmann::json m;
+  m["H"] = tf.H;
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  m["set"] = sets;
+  m["T"] = p.T.str();
+  m["delay"] = p.delay;
+  m["eta"] = p.eta.str();
+  j["model"] = m;
+  nlohmann::json claim;
+  claim["quantity"] = "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  rational target;
+  if (b.status == Status::exact) {
+    claim["status"] = "exact";
+    claim["value"] = b.value.str();
+    target = b.value;
+  } else {
+    const auto [lo, hi] = passivity::reported_enclosure(b, digits);  // what is printed, rounded outward
+    claim["status"] = "certified";
+    claim["lo"] = parse_rational(lo, "enclosure").str();
+    claim["hi"] = parse_rational(hi, "enclosure").str();
+    claim["printed_lo"] = lo;
+    claim["printed_hi"] = hi;
+    target = parse_rational(lo, "enclosure");
+  }
+  j["claim"] = claim;
+  const passivity::Objective obj = passivity::objective(p.H, p.T, p.delay);
+  const auto c0 = find_witness(obj.f, target - p.eta, b, p.T);
+  if (!c0) throw NumericalError("--certificate: no rational witness c0 with f(c0) >= " + target.str() + " was found");
+  j["evidence"] = {{"witness_c", c0->str()}};
+  return j;
+}
+
+nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits) {
+  nlohmann::json j = header("r");
+  j["model"] = {{"T", T.str()}, {"omega", omega.str()}};
+  const rational im = parse_rational(printed_im, "Im r");
+  rational u = abs(im);
+  for (int k = 1; k < digits; ++k) u /= 10;
+  nlohmann::json claim;
+  claim["quantity"] = "r(jw) = T/(e^{jwT} - 1) (paper 001, (44))";
+  claim["re"] = rational(-T / 2).str();
+  claim["im_lo"] = rational(im - u).str();
+  claim["im_hi"] = rational(im + u).str();
+  claim["printed_im"] = printed_im;
+  j["claim"] = claim;
+  j["evidence"] = nlohmann::json::object();
+  return j;
+}
+
+void write_certificate(const std::string& file, const nlohmann::json& certificate) {
+  std::ofstream f(file);
+  if (!f) throw InputError("--certificate: cannot write '" + file + "'");
+  f << certificate.dump(2) << "\n";
+  if (!f) throw InputError("--certificate: cannot write '" + file + "'");
+}
+
+}  // namespace hapstab::cli

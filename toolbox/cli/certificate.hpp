@@ -1,0 +1,33 @@
+// cli/certificate.hpp -- `--certificate FILE` of `bound` and `r` (issue 47): the JSON a reviewer
+// checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
+// Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
+// exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
+// hapstab code (here passivity::objective to place the witness); the checkers (check/) never do.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/tf_options.hpp"
+#include "hapstab/passivity/bound.hpp"
+
+namespace hapstab::cli {
+
+/// The certificate of b* (paper 001, (45)/(54), integer delay): claim "b* = v" [exact] or
+/// "b* in [lo, hi]" [certified, lo and hi exactly the printed enclosure], evidence a rational
+/// witness c0 = cos(w0 T) in [-1, 1] with f(c0) >= lo. InputError (exit 2) for what has no
+/// certificate yet: b* = +inf, a fractional delay, H not given by --H, a numeric result;
+/// NumericalError when no witness is found.
+nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
+                                 const passivity::Bound& b, int digits);
+
+/// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
+/// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit
+/// in its last place).
+nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits);
+
+/// Writes the certificate to FILE; InputError naming --certificate when it cannot.
+void write_certificate(const std::string& file, const nlohmann::json& certificate);
+
+}  // namespace hapstab::cli

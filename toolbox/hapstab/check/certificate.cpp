@@ -1,0 +1,94 @@
+// hapstab/check/certificate.cpp -- see certificate.hpp.
+#include "hapstab/check/certificate.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "hapstab/check/bound_check.hpp"
+#include "hapstab/check/r_check.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace detail {
+
+rational exact_string(const nlohmann::json& v, const std::string& what) {
+  if (!v.is_string()) throw InputError(what + ": expected a string \"p/q\" (an exact rational)");
+  const std::string s = v.get<std::string>();
+  if (s.size() > 1000000) throw InputError(what + ": more than 10^6 characters");
+  // -?[0-9]+(/[0-9]+)?  and nothing else
+  size_t i = 0;
+  if (i < s.size() && s[i] == '-') ++i;
+  const size_t d0 = i;
+  while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+  bool ok = i > d0;
+  size_t slash = std::string::npos;
+  if (ok && i < s.size() && s[i] == '/') {
+    slash = i++;
+    const size_t e0 = i;
+    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
+    ok = i > e0;
+  }
+  if (!ok || i != s.size()) throw InputError(what + ": '" + s.substr(0, 60) + "' is not \"p/q\" or \"p\" (integers)");
+  const integer p(s.substr(0, slash));
+  const integer q = slash == std::string::npos ? integer(1) : integer(s.substr(slash + 1));
+  if (q == 0) throw InputError(what + ": '" + s.substr(0, 60) + "' divides by zero");
+  return rational(p, q);
+}
+
+rational exact_field(const nlohmann::json& obj, const std::string& key, const std::string& where) {
+  if (!obj.contains(key)) throw InputError(where + "." + key + ": missing");
+  return exact_string(obj.at(key), where + "." + key);
+}
+
+const nlohmann::json& object_field(const nlohmann::json& obj, const std::string& key, const std::string& where) {
+  if (!obj.contains(key)) throw InputError(key + ": missing (" + where + ")");
+  const auto& v = obj.at(key);
+  if (!v.is_object()) throw InputError(key + ": not an object (" + where + ")");
+  return v;
+}
+
+void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> known, const std::string& where) {
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || it.key() == k;
+    if (!ok) throw InputError(where + "." + it.key() + ": a field this checker does not know (it would not be checked)");
+  }
+}
+
+}  // namespace detail
+
+Verdict check_certificate(const nlohmann::json& c) {
+  if (!c.is_object()) throw InputError("certificate: not a JSON object");
+  if (!c.contains("certificate") || c.at("certificate") != "hapstab")
+    throw InputError("certificate: missing or not \"hapstab\" (not a hapstab certificate)");
+  if (!c.contains("version") || c.at("version") != 1) throw InputError("version: missing or not 1");
+  if (!c.contains("kind") || !c.at("kind").is_string()) throw InputError("kind: missing or not a string");
+  const std::string kind = c.at("kind").get<std::string>();
+  if (kind == "bound") return check_bound(c);
+  if (kind == "r") return check_r(c);
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, r)");
+}
+
+Verdict check_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(path + ": cannot read (" + std::strerror(errno) + ")");
+  if (!S_ISREG(st.st_mode)) throw InputError(path + ": not a regular file");
+  if (st.st_size > (16 << 20)) throw InputError(path + ": larger than 16 MB");
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot read");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(ss.str());
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": not JSON (" + e.what() + ")");
+  }
+  return check_certificate(j);
+}
+
+}  // namespace hapstab::check

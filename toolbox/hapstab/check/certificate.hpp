@@ -1,0 +1,46 @@
+// hapstab/check/certificate.hpp -- verifying a certificate (issue 47; DESIGN.md "Producers and
+// checkers"): a JSON file that holds the model as written, a claim about it, and the evidence.
+// The checker trusts only numeric/, poly/ and lti/ (exact rationals, polynomials, the expression
+// parser); it never calls the code that produced the claim. One small checker per kind:
+//   bound   b* of paper 001 (45)/(54), integer delay      check/bound_check.hpp
+//   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
+// Outcomes: Verdict{verified, what was shown} or Verdict{refuted, what failed}; a certificate that
+// is not well formed (a missing or malformed field, an unknown kind) is an InputError naming the
+// field -- `hapstab check` exits 0, 1, 2 for the three. docs/certificates.md has the format.
+#pragma once
+
+#include <initializer_list>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::check {
+
+struct Verdict {
+  bool verified = false;
+  std::string reason;  ///< what was verified, or what failed
+};
+
+/// The certificate's kind decides the checker. InputError (naming the field) when malformed.
+Verdict check_certificate(const nlohmann::json& certificate);
+
+/// Reads FILE (a regular file of at most 16 MB of JSON) and checks it; InputError when it cannot
+/// be read or parsed.
+Verdict check_file(const std::string& path);
+
+namespace detail {
+/// The exact rational of field `key` of `obj`: a string "p/q" or "p" (integers in decimal, q > 0)
+/// and nothing else; InputError naming `where`.`key` otherwise (missing, not a string, malformed).
+rational exact_field(const nlohmann::json& obj, const std::string& key, const std::string& where);
+/// The string "p/q" or "p" as an exact rational, or InputError naming `what`.
+rational exact_string(const nlohmann::json& v, const std::string& what);
+/// obj[key] as an object; InputError naming where.key when missing or not an object.
+const nlohmann::json& object_field(const nlohmann::json& obj, const std::string& key, const std::string& where);
+/// InputError naming where.KEY when obj has a key outside `known`: a field a checker does not read
+/// (a fractional delay, say) would make it verify another model than the one written.
+void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> known, const std::string& where);
+}  // namespace detail
+
+}  // namespace hapstab::check

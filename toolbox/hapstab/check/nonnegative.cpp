@@ -1,0 +1,103 @@
+// hapstab/check/nonnegative.cpp -- see nonnegative.hpp.
+#include "hapstab/check/nonnegative.hpp"
+
+#include <vector>
+
+#include "hapstab/numeric/decimal.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+using P = Polynomial<rational>;
+
+P exact_quotient(const P& a, const P& b) { return divmod(a, b).first; }
+
+// p / |leading coefficient|: the same signs everywhere, smaller numbers.
+P scaled(const P& p) {
+  if (p.is_zero()) return p;
+  rational l = p.leading();
+  if (l < 0) l = -l;
+  return p * rational(1 / l);
+}
+
+int sign(const rational& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+
+// The factors of odd multiplicity of p (Yun's algorithm): p = c prod a_i^i.
+P odd_part(const P& p) {
+  const P dp = p.derivative();
+  if (dp.is_zero()) return P(rational(1));  // a constant: no roots
+  P g = gcd(p, dp);
+  P b = exact_quotient(p, g), c = exact_quotient(dp, g);
+  P d = c - b.derivative();
+  P odd(rational(1));
+  for (int i = 1; b.degree() > 0; ++i) {
+    P a = gcd(b, d);
+    if (i % 2 == 1) odd *= a;
+    b = exact_quotient(b, a);
+    c = exact_quotient(d, a);
+    d = c - b.derivative();
+  }
+  return odd;
+}
+
+}  // namespace
+
+int sturm_count(const P& q, const rational& a, const rational& b) {
+  std::vector<P> seq{scaled(q), scaled(q.derivative())};
+  while (!seq.back().is_zero() && seq.back().degree() > 0) {
+    P r = divmod(seq[seq.size() - 2], seq.back()).second;
+    if (r.is_zero()) break;
+    seq.push_back(scaled(-r));
+  }
+  auto variations = [&](const rational& x) {
+    int v = 0, last = 0;
+    for (const P& s : seq) {
+      if (s.is_zero()) continue;
+      const int sg = sign(s(x));
+      if (sg == 0) continue;
+      if (last != 0 && sg != last) ++v;
+      last = sg;
+    }
+    return v;
+  };
+  return variations(a) - variations(b);
+}
+
+std::optional<std::string> nonnegative_on(const P& p, const rational& a, const rational& b) {
+  if (p.is_zero()) return std::nullopt;
+  P odd = odd_part(p);
+  for (const rational& end : {a, b})  // a sign change at an end of [a, b] is not inside it
+    while (odd.degree() > 0 && odd(end) == 0) odd = exact_quotient(odd, P{-end, rational(1)});
+  // Descartes first (cheap, O(d^2)): the roots of odd in (a, b) are those of
+  // R(y) = (1 + y)^d q(1/(1 + y)) in y > 0, q(u) = odd(a + (b - a) u); no sign variation in R's
+  // coefficients proves there is none. Otherwise Sturm counts them.
+  bool none_inside = odd.degree() <= 0;
+  if (!none_inside) {
+    const P R = reversed(odd.compose(P{a, b - a})).compose(P{rational(1), rational(1)});
+    int variations = 0, last = 0;
+    for (const rational& c : R.coeffs()) {
+      const int sg = sign(c);
+      if (sg != 0 && last != 0 && sg != last) ++variations;
+      if (sg != 0) last = sg;
+    }
+    none_inside = variations == 0;
+  }
+  if (!none_inside) {
+    const int n = sturm_count(odd, a, b);
+    if (n > 0)
+      return "it changes sign at " + std::to_string(n) + " point(s) inside [" + a.str() + ", " + b.str() +
+             "] (roots of odd multiplicity, Sturm)";
+  }
+  const int tries = p.degree() + 1;
+  for (int k = 1; k <= tries; ++k) {
+    const rational x = a + (b - a) * rational(k) / rational(tries + 1);
+    const rational v = p(x);
+    if (v == 0) continue;
+    if (v < 0) return "it is negative at c = " + x.str() + " (value " + to_decimal(v, 6) + ")";
+    return std::nullopt;
+  }
+  return "no point of (a, b) where it is non-zero was found";  // unreachable: p != 0 has <= deg p roots
+}
+
+}  // namespace hapstab::check

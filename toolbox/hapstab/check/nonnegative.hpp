@@ -1,0 +1,32 @@
+// hapstab/check/nonnegative.hpp -- the one algebraic test behind the checkers: is a polynomial
+// with rational coefficients >= 0 on a closed interval [a, b]? Decided exactly, by code written
+// for the checker alone (not poly/sturm.hpp, which the producers use):
+//   1. p = 0: yes.
+//   2. Yun's square-free decomposition p = c * prod_i a_i^i (gcds over Q); the odd part
+//      O = prod_{i odd} a_i holds exactly the roots where p changes sign.
+//   3. O with its roots at a and b divided out has no root in [a, b]: first by Descartes' rule
+//      of signs on R(y) = (1 + y)^d O(a + (b - a)/(1 + y)) (no sign variation: no root y > 0, i.e.
+//      none in (a, b)); when R has variations, by Sturm's theorem on the square-free O
+//      (V(a) - V(b) = number of distinct roots in (a, b], ends not roots).
+//   4. Then p has one sign on (a, b) away from its roots: p(x) > 0 at the first of deg p + 1
+//      distinct points x in (a, b) where p(x) != 0 (one of them is not a root).
+// Theorem (Sturm, 1829): for a square-free p with p(a), p(b) != 0, the number of real roots in
+// (a, b) is V(a) - V(b), V the sign variations of the sequence p, p', -rem(p, p'), ...
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/poly/polynomial.hpp"
+
+namespace hapstab::check {
+
+/// nullopt when p >= 0 on [a, b] (a < b), else a sentence saying why not (a point where p < 0,
+/// or a sign change inside).
+std::optional<std::string> nonnegative_on(const Polynomial<rational>& p, const rational& a, const rational& b);
+
+/// The number of distinct real roots of the square-free q in (a, b), when q(a), q(b) != 0 (Sturm).
+int sturm_count(const Polynomial<rational>& q, const rational& a, const rational& b);
+
+}  // namespace hapstab::check
