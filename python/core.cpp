@@ -38,6 +38,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interrupt.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/study/threads.hpp"
 #include "python/binding.hpp"
 #include "python/forked.hpp"
@@ -392,6 +393,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "hapstab's C++ core: bindings of the library (transfer functions, b*, r(jw), stability, passivity levels, "
             "scenes); see the package hapstab";
   m.attr("__version__") = HAPSTAB_VERSION;
+  // the command line's limit on delay= (numeric/limits.hpp): the long-delay paths take up to it
+  m.attr("CRITERION_DELAY") = hapstab::limits::criterion_delay;
   py::register_exception<hapstab::InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<hapstab::NumericalError>(m, "NumericalError", PyExc_RuntimeError);
   register_types(m);
@@ -399,6 +402,10 @@ PYBIND11_MODULE(_core, m) {
   register_stability(m);
   register_scene(m);
   register_multidof(m);
+  m.def(
+      "names_in",
+      [](const std::string& text) { return hapstab::names_in(text); }, py::arg("text"),
+      "The names an expression refers to (parameters, T, the variable), by the parser's own lexer.");
   m.def(
       "run",
       [](const std::vector<std::string>& args) -> py::tuple {
