@@ -138,8 +138,8 @@ def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
 def _check_names(params: Optional[Mapping[str, Any]], exprs: Any, maximised: Optional[str] = None) -> None:
     """Refuses a name in params that no expression of the call names (a typo is never ignored),
     and the quantity maximised given a value (max=NAME varies it)."""
-    if not params:
-        return
+    if not params or any(text is not None and not isinstance(text, str) for text, _ in exprs):
+        return  # no params, or a model given by numbers (params are refused for it by name, later)
     known: set = set()
     for text, variable in exprs:
         if isinstance(text, str):
@@ -534,7 +534,7 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
     d = _call(_core.stability, plant, H_text, operator, T_text, delay, max, digits, fixed)
     if max is not None:
         rec = d["max"] or {"value_exact": None, "mid": float("nan"), "lo": float("nan"), "hi": float("nan"),
-                           "lo_text": None, "hi_text": None, "status": "failed", "method": "stability::max_gain",
+                           "lo_text": None, "hi_text": None, "status": "undecided", "method": "stability::max_gain",
                            "note": d["note"]}
         extra = {k: d.get(k) for k in ("name", "outcome", "crossing", "theta", "omega", "precision_bits")}
         return MaxGain(rec, **extra)
