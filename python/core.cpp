@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <cerrno>
 #include <chrono>
 #include <future>
@@ -117,6 +118,14 @@ py::dict record_infinite(Status status, const std::string& method, const std::st
   return d;
 }
 
+rational shortest_decimal(double x) {
+  // std::to_chars without a precision: the shortest decimal that reads back as x (Python's repr)
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, x);
+  if (res.ec != std::errc()) throw std::logic_error("shortest_decimal: to_chars failed");
+  return parse_rational(std::string(buf, res.ptr), "a float");
+}
+
 Columns Columns::from_python(const std::vector<std::string>& names, const py::list& columns) {
   Columns c;
   c.names = names;
@@ -132,7 +141,7 @@ Columns Columns::from_python(const std::vector<std::string>& names, const py::li
       for (py::ssize_t i = 0; i < r.shape(0); ++i) {
         if (!std::isfinite(r(i)))
           throw InputError(what + "[" + std::to_string(i) + "]: " + std::to_string(r(i)) + " is not a finite number");
-        v.push_back(exact_rational(r(i)));
+        v.push_back(shortest_decimal(r(i)));
       }
     } else {
       const auto texts = col.cast<std::vector<std::string>>();

@@ -113,9 +113,9 @@ def _asarray(v: Any) -> Any:
 
 
 def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
-    """One parameter's values at every point: float64 where every value is an integer below 2^53
-    (its binary value is the number), else the exact texts (a float as the shortest decimal that
-    rounds to it, as a scalar float is read; Fraction(x) entries for binary values)."""
+    """One parameter's values at every point: float64 (the binding reads each as the shortest
+    decimal that rounds to it, as a scalar float is read), integers below 2^53 as float64 (exact),
+    else the exact texts (Fraction(x) entries for binary values)."""
     import numpy as np
     flat = np.asarray(a).ravel()
     what = what or f"params[{name!r}]"
@@ -126,9 +126,9 @@ def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
         if bad.any():
             i = int(np.argmax(bad))
             raise InputError(f"{what}[{i}]: {flat[i]} is not a finite number")
-        if np.all((flat == np.round(flat)) & (np.abs(flat) < 2.0**53)):
-            return np.ascontiguousarray(flat, dtype=np.float64)  # integers: the binary value is the decimal
-        return [exact(x, f"{what}[{i}]") for i, x in enumerate(flat)]
+        if flat.dtype == np.float64:
+            return np.ascontiguousarray(flat)  # the binding reads each as its shortest decimal (core.cpp)
+        return [exact(x, f"{what}[{i}]") for i, x in enumerate(flat)]  # float32/16: numpy's own shortest
     if flat.dtype.kind in "iu" and (flat.size == 0 or int(np.abs(flat.astype(object)).max()) < 2**53):
         return flat.astype(np.float64)  # exact: integers below 2^53 are doubles
     return [exact(x.item() if hasattr(x, "item") and not isinstance(x, np.floating) else x, f"{what}[{i}]")
