@@ -468,13 +468,14 @@ def _text(H: Any, what: str, T_text: Optional[str] = None) -> str:
                     f"object (num, den, dt), got {type(H).__name__}")
 
 
-def _plant_text(P: Any) -> Any:
-    """The device P(s): an expression in s, or a continuous-time system object (num, den; dt 0 or None)."""
+def _plant_text(P: Any, what: str = "plant") -> Any:
+    """The device P(s) (or the operator's Z_op(s)): an expression in s, or a continuous-time system
+    object (num, den; dt 0 or None)."""
     if P is None or isinstance(P, str):
         return P
     if is_system(P):
-        return _call(continuous_text, P, "plant")
-    raise TypeError(f"plant: expected an expression string in s or a continuous-time system object (num, den), got "
+        return _call(continuous_text, P, what)
+    raise TypeError(f"{what}: expected an expression string in s or a continuous-time system object (num, den), got "
                     f"{type(P).__name__}")
 
 
@@ -522,7 +523,7 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
     if max is not None and not isinstance(max, str):
         raise InputError(f"max: expected the name of a gain (a str), got {max!r}")
     H_text = _text(H, "H", T_text)
-    plant = _plant_text(plant)
+    plant, operator = _plant_text(plant), _plant_text(operator, "operator")
     _check_names(params, [(plant, "s"), (H_text, "z"), (operator, "s")], max)
     fixed, names, columns, shape, arrays = _params(params)
     if shape is not None:

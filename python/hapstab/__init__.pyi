@@ -372,17 +372,17 @@ def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., 
           jobs: Optional[int] = ..., max: Optional[str] = ..., check: bool = ...) -> ResultArray: ...
 @overload
 def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,  # type: ignore[misc]
-              delay: int = ..., operator: Optional[str] = ..., max: None = ..., digits: int = ...,
+              delay: int = ..., operator: Optional[Any] = ..., max: None = ..., digits: int = ...,
               params: Optional[ScalarParams] = ..., jobs: Optional[int] = ..., *,
               scene: Optional[Scene] = ..., conservatism: bool = ...) -> Stability: ...
 @overload
 def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,  # type: ignore[misc]
-              delay: int = ..., operator: Optional[str] = ..., *, max: str, digits: int = ...,
+              delay: int = ..., operator: Optional[Any] = ..., *, max: str, digits: int = ...,
               params: Optional[ScalarParams] = ..., jobs: Optional[int] = ...,
               scene: Optional[Scene] = ..., conservatism: bool = ...) -> MaxGain: ...
 @overload
 def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,
-              delay: int = ..., operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
+              delay: int = ..., operator: Optional[Any] = ..., max: Optional[str] = ..., digits: int = ...,
               params: Optional[Mapping[str, ExactOrArray]] = ..., jobs: Optional[int] = ..., *,
               scene: Optional[Scene] = ..., conservatism: bool = ...) -> ResultArray: ...
 def wedge(H: TransferFunctionInput, T: Optional[Exact] = ..., digits: int = ...,

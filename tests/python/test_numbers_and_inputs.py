@@ -337,6 +337,9 @@ def test_scipy_signal_systems_are_read_by_their_attributes():
     s = hapstab.stability(signal.lti([1], [1, 1, 0]), signal.dlti([1000], [1], dt=1e-3), delay=2)
     s_ref = hapstab.stability("1/(s^2 + s)", "1000", T="1/1000", delay=2)
     assert s.stable == s_ref.stable and (s.lo, s.hi) == (s_ref.lo, s_ref.hi)
+    op = hapstab.stability("1/(s^2 + s)", "1000", T="1/1000", delay=2, operator=signal.lti([2, 100], [1, 0]))
+    assert op.stable == hapstab.stability("1/(s^2 + s)", "1000", T="1/1000", delay=2, operator="2 + 100/s").stable
+    assert op.value == hapstab.stability("1/(s^2 + s)", "1000", T="1/1000", delay=2, operator="2 + 100/s").value
     with pytest.raises(hapstab.InputError, match="plant: a discrete-time system"):
         hapstab.stability(signal.dlti([1], [1, 1], dt=1e-3), "1000", T="1/1000")
     # ss=: scipy's StateSpace (A, B, C, D, dt)
