@@ -411,3 +411,7 @@ def test_mypy_sees_scalar_calls_as_scalar_results(tmp_path):
     assert revealed == ["hapstab.Bound", "hapstab.MaxPassiveGain", "hapstab.ResultArray", "hapstab.Stability",
                         "hapstab.MaxGain", "hapstab.R", "hapstab.RArray", "hapstab.PassivityLevel"], out
     assert "error" not in out.replace("Revealed", ""), out
+    # the stubs themselves are consistent (overloads, operators): no error reported in a .pyi
+    p = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", "--cache-dir", os.devnull, "--python-version",
+                        "3.11", "-p", "hapstab"], capture_output=True, text=True, cwd=package, check=False)
+    assert [line for line in p.stdout.splitlines() if ".pyi:" in line and "error" in line] == [], p.stdout
