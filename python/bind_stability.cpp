@@ -395,6 +395,7 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
     d["stable_at"] = point(b.lo);
     d["unstable_at"] = point(b.hi);
     d["verdicts"] = b.steps.size();
+    d["verdicts_outcome"] = to_string(b.outcome);  // holds: a certified bracket (or yes at every value tried)
     d["note"] = b.note + " (the closed loop is not affine in " + name +
                 ": a change of certified verdicts, not a proven supremum)";
   } else {

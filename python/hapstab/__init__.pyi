@@ -153,10 +153,14 @@ class MaxGain(Result):
     unstable_at: Any
     gap: Optional[float]
     not_affine: Optional[str]
+    verdicts_outcome: str         # the bisection's: 'holds' (a certified bracket), 'fails', 'undecided'
+    states: int
+    fixed_modes: int
     theorem5: Optional[Dict[str, Any]]       # conservatism=True: {bracket, concludes_at, not_at, note, programs, seconds}
-    conservatism: Optional[Tuple[str, str]]  # exact / Theorem 5, certified
+    conservatism: Optional[Tuple[str, str]]  # exact / Theorem 5: only where both regions are proven intervals
+    conservatism_note: Optional[str]
     contradiction: bool
-    def __bool__(self) -> bool: ...
+    def __bool__(self) -> bool: ...  # raises UndecidedComparison when the supremum is not proven
 
 class MaxPassiveGain(Result):
     """bound(H, max='K', damping=b): sup{K0 : b > b*(K) for 0 <= K < K0}; 0 when b <= b*(0), inf

@@ -340,12 +340,20 @@ class MaxGain(Result):
     """The largest stable gain of the sampled loop (stability(..., max='K')): sup{K : stable on
     (0, sup)}; 0 when unstable for every small K, inf when stable for every K. Besides the
     protocol: name, outcome, crossing ('z = 1', 'z = -1', 'complex pair'), theta and omega
-    (enclosures of the crossing, rad and rad/s), bool(r): a positive supremum exists."""
+    (enclosures of the crossing, rad and rad/s), bool(r): a positive supremum exists (raises
+    UndecidedComparison when the supremum is not proven: status undecided or failed).
+
+    With scene=...: also path, supremum_proven, stable_on (proven stable there, also when the
+    supremum is undecided), change_in (not affine: stable at its lower end, NOT stable at its
+    upper end), stable_at, unstable_at, gap, not_affine, verdicts_outcome, states, fixed_modes,
+    theorem5, conservatism, conservatism_note, contradiction."""
 
     _symbol = r"K_{\max}"
     _name = "the largest stable gain"
 
     def __bool__(self) -> bool:
+        if self.status in ("undecided", "failed"):  # never counted as a yes or a no
+            raise UndecidedComparison(f"the largest stable gain is {self.status}: {self.note}")
         return self.outcome == "holds" and self.value != 0
 
     def _repr_extra(self) -> Dict[str, Any]:

@@ -120,6 +120,9 @@ def test_stability_of_a_scene_max_not_affine_is_not_called_certified():
     assert c.change_in == tuple(j["change_in"]) and c.stable_at == j["stable_at"] and c.unstable_at == j["unstable_at"]
     with pytest.raises(hapstab.UndecidedComparison, match="undecided"):
         c < 1e9
+    with pytest.raises(hapstab.UndecidedComparison, match="undecided"):
+        bool(c)  # an unproven supremum is never counted as a yes or a no
+    assert c.verdicts_outcome == "holds" and c.verdicts > 0
     assert c.theorem5["bracket"] == tuple(j["theorem5"]["bracket"]) and c.theorem5["not_at"] == j["theorem5"]["not_at"]
     assert c.theorem5["concludes_at"] == j["theorem5"]["concludes_at"]
     # neither region is proven an interval (kc is no [environment] gain; the exact side is a change
