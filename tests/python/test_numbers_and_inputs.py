@@ -222,7 +222,7 @@ def test_one_status_type_everywhere():
     assert [str(s) for s in bs.status] == [p.status for p in bs]  # the scalar results' statuses
     pd = pytest.importorskip("pandas")
     table = bs.to_pandas()
-    t = hapstab.sweep({"command": "bound", "args": {"H": WALL, "T": "1/1000", "delay": 1},
+    t = hapstab.sweep({"command": "bound", "args": {"H": WALL, "T": 1e-3, "delay": 1},  # a float: its shortest decimal
                        "axes": {"K": {"values": ["0", "1000"]}, "B": {"values": ["5"]}}})
     sweep_table = t.to_pandas()
     assert all(isinstance(s, str) for s in table["status"]) and all(isinstance(s, str) for s in sweep_table["status"])
