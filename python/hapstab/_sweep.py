@@ -11,7 +11,8 @@ structured numpy array.
     >>> t.to_pandas()               # a pandas DataFrame (Debian's python3-pandas)
 
 The spec is a path, TOML text, or a dict of the same shape as the TOML file (given to the
-sweep as text: its messages call it "spec").
+sweep as text: its messages call it "spec"; a float in the dict is written as its shortest
+decimal string, 1e-3 -> "0.001", as every Python float is read).
 """
 from __future__ import annotations
 
