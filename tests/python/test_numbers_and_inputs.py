@@ -97,15 +97,21 @@ def test_stability_of_a_scene_max_is_bound_not_forked(monkeypatch, tmp_path):
     monkeypatch.undo()
     path = tmp_path / "g.toml"
     path.write_text(text)
-    code, j = cli("stability", "--scene", str(path), "--max", "g", "--digits", "12")
-    assert code == 0 and r.path == j["path"] == "closed_loop_matrix" and r.outcome == "holds" and r.supremum_proven
-    # the value is the supremum: the midpoint of its certified enclosure [stable_to, crossing.hi]
-    assert r.status == j["status"] == "certified" and (r.lo_exact, r.hi_exact) == tuple(j["sup_enclosure"])
-    assert r.lo <= r.value <= r.hi and f"{r.value:.10f}".startswith(j["max"][:11])  # the digits the ends share
-    assert r.stable_on == tuple(j["stable_on"]) and r.crossing["crossing"] == tuple(j["enclosure"])
-    assert r.crossing["at"] == j["crossing"]["at"] and r.crossing["mode"] == j["crossing"]["mode"]
-    assert r.unstable_at == j["unstable_at"] and r.stable_at == j["stable_at"] and r.gap == j["gap"]
-    assert r > F(r.lo_exact) - 1 and r < F(r.hi_exact) + 1  # a proven value decides comparisons
+    code, j = cli("stability", "--scene", str(path), "--max", "g", "--digits", "12", codes=(0, 3))
+    assert r.path == j["path"] == "closed_loop_matrix" and r.status == j["status"]
+    assert r.supremum_proven == (code == 0) and r.stable_on == tuple(j["stable_on"])
+    if code == 0:  # the supremum proven: the value is it, the midpoint of [stable_to, crossing.hi]
+        assert r.outcome == "holds" and r.status == "certified" and (r.lo_exact, r.hi_exact) == tuple(j["sup_enclosure"])
+        assert r.lo <= r.value <= r.hi and f"{r.value:.10f}".startswith(j["max"][:11])  # the digits the ends share
+        assert r.crossing["crossing"] == tuple(j["enclosure"]) and r.crossing["at"] == j["crossing"]["at"]
+        assert r.crossing["mode"] == j["crossing"]["mode"] and r.gap == j["gap"]
+        assert r.unstable_at == j["unstable_at"] and r.stable_at == j["stable_at"]
+        assert r > F(r.lo_exact) - 1 and r < F(r.hi_exact) + 1  # a proven value decides comparisons
+    else:  # stable on [a, b] proven, (0, a) not: the supremum is undecided (issue 46 item 2), never a number
+        assert r.status == "undecided" and math.isnan(r.value) and j["max"] is None and r.outcome == "undecided"
+        assert r.crossing is None or r.crossing["crossing"] == tuple(j["enclosure"])
+        with pytest.raises(hapstab.UndecidedComparison, match="undecided"):
+            r < 100
 
 
 def test_stability_of_a_scene_max_not_affine_is_not_called_certified():
