@@ -6,8 +6,8 @@
 # that coupling, Assumption 1, hidden modes; certified ends), on the four Sec. VI scenes and the
 # contact scenes N = 2, 4, 8 (g = 1, 10 there: their cost); a triangle: stable at every kc tried (up
 # to 64000). Points: the loop simulated 10 s after a force impulse (numeric): circle = velocities
-# decay, cross = they do not. Panel titles: the ratio
-# exact / Theorem 5 at g = 1. Data: hapstab figure multidof_conservatism --out DIR.
+# decay, cross = they do not. Panel titles: the ratio of the boundaries (not of suprema: neither
+# region is proven an interval in kc) exact / Theorem 5 at g = 1. Data: hapstab figure multidof_conservatism --out DIR.
 name = 'multidof_conservatism'
 if (!exists("plotdir")) plotdir = 'plots'
 wide = 1
@@ -25,8 +25,8 @@ set format x (tex ? '$10^{%L}$' : '10^{%L}')
 set xtics font small
 set ytics font small
 unset key
-set multiplot layout 2,4 title (tex ? 'Largest coupling stiffness $k_c$ ($V = V_{27}/k_c$): exact vs Theorem 5 (ratios at g = 1)' \
-                                    : 'Largest coupling stiffness k_c (V = V_{27}/k_c): exact vs Theorem 5 (ratios at g = 1)')
+set multiplot layout 2,4 title (tex ? 'Largest coupling stiffness $k_c$ ($V = V_{27}/k_c$): exact vs Theorem 5 (ratio of the boundaries at g = 1)' \
+                                    : 'Largest coupling stiffness k_c (V = V_{27}/k_c): exact vs Theorem 5 (ratio of the boundaries at g = 1)')
 do for [k=0:6] {
   f = datadir.'/'.name.'_'.k.'.dat'
   s = datadir.'/'.name.'_'.k.'_sim.dat'

@@ -60,16 +60,23 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
           return s;
         };
         const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 16);
-        const bool good = r.outcome == Outcome::holds && r.sup.lo <= K && K <= r.sup.hi && rel(r.sup.hi, r.sup.lo) <= 1e-15;
-        worst1 = std::max(worst1, r.outcome == Outcome::holds ? rel(r.sup.hi, r.sup.lo) : 1.0);
+        // M(0) has the mass's Jordan block at z = 1, so the walk cannot cover (0, a): the supremum is
+        // not stated (undecided); what is certified -- the crossing and [a, b] stable -- must agree
+        const bool crossing = r.crossing.lo <= K && K <= r.crossing.hi && rel(r.crossing.hi, r.crossing.lo) <= 1e-15;
+        const bool good = crossing && r.stable_to <= K && r.stable_from < r.stable_to &&
+                          (r.outcome == Outcome::holds || (r.outcome == Outcome::undecided && r.stable_from > 0));
+        worst1 = std::max(worst1, crossing ? rel(r.crossing.hi, r.crossing.lo) : 1.0);
         ok1 = ok1 && good;
       }
   std::ostringstream e1;
-  e1 << "loop_max's supremum of K on the pure-mass wall contains the closed form at every instance; widest enclosure "
+  e1 << "loop_max's crossing of K on the pure-mass wall contains the closed form at every instance, and its certified "
+        "stable interval lies below it; widest enclosure "
      << worst1 << " relative";
   check.claim("ext.stability.max_multidof_1dof", "closed form, n = 0",
               "stability --max through the closed-loop matrix (the multi-DOF path) on a one-DOF pure mass 1/(m s^2) with the "
-              "wall K + B(z-1)/(Tz): its certified enclosure of sup K holds (2B/T)(2m - BT)/(2m + BT), 1e-15 relative wide",
+              "wall K + B(z-1)/(Tz): its certified crossing holds (2B/T)(2m - BT)/(2m + BT), 1e-15 relative wide, and the "
+              "interval it proves stable lies below (M(0) has a Jordan block at z = 1, so (0, a) is not covered and the "
+              "supremum is not stated)",
               Status::certified, ok1, e1.str(), {one});
 
   // ---- two DOF: exact Schur bisection on det(zI - M(g)) --------------------------------------------
@@ -88,12 +95,14 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
         return s;
       };
       const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", 16);
-      if (r.outcome != Outcome::holds) {
+      // pure masses: M(0) has Jordan blocks at z = 1, the supremum is not stated; the crossing and
+      // the interval below it are
+      if (r.crossing.hi == 0 || r.stable_to <= r.stable_from) {
         ok2 = false;
-        if (first.str().empty()) first << "; undecided at Kc = " << Kc.str() << ": " << r.note;
+        if (first.str().empty()) first << "; no certified crossing and interval at Kc = " << Kc.str() << ": " << r.note;
         continue;
       }
-      Q lo = r.sup.lo * (1 - Q(1, 1000000)), hi = r.sup.hi * (1 + Q(1, 1000000));
+      Q lo = r.stable_to * (1 - Q(1, 1000000)), hi = r.crossing.hi * (1 + Q(1, 1000000));
       if (!exactly_stable(at(lo)) || exactly_stable(at(hi))) {
         ok2 = false;
         if (first.str().empty()) first << "; the exact verdicts do not bracket the answer at Kc = " << Kc.str();
@@ -104,18 +113,19 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
         (exactly_stable(at(mid)) ? lo : hi) = mid;
       }
       two.count(true);
-      const bool meet = r.sup.lo <= hi && lo <= r.sup.hi && rel(r.sup.hi, r.sup.lo) <= 1e-15;
-      worst2 = std::max(worst2, rel((r.sup.lo + r.sup.hi) / 2, (lo + hi) / 2));
+      const bool meet = r.crossing.lo <= hi && lo <= r.crossing.hi && rel(r.crossing.hi, r.crossing.lo) <= 1e-15 &&
+                        r.stable_to <= hi && exactly_stable(at(r.stable_from)) && exactly_stable(at((r.stable_from + r.stable_to) / 2));
+      worst2 = std::max(worst2, rel((r.crossing.lo + r.crossing.hi) / 2, (lo + hi) / 2));
       width2 = std::max(width2, rel(hi, lo));
       ok2 = ok2 && meet;
     }
   std::ostringstream e2;
-  e2 << "sup g of each loop against the exact bisection (Schur-Cohn on det(zI - M(g)), M exact): brackets meet; largest "
-        "midpoint difference "
+  e2 << "the crossing in g of each loop against the exact bisection (Schur-Cohn on det(zI - M(g)), M exact): brackets meet, "
+        "and the certified interval's ends and midpoint are exactly stable; largest midpoint difference "
      << worst2 << " relative, bracket width <= " << width2 << first.str();
   check.claim("ext.stability.max_multidof_2dof", "det(zI - M(g)), exact",
               "stability --max on a 2-DOF loop (pure masses, coupled spring-damper environment scaled by g): the certified "
-              "supremum (1e-15 relative) meets the bracket of an exact Schur-Cohn bisection on the characteristic "
-              "polynomial of the exactly built closed-loop matrix",
+              "crossing (1e-15 relative) meets the bracket of an exact Schur-Cohn bisection on the characteristic "
+              "polynomial of the exactly built closed-loop matrix, and the interval it proves stable is stable exactly",
               Status::certified, ok2, e2.str(), {two});
 }

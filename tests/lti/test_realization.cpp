@@ -97,3 +97,28 @@ TEST(Realization, CharpolyOfLargeOrderWithRepeatedFactors) {
     EXPECT_EQ(charpoly(A), q.pow(static_cast<unsigned>(copies)) * l.pow(5)) << "copies " << copies;
   }
 }
+
+// The branch where the minimal polynomial has degree n (distinct eigenvalues): never trusted as it
+// is (FLINT 2.9's multimodular minpoly can stop at a wrong coefficient bound); against FLINT's
+// fraction-free charpoly and against det(xI - A) at rational points (Bareiss on the matrix),
+// on dense matrices with large entries and distinct eigenvalues, orders 49..60.
+TEST(Realization, CharpolyOfLargeOrderWithDistinctEigenvalues) {
+  for (const int n : {49, 53, 60}) {
+    MatQ A(n, n);
+    unsigned long x = 12345u + static_cast<unsigned long>(n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        x = x * 6364136223846793005ul + 1442695040888963407ul;
+        const long num = static_cast<long>((x >> 20) % 2000001) - 1000000;  // |entry| up to 10^6
+        A(i, j) = rational(num, 1 + static_cast<long>((x >> 50) % 7));
+      }
+    const Polynomial<rational> p = charpoly(A);
+    ASSERT_EQ(p.degree(), n);
+    EXPECT_EQ(p.coeff(n), 1);
+    // det(x I - A) at x = 0, 1, -2 by exact elimination (exact_matrix.hpp), independent of FLINT's charpoly
+    for (const rational xv : {rational(0), rational(1), rational(-2)}) {
+      MatQ M = MatQ(MatQ::Identity(n, n)) * xv - A;
+      EXPECT_EQ(p(xv), exact_determinant(M)) << "n = " << n << ", x = " << xv;
+    }
+  }
+}

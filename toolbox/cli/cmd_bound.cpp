@@ -271,8 +271,12 @@ void print_human(const Outcome& r, const BoundOpts& o) {
     const bool grid = b.kind == Method::grid;
     const auto [lo, hi] = reported_enclosure(b, o.digits);
     std::cout << "  enclosure [" << lo << ", " << hi << "]"
-              << (b.status == Status::certified ? "" : grid ? "  (a grid maximum only bounds b* from below)"
-                                                              : "  (stated error, not a proof)")
+              << (b.status == Status::certified ? ""
+                  : grid                            ? "  (a grid maximum only bounds b* from below)"
+                  : b.path == BoundPath::long_delay
+                      ? "  (f's rounding at the maximiser found, not an error of b*: a peak between the samples "
+                        "can be missed; --method certified for b*)"
+                      : "  (stated error, not a proof)")
               << "\n";
   }
   if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";

@@ -18,7 +18,9 @@
 //   point_certified, minimality (numeric: only the point is checked exactly)}, assumptions [{name,
 //   holds, outcome (holds|fails|undecided), certified, detail}] (Assumption 1, then the premises on
 //   the blocks' hidden modes).
-// JSON keys, design: feasible, certified, converged, iterations, trace_gap, convex_infeasible,
+// JSON keys, design: stability_concluded (a verified V, every premise holding, no contradiction:
+//   the exit-0 verdict), verdict (the text's last line), feasible and certified (a V passed the
+//   LMI checks; with a premise failing that is no stability conclusion), converged, iterations, trace_gap, convex_infeasible,
 //   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict (pass|fail|
 //   undecided), certified, detail}], loop_with_v (as loop_as_written, for the loop with the designed
 //   V), facial_reduction, path (the design path that decided, or null), plan [{path, fate, why}]
@@ -301,7 +303,27 @@ int run_design(const Opts& o) {
                    {"verdict", v.verdict.holds() ? "pass" : v.verdict.fails() ? "fail" : "undecided"},
                    {"certified", v.verdict.proven()},
                    {"detail", v.verdict.evidence}});
-  json j{{"feasible", feasible},
+  // the one verdict, in the text's last line and in JSON alike ("feasible"/"certified" say only that
+  // a V passed the LMI checks; with a premise failing there is no stability conclusion)
+  std::ostringstream vt;
+  if (!d.contradiction.empty())
+    vt << "CONTRADICTION: " << d.contradiction;
+  else if (feasible && premise.empty())
+    vt << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
+       << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision; "
+          "simulated as a numeric cross-check)";
+  else if (feasible)
+    vt << "a coupling V passed the LMI checks, but " << premise << ": no stability conclusion";
+  else if (r.verdict.fails())
+    vt << "no stabilising coupling of this structure from Theorem 6: its convex part is infeasible"
+       << (r.verdict.proven() ? " (certified)" : "");
+  else
+    vt << "no verified coupling V (" << (hasV ? "a candidate failed its independent checks" : "CCL found none")
+       << "); Theorem 6 is sufficient only";
+  const std::string verdict = vt.str();
+  json j{{"stability_concluded", d.ok()},
+         {"verdict", verdict},
+         {"feasible", feasible},
          {"certified", certified},
          {"converged", r.converged},
          {"iterations", r.iterations},
@@ -342,22 +364,7 @@ int run_design(const Opts& o) {
     if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "; the designed V is fed the applied force\n";
     print_assumptions(d.premises);
     if (!d.warning.empty()) std::cout << "  warning: " << d.warning << "\n";
-    std::cout << "=> ";
-    if (!d.contradiction.empty())
-      std::cout << "CONTRADICTION: " << d.contradiction;
-    else if (feasible && premise.empty())
-      std::cout << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
-                << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision; "
-                   "simulated as a numeric cross-check)";
-    else if (feasible)
-      std::cout << "a coupling V passed the LMI checks, but " << premise << ": no stability conclusion";
-    else if (r.verdict.fails())
-      std::cout << "no stabilising coupling of this structure from Theorem 6: its convex part is infeasible"
-                << (r.verdict.proven() ? " (certified)" : "");
-    else
-      std::cout << "no verified coupling V (" << (hasV ? "a candidate failed its independent checks" : "CCL found none")
-                << "); Theorem 6 is sufficient only";
-    std::cout << "\n";
+    std::cout << "=> " << verdict << "\n";
   }
   if (!d.contradiction.empty()) return exit_numerical;
   return d.ok() ? exit_ok : exit_property_fails;

@@ -171,7 +171,11 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   if (o.json) cli::print_json(j);
   else {
     const int shared = j["max_digits"].is_null() ? o.digits : j["max_digits"].get<int>();
-    std::cout << "sup " << o.max_name << " = " << (shared > 0 ? j["max"].get<std::string>() : "(no digit certified)") << "   ["
+    // "max" is null when nothing was found (undecided): printed as such, never read as a string
+    const std::string shown = j["max"].is_null() ? std::string("undecided")
+                              : shared > 0       ? j["max"].get<std::string>()
+                                                 : std::string("(no digit certified)");
+    std::cout << "sup " << o.max_name << " = " << shown << "   ["
               << j["status"].get<std::string>();
     if (shared < o.digits)
       std::cout << ", " << shared << " of " << o.digits << " digits: the enclosure did not narrow further";
@@ -236,8 +240,14 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   j["note"] = m.note;
   j["digits"] = o.digits;
   j["precision_bits"] = m.precision_bits;
+  j["supremum_proven"] = found;
   if (!found) {
     j["max"] = nullptr;
+    // what is proven all the same: an interval of stable values (certified), below a certified crossing
+    if (m.stable_to > m.stable_from) {
+      j["stable_on"] = enclosure_json({m.stable_from, m.stable_to}, 17);
+      j["enclosure"] = m.crossing.hi > 0 ? enclosure_json(m.crossing, o.digits + 3) : nlohmann::json(nullptr);
+    }
     return j;
   }
   const SharedDecimal d = shared_decimal(m.sup.lo, m.sup.hi, o.digits);
@@ -313,6 +323,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   nlohmann::json j;
   int rc = cli::exit_ok;
   std::optional<Enclosure<rational>> exact;  // holds the exact side's boundary (certified)
+  bool exact_is_supremum = false;            // stability on (0, exact) proven: the supremum of an interval
   std::string text;
   if (!not_affine.empty()) {
     const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
@@ -322,9 +333,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
       exact = b.bracket();
       t << o.max_name << ": stable at " << to_decimal(b.lo->at, 17) << ", NOT stable at " << to_decimal(b.hi->at, 17)
         << "   [certified verdicts, bisection; " << sc.loop.dofs() << " DOF]\n";
-    } else if (b.lo) {  // stable at every value tried: an answer, not a failure
-      t << o.max_name << ": stable at every value tried, up to " << to_decimal(b.lo->at, 17) << "   [certified verdicts, bisection; "
-        << sc.loop.dofs() << " DOF]\n";
+    } else if (b.lo) {  // stable up to lo; above it nothing NOT stable was proven: no supremum (exit 3)
+      t << o.max_name << ": stable at " << to_decimal(b.lo->at, 17) << ", no NOT-stable value proven above it: supremum undecided"
+        << "   [certified verdicts, bisection; " << sc.loop.dofs() << " DOF]\n";
+      rc = cli::exit_numerical;
     } else {
       t << o.max_name << ": no certified stable value found\n";
       rc = b.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_numerical;
@@ -334,17 +346,22 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
     text = t.str();
   } else {
     const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
-    if (m.outcome == Outcome::fails) {  // a mode no parameter moves is not inside: unstable for every value
-      j = {{"name", o.max_name}, {"max", "0"}, {"status", "exact"}, {"path", "closed_loop_matrix"}, {"note", m.note}};
-      text = "sup " + o.max_name + " = 0   [exact]\n  " + m.note + "\n";
+    if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
+      j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)}, {"path", "closed_loop_matrix"}, {"note", m.note}};
+      text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";
       rc = cli::exit_property_fails;
     } else {
       j = loop_max_json(m, o, sc);
       if (m.outcome != Outcome::holds) {
-        text = "sup " + o.max_name + ": undecided\n  " + m.note + "\n";
+        text = "sup " + o.max_name + ": undecided\n";
+        if (j.contains("stable_on"))
+          text += "  stable for every " + o.max_name + " in [" + j["stable_on"][0].get<std::string>() + ", " +
+                  j["stable_on"][1].get<std::string>() + "] [certified]\n";
+        text += "  " + m.note + "\n";
         rc = cli::exit_numerical;
       } else {
         exact = m.sup;
+        exact_is_supremum = true;
         std::ostringstream t;
         t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
           << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
@@ -362,8 +379,18 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   }
   if (t5) {
     j["theorem5"] = theorem5_json(*t5);
-    const auto r = exact ? conservatism::ratio(*exact, *t5) : std::nullopt;
+    // a ratio of suprema only where both regions are proven intervals (0, sup): the exact side's by
+    // the certified cover from 0, Theorem 5's when NAME is the gain of [environment] (its region
+    // scales: docs/stability.md); otherwise the two brackets are boundaries, not suprema
+    const bool t5_interval = sc.root["environment"]["gain"].value_or(std::string()) == o.max_name;
+    const bool both_intervals = exact_is_supremum && t5_interval;
+    const auto r = exact && both_intervals ? conservatism::ratio(*exact, *t5) : std::nullopt;
     j["conservatism"] = r ? enclosure_json(*r, 4) : nlohmann::json(nullptr);
+    j["conservatism_note"] = both_intervals ? "exact supremum / Theorem 5's supremum"
+                             : std::string("no ratio of suprema: ") +
+                                   (exact_is_supremum ? "" : "the exact side's bracket is not proven to be the supremum of an interval (0, sup)") +
+                                   (!exact_is_supremum && !t5_interval ? "; " : "") +
+                                   (t5_interval ? "" : "Theorem 5's region in " + o.max_name + " is not proven an interval (only an [environment] gain's is)");
     std::ostringstream t;
     if (t5->lo && t5->hi)
       t << "Theorem 5: concludes at " << o.max_name << " = " << to_decimal(t5->lo->at, 17) << ", not at "
@@ -375,15 +402,26 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
     if (t5->hi) t << "  at " << to_decimal(t5->hi->at, 17) << ": " << t5->hi->why << "\n";
     if (r)
       t << "conservatism: exact / Theorem 5 in [" << j["conservatism"][0].get<std::string>() << ", "
-        << j["conservatism"][1].get<std::string>() << "]   (certified: both brackets' ends are certified verdicts)\n";
+        << j["conservatism"][1].get<std::string>() << "]   (certified: a ratio of suprema of intervals, both brackets' ends certified verdicts)\n";
+    else if (!both_intervals)
+      t << "conservatism: not a ratio (" << j["conservatism_note"].get<std::string>() << "); the brackets above are boundaries found\n";
     else
       t << "conservatism: not determined (a bracket has no certified upper end)\n";
     text += t.str();
-    // Theorem 5 is sound: a conclusion above the exact side's NOT-stable end is a contradiction.
-    if (exact && t5->lo && t5->lo->at > exact->hi) {
-      text += "CONTRADICTION: Theorem 5 concludes above the value where the loop is proven NOT stable\n";
-      j["contradiction"] = true;
-      rc = cli::exit_numerical;
+    // Theorem 5 is sound: a conclusion where the loop is proven NOT stable is a contradiction (a
+    // conclusion above the exact side's first NOT-stable value is not: the loop may be stable again there)
+    if (t5->lo && exact && t5->lo->at > exact->hi) {
+      const stability::LoopVerdict v = stability::decide_loop(at(t5->lo->at));
+      if (v.stable && !*v.stable) {
+        text += "CONTRADICTION: Theorem 5 concludes at " + o.max_name + " = " + to_decimal(t5->lo->at, 17) +
+                ", where the loop is proven NOT stable (" + to_string(v.status) + ")\n";
+        j["contradiction"] = true;
+        rc = cli::exit_numerical;
+      } else {
+        text += "  note: Theorem 5 concludes at " + o.max_name + " = " + to_decimal(t5->lo->at, 17) +
+                ", above the exact side's first NOT-stable value: the stable set is not an interval there" +
+                (v.stable ? std::string(" (the loop is stable again, ") + to_string(v.status) + ")" : std::string(" (the loop there: undecided)")) + "\n";
+      }
     }
   }
   if (o.json) cli::print_json(j);

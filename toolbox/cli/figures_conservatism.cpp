@@ -116,7 +116,7 @@ GnuplotVars titles(const fs::path& dir) {
     title = title.substr(0, title.rfind('\''));
     char r[96];
     if (lo == "nan" || hi == "nan") std::snprintf(r, sizeof r, "Theorem 5 concludes nowhere");
-    else std::snprintf(r, sizeof r, "exact/Thm 5: %.3g-%.3g", std::stod(lo), std::stod(hi));
+    else std::snprintf(r, sizeof r, "boundaries exact/Thm 5: %.3g-%.3g", std::stod(lo), std::stod(hi));
     v.text.emplace_back("title" + std::to_string(k), title);
     v.text.emplace_back("sub" + std::to_string(k), r);
   }

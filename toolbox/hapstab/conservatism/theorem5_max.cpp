@@ -145,8 +145,18 @@ VerdictBracket bisect_verdicts(const std::function<PointVerdict(const rational&)
     v = ask(p);
   }
   if (!(v.proven() && *v.yes)) {
-    b.outcome = Outcome::fails;
-    return done("no certified yes at any of the values tried, " + to_decimal(p, 6) + " .. " + to_decimal(reference, 6));
+    // "no at every value tried" only when every verdict was a proven no: an undecided one is
+    // neither answer (it made "NOT stable at every value tried" out of undecided verdicts before)
+    long undecided = 0;
+    for (const auto& w : b.steps) undecided += w.proven() ? 0 : 1;
+    const std::string range = to_decimal(p, 6) + " .. " + to_decimal(reference, 6);
+    if (undecided == 0) {
+      b.outcome = Outcome::fails;
+      return done("a certified no at every value tried, " + range);
+    }
+    b.outcome = Outcome::undecided;
+    return done("no certified yes at the values tried, " + range + ": " + std::to_string(undecided) + " of " +
+                std::to_string(b.steps.size()) + " verdicts undecided (" + b.steps.back().why.substr(0, 160) + ")");
   }
   b.lo = v;
   // 2. a certified no above it
@@ -160,7 +170,10 @@ VerdictBracket bisect_verdicts(const std::function<PointVerdict(const rational&)
   } else {
     for (int k = 0; k < steps; ++k) {
       const PointVerdict w = ask(b.lo->at * 2);
-      if (!w.proven()) return done("undecided at " + to_decimal(w.at, 8) + " (" + w.why + "): the bracket ends there");
+      if (!w.proven()) {  // outcome stays undecided: a yes below, nothing known above
+        b.outcome = Outcome::undecided;
+        return done("undecided at " + to_decimal(w.at, 8) + " (" + w.why + "): no certified no found above the last yes");
+      }
       if (*w.yes) b.lo = w;
       else {
         b.hi = w;
@@ -195,6 +208,9 @@ VerdictBracket theorem5_max(const SceneAt& at, const rational& reference, const 
   VerdictBracket b = bisect_verdicts([&](const rational& p) { return theorem5_at(at(p), opt); }, reference, digits, steps);
   const std::string pre = "Theorem 5 (Theorem 4 with the scene's coupling, Assumption 1, hidden modes) ";
   if (b.outcome == Outcome::fails) b.note = pre + "concludes at none of the values of " + name + " tried: " + b.note;
+  else if (!b.lo) b.note = pre + "undecided: " + b.note;
+  else if (!b.hi && b.outcome == Outcome::undecided)
+    b.note = pre + "concludes up to " + name + " = " + to_decimal(b.lo->at, 8) + ", then " + b.note;
   else if (!b.hi) b.note = pre + "concludes up to " + name + " = " + to_decimal(b.lo->at, 8) + (b.note.empty() ? "" : "; " + b.note);
   else
     b.note = pre + "concludes at " + name + " = lo and not at hi: " +
@@ -209,6 +225,9 @@ VerdictBracket exact_max_by_verdicts(const stability::LoopAt& at, const rational
                                      int digits, int steps) {
   VerdictBracket b = bisect_verdicts([&](const rational& p) { return stable_at(at(p)); }, reference, digits, steps);
   if (b.outcome == Outcome::fails) b.note = "NOT stable at every value of " + name + " tried: " + b.note;
+  else if (!b.lo) b.note = "undecided: " + b.note;
+  else if (!b.hi && b.outcome == Outcome::undecided)
+    b.note = "stable up to " + name + " = " + to_decimal(b.lo->at, 8) + ", then " + b.note;
   else if (!b.hi) b.note = "stable at every value of " + name + " tried, up to " + to_decimal(b.lo->at, 8) + (b.note.empty() ? "" : "; " + b.note);
   else
     b.note = "the certified verdict changes from stable (lo) to NOT stable (hi) in [lo, hi]; stability between the "

@@ -79,7 +79,10 @@ PointVerdict stable_at(const sim::LoopSpec& loop);
 
 /// The bracket of a change of a certified verdict, yes at lo, no at hi.
 struct VerdictBracket {
-  Outcome outcome = Outcome::undecided;  ///< holds: a certified bracket; fails: no at every value tried
+  /// holds: a certified bracket, or a certified yes at every value tried (hi empty); fails: a
+  /// certified no at every value tried; undecided: anything else (an undecided verdict is never
+  /// counted as a yes or a no)
+  Outcome outcome = Outcome::undecided;
   std::optional<PointVerdict> lo, hi;    ///< the ends (certified); hi empty: yes up to the largest value tried
   std::vector<PointVerdict> steps;       ///< every verdict computed, in order
   std::string note;                      ///< what the bracket means, or why there is none

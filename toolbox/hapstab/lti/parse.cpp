@@ -592,6 +592,33 @@ ParsedExpression::~ParsedExpression() = default;
 
 size_t ParsedExpression::operations() const { return state_->tape.nodes.size(); }
 
+std::pair<long, long> ParsedExpression::degree_bound() const {
+  using Op = Tape::Op;
+  const Tape& t = state_->tape;
+  auto sat = [](long x) { return std::min<long>(x, 1000000); };
+  std::vector<std::pair<long, long>> d(t.nodes.size(), {0, 0});
+  auto get = [&](const Val& x) { return x.known() ? std::pair<long, long>{0, 0} : d[size_t(x.node)]; };
+  for (size_t k = 0; k < t.nodes.size(); ++k) {
+    const auto& n = t.nodes[k];
+    const auto [na, da] = get(n.a);
+    const auto [nb, db] = get(n.b);
+    switch (n.op) {
+      case Op::name: d[k] = {1, 0}; break;
+      case Op::add:
+      case Op::sub: d[k] = {sat(std::max(na + db, nb + da)), sat(da + db)}; break;
+      case Op::mul: d[k] = {sat(na + nb), sat(da + db)}; break;
+      case Op::div: d[k] = {sat(na + db), sat(da + nb)}; break;
+      case Op::neg: d[k] = {na, da}; break;
+      case Op::pow: {
+        const long e = std::abs(static_cast<long>(n.exponent));
+        d[k] = n.exponent >= 0 ? std::pair<long, long>{sat(e * na), sat(e * da)} : std::pair<long, long>{sat(e * da), sat(e * na)};
+        break;
+      }
+    }
+  }
+  return get(t.result);
+}
+
 TransferFunction ParsedExpression::at(const std::map<std::string, rational>& values) const {
   const State& s = *state_;
   for (const auto& name : s.varying)
@@ -608,6 +635,14 @@ TransferFunction ParsedExpression::at(const std::map<std::string, rational>& val
 
 AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name) {
   ParseOptions po = options;
+  po.parameters.erase(name);
+  const auto [dn, dd] = ParsedExpression(text, po, {name}).degree_bound();
+  const long D = std::max(dn, dd + 1);  // the degree in K of the numerator of H - H0 - K H1
+  constexpr long kMaxDegree = 64;
+  if (D > kMaxDegree)
+    throw InputError("the expression must be affine in " + name + ", and its degree in " + name + " is bounded only by " +
+                     std::to_string(D) + " (more than " + std::to_string(kMaxDegree) +
+                     " values would be needed to prove it affine); write it as H0 + " + name + " H1");
   auto at = [&](const rational& k) {
     po.parameters[name] = k;
     return parse_tf(text, po);
@@ -616,10 +651,21 @@ AffineSplit split_affine(std::string_view text, const ParseOptions& options, con
   const RationalFunction<rational> H1 = s.H1.H - s.H0.H;
   if (H1.is_zero()) throw InputError("the expression does not depend on " + name);
   s.H1.H = H1;
-  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2), rational(1234567, 891011)}) {
-    const TransferFunction Hk = at(k);
-    if (Hk.H != s.H0.H + RationalFunction<rational>(k) * H1)
-      throw InputError("the expression must be affine in " + name + " (H = H0 + " + name + " H1, e.g. a stiffness or a damping)");
+  // D - 1 more values where the expression is defined: with K = 0 and 1, D + 1 roots of a
+  // polynomial of degree <= D in K, so it is 0 and H = H0 + K H1 for every K (the degree bound
+  // also bounds how many values can divide by zero: at most dd of them)
+  long proven = 2, tried = 0;
+  for (long j = 2; proven < D + 1; ++j) {
+    const rational k = j % 2 == 0 ? rational(j, 3) : rational(-j, 7);  // distinct, never 0 or 1
+    ++tried;
+    try {
+      if (at(k).H != s.H0.H + RationalFunction<rational>(k) * H1)
+        throw InputError("the expression must be affine in " + name + " (H = H0 + " + name + " H1, e.g. a stiffness or a damping)");
+    } catch (const InputError& e) {
+      if (std::string(e.what()).find("division by zero") == std::string::npos || tried > D + dd + 2) throw;
+      continue;  // a pole of the expression at this k: another value
+    }
+    ++proven;
   }
   return s;
 }

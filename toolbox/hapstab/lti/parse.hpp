@@ -75,10 +75,13 @@ std::set<std::string> names_in(std::string_view text);
 TransferFunction parse_tf(std::string_view text, const ParseOptions& options = {});
 
 /// `text` as H = H0 + K H1 in its parameter `name` (a gain to maximise: `stability --max`, `bound
-/// --max`): parsed at K = 0 and K = 1, then checked equal to H0 + k H1 at k = 2, 1/3, -7/2 and
-/// 1234567/891011 (a rational function of K that is not affine in it differs at one of them
-/// unless its degree in K is above 3; the value of `name` in options.parameters is ignored).
-/// InputError when `text` does not depend on `name` or is not affine in it.
+/// --max`), PROVEN: with H = P(K, z)/Q(K, z), the numerator of H - H0 - K H1 is a polynomial in K
+/// of degree at most D = max(deg_K P, deg_K Q + 1), bounded from the parse (degree_bound); it is
+/// identically 0 when it vanishes at D + 1 distinct K: parsed at K = 0 and 1 (giving H0, H1) and
+/// checked equal to H0 + k H1 at D - 1 more values (values where the expression divides by zero
+/// are skipped; they are at most deg_K Q). The value of `name` in options.parameters is ignored.
+/// InputError when `text` does not depend on `name`, is not affine in it, or its degree bound in
+/// `name` exceeds 64 (refused by name: not proven affine).
 struct AffineSplit {
   TransferFunction H0, H1;
 };
@@ -100,6 +103,11 @@ class ParsedExpression {
   TransferFunction at(const std::map<std::string, rational>& values) const;
   /// The operations left for at() (0: the expression does not depend on the varying parameters).
   size_t operations() const;
+  /// Upper bounds of the degrees of the numerator and the denominator of the expression as a
+  /// rational function of the varying parameters (jointly), read off the operations: a name is
+  /// (1, 0), a known value (0, 0); a + b (max(na + db, nb + da), da + db); a b (na + nb, da + db);
+  /// a / b (na + db, da + nb); a^k (k na, k da), a^-k (k da, k na). Saturates at 10^6.
+  std::pair<long, long> degree_bound() const;
   struct Tape;
 
  private:

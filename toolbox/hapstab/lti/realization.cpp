@@ -100,6 +100,7 @@ Polynomial<Q> charpoly(const MQ& A) {
   // m = prod f_k^{e_k} over Q, the algebraic multiplicity of f_k is nullity(f_k(A)^{e_k}) / deg f_k
   // (exact rank), and det(xI - A) = prod f_k^{mult_k}. The
   // charpoly of the whole is what costs there (degree 254, coefficients of hundreds of digits).
+  // The minimal polynomial only proposes the factors: the nullities below prove the product.
   const long n = static_cast<long>(A.rows());
   if (n == 0) return Polynomial<Q>(Q(1));
   if (n <= 48) return flint_charpoly(A);
@@ -109,7 +110,12 @@ Polynomial<Q> charpoly(const MQ& A) {
   flint::FmpqPoly mp;
   fmpq_mat_minpoly(mp.get(), M.get());
   const Polynomial<Q> m = flint::from_flint(mp);
-  if (m.degree() == n) return m;
+  // A minimal polynomial of degree n would be the charpoly -- if it is right. FLINT 2.9's
+  // multimodular minpoly may stop at a coefficient bound that was wrong upstream until 3.4, so it is
+  // never returned as it is: proving it by nullities would take n products of n x n matrices (its
+  // factors have degrees summing to n), so the charpoly is computed instead (fraction-free,
+  // Hessenberg modulo primes under a proven Hadamard bound).
+  if (m.degree() == n) return flint_charpoly(A);
   const std::vector<IrreducibleFactor> factors = factor_over_q(m);
   if (factors.size() > 4) return flint_charpoly(A);  // many nullities cost more than the charpoly
   // Every nullity is computed, the last one too: nullity(f_k(A)^{e_k}) <= deg f_k * (algebraic

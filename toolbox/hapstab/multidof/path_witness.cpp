@@ -119,6 +119,14 @@ CVec response(const StateSpace<rational>& S, const rational& za, const rational&
 }
 
 // Re(a^* M b) for a real M
+// Exactly zero: a witness direction must not be (the strict inequalities of (14) and (16) hold only
+// at nonzero vectors; at 0 every form vanishes and "phi <= 0" proves nothing).
+bool is_zero(const CVec& v) {
+  for (Eigen::Index i = 0; i < v.re.rows(); ++i)
+    if (v.re(i, 0) != 0 || v.im(i, 0) != 0) return false;
+  return true;
+}
+
 rational re_form(const CVec& a, const MatQ& M, const CVec& b) {
   return exact_product(MatQ(a.re.transpose()), exact_product(M, b.re))(0, 0) +
          exact_product(MatQ(a.im.transpose()), exact_product(M, b.im))(0, 0);
@@ -242,6 +250,12 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
     tried = o.str() + ": the rational points of the circle hit a pole";
     return std::nullopt;
   }
+  // (iii) is strict only at [p; q] != 0: at p = 0 with u in the kernel of V-hat(z2) every term
+  // of phi vanishes, and phi = 0 <= 0 would "prove" any program infeasible
+  if (is_zero(p) && is_zero(q)) {
+    tried = o.str() + ": the rounded direction [p; V-hat(z2) u] is 0, which proves nothing";
+    return std::nullopt;
+  }
   std::ostringstream vals;
   for (size_t k = 0; k < Xk->size(); ++k) {
     const MatQ& Xq = (*Xk)[k];
@@ -291,6 +305,7 @@ std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const 
       uq.re(i, 0) = lmi::round_dyadic(u[j](i).real() / mx, 24);
       uq.im(i, 0) = lmi::round_dyadic(u[j](i).imag() / mx, 24);
     }
+    if (is_zero(uq)) continue;  // phi(z, 0) = 0: no strict inequality to contradict
     const auto [za, zb] = circle_point(theta[j]);
     CVec e;
     try {
@@ -385,6 +400,7 @@ SolvePath frequency_witness_path() {
       if (!(mx > 0)) continue;
       MatQ u(ud.size(), 1);
       for (Eigen::Index i = 0; i < ud.size(); ++i) u(i, 0) = lmi::round_dyadic(ud(i) / mx, 20);
+      if (u.isZero(0)) continue;  // (14) is strict only at u != 0: phi(z, 0) = 0 proves nothing
       const MatQ b = exact_product(Eh.B, u);
       const MatQ cx = exact_product(exact_product(MatQ(u.transpose()), px.X), Eh.C);
       const rational d = exact_product(exact_product(MatQ(u.transpose()), px.X), exact_product(Eh.D, u))(0, 0);

@@ -23,6 +23,18 @@ long exact_rank(const MatQ& A) {
   return fmpq_mat_rref(r.get(), a.get());
 }
 
+rational exact_determinant(const MatQ& A) {
+  if (A.rows() != A.cols()) throw InputError("exact_determinant: the matrix is not square");
+  if (A.rows() == 0) return rational(1);
+  flint::QMat a = flint::to_qmat(A);
+  fmpq_t d;
+  fmpq_init(d);
+  fmpq_mat_det(d, a.get());
+  const rational out = flint::to_rational(d);
+  fmpq_clear(d);
+  return out;
+}
+
 MatQ exact_solve(const MatQ& A, const MatQ& B, const std::string& what) {
   if (A.rows() != A.cols()) throw InputError(what + " is not square");
   if (A.rows() != B.rows())

@@ -20,6 +20,9 @@ MatQ exact_product(const MatQ& A, const MatQ& B);
 /// The rank of A, exact (FLINT's fraction-free reduction).
 long exact_rank(const MatQ& A);
 
+/// det A, exact (A square; FLINT's fraction-free elimination). InputError when A is not square.
+rational exact_determinant(const MatQ& A);
+
 /// The X with A X = B, exact (A square). InputError naming `what` when A is singular.
 MatQ exact_solve(const MatQ& A, const MatQ& B, const std::string& what);
 

@@ -82,7 +82,7 @@ BoundPlan plan_bound(const BoundProblem& raw) {
   const long order = std::max<long>(p.H.num().degree(), p.H.den().degree());
   plan.exact_degree = p.frac_delay ? detail::fractional_exact_degree(p)
                                    : std::max<long>(p.H.num().degree(), long(p.H.den().degree()) + p.delay);
-  const long exact_limit = p.frac_delay ? 96 : limits::model_degree;
+  const long exact_limit = p.frac_delay ? detail::fractional_exact_limit(p) : limits::model_degree;
   const bool exact_ok = plan.exact_degree <= exact_limit;
   plan.exact_seconds = exact_ok ? exact_cost(plan.exact_degree) : std::numeric_limits<double>::infinity();
   std::string why_not;
@@ -132,7 +132,7 @@ Bound bound_certified(const BoundProblem& p, int digits) {
     detail::long_delay_applies(with_integer_delay(p), &why);
     throw InputError("no path takes this case: the exact objective would have degree " +
                      std::to_string(plan.exact_degree) + ", more than the exact path's limit of " +
-                     std::to_string(p.frac_delay ? 96 : limits::model_degree) +
+                     std::to_string(p.frac_delay ? detail::fractional_exact_limit(with_integer_delay(p)) : limits::model_degree) +
                      ", and the long-delay path does not apply: " + why);
   }
   Bound b;
@@ -153,9 +153,10 @@ Bound bound_certified(const BoundProblem& p, int digits, BoundPath path) {
   const BoundProblem q = with_integer_delay(p);
   if (path == BoundPath::long_delay) return detail::certified_long_delay(q, digits);
   const BoundPlan plan = plan_bound(q);
-  if (plan.exact_degree > (q.frac_delay ? 96 : limits::model_degree))
+  const long exact_limit = q.frac_delay ? detail::fractional_exact_limit(q) : limits::model_degree;
+  if (plan.exact_degree > exact_limit)
     throw InputError("the exact objective of (45) would have degree " + std::to_string(plan.exact_degree) +
-                     ", more than the limit of " + std::to_string(q.frac_delay ? 96 : limits::model_degree) +
+                     ", more than the limit of " + std::to_string(exact_limit) +
                      " for the exact path (the long-delay path takes any delay)");
   Bound b = detail::certified_exact(q, digits);
   b.path = BoundPath::exact;

@@ -176,6 +176,11 @@ std::optional<Bound> fractional_divergence(const BoundProblem& pb);
 /// The degree of that objective, q (max(deg N, deg D) + n) + p + q (0 without a fractional delay).
 long fractional_exact_degree(const BoundProblem& pb);
 
+/// The exact path's degree limit for a fractional delay: 96 where the long-delay path applies (it is
+/// cheaper beyond), 1000 where it does not -- a pole of H at z = -1 with a fractional delay, where
+/// the exact path is the only one (t_d = 101.5 T: degree 207).
+long fractional_exact_limit(const BoundProblem& pb);
+
 /// Exact divergence test at wT = pi for a pole of W at z = -1 with e^{-j tau wT} (o: the
 /// objective of H z^-n without tau). +1: f -> +inf, -1: -> -inf, 0: finite or undecided
 /// (`decided` says which).

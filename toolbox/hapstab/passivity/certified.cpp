@@ -254,18 +254,78 @@ void constant_objective(const QPoly& A, const QPoly& B, const BoundProblem& pb, 
   out.where = "constant (every w attains it)";
 }
 
+/// The factor of B whose roots are the ends' images of z = -1 under the fractional-delay
+/// substitution: w^q = -1, i.e. c = cos((2k + 1) pi/q), the roots of T_q(c) + 1 (T_q(cos x) =
+/// cos(q x)). Its root cos(pi/q) is the domain's end; the others lie below it, outside.
+QPoly end_pole_factor(const QPoly& B, int q) {
+  const ChebyshevTables<rational> t = chebyshev_tables<rational>(q);
+  std::vector<rational> c = t.T[static_cast<size_t>(q)];
+  c[0] += 1;
+  return gcd(B, QPoly(std::move(c)));
+}
+
+/// A pole of f = A/B at the end of the domain, w = pi/T (c = end, exactly: rational for q <= 3, the
+/// root cos(pi/q) of T_q + 1 otherwise): the sign of f just INSIDE the domain (c > end) -- +1: f ->
+/// +inf there, -1: f -> -inf (the end is no candidate and the maximum lies inside), 0: no pole at
+/// the end. Only that side counts: the other one is outside [0, pi/T] (before, both sides of a
+/// rational end were looked at, and t_d = 1.5 T gave "+inf [exact]" for b* = 7.32).
+int end_pole_side(const QPoly& A, const QPoly& B, const Domain& dom) {
+  if (B.degree() <= 0) return 0;
+  if (dom.end_exact()) {
+    if (B(dom.end_lo) != 0) return 0;
+  } else {
+    const QPoly g = end_pole_factor(B, dom.q);
+    if (g.degree() <= 0 || count_real_roots(g, dom.end_lo, dom.end_hi) == 0) return 0;
+  }
+  // x > end with no root of A B in (end, x]: f has one sign there, that of f(x); for an irrational
+  // end the enclosure [end_lo, end_hi] must hold no root of A B but the pole itself
+  const QPoly ab = square_free_part(A * B);
+  if (!dom.end_exact() && count_real_roots(ab, dom.end_lo, dom.end_hi) != 1)
+    throw NumericalError("the pole of the objective at w = pi/T could not be separated from another root of its numerator");
+  rational x = dom.end_hi + (1 - dom.end_hi) / 2;
+  for (int k = 0; k < 4000 && count_real_roots(ab, dom.end_hi, x) != 0; ++k) x = dom.end_hi + (x - dom.end_hi) / 2;
+  if (count_real_roots(ab, dom.end_hi, x) != 0)
+    throw NumericalError("the side of the pole of the objective at w = pi/T could not be decided");
+  return A(x) / B(x) > 0 ? 1 : -1;
+}
+
+/// B without its root at the domain's end (end_pole_side decided that one).
+QPoly without_end_pole(const QPoly& B, const Domain& dom) {
+  const QPoly sb = square_free_part(B);
+  if (dom.end_exact()) return divmod(sb, QPoly(std::vector<rational>{-dom.end_lo, rational(1)})).first;
+  return divmod(sb, end_pole_factor(sb, dom.q)).first;
+}
+
+/// b* = +inf: f -> +inf at the end w = pi/T from inside the domain.
+template <unsigned D>
+void infinite_at_end(const BoundProblem& pb, const Domain& dom, Bound& out) {
+  out.infinite = true;
+  out.status = Status::exact;
+  out.decimal = "inf";
+  Candidate c{0, 0, dom.end_lo, dom.end_hi, dom.end_exact(), false, true};
+  out.where = "pole at z = -1 (w = pi/T): Re -> +inf";
+  omega_of<D>(c, pb.T, dom.q, 17, out);
+}
+
 /// True (and `out` set to b* = +inf) when f = A/B has a pole in the domain near which f -> +inf.
+/// `end_pole` is end_pole_side's answer: a pole at the end is decided there, not here.
 template <unsigned D>
 bool pole_to_plus_infinity(const QPoly& A, const QPoly& B, const BoundProblem& pb, int digits, const Domain& dom,
-                           Bound& out) {
+                           int end_pole, Bound& out) {
   const rational one(1), mone = dom.end_lo;
+  if (end_pole > 0) {
+    infinite_at_end<D>(pb, dom, out);
+    return true;
+  }
   // poles of f on [-1, 1]: only possible when H has a pole on the unit circle (B = |D z^n|^2 > 0
   // otherwise), i.e. when gcd(D, z^deg D D(1/z)) is non-trivial -- skips a root isolation
   const bool circle_poles = gcd(pb.H.den(), reversed(pb.H.den())).degree() > 0;
   if (!circle_poles || B.degree() <= 0) return false;
-  for (auto r : isolate_real_roots(B, mone, one)) {
+  const QPoly Bin = end_pole != 0 ? without_end_pole(B, dom) : square_free_part(B);
+  if (Bin.degree() <= 0) return false;
+  for (auto r : isolate_real_roots(Bin, mone, one)) {
     if (!dom.end_exact()) {  // a pole near the irrational end cos(pi/q): inside or outside?
-      if (r.lo < dom.end_hi) r = refine_root(square_free_part(B), r, (dom.end_hi - dom.end_lo) / 4);
+      if (r.lo < dom.end_hi) r = refine_root(Bin, r, (dom.end_hi - dom.end_lo) / 4);
       if (r.hi <= dom.end_lo) continue;
       if (r.lo < dom.end_hi)
         throw NumericalError("a pole of the objective at w = pi/T could not be placed inside or outside [0, pi/T]");
@@ -286,14 +346,16 @@ bool pole_to_plus_infinity(const QPoly& A, const QPoly& B, const BoundProblem& p
 }
 
 /// The values at the ends of the domain: w = 0 (c = 1) and w = pi/T (c = c_end).
+/// (`end_pole` != 0: f has a pole at w = pi/T; it goes to -inf there, so that end is no candidate.)
 template <unsigned D>
-std::vector<Candidate> end_candidates(const QPoly& A, const QPoly& B, const Domain& dom) {
+std::vector<Candidate> end_candidates(const QPoly& A, const QPoly& B, const Domain& dom, int end_pole) {
   const rational one(1), mone = dom.end_lo;
   std::vector<Candidate> cands;
   if (B(one) != 0) {
     rational v = A(one) / B(one);
     cands.push_back({v, v, one, one, true, true, false});
   }
+  if (end_pole != 0) return cands;
   if (dom.end_exact() && B(mone) != 0) {
     rational v = A(mone) / B(mone);
     cands.push_back({v, v, mone, mone, true, false, true});
@@ -313,7 +375,7 @@ std::vector<Candidate> end_candidates(const QPoly& A, const QPoly& B, const Doma
 /// false when precision D was not enough for one of them.
 template <unsigned D>
 bool add_critical_candidates(const QPoly& A, const QPoly& B, const QPoly& Pd, int digits, const Domain& dom,
-                             std::vector<Candidate>& cands) {
+                             int end_pole, std::vector<Candidate>& cands) {
   const rational one(1), mone = dom.end_lo;
   // a critical point that may lie just outside an irrational end only widens the upper end of the
   // enclosure (its value differs from the end's by ~f'' (end_hi - end_lo)^2): its lower end is the end's
@@ -330,6 +392,8 @@ bool add_critical_candidates(const QPoly& A, const QPoly& B, const QPoly& Pd, in
       r = refine_root(q, r, (dom.end_hi - dom.end_lo) / 4);
       if (r.hi <= dom.end_lo) continue;
       straddles = r.lo < dom.end_hi;
+      if (straddles && (end_pole != 0 || cands.empty()))  // no end value to fall back on
+        throw NumericalError("a critical point of the objective at w = pi/T could not be placed inside or outside [0, pi/T]");
     }
     if (r.is_exact()) {
       if (r.lo == 1 || r.lo == dom.end_lo) continue;  // the endpoint value is already a candidate
@@ -390,9 +454,10 @@ bool certified_rational(const QRatFun& f, const BoundProblem& pb, int digits, Bo
     constant_objective(A, B, pb, digits, out);
     return true;
   }
-  if (pole_to_plus_infinity<D>(A, B, pb, digits, dom, out)) return true;
-  std::vector<Candidate> cands = end_candidates<D>(A, B, dom);
-  if (!add_critical_candidates<D>(A, B, Pd, digits, dom, cands)) return false;
+  const int end_pole = end_pole_side(A, B, dom);
+  if (pole_to_plus_infinity<D>(A, B, pb, digits, dom, end_pole, out)) return true;
+  std::vector<Candidate> cands = end_candidates<D>(A, B, dom, end_pole);
+  if (!add_critical_candidates<D>(A, B, Pd, digits, dom, end_pole, cands)) return false;
   if (cands.empty()) throw NumericalError("no candidate for the maximum (f -> -inf everywhere?)");
   maximum_of<D>(cands, pb, digits, dom, out);
   return true;
@@ -423,7 +488,7 @@ std::optional<Bound> integrator_pole(const BoundProblem& p) {
 Bound certified_exact(const BoundProblem& q, int digits) {
   if (q.frac_delay) {
     Bound b;
-    if (!certified_fractional_exact(q, digits, 96, b))
+    if (!certified_fractional_exact(q, digits, static_cast<int>(fractional_exact_limit(q)), b))
       throw NumericalError("could not decide " + std::to_string(digits) + " digits of the bound by the exact path");
     return b;
   }

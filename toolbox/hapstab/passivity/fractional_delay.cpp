@@ -100,9 +100,9 @@ template <unsigned D>
 std::optional<FracExact> frac_exact_problem(const BoundProblem& pb, int max_degree) {
   if (!pb.frac_delay) return std::nullopt;
   const rational tau = *pb.frac_delay / pb.T;
-  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();
-  const long degree = q * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + p + q;
-  if (q < 2 || degree > max_degree) return std::nullopt;
+  const long degree = fractional_exact_degree(pb);
+  if (den(tau) < 2 || degree > max_degree) return std::nullopt;
+  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();  // both <= degree
   auto spread = [q](const QPoly& a) {  // a(w^q)
     std::vector<rational> c(static_cast<size_t>(a.degree() * q + 1), rational(0));
     for (int k = 0; k <= a.degree(); ++k) c[static_cast<size_t>(k * q)] = a.coeffs()[static_cast<size_t>(k)];
@@ -181,9 +181,14 @@ std::optional<Bound> fractional_divergence(const BoundProblem& pb) {
 long fractional_exact_degree(const BoundProblem& pb) {
   if (!pb.frac_delay) return 0;
   const rational tau = *pb.frac_delay / pb.T;
-  const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();
-  return q * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + p + q;
+  // in integers: t_d = 10^-25 s makes q = 10^22, beyond a long (converted, it saturated, and the
+  // product overflowed)
+  const integer d = den(tau) * (std::max(pb.H.den().degree(), pb.H.num().degree()) + pb.delay) + num(tau) + den(tau);
+  const integer cap(std::numeric_limits<long>::max());
+  return (d > cap ? cap : d).convert_to<long>();
 }
+
+long fractional_exact_limit(const BoundProblem& pb) { return long_delay_applies(pb, nullptr) ? 96 : 1000; }
 
 bool certified_fractional_exact(const BoundProblem& pb, int digits, int max_degree, Bound& out) {
   if (auto inf = fractional_divergence(pb)) {

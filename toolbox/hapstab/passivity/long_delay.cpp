@@ -185,18 +185,30 @@ std::vector<Peak> double_peaks(const DelayForm& df, long M, size_t keep) {
   for (long i : local)
     if (v[static_cast<size_t>(i)] >= top - margin)
       polish(h * static_cast<double>(i), h * static_cast<double>(i - 1), std::min(pi, h * static_cast<double>(i + 1)));
-  // narrow resonances of H (minima of B(c), its critical points) may fall between samples
-  if (df.B.degree() >= 2)
-    for (const auto& r : isolate_real_roots(df.B.derivative(), rational(-1), rational(1))) {
+  // narrow resonances of H (minima of B(c), its critical points) may fall between samples: around
+  // each, samples at the grid's scale and at the resonance's own, its half-width in theta
+  // w = sqrt(2 B(c0)/B''(c0)) / sin(theta0) (B doubles there), which a pole at radius 1 - 1e-5
+  // makes ~1e-5 rad against the grid's pi/(4 nu + 64) (delay 200, before: 0.70 for b* = 25.8)
+  if (df.B.degree() >= 2) {
+    const QPoly dB = df.B.derivative(), ddB = dB.derivative();
+    for (auto r : isolate_real_roots(dB, rational(-1), rational(1))) {
+      // an isolating interval can be wide: the centre of the resonance to double precision first
+      if (!r.is_exact()) r = refine_root(dB, r, rational(1, 1000000000000000LL));
       const double c = to_real<double>((r.lo + r.hi) / 2), th = std::acos(std::clamp(c, -1.0, 1.0));
+      const double b0 = to_real<double>(df.B(exact_rational(c))), b2 = to_real<double>(ddB(exact_rational(c)));
+      const double width = b2 > 0 && b0 >= 0 ? std::sqrt(2 * b0 / b2) / std::max(std::sin(th), 1e-8) : h;
       double at = th, val = -std::numeric_limits<double>::infinity();
-      for (int k = -16; k <= 16; ++k) {
-        const double x = std::clamp(th + k * h / 8, 0.0, pi);
-        const double fx = objective_jet(F, x).v;
-        if (fx > val) val = fx, at = x;
+      for (const double step : {h / 8, std::min(h, width) / 8}) {
+        for (int k = -32; k <= 32; ++k) {
+          const double x = std::clamp(th + k * step, 0.0, pi);
+          const double fx = objective_jet(F, x).v;
+          if (fx > val) val = fx, at = x;
+        }
       }
-      polish(at, std::max(0.0, at - h), std::min(pi, at + h));
+      const double reach = std::min(h, width) / 8;
+      polish(at, std::max(0.0, at - reach), std::min(pi, at + reach));
     }
+  }
   std::sort(peaks.begin(), peaks.end(), [](const Peak& a, const Peak& b) { return a.value > b.value; });
   if (peaks.size() > keep) peaks.resize(keep);
   return peaks;

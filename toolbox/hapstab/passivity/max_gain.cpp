@@ -3,6 +3,7 @@
 // of Secs. VI-VII solved for the parameter.
 #include "hapstab/passivity/max_gain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -109,7 +110,10 @@ double estimate(const BoundProblem& q0, const BoundProblem& q1, double bp, doubl
     const double f1 = objective_at(q1, w);
     return f1 > 0 ? (bp - objective_at(q0, w)) / f1 : std::numeric_limits<double>::infinity();
   };
-  const int N = 4096;
+  // eight points per period 2 pi/nu of the delay's kernels (a delay of 1000 samples oscillates
+  // 500 times over [0, pi/T]), at least 4096
+  const rational nu = rational(q0.delay) + (q0.frac_delay ? *q0.frac_delay / q0.T : rational(0));
+  const int N = static_cast<int>(std::clamp(8 * to_real<double>(nu), 4096.0, 1048576.0));
   int best = 0;
   double vbest = phi(0);
   for (int k = 1; k <= N; ++k) {
@@ -130,7 +134,8 @@ double estimate(const BoundProblem& q0, const BoundProblem& q1, double bp, doubl
 
 /// K_max bracketed by certified b* (at most 20 digits of b*, the branch-and-bound's): L with
 /// b*(L) < b proven (so [0, L] is passive, b* being convex) and U with b*(U) >= b proven, around
-/// the double estimate.
+/// the double estimate. Each b* takes the path its planner chooses (the long-delay path for a
+/// delay of 1000 samples), so the bracket is what a long delay costs: ~30 certified b*.
 void bracket(const GainProblem& p, const BoundProblem& q0, const BoundProblem& q1, int digits, MaxGain& m) {
   double omega = 0;
   BoundProblem e0 = q0, e1 = q1;
@@ -212,6 +217,15 @@ MaxGain max_gain(const GainProblem& p, int digits) {
   }
   const BoundProblem q0 = with_integer_delay(p.base), q1 = with_integer_delay(p1);
   const rational bp = p.b - q0.eta;
+  // psi has the degree of the delayed objective: where b* itself takes the long-delay path (a delay
+  // of hundreds of samples), psi's exact maximisation would not end in minutes -- bracket instead
+  if (plan_bound(at_gain(p, 1)).path == BoundPath::long_delay) {
+    bracket(p, q0, q1, digits, m);
+    set_decimal(m, digits);
+    m.note = "a long delay: " + p.name + "_max bracketed by certified b* on the long-delay path" +
+             (digits > m.digits ? " (" + std::to_string(digits) + " digits asked, about 17 given)" : std::string());
+    return m;
+  }
   // 1: decided; 0: precision D not enough; -1: t_d's change of variable does not apply
   auto attempt = [&](auto precision) -> int {
     constexpr unsigned D = decltype(precision)::value;

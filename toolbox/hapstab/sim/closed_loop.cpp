@@ -45,30 +45,52 @@ void nilpotent_zoh(const MatQ& A, const MatQ& B, const rational& h, MatQ& Phi, M
 }  // namespace
 
 namespace {
-// The removed plant modes (closed_loop.hpp): s^k q(s) with q(0) != 0; conserved quantities when k
-// equals the nullity of A_u (semisimple zero) and q is Hurwitz.
-void classify_removed(const MatQ& Au, SampledClosedLoop& out) {
-  const Eigen::Index nu = Au.rows();
-  if (nu == 0) return;
-  Polynomial<rational> p = charpoly(Au);
-  long k = 0;
-  while (p.degree() > 0 && p.coeff(0) == 0) {
-    p = divmod(p, Polynomial<rational>(std::vector<rational>{rational(0), rational(1)})).first;
-    ++k;
-  }
-  const bool semisimple = k == 0 || exact_rank(Au) == nu - k;
-  const bool rest_stable = p.degree() < 1 || hurwitz_stable(p);
+// The removed plant modes (closed_loop.hpp): s^k q(s) with q(0) != 0 for each removed block (no
+// force reaches it; no sampled position shows it); conserved quantities when k equals the nullity
+// of the block (semisimple zero) and q is Hurwitz. Zeros in BOTH blocks are not decided: an
+// unreached constant can drive the loop to a constant that an unshown integrator then integrates
+// (a Jordan chain through the rest), or not.
+void classify_removed(const MatQ& Au, const MatQ& Ao, SampledClosedLoop& out) {
+  struct Part {
+    long n = 0, k = 0, degree = 0;
+    bool semisimple = true, rest_stable = true;
+  };
+  auto part = [](const MatQ& M) {
+    Part r;
+    r.n = M.rows();
+    if (r.n == 0) return r;
+    Polynomial<rational> p = charpoly(M);
+    while (p.degree() > 0 && p.coeff(0) == 0) {
+      p = divmod(p, Polynomial<rational>(std::vector<rational>{rational(0), rational(1)})).first;
+      ++r.k;
+    }
+    r.semisimple = r.k == 0 || exact_rank(M) == r.n - r.k;
+    r.rest_stable = p.degree() < 1 || hurwitz_stable(p);
+    r.degree = p.degree();
+    return r;
+  };
+  const Part u = part(Au), o = part(Ao);
+  if (u.n + o.n == 0) return;
+  const long k = u.k + o.k, rest = u.degree + o.degree;
+  const bool semisimple = u.semisimple && o.semisimple, rest_stable = u.rest_stable && o.rest_stable;
   out.conserved = semisimple ? k : 0;
   out.removed_unstable = !semisimple || !rest_stable;
-  std::ostringstream o;
-  o << nu << " plant mode(s) no force reaches (exact Kalman split of the composed plant)";
+  out.removed_undecided = !out.removed_unstable && u.k > 0 && o.k > 0;
+  if (out.removed_undecided) out.conserved = 0;
+  std::ostringstream o_;
+  o_ << u.n + o.n << " plant mode(s) no force reaches or no sampled position shows (exact Kalman splits of the composed plant)";
   if (k > 0)
-    o << (semisimple ? ": " + std::to_string(k) + " conserved quantit" + (k == 1 ? "y" : "ies") +
-                           " at s = 0 (a position and an operator's spring deflection integrate the same velocity: their "
-                           "difference keeps its initial value, so the loop settles to the equilibrium it selects)"
-                     : ": s = 0 with a Jordan block (a quantity no force reaches grows linearly)");
-  if (p.degree() > 0) o << (rest_stable ? "; the other " : "; NOT all of the other ") << p.degree() << (rest_stable ? " in Re s < 0 (exact Routh)" : " in Re s < 0 (exact Routh)");
-  out.removed = o.str();
+    o_ << (out.removed_undecided
+               ? ": " + std::to_string(u.k) + " at s = 0 that no force reaches and " + std::to_string(o.k) +
+                     " that no position shows: whether they chain through the loop (an unreached constant integrated by an "
+                     "unshown integrator) is not decided"
+           : semisimple ? ": " + std::to_string(k) + " conserved quantit" + (k == 1 ? "y" : "ies") +
+                              " at s = 0 (a position and an operator's spring deflection integrate the same velocity, or a "
+                              "device's own position no output shows: they keep or settle to a constant, so the loop settles "
+                              "to the equilibrium they select)"
+                        : ": s = 0 with a Jordan block (a quantity no force reaches, or no output shows, grows linearly)");
+  if (rest > 0) o_ << (rest_stable ? "; the other " : "; NOT all of the other ") << rest << " in Re s < 0 (exact Routh)";
+  out.removed = o_.str();
 }
 }  // namespace
 
@@ -136,10 +158,18 @@ SampledClosedLoop sampled_closed_loop(const LoopSpec& spec) {
   // the part of the plant the forces [u, w] reach, and what is removed (closed_loop.hpp)
   const StateSpace<rational> positions{L.plant.A, L.plant.B, MatQ(L.plant.C.topRows(N)), MatQ::Zero(N, 2 * N), 0};
   const KalmanSplit ks = controllable_split(positions);
-  classify_removed(ks.uncontrollable_A, out);
-  const MatQ& A = ks.controllable.A;
-  const MatQ Bu = ks.controllable.B.leftCols(N);
-  const MatQ Cx = ks.controllable.C;
+  // then the part the sampled positions show (the dual split): a device's own position state
+  // behind its velocity output is integrated again by the composition, and no sampled output shows
+  // it -- removed and classified like the modes no force reaches (the block's hidden-mode check
+  // names it, sim/hidden_modes.hpp)
+  const StateSpace<rational>& c = ks.controllable;
+  const KalmanSplit ko = controllable_split(
+      StateSpace<rational>{MatQ(c.A.transpose()), MatQ(c.C.transpose()), MatQ(c.B.transpose()), MatQ(c.D.transpose()), 0});
+  classify_removed(ks.uncontrollable_A, MatQ(ko.uncontrollable_A.transpose()), out);
+  const MatQ A = ko.controllable.A.transpose();
+  const MatQ Bplant = ko.controllable.C.transpose();  // [B_u, B_w] of the observable part
+  const MatQ Bu = Bplant.leftCols(N);
+  const MatQ Cx = ko.controllable.B.transpose();
   const auto& K = L.controller;
   const Eigen::Index ns = A.rows(), nc = K.A.rows();
   const long slots = n + (f > 0 ? 1 : 0);
@@ -193,7 +223,7 @@ SampledClosedLoop sampled_closed_loop(const LoopSpec& spec) {
   out.f = f;
   out.T = T;
   out.jump = MatQ::Zero(nx, N);
-  out.jump.topRows(ns) = ks.controllable.B.rightCols(N);
+  out.jump.topRows(ns) = Bplant.rightCols(N);
   out.positions = MatQ::Zero(N, nx);
   out.positions.leftCols(ns) = Cx;
   // The same exactly when every piece is rational

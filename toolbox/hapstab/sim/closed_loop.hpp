@@ -22,8 +22,10 @@
 // 2x2 hand of examples/000_two_dof_loop.toml has one). It is not a hidden mode of any block, and
 // it neither grows nor decays: the loop settles to the equilibrium that difference selects. So the
 // plant is first reduced, exactly, to the part the forces [u, w] reach (lti::controllable_split);
-// the removed modes are classified exactly: s = 0 semisimple (conserved quantities, reported),
-// Re s < 0 (harmless), anything else makes the loop NOT stable. M is built on the reduced plant.
+// then to the part the sampled positions show (the dual split: a device's own position state behind
+// its velocity output); the removed modes are classified exactly: s = 0 semisimple (conserved
+// quantities, reported), Re s < 0 (harmless), anything else makes the loop NOT stable; zeros in
+// both removed parts are not decided (removed_undecided). M is built on the reduced plant.
 //
 // Contact, encoders, Coulomb friction and the passivity controller are not linear: the loop is
 // then not one matrix and sampled_closed_loop refuses it (InputError naming the part).
@@ -54,6 +56,7 @@ struct SampledClosedLoop {
   /// NOT stable, exactly), and the account in words ("" when nothing was removed).
   long conserved = 0;
   bool removed_unstable = false;
+  bool removed_undecided = false;  ///< zeros no force reaches AND zeros no output shows: not decided
   std::string removed;
   /// The exact data M is assembled from, for an enclosure at another precision or of a family
   /// M(p) (stability/loop_max.hpp): the reduced plant (A, B_u), the controller's rows

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/poly/stability.hpp"
 
 namespace hapstab::sim {
@@ -15,10 +16,13 @@ namespace {
 // factor is not exactly stable and its enclosure does not certify it inside (|z| < 1, Re s < 0),
 // so an unstable factor always names at least one root (the enclosures are certified).
 void add_factor(const Polynomial<rational>& p, const std::string& block, const std::string& kind, bool discrete,
-                std::vector<HiddenMode>& out) {
+                bool marginal_semisimple, std::vector<HiddenMode>& out) {
   if (p.degree() < 1) return;
+  const rational marginal = discrete ? 1 : 0;  // z = 1, s = 0
   for (const IrreducibleFactor& F : factor_over_q(p)) {
-    const bool stable = discrete ? schur_stable(F.f) : hurwitz_stable(F.f);
+    const bool at_marginal = F.f.degree() == 1 && F.f(marginal) == 0;
+    const bool settles = at_marginal && marginal_semisimple;
+    const bool stable = settles || (discrete ? schur_stable(F.f) : hurwitz_stable(F.f));
     for (RootEnclosure& r : enclose_roots(F.f)) {
       if (r.im_hi < 0) continue;  // the conjugate of a root listed as a pair (p is real)
       r.multiplicity = F.multiplicity;
@@ -29,6 +33,7 @@ void add_factor(const Polynomial<rational>& p, const std::string& block, const s
       h.discrete = discrete;
       h.where = r;
       h.stable = stable || (discrete ? r.abs_hi < 1 : r.re_hi < 0);
+      h.settles = settles;
       out.push_back(h);
     }
   }
@@ -40,7 +45,10 @@ std::string HiddenMode::text() const {
   std::ostringstream o;
   o.precision(6);
   o << block << ": " << kind << (pair ? " modes " : " mode ") << where.text(discrete ? "z" : "s", pair);
-  if (discrete)
+  if (settles)
+    o << " (semisimple in the block's A: it neither grows nor decays, a conserved quantity that settles as the loop "
+         "decays)";
+  else if (discrete)
     o << " (|z| in [" << decimal_outward(rational(where.abs_lo), 6, -1) << ", " << decimal_outward(rational(where.abs_hi), 6, +1)
       << "]" << (stable ? ", inside the unit circle)" : ": not inside the unit circle)");
   else
@@ -56,25 +64,50 @@ bool LoopHiddenModes::stable() const {
 
 std::string LoopHiddenModes::summary() const {
   if (modes.empty()) return "";
-  std::string bad, good;
+  std::string bad, good, kept;
   int n_good = 0;
   for (const auto& h : modes) {
     if (!h.stable)
       bad += (bad.empty() ? "" : "; ") + h.text();
+    else if (h.settles)  // always named: the verdict says what it is about
+      kept += (kept.empty() ? "" : "; ") + h.text();
     else if (++n_good <= 6)
       good += (good.empty() ? "" : "; ") + h.text();
   }
   if (!bad.empty()) return "unstable hidden mode(s), exact: " + bad;
-  return "stable hidden modes (exact; they do not move in any loop): " + good +
+  std::string s;
+  if (!kept.empty()) s = "conserved hidden mode(s) at z = 1 / s = 0, exact: " + kept;
+  if (!good.empty())
+    s += (s.empty() ? "" : "; ") + std::string("stable hidden modes (exact; they do not move in any loop): ") + good +
          (n_good > 6 ? "; and " + std::to_string(n_good - 6) + " more" : "");
+  return s;
 }
 
-std::vector<HiddenMode> block_hidden_modes(const HiddenModes& h, bool discrete, const std::string& name) {
+std::vector<HiddenMode> block_hidden_modes(const HiddenModes& h, bool discrete, const std::string& name,
+                                           bool marginal_semisimple) {
   std::vector<HiddenMode> out;
-  add_factor(h.uncontrollable, name, "uncontrollable", discrete, out);
-  add_factor(h.unobservable, name, "unobservable", discrete, out);
+  add_factor(h.uncontrollable, name, "uncontrollable", discrete, marginal_semisimple, out);
+  add_factor(h.unobservable, name, "unobservable", discrete, marginal_semisimple, out);
   return out;
 }
+
+namespace {
+// A's eigenvalue z = 1 (s = 0) is semisimple: its algebraic multiplicity (in det(xI - A)) equals
+// its geometric one (the nullity of A - lambda I), exactly. (No such eigenvalue: vacuously true.)
+bool marginal_semisimple(const StateSpace<rational>& s) {
+  const rational lambda = s.is_discrete() ? 1 : 0;
+  Polynomial<rational> p = charpoly(s.A);
+  const Polynomial<rational> lin(std::vector<rational>{-lambda, rational(1)});
+  long alg = 0;
+  while (p.degree() > 0 && p(lambda) == 0) {
+    p = divmod(p, lin).first;
+    ++alg;
+  }
+  if (alg == 0) return true;
+  const MatQ shifted = s.A - MatQ::Identity(s.A.rows(), s.A.cols()) * lambda;
+  return s.A.rows() - exact_rank(shifted) == alg;
+}
+}  // namespace
 
 LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environment) {
   LoopHiddenModes r;
@@ -82,7 +115,10 @@ LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environmen
                  std::optional<StateSpace<rational>>* minimal = nullptr) {
     if (s.states() == 0) return;
     const HiddenModes h = known ? *known : hapstab::hidden_modes(s);
-    for (auto& m : block_hidden_modes(h, s.is_discrete(), name)) r.modes.push_back(std::move(m));
+    const bool marginal = (s.is_discrete() ? h.uncontrollable(rational(1)) == 0 || h.unobservable(rational(1)) == 0
+                                           : h.uncontrollable(rational(0)) == 0 || h.unobservable(rational(0)) == 0) &&
+                          marginal_semisimple(s);
+    for (auto& m : block_hidden_modes(h, s.is_discrete(), name, marginal)) r.modes.push_back(std::move(m));
     if (minimal && h.any()) *minimal = h.minimal;
   };
   for (const auto& d : spec.devices) add(d.G, "device '" + d.name + "'");

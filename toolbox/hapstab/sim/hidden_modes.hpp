@@ -10,7 +10,10 @@
 //               zero-order hold such a mode has |e^{sT}| >= 1),
 // whatever a reduced model of the loop says -- and the sampled outputs may stay at rest (an
 // uncontrollable mode with zero initial state). A hidden mode inside the stability region is
-// harmless to stability and is reported once. Each mode is named by its block, its kind and a
+// harmless to stability and is reported once. So is a hidden mode exactly at z = 1 (s = 0) that is
+// semisimple in the block's A (a device's own position state behind a velocity output): like the
+// conserved quantities of sim/closed_loop.hpp it neither grows nor decays, and it is named so --
+// the same physics written as m, b or as ss gets one verdict. Each mode is named by its block, its kind and a
 // certified enclosure of where it is (poly/roots.hpp). lti::hidden_modes does the exact Kalman
 // decompositions.
 //
@@ -35,7 +38,11 @@ struct HiddenMode {
   bool discrete = true;
   RootEnclosure where;  ///< z (discrete) or s (continuous), certified; the one with Im > 0 of a pair
   bool pair = false;    ///< a complex pair: `where` and its conjugate
-  bool stable = true;   ///< |z| < 1 or Re s < 0 (decided exactly for the block's hidden factor)
+  bool stable = true;   ///< |z| < 1 or Re s < 0 (decided exactly for the block's hidden factor), or `settles`
+  /// Exactly at z = 1 (s = 0) and semisimple in the block's A: it neither grows nor decays; driven
+  /// by the loop's decaying signals (or by none) it settles to a constant. Counted as the plant's
+  /// conserved quantities are (sim/closed_loop.hpp), wherever it is written, and named as such.
+  bool settles = false;
   std::string text() const;  ///< "environment: unobservable mode z = 2 (|z| >= 1)"
 };
 
@@ -52,7 +59,10 @@ struct LoopHiddenModes {
 };
 
 /// The hidden modes of one block (`name` as above), from its Kalman decompositions (lti).
-std::vector<HiddenMode> block_hidden_modes(const HiddenModes& decomposed, bool discrete, const std::string& name);
+/// `marginal_semisimple`: the block's A has its eigenvalue z = 1 (s = 0) semisimple (then a hidden
+/// mode exactly there settles).
+std::vector<HiddenMode> block_hidden_modes(const HiddenModes& decomposed, bool discrete, const std::string& name,
+                                           bool marginal_semisimple = false);
 
 /// Every block of the loop: devices, operators, environment, coupling. `environment`, when given,
 /// is the environment's decomposition already computed (lti::hidden_modes of spec.environment).

@@ -1,6 +1,7 @@
 // The loop as written, decided (see loop_as_written.hpp).
 #include "hapstab/stability/loop_as_written.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "hapstab/lti/realization.hpp"
@@ -68,9 +69,20 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
     << "]: the one-DOF sampled loop (device, operator, ZOH, " << (L.coupling ? "E/(1 + E V)" : "E")
     << (loop.delay ? ", delay z^-" + std::to_string(loop.delay) : std::string()) << ")";
   if (r.spectral_radius) {
+    // the loop as written's: the reduced loop's and every hidden mode's (they are eigenvalues of
+    // it too): a hidden mode at 1 - 1e-30 is the radius, not the reduced loop's 0.96
+    double lo = to_real<double>(r.spectral_radius->lo), hi = to_real<double>(r.spectral_radius->hi);
+    const double T = to_real<double>(L.T);
+    for (const auto& h : out.hidden.modes) {
+      if (h.settles) continue;  // set aside, like the plant's conserved quantities (named below)
+      const double a = h.discrete ? h.where.abs_lo : std::exp(h.where.re_lo * T), b = h.discrete ? h.where.abs_hi : std::exp(h.where.re_hi * T);
+      lo = std::max(lo, std::nextafter(a, 0.0));
+      hi = std::max(hi, std::nextafter(b, INFINITY));
+    }
     o.precision(6);
-    o << ", spectral radius in [" << to_real<double>(r.spectral_radius->lo) << ", " << to_real<double>(r.spectral_radius->hi) << "]";
-    out.spectral_radius = to_real<double>(r.spectral_radius->hi);
+    o << ", spectral radius " << (out.hidden.modes.empty() ? "" : "of the loop as written (its decaying hidden modes included) ") << "in ["
+      << lo << ", " << hi << "]";
+    out.spectral_radius = hi;
   }
   out.why = o.str() + hidden;
   return out;
@@ -81,6 +93,11 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
 LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out, const std::string& reduced) {
   const sim::SampledClosedLoop cl = sim::sampled_closed_loop(L);
   out.states = static_cast<long>(cl.M.rows());
+  if (cl.removed_undecided) {
+    out.method = "closed-loop matrix, exact Kalman splits of the plant";
+    out.why = "undecided: " + cl.removed;
+    return out;
+  }
   if (cl.removed_unstable) {
     out.stable = false;
     out.status = Status::exact;

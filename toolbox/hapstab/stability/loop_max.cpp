@@ -39,7 +39,7 @@ bool equal(const MatQ& a, const MatQ& b) {
   return true;
 }
 
-std::string num(double x, int digits = 6) {
+std::string format_double(double x, int digits = 6) {
   std::ostringstream o;
   o.precision(digits);
   o << x;
@@ -303,6 +303,28 @@ Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
     for (double& ri : r) ri *= 16;
   }
   return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
+}
+
+// An Arb ball matrix as numeric/ball_matrix.hpp's double BallMatrix: double midpoints, the rounding
+// added to the radius (outward).
+BallMatrix double_ball_matrix(const BallMat& S) {
+  const long n = S.rows();
+  BallMatrix Mb(n, S.cols());
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < S.cols(); ++j) {
+      const arb_struct* x = arb_mat_entry(S.get(), i, j);
+      const double m = arf_get_d(arb_midref(x), ARF_RND_NEAR);
+      Ball e;
+      arb_set_d(e.get(), m);
+      arb_sub(e.get(), e.get(), x, 128);
+      mag_t t;
+      mag_init(t);
+      arb_get_mag(t, e.get());
+      Mb.mid(i, j) = m;
+      Mb.rad(i, j) = std::nextafter(mag_get_d(t), INFINITY);
+      mag_clear(t);
+    }
+  return Mb;
 }
 
 // ---- step 3: eigenvalue enclosures over intervals of p (Rump's test in Arb) ----
@@ -576,22 +598,7 @@ struct Cover {
       BallMat S(n, n);
       arb_mat_scalar_mul_arb(S.get(), M1.get(), k_.get(), 128);
       arb_mat_add(S.get(), S.get(), M0.get(), 128);
-      BallMatrix Mb(n, n);
-      for (long i = 0; i < n; ++i)
-        for (long j = 0; j < n; ++j) {  // double midpoints, the rounding added to the radius (outward)
-          const arb_struct* x = arb_mat_entry(S.get(), i, j);
-          const double m = arf_get_d(arb_midref(x), ARF_RND_NEAR);
-          Ball e;
-          arb_set_d(e.get(), m);
-          arb_sub(e.get(), e.get(), x, 128);
-          mag_t t;
-          mag_init(t);
-          arb_get_mag(t, e.get());
-          Mb.mid(i, j) = m;
-          Mb.rad(i, j) = std::nextafter(mag_get_d(t), INFINITY);
-          mag_clear(t);
-        }
-      const SchurDecision d = schur_decide(Mb);
+      const SchurDecision d = schur_decide(double_ball_matrix(S));
       if (d.stable && *d.stable) return w;
     }
     return 0;
@@ -785,33 +792,36 @@ LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& 
   return F;
 }
 
-LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits) {
-  if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60] for a multi-DOF --max, got " + std::to_string(digits));
-  const LoopFamily F = loop_family(at, reference, name);
-  LoopMax out;
-  out.T = F.T;
-  out.states = order(F);
-  out.fixed_modes = F.fixed.rows();
-  if (F.fixed.rows() > 0 && !schur_stable(charpoly(F.fixed))) {
-    out.outcome = Outcome::fails;
-    out.status = Status::exact;
-    out.note = "NOT stable for any " + name + " [exact]: " + std::to_string(F.fixed.rows()) +
-               " mode(s) of the controller that no " + name + " moves (a block's hidden modes) are not all inside the unit circle";
-    return out;
-  }
-  const ArbFamily base = arb_family(F, 128);
-  const Eigen::MatrixXd M0d = mid(*base.M0), M1d = mid(*base.M1);
-  auto rho = [&](double p) {
-    Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + p * M1d, false);
+// ---- max_parameter's steps (loop_max.hpp) ----
+namespace {
+
+/// Step 1's findings: the first crossing, located in double.
+struct Isolated {
+  double pstar = 0;
+  std::complex<double> lambda;  // the eigenvalue crossing the circle (Im >= 0)
+  Eigen::VectorXcd v;           // its eigenvector
+  bool complex = false;
+  double stable_grid = 0, below = 0;  // a grid point of the first stable run; the last one below the crossing
+};
+
+/// The spectral radius of M0 + p M1 in double (numeric: step 1 only locates).
+struct Spectrum {
+  Eigen::MatrixXd M0, M1;
+  double rho(double p) const {
+    Eigen::EigenSolver<Eigen::MatrixXd> es(M0 + p * M1, false);
     return es.eigenvalues().cwiseAbs().maxCoeff();
-  };
-  // step 1: isolation on a geometric grid, then bisection (numeric)
-  const double ref = static_cast<double>(reference);
+  }
+};
+
+/// Step 1: the spectral radius on a geometric grid reference 10^-6 .. 10^6, the first stable run
+/// and the first point past it where it is >= 1, bisection between them. nullopt (note set): no
+/// stable run, or no crossing.
+std::optional<Isolated> isolate(const Spectrum& sp, double ref, const std::string& name, LoopMax& out) {
   const int G = 300;
   auto grid = [&](int k) { return ref * std::pow(10.0, -6.0 + 12.0 * k / G); };
   int ks = -1, ku = -1;
   for (int k = 0; k <= G; ++k) {
-    const double r = rho(grid(k));
+    const double r = sp.rho(grid(k));
     if (ks < 0 && r < 1 - 1e-12) ks = k;
     if (ks >= 0 && r >= 1) {
       ku = k;
@@ -819,84 +829,81 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     }
   }
   if (ks < 0) {
-    out.note = "no " + name + " in [" + num(grid(0)) + ", " + num(grid(G)) + "] with every eigenvalue of M inside the unit disk "
+    out.note = "no " + name + " in [" + format_double(grid(0)) + ", " + format_double(grid(G)) + "] with every eigenvalue of M inside the unit disk "
                "(numeric scan of the spectral radius): no stable interval to maximise over";
-    return out;
+    return std::nullopt;
   }
   if (ku < 0) {
-    out.note = "the spectral radius stays below 1 from " + name + " = " + num(grid(ks)) + " up to " + num(grid(G)) +
+    out.note = "the spectral radius stays below 1 from " + name + " = " + format_double(grid(ks)) + " up to " + format_double(grid(G)) +
                " (numeric scan): no crossing found, so no supremum is certified";
-    return out;
+    return std::nullopt;
   }
   double lo = grid(ku - 1), hi = grid(ku);
   for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
     const double c = 0.5 * (lo + hi);
-    (rho(c) < 1 ? lo : hi) = c;
+    (sp.rho(c) < 1 ? lo : hi) = c;
   }
-  const double pstar = 0.5 * (lo + hi);
-  Eigen::EigenSolver<Eigen::MatrixXd> es(M0d + pstar * M1d, true);
+  Isolated is;
+  is.pstar = 0.5 * (lo + hi);
+  is.stable_grid = grid(ks);
+  is.below = grid(ku - 1);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(sp.M0 + is.pstar * sp.M1, true);
   Eigen::Index imax = 0;
   es.eigenvalues().cwiseAbs().maxCoeff(&imax);
-  std::complex<double> lambda = es.eigenvalues()(imax);
-  Eigen::VectorXcd v = es.eigenvectors().col(imax);
-  if (lambda.imag() < 0) {
-    lambda = std::conj(lambda);
-    v = v.conjugate();
+  is.lambda = es.eigenvalues()(imax);
+  is.v = es.eigenvectors().col(imax);
+  if (is.lambda.imag() < 0) {
+    is.lambda = std::conj(is.lambda);
+    is.v = is.v.conjugate();
   }
-  const bool complex = std::fabs(lambda.imag()) > 1e-7 * std::abs(lambda);
-  const Eigen::VectorXcd c = v / v.squaredNorm();  // c^H v = 1
-  {  // the mode: |position| per DOF
-    Eigen::MatrixXd P(F.positions.rows(), F.positions.cols());
-    for (Eigen::Index i = 0; i < P.rows(); ++i)
-      for (Eigen::Index j = 0; j < P.cols(); ++j) P(i, j) = static_cast<double>(F.positions(i, j));
-    const Eigen::VectorXd amp = (P * v).cwiseAbs();
-    const double mx = amp.maxCoeff();
-    for (Eigen::Index i = 0; i < amp.size(); ++i) out.mode.push_back(mx > 0 ? amp(i) / mx : 0.0);
-  }
-  out.where = complex ? "complex pair" : (lambda.real() > 0 ? "z = 1" : "z = -1");
-  // step 2: the enclosure, precision raised until it is narrow enough
+  is.complex = std::fabs(is.lambda.imag()) > 1e-7 * std::abs(is.lambda);
+  return is;
+}
+
+/// The crossing mode's |position| per DOF, largest = 1.
+std::vector<double> mode_shape(const LoopFamily& F, const Eigen::VectorXcd& v) {
+  Eigen::MatrixXd P(F.positions.rows(), F.positions.cols());
+  for (Eigen::Index i = 0; i < P.rows(); ++i)
+    for (Eigen::Index j = 0; j < P.cols(); ++j) P(i, j) = static_cast<double>(F.positions(i, j));
+  const Eigen::VectorXd amp = (P * v).cwiseAbs();
+  const double mx = amp.maxCoeff();
+  std::vector<double> mode;
+  for (Eigen::Index i = 0; i < amp.size(); ++i) mode.push_back(mx > 0 ? amp(i) / mx : 0.0);
+  return mode;
+}
+
+/// Step 2: the crossing enclosed by the Krawczyk test, the precision raised until it is 10^-digits
+/// relative. `fine` keeps M0, M1 at the enclosure's precision when it is above 128 bits.
+Enclosed enclose_crossing(const LoopFamily& F, const ArbFamily& base, ArbFamily& fine, const Isolated& is, int digits,
+                          LoopMax& out) {
   Enclosed e;
   const double target = std::pow(10.0, -digits);
-  ArbFamily fine;  // M0, M1 at the enclosure's precision (128 bits: base)
+  const Eigen::VectorXcd c = is.v / is.v.squaredNorm();  // c^H v = 1
   for (long prec = 128; prec <= 4096; prec *= 2) {
     fine = prec == 128 ? ArbFamily{} : arb_family(F, prec);
     const BallMat& M0 = prec == 128 ? *base.M0 : *fine.M0;
     const BallMat& M1 = prec == 128 ? *base.M1 : *fine.M1;
-    CrossingSystem S{M0, M1, complex, complex ? 1.0 : (lambda.real() > 0 ? 1.0 : -1.0), c.real(), c.imag()};
+    CrossingSystem S{M0, M1, is.complex, is.complex ? 1.0 : (is.lambda.real() > 0 ? 1.0 : -1.0), c.real(), c.imag()};
     const long n = S.n(), m = S.size();
     BallMat x(m, 1);
     for (long i = 0; i < n; ++i) {
-      arb_set_d(x.at(i, 0), v(i).real());
-      if (complex) arb_set_d(x.at(n + i, 0), v(i).imag());
+      arb_set_d(x.at(i, 0), is.v(i).real());
+      if (is.complex) arb_set_d(x.at(n + i, 0), is.v(i).imag());
     }
-    arb_set_d(x.at(complex ? 2 * n : n, 0), pstar);
-    if (complex) arb_set_d(x.at(2 * n + 1, 0), std::arg(lambda));
+    arb_set_d(x.at(is.complex ? 2 * n : n, 0), is.pstar);
+    if (is.complex) arb_set_d(x.at(2 * n + 1, 0), std::arg(is.lambda));
     e = krawczyk(S, x, prec);
     out.precision_bits = prec;
     if (e.ok && e.rel_width <= target) break;
   }
-  if (!e.ok || e.rel_width > target) {
-    out.note = "the crossing near " + name + " = " + num(pstar, 17) + " (numeric) could not be enclosed to 10^-" +
-               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + num(e.rel_width, 3) : e.why);
-    return out;
-  }
-  out.crossing = e.p;
-  if (complex) out.theta = e.theta;
-  else if (lambda.real() < 0) {  // theta = pi, enclosed
-    flint::BallPrecision bp(out.precision_bits);
-    out.theta = Ball::pi().bounds();
-  }
-  const BallMat& M0p = out.precision_bits == 128 ? *base.M0 : *fine.M0;
-  const BallMat& M1p = out.precision_bits == 128 ? *base.M1 : *fine.M1;
-  // step 3: the cover below the crossing (certified), from a point of the stable run up to the
-  // crossing (each interval's width adapted to what Rump's test accepts; the last step closes on
-  // the crossing's enclosure by monotonicity), then down towards 0
-  Cover cov{*base.M0, *base.M1};
-  const rational top = e.p.lo;
-  const double topd = static_cast<double>(top);
-  double p0d = 0.5 * topd;
-  if (rho(p0d) >= 1) p0d = grid(ku - 1) < topd ? grid(ku - 1) : grid(ks);
-  const rational p0 = rational(p0d);
+  return e;
+}
+
+/// Step 3: the cover. Up from p0 to within `enough` of the crossing's lower end `top` (closing by
+/// monotonicity where the walk stalls), down from p0 towards 0. Sets stable_from, stable_to;
+/// returns whether the last step closed on the crossing.
+bool cover_below(Cover& cov, const rational& p0, const rational& top, const Enclosed& e, const BallMat& M0p,
+                 const BallMat& M1p, int digits, LoopMax& out) {
   rational up = p0, down = p0;
   bool closed = false;
   // up: from p0 each step covers [up - h, up + h] and moves to up + h; near the crossing h is a
@@ -917,10 +924,12 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     if (h <= 0 || up + h >= top) break;
     up += h;
   }
-  // down towards 0: to 0 when M(0) is stable, else to 10^-6 of the crossing
+  // down: to 0 where M(0) is Schur stable (a step of the walk reaches it); where an eigenvalue of
+  // M(0) is on the circle (a device's position integrator under a spring scaled by p) the steps
+  // shrink geometrically towards 0 and the walk stops at 10^-6 of the crossing
   const rational floor = top / 1000000;
   cov.prec = 64;
-  for (const long budget = cov.checks + 30; cov.checks < budget && down > 0;) {
+  for (const long budget = cov.checks + 400; cov.checks < budget && down > 0;) {
     rational h = cov.radius(down, -1);
     if (h <= 0) h = cov.stein(down, -1, down);
     if (h <= 0) break;
@@ -928,28 +937,19 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     if (down < floor && down > 0) break;
   }
   out.cover_intervals = cov.checks;
-  if (up <= p0 && !closed) {
-    out.note = "the crossing at " + name + " in [" + num(static_cast<double>(e.p.lo), 17) + ", " + num(static_cast<double>(e.p.hi), 17) +
-               "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
-               "to each other for Rump's test)";
-    return out;
-  }
   out.stable_from = down;
   out.stable_to = closed ? top - enough : up;
-  out.sup = {out.stable_to, e.p.hi};
-  out.gap = static_cast<double>((top - out.stable_to) / top);
-  if (!closed && top - up > enough) {  // the walk stopped short: the supremum is only bracketed
-    std::ostringstream o;
-    o.precision(17);
-    o << "the crossing at " << name << " in [" << static_cast<double>(e.p.lo) << ", " << static_cast<double>(e.p.hi)
-      << "] is certified and every " << name << " in [" << static_cast<double>(out.stable_from) << ", "
-      << static_cast<double>(out.stable_to) << "] is proven stable (" << cov.checks << " steps), but the walk stopped "
-      << out.gap << " (relative) short of the crossing: the supremum lies in [" << static_cast<double>(out.stable_to)
-      << ", " << static_cast<double>(e.p.hi) << "], not enclosed to 10^-" << digits;
-    out.note = o.str();
-    return out;
+  if (up > p0 || closed) {
+    out.sup = {out.stable_to, e.p.hi};
+    out.gap = static_cast<double>((top - out.stable_to) / top);
   }
-  // step 4: the decider of `stability --scene` (an independent certificate) just below and above
+  return closed;
+}
+
+/// Step 4: decide_loop, independently, stable just below the crossing and NOT stable just above
+/// it. False (note set) when it disagrees or cannot decide.
+bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopMax& out) {
+  const rational top = e.p.lo;
   for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
     const rational pb = top * (1 - eps);
     if (pb < out.stable_from) break;
@@ -959,14 +959,14 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       break;
     }
     if (below.stable && !*below.stable) {
-      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + num(static_cast<double>(pb), 17) +
+      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + format_double(static_cast<double>(pb), 17) +
                  ", inside the interval the cover certified stable: " + below.why;
-      return out;
+      return false;
     }
   }
   if (!out.stable_at) {
     out.note = "decide_loop could not confirm stability just below the crossing";
-    return out;
+    return false;
   }
   for (const rational& eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
     const rational pa = e.p.hi * (1 + eps);
@@ -976,30 +976,156 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       break;
     }
     if (above.stable && *above.stable) {
-      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + num(static_cast<double>(pa), 17) +
+      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + format_double(static_cast<double>(pa), 17) +
                  "): the crossing is a touch, not an exit";
-      return out;
+      return false;
     }
   }
   if (!out.unstable_at) {
     out.note = "decide_loop could not decide the loop just above the crossing";
+    return false;
+  }
+  return true;
+}
+
+/// M(0) with an eigenvalue strictly outside the unit circle: then so has M(p) for every p in some
+/// (0, eps), by continuity of the eigenvalues, and the supremum of (0, sup) is 0. Proven by a Stein
+/// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
+/// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
+/// cannot take -- by Rump's enclosure of that one eigenvalue (acb_mat_eig_enclosure_rump: a ball
+/// proven to hold an eigenvalue of every matrix in M0) lying outside the circle.
+bool unstable_at_zero(const ArbFamily& base, std::string& why) {
+  const SchurDecision d = schur_decide(double_ball_matrix(*base.M0));
+  if (d.stable && !*d.stable) {
+    why = d.why;
+    return true;
+  }
+  const long n = base.M0->rows(), prec = 128;
+  const Eigen::MatrixXd M = mid(*base.M0);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(M, true);
+  if (es.info() != Eigen::Success) return false;
+  Eigen::Index k = 0;
+  if (!(es.eigenvalues().cwiseAbs().maxCoeff(&k) > 1 + 1e-9)) return false;
+  AcbMat A(n, n), Rapprox(n, 1), J(1, 1), R(n, 1);
+  family_ball(A, *base.M0, *base.M1, rational(0), rational(0), prec);
+  acb_t lambda, approx;
+  acb_init(lambda);
+  acb_init(approx);
+  acb_set_d_d(approx, es.eigenvalues()(k).real(), es.eigenvalues()(k).imag());
+  for (long i = 0; i < n; ++i)
+    acb_set_d_d(acb_mat_entry(Rapprox.m, i, 0), es.eigenvectors()(i, k).real(), es.eigenvectors()(i, k).imag());
+  acb_mat_eig_enclosure_rump(lambda, J.m, R.m, A.m, approx, Rapprox.m, prec);
+  arb_t modulus;
+  arb_init(modulus);
+  acb_abs(modulus, lambda, prec);
+  const bool outside = acb_is_finite(lambda) && arb_gt(modulus, Ball(1).get());
+  if (outside) {
+    std::ostringstream o;
+    o.precision(17);
+    o << "an eigenvalue of M(0) enclosed by Rump's test in Arb balls (" << prec << " bits) with |z| >= "
+      << std::nextafter(arf_get_d(arb_midref(modulus), ARF_RND_DOWN) - mag_get_d(arb_radref(modulus)), 0.0);
+    why = o.str();
+  }
+  arb_clear(modulus);
+  acb_clear(lambda);
+  acb_clear(approx);
+  return outside;
+}
+
+}  // namespace
+
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits) {
+  if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60] for a multi-DOF --max, got " + std::to_string(digits));
+  const LoopFamily F = loop_family(at, reference, name);
+  LoopMax out;
+  out.T = F.T;
+  out.states = order(F);
+  out.fixed_modes = F.fixed.rows();
+  if (F.fixed.rows() > 0 && !schur_stable(charpoly(F.fixed))) {
+    out.outcome = Outcome::fails;
+    out.status = Status::exact;
+    out.note = "NOT stable for any " + name + " [exact]: " + std::to_string(F.fixed.rows()) +
+               " mode(s) of the controller that no " + name + " moves (a block's hidden modes) are not all inside the unit circle";
     return out;
   }
+  const ArbFamily base = arb_family(F, 128);
+  std::string why_zero;
+  if (unstable_at_zero(base, why_zero)) {  // (0, sup) is empty: sup = 0, whatever happens further up
+    out.outcome = Outcome::fails;
+    out.status = Status::certified;
+    out.note = "NOT stable for every small " + name + " > 0 [certified]: at " + name + " = 0 the closed-loop matrix has an "
+               "eigenvalue outside the unit circle (" + why_zero + "), and so has M(" + name + ") for every " + name +
+               " in some (0, eps) (the eigenvalues move continuously): the supremum of (0, sup) is 0";
+    return out;
+  }
+  const Spectrum sp{mid(*base.M0), mid(*base.M1)};
+  const std::optional<Isolated> is = isolate(sp, static_cast<double>(reference), name, out);
+  if (!is) return out;
+  out.mode = mode_shape(F, is->v);
+  out.where = is->complex ? "complex pair" : (is->lambda.real() > 0 ? "z = 1" : "z = -1");
+  ArbFamily fine;
+  const Enclosed e = enclose_crossing(F, base, fine, *is, digits, out);
+  if (!e.ok || e.rel_width > std::pow(10.0, -digits)) {
+    out.note = "the crossing near " + name + " = " + format_double(is->pstar, 17) + " (numeric) could not be enclosed to 10^-" +
+               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + format_double(e.rel_width, 3) : e.why);
+    return out;
+  }
+  out.crossing = e.p;
+  if (is->complex) out.theta = e.theta;
+  else if (is->lambda.real() < 0) {  // theta = pi, enclosed
+    flint::BallPrecision bp(out.precision_bits);
+    out.theta = Ball::pi().bounds();
+  }
+  const BallMat& M0p = out.precision_bits == 128 ? *base.M0 : *fine.M0;
+  const BallMat& M1p = out.precision_bits == 128 ? *base.M1 : *fine.M1;
+  const rational top = e.p.lo;
+  double p0d = 0.5 * static_cast<double>(top);
+  if (sp.rho(p0d) >= 1) p0d = is->below < static_cast<double>(top) ? is->below : is->stable_grid;
+  const rational p0 = rational(p0d);
+  Cover cov{*base.M0, *base.M1};
+  const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
+  if (out.stable_to <= p0 && !closed) {
+    out.note = "the crossing at " + name + " in [" + format_double(static_cast<double>(e.p.lo), 17) + ", " +
+               format_double(static_cast<double>(e.p.hi), 17) +
+               "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
+               "to each other for Rump's test)";
+    return out;
+  }
+  const std::string on = "every " + name + " in [" + format_double(static_cast<double>(out.stable_from), 17) + ", " +
+                         format_double(static_cast<double>(out.stable_to), 17) + "] is proven stable (" +
+                         std::to_string(cov.checks) + " steps)";
+  const std::string crossing = "the crossing at " + name + " in [" + format_double(static_cast<double>(e.p.lo), 17) + ", " +
+                               format_double(static_cast<double>(e.p.hi), 17) + "] is certified";
+  if (!closed && top - out.stable_to > top * rational(std::pow(10.0, -digits - 1))) {  // the walk stopped short
+    out.note = crossing + " and " + on + ", but the walk stopped " + format_double(out.gap, 6) +
+               " (relative) short of the crossing: the supremum is not enclosed to 10^-" + std::to_string(digits);
+    return out;
+  }
+  if (out.stable_from > 0) {
+    // (0, stable_from) is not covered: the loop may be unstable there (an open-loop unstable
+    // device stabilised only by larger gains), so no supremum of (0, sup) is stated
+    out.status = Status::certified;  // of stable_on only; outcome stays undecided
+    out.note = crossing + " and " + on + ", but stability on (0, " + format_double(static_cast<double>(out.stable_from), 17) +
+               ") is not proven (the walk towards 0 stopped there" +
+               std::string(sp.rho(0) >= 1 - 1e-12 ? ": M(0) has an eigenvalue on the unit circle (numeric)" : "") +
+               "), so the supremum of (0, sup) is undecided";
+    return out;
+  }
+  if (!confirm(at, e, name, out)) return out;
   out.outcome = Outcome::holds;
   out.status = Status::certified;
   std::ostringstream o;
   o.precision(6);
   o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
     << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
-    << " in [" << static_cast<double>(out.stable_from) << ", " << static_cast<double>(out.stable_to) << "] is stable ("
-    << cov.checks << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
+    << " in [0, " << static_cast<double>(out.stable_to) << "] is stable (" << cov.checks
+    << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
   o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
   if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
   else
     o << "The supremum lies in [" << static_cast<double>(out.stable_to) << ", crossing]: the crossing is it unless an eigenvalue "
       << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered";
-  if (out.stable_from > 0) o << "; below " << static_cast<double>(out.stable_from) << " not examined";
   out.note = o.str();
   return out;
 }

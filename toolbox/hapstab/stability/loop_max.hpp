@@ -19,7 +19,7 @@
 //     of p is 10^-digits relative or narrower.
 //  3. Below it (certified): every eigenvalue of every M0 + p M1 inside the unit disk, on adjacent
 //     intervals of p, a walk from a point of the stable run up to within 10^-(digits+1) of the
-//     crossing (at most 2000 steps) and down towards 0 (at most 30). Each step, at a point c: R an
+//     crossing (at most 2000 steps) and down towards 0 (at most 400). Each step, at a point c: R an
 //     approximate eigenbasis of M(c) (double; a cluster of close eigenvalues gets a basis of its
 //     invariant subspace), exact as it is, L a ball enclosure of R^-1; then R^-1 M(p) R lies in
 //     B0 + (p - c) C, B0 = L M(c) R, C = L M1 R, and Gershgorin's discs of D^-1 (B0 + t C) D
@@ -31,10 +31,16 @@
 //     2 Re(conj(lambda) (L M1 R)_ii) > 0, and at the walk's target all are inside.
 //  4. Confirmation: stability::decide_loop (the decider of `stability --scene`, Stein inertia) at
 //     a point just below the crossing (stable) and just above it (NOT stable).
-// The supremum of the stable interval that holds [stable_from, stable_to] lies in
+// The supremum is sup{p >= 0 : stable for every p in (0, sup)} (docs/stability.md), so it is
+// stated (outcome holds) only when the walk covers [0, stable_to]: M(0) Schur stable and reached.
+// Where the walk towards 0 stops at stable_from > 0 (M(0) with an eigenvalue on the circle, or an
+// unstable window below: an open-loop unstable device that only larger gains stabilise) the
+// outcome is undecided and what is proven is [stable_from, stable_to] (certified). Where M(0) has
+// an eigenvalue strictly outside the circle (a Stein inertia certificate on the ball M0), so has
+// M(p) for every small p > 0: sup = 0 (outcome fails, certified). The supremum then lies in
 // [stable_to, crossing.hi]; when the walk ends short of its target the relative gap not covered is
 // reported (`gap`) and the printed digits are only those the two ends share. Step 1 can miss
-// nothing that steps 2-4 would then hide: a crossing below the one found stops the walk.
+// nothing that steps 2-4 would then hide: a crossing below the one found stops a walk.
 // Before step 1 the controller's modes that no p moves (an environment's unobservable states:
 // Ku(p) V = 0, Kx(p) V in V, the V block constant) are deflated exactly and checked Schur stable
 // exactly (Schur-Cohn on their characteristic polynomial): repeated, they would defeat the
@@ -56,8 +62,8 @@ namespace hapstab::stability {
 using LoopAt = std::function<sim::LoopSpec(const rational& p)>;
 
 struct LoopMax {
-  Outcome outcome = Outcome::undecided;  ///< holds: a crossing enclosed and the interval below it certified stable
-  Status status = Status::failed;        ///< certified when holds
+  Outcome outcome = Outcome::undecided;  ///< holds: a crossing enclosed and [0, crossing) certified stable; fails: sup = 0
+  Status status = Status::failed;        ///< certified when holds (or of stable_on alone when undecided); exact/certified when fails
   Enclosure<rational> crossing{0, 0};    ///< p* where an eigenvalue of M(p*) is on |z| = 1 (certified)
   Enclosure<rational> theta{0, 0};       ///< its angle in [0, pi] (rad; omega = theta / T)
   Enclosure<rational> sup{0, 0};         ///< [stable_to, crossing.hi]: holds the supremum (certified)
