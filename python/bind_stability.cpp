@@ -6,22 +6,31 @@
 // them); each scalar and vectorised over parameter columns on threads.
 //
 // `--max NAME` on a scene (the largest stable scene parameter, any number of DOF, with
-// --conservatism Theorem 5's beside it: issue 42) is not bound here: hapstab.stability(scene=...,
-// max=..., conservatism=...) runs the command itself through _core.run (python/hapstab/__init__.py),
-// so its JSON -- three result shapes (one DOF, the certified crossing, the bisection on verdicts) --
-// has one writer.
+// conservatism=True Theorem 5's beside it: issue 42) is bound as the command line computes it
+// (cli/cmd_stability.cpp): a scene whose blocks hide an unstable mode is NOT stable for every
+// value; a one-DOF scene without [coupling] takes stability::max_gain on its loop
+// (stability/scene_loop.hpp, NAME a gain of [environment], checked affine); any other scene the
+// closed-loop matrix (stability/loop_max.hpp max_parameter, NAME affine), or, where the loop is not
+// affine in NAME, the bisection on certified verdicts (conservatism/theorem5_max.hpp
+// exact_max_by_verdicts: a change of verdict, not a supremum). The record's value is the supremum
+// only where it is proven (status certified/exact); otherwise status 'undecided', value NaN, and
+// what is proven beside it (stable_on, change_in).
 #include <cmath>
 #include <filesystem>
 #include <limits>
 
+#include "hapstab/conservatism/theorem5_max.hpp"
 #include "hapstab/lmi/passivity_level_report.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/paths.hpp"
 #include "hapstab/scene/schema.hpp"
+#include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
+#include "hapstab/stability/loop_max.hpp"
+#include "hapstab/stability/scene_loop.hpp"
 #include "python/binding.hpp"
 
 namespace hapstab::python {
@@ -243,6 +252,233 @@ py::dict stability_scene_many(const std::string& scene, bool is_text, const std:
   return d;
 }
 
+// ---- the largest stable scene parameter (`hapstab stability --scene S --max NAME`) ---------------
+
+/// A record whose quantity is not proven: status undecided, value and ends NaN (no comparison decides).
+py::dict record_undecided(const std::string& method, const std::string& note) {
+  py::dict d;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  d["value_exact"] = py::none();
+  d["mid"] = nan;
+  d["lo"] = nan;
+  d["hi"] = nan;
+  d["lo_text"] = py::none();
+  d["hi_text"] = py::none();
+  d["status"] = "undecided";
+  d["method"] = method;
+  d["note"] = note;
+  return d;
+}
+
+py::tuple decimals(const rational& lo, const rational& hi, int digits) {
+  return py::make_tuple(decimal_outward(lo, digits, -1), decimal_outward(hi, digits, +1));
+}
+
+py::object point(const std::optional<conservatism::PointVerdict>& v) {
+  if (!v) return py::none();
+  py::dict d;
+  d["at"] = to_decimal(v->at, 17);
+  d["status"] = to_string(v->status);
+  d["why"] = v->why;
+  return d;
+}
+
+/// The fields every answer of stability(scene=..., max=NAME) has, None where they do not apply.
+py::dict scene_max_fields(const std::string& name, const std::string& path, const std::string& outcome) {
+  py::dict d;
+  d["name"] = name;
+  d["path"] = path;
+  d["outcome"] = outcome;
+  for (const char* k : {"crossing", "theta", "omega", "stable_on", "gap", "stable_at", "unstable_at", "change_in",
+                        "not_affine", "theorem5", "conservatism", "conservatism_note"})
+    d[k] = py::none();
+  d["supremum_proven"] = false;
+  d["contradiction"] = false;
+  return d;
+}
+
+/// One-DOF scene without [coupling]: its loop (stability/scene_loop.hpp) with NAME a gain of
+/// [environment], H = H0 + NAME H1 checked at three more values (as cmd_stability.cpp's scene_loop_of).
+stability::Loop one_dof_scene_loop(const std::function<scene::Scene(const rational&)>& scene_at, const std::string& name) {
+  auto same = [](const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); };
+  stability::Loop loop = stability::scene_loop(scene_at(0));
+  const stability::Loop one = stability::scene_loop(scene_at(1));
+  const RationalFunction<rational> H1 = one.H.H - loop.H.H;
+  if (H1.is_zero()) throw InputError("max='" + name + "': the scene's [environment] does not depend on " + name);
+  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
+    const stability::Loop lk = stability::scene_loop(scene_at(k));
+    const bool device_same = same(lk.plant, loop.plant) &&
+                             lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&
+                             (!lk.operator_impedance || same(*lk.operator_impedance, *loop.operator_impedance));
+    if (!device_same || lk.delay != loop.delay)
+      throw InputError("max='" + name + "': only a gain of [environment] can be maximised, but " + name +
+                       " changes the device, the operator or the delay");
+    const RationalFunction<rational> affine = loop.H.H + RationalFunction<rational>(k) * H1;
+    if (!same(lk.H, tf(affine.num(), affine.den(), loop.T)))
+      throw InputError("max='" + name + "': [environment] must be affine in " + name + " (H = H0 + " + name +
+                       " H1), e.g. a stiffness");
+  }
+  loop.H_gain = tf(H1.num(), H1.den(), loop.T);
+  return loop;
+}
+
+/// stability(scene=S, max=NAME[, conservatism=True]): {"record": the value record, and the fields
+/// of scene_max_fields}. digits: of the crossing (1..1000; the closed-loop matrix takes up to 60,
+/// the bisection 12, Theorem 5 6, as the command does).
+py::dict stability_scene_max(const std::string& scene, bool is_text, const std::map<std::string, std::string>& overrides,
+                             const std::string& name, int digits, bool conservatism) {
+  if (digits < 1 || digits > 1000) throw InputError("digits must be in [1, 1000], got " + std::to_string(digits));
+  std::map<std::string, rational> params;
+  for (const auto& [k, v] : overrides) params[k] = exact_arg(v, k);
+  const std::string file = is_text ? std::string("scene") : scene;
+  const auto scene_at = [&](const rational& p) {
+    std::map<std::string, rational> q = params;
+    q[name] = p;
+    return is_text ? scene::parse_scene(scene, "scene", q) : scene::load_scene(scene, q);
+  };
+  const scene::Scene sc = scene_arg(scene, is_text, overrides);
+  const auto it = sc.parameters.find(name);
+  if (it == sc.parameters.end())
+    throw InputError("max='" + name + "': the scene has no parameter " + name + " ([parameters])");
+  py::dict d;
+  // a block that hides a mode outside the stability region: NOT stable for every value (exact)
+  const sim::LoopHiddenModes hidden = sim::hidden_modes(sc.loop);
+  if (!hidden.stable()) {
+    d = scene_max_fields(name, "hidden_modes", "fails");
+    d["record"] = record(Certified<rational>::exact_value(0, "a block's hidden mode (sim/hidden_modes.hpp)"), digits);
+    d["note"] = "NOT stable for every " + name + " [exact]: " + hidden.summary();
+    return d;
+  }
+  const bool one_dof = sc.loop.dofs() == 1 && sc.loop.devices.size() == 1 && sc.loop.operators.size() <= 1 &&
+                       !sc.loop.coupling && !conservatism;
+  if (one_dof) {  // stability::max_gain on the one-DOF loop
+    const stability::Loop loop = one_dof_scene_loop(scene_at, name);
+    stability::MaxGain m;
+    run_interruptible([&] { m = stability::max_gain(loop, digits, name); });
+    LoopInput in{"", "", "", name, loop.T, 0, digits};
+    py::dict r = max_record(m, in);
+    d = scene_max_fields(name, "one_dof", to_string(m.outcome));
+    d["record"] = r["max"].is_none() ? py::object(record_undecided("stability::max_gain", m.note)) : r["max"];
+    d["crossing"] = r["crossing"];
+    if (r.contains("theta")) d["theta"] = r["theta"], d["omega"] = r["omega"];
+    d["supremum_proven"] = m.outcome != Outcome::undecided;
+    d["note"] = m.note;
+    d["precision_bits"] = m.precision_bits;
+    return d;
+  }
+  scene::check_command(sc.root, file, "stability");  // what it does not model is refused
+  const rational reference = it->second > 0 ? it->second : rational(1);
+  const stability::LoopAt loop_at = [&](const rational& p) { return scene_at(p).loop; };
+  std::optional<conservatism::VerdictBracket> t5;
+  std::string not_affine;
+  std::optional<Enclosure<rational>> exact_side;  // holds the exact side's boundary (certified)
+  bool exact_is_supremum = false;                 // stability on (0, exact_side) proven
+  run_interruptible([&] {
+    // Theorem 5 first: its refusals (no [coupling], a [delay]) come before any long computation
+    if (conservatism) t5 = conservatism::theorem5_max(scene_at, reference, name, std::min(digits, 6));
+    try {
+      stability::loop_family(loop_at, reference, name);
+    } catch (const InputError& e) {
+      not_affine = e.what();
+    }
+  });
+  if (!not_affine.empty()) {  // a change of certified verdicts: not a supremum
+    conservatism::VerdictBracket b;
+    run_interruptible([&] { b = conservatism::exact_max_by_verdicts(loop_at, reference, name, std::min(digits, 12)); });
+    d = scene_max_fields(name, "bisection_on_verdicts", "undecided");
+    d["record"] = record_undecided("conservatism::exact_max_by_verdicts (bisection on certified verdicts)", b.note);
+    d["not_affine"] = not_affine;
+    if (b.lo && b.hi) {
+      exact_side = b.bracket();
+      d["change_in"] = decimals(b.lo->at, b.hi->at, 17);
+    }
+    d["stable_at"] = point(b.lo);
+    d["unstable_at"] = point(b.hi);
+    d["verdicts"] = b.steps.size();
+    d["verdicts_outcome"] = to_string(b.outcome);  // holds: a certified bracket (or yes at every value tried)
+    d["note"] = b.note + " (the closed loop is not affine in " + name +
+                ": a change of certified verdicts, not a proven supremum)";
+  } else {
+    stability::LoopMax m;
+    run_interruptible([&] { m = stability::max_parameter(loop_at, reference, name, std::min(digits, 60)); });
+    const bool proven_stable = m.stable_to > m.stable_from;
+    d = scene_max_fields(name, "closed_loop_matrix", to_string(m.outcome));
+    d["note"] = m.note;
+    d["states"] = m.states;
+    d["fixed_modes"] = m.fixed_modes;
+    d["precision_bits"] = m.precision_bits;
+    d["cover_intervals"] = m.cover_intervals;
+    if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
+      d["record"] = record(Enclosure<rational>{0, 0}, 0, m.status == Status::failed ? Status::exact : m.status,
+                           "stability::max_parameter: NOT stable for small values", m.note, digits);
+      d["supremum_proven"] = true;
+    } else if (m.outcome == Outcome::holds) {
+      exact_side = m.sup;
+      exact_is_supremum = true;
+      d["record"] = record(m.sup, (m.sup.lo + m.sup.hi) / 2, m.status,
+                           "stability::max_parameter: the smallest certified crossing of the closed-loop matrix, "
+                           "stable below it (certified)", m.note, 17);
+      d["supremum_proven"] = true;
+      d["gap"] = m.gap;
+      py::dict c;
+      c["at"] = m.where;
+      c["crossing"] = decimals(m.crossing.lo, m.crossing.hi, digits + 3);
+      c["theta"] = decimals(m.theta.lo, m.theta.hi, 17);
+      c["omega"] = decimals(m.theta.lo / m.T, m.theta.hi / m.T, 17);
+      py::dict mode;
+      size_t k = 0;
+      for (const auto& dev : sc.loop.devices)
+        for (Eigen::Index i = 0; i < dev.dofs() && k < m.mode.size(); ++i, ++k)
+          mode[py::str(dev.dofs() == 1 ? dev.name : dev.name + "[" + std::to_string(i) + "]")] = m.mode[k];
+      c["mode"] = mode;
+      d["crossing"] = c;
+      d["theta"] = py::make_tuple(double_outward(m.theta.lo, -1), double_outward(m.theta.hi, +1));
+      d["omega"] = py::make_tuple(double_outward(m.theta.lo / m.T, -1), double_outward(m.theta.hi / m.T, +1));
+    } else {  // undecided: what is proven (stable on [a, b]) beside it, never called a supremum
+      d["record"] = record_undecided("stability::max_parameter", m.note);
+      if (proven_stable && m.crossing.hi > 0) {
+        py::dict c;
+        c["crossing"] = decimals(m.crossing.lo, m.crossing.hi, digits + 3);
+        d["crossing"] = c;
+      }
+    }
+    if (proven_stable) d["stable_on"] = decimals(m.stable_from, m.stable_to, 17);
+    if (m.stable_at) d["stable_at"] = to_decimal(*m.stable_at, 17);
+    if (m.unstable_at) d["unstable_at"] = to_decimal(*m.unstable_at, 17);
+  }
+  if (t5) {
+    py::dict t;
+    t["bracket"] = t5->lo && t5->hi ? py::object(decimals(t5->lo->at, t5->hi->at, 17)) : py::object(py::none());
+    t["concludes_at"] = point(t5->lo);
+    t["not_at"] = point(t5->hi);
+    t["note"] = t5->note;
+    t["programs"] = t5->steps.size();
+    t["seconds"] = t5->seconds;
+    d["theorem5"] = t;
+    // a ratio of suprema only where both regions are proven intervals (0, sup): the exact side's by
+    // its certified cover from 0, Theorem 5's when NAME is the gain of [environment] (its region
+    // scales: docs/stability.md); otherwise the two brackets are boundaries found, not suprema
+    const bool t5_interval = sc.root["environment"]["gain"].value_or(std::string()) == name;
+    const bool both_intervals = exact_is_supremum && t5_interval;
+    const auto r = exact_side && both_intervals ? conservatism::ratio(*exact_side, *t5) : std::nullopt;
+    d["conservatism"] = r ? py::object(decimals(r->lo, r->hi, 4)) : py::object(py::none());
+    std::string why;
+    if (!exact_is_supremum) why = "the exact side's bracket is not proven to be the supremum of an interval (0, sup)";
+    if (!t5_interval)
+      why += (why.empty() ? "" : "; ") + std::string("Theorem 5's region in ") + name +
+             " is not proven an interval (only an [environment] gain's is)";
+    d["conservatism_note"] = both_intervals ? std::string("exact supremum / Theorem 5's supremum") : "no ratio of suprema: " + why;
+    // Theorem 5 is sound: a conclusion where the loop is proven NOT stable is a contradiction (above
+    // the exact side's first NOT-stable value the loop may be stable again: decided there)
+    if (exact_side && t5->lo && t5->lo->at > exact_side->hi) {
+      stability::LoopVerdict v;
+      run_interruptible([&] { v = stability::decide_loop(loop_at(t5->lo->at)); });
+      if (v.stable && !*v.stable) d["contradiction"] = true;
+    }
+  }
+  return d;
+}
+
 // ---- passivity levels (paper 000) ------------------------------------------------------------
 
 struct LevelOptions {
@@ -437,6 +673,9 @@ void register_stability(py::module_& m) {
       "stability at every point of parameter columns, on threads.");
   m.def("stability_scene", &stability_scene, py::arg("scene"), py::arg("is_text"), py::arg("overrides"),
         "The loop a scene writes, decided as written (stability::decide_loop): any number of DOF, hidden modes.");
+  m.def("stability_scene_max", &stability_scene_max, py::arg("scene"), py::arg("is_text"), py::arg("overrides"),
+        py::arg("name"), py::arg("digits"), py::arg("conservatism"),
+        "The largest stable scene parameter (`hapstab stability --scene S --max NAME [--conservatism]`).");
   m.def("stability_scene_many", &stability_scene_many, py::arg("scene"), py::arg("is_text"), py::arg("fixed"),
         py::arg("names"), py::arg("columns"), py::arg("jobs"),
         "stability_scene at every point of scene-parameter columns, on threads.");

@@ -5,9 +5,9 @@
 //
 // The binding calls the library's own functions (the same ones the command line calls): no
 // command line, no JSON. Its inputs are exact texts that the Python layer wrote (_exact.py:
-// "1/1000", a float's exact binary value) or numpy float64 arrays (each entry at its exact
-// binary value); its errors are the library's InputError/NumericalError, worded for Python by
-// the names passed in (ParseOptions::parameter_hint, LoopNames).
+// "1/1000", a float's shortest decimal) or numpy float64 arrays (each entry its shortest decimal;
+// r's omega grid at its binary values); its errors are the library's InputError/NumericalError,
+// worded for Python by the names passed in (ParseOptions::parameter_hint, LoopNames).
 #pragma once
 
 #include <pybind11/numpy.h>
@@ -39,6 +39,10 @@ int8_t status_code(Status s);
 rational exact_arg(const std::string& text, const std::string& what);
 std::optional<rational> exact_arg(const std::optional<std::string>& text, const std::string& what);
 
+/// The shortest decimal that rounds to the double x (Python's repr: 1e-3 is 1/1000), exactly: how
+/// a float is read (python/hapstab/_exact.py; fractions.Fraction(x) gives the binary value).
+rational shortest_decimal(double x);
+
 /// How Python code names parameters and the period in the parser's messages.
 ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params);
 
@@ -58,8 +62,9 @@ struct Columns {
   std::vector<std::string> names;
   std::vector<std::vector<rational>> values;  ///< values[k][i]: parameter k at point i
   size_t points = 0;
-  /// From Python: names, and per name a numpy float64 array (exact binary values) or a list of
-  /// exact texts; all of the same length (the Python layer broadcast them).
+  /// From Python: names, and per name a numpy float64 array (each entry read as the shortest
+  /// decimal that rounds to it, as Python reads a float) or a list of exact texts; all of the
+  /// same length (the Python layer broadcast them).
   static Columns from_python(const std::vector<std::string>& names, const py::list& columns);
   /// `fixed` with point i's values added.
   std::map<std::string, rational> at(const std::map<std::string, rational>& fixed, size_t i) const;

@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <charconv>
 #include <cerrno>
 #include <chrono>
 #include <future>
@@ -38,6 +39,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interrupt.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/study/threads.hpp"
 #include "python/binding.hpp"
 #include "python/forked.hpp"
@@ -116,6 +118,14 @@ py::dict record_infinite(Status status, const std::string& method, const std::st
   return d;
 }
 
+rational shortest_decimal(double x) {
+  // std::to_chars without a precision: the shortest decimal that reads back as x (Python's repr)
+  char buf[64];
+  const auto res = std::to_chars(buf, buf + sizeof buf, x);
+  if (res.ec != std::errc()) throw std::logic_error("shortest_decimal: to_chars failed");
+  return parse_rational(std::string(buf, res.ptr), "a float");
+}
+
 Columns Columns::from_python(const std::vector<std::string>& names, const py::list& columns) {
   Columns c;
   c.names = names;
@@ -131,7 +141,7 @@ Columns Columns::from_python(const std::vector<std::string>& names, const py::li
       for (py::ssize_t i = 0; i < r.shape(0); ++i) {
         if (!std::isfinite(r(i)))
           throw InputError(what + "[" + std::to_string(i) + "]: " + std::to_string(r(i)) + " is not a finite number");
-        v.push_back(exact_rational(r(i)));
+        v.push_back(shortest_decimal(r(i)));
       }
     } else {
       const auto texts = col.cast<std::vector<std::string>>();
@@ -392,6 +402,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "hapstab's C++ core: bindings of the library (transfer functions, b*, r(jw), stability, passivity levels, "
             "scenes); see the package hapstab";
   m.attr("__version__") = HAPSTAB_VERSION;
+  // the command line's limit on delay= (numeric/limits.hpp): the long-delay paths take up to it
+  m.attr("CRITERION_DELAY") = hapstab::limits::criterion_delay;
   py::register_exception<hapstab::InputError>(m, "InputError", PyExc_ValueError);
   py::register_exception<hapstab::NumericalError>(m, "NumericalError", PyExc_RuntimeError);
   register_types(m);
@@ -399,6 +411,10 @@ PYBIND11_MODULE(_core, m) {
   register_stability(m);
   register_scene(m);
   register_multidof(m);
+  m.def(
+      "names_in",
+      [](const std::string& text) { return hapstab::names_in(text); }, py::arg("text"),
+      "The names an expression refers to (parameters, T, the variable), by the parser's own lexer.");
   m.def(
       "run",
       [](const std::vector<std::string>& args) -> py::tuple {

@@ -16,11 +16,12 @@ it), returning a ResultArray of numpy arrays:
 
     >>> K = np.linspace(0, 40000, 10001)
     >>> bs = hapstab.bound("K + B*(z-1)/(T*z)", T="1/1000", delay=1, params={"K": K, "B": 5})
-    >>> bs.value, bs.lo, bs.hi, bs.status          # float64, float64, float64, int8 (STATUS)
+    >>> bs.value, bs.lo, bs.hi, bs.status          # float64, float64, float64, str (STATUS)
 
 H(z) is an expression string, a hapstab.TransferFunction, a (num, den) pair of coefficients in
-descending powers of z (int, Fraction, str exact; a float at its exact binary value), or a
-python-control TransferFunction (any object with num, den, dt). Bad input raises
+descending powers of z (int, Fraction, str exact; a float as the shortest decimal that rounds to
+it, 1e-3 = 1/1000; Fraction(x) for its binary value), or a python-control or scipy.signal system
+(read by its attributes: num, den, dt; A, B, C, D, dt for ss=). Bad input raises
 hapstab.InputError (a ValueError) naming the argument, a certified method that cannot finish
 hapstab.NumericalError (a RuntimeError).
 """
@@ -38,7 +39,8 @@ except ImportError:  # the pure-Python files without the C++ extension next to t
         raise  # it is there and does not load: the loader's own message says why
     raise ImportError(f"hapstab: the C++ extension hapstab._core is not built in {_here} (in the build tree: "
                       f"cmake --build build --target hapstab_python; or pip install . from the source tree)") from None
-from ._exact import exact, integer, period_of, real, state_space, transfer_function
+from ._exact import (continuous_text, exact, integer, is_state_space, is_system, period_of, real, state_space,
+                     system_period, transfer_function)
 from ._results import (STATUS, Analysis, Bound, Design, MaxGain, MaxPassiveGain, PassivityLevel, R, Result, ResultArray,
                        Simulation, Stability, UndecidedComparison, Wedge)
 
@@ -90,14 +92,30 @@ def _call(fn, *args: Any, keywords: bool = False, **kwargs: Any) -> Any:
 # ---- parameters: scalars and arrays --------------------------------------------------------
 
 def _is_array(v: Any) -> bool:
+    """An array of values: anything np.asarray takes with ndim >= 1 (a list, a tuple, a range, a
+    numpy array, a pandas Series or DataFrame column, ...); a 0-d array is one number."""
     import numpy as np
-    if isinstance(v, np.ndarray):
-        return v.ndim > 0
-    return isinstance(v, (list, tuple, range))
+    if isinstance(v, (str, bytes, Mapping)) or v is None:
+        return False
+    if isinstance(v, (list, tuple, range)):
+        return True
+    if hasattr(v, "__array__") or hasattr(v, "__len__"):
+        return np.ndim(v) >= 1
+    return False
+
+
+def _asarray(v: Any) -> Any:
+    import numpy as np
+    a = np.asarray(v)
+    if a.dtype.kind == "O" and hasattr(v, "dtype") and getattr(v.dtype, "kind", "O") in "fiu":
+        a = a.astype(v.dtype)  # a pandas column of a nullable dtype: its numbers
+    return a
 
 
 def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
-    """One parameter's values at every point: float64 (exact binary values) or exact texts."""
+    """One parameter's values at every point: float64 (the binding reads each as the shortest
+    decimal that rounds to it, as a scalar float is read), integers below 2^53 as float64 (exact),
+    else the exact texts (Fraction(x) entries for binary values)."""
     import numpy as np
     flat = np.asarray(a).ravel()
     what = what or f"params[{name!r}]"
@@ -108,10 +126,34 @@ def _column(name: str, a: Any, what: Optional[str] = None) -> Any:
         if bad.any():
             i = int(np.argmax(bad))
             raise InputError(f"{what}[{i}]: {flat[i]} is not a finite number")
-        return np.ascontiguousarray(flat, dtype=np.float64)
+        if flat.dtype == np.float64:
+            return np.ascontiguousarray(flat)  # the binding reads each as its shortest decimal (core.cpp)
+        return [exact(x, f"{what}[{i}]") for i, x in enumerate(flat)]  # float32/16: numpy's own shortest
     if flat.dtype.kind in "iu" and (flat.size == 0 or int(np.abs(flat.astype(object)).max()) < 2**53):
         return flat.astype(np.float64)  # exact: integers below 2^53 are doubles
-    return [exact(x.item() if hasattr(x, "item") else x, f"{what}[{i}]") for i, x in enumerate(flat)]
+    return [exact(x.item() if hasattr(x, "item") and not isinstance(x, np.floating) else x, f"{what}[{i}]")
+            for i, x in enumerate(flat)]
+
+
+def _check_names(params: Optional[Mapping[str, Any]], exprs: Any, maximised: Optional[str] = None) -> None:
+    """Refuses a name in params that no expression of the call names (a typo is never ignored),
+    and the quantity maximised given a value (max=NAME varies it)."""
+    if not params or any(text is not None and not isinstance(text, str) for text, _ in exprs):
+        return  # no params, or a model given by numbers (params are refused for it by name, later)
+    known: set = set()
+    for text, variable in exprs:
+        if isinstance(text, str):
+            known |= set(_core.names_in(text)) - {variable}
+    if maximised is not None and str(maximised) in map(str, params):
+        v = params[maximised]
+        kind = "an array" if _is_array(v) else "a value"
+        raise InputError(f"params[{maximised!r}]: {maximised} is the quantity maximised (max={maximised!r}); it takes "
+                         f"no {kind} (leave it out of params; arrays go to the other parameters)")
+    unknown = [str(k) for k in params if str(k) not in known]
+    if unknown:
+        names = ", ".join(sorted(known - {"T"})) or "none"
+        raise InputError(f"params: unknown name{'s' if len(unknown) > 1 else ''} "
+                         f"{', '.join(repr(k) for k in unknown)}: the expressions name {names}")
 
 
 def _params(params: Optional[Mapping[str, Any]]) -> Tuple[Dict[str, str], list, list, Optional[tuple], Dict[str, Any]]:
@@ -122,9 +164,9 @@ def _params(params: Optional[Mapping[str, Any]]) -> Tuple[Dict[str, str], list, 
     for name, v in (params or {}).items():
         name = str(name)
         if _is_array(v):
-            arrays[name] = np.asarray(v) if not isinstance(v, np.ndarray) else v
+            arrays[name] = _asarray(v) if not isinstance(v, np.ndarray) else v
         else:
-            fixed[name] = exact(v.item() if hasattr(v, "item") and not isinstance(v, str) else v, f"params[{name!r}]")
+            fixed[name] = exact(v, f"params[{name!r}]")
     if not arrays:
         return fixed, [], [], None, {}
     try:
@@ -154,6 +196,8 @@ def tf(H: Any, T: Any = None, params: Optional[Mapping[str, Any]] = None) -> Tra
     """An exact transfer function (the library's lti TransferFunction): from an expression in z
     (or s when T is None and it names s), parsed once with `params`; a (num, den) pair in
     descending powers of z; or a python-control TransferFunction (num, den, dt)."""
+    if isinstance(H, str):
+        _check_names(params, [(H, "z" if T is not None or "z" in _core.names_in(H) else "s")])
     return _call(transfer_function, H, T, params, "H", "")
 
 
@@ -179,9 +223,11 @@ def examples_dir() -> str:
 
 class RArray:
     """r(jw) over an array of w: re (float, exact -T/2; re_exact its exact p/q), im (float64, the
-    shape of omega), lo/hi the enclosure of im (outward: proven with method 'certified', the
+    shape of omega), im_lo/im_hi the enclosure of im (outward: proven with method 'certified', the
     stated error band of the double evaluation with 'double'), value the complex128 array,
-    status 'certified' or 'numeric', method. np.asarray(r) is value."""
+    status 'certified' or 'numeric', method. np.asarray(r) is value; r[i] (an index for every
+    axis) is point i as an R (re exact, im a Result of the array's status), r[1:] / r[mask] an
+    RArray, `for x in r` iterates over the first axis."""
 
     def __init__(self, d: Dict[str, Any], shape: tuple, method: str) -> None:
         import numpy as np
@@ -189,11 +235,17 @@ class RArray:
         self.im = np.asarray(d["im"]).reshape(shape)
         self.im_lo = np.asarray(d["lo"]).reshape(shape)
         self.im_hi = np.asarray(d["hi"]).reshape(shape)
+        self.omega = np.asarray(d["omega"]).reshape(shape) if "omega" in d else None
         self.status = "certified" if method == "certified" else "numeric"
+        self._kind = method
         self.method = ("closed form (44), MPFI at 128 bits at each w's exact binary value: Im enclosures rounded outward"
                        if method == "certified" else
                        "closed form (44) in double: Im = -(T/2)/tan(fl(wT)/2), within 1.51 eps plus the rounding of wT "
                        "(sampling/r_forms.hpp); lo/hi state that band, not a proof")
+
+    @property
+    def shape(self) -> tuple:
+        return self.im.shape
 
     @property
     def value(self):
@@ -207,12 +259,35 @@ class RArray:
     def hi(self):
         return self.re + 1j * self.im_hi
 
-    def __array__(self, dtype=None):
+    def __array__(self, dtype=None, copy=None):
         import numpy as np
         return np.asarray(self.value, dtype=dtype)
 
     def __len__(self) -> int:
         return len(self.im)
+
+    def __getitem__(self, index: Any) -> Any:
+        import numpy as np
+        im, lo, hi = self.im[index], self.im_lo[index], self.im_hi[index]
+        if np.ndim(im) == 0:
+            from ._exact import to_fraction
+            re = to_fraction(self.re_exact)
+            re_rec = {"value_exact": self.re_exact, "mid": float(re), "lo": float(self.re), "hi": float(self.re),
+                      "lo_text": self.re_exact, "hi_text": self.re_exact, "status": "exact",
+                      "method": "Re r = -T/2, exact", "note": ""}
+            im_rec = {"value_exact": None, "mid": float(im), "lo": float(lo), "hi": float(hi), "lo_text": None,
+                      "hi_text": None, "status": self.status, "method": self.method, "note": ""}
+            return R({"re": re_rec, "im": im_rec, "series_re": None, "series_im": None, "series_terms": 0,
+                      "series_error_bound": None, "re_text": self.re_exact, "im_text": repr(float(im))},
+                     status=self.status, method=self.method)
+        out = RArray.__new__(RArray)
+        out.__dict__.update(self.__dict__)
+        out.im, out.im_lo, out.im_hi = im, lo, hi
+        return out
+
+    def __iter__(self):
+        for i in range(len(self)):
+            yield self[i]
 
     def __repr__(self) -> str:
         return f"hapstab.RArray(shape={self.im.shape}, status={self.status!r})"
@@ -259,7 +334,7 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
     MaxPassiveGain: sup{K0 : b > b*(K) for 0 <= K < K0}, certified (exact where rational), with
     the closed form of Secs. VI-VII that applies; check=True adds b* at the ends of its enclosure
     (b* = b there). Arrays in params (the other parameters) or in damping give a ResultArray."""
-    delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
+    delay = integer(delay, "delay", 0, _core.CRITERION_DELAY, _DELAY_HINT)
     digits = integer(digits, "digits", 10, 280)
     grid_points = 100000 if grid_points is None else integer(grid_points, "grid_points", 2, 100000000)
     if not isinstance(allow_noncausal, bool):
@@ -276,6 +351,7 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
                           max, check)
     if check is not False:
         raise InputError("check: b* at the ends of the answer's enclosure belongs to max='K' (pass max=...)")
+    _check_names(params, [(H, "z")])
     fixed, names, columns, shape, arrays = _params(params)
     if shape is not None:
         if damping is not None:
@@ -318,6 +394,7 @@ def _bound_max(H: Any, T_text: str, delay: int, frac: Optional[str], eta_text: s
     if not isinstance(H, str):
         raise InputError(f"max={name!r}: H must be an expression string in {name} (it is split as H0 + {name} H1), "
                          f"got {type(H).__name__}")
+    _check_names(params, [(H, "z")], name)
     fixed, names, columns, shape, arrays = _params(params)
     if _is_array(damping):
         b = np.asarray(damping)
@@ -359,6 +436,7 @@ def wedge(H: Any, T: Any = None, digits: int = 20, params: Optional[Mapping[str,
     (T only when the expression names T)."""
     digits = integer(digits, "digits", 1, 60)
     T_text = period_of(H, T) or "1"  # H(z) alone does not depend on T unless the expression names it
+    _check_names(params, [(H, "z")])
     Htf = _call(transfer_function, H, T_text, params, "H")
     d = _call(_core.wedge, Htf, digits)
     wedge_c, tsypkin_c = (dict(d[k]) for k in ("wedge", "tsypkin"))
@@ -377,12 +455,28 @@ def wedge(H: Any, T: Any = None, digits: int = 20, params: Optional[Mapping[str,
 
 # ---- stability of the sampled loop -----------------------------------------------------------
 
-def _text(H: Any, what: str) -> str:
+def _text(H: Any, what: str, T_text: Optional[str] = None) -> str:
+    """H(z) as an expression: a str, a TransferFunction, or a system object / (num, den) pair
+    (exact coefficients, its dt checked against T)."""
     if isinstance(H, str):
         return H
     if isinstance(H, _core.TransferFunction):
         return str(H)
-    raise TypeError(f"{what}: expected an expression string or a hapstab.TransferFunction, got {type(H).__name__}")
+    if is_system(H) or (isinstance(H, (tuple, list)) and len(H) == 2):
+        return str(_call(transfer_function, H, T_text, None, what))
+    raise TypeError(f"{what}: expected an expression string, a hapstab.TransferFunction, (num, den) or a system "
+                    f"object (num, den, dt), got {type(H).__name__}")
+
+
+def _plant_text(P: Any, what: str = "plant") -> Any:
+    """The device P(s) (or the operator's Z_op(s)): an expression in s, or a continuous-time system
+    object (num, den; dt 0 or None)."""
+    if P is None or isinstance(P, str):
+        return P
+    if is_system(P):
+        return _call(continuous_text, P, what)
+    raise TypeError(f"{what}: expected an expression string in s or a continuous-time system object (num, den), got "
+                    f"{type(P).__name__}")
 
 
 def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: int = 0, operator: Optional[str] = None,
@@ -402,11 +496,13 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
     certified or exact, with the blocks' hidden modes (hidden_modes). Arrays in params: a
     ResultArray (stable, verdict_status, states, evidence), on threads.
 
-    scene=S with max="NAME": the largest NAME with the loop as written stable, as `hapstab
-    stability --scene S --max NAME` (the command runs it, so the numbers are its own): a MaxGain
-    whose extras are the command's JSON keys (path, stable_on or change_in, crossing, ...); with
-    conservatism=True also Theorem 5's largest NAME (theorem5: its bracket, what decided each end)
-    and the ratio exact / Theorem 5 (conservatism: [lo, hi] as decimal strings, or None). One
+    scene=S with max="NAME": the largest NAME with the loop as written stable, by the library's
+    functions `hapstab stability --scene S --max NAME` calls (stability/loop_max.hpp; a one-DOF
+    scene stability::max_gain; the bisection on certified verdicts where the loop is not affine in
+    NAME): a MaxGain whose value is the supremum where it is proven (status certified or exact),
+    else status 'undecided' and value NaN with what is proven beside it (stable_on, change_in);
+    with conservatism=True also Theorem 5's largest NAME (theorem5: its bracket, what decided
+    each end) and the ratio exact / Theorem 5 (conservatism: (lo, hi) decimal strings, or None). One
     point per call (params scalars); `hapstab.sweep` runs grids."""
     if not isinstance(conservatism, bool):
         raise InputError(f"conservatism: expected True or False, got {conservatism!r}")
@@ -419,14 +515,16 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
         return _stability_scene(scene, plant, H, T, delay, operator, max, params, jobs)
     if plant is None or H is None:
         raise InputError("give plant and H (the device and the wall), or scene=... (a scene's loop as written)")
-    delay = integer(delay, "delay", 0, 1000, _DELAY_HINT)
+    delay = integer(delay, "delay", 0, _core.CRITERION_DELAY, _DELAY_HINT)
     digits = integer(digits, "digits", 1, 1000)
     T_text = period_of(H, T)
     if T_text is None:
         raise InputError("T is required (the sample period)")
     if max is not None and not isinstance(max, str):
         raise InputError(f"max: expected the name of a gain (a str), got {max!r}")
-    H_text = _text(H, "H")
+    H_text = _text(H, "H", T_text)
+    plant, operator = _plant_text(plant), _plant_text(operator, "operator")
+    _check_names(params, [(plant, "s"), (H_text, "z"), (operator, "s")], max)
     fixed, names, columns, shape, arrays = _params(params)
     if shape is not None:
         d = _call(_core.stability_many, plant, H_text, operator, T_text, delay, max, digits, fixed, names, columns,
@@ -437,7 +535,7 @@ def stability(plant: Optional[str] = None, H: Any = None, T: Any = None, delay: 
     d = _call(_core.stability, plant, H_text, operator, T_text, delay, max, digits, fixed)
     if max is not None:
         rec = d["max"] or {"value_exact": None, "mid": float("nan"), "lo": float("nan"), "hi": float("nan"),
-                           "lo_text": None, "hi_text": None, "status": "failed", "method": "stability::max_gain",
+                           "lo_text": None, "hi_text": None, "status": "undecided", "method": "stability::max_gain",
                            "note": d["note"]}
         extra = {k: d.get(k) for k in ("name", "outcome", "crossing", "theta", "omega", "precision_bits")}
         return MaxGain(rec, **extra)
@@ -479,29 +577,12 @@ def _stability_scene(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operato
     return Stability(rec, **extra)
 
 
-def _outward(text: Optional[str], direction: int) -> float:
-    """The float nearest the decimal `text` on its outer side (direction -1: below, +1: above)."""
-    import math
-    from fractions import Fraction
-    if text is None:
-        return float("nan")
-    if text in ("inf", "-inf"):
-        return float(text)
-    q = Fraction(text)
-    f = float(q)
-    if Fraction(f) != q and (Fraction(f) > q) != (direction > 0):
-        f = math.nextafter(f, direction * math.inf)
-    return f
-
-
 def _stability_scene_max(scene: Any, plant: Any, H: Any, T: Any, delay: Any, operator: Any, name: Any, digits: Any,
                          params: Optional[Mapping[str, Any]], conservatism: bool):
-    """stability(scene=..., max=NAME[, conservatism=True]): `hapstab stability --scene S --max NAME
-    [--conservatism] --json`, run by the command itself (stability/loop_max.hpp, or the bisection on
-    certified verdicts where the loop is not affine in NAME; conservatism/theorem5_max.hpp)."""
-    import json
-    import tempfile
-    from fractions import Fraction
+    """stability(scene=..., max=NAME[, conservatism=True]): the library's functions the command
+    `hapstab stability --scene S --max NAME [--conservatism]` calls (python/bind_stability.cpp:
+    stability/loop_max.hpp, or the bisection on certified verdicts where the loop is not affine in
+    NAME, conservatism/theorem5_max.hpp)."""
     given = [k for k, v in (("plant", plant), ("H", H), ("T", T), ("operator", operator)) if v is not None]
     if delay != 0:
         given.append("delay")
@@ -515,36 +596,11 @@ def _stability_scene_max(scene: Any, plant: Any, H: Any, T: Any, delay: Any, ope
         raise InputError(f"max={name!r} with scene: one point per call (scalar params); hapstab.sweep runs a grid of them "
                          f"(command 'stability', args scene, max, conservatism)")
     s = _SceneFile(scene)
-    with tempfile.TemporaryDirectory() as tmp:
-        path = s.path
-        if path is None:  # text: a file of its own (a text scene's relative paths are relative to the working folder)
-            path = os.path.join(tmp, "scene.toml")
-            with open(path, "w", encoding="utf-8") as f:
-                f.write(s.text)
-        args = ["stability", "--scene", path, "--max", name, "--digits", str(digits), "--json"]
-        for k, v in fixed.items():
-            args += ["--set", f"{k}={v}"]
-        if conservatism:
-            args.append("--conservatism")
-        code, text = _core.run(args)
-    d = json.loads(text) if text is not None else {}
-    if "change_in" in d:  # not affine in NAME: a change of the certified verdict, not a proven supremum
-        lo_t, hi_t = d["change_in"] if d["change_in"] else (None, None)
-        value_exact, mid = None, float("nan")
-    else:
-        enc = d.get("sup_enclosure") or d.get("enclosure")
-        lo_t, hi_t = enc if enc else (d.get("max"), d.get("max"))
-        value_exact = d.get("exact")
-        mid = float(Fraction(d["max"])) if d.get("max") not in (None, "", "inf") else float(d.get("max") or "nan")
-    rec = {"value_exact": value_exact, "mid": mid, "lo": _outward(lo_t, -1), "hi": _outward(hi_t, 1), "lo_text": lo_t,
-           "hi_text": hi_t, "status": d.get("status", "failed"),
-           "method": "hapstab stability --scene --max" + (" --conservatism" if conservatism else "") + " (" +
-                     str(d.get("path", "")) + ")", "note": d.get("note", "")}
-    extra = {k: v for k, v in d.items() if k not in ("status", "note")}
-    extra["exit_code"] = code
-    extra.setdefault("conservatism", None)
-    extra.setdefault("theorem5", None)
-    return MaxGain(rec, **extra)
+    d = _call(_core.stability_scene_max, s.text if s.text is not None else s.path, s.text is not None, fixed, name,
+              digits, conservatism)
+    rec = d.pop("record")
+    rec["note"] = d.pop("note", rec.get("note", ""))
+    return MaxGain(rec, **d)
 
 
 # ---- paper 000: passivity levels ---------------------------------------------------------------
@@ -572,17 +628,22 @@ def passivity_level(H: Any = None, T: Any = None, ss: Any = None, kind: str = "o
             raise InputError("params: ss=(A, B, C, D) holds numbers; params name parameters of an expression H")
         if isinstance(ss, _core.StateSpace):
             model = ss
+        elif is_state_space(ss):  # python-control's or scipy.signal's StateSpace: A, B, C, D, dt
+            T_ss = _call(system_period, ss, None if T is None else exact(T, "T"), "ss")
+            model = _call(state_space, ss.A, ss.B, ss.C, ss.D, T_ss)
         else:
             if T is None:
                 raise InputError("T is required with ss=(A, B, C, D)")
-            if len(ss) != 4:
-                raise InputError(f"ss: expected (A, B, C, D), got {len(ss)} items")
+            if not isinstance(ss, (tuple, list)) or len(ss) != 4:
+                raise InputError(f"ss: expected (A, B, C, D), a hapstab.StateSpace or a state-space object (A, B, C, D, "
+                                 f"dt), got {type(ss).__name__}")
             model = _call(state_space, *ss, T)
         d = _call(_core.passivity_level_ss, model, kind, backend, lemma, grid, digits)
     else:
         T_text = period_of(H, T)
         if T_text is None:
             raise InputError("T is required (the sample period)")
+        _check_names(params, [(H, "z")])
         fixed, names, columns, shape, arrays = _params(params)
         if shape is not None:
             d = _call(_core.passivity_level_many, _expression(H), T_text, fixed, names, columns, kind, backend, lemma,

@@ -5,16 +5,18 @@
 #   lo, hi       the enclosure rounded OUTWARD to floats (proven for exact/certified; for
 #                numeric the stated error band, not a proof)
 #   lo_exact, hi_exact   the same ends as exact decimal strings, rounded outward (or None)
-#   status       'exact' | 'certified' | 'numeric' | 'upper_bound' | 'failed';  method, note
-#   float(r)     float(value)
+#   status       'exact' | 'certified' | 'numeric' | 'upper_bound' | 'undecided' | 'failed';  method, note
+#   float(r)     float(value);  f"{r:.3f}", round(r, 3), np.asarray(r), np.isclose(r, x): the value
 #   r < x, r <= x, r > x, r >= x, r == x   decided by the enclosure, exactly (x: int, Fraction,
-#                float at its binary value, exact str, or a Result); raises UndecidedComparison
-#                when the enclosure does not decide it
+#                float (its shortest decimal), exact str, or a Result); raises UndecidedComparison
+#                when the enclosure does not decide it, and for a result that is not proven
+#                (numeric, undecided, failed: compare r.value explicitly)
 #   _repr_html_(), _repr_latex_()          notebook display
 # A vectorised call (an array in params, or an omega array for r) returns a ResultArray.
 import os
 from fractions import Fraction
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Type, Union
+from decimal import Decimal
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Type, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -22,14 +24,18 @@ import numpy.typing as npt
 from . import multidof as multidof
 
 __version__: str
-STATUS: Tuple[str, str, str, str]  # the int8 status codes of a ResultArray: exact, certified, numeric, failed
+STATUS: Tuple[str, str, str, str]  # the statuses a ResultArray's points take: exact, certified, numeric, failed
 
 class InputError(ValueError): ...
 class NumericalError(RuntimeError): ...
 class UndecidedComparison(ValueError): ...
 
-Exact = Union[int, Fraction, float, str]
-ExactOrArray = Union[Exact, Sequence[Exact], npt.NDArray[Any]]
+# a number, exact: a float is read as the shortest decimal that rounds to it (Fraction(x): its binary value)
+Exact = Union[int, Fraction, float, str, Decimal, np.integer[Any], np.floating[Any]]
+# an array: anything np.asarray takes with ndim >= 1 (list, numpy array, pandas Series, ...)
+ExactOrArray = Union[Exact, Sequence[Exact], npt.NDArray[Any], Any]
+ScalarParams = Mapping[str, Exact]
+Number = Union[int, Fraction, float, str, Decimal]  # what a result compares with (np.float64 is a float)
 Scene = Union[str, os.PathLike]
 
 class TransferFunction:
@@ -80,10 +86,13 @@ class Result:
     def note(self) -> str: ...
     def as_dict(self) -> Dict[str, Any]: ...
     def __float__(self) -> float: ...
-    def __lt__(self, other: Union[Exact, "Result"]) -> bool: ...
-    def __le__(self, other: Union[Exact, "Result"]) -> bool: ...
-    def __gt__(self, other: Union[Exact, "Result"]) -> bool: ...
-    def __ge__(self, other: Union[Exact, "Result"]) -> bool: ...
+    def __format__(self, spec: str) -> str: ...
+    def __round__(self, ndigits: Optional[int] = ...) -> Any: ...
+    def __array__(self, dtype: Any = ..., copy: Any = ...) -> npt.NDArray[np.float64]: ...
+    def __lt__(self, other: Union[Number, "Result"]) -> bool: ...
+    def __le__(self, other: Union[Number, "Result"]) -> bool: ...
+    def __gt__(self, other: Union[Number, "Result"]) -> bool: ...
+    def __ge__(self, other: Union[Number, "Result"]) -> bool: ...
     def __eq__(self, other: object) -> bool: ...
     def __ne__(self, other: object) -> bool: ...
     def _repr_html_(self) -> str: ...
@@ -128,13 +137,30 @@ class Stability(Result):
     def __bool__(self) -> bool: ...
 
 class MaxGain(Result):
-    """stability(..., max='K'): sup{K : stable on (0, sup)} (0: unstable for small K; inf)."""
+    """stability(..., max='K'): sup{K : stable on (0, sup)} (0: unstable for small K; inf). Status
+    'undecided' (value NaN) where the supremum is not proven; what is then proven is beside it."""
     name: str
-    outcome: str
-    crossing: str
+    outcome: str                  # 'holds' | 'fails' | 'undecided'
+    crossing: Any                 # 'z = 1' | 'z = -1' | 'complex pair'; scene=: {at, crossing, theta, omega, mode}
     theta: Optional[Tuple[float, float]]
     omega: Optional[Tuple[float, float]]
-    def __bool__(self) -> bool: ...
+    # stability(scene=..., max=...):
+    path: str                     # 'one_dof' | 'closed_loop_matrix' | 'bisection_on_verdicts' | 'hidden_modes'
+    supremum_proven: bool
+    stable_on: Optional[Tuple[str, str]]     # stable for every value in it (certified)
+    change_in: Optional[Tuple[str, str]]     # not affine: stable at its lower end, NOT stable at its upper end
+    stable_at: Any
+    unstable_at: Any
+    gap: Optional[float]
+    not_affine: Optional[str]
+    verdicts_outcome: str         # the bisection's: 'holds' (a certified bracket), 'fails', 'undecided'
+    states: int
+    fixed_modes: int
+    theorem5: Optional[Dict[str, Any]]       # conservatism=True: {bracket, concludes_at, not_at, note, programs, seconds}
+    conservatism: Optional[Tuple[str, str]]  # exact / Theorem 5: only where both regions are proven intervals
+    conservatism_note: Optional[str]
+    contradiction: bool
+    def __bool__(self) -> bool: ...  # raises UndecidedComparison when the supremum is not proven
 
 class MaxPassiveGain(Result):
     """bound(H, max='K', damping=b): sup{K0 : b > b*(K) for 0 <= K < K0}; 0 when b <= b*(0), inf
@@ -197,35 +223,47 @@ class RArray:
     @property
     def hi(self) -> npt.NDArray[np.complex128]: ...
     def __len__(self) -> int: ...
+    def __getitem__(self, index: Any) -> Any: ...   # R at a full index, RArray otherwise
+    def __iter__(self) -> Iterator[Any]: ...
+    def __array__(self, dtype: Any = ..., copy: Any = ...) -> npt.NDArray[np.complex128]: ...
 
 class ResultArray:
-    """A vectorised call: value, lo, hi (float64, the broadcast shape of params), status (int8,
-    STATUS[code]), exact (object: str or None), lo_exact/hi_exact (object: the ends as outward
+    """A vectorised call: value, lo, hi (float64, the broadcast shape of params), status (str, as
+    a scalar result's), exact (object: str or None), lo_exact/hi_exact (object: the ends as outward
     decimals, which decide a comparison the float ends straddle), error (object: str or None),
     params, method; b* adds omega, stability adds stable (int8: 1, 0, -1 undecided); bound(max=) adds
-    omega, b_at_zero; stability(scene=) adds verdict_status (int8 codes), states, evidence."""
+    omega, b_at_zero; stability(scene=) adds verdict_status (str: exact, certified, undecided),
+    states, evidence. r[i] (an index per axis) a Result, r[1:] a ResultArray; iteration over the
+    first axis; comparisons elementwise and honest; to_numpy() the values, to_table() the table."""
     shape: Tuple[int, ...]
     method: str
     params: Dict[str, npt.NDArray[Any]]
     value: npt.NDArray[np.float64]
     lo: npt.NDArray[np.float64]
     hi: npt.NDArray[np.float64]
-    status: npt.NDArray[np.int8]
+    status: npt.NDArray[np.str_]
     exact: npt.NDArray[np.object_]
     lo_exact: npt.NDArray[np.object_]
     hi_exact: npt.NDArray[np.object_]
     error: npt.NDArray[np.object_]
     @property
-    def status_names(self) -> npt.NDArray[np.object_]: ...
-    @property
     def failed(self) -> int: ...
+    @property
+    def ndim(self) -> int: ...
+    @property
+    def size(self) -> int: ...
     def __len__(self) -> int: ...
-    def __getitem__(self, index: Any) -> Result: ...
+    def __getitem__(self, index: Any) -> Any: ...   # a Result at a full index, a ResultArray otherwise
+    def __iter__(self) -> Iterator[Any]: ...
+    def __array__(self, dtype: Any = ..., copy: Any = ...) -> npt.NDArray[np.float64]: ...
+    def __eq__(self, other: object) -> npt.NDArray[np.bool_]: ...  # type: ignore[override]
+    def __ne__(self, other: object) -> npt.NDArray[np.bool_]: ...  # type: ignore[override]
     def __lt__(self, other: Any) -> npt.NDArray[np.bool_]: ...
     def __le__(self, other: Any) -> npt.NDArray[np.bool_]: ...
     def __gt__(self, other: Any) -> npt.NDArray[np.bool_]: ...
     def __ge__(self, other: Any) -> npt.NDArray[np.bool_]: ...
-    def to_numpy(self) -> npt.NDArray[np.void]: ...
+    def to_numpy(self) -> npt.NDArray[np.float64]: ...
+    def to_table(self) -> npt.NDArray[np.void]: ...
     def to_pandas(self) -> Any: ...
 
 class Simulation(Result):
@@ -315,24 +353,57 @@ def tf(H: TransferFunctionInput, T: Optional[Exact] = ..., params: Optional[Mapp
 def ss(A: Any, B: Any, C: Any, D: Any, T: Exact) -> StateSpace: ...
 def run(*args: str) -> Tuple[int, Optional[Dict[str, Any]]]: ...
 def examples_dir() -> str: ...
-def r(T: Exact, omega: ExactOrArray, digits: int = ..., terms: Optional[int] = ..., method: str = ...,
-      jobs: Optional[int] = ...) -> Union[R, RArray]: ...
+@overload
+def r(T: Exact, omega: Exact, digits: int = ..., terms: Optional[int] = ..., method: str = ...,  # type: ignore[misc]
+      jobs: Optional[int] = ...) -> R: ...
+@overload
+def r(T: Exact, omega: Union[Sequence[Exact], npt.NDArray[Any], Any], digits: int = ..., terms: Optional[int] = ...,
+      method: str = ..., jobs: Optional[int] = ...) -> RArray: ...
+# scalar params (or none): one result; arrays in params (or in damping): a ResultArray
+@overload
+def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,  # type: ignore[misc]
+          eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[ScalarParams] = ...,
+          damping: Optional[Exact] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
+          jobs: Optional[int] = ..., max: None = ..., check: bool = ...) -> Bound: ...
+@overload
+def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,  # type: ignore[misc]
+          eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[ScalarParams] = ...,
+          damping: Exact = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
+          jobs: Optional[int] = ..., *, max: str, check: bool = ...) -> MaxPassiveGain: ...
+@overload
 def bound(H: TransferFunctionInput, T: Optional[Exact] = ..., delay: int = ..., frac_delay: Optional[Exact] = ...,
           eta: Exact = ..., digits: int = ..., method: str = ..., params: Optional[Mapping[str, ExactOrArray]] = ...,
           damping: Optional[ExactOrArray] = ..., grid_points: Optional[int] = ..., allow_noncausal: bool = ...,
-          jobs: Optional[int] = ..., max: Optional[str] = ...,
-          check: bool = ...) -> Union[Bound, MaxPassiveGain, ResultArray]: ...
-def stability(plant: Optional[str] = ..., H: Optional[Union[str, TransferFunction]] = ..., T: Optional[Exact] = ...,
-              delay: int = ..., operator: Optional[str] = ..., max: Optional[str] = ..., digits: int = ...,
+          jobs: Optional[int] = ..., max: Optional[str] = ..., check: bool = ...) -> ResultArray: ...
+@overload
+def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,  # type: ignore[misc]
+              delay: int = ..., operator: Optional[Any] = ..., max: None = ..., digits: int = ...,
+              params: Optional[ScalarParams] = ..., jobs: Optional[int] = ..., *,
+              scene: Optional[Scene] = ..., conservatism: bool = ...) -> Stability: ...
+@overload
+def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,  # type: ignore[misc]
+              delay: int = ..., operator: Optional[Any] = ..., *, max: str, digits: int = ...,
+              params: Optional[ScalarParams] = ..., jobs: Optional[int] = ...,
+              scene: Optional[Scene] = ..., conservatism: bool = ...) -> MaxGain: ...
+@overload
+def stability(plant: Optional[Any] = ..., H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,
+              delay: int = ..., operator: Optional[Any] = ..., max: Optional[str] = ..., digits: int = ...,
               params: Optional[Mapping[str, ExactOrArray]] = ..., jobs: Optional[int] = ..., *,
-              scene: Optional[Scene] = ..., conservatism: bool = ...) -> Union[Stability, MaxGain, ResultArray]: ...
+              scene: Optional[Scene] = ..., conservatism: bool = ...) -> ResultArray: ...
 def wedge(H: TransferFunctionInput, T: Optional[Exact] = ..., digits: int = ...,
           params: Optional[Mapping[str, Exact]] = ...) -> Wedge: ...
+@overload
+def passivity_level(H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,  # type: ignore[misc]
+                    ss: Optional[Union[StateSpace, Sequence[Any], Any]] = ..., kind: str = ...,
+                    backend: Optional[str] = ..., lemma: Optional[int] = ..., grid: Optional[int] = ...,
+                    digits: Optional[int] = ..., params: Optional[ScalarParams] = ...,
+                    jobs: Optional[int] = ...) -> PassivityLevel: ...
+@overload
 def passivity_level(H: Optional[TransferFunctionInput] = ..., T: Optional[Exact] = ...,
-                    ss: Optional[Union[StateSpace, Sequence[Any]]] = ..., kind: str = ..., backend: Optional[str] = ...,
-                    lemma: Optional[int] = ..., grid: Optional[int] = ..., digits: Optional[int] = ...,
-                    params: Optional[Mapping[str, ExactOrArray]] = ...,
-                    jobs: Optional[int] = ...) -> Union[PassivityLevel, ResultArray]: ...
+                    ss: Optional[Union[StateSpace, Sequence[Any], Any]] = ..., kind: str = ...,
+                    backend: Optional[str] = ..., lemma: Optional[int] = ..., grid: Optional[int] = ...,
+                    digits: Optional[int] = ..., params: Optional[Mapping[str, ExactOrArray]] = ...,
+                    jobs: Optional[int] = ...) -> ResultArray: ...
 def simulate(scene: Scene, *, force: bool = ..., max_output: Optional[float] = ..., **overrides: Exact) -> Simulation: ...
 
 class Sweep(np.ndarray):

@@ -7,19 +7,28 @@ A scalar result is a Result (a number with its enclosure):
                is exact or certified; for numeric, the stated error band, not a proof)
     lo_exact, hi_exact   the same ends as exact decimal strings, rounded outward (None where
                the method states no end)
-    status     'exact' | 'certified' | 'numeric' | 'upper_bound' | 'failed'
+    status     'exact' | 'certified' | 'numeric' | 'upper_bound' | 'undecided' | 'failed'
+               ('undecided': the quantity is not proven, value NaN; what is proven is beside it)
     method     how it was computed;  note  caveats
     float(r)   float(value);  r < x, r <= x, r == x, ...  decided by the enclosure, exactly
-               (x an int, Fraction, float at its binary value, exact str, or another Result):
-               a comparison the enclosure cannot decide raises UndecidedComparison, saying so
+               (x an int, Fraction, float, exact str, or another Result): a comparison the
+               enclosure cannot decide raises UndecidedComparison, saying so. A result that is
+               not proven (status numeric, undecided, failed) decides no comparison: it raises
+               UndecidedComparison saying so; compare its estimate explicitly (r.value < x)
+    f"{r:.3f}", round(r, 3), np.asarray(r), np.isclose(r, x)   the value as a number (a float
+               for a format spec and for numpy; round() keeps a Fraction exact); numpy's
+               comparison ufuncs (np.less(x, r), np.float64(x) < r) are the honest comparisons
     _repr_html_ / _repr_latex_   for notebooks
 
 A vectorised call (an array in params, or an omega array) returns a ResultArray: value, lo, hi
-as float64 arrays of the broadcast shape, status as int8 codes (STATUS names them), exact (the
-exact values as strings, None where not exact), lo_exact/hi_exact (the ends as outward decimals:
-they decide a comparison the float ends straddle), error (why a point failed, None where it ran);
-r[i] is point i as a Result, comparisons are elementwise (raising when an element is undecided),
-np.asarray(r) is the value array, to_numpy() a structured array and to_pandas() a DataFrame.
+as float64 arrays of the broadcast shape, status as strings (the names of STATUS, as a scalar
+result's), exact (the exact values as strings, None where not exact), lo_exact/hi_exact (the ends
+as outward decimals: they decide a comparison the float ends straddle), error (why a point
+failed, None where it ran); r[i] (every index given) is point i as a Result, r[1:] / r[mask] /
+r[0] of a 2-D array a ResultArray, `for x in r` iterates over the first axis; comparisons
+(<, <=, >, >=, ==, !=) are elementwise and decided by the enclosures (raising when an element is
+undecided or not proven); np.asarray(r) and to_numpy() are the value array, to_table() the
+structured array (parameters, value, lo, hi, status, ...) and to_pandas() a DataFrame of it.
 """
 from __future__ import annotations
 
@@ -28,12 +37,30 @@ import math
 from fractions import Fraction
 from typing import Any, Dict, Optional, Tuple
 
-STATUS = ("exact", "certified", "numeric", "failed")
+STATUS = ("exact", "certified", "numeric", "failed")  # a ResultArray's status names (one per point)
+_DECIDES = ("exact", "certified", "upper_bound")  # the statuses whose lo/hi are proven: comparisons decide
 
 
 class UndecidedComparison(ValueError):
     """A comparison whose answer the enclosure of a result does not decide (the number compared
-    with lies inside it). Ask for more digits, or compare .lo/.hi yourself."""
+    with lies inside it), or a comparison with a result that is not proven (status numeric,
+    undecided or failed: its lo/hi are an estimate or absent). Ask for more digits or a
+    certified method, or compare the numbers yourself (r.value < x, r.lo > x)."""
+
+
+_COMPARISON_UFUNCS = {"less": ("<", ">"), "less_equal": ("<=", ">="), "greater": (">", "<"),
+                      "greater_equal": (">=", "<="), "equal": ("==", "=="), "not_equal": ("!=", "!=")}
+
+
+def _not_proven(name: str, status: str, method: str, note: str, op: str) -> UndecidedComparison:
+    """The error of a comparison with a result that is not proven."""
+    why = {"numeric": "its lo/hi are an estimated error band, not a proven enclosure",
+           "undecided": "it is not proven (what is proven is in its other fields)",
+           "failed": "it failed" + (f" ({note})" if note else "")}.get(status, f"its status is {status}")
+    return UndecidedComparison(
+        f"cannot decide {name} {op} x: the result is {status} ({method}): {why}. hapstab decides comparisons only "
+        f"on proven enclosures (status exact or certified): ask for one (method='certified', the default where the "
+        f"function has it), or compare the estimate explicitly: r.value {op} x")
 
 
 def _exact_of(x: Any) -> Any:
@@ -137,9 +164,9 @@ class Result:
         return float(self.value)
 
     # ---- honest comparisons --------------------------------------------------------------------
-    def _bounds(self) -> Tuple[Any, Any]:
-        if self.status == "failed" or math.isnan(self._rec["lo"]):
-            raise UndecidedComparison(f"{self._name} failed ({self.note}): nothing to compare")
+    def _bounds(self, op: str = "<") -> Tuple[Any, Any]:
+        if self.status not in _DECIDES or math.isnan(self._rec["lo"]) or math.isnan(self._rec["hi"]):
+            raise _not_proven(self._name, self.status, self.method, self.note, op)
         return _end(self.lo_exact, self._rec["lo"]), _end(self.hi_exact, self._rec["hi"])
 
     def _other(self, other: Any) -> Tuple[Any, Any]:
@@ -155,7 +182,7 @@ class Result:
             f"does not lie on one side of it (ask for more digits, or compare .lo / .hi)")
 
     def __lt__(self, other: Any) -> bool:
-        lo, hi = self._bounds()
+        lo, hi = self._bounds("<")
         olo, ohi = self._other(other)
         if hi < olo:
             return True
@@ -164,7 +191,7 @@ class Result:
         raise self._undecided("<", other)
 
     def __le__(self, other: Any) -> bool:
-        lo, hi = self._bounds()
+        lo, hi = self._bounds("<=")
         olo, ohi = self._other(other)
         if hi <= olo:
             return True
@@ -173,7 +200,7 @@ class Result:
         raise self._undecided("<=", other)
 
     def __gt__(self, other: Any) -> bool:
-        lo, hi = self._bounds()
+        lo, hi = self._bounds(">")
         olo, ohi = self._other(other)
         if lo > ohi:
             return True
@@ -182,7 +209,7 @@ class Result:
         raise self._undecided(">", other)
 
     def __ge__(self, other: Any) -> bool:
-        lo, hi = self._bounds()
+        lo, hi = self._bounds(">=")
         olo, ohi = self._other(other)
         if lo >= ohi:
             return True
@@ -191,7 +218,7 @@ class Result:
         raise self._undecided(">=", other)
 
     def __eq__(self, other: Any) -> bool:  # type: ignore[override]
-        lo, hi = self._bounds()
+        lo, hi = self._bounds("==")
         olo, ohi = self._other(other)
         if hi < olo or lo > ohi:
             return False
@@ -203,6 +230,40 @@ class Result:
         return not self.__eq__(other)
 
     __hash__ = None  # type: ignore[assignment]
+
+    # ---- a number for Python and numpy ---------------------------------------------------------
+    def __format__(self, spec: str) -> str:
+        """f"{r}" is repr(r); f"{r:.3f}" formats float(r) (the value, a display)."""
+        return str(self) if not spec else format(float(self), spec)
+
+    def __round__(self, ndigits: Optional[int] = None) -> Any:
+        """round(r, n): round(r.value, n) (a Fraction stays exact)."""
+        return round(self.value) if ndigits is None else round(self.value, ndigits)
+
+    def __array__(self, dtype: Any = None, copy: Any = None) -> Any:
+        """np.asarray(r): a 0-d float64 array of float(r) (np.isclose(r, x), np.array([r1, r2]))."""
+        import numpy as np
+        return np.asarray(float(self), dtype=dtype)
+
+    def __array_ufunc__(self, ufunc: Any, method: str, *inputs: Any, **kwargs: Any) -> Any:
+        """numpy's comparison ufuncs (np.float64(6) > r, np.less(xs, r)) are the honest comparisons
+        (elementwise over an array of numbers); any other ufunc sees float(r)."""
+        import numpy as np
+        ops = _COMPARISON_UFUNCS.get(ufunc.__name__)
+        if ops is not None and method == "__call__" and len(inputs) == 2 and not kwargs:
+            a, b = inputs
+            mine, other, op = (a, b, ops[0]) if a is self else (b, a, ops[1])
+            import operator
+            fn = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge, "==": operator.eq,
+                  "!=": operator.ne}[op]
+            if isinstance(other, (Result, ResultArray)) or np.ndim(other) == 0:
+                if isinstance(other, ResultArray):
+                    return NotImplemented
+                return np.bool_(fn(mine, other if isinstance(other, Result) else np.asarray(other).item()))
+            xs = np.asarray(other)
+            return np.vectorize(lambda x: fn(mine, x), otypes=[bool])(xs)
+        args = [float(x) if isinstance(x, Result) else x for x in inputs]
+        return getattr(ufunc, method)(*args, **kwargs)
 
     # ---- display -------------------------------------------------------------------------------
     def _value_text(self) -> str:
@@ -279,12 +340,20 @@ class MaxGain(Result):
     """The largest stable gain of the sampled loop (stability(..., max='K')): sup{K : stable on
     (0, sup)}; 0 when unstable for every small K, inf when stable for every K. Besides the
     protocol: name, outcome, crossing ('z = 1', 'z = -1', 'complex pair'), theta and omega
-    (enclosures of the crossing, rad and rad/s), bool(r): a positive supremum exists."""
+    (enclosures of the crossing, rad and rad/s), bool(r): a positive supremum exists (raises
+    UndecidedComparison when the supremum is not proven: status undecided or failed).
+
+    With scene=...: also path, supremum_proven, stable_on (proven stable there, also when the
+    supremum is undecided), change_in (not affine: stable at its lower end, NOT stable at its
+    upper end), stable_at, unstable_at, gap, not_affine, verdicts_outcome, states, fixed_modes,
+    theorem5, conservatism, conservatism_note, contradiction."""
 
     _symbol = r"K_{\max}"
     _name = "the largest stable gain"
 
     def __bool__(self) -> bool:
+        if self.status in ("undecided", "failed"):  # never counted as a yes or a no
+            raise UndecidedComparison(f"the largest stable gain is {self.status}: {self.note}")
         return self.outcome == "holds" and self.value != 0
 
     def _repr_extra(self) -> Dict[str, Any]:
@@ -365,7 +434,7 @@ class R:
     complex number, complex(r); lo/hi the corners of the box; the truncated series (34) beside
     (series_re, series_im, series_terms, series_error_bound: decimal strings)."""
 
-    def __init__(self, d: Dict[str, Any]) -> None:
+    def __init__(self, d: Dict[str, Any], status: str = "certified", method: Optional[str] = None) -> None:
         self.re = Result(d["re"])
         self.im = Result(d["im"])
         object.__setattr__(self.re, "_symbol", r"\mathrm{Re}\,r")
@@ -373,8 +442,9 @@ class R:
         self.series_re, self.series_im = d["series_re"], d["series_im"]
         self.series_terms, self.series_error_bound = d["series_terms"], d["series_error_bound"]
         self.decimal = (d["re_text"], d["im_text"])
-        self.status = "certified"
-        self.method = "closed form (44): T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2); Re exact, Im from MPFI enclosures"
+        self.status = status
+        self.method = method or ("closed form (44): T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2); Re exact, Im from MPFI "
+                                 "enclosures")
 
     @property
     def value(self) -> complex:
@@ -395,11 +465,11 @@ class R:
         raise TypeError("r(jw) is complex: use complex(r), r.re or r.im")
 
     def __repr__(self) -> str:
-        return f"hapstab.R(re={self.decimal[0]!r}, im={self.decimal[1]!r}, status='re exact, im certified')"
+        return f"hapstab.R(re={self.decimal[0]!r}, im={self.decimal[1]!r}, status='re exact, im {self.status}')"
 
     def _repr_latex_(self) -> str:
         return rf"$r(j\omega) = {self.decimal[0]} {'-' if self.decimal[1].startswith('-') else '+'} " \
-               rf"{self.decimal[1].lstrip('-')}\,j$ \quad (Re exact, Im certified)"
+               rf"{self.decimal[1].lstrip('-')}\,j$ \quad (Re exact, Im {self.status})"
 
 
 class Simulation(Result):
@@ -473,26 +543,44 @@ class Design(Result):
         return {"feasible": self._extra.get("feasible"), "certified": self._extra.get("certified")}
 
 
+_VERDICT = ("exact", "certified", "numeric", "undecided")  # a stability array's verdict_status (code 3: undecided)
+_CORE = ("value", "lo", "hi", "status", "exact", "lo_exact", "hi_exact", "error")
+
+
 class ResultArray:
-    """The results of a vectorised call (module docstring): value, lo, hi (float64), status (int8
-    codes, STATUS[code] names them), exact (object: str or None), error (object: str or None),
-    method, params (the inputs, broadcast), and the function's own columns (omega for b*)."""
+    """The results of a vectorised call (module docstring): value, lo, hi (float64), status (str:
+    'exact', 'certified', 'numeric', 'failed', as a scalar result's), exact (object: str or None),
+    error (object: str or None), method, params (the inputs, broadcast), and the function's own
+    columns (omega for b*)."""
 
     def __init__(self, kind: type, columns: Dict[str, Any], shape: Tuple[int, ...], method: str,
                  params: Dict[str, Any]) -> None:
         import numpy as np
+        cols = {k: (np.asarray(v).reshape(shape) if hasattr(v, "__len__") else v) for k, v in columns.items()}
+        # one status type everywhere: the names, as a scalar result's status and a sweep's column
+        cols["status"] = np.array(STATUS)[cols["status"]]
+        if "verdict_status" in cols:
+            cols["verdict_status"] = np.array(_VERDICT)[cols["verdict_status"]]
+        self._set(kind, cols, tuple(shape), method, {k: np.broadcast_to(np.asarray(v), shape) for k, v in params.items()})
+
+    def _set(self, kind: type, columns: Dict[str, Any], shape: Tuple[int, ...], method: str,
+             params: Dict[str, Any]) -> None:
         self._kind = kind
         self.shape = shape
         self.method = method
         self.params = params
-        self._columns = {k: (np.asarray(v).reshape(shape) if hasattr(v, "__len__") else v) for k, v in columns.items()}
-        for k, v in self._columns.items():
+        self._columns = columns
+        for k, v in columns.items():
             setattr(self, k, v)
 
     @property
-    def status_names(self):
+    def ndim(self) -> int:
+        return len(self.shape)
+
+    @property
+    def size(self) -> int:
         import numpy as np
-        return np.array(STATUS, dtype=object)[self.status]
+        return int(np.prod(self.shape, dtype=np.int64))
 
     @property
     def failed(self) -> int:
@@ -503,111 +591,164 @@ class ResultArray:
     def __len__(self) -> int:
         return self.shape[0] if self.shape else 1
 
-    def __array__(self, dtype=None):
+    def __array__(self, dtype: Any = None, copy: Any = None) -> Any:
         import numpy as np
         return np.asarray(self.value, dtype=dtype)
 
-    def __getitem__(self, index: Any) -> Result:
-        """Point `index` as a scalar Result."""
+    def to_numpy(self) -> Any:
+        """The values, a float64 array of the broadcast shape (a copy; what np.asarray(r) gives)."""
         import numpy as np
-        i = np.ravel_multi_index(index if isinstance(index, tuple) else (index,), self.shape) if self.shape else 0
-        flat = {k: v.ravel()[i] for k, v in self._columns.items()}
-        status = STATUS[int(flat["status"])]
+        return np.array(self.value, dtype=np.float64)
+
+    # ---- indexing and iteration ------------------------------------------------------------------
+    def _point(self, i: Tuple[int, ...]) -> Result:
+        flat = {k: (v[i] if hasattr(v, "shape") and v.shape == self.shape else v) for k, v in self._columns.items()}
         rec = {"value_exact": flat.get("exact"), "mid": float(flat["value"]), "lo": float(flat["lo"]),
                "hi": float(flat["hi"]), "lo_text": flat.get("lo_exact"), "hi_text": flat.get("hi_exact"),
-               "status": status, "method": self.method, "note": flat.get("error") or ""}
-        extra = {k: flat[k] for k in self._columns
-                 if k not in ("value", "lo", "hi", "status", "exact", "lo_exact", "hi_exact", "error")}
-        extra.update({name: np.broadcast_to(np.asarray(v), self.shape).ravel()[i] for name, v in self.params.items()})
+               "status": str(flat["status"]), "method": self.method, "note": flat.get("error") or ""}
+        extra = {k: flat[k] for k in self._columns if k not in _CORE}
+        if "verdict_status" in extra:
+            extra["verdict_status"] = str(extra["verdict_status"])
+        extra.update({name: v[i] for name, v in self.params.items()})
         return self._kind(rec, **extra)
 
-    # elementwise comparisons, decided by the enclosures
-    def _compare(self, op: str, other: Any):
+    def __getitem__(self, index: Any) -> Any:
+        """r[i] (an index for every axis): point i as a scalar Result; any other index (a slice,
+        a mask, an index array, one index of a 2-D array): the ResultArray of those points."""
+        import numpy as np
+        where = np.arange(self.size).reshape(self.shape)[index]
+        if np.ndim(where) == 0:
+            return self._point(np.unravel_index(int(where), self.shape))
+        out = ResultArray.__new__(ResultArray)
+        out._set(self._kind, {k: (v[index] if hasattr(v, "shape") and v.shape == self.shape else v)
+                              for k, v in self._columns.items()},
+                 where.shape, self.method, {k: v[index] for k, v in self.params.items()})
+        return out
+
+    def __iter__(self) -> Any:
+        """Over the first axis: Results of a 1-D array, ResultArrays of the rows of a 2-D one."""
+        for i in range(len(self)):
+            yield self[i]
+
+    # ---- elementwise comparisons, decided by the enclosures ------------------------------------
+    def _compare(self, op: str, other: Any) -> Any:
         import numpy as np
         if isinstance(other, (Result, ResultArray)):
             raise TypeError("compare a ResultArray with numbers (or a numpy array of numbers)")
         y = np.broadcast_to(np.asarray(other, dtype=np.float64), self.shape)
         lo, hi = self.lo, self.hi
-        bad = self.status == STATUS.index("failed")
+        bad = ~np.isin(self.status, _DECIDES)
         if op == "<":
             yes, no = hi < y, lo >= y
         elif op == "<=":
             yes, no = hi <= y, lo > y
         elif op == ">":
             yes, no = lo > y, hi <= y
-        else:
+        elif op == ">=":
             yes, no = lo >= y, hi < y
+        else:  # == (and != its negation): equal only where the enclosure is the point y itself
+            yes, no = (lo == y) & (hi == y), (hi < y) | (lo > y)
+        yes, no = np.array(yes), np.array(no)
         undecided = ~(yes | no) & ~bad
         # where the float ends straddle x (an end not a double, next to x), the exact ends decide
-        ends = getattr(self, "lo_exact", None), getattr(self, "hi_exact", None)
+        ends = self._columns.get("lo_exact"), self._columns.get("hi_exact")
         for i in map(tuple, np.argwhere(undecided)):
             if ends[0] is None or ends[0][i] is None or not np.isfinite(y[i]):
                 continue
             a, b, x = _end(ends[0][i], lo[i]), _end(ends[1][i], hi[i]), Fraction(float(y[i]))
-            yes_i = {"<": b < x, "<=": b <= x, ">": a > x, ">=": a >= x}[op]
-            no_i = {"<": a >= x, "<=": a > x, ">": b <= x, ">=": b < x}[op]
+            yes_i = {"<": b < x, "<=": b <= x, ">": a > x, ">=": a >= x, "==": a == b == x}[op]
+            no_i = {"<": a >= x, "<=": a > x, ">": b <= x, ">=": b < x, "==": b < x or a > x}[op]
             if yes_i or no_i:
                 yes[i], undecided[i] = yes_i, False
-        undecided |= bad
+        if bad.any():
+            first = tuple(np.argwhere(bad)[0])
+            status = str(self.status[first])
+            err = _not_proven(f"r[{', '.join(map(str, first))}]", status, self.method,
+                              str(self.error[first] or ""), op)
+            raise UndecidedComparison(f"{int(bad.sum())} of {bad.size} points are not proven (the first at index "
+                                      f"{tuple(int(i) for i in first)}"
+                                      + (": the point failed" if status == "failed" else "") + "); " + str(err))
         if undecided.any():
             n = int(undecided.sum())
-            first = np.argwhere(undecided)[0]
+            first = tuple(np.argwhere(undecided)[0])
             raise UndecidedComparison(
                 f"cannot decide {op} {other if np.ndim(other) == 0 else '(array)'} at {n} of {undecided.size} points "
                 f"(the first at index {tuple(int(i) for i in first)}: "
-                + ("the point failed" if bad[tuple(first)] else
-                   f"enclosure [{_fmt(float(lo[tuple(first)]))}, {_fmt(float(hi[tuple(first)]))}]")
+                f"enclosure [{_fmt(float(lo[first]))}, {_fmt(float(hi[first]))}]"
                 + "); the decided ones: (r.lo > x) | (r.hi <= x) ...")
         return yes
 
-    def __lt__(self, other: Any):
+    def __lt__(self, other: Any) -> Any:
         return self._compare("<", other)
 
-    def __le__(self, other: Any):
+    def __le__(self, other: Any) -> Any:
         return self._compare("<=", other)
 
-    def __gt__(self, other: Any):
+    def __gt__(self, other: Any) -> Any:
         return self._compare(">", other)
 
-    def __ge__(self, other: Any):
+    def __ge__(self, other: Any) -> Any:
         return self._compare(">=", other)
+
+    def __eq__(self, other: Any) -> Any:  # type: ignore[override]
+        return self._compare("==", other)
+
+    def __ne__(self, other: Any) -> Any:  # type: ignore[override]
+        return ~self._compare("==", other)
 
     __hash__ = None  # type: ignore[assignment]
 
-    def to_numpy(self):
-        """A structured numpy array: one field per parameter, then value, lo, hi, status (int8),
-        the function's own columns, exact and error (objects)."""
+    def __array_ufunc__(self, ufunc: Any, method: str, *inputs: Any, **kwargs: Any) -> Any:
+        """numpy's comparison ufuncs (np.float64(5) < r, np.less(x, r)) are the elementwise honest
+        comparisons; any other ufunc (np.log10(r), np.maximum(r, 0)) sees the value array."""
+        ops = _COMPARISON_UFUNCS.get(ufunc.__name__)
+        if ops is not None and method == "__call__" and len(inputs) == 2 and not kwargs:
+            a, b = inputs
+            if a is self and not isinstance(b, (Result, ResultArray)):
+                return self._compare(ops[0], b) if ops[0] != "!=" else ~self._compare("==", b)
+            if b is self and not isinstance(a, (Result, ResultArray)):
+                return self._compare(ops[1], a) if ops[1] != "!=" else ~self._compare("==", a)
+            raise TypeError("compare a ResultArray with numbers (or a numpy array of numbers)")
+        args = [x.value if isinstance(x, ResultArray) else float(x) if isinstance(x, Result) else x for x in inputs]
+        return getattr(ufunc, method)(*args, **kwargs)
+
+    # ---- tables --------------------------------------------------------------------------------
+    def to_table(self) -> Any:
+        """A structured numpy array of the points: one field per parameter, then value, lo, hi,
+        status (str), the function's own columns, exact and error (objects)."""
         import numpy as np
         names = list(self.params) + [k for k in self._columns]
-        arrays = [np.broadcast_to(np.asarray(v), self.shape) for v in self.params.values()] + list(self._columns.values())
+        arrays = [np.broadcast_to(np.asarray(v), self.shape) for v in self.params.values()] + \
+                 [np.broadcast_to(np.asarray(v), self.shape) for v in self._columns.values()]
         dtype = [(n, a.dtype) for n, a in zip(names, arrays)]
         out = np.empty(self.shape, dtype=dtype)
         for n, a in zip(names, arrays):
             out[n] = a
         return out
 
-    def to_pandas(self):
-        """The points as a pandas DataFrame (one row per point; Debian's python3-pandas)."""
+    def to_pandas(self) -> Any:
+        """The points as a pandas DataFrame (one row per point, the columns of to_table(); status
+        as strings, as a sweep's; Debian's python3-pandas)."""
         try:
             import pandas
         except ImportError as e:
-            raise ImportError("to_pandas() needs pandas (Debian: python3-pandas); to_numpy() has the same table") from e
-        table = self.to_numpy().ravel()
+            raise ImportError("to_pandas() needs pandas (Debian: python3-pandas); to_table() has the same table") from e
+        table = self.to_table().ravel()
         return pandas.DataFrame({n: table[n] for n in table.dtype.names})
 
-    def __repr__(self) -> str:
+    def _counts(self) -> Dict[str, int]:
         import numpy as np
-        counts = {STATUS[c]: int(n) for c, n in zip(*np.unique(self.status, return_counts=True))}
-        return (f"hapstab.ResultArray({self._kind.__name__}, shape={self.shape}, status={counts}, "
+        return {str(c): int(n) for c, n in zip(*np.unique(self.status, return_counts=True))}
+
+    def __repr__(self) -> str:
+        return (f"hapstab.ResultArray({self._kind.__name__}, shape={self.shape}, status={self._counts()}, "
                 f"failed={self.failed}, method={self.method!r})")
 
     def _repr_html_(self) -> str:
-        import numpy as np
-        rows = self.to_numpy().ravel()
+        rows = self.to_table().ravel()
         head = list(rows.dtype.names)
         show = rows[:10]
         cells = "".join("<tr>" + "".join(f"<td>{html.escape(str(r[n]))}</td>" for n in head) + "</tr>" for r in show)
         more = f"<p>... {rows.size - 10} more points</p>" if rows.size > 10 else ""
-        counts = {STATUS[c]: int(n) for c, n in zip(*np.unique(self.status, return_counts=True))}
-        return (f"<p>hapstab.ResultArray of {self._kind.__name__}, shape {self.shape}, status {counts}</p><table>"
+        return (f"<p>hapstab.ResultArray of {self._kind.__name__}, shape {self.shape}, status {self._counts()}</p><table>"
                 + "<tr>" + "".join(f"<th>{html.escape(n)}</th>" for n in head) + "</tr>" + cells + "</table>" + more)

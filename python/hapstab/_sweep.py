@@ -11,7 +11,8 @@ structured numpy array.
     >>> t.to_pandas()               # a pandas DataFrame (Debian's python3-pandas)
 
 The spec is a path, TOML text, or a dict of the same shape as the TOML file (given to the
-sweep as text: its messages call it "spec").
+sweep as text: its messages call it "spec"; a float in the dict is written as its shortest
+decimal string, 1e-3 -> "0.001", as every Python float is read).
 """
 from __future__ import annotations
 
@@ -32,8 +33,9 @@ def _toml_value(v: Any, where: str) -> str:
         return "true" if v else "false"
     if isinstance(v, int):
         return str(v)
-    if isinstance(v, float):  # hapstab refuses TOML floats (not exact): say how to give it
-        raise _core.InputError(f"spec {where}: {v!r} is a float; give it as a string ('0.001' or '1/1000'), exactly")
+    if isinstance(v, float):  # TOML floats are refused (not exact): the shortest decimal, as every Python float
+        from ._exact import exact
+        return json.dumps(exact(v, f"spec {where}"))
     if isinstance(v, (str, Fraction)):
         return json.dumps(str(v))  # a TOML basic string: JSON's escapes are TOML's
     if isinstance(v, (list, tuple)):

@@ -235,11 +235,11 @@ def test_num_den_tf_and_expression_agree_exactly():
         hapstab.bound(H, T="1/100")
 
 
-def test_floats_are_taken_at_their_exact_binary_value():
-    b = hapstab.bound(([0.1], [1]), T=1)
-    e = hapstab.bound(str(Fraction(0.1)), T=1)
-    assert b.value == e.value == Fraction(0.1) / 2 != Fraction(1, 20)
-    assert hapstab.bound((["0.1"], [1]), T=1).value == Fraction(1, 20)
+def test_floats_are_read_as_their_shortest_decimal():
+    # (issue 49) 0.1 is 1/10 as written; Fraction(0.1) asks for the binary value
+    assert hapstab.bound(([0.1], [1]), T=1).value == Fraction(1, 20) == hapstab.bound((["0.1"], [1]), T=1).value
+    b = hapstab.bound(([Fraction(0.1)], [1]), T=1)
+    assert b.value == hapstab.bound(str(Fraction(0.1)), T=1).value == Fraction(0.1) / 2 != Fraction(1, 20)
     assert hapstab.bound(WALL, T=1 / 1024, params=KB).value == Fraction(1000, 2048) + 5
 
 
@@ -270,13 +270,13 @@ def test_bound_over_a_k_array_equals_scalar_calls():
     K = np.linspace(0, 40000, 41) * 1.0001 + 0.3  # not only round stiffnesses: certified points too
     bs = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 5})
     assert isinstance(bs, hapstab.ResultArray) and bs.shape == (41,) and len(bs) == 41 and bs.failed == 0
-    assert bs.value.dtype == bs.lo.dtype == bs.hi.dtype == bs.omega.dtype == np.float64 and bs.status.dtype == np.int8
+    assert bs.value.dtype == bs.lo.dtype == bs.hi.dtype == bs.omega.dtype == np.float64 and bs.status.dtype.kind == "U"
     kinds = set()
     for i in range(41):
         one = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K[i], "B": 5})
         kinds.add(one.status)
         assert (bs.lo[i], bs.hi[i], bs.value[i]) == (one.lo, one.hi, float(one)), i
-        assert hapstab.STATUS[bs.status[i]] == one.status and bs.status_names[i] == one.status
+        assert bs.status[i] == one.status
         assert (bs.exact[i] is None) == (one.status != "exact")
         assert bs[i].status == one.status and bs[i].lo == one.lo and bs[i].K == K[i]
     assert kinds == {"exact", "certified"}, kinds  # both kinds of point were compared
@@ -287,8 +287,8 @@ def test_bound_over_a_k_array_equals_scalar_calls():
     fast = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 5}, method="fast")
     with pytest.raises(hapstab.UndecidedComparison, match="cannot decide"):
         fast < fast.value  # each estimate lies inside its stated band
-    table = bs.to_numpy()
-    assert table.dtype.names[:4] == ("K", "value", "lo", "hi") and table["status"].dtype == np.int8
+    table = bs.to_table()
+    assert table.dtype.names[:4] == ("K", "value", "lo", "hi") and table["status"].dtype.kind == "U"
 
 
 def test_arrays_broadcast_and_keep_their_shape():
@@ -298,7 +298,7 @@ def test_arrays_broadcast_and_keep_their_shape():
     assert bs.shape == (2, 3)
     expected = np.array([[F(str(k)) / 2000 + b for k in K] for b in (0, 5)], dtype=object)
     assert all(F(bs.exact[i, j]) == expected[i, j] for i in range(2) for j in range(3))
-    assert (bs.status == 0).all() and bs[1, 2].value == Fraction(15)
+    assert (bs.status == "exact").all() and bs[1, 2].value == Fraction(15)
     # the same as lists, and as exact strings / Fractions (an object array)
     again = hapstab.bound(WALL, T="1/1000", params={"K": [0, 1000, 20000], "B": [["0"], [Fraction(5)]]})
     assert np.array_equal(again.value, bs.value) and list(again.exact.ravel()) == list(bs.exact.ravel())
@@ -312,7 +312,7 @@ def test_arrays_broadcast_and_keep_their_shape():
 
 def test_a_failing_point_is_a_row_not_an_exception():
     bs = hapstab.bound("1/(z-c)", T="1/1000", params={"c": ["1/2", "2", "-1/4"]})
-    assert list(bs.status_names) == ["exact", "failed", "exact"] or bs.status[1] == 3
+    assert list(bs.status) == ["exact", "failed", "exact"]
     assert bs.failed == 1 and "unstable" in bs.error[1] and bs.error[0] is None
     assert math.isnan(bs.value[1]) and bs.value[0] == float(hapstab.bound("1/(z-0.5)", T="1/1000"))
     with pytest.raises(hapstab.UndecidedComparison, match="the point failed"):
@@ -328,13 +328,13 @@ def test_threads_give_the_serial_results_exactly():
     one = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, jobs=1)
     two = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, jobs=2)
     for f in ("value", "lo", "hi", "status", "omega"):
-        assert np.array_equal(getattr(one, f), getattr(two, f), equal_nan=True), f
+        assert np.array_equal(getattr(one, f), getattr(two, f), equal_nan=f != "status"), f
     assert list(one.exact) == list(two.exact)
-    counts = {s: int((one.status == hapstab.STATUS.index(s)).sum()) for s in ("exact", "certified")}
+    counts = {s: int((one.status == s).sum()) for s in ("exact", "certified")}
     assert min(counts.values()) >= MIN, counts
     fast1 = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, method="fast", jobs=1)
     fast2 = hapstab.bound(WALL, T="1/1000", delay=1, params={"K": K, "B": 3}, method="fast", jobs=2)
-    assert np.array_equal(fast1.value, fast2.value) and (fast1.status == 2).sum() >= MIN
+    assert np.array_equal(fast1.value, fast2.value) and (fast1.status == "numeric").sum() >= MIN
     # the fast path within its stated error of the certified value (13 digits, bound.hpp)
     cert = one.value
     assert np.all(np.abs(fast1.value - cert) <= 1e-12 * np.maximum(1, np.abs(cert)))
@@ -365,7 +365,7 @@ def test_r_arrays_double_and_certified_against_30_digit_references():
     assert d.status == "numeric" and c.status == "certified" and d.im.shape == w.shape
     compared = 0
     for i in range(0, len(w), 3):
-        ref = hapstab.r(T, float(w[i]), digits=30)  # correctly rounded, 30 digits
+        ref = hapstab.r(T, Fraction(float(w[i])), digits=30)  # correctly rounded, 30 digits, at w's binary value
         im = F(ref.decimal[1])
         assert Fraction(c.im_lo[i]) <= im <= Fraction(c.im_hi[i]), i           # proven enclosure
         assert abs(Fraction(d.im[i]) - im) <= Fraction(d.im_hi[i] - d.im_lo[i]) / 2 + abs(im) * Fraction(1, 10**28), i
@@ -391,7 +391,7 @@ def test_r_arrays_double_and_certified_against_30_digit_references():
     (lambda: hapstab.bound(([[1, 2], [3, 4]], [1]), T=1), "SISO"),
     (lambda: hapstab.bound(([True], [1]), T=1), "bool"),
     (lambda: hapstab.bound("1", T="1/0"), "^T"),
-    (lambda: hapstab.bound("1", T=1, params={"K": "1; rm -rf /"}), "not an exact number"),
+    (lambda: hapstab.bound("1 + K", T=1, params={"K": "1; rm -rf /"}), "not an exact number"),
     (lambda: hapstab.bound("1", T=1, method="exact"), "^method"),
     (lambda: hapstab.r(T=1, omega=0), "^omega"),
     (lambda: hapstab.passivity_level("1"), "T is required"),
@@ -471,7 +471,7 @@ def test_integer_arguments_refuse_what_is_not_an_integer(function, name, call, b
 def test_delay_is_never_truncated_and_says_where_seconds_go():
     with pytest.raises(hapstab.InputError, match=r"^delay: expected an integer, got the float 2\.9; .*frac_delay"):
         hapstab.bound(WALL, T="1/1000", params=KB, delay=2.9)
-    with pytest.raises(hapstab.InputError, match=r"^delay: -1 is outside \[0, 1000\]"):
+    with pytest.raises(hapstab.InputError, match=r"^delay: -1 is outside \[0, 1000000\]"):
         hapstab.bound(WALL, T="1/1000", params=KB, delay=-1)
     # a numpy integer is an integer; the delay in seconds is frac_delay (t_d = 2T is n = 2)
     assert hapstab.bound(WALL, T="1/1000", params=KB, delay=np.int64(2)).value == \
@@ -553,7 +553,7 @@ def test_passivity_level_over_an_array_equals_scalar_calls():
     assert v.shape == (4,) and v.failed == 0
     for i, x in enumerate(a):
         one = hapstab.passivity_level("1 + 1/(z-a)", T="1/100", params={"a": x})
-        assert (v.lo[i], v.hi[i], hapstab.STATUS[v.status[i]]) == (one.lo, one.hi, one.status), x
+        assert (v.lo[i], v.hi[i], v.status[i]) == (one.lo, one.hi, one.status), x
 
 
 def test_stability_max_equals_the_command_line():
@@ -647,7 +647,7 @@ def test_bound_max_over_arrays_equals_scalar_calls():
     compared = 0
     for idx in np.ndindex(ms.shape):
         if expected[idx] > 0:
-            assert F(ms.exact[idx]) == Fraction(2) * (Fraction(b[idx[0], 0]) - Fraction(B[idx[1]])) * 1000, idx
+            assert F(ms.exact[idx]) == Fraction(2) * (Fraction(repr(b[idx[0], 0])) - Fraction(repr(B[idx[1]]))) * 1000, idx  # floats: their shortest decimals
             compared += 1
         else:
             assert ms.value[idx] == 0, idx
@@ -657,7 +657,7 @@ def test_bound_max_over_arrays_equals_scalar_calls():
     for i in range(0, 40, 3):
         one = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": Bd[i]}, damping="3/2", max="K")
         assert (md.lo[i], md.hi[i], md.lo_exact[i], md.hi_exact[i]) == (one.lo, one.hi, one.lo_exact, one.hi_exact), i
-        assert md.status_names[i] == one.status
+        assert md.status[i] == one.status
         assert md.omega[i] == pytest.approx((one.omega[0] + one.omega[1]) / 2) if one.omega else np.isnan(md.omega[i])
     serial = hapstab.bound(WALL, T="1/1000", delay=1, params={"B": Bd}, damping="3/2", max="K", jobs=1)
     assert np.array_equal(serial.lo, md.lo) and np.array_equal(serial.hi, md.hi)
@@ -724,35 +724,6 @@ def test_stability_of_a_scene_over_parameter_arrays():
         compared += one.stable is not None
     assert compared == 6 and set(sa.stable) == {0, 1}  # both verdicts met on this range
     assert sa[0].stable == 1 and bool(sa[0])
-
-
-def test_stability_of_a_scene_max_is_the_commands():
-    # multi-DOF --max (issue 42): the command runs it, so every number is its own. An affine gain
-    # (the environment's gain of the 2-DOF loop, a text scene): the crossing is certified and the
-    # interval below it proven stable, but M(0) has the devices' position integrators on the circle,
-    # so (0, a) is not covered and the supremum is undecided (issue 46 item 2), exit 3.
-    text = (EXAMPLES / "000_two_dof_loop.toml").read_text().replace("[parameters]\n", "[parameters]\ng = \"1\"\n", 1)
-    text = text.replace("[environment]\n", "[environment]\ngain = \"g\"\n", 1)
-    r = hapstab.stability(scene=text, max="g", digits=12)
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "g.toml"
-        path.write_text(text)
-        code, j = cli("stability", "--scene", str(path), "--max", "g", "--digits", "12", codes=(3,))
-    assert code == 3 and r.exit_code == 3 and r.path == j["path"] == "closed_loop_matrix"
-    assert r.status == j["status"] == "undecided" and j["max"] is None and j["supremum_proven"] is False
-    lo, hi = (F(x) for x in j["stable_on"])
-    assert 0 < lo < hi and r.conservatism is None
-    # with the coupling (27)/kc the loop is not affine in kc: a change of certified verdicts, and
-    # Theorem 5's bracket beside it (conservatism/theorem5_max.hpp)
-    scene = EXAMPLES / "multidof_case_ii_coupling.toml"
-    c = hapstab.stability(scene=scene, max="kc", conservatism=True, digits=1, params={"g": 10})
-    code, j = cli("stability", "--scene", str(scene), "--max", "kc", "--conservatism", "--digits", "1", "--set", "g=10")
-    assert code == 0 and c.path == j["path"] == "bisection_on_verdicts" and not c.supremum_proven
-    assert math.isnan(c.value) and (c.lo_exact, c.hi_exact) == tuple(j["change_in"])  # not called a supremum
-    assert c.lo <= F(j["change_in"][0]) and c.hi >= F(j["change_in"][1])
-    assert c.conservatism == j["conservatism"] and c.theorem5["bracket"] == j["theorem5"]["bracket"]
-    assert c.theorem5["concludes_at"] == j["theorem5"]["concludes_at"]
-    assert c.conservatism is None and j["conservatism"] is None  # kc: boundaries, not suprema (issue 46 item 6)
 
 
 @pytest.mark.parametrize("call,match", [
@@ -1020,6 +991,6 @@ def test_array_comparisons_decide_exact_values_exactly():
     # float ends straddle 1; the comparison uses the exact value (kb_map.py met this case)
     K = np.array([Fraction(1000) - Fraction(1, 2**50), 1000, Fraction(1000) + Fraction(1, 2**50)], dtype=object)
     bs = hapstab.bound(WALL, T="1/1000", params={"K": K, "B": "1/2"})
-    assert list(bs.status_names) == ["exact"] * 3 and bs.lo[0] < 1 <= bs.hi[0]
+    assert list(bs.status) == ["exact"] * 3 and bs.lo[0] < 1 <= bs.hi[0]
     assert list(bs < 1) == [True, False, False] and list(bs <= 1) == [True, True, False]
     assert list(bs > 1) == [False, False, True] and list(bs >= 1) == [False, True, True]

@@ -55,7 +55,8 @@ def test_a_failing_point_is_a_row_not_an_exception():
 
 @pytest.mark.parametrize("spec, match", [
     ({"command": "bound", "args": {"H": "K", "T": "1/1000"}, "axes": {"K": {"values": ["1"]}}, "extra": 1}, "extra"),
-    ({"command": "bound", "args": {"H": "K", "T": 0.001}, "axes": {"K": {"values": ["1"]}}}, "float"),
+    ({"command": "bound", "args": {"H": "K", "T": float("nan")}, "axes": {"K": {"values": ["1"]}}},
+     "args.T: nan is not a finite number"),  # a finite float is its shortest decimal (0.001: 1/1000)
     ({"command": "bound", "args": {"H": "K", "T": "1/1000"}, "axes": {"K": {"from": "0"}}}, "K"),
     ({"command": "no-such", "args": {}, "axes": {"K": {"values": ["1"]}}}, "no-such"),
 ])
