@@ -20,6 +20,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
@@ -37,13 +38,6 @@ bool equal(const MatQ& a, const MatQ& b) {
     for (Eigen::Index j = 0; j < a.cols(); ++j)
       if (a(i, j) != b(i, j)) return false;
   return true;
-}
-
-std::string num(double x, int digits = 6) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << x;
-  return o.str();
 }
 
 void load(BallMat& out, const MatQ& A, long prec) {
@@ -819,12 +813,12 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     }
   }
   if (ks < 0) {
-    out.note = "no " + name + " in [" + num(grid(0)) + ", " + num(grid(G)) + "] with every eigenvalue of M inside the unit disk "
+    out.note = "no " + name + " in [" + numeric_decimal(grid(0)) + ", " + numeric_decimal(grid(G)) + "] with every eigenvalue of M inside the unit disk "
                "(numeric scan of the spectral radius): no stable interval to maximise over";
     return out;
   }
   if (ku < 0) {
-    out.note = "the spectral radius stays below 1 from " + name + " = " + num(grid(ks)) + " up to " + num(grid(G)) +
+    out.note = "the spectral radius stays below 1 from " + name + " = " + numeric_decimal(grid(ks)) + " up to " + numeric_decimal(grid(G)) +
                " (numeric scan): no crossing found, so no supremum is certified";
     return out;
   }
@@ -876,8 +870,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     if (e.ok && e.rel_width <= target) break;
   }
   if (!e.ok || e.rel_width > target) {
-    out.note = "the crossing near " + name + " = " + num(pstar, 17) + " (numeric) could not be enclosed to 10^-" +
-               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + num(e.rel_width, 3) : e.why);
+    out.note = "the crossing near " + name + " = " + numeric_decimal(pstar, 17) + " (numeric) could not be enclosed to 10^-" +
+               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + numeric_decimal(e.rel_width, 3) : e.why);
     return out;
   }
   out.crossing = e.p;
@@ -929,7 +923,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   }
   out.cover_intervals = cov.checks;
   if (up <= p0 && !closed) {
-    out.note = "the crossing at " + name + " in [" + num(static_cast<double>(e.p.lo), 17) + ", " + num(static_cast<double>(e.p.hi), 17) +
+    out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " + numeric_decimal(static_cast<double>(e.p.hi), 17) +
                "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
                "to each other for Rump's test)";
     return out;
@@ -959,7 +953,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       break;
     }
     if (below.stable && !*below.stable) {
-      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + num(static_cast<double>(pb), 17) +
+      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + numeric_decimal(static_cast<double>(pb), 17) +
                  ", inside the interval the cover certified stable: " + below.why;
       return out;
     }
@@ -976,7 +970,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       break;
     }
     if (above.stable && *above.stable) {
-      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + num(static_cast<double>(pa), 17) +
+      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + numeric_decimal(static_cast<double>(pa), 17) +
                  "): the crossing is a touch, not an exit";
       return out;
     }
