@@ -493,7 +493,7 @@ struct Cover {
     };
     // first |C_off| alone (h_est = 1/rho: the step it allows), then with B0's own off-diagonal
     // part (a near-defective cluster's coupling, which a scaling shrinks) at that step
-    const auto [d1, rho1] = perron(Bd);
+    const double rho1 = perron(Bd).second;
     Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(n, n);
     const double h_est = rho1 > 0 ? 0.5 / rho1 : 0.0;
     for (long i = 0; i < n; ++i) {
@@ -502,7 +502,6 @@ struct Cover {
         if (j != i) Bt(i, j) = upper(acb_mat_entry(B0.m, i, j)) / mi + h_est * Bd(i, j);
     }
     const Eigen::VectorXd d = perron(Bt).first;
-    (void)d1;
     // per row: the scaled radii of B0 and of C (upper bounds, balls)
     std::vector<Ball> off0(static_cast<size_t>(n)), offC(static_cast<size_t>(n));
     double h0 = INFINITY;  // the zeroth-order guess: (1 - |B0_ii| - r0_i) / (|C_ii| + rC_i)
