@@ -39,7 +39,7 @@ TEST(CmdMultidof, AnalyzeTableJson) {
     const char* file;
     bool feasible;
   };
-  for (const Case c : {Case{"multidof_case_i_nominal.toml", true}, Case{"multidof_case_i_perturbed.toml", false},
+  for (const Case& c : {Case{"multidof_case_i_nominal.toml", true}, Case{"multidof_case_i_perturbed.toml", false},
                        Case{"multidof_case_ii_nominal.toml", true}, Case{"multidof_case_ii_perturbed.toml", true}}) {
     const auto r = run("multidof analyze --json --scene " + ex(c.file));
     // stability is concluded when the LMIs are feasible AND Assumption 1 holds (the case-i

@@ -144,7 +144,7 @@ TEST(LoopAsWritten, SizesAreBoundedBeforeAllocation) {
     const char* add;
     const char* names;
   };
-  for (const Case c : {Case{"\n[multidof.coupling]\nnbar = [200]\n", "nbar[0] = 200"},
+  for (const Case& c : {Case{"\n[multidof.coupling]\nnbar = [200]\n", "nbar[0] = 200"},
                        Case{"\n[multidof.coupling]\nnbar = [100000]\n", "nbar[0] = 100000"},
                        Case{"\n[multidof.coupling]\nmbar = [3]\n", "multidof.coupling"},
                        Case{"\n[delay]\nsamples = \"5000\"\n", "[delay]"}}) {

@@ -278,7 +278,7 @@ TEST(PrintedBounds, SweepColumns) {
     return std::string("0");
   };
   int rows = 0;
-  for (const rational v : {rational(5, 6), rational(11, 6)}) {
+  for (const rational& v : {rational(5, 6), rational(11, 6)}) {
     ASSERT_TRUE(std::getline(in, line));
     EXPECT_TRUE(at_most(column(line, "enclosure_lo"), v)) << line;
     EXPECT_TRUE(at_least(column(line, "enclosure_hi"), v)) << line;

@@ -309,7 +309,7 @@ TEST(Wedge, FastVerdictAgreesWithSturm) {
     ContactAnalysis a = analyze_contact(H, 20);
     EXPECT_EQ(wedge_holds(H), a.wedge.verdict.holds());
     if (a.wedge.gain_infinite) continue;
-    for (const rational f : {rational(1, 2), rational(9, 10), rational(999, 1000), rational(1001, 1000), rational(2)}) {
+    for (const rational& f : {rational(1, 2), rational(9, 10), rational(999, 1000), rational(1001, 1000), rational(2)}) {
       TransferFunction Hk = H;
       const rational k = f * a.wedge.max_gain.enclosure->lo;
       Hk.H = H.H * RatFun(k);

@@ -92,7 +92,7 @@ TEST(Kyp, ScalarDareAgainstTheClosedFormIn50Digits) {
     const mp50 c2 = b * b, c1 = (1 - a * a) * r0 - q * b * b + 2 * a * b * s, c0 = s * s - q * r0;
     const mp50 disc = sqrt(c1 * c1 - 4 * c2 * c0);
     int stabilising = 0;
-    for (const mp50 Y : {mp50((-c1 + disc) / (2 * c2)), mp50((-c1 - disc) / (2 * c2))}) {
+    for (const mp50& Y : {mp50((-c1 + disc) / (2 * c2)), mp50((-c1 - disc) / (2 * c2))}) {
       const mp50 K = (b * Y * a + s) / (r0 + b * b * Y);
       if (abs(a - b * K) >= 1) continue;
       ++stabilising;
