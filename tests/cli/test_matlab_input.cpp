@@ -44,8 +44,8 @@ const std::string wall_expr = "bound --json --T 1/1000 --H \"K + B*(z-1)/(T*z)\"
 TEST(NumDen, SameBoundAsTheExpression) {
   const auto expr = json_of(wall_expr);
   ASSERT_FALSE(expr.is_null());
-  for (const std::string& nd : {"--num \"6000 -5000\" --den \"1 0\"", "--num \"[6000, -5000]\" --den \"[1 0]\"",
-                                "--num 12000/2,-5e3 --den \"[ 1, 0 ]\"", "--num \"0 6000 -5000\" --den \"1,0\""}) {
+  for (const std::string nd : {"--num \"6000 -5000\" --den \"1 0\"", "--num \"[6000, -5000]\" --den \"[1 0]\"",
+                               "--num 12000/2,-5e3 --den \"[ 1, 0 ]\"", "--num \"0 6000 -5000\" --den \"1,0\""}) {
     EXPECT_EQ(json_of("bound --json --T 1/1000 " + nd), expr) << nd;
   }
   // with a delay, and a common factor that cancels as in the expression

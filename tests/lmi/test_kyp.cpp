@@ -189,7 +189,7 @@ TEST(Kyp, ShiftBoundIsTheClosedFormEdge) {
     const double edge = std::min((0.75 - 2.25 * phi) / 3.25, (0.75 - 0.25 * phi) / 1.25);
     const ShiftBound sb = kyp_shift_bound(d);
     EXPECT_NEAR(sb.delta, edge, 1e-12 * std::max(1.0, std::abs(edge))) << "phi = " << phi;
-    if (phi == 0.5) EXPECT_LT(sb.delta, 0) << "not ISP at phi = 1/2: the condition fails";
+    if (phi == 0.5) { EXPECT_LT(sb.delta, 0) << "not ISP at phi = 1/2: the condition fails"; }
   }
 }
 
