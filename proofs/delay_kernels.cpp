@@ -141,7 +141,7 @@ HAPSTAB_PROOF(delay_jets, "001", "the jets of the long-delay branch-and-bound en
     flint::sin_cos(u, su, cu);
     const jet::Jet<Ball> j = jet::sinc(jet::variable(u), su, cu);
     const Enclosure<rational> e = u.bounds();
-    for (const R x : {R(e.lo), R(e.hi), R(exact_rational(c))}) {
+    for (const R& x : {R(e.lo), R(e.hi), R(exact_rational(c))}) {
       R f, f1, f2;
       sinc3(x, f, f1, f2);
       const R slack = R("1e-35");
@@ -162,7 +162,7 @@ HAPSTAB_PROOF(delay_jets, "001", "the jets of the long-delay branch-and-bound en
     flint::sin_cos(X * Ball(0.5), s2, c2);
     Ball s1, c1;
     flint::sin_cos(X, s1, c1);
-    for (const rational nu : {rational(37, 100), rational(12), rational(2001, 2)}) {
+    for (const rational& nu : {rational(37, 100), rational(12), rational(2001, 2)}) {
       Ball sn, cn;
       flint::sin_cos(Ball(nu) * X, sn, cn);
       const jet::Jet<Ball> js = jet::kernel_S(jet::variable(X), Ball(nu), sn, cn, s2, c2);
@@ -313,7 +313,7 @@ HAPSTAB_PROOF(stability_winding, "ext", "the long-delay Schur test and sup K aga
         if (!same) bad << " " << plant << " " << H << " n = " << n << ";";
         ok = ok && same;
         if (gp.outcome != Outcome::holds || gp.infinite) continue;
-        for (const rational f : {rational(1, 2), rational(2)}) {  // the Schur test on both sides of sup K
+        for (const rational& f : {rational(1, 2), rational(2)}) {  // the Schur test on both sides of sup K
           stability::Loop a = lp, b = ll;
           a.H_gain.reset(), b.H_gain.reset();
           pz.parameters["K"] = parse_rational(to_decimal(gp.enclosure.lo * f, 6));

@@ -47,9 +47,9 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
   proofs::Instances one{"(m, B, T) with 0 < BT < 2m: K* inside the enclosure, 1e-15 wide", 6};
   bool ok1 = true;
   double worst1 = 0;
-  for (const Q m : {Q(1, 10), Q(1)})
-    for (const Q B : {Q(1, 2), Q(2), Q(10)})
-      for (const Q T : {Q(1, 1000), Q(1, 100)}) {
+  for (const Q& m : {Q(1, 10), Q(1)})
+    for (const Q& B : {Q(1, 2), Q(2), Q(10)})
+      for (const Q& T : {Q(1, 1000), Q(1, 100)}) {
         if (!one.count(B * T < 2 * m)) continue;
         const Q K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
         const stability::LoopAt at = [&](const Q& p) {
@@ -84,8 +84,8 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
   bool ok2 = true;
   double worst2 = 0, width2 = 0;
   std::ostringstream first;
-  for (const Q m2 : {Q(1, 10), Q(3, 10)})
-    for (const Q Kc : {Q(0), Q(20), Q(50)}) {
+  for (const Q& m2 : {Q(1, 10), Q(3, 10)})
+    for (const Q& Kc : {Q(0), Q(20), Q(50)}) {
       const Q T(1, 100);
       const stability::LoopAt at = [&](const Q& g) {
         sim::LoopSpec s;

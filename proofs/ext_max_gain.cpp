@@ -43,35 +43,40 @@ bool root_inside(const P& p, const rational& lo, const rational& hi, const MaxGa
   return a <= c && (p(a) == 0 || count_real_roots(p, a, c) >= 1);
 }
 
-}  // namespace
+/// A claim's checks: ok until the first failure, whose description the evidence keeps.
+struct Failures {
+  bool ok = true;
+  std::ostringstream bad;
+  void fail(const std::string& what) {
+    if (ok) bad << "; first failure: " << what;
+    ok = false;
+  }
+};
 
-HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b at the answer, convexity") {
+using Cases = std::vector<std::pair<std::string, GainProblem>>;
+
+// ---- closed forms of paper 001 solved for the parameter --------------------------------------
+void closed_forms(proofs::Checker& check) {
   using proofs::Instances;
-  // ---- closed forms of paper 001 solved for the parameter --------------------------------------
   Instances rational_cf{"instances whose closed form is rational (K_max exact and equal)", 60},
       algebraic_cf{"(53) instances in the quadratic branch (the root inside the certified enclosure)", 10},
       table_cf{"instances compared with max_gain_closed_form's own class and value", 80};
-  bool ok = true;
-  std::ostringstream bad;
-  auto fail = [&](const std::string& what) {
-    if (ok) bad << "; first failure: " << what;
-    ok = false;
-  };
+  Failures f;
   auto table = [&](const GainProblem& g, const MaxGain& m) {  // every instance here has a closed form
     const auto cf = max_gain_closed_form(g);
     table_cf.count(true);
-    if (!cf || !agrees(*cf, m)) fail("max_gain_closed_form " + std::string(cf ? "disagrees" : "names no class") + " at b = " + g.b.str());
+    if (!cf || !agrees(*cf, m)) f.fail("max_gain_closed_form " + std::string(cf ? "disagrees" : "names no class") + " at b = " + g.b.str());
   };
-  for (const rational T : {rational(1, 1000), rational(1, 250)})
-    for (const rational B : {rational(0), rational(1, 10), rational(1, 2), rational(2), rational(3)})
-      for (const rational b : {rational(1, 2), rational(3, 2), rational(5), rational(7), rational(12)}) {
+  for (const rational& T : {rational(1, 1000), rational(1, 250)})
+    for (const rational& B : {rational(0), rational(1, 10), rational(1, 2), rational(2), rational(3)})
+      for (const rational& b : {rational(1, 2), rational(3, 2), rational(5), rational(7), rational(12)}) {
         if (B >= b) continue;
         // (46) stiffness: K <= 2(b - B)/T
         {
           const GainProblem g = gain(RF(B) * backward(T), RF(rational(1)), T, 0, b);
           const MaxGain m = max_gain(g, 30);
           const rational want = 2 * (b - B) / T;
-          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == want)) fail("(46) K, B = " + B.str());
+          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == want)) f.fail("(46) K, B = " + B.str());
           table(g, m);
         }
         // (46) damping at K = 400: B <= b - KT/2 when positive
@@ -79,7 +84,7 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
         if (b > K * T / 2) {
           const GainProblem g = gain(RF(K), backward(T), T, 0, b);
           const MaxGain m = max_gain(g, 30);
-          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == b - K * T / 2)) fail("(46) B, K = 400");
+          if (rational_cf.count(true) && !(m.status == Status::exact && m.value == b - K * T / 2)) f.fail("(46) B, K = 400");
           table(g, m);
         }
         // K z^-n, n = 1..3: K <= 2b/((2n+1)T)
@@ -87,7 +92,7 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
           const GainProblem g = gain(RF(rational(0)), RF(rational(1)), T, n, b);
           const MaxGain m = max_gain(g, 30);
           if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * b / (rational(2 * n + 1) * T)))
-            fail("K z^-n, n = " + std::to_string(n));
+            f.fail("K z^-n, n = " + std::to_string(n));
           table(g, m);
         }
         // (53), n = 1, stiffness: b >= 5B: K <= 2(b + B)/(3T); else K T = 2 sqrt(B(2b - B)) - 2B,
@@ -96,11 +101,11 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
           const GainProblem g = gain(RF(B) * backward(T), RF(rational(1)), T, 1, b);
           const MaxGain m = max_gain(g, 30);
           if (b >= 5 * B) {
-            if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * (b + B) / (3 * T))) fail("(53) K, b >= 5B");
+            if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * (b + B) / (3 * T))) f.fail("(53) K, b >= 5B");
           } else {
             const P q(std::vector<rational>{8 * B * (B - b), 4 * B * T, T * T});
             algebraic_cf.count(true);
-            if (!root_inside(q, rational(0), 4 * B / T, m)) fail("(53) K, b < 5B, B = " + B.str() + ", b = " + b.str());
+            if (!root_inside(q, rational(0), 4 * B / T, m)) f.fail("(53) K, b < 5B, B = " + B.str() + ", b = " + b.str());
           }
           table(g, m);
         }
@@ -108,12 +113,12 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
         {
           const GainProblem g0 = gain(RF(B) * tustin(T), RF(rational(1)), T, 0, b);
           const MaxGain m0 = max_gain(g0, 30);
-          if (rational_cf.count(true) && !(m0.status == Status::exact && m0.value == 2 * (b + B) / T)) fail("Tustin n = 0");
+          if (rational_cf.count(true) && !(m0.status == Status::exact && m0.value == 2 * (b + B) / T)) f.fail("Tustin n = 0");
           table(g0, m0);
           if (b > 3 * B) {
             const GainProblem g1 = gain(RF(B) * tustin(T), RF(rational(1)), T, 1, b);
             const MaxGain m1 = max_gain(g1, 30);
-            if (rational_cf.count(true) && !(m1.status == Status::exact && m1.value == 2 * (b + B) / (3 * T))) fail("Tustin n = 1");
+            if (rational_cf.count(true) && !(m1.status == Status::exact && m1.value == 2 * (b + B) / (3 * T))) f.fail("Tustin n = 1");
             table(g1, m1);
           }
         }
@@ -122,29 +127,27 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
               "bound --max equals paper 001's closed forms solved for the parameter: K <= 2(b - B)/T and B <= b - KT/2 (46), "
               "K z^-n: K <= 2b/((2n+1)T), n = 1 wall (53): K <= 2(b + B)/(3T) if b >= 5B, else KT = 2 sqrt(B(2b - B)) - 2B, "
               "Tustin walls n = 0, 1 -- at T = 1, 4 ms, B = 0..3, b = 1/2..12",
-              Status::certified, ok,
+              Status::certified, f.ok,
               "rational closed forms equal the exact K_max; algebraic ones lie in its certified enclosure (exact Sturm count)" +
-                  bad.str(),
+                  f.bad.str(),
               {rational_cf, algebraic_cf, table_cf});
+}
 
-  // ---- b* = b at the answer ----------------------------------------------------------------------
-  Instances exact_at{"exact K_max with b*(K_max) = b exactly", 4}, bracket_at{"certified K_max bracketed by b*", 8},
-      sides{"b* proven < b at K_max(1 - 1e-12) and >= b at K_max(1 + 1e-12)", 12};
-  ok = true;
-  bad.str("");
-  const rational T(1, 1000);
-  std::vector<std::pair<std::string, GainProblem>> cases;
+// ---- b* = b at the answer ----------------------------------------------------------------------
+/// The boundary claim's problems: walls in K and in B, a Tustin wall, fractional delays and six
+/// pseudo-random first-order H drawn from rng.
+Cases boundary_cases(const rational& T, std::mt19937& rng) {
+  Cases cases;
   for (int n = 0; n <= 3; ++n)
     cases.push_back({"wall K, n = " + std::to_string(n), gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, n, rational(3, 2))});
   cases.push_back({"wall B, n = 1", gain(RF(rational(300)), backward(T), T, 1, rational(2))});
   cases.push_back({"wall B, n = 2", gain(RF(rational(300)), backward(T), T, 2, rational(2))});
   cases.push_back({"Tustin K, n = 2", gain(RF(rational(1, 2)) * tustin(T), RF(rational(1)), T, 2, rational(3))});
-  for (const rational td : {rational(1, 2000), rational(3, 10000), rational(37, 100000)}) {
+  for (const rational& td : {rational(1, 2000), rational(3, 10000), rational(37, 100000)}) {
     GainProblem g = gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, 0, rational(3, 2));
     g.base.frac_delay = td;
     cases.push_back({"wall K, t_d = " + to_decimal(td, 6), g});
   }
-  std::mt19937 rng(4141);
   std::uniform_int_distribution<int> pick(-8, 8);
   for (int k = 0; k < 6; ++k) {  // c (z - a)/(z - p) + K, |p| <= 0.8
     const rational a(pick(rng), 10), p(pick(rng), 10), c(1 + (pick(rng) + 8), 4);
@@ -152,32 +155,43 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
     cases.push_back({"random first-order H, n = " + std::to_string(k % 3),
                      gain(H0, k % 2 ? RF(rational(1)) : backward(T), T, k % 3, rational(4))});
   }
+  return cases;
+}
+
+void boundary(proofs::Checker& check, const Cases& cases) {
+  using proofs::Instances;
+  Instances exact_at{"exact K_max with b*(K_max) = b exactly", 4}, bracket_at{"certified K_max bracketed by b*", 8},
+      sides{"b* proven < b at K_max(1 - 1e-12) and >= b at K_max(1 + 1e-12)", 12};
+  Failures f;
   for (const auto& [what, g] : cases) {
     const MaxGain m = max_gain(g, 30);
     if (m.outcome != Outcome::holds || m.infinite) continue;
     const BoundaryCheck c = check_boundary(g, m, 30);
     if (m.status == Status::exact) {
       exact_at.count(true);
-      if (!(c.at_lo.status == Status::exact && c.at_lo.value == g.b)) fail(what + ": b*(K_max) != b");
+      if (!(c.at_lo.status == Status::exact && c.at_lo.value == g.b)) f.fail(what + ": b*(K_max) != b");
     } else {
       bracket_at.count(true);
-      if (!c.holds) fail(what + ": b* does not bracket b on K_max's enclosure");
+      if (!c.holds) f.fail(what + ": b* does not bracket b on K_max's enclosure");
     }
     const rational K = m.value, eps = pow10(-12);
     const Bound below = bound_certified(at_gain(g, K * (1 - eps)), 30), above = bound_certified(at_gain(g, K * (1 + eps)), 30);
     const bool sides_ok = !below.infinite && below.enclosure->hi < g.b && (above.infinite || above.enclosure->lo >= g.b);
     sides.count(true);
-    if (!sides_ok) fail(what + ": b* not below b just inside, or not above just outside");
+    if (!sides_ok) f.fail(what + ": b* not below b just inside, or not above just outside");
   }
   check.claim("ext.max_gain.boundary", "(45), (54)",
               "b*(K_max) = b: bound at the ends of K_max's certified enclosure brackets b (exactly b for a rational K_max), "
               "and b* is proven < b at K_max(1 - 1e-12), >= b at K_max(1 + 1e-12) -- walls in K and in B with n = 0..3, a "
               "Tustin wall, t_d = T/2, 3T/10, 37T/100 (the bracketing path), 6 pseudo-random first-order H (seed 4141)",
-              Status::certified, ok, std::to_string(cases.size()) + " cases" + bad.str(), {exact_at, bracket_at, sides});
+              Status::certified, f.ok, std::to_string(cases.size()) + " cases" + f.bad.str(), {exact_at, bracket_at, sides});
+}
 
-  // ---- convexity in K, not monotonicity -----------------------------------------------------------
+// ---- convexity in K, not monotonicity -----------------------------------------------------------
+void convexity(proofs::Checker& check, const Cases& cases, const rational& T, std::mt19937& rng) {
+  using proofs::Instances;
   Instances pairs{"(K1, K2) pairs with both b* finite", 20};
-  ok = true;
+  bool ok = true;
   std::uniform_int_distribution<int> gainpick(0, 4000);
   for (int k = 0; k < 24; ++k) {
     const GainProblem& g = cases[static_cast<size_t>(k) % cases.size()].second;
@@ -198,4 +212,15 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
               "convex is not monotone: the n = 1 wall has b*(B = 0) = 3 > b*(B = 0.707) < b*(B = 2) at K = 2000, T = 1 ms",
               Status::certified, ok && not_monotone,
               "b*(B = 0, 0.707, 2) = " + at0.decimal + ", " + atmid.decimal + ", " + at2.decimal, {pairs});
+}
+
+}  // namespace
+
+HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b at the answer, convexity") {
+  closed_forms(check);
+  const rational T(1, 1000);
+  std::mt19937 rng(4141);  // one stream: the boundary's random H draw first, then the convexity pairs
+  const Cases cases = boundary_cases(T, rng);
+  boundary(check, cases);
+  convexity(check, cases, T, rng);
 }

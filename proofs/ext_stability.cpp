@@ -102,9 +102,9 @@ HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stabl
   // the claim is proven symbolically; its cross-check against the library skips the (m, B, T)
   // outside 0 < BT < 2m, where there is no stable K (proof.hpp, Instances)
   proofs::Instances stable_range{"cross-check (m, B, T) with 0 < BT < 2m", 17};
-  for (const rational m : {rational(1, 10), rational(1), rational(5)})
-    for (const rational B : {rational(1, 10), rational(2), rational(50)})
-      for (const rational T : {rational(1, 1000), rational(1, 100)}) {
+  for (const rational& m : {rational(1, 10), rational(1), rational(5)})
+    for (const rational& B : {rational(1, 10), rational(2), rational(50)})
+      for (const rational& T : {rational(1, 1000), rational(1, 100)}) {
         if (!stable_range.count(B * T < 2 * m)) continue;
         const rational K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
         stability::Loop loop = stability::mass_damper_wall(m, 0, B, T, 0);
@@ -142,9 +142,9 @@ HAPSTAB_PROOF(ext_stability_damper_n0, "ext", "damped device, spring wall, n = 0
   using I = interval<60>;
   int cases = 0, ok = 0;
   proofs::Instances grid{"(m, b, T) cases, each compared in full", 27};
-  for (const rational m : {rational(1, 10), rational(1), rational(10)})
-    for (const rational b : {rational(1, 100), rational(1), rational(20)})
-      for (const rational T : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
+  for (const rational& m : {rational(1, 10), rational(1), rational(10)})
+    for (const rational& b : {rational(1, 100), rational(1), rational(20)})
+      for (const rational& T : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
         const I mi(to_decimal(m, 40)), bi(to_decimal(b, 40)), Ti(to_decimal(T, 40));
         const I a = bi / mi, e = exp(-a * Ti), alpha = (Ti - (1 - e) / a) / bi, beta = ((1 - e) / a - Ti * e) / bi;
         const I K1 = (1 - e) / beta, K2 = 2 * (1 + e) / (alpha - beta);
@@ -176,7 +176,7 @@ HAPSTAB_PROOF(ext_stability_passive_implies_stable, "ext", "passivity => stabili
   double worst = 1e300, widest = 0;
   std::string worst_at;
   const rational b(1), T(1, 1000);
-  for (const rational m : {rational(1), rational(1, 100), rational(1, 1000)})  // the chart's masses
+  for (const rational& m : {rational(1), rational(1, 100), rational(1, 1000)})  // the chart's masses
     for (int n = 0; n <= 3; ++n)
       for (int i = 0; i <= 12; ++i) {
         const rational B(i, 10);
@@ -213,7 +213,7 @@ HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T
   proofs::Instances finite{"(n, B) with a finite K_stab", 12};
   const rational m(1), b(1);
   for (int n = 0; n <= 3; ++n)
-    for (const rational B : {rational(0), rational(1, 2), rational(2)}) {
+    for (const rational& B : {rational(0), rational(1, 2), rational(2)}) {
       const rational T(1, 100000);
       const stability::MaxGain g = stability::max_gain(stability::mass_damper_wall(m, b, B, T, n), 12);
       const double law = 2 * to_real<double>(b + B) / ((2 * n + 1) * to_real<double>(T));

@@ -3,20 +3,20 @@
 // paper 002 (25), (21)); each scalar, and b* and r vectorised over numpy arrays on threads.
 //
 // The passivity boundary as a number (`bound --max K --damping b`: the sup of a gain with b* < b,
-// passivity/max_gain.hpp through cli/bound_max.hpp's composition with the closed form and the
-// check) is bound_max, scalar and vectorised.
+// passivity::bound_max in passivity/max_gain.hpp: K_max with the closed form and the check) is
+// bound_max, scalar and vectorised.
 #include <mpfi.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "cli/bound_max.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/catalogue.hpp"
+#include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/sampling/r_decimal.hpp"
 #include "hapstab/sampling/r_forms.hpp"
 #include "python/binding.hpp"
@@ -208,10 +208,10 @@ py::dict bound_max_scalar(const std::string& expr, const std::map<std::string, s
   for (const auto& [k, v] : fixed_texts) params[k] = exact_arg(v, "params['" + k + "']");
   if (params.count(name)) throw InputError("params['" + name + "']: " + name + " is the parameter maximised (max='" + name + "'); leave it out of params");
   passivity::GainProblem g = gain_problem(expr, name, params, exact_arg(damping, "damping"), o);
-  cli::BoundMax r;
+  passivity::BoundMax r;
   {
     py::gil_scoped_release nogil;
-    r = cli::bound_max(std::move(g), o.digits, check);
+    r = passivity::bound_max(std::move(g), o.digits, check);
   }
   const passivity::MaxGain& m = r.max;
   py::dict d = m.infinite ? record_infinite(m.status, m.method, m.note)

@@ -33,7 +33,7 @@ namespace py = pybind11;
 
 /// Status codes of the arrays the vectorised calls return (hapstab.STATUS names them).
 enum StatusCode : int8_t { code_exact = 0, code_certified = 1, code_numeric = 2, code_failed = 3 };
-int8_t status_code(Status s);
+StatusCode status_code(Status s);
 
 /// The exact value of `text` (what _exact.exact wrote); InputError naming `what` otherwise.
 rational exact_arg(const std::string& text, const std::string& what);

@@ -46,7 +46,7 @@
 
 namespace hapstab::python {
 
-int8_t status_code(Status s) {
+StatusCode status_code(Status s) {
   switch (s) {
     case Status::exact: return code_exact;
     case Status::certified: return code_certified;

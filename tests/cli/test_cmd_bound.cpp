@@ -46,7 +46,7 @@ void check(const std::string& args, const R& ref, const std::string& expect_cf =
   EXPECT_LE(abs(v - ref), R("1e-28") * scale) << args << " " << j.dump() << " ref " << ref.str(35);
   EXPECT_LE(lo, ref + R("1e-38") * scale) << args;
   EXPECT_GE(hi, ref - R("1e-38") * scale) << args;
-  if (!expect_cf.empty()) EXPECT_EQ(j["closed_form"], expect_cf) << args;
+  if (!expect_cf.empty()) { EXPECT_EQ(j["closed_form"], expect_cf) << args; }
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ std::string tmp_scene(const std::string& name, const std::string& text) {
 }
 std::string replace(std::string s, const std::string& a, const std::string& b) {
   const auto p = s.find(a);
-  if (p == std::string::npos) ADD_FAILURE() << "pattern not found: " << a;
+  if (p == std::string::npos) { ADD_FAILURE() << "pattern not found: " << a; }
   else s.replace(p, a.size(), b);
   return s;
 }
@@ -39,7 +39,7 @@ TEST(CmdMultidof, AnalyzeTableJson) {
     const char* file;
     bool feasible;
   };
-  for (const Case c : {Case{"multidof_case_i_nominal.toml", true}, Case{"multidof_case_i_perturbed.toml", false},
+  for (const Case& c : {Case{"multidof_case_i_nominal.toml", true}, Case{"multidof_case_i_perturbed.toml", false},
                        Case{"multidof_case_ii_nominal.toml", true}, Case{"multidof_case_ii_perturbed.toml", true}}) {
     const auto r = run("multidof analyze --json --scene " + ex(c.file));
     // stability is concluded when the LMIs are feasible AND Assumption 1 holds (the case-i
@@ -159,7 +159,7 @@ TEST(CmdMultidof, LoopAsWrittenUnstableIsNotExitZero) {
   EXPECT_EQ(h.code, 1);
   const std::string v = verdict_line(h.out);
   EXPECT_NE(v.find("NOT stable"), std::string::npos) << h.out;
-  if (j["feasible"].get<bool>()) EXPECT_NE(h.out.find("stable for every coupling V whose"), std::string::npos) << h.out;
+  if (j["feasible"].get<bool>()) { EXPECT_NE(h.out.find("stable for every coupling V whose"), std::string::npos) << h.out; }
 }
 
 // A declared OSP level above the device's computed one is refused, naming both numbers; a lower

@@ -134,7 +134,7 @@ TEST(CmdPassivityLevel, StateSpaceFileMimoCertified) {
                  hi = parse_rational(k["upper_bound"].get<std::string>());
   EXPECT_LE(lo, hi);
   EXPECT_LE(hi - lo, rational(1, 1000000000000LL));
-  if (k["lmi"]["lower_bound"].is_string()) EXPECT_LE(parse_rational(k["lmi"]["lower_bound"].get<std::string>()), hi);
+  if (k["lmi"]["lower_bound"].is_string()) { EXPECT_LE(parse_rational(k["lmi"]["lower_bound"].get<std::string>()), hi); }
   CliRun t = run("--ss " + f + " --kind isp");
   EXPECT_NE(t.out.find("isp level = 0.25   [exact"), std::string::npos) << t.out;
 }

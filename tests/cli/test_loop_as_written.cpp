@@ -49,7 +49,7 @@ TEST(LoopAsWritten, HiddenUnstableModeIsNotStableInEveryCommand) {
     EXPECT_NE(why.find(h.mode), std::string::npos) << why;
     // Theorem 5's conclusion (for every coupling meeting its requirement) needs the premises on
     // E, the devices and the operators; the scene's own coupling is not among them
-    if (std::string(h.block) != "coupling") EXPECT_FALSE(j["stability_concluded"].get<bool>()) << h.file;
+    if (std::string(h.block) != "coupling") { EXPECT_FALSE(j["stability_concluded"].get<bool>()) << h.file; }
     // the premise that needs the block's stability fails by name (not for the coupling, which
     // is not a premise of Theorem 5)
     if (std::string(h.block) != "coupling") {
@@ -117,8 +117,9 @@ TEST(LoopAsWritten, ThreeDofHandDesignsAndVerifies) {
   EXPECT_EQ(jd["facial_reduction"], ja["facial_reduction"]);
   EXPECT_NE(ja["facial_reduction"].get<std::string>().find("1-dimensional"), std::string::npos) << ja["facial_reduction"];
   for (const auto& v : jd["verification"])
-    if (v["name"].get<std::string>().rfind("Theorem 4", 0) == 0)
+    if (v["name"].get<std::string>().rfind("Theorem 4", 0) == 0) {
       EXPECT_EQ(v["detail"].get<std::string>().find("0-dimensional"), std::string::npos) << v.dump();
+    }
 }
 
 TEST(LoopAsWritten, SlowDecayIsVerifiedWithANumericWarning) {
@@ -131,7 +132,7 @@ TEST(LoopAsWritten, SlowDecayIsVerifiedWithANumericWarning) {
   EXPECT_NE(j["warning"].get<std::string>().find("numeric observation, not a verdict"), std::string::npos);
   EXPECT_TRUE(j["contradiction"].is_null());
   for (const auto& v : j["verification"])
-    if (v["certified"].get<bool>()) EXPECT_EQ(v["verdict"], "pass") << v.dump();
+    if (v["certified"].get<bool>()) { EXPECT_EQ(v["verdict"], "pass") << v.dump(); }
   const auto h = run_cli("multidof design --scene " + scene("slow_decay.toml"));
   EXPECT_NE(h.out.find("=> a stabilising coupling V found and verified (certified)"), std::string::npos) << h.out;
 }
@@ -144,7 +145,7 @@ TEST(LoopAsWritten, SizesAreBoundedBeforeAllocation) {
     const char* add;
     const char* names;
   };
-  for (const Case c : {Case{"\n[multidof.coupling]\nnbar = [200]\n", "nbar[0] = 200"},
+  for (const Case& c : {Case{"\n[multidof.coupling]\nnbar = [200]\n", "nbar[0] = 200"},
                        Case{"\n[multidof.coupling]\nnbar = [100000]\n", "nbar[0] = 100000"},
                        Case{"\n[multidof.coupling]\nmbar = [3]\n", "multidof.coupling"},
                        Case{"\n[delay]\nsamples = \"5000\"\n", "[delay]"}}) {

@@ -44,8 +44,8 @@ const std::string wall_expr = "bound --json --T 1/1000 --H \"K + B*(z-1)/(T*z)\"
 TEST(NumDen, SameBoundAsTheExpression) {
   const auto expr = json_of(wall_expr);
   ASSERT_FALSE(expr.is_null());
-  for (const std::string& nd : {"--num \"6000 -5000\" --den \"1 0\"", "--num \"[6000, -5000]\" --den \"[1 0]\"",
-                                "--num 12000/2,-5e3 --den \"[ 1, 0 ]\"", "--num \"0 6000 -5000\" --den \"1,0\""}) {
+  for (const std::string nd : {"--num \"6000 -5000\" --den \"1 0\"", "--num \"[6000, -5000]\" --den \"[1 0]\"",
+                               "--num 12000/2,-5e3 --den \"[ 1, 0 ]\"", "--num \"0 6000 -5000\" --den \"1,0\""}) {
     EXPECT_EQ(json_of("bound --json --T 1/1000 " + nd), expr) << nd;
   }
   // with a delay, and a common factor that cancels as in the expression
@@ -306,7 +306,7 @@ TEST(SimulateMat, SamplesAndFineGridAsMatrices) {
                  tmp("sim2").string(), "--format: expected csv, mat or csv,mat");
 }
 
-// scipy is a dependency (scripts/install-deps: python3-scipy): its absence fails the test
+// scipy is a dependency (scripts/install-deps --test: python3-scipy): its absence fails the test
 // rather than skipping it, so that the check runs in CI.
 TEST(SimulateMat, ScipyReadsIt) {
   ASSERT_TRUE(fs::exists("/usr/bin/python3")) << "no /usr/bin/python3 (scripts/install-deps installs python3)";
@@ -324,7 +324,7 @@ TEST(SimulateMat, ScipyReadsIt) {
   const size_t n = fread(buf, 1, sizeof buf - 1, p);
   const int st = pclose(p);
   const std::string got(buf, n);
-  ASSERT_EQ(got.find("No module named 'scipy'"), std::string::npos) << "scipy is missing: scripts/install-deps installs python3-scipy";
+  ASSERT_EQ(got.find("No module named 'scipy'"), std::string::npos) << "scipy is missing: scripts/install-deps --test installs python3-scipy";
   EXPECT_EQ(WEXITSTATUS(st), 0) << got;
   EXPECT_EQ(got, "True float64 True\n");
 }

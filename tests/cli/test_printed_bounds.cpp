@@ -191,7 +191,7 @@ TEST(PrintedBounds, Bound) {
     const auto j = check_command({"bound", "--H", "K + B*(z-1)/(T*z)", "--T", "1/1000", "--set", "K=1000", "--set", "B=1/3",
                                   "--method", method, "--json"},
                                  {{"/enclosure", exactly(v)}});
-    if (method == "certified") EXPECT_EQ(j.at("exact"), "5/6");
+    if (method == "certified") { EXPECT_EQ(j.at("exact"), "5/6"); }
   }
   passivity::BoundProblem p;
   p.H = tf_z("1/(z^2 - 0.5*z + 0.3)", rational(1, 1000)).H;
@@ -278,7 +278,7 @@ TEST(PrintedBounds, SweepColumns) {
     return std::string("0");
   };
   int rows = 0;
-  for (const rational v : {rational(5, 6), rational(11, 6)}) {
+  for (const rational& v : {rational(5, 6), rational(11, 6)}) {
     ASSERT_TRUE(std::getline(in, line));
     EXPECT_TRUE(at_most(column(line, "enclosure_lo"), v)) << line;
     EXPECT_TRUE(at_least(column(line, "enclosure_hi"), v)) << line;

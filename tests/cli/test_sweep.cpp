@@ -399,7 +399,7 @@ TEST(Sweep, MaxGainIsAColumn) {
 
 // The README's recipe for machines without Slurm: GNU parallel runs the shards, then merge.
 TEST(Sweep, GnuParallelRecipe) {
-  if (shell("command -v parallel") != 0) GTEST_SKIP() << "GNU parallel is not installed";
+  if (shell("command -v parallel") != 0) { GTEST_SKIP() << "GNU parallel is not installed"; }
   const fs::path d = unique_dir("parallel");
   write(d / "spec.toml", wall_spec(4, 4));
   const std::string h = HAPSTAB_CLI, dir = d.string();

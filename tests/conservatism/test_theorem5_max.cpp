@@ -47,7 +47,7 @@ PointVerdict exact_verdict(bool yes) {
 
 TEST(BisectVerdicts, BracketsAKnownBoundaryOnCertifiedEnds) {
   const rational boundary(22, 7);  // yes below 22/7, no from it on
-  for (const rational ref : {rational(1, 1000), rational(3), rational(1000)}) {
+  for (const rational& ref : {rational(1, 1000), rational(3), rational(1000)}) {
     const auto b = conservatism::bisect_verdicts([&](const rational& p) { return exact_verdict(p < boundary); }, ref, 9, 20);
     ASSERT_TRUE(b.lo && b.hi) << b.note;
     EXPECT_TRUE(b.lo->proven() && *b.lo->yes);

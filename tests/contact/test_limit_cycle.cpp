@@ -171,6 +171,6 @@ TEST(Conservatism, NoCriterionContradictedOnASubsetOfTheSweep) {
     EXPECT_FALSE(r.tsypkin_contradicted);
     // Tsypkin is more conservative than the wedge
     EXPECT_LE(r.k_tsypkin, r.k_wedge * (1 + 1e-9));
-    if (r.k_osc) EXPECT_GE(*r.k_osc, r.k_wedge * (1 - 1e-3));
+    if (r.k_osc) { EXPECT_GE(*r.k_osc, r.k_wedge * (1 - 1e-3)); }
   }
 }

@@ -165,7 +165,7 @@ TEST(Wedge, CertifiedEnclosureMatchesReferenceOnHardCases) {
 TEST(Wedge, WedgeContainsTsypkin) {
   for (const char* s : kCases) {
     ContactAnalysis a = analyze_contact(H_of(s), 15);
-    if (a.tsypkin.verdict.holds()) EXPECT_TRUE(a.wedge.verdict.holds()) << s;
+    if (a.tsypkin.verdict.holds()) { EXPECT_TRUE(a.wedge.verdict.holds()) << s; }
     EXPECT_GE(a.wedge.margin.enclosure->hi, a.tsypkin.margin.enclosure->lo) << s;
   }
 }
@@ -260,8 +260,8 @@ TEST(Wedge, Assumptions) {
     }
     const bool stable = schur_stable(Polynomial<rational>(c));
     // only decide clear cases (a root within 1e-2 of the circle decays/grows too slowly)
-    if (tail < 1e-8 * head) EXPECT_TRUE(stable);
-    if (tail > 1e3 * head) EXPECT_FALSE(stable);
+    if (tail < 1e-8 * head) { EXPECT_TRUE(stable); }
+    if (tail > 1e3 * head) { EXPECT_FALSE(stable); }
   }
 }
 
@@ -309,7 +309,7 @@ TEST(Wedge, FastVerdictAgreesWithSturm) {
     ContactAnalysis a = analyze_contact(H, 20);
     EXPECT_EQ(wedge_holds(H), a.wedge.verdict.holds());
     if (a.wedge.gain_infinite) continue;
-    for (const rational f : {rational(1, 2), rational(9, 10), rational(999, 1000), rational(1001, 1000), rational(2)}) {
+    for (const rational& f : {rational(1, 2), rational(9, 10), rational(999, 1000), rational(1001, 1000), rational(2)}) {
       TransferFunction Hk = H;
       const rational k = f * a.wedge.max_gain.enclosure->lo;
       Hk.H = H.H * RatFun(k);

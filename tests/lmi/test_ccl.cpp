@@ -102,6 +102,6 @@ TEST(Ccl, UnstabilisableStallsAboveTarget) {
     double last = NAN;
     for (const auto& st : res.log)
       if (std::isfinite(st.objective)) last = st.objective;
-    if (std::isfinite(last)) EXPECT_GT(last, 4.0 * (1 + o.tol)) << to_string(b) << ": " << res.reason;
+    if (std::isfinite(last)) { EXPECT_GT(last, 4.0 * (1 + o.tol)) << to_string(b) << ": " << res.reason; }
   }
 }

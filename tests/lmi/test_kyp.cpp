@@ -92,7 +92,7 @@ TEST(Kyp, ScalarDareAgainstTheClosedFormIn50Digits) {
     const mp50 c2 = b * b, c1 = (1 - a * a) * r0 - q * b * b + 2 * a * b * s, c0 = s * s - q * r0;
     const mp50 disc = sqrt(c1 * c1 - 4 * c2 * c0);
     int stabilising = 0;
-    for (const mp50 Y : {mp50((-c1 + disc) / (2 * c2)), mp50((-c1 - disc) / (2 * c2))}) {
+    for (const mp50& Y : {mp50((-c1 + disc) / (2 * c2)), mp50((-c1 - disc) / (2 * c2))}) {
       const mp50 K = (b * Y * a + s) / (r0 + b * b * Y);
       if (abs(a - b * K) >= 1) continue;
       ++stabilising;
@@ -189,7 +189,7 @@ TEST(Kyp, ShiftBoundIsTheClosedFormEdge) {
     const double edge = std::min((0.75 - 2.25 * phi) / 3.25, (0.75 - 0.25 * phi) / 1.25);
     const ShiftBound sb = kyp_shift_bound(d);
     EXPECT_NEAR(sb.delta, edge, 1e-12 * std::max(1.0, std::abs(edge))) << "phi = " << phi;
-    if (phi == 0.5) EXPECT_LT(sb.delta, 0) << "not ISP at phi = 1/2: the condition fails";
+    if (phi == 0.5) { EXPECT_LT(sb.delta, 0) << "not ISP at phi = 1/2: the condition fails"; }
   }
 }
 

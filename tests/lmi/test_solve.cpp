@@ -195,7 +195,7 @@ TEST(LmiSolve, AutomaticKeepsTheIpmOnlyWhenCertified) {
   SolveResult ra = solve(bad, Options{});
   EXPECT_EQ(ra.verdict, Feasibility::infeasible) << ra.detail;
   EXPECT_EQ(ra.certificate, Certificate::infeasible_exact) << ra.detail;
-  if (ra.solver == "hapstab IPM") EXPECT_EQ(ra.certificate, Certificate::infeasible_exact);
+  if (ra.solver == "hapstab IPM") { EXPECT_EQ(ra.certificate, Certificate::infeasible_exact); }
   else EXPECT_NE(ra.detail.find("hapstab IPM first"), std::string::npos) << ra.detail;
   // a feasible small program: the IPM's certified answer is the one returned
   Program good = lyapunov(M2(0.9, 0.5, -0.2, 0.7));
@@ -295,7 +295,7 @@ TEST(LmiSolve, CsdpTimeLimitStopsAHangingSolve) {
   // Either CSDP was stopped at the limit (the detail says so; no wall-clock assertion here:
   // timing lives in bench/), or a CSDP build that does not loop here answered -- which must
   // still not call this program feasible.
-  if (r.detail.find(kCsdpTimedOut) != std::string::npos) EXPECT_EQ(r.status, SolveStatus::numerical_trouble);
+  if (r.detail.find(kCsdpTimedOut) != std::string::npos) { EXPECT_EQ(r.status, SolveStatus::numerical_trouble); }
   else EXPECT_NE(r.verdict, Feasibility::feasible) << r.detail;
   EXPECT_THROW(
       {
@@ -341,7 +341,7 @@ TEST(LmiSolve, BackendsAgreeOnRandomPrograms) {
       // A solver that stopped early at a feasible point (status numerical_trouble, verdict
       // feasible) gives an upper bound only.
       for (const SolveResult* r : {&rd, &rc}) {
-        if (r->status == SolveStatus::optimal) EXPECT_NEAR(r->objective, X.trace(), 1e-6 * X.trace()) << "trial " << trial;
+        if (r->status == SolveStatus::optimal) { EXPECT_NEAR(r->objective, X.trace(), 1e-6 * X.trace()) << "trial " << trial; }
         else EXPECT_GE(r->objective, X.trace() * (1 - 1e-9)) << "trial " << trial << " " << r->detail;
       }
     } else {

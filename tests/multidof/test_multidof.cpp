@@ -525,7 +525,7 @@ TEST(MultidofAnalysis, StructuredKypPathAgreesWithGenericSdp) {
     EXPECT_EQ(kyp.verdict.evidence.find("structured path") != std::string::npos, c.structured) << c.what;
     if (!c.structured) {  // no Riccati point: the witness (or the generic program) decides, the same verdict
       EXPECT_TRUE(gen.verdict.fails() && kyp.verdict.fails()) << c.what << ": " << gen.verdict.evidence;
-      if (gen.verdict.proven()) EXPECT_EQ(kyp.verdict.status, gen.verdict.status) << c.what;
+      if (gen.verdict.proven()) { EXPECT_EQ(kyp.verdict.status, gen.verdict.status) << c.what; }
       else EXPECT_TRUE(kyp.verdict.proven()) << c.what << ": " << kyp.verdict.evidence;  // the witness proves it
       continue;
     }
@@ -742,16 +742,17 @@ TEST(MultidofComponents, DecomposedVerdictIsTheWholes) {
     EXPECT_EQ(dec.components.size(), c.parts > 1 ? c.parts : 0) << c.what;
     ASSERT_TRUE(whole.verdict.decided()) << c.what << ": " << whole.verdict.evidence;
     EXPECT_EQ(dec.verdict.outcome, whole.verdict.outcome) << c.what << ": " << dec.verdict.evidence;
-    if (whole.verdict.proven()) EXPECT_TRUE(dec.verdict.proven()) << c.what << ": " << dec.verdict.evidence;
+    if (whole.verdict.proven()) { EXPECT_TRUE(dec.verdict.proven()) << c.what << ": " << dec.verdict.evidence; }
     ++compared;
     if (!dec.verdict.holds() || c.parts == 1) continue;
     EXPECT_NE(dec.verdict.evidence.find("by decomposition into " + std::to_string(c.parts)), std::string::npos);
     // the assembled point is block diagonal over the components
     for (size_t a = 0; a < comps.size(); ++a)
       for (size_t b = 0; b < comps.size(); ++b)
-        if (a != b)
+        if (a != b) {
           for (int i : comps[a].dofs)
             for (int j : comps[b].dofs) EXPECT_EQ(dec.Q_V(i, j), 0.0) << c.what;
+        }
     ASSERT_TRUE(dec.min_found && whole.min_found) << c.what;
     EXPECT_NEAR(dec.Q_V_min_norm, whole.Q_V_min_norm, 1e-4 * whole.Q_V_min_norm + 1e-6) << c.what;
   }
@@ -859,7 +860,7 @@ TEST(MultidofPlanner, SearchedXDecidesWhereTheFacialSetHasSeveralDirections) {
     // says "numeric only" or cannot decide: what the witness certifies), and proves no less
     if (!generic.verdict.decided()) continue;
     EXPECT_EQ(planned.verdict.outcome, generic.verdict.outcome) << c.what << ": " << planned.verdict.evidence;
-    if (generic.verdict.proven()) EXPECT_TRUE(planned.verdict.proven()) << c.what;
+    if (generic.verdict.proven()) { EXPECT_TRUE(planned.verdict.proven()) << c.what; }
     ++compared;
   }
   EXPECT_EQ(decided_by_search, 4);
@@ -878,7 +879,7 @@ std::string delayed_wall(int d) {
   std::string t = text.str();
   const std::string one = "samples = \"1\"";
   const size_t at = t.find(one);
-  if (at == std::string::npos) ADD_FAILURE() << "multidof_delay_wall.toml has no " << one;
+  if (at == std::string::npos) { ADD_FAILURE() << "multidof_delay_wall.toml has no " << one; }
   else t.replace(at, one.size(), "samples = \"" + std::to_string(d) + "\"");
   return t;
 }
@@ -908,8 +909,9 @@ TEST(MultidofWitness, DelayedWallInfeasibleCertified) {
     EXPECT_EQ(planned.path, infeasible ? "frequency-domain witness" : "structured KYP/Riccati") << d;
     ++compared;
     witnessed += planned.path == "frequency-domain witness";
-    if (generic.verdict.proven())  // a proven verdict is never contradicted
+    if (generic.verdict.proven()) {  // a proven verdict is never contradicted
       EXPECT_EQ(planned.verdict.outcome, generic.verdict.outcome) << d << ": " << planned.verdict.evidence;
+    }
   }
   EXPECT_EQ(compared, 5);
   EXPECT_EQ(witnessed, 4);
@@ -978,7 +980,7 @@ TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
     const Eigen::Index m = bw.V.D.rows();
     for (Eigen::Index i = 0; i < m; ++i)  // (R2): one block per device, nothing between them
       for (Eigen::Index j = 0; j < m; ++j)
-        if (i != j) EXPECT_TRUE(bw.V.D(i, j) == 0 && bw.V.A(i, j) == 0 && bw.V.B(i, j) == 0 && bw.V.C(i, j) == 0) << c.what;
+        if (i != j) { EXPECT_TRUE(bw.V.D(i, j) == 0 && bw.V.A(i, j) == 0 && bw.V.B(i, j) == 0 && bw.V.C(i, j) == 0) << c.what; }
     const CouplingCheck t4 = check_theorem4(c.pb, bw.V, o.lmi);
     EXPECT_TRUE(t4.verdict.holds() && t4.verdict.proven()) << c.what << ": " << t4.verdict.evidence;
     if (c.blockwise) {
@@ -990,7 +992,7 @@ TEST(MultidofDesign, BlockwisePathIsCertifiedAndTheGenericProgramAgrees) {
       for (const auto& v : bw.verification)
         if (v.name == "Vhat OSP level (Lemma 1, bisection)")
           level = std::stod(v.verdict.evidence.substr(v.verdict.evidence.find(">= ") + 3));
-      if (gamma_one) EXPECT_GE(level, bw.Q_V.diagonal().minCoeff()) << c.what;
+      if (gamma_one) { EXPECT_GE(level, bw.Q_V.diagonal().minCoeff()) << c.what; }
       o.path = DesignPath::generic_sdp;
       const DesignResult gen = design(c.pb, o);
       EXPECT_FALSE(gen.verdict.fails() && gen.verdict.proven()) << c.what << ": " << gen.verdict.evidence;

@@ -47,7 +47,7 @@ TEST(Lyapunov, ProvesEigenvaluesAtRadiusOneMinus1e9) {
 }
 
 TEST(Lyapunov, NoProofForUnstableOrMarginal) {
-  for (const rational r : {rational(1), rational(1000000001, 1000000000), rational(11, 10)}) {
+  for (const rational& r : {rational(1), rational(1000000001, 1000000000), rational(11, 10)}) {
     const MatQ A = similar(rotation_blocks(6, r), 5);
     EXPECT_FALSE(exact_schur(A));
     std::string why;

@@ -128,7 +128,7 @@ TEST(BallMatrix, LargeOrderIsDecided) {
   // order 300: a stable and an unstable matrix of known radius 0.99 / 1.01 (the contact scenes'
   // closed loops are of this order)
   std::mt19937_64 g(300);
-  for (const rational rho : {rational(99, 100), rational(101, 100)}) {
+  for (const rational& rho : {rational(99, 100), rational(101, 100)}) {
     const SchurDecision d = schur_decide(BallMatrix::exact(known_spectrum(g, 300, rho)));
     ASSERT_TRUE(d.stable.has_value()) << d.why;
     EXPECT_EQ(*d.stable, rho < 1) << d.why;

@@ -108,7 +108,7 @@ TEST(Decimal, ExponentFixedExactlyAtPowersOfTen) {
           EXPECT_LE(lo, x);
           EXPECT_GE(hi, x);
           EXPECT_LE(hi - lo, pow10(e - digits + 1)) << k << " " << side << " " << digits;
-          if (side == 0) EXPECT_EQ(parse_rational(to_decimal(x, digits)), x) << k << " " << digits;
+          if (side == 0) { EXPECT_EQ(parse_rational(to_decimal(x, digits)), x) << k << " " << digits; }
           ++compared;
         }
       }

@@ -374,9 +374,9 @@ TEST(PassivityBound, KeptAnswersBelongToTheDenominatorAsked) {
       std::string why = "untouched";
       const bool ok = marginally_stable(*d, &why);
       EXPECT_EQ(ok, d == &stable) << round;
-      if (d == &stable) EXPECT_EQ(why, "untouched");  // a stable answer leaves the reason alone
-      if (d == &unstable) EXPECT_NE(why.find("|z|"), std::string::npos) << why;
-      if (d == &repeated) EXPECT_NE(why.find("repeated pole on the unit circle"), std::string::npos) << why;
+      if (d == &stable) { EXPECT_EQ(why, "untouched"); }  // a stable answer leaves the reason alone
+      if (d == &unstable) { EXPECT_NE(why.find("|z|"), std::string::npos) << why; }
+      if (d == &repeated) { EXPECT_NE(why.find("repeated pole on the unit circle"), std::string::npos) << why; }
     }
   // the planner's long-delay test after another H's: a pole at z = 1 has no long-delay path, a
   // pole at z = -1 has one; asked alternately, each keeps its answer (plan_bound's `why`)

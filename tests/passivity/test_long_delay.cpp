@@ -34,8 +34,8 @@ void expect_paths_agree(const BoundProblem& p) {
   EXPECT_EQ(l.path, BoundPath::long_delay);
   EXPECT_LE(l.enclosure->lo, e.enclosure->hi) << describe(p) << ": long " << l.decimal << ", exact " << e.decimal;
   EXPECT_LE(e.enclosure->lo, l.enclosure->hi) << describe(p) << ": long " << l.decimal << ", exact " << e.decimal;
-  if (e.status == Status::exact) EXPECT_TRUE(l.enclosure->contains(e.value)) << describe(p) << ": " << e.decimal;
-  if (l.status == Status::exact) EXPECT_TRUE(e.enclosure->contains(l.value)) << describe(p) << ": " << l.decimal;
+  if (e.status == Status::exact) { EXPECT_TRUE(l.enclosure->contains(e.value)) << describe(p) << ": " << e.decimal; }
+  if (l.status == Status::exact) { EXPECT_TRUE(e.enclosure->contains(l.value)) << describe(p) << ": " << l.decimal; }
   const rational scale = std::max(abs(l.value), rational(1, 1000000));
   EXPECT_LE(l.enclosure->hi - l.enclosure->lo, scale * pow10(-29)) << describe(p) << ": " << l.note;
 }

@@ -56,8 +56,8 @@ void expect_boundary(const GainProblem& g, const MaxGain& m, const std::string& 
 
 TEST(MaxGain, BackwardDifferenceWallIsExact) {
   // (46): b* = KT/2 + B, so K_max = 2(b - B)/T and B_max = b - KT/2, exactly
-  for (const rational B : {rational(0), rational(1, 3), rational(5)})
-    for (const rational b : {rational(1, 2), rational(6), rational(123, 7)}) {
+  for (const rational& B : {rational(0), rational(1, 3), rational(5)})
+    for (const rational& b : {rational(1, 2), rational(6), rational(123, 7)}) {
       if (B >= b) continue;
       const GainProblem g = problem(wall, "K", T, 0, b, {{"B", B}});
       const MaxGain m = max_gain(g, 30);
@@ -142,7 +142,7 @@ TEST(MaxGain, PolesOnAndNearTheUnitCircle) {
 
 TEST(MaxGain, FractionalDelaysOnBothPaths) {
   // t_d = T/2 and 3T/10: exact in cos(wT/q); t_d = 37T/100: bracketed by certified b* (17 digits)
-  for (const rational tau : {rational(1, 2), rational(3, 10), rational(37, 100)}) {
+  for (const rational& tau : {rational(1, 2), rational(3, 10), rational(37, 100)}) {
     GainProblem g = problem(wall, "K", T, 0, rational(3, 2), {{"B", rational(1, 2)}});
     g.base.frac_delay = tau * T;
     const MaxGain m = max_gain(g, 30);

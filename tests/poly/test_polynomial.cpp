@@ -251,7 +251,7 @@ TEST(RationalFunction, ConstantShortcutsGiveTheCanonicalForm) {
     EXPECT_TRUE(same(k + f, RF(f.num() + f.den() * P(c), f.den())));
     EXPECT_TRUE(same(f * k, RF(f.num() * P(c), f.den())));
     EXPECT_TRUE(same(k * f, RF(f.num() * P(c), f.den())));
-    if (c != 0) EXPECT_TRUE(same(f / k, RF(f.num(), f.den() * P(c))));
+    if (c != 0) { EXPECT_TRUE(same(f / k, RF(f.num(), f.den() * P(c)))); }
     EXPECT_TRUE(same(f - f + k, k));  // zero plus a constant, and a zero result on the way
     EXPECT_TRUE((f + RF(P(-c)) + k) == f);
   }

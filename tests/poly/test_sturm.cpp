@@ -20,8 +20,8 @@ void expect_disjoint_sorted(const std::vector<RootInterval>& v) {
   for (size_t i = 0; i < v.size(); ++i) {
     EXPECT_LE(v[i].lo, v[i].hi);
     // neighbours may share an endpoint, which is then not a root (it was a bisection point)
-    if (i) EXPECT_LE(v[i - 1].hi, v[i].lo);
-    if (i && v[i - 1].hi == v[i].lo) EXPECT_FALSE(v[i].is_exact() || v[i - 1].is_exact());
+    if (i) { EXPECT_LE(v[i - 1].hi, v[i].lo); }
+    if (i && v[i - 1].hi == v[i].lo) { EXPECT_FALSE(v[i].is_exact() || v[i - 1].is_exact()); }
   }
 }
 }  // namespace

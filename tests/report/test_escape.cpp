@@ -1,5 +1,5 @@
 // tests/report: the writers of report/escape.hpp, each fed crafted strings and, where the real
-// tool is on the machine (scripts/install-deps installs gnuplot, pdflatex and python3), read
+// tool is on the machine (scripts/install-deps installs gnuplot and python3, --test pdflatex), read
 // back by that tool: gnuplot prints the literal, Python's csv module parses the cells, pdflatex
 // typesets the text with shell escape off. Nothing may execute, and what comes back must be
 // the text that went in (control characters replaced, as documented).
@@ -184,7 +184,7 @@ TEST(Latex, CraftedTextTypesetsWithPdflatexAndRunsOrReadsNothing) {
   EXPECT_NE(log.find("Output written on t.pdf"), std::string::npos) << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
   std::istringstream lines(log);
   for (std::string line; std::getline(lines, line);)
-    if (line.rfind("! ", 0) == 0) EXPECT_EQ(line.rfind("! LaTeX Error: Unicode character", 0), 0u) << line;
+    if (line.rfind("! ", 0) == 0) { EXPECT_EQ(line.rfind("! LaTeX Error: Unicode character", 0), 0u) << line; }
   EXPECT_EQ(log.find("(/etc/hostname"), std::string::npos) << "pdflatex opened a file named in the input (the log shows an opened file as \"(path\")";
   EXPECT_TRUE(fs::exists(dir / "t.pdf"));
   for (int k = 1; k <= 6; ++k) EXPECT_FALSE(fs::exists(dir / ("PWNED" + std::to_string(k)))) << k;

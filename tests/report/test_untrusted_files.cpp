@@ -107,7 +107,7 @@ TEST(TomlDepth, CountsWhatTomlBuildsAndNothingInsideStringsOrComments) {
 // Every example scene and spec: far below the limit, and never less than toml++'s tree.
 TEST(TomlDepth, ExampleScenesAreShallow) {
   int files = 0;
-  for (const fs::path dir : {fs::path(HAPSTAB_SOURCE_DIR) / "examples", fs::path(HAPSTAB_SOURCE_DIR) / "docs"})
+  for (const fs::path& dir : {fs::path(HAPSTAB_SOURCE_DIR) / "examples", fs::path(HAPSTAB_SOURCE_DIR) / "docs"})
     for (const auto& e : fs::directory_iterator(dir)) {
       if (e.path().extension() != ".toml") continue;
       const std::string text = slurp(e.path());

@@ -164,7 +164,7 @@ TEST(Scene, PassiveClaimCanBeWithdrawn) {
 // place, never a crash. A table header key starting with a character TOML does not allow
 // ([[$device ]]) tripped an assertion inside toml++ 3.3's header-only parser.
 TEST(Scene, FuzzerFindingsAreInputErrors) {
-  for (const std::string text : {std::string(kWall) + "\n[[$device ]]\n", std::string("[[$device ]]\n")}) {
+  for (const std::string& text : {std::string(kWall) + "\n[[$device ]]\n", std::string("[[$device ]]\n")}) {
     const std::string msg = error_of(text);
     EXPECT_NE(msg.find("s.toml:"), std::string::npos) << msg;
     EXPECT_NE(msg.find("expected bare key starting character"), std::string::npos) << msg;

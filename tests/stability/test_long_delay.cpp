@@ -66,7 +66,7 @@ TEST(StabilityLongDelay, MaxGainAgreesWithThePolynomialPath) {
     EXPECT_LE(l.enclosure.lo, p.enclosure.hi) << to_decimal(l.enclosure.lo, 25) << " vs " << to_decimal(p.enclosure.hi, 25);
     EXPECT_LE(p.enclosure.lo, l.enclosure.hi) << to_decimal(p.enclosure.lo, 25) << " vs " << to_decimal(l.enclosure.hi, 25);
     EXPECT_EQ(p.crossing, l.crossing);
-    if (p.exact) EXPECT_TRUE(l.enclosure.contains(*p.exact));
+    if (p.exact) { EXPECT_TRUE(l.enclosure.contains(*p.exact)); }
     EXPECT_LE(l.enclosure.hi - l.enclosure.lo, l.enclosure.lo * pow10(-20));
   }
 }

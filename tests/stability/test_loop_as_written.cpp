@@ -100,7 +100,7 @@ TEST(LoopAsWritten, TwoDofLoopsAreDecided) {
   // two light devices on a stiff static 2x2 environment (each channel far beyond its sampled
   // spring limit ~2000 N/m): NOT stable; the same with heavy damping: stable
   const Q T(1, 1000);
-  for (const Q b : {Q(1), Q(60)}) {
+  for (const Q& b : {Q(1), Q(60)}) {
     LoopSpec s;
     s.T = T;
     s.devices = {mass_damper("l", Q(1), b), mass_damper("r", Q(1), b)};

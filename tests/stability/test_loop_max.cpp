@@ -77,8 +77,8 @@ LoopSpec two_masses(const Q& g) { return scene_loop(kTwoMasses, {{"g", g}}); }
 
 TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
   int compared = 0;
-  for (const Q m : {Q(1, 10), Q(1)})
-    for (const Q B : {Q(2), Q(10)}) {
+  for (const Q& m : {Q(1, 10), Q(1)})
+    for (const Q& B : {Q(2), Q(10)}) {
       const Q T(1, 100);
       if (!(B * T < 2 * m)) continue;
       const Q K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);

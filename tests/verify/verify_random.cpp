@@ -1436,7 +1436,7 @@ bool check_delay_stability(std::mt19937_64& g, std::ostream& why) {
         << "], long-delay [" << to_decimal(gl.enclosure.lo, 20) << ", " << to_decimal(gl.enclosure.hi, 20) << "]\n";
     return false;
   }
-  for (const rational f : {rational(1, 2), rational(3, 2)}) {
+  for (const rational& f : {rational(1, 2), rational(3, 2)}) {
     pz.parameters["K"] = parse_rational(to_decimal(gp.enclosure.lo * f, 8));
     stability::Loop a = lp, c = ll;
     a.H_gain.reset(), c.H_gain.reset();
@@ -1454,13 +1454,21 @@ bool check_delay(std::mt19937_64& g, std::ostream& why) {
   return chance(g, 0.6) ? check_delay_bound(g, why) : check_delay_stability(g, why);
 }
 
-int main(int argc, char** argv) {
+namespace {
+
+/// The command line (see the top of this file).
+struct Options {
   long cases = 1000, only = -1, first = 0;
   double max_undecided = 0.005;  // per criterion: more undecided cases than this fraction fail the run
   bool inject_undecided = false;  // test hook: every case throws NumericalError (the flood test)
   bool inject_nothing = false;    // test hook: every case passes without comparing (a switched-off path)
   unsigned long seed = 1;
   std::string criterion = "all";
+};
+
+/// nullopt when an option is bad (the reason printed; exit 2).
+std::optional<Options> parse_options(int argc, char** argv) {
+  Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -1471,46 +1479,53 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     try {
-      if (a == "--cases") cases = std::stol(value());
-      else if (a == "--seed") seed = std::stoul(value());
-      else if (a == "--criterion") criterion = value();
-      else if (a == "--case") only = std::stol(value());
-      else if (a == "--first") first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
-      else if (a == "--max-undecided") max_undecided = std::stod(value());
-      else if (a == "--inject-undecided") inject_undecided = true;
-      else if (a == "--inject-nothing-compared") inject_nothing = true;
+      if (a == "--cases") o.cases = std::stol(value());
+      else if (a == "--seed") o.seed = std::stoul(value());
+      else if (a == "--criterion") o.criterion = value();
+      else if (a == "--case") o.only = std::stol(value());
+      else if (a == "--first") o.first = std::stol(value());  // cases first .. first + N - 1: a campaign in chunks
+      else if (a == "--max-undecided") o.max_undecided = std::stod(value());
+      else if (a == "--inject-undecided") o.inject_undecided = true;
+      else if (a == "--inject-nothing-compared") o.inject_nothing = true;
       else throw std::invalid_argument(a);
     } catch (const std::exception&) {
       std::cerr << "verify_random: bad option '" << a << "' (expected --cases N --seed S [--first K] [--criterion all|r,bound,wedge,level,multidof,consistency,mimo_level,multidof_blockwise,multidof_paths,max_gain,delay] [--case K] [--max-undecided F])\n";
-      return 2;
+      return std::nullopt;
     }
   }
-  const std::vector<std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>> criteria = {
-      {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
-      {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
-      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay},
-      // appended last: a criterion's index seeds its cases (case_rng), so the others keep theirs
-      {"multidof_paths", check_multidof_paths}};
-  std::set<std::string> chosen;  // --criterion: "all" or a comma-separated list
+  return o;
+}
+
+using Criterion = std::pair<std::string, std::function<bool(std::mt19937_64&, std::ostream&)>>;
+
+/// --criterion: "all" or a comma-separated list of the criteria's names; nullopt when a name is
+/// unknown (the reason printed; exit 2).
+std::optional<std::set<std::string>> chosen_criteria(const std::string& criterion, const std::vector<Criterion>& criteria) {
+  std::set<std::string> chosen;
   for (size_t a = 0; a <= criterion.size();) {
     const size_t b = std::min(criterion.find(',', a), criterion.size());
     const std::string name = criterion.substr(a, b - a);
     const bool known = name == "all" || std::any_of(criteria.begin(), criteria.end(), [&](const auto& c) { return c.first == name; });
     if (!known) {
-      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise, max_gain, delay or all (comma-separated), not '" << name << "'\n";
-      return 2;
+      std::cerr << "verify_random: --criterion takes r, bound, wedge, level, multidof, consistency, mimo_level, multidof_blockwise, multidof_paths, max_gain, delay or all (comma-separated), not '" << name << "'\n";
+      return std::nullopt;
     }
     chosen.insert(name);
     a = b + 1;
   }
-  // The least share of the cases run that must be compared, per criterion and kind (see the top of
-  // this file): the counters are the criteria's tallies.
-  struct MinimumCompared {
-    std::string criterion, kind;
-    double min_share;
-    const long* count;
-  };
-  const std::vector<MinimumCompared> minimum_compared = {
+  return chosen;
+}
+
+// The least share of the cases run that must be compared, per criterion and kind (see the top of
+// this file): the counters are the criteria's tallies.
+struct MinimumCompared {
+  std::string criterion, kind;
+  double min_share;
+  const long* count;
+};
+
+std::vector<MinimumCompared> minimum_compared() {
+  return {
       {"r", "closed form and truncated series compared", 0.9, &r_tally.compared},
       {"r", "series error bounds compared (N > |wT|/(2 pi))", 0.3, &r_tally.bounds},
       {"bound", "finite b* compared on the grid", 0.9, &bound_tally.grid},
@@ -1555,108 +1570,148 @@ int main(int argc, char** argv) {
       {"delay", "b* of the long-delay path compared with the exact path", 0.125, &delay_tally.bound_exact},
       {"delay", "b* of the long-delay path compared with the 100-digit reference", 0.125, &delay_tally.bound_reference},
       {"delay", "the Schur test's long-delay path compared with the polynomial path", 0.125, &delay_tally.stability}};
+}
+
+/// One criterion's cases (all, or --case), each with its own generator (case_rng), tallied.
+Tally run_cases(const Options& o, size_t c, const Criterion& criterion) {
+  const auto& [name, check] = criterion;
+  const long only = o.only, first = o.first, cases = o.cases;
+  const unsigned long seed = o.seed;
+  const bool inject_undecided = o.inject_undecided, inject_nothing = o.inject_nothing;
+  Tally t;
+  reference_seconds = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (long k = (only >= 0 ? only : first); k < (only >= 0 ? only + 1 : first + cases); ++k) {
+    auto g = case_rng(seed, c, k);
+    std::ostringstream why;
+    ++t.cases;
+    const auto rerun = " (rerun: verify_random --seed " + std::to_string(seed) + " --criterion " + name + " --case " +
+                       std::to_string(k) + ")\n";
+    const auto case_start = std::chrono::steady_clock::now();
+    try {
+      if (inject_undecided) throw NumericalError("injected (--inject-undecided)");
+      if (inject_nothing) continue;  // the case "holds" having compared nothing
+      if (!check(g, why)) {
+        ++t.misses;
+        std::cerr << "MISS case " << k << rerun << why.str();
+      } else if (only >= 0) {
+        std::cerr << "case " << k << " holds: " << why.str();
+      }
+    } catch (const InputError& e) {  // the generator made an input the criterion refuses: its bug
+      ++t.refused;
+      std::cerr << "REFUSED case " << k << ": " << e.what() << rerun << why.str();
+    } catch (const CertifiedFailed& e) {  // a certified path that failed: reported as failed
+      ++t.failed;
+      std::cerr << "FAILED case " << k << ": " << e.what() << rerun << why.str();
+    } catch (const NumericalError& e) {  // an honest "cannot decide": counted, not a wrong number
+      ++t.undecided;
+      if (only >= 0) std::cerr << "undecided case " << k << ": " << e.what() << rerun << why.str();
+    } catch (const std::exception& e) {
+      ++t.misses;
+      std::cerr << "MISS case " << k << ": " << e.what() << rerun << why.str();
+    }
+    const double case_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - case_start).count();
+    if (case_seconds > t.slowest) t.slowest = case_seconds, t.slowest_case = k;
+  }
+  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+/// The criterion's own counts, printed below its row.
+void print_details(const std::string& name) {
+  if (name == "level")
+    std::printf("          (LMI: compared on %ld cases, largest relative deviation from the certified level %.1e;"
+                " the SDP solver failed on %ld; beyond 1e-3 on %ld)\n", level_lmi_compared, level_lmi_deviation,
+                level_lmi_failed, level_lmi_disagreed);
+  if (name == "mimo_level")
+    std::printf("          (exact %ld, certified %ld; widest enclosure %.1e relative; the LMI proved a lower bound in %ld)\n",
+                mimo_level_tally.exact, mimo_level_tally.certified, mimo_level_tally.widest, mimo_level_tally.lmi_proven);
+  if (name == "multidof")
+    std::printf("          (Assumption 1 held in %ld cases; Theorem 6 designed a verified coupling in %ld, Theorem 5 feasible\n"
+                "           in %ld of those; the loop with the coupling settled in %ld, neither settled nor grew in 3000 periods in %ld)\n",
+                multidof_tally.applicable, multidof_tally.designed, multidof_tally.t5_feasible, multidof_tally.settled,
+                multidof_tally.steady);
+  if (name == "multidof_paths")
+    std::printf("          (decided by the structured path %ld, with X searched %ld, the witness %ld, the generic SDP %ld\n"
+                "           components; proven verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes;\n"
+                "           of them against a numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
+                paths_tally.structured, paths_tally.searched, paths_tally.witness, paths_tally.generic,
+                paths_tally.components_compared,
+                paths_tally.delayed_compared, paths_tally.infeasible_compared, paths_tally.whole_compared,
+                paths_tally.numeric_references, paths_tally.skipped);
+  if (name == "multidof_blockwise")
+    std::printf("          (a certified structured-path point in %ld cases; of them the block-wise design verified a coupling\n"
+                "           in %ld, the generic Theorem 4 program certified it in %ld; with Assumption 1 (%ld) the loop\n"
+                "           settled in %ld, neither settled nor grew in %ld)\n",
+                blockwise_tally.structured, blockwise_tally.blockwise, blockwise_tally.generic_certified, blockwise_tally.applicable,
+                blockwise_tally.settled, blockwise_tally.steady);
+  if (name == "max_gain")
+    std::printf("          (compared: exact %ld, certified %ld, bracketed by certified b* %ld, infinite %ld)\n",
+                max_gain_tally.exact, max_gain_tally.certified, max_gain_tally.bracketed, max_gain_tally.infinite);
+  if (name == "delay")
+    std::printf("          (bound vs exact path %ld, bound vs 100-digit reference %ld, stability polynomial vs long-delay %ld)\n",
+                delay_tally.bound_exact, delay_tally.bound_reference, delay_tally.stability);
+  if (name == "consistency")
+    std::printf("          (contact %ld; multidof decided the loop as written in %ld (stable in %ld), stability in %ld,\n"
+                "           simulate claimed a verdict in %ld)\n",
+                consistency_tally.contact, consistency_tally.law_decided, consistency_tally.law_stable,
+                consistency_tally.stab_decided, consistency_tally.sim_claims);
+}
+
+/// Does the criterion's run fail? Misses, refusals, failed certified paths, undecided cases beyond
+/// the cap, or fewer compared cases than a minimum (minimum_compared).
+bool run_fails(const Options& o, const std::string& name, const Tally& t) {
+  const long only = o.only;
+  const double max_undecided = o.max_undecided;
+  bool failed = false;
+  if (t.misses > 0 || t.refused > 0) failed = true;
+  // Undecided and failed are reported apart from misses; a flood of undecided (a regression that
+  // made a method give up everywhere would otherwise pass) and any failed certified path fail the run.
+  const long undecided_cap = static_cast<long>(max_undecided * static_cast<double>(t.cases));
+  if (t.undecided > undecided_cap) {
+    std::printf("          undecided: %ld of %ld cases, above the cap of %ld (--max-undecided %g)\n", t.undecided,
+                t.cases, undecided_cap, max_undecided);
+    failed = true;
+  }
+  if (t.failed > 0) {
+    std::printf("          failed: %ld certified computations returned failed\n", t.failed);
+    failed = true;
+  }
+  for (const MinimumCompared& m : minimum_compared()) {
+    if (m.criterion != name) continue;
+    const long least = static_cast<long>(std::ceil(m.min_share * static_cast<double>(t.cases)));
+    const bool enough = only >= 0 || *m.count >= least;  // a replayed case checks no minimum
+    std::printf("          %s: %ld, minimum %ld%s\n", m.kind.c_str(), *m.count, only >= 0 ? 0L : least,
+                enough ? "" : ": TOO FEW COMPARED");
+    if (!enough) failed = true;
+  }
+  return failed;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::optional<Options> o = parse_options(argc, argv);
+  if (!o) return 2;
+  const std::vector<Criterion> criteria = {
+      {"r", check_r}, {"bound", check_bound}, {"wedge", check_wedge}, {"level", check_level}, {"multidof", check_multidof},
+      {"consistency", check_consistency}, {"mimo_level", check_mimo_level},
+      {"multidof_blockwise", check_multidof_blockwise}, {"max_gain", check_max_gain}, {"delay", check_delay},
+      // appended last: a criterion's index seeds its cases (case_rng), so the others keep theirs
+      {"multidof_paths", check_multidof_paths}};
+  const std::optional<std::set<std::string>> chosen = chosen_criteria(o->criterion, criteria);
+  if (!chosen) return 2;
   int failed = 0;
   std::printf("%-9s %8s %7s %8s %10s %10s %10s  %s\n", "criterion", "cases", "misses", "refused", "undecided", "seconds",
               "reference", "slowest case");
   for (size_t c = 0; c < criteria.size(); ++c) {
-    const auto& [name, check] = criteria[c];
-    if (!chosen.count("all") && !chosen.count(name)) continue;
-    Tally t;
-    reference_seconds = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (long k = (only >= 0 ? only : first); k < (only >= 0 ? only + 1 : first + cases); ++k) {
-      auto g = case_rng(seed, c, k);
-      std::ostringstream why;
-      ++t.cases;
-      const auto rerun = " (rerun: verify_random --seed " + std::to_string(seed) + " --criterion " + name + " --case " +
-                         std::to_string(k) + ")\n";
-      const auto case_start = std::chrono::steady_clock::now();
-      try {
-        if (inject_undecided) throw NumericalError("injected (--inject-undecided)");
-        if (inject_nothing) continue;  // the case "holds" having compared nothing
-        if (!check(g, why)) {
-          ++t.misses;
-          std::cerr << "MISS case " << k << rerun << why.str();
-        } else if (only >= 0) {
-          std::cerr << "case " << k << " holds: " << why.str();
-        }
-      } catch (const InputError& e) {  // the generator made an input the criterion refuses: its bug
-        ++t.refused;
-        std::cerr << "REFUSED case " << k << ": " << e.what() << rerun << why.str();
-      } catch (const CertifiedFailed& e) {  // a certified path that failed: reported as failed
-        ++t.failed;
-        std::cerr << "FAILED case " << k << ": " << e.what() << rerun << why.str();
-      } catch (const NumericalError& e) {  // an honest "cannot decide": counted, not a wrong number
-        ++t.undecided;
-        if (only >= 0) std::cerr << "undecided case " << k << ": " << e.what() << rerun << why.str();
-      } catch (const std::exception& e) {
-        ++t.misses;
-        std::cerr << "MISS case " << k << ": " << e.what() << rerun << why.str();
-      }
-      const double case_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - case_start).count();
-      if (case_seconds > t.slowest) t.slowest = case_seconds, t.slowest_case = k;
-    }
-    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string& name = criteria[c].first;
+    if (!chosen->count("all") && !chosen->count(name)) continue;
+    const Tally t = run_cases(*o, c, criteria[c]);
     std::printf("%-9s %8ld %7ld %8ld %10ld %10.1f %10.1f  %.2f s (case %ld)\n", name.c_str(), t.cases, t.misses,
                 t.refused, t.undecided, t.seconds, reference_seconds, t.slowest, t.slowest_case);
-    if (name == "level")
-      std::printf("          (LMI: compared on %ld cases, largest relative deviation from the certified level %.1e;"
-                  " the SDP solver failed on %ld; beyond 1e-3 on %ld)\n", level_lmi_compared, level_lmi_deviation,
-                  level_lmi_failed, level_lmi_disagreed);
-    if (name == "mimo_level")
-      std::printf("          (exact %ld, certified %ld; widest enclosure %.1e relative; the LMI proved a lower bound in %ld)\n",
-                  mimo_level_tally.exact, mimo_level_tally.certified, mimo_level_tally.widest, mimo_level_tally.lmi_proven);
-    if (name == "multidof")
-      std::printf("          (Assumption 1 held in %ld cases; Theorem 6 designed a verified coupling in %ld, Theorem 5 feasible\n"
-                  "           in %ld of those; the loop with the coupling settled in %ld, neither settled nor grew in 3000 periods in %ld)\n",
-                  multidof_tally.applicable, multidof_tally.designed, multidof_tally.t5_feasible, multidof_tally.settled,
-                  multidof_tally.steady);
-    if (name == "multidof_paths")
-      std::printf("          (decided by the structured path %ld, with X searched %ld, the witness %ld, the generic SDP %ld\n"
-                  "           components; proven verdicts compared: %ld components (%ld delayed, %ld infeasible), %ld wholes;\n"
-                  "           of them against a numeric reference: %ld; delayed components over 2 DOF not compared: %ld)\n",
-                  paths_tally.structured, paths_tally.searched, paths_tally.witness, paths_tally.generic,
-                  paths_tally.components_compared,
-                  paths_tally.delayed_compared, paths_tally.infeasible_compared, paths_tally.whole_compared,
-                  paths_tally.numeric_references, paths_tally.skipped);
-    if (name == "multidof_blockwise")
-      std::printf("          (a certified structured-path point in %ld cases; of them the block-wise design verified a coupling\n"
-                  "           in %ld, the generic Theorem 4 program certified it in %ld; with Assumption 1 (%ld) the loop\n"
-                  "           settled in %ld, neither settled nor grew in %ld)\n",
-                  blockwise_tally.structured, blockwise_tally.blockwise, blockwise_tally.generic_certified, blockwise_tally.applicable,
-                  blockwise_tally.settled, blockwise_tally.steady);
-    if (name == "max_gain")
-      std::printf("          (compared: exact %ld, certified %ld, bracketed by certified b* %ld, infinite %ld)\n",
-                  max_gain_tally.exact, max_gain_tally.certified, max_gain_tally.bracketed, max_gain_tally.infinite);
-    if (name == "delay")
-      std::printf("          (bound vs exact path %ld, bound vs 100-digit reference %ld, stability polynomial vs long-delay %ld)\n",
-                  delay_tally.bound_exact, delay_tally.bound_reference, delay_tally.stability);
-    if (name == "consistency")
-      std::printf("          (contact %ld; multidof decided the loop as written in %ld (stable in %ld), stability in %ld,\n"
-                  "           simulate claimed a verdict in %ld)\n",
-                  consistency_tally.contact, consistency_tally.law_decided, consistency_tally.law_stable,
-                  consistency_tally.stab_decided, consistency_tally.sim_claims);
-    if (t.misses > 0 || t.refused > 0) failed = 1;
-    // Undecided and failed are reported apart from misses; a flood of undecided (a regression that
-    // made a method give up everywhere would otherwise pass) and any failed certified path fail the run.
-    const long undecided_cap = static_cast<long>(max_undecided * static_cast<double>(t.cases));
-    if (t.undecided > undecided_cap) {
-      std::printf("          undecided: %ld of %ld cases, above the cap of %ld (--max-undecided %g)\n", t.undecided,
-                  t.cases, undecided_cap, max_undecided);
-      failed = 1;
-    }
-    if (t.failed > 0) {
-      std::printf("          failed: %ld certified computations returned failed\n", t.failed);
-      failed = 1;
-    }
-    for (const MinimumCompared& m : minimum_compared) {
-      if (m.criterion != name) continue;
-      const long least = static_cast<long>(std::ceil(m.min_share * static_cast<double>(t.cases)));
-      const bool enough = only >= 0 || *m.count >= least;  // a replayed case checks no minimum
-      std::printf("          %s: %ld, minimum %ld%s\n", m.kind.c_str(), *m.count, only >= 0 ? 0L : least,
-                  enough ? "" : ": TOO FEW COMPARED");
-      if (!enough) failed = 1;
-    }
+    print_details(name);
+    if (run_fails(*o, name, t)) failed = 1;
   }
   return failed;
 }

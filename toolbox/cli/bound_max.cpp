@@ -8,16 +8,8 @@
 
 namespace hapstab::cli {
 
+using passivity::BoundMax;
 using passivity::MaxGain;
-
-BoundMax bound_max(passivity::GainProblem g, int digits, bool check) {
-  BoundMax r;
-  r.max = passivity::max_gain(g, digits);
-  if (r.max.outcome == Outcome::holds) r.closed_form = passivity::max_gain_closed_form(g);
-  if (check && r.max.outcome == Outcome::holds && !r.max.infinite) r.check = passivity::check_boundary(g, r.max, digits);
-  r.problem = std::move(g);
-  return r;
-}
 
 namespace {
 

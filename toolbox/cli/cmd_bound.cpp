@@ -118,7 +118,7 @@ BoundProblem problem_of(const BoundOpts& o, const TransferFunction& tf) {
 }
 
 /// `--max NAME`: H = H0 + NAME H1, the device's b from --damping.
-cli::BoundMax compute_max(const BoundOpts& o) {
+passivity::BoundMax compute_max(const BoundOpts& o) {
   const std::string opt = "--max " + o.max;
   if (o.damping.empty()) throw InputError(opt + " needs --damping b (the device's damping that must exceed b*)");
   if (o.method != "certified") throw InputError(opt + " is certified only: leave out --method " + o.method);
@@ -131,7 +131,7 @@ cli::BoundMax compute_max(const BoundOpts& o) {
   g.H1 = h.H1.H;
   g.b = cli::option_rational(o.damping, "--damping");
   g.name = o.max;
-  return cli::bound_max(std::move(g), o.digits, o.explain);
+  return passivity::bound_max(std::move(g), o.digits, o.explain);
 }
 
 Outcome compute(const BoundOpts& o) {
@@ -361,7 +361,7 @@ int run_batch(const std::string& file) {
       if (!extras.empty()) throw InputError("unexpected '" + extras.front() + "' (one expression per line)");
       if (!o.tf.mat.empty()) o.tf.mat = cli::input_file_in_folder(folder, "mat", o.tf.mat, "--batch line " + std::to_string(lineno) + ": --mat");
       if (!o.max.empty()) {
-        const cli::BoundMax m = compute_max(o);
+        const passivity::BoundMax m = compute_max(o);
         j = cli::bound_max_json(m, o.digits);
         worst = std::max(worst, cli::bound_max_exit(m));
       } else {
@@ -390,7 +390,7 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                                throw InputError(std::string("--certificate: a certificate of ") +
                                                 (o->max.empty() ? "b* with --frac-delay" : "bound --max") + " is not implemented yet");
                              if (!o->max.empty()) {
-                               const cli::BoundMax m = compute_max(*o);
+                               const passivity::BoundMax m = compute_max(*o);
                                if (o->json) cli::print_json(cli::bound_max_json(m, o->digits));
                                else cli::print_bound_max(m, o->digits);
                                return cli::bound_max_exit(m);

@@ -77,7 +77,7 @@ stability::Loop scene_loop_of(const StabilityOpts& o) {
   const stability::Loop one = at(rational(1));
   const RationalFunction<rational> H1 = one.H.H - loop.H.H;
   if (H1.is_zero()) throw InputError("--max " + o.max_name + ": the scene's [environment] does not depend on " + o.max_name);
-  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
+  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2)}) {
     const stability::Loop lk = at(k);
     const bool device_same = same(lk.plant, loop.plant) && lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&
                              (!lk.operator_impedance || same(*lk.operator_impedance, *loop.operator_impedance));

@@ -20,7 +20,7 @@ struct FigureEntry {
   bool ok = true;
   bool skipped = false;  ///< not reproduced on this build, not a failure (e.g. bench programs not built)
   bool matplotlib = false;  ///< drawn by a Python example (examples/python): PNG and PDF only
-  std::string error;     ///< why it was not drawn
+  std::string error{};   ///< why it was not drawn (empty when it was)
   double seconds = 0;
 };
 

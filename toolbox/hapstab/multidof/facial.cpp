@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "hapstab/multidof/analysis.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 
 namespace hapstab::multidof {
 
@@ -82,12 +83,7 @@ std::vector<std::vector<rational>> symmetric_gain_basis(const std::vector<int>& 
   return basis;
 }
 
-std::string str(const rational& q, int digits = 6) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << to_real<double>(q);
-  return o.str();
-}
+std::string str(const rational& q, int digits = 6) { return numeric_decimal(to_real<double>(q), digits); }
 
 }  // namespace
 

@@ -45,6 +45,7 @@
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/multidof/planner.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 
 namespace hapstab::multidof {
 
@@ -244,13 +245,6 @@ std::optional<Verdict> witness_of(const Problem& pb, const std::vector<MatQ>& Xk
   return multi_frequency_witness(pb, Xk, theta, u, w, why);
 }
 
-std::string num(double v) {
-  std::ostringstream o;
-  o.precision(4);
-  o << v;
-  return o.str();
-}
-
 }  // namespace
 
 std::optional<std::vector<MatQ>> detail::positive_facial_basis(const Problem& pb, const FacialConditions& fc,
@@ -307,7 +301,7 @@ SolvePath kyp_search_path(bool backend_premise) {
     sd << "structured KYP path with X searched (the facial conditions leave X a " << d
        << "-dimensional set): outer exchange method over g on " << f.theta.size() << " frequencies, " << o.iterations
        << " SDP(s) of " << d + 1 << " unknowns over " << o.active << " active frequencies; max lambda(Phi_g) = "
-       << num(o.psi / f.scale) << " (relative; lower bound " << num(o.bound / f.scale) << ")";
+       << numeric_decimal(o.psi / f.scale, 4) << " (relative; lower bound " << numeric_decimal(o.bound / f.scale, 4) << ")";
     if (o.failure.empty() && o.bound > 0) {  // no g passes the active frequencies: a witness?
       std::string why;
       if (std::optional<Verdict> v = witness_of(pb, Xk, f, o, why)) {
@@ -323,7 +317,7 @@ SolvePath kyp_search_path(bool backend_premise) {
       r.solver_detail = sd.str();
       r.no_point = !o.failure.empty() ? o.failure
                                       : "no X on the facial set passes the frequency condition of (16)'s first LMI on the "
-                                        "grid (max lambda(Phi_g) = " + num(o.psi / f.scale) + " relative at the best g)";
+                                        "grid (max lambda(Phi_g) = " + numeric_decimal(o.psi / f.scale, 4) + " relative at the best g)";
       return r;
     }
     // pull g into the simplex's interior (psi convex: psi((1-s) g + s c) <= (1-s) psi(g) + s psi(c)),
@@ -362,7 +356,7 @@ SolvePath kyp_search_path(bool backend_premise) {
     r.points = std::move(rp.points);
     r.no_point = rp.no_point;
     sd << "; at g = (";
-    for (int i = 0; i < d; ++i) sd << (i ? ", " : "") << num(to_real<double>(gq[static_cast<size_t>(i)]));
+    for (int i = 0; i < d; ++i) sd << (i ? ", " : "") << numeric_decimal(to_real<double>(gq[static_cast<size_t>(i)]), 4);
     sd << ") (min g_i = 1) P11 from the Riccati equation of (16)'s first LMI with Q_E = Delta_D X (lmi/kyp.hpp: "
        << rp.kp.riccati_solves << " DARE solve(s), " << rp.kp.detail << ")";
     r.solver_detail = sd.str();

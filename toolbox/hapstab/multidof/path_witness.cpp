@@ -38,6 +38,7 @@
 #include "hapstab/multidof/planner.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 
 namespace hapstab::multidof {
 
@@ -66,13 +67,6 @@ std::pair<rational, rational> eval(const Polynomial<rational>& p, const rational
     re = r;
   }
   return {re, im};
-}
-
-std::string num(double v) {
-  std::ostringstream o;
-  o.precision(6);
-  o << v;
-  return o.str();
 }
 
 }  // namespace
@@ -224,7 +218,7 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
   std::ostringstream o;
   o << "frequency-domain witness of Theorem 4's program: sweep of lambda_min of phi's Hermitian form over "
     << t1.size() << " x " << t2.size() << " frequency pairs (E-hat at theta1, V-hat at theta2) and a refinement: least "
-    << num(best) << " at theta1 = " << num(b1) << ", theta2 = " << num(b2) << " rad";
+    << numeric_decimal(best) << " at theta1 = " << numeric_decimal(b1) << ", theta2 = " << numeric_decimal(b2) << " rad";
   if (!(best < 0)) {
     tried = o.str() + ": no witness (the frequency conditions may hold)";
     return std::nullopt;
@@ -264,10 +258,10 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
     const rational phi = re_form(p, DXs, p) + re_form(u, Xq, q) + re_form(w, Xq, e);
     if (phi > 0) {
       tried = o.str() + ": it did not survive the exact evaluation at rational points and directions (phi(X_" +
-              std::to_string(k + 1) + ") = " + num(to_real<double>(phi)) + " > 0)";
+              std::to_string(k + 1) + ") = " + numeric_decimal(to_real<double>(phi)) + " > 0)";
       return std::nullopt;
     }
-    vals << (k ? ", " : "") << num(to_real<double>(phi));
+    vals << (k ? ", " : "") << numeric_decimal(to_real<double>(phi));
   }
   o << "; exact: at the rational points z1 = (" << to_real<double>(z1a) << ", " << to_real<double>(z1b)
     << " j), z2 = (" << to_real<double>(z2a) << ", " << to_real<double>(z2b)
@@ -324,10 +318,10 @@ std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const 
   for (size_t k = 0; k < sum.size(); ++k) {
     if (sum[k] > 0) {
       why = "the weighted witness did not survive the exact evaluation (direction " + std::to_string(k + 1) + ": " +
-            num(to_real<double>(sum[k])) + " > 0)";
+            numeric_decimal(to_real<double>(sum[k])) + " > 0)";
       return std::nullopt;
     }
-    vals << (k ? ", " : "") << num(to_real<double>(sum[k]));
+    vals << (k ? ", " : "") << numeric_decimal(to_real<double>(sum[k]));
   }
   if (used == 0) {
     why = "no frequency with a positive weight";
@@ -378,10 +372,10 @@ SolvePath frequency_witness_path() {
     r.numeric_seconds = since(t0);
     std::ostringstream sd;
     sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << K + 60 + 41
-       << " frequencies: least " << num(best) << " at theta = " << num(bt) << " rad";
+       << " frequencies: least " << numeric_decimal(best) << " at theta = " << numeric_decimal(bt) << " rad";
     r.solver_detail = sd.str();
     if (!(best < 0)) {
-      r.no_point = "no frequency-domain witness: lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) >= " + num(best) +
+      r.no_point = "no frequency-domain witness: lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) >= " + numeric_decimal(best) +
                    " on the sweep (the frequency condition of (16) may hold)";
       return r;
     }
@@ -411,8 +405,8 @@ SolvePath frequency_witness_path() {
       if (phi > 0) continue;
       std::ostringstream o;
       o << "exact frequency-domain witness: at the rational point z = (" << to_real<double>(za) << ", "
-        << to_real<double>(zb) << " j) of the unit circle (theta = " << num(bt) << " rad) and the rational direction u ("
-        << u.rows() << " entries), Re(u^T X E-hat(z) u) + u^T Delta_D X u = " << num(to_real<double>(phi))
+        << to_real<double>(zb) << " j) of the unit circle (theta = " << numeric_decimal(bt) << " rad) and the rational direction u ("
+        << u.rows() << " entries), Re(u^T X E-hat(z) u) + u^T Delta_D X u = " << numeric_decimal(to_real<double>(phi))
         << " <= 0 (rational arithmetic on the exact data (15): E-hat(z) by the determinant lemma from exact "
            "characteristic polynomials), while every point of (16) makes it > 0 (the first LMI at [x; u], "
            "x = (zI - A)^-1 B u, with (14)'s Delta_D X - Q_E > 0): (16) is infeasible for every X the facial "
@@ -421,7 +415,7 @@ SolvePath frequency_witness_path() {
       r.numeric_seconds = since(t0);
       return r;
     }
-    r.no_point = "the sweep's least eigenvalue " + num(best) + " at theta = " + num(bt) +
+    r.no_point = "the sweep's least eigenvalue " + numeric_decimal(best) + " at theta = " + numeric_decimal(bt) +
                  " did not survive the exact evaluation at a rational point and direction";
     return r;
   };

@@ -10,6 +10,7 @@
 
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/flint.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 
 namespace hapstab {
 
@@ -206,13 +207,6 @@ bool positive_definite_fp(const BallMatrix& S) {
   return true;
 }
 
-std::string num(double x) {
-  std::ostringstream o;
-  o.precision(6);
-  o << x;
-  return o.str();
-}
-
 }  // namespace
 
 BallMatrix BallMatrix::exact(const MatQ& A) {
@@ -335,7 +329,7 @@ SchurDecision schur_decide(const BallMatrix& M) {
   d.spectral_radius = ev.size() ? ev.cwiseAbs().maxCoeff() : Eigen::EigenSolver<Eigen::MatrixXd>(M.mid, false).eigenvalues().cwiseAbs().maxCoeff();
   if (!solved) {
     d.why = "no Stein certificate: the double solve of P - M^T P M = I failed (an eigenvalue on or within ~1e-14 of the "
-            "unit circle, or a pair z, 1/conj(z)); numeric spectral radius " + num(d.spectral_radius);
+            "unit circle, or a pair z, 1/conj(z)); numeric spectral radius " + numeric_decimal(d.spectral_radius);
     return d;
   }
   // R = P - M^T P M in balls (P exact: the doubles it holds), by the double bounds first and in
@@ -349,14 +343,14 @@ SchurDecision schur_decide(const BallMatrix& M) {
   std::string why;
   if (!positive_definite(R, &why)) {
     d.why = "no Stein certificate: P - M^T P M is not certainly positive definite in balls (" + why +
-            "); numeric spectral radius " + num(d.spectral_radius) + ", |1 - rho| = " + num(std::abs(1 - d.spectral_radius));
+            "); numeric spectral radius " + numeric_decimal(d.spectral_radius) + ", |1 - rho| = " + numeric_decimal(std::abs(1 - d.spectral_radius));
     return d;
   }
   const std::string stein_text = "P - M^T P M > 0 proven in ball arithmetic for an exact P (" + std::to_string(n) + " x " +
                                  std::to_string(n) + ", solved from the Stein equation)";
   if (positive_definite(Pb, &why)) {
     d.stable = true;
-    d.why = "certified Schur stable: " + stein_text + " and P > 0 (Lyapunov); numeric spectral radius " + num(d.spectral_radius);
+    d.why = "certified Schur stable: " + stein_text + " and P > 0 (Lyapunov); numeric spectral radius " + numeric_decimal(d.spectral_radius);
     return d;
   }
   // a direction with w^T P w < 0: an eigenvector of P for its least eigenvalue
@@ -382,11 +376,11 @@ SchurDecision schur_decide(const BallMatrix& M) {
   if (negative) {
     d.stable = false;
     d.why = "certified NOT Schur stable (an eigenvalue with |z| > 1): " + stein_text +
-            " and w^T P w < 0 for an exact w (Stein inertia); numeric spectral radius " + num(d.spectral_radius);
+            " and w^T P w < 0 for an exact w (Stein inertia); numeric spectral radius " + numeric_decimal(d.spectral_radius);
     return d;
   }
   d.why = "no certificate: P - M^T P M > 0 holds but P is neither certainly positive definite nor certainly indefinite; "
-          "numeric spectral radius " + num(d.spectral_radius);
+          "numeric spectral radius " + numeric_decimal(d.spectral_radius);
   return d;
 }
 

@@ -494,9 +494,11 @@ Bound certified_long_delay(const BoundProblem& p, int digits) {
     out.method = "certified: long-delay branch-and-bound over w in Arb balls (nu = " + to_decimal(df->nu, 12) +
                  " samples, never expanded: " + std::to_string(boxes) + " boxes, " + std::to_string(mx.evaluations()) +
                  " evaluations of f, f', f'', interval Newton; " + std::to_string(bits) + " bits)";
-    (void)complete;  // pieces settled within the tolerance, out of depth or budget: their bounds are in the enclosure
+    // pieces left unresolved (settled within the tolerance, out of depth or of budget) keep their
+    // upper bounds in H, so the enclosure and the status hold either way; a wide one says why
     if (!narrow) out.note += std::string(out.note.empty() ? "" : "; ") + "the enclosure is wider than " +
-                             std::to_string(digits) + " digits at " + std::to_string(bits) + " bits";
+                             std::to_string(digits) + " digits at " + std::to_string(bits) + " bits" +
+                             (complete ? std::string() : " (" + std::to_string(mx.unresolved()) + " pieces unresolved)");
     return out;
   }
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -490,6 +491,15 @@ bool agrees(const MaxGainClosedForm& c, const MaxGain& m) {
   if (a > b) return false;
   if (P(a) == 0) return true;
   return count_real_roots(P, a, b) == 1;
+}
+
+BoundMax bound_max(GainProblem g, int digits, bool check) {
+  BoundMax r;
+  r.max = max_gain(g, digits);
+  if (r.max.outcome == Outcome::holds) r.closed_form = max_gain_closed_form(g);
+  if (check && r.max.outcome == Outcome::holds && !r.max.infinite) r.check = check_boundary(g, r.max, digits);
+  r.problem = std::move(g);
+  return r;
 }
 
 }  // namespace hapstab::passivity

@@ -91,4 +91,15 @@ std::string closed_form_decimal(const MaxGainClosedForm& c, int digits);
 /// enclosure, infinite with infinite, a lower bound at or below its upper end.
 bool agrees(const MaxGainClosedForm& c, const MaxGain& m);
 
+/// `bound --max K --damping b` (the command and hapstab.bound_max in Python): K_max, the closed
+/// form that applies (when K_max > 0) and, with check = true, b* itself at the ends of a finite
+/// K_max's enclosure (check_boundary).
+struct BoundMax {
+  GainProblem problem;
+  MaxGain max;
+  std::optional<MaxGainClosedForm> closed_form;
+  std::optional<BoundaryCheck> check;  ///< with check = true
+};
+BoundMax bound_max(GainProblem g, int digits, bool check);
+
 }  // namespace hapstab::passivity

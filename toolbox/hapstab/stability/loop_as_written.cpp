@@ -8,6 +8,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
@@ -15,13 +16,6 @@
 namespace hapstab::stability {
 
 namespace {
-
-std::string num(double x, int digits = 6) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << x;
-  return o.str();
-}
 
 bool one_dof(const sim::LoopSpec& s) {
   return s.dofs() == 1 && s.devices.size() == 1 && s.operators.size() <= 1;
@@ -128,7 +122,7 @@ LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out, const std::stri
     out.status = Status::certified;
     out.method = "closed-loop matrix, Stein certificate in ball arithmetic";
     out.why = std::string(*d.stable ? "stable" : "NOT stable") + " [certified]: " + dims + " enclosed (largest radius " +
-              num(cl.M.max_radius(), 3) + "); " + d.why;
+              numeric_decimal(cl.M.max_radius(), 3) + "); " + d.why;
     return out;
   }
   // the certificate cannot decide: z = 1 exactly (closed_loop.hpp, G1)

@@ -20,6 +20,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/numeric_decimal.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
@@ -37,13 +38,6 @@ bool equal(const MatQ& a, const MatQ& b) {
     for (Eigen::Index j = 0; j < a.cols(); ++j)
       if (a(i, j) != b(i, j)) return false;
   return true;
-}
-
-std::string format_double(double x, int digits = 6) {
-  std::ostringstream o;
-  o.precision(digits);
-  o << x;
-  return o.str();
 }
 
 void load(BallMat& out, const MatQ& A, long prec) {
@@ -521,7 +515,7 @@ struct Cover {
     };
     // first |C_off| alone (h_est = 1/rho: the step it allows), then with B0's own off-diagonal
     // part (a near-defective cluster's coupling, which a scaling shrinks) at that step
-    const auto [d1, rho1] = perron(Bd);
+    const double rho1 = perron(Bd).second;
     Eigen::MatrixXd Bt = Eigen::MatrixXd::Zero(n, n);
     const double h_est = rho1 > 0 ? 0.5 / rho1 : 0.0;
     for (long i = 0; i < n; ++i) {
@@ -530,7 +524,6 @@ struct Cover {
         if (j != i) Bt(i, j) = upper(acb_mat_entry(B0.m, i, j)) / mi + h_est * Bd(i, j);
     }
     const Eigen::VectorXd d = perron(Bt).first;
-    (void)d1;
     // per row: the scaled radii of B0 and of C (upper bounds, balls)
     std::vector<Ball> off0(static_cast<size_t>(n)), offC(static_cast<size_t>(n));
     double h0 = INFINITY;  // the zeroth-order guess: (1 - |B0_ii| - r0_i) / (|C_ii| + rC_i)
@@ -829,12 +822,12 @@ std::optional<Isolated> isolate(const Spectrum& sp, double ref, const std::strin
     }
   }
   if (ks < 0) {
-    out.note = "no " + name + " in [" + format_double(grid(0)) + ", " + format_double(grid(G)) + "] with every eigenvalue of M inside the unit disk "
+    out.note = "no " + name + " in [" + numeric_decimal(grid(0)) + ", " + numeric_decimal(grid(G)) + "] with every eigenvalue of M inside the unit disk "
                "(numeric scan of the spectral radius): no stable interval to maximise over";
     return std::nullopt;
   }
   if (ku < 0) {
-    out.note = "the spectral radius stays below 1 from " + name + " = " + format_double(grid(ks)) + " up to " + format_double(grid(G)) +
+    out.note = "the spectral radius stays below 1 from " + name + " = " + numeric_decimal(grid(ks)) + " up to " + numeric_decimal(grid(G)) +
                " (numeric scan): no crossing found, so no supremum is certified";
     return std::nullopt;
   }
@@ -959,7 +952,7 @@ bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopM
       break;
     }
     if (below.stable && !*below.stable) {
-      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + format_double(static_cast<double>(pb), 17) +
+      out.note = "decide_loop finds the loop NOT stable at " + name + " = " + numeric_decimal(static_cast<double>(pb), 17) +
                  ", inside the interval the cover certified stable: " + below.why;
       return false;
     }
@@ -976,7 +969,7 @@ bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopM
       break;
     }
     if (above.stable && *above.stable) {
-      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + format_double(static_cast<double>(pa), 17) +
+      out.note = "decide_loop finds the loop stable just above the crossing (" + name + " = " + numeric_decimal(static_cast<double>(pa), 17) +
                  "): the crossing is a touch, not an exit";
       return false;
     }
@@ -1066,8 +1059,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   ArbFamily fine;
   const Enclosed e = enclose_crossing(F, base, fine, *is, digits, out);
   if (!e.ok || e.rel_width > std::pow(10.0, -digits)) {
-    out.note = "the crossing near " + name + " = " + format_double(is->pstar, 17) + " (numeric) could not be enclosed to 10^-" +
-               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + format_double(e.rel_width, 3) : e.why);
+    out.note = "the crossing near " + name + " = " + numeric_decimal(is->pstar, 17) + " (numeric) could not be enclosed to 10^-" +
+               std::to_string(digits) + " relative: " + (e.ok ? "relative width " + numeric_decimal(e.rel_width, 3) : e.why);
     return out;
   }
   out.crossing = e.p;
@@ -1085,19 +1078,19 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   Cover cov{*base.M0, *base.M1};
   const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
   if (out.stable_to <= p0 && !closed) {
-    out.note = "the crossing at " + name + " in [" + format_double(static_cast<double>(e.p.lo), 17) + ", " +
-               format_double(static_cast<double>(e.p.hi), 17) +
+    out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
+               numeric_decimal(static_cast<double>(e.p.hi), 17) +
                "] is certified, but no interval below it could be certified stable (an earlier crossing, or eigenvalues too close "
                "to each other for Rump's test)";
     return out;
   }
-  const std::string on = "every " + name + " in [" + format_double(static_cast<double>(out.stable_from), 17) + ", " +
-                         format_double(static_cast<double>(out.stable_to), 17) + "] is proven stable (" +
+  const std::string on = "every " + name + " in [" + numeric_decimal(static_cast<double>(out.stable_from), 17) + ", " +
+                         numeric_decimal(static_cast<double>(out.stable_to), 17) + "] is proven stable (" +
                          std::to_string(cov.checks) + " steps)";
-  const std::string crossing = "the crossing at " + name + " in [" + format_double(static_cast<double>(e.p.lo), 17) + ", " +
-                               format_double(static_cast<double>(e.p.hi), 17) + "] is certified";
+  const std::string crossing = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
+                               numeric_decimal(static_cast<double>(e.p.hi), 17) + "] is certified";
   if (!closed && top - out.stable_to > top * rational(std::pow(10.0, -digits - 1))) {  // the walk stopped short
-    out.note = crossing + " and " + on + ", but the walk stopped " + format_double(out.gap, 6) +
+    out.note = crossing + " and " + on + ", but the walk stopped " + numeric_decimal(out.gap, 6) +
                " (relative) short of the crossing: the supremum is not enclosed to 10^-" + std::to_string(digits);
     return out;
   }
@@ -1105,7 +1098,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     // (0, stable_from) is not covered: the loop may be unstable there (an open-loop unstable
     // device stabilised only by larger gains), so no supremum of (0, sup) is stated
     out.status = Status::certified;  // of stable_on only; outcome stays undecided
-    out.note = crossing + " and " + on + ", but stability on (0, " + format_double(static_cast<double>(out.stable_from), 17) +
+    out.note = crossing + " and " + on + ", but stability on (0, " + numeric_decimal(static_cast<double>(out.stable_from), 17) +
                ") is not proven (the walk towards 0 stopped there" +
                std::string(sp.rho(0) >= 1 - 1e-12 ? ": M(0) has an eigenvalue on the unit circle (numeric)" : "") +
                "), so the supremum of (0, sup) is undecided";
