@@ -79,8 +79,11 @@ class Rational:
         return Rational(pscale(self.num, k), self.den)
 
     def eval_mp(self, z):
-        return mp.polyval([mp.mpf(x.numerator) / x.denominator for x in self.num], z) / \
-            mp.polyval([mp.mpf(x.numerator) / x.denominator for x in self.den], z)
+        if not hasattr(self, "_mp"):
+            with mp.workdps(150):  # exact enough for every precision the references use
+                self._mp = ([mp.mpf(x.numerator) / x.denominator for x in self.num],
+                            [mp.mpf(x.numerator) / x.denominator for x in self.den])
+        return mp.polyval(self._mp[0], z) / mp.polyval(self._mp[1], z)
 
     def coeffs_float(self):
         return [float(x) for x in self.num], [float(x) for x in self.den]
@@ -134,4 +137,5 @@ def dec(s):
         return mp.inf
     if s in ("-inf", "-Infinity"):
         return -mp.inf
-    return mp.mpf(s)
+    with mp.workdps(120):  # every digit hapstab printed
+        return mp.mpf(s)

@@ -229,6 +229,11 @@ def sup_reference(loop, Knom, precise=True):
         rn, _ = rho_mp(loop, Kn)
     else:
         rs, rn = rho_np(loop, float(Ks)), rho_np(loop, float(Kn))
+    eps = mp.mpf(10) ** -40 if precise else 1e-12
+    if abs(rs - 1) < eps and abs(rn - 1) < eps:
+        # an eigenvalue on the unit circle that K does not move (a controller pole cancelled by a
+        # plant zero on the circle, ...): never Schur stable, so the supremum is 0
+        return dict(kind="zero", value=mp.mpf(0), rho_small=rs, marginal=True)
     if rs >= 1 and rn >= 1:
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs)
     start = Kn if rs >= 1 else Ks
@@ -300,9 +305,14 @@ def gen_stability(rng):
     m = rq(rng, 0.05, 2)
     b = rq(rng, 0, 5)
     k = rq(rng, 1, 200)
-    pf = rng.choices(["mass-damper", "mass", "spring", "unstable", "negative damping", "lag"],
-                     weights=[30, 10, 18, 12, 8, 12])[0]
-    if pf == "mass-damper":
+    pf = rng.choices(["mass-damper", "mass", "spring", "unstable", "negative damping", "lag", "fast device"],
+                     weights=[28, 9, 16, 11, 7, 11, 18])[0]
+    if pf == "fast device":  # b T / m >= 2: the sampled device is nearly first order, so a gain
+        T = Q(1, 100)        # loses stability at z = -1 (without delay)
+        m = rq(rng, 0.005, 0.02, den=(1000,))
+        b = rq(rng, 3, 8)
+        pden = [m, b, 0]
+    elif pf == "mass-damper":
         pden = [m, b, 0]
     elif pf == "mass":
         pden = [m, 0, 0]
@@ -347,6 +357,8 @@ def gen_stability(rng):
     u = rng.random()
     n = rng.randint(0, 5) if u < 0.94 else (100 if u < 0.98 else 1000)
     if cf == "spring only" and u < 0.94 and rng.random() < 0.6:
+        n = 0
+    if pf == "fast device" and u < 0.94 and rng.random() < 0.7:
         n = 0
     # a natural gain scale: the stiffness m (2/T)^2 and the damping m 2/T
     Knom = float(m) * 4 / float(T) ** 2 if cf not in ("damper gain",) else float(m) * 2 / float(T)

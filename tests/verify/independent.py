@@ -60,6 +60,17 @@ TOL_SUP = mp.mpf(10) ** -20
 TOL_SUP_DOUBLE = mp.mpf(10) ** -7
 
 
+def why_of(err, j):
+    """hapstab's own reason for a refusal or an undecided answer (stderr, or the JSON's note)."""
+    if err:
+        return err.splitlines()[-1]
+    if j:
+        for k in ("note", "evidence", "why", "method"):
+            if j.get(k):
+                return str(j[k])
+    return ""
+
+
 def enc(j, key="enclosure"):
     e = j.get(key) if j else None
     if not e:
@@ -95,7 +106,7 @@ def check_bound(c, exe, timeout):
         return out
     if rc in (2, 3):
         out["outcome"] = "refused" if rc == 2 else "undecided"
-        out["why"] = err.splitlines()[-1] if err else ""
+        out["why"] = why_of(err, j)
         return out
     if rc != 0 or j is None:
         out["outcome"] = "MISS"
@@ -307,7 +318,7 @@ def check_bound_max(c, exe, timeout):
         return out
     if rc in (2, 3):
         out["outcome"] = "refused" if rc == 2 else "undecided"
-        out["why"] = err.splitlines()[-1] if err else ""
+        out["why"] = why_of(err, j)
         return out
     if j is None or rc not in (0, 1):
         out["outcome"] = "MISS"
@@ -430,7 +441,7 @@ def check_stability(c, exe, timeout):
         tags["stable at small K"] = "n/a (n >= 1000: claim checked)"
         if rc == "timeout" or rc in (2, 3):
             out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
-            out["why"] = err.splitlines()[-1] if err else ""
+            out["why"] = why_of(err, j)
             out["ref_text"] = "not computed (n >= 1000)"
             return out
         out["ref_text"] = "hapstab's claim checked in double at 8 points below lo and just above hi"
@@ -457,7 +468,7 @@ def check_stability(c, exe, timeout):
         return out
     if rc in (2, 3):
         out["outcome"] = "refused" if rc == 2 else "undecided"
-        out["why"] = err.splitlines()[-1] if err else ""
+        out["why"] = why_of(err, j)
         return out
     if j is None:
         out["outcome"] = "MISS"
@@ -501,10 +512,11 @@ def check_scene(c, exe, timeout):
         out["outcome"] = "timeout"
     elif rc in (2, 3):
         out["outcome"] = "refused" if rc == 2 else "undecided"
-        out["why"] = err.splitlines()[-1] if err else ""
+        out["why"] = why_of(err, j)
         if rc == 3 and j and j.get("stable_on") and ref["kind"] in ("zero", "sup"):
             # "stable on [a, b]": every g there must be stable for the reference
             a, b = enc(j, "stable_on")
+            out["tags"]["exit 3 with stable_on"] = True
             for f in (0, 0.25, 0.5, 0.75, 1):
                 g = a + (b - a) * f
                 if g > 0 and IL.rho_mp(loop, g)[0] >= 1:
@@ -516,13 +528,16 @@ def check_scene(c, exe, timeout):
         out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
     else:
         compare_sup(out, ref, j, rc, TOL_SUP, "g")
-    os.unlink(path)
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] += f" (scene kept: {path})"
+    else:
+        os.unlink(path)
     return out
 
 
-BRANCHES_SCENE = [
-    ("stable at small g", True, 0.2), ("stable at small g", False, 0.15),
-    ("first device", "unstable ss", 0.3), ("crossing", "complex", 0.05), ("delay", "0", 0.3),
+BRANCHES_SCENE = [  # compared cases only: an exit 3 ("stable on [a, b]", checked) is not a comparison
+    ("stable at small g", True, 0.2), ("stable at small g", False, 0.05),
+    ("first device", "unstable ss", 0.1), ("crossing", "complex", 0.05), ("delay", "0", 0.3),
 ]
 
 
@@ -555,6 +570,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--verbose", action="store_true")
     a = ap.parse_args()
+    mp.mp.dps = 60  # comparisons of 30-digit enclosures; the references set their own precision
     if not os.access(a.hapstab, os.X_OK):
         print(f"independent.py: --hapstab {a.hapstab}: not an executable", file=sys.stderr)
         return 2
