@@ -9,7 +9,8 @@ f(theta) = Re{T H(e^{j theta}) e^{-j nu theta} / (1 - e^{j theta})} + eta on [0,
 * Interior: f sampled in double on a grid adapted to the delay (64 points per period 2 pi / nu,
   at least 4096), to the poles of H (points at 0, 0.3, 1, 3, ... times 1 - |p| from each pole
   angle, so resonances within 1e-5 of the circle are seen) and to the ends (geometric points
-  10^-k, k = 1.5 ... 9, from 0 and pi); the grid's best local maxima are refined by golden section in double,
+  10^-k, k = 1.5 ... 9, from 0, and k = 1.5 ... 6 from pi); the grid's local maxima are ranked by
+  their values in mpmath (30 digits), the best refined by golden section in double,
   then by Newton's method on f' in mpmath at `dps` digits (f', f'' by mpmath.diff), with a
   golden-section fallback in mpmath when Newton leaves its bracket.
 * w -> 0: f is even in theta (H has real coefficients), so f(0) is the limit, taken at
@@ -126,7 +127,9 @@ def grid(obj):
     th = [np.linspace(0, np.pi, N + 1)[1:-1]]
     ks = np.arange(1.5, 9.01, 0.25)
     th.append(10.0 ** -ks)
-    th.append(np.pi - 10.0 ** -ks)
+    # near pi at most 1e-6: a pole of H at z = -1 makes the double objective there a difference
+    # of terms ~1/(pi - theta) (the end itself is taken in mpmath, end_pi)
+    th.append(np.pi - 10.0 ** -ks[ks <= 6])
     offs = np.array([0, 0.3, 1, 3, 10, 30, 100, 300])
     for p in obj.poles():
         r = abs(p)
@@ -227,6 +230,13 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
     t, f = grid(obj)
     if len(t) > 2:
         inner = np.where((f[1:-1] >= f[:-2]) & (f[1:-1] >= f[2:]))[0] + 1
+        if len(inner) <= 400:
+            # rank the grid's local maxima by their value in mpmath (30 digits), not in double:
+            # near a pole the double values can be far off and crowd out the true peaks
+            with mp.workdps(30):
+                fm = np.array([float(obj.f_mp(mp.mpf(float(t[i])))) for i in inner])
+            f = f.copy()
+            f[inner] = fm
         order = inner[np.argsort(-f[inner])]
         best = f[order[0]] if len(order) else -np.inf
         spread = (np.max(f) - np.min(f)) if len(f) else 0
@@ -234,6 +244,8 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
         dref = []
         for i in pick:
             x, v = golden_d(obj, t[i - 1], t[i + 1])
+            with mp.workdps(30):  # ranked by the value in mpmath (see above)
+                v = float(obj.f_mp(mp.mpf(x)))
             dref.append((v, x, t[i - 1], t[i + 1]))
         dref.sort(key=lambda r: -r[0])
         top = dref[0][0] if dref else -np.inf
