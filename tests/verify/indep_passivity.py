@@ -230,7 +230,7 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
     t, f = grid(obj)
     if len(t) > 2:
         inner = np.where((f[1:-1] >= f[:-2]) & (f[1:-1] >= f[2:]))[0] + 1
-        if len(inner) <= 400:
+        if len(inner) <= 400 and not fast:
             # rank the grid's local maxima by their value in mpmath (30 digits), not in double:
             # near a pole the double values can be far off and crowd out the true peaks
             with mp.workdps(30):
@@ -244,8 +244,9 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
         dref = []
         for i in pick:
             x, v = golden_d(obj, t[i - 1], t[i + 1])
-            with mp.workdps(30):  # ranked by the value in mpmath (see above)
-                v = float(obj.f_mp(mp.mpf(x)))
+            if not fast:
+                with mp.workdps(30):  # ranked by the value in mpmath (see above)
+                    v = float(obj.f_mp(mp.mpf(x)))
             dref.append((v, x, t[i - 1], t[i + 1]))
         dref.sort(key=lambda r: -r[0])
         top = dref[0][0] if dref else -np.inf
