@@ -13,7 +13,8 @@ F_k = -h_{k-n}. The state [plant; controller; register] gives M(K), and its spec
 (mpmath.eig, 50 digits) decides stability.
 
 The supremum sup{K >= 0 : M(K) Schur stable for every K in (0, sup)} is found by a scan from
-K -> 0+: rho at K = Knom 1e-9 and 1e-13 (mpmath; unstable at both: sup = 0), then rho in double
+K -> 0+: rho at K = Knom 1e-9 and 1e-13 (mpmath; unstable at both: sup = 0; in double, for long
+delays, at 1e-5 and 1e-7, where a root at 1 - cK is still resolved), then rho in double
 (numpy) on a geometric grid of 24 points per decade up to Knom 1e9, each interval whose grid
 values come within 1e-3 of 1 also maximised by golden section (a narrow unstable window between
 grid points), and the first interval where rho reaches 1 is solved by the Illinois method on
@@ -224,12 +225,14 @@ def illinois(g, a, b, ga, gb, rel):
 def sup_reference(loop, Knom, precise=True):
     """dict(kind 'sup'|'zero'|'inf', value, lo, hi, crossing, margin, ...)."""
     Ks, Kn = mp.mpf(Knom) * mp.mpf(10) ** -9, mp.mpf(Knom) * mp.mpf(10) ** -13
+    if not precise:  # double: a root at 1 - cK must stay resolvable from 1
+        Ks, Kn = mp.mpf(Knom) * mp.mpf(10) ** -5, mp.mpf(Knom) * mp.mpf(10) ** -7
     if precise:
         rs, _ = rho_mp(loop, Ks)
         rn, _ = rho_mp(loop, Kn)
     else:
         rs, rn = rho_np(loop, float(Ks)), rho_np(loop, float(Kn))
-    eps = mp.mpf(10) ** -40 if precise else 1e-12
+    eps = mp.mpf(10) ** -40 if precise else 1e-15
     if abs(rs - 1) < eps and abs(rn - 1) < eps:
         # an eigenvalue on the unit circle that K does not move (a controller pole cancelled by a
         # plant zero on the circle, ...): never Schur stable, so the supremum is 0

@@ -418,7 +418,7 @@ def compare_sup(out, ref, j, rc, tol, name):
     return out
 
 
-def check_claim_double(loop, j, rc):
+def check_claim_double(loop, j, rc, knom):
     """n >= 1000: only hapstab's claim is checked, in double (the full reference would take minutes)."""
     if rc == 0 and j and j.get("enclosure"):
         lo, hi = enc(j)
@@ -427,6 +427,11 @@ def check_claim_double(loop, j, rc):
                 return dict(kind="claim", ok=False, why=f"rho >= 1 at K = {float(lo) * f:g} inside (0, lo)")
         if IL.rho_np(loop, float(hi) * (1 + 1e-6)) < 1:
             return dict(kind="claim", ok=False, why=f"rho < 1 just above hi = {float(hi):g}")
+        return dict(kind="claim", ok=True)
+    if rc == 1 and j and str(j.get("max")) == "0":
+        for f in (1e-6, 1e-4, 1e-2):
+            if IL.rho_np(loop, float(knom) * f) < 1:
+                return dict(kind="claim", ok=False, why=f"hapstab: unstable for small K, but rho < 1 at K = {float(knom) * f:g}")
         return dict(kind="claim", ok=True)
     return None
 
@@ -437,7 +442,7 @@ def check_stability(c, exe, timeout):
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
     if c["n"] >= 1000:
-        cl = check_claim_double(loop, j, rc)
+        cl = check_claim_double(loop, j, rc, c["Knom"])
         tags["stable at small K"] = "n/a (n >= 1000: claim checked)"
         if rc == "timeout" or rc in (2, 3):
             out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
@@ -572,6 +577,8 @@ def main():
     ap.add_argument("--case", type=int, default=None)
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--verbose", action="store_true")
+    ap.add_argument("--max-seconds", type=float, default=None,
+                    help="stop a criterion after this long and summarise the cases run (minimums scale to them)")
     a = ap.parse_args()
     mp.mp.dps = 60  # comparisons of 30-digit enclosures; the references set their own precision
     if not os.access(a.hapstab, os.X_OK):
@@ -590,7 +597,12 @@ def main():
         misses = []
         t0 = time.monotonic()
         slowest = (0, None)
+        done = []
         for k in ks:
+            if a.max_seconds is not None and time.monotonic() - t0 > a.max_seconds:
+                print(f"   --max-seconds {a.max_seconds:g}: stopped after {len(done)} cases")
+                break
+            done.append(k)
             rng = random.Random(f"{a.seed}:{crit}:{k}")
             c = gen(rng)
             tc = time.monotonic()
@@ -621,10 +633,11 @@ def main():
             elif o in ("undecided", "refused", "timeout", "unchecked"):
                 print(f"[{crit} case {k}] {o} (exit {r['rc']}): {r.get('why', '')[:200]}")
                 print(f"  command: {line}")
+                sys.stdout.flush()
             if o in ("MISS", "REFERENCE MISSED"):
                 misses.append(k)
         dt = time.monotonic() - t0
-        n = len(ks)
+        n = len(done)
         print(f"== {crit}: {n} cases (seed {a.seed}, first {ks[0]}), {dt:.1f} s, slowest case {slowest[1]} ({slowest[0]:.1f} s)")
         print("   outcomes: " + ", ".join(f"{o} {v}" for o, v in sorted(counts.items())))
         print("   per branch (compared = agree + miss; undecided/refused/timeout apart):")
