@@ -240,7 +240,9 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
         order = inner[np.argsort(-f[inner])]
         best = f[order[0]] if len(order) else -np.inf
         spread = (np.max(f) - np.min(f)) if len(f) else 0
-        pick = [i for i in order[:8]] + [i for i in order[8:] if f[i] >= best - 1e-3 * spread]
+        # at most 40 (a constant objective, e.g. H = c/(z + 1) without delay, makes every grid
+        # point a local maximum)
+        pick = [i for i in order[:8]] + [i for i in order[8:40] if f[i] >= best - 1e-3 * spread]
         dref = []
         for i in pick:
             x, v = golden_d(obj, t[i - 1], t[i + 1])
