@@ -1,0 +1,141 @@
+"""Shared pieces of the independent campaigns (tests/verify/independent.py): exact rational
+polynomials and transfer functions written both as hapstab expressions and as coefficient lists
+the references evaluate themselves, and the call of the hapstab binary (--json).
+
+Nothing here comes from hapstab's sources: the references evaluate the paper's definitions
+directly (indep_passivity.py: paper 001 (45)/(54); indep_loop.py: the sampled loop built as a
+state-space map per period).
+"""
+import json
+import subprocess
+import time
+from fractions import Fraction as Q
+
+import mpmath as mp
+
+
+def fstr(q):
+    """An exact rational as hapstab reads it: "3", "(-3/7)"."""
+    q = Q(q)
+    s = str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+    return f"({s})" if q < 0 or q.denominator != 1 else s
+
+
+def poly_str(c, var):
+    """Descending coefficients -> "(a)*z^2 + (b)*z + (c)" (zero terms dropped)."""
+    n = len(c) - 1
+    terms = []
+    for i, a in enumerate(c):
+        a = Q(a)
+        if a == 0:
+            continue
+        p = n - i
+        mono = "" if p == 0 else (var if p == 1 else f"{var}^{p}")
+        if mono == "":
+            terms.append(fstr(a))
+        elif a == 1:
+            terms.append(mono)
+        else:
+            terms.append(f"{fstr(a)}*{mono}")
+    return " + ".join(terms) if terms else "0"
+
+
+def pmul(a, b):
+    out = [Q(0)] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            out[i + j] += Q(x) * Q(y)
+    return out
+
+
+def padd(a, b):
+    n = max(len(a), len(b))
+    a = [Q(0)] * (n - len(a)) + [Q(x) for x in a]
+    b = [Q(0)] * (n - len(b)) + [Q(x) for x in b]
+    out = [x + y for x, y in zip(a, b)]
+    while len(out) > 1 and out[0] == 0:
+        out.pop(0)
+    return out
+
+
+def pscale(a, k):
+    return [Q(k) * Q(x) for x in a]
+
+
+class Rational:
+    """num(var)/den(var) with exact rational descending coefficients."""
+
+    def __init__(self, num, den):
+        self.num = [Q(x) for x in num]
+        self.den = [Q(x) for x in den]
+
+    def expr(self, var="z"):
+        return f"({poly_str(self.num, var)})/({poly_str(self.den, var)})"
+
+    def __add__(self, o):
+        return Rational(padd(pmul(self.num, o.den), pmul(o.num, self.den)), pmul(self.den, o.den))
+
+    def scaled(self, k):
+        return Rational(pscale(self.num, k), self.den)
+
+    def eval_mp(self, z):
+        if not hasattr(self, "_mp"):
+            with mp.workdps(150):  # exact enough for every precision the references use
+                self._mp = ([mp.mpf(x.numerator) / x.denominator for x in self.num],
+                            [mp.mpf(x.numerator) / x.denominator for x in self.den])
+        return mp.polyval(self._mp[0], z) / mp.polyval(self._mp[1], z)
+
+    def coeffs_float(self):
+        return [float(x) for x in self.num], [float(x) for x in self.den]
+
+
+class SumTF:
+    """A sum of rational terms, each written for hapstab as its own fraction (so the expression
+    hapstab parses is the same sum the reference evaluates term by term)."""
+
+    def __init__(self, terms):
+        self.terms = list(terms)
+
+    def expr(self, var="z"):
+        return " + ".join(t.expr(var) for t in self.terms)
+
+    def eval_mp(self, z):
+        return mp.fsum(t.eval_mp(z) for t in self.terms)
+
+    def dens(self):
+        return [t.den for t in self.terms]
+
+
+def run_hapstab(exe, args, timeout):
+    """Runs `hapstab ARGS --json`; returns (rc, parsed JSON or None, stderr text, seconds)."""
+    t0 = time.monotonic()
+    try:
+        p = subprocess.run([exe] + args + ["--json"], capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return "timeout", None, f"no answer within {timeout} s", time.monotonic() - t0
+    dt = time.monotonic() - t0
+    j = None
+    try:
+        j = json.loads(p.stdout) if p.stdout.strip() else None
+    except json.JSONDecodeError:
+        j = None
+    return p.returncode, j, p.stderr.strip(), dt
+
+
+def shell_line(exe, args):
+    def q(a):
+        return a if all(c.isalnum() or c in "-_./=:" for c in a) else "'" + a.replace("'", "'\\''") + "'"
+    return " ".join(q(a) for a in [exe] + args)
+
+
+def dec(s):
+    """A decimal string from hapstab's JSON as an mpf (inf kept)."""
+    if s is None:
+        return None
+    s = str(s).strip()
+    if s in ("inf", "+inf", "Infinity"):
+        return mp.inf
+    if s in ("-inf", "-Infinity"):
+        return -mp.inf
+    with mp.workdps(120):  # every digit hapstab printed
+        return mp.mpf(s)

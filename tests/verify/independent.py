@@ -1,0 +1,675 @@
+#!/usr/bin/python3
+"""Random differential campaigns of hapstab's certified paths against references that share no
+code and no formula-level shortcut with it (issue 46, "The campaigns that would have caught
+these"; docs/verification.md, "Independent campaigns").
+
+  tests/verify/independent.py [--hapstab build/hapstab] [--criterion bound,bound_max,stability_max,scene_max]
+                              [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
+
+Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
+  bound          `bound --H H --T T [--delay n] [--frac-delay t_d] [--eta eta]` against paper 001's
+                 (45)/(54) evaluated directly in mpmath (indep_passivity.py): the objective sampled
+                 densely and refined, its ends taken as limits, a pole at z = -1 decided from the
+                 numbers (+inf or -inf).
+  bound_max      `bound --H "H0 + K*(H1)" --max K --damping b`: the reference bisects the reference b*(K)
+                 (no use of b*'s structure in K), then the Illinois method at 60 digits.
+  stability_max  `stability --plant P --H "H0 + K*(H1)" --T T --delay n --max K`: the sampled loop
+                 built here (ZOH by mpmath.expm, controller realisations, a shift register for the
+                 delay), its spectral radius by mpmath.eig at 50 digits, scanned from K -> 0+
+                 (indep_loop.py).
+  scene_max      `stability --scene S --max g` on random 2-3 DOF scenes whose first device is often
+                 open-loop unstable: the same reference on the loop built from the scene's blocks.
+                 Any certified supremum with an unstable g in (0, sup) is a miss.
+
+Outcomes per case: agree, MISS (a disagreement: printed with the command line and the
+reference value; exit 1), REFERENCE MISSED (hapstab's own maximiser shows a value the reference's
+grid did not find: a weakness of the reference, also exit 1), refused (exit 2), undecided
+(exit 3), timeout. Refused, undecided and timeouts are never counted as agreement; they are
+listed per branch and by the distance from the boundary, and do not fail the run.
+Each criterion states per branch the least number of compared cases (a share of --cases); a
+run that compares fewer fails ("TOO FEW COMPARED"). --case K checks no minimum.
+"""
+import argparse
+import collections
+import math
+import os
+import random
+import sys
+import tempfile
+import time
+from fractions import Fraction as Q
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mpmath as mp  # noqa: E402
+
+import indep_loop as IL  # noqa: E402
+import indep_passivity as IP  # noqa: E402
+from indep_common import SumTF, dec, run_hapstab, shell_line  # noqa: E402
+
+# relative tolerances, and why:
+#  bound: hapstab prints a 30-digit enclosure rounded outward (33 digits); the reference is good to
+#  ~45 digits where it converged, and states its own error; 1e-25 leaves 5 digits for both.
+TOL_BOUND = mp.mpf(10) ** -25
+#  bound_max: the reference K* is bracketed to 1e-24 relative by bisection-type steps on b*(K) at
+#  60 digits; hapstab prints 30 digits. 1e-20 leaves room for b*'s error divided by its slope in K.
+TOL_KMAX = mp.mpf(10) ** -20
+#  stability_max / scene_max: the Illinois bracket of rho(K) = 1 is 1e-26 relative at 50 digits;
+#  hapstab is asked for 25 digits. 1e-20 relative. Delays >= 100 are decided in double: 1e-7.
+TOL_SUP = mp.mpf(10) ** -20
+TOL_SUP_DOUBLE = mp.mpf(10) ** -7
+
+
+def why_of(err, j):
+    """hapstab's own reason for a refusal or an undecided answer (stderr, or the JSON's note)."""
+    if err:
+        return err.splitlines()[-1]
+    if j:
+        for k in ("note", "evidence", "why", "method"):
+            if j.get(k):
+                return str(j[k])
+    return ""
+
+
+def enc(j, key="enclosure"):
+    e = j.get(key) if j else None
+    if not e:
+        return None
+    return dec(e[0]), dec(e[1])
+
+
+# ---------------------------------------------------------------------------------------------
+# bound
+
+
+def case_bound(rng):
+    H, T, n, tau, eta, tags = IP.gen_bound(rng)
+    return dict(H=H, T=T, n=n, tau=tau, eta=eta, tags=tags, args=IP.bound_args(H, T, n, tau, eta))
+
+
+def check_bound(c, exe, timeout):
+    rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
+    nu = Q(c["n"]) + c["tau"]
+    ref = IP.bstar(c["H"], c["T"], nu, c["eta"])
+    tags = dict(c["tags"])
+    if ref["kind"] == "+inf":
+        tags["max at"] = "+inf (w -> pi/T)"
+    else:
+        # label the maximiser; an end within the error of the best is that end
+        tags["max at"] = ref["where"]
+    tags["end w -> pi/T"] = ref["end_pi"]
+    out = dict(tags=tags, rc=rc, seconds=dt, ref=ref, margin=None)
+    refs = "+inf" if ref["kind"] == "+inf" else f"{mp.nstr(ref['value'], 35)} (error <= {mp.nstr(ref['err'], 3)}, {ref['where']})"
+    out["ref_text"] = refs
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+        return out
+    if rc in (2, 3):
+        out["outcome"] = "refused" if rc == 2 else "undecided"
+        out["why"] = why_of(err, j)
+        return out
+    if rc != 0 or j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+        return out
+    b = str(j.get("bound"))
+    hap_inf = b.lstrip("+") in ("inf", "Infinity")
+    out["hapstab"] = b
+    if ref["kind"] == "+inf":
+        out["outcome"] = "agree" if hap_inf else "MISS"
+        out["why"] = "" if hap_inf else f"the objective diverges to +inf as w -> pi/T; hapstab says b* = {b}"
+        return out
+    if hap_inf:
+        out["outcome"] = "MISS"
+        out["why"] = f"hapstab says b* = +inf; the reference's objective is bounded (end w -> pi/T: {ref['end_pi']})"
+        return out
+    lo, hi = enc(j)
+    v, e = ref["value"], ref["err"]
+    tol = e + TOL_BOUND * max(1, abs(v))
+    with mp.workdps(60):
+        if v > hi + tol:
+            out["outcome"] = "MISS"
+            out["why"] = f"the objective reaches {mp.nstr(v, 30)} > hapstab's upper end {mp.nstr(hi, 30)}"
+        elif v < lo - tol:
+            # the reference's grid may have missed the peak: evaluate at hapstab's maximiser
+            w = j.get("omega")
+            fw = None
+            if w not in (None, "", "null"):
+                th = dec(w) * (mp.mpf(c["T"].numerator) / c["T"].denominator)
+                ref2 = IP.bstar(c["H"], c["T"], nu, c["eta"], extra_theta=th)
+                fw = ref2["value"]
+            if fw is not None and fw >= lo - tol:
+                out["outcome"] = "REFERENCE MISSED"
+                out["why"] = f"the objective at hapstab's maximiser is {mp.nstr(fw, 30)}, above the reference's {mp.nstr(v, 30)}"
+            else:
+                out["outcome"] = "MISS"
+                out["why"] = f"hapstab's lower end {mp.nstr(lo, 30)} exceeds the objective's max {mp.nstr(v, 30)}"
+        else:
+            out["outcome"] = "agree"
+    return out
+
+
+BRANCHES_BOUND = [  # (tag, value, least share of the cases compared with that branch value)
+    ("delay", "sin(pi nu) > 0", 0.12), ("delay", "sin(pi nu) < 0", 0.12), ("delay", "integer", 0.12),
+    ("pole at z = -1", True, 0.15), ("pole at z = -1", False, 0.15),
+    ("max at", "w=0", 0.03), ("max at", "w=pi/T", 0.03), ("max at", "interior", 0.15),
+    ("max at", "+inf (w -> pi/T)", 0.03),
+    ("end w -> pi/T", "-inf", 0.03),
+    ("resonance 1e-5 from the circle", True, 0.08),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# bound --max K --damping b
+
+
+def case_bound_max(rng):
+    T = rng.choice(IP.TS[:4])
+    K0 = IP.rq(rng, 1, 4) / T / 10
+    B = IP.rq(rng, 0.1, 5)
+    fam0 = rng.choices(["wall", "tustin", "random", "wall+resonance"], weights=[35, 20, 25, 20])[0]
+    t0 = []
+    res = False
+    if fam0 == "wall":
+        t0.append(IP.Rational([B, -B], [T, 0]))
+    elif fam0 == "tustin":
+        t0.append(IP.Rational([2 * B, -2 * B], [T, T]))
+    elif fam0 == "random":
+        t0.append(IP.stable_term(rng))
+    else:
+        res = True
+        t0.append(IP.Rational([B, -B], [T, 0]))
+        t0.append(IP.stable_term(rng, resonant=True))
+    fam1 = rng.choices(["stiffness", "damping", "tustin damping", "random"], weights=[35, 25, 15, 25])[0]
+    if fam1 == "stiffness":
+        t1 = [IP.Rational([1], [1])]
+        knom = K0
+    elif fam1 == "damping":
+        t1 = [IP.Rational([1, -1], [T, 0])]
+        knom = 1
+    elif fam1 == "tustin damping":
+        t1 = [IP.Rational([2, -2], [T, T])]
+        knom = 1
+    else:
+        t1 = [IP.stable_term(rng)]
+        knom = 1
+    u = rng.random()
+    if u < 0.45:
+        tau = rng.choice(IP.FRACS[:6]) if rng.random() < 0.6 else Q(rng.randint(1, 20), rng.randint(2, 7))
+        if tau.denominator == 1:
+            tau += Q(1, 2)
+        n = 0 if rng.random() < 0.7 else rng.randint(1, 3)
+    else:
+        tau, n = Q(0), rng.randint(0, 3)
+    eta = IP.rq(rng, 0, 1) if rng.random() < 0.2 else Q(0)
+    H0, H1 = SumTF(t0), SumTF(t1)
+    s = math.sin(math.pi * float(Q(n) + tau))
+    tags = {"H0": fam0, "H1": fam1, "delay": "integer" if tau == 0 else ("sin(pi nu) > 0" if s > 0 else "sin(pi nu) < 0"),
+            "pole at z = -1": fam0 == "tustin" or fam1 == "tustin damping"}
+    # the damping b: b*(0) plus a margin (the reference b*(0) decides; +inf: b = 1)
+    ref0 = IP.bstar(H0, T, Q(n) + tau, eta, dps=30)
+    if ref0["kind"] == "+inf":
+        bq = Q(1)
+    else:
+        v = float(ref0["value"])
+        bq = Q(v + abs(v) * rng.uniform(0.05, 2) + rng.uniform(0.01, 1)).limit_denominator(1000)
+        if bq <= 0:  # b*(0) < 0: any damping is passive at K = 0; the device's b must be > 0
+            bq = Q(rng.randint(1, 100), 100)
+    args = ["bound", "--H", f"{H0.expr()} + K*({H1.expr()})", "--T", f"{T.numerator}/{T.denominator}",
+            "--max", "K", "--damping", f"{bq.numerator}/{bq.denominator}"]
+    if n:
+        args += ["--delay", str(n)]
+    if tau:
+        td = tau * T
+        args += ["--frac-delay", f"{td.numerator}/{td.denominator}"]
+    if eta:
+        args += ["--eta", f"{eta.numerator}/{eta.denominator}"]
+    return dict(H0=H0, H1=H1, T=T, n=n, tau=tau, eta=eta, b=bq, knom=knom, tags=tags, args=args)
+
+
+class KH:
+    """H0 + K H1 for the reference (K an exact rational or an mpf): evaluated term by term."""
+
+    def __init__(self, H0, H1, K):
+        self.H0, self.H1, self.K = H0, H1, K
+        Kf = float(K)
+        self.terms = list(H0.terms) + [_Scaled(t, K, Kf) for t in H1.terms]
+
+    def eval_mp(self, z):
+        return self.H0.eval_mp(z) + mp.mpf(self.K) * self.H1.eval_mp(z) if not isinstance(self.K, Q) else \
+            self.H0.eval_mp(z) + (mp.mpf(self.K.numerator) / self.K.denominator) * self.H1.eval_mp(z)
+
+
+class _Scaled:
+    def __init__(self, t, K, Kf):
+        self.t, self.K, self.Kf = t, K, Kf
+        self.den = t.den
+
+    def coeffs_float(self):
+        num, den = self.t.coeffs_float()
+        return [self.Kf * x for x in num], den
+
+
+def bstar_K(c, K, dps=60, fast=False):
+    return IP.bstar(KH(c["H0"], c["H1"], K), c["T"], Q(c["n"]) + c["tau"], c["eta"], dps=dps, fast=fast)
+
+
+def kmax_reference(c):
+    """dict(kind 'zero'|'inf'|'finite', lo, hi, where)."""
+    b = mp.mpf(c["b"].numerator) / c["b"].denominator
+    r0 = bstar_K(c, Q(0), dps=40)
+    if r0["kind"] == "+inf" or r0["value"] >= b:
+        return dict(kind="zero", why=f"b*(0) = {mp.nstr(r0['value'], 20)} >= b")
+    # scan K from 1e-8 knom upwards (the fast b*: double refinement), 4 points per decade
+    knom = float(c["knom"])
+    ks = [knom * 10 ** (i / 4) for i in range(-32, 41)]
+    prev = 0.0
+    hit = None
+    for k in ks:
+        r = bstar_K(c, mp.mpf(k), dps=30, fast=True)
+        if r["kind"] == "+inf" or r["value"] >= b:
+            hit = k
+            break
+        prev = k
+    if hit is None:
+        return dict(kind="inf", scanned_to=ks[-1])
+    if prev == 0.0:
+        return dict(kind="zero", why=f"b*(K) >= b already at K = {hit:g}")
+    a, bb = mp.mpf(prev), mp.mpf(hit)
+
+    def g(K):
+        r = bstar_K(c, K, dps=60)
+        return mp.mpf(1) if r["kind"] == "+inf" else r["value"] - b
+    def gf(K):
+        r = bstar_K(c, K, dps=30, fast=True)
+        return mp.mpf(1) if r["kind"] == "+inf" else r["value"] - b
+    with mp.workdps(60):
+        # bisection to 1e-9 relative on the fast b* (double refinement), then the Illinois
+        # method on the 60-digit b* to 1e-24, from a bracket checked at 60 digits
+        while bb - a > mp.mpf(10) ** -9 * bb:
+            m = (a + bb) / 2
+            if gf(m) >= 0:
+                bb = m
+            else:
+                a = m
+        # the fast b* may be off by ~1e-7 (near a pole at z = -1 its double grid is noise):
+        # widen the bracket until the 60-digit b* straddles b at its ends
+        a0, b0 = a, bb
+        for w in (mp.mpf(10) ** -8, mp.mpf(10) ** -6, mp.mpf(10) ** -4, mp.mpf(10) ** -2):
+            a, bb = a0 * (1 - w), b0 * (1 + w)
+            ga, gb = g(a), g(bb)
+            if ga < 0 <= gb:
+                break
+        if not (ga < 0 <= gb):
+            return dict(kind="reference-unsure", lo=a, hi=bb, why=f"60-digit b* - b = {mp.nstr(ga, 5)}, {mp.nstr(gb, 5)} at the bracket's ends")
+        if gb > 1e10 * abs(ga) or gb == 1:  # a jump (a divergence), not a smooth crossing
+            return dict(kind="finite", lo=a, hi=bb, where="jump")
+        lo, hi = IL.illinois(g, a, bb, ga, gb, mp.mpf(10) ** -24)
+        rr = bstar_K(c, hi, dps=60)
+        return dict(kind="finite", lo=lo, hi=hi, where=rr["where"])
+
+
+def check_bound_max(c, exe, timeout):
+    rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
+    ref = kmax_reference(c)
+    tags = dict(c["tags"])
+    tags["K_max"] = ref["kind"]
+    if ref["kind"] == "finite":
+        tags["b* = b at"] = ref["where"]
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
+    if ref["kind"] == "finite":
+        out["ref_text"] = f"K_max in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}]"
+    else:
+        out["ref_text"] = f"K_max {ref['kind']} ({ref.get('why', '')})"
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+        return out
+    if rc in (2, 3):
+        out["outcome"] = "refused" if rc == 2 else "undecided"
+        out["why"] = why_of(err, j)
+        return out
+    if j is None or rc not in (0, 1):
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+        return out
+    mx = str(j.get("max"))
+    out["hapstab"] = mx
+    if ref["kind"] == "reference-unsure":
+        out["outcome"] = "REFERENCE MISSED"
+        out["why"] = ref["why"]
+        return out
+    if ref["kind"] == "zero":
+        ok = mx in ("0",) or (dec(mx) == 0 if mx not in ("None", "inf") else False)
+        out["outcome"] = "agree" if ok else "MISS"
+        out["why"] = "" if ok else f"the reference finds b*(K) >= b for every K > 0 ({ref.get('why')}); hapstab says {mx}"
+        return out
+    if ref["kind"] == "inf":
+        ok = mx.lstrip("+") == "inf"
+        out["outcome"] = "agree" if ok else "MISS"
+        out["why"] = "" if ok else f"the reference finds b*(K) < b up to K = {ref['scanned_to']:g}; hapstab says {mx}"
+        return out
+    if mx.lstrip("+") == "inf" or j.get("enclosure") is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"hapstab says {mx}; the reference crosses b at K in [{mp.nstr(ref['lo'], 20)}, {mp.nstr(ref['hi'], 20)}]"
+        return out
+    lo, hi = enc(j)
+    tl = ref["lo"] * (1 - TOL_KMAX)
+    th = ref["hi"] * (1 + TOL_KMAX)
+    if ref["where"] == "jump":
+        tl, th = ref["lo"], ref["hi"]
+    if hi < tl or lo > th:
+        out["outcome"] = "MISS"
+        out["why"] = f"hapstab's enclosure [{mp.nstr(lo, 25)}, {mp.nstr(hi, 25)}] misses the reference's"
+    else:
+        out["outcome"] = "agree"
+    return out
+
+
+BRANCHES_BOUND_MAX = [
+    ("delay", "integer", 0.2), ("delay", "sin(pi nu) > 0", 0.06), ("delay", "sin(pi nu) < 0", 0.06),
+    ("K_max", "finite", 0.4), ("K_max", "zero", 0.01),
+    ("pole at z = -1", True, 0.1),
+    ("b* = b at", "interior", 0.05),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# stability --max (one DOF) and --scene --max (several DOF)
+
+
+def case_stability(rng):
+    c = IL.gen_stability(rng)
+    c["args"] = IL.stability_args(c)
+    return c
+
+
+def compare_sup(out, ref, j, rc, tol, name):
+    """Shared verdict logic of stability_max and scene_max."""
+    mx = str(j.get("max")) if j else "None"
+    out["hapstab"] = mx
+    if ref["kind"] == "zero":
+        ok = rc == 1 and mx == "0"
+        out["outcome"] = "agree" if ok else "MISS"
+        if not ok:
+            out["why"] = f"the loop is unstable for small {name} (rho = {mp.nstr(ref['rho_small'], 20)} at {name} -> 0+); hapstab: exit {rc}, max {mx}"
+        return out
+    if ref["kind"] == "inf":
+        ok = rc == 0 and mx.lstrip("+") == "inf"
+        out["outcome"] = "agree" if ok else "MISS"
+        if not ok:
+            out["why"] = f"no crossing up to {name} = {ref['scanned_to']:g}; hapstab: exit {rc}, max {mx}"
+        return out
+    if ref["kind"] != "sup":
+        out["outcome"] = "REFERENCE MISSED"
+        out["why"] = f"the reference could not place its crossing: {ref}"
+        return out
+    if rc == 1 and mx == "0":
+        out["outcome"] = "MISS"
+        out["why"] = f"hapstab says unstable for small {name}; the reference is stable on (0, {mp.nstr(ref['lo'], 20)})"
+        return out
+    if rc != 0 or j.get("enclosure") is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"hapstab: exit {rc}, max {mx}; the reference's sup is {mp.nstr(ref['value'], 25)}"
+        return out
+    lo, hi = enc(j)
+    if hi < ref["lo"] * (1 - tol) or lo > ref["hi"] * (1 + tol):
+        out["outcome"] = "MISS"
+        out["why"] = (f"hapstab's enclosure [{mp.nstr(lo, 25)}, {mp.nstr(hi, 25)}] misses the reference's "
+                      f"[{mp.nstr(ref['lo'], 25)}, {mp.nstr(ref['hi'], 25)}]")
+        if lo > ref["hi"] * (1 + tol):
+            out["why"] += f": the loop is NOT stable at {name} = {mp.nstr(ref['hi'], 25)} inside hapstab's (0, sup)"
+        return out
+    out["outcome"] = "agree"
+    crossing = (j.get("crossing") or {}).get("at")
+    if crossing and ref.get("crossing") and crossing.replace("complex pair", "complex") != ref["crossing"]:
+        out["note"] = f"crossing: hapstab {crossing}, reference {ref['crossing']}"
+    return out
+
+
+def check_claim_double(loop, j, rc, knom):
+    """n >= 1000: only hapstab's claim is checked, in double (the full reference would take minutes)."""
+    if rc == 0 and j and j.get("enclosure"):
+        lo, hi = enc(j)
+        for f in (1e-6, 1e-4, 0.01, 0.1, 0.25, 0.5, 0.9, 1 - 1e-6):
+            if IL.rho_np(loop, float(lo) * f) >= 1:
+                return dict(kind="claim", ok=False, why=f"rho >= 1 at K = {float(lo) * f:g} inside (0, lo)")
+        if IL.rho_np(loop, float(hi) * (1 + 1e-6)) < 1:
+            return dict(kind="claim", ok=False, why=f"rho < 1 just above hi = {float(hi):g}")
+        return dict(kind="claim", ok=True)
+    if rc == 1 and j and str(j.get("max")) == "0":
+        for f in (1e-6, 1e-4, 1e-2):
+            if IL.rho_np(loop, float(knom) * f) < 1:
+                return dict(kind="claim", ok=False, why=f"hapstab: unstable for small K, but rho < 1 at K = {float(knom) * f:g}")
+        return dict(kind="claim", ok=True)
+    return None
+
+
+def check_stability(c, exe, timeout):
+    rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
+    loop = IL.build_loop_1dof(c)
+    tags = dict(c["tags"])
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
+    if c["n"] >= 1000:
+        cl = check_claim_double(loop, j, rc, c["Knom"])
+        tags["stable at small K"] = "n/a (n >= 1000: claim checked)"
+        if rc == "timeout" or rc in (2, 3):
+            out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
+            out["why"] = why_of(err, j)
+            out["ref_text"] = "not computed (n >= 1000)"
+            return out
+        out["ref_text"] = "hapstab's claim checked in double at 8 points below lo and just above hi"
+        if cl is None:
+            out["outcome"] = "unchecked"
+            out["why"] = f"exit {rc}, max {j.get('max') if j else None}"
+            return out
+        out["outcome"] = "agree" if cl["ok"] else "MISS"
+        out["why"] = cl.get("why", "")
+        tags["crossing"] = (j.get("crossing") or {}).get("at", "?")
+        return out
+    precise = c["n"] < 100
+    ref = IL.sup_reference(loop, c["Knom"], precise=precise)
+    tags["stable at small K"] = ref["kind"] != "zero"
+    if ref["kind"] == "sup":
+        tags["crossing"] = ref["crossing"]
+        out["margin"] = ref["margin"]
+        out["ref_text"] = f"sup K in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}] ({ref['crossing']})"
+    else:
+        tags["crossing"] = ref["kind"]
+        out["ref_text"] = f"sup K: {ref['kind']}"
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+        return out
+    if rc in (2, 3):
+        out["outcome"] = "refused" if rc == 2 else "undecided"
+        out["why"] = why_of(err, j)
+        return out
+    if j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+        return out
+    return compare_sup(out, ref, j, rc, TOL_SUP if precise else TOL_SUP_DOUBLE, "K")
+
+
+BRANCHES_STABILITY = [
+    ("stable at small K", True, 0.3), ("stable at small K", False, 0.05),
+    ("crossing", "z = 1", 0.02), ("crossing", "z = -1", 0.02), ("crossing", "complex", 0.2),
+    ("delay", "0", 0.08), ("delay", "1-5", 0.4),
+]
+
+
+def case_scene(rng):
+    c = IL.gen_scene(rng)
+    return c
+
+
+def check_scene(c, exe, timeout):
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_scene_") as f:
+        f.write(IL.scene_toml(c))
+        path = f.name
+    args = ["stability", "--scene", path, "--max", "g", "--digits", "25"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    loop = IL.build_loop_scene(c)
+    ref = IL.sup_reference(loop, c["Knom"])
+    tags = dict(c["tags"])
+    tags["stable at small g"] = ref["kind"] != "zero"
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=IL.scene_toml(c), args=args)
+    if ref["kind"] == "sup":
+        tags["crossing"] = ref["crossing"]
+        out["margin"] = ref["margin"]
+        out["ref_text"] = f"sup g in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}] ({ref['crossing']})"
+    else:
+        tags["crossing"] = ref["kind"]
+        out["ref_text"] = f"sup g: {ref['kind']}"
+    # the states hapstab's closed-loop matrix has, beside the reference's (informative)
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc in (2, 3):
+        out["outcome"] = "refused" if rc == 2 else "undecided"
+        out["why"] = why_of(err, j)
+        if rc == 3 and j and j.get("stable_on") and ref["kind"] in ("zero", "sup"):
+            # "stable on [a, b]": every g there must be stable for the reference
+            a, b = enc(j, "stable_on")
+            out["tags"]["exit 3 with stable_on"] = True
+            for f in (0, 0.25, 0.5, 0.75, 1):
+                g = a + (b - a) * f
+                if g > 0 and IL.rho_mp(loop, g)[0] >= 1:
+                    out["outcome"] = "MISS"
+                    out["why"] = f"hapstab proves stable on [{a}, {b}], but rho >= 1 at g = {mp.nstr(g, 20)}"
+                    if f == 1 and IL.rho_mp(loop, g * (1 - mp.mpf(10) ** -14))[0] < 1:
+                        out["why"] += (" (the printed upper end lies above the crossing: the interval"
+                                       " proven stable is rounded outward where it must be rounded inward)")
+                    break
+    elif j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+    else:
+        compare_sup(out, ref, j, rc, TOL_SUP, "g")
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] += f" (scene kept: {path})"
+    else:
+        os.unlink(path)
+    return out
+
+
+BRANCHES_SCENE = [  # compared cases only: an exit 3 ("stable on [a, b]", checked) is not a comparison
+    ("stable at small g", True, 0.2), ("stable at small g", False, 0.05),
+    ("first device", "unstable ss", 0.1), ("crossing", "complex", 0.05), ("delay", "0", 0.3),
+]
+
+
+CRITERIA = {
+    "bound": (case_bound, check_bound, BRANCHES_BOUND),
+    "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
+    "stability_max": (case_stability, check_stability, BRANCHES_STABILITY),
+    "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
+}
+
+
+def margin_bucket(m):
+    if m is None:
+        return "n/a"
+    m = abs(m)
+    for lim, name in ((1e-2, ">= 1e-2"), (1e-4, "1e-4..1e-2"), (1e-6, "1e-6..1e-4")):
+        if m >= lim:
+            return name
+    return "< 1e-6"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--hapstab", default="build/hapstab")
+    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max")
+    ap.add_argument("--cases", type=int, default=100)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--first", type=int, default=0)
+    ap.add_argument("--case", type=int, default=None)
+    ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--verbose", action="store_true")
+    ap.add_argument("--max-seconds", type=float, default=None,
+                    help="stop a criterion after this long and summarise the cases run (minimums scale to them)")
+    a = ap.parse_args()
+    mp.mp.dps = 60  # comparisons of 30-digit enclosures; the references set their own precision
+    if not os.access(a.hapstab, os.X_OK):
+        print(f"independent.py: --hapstab {a.hapstab}: not an executable", file=sys.stderr)
+        return 2
+    failed = False
+    for crit in a.criterion.split(","):
+        if crit not in CRITERIA:
+            print(f"independent.py: unknown criterion '{crit}' (known: {', '.join(CRITERIA)})", file=sys.stderr)
+            return 2
+        gen, check, branches = CRITERIA[crit]
+        ks = [a.case] if a.case is not None else range(a.first, a.first + a.cases)
+        counts = collections.Counter()
+        per_branch = collections.defaultdict(collections.Counter)
+        undec_margin = collections.Counter()
+        misses = []
+        t0 = time.monotonic()
+        slowest = (0, None)
+        done = []
+        for k in ks:
+            if a.max_seconds is not None and time.monotonic() - t0 > a.max_seconds:
+                print(f"   --max-seconds {a.max_seconds:g}: stopped after {len(done)} cases")
+                break
+            done.append(k)
+            rng = random.Random(f"{a.seed}:{crit}:{k}")
+            c = gen(rng)
+            tc = time.monotonic()
+            r = check(c, a.hapstab, a.timeout)
+            el = time.monotonic() - tc
+            if el > slowest[0]:
+                slowest = (el, k)
+            o = r["outcome"]
+            counts[o] += 1
+            compared = o in ("agree", "MISS", "REFERENCE MISSED")
+            for tag, val in r["tags"].items():
+                per_branch[(tag, val)][o] += 1
+                if compared:
+                    per_branch[(tag, val)]["compared"] += 1
+            if o in ("undecided", "refused", "timeout"):
+                undec_margin[(o, margin_bucket(r.get("margin")))] += 1
+            args = r.get("args", c.get("args"))
+            line = shell_line(a.hapstab, args) if args else ""
+            if o in ("MISS", "REFERENCE MISSED") or a.verbose or a.case is not None:
+                print(f"[{crit} case {k}] {o}: {r.get('why', '')}")
+                print(f"  command: {line}")
+                print(f"  reference: {r.get('ref_text')}; hapstab: {r.get('hapstab')} (exit {r['rc']}, {r['seconds']:.2f} s)")
+                print(f"  branches: {r['tags']}")
+                if r.get("scene"):
+                    print("  scene:\n    " + r["scene"].replace("\n", "\n    "))
+                print(f"  rerun: tests/verify/independent.py --hapstab {a.hapstab} --criterion {crit} --seed {a.seed} --case {k}")
+                sys.stdout.flush()
+            elif o in ("undecided", "refused", "timeout", "unchecked"):
+                print(f"[{crit} case {k}] {o} (exit {r['rc']}): {r.get('why', '')[:200]}")
+                print(f"  command: {line}")
+                sys.stdout.flush()
+            if o in ("MISS", "REFERENCE MISSED"):
+                misses.append(k)
+        dt = time.monotonic() - t0
+        n = len(done)
+        print(f"== {crit}: {n} cases (seed {a.seed}, first {ks[0]}), {dt:.1f} s, slowest case {slowest[1]} ({slowest[0]:.1f} s)")
+        print("   outcomes: " + ", ".join(f"{o} {v}" for o, v in sorted(counts.items())))
+        print("   per branch (compared = agree + miss; undecided/refused/timeout apart):")
+        for (tag, val), cnt in sorted(per_branch.items(), key=lambda kv: (kv[0][0], str(kv[0][1]))):
+            rest = ", ".join(f"{o} {v}" for o, v in sorted(cnt.items()) if o != "compared")
+            print(f"     {tag} = {val}: compared {cnt['compared']} ({rest})")
+        if undec_margin:
+            print("   not decided by hapstab, by the reference's distance from the boundary (1 - rho at sup/2):")
+            for (o, bk), v in sorted(undec_margin.items()):
+                print(f"     {o}, {bk}: {v}")
+        if a.case is None:
+            for tag, val, share in branches:
+                need = int(share * n)
+                have = per_branch[(tag, val)]["compared"]
+                flag = "" if have >= need else "   TOO FEW COMPARED"
+                print(f"   minimum: {tag} = {val}: {have} compared, minimum {need}{flag}")
+                if have < need:
+                    failed = True
+        if misses:
+            failed = True
+            print(f"   MISSES in cases {misses}")
+        sys.stdout.flush()
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
