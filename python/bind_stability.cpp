@@ -442,7 +442,8 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
         d["crossing"] = c;
       }
     }
-    if (proven_stable) d["stable_on"] = decimals(m.stable_from, m.stable_to, 17);
+    // inward: a proven set's printed ends lie inside it (as the command's stable_on)
+    if (proven_stable) d["stable_on"] = py::make_tuple(decimal_outward(m.stable_from, 17, +1), decimal_outward(m.stable_to, 17, -1));
     if (m.stable_at) d["stable_at"] = to_decimal(*m.stable_at, 17);
     if (m.unstable_at) d["unstable_at"] = to_decimal(*m.unstable_at, 17);
   }

@@ -227,6 +227,12 @@ int run_scene(const StabilityOpts& o) {
   return *v.stable ? cli::exit_ok : cli::exit_property_fails;
 }
 
+/// The interval proven stable, rounded INWARD (a proven set: its printed ends must lie inside it;
+/// rounded outward, its upper end landed above the certified crossing, where the loop is not stable).
+nlohmann::json stable_interval_json(const stability::LoopMax& m) {
+  return {decimal_outward(m.stable_from, 17, +1), decimal_outward(m.stable_to, 17, -1)};
+}
+
 // --scene --max NAME beyond one DOF (or with a [coupling]): the closed-loop matrix, affine in NAME
 // (stability/loop_max.hpp).
 nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o, const scene::Scene& sc) {
@@ -245,7 +251,7 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
     j["max"] = nullptr;
     // what is proven all the same: an interval of stable values (certified), below a certified crossing
     if (m.stable_to > m.stable_from) {
-      j["stable_on"] = enclosure_json({m.stable_from, m.stable_to}, 17);
+      j["stable_on"] = stable_interval_json(m);
       j["enclosure"] = m.crossing.hi > 0 ? enclosure_json(m.crossing, o.digits + 3) : nlohmann::json(nullptr);
     }
     return j;
@@ -255,7 +261,7 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   j["max_digits"] = d.digits;
   j["enclosure"] = enclosure_json(m.crossing, o.digits + 3);
   j["sup_enclosure"] = enclosure_json(m.sup, 17);
-  j["stable_on"] = enclosure_json({m.stable_from, m.stable_to}, 17);
+  j["stable_on"] = stable_interval_json(m);
   j["gap"] = m.gap;
   j["stable_at"] = to_decimal(*m.stable_at, 17);
   j["unstable_at"] = to_decimal(*m.unstable_at, 17);

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
@@ -1084,8 +1085,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
                "to each other for Rump's test)";
     return out;
   }
-  const std::string on = "every " + name + " in [" + numeric_decimal(static_cast<double>(out.stable_from), 17) + ", " +
-                         numeric_decimal(static_cast<double>(out.stable_to), 17) + "] is proven stable (" +
+  const std::string on = "every " + name + " in [" + decimal_outward(out.stable_from, 17, +1) + ", " +
+                         decimal_outward(out.stable_to, 17, -1) + "] is proven stable (" +
                          std::to_string(cov.checks) + " steps)";
   const std::string crossing = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
                                numeric_decimal(static_cast<double>(e.p.hi), 17) + "] is certified";
@@ -1098,7 +1099,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     // (0, stable_from) is not covered: the loop may be unstable there (an open-loop unstable
     // device stabilised only by larger gains), so no supremum of (0, sup) is stated
     out.status = Status::certified;  // of stable_on only; outcome stays undecided
-    out.note = crossing + " and " + on + ", but stability on (0, " + numeric_decimal(static_cast<double>(out.stable_from), 17) +
+    out.note = crossing + " and " + on + ", but stability on (0, " + decimal_outward(out.stable_from, 17, +1) +
                ") is not proven (the walk towards 0 stopped there" +
                std::string(sp.rho(0) >= 1 - 1e-12 ? ": M(0) has an eigenvalue on the unit circle (numeric)" : "") +
                "), so the supremum of (0, sup) is undecided";
@@ -1111,13 +1112,13 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   o.precision(6);
   o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
     << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
-    << " in [0, " << static_cast<double>(out.stable_to) << "] is stable (" << cov.checks
+    << " in [0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
     << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
   o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
   if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
   else
-    o << "The supremum lies in [" << static_cast<double>(out.stable_to) << ", crossing]: the crossing is it unless an eigenvalue "
+    o << "The supremum lies in [" << decimal_outward(out.stable_to, 6, -1) << ", crossing]: the crossing is it unless an eigenvalue "
       << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered";
   out.note = o.str();
   return out;
