@@ -25,12 +25,6 @@ MatQ pseudo(int r, int c, int seed) {
     for (int j = 0; j < c; ++j) M(i, j) = Q((seed * 37 + i * 11 + j * 7) % 19 - 9, 1 + (seed + i + 2 * j) % 5);
   return M;
 }
-bool same_tm(const TransferMatrix& a, const TransferMatrix& b) {
-  for (size_t i = 0; i < a.outputs(); ++i)
-    for (size_t j = 0; j < a.inputs(); ++j)
-      if (!(a(i, j).H == b(i, j).H)) return false;
-  return a.outputs() == b.outputs() && a.inputs() == b.inputs();
-}
 TransferFunction constant(const Q& c, const Q& T) { return tf(Polynomial<Q>(c), Polynomial<Q>(Q(1)), T); }
 // Lemma 1's matrix (2) with levels Delta, Phi (the LMI is L < 0). Lemma 2's sign typo is
 // checked in proofs/lmi_lemmas.cpp (000.lemma2.typo).

@@ -34,8 +34,6 @@ passivity::BoundProblem wall(const rational& K, const rational& B, int n) {
   return p;
 }
 
-double rel(double v, double ref) { return std::abs(v - ref) / std::abs(ref); }
-
 void write_bound(const std::filesystem::path& dir) {
   const std::filesystem::path file = dir / "ext_long_delay_bound.dat";
   std::ofstream f = open_data_file(file);

@@ -130,7 +130,8 @@ PlotData read_plot_data(const fs::path& sweep, const std::string& x, const std::
   std::vector<std::string> head, row;
   read_csv_record(in, head);
   const size_t cx = column_of(head, x, "--x"), cz = column_of(head, z, "--z");
-  const std::optional<size_t> cy = y.empty() ? std::nullopt : std::optional<size_t>(column_of(head, y, "--y"));
+  const bool has_y = !y.empty();  // a map (x, y) or a line plot over x
+  const size_t cy = has_y ? column_of(head, y, "--y") : 0;
   const size_t cerr = column_of(head, "error", "error");
   std::optional<size_t> cstatus;
   for (size_t k = 0; k < head.size(); ++k)
@@ -142,13 +143,13 @@ PlotData read_plot_data(const fs::path& sweep, const std::string& x, const std::
     for (const auto& a : spec->axes) {
       if (a.name == x) d.xlog = a.log, xcat = categorical && a.listed;
       if (a.name == y) d.ylog = a.log, ycat = categorical && a.listed;
-      if (!cy && a.name != x) group_columns.push_back(column_of(head, a.name, "axis"));
+      if (!has_y && a.name != x) group_columns.push_back(column_of(head, a.name, "axis"));
     }
   constexpr size_t max_lines = 12;
   bool first = true;
   while (read_csv_record(in, row)) {
     if (row.size() != head.size()) continue;
-    const std::string px = number_for_plot(row[cx]), py = cy ? number_for_plot(row[*cy]) : "0";
+    const std::string px = number_for_plot(row[cx]), py = has_y ? number_for_plot(row[cy]) : "0";
     if (px.empty() || py.empty())
       throw InputError("--x/--y: the row of point " + report::text(row[0].substr(0, 40)) + " has no number there");
     PlotRow r;
@@ -249,15 +250,6 @@ void write_plot_files(const PlotData& d, const fs::path& data) {
   for (size_t k = 0; k < 4; ++k) close_data_file(f[k], data / plot_files[k]);
   close_data_file(grid, data / "grid.dat");
   close_data_file(line, data / "line.dat");
-}
-
-/// Writes the plot data of column z over (x, y) from sweep/points.csv into `data`. Returns the
-/// number of points. (The figures sweep_map and sweep_contour use it on their own sweep.)
-size_t write_plot_data(const fs::path& sweep, const std::string& x, const std::string& y, const std::string& z,
-                       const fs::path& data) {
-  const PlotData d = read_plot_data(sweep, x, y, z, spec_of(sweep));
-  write_plot_files(d, data);
-  return d.rows.size();
 }
 
 /// A label: NAME [unit] (the unit from the spec's [units]) unless the user gave one.
