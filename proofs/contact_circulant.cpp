@@ -48,7 +48,6 @@ QM add(const QM& a, const QM& b, const rational& s = 1) {
     for (size_t j = 0; j < a.size(); ++j) c[i][j] += s * b[i][j];
   return c;
 }
-QM scale(const QM& a, const rational& s) { return add(zeros(static_cast<int>(a.size())), a, s); }
 QM transpose(const QM& a) {
   QM t = a;
   for (size_t i = 0; i < a.size(); ++i)

@@ -37,9 +37,9 @@ HAPSTAB_PROOF(fractional_pole_side, "001", "t_d with a pole at z = -1: +inf only
   Instances infinite{"t_d/T with sin(pi t_d/T) > 0: b* = +inf", 6}, finite{"t_d/T with sin(pi t_d/T) < 0: b* finite", 12};
   std::ostringstream worst;
   double max_excess = 0;
-  for (const rational K : {rational(20), rational(1000)})
-    for (const rational B : {rational(1, 2), rational(5)})
-      for (const rational tau : {rational(1, 100), rational(1, 2), rational(99, 100), rational(9, 4), rational(3, 2), rational(7, 2),
+  for (const rational& K : {rational(20), rational(1000)})
+    for (const rational& B : {rational(1, 2), rational(5)})
+      for (const rational& tau : {rational(1, 100), rational(1, 2), rational(99, 100), rational(9, 4), rational(3, 2), rational(7, 2),
                                  rational(4, 3), rational(5, 3), rational(5, 4), rational(7, 4), rational(11, 2)}) {
         BoundProblem p;
         p.H = RF(K) + RF(2 * B / T) * tustin_dz;

@@ -305,7 +305,7 @@ stability::Loop one_dof_scene_loop(const std::function<scene::Scene(const ration
   const stability::Loop one = stability::scene_loop(scene_at(1));
   const RationalFunction<rational> H1 = one.H.H - loop.H.H;
   if (H1.is_zero()) throw InputError("max='" + name + "': the scene's [environment] does not depend on " + name);
-  for (const rational k : {rational(2), rational(1, 3), rational(-7, 2)}) {
+  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2)}) {
     const stability::Loop lk = stability::scene_loop(scene_at(k));
     const bool device_same = same(lk.plant, loop.plant) &&
                              lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&

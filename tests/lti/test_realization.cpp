@@ -116,7 +116,7 @@ TEST(Realization, CharpolyOfLargeOrderWithDistinctEigenvalues) {
     ASSERT_EQ(p.degree(), n);
     EXPECT_EQ(p.coeff(n), 1);
     // det(x I - A) at x = 0, 1, -2 by exact elimination (exact_matrix.hpp), independent of FLINT's charpoly
-    for (const rational xv : {rational(0), rational(1), rational(-2)}) {
+    for (const rational& xv : {rational(0), rational(1), rational(-2)}) {
       MatQ M = MatQ(MatQ::Identity(n, n)) * xv - A;
       EXPECT_EQ(p(xv), exact_determinant(M)) << "n = " << n << ", x = " << xv;
     }

@@ -49,7 +49,7 @@ std::optional<rational> find_witness(const RationalFunction<rational>& f, const 
     const rational d = f.den()(c);
     return d != 0 && f.num()(c) / d >= target;
   };
-  for (const rational c : {rational(1), rational(-1), rational(0)})
+  for (const rational& c : {rational(1), rational(-1), rational(0)})
     if (ok(c)) return c;
   if (b.omega_enclosure) {  // cos(w T) at the midpoint of the maximiser's enclosure
     using R = mpfloat<300>;
