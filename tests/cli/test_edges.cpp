@@ -123,8 +123,11 @@ TEST(Edges, MultiDofSupremumOfALoopUnstableAtSmallGains) {
   const auto r = run_cli("stability --scene " + scene + " --max g --json");
   ASSERT_NE(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
-  if (r.code == 1) EXPECT_EQ(j["max"], "0") << r.out;
-  else EXPECT_EQ(r.code, 3) << r.out;
+  if (r.code == 1) {
+    EXPECT_EQ(j["max"], "0") << r.out;
+  } else {
+    EXPECT_EQ(r.code, 3) << r.out;
+  }
   // and the loop itself, at g = 1/100: NOT stable (the decider of `stability --scene`)
   const auto at = run_cli("stability --scene " + scene + " --set g=1/100 --json");
   EXPECT_EQ(at.code, 1) << at.out;
@@ -205,7 +208,9 @@ TEST(Edges, StabilityMaxWithAnExtremeMassEnds) {
                          "--set B=1/2 --T 1/1000 --delay 100 --max K --json");
   ASSERT_TRUE(r.code == 0 || r.code == 3) << r.code << "\n" << r.out;
   const auto j = nlohmann::json::parse(r.out);
-  if (r.code == 3) EXPECT_EQ(j["status"], "undecided") << r.out;
+  if (r.code == 3) {
+    EXPECT_EQ(j["status"], "undecided") << r.out;
+  }
 }
 
 }  // namespace
