@@ -22,24 +22,15 @@ import numpy as np
 import pytest
 
 import hapstab
+from clitools import CLI, F, cli
 
-CLI = os.environ.get("HAPSTAB_CLI", "hapstab")
 EXAMPLES = Path(hapstab.examples_dir())
 WALL = "K + B*(z-1)/(T*z)"
 KB = {"K": 1000, "B": 5}
 
 
-def cli(*args, codes=(0, 1)):
-    """`hapstab args... --json`: (exit code, JSON); the exit code must be one of `codes`."""
-    p = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True, check=False)
-    assert p.returncode in codes, p.stderr
-    return p.returncode, json.loads(p.stdout)
 
 
-def F(text):
-    """An exact decimal / p/q string as a Fraction."""
-    num, _, den = text.partition("/")
-    return Fraction(num) / Fraction(den) if den else Fraction(num)
 
 
 # ---- the package ---------------------------------------------------------------------------

@@ -16,7 +16,6 @@
 
 Run: PYTHONPATH=build/python HAPSTAB_CLI=build/hapstab /usr/bin/python3 -m pytest tests/python
 """
-import json
 import math
 import os
 import shutil
@@ -30,23 +29,16 @@ import numpy as np
 import pytest
 
 import hapstab
+from clitools import CLI, F, cli
 
-CLI = os.environ.get("HAPSTAB_CLI", "hapstab")
 EXAMPLES = Path(hapstab.examples_dir())
 WALL = "K + B*(z-1)/(T*z)"
 KB = {"K": 1000, "B": 5}
 NARROW = "(z-1)/(z^2-2*0.9999*0.8*z+0.9999^2)"  # a resonance: b* certified (irrational), 6.6667...
 
 
-def cli(*args, codes=(0, 1)):
-    p = subprocess.run([CLI, *args, "--json"], capture_output=True, text=True, check=False)
-    assert p.returncode in codes, p.stderr
-    return p.returncode, json.loads(p.stdout)
 
 
-def F(text):
-    num, _, den = text.partition("/")
-    return Fraction(num) / Fraction(den) if den else Fraction(num)
 
 
 # ---- issue 46 item 7: comparisons only on proven results ---------------------------------------
