@@ -444,6 +444,17 @@ def check_claim_double(loop, j, rc, knom):
     return None
 
 
+def tag_reference(ref, tags, out, name):
+    """The reference's supremum (or its kind) into the case's tags and its printed text."""
+    if ref["kind"] == "sup":
+        tags["crossing"] = ref["crossing"]
+        out["margin"] = ref["margin"]
+        out["ref_text"] = f"sup {name} in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}] ({ref['crossing']})"
+    else:
+        tags["crossing"] = ref["kind"]
+        out["ref_text"] = f"sup {name}: {ref['kind']}"
+
+
 def check_stability(c, exe, timeout):
     rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
     loop = IL.build_loop_1dof(c)
@@ -469,13 +480,7 @@ def check_stability(c, exe, timeout):
     precise = c["n"] < 100
     ref = IL.sup_reference(loop, c["Knom"], precise=precise)
     tags["stable at small K"] = ref["kind"] != "zero"
-    if ref["kind"] == "sup":
-        tags["crossing"] = ref["crossing"]
-        out["margin"] = ref["margin"]
-        out["ref_text"] = f"sup K in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}] ({ref['crossing']})"
-    else:
-        tags["crossing"] = ref["kind"]
-        out["ref_text"] = f"sup K: {ref['kind']}"
+    tag_reference(ref, tags, out, "K")
     if rc == "timeout":
         out["outcome"] = "timeout"
         return out
@@ -513,13 +518,7 @@ def check_scene(c, exe, timeout):
     tags = dict(c["tags"])
     tags["stable at small g"] = ref["kind"] != "zero"
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=IL.scene_toml(c), args=args)
-    if ref["kind"] == "sup":
-        tags["crossing"] = ref["crossing"]
-        out["margin"] = ref["margin"]
-        out["ref_text"] = f"sup g in [{mp.nstr(ref['lo'], 30)}, {mp.nstr(ref['hi'], 30)}] ({ref['crossing']})"
-    else:
-        tags["crossing"] = ref["kind"]
-        out["ref_text"] = f"sup g: {ref['kind']}"
+    tag_reference(ref, tags, out, "g")
     # the states hapstab's closed-loop matrix has, beside the reference's (informative)
     if rc == "timeout":
         out["outcome"] = "timeout"
