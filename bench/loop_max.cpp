@@ -46,7 +46,7 @@ void BM_loop_max(benchmark::State& state) {
   const stability::LoopAt at = family(static_cast<int>(state.range(0)));
   stability::LoopMax r;
   for (auto _ : state) {
-    r = stability::max_parameter(at, rational(1, 2), "g", 16);
+    r = stability::max_parameter(at, rational(1, 2), "g", 2, 16);  // no coupling, gain = "g": affine outright (scene/parameter_degree.hpp)
     benchmark::DoNotOptimize(r.sup.hi);
   }
   state.counters["holds"] = r.outcome == Outcome::holds ? 1 : 0;

@@ -59,7 +59,7 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
           s.environment = spring_dampers(Q(1), {p}, {B}, Q(0), T);
           return s;
         };
-        const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 16);
+        const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 2, 16);  // no coupling, a static wall affine in p: 2 values fix it
         // M(0) has the mass's Jordan block at z = 1, so the walk cannot cover (0, a): the supremum is
         // not stated (undecided); what is certified -- the crossing and [a, b] stable -- must agree
         const bool crossing = r.crossing.lo <= K && K <= r.crossing.hi && rel(r.crossing.hi, r.crossing.lo) <= 1e-15;
@@ -94,7 +94,7 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
         s.environment = spring_dampers(g, {Q(200), Q(300)}, {Q(2), Q(3)}, Kc, T);
         return s;
       };
-      const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", 16);
+      const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", 2, 16);  // no coupling, spring_dampers affine in g
       // pure masses: M(0) has Jordan blocks at z = 1, the supremum is not stated; the crossing and
       // the interval below it are
       if (r.crossing.hi == 0 || r.stable_to <= r.stable_from) {

@@ -30,6 +30,7 @@
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
 #include "hapstab/stability/loop_max.hpp"
+#include "hapstab/scene/parameter_degree.hpp"
 #include "hapstab/stability/scene_loop.hpp"
 #include "python/binding.hpp"
 
@@ -297,30 +298,6 @@ py::dict scene_max_fields(const std::string& name, const std::string& path, cons
   return d;
 }
 
-/// One-DOF scene without [coupling]: its loop (stability/scene_loop.hpp) with NAME a gain of
-/// [environment], H = H0 + NAME H1 checked at three more values (as cmd_stability.cpp's scene_loop_of).
-stability::Loop one_dof_scene_loop(const std::function<scene::Scene(const rational&)>& scene_at, const std::string& name) {
-  auto same = [](const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); };
-  stability::Loop loop = stability::scene_loop(scene_at(0));
-  const stability::Loop one = stability::scene_loop(scene_at(1));
-  const RationalFunction<rational> H1 = one.H.H - loop.H.H;
-  if (H1.is_zero()) throw InputError("max='" + name + "': the scene's [environment] does not depend on " + name);
-  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2)}) {
-    const stability::Loop lk = stability::scene_loop(scene_at(k));
-    const bool device_same = same(lk.plant, loop.plant) &&
-                             lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&
-                             (!lk.operator_impedance || same(*lk.operator_impedance, *loop.operator_impedance));
-    if (!device_same || lk.delay != loop.delay)
-      throw InputError("max='" + name + "': only a gain of [environment] can be maximised, but " + name +
-                       " changes the device, the operator or the delay");
-    const RationalFunction<rational> affine = loop.H.H + RationalFunction<rational>(k) * H1;
-    if (!same(lk.H, tf(affine.num(), affine.den(), loop.T)))
-      throw InputError("max='" + name + "': [environment] must be affine in " + name + " (H = H0 + " + name +
-                       " H1), e.g. a stiffness");
-  }
-  loop.H_gain = tf(H1.num(), H1.den(), loop.T);
-  return loop;
-}
 
 /// stability(scene=S, max=NAME[, conservatism=True]): {"record": the value record, and the fields
 /// of scene_max_fields}. digits: of the crossing (1..1000; the closed-loop matrix takes up to 60,
@@ -352,7 +329,7 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
   const bool one_dof = sc.loop.dofs() == 1 && sc.loop.devices.size() == 1 && sc.loop.operators.size() <= 1 &&
                        !sc.loop.coupling && !conservatism;
   if (one_dof) {  // stability::max_gain on the one-DOF loop
-    const stability::Loop loop = one_dof_scene_loop(scene_at, name);
+    const stability::Loop loop = stability::scene_loop_affine(scene_at, name, "max='" + name + "': ");
     stability::MaxGain m;
     run_interruptible([&] { m = stability::max_gain(loop, digits, name); });
     LoopInput in{"", "", "", name, loop.T, 0, digits};
@@ -371,13 +348,15 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
   const stability::LoopAt loop_at = [&](const rational& p) { return scene_at(p).loop; };
   std::optional<conservatism::VerdictBracket> t5;
   std::string not_affine;
+  long points = 0;  // how many values prove M(p) affine (scene/parameter_degree.hpp)
   std::optional<Enclosure<rational>> exact_side;  // holds the exact side's boundary (certified)
   bool exact_is_supremum = false;                 // stability on (0, exact_side) proven
   run_interruptible([&] {
     // Theorem 5 first: its refusals (no [coupling], a [delay]) come before any long computation
     if (conservatism) t5 = conservatism::theorem5_max(scene_at, reference, name, std::min(digits, 6));
     try {
-      stability::loop_family(loop_at, reference, name);
+      points = scene::points_needed(scene::parameter_degree(sc, name));  // from the scene's text
+      stability::loop_family(loop_at, reference, name, points);
     } catch (const InputError& e) {
       not_affine = e.what();
     }
@@ -400,7 +379,7 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
                 ": a change of certified verdicts, not a proven supremum)";
   } else {
     stability::LoopMax m;
-    run_interruptible([&] { m = stability::max_parameter(loop_at, reference, name, std::min(digits, 60)); });
+    run_interruptible([&] { m = stability::max_parameter(loop_at, reference, name, points, std::min(digits, 60)); });
     const bool proven_stable = m.stable_to > m.stable_from;
     d = scene_max_fields(name, "closed_loop_matrix", to_string(m.outcome));
     d["note"] = m.note;

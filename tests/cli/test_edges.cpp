@@ -18,6 +18,7 @@
 
 #include "cli/cli_run.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "test_files.hpp"
 
 namespace {
 
@@ -211,6 +212,65 @@ TEST(Edges, StabilityMaxWithAnExtremeMassEnds) {
   if (r.code == 3) {
     EXPECT_EQ(j["status"], "undecided") << r.out;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// Item 11, second part: a hidden mode at 1 - 1e-30 is an eigenvalue of the loop as written, so the
+// one-DOF verdict's spectral radius is its, not the reduced loop's (~0.96), and it is printed rounded
+// outward: the printed interval holds 1 - 1e-30 (reference: the scene's own A, an exact rational).
+TEST(Edges, SpectralRadiusOfTheLoopAsWrittenHoldsAHiddenModeNearOne) {
+  const auto r = run_cli("stability --scene " + std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/hidden_env_near_one.toml");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string key = "spectral radius of the loop as written (its decaying hidden modes included) in [";
+  const auto at = r.out.find(key);
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const auto comma = r.out.find(", ", at + key.size()), close = r.out.find(']', at + key.size());
+  const auto lo = hapstab::try_parse_rational(r.out.substr(at + key.size(), comma - at - key.size()));
+  const auto hi = hapstab::try_parse_rational(r.out.substr(comma + 2, close - comma - 2));
+  ASSERT_TRUE(lo && hi) << r.out;
+  const hapstab::rational mode = 1 - hapstab::pow10(-30);
+  EXPECT_LE(*lo, mode) << r.out;
+  EXPECT_GE(*hi, mode) << r.out;
+  EXPECT_GT(*lo, hapstab::rational(99, 100)) << "the reduced loop's radius (~0.96) was printed: " << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+std::string edge_scene(const std::string& name) { return std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/" + name; }
+
+// Item 5: affinity in NAME is proven from the scene's text, not sampled. Each scene below agrees
+// with an affine family at exactly the values the old check used (g = 1, 2, 1/3, 7/2; K = 0, 1, 2,
+// 1/3, -7/2), so the old check accepted it and the certified crossing was computed on a family
+// that is not the loop (reference: the expressions themselves, of degree 4 and 5 in the name).
+TEST(Edges, AffinityInTheParameterIsProvenNotSampled) {
+  const auto two = run_cli("stability --scene " + edge_scene("gain_agrees_at_old_checks_2dof.toml") + " --max g --json");
+  const auto j = nlohmann::json::parse(two.out);
+  EXPECT_EQ(j["path"], "bisection_on_verdicts") << two.out;
+  EXPECT_EQ(j["supremum_proven"], false) << two.out;
+  EXPECT_NE(j["not_affine"].get<std::string>().find("environment.gain"), std::string::npos) << two.out;
+  const auto one = run_cli("stability --scene " + edge_scene("stiffness_agrees_at_old_checks.toml") + " --max K");
+  EXPECT_EQ(one.code, 2) << one.out;
+  EXPECT_NE(one.out.find("environment.tf"), std::string::npos) << one.out;
+  // a gain written into another parameter, or a parameter of the plant: named, never sampled
+  const auto path = hapstab_test::temp_path("edges", "indirect.toml");
+  std::string text = hapstab_test::slurp(edge_scene("unstable_small_gain_2dof.toml"));
+  const std::string gain = "gain = \"g\"";
+  ASSERT_NE(text.find(gain), std::string::npos);
+  text.replace(text.find(gain), gain.size(), "gain = \"h\"");
+  text.replace(text.find("g = \"1\""), 7, "g = \"1\"\nh = \"2*g\"");
+  std::ofstream(path) << text;
+  const auto ind = run_cli("stability --scene " + path.string() + " --max g --json");
+  const auto ji = nlohmann::json::parse(ind.out);
+  EXPECT_EQ(ji["path"], "bisection_on_verdicts") << ind.out;
+  EXPECT_NE(ji["not_affine"].get<std::string>().find("parameters.h"), std::string::npos) << ind.out;
+  // the documented forms are proven and keep the certified crossing
+  const auto ok = run_cli("stability --scene " + edge_scene("unstable_small_gain_2dof.toml") + " --max g --json");
+  EXPECT_EQ(nlohmann::json::parse(ok.out)["path"], "closed_loop_matrix") << ok.out;
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/poly/stability.hpp"
+#include "hapstab/scene/parameter_degree.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_max.hpp"
@@ -66,6 +67,11 @@ tf = [["250 + 2*(z-1)/(T*z)", "-50"], ["-50", "350 + 3*(z-1)/(T*z)"]]
 
 // M(p) exactly (sim/closed_loop.hpp: the plant's exponentials are rational for pure masses), its
 // Schur verdict exactly: Schur-Cohn on det(zI - M) (poly/stability.hpp)
+/// How many values prove the scene's loop affine in `name`, from its text (scene/parameter_degree.hpp).
+long points(const std::string& text, const std::map<std::string, Q>& set, const std::string& name) {
+  return scene::points_needed(scene::parameter_degree(scene::parse_scene(text, "test_loop_max", set), name));
+}
+
 bool exactly_stable(const LoopSpec& s) {
   const std::optional<MatQ> M = sampled_closed_loop(s).exact;
   EXPECT_TRUE(M.has_value()) << "no exact closed loop: the reference does not apply";
@@ -84,7 +90,7 @@ TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
       const Q K = 2 * B / T * (2 * m - B * T) / (2 * m + B * T);
       // the wall K' + B (z-1)/(Tz) with K' = p: affine in p (the damper's part rides along unscaled)
       const stability::LoopAt at = [&](const Q& p) { return scene_loop(kPureMass, {{"m", m}, {"B", B}, {"K", p}}); };
-      const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", 16);
+      const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", points(kPureMass, {{"m", m}, {"B", B}}, "K"), 16);
       // M(0) has the mass's Jordan block at z = 1: (0, a) is not covered, so no supremum is stated
       // (issue 46 item 2); the crossing and the interval proven stable below it are
       EXPECT_EQ(r.outcome, Outcome::undecided) << r.note;
@@ -101,7 +107,7 @@ TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
 
 TEST(LoopMax, TwoDofAgreesWithExactSchurBisection) {
   const stability::LoopAt at = [](const Q& g) { return two_masses(g); };
-  const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", 16);
+  const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", points(kTwoMasses, {}, "g"), 16);
   // pure masses: M(0) on the circle, the supremum undecided; the crossing and [a, b] certified
   ASSERT_GT(r.crossing.hi, 0) << r.note;
   ASSERT_LT(r.stable_from, r.stable_to) << r.note;
@@ -133,7 +139,7 @@ TEST(LoopMax, RefusesWhatItCannotModel) {
     return s;
   };
   try {
-    stability::max_parameter(pole, Q(1), "a", 16);
+    stability::max_parameter(pole, Q(1), "a", 4, 16);
     FAIL() << "accepted a non-affine parameter";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("--max a"), std::string::npos) << e.what();
@@ -141,10 +147,10 @@ TEST(LoopMax, RefusesWhatItCannotModel) {
   }
   const stability::LoopAt none = [](const Q&) { return two_masses(Q(1)); };
   try {
-    stability::max_parameter(none, Q(1), "c", 16);
+    stability::max_parameter(none, Q(1), "c", 4, 16);
     FAIL() << "accepted a parameter the loop does not depend on";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("does not depend on c"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(stability::max_parameter([](const Q& g) { return two_masses(g); }, Q(1), "g", 0), InputError);
+  EXPECT_THROW(stability::max_parameter([](const Q& g) { return two_masses(g); }, Q(1), "g", 4, 0), InputError);
 }

@@ -34,6 +34,7 @@
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/scene/parameter_degree.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/hidden_modes.hpp"
@@ -54,43 +55,27 @@ struct StabilityOpts {
   bool json = false, conservatism = false;
 };
 
-bool same(const TransferFunction& a, const TransferFunction& b) { return a.num() == b.num() && a.den() == b.den(); }
 
 /// --scene: a one-DOF scene's loop (stability/scene_loop.hpp); with --max NAME, NAME is a scene
-/// parameter of [environment] only, split as --H is: H = H0 + NAME H1, checked affine at three
-/// more values.
+/// parameter of [environment] only, split as --H is: H = H0 + NAME H1, proven: the scene's text
+/// bounds H's degree in NAME (scene/parameter_degree.hpp), and H is checked equal to H0 + NAME H1
+/// at that many values (at least 5).
 stability::Loop scene_loop_of(const StabilityOpts& o) {
   if (!o.plant.empty() || !o.H.empty() || !o.op.empty() || !o.T.empty() || o.delay != 0)
     throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
   const std::map<std::string, rational> params = cli::parse_sets(o.sets);
-  auto at = [&](const std::optional<rational>& k) {
+  const auto scene_at = [&](const rational& k) {
     std::map<std::string, rational> p = params;
-    if (k) p[o.max_name] = *k;
-    try {
-      return stability::scene_loop(scene::load_scene(o.scene, p));
-    } catch (const InputError& e) {
-      throw InputError(std::string("--scene: ") + e.what());
-    }
+    p[o.max_name] = k;
+    return scene::load_scene(o.scene, p);
   };
-  if (o.max_name.empty()) return at(std::nullopt);
-  stability::Loop loop = at(rational(0));
-  const stability::Loop one = at(rational(1));
-  const RationalFunction<rational> H1 = one.H.H - loop.H.H;
-  if (H1.is_zero()) throw InputError("--max " + o.max_name + ": the scene's [environment] does not depend on " + o.max_name);
-  for (const rational& k : {rational(2), rational(1, 3), rational(-7, 2)}) {
-    const stability::Loop lk = at(k);
-    const bool device_same = same(lk.plant, loop.plant) && lk.operator_impedance.has_value() == loop.operator_impedance.has_value() &&
-                             (!lk.operator_impedance || same(*lk.operator_impedance, *loop.operator_impedance));
-    if (!device_same || lk.delay != loop.delay)
-      throw InputError("--max " + o.max_name + ": only a gain of [environment] can be maximised, but " + o.max_name +
-                       " changes the device, the operator or the delay");
-    const RationalFunction<rational> affine = loop.H.H + RationalFunction<rational>(k) * H1;
-    if (!same(lk.H, tf(affine.num(), affine.den(), loop.T)))
-      throw InputError("--max " + o.max_name + ": [environment] must be affine in " + o.max_name + " (H = H0 + " +
-                       o.max_name + " H1), e.g. a stiffness");
+  try {
+    if (o.max_name.empty()) return stability::scene_loop(scene::load_scene(o.scene, params));
+    return stability::scene_loop_affine(scene_at, o.max_name, "--max " + o.max_name + ": ");
+  } catch (const InputError& e) {
+    const std::string w = e.what();
+    throw InputError(w.rfind("--max", 0) == 0 ? w : "--scene: " + w);
   }
-  loop.H_gain = tf(H1.num(), H1.den(), loop.T);
-  return loop;
 }
 
 stability::Loop make_loop(const StabilityOpts& o) {
@@ -321,8 +306,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   std::optional<conservatism::VerdictBracket> t5;
   if (o.conservatism) t5 = conservatism::theorem5_max(scene_at, reference, o.max_name, std::min(o.digits, 6));
   std::string not_affine;
+  long points = 0;  // how many values prove M(p) affine, from the scene's text (scene/parameter_degree.hpp)
   try {
-    stability::loop_family(at, reference, o.max_name);
+    points = scene::points_needed(scene::parameter_degree(sc, o.max_name));
+    stability::loop_family(at, reference, o.max_name, points);
   } catch (const InputError& e) {
     not_affine = e.what();
   }
@@ -347,11 +334,11 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
       t << o.max_name << ": no certified stable value found\n";
       rc = b.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_numerical;
     }
-    t << "  " << b.note << "\n  (the closed loop is not affine in " << o.max_name
-      << ", so the certified crossing of --max does not apply: a coupling's feedthrough makes an algebraic loop)\n";
+    t << "  " << b.note << "\n  (the certified crossing of --max does not apply, it needs the closed loop proven affine in "
+      << o.max_name << ": " << not_affine << ")\n";
     text = t.str();
   } else {
-    const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, std::min(o.digits, 60));
+    const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)}, {"path", "closed_loop_matrix"}, {"note", m.note}};
       text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";

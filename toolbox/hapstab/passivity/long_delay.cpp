@@ -240,7 +240,7 @@ struct Piece {  // theta in [pi i / (M 2^level), pi (i + 1) / (M 2^level)]
 class Maximiser {
  public:
   enum class Where { zero, pi, interior };
-  Maximiser(const DelayForm& df, long boxes, int digits) : df_(df), F_(df), M_(boxes), digits_(digits) {
+  Maximiser(const DelayForm& df, long boxes, int digits) : df_(df), F_(df), M_(boxes) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
     budget_ = 200 * M_ + 200000;
@@ -408,7 +408,6 @@ class Maximiser {
   const DelayForm& df_;
   Form<Ball> F_;
   long M_;
-  int digits_;
   int max_level_ = 56;
   long budget_ = 0;
   Ball tol_factor_;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/numeric/limits.hpp"
@@ -65,7 +66,10 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
   if (r.spectral_radius) {
     // the loop as written's: the reduced loop's and every hidden mode's (they are eigenvalues of
     // it too): a hidden mode at 1 - 1e-30 is the radius, not the reduced loop's 0.96
-    double lo = to_real<double>(r.spectral_radius->lo), hi = to_real<double>(r.spectral_radius->hi);
+    // one ulp outward of the nearest doubles, then printed rounded outward: 1 - 1e-30 is printed
+    // [0.999999, 1], never [1, 1]
+    double lo = std::nextafter(to_real<double>(r.spectral_radius->lo), 0.0);
+    double hi = std::nextafter(to_real<double>(r.spectral_radius->hi), INFINITY);
     const double T = to_real<double>(L.T);
     for (const auto& h : out.hidden.modes) {
       if (h.settles) continue;  // set aside, like the plant's conserved quantities (named below)
@@ -73,9 +77,8 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
       lo = std::max(lo, std::nextafter(a, 0.0));
       hi = std::max(hi, std::nextafter(b, INFINITY));
     }
-    o.precision(6);
     o << ", spectral radius " << (out.hidden.modes.empty() ? "" : "of the loop as written (its decaying hidden modes included) ") << "in ["
-      << lo << ", " << hi << "]";
+      << decimal_outward(exact_rational(lo), 6, -1) << ", " << decimal_outward(exact_rational(hi), 6, +1) << "]";
     out.spectral_radius = hi;
   }
   out.why = o.str() + hidden;

@@ -744,7 +744,7 @@ void deflate(LoopFamily& F) {
   F.positions = pos;
 }
 
-LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& name) {
+LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& name, long points) {
   if (p1 <= 0) throw InputError("--max " + name + ": the reference value must be > 0");
   auto cl = [&](const rational& p) {
     const sim::LoopSpec s = at(p);
@@ -777,7 +777,11 @@ LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& 
   F.Ku0 = c1.Ku - F.dKu * p1;
   F.Kx0 = c1.Kx - F.dKx * p1;
   if (F.dKu.isZero(0) && F.dKx.isZero(0)) throw InputError("--max " + name + ": the loop does not depend on " + name);
-  for (const rational& p : {p1 / 3, p1 * 7 / 2}) {
+  // the degree bound's values (loop_max.hpp): distinct, none of them p1 or 2 p1
+  const long extra = std::max<long>(points, 4) - 2;
+  if (extra > 1000) throw InputError(only + "; proving it would take " + std::to_string(extra) + " more loops");
+  for (long j = 0; j < extra; ++j) {
+    const rational p = j == 0 ? p1 / 3 : j == 1 ? p1 * 7 / 2 : p1 * rational(2 * j + 1, 2 * j + 7);  // increasing in (0, 1): 5/11, 7/13, ...
     const sim::SampledClosedLoop c = cl(p);
     if (!same_plant(c) || !equal(c.Ku, MatQ(F.Ku0 + F.dKu * p)) || !equal(c.Kx, MatQ(F.Kx0 + F.dKx * p)))
       throw InputError(only + "; the closed loop is not affine in " + name + " (checked exactly at " + name + " = " + p.str() + ")");
@@ -1028,9 +1032,9 @@ bool unstable_at_zero(const ArbFamily& base, std::string& why) {
 
 }  // namespace
 
-LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits) {
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, long points, int digits) {
   if (digits < 1 || digits > 60) throw InputError("--digits must be in [1, 60] for a multi-DOF --max, got " + std::to_string(digits));
-  const LoopFamily F = loop_family(at, reference, name);
+  const LoopFamily F = loop_family(at, reference, name, points);
   LoopMax out;
   out.T = F.T;
   out.states = order(F);

@@ -94,11 +94,15 @@ struct LoopFamily {
   /// their matrix; M(p)'s spectrum is that of the family above and eig(fixed).
   MatQ fixed;
 };
-LoopFamily loop_family(const LoopAt& at, const rational& reference, const std::string& name);
+/// `points`: how many distinct values of p prove the controller rows affine, from the caller's
+/// ground (a scene: scene/parameter_degree.hpp's points_needed, from its text; a loop built in
+/// code: the degree of its construction in p). The family is built from p = reference and
+/// 2 reference and checked equal at max(points, 4) - 2 more values; an InputError when it is not.
+LoopFamily loop_family(const LoopAt& at, const rational& reference, const std::string& name, long points);
 
 /// sup of p over the stable interval (see the header); `reference` > 0 is where the grid of step 1
 /// is centred (the scene's value of p; it spans reference 10^-6 .. 10^6), `digits` the width of
 /// the crossing's enclosure (1 .. 60).
-LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, int digits = 16);
+LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::string& name, long points, int digits = 16);
 
 }  // namespace hapstab::stability
