@@ -13,7 +13,9 @@
 // A forked child remains for the sweep's worker processes and run() (the command line itself,
 // the escape hatch), where Ctrl-C must stop a whole command at once. The parent waits on a
 // pipe with the GIL released and checks for signals every 20 ms; Ctrl-C kills the child. The
-// child answers with one JSON document (the pipe's format, not a result format):
+// child leads a process group of its own, so that Ctrl-C kills everything it started with it
+// (the sweep's worker processes: issue 49), whoever the SIGINT reached (a terminal's whole
+// group, or Jupyter's interrupt, the kernel alone). The child answers with one JSON document (the pipe's format, not a result format):
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
 //   {"error": "<message>", "code": 2|3, "kind": "error"|"numerical failure"|"internal error"}
 #include <fcntl.h>
@@ -328,15 +330,20 @@ std::string run_forked_text(const std::function<nlohmann::json()>& work) {
     throw std::runtime_error(std::string("hapstab: fork: ") + std::strerror(errno));
   }
   if (pid == 0) {
+    ::setpgid(0, 0);  // its own process group (the parent sets it too: whichever runs first)
     ::close(fds[0]);
     hapstab::cli::restore_gmp_allocator();  // cli/mat_file.hpp: GnuTLS, loaded with matio, zeroes every GMP block
     child_main(work, fds[1]);
   }
+  ::setpgid(pid, pid);  // the child's own call, made here too: the group exists before either goes on
   ::close(fds[1]);
   std::string data;
   char buf[1 << 16];
   auto reap = [pid](bool kill_first) {
-    if (kill_first) ::kill(pid, SIGKILL);
+    if (kill_first) {  // the child and whatever it started (its group), before the child is reaped and
+      ::kill(-pid, SIGKILL);  // its pid could name another group
+      ::kill(pid, SIGKILL);
+    }
     int status = 0;
     py::gil_scoped_release nogil;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
