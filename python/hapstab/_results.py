@@ -432,7 +432,8 @@ class R:
     """r(jw) = T/(e^{jwT} - 1) of paper 001 (44): re (a Result, exact -T/2) and im (a Result,
     certified: the correctly rounded decimal -+ half a unit in its last place); value the
     complex number, complex(r); lo/hi the corners of the box; the truncated series (34) beside
-    (series_re, series_im, series_terms, series_error_bound: decimal strings)."""
+    when r(..., terms=N) asked for it (series_re, series_im, series_error_bound: decimal strings,
+    series_terms N; all None otherwise)."""
 
     def __init__(self, d: Dict[str, Any], status: str = "certified", method: Optional[str] = None) -> None:
         self.re = Result(d["re"])

@@ -345,6 +345,34 @@ def test_r_scalar_gives_the_cli_digits():
     assert hapstab.r(Fraction(1, 1000), 100.0).decimal == hapstab.r("1/1000", 100).decimal
 
 
+@pytest.mark.parametrize("T, w, digits", [("1/1000", "100", 20), ("1/1000", "6283", 30), ("1/3", "-7/5", 12),
+                                          ("1/1000", "1/1000000", 40), ("1", "3", 25)])
+def test_a_scalar_r_is_the_closed_form_alone_unless_terms_asks_for_the_series(T, w, digits):
+    # issue 49: the default is what a scalar call needs, r(jw) = T/(e^{jwT} - 1) (44) correctly rounded;
+    # the series (34) is summed only with terms=N, and the closed form's digits are the same either way
+    plain = hapstab.r(T, w, digits=digits)
+    both = hapstab.r(T, w, digits=digits, terms=1000)
+    assert plain.series_re is None and plain.series_im is None and plain.series_terms is None
+    assert plain.series_error_bound is None
+    assert both.series_terms == 1000 and both.series_re is not None and both.series_im is not None
+    assert plain.decimal == both.decimal and plain.status == both.status and plain.method == both.method
+    for part in ("re", "im"):
+        a, b = getattr(plain, part), getattr(both, part)
+        assert (a.lo_exact, a.hi_exact, a.status, a.value) == (b.lo_exact, b.hi_exact, b.status, b.value)
+    # against mpmath at twice the digits (shares no code with hapstab): the enclosure holds it
+    mpmath = pytest.importorskip("mpmath")
+    mpmath.mp.dps = 2 * digits + 20
+    Tq, wq = F(T), F(w)
+    Tm = mpmath.mpf(Tq.numerator) / Tq.denominator
+    wm = mpmath.mpf(wq.numerator) / wq.denominator
+    ref = Tm / (mpmath.exp(1j * wm * Tm) - 1)
+    assert plain.re.value == -Tq / 2 and plain.re.status == "exact"
+    lo, hi = (mpmath.mpf(F(x).numerator) / F(x).denominator for x in (plain.im.lo_exact, plain.im.hi_exact))
+    assert lo <= ref.imag <= hi
+    cli_json = cli("r", "--T", T, "--omega", w, "--digits", str(digits))[1]
+    assert plain.decimal == (cli_json["re"], cli_json["im"])
+
+
 def test_r_arrays_double_and_certified_against_30_digit_references():
     # wT over [1e-9, 2 pi) and the hard places: w -> 0, wT -> pi, just below 2 pi (near a pole)
     T = 1e-3
