@@ -788,6 +788,21 @@ def test_multidof_analyze_is_the_commands_study(scene):
     assert set(a.seconds) == set(j["seconds"]) and a.dofs == 2
 
 
+def test_multidof_reprs_say_which_loop_each_verdict_is_about():
+    # issue 49: case ii nominal -- Theorem 5 concludes (for the loop with a coupling meeting (14)),
+    # the scene's own loop (no coupling) is NOT stable, bool() is False: the repr says all three
+    a = hapstab.multidof.analyze(EXAMPLES / "multidof_case_ii_nominal.toml")
+    assert a.stability_concluded and not a.loop_as_written["stable"] and not a
+    text = repr(a)
+    assert "theorem5='stable: the loop with any coupling V whose V-hat^Gamma is Delta_V-OSP" in text, text
+    assert "loop_as_written='NOT stable [certified], coupling: none (the direct connection)'" in text, text
+    assert text.endswith("ok=False)") and "stability_concluded" not in text, text
+    assert "loop_as_written" in a._repr_html_()
+    # case i: no conclusion, and why
+    b = hapstab.multidof.analyze(EXAMPLES / "multidof_case_i_nominal.toml")
+    assert "theorem5=\"no conclusion: Assumption 1 fails" in repr(b), repr(b)
+
+
 def test_multidof_design_is_the_commands_study():
     scene = EXAMPLES / "multidof_case_ii_perturbed.toml"
     d = hapstab.multidof.design(scene, duration=2)
@@ -807,6 +822,7 @@ def test_multidof_design_is_the_commands_study():
     assert d.verification[-1]["status"] == "numeric" and "simulated" in d.verification[-1]["name"]
     assert {k: d.loop_with_v[k] for k in j["loop_with_v"]} == j["loop_with_v"]
     assert d.simulation["decays"] is False and d.simulation["text"] in d.warning  # 2 s: slow decay, warned
+    assert f"loop_with_v='stable [{d.loop_with_v['status']}], coupling: the designed V'" in repr(d), repr(d)
     _same_checks(d.assumptions, j["assumptions"], ("name", "holds", "outcome", "certified", "detail"))
 
 
