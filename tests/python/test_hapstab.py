@@ -992,10 +992,25 @@ def _readme_block(language):
     return text.split(f"```{language}\n", 1)[1].split("```", 1)[0]
 
 
+def _docs_python_block():
+    """docs/python.md's tour of the package (the README shows ten lines of it)."""
+    text = (SOURCE / "docs" / "python.md").read_text(encoding="utf-8")
+    return text.split("```python\n", 1)[1].split("```", 1)[0]
+
+
 def test_readme_python_block_runs_as_shown(monkeypatch):
     monkeypatch.chdir(SOURCE)  # its paths (examples/...) are relative to the top of the tree
     namespace = {}
     exec(compile(_readme_block("python"), "README.md (Python)", "exec"), namespace)
+    b, bs, m = namespace["b"], namespace["bs"], namespace["m"]
+    assert (b.value, b.status, b < 6) == (Fraction(221, 40), "exact", True)  # as its comment says
+    assert bs.shape == (10001,) and m.lo_exact.startswith("1236.0679") and m.closed_form["equation"] == "(53)"
+
+
+def test_docs_python_block_runs_as_shown(monkeypatch):
+    monkeypatch.chdir(SOURCE)
+    namespace = {}
+    exec(compile(_docs_python_block(), "docs/python.md", "exec"), namespace)
     assert namespace["b"].status in ("exact", "certified") and namespace["bs"].shape == (10001,)
     assert namespace["t"]["bound"].dtype == np.float64 and len(namespace["t"]) == 123
 
