@@ -65,3 +65,23 @@ def test_the_docs_validation_recipe_runs_as_shown(tmp_path):
     p = subprocess.run(["bash", "-euo", "pipefail", "-c", block], cwd=tmp_path, env=env, capture_output=True,
                        text=True, check=False)
     assert p.returncode == 0 and p.stdout.strip() == "valid", (p.stdout, p.stderr)
+
+
+@pytest.mark.parametrize("args, status", [
+    (["passivity-level", "--H", "1 + 1/(z-0.5)", "--T", "0.01"], "exact"),
+    (["passivity-level", "--H", "2 + (z+0.3)/(z^2 - 0.5*z + 0.3)", "--T", "0.01", "--kind", "isp"], "certified"),
+    (["passivity-level", "--H", "1/(z-0.5)", "--T", "0.01", "--kind", "osp"], "upper_bound"),
+])
+def test_passivity_level_writes_its_enclosure_under_the_common_name(args, status):
+    # issue 49: `enclosure` as bound and stability write it; the old lower_bound/upper_bound are its
+    # ends (deprecated); an upper bound alone (OSP <= 0, docs/passivity-levels.md) has no lower end
+    from clitools import F
+    _, j = cli(*args)
+    assert j["status"] == status
+    lo, hi = j["enclosure"]
+    assert lo == (j["lower_bound"] if j["lower_bound"] is not None else "-inf")
+    assert hi == (j["upper_bound"] if j["upper_bound"] is not None else "inf")
+    if status == "upper_bound":
+        assert (lo, hi) == ("-inf", "-1.5")
+    else:
+        assert F(lo) <= F(j["exact"] or j["value"]) <= F(hi)
