@@ -192,3 +192,24 @@ def test_ctrl_c_during_a_sweep_stops_its_worker_processes(to_group):
         for pid, start in seen.items():  # a failed run leaves no orphan behind
             if _alive(pid, start):
                 os.kill(pid, signal.SIGKILL)
+
+
+def test_a_killed_interpreter_takes_the_sweep_with_it():
+    # the Python process SIGKILLed mid-sweep (a Jupyter kernel restarted): nothing can clean up, so
+    # the forked child and its workers die by PR_SET_PDEATHSIG
+    code = f"import hapstab\nprint('started', flush=True)\nhapstab.sweep({MILLION_POINTS}, jobs=2)\n"
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                         start_new_session=True)
+    seen = {}
+    try:
+        assert p.stdout.readline().strip() == "started"
+        seen = _wait_for_processes(p.pid, 3)
+        p.kill()
+        p.wait(timeout=60)
+        survivors = _survivors(seen)
+        assert survivors == [], f"processes of the sweep still running after the interpreter died: {survivors}"
+    finally:
+        p.kill()
+        for pid, start in seen.items():
+            if _alive(pid, start):
+                os.kill(pid, signal.SIGKILL)
