@@ -298,8 +298,8 @@ def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None, method:
     """r(jw) = T/(e^{jwT} - 1) of paper 001 (44).
 
     omega a number: an R, correctly rounded to `digits` (re exact, im certified) from the closed
-    form alone; terms=N adds the series (34) truncated at |n| <= N beside it (series_re, series_im,
-    series_error_bound; None without), as `hapstab r --terms N` prints it. omega an array (float64 at its exact
+    form alone; terms=N adds the series (34) truncated at |n| <= N beside it (series_re,
+    series_im, series_error_bound; None without), as `hapstab r --terms N` prints it. omega an array (float64 at its exact
     binary values): an RArray, method 'double' (numeric, about 10 ns a point) or 'certified'
     (MPFI enclosures, proven)."""
     T_text = exact(T, "T")
