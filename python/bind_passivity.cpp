@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -317,12 +319,19 @@ Enclosure<rational> correctly_rounded(const std::string& text, int digits) {
   return {q - half, q + half};
 }
 
-py::dict r_scalar(const std::string& T_text, const std::string& omega_text, int digits, long terms) {
+/// r(jw) at one exact w: (44) correctly rounded (sampling::r44_decimal); with `terms`, the series
+/// (34) truncated at |n| <= terms beside (sampling::r_decimal: the same (44) digits). Without, the
+/// series fields are None: a call that needs only r(jw) does not sum 2 terms + 1 terms (issue 49).
+py::dict r_scalar(const std::string& T_text, const std::string& omega_text, int digits, std::optional<long> terms) {
   const rational T = exact_arg(T_text, "T"), w = exact_arg(omega_text, "omega");  // r_decimal checks them
   sampling::RDecimal r;
   {
     py::gil_scoped_release nogil;
-    r = sampling::r_decimal(T, w, terms, digits);
+    if (terms) {
+      r = sampling::r_decimal(T, w, *terms, digits);
+    } else {
+      std::tie(r.re, r.im) = sampling::r44_decimal(T, w, digits);
+    }
   }
   py::dict d;
   d["re"] = record(Certified<rational>::exact_value(-T / 2, "closed form (44): Re r = -T/2"), digits);
@@ -331,9 +340,10 @@ py::dict r_scalar(const std::string& T_text, const std::string& omega_text, int 
                    "closed form (44): Im r = -(T/2) cot(wT/2), correctly rounded from MPFI enclosures", "", digits + 2);
   d["re_text"] = r.re;
   d["im_text"] = r.im;
-  d["series_re"] = r.series_re;
-  d["series_im"] = r.series_im;
-  d["series_terms"] = r.series_terms;
+  const auto text_or_none = [&](const std::string& s) { return terms ? py::object(py::str(s)) : py::object(py::none()); };
+  d["series_re"] = text_or_none(r.series_re);
+  d["series_im"] = text_or_none(r.series_im);
+  d["series_terms"] = terms ? py::object(py::int_(r.series_terms)) : py::object(py::none());
   d["series_error_bound"] = r.series_error_bound ? py::object(py::str(*r.series_error_bound)) : py::object(py::none());
   return d;
 }
@@ -503,7 +513,7 @@ void register_passivity(py::module_& m) {
       py::arg("allow_noncausal"), py::arg("jobs"),
       "bound_max at every point of parameter columns (and of a damping column), on threads.");
   m.def("r", &r_scalar, py::arg("T"), py::arg("omega"), py::arg("digits"), py::arg("terms"),
-        "r(jw) of paper 001: (44) correctly rounded (sampling::r_decimal) and the series (34) truncated.");
+        "r(jw) of paper 001: (44) correctly rounded; with terms (not None), the series (34) truncated beside.");
   m.def("r_many", &r_many, py::arg("T"), py::arg("omega"), py::arg("method"), py::arg("jobs"),
         "Im r(jw) over a float64 array of w: 'double' (44) in double, or 'certified' MPFI enclosures.");
   m.def("wedge", &wedge, py::arg("H"), py::arg("digits"),

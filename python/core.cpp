@@ -13,12 +13,16 @@
 // A forked child remains for the sweep's worker processes and run() (the command line itself,
 // the escape hatch), where Ctrl-C must stop a whole command at once. The parent waits on a
 // pipe with the GIL released and checks for signals every 20 ms; Ctrl-C kills the child. The
-// child answers with one JSON document (the pipe's format, not a result format):
+// child leads a process group of its own, so that Ctrl-C kills everything it started with it
+// (the sweep's worker processes: issue 49), whoever the SIGINT reached (a terminal's whole
+// group, or Jupyter's interrupt, the kernel alone); it also dies with the interpreter
+// (PR_SET_PDEATHSIG), and so do the sweep's workers with it. The child answers with one JSON document (the pipe's format, not a result format):
 //   {"code": <exit code>, "json": <what the command printed or null>}   or
 //   {"error": "<message>", "code": 2|3, "kind": "error"|"numerical failure"|"internal error"}
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -321,6 +325,7 @@ std::string describe_status(int status) {
 std::string run_forked_text(const std::function<nlohmann::json()>& work) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("hapstab: pipe: ") + std::strerror(errno));
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -328,15 +333,24 @@ std::string run_forked_text(const std::function<nlohmann::json()>& work) {
     throw std::runtime_error(std::string("hapstab: fork: ") + std::strerror(errno));
   }
   if (pid == 0) {
+    ::setpgid(0, 0);  // its own process group (the parent sets it too: whichever runs first)
+    // and it dies with the interpreter (a Jupyter kernel restarted with SIGKILL): the calling thread
+    // waits for the child, so the thread that forked it outlives it unless the process dies
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(4);
     ::close(fds[0]);
     hapstab::cli::restore_gmp_allocator();  // cli/mat_file.hpp: GnuTLS, loaded with matio, zeroes every GMP block
     child_main(work, fds[1]);
   }
+  ::setpgid(pid, pid);  // the child's own call, made here too: the group exists before either goes on
   ::close(fds[1]);
   std::string data;
   char buf[1 << 16];
   auto reap = [pid](bool kill_first) {
-    if (kill_first) ::kill(pid, SIGKILL);
+    if (kill_first) {  // the child and whatever it started (its group), before the child is reaped and
+      ::kill(-pid, SIGKILL);  // its pid could name another group
+      ::kill(pid, SIGKILL);
+    }
     int status = 0;
     py::gil_scoped_release nogil;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {

@@ -277,7 +277,7 @@ class RArray:
                       "method": "Re r = -T/2, exact", "note": ""}
             im_rec = {"value_exact": None, "mid": float(im), "lo": float(lo), "hi": float(hi), "lo_text": None,
                       "hi_text": None, "status": self.status, "method": self.method, "note": ""}
-            return R({"re": re_rec, "im": im_rec, "series_re": None, "series_im": None, "series_terms": 0,
+            return R({"re": re_rec, "im": im_rec, "series_re": None, "series_im": None, "series_terms": None,
                       "series_error_bound": None, "re_text": self.re_exact, "im_text": repr(float(im))},
                      status=self.status, method=self.method)
         out = RArray.__new__(RArray)
@@ -297,8 +297,9 @@ def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None, method:
       jobs: Optional[int] = None):
     """r(jw) = T/(e^{jwT} - 1) of paper 001 (44).
 
-    omega a number: an R, correctly rounded to `digits` (re exact, im certified), with the series
-    (34) truncated at |n| <= terms (default 1000) beside. omega an array (float64 at its exact
+    omega a number: an R, correctly rounded to `digits` (re exact, im certified) from the closed
+    form alone; terms=N adds the series (34) truncated at |n| <= N beside it (series_re,
+    series_im, series_error_bound; None without), as `hapstab r --terms N` prints it. omega an array (float64 at its exact
     binary values): an RArray, method 'double' (numeric, about 10 ns a point) or 'certified'
     (MPFI enclosures, proven)."""
     T_text = exact(T, "T")
@@ -312,7 +313,7 @@ def r(T: Any, omega: Any, digits: int = 20, terms: Optional[int] = None, method:
         d = _call(_core.r_many, T_text, np.ascontiguousarray(w.ravel(), dtype=np.float64), method, _jobs(jobs))
         return RArray(d, w.shape, method)
     digits = integer(digits, "digits", 1, 1000)
-    terms = 1000 if terms is None else integer(terms, "terms", 0, 100000000)
+    terms = None if terms is None else integer(terms, "terms", 0, 100000000)
     return R(_call(_core.r, T_text, exact(omega, "omega"), digits, terms))
 
 

@@ -192,9 +192,9 @@ class R:
     """r(jw): re (Result, exact), im (Result, certified), value complex, lo/hi the box."""
     re: Result
     im: Result
-    series_re: str
-    series_im: str
-    series_terms: int
+    series_re: Optional[str]  # None unless r(..., terms=N) asked for the series (34)
+    series_im: Optional[str]
+    series_terms: Optional[int]
     series_error_bound: Optional[str]
     decimal: Tuple[str, str]
     status: str

@@ -432,7 +432,8 @@ class R:
     """r(jw) = T/(e^{jwT} - 1) of paper 001 (44): re (a Result, exact -T/2) and im (a Result,
     certified: the correctly rounded decimal -+ half a unit in its last place); value the
     complex number, complex(r); lo/hi the corners of the box; the truncated series (34) beside
-    (series_re, series_im, series_terms, series_error_bound: decimal strings)."""
+    when r(..., terms=N) asked for it (series_re, series_im, series_error_bound: decimal strings,
+    series_terms N; all None otherwise)."""
 
     def __init__(self, d: Dict[str, Any], status: str = "certified", method: Optional[str] = None) -> None:
         self.re = Result(d["re"])
@@ -512,11 +513,24 @@ class Analysis(Result):
     _symbol = r"\mathrm{margin}"
     _name = "the LMI margin"
 
+    # the loop Theorem 5's conclusion is about: not the scene's loop, which may write no coupling
+    CONCLUDED_FOR = "the loop with any coupling V whose V-hat^Gamma is Delta_V-OSP, Delta_V >= Gamma^-1 Q_V Gamma^-1"
+
     def __bool__(self) -> bool:
         return bool(self._extra["ok"])
 
     def _repr_extra(self) -> Dict[str, Any]:
-        return {"verdict": self._extra.get("verdict"), "stability_concluded": self._extra.get("stability_concluded")}
+        # which loop each verdict is about (issue 49): Theorem 5's conclusion, and the scene's loop as written
+        concluded = self._extra.get("stability_concluded")
+        return {"verdict": self._extra.get("verdict"),
+                "theorem5": f"stable: {self.CONCLUDED_FOR}" if concluded else f"no conclusion: {self._why_not()}",
+                "loop_as_written": _loop_text(self._extra.get("loop_as_written")),
+                "ok": bool(self)}
+
+    def _why_not(self) -> str:
+        if self._extra.get("verdict") != "feasible" or not self._extra.get("certified"):
+            return f"the LMIs (16) are {self._extra.get('verdict')} ({'certified' if self._extra.get('certified') else 'not certified'})"
+        return self._extra.get("premise_failure") or "a premise does not hold"
 
 
 class Design(Result):
@@ -540,7 +554,16 @@ class Design(Result):
         return bool(self._extra["ok"])
 
     def _repr_extra(self) -> Dict[str, Any]:
-        return {"feasible": self._extra.get("feasible"), "certified": self._extra.get("certified")}
+        return {"feasible": self._extra.get("feasible"), "certified": self._extra.get("certified"),
+                "loop_with_v": _loop_text(self._extra.get("loop_with_v")), "ok": bool(self)}
+
+
+def _loop_text(loop: Optional[Dict[str, Any]]) -> Optional[str]:
+    """A decided loop in a line: "NOT stable [certified], coupling: none (the direct connection)"."""
+    if not loop:
+        return None
+    verdict = {True: "stable", False: "NOT stable", None: "undecided"}[loop.get("stable")]
+    return f"{verdict} [{loop.get('status')}], coupling: {loop.get('coupling')}"
 
 
 _VERDICT = ("exact", "certified", "numeric", "undecided")  # a stability array's verdict_status (code 3: undecided)

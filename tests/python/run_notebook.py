@@ -31,11 +31,18 @@ CHECKS = {
                      r"^max='K' with one sample of delay: 4000 exact \| b\* = b at both ends: True$"],
     "check:map": [r"^points: 651 \| passive: [0-9]+ \| stable: [0-9]+ \| passive but not stable at K > 0: 0$",
                   r"^stable at K = 0: 0$"],
-    "check:multidof": [r"^Theorem 5: feasible \| certified: True \| stability concluded: True$",
-                       r"^Q_V = \[\[.*\| premises: (holds, )*holds$",
-                       r"^Theorem 6: V of order [0-9]+ \| verified: True \| ([0-9]+) of \1 checks pass$",
-                       r"^the loop as written: True \[certified\] \| hidden modes: \[\('environment', 'unobservable', True\)\]$",
-                       r"^simulated \([0-9]+, 2\) samples x DOFs; diverged: False"],
+    # each verdict names its loop (issue 49): Theorem 5's conclusion is about the loop with a
+    # coupling meeting (14), case ii's own loop (no coupling) is NOT stable, so bool(a) is False
+    "check:multidof": [r"^Theorem 5 on case ii: \(16\) feasible \| certified: True \| premises: (holds, )*holds$",
+                       r"^  concludes stability of the loop with a coupling V meeting Delta_V >= Gamma\^-1 Q_V Gamma\^-1: True$",
+                       r"^  Q_V = \[\[",
+                       r"^  case ii's loop as written \(coupling: none \(the direct connection\)\): NOT stable \[certified\]$",
+                       r"^  bool\(a\), concluded and the loop as written not proven unstable: False$",
+                       r"^Theorem 6 on case ii perturbed: V of order [0-9]+ \| verified: True \| ([0-9]+) of \1 checks pass$",
+                       r"^  the loop with the designed V: stable \[(certified|exact)\]$",
+                       r"^000_two_dof_loop\.toml, its loop as written: stable \[certified\] \| hidden modes: "
+                       r"\[\('environment', 'unobservable', True\)\]$",
+                       r"^  simulated \([0-9]+, 2\) samples x DOFs; diverged: False"],
     "check:figure": [r"saved tour_bound\.png"],
     "check:table": [r"K\s+value\s+lo\s+hi\s+status"],
 }

@@ -345,6 +345,34 @@ def test_r_scalar_gives_the_cli_digits():
     assert hapstab.r(Fraction(1, 1000), 100.0).decimal == hapstab.r("1/1000", 100).decimal
 
 
+@pytest.mark.parametrize("T, w, digits", [("1/1000", "100", 20), ("1/1000", "6283", 30), ("1/3", "-7/5", 12),
+                                          ("1/1000", "1/1000000", 40), ("1", "3", 25)])
+def test_a_scalar_r_is_the_closed_form_alone_unless_terms_asks_for_the_series(T, w, digits):
+    # issue 49: the default is what a scalar call needs, r(jw) = T/(e^{jwT} - 1) (44) correctly rounded;
+    # the series (34) is summed only with terms=N, and the closed form's digits are the same either way
+    plain = hapstab.r(T, w, digits=digits)
+    both = hapstab.r(T, w, digits=digits, terms=1000)
+    assert plain.series_re is None and plain.series_im is None and plain.series_terms is None
+    assert plain.series_error_bound is None
+    assert both.series_terms == 1000 and both.series_re is not None and both.series_im is not None
+    assert plain.decimal == both.decimal and plain.status == both.status and plain.method == both.method
+    for part in ("re", "im"):
+        a, b = getattr(plain, part), getattr(both, part)
+        assert (a.lo_exact, a.hi_exact, a.status, a.value) == (b.lo_exact, b.hi_exact, b.status, b.value)
+    # against mpmath at twice the digits (shares no code with hapstab): the enclosure holds it
+    mpmath = pytest.importorskip("mpmath")
+    mpmath.mp.dps = 2 * digits + 20
+    Tq, wq = F(T), F(w)
+    Tm = mpmath.mpf(Tq.numerator) / Tq.denominator
+    wm = mpmath.mpf(wq.numerator) / wq.denominator
+    ref = Tm / (mpmath.exp(1j * wm * Tm) - 1)
+    assert plain.re.value == -Tq / 2 and plain.re.status == "exact"
+    lo, hi = (mpmath.mpf(F(x).numerator) / F(x).denominator for x in (plain.im.lo_exact, plain.im.hi_exact))
+    assert lo <= ref.imag <= hi
+    cli_json = cli("r", "--T", T, "--omega", w, "--digits", str(digits))[1]
+    assert plain.decimal == (cli_json["re"], cli_json["im"])
+
+
 def test_r_arrays_double_and_certified_against_30_digit_references():
     # wT over [1e-9, 2 pi) and the hard places: w -> 0, wT -> pi, just below 2 pi (near a pole)
     T = 1e-3
@@ -760,6 +788,21 @@ def test_multidof_analyze_is_the_commands_study(scene):
     assert set(a.seconds) == set(j["seconds"]) and a.dofs == 2
 
 
+def test_multidof_reprs_say_which_loop_each_verdict_is_about():
+    # issue 49: case ii nominal -- Theorem 5 concludes (for the loop with a coupling meeting (14)),
+    # the scene's own loop (no coupling) is NOT stable, bool() is False: the repr says all three
+    a = hapstab.multidof.analyze(EXAMPLES / "multidof_case_ii_nominal.toml")
+    assert a.stability_concluded and not a.loop_as_written["stable"] and not a
+    text = repr(a)
+    assert "theorem5='stable: the loop with any coupling V whose V-hat^Gamma is Delta_V-OSP" in text, text
+    assert "loop_as_written='NOT stable [certified], coupling: none (the direct connection)'" in text, text
+    assert text.endswith("ok=False)") and "stability_concluded" not in text, text
+    assert "loop_as_written" in a._repr_html_()
+    # case i: no conclusion, and why
+    b = hapstab.multidof.analyze(EXAMPLES / "multidof_case_i_nominal.toml")
+    assert "theorem5=\"no conclusion: Assumption 1 fails" in repr(b), repr(b)
+
+
 def test_multidof_design_is_the_commands_study():
     scene = EXAMPLES / "multidof_case_ii_perturbed.toml"
     d = hapstab.multidof.design(scene, duration=2)
@@ -779,6 +822,7 @@ def test_multidof_design_is_the_commands_study():
     assert d.verification[-1]["status"] == "numeric" and "simulated" in d.verification[-1]["name"]
     assert {k: d.loop_with_v[k] for k in j["loop_with_v"]} == j["loop_with_v"]
     assert d.simulation["decays"] is False and d.simulation["text"] in d.warning  # 2 s: slow decay, warned
+    assert f"loop_with_v='stable [{d.loop_with_v['status']}], coupling: the designed V'" in repr(d), repr(d)
     _same_checks(d.assumptions, j["assumptions"], ("name", "holds", "outcome", "certified", "detail"))
 
 
@@ -948,10 +992,25 @@ def _readme_block(language):
     return text.split(f"```{language}\n", 1)[1].split("```", 1)[0]
 
 
+def _docs_python_block():
+    """docs/python.md's tour of the package (the README shows ten lines of it)."""
+    text = (SOURCE / "docs" / "python.md").read_text(encoding="utf-8")
+    return text.split("```python\n", 1)[1].split("```", 1)[0]
+
+
 def test_readme_python_block_runs_as_shown(monkeypatch):
     monkeypatch.chdir(SOURCE)  # its paths (examples/...) are relative to the top of the tree
     namespace = {}
     exec(compile(_readme_block("python"), "README.md (Python)", "exec"), namespace)
+    b, bs, m = namespace["b"], namespace["bs"], namespace["m"]
+    assert (b.value, b.status, b < 6) == (Fraction(221, 40), "exact", True)  # as its comment says
+    assert bs.shape == (10001,) and m.lo_exact.startswith("1236.0679") and m.closed_form["equation"] == "(53)"
+
+
+def test_docs_python_block_runs_as_shown(monkeypatch):
+    monkeypatch.chdir(SOURCE)
+    namespace = {}
+    exec(compile(_docs_python_block(), "docs/python.md", "exec"), namespace)
     assert namespace["b"].status in ("exact", "certified") and namespace["bs"].shape == (10001,)
     assert namespace["t"]["bound"].dtype == np.float64 and len(namespace["t"]) == 123
 

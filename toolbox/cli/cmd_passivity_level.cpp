@@ -17,8 +17,9 @@
 // --ss), which is then the main result; otherwise the LMI level (numeric, with an exactly
 // certified lower bound).
 // JSON output keys: level, method, status (exact|certified|numeric|upper_bound|failed), certified,
-// lower_bound / upper_bound (decimal to --digits, rounded outward: the level lies between them when
-// both are given), exact ("p/q" when the level is exact, else null), value (the certified level to
+// enclosure [lo, hi] (decimals to --digits, rounded outward; a missing end "-inf" / "inf"; null when
+// neither is known), lower_bound / upper_bound (its ends under their old names, null when missing;
+// deprecated, kept for one release), exact ("p/q" when the level is exact, else null), value (the certified level to
 // --digits), theta (minimiser), kind, certified_frequency {level,
 // value, status, is_level, lower_bound, upper_bound, exact, theta, note} (is_level false for an
 // OSP value <= 0, an upper bound on Lemma 1's level only), lmi {level, method, status,
@@ -154,6 +155,12 @@ void report_json(const Opts& o, const Levels& v) {
                      {"note", f.note}}},
                    {"theta", json_or_null(cert_ok || freq_ok, cert_ok ? c.theta_min : f.theta_min)},
                    {"note", note}};
+  // the enclosure under the name every command gives it (docs/json.md): [lower_bound, upper_bound],
+  // a missing end unbounded; lower_bound/upper_bound stay for one release, marked deprecated
+  const auto end = [&](const char* key, const char* open) { return j[key].is_null() ? nlohmann::json(open) : j[key]; };
+  j["enclosure"] = j["lower_bound"].is_null() && j["upper_bound"].is_null()
+                       ? nlohmann::json(nullptr)
+                       : nlohmann::json::array({end("lower_bound", "-inf"), end("upper_bound", "inf")});
   print_json(j);
 }
 
@@ -226,7 +233,7 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
-                                                      "lower_bound, upper_bound, exact, value, theta, kind, "
+                                                      "enclosure, lower_bound, upper_bound, exact, value, theta, kind, "
                                                       "certified_frequency, lmi, frequency, note)");
                       return [o]() { return run(*o); };
                     }});

@@ -1,8 +1,10 @@
 // The fork()ed workers of a sweep, their checkpoint files and the progress line (run.hpp).
+// A worker dies with the process that forked it (PR_SET_PDEATHSIG): no sweep leaves orphans.
 #include "hapstab/study/run.hpp"
 
 #include <fcntl.h>
 #include <sched.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -158,10 +160,15 @@ RunResult run_pending(const RunPlan& plan, const RecordStore& done, const PointR
   std::cout.flush(), std::cerr.flush(), std::fflush(nullptr);
   const long kill_after = kill_after_points();
   std::vector<pid_t> workers;
+  const pid_t parent = ::getpid();
   for (unsigned w = 0; w < jobs; ++w) {
     const pid_t pid = ::fork();
     if (pid < 0) throw NumericalError("sweep: cannot start a worker process");
     if (pid == 0) {
+      // a worker ends with the sweep: SIGKILL when the process that forked it dies (issue 49), and
+      // at once if that happened before this line
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(4);
       ::close(pipe_fd[0]);
       worker(plan, pending, w, jobs, pipe_fd[1], run_point, kill_after);
     }
