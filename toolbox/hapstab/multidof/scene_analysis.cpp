@@ -54,7 +54,7 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
   const auto t0 = Clock::now();
   SceneAnalysis a;
   scene::check_command(sc.root, sc.file, "multidof analyze");  // what it does not model is refused
-  a.scene = problem_from_scene(sc);
+  a.scene = problem_from_scene(sc, SceneUse::analyze);
   a.seconds.realisation = opt.load_seconds + since(t0);
   a.lmis = analyze(a.scene.problem, opt.lmi);
   a.feasible = a.lmis.verdict.holds();
