@@ -73,9 +73,6 @@ struct Reader {
   std::vector<int> dofs_of(const toml::node& n, const std::string& key) const;
 
  private:
-  /// The parameters `text` names (copying all of them for each expression cost time quadratic
-  /// in their number).
-  std::map<std::string, rational> params_named_in(const std::string& text) const;
   StateSpace<rational> ss_block(const toml::table& t, const std::string& key, char var) const;
   StateSpace<rational> tf_block(const toml::node& n, const std::string& key, char var,
                                 const std::function<TransferFunction(const TransferFunction&)>& to_z) const;
