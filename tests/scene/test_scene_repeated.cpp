@@ -13,9 +13,12 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "scene/scene_text.hpp"
 
 using namespace hapstab;
 using hapstab::scene::parse_scene;
+using scene_test::error_of;
+using scene_test::replace;
 
 namespace {
 
@@ -61,21 +64,6 @@ std::string written() {
   }
   o << "]\n";
   return o.str();
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string replace(std::string s, const std::string& a, const std::string& b) {
-  const auto p = s.find(a);
-  EXPECT_NE(p, std::string::npos) << a;
-  return p == std::string::npos ? s : s.replace(p, a.size(), b);
 }
 
 bool same_tf(const StateSpace<rational>& a, const StateSpace<rational>& b) {
