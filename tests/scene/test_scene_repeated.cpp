@@ -189,6 +189,13 @@ TEST(SceneRepeated, WrongLengthsAndIndicesAreRefusedByName) {
   const std::string both = error_of(replace(kCompact, "method = \"backward_euler\"", "method = \"backward_euler\"\ntf = \"1\""));
   EXPECT_NE(both.find("s.toml: environment.diagonal: give either diagonal (and off_diagonal) or tf/ss, not both"),
             std::string::npos) << both;
+  // a 3 KB scene may not stand for more expressions than a scene file may hold
+  const std::string huge = error_of(kHead + "[[device]]\ncount = 4096\nname = \"d\"\nm = \"1\"\n[environment]\n"
+                                    "diagonal = \"1 + 1 + 1 + 1\"\noff_diagonal = \"1 + 1 + 1 + 1\"\n");
+  EXPECT_NE(huge.find("s.toml: environment.diagonal: the 4096 x 4096 matrix written out is 208 MB of expressions, more "
+                      "than the 64 MB a scene file may hold"), std::string::npos) << huge;
+  const auto spaced = parse_scene(kHead + "[parameters]\nv = [\"1\", \"2\"]\n[[device]]\nname = \"d\"\nm = \"sum( v )\"\n", "s.toml");
+  EXPECT_EQ(spaced.loop.devices[0].G.B(0, 0), rational(1, 3));
   const std::string column = error_of(replace(kCompact, "diagonal = \"kc[i] + s", "diagonal = \"kc[j] + s"));
   EXPECT_NE(column.find("environment.diagonal: [j] (the column) is [i] on the diagonal"), std::string::npos) << column;
 }

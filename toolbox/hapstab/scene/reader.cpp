@@ -284,7 +284,9 @@ std::string Reader::expand(const std::string& text, const std::string& key) cons
     size_t j = i + name.size();
     if (name == "sum" && j < text.size() && text[j] == '(') {
       const size_t close = text.find(')', j);
-      const std::string inner = close == std::string::npos ? "" : text.substr(j + 1, close - j - 1);
+      std::string inner = close == std::string::npos ? "" : text.substr(j + 1, close - j - 1);
+      inner.erase(0, inner.find_first_not_of(' '));
+      inner.erase(inner.find_last_not_of(' ') + 1);
       if (auto it = lists.find(inner); it != lists.end()) {
         rational total = 0;
         for (const auto& v : it->second) total += v;

@@ -31,6 +31,8 @@ namespace {
 
 using Q = rational;
 
+constexpr size_t kSceneBytes = 64u << 20;  ///< the largest scene file load_scene reads (docs/security.md)
+
 toml::table parse_toml(const std::string& text, const std::string& file) {
   report::check_toml_depth(text, file);  // before toml++, which recurses per level
   try {
@@ -296,6 +298,13 @@ toml::table expand_matrix(const toml::table& t, const std::string& key, const Re
                                     std::to_string(c.lists.at(list).size()) + " values by a row or column, but the matrix is " +
                                     std::to_string(c.N) + " x " + std::to_string(c.N) + " (one value per DOF)");
   if (diag.find("[j]") != std::string::npos) c.fail(key + ".diagonal", "[j] (the column) is [i] on the diagonal: write [i]");
+  // the matrix written out is at most what a scene file may hold (load_scene's 64 MB): a few
+  // bytes of scene must not stand for more text to parse than a file could
+  const double bytes = double(c.N) * (double(diag.size()) + double(c.N - 1) * double(off.size()));
+  if (bytes > double(kSceneBytes))
+    c.fail(key + ".diagonal", "the " + std::to_string(c.N) + " x " + std::to_string(c.N) + " matrix written out is " +
+                                  std::to_string(long(bytes / (1 << 20))) + " MB of expressions, more than the " +
+                                  std::to_string(kSceneBytes >> 20) + " MB a scene file may hold");
   const auto place = [](std::string text, const char* index, int value) {
     const std::string from = std::string("[") + index + "]", to = "[" + std::to_string(value) + "]";
     for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, 3, to);
@@ -589,7 +598,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
 Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides) {
   // a regular file of bounded size (not a FIFO, /dev/zero or a folder: docs/security.md), as
   // reproduce reads its scenes
-  const std::string text = report::read_input_file(path, "the scene file", 64u << 20);
+  const std::string text = report::read_input_file(path, "the scene file", kSceneBytes);
   auto dir = std::filesystem::path(path).parent_path();
   return parse_scene(text, path, overrides, dir.empty() ? "." : dir.string());
 }
