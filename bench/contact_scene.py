@@ -11,7 +11,13 @@ samples ([delay]); with --chain C each object is the first of C equal masses in 
 mass and the last to ground through k + B s): E has order 2C per object (`1 --chain 8`: the
 one-DOF environment of order 16 of issue 39's table).
 
-Usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] > scene.toml
+With --compact (one object) the scene says what is repeated (docs/scene.md, "Repeated blocks"): one
+[[device]] and one [[operator]] with count = N, the contact values as list parameters kc, Bc and the
+operator gains g, and E by its diagonal and off-diagonal entries: under 10 KB at N = 128, where the
+written-out scene is 18 MB. The devices are then named d[1] .. d[N] (written out: d1 .. dN), the
+operators H[1] .. H[N]; the models are the same.
+
+Usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] [--compact] > scene.toml
        build/hapstab multidof analyze --scene scene.toml
 """
 import argparse
@@ -31,9 +37,7 @@ def scene(n, objects=1, delay=0, chain=1):
     obj = {i: (i - 1) * objects // n for i in range(1, n + 1)}  # object touched by device i
     # the masses behind the first one: mass j sees the link k + B s to the one before and after it
     # (the last: to ground); Y_j = M s^2 + 2 (k + B s) - (k + B s)^2 / Y_{j+1}, Y_C = M s^2 + 2 (k + B s)
-    behind = ''
-    for j in range(chain, 1, -1):
-        behind = f'M*s^2 + 2*(k + B*s)' + (f' - (k + B*s)^2/({behind})' if behind else '')
+    behind = behind_chain(chain)
     den = {o: ('(M*s^2 + (B' + ''.join(f'+B{i}' for i in range(1, n + 1) if obj[i] == o) + ')*s + k'
                + ''.join(f'+k{i}' for i in range(1, n + 1) if obj[i] == o)
                + (f' - (k + B*s)^2/({behind})' if behind else '') + ')') for o in range(objects)}
@@ -54,13 +58,44 @@ def scene(n, objects=1, delay=0, chain=1):
     out += ['[multidof.coupling]', 'mbar = [' + ', '.join(['1'] * n) + ']', 'nbar = [' + ', '.join(['1'] * n) + ']']
     return '\n'.join(out) + '\n'
 
+def behind_chain(chain):
+    """The masses behind the first one (see scene()): '' for a single mass."""
+    behind = ''
+    for _ in range(chain, 1, -1):
+        behind = 'M*s^2 + 2*(k + B*s)' + (f' - (k + B*s)^2/({behind})' if behind else '')
+    return behind
+
+def compact_scene(n, delay=0, chain=1):
+    """scene(n, 1, delay, chain) with its repetition said once (one object)."""
+    ks = [str(500 + 100 * ((i - 1) % 4)) for i in range(1, n + 1)]
+    bs = [["1", "2", "3/2", "5/2"][(i - 1) % 4] for i in range(1, n + 1)]
+    gs = [["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4] for i in range(1, n + 1)]
+    lst = lambda v: '[' + ', '.join(f'"{x}"' for x in v) + ']'
+    behind = behind_chain(chain)
+    den = '(M*s^2 + (B + sum(Bc))*s + k + sum(kc)' + (f' - (k + B*s)^2/({behind})' if behind else '') + ')'
+    out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',
+           '[parameters]', 'M = "0.3"', 'k = "1000"', 'B = "5"',
+           f'kc = {lst(ks)}', f'Bc = {lst(bs)}', f'g = {lst(gs)}', '',
+           '[[device]]', f'count = {n}', 'name = "d"', 'm = "1/10"', 'b = "1.37"', '',
+           '[[operator]]', f'count = {n}', 'name = "H"', 'dofs = "d[i]"', 'tf = "g[i]*(s^2+5*s+10)/(s^2+s+1)"', '',
+           '[environment]', 'domain = "s"', 'method = "backward_euler"',
+           f'diagonal = "kc[i] + Bc[i]*s - (kc[i] + Bc[i]*s)^2/{den}"',
+           f'off_diagonal = "-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/{den}"', '']
+    if delay:
+        out += ['[delay]', f'samples = "{delay}"', '']
+    out += ['[multidof]', 'qv_block_diagonal = false']
+    return '\n'.join(out) + '\n'
+
 if __name__ == '__main__':
     ap = argparse.ArgumentParser(description='the contact scenes of issues 15 and 39')
     ap.add_argument('N', type=int, help='devices (1..256)')
     ap.add_argument('--objects', type=int, default=1, help='separate virtual objects (1..N)')
     ap.add_argument('--delay', type=int, default=0, help='network delay in samples')
     ap.add_argument('--chain', type=int, default=1, help='masses per object, in a chain (1..32)')
+    ap.add_argument('--compact', action='store_true', help='say the repetition once (count, list parameters; one object)')
     a = ap.parse_args()
     if not 1 <= a.N <= 256 or not 1 <= a.objects <= a.N or a.delay < 0 or not 1 <= a.chain <= 32:
         sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C]   (1 <= K <= N <= 256, D >= 0, 1 <= C <= 32)')
-    sys.stdout.write(scene(a.N, a.objects, a.delay, a.chain))
+    if a.compact and a.objects != 1:
+        sys.exit('bench/contact_scene.py: --compact writes one object (its E is one diagonal and one off-diagonal entry); drop --objects')
+    sys.stdout.write(compact_scene(a.N, a.delay, a.chain) if a.compact else scene(a.N, a.objects, a.delay, a.chain))

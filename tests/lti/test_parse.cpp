@@ -337,3 +337,46 @@ TEST(ParsedExpression, ComputesTheKnownPartOnce) {
     EXPECT_NE(std::string(e.what()).find("division by zero"), std::string::npos) << e.what();
   }
 }
+
+// ParseOptions::shared_parameters (a scene's parameters, not copied per expression) means what
+// `parameters` holding the names the expression uses means: the same value, or the same error,
+// on every expression below -- T, s and z among the shared names included.
+TEST(Parse, SharedParametersMeanWhatCopiedOnesMean) {
+  const std::map<std::string, rational> many = {{"K", 1000}, {"B", 5}, {"unused", 7}, {"k12", rational(1, 3)}};
+  std::map<std::string, rational> with_s = many, with_T = many, with_z = many;
+  with_s["s"] = 2;
+  with_T["T"] = 3;
+  with_z["z"] = 4;
+  const std::vector<std::string> texts = {"K + B*(z-1)/(T*z)", "k12*s + K", "K", "s + 1", "z + T", "q + K", "K/(K - 1000)", "1/z"};
+  using Map = std::map<std::string, rational>;
+  for (const Map* shared : std::vector<const Map*>{&many, &with_s, &with_T, &with_z})
+    for (const auto& text : texts) {
+      ParseOptions copied, by_pointer;
+      copied.T = by_pointer.T = rational(1, 1000);
+      for (const auto& name : names_in(text))
+        if (shared->count(name)) copied.parameters[name] = shared->at(name);
+      by_pointer.shared_parameters = shared;
+      std::string a, b;
+      TransferFunction ta, tb;
+      try {
+        ta = parse_tf(text, copied);
+      } catch (const InputError& e) {
+        a = e.what();
+      }
+      try {
+        tb = parse_tf(text, by_pointer);
+      } catch (const InputError& e) {
+        b = e.what();
+      }
+      EXPECT_EQ(a, b) << text;
+      if (a.empty() && b.empty()) {
+        EXPECT_TRUE(ta.num() == tb.num() && ta.den() == tb.den() && ta.domain == tb.domain) << text;
+      }
+    }
+  // an expression that names shared parameters and one that is varied (split_affine) varies it
+  ParseOptions o;
+  o.T = rational(1, 1000);
+  o.shared_parameters = &many;
+  const AffineSplit s = split_affine("K + B*(z-1)/(T*z)", o, "K");
+  EXPECT_EQ(s.H1.num(), P(std::vector<rational>{1}));
+}

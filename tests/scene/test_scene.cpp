@@ -10,9 +10,12 @@
 #include "hapstab/sim/simulator.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "scene/scene_text.hpp"
 
 using namespace hapstab;
 using hapstab::scene::parse_scene;
+using scene_test::error_of;
+using scene_test::replace;
 
 namespace {
 
@@ -47,22 +50,6 @@ force = "2"
 [simulate]
 duration = "1/2"
 )TOML";
-
-// Returns the InputError message (or "" when it parsed).
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.toml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::string replace(std::string s, const std::string& a, const std::string& b) {
-  auto p = s.find(a);
-  EXPECT_NE(p, std::string::npos) << a;
-  return s.replace(p, a.size(), b);
-}
 
 }  // namespace
 

@@ -1,5 +1,6 @@
-// `hapstab multidof analyze --scene FILE [--json] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]`
-// `hapstab multidof design  --scene FILE [--json] [--set NAME=VALUE]... [--iterations N]`
+// `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]`
+// `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N]`
+// A run longer than 2 s names its stages on stderr (cli/progress.hpp); --quiet silences them.
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
 // dissipative Q_V) and Theorem 6 (structured coupling design by CCL, returned by (23)-(24) and
@@ -47,6 +48,7 @@
 
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "cli/progress.hpp"
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/multidof/scene_analysis.hpp"
@@ -61,7 +63,7 @@ struct Opts {
   std::string scene, backend = "auto";
   double duration = 10;
   std::vector<std::string> sets;
-  bool json = false;
+  bool json = false, quiet = false;
   int iterations = 40;
 };
 
@@ -188,8 +190,16 @@ scene::Scene read_scene(const Opts& o, double& seconds) {
 int run_analyze(const Opts& o) {
   multidof::SceneAnalysisOptions opt;
   opt.lmi = lmi_options(o);
-  const auto sc = read_scene(o, opt.load_seconds);
-  const multidof::SceneAnalysis a = multidof::analyze_scene(sc, opt);
+  const multidof::SceneAnalysis a = [&] {  // the progress ends (its shares printed) before the results
+    StageProgress progress("multidof analyze",
+                           {"reading the scene", "realising the blocks", "Theorem 5's LMIs (16)", "the premises",
+                            "the loop as written"},
+                           o.quiet);
+    progress.stage();
+    const auto sc = read_scene(o, opt.load_seconds);
+    opt.stage = [&progress](const std::string& name) { progress.stage(name); };
+    return multidof::analyze_scene(sc, opt);
+  }();
   const auto& sp = a.scene;
   const auto& r = a.lmis;
   const auto& law = a.loop;
@@ -286,13 +296,21 @@ int run_design(const Opts& o) {
     throw InputError("--iterations must be in [1, 10000], got " + std::to_string(o.iterations));
   if (!(o.duration > 0 && o.duration <= 1e6))
     throw InputError("--duration must be in (0, 1e6] seconds, got " + std::to_string(o.duration));
-  double load_seconds = 0;
-  const auto sc = read_scene(o, load_seconds);
   multidof::SceneDesignOptions opt;
   opt.design.max_iterations = o.iterations;
   opt.design.lmi = lmi_options(o);
   opt.duration = o.duration;
-  const multidof::SceneDesign d = multidof::design_scene(sc, opt);
+  const multidof::SceneDesign d = [&] {  // the progress ends (its shares printed) before the results
+    StageProgress progress("multidof design",
+                           {"reading the scene", "realising the blocks", "Theorem 6's design", "the premises",
+                            "the loop with the designed V", "the simulated cross-check"},
+                           o.quiet);
+    progress.stage();
+    double load_seconds = 0;
+    const auto sc = read_scene(o, load_seconds);
+    opt.stage = [&progress](const std::string& name) { progress.stage(name); };
+    return multidof::design_scene(sc, opt);
+  }();
   const auto& sp = d.scene;
   const auto& r = d.design;
   const bool hasV = d.has_v(), feasible = d.feasible, certified = d.certified;
@@ -424,6 +442,7 @@ const Register multidof_cmd({"multidof",
                                    sub->add_option("--duration", o->duration, "Simulated time in seconds (default 10)");
                                  sub->add_option("--scene", o->scene, "Scene file (TOML; examples/multidof_*.toml)")->required();
                                  sub->add_flag("--json", o->json, "JSON output");
+                                 sub->add_flag("--quiet", o->quiet, "No progress on stderr (shown for runs longer than 2 s)");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
                                  sub->add_option("--backend", o->backend, "SDP back-end: auto (default: the built-in IPM, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
                                  if (std::string(name) == "design")

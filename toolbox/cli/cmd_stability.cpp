@@ -22,6 +22,8 @@
 // NAME, by bisection on certified verdicts (conservatism/theorem5_max.hpp: a change of verdict).
 // --conservatism adds Theorem 5's largest NAME for the scene's [coupling] and the ratio exact /
 // Theorem 5 (JSON theorem5, conservatism; docs/stability.md).
+// With --scene and --max, a run longer than 2 s names its stages on stderr (cli/progress.hpp);
+// --quiet silences them.
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -29,6 +31,7 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/progress.hpp"
 #include "hapstab/conservatism/theorem5_max.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/shared_decimal.hpp"
@@ -52,7 +55,7 @@ struct StabilityOpts {
   std::string plant, H, T, op, max_name, scene;
   std::vector<std::string> sets;
   int delay = 0, digits = 20;
-  bool json = false, conservatism = false;
+  bool json = false, conservatism = false, quiet = false;
 };
 
 
@@ -289,7 +292,7 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
   return j;
 }
 
-int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
+int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
   scene::check_command(sc.root, o.scene, "stability");
   const std::map<std::string, rational> params = cli::parse_sets(o.sets);
   const auto it = sc.parameters.find(o.max_name);
@@ -304,9 +307,11 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   const stability::LoopAt at = [&](const rational& p) { return scene_at(p).loop; };
   // Theorem 5 first: its refusals (no [coupling], a [delay]) come before any long computation.
   std::optional<conservatism::VerdictBracket> t5;
+  if (o.conservatism) progress.stage("Theorem 5's largest " + o.max_name + " (LMI programs, bisection)");
   if (o.conservatism) t5 = conservatism::theorem5_max(scene_at, reference, o.max_name, std::min(o.digits, 6));
   std::string not_affine;
   long points = 0;  // how many values prove M(p) affine, from the scene's text (scene/parameter_degree.hpp)
+  progress.stage("the closed loop's dependence on " + o.max_name);
   try {
     points = scene::points_needed(scene::parameter_degree(sc, o.max_name));
     stability::loop_family(at, reference, o.max_name, points);
@@ -318,6 +323,8 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
   std::optional<Enclosure<rational>> exact;  // holds the exact side's boundary (certified)
   bool exact_is_supremum = false;            // stability on (0, exact) proven: the supremum of an interval
   std::string text;
+  progress.stage(not_affine.empty() ? "the supremum: certified crossing of the closed-loop matrix"
+                                     : "the supremum: bisection on certified verdicts");
   if (!not_affine.empty()) {
     const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
     j = verdict_change_json(b, o, not_affine);
@@ -417,6 +424,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc) {
       }
     }
   }
+  progress.finish();
   if (o.json) cli::print_json(j);
   else std::cout << text;
   return rc;
@@ -439,11 +447,16 @@ const cli::Register reg(
        app.add_flag("--conservatism", o->conservatism, "with --scene and --max: also the largest NAME for which Theorem 5 "
                     "concludes (the scene's [coupling]) and the ratio exact / Theorem 5");
        app.add_flag("--json", o->json, "JSON output");
+       app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        return [o]() -> int {
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
          if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
+           std::vector<std::string> plan{"reading the scene", "the closed loop's dependence on " + o->max_name, "the supremum"};
+           if (o->conservatism) plan.insert(plan.begin() + 1, "Theorem 5's largest " + o->max_name);
+           cli::StageProgress progress("stability --max", plan, o->quiet);
+           progress.stage();
            const auto sc = [&] {
              try {
                return scene::load_scene(o->scene, cli::parse_sets(o->sets));
@@ -463,7 +476,10 @@ const cli::Register reg(
              throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
            if (sc.loop.dofs() != 1 || sc.loop.devices.size() != 1 || sc.loop.operators.size() > 1 || sc.loop.coupling ||
                o->conservatism)
-             return run_loop_max(*o, sc);
+             return run_loop_max(*o, sc, progress);
+           progress.replan({"the one-DOF loop's supremum"});
+           progress.stage();
+           return run_max(*o, make_loop(*o));
          }
          const stability::Loop loop = make_loop(*o);
          return o->max_name.empty() ? run_decide(*o, loop) : run_max(*o, loop);

@@ -36,7 +36,7 @@ PointVerdict theorem5_at(const scene::Scene& sc, const lmi::Options& opt) {
                      "whose V-hat^Gamma is OSP at the level (16) asks, and with no coupling (V = 0) X (V(1) - K) = -X K "
                      "< 0, which Lemma 1 forbids: it never concludes for the direct connection. Write the coupling to "
                      "study in [coupling]");
-  const multidof::SceneProblem sp = multidof::problem_from_scene(sc);
+  const multidof::SceneProblem sp = multidof::problem_from_scene(sc, multidof::SceneUse::analyze);
   if (sp.delay > 0)
     throw InputError(sc.file + ": [delay] with a [coupling]: the delayed loop feeds V the computed force and the devices "
                      "the delayed one, a loop Theorem 4 with z^-n E does not describe; Theorem 5 is not compared here");

@@ -69,6 +69,33 @@ size_t name_end(std::string_view s, size_t i) {
   return j;
 }
 
+// A parameter's value: options.parameters, then options.shared_parameters; nullptr when neither has it.
+const rational* parameter(const ParseOptions& options, const std::string& name) {
+  if (auto it = options.parameters.find(name); it != options.parameters.end()) return &it->second;
+  if (options.shared_parameters)
+    if (auto it = options.shared_parameters->find(name); it != options.shared_parameters->end()) return &it->second;
+  return nullptr;
+}
+
+// Whether the shared map holds T, s or z, whose checks depend on whether the expression names them:
+// then the shared parameters are flattened (below) before parsing.
+bool shared_needs_flattening(const ParseOptions& options) {
+  const auto* shared = options.shared_parameters;
+  return shared && (shared->count("T") || shared->count("s") || shared->count("z"));
+}
+
+// `options` with the shared parameters `text` names copied into `parameters` and the shared map
+// dropped: what every check and use of `parameters` expects.
+ParseOptions flattened(std::string_view text, const ParseOptions& options) {
+  ParseOptions flat = options;
+  flat.shared_parameters = nullptr;
+  if (!options.shared_parameters) return flat;
+  for (const auto& name : names_in(text))
+    if (!flat.parameters.count(name))
+      if (auto it = options.shared_parameters->find(name); it != options.shared_parameters->end()) flat.parameters.insert(*it);
+  return flat;
+}
+
 // A value while parsing: an exact rational function, or (ParsedExpression) the result of tape
 // node `node` when it depends on a parameter whose value comes later.
 struct Val {
@@ -302,8 +329,8 @@ class Parser {
     if (depth_ + g.depth > limits::nesting_depth || spent_bits_ + g.bits > limits::expansion_bits) return false;
     if (g.used_T && opt_.T != g.T) return false;
     for (const auto& [name, value] : g.parameters) {
-      auto it = opt_.parameters.find(name);
-      if (it == opt_.parameters.end() || it->second != value) return false;
+      const rational* v = parameter(opt_, name);
+      if (!v || *v != value) return false;
     }
     return true;
   }
@@ -313,8 +340,8 @@ class Parser {
     for (size_t k = open + 1; k < close; ++k) {
       const Token& t = tokens_[k];
       if (t.kind != Tok::name || (t.text.size() == 1 && t.text[0] == var_) || !seen.insert(t.text).second) continue;
-      if (auto it = opt_.parameters.find(t.text); it != opt_.parameters.end()) {
-        g.parameters.emplace_back(*it);
+      if (const rational* v = parameter(opt_, t.text)) {
+        g.parameters.emplace_back(t.text, *v);
       } else if (t.text == "T") {
         g.used_T = true;
         g.T = opt_.T;
@@ -412,8 +439,7 @@ class Parser {
         next();
         if (t.text.size() == 1 && t.text[0] == var_) return known(RF(P::monomial(1, rational(1))));
         if (varying_ && varying_->count(t.text)) return node(ParsedExpression::Tape::Op::name, Val{}, Val{}, t, 0, t.text);
-        auto it = opt_.parameters.find(t.text);
-        if (it != opt_.parameters.end()) return known(RF(P(it->second)));
+        if (const rational* v = parameter(opt_, t.text)) return known(RF(P(*v)));
         if (t.text == "T") {
           if (opt_.T <= 0) fail(t, "the expression uses T but no sample period was given (" + opt_.period_hint + ")");
           used_T_ = true;
@@ -423,6 +449,9 @@ class Parser {
           fail(t, std::string("the expression mixes the variables s and z (this one is in ") + var_ + ")");
         std::string known = std::string(1, var_) + ", T";
         for (const auto& [k, v] : opt_.parameters) known += ", " + k;
+        if (opt_.shared_parameters)  // the shared ones this expression names (all of them could be a thousand)
+          for (const auto& k : names_in(src_))
+            if (!opt_.parameters.count(k) && opt_.shared_parameters->count(k)) known += ", " + k;
         std::string hint = opt_.parameter_hint;
         if (const size_t at = hint.find("{}"); at != std::string::npos) hint.replace(at, 2, t.text);
         fail(t, "unknown name '" + t.text + "' (known: " + known + "; " + hint + ")");
@@ -475,8 +504,8 @@ char infer_variable(std::string_view text, const ParseOptions& opt) {
     auto name = text.substr(i, j - i);
     bool after_digit = i > 0 && (std::isdigit(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '.');
     if (!after_digit || (name != "e" && name != "E")) {
-      if (name == "z" && !opt.parameters.count("z")) has_z = true;
-      if (name == "s" && !opt.parameters.count("s")) has_s = true;
+      if (name == "z" && !parameter(opt, "z")) has_z = true;
+      if (name == "s" && !parameter(opt, "s")) has_s = true;
     }
     i = j - 1;
   }
@@ -557,6 +586,7 @@ TransferFunction finish(RF H, std::string_view text, const ParseOptions& options
 }  // namespace
 
 TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
+  if (shared_needs_flattening(options)) return parse_tf(text, flattened(text, options));
   const char var = check_input(text, options);
   Parser p(text, options, var);
   return finish(p.parse(), text, options, var);
@@ -578,7 +608,7 @@ ParsedExpression::ParsedExpression(std::string_view text, const ParseOptions& op
   auto state = std::make_shared<State>();
   State& s = *state;
   s.text = std::string(text);
-  s.options = options;
+  s.options = flattened(text, options);
   s.options.memo = nullptr;
   for (const auto& name : varying) s.options.parameters.emplace(name, rational(0));
   s.varying = std::move(varying);
@@ -634,7 +664,7 @@ TransferFunction ParsedExpression::at(const std::map<std::string, rational>& val
 }
 
 AffineSplit split_affine(std::string_view text, const ParseOptions& options, const std::string& name) {
-  ParseOptions po = options;
+  ParseOptions po = flattened(text, options);
   po.parameters.erase(name);
   const auto [dn, dd] = ParsedExpression(text, po, {name}).degree_bound();
   const long D = std::max(dn, dd + 1);  // the degree in K of the numerator of H - H0 - K H1

@@ -57,6 +57,12 @@ struct ParseOptions {
   /// Sample period; required when the expression uses `T` or the variable is z.
   rational T = 0;
   std::map<std::string, rational> parameters;
+  /// Optional (not owned): more parameters, looked up after `parameters` and used exactly as they
+  /// are, for a caller with many parameters and many expressions (a scene: copying the ones each
+  /// expression names cost more than parsing it). Their names must be identifiers; a map that
+  /// holds T, s or z is copied as `parameters` would hold the names the expression uses, so that
+  /// its checks are those of `parameters`.
+  const std::map<std::string, rational>* shared_parameters = nullptr;
   /// Optional (not owned): see ParseMemo.
   ParseMemo* memo = nullptr;
   /// How the caller takes parameters and the sample period, for the messages of an unknown name

@@ -54,17 +54,24 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
   const auto t0 = Clock::now();
   SceneAnalysis a;
   scene::check_command(sc.root, sc.file, "multidof analyze");  // what it does not model is refused
-  a.scene = problem_from_scene(sc);
+  const auto stage = [&](const char* name) {
+    if (opt.stage) opt.stage(name);
+  };
+  stage("realising the blocks (E reduced, hidden modes)");
+  a.scene = problem_from_scene(sc, SceneUse::analyze);
   a.seconds.realisation = opt.load_seconds + since(t0);
+  stage("Theorem 5's LMIs (16) and their certificate");
   a.lmis = analyze(a.scene.problem, opt.lmi);
   a.feasible = a.lmis.verdict.holds();
   a.certified = a.lmis.verdict.proven();
   const auto t1 = Clock::now();
+  stage("Assumption 1 and the hidden modes");
   a.premises = scene_premises(a.scene);
   a.seconds.assumptions = since(t1);
   a.premises_hold = all_hold(a.premises);
   a.stability_concluded = a.feasible && a.certified && a.premises_hold;
   const auto t2 = Clock::now();
+  stage("the loop as written (closed-loop decision)");
   a.loop = loop_as_written(a.scene, a.premises_hold, opt.lmi);
   a.seconds.loop_as_written = since(t2);
   a.seconds.total = opt.load_seconds + since(t0);
@@ -115,10 +122,16 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
     throw InputError("duration must be in (0, 1e6] seconds, got " + seconds_text(opt.duration));
   SceneDesign d;
   scene::check_command(sc.root, sc.file, "multidof design");  // what it does not model is refused
+  const auto stage = [&](const char* name) {
+    if (opt.stage) opt.stage(name);
+  };
+  stage("realising the blocks (E reduced, hidden modes)");
   d.scene = problem_from_scene(sc);
   const SceneProblem& sp = d.scene;
+  stage("Theorem 6's design (CCL) and its verification");
   d.design = design(sp.problem, opt.design);
   DesignResult& r = d.design;
+  stage("Assumption 1 and the hidden modes");
   d.premises = scene_premises(sp);
   d.premise_failure = premise_failure(d.premises);
   // The design's verdict rests on certified checks (Theorem 4, V Schur stable). Beside them: the
@@ -127,12 +140,14 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
   d.feasible = r.verdict.holds();
   const bool certified = d.feasible && r.verdict.proven();
   if (d.has_v()) {
+    stage("the loop with the designed V (closed-loop decision)");
     d.loop_with_v = decided_loop(loop_with_coupling(sp, &r.V), "the designed V");
     const LoopAsWritten& law = *d.loop_with_v;
     r.verification.push_back({"the loop with this V, as written, is Schur stable (" + law.method + ")",
                               law.stable ? Verdict::of(*law.stable, law.status, law.why)
                                          : Verdict{Outcome::undecided, Status::failed, law.why}});
     if (law.stable && !*law.stable) d.feasible = false;
+    stage("the simulated cross-check");
     const auto sr = simulate_with_coupling(sp, &r.V, opt.duration);
     d.simulation = velocities_decay(sr, to_real<double>(sp.problem.T()));
     const Decay& sim = *d.simulation;

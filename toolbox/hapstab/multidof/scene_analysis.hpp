@@ -24,6 +24,7 @@
 // Implements: paper 000 Theorem 5, Theorem 6, Assumption 1.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,9 +49,14 @@ std::string premise_failure(const std::vector<AssumptionCheck>& premises);
 /// The [delay] in words ("[delay] 2 sample period(s): E := z^-2 E (...)"), for a scene with one.
 std::string delay_text(const SceneProblem& sp);
 
+/// Called as each stage of analyze_scene / design_scene starts, with its name (the command's
+/// progress on stderr, cli/progress.hpp); empty: nothing is called.
+using StageHook = std::function<void(const std::string&)>;
+
 struct SceneAnalysisOptions {
   lmi::Options lmi;
   double load_seconds = 0;  ///< time the caller spent reading the scene: counted in realisation and total
+  StageHook stage;
 };
 
 struct SceneAnalysis {
@@ -79,6 +85,7 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
 struct SceneDesignOptions {
   DesignOptions design;   ///< CCL iterations (1..10000), back-end
   double duration = 10;   ///< seconds simulated for the cross-check, in (0, 1e6]
+  StageHook stage;
 };
 
 /// "velocities -> 0" of a simulation: the last second's largest |v| below 1e-3 of the run's peak

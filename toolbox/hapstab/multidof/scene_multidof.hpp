@@ -84,7 +84,35 @@ inline int delay_in_periods(const rational& delay, const rational& T, const std:
   return static_cast<int>(bmp::numerator(q).convert_to<long>());
 }
 
-inline SceneProblem problem_from_scene(const scene::Scene& sc) {
+/// What the caller will do with the problem: analyze (Theorem 5, the loop as written) never
+/// builds Theorem 6's coupling, so the coupling's size limits (numeric/limits.hpp
+/// coupling_block_states, coupling_states) are design's only; a [multidof.coupling] the scene
+/// writes is checked against its DOFs for both.
+enum class SceneUse { analyze, design };
+
+// [multidof.coupling] (or its defaults) against the DOFs; design also against its size limits.
+inline void check_coupling_structure(CouplingStructure& c, int N, SceneUse use, bool written, const std::string& f) {
+  long total = 0;
+  for (size_t i = 0; use == SceneUse::design && i < c.nbar.size(); ++i) {
+    const int n = c.nbar[i];
+    if (n > limits::coupling_block_states)
+      throw InputError(f + "multidof.coupling.nbar[" + std::to_string(i) + "] = " + std::to_string(n) +
+                       " states, more than the limit of " + std::to_string(limits::coupling_block_states) + " per block");
+    total += n;
+  }
+  if (total > limits::coupling_states)
+    throw InputError(f + "multidof.coupling.nbar: " + std::to_string(total) + " states in all, more than the limit of " +
+                     std::to_string(limits::coupling_states) + " of the coupling `multidof design` builds" +
+                     (written ? "" : " (by default one state per device; `multidof analyze` builds none)"));
+  if (use == SceneUse::analyze && !written) return;  // the defaults analyze never builds
+  try {
+    c.validate(N);
+  } catch (const InputError& e) {
+    throw InputError(f + "multidof.coupling: " + e.what());
+  }
+}
+
+inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = SceneUse::design) {
   SceneProblem sp;
   Problem& pb = sp.problem;
   const std::string f = sc.file + ": ";
@@ -205,23 +233,8 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc) {
   if (pb.coupling.mbar.empty())
     for (const auto& d : sc.loop.devices) pb.coupling.mbar.push_back(static_cast<int>(d.dofs()));
   if (pb.coupling.nbar.empty()) pb.coupling.nbar.assign(pb.coupling.mbar.size(), 1);
-  // the structure as a whole, for analyze as for design (sizes first: nothing is allocated yet)
-  long total = 0;
-  for (size_t i = 0; i < pb.coupling.nbar.size(); ++i) {
-    const int n = pb.coupling.nbar[i];
-    if (n > limits::coupling_block_states)
-      throw InputError(f + "multidof.coupling.nbar[" + std::to_string(i) + "] = " + std::to_string(n) +
-                       " states, more than the limit of " + std::to_string(limits::coupling_block_states) + " per block");
-    total += n;
-  }
-  if (total > limits::coupling_states)
-    throw InputError(f + "multidof.coupling.nbar: " + std::to_string(total) + " states in all, more than the limit of " +
-                     std::to_string(limits::coupling_states));
-  try {
-    pb.coupling.validate(N);
-  } catch (const InputError& e) {
-    throw InputError(f + "multidof.coupling: " + e.what());
-  }
+  // the structure as a whole (sizes first: nothing is allocated yet)
+  check_coupling_structure(pb.coupling, N, use, !md.mbar.empty() || !md.nbar.empty(), f);
   return sp;
 }
 

@@ -44,6 +44,10 @@ inline constexpr long expansion_bits = 1L << 24;
 inline constexpr int state_space_dim = 500;
 /// Parameters of one scene ([parameters]); each is resolved once, after those it names.
 inline constexpr int scene_parameters = 1000;
+/// Copies of one repeated scene table (`count`, docs/scene.md "Repeated blocks") and values of one
+/// list parameter: 4096 devices is four times the largest haptic arrays of issue 48 (1024
+/// actuators); the environment over them is already a 4096 x 4096 matrix.
+inline constexpr int scene_copies = 4096;
 /// Periods of one simulated run (simulate.steps, or simulate.duration / T rounded up), and the
 /// range of every time a scene turns into a sample index (an impulse's time, a bias's start, a
 /// profile file's t): checked before the conversion (a bias start of 1e16 s at T = 1 ms was 10^19

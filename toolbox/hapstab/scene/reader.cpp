@@ -2,6 +2,8 @@
 #include "hapstab/scene/reader.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -9,6 +11,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
 #include "hapstab/report/escape.hpp"
 
 namespace hapstab::scene {
@@ -33,33 +36,27 @@ std::string Reader::free_text(const toml::table& t, const char* k, const std::st
   return text;
 }
 
-std::map<std::string, Q> Reader::params_named_in(const std::string& text) const {
-  std::map<std::string, Q> used;
-  for (const auto& name : names_in(text))
-    if (auto it = params.find(name); it != params.end()) used.insert(*it);
-  return used;
-}
-
 Q Reader::number(const toml::node& n, const std::string& key, bool allow_names) const {
   if (auto i = n.as_integer()) return Q(i->get());
   if (n.is_floating_point())
     fail(key, "write the value as a string (\"0.001\") so that it is exact; TOML floats are binary approximations");
   auto s = n.as_string();
   if (!s) fail(key, "expected a number (a string like \"1/1000\" or an integer)");
-  const std::string text = s->get();
-  if (auto q = try_parse_rational(text)) return *q;
-  if (!allow_names) fail(key, "'" + text + "' is not a number");
+  const std::string& written = s->get();
+  if (auto q = try_parse_rational(written)) return *q;
+  if (!allow_names) fail(key, "'" + written + "' is not a number");
+  const std::string text = expand(written, key);
   ParseOptions po;
   po.variable = 's';
   po.T = T;
-  po.parameters = params_named_in(text);
+  po.shared_parameters = &params;  // not copied (lti/parse.hpp)
   TransferFunction tf;
   try {
     tf = parse_tf(text, po);
   } catch (const InputError& e) {
     fail(key, e.what());
   }
-  if (tf.num().degree() > 0 || tf.den().degree() > 0) fail(key, "'" + text + "' must be a constant");
+  if (tf.num().degree() > 0 || tf.den().degree() > 0) fail(key, "'" + written + "' must be a constant");
   return tf.num().is_zero() ? Q(0) : Q(tf.num().coeff(0) / tf.den().coeff(0));
 }
 
@@ -102,16 +99,17 @@ Mat<Q> Reader::matrix(const toml::node& n, const std::string& key) const {
   return M;
 }
 
-TransferFunction Reader::tf_of(const std::string& text, const std::string& key, char var) const {
+TransferFunction Reader::tf_of(const std::string& written, const std::string& key, char var) const {
+  const std::string text = expand(written, key);
   ParseOptions po;
   po.variable = var;
   po.T = T;
-  po.parameters = params_named_in(text);
+  po.shared_parameters = &params;  // not copied: copying the ones each entry names was 40% of reading a large scene
   po.memo = &memo;
   try {
     return parse_tf(text, po);
   } catch (const InputError& e) {
-    fail(key, std::string("'") + text + "': " + e.what());
+    fail(key, std::string("'") + written + "': " + e.what());
   }
 }
 
@@ -255,6 +253,143 @@ std::vector<int> Reader::dofs_of(const toml::node& n, const std::string& key) co
     return out;
   }
   return {dof_of(n, key)};
+}
+
+namespace {
+
+bool name_char(char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; }
+
+// The name starting at i (a letter or _ not after a name character, a digit or '.'), or "".
+std::string name_at(const std::string& s, size_t i) {
+  if (!(std::isalpha(static_cast<unsigned char>(s[i])) || s[i] == '_')) return "";
+  if (i > 0 && (name_char(s[i - 1]) || s[i - 1] == '.')) return "";
+  size_t j = i;
+  while (j < s.size() && name_char(s[j])) ++j;
+  return s.substr(i, j - i);
+}
+
+}  // namespace
+
+// NAME[k] -> "(v_k)", sum(NAME) -> "(v_1 + ... + v_n)" as one exact value; scans once.
+std::string Reader::expand(const std::string& text, const std::string& key) const {
+  if (lists.empty() && text.find('[') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    const std::string name = name_at(text, i);
+    if (name.empty()) {
+      out += text[i++];
+      continue;
+    }
+    size_t j = i + name.size();
+    if (name == "sum" && j < text.size() && text[j] == '(') {
+      const size_t close = text.find(')', j);
+      std::string inner = close == std::string::npos ? "" : text.substr(j + 1, close - j - 1);
+      inner.erase(0, inner.find_first_not_of(' '));
+      inner.erase(inner.find_last_not_of(' ') + 1);
+      if (auto it = lists.find(inner); it != lists.end()) {
+        rational total = 0;
+        for (const auto& v : it->second) total += v;
+        out += "(" + total.str() + ")";
+        i = close + 1;
+        continue;
+      }
+    }
+    if (j < text.size() && text[j] == '[') {
+      const size_t close = text.find(']', j);
+      const std::string index = close == std::string::npos ? "" : text.substr(j + 1, close - j - 1);
+      const std::string used = name + "[" + index + "]";
+      if (index == "i" || index == "j")
+        fail(key, "'" + used + "': [" + index + "] is a copy's number, meaningful only in a table with count = n" +
+                      (index == "j" ? " (or, as [j], in an environment's or coupling's off_diagonal)" : ""));
+      auto it = lists.find(name);
+      if (it == lists.end())
+        fail(key, "'" + used + "': " + name + " is not a list parameter ([parameters] " + name + " = [values])");
+      const bool digits = !index.empty() && index.size() <= 6 &&
+                          std::all_of(index.begin(), index.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+      const long k = digits ? std::stol(index) : 0;
+      if (k < 1 || k > long(it->second.size()))
+        fail(key, "'" + used + "': the list parameter " + name + " has " + std::to_string(it->second.size()) +
+                      " values, numbered " + name + "[1] .. " + name + "[" + std::to_string(it->second.size()) + "]");
+      out += "(" + it->second[size_t(k - 1)].str() + ")";
+      i = close + 1;
+      continue;
+    }
+    if (lists.count(name))
+      fail(key, "'" + name + "' is a list parameter: write " + name + "[k] for its k-th value (from 1) or sum(" + name + ")");
+    out += name;
+    i = j;
+  }
+  return out;
+}
+
+std::vector<std::string> lists_indexed_by(const std::string& text, const std::string& index, const Reader& c) {
+  std::vector<std::string> out;
+  const std::string tail = "[" + index + "]";
+  for (size_t i = 0; i < text.size(); ++i) {
+    const std::string name = name_at(text, i);
+    if (name.empty()) continue;
+    if (text.compare(i + name.size(), tail.size(), tail) == 0 && c.lists.count(name)) out.push_back(name);
+    i += name.size() - 1;
+  }
+  return out;
+}
+
+namespace {
+
+// Every string in `n` (at any depth) with "[i]" replaced by "[k]"; calls seen(text) on each original.
+template <class Seen>
+void index_strings(toml::node& n, const std::string& k, Seen& seen) {
+  if (auto* s = n.as_string()) {
+    std::string text = s->get();
+    seen(text);
+    for (size_t at = text.find("[i]"); at != std::string::npos; at = text.find("[i]", at + k.size() + 2))
+      text.replace(at, 3, "[" + k + "]");
+    *s = text;
+  } else if (auto* a = n.as_array()) {
+    for (auto& e : *a) index_strings(e, k, seen);
+  } else if (auto* t = n.as_table()) {
+    for (auto&& [name, v] : *t) index_strings(v, k, seen);
+  }
+}
+
+}  // namespace
+
+std::vector<toml::table> table_copies(const toml::table& t, const std::string& key, const Reader& c) {
+  const toml::node* cn = t.get("count");
+  if (!cn) return {t};
+  const auto* count = cn->as_integer();
+  if (!count)
+    c.fail(key + ".count", "expected a whole number of copies (a TOML integer such as 128), got " +
+                               std::string(cn->is_floating_point() ? "a float" : cn->is_string() ? "a string" : "another type"));
+  const long n = long(count->get());
+  if (n < 1) c.fail(key + ".count", std::to_string(n) + " copies: a repeated table needs count >= 1");
+  if (n > limits::scene_copies)
+    c.fail(key + ".count", std::to_string(n) + " copies, more than the limit of " + std::to_string(limits::scene_copies));
+  const auto* name = t["name"].as_string();
+  if (!name) c.fail(key + ".name", "a table with count needs a name: its copies are named NAME[1] .. NAME[count]");
+  std::vector<toml::table> out;
+  out.reserve(size_t(n));
+  for (long k = 1; k <= n; ++k) {
+    toml::table copy = t;
+    copy.erase("count");
+    const std::string own = name->get();
+    const std::string named = own.find("[i]") == std::string::npos ? own + "[i]" : own;
+    copy.insert_or_assign("name", named);
+    std::vector<std::string> texts;
+    auto seen = [&](const std::string& text) {
+      if (k == 1) texts.push_back(text);
+    };
+    for (auto&& [nm, v] : copy) index_strings(v, std::to_string(k), seen);
+    for (const auto& text : texts)  // the lists it indexes by copy: one value per copy
+      for (const auto& list : lists_indexed_by(text, "i", c))
+        if (long(c.lists.at(list).size()) != n)
+          c.fail(key, "'" + list + "[i]' indexes the list parameter " + list + " of " +
+                          std::to_string(c.lists.at(list).size()) + " values by a copy number, but count = " +
+                          std::to_string(n) + " (give one value per copy)");
+    out.push_back(std::move(copy));
+  }
+  return out;
 }
 
 const toml::table* section(const toml::table& root, const char* k, const Reader& c) {

@@ -27,6 +27,9 @@ struct Reader {
   std::string base_dir;
   rational T = 0;
   std::map<std::string, rational> params;
+  /// List parameters ([parameters] NAME = [v1, ..., vn]): NAME[k] is v_k (from 1), sum(NAME) their
+  /// sum; expressions see them through expand().
+  std::map<std::string, std::vector<rational>> lists;
   std::map<std::string, std::pair<int, int>> device_dofs;  ///< name -> [first, count]
   int N = 0;                                               ///< DOFs given by the devices so far
   /// The long parenthesised groups tf_of has parsed (lti/parse.hpp, ParseMemo: used only where
@@ -59,15 +62,17 @@ struct Reader {
                              const std::function<TransferFunction(const TransferFunction&)>& to_z = {}) const;
   /// A continuous block claimed passive: no pole with Re s > 0 (static: D + D^T >= 0).
   void check_passive_claim(const StateSpace<rational>& G, const std::string& key) const;
+  /// `text` with every NAME[k] of a list parameter replaced by its exact value "(p/q)" and every
+  /// sum(NAME) by the sum of its values (the expression parser sees only scalars). A list used
+  /// without an index, an index out of range, or a copy index [i]/[j] left outside a repeated
+  /// table is an InputError naming `key`. Text without lists is returned as it is.
+  std::string expand(const std::string& text, const std::string& key) const;
   /// One DOF: a number in [0, N) or the name of a one-DOF device.
   int dof_of(const toml::node& n, const std::string& key) const;
   /// A list of DOFs (numbers and device names; a name stands for all its DOFs), or one.
   std::vector<int> dofs_of(const toml::node& n, const std::string& key) const;
 
  private:
-  /// The parameters `text` names (copying all of them for each expression cost time quadratic
-  /// in their number).
-  std::map<std::string, rational> params_named_in(const std::string& text) const;
   StateSpace<rational> ss_block(const toml::table& t, const std::string& key, char var) const;
   StateSpace<rational> tf_block(const toml::node& n, const std::string& key, char var,
                                 const std::function<TransferFunction(const TransferFunction&)>& to_z) const;
@@ -77,13 +82,30 @@ struct Reader {
 /// The table root[k], or nullptr when absent; an error when it is not a table.
 const toml::table* section(const toml::table& root, const char* k, const Reader& c);
 
-/// Calls f(table, "k[i]", i) for each [[k]] table (a single [k] table counts as k[0]).
+/// The copies a table with `count = n` stands for (docs/scene.md, "Repeated blocks"): copy k (1..n)
+/// is the table without `count`, with every "[i]" in its strings replaced by "[k]" and its name
+/// NAME made NAME[k] (or, when the name holds "[i]", that replaced). A wrong count (not an
+/// integer, < 1, above limits::scene_copies), a count without a name, or a list parameter used
+/// as LIST[i] whose length is not n is an InputError naming `key`. A table without count is
+/// returned as its only copy.
+std::vector<toml::table> table_copies(const toml::table& t, const std::string& key, const Reader& c);
+
+/// The lists `text` indexes as LIST[<index>] (index "i" or "j"), for the length checks.
+std::vector<std::string> lists_indexed_by(const std::string& text, const std::string& index, const Reader& c);
+
+/// Calls f(table, "k[i]", i) for each [[k]] table (a single [k] table counts as k[0]); a table
+/// with `count` is called once per copy (table_copies), named "k[i](copy c)".
 template <class F>
 void each_table(const toml::table& root, const char* k, const Reader& c, F f) {
   auto n = root.get(k);
   if (!n) return;
+  const auto each_copy = [&](const toml::table& t, const std::string& key, int i) {
+    if (!t.contains("count")) return f(t, key, i);
+    const auto copies = table_copies(t, key, c);
+    for (size_t j = 0; j < copies.size(); ++j) f(copies[j], key + "(copy " + std::to_string(j + 1) + ")", i);
+  };
   if (auto t = n->as_table()) {
-    f(*t, std::string(k) + "[0]", 0);
+    each_copy(*t, std::string(k) + "[0]", 0);
     return;
   }
   auto a = n->as_array();
@@ -91,7 +113,7 @@ void each_table(const toml::table& root, const char* k, const Reader& c, F f) {
   for (size_t i = 0; i < a->size(); ++i) {
     auto t = (*a)[i].as_table();
     if (!t) c.fail(std::string(k) + "[" + std::to_string(i) + "]", "expected a table");
-    f(*t, std::string(k) + "[" + std::to_string(i) + "]", int(i));
+    each_copy(*t, std::string(k) + "[" + std::to_string(i) + "]", int(i));
   }
 }
 

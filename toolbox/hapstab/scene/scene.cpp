@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "hapstab/lti/discretize.hpp"
@@ -29,6 +30,8 @@ namespace hapstab::scene {
 namespace {
 
 using Q = rational;
+
+constexpr size_t kSceneBytes = 64u << 20;  ///< the largest scene file load_scene reads (docs/security.md)
 
 toml::table parse_toml(const std::string& text, const std::string& file) {
   report::check_toml_depth(text, file);  // before toml++, which recurses per level
@@ -69,6 +72,17 @@ std::map<std::string, const toml::node*> parameter_nodes(const toml::table& p, c
   return todo;
 }
 
+// A list parameter NAME = [v1, ..., vn] (1 <= n <= limits::scene_copies): its values, named
+// NAME[1] .. NAME[n] in messages as in expressions.
+std::vector<Q> list_values(const toml::array& a, const std::string& key, const Reader& c) {
+  if (a.empty()) c.fail(key, "an empty list: a list parameter holds one value per copy (at least one)");
+  if (a.size() > size_t(limits::scene_copies))
+    c.fail(key, std::to_string(a.size()) + " values, more than the limit of " + std::to_string(limits::scene_copies));
+  std::vector<Q> out;
+  for (size_t k = 0; k < a.size(); ++k) out.push_back(c.number(a[k], key + "[" + std::to_string(k + 1) + "]"));
+  return out;
+}
+
 // Evaluates the parameters in dependency order (Kahn's topological sort over the names each
 // expression refers to, lti/parse.hpp names_in): each is parsed once, after the parameters it
 // names. (Passes over all of them until none was left took cubic time: 1000 chained
@@ -80,11 +94,16 @@ void resolve_parameters(const std::map<std::string, const toml::node*>& todo, Re
   std::map<std::string, std::vector<std::string>> users;  // name -> the parameters that name it
   std::map<std::string, size_t> waiting;                  // name -> its unresolved dependencies
   for (const auto& [name, node] : todo) {
-    size_t n = 0;
-    if (const auto* text = node->as_string())
-      for (const auto& dep : names_in(text->get()))
-        if (todo.count(dep)) users[dep].push_back(name), ++n;
-    waiting[name] = n;
+    std::set<std::string> deps;  // a list depends on what any of its values names
+    const auto named = [&](const toml::node& v) {
+      if (const auto* text = v.as_string())
+        for (const auto& dep : names_in(text->get()))
+          if (todo.count(dep)) deps.insert(dep);
+    };
+    if (const auto* list = node->as_array()) for (const auto& v : *list) named(v);
+    else named(*node);
+    for (const auto& dep : deps) users[dep].push_back(name);
+    waiting[name] = deps.size();
   }
   std::vector<std::string> ready;
   for (const auto& [name, n] : waiting)
@@ -93,7 +112,8 @@ void resolve_parameters(const std::map<std::string, const toml::node*>& todo, Re
   while (!ready.empty()) {
     const std::string name = ready.back();
     ready.pop_back();
-    c.params[name] = c.number(*todo.at(name), "parameters." + name);
+    if (const auto* list = todo.at(name)->as_array()) c.lists[name] = list_values(*list, "parameters." + name, c);
+    else c.params[name] = c.number(*todo.at(name), "parameters." + name);
     ++done;
     for (const auto& user : users[name])
       if (--waiting[user] == 0) ready.push_back(user);
@@ -115,6 +135,7 @@ void read_parameters(const toml::table& root, const std::map<std::string, Q>& ov
   auto todo = parameter_nodes(*p, c);
   for (const auto& [k, v] : overrides) {
     if (!todo.count(k)) c.fail("parameters." + k, "--set names a parameter the scene does not define");
+    if (todo.at(k)->is_array()) c.fail("parameters." + k, "--set gives one value, but " + k + " is a list parameter");
     todo.erase(k);
     c.params[k] = v;
   }
@@ -259,10 +280,57 @@ StateSpace<Q> read_s_domain_block(const toml::table& t, const std::string& key, 
   return G;
 }
 
+// diagonal / off_diagonal -> the N x N tf matrix they describe (docs/scene.md, "Repeated
+// blocks"): entry (i, j) is the diagonal's text (i = j) or the off-diagonal's with [i] the row's
+// number and [j] the column's (from 1). A list indexed by [i] or [j] must hold N values.
+toml::table expand_matrix(const toml::table& t, const std::string& key, const Reader& c) {
+  if (t.contains("tf") || t.contains("ss")) c.fail(key + ".diagonal", "give either diagonal (and off_diagonal) or tf/ss, not both");
+  const auto* d = t["diagonal"].as_string();
+  if (!d) c.fail(key + ".diagonal", t.contains("diagonal") ? "expected a string expression" : "off_diagonal needs diagonal");
+  const auto* o = t["off_diagonal"].as_string();
+  if (t.contains("off_diagonal") && !o) c.fail(key + ".off_diagonal", "expected a string expression");
+  const std::string diag = d->get(), off = o ? o->get() : std::string("0");
+  for (const auto& [text, k] : {std::pair{diag, "diagonal"}, std::pair{off, "off_diagonal"}})
+    for (const char* index : {"i", "j"})
+      for (const auto& list : lists_indexed_by(text, index, c))
+        if (long(c.lists.at(list).size()) != c.N)
+          c.fail(key + "." + k, "'" + list + "[" + index + "]' indexes the list parameter " + list + " of " +
+                                    std::to_string(c.lists.at(list).size()) + " values by a row or column, but the matrix is " +
+                                    std::to_string(c.N) + " x " + std::to_string(c.N) + " (one value per DOF)");
+  if (diag.find("[j]") != std::string::npos) c.fail(key + ".diagonal", "[j] (the column) is [i] on the diagonal: write [i]");
+  // the matrix written out is at most what a scene file may hold (load_scene's 64 MB): a few
+  // bytes of scene must not stand for more text to parse than a file could
+  const double bytes = double(c.N) * (double(diag.size()) + double(c.N - 1) * double(off.size()));
+  if (bytes > double(kSceneBytes))
+    c.fail(key + ".diagonal", "the " + std::to_string(c.N) + " x " + std::to_string(c.N) + " matrix written out is " +
+                                  std::to_string(long(bytes / (1 << 20))) + " MB of expressions, more than the " +
+                                  std::to_string(kSceneBytes >> 20) + " MB a scene file may hold");
+  const auto place = [](std::string text, const char* index, int value) {
+    const std::string from = std::string("[") + index + "]", to = "[" + std::to_string(value) + "]";
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, 3, to);
+    return text;
+  };
+  toml::array rows;
+  for (int i = 1; i <= c.N; ++i) {
+    toml::array row;
+    const std::string off_i = place(off, "i", i);
+    for (int j = 1; j <= c.N; ++j) row.push_back(i == j ? place(diag, "i", i) : place(off_i, "j", j));
+    rows.push_back(std::move(row));
+  }
+  toml::table out = t;
+  out.erase("diagonal");
+  out.erase("off_diagonal");
+  out.insert_or_assign("tf", std::move(rows));
+  return out;
+}
+
 std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const char* k, const Reader& c) {
-  auto t = section(root, k, c);
-  if (!t) return std::nullopt;
+  auto written = section(root, k, c);
+  if (!written) return std::nullopt;
   const std::string key = k;
+  std::optional<toml::table> expanded;
+  if (written->contains("diagonal") || written->contains("off_diagonal")) expanded = expand_matrix(*written, key, c);
+  const toml::table* t = expanded ? &*expanded : written;
   const std::string domain = (*t)["domain"].value_or(std::string("z"));
   if (domain != "z" && domain != "s") c.fail(key + ".domain", "expected \"z\" or \"s\"");
   StateSpace<Q> G;
@@ -530,7 +598,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
 Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides) {
   // a regular file of bounded size (not a FIFO, /dev/zero or a folder: docs/security.md), as
   // reproduce reads its scenes
-  const std::string text = report::read_input_file(path, "the scene file", 64u << 20);
+  const std::string text = report::read_input_file(path, "the scene file", kSceneBytes);
   auto dir = std::filesystem::path(path).parent_path();
   return parse_scene(text, path, overrides, dir.empty() ? "." : dir.string());
 }

@@ -46,7 +46,8 @@ Section parameters_section() {
   return {"parameters", true, false, false, true,
           "Named exact values usable in every expression below; each may refer to T and to other parameters, "
           "in any order (`bstar = \"K*T/2 + B\"`). Names are identifiers (letters, digits and _, not starting "
-          "with a digit, at most 64). `--set NAME=VALUE` overrides one exactly.",
+          "with a digit, at most 64). `--set NAME=VALUE` overrides one exactly. A *list parameter* `kc = [\"500\", "
+          "\"600\"]` holds one value per copy: `kc[2]` is its second value, `sum(kc)` their sum (see Repeated blocks).",
           {}};
 }
 
@@ -55,6 +56,7 @@ Section device_section() {
           "One table per haptic device (force -> velocity); the DOFs are numbered in device order from 0. Either "
           "a mass-damper 1/(m s + b) or a strictly proper block tf/ss.",
           {k("name", T::text, "", "the device's name; later sections use it as a DOF name"),
+           k("count", T::integer, "", "this table stands for count identical copies, named name[1] .. name[count] (see Repeated blocks)"),
            k("m", T::exact, "kg", "mass of the mass-damper 1/(m s + b)"),
            k("b", T::exact, "N s/m", "damping of the mass-damper (default 0)"),
            k("tf", T::tf, "m/(N s)", "or a strictly proper force -> velocity block: \"1/(m*s + b)\" or a matrix of strings"),
@@ -70,6 +72,7 @@ Section operator_section() {
           "Human operator impedance Z_O(s), velocity -> force; the force on the device is -Z_O v. Either m, b, k "
           "on one DOF or a proper block tf/ss (plus optional masses).",
           {k("name", T::text, "", "the operator's name"),
+           k("count", T::integer, "", "this table stands for count copies, named name[1] .. name[count] (see Repeated blocks)"),
            k("dofs", T::dofs, "", "device names or DOF numbers it acts on (default: the first |Z_O| DOFs)"),
            k("m", T::exact, "kg", "Z_O = m s + b + k/s: mass moving with the device"),
            k("b", T::exact, "N s/m", "damper of Z_O = m s + b + k/s"),
@@ -84,6 +87,9 @@ Section operator_section() {
 std::vector<Key> discrete_keys() {
   return {k("tf", T::tf, "", "a SISO string or an N x N matrix of strings, in z (or in s with domain = \"s\")"),
           sub("ss", "ss", kSs),
+          k("diagonal", T::text, "", "instead of tf: entry (i, i) of the N x N matrix, one expression in which [i] is the row "
+                                     "(see Repeated blocks)"),
+          k("off_diagonal", T::text, "", "with diagonal: entry (i, j), i != j, [i] the row and [j] the column (default \"0\")"),
           k("domain", T::text, "", "\"z\" (default) or \"s\": a continuous model discretised exactly"),
           k("method", T::text, "", "(domain = \"s\") \"backward_euler\" (s = (z-1)/(Tz)) or \"tustin\"; s-improper is fine"),
           k("gain", T::exact, "", "a scale g of the block (default 1): g times its outputs (C and D), its states unchanged; "
@@ -390,7 +396,8 @@ struct Checker {
       const std::string name(name_.str());
       const std::string path = key + "." + name;
       if (s.open) {
-        if (types && !is_exact(v)) fail(v, path + ": expected " + described(T::exact) + ", got " + kind_of(v));
+        if (types && !is_exact(v) && !all_of(v, is_exact))
+          fail(v, path + ": expected " + described(T::exact) + " or a list of them, got " + kind_of(v));
         continue;
       }
       const Key* kd = find_key(s, name);
@@ -676,6 +683,63 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return d[a.size()][b.size()];
 }
 
+// docs/scene.md's "Repeated blocks": count, list parameters, diagonal/off_diagonal (scene/reader.hpp
+// table_copies and Reader::expand, scene.cpp expand_matrix). Its example is parsed by tests/scene.
+static std::string repeated_blocks_markdown() {
+  return "## Repeated blocks\n\n"
+         "Arrays of identical actuators (pin displays, ultrasound arrays, exoskeleton fingers) are written once with a\n"
+         "count. The reader expands them; every command then sees the same scene as if it were written out.\n\n"
+         "- `count = n` in a `[[device]]` or `[[operator]]` table stands for n copies of it, 1 <= n <= 4096. A count\n"
+         "  that is 0, negative, a float, a string or above 4096 is refused naming the key (`device[0].count: 0\n"
+         "  copies: a repeated table needs count >= 1`). The table needs a `name`: the copies are `NAME[1]` ..\n"
+         "  `NAME[n]` (a name holding `[i]`, e.g. `\"finger[i].pad\"`, is the pattern instead). The copies take the\n"
+         "  table's place: the DOFs of `d[1]` .. `d[n]` follow the devices before the table, in copy order.\n"
+         "- In every string of a repeated table, `[i]` is the copy's number: `dofs = \"d[i]\"` puts `H[k]` on\n"
+         "  `d[k]`, `m = \"mass[i]\"` gives copy k the k-th value of the list parameter `mass`. Messages about a\n"
+         "  copy name it `device[0](copy k)`.\n"
+         "- A *list parameter* `kc = [\"500\", \"600\", ...]` in `[parameters]` holds exact values (numbers or\n"
+         "  expressions, as any parameter); in any expression `kc[k]` is its k-th value (from 1) and `sum(kc)` the\n"
+         "  exact sum of all of them. A list indexed by `[i]` in a table with count n must hold n values; `kc[k]`\n"
+         "  beyond its length, `kc` without an index, `[i]` outside a repeated table and `--set kc=...` are refused\n"
+         "  by name.\n"
+         "- `[environment]` and `[coupling]` may give their N x N matrix (N the number of DOFs) by two entries instead\n"
+         "  of `tf`: `diagonal`, entry (i, i) with `[i]` its row, and `off_diagonal`, entry (i, j), i != j, with `[i]`\n"
+         "  the row and `[j]` the column (default `\"0\"`). A list they index by `[i]` or `[j]` must hold N values, and the\n"
+         "  matrix written out may hold at most 64 MB of expressions, as a scene file may.\n\n"
+         "N devices in contact with one virtual mass M (paper 000's Fig. 5 environment generalised; `bench/contact_scene.py\n"
+         "N --compact` writes it for any N, 3.2 KB at N = 128 where the written-out scene is 18 MB):\n\n"
+         "```toml\n"
+         "[scene]\n"
+         "name = \"4 contact points on one mass\"\n"
+         "T = \"0.01\"\n\n"
+         "[parameters]\n"
+         "M = \"0.3\"\n"
+         "k = \"1000\"\n"
+         "B = \"5\"\n"
+         "kc = [\"500\", \"600\", \"700\", \"800\"]   # contact i: kc[i] + Bc[i] s\n"
+         "Bc = [\"1\", \"2\", \"3/2\", \"5/2\"]\n"
+         "g = [\"0.1\", \"0.05\", \"0.08\", \"0.06\"]   # operator gains\n\n"
+         "[[device]]\n"
+         "count = 4          # d[1] .. d[4]: DOFs 0 .. 3\n"
+         "name = \"d\"\n"
+         "m = \"1/10\"\n"
+         "b = \"1.37\"\n\n"
+         "[[operator]]\n"
+         "count = 4          # H[k] holds d[k]\n"
+         "name = \"H\"\n"
+         "dofs = \"d[i]\"\n"
+         "tf = \"g[i]*(s^2+5*s+10)/(s^2+s+1)\"\n\n"
+         "[environment]      # E = diag(c_i) - c c^T / (M s^2 + (B + sum Bc) s + k + sum kc), c_i = kc[i] + Bc[i] s\n"
+         "domain = \"s\"\n"
+         "method = \"backward_euler\"\n"
+         "diagonal = \"kc[i] + Bc[i]*s - (kc[i] + Bc[i]*s)^2/(M*s^2 + (B + sum(Bc))*s + k + sum(kc))\"\n"
+         "off_diagonal = \"-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/(M*s^2 + (B + sum(Bc))*s + k + sum(kc))\"\n"
+         "```\n\n"
+         "`bench/contact_scene.py 4` writes the same scene out (devices d1 .. d4, 16 entries of E); `multidof analyze`\n"
+         "and `stability --scene` give the same output on both forms (ctest `scene_compact_vs_written`, N = 4 and 8).\n"
+         "The environment is still realised from its N^2 entries: the compact form saves the file, not that work.\n\n";
+}
+
 std::string schema_markdown() {
   std::ostringstream o;
   o << "# Scene files\n\n"
@@ -714,6 +778,7 @@ std::string schema_markdown() {
     }
     o << "\n";
   }
+  o << repeated_blocks_markdown();
   o << "## What each command models\n\n"
        "A command reads every part of a scene it models. A part it does not model but that would change the\n"
        "model is **refused** (exit 2), naming the command that models it, e.g. \"multidof analyze does not model\n"
