@@ -142,6 +142,41 @@ nlohmann::json r_certificate(const rational& T, const rational& omega, const std
   return j;
 }
 
+nlohmann::json stability_evidence(const stability::Loop& loop) {
+  const std::optional<QPoly> c = stability::exact_characteristic(loop);
+  if (!c)
+    throw InputError("--certificate: a certificate of stability with a device pole off s = 0 (the sampled device's "
+                     "e^{pT} are transcendental) is not implemented yet; devices with every pole at s = 0 (a mass "
+                     "1/(m*s^2)) have one");
+  if (c->degree() > 2000)
+    throw InputError("--certificate: the characteristic polynomial has degree " + std::to_string(c->degree()) +
+                     ", beyond the checkers' limit of 2000");
+  nlohmann::json coeffs = nlohmann::json::array();
+  for (const rational& x : c->coeffs()) coeffs.push_back(x.str());
+  return {{"charpoly", coeffs}};
+}
+
+nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
+                                     const stability::StabilityResult& r, const nlohmann::json& evidence) {
+  if (!r.verdict.decided()) throw InputError("--certificate: the verdict is undecided: there is no claim to certify");
+  nlohmann::json j = header("stability");
+  nlohmann::json m;
+  m["plant"] = text.plant;
+  m["H"] = text.H;
+  if (!text.op.empty()) m["operator"] = text.op;
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(text.sets)) sets[name] = value.str();
+  m["set"] = sets;
+  m["T"] = loop.T.str();
+  m["delay"] = text.delay;
+  j["model"] = m;
+  j["claim"] = {{"quantity", "Schur stability of the sampled loop: device P(s) behind a zero-order hold, force = -z^-n H(z) x(kT)"},
+                {"stable", r.verdict.holds()},
+                {"status", to_string(r.verdict.status)}};
+  j["evidence"] = evidence;
+  return j;
+}
+
 void write_certificate(const std::string& file, const nlohmann::json& certificate) {
   std::ofstream f(file);
   if (!f) throw InputError("--certificate: cannot write '" + file + "'");

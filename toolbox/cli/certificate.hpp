@@ -11,6 +11,7 @@
 
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
 
@@ -26,6 +27,24 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit
 /// in its last place).
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits);
+
+/// The inputs of `stability --plant --H [--operator] --T [--delay] [--set]`, as written.
+struct StabilityText {
+  std::string plant, H, op;
+  int delay = 0;
+  std::vector<std::string> sets;
+};
+
+/// The evidence of a `stability` certificate of `loop` (one DOF, no --max): the exact
+/// characteristic polynomial. InputError (exit 2) for what has no certificate yet: a device with a
+/// pole off s = 0 (transcendental e^{pT}), a polynomial above the checkers' degree limit (2000).
+nlohmann::json stability_evidence(const stability::Loop& loop);
+
+/// The certificate of the verdict `r` on the loop (check/stability_check.hpp): the model as
+/// written, the claim stable / NOT stable with r's status, the evidence of stability_evidence.
+/// r must be decided.
+nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
+                                     const stability::StabilityResult& r, const nlohmann::json& evidence);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);
