@@ -6,7 +6,8 @@
 Produces certificates of `bound` (random virtual environments, integer delays, eta), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
-doubled -- with that loop's polynomial and verdict, consistently) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
+doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
+families: the five exact verdicts of paper 002's criteria and assumptions) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
 on every mutant: `hapstab check --batch` (check/) and checks/hapstab_check.py (imported; it shares
 no code with hapstab). Every mutant carries what must happen:
   accept     the claim is true and its evidence intact (the unmutated certificate; an enclosure
@@ -235,7 +236,7 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("delay as a string", with_field(cert, ["model", "delay"], str(m["delay"])), "malformed"))
     out.append(("eta negative", with_field(cert, ["model", "eta"], "-1/10"), "malformed"))
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
-    out.append(("kind unknown", with_field(cert, ["kind"], "wedge"), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["kind"], "limit-cycle"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
     return out
 
@@ -426,6 +427,96 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     return out
 
 
+WEDGE_TEMPLATES = [  # H(z) of paper 002's examples and of virtual walls
+    ("K + B*(z-1)/(T*z)", ["K", "B"]),
+    ("K*(z + 1)/(z^2 - a*z)", ["K", "a"]),
+    ("K*(z - a)/(z - b)", ["K", "a", "b"]),
+    ("K*(1 - a)/(z - a)", ["K", "a"]),
+    ("K/(z^2 - b*z + c)", ["K", "b", "c"]),
+]
+
+
+def rand_wedge(rng):
+    H, names = rng.choice(WEDGE_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n == "K":
+            sets[n] = rng.choice([str(rng.randint(1, 20)), "%d/%d" % (rng.randint(1, 20), rng.randint(2, 40))])
+        elif n == "B":
+            sets[n] = str(rng.randint(0, 30))
+        else:
+            sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
+    if "c" in sets:  # z^2 - b z + c stable
+        c = Fraction(sets["c"])
+        sets["b"] = frac(Fraction(rng.randint(-90, 90), 100) * (1 + c))
+    return {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/100", "1"])}
+
+
+def wedge_args(m):
+    a = ["wedge", "--H", m["H"], "--T", m["T"]]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def wedge_produce(hapstab, m, cache, tmp):
+    """hapstab's wedge certificate of model m, or the exit code when it writes none."""
+    key = "wedge" + json.dumps(m, sort_keys=True)
+    if key not in cache:
+        path = os.path.join(tmp, "w-edit.json")
+        if os.path.exists(path):
+            os.remove(path)
+        rc, _, _ = run(hapstab, wedge_args(m) + ["--certificate", path])
+        if rc in (0, 1) and os.path.exists(path):
+            with open(path) as f:
+                cache[key] = json.load(f)
+        else:
+            cache[key] = rc
+    return cache[key]
+
+
+WEDGE_CLAIMS = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
+
+
+def wedge_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    for key in WEDGE_CLAIMS:
+        out.append(("claim.%s flipped" % key, with_field(cert, ["claim", key], not cert["claim"][key]), "refute"))
+    m = cert["model"]
+    edits = []
+    for key, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
+            if y != x:
+                edits.append(("set %s %s" % (key, name), dict(m, set=dict(m["set"], **{key: frac(y)}))))
+    edits.append(("T x 10", dict(m, T=frac(Fraction(m["T"]) * 10))))
+    h = m["H"]
+    for a, b in (("+", "-"), ("-", "+")):
+        if a in h:
+            j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
+            edits.append(("H: a '%s' made '%s'" % (a, b), dict(m, H=h[:j] + b + h[j + 1:])))
+    for name, nm in edits:
+        other = wedge_produce(hapstab, nm, cache, tmp)
+        if isinstance(other, dict):
+            same = all(other["claim"][k] == cert["claim"][k] for k in WEDGE_CLAIMS)
+            expect = "accept" if same else "refute"
+        else:
+            expect = "malformed" if other == 2 else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "H"], ["model", "T"], ["claim", "status"]) + tuple(
+            ["claim", k] for k in WEDGE_CLAIMS):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    out.append(("added evidence.witness_c", with_field(cert, ["evidence", "witness_c"], "0"), "malformed"))
+    out.append(("claim.wedge as a string", with_field(cert, ["claim", "wedge"], "true"), "malformed"))
+    out.append(("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
+    out.append(("H unparsable", with_field(cert, ["model", "H"], h + "*("), "malformed"))
+    out.append(("H not causal", with_field(cert, ["model", "H"], "z^2 + " + h), "malformed"))
+    out.append(("H with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z - 1)"), "malformed"))
+    return out
+
+
 def rand_r(rng):
     T = rng.choice(["1/1000", "1/100", "3/7", "0.002", "1"])
     w = "%s%d/%d" % (rng.choice(["", "-"]), rng.randint(1, 10 ** 6), rng.randint(1, 10 ** 3))
@@ -473,11 +564,19 @@ def main():
             skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
             continue
         certs.append(("stability", cert))
+    for i in range(max(a.models // 2, 2)):
+        cert = wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp)
+        if not isinstance(cert, dict):
+            skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("wedge", cert))
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "wedge":
+            ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         else:
             ms = (bound_mutants if kind == "bound" else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:

@@ -6,6 +6,7 @@
 
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
+#include "hapstab/check/max_positive.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -98,7 +99,7 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d["model"]["H"] = "K*(";
   expect_field(d, "model.H");
   d = c;
-  d["kind"] = "wedge";
+  d["kind"] = "limit-cycle";
   expect_field(d, "kind");
 }
 
@@ -197,6 +198,46 @@ TEST(StabilityCheck, RefusesWhatItCannotModel) {
   d = stability_cert("1/(m*s^2)", "K", 0, true, c);
   d["claim"]["stable"] = "yes";
   expect_field(d, "claim.stable");
+}
+
+TEST(MaxPositive, KnownSigns) {
+  const P x{rational(0), rational(1)};
+  EXPECT_TRUE(max_positive_on(x, -x, m1, p1));                                   // |c| = 0 at c = 0
+  EXPECT_FALSE(max_positive_on(p1 + x, p1 - x, m1, p1));                         // 1 + |c|
+  EXPECT_TRUE(max_positive_on(x * x - rational(1, 4), x * x - rational(1, 4), m1, p1));
+  EXPECT_FALSE(max_positive_on(x * x + rational(1, 4), P(rational(-1)), m1, p1));
+  // both <= 0 on [1/2, 1/sqrt(3)] (an end irrational)
+  EXPECT_TRUE(max_positive_on(x * x - rational(1, 3), rational(1, 2) - x, m1, p1));
+  EXPECT_TRUE(max_positive_on(P(), P(), m1, p1));
+}
+
+nlohmann::json wedge_cert(const std::string& H, const std::string& K, std::vector<bool> claims) {
+  nlohmann::json claim{{"status", "exact"}};
+  const char* keys[] = {"wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"};
+  for (size_t i = 0; i < 5; ++i) claim[keys[i]] = static_cast<bool>(claims[i]);
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "wedge"},
+          {"model", {{"H", H}, {"set", {{"K", K}}}, {"T", "1"}}}, {"claim", claim}, {"evidence", nlohmann::json::object()}};
+}
+
+// H = K/z: Re H = K cos(theta), Im H = -K sin(theta); (25) is |K| (1 + cos) + K cos + 1 and (21)
+// K cos + 1, both with minimum 1 - K at theta = pi for K > 0: they hold iff K < 1; (1 + H)^-1 has
+// its pole at z = -K; H(1) = K.
+TEST(WedgeCheck, OneSampleDelay) {
+  auto verified = [](const nlohmann::json& c) {
+    const Verdict v = check_certificate(c);
+    EXPECT_TRUE(v.verified) << v.reason;
+    return v.verified;
+  };
+  verified(wedge_cert("K/z", "1/2", {true, true, true, true, true}));
+  verified(wedge_cert("K/z", "1", {false, false, true, false, true}));  // margin exactly 0 at theta = pi
+  verified(wedge_cert("K/z", "2", {false, false, true, false, true}));
+  verified(wedge_cert("K/z", "-1/2", {true, true, true, true, false}));  // 3/2 and 1 - cos/2
+  verified(wedge_cert("K", "3", {true, true, true, true, true}));
+  const Verdict wrong = check_certificate(wedge_cert("K/z", "1", {true, false, true, false, true}));
+  EXPECT_FALSE(wrong.verified);
+  EXPECT_NE(wrong.reason.find("claim.wedge"), std::string::npos) << wrong.reason;
+  EXPECT_THROW(check_certificate(wedge_cert("K/(z - 1)", "1", {true, true, true, true, true})), InputError);
+  EXPECT_THROW(check_certificate(wedge_cert("K*z", "1", {true, true, true, true, true})), InputError);  // not causal
 }
 
 }  // namespace

@@ -177,6 +177,26 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
   return j;
 }
 
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  if (!a.wedge.evaluated() || !a.tsypkin.evaluated())
+    throw InputError("--certificate: H has a pole on the unit circle, so the criteria are not evaluated: nothing to certify");
+  nlohmann::json j = header("wedge");
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
+  j["claim"] = {{"quantity", "Tsai & Colgate (paper 002): wedge criterion (25), Tsypkin's condition (21), the assumptions of Sec. 2"},
+                {"status", "exact"},
+                {"wedge", a.wedge.verdict.holds()},
+                {"tsypkin", a.tsypkin.verdict.holds()},
+                {"h_stable", a.assumptions.h_stable},
+                {"closed_loop_stable", a.assumptions.closed_loop_stable},
+                {"dc_gain_nonnegative", a.assumptions.dc_gain_nonnegative}};
+  j["evidence"] = nlohmann::json::object();
+  return j;
+}
+
 void write_certificate(const std::string& file, const nlohmann::json& certificate) {
   std::ofstream f(file);
   if (!f) throw InputError("--certificate: cannot write '" + file + "'");

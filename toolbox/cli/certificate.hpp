@@ -11,6 +11,7 @@
 
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/contact/wedge.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
@@ -45,6 +46,11 @@ nlohmann::json stability_evidence(const stability::Loop& loop);
 /// r must be decided.
 nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
                                      const stability::StabilityResult& r, const nlohmann::json& evidence);
+
+/// The certificate of `wedge` (check/wedge_check.hpp): H as written by --H, the exact verdicts of
+/// (25), (21) and the three assumptions. InputError (exit 2) when H is not given by --H or has a
+/// pole on the unit circle (the criteria are not evaluated: nothing to certify).
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);

@@ -10,6 +10,7 @@
 #include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
+#include "hapstab/check/wedge_check.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -72,7 +73,8 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound") return check_bound(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, r, stability)");
+  if (kind == "wedge") return check_wedge(c);
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, r, stability, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

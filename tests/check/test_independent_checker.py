@@ -1,10 +1,15 @@
 #!/usr/bin/env python3
-"""checks/hapstab_check.py's `stability` kind on loops whose characteristic polynomial and verdict
+"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), and its
+`stability` kind on loops whose characteristic polynomial and verdict
 are known by hand (the same cases as tests/check/test_check.cpp's StabilityCheck, which checks the
 C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), of 1/s^3 at T = 1
 (z^2 + 4 z + 1)/(6 (z - 1)^3) (tables of z-transforms); the verdicts by Jury's conditions.
 
-    python3 tests/check/test_independent_stability.py        (unittest; ctest check_independent_stability)
+    python3 tests/check/test_independent_checker.py        (unittest; ctest check_independent_checker)
+
+Wedge by hand: H = K/z gives Re H = K cos(theta), Im H = -K sin(theta), so (25) is
+K cos + cot(theta/2) K sin + 1 = K (1 + 2 cos(theta)) + 1 (min 1 - K at theta = pi) and (21)
+K cos(theta) + 1 (min 1 - K): both hold iff K < 1; (1 + H)^-1 has its pole at -K.
 """
 import copy
 import os
@@ -74,6 +79,40 @@ class Stability(unittest.TestCase):
         c2 = copy.deepcopy(c)
         c2["claim"]["stable"] = "yes"
         self.assertIn("claim.stable", hc.check(c2)[1])
+
+
+def wedge_cert(H, K, claims):
+    keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
+    return {"certificate": "hapstab", "version": 1, "kind": "wedge",
+            "model": {"H": H, "set": {"K": K}, "T": "1"},
+            "claim": dict({"status": "exact"}, **dict(zip(keys, claims))), "evidence": {}}
+
+
+class Wedge(unittest.TestCase):
+    def test_one_sample_delay(self):
+        self.assertEqual(hc.check(wedge_cert("K/z", "1/2", (True, True, True, True, True)))[0], 0)
+        self.assertEqual(hc.check(wedge_cert("K/z", "1", (False, False, True, False, True)))[0], 0)   # = 0 at theta = pi
+        self.assertEqual(hc.check(wedge_cert("K/z", "2", (False, False, True, False, True)))[0], 0)
+        code, why = hc.check(wedge_cert("K/z", "1", (True, False, True, False, True)))
+        self.assertEqual(code, 1)
+        self.assertIn("claim.wedge", why)
+        # K = -1/2: (25) is |K| (1 + cos) + K cos + 1 = 3/2, (21) 1 - cos/2: both hold; H(1) < 0
+        self.assertEqual(hc.check(wedge_cert("K/z", "-1/2", (True, True, True, True, False)))[0], 0)
+
+    def test_constant(self):
+        self.assertEqual(hc.check(wedge_cert("K", "3", (True, True, True, True, True)))[0], 0)
+        self.assertEqual(hc.check(wedge_cert("K", "-1", (False, False, True, False, False)))[0], 0)
+
+    def test_max_positive(self):
+        F = Fraction
+        self.assertIsNotNone(hc.max_positive([F(0), F(1)], [F(0), F(-1)], F(-1), F(1)))  # |c| = 0 at c = 0
+        self.assertIsNone(hc.max_positive([F(1), F(1)], [F(1), F(-1)], F(-1), F(1)))      # 1 + |c|
+        self.assertIsNotNone(hc.max_positive([F(-1, 4), F(0), F(1)], [F(-1, 4), F(0), F(1)], F(-1), F(1)))
+
+    def test_refuses_a_pole_on_the_circle(self):
+        code, why = hc.check(wedge_cert("K/(z - 1)", "1", (True, True, True, True, True)))
+        self.assertEqual(code, 2)
+        self.assertIn("unit circle", why)
 
 
 if __name__ == "__main__":
