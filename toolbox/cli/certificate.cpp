@@ -143,6 +143,9 @@ nlohmann::json r_certificate(const rational& T, const rational& omega, const std
 }
 
 nlohmann::json stability_evidence(const stability::Loop& loop) {
+  if (loop.delay > 2000)  // refused before the polynomial of degree > delay is built
+    throw InputError("--certificate: the characteristic polynomial has degree above " + std::to_string(loop.delay) +
+                     ", beyond the checkers' limit of 2000");
   const std::optional<QPoly> c = stability::exact_characteristic(loop);
   if (!c)
     throw InputError("--certificate: a certificate of stability with a device pole off s = 0 (the sampled device's "

@@ -1,4 +1,4 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound` and `r` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `r`, `stability` and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any

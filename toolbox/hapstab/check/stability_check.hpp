@@ -21,7 +21,7 @@
 // Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
 // pole at s = 0 (else the certificate is refused as beyond this checker: exit 2), z^-n H causal,
 // degree of c <= 2000.
-// Implements: paper 001 Fig. 1's loop (device, ZOH, z^-n H); issue 19 (docs/stability.md).
+// Implements: paper 001 Fig. 1.
 #pragma once
 
 #include <nlohmann/json.hpp>

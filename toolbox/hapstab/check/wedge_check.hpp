@@ -18,7 +18,7 @@
 // Claims checked: claim.wedge, claim.tsypkin, claim.h_stable, claim.closed_loop_stable,
 // claim.dc_gain_nonnegative (all booleans; status "exact"). Not claimed: the margins and
 // largest gains the command prints (certified enclosures; no certificate for them yet).
-// Implements: paper 002 (21), (25) and the assumptions of its Sec. 2.
+// Implements: paper 002 (21), (25), Sec. 2.
 #pragma once
 
 #include <nlohmann/json.hpp>
