@@ -117,6 +117,9 @@ std::vector<Case> catalogue(const std::string& out) {
       {"stability", "--json", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--json=maybe"}, "--json"},
       {"wedge", "--certificate", {"--num", "1", "--den", "1 -0.5", "--certificate", "c.json"}, "as written by --H"},
       {"wedge", "--certificate", {"--H", "1/(z-1)", "--certificate", "c.json"}, "pole on the unit circle"},
+      // a pole at z = -1 whose branches stay bounded: the producer evaluates the criteria as limits
+      // there, but the checkers refuse every pole on the circle, so no certificate is written
+      {"wedge", "--certificate", {"--H", "(3*z - 0.6)/(z + 1)", "--certificate", "c.json"}, "pole on the unit circle"},
       {"wedge", "--H", {"--H", "1/(", "--T", "1"}, "--H"},
       {"wedge", "--num", {"--num", "[1", "--den", "1"}, "--num: '['"},
       {"wedge", "--den", {"--num", "1", "--den", "[]"}, "--den: no coefficients"},

@@ -183,8 +183,11 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
 nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a) {
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
-  if (!a.wedge.evaluated() || !a.tsypkin.evaluated())
-    throw InputError("--certificate: H has a pole on the unit circle, so the criteria are not evaluated: nothing to certify");
+  // a pole on the circle where the branches stay bounded (z = -1 with Im H cot(theta/2) finite) is
+  // still evaluated by the producer, as a limit; the checkers refuse every pole on the circle
+  if (a.assumptions.pole_on_unit_circle || !a.wedge.evaluated() || !a.tsypkin.evaluated())
+    throw InputError("--certificate: H has a pole on the unit circle (the criteria are then limits, or not evaluated): "
+                     "no certificate");
   nlohmann::json j = header("wedge");
   nlohmann::json sets = nlohmann::json::object();
   for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();

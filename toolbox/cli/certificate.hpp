@@ -49,7 +49,7 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
 
 /// The certificate of `wedge` (check/wedge_check.hpp): H as written by --H, the exact verdicts of
 /// (25), (21) and the three assumptions. InputError (exit 2) when H is not given by --H or has a
-/// pole on the unit circle (the criteria are not evaluated: nothing to certify).
+/// pole on the unit circle (the criteria are then limits, or not evaluated; the checkers refuse it).
 nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
