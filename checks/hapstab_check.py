@@ -29,8 +29,19 @@ bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n/(1-z)} + eta, z = e^{jwT} (paper 001
                 by their gcd (at a removable point the value is f's limit, which the sup reaches).
 r      r(jw) = T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2) (paper 001, (44)): Re r = -T/2 exactly;
        Im r in [im_lo, im_hi] by mpmath interval cot at 128, 256, ... 65536 bits.
+stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force = -z^-n H(z) x):
+       P_eff = P/(1 + s Z_op P) = N(s)/s^k (every pole at s = 0, else not modelled here: exit 2);
+       its zero-order hold from the pulse response (sampled_device); the characteristic
+       polynomial c = z^n L (z-1)^k + A Nd (H = A/L); evidence.charpoly must be a multiple of it;
+       the verdict by the Schur-Cohn recursion in exact fractions (schur_cohn).
 
-Size limit: bound models of degree max(deg N, deg D + n) <= 64 (exact Sturm sequences in
+wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Tsypkin's (21)
+       Re H + 1 > 0 on theta in [0, pi], and the assumptions H stable, (1+H)^-1 stable, H(1) >= 0.
+       Route: u = tan^2(theta/2) in [0, inf) (wedge_polys): Re H = Gr/F, Im H cot(theta/2) = Jt/F,
+       so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
+       [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
+       Assumptions by schur_cohn on D and D + N, H(1) exactly.
+Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree max(deg N, deg D + n) <= 64 (exact Sturm sequences in
 Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond it exit 3.
 """
 import json
@@ -211,9 +222,16 @@ def lex(text):
     return toks
 
 
-def parse_h(text, T, params):
-    """H(z) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
-    z, T and the parameters; -z^2 is -(z^2); a^b^c is refused."""
+def parse_h(text, T, params, var='z', field='model.H'):
+    """H(var) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
+    the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused."""
+    try:
+        return _parse(text, T, params, var)
+    except Malformed as e:
+        raise Malformed(str(e).replace("model.H", field, 1))
+
+
+def _parse(text, T, params, var):
     toks = lex(text)
     pos = [0]
 
@@ -288,7 +306,7 @@ def parse_h(text, T, params):
             except (ValueError, ZeroDivisionError):
                 raise Malformed("model.H: malformed number %r" % txt)
         if kind == 'name':
-            if txt == 'z':
+            if txt == var:
                 return RF([Fraction(0), Fraction(1)])
             if txt in params:
                 return RF([params[txt]])
@@ -587,6 +605,258 @@ def exact_mpf(t):
     return -v if sign else v
 
 
+# ---------------------------------------------------------------- stability
+MAX_STABILITY_DEGREE = 400
+
+
+def sampled_device(N, k, T):
+    """Nd with P_d(z) = Nd(z)/(z-1)^k, the zero-order hold of N(s)/s^k (deg N < k), from the
+    pulse response: y(l) = sum_m b_m (lT)^m/m! (the step response; b_m the coefficient of s^(k-m)
+    in N), h_l = y(l) - y(l-1) for l >= 1, h_0 = y(0) = 0, P_d = sum_l h_l z^-l; with w = 1/z,
+    g(w) = (1-w)^k sum_l h_l w^l is a polynomial of degree <= k (the k-th differences of a
+    polynomial of degree k-1 in l vanish; checked) and Nd(z) = z^k g(1/z)."""
+    def y(l):
+        v, fact = Fraction(0), 1
+        for m in range(1, k + 1):
+            fact *= m
+            v += N[k - m] * (l * T) ** m / fact if k - m < len(N) else 0
+        return v
+    L = 2 * k + 3
+    h = [Fraction(0)] + [y(l) - y(l - 1) for l in range(1, L)]
+    binom = ppow([Fraction(1), Fraction(-1)], k)  # (1 - w)^k
+    g = [sum((binom[j] * h[i - j] for j in range(len(binom)) if 0 <= i - j < L), Fraction(0)) for i in range(L)]
+    if any(x != 0 for x in g[k + 1:]):
+        raise AssertionError("the sampled device is not Nd/(z-1)^k")
+    return trim([g[k - i] for i in range(k + 1)])
+
+
+def schur_cohn(p):
+    """(True, why) when every root of p (ascending, non-zero) is in |z| < 1, else (False, the step
+    that fails): |p_0| < |p_d| and the Schur transform (p_d p - p_0 p*)/z stable (Schur, Cohn)."""
+    a = trim(p)
+    while len(a) > 1:
+        d = len(a) - 1
+        if abs(a[0]) >= abs(a[-1]):
+            return False, "Schur-Cohn at degree %d: |p_0| >= |p_d| (a root on or outside the unit circle)" % d
+        q = [a[-1] * a[i + 1] - a[0] * a[d - 1 - i] for i in range(d)]
+        a = [x / q[-1] for x in q]
+    return True, "every Schur-Cohn step passes"
+
+
+def check_stability(c):
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
+    only(claim, ("quantity", "status", "stable"), "claim")
+    only(evidence, ("charpoly",), "evidence")
+    for key in ("plant", "H"):
+        if not isinstance(model.get(key), str):
+            raise Malformed("model.%s: missing or not a string" % key)
+    if "operator" in model and not isinstance(model["operator"], str):
+        raise Malformed("model.operator: not a string")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool) or n < 0 or n > 100000:
+        raise Malformed("model.delay: missing, not an integer or outside [0, 100000]")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+    if claim.get("status") not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    if not isinstance(claim.get("stable"), bool):
+        raise Malformed("claim.stable: missing or not true/false")
+    given = evidence.get("charpoly")
+    if not isinstance(given, list) or not given:
+        raise Malformed("evidence.charpoly: missing or not a non-empty list")
+    given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
+    # the loop as written: P_eff = P/(1 + s Zop P) = N/s^k, c = z^n L (z-1)^k + A Nd
+    try:
+        dev = parse_h(model["plant"], T, params, 's', 'model.plant')
+        if "operator" in model:
+            one = RF([Fraction(1)]) + RF([Fraction(0), Fraction(1)]) * parse_h(model["operator"], T, params, 's', 'model.operator') * dev
+            dev = dev / one
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
+    if not dev.num:
+        raise Malformed("model.plant: zero")
+    k = len(dev.den) - 1
+    if len(dev.num) > k:
+        raise Malformed("model.plant: the device is not strictly proper")
+    if any(x != 0 for x in dev.den[:k]):
+        raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole at s = 0 only")
+    if len(H.num) > len(H.den) + n:
+        raise Malformed("model.H: z^-n H(z) is not causal")
+    degree = len(H.den) - 1 + n + k
+    if degree > MAX_STABILITY_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d" % (degree, MAX_STABILITY_DEGREE))
+    Nd = sampled_device([x / dev.den[-1] for x in dev.num], k, T)
+    cpoly = padd(pmul([Fraction(0)] * n + H.den, ppow([Fraction(-1), Fraction(1)], k)), pmul(H.num, Nd))
+    if len(given) != len(cpoly):
+        return False, "evidence.charpoly has degree %d, the loop as written %d" % (len(given) - 1, len(cpoly) - 1)
+    ratio = given[-1] / cpoly[-1]
+    for i, (g, x) in enumerate(zip(given, cpoly)):
+        if g != ratio * x:
+            return False, "evidence.charpoly is not the characteristic polynomial of the loop as written (z^%d: %s, expected %s)" % (
+                i, short(g), short(ratio * x))
+    ok, why = schur_cohn(cpoly)
+    if ok != claim["stable"]:
+        return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
+    return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
+
+
+# ---------------------------------------------------------------- wedge
+def sqfree(p):
+    return pdivmod(p, pgcd(p, pderiv(p)))[0] if len(p) > 2 else p
+
+
+def roots_in(p, lo, hi):
+    """The number of distinct roots of p in (lo, hi) when p(lo), p(hi) != 0 (Sturm)."""
+    if len(p) < 2:
+        return 0
+    seq = sturm_seq(sqfree(p))
+    return variations(seq, lo) - variations(seq, hi)
+
+
+def max_positive(p1, p2, a, b):
+    """None when max(p1, p2) > 0 at every point of [a, b], else where not. The distinct roots of
+    p1 p2 in (a, b) are isolated by bisection (Sturm); p1, p2 keep their signs between them, so
+    the isolating intervals' ends test every cell; at a root, gcd(p1, p2) vanishing there means
+    both are 0, else one is 0 and the other has the sign it has at the interval's end."""
+    def fails(x):
+        return None if peval(p1, x) > 0 or peval(p2, x) > 0 else "not > 0 at u = %s" % short(x)
+    for x in (a, b):
+        if fails(x):
+            return fails(x)
+    R = sqfree(p2 if not p1 else p1 if not p2 else pmul(p1, p2))
+    for e in (a, b):
+        while len(R) > 1 and peval(R, e) == 0:
+            R = pdivmod(R, [-e, Fraction(1)])[0]
+    if len(R) < 2:
+        return None
+    g = pgcd(p1, p2) if p1 and p2 else []
+    stack = [(a, b)]
+    while stack:
+        lo, hi = stack.pop()
+        for x in (lo, hi):
+            if fails(x):
+                return fails(x)
+        n = roots_in(R, lo, hi)
+        if n == 0:
+            continue
+        if n == 1:
+            where = "a root in (%.12g, %.12g)" % (float(lo), float(hi))
+            if not p1 or not p2:
+                return "max = 0 at " + where
+            if len(g) > 1 and roots_in(g, lo, hi) == 1:
+                return "both are 0 at " + where
+            other = p2 if roots_in(p1, lo, hi) == 1 else p1
+            if peval(other, lo) < 0:
+                return "one is 0 and the other < 0 at " + where
+            continue
+        mid = (lo + hi) / 2
+        while peval(R, mid) == 0:
+            mid = (mid + hi) / 2
+        stack += [(lo, mid), (mid, hi)]
+    return None
+
+
+def wedge_polys(H):
+    """(Gr, Jt, F) in u = tan^2(theta/2): with t = tan(theta/2), z = (1+jt)/(1-jt), d = deg D,
+    N~ = N(z)(1-jt)^d, D~ likewise, G = N~ conj(D~) = Gr + j Gi: Re H = Gr/F, Im H/t = Jt/F with
+    Jt = Gi/t, F = |D~|^2 (Gr, F even and Gi odd in t: polynomials in u = t^2)."""
+    d = len(H.den) - 1
+    def cmul(x, y):
+        return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
+    plus, minus = ([Fraction(1)], [Fraction(0), Fraction(1)]), ([Fraction(1)], [Fraction(0), Fraction(-1)])
+    def tilde(coeffs):
+        re, im = [], []
+        for k, a in enumerate(coeffs):
+            x = ([Fraction(1)], [])
+            for _ in range(k):
+                x = cmul(x, plus)
+            for _ in range(d - k):
+                x = cmul(x, minus)
+            re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
+        return re, im
+    Nr, Ni = tilde(H.num)
+    Dr, Di = tilde(H.den)
+    Gr = padd(pmul(Nr, Dr), pmul(Ni, Di))
+    Gi = psub(pmul(Ni, Dr), pmul(Nr, Di))
+    F = padd(pmul(Dr, Dr), pmul(Di, Di))
+    if any(x != 0 for x in Gr[1::2] + F[1::2] + Gi[0::2]):
+        raise AssertionError("parity in t")
+    return Gr[0::2], Gi[1::2], F[0::2]
+
+
+def cauchy_bound(polys):
+    b = Fraction(1)
+    for p in polys:
+        if len(p) > 1:
+            b = max(b, 1 + max(abs(x) for x in p[:-1]) / abs(p[-1]))
+    return b
+
+
+def check_wedge(c):
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim = obj_field(c, "model"), obj_field(c, "claim")
+    only(obj_field(c, "evidence"), (), "evidence")
+    only(model, ("H", "set", "T"), "model")
+    only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"), "claim")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: missing or not \"exact\"")
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    try:
+        H = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    if len(H.num) > len(H.den):
+        raise Malformed("model.H: not causal (deg num > deg den)")
+    N, D = H.num, H.den
+    if not N:
+        N = []
+    Gr, Jt, F = wedge_polys(H)
+    bound = cauchy_bound([F, padd(Gr, F), padd(padd(Gr, Jt), F), psub(padd(Gr, F), Jt)])
+    zero = Fraction(0)
+    if max_positive(F, F, zero, bound) or peval(D, Fraction(-1)) == 0:
+        raise Malformed("model.H: H has a pole on the unit circle: the criteria are not evaluated")
+    h_m1 = peval(N, Fraction(-1)) / peval(D, Fraction(-1))  # theta = pi (u = inf): J = 0 there
+    facts = []
+    why = max_positive(padd(padd(Gr, Jt), F), padd(psub(Gr, Jt), F), zero, bound)
+    if why is None and h_m1 + 1 <= 0:
+        why = "H(-1) + 1 <= 0 at theta = pi"
+    facts.append(("wedge", why is None, "(25) " + ("holds" if why is None else "fails: " + why)))
+    why = max_positive(padd(Gr, F), padd(Gr, F), zero, bound)
+    if why is None and h_m1 + 1 <= 0:
+        why = "H(-1) + 1 <= 0 at theta = pi"
+    facts.append(("tsypkin", why is None, "(21) " + ("holds" if why is None else "fails: " + why)))
+    ok, why = schur_cohn(D)
+    facts.append(("h_stable", ok, "H stable: " + why))
+    cl = padd(D, N)
+    ok, why = schur_cohn(cl) if cl else (False, "D + N = 0")
+    facts.append(("closed_loop_stable", ok, "(1 + H)^-1 stable: " + why))
+    d1 = peval(D, Fraction(1))
+    dc = d1 != 0 and peval(N, Fraction(1)) / d1 >= 0
+    facts.append(("dc_gain_nonnegative", dc, "H(1) infinite" if d1 == 0 else "H(1) = %s" % short(peval(N, Fraction(1)) / d1)))
+    for key, truth, why in facts:
+        v = claim.get(key)
+        if not isinstance(v, bool):
+            raise Malformed("claim.%s: missing or not true/false" % key)
+        if v != truth:
+            return False, "claim.%s = %s, but %s" % (key, "true" if v else "false", why)
+    return True, "; ".join(w for _, _, w in facts)
+
+
 # ---------------------------------------------------------------- driver
 def check(c):
     """(exit code, reason): 0 verified, 1 refuted, 2 malformed, 3 not checked (too large)."""
@@ -602,8 +872,12 @@ def check(c):
             ok, why = check_bound(c)
         elif kind == "r":
             ok, why = check_r(c)
+        elif kind == "stability":
+            ok, why = check_stability(c)
+        elif kind == "wedge":
+            ok, why = check_wedge(c)
         else:
-            raise Malformed("kind: %r has no checker (known: bound, r)" % (kind,))
+            raise Malformed("kind: %r has no checker (known: bound, r, stability, wedge)" % (kind,))
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

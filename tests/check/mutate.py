@@ -3,8 +3,11 @@
 
     python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet]
 
-Produces certificates of `bound` (random virtual environments, integer delays, eta) and `r`
-(random T, w) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
+Produces certificates of `bound` (random virtual environments, integer delays, eta), `r`
+(random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
+stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
+doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
+families: the five exact verdicts of paper 002's criteria and assumptions) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
 on every mutant: `hapstab check --batch` (check/) and checks/hapstab_check.py (imported; it shares
 no code with hapstab). Every mutant carries what must happen:
   accept     the claim is true and its evidence intact (the unmutated certificate; an enclosure
@@ -233,7 +236,7 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("delay as a string", with_field(cert, ["model", "delay"], str(m["delay"])), "malformed"))
     out.append(("eta negative", with_field(cert, ["model", "eta"], "-1/10"), "malformed"))
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
-    out.append(("kind unknown", with_field(cert, ["kind"], "wedge"), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["kind"], "limit-cycle"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
     return out
 
@@ -269,6 +272,248 @@ def r_mutants(cert, rng, hapstab, cache):
         out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
     out.append(("omega = 0", with_field(cert, ["model", "omega"], "0"), "malformed"))
     out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    return out
+
+
+STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pole at s = 0 (exact data)
+    ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", ["m", "K", "B"]),            # mass on a virtual wall (001)
+    ("1/(m*s^2)", None, "K + B*2*(z-1)/(T*(z+1))", ["m", "K", "B"]),      # Tustin damper
+    ("1/(m*s^2)", None, "K*(z - a)/(z - b)", ["m", "K", "a", "b"]),      # lead/lag wall
+    ("1/(m*s^2)", "c*s", "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),      # an operator's mass
+    ("(1 + c*s)/(m*s^3)", None, "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),  # an integrating device
+]
+
+
+def rand_stability(rng):
+    plant, op, H, names = rng.choice(STABILITY_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n == "m":
+            sets[n] = rng.choice(["1", "1/2", "3", "0.05"])
+        elif n == "c":
+            sets[n] = rng.choice(["1/10", "1", "0.002"])
+        elif n == "K":
+            sets[n] = str(rng.choice([rng.randint(1, 3000), rng.randint(1, 60000)]))
+        elif n == "B":
+            sets[n] = str(rng.randint(0, 30))
+        else:
+            sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
+    m = {"plant": plant, "H": H, "set": sets, "T": rng.choice(["1/1000", "1/500", "1/4000"]),
+         "delay": rng.choice([0, 0, 1, 1, 2, 3])}
+    if op:
+        m["operator"] = op
+    return m
+
+
+def stability_args(m):
+    a = ["stability", "--plant", m["plant"], "--H", m["H"], "--T", m["T"], "--delay", str(m["delay"])]
+    if "operator" in m:
+        a += ["--operator", m["operator"]]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def stability_produce(hapstab, m, cache, tmp):
+    """hapstab's certificate of model m (dict), or the exit code when it writes none."""
+    key = json.dumps(m, sort_keys=True)
+    if key not in cache:
+        path = os.path.join(tmp, "s-edit.json")
+        if os.path.exists(path):
+            os.remove(path)
+        rc, _, _ = run(hapstab, stability_args(m) + ["--certificate", path])
+        if rc in (0, 1) and os.path.exists(path):
+            with open(path) as f:
+                cache[key] = json.load(f)
+        else:
+            cache[key] = rc
+    return cache[key]
+
+
+def proportional(a, b):
+    a = [Fraction(x) for x in a]
+    b = [Fraction(x) for x in b]
+    while a and a[-1] == 0:
+        a.pop()
+    while b and b[-1] == 0:
+        b.pop()
+    if len(a) != len(b) or not a:
+        return False
+    r = a[-1] / b[-1]
+    return all(x == r * y for x, y in zip(a, b))
+
+
+def wrong_loop(cert, coeffs, name):
+    """The certificate with evidence.charpoly = coeffs (another loop's) and the claim its verdict:
+    a producer that built the wrong loop, consistently."""
+    c = with_field(cert, ["evidence", "charpoly"], [frac(x) for x in coeffs])
+    ok, _ = hapstab_check.schur_cohn([Fraction(x) for x in coeffs])
+    c["claim"]["stable"] = ok
+    return ("wrong loop: " + name, c, "refute")
+
+
+def stability_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cp = [Fraction(x) for x in cert["evidence"]["charpoly"]]
+    st = cert["claim"]["stable"]
+    out.append(("claim.stable flipped", with_field(cert, ["claim", "stable"], not st), "refute"))
+    out.append(("status exact -> certified", with_field(cert, ["claim", "status"], "certified"), "accept"))
+    k = Fraction(rng.choice([-3, 2, 7]), rng.choice([1, 5, 11]))
+    out.append(("charpoly scaled", with_field(cert, ["evidence", "charpoly"], [frac(k * x) for x in cp]), "accept"))
+    out.append(("charpoly with a trailing 0", with_field(cert, ["evidence", "charpoly"], [frac(x) for x in cp] + ["0"]), "accept"))
+    i = rng.randrange(len(cp))
+    for name, f in (("+ 1", lambda x: x + 1), ("x (1 + 10^-30)", lambda x: x * (1 + Fraction(1, 10 ** 30))),
+                    ("negated", lambda x: -x)):
+        moved = list(cp)
+        moved[i] = f(cp[i])
+        if moved[i] != cp[i]:
+            out.append(("charpoly[%d] %s" % (i, name), with_field(cert, ["evidence", "charpoly"], [frac(x) for x in moved]), "refute"))
+    out.append(("charpoly: leading term dropped", with_field(cert, ["evidence", "charpoly"], [frac(x) for x in cp[:-1]]), "refute"))
+    if cp != cp[::-1] and cp != [-x for x in cp[::-1]]:
+        out.append(("charpoly reversed", with_field(cert, ["evidence", "charpoly"], [frac(x) for x in cp[::-1]]), "refute"))
+    # a producer that built the wrong loop, with the verdict of that loop (consistent evidence)
+    m = cert["model"]
+    for name, edit in (("delay + 1", {"delay": m["delay"] + 1}), ("T doubled", {"T": frac(Fraction(m["T"]) * 2)})):
+        other = stability_produce(hapstab, dict(m, **edit), cache, tmp)
+        if isinstance(other, dict):
+            out.append(wrong_loop(cert, [Fraction(x) for x in other["evidence"]["charpoly"]], name))
+    # the model edited: expectation from the producer's certificate of the edited model
+    edits = []
+    for key, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
+            if y != x:
+                edits.append(("set %s %s" % (key, name), ["set", key], frac(y)))
+    edits += [("T halved", ["T"], frac(Fraction(m["T"]) / 2)), ("delay + 1", ["delay"], m["delay"] + 1)]
+    if m["delay"] > 0:
+        edits.append(("delay - 1", ["delay"], m["delay"] - 1))
+    for field in ("H", "plant"):
+        h = m[field]
+        for a, b in (("+", "-"), ("-", "+")):
+            if a in h:
+                j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
+                edits.append(("%s: a '%s' made '%s'" % (field, a, b), [field], h[:j] + b + h[j + 1:]))
+    if "operator" in m:
+        edits.append(("operator removed", None, None))
+    for name, path, value in edits:
+        nm = copy.deepcopy(m)
+        if path is None:
+            del nm["operator"]
+        else:
+            nm[path[0]] = value if len(path) == 1 else dict(nm[path[0]], **{path[1]: value})
+        other = stability_produce(hapstab, nm, cache, tmp)
+        if isinstance(other, dict):
+            same = proportional(other["evidence"]["charpoly"], cp)
+            expect = "refute" if not same or other["claim"]["stable"] != st else "accept"
+        else:
+            expect = "malformed" if other == 2 else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    # malformed
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "plant"], ["model", "H"], ["model", "T"],
+                 ["model", "delay"], ["claim", "stable"], ["claim", "status"], ["evidence", "charpoly"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    out.append(("added evidence.roots_inside", with_field(cert, ["evidence", "roots_inside"], 1), "malformed"))
+    out.append(("claim.stable as a string", with_field(cert, ["claim", "stable"], "true"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("charpoly entry a decimal", with_field(cert, ["evidence", "charpoly"], ["0.5"] + cert["evidence"]["charpoly"][1:]), "malformed"))
+    out.append(("charpoly empty", with_field(cert, ["evidence", "charpoly"], []), "malformed"))
+    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
+    out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
+    out.append(("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"))
+    out.append(("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"))
+    out.append(("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"))
+    out.append(("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed"))
+    return out
+
+
+WEDGE_TEMPLATES = [  # H(z) of paper 002's examples and of virtual walls
+    ("K + B*(z-1)/(T*z)", ["K", "B"]),
+    ("K*(z + 1)/(z^2 - a*z)", ["K", "a"]),
+    ("K*(z - a)/(z - b)", ["K", "a", "b"]),
+    ("K*(1 - a)/(z - a)", ["K", "a"]),
+    ("K/(z^2 - b*z + c)", ["K", "b", "c"]),
+]
+
+
+def rand_wedge(rng):
+    H, names = rng.choice(WEDGE_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n == "K":
+            sets[n] = rng.choice([str(rng.randint(1, 20)), "%d/%d" % (rng.randint(1, 20), rng.randint(2, 40))])
+        elif n == "B":
+            sets[n] = str(rng.randint(0, 30))
+        else:
+            sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
+    if "c" in sets:  # z^2 - b z + c stable
+        c = Fraction(sets["c"])
+        sets["b"] = frac(Fraction(rng.randint(-90, 90), 100) * (1 + c))
+    return {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/100", "1"])}
+
+
+def wedge_args(m):
+    a = ["wedge", "--H", m["H"], "--T", m["T"]]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def wedge_produce(hapstab, m, cache, tmp):
+    """hapstab's wedge certificate of model m, or the exit code when it writes none."""
+    key = "wedge" + json.dumps(m, sort_keys=True)
+    if key not in cache:
+        path = os.path.join(tmp, "w-edit.json")
+        if os.path.exists(path):
+            os.remove(path)
+        rc, _, _ = run(hapstab, wedge_args(m) + ["--certificate", path])
+        if rc in (0, 1) and os.path.exists(path):
+            with open(path) as f:
+                cache[key] = json.load(f)
+        else:
+            cache[key] = rc
+    return cache[key]
+
+
+WEDGE_CLAIMS = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
+
+
+def wedge_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    for key in WEDGE_CLAIMS:
+        out.append(("claim.%s flipped" % key, with_field(cert, ["claim", key], not cert["claim"][key]), "refute"))
+    m = cert["model"]
+    edits = []
+    for key, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
+            if y != x:
+                edits.append(("set %s %s" % (key, name), dict(m, set=dict(m["set"], **{key: frac(y)}))))
+    edits.append(("T x 10", dict(m, T=frac(Fraction(m["T"]) * 10))))
+    h = m["H"]
+    for a, b in (("+", "-"), ("-", "+")):
+        if a in h:
+            j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
+            edits.append(("H: a '%s' made '%s'" % (a, b), dict(m, H=h[:j] + b + h[j + 1:])))
+    for name, nm in edits:
+        other = wedge_produce(hapstab, nm, cache, tmp)
+        if isinstance(other, dict):
+            same = all(other["claim"][k] == cert["claim"][k] for k in WEDGE_CLAIMS)
+            expect = "accept" if same else "refute"
+        else:
+            expect = "malformed" if other == 2 else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "H"], ["model", "T"], ["claim", "status"]) + tuple(
+            ["claim", k] for k in WEDGE_CLAIMS):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    out.append(("added evidence.witness_c", with_field(cert, ["evidence", "witness_c"], "0"), "malformed"))
+    out.append(("claim.wedge as a string", with_field(cert, ["claim", "wedge"], "true"), "malformed"))
+    out.append(("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
+    out.append(("H unparsable", with_field(cert, ["model", "H"], h + "*("), "malformed"))
+    out.append(("H not causal", with_field(cert, ["model", "H"], "z^2 + " + h), "malformed"))
+    out.append(("H with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z - 1)"), "malformed"))
     return out
 
 
@@ -311,11 +556,30 @@ def main():
             continue
         with open(path) as f:
             certs.append(("r", json.load(f)))
+    scache = {}
+    for i in range(max(a.models // 2, 2)):
+        m = rand_stability(rng)
+        cert = stability_produce(a.hapstab, m, scache, tmp)
+        if not isinstance(cert, dict):
+            skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("stability", cert))
+    for i in range(max(a.models // 2, 2)):
+        cert = wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp)
+        if not isinstance(cert, dict):
+            skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("wedge", cert))
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
-        mk = bound_mutants if kind == "bound" else r_mutants
-        for name, c, expect in mk(cert, rng, a.hapstab, cache):
+        if kind == "stability":
+            ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "wedge":
+            ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
+        else:
+            ms = (bound_mutants if kind == "bound" else r_mutants)(cert, rng, a.hapstab, cache)
+        for name, c, expect in ms:
             mutants.append((kind, name, c, expect))
     # the C++ checker: one process over all mutants
     batch = os.path.join(tmp, "mutants.jsonl")
@@ -354,8 +618,14 @@ def main():
     shutil.rmtree(tmp, ignore_errors=True)
     n = len(mutants)
     accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py) if e in ("refute", "malformed") and (cj["exit"] == 0 or pc == 0))
-    print("certificates: %d (%d bound, %d r); producer runs skipped: %s" % (
-        len(certs), sum(1 for k, _ in certs if k == "bound"), sum(1 for k, _ in certs if k == "r"), skipped or "none"))
+    kinds = sorted({k for k, _ in certs})
+    print("certificates: %d (%s); producer runs skipped: %s" % (
+        len(certs), ", ".join("%d %s" % (sum(1 for k, _ in certs if k == kd), kd) for kd in kinds), skipped or "none"))
+    for kd in kinds:
+        per = [(e, cj["exit"], pc) for (k, _, _, e), cj, (pc, _) in zip(mutants, cpp, py) if k == kd]
+        print("  %s: %d mutants (accept %d, refute %d, malformed %d, agree %d), false or malformed accepted %d" % (
+            kd, len(per), *(sum(1 for e, _, _ in per if e == x) for x in ("accept", "refute", "malformed", "agree")),
+            sum(1 for e, ce, pe in per if e in ("refute", "malformed") and (ce == 0 or pe == 0))))
     print("mutants: %d; expected accept %d, refute %d, malformed %d, agree %d" % (
         n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e == "refute"),
         sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e == "agree")))

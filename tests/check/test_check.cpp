@@ -6,6 +6,8 @@
 
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
+#include "hapstab/check/max_positive.hpp"
+#include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -97,7 +99,7 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d["model"]["H"] = "K*(";
   expect_field(d, "model.H");
   d = c;
-  d["kind"] = "wedge";
+  d["kind"] = "limit-cycle";
   expect_field(d, "kind");
 }
 
@@ -111,6 +113,131 @@ TEST(RCheck, CotOneHalf) {
   EXPECT_TRUE(check_certificate(cert("-1/2", "-91524386085622596/100000000000000000", "-91524386085622595/100000000000000000")).verified);
   EXPECT_FALSE(check_certificate(cert("-1/2", "-91524386085622595/100000000000000000", "-91524386085622594/100000000000000000")).verified);
   EXPECT_FALSE(check_certificate(cert("1/2", "-1", "0")).verified);
+}
+
+TEST(SchurCohn, KnownRoots) {
+  const P z{rational(0), rational(1)};
+  EXPECT_TRUE(schur_cohn(z - rational(1, 2)).stable);
+  EXPECT_FALSE(schur_cohn(z + rational(1)).stable);                             // a root on the circle
+  EXPECT_TRUE(schur_cohn(z * z + rational(1, 4)).stable);                       // +-j/2
+  EXPECT_TRUE(schur_cohn(z * z - z + rational(1, 2)).stable);                   // (1 +- j)/2, |.| = 0.707
+  EXPECT_FALSE(schur_cohn((z - rational(1, 2)) * (z - rational(2))).stable);    // one root outside
+  EXPECT_FALSE(schur_cohn((z - rational(1, 2)) * (z * z + rational(1))).stable);  // +-j on the circle
+  EXPECT_TRUE(schur_cohn(P(rational(3))).stable);                               // no roots
+  EXPECT_TRUE(schur_cohn(rational(-7) * (z + rational(9, 10)) * (z - rational(99, 100))).stable);
+}
+
+nlohmann::json stability_cert(const std::string& plant, const std::string& H, int delay, bool stable,
+                              const std::vector<std::string>& charpoly) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability"},
+          {"model", {{"plant", plant}, {"H", H}, {"set", {{"m", "1"}, {"K", "1000"}, {"B", "2"}}}, {"T", "1/1000"}, {"delay", delay}}},
+          {"claim", {{"status", "exact"}, {"stable", stable}}}, {"evidence", {{"charpoly", charpoly}}}};
+}
+
+// The mass 1/(m s^2) behind a zero-order hold: P_d = T^2 (z + 1)/(2 m (z - 1)^2) (a table of
+// z-transforms). With H = K + B (z - 1)/(T z), m = 1, K = 1000, B = 2, T = 1/1000, by hand:
+// c = z (z - 1)^2 + (T^2/2)(z + 1)((K + B/T) z - B/T) = z^3 - 3997/2000 z^2 + 2001/2000 z - 1/1000,
+// stable by Jury's conditions for a cubic (c(1) = 1/1000 > 0, -c(-1) = 4 > 0, |a0| < 1,
+// |a0^2 - 1| = 0.999999 > |a0 a2 - a1| = 0.9985015).
+TEST(StabilityCheck, MassOnAVirtualWall) {
+  const std::vector<std::string> c{"-1/1000", "2001/2000", "-3997/2000", "1"};
+  const auto ok = check_certificate(stability_cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, true, c));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  // any non-zero multiple of the polynomial is the same evidence
+  EXPECT_TRUE(check_certificate(stability_cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, true, {"2/1000", "-2001/1000", "3997/1000", "-2"})).verified);
+  const auto flipped = check_certificate(stability_cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, false, c));
+  EXPECT_FALSE(flipped.verified);
+  EXPECT_NE(flipped.reason.find("every Schur-Cohn step passes"), std::string::npos) << flipped.reason;
+  // the polynomial of another loop (one coefficient moved) is refuted before any root test
+  const auto moved = check_certificate(stability_cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, true, {"-1/1000", "2001/2000", "-3996/2000", "1"}));
+  EXPECT_FALSE(moved.verified);
+  EXPECT_NE(moved.reason.find("z^2"), std::string::npos) << moved.reason;
+  // the delay is part of the loop: z^1 changes the polynomial's degree
+  EXPECT_FALSE(check_certificate(stability_cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 1, true, c)).verified);
+}
+
+// H = K alone: c = (z - 1)^2 + a (z + 1), a = K T^2/(2 m) = 1/2000: c(0) = 1 + a > 1 = the leading
+// coefficient, so NOT stable (a spring alone on a sampled mass); with the operator's mass c s,
+// P_eff = 1/((m + c) s^2).
+TEST(StabilityCheck, SpringAloneAndOperatorMass) {
+  const std::vector<std::string> c{"2001/2000", "-3999/2000", "1"};
+  EXPECT_TRUE(check_certificate(stability_cert("1/(m*s^2)", "K", 0, false, c)).verified);
+  EXPECT_FALSE(check_certificate(stability_cert("1/(m*s^2)", "K", 0, true, c)).verified);
+  auto op = stability_cert("1/(m*s^2)", "K", 0, false, {"4001/4000", "-7999/4000", "1"});  // a = 1/4000
+  op["model"]["operator"] = "m*s";
+  const auto v = check_certificate(op);
+  EXPECT_TRUE(v.verified) << v.reason;
+}
+
+// The zero-order hold of 1/s^3 at T = 1 is (z^2 + 4 z + 1)/(6 (z - 1)^3) (a table): with H = 1,
+// c = (z - 1)^3 + (z^2 + 4 z + 1)/6 = z^3 - 17/6 z^2 + 22/6 z - 5/6; |a0^2 - 1| = 11/36 <
+// |a0 a2 - a1| = 47/36, so NOT stable (Jury).
+TEST(StabilityCheck, TripleIntegrator) {
+  nlohmann::json c = stability_cert("1/s^3", "1", 0, false, {"-5/6", "22/6", "-17/6", "1"});
+  c["model"]["T"] = "1";
+  const auto v = check_certificate(c);
+  EXPECT_TRUE(v.verified) << v.reason;
+}
+
+TEST(StabilityCheck, RefusesWhatItCannotModel) {
+  auto expect_field = [](const nlohmann::json& j, const std::string& field) {
+    try {
+      check_certificate(j);
+      ADD_FAILURE() << "accepted: " << j.dump();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  const std::vector<std::string> c{"-1/1000", "2001/2000", "-3997/2000", "1"};
+  expect_field(stability_cert("1/(m*s^2 + s)", "K + B*(z-1)/(T*z)", 0, true, c), "pole off s = 0");
+  expect_field(stability_cert("1/m", "K", 0, true, c), "not strictly proper");
+  expect_field(stability_cert("1/(m*s^2)", "K*z^2", 0, true, c), "not causal");
+  auto d = stability_cert("1/(m*s^2)", "K", 0, true, c);
+  d["model"]["frac_delay"] = "1/2000";
+  expect_field(d, "model.frac_delay");
+  d = stability_cert("1/(m*s^2)", "K", 0, true, c);
+  d["claim"]["stable"] = "yes";
+  expect_field(d, "claim.stable");
+}
+
+TEST(MaxPositive, KnownSigns) {
+  const P x{rational(0), rational(1)};
+  EXPECT_TRUE(max_positive_on(x, -x, m1, p1));                                   // |c| = 0 at c = 0
+  EXPECT_FALSE(max_positive_on(p1 + x, p1 - x, m1, p1));                         // 1 + |c|
+  EXPECT_TRUE(max_positive_on(x * x - rational(1, 4), x * x - rational(1, 4), m1, p1));
+  EXPECT_FALSE(max_positive_on(x * x + rational(1, 4), P(rational(-1)), m1, p1));
+  // both <= 0 on [1/2, 1/sqrt(3)] (an end irrational)
+  EXPECT_TRUE(max_positive_on(x * x - rational(1, 3), rational(1, 2) - x, m1, p1));
+  EXPECT_TRUE(max_positive_on(P(), P(), m1, p1));
+}
+
+nlohmann::json wedge_cert(const std::string& H, const std::string& K, std::vector<bool> claims) {
+  nlohmann::json claim{{"status", "exact"}};
+  const char* keys[] = {"wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"};
+  for (size_t i = 0; i < 5; ++i) claim[keys[i]] = static_cast<bool>(claims[i]);
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "wedge"},
+          {"model", {{"H", H}, {"set", {{"K", K}}}, {"T", "1"}}}, {"claim", claim}, {"evidence", nlohmann::json::object()}};
+}
+
+// H = K/z: Re H = K cos(theta), Im H = -K sin(theta); (25) is |K| (1 + cos) + K cos + 1 and (21)
+// K cos + 1, both with minimum 1 - K at theta = pi for K > 0: they hold iff K < 1; (1 + H)^-1 has
+// its pole at z = -K; H(1) = K.
+TEST(WedgeCheck, OneSampleDelay) {
+  auto verified = [](const nlohmann::json& c) {
+    const Verdict v = check_certificate(c);
+    EXPECT_TRUE(v.verified) << v.reason;
+    return v.verified;
+  };
+  verified(wedge_cert("K/z", "1/2", {true, true, true, true, true}));
+  verified(wedge_cert("K/z", "1", {false, false, true, false, true}));  // margin exactly 0 at theta = pi
+  verified(wedge_cert("K/z", "2", {false, false, true, false, true}));
+  verified(wedge_cert("K/z", "-1/2", {true, true, true, true, false}));  // 3/2 and 1 - cos/2
+  verified(wedge_cert("K", "3", {true, true, true, true, true}));
+  const Verdict wrong = check_certificate(wedge_cert("K/z", "1", {true, false, true, false, true}));
+  EXPECT_FALSE(wrong.verified);
+  EXPECT_NE(wrong.reason.find("claim.wedge"), std::string::npos) << wrong.reason;
+  EXPECT_THROW(check_certificate(wedge_cert("K/(z - 1)", "1", {true, true, true, true, true})), InputError);
+  EXPECT_THROW(check_certificate(wedge_cert("K*z", "1", {true, true, true, true, true})), InputError);  // not causal
 }
 
 }  // namespace

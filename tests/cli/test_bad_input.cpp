@@ -97,6 +97,9 @@ std::vector<Case> catalogue(const std::string& out) {
       {"stability", "--plant", {"--plant", "s", "--H", "1", "--T", "1"}, "not strictly proper"},
       {"stability", "--H", {"--plant", "1/s^2", "--H", "z^3", "--T", "1"}, "not causal"},
       {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
+      {"stability", "--certificate", {"--plant", "1/(s^2 + s)", "--H", "1", "--T", "1", "--certificate", "c.json"}, "pole off s = 0"},
+      {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--max", "K", "--certificate", "c.json"}, "stability --max"},
+      {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "-1"}, "--delay"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "2000000"}, "--delay"},
       {"stability", "--scene", {"--scene", "/nonexistent/scene.toml"}, "--scene"},
@@ -113,6 +116,11 @@ std::vector<Case> catalogue(const std::string& out) {
       {"stability", "--max", {"--plant", "1/s^2", "--H", "1/(1+K*z)", "--T", "1", "--max", "K"}, "affine"},
       {"stability", "--digits", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--digits", "0"}, "--digits"},
       {"stability", "--json", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--json=maybe"}, "--json"},
+      {"wedge", "--certificate", {"--num", "1", "--den", "1 -0.5", "--certificate", "c.json"}, "as written by --H"},
+      {"wedge", "--certificate", {"--H", "1/(z-1)", "--certificate", "c.json"}, "pole on the unit circle"},
+      // a pole at z = -1 whose branches stay bounded: the producer evaluates the criteria as limits
+      // there, but the checkers refuse every pole on the circle, so no certificate is written
+      {"wedge", "--certificate", {"--H", "(3*z - 0.6)/(z + 1)", "--certificate", "c.json"}, "pole on the unit circle"},
       {"wedge", "--H", {"--H", "1/(", "--T", "1"}, "--H"},
       {"wedge", "--num", {"--num", "[1", "--den", "1"}, "--num: '['"},
       {"wedge", "--den", {"--num", "1", "--den", "[]"}, "--den: no coefficients"},

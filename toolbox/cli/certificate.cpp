@@ -142,6 +142,67 @@ nlohmann::json r_certificate(const rational& T, const rational& omega, const std
   return j;
 }
 
+nlohmann::json stability_evidence(const stability::Loop& loop) {
+  if (loop.delay > 2000)  // refused before the polynomial of degree > delay is built
+    throw InputError("--certificate: the characteristic polynomial has degree above " + std::to_string(loop.delay) +
+                     ", beyond the checkers' limit of 2000");
+  const std::optional<QPoly> c = stability::exact_characteristic(loop);
+  if (!c)
+    throw InputError("--certificate: a certificate of stability with a device pole off s = 0 (the sampled device's "
+                     "e^{pT} are transcendental) is not implemented yet; devices with every pole at s = 0 (a mass "
+                     "1/(m*s^2)) have one");
+  if (c->degree() > 2000)
+    throw InputError("--certificate: the characteristic polynomial has degree " + std::to_string(c->degree()) +
+                     ", beyond the checkers' limit of 2000");
+  nlohmann::json coeffs = nlohmann::json::array();
+  for (const rational& x : c->coeffs()) coeffs.push_back(x.str());
+  return {{"charpoly", coeffs}};
+}
+
+nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
+                                     const stability::StabilityResult& r, const nlohmann::json& evidence) {
+  if (!r.verdict.decided()) throw InputError("--certificate: the verdict is undecided: there is no claim to certify");
+  nlohmann::json j = header("stability");
+  nlohmann::json m;
+  m["plant"] = text.plant;
+  m["H"] = text.H;
+  if (!text.op.empty()) m["operator"] = text.op;
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(text.sets)) sets[name] = value.str();
+  m["set"] = sets;
+  m["T"] = loop.T.str();
+  m["delay"] = text.delay;
+  j["model"] = m;
+  j["claim"] = {{"quantity", "Schur stability of the sampled loop: device P(s) behind a zero-order hold, force = -z^-n H(z) x(kT)"},
+                {"stable", r.verdict.holds()},
+                {"status", to_string(r.verdict.status)}};
+  j["evidence"] = evidence;
+  return j;
+}
+
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  // a pole on the circle where the branches stay bounded (z = -1 with Im H cot(theta/2) finite) is
+  // still evaluated by the producer, as a limit; the checkers refuse every pole on the circle
+  if (a.assumptions.pole_on_unit_circle || !a.wedge.evaluated() || !a.tsypkin.evaluated())
+    throw InputError("--certificate: H has a pole on the unit circle (the criteria are then limits, or not evaluated): "
+                     "no certificate");
+  nlohmann::json j = header("wedge");
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
+  j["claim"] = {{"quantity", "Tsai & Colgate (paper 002): wedge criterion (25), Tsypkin's condition (21), the assumptions of Sec. 2"},
+                {"status", "exact"},
+                {"wedge", a.wedge.verdict.holds()},
+                {"tsypkin", a.tsypkin.verdict.holds()},
+                {"h_stable", a.assumptions.h_stable},
+                {"closed_loop_stable", a.assumptions.closed_loop_stable},
+                {"dc_gain_nonnegative", a.assumptions.dc_gain_nonnegative}};
+  j["evidence"] = nlohmann::json::object();
+  return j;
+}
+
 void write_certificate(const std::string& file, const nlohmann::json& certificate) {
   std::ofstream f(file);
   if (!f) throw InputError("--certificate: cannot write '" + file + "'");

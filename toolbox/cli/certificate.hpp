@@ -1,4 +1,4 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound` and `r` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `r`, `stability` and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
@@ -11,6 +11,8 @@
 
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/contact/wedge.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
 
@@ -26,6 +28,29 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit
 /// in its last place).
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits);
+
+/// The inputs of `stability --plant --H [--operator] --T [--delay] [--set]`, as written.
+struct StabilityText {
+  std::string plant, H, op;
+  int delay = 0;
+  std::vector<std::string> sets;
+};
+
+/// The evidence of a `stability` certificate of `loop` (one DOF, no --max): the exact
+/// characteristic polynomial. InputError (exit 2) for what has no certificate yet: a device with a
+/// pole off s = 0 (transcendental e^{pT}), a polynomial above the checkers' degree limit (2000).
+nlohmann::json stability_evidence(const stability::Loop& loop);
+
+/// The certificate of the verdict `r` on the loop (check/stability_check.hpp): the model as
+/// written, the claim stable / NOT stable with r's status, the evidence of stability_evidence.
+/// r must be decided.
+nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
+                                     const stability::StabilityResult& r, const nlohmann::json& evidence);
+
+/// The certificate of `wedge` (check/wedge_check.hpp): H as written by --H, the exact verdicts of
+/// (25), (21) and the three assumptions. InputError (exit 2) when H is not given by --H or has a
+/// pole on the unit circle (the criteria are then limits, or not evaluated; the checkers refuse it).
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);

@@ -30,6 +30,7 @@
 #include <sstream>
 #include <memory>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "hapstab/conservatism/theorem5_max.hpp"
@@ -52,7 +53,7 @@ namespace {
 using namespace hapstab;
 
 struct StabilityOpts {
-  std::string plant, H, T, op, max_name, scene;
+  std::string plant, H, T, op, max_name, scene, certificate;
   std::vector<std::string> sets;
   int delay = 0, digits = 20;
   bool json = false, conservatism = false, quiet = false;
@@ -93,8 +94,12 @@ stability::Loop make_loop(const StabilityOpts& o) {
 using cli::enclosure_json;  // every printed enclosure rounds outward (cli/command.hpp)
 
 int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
+  // the certificate's evidence first: what has none is refused (exit 2) before any verdict is printed
+  const nlohmann::json evidence = o.certificate.empty() ? nlohmann::json() : cli::stability_evidence(loop);
   const stability::StabilityResult r = stability::decide(loop);
   const bool undecided = !r.verdict.decided();
+  if (!o.certificate.empty() && !undecided)
+    cli::write_certificate(o.certificate, cli::stability_certificate({o.plant, o.H, o.op, o.delay, o.sets}, loop, r, evidence));
   nlohmann::json j;
   j["stable"] = undecided ? nlohmann::json(nullptr) : nlohmann::json(r.verdict.holds());
   j["status"] = undecided ? "undecided" : to_string(r.verdict.status);
@@ -114,6 +119,7 @@ int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
                 << j["spectral_radius"][1].get<std::string>() << "]\n";
     if (r.path == "long_delay") std::cout << "  path: " << r.plan << "\n";
   }
+  if (undecided && !o.certificate.empty()) std::cerr << "--certificate: undecided, so no certificate was written\n";
   if (undecided) return cli::exit_numerical;
   return r.verdict.holds() ? cli::exit_ok : cli::exit_property_fails;
 }
@@ -448,7 +454,13 @@ const cli::Register reg(
                     "concludes (the scene's [coupling]) and the ratio exact / Theorem 5");
        app.add_flag("--json", o->json, "JSON output");
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
+       app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
+                      "FILE` (one-DOF --plant/--H loop, device poles at s = 0; docs/certificates.md)");
        return [o]() -> int {
+         if (!o->certificate.empty() && (!o->scene.empty() || !o->max_name.empty()))
+           throw InputError(std::string("--certificate: a certificate of stability ") +
+                            (o->max_name.empty() ? "--scene" : "--max") +
+                            " is not implemented yet (one-DOF --plant/--H verdicts have one)");
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/tf_options.hpp"
 #include "hapstab/contact/wedge.hpp"
@@ -23,6 +24,7 @@ struct Opts {
   TfOptions tf;
   int digits = 20;
   bool json = false;
+  std::string certificate;
 };
 
 // Only the digits both ends of the enclosure share (numeric/decimal.hpp, shared_decimal); when the
@@ -59,7 +61,10 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
 int run(const Opts& o) {
   if (o.digits < 1 || o.digits > 60) throw InputError("--digits must be in [1, 60], got " + std::to_string(o.digits));
   const TransferFunction H = parse_tf_options(o.tf, tf_rules);
+  if (!o.certificate.empty() && o.tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   contact::ContactAnalysis a = contact::analyze_contact(H, o.digits);
+  if (!o.certificate.empty()) write_certificate(o.certificate, wedge_certificate(o.tf, a));
   const bool applies = a.applies();
   const auto& w = a.wedge;
   const auto& ts = a.tsypkin;
@@ -126,6 +131,9 @@ const Register reg({"wedge",
                       add_tf_options(app, o->tf, tf_rules, "H(z) as an exact expression, e.g. \"0.5*(z+1)/(z^2-0.5*z)\"");
                       app.add_option("--digits", o->digits, "Significant digits of the margins (1..60, default 20)");
                       app.add_flag("--json", o->json, "JSON output");
+                      app.add_option("--certificate", o->certificate,
+                                     "write the exact verdicts' certificate (JSON) to FILE, for `hapstab check FILE` "
+                                     "(docs/certificates.md)");
                       return [o]() { return run(*o); };
                     }});
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "hapstab/check/nonnegative.hpp"
+#include "hapstab/check/on_circle.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -16,26 +17,10 @@ namespace {
 
 using P = Polynomial<rational>;
 
-// a(c) + j s b(c), s^2 = 1 - c^2: a polynomial in z = c + js on the unit circle.
-struct OnCircle {
-  P a, b;
-};
-const P one_minus_c2{rational(1), rational(0), rational(-1)};
-
-OnCircle mul(const OnCircle& x, const OnCircle& y) {
-  return {x.a * y.a - one_minus_c2 * x.b * y.b, x.a * y.b + x.b * y.a};
-}
-
-// p(z) at z = c + js, by Horner.
-OnCircle at_circle(const P& p) {
-  const OnCircle z{P{rational(0), rational(1)}, P(rational(1))};
-  OnCircle r{P(), P()};
-  for (int k = p.degree(); k >= 0; --k) {
-    r = mul(r, z);
-    r.a += P(p.coeff(k));
-  }
-  return r;
-}
+using circle::OnCircle;
+using circle::mul;
+using circle::at_circle;
+const P one_minus_c2 = circle::one_minus_c2();
 
 OnCircle power(OnCircle x, long n) {
   OnCircle r{P(rational(1)), P()};

@@ -9,6 +9,8 @@
 
 #include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/r_check.hpp"
+#include "hapstab/check/stability_check.hpp"
+#include "hapstab/check/wedge_check.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -70,7 +72,9 @@ Verdict check_certificate(const nlohmann::json& c) {
   const std::string kind = c.at("kind").get<std::string>();
   if (kind == "bound") return check_bound(c);
   if (kind == "r") return check_r(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, r)");
+  if (kind == "stability") return check_stability(c);
+  if (kind == "wedge") return check_wedge(c);
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, r, stability, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

@@ -4,6 +4,8 @@
 // parser); it never calls the code that produced the claim. One small checker per kind:
 //   bound   b* of paper 001 (45)/(54), integer delay      check/bound_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
+//   stability  the one-DOF sampled loop, Schur-Cohn       check/stability_check.hpp
+//   wedge   paper 002 (25), (21) and its assumptions      check/wedge_check.hpp
 // Outcomes: Verdict{verified, what was shown} or Verdict{refuted, what failed}; a certificate that
 // is not well formed (a missing or malformed field, an unknown kind) is an InputError naming the
 // field -- `hapstab check` exits 0, 1, 2 for the three. docs/certificates.md has the format.

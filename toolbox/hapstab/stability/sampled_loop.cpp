@@ -435,6 +435,13 @@ StabilityResult decide_long(const Prepared& p, const Loop& loop, const Sampled<C
 
 }  // namespace
 
+std::optional<Polynomial<rational>> exact_characteristic(const Loop& loop) {
+  if (loop.H_gain) throw InputError("stability::exact_characteristic: H_gain is for max_gain");
+  const Prepared p = prepare(loop);
+  if (!p.exact) return std::nullopt;
+  return to_qp(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay).c0);
+}
+
 StabilityResult decide(const Loop& loop) {
   if (loop.H_gain) throw InputError("stability::decide: H_gain is for max_gain");
   const Prepared p = prepare(loop);

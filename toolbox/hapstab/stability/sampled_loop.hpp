@@ -72,6 +72,11 @@ struct StabilityResult {
 /// Schur stability of the loop with H = loop.H (loop.H_gain must be empty).
 StabilityResult decide(const Loop& loop);
 
+/// The exact characteristic polynomial c(z) = z^n L D_d + A N_d of the loop (H = loop.H; loop.H_gain
+/// must be empty) when the data are exact (every pole of the device at s = 0), else nullopt: the
+/// evidence of a `stability` certificate (cli/certificate.hpp). Built as decide() builds it.
+std::optional<Polynomial<rational>> exact_characteristic(const Loop& loop);
+
 struct MaxGain {
   Outcome outcome = Outcome::undecided;  ///< holds: a supremum (finite or infinite) was found;
                                          ///< fails: unstable for every small K > 0

@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), and its
+`stability` kind on loops whose characteristic polynomial and verdict
+are known by hand (the same cases as tests/check/test_check.cpp's StabilityCheck, which checks the
+C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), of 1/s^3 at T = 1
+(z^2 + 4 z + 1)/(6 (z - 1)^3) (tables of z-transforms); the verdicts by Jury's conditions.
+
+    python3 tests/check/test_independent_checker.py        (unittest; ctest check_independent_checker)
+
+Wedge by hand: H = K/z gives Re H = K cos(theta), Im H = -K sin(theta), so (25) is
+K cos + cot(theta/2) K sin + 1 = K (1 + 2 cos(theta)) + 1 (min 1 - K at theta = pi) and (21)
+K cos(theta) + 1 (min 1 - K): both hold iff K < 1; (1 + H)^-1 has its pole at -K.
+"""
+import copy
+import os
+import sys
+import unittest
+from fractions import Fraction
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "checks"))
+import hapstab_check as hc  # noqa: E402
+
+
+def cert(plant, H, delay, stable, charpoly, T="1/1000"):
+    return {"certificate": "hapstab", "version": 1, "kind": "stability",
+            "model": {"plant": plant, "H": H, "set": {"m": "1", "K": "1000", "B": "2"}, "T": T, "delay": delay},
+            "claim": {"status": "exact", "stable": stable}, "evidence": {"charpoly": charpoly}}
+
+
+WALL = ["-1/1000", "2001/2000", "-3997/2000", "1"]  # z (z-1)^2 + (T^2/2)(z+1)((K + B/T) z - B/T)
+
+
+class Stability(unittest.TestCase):
+    def test_schur_cohn_known_roots(self):
+        F = Fraction
+        self.assertTrue(hc.schur_cohn([F(-1, 2), F(1)])[0])
+        self.assertFalse(hc.schur_cohn([F(1), F(1)])[0])                # z = -1
+        self.assertTrue(hc.schur_cohn([F(1, 2), F(-1), F(1)])[0])        # (1 +- j)/2
+        self.assertFalse(hc.schur_cohn([F(1), F(-5, 2), F(1)])[0])       # 1/2 and 2
+        self.assertTrue(hc.schur_cohn([F(3)])[0])
+
+    def test_sampled_mass(self):
+        # N = 1, k = 2, T = 1: T^2 (z + 1)/2  ->  Nd ascending [1/2, 1/2]
+        self.assertEqual(hc.sampled_device([Fraction(1)], 2, Fraction(1)), [Fraction(1, 2), Fraction(1, 2)])
+        self.assertEqual(hc.sampled_device([Fraction(1)], 3, Fraction(1)), [Fraction(1, 6), Fraction(4, 6), Fraction(1, 6)])
+
+    def test_mass_on_a_virtual_wall(self):
+        self.assertEqual(hc.check(cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, True, WALL))[0], 0)
+        self.assertEqual(hc.check(cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, True, ["2/1000", "-2001/1000", "3997/1000", "-2"]))[0], 0)
+        code, why = hc.check(cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, False, WALL))
+        self.assertEqual(code, 1)
+        self.assertIn("every Schur-Cohn step passes", why)
+        code, why = hc.check(cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 0, True, ["-1/1000", "2001/2000", "-3996/2000", "1"]))
+        self.assertEqual(code, 1)
+        self.assertIn("z^2", why)
+        self.assertEqual(hc.check(cert("1/(m*s^2)", "K + B*(z-1)/(T*z)", 1, True, WALL))[0], 1)
+
+    def test_spring_alone_and_operator_mass(self):
+        c = ["2001/2000", "-3999/2000", "1"]
+        self.assertEqual(hc.check(cert("1/(m*s^2)", "K", 0, False, c))[0], 0)
+        self.assertEqual(hc.check(cert("1/(m*s^2)", "K", 0, True, c))[0], 1)
+        op = cert("1/(m*s^2)", "K", 0, False, ["4001/4000", "-7999/4000", "1"])
+        op["model"]["operator"] = "m*s"
+        self.assertEqual(hc.check(op)[0], 0)
+
+    def test_triple_integrator(self):
+        self.assertEqual(hc.check(cert("1/s^3", "1", 0, False, ["-5/6", "22/6", "-17/6", "1"], T="1"))[0], 0)
+
+    def test_refuses_what_it_cannot_model(self):
+        for plant, H, field in (("1/(m*s^2 + s)", "K", "pole off s = 0"), ("1/m", "K", "not strictly proper"),
+                                ("1/(m*s^2)", "K*z^2", "not causal")):
+            code, why = hc.check(cert(plant, H, 0, True, WALL))
+            self.assertEqual(code, 2, why)
+            self.assertIn(field, why)
+        c = cert("1/(m*s^2)", "K", 0, True, WALL)
+        c2 = copy.deepcopy(c)
+        c2["model"]["frac_delay"] = "1/2000"
+        self.assertIn("model.frac_delay", hc.check(c2)[1])
+        c2 = copy.deepcopy(c)
+        c2["claim"]["stable"] = "yes"
+        self.assertIn("claim.stable", hc.check(c2)[1])
+
+
+def wedge_cert(H, K, claims):
+    keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
+    return {"certificate": "hapstab", "version": 1, "kind": "wedge",
+            "model": {"H": H, "set": {"K": K}, "T": "1"},
+            "claim": dict({"status": "exact"}, **dict(zip(keys, claims))), "evidence": {}}
+
+
+class Wedge(unittest.TestCase):
+    def test_one_sample_delay(self):
+        self.assertEqual(hc.check(wedge_cert("K/z", "1/2", (True, True, True, True, True)))[0], 0)
+        self.assertEqual(hc.check(wedge_cert("K/z", "1", (False, False, True, False, True)))[0], 0)   # = 0 at theta = pi
+        self.assertEqual(hc.check(wedge_cert("K/z", "2", (False, False, True, False, True)))[0], 0)
+        code, why = hc.check(wedge_cert("K/z", "1", (True, False, True, False, True)))
+        self.assertEqual(code, 1)
+        self.assertIn("claim.wedge", why)
+        # K = -1/2: (25) is |K| (1 + cos) + K cos + 1 = 3/2, (21) 1 - cos/2: both hold; H(1) < 0
+        self.assertEqual(hc.check(wedge_cert("K/z", "-1/2", (True, True, True, True, False)))[0], 0)
+
+    def test_constant(self):
+        self.assertEqual(hc.check(wedge_cert("K", "3", (True, True, True, True, True)))[0], 0)
+        self.assertEqual(hc.check(wedge_cert("K", "-1", (False, False, True, False, False)))[0], 0)
+
+    def test_max_positive(self):
+        F = Fraction
+        self.assertIsNotNone(hc.max_positive([F(0), F(1)], [F(0), F(-1)], F(-1), F(1)))  # |c| = 0 at c = 0
+        self.assertIsNone(hc.max_positive([F(1), F(1)], [F(1), F(-1)], F(-1), F(1)))      # 1 + |c|
+        self.assertIsNotNone(hc.max_positive([F(-1, 4), F(0), F(1)], [F(-1, 4), F(0), F(1)], F(-1), F(1)))
+
+    def test_refuses_a_pole_on_the_circle(self):
+        code, why = hc.check(wedge_cert("K/(z - 1)", "1", (True, True, True, True, True)))
+        self.assertEqual(code, 2)
+        self.assertIn("unit circle", why)
+
+
+if __name__ == "__main__":
+    unittest.main()

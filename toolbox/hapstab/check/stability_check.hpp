@@ -1,0 +1,35 @@
+// hapstab/check/stability_check.hpp -- the checker of a `stability` certificate: the Schur
+// stability of the one-DOF sampled-data loop of `hapstab stability --plant --H [--operator]
+// [--delay]` as written (issue 19's loop; paper 001's device, zero-order hold, wall z^-n H(z)):
+//   device  P_eff(s) = P/(1 + s Z_op P) = N(s)/s^k (every pole at s = 0: exact data only)
+//   sample  P_d(z) = (1 - z^-1) Z{P_eff(s)/s} = Nd(z)/(z - 1)^k
+//   loop    c(z) = z^n L(z) (z - 1)^k + A(z) Nd(z),   H = A/L reduced    (no other cancellation)
+// Claim: "stable" (every root of c in |z| < 1) or "NOT stable".
+//
+// Derivation of P_d (the checker's own; not the producer's Van Loan exponential): with
+// P_eff/s = sum_i b_i / s^(k-i+1), the step response sampled at t = lT is
+// y(l) = sum_i b_i (lT)^m / m!, m = k - i >= 1, and Z{l^m} = S_m(z) with S_0 = z/(z - 1),
+// S_m = -z dS_{m-1}/dz (differentiating sum_l l^(m-1) z^-l); so P_d = ((z - 1)/z) sum_i b_i
+// T^m/m! S_m(z), and Nd = P_d (z - 1)^k must be a polynomial (checked).
+//
+// Theorem (Schur 1917, Cohn 1922): a real polynomial p of degree d >= 1 has every root in |z| < 1
+// iff |p_0| < |p_d| and q(z) = (p_d p(z) - p_0 z^d p(1/z))/z, of degree d - 1, has too (a
+// constant has no roots). Decided exactly, in rationals, by check/schur_cohn.hpp.
+// Evidence: evidence.charpoly, c's coefficients (ascending, "p/q"): it must be a non-zero
+// multiple of the checker's own c -- a producer that built another loop is refuted there, before
+// any root test.
+// Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
+// pole at s = 0 (else the certificate is refused as beyond this checker: exit 2), z^-n H causal,
+// degree of c <= 2000.
+// Implements: paper 001 Fig. 1.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/certificate.hpp"
+
+namespace hapstab::check {
+
+Verdict check_stability(const nlohmann::json& certificate);
+
+}  // namespace hapstab::check
