@@ -314,20 +314,25 @@ def stability_args(m):
     return a
 
 
-def stability_produce(hapstab, m, cache, tmp):
-    """hapstab's certificate of model m (dict), or the exit code when it writes none."""
-    key = json.dumps(m, sort_keys=True)
+def produce(hapstab, args, key, name, cache, tmp):
+    """hapstab's certificate for the command `args` (cached under `key`), or the exit code when it
+    writes none."""
     if key not in cache:
-        path = os.path.join(tmp, "s-edit.json")
+        path = os.path.join(tmp, name)
         if os.path.exists(path):
             os.remove(path)
-        rc, _, _ = run(hapstab, stability_args(m) + ["--certificate", path])
+        rc, _, _ = run(hapstab, args + ["--certificate", path])
         if rc in (0, 1) and os.path.exists(path):
             with open(path) as f:
                 cache[key] = json.load(f)
         else:
             cache[key] = rc
     return cache[key]
+
+
+def stability_produce(hapstab, m, cache, tmp):
+    """hapstab's certificate of model m (dict), or the exit code when it writes none."""
+    return produce(hapstab, stability_args(m), json.dumps(m, sort_keys=True), "s-edit.json", cache, tmp)
 
 
 def proportional(a, b):
@@ -461,18 +466,7 @@ def wedge_args(m):
 
 def wedge_produce(hapstab, m, cache, tmp):
     """hapstab's wedge certificate of model m, or the exit code when it writes none."""
-    key = "wedge" + json.dumps(m, sort_keys=True)
-    if key not in cache:
-        path = os.path.join(tmp, "w-edit.json")
-        if os.path.exists(path):
-            os.remove(path)
-        rc, _, _ = run(hapstab, wedge_args(m) + ["--certificate", path])
-        if rc in (0, 1) and os.path.exists(path):
-            with open(path) as f:
-                cache[key] = json.load(f)
-        else:
-            cache[key] = rc
-    return cache[key]
+    return produce(hapstab, wedge_args(m), "wedge" + json.dumps(m, sort_keys=True), "w-edit.json", cache, tmp)
 
 
 WEDGE_CLAIMS = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")

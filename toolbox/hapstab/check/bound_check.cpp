@@ -59,22 +59,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   if (n < 0 || n > 100000) throw InputError("model.delay: " + std::to_string(n) + " is outside [0, 100000]");
   const rational eta = exact_field(model, "eta", "model");
   if (eta < 0) throw InputError("model.eta: must be >= 0, got " + eta.str());
-  ParseOptions po;
-  po.variable = 'z';
-  po.T = T;
-  if (model.contains("set")) {
-    const auto& sets = model.at("set");
-    if (!sets.is_object()) throw InputError("model.set: must be an object {NAME: \"p/q\"}");
-    for (auto it = sets.begin(); it != sets.end(); ++it)
-      po.parameters[it.key()] = detail::exact_string(it.value(), "model.set." + it.key());
-  }
-  TransferFunction H;
-  try {
-    H = parse_tf(text, po);
-  } catch (const InputError& e) {
-    throw InputError(std::string("model.H: ") + e.what());
-  }
-  if (!H.is_discrete()) throw InputError("model.H: expected a transfer function in z");
+  const TransferFunction H = detail::model_tf(model, text, T);
   // the checker expands z^-n: its polynomials have degree max(deg N, deg D + n) (twice that in c)
   const long degree = std::max<long>(H.num().degree(), H.den().degree() + n);
   if (degree > max_degree)

@@ -11,6 +11,7 @@
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -59,6 +60,25 @@ void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> k
     for (const char* k : known) ok = ok || it.key() == k;
     if (!ok) throw InputError(where + "." + it.key() + ": a field this checker does not know (it would not be checked)");
   }
+}
+
+TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T) {
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = T;
+  if (model.contains("set")) {
+    const auto& sets = model.at("set");
+    if (!sets.is_object()) throw InputError("model.set: must be an object {NAME: \"p/q\"}");
+    for (auto it = sets.begin(); it != sets.end(); ++it) po.parameters[it.key()] = exact_string(it.value(), "model.set." + it.key());
+  }
+  TransferFunction H;
+  try {
+    H = parse_tf(text, po);
+  } catch (const InputError& e) {
+    throw InputError(std::string("model.H: ") + e.what());
+  }
+  if (!H.is_discrete()) throw InputError("model.H: expected a transfer function in z");
+  return H;
 }
 
 }  // namespace detail

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/lti/tf.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::check {
@@ -43,6 +44,9 @@ const nlohmann::json& object_field(const nlohmann::json& obj, const std::string&
 /// InputError naming where.KEY when obj has a key outside `known`: a field a checker does not read
 /// (a fractional delay, say) would make it verify another model than the one written.
 void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> known, const std::string& where);
+/// The model's H(z): `text` parsed in z with sample period T and model.set's exact parameters
+/// ({NAME: "p/q"}); InputError naming model.set or model.H (also when H is not in z).
+TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T);
 }  // namespace detail
 
 }  // namespace hapstab::check

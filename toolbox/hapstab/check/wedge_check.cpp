@@ -23,21 +23,7 @@ TransferFunction parse_model(const nlohmann::json& model) {
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
   const rational T = detail::exact_field(model, "T", "model");
   if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  ParseOptions po;
-  po.variable = 'z';
-  po.T = T;
-  if (model.contains("set")) {
-    const auto& sets = model.at("set");
-    if (!sets.is_object()) throw InputError("model.set: must be an object {NAME: \"p/q\"}");
-    for (auto it = sets.begin(); it != sets.end(); ++it) po.parameters[it.key()] = detail::exact_string(it.value(), "model.set." + it.key());
-  }
-  TransferFunction H;
-  try {
-    H = parse_tf(model.at("H").get<std::string>(), po);
-  } catch (const InputError& e) {
-    throw InputError(std::string("model.H: ") + e.what());
-  }
-  if (!H.is_discrete()) throw InputError("model.H: expected a transfer function in z");
+  const TransferFunction H = detail::model_tf(model, model.at("H").get<std::string>(), T);
   if (H.num().degree() > H.den().degree()) throw InputError("model.H: not causal (deg num > deg den)");
   return H;
 }
