@@ -140,6 +140,28 @@ def _survivors(seen):
     return survivors
 
 
+def _clean_up(p, seen):
+    """Kills p and whatever of `seen` still runs: a failed test leaves no orphan behind."""
+    p.kill()
+    for pid, start in seen.items():
+        if _alive(pid, start):
+            os.kill(pid, signal.SIGKILL)
+
+
+def _killed_leaves_none(p, n, what, ready=lambda: True):
+    """Once `ready()` and p's n descendants run, SIGKILLs p and asserts none of them outlives it."""
+    seen = {}
+    try:
+        assert ready()
+        seen = _wait_for_processes(p.pid, n)
+        p.kill()
+        p.wait(timeout=60)
+        survivors = _survivors(seen)
+        assert survivors == [], f"{what}: {survivors}"
+    finally:
+        _clean_up(p, seen)
+
+
 MILLION_POINTS = ('{"command": "bound", "args": {"H": "K + B*(z-1)/(T*z)", "T": "1/1000", "delay": 1}, '
                   '"axes": {"K": {"from": "0", "to": "40000", "points": 1000000}, "B": {"values": ["5"]}}}')
 
@@ -151,18 +173,7 @@ def test_a_killed_command_line_sweep_takes_its_workers_with_it(tmp_path):
     cli = os.environ.get("HAPSTAB_CLI", "hapstab")
     p = subprocess.Popen([cli, "sweep", str(spec), "--out", str(tmp_path / "out"), "--jobs", "2", "--quiet"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
-    seen = {}
-    try:
-        seen = _wait_for_processes(p.pid, 2)
-        p.kill()
-        p.wait(timeout=60)
-        survivors = _survivors(seen)
-        assert survivors == [], f"workers still running after their sweep was killed: {survivors}"
-    finally:
-        p.kill()
-        for pid, start in seen.items():
-            if _alive(pid, start):
-                os.kill(pid, signal.SIGKILL)
+    _killed_leaves_none(p, 2, "workers still running after their sweep was killed")
 
 
 @pytest.mark.parametrize("to_group", [False, True])
@@ -188,10 +199,7 @@ def test_ctrl_c_during_a_sweep_stops_its_worker_processes(to_group):
         survivors = _survivors(seen)
         assert survivors == [], f"processes of the sweep still running after Ctrl-C: {survivors}"
     finally:
-        p.kill()
-        for pid, start in seen.items():  # a failed run leaves no orphan behind
-            if _alive(pid, start):
-                os.kill(pid, signal.SIGKILL)
+        _clean_up(p, seen)
 
 
 def test_a_killed_interpreter_takes_the_sweep_with_it():
@@ -200,16 +208,5 @@ def test_a_killed_interpreter_takes_the_sweep_with_it():
     code = f"import hapstab\nprint('started', flush=True)\nhapstab.sweep({MILLION_POINTS}, jobs=2)\n"
     p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
                          start_new_session=True)
-    seen = {}
-    try:
-        assert p.stdout.readline().strip() == "started"
-        seen = _wait_for_processes(p.pid, 3)
-        p.kill()
-        p.wait(timeout=60)
-        survivors = _survivors(seen)
-        assert survivors == [], f"processes of the sweep still running after the interpreter died: {survivors}"
-    finally:
-        p.kill()
-        for pid, start in seen.items():
-            if _alive(pid, start):
-                os.kill(pid, signal.SIGKILL)
+    _killed_leaves_none(p, 3, "processes of the sweep still running after the interpreter died",
+                        ready=lambda: p.stdout.readline().strip() == "started")
