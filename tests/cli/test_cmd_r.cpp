@@ -52,6 +52,12 @@ TEST(CmdR, FiftyDigitsMatchAnIndependentReference) {
   EXPECT_LE(abs(sre - rational(-1, 2000)), bound);
   EXPECT_LE(abs(sim - ire), bound + abs(ire) * parse_rational("1e-49"));
   EXPECT_GT(bound, 0);
+  // the shared vocabulary (docs/json.md): status one word, the parts in words beside; all 50 digits proven
+  EXPECT_EQ(j["status"], "certified");
+  EXPECT_EQ(j["status_detail"].get<std::string>().rfind("re exact (-T/2), im certified", 0), 0u) << j["status_detail"];
+  EXPECT_EQ(j["series_status"], "certified");
+  EXPECT_EQ(j["digits"], 50);
+  EXPECT_EQ(j["digits_certified"], 50);
 }
 
 TEST(CmdR, HumanOutputAndEquivalentSpellings) {

@@ -135,6 +135,7 @@ TEST(PrintedBounds, PassivityLevelExactOneThird) {
                                  {{"/enclosure", exactly(third)},
                                   {"/lower_bound", exactly(third)},
                                   {"/upper_bound", exactly(third)},
+                                  {"/certified_frequency/enclosure", exactly(third)},
                                   {"/certified_frequency/lower_bound", exactly(third)},
                                   {"/certified_frequency/upper_bound", exactly(third)},
                                   {"/lmi/lower_bound", exactly(*l.lower_bound)}});
@@ -158,6 +159,7 @@ TEST(PrintedBounds, PassivityLevelExactMimo) {
                                {{"/enclosure", exactly(v)},
                                 {"/lower_bound", exactly(v)},
                                 {"/upper_bound", exactly(v)},
+                                {"/certified_frequency/enclosure", exactly(v)},
                                 {"/certified_frequency/lower_bound", exactly(v)},
                                 {"/certified_frequency/upper_bound", exactly(v)},
                                 {"/lmi/lower_bound", exactly(v)}});  // the LMI's lower bound is at most the level
@@ -178,6 +180,7 @@ TEST(PrintedBounds, PassivityLevelCertified) {
   Refs refs{{"/enclosure", *c.enclosure},
             {"/lower_bound", *c.enclosure},
             {"/upper_bound", *c.enclosure},
+            {"/certified_frequency/enclosure", *c.enclosure},
             {"/certified_frequency/lower_bound", *c.enclosure},
             {"/certified_frequency/upper_bound", *c.enclosure}};
   if (l.lower_bound) refs["/lmi/lower_bound"] = exactly(*l.lower_bound);

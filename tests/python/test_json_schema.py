@@ -3,6 +3,7 @@ the checker every CLI call of these tests goes through (clitools.cli) refuses wh
 not say -- a renamed key, a float where an exact decimal belongs, a status outside the vocabulary
 -- and maps each command line to its schema."""
 import copy
+from fractions import Fraction
 
 import pytest
 
@@ -85,3 +86,122 @@ def test_passivity_level_writes_its_enclosure_under_the_common_name(args, status
         assert (lo, hi) == ("-inf", "-1.5")
     else:
         assert F(lo) <= F(j["exact"] or j["value"]) <= F(hi)
+
+
+def _schemas():
+    import glob
+    import json
+    import os
+    from clitools import _TOP
+    return {os.path.basename(p)[:-len(".schema.json")]: json.load(open(p, encoding="utf-8"))
+            for p in sorted(glob.glob(os.path.join(_TOP, "docs", "schema", "*.schema.json")))}
+
+
+def _properties(node, where=""):
+    """(where, key, schema) of every property of a schema, nested objects and array items included."""
+    if isinstance(node, dict):
+        for key, sub in node.get("properties", {}).items():
+            yield f"{where}/{key}", key, sub
+        for key, sub in node.items():
+            yield from _properties(sub, f"{where}/{key}" if key not in ("properties", "items", "oneOf") else where)
+    elif isinstance(node, list):
+        for sub in node:
+            yield from _properties(sub, where)
+
+
+def _refs(schema):
+    """The common definitions a property's schema refers to (through oneOf too)."""
+    found = {schema.get("$ref", "")} | {s.get("$ref", "") for s in schema.get("oneOf", [])}
+    return {r.split("/")[-1] for r in found if r.startswith("common.schema.json#/$defs/")}
+
+
+def test_the_same_things_go_by_the_same_names_in_every_schema():
+    # issue 49: a status is a word of the shared vocabulary wherever a key says status; a path, the
+    # digits asked for and the digits proven each have one definition (common.schema.json) that
+    # every command's schema refers to; no schema spells them its own way
+    shared = {"status": "status", "path": "path", "digits": "digits", "digits_certified": "digits_certified",
+              "status_detail": "status_detail"}
+    seen = set()
+    for name, schema in _schemas().items():
+        if name == "common":
+            continue
+        for where, key, sub in _properties(schema):
+            if sub.get("deprecated"):
+                continue
+            want = shared.get(key) or ("status" if key.endswith("_status") else
+                                       "digits_certified" if key.endswith("_digits_certified") else None)
+            if want == "digits_certified" and key != want:
+                continue  # a prefixed value's (wedge.margin_digits_certified): an integer, described as such
+            if want:
+                assert want in _refs(sub), f"{name}.schema.json {where}: not the common {want} ({sub})"
+                seen.add((key, name))
+            assert not (key.endswith("_digits") or key == "max_digits"), \
+                f"{name}.schema.json {where}: digits go by digits / digits_certified (docs/json.md)"
+    for key, commands in {"digits_certified": ("r", "bound-max", "stability-max"), "status_detail": ("r",),
+                          "path": ("bound", "bound-max", "stability", "stability-max", "stability-scene",
+                                   "multidof-analyze", "multidof-design")}.items():
+        for c in commands:
+            assert (key, c) in seen, (key, c)
+
+
+def test_every_old_name_is_marked_deprecated_and_listed_in_the_docs_table():
+    import os
+    import re
+    from clitools import _TOP
+    text = open(os.path.join(_TOP, "docs", "json.md"), encoding="utf-8").read()
+    table = re.search(r"## Old names kept for one release\n(.*?)\n## ", text, re.S).group(1)
+    listed = set(re.findall(r"`(?:[a-z_]+\.)?([a-z_]+)`", "\n".join(
+        row.split("|")[2] for row in table.splitlines() if row.startswith("| `"))))
+    deprecated = {key for name, schema in _schemas().items() for _, key, sub in _properties(schema)
+                  if sub.get("deprecated")}
+    assert deprecated == listed, (deprecated, listed)
+    assert "Names that still differ" not in text
+
+
+def test_r_writes_its_status_as_a_word_and_the_sentence_beside_it():
+    _, j = cli("r", "--T", "1/1000", "--omega", "100", "--digits", "25")
+    assert (j["status"], j["series_status"]) == ("certified", "certified")
+    assert j["status_detail"].startswith("re exact (-T/2), im certified")
+    assert "series_error_bound" in j["series_status_detail"]
+    assert (j["digits"], j["digits_certified"]) == (25, 25)
+
+
+@pytest.mark.parametrize("args, path", [
+    (["bound", "--H", WALL, "--T", "1/1000", "--set", "B=2", "--damping", "5", "--max", "K", "--digits", "40"], "exact"),
+    (["bound", "--H", WALL, "--T", "1/1000", "--set", "B=2", "--damping", "5", "--max", "K", "--delay", "300"],
+     "long_delay"),
+    (["stability", "--plant", "1/(m*s^2 + b*s)", "--H", WALL, "--T", "1/1000", "--delay", "1", "--set", "m=1",
+      "--set", "b=5", "--set", "B=2", "--max", "K", "--digits", "25"], "polynomial"),
+])
+def test_max_writes_the_digits_asked_and_the_digits_proven_under_the_shared_names(args, path):
+    # issue 49: digits (asked) and digits_certified (of the printed max, proven); max_digits is the old
+    # name of digits_certified, kept for one release (deprecated in the schema)
+    from clitools import F
+    _, j = cli(*args)
+    asked = int(args[args.index("--digits") + 1]) if "--digits" in args else 30
+    assert j["digits"] == asked and j["path"] == path
+    assert j["digits_certified"] == j["max_digits"] and 0 < j["digits_certified"] <= asked
+    # what digits_certified promises: max and both ends of the proven enclosure agree to that many digits
+    lo, hi, m = F(j["enclosure"][0]), F(j["enclosure"][1]), F(j["max"])
+    ulp = Fraction(10) ** (len(str(int(m))) - j["digits_certified"])  # a unit in the last certified place (m >= 1)
+    assert m >= 1 and hi - lo <= ulp and abs(m - lo) <= ulp and abs(m - hi) <= ulp, (j["enclosure"], j["max"])
+
+
+def test_stability_scene_writes_the_path_that_decided():
+    from clitools import _TOP
+    import os
+    for scene, path in (("000_two_dof_loop.toml", "closed_loop_matrix"), ("001_tightness_below.toml", "polynomial")):
+        _, j = cli("stability", "--scene", os.path.join(_TOP, "examples", scene))
+        assert j["path"] == path, (scene, j["path"], j["method"])
+
+
+def test_wedge_and_passivity_level_keep_their_old_names_beside_the_shared_ones():
+    from clitools import F
+    _, w = cli("wedge", "--H", "0.5*(z+1)/(z^2-0.5*z)", "--digits", "12")
+    for part in ("wedge", "tsypkin"):
+        for v in ("margin", "max_gain"):
+            assert w[part][f"{v}_digits_certified"] == w[part][f"{v}_digits"] == 12
+    _, p = cli("passivity-level", "--H", "1 + 1/(z-0.5)", "--T", "0.01", "--kind", "osp")
+    c = p["certified_frequency"]
+    assert c["enclosure"] == [c["lower_bound"], c["upper_bound"]]
+    assert F(c["enclosure"][0]) <= F(c["exact"]) <= F(c["enclosure"][1])

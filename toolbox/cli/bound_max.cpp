@@ -34,7 +34,8 @@ nlohmann::json bound_max_json(const BoundMax& r, int digits) {
   j["name"] = r.problem.name;
   j["max"] = m.decimal;
   const bool finite = !m.infinite && m.enclosure.has_value();
-  j["max_digits"] = finite ? nlohmann::json(m.digits) : nlohmann::json(nullptr);
+  j["digits_certified"] = finite ? nlohmann::json(m.digits) : nlohmann::json(nullptr);
+  j["max_digits"] = j["digits_certified"];  // its old name, deprecated: kept for one release (docs/json.md)
   j["enclosure"] = finite ? outward(*m.enclosure, digits + 3) : nlohmann::json(nullptr);
   j["status"] = to_string(m.status);
   if (m.status == Status::exact && finite) j["exact"] = m.value.str();
@@ -52,6 +53,7 @@ nlohmann::json bound_max_json(const BoundMax& r, int digits) {
     j["closed_form_agrees"] = passivity::agrees(*cf, m);
   }
   j["method"] = m.method;
+  j["path"] = to_string(m.path);
   j["note"] = m.note;
   j["digits"] = digits;
   if (r.check)

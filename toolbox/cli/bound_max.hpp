@@ -3,11 +3,12 @@
 // passivity/max_gain.hpp: K_max, the closed form of Secs. VI-VII that applies and, with --explain,
 // b* itself at the ends of the answer's enclosure, b* = b there), printed as text or JSON.
 // cmd_bound.cpp parses the options and calls these.
-// JSON keys: name, max ("inf"; "0" when not passive at NAME = 0), max_digits, enclosure [lo, hi],
+// JSON keys: name, max ("inf"; "0" when not passive at NAME = 0), digits_certified (max_digits:
+// its deprecated old name), enclosure [lo, hi],
 // status, exact (p/q when rational), damping, b_at_zero {bound, enclosure, status}, omega [lo, hi]
 // (where b* = b at the answer) or null, where, closed_form (name or null), closed_form_equation,
-// closed_form_formula, closed_form_value, closed_form_tight, closed_form_agrees, method, note,
-// digits; check {holds, bound_at_lo, bound_at_hi} with --explain.
+// closed_form_formula, closed_form_value, closed_form_tight, closed_form_agrees, method, path,
+// note, digits; check {holds, bound_at_lo, bound_at_hi} with --explain.
 #pragma once
 
 #include <nlohmann/json.hpp>

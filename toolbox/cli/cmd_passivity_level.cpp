@@ -157,10 +157,14 @@ void report_json(const Opts& o, const Levels& v) {
                    {"note", note}};
   // the enclosure under the name every command gives it (docs/json.md): [lower_bound, upper_bound],
   // a missing end unbounded; lower_bound/upper_bound stay for one release, marked deprecated
-  const auto end = [&](const char* key, const char* open) { return j[key].is_null() ? nlohmann::json(open) : j[key]; };
-  j["enclosure"] = j["lower_bound"].is_null() && j["upper_bound"].is_null()
-                       ? nlohmann::json(nullptr)
-                       : nlohmann::json::array({end("lower_bound", "-inf"), end("upper_bound", "inf")});
+  const auto enclose = [](nlohmann::json& o) {
+    const auto end = [&](const char* key, const char* open) { return o[key].is_null() ? nlohmann::json(open) : o[key]; };
+    o["enclosure"] = o["lower_bound"].is_null() && o["upper_bound"].is_null()
+                         ? nlohmann::json(nullptr)
+                         : nlohmann::json::array({end("lower_bound", "-inf"), end("upper_bound", "inf")});
+  };
+  enclose(j);
+  enclose(j["certified_frequency"]);
   print_json(j);
 }
 

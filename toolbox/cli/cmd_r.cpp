@@ -41,16 +41,20 @@ int run(const Opts& o) {
     j["T"] = T.str();
     j["omega"] = w.str();
     j["digits"] = o.digits;
+    j["digits_certified"] = o.digits;  // re and im correctly rounded: every printed digit is proven
     j["re"] = r.re;
     j["im"] = r.im;
-    j["status"] = "re exact (-T/2), im certified: every printed digit decided by an MPFI enclosure";
+    // status from the shared vocabulary (docs/json.md): the weaker part's, im certified; the parts in words beside
+    j["status"] = "certified";
+    j["status_detail"] = "re exact (-T/2), im certified: every printed digit decided by an MPFI enclosure";
     j["method"] = "closed form (44): T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2)";
     j["series_re"] = r.series_re;
     j["series_im"] = r.series_im;
     j["series_terms"] = r.series_terms;
     if (r.series_error_bound) j["series_error_bound"] = *r.series_error_bound;
     else j["series_error_bound"] = nullptr;
-    j["series_status"] =
+    j["series_status"] = "certified";
+    j["series_status_detail"] =
         "series (34) truncated at |n| <= N: digits certified; series_error_bound is a rigorous upper bound "
         "of |r - r_N| (integral test), null when N <= |wT|/(2 pi)";
     print_json(j);
@@ -81,8 +85,8 @@ const Register reg({"r",
                       app.add_option("--digits", o->digits, "Significant digits, 1..1000 (default 20)");
                       app.add_option("--certificate", o->certificate,
                                      "Write the certificate of Re r, Im r (JSON) to FILE, for `hapstab check FILE`");
-                      app.add_flag("--json", o->json, "Print JSON (keys re, im, series_re, series_im, "
-                                                      "series_terms, series_error_bound)");
+                      app.add_flag("--json", o->json, "Print JSON (keys re, im, status, series_re, series_im, "
+                                                      "series_terms, series_error_bound; docs/json.md)");
                       return [o]() { return run(*o); };
                     }});
 

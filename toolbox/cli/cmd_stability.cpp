@@ -138,7 +138,8 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
     j["max"] = d.text;
     shared = d.digits;
   }
-  j["max_digits"] = found && !m.infinite ? nlohmann::json(shared) : nlohmann::json(nullptr);
+  j["digits_certified"] = found && !m.infinite ? nlohmann::json(shared) : nlohmann::json(nullptr);
+  j["max_digits"] = j["digits_certified"];  // its old name, deprecated: kept for one release (docs/json.md)
   j["enclosure"] = found && !m.infinite ? enclosure_json(m.enclosure, o.digits + 3) : nlohmann::json(nullptr);
   if (m.exact) j["exact"] = m.exact->str();
   if (found && !m.infinite) {
@@ -164,7 +165,7 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   const nlohmann::json j = max_json(m, o, loop.T);
   if (o.json) cli::print_json(j);
   else {
-    const int shared = j["max_digits"].is_null() ? o.digits : j["max_digits"].get<int>();
+    const int shared = j["digits_certified"].is_null() ? o.digits : j["digits_certified"].get<int>();
     // "max" is null when nothing was found (undecided): printed as such, never read as a string
     const std::string shown = j["max"].is_null() ? std::string("undecided")
                               : shared > 0       ? j["max"].get<std::string>()
@@ -207,6 +208,7 @@ int run_scene(const StabilityOpts& o) {
   nlohmann::json j{{"stable", v.stable ? nlohmann::json(*v.stable) : nlohmann::json(nullptr)},
                    {"status", v.stable ? to_string(v.status) : "undecided"},
                    {"method", v.method},
+                   {"path", v.path.empty() ? nlohmann::json(nullptr) : nlohmann::json(v.path)},
                    {"evidence", v.why},
                    {"dofs", sc.loop.dofs()},
                    {"states", v.states},
@@ -252,7 +254,8 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   }
   const SharedDecimal d = shared_decimal(m.sup.lo, m.sup.hi, o.digits);
   j["max"] = d.text;
-  j["max_digits"] = d.digits;
+  j["digits_certified"] = d.digits;
+  j["max_digits"] = d.digits;  // its old name, deprecated: kept for one release (docs/json.md)
   j["enclosure"] = enclosure_json(m.crossing, o.digits + 3);
   j["sup_enclosure"] = enclosure_json(m.sup, 17);
   j["stable_on"] = stable_interval_json(m);
@@ -353,7 +356,8 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
   } else {
     const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
-      j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)}, {"path", "closed_loop_matrix"}, {"note", m.note}};
+      j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
+           {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
       text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";
       rc = cli::exit_property_fails;
     } else {
@@ -369,7 +373,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
         exact = m.sup;
         exact_is_supremum = true;
         std::ostringstream t;
-        t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["max_digits"].get<int>()
+        t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["digits_certified"].get<int>()
           << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
           << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
           << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"

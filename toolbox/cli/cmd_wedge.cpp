@@ -46,14 +46,17 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
   if (!c.evaluated()) return j;
   j["holds"] = c.verdict.holds();
   j["margin"] = shared(c.margin, digits).text;
-  j["margin_digits"] = shared(c.margin, digits).digits;
+  // the shared names with the value's prefix (docs/json.md): margin_digits_certified as digits_certified
+  j["margin_digits_certified"] = shared(c.margin, digits).digits;
+  j["margin_digits"] = j["margin_digits_certified"];  // its old name, deprecated: kept for one release
   j["margin_enclosure"] = enclosure_json(*c.margin.enclosure, digits + 5);  // outward (cli/command.hpp)
   if (c.margin.status == Status::exact && c.margin.enclosure->lo == c.margin.enclosure->hi)
     j["margin_exact"] = exact_json(c.margin.enclosure->lo);
   j["margin_status"] = to_string(c.margin.status);
   j["theta_at_min"] = c.theta_at_min;
   j["max_gain"] = c.gain_infinite ? std::string("inf") : shared(c.max_gain, digits).text;
-  j["max_gain_digits"] = c.gain_infinite ? digits : shared(c.max_gain, digits).digits;
+  j["max_gain_digits_certified"] = c.gain_infinite ? digits : shared(c.max_gain, digits).digits;
+  j["max_gain_digits"] = j["max_gain_digits_certified"];  // its old name, deprecated: kept for one release
   j["max_gain_status"] = c.gain_infinite ? "exact" : to_string(c.max_gain.status);
   return j;
 }

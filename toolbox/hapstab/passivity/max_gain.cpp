@@ -221,6 +221,7 @@ MaxGain max_gain(const GainProblem& p, int digits) {
   // psi has the degree of the delayed objective: where b* itself takes the long-delay path (a delay
   // of hundreds of samples), psi's exact maximisation would not end in minutes -- bracket instead
   if (plan_bound(at_gain(p, 1)).path == BoundPath::long_delay) {
+    m.path = BoundPath::long_delay;
     bracket(p, q0, q1, digits, m);
     set_decimal(m, digits);
     m.note = "a long delay: " + p.name + "_max bracketed by certified b* on the long-delay path" +

@@ -55,6 +55,7 @@ struct MaxGain : Certified<rational> {
   std::string where;                            ///< "w = 0", "w = pi/T", "interior", ...
   std::string decimal;                          ///< the digits both ends of `enclosure` share ("inf", "0")
   int digits = 0;                               ///< how many significant digits `decimal` has
+  BoundPath path = BoundPath::exact;            ///< exact: psi maximised exactly; long_delay: bracketed by long-delay b*
 };
 
 /// K_max to `digits` significant digits (10..280). InputError for b <= 0, H1 = 0, an unstable or

@@ -42,6 +42,7 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
       out.stable = false;
       out.status = Status::exact;
       out.method = "exact Schur test (one DOF)";
+      out.path = "polynomial";
       out.why = "the controller E/(1 + E V) cancels a mode outside the open unit disk (Schur-Cohn on the exact "
                 "cancelled factor of degree " + std::to_string(cancelled.degree()) + "): NOT stable as written (exact)";
       return out;
@@ -57,6 +58,7 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
   }
   if (!r.verdict.decided()) return std::nullopt;
   out.method = "exact Schur test (one DOF; the loop of `hapstab stability`)";
+  out.path = r.path;
   out.stable = r.verdict.holds();
   out.status = r.verdict.status;
   std::ostringstream o;
@@ -90,6 +92,7 @@ std::optional<LoopVerdict> one_dof_test(const sim::LoopSpec& L, LoopVerdict out)
 LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out, const std::string& reduced) {
   const sim::SampledClosedLoop cl = sim::sampled_closed_loop(L);
   out.states = static_cast<long>(cl.M.rows());
+  out.path = "closed_loop_matrix";
   if (cl.removed_undecided) {
     out.method = "closed-loop matrix, exact Kalman splits of the plant";
     out.why = "undecided: " + cl.removed;
@@ -181,6 +184,7 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
     out.stable = false;
     out.status = Status::exact;
     out.method = "hidden mode";
+    out.path = "hidden_modes";
     out.why = "NOT stable [exact]: " + out.hidden.summary() +
               ". A mode no input reaches or no output shows is an eigenvalue of the loop whatever the rest does";
     return out;

@@ -38,6 +38,7 @@ struct LoopVerdict {
   std::optional<bool> stable;  ///< nullopt: not decided (why says why, with the margin)
   Status status = Status::failed;  ///< exact or certified when decided
   std::string method;          ///< "hidden mode", "exact Schur test (one DOF)", "closed-loop matrix: ..."
+  std::string path;            ///< the path that decided: hidden_modes, polynomial, long_delay, closed_loop_matrix; "" when none ran
   std::string why;             ///< what was proven, or why nothing was
   sim::LoopHiddenModes hidden; ///< every block's hidden modes (stable ones are not repeated in why)
   long states = 0;             ///< order of the closed loop (the matrix method), 0 otherwise
