@@ -7,10 +7,10 @@
 
 #include <thread>
 
-#include "cli/command.hpp"
+#include "cli/cli_in_process.hpp"
 #include "hapstab/numeric/error.hpp"
 
-using hapstab::cli::run_in_process;
+using hapstab_test::run_in_process;  // recorded for cli_json_schema
 
 TEST(InProcess, ReturnsTheJsonTheCommandPrints) {
   const auto run = run_in_process({"bound", "--H", "K + B*(z-1)/(T*z)", "--T", "1/1000", "--set", "K=1000",

@@ -14,8 +14,7 @@
 #include <map>
 #include <sstream>
 
-#include "cli/cli_run.hpp"
-#include "cli/command.hpp"
+#include "cli/cli_in_process.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -28,7 +27,7 @@
 #include "hapstab/stability/sampled_loop.hpp"
 
 using namespace hapstab;
-using hapstab::cli::run_in_process;
+using hapstab_test::run_in_process;  // recorded for cli_json_schema
 
 namespace {
 

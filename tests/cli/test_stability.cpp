@@ -6,13 +6,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli/cli_run.hpp"
-#include "cli/command.hpp"
+#include "cli/cli_in_process.hpp"
 #include "test_files.hpp"
 
 namespace {
 
-using hapstab::cli::run_in_process;
+using hapstab_test::run_in_process;  // recorded for cli_json_schema
 
 const std::vector<std::string> kDevice{"--plant", "1/(m*s^2 + b*s)", "--set", "m=1", "--set", "b=1",
                                        "--H",     "K + B*(z-1)/(T*z)", "--T", "1/1000", "--set", "B=2"};

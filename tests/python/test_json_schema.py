@@ -205,3 +205,22 @@ def test_wedge_and_passivity_level_keep_their_old_names_beside_the_shared_ones()
     c = p["certified_frequency"]
     assert c["enclosure"] == [c["lower_bound"], c["upper_bound"]]
     assert F(c["enclosure"][0]) <= F(c["exact"]) <= F(c["enclosure"][1])
+
+
+def test_the_cli_tests_records_are_validated_and_an_invalid_one_fails(tmp_path, capsys):
+    # ctest cli_json_schema: the --json runs the C++ CLI tests record (tests/cli/cli_run.hpp), read
+    # back by check-json-schema --dumped: shell words or an argv, stdout text or an in-process document
+    import json
+    args = ["bound", "--H", WALL, "--T", "1/1000", "--set", "K=1000", "--set", "B=5"]
+    _, good = cli(*args)
+    assert _checker.check_dumped(str(tmp_path)) == 1  # nothing recorded: the tests did not run with the variable
+    (tmp_path / "1.json").write_text(json.dumps({"test": "T.good", "command": f"bound --H '{WALL}' --T 1/1000 --json",
+                                                 "exit": 0, "stdout": json.dumps(good, indent=2)}))
+    (tmp_path / "2.json").write_text(json.dumps({"test": "T.error", "command": "bound --H 1/(z-2 --json", "exit": 2,
+                                                 "stdout": "hapstab: error: --H: ..."}))
+    assert _checker.check_dumped(str(tmp_path)) == 0
+    assert "2 --json runs recorded" in capsys.readouterr().out
+    (tmp_path / "4.json").write_text(json.dumps({"test": "T.bad", "argv": args + ["--json"], "exit": 0,
+                                                 "json": dict(good, status="proven")}))
+    assert _checker.check_dumped(str(tmp_path)) == 1
+    assert "T.bad: `hapstab bound" in capsys.readouterr().out
