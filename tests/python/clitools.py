@@ -1,6 +1,6 @@
-"""What the pytest files share: the command line beside the module (`hapstab ... --json`, every
-output validated against its published JSON Schema, docs/schema/) and the exact reading of its
-decimals."""
+"""What the pytest files (and run_notebook.py) share: the command line beside the module
+(`hapstab ... --json`, every output validated against its published JSON Schema, docs/schema/),
+the exact reading of its decimals, and the code blocks the pages show."""
 import importlib.machinery
 import importlib.util
 import json
@@ -34,6 +34,16 @@ def cli(*args, codes=(0, 1)):
     problems = _checker.validate([str(a) for a in args], data)
     assert not problems, "\n".join(problems)
     return p.returncode, data
+
+
+def block(page, section, language):
+    """The first ```LANGUAGE block of PAGE (relative to the top of the tree) under its heading
+    `## SECTION` (None: anywhere on the page), as the page shows it."""
+    with open(os.path.join(_TOP, page), encoding="utf-8") as f:
+        text = f.read()
+    if section is not None:
+        text = text.split(f"\n## {section}\n", 1)[1].split("\n## ", 1)[0]
+    return text.split(f"```{language}\n", 1)[1].split("```", 1)[0]
 
 
 def F(text):

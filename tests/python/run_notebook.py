@@ -1,23 +1,29 @@
 #!/usr/bin/env python3
-"""Executes a notebook (examples/python/tour.ipynb) with Debian's nbclient and ipykernel, in a
-kernel of THIS interpreter (a private kernelspec: the system's "python3" spec may name another
-python3 on PATH), and checks its outputs, not only that it ran: each cell tagged check:NAME must
+"""Executes a notebook (examples/python/tour.ipynb) with Debian's nbclient, in the kernel a reader
+makes as the pages say (issue 49: Debian's kernel "python3" runs /usr/bin/python3, which does not
+see the venv): README's Python block, run as written with its venv in --out, installs the package
+from the build folder --build-dir, and docs/python.md's Jupyter block registers that venv as a
+kernel (into --out's JUPYTER_DATA_DIR, not the user's). The notebook runs in that kernel with
+the build tree off the path (PYTHONPATH removed), and a last cell checks that hapstab came from
+the venv. Then its outputs are checked, not only that it ran: each cell tagged check:NAME must
 show the text CHECKS[NAME] expects (regular expressions over its stream and display outputs), a
 cell that displays a result must show its HTML and LaTeX forms, the figure cells must show a PNG,
 and no cell may raise. The executed notebook is written to --out for a look.
 
-    PYTHONPATH=build/python /usr/bin/python3 tests/python/run_notebook.py examples/python/tour.ipynb --out build/python-notebook
+    /usr/bin/python3 tests/python/run_notebook.py examples/python/tour.ipynb --out build/python-notebook --build-dir build
 (ctest runs it as python_notebook.)"""
 import argparse
-import json
 import os
 import re
+import shutil
+import subprocess
 import sys
-import tempfile
 
 import nbformat
 from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
+
+from clitools import _TOP, block
 
 # what each tagged cell must print (all of them, in its text outputs)
 CHECKS = {
@@ -60,41 +66,54 @@ def text_of(cell) -> str:
     return "".join(parts)
 
 
-def kernelspec(folder: str) -> str:
-    """A kernelspec running ipykernel in this interpreter; returns its name."""
-    spec = os.path.join(folder, "kernels", "hapstab-python")
-    os.makedirs(spec)
-    with open(os.path.join(spec, "kernel.json"), "w", encoding="utf-8") as f:
-        json.dump({"argv": [sys.executable, "-Xfrozen_modules=off", "-m", "ipykernel_launcher", "-f", "{connection_file}"],
-                   "display_name": "hapstab (this Python)", "language": "python"}, f)
-    os.environ["JUPYTER_PATH"] = folder + os.pathsep + os.environ.get("JUPYTER_PATH", "")
-    # the kernel runs in --out: PYTHONPATH's entries absolute; figures inline (not a headless
-    # MPLBACKEND=Agg the caller may have set for scripts), as a notebook shows them
-    paths = os.environ.get("PYTHONPATH", "")
-    os.environ["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in paths.split(os.pathsep) if p)
-    os.environ.pop("MPLBACKEND", None)
-    return "hapstab-python"
+def as_in(folder: str, build_dir: str, text: str) -> str:
+    """A block's words with its venv in FOLDER and HAPSTAB_BUILD_DIR=BUILD_DIR: the rest as shown."""
+    text = re.sub(r"(?<![\w/.-])(?<!-m )venv(?=/|\s|$)", os.path.join(folder, "venv"), text, flags=re.M)
+    return text.replace("HAPSTAB_BUILD_DIR=build ", f"HAPSTAB_BUILD_DIR={build_dir} ")
+
+
+def readers_kernel(folder: str, build_dir: str) -> str:
+    """The venv of README's Python block with the kernel of docs/python.md's Jupyter block, made in
+    FOLDER from the top of the tree as a reader would; returns the kernel's name."""
+    shutil.rmtree(os.path.join(folder, "venv"), ignore_errors=True)
+    shutil.rmtree(os.path.join(folder, "jupyter"), ignore_errors=True)
+    os.environ["JUPYTER_DATA_DIR"] = os.path.join(folder, "jupyter")  # --user installs the kernel here
+    for page, section in (("README.md", "Python"), ("docs/python.md", "Jupyter")):
+        words = as_in(folder, os.path.abspath(build_dir), block(page, section, "sh"))
+        p = subprocess.run(["bash", "-euo", "pipefail", "-c", words], cwd=_TOP, capture_output=True, text=True,
+                           check=False)
+        if p.returncode != 0:
+            sys.exit(f"run_notebook: {page}'s {section} block failed (exit {p.returncode}):\n{words}\n{p.stdout}{p.stderr}")
+    return re.search(r"--name (\S+)", block("docs/python.md", "Jupyter", "sh")).group(1)
 
 
 def main() -> int:
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("notebook")
     p.add_argument("--out", required=True, help="folder for the executed notebook and what it writes")
+    p.add_argument("--build-dir", required=True, help="the CMake build folder README's block installs from")
     p.add_argument("--timeout", type=int, default=600, help="seconds per cell (a hang guard)")
     a = p.parse_args()
+    a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
+    for name in ("PYTHONPATH", "MPLBACKEND"):  # the venv's package, not the build tree's; figures inline
+        os.environ.pop(name, None)
+    kernel = readers_kernel(a.out, a.build_dir)
     nb = nbformat.read(a.notebook, as_version=4)
-    with tempfile.TemporaryDirectory(prefix="hapstab-kernel-") as tmp:
-        client = NotebookClient(nb, kernel_name=kernelspec(tmp), timeout=a.timeout,
-                                resources={"metadata": {"path": a.out}})
-        try:
-            client.execute()
-        except CellExecutionError as e:
-            print(f"run_notebook: a cell raised:\n{e}", file=sys.stderr)
-            return 1
-        finally:
-            nbformat.write(nb, os.path.join(a.out, os.path.basename(a.notebook)))
+    venv = os.path.join(a.out, "venv", "")
+    nb.cells.append(nbformat.v4.new_code_cell("import sys, hapstab\nprint(sys.prefix, hapstab.__file__)"))
+    client = NotebookClient(nb, kernel_name=kernel, timeout=a.timeout, resources={"metadata": {"path": a.out}})
+    try:
+        client.execute()
+    except CellExecutionError as e:
+        print(f"run_notebook: a cell raised:\n{e}", file=sys.stderr)
+        return 1
+    finally:
+        nbformat.write(nb, os.path.join(a.out, os.path.basename(a.notebook)))
     failures, seen = [], set()
+    where = text_of(nb.cells.pop())
+    if not where.startswith(venv.rstrip(os.sep) + " " + venv):
+        failures.append(f"the kernel {kernel!r} is not the venv's, or its hapstab is not the venv's: {where.strip()}")
     for i, cell in enumerate(nb.cells):
         if cell.cell_type != "code":
             continue

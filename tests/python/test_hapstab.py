@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import hapstab
-from clitools import CLI, F, cli
+from clitools import CLI, F, block, cli
 
 EXAMPLES = Path(hapstab.examples_dir())
 WALL = "K + B*(z-1)/(T*z)"
@@ -988,14 +988,12 @@ SOURCE = Path(__file__).resolve().parents[2]
 
 
 def _readme_block(language):
-    text = (SOURCE / "README.md").read_text(encoding="utf-8").split("\n## Python\n", 1)[1].split("\n## ", 1)[0]
-    return text.split(f"```{language}\n", 1)[1].split("```", 1)[0]
+    return block("README.md", "Python", language)
 
 
 def _docs_python_block():
     """docs/python.md's tour of the package (the README shows ten lines of it)."""
-    text = (SOURCE / "docs" / "python.md").read_text(encoding="utf-8")
-    return text.split("```python\n", 1)[1].split("```", 1)[0]
+    return block("docs/python.md", None, "python")
 
 
 def test_readme_python_block_runs_as_shown(monkeypatch):
@@ -1019,6 +1017,15 @@ def test_readme_install_block_names_the_interpreter():
     block = _readme_block("sh")
     assert block.startswith("/usr/bin/python3 -m venv --system-site-packages venv")
     assert "HAPSTAB_BUILD_DIR=build venv/bin/pip install --no-build-isolation --no-index ." in block
+
+
+def test_readme_shows_the_kernel_line_the_notebook_test_runs():
+    # issue 49: Debian's kernel runs /usr/bin/python3, which does not see README's venv; the line that
+    # registers the venv as a kernel is docs/python.md's Jupyter block, which ctest python_notebook
+    # runs (tests/python/run_notebook.py); README shows the same line
+    line = block("docs/python.md", "Jupyter", "sh").strip()
+    assert line.startswith("venv/bin/python -m ipykernel install --user --name ") and "\n" not in line
+    assert f"`{line}`" in (SOURCE / "README.md").read_text(encoding="utf-8")
 
 
 def test_setup_py_names_a_python_that_cannot_build_offline():
