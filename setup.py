@@ -21,6 +21,7 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Optional
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
@@ -43,6 +44,21 @@ def check_interpreter() -> None:
              "  HAPSTAB_BUILD_DIR=build venv/bin/pip install --no-build-isolation --no-index .")
 
 
+def given_build_dir() -> Optional[Path]:
+    """HAPSTAB_BUILD_DIR as a folder (relative: to the top of the tree), None when unset; stops
+    with one line saying what to run when it is not a configured CMake build folder (README's pip
+    block copied onto a fresh clone, before any build)."""
+    given = os.environ.get("HAPSTAB_BUILD_DIR")
+    if not given:
+        return None
+    build = Path(given) if os.path.isabs(given) else SOURCE / given
+    if not (build / "CMakeCache.txt").is_file():
+        sys.exit(f"hapstab: HAPSTAB_BUILD_DIR={given}: {build} is not a configured CMake build folder yet: run "
+                 f"`cmake -S . -B {given} -DCMAKE_BUILD_TYPE=Release` first (pip then builds the module there, "
+                 "minutes the first time), or leave HAPSTAB_BUILD_DIR out")
+    return build
+
+
 def version() -> str:
     m = re.search(r"project\(hapstab VERSION (\S+)", (SOURCE / "CMakeLists.txt").read_text(encoding="utf-8"))
     if not m:
@@ -52,13 +68,9 @@ def version() -> str:
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext: Extension) -> None:
-        given = os.environ.get("HAPSTAB_BUILD_DIR")
+        build = given_build_dir()
         jobs = os.environ.get("HAPSTAB_JOBS", str(os.cpu_count() or 1))
-        if given:
-            build = Path(given) if os.path.isabs(given) else SOURCE / given
-            if not (build / "CMakeCache.txt").is_file():
-                raise RuntimeError(f"HAPSTAB_BUILD_DIR={given}: {build} is not a configured CMake build folder")
-        else:
+        if build is None:
             build = Path(self.build_temp).resolve() / "cmake"
             subprocess.check_call(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                                    "-DHAPSTAB_TESTS=OFF", "-DHAPSTAB_BENCH=OFF", "-DHAPSTAB_PYTHON=ON",
@@ -81,6 +93,7 @@ class CMakeBuild(build_ext):
 
 
 check_interpreter()
+given_build_dir()
 (SOURCE / "build-pip").mkdir(exist_ok=True)
 setup(
     version=version(),

@@ -1028,6 +1028,19 @@ def test_readme_shows_the_kernel_line_the_notebook_test_runs():
     assert f"`{line}`" in (SOURCE / "README.md").read_text(encoding="utf-8")
 
 
+def test_readme_pip_block_on_a_fresh_clone_says_what_to_run(tmp_path):
+    # issue 49: README's block copied before any build (HAPSTAB_BUILD_DIR=build, no build folder)
+    # stops at once with one line that says what to run, not a traceback from inside setuptools
+    missing = tmp_path / "build"
+    p = subprocess.run(["/usr/bin/python3", "setup.py", "--name"], cwd=SOURCE, capture_output=True, text=True,
+                       env=dict(os.environ, HAPSTAB_BUILD_DIR=str(missing)), check=False)
+    assert p.returncode != 0 and "Traceback" not in p.stderr, p.stderr
+    assert p.stderr.strip().splitlines() == [
+        f"hapstab: HAPSTAB_BUILD_DIR={missing}: {missing} is not a configured CMake build folder yet: run "
+        f"`cmake -S . -B {missing} -DCMAKE_BUILD_TYPE=Release` first (pip then builds the module there, minutes the "
+        "first time), or leave HAPSTAB_BUILD_DIR out"], p.stderr
+
+
 def test_setup_py_names_a_python_that_cannot_build_offline():
     # the case README names: a python3 first on PATH that is not Debian's (this machine's pyenv)
     import shutil
