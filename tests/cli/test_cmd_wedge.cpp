@@ -132,6 +132,20 @@ TEST(CmdWedge, ViolatedAssumptionIsReportedNotACrash) {
   EXPECT_FALSE(j2["wedge_holds"].get<bool>());
 }
 
+// A simple pole at z = -1 (Tustin): H = (3z - 3/5)/(z + 1) = 3 - (18/5)/(z + 1), so on the circle
+// Re H = 6/5 and Im H / tan(theta/2) = 9/5 for every theta < pi (1/(e^{j theta} + 1) =
+// 1/2 - j tan(theta/2)/2, by hand). Both wedge branches are constants, 6/5 + 9/5 + 1 = 4 and
+// 6/5 - 9/5 + 1 = 2/5, so "(25) holds" with minimum 4 is right where H is finite; at theta = pi it
+// is the limit, and the text says so. The verdict (H not stable: the criteria do not apply) and
+// the exit code stay.
+TEST(CmdWedge, PoleAtMinusOneSaysTheCriterionIsItsLimitThere) {
+  CliRun r = run("wedge --H \"(3*z - 0.6)/(z + 1)\" --T 1/1000");
+  ASSERT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("wedge (25): holds [exact]; min over theta of left side + 1 = 4 [exact]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("at the pole by the left side's limit"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the criteria do not apply"), std::string::npos) << r.out;
+}
+
 TEST(CmdWedge, BadInputExitsTwo) {
   for (const char* a : {"wedge --H \"(z+1\"", "wedge --H \"1/(z-\"", "wedge --H \"z^2/(z-0.5)\"",
                         "wedge --H \"K*T/z\" --T 0", "wedge --H \"K*T/z\" --T -1/1000", "wedge --H \"1/z\" --digits 0",

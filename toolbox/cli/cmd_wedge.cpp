@@ -117,6 +117,12 @@ int run(const Opts& o) {
                   << dec(c->margin, o.digits) << " [" << to_string(c->margin.status) << "] at theta = " << c->theta_at_min
                   << " rad; max gain k* = " << (c->gain_infinite ? std::string("inf") : dec(c->max_gain, o.digits))
                   << "\n";
+        // evaluated with a pole on the circle: the branch stays bounded there (a simple pole at
+        // z = -1 for the wedge, at z = +-1 for Tsypkin), so the verdict is about H where it is
+        // finite, with the left side extended to the pole by its limit
+        if (a.assumptions.pole_on_unit_circle)
+          std::cout << "  (H has a pole on the unit circle: checked where H is finite, and at the pole by the"
+                       " left side's limit, which is finite there)\n";
       }
     }
     std::cout << "assumptions: " << (a.assumptions.violated.empty() ? "all hold" : "violated:");

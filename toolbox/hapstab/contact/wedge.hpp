@@ -76,7 +76,7 @@ struct Assumptions {
   bool h_stable = false;            ///< every pole of H strictly inside the unit circle (exact)
   bool closed_loop_stable = false;  ///< (1 + kH)^{-1} stable (exact)
   bool dc_gain_nonnegative = false; ///< H(1) >= 0 (exact; false when H has a pole at z = 1)
-  bool pole_on_unit_circle = false; ///< H has a pole with |z| = 1 (the criteria are not evaluated)
+  bool pole_on_unit_circle = false; ///< H has a pole with |z| = 1 (a criterion is evaluated only where its branch stays bounded)
   std::optional<rational> h1;       ///< H(1) when finite
   std::vector<std::string> violated;  ///< human-readable list, empty when all hold
 };
