@@ -9,3 +9,5 @@
 #include <boost/multiprecision/gmp.hpp>
 #include <boost/multiprecision/mpfi.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+// Eigen's decompositions over double and complex<double>: declared extern, compiled once in numeric/
+#include "../toolbox/hapstab/numeric/eigen_decompositions.hpp"
