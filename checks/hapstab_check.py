@@ -12,21 +12,29 @@ parser, below) and derives every quantity by a route other than hapstab's (docs/
 
 Kinds and theorems:
 
-bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n/(1-z)} + eta, z = e^{jwT} (paper 001, (45)/(54)).
-       Route: t = tan(wT/2), z = (1+jt)/(1-jt), T/(1-z) = T/2 + jT/(2t). With H z^-n = N/D' and
-       d = max(deg N, deg D'), N(z) = Nt(t)/(1-jt)^d, D'(z) = Dt(t)/(1-jt)^d, so with
-       G = Nt conj(Dt) = Gr + j Gi (real polynomials in t):
-           f = (T/2) [Gr(t) - Gi(t)/t] / |Dt(t)|^2 + eta,
-       Gi odd and Gr, |Dt|^2 even in t (real coefficients), hence E(u)/F(u) in u = t^2 >= 0; with
-       u = (1-c)/(1+c), c = cos(wT), and m = max(deg E, deg F):
+bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1-z)} + eta, z = e^{jwT} (paper 001,
+       (45)/(54)), t_d = model.frac_delay (0 when absent).
+       Route: tau = n + t_d/T = P/q, phi = wT/q in [0, pi/q], w = e^{j phi}, so z = w^q and the delay
+       is w^-P; t = tan(phi/2), w = (1+jt)/(1-jt). With Nw(w) = N(w^q), Dw(w) = D(w^q) w^P and
+       d = max(deg Nw, deg Dw): Nw = Nt(t)/(1-jt)^d, Dw = Dt(t)/(1-jt)^d, and
+       T/(1 - w^q) = T (1-jt)^q/((1-jt)^q - (1+jt)^q) = (jT/2)(1-jt)^q/Sq(t), Sq = Im (1+jt)^q, so
+           f = -(T/2) Im{Nt conj(Dt) (1-jt)^q} / (|Dt|^2 Sq(t)) + eta
+       (q = 1: (T/2)[Gr - Gi/t]/|Dt|^2 with G = Nt conj(Dt)). f is even in t (f(-phi) = f(phi)):
+       numerator and Sq are odd, so dividing both by t gives E(u)/F(u) in u = t^2 >= 0
+       (F = |Dt|^2 Sq/t > 0 on the band: Sq/t = (1+u)^(q/2) sin(q phi/2)/t); with
+       u = (1-c)/(1+c), c = cos(phi), and m = max(deg E, deg F):
            f(c) = (T/2) E^(c)/F^(c) + eta,  E^(c) = sum e_i (1-c)^i (1+c)^(m-i), F^ likewise,
-       F^ >= 0 on [-1, 1] (it is (1+c)^m |Dt|^2). Claim b* in [lo, hi] (or = v):
-         upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [-1, 1]: the distinct roots of P in [-1, 1]
-                isolated by bisection with Sturm counts of P's square-free part, and P > 0 at both
-                ends of every isolating interval and P >= 0 at -1 and 1 (P keeps its sign between
-                roots);
-         lower  the witness c0 in [-1, 1] with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced
-                by their gcd (at a removable point the value is f's limit, which the sup reaches).
+       on the band c in [cos(pi/q), 1] (F^ >= 0 there). Claim b* in [lo, hi] (or = v):
+         upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [c_lo, 1], c_lo = evidence.domain_c_lo (-1 when
+                absent) shown <= cos(pi/q) by R_q(u(c_lo)) <= 0, R_k(u) = Re (1+jt)^k =
+                (1+u)^(k/2) cos(k phi/2) > 0 for phi < pi/q; or P (1+c)^k R_q(u(c)) >= 0 there (> 0
+                inside the band: the test across an irrational end where f -> -inf). Nonnegativity:
+                the distinct roots of P in [c_lo, 1] isolated by bisection with Sturm counts of P's
+                square-free part, P > 0 at both ends of every isolating interval and >= 0 at the ends
+                (P keeps its sign between roots);
+         lower  the witness c0 in the band (R_k(u0) > 0 for k < q and R_q(u0) >= 0; c0 = -1 only for
+                q = 1) with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced by their gcd (at a
+                removable point the value is f's limit, which the sup reaches).
 r      r(jw) = T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2) (paper 001, (44)): Re r = -T/2 exactly;
        Im r in [im_lo, im_hi] by mpmath interval cot at 128, 256, ... 65536 bits.
 stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force = -z^-n H(z) x):
@@ -41,12 +49,15 @@ wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Ts
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree max(deg N, deg D + n) <= 64 (exact Sturm sequences in
-Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond it exit 3.
+Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree
+max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
+sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
+it exit 3.
 """
 import json
 import sys
 from fractions import Fraction
+from math import comb
 
 MAX_DEGREE = 64
 if hasattr(sys, "set_int_max_str_digits"):
@@ -433,20 +444,29 @@ def nonneg_on(p, a, b):
 
 
 # ---------------------------------------------------------------- bound
-def objective_c(H, T, n):
-    """(E^, F^) with f(c) = (T/2) E^(c)/F^(c), by the tan(wT/2) route (module docstring)."""
-    N = H.num
-    Dp = [Fraction(0)] * n + H.den  # D' = D z^n
-    d = max(len(N), len(Dp)) - 1
-    if d > MAX_DEGREE:
-        raise TooLarge("degree %d of H z^-n is above this checker's limit %d" % (d, MAX_DEGREE))
+def spread(p, q):
+    """p(w^q): the coefficients of p at the multiples of q."""
+    out = [Fraction(0)] * ((len(p) - 1) * q + 1) if p else []
+    for k, a in enumerate(p):
+        out[k * q] = a
+    return trim(out)
+
+
+def objective_c(H, T, P, q):
+    """(E^, F^) with f(c) = (T/2) E^(c)/F^(c), c = cos(wT/q), by the tan route (module docstring)."""
+    Nw = spread(H.num, q)
+    Dw = [Fraction(0)] * P + spread(H.den, q)  # D(w^q) w^P: the delay e^{-j tau wT} = w^-P
+    d = max(len(Nw), len(Dw)) - 1
+    if max(d, q) > MAX_DEGREE:
+        raise TooLarge("degree %d of H(w^q) w^-P (q = %d) is above this checker's limit %d" % (max(d, q), q, MAX_DEGREE))
+
     # complex polynomials in t as (re, im) lists; 1 + jt and 1 - jt
     def cmul(x, y):
         return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
     plus = ([Fraction(1)], [Fraction(0), Fraction(1)])
     minus = ([Fraction(1)], [Fraction(0), Fraction(-1)])
     pw_plus, pw_minus = [([Fraction(1)], [])], [([Fraction(1)], [])]
-    for _ in range(d):
+    for _ in range(max(d, q)):
         pw_plus.append(cmul(pw_plus[-1], plus))
         pw_minus.append(cmul(pw_minus[-1], minus))
 
@@ -459,31 +479,71 @@ def objective_c(H, T, n):
             re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
         return re, im
 
-    Nr, Ni = tilde(N)
-    Dr, Di = tilde(Dp)
-    Gr = padd(pmul(Nr, Dr), pmul(Ni, Di))
-    Gi = psub(pmul(Ni, Dr), pmul(Nr, Di))
-    if Gi and Gi[0] != 0:
-        raise AssertionError("Im G(0) != 0 for a real H")
-    E = psub(Gr, Gi[1:])  # Gr - Gi/t
-    F = padd(pmul(Dr, Dr), pmul(Di, Di))
-    for p in (E, F):
-        if any(p[i] != 0 for i in range(1, len(p), 2)):
-            raise AssertionError("not even in t")
-    Eu, Fu = E[0::2], F[0::2]
+    Nr, Ni = tilde(Nw)
+    Dr, Di = tilde(Dw)
+    G = (padd(pmul(Nr, Dr), pmul(Ni, Di)), psub(pmul(Ni, Dr), pmul(Nr, Di)))  # Nt conj(Dt)
+    Gq = cmul(G, pw_minus[q])  # times (1 - jt)^q
+    num = pneg(Gq[1])          # -Im(G (1 - jt)^q)
+    Sq = pw_plus[q][1]         # Im (1 + jt)^q
+    F = pmul(padd(pmul(Dr, Dr), pmul(Di, Di)), Sq)
+    for p in (num, F):
+        if any(p[i] != 0 for i in range(0, len(p), 2)):
+            raise AssertionError("not odd in t")
+    Eu, Fu = num[1::2], F[1::2]  # divided by t, in u = t^2
     m = max(len(Eu), len(Fu)) - 1
     one_minus, one_plus = [Fraction(1), Fraction(-1)], [Fraction(1), Fraction(1)]
     pm = [ppow(one_minus, i) for i in range(m + 1)]
     pp = [ppow(one_plus, i) for i in range(m + 1)]
 
-    def hat(q):
+    def hat(p):
         out = []
-        for i, a in enumerate(q):
+        for i, a in enumerate(p):
             if a != 0:
                 out = padd(out, pscale(pmul(pm[i], pp[m - i]), a))
         return out
 
     return hat(Eu), hat(Fu)
+
+
+def re_power(k):
+    """R_k(u) = Re (1 + jt)^k as a polynomial in u = t^2: sum_i C(k, 2i) (-u)^i."""
+    out = []
+    for i in range(0, k // 2 + 1):
+        out.append(Fraction(comb(k, 2 * i)) * (-1) ** i)
+    return trim(out)
+
+
+def in_band(c0, q):
+    """c0 = cos(phi0) with phi0 in [0, pi/q]: t = tan(phi0/2), R_k = Re (1 + jt)^k =
+    (1 + t^2)^(k/2) cos(k phi0/2) is > 0 for k < q and >= 0 for k = q iff phi0 <= pi/q (if
+    phi0 > pi/q, the first k with k phi0/2 > pi/2 has k phi0/2 in (pi/2, pi): cos < 0)."""
+    if c0 < -1 or c0 > 1:
+        return False
+    if c0 == -1:
+        return q == 1  # phi0 = pi
+    u = (1 - c0) / (1 + c0)
+    return all(peval(re_power(k), u) > 0 for k in range(1, q)) and peval(re_power(q), u) >= 0
+
+
+def below_band_end(c_lo, q):
+    """c_lo <= cos(pi/q): c_lo = -1, or R_q(u) <= 0 at u = tan^2(phi/2) of c_lo (R_q > 0 for
+    phi in [0, pi/q): then c_lo is not in (cos(pi/q), 1])."""
+    if c_lo == -1:
+        return True
+    if c_lo < -1 or c_lo > 1 or q < 2:
+        return False
+    return peval(re_power(q), (1 - c_lo) / (1 + c_lo)) <= 0
+
+
+def end_multiplier(q):
+    """(1 + c)^k R_q((1 - c)/(1 + c)), k = deg R_q: > 0 on (cos(pi/q), 1] (c > -1, R_q > 0 for
+    phi < pi/q), a simple root at cos(pi/q)."""
+    R = re_power(q)
+    k = len(R) - 1
+    out = []
+    for i, a in enumerate(R):
+        out = padd(out, pscale(pmul(ppow([Fraction(1), Fraction(-1)], i), ppow([Fraction(1), Fraction(1)], k - i)), a))
+    return out
 
 
 def short(x):
@@ -494,32 +554,10 @@ def short(x):
 def check_bound(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
     model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
-    only(model, ("H", "set", "T", "delay", "eta"), "model")
+    only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    only(evidence, ("witness_c",), "evidence")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool):
-        raise Malformed("model.delay: missing or not an integer")
-    if n < 0 or n > 100000:
-        raise Malformed("model.delay: outside [0, 100000]")
-    eta = exact(model, "eta", "model")
-    if eta < 0:
-        raise Malformed("model.eta: must be >= 0")
-    params = {}
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    for k, v in sets.items():
-        params[k] = exact_value(v, "model.set." + k)
-    try:
-        H = parse_h(model["H"], T, params)
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    only(evidence, ("witness_c", "domain_c_lo"), "evidence")
+    H, T, eta, P, q = bound_model(model)
     status = claim.get("status")
     if status == "exact":
         lo = hi = exact(claim, "value", "claim")
@@ -533,24 +571,78 @@ def check_bound(c):
         if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
             return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
     c0 = exact(evidence, "witness_c", "evidence")
-    E, F = objective_c(H, T, n)
+    c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
+    E, F = objective_c(H, T, P, q)
     A = pscale(E, T / 2)
-    P = psub(pscale(F, hi - eta), A)
-    why = nonneg_on(P, Fraction(-1), Fraction(1))
+    why = upper_bound(A, F, hi - eta, c_lo, q)
     if why:
-        return False, "b* <= %s (%.12g) fails: (hi - eta) F(c) - (T/2) E(c) is %s" % (hi, float(hi), why)
+        return False, "b* <= %s (%.12g) fails: %s" % (hi, float(hi), why)
+    why = lower_bound(A, F, lo - eta, c0, q)
+    if why:
+        return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
+    return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_model(model):
+    """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q)."""
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool):
+        raise Malformed("model.delay: missing or not an integer")
+    if n < 0 or n > 100000:
+        raise Malformed("model.delay: outside [0, 100000]")
+    td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
+    if td < 0:
+        raise Malformed("model.frac_delay: must be >= 0")
+    eta = exact(model, "eta", "model")
+    if eta < 0:
+        raise Malformed("model.eta: must be >= 0")
+    tau = n + td / T
+    if tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6:
+        raise TooLarge("t_d/T has a numerator or denominator above 10^6")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+    try:
+        H = parse_h(model["H"], T, params)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    return H, T, eta, tau.numerator, tau.denominator
+
+
+def upper_bound(A, F, bound, c_lo, q):
+    """None when A/F <= bound on the band [cos(pi/q), 1] (F >= 0 there), shown on [c_lo, 1] (c_lo
+    shown <= cos(pi/q)): P = bound F - A >= 0 there, or P (1 + c)^k R_q >= 0 across an irrational
+    end where A/F -> -inf (end_multiplier > 0 inside the band). Else the reason."""
+    if not below_band_end(c_lo, q):
+        return "evidence.domain_c_lo = %s is not shown <= cos(pi/%d): [c_lo, 1] may miss part of the band" % (short(c_lo), q)
+    P = psub(pscale(F, bound), A)
+    why = nonneg_on(P, c_lo, Fraction(1))
+    if why and q > 1 and nonneg_on(pmul(P, end_multiplier(q)), c_lo, Fraction(1)) is None:
+        return None
+    return "bound F(c) - (T/2) E(c) on [%s, 1] is %s" % (short(c_lo), why) if why else None
+
+
+def lower_bound(A, F, target, c0, q):
+    """None when the objective A/F (its value or limit) at the witness c0 in the band is >= target."""
     if c0 < -1 or c0 > 1:
-        return False, "evidence.witness_c = %s is outside [-1, 1]" % c0
+        return "evidence.witness_c = %s is outside [-1, 1]" % c0
+    if not in_band(c0, q):
+        return "evidence.witness_c = %s is outside the band [cos(pi/%d), 1] (w > pi/T)" % (short(c0), q)
     g = pgcd(A, F)  # reduced: at a removable point the value is f's limit, which the sup reaches
     Ar, Fr = (pdivmod(A, g)[0], pdivmod(F, g)[0]) if g else (A, F)
     f0 = peval(Fr, c0)
     if f0 == 0:
-        return False, "evidence.witness_c = %s is a pole of the objective (a pole of H on the unit circle)" % c0
-    v = peval(Ar, c0) / f0 + eta
-    if v < lo:
-        return False, "b* >= %s (%.12g) not shown: the objective at the witness c0 = %s is %.12g < lo" % (
-            short(lo), float(lo), short(c0), float(v))
-    return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+        return "evidence.witness_c = %s is a pole of the objective (a pole of H on the unit circle)" % c0
+    v = peval(Ar, c0) / f0
+    if v < target:
+        return "the objective at the witness c0 = %s is %.12g short of it" % (short(c0), float(target - v))
+    return None
 
 
 # ---------------------------------------------------------------- r

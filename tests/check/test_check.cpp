@@ -87,8 +87,11 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d["model"].erase("T");
   expect_field(d, "model.T");
   d = c;
-  d["model"]["frac_delay"] = "1/2000";
+  d["model"]["frac_delay"] = "0.002";
   expect_field(d, "model.frac_delay");
+  d = c;
+  d["evidence"]["omega"] = "1";
+  expect_field(d, "evidence.omega");
   d = c;
   d["claim"]["value"] = "0.5";
   expect_field(d, "claim.value");
@@ -101,6 +104,73 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d = c;
   d["kind"] = "limit-cycle";
   expect_field(d, "kind");
+}
+
+nlohmann::json frac_cert(const std::string& H, const std::string& T, const std::string& td, const nlohmann::json& claim,
+                         const std::string& witness, const std::string& c_lo = "") {
+  nlohmann::json j{{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound"},
+                   {"model", {{"H", H}, {"set", {{"K", "2"}, {"B", "2"}}}, {"T", T}, {"delay", 0}, {"frac_delay", td}, {"eta", "0"}}},
+                   {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
+  if (!c_lo.empty()) j["evidence"]["domain_c_lo"] = c_lo;
+  return j;
+}
+
+// H = K, t_d = tau T: Re{T K e^{-j tau th}/(1 - e^{j th})} = T K sin((tau + 1/2) th)/(2 sin(th/2)),
+// th = wT. tau = 1/2: T K cos(th/2) = T K c in c = cos(wT/2) on [0, 1]: b* = T K = 1 (T = 1/2, K = 2).
+TEST(BoundCheck, FractionalDelayHalfSample) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const Verdict ok = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1", "0"));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_TRUE(check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1")).verified);  // c_lo = -1: f = c on [-1, 1]
+  const Verdict low = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1/2", "0"));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("not shown"), std::string::npos) << low.reason;
+  const nlohmann::json wide{{"status", "certified"}, {"lo", "-1/2"}, {"hi", "1"}};
+  const Verdict outside = check_certificate(frac_cert("K", "1/2", "1/4", wide, "-1/2", "0"));  // f(-1/2) = -1/2, but w > pi/T
+  EXPECT_FALSE(outside.verified);
+  EXPECT_NE(outside.reason.find("outside the band"), std::string::npos) << outside.reason;
+  const Verdict end = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1", "1/10"));
+  EXPECT_FALSE(end.verified);
+  EXPECT_NE(end.reason.find("domain_c_lo"), std::string::npos) << end.reason;
+  // the delay is part of the model: t_d = 0 gives b* = T K/2
+  auto no_delay = frac_cert("K", "1/2", "0", exact("1"), "1");
+  EXPECT_FALSE(check_certificate(no_delay).verified);
+  EXPECT_THROW(check_certificate(frac_cert("K", "1/2", "-1/4", exact("1"), "1")), InputError);
+}
+
+// H = -K, tau = 1/4, c = cos(wT/4) = cos(x): f = -T K sin(3x)/(2 sin(2x)) = -T K (4c^2 - 1)/(4c),
+// decreasing in c on the band [cos(pi/4), 1]: b* = -T K sqrt(2)/4 = -0.35355339059327376220042...
+// (T K = 1), at the irrational end wT = pi. Below the band, f -> +inf at c -> 0+.
+TEST(BoundCheck, FractionalDelayMaximumAtAnIrrationalEnd) {
+  const nlohmann::json claim{{"status", "certified"}, {"lo", "-3535533905932737623/10000000000000000000"},
+                             {"hi", "-3535533905932737621/10000000000000000000"}};
+  const std::string inside = "70710678118654752441/100000000000000000000";  // sqrt(2)/2 = 0.70710678118654752440084...
+  const std::string below = "70710678118654752440/100000000000000000000";
+  const Verdict ok = check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside, below));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  // a witness just beyond the end (w > pi/T), a c_lo just above it, and no c_lo (the band [-1, 1] meets the pole at c = 0)
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, below, below)).verified);
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside, inside)).verified);
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside)).verified);
+  // hi just below b*: the upper bound fails
+  const nlohmann::json over{{"status", "certified"}, {"lo", "-3535533905932737624/10000000000000000000"},
+                            {"hi", "-3535533905932737623/10000000000000000000"}};
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", over, inside, below)).verified);
+}
+
+// The Tustin damper H = B (z - 1)/(z + 1) = j B tan(th/2) with T = 1, B = 2, tau = 5/4:
+// f = tan(th/2) sin(5 th/4) - cos(5 th/4) (sup 1.7381038413... inside, by mpmath), -> -inf at th -> pi
+// (sin(5 pi/4) < 0), +inf just beyond: (hi - eta) B - A changes sign at the irrational end c =
+// cos(pi/4), and only the test with U_3 shows the bound.
+TEST(BoundCheck, FractionalDelayPoleAtTheEndFromBelow) {
+  const std::string below = "70710678118654752440/100000000000000000000";
+  auto claim = [](const std::string& hi) { return nlohmann::json{{"status", "certified"}, {"lo", "-1"}, {"hi", hi}}; };
+  const Verdict ok = check_certificate(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim("2"), "1", below));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_NE(ok.reason.find("U_3"), std::string::npos) << ok.reason;
+  const Verdict low = check_certificate(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim("3/2"), "1", below));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("fails"), std::string::npos) << low.reason;
 }
 
 // r(j 1) at T = 1: Im r = -(1/2) cot(1/2) = -0.91524386085622595963... (mpmath, 40 digits)

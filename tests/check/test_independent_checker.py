@@ -81,6 +81,70 @@ class Stability(unittest.TestCase):
         self.assertIn("claim.stable", hc.check(c2)[1])
 
 
+def frac_cert(H, T, td, claim, witness, c_lo=None):
+    c = {"certificate": "hapstab", "version": 1, "kind": "bound",
+         "model": {"H": H, "set": {"K": "2", "B": "2"}, "T": T, "delay": 0, "frac_delay": td, "eta": "0"},
+         "claim": claim, "evidence": {"witness_c": witness}}
+    if c_lo is not None:
+        c["evidence"]["domain_c_lo"] = c_lo
+    return c
+
+
+SQRT2_INSIDE = "70710678118654752441/100000000000000000000"  # sqrt(2)/2 = 0.70710678118654752440084...
+SQRT2_BELOW = "70710678118654752440/100000000000000000000"
+
+
+class FractionalDelay(unittest.TestCase):
+    """The cases of test_check.cpp's BoundCheck.FractionalDelay*: H = K, t_d = tau T gives
+    f = T K sin((tau + 1/2) wT)/(2 sin(wT/2)); tau = 1/2: T K cos(wT/2), b* = T K = 1 (T = 1/2, K = 2);
+    H = -K, tau = 1/4: -T K (4c^2 - 1)/(4c) in c = cos(wT/4), b* = -sqrt(2)/4 at the irrational end;
+    the Tustin damper B (z - 1)/(z + 1), T = 1, B = 2, tau = 5/4: tan(wT/2) sin(5wT/4) - cos(5wT/4),
+    sup 1.738... (mpmath), -inf at wT = pi and +inf just beyond."""
+
+    def test_half_sample(self):
+        exact = {"status": "exact", "value": "1"}
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "1/4", exact, "1", "0"))[0], 0)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "1/4", exact, "1"))[0], 0)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", exact, "1/2", "0"))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", {"status": "certified", "lo": "-1/2", "hi": "1"}, "-1/2", "0"))
+        self.assertEqual(code, 1)
+        self.assertIn("outside the band", why)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", exact, "1", "1/10"))
+        self.assertEqual(code, 1)
+        self.assertIn("domain_c_lo", why)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "0", exact, "1"))[0], 1)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "-1/4", exact, "1"))[0], 2)
+
+    def test_maximum_at_an_irrational_end(self):
+        claim = {"status": "certified", "lo": "-3535533905932737623/10000000000000000000",
+                 "hi": "-3535533905932737621/10000000000000000000"}
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE, SQRT2_BELOW)), (0, "b* in [-0.353553390593, -0.353553390593]"))
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_BELOW, SQRT2_BELOW))[0], 1)
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE, SQRT2_INSIDE))[0], 1)
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE))[0], 1)
+        over = {"status": "certified", "lo": "-3535533905932737624/10000000000000000000",
+                "hi": "-3535533905932737623/10000000000000000000"}
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", over, SQRT2_INSIDE, SQRT2_BELOW))[0], 1)
+
+    def test_pole_at_the_end_from_below(self):
+        claim = {"status": "certified", "lo": "-1", "hi": "2"}
+        self.assertEqual(hc.check(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim, "1", SQRT2_BELOW))[0], 0)
+        claim["hi"] = "3/2"
+        code, why = hc.check(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim, "1", SQRT2_BELOW))
+        self.assertEqual(code, 1)
+        self.assertIn("fails", why)
+
+    def test_band_tests(self):
+        F = Fraction
+        self.assertTrue(hc.in_band(F(1), 7) and hc.in_band(F(-1), 1) and not hc.in_band(F(-1), 2))
+        self.assertTrue(hc.in_band(F(0), 2) and not hc.in_band(F(-1, 100), 2))
+        self.assertTrue(hc.in_band(F(1, 2), 3) and not hc.in_band(F(49, 100), 3))
+        self.assertTrue(hc.below_band_end(F(1, 2), 3) and not hc.below_band_end(F(51, 100), 3))
+        self.assertTrue(hc.below_band_end(F(-1), 5) and not hc.below_band_end(F(0), 1))
+
+
 def wedge_cert(H, K, claims):
     keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
     return {"certificate": "hapstab", "version": 1, "kind": "wedge",
