@@ -6,6 +6,8 @@
 #include "cli/command.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interval.hpp"
+#include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
 
 namespace hapstab::cli {
@@ -13,6 +15,9 @@ namespace hapstab::cli {
 namespace {
 
 using QPoly = Polynomial<rational>;
+
+// The checkers' size limit (check/bound_objective.hpp): q (deg H + 1) + P <= 1000.
+constexpr long certificate_max_size = 1000;
 
 // The continued-fraction convergents of x, smallest first, until one satisfies `ok` (at most 400).
 template <class Ok>
@@ -41,27 +46,55 @@ rational to_rational(const mpfloat<D>& x) {
   return exact_rational(x);
 }
 
-// A rational c0 in [-1, 1] with f(c0) >= target (f = A/B without eta, B(c0) != 0).
-std::optional<rational> find_witness(const RationalFunction<rational>& f, const rational& target,
-                                     const passivity::Bound& b, const rational& T) {
+// The objective f (without eta) in c = cos(wT/q), tau = n + t_d/T = P/q, on its domain
+// [cos(pi/q), 1] (end_lo <= cos(pi/q) <= end_hi, rationals; -1 for q = 1): the producer's own route
+// (passivity::objective, and the fractional-delay path's H(w^q)/S(w) for q >= 2).
+struct WitnessObjective {
+  RationalFunction<rational> f{QPoly(rational(0))};
+  long q = 1;
+  rational end_lo = -1, end_hi = -1;
+};
+
+WitnessObjective witness_objective(const passivity::BoundProblem& p) {
+  WitnessObjective w;
+  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  if (den(tau) == 1) {
+    w.f = passivity::objective(p.H, p.T, num(tau).convert_to<int>()).f;
+    return w;
+  }
+  const auto fe = passivity::detail::frac_exact_problem<50>(p, certificate_max_size);
+  if (!fe) throw NumericalError("--certificate: the objective in cos(wT/q) could not be formed");
+  w.f = passivity::objective(fe->problem.H, fe->problem.T, fe->problem.delay).f;
+  w.q = fe->domain.q;
+  w.end_lo = fe->domain.end_lo;
+  w.end_hi = fe->domain.end_hi;
+  return w;
+}
+
+// A rational c0 in [end_hi, 1] (inside the domain) with f(c0) >= target (B(c0) != 0).
+std::optional<rational> find_witness(const WitnessObjective& o, const rational& target, const passivity::Bound& b,
+                                     const rational& T) {
+  const RationalFunction<rational>& f = o.f;
   auto ok = [&](const rational& c) {
-    if (c < -1 || c > 1) return false;
+    if (c < o.end_hi || c > 1) return false;
     const rational d = f.den()(c);
     return d != 0 && f.num()(c) / d >= target;
   };
-  for (const rational& c : {rational(1), rational(-1), rational(0)})
+  for (const rational& c : {rational(1), o.end_hi, rational(0)})
     if (ok(c)) return c;
-  if (b.omega_enclosure) {  // cos(w T) at the midpoint of the maximiser's enclosure
+  if (o.q > 1)  // a maximum at the end wT = pi, irrational for q >= 4: a simpler rational just inside
+    if (auto c0 = first_convergent(o.end_hi, ok)) return c0;
+  if (b.omega_enclosure) {  // cos(w T/q) at the midpoint of the maximiser's enclosure
     using R = mpfloat<300>;
     const rational w = (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2;
-    const R c = cos(R(w * T));
+    const R c = cos(R(w * T / rational(o.q)));
     if (auto c0 = first_convergent(to_rational(c), ok)) return c0;
   }
-  // every critical point of f in [-1, 1], refined to 2^-1000
+  // every critical point of f in the domain, refined to 2^-1000
   const QPoly crit = f.num().derivative() * f.den() - f.num() * f.den().derivative();
   if (crit.is_zero()) return std::nullopt;
   const rational width = rational(1) / rational(pow(integer(2), 1000));
-  for (RootInterval r : isolate_real_roots(crit, rational(-1), rational(1))) {
+  for (RootInterval r : isolate_real_roots(crit, o.end_lo, rational(1))) {
     if (!r.is_exact()) r = refine_root(crit, r, width);
     if (ok(r.lo)) return r.lo;
     if (ok(r.hi)) return r.hi;
@@ -85,7 +118,15 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
                                  const passivity::Bound& b, int digits) {
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
-  if (p.frac_delay) throw InputError("--certificate: a certificate of b* with --frac-delay is not implemented yet");
+  {  // the checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
+    const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+    const integer size = den(tau) * (std::max(p.H.num().degree(), p.H.den().degree()) + 1) + num(tau);
+    if (size > certificate_max_size)
+      throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
+                       " exactly, in cos(wT/q) with q = " + den(tau).str() + ": size q (deg H + 1) + P = " +
+                       (size > integer(1000000000L) ? std::string("> 10^9") : size.str()) +
+                       ", beyond their limit of " + std::to_string(certificate_max_size) + " (no certificate)");
+  }
   if (b.infinite)
     throw InputError("--certificate: b* = +inf (a pole on the unit circle where the objective tends to +inf) has no "
                      "certificate yet");
@@ -99,10 +140,12 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   m["set"] = sets;
   m["T"] = p.T.str();
   m["delay"] = p.delay;
+  if (p.frac_delay) m["frac_delay"] = p.frac_delay->str();
   m["eta"] = p.eta.str();
   j["model"] = m;
   nlohmann::json claim;
-  claim["quantity"] = "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
+                                   : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
   rational target;
   if (b.status == Status::exact) {
     claim["status"] = "exact";
@@ -118,10 +161,11 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
     target = parse_rational(lo, "enclosure");
   }
   j["claim"] = claim;
-  const passivity::Objective obj = passivity::objective(p.H, p.T, p.delay);
-  const auto c0 = find_witness(obj.f, target - p.eta, b, p.T);
+  const WitnessObjective obj = witness_objective(p);
+  const auto c0 = find_witness(obj, target - p.eta, b, p.T);
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with f(c0) >= " + target.str() + " was found");
   j["evidence"] = {{"witness_c", c0->str()}};
+  if (obj.q > 1) j["evidence"]["domain_c_lo"] = obj.end_lo.str();  // <= cos(pi/q): the checkers' interval [c_lo, 1]
   return j;
 }
 

@@ -16,11 +16,13 @@
 
 namespace hapstab::cli {
 
-/// The certificate of b* (paper 001, (45)/(54), integer delay): claim "b* = v" [exact] or
-/// "b* in [lo, hi]" [certified, lo and hi exactly the printed enclosure], evidence a rational
-/// witness c0 = cos(w0 T) in [-1, 1] with f(c0) >= lo. InputError (exit 2) for what has no
-/// certificate yet: b* = +inf, a fractional delay, H not given by --H, a numeric result;
-/// NumericalError when no witness is found.
+/// The certificate of b* (paper 001, (45)/(54), an integer delay n and a delay t_d): claim
+/// "b* = v" [exact] or "b* in [lo, hi]" [certified, lo and hi exactly the printed enclosure],
+/// evidence a rational witness c0 = cos(w0 T/q) in the domain [cos(pi/q), 1] with f(c0) >= lo
+/// (n + t_d/T = P/q; q = 1 for an integer delay) and, for q >= 2, domain_c_lo <= cos(pi/q).
+/// InputError (exit 2) for what has no certificate: b* = +inf, H not given by --H, a numeric
+/// result, a delay whose exact expansion exceeds the checkers' size limit; NumericalError when no
+/// witness is found.
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits);
 
