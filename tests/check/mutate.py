@@ -3,7 +3,9 @@
 
     python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet]
 
-Produces certificates of `bound` (random virtual environments, integer delays, eta), `r`
+Produces certificates of `bound` (random virtual environments, integer delays, eta; reported as
+`bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
+Tustin damper's pole at the band's end), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
@@ -73,8 +75,25 @@ def rand_model(rng):
     return {"H": H, "set": sets, "T": T, "delay": delay, "eta": eta}
 
 
+def rand_frac_model(rng):
+    """A bound model with a fractional delay t_d = (p/q) T, q in 2..6: sin(pi t_d/T) of both signs,
+    the Tustin damper's pole at z = -1 at the band's end (-inf there when the sign is negative, +inf
+    -- no certificate -- when positive), ends cos(pi/q) rational (q = 2, 3) and irrational (q >= 4)."""
+    m = rand_model(rng)
+    if rng.random() < 0.5:
+        m["H"], names = TEMPLATES[1] if rng.random() < 0.7 else TEMPLATES[0]
+        m["set"] = {n: rand_value(n, rng) for n in names}
+    m["delay"] = rng.choice([0, 0, 0, 1, 2])
+    q = rng.choice([2, 2, 3, 4, 4, 5, 6])
+    p = rng.choice([k for k in range(1, 2 * q) if k % q])
+    m["frac_delay"] = frac(Fraction(p, q) * Fraction(m["T"]))
+    return m
+
+
 def bound_args(m, digits):
     a = ["bound", "--H", m["H"], "--T", m["T"], "--delay", str(m["delay"]), "--eta", m["eta"], "--digits", str(digits)]
+    if "frac_delay" in m:
+        a += ["--frac-delay", m["frac_delay"]]
     for k, v in m["set"].items():
         a += ["--set", "%s=%s" % (k, v)]
     return a
@@ -197,6 +216,15 @@ def bound_mutants(cert, rng, hapstab, cache):
         for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
             if y != x:
                 edits.append(("set %s %s" % (k, name), ["set", k], frac(y)))
+    if "frac_delay" in m:
+        td, T = Fraction(m["frac_delay"]), Fraction(m["T"])
+        q = (m["delay"] + td / T).denominator
+        edits.append(("frac_delay + T/%d" % q, ["frac_delay"], frac(td + T / q)))
+        edits.append(("frac_delay x 2", ["frac_delay"], frac(td * 2)))
+        edits.append(("frac_delay + T (one more sample)", ["frac_delay"], frac(td + T)))
+        edits.append(("frac_delay 0", ["frac_delay"], "0"))
+    else:
+        edits.append(("frac_delay T/2 added", ["frac_delay"], frac(Fraction(m["T"]) / 2)))
     edits.append(("T doubled", ["T"], frac(Fraction(m["T"]) * 2)))
     edits.append(("T halved", ["T"], frac(Fraction(m["T"]) / 2)))
     edits.append(("delay + 1", ["delay"], m["delay"] + 1))
@@ -228,8 +256,11 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("deleted claim.value" if exact else "deleted claim.lo", deleted(cert, ["claim", "value" if exact else "lo"]), "malformed"))
     if m["set"]:
         out.append(("deleted model.set", deleted(cert, ["model", "set"]), "malformed"))
-    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    if "frac_delay" in m:
+        out += frac_mutants(cert, rng)
+    out.append(("added model.t_d", with_field(cert, ["model", "t_d"], "1/2000"), "malformed"))
     out.append(("added claim.omega", with_field(cert, ["claim", "omega"], "1"), "malformed"))
+    out.append(("added evidence.omega", with_field(cert, ["evidence", "omega"], "1"), "malformed"))
     out.append(("T as a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
     out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
     out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
@@ -238,6 +269,26 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("kind unknown", with_field(cert, ["kind"], "limit-cycle"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    return out
+
+
+def frac_mutants(cert, rng):
+    """What only a fractional delay's certificate has: the band [cos(pi/q), 1] in c = cos(wT/q) and
+    its rational lower end evidence.domain_c_lo."""
+    out = []
+    m, ev = cert["model"], cert["evidence"]
+    q = (m["delay"] + Fraction(m["frac_delay"]) / Fraction(m["T"])).denominator
+    if "domain_c_lo" in ev:
+        c_lo = Fraction(ev["domain_c_lo"])
+        above = c_lo + Fraction(1, 10 ** rng.randint(3, 8))  # above cos(pi/q): c_lo is within 10^-40 below it
+        out.append(("domain_c_lo above the band's end", with_field(cert, ["evidence", "domain_c_lo"], frac(above)), "refute"))
+        out.append(("witness beyond the band's end", with_field(cert, ["evidence", "witness_c"], frac(c_lo - Fraction(1, 10 ** 9))), "refute"))
+        out.append(("domain_c_lo lowered", with_field(cert, ["evidence", "domain_c_lo"], frac(c_lo - Fraction(1, 1000))), "agree"))
+        out.append(("domain_c_lo deleted (the band [-1, 1])", deleted(cert, ["evidence", "domain_c_lo"]), "agree"))
+        out.append(("domain_c_lo a decimal", with_field(cert, ["evidence", "domain_c_lo"], "0.5"), "malformed"))
+    out.append(("frac_delay negative", with_field(cert, ["model", "frac_delay"], "-" + m["frac_delay"]), "malformed"))
+    out.append(("frac_delay a decimal", with_field(cert, ["model", "frac_delay"], "0.0015"), "malformed"))
+    out.append(("frac_delay a number", with_field(cert, ["model", "frac_delay"], 1), "malformed"))
     return out
 
 
@@ -531,16 +582,17 @@ def main():
     skipped = {}
     t0 = time.time()
     for i in range(a.models):
-        m = rand_model(rng)
+        m = rand_frac_model(rng) if i % 2 else rand_model(rng)
         path = os.path.join(tmp, "b%d.json" % i)
         digits = rng.choice([10, 15, 20, 30])
         rc, out, err = run(a.hapstab, bound_args(m, digits) + ["--certificate", path])
         if rc != 0:
-            why = err.strip().split(":")[0:2]
-            skipped[":".join(why)[:80]] = skipped.get(":".join(why)[:80], 0) + 1
+            why = err.strip().split("error: ", 1)[-1]
+            why = ("bound-frac: " if "frac_delay" in m else "bound: ") + why.split(" (")[0][:70]
+            skipped[why] = skipped.get(why, 0) + 1
             continue
         with open(path) as f:
-            certs.append(("bound", json.load(f)))
+            certs.append(("bound" if "frac_delay" not in m else "bound-frac", json.load(f)))
     for i in range(max(a.models // 4, 2)):
         T, w = rand_r(rng)
         path = os.path.join(tmp, "r%d.json" % i)
@@ -572,7 +624,7 @@ def main():
         elif kind == "wedge":
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         else:
-            ms = (bound_mutants if kind == "bound" else r_mutants)(cert, rng, a.hapstab, cache)
+            ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:
             mutants.append((kind, name, c, expect))
     # the C++ checker: one process over all mutants
@@ -625,6 +677,14 @@ def main():
         sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e == "agree")))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
+    frac_certs = [c for k, c in certs if k == "bound-frac"]
+    if frac_certs:  # the branches of a fractional delay that the campaign reached
+        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
+        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
+        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
+              "upper bound shown across the end (P U_{q-1}) %d" % (
+                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
+                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
     print("false or malformed claims accepted: %d" % accepted_false)
     print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
     if failures:
