@@ -233,16 +233,49 @@ def lex(text):
     return toks
 
 
-def parse_h(text, T, params, var='z', field='model.H'):
+def parse_h(text, T, params, var='z', field='model.H', leaf=None):
     """H(var) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
-    the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused."""
+    the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused.
+    `leaf(kind, text, value)` builds the leaves in another algebra (Deg: degree bounds)."""
     try:
-        return _parse(text, T, params, var)
+        return _parse(text, T, params, var, leaf or rf_leaf)
     except Malformed as e:
         raise Malformed(str(e).replace("model.H", field, 1))
 
 
-def _parse(text, T, params, var):
+def rf_leaf(kind, txt, value):
+    """A leaf of the expression as a rational function: a number, the variable, a parameter, T."""
+    return RF([Fraction(0), Fraction(1)]) if kind == 'var' else RF([value])
+
+
+class Deg:
+    """Upper bounds (n, d) of the degrees of the numerator and the denominator of an expression as
+    a rational function of one parameter K over Q(z): K is (1, 0), anything else (0, 0);
+    p1/q1 + p2/q2 = (p1 q2 + p2 q1)/(q1 q2), and so on."""
+    num = [1]  # never refused as a divisor here (the parses at values of K are)
+
+    def __init__(self, n, d):
+        self.n, self.d = n, d
+
+    def __add__(self, o):
+        return Deg(max(self.n + o.d, o.n + self.d), self.d + o.d)
+
+    __sub__ = __add__
+
+    def __mul__(self, o):
+        return Deg(self.n + o.n, self.d + o.d)
+
+    def __truediv__(self, o):
+        return Deg(self.n + o.d, self.d + o.n)
+
+    def __neg__(self):
+        return self
+
+    def degree(self):
+        return 0
+
+
+def _parse(text, T, params, var, leaf):
     toks = lex(text)
     pos = [0]
 
@@ -302,9 +335,9 @@ def _parse(text, T, params, var):
         if k < 0:
             if not base.num:
                 raise Malformed("model.H: division by zero")
-            base = RF([Fraction(1)]) / base
+            base = leaf('num', '1', Fraction(1)) / base
             k = -k
-        r = RF([Fraction(1)])
+        r = leaf('num', '1', Fraction(1))
         for _ in range(k):
             r = r * base
         return r
@@ -313,16 +346,16 @@ def _parse(text, T, params, var):
         kind, txt = take()
         if kind == 'num':
             try:
-                return RF([Fraction(txt)])
+                return leaf('num', txt, Fraction(txt))
             except (ValueError, ZeroDivisionError):
                 raise Malformed("model.H: malformed number %r" % txt)
         if kind == 'name':
             if txt == var:
-                return RF([Fraction(0), Fraction(1)])
+                return leaf('var', txt, None)
             if txt in params:
-                return RF([params[txt]])
+                return leaf('name', txt, params[txt])
             if txt == 'T':
-                return RF([T])
+                return leaf('name', txt, T)
             raise Malformed("model.H: unknown name %r" % txt)
         if kind == '(':
             if depth > 200:
@@ -645,6 +678,122 @@ def lower_bound(A, F, target, c0, q):
     return None
 
 
+# ---------------------------------------------------------------- bound-max
+def prove_affine(text, T, params, K):
+    """(H0, H1, D) with H = H0 + K H1 for every K, proven: the numerator of H - H0 - K H1 has degree
+    <= D = max(n, d + 1) in K ((n, d) the Deg bounds of the expression) and vanishes at D + 1 values
+    of K where the parse is defined (a rational function of K evaluated exactly there)."""
+    dg = parse_h(text, T, dict(params, **{K: Fraction(0)}), leaf=lambda kind, txt, v: Deg(1 if (kind, txt) == ('name', K) else 0, 0))
+    D = max(dg.n, dg.d + 1)
+    if D > 64:
+        raise Malformed("model.H: its degree in %s is bounded only by %d (above 64): not proven affine" % (K, D))
+
+    def at(k):
+        return parse_h(text, T, dict(params, **{K: k}))
+    try:
+        H0 = at(Fraction(0))
+        H1 = at(Fraction(1)) - H0
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero at %s = 0 or 1" % K)
+    if not H1.num:
+        raise Malformed("model.H: does not depend on model.name = %s" % K)
+    proven, tried, j = 2, 0, 1
+    while proven < D + 1:
+        j += 1
+        k = Fraction(2 * j + 1, 3) * (-1) ** j  # distinct, never 0 or 1
+        try:
+            h = at(k)
+        except (Malformed, ZeroDivisionError):  # divides by zero at k: at most d such values
+            tried += 1
+            if tried > D + dg.d + 2:
+                raise Malformed("model.H: undefined at too many values of %s" % K)
+            continue
+        e = H0 + RF([k]) * H1
+        if h.num != e.num or h.den != e.den:
+            raise Malformed("model.H: not affine in %s (H(%s) != H(0) + %s (H(1) - H(0)))" % (K, k, k))
+        proven += 1
+    return H0, H1, D
+
+
+def check_bound_max(c):
+    """K_max = sup{K0 >= 0 : b*(K) < b on [0, K0)} for H = H0 + K H1 (proven affine), b* convex in
+    K (a sup of affine functions): K_max >= lo > 0 if b*(0) <= b0 < b and b*(lo) <= b; K_max <= hi if
+    b*(hi) >= b (a witness); K_max = +inf if b*(0) <= b0 < b and f1 <= 0 on the band."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
+    only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
+    K = model.get("name")
+    if not isinstance(K, str) or not K:
+        raise Malformed("model.name: missing or not a string")
+    sets = model.get("set", {})
+    if isinstance(sets, dict) and K in sets:
+        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
+    # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
+    m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
+    m0.pop("name")
+    m0.pop("damping", None)
+    _, T, eta, P, q = bound_model(m0)
+    b = exact(model, "damping", "model")
+    if b <= 0:
+        raise Malformed("model.damping: must be > 0")
+    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+    try:
+        H0, H1, D = prove_affine(model["H"], T, params, K)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    status = claim.get("status")
+    if status not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    infinite = claim.get("infinite", False)
+    if not isinstance(infinite, bool):
+        raise Malformed("claim.infinite: not true/false")
+    if infinite:
+        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
+            raise Malformed("claim.infinite: true beside a finite value")
+    else:
+        if status == "exact":
+            lo = hi = exact(claim, "value", "claim")
+        else:
+            lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo < 0:
+            return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+        if lo > hi:
+            return False, "claim: lo > hi"
+        for key in ("printed_lo", "printed_hi", "printed"):
+            if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+                return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
+
+    def objective(k):  # (T/2) E^ and F^ of H0 + k H1
+        E, F = objective_c(H0 + RF([k]) * H1, T, P, q)
+        return pscale(E, T / 2), F
+    if infinite or lo > 0:
+        b0 = exact(evidence, "b0_hi", "evidence")
+        if b0 >= b:
+            return False, "evidence.b0_hi = %s is not < b: K_max > 0 not shown" % short(b0)
+        why = upper_bound(*objective(Fraction(0)), b0 - eta, c_lo, q)
+        if why:
+            return False, "b*(%s = 0) <= b0_hi = %.12g fails: %s" % (K, float(b0), why)
+    if infinite:
+        E1, F1 = objective_c(H1, T, P, q)
+        why = upper_bound(pscale(E1, T / 2), F1, Fraction(0), c_lo, q)
+        if why:
+            return False, "%s_max = +inf fails: f1 <= 0 (the objective of dH/d%s) not shown: %s" % (K, K, why)
+        return True, "%s_max = +inf (b*(0) < b, f1 <= 0; affine in %s, degree bound %d)" % (K, K, D)
+    if lo > 0:
+        why = upper_bound(*objective(lo), b - eta, c_lo, q)
+        if why:
+            return False, "%s_max >= %.12g fails: b*(%s = lo) <= b not shown: %s" % (K, float(lo), K, why)
+    c1 = exact(evidence, "witness_c", "evidence")
+    why = lower_bound(*objective(hi), b - eta, c1, q)
+    if why:
+        return False, "%s_max <= %.12g not shown: b*(%s = hi) >= b: %s" % (K, float(hi), K, why)
+    return True, "%s_max %s (affine in %s, degree bound %d)" % (
+        K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), K, D)
+
+
 # ---------------------------------------------------------------- r
 def check_r(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
@@ -962,6 +1111,8 @@ def check(c):
         kind = c.get("kind")
         if kind == "bound":
             ok, why = check_bound(c)
+        elif kind == "bound-max":
+            ok, why = check_bound_max(c)
         elif kind == "r":
             ok, why = check_r(c)
         elif kind == "stability":
@@ -969,7 +1120,7 @@ def check(c):
         elif kind == "wedge":
             ok, why = check_wedge(c)
         else:
-            raise Malformed("kind: %r has no checker (known: bound, r, stability, wedge)" % (kind,))
+            raise Malformed("kind: %r has no checker (known: bound, bound-max, r, stability, wedge)" % (kind,))
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

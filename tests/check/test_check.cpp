@@ -173,6 +173,58 @@ TEST(BoundCheck, FractionalDelayPoleAtTheEndFromBelow) {
   EXPECT_NE(low.reason.find("fails"), std::string::npos) << low.reason;
 }
 
+nlohmann::json max_cert(const std::string& H, const nlohmann::json& claim, const nlohmann::json& evidence) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound-max"},
+          {"model", {{"H", H}, {"set", {{"B", "1"}}}, {"name", "K"}, {"T", "1/1000"}, {"delay", 0}, {"eta", "0"}, {"damping", "2"}}},
+          {"claim", claim}, {"evidence", evidence}};
+}
+
+// The wall K + B (z - 1)/(T z) without delay: b*(K) = K T/2 + B (paper 001 (46), at w = pi/T, c = -1),
+// so with B = 1, b = 2, T = 1/1000: b*(0) = 1 and K_max = 2 (b - B)/T = 2000 exactly.
+TEST(BoundMaxCheck, WallWithoutDelay) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const nlohmann::json ev{{"b0_hi", "1"}, {"witness_c", "-1"}};
+  const std::string wall = "K + B*(z-1)/(T*z)";
+  const Verdict ok = check_certificate(max_cert(wall, exact("2000"), ev));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_TRUE(check_certificate(max_cert(wall, {{"status", "certified"}, {"lo", "1999"}, {"hi", "2001"}}, ev)).verified);
+  const Verdict above = check_certificate(max_cert(wall, exact("2001"), ev));  // b*(2001) > b
+  EXPECT_FALSE(above.verified);
+  EXPECT_NE(above.reason.find("K_max >= "), std::string::npos) << above.reason;
+  const Verdict below = check_certificate(max_cert(wall, exact("1999"), ev));  // b*(1999) < b
+  EXPECT_FALSE(below.verified);
+  EXPECT_NE(below.reason.find("K_max <= "), std::string::npos) << below.reason;
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("2000"), {{"b0_hi", "2"}, {"witness_c", "-1"}})).verified);    // b0 < b
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("2000"), {{"b0_hi", "1/2"}, {"witness_c", "-1"}})).verified);  // b*(0) = 1
+  // K_max = 0 needs b*(0) >= b: here b*(0) = 1 < 2
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("0"), {{"witness_c", "-1"}})).verified);
+  // f1 = T/2 > 0: not infinite
+  EXPECT_FALSE(check_certificate(max_cert(wall, {{"status", "exact"}, {"infinite", true}}, {{"b0_hi", "1"}})).verified);
+  // H = B (z - 1)/(T z) - K: f1 = -T/2 < 0, b*(K) = 1 - K T/2 < 2 for every K >= 0
+  const Verdict inf = check_certificate(max_cert("B*(z-1)/(T*z) - K", {{"status", "exact"}, {"infinite", true}}, {{"b0_hi", "1"}}));
+  EXPECT_TRUE(inf.verified) << inf.reason;
+  // the model: the parameter given a value, H not affine in it, H not depending on it
+  auto d = max_cert(wall, exact("2000"), ev);
+  d["model"]["set"]["K"] = "1";
+  EXPECT_THROW(check_certificate(d), InputError);
+  EXPECT_THROW(check_certificate(max_cert("K*K/1000 + B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  EXPECT_THROW(check_certificate(max_cert("K/(1 + K) + B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  EXPECT_THROW(check_certificate(max_cert("B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  // affine though written with K twice and a division: (K^2 + K)/(K + 1) = K where defined
+  EXPECT_TRUE(check_certificate(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", exact("2000"), ev)).verified);
+}
+
+// H = K with a delay of n samples: b*(K) = (2n + 1) K T/2 (paper 001, Example 4), so K_max =
+// 2 b/((2n + 1) T): n = 1, b = 2, T = 1/1000 gives 4000/3, attained at w = 0 (c = 1).
+TEST(BoundMaxCheck, DelayedGain) {
+  auto c = max_cert("K", {{"status", "exact"}, {"value", "4000/3"}}, {{"b0_hi", "0"}, {"witness_c", "1"}});
+  c["model"]["delay"] = 1;
+  const Verdict ok = check_certificate(c);
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  c["model"]["delay"] = 0;  // b*(K) = K T/2: K_max = 4000
+  EXPECT_FALSE(check_certificate(c).verified);
+}
+
 // r(j 1) at T = 1: Im r = -(1/2) cot(1/2) = -0.91524386085622595963... (mpmath, 40 digits)
 TEST(RCheck, CotOneHalf) {
   auto cert = [](const std::string& re, const std::string& lo, const std::string& hi) {

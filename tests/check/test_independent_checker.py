@@ -145,6 +145,63 @@ class FractionalDelay(unittest.TestCase):
         self.assertTrue(hc.below_band_end(F(-1), 5) and not hc.below_band_end(F(0), 1))
 
 
+def max_cert(H, claim, evidence, delay=0):
+    return {"certificate": "hapstab", "version": 1, "kind": "bound-max",
+            "model": {"H": H, "set": {"B": "1"}, "name": "K", "T": "1/1000", "delay": delay, "eta": "0", "damping": "2"},
+            "claim": claim, "evidence": evidence}
+
+
+class BoundMax(unittest.TestCase):
+    """The cases of test_check.cpp's BoundMaxCheck: the wall K + B (z - 1)/(T z) without delay has
+    b*(K) = K T/2 + B (paper 001 (46)): B = 1, b = 2, T = 1/1000 give K_max = 2000 exactly; H = K with
+    one sample of delay b*(K) = 3 K T/2 (Example 4): K_max = 4000/3."""
+    WALL = "K + B*(z-1)/(T*z)"
+    EV = {"b0_hi": "1", "witness_c": "-1"}
+
+    def code(self, c):
+        return hc.check(c)[0]
+
+    def test_wall(self):
+        ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
+        self.assertEqual(hc.check(max_cert(self.WALL, ex("2000"), self.EV)), (0, "K_max = 2000 (affine in K, degree bound 1)"))
+        self.assertEqual(self.code(max_cert(self.WALL, {"status": "certified", "lo": "1999", "hi": "2001"}, self.EV)), 0)
+        code, why = hc.check(max_cert(self.WALL, ex("2001"), self.EV))
+        self.assertEqual(code, 1)
+        self.assertIn("K_max >= ", why)
+        code, why = hc.check(max_cert(self.WALL, ex("1999"), self.EV))
+        self.assertEqual(code, 1)
+        self.assertIn("K_max <= ", why)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("2000"), {"b0_hi": "2", "witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("2000"), {"b0_hi": "1/2", "witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("0"), {"witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, {"status": "exact", "infinite": True}, {"b0_hi": "1"})), 1)
+        self.assertEqual(self.code(max_cert("B*(z-1)/(T*z) - K", {"status": "exact", "infinite": True}, {"b0_hi": "1"})), 0)
+
+    def test_model(self):
+        ex = {"status": "exact", "value": "2000"}
+        c = max_cert(self.WALL, ex, self.EV)
+        c["model"]["set"]["K"] = "1"
+        self.assertEqual(self.code(c), 2)
+        for H in ("K*K/1000 + B*(z-1)/(T*z)", "K/(1 + K) + B*(z-1)/(T*z)", "B*(z-1)/(T*z)"):
+            code, why = hc.check(max_cert(H, ex, self.EV))
+            self.assertEqual(code, 2, H)
+            self.assertIn("model.H", why)
+        self.assertEqual(self.code(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", ex, self.EV)), 0)
+
+    def test_delayed_gain(self):
+        c = max_cert("K", {"status": "exact", "value": "4000/3"}, {"b0_hi": "0", "witness_c": "1"}, delay=1)
+        self.assertEqual(self.code(c), 0)
+        c["model"]["delay"] = 0
+        self.assertEqual(self.code(c), 1)
+
+    def test_degree_bounds(self):
+        deg = lambda text: hc.parse_h(text, Fraction(1), {"K": Fraction(0)}, leaf=lambda k, t, v: hc.Deg(1 if (k, t) == ("name", "K") else 0, 0))  # noqa: E731
+        for text, nd in (("K", (1, 0)), ("K*z + 1", (1, 0)), ("1/K", (0, 1)), ("K/(K + z)", (1, 1)), ("K^3", (3, 0)),
+                         ("(K + 1)^-2", (0, 2)), ("K + 1/K", (2, 1))):
+            d = deg(text)
+            self.assertEqual((d.n, d.d), nd, text)
+
+
 def wedge_cert(H, K, claims):
     keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
     return {"certificate": "hapstab", "version": 1, "kind": "wedge",
