@@ -72,8 +72,8 @@ WitnessObjective witness_objective(const passivity::BoundProblem& p) {
 }
 
 // A rational c0 in [end_hi, 1] (inside the domain) with f(c0) >= target (B(c0) != 0).
-std::optional<rational> find_witness(const WitnessObjective& o, const rational& target, const passivity::Bound& b,
-                                     const rational& T) {
+std::optional<rational> find_witness(const WitnessObjective& o, const rational& target,
+                                     const std::optional<Enclosure<rational>>& omega, const rational& T) {
   const RationalFunction<rational>& f = o.f;
   auto ok = [&](const rational& c) {
     if (c < o.end_hi || c > 1) return false;
@@ -84,9 +84,9 @@ std::optional<rational> find_witness(const WitnessObjective& o, const rational& 
     if (ok(c)) return c;
   if (o.q > 1)  // a maximum at the end wT = pi, irrational for q >= 4: a simpler rational just inside
     if (auto c0 = first_convergent(o.end_hi, ok)) return c0;
-  if (b.omega_enclosure) {  // cos(w T/q) at the midpoint of the maximiser's enclosure
+  if (omega) {  // cos(w T/q) at the midpoint of the maximiser's enclosure
     using R = mpfloat<300>;
-    const rational w = (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2;
+    const rational w = (omega->lo + omega->hi) / 2;
     const R c = cos(R(w * T / rational(o.q)));
     if (auto c0 = first_convergent(to_rational(c), ok)) return c0;
   }
@@ -101,6 +101,18 @@ std::optional<rational> find_witness(const WitnessObjective& o, const rational& 
     if (auto c0 = first_convergent((r.lo + r.hi) / 2, ok)) return c0;
   }
   return std::nullopt;
+}
+
+// The checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
+// (check/bound_objective.hpp); InputError beyond their limit.
+void check_certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
+  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const integer size = den(tau) * (std::max(H.num().degree(), H.den().degree()) + 1) + num(tau);
+  if (size > certificate_max_size)
+    throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
+                     " exactly, in cos(wT/q) with q = " + den(tau).str() + ": size q (deg H + 1) + P = " +
+                     (size > integer(1000000000L) ? std::string("> 10^9") : size.str()) + ", beyond their limit of " +
+                     std::to_string(certificate_max_size) + " (no certificate)");
 }
 
 nlohmann::json header(const char* kind) {
@@ -118,15 +130,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
                                  const passivity::Bound& b, int digits) {
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
-  {  // the checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
-    const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
-    const integer size = den(tau) * (std::max(p.H.num().degree(), p.H.den().degree()) + 1) + num(tau);
-    if (size > certificate_max_size)
-      throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
-                       " exactly, in cos(wT/q) with q = " + den(tau).str() + ": size q (deg H + 1) + P = " +
-                       (size > integer(1000000000L) ? std::string("> 10^9") : size.str()) +
-                       ", beyond their limit of " + std::to_string(certificate_max_size) + " (no certificate)");
-  }
+  check_certificate_size(p.H, p);
   if (b.infinite)
     throw InputError("--certificate: b* = +inf (a pole on the unit circle where the objective tends to +inf) has no "
                      "certificate yet");
@@ -162,10 +166,86 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   }
   j["claim"] = claim;
   const WitnessObjective obj = witness_objective(p);
-  const auto c0 = find_witness(obj, target - p.eta, b, p.T);
+  const auto c0 = find_witness(obj, target - p.eta, b.omega_enclosure, p.T);
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with f(c0) >= " + target.str() + " was found");
   j["evidence"] = {{"witness_c", c0->str()}};
   if (obj.q > 1) j["evidence"]["domain_c_lo"] = obj.end_lo.str();  // <= cos(pi/q): the checkers' interval [c_lo, 1]
+  return j;
+}
+
+nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits) {
+  const passivity::GainProblem& g = r.problem;
+  const passivity::MaxGain& m = r.max;
+  const std::string K = g.name;
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  if (m.status != Status::exact && m.status != Status::certified)
+    throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
+  if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
+  check_certificate_size(g.base.H, g.base);
+  check_certificate_size(g.H1, g.base);
+  nlohmann::json j = header("bound-max");
+  nlohmann::json mo;
+  mo["H"] = tf.H;
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  mo["set"] = sets;
+  mo["name"] = K;
+  mo["T"] = g.base.T.str();
+  mo["delay"] = g.base.delay;
+  if (g.base.frac_delay) mo["frac_delay"] = g.base.frac_delay->str();
+  mo["eta"] = g.base.eta.str();
+  mo["damping"] = g.b.str();
+  j["model"] = mo;
+  nlohmann::json claim;
+  claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
+                      "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
+  claim["status"] = to_string(m.status);
+  nlohmann::json evidence;
+  const bool zero = m.outcome == Outcome::fails;
+  std::optional<rational> hi;
+  if (m.infinite) {
+    claim["infinite"] = true;
+  } else if (zero) {  // b*(0) >= b: K_max = 0
+    if (m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
+    claim["status"] = "exact";
+    claim["value"] = "0";
+    hi = rational(0);
+  } else {
+    if (!m.enclosure) throw InputError("--certificate: sup " + K + " has no enclosure: no certificate");
+    if (m.status == Status::exact) {
+      claim["value"] = m.value.str();
+      hi = m.value;
+    } else {  // what is printed: the enclosure rounded outward at digits + 3 (cli/bound_max.cpp)
+      const std::string lo_s = decimal_outward(m.enclosure->lo, digits + 3, -1), hi_s = decimal_outward(m.enclosure->hi, digits + 3, +1);
+      claim["lo"] = parse_rational(lo_s, "enclosure").str();
+      claim["hi"] = parse_rational(hi_s, "enclosure").str();
+      claim["printed_lo"] = lo_s;
+      claim["printed_hi"] = hi_s;
+      hi = parse_rational(hi_s, "enclosure");
+    }
+  }
+  if (!zero) {  // b*(0) <= b0 < b, the printed b*(0) rounded outward
+    if (m.at_zero.infinite || !m.at_zero.enclosure) throw InputError("--certificate: b*(0) has no enclosure");
+    const rational b0 = parse_rational(passivity::reported_enclosure(m.at_zero, digits).hi, "b*(0)");
+    if (b0 >= g.b) throw InputError("--certificate: b*(0) is not shown below b at " + std::to_string(digits) + " digits; raise --digits");
+    evidence["b0_hi"] = b0.str();
+  }
+  std::optional<long> q;
+  if (hi) {  // b*(hi) >= b: a witness for H0 + hi H1
+    passivity::BoundProblem p = passivity::at_gain(g, *hi);
+    const WitnessObjective obj = witness_objective(p);
+    const auto omega = zero ? m.at_zero.omega_enclosure : m.omega;
+    const auto c1 = find_witness(obj, g.b - p.eta, omega, p.T);
+    if (!c1) throw NumericalError("--certificate: no rational witness c1 with b*(" + K + " = " + hi->str() + ") >= b was found");
+    evidence["witness_c"] = c1->str();
+    if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
+  } else {
+    const WitnessObjective obj = witness_objective(g.base);
+    if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
+  }
+  j["claim"] = claim;
+  j["evidence"] = evidence;
   return j;
 }
 

@@ -11,6 +11,7 @@
 
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
@@ -25,6 +26,15 @@ namespace hapstab::cli {
 /// witness is found.
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits);
+
+/// The certificate of `bound --max K --damping b` (check/bound_max_check.hpp): H as written by
+/// --H with K free, the claim "K_max in [lo, hi]" (the printed enclosure), "= v" [exact], "= 0"
+/// (b*(0) >= b) or "= +inf", and the evidence: b0_hi (b*(0) <= b0_hi < b, when K_max > 0), a
+/// witness c1 with f(c1) >= b for H0 + hi H1 (when finite), domain_c_lo for a fractional delay.
+/// InputError (exit 2) for what has no certificate: H not given by --H, an undecided or numeric
+/// answer, b*(0) = +inf, a delay beyond the checkers' size limit; NumericalError when no witness is
+/// found.
+nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit
