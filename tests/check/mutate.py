@@ -5,7 +5,8 @@
 
 Produces certificates of `bound` (random virtual environments, integer delays, eta; reported as
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
-Tustin damper's pole at the band's end), `r`
+Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
+environments, delays, fractional delays; K_max finite, 0 and +inf), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
@@ -326,6 +327,157 @@ def r_mutants(cert, rng, hapstab, cache):
     return out
 
 
+MAX_TEMPLATES = [  # (H, the parameter to maximise, the others): affine in it
+    ("K + B*(z-1)/(T*z)", "K", ["B"]),
+    ("K + B*(z-1)/(T*z)", "B", ["K"]),                       # b* convex, not monotone, in B with a delay
+    ("K + B*2*(z-1)/(T*(z+1))", "K", ["B"]),                  # Tustin: a pole at z = -1
+    ("K*(z - a)/(z^2 - b*z + c)", "K", ["a", "b", "c"]),
+    ("B*(z-1)/(T*z) - K", "K", ["B"]),                        # f1 < 0: K_max = +inf when b*(0) < b
+    ("K/(z + a)^2 + B*(z-1)/(T*z)", "B", ["K", "a"]),
+]
+
+
+def rand_max_model(rng):
+    H, name, others = rng.choice(MAX_TEMPLATES)
+    m = rand_model(rng)
+    m["H"], m["name"] = H, name
+    m["set"] = {n: rand_value(n, rng) for n in others}
+    if name == "B" and "K" in m["set"]:
+        m["set"]["K"] = str(rng.randint(1, 3000))
+    if "b" in m["set"]:
+        m["set"]["b"] = str(Fraction(rng.randint(-90, 90), 100) * (1 + Fraction(m["set"]["c"])))
+    m["delay"] = rng.choice([0, 0, 1, 1, 2, 3])
+    if rng.random() < 0.3:
+        q = rng.choice([2, 3, 4, 5])
+        m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, 2 * q) if k % q]), q) * Fraction(m["T"]))
+    m["damping"] = rng.choice(["1/2", "1", "3/2", "2", "5", "20"])
+    return m
+
+
+def max_args(m, digits):
+    a = bound_args({k: v for k, v in m.items() if k not in ("name", "damping")}, digits)
+    return a + ["--max", m["name"], "--damping", m["damping"]]
+
+
+def max_truth(hapstab, m, cache):
+    """hapstab's K_max of model m at 40 digits: (lo, hi), "inf", or None (no answer)."""
+    key = "max" + json.dumps(m, sort_keys=True)
+    if key not in cache:
+        rc, out, _ = run(hapstab, max_args(m, 40) + ["--json"])
+        res = None
+        if rc in (0, 1):
+            j = json.loads(out)
+            if j.get("max") == "inf":
+                res = "inf"
+            elif j.get("status") in ("exact", "certified") and j.get("enclosure"):
+                res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
+            elif j.get("max") == "0" and j.get("status") == "exact":
+                res = (Fraction(0), Fraction(0))
+        cache[key] = res
+    return cache[key]
+
+
+def max_claim(cert):
+    c = cert["claim"]
+    if c.get("infinite"):
+        return "inf"
+    if c["status"] == "exact":
+        return Fraction(c["value"]), Fraction(c["value"])
+    return Fraction(c["lo"]), Fraction(c["hi"])
+
+
+def set_max_claim(cert, lo, hi):
+    c = copy.deepcopy(cert)
+    q = c["claim"]["quantity"]
+    c["claim"] = {"quantity": q, "status": "certified", "lo": frac(lo), "hi": frac(hi)}
+    return c
+
+
+def max_mutants(cert, rng, hapstab, cache):
+    out = [("unmutated", cert, "accept")]
+    ev, m = cert["evidence"], cert["model"]
+    claim = max_claim(cert)
+    b = Fraction(m["damping"])
+    if claim == "inf":
+        out.append(("+inf claimed as 1", with_field(with_field(cert, ["claim"], {"status": "exact", "value": "1"}),
+                                                  ["evidence", "witness_c"], "1"), "refute"))
+    else:
+        lo, hi = claim
+        scale = max(hi, Fraction(1))
+        tiny = scale / 10 ** rng.randint(40, 60)
+        gap = max(hi - lo, tiny)
+        need_b0 = "refute" if "b0_hi" in ev else "malformed"  # K_max = 0 has no b0_hi: a claim above 0 needs it
+        out.append(("claimed above the enclosure", set_max_claim(cert, hi + gap / 2 + tiny, hi + 2 * gap + tiny), need_b0))
+        if lo > 0:
+            out.append(("claimed below the enclosure", set_max_claim(cert, lo / 2, lo - tiny), "refute"))
+            out.append(("lo lowered", set_max_claim(cert, lo / 2, hi), "accept"))
+        out.append(("lo negative", set_max_claim(cert, -1 - lo, hi), "refute"))
+        out.append(("lo > hi", set_max_claim(cert, hi + tiny, hi), "refute"))
+        out.append(("hi raised", set_max_claim(cert, lo, hi + scale / 10), "agree"))
+        if cert["claim"]["status"] == "exact":
+            out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), need_b0))
+            if lo > 0:
+                out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+        else:
+            pl = cert["claim"]["printed_lo"]
+            moved = pl[:-1] + str((int(pl[-1]) + 1) % 10) if pl[-1].isdigit() else pl + "1"
+            out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], moved), "refute"))
+        c1 = Fraction(ev["witness_c"])
+        for name, x in (("witness - 1/1000", c1 - Fraction(1, 1000)), ("witness negated", -c1),
+                        ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+            if -1 <= x <= 1:
+                out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+        out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(-1 - Fraction(1, rng.randint(2, 1000)))), "refute"))
+        inf = with_field(cert, ["claim"], {"status": cert["claim"]["status"], "infinite": True})
+        out.append(("claimed +inf", inf, "refute" if "b0_hi" in ev else "malformed"))
+        out.append(("deleted evidence.witness_c", deleted(cert, ["evidence", "witness_c"]), "malformed"))
+    if "b0_hi" in ev:
+        b0 = Fraction(ev["b0_hi"])
+        out.append(("b0_hi = b", with_field(cert, ["evidence", "b0_hi"], frac(b)), "refute"))
+        out.append(("b0_hi below b*(0)", with_field(cert, ["evidence", "b0_hi"], frac(b0 - max(abs(b0), Fraction(1)) / 1000)), "refute"))
+        out.append(("deleted evidence.b0_hi", deleted(cert, ["evidence", "b0_hi"]), "malformed"))
+    if "domain_c_lo" in ev:
+        c_lo = Fraction(ev["domain_c_lo"])
+        out.append(("domain_c_lo above the band's end", with_field(cert, ["evidence", "domain_c_lo"], frac(c_lo + Fraction(1, 10 ** 6))), "refute"))
+    # the model edited: expectation from hapstab's own K_max of the edited model
+    edits = [("damping x 1.001", dict(m, damping=frac(b * Fraction(1001, 1000)))), ("damping + 1", dict(m, damping=frac(b + 1))),
+             ("damping halved", dict(m, damping=frac(b / 2))), ("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2))),
+             ("delay + 1", dict(m, delay=m["delay"] + 1)), ("eta + 1/10", dict(m, eta=frac(Fraction(m["eta"]) + Fraction(1, 10))))]
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    h = m["H"]
+    for a_, b_ in (("+", "-"), ("-", "+")):
+        if a_ in h:
+            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
+    for name, nm in edits:
+        truth = max_truth(hapstab, nm, cache)
+        if truth is None:
+            expect = "agree"
+        elif truth == "inf" or claim == "inf":
+            expect = "agree" if truth == claim else "refute"
+        else:
+            expect = "refute" if claim[1] < truth[0] or claim[0] > truth[1] else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    # malformed
+    for path in (["model", "name"], ["model", "damping"], ["model", "H"], ["model", "T"], ["claim", "status"], ["model"], ["evidence"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    K = m["name"]
+    out.append(("the parameter given a value", with_field(cert, ["model", "set"], dict(m["set"], **{K: "1"})), "malformed"))
+    out.append(("H not affine (times the parameter)", with_field(cert, ["model", "H"], "(" + h + ")*" + K), "malformed"))
+    out.append(("H not affine (over 1 + the parameter)", with_field(cert, ["model", "H"], "(" + h + ")/(1 + " + K + ")"), "malformed"))
+    out.append(("name of no parameter", with_field(cert, ["model", "name"], "Q"), "malformed"))
+    out.append(("damping negative", with_field(cert, ["model", "damping"], "-" + m["damping"]), "malformed"))
+    out.append(("damping a decimal", with_field(cert, ["model", "damping"], "0.5"), "malformed"))
+    out.append(("claim.infinite a string", with_field(cert, ["claim", "infinite"], "yes"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("added evidence.omega", with_field(cert, ["evidence", "omega"], "1"), "malformed"))
+    return out
+
+
 STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pole at s = 0 (exact data)
     ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", ["m", "K", "B"]),            # mass on a virtual wall (001)
     ("1/(m*s^2)", None, "K + B*2*(z-1)/(T*(z+1))", ["m", "K", "B"]),      # Tustin damper
@@ -604,6 +756,18 @@ def main():
             certs.append(("r", json.load(f)))
     scache = {}
     for i in range(max(a.models // 2, 2)):
+        m = rand_max_model(rng)
+        path = os.path.join(tmp, "m%d.json" % i)
+        rc, out, err = run(a.hapstab, max_args(m, rng.choice([10, 15, 20, 30])) + ["--certificate", path])
+        if rc not in (0, 1) or not os.path.exists(path):
+            why = "bound-max: " + err.strip().split("error: ", 1)[-1].split(" (")[0][:70]
+            skipped[why] = skipped.get(why, 0) + 1
+            if rc not in (1, 2):  # not a refusal: show the model
+                print("bound-max producer exit %d on %s: %s" % (rc, json.dumps(m), err.strip()[:200]))
+            continue
+        with open(path) as f:
+            certs.append(("bound-max", json.load(f)))
+    for i in range(max(a.models // 2, 2)):
         m = rand_stability(rng)
         cert = stability_produce(a.hapstab, m, scache, tmp)
         if not isinstance(cert, dict):
@@ -621,6 +785,8 @@ def main():
     for kind, cert in certs:
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "bound-max":
+            ms = max_mutants(cert, rng, a.hapstab, cache)
         elif kind == "wedge":
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         else:
@@ -685,6 +851,13 @@ def main():
               "upper bound shown across the end (P U_{q-1}) %d" % (
                   sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
                   sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
+    max_certs = [c for k, c in certs if k == "bound-max"]
+    if max_certs:
+        cl = [max_claim(c) for c in max_certs]
+        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
+            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
+            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
+            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
     print("false or malformed claims accepted: %d" % accepted_false)
     print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
     if failures:
