@@ -794,6 +794,114 @@ def check_bound_max(c):
         K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), K, D)
 
 
+# ---------------------------------------------------------------- passivity-level
+def re_over_circle(P, Q):
+    """(E^, F^) with Re{P/Q}(e^{j theta}) = E^(c)/F^(c), c = cos(theta), F^ = (1+c)^m |Qt|^2:
+    t = tan(theta/2), z = (1+jt)/(1-jt), Pt = P(z)(1-jt)^d, Qt likewise (d = max(deg P, deg Q)),
+    Re{P/Q} = Re(Pt conj(Qt))/|Qt|^2, both even in t (real coefficients), so polynomials in
+    u = t^2 = (1-c)/(1+c), multiplied out by (1+c)^m."""
+    d = max(len(P), len(Q)) - 1
+
+    def cmul(x, y):
+        return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
+    plus, minus = ([Fraction(1)], [Fraction(0), Fraction(1)]), ([Fraction(1)], [Fraction(0), Fraction(-1)])
+    pw_plus, pw_minus = [([Fraction(1)], [])], [([Fraction(1)], [])]
+    for _ in range(d):
+        pw_plus.append(cmul(pw_plus[-1], plus))
+        pw_minus.append(cmul(pw_minus[-1], minus))
+
+    def tilde(coeffs):
+        re, im = [], []
+        for k, a in enumerate(coeffs):
+            if a != 0:
+                x = cmul(pw_plus[k], pw_minus[d - k])
+                re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
+        return re, im
+    Pr, Pi = tilde(P)
+    Qr, Qi = tilde(Q)
+    E = padd(pmul(Pr, Qr), pmul(Pi, Qi))
+    F = padd(pmul(Qr, Qr), pmul(Qi, Qi))
+    if any(x != 0 for x in E[1::2] + F[1::2]):
+        raise AssertionError("parity in t")
+    Eu, Fu = E[0::2], F[0::2]
+    m = max(len(Eu), len(Fu)) - 1
+
+    def hat(q):
+        out = []
+        for i, a in enumerate(q):
+            if a != 0:
+                out = padd(out, pscale(pmul(ppow([Fraction(1), Fraction(-1)], i), ppow([Fraction(1), Fraction(1)], m - i)), a))
+        return out
+    return hat(Eu), hat(Fu)
+
+
+def check_passivity_level(c):
+    """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
+    (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
+    level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("H", "set", "T", "kind"), "model")
+    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("witness_c",), "evidence")
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    kind = model.get("kind")
+    if kind not in ("isp", "osp"):
+        raise Malformed("model.kind: missing or neither \"isp\" nor \"osp\"")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    try:
+        G = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    if not G.num:
+        raise Malformed("model.H: G = 0")
+    if len(G.num) > len(G.den):
+        raise Malformed("model.H: G is not causal")
+    if len(G.den) - 1 > MAX_DEGREE:
+        raise TooLarge("degree %d of G above this checker's limit %d" % (len(G.den) - 1, MAX_DEGREE))
+    ok, why = schur_cohn(G.den)
+    if not ok:
+        raise Malformed("model.H: G is not Schur stable (%s)" % why)
+    status = claim.get("status")
+    if status == "exact":
+        lo = hi = exact(claim, "value", "claim")
+    elif status == "certified":
+        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo > hi:
+            return False, "claim: lo > hi"
+    else:
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    for key in ("printed_lo", "printed_hi", "printed"):
+        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    osp = kind == "osp"
+    E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
+    one = Fraction(1)
+    if osp:
+        if max_positive(F, F, -one, one):
+            raise Malformed("model.H: G has a zero on the unit circle: delta* is not Lemma 1's level")
+        if lo <= 0:
+            raise Malformed("claim: an OSP value <= 0 is an upper bound of Lemma 1's level only")
+    name = "delta*" if osp else "phi*"
+    why = nonneg_on(psub(E, pscale(F, lo)), -one, one)
+    if why:
+        return False, "%s >= %s (%.12g) fails: E(c) - lo F(c) is %s" % (name, short(lo), float(lo), why)
+    c0 = exact(evidence, "witness_c", "evidence")
+    if c0 < -1 or c0 > 1:
+        return False, "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
+    w0 = peval(E, c0) / peval(F, c0)
+    if w0 > hi:
+        return False, "%s <= %s (%.12g) not shown: the value at the witness c0 = %s is %.12g > hi" % (
+            name, short(hi), float(hi), short(c0), float(w0))
+    return True, "%s %s" % (name, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)))
+
+
 # ---------------------------------------------------------------- r
 def check_r(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
@@ -1113,6 +1221,8 @@ def check(c):
             ok, why = check_bound(c)
         elif kind == "bound-max":
             ok, why = check_bound_max(c)
+        elif kind == "passivity-level":
+            ok, why = check_passivity_level(c)
         elif kind == "r":
             ok, why = check_r(c)
         elif kind == "stability":
@@ -1120,7 +1230,7 @@ def check(c):
         elif kind == "wedge":
             ok, why = check_wedge(c)
         else:
-            raise Malformed("kind: %r has no checker (known: bound, bound-max, r, stability, wedge)" % (kind,))
+            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)" % (kind,))
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

@@ -225,6 +225,36 @@ TEST(BoundMaxCheck, DelayedGain) {
   EXPECT_FALSE(check_certificate(c).verified);
 }
 
+nlohmann::json level_cert(const std::string& H, const std::string& kind, const nlohmann::json& claim, const std::string& witness) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "passivity-level"},
+          {"model", {{"H", H}, {"set", nlohmann::json::object()}, {"T", "1/1000"}, {"kind", kind}}},
+          {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
+}
+
+// G = 1 + 1/(z - 1/2) = (z + 1/2)/(z - 1/2), c = cos(theta): Re G = 1 + (c - 1/2)/(5/4 - c), increasing
+// in c, so phi* = Re G(-1) = 1/3; 1/G = (z - 1/2)/(z + 1/2), Re(1/G) = (3/4)/(5/4 + c), so delta* =
+// Re(1/G)(1) = 1/3.
+TEST(PassivityLevelCheck, FirstOrder) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const std::string G = "1 + 1/(z-0.5)";
+  const Verdict isp = check_certificate(level_cert(G, "isp", exact("1/3"), "-1"));
+  EXPECT_TRUE(isp.verified) << isp.reason;
+  const Verdict osp = check_certificate(level_cert(G, "osp", exact("1/3"), "1"));
+  EXPECT_TRUE(osp.verified) << osp.reason;
+  const Verdict away = check_certificate(level_cert(G, "isp", exact("1/3"), "1"));  // Re G(1) = 2
+  EXPECT_FALSE(away.verified);
+  EXPECT_NE(away.reason.find("not shown"), std::string::npos) << away.reason;
+  const Verdict high = check_certificate(level_cert(G, "isp", exact("1/2"), "-1"));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("phi* >= "), std::string::npos) << high.reason;
+  EXPECT_TRUE(check_certificate(level_cert(G, "isp", {{"status", "certified"}, {"lo", "0"}, {"hi", "1/2"}}, "-1/2")).verified);  // Re G(-1/2) = 3/7
+  // hypotheses: G Schur stable; OSP: no zero of G on the circle and delta* > 0
+  EXPECT_THROW(check_certificate(level_cert("1/(z - 2)", "isp", exact("0"), "1")), InputError);
+  EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("0"), "1")), InputError);
+  EXPECT_THROW(check_certificate(level_cert("1/(z - 0.5)", "osp", exact("-3/2"), "-1")), InputError);  // an upper bound only
+  EXPECT_THROW(check_certificate(level_cert("z^2/(z - 0.5)", "isp", exact("0"), "1")), InputError);   // not causal
+}
+
 // r(j 1) at T = 1: Im r = -(1/2) cot(1/2) = -0.91524386085622595963... (mpmath, 40 digits)
 TEST(RCheck, CotOneHalf) {
   auto cert = [](const std::string& re, const std::string& lo, const std::string& hi) {

@@ -202,6 +202,32 @@ class BoundMax(unittest.TestCase):
             self.assertEqual((d.n, d.d), nd, text)
 
 
+def level_cert(H, kind, claim, witness):
+    return {"certificate": "hapstab", "version": 1, "kind": "passivity-level",
+            "model": {"H": H, "set": {}, "T": "1/1000", "kind": kind}, "claim": claim, "evidence": {"witness_c": witness}}
+
+
+class PassivityLevel(unittest.TestCase):
+    """test_check.cpp's PassivityLevelCheck: G = 1 + 1/(z - 1/2) has phi* = Re G(-1) = 1/3 and
+    delta* = Re(1/G)(1) = (3/4)/(9/4) = 1/3 (Re G = 1 + (c - 1/2)/(5/4 - c), Re 1/G = (3/4)/(5/4 + c))."""
+
+    def test_first_order(self):
+        ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
+        G = "1 + 1/(z-0.5)"
+        self.assertEqual(hc.check(level_cert(G, "isp", ex("1/3"), "-1")), (0, "phi* = 1/3"))
+        self.assertEqual(hc.check(level_cert(G, "osp", ex("1/3"), "1")), (0, "delta* = 1/3"))
+        code, why = hc.check(level_cert(G, "isp", ex("1/3"), "1"))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        code, why = hc.check(level_cert(G, "isp", ex("1/2"), "-1"))
+        self.assertEqual(code, 1)
+        self.assertIn("phi* >= ", why)
+        self.assertEqual(hc.check(level_cert(G, "isp", {"status": "certified", "lo": "0", "hi": "1/2"}, "-1/2"))[0], 0)
+        for H, kind, v in (("1/(z - 2)", "isp", "0"), ("(z + 1)/(z - 0.5)", "osp", "0"), ("1/(z - 0.5)", "osp", "-3/2"),
+                           ("z^2/(z - 0.5)", "isp", "0")):
+            self.assertEqual(hc.check(level_cert(H, kind, ex(v), "1"))[0], 2, H)
+
+
 def wedge_cert(H, K, claims):
     keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
     return {"certificate": "hapstab", "version": 1, "kind": "wedge",
