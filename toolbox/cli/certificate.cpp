@@ -249,6 +249,50 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   return j;
 }
 
+nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
+                                           const lmi::PassivityLevel& c, bool is_level, int digits) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds G as written by --H; with --num/--den, --mat or --ss it is not implemented yet");
+  if (c.status != Status::exact && c.status != Status::certified)
+    throw InputError("--certificate: the level is not certified here (the certified frequency path gave none): no certificate");
+  if (!is_level || !c.enclosure)
+    throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
+                     "on the unit circle): no certificate");
+  nlohmann::json j = header("passivity-level");
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
+  nlohmann::json claim;
+  claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
+                          : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
+  rational hi;
+  if (c.status == Status::exact && c.enclosure->lo == c.enclosure->hi) {
+    claim["status"] = "exact";
+    claim["value"] = c.enclosure->lo.str();
+    hi = c.enclosure->lo;
+  } else {  // the enclosure as printed, rounded outward (cmd_passivity_level.cpp)
+    const std::string lo_s = decimal_outward(c.enclosure->lo, digits, -1), hi_s = decimal_outward(c.enclosure->hi, digits, +1);
+    claim["status"] = "certified";
+    claim["lo"] = parse_rational(lo_s, "enclosure").str();
+    claim["hi"] = parse_rational(hi_s, "enclosure").str();
+    claim["printed_lo"] = lo_s;
+    claim["printed_hi"] = hi_s;
+    hi = parse_rational(hi_s, "enclosure");
+  }
+  j["claim"] = claim;
+  // Re W = -f with f the objective of (z - 1) W at T = 1 (the producer's route): a witness with f >= -hi
+  const QPoly zm1{rational(-1), rational(1)};
+  const RationalFunction<rational> W = osp ? RationalFunction<rational>(G.den(), G.num()) : G;
+  WitnessObjective obj;
+  obj.f = passivity::objective(RationalFunction<rational>(zm1 * W.num(), W.den()), rational(1), 0).f;
+  std::optional<Enclosure<rational>> theta;
+  if (c.theta_min >= 0) theta = Enclosure<rational>{exact_rational(c.theta_min), exact_rational(c.theta_min)};
+  const auto c0 = find_witness(obj, -hi, theta, rational(1));
+  if (!c0) throw NumericalError("--certificate: no rational witness c0 with Re W(c0) <= " + hi.str() + " was found");
+  j["evidence"] = {{"witness_c", c0->str()}};
+  return j;
+}
+
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits) {
   nlohmann::json j = header("r");
   j["model"] = {{"T", T.str()}, {"omega", omega.str()}};

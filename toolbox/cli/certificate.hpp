@@ -13,6 +13,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/contact/wedge.hpp"
+#include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
@@ -35,6 +36,13 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
 /// answer, b*(0) = +inf, a delay beyond the checkers' size limit; NumericalError when no witness is
 /// found.
 nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits);
+
+/// The certificate of `passivity-level --H` (check/passivity_level_check.hpp): G as written, the
+/// kind (isp, osp), the certified frequency level c as claim (exact, or its enclosure printed at
+/// `digits`), a witness c0 = cos(theta0) with Re W(c0) <= hi (W = G, or 1/G for osp). InputError
+/// (exit 2) when G is not given by --H, or c is not a certified level (an OSP value <= 0).
+nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
+                                           const lmi::PassivityLevel& c, bool is_level, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit
