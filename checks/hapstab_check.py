@@ -796,7 +796,7 @@ def check_bound_max(c):
 
 # ---------------------------------------------------------------- passivity-level
 def re_over_circle(P, Q):
-    """(E^, F^) with Re{P/Q}(e^{j theta}) = E^(c)/F^(c), c = cos(theta), F^ = (1+c)^m |Qt|^2:
+    """(E^, F^) with Re{P/Q}(e^{j theta}) = E^(c)/F^(c), c = cos(theta), F^ = (1+c)^d |Qt|^2 = 2^d |Q|^2:
     t = tan(theta/2), z = (1+jt)/(1-jt), Pt = P(z)(1-jt)^d, Qt likewise (d = max(deg P, deg Q)),
     Re{P/Q} = Re(Pt conj(Qt))/|Qt|^2, both even in t (real coefficients), so polynomials in
     u = t^2 = (1-c)/(1+c), multiplied out by (1+c)^m."""
@@ -824,7 +824,10 @@ def re_over_circle(P, Q):
     if any(x != 0 for x in E[1::2] + F[1::2]):
         raise AssertionError("parity in t")
     Eu, Fu = E[0::2], F[0::2]
-    m = max(len(Eu), len(Fu)) - 1
+    # m = d, not the degrees found: (1+c)^d (1+u)^d = 2^d, so F^ = 2^d |Q(e^{j theta})|^2 exactly, also
+    # at c = -1 (theta = pi), where a root of Q at z = -1 lowers the degree of F in u (the campaign
+    # found a zero of G at z = -1 missed with the smaller m)
+    m = d
 
     def hat(q):
         out = []

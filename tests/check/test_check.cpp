@@ -251,6 +251,7 @@ TEST(PassivityLevelCheck, FirstOrder) {
   // hypotheses: G Schur stable; OSP: no zero of G on the circle and delta* > 0
   EXPECT_THROW(check_certificate(level_cert("1/(z - 2)", "isp", exact("0"), "1")), InputError);
   EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("0"), "1")), InputError);
+  EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("1/10"), "1")), InputError);  // zero at theta = pi
   EXPECT_THROW(check_certificate(level_cert("1/(z - 0.5)", "osp", exact("-3/2"), "-1")), InputError);  // an upper bound only
   EXPECT_THROW(check_certificate(level_cert("z^2/(z - 0.5)", "isp", exact("0"), "1")), InputError);   // not causal
 }

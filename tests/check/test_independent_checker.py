@@ -223,6 +223,8 @@ class PassivityLevel(unittest.TestCase):
         self.assertEqual(code, 1)
         self.assertIn("phi* >= ", why)
         self.assertEqual(hc.check(level_cert(G, "isp", {"status": "certified", "lo": "0", "hi": "1/2"}, "-1/2"))[0], 0)
+        # (z + 1)/(z - 0.5) with lo > 0: a zero of G at z = -1 (theta = pi) must be seen there too
+        self.assertEqual(hc.check(level_cert("(z + 1)/(z - 0.5)", "osp", ex("1/10"), "1"))[0], 2)
         for H, kind, v in (("1/(z - 2)", "isp", "0"), ("(z + 1)/(z - 0.5)", "osp", "0"), ("1/(z - 0.5)", "osp", "-3/2"),
                            ("z^2/(z - 0.5)", "isp", "0")):
             self.assertEqual(hc.check(level_cert(H, kind, ex(v), "1"))[0], 2, H)
