@@ -6,7 +6,8 @@
 Produces certificates of `bound` (random virtual environments, integer delays, eta; reported as
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
 Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
-environments, delays, fractional delays; K_max finite, 0 and +inf), `r`
+environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-level` (SISO G of five
+families, ISP and OSP), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
@@ -478,6 +479,108 @@ def max_mutants(cert, rng, hapstab, cache):
     return out
 
 
+LEVEL_TEMPLATES = [  # SISO G(z), Schur stable for the values drawn
+    ("1 + K/(z - a)", ["K", "a"]),
+    ("(z - a)/(z - b)", ["a", "b"]),
+    ("K*(z^2 + p*z + r)/(z^2 - b*z + c)", ["K", "p", "r", "b", "c"]),
+    ("K + B*(z-1)/(T*z)", ["K", "B"]),
+    ("(K*z + 1)/(z*(z - a))", ["K", "a"]),
+]
+
+
+def rand_level(rng):
+    H, names = rng.choice(LEVEL_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n in ("K", "B"):
+            sets[n] = rng.choice([str(rng.randint(1, 20)), "%d/%d" % (rng.randint(1, 20), rng.randint(2, 40))])
+        else:
+            sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
+    if "c" in sets:
+        sets["b"] = frac(Fraction(rng.randint(-90, 90), 100) * (1 + Fraction(sets["c"])))
+    return {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/100"]), "kind": rng.choice(["isp", "osp"])}
+
+
+def level_args(m, digits=17):
+    a = ["passivity-level", "--H", m["H"], "--T", m["T"], "--kind", m["kind"], "--digits", str(digits)]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def level_produce(hapstab, m, cache, tmp, digits=17):
+    return produce(hapstab, level_args(m, digits), "level%d" % digits + json.dumps(m, sort_keys=True), "l-edit.json", cache, tmp)
+
+
+def level_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cl, m = cert["claim"], cert["model"]
+    lo, hi = (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+    scale = max(abs(lo), Fraction(1))
+    tiny = scale / 10 ** rng.randint(40, 60)
+    gap = max(hi - lo, tiny)
+
+    def claim(l, h):
+        c = copy.deepcopy(cert)
+        c["claim"] = {"quantity": cl["quantity"], "status": "certified", "lo": frac(l), "hi": frac(h)}
+        return c
+    osp = m["kind"] == "osp"
+    out.append(("claimed above the level", claim(hi + gap / 2 + tiny, hi + 2 * gap + tiny), "refute"))
+    below_lo = lo - 2 * gap - tiny
+    out.append(("claimed below the level", claim(below_lo, lo - gap / 2 - tiny),
+                "refute" if not osp or below_lo > 0 else "malformed"))
+    out.append(("lo lowered", claim(lo - min(tiny, lo / 2) if osp else lo - scale, hi), "accept"))
+    out.append(("hi raised", claim(lo, hi + scale), "accept"))
+    out.append(("lo > hi", claim(hi + tiny, hi), "refute"))
+    if cl["status"] == "exact":
+        out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), "refute"))
+        out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+    else:
+        pl = cl["printed_lo"]
+        out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], pl + "1"), "refute"))
+    c0 = Fraction(cert["evidence"]["witness_c"])
+    for name, x in (("witness - 1/1000", c0 - Fraction(1, 1000)), ("witness negated", -c0),
+                    ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+        if -1 <= x <= 1:
+            out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+    out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"))
+    # the model edited: hapstab's own certificate of the edited model decides
+    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))]
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1/10", x + Fraction(1, 10)), ("sign flipped", -x)):
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    h = m["H"]
+    for a_, b_ in (("+", "-"), ("-", "+")):
+        if a_ in h:
+            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
+    for name, nm in edits:
+        other = level_produce(hapstab, nm, cache, tmp, 30)
+        if isinstance(other, dict):
+            ocl = other["claim"]
+            olo, ohi = (Fraction(ocl["value"]),) * 2 if ocl["status"] == "exact" else (Fraction(ocl["lo"]), Fraction(ocl["hi"]))
+            expect = "refute" if hi < olo or lo > ohi else "agree"
+        else:
+            expect = "same"  # no certificate of the edited model: both checkers give one exit, whichever
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["model", "H"], ["model", "T"], ["model", "kind"], ["claim", "status"],
+                 ["evidence", "witness_c"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["model", "kind"], "io"), "malformed"))
+    out.append(("G unstable", with_field(cert, ["model", "H"], "(" + h + ")/(z - 2)"), "malformed"))
+    out.append(("G not causal", with_field(cert, ["model", "H"], "z^2*(" + h + ")"), "malformed"))
+    out.append(("G with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z + 1)"), "malformed"))
+    out.append(("T a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    if osp:
+        out.append(("OSP claim <= 0", claim(-scale, -scale / 2), "malformed"))
+        out.append(("G with a zero on the circle", with_field(cert, ["model", "H"], "(" + h + ")*(z + 1)/z"), "malformed"))
+    return out
+
+
 STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pole at s = 0 (exact data)
     ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", ["m", "K", "B"]),            # mass on a virtual wall (001)
     ("1/(m*s^2)", None, "K + B*2*(z-1)/(T*(z+1))", ["m", "K", "B"]),      # Tustin damper
@@ -768,6 +871,12 @@ def main():
         with open(path) as f:
             certs.append(("bound-max", json.load(f)))
     for i in range(max(a.models // 2, 2)):
+        cert = level_produce(a.hapstab, rand_level(rng), scache, tmp, rng.choice([10, 17, 30]))
+        if not isinstance(cert, dict):
+            skipped["passivity-level: exit %s" % cert] = skipped.get("passivity-level: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("passivity-level", cert))
+    for i in range(max(a.models // 2, 2)):
         m = rand_stability(rng)
         cert = stability_produce(a.hapstab, m, scache, tmp)
         if not isinstance(cert, dict):
@@ -787,6 +896,8 @@ def main():
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "bound-max":
             ms = max_mutants(cert, rng, a.hapstab, cache)
+        elif kind == "passivity-level":
+            ms = level_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "wedge":
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         else:
@@ -817,9 +928,11 @@ def main():
         ok = True
         if pcode == 3:
             counts[("py not checked", kind)] = counts.get(("py not checked", kind), 0) + 1
-            ok = expect == "agree" or ccode == want_code[expect]
+            ok = expect in ("agree", "same") or ccode == want_code[expect]
         elif expect == "agree":
             ok = ccode == pcode and ccode in (0, 1)
+        elif expect == "same":
+            ok = ccode == pcode
         else:
             ok = ccode == want_code[expect] and pcode == want_code[expect]
         if ok and expect in ("refute", "malformed") and (not creason or not preason):
@@ -836,11 +949,11 @@ def main():
     for kd in kinds:
         per = [(e, cj["exit"], pc) for (k, _, _, e), cj, (pc, _) in zip(mutants, cpp, py) if k == kd]
         print("  %s: %d mutants (accept %d, refute %d, malformed %d, agree %d), false or malformed accepted %d" % (
-            kd, len(per), *(sum(1 for e, _, _ in per if e == x) for x in ("accept", "refute", "malformed", "agree")),
+            kd, len(per), *(sum(1 for e, _, _ in per if e in x) for x in (("accept",), ("refute",), ("malformed",), ("agree", "same"))),
             sum(1 for e, ce, pe in per if e in ("refute", "malformed") and (ce == 0 or pe == 0))))
     print("mutants: %d; expected accept %d, refute %d, malformed %d, agree %d" % (
         n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e == "refute"),
-        sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e == "agree")))
+        sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e in ("agree", "same"))))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
     frac_certs = [c for k, c in certs if k == "bound-frac"]
