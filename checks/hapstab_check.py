@@ -765,6 +765,8 @@ def check_bound_max(c):
             if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
                 return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
+    if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
+        return False, "evidence.domain_c_lo = %s is not shown <= cos(pi/%d)" % (short(c_lo), q)
 
     def objective(k):  # (T/2) E^ and F^ of H0 + k H1
         E, F = objective_c(H0 + RF([k]) * H1, T, P, q)

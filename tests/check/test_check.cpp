@@ -214,6 +214,19 @@ TEST(BoundMaxCheck, WallWithoutDelay) {
   EXPECT_TRUE(check_certificate(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", exact("2000"), ev)).verified);
 }
 
+// H = B + K with t_d = T/2: b*(K) = T (B + K) (cos(wT/2) at w = 0), so B = 3000 gives b*(0) = 3 >= b = 2:
+// K_max = 0 by the witness c = 1 alone; a domain_c_lo beyond the band's end (cos(pi/2) = 0) is
+// refuted although no upper bound reads it.
+TEST(BoundMaxCheck, ZeroChecksEveryEvidence) {
+  auto c = max_cert("B + K", {{"status", "exact"}, {"value", "0"}}, {{"witness_c", "1"}, {"domain_c_lo", "0"}});
+  c["model"]["set"]["B"] = "3000";
+  c["model"]["frac_delay"] = "1/2000";
+  const Verdict ok = check_certificate(c);
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  c["evidence"]["domain_c_lo"] = "1/2";
+  EXPECT_FALSE(check_certificate(c).verified);
+}
+
 // H = K with a delay of n samples: b*(K) = (2n + 1) K T/2 (paper 001, Example 4), so K_max =
 // 2 b/((2n + 1) T): n = 1, b = 2, T = 1/1000 gives 4000/3, attained at w = 0 (c = 1).
 TEST(BoundMaxCheck, DelayedGain) {

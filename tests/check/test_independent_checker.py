@@ -188,6 +188,15 @@ class BoundMax(unittest.TestCase):
             self.assertIn("model.H", why)
         self.assertEqual(self.code(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", ex, self.EV)), 0)
 
+    def test_zero_checks_every_evidence(self):
+        # H = B + K, t_d = T/2: b*(K) = T (B + K); B = 3000: b*(0) = 3 >= b = 2, K_max = 0 by the witness alone
+        c = max_cert("B + K", {"status": "exact", "value": "0"}, {"witness_c": "1", "domain_c_lo": "0"})
+        c["model"]["set"]["B"] = "3000"
+        c["model"]["frac_delay"] = "1/2000"
+        self.assertEqual(self.code(c), 0)
+        c["evidence"]["domain_c_lo"] = "1/2"  # beyond the band's end cos(pi/2) = 0
+        self.assertEqual(self.code(c), 1)
+
     def test_delayed_gain(self):
         c = max_cert("K", {"status": "exact", "value": "4000/3"}, {"b0_hi": "0", "witness_c": "1"}, delay=1)
         self.assertEqual(self.code(c), 0)

@@ -137,6 +137,10 @@ Verdict check_bound_max(const nlohmann::json& cert) {
       return {false, std::string("claim.") + key + " = " + v.get<std::string>() + " is not the claimed " + want.str()};
   }
   const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
+  // checked whenever given, also where no upper bound reads it (K_max = 0): evidence is never ignored
+  // (the campaign found a moved domain_c_lo accepted on K_max = 0 certificates)
+  if (!detail::at_or_below_domain_end(c_lo, dm.q))
+    return {false, "evidence.domain_c_lo = " + detail::shortened(c_lo) + " is not shown <= cos(pi/" + std::to_string(dm.q) + ")"};
   const std::string at_K = K + " = " + decimal(lo);
   std::vector<std::string> shown;
 
