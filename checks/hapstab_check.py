@@ -26,8 +26,8 @@ bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1-z)} + eta, z = e^{jw
            f(c) = (T/2) E^(c)/F^(c) + eta,  E^(c) = sum e_i (1-c)^i (1+c)^(m-i), F^ likewise,
        on the band c in [cos(pi/q), 1] (F^ >= 0 there). Claim b* in [lo, hi] (or = v):
          upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [c_lo, 1], c_lo = evidence.domain_c_lo (-1 when
-                absent) shown <= cos(pi/q) by R_q(u(c_lo)) <= 0, R_k(u) = Re (1+jt)^k =
-                (1+u)^(k/2) cos(k phi/2) > 0 for phi < pi/q; or P (1+c)^k R_q(u(c)) >= 0 there (> 0
+                absent) shown <= cos(pi/q) by some R_k(u(c_lo)) <= 0, k <= q, R_k(u) = Re (1+jt)^k =
+                (1+u)^(k/2) cos(k phi/2), all > 0 iff phi < pi/q; or P (1+c)^k R_q(u(c)) >= 0 there (> 0
                 inside the band: the test across an irrational end where f -> -inf). Nonnegativity:
                 the distinct roots of P in [c_lo, 1] isolated by bisection with Sturm counts of P's
                 square-free part, P > 0 at both ends of every isolating interval and >= 0 at the ends
@@ -559,13 +559,15 @@ def in_band(c0, q):
 
 
 def below_band_end(c_lo, q):
-    """c_lo <= cos(pi/q): c_lo = -1, or R_q(u) <= 0 at u = tan^2(phi/2) of c_lo (R_q > 0 for
-    phi in [0, pi/q): then c_lo is not in (cos(pi/q), 1])."""
+    """c_lo <= cos(pi/q), decided exactly: c_lo = -1, or R_k(u) <= 0 for some k = 1 .. q at
+    u = tan^2(phi/2) of c_lo (phi/2 < pi/(2q) iff cos(k phi/2) > 0 for every k <= q: else the
+    first k with k phi/2 >= pi/2 has k phi/2 in [pi/2, pi), cos <= 0)."""
     if c_lo == -1:
         return True
-    if c_lo < -1 or c_lo > 1 or q < 2:
+    if c_lo < -1 or c_lo > 1:
         return False
-    return peval(re_power(q), (1 - c_lo) / (1 + c_lo)) <= 0
+    u = (1 - c_lo) / (1 + c_lo)
+    return any(peval(re_power(k), u) <= 0 for k in range(1, q + 1))
 
 
 def end_multiplier(q):
@@ -653,7 +655,7 @@ def upper_bound(A, F, bound, c_lo, q):
     shown <= cos(pi/q)): P = bound F - A >= 0 there, or P (1 + c)^k R_q >= 0 across an irrational
     end where A/F -> -inf (end_multiplier > 0 inside the band). Else the reason."""
     if not below_band_end(c_lo, q):
-        return "evidence.domain_c_lo = %s is not shown <= cos(pi/%d): [c_lo, 1] may miss part of the band" % (short(c_lo), q)
+        return "evidence.domain_c_lo = %s is not <= cos(pi/%d): [c_lo, 1] misses part of the band" % (short(c_lo), q)
     P = psub(pscale(F, bound), A)
     why = nonneg_on(P, c_lo, Fraction(1))
     if why and q > 1 and nonneg_on(pmul(P, end_multiplier(q)), c_lo, Fraction(1)) is None:
@@ -766,7 +768,7 @@ def check_bound_max(c):
                 return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
-        return False, "evidence.domain_c_lo = %s is not shown <= cos(pi/%d)" % (short(c_lo), q)
+        return False, "evidence.domain_c_lo = %s is not <= cos(pi/%d)" % (short(c_lo), q)
 
     def objective(k):  # (T/2) E^ and F^ of H0 + k H1
         E, F = objective_c(H0 + RF([k]) * H1, T, P, q)

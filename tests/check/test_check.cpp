@@ -4,6 +4,7 @@
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
 #include <gtest/gtest.h>
 
+#include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/max_positive.hpp"
@@ -104,6 +105,22 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d = c;
   d["kind"] = "limit-cycle";
   expect_field(d, "kind");
+}
+
+// The band [cos(pi/q), 1] decided exactly at rational points: cos(pi/2) = 0, cos(pi/3) = 1/2,
+// cos(pi/10) = 0.95105..., cos(pi/5) = 0.80901...
+TEST(BoundObjective, BandEnds) {
+  using detail::at_or_below_domain_end;
+  using detail::in_domain;
+  EXPECT_TRUE(at_or_below_domain_end(rational(0), 2) && at_or_below_domain_end(rational(1, 2), 3));
+  EXPECT_FALSE(at_or_below_domain_end(rational(1, 100), 2) || at_or_below_domain_end(rational(51, 100), 3));
+  EXPECT_TRUE(at_or_below_domain_end(rational(-1), 1) && !at_or_below_domain_end(rational(0), 1));
+  // far below the end too (not only within (cos(2 pi/q), cos(pi/q)]): 0.8 < cos(pi/5) and 0, -1/2
+  for (const rational& c : {rational(95, 100), rational(8, 10), rational(0), rational(-1, 2), rational(-1)})
+    EXPECT_TRUE(at_or_below_domain_end(c, 10)) << c.str();
+  EXPECT_FALSE(at_or_below_domain_end(rational(96, 100), 10));
+  EXPECT_TRUE(in_domain(rational(96, 100), 10) && !in_domain(rational(95, 100), 10) && !in_domain(rational(0), 10));
+  EXPECT_TRUE(in_domain(rational(-1), 1) && !in_domain(rational(-1), 2) && in_domain(rational(0), 2));
 }
 
 nlohmann::json frac_cert(const std::string& H, const std::string& T, const std::string& td, const nlohmann::json& claim,

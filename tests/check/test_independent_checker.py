@@ -143,6 +143,11 @@ class FractionalDelay(unittest.TestCase):
         self.assertTrue(hc.in_band(F(1, 2), 3) and not hc.in_band(F(49, 100), 3))
         self.assertTrue(hc.below_band_end(F(1, 2), 3) and not hc.below_band_end(F(51, 100), 3))
         self.assertTrue(hc.below_band_end(F(-1), 5) and not hc.below_band_end(F(0), 1))
+        # far below the end too: cos(pi/10) = 0.951..., cos(pi/5) = 0.809...
+        for c in (F(95, 100), F(8, 10), F(0), F(-1, 2), F(-1)):
+            self.assertTrue(hc.below_band_end(c, 10), c)
+        self.assertFalse(hc.below_band_end(F(96, 100), 10))
+        self.assertTrue(hc.in_band(F(96, 100), 10) and not hc.in_band(F(95, 100), 10) and not hc.in_band(F(0), 10))
 
 
 def max_cert(H, claim, evidence, delay=0):

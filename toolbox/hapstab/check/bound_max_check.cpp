@@ -140,7 +140,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   // checked whenever given, also where no upper bound reads it (K_max = 0): evidence is never ignored
   // (the campaign found a moved domain_c_lo accepted on K_max = 0 certificates)
   if (!detail::at_or_below_domain_end(c_lo, dm.q))
-    return {false, "evidence.domain_c_lo = " + detail::shortened(c_lo) + " is not shown <= cos(pi/" + std::to_string(dm.q) + ")"};
+    return {false, "evidence.domain_c_lo = " + detail::shortened(c_lo) + " is not <= cos(pi/" + std::to_string(dm.q) + ")"};
   const std::string at_K = K + " = " + decimal(lo);
   std::vector<std::string> shown;
 

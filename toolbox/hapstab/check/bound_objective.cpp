@@ -117,8 +117,10 @@ std::vector<int> chebyshev_u_signs(const rational& c, long q) {
 
 bool at_or_below_domain_end(const rational& c, long q) {
   if (c == -1) return true;
-  if (c < -1 || c > 1 || q < 2) return false;
-  return chebyshev_u_signs(c, q).back() <= 0;
+  if (c < -1 || c > 1) return false;
+  for (int s : chebyshev_u_signs(c, q))  // U_0 .. U_{q-1}: all > 0 iff phi < pi/q
+    if (s <= 0) return true;
+  return false;
 }
 
 bool in_domain(const rational& c, long q) {
@@ -146,8 +148,8 @@ std::string shortened(const rational& x) { return x.str().size() > 40 ? x.str().
 std::optional<std::string> upper_bound_fails(const ObjectivePolys& f, const rational& bound, const std::string& bound_name,
                                              const rational& c_lo, long q, std::string& how) {
   if (!at_or_below_domain_end(c_lo, q))
-    return "evidence.domain_c_lo = " + shortened(c_lo) + " is not shown <= cos(pi/" + std::to_string(q) + ") (-1, or U_" +
-           std::to_string(q - 1) + "(c_lo) <= 0): [c_lo, 1] may miss part of the band";
+    return "evidence.domain_c_lo = " + shortened(c_lo) + " is not <= cos(pi/" + std::to_string(q) +
+           ") (U_0 .. U_" + std::to_string(q - 1) + " all > 0 there): [c_lo, 1] misses part of the band";
   const std::string on = "[" + (c_lo == -1 ? std::string("-1") : shortened(c_lo)) + ", 1]";
   const P upper = bound * f.B - f.A;
   const std::string degree = std::to_string(std::max(f.A.degree(), f.B.degree()));

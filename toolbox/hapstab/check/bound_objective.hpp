@@ -19,9 +19,9 @@
 //
 // The domain's end cos(pi/q) is irrational for q >= 4. The checkers never need it: an upper bound
 // is shown on a rational [c_lo, 1] that contains the domain, a witness is shown to lie inside it:
-//   c_lo <= cos(pi/q)          iff  c_lo = -1, or U_{q-1}(c_lo) <= 0 for a c_lo in (-1, 1]
-//                              (sufficient: U_{q-1}(cos phi) = sin(q phi)/sin(phi) > 0 for
-//                              phi in [0, pi/q), so U_{q-1} <= 0 puts c_lo outside (cos(pi/q), 1]);
+//   c_lo <= cos(pi/q)          iff  c_lo = -1, or U_{k-1}(c_lo) <= 0 for some k = 1 .. q
+//                              (phi < pi/q iff sin(k phi) > 0 for every k <= q: if phi >= pi/q,
+//                              the first k with k phi >= pi has k phi in [pi, 2 pi), sin <= 0);
 //   c0 in [cos(pi/q), 1]       iff  U_{k-1}(c0) > 0 for k = 1 .. q-1 and U_{q-1}(c0) >= 0, c0 in [-1, 1]
 //                              (phi0 <= pi/q: sin(k phi0) > 0 for k < q, >= 0 for k = q; phi0 > pi/q:
 //                              the first k with k phi0 > pi has k phi0 in (pi, 2 pi), sin < 0),
@@ -62,7 +62,7 @@ struct ObjectivePolys {
 /// A and B of the header for H = N/D (exact), T, tau = P/q.
 ObjectivePolys bound_objective(const RationalFunction<rational>& H, const rational& T, long P, long q);
 
-/// c <= cos(pi/q), shown by c = -1 or U_{q-1}(c) <= 0 (c in [-1, 1]; the header).
+/// c <= cos(pi/q), decided exactly: c = -1, or some U_{k-1}(c) <= 0, k = 1 .. q (the header).
 bool at_or_below_domain_end(const rational& c, long q);
 /// c in [cos(pi/q), 1] (the header).
 bool in_domain(const rational& c, long q);
