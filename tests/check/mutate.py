@@ -348,6 +348,10 @@ def rand_max_model(rng):
     if "b" in m["set"]:
         m["set"]["b"] = str(Fraction(rng.randint(-90, 90), 100) * (1 + Fraction(m["set"]["c"])))
     m["delay"] = rng.choice([0, 0, 1, 1, 2, 3])
+    if H.endswith("- K") and rng.random() < 0.5:  # f1 = -T/2 < 0 without a delay: K_max = +inf when b*(0) < b
+        m["delay"] = 0
+        m["damping"] = frac(Fraction(m["set"]["B"]) + rng.choice([Fraction(1, 2), Fraction(5)]))
+        return m
     if rng.random() < 0.3:
         q = rng.choice([2, 3, 4, 5])
         m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, 2 * q) if k % q]), q) * Fraction(m["T"]))
