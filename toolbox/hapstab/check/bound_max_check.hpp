@@ -28,7 +28,7 @@
 // in model.set, H depends on K, 0 <= lo <= hi, the printed decimals are the numbers claimed.
 // Not verified: that H0 + K H1 is stable (the premise under which b* is the passivity bound).
 //
-// Implements: paper 001 (45), (54) and Sec. VI-VII solved for a parameter (`bound --max`).
+// Implements: paper 001 (45), (54), Sec. VI, Sec. VII.
 #pragma once
 
 #include <nlohmann/json.hpp>

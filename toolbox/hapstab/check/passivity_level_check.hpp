@@ -20,7 +20,7 @@
 // certificate). The KYP lemma itself is cited, not checked: the certificate proves the frequency-
 // domain minimum; that it is the level of Definition 2 for G's minimal realisation is that theorem.
 //
-// Implements: paper 000 Definition 2, Lemma 1 (frequency form).
+// Implements: paper 000 Definition 2, Lemma 1.
 #pragma once
 
 #include <nlohmann/json.hpp>
