@@ -12,21 +12,29 @@ parser, below) and derives every quantity by a route other than hapstab's (docs/
 
 Kinds and theorems:
 
-bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n/(1-z)} + eta, z = e^{jwT} (paper 001, (45)/(54)).
-       Route: t = tan(wT/2), z = (1+jt)/(1-jt), T/(1-z) = T/2 + jT/(2t). With H z^-n = N/D' and
-       d = max(deg N, deg D'), N(z) = Nt(t)/(1-jt)^d, D'(z) = Dt(t)/(1-jt)^d, so with
-       G = Nt conj(Dt) = Gr + j Gi (real polynomials in t):
-           f = (T/2) [Gr(t) - Gi(t)/t] / |Dt(t)|^2 + eta,
-       Gi odd and Gr, |Dt|^2 even in t (real coefficients), hence E(u)/F(u) in u = t^2 >= 0; with
-       u = (1-c)/(1+c), c = cos(wT), and m = max(deg E, deg F):
+bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1-z)} + eta, z = e^{jwT} (paper 001,
+       (45)/(54)), t_d = model.frac_delay (0 when absent).
+       Route: tau = n + t_d/T = P/q, phi = wT/q in [0, pi/q], w = e^{j phi}, so z = w^q and the delay
+       is w^-P; t = tan(phi/2), w = (1+jt)/(1-jt). With Nw(w) = N(w^q), Dw(w) = D(w^q) w^P and
+       d = max(deg Nw, deg Dw): Nw = Nt(t)/(1-jt)^d, Dw = Dt(t)/(1-jt)^d, and
+       T/(1 - w^q) = T (1-jt)^q/((1-jt)^q - (1+jt)^q) = (jT/2)(1-jt)^q/Sq(t), Sq = Im (1+jt)^q, so
+           f = -(T/2) Im{Nt conj(Dt) (1-jt)^q} / (|Dt|^2 Sq(t)) + eta
+       (q = 1: (T/2)[Gr - Gi/t]/|Dt|^2 with G = Nt conj(Dt)). f is even in t (f(-phi) = f(phi)):
+       numerator and Sq are odd, so dividing both by t gives E(u)/F(u) in u = t^2 >= 0
+       (F = |Dt|^2 Sq/t > 0 on the band: Sq/t = (1+u)^(q/2) sin(q phi/2)/t); with
+       u = (1-c)/(1+c), c = cos(phi), and m = max(deg E, deg F):
            f(c) = (T/2) E^(c)/F^(c) + eta,  E^(c) = sum e_i (1-c)^i (1+c)^(m-i), F^ likewise,
-       F^ >= 0 on [-1, 1] (it is (1+c)^m |Dt|^2). Claim b* in [lo, hi] (or = v):
-         upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [-1, 1]: the distinct roots of P in [-1, 1]
-                isolated by bisection with Sturm counts of P's square-free part, and P > 0 at both
-                ends of every isolating interval and P >= 0 at -1 and 1 (P keeps its sign between
-                roots);
-         lower  the witness c0 in [-1, 1] with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced
-                by their gcd (at a removable point the value is f's limit, which the sup reaches).
+       on the band c in [cos(pi/q), 1] (F^ >= 0 there). Claim b* in [lo, hi] (or = v):
+         upper  P = (hi - eta) F^ - (T/2) E^ >= 0 on [c_lo, 1], c_lo = evidence.domain_c_lo (-1 when
+                absent) shown <= cos(pi/q) by some R_k(u(c_lo)) <= 0, k <= q, R_k(u) = Re (1+jt)^k =
+                (1+u)^(k/2) cos(k phi/2), all > 0 iff phi < pi/q; or P (1+c)^k R_q(u(c)) >= 0 there (> 0
+                inside the band: the test across an irrational end where f -> -inf). Nonnegativity:
+                the distinct roots of P in [c_lo, 1] isolated by bisection with Sturm counts of P's
+                square-free part, P > 0 at both ends of every isolating interval and >= 0 at the ends
+                (P keeps its sign between roots);
+         lower  the witness c0 in the band (R_k(u0) > 0 for k < q and R_q(u0) >= 0; c0 = -1 only for
+                q = 1) with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced by their gcd (at a
+                removable point the value is f's limit, which the sup reaches).
 r      r(jw) = T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2) (paper 001, (44)): Re r = -T/2 exactly;
        Im r in [im_lo, im_hi] by mpmath interval cot at 128, 256, ... 65536 bits.
 stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force = -z^-n H(z) x):
@@ -41,12 +49,15 @@ wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Ts
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree max(deg N, deg D + n) <= 64 (exact Sturm sequences in
-Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond it exit 3.
+Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree
+max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
+sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
+it exit 3.
 """
 import json
 import sys
 from fractions import Fraction
+from math import comb
 
 MAX_DEGREE = 64
 if hasattr(sys, "set_int_max_str_digits"):
@@ -222,16 +233,49 @@ def lex(text):
     return toks
 
 
-def parse_h(text, T, params, var='z', field='model.H'):
+def parse_h(text, T, params, var='z', field='model.H', leaf=None):
     """H(var) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
-    the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused."""
+    the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused.
+    `leaf(kind, text, value)` builds the leaves in another algebra (Deg: degree bounds)."""
     try:
-        return _parse(text, T, params, var)
+        return _parse(text, T, params, var, leaf or rf_leaf)
     except Malformed as e:
         raise Malformed(str(e).replace("model.H", field, 1))
 
 
-def _parse(text, T, params, var):
+def rf_leaf(kind, txt, value):
+    """A leaf of the expression as a rational function: a number, the variable, a parameter, T."""
+    return RF([Fraction(0), Fraction(1)]) if kind == 'var' else RF([value])
+
+
+class Deg:
+    """Upper bounds (n, d) of the degrees of the numerator and the denominator of an expression as
+    a rational function of one parameter K over Q(z): K is (1, 0), anything else (0, 0);
+    p1/q1 + p2/q2 = (p1 q2 + p2 q1)/(q1 q2), and so on."""
+    num = [1]  # never refused as a divisor here (the parses at values of K are)
+
+    def __init__(self, n, d):
+        self.n, self.d = n, d
+
+    def __add__(self, o):
+        return Deg(max(self.n + o.d, o.n + self.d), self.d + o.d)
+
+    __sub__ = __add__
+
+    def __mul__(self, o):
+        return Deg(self.n + o.n, self.d + o.d)
+
+    def __truediv__(self, o):
+        return Deg(self.n + o.d, self.d + o.n)
+
+    def __neg__(self):
+        return self
+
+    def degree(self):
+        return 0
+
+
+def _parse(text, T, params, var, leaf):
     toks = lex(text)
     pos = [0]
 
@@ -291,9 +335,9 @@ def _parse(text, T, params, var):
         if k < 0:
             if not base.num:
                 raise Malformed("model.H: division by zero")
-            base = RF([Fraction(1)]) / base
+            base = leaf('num', '1', Fraction(1)) / base
             k = -k
-        r = RF([Fraction(1)])
+        r = leaf('num', '1', Fraction(1))
         for _ in range(k):
             r = r * base
         return r
@@ -302,16 +346,16 @@ def _parse(text, T, params, var):
         kind, txt = take()
         if kind == 'num':
             try:
-                return RF([Fraction(txt)])
+                return leaf('num', txt, Fraction(txt))
             except (ValueError, ZeroDivisionError):
                 raise Malformed("model.H: malformed number %r" % txt)
         if kind == 'name':
             if txt == var:
-                return RF([Fraction(0), Fraction(1)])
+                return leaf('var', txt, None)
             if txt in params:
-                return RF([params[txt]])
+                return leaf('name', txt, params[txt])
             if txt == 'T':
-                return RF([T])
+                return leaf('name', txt, T)
             raise Malformed("model.H: unknown name %r" % txt)
         if kind == '(':
             if depth > 200:
@@ -433,20 +477,29 @@ def nonneg_on(p, a, b):
 
 
 # ---------------------------------------------------------------- bound
-def objective_c(H, T, n):
-    """(E^, F^) with f(c) = (T/2) E^(c)/F^(c), by the tan(wT/2) route (module docstring)."""
-    N = H.num
-    Dp = [Fraction(0)] * n + H.den  # D' = D z^n
-    d = max(len(N), len(Dp)) - 1
-    if d > MAX_DEGREE:
-        raise TooLarge("degree %d of H z^-n is above this checker's limit %d" % (d, MAX_DEGREE))
+def spread(p, q):
+    """p(w^q): the coefficients of p at the multiples of q."""
+    out = [Fraction(0)] * ((len(p) - 1) * q + 1) if p else []
+    for k, a in enumerate(p):
+        out[k * q] = a
+    return trim(out)
+
+
+def objective_c(H, T, P, q):
+    """(E^, F^) with f(c) = (T/2) E^(c)/F^(c), c = cos(wT/q), by the tan route (module docstring)."""
+    Nw = spread(H.num, q)
+    Dw = [Fraction(0)] * P + spread(H.den, q)  # D(w^q) w^P: the delay e^{-j tau wT} = w^-P
+    d = max(len(Nw), len(Dw)) - 1
+    if max(d, q) > MAX_DEGREE:
+        raise TooLarge("degree %d of H(w^q) w^-P (q = %d) is above this checker's limit %d" % (max(d, q), q, MAX_DEGREE))
+
     # complex polynomials in t as (re, im) lists; 1 + jt and 1 - jt
     def cmul(x, y):
         return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
     plus = ([Fraction(1)], [Fraction(0), Fraction(1)])
     minus = ([Fraction(1)], [Fraction(0), Fraction(-1)])
     pw_plus, pw_minus = [([Fraction(1)], [])], [([Fraction(1)], [])]
-    for _ in range(d):
+    for _ in range(max(d, q)):
         pw_plus.append(cmul(pw_plus[-1], plus))
         pw_minus.append(cmul(pw_minus[-1], minus))
 
@@ -459,31 +512,73 @@ def objective_c(H, T, n):
             re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
         return re, im
 
-    Nr, Ni = tilde(N)
-    Dr, Di = tilde(Dp)
-    Gr = padd(pmul(Nr, Dr), pmul(Ni, Di))
-    Gi = psub(pmul(Ni, Dr), pmul(Nr, Di))
-    if Gi and Gi[0] != 0:
-        raise AssertionError("Im G(0) != 0 for a real H")
-    E = psub(Gr, Gi[1:])  # Gr - Gi/t
-    F = padd(pmul(Dr, Dr), pmul(Di, Di))
-    for p in (E, F):
-        if any(p[i] != 0 for i in range(1, len(p), 2)):
-            raise AssertionError("not even in t")
-    Eu, Fu = E[0::2], F[0::2]
+    Nr, Ni = tilde(Nw)
+    Dr, Di = tilde(Dw)
+    G = (padd(pmul(Nr, Dr), pmul(Ni, Di)), psub(pmul(Ni, Dr), pmul(Nr, Di)))  # Nt conj(Dt)
+    Gq = cmul(G, pw_minus[q])  # times (1 - jt)^q
+    num = pneg(Gq[1])          # -Im(G (1 - jt)^q)
+    Sq = pw_plus[q][1]         # Im (1 + jt)^q
+    F = pmul(padd(pmul(Dr, Dr), pmul(Di, Di)), Sq)
+    for p in (num, F):
+        if any(p[i] != 0 for i in range(0, len(p), 2)):
+            raise AssertionError("not odd in t")
+    Eu, Fu = num[1::2], F[1::2]  # divided by t, in u = t^2
     m = max(len(Eu), len(Fu)) - 1
     one_minus, one_plus = [Fraction(1), Fraction(-1)], [Fraction(1), Fraction(1)]
     pm = [ppow(one_minus, i) for i in range(m + 1)]
     pp = [ppow(one_plus, i) for i in range(m + 1)]
 
-    def hat(q):
+    def hat(p):
         out = []
-        for i, a in enumerate(q):
+        for i, a in enumerate(p):
             if a != 0:
                 out = padd(out, pscale(pmul(pm[i], pp[m - i]), a))
         return out
 
     return hat(Eu), hat(Fu)
+
+
+def re_power(k):
+    """R_k(u) = Re (1 + jt)^k as a polynomial in u = t^2: sum_i C(k, 2i) (-u)^i."""
+    out = []
+    for i in range(0, k // 2 + 1):
+        out.append(Fraction(comb(k, 2 * i)) * (-1) ** i)
+    return trim(out)
+
+
+def in_band(c0, q):
+    """c0 = cos(phi0) with phi0 in [0, pi/q]: t = tan(phi0/2), R_k = Re (1 + jt)^k =
+    (1 + t^2)^(k/2) cos(k phi0/2) is > 0 for k < q and >= 0 for k = q iff phi0 <= pi/q (if
+    phi0 > pi/q, the first k with k phi0/2 > pi/2 has k phi0/2 in (pi/2, pi): cos < 0)."""
+    if c0 < -1 or c0 > 1:
+        return False
+    if c0 == -1:
+        return q == 1  # phi0 = pi
+    u = (1 - c0) / (1 + c0)
+    return all(peval(re_power(k), u) > 0 for k in range(1, q)) and peval(re_power(q), u) >= 0
+
+
+def below_band_end(c_lo, q):
+    """c_lo <= cos(pi/q), decided exactly: c_lo = -1, or R_k(u) <= 0 for some k = 1 .. q at
+    u = tan^2(phi/2) of c_lo (phi/2 < pi/(2q) iff cos(k phi/2) > 0 for every k <= q: else the
+    first k with k phi/2 >= pi/2 has k phi/2 in [pi/2, pi), cos <= 0)."""
+    if c_lo == -1:
+        return True
+    if c_lo < -1 or c_lo > 1:
+        return False
+    u = (1 - c_lo) / (1 + c_lo)
+    return any(peval(re_power(k), u) <= 0 for k in range(1, q + 1))
+
+
+def end_multiplier(q):
+    """(1 + c)^k R_q((1 - c)/(1 + c)), k = deg R_q: > 0 on (cos(pi/q), 1] (c > -1, R_q > 0 for
+    phi < pi/q), a simple root at cos(pi/q)."""
+    R = re_power(q)
+    k = len(R) - 1
+    out = []
+    for i, a in enumerate(R):
+        out = padd(out, pscale(pmul(ppow([Fraction(1), Fraction(-1)], i), ppow([Fraction(1), Fraction(1)], k - i)), a))
+    return out
 
 
 def short(x):
@@ -494,32 +589,10 @@ def short(x):
 def check_bound(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
     model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
-    only(model, ("H", "set", "T", "delay", "eta"), "model")
+    only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    only(evidence, ("witness_c",), "evidence")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool):
-        raise Malformed("model.delay: missing or not an integer")
-    if n < 0 or n > 100000:
-        raise Malformed("model.delay: outside [0, 100000]")
-    eta = exact(model, "eta", "model")
-    if eta < 0:
-        raise Malformed("model.eta: must be >= 0")
-    params = {}
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    for k, v in sets.items():
-        params[k] = exact_value(v, "model.set." + k)
-    try:
-        H = parse_h(model["H"], T, params)
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    only(evidence, ("witness_c", "domain_c_lo"), "evidence")
+    H, T, eta, P, q = bound_model(model)
     status = claim.get("status")
     if status == "exact":
         lo = hi = exact(claim, "value", "claim")
@@ -533,24 +606,307 @@ def check_bound(c):
         if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
             return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
     c0 = exact(evidence, "witness_c", "evidence")
-    E, F = objective_c(H, T, n)
+    c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
+    E, F = objective_c(H, T, P, q)
     A = pscale(E, T / 2)
-    P = psub(pscale(F, hi - eta), A)
-    why = nonneg_on(P, Fraction(-1), Fraction(1))
+    why = upper_bound(A, F, hi - eta, c_lo, q)
     if why:
-        return False, "b* <= %s (%.12g) fails: (hi - eta) F(c) - (T/2) E(c) is %s" % (hi, float(hi), why)
+        return False, "b* <= %s (%.12g) fails: %s" % (hi, float(hi), why)
+    why = lower_bound(A, F, lo - eta, c0, q)
+    if why:
+        return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
+    return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_model(model):
+    """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q)."""
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool):
+        raise Malformed("model.delay: missing or not an integer")
+    if n < 0 or n > 100000:
+        raise Malformed("model.delay: outside [0, 100000]")
+    td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
+    if td < 0:
+        raise Malformed("model.frac_delay: must be >= 0")
+    eta = exact(model, "eta", "model")
+    if eta < 0:
+        raise Malformed("model.eta: must be >= 0")
+    tau = n + td / T
+    if tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6:
+        raise TooLarge("t_d/T has a numerator or denominator above 10^6")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+    try:
+        H = parse_h(model["H"], T, params)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    return H, T, eta, tau.numerator, tau.denominator
+
+
+def upper_bound(A, F, bound, c_lo, q):
+    """None when A/F <= bound on the band [cos(pi/q), 1] (F >= 0 there), shown on [c_lo, 1] (c_lo
+    shown <= cos(pi/q)): P = bound F - A >= 0 there, or P (1 + c)^k R_q >= 0 across an irrational
+    end where A/F -> -inf (end_multiplier > 0 inside the band). Else the reason."""
+    if not below_band_end(c_lo, q):
+        return "evidence.domain_c_lo = %s is not <= cos(pi/%d): [c_lo, 1] misses part of the band" % (short(c_lo), q)
+    P = psub(pscale(F, bound), A)
+    why = nonneg_on(P, c_lo, Fraction(1))
+    if why and q > 1 and nonneg_on(pmul(P, end_multiplier(q)), c_lo, Fraction(1)) is None:
+        return None
+    return "bound F(c) - (T/2) E(c) on [%s, 1] is %s" % (short(c_lo), why) if why else None
+
+
+def lower_bound(A, F, target, c0, q):
+    """None when the objective A/F (its value or limit) at the witness c0 in the band is >= target."""
     if c0 < -1 or c0 > 1:
-        return False, "evidence.witness_c = %s is outside [-1, 1]" % c0
+        return "evidence.witness_c = %s is outside [-1, 1]" % c0
+    if not in_band(c0, q):
+        return "evidence.witness_c = %s is outside the band [cos(pi/%d), 1] (w > pi/T)" % (short(c0), q)
     g = pgcd(A, F)  # reduced: at a removable point the value is f's limit, which the sup reaches
     Ar, Fr = (pdivmod(A, g)[0], pdivmod(F, g)[0]) if g else (A, F)
     f0 = peval(Fr, c0)
     if f0 == 0:
-        return False, "evidence.witness_c = %s is a pole of the objective (a pole of H on the unit circle)" % c0
-    v = peval(Ar, c0) / f0 + eta
-    if v < lo:
-        return False, "b* >= %s (%.12g) not shown: the objective at the witness c0 = %s is %.12g < lo" % (
-            short(lo), float(lo), short(c0), float(v))
-    return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+        return "evidence.witness_c = %s is a pole of the objective (a pole of H on the unit circle)" % c0
+    v = peval(Ar, c0) / f0
+    if v < target:
+        return "the objective at the witness c0 = %s is %.12g short of it" % (short(c0), float(target - v))
+    return None
+
+
+# ---------------------------------------------------------------- bound-max
+def prove_affine(text, T, params, K):
+    """(H0, H1, D) with H = H0 + K H1 for every K, proven: the numerator of H - H0 - K H1 has degree
+    <= D = max(n, d + 1) in K ((n, d) the Deg bounds of the expression) and vanishes at D + 1 values
+    of K where the parse is defined (a rational function of K evaluated exactly there)."""
+    dg = parse_h(text, T, dict(params, **{K: Fraction(0)}), leaf=lambda kind, txt, v: Deg(1 if (kind, txt) == ('name', K) else 0, 0))
+    D = max(dg.n, dg.d + 1)
+    if D > 64:
+        raise Malformed("model.H: its degree in %s is bounded only by %d (above 64): not proven affine" % (K, D))
+
+    def at(k):
+        return parse_h(text, T, dict(params, **{K: k}))
+    try:
+        H0 = at(Fraction(0))
+        H1 = at(Fraction(1)) - H0
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero at %s = 0 or 1" % K)
+    if not H1.num:
+        raise Malformed("model.H: does not depend on model.name = %s" % K)
+    proven, tried, j = 2, 0, 1
+    while proven < D + 1:
+        j += 1
+        k = Fraction(2 * j + 1, 3) * (-1) ** j  # distinct, never 0 or 1
+        try:
+            h = at(k)
+        except (Malformed, ZeroDivisionError):  # divides by zero at k: at most d such values
+            tried += 1
+            if tried > D + dg.d + 2:
+                raise Malformed("model.H: undefined at too many values of %s" % K)
+            continue
+        e = H0 + RF([k]) * H1
+        if h.num != e.num or h.den != e.den:
+            raise Malformed("model.H: not affine in %s (H(%s) != H(0) + %s (H(1) - H(0)))" % (K, k, k))
+        proven += 1
+    return H0, H1, D
+
+
+def check_bound_max(c):
+    """K_max = sup{K0 >= 0 : b*(K) < b on [0, K0)} for H = H0 + K H1 (proven affine), b* convex in
+    K (a sup of affine functions): K_max >= lo > 0 if b*(0) <= b0 < b and b*(lo) <= b; K_max <= hi if
+    b*(hi) >= b (a witness); K_max = +inf if b*(0) <= b0 < b and f1 <= 0 on the band."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
+    only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
+    K = model.get("name")
+    if not isinstance(K, str) or not K:
+        raise Malformed("model.name: missing or not a string")
+    sets = model.get("set", {})
+    if isinstance(sets, dict) and K in sets:
+        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
+    # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
+    m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
+    m0.pop("name")
+    m0.pop("damping", None)
+    _, T, eta, P, q = bound_model(m0)
+    b = exact(model, "damping", "model")
+    if b <= 0:
+        raise Malformed("model.damping: must be > 0")
+    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+    try:
+        H0, H1, D = prove_affine(model["H"], T, params, K)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    status = claim.get("status")
+    if status not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    infinite = claim.get("infinite", False)
+    if not isinstance(infinite, bool):
+        raise Malformed("claim.infinite: not true/false")
+    if infinite:
+        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
+            raise Malformed("claim.infinite: true beside a finite value")
+    else:
+        if status == "exact":
+            lo = hi = exact(claim, "value", "claim")
+        else:
+            lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo < 0:
+            return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+        if lo > hi:
+            return False, "claim: lo > hi"
+        for key in ("printed_lo", "printed_hi", "printed"):
+            if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+                return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
+    if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
+        return False, "evidence.domain_c_lo = %s is not <= cos(pi/%d)" % (short(c_lo), q)
+
+    def objective(k):  # (T/2) E^ and F^ of H0 + k H1
+        E, F = objective_c(H0 + RF([k]) * H1, T, P, q)
+        return pscale(E, T / 2), F
+    if infinite or lo > 0:
+        b0 = exact(evidence, "b0_hi", "evidence")
+        if b0 >= b:
+            return False, "evidence.b0_hi = %s is not < b: K_max > 0 not shown" % short(b0)
+        why = upper_bound(*objective(Fraction(0)), b0 - eta, c_lo, q)
+        if why:
+            return False, "b*(%s = 0) <= b0_hi = %.12g fails: %s" % (K, float(b0), why)
+    if infinite:
+        E1, F1 = objective_c(H1, T, P, q)
+        why = upper_bound(pscale(E1, T / 2), F1, Fraction(0), c_lo, q)
+        if why:
+            return False, "%s_max = +inf fails: f1 <= 0 (the objective of dH/d%s) not shown: %s" % (K, K, why)
+        return True, "%s_max = +inf (b*(0) < b, f1 <= 0; affine in %s, degree bound %d)" % (K, K, D)
+    if lo > 0:
+        why = upper_bound(*objective(lo), b - eta, c_lo, q)
+        if why:
+            return False, "%s_max >= %.12g fails: b*(%s = lo) <= b not shown: %s" % (K, float(lo), K, why)
+    c1 = exact(evidence, "witness_c", "evidence")
+    why = lower_bound(*objective(hi), b - eta, c1, q)
+    if why:
+        return False, "%s_max <= %.12g not shown: b*(%s = hi) >= b: %s" % (K, float(hi), K, why)
+    return True, "%s_max %s (affine in %s, degree bound %d)" % (
+        K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), K, D)
+
+
+# ---------------------------------------------------------------- passivity-level
+def re_over_circle(P, Q):
+    """(E^, F^) with Re{P/Q}(e^{j theta}) = E^(c)/F^(c), c = cos(theta), F^ = (1+c)^d |Qt|^2 = 2^d |Q|^2:
+    t = tan(theta/2), z = (1+jt)/(1-jt), Pt = P(z)(1-jt)^d, Qt likewise (d = max(deg P, deg Q)),
+    Re{P/Q} = Re(Pt conj(Qt))/|Qt|^2, both even in t (real coefficients), so polynomials in
+    u = t^2 = (1-c)/(1+c), multiplied out by (1+c)^m."""
+    d = max(len(P), len(Q)) - 1
+
+    def cmul(x, y):
+        return (psub(pmul(x[0], y[0]), pmul(x[1], y[1])), padd(pmul(x[0], y[1]), pmul(x[1], y[0])))
+    plus, minus = ([Fraction(1)], [Fraction(0), Fraction(1)]), ([Fraction(1)], [Fraction(0), Fraction(-1)])
+    pw_plus, pw_minus = [([Fraction(1)], [])], [([Fraction(1)], [])]
+    for _ in range(d):
+        pw_plus.append(cmul(pw_plus[-1], plus))
+        pw_minus.append(cmul(pw_minus[-1], minus))
+
+    def tilde(coeffs):
+        re, im = [], []
+        for k, a in enumerate(coeffs):
+            if a != 0:
+                x = cmul(pw_plus[k], pw_minus[d - k])
+                re, im = padd(re, pscale(x[0], a)), padd(im, pscale(x[1], a))
+        return re, im
+    Pr, Pi = tilde(P)
+    Qr, Qi = tilde(Q)
+    E = padd(pmul(Pr, Qr), pmul(Pi, Qi))
+    F = padd(pmul(Qr, Qr), pmul(Qi, Qi))
+    if any(x != 0 for x in E[1::2] + F[1::2]):
+        raise AssertionError("parity in t")
+    Eu, Fu = E[0::2], F[0::2]
+    # m = d, not the degrees found: (1+c)^d (1+u)^d = 2^d, so F^ = 2^d |Q(e^{j theta})|^2 exactly, also
+    # at c = -1 (theta = pi), where a root of Q at z = -1 lowers the degree of F in u (the campaign
+    # found a zero of G at z = -1 missed with the smaller m)
+    m = d
+
+    def hat(q):
+        out = []
+        for i, a in enumerate(q):
+            if a != 0:
+                out = padd(out, pscale(pmul(ppow([Fraction(1), Fraction(-1)], i), ppow([Fraction(1), Fraction(1)], m - i)), a))
+        return out
+    return hat(Eu), hat(Fu)
+
+
+def check_passivity_level(c):
+    """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
+    (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
+    level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    only(model, ("H", "set", "T", "kind"), "model")
+    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("witness_c",), "evidence")
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    kind = model.get("kind")
+    if kind not in ("isp", "osp"):
+        raise Malformed("model.kind: missing or neither \"isp\" nor \"osp\"")
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    try:
+        G = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    if not G.num:
+        raise Malformed("model.H: G = 0")
+    if len(G.num) > len(G.den):
+        raise Malformed("model.H: G is not causal")
+    if len(G.den) - 1 > MAX_DEGREE:
+        raise TooLarge("degree %d of G above this checker's limit %d" % (len(G.den) - 1, MAX_DEGREE))
+    ok, why = schur_cohn(G.den)
+    if not ok:
+        raise Malformed("model.H: G is not Schur stable (%s)" % why)
+    status = claim.get("status")
+    if status == "exact":
+        lo = hi = exact(claim, "value", "claim")
+    elif status == "certified":
+        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo > hi:
+            return False, "claim: lo > hi"
+    else:
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    for key in ("printed_lo", "printed_hi", "printed"):
+        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    osp = kind == "osp"
+    E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
+    one = Fraction(1)
+    if osp:
+        if max_positive(F, F, -one, one):
+            raise Malformed("model.H: G has a zero on the unit circle: delta* is not Lemma 1's level")
+        if lo <= 0:
+            raise Malformed("claim: an OSP value <= 0 is an upper bound of Lemma 1's level only")
+    name = "delta*" if osp else "phi*"
+    why = nonneg_on(psub(E, pscale(F, lo)), -one, one)
+    if why:
+        return False, "%s >= %s (%.12g) fails: E(c) - lo F(c) is %s" % (name, short(lo), float(lo), why)
+    c0 = exact(evidence, "witness_c", "evidence")
+    if c0 < -1 or c0 > 1:
+        return False, "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
+    w0 = peval(E, c0) / peval(F, c0)
+    if w0 > hi:
+        return False, "%s <= %s (%.12g) not shown: the value at the witness c0 = %s is %.12g > hi" % (
+            name, short(hi), float(hi), short(c0), float(w0))
+    return True, "%s %s" % (name, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)))
 
 
 # ---------------------------------------------------------------- r
@@ -870,6 +1226,10 @@ def check(c):
         kind = c.get("kind")
         if kind == "bound":
             ok, why = check_bound(c)
+        elif kind == "bound-max":
+            ok, why = check_bound_max(c)
+        elif kind == "passivity-level":
+            ok, why = check_passivity_level(c)
         elif kind == "r":
             ok, why = check_r(c)
         elif kind == "stability":
@@ -877,7 +1237,7 @@ def check(c):
         elif kind == "wedge":
             ok, why = check_wedge(c)
         else:
-            raise Malformed("kind: %r has no checker (known: bound, r, stability, wedge)" % (kind,))
+            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)" % (kind,))
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

@@ -3,7 +3,11 @@
 
     python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet]
 
-Produces certificates of `bound` (random virtual environments, integer delays, eta), `r`
+Produces certificates of `bound` (random virtual environments, integer delays, eta; reported as
+`bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
+Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
+environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-level` (SISO G of five
+families, ISP and OSP), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
@@ -73,8 +77,25 @@ def rand_model(rng):
     return {"H": H, "set": sets, "T": T, "delay": delay, "eta": eta}
 
 
+def rand_frac_model(rng):
+    """A bound model with a fractional delay t_d = (p/q) T, q in 2..6: sin(pi t_d/T) of both signs,
+    the Tustin damper's pole at z = -1 at the band's end (-inf there when the sign is negative, +inf
+    -- no certificate -- when positive), ends cos(pi/q) rational (q = 2, 3) and irrational (q >= 4)."""
+    m = rand_model(rng)
+    if rng.random() < 0.5:
+        m["H"], names = TEMPLATES[1] if rng.random() < 0.7 else TEMPLATES[0]
+        m["set"] = {n: rand_value(n, rng) for n in names}
+    m["delay"] = rng.choice([0, 0, 0, 1, 2])
+    q = rng.choice([2, 2, 3, 4, 4, 5, 6])
+    p = rng.choice([k for k in range(1, 2 * q) if k % q])
+    m["frac_delay"] = frac(Fraction(p, q) * Fraction(m["T"]))
+    return m
+
+
 def bound_args(m, digits):
     a = ["bound", "--H", m["H"], "--T", m["T"], "--delay", str(m["delay"]), "--eta", m["eta"], "--digits", str(digits)]
+    if "frac_delay" in m:
+        a += ["--frac-delay", m["frac_delay"]]
     for k, v in m["set"].items():
         a += ["--set", "%s=%s" % (k, v)]
     return a
@@ -197,6 +218,15 @@ def bound_mutants(cert, rng, hapstab, cache):
         for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
             if y != x:
                 edits.append(("set %s %s" % (k, name), ["set", k], frac(y)))
+    if "frac_delay" in m:
+        td, T = Fraction(m["frac_delay"]), Fraction(m["T"])
+        q = (m["delay"] + td / T).denominator
+        edits.append(("frac_delay + T/%d" % q, ["frac_delay"], frac(td + T / q)))
+        edits.append(("frac_delay x 2", ["frac_delay"], frac(td * 2)))
+        edits.append(("frac_delay + T (one more sample)", ["frac_delay"], frac(td + T)))
+        edits.append(("frac_delay 0", ["frac_delay"], "0"))
+    else:
+        edits.append(("frac_delay T/2 added", ["frac_delay"], frac(Fraction(m["T"]) / 2)))
     edits.append(("T doubled", ["T"], frac(Fraction(m["T"]) * 2)))
     edits.append(("T halved", ["T"], frac(Fraction(m["T"]) / 2)))
     edits.append(("delay + 1", ["delay"], m["delay"] + 1))
@@ -228,8 +258,11 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("deleted claim.value" if exact else "deleted claim.lo", deleted(cert, ["claim", "value" if exact else "lo"]), "malformed"))
     if m["set"]:
         out.append(("deleted model.set", deleted(cert, ["model", "set"]), "malformed"))
-    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    if "frac_delay" in m:
+        out += frac_mutants(cert, rng)
+    out.append(("added model.t_d", with_field(cert, ["model", "t_d"], "1/2000"), "malformed"))
     out.append(("added claim.omega", with_field(cert, ["claim", "omega"], "1"), "malformed"))
+    out.append(("added evidence.omega", with_field(cert, ["evidence", "omega"], "1"), "malformed"))
     out.append(("T as a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
     out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
     out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
@@ -238,6 +271,26 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("kind unknown", with_field(cert, ["kind"], "limit-cycle"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    return out
+
+
+def frac_mutants(cert, rng):
+    """What only a fractional delay's certificate has: the band [cos(pi/q), 1] in c = cos(wT/q) and
+    its rational lower end evidence.domain_c_lo."""
+    out = []
+    m, ev = cert["model"], cert["evidence"]
+    q = (m["delay"] + Fraction(m["frac_delay"]) / Fraction(m["T"])).denominator
+    if "domain_c_lo" in ev:
+        c_lo = Fraction(ev["domain_c_lo"])
+        above = c_lo + Fraction(1, 10 ** rng.randint(3, 8))  # above cos(pi/q): c_lo is within 10^-40 below it
+        out.append(("domain_c_lo above the band's end", with_field(cert, ["evidence", "domain_c_lo"], frac(above)), "refute"))
+        out.append(("witness beyond the band's end", with_field(cert, ["evidence", "witness_c"], frac(c_lo - Fraction(1, 10 ** 9))), "refute"))
+        out.append(("domain_c_lo lowered", with_field(cert, ["evidence", "domain_c_lo"], frac(c_lo - Fraction(1, 1000))), "agree"))
+        out.append(("domain_c_lo deleted (the band [-1, 1])", deleted(cert, ["evidence", "domain_c_lo"]), "agree"))
+        out.append(("domain_c_lo a decimal", with_field(cert, ["evidence", "domain_c_lo"], "0.5"), "malformed"))
+    out.append(("frac_delay negative", with_field(cert, ["model", "frac_delay"], "-" + m["frac_delay"]), "malformed"))
+    out.append(("frac_delay a decimal", with_field(cert, ["model", "frac_delay"], "0.0015"), "malformed"))
+    out.append(("frac_delay a number", with_field(cert, ["model", "frac_delay"], 1), "malformed"))
     return out
 
 
@@ -272,6 +325,263 @@ def r_mutants(cert, rng, hapstab, cache):
         out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
     out.append(("omega = 0", with_field(cert, ["model", "omega"], "0"), "malformed"))
     out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    return out
+
+
+MAX_TEMPLATES = [  # (H, the parameter to maximise, the others): affine in it
+    ("K + B*(z-1)/(T*z)", "K", ["B"]),
+    ("K + B*(z-1)/(T*z)", "B", ["K"]),                       # b* convex, not monotone, in B with a delay
+    ("K + B*2*(z-1)/(T*(z+1))", "K", ["B"]),                  # Tustin: a pole at z = -1
+    ("K*(z - a)/(z^2 - b*z + c)", "K", ["a", "b", "c"]),
+    ("B*(z-1)/(T*z) - K", "K", ["B"]),                        # f1 < 0: K_max = +inf when b*(0) < b
+    ("K/(z + a)^2 + B*(z-1)/(T*z)", "B", ["K", "a"]),
+]
+
+
+def rand_max_model(rng):
+    H, name, others = rng.choice(MAX_TEMPLATES)
+    m = rand_model(rng)
+    m["H"], m["name"] = H, name
+    m["set"] = {n: rand_value(n, rng) for n in others}
+    if name == "B" and "K" in m["set"]:
+        m["set"]["K"] = str(rng.randint(1, 3000))
+    if "b" in m["set"]:
+        m["set"]["b"] = str(Fraction(rng.randint(-90, 90), 100) * (1 + Fraction(m["set"]["c"])))
+    m["delay"] = rng.choice([0, 0, 1, 1, 2, 3])
+    if H.endswith("- K") and rng.random() < 0.5:  # f1 = -T/2 < 0 without a delay: K_max = +inf when b*(0) < b
+        m["delay"] = 0
+        m["damping"] = frac(Fraction(m["set"]["B"]) + rng.choice([Fraction(1, 2), Fraction(5)]))
+        return m
+    if rng.random() < 0.3:
+        q = rng.choice([2, 3, 4, 5])
+        m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, 2 * q) if k % q]), q) * Fraction(m["T"]))
+    m["damping"] = rng.choice(["1/2", "1", "3/2", "2", "5", "20"])
+    return m
+
+
+def max_args(m, digits):
+    a = bound_args({k: v for k, v in m.items() if k not in ("name", "damping")}, digits)
+    return a + ["--max", m["name"], "--damping", m["damping"]]
+
+
+def max_truth(hapstab, m, cache):
+    """hapstab's K_max of model m at 40 digits: (lo, hi), "inf", or None (no answer)."""
+    key = "max" + json.dumps(m, sort_keys=True)
+    if key not in cache:
+        rc, out, _ = run(hapstab, max_args(m, 40) + ["--json"])
+        res = None
+        if rc in (0, 1):
+            j = json.loads(out)
+            if j.get("max") == "inf":
+                res = "inf"
+            elif j.get("status") in ("exact", "certified") and j.get("enclosure"):
+                res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
+            elif j.get("max") == "0" and j.get("status") == "exact":
+                res = (Fraction(0), Fraction(0))
+        cache[key] = res
+    return cache[key]
+
+
+def max_claim(cert):
+    c = cert["claim"]
+    if c.get("infinite"):
+        return "inf"
+    if c["status"] == "exact":
+        return Fraction(c["value"]), Fraction(c["value"])
+    return Fraction(c["lo"]), Fraction(c["hi"])
+
+
+def set_max_claim(cert, lo, hi):
+    c = copy.deepcopy(cert)
+    q = c["claim"]["quantity"]
+    c["claim"] = {"quantity": q, "status": "certified", "lo": frac(lo), "hi": frac(hi)}
+    return c
+
+
+def max_mutants(cert, rng, hapstab, cache):
+    out = [("unmutated", cert, "accept")]
+    ev, m = cert["evidence"], cert["model"]
+    claim = max_claim(cert)
+    b = Fraction(m["damping"])
+    if claim == "inf":
+        out.append(("+inf claimed as 1", with_field(with_field(cert, ["claim"], {"status": "exact", "value": "1"}),
+                                                  ["evidence", "witness_c"], "1"), "refute"))
+    else:
+        lo, hi = claim
+        scale = max(hi, Fraction(1))
+        tiny = scale / 10 ** rng.randint(40, 60)
+        gap = max(hi - lo, tiny)
+        need_b0 = "refute" if "b0_hi" in ev else "malformed"  # K_max = 0 has no b0_hi: a claim above 0 needs it
+        out.append(("claimed above the enclosure", set_max_claim(cert, hi + gap / 2 + tiny, hi + 2 * gap + tiny), need_b0))
+        if lo > 0:
+            out.append(("claimed below the enclosure", set_max_claim(cert, lo / 2, lo - tiny), "refute"))
+            out.append(("lo lowered", set_max_claim(cert, lo / 2, hi), "accept"))
+        out.append(("lo negative", set_max_claim(cert, -1 - lo, hi), "refute"))
+        out.append(("lo > hi", set_max_claim(cert, hi + tiny, hi), "refute"))
+        out.append(("hi raised", set_max_claim(cert, lo, hi + scale / 10), "agree"))
+        if cert["claim"]["status"] == "exact":
+            out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), need_b0))
+            if lo > 0:
+                out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+        else:
+            pl = cert["claim"]["printed_lo"]
+            moved = pl[:-1] + str((int(pl[-1]) + 1) % 10) if pl[-1].isdigit() else pl + "1"
+            out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], moved), "refute"))
+        c1 = Fraction(ev["witness_c"])
+        for name, x in (("witness - 1/1000", c1 - Fraction(1, 1000)), ("witness negated", -c1),
+                        ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+            if -1 <= x <= 1:
+                out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+        out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(-1 - Fraction(1, rng.randint(2, 1000)))), "refute"))
+        inf = with_field(cert, ["claim"], {"status": cert["claim"]["status"], "infinite": True})
+        out.append(("claimed +inf", inf, "refute" if "b0_hi" in ev else "malformed"))
+        out.append(("deleted evidence.witness_c", deleted(cert, ["evidence", "witness_c"]), "malformed"))
+    if "b0_hi" in ev:
+        b0 = Fraction(ev["b0_hi"])
+        out.append(("b0_hi = b", with_field(cert, ["evidence", "b0_hi"], frac(b)), "refute"))
+        out.append(("b0_hi below b*(0)", with_field(cert, ["evidence", "b0_hi"], frac(b0 - max(abs(b0), Fraction(1)) / 1000)), "refute"))
+        out.append(("deleted evidence.b0_hi", deleted(cert, ["evidence", "b0_hi"]), "malformed"))
+    if "domain_c_lo" in ev:
+        c_lo = Fraction(ev["domain_c_lo"])
+        out.append(("domain_c_lo above the band's end", with_field(cert, ["evidence", "domain_c_lo"], frac(c_lo + Fraction(1, 10 ** 6))), "refute"))
+    # the model edited: expectation from hapstab's own K_max of the edited model
+    edits = [("damping x 1.001", dict(m, damping=frac(b * Fraction(1001, 1000)))), ("damping + 1", dict(m, damping=frac(b + 1))),
+             ("damping halved", dict(m, damping=frac(b / 2))), ("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2))),
+             ("delay + 1", dict(m, delay=m["delay"] + 1)), ("eta + 1/10", dict(m, eta=frac(Fraction(m["eta"]) + Fraction(1, 10))))]
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    h = m["H"]
+    for a_, b_ in (("+", "-"), ("-", "+")):
+        if a_ in h:
+            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
+    for name, nm in edits:
+        truth = max_truth(hapstab, nm, cache)
+        if truth is None:
+            expect = "agree"
+        elif truth == "inf" or claim == "inf":
+            expect = "agree" if truth == claim else "refute"
+        else:
+            expect = "refute" if claim[1] < truth[0] or claim[0] > truth[1] else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    # malformed
+    for path in (["model", "name"], ["model", "damping"], ["model", "H"], ["model", "T"], ["claim", "status"], ["model"], ["evidence"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    K = m["name"]
+    out.append(("the parameter given a value", with_field(cert, ["model", "set"], dict(m["set"], **{K: "1"})), "malformed"))
+    out.append(("H not affine (times the parameter)", with_field(cert, ["model", "H"], "(" + h + ")*" + K), "malformed"))
+    out.append(("H not affine (over 1 + the parameter)", with_field(cert, ["model", "H"], "(" + h + ")/(1 + " + K + ")"), "malformed"))
+    out.append(("name of no parameter", with_field(cert, ["model", "name"], "Q"), "malformed"))
+    out.append(("damping negative", with_field(cert, ["model", "damping"], "-" + m["damping"]), "malformed"))
+    out.append(("damping a decimal", with_field(cert, ["model", "damping"], "0.5"), "malformed"))
+    out.append(("claim.infinite a string", with_field(cert, ["claim", "infinite"], "yes"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("added evidence.omega", with_field(cert, ["evidence", "omega"], "1"), "malformed"))
+    return out
+
+
+LEVEL_TEMPLATES = [  # SISO G(z), Schur stable for the values drawn
+    ("1 + K/(z - a)", ["K", "a"]),
+    ("(z - a)/(z - b)", ["a", "b"]),
+    ("K*(z^2 + p*z + r)/(z^2 - b*z + c)", ["K", "p", "r", "b", "c"]),
+    ("K + B*(z-1)/(T*z)", ["K", "B"]),
+    ("(K*z + 1)/(z*(z - a))", ["K", "a"]),
+]
+
+
+def rand_level(rng):
+    H, names = rng.choice(LEVEL_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n in ("K", "B"):
+            sets[n] = rng.choice([str(rng.randint(1, 20)), "%d/%d" % (rng.randint(1, 20), rng.randint(2, 40))])
+        else:
+            sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
+    if "c" in sets:
+        sets["b"] = frac(Fraction(rng.randint(-90, 90), 100) * (1 + Fraction(sets["c"])))
+    return {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/100"]), "kind": rng.choice(["isp", "osp"])}
+
+
+def level_args(m, digits=17):
+    a = ["passivity-level", "--H", m["H"], "--T", m["T"], "--kind", m["kind"], "--digits", str(digits)]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def level_produce(hapstab, m, cache, tmp, digits=17):
+    return produce(hapstab, level_args(m, digits), "level%d" % digits + json.dumps(m, sort_keys=True), "l-edit.json", cache, tmp)
+
+
+def level_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cl, m = cert["claim"], cert["model"]
+    lo, hi = (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+    scale = max(abs(lo), Fraction(1))
+    tiny = scale / 10 ** rng.randint(40, 60)
+    gap = max(hi - lo, tiny)
+
+    def claim(l, h):
+        c = copy.deepcopy(cert)
+        c["claim"] = {"quantity": cl["quantity"], "status": "certified", "lo": frac(l), "hi": frac(h)}
+        return c
+    osp = m["kind"] == "osp"
+    out.append(("claimed above the level", claim(hi + gap / 2 + tiny, hi + 2 * gap + tiny), "refute"))
+    below_lo = lo - 2 * gap - tiny
+    out.append(("claimed below the level", claim(below_lo, lo - gap / 2 - tiny),
+                "refute" if not osp or below_lo > 0 else "malformed"))
+    out.append(("lo lowered", claim(lo - min(tiny, lo / 2) if osp else lo - scale, hi), "accept"))
+    out.append(("hi raised", claim(lo, hi + scale), "accept"))
+    out.append(("lo > hi", claim(hi + tiny, hi), "refute"))
+    if cl["status"] == "exact":
+        out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), "refute"))
+        out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+    else:
+        pl = cl["printed_lo"]
+        out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], pl + "1"), "refute"))
+    c0 = Fraction(cert["evidence"]["witness_c"])
+    for name, x in (("witness - 1/1000", c0 - Fraction(1, 1000)), ("witness negated", -c0),
+                    ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+        if -1 <= x <= 1:
+            out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+    out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"))
+    # the model edited: hapstab's own certificate of the edited model decides
+    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))]
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1/10", x + Fraction(1, 10)), ("sign flipped", -x)):
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    h = m["H"]
+    for a_, b_ in (("+", "-"), ("-", "+")):
+        if a_ in h:
+            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
+    for name, nm in edits:
+        other = level_produce(hapstab, nm, cache, tmp, 30)
+        if isinstance(other, dict):
+            ocl = other["claim"]
+            olo, ohi = (Fraction(ocl["value"]),) * 2 if ocl["status"] == "exact" else (Fraction(ocl["lo"]), Fraction(ocl["hi"]))
+            expect = "refute" if hi < olo or lo > ohi else "agree"
+        else:
+            expect = "same"  # no certificate of the edited model: both checkers give one exit, whichever
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["model", "H"], ["model", "T"], ["model", "kind"], ["claim", "status"],
+                 ["evidence", "witness_c"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["model", "kind"], "io"), "malformed"))
+    out.append(("G unstable", with_field(cert, ["model", "H"], "(" + h + ")/(z - 2)"), "malformed"))
+    out.append(("G not causal", with_field(cert, ["model", "H"], "z^2*(" + h + ")"), "malformed"))
+    out.append(("G with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z + 1)"), "malformed"))
+    out.append(("T a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    if osp:
+        out.append(("OSP claim <= 0", claim(-scale, -scale / 2), "malformed"))
+        out.append(("G with a zero on the circle", with_field(cert, ["model", "H"], "(" + h + ")*(z + 1)/z"), "malformed"))
     return out
 
 
@@ -531,16 +841,17 @@ def main():
     skipped = {}
     t0 = time.time()
     for i in range(a.models):
-        m = rand_model(rng)
+        m = rand_frac_model(rng) if i % 2 else rand_model(rng)
         path = os.path.join(tmp, "b%d.json" % i)
         digits = rng.choice([10, 15, 20, 30])
         rc, out, err = run(a.hapstab, bound_args(m, digits) + ["--certificate", path])
         if rc != 0:
-            why = err.strip().split(":")[0:2]
-            skipped[":".join(why)[:80]] = skipped.get(":".join(why)[:80], 0) + 1
+            why = err.strip().split("error: ", 1)[-1]
+            why = ("bound-frac: " if "frac_delay" in m else "bound: ") + why.split(" (")[0][:70]
+            skipped[why] = skipped.get(why, 0) + 1
             continue
         with open(path) as f:
-            certs.append(("bound", json.load(f)))
+            certs.append(("bound" if "frac_delay" not in m else "bound-frac", json.load(f)))
     for i in range(max(a.models // 4, 2)):
         T, w = rand_r(rng)
         path = os.path.join(tmp, "r%d.json" % i)
@@ -551,6 +862,24 @@ def main():
         with open(path) as f:
             certs.append(("r", json.load(f)))
     scache = {}
+    for i in range(max(a.models // 2, 2)):
+        m = rand_max_model(rng)
+        path = os.path.join(tmp, "m%d.json" % i)
+        rc, out, err = run(a.hapstab, max_args(m, rng.choice([10, 15, 20, 30])) + ["--certificate", path])
+        if rc not in (0, 1) or not os.path.exists(path):
+            why = "bound-max: " + err.strip().split("error: ", 1)[-1].split(" (")[0][:70]
+            skipped[why] = skipped.get(why, 0) + 1
+            if rc not in (1, 2):  # not a refusal: show the model
+                print("bound-max producer exit %d on %s: %s" % (rc, json.dumps(m), err.strip()[:200]))
+            continue
+        with open(path) as f:
+            certs.append(("bound-max", json.load(f)))
+    for i in range(max(a.models // 2, 2)):
+        cert = level_produce(a.hapstab, rand_level(rng), scache, tmp, rng.choice([10, 17, 30]))
+        if not isinstance(cert, dict):
+            skipped["passivity-level: exit %s" % cert] = skipped.get("passivity-level: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("passivity-level", cert))
     for i in range(max(a.models // 2, 2)):
         m = rand_stability(rng)
         cert = stability_produce(a.hapstab, m, scache, tmp)
@@ -569,10 +898,14 @@ def main():
     for kind, cert in certs:
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "bound-max":
+            ms = max_mutants(cert, rng, a.hapstab, cache)
+        elif kind == "passivity-level":
+            ms = level_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "wedge":
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         else:
-            ms = (bound_mutants if kind == "bound" else r_mutants)(cert, rng, a.hapstab, cache)
+            ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:
             mutants.append((kind, name, c, expect))
     # the C++ checker: one process over all mutants
@@ -599,9 +932,11 @@ def main():
         ok = True
         if pcode == 3:
             counts[("py not checked", kind)] = counts.get(("py not checked", kind), 0) + 1
-            ok = expect == "agree" or ccode == want_code[expect]
+            ok = expect in ("agree", "same") or ccode == want_code[expect]
         elif expect == "agree":
             ok = ccode == pcode and ccode in (0, 1)
+        elif expect == "same":
+            ok = ccode == pcode
         else:
             ok = ccode == want_code[expect] and pcode == want_code[expect]
         if ok and expect in ("refute", "malformed") and (not creason or not preason):
@@ -618,13 +953,28 @@ def main():
     for kd in kinds:
         per = [(e, cj["exit"], pc) for (k, _, _, e), cj, (pc, _) in zip(mutants, cpp, py) if k == kd]
         print("  %s: %d mutants (accept %d, refute %d, malformed %d, agree %d), false or malformed accepted %d" % (
-            kd, len(per), *(sum(1 for e, _, _ in per if e == x) for x in ("accept", "refute", "malformed", "agree")),
+            kd, len(per), *(sum(1 for e, _, _ in per if e in x) for x in (("accept",), ("refute",), ("malformed",), ("agree", "same"))),
             sum(1 for e, ce, pe in per if e in ("refute", "malformed") and (ce == 0 or pe == 0))))
     print("mutants: %d; expected accept %d, refute %d, malformed %d, agree %d" % (
         n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e == "refute"),
-        sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e == "agree")))
+        sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e in ("agree", "same"))))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
+    frac_certs = [c for k, c in certs if k == "bound-frac"]
+    if frac_certs:  # the branches of a fractional delay that the campaign reached
+        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
+        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
+        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
+              "upper bound shown across the end (P U_{q-1}) %d" % (
+                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
+                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
+    max_certs = [c for k, c in certs if k == "bound-max"]
+    if max_certs:
+        cl = [max_claim(c) for c in max_certs]
+        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
+            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
+            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
+            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
     print("false or malformed claims accepted: %d" % accepted_false)
     print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
     if failures:

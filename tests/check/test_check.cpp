@@ -4,6 +4,7 @@
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
 #include <gtest/gtest.h>
 
+#include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/max_positive.hpp"
@@ -87,8 +88,11 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d["model"].erase("T");
   expect_field(d, "model.T");
   d = c;
-  d["model"]["frac_delay"] = "1/2000";
+  d["model"]["frac_delay"] = "0.002";
   expect_field(d, "model.frac_delay");
+  d = c;
+  d["evidence"]["omega"] = "1";
+  expect_field(d, "evidence.omega");
   d = c;
   d["claim"]["value"] = "0.5";
   expect_field(d, "claim.value");
@@ -101,6 +105,185 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d = c;
   d["kind"] = "limit-cycle";
   expect_field(d, "kind");
+}
+
+// The band [cos(pi/q), 1] decided exactly at rational points: cos(pi/2) = 0, cos(pi/3) = 1/2,
+// cos(pi/10) = 0.95105..., cos(pi/5) = 0.80901...
+TEST(BoundObjective, BandEnds) {
+  using detail::at_or_below_domain_end;
+  using detail::in_domain;
+  EXPECT_TRUE(at_or_below_domain_end(rational(0), 2) && at_or_below_domain_end(rational(1, 2), 3));
+  EXPECT_FALSE(at_or_below_domain_end(rational(1, 100), 2) || at_or_below_domain_end(rational(51, 100), 3));
+  EXPECT_TRUE(at_or_below_domain_end(rational(-1), 1) && !at_or_below_domain_end(rational(0), 1));
+  // far below the end too (not only within (cos(2 pi/q), cos(pi/q)]): 0.8 < cos(pi/5) and 0, -1/2
+  for (const rational& c : {rational(95, 100), rational(8, 10), rational(0), rational(-1, 2), rational(-1)})
+    EXPECT_TRUE(at_or_below_domain_end(c, 10)) << c.str();
+  EXPECT_FALSE(at_or_below_domain_end(rational(96, 100), 10));
+  EXPECT_TRUE(in_domain(rational(96, 100), 10) && !in_domain(rational(95, 100), 10) && !in_domain(rational(0), 10));
+  EXPECT_TRUE(in_domain(rational(-1), 1) && !in_domain(rational(-1), 2) && in_domain(rational(0), 2));
+}
+
+nlohmann::json frac_cert(const std::string& H, const std::string& T, const std::string& td, const nlohmann::json& claim,
+                         const std::string& witness, const std::string& c_lo = "") {
+  nlohmann::json j{{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound"},
+                   {"model", {{"H", H}, {"set", {{"K", "2"}, {"B", "2"}}}, {"T", T}, {"delay", 0}, {"frac_delay", td}, {"eta", "0"}}},
+                   {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
+  if (!c_lo.empty()) j["evidence"]["domain_c_lo"] = c_lo;
+  return j;
+}
+
+// H = K, t_d = tau T: Re{T K e^{-j tau th}/(1 - e^{j th})} = T K sin((tau + 1/2) th)/(2 sin(th/2)),
+// th = wT. tau = 1/2: T K cos(th/2) = T K c in c = cos(wT/2) on [0, 1]: b* = T K = 1 (T = 1/2, K = 2).
+TEST(BoundCheck, FractionalDelayHalfSample) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const Verdict ok = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1", "0"));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_TRUE(check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1")).verified);  // c_lo = -1: f = c on [-1, 1]
+  const Verdict low = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1/2", "0"));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("not shown"), std::string::npos) << low.reason;
+  const nlohmann::json wide{{"status", "certified"}, {"lo", "-1/2"}, {"hi", "1"}};
+  const Verdict outside = check_certificate(frac_cert("K", "1/2", "1/4", wide, "-1/2", "0"));  // f(-1/2) = -1/2, but w > pi/T
+  EXPECT_FALSE(outside.verified);
+  EXPECT_NE(outside.reason.find("outside the band"), std::string::npos) << outside.reason;
+  const Verdict end = check_certificate(frac_cert("K", "1/2", "1/4", exact("1"), "1", "1/10"));
+  EXPECT_FALSE(end.verified);
+  EXPECT_NE(end.reason.find("domain_c_lo"), std::string::npos) << end.reason;
+  // the delay is part of the model: t_d = 0 gives b* = T K/2
+  auto no_delay = frac_cert("K", "1/2", "0", exact("1"), "1");
+  EXPECT_FALSE(check_certificate(no_delay).verified);
+  EXPECT_THROW(check_certificate(frac_cert("K", "1/2", "-1/4", exact("1"), "1")), InputError);
+}
+
+// H = -K, tau = 1/4, c = cos(wT/4) = cos(x): f = -T K sin(3x)/(2 sin(2x)) = -T K (4c^2 - 1)/(4c),
+// decreasing in c on the band [cos(pi/4), 1]: b* = -T K sqrt(2)/4 = -0.35355339059327376220042...
+// (T K = 1), at the irrational end wT = pi. Below the band, f -> +inf at c -> 0+.
+TEST(BoundCheck, FractionalDelayMaximumAtAnIrrationalEnd) {
+  const nlohmann::json claim{{"status", "certified"}, {"lo", "-3535533905932737623/10000000000000000000"},
+                             {"hi", "-3535533905932737621/10000000000000000000"}};
+  const std::string inside = "70710678118654752441/100000000000000000000";  // sqrt(2)/2 = 0.70710678118654752440084...
+  const std::string below = "70710678118654752440/100000000000000000000";
+  const Verdict ok = check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside, below));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  // a witness just beyond the end (w > pi/T), a c_lo just above it, and no c_lo (the band [-1, 1] meets the pole at c = 0)
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, below, below)).verified);
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside, inside)).verified);
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", claim, inside)).verified);
+  // hi just below b*: the upper bound fails
+  const nlohmann::json over{{"status", "certified"}, {"lo", "-3535533905932737624/10000000000000000000"},
+                            {"hi", "-3535533905932737623/10000000000000000000"}};
+  EXPECT_FALSE(check_certificate(frac_cert("-K", "1/2", "1/8", over, inside, below)).verified);
+}
+
+// The Tustin damper H = B (z - 1)/(z + 1) = j B tan(th/2) with T = 1, B = 2, tau = 5/4:
+// f = tan(th/2) sin(5 th/4) - cos(5 th/4) (sup 1.7381038413... inside, by mpmath), -> -inf at th -> pi
+// (sin(5 pi/4) < 0), +inf just beyond: (hi - eta) B - A changes sign at the irrational end c =
+// cos(pi/4), and only the test with U_3 shows the bound.
+TEST(BoundCheck, FractionalDelayPoleAtTheEndFromBelow) {
+  const std::string below = "70710678118654752440/100000000000000000000";
+  auto claim = [](const std::string& hi) { return nlohmann::json{{"status", "certified"}, {"lo", "-1"}, {"hi", hi}}; };
+  const Verdict ok = check_certificate(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim("2"), "1", below));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_NE(ok.reason.find("U_3"), std::string::npos) << ok.reason;
+  const Verdict low = check_certificate(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim("3/2"), "1", below));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("fails"), std::string::npos) << low.reason;
+}
+
+nlohmann::json max_cert(const std::string& H, const nlohmann::json& claim, const nlohmann::json& evidence) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound-max"},
+          {"model", {{"H", H}, {"set", {{"B", "1"}}}, {"name", "K"}, {"T", "1/1000"}, {"delay", 0}, {"eta", "0"}, {"damping", "2"}}},
+          {"claim", claim}, {"evidence", evidence}};
+}
+
+// The wall K + B (z - 1)/(T z) without delay: b*(K) = K T/2 + B (paper 001 (46), at w = pi/T, c = -1),
+// so with B = 1, b = 2, T = 1/1000: b*(0) = 1 and K_max = 2 (b - B)/T = 2000 exactly.
+TEST(BoundMaxCheck, WallWithoutDelay) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const nlohmann::json ev{{"b0_hi", "1"}, {"witness_c", "-1"}};
+  const std::string wall = "K + B*(z-1)/(T*z)";
+  const Verdict ok = check_certificate(max_cert(wall, exact("2000"), ev));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_TRUE(check_certificate(max_cert(wall, {{"status", "certified"}, {"lo", "1999"}, {"hi", "2001"}}, ev)).verified);
+  const Verdict above = check_certificate(max_cert(wall, exact("2001"), ev));  // b*(2001) > b
+  EXPECT_FALSE(above.verified);
+  EXPECT_NE(above.reason.find("K_max >= "), std::string::npos) << above.reason;
+  const Verdict below = check_certificate(max_cert(wall, exact("1999"), ev));  // b*(1999) < b
+  EXPECT_FALSE(below.verified);
+  EXPECT_NE(below.reason.find("K_max <= "), std::string::npos) << below.reason;
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("2000"), {{"b0_hi", "2"}, {"witness_c", "-1"}})).verified);    // b0 < b
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("2000"), {{"b0_hi", "1/2"}, {"witness_c", "-1"}})).verified);  // b*(0) = 1
+  // K_max = 0 needs b*(0) >= b: here b*(0) = 1 < 2
+  EXPECT_FALSE(check_certificate(max_cert(wall, exact("0"), {{"witness_c", "-1"}})).verified);
+  // f1 = T/2 > 0: not infinite
+  EXPECT_FALSE(check_certificate(max_cert(wall, {{"status", "exact"}, {"infinite", true}}, {{"b0_hi", "1"}})).verified);
+  // H = B (z - 1)/(T z) - K: f1 = -T/2 < 0, b*(K) = 1 - K T/2 < 2 for every K >= 0
+  const Verdict inf = check_certificate(max_cert("B*(z-1)/(T*z) - K", {{"status", "exact"}, {"infinite", true}}, {{"b0_hi", "1"}}));
+  EXPECT_TRUE(inf.verified) << inf.reason;
+  // the model: the parameter given a value, H not affine in it, H not depending on it
+  auto d = max_cert(wall, exact("2000"), ev);
+  d["model"]["set"]["K"] = "1";
+  EXPECT_THROW(check_certificate(d), InputError);
+  EXPECT_THROW(check_certificate(max_cert("K*K/1000 + B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  EXPECT_THROW(check_certificate(max_cert("K/(1 + K) + B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  EXPECT_THROW(check_certificate(max_cert("B*(z-1)/(T*z)", exact("2000"), ev)), InputError);
+  // affine though written with K twice and a division: (K^2 + K)/(K + 1) = K where defined
+  EXPECT_TRUE(check_certificate(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", exact("2000"), ev)).verified);
+}
+
+// H = B + K with t_d = T/2: b*(K) = T (B + K) (cos(wT/2) at w = 0), so B = 3000 gives b*(0) = 3 >= b = 2:
+// K_max = 0 by the witness c = 1 alone; a domain_c_lo beyond the band's end (cos(pi/2) = 0) is
+// refuted although no upper bound reads it.
+TEST(BoundMaxCheck, ZeroChecksEveryEvidence) {
+  auto c = max_cert("B + K", {{"status", "exact"}, {"value", "0"}}, {{"witness_c", "1"}, {"domain_c_lo", "0"}});
+  c["model"]["set"]["B"] = "3000";
+  c["model"]["frac_delay"] = "1/2000";
+  const Verdict ok = check_certificate(c);
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  c["evidence"]["domain_c_lo"] = "1/2";
+  EXPECT_FALSE(check_certificate(c).verified);
+}
+
+// H = K with a delay of n samples: b*(K) = (2n + 1) K T/2 (paper 001, Example 4), so K_max =
+// 2 b/((2n + 1) T): n = 1, b = 2, T = 1/1000 gives 4000/3, attained at w = 0 (c = 1).
+TEST(BoundMaxCheck, DelayedGain) {
+  auto c = max_cert("K", {{"status", "exact"}, {"value", "4000/3"}}, {{"b0_hi", "0"}, {"witness_c", "1"}});
+  c["model"]["delay"] = 1;
+  const Verdict ok = check_certificate(c);
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  c["model"]["delay"] = 0;  // b*(K) = K T/2: K_max = 4000
+  EXPECT_FALSE(check_certificate(c).verified);
+}
+
+nlohmann::json level_cert(const std::string& H, const std::string& kind, const nlohmann::json& claim, const std::string& witness) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "passivity-level"},
+          {"model", {{"H", H}, {"set", nlohmann::json::object()}, {"T", "1/1000"}, {"kind", kind}}},
+          {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
+}
+
+// G = 1 + 1/(z - 1/2) = (z + 1/2)/(z - 1/2), c = cos(theta): Re G = 1 + (c - 1/2)/(5/4 - c), increasing
+// in c, so phi* = Re G(-1) = 1/3; 1/G = (z - 1/2)/(z + 1/2), Re(1/G) = (3/4)/(5/4 + c), so delta* =
+// Re(1/G)(1) = 1/3.
+TEST(PassivityLevelCheck, FirstOrder) {
+  auto exact = [](const std::string& v) { return nlohmann::json{{"status", "exact"}, {"value", v}}; };
+  const std::string G = "1 + 1/(z-0.5)";
+  const Verdict isp = check_certificate(level_cert(G, "isp", exact("1/3"), "-1"));
+  EXPECT_TRUE(isp.verified) << isp.reason;
+  const Verdict osp = check_certificate(level_cert(G, "osp", exact("1/3"), "1"));
+  EXPECT_TRUE(osp.verified) << osp.reason;
+  const Verdict away = check_certificate(level_cert(G, "isp", exact("1/3"), "1"));  // Re G(1) = 2
+  EXPECT_FALSE(away.verified);
+  EXPECT_NE(away.reason.find("not shown"), std::string::npos) << away.reason;
+  const Verdict high = check_certificate(level_cert(G, "isp", exact("1/2"), "-1"));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("phi* >= "), std::string::npos) << high.reason;
+  EXPECT_TRUE(check_certificate(level_cert(G, "isp", {{"status", "certified"}, {"lo", "0"}, {"hi", "1/2"}}, "-1/2")).verified);  // Re G(-1/2) = 3/7
+  // hypotheses: G Schur stable; OSP: no zero of G on the circle and delta* > 0
+  EXPECT_THROW(check_certificate(level_cert("1/(z - 2)", "isp", exact("0"), "1")), InputError);
+  EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("0"), "1")), InputError);
+  EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("1/10"), "1")), InputError);  // zero at theta = pi
+  EXPECT_THROW(check_certificate(level_cert("1/(z - 0.5)", "osp", exact("-3/2"), "-1")), InputError);  // an upper bound only
+  EXPECT_THROW(check_certificate(level_cert("z^2/(z - 0.5)", "isp", exact("0"), "1")), InputError);   // not causal
 }
 
 // r(j 1) at T = 1: Im r = -(1/2) cot(1/2) = -0.91524386085622595963... (mpmath, 40 digits)

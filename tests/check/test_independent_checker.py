@@ -81,6 +81,169 @@ class Stability(unittest.TestCase):
         self.assertIn("claim.stable", hc.check(c2)[1])
 
 
+def frac_cert(H, T, td, claim, witness, c_lo=None):
+    c = {"certificate": "hapstab", "version": 1, "kind": "bound",
+         "model": {"H": H, "set": {"K": "2", "B": "2"}, "T": T, "delay": 0, "frac_delay": td, "eta": "0"},
+         "claim": claim, "evidence": {"witness_c": witness}}
+    if c_lo is not None:
+        c["evidence"]["domain_c_lo"] = c_lo
+    return c
+
+
+SQRT2_INSIDE = "70710678118654752441/100000000000000000000"  # sqrt(2)/2 = 0.70710678118654752440084...
+SQRT2_BELOW = "70710678118654752440/100000000000000000000"
+
+
+class FractionalDelay(unittest.TestCase):
+    """The cases of test_check.cpp's BoundCheck.FractionalDelay*: H = K, t_d = tau T gives
+    f = T K sin((tau + 1/2) wT)/(2 sin(wT/2)); tau = 1/2: T K cos(wT/2), b* = T K = 1 (T = 1/2, K = 2);
+    H = -K, tau = 1/4: -T K (4c^2 - 1)/(4c) in c = cos(wT/4), b* = -sqrt(2)/4 at the irrational end;
+    the Tustin damper B (z - 1)/(z + 1), T = 1, B = 2, tau = 5/4: tan(wT/2) sin(5wT/4) - cos(5wT/4),
+    sup 1.738... (mpmath), -inf at wT = pi and +inf just beyond."""
+
+    def test_half_sample(self):
+        exact = {"status": "exact", "value": "1"}
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "1/4", exact, "1", "0"))[0], 0)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "1/4", exact, "1"))[0], 0)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", exact, "1/2", "0"))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", {"status": "certified", "lo": "-1/2", "hi": "1"}, "-1/2", "0"))
+        self.assertEqual(code, 1)
+        self.assertIn("outside the band", why)
+        code, why = hc.check(frac_cert("K", "1/2", "1/4", exact, "1", "1/10"))
+        self.assertEqual(code, 1)
+        self.assertIn("domain_c_lo", why)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "0", exact, "1"))[0], 1)
+        self.assertEqual(hc.check(frac_cert("K", "1/2", "-1/4", exact, "1"))[0], 2)
+
+    def test_maximum_at_an_irrational_end(self):
+        claim = {"status": "certified", "lo": "-3535533905932737623/10000000000000000000",
+                 "hi": "-3535533905932737621/10000000000000000000"}
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE, SQRT2_BELOW)), (0, "b* in [-0.353553390593, -0.353553390593]"))
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_BELOW, SQRT2_BELOW))[0], 1)
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE, SQRT2_INSIDE))[0], 1)
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", claim, SQRT2_INSIDE))[0], 1)
+        over = {"status": "certified", "lo": "-3535533905932737624/10000000000000000000",
+                "hi": "-3535533905932737623/10000000000000000000"}
+        self.assertEqual(hc.check(frac_cert("-K", "1/2", "1/8", over, SQRT2_INSIDE, SQRT2_BELOW))[0], 1)
+
+    def test_pole_at_the_end_from_below(self):
+        claim = {"status": "certified", "lo": "-1", "hi": "2"}
+        self.assertEqual(hc.check(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim, "1", SQRT2_BELOW))[0], 0)
+        claim["hi"] = "3/2"
+        code, why = hc.check(frac_cert("B*(z-1)/(z+1)", "1", "5/4", claim, "1", SQRT2_BELOW))
+        self.assertEqual(code, 1)
+        self.assertIn("fails", why)
+
+    def test_band_tests(self):
+        F = Fraction
+        self.assertTrue(hc.in_band(F(1), 7) and hc.in_band(F(-1), 1) and not hc.in_band(F(-1), 2))
+        self.assertTrue(hc.in_band(F(0), 2) and not hc.in_band(F(-1, 100), 2))
+        self.assertTrue(hc.in_band(F(1, 2), 3) and not hc.in_band(F(49, 100), 3))
+        self.assertTrue(hc.below_band_end(F(1, 2), 3) and not hc.below_band_end(F(51, 100), 3))
+        self.assertTrue(hc.below_band_end(F(-1), 5) and not hc.below_band_end(F(0), 1))
+        # far below the end too: cos(pi/10) = 0.951..., cos(pi/5) = 0.809...
+        for c in (F(95, 100), F(8, 10), F(0), F(-1, 2), F(-1)):
+            self.assertTrue(hc.below_band_end(c, 10), c)
+        self.assertFalse(hc.below_band_end(F(96, 100), 10))
+        self.assertTrue(hc.in_band(F(96, 100), 10) and not hc.in_band(F(95, 100), 10) and not hc.in_band(F(0), 10))
+
+
+def max_cert(H, claim, evidence, delay=0):
+    return {"certificate": "hapstab", "version": 1, "kind": "bound-max",
+            "model": {"H": H, "set": {"B": "1"}, "name": "K", "T": "1/1000", "delay": delay, "eta": "0", "damping": "2"},
+            "claim": claim, "evidence": evidence}
+
+
+class BoundMax(unittest.TestCase):
+    """The cases of test_check.cpp's BoundMaxCheck: the wall K + B (z - 1)/(T z) without delay has
+    b*(K) = K T/2 + B (paper 001 (46)): B = 1, b = 2, T = 1/1000 give K_max = 2000 exactly; H = K with
+    one sample of delay b*(K) = 3 K T/2 (Example 4): K_max = 4000/3."""
+    WALL = "K + B*(z-1)/(T*z)"
+    EV = {"b0_hi": "1", "witness_c": "-1"}
+
+    def code(self, c):
+        return hc.check(c)[0]
+
+    def test_wall(self):
+        ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
+        self.assertEqual(hc.check(max_cert(self.WALL, ex("2000"), self.EV)), (0, "K_max = 2000 (affine in K, degree bound 1)"))
+        self.assertEqual(self.code(max_cert(self.WALL, {"status": "certified", "lo": "1999", "hi": "2001"}, self.EV)), 0)
+        code, why = hc.check(max_cert(self.WALL, ex("2001"), self.EV))
+        self.assertEqual(code, 1)
+        self.assertIn("K_max >= ", why)
+        code, why = hc.check(max_cert(self.WALL, ex("1999"), self.EV))
+        self.assertEqual(code, 1)
+        self.assertIn("K_max <= ", why)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("2000"), {"b0_hi": "2", "witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("2000"), {"b0_hi": "1/2", "witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, ex("0"), {"witness_c": "-1"})), 1)
+        self.assertEqual(self.code(max_cert(self.WALL, {"status": "exact", "infinite": True}, {"b0_hi": "1"})), 1)
+        self.assertEqual(self.code(max_cert("B*(z-1)/(T*z) - K", {"status": "exact", "infinite": True}, {"b0_hi": "1"})), 0)
+
+    def test_model(self):
+        ex = {"status": "exact", "value": "2000"}
+        c = max_cert(self.WALL, ex, self.EV)
+        c["model"]["set"]["K"] = "1"
+        self.assertEqual(self.code(c), 2)
+        for H in ("K*K/1000 + B*(z-1)/(T*z)", "K/(1 + K) + B*(z-1)/(T*z)", "B*(z-1)/(T*z)"):
+            code, why = hc.check(max_cert(H, ex, self.EV))
+            self.assertEqual(code, 2, H)
+            self.assertIn("model.H", why)
+        self.assertEqual(self.code(max_cert("(K*K + K)/(K + 1) + B*(z-1)/(T*z)", ex, self.EV)), 0)
+
+    def test_zero_checks_every_evidence(self):
+        # H = B + K, t_d = T/2: b*(K) = T (B + K); B = 3000: b*(0) = 3 >= b = 2, K_max = 0 by the witness alone
+        c = max_cert("B + K", {"status": "exact", "value": "0"}, {"witness_c": "1", "domain_c_lo": "0"})
+        c["model"]["set"]["B"] = "3000"
+        c["model"]["frac_delay"] = "1/2000"
+        self.assertEqual(self.code(c), 0)
+        c["evidence"]["domain_c_lo"] = "1/2"  # beyond the band's end cos(pi/2) = 0
+        self.assertEqual(self.code(c), 1)
+
+    def test_delayed_gain(self):
+        c = max_cert("K", {"status": "exact", "value": "4000/3"}, {"b0_hi": "0", "witness_c": "1"}, delay=1)
+        self.assertEqual(self.code(c), 0)
+        c["model"]["delay"] = 0
+        self.assertEqual(self.code(c), 1)
+
+    def test_degree_bounds(self):
+        deg = lambda text: hc.parse_h(text, Fraction(1), {"K": Fraction(0)}, leaf=lambda k, t, v: hc.Deg(1 if (k, t) == ("name", "K") else 0, 0))  # noqa: E731
+        for text, nd in (("K", (1, 0)), ("K*z + 1", (1, 0)), ("1/K", (0, 1)), ("K/(K + z)", (1, 1)), ("K^3", (3, 0)),
+                         ("(K + 1)^-2", (0, 2)), ("K + 1/K", (2, 1))):
+            d = deg(text)
+            self.assertEqual((d.n, d.d), nd, text)
+
+
+def level_cert(H, kind, claim, witness):
+    return {"certificate": "hapstab", "version": 1, "kind": "passivity-level",
+            "model": {"H": H, "set": {}, "T": "1/1000", "kind": kind}, "claim": claim, "evidence": {"witness_c": witness}}
+
+
+class PassivityLevel(unittest.TestCase):
+    """test_check.cpp's PassivityLevelCheck: G = 1 + 1/(z - 1/2) has phi* = Re G(-1) = 1/3 and
+    delta* = Re(1/G)(1) = (3/4)/(9/4) = 1/3 (Re G = 1 + (c - 1/2)/(5/4 - c), Re 1/G = (3/4)/(5/4 + c))."""
+
+    def test_first_order(self):
+        ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
+        G = "1 + 1/(z-0.5)"
+        self.assertEqual(hc.check(level_cert(G, "isp", ex("1/3"), "-1")), (0, "phi* = 1/3"))
+        self.assertEqual(hc.check(level_cert(G, "osp", ex("1/3"), "1")), (0, "delta* = 1/3"))
+        code, why = hc.check(level_cert(G, "isp", ex("1/3"), "1"))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        code, why = hc.check(level_cert(G, "isp", ex("1/2"), "-1"))
+        self.assertEqual(code, 1)
+        self.assertIn("phi* >= ", why)
+        self.assertEqual(hc.check(level_cert(G, "isp", {"status": "certified", "lo": "0", "hi": "1/2"}, "-1/2"))[0], 0)
+        # (z + 1)/(z - 0.5) with lo > 0: a zero of G at z = -1 (theta = pi) must be seen there too
+        self.assertEqual(hc.check(level_cert("(z + 1)/(z - 0.5)", "osp", ex("1/10"), "1"))[0], 2)
+        for H, kind, v in (("1/(z - 2)", "isp", "0"), ("(z + 1)/(z - 0.5)", "osp", "0"), ("1/(z - 0.5)", "osp", "-3/2"),
+                           ("z^2/(z - 0.5)", "isp", "0")):
+            self.assertEqual(hc.check(level_cert(H, kind, ex(v), "1"))[0], 2, H)
+
+
 def wedge_cert(H, K, claims):
     keys = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
     return {"certificate": "hapstab", "version": 1, "kind": "wedge",

@@ -121,6 +121,17 @@ TEST(MaxGain, CrossingAtOmegaZero) {
   }
 }
 
+TEST(MaxGain, ZeroBaseWithAFractionalDelay) {
+  // H = K (H0 = 0) with t_d = T/2: b*(K) = sup T K cos(wT/2) = K T, so K_max = b/T exactly. H0 = 0
+  // once spread to H0(w^2) asked for a vector of (-1) 2 + 1 elements (found by the bound-max
+  // certificate campaign: "cannot create std::vector larger than max_size()").
+  GainProblem g = problem("K", "K", T, 0, rational(7, 4));
+  g.base.frac_delay = T / 2;
+  const MaxGain m = max_gain(g, 30);
+  EXPECT_EQ(m.status, Status::exact);
+  EXPECT_EQ(m.value, rational(7, 4) / T);
+}
+
 TEST(MaxGain, PolesOnAndNearTheUnitCircle) {
   // Tustin wall (a pole of H at z = -1): b* = KT/2 - B, K_max = 2(b + B)/T; in B: b* falls, K_max = inf
   const std::string tustin = "K + B*2*(z-1)/(T*(z+1))";

@@ -6,6 +6,8 @@
 #include "cli/command.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/interval.hpp"
+#include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
 
 namespace hapstab::cli {
@@ -13,6 +15,9 @@ namespace hapstab::cli {
 namespace {
 
 using QPoly = Polynomial<rational>;
+
+// The checkers' size limit (check/bound_objective.hpp): q (deg H + 1) + P <= 1000.
+constexpr long certificate_max_size = 1000;
 
 // The continued-fraction convergents of x, smallest first, until one satisfies `ok` (at most 400).
 template <class Ok>
@@ -41,33 +46,73 @@ rational to_rational(const mpfloat<D>& x) {
   return exact_rational(x);
 }
 
-// A rational c0 in [-1, 1] with f(c0) >= target (f = A/B without eta, B(c0) != 0).
-std::optional<rational> find_witness(const RationalFunction<rational>& f, const rational& target,
-                                     const passivity::Bound& b, const rational& T) {
+// The objective f (without eta) in c = cos(wT/q), tau = n + t_d/T = P/q, on its domain
+// [cos(pi/q), 1] (end_lo <= cos(pi/q) <= end_hi, rationals; -1 for q = 1): the producer's own route
+// (passivity::objective, and the fractional-delay path's H(w^q)/S(w) for q >= 2).
+struct WitnessObjective {
+  RationalFunction<rational> f{QPoly(rational(0))};
+  long q = 1;
+  rational end_lo = -1, end_hi = -1;
+};
+
+WitnessObjective witness_objective(const passivity::BoundProblem& p) {
+  WitnessObjective w;
+  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  if (den(tau) == 1) {
+    w.f = passivity::objective(p.H, p.T, num(tau).convert_to<int>()).f;
+    return w;
+  }
+  const auto fe = passivity::detail::frac_exact_problem<50>(p, certificate_max_size);
+  if (!fe) throw NumericalError("--certificate: the objective in cos(wT/q) could not be formed");
+  w.f = passivity::objective(fe->problem.H, fe->problem.T, fe->problem.delay).f;
+  w.q = fe->domain.q;
+  w.end_lo = fe->domain.end_lo;
+  w.end_hi = fe->domain.end_hi;
+  return w;
+}
+
+// A rational c0 in [end_hi, 1] (inside the domain) with f(c0) >= target (B(c0) != 0).
+std::optional<rational> find_witness(const WitnessObjective& o, const rational& target,
+                                     const std::optional<Enclosure<rational>>& omega, const rational& T) {
+  const RationalFunction<rational>& f = o.f;
   auto ok = [&](const rational& c) {
-    if (c < -1 || c > 1) return false;
+    if (c < o.end_hi || c > 1) return false;
     const rational d = f.den()(c);
     return d != 0 && f.num()(c) / d >= target;
   };
-  for (const rational& c : {rational(1), rational(-1), rational(0)})
+  for (const rational& c : {rational(1), o.end_hi, rational(0)})
     if (ok(c)) return c;
-  if (b.omega_enclosure) {  // cos(w T) at the midpoint of the maximiser's enclosure
+  if (o.q > 1)  // a maximum at the end wT = pi, irrational for q >= 4: a simpler rational just inside
+    if (auto c0 = first_convergent(o.end_hi, ok)) return c0;
+  if (omega) {  // cos(w T/q) at the midpoint of the maximiser's enclosure
     using R = mpfloat<300>;
-    const rational w = (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2;
-    const R c = cos(R(w * T));
+    const rational w = (omega->lo + omega->hi) / 2;
+    const R c = cos(R(w * T / rational(o.q)));
     if (auto c0 = first_convergent(to_rational(c), ok)) return c0;
   }
-  // every critical point of f in [-1, 1], refined to 2^-1000
+  // every critical point of f in the domain, refined to 2^-1000
   const QPoly crit = f.num().derivative() * f.den() - f.num() * f.den().derivative();
   if (crit.is_zero()) return std::nullopt;
   const rational width = rational(1) / rational(pow(integer(2), 1000));
-  for (RootInterval r : isolate_real_roots(crit, rational(-1), rational(1))) {
+  for (RootInterval r : isolate_real_roots(crit, o.end_lo, rational(1))) {
     if (!r.is_exact()) r = refine_root(crit, r, width);
     if (ok(r.lo)) return r.lo;
     if (ok(r.hi)) return r.hi;
     if (auto c0 = first_convergent((r.lo + r.hi) / 2, ok)) return c0;
   }
   return std::nullopt;
+}
+
+// The checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
+// (check/bound_objective.hpp); InputError beyond their limit.
+void check_certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
+  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const integer size = den(tau) * (std::max(H.num().degree(), H.den().degree()) + 1) + num(tau);
+  if (size > certificate_max_size)
+    throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
+                     " exactly, in cos(wT/q) with q = " + den(tau).str() + ": size q (deg H + 1) + P = " +
+                     (size > integer(1000000000L) ? std::string("> 10^9") : size.str()) + ", beyond their limit of " +
+                     std::to_string(certificate_max_size) + " (no certificate)");
 }
 
 nlohmann::json header(const char* kind) {
@@ -85,7 +130,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
                                  const passivity::Bound& b, int digits) {
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
-  if (p.frac_delay) throw InputError("--certificate: a certificate of b* with --frac-delay is not implemented yet");
+  check_certificate_size(p.H, p);
   if (b.infinite)
     throw InputError("--certificate: b* = +inf (a pole on the unit circle where the objective tends to +inf) has no "
                      "certificate yet");
@@ -99,10 +144,12 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   m["set"] = sets;
   m["T"] = p.T.str();
   m["delay"] = p.delay;
+  if (p.frac_delay) m["frac_delay"] = p.frac_delay->str();
   m["eta"] = p.eta.str();
   j["model"] = m;
   nlohmann::json claim;
-  claim["quantity"] = "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
+                                   : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
   rational target;
   if (b.status == Status::exact) {
     claim["status"] = "exact";
@@ -118,9 +165,130 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
     target = parse_rational(lo, "enclosure");
   }
   j["claim"] = claim;
-  const passivity::Objective obj = passivity::objective(p.H, p.T, p.delay);
-  const auto c0 = find_witness(obj.f, target - p.eta, b, p.T);
+  const WitnessObjective obj = witness_objective(p);
+  const auto c0 = find_witness(obj, target - p.eta, b.omega_enclosure, p.T);
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with f(c0) >= " + target.str() + " was found");
+  j["evidence"] = {{"witness_c", c0->str()}};
+  if (obj.q > 1) j["evidence"]["domain_c_lo"] = obj.end_lo.str();  // <= cos(pi/q): the checkers' interval [c_lo, 1]
+  return j;
+}
+
+nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits) {
+  const passivity::GainProblem& g = r.problem;
+  const passivity::MaxGain& m = r.max;
+  const std::string K = g.name;
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  if (m.status != Status::exact && m.status != Status::certified)
+    throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
+  if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
+  check_certificate_size(g.base.H, g.base);
+  check_certificate_size(g.H1, g.base);
+  nlohmann::json j = header("bound-max");
+  nlohmann::json mo;
+  mo["H"] = tf.H;
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  mo["set"] = sets;
+  mo["name"] = K;
+  mo["T"] = g.base.T.str();
+  mo["delay"] = g.base.delay;
+  if (g.base.frac_delay) mo["frac_delay"] = g.base.frac_delay->str();
+  mo["eta"] = g.base.eta.str();
+  mo["damping"] = g.b.str();
+  j["model"] = mo;
+  nlohmann::json claim;
+  claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
+                      "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
+  claim["status"] = to_string(m.status);
+  nlohmann::json evidence;
+  const bool zero = m.outcome == Outcome::fails;
+  std::optional<rational> hi;
+  if (m.infinite) {
+    claim["infinite"] = true;
+  } else if (zero) {  // b*(0) >= b: K_max = 0
+    if (m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
+    claim["status"] = "exact";
+    claim["value"] = "0";
+    hi = rational(0);
+  } else {
+    if (!m.enclosure) throw InputError("--certificate: sup " + K + " has no enclosure: no certificate");
+    if (m.status == Status::exact) {
+      claim["value"] = m.value.str();
+      hi = m.value;
+    } else {  // what is printed: the enclosure rounded outward at digits + 3 (cli/bound_max.cpp)
+      const std::string lo_s = decimal_outward(m.enclosure->lo, digits + 3, -1), hi_s = decimal_outward(m.enclosure->hi, digits + 3, +1);
+      claim["lo"] = parse_rational(lo_s, "enclosure").str();
+      claim["hi"] = parse_rational(hi_s, "enclosure").str();
+      claim["printed_lo"] = lo_s;
+      claim["printed_hi"] = hi_s;
+      hi = parse_rational(hi_s, "enclosure");
+    }
+  }
+  if (!zero) {  // b*(0) <= b0 < b, the printed b*(0) rounded outward
+    if (m.at_zero.infinite || !m.at_zero.enclosure) throw InputError("--certificate: b*(0) has no enclosure");
+    const rational b0 = parse_rational(passivity::reported_enclosure(m.at_zero, digits).hi, "b*(0)");
+    if (b0 >= g.b) throw InputError("--certificate: b*(0) is not shown below b at " + std::to_string(digits) + " digits; raise --digits");
+    evidence["b0_hi"] = b0.str();
+  }
+  std::optional<long> q;
+  if (hi) {  // b*(hi) >= b: a witness for H0 + hi H1
+    passivity::BoundProblem p = passivity::at_gain(g, *hi);
+    const WitnessObjective obj = witness_objective(p);
+    const auto omega = zero ? m.at_zero.omega_enclosure : m.omega;
+    const auto c1 = find_witness(obj, g.b - p.eta, omega, p.T);
+    if (!c1) throw NumericalError("--certificate: no rational witness c1 with b*(" + K + " = " + hi->str() + ") >= b was found");
+    evidence["witness_c"] = c1->str();
+    if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
+  } else {
+    const WitnessObjective obj = witness_objective(g.base);
+    if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
+  }
+  j["claim"] = claim;
+  j["evidence"] = evidence;
+  return j;
+}
+
+nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
+                                           const lmi::PassivityLevel& c, bool is_level, int digits) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds G as written by --H; with --num/--den, --mat or --ss it is not implemented yet");
+  if (c.status != Status::exact && c.status != Status::certified)
+    throw InputError("--certificate: the level is not certified here (the certified frequency path gave none): no certificate");
+  if (!is_level || !c.enclosure)
+    throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
+                     "on the unit circle): no certificate");
+  nlohmann::json j = header("passivity-level");
+  nlohmann::json sets = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
+  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
+  nlohmann::json claim;
+  claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
+                          : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
+  rational hi;
+  if (c.status == Status::exact && c.enclosure->lo == c.enclosure->hi) {
+    claim["status"] = "exact";
+    claim["value"] = c.enclosure->lo.str();
+    hi = c.enclosure->lo;
+  } else {  // the enclosure as printed, rounded outward (cmd_passivity_level.cpp)
+    const std::string lo_s = decimal_outward(c.enclosure->lo, digits, -1), hi_s = decimal_outward(c.enclosure->hi, digits, +1);
+    claim["status"] = "certified";
+    claim["lo"] = parse_rational(lo_s, "enclosure").str();
+    claim["hi"] = parse_rational(hi_s, "enclosure").str();
+    claim["printed_lo"] = lo_s;
+    claim["printed_hi"] = hi_s;
+    hi = parse_rational(hi_s, "enclosure");
+  }
+  j["claim"] = claim;
+  // Re W = -f with f the objective of (z - 1) W at T = 1 (the producer's route): a witness with f >= -hi
+  const QPoly zm1{rational(-1), rational(1)};
+  const RationalFunction<rational> W = osp ? RationalFunction<rational>(G.den(), G.num()) : G;
+  WitnessObjective obj;
+  obj.f = passivity::objective(RationalFunction<rational>(zm1 * W.num(), W.den()), rational(1), 0).f;
+  std::optional<Enclosure<rational>> theta;
+  if (c.theta_min >= 0) theta = Enclosure<rational>{exact_rational(c.theta_min), exact_rational(c.theta_min)};
+  const auto c0 = find_witness(obj, -hi, theta, rational(1));
+  if (!c0) throw NumericalError("--certificate: no rational witness c0 with Re W(c0) <= " + hi.str() + " was found");
   j["evidence"] = {{"witness_c", c0->str()}};
   return j;
 }

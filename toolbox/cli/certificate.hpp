@@ -11,18 +11,38 @@
 
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/contact/wedge.hpp"
+#include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
 
-/// The certificate of b* (paper 001, (45)/(54), integer delay): claim "b* = v" [exact] or
-/// "b* in [lo, hi]" [certified, lo and hi exactly the printed enclosure], evidence a rational
-/// witness c0 = cos(w0 T) in [-1, 1] with f(c0) >= lo. InputError (exit 2) for what has no
-/// certificate yet: b* = +inf, a fractional delay, H not given by --H, a numeric result;
-/// NumericalError when no witness is found.
+/// The certificate of b* (paper 001, (45)/(54), an integer delay n and a delay t_d): claim
+/// "b* = v" [exact] or "b* in [lo, hi]" [certified, lo and hi exactly the printed enclosure],
+/// evidence a rational witness c0 = cos(w0 T/q) in the domain [cos(pi/q), 1] with f(c0) >= lo
+/// (n + t_d/T = P/q; q = 1 for an integer delay) and, for q >= 2, domain_c_lo <= cos(pi/q).
+/// InputError (exit 2) for what has no certificate: b* = +inf, H not given by --H, a numeric
+/// result, a delay whose exact expansion exceeds the checkers' size limit; NumericalError when no
+/// witness is found.
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits);
+
+/// The certificate of `bound --max K --damping b` (check/bound_max_check.hpp): H as written by
+/// --H with K free, the claim "K_max in [lo, hi]" (the printed enclosure), "= v" [exact], "= 0"
+/// (b*(0) >= b) or "= +inf", and the evidence: b0_hi (b*(0) <= b0_hi < b, when K_max > 0), a
+/// witness c1 with f(c1) >= b for H0 + hi H1 (when finite), domain_c_lo for a fractional delay.
+/// InputError (exit 2) for what has no certificate: H not given by --H, an undecided or numeric
+/// answer, b*(0) = +inf, a delay beyond the checkers' size limit; NumericalError when no witness is
+/// found.
+nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits);
+
+/// The certificate of `passivity-level --H` (check/passivity_level_check.hpp): G as written, the
+/// kind (isp, osp), the certified frequency level c as claim (exact, or its enclosure printed at
+/// `digits`), a witness c0 = cos(theta0) with Re W(c0) <= hi (W = G, or 1/G for osp). InputError
+/// (exit 2) when G is not given by --H, or c is not a certified level (an OSP value <= 0).
+nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
+                                           const lmi::PassivityLevel& c, bool is_level, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit

@@ -4,7 +4,8 @@
 //                 [--frac-delay TD] [--eta ETA] [--digits D] [--method certified|fast|grid]
 //                 [--explain] [--json] [--curve FILE] [--quantum DELTA [--coulomb FC]]
 //   hapstab bound --batch FILE     (one case per line: expression and options; one JSON line each)
-//   --certificate FILE writes b*'s certificate for `hapstab check` (cli/certificate.hpp; integer delays)
+//   --certificate FILE writes b*'s certificate for `hapstab check` (cli/certificate.hpp; integer and fractional delays;
+//   with --max, K_max's)
 // JSON keys: bound ("inf" when no finite b), omega (rad/s or null), enclosure [lo, hi], status,
 // closed_form (name or null), plus method, path ("exact" or "long_delay") and plan (the planner's
 // reason), where, closed_form_value; dirichlet_C/_D (certified
@@ -386,11 +387,10 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                            app.add_option("--batch", *batch, "FILE with one case per line; prints one JSON line per case");
                            return [o, batch]() -> int {
                              if (!batch->empty()) return run_batch(*batch);
-                             if (!o->certificate.empty() && (!o->max.empty() || !o->frac.empty()))
-                               throw InputError(std::string("--certificate: a certificate of ") +
-                                                (o->max.empty() ? "b* with --frac-delay" : "bound --max") + " is not implemented yet");
                              if (!o->max.empty()) {
                                const passivity::BoundMax m = compute_max(*o);
+                               if (!o->certificate.empty())
+                                 cli::write_certificate(o->certificate, cli::bound_max_certificate(o->tf, m, o->digits));
                                if (o->json) cli::print_json(cli::bound_max_json(m, o->digits));
                                else cli::print_bound_max(m, o->digits);
                                return cli::bound_max_exit(m);

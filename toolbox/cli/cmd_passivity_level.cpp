@@ -35,6 +35,7 @@
 #include <optional>
 #include <sstream>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/mat_file.hpp"
 #include "cli/tf_options.hpp"
@@ -52,7 +53,7 @@ const TfRules tf_rules{/*period_required=*/true, /*causal=*/true, /*with_delay=*
 
 struct Opts {
   TfOptions tf;
-  std::string ss, kind = "osp", backend = "auto";
+  std::string ss, kind = "osp", backend = "auto", certificate;
   int lemma = 1, grid = 4096, digits = 17;
   bool json = false;
 };
@@ -219,6 +220,11 @@ int run(const Opts& o) {
   const StateSpace<double> sys = read_model(o, G, exact);
   const Levels v = lmi::passivity_levels({sys, G, exact}, o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp,
                                           o.lemma, backend, o.grid, o.digits);
+  if (!o.certificate.empty()) {
+    if (!G) throw InputError("--certificate: a certificate holds G as written by --H; with --ss or --mat it is not implemented yet");
+    write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c,
+                                                                 v.cert_ok && v.cert_is_level && &v.main() == &v.c, o.digits));
+  }
   if (o.json) report_json(o, v);
   else report_text(o, v);
   return v.any ? exit_ok : exit_numerical;
@@ -236,6 +242,9 @@ const Register reg({"passivity-level",
                       app.add_option("--lemma", o->lemma, "1 (KYP LMI (2), default) or 2 (Schur form)");
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
+                      app.add_option("--certificate", o->certificate,
+                                     "write the certified SISO level's certificate (JSON, G by --H) to FILE, for `hapstab check FILE` "
+                                     "(docs/certificates.md)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
                                                       "enclosure, lower_bound, upper_bound, exact, value, theta, kind, "
                                                       "certified_frequency, lmi, frequency, note)");

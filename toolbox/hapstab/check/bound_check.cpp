@@ -5,8 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "hapstab/check/nonnegative.hpp"
-#include "hapstab/check/on_circle.hpp"
+#include "hapstab/check/bound_objective.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -17,27 +16,12 @@ namespace {
 
 using P = Polynomial<rational>;
 
-using circle::OnCircle;
-using circle::mul;
-using circle::at_circle;
-const P one_minus_c2 = circle::one_minus_c2();
-
-OnCircle power(OnCircle x, long n) {
-  OnCircle r{P(rational(1)), P()};
-  while (n > 0) {
-    if (n & 1) r = mul(r, x);
-    n >>= 1;
-    if (n) x = mul(x, x);
-  }
-  return r;
-}
-
 std::string decimal(const rational& x) { return to_decimal(x, 12); }
 
 }  // namespace
 
 Verdict check_bound(const nlohmann::json& cert) {
-  constexpr long max_degree = 1000;
+  constexpr long max_size = 1000;
   using detail::exact_field;
   using detail::object_field;
   const nlohmann::json& model = object_field(cert, "model", "certificate");
@@ -46,25 +30,16 @@ Verdict check_bound(const nlohmann::json& cert) {
 
   // ---- the model as written (a field this checker does not read would be a model it does not check)
   detail::only_fields(cert, {"certificate", "version", "kind", "model", "claim", "evidence", "produced_by"}, "certificate");
-  detail::only_fields(model, {"H", "set", "T", "delay", "eta"}, "model");
+  detail::only_fields(model, {"H", "set", "T", "delay", "frac_delay", "eta"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
-  detail::only_fields(evidence, {"witness_c"}, "evidence");
+  detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
   const std::string text = model.at("H").get<std::string>();
-  const rational T = exact_field(model, "T", "model");
-  if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  if (!model.contains("delay") || !model.at("delay").is_number_integer())
-    throw InputError("model.delay: missing or not an integer (n in z^-n)");
-  const long n = model.at("delay").get<long>();
-  if (n < 0 || n > 100000) throw InputError("model.delay: " + std::to_string(n) + " is outside [0, 100000]");
-  const rational eta = exact_field(model, "eta", "model");
-  if (eta < 0) throw InputError("model.eta: must be >= 0, got " + eta.str());
-  const TransferFunction H = detail::model_tf(model, text, T);
-  // the checker expands z^-n: its polynomials have degree max(deg N, deg D + n) (twice that in c)
-  const long degree = std::max<long>(H.num().degree(), H.den().degree() + n);
-  if (degree > max_degree)
-    throw InputError("model: H z^-n has degree " + std::to_string(degree) + ", beyond this checker's limit of " +
-                     std::to_string(max_degree) + " (it expands the delay exactly)");
+  const detail::DelayModel dm = detail::read_delay_model(model);
+  const rational& eta = dm.eta;
+  const TransferFunction H = detail::model_tf(model, text, dm.T);
+  // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
+  detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim
   if (!claim.contains("status") || !claim.at("status").is_string())
@@ -92,35 +67,23 @@ Verdict check_bound(const nlohmann::json& cert) {
       return {false, std::string("claim.") + key + " = " + v.get<std::string>() + " is not the claimed " + want.str()};
   }
 
-  // ---- f(c) = A/B + eta, the checker's own derivation (header)
-  OnCircle N = at_circle(H.num());
-  if (n > 0) N = mul(N, power(OnCircle{P{rational(0), rational(1)}, P(rational(-1))}, n));  // conj(z)^n
-  const OnCircle D = at_circle(H.den());
-  const P X = N.a * D.a + one_minus_c2 * N.b * D.b, Y = N.b * D.a - N.a * D.b;
-  const P A = T * (X - P{rational(1), rational(1)} * Y);
-  const P B = rational(2) * (D.a * D.a + one_minus_c2 * D.b * D.b);
+  // ---- f(c) = A/B + eta in c = cos(wT/q), the checker's own derivation (check/bound_objective.hpp)
+  const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
+  // the band c in [cos(pi/q), 1] ([-1, 1] for an integer delay) lies in [c_lo, 1]
+  const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
+  const rational c0 = exact_field(evidence, "witness_c", "evidence");
 
-  // ---- upper: (hi - eta) B - A >= 0 on [-1, 1]
-  if (auto why = nonnegative_on((hi - eta) * B - A, rational(-1), rational(1)))
-    return {false, "b* <= " + hi.str() + " (" + decimal(hi) + ") fails: (hi - eta) B(c) - A(c) on [-1, 1]: " + *why};
+  // ---- upper: (hi - eta) B - A >= 0 on [c_lo, 1]
+  std::string how;
+  if (auto why = detail::upper_bound_fails(f, hi - eta, "(hi - eta)", c_lo, dm.q, how))
+    return {false, "b* <= " + hi.str() + " (" + decimal(hi) + ") fails: " + *why};
 
   // ---- lower: the witness
-  const rational c0 = exact_field(evidence, "witness_c", "evidence");
-  if (c0 < -1 || c0 > 1) return {false, "evidence.witness_c = " + c0.str() + " is outside [-1, 1]"};
-  // f on the reduced A/B: at a pole of H that cancels in A/B (a Tustin pole at z = -1, say) the
-  // value is f's limit there, which the supremum reaches
-  const P g = gcd(A, B);
-  const P Ar = divmod(A, g).first, Br = divmod(B, g).first;
-  const rational b0 = Br(c0);
-  if (b0 == 0) return {false, "evidence.witness_c = " + c0.str() + " is a pole of the objective (a pole of H on the unit circle)"};
-  const rational f0 = Ar(c0) / b0 + eta;
-  if (f0 < lo)
-    return {false, "b* >= " + lo.str() + " (" + decimal(lo) + ") not shown: the objective at the witness c0 = " + c0.str() +
-                       " is " + decimal(f0) + " < lo"};
+  if (auto why = detail::lower_bound_fails(f, lo - eta, c0, dm.q))
+    return {false, "b* >= " + lo.str() + " (" + decimal(lo) + ") not shown: " + *why};
 
   std::string what = status == "exact" ? "b* = " + lo.str() : "b* in [" + decimal(lo) + ", " + decimal(hi) + "]";
-  return {true, what + " (upper bound: (hi - eta) B - A >= 0 on [-1, 1] by Sturm, degree " + std::to_string(B.degree() > A.degree() ? B.degree() : A.degree()) +
-                    "; lower bound: the objective at c0 = " + (c0.str().size() > 40 ? c0.str().substr(0, 40) + "..." : c0.str()) + ")"};
+  return {true, what + " (upper bound: " + how + "; lower bound: the objective at c0 = " + detail::shortened(c0) + ")"};
 }
 
 }  // namespace hapstab::check

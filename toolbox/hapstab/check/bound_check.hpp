@@ -1,31 +1,35 @@
 // hapstab/check/bound_check.hpp -- the checker of a `bound` certificate: b* of paper 001,
-//   b* = sup_{0 <= w <= pi/T} Re{ T H(z) z^-n / (1 - z) } + eta,   z = e^{jwT}     (45), (54)
+//   b* = sup_{0 <= w <= pi/T} Re{ T H(z) z^-n e^{-j w t_d} / (1 - z) } + eta,  z = e^{jwT}   (45), (54)
 // for an exact H(z) (the expression as written, its --set values), T > 0, an integer delay
-// n >= 0 and eta >= 0. (A fractional delay has no certificate yet.)
+// n >= 0, a delay t_d >= 0 in seconds (model.frac_delay; 0 when absent) and eta >= 0.
 //
-// Derivation (the checker's own; not passivity::objective): put c = cos(wT), s = sin(wT), so
-// z = c + js with s^2 = 1 - c^2, and write every polynomial in z as a(c) + js b(c) (multiplying
-// two such: (a1 a2 - (1 - c^2) b1 b2) + js (a1 b2 + a2 b1)). With H = N/D,
-//   N(z) conj(z)^n = Nr + js Ni,   D(z) = Dr + js Di,   N conj(z)^n conj(D) = X + js Y,
-//   X = Nr Dr + (1 - c^2) Ni Di,   Y = Ni Dr - Nr Di,   and conj(1 - z) = (1 - c) + js, so
-//   Re{T W/(1 - z)} = T (1 - c)[X - (1 + c) Y] / (|D|^2 |1 - z|^2),  |1 - z|^2 = 2 (1 - c):
-//   f(c) = A(c)/B(c) + eta,  A = T [X - (1 + c) Y],  B = 2 (Dr^2 + (1 - c^2) Di^2) >= 0 on [-1, 1].
-// w in [0, pi/T] <-> c in [-1, 1] one to one; f is defined where B(c) > 0 (B = 0 only at poles of
-// H on the unit circle, finitely many: b* is the sup over the rest).
+// Derivation (the checker's own, check/bound_objective.hpp; not passivity::objective, nor the
+// fractional-delay path's H(w^q)/S(w)): with tau = n + t_d/T = P/q and c = cos(wT/q), the
+// objective is f(c) = A(c)/B(c) + eta with B >= 0 on [-1, 1], on the domain c in [cos(pi/q), 1]
+// (w in [0, pi/T] one to one; [-1, 1] for an integer delay, q = 1). B = 0 only at the finitely
+// many poles of H on the unit circle: b* is the sup over the rest.
 //
 // Theorem checked (claim "b* in [lo, hi]", or "b* = v" with lo = hi = v):
-//   (upper) b* <= hi  iff  P = (hi - eta) B - A >= 0 on [-1, 1]   (B > 0 off finitely many points,
-//           and P, B continuous) -- decided exactly by check/nonnegative.hpp (Yun + Sturm);
-//   (lower) b* >= lo  if the witness c0 (a rational in [-1, 1], evidence.witness_c) has
-//           Ar(c0)/Br(c0) + eta >= lo, exactly, with Ar/Br = A/B reduced (g = gcd(A, B)) and
-//           Br(c0) != 0: Ar/Br is continuous at c0 and equals f off the finitely many zeros of B,
-//           so it is f's value or limit at c0, and the supremum is at least that.
-// Size limit: max(deg N, deg D + n) <= 1000 (the check expands z^-n; degree 300 takes ~7 s), else
-// the certificate is refused (InputError) rather than checked for hours.
-// Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), eta >= 0, lo <= hi,
-// the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers claimed, exactly.
+//   (upper) b* <= hi  if  P = (hi - eta) B - A >= 0 on [c_lo, 1], a rational interval containing
+//           the domain (c_lo = evidence.domain_c_lo, -1 when absent, shown <= cos(pi/q) by
+//           bound_objective.hpp's Chebyshev test) -- iff for c_lo = cos(pi/q), since B > 0 off
+//           finitely many points and P, B are continuous; or if P U_{q-1} >= 0 on [c_lo, 1]
+//           (U_{q-1} > 0 on (cos(pi/q), 1]: the test across an irrational end where f -> -inf);
+//           decided exactly by check/nonnegative.hpp (Yun + Sturm);
+//   (lower) b* >= lo  if the witness c0 (a rational in the domain, evidence.witness_c, shown so by
+//           the Chebyshev test) has Ar(c0)/Br(c0) + eta >= lo, exactly, with Ar/Br = A/B reduced
+//           (g = gcd(A, B)) and Br(c0) != 0: Ar/Br is continuous at c0 and equals f off the finitely
+//           many zeros of B, so it is f's value or limit at c0, and the supremum is at least that.
+// A pole of H at z = -1 meeting a fractional delay (the Tustin wall with t_d = 1.5 T: f -> -inf at
+// wT = pi, issue 46 item 1) needs the second test only when the end is irrational (q >= 4): A has
+// a simple, B a double zero there, so P changes sign at the end; +inf has no certificate.
+// Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
+// takes ~7 s), else the certificate is refused (InputError) rather than checked for hours.
+// Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,
+// eta >= 0, lo <= hi, the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers
+// claimed, exactly.
 // Not verified here: that H is stable (the premise under which b* is the passivity bound of
-// paper 001, not part of the value of the sup); b* = +inf has no certificate yet.
+// paper 001, not part of the value of the sup); b* = +inf has no certificate.
 //
 // Implements: paper 001 (45), (54).
 #pragma once

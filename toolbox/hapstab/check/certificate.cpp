@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 
 #include "hapstab/check/bound_check.hpp"
+#include "hapstab/check/bound_max_check.hpp"
+#include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
@@ -91,10 +93,12 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (!c.contains("kind") || !c.at("kind").is_string()) throw InputError("kind: missing or not a string");
   const std::string kind = c.at("kind").get<std::string>();
   if (kind == "bound") return check_bound(c);
+  if (kind == "bound-max") return check_bound_max(c);
+  if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, r, stability, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

@@ -2,7 +2,9 @@
 // checkers"): a JSON file that holds the model as written, a claim about it, and the evidence.
 // The checker trusts only numeric/, poly/ and lti/ (exact rationals, polynomials, the expression
 // parser); it never calls the code that produced the claim. One small checker per kind:
-//   bound   b* of paper 001 (45)/(54), integer delay      check/bound_check.hpp
+//   bound   b* of paper 001 (45)/(54), any delay          check/bound_check.hpp
+//   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
+//   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
 //   stability  the one-DOF sampled loop, Schur-Cohn       check/stability_check.hpp
 //   wedge   paper 002 (25), (21) and its assumptions      check/wedge_check.hpp

@@ -104,6 +104,7 @@ std::optional<FracExact> frac_exact_problem(const BoundProblem& pb, int max_degr
   if (den(tau) < 2 || degree > max_degree) return std::nullopt;
   const long q = den(tau).convert_to<long>(), p = num(tau).convert_to<long>();  // both <= degree
   auto spread = [q](const QPoly& a) {  // a(w^q)
+    if (a.is_zero()) return a;          // degree -1: (-1) q + 1 elements would be a huge size_t
     std::vector<rational> c(static_cast<size_t>(a.degree() * q + 1), rational(0));
     for (int k = 0; k <= a.degree(); ++k) c[static_cast<size_t>(k * q)] = a.coeffs()[static_cast<size_t>(k)];
     return QPoly(std::move(c));
