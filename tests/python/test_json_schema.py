@@ -166,6 +166,13 @@ def test_r_writes_its_status_as_a_word_and_the_sentence_beside_it():
     assert (j["digits"], j["digits_certified"]) == (25, 25)
 
 
+def test_bound_max_writes_its_crossing_frequency_as_omega_enclosure():
+    # bound's omega is a decimal (the maximiser); an enclosure takes the shared suffix
+    _, j = cli("bound", "--H", WALL, "--T", "1/1000", "--set", "B=2", "--damping", "5", "--delay", "1", "--max", "K")
+    lo, hi = (float(x) for x in j["omega_enclosure"])
+    assert 0 < lo <= hi and j["omega"] == j["omega_enclosure"]
+
+
 @pytest.mark.parametrize("args, path", [
     (["bound", "--H", WALL, "--T", "1/1000", "--set", "B=2", "--damping", "5", "--max", "K", "--digits", "40"], "exact"),
     (["bound", "--H", WALL, "--T", "1/1000", "--set", "B=2", "--damping", "5", "--max", "K", "--delay", "300"],

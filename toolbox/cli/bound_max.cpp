@@ -41,7 +41,10 @@ nlohmann::json bound_max_json(const BoundMax& r, int digits) {
   if (m.status == Status::exact && finite) j["exact"] = m.value.str();
   j["damping"] = to_decimal(r.problem.b, 17);
   j["b_at_zero"] = bound_json(m.at_zero, digits);
-  j["omega"] = m.omega ? outward(*m.omega, 17) : nlohmann::json(nullptr);
+  // the crossing frequency's enclosure under the shared suffix (docs/json.md): `bound`'s `omega`
+  // is a decimal, so an enclosure is `omega_enclosure`; `omega` is its old name, kept for one release
+  j["omega_enclosure"] = m.omega ? outward(*m.omega, 17) : nlohmann::json(nullptr);
+  j["omega"] = j["omega_enclosure"];
   j["where"] = m.where;
   const auto& cf = r.closed_form;
   j["closed_form"] = cf ? nlohmann::json(cf->name) : nlohmann::json(nullptr);
