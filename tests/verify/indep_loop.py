@@ -461,7 +461,9 @@ def scene_toml(c):
     return "\n".join(L) + "\n"
 
 
-def build_loop_scene(c):
+def scene_plant(c):
+    """The scene's devices (and operators' dampers) sampled under a ZOH: (Phi, Gamma, Cy) at 50
+    digits, the state per DOF [velocity, position], Cy the sampled positions."""
     with mp.workdps(DPS):
         N = len(c["devices"])
         # continuous plant: per DOF the device's velocity state(s) and its position
@@ -485,12 +487,19 @@ def build_loop_scene(c):
             B[2 * i, i] = bv
             Cy[i, 2 * i + 1] = 1
         Phi, Gam = zoh(A, B, mpq(c["T"]))
-        # environment: each entry realised, e = sum_j E_ij y_j
-        rowsA, off = [], 0
+        return Phi, Gam, Cy
+
+
+def realize_matrix(E):
+    """An N x N matrix of Rational entries realised entry by entry (controllable canonical form
+    each, the entries' states stacked): (A, B, C, D) as mp matrices, input and output N."""
+    with mp.workdps(DPS):
+        N = len(E)
+        off = 0
         ents = []
         for i in range(N):
             for j in range(N):
-                Ae, Be, Ce, De = realize_discrete(c["E"][i][j].num, c["E"][i][j].den)
+                Ae, Be, Ce, De = realize_discrete(E[i][j].num, E[i][j].den)
                 ents.append((i, j, Ae, Be, Ce, De))
         r = sum(e[2].rows for e in ents)
         Ac = mp.zeros(r, r)
@@ -506,4 +515,10 @@ def build_loop_scene(c):
                 Cc[i, off + p] = Ce[0, p]
             Dc[i, j] += De[0, 0]
             off += k
-        return Loop(Phi, Gam, Cy, [(Ac, Bc, Cc, Dc, "K")], c["n"])
+        return Ac, Bc, Cc, Dc
+
+
+def build_loop_scene(c):
+    Phi, Gam, Cy = scene_plant(c)
+    Ac, Bc, Cc, Dc = realize_matrix(c["E"])
+    return Loop(Phi, Gam, Cy, [(Ac, Bc, Cc, Dc, "K")], c["n"])
