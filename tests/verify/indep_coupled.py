@@ -38,13 +38,24 @@ GAINS = {
 }
 
 
-def gen_coupled(rng):
+def gen_coupled(rng, conservatism=False):
     """A scene of 2-3 DOF (indep_loop.gen_scene's devices, operators, walls and springs) with a
-    [coupling] and the parameter g in one of five places."""
+    [coupling] and the parameter g in one of five places. conservatism: Theorem 5's setting
+    (mass-dampers with b > 0, no delay, g the environment's gain, V strictly proper: the loop is
+    affine in g, so both sides are suprema of intervals)."""
     c = IL.gen_scene(rng)
     T, N = c["T"], len(c["devices"])
     place = rng.choices(["env g, V with feedthrough", "coupling 1/g", "coupling g", "env g(1+g)/2",
                          "env g, V strictly proper"], weights=[35, 25, 10, 15, 15])[0]
+    if conservatism:
+        place = "env g, V strictly proper"
+        c["n"] = 0
+        c["tags"]["delay"] = "0"
+        c["devices"] = [dict(kind="md", m=d["m"], b=IL.rq(rng, 0.5, 5)) for d in c["devices"]]
+        c["tags"]["first device"] = "mass-damper"
+        # an operator b + k/s on every DOF (Theorem 5 needs one per DOF; its spring makes M(0) Schur
+        # stable, so the walk of the certified crossing can reach 0)
+        c["ops"] = [(IL.rq(rng, 0.5, 5), IL.rq(rng, 10, 500)) for _ in c["devices"]]
     # V per DOF: the admittance of a coupling spring kc in parallel with a damper bc, kc in
     # [0.2, 5] times the DOF's wall stiffness (paper 000's virtual coupling), or a pure spring
     V = [[Rational([0], [1]) for _ in range(N)] for _ in range(N)]
@@ -57,6 +68,9 @@ def gen_coupled(rng):
         kind = rng.choices(["spring-damper", "spring", "first order"], weights=[55, 20, 25])[0]
         if place == "env g, V strictly proper":
             kind = "lagged spring-damper"
+            if conservatism:  # Lemma 1's DC condition wants V(1) = 1/kc > T/(2 Delta), Delta = b
+                kc = Q(round(IL.rq(rng, 0.05, 0.9, den=(20, 100)) * 2 * c["devices"][i]["b"] / T))
+                kind = "spring-damper"  # with feedthrough: E is made strictly proper below
         if kind == "spring-damper":    # T z / ((kc T + bc) z - bc): feedthrough T/(kc T + bc)
             V[i][i] = Rational([T, 0], [kc * T + bc, -bc])
         elif kind == "spring":         # 1/kc
@@ -74,13 +88,15 @@ def gen_coupled(rng):
         e = Q(1, round(IL.rq(rng, 2, 20) * max(c["E"][0][0].num[0], Q(100))))
         V[0][1] = Rational([e], [1])
         V[1][0] = Rational([e], [1])
+    if conservatism:  # E z^-1: D_E = 0, so x_e = x + V u, u = -g E x_e stays affine in g
+        c["E"] = [[Rational(e.num, e.den + [Q(0)]) for e in row] for row in c["E"]]
     gE, gV = {"env g, V with feedthrough": ("g", "1"), "coupling 1/g": ("1", "1/g"), "coupling g": ("1", "g"),
               "env g(1+g)/2": ("g(1+g)/2", "1"), "env g, V strictly proper": ("g", "1")}[place]
     c["V"] = V
     c["gE"], c["gV"] = gE, gV
     c["tags"] = dict(c["tags"])
-    c["tags"]["g in"] = place
-    c["tags"]["coupling"] = "strictly proper" if place == "env g, V strictly proper" else (
+    c["tags"]["g in"] = "env g, E strictly proper" if conservatism else place
+    c["tags"]["coupling"] = "feedthrough, E strictly proper" if conservatism else "strictly proper" if place == "env g, V strictly proper" else (
         "feedthrough, cross term" if offdiag else "feedthrough")
     return c
 

@@ -450,6 +450,9 @@ def scene_toml(c):
     for i, bo in enumerate(c["ops"]):
         if bo is None:
             continue
+        if isinstance(bo, tuple):
+            L += ["[[operator]]", f'name = "h{i}"', f'dofs = ["d{i}"]', f'b = "{bo[0]}"', f'k = "{bo[1]}"', ""]
+            continue
         L += ["[[operator]]", f'name = "h{i}"', f'dofs = ["d{i}"]', f'b = "{bo}"', ""]
     rows = []
     for r in c["E"]:
@@ -474,15 +477,19 @@ def scene_plant(c):
             else:
                 a, bv = -mpq(d["b"]) / mpq(d["m"]), 1 / mpq(d["m"])
             bo = c["ops"][i]
+            ko = 0
+            if isinstance(bo, tuple):  # operator b_o + k_o/s: its spring deflection is the position
+                bo, ko = bo            # (the conserved difference of the two integrals set aside)
             if bo is not None:  # operator damper: force -b_o v on the device
                 a = a - bv * mpq(bo)
-            blocksA.append((a, bv))
+            blocksA.append((a, bv, -bv * mpq(ko)))
         n = 2 * N
         A = mp.zeros(n, n)
         B = mp.zeros(n, N)
         Cy = mp.zeros(N, n)
-        for i, (a, bv) in enumerate(blocksA):
+        for i, (a, bv, ax) in enumerate(blocksA):
             A[2 * i, 2 * i] = a          # velocity state (C = 1: v = state)
+            A[2 * i, 2 * i + 1] = ax     # an operator's spring on the position
             A[2 * i + 1, 2 * i] = 1       # position' = velocity
             B[2 * i, i] = bv
             Cy[i, 2 * i + 1] = 1

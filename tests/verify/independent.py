@@ -4,7 +4,7 @@ code and no formula-level shortcut with it (issue 46, "The campaigns that would 
 these"; docs/verification.md, "Independent campaigns").
 
   tests/verify/independent.py [--hapstab build/hapstab]
-                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly]
+                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -32,6 +32,14 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  the verdict is Schur-Cohn on lti/realization.cpp's exact charpoly beyond order 48:
                  M built exactly in fractions, det(zI - M) by Hessenberg reduction, Schur-Cohn in
                  fractions (indep_charpoly.py).
+  conservatism   `stability --scene S --max g --conservatism` where both regions can be intervals
+                 (g the environment's gain, E strictly proper so the loop stays affine beside a
+                 coupling with feedthrough, operators b + k/s so M(0) is Schur stable): the exact
+                 supremum against the loop reference; Theorem 5's soundness (stable where it
+                 concludes and below, its concluding value under the first crossing; a NOT-stable
+                 or DC-condition upper end checked); the ratio against the reference's supremum
+                 over Theorem 5's bracket. Theorem 5's own supremum has no independent reference
+                 (it needs an LMI solver): an infeasible program is counted, not checked.
 
 Outcomes per case: agree, MISS (a disagreement: printed with the command line and the
 reference value; exit 1), REFERENCE MISSED (hapstab's own maximiser shows a value the reference's
@@ -799,6 +807,130 @@ BRANCHES_CHARPOLY = [  # compared verdicts
 ]
 
 
+# ---------------------------------------------------------------------------------------------
+# stability --scene S --max g --conservatism: exact / Theorem 5, where both are suprema of intervals
+
+
+def case_conservatism(rng):
+    c = ICP.gen_coupled(rng, conservatism=True)
+    c["loop"] = ICP.CoupledLoop(c)
+    c["Knom"] = 1.0
+    return c
+
+
+def dc_condition_fails(c):
+    """Lemma 1's DC condition, independently: (V(1) - K)_jj <= 0 for some j, K_jj = T/(2 Delta_j),
+    Delta_j = b_j (a mass-damper 1/(m s + b) is OSP with level b). V(1) from the scene's entries."""
+    T = c["T"]
+    for j, d in enumerate(c["devices"]):
+        e = c["V"][j][j]
+        v1 = sum(e.num) / sum(e.den)
+        if v1 - T / (2 * Q(d["b"])) <= 0:
+            return True
+    return False
+
+
+def check_conservatism(c, exe, timeout):
+    text = ICP.scene_toml(c, "1")
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_conservatism_") as f:
+        f.write(text)
+        path = f.name
+    args = ["stability", "--scene", path, "--max", "g", "--conservatism", "--digits", "3"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    loop = c["loop"]
+    tags = dict(c["tags"])
+    out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args, margin=None)
+    ref = IL.sup_reference(loop, c["Knom"])
+    tag_reference(ref, tags, out, "g")
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc == 2:
+        out["outcome"] = "refused"
+        out["why"] = why_of(err, j)
+    elif j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+    else:
+        bad = []
+        # 1. the exact side, as scene_max (a supremum, or exit 3 with an interval proven stable)
+        if j.get("supremum_proven"):
+            sub = dict(tags={}, margin=None)
+            compare_sup(sub, ref, j, 0 if j.get("max") not in (None, "0") else 1, TOL_SUP, "g")
+            tags["exact side"] = "supremum"
+            if sub["outcome"] != "agree":
+                bad.append("exact side: " + sub.get("why", sub["outcome"]))
+        else:
+            tags["exact side"] = "sup 0" if j.get("max") == "0" else "undecided"
+            if j.get("max") == "0" and ref["kind"] != "zero":
+                bad.append(f"exact side: sup 0, but the reference is stable at small g ({ref['kind']})")
+            if j.get("stable_on"):
+                a, b = enc(j, "stable_on")
+                f_ = check_claim_points(loop, [x for x in (a + (b - a) * t for t in (0, 0.25, 0.5, 0.75, 1)) if x > 0], True)
+                if f_:
+                    bad.append(f"exact side: stable on [{a}, {b}] claimed, but rho = {mp.nstr(f_[1], 20)} at g = {mp.nstr(f_[0], 20)}")
+        # 2. Theorem 5 is sound: where it concludes, the loop is stable, and (g being the environment's
+        #    gain, its region an interval (0, sup]) so is every smaller g: concludes_at <= the exact sup
+        t5 = j.get("theorem5") or {}
+        ca, na = t5.get("concludes_at"), t5.get("not_at")
+        tags["Theorem 5"] = "bracket" if t5.get("bracket") else ("concludes, no upper end" if ca else "no conclusion")
+        if ca:
+            g5 = dec(ca["at"])
+            f_ = check_claim_points(loop, [g5 * t for t in (1, 0.5, 0.1, 0.01)], True)
+            if f_:
+                bad.append(f"Theorem 5 concludes at g = {ca['at']}, but rho = {mp.nstr(f_[1], 20)} >= 1 at g = {mp.nstr(f_[0], 20)}")
+            if ref["kind"] == "sup" and g5 > ref["hi"] * (1 + TOL_SUP):
+                bad.append(f"Theorem 5 concludes at g = {ca['at']}, above the reference's first crossing {mp.nstr(ref['hi'], 20)}")
+        if na:
+            why5 = na.get("why", "")
+            if "NOT stable" in why5:
+                f_ = check_claim_points(loop, [dec(na["at"])], False)
+                if f_:
+                    bad.append(f"Theorem 5: the loop is NOT stable at g = {na['at']} claimed, but rho = {mp.nstr(f_[1], 20)}")
+                tags["Theorem 5's upper end"] = "loop NOT stable (checked)"
+            elif "DC condition" in why5:
+                if not dc_condition_fails(c):
+                    bad.append(f"Theorem 5: Lemma 1's DC condition claimed to fail at g = {na['at']}, but (V(1) - K)_jj > 0 for every j")
+                tags["Theorem 5's upper end"] = "DC condition (checked)"
+            else:
+                tags["Theorem 5's upper end"] = "program infeasible (not referenced: no independent LMI solver)"
+        # 3. the ratio: printed only where both sides are suprema of intervals; it must hold
+        #    exact_sup / [t5 lo, t5 hi], the exact sup the reference's
+        r = j.get("conservatism")
+        tags["ratio"] = r is not None
+        if r is not None:
+            if not (j.get("supremum_proven") and t5.get("bracket")):
+                bad.append("a ratio printed without both suprema proven")
+            elif ref["kind"] == "sup":
+                rl, rh = dec(r[0]), dec(r[1])
+                t5l, t5h = enc(t5, "bracket")
+                need_lo, need_hi = ref["lo"] / t5h, ref["hi"] / t5l
+                if rl > need_lo * (1 + TOL_SUP) or rh < need_hi * (1 - TOL_SUP):
+                    bad.append(f"ratio [{r[0]}, {r[1]}] does not hold the reference's sup / Theorem 5's bracket, "
+                               f"[{mp.nstr(need_lo, 12)}, {mp.nstr(need_hi, 12)}]")
+        if bad:
+            out["outcome"] = "MISS"
+            out["why"] = "; ".join(bad)
+        elif j.get("supremum_proven") or tags.get("ratio"):
+            out["outcome"] = "agree"
+        elif rc == 3:
+            out["outcome"] = "undecided"
+            out["why"] = (j.get("note") or "")[:200]
+        else:
+            out["outcome"] = "agree"  # sup 0 with exit 1, checked above
+        if ref["kind"] == "sup":
+            out["margin"] = 1 - IL.rho_np(loop, float(ref["lo"]) / 2)
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] = out.get("why", "") + f" (scene kept: {path})"
+    else:
+        os.unlink(path)
+    return out
+
+
+BRANCHES_CONSERVATISM = [
+    ("exact side", "supremum", 0.5), ("Theorem 5", "bracket", 0.05), ("ratio", True, 0.05),
+]
+
+
 CRITERIA = {
     "bound": (case_bound, check_bound, BRANCHES_BOUND),
     "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
@@ -806,6 +938,7 @@ CRITERIA = {
     "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
     "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
+    "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
 }
 
 
@@ -830,7 +963,7 @@ def margin_bucket(m):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--hapstab", default="build/hapstab")
-    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly")
+    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism")
     ap.add_argument("--cases", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--first", type=int, default=0)
