@@ -45,14 +45,53 @@ def mpq(q):
 # Realisations (controllable canonical form), in mpmath matrices
 
 
+def _pdivmod(a, b):
+    """Descending exact polynomials: a = q b + r."""
+    a = list(a)
+    q = [Q(0)] * max(1, len(a) - len(b) + 1)
+    while len(a) >= len(b) and any(a):
+        f = a[0] / b[0]
+        q[len(q) - (len(a) - len(b)) - 1] = f
+        for i in range(len(b)):
+            a[i] -= f * b[i]
+        a.pop(0)
+    while len(a) > 1 and a[0] == 0:
+        a.pop(0)
+    return q, (a if a else [Q(0)])
+
+
+def reduce_fraction(num, den):
+    """num/den in lowest terms (Euclid's gcd over Q): the transfer function, not its writing. A zero
+    numerator is 0/1 -- `0/(T z + T)` is the zero function, with no pole at z = -1 (hapstab reads
+    an expression as a rational function; a realisation of the writing would add a mode on the
+    circle that nothing drives or shows)."""
+    num, den = list(num), list(den)
+    while len(num) > 1 and num[0] == 0:
+        num.pop(0)
+    while len(den) > 1 and den[0] == 0:
+        den.pop(0)
+    if not any(num):
+        return [Q(0)], [Q(1)]
+    a, b = list(den), list(num)
+    while len(b) > 1 or b[0] != 0:
+        if len(b) == 1:  # a nonzero constant: coprime
+            return num, den
+        _, r = _pdivmod(a, b)
+        a, b = b, r
+    g = a  # the gcd (degree >= 1 here)
+    return _pdivmod(num, g)[0], _pdivmod(den, g)[0]
+
+
 def realize_discrete(num, den):
-    """Proper num/den (descending, exact) -> (A, B, C, D) as mp matrices (order deg den)."""
+    """Proper num/den (descending, exact) -> (A, B, C, D) as mp matrices (order deg den after the
+    common factors of num and den are cancelled)."""
     num = [Q(x) for x in num]
     den = [Q(x) for x in den]
     while len(den) > 1 and den[0] == 0:
         den.pop(0)
     while len(num) > 1 and num[0] == 0:
         num.pop(0)
+    num, den = reduce_fraction(num, den)
     a0 = den[0]
     den = [x / a0 for x in den]
     num = [x / a0 for x in num]
@@ -369,6 +408,22 @@ def gen_stability(rng):
         Knom = 1.0
     tags = {"plant": pf, "controller": cf, "delay": "0" if n == 0 else ("1-5" if n <= 5 else str(n))}
     return dict(P=P, H0=H0, H1=H1, T=T, n=n, Knom=Knom, tags=tags)
+
+
+def free_position_every_K(c):
+    """z = 1 is an eigenvalue of M(K) for every K, decided exactly: the device integrates its
+    velocity (P(s) = num/den with den(0) = 0) and neither H0 nor H1 pushes back at DC (H0(1) =
+    H1(1) = 0, finite): a constant position with zero force is an equilibrium for every K (an
+    eigenvalue 1 that no K moves), so the loop is never Schur stable and the supremum is 0.
+    Double precision cannot see this on the long-delay loops (order ~n): a root at 1 comes out
+    as 1 +- 1e-13, on either side."""
+    if c["P"].den[-1] != 0:
+        return False
+    for H in (c["H0"], c["H1"]):
+        num, den = reduce_fraction([Q(x) for x in H.num], [Q(x) for x in H.den])
+        if sum(den) == 0 or sum(num) != 0:
+            return False
+    return True
 
 
 def stability_args(c, digits=25):

@@ -482,8 +482,13 @@ def check_stability(c, exe, timeout):
     loop = IL.build_loop_1dof(c)
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
+    free = IL.free_position_every_K(c)
+    if free:
+        tags["z = 1 for every K (exact)"] = True
     if c["n"] >= 1000:
         cl = check_claim_double(loop, j, rc, c["Knom"])
+        if free and rc == 1 and j and str(j.get("max")) == "0":
+            cl = dict(kind="claim", ok=True)
         tags["stable at small K"] = "n/a (n >= 1000: claim checked)"
         if rc == "timeout" or rc in (2, 3):
             out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
@@ -500,7 +505,10 @@ def check_stability(c, exe, timeout):
         tags["crossing"] = (j.get("crossing") or {}).get("at", "?")
         return out
     precise = c["n"] < 100
-    ref = IL.sup_reference(loop, c["Knom"], precise=precise)
+    if free:  # decided exactly (free_position_every_K); the scan in double cannot see it at n >= 100
+        ref = dict(kind="zero", value=mp.mpf(0), rho_small=mp.mpf(1), marginal=True)
+    else:
+        ref = IL.sup_reference(loop, c["Knom"], precise=precise)
     tags["stable at small K"] = ref["kind"] != "zero"
     tag_reference(ref, tags, out, "K")
     if rc == "timeout":
