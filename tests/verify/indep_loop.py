@@ -45,14 +45,53 @@ def mpq(q):
 # Realisations (controllable canonical form), in mpmath matrices
 
 
+def _pdivmod(a, b):
+    """Descending exact polynomials: a = q b + r."""
+    a = list(a)
+    q = [Q(0)] * max(1, len(a) - len(b) + 1)
+    while len(a) >= len(b) and any(a):
+        f = a[0] / b[0]
+        q[len(q) - (len(a) - len(b)) - 1] = f
+        for i in range(len(b)):
+            a[i] -= f * b[i]
+        a.pop(0)
+    while len(a) > 1 and a[0] == 0:
+        a.pop(0)
+    return q, (a if a else [Q(0)])
+
+
+def reduce_fraction(num, den):
+    """num/den in lowest terms (Euclid's gcd over Q): the transfer function, not its writing. A zero
+    numerator is 0/1 -- `0/(T z + T)` is the zero function, with no pole at z = -1 (hapstab reads
+    an expression as a rational function; a realisation of the writing would add a mode on the
+    circle that nothing drives or shows)."""
+    num, den = list(num), list(den)
+    while len(num) > 1 and num[0] == 0:
+        num.pop(0)
+    while len(den) > 1 and den[0] == 0:
+        den.pop(0)
+    if not any(num):
+        return [Q(0)], [Q(1)]
+    a, b = list(den), list(num)
+    while len(b) > 1 or b[0] != 0:
+        if len(b) == 1:  # a nonzero constant: coprime
+            return num, den
+        _, r = _pdivmod(a, b)
+        a, b = b, r
+    g = a  # the gcd (degree >= 1 here)
+    return _pdivmod(num, g)[0], _pdivmod(den, g)[0]
+
+
 def realize_discrete(num, den):
-    """Proper num/den (descending, exact) -> (A, B, C, D) as mp matrices (order deg den)."""
+    """Proper num/den (descending, exact) -> (A, B, C, D) as mp matrices (order deg den after the
+    common factors of num and den are cancelled)."""
     num = [Q(x) for x in num]
     den = [Q(x) for x in den]
     while len(den) > 1 and den[0] == 0:
         den.pop(0)
     while len(num) > 1 and num[0] == 0:
         num.pop(0)
+    num, den = reduce_fraction(num, den)
     a0 = den[0]
     den = [x / a0 for x in den]
     num = [x / a0 for x in num]
@@ -371,6 +410,22 @@ def gen_stability(rng):
     return dict(P=P, H0=H0, H1=H1, T=T, n=n, Knom=Knom, tags=tags)
 
 
+def free_position_every_K(c):
+    """z = 1 is an eigenvalue of M(K) for every K, decided exactly: the device integrates its
+    velocity (P(s) = num/den with den(0) = 0) and neither H0 nor H1 pushes back at DC (H0(1) =
+    H1(1) = 0, finite): a constant position with zero force is an equilibrium for every K (an
+    eigenvalue 1 that no K moves), so the loop is never Schur stable and the supremum is 0.
+    Double precision cannot see this on the long-delay loops (order ~n): a root at 1 comes out
+    as 1 +- 1e-13, on either side."""
+    if c["P"].den[-1] != 0:
+        return False
+    for H in (c["H0"], c["H1"]):
+        num, den = reduce_fraction([Q(x) for x in H.num], [Q(x) for x in H.den])
+        if sum(den) == 0 or sum(num) != 0:
+            return False
+    return True
+
+
 def stability_args(c, digits=25):
     h = f"{c['H0'].expr()} + K*({c['H1'].expr()})"
     a = ["stability", "--plant", c["P"].expr("s"), "--H", h, "--T", f"{c['T'].numerator}/{c['T'].denominator}",
@@ -450,6 +505,9 @@ def scene_toml(c):
     for i, bo in enumerate(c["ops"]):
         if bo is None:
             continue
+        if isinstance(bo, tuple):
+            L += ["[[operator]]", f'name = "h{i}"', f'dofs = ["d{i}"]', f'b = "{bo[0]}"', f'k = "{bo[1]}"', ""]
+            continue
         L += ["[[operator]]", f'name = "h{i}"', f'dofs = ["d{i}"]', f'b = "{bo}"', ""]
     rows = []
     for r in c["E"]:
@@ -461,7 +519,9 @@ def scene_toml(c):
     return "\n".join(L) + "\n"
 
 
-def build_loop_scene(c):
+def scene_plant(c):
+    """The scene's devices (and operators' dampers) sampled under a ZOH: (Phi, Gamma, Cy) at 50
+    digits, the state per DOF [velocity, position], Cy the sampled positions."""
     with mp.workdps(DPS):
         N = len(c["devices"])
         # continuous plant: per DOF the device's velocity state(s) and its position
@@ -472,25 +532,36 @@ def build_loop_scene(c):
             else:
                 a, bv = -mpq(d["b"]) / mpq(d["m"]), 1 / mpq(d["m"])
             bo = c["ops"][i]
+            ko = 0
+            if isinstance(bo, tuple):  # operator b_o + k_o/s: its spring deflection is the position
+                bo, ko = bo            # (the conserved difference of the two integrals set aside)
             if bo is not None:  # operator damper: force -b_o v on the device
                 a = a - bv * mpq(bo)
-            blocksA.append((a, bv))
+            blocksA.append((a, bv, -bv * mpq(ko)))
         n = 2 * N
         A = mp.zeros(n, n)
         B = mp.zeros(n, N)
         Cy = mp.zeros(N, n)
-        for i, (a, bv) in enumerate(blocksA):
+        for i, (a, bv, ax) in enumerate(blocksA):
             A[2 * i, 2 * i] = a          # velocity state (C = 1: v = state)
+            A[2 * i, 2 * i + 1] = ax     # an operator's spring on the position
             A[2 * i + 1, 2 * i] = 1       # position' = velocity
             B[2 * i, i] = bv
             Cy[i, 2 * i + 1] = 1
         Phi, Gam = zoh(A, B, mpq(c["T"]))
-        # environment: each entry realised, e = sum_j E_ij y_j
-        rowsA, off = [], 0
+        return Phi, Gam, Cy
+
+
+def realize_matrix(E):
+    """An N x N matrix of Rational entries realised entry by entry (controllable canonical form
+    each, the entries' states stacked): (A, B, C, D) as mp matrices, input and output N."""
+    with mp.workdps(DPS):
+        N = len(E)
+        off = 0
         ents = []
         for i in range(N):
             for j in range(N):
-                Ae, Be, Ce, De = realize_discrete(c["E"][i][j].num, c["E"][i][j].den)
+                Ae, Be, Ce, De = realize_discrete(E[i][j].num, E[i][j].den)
                 ents.append((i, j, Ae, Be, Ce, De))
         r = sum(e[2].rows for e in ents)
         Ac = mp.zeros(r, r)
@@ -506,4 +577,10 @@ def build_loop_scene(c):
                 Cc[i, off + p] = Ce[0, p]
             Dc[i, j] += De[0, 0]
             off += k
-        return Loop(Phi, Gam, Cy, [(Ac, Bc, Cc, Dc, "K")], c["n"])
+        return Ac, Bc, Cc, Dc
+
+
+def build_loop_scene(c):
+    Phi, Gam, Cy = scene_plant(c)
+    Ac, Bc, Cc, Dc = realize_matrix(c["E"])
+    return Loop(Phi, Gam, Cy, [(Ac, Bc, Cc, Dc, "K")], c["n"])

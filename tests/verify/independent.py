@@ -3,7 +3,8 @@
 code and no formula-level shortcut with it (issue 46, "The campaigns that would have caught
 these"; docs/verification.md, "Independent campaigns").
 
-  tests/verify/independent.py [--hapstab build/hapstab] [--criterion bound,bound_max,stability_max,scene_max]
+  tests/verify/independent.py [--hapstab build/hapstab]
+                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -20,6 +21,25 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
   scene_max      `stability --scene S --max g` on random 2-3 DOF scenes whose first device is often
                  open-loop unstable: the same reference on the loop built from the scene's blocks.
                  Any certified supremum with an unstable g in (0, sup) is a miss.
+  scene_coupling `stability --scene S --max g` on scenes with a [coupling] V(z) (in parallel with the
+                 device, paper 000 (11)) or a gain of degree != 1 in g, so that the closed loop is
+                 not affine in g and the bisection on certified verdicts answers (indep_coupled.py:
+                 x_e and u solved together per g, M(g) assembled anew, rho at 50 digits). Every
+                 certified verdict is checked: stable_at (rho < 1), unstable_at (rho >= 1), exit 1's
+                 "NOT stable at every value tried" at each g_ref 2^-k; an affine loop's supremum as
+                 in scene_max. Exit 3 is undecided, never agreement (its partial claims are checked).
+  charpoly       `stability --scene S` on loops of order 49-64 of pure masses with long delays, where
+                 the verdict is Schur-Cohn on lti/realization.cpp's exact charpoly beyond order 48:
+                 M built exactly in fractions, det(zI - M) by Hessenberg reduction, Schur-Cohn in
+                 fractions (indep_charpoly.py).
+  conservatism   `stability --scene S --max g --conservatism` where both regions can be intervals
+                 (g the environment's gain, E strictly proper so the loop stays affine beside a
+                 coupling with feedthrough, operators b + k/s so M(0) is Schur stable): the exact
+                 supremum against the loop reference; Theorem 5's soundness (stable where it
+                 concludes and below, its concluding value under the first crossing; a NOT-stable
+                 or DC-condition upper end checked); the ratio against the reference's supremum
+                 over Theorem 5's bracket. Theorem 5's own supremum has no independent reference
+                 (it needs an LMI solver): an infeasible program is counted, not checked.
 
 Outcomes per case: agree, MISS (a disagreement: printed with the command line and the
 reference value; exit 1), REFERENCE MISSED (hapstab's own maximiser shows a value the reference's
@@ -43,6 +63,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import mpmath as mp  # noqa: E402
 
+import indep_charpoly as ICH  # noqa: E402
+import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_passivity as IP  # noqa: E402
 from indep_common import SumTF, dec, run_hapstab, shell_line  # noqa: E402
@@ -460,8 +482,13 @@ def check_stability(c, exe, timeout):
     loop = IL.build_loop_1dof(c)
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
+    free = IL.free_position_every_K(c)
+    if free:
+        tags["z = 1 for every K (exact)"] = True
     if c["n"] >= 1000:
         cl = check_claim_double(loop, j, rc, c["Knom"])
+        if free and rc == 1 and j and str(j.get("max")) == "0":
+            cl = dict(kind="claim", ok=True)
         tags["stable at small K"] = "n/a (n >= 1000: claim checked)"
         if rc == "timeout" or rc in (2, 3):
             out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
@@ -478,7 +505,10 @@ def check_stability(c, exe, timeout):
         tags["crossing"] = (j.get("crossing") or {}).get("at", "?")
         return out
     precise = c["n"] < 100
-    ref = IL.sup_reference(loop, c["Knom"], precise=precise)
+    if free:  # decided exactly (free_position_every_K); the scan in double cannot see it at n >= 100
+        ref = dict(kind="zero", value=mp.mpf(0), rho_small=mp.mpf(1), marginal=True)
+    else:
+        ref = IL.sup_reference(loop, c["Knom"], precise=precise)
     tags["stable at small K"] = ref["kind"] != "zero"
     tag_reference(ref, tags, out, "K")
     if rc == "timeout":
@@ -558,11 +588,373 @@ BRANCHES_SCENE = [  # compared cases: a supremum, or an exit 3's "stable on [a, 
 ]
 
 
+# ---------------------------------------------------------------------------------------------
+# stability --scene S --max g with a [coupling], or g not of degree 1 (bisection on verdicts)
+
+
+def short_decimal(x, digits=2):
+    """x > 0 rounded to `digits` significant digits, as a plain decimal string (no exponent)."""
+    e = math.floor(math.log10(x)) - (digits - 1)
+    mant = round(x / 10 ** e)
+    q = Q(mant) * (Q(10) ** e)
+    s = f"{q.numerator}" if q.denominator == 1 else None
+    if s is None:  # q = mant / 10^-e exactly: write it with -e decimals
+        k = -e
+        whole, frac = divmod(mant, 10 ** k)
+        s = f"{whole}.{str(frac).rjust(k, '0')}"
+    return s
+
+
+def case_scene_coupling(rng):
+    c = ICP.gen_coupled(rng)
+    loop = ICP.CoupledLoop(c)
+    stable_small, cross = ICP.first_crossing_double(loop)
+    c["loop"] = loop
+    c["cross"] = cross
+    # the scene's value of g (where the bisection starts): near the double-precision boundary in
+    # 80% (within a factor 16 either side), else 1
+    if cross is not None and rng.random() < 0.8:
+        c["gref"] = short_decimal(cross * 2 ** rng.uniform(-4, 4))
+    else:
+        c["gref"] = "1"
+    c["Knom"] = 1.0
+    return c
+
+
+def check_claim_points(loop, pts, want_stable):
+    """rho at 50 digits at each point; the first point where the claim fails, or None."""
+    for g in pts:
+        r = IL.rho_mp(loop, g)[0]
+        if (r < 1) != want_stable:
+            return g, r
+    return None
+
+
+def check_scene_coupling(c, exe, timeout):
+    text = ICP.scene_toml(c, c["gref"])
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_coupled_") as f:
+        f.write(text)
+        path = f.name
+    args = ["stability", "--scene", path, "--max", "g", "--digits", "25"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    loop = c["loop"]
+    tags = dict(c["tags"])
+    gref = dec(c["gref"])
+    out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args)
+    # distance from the boundary: |1 - rho| at the scene's value of g, the first value decided
+    r0 = IL.rho_np(loop, float(gref))
+    out["margin"] = 1 - r0
+    # the values the bisection can try are g_ref 2^k, |k| <= 10: a boundary outside them cannot be found
+    cr = c.get("cross")
+    inside = cr is not None and float(gref) / 1024 <= cr <= float(gref) * 1024
+    tags["boundary within g_ref 2^-10..2^10"] = inside
+    if not inside:
+        out["margin"] = None
+    tags["stable at the scene's g"] = r0 < 1
+    hpath = j.get("path") if j else None
+    tags["path"] = hpath or ("none" if rc not in ("timeout", 2) else str(rc))
+    out["ref_text"] = f"rho = {r0:.12g} at the scene's g = {c['gref']}"
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc == 2:
+        out["outcome"] = "refused"
+        out["why"] = why_of(err, j)
+    elif j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+    elif hpath == "bisection_on_verdicts":
+        # the claims: a certified "stable" at stable_at, a certified "NOT stable" at unstable_at;
+        # exit 1: NOT stable at every value tried (g_ref 2^-k, k = 0..10); nothing between them
+        sa, ua = j.get("stable_at"), j.get("unstable_at")
+        bad = []
+        if sa:
+            f_ = check_claim_points(loop, [dec(sa["at"])], True)
+            if f_:
+                bad.append(f"hapstab: stable at g = {sa['at']} [{sa.get('status')}], but rho = {mp.nstr(f_[1], 20)}")
+        if ua:
+            f_ = check_claim_points(loop, [dec(ua["at"])], False)
+            if f_:
+                bad.append(f"hapstab: NOT stable at g = {ua['at']} [{ua.get('status')}], but rho = {mp.nstr(f_[1], 20)}")
+        if rc == 1:
+            f_ = check_claim_points(loop, [gref / 2 ** k for k in range(11)], False)
+            if f_:
+                bad.append(f"hapstab: NOT stable at every value tried (g_ref 2^-k), but rho = {mp.nstr(f_[1], 20)} at g = {mp.nstr(f_[0], 20)}")
+        if rc == 0 and not (sa and ua):
+            bad.append("exit 0 without a certified bracket (stable_at and unstable_at)")
+        if rc == 0 and sa and ua:
+            tags["bisection"] = "bracket"
+        elif rc == 1:
+            tags["bisection"] = "NOT stable at every value tried"
+        else:
+            tags["bisection"] = "exit 3, stable_at only" if sa else f"exit {rc}, no verdict claim"
+        if bad:
+            out["outcome"] = "MISS"
+            out["why"] = "; ".join(bad)
+        elif rc in (0, 1):
+            out["outcome"] = "agree"
+        elif rc == 3:
+            out["outcome"] = "undecided"
+            out["why"] = why_of(err, j)[:200] + (" (its claim stable_at checked: holds)" if sa else "")
+        else:
+            out["outcome"] = "MISS"
+            out["why"] = f"exit {rc}"
+    else:
+        # the certified crossing of an affine loop (closed_loop_matrix): a proven supremum, or
+        # exit 3 with an interval proven stable (checked at five points), or sup 0 with exit 1
+        ref = IL.sup_reference(loop, c["Knom"])
+        tag_reference(ref, tags, out, "g")
+        tags["stable at small g"] = ref["kind"] != "zero"
+        if rc == 3:
+            out["outcome"] = "undecided"
+            out["why"] = why_of(err, j)[:200]
+            if j.get("stable_on"):
+                a, b = enc(j, "stable_on")
+                f_ = check_claim_points(loop, [x for x in (a + (b - a) * t for t in (0, 0.25, 0.5, 0.75, 1)) if x > 0], True)
+                if f_:
+                    out["outcome"] = "MISS"
+                    out["why"] = f"hapstab proves stable on [{a}, {b}], but rho = {mp.nstr(f_[1], 20)} >= 1 at g = {mp.nstr(f_[0], 20)}"
+                else:
+                    out["why"] += " (its claim stable_on checked at 5 points: holds)"
+        else:
+            compare_sup(out, ref, j, rc, TOL_SUP, "g")
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] = out.get("why", "") + f" (scene kept: {path})"
+    else:
+        os.unlink(path)
+    return out
+
+
+BRANCHES_SCENE_COUPLING = [  # compared: a verdict bracket, exit 1's NOT-stable values, or a supremum
+    ("path", "bisection_on_verdicts", 0.3), ("path", "closed_loop_matrix", 0.05),
+    ("bisection", "bracket", 0.15), ("bisection", "NOT stable at every value tried", 0.02),
+    ("g in", "env g, V with feedthrough", 0.1), ("g in", "coupling 1/g", 0.08), ("g in", "coupling g", 0.02),
+    ("g in", "env g(1+g)/2", 0.05), ("g in", "env g, V strictly proper", 0.03),
+    ("first device", "unstable ss", 0.1), ("delay", "1", 0.03), ("coupling", "feedthrough, cross term", 0.02),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# stability --scene S on loops of order 49..64 (the exact charpoly beyond order 48)
+
+
+def case_charpoly(rng):
+    c = ICH.gen_charpoly(rng)
+    k, kind = ICH.crossing_gain(c)
+    u = rng.random()
+    if k is None:
+        g = short_decimal(10 ** rng.uniform(-2, 1))
+        c["tags"]["gain"] = "no crossing in [1e-3, 1e5]"
+    elif u < 0.3:  # within 1e-6 relative of the double-precision crossing: 8 digits
+        g = short_decimal(k * (1 + rng.uniform(-1e-6, 1e-6)), digits=8)
+        c["tags"]["gain"] = "1e-6 from the crossing"
+    else:
+        g = short_decimal(k * 2 ** rng.uniform(-4, 2))
+        c["tags"]["gain"] = "1/16 to 4 times the crossing"
+    c["g"] = g
+    return c
+
+
+def check_charpoly(c, exe, timeout):
+    text = ICH.scene_toml(c, c["g"])
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_charpoly_") as f:
+        f.write(text)
+        path = f.name
+    args = ["stability", "--scene", path]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    tags = dict(c["tags"])
+    out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args)
+    t0 = time.monotonic()
+    M = ICH.exact_M(c, Q(c["g"]))
+    p = ICH.hessenberg_charpoly(M)
+    st = ICH.schur_cohn(p)
+    rho = ICH.rho_double(M)
+    out["ref_seconds"] = time.monotonic() - t0
+    out["margin"] = 1 - rho
+    tags["reference"] = "stable" if st else "NOT stable"
+    out["ref_text"] = (f"{'stable' if st else 'NOT stable'} (Schur-Cohn on det(zI - M) of degree {len(p) - 1}, in fractions); "
+                       f"rho = {rho:.15g} in double")
+    states = j.get("states") if j else None
+    method = (j.get("method") or "") if j else ""
+    exact_cp = "Schur-Cohn on det(zI - M)" in method
+    tags["hapstab path"] = ("exact charpoly, order > 48" if exact_cp and states and states > 48 else
+                            "exact charpoly, order <= 48" if exact_cp else (method or "none"))
+    if abs(1 - rho) > 1e-8 and (rho < 1) != st:
+        out["outcome"] = "REFERENCE MISSED"
+        out["why"] = f"the reference disagrees with itself: exact {'stable' if st else 'NOT stable'}, rho = {rho!r} in double"
+    elif rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc == 2:
+        out["outcome"] = "refused"
+        out["why"] = why_of(err, j)
+    elif j is None or rc not in (0, 1, 3):
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+    elif j.get("stable") is None:
+        out["outcome"] = "undecided"
+        out["why"] = why_of(err, j)[:200]
+    else:
+        hs = bool(j["stable"])
+        out["hapstab"] = f"{'stable' if hs else 'NOT stable'} [{j.get('status')}], {states} states, {method}"
+        if hs == st and rc == (0 if hs else 1):
+            out["outcome"] = "agree"
+        else:
+            out["outcome"] = "MISS"
+            out["why"] = f"hapstab: {out['hapstab']} (exit {rc}); the reference: {out['ref_text']}"
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] = out.get("why", "") + f" (scene kept: {path})"
+    else:
+        os.unlink(path)
+    return out
+
+
+BRANCHES_CHARPOLY = [  # compared verdicts
+    ("hapstab path", "exact charpoly, order > 48", 0.5), ("hapstab path", "exact charpoly, order <= 48", 0.1),
+    ("reference", "stable", 0.15), ("reference", "NOT stable", 0.15),
+    ("DOFs", "identical, uncoupled", 0.2), ("DOFs", "identical, linked", 0.05), ("DOFs", "random", 0.2),
+    ("gain", "1e-6 from the crossing", 0.15), ("DOF", "3", 0.1),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# stability --scene S --max g --conservatism: exact / Theorem 5, where both are suprema of intervals
+
+
+def case_conservatism(rng):
+    c = ICP.gen_coupled(rng, conservatism=True)
+    c["loop"] = ICP.CoupledLoop(c)
+    c["Knom"] = 1.0
+    return c
+
+
+def dc_condition_fails(c):
+    """Lemma 1's DC condition, independently: (V(1) - K)_jj <= 0 for some j, K_jj = T/(2 Delta_j),
+    Delta_j = b_j (a mass-damper 1/(m s + b) is OSP with level b). V(1) from the scene's entries."""
+    T = c["T"]
+    for j, d in enumerate(c["devices"]):
+        e = c["V"][j][j]
+        v1 = sum(e.num) / sum(e.den)
+        if v1 - T / (2 * Q(d["b"])) <= 0:
+            return True
+    return False
+
+
+def check_conservatism(c, exe, timeout):
+    text = ICP.scene_toml(c, "1")
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_conservatism_") as f:
+        f.write(text)
+        path = f.name
+    args = ["stability", "--scene", path, "--max", "g", "--conservatism", "--digits", "3"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    loop = c["loop"]
+    tags = dict(c["tags"])
+    out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args, margin=None)
+    ref = IL.sup_reference(loop, c["Knom"])
+    tag_reference(ref, tags, out, "g")
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc == 2:
+        out["outcome"] = "refused"
+        out["why"] = why_of(err, j)
+    elif j is None:
+        out["outcome"] = "MISS"
+        out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
+    else:
+        bad = []
+        # 1. the exact side, as scene_max (a supremum, or exit 3 with an interval proven stable)
+        if j.get("supremum_proven"):
+            sub = dict(tags={}, margin=None)
+            compare_sup(sub, ref, j, 0 if j.get("max") not in (None, "0") else 1, TOL_SUP, "g")
+            tags["exact side"] = "supremum"
+            if sub["outcome"] != "agree":
+                bad.append("exact side: " + sub.get("why", sub["outcome"]))
+        else:
+            tags["exact side"] = "sup 0" if j.get("max") == "0" else "undecided"
+            if j.get("max") == "0" and ref["kind"] != "zero":
+                bad.append(f"exact side: sup 0, but the reference is stable at small g ({ref['kind']})")
+            if j.get("stable_on"):
+                a, b = enc(j, "stable_on")
+                f_ = check_claim_points(loop, [x for x in (a + (b - a) * t for t in (0, 0.25, 0.5, 0.75, 1)) if x > 0], True)
+                if f_:
+                    bad.append(f"exact side: stable on [{a}, {b}] claimed, but rho = {mp.nstr(f_[1], 20)} at g = {mp.nstr(f_[0], 20)}")
+        # 2. Theorem 5 is sound: where it concludes, the loop is stable, and (g being the environment's
+        #    gain, its region an interval (0, sup]) so is every smaller g: concludes_at <= the exact sup
+        t5 = j.get("theorem5") or {}
+        ca, na = t5.get("concludes_at"), t5.get("not_at")
+        tags["Theorem 5"] = "bracket" if t5.get("bracket") else ("concludes, no upper end" if ca else "no conclusion")
+        if ca:
+            g5 = dec(ca["at"])
+            f_ = check_claim_points(loop, [g5 * t for t in (1, 0.5, 0.1, 0.01)], True)
+            if f_:
+                bad.append(f"Theorem 5 concludes at g = {ca['at']}, but rho = {mp.nstr(f_[1], 20)} >= 1 at g = {mp.nstr(f_[0], 20)}")
+            if ref["kind"] == "sup" and g5 > ref["hi"] * (1 + TOL_SUP):
+                bad.append(f"Theorem 5 concludes at g = {ca['at']}, above the reference's first crossing {mp.nstr(ref['hi'], 20)}")
+        if na:
+            why5 = na.get("why", "")
+            if "NOT stable" in why5:
+                f_ = check_claim_points(loop, [dec(na["at"])], False)
+                if f_:
+                    bad.append(f"Theorem 5: the loop is NOT stable at g = {na['at']} claimed, but rho = {mp.nstr(f_[1], 20)}")
+                tags["Theorem 5's upper end"] = "loop NOT stable (checked)"
+            elif "DC condition" in why5:
+                if not dc_condition_fails(c):
+                    bad.append(f"Theorem 5: Lemma 1's DC condition claimed to fail at g = {na['at']}, but (V(1) - K)_jj > 0 for every j")
+                tags["Theorem 5's upper end"] = "DC condition (checked)"
+            else:
+                tags["Theorem 5's upper end"] = "program infeasible (not referenced: no independent LMI solver)"
+        # 3. the ratio: printed only where both sides are suprema of intervals; it must hold
+        #    exact_sup / [t5 lo, t5 hi], the exact sup the reference's
+        r = j.get("conservatism")
+        tags["ratio"] = r is not None
+        if r is not None:
+            if not (j.get("supremum_proven") and t5.get("bracket")):
+                bad.append("a ratio printed without both suprema proven")
+            elif ref["kind"] == "sup":
+                rl, rh = dec(r[0]), dec(r[1])
+                t5l, t5h = enc(t5, "bracket")
+                need_lo, need_hi = ref["lo"] / t5h, ref["hi"] / t5l
+                if rl > need_lo * (1 + TOL_SUP) or rh < need_hi * (1 - TOL_SUP):
+                    bad.append(f"ratio [{r[0]}, {r[1]}] does not hold the reference's sup / Theorem 5's bracket, "
+                               f"[{mp.nstr(need_lo, 12)}, {mp.nstr(need_hi, 12)}]")
+        if bad:
+            out["outcome"] = "MISS"
+            out["why"] = "; ".join(bad)
+        elif j.get("supremum_proven") or tags.get("ratio"):
+            out["outcome"] = "agree"
+        elif rc == 3:
+            out["outcome"] = "undecided"
+            out["why"] = (j.get("note") or "")[:200]
+        else:
+            out["outcome"] = "agree"  # sup 0 with exit 1, checked above
+        if ref["kind"] == "sup":
+            out["margin"] = 1 - IL.rho_np(loop, float(ref["lo"]) / 2)
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] = out.get("why", "") + f" (scene kept: {path})"
+    else:
+        os.unlink(path)
+    return out
+
+
+BRANCHES_CONSERVATISM = [
+    ("exact side", "supremum", 0.5), ("Theorem 5", "bracket", 0.05), ("ratio", True, 0.05),
+]
+
+
 CRITERIA = {
     "bound": (case_bound, check_bound, BRANCHES_BOUND),
     "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
     "stability_max": (case_stability, check_stability, BRANCHES_STABILITY),
     "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
+    "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
+    "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
+    "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
+}
+
+
+MARGIN_TEXT = {  # what each criterion's distance from the boundary is (the default: 1 - rho at sup/2)
+    "bound": "none: b* has no boundary",
+    "bound_max": "none",
+    "scene_coupling": "|1 - rho| at the scene's value of g, the first value decided; n/a: no boundary within g_ref 2^-10..2^10 (double scan)",
+    "charpoly": "1 - rho of M in double",
 }
 
 
@@ -579,7 +971,7 @@ def margin_bucket(m):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--hapstab", default="build/hapstab")
-    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max")
+    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism")
     ap.add_argument("--cases", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--first", type=int, default=0)
@@ -654,7 +1046,7 @@ def main():
             rest = ", ".join(f"{o} {v}" for o, v in sorted(cnt.items()) if o != "compared")
             print(f"     {tag} = {val}: compared {cnt['compared']} ({rest})")
         if undec_margin:
-            print("   not decided by hapstab, by the reference's distance from the boundary (1 - rho at sup/2):")
+            print(f"   not decided by hapstab, by the reference's distance from the boundary ({MARGIN_TEXT.get(crit, '1 - rho at sup/2')}):")
             for (o, bk), v in sorted(undec_margin.items()):
                 print(f"     {o}, {bk}: {v}")
         if a.case is None:
