@@ -7,7 +7,9 @@ directly (indep_passivity.py: paper 001 (45)/(54); indep_loop.py: the sampled lo
 state-space map per period).
 """
 import json
+import os
 import subprocess
+import tempfile
 import time
 from fractions import Fraction as Q
 
@@ -120,6 +122,24 @@ def run_hapstab(exe, args, timeout):
     except json.JSONDecodeError:
         j = None
     return p.returncode, j, p.stderr.strip(), dt
+
+
+def run_hapstab_scene(exe, text, prefix, extra_args, timeout):
+    """Writes the scene TEXT to a temporary file and runs `hapstab stability --scene FILE
+    EXTRA_ARGS --json` on it; returns (rc, JSON or None, stderr text, seconds, the arguments run,
+    the file). keep_scene_if_missed removes the file unless the case is a miss."""
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix=prefix) as f:
+        f.write(text)
+    args = ["stability", "--scene", f.name] + list(extra_args)
+    return run_hapstab(exe, args, timeout) + (args, f.name)
+
+
+def keep_scene_if_missed(out, path):
+    """A missed case keeps its scene file (named in its `why`) to be run again; others remove it."""
+    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
+        out["why"] = out.get("why", "") + f" (scene kept: {path})"
+    else:
+        os.unlink(path)
 
 
 def shell_line(exe, args):

@@ -55,7 +55,6 @@ import math
 import os
 import random
 import sys
-import tempfile
 import time
 from fractions import Fraction as Q
 
@@ -67,7 +66,7 @@ import indep_charpoly as ICH  # noqa: E402
 import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_passivity as IP  # noqa: E402
-from indep_common import SumTF, dec, run_hapstab, shell_line  # noqa: E402
+from indep_common import SumTF, dec, run_hapstab, run_hapstab_scene, keep_scene_if_missed, shell_line  # noqa: E402
 
 # relative tolerances, and why:
 #  bound: hapstab prints a 30-digit enclosure rounded outward (33 digits); the reference is good to
@@ -538,11 +537,7 @@ def case_scene(rng):
 
 
 def check_scene(c, exe, timeout):
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_scene_") as f:
-        f.write(IL.scene_toml(c))
-        path = f.name
-    args = ["stability", "--scene", path, "--max", "g", "--digits", "25"]
-    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, IL.scene_toml(c), "indep_scene_", ["--max", "g", "--digits", "25"], timeout)
     loop = IL.build_loop_scene(c)
     ref = IL.sup_reference(loop, c["Knom"])
     tags = dict(c["tags"])
@@ -575,10 +570,7 @@ def check_scene(c, exe, timeout):
         out["why"] = f"exit {rc}, no JSON: {err[-300:]}"
     else:
         compare_sup(out, ref, j, rc, TOL_SUP, "g")
-    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
-        out["why"] += f" (scene kept: {path})"
-    else:
-        os.unlink(path)
+    keep_scene_if_missed(out, path)
     return out
 
 
@@ -632,11 +624,7 @@ def check_claim_points(loop, pts, want_stable):
 
 def check_scene_coupling(c, exe, timeout):
     text = ICP.scene_toml(c, c["gref"])
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_coupled_") as f:
-        f.write(text)
-        path = f.name
-    args = ["stability", "--scene", path, "--max", "g", "--digits", "25"]
-    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_coupled_", ["--max", "g", "--digits", "25"], timeout)
     loop = c["loop"]
     tags = dict(c["tags"])
     gref = dec(c["gref"])
@@ -717,10 +705,7 @@ def check_scene_coupling(c, exe, timeout):
                     out["why"] += " (its claim stable_on checked at 5 points: holds)"
         else:
             compare_sup(out, ref, j, rc, TOL_SUP, "g")
-    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
-        out["why"] = out.get("why", "") + f" (scene kept: {path})"
-    else:
-        os.unlink(path)
+    keep_scene_if_missed(out, path)
     return out
 
 
@@ -756,11 +741,7 @@ def case_charpoly(rng):
 
 def check_charpoly(c, exe, timeout):
     text = ICH.scene_toml(c, c["g"])
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_charpoly_") as f:
-        f.write(text)
-        path = f.name
-    args = ["stability", "--scene", path]
-    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_charpoly_", [], timeout)
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args)
     t0 = time.monotonic()
@@ -800,10 +781,7 @@ def check_charpoly(c, exe, timeout):
         else:
             out["outcome"] = "MISS"
             out["why"] = f"hapstab: {out['hapstab']} (exit {rc}); the reference: {out['ref_text']}"
-    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
-        out["why"] = out.get("why", "") + f" (scene kept: {path})"
-    else:
-        os.unlink(path)
+    keep_scene_if_missed(out, path)
     return out
 
 
@@ -840,11 +818,7 @@ def dc_condition_fails(c):
 
 def check_conservatism(c, exe, timeout):
     text = ICP.scene_toml(c, "1")
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_conservatism_") as f:
-        f.write(text)
-        path = f.name
-    args = ["stability", "--scene", path, "--max", "g", "--conservatism", "--digits", "3"]
-    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_conservatism_", ["--max", "g", "--conservatism", "--digits", "3"], timeout)
     loop = c["loop"]
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args, margin=None)
@@ -927,10 +901,7 @@ def check_conservatism(c, exe, timeout):
             out["outcome"] = "agree"  # sup 0 with exit 1, checked above
         if ref["kind"] == "sup":
             out["margin"] = 1 - IL.rho_np(loop, float(ref["lo"]) / 2)
-    if out["outcome"] in ("MISS", "REFERENCE MISSED"):
-        out["why"] = out.get("why", "") + f" (scene kept: {path})"
-    else:
-        os.unlink(path)
+    keep_scene_if_missed(out, path)
     return out
 
 
