@@ -15,7 +15,7 @@ namespace hapstab::lmi {
 
 namespace {
 using Eigen::MatrixXd;
-MatrixXd sym(const MatrixXd& M) { return 0.5 * (M + M.transpose()); }
+MatrixXd symmetric_part(const MatrixXd& M) { return 0.5 * (M + M.transpose()); }
 }  // namespace
 
 double kyp_min_eigenvalue(const KypData& d, const MatrixXd& P) {
@@ -26,7 +26,7 @@ double kyp_min_eigenvalue(const KypData& d, const MatrixXd& P) {
   F.topRightCorner(n, p) = AtP * d.B - d.S;
   F.bottomLeftCorner(p, n) = F.topRightCorner(n, p).transpose();
   F.bottomRightCorner(p, p) = d.B.transpose() * P * d.B + d.R;
-  Eigen::SelfAdjointEigenSolver<MatrixXd> es(-sym(F), Eigen::EigenvaluesOnly);
+  Eigen::SelfAdjointEigenSolver<MatrixXd> es(-symmetric_part(F), Eigen::EigenvaluesOnly);
   return es.eigenvalues()(0);
 }
 
@@ -36,7 +36,7 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
   kp.delta = delta;
   kp.riccati_solves = 1;
   const Eigen::Index n = d.A.rows(), p = d.B.cols();
-  const MatrixXd R0 = sym(-d.R) - delta * MatrixXd::Identity(p, p);
+  const MatrixXd R0 = symmetric_part(-d.R) - delta * MatrixXd::Identity(p, p);
   const Eigen::LLT<MatrixXd> L(R0);
   if (L.info() != Eigen::Success) {
     kp.detail = "R0 = -R - delta I is not positive definite";
@@ -46,8 +46,8 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
   const MatrixXd RiSt = n > 0 ? MatrixXd(L.solve(MatrixXd(d.S.transpose()))) : MatrixXd(p, 0);
   const MatrixXd RiBt = n > 0 ? MatrixXd(L.solve(MatrixXd(d.B.transpose()))) : MatrixXd(p, 0);
   MatrixXd Ak = d.A - d.B * RiSt;
-  MatrixXd Gk = sym(d.B * RiBt);
-  MatrixXd Hk = sym(-delta * MatrixXd::Identity(n, n) - d.S * RiSt);
+  MatrixXd Gk = symmetric_part(d.B * RiBt);
+  MatrixXd Hk = symmetric_part(-delta * MatrixXd::Identity(n, n) - d.S * RiSt);
   const MatrixXd I = MatrixXd::Identity(n, n);
   bool converged = false, stalled = false;
   int it = 0;
@@ -66,8 +66,8 @@ KypPoint kyp_riccati_point(const KypData& d, double delta) {
     const Eigen::PartialPivLU<MatrixXd> W(I + Gk * Hk);
     const MatrixXd WA = W.solve(Ak), WG = W.solve(Gk);
     if (!WA.allFinite() || !WG.allFinite()) break;
-    const MatrixXd Hn = sym(Hk + Ak.transpose() * Hk * WA);
-    Gk = sym(Gk + Ak * WG * Ak.transpose());
+    const MatrixXd Hn = symmetric_part(Hk + Ak.transpose() * Hk * WA);
+    Gk = symmetric_part(Gk + Ak * WG * Ak.transpose());
     Ak = Ak * WA;
     const double change = (Hn - Hk).norm(), size = Hn.norm();
     Hk = Hn;
@@ -98,7 +98,7 @@ KypPoint kyp_interior_point(const KypData& d, double floor_rel) {
   KypPoint none;
   double hi = 0;
   if (p > 0) {
-    Eigen::SelfAdjointEigenSolver<MatrixXd> es(sym(-d.R), Eigen::EigenvaluesOnly);
+    Eigen::SelfAdjointEigenSolver<MatrixXd> es(symmetric_part(-d.R), Eigen::EigenvaluesOnly);
     hi = es.eigenvalues()(0);
   }
   if (!(hi > 0)) {

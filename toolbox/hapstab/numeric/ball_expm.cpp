@@ -10,13 +10,13 @@ namespace hapstab {
 
 namespace {
 
-constexpr long kPrec = 128;
+constexpr long kExpmPrec = 128;
 
 void load(flint::BallMat& out, const MatQ& A, const rational& scale) {
   flint::QMat q(static_cast<long>(A.rows()), static_cast<long>(A.cols()));
   for (Eigen::Index i = 0; i < A.rows(); ++i)
     for (Eigen::Index j = 0; j < A.cols(); ++j) flint::set(q.at(static_cast<long>(i), static_cast<long>(j)), A(i, j) * scale);
-  arb_mat_set_fmpq_mat(out.get(), q.get(), kPrec);
+  arb_mat_set_fmpq_mat(out.get(), q.get(), kExpmPrec);
 }
 
 // Rows [r0, r0 + nr) x columns [c0, c0 + nc) of B, as a double midpoint with a radius that
@@ -45,7 +45,7 @@ DoubleEnclosure expm_enclosure(const MatQ& A, const rational& t) {
   const long n = static_cast<long>(A.rows());
   flint::BallMat X(n, n), E(n, n);
   load(X, A, t);
-  arb_mat_exp(E.get(), X.get(), kPrec);
+  arb_mat_exp(E.get(), X.get(), kExpmPrec);
   return extract(E, 0, 0, n, n);
 }
 
@@ -59,7 +59,7 @@ ZohEnclosure zoh_enclosure(const MatQ& A, const MatQ& B, const rational& t) {
   M.topRightCorner(n, m) = B;
   flint::BallMat X(n + m, n + m), E(n + m, n + m);
   load(X, M, t);
-  arb_mat_exp(E.get(), X.get(), kPrec);
+  arb_mat_exp(E.get(), X.get(), kExpmPrec);
   return {extract(E, 0, 0, n, n), extract(E, 0, n, n, m)};
 }
 
@@ -87,7 +87,7 @@ DoubleEnclosure gram_enclosure(const MatQ& M, const MatQ& Q, const rational& t) 
   V.bottomRightCorner(n, n) = M;
   flint::BallMat X(2 * n, 2 * n), E(2 * n, 2 * n);
   load(X, V, h);
-  arb_mat_exp(E.get(), X.get(), kPrec);
+  arb_mat_exp(E.get(), X.get(), kExpmPrec);
   flint::BallMat F12(n, n), Ph(n, n), PhT(n, n), W(n, n), T1(n, n), T2(n, n);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) {
@@ -95,18 +95,18 @@ DoubleEnclosure gram_enclosure(const MatQ& M, const MatQ& Q, const rational& t) 
       arb_set(Ph.at(i, j), E.at(n + i, n + j));
     }
   arb_mat_transpose(PhT.get(), Ph.get());
-  arb_mat_mul(W.get(), PhT.get(), F12.get(), kPrec);
+  arb_mat_mul(W.get(), PhT.get(), F12.get(), kExpmPrec);
   for (int i = 0; i < k; ++i) {  // W(2h) = W(h) + e^{M^T h} W(h) e^{M h};  e^{2Mh} = (e^{Mh})^2
-    arb_mat_mul(T1.get(), PhT.get(), W.get(), kPrec);
-    arb_mat_mul(T2.get(), T1.get(), Ph.get(), kPrec);
-    arb_mat_add(W.get(), W.get(), T2.get(), kPrec);
-    arb_mat_sqr(T1.get(), Ph.get(), kPrec);
+    arb_mat_mul(T1.get(), PhT.get(), W.get(), kExpmPrec);
+    arb_mat_mul(T2.get(), T1.get(), Ph.get(), kExpmPrec);
+    arb_mat_add(W.get(), W.get(), T2.get(), kExpmPrec);
+    arb_mat_sqr(T1.get(), Ph.get(), kExpmPrec);
     arb_mat_swap(Ph.get(), T1.get());
     arb_mat_transpose(PhT.get(), Ph.get());
   }
   // symmetrise: the exact W is symmetric, so (W + W^T)/2 encloses it too
   arb_mat_transpose(T1.get(), W.get());
-  arb_mat_add(W.get(), W.get(), T1.get(), kPrec);
+  arb_mat_add(W.get(), W.get(), T1.get(), kExpmPrec);
   arb_mat_scalar_mul_2exp_si(W.get(), W.get(), -1);
   return extract(W, 0, 0, n, n);
 }

@@ -16,7 +16,7 @@ namespace hapstab {
 
 namespace {
 
-constexpr long kPrec = 128;
+constexpr long kBallMatrixPrec = 128;
 
 // A ball as a double midpoint (nearest) and a radius that also covers that rounding.
 void to_double(const arb_t x, double& mid, double& rad) {
@@ -50,13 +50,13 @@ void congruence(flint::BallMat& Y, const BallMatrix& S, const Eigen::MatrixXd& X
   flint::BallMat Sb(n, n), St(n, n), Xb(n, n), Xt(n, n), T(n, n);
   load(Sb, S);
   arb_mat_transpose(St.get(), Sb.get());
-  arb_mat_add(Sb.get(), Sb.get(), St.get(), kPrec);
+  arb_mat_add(Sb.get(), Sb.get(), St.get(), kBallMatrixPrec);
   arb_mat_scalar_mul_2exp_si(Sb.get(), Sb.get(), -1);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) arb_set_d(Xb.at(i, j), X(i, j));
   arb_mat_transpose(Xt.get(), Xb.get());
-  arb_mat_mul(T.get(), Sb.get(), Xb.get(), kPrec);
-  arb_mat_mul(Y.get(), Xt.get(), T.get(), kPrec);
+  arb_mat_mul(T.get(), Sb.get(), Xb.get(), kBallMatrixPrec);
+  arb_mat_mul(Y.get(), Xt.get(), T.get(), kBallMatrixPrec);
 }
 
 // Stein equation P - M^T P M = I for a real M by the complex Schur form M = U T U^*:
@@ -216,7 +216,7 @@ BallMatrix BallMatrix::exact(const MatQ& A) {
   for (Eigen::Index i = 0; i < A.rows(); ++i)
     for (Eigen::Index j = 0; j < A.cols(); ++j) {
       if (A(i, j) == 0) continue;
-      flint::set(x, A(i, j), kPrec);
+      flint::set(x, A(i, j), kBallMatrixPrec);
       to_double(x, B.mid(i, j), B.rad(i, j));
     }
   arb_clear(x);
@@ -253,7 +253,7 @@ BallMatrix operator*(const BallMatrix& A, const BallMatrix& B) {
   flint::BallMat a(r, k), b(k, c), p(r, c);
   load(a, A);
   load(b, B);
-  arb_mat_mul(p.get(), a.get(), b.get(), kPrec);
+  arb_mat_mul(p.get(), a.get(), b.get(), kBallMatrixPrec);
   return unload(p);
 }
 
@@ -263,7 +263,7 @@ BallMatrix operator+(const BallMatrix& A, const BallMatrix& B) {
   flint::BallMat a(r, c), b(r, c);
   load(a, A);
   load(b, B);
-  arb_mat_add(a.get(), a.get(), b.get(), kPrec);
+  arb_mat_add(a.get(), a.get(), b.get(), kBallMatrixPrec);
   return unload(a);
 }
 
@@ -298,7 +298,7 @@ bool positive_definite(const BallMatrix& S, std::string* why) {
     for (long j = 0; j < n; ++j) {
       if (j == i) continue;
       arb_abs(a, Y.at(i, j));
-      arb_sub(s, s, a, kPrec);
+      arb_sub(s, s, a, kBallMatrixPrec);
     }
     ok = arb_is_positive(s);
     if (!ok && why) {

@@ -10,7 +10,7 @@ namespace hapstab {
 
 namespace {
 
-constexpr long kPrec = 128;
+constexpr long kLyapunovPrec = 128;
 
 // P = sum_k (A^T)^k A^k (the solution of A^T P A - P = -I) by doubling; false when the series
 // does not converge in double (spectral radius not clearly below 1).
@@ -34,11 +34,11 @@ void lyapunov_residual(flint::BallMat& M, flint::BallMat& P, const MatQ& A) {
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) flint::set(q.at(i, j), A(i, j));
   flint::BallMat Ab(n, n), AT(n, n), PA(n, n);
-  arb_mat_set_fmpq_mat(Ab.get(), q.get(), kPrec);
+  arb_mat_set_fmpq_mat(Ab.get(), q.get(), kLyapunovPrec);
   arb_mat_transpose(AT.get(), Ab.get());
-  arb_mat_mul(PA.get(), P.get(), Ab.get(), kPrec);
-  arb_mat_mul(M.get(), AT.get(), PA.get(), kPrec);
-  arb_mat_sub(M.get(), P.get(), M.get(), kPrec);
+  arb_mat_mul(PA.get(), P.get(), Ab.get(), kLyapunovPrec);
+  arb_mat_mul(M.get(), AT.get(), PA.get(), kLyapunovPrec);
+  arb_mat_sub(M.get(), P.get(), M.get(), kLyapunovPrec);
 }
 
 }  // namespace
@@ -59,12 +59,12 @@ bool lyapunov_proves_schur_stable(const MatQ& A, std::string* why) {
   flint::BallMat P(n, n), M(n, n), L(n, n);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j) arb_set_d(P.at(i, j), Ps(i, j));  // exact: P is this dyadic matrix
-  if (!arb_mat_cho(L.get(), P.get(), kPrec)) {
+  if (!arb_mat_cho(L.get(), P.get(), kLyapunovPrec)) {
     if (why) *why = "the rounded Lyapunov matrix P is not certainly positive definite";
     return false;
   }
   lyapunov_residual(M, P, A);
-  if (!arb_mat_cho(L.get(), M.get(), kPrec)) {
+  if (!arb_mat_cho(L.get(), M.get(), kLyapunovPrec)) {
     if (why) *why = "P - A^T P A is not certainly positive definite (ball Cholesky)";
     return false;
   }
