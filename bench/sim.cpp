@@ -89,13 +89,8 @@ double rel_error(const std::vector<double>& x) {
   return dev / scale;
 }
 
-// ---- exact ZOH (the simulator), accuracy run + speed run
-void BM_zoh(benchmark::State& st) {
-  Simulator sim(spec1(true));
-  SimOptions o;
-  o.steps = kSteps;
-  auto r = sim.run(o);
-  const double err = rel_error(r.samples.x);
+// The timed part: range(0) steps, nothing recorded, the energy balance on when range(1) != 0.
+SimOptions time_runs(benchmark::State& st, Simulator& sim) {
   SimOptions fast;
   fast.steps = st.range(0);
   fast.record_every = 0;
@@ -105,6 +100,17 @@ void BM_zoh(benchmark::State& st) {
     keep(rr.summary.max_velocity);
   }
   st.SetItemsProcessed(st.iterations() * st.range(0));
+  return fast;
+}
+
+// ---- exact ZOH (the simulator), accuracy run + speed run
+void BM_zoh(benchmark::State& st) {
+  Simulator sim(spec1(true));
+  SimOptions o;
+  o.steps = kSteps;
+  auto r = sim.run(o);
+  const double err = rel_error(r.samples.x);
+  const SimOptions fast = time_runs(st, sim);
   st.counters["max_rel_error"] = err;
   st.counters["energy"] = double(fast.energy);
 }
@@ -113,15 +119,7 @@ BENCHMARK(BM_zoh)->Args({2000000, 0})->Args({2000000, 1})->Unit(benchmark::kMill
 // The target case: 1-DOF wall with contact, no operator (device + wall only).
 void BM_zoh_wall(benchmark::State& st) {
   Simulator sim(spec1(false));
-  SimOptions fast;
-  fast.steps = st.range(0);
-  fast.record_every = 0;
-  fast.energy = st.range(1) != 0;
-  for (auto _ : st) {
-    auto rr = sim.run(fast);
-    keep(rr.summary.max_velocity);
-  }
-  st.SetItemsProcessed(st.iterations() * st.range(0));
+  time_runs(st, sim);
   st.counters["target_steps_per_s"] = 50e6;
 }
 BENCHMARK(BM_zoh_wall)->Args({5000000, 0})->Args({5000000, 1})->Unit(benchmark::kMillisecond)->Name("zoh/1dof_wall_contact");

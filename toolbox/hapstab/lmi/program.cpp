@@ -311,13 +311,19 @@ MatrixVariable Program::new_diagonal(int n, const std::string& name) {
   return v;
 }
 
-MatrixVariable Program::new_block_diagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric) {
+// The order of a block-diagonal variable with blocks of these sizes (each positive, at least one).
+static int total_block_size(const std::vector<int>& sizes, const std::string& name) {
   int n = 0;
   for (int s : sizes) {
     if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
     n += s;
   }
   if (n == 0) throw InputError("variable '" + name + "': no blocks");
+  return n;
+}
+
+MatrixVariable Program::new_block_diagonal(const std::vector<int>& sizes, const std::string& name, bool symmetric) {
+  const int n = total_block_size(sizes, name);
   MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
   int o = 0, b = 0;
   for (int s : sizes) {
@@ -356,12 +362,7 @@ MatrixVariable Program::new_block_diagonal(const std::vector<std::pair<int, int>
 }
 
 MatrixVariable Program::new_scalar_identity_blocks(const std::vector<int>& sizes, const std::string& name) {
-  int n = 0;
-  for (int s : sizes) {
-    if (s <= 0) throw InputError("variable '" + name + "': block sizes must be positive");
-    n += s;
-  }
-  if (n == 0) throw InputError("variable '" + name + "': no blocks");
+  const int n = total_block_size(sizes, name);
   MatrixVariable v{name, n, n, std::vector<int>(static_cast<size_t>(n) * n, -1)};
   int o = 0, b = 0;
   for (int s : sizes) {
