@@ -12,6 +12,8 @@
 // `hapstab reproduce` run the registry; a claim that does not hold makes them exit 1.
 #pragma once
 
+#include <algorithm>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,20 +99,32 @@ struct Proof {
   const char* paper;
   const char* title;
   void (*run)(Checker&);
+  const char* file = "";  ///< where it is defined (__FILE__, __LINE__): the registry's order
+  int line = 0;
 };
 
+/// The proofs in the order of their files' names, then of their lines: the same whatever order the
+/// linker gave their static registrations (a unity build, CMakeLists.txt, merges files into one
+/// object and orders the objects otherwise), so `hapstab proofs` and the report list them alike.
 inline std::vector<Proof>& registry() {
   static std::vector<Proof> r;
   return r;
 }
 
 struct Register {
-  explicit Register(Proof p) { registry().push_back(p); }
+  explicit Register(Proof p) {
+    auto& r = registry();
+    const auto before = [](const Proof& a, const Proof& b) {
+      const int c = std::strcmp(a.file, b.file);
+      return c < 0 || (c == 0 && a.line < b.line);
+    };
+    r.insert(std::upper_bound(r.begin(), r.end(), p, before), p);
+  }
 };
 
 }  // namespace hapstab::proofs
 
 #define HAPSTAB_PROOF(ident, paper, title)                                                       \
   static void ident(::hapstab::proofs::Checker&);                                                \
-  static const ::hapstab::proofs::Register ident##_registered({#ident, paper, title, &ident}); \
+  static const ::hapstab::proofs::Register ident##_registered({#ident, paper, title, &ident, __FILE__, __LINE__}); \
   static void ident([[maybe_unused]] ::hapstab::proofs::Checker& check)

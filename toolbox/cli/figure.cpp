@@ -28,6 +28,17 @@ std::vector<Figure>& figures() {
   return f;
 }
 
+RegisterFigure::RegisterFigure(Figure f, const char* file, int line) {
+  f.file = file;
+  f.line = line;
+  auto& all = figures();
+  const auto before = [](const Figure& a, const Figure& b) {
+    const int c = std::strcmp(a.file, b.file);
+    return c < 0 || (c == 0 && a.line < b.line);
+  };
+  all.insert(std::upper_bound(all.begin(), all.end(), f, before), f);
+}
+
 fs::path plots_dir() {
   if (const char* env = std::getenv("HAPSTAB_DATA_DIR")) return fs::path(env) / "plots";
   std::error_code ec;  // an installed hapstab: PREFIX/bin/hapstab next to PREFIX/share/hapstab

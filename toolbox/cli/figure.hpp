@@ -31,12 +31,16 @@ struct Figure {
   const char* caption;  ///< one sentence: what it shows
   void (*write_data)(const std::filesystem::path& datadir);  ///< writes the .dat files the script reads
   GnuplotVars (*vars)(const std::filesystem::path& datadir) = nullptr;  ///< values the script shows, if any
+  const char* file = "";  ///< where it is registered (RegisterFigure fills both): the order of figures()
+  int line = 0;
 };
 
+/// The figures in the order of the files that register them, then of their lines: the same whatever
+/// order the linker gave the static registrations (a unity build merges files into one object).
 std::vector<Figure>& figures();
 
 struct RegisterFigure {
-  explicit RegisterFigure(Figure f) { figures().push_back(f); }
+  explicit RegisterFigure(Figure f, const char* file = __builtin_FILE(), int line = __builtin_LINE());
 };
 
 /// Thrown by a figure's write_data when the figure cannot be made on this build for a reason
