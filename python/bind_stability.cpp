@@ -299,6 +299,41 @@ py::dict scene_max_fields(const std::string& name, const std::string& path, cons
 }
 
 
+/// Theorem 5's side of stability(scene, max, conservatism=True): its bracket, and the ratio of
+/// suprema only where both regions are proven intervals (docs/stability.md).
+void add_theorem5(py::dict& d, const conservatism::VerdictBracket& t5, const scene::Scene& sc, const std::string& name,
+                  const std::optional<Enclosure<rational>>& exact_side, bool exact_is_supremum,
+                  const stability::LoopAt& loop_at) {
+  py::dict t;
+  t["bracket"] = t5.lo && t5.hi ? py::object(decimals(t5.lo->at, t5.hi->at, 17)) : py::object(py::none());
+  t["concludes_at"] = point(t5.lo);
+  t["not_at"] = point(t5.hi);
+  t["note"] = t5.note;
+  t["programs"] = t5.steps.size();
+  t["seconds"] = t5.seconds;
+  d["theorem5"] = t;
+  // a ratio of suprema only where both regions are proven intervals (0, sup): the exact side's by
+  // its certified cover from 0, Theorem 5's when NAME is the gain of [environment] (its region
+  // scales: docs/stability.md); otherwise the two brackets are boundaries found, not suprema
+  const bool t5_interval = sc.root["environment"]["gain"].value_or(std::string()) == name;
+  const bool both_intervals = exact_is_supremum && t5_interval;
+  const auto r = exact_side && both_intervals ? conservatism::ratio(*exact_side, t5) : std::nullopt;
+  d["conservatism"] = r ? py::object(decimals(r->lo, r->hi, 4)) : py::object(py::none());
+  std::string why;
+  if (!exact_is_supremum) why = "the exact side's bracket is not proven to be the supremum of an interval (0, sup)";
+  if (!t5_interval)
+    why += (why.empty() ? "" : "; ") + std::string("Theorem 5's region in ") + name +
+           " is not proven an interval (only an [environment] gain's is)";
+  d["conservatism_note"] = both_intervals ? std::string("exact supremum / Theorem 5's supremum") : "no ratio of suprema: " + why;
+  // Theorem 5 is sound: a conclusion where the loop is proven NOT stable is a contradiction (above
+  // the exact side's first NOT-stable value the loop may be stable again: decided there)
+  if (exact_side && t5.lo && t5.lo->at > exact_side->hi) {
+    stability::LoopVerdict v;
+    run_interruptible([&] { v = stability::decide_loop(loop_at(t5.lo->at)); });
+    if (v.stable && !*v.stable) d["contradiction"] = true;
+  }
+}
+
 /// stability(scene=S, max=NAME[, conservatism=True]): {"record": the value record, and the fields
 /// of scene_max_fields}. digits: of the crossing (1..1000; the closed-loop matrix takes up to 60,
 /// the bisection 12, Theorem 5 6, as the command does).
@@ -426,36 +461,7 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
     if (m.stable_at) d["stable_at"] = to_decimal(*m.stable_at, 17);
     if (m.unstable_at) d["unstable_at"] = to_decimal(*m.unstable_at, 17);
   }
-  if (t5) {
-    py::dict t;
-    t["bracket"] = t5->lo && t5->hi ? py::object(decimals(t5->lo->at, t5->hi->at, 17)) : py::object(py::none());
-    t["concludes_at"] = point(t5->lo);
-    t["not_at"] = point(t5->hi);
-    t["note"] = t5->note;
-    t["programs"] = t5->steps.size();
-    t["seconds"] = t5->seconds;
-    d["theorem5"] = t;
-    // a ratio of suprema only where both regions are proven intervals (0, sup): the exact side's by
-    // its certified cover from 0, Theorem 5's when NAME is the gain of [environment] (its region
-    // scales: docs/stability.md); otherwise the two brackets are boundaries found, not suprema
-    const bool t5_interval = sc.root["environment"]["gain"].value_or(std::string()) == name;
-    const bool both_intervals = exact_is_supremum && t5_interval;
-    const auto r = exact_side && both_intervals ? conservatism::ratio(*exact_side, *t5) : std::nullopt;
-    d["conservatism"] = r ? py::object(decimals(r->lo, r->hi, 4)) : py::object(py::none());
-    std::string why;
-    if (!exact_is_supremum) why = "the exact side's bracket is not proven to be the supremum of an interval (0, sup)";
-    if (!t5_interval)
-      why += (why.empty() ? "" : "; ") + std::string("Theorem 5's region in ") + name +
-             " is not proven an interval (only an [environment] gain's is)";
-    d["conservatism_note"] = both_intervals ? std::string("exact supremum / Theorem 5's supremum") : "no ratio of suprema: " + why;
-    // Theorem 5 is sound: a conclusion where the loop is proven NOT stable is a contradiction (above
-    // the exact side's first NOT-stable value the loop may be stable again: decided there)
-    if (exact_side && t5->lo && t5->lo->at > exact_side->hi) {
-      stability::LoopVerdict v;
-      run_interruptible([&] { v = stability::decide_loop(loop_at(t5->lo->at)); });
-      if (v.stable && !*v.stable) d["contradiction"] = true;
-    }
-  }
+  if (t5) add_theorem5(d, *t5, sc, name, exact_side, exact_is_supremum, loop_at);
   return d;
 }
 
