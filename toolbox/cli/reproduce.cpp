@@ -212,7 +212,7 @@ std::string certificate_paragraph(const ReportInput& in, bool as_html) {
   const std::string counts = certificate_counts(s, !as_html);
   o << (as_html ? "<b>Certificates</b> (issue 47, docs/certificates.md): " + html(counts) : "**Certificates** (issue 47, docs/certificates.md): " + counts)
     << ". Production " << s.produce_seconds << " s (the commands, in this process), `hapstab check` " << s.check_seconds
-    << " s (one process per certificate), the independent checker " << s.independent_seconds << " s; "
+    << " s, the independent checker " << s.independent_seconds << " s (the checks themselves); "
     << s.wall_seconds << " s for the checks on two workers. Sizes and times of each: "
     << (as_html ? "<a href=\"certificates/index.json\">certificates/index.json</a>" : "[certificates/index.json](certificates/index.json)")
     << ".";

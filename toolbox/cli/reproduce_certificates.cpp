@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -123,14 +124,50 @@ std::string first_line(const std::string& s) {
   return line.size() > 2000 ? line.substr(0, 2000) + "..." : line;
 }
 
-void check_with_hapstab(CertificateEntry& e, const fs::path& dir, const fs::path& exe) {
+// One `hapstab check --batch` process on `files` (indices into entries): each certificate's file as
+// one line (its newlines made spaces: JSON has none inside a string, so the line parses as the file
+// does), one JSON verdict per line with the check's own time. One process per certificate cost
+// 100 times more, all of it start-up (docs/certificates.md, Sizes and times).
+void check_with_hapstab(std::vector<CertificateEntry>& entries, const std::vector<size_t>& files, const fs::path& dir,
+                        const fs::path& exe, int part) {
+  const fs::path list = dir / "certificates" / (".check-" + std::to_string(part) + ".jsonl");
+  {
+    std::ofstream out(list);
+    for (size_t i : files) {
+      std::ifstream in(dir / entries[i].file);
+      std::string text((std::istreambuf_iterator<char>(in)), {});
+      for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+      out << (text.find_first_not_of(" \t") == std::string::npos ? "{}" : text) << "\n";  // an empty file: malformed
+    }
+  }
   report::ProcessOptions po;
-  po.time_limit = 600;
-  const auto t0 = clock_type::now();
-  const auto r = report::run_process({exe.string(), "check", (dir / e.file).string()}, po);
-  e.hapstab.seconds = since(t0);
-  e.hapstab.exit = r.started && !r.timed_out && !r.signal ? r.exit_code : -1;
-  e.hapstab.reason = r.exit_code >= 0 && r.started ? first_line(r.out.empty() ? r.err : r.out) : r.describe();
+  po.time_limit = 1800;
+  const auto r = report::run_process({exe.string(), "check", "--batch", list.string()}, po);
+  std::error_code ec;
+  fs::remove(list, ec);
+  std::map<long, json> by_line;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    try {
+      const json j = json::parse(line);
+      if (j.is_object() && j.contains("line") && j["line"].is_number_integer()) by_line[j["line"].get<long>()] = j;
+    } catch (const std::exception&) {  // not a verdict line: a certificate without one fails below
+    }
+  }
+  for (size_t k = 0; k < files.size(); ++k) {
+    CertificateCheck& c = entries[files[k]].hapstab;
+    const auto it = by_line.find(static_cast<long>(k) + 1);
+    if (it == by_line.end() || !it->second.contains("exit") || !it->second["exit"].is_number_integer()) {
+      c.exit = -1;
+      c.reason = "hapstab check --batch reported nothing on it (" + r.describe() + "): " + first_line(r.err);
+      continue;
+    }
+    c.exit = it->second["exit"].get<int>();
+    const std::string verdict = it->second.value("verdict", std::string());
+    c.reason = (c.exit == 0 ? std::string() : verdict + ": ") + it->second.value("reason", std::string());
+    c.seconds = it->second.value("seconds", 0.0);
+  }
 }
 
 // One process of the independent checker on `files` (indices into entries): one JSON line each.
@@ -234,14 +271,17 @@ CertificateSummary check_certificates(std::vector<CertificateEntry>& entries, co
   if (python.empty()) s.independent_missing = "python3 not found";
   else if (!fs::exists(script)) s.independent_missing = script.string() + " not found";
   s.independent_ran = s.independent_missing.empty() && !written.empty();
+  // each checker in two processes, on halves of the certificates; every job writes its own entries
+  const size_t half = (written.size() + 1) / 2;
+  const std::vector<size_t> parts[2] = {std::vector<size_t>(written.begin(), written.begin() + half),
+                                        std::vector<size_t>(written.begin() + half, written.end())};
   std::vector<std::function<void()>> jobs;
-  if (s.independent_ran) {  // two processes of the independent checker, first: they are the longer jobs
-    const size_t half = (written.size() + 1) / 2;
-    for (const auto& part : {std::vector<size_t>(written.begin(), written.begin() + half),
-                             std::vector<size_t>(written.begin() + half, written.end())})
-      if (!part.empty()) jobs.push_back([&entries, part, python, script, dir] { check_independently(entries, part, python, script, dir); });
+  for (int k = 0; k < 2; ++k) {
+    if (parts[k].empty()) continue;
+    jobs.push_back([&entries, &parts, k, dir, exe] { check_with_hapstab(entries, parts[k], dir, exe, k + 1); });
+    if (s.independent_ran)
+      jobs.push_back([&entries, &parts, k, python, script, dir] { check_independently(entries, parts[k], python, script, dir); });
   }
-  for (size_t i : written) jobs.push_back([&entries, i, dir, exe] { check_with_hapstab(entries[i], dir, exe); });
   run_jobs(jobs);
   s.wall_seconds = since(t0);
   for (auto& e : entries) {

@@ -4,12 +4,15 @@
 // --certificate, run in this process through cli::run_in_process (the command's own code, as
 // `hapstab sweep` runs it), into DIR/certificates/<claim-id>.json (<claim-id>.<k>.json when the
 // claim has several instances); reproduce then checks that the certificate's claim is the claim's
-// (CertificateRequest's expectations). Each certificate is then checked by both checkers, neither
-// sharing state with the producer:
-//   - `hapstab check FILE`, one process per certificate (this binary);
+// (CertificateRequest's expectations). Each certificate is then checked by both checkers, in
+// processes of their own (neither shares state with the producer):
+//   - `hapstab check --batch LIST` (this binary), each certificate's file one line of LIST, with
+//     each check's own time: one process per certificate (`hapstab check FILE`) cost 100 times as
+//     much, all of it the process's start-up;
 //   - the independent checker `python3 checks/hapstab_check.py --files FILE...` (when python3 and
 //     the script are present; exit 3 = not checked beyond its size limit, counted apart).
-// Two workers run the checks (the machine's 2 cores); the results keep the certificates' order.
+// Each checker runs as two processes on halves of the certificates, on two workers (the machine's
+// 2 cores); the results keep the certificates' order.
 // DIR/certificates/index.json records each certificate's size, production and check times.
 #pragma once
 
@@ -26,7 +29,7 @@ namespace hapstab::cli {
 struct CertificateCheck {
   int exit = -1;        ///< 0 verified, 1 refuted, 2 malformed, 3 not checked (the independent checker's size limit); -1 not run
   std::string reason;   ///< what it printed (the reason of a refutation, ...)
-  double seconds = 0;   ///< `hapstab check`: its whole process; the independent checker: the check itself
+  double seconds = 0;   ///< the check itself (without its process's start-up), as the checker measured it
 };
 
 struct CertificateEntry {
