@@ -5,6 +5,8 @@
                                                      "malformed: <field>" (exit 2),
                                                      "not checked: <why>" (exit 3, beyond the size limit)
     python3 checks/hapstab_check.py --batch FILE     one certificate per line, one JSON verdict per line
+    python3 checks/hapstab_check.py --files CERT...  one JSON verdict per file, with the seconds its
+                                                     check took (hapstab reproduce runs it so)
 
 Python 3 standard library (fractions) for everything exact; mpmath's interval arithmetic (iv) only
 for the enclosure of cot in `r`. It reads the model as written (the expression of H(z) with its own
@@ -56,6 +58,7 @@ it exit 3.
 """
 import json
 import sys
+import time
 from fractions import Fraction
 from math import comb
 
@@ -1249,7 +1252,27 @@ def check(c):
         return 3, "internal error of the checker: %r" % (e,)
 
 
+def check_file(name):
+    """(exit code, reason) of the certificate in the file `name`."""
+    try:
+        with open(name) as f:
+            c = json.load(f)
+    except (OSError, ValueError) as e:
+        return 2, str(e)
+    return check(c)
+
+
 def main(argv):
+    if len(argv) >= 3 and argv[1] == "--files":
+        worst = 0
+        for name in argv[2:]:
+            t0 = time.perf_counter()
+            code, why = check_file(name)
+            worst = max(worst, code)
+            verdict = ["verified", "refuted", "malformed", "not checked"][code]
+            print(json.dumps({"file": name, "verdict": verdict, "exit": code, "reason": why,
+                              "seconds": round(time.perf_counter() - t0, 6)}), flush=True)
+        return worst
     if len(argv) == 3 and argv[1] == "--batch":
         worst = 0
         with open(argv[2]) as f:
@@ -1267,15 +1290,9 @@ def main(argv):
                 print(json.dumps({"line": lineno, "verdict": verdict, "exit": code, "reason": why}), flush=True)
         return worst
     if len(argv) != 2:
-        print("usage: hapstab_check.py CERT.json | --batch FILE", file=sys.stderr)
+        print("usage: hapstab_check.py CERT.json | --batch FILE | --files CERT...", file=sys.stderr)
         return 2
-    try:
-        with open(argv[1]) as f:
-            c = json.load(f)
-    except (OSError, ValueError) as e:
-        print("malformed: %s" % e)
-        return 2
-    code, why = check(c)
+    code, why = check_file(argv[1])
     print(["verified", "refuted: " + why, "malformed: " + why, "not checked: " + why][code])
     return code
 

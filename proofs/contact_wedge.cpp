@@ -20,6 +20,7 @@
 #include "hapstab/contact/qineq.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -128,6 +129,12 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
     w_holds += a.wedge.verdict.holds();
     both_hold += a.tsypkin.verdict.holds() && a.wedge.verdict.holds();
     if (tsypkin.count(a.tsypkin.verdict.holds()) && !a.wedge.verdict.holds()) ++bad_contain;
+    // the certificate of both exact verdicts of this H (`hapstab wedge --H`, T = 1 as here)
+    check.certify("002.wedge_contains_tsypkin",
+                  {{"wedge", "--H", hapstab::proofs::rational_function_text(H.H)},
+                   "",
+                   "",
+                   {{"wedge", a.wedge.verdict.holds()}, {"tsypkin", a.tsypkin.verdict.holds()}}});
     if (finite_gain.count(!a.wedge.gain_infinite)) {
       // k*_wedge >= k*_Tsypkin is proven only when the wedge enclosure lies wholly at or above
       // the Tsypkin one (lo_wedge >= hi_Tsypkin); anything else is not a proof

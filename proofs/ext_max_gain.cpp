@@ -13,6 +13,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/max_gain.hpp"
 #include "hapstab/poly/sturm.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -55,6 +56,21 @@ struct Failures {
 
 using Cases = std::vector<std::pair<std::string, GainProblem>>;
 
+// The `bound --max NAME --damping b` certificate of one closed form (proofs/certify.hpp): H as
+// written, the other parameter set, K_max equal to `want` (none: an algebraic closed form, checked
+// inside the certified enclosure by the proof).
+void certify_max(proofs::Checker& check, const std::string& H, const std::string& name, const rational& T, int n,
+                 const rational& b, std::vector<std::pair<std::string, rational>> set, const std::optional<rational>& want) {
+  proofs::BoundInstance inst{H, T, std::move(set)};
+  inst.delay = n;
+  inst.max = name;
+  inst.damping = b;
+  proofs::CertificateRequest r;
+  r.args = proofs::bound_args(inst);
+  if (want) r.contains = want->str();
+  check.certify("ext.max_gain.closed_forms", r);
+}
+
 // ---- closed forms of paper 001 solved for the parameter --------------------------------------
 void closed_forms(proofs::Checker& check) {
   using proofs::Instances;
@@ -78,6 +94,7 @@ void closed_forms(proofs::Checker& check) {
           const rational want = 2 * (b - B) / T;
           if (rational_cf.count(true) && !(m.status == Status::exact && m.value == want)) f.fail("(46) K, B = " + B.str());
           table(g, m);
+          certify_max(check, "K + B*(z-1)/(T*z)", "K", T, 0, b, {{"B", B}}, want);
         }
         // (46) damping at K = 400: B <= b - KT/2 when positive
         const rational K(400);
@@ -86,6 +103,7 @@ void closed_forms(proofs::Checker& check) {
           const MaxGain m = max_gain(g, 30);
           if (rational_cf.count(true) && !(m.status == Status::exact && m.value == b - K * T / 2)) f.fail("(46) B, K = 400");
           table(g, m);
+          certify_max(check, "K + B*(z-1)/(T*z)", "B", T, 0, b, {{"K", K}}, b - K * T / 2);
         }
         // K z^-n, n = 1..3: K <= 2b/((2n+1)T)
         for (int n = 1; n <= 3; ++n) {
@@ -94,6 +112,7 @@ void closed_forms(proofs::Checker& check) {
           if (rational_cf.count(true) && !(m.status == Status::exact && m.value == 2 * b / (rational(2 * n + 1) * T)))
             f.fail("K z^-n, n = " + std::to_string(n));
           table(g, m);
+          certify_max(check, "K", "K", T, n, b, {}, 2 * b / (rational(2 * n + 1) * T));
         }
         // (53), n = 1, stiffness: b >= 5B: K <= 2(b + B)/(3T); else K T = 2 sqrt(B(2b - B)) - 2B,
         // the positive root of T^2 K^2 + 4 B T K + 8 B (B - b)
@@ -108,6 +127,8 @@ void closed_forms(proofs::Checker& check) {
             if (!root_inside(q, rational(0), 4 * B / T, m)) f.fail("(53) K, b < 5B, B = " + B.str() + ", b = " + b.str());
           }
           table(g, m);
+          certify_max(check, "K + B*(z-1)/(T*z)", "K", T, 1, b, {{"B", B}},
+                      b >= 5 * B ? std::optional<rational>(2 * (b + B) / (3 * T)) : std::nullopt);
         }
         // Tustin walls, n = 0: K <= 2(b + B)/T; n = 1: K <= 2(b + B)/(3T) when b > 3B
         {
@@ -115,11 +136,13 @@ void closed_forms(proofs::Checker& check) {
           const MaxGain m0 = max_gain(g0, 30);
           if (rational_cf.count(true) && !(m0.status == Status::exact && m0.value == 2 * (b + B) / T)) f.fail("Tustin n = 0");
           table(g0, m0);
+          certify_max(check, "K + 2*B*(z-1)/(T*(z+1))", "K", T, 0, b, {{"B", B}}, 2 * (b + B) / T);
           if (b > 3 * B) {
             const GainProblem g1 = gain(RF(B) * tustin(T), RF(rational(1)), T, 1, b);
             const MaxGain m1 = max_gain(g1, 30);
             if (rational_cf.count(true) && !(m1.status == Status::exact && m1.value == 2 * (b + B) / (3 * T))) f.fail("Tustin n = 1");
             table(g1, m1);
+            certify_max(check, "K + 2*B*(z-1)/(T*(z+1))", "K", T, 1, b, {{"B", B}}, 2 * (b + B) / (3 * T));
           }
         }
       }
@@ -134,19 +157,38 @@ void closed_forms(proofs::Checker& check) {
 }
 
 // ---- b* = b at the answer ----------------------------------------------------------------------
+/// The `bound --max` command line of a case (proofs/certify.hpp): H as written with the
+/// parameter `name` free, the others set.
+proofs::BoundInstance max_instance(const std::string& H, const std::string& name, const rational& T, int n, const rational& b,
+                                   std::vector<std::pair<std::string, rational>> set) {
+  proofs::BoundInstance inst{H, T, std::move(set)};
+  inst.delay = n;
+  inst.max = name;
+  inst.damping = b;
+  return inst;
+}
+
 /// The boundary claim's problems: walls in K and in B, a Tustin wall, fractional delays and six
-/// pseudo-random first-order H drawn from rng.
-Cases boundary_cases(const rational& T, std::mt19937& rng) {
+/// pseudo-random first-order H drawn from rng; `written` gets each as `bound --max` takes it.
+Cases boundary_cases(const rational& T, std::mt19937& rng, std::vector<proofs::BoundInstance>& written) {
   Cases cases;
-  for (int n = 0; n <= 3; ++n)
+  const char* const wall = "K + B*(z-1)/(T*z)";
+  for (int n = 0; n <= 3; ++n) {
     cases.push_back({"wall K, n = " + std::to_string(n), gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, n, rational(3, 2))});
-  cases.push_back({"wall B, n = 1", gain(RF(rational(300)), backward(T), T, 1, rational(2))});
-  cases.push_back({"wall B, n = 2", gain(RF(rational(300)), backward(T), T, 2, rational(2))});
+    written.push_back(max_instance(wall, "K", T, n, rational(3, 2), {{"B", rational(1, 2)}}));
+  }
+  for (int n : {1, 2}) {
+    cases.push_back({"wall B, n = " + std::to_string(n), gain(RF(rational(300)), backward(T), T, n, rational(2))});
+    written.push_back(max_instance(wall, "B", T, n, rational(2), {{"K", rational(300)}}));
+  }
   cases.push_back({"Tustin K, n = 2", gain(RF(rational(1, 2)) * tustin(T), RF(rational(1)), T, 2, rational(3))});
+  written.push_back(max_instance("K + 2*B*(z-1)/(T*(z+1))", "K", T, 2, rational(3), {{"B", rational(1, 2)}}));
   for (const rational& td : {rational(1, 2000), rational(3, 10000), rational(37, 100000)}) {
     GainProblem g = gain(RF(rational(1, 2)) * backward(T), RF(rational(1)), T, 0, rational(3, 2));
     g.base.frac_delay = td;
     cases.push_back({"wall K, t_d = " + to_decimal(td, 6), g});
+    written.push_back(max_instance(wall, "K", T, 0, rational(3, 2), {{"B", rational(1, 2)}}));
+    written.back().frac_delay = td;
   }
   std::uniform_int_distribution<int> pick(-8, 8);
   for (int k = 0; k < 6; ++k) {  // c (z - a)/(z - p) + K, |p| <= 0.8
@@ -154,18 +196,30 @@ Cases boundary_cases(const rational& T, std::mt19937& rng) {
     const RF H0 = RF(c) * RF(P(std::vector<rational>{-a, rational(1)}), P(std::vector<rational>{-p, rational(1)}));
     cases.push_back({"random first-order H, n = " + std::to_string(k % 3),
                      gain(H0, k % 2 ? RF(rational(1)) : backward(T), T, k % 3, rational(4))});
+    written.push_back(max_instance(k % 2 ? "c*(z-a)/(z-p) + K" : "c*(z-a)/(z-p) + K*(z-1)/(T*z)", "K", T, k % 3,
+                                   rational(4), {{"c", c}, {"a", a}, {"p", p}}));
   }
   return cases;
 }
 
-void boundary(proofs::Checker& check, const Cases& cases) {
+void boundary(proofs::Checker& check, const Cases& cases, const std::vector<proofs::BoundInstance>& written) {
   using proofs::Instances;
   Instances exact_at{"exact K_max with b*(K_max) = b exactly", 4}, bracket_at{"certified K_max bracketed by b*", 8},
       sides{"b* proven < b at K_max(1 - 1e-12) and >= b at K_max(1 + 1e-12)", 12};
   Failures f;
-  for (const auto& [what, g] : cases) {
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const auto& [what, g] = cases[i];
     const MaxGain m = max_gain(g, 30);
     if (m.outcome != Outcome::holds || m.infinite) continue;
+    const auto& td = written[i].frac_delay;
+    // its certificate: K_max's enclosure [lo, hi] with b*(lo) <= b <= b*(hi) (bound-max's theorem); not for
+    // t_d = 37T/100 (q = 100: its check alone takes ~40 s, see the claim's note)
+    if (!(td && den(rational(*td / g.base.T)) >= 100)) {
+      proofs::CertificateRequest r;
+      r.args = proofs::bound_args(written[i]);
+      if (m.status == Status::exact) r.contains = m.value.str();
+      check.certify("ext.max_gain.boundary", r);
+    }
     const BoundaryCheck c = check_boundary(g, m, 30);
     if (m.status == Status::exact) {
       exact_at.count(true);
@@ -180,6 +234,9 @@ void boundary(proofs::Checker& check, const Cases& cases) {
     sides.count(true);
     if (!sides_ok) f.fail(what + ": b* not below b just inside, or not above just outside");
   }
+  check.no_certificate("ext.max_gain.boundary", "the certificates prove K_max's enclosure, b* <= b at its lower end and >= b at "
+                       "its upper end; b* at K_max(1 +- 1e-12) has no certificate here, nor t_d = 37T/100 (q = 100: "
+                       "`hapstab check` takes ~40 s on it, beyond reproduce's time; docs/certificates.md, Sizes and times)");
   check.claim("ext.max_gain.boundary", "(45), (54)",
               "b*(K_max) = b: bound at the ends of K_max's certified enclosure brackets b (exactly b for a rational K_max), "
               "and b* is proven < b at K_max(1 - 1e-12), >= b at K_max(1 + 1e-12) -- walls in K and in B with n = 0..3, a "
@@ -220,7 +277,8 @@ HAPSTAB_PROOF(ext_max_gain, "ext", "the largest passive K: closed forms, b* = b 
   closed_forms(check);
   const rational T(1, 1000);
   std::mt19937 rng(4141);  // one stream: the boundary's random H draw first, then the convexity pairs
-  const Cases cases = boundary_cases(T, rng);
-  boundary(check, cases);
+  std::vector<proofs::BoundInstance> written;
+  const Cases cases = boundary_cases(T, rng, written);
+  boundary(check, cases, written);
   convexity(check, cases, T, rng);
 }

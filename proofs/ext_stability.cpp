@@ -129,6 +129,7 @@ HAPSTAB_PROOF(ext_stability_pure_mass, "ext", "pure mass, n = 0: the exact stabl
      << ok << "/" << cases << " (m, B, T): the cubic at the closed form has a root pair on |z| = 1 (exact count), exact "
      << "Schur-Cohn stable at 0.999 K*, unstable at 1.001 K*, and stability --max's enclosure contains K* (" << inside
      << "/" << cases << ")";
+  check.no_certificate("ext.stability.pure_mass", "the stability kind certifies one loop's verdict; this is the stable region for every (m, B, K, T), proven symbolically: no certificate kind yet (issue 47)");
   check.claim("ext.stability.pure_mass", "Jury, n = 0",
               "device 1/(m s^2), wall K + B(z-1)/(Tz): stable iff 0 < BT < 2m and 0 < K < (2B/T)(2m - BT)/(2m + BT) "
               "(never passive: b = 0 < b* = KT/2 + B)",

@@ -20,6 +20,7 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -55,6 +56,13 @@ HAPSTAB_PROOF(fractional_pole_side, "001", "t_d with a pole at z = -1: +inf only
           continue;
         }
         finite.count(true);
+        {  // its certificate: b* finite, in the enclosure that `bound` prints (no expected value: the claim names none)
+          proofs::BoundInstance inst{"K + 2*B*(z-1)/(T*(z+1))", T, {{"K", K}, {"B", B}}};
+          inst.frac_delay = tau * T;
+          proofs::CertificateRequest r;
+          r.args = proofs::bound_args(inst);
+          check.certify("001.fracdelay.pole_side", r);
+        }
         if (b.infinite || !b.enclosure) {
           ok = false;
           continue;
@@ -70,6 +78,8 @@ HAPSTAB_PROOF(fractional_pole_side, "001", "t_d with a pole at z = -1: +inf only
         if (!this_ok) worst << " K = " << K << ", B = " << B << ", tau = " << tau << ": grid " << grid << ", at " << at << ", [" << lo << ", " << hi << "];";
         ok = ok && this_ok;
       }
+  check.no_certificate("001.fracdelay.pole_side",
+                       "the cases b* = +inf (sin(pi tau) > 0) have none: no certificate kind yet (issue 47)");
   check.claim("001.fracdelay.pole_side", "(45), (54), Example 3",
               "Tustin wall with t_d = tau T: b* = +inf exactly when sin(pi tau) > 0; for sin(pi tau) < 0 b* is a finite interior "
               "maximum, its enclosure agreeing with the objective evaluated on the unit circle -- at T = 1/1000, K in {20, 1000}, "

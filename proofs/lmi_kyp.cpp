@@ -147,6 +147,7 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
      << " exact LMI lower bounds <= the certified lower end" << bad.str();
   // Two claims: the comparison of exact LMI lower bounds with certified enclosures is a proof;
   // the agreement of the SDP's double level with the certified level (1e-5) is numeric.
+  check.no_certificate("000.lemma1.kyp_certified", "the passivity-level kind certifies the frequency-domain level, not the exact Lemma 1 LMI bound compared with it: no certificate kind yet (issue 47)");
   check.claim("000.lemma1.kyp_certified", "Lemma 1, (2)",
               "on random SISO systems every exact Lemma 1 lower bound of the ISP/OSP level lies at or below the lower "
               "end of the certified frequency-domain enclosure, so at or below the level (exact comparison)",

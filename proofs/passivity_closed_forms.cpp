@@ -11,6 +11,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/catalogue.hpp"
 #include "hapstab/poly/unit_circle.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -87,6 +88,25 @@ bool eq51_symbolic_in_a() {
 bool agrees(const Bound& b, const rational& v) { return !b.infinite && b.enclosure->contains(v); }
 /// b* <= v proven: the whole enclosure lies at or below v
 bool below(const Bound& b, const rational& v) { return !b.infinite && proofs::proves_upper_bound(*b.enclosure, v); }
+
+// The certificates' models (proofs/certify.hpp): each instance as a user writes it for `hapstab bound`.
+const char* const wall_text = "K + B*(z-1)/(T*z)";
+const char* const tustin_text = "K + 2*B*(z-1)/(T*(z+1))";
+proofs::BoundInstance wall_instance(const char* H, const rational& K, const rational& B, const rational& T, int n = 0) {
+  proofs::BoundInstance b{H, T, {{"K", K}, {"B", B}}};
+  b.delay = n;
+  return b;
+}
+// sum alpha_m H_m as written: "2/7 + 5/7*((z-1)/(T*z)) + 1/7*((z-1)/(T*z))^2" (zero terms left out)
+std::string backward_sum_text(const std::vector<rational>& alpha) {
+  std::string s;
+  for (size_t m = 0; m < alpha.size(); ++m) {
+    if (alpha[m] == 0) continue;
+    s += (s.empty() ? "" : " + ") + alpha[m].str();
+    if (m >= 1) s += "*((z-1)/(T*z))" + (m > 1 ? "^" + std::to_string(m) : std::string());
+  }
+  return s;
+}
 
 }  // namespace
 
@@ -251,6 +271,7 @@ void backward_difference_forms(proofs::Checker& check, const rational& T, std::m
     if (!combos.count(!H.is_zero())) continue;
     rational cf = catalogue::backward_difference_sum(alpha, T);
     ok = ok && agrees(bound_certified(prob(H, T)), cf);
+    check.certify("001.eq46.generic", proofs::bound_equals({backward_sum_text(alpha), T}, cf));
     ++count;
   }
   check.claim("001.eq46.generic", "(46)", "b* = sum alpha_m (2/T)^{m-1} for alpha_m >= 0 -- at T = 1/1000 on 12 pseudo-random combinations up to H_4 (seed 46)", Status::certified, ok,
@@ -266,8 +287,11 @@ void backward_difference_forms(proofs::Checker& check, const rational& T, std::m
       if (!walls.count(K != 0 || B != 0)) continue;
       RF H = RF(K) + RF(B) * Hm(1, T);
       ok = ok && agrees(bound_certified(prob(H, T)), catalogue::virtual_wall(K, B, T));
+      check.certify("001.wall.generic", proofs::bound_equals(wall_instance(wall_text, K, B, T), catalogue::virtual_wall(K, B, T)));
       (K * T >= 4 * B ? stiff : soft).count(true);
       ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
+      check.certify("001.eq53.n1.generic",
+                    proofs::bound_equals(wall_instance(wall_text, K, B, T, 1), catalogue::delayed_wall_n1(K, B, T)));
       ++count;
     }
   // exactly on the boundary KT = 4B and just beside it
@@ -277,6 +301,8 @@ void backward_difference_forms(proofs::Checker& check, const rational& T, std::m
       RF H = RF(K) + RF(B) * Hm(1, T);
       (K * T >= 4 * B ? stiff : soft).count(true);
       ok1 = ok1 && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_wall_n1(K, B, T));
+      check.certify("001.eq53.n1.generic",
+                    proofs::bound_equals(wall_instance(wall_text, K, B, T, 1), catalogue::delayed_wall_n1(K, B, T)));
     }
   check.claim("001.wall.generic", "(46)", "virtual wall K + B(z-1)/(Tz): b* = KT/2 + B -- at T = 1/1000, K in {0, 100, 1000, 4000, 20000, 100000}, B in {0, 1, 5, 50}", Status::certified, ok,
               std::to_string(count) + " (K, B) pairs incl. K = 0 and B = 0", {walls});
@@ -293,6 +319,8 @@ void backward_difference_forms(proofs::Checker& check, const rational& T, std::m
       Bound b = bound_certified(prob(H, T, n));
       delayed.count(true);
       ok = ok && below(b, catalogue::delayed_wall_conservative(n, K, rational(5), T));
+      check.certify("001.eq53.conservative", proofs::bound_at_most(wall_instance(wall_text, K, rational(5), T, n),
+                                                                   catalogue::delayed_wall_conservative(n, K, rational(5), T)));
     }
   check.claim("001.eq53.conservative", "(53)", "b* <= (2n+1)KT/2 + B for the delayed wall -- at T = 1/1000, n = 0..5, K in {1000, 30000}, B = 5", Status::certified, ok,
               "n = 0..5, K in {1000, 30000}, B = 5", {delayed});
@@ -307,10 +335,16 @@ void backward_difference_forms(proofs::Checker& check, const rational& T, std::m
       Bound b = bound_certified(prob(Hm(m, T), T, n));
       (tight ? hm_tight : hm_bound).count(true);
       ok = ok && (tight ? agrees(b, v) : below(b, v));
+      proofs::BoundInstance inst{"((z-1)/(T*z))" + (m > 1 ? "^" + std::to_string(m) : std::string()), T};
+      inst.delay = n;
+      check.certify("001.ex4.Hm.generic", tight ? proofs::bound_equals(inst, v) : proofs::bound_at_most(inst, v));
     }
   for (int n = 0; n <= 6; ++n) {
     h0.count(true);
     ok = ok && agrees(bound_certified(prob(RF(rational(1)), T, n)), catalogue::delayed_constant(n, T));
+    proofs::BoundInstance inst{"1", T};
+    inst.delay = n;
+    check.certify("001.ex4.Hm.generic", proofs::bound_equals(inst, catalogue::delayed_constant(n, T)));
   }
   check.claim("001.ex4.Hm.generic", "Example 4", "H_m z^-n: b* <= (2/T)^{m-1} (equal for even n or m = 1); H_0 z^-n: (2n+1)T/2 -- at T = 1/1000, m = "
               "1..4, n = 0..4 (H_0: n = 0..6)",
@@ -349,6 +383,7 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
     if (tight) ok = ok && agrees(b, v);
     okb = okb && (tight ? agrees(b, v) : below(b, v));
   }
+  check.no_certificate("001.eq49.generic", "no certificate kind yet (issue 47): H = (1 - z) sum alpha_k z^-k of (47) is not causal (bound --allow-noncausal), beyond the bound certificate");
   check.claim("001.eq49.generic", "(47)-(49)", "FIR: b* <= T sum|alpha_k|, equal for alpha >= 0 or alternating signs -- at T = 1/1000 on 15 "
               "pseudo-random FIRs of length 3..7 (seed 46)",
               Status::certified, ok && okb, "15 random FIRs of length 3..7 (5 non-negative, 5 alternating, 5 mixed)",
@@ -362,10 +397,13 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
     RF Hp(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{a, rational(1)}));
     ok = ok && agrees(bound_certified(prob(Hp, T)), catalogue::iir_zero_at_one(a, T));
     ok = ok && agrees(bound_certified(prob(RF(rational(-1)) * Hp, T)), catalogue::iir_zero_at_one_neg(a, T));
+    check.certify("001.eq51.generic", proofs::bound_equals({"(z-1)/(z+a)", T, {{"a", a}}}, catalogue::iir_zero_at_one(a, T)));
+    check.certify("001.eq51.generic", proofs::bound_equals({"(1-z)/(z+a)", T, {{"a", a}}}, catalogue::iir_zero_at_one_neg(a, T)));
   }
   RF H52(P(std::vector<rational>{rational(-1), rational(1)}), P(std::vector<rational>{rational(1), rational(1)}));
   iir.count(true);
   ok = ok && agrees(bound_certified(prob(H52, T)), catalogue::iir_zero_at_one(rational(1), T));
+  check.certify("001.eq51.generic", proofs::bound_equals({"(z-1)/(z+a)", T, {{"a", rational(1)}}}, catalogue::iir_zero_at_one(rational(1), T)));
   check.claim("001.eq51.generic", "(51), (52)", "(z-1)/(z+a): T/(1-a); (1-z)/(z+a): T/(1+a); a = 1: -T/2 -- at T = 1/1000, a in {-0.999999, -0.9, 0, "
               "0.5, 0.999999} and a = 1", Status::certified,
               ok, "a in {-0.999999, -0.9, 0, 0.5, 0.999999} and a = 1", {iir});
@@ -380,6 +418,9 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
       tustin.count(true);
       ok = ok && agrees(bound_certified(prob(H, T)), catalogue::tustin_wall(K, B, T));
       ok = ok && agrees(bound_certified(prob(H, T, 1)), catalogue::delayed_tustin_n1(K, B, T));
+      check.certify("001.tustin.generic", proofs::bound_equals(wall_instance(tustin_text, K, B, T), catalogue::tustin_wall(K, B, T)));
+      check.certify("001.tustin.generic",
+                    proofs::bound_equals(wall_instance(tustin_text, K, B, T, 1), catalogue::delayed_tustin_n1(K, B, T)));
       for (rational td : {T / 100, T / 2, T * 99 / 100}) {
         BoundProblem p = prob(H, T);
         p.frac_delay = td;
@@ -391,6 +432,7 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
   check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B| -- at T = 1/1000, K in {0, 1000, 10000}, B in "
               "{1/2, 5, 50}", Status::certified, ok,
               "K in {0, 1000, 10000}, B in {1/2, 5, 50}", {tustin});
+  check.no_certificate("001.tustin.fracdelay", "no certificate kind yet (issue 47): b* = +inf has no certificate");
   check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive) -- at T = 1/1000, t_d/T in {1/100, "
               "1/2, 99/100}, the nine (K, B) above",
               Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)", {frac});
@@ -409,6 +451,10 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
       ok = ok && agrees(b, rational(1)) && b.method.find("made exact") != std::string::npos && b.omega_enclosure &&
            b.omega_enclosure->lo <= lower_rational(w) && upper_rational(w) <= b.omega_enclosure->hi;
       fractional.count(true);
+      proofs::BoundInstance inst{"(z-1)/(T*z)", T};
+      inst.delay = n;
+      inst.frac_delay = tau * T;
+      check.certify("001.eq45.fractional_exact", proofs::bound_equals(inst, rational(1)));
     }
   check.claim("001.eq45.fractional_exact", "(45), Example 3", "with t_d = (p/q) T the objective is rational in cos(wT/q): "
               "H_1 z^-n e^{-j w t_d} gives b* = 1 at w = pi/((n + 1 + t_d/T) T) -- at T = 1/1000, n = 0..2, t_d/T in "
@@ -424,6 +470,9 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
     BoundProblem p = prob(RF(rational(1000)) + RF(rational(5)) * Hm(1, T), T);
     p.eta = eta;
     ok = ok && agrees(bound_certified(p), catalogue::virtual_wall(1000, 5, T) + eta);
+    proofs::BoundInstance inst = wall_instance(wall_text, rational(1000), rational(5), T);
+    inst.eta = eta;
+    check.certify("001.eq54", proofs::bound_equals(inst, catalogue::virtual_wall(1000, 5, T) + eta));
   }
   check.claim("001.eq54", "(54)", "operator shortage eta adds to the bound -- at eta in {0, 1/10, 7} on the wall K = 1000, B = 5, T = 1/1000", Status::certified, ok, "eta in {0, 1/10, 7}", {etas});
 }

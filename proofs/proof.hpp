@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,6 +57,21 @@ struct Instances {
   }
 };
 
+/// A certificate of one instance of a claim, which `hapstab reproduce` writes and checks with both
+/// checkers (issue 47, docs/certificates.md): the `hapstab` command line (without the program name,
+/// --certificate and --json) that prints the instance's exact or certified verdict -- the model as
+/// a user writes it, with the claim's numbers -- and what the certificate's claim must say for the
+/// instance to be the claim's. Checked by reproduce on the written certificate:
+///   contains  "p/q": the certified quantity (b* of `bound`, K_max of `bound --max`) equals it
+///             (an exact claim) or its claimed enclosure [lo, hi] contains it;
+///   at_most   "p/q": the claimed value, or the enclosure's upper end, is <= it;
+///   flags     claim fields that must have these values ("stable", "wedge", "tsypkin", ...).
+struct CertificateRequest {
+  std::vector<std::string> args;
+  std::string contains{}, at_most{};
+  std::vector<std::pair<std::string, bool>> flags{};
+};
+
 struct ClaimResult {
   std::string id;         ///< stable id, e.g. "001.eq44.identity" (paper.equation.what)
   std::string paper;      ///< "000", "001" or "002" (shared/papers numbering)
@@ -64,6 +80,10 @@ struct ClaimResult {
   Status status;          ///< how the claim is checked: exact, certified or numeric
   bool holds;
   std::string evidence;   ///< what was computed: counts, maximum errors, enclosures
+  /// The certificates of its instances (one per instance; empty: none, `no_certificate` says why
+  /// when the proof says, else reproduce reports "no certificate kind yet (issue 47)").
+  std::vector<CertificateRequest> certificates{};
+  std::string no_certificate{};
 };
 
 class Checker {
@@ -72,9 +92,29 @@ class Checker {
   /// Records one claim and its computed verdict. Returns `holds` for chaining.
   bool claim(std::string id, std::string equation, std::string statement, Status status, bool holds,
              std::string evidence) {
-    results_.push_back({std::move(id), paper_, std::move(equation), std::move(statement), status, holds,
-                        std::move(evidence)});
+    ClaimResult r{id, paper_, std::move(equation), std::move(statement), status, holds, std::move(evidence)};
+    if (auto it = certificates_.find(id); it != certificates_.end()) {
+      r.certificates = std::move(it->second);
+      certificates_.erase(it);
+    }
+    if (auto it = no_certificate_.find(id); it != no_certificate_.end()) {
+      r.no_certificate = std::move(it->second);
+      no_certificate_.erase(it);
+    }
+    results_.push_back(std::move(r));
     return holds;
+  }
+  /// Asks reproduce for the certificate of one instance of the claim `id` (recorded before it).
+  void certify(const std::string& id, CertificateRequest request) { certificates_[id].push_back(std::move(request)); }
+  /// Why the claim `id` (exact or certified) has no certificate, when the proof can say more than
+  /// "no certificate kind yet (issue 47)".
+  void no_certificate(const std::string& id, std::string why) { no_certificate_[id] = std::move(why); }
+  /// The ids that certify() or no_certificate() named but no claim recorded (a proof's slip).
+  std::vector<std::string> unclaimed() const {
+    std::vector<std::string> ids;
+    for (const auto& [id, r] : certificates_) ids.push_back(id);
+    for (const auto& [id, w] : no_certificate_) ids.push_back(id);
+    return ids;
   }
   /// A claim checked on instances: it holds only when `holds` and every family of instances has
   /// its minimum of non-trivial ones; each family's count is appended to the evidence.
@@ -92,6 +132,8 @@ class Checker {
  private:
   std::string paper_;
   std::vector<ClaimResult> results_;
+  std::map<std::string, std::vector<CertificateRequest>> certificates_;
+  std::map<std::string, std::string> no_certificate_;
 };
 
 struct Proof {

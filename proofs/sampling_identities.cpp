@@ -60,6 +60,7 @@ HAPSTAB_PROOF(sampling_r_identities, "001", "(35)=(36)=(37)=(38)=(44) as rationa
   // Re r = -T/2 exactly; Im r = -(T/2) cot(wT/2) = -T/(2t)
   const bool re_ok = f44.re == PT::monomial(1, RF(P(rational(-1, 2))));
   const bool im_ok = f44.im == PT::monomial(1, RF(P(rational(-1, 2)), P::monomial(1)));
+  check.no_certificate("001.eq38.re_minus_T_half", "the r kind certifies r(jw) at one (T, w); this is an identity for every T and w: no certificate kind yet (issue 47)");
   check.claim("001.eq38.re_minus_T_half", "(38), (44)", "Re r(jw) = -T/2 and Im r(jw) = -(T/2) cot(wT/2) exactly",
               hapstab::Status::exact, re_ok && im_ok,
               "Re = " + to_string(f44.re.coeff(1)) + " * T, Im = " + to_string(f44.im.coeff(1)) + " * T");

@@ -4,9 +4,11 @@
 //                                  a malformed certificate is an error naming the field (exit 2)
 //   hapstab check --explain c.json also says what was verified
 //   hapstab check --batch FILE     one certificate (JSON) per line; one JSON line each:
-//                                  {"line", "verdict": "verified|refuted|malformed", "exit", "reason"}
+//                                  {"line", "verdict": "verified|refuted|malformed", "exit", "reason",
+//                                   "seconds": the check's own time}
 // docs/certificates.md has the format and each checker's theorem.
 #include <algorithm>
+#include <chrono>
 #include <sstream>
 #include <iostream>
 #include <memory>
@@ -33,6 +35,7 @@ int run_batch(const std::string& file) {
     ++lineno;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     nlohmann::json out;
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       nlohmann::json c;
       try {
@@ -48,6 +51,7 @@ int run_batch(const std::string& file) {
     }
     worst = std::max(worst, out["exit"].get<int>());
     out["line"] = lineno;
+    out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::cout << out.dump() << std::endl;
   }
   return worst;

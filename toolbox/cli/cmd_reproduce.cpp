@@ -1,8 +1,11 @@
 // `hapstab reproduce`: the main job. Every proof (proofs/), every example scene (examples/*.toml,
 // cli/scenes.hpp), every figure (plots/*.gp but common*.gp and `hapstab plot`'s user_*.gp: data +
 // gnuplot, in every requested format), then
-// DIR/report.md and DIR/index.html. Exit 1 when a claim fails, a scene does not behave as its
-// [reproduce] table says, a figure cannot be drawn, or a plots/ script has no figure behind it.
+// DIR/report.md and DIR/index.html. The certificate of every claim instance a proof asks for goes to
+// DIR/certificates/, checked by `hapstab check` and the independent checker (cli/reproduce_certificates.hpp).
+// Exit 1 when a claim fails, a certificate is not written, not the claim's, refuted or malformed, a
+// scene does not behave as its [reproduce] table says, a figure cannot be drawn, or a plots/ script
+// has no figure behind it.
 // The bench charts run the bench programs (bench/README.md); without them they are reported
 // "not reproduced" (not a failure).
 #include <algorithm>
@@ -52,6 +55,15 @@ int run(const Opts& o) {
     if (!c.holds) std::cerr << "reproduce: claim " << c.id << " FAILS: " << c.evidence << "\n";
   }
   if (!o.quiet) std::cerr << "reproduce: " << rep.claims.size() << " claims checked in " << s << " s\n";
+  if (!rep.claims.empty()) {
+    if (!o.quiet) std::cerr << "reproduce: writing and checking the certificates (DIR/certificates)\n";
+    rep.certificates = produce_certificates(rep.claims, dir, true);
+    rep.certificate_summary = check_certificates(rep.certificates, dir, false);  // failures printed, as a failed claim is
+    write_certificate_index(rep.certificates, rep.certificate_summary, dir);
+    if (!o.quiet)
+      std::cerr << "reproduce: " << certificate_counts(rep.certificate_summary, false) << "; written in "
+                << rep.certificate_summary.produce_seconds << " s, checked in " << rep.certificate_summary.wall_seconds << " s\n";
+  }
   if (!o.quiet) std::cerr << "reproduce: running the example scenes (examples/*.toml)\n";
   rep.scenes = run_scenes(o.only, dir, o.quiet);
   for (const auto& r : rep.scenes)
@@ -104,12 +116,13 @@ int run(const Opts& o) {
   size_t fig_fails = 0, fig_skipped = 0, scene_fails = 0;
   for (const auto& f : rep.figures) fig_fails += !f.ok && !f.skipped, fig_skipped += f.skipped;
   for (const auto& r : rep.scenes) scene_fails += !r.ok;
+  const size_t cert_fails = rep.certificate_summary.failed;
   std::cout << "reproduce: " << rep.claims.size() - claim_fails << " claims hold, " << claim_fails << " fail; "
-            << rep.scenes.size() - scene_fails << " scene runs as expected, " << scene_fails << " not; "
+            << certificate_counts(rep.certificate_summary, false) << "; " << rep.scenes.size() - scene_fails << " scene runs as expected, " << scene_fails << " not; "
             << rep.figures.size() - fig_fails - fig_skipped << " figures drawn, " << fig_fails << " failed, "
             << fig_skipped << " not reproduced on this build; " << rep.seconds << " s; report: "
             << (dir / "report.md").string() << " and " << (dir / "index.html").string() << "\n";
-  return (claim_fails || fig_fails || scene_fails) ? exit_property_fails : exit_ok;
+  return (claim_fails || cert_fails || fig_fails || scene_fails) ? exit_property_fails : exit_ok;
 }
 
 const Register reg({"reproduce",

@@ -136,6 +136,10 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
                   std::string("proof ran to the end: ") + p.title, Status::exact, false,
                   std::string("threw: ") + e.what());
     }
+    for (const auto& id : check.unclaimed())  // a certificate asked for a claim the proof never made
+      check.claim(std::string(p.paper) + "." + p.id + ".certificates", "-",
+                  std::string("every certificate the proof asks for belongs to one of its claims: ") + p.title, Status::exact,
+                  false, "certify() or no_certificate() named '" + id + "', which no claim of the proof has");
     double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
     if (!quiet) {
       std::cout << "[proof " << i << "/" << total << "] " << p.paper << " " << p.id << ": "
@@ -172,7 +176,7 @@ size_t count_failures(const ReportInput& in) {
   for (const auto& c : in.claims) n += !c.holds;
   for (const auto& f : in.figures) n += !f.ok && !f.skipped;
   for (const auto& r : in.scenes) n += !r.ok;
-  return n;
+  return n + in.certificate_summary.failed;
 }
 
 template <class T>
@@ -195,34 +199,105 @@ std::string summary_line(const ReportInput& in) {
   return o.str();
 }
 
+// The certificate cell of a scene run: no scene verdict has a certificate kind yet.
+std::string scene_certificate(const SceneRun& r) {
+  if (r.command == "simulate") return "numeric (a simulation): no certificate";
+  return "no certificate kind yet (issue 47)";
+}
+
+// The report's certificate paragraph: the counts, the times, the failures.
+std::string certificate_paragraph(const ReportInput& in, bool as_html) {
+  const CertificateSummary& s = in.certificate_summary;
+  std::ostringstream o;
+  const std::string counts = certificate_counts(s, !as_html);
+  o << (as_html ? "<b>Certificates</b> (issue 47, docs/certificates.md): " + html(counts) : "**Certificates** (issue 47, docs/certificates.md): " + counts)
+    << ". Production " << s.produce_seconds << " s (the commands, in this process), `hapstab check` " << s.check_seconds
+    << " s, the independent checker " << s.independent_seconds << " s (the checks themselves); "
+    << s.wall_seconds << " s for the checks on two workers. Sizes and times of each: "
+    << (as_html ? "<a href=\"certificates/index.json\">certificates/index.json</a>" : "[certificates/index.json](certificates/index.json)")
+    << ".";
+  std::string text = o.str();
+  if (as_html) {  // the backquotes of the markdown text as <code>
+    const std::string tick = "`hapstab check`";
+    for (size_t at; (at = text.find(tick)) != std::string::npos;) text.replace(at, tick.size(), "<code>hapstab check</code>");
+  }
+  for (const auto& f : s.failures) text += as_html ? "<br>\nFAILS: " + html(f) : "\n- **FAILS**: " + cell(f);
+  return text;
+}
+
 const char* const kStatusLegend =
     "Status: **exact** = proven in rational arithmetic; **certified** = proven by an enclosure; "
     "**numeric** = floating-point evidence with the stated error.";
 
 }  // namespace
 
+std::string certificate_cell(const ClaimResult& c, const std::vector<CertificateEntry>& entries, bool as_html) {
+  auto text = [&](const std::string& t) { return as_html ? html(t) : cell(t); };
+  auto link = [&](const std::string& label, const std::string& file) {
+    const std::string url = "certificates/" + url_component(file.substr(file.find('/') + 1));
+    return as_html ? "<a href=\"" + attribute(url) + "\">" + html(label) + "</a>" : "[" + cell(label) + "](" + url + ")";
+  };
+  std::vector<const CertificateEntry*> mine;
+  for (const auto& e : entries)
+    if (e.claim == c.id) mine.push_back(&e);
+  if (mine.empty())
+    return text(c.status == Status::numeric ? "numeric: no certificate"
+                : c.no_certificate.empty() ? "no certificate kind yet (issue 47)" : c.no_certificate);
+  std::set<std::string> kinds;
+  size_t hap = 0, ind = 0, limit = 0;
+  const CertificateEntry* failed = nullptr;
+  for (const auto* e : mine) {
+    kinds.insert(e->kind.empty() ? "(none written)" : e->kind);
+    hap += e->hapstab.exit == 0, ind += e->independent.exit == 0, limit += e->independent.exit == 3;
+    if (!failed && !e->failure.empty()) failed = e;
+  }
+  std::string kind_list;
+  for (const auto& k : kinds) kind_list += (kind_list.empty() ? "" : ", ") + k;
+  std::string out;
+  if (mine.size() == 1) {
+    out = link(mine.front()->file.substr(mine.front()->file.find('/') + 1), mine.front()->file) + " " + text("(" + kind_list + ")");
+  } else {
+    out = text(std::to_string(mine.size()) + " certificates (" + kind_list + "):");
+    for (size_t k = 0; k < mine.size(); ++k) out += " " + link(std::to_string(k + 1), mine[k]->file);
+  }
+  const size_t n = mine.size();
+  std::string verdict;
+  if (failed)
+    verdict = (as_html ? "<span class=\"fails\">FAILS</span>: " : "**FAILS**: ") + text(failed->file + ": " + failed->failure);
+  else if (hap == n && ind == n)
+    verdict = text("verified by both checkers");
+  else
+    verdict = text("verified by hapstab check (" + std::to_string(hap) + " of " + std::to_string(n) + "); the independent checker: " +
+                   std::to_string(ind) + " verified" + (limit ? ", " + std::to_string(limit) + " beyond its size limit" : std::string()));
+  out += "; " + verdict;
+  if (!c.no_certificate.empty()) out += "; " + text(c.no_certificate);
+  return out;
+}
+
 void write_report_md(const ReportInput& in, const fs::path& dir) {
   auto md = open_out(dir / "report.md");
-  md << "# hapstab reproduction report\n\n" << summary_line(in) << "\n\n" << kStatusLegend << "\n";
+  md << "# hapstab reproduction report\n\n" << summary_line(in) << "\n\n";
+  if (!in.claims.empty()) md << certificate_paragraph(in, false) << "\n\n";
+  md << kStatusLegend << "\n";
   for (std::string paper : kPapers) {
     if (!any_of_paper(in.claims, paper) && !any_of_paper(in.figures, paper) && !any_of_paper(in.scenes, paper))
       continue;
     md << "\n## " << section_title(paper) << "\n";
     if (any_of_paper(in.claims, paper)) {
-      md << "\n| claim | equation | statement | status | verdict | evidence |\n|---|---|---|---|---|---|\n";
+      md << "\n| claim | equation | statement | status | verdict | certificate | evidence |\n|---|---|---|---|---|---|---|\n";
       for (const auto& c : in.claims)
         if (c.paper == paper)
           md << "| " << code(c.id) << " | " << cell(c.equation) << " | " << cell(c.statement) << " | "
              << to_string(c.status) << " | " << (c.holds ? "holds" : "**FAILS**") << " | "
-             << cell(c.evidence) << " |\n";
+             << certificate_cell(c, in.certificates, false) << " | " << cell(c.evidence) << " |\n";
     }
     if (any_of_paper(in.scenes, paper)) {
-      md << "\n### Example scenes\n\n| scene | claim | command | expected | got | verdict |\n|---|---|---|---|---|---|\n";
+      md << "\n### Example scenes\n\n| scene | claim | command | expected | got | verdict | certificate |\n|---|---|---|---|---|---|---|\n";
       for (const auto& r : in.scenes)
         if (r.paper == paper)
           md << "| " << code("examples/" + r.file) << " | " << cell(r.claim) << " | " << code("hapstab " + r.command) << " | "
              << cell(r.expected.empty() ? "runs" : r.expected) << " | " << cell(r.got) << " | "
-             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error)) << " |\n";
+             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error)) << " | " << cell(scene_certificate(r)) << " |\n";
     }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
@@ -248,6 +323,7 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
        ".summary{padding:0.6em 1em;background:"
     << (fails ? "#fdecea" : "#e8f5e9") << ";border-radius:4px}</style></head><body>\n"
     << "<h1>hapstab reproduction report</h1>\n<p class=\"summary\">" << html(summary_line(in)) << "</p>\n"
+    << (in.claims.empty() ? std::string() : "<p>" + certificate_paragraph(in, true) + "</p>\n")
     << "<p>Status: <b>exact</b> = proven in rational arithmetic; <b>certified</b> = proven by an enclosure; "
        "<b>numeric</b> = floating-point evidence with the stated error.</p>\n";
   for (std::string paper : kPapers) {
@@ -256,23 +332,25 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
     h << "<h2>" << html(section_title(paper)) << "</h2>\n";
     if (any_of_paper(in.claims, paper)) {
       h << "<table><tr><th>claim</th><th>equation</th><th>statement</th><th>status</th><th>verdict</th>"
-           "<th>evidence</th></tr>\n";
+           "<th>certificate</th><th>evidence</th></tr>\n";
       for (const auto& c : in.claims)
         if (c.paper == paper)
           h << "<tr><td><code>" << html(c.id) << "</code></td><td>" << html(c.equation) << "</td><td>"
             << html(c.statement) << "</td><td>" << to_string(c.status) << "</td><td class=\""
-            << (c.holds ? "holds\">holds" : "fails\">FAILS") << "</td><td>" << html(c.evidence) << "</td></tr>\n";
+            << (c.holds ? "holds\">holds" : "fails\">FAILS") << "</td><td>" << certificate_cell(c, in.certificates, true)
+            << "</td><td>" << html(c.evidence) << "</td></tr>\n";
       h << "</table>\n";
     }
     if (any_of_paper(in.scenes, paper)) {
       h << "<h3>Example scenes</h3>\n<table><tr><th>scene</th><th>claim</th><th>command</th><th>expected</th>"
-           "<th>got</th><th>verdict</th></tr>\n";
+           "<th>got</th><th>verdict</th><th>certificate</th></tr>\n";
       for (const auto& r : in.scenes)
         if (r.paper == paper)
           h << "<tr><td><code>examples/" << html(r.file) << "</code></td><td>" << html(r.claim)
             << "</td><td><code>hapstab " << html(r.command) << "</code></td><td>"
             << html(r.expected.empty() ? "runs" : r.expected) << "</td><td>" << html(r.got) << "</td><td class=\""
-            << (r.ok ? "holds\">as expected" : "fails\">FAILS: " + html(r.error)) << "</td></tr>\n";
+            << (r.ok ? "holds\">as expected" : "fails\">FAILS: " + html(r.error)) << "</td><td>"
+            << html(scene_certificate(r)) << "</td></tr>\n";
       h << "</table>\n";
     }
     for (const auto& f : in.figures)

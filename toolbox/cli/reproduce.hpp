@@ -1,11 +1,13 @@
 // cli/reproduce.hpp -- running the proofs, and writing the report (report.md, index.html)
-// that `hapstab reproduce` produces.
+// that `hapstab reproduce` produces: per paper the claim table (each claim linked to its
+// certificates, cli/reproduce_certificates.hpp), the example scenes and the figures.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "cli/reproduce_certificates.hpp"
 #include "cli/scenes.hpp"
 #include "proofs/proof.hpp"
 
@@ -28,8 +30,15 @@ struct ReportInput {
   std::vector<proofs::ClaimResult> claims;
   std::vector<FigureEntry> figures;
   std::vector<SceneRun> scenes;
+  std::vector<CertificateEntry> certificates;  ///< in the claims' order
+  CertificateSummary certificate_summary;
   double seconds = 0;
 };
+
+/// The report's certificate cell of claim `c`: its certificates (links relative to the report
+/// folder) and what the checkers said, or why it has none ("no certificate kind yet (issue 47)").
+/// `html`: HTML, else markdown.
+std::string certificate_cell(const proofs::ClaimResult& c, const std::vector<CertificateEntry>& entries, bool html);
 
 /// DIR/report.md: one section per paper, each claim with its equation, status and verdict,
 /// then the paper's example scenes and its figures.
