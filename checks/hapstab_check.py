@@ -405,6 +405,41 @@ def only(obj, known, where):
             raise Malformed("%s.%s: a field this checker does not know (it would not be checked)" % (where, k))
 
 
+def period(model):
+    """model.T, the sample period, > 0."""
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    return T
+
+
+def parameters(model):
+    """model.set as {NAME: Fraction}."""
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    return {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+
+
+def delay_of(model):
+    """model.delay, an integer n in [0, 100000]."""
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool) or n < 0 or n > 100000:
+        raise Malformed("model.delay: missing, not an integer or outside [0, 100000]")
+    return n
+
+
+def model_h(model):
+    """(H, T): model.H parsed with the sample period model.T > 0 and the parameters model.set."""
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = period(model)
+    try:
+        return parse_h(model["H"], T, parameters(model)), T
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+
+
 def printed_number(v, what):
     if not isinstance(v, str):
         raise Malformed("%s: not a string" % what)
@@ -412,6 +447,38 @@ def printed_number(v, what):
         return Fraction(v.strip())
     except (ValueError, ZeroDivisionError):
         raise Malformed("%s: %r is not a number" % (what, v))
+
+
+def parts(c):
+    """(model, claim, evidence) of a certificate whose top-level fields are the known ones."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    return obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+
+
+def claim_range(claim, may_be_infinite=False):
+    """(status, lo, hi, infinite, refuted): "exact" with value, or "certified" with lo, hi, or (where
+    allowed) "infinite": true alone; the printed decimals must be the claimed numbers. Malformed when
+    malformed; refuted (a reason, else None) when false on its face."""
+    status = claim.get("status")
+    if status not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    infinite = claim.get("infinite", False) if may_be_infinite else False
+    if not isinstance(infinite, bool):
+        raise Malformed("claim.infinite: not true/false")
+    if infinite:
+        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
+            raise Malformed("claim.infinite: true beside a finite value")
+        return status, None, None, True, None
+    if status == "exact":
+        lo = hi = exact(claim, "value", "claim")
+    else:
+        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo > hi:
+            return status, lo, hi, False, "claim: lo > hi"
+    for key in ("printed_lo", "printed_hi", "printed"):
+        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+            return status, lo, hi, False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    return status, lo, hi, False, None
 
 
 # ---------------------------------------------------------------- P >= 0 on [a, b]
@@ -587,24 +654,14 @@ def short(x):
 
 
 def check_bound(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c", "domain_c_lo"), "evidence")
     H, T, eta, P, q = bound_model(model)
-    status = claim.get("status")
-    if status == "exact":
-        lo = hi = exact(claim, "value", "claim")
-    elif status == "certified":
-        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo > hi:
-            return False, "claim: lo > hi"
-    else:
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    for key in ("printed_lo", "printed_hi", "printed"):
-        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
     c0 = exact(evidence, "witness_c", "evidence")
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     E, F = objective_c(H, T, P, q)
@@ -620,16 +677,8 @@ def check_bound(c):
 
 def bound_model(model):
     """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q)."""
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool):
-        raise Malformed("model.delay: missing or not an integer")
-    if n < 0 or n > 100000:
-        raise Malformed("model.delay: outside [0, 100000]")
+    H, T = model_h(model)
+    n = delay_of(model)
     td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
     if td < 0:
         raise Malformed("model.frac_delay: must be >= 0")
@@ -639,14 +688,6 @@ def bound_model(model):
     tau = n + td / T
     if tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6:
         raise TooLarge("t_d/T has a numerator or denominator above 10^6")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
-    try:
-        H = parse_h(model["H"], T, params)
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
     return H, T, eta, tau.numerator, tau.denominator
 
 
@@ -717,21 +758,26 @@ def prove_affine(text, T, params, K):
     return H0, H1, D
 
 
+def parameter_name(model):
+    """model.name, the parameter maximised: a string, given no value in model.set."""
+    K = model.get("name")
+    if not isinstance(K, str) or not K:
+        raise Malformed("model.name: missing or not a string")
+    if isinstance(model.get("set", {}), dict) and K in model.get("set", {}):
+        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
+    return K
+
+
 def check_bound_max(c):
     """K_max = sup{K0 >= 0 : b*(K) < b on [0, K0)} for H = H0 + K H1 (proven affine), b* convex in
     K (a sup of affine functions): K_max >= lo > 0 if b*(0) <= b0 < b and b*(lo) <= b; K_max <= hi if
     b*(hi) >= b (a witness); K_max = +inf if b*(0) <= b0 < b and f1 <= 0 on the band."""
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
-    K = model.get("name")
-    if not isinstance(K, str) or not K:
-        raise Malformed("model.name: missing or not a string")
+    K = parameter_name(model)
     sets = model.get("set", {})
-    if isinstance(sets, dict) and K in sets:
-        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
     # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
     m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
     m0.pop("name")
@@ -740,32 +786,15 @@ def check_bound_max(c):
     b = exact(model, "damping", "model")
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
     try:
-        H0, H1, D = prove_affine(model["H"], T, params, K)
+        H0, H1, D = prove_affine(model["H"], T, parameters(model), K)
     except ZeroDivisionError:
         raise Malformed("model.H: division by zero")
-    status = claim.get("status")
-    if status not in ("exact", "certified"):
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    infinite = claim.get("infinite", False)
-    if not isinstance(infinite, bool):
-        raise Malformed("claim.infinite: not true/false")
-    if infinite:
-        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
-            raise Malformed("claim.infinite: true beside a finite value")
-    else:
-        if status == "exact":
-            lo = hi = exact(claim, "value", "claim")
-        else:
-            lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo < 0:
-            return False, "claim: lo < 0 (K_max >= 0 by its definition)"
-        if lo > hi:
-            return False, "claim: lo > hi"
-        for key in ("printed_lo", "printed_hi", "printed"):
-            if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-                return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, infinite, refuted = claim_range(claim, True)
+    if refuted:
+        return False, refuted
+    if not infinite and lo < 0:
+        return False, "claim: lo < 0 (K_max >= 0 by its definition)"
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
         return False, "evidence.domain_c_lo = %s is not <= cos(pi/%d)" % (short(c_lo), q)
@@ -846,26 +875,14 @@ def check_passivity_level(c):
     """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
     level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c",), "evidence")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
     kind = model.get("kind")
     if kind not in ("isp", "osp"):
         raise Malformed("model.kind: missing or neither \"isp\" nor \"osp\"")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    try:
-        G = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    G, T = model_h(model)
     if not G.num:
         raise Malformed("model.H: G = 0")
     if len(G.num) > len(G.den):
@@ -875,18 +892,9 @@ def check_passivity_level(c):
     ok, why = schur_cohn(G.den)
     if not ok:
         raise Malformed("model.H: G is not Schur stable (%s)" % why)
-    status = claim.get("status")
-    if status == "exact":
-        lo = hi = exact(claim, "value", "claim")
-    elif status == "certified":
-        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo > hi:
-            return False, "claim: lo > hi"
-    else:
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    for key in ("printed_lo", "printed_hi", "printed"):
-        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
     osp = kind == "osp"
     E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
     one = Fraction(1)
@@ -999,42 +1007,21 @@ def schur_cohn(p):
     return True, "every Schur-Cohn step passes"
 
 
-def check_stability(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
-    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
-    only(claim, ("quantity", "status", "stable"), "claim")
-    only(evidence, ("charpoly",), "evidence")
+def loop_device(model):
+    """(T, n, params, k, Nd) of a one-DOF loop's model as written (model.H is read by the caller):
+    P_eff = P/(1 + s Zop P) = N/s^k (every pole at s = 0, else not modelled here: malformed) and its
+    zero-order hold Nd/(z-1)^k (sampled_device)."""
     for key in ("plant", "H"):
         if not isinstance(model.get(key), str):
             raise Malformed("model.%s: missing or not a string" % key)
     if "operator" in model and not isinstance(model["operator"], str):
         raise Malformed("model.operator: not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool) or n < 0 or n > 100000:
-        raise Malformed("model.delay: missing, not an integer or outside [0, 100000]")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
-    if claim.get("status") not in ("exact", "certified"):
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    if not isinstance(claim.get("stable"), bool):
-        raise Malformed("claim.stable: missing or not true/false")
-    given = evidence.get("charpoly")
-    if not isinstance(given, list) or not given:
-        raise Malformed("evidence.charpoly: missing or not a non-empty list")
-    given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
-    # the loop as written: P_eff = P/(1 + s Zop P) = N/s^k, c = z^n L (z-1)^k + A Nd
+    T, n, params = period(model), delay_of(model), parameters(model)
     try:
         dev = parse_h(model["plant"], T, params, 's', 'model.plant')
         if "operator" in model:
             one = RF([Fraction(1)]) + RF([Fraction(0), Fraction(1)]) * parse_h(model["operator"], T, params, 's', 'model.operator') * dev
             dev = dev / one
-        H = parse_h(model["H"], T, params, 'z', 'model.H')
     except ZeroDivisionError:
         raise Malformed("model: division by zero")
     if not dev.num:
@@ -1044,13 +1031,38 @@ def check_stability(c):
         raise Malformed("model.plant: the device is not strictly proper")
     if any(x != 0 for x in dev.den[:k]):
         raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole at s = 0 only")
+    return T, n, params, k, sampled_device([x / dev.den[-1] for x in dev.num], k, T)
+
+
+def loop_poly(n, k, Nd, A, L):
+    """c = z^n L (z-1)^k + A Nd: the characteristic polynomial with the wall H = A/L."""
+    return padd(pmul([Fraction(0)] * n + L, ppow([Fraction(-1), Fraction(1)], k)), pmul(A, Nd))
+
+
+def check_stability(c):
+    model, claim, evidence = parts(c)
+    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
+    only(claim, ("quantity", "status", "stable"), "claim")
+    only(evidence, ("charpoly",), "evidence")
+    T, n, params, k, Nd = loop_device(model)
+    if claim.get("status") not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    if not isinstance(claim.get("stable"), bool):
+        raise Malformed("claim.stable: missing or not true/false")
+    given = evidence.get("charpoly")
+    if not isinstance(given, list) or not given:
+        raise Malformed("evidence.charpoly: missing or not a non-empty list")
+    given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
+    try:
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
     if len(H.num) > len(H.den) + n:
         raise Malformed("model.H: z^-n H(z) is not causal")
     degree = len(H.den) - 1 + n + k
     if degree > MAX_STABILITY_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d" % (degree, MAX_STABILITY_DEGREE))
-    Nd = sampled_device([x / dev.den[-1] for x in dev.num], k, T)
-    cpoly = padd(pmul([Fraction(0)] * n + H.den, ppow([Fraction(-1), Fraction(1)], k)), pmul(H.num, Nd))
+    cpoly = loop_poly(n, k, Nd, H.num, H.den)
     if len(given) != len(cpoly):
         return False, "evidence.charpoly has degree %d, the loop as written %d" % (len(given) - 1, len(cpoly) - 1)
     ratio = given[-1] / cpoly[-1]
@@ -1157,25 +1169,13 @@ def cauchy_bound(polys):
 
 
 def check_wedge(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim = obj_field(c, "model"), obj_field(c, "claim")
-    only(obj_field(c, "evidence"), (), "evidence")
+    model, claim, evidence = parts(c)
+    only(evidence, (), "evidence")
     only(model, ("H", "set", "T"), "model")
     only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"), "claim")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: missing or not \"exact\"")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    try:
-        H = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    H, T = model_h(model)
     if len(H.num) > len(H.den):
         raise Malformed("model.H: not causal (deg num > deg den)")
     N, D = H.num, H.den
