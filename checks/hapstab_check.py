@@ -43,13 +43,24 @@ stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force =
        polynomial c = z^n L (z-1)^k + A Nd (H = A/L); evidence.charpoly must be a multiple of it;
        the verdict by the Schur-Cohn recursion in exact fractions (schur_cohn).
 
+stability-max  K_max = sup{K0 > 0 : the loop above stable for every K in (0, K0)}, H = H0 + K H1
+       (prove_affine): the family c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1
+       (L = lcm(L0, L1), deg c1 < deg c0 = d). D(K) = Res_{d,d}(c, c*), c* = z^d c(1/z), vanishes
+       iff c has a pair of roots b, 1/b -- every root on the circle is one -- so on an interval
+       without a root of D the loop is stable at every K or at none. Stable at stable_at in (0, lo)
+       and D root-free on (0, lo): K_max >= lo; the loop at hi NOT stable: K_max <= hi; NOT stable
+       at unstable_at = e and D root-free on (0, e] (or D = 0): K_max = 0; +inf: stable_at and D
+       root-free on (0, inf). D by Sylvester determinants (Bareiss, integers) at K = -d .. d and
+       Lagrange interpolation; its roots by Sturm sequences (positive_roots).
+
 wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Tsypkin's (21)
        Re H + 1 > 0 on theta in [0, pi], and the assumptions H stable, (1+H)^-1 stable, H(1) >= 0.
        Route: u = tan^2(theta/2) in [0, inf) (wedge_polys): Re H = Gr/F, Im H cot(theta/2) = Jt/F,
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree
+Size limit: stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+(its 81 Sylvester determinants of order 80 take ~12 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
 it exit 3.
@@ -57,7 +68,7 @@ it exit 3.
 import json
 import sys
 from fractions import Fraction
-from math import comb
+from math import comb, gcd
 
 MAX_DEGREE = 64
 if hasattr(sys, "set_int_max_str_digits"):
@@ -1076,6 +1087,168 @@ def check_stability(c):
     return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
 
 
+# ---------------------------------------------------------------- stability-max
+MAX_STABILITY_MAX_DEGREE = 40
+
+
+def det_int(M):
+    """The determinant of a square integer matrix (Bareiss' fraction-free elimination: every
+    division exact)."""
+    M = [list(r) for r in M]
+    n, sign, prev = len(M), 1, 1
+    for i in range(n - 1):
+        piv = next((r for r in range(i, n) if M[r][i] != 0), None)
+        if piv is None:
+            return 0
+        if piv != i:
+            M[i], M[piv] = M[piv], M[i]
+            sign = -sign
+        for r in range(i + 1, n):
+            for j in range(i + 1, n):
+                M[r][j] = (M[r][j] * M[i][i] - M[r][i] * M[i][j]) // prev
+        prev = M[i][i]
+    return sign * M[n - 1][n - 1]
+
+
+def reciprocal_resultant(c):
+    """Res_{d,d}(c, c*), c* = z^d c(1/z), c of exact degree d: the Sylvester determinant of order 2d
+    (d rows of c, d rows of c*, coefficients descending) = lc(c)^d prod_{c(a)=0} c*(a); computed on
+    L c with integer coefficients (L the common denominator), divided by L^(2d)."""
+    d = len(c) - 1
+    L = 1
+    for x in c:
+        L = L * x.denominator // gcd(L, x.denominator)
+    ci = [int(x * L) for x in c]
+    desc = ci[::-1]  # c*'s descending coefficients are c's ascending ones
+    rows = [[0] * i + desc + [0] * (d - 1 - i) for i in range(d)]
+    rows += [[0] * i + ci + [0] * (d - 1 - i) for i in range(d)]
+    return Fraction(det_int(rows), L ** (2 * d))
+
+
+def resultant_in_K(c0, c1):
+    """D(K) = Res_{d,d}(c0 + K c1, its reciprocal), of degree <= 2d in K (every Sylvester entry is
+    affine in K): Lagrange interpolation of its values at K = -d .. d."""
+    d = len(c0) - 1
+    xs = [Fraction(i) for i in range(-d, d + 1)]
+    D = []
+    for xi in xs:
+        v = reciprocal_resultant(padd(c0, pscale(c1, xi)))
+        if v == 0:
+            continue
+        basis, den = [Fraction(1)], Fraction(1)
+        for xj in xs:
+            if xj != xi:
+                basis = pmul(basis, [-xj, Fraction(1)])
+                den *= xi - xj
+        D = padd(D, pscale(basis, v / den))
+    return D
+
+
+def positive_roots(p, b, closed):
+    """The number of distinct roots of p != 0 in (0, b), or (0, b] when closed; b None: (0, inf).
+    Sturm's theorem on the square-free part, its roots at 0 and b divided out."""
+    q = sqfree(p)
+    while len(q) > 1 and q[0] == 0:
+        q = q[1:]  # divided by K: the root at 0
+    count = 0
+    if b is not None and len(q) > 1 and peval(q, b) == 0:
+        count = 1 if closed else 0
+        q = pdivmod(q, [-b, Fraction(1)])[0]
+    if len(q) < 2:
+        return count
+    seq = sturm_seq(q)
+    if b is None:
+        signs = [x[-1] for x in seq if x]
+        at_b = sum(1 for u, v in zip(signs, signs[1:]) if (u > 0) != (v > 0))
+    else:
+        at_b = variations(seq, b)
+    return count + variations(seq, Fraction(0)) - at_b
+
+
+def stability_family(model):
+    """(K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1): H = H0 + K H1 proven affine; with L = lcm of
+    H0's and H1's denominators, c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1."""
+    only(model, ("plant", "H", "operator", "set", "name", "T", "delay"), "model")
+    K = parameter_name(model)
+    T, n, params, k, Nd = loop_device(model)
+    try:
+        H0, H1, Dbound = prove_affine(model["H"], T, params, K)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    for name, H in (("H0", H0), ("H1", H1)):
+        if len(H.num) > len(H.den) + n:
+            raise Malformed("model.H: z^-n %s(z) is not causal" % name)
+    L = pmul(H0.den, pdivmod(H1.den, pgcd(H0.den, H1.den))[0])
+    if len(L) - 1 + n + k > MAX_STABILITY_MAX_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d for stability-max" % (
+            len(L) - 1 + n + k, MAX_STABILITY_MAX_DEGREE))
+    c0 = loop_poly(n, k, Nd, pmul(H0.num, pdivmod(L, H0.den)[0]), L)
+    c1 = pmul(pmul(H1.num, pdivmod(L, H1.den)[0]), Nd)
+    if len(c1) >= len(c0):
+        raise Malformed("model: c1 has degree >= that of c0 (the leading coefficient would move with %s)" % K)
+    return K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1
+
+
+def check_stability_max(c):
+    """K_max = sup{K0 > 0 : stable on (0, K0)} for the one-DOF loop with H = H0 + K H1: on an interval
+    of K where D(K) = Res_z(c, c*) has no root, c(.; K) is stable at every K or at none (a root
+    leaves the disc through the circle, where c and c* share it). K_max >= lo > 0: stable at
+    stable_at in (0, lo), D root-free on (0, lo); K_max <= hi > 0: the loop at hi NOT stable;
+    K_max = 0: NOT stable at unstable_at = e > 0 and D root-free on (0, e] (or D = 0); +inf: stable
+    at stable_at > 0, D root-free on (0, inf)."""
+    model, claim, evidence = parts(c)
+    only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("stable_at", "unstable_at"), "evidence")
+    K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1 = stability_family(model)
+    status, lo, hi, infinite, refuted = claim_range(claim, True)
+    if refuted:
+        return False, refuted
+    if not infinite and lo < 0:
+        return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+    zero = not infinite and hi == 0
+    for key, wanted in (("stable_at", infinite or lo > 0), ("unstable_at", zero)):
+        if key in evidence and not wanted:
+            raise Malformed("evidence.%s: not read for this claim" % key)
+    D = resultant_in_K(c0, c1)
+    shown = []
+    if infinite or lo > 0:
+        K0 = exact(evidence, "stable_at", "evidence")
+        if K0 <= 0 or (not infinite and K0 >= lo):
+            return False, "evidence.stable_at = %s is not in (0, %s)" % (short(K0), "inf" if infinite else short(lo))
+        ok, why = schur_cohn(padd(c0, pscale(c1, K0)))
+        if not ok:
+            return False, "%s_max >= lo fails: NOT stable at %s = %s: %s" % (K, K, short(K0), why)
+        if not D:
+            return False, "%s_max >= lo not shown: D = Res_z(c, c*) vanishes for every %s" % (K, K)
+        m = positive_roots(D, None if infinite else lo, False)
+        if m:
+            return False, "%s_max >= lo not shown: D(%s) = Res_z(c, c*) has %d root(s) in (0, %s)" % (
+                K, K, m, "inf" if infinite else "%.12g" % float(lo))
+        shown.append("stable at %s = %s, D root-free on (0, %s)" % (K, short(K0), "inf" if infinite else "lo"))
+    if infinite:
+        return True, "%s_max = +inf (%s; degree %d in z)" % (K, shown[0], len(c0) - 1)
+    if not zero:
+        Hh = H0 + RF([hi]) * H1
+        ok, why = schur_cohn(loop_poly(n, k, Nd, Hh.num, Hh.den))
+        if ok:
+            return False, "%s_max <= %.12g not shown: the loop at %s = hi is stable (%s)" % (K, float(hi), K, why)
+        shown.append("NOT stable at %s = hi" % K)
+    else:
+        e = exact(evidence, "unstable_at", "evidence")
+        if e <= 0:
+            return False, "evidence.unstable_at = %s is not > 0" % short(e)
+        ok, why = schur_cohn(padd(c0, pscale(c1, e)))
+        if ok:
+            return False, "%s_max = 0 not shown: c(z; %s = %s) is stable" % (K, K, short(e))
+        if D:
+            m = positive_roots(D, e, True)
+            if m:
+                return False, "%s_max = 0 not shown: D(%s) = Res_z(c, c*) has %d root(s) in (0, %s]" % (K, K, m, short(e))
+        shown.append("NOT stable at %s = %s, %s" % (K, short(e), "D root-free on (0, e]" if D else "D = 0 identically"))
+    return True, "%s_max %s (%s; degree %d in z)" % (
+        K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), "; ".join(shown), len(c0) - 1)
+
+
 # ---------------------------------------------------------------- wedge
 def sqfree(p):
     return pdivmod(p, pgcd(p, pderiv(p)))[0] if len(p) > 2 else p
@@ -1234,10 +1407,12 @@ def check(c):
             ok, why = check_r(c)
         elif kind == "stability":
             ok, why = check_stability(c)
+        elif kind == "stability-max":
+            ok, why = check_stability_max(c)
         elif kind == "wedge":
             ok, why = check_wedge(c)
         else:
-            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)" % (kind,))
+            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, stability-max, wedge)" % (kind,))
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)
