@@ -168,6 +168,28 @@ def with_field(cert, path, value):
     return c
 
 
+SET_MOVES = (("x 1.001", lambda x: x * Fraction(1001, 1000)), ("+ 1", lambda x: x + 1), ("sign flipped", lambda x: -x))
+
+
+def model_edits(m, rng, moves=SET_MOVES, fields=("H",)):
+    """Model edits the kinds share: each --set value moved by each of `moves` (name, f), and in each
+    expression of `fields` one '+' made '-' and one '-' made '+' (chosen at random): (name, model)."""
+    edits = []
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, f in moves:
+            y = f(x)
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    for field in fields:
+        h = m[field]
+        for a_, b_ in (("+", "-"), ("-", "+")):
+            if a_ in h:
+                j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+                edits.append(("%s: a '%s' made '%s'" % (field, a_, b_), dict(m, **{field: h[:j] + b_ + h[j + 1:]})))
+    return edits
+
+
 def model_truth(cert, new_model, hapstab, cache):
     """The expectation for `cert` with its model replaced by new_model."""
     enc = certified_enclosure(hapstab, new_model, cache)
@@ -448,16 +470,8 @@ def max_mutants(cert, rng, hapstab, cache):
     edits = [("damping x 1.001", dict(m, damping=frac(b * Fraction(1001, 1000)))), ("damping + 1", dict(m, damping=frac(b + 1))),
              ("damping halved", dict(m, damping=frac(b / 2))), ("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2))),
              ("delay + 1", dict(m, delay=m["delay"] + 1)), ("eta + 1/10", dict(m, eta=frac(Fraction(m["eta"]) + Fraction(1, 10))))]
-    for k, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    edits += model_edits(m, rng)
     h = m["H"]
-    for a_, b_ in (("+", "-"), ("-", "+")):
-        if a_ in h:
-            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
-            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
     for name, nm in edits:
         truth = max_truth(hapstab, nm, cache)
         if truth is None:
@@ -549,17 +563,9 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
             out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
     out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"))
     # the model edited: hapstab's own certificate of the edited model decides
-    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))]
-    for k, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1/10", x + Fraction(1, 10)), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    moves = (("x 1.001", lambda x: x * Fraction(1001, 1000)), ("+ 1/10", lambda x: x + Fraction(1, 10)), ("sign flipped", lambda x: -x))
+    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))] + model_edits(m, rng, moves)
     h = m["H"]
-    for a_, b_ in (("+", "-"), ("-", "+")):
-        if a_ in h:
-            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
-            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
     for name, nm in edits:
         other = level_produce(hapstab, nm, cache, tmp, 30)
         if isinstance(other, dict):
@@ -667,6 +673,18 @@ def wrong_loop(cert, coeffs, name):
     return ("wrong loop: " + name, c, "refute")
 
 
+def loop_edits(m, rng):
+    """The edits of a one-DOF loop's model (stability, stability-max): --set values, T halved, the
+    delay +- 1, a sign in H or the plant, the operator removed."""
+    edits = model_edits(m, rng, fields=("H", "plant"))
+    edits += [("T halved", dict(m, T=frac(Fraction(m["T"]) / 2))), ("delay + 1", dict(m, delay=m["delay"] + 1))]
+    if m["delay"] > 0:
+        edits.append(("delay - 1", dict(m, delay=m["delay"] - 1)))
+    if "operator" in m:
+        edits.append(("operator removed", {k: v for k, v in m.items() if k != "operator"}))
+    return edits
+
+
 def stability_mutants(cert, rng, hapstab, cache, tmp):
     out = [("unmutated", cert, "accept")]
     cp = [Fraction(x) for x in cert["evidence"]["charpoly"]]
@@ -693,29 +711,7 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
         if isinstance(other, dict):
             out.append(wrong_loop(cert, [Fraction(x) for x in other["evidence"]["charpoly"]], name))
     # the model edited: expectation from the producer's certificate of the edited model
-    edits = []
-    for key, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (key, name), ["set", key], frac(y)))
-    edits += [("T halved", ["T"], frac(Fraction(m["T"]) / 2)), ("delay + 1", ["delay"], m["delay"] + 1)]
-    if m["delay"] > 0:
-        edits.append(("delay - 1", ["delay"], m["delay"] - 1))
-    for field in ("H", "plant"):
-        h = m[field]
-        for a, b in (("+", "-"), ("-", "+")):
-            if a in h:
-                j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
-                edits.append(("%s: a '%s' made '%s'" % (field, a, b), [field], h[:j] + b + h[j + 1:]))
-    if "operator" in m:
-        edits.append(("operator removed", None, None))
-    for name, path, value in edits:
-        nm = copy.deepcopy(m)
-        if path is None:
-            del nm["operator"]
-        else:
-            nm[path[0]] = value if len(path) == 1 else dict(nm[path[0]], **{path[1]: value})
+    for name, nm in loop_edits(m, rng):
         other = stability_produce(hapstab, nm, cache, tmp)
         if isinstance(other, dict):
             same = proportional(other["evidence"]["charpoly"], cp)
@@ -733,13 +729,19 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("charpoly entry a decimal", with_field(cert, ["evidence", "charpoly"], ["0.5"] + cert["evidence"]["charpoly"][1:]), "malformed"))
     out.append(("charpoly empty", with_field(cert, ["evidence", "charpoly"], []), "malformed"))
-    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
-    out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
-    out.append(("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"))
-    out.append(("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"))
-    out.append(("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"))
-    out.append(("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed"))
-    return out
+    return out + loop_malformed(cert)
+
+
+def loop_malformed(cert):
+    """Malformed models of a one-DOF loop (stability, stability-max): T negated, a negative delay, a
+    plant that does not parse, has a pole off s = 0, is in z or is not strictly proper."""
+    m = cert["model"]
+    return [("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"),
+            ("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"),
+            ("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"),
+            ("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"),
+            ("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"),
+            ("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed")]
 
 
 WEDGE_TEMPLATES = [  # H(z) of paper 002's examples and of virtual walls
@@ -787,18 +789,9 @@ def wedge_mutants(cert, rng, hapstab, cache, tmp):
     for key in WEDGE_CLAIMS:
         out.append(("claim.%s flipped" % key, with_field(cert, ["claim", key], not cert["claim"][key]), "refute"))
     m = cert["model"]
-    edits = []
-    for key, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
-            if y != x:
-                edits.append(("set %s %s" % (key, name), dict(m, set=dict(m["set"], **{key: frac(y)}))))
+    edits = model_edits(m, rng, SET_MOVES + (("x 2", lambda x: 2 * x),))
     edits.append(("T x 10", dict(m, T=frac(Fraction(m["T"]) * 10))))
     h = m["H"]
-    for a, b in (("+", "-"), ("-", "+")):
-        if a in h:
-            j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
-            edits.append(("H: a '%s' made '%s'" % (a, b), dict(m, H=h[:j] + b + h[j + 1:])))
     for name, nm in edits:
         other = wedge_produce(hapstab, nm, cache, tmp)
         if isinstance(other, dict):
@@ -898,6 +891,7 @@ def main():
     for kind, cert in certs:
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+
         elif kind == "bound-max":
             ms = max_mutants(cert, rng, a.hapstab, cache)
         elif kind == "passivity-level":
