@@ -12,6 +12,7 @@
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
+#include "hapstab/check/stability_max_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -163,8 +164,9 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
+  if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

@@ -7,6 +7,7 @@
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
 //   stability  the one-DOF sampled loop, Schur-Cohn       check/stability_check.hpp
+//   stability-max  its largest stable gain (stability --max)  check/stability_max_check.hpp
 //   wedge   paper 002 (25), (21) and its assumptions      check/wedge_check.hpp
 // Outcomes: Verdict{verified, what was shown} or Verdict{refuted, what failed}; a certificate that
 // is not well formed (a missing or malformed field, an unknown kind) is an InputError naming the
