@@ -1146,7 +1146,8 @@ def resultant_in_K(c0, c1):
 
 def positive_roots(p, b, closed):
     """The number of distinct roots of p != 0 in (0, b), or (0, b] when closed; b None: (0, inf).
-    Sturm's theorem on the square-free part, its roots at 0 and b divided out."""
+    The square-free part, its roots at 0 and b divided out; Descartes' rule of signs when it shows
+    none, else Sturm's theorem."""
     q = sqfree(p)
     while len(q) > 1 and q[0] == 0:
         q = q[1:]  # divided by K: the root at 0
@@ -1155,6 +1156,13 @@ def positive_roots(p, b, closed):
         count = 1 if closed else 0
         q = pdivmod(q, [-b, Fraction(1)])[0]
     if len(q) < 2:
+        return count
+    # Descartes first (cheap): no sign variation in the coefficients of q(x) (roots in (0, inf)) or of
+    # (1 + y)^n q(b/(1 + y)) (roots in (0, b), as y > 0) proves there is none
+    n = len(q) - 1
+    R = q if b is None else [sum(q[i] * b ** i * comb(n - i, j) for i in range(n - j + 1)) for j in range(n + 1)]
+    signs = [x > 0 for x in R if x != 0]
+    if all(u == v for u, v in zip(signs, signs[1:])):
         return count
     seq = sturm_seq(q)
     if b is None:
