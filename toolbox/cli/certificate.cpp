@@ -4,11 +4,13 @@
 #include <fstream>
 
 #include "cli/command.hpp"
+#include "hapstab/check/certificate.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interval.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
+#include "hapstab/stability/max_evidence.hpp"
 
 namespace hapstab::cli {
 
@@ -345,6 +347,80 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
                 {"stable", r.verdict.holds()},
                 {"status", to_string(r.verdict.status)}};
   j["evidence"] = evidence;
+  return j;
+}
+
+namespace {
+
+// A short rational in (0, x), x > 0: the first continued-fraction convergent of x/2 there.
+rational short_below(const rational& x) {
+  const auto c = first_convergent(x / 2, [&](const rational& y) { return y > 0 && y < x; });
+  return c ? *c : rational(x / 2);
+}
+
+// sup = 0: a K = e > 0 below every positive root of D(K) = Res_z(c, c*) (then the family keeps one
+// verdict on (0, e], NOT stable when the producer's answer holds); 1 when D has none or D = 0.
+rational unstable_point(const stability::Loop& loop) {
+  const auto family = stability::exact_family(loop);
+  if (!family) throw InputError("--certificate: the loop's exact family c0 + K c1 could not be formed");
+  QPoly D = stability::reciprocal_resultant(family->first, family->second);
+  if (D.is_zero()) return rational(1);
+  while (D.coeff(0) == 0) D = divmod(D, QPoly{rational(0), rational(1)}).first;  // the roots at K = 0
+  if (D.degree() < 1) return rational(1);
+  const auto roots = isolate_real_roots(D, rational(0), cauchy_bound(D));
+  if (roots.empty()) return rational(1);
+  RootInterval r = roots.front();
+  while (r.lo <= 0) r = refine_root(D, r, rational((r.hi - r.lo) / 4));  // the root is > 0 (D(0) != 0)
+  return short_below(r.lo);
+}
+
+}  // namespace
+
+nlohmann::json stability_max_certificate(const StabilityText& text, const std::string& K, const stability::Loop& loop,
+                                         const stability::MaxGain& m, int digits) {
+  const auto family = stability::exact_family(loop);
+  if (!family)
+    throw InputError("--certificate: a certificate of stability --max with a device pole off s = 0 (the sampled device's "
+                     "e^{pT} are transcendental) is not implemented yet; devices with every pole at s = 0 have one");
+  if (family->first.degree() > 150)
+    throw InputError("--certificate: the characteristic polynomial has degree " + std::to_string(family->first.degree()) +
+                     ", beyond the checkers' limit of 150 (D(" + K + ") = Res_z(c, c*) has degree up to twice that)");
+  if (m.outcome == Outcome::undecided || (m.status != Status::exact && m.status != Status::certified))
+    throw InputError("--certificate: sup " + K + " is not decided here: there is no claim to certify");
+  nlohmann::json j = header("stability-max");
+  j["model"] = loop_model_json(text, loop.T);
+  j["model"]["name"] = K;
+  nlohmann::json claim{{"quantity", K + "_max = sup{" + K + "0 > 0 : the loop is stable for every " + K + " in (0, " + K +
+                                        "0)} (0 when none), H = H0 + " + K + " H1; the loop of `stability` (device P(s), "
+                                        "zero-order hold, force = -z^-n H(z) x(kT))"},
+                       {"status", to_string(m.status)}};
+  nlohmann::json evidence = nlohmann::json::object();
+  if (m.outcome == Outcome::fails) {  // unstable for every small K: K_max = 0
+    claim["status"] = "exact";
+    claim["value"] = "0";
+    evidence["unstable_at"] = unstable_point(loop).str();
+  } else if (m.infinite) {
+    claim["infinite"] = true;
+    evidence["stable_at"] = "1";
+  } else if (m.exact) {
+    claim["status"] = "exact";
+    claim["value"] = m.exact->str();
+    evidence["stable_at"] = short_below(*m.exact).str();
+  } else {  // the enclosure as printed: digits + 3, rounded outward (cmd_stability.cpp)
+    const nlohmann::json e = enclosure_json(m.enclosure, digits + 3);
+    evidence["stable_at"] = short_below(printed_enclosure(claim, e[0].get<std::string>(), e[1].get<std::string>()).lo).str();
+  }
+  j["claim"] = claim;
+  j["evidence"] = evidence;
+  // the printed claim proven, or no certificate (never a weaker claim written silently)
+  check::Verdict v;
+  try {
+    v = check::check_certificate(j);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
+  }
+  if (!v.verified)
+    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
   return j;
 }
 
