@@ -1146,13 +1146,13 @@ def resultant_in_K(c0, c1):
 
 def positive_roots(p, b, closed):
     """The number of distinct roots of p != 0 in (0, b), or (0, b] when closed; b None: (0, inf).
-    The square-free part, its roots at 0 and b divided out; Descartes' rule of signs when it shows
-    none, else Sturm's theorem."""
-    q = sqfree(p)
+    Its roots at 0 and b divided out; Descartes' rule of signs when it shows none, else Sturm's
+    theorem on the square-free part."""
+    q = trim(p)
     while len(q) > 1 and q[0] == 0:
         q = q[1:]  # divided by K: the root at 0
     count = 0
-    if b is not None and len(q) > 1 and peval(q, b) == 0:
+    while b is not None and len(q) > 1 and peval(q, b) == 0:
         count = 1 if closed else 0
         q = pdivmod(q, [-b, Fraction(1)])[0]
     if len(q) < 2:
@@ -1164,6 +1164,7 @@ def positive_roots(p, b, closed):
     signs = [x > 0 for x in R if x != 0]
     if all(u == v for u, v in zip(signs, signs[1:])):
         return count
+    q = sqfree(q)  # Sturm counts the distinct roots of a square-free polynomial
     seq = sturm_seq(q)
     if b is None:
         signs = [x[-1] for x in seq if x]
