@@ -1405,23 +1405,12 @@ def check(c):
             raise Malformed("certificate: missing or not \"hapstab\"")
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
+        checkers = {"bound": check_bound, "bound-max": check_bound_max, "passivity-level": check_passivity_level,
+                    "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")
-        if kind == "bound":
-            ok, why = check_bound(c)
-        elif kind == "bound-max":
-            ok, why = check_bound_max(c)
-        elif kind == "passivity-level":
-            ok, why = check_passivity_level(c)
-        elif kind == "r":
-            ok, why = check_r(c)
-        elif kind == "stability":
-            ok, why = check_stability(c)
-        elif kind == "stability-max":
-            ok, why = check_stability_max(c)
-        elif kind == "wedge":
-            ok, why = check_wedge(c)
-        else:
-            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, stability-max, wedge)" % (kind,))
+        if not isinstance(kind, str) or kind not in checkers:
+            raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))
+        ok, why = checkers[kind](c)
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

@@ -388,22 +388,29 @@ def max_args(m, digits):
     return a + ["--max", m["name"], "--damping", m["damping"]]
 
 
-def max_truth(hapstab, m, cache):
-    """hapstab's K_max of model m at 40 digits: (lo, hi), "inf", or None (no answer)."""
-    key = "max" + json.dumps(m, sort_keys=True)
+def sup_truth(hapstab, args, key, cache):
+    """hapstab's supremum (bound --max, stability --max) from `args` + --json, asked at 40 digits:
+    (lo, hi) -- the exact value twice when it is one --, "inf", or None (no answer)."""
     if key not in cache:
-        rc, out, _ = run(hapstab, max_args(m, 40) + ["--json"])
+        rc, out, _ = run(hapstab, args + ["--json"])
         res = None
         if rc in (0, 1):
             j = json.loads(out)
             if j.get("max") == "inf":
                 res = "inf"
+            elif j.get("max") == "0" and j.get("status") in ("exact", "certified"):
+                res = (Fraction(0), Fraction(0))
+            elif j.get("exact"):
+                res = (Fraction(j["exact"]), Fraction(j["exact"]))
             elif j.get("status") in ("exact", "certified") and j.get("enclosure"):
                 res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
-            elif j.get("max") == "0" and j.get("status") == "exact":
-                res = (Fraction(0), Fraction(0))
         cache[key] = res
     return cache[key]
+
+
+def max_truth(hapstab, m, cache):
+    """hapstab's K_max of the bound-max model m at 40 digits."""
+    return sup_truth(hapstab, max_args(m, 40), "max" + json.dumps(m, sort_keys=True), cache)
 
 
 def max_claim(cert):
@@ -788,23 +795,8 @@ def stability_max_produce(hapstab, m, cache, tmp, digits=20):
 
 
 def stability_max_truth(hapstab, m, cache):
-    """hapstab's K_max of model m at 40 digits: (lo, hi), "inf", or None (no answer)."""
-    key = "smax-truth" + json.dumps(m, sort_keys=True)
-    if key not in cache:
-        rc, out, _ = run(hapstab, stability_max_args(m, 40) + ["--json"])
-        res = None
-        if rc in (0, 1):
-            j = json.loads(out)
-            if j.get("max") == "inf":
-                res = "inf"
-            elif j.get("max") == "0" and j.get("status") in ("exact", "certified"):
-                res = (Fraction(0), Fraction(0))
-            elif j.get("exact"):
-                res = (Fraction(j["exact"]), Fraction(j["exact"]))
-            elif j.get("status") in ("exact", "certified") and j.get("enclosure"):
-                res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
-        cache[key] = res
-    return cache[key]
+    """hapstab's K_max of the stability-max model m at 40 digits."""
+    return sup_truth(hapstab, stability_max_args(m, 40), "smax-truth" + json.dumps(m, sort_keys=True), cache)
 
 
 def stability_max_mutants(cert, rng, hapstab, cache, tmp):
