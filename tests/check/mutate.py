@@ -965,24 +965,11 @@ def rand_r(rng):
 KINDS = ("bound", "r", "bound-max", "passivity-level", "stability", "stability-max", "wedge")
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--hapstab", required=True)
-    ap.add_argument("--models", type=int, default=300, help="bound models (and as many r cases / 4)")
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--quiet", action="store_true")
-    ap.add_argument("--kinds", default=",".join(KINDS), help="the kinds to produce, comma-separated (default: all)")
-    a = ap.parse_args()
-    kinds = set(a.kinds.split(","))
-    unknown = kinds - set(KINDS)
-    if unknown:
-        ap.error("--kinds: unknown %s (known: %s)" % (", ".join(sorted(unknown)), ", ".join(KINDS)))
-    rng = random.Random(a.seed)
-    cache = {}
-    tmp = tempfile.mkdtemp(prefix="hapstab-mutate-")
+def produce_certificates(a, kinds, rng, srng, tmp, cache, scache):
+    """The certificates of random models of each kind asked for, [(kind, certificate)], and the
+    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng)."""
     certs = []  # (kind, certificate)
     skipped = {}
-    t0 = time.time()
     for i in range(a.models if "bound" in kinds else 0):
         m = rand_frac_model(rng) if i % 2 else rand_model(rng)
         path = os.path.join(tmp, "b%d.json" % i)
@@ -1004,7 +991,6 @@ def main():
             continue
         with open(path) as f:
             certs.append(("r", json.load(f)))
-    scache = {}
     for i in range(max(a.models // 2, 2) if "bound-max" in kinds else 0):
         m = rand_max_model(rng)
         path = os.path.join(tmp, "m%d.json" % i)
@@ -1023,7 +1009,6 @@ def main():
             skipped["passivity-level: exit %s" % cert] = skipped.get("passivity-level: exit %s" % cert, 0) + 1
             continue
         certs.append(("passivity-level", cert))
-    srng = random.Random(a.seed * 1000 + 47)  # its own stream: the other kinds draw what they drew before it was added
     for i in range(max(a.models // 2, 2) if "stability-max" in kinds else 0):
         m = rand_stability_max(srng)
         cert = stability_max_produce(a.hapstab, m, scache, tmp, srng.choice([10, 20, 30]))
@@ -1044,6 +1029,57 @@ def main():
             skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
             continue
         certs.append(("wedge", cert))
+    return certs, skipped
+
+
+def print_branches(certs, mutants, cpp):
+    """The branches of the checkers the campaign reached (fractional delays, bound-max, stability-max)."""
+    frac_certs = [c for k, c in certs if k == "bound-frac"]
+    if frac_certs:  # the branches of a fractional delay that the campaign reached
+        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
+        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
+        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
+              "upper bound shown across the end (P U_{q-1}) %d" % (
+                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
+                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
+    max_certs = [c for k, c in certs if k == "bound-max"]
+    if max_certs:
+        cl = [max_claim(c) for c in max_certs]
+        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
+            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
+            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
+            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
+    smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]
+    if smax:
+        cl = [max_claim(c) for c, _ in smax]
+        print("  stability-max branches: K_max finite > 0 %d (exact %d), 0 %d (D = 0 identically %d), +inf %d; with a delay %d, "
+              "an operator %d" % (
+                  sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for (c, _), x in zip(smax, cl) if x != "inf" and x[1] > 0 and
+                                                                    c["claim"]["status"] == "exact"),
+                  sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for _, r in smax if "D = 0 identically" in r),
+                  sum(1 for x in cl if x == "inf"), sum(1 for c, _ in smax if c["model"]["delay"] > 0),
+                  sum(1 for c, _ in smax if "operator" in c["model"])))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--hapstab", required=True)
+    ap.add_argument("--models", type=int, default=300, help="bound models (and as many r cases / 4)")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--quiet", action="store_true")
+    ap.add_argument("--kinds", default=",".join(KINDS), help="the kinds to produce, comma-separated (default: all)")
+    a = ap.parse_args()
+    kinds = set(a.kinds.split(","))
+    unknown = kinds - set(KINDS)
+    if unknown:
+        ap.error("--kinds: unknown %s (known: %s)" % (", ".join(sorted(unknown)), ", ".join(KINDS)))
+    rng = random.Random(a.seed)
+    cache = {}
+    tmp = tempfile.mkdtemp(prefix="hapstab-mutate-")
+    scache = {}
+    srng = random.Random(a.seed * 1000 + 47)  # its own stream: the other kinds draw what they drew before it was added
+    t0 = time.time()
+    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache)
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
@@ -1113,31 +1149,7 @@ def main():
         sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e in ("agree", "same"))))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
-    frac_certs = [c for k, c in certs if k == "bound-frac"]
-    if frac_certs:  # the branches of a fractional delay that the campaign reached
-        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
-        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
-        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
-              "upper bound shown across the end (P U_{q-1}) %d" % (
-                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
-                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
-    max_certs = [c for k, c in certs if k == "bound-max"]
-    if max_certs:
-        cl = [max_claim(c) for c in max_certs]
-        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
-            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
-            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
-            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
-    smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]
-    if smax:
-        cl = [max_claim(c) for c, _ in smax]
-        print("  stability-max branches: K_max finite > 0 %d (exact %d), 0 %d (D = 0 identically %d), +inf %d; with a delay %d, "
-              "an operator %d" % (
-                  sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for (c, _), x in zip(smax, cl) if x != "inf" and x[1] > 0 and
-                                                                    c["claim"]["status"] == "exact"),
-                  sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for _, r in smax if "D = 0 identically" in r),
-                  sum(1 for x in cl if x == "inf"), sum(1 for c, _ in smax if c["model"]["delay"] > 0),
-                  sum(1 for c, _ in smax if "operator" in c["model"])))
+    print_branches(certs, mutants, cpp)
     print("false or malformed claims accepted: %d" % accepted_false)
     print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
     if failures:
