@@ -60,7 +60,7 @@ wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Ts
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
 Size limit: stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
-(its 81 Sylvester determinants of order 80 take ~12 s there); bound models of degree
+(its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
 it exit 3.
