@@ -45,13 +45,24 @@ stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force =
        polynomial c = z^n L (z-1)^k + A Nd (H = A/L); evidence.charpoly must be a multiple of it;
        the verdict by the Schur-Cohn recursion in exact fractions (schur_cohn).
 
+stability-max  K_max = sup{K0 > 0 : the loop above stable for every K in (0, K0)}, H = H0 + K H1
+       (prove_affine): the family c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1
+       (L = lcm(L0, L1), deg c1 < deg c0 = d). D(K) = Res_{d,d}(c, c*), c* = z^d c(1/z), vanishes
+       iff c has a pair of roots b, 1/b -- every root on the circle is one -- so on an interval
+       without a root of D the loop is stable at every K or at none. Stable at stable_at in (0, lo)
+       and D root-free on (0, lo): K_max >= lo; the loop at hi NOT stable: K_max <= hi; NOT stable
+       at unstable_at = e and D root-free on (0, e] (or D = 0): K_max = 0; +inf: stable_at and D
+       root-free on (0, inf). D by Sylvester determinants (Bareiss, integers) at K = -d .. d and
+       Lagrange interpolation; its roots by Sturm sequences (positive_roots).
+
 wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Tsypkin's (21)
        Re H + 1 > 0 on theta in [0, pi], and the assumptions H stable, (1+H)^-1 stable, H(1) >= 0.
        Route: u = tan^2(theta/2) in [0, inf) (wedge_polys): Re H = Gr/F, Im H cot(theta/2) = Jt/F,
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; bound models of degree
+Size limit: stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+(its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
 it exit 3.
@@ -60,7 +71,7 @@ import json
 import sys
 import time
 from fractions import Fraction
-from math import comb
+from math import comb, gcd
 
 MAX_DEGREE = 64
 if hasattr(sys, "set_int_max_str_digits"):
@@ -408,6 +419,41 @@ def only(obj, known, where):
             raise Malformed("%s.%s: a field this checker does not know (it would not be checked)" % (where, k))
 
 
+def period(model):
+    """model.T, the sample period, > 0."""
+    T = exact(model, "T", "model")
+    if T <= 0:
+        raise Malformed("model.T: must be > 0")
+    return T
+
+
+def parameters(model):
+    """model.set as {NAME: Fraction}."""
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    return {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
+
+
+def delay_of(model):
+    """model.delay, an integer n in [0, 100000]."""
+    n = model.get("delay")
+    if not isinstance(n, int) or isinstance(n, bool) or n < 0 or n > 100000:
+        raise Malformed("model.delay: missing, not an integer or outside [0, 100000]")
+    return n
+
+
+def model_h(model):
+    """(H, T): model.H parsed with the sample period model.T > 0 and the parameters model.set."""
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string")
+    T = period(model)
+    try:
+        return parse_h(model["H"], T, parameters(model)), T
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+
+
 def printed_number(v, what):
     if not isinstance(v, str):
         raise Malformed("%s: not a string" % what)
@@ -415,6 +461,38 @@ def printed_number(v, what):
         return Fraction(v.strip())
     except (ValueError, ZeroDivisionError):
         raise Malformed("%s: %r is not a number" % (what, v))
+
+
+def parts(c):
+    """(model, claim, evidence) of a certificate whose top-level fields are the known ones."""
+    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
+    return obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+
+
+def claim_range(claim, may_be_infinite=False):
+    """(status, lo, hi, infinite, refuted): "exact" with value, or "certified" with lo, hi, or (where
+    allowed) "infinite": true alone; the printed decimals must be the claimed numbers. Malformed when
+    malformed; refuted (a reason, else None) when false on its face."""
+    status = claim.get("status")
+    if status not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    infinite = claim.get("infinite", False) if may_be_infinite else False
+    if not isinstance(infinite, bool):
+        raise Malformed("claim.infinite: not true/false")
+    if infinite:
+        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
+            raise Malformed("claim.infinite: true beside a finite value")
+        return status, None, None, True, None
+    if status == "exact":
+        lo = hi = exact(claim, "value", "claim")
+    else:
+        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
+        if lo > hi:
+            return status, lo, hi, False, "claim: lo > hi"
+    for key in ("printed_lo", "printed_hi", "printed"):
+        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
+            return status, lo, hi, False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    return status, lo, hi, False, None
 
 
 # ---------------------------------------------------------------- P >= 0 on [a, b]
@@ -590,24 +668,14 @@ def short(x):
 
 
 def check_bound(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c", "domain_c_lo"), "evidence")
     H, T, eta, P, q = bound_model(model)
-    status = claim.get("status")
-    if status == "exact":
-        lo = hi = exact(claim, "value", "claim")
-    elif status == "certified":
-        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo > hi:
-            return False, "claim: lo > hi"
-    else:
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    for key in ("printed_lo", "printed_hi", "printed"):
-        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
     c0 = exact(evidence, "witness_c", "evidence")
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     E, F = objective_c(H, T, P, q)
@@ -623,16 +691,8 @@ def check_bound(c):
 
 def bound_model(model):
     """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q)."""
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool):
-        raise Malformed("model.delay: missing or not an integer")
-    if n < 0 or n > 100000:
-        raise Malformed("model.delay: outside [0, 100000]")
+    H, T = model_h(model)
+    n = delay_of(model)
     td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
     if td < 0:
         raise Malformed("model.frac_delay: must be >= 0")
@@ -642,14 +702,6 @@ def bound_model(model):
     tau = n + td / T
     if tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6:
         raise TooLarge("t_d/T has a numerator or denominator above 10^6")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
-    try:
-        H = parse_h(model["H"], T, params)
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
     return H, T, eta, tau.numerator, tau.denominator
 
 
@@ -720,21 +772,26 @@ def prove_affine(text, T, params, K):
     return H0, H1, D
 
 
+def parameter_name(model):
+    """model.name, the parameter maximised: a string, given no value in model.set."""
+    K = model.get("name")
+    if not isinstance(K, str) or not K:
+        raise Malformed("model.name: missing or not a string")
+    if isinstance(model.get("set", {}), dict) and K in model.get("set", {}):
+        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
+    return K
+
+
 def check_bound_max(c):
     """K_max = sup{K0 >= 0 : b*(K) < b on [0, K0)} for H = H0 + K H1 (proven affine), b* convex in
     K (a sup of affine functions): K_max >= lo > 0 if b*(0) <= b0 < b and b*(lo) <= b; K_max <= hi if
     b*(hi) >= b (a witness); K_max = +inf if b*(0) <= b0 < b and f1 <= 0 on the band."""
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
-    K = model.get("name")
-    if not isinstance(K, str) or not K:
-        raise Malformed("model.name: missing or not a string")
+    K = parameter_name(model)
     sets = model.get("set", {})
-    if isinstance(sets, dict) and K in sets:
-        raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
     # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
     m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
     m0.pop("name")
@@ -743,32 +800,15 @@ def check_bound_max(c):
     b = exact(model, "damping", "model")
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
     try:
-        H0, H1, D = prove_affine(model["H"], T, params, K)
+        H0, H1, D = prove_affine(model["H"], T, parameters(model), K)
     except ZeroDivisionError:
         raise Malformed("model.H: division by zero")
-    status = claim.get("status")
-    if status not in ("exact", "certified"):
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    infinite = claim.get("infinite", False)
-    if not isinstance(infinite, bool):
-        raise Malformed("claim.infinite: not true/false")
-    if infinite:
-        if any(k in claim for k in ("value", "lo", "hi", "printed", "printed_lo", "printed_hi")):
-            raise Malformed("claim.infinite: true beside a finite value")
-    else:
-        if status == "exact":
-            lo = hi = exact(claim, "value", "claim")
-        else:
-            lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo < 0:
-            return False, "claim: lo < 0 (K_max >= 0 by its definition)"
-        if lo > hi:
-            return False, "claim: lo > hi"
-        for key in ("printed_lo", "printed_hi", "printed"):
-            if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-                return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, infinite, refuted = claim_range(claim, True)
+    if refuted:
+        return False, refuted
+    if not infinite and lo < 0:
+        return False, "claim: lo < 0 (K_max >= 0 by its definition)"
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
         return False, "evidence.domain_c_lo = %s is not <= cos(pi/%d)" % (short(c_lo), q)
@@ -849,26 +889,14 @@ def check_passivity_level(c):
     """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
     level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
+    model, claim, evidence = parts(c)
     only(model, ("H", "set", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c",), "evidence")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
     kind = model.get("kind")
     if kind not in ("isp", "osp"):
         raise Malformed("model.kind: missing or neither \"isp\" nor \"osp\"")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    try:
-        G = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    G, T = model_h(model)
     if not G.num:
         raise Malformed("model.H: G = 0")
     if len(G.num) > len(G.den):
@@ -878,18 +906,9 @@ def check_passivity_level(c):
     ok, why = schur_cohn(G.den)
     if not ok:
         raise Malformed("model.H: G is not Schur stable (%s)" % why)
-    status = claim.get("status")
-    if status == "exact":
-        lo = hi = exact(claim, "value", "claim")
-    elif status == "certified":
-        lo, hi = exact(claim, "lo", "claim"), exact(claim, "hi", "claim")
-        if lo > hi:
-            return False, "claim: lo > hi"
-    else:
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    for key in ("printed_lo", "printed_hi", "printed"):
-        if key in claim and printed_number(claim[key], "claim." + key) != (hi if key == "printed_hi" else lo):
-            return False, "claim.%s = %s is not the claimed number" % (key, claim[key])
+    status, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
     osp = kind == "osp"
     E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
     one = Fraction(1)
@@ -1002,42 +1021,21 @@ def schur_cohn(p):
     return True, "every Schur-Cohn step passes"
 
 
-def check_stability(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim, evidence = obj_field(c, "model"), obj_field(c, "claim"), obj_field(c, "evidence")
-    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
-    only(claim, ("quantity", "status", "stable"), "claim")
-    only(evidence, ("charpoly",), "evidence")
+def loop_device(model):
+    """(T, n, params, k, Nd) of a one-DOF loop's model as written (model.H is read by the caller):
+    P_eff = P/(1 + s Zop P) = N/s^k (every pole at s = 0, else not modelled here: malformed) and its
+    zero-order hold Nd/(z-1)^k (sampled_device)."""
     for key in ("plant", "H"):
         if not isinstance(model.get(key), str):
             raise Malformed("model.%s: missing or not a string" % key)
     if "operator" in model and not isinstance(model["operator"], str):
         raise Malformed("model.operator: not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    n = model.get("delay")
-    if not isinstance(n, int) or isinstance(n, bool) or n < 0 or n > 100000:
-        raise Malformed("model.delay: missing, not an integer or outside [0, 100000]")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    params = {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
-    if claim.get("status") not in ("exact", "certified"):
-        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
-    if not isinstance(claim.get("stable"), bool):
-        raise Malformed("claim.stable: missing or not true/false")
-    given = evidence.get("charpoly")
-    if not isinstance(given, list) or not given:
-        raise Malformed("evidence.charpoly: missing or not a non-empty list")
-    given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
-    # the loop as written: P_eff = P/(1 + s Zop P) = N/s^k, c = z^n L (z-1)^k + A Nd
+    T, n, params = period(model), delay_of(model), parameters(model)
     try:
         dev = parse_h(model["plant"], T, params, 's', 'model.plant')
         if "operator" in model:
             one = RF([Fraction(1)]) + RF([Fraction(0), Fraction(1)]) * parse_h(model["operator"], T, params, 's', 'model.operator') * dev
             dev = dev / one
-        H = parse_h(model["H"], T, params, 'z', 'model.H')
     except ZeroDivisionError:
         raise Malformed("model: division by zero")
     if not dev.num:
@@ -1047,13 +1045,38 @@ def check_stability(c):
         raise Malformed("model.plant: the device is not strictly proper")
     if any(x != 0 for x in dev.den[:k]):
         raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole at s = 0 only")
+    return T, n, params, k, sampled_device([x / dev.den[-1] for x in dev.num], k, T)
+
+
+def loop_poly(n, k, Nd, A, L):
+    """c = z^n L (z-1)^k + A Nd: the characteristic polynomial with the wall H = A/L."""
+    return padd(pmul([Fraction(0)] * n + L, ppow([Fraction(-1), Fraction(1)], k)), pmul(A, Nd))
+
+
+def check_stability(c):
+    model, claim, evidence = parts(c)
+    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
+    only(claim, ("quantity", "status", "stable"), "claim")
+    only(evidence, ("charpoly",), "evidence")
+    T, n, params, k, Nd = loop_device(model)
+    if claim.get("status") not in ("exact", "certified"):
+        raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
+    if not isinstance(claim.get("stable"), bool):
+        raise Malformed("claim.stable: missing or not true/false")
+    given = evidence.get("charpoly")
+    if not isinstance(given, list) or not given:
+        raise Malformed("evidence.charpoly: missing or not a non-empty list")
+    given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
+    try:
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
     if len(H.num) > len(H.den) + n:
         raise Malformed("model.H: z^-n H(z) is not causal")
     degree = len(H.den) - 1 + n + k
     if degree > MAX_STABILITY_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d" % (degree, MAX_STABILITY_DEGREE))
-    Nd = sampled_device([x / dev.den[-1] for x in dev.num], k, T)
-    cpoly = padd(pmul([Fraction(0)] * n + H.den, ppow([Fraction(-1), Fraction(1)], k)), pmul(H.num, Nd))
+    cpoly = loop_poly(n, k, Nd, H.num, H.den)
     if len(given) != len(cpoly):
         return False, "evidence.charpoly has degree %d, the loop as written %d" % (len(given) - 1, len(cpoly) - 1)
     ratio = given[-1] / cpoly[-1]
@@ -1065,6 +1088,177 @@ def check_stability(c):
     if ok != claim["stable"]:
         return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
     return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
+
+
+# ---------------------------------------------------------------- stability-max
+MAX_STABILITY_MAX_DEGREE = 40
+
+
+def det_int(M):
+    """The determinant of a square integer matrix (Bareiss' fraction-free elimination: every
+    division exact)."""
+    M = [list(r) for r in M]
+    n, sign, prev = len(M), 1, 1
+    for i in range(n - 1):
+        piv = next((r for r in range(i, n) if M[r][i] != 0), None)
+        if piv is None:
+            return 0
+        if piv != i:
+            M[i], M[piv] = M[piv], M[i]
+            sign = -sign
+        for r in range(i + 1, n):
+            for j in range(i + 1, n):
+                M[r][j] = (M[r][j] * M[i][i] - M[r][i] * M[i][j]) // prev
+        prev = M[i][i]
+    return sign * M[n - 1][n - 1]
+
+
+def reciprocal_resultant(c):
+    """Res_{d,d}(c, c*), c* = z^d c(1/z), c of exact degree d: the Sylvester determinant of order 2d
+    (d rows of c, d rows of c*, coefficients descending) = lc(c)^d prod_{c(a)=0} c*(a); computed on
+    L c with integer coefficients (L the common denominator), divided by L^(2d)."""
+    d = len(c) - 1
+    L = 1
+    for x in c:
+        L = L * x.denominator // gcd(L, x.denominator)
+    ci = [int(x * L) for x in c]
+    desc = ci[::-1]  # c*'s descending coefficients are c's ascending ones
+    rows = [[0] * i + desc + [0] * (d - 1 - i) for i in range(d)]
+    rows += [[0] * i + ci + [0] * (d - 1 - i) for i in range(d)]
+    return Fraction(det_int(rows), L ** (2 * d))
+
+
+def resultant_in_K(c0, c1):
+    """D(K) = Res_{d,d}(c0 + K c1, its reciprocal), of degree <= 2d in K (every Sylvester entry is
+    affine in K): Lagrange interpolation of its values at K = -d .. d."""
+    d = len(c0) - 1
+    xs = [Fraction(i) for i in range(-d, d + 1)]
+    D = []
+    for xi in xs:
+        v = reciprocal_resultant(padd(c0, pscale(c1, xi)))
+        if v == 0:
+            continue
+        basis, den = [Fraction(1)], Fraction(1)
+        for xj in xs:
+            if xj != xi:
+                basis = pmul(basis, [-xj, Fraction(1)])
+                den *= xi - xj
+        D = padd(D, pscale(basis, v / den))
+    return D
+
+
+def positive_roots(p, b, closed):
+    """The number of distinct roots of p != 0 in (0, b), or (0, b] when closed; b None: (0, inf).
+    Its roots at 0 and b divided out; Descartes' rule of signs when it shows none, else Sturm's
+    theorem on the square-free part."""
+    q = trim(p)
+    while len(q) > 1 and q[0] == 0:
+        q = q[1:]  # divided by K: the root at 0
+    count = 0
+    while b is not None and len(q) > 1 and peval(q, b) == 0:
+        count = 1 if closed else 0
+        q = pdivmod(q, [-b, Fraction(1)])[0]
+    if len(q) < 2:
+        return count
+    # Descartes first (cheap): no sign variation in the coefficients of q(x) (roots in (0, inf)) or of
+    # (1 + y)^n q(b/(1 + y)) (roots in (0, b), as y > 0) proves there is none
+    n = len(q) - 1
+    R = q if b is None else [sum(q[i] * b ** i * comb(n - i, j) for i in range(n - j + 1)) for j in range(n + 1)]
+    signs = [x > 0 for x in R if x != 0]
+    if all(u == v for u, v in zip(signs, signs[1:])):
+        return count
+    q = sqfree(q)  # Sturm counts the distinct roots of a square-free polynomial
+    seq = sturm_seq(q)
+    if b is None:
+        signs = [x[-1] for x in seq if x]
+        at_b = sum(1 for u, v in zip(signs, signs[1:]) if (u > 0) != (v > 0))
+    else:
+        at_b = variations(seq, b)
+    return count + variations(seq, Fraction(0)) - at_b
+
+
+def stability_family(model):
+    """(K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1): H = H0 + K H1 proven affine; with L = lcm of
+    H0's and H1's denominators, c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1."""
+    only(model, ("plant", "H", "operator", "set", "name", "T", "delay"), "model")
+    K = parameter_name(model)
+    T, n, params, k, Nd = loop_device(model)
+    try:
+        H0, H1, Dbound = prove_affine(model["H"], T, params, K)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero")
+    for name, H in (("H0", H0), ("H1", H1)):
+        if len(H.num) > len(H.den) + n:
+            raise Malformed("model.H: z^-n %s(z) is not causal" % name)
+    L = pmul(H0.den, pdivmod(H1.den, pgcd(H0.den, H1.den))[0])
+    if len(L) - 1 + n + k > MAX_STABILITY_MAX_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d for stability-max" % (
+            len(L) - 1 + n + k, MAX_STABILITY_MAX_DEGREE))
+    c0 = loop_poly(n, k, Nd, pmul(H0.num, pdivmod(L, H0.den)[0]), L)
+    c1 = pmul(pmul(H1.num, pdivmod(L, H1.den)[0]), Nd)
+    if len(c1) >= len(c0):
+        raise Malformed("model: c1 has degree >= that of c0 (the leading coefficient would move with %s)" % K)
+    return K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1
+
+
+def check_stability_max(c):
+    """K_max = sup{K0 > 0 : stable on (0, K0)} for the one-DOF loop with H = H0 + K H1: on an interval
+    of K where D(K) = Res_z(c, c*) has no root, c(.; K) is stable at every K or at none (a root
+    leaves the disc through the circle, where c and c* share it). K_max >= lo > 0: stable at
+    stable_at in (0, lo), D root-free on (0, lo); K_max <= hi > 0: the loop at hi NOT stable;
+    K_max = 0: NOT stable at unstable_at = e > 0 and D root-free on (0, e] (or D = 0); +inf: stable
+    at stable_at > 0, D root-free on (0, inf)."""
+    model, claim, evidence = parts(c)
+    only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    only(evidence, ("stable_at", "unstable_at"), "evidence")
+    K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1 = stability_family(model)
+    status, lo, hi, infinite, refuted = claim_range(claim, True)
+    if refuted:
+        return False, refuted
+    if not infinite and lo < 0:
+        return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+    zero = not infinite and hi == 0
+    for key, wanted in (("stable_at", infinite or lo > 0), ("unstable_at", zero)):
+        if key in evidence and not wanted:
+            raise Malformed("evidence.%s: not read for this claim" % key)
+    D = resultant_in_K(c0, c1)
+    shown = []
+    if infinite or lo > 0:
+        K0 = exact(evidence, "stable_at", "evidence")
+        if K0 <= 0 or (not infinite and K0 >= lo):
+            return False, "evidence.stable_at = %s is not in (0, %s)" % (short(K0), "inf" if infinite else short(lo))
+        ok, why = schur_cohn(padd(c0, pscale(c1, K0)))
+        if not ok:
+            return False, "%s_max >= lo fails: NOT stable at %s = %s: %s" % (K, K, short(K0), why)
+        if not D:
+            return False, "%s_max >= lo not shown: D = Res_z(c, c*) vanishes for every %s" % (K, K)
+        m = positive_roots(D, None if infinite else lo, False)
+        if m:
+            return False, "%s_max >= lo not shown: D(%s) = Res_z(c, c*) has %d root(s) in (0, %s)" % (
+                K, K, m, "inf" if infinite else "%.12g" % float(lo))
+        shown.append("stable at %s = %s, D root-free on (0, %s)" % (K, short(K0), "inf" if infinite else "lo"))
+    if infinite:
+        return True, "%s_max = +inf (%s; degree %d in z)" % (K, shown[0], len(c0) - 1)
+    if not zero:
+        Hh = H0 + RF([hi]) * H1
+        ok, why = schur_cohn(loop_poly(n, k, Nd, Hh.num, Hh.den))
+        if ok:
+            return False, "%s_max <= %.12g not shown: the loop at %s = hi is stable (%s)" % (K, float(hi), K, why)
+        shown.append("NOT stable at %s = hi" % K)
+    else:
+        e = exact(evidence, "unstable_at", "evidence")
+        if e <= 0:
+            return False, "evidence.unstable_at = %s is not > 0" % short(e)
+        ok, why = schur_cohn(padd(c0, pscale(c1, e)))
+        if ok:
+            return False, "%s_max = 0 not shown: c(z; %s = %s) is stable" % (K, K, short(e))
+        if D:
+            m = positive_roots(D, e, True)
+            if m:
+                return False, "%s_max = 0 not shown: D(%s) = Res_z(c, c*) has %d root(s) in (0, %s]" % (K, K, m, short(e))
+        shown.append("NOT stable at %s = %s, %s" % (K, short(e), "D root-free on (0, e]" if D else "D = 0 identically"))
+    return True, "%s_max %s (%s; degree %d in z)" % (
+        K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), "; ".join(shown), len(c0) - 1)
 
 
 # ---------------------------------------------------------------- wedge
@@ -1160,25 +1354,13 @@ def cauchy_bound(polys):
 
 
 def check_wedge(c):
-    only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
-    model, claim = obj_field(c, "model"), obj_field(c, "claim")
-    only(obj_field(c, "evidence"), (), "evidence")
+    model, claim, evidence = parts(c)
+    only(evidence, (), "evidence")
     only(model, ("H", "set", "T"), "model")
     only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"), "claim")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: missing or not \"exact\"")
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
-    T = exact(model, "T", "model")
-    if T <= 0:
-        raise Malformed("model.T: must be > 0")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    try:
-        H = parse_h(model["H"], T, {k: exact_value(v, "model.set." + k) for k, v in sets.items()})
-    except ZeroDivisionError:
-        raise Malformed("model.H: division by zero")
+    H, T = model_h(model)
     if len(H.num) > len(H.den):
         raise Malformed("model.H: not causal (deg num > deg den)")
     N, D = H.num, H.den
@@ -1226,21 +1408,12 @@ def check(c):
             raise Malformed("certificate: missing or not \"hapstab\"")
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
+        checkers = {"bound": check_bound, "bound-max": check_bound_max, "passivity-level": check_passivity_level,
+                    "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")
-        if kind == "bound":
-            ok, why = check_bound(c)
-        elif kind == "bound-max":
-            ok, why = check_bound_max(c)
-        elif kind == "passivity-level":
-            ok, why = check_passivity_level(c)
-        elif kind == "r":
-            ok, why = check_r(c)
-        elif kind == "stability":
-            ok, why = check_stability(c)
-        elif kind == "wedge":
-            ok, why = check_wedge(c)
-        else:
-            raise Malformed("kind: %r has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)" % (kind,))
+        if not isinstance(kind, str) or kind not in checkers:
+            raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))
+        ok, why = checkers[kind](c)
         return (0 if ok else 1), why
     except Malformed as e:
         return 2, str(e)

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Mutation testing of the certificate checkers (issue 47, item 5).
 
-    python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet]
+    python3 tests/check/mutate.py --hapstab build/hapstab [--models 300] [--seed 1] [--quiet] [--kinds K1,K2]
 
 Produces certificates of `bound` (random virtual environments, integer delays, eta; reported as
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
@@ -10,7 +10,9 @@ environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-l
 families, ISP and OSP), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
-doubled -- with that loop's polynomial and verdict, consistently) and `wedge` (random H(z) of five
+doubled -- with that loop's polynomial and verdict, consistently), `stability-max` (`stability --max`
+on random one-DOF loops: K_max finite, exact, 0; mutants move lo past the crossing, hi below it,
+stable_at and unstable_at, and edit the model) and `wedge` (random H(z) of five
 families: the five exact verdicts of paper 002's criteria and assumptions) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
 on every mutant: `hapstab check --batch` (check/) and checks/hapstab_check.py (imported; it shares
 no code with hapstab). Every mutant carries what must happen:
@@ -166,6 +168,28 @@ def with_field(cert, path, value):
         o = o[k]
     o[path[-1]] = value
     return c
+
+
+SET_MOVES = (("x 1.001", lambda x: x * Fraction(1001, 1000)), ("+ 1", lambda x: x + 1), ("sign flipped", lambda x: -x))
+
+
+def model_edits(m, rng, moves=SET_MOVES, fields=("H",)):
+    """Model edits the kinds share: each --set value moved by each of `moves` (name, f), and in each
+    expression of `fields` one '+' made '-' and one '-' made '+' (chosen at random): (name, model)."""
+    edits = []
+    for k, v in m["set"].items():
+        x = Fraction(v)
+        for name, f in moves:
+            y = f(x)
+            if y != x:
+                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    for field in fields:
+        h = m[field]
+        for a_, b_ in (("+", "-"), ("-", "+")):
+            if a_ in h:
+                j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
+                edits.append(("%s: a '%s' made '%s'" % (field, a_, b_), dict(m, **{field: h[:j] + b_ + h[j + 1:]})))
+    return edits
 
 
 def model_truth(cert, new_model, hapstab, cache):
@@ -364,22 +388,29 @@ def max_args(m, digits):
     return a + ["--max", m["name"], "--damping", m["damping"]]
 
 
-def max_truth(hapstab, m, cache):
-    """hapstab's K_max of model m at 40 digits: (lo, hi), "inf", or None (no answer)."""
-    key = "max" + json.dumps(m, sort_keys=True)
+def sup_truth(hapstab, args, key, cache):
+    """hapstab's supremum (bound --max, stability --max) from `args` + --json, asked at 40 digits:
+    (lo, hi) -- the exact value twice when it is one --, "inf", or None (no answer)."""
     if key not in cache:
-        rc, out, _ = run(hapstab, max_args(m, 40) + ["--json"])
+        rc, out, _ = run(hapstab, args + ["--json"])
         res = None
         if rc in (0, 1):
             j = json.loads(out)
             if j.get("max") == "inf":
                 res = "inf"
+            elif j.get("max") == "0" and j.get("status") in ("exact", "certified"):
+                res = (Fraction(0), Fraction(0))
+            elif j.get("exact"):
+                res = (Fraction(j["exact"]), Fraction(j["exact"]))
             elif j.get("status") in ("exact", "certified") and j.get("enclosure"):
                 res = (Fraction(j["enclosure"][0]), Fraction(j["enclosure"][1]))
-            elif j.get("max") == "0" and j.get("status") == "exact":
-                res = (Fraction(0), Fraction(0))
         cache[key] = res
     return cache[key]
+
+
+def max_truth(hapstab, m, cache):
+    """hapstab's K_max of the bound-max model m at 40 digits."""
+    return sup_truth(hapstab, max_args(m, 40), "max" + json.dumps(m, sort_keys=True), cache)
 
 
 def max_claim(cert):
@@ -448,16 +479,8 @@ def max_mutants(cert, rng, hapstab, cache):
     edits = [("damping x 1.001", dict(m, damping=frac(b * Fraction(1001, 1000)))), ("damping + 1", dict(m, damping=frac(b + 1))),
              ("damping halved", dict(m, damping=frac(b / 2))), ("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2))),
              ("delay + 1", dict(m, delay=m["delay"] + 1)), ("eta + 1/10", dict(m, eta=frac(Fraction(m["eta"]) + Fraction(1, 10))))]
-    for k, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    edits += model_edits(m, rng)
     h = m["H"]
-    for a_, b_ in (("+", "-"), ("-", "+")):
-        if a_ in h:
-            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
-            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
     for name, nm in edits:
         truth = max_truth(hapstab, nm, cache)
         if truth is None:
@@ -549,17 +572,9 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
             out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
     out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"))
     # the model edited: hapstab's own certificate of the edited model decides
-    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))]
-    for k, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1/10", x + Fraction(1, 10)), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (k, name), dict(m, set=dict(m["set"], **{k: frac(y)}))))
+    moves = (("x 1.001", lambda x: x * Fraction(1001, 1000)), ("+ 1/10", lambda x: x + Fraction(1, 10)), ("sign flipped", lambda x: -x))
+    edits = [("kind swapped", dict(m, kind="isp" if osp else "osp"))] + model_edits(m, rng, moves)
     h = m["H"]
-    for a_, b_ in (("+", "-"), ("-", "+")):
-        if a_ in h:
-            j = [q for q, ch in enumerate(h) if ch == a_][rng.randrange(h.count(a_))]
-            edits.append(("H: a '%s' made '%s'" % (a_, b_), dict(m, H=h[:j] + b_ + h[j + 1:])))
     for name, nm in edits:
         other = level_produce(hapstab, nm, cache, tmp, 30)
         if isinstance(other, dict):
@@ -667,6 +682,18 @@ def wrong_loop(cert, coeffs, name):
     return ("wrong loop: " + name, c, "refute")
 
 
+def loop_edits(m, rng):
+    """The edits of a one-DOF loop's model (stability, stability-max): --set values, T halved, the
+    delay +- 1, a sign in H or the plant, the operator removed."""
+    edits = model_edits(m, rng, fields=("H", "plant"))
+    edits += [("T halved", dict(m, T=frac(Fraction(m["T"]) / 2))), ("delay + 1", dict(m, delay=m["delay"] + 1))]
+    if m["delay"] > 0:
+        edits.append(("delay - 1", dict(m, delay=m["delay"] - 1)))
+    if "operator" in m:
+        edits.append(("operator removed", {k: v for k, v in m.items() if k != "operator"}))
+    return edits
+
+
 def stability_mutants(cert, rng, hapstab, cache, tmp):
     out = [("unmutated", cert, "accept")]
     cp = [Fraction(x) for x in cert["evidence"]["charpoly"]]
@@ -693,29 +720,7 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
         if isinstance(other, dict):
             out.append(wrong_loop(cert, [Fraction(x) for x in other["evidence"]["charpoly"]], name))
     # the model edited: expectation from the producer's certificate of the edited model
-    edits = []
-    for key, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x)):
-            if y != x:
-                edits.append(("set %s %s" % (key, name), ["set", key], frac(y)))
-    edits += [("T halved", ["T"], frac(Fraction(m["T"]) / 2)), ("delay + 1", ["delay"], m["delay"] + 1)]
-    if m["delay"] > 0:
-        edits.append(("delay - 1", ["delay"], m["delay"] - 1))
-    for field in ("H", "plant"):
-        h = m[field]
-        for a, b in (("+", "-"), ("-", "+")):
-            if a in h:
-                j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
-                edits.append(("%s: a '%s' made '%s'" % (field, a, b), [field], h[:j] + b + h[j + 1:]))
-    if "operator" in m:
-        edits.append(("operator removed", None, None))
-    for name, path, value in edits:
-        nm = copy.deepcopy(m)
-        if path is None:
-            del nm["operator"]
-        else:
-            nm[path[0]] = value if len(path) == 1 else dict(nm[path[0]], **{path[1]: value})
+    for name, nm in loop_edits(m, rng):
         other = stability_produce(hapstab, nm, cache, tmp)
         if isinstance(other, dict):
             same = proportional(other["evidence"]["charpoly"], cp)
@@ -733,13 +738,152 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("charpoly entry a decimal", with_field(cert, ["evidence", "charpoly"], ["0.5"] + cert["evidence"]["charpoly"][1:]), "malformed"))
     out.append(("charpoly empty", with_field(cert, ["evidence", "charpoly"], []), "malformed"))
-    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
-    out.append(("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"))
-    out.append(("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"))
-    out.append(("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"))
-    out.append(("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"))
-    out.append(("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed"))
+    return out + loop_malformed(cert)
+
+
+def loop_malformed(cert):
+    """Malformed models of a one-DOF loop (stability, stability-max): T negated, a negative delay, a
+    plant that does not parse, has a pole off s = 0, is in z or is not strictly proper."""
+    m = cert["model"]
+    return [("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"),
+            ("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"),
+            ("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"),
+            ("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"),
+            ("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"),
+            ("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed")]
+
+
+STABILITY_MAX_TEMPLATES = [  # (plant, operator or None, H, the parameter maximised, the others)
+    ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", "K", ["m", "B"]),             # the stiffness of a wall (001)
+    ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", "B", ["m", "K"]),             # its damper
+    ("1/(m*s^2)", None, "K + B*2*(z-1)/(T*(z+1))", "K", ["m", "B"]),       # Tustin damper: a pole at z = -1
+    ("1/(m*s^2)", None, "K*(z - a)/(z - b)", "K", ["m", "a", "b"]),       # a lead/lag wall's gain
+    ("1/(m*s^2)", "c*s", "K + B*(z-1)/(T*z)", "K", ["m", "c", "B"]),       # an operator's mass
+    ("(1 + c*s)/(m*s^3)", None, "K + B*(z-1)/(T*z)", "K", ["m", "c", "B"]),  # an integrating device
+    ("1/(m*s^2)", None, "K*(z-1)/(T*z) + B", "K", ["m", "B"]),             # K a damper gain: a root at z = 1 for every K
+    ("1/(m*s^2)", None, "C - K + B*(z-1)/(T*z)", "K", ["m", "C", "B"]),   # a stiffness C softened by K: exact at z = 1
+    ("1/(m*s^2)", None, "C - K + B*(z-1)/(T*z)", "K", ["m", "C", "B"]),
+]
+
+
+def rand_stability_max(rng):
+    plant, op, H, name, others = rng.choice(STABILITY_MAX_TEMPLATES)
+    m = rand_stability(rng)  # T, delay and the draws of m, c, a, b
+    sets = {}
+    for n in others:
+        if n == "B":  # mostly a damper that the loop needs; sometimes none or a negative one (K_max = 0)
+            sets[n] = str(rng.choice([rng.randint(1, 30)] * 6 + [0, -rng.randint(1, 5)]))
+        elif n in ("K", "C"):
+            sets[n] = str(rng.randint(1, 3000))
+        elif n in m["set"]:
+            sets[n] = m["set"][n]
+        else:
+            sets[n] = {"m": rng.choice(["1", "1/2", "3"]), "c": rng.choice(["1/10", "1", "0.002"])}.get(
+                n, "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95)))
+    out = {"plant": plant, "H": H, "set": sets, "name": name, "T": m["T"], "delay": m["delay"]}
+    if op:
+        out["operator"] = op
     return out
+
+
+def stability_max_args(m, digits):
+    return stability_args({k: v for k, v in m.items() if k != "name"}) + ["--max", m["name"], "--digits", str(digits)]
+
+
+def stability_max_produce(hapstab, m, cache, tmp, digits=20):
+    return produce(hapstab, stability_max_args(m, digits), "smax%d" % digits + json.dumps(m, sort_keys=True), "sm-edit.json", cache, tmp)
+
+
+def stability_max_truth(hapstab, m, cache):
+    """hapstab's K_max of the stability-max model m at 40 digits."""
+    return sup_truth(hapstab, stability_max_args(m, 40), "smax-truth" + json.dumps(m, sort_keys=True), cache)
+
+
+def stability_max_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    m, ev = cert["model"], cert["evidence"]
+    claim = max_claim(cert)
+    q = cert["claim"]["quantity"]
+
+    def claimed(lo, hi, evidence):
+        return dict(copy.deepcopy(cert), claim={"quantity": q, "status": "certified", "lo": frac(lo), "hi": frac(hi)}, evidence=evidence)
+    if claim == "inf":
+        out.append(("+inf claimed as 1", claimed(1, 1, {"stable_at": "1/2"}), "refute"))
+    elif claim[1] == 0:  # K_max = 0: unstable on (0, e], D root-free there
+        e = Fraction(ev["unstable_at"])
+        out.append(("K_max = 0 claimed as [e, 2e]", claimed(e, 2 * e, {"stable_at": frac(e / 2)}), "refute"))
+        out.append(("K_max = 0 claimed +inf", with_field(with_field(cert, ["claim"], {"quantity": q, "status": "exact", "infinite": True}),
+                                                         ["evidence"], {"stable_at": frac(e)}), "refute"))
+        out.append(("unstable_at = 0", with_field(cert, ["evidence", "unstable_at"], "0"), "refute"))
+        out.append(("unstable_at negative", with_field(cert, ["evidence", "unstable_at"], frac(-e)), "refute"))
+        out.append(("unstable_at halved", with_field(cert, ["evidence", "unstable_at"], frac(e / 2)), "accept"))
+        out.append(("unstable_at x 10^6 (past D's roots?)", with_field(cert, ["evidence", "unstable_at"], frac(e * 10 ** 6)), "agree"))
+        out.append(("deleted evidence.unstable_at", deleted(cert, ["evidence", "unstable_at"]), "malformed"))
+        out.append(("added evidence.stable_at", with_field(cert, ["evidence", "stable_at"], frac(e)), "malformed"))
+    else:
+        lo, hi = claim
+        K0 = Fraction(ev["stable_at"])
+        tiny = max(hi, Fraction(1)) / 10 ** rng.randint(40, 60)
+        gap = max(hi - lo, tiny)
+        mid = (K0 + lo) / 2
+        out.append(("lo raised past the crossing", claimed(hi + gap / 2 + tiny, hi + 2 * gap + tiny, ev), "refute"))
+        out.append(("claim and stable_at moved above the crossing", claimed(2 * hi + 1, 3 * hi + 2, {"stable_at": frac(hi * 3 / 2 + 1)}), "refute"))
+        out.append(("hi lowered below the crossing", claimed(mid, lo - tiny, ev), "refute"))
+        out.append(("hi lowered to stable_at's level", claimed(K0 / 2, K0, {"stable_at": frac(K0 / 3)}), "refute"))
+        out.append(("lo lowered (still above stable_at)", claimed(mid, hi, ev), "accept"))
+        out.append(("stable_at moved inside (0, lo)", with_field(cert, ["evidence", "stable_at"], frac(lo * Fraction(rng.randint(1, 99), 100))), "accept"))
+        out.append(("stable_at = lo", with_field(cert, ["evidence", "stable_at"], frac(lo)), "refute"))
+        out.append(("stable_at = 0", with_field(cert, ["evidence", "stable_at"], "0"), "refute"))
+        out.append(("stable_at negative", with_field(cert, ["evidence", "stable_at"], frac(-K0)), "refute"))
+        out.append(("stable_at above lo", with_field(cert, ["evidence", "stable_at"], frac(hi + gap)), "refute"))
+        out.append(("lo > hi", claimed(hi + tiny, hi, ev), "refute"))
+        out.append(("lo negative", claimed(-1 - lo, hi, ev), "refute"))
+        out.append(("hi raised", claimed(lo, hi + max(hi, Fraction(1)) / 10, ev), "agree"))
+        out.append(("claimed +inf", with_field(with_field(cert, ["claim"], {"quantity": q, "status": "certified", "infinite": True}),
+                                               ["evidence"], ev), "refute"))
+        out.append(("claimed 0", with_field(with_field(cert, ["claim"], {"quantity": q, "status": "exact", "value": "0"}),
+                                            ["evidence"], {"unstable_at": frac(K0)}), "refute"))
+        if cert["claim"]["status"] == "exact":
+            out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), "refute"))
+            out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+        else:
+            pl = cert["claim"]["printed_lo"]
+            moved = pl[:-1] + str((int(pl[-1]) + 1) % 10) if pl[-1].isdigit() else pl + "1"
+            out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], moved), "refute"))
+        out.append(("deleted evidence.stable_at", deleted(cert, ["evidence", "stable_at"]), "malformed"))
+        out.append(("added evidence.unstable_at", with_field(cert, ["evidence", "unstable_at"], frac(hi)), "malformed"))
+        out.append(("stable_at a decimal", with_field(cert, ["evidence", "stable_at"], "0.5"), "malformed"))
+    # the model edited: hapstab's own K_max of the edited model (40 digits) decides
+    edits = loop_edits(m, rng) + [("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2)))]
+    others = [k for k in m["set"] if k != "m"]
+    if others:
+        edits.append(("name: another parameter maximised", dict(m, name=rng.choice(others), set=dict(m["set"], **{m["name"]: "1"}))))
+    for name, nm in edits:
+        if "name" in nm and nm["name"] in nm["set"]:  # the new parameter has no value: the old one gets 1
+            nm = dict(nm, set={k: v for k, v in nm["set"].items() if k != nm["name"]})
+        truth = stability_max_truth(hapstab, nm, cache)
+        if truth is None:
+            expect = "same"  # no answer for the edited model (or it is refused): both checkers give one exit
+        elif truth == "inf" or claim == "inf":
+            expect = "agree" if truth == claim else "refute"
+        else:
+            expect = "refute" if claim[1] < truth[0] or claim[0] > truth[1] else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    # malformed
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "plant"], ["model", "H"], ["model", "name"], ["model", "T"],
+                 ["model", "delay"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    K, h = m["name"], m["H"]
+    out.append(("the parameter given a value", with_field(cert, ["model", "set"], dict(m["set"], **{K: "1"})), "malformed"))
+    out.append(("H not affine (times the parameter)", with_field(cert, ["model", "H"], "(" + h + ")*" + K), "malformed"))
+    out.append(("H not affine (over 1 + the parameter)", with_field(cert, ["model", "H"], "(" + h + ")/(1 + " + K + ")"), "malformed"))
+    out.append(("the parameter in the plant", with_field(cert, ["model", "plant"], "1/((m + %s)*s^2)" % K), "malformed"))
+    out.append(("name of no parameter", with_field(cert, ["model", "name"], "Q"), "malformed"))
+    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    out.append(("added evidence.charpoly", with_field(cert, ["evidence", "charpoly"], ["1"]), "malformed"))
+    out.append(("claim.infinite a string", with_field(cert, ["claim", "infinite"], "yes"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    return out + loop_malformed(cert)
 
 
 WEDGE_TEMPLATES = [  # H(z) of paper 002's examples and of virtual walls
@@ -787,18 +931,9 @@ def wedge_mutants(cert, rng, hapstab, cache, tmp):
     for key in WEDGE_CLAIMS:
         out.append(("claim.%s flipped" % key, with_field(cert, ["claim", key], not cert["claim"][key]), "refute"))
     m = cert["model"]
-    edits = []
-    for key, v in m["set"].items():
-        x = Fraction(v)
-        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1", x + 1), ("sign flipped", -x), ("x 2", 2 * x)):
-            if y != x:
-                edits.append(("set %s %s" % (key, name), dict(m, set=dict(m["set"], **{key: frac(y)}))))
+    edits = model_edits(m, rng, SET_MOVES + (("x 2", lambda x: 2 * x),))
     edits.append(("T x 10", dict(m, T=frac(Fraction(m["T"]) * 10))))
     h = m["H"]
-    for a, b in (("+", "-"), ("-", "+")):
-        if a in h:
-            j = [q for q, ch in enumerate(h) if ch == a][rng.randrange(h.count(a))]
-            edits.append(("H: a '%s' made '%s'" % (a, b), dict(m, H=h[:j] + b + h[j + 1:])))
     for name, nm in edits:
         other = wedge_produce(hapstab, nm, cache, tmp)
         if isinstance(other, dict):
@@ -827,20 +962,15 @@ def rand_r(rng):
     return T, w
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--hapstab", required=True)
-    ap.add_argument("--models", type=int, default=300, help="bound models (and as many r cases / 4)")
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--quiet", action="store_true")
-    a = ap.parse_args()
-    rng = random.Random(a.seed)
-    cache = {}
-    tmp = tempfile.mkdtemp(prefix="hapstab-mutate-")
+KINDS = ("bound", "r", "bound-max", "passivity-level", "stability", "stability-max", "wedge")
+
+
+def produce_certificates(a, kinds, rng, srng, tmp, cache, scache):
+    """The certificates of random models of each kind asked for, [(kind, certificate)], and the
+    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng)."""
     certs = []  # (kind, certificate)
     skipped = {}
-    t0 = time.time()
-    for i in range(a.models):
+    for i in range(a.models if "bound" in kinds else 0):
         m = rand_frac_model(rng) if i % 2 else rand_model(rng)
         path = os.path.join(tmp, "b%d.json" % i)
         digits = rng.choice([10, 15, 20, 30])
@@ -852,7 +982,7 @@ def main():
             continue
         with open(path) as f:
             certs.append(("bound" if "frac_delay" not in m else "bound-frac", json.load(f)))
-    for i in range(max(a.models // 4, 2)):
+    for i in range(max(a.models // 4, 2) if "r" in kinds else 0):
         T, w = rand_r(rng)
         path = os.path.join(tmp, "r%d.json" % i)
         rc, out, err = run(a.hapstab, ["r", "--T", T, "--omega", w, "--terms", "10", "--certificate", path])
@@ -861,8 +991,7 @@ def main():
             continue
         with open(path) as f:
             certs.append(("r", json.load(f)))
-    scache = {}
-    for i in range(max(a.models // 2, 2)):
+    for i in range(max(a.models // 2, 2) if "bound-max" in kinds else 0):
         m = rand_max_model(rng)
         path = os.path.join(tmp, "m%d.json" % i)
         rc, out, err = run(a.hapstab, max_args(m, rng.choice([10, 15, 20, 30])) + ["--certificate", path])
@@ -874,30 +1003,90 @@ def main():
             continue
         with open(path) as f:
             certs.append(("bound-max", json.load(f)))
-    for i in range(max(a.models // 2, 2)):
+    for i in range(max(a.models // 2, 2) if "passivity-level" in kinds else 0):
         cert = level_produce(a.hapstab, rand_level(rng), scache, tmp, rng.choice([10, 17, 30]))
         if not isinstance(cert, dict):
             skipped["passivity-level: exit %s" % cert] = skipped.get("passivity-level: exit %s" % cert, 0) + 1
             continue
         certs.append(("passivity-level", cert))
-    for i in range(max(a.models // 2, 2)):
+    for i in range(max(a.models // 2, 2) if "stability-max" in kinds else 0):
+        m = rand_stability_max(srng)
+        cert = stability_max_produce(a.hapstab, m, scache, tmp, srng.choice([10, 20, 30]))
+        if not isinstance(cert, dict):
+            skipped["stability-max: exit %s" % cert] = skipped.get("stability-max: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("stability-max", cert))
+    for i in range(max(a.models // 2, 2) if "stability" in kinds else 0):
         m = rand_stability(rng)
         cert = stability_produce(a.hapstab, m, scache, tmp)
         if not isinstance(cert, dict):
             skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
             continue
         certs.append(("stability", cert))
-    for i in range(max(a.models // 2, 2)):
+    for i in range(max(a.models // 2, 2) if "wedge" in kinds else 0):
         cert = wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp)
         if not isinstance(cert, dict):
             skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
             continue
         certs.append(("wedge", cert))
+    return certs, skipped
+
+
+def print_branches(certs, mutants, cpp):
+    """The branches of the checkers the campaign reached (fractional delays, bound-max, stability-max)."""
+    frac_certs = [c for k, c in certs if k == "bound-frac"]
+    if frac_certs:  # the branches of a fractional delay that the campaign reached
+        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
+        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
+        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
+              "upper bound shown across the end (P U_{q-1}) %d" % (
+                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
+                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
+    max_certs = [c for k, c in certs if k == "bound-max"]
+    if max_certs:
+        cl = [max_claim(c) for c in max_certs]
+        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
+            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
+            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
+            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
+    smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]
+    if smax:
+        cl = [max_claim(c) for c, _ in smax]
+        print("  stability-max branches: K_max finite > 0 %d (exact %d), 0 %d (D = 0 identically %d), +inf %d; with a delay %d, "
+              "an operator %d" % (
+                  sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for (c, _), x in zip(smax, cl) if x != "inf" and x[1] > 0 and
+                                                                    c["claim"]["status"] == "exact"),
+                  sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for _, r in smax if "D = 0 identically" in r),
+                  sum(1 for x in cl if x == "inf"), sum(1 for c, _ in smax if c["model"]["delay"] > 0),
+                  sum(1 for c, _ in smax if "operator" in c["model"])))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--hapstab", required=True)
+    ap.add_argument("--models", type=int, default=300, help="bound models (and as many r cases / 4)")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--quiet", action="store_true")
+    ap.add_argument("--kinds", default=",".join(KINDS), help="the kinds to produce, comma-separated (default: all)")
+    a = ap.parse_args()
+    kinds = set(a.kinds.split(","))
+    unknown = kinds - set(KINDS)
+    if unknown:
+        ap.error("--kinds: unknown %s (known: %s)" % (", ".join(sorted(unknown)), ", ".join(KINDS)))
+    rng = random.Random(a.seed)
+    cache = {}
+    tmp = tempfile.mkdtemp(prefix="hapstab-mutate-")
+    scache = {}
+    srng = random.Random(a.seed * 1000 + 47)  # its own stream: the other kinds draw what they drew before it was added
+    t0 = time.time()
+    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache)
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "stability-max":
+            ms = stability_max_mutants(cert, srng, a.hapstab, scache, tmp)
         elif kind == "bound-max":
             ms = max_mutants(cert, rng, a.hapstab, cache)
         elif kind == "passivity-level":
@@ -960,21 +1149,7 @@ def main():
         sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e in ("agree", "same"))))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
-    frac_certs = [c for k, c in certs if k == "bound-frac"]
-    if frac_certs:  # the branches of a fractional delay that the campaign reached
-        qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
-        crossing = sum(1 for (k, nm, _, _), cj in zip(mutants, cpp) if k == "bound-frac" and nm == "unmutated" and "times U_" in cj["reason"])
-        print("  bound-frac branches: band end rational (q = 2, 3) %d, irrational (q >= 4) %d; H with a pole at z = -1 %d; "
-              "upper bound shown across the end (P U_{q-1}) %d" % (
-                  sum(1 for q in qs if q <= 3), sum(1 for q in qs if q >= 4),
-                  sum(1 for c in frac_certs if "(z+1)" in c["model"]["H"]), crossing))
-    max_certs = [c for k, c in certs if k == "bound-max"]
-    if max_certs:
-        cl = [max_claim(c) for c in max_certs]
-        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
-            sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
-            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
-            sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
+    print_branches(certs, mutants, cpp)
     print("false or malformed claims accepted: %d" % accepted_false)
     print("time: production %.1f s, hapstab check %.1f s, independent checker %.1f s" % (produced, cpp_seconds, py_seconds))
     if failures:

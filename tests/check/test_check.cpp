@@ -1,6 +1,7 @@
 // tests/check/test_check.cpp -- the checkers of check/ on certificates whose truth is known by
 // hand (issue 47): b* of H = K with and without a delay (exact closed forms below), r(jw) against
-// cot(1/2) from a table, and the non-negativity test on polynomials with known roots. The
+// cot(1/2) from a table, the non-negativity test on polynomials with known roots, and the largest
+// stable gain of the mass on a virtual wall with delays 0 and 1 (closed forms below). The
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/max_positive.hpp"
+#include "hapstab/check/reciprocal.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -381,6 +383,134 @@ TEST(StabilityCheck, RefusesWhatItCannotModel) {
   d = stability_cert("1/(m*s^2)", "K", 0, true, c);
   d["claim"]["stable"] = "yes";
   expect_field(d, "claim.stable");
+}
+
+// Res(f, g) = lc(f)^deg g prod_{f(a) = 0} g(a): Res(z - 2, z - 5) = -3; Res_{d,d}(c, c*) with
+// c* = z^d c(1/z): c = z - 1/2, c* = 1 - z/2, Res = c*(1/2) = 3/4; c = z^2 (c* = 1, formal degree 2):
+// lc^2 c*(0)^2 = 1; c = z - 1 (a root on the circle): 0.
+TEST(Reciprocal, ResultantsByHand) {
+  const P x{rational(0), rational(1)};
+  EXPECT_EQ(detail::resultant(x - rational(2), x - rational(5)), rational(-3));
+  EXPECT_EQ(detail::resultant(x * x - rational(1), x - rational(2)), rational(3));  // g(1) g(-1) = (-1)(-3)
+  EXPECT_EQ(detail::reciprocal_resultant(x - rational(1, 2)), rational(3, 4));
+  EXPECT_EQ(detail::reciprocal_resultant(x * x), rational(1));
+  EXPECT_EQ(detail::reciprocal_resultant(x - rational(1)), rational(0));
+  EXPECT_EQ(detail::reciprocal_resultant((x - rational(2)) * (x - rational(1, 2))), rational(0));  // 2, 1/2
+}
+
+// The family of the mass 1/(m s^2) on K + B (z - 1)/(T z), delay 0: c = z (z - 1)^2 + g (z + 1)((K + B/T) z - B/T),
+// g = T^2/(2 m); by hand (the Sylvester determinant of c and c*, factored),
+//   D(K) = K T^4 (4 B m - 2 B^2 T - K T (2 m + B T))^2 / (4 m^5),
+// so for m = 1, T = 1/1000, B = 2: D = K (1001 K - 3996000)^2 / 10^24.
+TEST(Reciprocal, WallFamilyByHand) {
+  const P z{rational(0), rational(1)}, g(rational(1, 2000000));
+  const P c0 = z * (z - rational(1)) * (z - rational(1)) + g * (z + rational(1)) * (z * rational(2000) - rational(2000));
+  const P c1 = g * (z + rational(1)) * z;
+  const P K{rational(0), rational(1)};
+  const P f = K * rational(1001) - rational(3996000);
+  rational scale(1);
+  for (int i = 0; i < 24; ++i) scale /= 10;
+  EXPECT_EQ(detail::reciprocal_resultant(c0, c1), K * f * f * P(scale));
+  EXPECT_EQ(detail::roots_between(K * f * f, rational(0), rational(3996000, 1001), false), 0);
+  EXPECT_EQ(detail::roots_between(K * f * f, rational(0), rational(3996000, 1001), true), 1);
+  EXPECT_EQ(detail::roots_between(K * f * f, rational(0), std::nullopt, false), 1);
+  EXPECT_EQ(detail::roots_between(K, rational(0), std::nullopt, false), 0);
+}
+
+nlohmann::json smax_cert(const nlohmann::json& claim, const nlohmann::json& evidence, int delay = 0,
+                         const std::string& H = "K + B*(z-1)/(T*z)", const nlohmann::json& set = {{"m", "1"}, {"B", "2"}}) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-max"},
+          {"model", {{"plant", "1/(m*s^2)"}, {"H", H}, {"set", set}, {"name", "K"}, {"T", "1/1000"}, {"delay", delay}}},
+          {"claim", claim}, {"evidence", evidence}};
+}
+
+// Delay 0: the loop is stable iff 0 < K < (2B/T)(2m - BT)/(2m + BT) (Jury's conditions for the
+// cubic; docs/stability.md), so K_max = 3996000/1001 exactly for m = 1, T = 1/1000, B = 2 -- a root
+// pair meets the circle there (the double root of D above), at a rational K.
+TEST(StabilityMaxCheck, WallWithoutDelayExact) {
+  const nlohmann::json at{{"stable_at", "1000"}};
+  const Verdict ok = check_certificate(smax_cert({{"status", "exact"}, {"value", "3996000/1001"}}, at));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  const Verdict above = check_certificate(smax_cert({{"status", "exact"}, {"value", "3996001/1001"}}, at));
+  EXPECT_FALSE(above.verified);
+  EXPECT_NE(above.reason.find("has 1 root(s) in (0, "), std::string::npos) << above.reason;
+  const Verdict below = check_certificate(smax_cert({{"status", "exact"}, {"value", "3995999/1001"}}, at));
+  EXPECT_FALSE(below.verified);
+  EXPECT_NE(below.reason.find("is stable"), std::string::npos) << below.reason;
+  // the evidence point must lie in (0, lo), and the loop must be stable there
+  EXPECT_FALSE(check_certificate(smax_cert({{"status", "exact"}, {"value", "3996000/1001"}}, {{"stable_at", "3996000/1001"}})).verified);
+  EXPECT_FALSE(check_certificate(smax_cert({{"status", "exact"}, {"value", "3996000/1001"}}, {{"stable_at", "0"}})).verified);
+  // never +inf: as K grows a root goes to infinity (deg c1 < deg c0); D has the root 3996000/1001
+  const Verdict inf = check_certificate(smax_cert({{"status", "certified"}, {"infinite", true}}, at));
+  EXPECT_FALSE(inf.verified);
+  EXPECT_NE(inf.reason.find("(0, inf)"), std::string::npos) << inf.reason;
+}
+
+// Delay 1: D(K) = K T^4 (2 m T^3 K^2 + (B^2 T^3 + 12 m^2 T) K + 2 B^3 T^2 + 8 B^2 T m - 8 B m^2)^2/(16 m^7)
+// (the same determinant), so K_max is the positive root of K^2 + 6000002 K - 7983992000 for m = 1,
+// T = 1/1000, B = 2: K_max = sqrt(9007989992001) - 3000001 = 1330.36990919414872...
+TEST(StabilityMaxCheck, WallWithOneSampleDelayEnclosure) {
+  auto claim = [](const char* lo, const char* hi) { return nlohmann::json{{"status", "certified"}, {"lo", lo}, {"hi", hi}}; };
+  const nlohmann::json at{{"stable_at", "1"}};
+  const Verdict ok = check_certificate(smax_cert(claim("1330369/1000", "133037/100"), at, 1));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_FALSE(check_certificate(smax_cert(claim("133037/100", "1330371/1000"), at, 1)).verified);   // lo past the root
+  EXPECT_FALSE(check_certificate(smax_cert(claim("1330368/1000", "1330369/1000"), at, 1)).verified);  // hi below it
+  // the delay-0 value claimed for the delay-1 loop (a producer that dropped the delay)
+  EXPECT_FALSE(check_certificate(smax_cert({{"status", "exact"}, {"value", "3996000/1001"}}, {{"stable_at", "1000"}}, 1)).verified);
+  // printed decimals must be the claimed numbers
+  auto printed = smax_cert(claim("1330369/1000", "133037/100"), at, 1);
+  printed["claim"]["printed_lo"] = "1330.369";
+  printed["claim"]["printed_hi"] = "1330.371";
+  EXPECT_FALSE(check_certificate(printed).verified);
+}
+
+// Not stable at small K: a spring alone on the sampled mass (B = 0): c = (z - 1)^2 + a (z + 1) with
+// a = K T^2/2, c(0)/lc = 1 + a > 1, NOT stable for every K > 0, and D = K T^4 (2 K T m)^2/(4 m^5) has
+// no positive root: K_max = 0. A damper gain K (z - 1)/(T z) leaves the mass's root at z = 1 for every
+// K: D = 0 identically, K_max = 0.
+TEST(StabilityMaxCheck, NotStableAtSmallGains) {
+  for (int delay : {0, 1}) {
+    const Verdict v = check_certificate(smax_cert({{"status", "exact"}, {"value", "0"}}, {{"unstable_at", "1"}}, delay, "K + B*(z-1)/(T*z)",
+                                                  {{"m", "1"}, {"B", "0"}}));
+    EXPECT_TRUE(v.verified) << v.reason;
+  }
+  const Verdict fixed = check_certificate(smax_cert({{"status", "exact"}, {"value", "0"}}, {{"unstable_at", "5"}}, 0, "K*(z-1)/(T*z)", {{"m", "1"}}));
+  EXPECT_TRUE(fixed.verified) << fixed.reason;
+  EXPECT_NE(fixed.reason.find("D = 0 identically"), std::string::npos) << fixed.reason;
+  // K_max = 0 claimed for the stable wall: stable at 1, or (above the crossing) D has a root below
+  EXPECT_FALSE(check_certificate(smax_cert({{"status", "exact"}, {"value", "0"}}, {{"unstable_at", "1"}})).verified);
+  const Verdict past = check_certificate(smax_cert({{"status", "exact"}, {"value", "0"}}, {{"unstable_at", "5000"}}));
+  EXPECT_FALSE(past.verified);
+  EXPECT_NE(past.reason.find("root(s) in (0, 5000]"), std::string::npos) << past.reason;
+}
+
+TEST(StabilityMaxCheck, MalformedNamesTheField) {
+  auto expect_field = [](const nlohmann::json& j, const std::string& field) {
+    try {
+      const Verdict v = check_certificate(j);
+      ADD_FAILURE() << "not refused as malformed: " << v.reason;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  const nlohmann::json claim{{"status", "exact"}, {"value", "3996000/1001"}}, at{{"stable_at", "1000"}};
+  expect_field(smax_cert(claim, at, 0, "K*K + B*(z-1)/(T*z)"), "not affine");
+  expect_field(smax_cert(claim, at, 0, "K + B*(z-1)/(T*z)", {{"m", "1"}, {"B", "2"}, {"K", "1"}}), "model.set");
+  expect_field(smax_cert(claim, {{"stable_at", "1000"}, {"unstable_at", "1"}}), "evidence.unstable_at");
+  expect_field(smax_cert(claim, nlohmann::json::object()), "evidence.stable_at");
+  auto c = smax_cert(claim, at);
+  c["model"]["plant"] = "1/((m + K)*s^2)";
+  expect_field(c, "model.plant");
+  c = smax_cert(claim, at);
+  c["model"]["plant"] = "1/(m*s^2 + s)";
+  expect_field(c, "pole off s = 0");
+  c = smax_cert(claim, at);
+  c["model"].erase("name");
+  expect_field(c, "model.name");
+  c = smax_cert(claim, at);
+  c["model"]["H"] = "K*z^2";
+  expect_field(c, "not causal");
 }
 
 TEST(MaxPositive, KnownSigns) {

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), and its
+"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), its
+`stability-max` kind on the mass on a virtual wall with delays 0 and 1 (class StabilityMax), and its
 `stability` kind on loops whose characteristic polynomial and verdict
 are known by hand (the same cases as tests/check/test_check.cpp's StabilityCheck, which checks the
 C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), of 1/s^3 at T = 1
@@ -214,6 +215,85 @@ class BoundMax(unittest.TestCase):
                          ("(K + 1)^-2", (0, 2)), ("K + 1/K", (2, 1))):
             d = deg(text)
             self.assertEqual((d.n, d.d), nd, text)
+
+
+def smax_cert(claim, evidence, delay=0, H="K + B*(z-1)/(T*z)", sets=None):
+    return {"certificate": "hapstab", "version": 1, "kind": "stability-max",
+            "model": {"plant": "1/(m*s^2)", "H": H, "set": sets or {"m": "1", "B": "2"}, "name": "K", "T": "1/1000", "delay": delay},
+            "claim": claim, "evidence": evidence}
+
+
+class StabilityMax(unittest.TestCase):
+    """The cases of test_check.cpp's StabilityMaxCheck: the mass 1/(m s^2) on K + B (z - 1)/(T z),
+    m = 1, T = 1/1000, B = 2. Delay 0: c = z (z - 1)^2 + g (z + 1)((K + B/T) z - B/T), g = T^2/(2 m),
+    D(K) = K T^4 (4 B m - 2 B^2 T - K T (2 m + B T))^2/(4 m^5) = K (1001 K - 3996000)^2/10^24, and
+    the loop is stable iff 0 < K < (2B/T)(2m - BT)/(2m + BT) = 3996000/1001 (Jury). Delay 1: K_max is
+    the positive root of K^2 + 6000002 K - 7983992000 (the factor of D), 1330.3699091941487...
+    B = 0 (a spring alone): NOT stable for every K > 0, D has no positive root; H = K (z - 1)/(T z):
+    a root at z = 1 for every K, D = 0."""
+    AT = {"stable_at": "1000"}
+
+    def test_resultant_by_hand(self):
+        F = Fraction
+        self.assertEqual(hc.reciprocal_resultant([F(-1, 2), F(1)]), F(3, 4))   # c* = 1 - z/2 at 1/2
+        self.assertEqual(hc.reciprocal_resultant([F(0), F(0), F(1)]), F(1))     # z^2: c* = 1
+        self.assertEqual(hc.reciprocal_resultant([F(-1), F(1)]), F(0))          # z = 1
+        z, g = [F(0), F(1)], [F(1, 2000000)]
+        c0 = hc.padd(hc.pmul(z, hc.ppow([F(-1), F(1)], 2)), hc.pmul(hc.pmul(g, [F(1), F(1)]), [F(-2000), F(2000)]))
+        c1 = hc.pmul(hc.pmul(g, [F(1), F(1)]), z)
+        f = [F(-3996000), F(1001)]
+        D = hc.resultant_in_K(c0, c1)
+        self.assertEqual(D, hc.pscale(hc.pmul(z, hc.pmul(f, f)), F(1, 10 ** 24)))
+        self.assertEqual([hc.positive_roots(D, F(3996000, 1001), False), hc.positive_roots(D, F(3996000, 1001), True),
+                          hc.positive_roots(D, None, False)], [0, 1, 1])
+
+    def test_wall_without_delay(self):
+        ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
+        self.assertEqual(hc.check(smax_cert(ex("3996000/1001"), self.AT))[0], 0)
+        code, why = hc.check(smax_cert(ex("3996001/1001"), self.AT))
+        self.assertEqual(code, 1)
+        self.assertIn("root(s) in (0, ", why)
+        code, why = hc.check(smax_cert(ex("3995999/1001"), self.AT))
+        self.assertEqual(code, 1)
+        self.assertIn("is stable", why)
+        self.assertEqual(hc.check(smax_cert(ex("3996000/1001"), {"stable_at": "3996000/1001"}))[0], 1)
+        code, why = hc.check(smax_cert({"status": "certified", "infinite": True}, self.AT))
+        self.assertEqual(code, 1)
+        self.assertIn("(0, inf)", why)
+
+    def test_wall_with_one_sample_delay(self):
+        cl = lambda lo, hi: {"status": "certified", "lo": lo, "hi": hi}  # noqa: E731
+        at = {"stable_at": "1"}
+        self.assertEqual(hc.check(smax_cert(cl("1330369/1000", "133037/100"), at, 1))[0], 0)
+        self.assertEqual(hc.check(smax_cert(cl("133037/100", "1330371/1000"), at, 1))[0], 1)
+        self.assertEqual(hc.check(smax_cert(cl("1330368/1000", "1330369/1000"), at, 1))[0], 1)
+        self.assertEqual(hc.check(smax_cert({"status": "exact", "value": "3996000/1001"}, self.AT, 1))[0], 1)
+
+    def test_not_stable_at_small_gains(self):
+        zero = {"status": "exact", "value": "0"}
+        for delay in (0, 1):
+            self.assertEqual(hc.check(smax_cert(zero, {"unstable_at": "1"}, delay, sets={"m": "1", "B": "0"}))[0], 0)
+        code, why = hc.check(smax_cert(zero, {"unstable_at": "5"}, 0, "K*(z-1)/(T*z)", {"m": "1"}))
+        self.assertEqual(code, 0)
+        self.assertIn("D = 0 identically", why)
+        self.assertEqual(hc.check(smax_cert(zero, {"unstable_at": "1"}))[0], 1)
+        code, why = hc.check(smax_cert(zero, {"unstable_at": "5000"}))
+        self.assertEqual(code, 1)
+        self.assertIn("root(s) in (0, 5000]", why)
+
+    def test_malformed(self):
+        ex = {"status": "exact", "value": "3996000/1001"}
+        for c, field in ((smax_cert(ex, self.AT, 0, "K*K + B*(z-1)/(T*z)"), "not affine"),
+                         (smax_cert(ex, self.AT, 0, sets={"m": "1", "B": "2", "K": "1"}), "model.set"),
+                         (smax_cert(ex, {"stable_at": "1000", "unstable_at": "1"}), "evidence.unstable_at"),
+                         (smax_cert(ex, {}), "evidence.stable_at"),
+                         (smax_cert(ex, self.AT, 0, "K*z^2"), "not causal")):
+            code, why = hc.check(c)
+            self.assertEqual(code, 2, why)
+            self.assertIn(field, why)
+        c = smax_cert(ex, self.AT)
+        c["model"]["plant"] = "1/((m + K)*s^2)"
+        self.assertEqual(hc.check(c)[0], 2)
 
 
 def level_cert(H, kind, claim, witness):

@@ -4,11 +4,13 @@
 #include <fstream>
 
 #include "cli/command.hpp"
+#include "hapstab/check/certificate.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interval.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
+#include "hapstab/stability/max_evidence.hpp"
 
 namespace hapstab::cli {
 
@@ -115,6 +117,37 @@ void check_certificate_size(const RationalFunction<rational>& H, const passivity
                      std::to_string(certificate_max_size) + " (no certificate)");
 }
 
+// --set NAME=VALUE as written, each value an exact "p/q".
+nlohmann::json sets_json(const std::vector<std::string>& sets) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : parse_sets(sets)) j[name] = value.str();
+  return j;
+}
+
+// A certified claim of the enclosure as printed (lo_s, hi_s: decimals rounded outward): status
+// "certified", lo and hi those decimals exactly, and the decimals themselves; returns [lo, hi].
+Enclosure<rational> printed_enclosure(nlohmann::json& claim, const std::string& lo_s, const std::string& hi_s) {
+  const rational lo = parse_rational(lo_s, "enclosure"), hi = parse_rational(hi_s, "enclosure");
+  claim["status"] = "certified";
+  claim["lo"] = lo.str();
+  claim["hi"] = hi.str();
+  claim["printed_lo"] = lo_s;
+  claim["printed_hi"] = hi_s;
+  return {lo, hi};
+}
+
+// The model of the one-DOF loop of `stability` as written (plant, H, operator, set, T, delay).
+nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
+  nlohmann::json m;
+  m["plant"] = text.plant;
+  m["H"] = text.H;
+  if (!text.op.empty()) m["operator"] = text.op;
+  m["set"] = sets_json(text.sets);
+  m["T"] = T.str();
+  m["delay"] = text.delay;
+  return m;
+}
+
 nlohmann::json header(const char* kind) {
   nlohmann::json j;
   j["certificate"] = "hapstab";
@@ -139,9 +172,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   nlohmann::json j = header("bound");
   nlohmann::json m;
   m["H"] = tf.H;
-  nlohmann::json sets = nlohmann::json::object();
-  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
-  m["set"] = sets;
+  m["set"] = sets_json(tf.sets);
   m["T"] = p.T.str();
   m["delay"] = p.delay;
   if (p.frac_delay) m["frac_delay"] = p.frac_delay->str();
@@ -157,12 +188,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
     target = b.value;
   } else {
     const auto [lo, hi] = passivity::reported_enclosure(b, digits);  // what is printed, rounded outward
-    claim["status"] = "certified";
-    claim["lo"] = parse_rational(lo, "enclosure").str();
-    claim["hi"] = parse_rational(hi, "enclosure").str();
-    claim["printed_lo"] = lo;
-    claim["printed_hi"] = hi;
-    target = parse_rational(lo, "enclosure");
+    target = printed_enclosure(claim, lo, hi).lo;
   }
   j["claim"] = claim;
   const WitnessObjective obj = witness_objective(p);
@@ -187,9 +213,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   nlohmann::json j = header("bound-max");
   nlohmann::json mo;
   mo["H"] = tf.H;
-  nlohmann::json sets = nlohmann::json::object();
-  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
-  mo["set"] = sets;
+  mo["set"] = sets_json(tf.sets);
   mo["name"] = K;
   mo["T"] = g.base.T.str();
   mo["delay"] = g.base.delay;
@@ -217,12 +241,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
       claim["value"] = m.value.str();
       hi = m.value;
     } else {  // what is printed: the enclosure rounded outward at digits + 3 (cli/bound_max.cpp)
-      const std::string lo_s = decimal_outward(m.enclosure->lo, digits + 3, -1), hi_s = decimal_outward(m.enclosure->hi, digits + 3, +1);
-      claim["lo"] = parse_rational(lo_s, "enclosure").str();
-      claim["hi"] = parse_rational(hi_s, "enclosure").str();
-      claim["printed_lo"] = lo_s;
-      claim["printed_hi"] = hi_s;
-      hi = parse_rational(hi_s, "enclosure");
+      hi = printed_enclosure(claim, decimal_outward(m.enclosure->lo, digits + 3, -1), decimal_outward(m.enclosure->hi, digits + 3, +1)).hi;
     }
   }
   if (!zero) {  // b*(0) <= b0 < b, the printed b*(0) rounded outward
@@ -259,9 +278,7 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
     throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
                      "on the unit circle): no certificate");
   nlohmann::json j = header("passivity-level");
-  nlohmann::json sets = nlohmann::json::object();
-  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
-  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
+  j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
   nlohmann::json claim;
   claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
@@ -271,13 +288,7 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
     claim["value"] = c.enclosure->lo.str();
     hi = c.enclosure->lo;
   } else {  // the enclosure as printed, rounded outward (cmd_passivity_level.cpp)
-    const std::string lo_s = decimal_outward(c.enclosure->lo, digits, -1), hi_s = decimal_outward(c.enclosure->hi, digits, +1);
-    claim["status"] = "certified";
-    claim["lo"] = parse_rational(lo_s, "enclosure").str();
-    claim["hi"] = parse_rational(hi_s, "enclosure").str();
-    claim["printed_lo"] = lo_s;
-    claim["printed_hi"] = hi_s;
-    hi = parse_rational(hi_s, "enclosure");
+    hi = printed_enclosure(claim, decimal_outward(c.enclosure->lo, digits, -1), decimal_outward(c.enclosure->hi, digits, +1)).hi;
   }
   j["claim"] = claim;
   // Re W = -f with f the objective of (z - 1) W at T = 1 (the producer's route): a witness with f >= -hi
@@ -331,20 +342,85 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
                                      const stability::StabilityResult& r, const nlohmann::json& evidence) {
   if (!r.verdict.decided()) throw InputError("--certificate: the verdict is undecided: there is no claim to certify");
   nlohmann::json j = header("stability");
-  nlohmann::json m;
-  m["plant"] = text.plant;
-  m["H"] = text.H;
-  if (!text.op.empty()) m["operator"] = text.op;
-  nlohmann::json sets = nlohmann::json::object();
-  for (const auto& [name, value] : parse_sets(text.sets)) sets[name] = value.str();
-  m["set"] = sets;
-  m["T"] = loop.T.str();
-  m["delay"] = text.delay;
-  j["model"] = m;
+  j["model"] = loop_model_json(text, loop.T);
   j["claim"] = {{"quantity", "Schur stability of the sampled loop: device P(s) behind a zero-order hold, force = -z^-n H(z) x(kT)"},
                 {"stable", r.verdict.holds()},
                 {"status", to_string(r.verdict.status)}};
   j["evidence"] = evidence;
+  return j;
+}
+
+namespace {
+
+// A short rational in (0, x), x > 0: the first continued-fraction convergent of x/2 there.
+rational short_below(const rational& x) {
+  const auto c = first_convergent(x / 2, [&](const rational& y) { return y > 0 && y < x; });
+  return c ? *c : rational(x / 2);
+}
+
+// sup = 0: a K = e > 0 below every positive root of D(K) = Res_z(c, c*) (then the family keeps one
+// verdict on (0, e], NOT stable when the producer's answer holds); 1 when D has none or D = 0.
+rational unstable_point(const stability::Loop& loop) {
+  const auto family = stability::exact_family(loop);
+  if (!family) throw InputError("--certificate: the loop's exact family c0 + K c1 could not be formed");
+  QPoly D = stability::reciprocal_resultant(family->first, family->second);
+  if (D.is_zero()) return rational(1);
+  while (D.coeff(0) == 0) D = divmod(D, QPoly{rational(0), rational(1)}).first;  // the roots at K = 0
+  if (D.degree() < 1) return rational(1);
+  const auto roots = isolate_real_roots(D, rational(0), cauchy_bound(D));
+  if (roots.empty()) return rational(1);
+  RootInterval r = roots.front();
+  while (r.lo <= 0) r = refine_root(D, r, rational((r.hi - r.lo) / 4));  // the root is > 0 (D(0) != 0)
+  return short_below(r.lo);
+}
+
+}  // namespace
+
+nlohmann::json stability_max_certificate(const StabilityText& text, const std::string& K, const stability::Loop& loop,
+                                         const stability::MaxGain& m, int digits) {
+  const auto family = stability::exact_family(loop);
+  if (!family)
+    throw InputError("--certificate: a certificate of stability --max with a device pole off s = 0 (the sampled device's "
+                     "e^{pT} are transcendental) is not implemented yet; devices with every pole at s = 0 have one");
+  if (family->first.degree() > 150)
+    throw InputError("--certificate: the characteristic polynomial has degree " + std::to_string(family->first.degree()) +
+                     ", beyond the checkers' limit of 150 (D(" + K + ") = Res_z(c, c*) has degree up to twice that)");
+  if (m.outcome == Outcome::undecided || (m.status != Status::exact && m.status != Status::certified))
+    throw InputError("--certificate: sup " + K + " is not decided here: there is no claim to certify");
+  nlohmann::json j = header("stability-max");
+  j["model"] = loop_model_json(text, loop.T);
+  j["model"]["name"] = K;
+  nlohmann::json claim{{"quantity", K + "_max = sup{" + K + "0 > 0 : the loop is stable for every " + K + " in (0, " + K +
+                                        "0)} (0 when none), H = H0 + " + K + " H1; the loop of `stability` (device P(s), "
+                                        "zero-order hold, force = -z^-n H(z) x(kT))"},
+                       {"status", to_string(m.status)}};
+  nlohmann::json evidence = nlohmann::json::object();
+  if (m.outcome == Outcome::fails) {  // unstable for every small K: K_max = 0
+    claim["status"] = "exact";
+    claim["value"] = "0";
+    evidence["unstable_at"] = unstable_point(loop).str();
+  } else if (m.infinite) {
+    claim["infinite"] = true;
+    evidence["stable_at"] = "1";
+  } else if (m.exact) {
+    claim["status"] = "exact";
+    claim["value"] = m.exact->str();
+    evidence["stable_at"] = short_below(*m.exact).str();
+  } else {  // the enclosure as printed: digits + 3, rounded outward (cmd_stability.cpp)
+    const nlohmann::json e = enclosure_json(m.enclosure, digits + 3);
+    evidence["stable_at"] = short_below(printed_enclosure(claim, e[0].get<std::string>(), e[1].get<std::string>()).lo).str();
+  }
+  j["claim"] = claim;
+  j["evidence"] = evidence;
+  // the printed claim proven, or no certificate (never a weaker claim written silently)
+  check::Verdict v;
+  try {
+    v = check::check_certificate(j);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
+  }
+  if (!v.verified)
+    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
   return j;
 }
 
@@ -357,9 +433,7 @@ nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnal
     throw InputError("--certificate: H has a pole on the unit circle (the criteria are then limits, or not evaluated): "
                      "no certificate");
   nlohmann::json j = header("wedge");
-  nlohmann::json sets = nlohmann::json::object();
-  for (const auto& [name, value] : parse_sets(tf.sets)) sets[name] = value.str();
-  j["model"] = {{"H", tf.H}, {"set", sets}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
+  j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
   j["claim"] = {{"quantity", "Tsai & Colgate (paper 002): wedge criterion (25), Tsypkin's condition (21), the assumptions of Sec. 2"},
                 {"status", "exact"},
                 {"wedge", a.wedge.verdict.holds()},

@@ -1,4 +1,4 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound`, `r`, `stability` and `wedge` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `passivity-level`, `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
@@ -66,6 +66,17 @@ nlohmann::json stability_evidence(const stability::Loop& loop);
 /// r must be decided.
 nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
                                      const stability::StabilityResult& r, const nlohmann::json& evidence);
+
+/// The certificate of `stability --plant --H --max K` (check/stability_max_check.hpp): the model as
+/// written with K free, the claim as printed (the enclosure at digits + 3 rounded outward, the exact
+/// value, 0, or +inf), the evidence stable_at (a short rational in (0, lo); 1 for +inf) or
+/// unstable_at (sup = 0: below the first positive root of D(K) = Res_z(c, c*),
+/// stability/max_evidence.hpp). The certificate is checked (check/) before it is returned: one that
+/// does not prove the printed claim is an InputError (exit 2, no file) naming what fails, never a
+/// weaker claim. InputError too for an undecided or numeric answer, a device pole off s = 0, a
+/// characteristic polynomial of degree above the checkers' limit (150).
+nlohmann::json stability_max_certificate(const StabilityText& text, const std::string& name, const stability::Loop& loop,
+                                         const stability::MaxGain& m, int digits);
 
 /// The certificate of `wedge` (check/wedge_check.hpp): H as written by --H, the exact verdicts of
 /// (25), (21) and the three assumptions. InputError (exit 2) when H is not given by --H or has a

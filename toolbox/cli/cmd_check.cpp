@@ -73,7 +73,7 @@ int run(const Opts& o) {
 }
 
 const Register reg({"check",
-                    "Verify a certificate written by --certificate (bound, bound-max, passivity-level, r, stability, wedge) without trusting the code that produced "
+                    "Verify a certificate written by --certificate (bound, bound-max, passivity-level, r, stability, stability-max, wedge) without trusting the code that produced "
                     "it: exit 0 verified, 1 refuted, 2 malformed (docs/certificates.md)",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();

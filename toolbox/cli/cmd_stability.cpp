@@ -24,6 +24,8 @@
 // Theorem 5 (JSON theorem5, conservatism; docs/stability.md).
 // With --scene and --max, a run longer than 2 s names its stages on stderr (cli/progress.hpp);
 // --quiet silences them.
+// --certificate FILE: the verdict's certificate (kind stability), with --max NAME the supremum's
+// (kind stability-max, checked before it is written; cli/certificate.hpp, docs/certificates.md).
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -162,6 +164,9 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
 
 int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   const stability::MaxGain m = stability::max_gain(loop, o.digits, o.max_name);
+  if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
+    cli::write_certificate(o.certificate,
+                           cli::stability_max_certificate({o.plant, o.H, o.op, o.delay, o.sets}, o.max_name, loop, m, o.digits));
   const nlohmann::json j = max_json(m, o, loop.T);
   if (o.json) cli::print_json(j);
   else {
@@ -459,12 +464,13 @@ const cli::Register reg(
        app.add_flag("--json", o->json, "JSON output");
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
-                      "FILE` (one-DOF --plant/--H loop, device poles at s = 0; docs/certificates.md)");
+                      "FILE`: kind stability, or stability-max with --max (one-DOF --plant/--H loop, every device pole at "
+                      "s = 0; refused by name: --scene, a pole off s = 0, degree above the checkers' limit, an undecided "
+                      "answer; docs/certificates.md)");
        return [o]() -> int {
-         if (!o->certificate.empty() && (!o->scene.empty() || !o->max_name.empty()))
-           throw InputError(std::string("--certificate: a certificate of stability ") +
-                            (o->max_name.empty() ? "--scene" : "--max") +
-                            " is not implemented yet (one-DOF --plant/--H verdicts have one)");
+         if (!o->certificate.empty() && !o->scene.empty())
+           throw InputError(std::string("--certificate: a certificate of stability --scene") + (o->max_name.empty() ? "" : " --max") +
+                            " is not implemented yet (one-DOF --plant/--H verdicts and their --max have one)");
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);

@@ -16,13 +16,8 @@
 // H0 + K H1 (check/bound_objective.hpp: its own derivation, the band [cos(pi/q), 1] in c =
 // cos(wT/q), evidence.domain_c_lo); f1 <= 0 is that test on the objective of H1 with bound 0.
 //
-// Affinity, proven (never sampled): with H = P(K, z)/Q(K, z), the parser's degree bounds
-// (dn, dd) in K (ParsedExpression::degree_bound, lti/parse.hpp) bound the numerator of
-// H - H0 - K H1 by D = max(dn, dd + 1) in K; H0 = H(0), H1 = H(1) - H(0), and H(k) = H0 + k H1
-// exactly at D - 1 more values k where the expression is defined (a parse that divides by zero
-// at k is skipped; a rational function of K is evaluated exactly wherever the parse succeeds), so
-// the numerator has D + 1 roots and vanishes: H = H0 + K H1 for every K. The checker's own loop
-// (not split_affine, which the producer calls).
+// Affinity, proven (never sampled): check/affine.hpp -- the parser's degree bound D of H in K and
+// H(k) = H0 + k H1 exactly at D + 1 values of K (the checker's own loop, not split_affine).
 //
 // Hypotheses verified on the data: b > 0, T > 0, the delay and eta as in bound_check.hpp, K not
 // in model.set, H depends on K, 0 <= lo <= hi, the printed decimals are the numbers claimed.

@@ -46,12 +46,9 @@ P modulus2(const OnCircle& x) { return x.a * x.a + circle::one_minus_c2() * x.b 
 
 DelayModel read_delay_model(const nlohmann::json& model) {
   DelayModel m;
-  m.T = exact_field(model, "T", "model");
-  if (m.T <= 0) throw InputError("model.T: the sample period must be > 0, got " + m.T.str());
-  if (!model.contains("delay") || !model.at("delay").is_number_integer())
-    throw InputError("model.delay: missing or not an integer (n in z^-n)");
-  m.n = model.at("delay").get<long>();
-  if (m.n < 0 || m.n > 100000) throw InputError("model.delay: " + std::to_string(m.n) + " is outside [0, 100000]");
+  const PeriodDelay pd = read_period_delay(model);
+  m.T = pd.T;
+  m.n = pd.n;
   m.td = model.contains("frac_delay") ? exact_field(model, "frac_delay", "model") : rational(0);
   if (m.td < 0) throw InputError("model.frac_delay: the delay t_d must be >= 0, got " + m.td.str());
   m.eta = exact_field(model, "eta", "model");

@@ -12,8 +12,10 @@
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
+#include "hapstab/check/stability_max_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -64,15 +66,80 @@ void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> k
   }
 }
 
+Parts certificate_parts(const nlohmann::json& cert) {
+  only_fields(cert, {"certificate", "version", "kind", "model", "claim", "evidence", "produced_by"}, "certificate");
+  return {object_field(cert, "model", "certificate"), object_field(cert, "claim", "certificate"),
+          object_field(cert, "evidence", "certificate")};
+}
+
+ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite) {
+  ClaimRange r;
+  if (!claim.contains("status") || !claim.at("status").is_string())
+    throw InputError("claim.status: missing or not a string (\"exact\" or \"certified\")");
+  r.status = claim.at("status").get<std::string>();
+  if (r.status != "exact" && r.status != "certified")
+    throw InputError("claim.status: \"" + r.status + "\" is neither \"exact\" nor \"certified\"");
+  if (may_be_infinite && claim.contains("infinite")) {
+    if (!claim.at("infinite").is_boolean()) throw InputError("claim.infinite: not true/false");
+    r.infinite = claim.at("infinite").get<bool>();
+  }
+  if (r.infinite) {
+    for (const char* key : {"value", "lo", "hi", "printed", "printed_lo", "printed_hi"})
+      if (claim.contains(key)) throw InputError(std::string("claim.infinite: true beside claim.") + key);
+    return r;
+  }
+  if (r.status == "exact") {
+    r.lo = r.hi = exact_field(claim, "value", "claim");
+  } else {
+    r.lo = exact_field(claim, "lo", "claim");
+    r.hi = exact_field(claim, "hi", "claim");
+    if (r.lo > r.hi) {
+      r.refuted = "claim: lo = " + r.lo.str() + " > hi = " + r.hi.str();
+      return r;
+    }
+  }
+  for (const char* key : {"printed_lo", "printed_hi", "printed"}) {
+    if (!claim.contains(key)) continue;
+    const auto& v = claim.at(key);
+    if (!v.is_string()) throw InputError(std::string("claim.") + key + ": not a string");
+    const auto q = try_parse_rational(v.get<std::string>());
+    if (!q) throw InputError(std::string("claim.") + key + ": '" + v.get<std::string>() + "' is not a number");
+    const rational& want = std::string(key) == "printed_hi" ? r.hi : r.lo;
+    if (*q != want) {
+      r.refuted = std::string("claim.") + key + " = " + v.get<std::string>() + " is not the claimed " + want.str();
+      return r;
+    }
+  }
+  return r;
+}
+
+std::string decimal(const rational& x) { return to_decimal(x, 12); }
+
+PeriodDelay read_period_delay(const nlohmann::json& model) {
+  PeriodDelay m;
+  m.T = exact_field(model, "T", "model");
+  if (m.T <= 0) throw InputError("model.T: the sample period must be > 0, got " + m.T.str());
+  if (!model.contains("delay") || !model.at("delay").is_number_integer())
+    throw InputError("model.delay: missing or not an integer (n in z^-n)");
+  m.n = model.at("delay").get<long>();
+  if (m.n < 0 || m.n > 100000) throw InputError("model.delay: " + std::to_string(m.n) + " is outside [0, 100000]");
+  return m;
+}
+
+std::map<std::string, rational> model_parameters(const nlohmann::json& model) {
+  std::map<std::string, rational> params;
+  if (!model.contains("set")) return params;
+  const auto& sets = model.at("set");
+  if (!sets.is_object()) throw InputError("model.set: must be an object {NAME: \"p/q\"}");
+  for (auto it = sets.begin(); it != sets.end(); ++it) params[it.key()] = exact_string(it.value(), "model.set." + it.key());
+  return params;
+}
+
 TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T) {
   ParseOptions po;
   po.variable = 'z';
   po.T = T;
-  if (model.contains("set")) {
-    const auto& sets = model.at("set");
-    if (!sets.is_object()) throw InputError("model.set: must be an object {NAME: \"p/q\"}");
-    for (auto it = sets.begin(); it != sets.end(); ++it) po.parameters[it.key()] = exact_string(it.value(), "model.set." + it.key());
-  }
+  po.parameters = model_parameters(model);
   TransferFunction H;
   try {
     H = parse_tf(text, po);
@@ -97,8 +164,9 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
+  if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

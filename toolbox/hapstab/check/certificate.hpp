@@ -7,6 +7,7 @@
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
 //   stability  the one-DOF sampled loop, Schur-Cohn       check/stability_check.hpp
+//   stability-max  its largest stable gain (stability --max)  check/stability_max_check.hpp
 //   wedge   paper 002 (25), (21) and its assumptions      check/wedge_check.hpp
 // Outcomes: Verdict{verified, what was shown} or Verdict{refuted, what failed}; a certificate that
 // is not well formed (a missing or malformed field, an unknown kind) is an InputError naming the
@@ -14,6 +15,8 @@
 #pragma once
 
 #include <initializer_list>
+#include <map>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -46,6 +49,37 @@ const nlohmann::json& object_field(const nlohmann::json& obj, const std::string&
 /// InputError naming where.KEY when obj has a key outside `known`: a field a checker does not read
 /// (a fractional delay, say) would make it verify another model than the one written.
 void only_fields(const nlohmann::json& obj, std::initializer_list<const char*> known, const std::string& where);
+/// A certificate's three parts, each an object (InputError naming the one that is missing or not
+/// an object); the top-level fields must be the known ones (certificate, version, kind, model,
+/// claim, evidence, produced_by).
+struct Parts {
+  const nlohmann::json& model;
+  const nlohmann::json& claim;
+  const nlohmann::json& evidence;
+};
+Parts certificate_parts(const nlohmann::json& certificate);
+/// A claimed range of one number: claim.status "exact" with claim.value (lo = hi) or "certified"
+/// with claim.lo, claim.hi; with may_be_infinite also "infinite": true (then no value, lo, hi or
+/// printed number beside it). The printed decimals (claim.printed_lo, printed_hi, printed) must be
+/// the numbers claimed (what a reader sees is what is proven). InputError when malformed; `refuted`
+/// says why the claim is false on its face (lo > hi, a printed number that is not the one claimed).
+struct ClaimRange {
+  std::string status;
+  rational lo = 0, hi = 0;
+  bool infinite = false;
+  std::optional<std::string> refuted;
+};
+ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite = false);
+/// x to 12 significant digits (the checkers' reasons).
+std::string decimal(const rational& x);
+/// model.T (> 0) and model.delay (an integer n in [0, 100000]); InputError naming the field.
+struct PeriodDelay {
+  rational T = 1;
+  long n = 0;
+};
+PeriodDelay read_period_delay(const nlohmann::json& model);
+/// model.set's exact parameters ({NAME: "p/q"}; none when absent); InputError naming model.set.
+std::map<std::string, rational> model_parameters(const nlohmann::json& model);
 /// The model's H(z): `text` parsed in z with sample period T and model.set's exact parameters
 /// ({NAME: "p/q"}); InputError naming model.set or model.H (also when H is not in z).
 TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T);

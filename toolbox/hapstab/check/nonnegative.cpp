@@ -43,6 +43,18 @@ P odd_part(const P& p) {
 
 }  // namespace
 
+bool descartes_no_root(const P& q, const rational& a, const rational& b) {
+  if (q.degree() <= 0) return true;
+  const P R = reversed(q.compose(P{a, b - a})).compose(P{rational(1), rational(1)});
+  int variations = 0, last = 0;
+  for (const rational& c : R.coeffs()) {
+    const int sg = sign(c);
+    if (sg != 0 && last != 0 && sg != last) ++variations;
+    if (sg != 0) last = sg;
+  }
+  return variations == 0;
+}
+
 int sturm_count(const P& q, const rational& a, const rational& b) {
   std::vector<P> seq{scaled(q), scaled(q.derivative())};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
@@ -72,17 +84,7 @@ std::optional<std::string> nonnegative_on(const P& p, const rational& a, const r
   // Descartes first (cheap, O(d^2)): the roots of odd in (a, b) are those of
   // R(y) = (1 + y)^d q(1/(1 + y)) in y > 0, q(u) = odd(a + (b - a) u); no sign variation in R's
   // coefficients proves there is none. Otherwise Sturm counts them.
-  bool none_inside = odd.degree() <= 0;
-  if (!none_inside) {
-    const P R = reversed(odd.compose(P{a, b - a})).compose(P{rational(1), rational(1)});
-    int variations = 0, last = 0;
-    for (const rational& c : R.coeffs()) {
-      const int sg = sign(c);
-      if (sg != 0 && last != 0 && sg != last) ++variations;
-      if (sg != 0) last = sg;
-    }
-    none_inside = variations == 0;
-  }
+  const bool none_inside = odd.degree() <= 0 || descartes_no_root(odd, a, b);
   if (!none_inside) {
     const int n = sturm_count(odd, a, b);
     if (n > 0)

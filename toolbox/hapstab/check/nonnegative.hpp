@@ -26,6 +26,11 @@ namespace hapstab::check {
 /// or a sign change inside).
 std::optional<std::string> nonnegative_on(const Polynomial<rational>& p, const rational& a, const rational& b);
 
+/// True when Descartes' rule of signs proves that q has no root in the open interval (a, b), a < b:
+/// R(y) = (1 + y)^d q(a + (b - a)/(1 + y)) has no sign variation (its roots y > 0 are q's in (a, b)).
+/// False says nothing.
+bool descartes_no_root(const Polynomial<rational>& q, const rational& a, const rational& b);
+
 /// The number of distinct real roots of the square-free q in (a, b), when q(a), q(b) != 0 (Sturm).
 int sturm_count(const Polynomial<rational>& q, const rational& a, const rational& b);
 

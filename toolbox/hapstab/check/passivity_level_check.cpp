@@ -16,16 +16,11 @@ namespace hapstab::check {
 
 namespace {
 using P = Polynomial<rational>;
-std::string decimal(const rational& x) { return to_decimal(x, 12); }
 }  // namespace
 
 Verdict check_passivity_level(const nlohmann::json& cert) {
   using detail::exact_field;
-  using detail::object_field;
-  const nlohmann::json& model = object_field(cert, "model", "certificate");
-  const nlohmann::json& claim = object_field(cert, "claim", "certificate");
-  const nlohmann::json& evidence = object_field(cert, "evidence", "certificate");
-  detail::only_fields(cert, {"certificate", "version", "kind", "model", "claim", "evidence", "produced_by"}, "certificate");
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"H", "set", "T", "kind"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
   detail::only_fields(evidence, {"witness_c"}, "evidence");
@@ -46,28 +41,10 @@ Verdict check_passivity_level(const nlohmann::json& cert) {
   if (!stable.stable) throw InputError("model.H: G is not Schur stable (" + stable.why + "): the level is not its frequency minimum");
 
   // ---- the claim
-  if (!claim.contains("status") || !claim.at("status").is_string())
-    throw InputError("claim.status: missing or not a string (\"exact\" or \"certified\")");
-  const std::string status = claim.at("status").get<std::string>();
-  rational lo, hi;
-  if (status == "exact") {
-    lo = hi = exact_field(claim, "value", "claim");
-  } else if (status == "certified") {
-    lo = exact_field(claim, "lo", "claim");
-    hi = exact_field(claim, "hi", "claim");
-    if (lo > hi) return {false, "claim: lo = " + lo.str() + " > hi = " + hi.str()};
-  } else {
-    throw InputError("claim.status: \"" + status + "\" is neither \"exact\" nor \"certified\"");
-  }
-  for (const char* key : {"printed_lo", "printed_hi", "printed"}) {
-    if (!claim.contains(key)) continue;
-    const auto& v = claim.at(key);
-    if (!v.is_string()) throw InputError(std::string("claim.") + key + ": not a string");
-    const auto q = try_parse_rational(v.get<std::string>());
-    if (!q) throw InputError(std::string("claim.") + key + ": '" + v.get<std::string>() + "' is not a number");
-    const rational& want = std::string(key) == "printed_hi" ? hi : lo;
-    if (*q != want) return {false, std::string("claim.") + key + " = " + v.get<std::string>() + " is not the claimed " + want.str()};
-  }
+  const detail::ClaimRange range = detail::claim_range(claim);
+  if (range.refuted) return {false, *range.refuted};
+  const std::string& status = range.status;
+  const rational &lo = range.lo, &hi = range.hi;
 
   // ---- Re W = X/Q on the circle, c = cos(theta)
   const circle::OnCircle N = circle::at_circle(G.num()), D = circle::at_circle(G.den());
@@ -79,18 +56,18 @@ Verdict check_passivity_level(const nlohmann::json& cert) {
     if (auto why = max_positive_on(Q, Q, m1, p1))
       throw InputError("model.H: G has a zero on the unit circle (|N|^2 not > 0: " + *why + "): delta* is not Lemma 1's level there");
     if (lo <= 0)
-      throw InputError("claim: an OSP value <= 0 (lo = " + decimal(lo) + ") is an upper bound of Lemma 1's level only: no certificate");
+      throw InputError("claim: an OSP value <= 0 (lo = " + detail::decimal(lo) + ") is an upper bound of Lemma 1's level only: no certificate");
   }
   const std::string name = osp ? "delta*" : "phi*";
   if (auto why = nonnegative_on(X - lo * Q, m1, p1))
-    return {false, name + " >= " + lo.str() + " (" + decimal(lo) + ") fails: X(c) - lo Q(c) on [-1, 1]: " + *why};
+    return {false, name + " >= " + lo.str() + " (" + detail::decimal(lo) + ") fails: X(c) - lo Q(c) on [-1, 1]: " + *why};
   const rational c0 = exact_field(evidence, "witness_c", "evidence");
   if (c0 < -1 || c0 > 1) return {false, "evidence.witness_c = " + detail::shortened(c0) + " is outside [-1, 1]"};
   const rational w0 = X(c0) / Q(c0);  // Q > 0 on [-1, 1]
   if (w0 > hi)
-    return {false, name + " <= " + hi.str() + " (" + decimal(hi) + ") not shown: Re " + (osp ? "1/G" : "G") +
-                       " at the witness c0 = " + detail::shortened(c0) + " is " + decimal(w0) + " > hi"};
-  const std::string what = status == "exact" ? name + " = " + lo.str() : name + " in [" + decimal(lo) + ", " + decimal(hi) + "]";
+    return {false, name + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: Re " + (osp ? "1/G" : "G") +
+                       " at the witness c0 = " + detail::shortened(c0) + " is " + detail::decimal(w0) + " > hi"};
+  const std::string what = status == "exact" ? name + " = " + lo.str() : name + " in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]";
   return {true, what + " (" + (osp ? "OSP" : "ISP") + "; lower bound: X - lo " + (osp ? "|N|^2" : "|D|^2") +
                     " >= 0 on [-1, 1] by Sturm, degree " + std::to_string(std::max(X.degree(), Q.degree())) +
                     "; upper bound: Re " + (osp ? "1/G" : "G") + " at c0 = " + detail::shortened(c0) + "; G Schur stable: " +

@@ -6,11 +6,8 @@
 //   loop    c(z) = z^n L(z) (z - 1)^k + A(z) Nd(z),   H = A/L reduced    (no other cancellation)
 // Claim: "stable" (every root of c in |z| < 1) or "NOT stable".
 //
-// Derivation of P_d (the checker's own; not the producer's Van Loan exponential): with
-// P_eff/s = sum_i b_i / s^(k-i+1), the step response sampled at t = lT is
-// y(l) = sum_i b_i (lT)^m / m!, m = k - i >= 1, and Z{l^m} = S_m(z) with S_0 = z/(z - 1),
-// S_m = -z dS_{m-1}/dz (differentiating sum_l l^(m-1) z^-l); so P_d = ((z - 1)/z) sum_i b_i
-// T^m/m! S_m(z), and Nd = P_d (z - 1)^k must be a polynomial (checked).
+// Derivation of P_d: the checker's own (check/loop_model.hpp: the z-transforms of l^m; not the
+// producer's Van Loan exponential); Nd = P_d (z - 1)^k must be a polynomial (checked).
 //
 // Theorem (Schur 1917, Cohn 1922): a real polynomial p of degree d >= 1 has every root in |z| < 1
 // iff |p_0| < |p_d| and q(z) = (p_d p(z) - p_0 z^d p(1/z))/z, of degree d - 1, has too (a

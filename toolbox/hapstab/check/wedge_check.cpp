@@ -36,11 +36,8 @@ bool claimed(const nlohmann::json& claim, const char* key) {
 }  // namespace
 
 Verdict check_wedge(const nlohmann::json& cert) {
-  using detail::object_field;
-  detail::only_fields(cert, {"certificate", "version", "kind", "model", "claim", "evidence", "produced_by"}, "certificate");
-  const nlohmann::json& model = object_field(cert, "model", "certificate");
-  const nlohmann::json& claim = object_field(cert, "claim", "certificate");
-  detail::only_fields(object_field(cert, "evidence", "certificate"), {}, "evidence");
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  detail::only_fields(evidence, {}, "evidence");
   detail::only_fields(claim, {"quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"}, "claim");
   if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
   const TransferFunction H = parse_model(model);

@@ -1,5 +1,6 @@
 #include "hapstab/stability/sampled_loop.hpp"
 #include "hapstab/stability/long_delay.hpp"
+#include "hapstab/stability/max_evidence.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -440,6 +441,14 @@ std::optional<Polynomial<rational>> exact_characteristic(const Loop& loop) {
   const Prepared p = prepare(loop);
   if (!p.exact) return std::nullopt;
   return to_qp(characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay).c0);
+}
+
+std::optional<std::pair<Polynomial<rational>, Polynomial<rational>>> exact_family(const Loop& loop) {
+  if (!loop.H_gain) throw InputError("stability::exact_family: H_gain is missing");
+  const Prepared p = prepare(loop);
+  if (!p.exact) return std::nullopt;
+  const Characteristic<rational> ch = characteristic(p.wall, sample_exact(p.num, p.den, loop.T), loop.delay);
+  return std::make_pair(to_qp(ch.c0), to_qp(ch.c1));
 }
 
 StabilityResult decide(const Loop& loop) {

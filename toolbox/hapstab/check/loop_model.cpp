@@ -1,0 +1,91 @@
+// hapstab/check/loop_model.cpp -- see loop_model.hpp.
+#include "hapstab/check/loop_model.hpp"
+
+#include <vector>
+
+#include "hapstab/check/certificate.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check::detail {
+
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+
+RF parse_model_field(const nlohmann::json& model, const char* key, char variable, const rational& T,
+                     const std::map<std::string, rational>& params) {
+  const std::string where = std::string("model.") + key;
+  if (!model.contains(key)) throw InputError(where + ": missing");
+  if (!model.at(key).is_string()) throw InputError(where + ": not a string (an expression)");
+  ParseOptions po;
+  po.variable = variable;
+  po.T = T;
+  po.parameters = params;
+  try {
+    const TransferFunction t = parse_tf(model.at(key).get<std::string>(), po);
+    if (t.is_discrete() != (variable == 'z'))
+      throw InputError(std::string("expected a transfer function in ") + variable);
+    return t.H;
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+}
+
+namespace {
+
+/// Nd with P_d = Nd/(z - 1)^k for P_eff = N(s)/s^k (header: Z{l^m} by S_m = -z S'_{m-1}).
+P sampled_numerator(const P& N, int k, const rational& T) {
+  const RF z(P{rational(0), rational(1)});
+  RF S = z / RF(P{rational(-1), rational(1)});  // S_0 = z/(z - 1)
+  RF Y(rational(0));
+  rational Tm(1), fact(1);
+  std::vector<RF> Sm{S};
+  for (int m = 1; m <= k; ++m) Sm.push_back(-(z * Sm.back().derivative()));
+  for (int m = 1; m <= k; ++m) {
+    Tm *= T;
+    fact *= m;
+    const rational b = N.coeff(k - m);  // the coefficient of s^(k-m): b / s^(m+1) in P_eff/s
+    if (b != 0) Y += RF(b * Tm / fact) * Sm[static_cast<size_t>(m)];
+  }
+  const RF Pd = RF(P{rational(-1), rational(1)}) / z * Y;
+  const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(k));
+  const auto [q, rem] = divmod(Dk, Pd.den());
+  if (!rem.is_zero()) throw InputError("model.plant: the sampled device's denominator is not (z - 1)^k (checker defect)");
+  return Pd.num() * q;
+}
+
+}  // namespace
+
+LoopDevice read_loop_device(const nlohmann::json& model) {
+  LoopDevice d;
+  if (!model.contains("plant")) throw InputError("model.plant: missing");
+  const PeriodDelay pd = read_period_delay(model);
+  d.T = pd.T;
+  d.n = pd.n;
+  d.params = model_parameters(model);
+  RF dev = parse_model_field(model, "plant", 's', d.T, d.params);
+  if (dev.is_zero()) throw InputError("model.plant: zero (the device does not move)");
+  if (model.contains("operator")) {
+    const RF s(P{rational(0), rational(1)});
+    const RF one = RF(rational(1)) + s * parse_model_field(model, "operator", 's', d.T, d.params) * dev;
+    if (one.is_zero()) throw InputError("model.operator: 1 + s Z_op P is zero");
+    dev = dev / one;
+  }
+  if (dev.num().degree() >= dev.den().degree()) throw InputError("model.plant: the device is not strictly proper");
+  d.k = dev.den().degree();
+  for (int i = 0; i < d.k; ++i)
+    if (dev.den().coeff(i) != 0)
+      throw InputError("model.plant: the device has a pole off s = 0 (e^{pT} is transcendental): this checker handles "
+                       "devices with every pole at s = 0 only");
+  d.Nd = sampled_numerator(dev.num() * P(rational(1) / dev.den().leading()), d.k, d.T);
+  return d;
+}
+
+P loop_polynomial(const LoopDevice& d, const P& A, const P& L) {
+  std::vector<rational> zn(static_cast<size_t>(d.n) + 1, rational(0));
+  zn.back() = 1;
+  const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
+  return P(zn) * L * Dk + A * d.Nd;
+}
+
+}  // namespace hapstab::check::detail
