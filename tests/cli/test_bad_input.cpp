@@ -202,6 +202,7 @@ std::vector<Case> catalogue_rest(const std::string& out) {
       {"reproduce", "--only", {"--out", out, "--only", "999"}, "--only"},
       {"reproduce", "--format", {"--out", out, "--format", "gif"}, "--format"},
       {"reproduce", "--quiet", {"--out", out, "--quiet=maybe"}, "--quiet"},
+      {"reproduce", "--table", {"--out", out, "--only", "toolbox", "--table", "/nonexistent.md"}, "--table"},
       {"figure", "name", {"nosuchfigure", "--out", out}, "unknown figure"},
       {"figure", "name", {"../../escape", "--out", out}, "unknown figure"},
       {"figure", "--out", {"sim_tightness", "--out", "/proc/nope"}, "--out"},

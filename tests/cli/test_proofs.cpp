@@ -135,26 +135,49 @@ TEST(ProofTable, EveryColumnIsCompared) {
 
 // End to end: `hapstab proofs --only ext --table T` with one method cell of the real table
 // changed exits 1 and names the claim and the column.
-TEST(ProofTable, CommandFailsOnAChangedMethodCell) {
+namespace {
+// proofs/README.md with the method cell of claim `id` (an exact claim) changed to numeric
+fs::path table_with_changed_method(const std::string& id) {
   std::ifstream in(fs::path(HAPSTAB_SOURCE_DIR) / "proofs" / "README.md");
   std::string table((std::istreambuf_iterator<char>(in)), {});
-  const std::string key = "| `ext.friction.spring_damper` |";
+  const std::string key = "| `" + id + "` |";
   const size_t at = table.find(key);
-  ASSERT_NE(at, std::string::npos);
+  EXPECT_NE(at, std::string::npos) << id;
   const size_t end = table.find('\n', at);
   const size_t m = table.rfind("| exact |", end);
-  ASSERT_TRUE(m != std::string::npos && m > at);
+  EXPECT_TRUE(m != std::string::npos && m > at) << id;
   table.replace(m, 9, "| numeric |");
-  const fs::path f = fs::path(::testing::TempDir()) / "claim_table_changed.md";
-  {
-    std::ofstream out(f);
-    out << table;
-  }
+  const fs::path f = fs::path(::testing::TempDir()) / ("claim_table_changed_" + id + ".md");
+  std::ofstream(f) << table;
+  return f;
+}
+}  // namespace
+
+TEST(ProofTable, CommandFailsOnAChangedMethodCell) {
+  const fs::path f = table_with_changed_method("ext.friction.spring_damper");
   const auto r = hapstab_test::run_cli("proofs --quiet --only ext --table " + f.string());
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("claim `ext.friction.spring_damper`: column method: the table says 'numeric', the claim 'exact'"),
             std::string::npos)
       << r.out;
+}
+
+// The main job compares the table as well (`reproduce --table`, scripts/main-job): the same
+// change fails it, named, and the summary line counts the difference.
+TEST(ProofTable, ReproduceFailsOnAChangedMethodCell) {
+  const fs::path f = table_with_changed_method("001.sec6.H1");
+  const fs::path out = fs::path(::testing::TempDir()) / "reproduce_table";
+  fs::remove_all(out);
+  const auto r = hapstab_test::run_cli("reproduce --quiet --only 001 --format png --out " + out.string() + " --table " + f.string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("hapstab reproduce: " + f.string() + ": claim `001.sec6.H1`: column method: the table says 'numeric', the claim 'exact'"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("1 differences from the claim table " + f.string()), std::string::npos) << r.out;
+  // --only python runs no proof: nothing to compare, refused by name
+  const auto none = hapstab_test::run_cli("reproduce --only python --out " + out.string() + " --table " + f.string());
+  EXPECT_EQ(none.code, 2) << none.out;
+  EXPECT_NE(none.out.find("--table: --only python runs no proof"), std::string::npos) << none.out;
 }
 
 // `hapstab proofs > file` keeps the layout README shows: each "[proof k/N]" header on stdout with

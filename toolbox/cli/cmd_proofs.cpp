@@ -3,7 +3,6 @@
 #include <iostream>
 #include <memory>
 #include <set>
-#include <sstream>
 
 #include "cli/command.hpp"
 #include "cli/reproduce.hpp"
@@ -11,18 +10,6 @@
 
 namespace hapstab::cli {
 namespace {
-
-// Every claim must stand in the claim table (proofs/README.md) with the row it states: each
-// column is compared (reproduce.hpp, compare_claim_table) and every difference named.
-int check_table(const std::vector<proofs::ClaimResult>& claims, const std::string& table, const std::string& only) {
-  std::ifstream in(table);
-  if (!in) throw InputError("--table: cannot read '" + table + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const auto msgs = compare_claim_table(claims, ss.str(), only);
-  for (const auto& m : msgs) std::cerr << "hapstab proofs: " << table << ": " << m << "\n";
-  return static_cast<int>(msgs.size());
-}
 
 struct Opts {
   std::string only, out, table;
@@ -45,7 +32,8 @@ int run(const Opts& o) {
     rep.seconds = seconds;
     write_report_md(rep, o.out);
   }
-  int missing = o.table.empty() ? 0 : check_table(claims, o.table, o.only);
+  // every claim must stand in the claim table with the row it states, each column compared
+  int missing = o.table.empty() ? 0 : claim_table_differences(claims, o.table, o.only, "proofs");
   if (o.print_table) {
     std::cout << claim_table_header();
     for (const auto& c : claims) std::cout << claim_table_row(c) << "\n";

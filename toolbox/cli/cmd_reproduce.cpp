@@ -3,13 +3,15 @@
 // gnuplot, in every requested format), then
 // DIR/report.md and DIR/index.html. The certificate of every claim instance a proof asks for goes to
 // DIR/certificates/, checked by `hapstab check` and the independent checker (cli/reproduce_certificates.hpp).
-// Exit 1 when a claim fails, a certificate is not written, not the claim's, refuted or malformed, a
+// With --table, the claim table is compared as `proofs --table` does (the main job passes proofs/README.md).
+// Exit 1 when a claim fails or differs from its row of that table, a certificate is not written, not the claim's, refuted or malformed, a
 // scene does not behave as its [reproduce] table says, a figure cannot be drawn, or a plots/ script
 // has no figure behind it.
 // The bench charts run the bench programs (bench/README.md); without them they are reported
 // "not reproduced" (not a failure).
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -34,7 +36,7 @@ std::vector<std::string> parse_formats(const std::string& text) {
 }
 
 struct Opts {
-  std::string out = "out", only, format = "png,pdf,svg,tex";
+  std::string out = "out", only, format = "png,pdf,svg,tex", table;
   bool quiet = false;
 };
 
@@ -43,17 +45,23 @@ int run(const Opts& o) {
   if (!papers.count(o.only))
     throw InputError("--only: unknown paper '" + o.only + "' (expected 000, 001, 002, ext, toolbox or python)");
   const auto formats = parse_formats(o.format);
+  const bool proofs_run = o.only != "toolbox" && o.only != "python";
+  if (!o.table.empty() && !proofs_run)
+    throw InputError("--table: --only " + o.only + " runs no proof, so there is no claim to compare with the table");
+  if (!o.table.empty() && !std::ifstream(o.table)) throw InputError("--table: cannot read '" + o.table + "'");
   const fs::path dir = output_folder(o.out, "--out");
   auto t0 = std::chrono::steady_clock::now();
   ReportInput rep;
   if (!o.quiet) std::cerr << "reproduce: running the proofs\n";
   double s = 0;
-  if (o.only != "toolbox" && o.only != "python") rep.claims = run_proofs(o.only, true, s);
+  if (proofs_run) rep.claims = run_proofs(o.only, true, s);
   size_t claim_fails = 0;
   for (const auto& c : rep.claims) {
     claim_fails += !c.holds;
     if (!c.holds) std::cerr << "reproduce: claim " << c.id << " FAILS: " << c.evidence << "\n";
   }
+  // as `proofs --table` does: every claim has its row in the claim table, each column equal
+  const int table_diffs = o.table.empty() ? 0 : claim_table_differences(rep.claims, o.table, o.only, "reproduce");
   if (!o.quiet) std::cerr << "reproduce: " << rep.claims.size() << " claims checked in " << s << " s\n";
   if (!rep.claims.empty()) {
     if (!o.quiet) std::cerr << "reproduce: writing and checking the certificates (DIR/certificates)\n";
@@ -120,9 +128,11 @@ int run(const Opts& o) {
   std::cout << "reproduce: " << rep.claims.size() - claim_fails << " claims hold, " << claim_fails << " fail; "
             << certificate_counts(rep.certificate_summary, false) << "; " << rep.scenes.size() - scene_fails << " scene runs as expected, " << scene_fails << " not; "
             << rep.figures.size() - fig_fails - fig_skipped << " figures drawn, " << fig_fails << " failed, "
-            << fig_skipped << " not reproduced on this build; " << rep.seconds << " s; report: "
+            << fig_skipped << " not reproduced on this build; "
+            << (o.table.empty() ? "" : std::to_string(table_diffs) + " differences from the claim table " + o.table + "; ")
+            << rep.seconds << " s; report: "
             << (dir / "report.md").string() << " and " << (dir / "index.html").string() << "\n";
-  return (claim_fails || cert_fails || fig_fails || scene_fails) ? exit_property_fails : exit_ok;
+  return (claim_fails || table_diffs || cert_fails || fig_fails || scene_fails) ? exit_property_fails : exit_ok;
 }
 
 const Register reg({"reproduce",
@@ -135,6 +145,9 @@ const Register reg({"reproduce",
                       app.add_option("--format", o->format, "Figure formats, comma-separated: png,pdf,svg,tex (tex = cairolatex, in figures/tex/)")
                           ->capture_default_str();
                       app.add_flag("--quiet", o->quiet, "No progress on stderr");
+                      app.add_option("--table", o->table,
+                                     "Also fail unless every claim has its row, every column equal, in this claim table "
+                                     "(proofs/README.md), as `proofs --table` does");
                       return [o]() { return run(*o); };
                     }});
 

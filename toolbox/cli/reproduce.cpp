@@ -118,6 +118,17 @@ std::vector<std::string> compare_claim_table(const std::vector<ClaimResult>& cla
   return msgs;
 }
 
+int claim_table_differences(const std::vector<ClaimResult>& claims, const std::string& table, const std::string& papers_run,
+                            const std::string& who) {
+  std::ifstream in(table);
+  if (!in) throw InputError("--table: cannot read '" + table + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const auto msgs = compare_claim_table(claims, ss.str(), papers_run);
+  for (const auto& m : msgs) std::cerr << "hapstab " << who << ": " << table << ": " << m << "\n";
+  return static_cast<int>(msgs.size());
+}
+
 std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double& seconds) {
   std::vector<ClaimResult> all;
   auto t0 = std::chrono::steady_clock::now();

@@ -60,5 +60,10 @@ std::string claim_table_header();
 /// ("" = all) without a claim. Empty when they agree.
 std::vector<std::string> compare_claim_table(const std::vector<proofs::ClaimResult>& claims, const std::string& text,
                                              const std::string& papers_run);
+/// compare_claim_table against the file `table` (InputError when it cannot be read): prints each
+/// difference on stderr as "hapstab WHO: TABLE: message" and returns their number (`proofs --table`,
+/// `reproduce --table`).
+int claim_table_differences(const std::vector<proofs::ClaimResult>& claims, const std::string& table,
+                            const std::string& papers_run, const std::string& who);
 
 }  // namespace hapstab::cli
