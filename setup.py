@@ -72,9 +72,13 @@ class CMakeBuild(build_ext):
         jobs = os.environ.get("HAPSTAB_JOBS", str(os.cpu_count() or 1))
         if build is None:
             build = Path(self.build_temp).resolve() / "cmake"
+            # a new folder with Ninja when it is installed, as scripts/generator-env says why
+            env = dict(os.environ)
+            if not env.get("CMAKE_GENERATOR") and shutil.which("ninja"):
+                env["CMAKE_GENERATOR"] = "Ninja"
             subprocess.check_call(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                                    "-DHAPSTAB_TESTS=OFF", "-DHAPSTAB_BENCH=OFF", "-DHAPSTAB_PYTHON=ON",
-                                   f"-DPython3_EXECUTABLE={sys.executable}"])
+                                   f"-DPython3_EXECUTABLE={sys.executable}"], env=env)
         cache = (build / "CMakeCache.txt").read_text(encoding="utf-8", errors="replace")
         if not re.search(r"^HAPSTAB_PYTHON:BOOL=ON$", cache, re.M):
             raise RuntimeError(f"{build}: the Python module is off there (HAPSTAB_PYTHON=OFF, or pybind11 was not "
