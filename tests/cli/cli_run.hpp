@@ -21,6 +21,14 @@
 #include <string>
 #include <vector>
 
+// A test that runs `proofs` or `reproduce` of a paper starts with this: a build without the proofs
+// (HAPSTAB_PROOFS=OFF, the sanitizer build) has none to run, and the command refuses (exit 2).
+#if defined(HAPSTAB_PROOFS_BUILT) && !HAPSTAB_PROOFS_BUILT
+#define HAPSTAB_NEEDS_PROOFS() GTEST_SKIP() << "built without the proofs (HAPSTAB_PROOFS=OFF)"
+#else
+#define HAPSTAB_NEEDS_PROOFS() static_cast<void>(0)
+#endif
+
 namespace hapstab_test {
 
 struct CliRun {

@@ -51,6 +51,7 @@ hapstab_test::CliRun reproduce(const fs::path& root) {
 }  // namespace
 
 TEST(CmdReproduce, SceneExpectationsDecideTheExitCode) {
+  HAPSTAB_NEEDS_PROOFS();
   // growing and generating energy is what happens below b*: claiming it decays must fail
   const fs::path bad = data_tree("repro_bad", below_with("simulate = { trend = \"decaying\", energy_generated = \"> 1\" }"));
   auto r = reproduce(bad);
@@ -66,6 +67,7 @@ TEST(CmdReproduce, SceneExpectationsDecideTheExitCode) {
 }
 
 TEST(CmdReproduce, MalformedExpectationIsAFailureThatSaysWhy) {
+  HAPSTAB_NEEDS_PROOFS();
   const fs::path root = data_tree("repro_malformed", below_with("simulate = { energy_generated = \"> lots\" }"));
   const auto r = reproduce(root);
   EXPECT_EQ(r.code, 1) << r.out;
@@ -77,6 +79,7 @@ TEST(CmdReproduce, MalformedExpectationIsAFailureThatSaysWhy) {
 // a missing key read as null = false, a non-boolean counted as true when non-null, and a scene
 // without expectations passed on exit 0 or 1.
 TEST(CmdReproduce, ExpectationsAreStrict) {
+  HAPSTAB_NEEDS_PROOFS();
   struct Case {
     std::string name, table, why;
   };

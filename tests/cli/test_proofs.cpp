@@ -154,6 +154,7 @@ fs::path table_with_changed_method(const std::string& id) {
 }  // namespace
 
 TEST(ProofTable, CommandFailsOnAChangedMethodCell) {
+  HAPSTAB_NEEDS_PROOFS();
   const fs::path f = table_with_changed_method("ext.friction.spring_damper");
   const auto r = hapstab_test::run_cli("proofs --quiet --only ext --table " + f.string());
   EXPECT_EQ(r.code, 1) << r.out;
@@ -165,6 +166,7 @@ TEST(ProofTable, CommandFailsOnAChangedMethodCell) {
 // The main job compares the table as well (`reproduce --table`, scripts/main-job): the same
 // change fails it, named, and the summary line counts the difference.
 TEST(ProofTable, ReproduceFailsOnAChangedMethodCell) {
+  HAPSTAB_NEEDS_PROOFS();
   const fs::path f = table_with_changed_method("001.sec6.H1");
   const fs::path out = fs::path(::testing::TempDir()) / "reproduce_table";
   fs::remove_all(out);
@@ -183,6 +185,7 @@ TEST(ProofTable, ReproduceFailsOnAChangedMethodCell) {
 // `hapstab proofs > file` keeps the layout README shows: each "[proof k/N]" header on stdout with
 // its claims (stderr is left out here), and a statement with "<" reads as written in report.md.
 TEST(ProofOutput, HeadersAndClaimsOnStdoutAndReadableCells) {
+  HAPSTAB_NEEDS_PROOFS();
   const std::string cmd = std::string(HAPSTAB_CLI) + " proofs --only 001 2>/dev/null";
   FILE* p = popen(cmd.c_str(), "r");
   ASSERT_NE(p, nullptr);

@@ -30,6 +30,7 @@ bool have_python() { return fs::exists("/usr/bin/python3"); }
 }  // namespace
 
 TEST(CmdReproduce, CertificatesAreWrittenCheckedAndLinked) {
+  HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fs::path(::testing::TempDir()) / "repro_certificates";
   fs::remove_all(root);
   const auto r = hapstab_test::run_cli("reproduce --only 001 --format png --quiet --out " + (root / "out").string());

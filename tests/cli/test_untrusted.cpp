@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli/cli_run.hpp"  // HAPSTAB_NEEDS_PROOFS
 #include "test_files.hpp"
 #include "hapstab/report/process.hpp"
 
@@ -176,6 +177,7 @@ TEST(Untrusted, FigureNamesCannotClimbOutOfOut) {
 }
 
 TEST(Untrusted, ReproduceEscapesSceneTextAndUsesNoShell) {
+  HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fresh_dir("reproduce");
   fs::create_directories(root / "examples");
   fs::copy(fs::path(HAPSTAB_SOURCE_DIR) / "plots", root / "plots");

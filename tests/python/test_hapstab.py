@@ -76,6 +76,14 @@ def test_the_binding_runs_no_command_line():
 
 # ---- errors in the words of the call ---------------------------------------------------------
 
+def test_the_module_has_no_proofs_and_says_so():
+    # the module leaves the proofs out (pip builds less); run("proofs") refuses, never "0 passed"
+    for words in (["proofs", "--quiet"], ["reproduce", "--only", "001", "--out", "/tmp/hapstab-py-no-proofs"]):
+        with pytest.raises(hapstab.InputError) as e:
+            hapstab.run(*words)
+        assert "built without the proofs" in str(e.value), str(e.value)
+
+
 def test_errors_speak_python():
     with pytest.raises(hapstab.InputError) as e:
         hapstab.bound("K", T="1/1000")

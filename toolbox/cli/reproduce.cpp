@@ -133,6 +133,10 @@ std::vector<ClaimResult> run_proofs(const std::string& only, bool quiet, double&
   std::vector<ClaimResult> all;
   auto t0 = std::chrono::steady_clock::now();
   const auto& reg = proofs::registry();
+  if (reg.empty())
+    throw InputError("this program was built without the proofs (the Python module, or a build configured with "
+                     "-DHAPSTAB_PROOFS=OFF such as scripts/configure-asan's): run them with the command of a Release "
+                     "build, build/hapstab");
   size_t i = 0, total = 0;
   for (const auto& p : reg) total += only.empty() || only == p.paper;
   for (const auto& p : reg) {
