@@ -106,6 +106,27 @@ TEST(CmdPassivityLevel, StateSpaceFileMimo) {
   EXPECT_NE(j["lmi"]["method"].get<std::string>().find("CSDP"), std::string::npos);
 }
 
+// A one-input --ss is certified on the model as written, not on its doubles: G = 1 + 1/(z - 1/10)
+// (1/10 has no double). By hand: Re G is least at theta = pi, 1 - 1/(11/10) = 1/11 (ISP); 1/G =
+// 1 - 1/(z + 9/10), Re least at theta = 0: 1 - 1/(19/10) = 9/19 (OSP). Before, the doubles' level
+// came out, and A = 1/3 printed 0.24999999999999999 "exact" for 1/4.
+TEST(CmdPassivityLevel, StateSpaceFileSisoIsTheModelAsWritten) {
+  std::string f = write_tmp("pl_siso_exact.json", R"({"A": [["1/10"]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"})");
+  CliRun r = run("--ss " + f + " --kind isp --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "exact") << r.out;
+  EXPECT_EQ(j["exact"], "1/11") << r.out;
+  CliRun o = run("--ss " + f + " --kind osp --json");
+  ASSERT_EQ(o.code, 0) << o.out;
+  auto k = nlohmann::json::parse(o.out);
+  EXPECT_EQ(k["status"], "exact") << o.out;
+  EXPECT_EQ(k["exact"], "9/19") << o.out;
+  std::string third = write_tmp("pl_siso_third.json", R"({"A": [["1/3"]], "B": [[1]], "C": [[1]], "D": [[1]], "T": "1/100"})");
+  CliRun t = run("--ss " + third + " --kind isp");
+  EXPECT_NE(t.out.find("isp level = 0.25   [exact"), std::string::npos) << t.out;
+}
+
 // Issue 33's example: R diag(g1, g2) R^T, R = (3/5, 4/5; -4/5, 3/5) exactly as written (not its
 // doubles), g1 = 1 + z^-1/2, g2 = 1 + (3/4) z^-2. ISP level exactly 1/4 at theta = pi/2 (the LMI
 // alone gave 0.249999699484, numeric). The OSP level is enclosed, and the LMI's certified lower

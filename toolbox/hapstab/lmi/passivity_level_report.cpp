@@ -5,9 +5,21 @@
 #include <cmath>
 #include <sstream>
 
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::lmi {
+
+namespace {
+// G(z) = D + C (zI - A)^{-1} B of a one-input, one-output model as written, exactly: by the matrix
+// determinant lemma det(zI - A + BC) = det(zI - A) (1 + C (zI - A)^{-1} B), so
+// G = D + (det(zI - A + BC) - det(zI - A)) / det(zI - A).
+RationalFunction<rational> siso_transfer(const StateSpace<rational>& s) {
+  const Polynomial<rational> d = charpoly(s.A);
+  const Mat<rational> closed = s.A - s.B * s.C;
+  return RationalFunction<rational>(charpoly(closed) - d + d * Polynomial<rational>(s.D(0, 0)), d);
+}
+}  // namespace
 
 void check_schur_stable(const StateSpace<double>& sys, const std::string& name) {
   if (sys.states() == 0) return;
@@ -33,7 +45,11 @@ Levels passivity_levels(const LevelModel& m, PassivityKind kind, int lemma, Back
     l = passivity_level_lmi(sys, kind, lemma, backend);
     f = passivity_level_freq(sys, kind, grid);
     if (sys.inputs() == 1)
-      c = m.G ? passivity_level_certified(*m.G, kind, digits) : passivity_level_certified(sys, kind, digits);
+      // the model as written (--H; --ss: its exact entries; --mat: its doubles' exact values)
+      // (a one-input --ss certified on its doubles printed 0.24999999999999999 "exact" for 1/4)
+      c = m.G       ? passivity_level_certified(*m.G, kind, digits)
+          : m.exact ? passivity_level_certified(siso_transfer(*m.exact), kind, digits)
+                    : passivity_level_certified(sys, kind, digits);
     else if (m.exact)
       c = passivity_level_certified_mimo(*m.exact, kind, digits, f.status != Status::failed ? f.theta_min : -1.0);
     else c.note = "certified frequency path: no exact model";
