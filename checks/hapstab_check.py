@@ -1049,6 +1049,30 @@ def positive_definite(H):
     return True
 
 
+def integer_poly(p):
+    """p times a positive rational so that its coefficients are coprime integers."""
+    L = 1
+    for a in p:
+        L = L * a.denominator // gcd(L, a.denominator)
+    ints = [int(a * L) for a in p]
+    g = 0
+    for a in ints:
+        g = gcd(g, a)
+    return [a // g for a in ints] if g else ints
+
+
+def sign_at(p, x):
+    """The sign of the integer polynomial p (non-empty) at the rational x = u/v, v > 0: the sign of
+    v^d p(u/v) = sum p_k u^k v^(d - k), by Horner's rule h <- h u + p_k v^(d - k)."""
+    u, v = x.numerator, x.denominator
+    d = len(p) - 1
+    h, vk = p[d], 1
+    for k in range(d - 1, -1, -1):
+        vk *= v
+        h = h * u + p[k] * vk
+    return (h > 0) - (h < 0)
+
+
 def mimo_level_poly(sys, d, nu):
     """Q(u), u = t^2 = tan^2(theta/2), with Q(u(theta)) = (1 + u)^(mn) 2^m |d(z)|^(2m) det(He G(z) - nu I) on
     z = e^{j theta}, a polynomial of degree <= mn (entries of |d|^2 He G are polynomials of degree <= n in
@@ -1101,10 +1125,17 @@ def mimo_lower(sys, d, lo):
         points.add(Fraction(0))
     else:
         points.add(eps)
+    # Rr square-free: one Sturm sequence for every count, each member scaled to integer coefficients
+    # (a positive factor: the same signs), evaluated homogeneously in integers at x = p/q
+    seq = [integer_poly(q) for q in sturm_seq(Rr)] if len(Rr) > 1 else []
+
+    def sign_variations(x):
+        signs = [v for v in (sign_at(q, x) for q in seq if q) if v != 0]
+        return sum(1 for u, v in zip(signs, signs[1:]) if u != v)
     stack = [(eps, B)] if len(Rr) > 1 else []
     while stack:
         a, b = stack.pop()
-        k = roots_in(Rr, a, b)
+        k = sign_variations(a) - sign_variations(b)  # distinct roots in (a, b), neither end a root
         if k == 0:
             continue
         if k == 1:
@@ -1159,6 +1190,8 @@ def check_passivity_level_mimo(c):
         only(evidence, ("witness_c", "witness_s"), "evidence")
     if refuted:
         return False, refuted
+    if status != "exact":
+        c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
     sys_ = (A, B, C, D)
     why, touches, samples = mimo_lower(sys_, d, lo)
     if why:
@@ -1167,7 +1200,6 @@ def check_passivity_level_mimo(c):
         if not touches:
             return False, "phi* <= %s not shown: He G - v I is regular on the whole circle (phi* > v)" % short(lo)
         return True, "phi* = %s (%dx%d, %d states; %d samples)" % (lo, m, m, n, samples)
-    c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
     if c0 * c0 + s0 * s0 != 1:
         return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
     if positive_definite(he_minus(sys_, (c0, s0), hi)):

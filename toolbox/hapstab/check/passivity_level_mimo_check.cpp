@@ -277,10 +277,12 @@ std::vector<Root> isolate(P S) {
           else r.a = e;
         }
     for (const rational& e : exact) found.push_back({e, e});
-    std::sort(found.begin(), found.end(), [](const Root& x, const Root& y) { return x.a < y.a; });
+    // by (a, b): an exact root e before the interval (e, b) that starts at it
+    std::sort(found.begin(), found.end(), [](const Root& x, const Root& y) { return x.a < y.a || (x.a == y.a && x.b < y.b); });
     // neighbours sharing an end point (not a root): shrink the one that is an interval until there is a gap
     for (size_t i = 0; i + 1 < found.size(); ++i)
-      while (!(found[i].b < found[i + 1].a)) {
+      for (int step = 0; !(found[i].b < found[i + 1].a); ++step) {
+        if (step > 100000) throw NumericalError("check: the roots of det(He G - lo I) were not separated (internal)");
         Root& r = found[i].a < found[i].b ? found[i] : found[i + 1];
         const rational mid = (r.a + r.b) / 2;
         if (S(mid) == 0) r.a = r.b = mid;  // the interval's one root, rational
@@ -352,6 +354,11 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
   if (exact) detail::only_fields(evidence, {}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "witness_s"}, "evidence");
   const rational &lo = range.lo, &hi = range.hi;
+  rational c0, s0;
+  if (!exact) {
+    c0 = exact_field(evidence, "witness_c", "evidence");
+    s0 = exact_field(evidence, "witness_s", "evidence");
+  }
 
   const LowerTest low = lower_test(s, d, lo);
   if (low.fails) return {false, "phi* >= " + lo.str() + " (" + detail::decimal(lo) + ") fails: " + *low.fails};
@@ -362,8 +369,6 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
                                              "everywhere and phi* > v"};
     upper = "det(He G - v I) has a root in [-1, 1], where He G - v I >= 0 is singular";
   } else {
-    const rational c0 = exact_field(evidence, "witness_c", "evidence");
-    const rational s0 = exact_field(evidence, "witness_s", "evidence");
     if (c0 * c0 + s0 * s0 != 1)
       return {false, "evidence: the witness (c0, s0) = (" + detail::shortened(c0) + ", " + detail::shortened(s0) +
                          ") is not on the unit circle (c0^2 + s0^2 != 1)"};
