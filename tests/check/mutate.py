@@ -7,7 +7,9 @@ Produces certificates of `bound` (random virtual environments, integer delays, e
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
 Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
 environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-level` (SISO G of five
-families, ISP and OSP), `r`
+families, ISP and OSP), `passivity-level-mimo` (`passivity-level --ss --kind isp` on random square
+state spaces of five families, its own random stream; mutants edit one entry of A, B, C or D, move lo
+past the level, hi below it, the witness along and off the circle, delete the stability hypothesis), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently), `stability-max` (`stability --max`
