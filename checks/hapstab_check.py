@@ -61,7 +61,13 @@ wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Ts
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+passivity-level-mimo  phi* = min over theta of lambda_min(He G(e^{j theta})), G = C(zI - A)^-1 B + D square,
+       A Schur stable (schur_cohn on det(zI - A), by Faddeev-LeVerrier). Route: Q(u) (mimo_level_poly),
+       u = tan^2(theta/2), interpolated from exact determinants of He G - lo I at circle points; phi* >= lo
+       iff He G - lo I > 0 at one point of every arc between the roots of Q(t^2) in t >= 0 (and theta = pi)
+       (Sylvester: leading minors); phi* <= hi if He G - hi I is not > 0 at the witness; an exact v by
+       phi* >= v and a root on the circle (mimo_lower).
+Size limit: passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -1075,8 +1081,11 @@ def sign_at(p, x):
 
 def mimo_level_poly(sys, d, nu):
     """Q(u), u = t^2 = tan^2(theta/2), with Q(u(theta)) = (1 + u)^(mn) 2^m |d(z)|^(2m) det(He G(z) - nu I) on
-    z = e^{j theta}, a polynomial of degree <= mn (entries of |d|^2 He G are polynomials of degree <= n in
-    c = cos theta; (1 + u)^k c^i (1 + u)^... = (1 - u)^i (1 + u)^(k - i)), interpolated at u = 0, 1, 4, ..., (mn)^2."""
+    z = e^{j theta}. P(c) = 2^m |d|^(2m) det(He G - nu I) is a polynomial of degree <= mn in c = cos theta:
+    it is det of d(z) d(1/z) (G(z) + G(1/z)^T - 2 nu I) on the circle, a Laurent polynomial in z of exponents
+    -mn..mn invariant under z -> 1/z; with c = (1 - u)/(1 + u), (1 + u)^(mn) P(c) = sum p_i (1 - u)^i
+    (1 + u)^(mn - i) has degree <= mn in u. Interpolated (Lagrange) at u = 0, 1, 4, ..., (mn)^2, each value
+    computed on the circle point z(t) exactly (Gaussian rationals)."""
     m, n = len(sys[3]), len(sys[0])
     N = m * n
     xs, ys = [], []
@@ -1146,13 +1155,11 @@ def mimo_lower(sys, d, lo):
         while peval(Rr, mid) == 0:
             mid = (mid + b) / 2
         stack += [(a, mid), (mid, b)]
-    m = len(sys[3])
     at_pi = cq_det(he_minus(sys, cq(-1), lo))[0] == 0
     touches = roots > 0 or root0 or at_pi
     for t in sorted(points):
         if not positive_definite(he_minus(sys, circle_z(t), lo)):
             return ("He G - lo I is not positive definite at t = tan(theta/2) = %s, where det != 0" % short(t)), touches, len(points)
-    del m
     return None, touches, len(points)
 
 
