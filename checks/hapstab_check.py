@@ -61,7 +61,13 @@ wedge  paper 002's wedge criterion (25) Re H + cot(theta/2)|Im H| + 1 > 0 and Ts
        so (25) is max(Gr + Jt + F, Gr - Jt + F) > 0 on [0, inf) and H(-1) + 1 > 0 (theta = pi);
        [0, inf) is [0, B] with B a Cauchy bound of every root (max_positive: Sturm isolation).
        Assumptions by schur_cohn on D and D + N, H(1) exactly.
-Size limit: stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+passivity-level-mimo  phi* = min over theta of lambda_min(He G(e^{j theta})), G = C(zI - A)^-1 B + D square,
+       A Schur stable (schur_cohn on det(zI - A), by Faddeev-LeVerrier). Route: Q(u) (mimo_level_poly),
+       u = tan^2(theta/2), interpolated from exact determinants of He G - lo I at circle points; phi* >= lo
+       iff He G - lo I > 0 at one point of every arc between the roots of Q(t^2) in t >= 0 (and theta = pi)
+       (Sylvester: leading minors); phi* <= hi if He G - hi I is not > 0 at the witness; an exact v by
+       phi* >= v and a root on the circle (mimo_lower).
+Size limit: passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -931,6 +937,283 @@ def check_passivity_level(c):
     return True, "%s %s" % (name, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)))
 
 
+# ---------------------------------------------------------------- passivity-level-mimo
+MAX_MIMO_DEGREE = 24  # m n: the degree of the interpolated polynomial in u = tan^2(theta/2) (below)
+
+
+def cq(x):
+    return (Fraction(x), Fraction(0))
+
+
+def cq_add(a, b):
+    return (a[0] + b[0], a[1] + b[1])
+
+
+def cq_sub(a, b):
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def cq_mul(a, b):
+    return (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+
+
+def cq_div(a, b):
+    n = b[0] * b[0] + b[1] * b[1]
+    return ((a[0] * b[0] + a[1] * b[1]) / n, (a[1] * b[0] - a[0] * b[1]) / n)
+
+
+def cq_det(M):
+    """Determinant of a square matrix of Gaussian rationals (elimination with row exchanges)."""
+    M = [list(r) for r in M]
+    n, d = len(M), cq(1)
+    for k in range(n):
+        p = next((r for r in range(k, n) if M[r][k] != (0, 0)), None)
+        if p is None:
+            return cq(0)
+        if p != k:
+            M[k], M[p] = M[p], M[k]
+            d = (-d[0], -d[1])
+        d = cq_mul(d, M[k][k])
+        for r in range(k + 1, n):
+            if M[r][k] != (0, 0):
+                f = cq_div(M[r][k], M[k][k])
+                M[r] = [cq_sub(M[r][j], cq_mul(f, M[k][j])) for j in range(n)]
+    return d
+
+
+def mimo_matrix(model, key):
+    rows = model.get(key)
+    where = "model." + key
+    if not isinstance(rows, list) or any(not isinstance(r, list) for r in rows):
+        raise Malformed("%s: missing or not an array of rows" % where)
+    if len(rows) > 64 or any(len(r) > 64 for r in rows):
+        raise TooLarge("%s: more than 64 rows or columns" % where)
+    M = [[exact_value(v, "%s[%d][%d]" % (where, i, j)) for j, v in enumerate(r)] for i, r in enumerate(rows)]
+    if M and any(len(r) != len(M[0]) for r in M):
+        raise Malformed("%s: rows of different lengths" % where)
+    return M
+
+
+def faddeev_leverrier(A):
+    """det(zI - A), ascending coefficients: M_k = A M_{k-1} + c_{n-k+1} I, c_{n-k} = -tr(A M_k)/k."""
+    n = len(A)
+    coeffs = [Fraction(0)] * n + [Fraction(1)]
+    Mk = [[Fraction(0)] * n for _ in range(n)]
+    for k in range(1, n + 1):
+        AM = [[sum(A[i][l] * Mk[l][j] for l in range(n)) for j in range(n)] for i in range(n)]
+        Mk = [[AM[i][j] + (coeffs[n - k + 1] if i == j else 0) for j in range(n)] for i in range(n)]
+        coeffs[n - k] = -sum(sum(A[i][l] * Mk[l][i] for l in range(n)) for i in range(n)) / k
+    return coeffs
+
+
+def mimo_G(sys, z):
+    """G(z) = C (zI - A)^-1 B + D at a Gaussian rational z, by Gauss-Jordan elimination."""
+    A, B, C, D = sys
+    n, m = len(A), len(D)
+    M = [[cq_sub(z if i == j else cq(0), cq(A[i][j])) for j in range(n)] + [cq(B[i][j]) for j in range(m)] for i in range(n)]
+    for k in range(n):
+        p = next(r for r in range(k, n) if M[r][k] != (0, 0))
+        M[k], M[p] = M[p], M[k]
+        piv = M[k][k]
+        M[k] = [cq_div(x, piv) for x in M[k]]
+        for r in range(n):
+            if r != k and M[r][k] != (0, 0):
+                f = M[r][k]
+                M[r] = [cq_sub(M[r][j], cq_mul(f, M[k][j])) for j in range(n + m)]
+    X = [row[n:] for row in M]
+    return [[cq_add(cq(D[i][j]), reduce_sum(cq_mul(cq(C[i][l]), X[l][j]) for l in range(n))) for j in range(m)] for i in range(m)]
+
+
+def reduce_sum(it):
+    s = cq(0)
+    for x in it:
+        s = cq_add(s, x)
+    return s
+
+
+def he_minus(sys, z, nu):
+    G = mimo_G(sys, z)
+    m = len(G)
+    return [[((G[i][j][0] + G[j][i][0]) / 2 - (nu if i == j else 0), (G[i][j][1] - G[j][i][1]) / 2) for j in range(m)]
+            for i in range(m)]
+
+
+def circle_z(t):
+    """z = (1 + jt)/(1 - jt) = ((1 - t^2) + 2jt)/(1 + t^2): theta = 2 atan t."""
+    w = 1 + t * t
+    return ((1 - t * t) / w, 2 * t / w)
+
+
+def positive_definite(H):
+    """Sylvester's criterion: every leading principal minor of the Hermitian H is > 0."""
+    for k in range(1, len(H) + 1):
+        d = cq_det([row[:k] for row in H[:k]])
+        if d[1] != 0:
+            raise AssertionError("a Hermitian minor is not real")
+        if d[0] <= 0:
+            return False
+    return True
+
+
+def integer_poly(p):
+    """p times a positive rational so that its coefficients are coprime integers."""
+    L = 1
+    for a in p:
+        L = L * a.denominator // gcd(L, a.denominator)
+    ints = [int(a * L) for a in p]
+    g = 0
+    for a in ints:
+        g = gcd(g, a)
+    return [a // g for a in ints] if g else ints
+
+
+def sign_at(p, x):
+    """The sign of the integer polynomial p (non-empty) at the rational x = u/v, v > 0: the sign of
+    v^d p(u/v) = sum p_k u^k v^(d - k), by Horner's rule h <- h u + p_k v^(d - k)."""
+    u, v = x.numerator, x.denominator
+    d = len(p) - 1
+    h, vk = p[d], 1
+    for k in range(d - 1, -1, -1):
+        vk *= v
+        h = h * u + p[k] * vk
+    return (h > 0) - (h < 0)
+
+
+def mimo_level_poly(sys, d, nu):
+    """Q(u), u = t^2 = tan^2(theta/2), with Q(u(theta)) = (1 + u)^(mn) 2^m |d(z)|^(2m) det(He G(z) - nu I) on
+    z = e^{j theta}. P(c) = 2^m |d|^(2m) det(He G - nu I) is a polynomial of degree <= mn in c = cos theta:
+    it is det of d(z) d(1/z) (G(z) + G(1/z)^T - 2 nu I) on the circle, a Laurent polynomial in z of exponents
+    -mn..mn invariant under z -> 1/z; with c = (1 - u)/(1 + u), (1 + u)^(mn) P(c) = sum p_i (1 - u)^i
+    (1 + u)^(mn - i) has degree <= mn in u. Interpolated (Lagrange) at u = 0, 1, 4, ..., (mn)^2, each value
+    computed on the circle point z(t) exactly (Gaussian rationals)."""
+    m, n = len(sys[3]), len(sys[0])
+    N = m * n
+    xs, ys = [], []
+    for k in range(N + 1):
+        t = Fraction(k)
+        z = circle_z(t)
+        dz = (Fraction(0), Fraction(0))
+        for a in reversed(d):
+            dz = cq_add(cq_mul(dz, z), cq(a))
+        det = cq_det(he_minus(sys, z, nu))
+        xs.append(t * t)
+        ys.append((1 + t * t) ** N * 2 ** m * (dz[0] ** 2 + dz[1] ** 2) ** m * det[0])
+    Q = []
+    for i in range(N + 1):  # Lagrange
+        li, den = [Fraction(1)], Fraction(1)
+        for j in range(N + 1):
+            if j != i:
+                li = pmul(li, [-xs[j], Fraction(1)])
+                den *= xs[i] - xs[j]
+        Q = padd(Q, pscale(li, ys[i] / den))
+    return trim(Q)
+
+
+def mimo_lower(sys, d, lo):
+    """(None or why He G - lo I >= 0 fails on the circle, whether det(He G - lo I) has a root there, samples).
+    In t = tan(theta/2) in [0, inf) (theta = pi at t = inf): the roots of R(t) = Q(t^2) are isolated by
+    bisection with Sturm counts on [eps, B] (B a Cauchy bound; eps below every positive root when t = 0 is
+    one); every isolating interval's ends, t = 0 (when not a root) and B sample every arc between roots."""
+    Q = mimo_level_poly(sys, d, lo)
+    if not Q:
+        return "det(He G - lo I) is 0 at every theta: not decided", False, 0
+    R = [Fraction(0)] * (2 * len(Q) - 1)
+    R[0::2] = Q
+    R = trim(R)
+    root0 = peval(R, Fraction(0)) == 0
+    Rr = R
+    while len(Rr) > 1 and Rr[0] == 0:
+        Rr = Rr[1:]
+    Rr = sqfree(Rr)
+    B = 1 + max((abs(a / Rr[-1]) for a in Rr[:-1]), default=Fraction(0))
+    eps = Fraction(0)
+    if root0:
+        eps = abs(Rr[0]) / (abs(Rr[0]) + max(abs(a) for a in Rr)) / 2  # |root| > |a_0|/(|a_0| + max|a_i|)
+    points, roots = {B}, 0
+    if not root0:
+        points.add(Fraction(0))
+    else:
+        points.add(eps)
+    # Rr square-free: one Sturm sequence for every count, each member scaled to integer coefficients
+    # (a positive factor: the same signs), evaluated homogeneously in integers at x = p/q
+    seq = [integer_poly(q) for q in sturm_seq(Rr)] if len(Rr) > 1 else []
+
+    def sign_variations(x):
+        signs = [v for v in (sign_at(q, x) for q in seq if q) if v != 0]
+        return sum(1 for u, v in zip(signs, signs[1:]) if u != v)
+    stack = [(eps, B)] if len(Rr) > 1 else []
+    while stack:
+        a, b = stack.pop()
+        k = sign_variations(a) - sign_variations(b)  # distinct roots in (a, b), neither end a root
+        if k == 0:
+            continue
+        if k == 1:
+            roots += 1
+            points.update((a, b))
+            continue
+        mid = (a + b) / 2
+        while peval(Rr, mid) == 0:
+            mid = (mid + b) / 2
+        stack += [(a, mid), (mid, b)]
+    at_pi = cq_det(he_minus(sys, cq(-1), lo))[0] == 0
+    touches = roots > 0 or root0 or at_pi
+    for t in sorted(points):
+        if not positive_definite(he_minus(sys, circle_z(t), lo)):
+            return ("He G - lo I is not positive definite at t = tan(theta/2) = %s, where det != 0" % short(t)), touches, len(points)
+    return None, touches, len(points)
+
+
+def check_passivity_level_mimo(c):
+    """phi* = min over theta of lambda_min(He G(e^{j theta})), G = C(zI - A)^-1 B + D square, A Schur stable:
+    phi* >= lo iff He G - lo I > 0 at one point of every arc between the roots of its determinant (times
+    |d|^(2m)) on the circle; phi* <= hi if He G - hi I is not > 0 at the witness (c0, s0), c0^2 + s0^2 = 1;
+    an exact claim v: phi* >= v so, and det(He G - v I) = 0 somewhere on the circle."""
+    model, claim, evidence = parts(c)
+    only(model, ("A", "B", "C", "D", "T", "kind"), "model")
+    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
+    if model.get("kind") != "isp":
+        raise Malformed("model.kind: missing or not \"isp\" (a MIMO OSP level has no certificate)")
+    period(model)
+    A, B, C, D = (mimo_matrix(model, k) for k in ("A", "B", "C", "D"))
+    n, m = len(A), (len(B[0]) if B else 0)
+    if n == 0 or any(len(r) != n for r in A):
+        raise Malformed("model.A: empty or not square")
+    if len(B) != n or m == 0:
+        raise Malformed("model.B: not n x m with m >= 1")
+    if len(C) != m or any(len(r) != n for r in C):
+        raise Malformed("model.C: not m x n (G square)")
+    if len(D) != m or any(len(r) != m for r in D):
+        raise Malformed("model.D: not m x m")
+    if m * n > MAX_MIMO_DEGREE:
+        raise TooLarge("m n = %d above this checker's limit %d" % (m * n, MAX_MIMO_DEGREE))
+    d = faddeev_leverrier(A)
+    ok, why = schur_cohn(d)
+    if not ok:
+        raise Malformed("model.A: not Schur stable (%s)" % why)
+    status, lo, hi, _, refuted = claim_range(claim)
+    if status == "exact":
+        only(evidence, (), "evidence")
+    else:
+        only(evidence, ("witness_c", "witness_s"), "evidence")
+    if refuted:
+        return False, refuted
+    if status != "exact":
+        c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
+    sys_ = (A, B, C, D)
+    why, touches, samples = mimo_lower(sys_, d, lo)
+    if why:
+        return False, "phi* >= %s (%.12g) fails: %s" % (short(lo), float(lo), why)
+    if status == "exact":
+        if not touches:
+            return False, "phi* <= %s not shown: He G - v I is regular on the whole circle (phi* > v)" % short(lo)
+        return True, "phi* = %s (%dx%d, %d states; %d samples)" % (lo, m, m, n, samples)
+    if c0 * c0 + s0 * s0 != 1:
+        return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
+    if positive_definite(he_minus(sys_, (c0, s0), hi)):
+        return False, "phi* <= %s (%.12g) not shown: He G - hi I is positive definite at the witness" % (short(hi), float(hi))
+    return True, "phi* in [%.12g, %.12g] (%dx%d, %d states; %d samples)" % (float(lo), float(hi), m, m, n, samples)
+
+
 # ---------------------------------------------------------------- r
 def check_r(c):
     only(c, ("certificate", "version", "kind", "model", "claim", "evidence", "produced_by"), "certificate")
@@ -1409,6 +1692,7 @@ def check(c):
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "passivity-level": check_passivity_level,
+                    "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:

@@ -7,7 +7,9 @@ Produces certificates of `bound` (random virtual environments, integer delays, e
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
 Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
 environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-level` (SISO G of five
-families, ISP and OSP), `r`
+families, ISP and OSP), `passivity-level-mimo` (`passivity-level --ss --kind isp` on random square
+state spaces of five families, its own random stream; mutants edit one entry of A, B, C or D, move lo
+past the level, hi below it, the witness along and off the circle, delete the stability hypothesis), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
 stable or NOT stable; its mutants include a producer that built another loop -- the delay + 1, T
 doubled -- with that loop's polynomial and verdict, consistently), `stability-max` (`stability --max`
@@ -600,6 +602,157 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
     return out
 
 
+MIMO_FAMILIES = {}  # family: certificates produced
+
+
+def rand_mimo(rng):
+    """A random square MIMO state space (m = 2 or 3 inputs, n = 1..4 states, m n <= 12), A Schur stable by
+    construction (every row's absolute sum < 1, or a rotation-like block of radius < 1), of five families:
+    dense, diagonal (decoupled: the level is the least SISO level), triangular A, D = 0 (strictly proper)
+    and a lightly damped pair (a resonance: the minimiser inside (0, pi))."""
+    fam = rng.choice(["dense", "diagonal", "triangular", "strictly proper", "resonance"])
+    m = rng.choice([2, 2, 3])
+    n = rng.randint(1, 12 // m if fam != "resonance" else 4)
+    if fam == "resonance":
+        n = max(n, 2)
+
+    def q(lim, den=(2, 3, 4, 5, 7, 10)):
+        d = rng.choice(den)
+        return Fraction(rng.randint(-lim * d, lim * d), d)
+    A = [[Fraction(0)] * n for _ in range(n)]
+    for i in range(n):
+        if fam in ("diagonal", "triangular"):
+            A[i][i] = Fraction(rng.randint(-8, 8), 10)
+        if fam in ("dense", "strictly proper"):
+            row = [Fraction(rng.randint(-4, 4), 10 * n) for _ in range(n)]
+            A[i] = row
+        if fam == "triangular":
+            for j in range(i + 1, n):
+                A[i][j] = Fraction(rng.randint(-3, 3), 4)
+    if fam == "resonance":
+        # poles r e^{+-j phi} with (cos phi, sin phi) a rational point of the circle
+        r, (c, sq) = Fraction(rng.randint(80, 95), 100), rng.choice([(Fraction(3, 5), Fraction(4, 5)), (Fraction(4, 5), Fraction(3, 5)),
+                                                                     (Fraction(0), Fraction(1)), (Fraction(-3, 5), Fraction(4, 5))])
+        A[0][0], A[0][1], A[1][0], A[1][1] = r * c, -r * sq, r * sq, r * c
+        for i in range(2, n):
+            A[i][i] = Fraction(rng.randint(-5, 5), 10)
+    B = [[q(1) for _ in range(m)] for _ in range(n)]
+    C = [[q(1) for _ in range(n)] for _ in range(m)]
+    if fam == "diagonal":  # m blocks of one input each: states split among them
+        for i in range(n):
+            for j in range(m):
+                B[i][j] = B[i][j] if i % m == j else Fraction(0)
+                C[j][i] = C[j][i] if i % m == j else Fraction(0)
+    D = [[q(2) if i == j else (q(1) if fam != "diagonal" else Fraction(0)) for j in range(m)] for i in range(m)]
+    if fam == "strictly proper":
+        D = [[Fraction(0)] * m for _ in range(m)]
+    for i in range(m):
+        D[i][i] += rng.choice([0, 1, 3, 5])
+    fm = lambda M: [[frac(x) for x in r] for r in M]  # noqa: E731
+    return {"A": fm(A), "B": fm(B), "C": fm(C), "D": fm(D), "T": rng.choice(["1/1000", "1/100"]), "family": fam}
+
+
+def mimo_produce(hapstab, m, cache, tmp, digits=17):
+    """hapstab's passivity-level-mimo certificate of the state space m, or the exit code when it writes none."""
+    ss = {k: m[k] for k in ("A", "B", "C", "D", "T")}
+    path = os.path.join(tmp, "ss.json")
+    with open(path, "w") as f:
+        json.dump(ss, f)
+    return produce(hapstab, ["passivity-level", "--ss", path, "--kind", "isp", "--digits", str(digits)],
+                   "mimo%d" % digits + json.dumps(ss, sort_keys=True), "mimo-edit.json", cache, tmp)
+
+
+def mimo_entry_edits(m, rng):
+    """One entry of A, B, C or D (chosen at random) x 1.001, + 1/10, negated: (name, model)."""
+    edits = []
+    for key in ("A", "B", "C", "D"):
+        M = m[key]
+        i, j = rng.randrange(len(M)), rng.randrange(len(M[0]))
+        x = Fraction(M[i][j])
+        for name, y in (("x 1.001", x * Fraction(1001, 1000)), ("+ 1/10", x + Fraction(1, 10)), ("negated", -x)):
+            if y != x:
+                N = [list(r) for r in M]
+                N[i][j] = frac(y)
+                edits.append(("%s[%d][%d] %s" % (key, i, j, name), dict(m, **{key: N})))
+    return edits
+
+
+def mimo_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cl, m = cert["claim"], cert["model"]
+    exact_claim = cl["status"] == "exact"
+    lo, hi = (Fraction(cl["value"]),) * 2 if exact_claim else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+    scale = max(abs(lo), Fraction(1))
+    tiny = scale / 10 ** rng.randint(40, 60)
+    gap = max(hi - lo, tiny)
+
+    def claim(l, h):
+        c = copy.deepcopy(cert)
+        c["claim"] = {"quantity": cl["quantity"], "status": "certified", "lo": frac(l), "hi": frac(h)}
+        return c
+    out.append(("lo > hi", claim(hi + tiny, hi), "refute"))
+    if exact_claim:
+        out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), "refute"))
+        out.append(("exact value - tiny", with_field(cert, ["claim", "value"], frac(lo - tiny)), "refute"))
+        out.append(("exact value - 1/1000", with_field(cert, ["claim", "value"], frac(lo - Fraction(1, 1000))), "refute"))
+        out.append(("exact made certified without a witness", claim(lo - scale, hi), "malformed"))
+        out.append(("added evidence.witness_c", with_field(cert, ["evidence", "witness_c"], "1"), "malformed"))
+    else:
+        out.append(("lo raised past the level", claim(hi + gap / 2 + tiny, hi + 2 * gap + tiny), "refute"))
+        out.append(("lo raised to hi + tiny", claim(hi + tiny, hi + 2 * tiny), "refute"))
+        out.append(("hi lowered below the level", claim(lo - 2 * gap - tiny, lo - gap / 2 - tiny), "refute"))
+        out.append(("lo lowered", claim(lo - scale, hi), "accept"))
+        out.append(("hi raised", claim(lo, hi + scale), "accept"))
+        out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], cl["printed_lo"] + "1"), "refute"))
+        out.append(("printed_hi is not the claimed hi", with_field(cert, ["claim", "printed_hi"], cl["printed_hi"] + "1"), "refute"))
+        c0, s0 = Fraction(cert["evidence"]["witness_c"]), Fraction(cert["evidence"]["witness_s"])
+        t0 = s0 / (1 + c0) if c0 != -1 else Fraction(10 ** 6)
+        for name, t in (("witness t + 1/1000", t0 + Fraction(1, 1000)), ("witness t x (1 + 10^-40)", t0 * (1 + Fraction(1, 10 ** 40))),
+                        ("witness random", Fraction(rng.randint(0, 3000), 1000))):
+            w = 1 + t * t
+            mut = with_field(cert, ["evidence", "witness_c"], frac((1 - t * t) / w))
+            out.append((name, with_field(mut, ["evidence", "witness_s"], frac(2 * t / w)), "agree"))
+        out.append(("witness at theta = 0", with_field(with_field(cert, ["evidence", "witness_c"], "1"), ["evidence", "witness_s"], "0"), "agree"))
+        out.append(("witness off the circle (s0 + 1/1000)", with_field(cert, ["evidence", "witness_s"], frac(s0 + Fraction(1, 1000))), "refute"))
+        out.append(("witness off the circle (c0 = 2)", with_field(cert, ["evidence", "witness_c"], "2"), "refute"))
+        for key in ("witness_c", "witness_s"):
+            out.append(("deleted evidence." + key, deleted(cert, ["evidence", key]), "malformed"))
+        out.append(("witness a decimal", with_field(cert, ["evidence", "witness_c"], "0.5"), "malformed"))
+        out.append(("added evidence.witness_v", with_field(cert, ["evidence", "witness_v"], ["1", "0"]), "malformed"))
+    # one entry of A, B, C or D edited: hapstab's own certificate of the edited model decides
+    for name, nm in mimo_entry_edits(m, rng):
+        other = mimo_produce(hapstab, nm, cache, tmp, 30)
+        if isinstance(other, dict):
+            ocl = other["claim"]
+            olo, ohi = (Fraction(ocl["value"]),) * 2 if ocl["status"] == "exact" else (Fraction(ocl["lo"]), Fraction(ocl["hi"]))
+            expect = "refute" if hi < olo or lo > ohi else "agree"
+        else:
+            expect = "same"  # no certificate of the edited model (unstable A, ...): both checkers give one exit
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["model", "A"], ["model", "B"], ["model", "C"], ["model", "D"], ["model", "T"],
+                 ["model", "kind"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    n, k = len(m["A"]), len(m["D"])
+    unstable = [[frac(Fraction(x) + (2 if i == j else 0)) for j, x in enumerate(r)] for i, r in enumerate(m["A"])]
+    out.append(("A + 2I (not Schur stable: the hypothesis)", with_field(cert, ["model", "A"], unstable), "malformed"))
+    out.append(("kind osp", with_field(cert, ["model", "kind"], "osp"), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["model", "kind"], "io"), "malformed"))
+    out.append(("G not square (a row of C and D dropped)", with_field(with_field(cert, ["model", "C"], m["C"][:-1]), ["model", "D"],
+                                                                      m["D"][:-1]), "malformed"))
+    out.append(("D not m x m", with_field(cert, ["model", "D"], [r[:-1] for r in m["D"]]), "malformed"))
+    out.append(("B with a row too few", with_field(cert, ["model", "B"], m["B"][:-1] if n > 1 else []), "malformed"))
+    out.append(("A not square", with_field(cert, ["model", "A"], [r + ["0"] for r in m["A"]]), "malformed"))
+    out.append(("an entry a decimal", with_field(cert, ["model", "D", 0, 0], "0.5"), "malformed"))
+    out.append(("an entry a JSON number", with_field(cert, ["model", "D", k - 1, k - 1], 1), "malformed"))
+    out.append(("T a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
+    out.append(("T negative", with_field(cert, ["model", "T"], "-1/100"), "malformed"))
+    out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
+    out.append(("added model.H", with_field(cert, ["model", "H"], "1/(z - 1/2)"), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    out.append(("kind made passivity-level (SISO)", with_field(cert, ["kind"], "passivity-level"), "malformed"))
+    return out
+
+
 STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pole at s = 0 (exact data)
     ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", ["m", "K", "B"]),            # mass on a virtual wall (001)
     ("1/(m*s^2)", None, "K + B*2*(z-1)/(T*(z+1))", ["m", "K", "B"]),      # Tustin damper
@@ -962,12 +1115,13 @@ def rand_r(rng):
     return T, w
 
 
-KINDS = ("bound", "r", "bound-max", "passivity-level", "stability", "stability-max", "wedge")
+KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge")
 
 
-def produce_certificates(a, kinds, rng, srng, tmp, cache, scache):
+def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng):
     """The certificates of random models of each kind asked for, [(kind, certificate)], and the
-    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng)."""
+    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng) and
+    passivity-level-mimo (mrng)."""
     certs = []  # (kind, certificate)
     skipped = {}
     for i in range(a.models if "bound" in kinds else 0):
@@ -1009,6 +1163,14 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache):
             skipped["passivity-level: exit %s" % cert] = skipped.get("passivity-level: exit %s" % cert, 0) + 1
             continue
         certs.append(("passivity-level", cert))
+    for i in range(max(a.models // 2, 2) if "passivity-level-mimo" in kinds else 0):
+        m = rand_mimo(mrng)
+        cert = mimo_produce(a.hapstab, m, scache, tmp, mrng.choice([10, 17, 30]))
+        if not isinstance(cert, dict):
+            skipped["passivity-level-mimo: exit %s" % cert] = skipped.get("passivity-level-mimo: exit %s" % cert, 0) + 1
+            continue
+        MIMO_FAMILIES[m["family"]] = MIMO_FAMILIES.get(m["family"], 0) + 1
+        certs.append(("passivity-level-mimo", cert))
     for i in range(max(a.models // 2, 2) if "stability-max" in kinds else 0):
         m = rand_stability_max(srng)
         cert = stability_max_produce(a.hapstab, m, scache, tmp, srng.choice([10, 20, 30]))
@@ -1049,6 +1211,13 @@ def print_branches(certs, mutants, cpp):
             sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
             sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
             sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
+    mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
+    if mimo:
+        print("  passivity-level-mimo branches: exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (
+                  sum(1 for c, _ in mimo if c["claim"]["status"] == "exact"),
+                  sum(1 for c, _ in mimo if c["claim"]["status"] == "certified"),
+                  sum(1 for c, _ in mimo if Fraction(c["claim"].get("value", c["claim"].get("lo"))) <= 0),
+                  sum(1 for c, _ in mimo if len(c["model"]["D"]) == 3), json.dumps(MIMO_FAMILIES, sort_keys=True)))
     smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]
     if smax:
         cl = [max_claim(c) for c, _ in smax]
@@ -1079,7 +1248,8 @@ def main():
     scache = {}
     srng = random.Random(a.seed * 1000 + 47)  # its own stream: the other kinds draw what they drew before it was added
     t0 = time.time()
-    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache)
+    mrng = random.Random(a.seed * 1000 + 48)  # passivity-level-mimo's own stream, likewise
+    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng)
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
@@ -1093,6 +1263,8 @@ def main():
             ms = level_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "wedge":
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
+        elif kind == "passivity-level-mimo":
+            ms = mimo_mutants(cert, mrng, a.hapstab, scache, tmp)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:

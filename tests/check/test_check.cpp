@@ -1,7 +1,8 @@
 // tests/check/test_check.cpp -- the checkers of check/ on certificates whose truth is known by
 // hand (issue 47): b* of H = K with and without a delay (exact closed forms below), r(jw) against
 // cot(1/2) from a table, the non-negativity test on polynomials with known roots, and the largest
-// stable gain of the mass on a virtual wall with delays 0 and 1 (closed forms below). The
+// stable gain of the mass on a virtual wall with delays 0 and 1 (closed forms below), MIMO ISP levels
+// (a diagonal G: the least SISO level; a coupled 2x2 against mpmath). The
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
 #include <gtest/gtest.h>
 
@@ -286,6 +287,128 @@ TEST(PassivityLevelCheck, FirstOrder) {
   EXPECT_THROW(check_certificate(level_cert("(z + 1)/(z - 0.5)", "osp", exact("1/10"), "1")), InputError);  // zero at theta = pi
   EXPECT_THROW(check_certificate(level_cert("1/(z - 0.5)", "osp", exact("-3/2"), "-1")), InputError);  // an upper bound only
   EXPECT_THROW(check_certificate(level_cert("z^2/(z - 0.5)", "isp", exact("0"), "1")), InputError);   // not causal
+}
+
+// ---- passivity-level-mimo (check/passivity_level_mimo_check.hpp): square MIMO ISP levels known by
+// hand or from mpmath, never from hapstab.
+nlohmann::json mimo_cert(const nlohmann::json& A, const nlohmann::json& B, const nlohmann::json& C, const nlohmann::json& D,
+                         const nlohmann::json& claim, const nlohmann::json& evidence = nlohmann::json::object()) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "passivity-level-mimo"},
+          {"model", {{"A", A}, {"B", B}, {"C", C}, {"D", D}, {"T", "1/100"}, {"kind", "isp"}}},
+          {"claim", claim}, {"evidence", evidence}};
+}
+using Rows = std::vector<std::vector<std::string>>;
+nlohmann::json mat(const Rows& rows) {  // an array of arrays (a braced list of pairs would make an object)
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& r : rows) j.push_back(nlohmann::json(r));
+  return j;
+}
+nlohmann::json exact_claim(const std::string& v) { return {{"status", "exact"}, {"value", v}}; }
+nlohmann::json range_claim(const std::string& lo, const std::string& hi) { return {{"status", "certified"}, {"lo", lo}, {"hi", hi}}; }
+nlohmann::json witness(const std::string& c, const std::string& s) { return {{"witness_c", c}, {"witness_s", s}}; }
+
+// G = diag(g1, g2), g1 = 1 + 1/(z - 1/2) = (z + 1/2)/(z - 1/2): Re g1 = (3/4)/(5/4 - c), min 1/3 at
+// theta = pi; g2 = 1 + (3/4) z^-2: Re g2 = 1 + (3/4) cos 2theta, min 1/4 at theta = pi/2 (z = j). He G
+// is diagonal, so phi* = min(1/3, 1/4) = 1/4, exactly, at a point inside (0, pi) where only g2 touches.
+const nlohmann::json diagA = mat({{"1/2", "0", "0"}, {"0", "0", "0"}, {"0", "1", "0"}});
+const nlohmann::json diagB = mat({{"1", "0"}, {"0", "1"}, {"0", "0"}});
+const nlohmann::json diagC = mat({{"1", "0", "0"}, {"0", "0", "3/4"}});
+const nlohmann::json I2 = mat({{"1", "0"}, {"0", "1"}});
+
+TEST(PassivityLevelMimoCheck, DiagonalIsTheLeastSisoLevel) {
+  const Verdict v = check_certificate(mimo_cert(diagA, diagB, diagC, I2, exact_claim("1/4")));
+  EXPECT_TRUE(v.verified) << v.reason;
+  for (const char* wrong : {"1/3", "1/4000000000000000000000000000000000000001", "2499999999999999999999999999/10000000000000000000000000000"}) {
+    const Verdict w = check_certificate(mimo_cert(diagA, diagB, diagC, I2, exact_claim(wrong)));
+    EXPECT_FALSE(w.verified) << wrong;
+  }
+  // an enclosure: the witness z = j (c = 0, s = 1) has lambda_min = 1/4 <= hi; z = 1 has 3
+  EXPECT_TRUE(check_certificate(mimo_cert(diagA, diagB, diagC, I2, range_claim("0", "1/4"), witness("0", "1"))).verified);
+  EXPECT_TRUE(check_certificate(mimo_cert(diagA, diagB, diagC, I2, range_claim("-1", "3/10"), witness("-21/221", "220/221"))).verified);  // t = 11/10: Re g2 = 0.2635
+  const Verdict far = check_certificate(mimo_cert(diagA, diagB, diagC, I2, range_claim("0", "1/2"), witness("1", "0")));
+  EXPECT_FALSE(far.verified);
+  EXPECT_NE(far.reason.find("not shown"), std::string::npos) << far.reason;
+  const Verdict off = check_certificate(mimo_cert(diagA, diagB, diagC, I2, range_claim("0", "1/2"), witness("1/2", "1/2")));
+  EXPECT_FALSE(off.verified);
+  EXPECT_NE(off.reason.find("not on the unit circle"), std::string::npos) << off.reason;
+  // g1 alone (the first channel, one input): the SISO level 1/3 at theta = pi, an end of [0, pi]
+  EXPECT_TRUE(check_certificate(mimo_cert(mat({{"1/2"}}), mat({{"1"}}), mat({{"1"}}), mat({{"1"}}), exact_claim("1/3"))).verified);
+  EXPECT_FALSE(check_certificate(mimo_cert(mat({{"1/2"}}), mat({{"1"}}), mat({{"1"}}), mat({{"1"}}), exact_claim("1/4"))).verified);
+}
+
+// A coupled 2x2: A = [[0, 1/2], [-1/2, 0]] (poles +-j/2), B = [[1, 0], [1/3, 1]], C = [[1, 0], [1/4, 1]],
+// D = [[2, 1/3], [-1/5, 3/2]]. mpmath at 60 digits (lambda_min of the 2x2 He G in closed form, a grid of
+// 2000 points, then findroot on its derivative): phi* = 0.13457867356938227191106546829846038338722...
+// at theta = 2.07007320998374244491066298922; the witness is tan(theta/2) rounded to 30 digits.
+const nlohmann::json cA = mat({{"0", "1/2"}, {"-1/2", "0"}}), cB = mat({{"1", "0"}, {"1/3", "1"}}),
+                     cC = mat({{"1", "0"}, {"1/4", "1"}}), cD = mat({{"2", "1/3"}, {"-1/5", "3/2"}});
+const nlohmann::json cW = witness("-28706733526243037880659009817130398777347852942453452692249/59956733526243037880659009817130398777347852942453452692249",
+                                  "52637755892421837435168465889250000000000000000000000000000/59956733526243037880659009817130398777347852942453452692249");
+
+TEST(PassivityLevelMimoCheck, CoupledAgainstMpmath) {
+  const std::string lo = "134578673569382271911/1000000000000000000000", hi = "134578673569382271912/1000000000000000000000";
+  const Verdict v = check_certificate(mimo_cert(cA, cB, cC, cD, range_claim(lo, hi), cW));
+  EXPECT_TRUE(v.verified) << v.reason;
+  // lo 10^-20 above the level; hi 10^-20 below it
+  const Verdict high = check_certificate(mimo_cert(cA, cB, cC, cD, range_claim(hi, "134578673569382271913/1000000000000000000000"), cW));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("phi* >= "), std::string::npos) << high.reason;
+  const Verdict low = check_certificate(mimo_cert(cA, cB, cC, cD, range_claim("0", "134578673569382271910/1000000000000000000000"), cW));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("not shown"), std::string::npos) << low.reason;
+  // the level is irrational: no exact claim holds
+  EXPECT_FALSE(check_certificate(mimo_cert(cA, cB, cC, cD, exact_claim(lo))).verified);
+}
+
+// G = diag(g1, 1/5): He G has the eigenvalue 1/5 at every theta, so phi* = 1/5 but det(He G - I/5) = 0
+// identically: an exact claim is not decided (refuted, saying so), an enclosure is verified.
+TEST(PassivityLevelMimoCheck, ConstantEigenvalue) {
+  const nlohmann::json A = mat({{"1/2"}}), B = mat({{"1", "0"}}), C = mat({{"1"}, {"0"}}), D = mat({{"1", "0"}, {"0", "1/5"}});
+  const Verdict e = check_certificate(mimo_cert(A, B, C, D, exact_claim("1/5")));
+  EXPECT_FALSE(e.verified);
+  EXPECT_NE(e.reason.find("identically 0"), std::string::npos) << e.reason;
+  EXPECT_TRUE(check_certificate(mimo_cert(A, B, C, D, range_claim("199999/1000000", "1/5"), witness("1", "0"))).verified);
+}
+
+TEST(PassivityLevelMimoCheck, Malformed) {
+  auto bad = [](nlohmann::json c, const std::string& field) {
+    try {
+      check_certificate(c);
+      ADD_FAILURE() << "accepted; expected an error naming " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  const nlohmann::json ok = mimo_cert(diagA, diagB, diagC, I2, range_claim("0", "1/4"), witness("0", "1"));
+  nlohmann::json c = ok;
+  c["model"]["kind"] = "osp";
+  bad(c, "model.kind");
+  c = ok;
+  c["model"]["A"][0][0] = "3/2";  // a pole at 3/2: not Schur stable
+  bad(c, "model.A");
+  c = ok;
+  c["model"]["D"] = mat({{"1", "0", "0"}, {"0", "1", "0"}});
+  bad(c, "model.D");
+  c = ok;
+  c["model"]["C"] = mat({{"1", "0", "0"}});  // one output, two inputs
+  bad(c, "model.C");
+  c = ok;
+  c["model"]["B"][0][0] = "0.5";
+  bad(c, "model.B[0][0]");
+  c = ok;
+  c["evidence"].erase("witness_s");
+  bad(c, "evidence.witness_s");
+  c = ok;
+  c["evidence"]["witness_v"] = "1";
+  bad(c, "evidence.witness_v");
+  c = mimo_cert(diagA, diagB, diagC, I2, exact_claim("1/4"), witness("0", "1"));  // an exact claim reads no witness
+  bad(c, "evidence.witness_c");
+  c = ok;
+  c["model"]["H"] = "1/z";
+  bad(c, "model.H");
+  c = ok;
+  c["model"]["T"] = "0";
+  bad(c, "model.T");
 }
 
 // r(j 1) at T = 1: Im r = -(1/2) cot(1/2) = -0.91524386085622595963... (mpmath, 40 digits)

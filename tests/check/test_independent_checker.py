@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), its
-`stability-max` kind on the mass on a virtual wall with delays 0 and 1 (class StabilityMax), and its
+`stability-max` kind on the mass on a virtual wall with delays 0 and 1 (class StabilityMax), its
+`passivity-level-mimo` kind on a diagonal G (the least SISO level, by hand) and a coupled 2x2 (mpmath)
+(class PassivityLevelMimo), and its
 `stability` kind on loops whose characteristic polynomial and verdict
 are known by hand (the same cases as tests/check/test_check.cpp's StabilityCheck, which checks the
 C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), of 1/s^3 at T = 1
@@ -357,6 +359,88 @@ class Wedge(unittest.TestCase):
         self.assertEqual(code, 2)
         self.assertIn("unit circle", why)
 
+
+def mimo_cert(A, B, C, D, claim, evidence=None):
+    return {"certificate": "hapstab", "version": 1, "kind": "passivity-level-mimo",
+            "model": {"A": A, "B": B, "C": C, "D": D, "T": "1/100", "kind": "isp"},
+            "claim": claim, "evidence": evidence or {}}
+
+
+# G = diag(g1, g2), g1 = (z + 1/2)/(z - 1/2) (Re g1 = (3/4)/(5/4 - c), min 1/3 at theta = pi),
+# g2 = 1 + (3/4) z^-2 (Re g2 = 1 + (3/4) cos 2 theta, min 1/4 at theta = pi/2): phi* = 1/4 exactly
+# (the cases of tests/check/test_check.cpp's PassivityLevelMimoCheck, for the C++ checker).
+DIAG = ([["1/2", "0", "0"], ["0", "0", "0"], ["0", "1", "0"]], [["1", "0"], ["0", "1"], ["0", "0"]],
+        [["1", "0", "0"], ["0", "0", "3/4"]], [["1", "0"], ["0", "1"]])
+# coupled 2x2; mpmath at 60 digits: phi* = 0.13457867356938227191106546829846... at theta = 2.0700732099837...
+COUPLED = ([["0", "1/2"], ["-1/2", "0"]], [["1", "0"], ["1/3", "1"]], [["1", "0"], ["1/4", "1"]], [["2", "1/3"], ["-1/5", "3/2"]])
+COUPLED_WITNESS = {  # t = tan(theta/2) to 30 digits
+    "witness_c": "-28706733526243037880659009817130398777347852942453452692249/59956733526243037880659009817130398777347852942453452692249",
+    "witness_s": "52637755892421837435168465889250000000000000000000000000000/59956733526243037880659009817130398777347852942453452692249"}
+
+
+def exact_claim(v):
+    return {"status": "exact", "value": v}
+
+
+def range_claim(lo, hi):
+    return {"status": "certified", "lo": lo, "hi": hi}
+
+
+class PassivityLevelMimo(unittest.TestCase):
+    def test_diagonal_is_the_least_siso_level(self):
+        self.assertEqual(hc.check(mimo_cert(*DIAG, exact_claim("1/4")))[0], 0)
+        for wrong in ("1/3", "2500000000000000000000000000001/10000000000000000000000000000000",
+                      "2499999999999999999999999999999/10000000000000000000000000000000"):
+            self.assertEqual(hc.check(mimo_cert(*DIAG, exact_claim(wrong)))[0], 1, wrong)
+        self.assertEqual(hc.check(mimo_cert(*DIAG, range_claim("0", "1/4"), {"witness_c": "0", "witness_s": "1"}))[0], 0)
+        self.assertEqual(hc.check(mimo_cert(*DIAG, range_claim("-1", "3/10"), {"witness_c": "-21/221", "witness_s": "220/221"}))[0], 0)
+        code, why = hc.check(mimo_cert(*DIAG, range_claim("0", "1/2"), {"witness_c": "1", "witness_s": "0"}))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        code, why = hc.check(mimo_cert(*DIAG, range_claim("0", "1/2"), {"witness_c": "1/2", "witness_s": "1/2"}))
+        self.assertEqual(code, 1)
+        self.assertIn("not on the unit circle", why)
+        # the first channel alone: the SISO level 1/3, also the `passivity-level` kind's value for g1
+        one = ([["1/2"]], [["1"]], [["1"]], [["1"]])
+        self.assertEqual(hc.check(mimo_cert(*one, exact_claim("1/3")))[0], 0)
+        self.assertEqual(hc.check(mimo_cert(*one, exact_claim("1/4")))[0], 1)
+
+    def test_coupled_against_mpmath(self):
+        lo, hi = "134578673569382271911/1000000000000000000000", "134578673569382271912/1000000000000000000000"
+        self.assertEqual(hc.check(mimo_cert(*COUPLED, range_claim(lo, hi), COUPLED_WITNESS))[0], 0)
+        code, why = hc.check(mimo_cert(*COUPLED, range_claim(hi, "134578673569382271913/1000000000000000000000"), COUPLED_WITNESS))
+        self.assertEqual(code, 1)
+        self.assertIn("phi* >= ", why)
+        code, why = hc.check(mimo_cert(*COUPLED, range_claim("0", "134578673569382271910/1000000000000000000000"), COUPLED_WITNESS))
+        self.assertEqual(code, 1)
+        self.assertIn("not shown", why)
+        self.assertEqual(hc.check(mimo_cert(*COUPLED, exact_claim(lo)))[0], 1)
+
+    def test_constant_eigenvalue(self):
+        m = ([["1/2"]], [["1", "0"]], [["1"], ["0"]], [["1", "0"], ["0", "1/5"]])  # He G has the eigenvalue 1/5 everywhere
+        code, why = hc.check(mimo_cert(*m, exact_claim("1/5")))
+        self.assertEqual(code, 1)
+        self.assertIn("not decided", why)
+        self.assertEqual(hc.check(mimo_cert(*m, range_claim("199999/1000000", "1/5"), {"witness_c": "1", "witness_s": "0"}))[0], 0)
+
+    def test_malformed(self):
+        ok = mimo_cert(*DIAG, range_claim("0", "1/4"), {"witness_c": "0", "witness_s": "1"})
+        for path, value, field in ((("model", "kind"), "osp", "model.kind"), (("model", "T"), "0", "model.T"),
+                                   (("model", "H"), "1/z", "model.H"), (("evidence", "witness_v"), "1", "evidence.witness_v"),
+                                   (("model", "D"), [["1", "0", "0"], ["0", "1", "0"]], "model.D"),
+                                   (("model", "C"), [["1", "0", "0"]], "model.C")):
+            c = copy.deepcopy(ok)
+            c[path[0]][path[1]] = value
+            code, why = hc.check(c)
+            self.assertEqual(code, 2, (path, why))
+            self.assertIn(field, why)
+        c = copy.deepcopy(ok)
+        c["model"]["A"][0][0] = "3/2"
+        self.assertEqual(hc.check(c)[0], 2)
+        self.assertEqual(hc.check(mimo_cert(*DIAG, exact_claim("1/4"), {"witness_c": "0", "witness_s": "1"}))[0], 2)
+        c = copy.deepcopy(ok)
+        del c["evidence"]["witness_s"]
+        self.assertEqual(hc.check(c)[0], 2)
 
 if __name__ == "__main__":
     unittest.main()

@@ -304,6 +304,79 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   return j;
 }
 
+namespace {
+
+nlohmann::json matrix_json(const Mat<rational>& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j).str());
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Rational points of the unit circle near c = cos(theta), theta in [0, pi], as {witness_c, witness_s}:
+// z = (1 - t^2 + 2jt)/(1 + t^2) with t ~ tan(theta/2) = sqrt((1 - c)/(1 + c)) to 40, 80, 160 digits
+// (rounded down and up); c = +-1 exactly when c is.
+std::vector<nlohmann::json> circle_witnesses(const rational& c) {
+  auto point = [](const rational& cc, const rational& ss) { return nlohmann::json{{"witness_c", cc.str()}, {"witness_s", ss.str()}}; };
+  if (c >= 1) return {point(rational(1), rational(0))};
+  if (c <= -1) return {point(rational(-1), rational(0))};
+  std::vector<nlohmann::json> out;
+  const rational u = (1 - c) / (1 + c);
+  for (int digits : {40, 80, 160}) {
+    integer scale = 1;
+    for (int k = 0; k < digits; ++k) scale *= 10;
+    const integer r = bmp::sqrt(integer(num(u) * scale * scale / den(u)));
+    for (const integer& k : {r, integer(r + 1)}) {
+      const rational t(k, scale), w = 1 + t * t;
+      out.push_back(point((1 - t * t) / w, 2 * t / w));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
+                                                bool is_level, int digits) {
+  if (osp)
+    throw InputError("--certificate: a MIMO OSP level (--ss with --kind osp) has no certificate yet; the ISP level "
+                     "(--kind isp) has one");
+  if (c.status != Status::exact && c.status != Status::certified)
+    throw InputError("--certificate: the level is not certified here (the certified frequency path gave none: " +
+                     (c.note.empty() ? std::string("no reason given") : c.note) + "): no certificate");
+  if (!is_level || !c.enclosure) throw InputError("--certificate: the certified frequency value is not the level here: no certificate");
+  nlohmann::json j = header("passivity-level-mimo");
+  j["model"] = {{"A", matrix_json(sys.A)}, {"B", matrix_json(sys.B)}, {"C", matrix_json(sys.C)},
+                {"D", matrix_json(sys.D)}, {"T", sys.T.str()}, {"kind", "isp"}};
+  nlohmann::json claim;
+  claim["quantity"] = "phi* = min_{0 <= theta <= pi} lambda_min(He G(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: "
+                      "the ISP level of paper 000 Definition 2 (Lemma 1)";
+  const bool exact = c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
+  if (exact) {
+    claim["status"] = "exact";
+    claim["value"] = c.enclosure->lo.str();
+  } else {  // the enclosure as printed, rounded outward (cmd_passivity_level.cpp)
+    printed_enclosure(claim, decimal_outward(c.enclosure->lo, digits, -1), decimal_outward(c.enclosure->hi, digits, +1));
+  }
+  j["claim"] = claim;
+  std::vector<nlohmann::json> candidates{nlohmann::json::object()};
+  if (!exact) {
+    if (!c.c_min) throw NumericalError("--certificate: the certified MIMO path gave no minimiser to place the witness at");
+    candidates = circle_witnesses(*c.c_min);
+  }
+  std::string why;
+  for (const nlohmann::json& e : candidates) {  // the first that check/ verifies
+    j["evidence"] = e;
+    const check::Verdict v = check::check_certificate(j);
+    if (v.verified) return j;
+    why = v.reason;
+  }
+  throw NumericalError("--certificate: no witness found that proves the printed claim (check/: " + why + ")");
+}
+
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits) {
   nlohmann::json j = header("r");
   j["model"] = {{"T", T.str()}, {"omega", omega.str()}};

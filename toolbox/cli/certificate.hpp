@@ -1,4 +1,4 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound`, `passivity-level`, `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `passivity-level` (SISO --H, MIMO --ss), `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
@@ -43,6 +43,16 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 /// (exit 2) when G is not given by --H, or c is not a certified level (an OSP value <= 0).
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
                                            const lmi::PassivityLevel& c, bool is_level, int digits);
+
+/// The certificate of `passivity-level --ss FILE --kind isp` with a square MIMO G (m >= 2 inputs;
+/// check/passivity_level_mimo_check.hpp, kind passivity-level-mimo): the exact A, B, C, D and T as
+/// written, the certified ISP level c as claim (exact, or its enclosure printed at `digits`), and
+/// for an enclosure a witness z0 = c0 + j s0, a rational point of the unit circle near c.c_min with
+/// He G(z0) - hi I not positive definite. The certificate is checked (check/) before it is returned.
+/// InputError (exit 2) for what has no certificate: an OSP level, a level that is not certified;
+/// NumericalError (exit 3) when no witness is found.
+nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
+                                                bool is_level, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit

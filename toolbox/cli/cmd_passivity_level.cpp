@@ -221,9 +221,17 @@ int run(const Opts& o) {
   const Levels v = lmi::passivity_levels({sys, G, exact}, o.kind == "osp" ? lmi::PassivityKind::osp : lmi::PassivityKind::isp,
                                           o.lemma, backend, o.grid, o.digits);
   if (!o.certificate.empty()) {
-    if (!G) throw InputError("--certificate: a certificate holds G as written by --H; with --ss or --mat it is not implemented yet");
-    write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c,
-                                                                 v.cert_ok && v.cert_is_level && &v.main() == &v.c, o.digits));
+    const bool is_level = v.cert_ok && v.cert_is_level && &v.main() == &v.c;
+    if (G) {
+      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, o.digits));
+    } else if (o.ss.empty()) {
+      throw InputError("--certificate: a --mat model has no certificate yet (give G as written by --H, or a MIMO --ss FILE)");
+    } else if (exact->inputs() < 2) {
+      throw InputError("--certificate: a one-input --ss model has none (its level is computed on the doubles); a SISO "
+                       "certificate holds G as written by --H, a MIMO one (two inputs or more) A, B, C, D of --ss");
+    } else {
+      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, o.digits));
+    }
   }
   if (o.json) report_json(o, v);
   else report_text(o, v);
@@ -243,8 +251,8 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_option("--certificate", o->certificate,
-                                     "write the certified SISO level's certificate (JSON, G by --H) to FILE, for `hapstab check FILE` "
-                                     "(docs/certificates.md)");
+                                     "write the certified level's certificate (JSON: G by --H, or a MIMO --ss with --kind isp) to "
+                                     "FILE, for `hapstab check FILE` (docs/certificates.md)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
                                                       "enclosure, lower_bound, upper_bound, exact, value, theta, kind, "
                                                       "certified_frequency, lmi, frequency, note)");

@@ -10,6 +10,7 @@
 #include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/bound_max_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
+#include "hapstab/check/passivity_level_mimo_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
 #include "hapstab/check/stability_max_check.hpp"
@@ -162,11 +163,12 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound") return check_bound(c);
   if (kind == "bound-max") return check_bound_max(c);
   if (kind == "passivity-level") return check_passivity_level(c);
+  if (kind == "passivity-level-mimo") return check_passivity_level_mimo(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

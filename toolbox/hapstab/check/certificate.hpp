@@ -5,6 +5,7 @@
 //   bound   b* of paper 001 (45)/(54), any delay          check/bound_check.hpp
 //   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
+//   passivity-level-mimo  MIMO ISP level of A, B, C, D    check/passivity_level_mimo_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
 //   stability  the one-DOF sampled loop, Schur-Cohn       check/stability_check.hpp
 //   stability-max  its largest stable gain (stability --max)  check/stability_max_check.hpp

@@ -66,6 +66,9 @@ struct PassivityLevel {
   std::optional<Enclosure<rational>> enclosure;  ///< certified frequency method: the level is in [lo, hi]
   std::string value;            ///< certified frequency method: the level to `digits` digits ("-inf")
   double theta_min = -1;        ///< frequency methods: the minimising theta in [0, pi]
+  /// certified MIMO path: cos(theta_min) as the exact rational the path worked with (where its upper
+  /// end was found; exact status: next to a root of det(He G - level I)); the witness of a certificate
+  std::optional<rational> c_min;
   std::string note;             ///< caveats, failure reasons
 
   /// Something is proven: a lower bound, or the certified frequency method's level.

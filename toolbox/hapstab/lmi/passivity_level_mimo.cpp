@@ -311,6 +311,7 @@ PassivityLevel certified_mimo(const StateSpace<rational>& sys, PassivityKind kin
         out.level = to_real<double>(*q) + 0.0;
         out.value = to_decimal(*q, digits);
         out.theta_min = theta_of(*e.touch);
+        out.c_min = *e.touch;
         break;
       }
     }
@@ -323,6 +324,7 @@ PassivityLevel certified_mimo(const StateSpace<rational>& sys, PassivityKind kin
       out.level = to_real<double>((lo + *up) / 2) + 0.0;
       out.value = passivity::detail::enclosure_decimal(lo, *up, digits);
       out.theta_min = theta_of(c_best);
+      out.c_min = c_best;
       break;
     }
     if (e.side == Side::unknown) {
