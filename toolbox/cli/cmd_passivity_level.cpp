@@ -227,8 +227,8 @@ int run(const Opts& o) {
     } else if (o.ss.empty()) {
       throw InputError("--certificate: a --mat model has no certificate yet (give G as written by --H, or a MIMO --ss FILE)");
     } else if (exact->inputs() < 2) {
-      throw InputError("--certificate: a one-input --ss model has none (its level is computed on the doubles); a SISO "
-                       "certificate holds G as written by --H, a MIMO one (two inputs or more) A, B, C, D of --ss");
+      throw InputError("--certificate: a one-input --ss model has no certificate kind yet; a SISO certificate holds G "
+                       "as written by --H, a MIMO one (two inputs or more) A, B, C, D of --ss");
     } else {
       write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, o.digits));
     }
