@@ -32,6 +32,7 @@
 #include <cmath>
 #include <complex>
 #include <sstream>
+#include <utility>
 
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -381,14 +382,21 @@ std::optional<std::pair<Verdict, FrequencyWitness>> exact_witness_at(const State
   return std::nullopt;
 }
 
-// The local minima of v (in the order of the grid) below 0, least first, at most k.
-std::vector<size_t> negative_local_minima(const std::vector<double>& v, size_t k) {
-  std::vector<size_t> loc;
+// The local minima of v over the grid th (ascending), least first, at most k, of which at most one
+// below `near0` (where the double sweep is noise, many spurious minima).
+std::vector<size_t> least_local_minima(const std::vector<double>& th, const std::vector<double>& v, size_t k,
+                                       double near0) {
+  std::vector<size_t> loc, out;
   for (size_t i = 0; i < v.size(); ++i)
-    if (v[i] < 0 && (i == 0 || v[i] <= v[i - 1]) && (i + 1 == v.size() || v[i] <= v[i + 1])) loc.push_back(i);
+    if ((i == 0 || v[i] <= v[i - 1]) && (i + 1 == v.size() || v[i] <= v[i + 1])) loc.push_back(i);
   std::sort(loc.begin(), loc.end(), [&](size_t a, size_t b) { return v[a] < v[b]; });
-  if (loc.size() > k) loc.resize(k);
-  return loc;
+  bool one_near0 = false;
+  for (size_t i : loc) {
+    if (out.size() == k) break;
+    if (th[i] < near0 && std::exchange(one_near0, true)) continue;
+    out.push_back(i);
+  }
+  return out;
 }
 
 }  // namespace
@@ -411,9 +419,10 @@ SolvePath frequency_witness_path() {
     const Sweep s{lmi::CircleResponse(to_double(Eh.A), to_double(Eh.B), to_double(Eh.C), to_double(Eh.D)),
                   to_double(px.X), to_double(DXq)};
     // grid on (0, pi], denser near 0 (the accumulator's pole at z = 1), then golden section around
-    // each of the least local minima below 0 in turn: near theta = 0 the double sweep of E-hat ~ 1/theta
-    // is cancellation noise, and its least value there may not survive the exact evaluation while a
-    // true dip elsewhere does (issue 46's witness campaign)
+    // each of its least local minima in turn, the exact certificate tried wherever the refined value is
+    // below 0 (issue 46's witness campaign): near theta = 0 the double sweep of E-hat ~ 1/theta is
+    // cancellation noise, and its least value there may not survive the exact evaluation while a true
+    // dip elsewhere does; and a dip narrower than the grid may be below 0 only between its points
     const int K = 1024, kCandidates = 4;
     std::vector<double> th;
     for (int k = 1; k <= 60; ++k) th.push_back(M_PI / K * std::pow(10.0, -(61 - k) / 10.0));
@@ -426,7 +435,7 @@ SolvePath frequency_witness_path() {
     const Polynomial<rational> p0 = charpoly(Eh.A);
     std::ostringstream tried;
     int n_tried = 0;
-    for (size_t i : negative_local_minima(v, kCandidates)) {
+    for (size_t i : least_local_minima(th, v, kCandidates, 0.999 * M_PI / K)) {
       double lo = i ? th[i - 1] : std::max(1e-9, th[i] / 10), hi = i + 1 < th.size() ? th[i + 1] : M_PI;
       for (int it = 0; it < 40; ++it) {
         const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
@@ -436,6 +445,7 @@ SolvePath frequency_witness_path() {
       double tc = 0.5 * (lo + hi), vc = s.at(tc).first;
       if (!(vc < v[i])) tc = th[i], vc = v[i];
       if (vc < best) best = vc, bt = tc;
+      if (!(vc < 0)) continue;
       tried << (n_tried++ ? ", " : "") << numeric_decimal(vc) << " at " << numeric_decimal(tc);
       if (auto w = exact_witness_at(Eh, px.X, DXq, p0, tc, s.at(tc).second)) {
         r.proven = std::move(w->first);
@@ -446,7 +456,7 @@ SolvePath frequency_witness_path() {
     r.numeric_seconds = since(t0);
     std::ostringstream sd;
     sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << th.size()
-       << " frequencies and golden section at its least local minima below 0: least " << numeric_decimal(best)
+       << " frequencies and golden section at its " << kCandidates << " least local minima: least " << numeric_decimal(best)
        << " at theta = " << numeric_decimal(bt) << " rad";
     r.solver_detail = sd.str();
     if (r.proven) return r;
@@ -455,7 +465,7 @@ SolvePath frequency_witness_path() {
                    " on the sweep (the frequency condition of (16) may hold)";
       return r;
     }
-    r.no_point = "none of the sweep's " + std::to_string(n_tried) + " least local minima below 0 (" + tried.str() +
+    r.no_point = "none of the sweep's " + std::to_string(n_tried) + " refined local minima below 0 (" + tried.str() +
                  " rad) survived the exact evaluation at a rational point and direction";
     return r;
   };
