@@ -32,7 +32,6 @@
 #include <cmath>
 #include <complex>
 #include <sstream>
-#include <utility>
 
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -382,20 +381,20 @@ std::optional<std::pair<Verdict, FrequencyWitness>> exact_witness_at(const State
   return std::nullopt;
 }
 
-// The local minima of v over the grid th (ascending), least first, at most k, of which at most one
-// below `near0` (where the double sweep is noise, many spurious minima).
-std::vector<size_t> least_local_minima(const std::vector<double>& th, const std::vector<double>& v, size_t k,
-                                       double near0) {
+// The candidates: the k least local minima of v below 0 over the whole grid th (ascending), then the
+// k2 least local minima at or above `from` whatever their sign (a dip narrower than the grid may be
+// below 0 only between its points), each once.
+std::vector<size_t> candidate_minima(const std::vector<double>& th, const std::vector<double>& v, size_t k, size_t k2,
+                                     double from) {
   std::vector<size_t> loc, out;
   for (size_t i = 0; i < v.size(); ++i)
     if ((i == 0 || v[i] <= v[i - 1]) && (i + 1 == v.size() || v[i] <= v[i + 1])) loc.push_back(i);
   std::sort(loc.begin(), loc.end(), [&](size_t a, size_t b) { return v[a] < v[b]; });
-  bool one_near0 = false;
-  for (size_t i : loc) {
-    if (out.size() == k) break;
-    if (th[i] < near0 && std::exchange(one_near0, true)) continue;
-    out.push_back(i);
-  }
+  for (size_t i : loc)
+    if (out.size() < k && v[i] < 0) out.push_back(i);
+  size_t added = 0;
+  for (size_t i : loc)
+    if (added < k2 && th[i] >= from && std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i), ++added;
   return out;
 }
 
@@ -419,10 +418,11 @@ SolvePath frequency_witness_path() {
     const Sweep s{lmi::CircleResponse(to_double(Eh.A), to_double(Eh.B), to_double(Eh.C), to_double(Eh.D)),
                   to_double(px.X), to_double(DXq)};
     // grid on (0, pi], denser near 0 (the accumulator's pole at z = 1), then golden section around
-    // each of its least local minima in turn, the exact certificate tried wherever the refined value is
-    // below 0 (issue 46's witness campaign): near theta = 0 the double sweep of E-hat ~ 1/theta is
-    // cancellation noise, and its least value there may not survive the exact evaluation while a true
-    // dip elsewhere does; and a dip narrower than the grid may be below 0 only between its points
+    // each candidate local minimum in turn (candidate_minima), the exact certificate tried wherever the
+    // refined value is below 0 (issue 46's witness campaign): near theta = 0 the double sweep of
+    // E-hat ~ 1/theta is cancellation noise, and its least value there may not survive the exact
+    // evaluation (or round to the pole z = 1) while another point does; and a dip narrower than the
+    // grid may be below 0 only between its points
     const int K = 1024, kCandidates = 4;
     std::vector<double> th;
     for (int k = 1; k <= 60; ++k) th.push_back(M_PI / K * std::pow(10.0, -(61 - k) / 10.0));
@@ -435,7 +435,7 @@ SolvePath frequency_witness_path() {
     const Polynomial<rational> p0 = charpoly(Eh.A);
     std::ostringstream tried;
     int n_tried = 0;
-    for (size_t i : least_local_minima(th, v, kCandidates, 0.999 * M_PI / K)) {
+    for (size_t i : candidate_minima(th, v, kCandidates, 2, 0.999 * M_PI / K)) {
       double lo = i ? th[i - 1] : std::max(1e-9, th[i] / 10), hi = i + 1 < th.size() ? th[i + 1] : M_PI;
       for (int it = 0; it < 40; ++it) {
         const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
@@ -456,7 +456,8 @@ SolvePath frequency_witness_path() {
     r.numeric_seconds = since(t0);
     std::ostringstream sd;
     sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << th.size()
-       << " frequencies and golden section at its " << kCandidates << " least local minima: least " << numeric_decimal(best)
+       << " frequencies and golden section at its " << kCandidates << " least local minima below 0 and its 2 least "
+          "local minima away from 0: least " << numeric_decimal(best)
        << " at theta = " << numeric_decimal(bt) << " rad";
     r.solver_detail = sd.str();
     if (r.proven) return r;
