@@ -504,3 +504,27 @@ def decide(c, sc, j, rc):
     else:
         out.update(outcome="MISS", why=f"hapstab: {h}, certified; the reference's frequency condition holds: {out['ref_text']}")
     return out
+
+
+def main(argv):
+    """indep_witness.py HAPSTAB SCENE [EXPECT]: one scene file through `multidof analyze --json` and the
+    reference; exit 0 when they agree (and hapstab's answer is EXPECT: feasible | witness), else 1."""
+    import json
+    import subprocess
+    exe, path = argv[1], argv[2]
+    text = open(path).read()
+    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
+    j = json.loads(p.stdout)
+    out = decide(dict(tags={}), Scene(text), j, p.returncode)
+    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
+    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
+    want = {"feasible": "feasible", "witness": "infeasible (witness)"}.get(argv[3]) if len(argv) > 3 else None
+    if want and out["tags"].get("hapstab") != want:
+        print(f"  expected hapstab's answer {want}")
+        return 1
+    return 0 if out["outcome"] == "agree" else 1
+
+
+if __name__ == "__main__":
+    import sys
+    sys.exit(main(sys.argv))
