@@ -4,7 +4,7 @@ code and no formula-level shortcut with it (issue 46, "The campaigns that would 
 these"; docs/verification.md, "Independent campaigns").
 
   tests/verify/independent.py [--hapstab build/hapstab]
-                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism]
+                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -40,6 +40,16 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  or DC-condition upper end checked); the ratio against the reference's supremum
                  over Theorem 5's bracket. Theorem 5's own supremum has no independent reference
                  (it needs an LMI solver): an infeasible program is counted, not checked.
+  witness        `multidof analyze --scene S` on walls K + B(z-1)/(Tz) (a resonance 1e-2..1e-4 from the
+                 circle in a quarter), linked walls, contact scenes (backward Euler) and two independent
+                 walls, delays 0-24, device levels near Theorem 5's boundary (1e-2, 1e-4, 1e-6 either
+                 side) or far from it (indep_witness.py): hapstab's verdict of (16) against the sign of
+                 min over theta of lambda_min(He E-hat(e^{j theta}) + Delta_D), E-hat = Tz/(z-1) z^-n E
+                 evaluated from the scene's text in mpmath. A printed witness (z, u) is re-evaluated
+                 at 50 digits (|z| = 1 exactly, u != 0, phi < 0 strictly); a certified "feasible" with
+                 a violation found, or a certified "infeasible" where the condition holds, is a miss.
+                 "reference undecided" (|mu| within 1e-25, or a witness with phi = 0 to 40 digits) is
+                 counted apart, never as agreement.
 
 Outcomes per case: agree, MISS (a disagreement: printed with the command line and the
 reference value; exit 1), REFERENCE MISSED (hapstab's own maximiser shows a value the reference's
@@ -66,6 +76,7 @@ import indep_charpoly as ICH  # noqa: E402
 import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_passivity as IP  # noqa: E402
+import indep_witness as IW  # noqa: E402
 from indep_common import SumTF, dec, run_hapstab, run_hapstab_scene, keep_scene_if_missed, shell_line  # noqa: E402
 
 # relative tolerances, and why:
@@ -910,6 +921,45 @@ BRANCHES_CONSERVATISM = [
 ]
 
 
+# ---------------------------------------------------------------------------------------------
+# multidof analyze --scene S: (16) infeasible by the frequency-domain witness, or feasible
+
+
+def case_witness(rng):
+    c = IW.gen(rng)
+    return c
+
+
+def check_witness(c, exe, timeout):
+    import tempfile
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_witness_") as f:
+        f.write(c["text"])
+    args = ["multidof", "analyze", "--scene", f.name]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    out = dict(tags=dict(c["tags"]), rc=rc, seconds=dt, margin=None, scene=c["text"], args=args)
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif rc == 2:
+        out.update(outcome="refused", why=why_of(err, j))
+    elif j is None or rc not in (0, 1, 3):
+        out.update(outcome="MISS", why=f"exit {rc}, no JSON: {err[-300:]}")
+    else:
+        r = IW.decide(c, IW.Scene(c["text"]), j, rc)
+        r.update(seconds=dt, scene=c["text"], args=args)
+        out = r
+    keep_scene_if_missed(out, f.name)
+    return out
+
+
+BRANCHES_WITNESS = [  # compared: hapstab's certified verdict of (16) against the reference's
+    ("hapstab", "infeasible (witness)", 0.15), ("hapstab", "feasible", 0.2), ("witness verified", True, 0.15),
+    ("witness at", "theta = pi", 0.01), ("witness at", "theta < 1e-3", 0.01), ("witness at", "interior", 0.03),
+    ("reference minimiser", "theta = pi", 0.02), ("reference minimiser", "theta -> 0", 0.02),
+    ("reference minimiser", "interior", 0.1), ("near the boundary", True, 0.1),
+    ("family", "contact", 0.08), ("family", "two parts", 0.03), ("resonance near the circle", True, 0.03),
+]
+
+
 CRITERIA = {
     "bound": (case_bound, check_bound, BRANCHES_BOUND),
     "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
@@ -918,6 +968,7 @@ CRITERIA = {
     "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
     "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
+    "witness": (case_witness, check_witness, BRANCHES_WITNESS),
 }
 
 
@@ -926,6 +977,7 @@ MARGIN_TEXT = {  # what each criterion's distance from the boundary is (the defa
     "bound_max": "none",
     "scene_coupling": "|1 - rho| at the scene's value of g, the first value decided; n/a: no boundary within g_ref 2^-10..2^10 (double scan)",
     "charpoly": "1 - rho of M in double",
+    "witness": "the reference's min over theta of lambda_min(He E-hat + Delta_D), relative to 1 + max Delta_D",
 }
 
 
@@ -942,7 +994,7 @@ def margin_bucket(m):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--hapstab", default="build/hapstab")
-    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism")
+    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness")
     ap.add_argument("--cases", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--first", type=int, default=0)
@@ -989,7 +1041,7 @@ def main():
                 per_branch[(tag, val)][o] += 1
                 if compared:
                     per_branch[(tag, val)]["compared"] += 1
-            if o in ("undecided", "refused", "timeout"):
+            if o in ("undecided", "refused", "timeout", "reference undecided"):
                 undec_margin[(o, margin_bucket(r.get("margin")))] += 1
             args = r.get("args", c.get("args"))
             line = shell_line(a.hapstab, args) if args else ""
@@ -1002,7 +1054,7 @@ def main():
                     print("  scene:\n    " + r["scene"].replace("\n", "\n    "))
                 print(f"  rerun: tests/verify/independent.py --hapstab {a.hapstab} --criterion {crit} --seed {a.seed} --case {k}")
                 sys.stdout.flush()
-            elif o in ("undecided", "refused", "timeout", "unchecked"):
+            elif o in ("undecided", "refused", "timeout", "unchecked", "reference undecided"):
                 print(f"[{crit} case {k}] {o} (exit {r['rc']}): {r.get('why', '')[:200]}")
                 print(f"  command: {line}")
                 sys.stdout.flush()

@@ -156,6 +156,16 @@ json plan_json(const std::vector<multidof::PlanStep>& plan) {
   return a;
 }
 
+// The exact witness of infeasibility (path_witness.cpp), as decided: rationals as "p/q" strings.
+json witness_json(const std::optional<multidof::FrequencyWitness>& w) {
+  if (!w) return nullptr;
+  json u = json::array();
+  for (const auto& x : w->u) u.push_back(x.str());
+  return {{"theta", w->theta}, {"z", {w->z_re.str(), w->z_im.str()}}, {"u", u},
+          {"phi", to_real<double>(w->phi)}, {"phi_negative", w->phi < 0},
+          {"form", "phi = Re(u^T X E-hat(z) u) + u^T Delta_D X u <= 0, X the facial direction X_1 (exact)"}};
+}
+
 // How the scene split (multidof/components.hpp): one entry per independent component.
 json components_json(const multidof::AnalysisResult& r) {
   json a = json::array();
@@ -223,6 +233,7 @@ int run_analyze(const Opts& o) {
          {"path", r.path},
          {"plan", plan_json(r.plan)},
          {"components", components_json(r)},
+         {"witness", witness_json(r.witness)},
          {"assumptions", assumptions_json(a.premises)},
          {"seconds", {{"realisation", a.seconds.realisation},
                       {"sdp", r.sdp_seconds},

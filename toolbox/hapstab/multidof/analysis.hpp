@@ -81,6 +81,18 @@ struct ComponentResult {
   double seconds = 0;
 };
 
+/// The exact frequency-domain witness that proved (16) infeasible (path_witness.cpp), as it was
+/// decided: a rational point z = z_re + j z_im of the unit circle and a rational direction u != 0
+/// (indexed by the whole scene's DOFs: zero outside the component it came from) where
+/// phi = Re(u^T X E-hat(z) u) + u^T Delta_D X u <= 0 (X the facial direction X_1). Published in
+/// `multidof analyze --json` (key `witness`) so that an outside check can re-evaluate it.
+struct FrequencyWitness {
+  double theta = 0;         ///< the sweep's frequency (rad per sample) the rational z rounds
+  rational z_re, z_im;      ///< z_re^2 + z_im^2 = 1 exactly
+  std::vector<rational> u;  ///< one entry per DOF, not all 0
+  rational phi;             ///< phi at (z, u), exact, <= 0
+};
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -100,6 +112,7 @@ struct AnalysisResult {
   std::string path;              ///< the path that decided (planner.hpp), "" when none ran
   std::vector<PlanStep> plan;    ///< every path's fate, in the planner's order
   std::vector<ComponentResult> components;  ///< how the scene split (empty: it did not; path "decomposed")
+  std::optional<FrequencyWitness> witness;  ///< set when the frequency-domain witness decided
   double seconds = 0;      ///< wall time of analyze()
   double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
                            ///< facial reduction, exact checks); decomposed: their share of the wall time

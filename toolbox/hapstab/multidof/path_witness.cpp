@@ -336,6 +336,70 @@ std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const 
   return Verdict{Outcome::fails, Status::exact, o.str()};
 }
 
+namespace {
+
+// The exact certificate near e^{j theta}: a rational point z of the unit circle, u the real or the
+// imaginary part of the eigenvector w rounded to rationals (u != 0), phi(z, u) by the determinant
+// lemma from exact characteristic polynomials (p0 = det(zI - A)). nullopt when neither part gives
+// phi <= 0 there (or z is a pole).
+std::optional<std::pair<Verdict, FrequencyWitness>> exact_witness_at(const StateSpace<rational>& Eh, const MatQ& X,
+                                                                     const MatQ& DXq, const Polynomial<rational>& p0,
+                                                                     double bt, const Eigen::VectorXcd& w) {
+  const bool at_pi = bt > M_PI - 1e-9;
+  const rational t = at_pi ? rational(0) : lmi::round_dyadic(std::tan(bt / 2), 30);
+  const rational den = 1 + t * t;
+  const rational za = at_pi ? rational(-1) : (1 - t * t) / den, zb = at_pi ? rational(0) : 2 * t / den;
+  const auto [p0r, p0i] = eval(p0, za, zb);
+  const rational p0n = p0r * p0r + p0i * p0i;
+  for (int part = 0; part < 2 && p0n != 0; ++part) {
+    Eigen::VectorXd ud = part == 0 ? Eigen::VectorXd(w.real()) : Eigen::VectorXd(w.imag());
+    const double mx = ud.cwiseAbs().maxCoeff();
+    if (!(mx > 0)) continue;
+    MatQ u(ud.size(), 1);
+    for (Eigen::Index i = 0; i < ud.size(); ++i) u(i, 0) = lmi::round_dyadic(ud(i) / mx, 20);
+    if (u.isZero(0)) continue;  // (14) is strict only at u != 0: phi(z, 0) = 0 proves nothing
+    const MatQ b = exact_product(Eh.B, u);
+    const MatQ cx = exact_product(exact_product(MatQ(u.transpose()), X), Eh.C);
+    const rational d = exact_product(exact_product(MatQ(u.transpose()), X), exact_product(Eh.D, u))(0, 0);
+    const rational q = exact_product(exact_product(MatQ(u.transpose()), DXq), u)(0, 0);
+    const auto [p1r, p1i] = eval(charpoly(MatQ(Eh.A - exact_product(b, cx))), za, zb);
+    // Re(p1/p0) = Re(p1 conj(p0)) / |p0|^2
+    const rational phi = (p1r * p0r + p1i * p0i) / p0n - 1 + d + q;
+    if (phi > 0) continue;
+    std::ostringstream o;
+    o << "exact frequency-domain witness: at the rational point z = (" << to_real<double>(za) << ", "
+      << to_real<double>(zb) << " j) of the unit circle (theta = " << numeric_decimal(bt) << " rad) and the rational direction u ("
+      << u.rows() << " entries), Re(u^T X E-hat(z) u) + u^T Delta_D X u = " << numeric_decimal(to_real<double>(phi))
+      << " <= 0 (rational arithmetic on the exact data (15): E-hat(z) by the determinant lemma from exact "
+         "characteristic polynomials), while every point of (16) makes it > 0 (the first LMI at [x; u], "
+         "x = (zI - A)^-1 B u, with (14)'s Delta_D X - Q_E > 0): (16) is infeasible for every X the facial "
+         "conditions allow (X = g X_1, g > 0)";
+    std::vector<rational> uv(static_cast<size_t>(u.rows()));
+    for (Eigen::Index i = 0; i < u.rows(); ++i) uv[static_cast<size_t>(i)] = u(i, 0);
+    return std::make_pair(Verdict{Outcome::fails, Status::exact, o.str()}, FrequencyWitness{bt, za, zb, std::move(uv), phi});
+  }
+  return std::nullopt;
+}
+
+// The candidates: the k least local minima of v below 0 over the whole grid th (ascending), then the
+// k2 least local minima at or above `from` whatever their sign (a dip narrower than the grid may be
+// below 0 only between its points), each once.
+std::vector<size_t> candidate_minima(const std::vector<double>& th, const std::vector<double>& v, size_t k, size_t k2,
+                                     double from) {
+  std::vector<size_t> loc, out;
+  for (size_t i = 0; i < v.size(); ++i)
+    if ((i == 0 || v[i] <= v[i - 1]) && (i + 1 == v.size() || v[i] <= v[i + 1])) loc.push_back(i);
+  std::sort(loc.begin(), loc.end(), [&](size_t a, size_t b) { return v[a] < v[b]; });
+  for (size_t i : loc)
+    if (out.size() < k && v[i] < 0) out.push_back(i);
+  size_t added = 0;
+  for (size_t i : loc)
+    if (added < k2 && th[i] >= from && std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i), ++added;
+  return out;
+}
+
+}  // namespace
+
 SolvePath frequency_witness_path() {
   SolvePath p;
   p.name = "frequency-domain witness";
@@ -353,70 +417,57 @@ SolvePath frequency_witness_path() {
     const MatQ DXq = exact_product(pb.structure.delta_D(), px.X);
     const Sweep s{lmi::CircleResponse(to_double(Eh.A), to_double(Eh.B), to_double(Eh.C), to_double(Eh.D)),
                   to_double(px.X), to_double(DXq)};
-    // grid on (0, pi], denser near 0 (the accumulator's pole at z = 1), then golden section
-    const int K = 1024;
+    // grid on (0, pi], denser near 0 (the accumulator's pole at z = 1), then golden section around
+    // each candidate local minimum in turn (candidate_minima), the exact certificate tried wherever the
+    // refined value is below 0 (issue 46's witness campaign): near theta = 0 the double sweep of
+    // E-hat ~ 1/theta is cancellation noise, and its least value there may not survive the exact
+    // evaluation (or round to the pole z = 1) while another point does; and a dip narrower than the
+    // grid may be below 0 only between its points
+    const int K = 1024, kCandidates = 4;
+    std::vector<double> th;
+    for (int k = 1; k <= 60; ++k) th.push_back(M_PI / K * std::pow(10.0, -(61 - k) / 10.0));
+    for (int k = 1; k <= K; ++k) th.push_back(M_PI * k / K);
+    std::vector<double> v(th.size());
+    for (size_t i = 0; i < th.size(); ++i) v[i] = s.at(th[i]).first;
     double best = INFINITY, bt = M_PI;
-    auto consider = [&](double th) {
-      const double v = s.at(th).first;
-      if (v < best) best = v, bt = th;
-    };
-    for (int k = 1; k <= K; ++k) consider(M_PI * k / K);
-    for (int k = 1; k <= 60; ++k) consider(M_PI / K * std::pow(10.0, -k / 10.0));
-    double lo = std::max(1e-9, bt - M_PI / K), hi = std::min(M_PI, bt + M_PI / K);
-    for (int it = 0; it < 40; ++it) {
-      const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
-      if (s.at(a).first < s.at(b).first) hi = b;
-      else lo = a;
+    for (size_t i = 0; i < th.size(); ++i)
+      if (v[i] < best) best = v[i], bt = th[i];
+    const Polynomial<rational> p0 = charpoly(Eh.A);
+    std::ostringstream tried;
+    int n_tried = 0;
+    for (size_t i : candidate_minima(th, v, kCandidates, 2, 0.999 * M_PI / K)) {
+      double lo = i ? th[i - 1] : std::max(1e-9, th[i] / 10), hi = i + 1 < th.size() ? th[i + 1] : M_PI;
+      for (int it = 0; it < 40; ++it) {
+        const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
+        if (s.at(a).first < s.at(b).first) hi = b;
+        else lo = a;
+      }
+      double tc = 0.5 * (lo + hi), vc = s.at(tc).first;
+      if (!(vc < v[i])) tc = th[i], vc = v[i];
+      if (vc < best) best = vc, bt = tc;
+      if (!(vc < 0)) continue;
+      tried << (n_tried++ ? ", " : "") << numeric_decimal(vc) << " at " << numeric_decimal(tc);
+      if (auto w = exact_witness_at(Eh, px.X, DXq, p0, tc, s.at(tc).second)) {
+        r.proven = std::move(w->first);
+        r.witness = std::move(w->second);
+        break;
+      }
     }
-    consider(0.5 * (lo + hi));
     r.numeric_seconds = since(t0);
     std::ostringstream sd;
-    sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << K + 60 + 41
-       << " frequencies: least " << numeric_decimal(best) << " at theta = " << numeric_decimal(bt) << " rad";
+    sd << "frequency sweep of lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) over " << th.size()
+       << " frequencies and golden section at its " << kCandidates << " least local minima below 0 and its 2 least "
+          "local minima away from 0: least " << numeric_decimal(best)
+       << " at theta = " << numeric_decimal(bt) << " rad";
     r.solver_detail = sd.str();
-    if (!(best < 0)) {
+    if (r.proven) return r;
+    if (n_tried == 0) {
       r.no_point = "no frequency-domain witness: lambda_min(He(X E-hat(e^{j theta})) + Delta_D X) >= " + numeric_decimal(best) +
                    " on the sweep (the frequency condition of (16) may hold)";
       return r;
     }
-    // the exact certificate: a rational point of the unit circle near e^{j bt}, a rational u
-    const Eigen::VectorXcd w = s.at(bt).second;
-    const bool at_pi = bt > M_PI - 1e-9;
-    const rational t = at_pi ? rational(0) : lmi::round_dyadic(std::tan(bt / 2), 30);
-    const rational den = 1 + t * t;
-    const rational za = at_pi ? rational(-1) : (1 - t * t) / den, zb = at_pi ? rational(0) : 2 * t / den;
-    const Polynomial<rational> p0 = charpoly(Eh.A);
-    const auto [p0r, p0i] = eval(p0, za, zb);
-    const rational p0n = p0r * p0r + p0i * p0i;
-    for (int part = 0; part < 2 && p0n != 0; ++part) {
-      Eigen::VectorXd ud = part == 0 ? Eigen::VectorXd(w.real()) : Eigen::VectorXd(w.imag());
-      const double mx = ud.cwiseAbs().maxCoeff();
-      if (!(mx > 0)) continue;
-      MatQ u(ud.size(), 1);
-      for (Eigen::Index i = 0; i < ud.size(); ++i) u(i, 0) = lmi::round_dyadic(ud(i) / mx, 20);
-      if (u.isZero(0)) continue;  // (14) is strict only at u != 0: phi(z, 0) = 0 proves nothing
-      const MatQ b = exact_product(Eh.B, u);
-      const MatQ cx = exact_product(exact_product(MatQ(u.transpose()), px.X), Eh.C);
-      const rational d = exact_product(exact_product(MatQ(u.transpose()), px.X), exact_product(Eh.D, u))(0, 0);
-      const rational q = exact_product(exact_product(MatQ(u.transpose()), DXq), u)(0, 0);
-      const auto [p1r, p1i] = eval(charpoly(MatQ(Eh.A - exact_product(b, cx))), za, zb);
-      // Re(p1/p0) = Re(p1 conj(p0)) / |p0|^2
-      const rational phi = (p1r * p0r + p1i * p0i) / p0n - 1 + d + q;
-      if (phi > 0) continue;
-      std::ostringstream o;
-      o << "exact frequency-domain witness: at the rational point z = (" << to_real<double>(za) << ", "
-        << to_real<double>(zb) << " j) of the unit circle (theta = " << numeric_decimal(bt) << " rad) and the rational direction u ("
-        << u.rows() << " entries), Re(u^T X E-hat(z) u) + u^T Delta_D X u = " << numeric_decimal(to_real<double>(phi))
-        << " <= 0 (rational arithmetic on the exact data (15): E-hat(z) by the determinant lemma from exact "
-           "characteristic polynomials), while every point of (16) makes it > 0 (the first LMI at [x; u], "
-           "x = (zI - A)^-1 B u, with (14)'s Delta_D X - Q_E > 0): (16) is infeasible for every X the facial "
-           "conditions allow (X = g X_1, g > 0)";
-      r.proven = Verdict{Outcome::fails, Status::exact, o.str()};
-      r.numeric_seconds = since(t0);
-      return r;
-    }
-    r.no_point = "the sweep's least eigenvalue " + numeric_decimal(best) + " at theta = " + numeric_decimal(bt) +
-                 " did not survive the exact evaluation at a rational point and direction";
+    r.no_point = "none of the sweep's " + std::to_string(n_tried) + " refined local minima below 0 (" + tried.str() +
+                 " rad) survived the exact evaluation at a rational point and direction";
     return r;
   };
   return p;

@@ -79,6 +79,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
     };
     if (r.proven) {
       decide(*r.proven, r.margin);
+      res.witness = r.witness;
       continue;
     }
     std::string why = r.no_point;
@@ -171,6 +172,12 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
   } else if (proven_fail) {
     res.verdict = {Outcome::fails, parts[*proven_fail].verdict.status,
                    "exact, " + how + ": " + named(*proven_fail) + " is infeasible: " + parts[*proven_fail].verdict.evidence};
+    if (const auto& w = parts[*proven_fail].witness) {  // its direction on the whole's DOFs (E is a direct sum)
+      res.witness = *w;
+      res.witness->u.assign(static_cast<size_t>(m), rational(0));
+      for (size_t i = 0; i < comps[*proven_fail].dofs.size(); ++i)
+        res.witness->u[static_cast<size_t>(comps[*proven_fail].dofs[i])] = w->u[i];
+    }
   } else if (numeric_fail) {
     res.verdict = {Outcome::fails, Status::numeric,
                    "numeric, " + how + ": " + named(*numeric_fail) + ": " + parts[*numeric_fail].verdict.evidence};

@@ -80,6 +80,7 @@ struct PathResult {
   double margin = 0;                    ///< AnalysisResult::margin when no point decides
   double numeric_seconds = 0;           ///< spent in the numeric search (SDP solver, Riccati equations)
   std::optional<detail::Pinned> pinned; ///< the structure it used (X pinned), for the least dissipative step
+  std::optional<FrequencyWitness> witness; ///< with `proven`: the exact witness it rests on (path_witness.cpp)
 };
 
 struct SolvePath {
