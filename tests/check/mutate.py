@@ -541,18 +541,26 @@ def level_produce(hapstab, m, cache, tmp, digits=17):
     return produce(hapstab, level_args(m, digits), "level%d" % digits + json.dumps(m, sort_keys=True), "l-edit.json", cache, tmp)
 
 
-def level_mutants(cert, rng, hapstab, cache, tmp):
-    out = [("unmutated", cert, "accept")]
-    cl, m = cert["claim"], cert["model"]
+def level_frame(cert, rng):
+    """What the level kinds' mutants start from: the claim's ends lo, hi (both the value when it is
+    exact), their scale max(|lo|, 1), a step `tiny` 40-60 digits below it, the enclosure's width
+    `gap` (at least tiny), and claim(l, h): the certificate with its claim replaced by [l, h]."""
+    cl = cert["claim"]
     lo, hi = (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
     scale = max(abs(lo), Fraction(1))
     tiny = scale / 10 ** rng.randint(40, 60)
-    gap = max(hi - lo, tiny)
 
     def claim(l, h):
         c = copy.deepcopy(cert)
         c["claim"] = {"quantity": cl["quantity"], "status": "certified", "lo": frac(l), "hi": frac(h)}
         return c
+    return lo, hi, scale, tiny, max(hi - lo, tiny), claim
+
+
+def level_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cl, m = cert["claim"], cert["model"]
+    lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
     osp = m["kind"] == "osp"
     out.append(("claimed above the level", claim(hi + gap / 2 + tiny, hi + 2 * gap + tiny), "refute"))
     below_lo = lo - 2 * gap - tiny
@@ -681,15 +689,7 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
     out = [("unmutated", cert, "accept")]
     cl, m = cert["claim"], cert["model"]
     exact_claim = cl["status"] == "exact"
-    lo, hi = (Fraction(cl["value"]),) * 2 if exact_claim else (Fraction(cl["lo"]), Fraction(cl["hi"]))
-    scale = max(abs(lo), Fraction(1))
-    tiny = scale / 10 ** rng.randint(40, 60)
-    gap = max(hi - lo, tiny)
-
-    def claim(l, h):
-        c = copy.deepcopy(cert)
-        c["claim"] = {"quantity": cl["quantity"], "status": "certified", "lo": frac(l), "hi": frac(h)}
-        return c
+    lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
     out.append(("lo > hi", claim(hi + tiny, hi), "refute"))
     if exact_claim:
         out.append(("exact value + tiny", with_field(cert, ["claim", "value"], frac(lo + tiny)), "refute"))

@@ -159,3 +159,24 @@ def dec(s):
         return -mp.inf
     with mp.workdps(120):  # every digit hapstab printed
         return mp.mpf(s)
+
+
+def golden_section(f, a, b, it=60, tol=None):
+    """Golden-section search for a minimum of f on [a, b] in mpmath: `it` steps, or fewer once the
+    bracket is narrower than tol (relative to 1 + |a|). Returns the final bracket (a, c, d, b) and
+    f at c and d."""
+    g = (mp.sqrt(5) - 1) / 2
+    c, d = b - g * (b - a), a + g * (b - a)
+    fc, fd = f(c), f(d)
+    for _ in range(it):
+        if tol is not None and b - a < tol * (1 + abs(a)):
+            break
+        if fc < fd:
+            b, d, fd = d, c, fc
+            c = b - g * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + g * (b - a)
+            fd = f(d)
+    return a, c, d, b, fc, fd

@@ -37,7 +37,7 @@ from fractions import Fraction as Q
 import mpmath as mp
 import numpy as np
 
-from indep_common import Rational, SumTF, dec, fstr
+from indep_common import Rational, SumTF, dec, fstr, golden_section
 
 GOLD = (math.sqrt(5) - 1) / 2
 
@@ -196,21 +196,8 @@ def refine_mp(obj, th0, a, b):
             d1 = mp.diff(f, th, 1)
             err = abs(d1 * step) + mp.mpf(10) ** -(obj.dps - 12) * (1 + abs(v))
             return th, v, err
-        # golden section in mpmath
-        g = (mp.sqrt(5) - 1) / 2
-        c, d = b - g * (b - a), a + g * (b - a)
-        fc, fd = f(c), f(d)
-        for _ in range(400):
-            if b - a < mp.mpf(10) ** -(obj.dps // 2 + 2) * (1 + abs(a)):
-                break
-            if fc >= fd:
-                b, d, fd = d, c, fc
-                c = b - g * (b - a)
-                fc = f(c)
-            else:
-                a, c, fc = c, d, fd
-                d = a + g * (b - a)
-                fd = f(d)
+        # golden section for the maximum (the least of -f), in mpmath
+        a, _, _, b, _, _ = golden_section(lambda x: -f(x), a, b, 400, mp.mpf(10) ** -(obj.dps // 2 + 2))
         x = (a + b) / 2
         v = f(x)
         err = abs(f(a) - v) + abs(f(b) - v) + mp.mpf(10) ** -(obj.dps - 12) * (1 + abs(v))

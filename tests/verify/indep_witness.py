@@ -32,6 +32,8 @@ from fractions import Fraction as Q
 import mpmath as mp
 import numpy as np
 
+from indep_common import golden_section
+
 DPS = 40
 
 
@@ -179,18 +181,7 @@ def grid(K=32768):
 
 
 def golden(f, a, b, it=60):
-    g = (mp.sqrt(5) - 1) / 2
-    c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = f(c), f(d)
-    for _ in range(it):
-        if fc < fd:
-            b, d, fd = d, c, fc
-            c = b - g * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + g * (b - a)
-            fd = f(d)
+    _, c, d, _, fc, fd = golden_section(f, a, b, it)
     return (c, fc) if fc < fd else (d, fd)
 
 
