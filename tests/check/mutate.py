@@ -541,12 +541,17 @@ def level_produce(hapstab, m, cache, tmp, digits=17):
     return produce(hapstab, level_args(m, digits), "level%d" % digits + json.dumps(m, sort_keys=True), "l-edit.json", cache, tmp)
 
 
+def claim_ends(cl):
+    """A level claim's ends: (value, value) when it is exact, else (lo, hi)."""
+    return (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+
+
 def level_frame(cert, rng):
     """What the level kinds' mutants start from: the claim's ends lo, hi (both the value when it is
     exact), their scale max(|lo|, 1), a step `tiny` 40-60 digits below it, the enclosure's width
     `gap` (at least tiny), and claim(l, h): the certificate with its claim replaced by [l, h]."""
     cl = cert["claim"]
-    lo, hi = (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+    lo, hi = claim_ends(cl)
     scale = max(abs(lo), Fraction(1))
     tiny = scale / 10 ** rng.randint(40, 60)
 
@@ -588,8 +593,7 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
     for name, nm in edits:
         other = level_produce(hapstab, nm, cache, tmp, 30)
         if isinstance(other, dict):
-            ocl = other["claim"]
-            olo, ohi = (Fraction(ocl["value"]),) * 2 if ocl["status"] == "exact" else (Fraction(ocl["lo"]), Fraction(ocl["hi"]))
+            olo, ohi = claim_ends(other["claim"])
             expect = "refute" if hi < olo or lo > ohi else "agree"
         else:
             expect = "same"  # no certificate of the edited model: both checkers give one exit, whichever
@@ -723,8 +727,7 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
     for name, nm in mimo_entry_edits(m, rng):
         other = mimo_produce(hapstab, nm, cache, tmp, 30)
         if isinstance(other, dict):
-            ocl = other["claim"]
-            olo, ohi = (Fraction(ocl["value"]),) * 2 if ocl["status"] == "exact" else (Fraction(ocl["lo"]), Fraction(ocl["hi"]))
+            olo, ohi = claim_ends(other["claim"])
             expect = "refute" if hi < olo or lo > ohi else "agree"
         else:
             expect = "same"  # no certificate of the edited model (unstable A, ...): both checkers give one exit
