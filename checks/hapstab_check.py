@@ -67,13 +67,21 @@ passivity-level-mimo  phi* = min over theta of lambda_min(He G(e^{j theta})), G 
        iff He G - lo I > 0 at one point of every arc between the roots of Q(t^2) in t >= 0 (and theta = pi)
        (Sylvester: leading minors); phi* <= hi if He G - hi I is not > 0 at the witness; an exact v by
        phi* >= v and a root on the circle (mimo_lower).
-Size limit: passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+limit-cycle  a periodic orbit of paper 002's loop (4), y = -k H(z) x, x = max(y, -rho): H = N/D reduced
+       (D monic, degree n), the difference equation D(z) y = -k N(z) x run P steps from the window
+       evidence.y = (y_0..y_{n-1}) (lc_next: the unique solution of each step, 1 + k H(inf) > 0); the window
+       must repeat (a P-periodic solution), P must be the least period (no P/p-periodicity, p | P prime),
+       the amplitude (max - min)/2, its printed decimal (half a unit), the samples with y < -rho exact;
+       attracting iff the product J of the steps' companion Jacobians is Schur stable (Faddeev-LeVerrier,
+       schur_cohn), claimed only when no sample lies on y = -rho.
+Size limit: limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
 it exit 3.
 """
 import json
+import re
 import sys
 import time
 from fractions import Fraction
@@ -676,12 +684,19 @@ def short(x):
 def check_bound(c):
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
-    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    only(evidence, ("witness_c", "domain_c_lo"), "evidence")
+    only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
+    if "infinite" in claim:
+        only(evidence, ("pole_c", "side"), "evidence")
+    else:
+        only(evidence, ("witness_c", "domain_c_lo"), "evidence")
     H, T, eta, P, q = bound_model(model)
-    status, lo, hi, _, refuted = claim_range(claim)
+    status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
+    if "infinite" in claim and not infinite:
+        raise Malformed("claim.infinite: false (a finite claim has no such field)")
+    if infinite:
+        return bound_infinite(H, T, P, q, status, evidence)
     c0 = exact(evidence, "witness_c", "evidence")
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     E, F = objective_c(H, T, P, q)
@@ -693,6 +708,39 @@ def check_bound(c):
     if why:
         return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
     return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_infinite(H, T, P, q, status, evidence):
+    """b* = +inf: the objective (T/2) E/F tends to +inf as c -> pole_c from `side` inside the band.
+    E/F reduced to Er/Fr, Fr = (c - c_p)^m R with R(c_p) != 0: near c_p the objective is
+    (T/2) Er(c_p) / ((c - c_p)^m R(c_p)) to first order, so its sign on the side s is
+    sign Er(c_p) * s^m * sign R(c_p), and it grows without bound there."""
+    if status != "exact":
+        raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
+    cp = exact(evidence, "pole_c", "evidence")
+    side = evidence.get("side")
+    if side not in (1, -1) or isinstance(side, bool):
+        raise Malformed("evidence.side: missing or not +1 or -1")
+    if not in_band(cp, q):
+        return False, "b* = +inf not shown: evidence.pole_c = %s is outside the band [cos(pi/%d), 1]" % (short(cp), q)
+    if side == 1 and cp == 1:
+        return False, "b* = +inf not shown: side +1 at c_p = 1 leaves the band"
+    if side == -1 and (cp == -1 or peval(re_power(q), (1 - cp) / (1 + cp)) <= 0):
+        return False, "b* = +inf not shown: side -1 at the band's end c_p = cos(pi/%d) leaves the band" % q
+    E, F = objective_c(H, T, P, q)
+    g = pgcd(E, F)
+    Er, R = (pdivmod(E, g)[0], pdivmod(F, g)[0]) if g else (E, F)
+    if peval(R, cp) != 0:
+        return False, "b* = +inf not shown: evidence.pole_c = %s is not a pole of the objective" % short(cp)
+    m = 0
+    while peval(R, cp) == 0:
+        R = pdivmod(R, [-cp, Fraction(1)])[0]
+        m += 1
+    sign = (1 if peval(Er, cp) > 0 else -1) * (1 if peval(R, cp) > 0 else -1) * (side if m % 2 else 1)
+    if sign < 0:
+        return False, "b* = +inf not shown: the objective tends to -inf as c -> %s from %s (a pole of order %d)" % (
+            short(cp), "above" if side > 0 else "below", m)
+    return True, "b* = +inf: the objective tends to +inf as c -> %s from %s" % (short(cp), "above" if side > 0 else "below")
 
 
 def bound_model(model):
@@ -1557,13 +1605,17 @@ def roots_in(p, lo, hi):
     return variations(seq, lo) - variations(seq, hi)
 
 
-def max_positive(p1, p2, a, b):
+def max_positive(p1, p2, a, b, strict=True):
     """None when max(p1, p2) > 0 at every point of [a, b], else where not. The distinct roots of
     p1 p2 in (a, b) are isolated by bisection (Sturm); p1, p2 keep their signs between them, so
     the isolating intervals' ends test every cell; at a root, gcd(p1, p2) vanishing there means
-    both are 0, else one is 0 and the other has the sign it has at the interval's end."""
+    both are 0, else one is 0 and the other has the sign it has at the interval's end. strict=False:
+    max(p1, p2) >= 0 (at a root one of them is 0, so only the cells and the ends are tested)."""
     def fails(x):
-        return None if peval(p1, x) > 0 or peval(p2, x) > 0 else "not > 0 at u = %s" % short(x)
+        v1, v2 = peval(p1, x), peval(p2, x)
+        if (v1 > 0 or v2 > 0) if strict else (v1 >= 0 or v2 >= 0):
+            return None
+        return ("not > 0 at u = %s" if strict else "< 0 at u = %s") % short(x)
     for x in (a, b):
         if fails(x):
             return fails(x)
@@ -1582,6 +1634,8 @@ def max_positive(p1, p2, a, b):
                 return fails(x)
         n = roots_in(R, lo, hi)
         if n == 0:
+            continue
+        if n == 1 and not strict:
             continue
         if n == 1:
             where = "a root in (%.12g, %.12g)" % (float(lo), float(hi))
@@ -1638,9 +1692,10 @@ def cauchy_bound(polys):
 
 def check_wedge(c):
     model, claim, evidence = parts(c)
-    only(evidence, (), "evidence")
+    only(evidence, ("wedge_witness_c", "tsypkin_witness_c"), "evidence")
     only(model, ("H", "set", "T"), "model")
-    only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"), "claim")
+    only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative",
+                 "wedge_margin", "tsypkin_margin", "wedge_gain", "tsypkin_gain"), "claim")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: missing or not \"exact\"")
     H, T = model_h(model)
@@ -1678,7 +1733,214 @@ def check_wedge(c):
             raise Malformed("claim.%s: missing or not true/false" % key)
         if v != truth:
             return False, "claim.%s = %s, but %s" % (key, "true" if v else "false", why)
-    return True, "; ".join(w for _, _, w in facts)
+    shown = "; ".join(w for _, _, w in facts)
+    for key, p1, p2 in (("wedge", padd(Gr, Jt), psub(Gr, Jt)), ("tsypkin", Gr, Gr)):
+        why = wedge_margins(claim, evidence, key, p1, p2, F, h_m1)
+        if why:
+            return False, why
+    return True, shown
+
+
+def margin_between(p1, p2, F, h_m1, lo, hi, c0):
+    """None when mu = min over theta in [0, pi] of max(p1, p2)/F + 1 (u = tan^2(theta/2) in [0, inf),
+    and H(-1) + 1 at theta = pi) is >= lo (max(p1 + (1 - lo) F, p2 + (1 - lo) F) >= 0 on [0, inf),
+    non-strict, and H(-1) + 1 >= lo) and, when hi is given, <= hi at the witness c0 = cos(theta0);
+    else what failed."""
+    if lo is not None:
+        q1, q2 = padd(p1, pscale(F, 1 - lo)), padd(p2, pscale(F, 1 - lo))
+        why = max_positive(q1, q2, Fraction(0), cauchy_bound([q1, q2]), strict=False)
+        if why is None and h_m1 + 1 < lo:
+            why = "H(-1) + 1 < lo at theta = pi"
+        if why:
+            return "min >= %.12g fails: %s" % (float(lo), why)
+    if hi is None:
+        return None
+    if c0 < -1 or c0 > 1:
+        return "the witness c0 = %s is outside [-1, 1]" % short(c0)
+    if c0 == -1:
+        v = h_m1 + 1
+    else:
+        u = (1 - c0) / (1 + c0)
+        v = max(peval(p1, u), peval(p2, u)) / peval(F, u) + 1
+    if v > hi:
+        return "min <= %.12g not shown: the left side + 1 at the witness c0 = %s is %.12g" % (float(hi), short(c0), float(v))
+    return None
+
+
+def margin_bounds(claim, field, gain):
+    """(lo, hi, infinite, refuted) of claim.<field>: {lo, hi, printed} (printed: both ends round to it)
+    or, for a gain, {infinite: true}."""
+    o = claim.get(field)
+    if not isinstance(o, dict):
+        raise Malformed("claim.%s: not an object" % field)
+    if gain and "infinite" in o:
+        only(o, ("infinite",), "claim." + field)
+        if o["infinite"] is not True:
+            raise Malformed("claim.%s.infinite: not true" % field)
+        return None, None, True, None
+    only(o, ("lo", "hi", "printed"), "claim." + field)
+    lo, hi = exact(o, "lo", "claim." + field), exact(o, "hi", "claim." + field)
+    if gain and lo <= 0:
+        raise Malformed("claim.%s.lo: a gain k* is > 0" % field)
+    if lo > hi:
+        return lo, hi, False, "claim.%s: lo > hi" % field
+    if "printed" in o:
+        t = o["printed"]
+        a, b = (half_unit_close(t, lo), half_unit_close(t, hi)) if isinstance(t, str) else (None, None)
+        if a is None or b is None:
+            raise Malformed("claim.%s.printed: not a decimal" % field)
+        if not (a and b):
+            return lo, hi, False, "claim.%s.printed = %s is not what both ends round to" % (field, t)
+    return lo, hi, False, None
+
+
+def wedge_margins(claim, evidence, key, p1, p2, F, h_m1):
+    """claim.<key>_margin in [lo, hi] and claim.<key>_gain: k* = 1/(1 - mu) (k H meets the criterion
+    iff k (mu - 1) + 1 > 0 at every theta), so k* >= lo iff mu >= 1 - 1/lo, k* <= hi iff
+    mu <= 1 - 1/hi, +inf iff mu >= 1. None when every claim present holds."""
+    wkey = key + "_witness_c"
+    c0 = exact(evidence, wkey, "evidence") if wkey in evidence else None
+    def witness():
+        if c0 is None:
+            raise Malformed("evidence.%s: missing" % wkey)
+        return c0
+    readers = 0
+    if key + "_margin" in claim:
+        lo, hi, _, refuted = margin_bounds(claim, key + "_margin", False)
+        if refuted:
+            return refuted
+        readers += 1
+        why = margin_between(p1, p2, F, h_m1, lo, hi, witness())
+        if why:
+            return "claim.%s_margin: %s" % (key, why)
+    if key + "_gain" in claim:
+        lo, hi, infinite, refuted = margin_bounds(claim, key + "_gain", True)
+        if refuted:
+            return refuted
+        if infinite:
+            why = margin_between(p1, p2, F, h_m1, Fraction(1), None, None)
+        else:
+            readers += 1
+            why = margin_between(p1, p2, F, h_m1, 1 - 1 / lo, 1 - 1 / hi, witness())
+        if why:
+            return "claim.%s_gain: %s" % (key, why)
+    if c0 is not None and not readers:
+        raise Malformed("evidence.%s: no claim reads it" % wkey)
+    return None
+
+
+# ---------------------------------------------------------------- limit-cycle
+MAX_LC_STEPS = 40000  # P n: the recursion's exact fractions grow with P (beyond: exit 3)
+
+
+def lure_loop(model):
+    """(N, D, k, rho, beta, n) of paper 002's loop (4) y = -k H x, x = max(y, -rho): H = N/D reduced,
+    D monic of degree n >= 1, N padded to n + 1 coefficients, beta = k n_n = k H(inf), 1 + beta > 0."""
+    only(model, ("H", "set", "T", "gain", "rho"), "model")
+    H, _ = model_h(model)
+    if len(H.num) > len(H.den):
+        raise Malformed("model.H: not causal (deg num > deg den)")
+    n = len(H.den) - 1
+    if n < 1:
+        raise Malformed("model.H: H is a constant: the loop has no state")
+    k, rho = exact(model, "gain", "model"), exact(model, "rho", "model")
+    if k < 0:
+        raise Malformed("model.gain: must be >= 0")
+    if rho <= 0:
+        raise Malformed("model.rho: must be > 0")
+    N = list(H.num) + [Fraction(0)] * (n + 1 - len(H.num))
+    beta = k * N[n]
+    if 1 + beta <= 0:
+        raise Malformed("model: 1 + k H(inf) <= 0: the algebraic loop has no unique solution")
+    return N, list(H.den), k, rho, beta, n
+
+
+def lc_next(loop, w):
+    """The output after the window w (n outputs): D(z) y = -k N(z) x solved for the new y, which is
+    a/(1 + beta) in contact (>= -rho) and a + beta rho out of it (< -rho): exactly one holds."""
+    N, D, k, rho, beta, n = loop
+    a = -sum(D[i] * w[i] + k * N[i] * max(w[i], -rho) for i in range(n))
+    y = a / (1 + beta)
+    return y if y >= -rho else a + beta * rho
+
+
+def half_unit_close(text, x):
+    """|text - x| <= half a unit in the last digit of the decimal `text`; None when not a decimal."""
+    m = re.fullmatch(r"-?([0-9]+)(?:\.([0-9]+))?(?:[eE]([+-]?[0-9]{1,4}))?", text)
+    if not m:
+        return None
+    unit = Fraction(10) ** (int(m.group(3) or 0) - len(m.group(2) or ""))
+    return 2 * abs(Fraction(text) - x) <= unit
+
+
+def lc_monodromy(loop, y, P):
+    """J = C_{P-1} ... C_0, C_j the Jacobian of the window map at step j (a companion matrix whose
+    last row is -(D_i + k N_i chi_{j+i})/(1 + beta chi_{j+n}), chi = [y > -rho])."""
+    N, D, k, rho, beta, n = loop
+    J = [[Fraction(int(i == j)) for j in range(n)] for i in range(n)]
+    for j in range(P):
+        last = [-(D[i] + (k * N[i] if y[j + i] > -rho else 0)) / (1 + (beta if y[j + n] > -rho else 0)) for i in range(n)]
+        J = J[1:] + [[sum(last[i] * J[i][c] for i in range(n)) for c in range(n)]]
+    return J
+
+
+def check_limit_cycle(c):
+    model, claim, evidence = parts(c)
+    only(evidence, ("y",), "evidence")
+    only(claim, ("quantity", "status", "period", "amplitude", "printed_amplitude", "free_steps", "attracting"), "claim")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: missing or not \"exact\"")
+    loop = lure_loop(model)
+    n, rho = loop[5], loop[3]
+    P, free_claimed = claim.get("period"), claim.get("free_steps")
+    for key, v, lo in (("period", P, 1), ("free_steps", free_claimed, 0)):
+        if not isinstance(v, int) or isinstance(v, bool) or v < lo or v > 100000:
+            raise Malformed("claim.%s: missing, not an integer or outside [%d, 100000]" % (key, lo))
+    amplitude = exact(claim, "amplitude", "claim")
+    printed = claim.get("printed_amplitude")
+    if not isinstance(printed, str) or half_unit_close(printed, amplitude) is None:
+        raise Malformed("claim.printed_amplitude: missing or not a decimal")
+    attracting = claim.get("attracting")
+    if "attracting" in claim and not isinstance(attracting, bool):
+        raise Malformed("claim.attracting: not true/false")
+    ys = evidence.get("y")
+    if not isinstance(ys, list) or len(ys) != n:
+        raise Malformed("evidence.y: missing, not an array or not n = %d outputs (the order of H)" % n)
+    y = [exact_value(v, "evidence.y[%d]" % i) for i, v in enumerate(ys)]
+    if P * n > MAX_LC_STEPS:
+        raise TooLarge("period x order = %d above this checker's limit %d" % (P * n, MAX_LC_STEPS))
+    for j in range(P):
+        y.append(lc_next(loop, y[j:j + n]))
+    for i in range(n):
+        if y[P + i] != y[i]:
+            return False, "the state does not repeat: y_%d != y_%d (the recursion of (4) from evidence.y)" % (P + i, i)
+    m, p = P, 2
+    while m > 1:
+        if m % p == 0:
+            while m % p == 0:
+                m //= p
+            d = P // p
+            if all(y[i + d] == y[i] for i in range(P - d)):
+                return False, "claim.period = %d is not the least period: y repeats after %d" % (P, d)
+        p += 1
+    orbit = y[:P]
+    amp = (max(orbit) - min(orbit)) / 2
+    if amp != amplitude:
+        return False, "claim.amplitude is not (max - min)/2 of y over the orbit, %s" % short(amp)
+    if not half_unit_close(printed, amp):
+        return False, "claim.printed_amplitude = %s is not the amplitude rounded" % printed
+    free = sum(1 for v in orbit if v < -rho)
+    if free != free_claimed:
+        return False, "claim.free_steps = %d, but %d samples per period have y < -rho" % (free_claimed, free)
+    why = "periodic orbit of least period %d, amplitude %s, %d samples out of contact" % (P, short(amp), free)
+    if attracting is not None:
+        if any(v == -rho for v in orbit):
+            raise Malformed("claim.attracting: a sample lies on y = -rho (the map is only piecewise affine there)")
+        ok, sc = schur_cohn(faddeev_leverrier(lc_monodromy(loop, y, P)))
+        if ok != attracting:
+            return False, "claim.attracting = %s, but the monodromy matrix: %s" % ("true" if attracting else "false", sc)
+        why += "; %s (monodromy: %s)" % ("attracting" if ok else "not attracting", sc)
+    return True, why
 
 
 # ---------------------------------------------------------------- driver
@@ -1691,7 +1953,8 @@ def check(c):
             raise Malformed("certificate: missing or not \"hapstab\"")
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
-        checkers = {"bound": check_bound, "bound-max": check_bound_max, "passivity-level": check_passivity_level,
+        checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
+                    "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")

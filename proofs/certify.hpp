@@ -1,6 +1,6 @@
 // proofs/certify.hpp -- the command lines of the certificates a proof asks `hapstab reproduce` for
 // (proof.hpp, CertificateRequest; issue 47): one instance's model as a user writes it for
-// `hapstab bound`, `bound --max` or `wedge`, so that the certificate reproduce writes is what that
+// `hapstab bound`, `bound --max`, `wedge` or `passivity-level --ss`, so that the certificate reproduce writes is what that
 // command writes with --certificate, for the claim's own numbers.
 #pragma once
 
@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "hapstab/lti/state_space.hpp"
 #include "hapstab/poly/rational_function.hpp"
 #include "proofs/proof.hpp"
 
@@ -67,6 +68,27 @@ inline std::string polynomial_text(const Polynomial<rational>& p) {
     s += power;
   }
   return s;
+}
+
+/// The certificate of the ISP level of a square MIMO state space (`passivity-level --ss FILE --kind
+/// isp`, kind passivity-level-mimo): the model as the --ss JSON file (exact "p/q" entries) that
+/// reproduce writes beside the certificates; `contains` the level when it is known ("" otherwise).
+inline CertificateRequest mimo_level_request(const StateSpace<rational>& s, const std::string& contains = "") {
+  auto rows = [](const Mat<rational>& M) {
+    std::string t = "[";
+    for (Eigen::Index i = 0; i < M.rows(); ++i) {
+      t += i ? ", [" : "[";
+      for (Eigen::Index j = 0; j < M.cols(); ++j) t += (j ? ", \"" : "\"") + M(i, j).str() + "\"";
+      t += "]";
+    }
+    return t + "]";
+  };
+  CertificateRequest r;
+  r.args = {"passivity-level", "--ss", "{input}", "--kind", "isp"};
+  r.input = "{\"A\": " + rows(s.A) + ", \"B\": " + rows(s.B) + ", \"C\": " + rows(s.C) + ", \"D\": " + rows(s.D) +
+            ", \"T\": \"" + s.T.str() + "\"}";
+  r.contains = contains;
+  return r;
 }
 
 /// N(z)/D(z) as an expression of the --H grammar: "(N)/(D)".

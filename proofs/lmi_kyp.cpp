@@ -18,6 +18,7 @@
 
 #include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/numeric/decimal.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -187,6 +188,7 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
       continue;
     }
     ++cert_freq;
+    if (kind == PassivityKind::isp) check.certify("000.lemma1.kyp_certified_mimo", proofs::mimo_level_request(exact(sys)));
     tight += c.enclosure->hi - c.enclosure->lo <= rational(1, 1000000000000LL) * std::max(rational(1), abs(c.enclosure->hi));
     if (!compared.count(kind == PassivityKind::isp || c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
@@ -198,6 +200,7 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
   B << rational(3, 5), rational(-4, 5), rational(4, 5), rational(3, 5), 0, 0;
   C << rational(3, 10), 0, rational(3, 5), rational(-2, 5), 0, rational(9, 20);
   const auto ex = passivity_level_certified_mimo(StateSpace<rational>{A, B, C, D, rational(1, 1000)}, PassivityKind::isp, 17);
+  check.certify("000.lemma1.kyp_certified_mimo", proofs::mimo_level_request(StateSpace<rational>{A, B, C, D, rational(1, 1000)}, "1/4"));
   const bool quarter = ex.status == Status::exact && ex.enclosure && ex.enclosure->lo == rational(1, 4) &&
                        ex.enclosure->hi == rational(1, 4) && std::abs(ex.theta_min - M_PI / 2) < 1e-12;
   std::ostringstream ev;

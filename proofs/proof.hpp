@@ -66,10 +66,14 @@ struct Instances {
 ///             (an exact claim) or its claimed enclosure [lo, hi] contains it;
 ///   at_most   "p/q": the claimed value, or the enclosure's upper end, is <= it;
 ///   flags     claim fields that must have these values ("stable", "wedge", "tsypkin", ...).
+/// `input`, when not empty, is a file the command reads (a state space for `passivity-level --ss`):
+/// reproduce writes it to certificates/inputs/<instance>.json and puts that path where args hold
+/// "{input}".
 struct CertificateRequest {
   std::vector<std::string> args;
   std::string contains{}, at_most{};
   std::vector<std::pair<std::string, bool>> flags{};
+  std::string input{};
 };
 
 struct ClaimResult {

@@ -295,8 +295,72 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("delay as a string", with_field(cert, ["model", "delay"], str(m["delay"])), "malformed"))
     out.append(("eta negative", with_field(cert, ["model", "eta"], "-1/10"), "malformed"))
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
-    out.append(("kind unknown", with_field(cert, ["kind"], "limit-cycle"), "malformed"))
+    out.append(("kind unknown", with_field(cert, ["kind"], "bound-inf"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    return out
+
+
+INF_TEMPLATES = [  # H(z) whose objective is unbounded at a pole on the unit circle (b* = +inf) for some values
+    ("K/(z-1) + B*(z-1)/(T*z)", ["K", "B"]),           # a pole at z = 1: +inf iff K > 0 (c -> 1 from below)
+    ("K*z/(z^2 + 1) + B*(z-1)/(T*z)", ["K", "B"]),     # poles at +-j (c = 0): +inf from one side, -inf from the other
+    ("K + B*2*(z-1)/(T*(z+1))", ["K", "B"]),           # the Tustin wall with t_d = (p/q) T, q = 2, 3: sin(pi tau) > 0
+]
+
+
+def rand_inf_model(rng):
+    """A bound model that is often b* = +inf (issue 47: its certificate) and, after a sign flip (K
+    negated, t_d + T), often finite -- issue 46 item 1's false +inf."""
+    H, names = rng.choice(INF_TEMPLATES)
+    sets = {n: rand_value(n, rng) for n in names}
+    if "z^2 + 1" in H and rng.random() < 0.5:
+        sets["K"] = "-" + sets["K"]
+    m = {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/500", "1/100"]), "delay": rng.choice([0, 0, 1, 2, 3]),
+         "eta": rng.choice(["0", "0", "1/10"])}
+    if "(z+1)" in H:
+        q = rng.choice([2, 3])
+        m["delay"] = rng.choice([0, 0, 2])
+        m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, q)]), q) * Fraction(m["T"]))
+    return m
+
+
+def inf_mutants(cert, rng, hapstab, cache):
+    """b* = +inf: the pole c_p and the side the objective tends to +inf from. Every family here has a
+    simple pole in c, or the other side outside the band: the side flipped tends to -inf or leaves the
+    band (refute)."""
+    out = [("unmutated", cert, "accept")]
+    ev = cert["evidence"]
+    cp, side = Fraction(ev["pole_c"]), ev["side"]
+    out.append(("side flipped (the objective -> -inf there, or outside the band)", with_field(cert, ["evidence", "side"], -side), "refute"))
+    for name, c1 in (("pole_c + 1/1000", cp + Fraction(1, 1000)), ("pole_c - 10^-30", cp - Fraction(1, 10 ** 30)),
+                     ("pole_c random", Fraction(rng.randint(-999, 999), 1000))):
+        if c1 != cp:
+            out.append((name, with_field(cert, ["evidence", "pole_c"], frac(c1)), "refute"))
+    out.append(("pole_c outside [-1, 1]", with_field(cert, ["evidence", "pole_c"], "3/2"), "refute"))
+    out.append(("claim made finite (b* = 0)", with_field(deleted(cert, ["claim", "infinite"]), ["claim", "value"], "0"), "malformed"))
+    m = cert["model"]
+    edits = model_edits(m, rng, SET_MOVES + (("x 2", lambda x: 2 * x),))
+    if "frac_delay" in m:
+        T = Fraction(m["T"])
+        edits.append(("frac_delay + T (sin(pi tau) flipped: -inf, issue 46 item 1)", dict(m, frac_delay=frac(Fraction(m["frac_delay"]) + T))))
+        edits.append(("frac_delay 0", dict(m, frac_delay="0")))
+    edits.append(("delay + 1", dict(m, delay=m["delay"] + 1)))
+    edits.append(("T doubled", dict(m, T=frac(Fraction(m["T"]) * 2))))
+    for name, nm in edits:
+        enc = certified_enclosure(hapstab, nm, cache)
+        expect = "agree" if enc == "inf" else "same" if enc is None else "refute"  # a finite b*: +inf is false
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["evidence", "pole_c"], ["evidence", "side"], ["claim", "status"], ["model", "H"], ["evidence"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("side 0", with_field(cert, ["evidence", "side"], 0), "malformed"))
+    out.append(("side 2", with_field(cert, ["evidence", "side"], 2), "malformed"))
+    out.append(("side as a string", with_field(cert, ["evidence", "side"], "+1"), "malformed"))
+    out.append(("pole_c a decimal", with_field(cert, ["evidence", "pole_c"], "0.5"), "malformed"))
+    out.append(("infinite false", with_field(cert, ["claim", "infinite"], False), "malformed"))
+    out.append(("infinite as a string", with_field(cert, ["claim", "infinite"], "true"), "malformed"))
+    out.append(("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("a value beside infinite", with_field(cert, ["claim", "value"], "1"), "malformed"))
+    out.append(("added evidence.witness_c", with_field(cert, ["evidence", "witness_c"], "1/2"), "malformed"))
+    out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
     return out
 
 
@@ -1082,6 +1146,71 @@ def wedge_produce(hapstab, m, cache, tmp):
 WEDGE_CLAIMS = ("wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative")
 
 
+WEDGE_RANGES = ("wedge_margin", "tsypkin_margin", "wedge_gain", "tsypkin_gain")
+
+
+def margin_disjoint(a, b):
+    """Two claimed ranges ({lo, hi} or {infinite}) that cannot both hold."""
+    if a is None or b is None:
+        return False
+    if "infinite" in a or "infinite" in b:
+        return ("infinite" in a) != ("infinite" in b)
+    return Fraction(a["hi"]) < Fraction(b["lo"]) or Fraction(b["hi"]) < Fraction(a["lo"])
+
+
+def wedge_margin_mutants(cert, rng):
+    """The margins and gains k* of both criteria: each range moved past the value, printed digits
+    moved, the witness moved or removed, an infinite gain made finite and back."""
+    out = []
+    cl, ev = cert["claim"], cert["evidence"]
+    for key in ("wedge", "tsypkin"):
+        w = key + "_witness_c"
+        for field in (key + "_margin", key + "_gain"):
+            r = cl.get(field)
+            if r is None:
+                continue
+            if "infinite" in r:
+                out.append((field + " +inf made [1, 2]", with_field(cert, ["claim", field], {"lo": "1", "hi": "2"}), "malformed" if w not in ev else "refute"))
+                out.append((field + ".infinite false", with_field(cert, ["claim", field], {"infinite": False}), "malformed"))
+                continue
+            lo, hi = Fraction(r["lo"]), Fraction(r["hi"])
+            d = max(hi - lo, abs(hi) / 10 ** 20, Fraction(1, 10 ** 40))
+            def ranged(l, h, printed=False):
+                o = {"lo": frac(l), "hi": frac(h)}
+                if printed and "printed" in r:
+                    o["printed"] = r["printed"]
+                return with_field(cert, ["claim", field], o)
+            gain = field.endswith("_gain")
+            if not gain or lo - 2 * d > 0:
+                out.append((field + " below the value", ranged(lo - 2 * d, lo - d), "refute"))
+            out.append((field + " above the value", ranged(hi + d, hi + 2 * d), "refute"))
+            out.append((field + " lo > hi", ranged(hi + d, lo - d) if not gain or lo - d > 0 else ranged(hi + d, lo), "refute"))
+            out.append((field + " widened (printed dropped)", ranged(lo - d if not gain else lo / 2, hi + d), "accept"))
+            if "printed" in r:  # an end 10 units of the printed last digit away: it no longer rounds to it
+                out.append((field + " widened, printed kept", ranged(lo, hi + 10 * last_unit(r["printed"]), True), "refute"))
+            out.append(("made +inf" if gain else field + " made a gain", with_field(cert, ["claim", field], {"infinite": True}),
+                        "refute" if gain else "malformed"))
+            if "printed" in r:
+                out.append((field + " printed moved", with_field(cert, ["claim", field, "printed"], bump_last_digit(r["printed"])), "refute"))
+                out.append((field + " printed not a number", with_field(cert, ["claim", field, "printed"], "0.1.2"), "malformed"))
+            if gain:
+                out.append((field + " lo = 0", ranged(Fraction(0), hi), "malformed"))
+            out.append((field + " added x", with_field(cert, ["claim", field, "x"], "1"), "malformed"))
+            out.append((field + " lo a decimal", with_field(cert, ["claim", field, "lo"], "0.5"), "malformed"))
+        if w in ev:
+            c0 = Fraction(ev[w])
+            out.append((w + " outside [-1, 1]", with_field(cert, ["evidence", w], "2"), "refute"))
+            for name, c1 in (("+ 1/1000", c0 + Fraction(1, 1000)), ("negated", -c0), ("random", Fraction(rng.randint(-1000, 1000), 1000))):
+                if -1 <= c1 <= 1 and c1 != c0:
+                    out.append((w + " " + name, with_field(cert, ["evidence", w], frac(c1)), "agree"))
+            out.append(("deleted evidence." + w, deleted(cert, ["evidence", w]), "malformed"))
+            out.append((w + " a decimal", with_field(cert, ["evidence", w], "0.5"), "malformed"))
+            rest = deleted(cert, ["claim", key + "_margin"]) if key + "_margin" in cl else cert
+            finite_gain = key + "_gain" in cl and "infinite" not in cl[key + "_gain"]
+            out.append(("deleted claim." + key + "_margin", rest, "accept" if finite_gain else "malformed"))
+    return out
+
+
 def wedge_mutants(cert, rng, hapstab, cache, tmp):
     out = [("unmutated", cert, "accept")]
     for key in WEDGE_CLAIMS:
@@ -1094,15 +1223,18 @@ def wedge_mutants(cert, rng, hapstab, cache, tmp):
         other = wedge_produce(hapstab, nm, cache, tmp)
         if isinstance(other, dict):
             same = all(other["claim"][k] == cert["claim"][k] for k in WEDGE_CLAIMS)
-            expect = "accept" if same else "refute"
+            disjoint = any(margin_disjoint(cert["claim"].get(k), other["claim"].get(k)) for k in WEDGE_RANGES)
+            expect = "refute" if not same or disjoint else "accept" if other["claim"] == cert["claim"] and other["evidence"] == cert["evidence"] else "agree"
         else:
             expect = "malformed" if other == 2 else "agree"
         out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    out += wedge_margin_mutants(cert, rng)
     for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "H"], ["model", "T"], ["claim", "status"]) + tuple(
             ["claim", k] for k in WEDGE_CLAIMS):
         out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
     out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
     out.append(("added evidence.witness_c", with_field(cert, ["evidence", "witness_c"], "0"), "malformed"))
+    out.append(("added claim.margin", with_field(cert, ["claim", "margin"], "0"), "malformed"))
     out.append(("claim.wedge as a string", with_field(cert, ["claim", "wedge"], "true"), "malformed"))
     out.append(("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"))
     out.append(("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"))
@@ -1112,19 +1244,144 @@ def wedge_mutants(cert, rng, hapstab, cache, tmp):
     return out
 
 
+LC_TEMPLATES = [  # (H, the values drawn): loops of paper 002 (4) that oscillate for gains above the wedge's k*
+    ("(z + 1)/(z^2 - a*z)", "a"),        # paper 002's example, its k* = 1.11 at a = 0.5
+    ("1/(z^2 - b*z + c)", "bc"),          # a lightly damped resonance
+    ("(z + d)/(z^2 - b*z + c)", "bcd"),
+    ("1/((z - a)*(z^2 - b*z + c))", "abc"),
+]
+
+
+def rand_limit_cycle(rng):
+    """A limit-cycle model: H of LC_TEMPLATES, a gain k in [0.6, 4], rho 1 or random."""
+    H, names = rng.choice(LC_TEMPLATES)
+    sets = {}
+    for n in names:
+        if n == "c":
+            sets[n] = frac(Fraction(rng.randint(30, 95), 100))
+        elif n == "b":
+            c = Fraction(sets["c"])
+            sets[n] = frac(Fraction(rng.randint(-95, 95), 100) * (1 + c))
+        else:
+            sets[n] = frac(Fraction(rng.randint(-80, 80), 100))
+    gain = frac(Fraction(rng.randint(60, 400), 100))
+    rho = rng.choice(["1", "1", frac(Fraction(rng.randint(1, 50), rng.randint(1, 20)))])
+    return {"H": H, "set": sets, "T": "1", "gain": gain, "rho": rho}
+
+
+def lc_args(m):
+    a = ["limit-cycle", "--H", m["H"], "--gain", m["gain"], "--rho", m["rho"], "--steps", "20000", "--exact"]
+    for k, v in m["set"].items():
+        a += ["--set", "%s=%s" % (k, v)]
+    return a
+
+
+def lc_produce(hapstab, m, cache, tmp):
+    """hapstab's limit-cycle certificate of model m, or the exit code when it writes none."""
+    return produce(hapstab, lc_args(m), "lc" + json.dumps(m, sort_keys=True), "lc-edit.json", cache, tmp)
+
+
+def decimal20(x):
+    """x to 20 significant digits, rounded to nearest (as a plain or scientific decimal)."""
+    if x == 0:
+        return "0"
+    e = len(str(abs(x.numerator) // abs(x.denominator))) - 1 if abs(x) >= 1 else -len(str(abs(x.denominator) // abs(x.numerator)))
+    while abs(x) >= Fraction(10) ** (e + 1):
+        e += 1
+    while abs(x) < Fraction(10) ** e:
+        e -= 1
+    m = round(x / Fraction(10) ** (e - 19))
+    return "%se%d" % (str(m), e - 19)
+
+
+def last_unit(t):
+    """The unit of the last mantissa digit of the decimal t ("1.25e-3": 10^-5)."""
+    mant, _, exp = t.lower().partition("e")
+    return Fraction(10) ** (int(exp or 0) - len(mant.partition(".")[2]))
+
+
+def bump_last_digit(t):
+    """The decimal t with its last mantissa digit moved by 5 (so it is 5 units off)."""
+    mant = t.split("e")[0].split("E")[0]
+    i = len(mant) - 1
+    return t[:i] + str((int(t[i]) + 5) % 10) + t[i + 1:]
+
+
+def lc_mutants(cert, rng, hapstab, cache, tmp):
+    out = [("unmutated", cert, "accept")]
+    cl, ev, m = cert["claim"], cert["evidence"], cert["model"]
+    P, amp, y = cl["period"], Fraction(cl["amplitude"]), [Fraction(v) for v in ev["y"]]
+    loop = hapstab_check.lure_loop(m)  # only to draw the next sample of the orbit (a phase shift)
+    y_next = hapstab_check.lc_next(loop, y)
+    out.append(("state moved one sample along the orbit", with_field(cert, ["evidence", "y"], [frac(v) for v in y[1:] + [y_next]]), "accept"))
+    scaled = with_field(cert, ["model"], dict(m, rho=frac(2 * Fraction(m["rho"]))))
+    scaled["evidence"]["y"] = [frac(2 * v) for v in y]
+    scaled["claim"]["amplitude"] = frac(2 * amp)
+    scaled["claim"]["printed_amplitude"] = decimal20(2 * amp)
+    out.append(("rho, the state and the amplitude doubled (4) is homogeneous", scaled, "accept"))
+    out.append(("rho doubled alone", with_field(cert, ["model", "rho"], frac(2 * Fraction(m["rho"]))), "refute"))
+    if "attracting" in cl:
+        out.append(("attracting flipped", with_field(cert, ["claim", "attracting"], not cl["attracting"]), "refute"))
+        out.append(("attracting deleted (no claim)", deleted(cert, ["claim", "attracting"]), "accept"))
+        out.append(("attracting as a string", with_field(cert, ["claim", "attracting"], "true"), "malformed"))
+    for name, p in (("period + 1", P + 1), ("period - 1", P - 1), ("period x 2 (not the least)", 2 * P)):
+        if p >= 1:
+            out.append((name, with_field(cert, ["claim", "period"], p), "refute"))
+    tiny = max(abs(amp), Fraction(1)) / 10 ** rng.randint(30, 60)
+    out.append(("amplitude + tiny", with_field(cert, ["claim", "amplitude"], frac(amp + tiny)), "refute"))
+    out.append(("amplitude x 2", with_field(cert, ["claim", "amplitude"], frac(2 * amp)), "refute"))
+    out.append(("amplitude as max |y|", with_field(cert, ["claim", "amplitude"], frac(max(abs(v) for v in y) + (0 if max(abs(v) for v in y) != amp else 1))), "refute"))
+    out.append(("printed amplitude moved", with_field(cert, ["claim", "printed_amplitude"], bump_last_digit(cl["printed_amplitude"])), "refute"))
+    out.append(("free_steps + 1", with_field(cert, ["claim", "free_steps"], cl["free_steps"] + 1), "refute"))
+    if cl["free_steps"] > 0:
+        out.append(("free_steps - 1", with_field(cert, ["claim", "free_steps"], cl["free_steps"] - 1), "refute"))
+    i = rng.randrange(len(y))
+    for name, v in (("+ tiny", y[i] + tiny), ("x 1.001", y[i] * Fraction(1001, 1000) if y[i] else Fraction(1, 1000)), ("negated", -y[i] if y[i] else Fraction(1))):
+        out.append(("y[%d] %s" % (i, name), with_field(cert, ["evidence", "y"], [frac(v) if j == i else ev["y"][j] for j in range(len(y))]), "refute"))
+    for name, nm in model_edits(m, rng, SET_MOVES) + [("gain x 1.001", dict(m, gain=frac(Fraction(m["gain"]) * Fraction(1001, 1000))))]:
+        # the old orbit's state run on another loop does not repeat (the recursion's coefficients
+        # changed); a model the producer refuses (exit 2: ill-posed, not causal) is malformed
+        key = "lc-valid" + json.dumps(nm, sort_keys=True)
+        if key not in cache:
+            cache[key] = run(hapstab, [x for x in lc_args(nm) if x != "--exact"])[0]
+        expect = "malformed" if cache[key] == 2 else "refute"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["evidence"], ["kind"], ["model", "H"], ["model", "T"], ["model", "gain"], ["model", "rho"],
+                 ["claim", "status"], ["claim", "period"], ["claim", "amplitude"], ["claim", "printed_amplitude"],
+                 ["claim", "free_steps"], ["evidence", "y"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
+    out.append(("added evidence.x0", with_field(cert, ["evidence", "x0"], ["0"]), "malformed"))
+    out.append(("y one sample long", with_field(cert, ["evidence", "y"], ev["y"] + ["0"]), "malformed"))
+    out.append(("y a decimal", with_field(cert, ["evidence", "y"], ["0.5"] + ev["y"][1:]), "malformed"))
+    out.append(("amplitude a decimal", with_field(cert, ["claim", "amplitude"], "1.5"), "malformed"))
+    out.append(("printed amplitude not a number", with_field(cert, ["claim", "printed_amplitude"], "about 1"), "malformed"))
+    out.append(("period 0", with_field(cert, ["claim", "period"], 0), "malformed"))
+    out.append(("period a string", with_field(cert, ["claim", "period"], str(P)), "malformed"))
+    out.append(("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("gain negative", with_field(cert, ["model", "gain"], "-" + m["gain"]), "malformed"))
+    out.append(("rho 0", with_field(cert, ["model", "rho"], "0"), "malformed"))
+    out.append(("H a constant", with_field(cert, ["model", "H"], "2"), "malformed"))
+    out.append(("H not causal", with_field(cert, ["model", "H"], "z^3 + " + m["H"]), "malformed"))
+    out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    out.append(("1 + k H(inf) <= 0", with_field(cert, ["model", "H"], "-1 + 0*(" + m["H"] + ")"), "malformed"))
+    return out
+
+
 def rand_r(rng):
     T = rng.choice(["1/1000", "1/100", "3/7", "0.002", "1"])
     w = "%s%d/%d" % (rng.choice(["", "-"]), rng.randint(1, 10 ** 6), rng.randint(1, 10 ** 3))
     return T, w
 
 
-KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge")
+KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge",
+         "bound-inf", "limit-cycle")
 
 
-def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng):
+def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lrng):
     """The certificates of random models of each kind asked for, [(kind, certificate)], and the
-    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng) and
-    passivity-level-mimo (mrng)."""
+    producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng),
+    passivity-level-mimo (mrng), bound-inf (irng) and limit-cycle (lrng)."""
     certs = []  # (kind, certificate)
     skipped = {}
     for i in range(a.models if "bound" in kinds else 0):
@@ -1138,7 +1395,8 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng):
             skipped[why] = skipped.get(why, 0) + 1
             continue
         with open(path) as f:
-            certs.append(("bound" if "frac_delay" not in m else "bound-frac", json.load(f)))
+            cert = json.load(f)
+        certs.append(("bound-inf" if cert["claim"].get("infinite") else "bound" if "frac_delay" not in m else "bound-frac", cert))
     for i in range(max(a.models // 4, 2) if "r" in kinds else 0):
         T, w = rand_r(rng)
         path = os.path.join(tmp, "r%d.json" % i)
@@ -1194,6 +1452,23 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng):
             skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
             continue
         certs.append(("wedge", cert))
+    for i in range(max(a.models // 2, 2) if "bound-inf" in kinds else 0):
+        m = rand_inf_model(irng)
+        path = os.path.join(tmp, "i%d.json" % i)
+        rc, out, err = run(a.hapstab, bound_args(m, 20) + ["--certificate", path])
+        if rc != 0:
+            why = "bound-inf: " + err.strip().split("error: ", 1)[-1].split(" (")[0][:70]
+            skipped[why] = skipped.get(why, 0) + 1
+            continue
+        with open(path) as f:
+            cert = json.load(f)
+        certs.append(("bound-inf" if cert["claim"].get("infinite") else "bound" if "frac_delay" not in m else "bound-frac", cert))
+    for i in range(max(a.models // 2, 2) if "limit-cycle" in kinds else 0):
+        cert = lc_produce(a.hapstab, rand_limit_cycle(lrng), scache, tmp)
+        if not isinstance(cert, dict):
+            skipped["limit-cycle: exit %s" % cert] = skipped.get("limit-cycle: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("limit-cycle", cert))
     return certs, skipped
 
 
@@ -1252,7 +1527,9 @@ def main():
     srng = random.Random(a.seed * 1000 + 47)  # its own stream: the other kinds draw what they drew before it was added
     t0 = time.time()
     mrng = random.Random(a.seed * 1000 + 48)  # passivity-level-mimo's own stream, likewise
-    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng)
+    irng = random.Random(a.seed * 1000 + 49)  # bound-inf's own stream
+    lrng = random.Random(a.seed * 1000 + 50)  # limit-cycle's own stream
+    certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lrng)
     produced = time.time() - t0
     mutants = []
     for kind, cert in certs:
@@ -1268,6 +1545,10 @@ def main():
             ms = wedge_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "passivity-level-mimo":
             ms = mimo_mutants(cert, mrng, a.hapstab, scache, tmp)
+        elif kind == "bound-inf":
+            ms = inf_mutants(cert, irng, a.hapstab, cache)
+        elif kind == "limit-cycle":
+            ms = lc_mutants(cert, lrng, a.hapstab, scache, tmp)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:

@@ -106,7 +106,7 @@ TEST(BoundCheck, MalformedNamesTheField) {
   d["model"]["H"] = "K*(";
   expect_field(d, "model.H");
   d = c;
-  d["kind"] = "limit-cycle";
+  d["kind"] = "bound-inf";  // no such kind (b* = +inf is the bound kind's claim "infinite")
   expect_field(d, "kind");
 }
 
@@ -674,6 +674,179 @@ TEST(WedgeCheck, OneSampleDelay) {
   EXPECT_NE(wrong.reason.find("claim.wedge"), std::string::npos) << wrong.reason;
   EXPECT_THROW(check_certificate(wedge_cert("K/(z - 1)", "1", {true, true, true, true, true})), InputError);
   EXPECT_THROW(check_certificate(wedge_cert("K*z", "1", {true, true, true, true, true})), InputError);  // not causal
+}
+
+// The margins and gains k* of H = K/z (above): K = 1/2: the wedge's left side is 1/2 + cos(theta),
+// min -1/2 at theta = pi, so its margin (min + 1) is 1/2 and k* = -1/(-1/2) = 2; Tsypkin's is
+// cos(theta)/2, margin 1/2, k* = 2. K = -1/2: the wedge's left side is 1/2 at every theta (margin
+// 3/2, k* = +inf); Tsypkin's -cos(theta)/2, min -1/2 at theta = 0 (c = 1): margin 1/2, k* = 2.
+nlohmann::json margins(nlohmann::json c, const nlohmann::json& wm, const nlohmann::json& wg, const nlohmann::json& tm,
+                       const nlohmann::json& tg, const std::string& wc, const std::string& tc) {
+  c["claim"]["wedge_margin"] = wm;
+  c["claim"]["wedge_gain"] = wg;
+  c["claim"]["tsypkin_margin"] = tm;
+  c["claim"]["tsypkin_gain"] = tg;
+  if (!wc.empty()) c["evidence"]["wedge_witness_c"] = wc;
+  if (!tc.empty()) c["evidence"]["tsypkin_witness_c"] = tc;
+  return c;
+}
+nlohmann::json range(const std::string& lo, const std::string& hi, const std::string& printed = "") {
+  nlohmann::json r{{"lo", lo}, {"hi", hi}};
+  if (!printed.empty()) r["printed"] = printed;
+  return r;
+}
+
+TEST(WedgeCheck, MarginsAndGainsByHand) {
+  const nlohmann::json half = wedge_cert("K/z", "1/2", {true, true, true, true, true});
+  const nlohmann::json inf{{"infinite", true}};
+  auto verdict = [](const nlohmann::json& c) { return check_certificate(c); };
+  Verdict v = verdict(margins(half, range("1/2", "1/2", "0.5"), range("2", "2", "2"), range("1/2", "1/2", "0.5"), range("2", "2", "2"), "-1", "-1"));
+  EXPECT_TRUE(v.verified) << v.reason;
+  v = verdict(margins(half, range("49/100", "51/100", "0.5"), range("19/10", "21/10", "2"), range("1/2", "1/2"), range("2", "2"), "-1/2", "-1"));
+  EXPECT_FALSE(v.verified);  // c0 = -1/2: the wedge's left side + 1 is 1 there, not <= 51/100
+  EXPECT_NE(v.reason.find("witness"), std::string::npos) << v.reason;
+  v = verdict(margins(half, range("51/100", "52/100"), range("2", "2"), range("1/2", "1/2"), range("2", "2"), "-1", "-1"));
+  EXPECT_FALSE(v.verified);  // above the margin
+  EXPECT_NE(v.reason.find("wedge_margin"), std::string::npos) << v.reason;
+  v = verdict(margins(half, range("1/2", "1/2", "0.6"), range("2", "2"), range("1/2", "1/2"), range("2", "2"), "-1", "-1"));
+  EXPECT_FALSE(v.verified);  // the printed decimal is not the margin rounded
+  EXPECT_NE(v.reason.find("printed"), std::string::npos) << v.reason;
+  v = verdict(margins(half, range("1/2", "1/2"), inf, range("1/2", "1/2"), range("2", "2"), "-1", "-1"));
+  EXPECT_FALSE(v.verified);  // k* = +inf needs the left side >= 0; it is -1/2 at theta = pi
+  v = verdict(margins(half, range("1/2", "1/2"), range("2", "3"), range("1/2", "1/2"), range("21/10", "3"), "-1", "-1"));
+  EXPECT_FALSE(v.verified);  // Tsypkin's k* >= 21/10 fails
+  EXPECT_NE(v.reason.find("tsypkin_gain"), std::string::npos) << v.reason;
+
+  const nlohmann::json neg = wedge_cert("K/z", "-1/2", {true, true, true, true, false});  // H(1) = -1/2
+  v = verdict(margins(neg, range("3/2", "3/2", "1.5"), inf, range("1/2", "1/2", "0.5"), range("2", "2", "2"), "0", "1"));
+  EXPECT_TRUE(v.verified) << v.reason;
+  v = verdict(margins(neg, range("3/2", "3/2"), range("1", "100"), range("1/2", "1/2"), range("2", "2"), "0", "1"));
+  EXPECT_FALSE(v.verified);  // a finite k* claimed where the left side is 1/2 everywhere
+  EXPECT_THROW(check_certificate(margins(half, range("1/2", "1/2"), range("2", "2"), range("1/2", "1/2"), range("2", "2"), "", "-1")),
+               InputError);  // the wedge's witness missing
+  EXPECT_THROW(check_certificate(margins(half, range("1/2", "1/2"), range("0", "2"), range("1/2", "1/2"), range("2", "2"), "-1", "-1")),
+               InputError);  // k* lo = 0
+  EXPECT_THROW(check_certificate(margins(half, range("1/2", "1/2", "x"), range("2", "2"), range("1/2", "1/2"), range("2", "2"), "-1", "-1")),
+               InputError);  // printed not a decimal
+}
+
+nlohmann::json inf_cert(const std::string& H, const std::string& K, int delay, const std::string& pole, int side) {
+  nlohmann::json c = bound_cert(H, K, "1/1000", delay, {{"status", "exact"}, {"infinite", true}}, "0");
+  c["evidence"] = {{"pole_c", pole}, {"side", side}};
+  return c;
+}
+
+// b* = +inf by hand. H = K z/(z^2 + 1): on the circle z/(z^2 + 1) = 1/(2c), real, and
+// Re{1/(1 - z)} = 1/2, so f = T K/(4c) (n = 0) and T K (1 + 2c)/(4c) (n = 1): +inf as c -> 0 from
+// above when K > 0, -inf from below. H = K/(z - 1): f = -T K Re{1/(z - 1)^2} = T K c/(2(1 - c)),
+// +inf as c -> 1 from below when K > 0 (no band above c = 1).
+TEST(BoundCheck, InfiniteByHand) {
+  for (int n : {0, 1}) {
+    const Verdict up = check_certificate(inf_cert("K*z/(z^2 + 1)", "3", n, "0", 1));
+    EXPECT_TRUE(up.verified) << up.reason;
+    const Verdict down = check_certificate(inf_cert("K*z/(z^2 + 1)", "3", n, "0", -1));
+    EXPECT_FALSE(down.verified);
+    EXPECT_NE(down.reason.find("-inf"), std::string::npos) << down.reason;
+    EXPECT_TRUE(check_certificate(inf_cert("K*z/(z^2 + 1)", "-3", n, "0", -1)).verified);
+    EXPECT_FALSE(check_certificate(inf_cert("K*z/(z^2 + 1)", "-3", n, "0", 1)).verified);  // the sign flip
+  }
+  EXPECT_TRUE(check_certificate(inf_cert("K/(z - 1)", "2", 0, "1", -1)).verified);
+  EXPECT_FALSE(check_certificate(inf_cert("K/(z - 1)", "-2", 0, "1", -1)).verified);
+  EXPECT_FALSE(check_certificate(inf_cert("K/(z - 1)", "2", 0, "1", 1)).verified);    // no band above c = 1
+  EXPECT_FALSE(check_certificate(inf_cert("K/(z - 1)", "2", 0, "1/2", -1)).verified); // not a pole
+  EXPECT_FALSE(check_certificate(inf_cert("K/(z - 1)", "2", 0, "2", -1)).verified);   // outside the band
+  EXPECT_THROW(check_certificate(inf_cert("K/(z - 1)", "2", 0, "1", 0)), InputError);
+  nlohmann::json both = inf_cert("K/(z - 1)", "2", 0, "1", -1);
+  both["claim"]["value"] = "1";
+  EXPECT_THROW(check_certificate(both), InputError);
+}
+
+// The Tustin wall with t_d = T/2 (q = 2, c = cos(wT/2), the band [0, 1]): the pole z = -1 is c = 0,
+// the band's end; b* = +inf there (sin(pi/2) > 0), from above. With t_d = 3T/2 (issue 46 item 1) the
+// objective tends to -inf there: the same claim is refuted.
+TEST(BoundCheck, InfiniteTustinHalfSample) {
+  nlohmann::json c = inf_cert("K + B*2*(z-1)/(T*(z+1))", "20", 0, "0", 1);
+  c["model"]["set"]["B"] = "5";
+  c["model"]["frac_delay"] = "1/2000";
+  const Verdict v = check_certificate(c);
+  EXPECT_TRUE(v.verified) << v.reason;
+  c["model"]["frac_delay"] = "3/2000";
+  const Verdict w = check_certificate(c);
+  EXPECT_FALSE(w.verified);
+  EXPECT_NE(w.reason.find("-inf"), std::string::npos) << w.reason;
+  c["model"]["frac_delay"] = "1/2000";
+  c["evidence"]["side"] = -1;  // below the band's end: outside the band
+  EXPECT_FALSE(check_certificate(c).verified);
+}
+
+nlohmann::json lc_cert(const std::string& gain, const std::string& rho, long period, const std::string& amp,
+                       const std::string& printed, long free, const nlohmann::json& y) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "limit-cycle"},
+          {"model", {{"H", "1/z"}, {"set", nlohmann::json::object()}, {"T", "1"}, {"gain", gain}, {"rho", rho}}},
+          {"claim", {{"status", "exact"}, {"period", period}, {"amplitude", amp}, {"printed_amplitude", printed}, {"free_steps", free}}},
+          {"evidence", {{"y", y}}}};
+}
+
+// H = 1/z: y_{j+1} = -k max(y_j, -rho). k = 2, rho = 1 from y = 2: 2 -> -4 (out of contact) -> 2:
+// period 2, amplitude (2 + 4)/2 = 3, one free sample; the linearisation is (-2)(0) = 0: attracting.
+// k = 1 from y = 1/2: 1/2 -> -1/2 -> 1/2 in contact: J = (-1)(-1) = 1, not attracting. From y = 1 the
+// orbit 1 -> -1 touches y = -rho: attraction is beyond the checker.
+TEST(LimitCycleCheck, FirstOrderByHand) {
+  nlohmann::json c = lc_cert("2", "1", 2, "3", "3", 1, {"2"});
+  c["claim"]["attracting"] = true;
+  Verdict v = check_certificate(c);
+  EXPECT_TRUE(v.verified) << v.reason;
+  auto refuted = [&](const char* key, const nlohmann::json& value, const char* why) {
+    nlohmann::json m = c;
+    if (std::string(key) == "y") m["evidence"]["y"] = value;
+    else if (std::string(key) == "rho") m["model"]["rho"] = value;
+    else m["claim"][key] = value;
+    const Verdict r = check_certificate(m);
+    EXPECT_FALSE(r.verified) << key;
+    EXPECT_NE(r.reason.find(why), std::string::npos) << r.reason;
+  };
+  refuted("period", 1, "does not repeat");
+  refuted("period", 4, "least period");
+  refuted("amplitude", "4", "amplitude");
+  refuted("printed_amplitude", "3.6", "printed_amplitude");
+  refuted("free_steps", 0, "free_steps");
+  refuted("attracting", false, "attracting");
+  refuted("y", nlohmann::json{"2000001/1000000"}, "does not repeat");
+  refuted("rho", "2", "does not repeat");
+  nlohmann::json phase = c;
+  phase["evidence"]["y"] = {"-4"};
+  EXPECT_TRUE(check_certificate(phase).verified);  // the same orbit one sample later
+  nlohmann::json scaled = c;                        // (4) is homogeneous in (y, rho)
+  scaled["model"]["rho"] = "2";
+  scaled["evidence"]["y"] = {"4"};
+  scaled["claim"]["amplitude"] = "6";
+  scaled["claim"]["printed_amplitude"] = "6.0";
+  EXPECT_TRUE(check_certificate(scaled).verified);
+
+  nlohmann::json neutral = lc_cert("1", "1", 2, "1/2", "0.5", 0, {"1/2"});
+  neutral["claim"]["attracting"] = false;
+  v = check_certificate(neutral);
+  EXPECT_TRUE(v.verified) << v.reason;
+  neutral["claim"]["attracting"] = true;
+  EXPECT_FALSE(check_certificate(neutral).verified);
+
+  nlohmann::json touching = lc_cert("1", "1", 2, "1", "1", 0, {"1"});
+  EXPECT_TRUE(check_certificate(touching).verified);
+  touching["claim"]["attracting"] = true;
+  EXPECT_THROW(check_certificate(touching), InputError);
+
+  nlohmann::json bad = c;
+  bad["evidence"]["y"] = {"2", "-4"};
+  EXPECT_THROW(check_certificate(bad), InputError);  // n = 1 output expected
+  bad = c;
+  bad["model"]["H"] = "2";
+  EXPECT_THROW(check_certificate(bad), InputError);  // no state
+  bad = c;
+  bad["model"]["gain"] = "-1";
+  EXPECT_THROW(check_certificate(bad), InputError);
+  bad = c;
+  bad["model"]["H"] = "-2 + 1/z";
+  EXPECT_THROW(check_certificate(bad), InputError);  // 1 + k H(inf) = -3 <= 0: no unique solution
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts are known by hand (below), its
+"""checks/hapstab_check.py's `wedge` kind on H(z) whose verdicts, margins and gains are known by hand (below),
+its `limit-cycle` kind on first-order loops (class LimitCycle), b* = +inf (class BoundInfinite), its
 `stability-max` kind on the mass on a virtual wall with delays 0 and 1 (class StabilityMax), its
 `passivity-level-mimo` kind on a diagonal G (the least SISO level, by hand) and a coupled 2x2 (mpmath)
 (class PassivityLevelMimo), and its
@@ -441,6 +442,119 @@ class PassivityLevelMimo(unittest.TestCase):
         c = copy.deepcopy(ok)
         del c["evidence"]["witness_s"]
         self.assertEqual(hc.check(c)[0], 2)
+
+def with_margins(c, wm, wg, tm, tg, wc, tc):
+    c = copy.deepcopy(c)
+    c["claim"].update({"wedge_margin": wm, "wedge_gain": wg, "tsypkin_margin": tm, "tsypkin_gain": tg})
+    c["evidence"] = {k: v for k, v in (("wedge_witness_c", wc), ("tsypkin_witness_c", tc)) if v is not None}
+    return c
+
+
+def rng(lo, hi, printed=None):
+    return dict({"lo": lo, "hi": hi}, **({"printed": printed} if printed else {}))
+
+
+class WedgeMargins(unittest.TestCase):
+    """H = K/z (the Wedge cases): K = 1/2: (25)'s left side 1/2 + cos(theta), margin (min + 1) 1/2 at
+    theta = pi, k* = 2; (21)'s cos(theta)/2, margin 1/2, k* = 2. K = -1/2: (25)'s left side 1/2 everywhere
+    (margin 3/2, k* = +inf), (21)'s -cos(theta)/2, margin 1/2 at theta = 0, k* = 2 (tests/check/test_check.cpp
+    WedgeCheck.MarginsAndGainsByHand, for the C++ checker)."""
+
+    def test_by_hand(self):
+        half = wedge_cert("K/z", "1/2", (True, True, True, True, True))
+        self.assertEqual(hc.check(with_margins(half, rng("1/2", "1/2", "0.5"), rng("2", "2", "2"), rng("1/2", "1/2"), rng("2", "2"), "-1", "-1"))[0], 0)
+        code, why = hc.check(with_margins(half, rng("51/100", "52/100"), rng("2", "2"), rng("1/2", "1/2"), rng("2", "2"), "-1", "-1"))
+        self.assertEqual(code, 1)
+        self.assertIn("wedge_margin", why)
+        code, why = hc.check(with_margins(half, rng("1/2", "1/2", "0.6"), rng("2", "2"), rng("1/2", "1/2"), rng("2", "2"), "-1", "-1"))
+        self.assertEqual(code, 1)
+        self.assertIn("printed", why)
+        self.assertEqual(hc.check(with_margins(half, rng("1/2", "1/2"), {"infinite": True}, rng("1/2", "1/2"), rng("2", "2"), "-1", "-1"))[0], 1)
+        self.assertEqual(hc.check(with_margins(half, rng("49/100", "51/100"), rng("2", "2"), rng("1/2", "1/2"), rng("2", "2"), "-1/2", "-1"))[0], 1)
+        neg = wedge_cert("K/z", "-1/2", (True, True, True, True, False))
+        self.assertEqual(hc.check(with_margins(neg, rng("3/2", "3/2", "1.5"), {"infinite": True}, rng("1/2", "1/2", "0.5"), rng("2", "2", "2"), "0", "1"))[0], 0)
+        self.assertEqual(hc.check(with_margins(neg, rng("3/2", "3/2"), rng("1", "100"), rng("1/2", "1/2"), rng("2", "2"), "0", "1"))[0], 1)
+        self.assertEqual(hc.check(with_margins(half, rng("1/2", "1/2"), rng("2", "2"), rng("1/2", "1/2"), rng("2", "2"), None, "-1"))[0], 2)
+        self.assertEqual(hc.check(with_margins(half, rng("1/2", "1/2"), rng("0", "2"), rng("1/2", "1/2"), rng("2", "2"), "-1", "-1"))[0], 2)
+
+
+def inf_cert(H, K, delay, pole, side, td=None, B=None):
+    c = {"certificate": "hapstab", "version": 1, "kind": "bound",
+         "model": {"H": H, "set": {"K": K}, "T": "1/1000", "delay": delay, "eta": "0"},
+         "claim": {"status": "exact", "infinite": True}, "evidence": {"pole_c": pole, "side": side}}
+    if td:
+        c["model"]["frac_delay"] = td
+    if B:
+        c["model"]["set"]["B"] = B
+    return c
+
+
+class BoundInfinite(unittest.TestCase):
+    """b* = +inf by hand: H = K z/(z^2 + 1) is K/(2c) on the circle and Re 1/(1 - z) = 1/2, so
+    f = T K/(4c) (n = 0), T K (1 + 2c)/(4c) (n = 1): +inf as c -> 0 from above for K > 0, -inf from below;
+    H = K/(z - 1): f = T K c/(2(1 - c)), +inf as c -> 1 from below for K > 0; the Tustin wall with
+    t_d = T/2 (+inf at c = cos(wT/2) = 0 from above) and 3T/2 (-inf there: issue 46 item 1)."""
+
+    def test_by_hand(self):
+        for n in (0, 1):
+            self.assertEqual(hc.check(inf_cert("K*z/(z^2 + 1)", "3", n, "0", 1))[0], 0)
+            code, why = hc.check(inf_cert("K*z/(z^2 + 1)", "3", n, "0", -1))
+            self.assertEqual(code, 1)
+            self.assertIn("-inf", why)
+            self.assertEqual(hc.check(inf_cert("K*z/(z^2 + 1)", "-3", n, "0", -1))[0], 0)
+            self.assertEqual(hc.check(inf_cert("K*z/(z^2 + 1)", "-3", n, "0", 1))[0], 1)
+        self.assertEqual(hc.check(inf_cert("K/(z - 1)", "2", 0, "1", -1))[0], 0)
+        self.assertEqual(hc.check(inf_cert("K/(z - 1)", "-2", 0, "1", -1))[0], 1)
+        self.assertEqual(hc.check(inf_cert("K/(z - 1)", "2", 0, "1", 1))[0], 1)
+        self.assertEqual(hc.check(inf_cert("K/(z - 1)", "2", 0, "1/2", -1))[0], 1)
+        self.assertEqual(hc.check(inf_cert("K/(z - 1)", "2", 0, "1", 0))[0], 2)
+        tustin = "K + B*2*(z-1)/(T*(z+1))"
+        self.assertEqual(hc.check(inf_cert(tustin, "20", 0, "0", 1, "1/2000", "5"))[0], 0)
+        code, why = hc.check(inf_cert(tustin, "20", 0, "0", 1, "3/2000", "5"))
+        self.assertEqual(code, 1)
+        self.assertIn("-inf", why)
+        self.assertEqual(hc.check(inf_cert(tustin, "20", 0, "0", -1, "1/2000", "5"))[0], 1)
+
+
+def lc_cert(gain, rho, period, amp, printed, free, y, attracting=None, H="1/z"):
+    c = {"certificate": "hapstab", "version": 1, "kind": "limit-cycle",
+         "model": {"H": H, "set": {}, "T": "1", "gain": gain, "rho": rho},
+         "claim": {"status": "exact", "period": period, "amplitude": amp, "printed_amplitude": printed, "free_steps": free},
+         "evidence": {"y": y}}
+    if attracting is not None:
+        c["claim"]["attracting"] = attracting
+    return c
+
+
+class LimitCycle(unittest.TestCase):
+    """H = 1/z: y_{j+1} = -k max(y_j, -rho). k = 2, rho = 1: 2 -> -4 -> 2, period 2, amplitude 3, one
+    sample out of contact, J = (-2)(0) = 0 (attracting); k = 1: 1/2 -> -1/2 -> 1/2, J = 1 (not attracting);
+    from 1 the orbit touches y = -rho (attraction beyond the checker). The cases of test_check.cpp's
+    LimitCycleCheck.FirstOrderByHand."""
+
+    def test_by_hand(self):
+        self.assertEqual(hc.check(lc_cert("2", "1", 2, "3", "3", 1, ["2"], True))[0], 0)
+        self.assertEqual(hc.check(lc_cert("2", "1", 2, "3", "3", 1, ["-4"], True))[0], 0)
+        self.assertEqual(hc.check(lc_cert("2", "2", 2, "6", "6.0", 1, ["4"], True))[0], 0)
+        for c, why in ((lc_cert("2", "1", 1, "3", "3", 1, ["2"]), "does not repeat"),
+                       (lc_cert("2", "1", 4, "3", "3", 1, ["2"]), "least period"),
+                       (lc_cert("2", "1", 2, "4", "4", 1, ["2"]), "amplitude"),
+                       (lc_cert("2", "1", 2, "3", "3.6", 1, ["2"]), "printed_amplitude"),
+                       (lc_cert("2", "1", 2, "3", "3", 0, ["2"]), "free_steps"),
+                       (lc_cert("2", "1", 2, "3", "3", 1, ["2"], False), "attracting"),
+                       (lc_cert("2", "2", 2, "3", "3", 1, ["2"]), "does not repeat"),
+                       (lc_cert("1", "1", 2, "1/2", "0.5", 0, ["1/2"], True), "attracting")):
+            code, reason = hc.check(c)
+            self.assertEqual(code, 1, reason)
+            self.assertIn(why, reason)
+        self.assertEqual(hc.check(lc_cert("1", "1", 2, "1/2", "0.5", 0, ["1/2"], False))[0], 0)
+        self.assertEqual(hc.check(lc_cert("1", "1", 2, "1", "1", 0, ["1"]))[0], 0)
+        self.assertEqual(hc.check(lc_cert("1", "1", 2, "1", "1", 0, ["1"], True))[0], 2)  # a sample on y = -rho
+        self.assertEqual(hc.check(lc_cert("2", "1", 2, "3", "3", 1, ["2", "-4"]))[0], 2)
+        self.assertEqual(hc.check(lc_cert("2", "1", 2, "3", "3", 1, ["2"], H="2"))[0], 2)
+        self.assertEqual(hc.check(lc_cert("-2", "1", 2, "3", "3", 1, ["2"]))[0], 2)
+        self.assertEqual(hc.check(lc_cert("1", "1", 2, "3", "3", 1, ["2"], H="-2 + 1/z"))[0], 2)
+
 
 if __name__ == "__main__":
     unittest.main()

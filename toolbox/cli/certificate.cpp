@@ -8,6 +8,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interval.hpp"
+#include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
 #include "hapstab/stability/max_evidence.hpp"
@@ -157,6 +158,47 @@ nlohmann::json header(const char* kind) {
   return j;
 }
 
+// The printed claim proven by check/, or no certificate (never a weaker claim written silently).
+void verify_before_writing(const nlohmann::json& j) {
+  check::Verdict v;
+  try {
+    v = check::check_certificate(j);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
+  }
+  if (!v.verified)
+    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
+}
+
+// b* = +inf: the claim, and the first rational pole c_p of the objective in the band (a root of
+// its denominator, met exactly or by a convergent of a refined isolating interval) and side that
+// check/ verifies (the objective -> +inf there, check/bound_objective.hpp); InputError when none
+// (a pole at an irrational c, e.g. z = -1 with q >= 4: no certificate yet).
+nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, const WitnessObjective& o) {
+  claim["status"] = "exact";
+  claim["infinite"] = true;
+  j["claim"] = claim;
+  const QPoly& den = o.f.den();
+  std::vector<rational> poles;
+  if (den.degree() >= 1)
+    for (RootInterval r : isolate_real_roots(den, o.end_lo, rational(1))) {
+      if (!r.is_exact()) r = refine_root(den, r, rational(1) / rational(pow(integer(2), 200)));
+      if (r.is_exact() && den(r.lo) == 0) poles.push_back(r.lo);
+      else if (auto c = first_convergent((r.lo + r.hi) / 2, [&](const rational& x) { return den(x) == 0; })) poles.push_back(*c);
+    }
+  for (const rational& c : poles)
+    for (long side : {-1L, 1L}) {
+      j["evidence"] = {{"pole_c", c.str()}, {"side", side}};
+      try {
+        if (check::check_certificate(j).verified) return j;
+      } catch (const InputError&) {  // this candidate is not in the checker's terms: the next one
+      }
+    }
+  throw InputError("--certificate: b* = +inf, but no rational pole c = cos(wT/q) of the objective in the band was "
+                   "shown to send it to +inf (a pole at an irrational c, e.g. z = -1 with t_d/T = p/q, q >= 4, has no "
+                   "certificate yet)");
+}
+
 }  // namespace
 
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
@@ -164,10 +206,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   check_certificate_size(p.H, p);
-  if (b.infinite)
-    throw InputError("--certificate: b* = +inf (a pole on the unit circle where the objective tends to +inf) has no "
-                     "certificate yet");
-  if (b.status != Status::exact && b.status != Status::certified)
+  if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = header("bound");
   nlohmann::json m;
@@ -181,6 +220,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   nlohmann::json claim;
   claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
                                    : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  if (b.infinite) return infinite_bound_evidence(j, claim, witness_objective(p));
   rational target;
   if (b.status == Status::exact) {
     claim["status"] = "exact";
@@ -485,19 +525,67 @@ nlohmann::json stability_max_certificate(const StabilityText& text, const std::s
   }
   j["claim"] = claim;
   j["evidence"] = evidence;
-  // the printed claim proven, or no certificate (never a weaker claim written silently)
-  check::Verdict v;
-  try {
-    v = check::check_certificate(j);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
-  }
-  if (!v.verified)
-    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
+  verify_before_writing(j);
   return j;
 }
 
-nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a) {
+namespace {
+
+// The left side + 1 of the criterion (the wedge's (25), else Tsypkin's (21)) at c = cos(theta) in
+// [-1, 1], exactly, by the producer's route (contact::wedge_branches in u = tan^2(theta/2)); c = -1
+// is theta = pi, where it is H(-1) + 1.
+rational criterion_at(const TransferFunction& H, const contact::WedgeBranches& br, bool wedge, const rational& c) {
+  if (c == -1) return H.num()(rational(-1)) / H.den()(rational(-1)) + 1;
+  const rational u = (1 - c) / (1 + c);
+  const rational J = br.im_over_t(u);
+  return br.re(u) + (wedge ? abs(J) : rational(0)) + 1;
+}
+
+// claim {lo, hi, printed}: the enclosure of r rounded outward at digits + 5 (as --json's
+// *_enclosure), and the shared digits the command printed (when it printed any).
+nlohmann::json printed_range(const Certified<rational>& r, int digits) {
+  const Enclosure<rational> e = r.enclosure ? *r.enclosure : Enclosure<rational>{r.value, r.value};
+  nlohmann::json j{{"lo", parse_rational(decimal_outward(e.lo, digits + 5, -1), "enclosure").str()},
+                   {"hi", parse_rational(decimal_outward(e.hi, digits + 5, +1), "enclosure").str()}};
+  const SharedDecimal s = shared_decimal(e.lo, e.hi, digits);
+  if (s.digits > 0) j["printed"] = s.text;
+  return j;
+}
+
+// The margin and k* of one criterion (claim.<key>_margin, claim.<key>_gain) and the witness
+// c0 of their upper bounds (evidence.<key>_witness_c): near the certified minimiser, the first
+// that shows the left side + 1 <= min(margin hi, 1 - 1/k* hi) there.
+void margin_claims(const TransferFunction& H, const contact::WedgeBranches& br, const contact::CriterionReport& c,
+                   const std::string& key, bool wedge, int digits, nlohmann::json& claim, nlohmann::json& evidence) {
+  claim[key + "_margin"] = printed_range(c.margin, digits);
+  rational target = parse_rational(claim[key + "_margin"]["hi"].get<std::string>(), "margin");
+  if (c.gain_infinite) {
+    claim[key + "_gain"] = {{"infinite", true}};
+  } else if (c.max_gain.status == Status::exact || c.max_gain.status == Status::certified) {
+    claim[key + "_gain"] = printed_range(c.max_gain, digits);
+    const rational k_hi = parse_rational(claim[key + "_gain"]["hi"].get<std::string>(), "k*");
+    target = std::min(target, rational(1 - 1 / k_hi));
+  }
+  auto ok = [&](const rational& x) { return x >= -1 && x <= 1 && criterion_at(H, br, wedge, x) <= target; };
+  std::vector<rational> tries{rational(-1), rational(1)};
+  if (!c.min_at_pi)
+    for (const rational& u : {c.u_at_min.lo, c.u_at_min.hi, rational((c.u_at_min.lo + c.u_at_min.hi) / 2)})
+      tries.push_back((1 - u) / (1 + u));
+  for (const rational& x : tries)
+    if (ok(x)) {
+      evidence[key + "_witness_c"] = x.str();
+      return;
+    }
+  if (auto x = first_convergent(tries.back(), ok)) {
+    evidence[key + "_witness_c"] = x->str();
+    return;
+  }
+  throw NumericalError("--certificate: no rational witness shows the " + key + " margin <= " + target.str());
+}
+
+}  // namespace
+
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a, int digits) {
   if (tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   // a pole on the circle where the branches stay bounded (z = -1 with Im H cot(theta/2) finite) is
@@ -514,7 +602,40 @@ nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnal
                 {"h_stable", a.assumptions.h_stable},
                 {"closed_loop_stable", a.assumptions.closed_loop_stable},
                 {"dc_gain_nonnegative", a.assumptions.dc_gain_nonnegative}};
-  j["evidence"] = nlohmann::json::object();
+  nlohmann::json evidence = nlohmann::json::object();
+  const contact::WedgeBranches br = contact::wedge_branches(a.H);
+  margin_claims(a.H, br, a.wedge, "wedge", true, digits, j["claim"], evidence);
+  margin_claims(a.H, br, a.tsypkin, "tsypkin", false, digits, j["claim"], evidence);
+  j["evidence"] = evidence;
+  verify_before_writing(j);
+  return j;
+}
+
+nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, const rational& rho,
+                                       const contact::ExactOrbit& orbit, int order) {
+  if (tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+  if (!orbit.found || orbit.y.empty()) throw InputError("--certificate: no periodic orbit was proven: no claim to certify");
+  if (order < 1) throw InputError("--certificate: H is a constant: the loop has no state, so no orbit to certify");
+  nlohmann::json j = header("limit-cycle");
+  j["model"] = {{"H", tf.H},
+                {"set", sets_json(tf.sets)},
+                {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()},
+                {"gain", k.str()},
+                {"rho", rho.str()}};
+  nlohmann::json claim{{"quantity", "a periodic solution of paper 002's loop (4), y = -k H(z) x, x = max(y, -rho): least "
+                                    "period, amplitude (max - min)/2 of y, samples with y < -rho, attraction"},
+                       {"status", "exact"},
+                       {"period", orbit.period},
+                       {"amplitude", orbit.amplitude.str()},
+                       {"printed_amplitude", to_decimal(orbit.amplitude, 20)},  // as cmd_limit_cycle.cpp prints it
+                       {"free_steps", orbit.free_steps}};
+  if (orbit.stability_decided) claim["attracting"] = orbit.stable;
+  j["claim"] = claim;
+  nlohmann::json y = nlohmann::json::array();
+  for (int i = 0; i < order; ++i) y.push_back(orbit.y[static_cast<size_t>(i) % orbit.y.size()].str());
+  j["evidence"] = {{"y", y}};
+  verify_before_writing(j);
   return j;
 }
 

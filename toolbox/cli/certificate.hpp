@@ -1,4 +1,4 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound`, `passivity-level` (SISO --H, MIMO --ss), `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `limit-cycle --exact`, `passivity-level` (SISO --H, MIMO --ss), `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
@@ -12,6 +12,7 @@
 #include "cli/tf_options.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/passivity/max_gain.hpp"
+#include "hapstab/contact/limit_cycle.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
@@ -89,9 +90,22 @@ nlohmann::json stability_max_certificate(const StabilityText& text, const std::s
                                          const stability::MaxGain& m, int digits);
 
 /// The certificate of `wedge` (check/wedge_check.hpp): H as written by --H, the exact verdicts of
-/// (25), (21) and the three assumptions. InputError (exit 2) when H is not given by --H or has a
-/// pole on the unit circle (the criteria are then limits, or not evaluated; the checkers refuse it).
-nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a);
+/// (25), (21) and the three assumptions, and each criterion's margin and largest gain k* as printed
+/// at `digits` (their enclosures rounded outward at digits + 5, the shared digits printed; k* when
+/// certified or +inf) with a witness c0 of their upper bounds. Checked (check/) before it is
+/// returned. InputError (exit 2) when H is not given by --H or has a pole on the unit circle (the
+/// criteria are then limits, or not evaluated; the checkers refuse it); NumericalError when no
+/// witness is found.
+nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a, int digits);
+
+/// The certificate of `limit-cycle --exact` (check/limit_cycle_check.hpp): H as written by --H, the
+/// gain k and rho, the claim as printed (the least period, the amplitude (max - min)/2 exactly and as
+/// printed, the samples out of contact, attracting or not when decided) and the evidence: the
+/// orbit's outputs y_0..y_{n-1} (n = `order`, the order of H), the state of the difference equation
+/// of (4). The certificate is checked (check/) before it is returned: one that does not verify is an
+/// InputError (exit 2, no file) naming what fails.
+nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, const rational& rho,
+                                       const contact::ExactOrbit& orbit, int order);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);

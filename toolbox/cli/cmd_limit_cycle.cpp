@@ -1,4 +1,4 @@
-// `hapstab limit-cycle --H EXPR --gain K [--rho RHO] [--steps N] [--exact] [--json]`
+// `hapstab limit-cycle --H EXPR --gain K [--rho RHO] [--steps N] [--exact [--certificate FILE]] [--json]`
 // Simulates the autonomous loop of Fig. 5 of paper 002, y_k = -k H(z) (xi(y_k + rho) - rho),
 // in double from several initial states and reports a sustained oscillation (period in
 // samples, amplitude of y). With --exact the periodic orbit is solved and replayed in rational
@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/tf_options.hpp"
 #include "hapstab/contact/limit_cycle.hpp"
@@ -27,19 +28,35 @@ struct Opts {
   std::string gain, rho = "1";
   long steps = 200000;
   bool exact = false, json = false;
+  std::string certificate;
 };
+
+std::string attraction(const contact::ExactOrbit& e) {
+  if (!e.stability_decided) return "attraction not decided (a sample on y = -rho)";
+  return std::string(e.stable ? "attracting" : "not attracting") + " (exact)";
+}
 
 int run(const Opts& o) {
   const rational k = option_rational(o.gain, "--gain");
   const rational rho = option_rational(o.rho, "--rho");
   if (o.steps < 1000 || o.steps > 2000000000L)
     throw InputError("--steps must be in [1000, 2e9], got " + std::to_string(o.steps));
+  if (!o.certificate.empty() && !o.exact)
+    throw InputError("--certificate: the certificate is of the orbit that --exact proves; add --exact");
+  if (!o.certificate.empty() && o.tf.H.empty())
+    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   const TransferFunction H = parse_tf_options(o.tf, tf_rules);
   contact::LureLoop L = contact::make_lure_loop(H, k, rho);
   contact::Oscillation osc = contact::find_oscillation(L, o.steps, std::min<long>(8192, o.steps / 4));
   std::optional<contact::ExactOrbit> ex;
   if (o.exact && osc.period) ex = contact::certify_orbit(L, osc.state, *osc.period);
   const bool oscillates = osc.oscillates || osc.diverged;
+  if (!o.certificate.empty()) {
+    if (!ex || !ex->found)
+      throw InputError(std::string("--certificate: no periodic orbit was proven (") +
+                       (ex ? ex->note : std::string("no period found")) + "): no claim to certify");
+    write_certificate(o.certificate, limit_cycle_certificate(o.tf, k, rho, *ex, L.order()));
+  }
   if (o.json) {
     nlohmann::json j;
     j["H"] = H.to_string();
@@ -58,6 +75,7 @@ int run(const Opts& o) {
                     {"amplitude", ex->found ? to_decimal(ex->amplitude, 20) : std::string()},
                     {"amplitude_fraction", ex->found ? exact_json(ex->amplitude) : nlohmann::json(nullptr)},  // exactly
                     {"stable", ex->stable},
+                    {"stability_decided", ex->stability_decided},
                     {"free_steps_per_period", ex->free_steps},
                     {"note", ex->note}};
       if (ex->found) j["amplitude_exact"] = to_decimal(ex->amplitude, 20);
@@ -73,7 +91,7 @@ int run(const Opts& o) {
       if (ex->found)
         std::cout << "exact: periodic orbit of period " << ex->period << " proven (state repeats exactly), amplitude "
                   << to_decimal(ex->amplitude, 20) << ", " << ex->free_steps << " samples per period out of contact, "
-                  << (ex->stable ? "attracting" : "not attracting") << " (exact)\n";
+                  << attraction(*ex) << "\n";
       else
         std::cout << "exact: no orbit certified: " << ex->note << "\n";
     }
@@ -91,6 +109,9 @@ const Register reg({"limit-cycle",
                       app.add_option("--steps", o->steps, "Samples simulated per initial state (default 200000)");
                       app.add_flag("--exact", o->exact, "Certify the periodic orbit in rational arithmetic");
                       app.add_flag("--json", o->json, "JSON output");
+                      app.add_option("--certificate", o->certificate,
+                                     "with --exact: write the proven orbit's certificate (JSON) to FILE, for `hapstab "
+                                     "check FILE` (docs/certificates.md)");
                       return [o]() { return run(*o); };
                     }});
 

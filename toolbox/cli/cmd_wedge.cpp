@@ -67,7 +67,7 @@ int run(const Opts& o) {
   if (!o.certificate.empty() && o.tf.H.empty())
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   contact::ContactAnalysis a = contact::analyze_contact(H, o.digits);
-  if (!o.certificate.empty()) write_certificate(o.certificate, wedge_certificate(o.tf, a));
+  if (!o.certificate.empty()) write_certificate(o.certificate, wedge_certificate(o.tf, a, o.digits));
   const bool applies = a.applies();
   const auto& w = a.wedge;
   const auto& ts = a.tsypkin;
@@ -141,7 +141,8 @@ const Register reg({"wedge",
                       app.add_option("--digits", o->digits, "Significant digits of the margins (1..60, default 20)");
                       app.add_flag("--json", o->json, "JSON output");
                       app.add_option("--certificate", o->certificate,
-                                     "write the exact verdicts' certificate (JSON) to FILE, for `hapstab check FILE` "
+                                     "write the certificate of the exact verdicts, margins and gains k* (JSON) to FILE, "
+                                     "for `hapstab check FILE` "
                                      "(docs/certificates.md)");
                       return [o]() { return run(*o); };
                     }});

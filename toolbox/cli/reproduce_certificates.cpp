@@ -80,9 +80,21 @@ CertificateEntry produce_one(const proofs::ClaimResult& c, size_t k, const fs::p
   CertificateEntry e;
   e.claim = c.id;
   e.file = "certificates/" + c.id + (n > 1 ? "." + std::to_string(k + 1) : std::string()) + ".json";
-  e.command = command_text(req.args);
   const fs::path path = dir / e.file;
   std::vector<std::string> args = req.args;
+  if (!req.input.empty()) {  // the file the command reads, beside the certificates
+    const std::string input = "certificates/inputs/" + fs::path(e.file).filename().string();
+    fs::create_directories(dir / "certificates" / "inputs");
+    std::ofstream(dir / input) << req.input << "\n";
+    for (auto& a : args)
+      if (a == "{input}") a = (dir / input).string();
+    auto shown = req.args;
+    for (auto& a : shown)
+      if (a == "{input}") a = input;
+    e.command = command_text(shown);
+  } else {
+    e.command = command_text(req.args);
+  }
   args.insert(args.end(), {"--certificate", path.string(), "--json"});
   const auto t0 = clock_type::now();
   try {

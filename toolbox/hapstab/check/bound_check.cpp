@@ -16,6 +16,22 @@ namespace {
 
 using P = Polynomial<rational>;
 
+// b* = +inf (claim.infinite, status exact): the objective tends to +inf at evidence.pole_c from
+// evidence.side (check/bound_objective.hpp, unbounded_above_fails).
+Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm,
+                       const std::string& status) {
+  if (status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
+  const rational c_p = detail::exact_field(evidence, "pole_c", "evidence");
+  if (!evidence.contains("side") || !evidence.at("side").is_number_integer() ||
+      (evidence.at("side").get<long>() != 1 && evidence.at("side").get<long>() != -1))
+    throw InputError("evidence.side: missing or not +1 or -1 (the side of pole_c the objective is approached from)");
+  const long side = evidence.at("side").get<long>();
+  const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
+  if (auto why = detail::unbounded_above_fails(f, c_p, side, dm.q)) return {false, "b* = +inf not shown: " + *why};
+  return {true, "b* = +inf: the objective tends to +inf as c = cos(wT/" + std::to_string(dm.q) + ") -> " +
+                    detail::shortened(c_p) + (side > 0 ? " from above" : " from below") + " (a pole of H on the unit circle)"};
+}
+
 }  // namespace
 
 Verdict check_bound(const nlohmann::json& cert) {
@@ -25,8 +41,10 @@ Verdict check_bound(const nlohmann::json& cert) {
 
   // ---- the model as written (a field this checker does not read would be a model it does not check)
   detail::only_fields(model, {"H", "set", "T", "delay", "frac_delay", "eta"}, "model");
-  detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
-  detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
+  detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
+  const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
+  if (infinite) detail::only_fields(evidence, {"pole_c", "side"}, "evidence");
+  else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
   const std::string text = model.at("H").get<std::string>();
   const detail::DelayModel dm = detail::read_delay_model(model);
@@ -36,8 +54,10 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
-  const detail::ClaimRange range = detail::claim_range(claim);
+  const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
   if (range.refuted) return {false, *range.refuted};
+  if (infinite && !range.infinite) throw InputError("claim.infinite: false (a finite claim has no such field)");
+  if (range.infinite) return check_infinite(evidence, H, dm, range.status);
   const std::string& status = range.status;
   const rational &lo = range.lo, &hi = range.hi;
 

@@ -22,14 +22,21 @@
 //           many zeros of B, so it is f's value or limit at c0, and the supremum is at least that.
 // A pole of H at z = -1 meeting a fractional delay (the Tustin wall with t_d = 1.5 T: f -> -inf at
 // wT = pi, issue 46 item 1) needs the second test only when the end is irrational (q >= 4): A has
-// a simple, B a double zero there, so P changes sign at the end; +inf has no certificate.
+// a simple, B a double zero there, so P changes sign at the end.
+//   (+inf)  b* = +inf (claim "infinite": true, status exact) if the objective tends to +inf at the
+//           rational pole c_p = evidence.pole_c from the side evidence.side = +1 (c > c_p) or -1
+//           (c < c_p), the side inside the band: with A/B reduced to Ar/Br and Br = (c - c_p)^m R,
+//           sign Ar(c_p) * side^m * sign R(c_p) > 0 (bound_objective.hpp, unbounded_above_fails).
+//           The Tustin wall with t_d = T/2 (sin(pi tau) > 0) tends to +inf at wT = pi; with
+//           t_d = 1.5 T to -inf (issue 46 item 1's false +inf): the sign decides, exactly.
 // Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
 // takes ~7 s), else the certificate is refused (InputError) rather than checked for hours.
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,
 // eta >= 0, lo <= hi, the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers
 // claimed, exactly.
 // Not verified here: that H is stable (the premise under which b* is the passivity bound of
-// paper 001, not part of the value of the sup); b* = +inf has no certificate.
+// paper 001, not part of the value of the sup). A pole at an irrational c_p (z = -1 with q >= 4)
+// has no +inf certificate: the producer refuses it.
 //
 // Implements: paper 001 (45), (54).
 #pragma once

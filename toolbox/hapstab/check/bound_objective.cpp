@@ -181,4 +181,30 @@ std::optional<std::string> lower_bound_fails(const ObjectivePolys& f, const rati
   return std::nullopt;
 }
 
+std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const rational& c_p, long side, long q) {
+  const std::string at = "evidence.pole_c = " + shortened(c_p);
+  if (!in_domain(c_p, q)) return at + " is outside the band [cos(pi/" + std::to_string(q) + "), 1]";
+  if (side == 1 && c_p == 1) return "evidence.side = +1 at c_p = 1: no point of the band lies above it";
+  if (side == -1) {
+    bool inside = c_p > -1;
+    for (long k = 1; k <= q && inside; ++k) inside = chebyshev_u(k - 1)(c_p) > 0;
+    if (!inside) return "evidence.side = -1 at the band's end c_p = cos(pi/" + std::to_string(q) + "): no point of the band lies below it";
+  }
+  const P g = gcd(f.A, f.B);
+  const P Ar = divmod(f.A, g).first;
+  P R = divmod(f.B, g).first;
+  if (R(c_p) != 0) return at + " is not a pole of the objective (the reduced denominator is " + to_decimal(R(c_p), 12) + " there)";
+  const P root{-c_p, rational(1)};
+  long m = 0;
+  while (R(c_p) == 0) {
+    R = divmod(R, root).first;
+    ++m;
+  }
+  const int sign = (Ar(c_p) > 0 ? 1 : -1) * (R(c_p) > 0 ? 1 : -1) * (m % 2 == 1 ? static_cast<int>(side) : 1);
+  if (sign < 0)
+    return "the objective tends to -inf as c -> " + shortened(c_p) + (side > 0 ? " from above" : " from below") +
+           " (a pole of order " + std::to_string(m) + " of the reduced A/B, residue term of sign -1 on that side)";
+  return std::nullopt;
+}
+
 }  // namespace hapstab::check::detail

@@ -78,6 +78,15 @@ std::optional<std::string> upper_bound_fails(const ObjectivePolys& f, const rati
 /// at c0, which the sup reaches) is >= target there; else what failed.
 std::optional<std::string> lower_bound_fails(const ObjectivePolys& f, const rational& target, const rational& c0, long q);
 
+/// nullopt when the objective is unbounded above on the band (b* = +inf), shown at a pole c_p:
+/// with A/B reduced by gcd(A, B) to Ar/Br, Br(c_p) = 0 (so Ar(c_p) != 0) and Br = (c - c_p)^m R,
+/// R(c_p) != 0, the objective near c_p is Ar(c_p)/((c - c_p)^m R(c_p)) to first order, so it tends
+/// to +inf as c -> c_p from the side sigma = +1 (c > c_p) or -1 (c < c_p) iff
+/// sign Ar(c_p) * sigma^m * sign R(c_p) > 0. The side must lie in the band: c_p in [cos(pi/q), 1],
+/// and c_p < 1 for sigma = +1, c_p > cos(pi/q) strictly for sigma = -1 (c_p > -1 for q = 1; for
+/// q >= 2, U_{k-1}(c_p) > 0 for every k = 1 .. q, i.e. phi_p < pi/q). Else what failed.
+std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const rational& c_p, long side, long q);
+
 /// A rational in a message: "p/q", cut at 40 characters.
 std::string shortened(const rational& x);
 

@@ -1,6 +1,7 @@
 // hapstab/check/certificate.cpp -- see certificate.hpp.
 #include "hapstab/check/certificate.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/bound_max_check.hpp"
+#include "hapstab/check/limit_cycle_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/passivity_level_mimo_check.hpp"
 #include "hapstab/check/r_check.hpp"
@@ -116,6 +118,38 @@ ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite) {
 
 std::string decimal(const rational& x) { return to_decimal(x, 12); }
 
+std::optional<bool> rounds_to(const std::string& s, const rational& x) {
+  size_t i = s.size() > 0 && s[0] == '-' ? 1 : 0;
+  const size_t d0 = i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+  if (i == d0) return std::nullopt;
+  long frac = 0;
+  if (i < s.size() && s[i] == '.') {
+    const size_t f0 = ++i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    frac = static_cast<long>(i - f0);
+    if (frac == 0) return std::nullopt;
+  }
+  long e = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    const bool neg = i < s.size() && s[i] == '-';
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+    const size_t e0 = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    if (i == e0 || i - e0 > 4) return std::nullopt;  // |e| < 10^4
+    e = std::stol(s.substr(e0, i - e0)) * (neg ? -1 : 1);
+  }
+  if (i != s.size()) return std::nullopt;
+  const auto q = try_parse_rational(s);
+  if (!q) return std::nullopt;
+  rational unit = 1;  // 10^(e - frac), the last digit's unit
+  for (long p = e - frac; p > 0; --p) unit *= 10;
+  for (long p = e - frac; p < 0; ++p) unit /= 10;
+  return 2 * abs(rational(*q - x)) <= unit;
+}
+
+
 PeriodDelay read_period_delay(const nlohmann::json& model) {
   PeriodDelay m;
   m.T = exact_field(model, "T", "model");
@@ -162,13 +196,14 @@ Verdict check_certificate(const nlohmann::json& c) {
   const std::string kind = c.at("kind").get<std::string>();
   if (kind == "bound") return check_bound(c);
   if (kind == "bound-max") return check_bound_max(c);
+  if (kind == "limit-cycle") return check_limit_cycle(c);
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "passivity-level-mimo") return check_passivity_level_mimo(c);
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

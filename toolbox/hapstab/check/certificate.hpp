@@ -4,6 +4,7 @@
 // parser); it never calls the code that produced the claim. One small checker per kind:
 //   bound   b* of paper 001 (45)/(54), any delay          check/bound_check.hpp
 //   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
+//   limit-cycle  a periodic orbit of paper 002's loop (4) check/limit_cycle_check.hpp
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   passivity-level-mimo  MIMO ISP level of A, B, C, D    check/passivity_level_mimo_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp
@@ -73,6 +74,9 @@ struct ClaimRange {
 ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite = false);
 /// x to 12 significant digits (the checkers' reasons).
 std::string decimal(const rational& x);
+/// |printed - x| <= half a unit in the last digit of `printed` (a decimal "-?D+(.D+)?(e[+-]?D+)?",
+/// |exponent| < 10^4): x rounds to the printed decimal. nullopt when `printed` is not such a decimal.
+std::optional<bool> rounds_to(const std::string& printed, const rational& x);
 /// model.T (> 0) and model.delay (an integer n in [0, 100000]); InputError naming the field.
 struct PeriodDelay {
   rational T = 1;

@@ -38,10 +38,10 @@ std::optional<std::string> at_root(const P& p1, const P& p2, const rational& lo,
 
 }  // namespace
 
-std::optional<std::string> max_positive_on(const P& p1, const P& p2, const rational& a, const rational& b) {
+std::optional<std::string> max_positive_on(const P& p1, const P& p2, const rational& a, const rational& b, bool strict) {
   auto fails = [&](const rational& x) -> std::optional<std::string> {
-    if (p1(x) > 0 || p2(x) > 0) return std::nullopt;
-    return "not > 0 at " + at(x);
+    if (strict ? (p1(x) > 0 || p2(x) > 0) : (p1(x) >= 0 || p2(x) >= 0)) return std::nullopt;
+    return (strict ? "not > 0 at " : "< 0 at ") + at(x);
   };
   for (const rational& x : {a, b})
     if (auto why = fails(x)) return why;
@@ -58,6 +58,7 @@ std::optional<std::string> max_positive_on(const P& p1, const P& p2, const ratio
     const int n = R.degree() >= 1 ? sturm_count(R, lo, hi) : 0;
     if (n == 0) continue;
     if (n == 1) {
+      if (!strict) continue;  // at the root one of them is 0: the max is >= 0 there
       if (auto why = at_root(p1, p2, lo, hi)) return why;
       continue;
     }

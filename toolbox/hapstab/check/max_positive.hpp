@@ -8,7 +8,7 @@
 //   3. at the root r in (lo, hi): when gcd(p1, p2) vanishes in (lo, hi), p1(r) = p2(r) = 0 (fails);
 //      otherwise one of them, say p1, vanishes at r and the other has no root in [lo, hi], so
 //      sign p2(r) = sign p2(lo): max(p1, p2)(r) > 0 iff p2(lo) > 0.
-// With p2 = p1 it decides p1 > 0 on [a, b].
+// With p2 = p1 it decides p1 > 0 on [a, b]. Non-strict (max >= 0): step 3 is not needed.
 #pragma once
 
 #include <optional>
@@ -20,8 +20,9 @@
 namespace hapstab::check {
 
 /// nullopt when max(p1, p2) > 0 on [a, b] (a < b), else where it is not (a point or an interval
-/// holding a root where both are <= 0).
+/// holding a root where both are <= 0). With strict = false: max(p1, p2) >= 0 on [a, b] -- at a
+/// root of p1 p2 the max is >= 0 by itself, so only the ends and the open cells are tested.
 std::optional<std::string> max_positive_on(const Polynomial<rational>& p1, const Polynomial<rational>& p2,
-                                           const rational& a, const rational& b);
+                                           const rational& a, const rational& b, bool strict = true);
 
 }  // namespace hapstab::check

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hapstab/check/bound_objective.hpp"
+#include "hapstab/check/interpolate.hpp"
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -154,16 +155,6 @@ rational charpoly_at(const Model& s, const rational& z) {
   for (size_t i = 0; i < s.n; ++i)
     for (size_t j = 0; j < s.n; ++j) M[i][j] = (i == j ? z : rational(0)) - s.A[i][j];
   return det(std::move(M));
-}
-
-/// The polynomial through (x_k, y_k), x_k distinct (Newton's divided differences).
-P interpolate(const std::vector<rational>& x, std::vector<rational> y) {
-  const size_t N = x.size();
-  for (size_t k = 1; k < N; ++k)
-    for (size_t i = N - 1; i >= k; --i) y[i] = (y[i] - y[i - 1]) / (x[i] - x[i - k]);
-  P p;
-  for (size_t i = N; i-- > 0;) p = p * P{-x[i], rational(1)} + P(y[i]);
-  return p;
 }
 
 /// d(z) = det(zI - A), degree n, from its values at z = 0..n.

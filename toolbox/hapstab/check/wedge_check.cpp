@@ -2,6 +2,8 @@
 #include "hapstab/check/wedge_check.hpp"
 
 #include <map>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -28,6 +30,89 @@ TransferFunction parse_model(const nlohmann::json& model) {
   return H;
 }
 
+// The margin mu = min over c in [-1, 1] of max(p1, p2)/D2 (D2 > 0 there): mu >= lo iff
+// max(p1 - lo D2, p2 - lo D2) >= 0 on [-1, 1] (non-strict); mu <= hi if max(p1, p2) <= hi D2 at a
+// rational witness c0 in [-1, 1]. nullopt when both hold, else what failed.
+std::optional<std::string> margin_in(const P& p1, const P& p2, const P& D2, const std::optional<rational>& lo,
+                                     const std::optional<rational>& hi, const std::optional<rational>& c0) {
+  if (lo)
+    if (auto why = max_positive_on(p1 - P(*lo) * D2, p2 - P(*lo) * D2, rational(-1), rational(1), /*strict=*/false))
+      return "min >= " + detail::decimal(*lo) + " fails: " + *why;
+  if (!hi) return std::nullopt;
+  if (*c0 < -1 || *c0 > 1) return "the witness c0 = " + c0->str() + " is outside [-1, 1]";
+  const rational d = D2(*c0), v1 = p1(*c0), v2 = p2(*c0);
+  const rational v = (v1 > v2 ? v1 : v2) / d;
+  if (v > *hi) return "min <= " + detail::decimal(*hi) + " not shown: the left side + 1 at the witness c0 = " + c0->str() + " is " + detail::decimal(v);
+  return std::nullopt;
+}
+
+// claim.<key>_margin {lo, hi, printed} and claim.<key>_gain {lo, hi, printed} or {infinite: true}
+// (k* = -1/(mu - 1): k H meets the criterion iff k (mu - 1) + 1 > 0 for every theta, so
+// k* >= lo iff mu >= 1 - 1/lo, k* <= hi iff mu <= 1 - 1/hi, k* = +inf iff mu >= 1); the witness
+// evidence.<key>_witness_c. nullopt when every claim present holds, else what failed; `shown` gets
+// what was shown.
+struct Bounds {
+  rational lo, hi;
+  bool infinite = false;
+};
+Bounds read_bounds(const nlohmann::json& claim, const std::string& field, bool may_be_infinite, std::optional<std::string>& refuted) {
+  const nlohmann::json& o = detail::object_field(claim, field, "claim");
+  Bounds b;
+  if (may_be_infinite && o.contains("infinite")) {
+    detail::only_fields(o, {"infinite"}, "claim." + field);
+    if (o.at("infinite") != true) throw InputError("claim." + field + ".infinite: not true (a finite gain has lo and hi)");
+    b.infinite = true;
+    return b;
+  }
+  detail::only_fields(o, {"lo", "hi", "printed"}, "claim." + field);
+  b.lo = detail::exact_field(o, "lo", "claim." + field);
+  b.hi = detail::exact_field(o, "hi", "claim." + field);
+  if (may_be_infinite && b.lo <= 0) throw InputError("claim." + field + ".lo: a gain k* is > 0");
+  if (b.lo > b.hi) refuted = "claim." + field + ": lo = " + b.lo.str() + " > hi = " + b.hi.str();
+  if (!refuted && o.contains("printed")) {
+    if (!o.at("printed").is_string()) throw InputError("claim." + field + ".printed: not a string");
+    const std::string t = o.at("printed").get<std::string>();
+    const auto a = detail::rounds_to(t, b.lo), c = detail::rounds_to(t, b.hi);
+    if (!a || !c) throw InputError("claim." + field + ".printed: '" + t.substr(0, 60) + "' is not a decimal");
+    if (!*a || !*c) refuted = "claim." + field + ".printed = " + t + " is not what both ends of [lo, hi] round to";
+  }
+  return b;
+}
+
+std::optional<std::string> check_margins(const nlohmann::json& claim, const nlohmann::json& evidence, const std::string& key,
+                                         const P& p1, const P& p2, const P& D2, std::string& shown) {
+  const bool has_margin = claim.contains(key + "_margin"), has_gain = claim.contains(key + "_gain");
+  std::optional<std::string> refuted;
+  std::optional<rational> c0;
+  if (evidence.contains(key + "_witness_c")) c0 = detail::exact_field(evidence, key + "_witness_c", "evidence");
+  auto witness = [&]() -> std::optional<rational> {
+    if (!c0) throw InputError("evidence." + key + "_witness_c: missing (the witness of the upper bounds)");
+    return c0;
+  };
+  if (has_margin) {
+    const Bounds m = read_bounds(claim, key + "_margin", false, refuted);
+    if (refuted) return refuted;
+    if (auto why = margin_in(p1, p2, D2, m.lo, m.hi, witness())) return "claim." + key + "_margin: " + *why;
+    shown += "; " + key + " margin in [" + detail::decimal(m.lo) + ", " + detail::decimal(m.hi) + "]";
+  }
+  if (has_gain) {
+    const Bounds g = read_bounds(claim, key + "_gain", true, refuted);
+    if (refuted) return refuted;
+    if (g.infinite) {
+      if (auto why = margin_in(p1, p2, D2, rational(1), std::nullopt, std::nullopt))
+        return "claim." + key + "_gain = +inf: " + *why + " (k* = +inf needs the left side >= 0)";
+      shown += "; " + key + " k* = +inf (left side >= 0)";
+    } else {
+      if (auto why = margin_in(p1, p2, D2, rational(1 - 1 / g.lo), rational(1 - 1 / g.hi), witness()))
+        return "claim." + key + "_gain in [" + detail::decimal(g.lo) + ", " + detail::decimal(g.hi) + "] (k* = 1/(1 - min)): " + *why;
+      shown += "; " + key + " k* in [" + detail::decimal(g.lo) + ", " + detail::decimal(g.hi) + "]";
+    }
+  }
+  if (c0 && !has_margin && !(has_gain && !claim.at(key + "_gain").contains("infinite")))
+    throw InputError("evidence." + key + "_witness_c: no claim reads it");
+  return std::nullopt;
+}
+
 bool claimed(const nlohmann::json& claim, const char* key) {
   if (!claim.contains(key) || !claim.at(key).is_boolean()) throw InputError(std::string("claim.") + key + ": missing or not true/false");
   return claim.at(key).get<bool>();
@@ -37,8 +122,10 @@ bool claimed(const nlohmann::json& claim, const char* key) {
 
 Verdict check_wedge(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
-  detail::only_fields(evidence, {}, "evidence");
-  detail::only_fields(claim, {"quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"}, "claim");
+  detail::only_fields(evidence, {"wedge_witness_c", "tsypkin_witness_c"}, "evidence");
+  detail::only_fields(claim, {"quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative",
+                              "wedge_margin", "tsypkin_margin", "wedge_gain", "tsypkin_gain"},
+                      "claim");
   if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
   const TransferFunction H = parse_model(model);
   const P &N = H.num(), &D = H.den();
@@ -72,6 +159,8 @@ Verdict check_wedge(const nlohmann::json& cert) {
       return {false, std::string("claim.") + key + " = " + (fact.first ? "false" : "true") + ", but " + fact.second};
     shown += (shown.empty() ? "" : "; ") + fact.second;
   }
+  if (auto why = check_margins(claim, evidence, "wedge", Pp, Pm, D2, shown)) return {false, *why};
+  if (auto why = check_margins(claim, evidence, "tsypkin", S, S, D2, shown)) return {false, *why};
   return {true, shown};
 }
 

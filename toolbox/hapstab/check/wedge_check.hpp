@@ -16,8 +16,18 @@
 // Hypotheses verified: H causal (deg N <= deg D), no pole of H on the unit circle (|D|^2 has no
 // root in [-1, 1]: else the criteria are not evaluated and the certificate is refused, exit 2).
 // Claims checked: claim.wedge, claim.tsypkin, claim.h_stable, claim.closed_loop_stable,
-// claim.dc_gain_nonnegative (all booleans; status "exact"). Not claimed: the margins and
-// largest gains the command prints (certified enclosures; no certificate for them yet).
+// claim.dc_gain_nonnegative (all booleans; status "exact"); and, when present, the margins and
+// largest gains the command prints, for each criterion (<key> = wedge, tsypkin):
+//   claim.<key>_margin {lo, hi, printed}: mu = min over theta of the left side + 1, i.e. the min over
+//     c in [-1, 1] of max(P+, P-)/|D|^2 (Tsypkin: S/|D|^2), lies in [lo, hi]:
+//       mu >= lo  iff max(P+ - lo |D|^2, P- - lo |D|^2) >= 0 on [-1, 1] (max_positive_on, non-strict);
+//       mu <= hi  if  max(P+, P-) <= hi |D|^2 at the rational witness c0 = evidence.<key>_witness_c;
+//   claim.<key>_gain {lo, hi, printed} or {infinite: true}: k* = sup{k > 0 : k H meets the criterion}.
+//     The left side of k H is k times that of H, so k H meets it iff k (mu - 1) + 1 > 0, and
+//     k* = 1/(1 - mu) when mu < 1, +inf when mu >= 1: k* >= lo iff mu >= 1 - 1/lo, k* <= hi iff
+//     mu <= 1 - 1/hi (the same two tests), +inf iff max(P+ - |D|^2, P- - |D|^2) >= 0;
+//   printed (the decimal the command printed, its shared digits): both lo and hi round to it
+//     (within half a unit of its last digit), so the value does too.
 // Implements: paper 002 (21), (25), Sec. 2.
 #pragma once
 

@@ -409,13 +409,15 @@ ExactOrbit certify_orbit(const LureLoop& L, const std::vector<double>& s_on_orbi
   }
   e.found = true;
   e.amplitude = (ymax - ymin) / 2;
-  // exact local stability of the orbit: monodromy matrix M Schur stable (generic case: no
-  // sample exactly on the switching boundary y = -rho)
+  // exact local stability of the orbit: monodromy matrix M Schur stable, decided when no sample
+  // lies exactly on the switching boundary y = -rho (then every mode is locally constant)
   Mat<rational> Mm(n, n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) Mm(i, j) = M[i][j];
   e.stable = schur_stable(charpoly(Mm));
-  e.stability_decided = true;
+  // a sample on y = -rho: the period map is only piecewise affine near the orbit, and M alone
+  // does not decide whether it attracts
+  e.stability_decided = std::none_of(e.y.begin(), e.y.end(), [&](const Q& y) { return y == -L.rho; });
   return e;
 }
 

@@ -94,7 +94,7 @@ struct ExactOrbit {
   bool found = false;          ///< an exact periodic solution of (4) with period p exists
   long period = 0;
   bool stable = false;         ///< monodromy matrix Schur stable (exact), i.e. the orbit attracts
-  bool stability_decided = false;
+  bool stability_decided = false;  ///< no sample on y = -rho (else `stable` does not decide attraction)
   rational amplitude;          ///< (max - min)/2 of y over the exact orbit
   std::vector<rational> y;     ///< one period of y, exact
   int free_steps = 0;          ///< samples per period out of contact (y < -rho)

@@ -376,6 +376,8 @@ CriterionReport run_criterion(const std::string& name, const std::vector<RatFun>
     r.margin = Certified<rational>::certified_value(mid, mm.value, "exact root isolation + Arb ball enclosure");
   if (!mm.decided) r.margin.note = "enclosure too wide to decide every requested digit";
   r.theta_at_min = mm.at_infinity ? M_PI : theta_of_u((mm.u.lo + mm.u.hi) / 2);
+  r.min_at_pi = mm.at_infinity;
+  if (!mm.at_infinity) r.u_at_min = mm.u;
   r.gain_infinite = max_positive(sides, false);
   if (!r.gain_infinite) {
     // g = margin - 1 < 0 (exact); k* = -1/g

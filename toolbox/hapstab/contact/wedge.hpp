@@ -92,6 +92,8 @@ struct CriterionReport {
   bool evaluated() const { return verdict.decided(); }
   Certified<rational> margin;          ///< min over theta of left side + 1 (certified enclosure)
   double theta_at_min = 0;          ///< radians (numeric, from the certified enclosure of u*)
+  Enclosure<rational> u_at_min;     ///< the certified enclosure of u* = tan^2(theta*/2) (unset at theta = pi)
+  bool min_at_pi = false;           ///< the minimum is at theta = pi (u -> inf)
   bool gain_infinite = false;       ///< exact: k*H satisfies the criterion for every k > 0
   Certified<rational> max_gain;        ///< k* when finite (certified enclosure)
 };
