@@ -1610,7 +1610,8 @@ def max_positive(p1, p2, a, b, strict=True):
     p1 p2 in (a, b) are isolated by bisection (Sturm); p1, p2 keep their signs between them, so
     the isolating intervals' ends test every cell; at a root, gcd(p1, p2) vanishing there means
     both are 0, else one is 0 and the other has the sign it has at the interval's end. strict=False:
-    max(p1, p2) >= 0 (at a root one of them is 0, so only the cells and the ends are tested)."""
+    max(p1, p2) >= 0 (at a root one of them is 0, so only the open cells are tested, each at a point
+    inside it: an end of [a, b] that is a root stands for no cell)."""
     def fails(x):
         v1, v2 = peval(p1, x), peval(p2, x)
         if (v1 > 0 or v2 > 0) if strict else (v1 >= 0 or v2 >= 0):
@@ -1619,12 +1620,14 @@ def max_positive(p1, p2, a, b, strict=True):
     for x in (a, b):
         if fails(x):
             return fails(x)
+    if not strict and (not p1 or not p2):
+        return None  # max(0, p) >= 0
     R = sqfree(p2 if not p1 else p1 if not p2 else pmul(p1, p2))
     for e in (a, b):
         while len(R) > 1 and peval(R, e) == 0:
             R = pdivmod(R, [-e, Fraction(1)])[0]
     if len(R) < 2:
-        return None
+        return None if strict else fails((a + b) / 2)  # one sign on (a, b): an end that is a root stands for none
     g = pgcd(p1, p2) if p1 and p2 else []
     stack = [(a, b)]
     while stack:
@@ -1633,11 +1636,15 @@ def max_positive(p1, p2, a, b, strict=True):
             if fails(x):
                 return fails(x)
         n = roots_in(R, lo, hi)
+        # non-strict: an end that is a root of p1 p2 passes by itself and stands for no cell, so
+        # every cell is sampled inside it (a piece without roots at its midpoint)
         if n == 0:
+            if not strict and fails((lo + hi) / 2):
+                return fails((lo + hi) / 2)
             continue
-        if n == 1 and not strict:
+        if n == 1 and not strict and peval(p1, lo) * peval(p2, lo) != 0 and peval(p1, hi) * peval(p2, hi) != 0:
             continue
-        if n == 1:
+        if n == 1 and strict:
             where = "a root in (%.12g, %.12g)" % (float(lo), float(hi))
             if not p1 or not p2:
                 return "max = 0 at " + where

@@ -1256,7 +1256,7 @@ def rand_limit_cycle(rng):
     """A limit-cycle model: H of LC_TEMPLATES, a gain k in [0.6, 4], rho 1 or random."""
     H, names = rng.choice(LC_TEMPLATES)
     sets = {}
-    for n in names:
+    for n in sorted(names, key=lambda x: x != "c"):  # c first: b is drawn against it
         if n == "c":
             sets[n] = frac(Fraction(rng.randint(30, 95), 100))
         elif n == "b":
@@ -1378,6 +1378,19 @@ KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "
          "bound-inf", "limit-cycle")
 
 
+def bound_produce(hapstab, m, digits, path, label, certs, skipped):
+    """`bound`'s certificate of model m appended to certs as bound, bound-frac or bound-inf (b* =
+    +inf), or the producer's refusal counted in skipped under `label`."""
+    rc, _, err = run(hapstab, bound_args(m, digits) + ["--certificate", path])
+    if rc != 0:
+        why = label + ": " + err.strip().split("error: ", 1)[-1].split(" (")[0][:70]
+        skipped[why] = skipped.get(why, 0) + 1
+        return
+    with open(path) as f:
+        cert = json.load(f)
+    certs.append(("bound-inf" if cert["claim"].get("infinite") else "bound" if "frac_delay" not in m else "bound-frac", cert))
+
+
 def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lrng):
     """The certificates of random models of each kind asked for, [(kind, certificate)], and the
     producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng),
@@ -1387,16 +1400,7 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
     for i in range(a.models if "bound" in kinds else 0):
         m = rand_frac_model(rng) if i % 2 else rand_model(rng)
         path = os.path.join(tmp, "b%d.json" % i)
-        digits = rng.choice([10, 15, 20, 30])
-        rc, out, err = run(a.hapstab, bound_args(m, digits) + ["--certificate", path])
-        if rc != 0:
-            why = err.strip().split("error: ", 1)[-1]
-            why = ("bound-frac: " if "frac_delay" in m else "bound: ") + why.split(" (")[0][:70]
-            skipped[why] = skipped.get(why, 0) + 1
-            continue
-        with open(path) as f:
-            cert = json.load(f)
-        certs.append(("bound-inf" if cert["claim"].get("infinite") else "bound" if "frac_delay" not in m else "bound-frac", cert))
+        bound_produce(a.hapstab, m, rng.choice([10, 15, 20, 30]), path, "bound-frac" if "frac_delay" in m else "bound", certs, skipped)
     for i in range(max(a.models // 4, 2) if "r" in kinds else 0):
         T, w = rand_r(rng)
         path = os.path.join(tmp, "r%d.json" % i)
@@ -1455,14 +1459,7 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
     for i in range(max(a.models // 2, 2) if "bound-inf" in kinds else 0):
         m = rand_inf_model(irng)
         path = os.path.join(tmp, "i%d.json" % i)
-        rc, out, err = run(a.hapstab, bound_args(m, 20) + ["--certificate", path])
-        if rc != 0:
-            why = "bound-inf: " + err.strip().split("error: ", 1)[-1].split(" (")[0][:70]
-            skipped[why] = skipped.get(why, 0) + 1
-            continue
-        with open(path) as f:
-            cert = json.load(f)
-        certs.append(("bound-inf" if cert["claim"].get("infinite") else "bound" if "frac_delay" not in m else "bound-frac", cert))
+        bound_produce(a.hapstab, m, 20, path, "bound-inf", certs, skipped)
     for i in range(max(a.models // 2, 2) if "limit-cycle" in kinds else 0):
         cert = lc_produce(a.hapstab, rand_limit_cycle(lrng), scache, tmp)
         if not isinstance(cert, dict):

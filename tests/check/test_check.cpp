@@ -645,6 +645,14 @@ TEST(MaxPositive, KnownSigns) {
   // both <= 0 on [1/2, 1/sqrt(3)] (an end irrational)
   EXPECT_TRUE(max_positive_on(x * x - rational(1, 3), rational(1, 2) - x, m1, p1));
   EXPECT_TRUE(max_positive_on(P(), P(), m1, p1));
+  // non-strict (max >= 0): an end where both vanish passes by itself but stands for no cell -- the
+  // first mutation campaign of the wedge's gains found this accepted: -(1 + c) < 0 inside
+  const P v = -(x + p1);
+  EXPECT_TRUE(max_positive_on(v, v, m1, p1, false));
+  EXPECT_TRUE(max_positive_on(v * (x - rational(1, 2)), v, m1, p1, false));
+  EXPECT_FALSE(max_positive_on(-v, -v, m1, p1, false));             // 1 + c >= 0
+  EXPECT_FALSE(max_positive_on(x * x, -x * x, m1, p1, false));      // >= 0 with a double root
+  EXPECT_TRUE(max_positive_on(x, -x - rational(1, 2), m1, p1, false));  // both < 0 on (-1/2, 0)
 }
 
 nlohmann::json wedge_cert(const std::string& H, const std::string& K, std::vector<bool> claims) {

@@ -355,6 +355,15 @@ class Wedge(unittest.TestCase):
         self.assertIsNone(hc.max_positive([F(1), F(1)], [F(1), F(-1)], F(-1), F(1)))      # 1 + |c|
         self.assertIsNotNone(hc.max_positive([F(-1, 4), F(0), F(1)], [F(-1, 4), F(0), F(1)], F(-1), F(1)))
 
+    def test_max_nonnegative(self):
+        # max >= 0: an end where both vanish stands for no cell (the wedge gains' first campaign)
+        F = Fraction
+        v = [F(-1), F(-1)]  # -(1 + c)
+        self.assertIsNotNone(hc.max_positive(v, v, F(-1), F(1), strict=False))
+        self.assertIsNone(hc.max_positive([F(1), F(1)], [F(1), F(1)], F(-1), F(1), strict=False))
+        self.assertIsNone(hc.max_positive([F(0), F(0), F(1)], [F(0), F(0), F(-1)], F(-1), F(1), strict=False))
+        self.assertIsNotNone(hc.max_positive([F(0), F(1)], [F(-1, 2), F(-1)], F(-1), F(1), strict=False))
+
     def test_refuses_a_pole_on_the_circle(self):
         code, why = hc.check(wedge_cert("K/(z - 1)", "1", (True, True, True, True, True)))
         self.assertEqual(code, 2)

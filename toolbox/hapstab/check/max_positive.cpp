@@ -45,8 +45,13 @@ std::optional<std::string> max_positive_on(const P& p1, const P& p2, const ratio
   };
   for (const rational& x : {a, b})
     if (auto why = fails(x)) return why;
+  if (!strict && (p1.is_zero() || p2.is_zero())) return std::nullopt;  // max(0, p) >= 0
   P R = squarefree(p1.is_zero() ? p2 : p2.is_zero() ? p1 : p1 * p2);
-  if (R.is_zero() || R.degree() < 1) return std::nullopt;  // no root: one sign on [a, b], tested at a
+  if (R.is_zero() || R.degree() < 1) {  // no root: one sign on [a, b], tested at a (and inside it)
+    if (!strict)
+      if (auto why = fails((a + b) / 2)) return why;
+    return std::nullopt;
+  }
   for (const rational& e : {a, b})  // roots at the ends were tested above
     while (R.degree() >= 1 && R(e) == 0) R = divmod(R, P{-e, rational(1)}).first;
   std::vector<std::pair<rational, rational>> todo{{a, b}};
@@ -56,9 +61,17 @@ std::optional<std::string> max_positive_on(const P& p1, const P& p2, const ratio
     for (const rational& x : {lo, hi})
       if (auto why = fails(x)) return why;
     const int n = R.degree() >= 1 ? sturm_count(R, lo, hi) : 0;
-    if (n == 0) continue;
-    if (n == 1) {
-      if (!strict) continue;  // at the root one of them is 0: the max is >= 0 there
+    // non-strict: an end that is a root of p1 p2 (a or b) passes by itself and stands for no cell,
+    // so a cell is sampled inside it: at the midpoint of a piece without roots, at lo and hi of a
+    // piece with one root only when neither is a root of p1 p2 (else the piece is split)
+    const bool ends_are_samples = p1(lo) * p2(lo) != 0 && p1(hi) * p2(hi) != 0;
+    if (n == 0) {
+      if (!strict)
+        if (auto why = fails((lo + hi) / 2)) return why;
+      continue;
+    }
+    if (n == 1 && !strict && ends_are_samples) continue;  // at the root one of them is 0: the max is >= 0 there
+    if (n == 1 && strict) {
       if (auto why = at_root(p1, p2, lo, hi)) return why;
       continue;
     }

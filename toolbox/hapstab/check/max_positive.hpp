@@ -21,7 +21,8 @@ namespace hapstab::check {
 
 /// nullopt when max(p1, p2) > 0 on [a, b] (a < b), else where it is not (a point or an interval
 /// holding a root where both are <= 0). With strict = false: max(p1, p2) >= 0 on [a, b] -- at a
-/// root of p1 p2 the max is >= 0 by itself, so only the ends and the open cells are tested.
+/// root of p1 p2 the max is >= 0 by itself, so only the open cells between roots are tested, each
+/// at a point inside it (an end of [a, b] that is a root stands for no cell).
 std::optional<std::string> max_positive_on(const Polynomial<rational>& p1, const Polynomial<rational>& p2,
                                            const rational& a, const rational& b, bool strict = true);
 
