@@ -1461,7 +1461,10 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
         path = os.path.join(tmp, "i%d.json" % i)
         bound_produce(a.hapstab, m, 20, path, "bound-inf", certs, skipped)
     for i in range(max(a.models // 2, 2) if "limit-cycle" in kinds else 0):
-        cert = lc_produce(a.hapstab, rand_limit_cycle(lrng), scache, tmp)
+        for _ in range(6):  # most random loops decay or diverge: up to six draws for one proven orbit
+            cert = lc_produce(a.hapstab, rand_limit_cycle(lrng), scache, tmp)
+            if isinstance(cert, dict):
+                break
         if not isinstance(cert, dict):
             skipped["limit-cycle: exit %s" % cert] = skipped.get("limit-cycle: exit %s" % cert, 0) + 1
             continue
@@ -1469,8 +1472,35 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
     return certs, skipped
 
 
+def print_new_branches(certs):
+    """The branches of the limit-cycle and bound-inf checkers the campaign reached."""
+    lcs = [c for k, c in certs if k == "limit-cycle"]
+    if lcs:
+        periods = sorted(c["claim"]["period"] for c in lcs)
+        print("  limit-cycle branches: attracting %d, not attracting %d, undecided (a sample on y = -rho) %d; order %s; "
+              "periods %d..%d (median %d); with free samples %d; rho != 1 %d" % (
+                  sum(1 for c in lcs if c["claim"].get("attracting") is True), sum(1 for c in lcs if c["claim"].get("attracting") is False),
+                  sum(1 for c in lcs if "attracting" not in c["claim"]), sorted({len(c["evidence"]["y"]) for c in lcs}),
+                  periods[0], periods[-1], periods[len(periods) // 2], sum(1 for c in lcs if c["claim"]["free_steps"] > 0),
+                  sum(1 for c in lcs if c["model"]["rho"] != "1")))
+    infs = [c for k, c in certs if k == "bound-inf"]
+    if infs:
+        print("  bound-inf branches: integer delay %d, fractional %d; side +1 %d, -1 %d; pole at c = 1 %d, 0 %d, other %d" % (
+            sum(1 for c in infs if "frac_delay" not in c["model"]), sum(1 for c in infs if "frac_delay" in c["model"]),
+            sum(1 for c in infs if c["evidence"]["side"] == 1), sum(1 for c in infs if c["evidence"]["side"] == -1),
+            sum(1 for c in infs if c["evidence"]["pole_c"] == "1"), sum(1 for c in infs if c["evidence"]["pole_c"] == "0"),
+            sum(1 for c in infs if c["evidence"]["pole_c"] not in ("0", "1"))))
+    wedges = [c for k, c in certs if k == "wedge"]
+    if wedges:
+        print("  wedge branches: k* +inf %d, finite %d, numeric (not claimed) %d (of both criteria)" % (
+            sum(1 for c in wedges for k in ("wedge_gain", "tsypkin_gain") if "infinite" in c["claim"].get(k, {})),
+            sum(1 for c in wedges for k in ("wedge_gain", "tsypkin_gain") if "lo" in c["claim"].get(k, {})),
+            sum(1 for c in wedges for k in ("wedge_gain", "tsypkin_gain") if k not in c["claim"])))
+
+
 def print_branches(certs, mutants, cpp):
     """The branches of the checkers the campaign reached (fractional delays, bound-max, stability-max)."""
+    print_new_branches(certs)
     frac_certs = [c for k, c in certs if k == "bound-frac"]
     if frac_certs:  # the branches of a fractional delay that the campaign reached
         qs = [(c["model"]["delay"] + Fraction(c["model"]["frac_delay"]) / Fraction(c["model"]["T"])).denominator for c in frac_certs]
