@@ -1,7 +1,6 @@
 // hapstab/check/limit_cycle_check.cpp -- see limit_cycle_check.hpp.
 #include "hapstab/check/limit_cycle_check.hpp"
 
-#include <cctype>
 #include <optional>
 #include <string>
 #include <vector>
@@ -171,7 +170,9 @@ Verdict check_limit_cycle(const nlohmann::json& cert) {
     on_boundary = on_boundary || y[i] == -L.rho;
   }
   const rational amp = (hi - lo) / 2;
-  if (amplitude != amp) return {false, "claim.amplitude = " + amplitude.str() + " is not (max - min)/2 of y over the orbit, " + amp.str()};
+  if (amplitude != amp)
+    return {false, "claim.amplitude = " + detail::decimal(amplitude) + " is not (max - min)/2 of y over the orbit, " +
+                       detail::decimal(amp) + " (max " + detail::decimal(hi) + ", min " + detail::decimal(lo) + ")"};
   if (!*rounded)
     return {false, "claim.printed_amplitude = " + printed + " is not the amplitude " + detail::decimal(amp) + " rounded"};
   if (free != free_claimed)
