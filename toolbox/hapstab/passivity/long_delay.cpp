@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/dinterval.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/jet.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
@@ -116,12 +117,10 @@ struct Form {
   }
 };
 
-/// f, f', f'' at theta (a point, or every point of a ball).
+/// f, f', f'' at theta (a point, or every point of a ball or interval), given sin and cos of
+/// theta/2 and of nu theta there.
 template <class S>
-Jet<S> objective_jet(const Form<S>& F, const S& theta) {
-  S sh, ch, snu, cnu;
-  jet::sin_cos(theta * S(0.5), sh, ch);
-  jet::sin_cos(F.nu * theta, snu, cnu);
+Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch, const S& snu, const S& cnu) {
   const S s1 = S(2.0) * (sh * ch), c1 = S(1.0) - S(2.0) * (sh * sh);
   const Jet<S> th = jet::variable(theta);
   const Jet<S> c{c1, -s1, -c1};
@@ -139,6 +138,57 @@ Jet<S> objective_jet(const Form<S>& F, const S& theta) {
   out.v = out.v + F.eta;
   return out;
 }
+template <class S>
+Jet<S> objective_jet(const Form<S>& F, const S& theta) {
+  S sh, ch, snu, cnu;
+  jet::sin_cos(theta * S(0.5), sh, ch);
+  jet::sin_cos(F.nu * theta, snu, cnu);
+  return objective_jet(F, theta, sh, ch, snu, cnu);
+}
+
+// ---- the objective in double intervals on the branch-and-bound's grid ------------------------
+/// f, f', f'' enclosed in double intervals (numeric/dinterval.hpp) at theta = pi k/D or over
+/// [pi (k - 1)/D, pi (k + 1)/D], for the grid points of the search (D = M 2^level): sin and cos
+/// of theta/2 = pi k/(2D) and of nu theta = pi p k/(q D) (nu = p/q) by sin_cos_pi's exact integer
+/// reduction, so no bit of nu theta is lost however large nu is; over a box they are widened by
+/// their Lipschitz bounds 1/2 and nu times the half-width pi/D. Unavailable (ok() false) when
+/// p, q or the products do not fit 128 bits.
+class DoubleGrid {
+ public:
+  explicit DoubleGrid(const DelayForm& df) : F_(df) {
+    const integer p = num(df.nu), q = den(df.nu), limit = integer(1) << 100;
+    ok_ = p < limit && q < limit;
+    if (ok_) p_ = to_i128(p), q_ = to_i128(q);
+  }
+  bool ok() const { return ok_; }
+  /// false when the integers overflow (the caller takes Arb)
+  bool eval(__int128 k, __int128 D, bool box, Jet<Dint>& out) const {
+    __int128 pk = 0, qD = 0;
+    if (!ok_ || __builtin_mul_overflow(p_, k, &pk) || __builtin_mul_overflow(q_, D, &qD)) return false;
+    Dint sh, ch, snu, cnu;
+    if (!sin_cos_pi(k, 2 * D, sh, ch) || !sin_cos_pi(pk, qD, snu, cnu)) return false;
+    const Dint pi = dint_pi(), inv = Dint(1.0) / Dint::from_i128(D);
+    Dint theta = Dint::from_i128(k) * inv * pi;
+    if (box) {
+      const double r = (inv * pi).hi, rn = (F_.nu * Dint(r)).hi;
+      theta = theta.widened(r).clamp(0, pi.hi);
+      sh = sh.widened(r / 2).clamp(-1, 1), ch = ch.widened(r / 2).clamp(-1, 1);
+      snu = snu.widened(rn).clamp(-1, 1), cnu = cnu.widened(rn).clamp(-1, 1);
+    }
+    out = objective_jet(F_, theta, sh, ch, snu, cnu);
+    return true;
+  }
+  const Form<Dint>& form() const { return F_; }
+
+ private:
+  static __int128 to_i128(const integer& x) {  // 0 <= x < 2^100
+    const integer hi = x >> 64, lo = x - (hi << 64);
+    return (static_cast<__int128>(hi.convert_to<unsigned long long>()) << 64) | lo.convert_to<unsigned long long>();
+  }
+  Form<Dint> F_;
+  bool ok_ = false;
+  __int128 p_ = 0, q_ = 1;
+};
 
 // ---- the double scan: where the maximum is, in double (the fast path, and the certified path's
 // first lower bound) ---------------------------------------------------------------------------
@@ -240,7 +290,8 @@ struct Piece {  // theta in [pi i / (M 2^level), pi (i + 1) / (M 2^level)]
 class Maximiser {
  public:
   enum class Where { zero, pi, interior };
-  Maximiser(const DelayForm& df, long boxes, int digits) : df_(df), F_(df), M_(boxes) {
+  Maximiser(const DelayForm& df, long boxes, int digits, bool use_double)
+      : df_(df), F_(df), dbl_(df), use_double_(use_double && dbl_.ok()), M_(boxes) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
     budget_ = 200 * M_ + 200000;
@@ -287,6 +338,8 @@ class Maximiser {
   const Ball& best_at() const { return best_at_; }
   Where best_where() const { return best_where_; }
   long evaluations() const { return evals_; }
+  long double_evaluations() const { return double_evals_; }
+  long double_pruned() const { return double_pruned_; }
   long unresolved() const { return unresolved_; }  // pieces settled by tolerance, depth or budget
 
  private:
@@ -301,7 +354,10 @@ class Maximiser {
     return objective_jet(F_, th);
   }
   void raise(const Ball& lo) {
-    if (less(L_, lo)) L_ = lo;
+    if (less(L_, lo)) {
+      L_ = lo;
+      Ld_ = arf_get_d(arb_midref(L_.get()), ARF_RND_FLOOR);  // L_ is exact (an end): Ld_ <= L_
+    }
   }
   void best(const Ball& u, const Ball& at, Where where) {
     if (less(best_hi_, u)) best_hi_ = u, best_at_ = at, best_where_ = where;
@@ -333,7 +389,49 @@ class Maximiser {
     add_candidate(eval(th).v, th);
   }
 
+  /// The piece decided in double intervals when that suffices: its upper bound below the best
+  /// proven value (by the natural enclosure, the Taylor form at its midpoint, or, where f is
+  /// monotone, the value at the higher end). false: the piece needs the Arb process below.
+  bool pruned_in_double(const Piece& p) {
+    const long last = M_ << p.level;
+    const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
+    const __int128 D = static_cast<__int128>(M_) << (p.level + 1), k = 2 * static_cast<__int128>(p.i) + 1;
+    Jet<Dint> J, Jm;
+    ++double_evals_;
+    if (!dbl_.eval(k, D, true, J)) return false;
+    const double w = (Dint(2.0) * dint_pi() / Dint::from_i128(D)).hi;  // the box's width, rounded up
+    const Dint w2 = Dint(w) * Dint(w) * Dint(0.5);
+    if (at_zero || at_pi) {  // as in process(): f <= f(end) + max(f'', 0) w^2/2
+      if (!(J.dd.hi > 0)) return true;
+      const Dint end = Dint::from_rational(at_zero ? df_.at_zero : *df_.at_pi);
+      return (end + Dint(J.dd.hi) * w2).hi < Ld_;
+    }
+    if (J.v.hi < Ld_) return true;
+    ++double_evals_;
+    if (!dbl_.eval(k, D, false, Jm)) return false;
+    if (Jm.v.lo > Ld_) raise(Ball(Jm.v.lo));  // a proven value of f at the midpoint
+    // sup over |t| <= w/2 of f'(m) t + max(f'', 0) t^2/2, or the concave form (taylor_increment)
+    const Dint r(w / 2), D1(Jm.d.abs_upper()), M(J.dd.hi);
+    Dint inc = D1 * r + Dint(std::max(J.dd.hi, 0.0)) * r * r * Dint(0.5);
+    if (M.hi < 0) {
+      const Dint t = D1 / (-M);
+      if (t.hi <= r.lo) inc = D1 * D1 / (-(M * 2L));
+    }
+    if ((Jm.v + inc).hi < Ld_) return true;
+    if (J.d.positive() || J.d.negative()) {  // monotone: the maximum at one end
+      Jet<Dint> Je;
+      const __int128 ke = J.d.positive() ? k + 1 : k - 1;
+      ++double_evals_;
+      if (dbl_.eval(ke, D, false, Je) && Je.v.hi < Ld_) return true;
+    }
+    return false;
+  }
+
   void process(const Piece& p, std::vector<Piece>& stack) {
+    if (use_double_ && pruned_in_double(p)) {
+      ++double_pruned_;
+      return;
+    }
     const long last = M_ << p.level;
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
     const Ball a = theta(p.i, p.level), b = theta(p.i + 1, p.level);
@@ -407,6 +505,10 @@ class Maximiser {
 
   const DelayForm& df_;
   Form<Ball> F_;
+  DoubleGrid dbl_;
+  bool use_double_;
+  double Ld_ = -std::numeric_limits<double>::infinity();  // a double <= L_
+  long double_evals_ = 0, double_pruned_ = 0;
   long M_;
   int max_level_ = 56;
   long budget_ = 0;
@@ -418,6 +520,18 @@ class Maximiser {
 
 }  // namespace
 
+std::optional<std::array<Dint, 3>> delay_objective_double(const DelayForm& f, __int128 k, __int128 D, bool box) {
+  const DoubleGrid grid(f);
+  Jet<Dint> j;
+  if (!grid.eval(k, D, box, j)) return std::nullopt;
+  return std::array<Dint, 3>{j.v, j.d, j.dd};
+}
+
+std::array<Ball, 3> delay_objective_ball(const DelayForm& f, const Ball& theta) {
+  const Jet<Ball> j = objective_jet(Form<Ball>(f), theta);
+  return {j.v, j.d, j.dd};
+}
+
 // ---- the drivers ----------------------------------------------------------------------------
 long grid_boxes(const rational& nu) {
   // four boxes per period 2 pi/nu of the kernels over [0, pi] (period / 8 wide), at least 64
@@ -425,7 +539,7 @@ long grid_boxes(const rational& nu) {
   return 4 * up.convert_to<long>() + 64;
 }
 
-Bound certified_long_delay(const BoundProblem& p, int digits) {
+Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning) {
   std::string why;
   const std::optional<DelayForm> df = delay_form(p, &why);
   if (!df) {
@@ -454,7 +568,7 @@ Bound certified_long_delay(const BoundProblem& p, int digits) {
   long bits = std::max<long>(128, static_cast<long>(3.33 * (digits + lognu)) + 12);
   for (int attempt = 0;; ++attempt, bits *= 2) {
     flint::BallPrecision scope(bits);
-    Maximiser mx(*df, boxes, digits);
+    Maximiser mx(*df, boxes, digits, double_pruning);
     const bool complete = mx.run();
     if (!mx.hi().finite()) {
       if (attempt < 2) continue;
@@ -490,9 +604,14 @@ Bound certified_long_delay(const BoundProblem& p, int digits) {
       out.omega = enclosure_decimal(out.omega_enclosure->lo, out.omega_enclosure->hi, std::min(digits, 17));
       out.where = at_pi ? "w = pi/T" : "interior";
     }
-    out.method = "certified: long-delay branch-and-bound over w in Arb balls (nu = " + to_decimal(df->nu, 12) +
-                 " samples, never expanded: " + std::to_string(boxes) + " boxes, " + std::to_string(mx.evaluations()) +
-                 " evaluations of f, f', f'', interval Newton; " + std::to_string(bits) + " bits)";
+    const std::string pruning = mx.double_evaluations() > 0
+                                    ? std::to_string(mx.double_pruned()) + " pieces pruned in double intervals (" +
+                                          std::to_string(mx.double_evaluations()) + " evaluations), "
+                                    : std::string();
+    out.method = "certified: long-delay branch-and-bound over w in double intervals with rounding bounds and Arb balls (nu = " +
+                 to_decimal(df->nu, 12) + " samples, never expanded: " + std::to_string(boxes) + " boxes, " + pruning +
+                 std::to_string(mx.evaluations()) + " evaluations of f, f', f'' in Arb, interval Newton; " +
+                 std::to_string(bits) + " bits)";
     // pieces left unresolved (settled within the tolerance, out of depth or of budget) keep their
     // upper bounds in H, so the enclosure and the status hold either way; a wide one says why
     if (!narrow) out.note += std::string(out.note.empty() ? "" : "; ") + "the enclosure is wider than " +
