@@ -144,7 +144,7 @@ TEST(Dint, TheConstantsOfTheBoundsHold) {
 }
 
 TEST(Dint, AtanAndArgContainArb) {
-  flint::BallPrecision scope(128);
+  flint::BallPrecision scope(256);
   std::mt19937_64 g(480);
   for (int i = 0; i < 2000; ++i) {
     // moderate magnitudes for arg (its quotient of parts overflows beyond, then it decides nothing)
@@ -153,7 +153,7 @@ TEST(Dint, AtanAndArgContainArb) {
     const double x = draw(), y = draw();
     const Dint a = atan(Dint(x));
     Ball b;
-    arb_atan(b.get(), Ball(x).get(), 128);
+    arb_atan(b.get(), Ball(x).get(), 256);
     EXPECT_TRUE(contains_ball(a, b)) << "atan " << x;
     EXPECT_LT(a.hi - a.lo, 1e-14 * std::max(1.0, std::abs(x)));
     const Dint arg_d = arg(CDint{Dint(x), Dint(y)});

@@ -14,8 +14,10 @@
 // lies inside, with room (3u|r|) for the rounding of the widening itself. With a fused
 // multiply-add (fp-contraction of x * y + w) r is replaced by the exact x y in the same chain of
 // inequalities and the bound still holds: nothing here depends on how the compiler contracts.
-// Products and quotients of intervals take the four end products; since r -> r - 3u|r| is
-// increasing, widening the smallest of them downward (the largest upward) covers every one.
+// Products and quotients of intervals take the end products that are the least and the greatest
+// (by the ends' signs; all four when both intervals hold 0, and for quotients); since
+// r -> r - 3u|r| is increasing, widening the smallest of them downward (the largest upward)
+// covers every one.
 // Overflow, an infinite or NaN end, or a quotient by an interval that holds 0 gives the whole
 // line [-inf, +inf], which decides nothing (the caller then takes Arb).
 //
@@ -103,6 +105,19 @@ struct Dint {
 inline Dint operator+(const Dint& a, const Dint& b) { return Dint::rounded(a.lo + b.lo, a.hi + b.hi); }
 inline Dint operator-(const Dint& a, const Dint& b) { return Dint::rounded(a.lo - b.hi, a.hi - b.lo); }
 inline Dint operator*(const Dint& a, const Dint& b) {
+  // by the signs of the ends: the two end products that are the least and the greatest
+  if (a.lo >= 0) {
+    if (b.lo >= 0) return Dint::rounded(a.lo * b.lo, a.hi * b.hi);
+    if (b.hi <= 0) return Dint::rounded(a.hi * b.lo, a.lo * b.hi);
+    return Dint::rounded(a.hi * b.lo, a.hi * b.hi);
+  }
+  if (a.hi <= 0) {
+    if (b.lo >= 0) return Dint::rounded(a.lo * b.hi, a.hi * b.lo);
+    if (b.hi <= 0) return Dint::rounded(a.hi * b.hi, a.lo * b.lo);
+    return Dint::rounded(a.lo * b.hi, a.lo * b.lo);
+  }
+  if (b.lo >= 0) return Dint::rounded(a.lo * b.hi, a.hi * b.hi);
+  if (b.hi <= 0) return Dint::rounded(a.hi * b.lo, a.lo * b.lo);
   const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
   return Dint::rounded(std::min(std::min(p1, p2), std::min(p3, p4)), std::max(std::max(p1, p2), std::max(p3, p4)));
 }

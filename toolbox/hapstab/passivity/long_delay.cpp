@@ -290,8 +290,12 @@ struct Piece {  // theta in [pi i / (M 2^level), pi (i + 1) / (M 2^level)]
 class Maximiser {
  public:
   enum class Where { zero, pi, interior };
-  Maximiser(const DelayForm& df, long boxes, int digits, bool use_double)
-      : df_(df), F_(df), dbl_(df), use_double_(use_double && dbl_.ok()), M_(boxes) {
+  /// settled: the first boxes an earlier attempt pruned in double intervals below its proven
+  /// value proven_lo (<= b*, so they cannot hold the maximum at any precision), skipped here
+  Maximiser(const DelayForm& df, long boxes, int digits, bool use_double, const std::vector<char>* settled = nullptr,
+            const std::optional<rational>& proven_lo = std::nullopt)
+      : df_(df), F_(df), dbl_(df), use_double_(use_double && dbl_.ok()), M_(boxes), settled_(settled),
+        first_pruned_(static_cast<size_t>(boxes), 0) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
     budget_ = 200 * M_ + 200000;
@@ -299,6 +303,7 @@ class Maximiser {
     L_ = lower(Ball(df.at_zero));
     H_ = upper(Ball(df.at_zero));
     best_at_ = Ball(0L);
+    if (proven_lo) raise(Ball(*proven_lo));  // dyadic (an Arb end): exact
     best_hi_ = H_;
     if (df.at_pi) {
       add_exact_end(*df.at_pi, Ball::pi());
@@ -318,6 +323,11 @@ class Maximiser {
       raise(lower(eval(Ball(pk.theta)).v));
     }
     for (long i = 0; i < M_; ++i) {  // every box, depth first
+      if (settled_ && (*settled_)[static_cast<size_t>(i)]) {
+        first_pruned_[static_cast<size_t>(i)] = 1;
+        ++double_pruned_;
+        continue;
+      }
       std::vector<Piece> stack{{i, 0}};
       while (!stack.empty()) {
         const Piece p = stack.back();
@@ -340,6 +350,7 @@ class Maximiser {
   long evaluations() const { return evals_; }
   long double_evaluations() const { return double_evals_; }
   long double_pruned() const { return double_pruned_; }
+  const std::vector<char>& first_pruned() const { return first_pruned_; }
   long unresolved() const { return unresolved_; }  // pieces settled by tolerance, depth or budget
 
  private:
@@ -389,26 +400,29 @@ class Maximiser {
     add_candidate(eval(th).v, th);
   }
 
-  /// The piece decided in double intervals when that suffices: its upper bound below the best
-  /// proven value (by the natural enclosure, the Taylor form at its midpoint, or, where f is
-  /// monotone, the value at the higher end). false: the piece needs the Arb process below.
-  bool pruned_in_double(const Piece& p) {
+  /// What the double intervals say of a piece: pruned (its upper bound below the best proven
+  /// value, by the natural enclosure, the Taylor form at its midpoint, or, where f is monotone,
+  /// the value at the higher end); split (none of Arb's tests could settle it either: f' holds
+  /// 0, f'' is not negative, and the bound lies far above the best value, 10^-6 of its scale,
+  /// beyond any rounding: the halves are taken without Arb); else arb (Arb's process below).
+  enum class InDouble { pruned, split, arb };
+  InDouble in_double(const Piece& p) {
     const long last = M_ << p.level;
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
     const __int128 D = static_cast<__int128>(M_) << (p.level + 1), k = 2 * static_cast<__int128>(p.i) + 1;
     Jet<Dint> J, Jm;
     ++double_evals_;
-    if (!dbl_.eval(k, D, true, J)) return false;
+    if (!dbl_.eval(k, D, true, J)) return InDouble::arb;
     const double w = (Dint(2.0) * dint_pi() / Dint::from_i128(D)).hi;  // the box's width, rounded up
     const Dint w2 = Dint(w) * Dint(w) * Dint(0.5);
     if (at_zero || at_pi) {  // as in process(): f <= f(end) + max(f'', 0) w^2/2
-      if (!(J.dd.hi > 0)) return true;
+      if (!(J.dd.hi > 0)) return InDouble::pruned;
       const Dint end = Dint::from_rational(at_zero ? df_.at_zero : *df_.at_pi);
-      return (end + Dint(J.dd.hi) * w2).hi < Ld_;
+      return (end + Dint(J.dd.hi) * w2).hi < Ld_ ? InDouble::pruned : InDouble::arb;
     }
-    if (J.v.hi < Ld_) return true;
+    if (J.v.hi < Ld_) return InDouble::pruned;
     ++double_evals_;
-    if (!dbl_.eval(k, D, false, Jm)) return false;
+    if (!dbl_.eval(k, D, false, Jm)) return InDouble::arb;
     if (Jm.v.lo > Ld_) raise(Ball(Jm.v.lo));  // a proven value of f at the midpoint
     // sup over |t| <= w/2 of f'(m) t + max(f'', 0) t^2/2, or the concave form (taylor_increment)
     const Dint r(w / 2), D1(Jm.d.abs_upper()), M(J.dd.hi);
@@ -417,20 +431,56 @@ class Maximiser {
       const Dint t = D1 / (-M);
       if (t.hi <= r.lo) inc = D1 * D1 / (-(M * 2L));
     }
-    if ((Jm.v + inc).hi < Ld_) return true;
+    const double ub = (Jm.v + inc).hi;
+    if (ub < Ld_) return InDouble::pruned;
     if (J.d.positive() || J.d.negative()) {  // monotone: the maximum at one end
       Jet<Dint> Je;
       const __int128 ke = J.d.positive() ? k + 1 : k - 1;
       ++double_evals_;
-      if (dbl_.eval(ke, D, false, Je) && Je.v.hi < Ld_) return true;
+      return dbl_.eval(ke, D, false, Je) && Je.v.hi < Ld_ ? InDouble::pruned : InDouble::arb;
     }
-    return false;
+    if (J.dd.negative() && concave_below(k, D, Jm, J.dd.hi)) return InDouble::pruned;
+    const double scale = std::max(std::abs(Ld_), 1e-300);
+    const bool far = std::isfinite(ub) && ub - Ld_ > 1e-6 * scale && J.d.contains_zero() && !J.dd.negative();
+    return far && p.level + 1 < max_level_ ? InDouble::split : InDouble::arb;
+  }
+
+  /// f concave on the box pi [k - 1, k + 1]/D (sup f'' = M < 0): f <= f(x) + f'(x)^2/(-2M) for
+  /// every x of the box, taken at a point x near the critical point found by Newton's steps on f'
+  /// in double over grid points 2^20 times finer; true when that bound is below the best value.
+  bool concave_below(__int128 k, __int128 D, Jet<Dint> Jx, double M) {
+    constexpr int finer = 20;
+    if (D >= (static_cast<__int128>(1) << 100)) return false;
+    const __int128 Df = D << finer, lo = (k - 1) << finer, hi = (k + 1) << finer;
+    __int128 kx = k << finer;
+    const double per_radian = static_cast<double>(Df) / 3.141592653589793, reach = std::ldexp(2.0, finer);
+    for (int it = 0; it < 4; ++it) {
+      const double step = -Jx.d.mid() / Jx.dd.mid() * per_radian;
+      if (!std::isfinite(step) || std::abs(step) < 0.5) break;
+      const __int128 next = std::clamp<__int128>(kx + std::llround(std::clamp(step, -reach, reach)), lo, hi);
+      Jet<Dint> Jn;
+      ++double_evals_;
+      if (next == kx || !dbl_.eval(next, Df, false, Jn)) break;
+      kx = next, Jx = Jn;
+    }
+    if (Jx.v.lo > Ld_) raise(Ball(Jx.v.lo));
+    const Dint d(Jx.d.abs_upper());
+    return (Jx.v + d * d / Dint(-2 * M)).hi < Ld_;
   }
 
   void process(const Piece& p, std::vector<Piece>& stack) {
-    if (use_double_ && pruned_in_double(p)) {
-      ++double_pruned_;
-      return;
+    if (use_double_) {
+      const InDouble d = in_double(p);
+      if (d == InDouble::pruned) {
+        ++double_pruned_;
+        if (p.level == 0) first_pruned_[static_cast<size_t>(p.i)] = 1;
+        return;
+      }
+      if (d == InDouble::split) {
+        stack.push_back({2 * p.i + 1, p.level + 1});
+        stack.push_back({2 * p.i, p.level + 1});
+        return;
+      }
     }
     const long last = M_ << p.level;
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
@@ -510,6 +560,8 @@ class Maximiser {
   double Ld_ = -std::numeric_limits<double>::infinity();  // a double <= L_
   long double_evals_ = 0, double_pruned_ = 0;
   long M_;
+  const std::vector<char>* settled_;
+  std::vector<char> first_pruned_;
   int max_level_ = 56;
   long budget_ = 0;
   Ball tol_factor_;
@@ -566,10 +618,15 @@ Bound certified_long_delay(const BoundProblem& p, int digits, bool double_prunin
   // 128 bits (two limbs, no allocation in Arb) while they hold the digits asked plus those the
   // kernels' size ~nu costs; a retry doubles them when the enclosure came out wider
   long bits = std::max<long>(128, static_cast<long>(3.33 * (digits + lognu)) + 12);
+  long double_evals = 0, arb_evals = 0;  // over the attempts
+  std::vector<char> settled;          // the first boxes the last attempt pruned in double intervals,
+  std::optional<rational> proven_lo;  // below this proven value of f: a retry skips them
   for (int attempt = 0;; ++attempt, bits *= 2) {
     flint::BallPrecision scope(bits);
-    Maximiser mx(*df, boxes, digits, double_pruning);
+    Maximiser mx(*df, boxes, digits, double_pruning, proven_lo ? &settled : nullptr, proven_lo);
     const bool complete = mx.run();
+    if (mx.lo().finite()) settled = mx.first_pruned(), proven_lo = mx.lo().bounds().lo;
+    double_evals += mx.double_evaluations(), arb_evals += mx.evaluations();
     if (!mx.hi().finite()) {
       if (attempt < 2) continue;
       throw NumericalError("the long-delay path could not bound b* from above (" + std::to_string(mx.unresolved()) +
@@ -604,13 +661,12 @@ Bound certified_long_delay(const BoundProblem& p, int digits, bool double_prunin
       out.omega = enclosure_decimal(out.omega_enclosure->lo, out.omega_enclosure->hi, std::min(digits, 17));
       out.where = at_pi ? "w = pi/T" : "interior";
     }
-    const std::string pruning = mx.double_evaluations() > 0
-                                    ? std::to_string(mx.double_pruned()) + " pieces pruned in double intervals (" +
-                                          std::to_string(mx.double_evaluations()) + " evaluations), "
-                                    : std::string();
+    const std::string pruning = double_evals > 0 ? std::to_string(mx.double_pruned()) + " pieces pruned in double intervals (" +
+                                                       std::to_string(double_evals) + " evaluations), "
+                                                 : std::string();
     out.method = "certified: long-delay branch-and-bound over w in double intervals with rounding bounds and Arb balls (nu = " +
                  to_decimal(df->nu, 12) + " samples, never expanded: " + std::to_string(boxes) + " boxes, " + pruning +
-                 std::to_string(mx.evaluations()) + " evaluations of f, f', f'' in Arb, interval Newton; " +
+                 std::to_string(arb_evals) + " evaluations of f, f', f'' in Arb, interval Newton; " +
                  std::to_string(bits) + " bits)";
     // pieces left unresolved (settled within the tolerance, out of depth or of budget) keep their
     // upper bounds in H, so the enclosure and the status hold either way; a wide one says why
