@@ -301,6 +301,7 @@ class Maximiser {
     budget_ = 200 * M_ + 200000;
     tol_factor_ = Ball(pow10(-(digits + 3)));
     L_ = lower(Ball(df.at_zero));
+    Ld_ = arf_get_d(arb_midref(L_.get()), ARF_RND_FLOOR);  // every change of L_ updates Ld_ <= L_
     H_ = upper(Ball(df.at_zero));
     best_at_ = Ball(0L);
     if (proven_lo) raise(Ball(*proven_lo));  // dyadic (an Arb end): exact
