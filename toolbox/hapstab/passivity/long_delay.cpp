@@ -13,6 +13,15 @@
 // best proven value is dropped, one where f' has one sign gives its end, one where f is concave
 // (f'' < 0) gives its maximum by interval Newton on f'. The first boxes are ~1/(4 nu) wide (the
 // kernels oscillate with period 2 pi/nu), so the work grows like nu (claim 001.eq45.taylor_bound).
+// Each box is first decided in double intervals with rounding bounds (numeric/dinterval.hpp, the
+// bounds derived there in units of u = 2^-53): the same jets over Dint, sin and cos of theta/2 and
+// of nu theta at the box's grid point pi k/D by an exact integer reduction of k p/(q D) (nu = p/q;
+// no bit of nu theta lost), widened over the box by their Lipschitz constants 1/2 and nu. Pruned
+// there: a box whose natural or midpoint-Taylor bound, or whose value at its higher end where f
+// is monotone, or (f concave) f(x) + f'(x)^2/(-2 sup f'') at a Newton point x, lies below the
+// best proven value; a box far above it (10^-6) with f' holding 0 and f'' not negative is split
+// without Arb. The rest -- the few boxes near the maximum -- take the Arb process below. A retry
+// at more bits skips the first boxes the last attempt pruned below its proven value (<= b*).
 // Fast: the same f in double, sampled on the same grid, its best local maxima polished by Newton.
 #include <algorithm>
 #include <cmath>

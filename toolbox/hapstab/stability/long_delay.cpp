@@ -116,13 +116,12 @@ Dint to_dint(const Ball& b) {
   const Dint d(Dint::from_rational(e.lo).lo, Dint::from_rational(e.hi).hi);
   return d.finite() ? d : Dint::entire();
 }
-CPolyT<Dint> to_dint(const CPoly& p) {
-  CPolyT<Dint> d;
-  for (const Ball& x : p.c) d.c.push_back(to_dint(x));
-  for (const Ball& x : p.t) d.t.push_back(to_dint(x));
-  for (const Ball& x : p.s) d.s.push_back(to_dint(x));
+std::vector<Dint> to_dint(const std::vector<Ball>& v) {
+  std::vector<Dint> d;
+  for (const Ball& x : v) d.push_back(to_dint(x));
   return d;
 }
+CPolyT<Dint> to_dint(const CPoly& p) { return {to_dint(p.c), to_dint(p.t), to_dint(p.s)}; }
 
 /// p(z) (real coefficients) in the three forms, evaluated at z = e^{j theta}.
 template <class S>
@@ -140,13 +139,7 @@ Z eval(const ZPolyT<S>& p, const AngleT<S>& a) {
   if (a.lo >= near_pi) return horner(p.atm1, Z{a.s.v, a.s1});    // z + 1 = (cos + 1) + j sin
   return horner(p.z, Z{a.c1, a.s1});
 }
-ZPolyT<Dint> to_dint(const ZPoly& p) {
-  ZPolyT<Dint> d;
-  for (const Ball& x : p.z) d.z.push_back(to_dint(x));
-  for (const Ball& x : p.at1) d.at1.push_back(to_dint(x));
-  for (const Ball& x : p.atm1) d.atm1.push_back(to_dint(x));
-  return d;
-}
+ZPolyT<Dint> to_dint(const ZPoly& p) { return {to_dint(p.z), to_dint(p.at1), to_dint(p.atm1)}; }
 
 /// sin and cos of theta/2 and of n theta at theta = pi k/D or over [pi (k - 1)/D, pi (k + 1)/D]
 /// (box), in double intervals (numeric/dinterval.hpp) by sin_cos_pi's exact integer reduction,

@@ -15,6 +15,9 @@
 //     integer m near n and near 0 (claim ext.stability.crossing_delay): no polynomial of degree n.
 //     Boxes are taken in the order of their smallest possible K = Re(-c0/c1); a crossing is
 //     isolated (q' of one sign, a sign change) and enclosed by interval Newton on q.
+// Every arc of both searches is first tried in double intervals with rounding bounds
+// (numeric/dinterval.hpp: sin, cos of theta/2 and of n theta at the arc's grid point pi k/D reduced
+// exactly in integers, atan/arg enclosed), Arb only where those cannot decide it (issue 48).
 // The work grows like n times the width of the frequency band where |P| and |Q| are comparable
 // (the loop's crossover region), at most ~ 4 n + 64 boxes per pass; memory does not grow with n.
 #pragma once
