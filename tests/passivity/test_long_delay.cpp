@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
+#include "hapstab/passivity/bound_detail.hpp"
 #include "passivity/reference.hpp"
 
 using namespace hapstab;
@@ -211,5 +213,93 @@ TEST(LongDelay, WorkIsBoundedByName) {
     ADD_FAILURE() << "accepted a pole at z = j with n = 500";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("unit circle"), std::string::npos) << e.what();
+  }
+}
+
+// The double-interval enclosures the branch-and-bound prunes with (numeric/dinterval.hpp): f,
+// f', f'' over a box [pi (k - 1)/D, pi (k + 1)/D] in double intervals contain Arb's enclosures
+// (128 bits) at points of the box, and at the box's midpoint the point enclosure contains
+// Arb's; boxes near theta = 0 and pi, n up to 10^5, a pole at z = -1 with rho of both signs,
+// fractional delays, resonances 1e-5 from the circle.
+TEST(LongDelay, DoubleIntervalsContainArb) {
+  using flint::Ball;
+  flint::BallPrecision scope(128);
+  struct C {
+    std::string H;
+    rational tau;  // t_d/T
+  };
+  const std::vector<C> cases = {{"40 + 0.5*(z-1)/(T*z)", 0},
+                                {"(z-1)/(z^2 - 2*(99999/100000)*(3/10)*z + (99999/100000)^2)", 0},
+                                {"1000 + 2*5/T*(z-1)/(z+1)", 0},        // rho > 0
+                                {"1 - 3/(z+1) + 0.2*(z-1)/(z-0.5)", 0},  // rho < 0
+                                {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", rational(37, 100)},
+                                {"1", rational(1, 3)}};
+  std::mt19937_64 g(48);
+  int compared = 0, finite = 0;
+  auto inside = [](const Dint& d, const Ball& b) {
+    const Enclosure<rational> e = b.bounds();
+    return (std::isinf(d.lo) || exact_rational(d.lo) <= e.lo) && (std::isinf(d.hi) || e.hi <= exact_rational(d.hi));
+  };
+  for (const C& c : cases)
+    for (long n : {0L, 1L, 37L, 1000L, 10000L, 100000L}) {
+      BoundProblem p = make(c.H, "1/1000", {}, static_cast<int>(n));
+      if (c.tau != 0) p.frac_delay = c.tau * p.T;
+      const std::optional<passivity::detail::DelayForm> df = passivity::detail::delay_form(p, nullptr);
+      ASSERT_TRUE(df) << c.H;
+      for (int i = 0; i < 12; ++i) {
+        const long M = 4 * n + 64;
+        const int level = static_cast<int>(g() % 20);
+        const __int128 D = static_cast<__int128>(M) << (level + 1);
+        // odd k (a box's midpoint): near 0, near pi, or anywhere
+        const __int128 span = static_cast<__int128>(g() % 7);
+        __int128 k = i % 3 == 0 ? 2 * span + 1 : i % 3 == 1 ? D - 2 * span - 1 : 2 * (static_cast<__int128>(g()) % (D / 2)) + 1;
+        const auto box = passivity::detail::delay_objective_double(*df, k, D, true), point = passivity::detail::delay_objective_double(*df, k, D, false);
+        ASSERT_TRUE(box && point);
+        const rational mid = rational(integer(static_cast<long>(k))) / rational(integer(static_cast<long>(D >> level)) * (integer(1) << level));
+        const std::array<Ball, 3> at = passivity::detail::delay_objective_ball(*df, Ball(mid) * Ball::pi());
+        for (int j = 0; j < 3; ++j) {
+          EXPECT_TRUE(inside((*point)[j], at[j])) << c.H << " n = " << n << " k/D = " << mid << " order " << j;
+          finite += (*point)[j].finite();
+        }
+        for (int t = -2; t <= 2; ++t) {  // points of the box: theta = pi (k + t/2)/D
+          const rational th = mid + rational(t, 2) / rational(integer(static_cast<long>(D >> level)) * (integer(1) << level));
+          const std::array<Ball, 3> b = passivity::detail::delay_objective_ball(*df, Ball(th) * Ball::pi());
+          for (int j = 0; j < 3; ++j)
+            EXPECT_TRUE(inside((*box)[j], b[j])) << c.H << " n = " << n << " theta/pi = " << th << " order " << j;
+          ++compared;
+        }
+      }
+    }
+  EXPECT_EQ(compared, 6 * 6 * 12 * 5);
+  EXPECT_GE(finite, 6 * 6 * 12 * 3 * 9 / 10);  // the point enclosures are finite (nearly) everywhere
+}
+
+// The branch-and-bound with double-interval pruning and the one in Arb balls alone: the same
+// status, overlapping 30-digit enclosures, the new one with far fewer Arb evaluations, on walls,
+// Tustin walls (rho != 0), a resonance 1e-5 from the circle and fractional delays.
+TEST(LongDelay, DoublePruningAgreesWithArbAlone) {
+  struct C {
+    std::string H;
+    int n;
+    rational tau;
+  };
+  const std::vector<C> cases = {{"40 + 0.5*(z-1)/(T*z)", 300, 0},
+                                {"(z-1)/(z^2 - 2*(99999/100000)*(3/10)*z + (99999/100000)^2)", 1000, 0},
+                                {"1000 + 2*5/T*(z-1)/(z+1)", 777, 0},
+                                {"1", 2000, 0},
+                                {"(z-1)*(z+0.3)/(z^2 - 1.8*z + 0.9801)", 700, rational(37, 100)},
+                                {"(z-1)/(z+1/2)", 555, rational(1, 7)}};
+  for (const C& c : cases) {
+    BoundProblem p = make(c.H, "1/1000", {}, c.n);
+    if (c.tau != 0) p.frac_delay = c.tau * p.T;
+    SCOPED_TRACE(describe(p));
+    const Bound fresh = passivity::detail::certified_long_delay(p, 30, true), arb = passivity::detail::certified_long_delay(p, 30, false);
+    EXPECT_EQ(fresh.status, arb.status);
+    EXPECT_LE(fresh.enclosure->lo, arb.enclosure->hi) << fresh.decimal << " vs " << arb.decimal;
+    EXPECT_LE(arb.enclosure->lo, fresh.enclosure->hi) << fresh.decimal << " vs " << arb.decimal;
+    const rational scale = std::max(abs(fresh.value), rational(1, 1000000));
+    EXPECT_LE(fresh.enclosure->hi - fresh.enclosure->lo, scale * pow10(-29)) << fresh.note;
+    EXPECT_NE(fresh.method.find("pruned in double intervals"), std::string::npos) << fresh.method;
+    EXPECT_EQ(arb.method.find("pruned in double intervals"), std::string::npos) << arb.method;
   }
 }

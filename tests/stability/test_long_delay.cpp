@@ -10,6 +10,7 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/stability/long_delay.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 using namespace hapstab;
@@ -157,4 +158,41 @@ TEST(StabilityLongDelay, WorkIsBoundedByName) {
   }
   const Case d{"1/(m*s^2 + b*s)", "K + B*(z-1)/(T*z)", "", 300};
   EXPECT_THROW(stability::decide(make(d, rational(1), stability::LoopPath::polynomial)), InputError);
+}
+
+// The searches with double-interval pruning (numeric/dinterval.hpp) and in Arb balls alone
+// (ArbOnly): the same outcome and overlapping enclosures of sup K, the same Schur verdicts at
+// gains below and above it, on the cases above (delays 0..45) and at delays of 300 and 1000.
+TEST(StabilityLongDelay, DoublePruningAgreesWithArbAlone) {
+  std::vector<Case> cases = kCases;
+  cases.push_back({"1/(m*s^2 + 10*b*s)", "K + B/8*(z-1)/(T*z)", "", 1000});
+  cases.push_back({"1/(m*s^2 + b*s)", "K*(z-1/2)/(z-0.9) + B*(z-1)/(T*z)", "", 300});
+  for (const Case& c : cases) {
+    SCOPED_TRACE(describe(c));
+    const stability::Loop loop = make(c, std::nullopt, stability::LoopPath::long_delay);
+    const stability::MaxGain fresh = stability::max_gain(loop, 20);
+    stability::MaxGain arb;
+    {
+      const stability::detail::ArbOnly scope;
+      arb = stability::max_gain(loop, 20);
+    }
+    ASSERT_EQ(fresh.outcome, arb.outcome) << fresh.note << " | " << arb.note;
+    EXPECT_EQ(fresh.status, arb.status);
+    EXPECT_EQ(fresh.infinite, arb.infinite);
+    if (fresh.outcome != Outcome::holds || fresh.infinite) continue;
+    EXPECT_LE(fresh.enclosure.lo, arb.enclosure.hi) << to_decimal(fresh.enclosure.lo, 25) << " vs " << to_decimal(arb.enclosure.lo, 25);
+    EXPECT_LE(arb.enclosure.lo, fresh.enclosure.hi) << to_decimal(fresh.enclosure.lo, 25) << " vs " << to_decimal(arb.enclosure.lo, 25);
+    EXPECT_LE(fresh.enclosure.hi - fresh.enclosure.lo, fresh.enclosure.lo * pow10(-19));
+    for (const rational& k : {fresh.enclosure.lo * rational(99, 100), fresh.enclosure.hi * rational(101, 100)}) {
+      const stability::Loop at = make(c, k, stability::LoopPath::long_delay);
+      const auto d = stability::decide(at);
+      stability::StabilityResult a;
+      {
+        const stability::detail::ArbOnly scope;
+        a = stability::decide(at);
+      }
+      EXPECT_EQ(d.verdict.decided(), a.verdict.decided()) << to_decimal(k, 20);
+      if (d.verdict.decided() && a.verdict.decided()) { EXPECT_EQ(d.verdict.holds(), a.verdict.holds()) << to_decimal(k, 20); }
+    }
+  }
 }

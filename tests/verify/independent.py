@@ -8,6 +8,7 @@ these"; docs/verification.md, "Independent campaigns").
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
+  bound_long     `bound` as below with delays of 50-2000 samples (the long-delay path, issues 43, 48).
   bound          `bound --H H --T T [--delay n] [--frac-delay t_d] [--eta eta]` against paper 001's
                  (45)/(54) evaluated directly in mpmath (indep_passivity.py): the objective sampled
                  densely and refined, its ends taken as limits, a pole at z = -1 decided from the
@@ -189,6 +190,24 @@ BRANCHES_BOUND = [  # (tag, value, least share of the cases compared with that b
     ("end w -> pi/T", "-inf", 0.03),
     ("resonance 1e-5 from the circle", True, 0.08),
 ]
+
+def case_bound_long(rng):
+    """`bound` as above with a delay of 50-2000 samples: the long-delay path (issue 43) with its
+    double-interval pruning (issue 48), against the same mpmath reference (its grid is 32 points
+    per sample of delay)."""
+    H, T, n, tau, eta, tags = IP.gen_bound(rng)
+    n = rng.randint(50, 2000)
+    if tau != 0:
+        tags["delay"] = "sin(pi nu) > 0" if math.sin(math.pi * float(Q(n) + tau)) > 0 else "sin(pi nu) < 0"
+    return dict(H=H, T=T, n=n, tau=tau, eta=eta, tags=tags, args=IP.bound_args(H, T, n, tau, eta))
+
+
+BRANCHES_BOUND_LONG = [
+    ("delay", "sin(pi nu) > 0", 0.1), ("delay", "sin(pi nu) < 0", 0.1), ("delay", "integer", 0.1),
+    ("pole at z = -1", True, 0.1), ("pole at z = -1", False, 0.1),
+    ("max at", "interior", 0.1), ("resonance 1e-5 from the circle", True, 0.05),
+]
+
 
 
 # ---------------------------------------------------------------------------------------------
@@ -962,6 +981,7 @@ BRANCHES_WITNESS = [  # compared: hapstab's certified verdict of (16) against th
 
 CRITERIA = {
     "bound": (case_bound, check_bound, BRANCHES_BOUND),
+    "bound_long": (case_bound_long, check_bound, BRANCHES_BOUND_LONG),
     "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
     "stability_max": (case_stability, check_stability, BRANCHES_STABILITY),
     "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
@@ -974,6 +994,7 @@ CRITERIA = {
 
 MARGIN_TEXT = {  # what each criterion's distance from the boundary is (the default: 1 - rho at sup/2)
     "bound": "none: b* has no boundary",
+    "bound_long": "none: b* has no boundary",
     "bound_max": "none",
     "scene_coupling": "|1 - rho| at the scene's value of g, the first value decided; n/a: no boundary within g_ref 2^-10..2^10 (double scan)",
     "charpoly": "1 - rho of M in double",

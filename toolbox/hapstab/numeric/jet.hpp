@@ -1,8 +1,9 @@
 // hapstab/numeric/jet.hpp -- order-2 jets (f, f', f'') over a scalar S, and the delay kernels
 // the long-delay paths are built from. S = flint::Ball gives enclosures of f, f', f'' for every
 // point of the ball the variable holds (the derivative bounds of an interval branch-and-bound);
-// S = double gives the same formulas as plain numbers (the fast paths), so both evaluate one
-// expression.
+// S = double gives the same formulas as plain numbers (the fast paths), and S = Dint
+// (numeric/dinterval.hpp) enclosures in double intervals with rounding bounds (the cheap pruning
+// of the certified paths), so all three evaluate one expression.
 //
 // The kernels, with theta in [0, pi] and nu >= 0 real (the delay in samples):
 //   sinc(u) = sin(u)/u                 (sinc(0) = 1)
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/dinterval.hpp"
 
 namespace hapstab::jet {
 
@@ -39,12 +41,17 @@ inline bool contains_zero(double x) { return x == 0; }
 inline bool contains_zero(const Ball& x) { return x.contains_zero(); }
 inline void add_error(double&, const rational&) {}
 inline void add_error(Ball& x, const rational& e) { x = flint::widen(x, e); }
+inline double abs_upper(const Dint& x) { return x.abs_upper(); }
+inline bool contains_zero(const Dint& x) { return x.contains_zero(); }
+inline void add_error(Dint& x, const rational& e) { x = x.widened(Dint::from_rational(e).hi); }
 template <class S> S scalar(const rational& q);
 template <> inline double scalar<double>(const rational& q) { return to_real<double>(q); }
 template <> inline Ball scalar<Ball>(const rational& q) { return Ball(q); }
+template <> inline Dint scalar<Dint>(const rational& q) { return Dint::from_rational(q); }
 template <class S> S scalar_pi();
 template <> inline double scalar_pi<double>() { return 3.14159265358979323846; }
 template <> inline Ball scalar_pi<Ball>() { return Ball::pi(); }
+template <> inline Dint scalar_pi<Dint>() { return dint_pi(); }
 
 /// f, f', f'' (the second derivative itself, not over 2).
 template <class S>
@@ -92,13 +99,13 @@ Jet<S> horner(const std::vector<S>& p, const Jet<S>& x) {
     }
     return r;
   };
-  if constexpr (std::is_same_v<S, Ball>) {
+  if constexpr (!std::is_same_v<S, double>) {
     if (p.size() > 2 && x.v.radius() > std::ldexp(1.0, -60) * (1 + x.v.abs_upper())) {
-      const Ball m = x.v.mid();
-      std::vector<Ball> b = p;
+      const S m(x.v.mid());  // a point (Ball: exact midpoint; Dint: a double inside)
+      std::vector<S> b = p;
       for (size_t k = 0; k < b.size(); ++k)
         for (size_t i = b.size() - 1; i > k; --i) b[i - 1] = b[i - 1] + m * b[i];
-      return plain(b, Jet<Ball>{x.v - m, x.d, x.dd});
+      return plain(b, Jet<S>{x.v - m, x.d, x.dd});
     }
   }
   return plain(p, x);
@@ -196,6 +203,48 @@ inline void sinc_values<Ball>(const Ball& u, const Ball& su, const Ball& cu, Bal
   arb_sinc(f.get(), u.get(), flint::ball_prec);
   f1 = Ball::hull(rational(-1, 2), rational(1, 2));
   f2 = Ball::hull(rational(-1, 3), rational(1, 3));
+}
+
+template <>
+inline void sinc_values<Dint>(const Dint& u, const Dint& su, const Dint& cu, Dint& f, Dint& f1, Dint& f2) {
+  if (u.abs_upper() <= 0.25) {  // the Taylor form of the Ball case, its remainder below 2^-68
+    struct Coefficients {
+      std::vector<Dint> a, a1, a2;
+      double remainder = 0;
+    };
+    static const Coefficients t = [] {
+      Coefficients c;
+      const SincTaylor st = sinc_taylor(60);
+      for (size_t k = 0; k < st.a.size(); ++k) {
+        const long k2 = static_cast<long>(2 * k);
+        c.a.push_back(Dint::from_rational(st.a[k]));
+        c.a1.push_back(Dint::from_rational(st.a[k] * k2));
+        c.a2.push_back(Dint::from_rational(k == 0 ? rational(0) : st.a[k] * (k2 * (k2 - 1))));
+      }
+      c.remainder = Dint::from_rational(st.remainder).hi;
+      return c;
+    }();
+    const Dint x = u * u;
+    f = f1 = f2 = Dint(0.0);
+    for (size_t k = t.a.size(); k-- > 0;) {
+      f = f * x + t.a[k];
+      if (k >= 1) {
+        f1 = f1 * x + t.a1[k];
+        f2 = f2 * x + t.a2[k];
+      }
+    }
+    f1 = f1 * u;
+    f = f.widened(t.remainder), f1 = f1.widened(t.remainder), f2 = f2.widened(t.remainder);
+    return;
+  }
+  if (!u.contains_zero()) {
+    f = su / u;
+    f1 = (cu - f) / u;
+    f2 = -f - f1 * 2L / u;
+    return;
+  }
+  // a wide interval around 0: sinc >= -0.2173 (its least value, at u = 4.4934...), |sinc^(j)| <= 1/(j+1)
+  f = Dint(-0.22, 1.0), f1 = Dint(-0.5, 0.5), f2 = Dint(-0.34, 0.34);
 }
 
 /// sinc(u) for a jet u, given sin and cos of u.v.

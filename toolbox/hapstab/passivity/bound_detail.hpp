@@ -16,10 +16,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/dinterval.hpp"
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/passivity/bound.hpp"
 
@@ -212,7 +215,14 @@ struct LongDelayPole {
 };
 std::optional<LongDelayPole> long_delay_applies(const BoundProblem& p, std::string* why);
 /// The certified long-delay path (the problem's assumptions already checked); its double twin is
-/// fast_long_delay (bound.hpp).
-Bound certified_long_delay(const BoundProblem& p, int digits);
+/// fast_long_delay (bound.hpp). double_pruning: boxes are first tried in double intervals with
+/// rounding bounds (numeric/dinterval.hpp) and only those they cannot prune go to Arb; false: Arb
+/// for every box (the path before issue 48, kept for the benchmark's comparison and the tests).
+Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning = true);
+/// The long-delay objective's f, f', f'' as the branch-and-bound evaluates them, for the tests:
+/// in double intervals at theta = pi k/D, or over [pi (k - 1)/D, pi (k + 1)/D] when box (nullopt
+/// when the integers exceed 128 bits), and in Arb balls at theta (every point of the ball).
+std::optional<std::array<Dint, 3>> delay_objective_double(const DelayForm& f, __int128 k, __int128 D, bool box);
+std::array<flint::Ball, 3> delay_objective_ball(const DelayForm& f, const flint::Ball& theta);
 
 }  // namespace hapstab::passivity::detail

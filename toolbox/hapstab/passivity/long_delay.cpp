@@ -13,6 +13,15 @@
 // best proven value is dropped, one where f' has one sign gives its end, one where f is concave
 // (f'' < 0) gives its maximum by interval Newton on f'. The first boxes are ~1/(4 nu) wide (the
 // kernels oscillate with period 2 pi/nu), so the work grows like nu (claim 001.eq45.taylor_bound).
+// Each box is first decided in double intervals with rounding bounds (numeric/dinterval.hpp, the
+// bounds derived there in units of u = 2^-53): the same jets over Dint, sin and cos of theta/2 and
+// of nu theta at the box's grid point pi k/D by an exact integer reduction of k p/(q D) (nu = p/q;
+// no bit of nu theta lost), widened over the box by their Lipschitz constants 1/2 and nu. Pruned
+// there: a box whose natural or midpoint-Taylor bound, or whose value at its higher end where f
+// is monotone, or (f concave) f(x) + f'(x)^2/(-2 sup f'') at a Newton point x, lies below the
+// best proven value; a box far above it (10^-6) with f' holding 0 and f'' not negative is split
+// without Arb. The rest -- the few boxes near the maximum -- take the Arb process below. A retry
+// at more bits skips the first boxes the last attempt pruned below its proven value (<= b*).
 // Fast: the same f in double, sampled on the same grid, its best local maxima polished by Newton.
 #include <algorithm>
 #include <cmath>
@@ -22,6 +31,7 @@
 #include <vector>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/dinterval.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/jet.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
@@ -116,12 +126,10 @@ struct Form {
   }
 };
 
-/// f, f', f'' at theta (a point, or every point of a ball).
+/// f, f', f'' at theta (a point, or every point of a ball or interval), given sin and cos of
+/// theta/2 and of nu theta there.
 template <class S>
-Jet<S> objective_jet(const Form<S>& F, const S& theta) {
-  S sh, ch, snu, cnu;
-  jet::sin_cos(theta * S(0.5), sh, ch);
-  jet::sin_cos(F.nu * theta, snu, cnu);
+Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch, const S& snu, const S& cnu) {
   const S s1 = S(2.0) * (sh * ch), c1 = S(1.0) - S(2.0) * (sh * sh);
   const Jet<S> th = jet::variable(theta);
   const Jet<S> c{c1, -s1, -c1};
@@ -139,6 +147,57 @@ Jet<S> objective_jet(const Form<S>& F, const S& theta) {
   out.v = out.v + F.eta;
   return out;
 }
+template <class S>
+Jet<S> objective_jet(const Form<S>& F, const S& theta) {
+  S sh, ch, snu, cnu;
+  jet::sin_cos(theta * S(0.5), sh, ch);
+  jet::sin_cos(F.nu * theta, snu, cnu);
+  return objective_jet(F, theta, sh, ch, snu, cnu);
+}
+
+// ---- the objective in double intervals on the branch-and-bound's grid ------------------------
+/// f, f', f'' enclosed in double intervals (numeric/dinterval.hpp) at theta = pi k/D or over
+/// [pi (k - 1)/D, pi (k + 1)/D], for the grid points of the search (D = M 2^level): sin and cos
+/// of theta/2 = pi k/(2D) and of nu theta = pi p k/(q D) (nu = p/q) by sin_cos_pi's exact integer
+/// reduction, so no bit of nu theta is lost however large nu is; over a box they are widened by
+/// their Lipschitz bounds 1/2 and nu times the half-width pi/D. Unavailable (ok() false) when
+/// p, q or the products do not fit 128 bits.
+class DoubleGrid {
+ public:
+  explicit DoubleGrid(const DelayForm& df) : F_(df) {
+    const integer p = num(df.nu), q = den(df.nu), limit = integer(1) << 100;
+    ok_ = p < limit && q < limit;
+    if (ok_) p_ = to_i128(p), q_ = to_i128(q);
+  }
+  bool ok() const { return ok_; }
+  /// false when the integers overflow (the caller takes Arb)
+  bool eval(__int128 k, __int128 D, bool box, Jet<Dint>& out) const {
+    __int128 pk = 0, qD = 0;
+    if (!ok_ || __builtin_mul_overflow(p_, k, &pk) || __builtin_mul_overflow(q_, D, &qD)) return false;
+    Dint sh, ch, snu, cnu;
+    if (!sin_cos_pi(k, 2 * D, sh, ch) || !sin_cos_pi(pk, qD, snu, cnu)) return false;
+    const Dint pi = dint_pi(), inv = Dint(1.0) / Dint::from_i128(D);
+    Dint theta = Dint::from_i128(k) * inv * pi;
+    if (box) {
+      const double r = (inv * pi).hi, rn = (F_.nu * Dint(r)).hi;
+      theta = theta.widened(r).clamp(0, pi.hi);
+      sh = sh.widened(r / 2).clamp(-1, 1), ch = ch.widened(r / 2).clamp(-1, 1);
+      snu = snu.widened(rn).clamp(-1, 1), cnu = cnu.widened(rn).clamp(-1, 1);
+    }
+    out = objective_jet(F_, theta, sh, ch, snu, cnu);
+    return true;
+  }
+  const Form<Dint>& form() const { return F_; }
+
+ private:
+  static __int128 to_i128(const integer& x) {  // 0 <= x < 2^100
+    const integer hi = x >> 64, lo = x - (hi << 64);
+    return (static_cast<__int128>(hi.convert_to<unsigned long long>()) << 64) | lo.convert_to<unsigned long long>();
+  }
+  Form<Dint> F_;
+  bool ok_ = false;
+  __int128 p_ = 0, q_ = 1;
+};
 
 // ---- the double scan: where the maximum is, in double (the fast path, and the certified path's
 // first lower bound) ---------------------------------------------------------------------------
@@ -240,14 +299,21 @@ struct Piece {  // theta in [pi i / (M 2^level), pi (i + 1) / (M 2^level)]
 class Maximiser {
  public:
   enum class Where { zero, pi, interior };
-  Maximiser(const DelayForm& df, long boxes, int digits) : df_(df), F_(df), M_(boxes) {
+  /// settled: the first boxes an earlier attempt pruned in double intervals below its proven
+  /// value proven_lo (<= b*, so they cannot hold the maximum at any precision), skipped here
+  Maximiser(const DelayForm& df, long boxes, int digits, bool use_double, const std::vector<char>* settled = nullptr,
+            const std::optional<rational>& proven_lo = std::nullopt)
+      : df_(df), F_(df), dbl_(df), use_double_(use_double && dbl_.ok()), M_(boxes), settled_(settled),
+        first_pruned_(static_cast<size_t>(boxes), 0) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
     budget_ = 200 * M_ + 200000;
     tol_factor_ = Ball(pow10(-(digits + 3)));
     L_ = lower(Ball(df.at_zero));
+    Ld_ = arf_get_d(arb_midref(L_.get()), ARF_RND_FLOOR);  // every change of L_ updates Ld_ <= L_
     H_ = upper(Ball(df.at_zero));
     best_at_ = Ball(0L);
+    if (proven_lo) raise(Ball(*proven_lo));  // dyadic (an Arb end): exact
     best_hi_ = H_;
     if (df.at_pi) {
       add_exact_end(*df.at_pi, Ball::pi());
@@ -267,6 +333,11 @@ class Maximiser {
       raise(lower(eval(Ball(pk.theta)).v));
     }
     for (long i = 0; i < M_; ++i) {  // every box, depth first
+      if (settled_ && (*settled_)[static_cast<size_t>(i)]) {
+        first_pruned_[static_cast<size_t>(i)] = 1;
+        ++double_pruned_;
+        continue;
+      }
       std::vector<Piece> stack{{i, 0}};
       while (!stack.empty()) {
         const Piece p = stack.back();
@@ -287,6 +358,9 @@ class Maximiser {
   const Ball& best_at() const { return best_at_; }
   Where best_where() const { return best_where_; }
   long evaluations() const { return evals_; }
+  long double_evaluations() const { return double_evals_; }
+  long double_pruned() const { return double_pruned_; }
+  const std::vector<char>& first_pruned() const { return first_pruned_; }
   long unresolved() const { return unresolved_; }  // pieces settled by tolerance, depth or budget
 
  private:
@@ -301,7 +375,10 @@ class Maximiser {
     return objective_jet(F_, th);
   }
   void raise(const Ball& lo) {
-    if (less(L_, lo)) L_ = lo;
+    if (less(L_, lo)) {
+      L_ = lo;
+      Ld_ = arf_get_d(arb_midref(L_.get()), ARF_RND_FLOOR);  // L_ is exact (an end): Ld_ <= L_
+    }
   }
   void best(const Ball& u, const Ball& at, Where where) {
     if (less(best_hi_, u)) best_hi_ = u, best_at_ = at, best_where_ = where;
@@ -333,7 +410,88 @@ class Maximiser {
     add_candidate(eval(th).v, th);
   }
 
+  /// What the double intervals say of a piece: pruned (its upper bound below the best proven
+  /// value, by the natural enclosure, the Taylor form at its midpoint, or, where f is monotone,
+  /// the value at the higher end); split (none of Arb's tests could settle it either: f' holds
+  /// 0, f'' is not negative, and the bound lies far above the best value, 10^-6 of its scale,
+  /// beyond any rounding: the halves are taken without Arb); else arb (Arb's process below).
+  enum class InDouble { pruned, split, arb };
+  InDouble in_double(const Piece& p) {
+    const long last = M_ << p.level;
+    const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
+    const __int128 D = static_cast<__int128>(M_) << (p.level + 1), k = 2 * static_cast<__int128>(p.i) + 1;
+    Jet<Dint> J, Jm;
+    ++double_evals_;
+    if (!dbl_.eval(k, D, true, J)) return InDouble::arb;
+    const double w = (Dint(2.0) * dint_pi() / Dint::from_i128(D)).hi;  // the box's width, rounded up
+    const Dint w2 = Dint(w) * Dint(w) * Dint(0.5);
+    if (at_zero || at_pi) {  // as in process(): f <= f(end) + max(f'', 0) w^2/2
+      if (!(J.dd.hi > 0)) return InDouble::pruned;
+      const Dint end = Dint::from_rational(at_zero ? df_.at_zero : *df_.at_pi);
+      return (end + Dint(J.dd.hi) * w2).hi < Ld_ ? InDouble::pruned : InDouble::arb;
+    }
+    if (J.v.hi < Ld_) return InDouble::pruned;
+    ++double_evals_;
+    if (!dbl_.eval(k, D, false, Jm)) return InDouble::arb;
+    if (Jm.v.lo > Ld_) raise(Ball(Jm.v.lo));  // a proven value of f at the midpoint
+    // sup over |t| <= w/2 of f'(m) t + max(f'', 0) t^2/2, or the concave form (taylor_increment)
+    const Dint r(w / 2), D1(Jm.d.abs_upper()), M(J.dd.hi);
+    Dint inc = D1 * r + Dint(std::max(J.dd.hi, 0.0)) * r * r * Dint(0.5);
+    if (M.hi < 0) {
+      const Dint t = D1 / (-M);
+      if (t.hi <= r.lo) inc = D1 * D1 / (-(M * 2L));
+    }
+    const double ub = (Jm.v + inc).hi;
+    if (ub < Ld_) return InDouble::pruned;
+    if (J.d.positive() || J.d.negative()) {  // monotone: the maximum at one end
+      Jet<Dint> Je;
+      const __int128 ke = J.d.positive() ? k + 1 : k - 1;
+      ++double_evals_;
+      return dbl_.eval(ke, D, false, Je) && Je.v.hi < Ld_ ? InDouble::pruned : InDouble::arb;
+    }
+    if (J.dd.negative() && concave_below(k, D, Jm, J.dd.hi)) return InDouble::pruned;
+    const double scale = std::max(std::abs(Ld_), 1e-300);
+    const bool far = std::isfinite(ub) && ub - Ld_ > 1e-6 * scale && J.d.contains_zero() && !J.dd.negative();
+    return far && p.level + 1 < max_level_ ? InDouble::split : InDouble::arb;
+  }
+
+  /// f concave on the box pi [k - 1, k + 1]/D (sup f'' = M < 0): f <= f(x) + f'(x)^2/(-2M) for
+  /// every x of the box, taken at a point x near the critical point found by Newton's steps on f'
+  /// in double over grid points 2^20 times finer; true when that bound is below the best value.
+  bool concave_below(__int128 k, __int128 D, Jet<Dint> Jx, double M) {
+    constexpr int finer = 20;
+    if (D >= (static_cast<__int128>(1) << 100)) return false;
+    const __int128 Df = D << finer, lo = (k - 1) << finer, hi = (k + 1) << finer;
+    __int128 kx = k << finer;
+    const double per_radian = static_cast<double>(Df) / 3.141592653589793, reach = std::ldexp(2.0, finer);
+    for (int it = 0; it < 4; ++it) {
+      const double step = -Jx.d.mid() / Jx.dd.mid() * per_radian;
+      if (!std::isfinite(step) || std::abs(step) < 0.5) break;
+      const __int128 next = std::clamp<__int128>(kx + std::llround(std::clamp(step, -reach, reach)), lo, hi);
+      Jet<Dint> Jn;
+      ++double_evals_;
+      if (next == kx || !dbl_.eval(next, Df, false, Jn)) break;
+      kx = next, Jx = Jn;
+    }
+    if (Jx.v.lo > Ld_) raise(Ball(Jx.v.lo));
+    const Dint d(Jx.d.abs_upper());
+    return (Jx.v + d * d / Dint(-2 * M)).hi < Ld_;
+  }
+
   void process(const Piece& p, std::vector<Piece>& stack) {
+    if (use_double_) {
+      const InDouble d = in_double(p);
+      if (d == InDouble::pruned) {
+        ++double_pruned_;
+        if (p.level == 0) first_pruned_[static_cast<size_t>(p.i)] = 1;
+        return;
+      }
+      if (d == InDouble::split) {
+        stack.push_back({2 * p.i + 1, p.level + 1});
+        stack.push_back({2 * p.i, p.level + 1});
+        return;
+      }
+    }
     const long last = M_ << p.level;
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
     const Ball a = theta(p.i, p.level), b = theta(p.i + 1, p.level);
@@ -407,7 +565,13 @@ class Maximiser {
 
   const DelayForm& df_;
   Form<Ball> F_;
+  DoubleGrid dbl_;
+  bool use_double_;
+  double Ld_ = -std::numeric_limits<double>::infinity();  // a double <= L_
+  long double_evals_ = 0, double_pruned_ = 0;
   long M_;
+  const std::vector<char>* settled_;
+  std::vector<char> first_pruned_;
   int max_level_ = 56;
   long budget_ = 0;
   Ball tol_factor_;
@@ -418,6 +582,18 @@ class Maximiser {
 
 }  // namespace
 
+std::optional<std::array<Dint, 3>> delay_objective_double(const DelayForm& f, __int128 k, __int128 D, bool box) {
+  const DoubleGrid grid(f);
+  Jet<Dint> j;
+  if (!grid.eval(k, D, box, j)) return std::nullopt;
+  return std::array<Dint, 3>{j.v, j.d, j.dd};
+}
+
+std::array<Ball, 3> delay_objective_ball(const DelayForm& f, const Ball& theta) {
+  const Jet<Ball> j = objective_jet(Form<Ball>(f), theta);
+  return {j.v, j.d, j.dd};
+}
+
 // ---- the drivers ----------------------------------------------------------------------------
 long grid_boxes(const rational& nu) {
   // four boxes per period 2 pi/nu of the kernels over [0, pi] (period / 8 wide), at least 64
@@ -425,7 +601,7 @@ long grid_boxes(const rational& nu) {
   return 4 * up.convert_to<long>() + 64;
 }
 
-Bound certified_long_delay(const BoundProblem& p, int digits) {
+Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning) {
   std::string why;
   const std::optional<DelayForm> df = delay_form(p, &why);
   if (!df) {
@@ -452,10 +628,15 @@ Bound certified_long_delay(const BoundProblem& p, int digits) {
   // 128 bits (two limbs, no allocation in Arb) while they hold the digits asked plus those the
   // kernels' size ~nu costs; a retry doubles them when the enclosure came out wider
   long bits = std::max<long>(128, static_cast<long>(3.33 * (digits + lognu)) + 12);
+  long double_evals = 0, arb_evals = 0;  // over the attempts
+  std::vector<char> settled;          // the first boxes the last attempt pruned in double intervals,
+  std::optional<rational> proven_lo;  // below this proven value of f: a retry skips them
   for (int attempt = 0;; ++attempt, bits *= 2) {
     flint::BallPrecision scope(bits);
-    Maximiser mx(*df, boxes, digits);
+    Maximiser mx(*df, boxes, digits, double_pruning, proven_lo ? &settled : nullptr, proven_lo);
     const bool complete = mx.run();
+    if (mx.lo().finite()) settled = mx.first_pruned(), proven_lo = mx.lo().bounds().lo;
+    double_evals += mx.double_evaluations(), arb_evals += mx.evaluations();
     if (!mx.hi().finite()) {
       if (attempt < 2) continue;
       throw NumericalError("the long-delay path could not bound b* from above (" + std::to_string(mx.unresolved()) +
@@ -490,9 +671,13 @@ Bound certified_long_delay(const BoundProblem& p, int digits) {
       out.omega = enclosure_decimal(out.omega_enclosure->lo, out.omega_enclosure->hi, std::min(digits, 17));
       out.where = at_pi ? "w = pi/T" : "interior";
     }
-    out.method = "certified: long-delay branch-and-bound over w in Arb balls (nu = " + to_decimal(df->nu, 12) +
-                 " samples, never expanded: " + std::to_string(boxes) + " boxes, " + std::to_string(mx.evaluations()) +
-                 " evaluations of f, f', f'', interval Newton; " + std::to_string(bits) + " bits)";
+    const std::string pruning = double_evals > 0 ? std::to_string(mx.double_pruned()) + " pieces pruned in double intervals (" +
+                                                       std::to_string(double_evals) + " evaluations), "
+                                                 : std::string();
+    out.method = "certified: long-delay branch-and-bound over w in double intervals with rounding bounds and Arb balls (nu = " +
+                 to_decimal(df->nu, 12) + " samples, never expanded: " + std::to_string(boxes) + " boxes, " + pruning +
+                 std::to_string(arb_evals) + " evaluations of f, f', f'' in Arb, interval Newton; " +
+                 std::to_string(bits) + " bits)";
     // pieces left unresolved (settled within the tolerance, out of depth or of budget) keep their
     // upper bounds in H, so the enclosure and the status hold either way; a wide one says why
     if (!narrow) out.note += std::string(out.note.empty() ? "" : "; ") + "the enclosure is wider than " +

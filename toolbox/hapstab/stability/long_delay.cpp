@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <queue>
 #include <type_traits>
 #include <cstdio>
@@ -58,29 +59,39 @@ std::vector<C> taylor_shift(std::vector<C> b, const C& x0) {
 // w = z + 1 = 2 cos(theta/2) e^{j theta/2} (s = 1 + c = 2 cos^2(theta/2)) near pi.
 constexpr double near_zero = 1.0, near_pi = 2.1;  // theta <= 1: the form at 1; theta >= 2.1: at -1
 
-struct Angle {
-  jet::Jet<Ball> th, c, t, s;  // theta, cos(theta), 1 - cos(theta), 1 + cos(theta) as jets
-  Ball s1, c1, sh, ch;         // sin, cos of theta and of theta/2
-  double lo = 0, hi = 0;       // theta's ends, rounded outward (the choice of form only)
+template <class S>
+struct AngleT {
+  jet::Jet<S> th, c, t, s;  // theta, cos(theta), 1 - cos(theta), 1 + cos(theta) as jets
+  S s1, c1, sh, ch;         // sin, cos of theta and of theta/2
+  double lo = 0, hi = 0;    // theta's ends, rounded outward (the choice of form only)
 };
-Angle angle(const Ball& theta) {
-  Angle a;
-  flint::sin_cos(theta * Ball(0.5), a.sh, a.ch);
-  a.s1 = Ball(2L) * (a.sh * a.ch);
-  a.c1 = Ball(1L) - Ball(2L) * flint::sqr(a.sh);
+using Angle = AngleT<Ball>;
+/// theta's jets from sin and cos of theta/2 (Ball: every point of the ball; Dint: of the interval)
+template <class S>
+AngleT<S> angle_from(const S& theta, const S& sh, const S& ch, double lo, double hi) {
+  AngleT<S> a;
+  a.sh = sh, a.ch = ch;
+  a.s1 = S(2.0) * (sh * ch);
+  a.c1 = S(1.0) - S(2.0) * (sh * sh);
   a.th = jet::variable(theta);
   a.c = {a.c1, -a.s1, -a.c1};
-  a.t = {Ball(2L) * flint::sqr(a.sh), a.s1, a.c1};
-  a.s = {Ball(2L) * flint::sqr(a.ch), -a.s1, -a.c1};
-  a.lo = theta.to_double() - theta.radius();
-  a.hi = theta.to_double() + theta.radius();
+  a.t = {S(2.0) * (sh * sh), a.s1, a.c1};
+  a.s = {S(2.0) * (ch * ch), -a.s1, -a.c1};
+  a.lo = lo, a.hi = hi;
   return a;
+}
+Angle angle(const Ball& theta) {
+  Ball sh, ch;
+  flint::sin_cos(theta * Ball(0.5), sh, ch);
+  return angle_from(theta, sh, ch, theta.to_double() - theta.radius(), theta.to_double() + theta.radius());
 }
 
 /// p(c) in the three forms.
-struct CPoly {
-  std::vector<Ball> c, t, s;
+template <class S>
+struct CPolyT {
+  std::vector<S> c, t, s;
 };
+using CPoly = CPolyT<Ball>;
 template <class C>
 CPoly cpoly(const std::vector<C>& a) {
   CPoly p;
@@ -91,24 +102,64 @@ CPoly cpoly(const std::vector<C>& a) {
   p.s = balls(taylor_shift(a, C(-1L)));  // in (c + 1) = s
   return p;
 }
-jet::Jet<Ball> eval(const CPoly& p, const Angle& a) {
+template <class S>
+jet::Jet<S> eval(const CPolyT<S>& p, const AngleT<S>& a) {
   if (a.hi <= near_zero) return jet::horner(p.t, a.t);
   if (a.lo >= near_pi) return jet::horner(p.s, a.s);
   return jet::horner(p.c, a.c);
 }
 
+/// A ball's enclosure in double intervals (outward).
+Dint to_dint(const Ball& b) {
+  if (!b.finite()) return Dint::entire();
+  const Enclosure<rational> e = b.bounds();
+  const Dint d(Dint::from_rational(e.lo).lo, Dint::from_rational(e.hi).hi);
+  return d.finite() ? d : Dint::entire();
+}
+std::vector<Dint> to_dint(const std::vector<Ball>& v) {
+  std::vector<Dint> d;
+  for (const Ball& x : v) d.push_back(to_dint(x));
+  return d;
+}
+CPolyT<Dint> to_dint(const CPoly& p) { return {to_dint(p.c), to_dint(p.t), to_dint(p.s)}; }
+
 /// p(z) (real coefficients) in the three forms, evaluated at z = e^{j theta}.
-struct ZPoly {
-  std::vector<Ball> z, at1, atm1;
+template <class S>
+struct ZPolyT {
+  std::vector<S> z, at1, atm1;
 };
+using ZPoly = ZPolyT<Ball>;
 template <class C>
 ZPoly zpoly(const std::vector<C>& a) {
   return {balls(a), balls(taylor_shift(a, C(1L))), balls(taylor_shift(a, C(-1L)))};
 }
-CBall eval(const ZPoly& p, const Angle& a) {
-  if (a.hi <= near_zero) return flint::horner(p.at1, {-a.t.v, a.s1});     // z - 1 = (cos - 1) + j sin
-  if (a.lo >= near_pi) return flint::horner(p.atm1, {a.s.v, a.s1});       // z + 1 = (cos + 1) + j sin
-  return flint::horner(p.z, {a.c1, a.s1});
+template <class S, class Z = std::conditional_t<std::is_same_v<S, Ball>, CBall, CDint>>
+Z eval(const ZPolyT<S>& p, const AngleT<S>& a) {
+  if (a.hi <= near_zero) return horner(p.at1, Z{-a.t.v, a.s1});  // z - 1 = (cos - 1) + j sin
+  if (a.lo >= near_pi) return horner(p.atm1, Z{a.s.v, a.s1});    // z + 1 = (cos + 1) + j sin
+  return horner(p.z, Z{a.c1, a.s1});
+}
+ZPolyT<Dint> to_dint(const ZPoly& p) { return {to_dint(p.z), to_dint(p.at1), to_dint(p.atm1)}; }
+
+/// sin and cos of theta/2 and of n theta at theta = pi k/D or over [pi (k - 1)/D, pi (k + 1)/D]
+/// (box), in double intervals (numeric/dinterval.hpp) by sin_cos_pi's exact integer reduction,
+/// widened over a box by their Lipschitz bounds 1/2 and n times the half-width pi/D; theta's
+/// angle with them. false when the integers overflow.
+bool double_angle(long n, __int128 k, __int128 D, bool box, AngleT<Dint>& a, Dint& sn, Dint& cn) {
+  __int128 nk = 0;
+  Dint sh, ch;
+  if (__builtin_mul_overflow(static_cast<__int128>(n), k, &nk) || !sin_cos_pi(k, 2 * D, sh, ch) || !sin_cos_pi(nk, D, sn, cn))
+    return false;
+  const Dint pi = dint_pi(), inv = Dint(1.0) / Dint::from_i128(D);
+  Dint theta = Dint::from_i128(k) * inv * pi;
+  if (box) {
+    const double r = (inv * pi).hi, rn = (Dint(static_cast<double>(n)) * Dint(r)).hi;
+    theta = theta.widened(r).clamp(0, pi.hi);
+    sh = sh.widened(r / 2).clamp(-1, 1), ch = ch.widened(r / 2).clamp(-1, 1);
+    sn = sn.widened(rn).clamp(-1, 1), cn = cn.widened(rn).clamp(-1, 1);
+  }
+  a = angle_from(theta, sh, ch, theta.lo, theta.hi);
+  return true;
 }
 
 bool narrow_arg(const Ball& a) { return a.finite() && a.radius() < 0.25; }
@@ -116,6 +167,61 @@ bool narrow_arg(const Ball& a) { return a.finite() && a.radius() < 0.25; }
 }  // namespace
 
 // ---- the argument principle --------------------------------------------------------------------
+namespace {
+
+/// The change of arg c over the arc pi [k - 1, k + 1]/D in double intervals, by the three cases
+/// of schur_by_winding (each valid wherever its condition is proven on the arc); nullopt where
+/// they cannot decide it (the arc then goes to Arb, which decides it or splits it).
+class DoubleWinding {
+ public:
+  DoubleWinding(const ZPoly& P, const ZPoly& Q, long n) : P_(to_dint(P)), Q_(to_dint(Q)), n_(n) {}
+  std::optional<Dint> change(long i, int level, long M) const {
+    const __int128 D = static_cast<__int128>(M) << (level + 1), k = 2 * static_cast<__int128>(i) + 1;
+    Values X, A, B;
+    if (!at(k, D, true, X)) return std::nullopt;
+    const Dint nP = norm(X.P), nQ = norm(X.Q);
+    const CDint one{Dint(1.0), Dint(0.0)};
+    const bool p_large = nQ.hi < nP.lo && !contains_zero(X.P), q_large = nP.hi < nQ.lo && !contains_zero(X.Q);
+    if (!p_large && !q_large && contains_zero(X.znP + X.Q)) return std::nullopt;
+    if (!at(k - 1, D, false, A) || !at(k + 1, D, false, B)) return std::nullopt;
+    Dint change;
+    if (p_large) {  // arg c = n theta + arg P + arg(1 + Q/(z^n P))
+      const Dint turn = arg(B.P / A.P), rest = arg((one + B.Q / B.znP) / (one + A.Q / A.znP));
+      if (!narrow(turn) || !narrow(rest)) return std::nullopt;
+      change = Dint(2.0) * dint_pi() / Dint::from_i128(D) * Dint(static_cast<double>(n_)) + turn + rest;
+    } else if (q_large) {  // arg c = arg Q + arg(1 + z^n P/Q)
+      const Dint turn = arg(B.Q / A.Q), rest = arg((one + B.znP / B.Q) / (one + A.znP / A.Q));
+      if (!narrow(turn) || !narrow(rest)) return std::nullopt;
+      change = turn + rest;
+    } else {  // c misses 0 on the arc
+      change = arg((B.znP + B.Q) / (A.znP + A.Q));
+      if (!narrow(change)) return std::nullopt;
+    }
+    return change;
+  }
+
+ private:
+  struct Values {
+    CDint znP, Q, P;
+  };
+  bool at(__int128 k, __int128 D, bool box, Values& v) const {
+    AngleT<Dint> a;
+    Dint sn, cn;
+    if (!double_angle(n_, k, D, box, a, sn, cn)) return false;
+    v.P = eval(P_, a);
+    v.Q = eval(Q_, a);
+    v.znP = CDint{cn, sn} * v.P;
+    return true;
+  }
+  static bool narrow(const Dint& a) { return a.finite() && a.hi - a.lo < 0.5; }
+  ZPolyT<Dint> P_, Q_;
+  long n_;
+};
+
+Ball ball_of(const Dint& x) { return Ball::hull(exact_rational(x.lo), exact_rational(x.hi)); }
+
+}  // namespace
+
 Winding schur_by_winding(const DelayedLoop& L, const rational& K) {
   Winding w;
   const ZPoly P = L.exact ? zpoly(L.Pq) : zpoly(L.P);
@@ -141,6 +247,8 @@ Winding schur_by_winding(const DelayedLoop& L, const rational& K) {
   };
   const long M = 64;
   Ball total(0L);
+  Dint total_d(0.0);  // the changes decided in double intervals
+  const std::optional<DoubleWinding> dbl = double_pruning ? std::optional<DoubleWinding>(std::in_place, P, Q, L.n) : std::nullopt;
   struct Piece {
     long i;
     int level;
@@ -151,6 +259,13 @@ Winding schur_by_winding(const DelayedLoop& L, const rational& K) {
       const Piece pc = stack.back();
       stack.pop_back();
       ++w.boxes;
+      if (dbl) {
+        if (const std::optional<Dint> change = dbl->change(pc.i, pc.level, M)) {
+          total_d += *change;
+          ++w.double_boxes;
+          continue;
+        }
+      }
       const Ball a = theta_at(pc.i, pc.level, M), b = theta_at(pc.i + 1, pc.level, M);
       const Values X = values(flint::hull(a, b));
       const Ball nP = flint::norm(X.P), nQ = flint::norm(X.Q);
@@ -190,7 +305,11 @@ Winding schur_by_winding(const DelayedLoop& L, const rational& K) {
     }
   }
   // the count is (1/pi) times the change over [0, pi]: an integer, read off the ball
-  const Ball count = total / Ball::pi();
+  if (!total_d.finite()) {
+    w.why = "the winding number's double-interval sum overflowed";
+    return w;
+  }
+  const Ball count = (total + ball_of(total_d)) / Ball::pi();
   const double mid = count.to_double();
   const long k = std::lround(mid);
   if (!(count.radius() < 0.25 && std::abs(mid - static_cast<double>(k)) < 0.25)) {
@@ -280,25 +399,86 @@ CrossingForm crossing_form(long n, const std::vector<C>& P, const std::vector<C>
   return f;
 }
 
-struct CrossingValues {
-  jet::Jet<Ball> q;  // q, q', q''
-  Ball K;            // -Re(c0 conj c1)/|c1|^2
+template <class S>
+struct CrossingValuesT {
+  jet::Jet<S> q;  // q, q', q''
+  S K;            // -Re(c0 conj c1)/|c1|^2
 };
+using CrossingValues = CrossingValuesT<Ball>;
+/// q and K at an angle, given sin and cos of n theta (Ball: every point of the ball; Dint: of the interval).
+template <class S>
+CrossingValuesT<S> crossing_values(long n, const CPolyT<S>& RU_, const CPolyT<S>& SU_, const CPolyT<S>& RV_,
+                                   const CPolyT<S>& SV_, const CPolyT<S>& H1_, const AngleT<S>& a, const S& sn, const S& cn) {
+  const jet::Jet<S> Kn = jet::kernel_K(a.th, n, sn, cn, a.s1, a.c1);
+  const jet::Jet<S> cos_n{cn, -(sn * n), -((cn * n) * n)};
+  const jet::Jet<S> RU = eval(RU_, a), SU = eval(SU_, a);
+  CrossingValuesT<S> v;
+  v.q = Kn * RU + cos_n * SU + eval(SV_, a);
+  v.K = -((cn * RU.v - (sn * a.s1) * SU.v + eval(RV_, a).v) / eval(H1_, a).v);
+  return v;
+}
 CrossingValues crossing_values(const CrossingForm& f, const Ball& theta) {
   const Angle a = angle(theta);
   Ball sn, cn;
   flint::sin_cos(theta * f.n, sn, cn);
-  const jet::Jet<Ball> Kn = jet::kernel_K(a.th, f.n, sn, cn, a.s1, a.c1);
-  const jet::Jet<Ball> cos_n{cn, -(sn * f.n), -((cn * f.n) * f.n)};
-  const jet::Jet<Ball> RU = eval(f.RU, a), SU = eval(f.SU, a);
-  CrossingValues v;
-  v.q = Kn * RU + cos_n * SU + eval(f.SV, a);
-  v.K = -((cn * RU.v - (sn * a.s1) * SU.v + eval(f.RV, a).v) / eval(f.H1, a).v);
-  return v;
+  return crossing_values(f.n, f.RU, f.SU, f.RV, f.SV, f.H1, a, sn, cn);
 }
+
+/// q and K in double intervals (numeric/dinterval.hpp) at theta = pi k/D or over
+/// [pi (k - 1)/D, pi (k + 1)/D] (box), for the grid of the search (D = M 2^level): sin and cos of
+/// theta/2 and of n theta by sin_cos_pi's exact integer reduction, widened over a box by their
+/// Lipschitz bounds 1/2 and n times the half-width pi/D. nullopt when the integers overflow.
+class DoubleCrossings {
+ public:
+  explicit DoubleCrossings(const CrossingForm& f)
+      : n_(f.n), RU_(to_dint(f.RU)), SU_(to_dint(f.SU)), RV_(to_dint(f.RV)), SV_(to_dint(f.SV)), H1_(to_dint(f.H1)),
+        q0_(to_dint(f.q0)), qpi_(to_dint(f.qpi)) {}
+  std::optional<CrossingValuesT<Dint>> at(__int128 k, __int128 D, bool box) const {
+    AngleT<Dint> a;
+    Dint sn, cn;
+    if (!double_angle(n_, k, D, box, a, sn, cn)) return std::nullopt;
+    return crossing_values(n_, RU_, SU_, RV_, SV_, H1_, a, sn, cn);
+  }
+  const Dint& q0() const { return q0_; }
+  const Dint& qpi() const { return qpi_; }
+
+ private:
+  long n_;
+  CPolyT<Dint> RU_, SU_, RV_, SV_, H1_;
+  Dint q0_, qpi_;
+};
 
 Ball upper(const Ball& x) { return x.upper_end(); }
 double lower_double(const Ball& x) { return x.finite() ? x.to_double() - x.radius() : -HUGE_VAL; }
+
+/// A piece of the crossing search, the box pi [i, i + 1]/(M 2^level), decided in double
+/// intervals when they suffice: every gain on it above the best crossing (or <= 0), or no root of
+/// q on it (q of one sign; or q monotone with one sign at both ends; at theta = 0 and pi, q even
+/// about the end and moving away from q(end) != 0, or q'' of one sign where q(end) = 0), the tests
+/// of the Arb search in smallest_crossings. false: the piece needs the Arb search.
+template <class Above>
+bool settled_in_double(const DoubleCrossings& d, long i, int level, long M, bool q0_zero, bool qpi_zero, Above above) {
+  const __int128 D = static_cast<__int128>(M) << (level + 1), k = 2 * static_cast<__int128>(i) + 1;
+  const auto v = d.at(k, D, true);
+  if (!v) return false;
+  if (above(v->K)) return true;
+  const jet::Jet<Dint>& J = v->q;
+  const bool at_zero = i == 0, at_pi = i + 1 == (M << level);
+  if (at_zero || at_pi) {
+    const Dint& end = at_zero ? d.q0() : d.qpi();
+    const bool end_zero = at_zero ? q0_zero : qpi_zero;
+    if (!end_zero && !end.contains_zero() && !J.v.contains_zero()) return true;
+    if (!end_zero && !end.contains_zero() && !J.dd.contains_zero() && (end.positive() ? J.dd.positive() : J.dd.negative()))
+      return true;
+    return end_zero && !J.dd.contains_zero();
+  }
+  if (!J.v.contains_zero()) return true;
+  if (J.d.contains_zero()) return false;
+  const auto a = d.at(k - 1, D, false), b = d.at(k + 1, D, false);
+  if (!a || !b) return false;
+  const Dint &qa = a->q.v, &qb = b->q.v;
+  return !qa.contains_zero() && !qb.contains_zero() && qa.positive() == qb.positive();
+}
 
 }  // namespace
 
@@ -315,13 +495,25 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
   std::priority_queue<Piece> queue;
   const long budget = 64 * M + 100000;  // arcs: a degenerate q (identically 0 on an arc) cannot run away
   std::optional<Ball> best;  // the smallest upper end of a positive crossing gain found so far
+  double best_d = HUGE_VAL;  // a double >= best
   auto above = [&](const Ball& K) {  // every point of K is above the best crossing (or <= 0)
     if (!K.finite()) return false;
     if (!upper(K).positive()) return true;
     return best && best->below(K);
   };
+  auto above_d = [&](const Dint& K) { return K.finite() && (K.hi <= 0 || best_d < K.lo); };
+  // the double-interval twin of every test (numeric/dinterval.hpp), Arb only where it cannot decide
+  const std::optional<DoubleCrossings> dbl = double_pruning ? std::optional<DoubleCrossings>(f) : std::nullopt;
   auto keep = [&](long i, int level) {
     ++out.boxes;
+    if (dbl) {
+      if (const auto v = dbl->at(2 * static_cast<__int128>(i) + 1, static_cast<__int128>(M) << (level + 1), true)) {
+        ++out.double_boxes;
+        if (above_d(v->K)) return;
+        queue.push({v->K.finite() ? v->K.lo : -HUGE_VAL, i, level});
+        return;
+      }
+    }
     const Ball X = flint::hull(theta_at(i, level, M), theta_at(i + 1, level, M));
     const CrossingValues v = crossing_values(f, X);
     if (above(v.K)) return;
@@ -331,6 +523,10 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
   while (!queue.empty()) {
     const Piece pc = queue.top();
     queue.pop();
+    if (dbl && settled_in_double(*dbl, pc.i, pc.level, M, f.q0_zero, f.qpi_zero, above_d)) {
+      ++out.double_boxes;
+      continue;
+    }
     const long last = M << pc.level;
     const Ball a = theta_at(pc.i, pc.level, M), b = theta_at(pc.i + 1, pc.level, M), X = flint::hull(a, b);
     const CrossingValues v = crossing_values(f, X);
@@ -373,7 +569,10 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
           }
           if (K.positive()) {
             out.crossings.push_back({K, T});
-            if (!best || upper(K).below(*best)) best = upper(K);
+            if (!best || upper(K).below(*best)) {
+              best = upper(K);
+              best_d = arf_get_d(arb_midref(best->get()), ARF_RND_CEIL);  // best is exact (an end)
+            }
           }
           continue;
         }

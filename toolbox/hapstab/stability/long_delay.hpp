@@ -15,6 +15,9 @@
 //     integer m near n and near 0 (claim ext.stability.crossing_delay): no polynomial of degree n.
 //     Boxes are taken in the order of their smallest possible K = Re(-c0/c1); a crossing is
 //     isolated (q' of one sign, a sign change) and enclosed by interval Newton on q.
+// Every arc of both searches is first tried in double intervals with rounding bounds
+// (numeric/dinterval.hpp: sin, cos of theta/2 and of n theta at the arc's grid point pi k/D reduced
+// exactly in integers, atan/arg enclosed), Arb only where those cannot decide it (issue 48).
 // The work grows like n times the width of the frequency band where |P| and |Q| are comparable
 // (the loop's crossover region), at most ~ 4 n + 64 boxes per pass; memory does not grow with n.
 #pragma once
@@ -38,11 +41,25 @@ struct DelayedLoop {
   long degree() const { return n + static_cast<long>(P.size()) - 1; }
 };
 
+/// Both searches below first try each arc in double intervals with rounding bounds
+/// (numeric/dinterval.hpp) and take Arb only where those cannot decide it. An ArbOnly scope turns
+/// that off on its thread: Arb for every arc, the path before issue 48 (the benchmark's and the
+/// tests' comparison).
+inline thread_local bool double_pruning = true;
+struct ArbOnly {
+  bool saved = double_pruning;
+  ArbOnly() { double_pruning = false; }
+  ~ArbOnly() { double_pruning = saved; }
+  ArbOnly(const ArbOnly&) = delete;
+  ArbOnly& operator=(const ArbOnly&) = delete;
+};
+
 /// The Schur test of c(z, K) at one K by the argument principle (in balls at flint::ball_prec).
 struct Winding {
   Outcome outcome = Outcome::undecided;  ///< holds: every zero in |z| < 1
   long inside = -1;                      ///< zeros in |z| < 1 (when decided)
   long boxes = 0;                        ///< boxes the count took
+  long double_boxes = 0;                 ///< of them, those decided in double intervals
   std::string why;                       ///< when undecided
 };
 Winding schur_by_winding(const DelayedLoop& loop, const rational& K);
@@ -59,6 +76,7 @@ struct DelayCrossing {
 struct CrossingSearch {
   std::vector<DelayCrossing> crossings;
   long boxes = 0;
+  long double_boxes = 0;  ///< evaluations of an arc in double intervals (numeric/dinterval.hpp)
 };
 std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& loop, std::string& why);
 
