@@ -23,8 +23,6 @@ The reference's decision is the sign of mu = min over theta of lambda_min(He E-h
 sweep in double (numpy) over 32768 frequencies, then golden-section refinement of the 6 best local minima at 40 digits (mpmath.eigh),
 and theta = pi, and theta = 1e-18 (the limit theta -> 0+) at 60 digits.
 """
-import ast
-import cmath
 import math
 import tomllib
 from fractions import Fraction as Q
@@ -32,54 +30,9 @@ from fractions import Fraction as Q
 import mpmath as mp
 import numpy as np
 
-from indep_common import golden_section
+from indep_common import Expr, exact, golden, local_extrema  # noqa: F401 (Expr, exact: indep_coupling.py reads them here too)
 
 DPS = 40
-
-
-class Expr:
-    """One scene expression, compiled once: evaluated with mpmath (exact constants) or numpy."""
-    OK = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow,
-          ast.USub, ast.UAdd, ast.Name, ast.Load, ast.Constant)
-
-    def __init__(self, text, params):
-        tree = ast.parse(text.replace("^", "**"), mode="eval")
-        consts = []
-        for node in ast.walk(tree):
-            if not isinstance(node, self.OK):
-                raise ValueError(f"expression {text!r}: {type(node).__name__} not understood")
-            if isinstance(node, ast.Constant) and not isinstance(node.value, int):
-                raise ValueError(f"expression {text!r}: non-integer literal {node.value!r}")
-
-        class Lit(ast.NodeTransformer):
-            def visit_Constant(self, node):
-                consts.append(node.value)
-                return ast.copy_location(ast.Name(id=f"_k{len(consts) - 1}", ctx=ast.Load()), node)
-        tree = ast.fix_missing_locations(Lit().visit(tree))
-        self.code = compile(tree, "<scene>", "eval")
-        self.consts = consts
-        self.params = params
-        self.text = text
-
-    def _env(self, conv, var, val):
-        env = {f"_k{i}": conv(Q(c)) for i, c in enumerate(self.consts)}
-        env.update({k: conv(v) for k, v in self.params.items()})
-        env[var] = val
-        return env
-
-    def mp(self, var, val):
-        return eval(self.code, {"__builtins__": {}}, self._env(lambda q: mp.mpf(q.numerator) / q.denominator, var, val))
-
-    def np(self, var, val):
-        return eval(self.code, {"__builtins__": {}}, self._env(float, var, val))
-
-
-def exact(x):
-    if isinstance(x, int):
-        return Q(x)
-    if isinstance(x, str):
-        return Q(x.strip())
-    raise ValueError(f"not an exact number: {x!r}")
 
 
 class Scene:
@@ -180,11 +133,6 @@ def grid(K=32768):
     return np.pi * np.arange(1, K + 1) / K
 
 
-def golden(f, a, b, it=60):
-    _, c, d, _, fc, fd = golden_section(f, a, b, it)
-    return (c, fc) if fc < fd else (d, fd)
-
-
 def search(sc, extra=()):
     """min over theta in (0, pi] of lambda_min: dict(mu, theta, where, scale)."""
     th = grid()
@@ -262,13 +210,6 @@ def boundary_scale(sc0):
             cands.append(golden(negl, mp.mpf(a), mp.mpf(b), 50))
         t, v = min(cands, key=lambda c: c[1])
         return float(-v), float(t)
-
-
-def local_extrema(v, k=6):
-    """Indices of the k least local minima of the array v."""
-    n = len(v)
-    loc = [i for i in range(n) if v[i] <= (v[i - 1] if i else np.inf) and v[i] <= (v[i + 1] if i + 1 < n else np.inf)]
-    return sorted(loc, key=lambda i: v[i])[:k]
 
 
 # ---------------------------------------------------------------------------------------------
