@@ -240,3 +240,33 @@ def exact(x):
     if isinstance(x, str):
         return Q(x.strip())
     raise ValueError(f"not an exact number: {x!r}")
+
+
+def analyze_case_main(argv, scene_cls, decide, expect=(("feasible", "feasible"), ("witness", "infeasible (witness)"))):
+    """HAPSTAB SCENE [EXPECT]: one scene file through `multidof analyze --json` and a reference's
+    decide (indep_witness.py, indep_coupling.py); exit 0 when they agree (and hapstab's answer is
+    expect[EXPECT], e.g. feasible | witness), else 1."""
+    exe, path = argv[1], argv[2]
+    text = open(path).read()
+    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
+    j = json.loads(p.stdout)
+    out = decide(dict(tags={}), scene_cls(text), j, p.returncode)
+    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
+    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
+    want = dict(expect).get(argv[3]) if len(argv) > 3 else None
+    if want and out["tags"].get("hapstab") != want:
+        print(f"  expected hapstab's answer {want}")
+        return 1
+    return 0 if out["outcome"] == "agree" else 1
+
+
+def witness_decides(out, bad):
+    """hapstab's printed witness re-evaluated (bad: None when it holds, "boundary" when phi = 0 to 40
+    digits, else why it fails) into the case's outcome: True when that decides the case."""
+    if bad == "boundary":
+        out.update(outcome="reference undecided", why="hapstab's witness has phi = 0 to 40 digits")
+        return True
+    if bad:
+        out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
+        return True
+    return False

@@ -42,6 +42,7 @@ grid of (theta1, theta2) pairs, coordinate-wise, two rounds), theta = pi and the
 """
 import math
 import re
+import sys
 import tomllib
 from fractions import Fraction as Q
 
@@ -49,7 +50,7 @@ import mpmath as mp
 import numpy as np
 
 import indep_witness as IW
-from indep_common import Expr, exact, golden, local_extrema
+from indep_common import Expr, analyze_case_main, exact, golden, local_extrema, witness_decides
 
 DPS = 40
 
@@ -624,11 +625,7 @@ def decide(c, sc, j, rc):
             tags["witness z2"] = "-1" if z2 == (-1, 0) else "interior"
             tags["witness p = 0"] = all(Q(x) == 0 for x in w["p"]["re"] + w["p"]["im"])
             tags["witness u = 0 (environment side)"] = all(Q(x) == 0 for x in w["u"]["re"] + w["u"]["im"])
-        if bad == "boundary":
-            out.update(outcome="reference undecided", why="hapstab's witness has phi = 0 to 40 digits")
-            return out
-        if bad:
-            out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
+        if witness_decides(out, bad):
             return out
     elif w is not None:
         out.update(outcome="MISS", why=f"a theorem4_witness printed with the verdict {h}")
@@ -655,25 +652,7 @@ def decide(c, sc, j, rc):
     return out
 
 
-def main(argv):
-    """indep_coupling.py HAPSTAB SCENE [EXPECT]: one scene through `multidof analyze --json` and the
-    reference; exit 0 when they agree (and hapstab's answer is EXPECT: feasible | witness)."""
-    import json
-    import subprocess
-    exe, path = argv[1], argv[2]
-    text = open(path).read()
-    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
-    j = json.loads(p.stdout)
-    out = decide(dict(tags={}), CScene(text), j, p.returncode)
-    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
-    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
-    want = {"feasible": "feasible", "witness": "infeasible (witness)"}.get(argv[3]) if len(argv) > 3 else None
-    if want and out["tags"].get("hapstab") != want:
-        print(f"  expected hapstab's answer {want}")
-        return 1
-    return 0 if out["outcome"] == "agree" else 1
+SCENE = CScene  # what independent.py's check_analyze reads a case's text with
 
-
-if __name__ == "__main__":
-    import sys
-    sys.exit(main(sys.argv))
+if __name__ == "__main__":  # HAPSTAB SCENE [feasible | witness]: one scene through `multidof analyze` and this reference
+    sys.exit(analyze_case_main(sys.argv, SCENE, decide))

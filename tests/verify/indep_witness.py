@@ -24,13 +24,14 @@ sweep in double (numpy) over 32768 frequencies, then golden-section refinement o
 and theta = pi, and theta = 1e-18 (the limit theta -> 0+) at 60 digits.
 """
 import math
+import sys
 import tomllib
 from fractions import Fraction as Q
 
 import mpmath as mp
 import numpy as np
 
-from indep_common import Expr, exact, golden, local_extrema  # noqa: F401 (Expr, exact: indep_coupling.py reads them here too)
+from indep_common import Expr, analyze_case_main, exact, golden, local_extrema, witness_decides
 
 DPS = 40
 
@@ -417,11 +418,7 @@ def decide(c, sc, j, rc):
     if h == "infeasible (witness)":
         bad = verify_witness(sc, j.get("witness"), out)
         tags["witness verified"] = bad is None
-        if bad == "boundary":
-            out.update(outcome="reference undecided", why="hapstab's witness has phi = 0 to 40 digits")
-            return out
-        if bad:
-            out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
+        if witness_decides(out, bad):
             return out
     if tags["reference"] == "undecided":
         out.update(outcome="reference undecided", why=f"mu = {mp.nstr(mu, 5)} within the reference's tolerance")
@@ -438,25 +435,7 @@ def decide(c, sc, j, rc):
     return out
 
 
-def main(argv):
-    """indep_witness.py HAPSTAB SCENE [EXPECT]: one scene file through `multidof analyze --json` and the
-    reference; exit 0 when they agree (and hapstab's answer is EXPECT: feasible | witness), else 1."""
-    import json
-    import subprocess
-    exe, path = argv[1], argv[2]
-    text = open(path).read()
-    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
-    j = json.loads(p.stdout)
-    out = decide(dict(tags={}), Scene(text), j, p.returncode)
-    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
-    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
-    want = {"feasible": "feasible", "witness": "infeasible (witness)"}.get(argv[3]) if len(argv) > 3 else None
-    if want and out["tags"].get("hapstab") != want:
-        print(f"  expected hapstab's answer {want}")
-        return 1
-    return 0 if out["outcome"] == "agree" else 1
+SCENE = Scene  # what independent.py's check_analyze reads a case's text with
 
-
-if __name__ == "__main__":
-    import sys
-    sys.exit(main(sys.argv))
+if __name__ == "__main__":  # HAPSTAB SCENE [feasible | witness]: one scene through `multidof analyze` and this reference
+    sys.exit(analyze_case_main(sys.argv, SCENE, decide))
