@@ -871,6 +871,14 @@ def test_multidof_witnesses_are_the_commands():
     assert len(t4["phi"]) == len(t4["directions"]) >= 1 and all(Fraction(x) <= 0 for x in t4["phi"]) and t4["phi_nonpositive"]
     assert [float(Fraction(x)) for x in t4["phi"]] == pytest.approx(t4["phi_numeric"])
     assert "frequency-domain witness" in b.loop_as_written["why"]
+    # Theorem 5's side of --conservatism: the value where it stops concluding, and the witness why
+    scene = cli_scenes / "conservatism_coupling_witness_wall.toml"
+    r = hapstab.stability(scene=scene, max="kap", conservatism=True)
+    code, j = cli("stability", "--scene", str(scene), "--max", "kap", "--conservatism")
+    na = r.theorem5["not_at"]
+    assert na["theorem4_witness"] == j["theorem5"]["not_at"]["theorem4_witness"] and na["status"] == "exact"
+    assert all(Fraction(x) <= 0 for x in na["theorem4_witness"]["phi"]) and "two-frequency witness" in na["why"]
+    assert r.theorem5["concludes_at"]["theorem4_witness"] is None
     # a loop Theorem 4 was not proven infeasible for prints none
     c = hapstab.multidof.analyze(EXAMPLES / "multidof_case_ii_nominal.toml")
     assert c.loop_as_written["theorem4_witness"] is None and c.witness is None
