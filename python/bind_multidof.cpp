@@ -9,6 +9,7 @@
 
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/multidof/scene_analysis.hpp"
+#include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "python/binding.hpp"
 
@@ -41,7 +42,7 @@ py::list premises(const std::vector<multidof::AssumptionCheck>& checks) {
 }
 
 /// A loop decided as written: {stable (True/False/None), coupling, method, status, why, states,
-/// spectral_radius_numeric}.
+/// spectral_radius_numeric, theorem4_witness}.
 py::dict loop_dict(const multidof::LoopAsWritten& law) {
   py::dict d;
   d["stable"] = law.stable ? py::object(py::bool_(*law.stable)) : py::object(py::none());
@@ -51,6 +52,7 @@ py::dict loop_dict(const multidof::LoopAsWritten& law) {
   d["why"] = law.why;
   d["states"] = law.states;
   d["spectral_radius_numeric"] = law.spectral_radius ? py::object(py::float_(*law.spectral_radius)) : py::object(py::none());
+  d["theorem4_witness"] = from_json(multidof::coupling_witness_json(law.theorem4_witness));
   return d;
 }
 
@@ -99,6 +101,9 @@ py::dict analyze(const std::string& scene, bool is_text, const std::map<std::str
   d["solver"] = r.solver_detail;
   d["assumptions"] = premises(a.premises);
   d["loop_as_written"] = loop_dict(a.loop);
+  d["path"] = r.path.empty() ? py::object(py::none()) : py::object(py::str(r.path));
+  d["witness"] = from_json(multidof::frequency_witness_json(r.witness));
+  d["weighted_witness"] = from_json(multidof::weighted_witness_json(r.weighted_witness));
   if (r.min_found) {
     py::dict m;
     m["q_v"] = matrix(r.Q_V_min);
@@ -165,6 +170,7 @@ py::dict design(const std::string& scene, bool is_text, const std::map<std::stri
     e["certified"] = v.verdict.proven();
     e["status"] = to_string(v.verdict.status);
     e["detail"] = v.verdict.evidence;
+    e["witness"] = from_json(multidof::coupling_witness_json(v.witness));
     ver.append(e);
   }
   d["verification"] = ver;

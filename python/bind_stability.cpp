@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "hapstab/conservatism/theorem5_max.hpp"
+#include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/lmi/passivity_level_report.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -281,6 +282,7 @@ py::object point(const std::optional<conservatism::PointVerdict>& v) {
   d["at"] = to_decimal(v->at, 17);
   d["status"] = to_string(v->status);
   d["why"] = v->why;
+  d["theorem4_witness"] = from_json(multidof::coupling_witness_json(v->witness));  // Theorem 5's not_at: how it was proven
   return d;
 }
 

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,6 +52,10 @@ ParseOptions parse_options(char variable, const rational& T, std::map<std::strin
 /// enclosure rounded outward to doubles; lo_text/hi_text to `digits` significant decimal
 /// digits, outward (exact decimals that still enclose). Without an enclosure (a numeric value
 /// with no stated error): lo = hi = mid, texts of mid, and the status says numeric.
+/// JSON the library builds for the command line (multidof/witness_json.hpp), as Python objects
+/// (dict, list, str, float, bool, None), so that both print the same object.
+inline py::object from_json(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
+
 py::dict record(const Certified<rational>& c, int digits);
 /// The record of an infinite value (b* = inf, a gain stable for every K): value, lo, hi all +inf.
 py::dict record_infinite(Status status, const std::string& method, const std::string& note);

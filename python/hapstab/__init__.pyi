@@ -300,7 +300,11 @@ class Analysis(Result):
     facial_reduction: str
     solver: str
     assumptions: List[Dict[str, Any]]      # [{name, holds, outcome, certified, detail}]
-    loop_as_written: Dict[str, Any]        # {stable, coupling, method, status, why, states, spectral_radius_numeric}
+    loop_as_written: Dict[str, Any]        # {stable, coupling, method, status, why, states, spectral_radius_numeric,
+                                           #  theorem4_witness: Theorem 4's two-frequency witness (dict) or None}
+    path: Optional[str]                    # the planner's path that decided (None: none did)
+    witness: Optional[Dict[str, Any]]      # (16) infeasible by one frequency: {theta, z, u, phi, phi_negative, form}
+    weighted_witness: Optional[Dict[str, Any]]  # ... by several: {points, directions, sums, sums_numeric, sums_nonpositive, form}
     hidden_modes: List[Dict[str, Any]]
     least_dissipative: Optional[Dict[str, Any]]
     scene: str
@@ -332,7 +336,7 @@ class Design(Result):
     gamma: List[float]
     q_v: npt.NDArray[np.float64]
     delta_v: npt.NDArray[np.float64]
-    verification: List[Dict[str, Any]]     # [{name, verdict, certified, status, detail}]
+    verification: List[Dict[str, Any]]     # [{name, verdict, certified, status, detail, witness}]
     loop_with_v: Optional[Dict[str, Any]]
     simulation: Optional[Dict[str, Any]]   # {decays, text}
     warning: Optional[str]

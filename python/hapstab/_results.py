@@ -505,10 +505,12 @@ class Analysis(Result):
     certified, verdict ('feasible', 'infeasible', 'undecided'), certificate, stability_concluded,
     premises_hold, premise_failure ('' or the first premise that does not hold), assumptions
     ([{name, holds, outcome, certified, detail}]: Assumption 1, then the blocks' hidden modes),
-    loop_as_written ({stable, coupling, method, status, why, states, spectral_radius_numeric}),
-    hidden_modes, gamma, x, q_v, delta_v_required (numpy arrays), margin, facial_reduction,
-    solver, least_dissipative ({q_v, norm, delta_v, gamma, point_certified, minimality} or None),
-    scene, T, dofs, delay, delay_text, seconds."""
+    loop_as_written ({stable, coupling, method, status, why, states, spectral_radius_numeric,
+    theorem4_witness}), hidden_modes, gamma, x, q_v, delta_v_required (numpy arrays), margin,
+    facial_reduction, solver, path, witness and weighted_witness (the exact witnesses of (16)'s
+    infeasibility as `multidof analyze --json` prints them, rationals as "p/q" strings, or None;
+    docs/json.md), least_dissipative ({q_v, norm, delta_v, gamma, point_certified, minimality} or
+    None), scene, T, dofs, delay, delay_text, seconds."""
 
     _symbol = r"\mathrm{margin}"
     _name = "the LMI margin"

@@ -847,6 +847,43 @@ def test_multidof_hidden_modes_and_premises():
     assert m["abs"] == (2.0, 2.0) and m["re"] == (2.0, 2.0) and m["discrete"] is True
 
 
+def _on_the_circle(z):
+    re, im = (Fraction(x) for x in z)
+    return re * re + im * im == 1
+
+
+def test_multidof_witnesses_are_the_commands():
+    # issue 46: the exact witnesses of infeasibility come back as `multidof analyze --json` prints
+    # them (rationals as "p/q" strings): (16)'s one-frequency witness, and Theorem 4's two-frequency
+    # witness for the scene's own coupling (loop_as_written)
+    cli_scenes = Path(__file__).resolve().parents[1] / "cli" / "scenes"
+    a = hapstab.multidof.analyze(cli_scenes / "witness_interior_wall.toml")
+    code, j = cli("multidof", "analyze", "--scene", str(cli_scenes / "witness_interior_wall.toml"))
+    assert a.path == j["path"] == "frequency-domain witness" and not a.feasible and a.certified
+    assert a.witness == j["witness"] and a.weighted_witness is None and j["weighted_witness"] is None
+    w = a.witness
+    assert _on_the_circle(w["z"]) and any(Fraction(x) != 0 for x in w["u"]) and w["phi_negative"] and w["phi"] < 0
+    b = hapstab.multidof.analyze(cli_scenes / "coupling_witness_linked_walls.toml")
+    code, j = cli("multidof", "analyze", "--scene", str(cli_scenes / "coupling_witness_linked_walls.toml"))
+    t4 = b.loop_as_written["theorem4_witness"]
+    assert t4 is not None and t4 == j["loop_as_written"]["theorem4_witness"]
+    assert _on_the_circle(t4["z1"]) and _on_the_circle(t4["z2"]) and len(t4["p"]["re"]) == len(t4["u"]["im"]) == b.dofs
+    assert len(t4["phi"]) == len(t4["directions"]) >= 1 and all(Fraction(x) <= 0 for x in t4["phi"]) and t4["phi_nonpositive"]
+    assert [float(Fraction(x)) for x in t4["phi"]] == pytest.approx(t4["phi_numeric"])
+    assert "frequency-domain witness" in b.loop_as_written["why"]
+    # Theorem 5's side of --conservatism: the value where it stops concluding, and the witness why
+    scene = cli_scenes / "conservatism_coupling_witness_wall.toml"
+    r = hapstab.stability(scene=scene, max="kap", conservatism=True)
+    code, j = cli("stability", "--scene", str(scene), "--max", "kap", "--conservatism")
+    na = r.theorem5["not_at"]
+    assert na["theorem4_witness"] == j["theorem5"]["not_at"]["theorem4_witness"] and na["status"] == "exact"
+    assert all(Fraction(x) <= 0 for x in na["theorem4_witness"]["phi"]) and "two-frequency witness" in na["why"]
+    assert r.theorem5["concludes_at"]["theorem4_witness"] is None
+    # a loop Theorem 4 was not proven infeasible for prints none
+    c = hapstab.multidof.analyze(EXAMPLES / "multidof_case_ii_nominal.toml")
+    assert c.loop_as_written["theorem4_witness"] is None and c.witness is None
+
+
 def test_multidof_scene_text_names_no_temporary_file():
     text = (EXAMPLES / "multidof_case_i_nominal.toml").read_text().replace("[multidof]", "[multidof]\nops = 1", 1)
     with pytest.raises(hapstab.InputError) as e:

@@ -6,6 +6,7 @@ Nothing here comes from hapstab's sources: the references evaluate the paper's d
 directly (indep_passivity.py: paper 001 (45)/(54); indep_loop.py: the sampled loop built as a
 state-space map per period).
 """
+import ast
 import json
 import os
 import subprocess
@@ -14,6 +15,7 @@ import time
 from fractions import Fraction as Q
 
 import mpmath as mp
+import numpy as np
 
 
 def fstr(q):
@@ -180,3 +182,91 @@ def golden_section(f, a, b, it=60, tol=None):
             d = a + g * (b - a)
             fd = f(d)
     return a, c, d, b, fc, fd
+
+
+def golden(f, a, b, it=60):
+    """golden_section's better end: (argmin, min)."""
+    _, c, d, _, fc, fd = golden_section(f, a, b, it)
+    return (c, fc) if fc < fd else (d, fd)
+
+
+def local_extrema(v, k=6):
+    """Indices of the k least local minima of the array v."""
+    n = len(v)
+    loc = [i for i in range(n) if v[i] <= (v[i - 1] if i else np.inf) and v[i] <= (v[i + 1] if i + 1 < n else np.inf)]
+    return sorted(loc, key=lambda i: v[i])[:k]
+
+
+class Expr:
+    """One scene expression, compiled once: evaluated with mpmath (exact constants) or numpy."""
+    OK = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow,
+          ast.USub, ast.UAdd, ast.Name, ast.Load, ast.Constant)
+
+    def __init__(self, text, params):
+        tree = ast.parse(text.replace("^", "**"), mode="eval")
+        consts = []
+        for node in ast.walk(tree):
+            if not isinstance(node, self.OK):
+                raise ValueError(f"expression {text!r}: {type(node).__name__} not understood")
+            if isinstance(node, ast.Constant) and not isinstance(node.value, int):
+                raise ValueError(f"expression {text!r}: non-integer literal {node.value!r}")
+
+        class Lit(ast.NodeTransformer):
+            def visit_Constant(self, node):
+                consts.append(node.value)
+                return ast.copy_location(ast.Name(id=f"_k{len(consts) - 1}", ctx=ast.Load()), node)
+        tree = ast.fix_missing_locations(Lit().visit(tree))
+        self.code = compile(tree, "<scene>", "eval")
+        self.consts = consts
+        self.params = params
+        self.text = text
+
+    def _env(self, conv, var, val):
+        env = {f"_k{i}": conv(Q(c)) for i, c in enumerate(self.consts)}
+        env.update({k: conv(v) for k, v in self.params.items()})
+        env[var] = val
+        return env
+
+    def mp(self, var, val):
+        return eval(self.code, {"__builtins__": {}}, self._env(lambda q: mp.mpf(q.numerator) / q.denominator, var, val))
+
+    def np(self, var, val):
+        return eval(self.code, {"__builtins__": {}}, self._env(float, var, val))
+
+
+def exact(x):
+    if isinstance(x, int):
+        return Q(x)
+    if isinstance(x, str):
+        return Q(x.strip())
+    raise ValueError(f"not an exact number: {x!r}")
+
+
+def analyze_case_main(argv, scene_cls, decide, expect=(("feasible", "feasible"), ("witness", "infeasible (witness)"))):
+    """HAPSTAB SCENE [EXPECT]: one scene file through `multidof analyze --json` and a reference's
+    decide (indep_witness.py, indep_coupling.py); exit 0 when they agree (and hapstab's answer is
+    expect[EXPECT], e.g. feasible | witness), else 1."""
+    exe, path = argv[1], argv[2]
+    text = open(path).read()
+    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
+    j = json.loads(p.stdout)
+    out = decide(dict(tags={}), scene_cls(text), j, p.returncode)
+    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
+    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
+    want = dict(expect).get(argv[3]) if len(argv) > 3 else None
+    if want and out["tags"].get("hapstab") != want:
+        print(f"  expected hapstab's answer {want}")
+        return 1
+    return 0 if out["outcome"] == "agree" else 1
+
+
+def witness_decides(out, bad):
+    """hapstab's printed witness re-evaluated (bad: None when it holds, "boundary" when phi = 0 to 40
+    digits, else why it fails) into the case's outcome: True when that decides the case."""
+    if bad == "boundary":
+        out.update(outcome="reference undecided", why="hapstab's witness has phi = 0 to 40 digits")
+        return True
+    if bad:
+        out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
+        return True
+    return False

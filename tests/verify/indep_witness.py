@@ -23,63 +23,17 @@ The reference's decision is the sign of mu = min over theta of lambda_min(He E-h
 sweep in double (numpy) over 32768 frequencies, then golden-section refinement of the 6 best local minima at 40 digits (mpmath.eigh),
 and theta = pi, and theta = 1e-18 (the limit theta -> 0+) at 60 digits.
 """
-import ast
-import cmath
 import math
+import sys
 import tomllib
 from fractions import Fraction as Q
 
 import mpmath as mp
 import numpy as np
 
-from indep_common import golden_section
+from indep_common import Expr, analyze_case_main, exact, golden, local_extrema, witness_decides
 
 DPS = 40
-
-
-class Expr:
-    """One scene expression, compiled once: evaluated with mpmath (exact constants) or numpy."""
-    OK = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow,
-          ast.USub, ast.UAdd, ast.Name, ast.Load, ast.Constant)
-
-    def __init__(self, text, params):
-        tree = ast.parse(text.replace("^", "**"), mode="eval")
-        consts = []
-        for node in ast.walk(tree):
-            if not isinstance(node, self.OK):
-                raise ValueError(f"expression {text!r}: {type(node).__name__} not understood")
-            if isinstance(node, ast.Constant) and not isinstance(node.value, int):
-                raise ValueError(f"expression {text!r}: non-integer literal {node.value!r}")
-
-        class Lit(ast.NodeTransformer):
-            def visit_Constant(self, node):
-                consts.append(node.value)
-                return ast.copy_location(ast.Name(id=f"_k{len(consts) - 1}", ctx=ast.Load()), node)
-        tree = ast.fix_missing_locations(Lit().visit(tree))
-        self.code = compile(tree, "<scene>", "eval")
-        self.consts = consts
-        self.params = params
-        self.text = text
-
-    def _env(self, conv, var, val):
-        env = {f"_k{i}": conv(Q(c)) for i, c in enumerate(self.consts)}
-        env.update({k: conv(v) for k, v in self.params.items()})
-        env[var] = val
-        return env
-
-    def mp(self, var, val):
-        return eval(self.code, {"__builtins__": {}}, self._env(lambda q: mp.mpf(q.numerator) / q.denominator, var, val))
-
-    def np(self, var, val):
-        return eval(self.code, {"__builtins__": {}}, self._env(float, var, val))
-
-
-def exact(x):
-    if isinstance(x, int):
-        return Q(x)
-    if isinstance(x, str):
-        return Q(x.strip())
-    raise ValueError(f"not an exact number: {x!r}")
 
 
 class Scene:
@@ -180,11 +134,6 @@ def grid(K=32768):
     return np.pi * np.arange(1, K + 1) / K
 
 
-def golden(f, a, b, it=60):
-    _, c, d, _, fc, fd = golden_section(f, a, b, it)
-    return (c, fc) if fc < fd else (d, fd)
-
-
 def search(sc, extra=()):
     """min over theta in (0, pi] of lambda_min: dict(mu, theta, where, scale)."""
     th = grid()
@@ -262,13 +211,6 @@ def boundary_scale(sc0):
             cands.append(golden(negl, mp.mpf(a), mp.mpf(b), 50))
         t, v = min(cands, key=lambda c: c[1])
         return float(-v), float(t)
-
-
-def local_extrema(v, k=6):
-    """Indices of the k least local minima of the array v."""
-    n = len(v)
-    loc = [i for i in range(n) if v[i] <= (v[i - 1] if i else np.inf) and v[i] <= (v[i + 1] if i + 1 < n else np.inf)]
-    return sorted(loc, key=lambda i: v[i])[:k]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -476,11 +418,7 @@ def decide(c, sc, j, rc):
     if h == "infeasible (witness)":
         bad = verify_witness(sc, j.get("witness"), out)
         tags["witness verified"] = bad is None
-        if bad == "boundary":
-            out.update(outcome="reference undecided", why="hapstab's witness has phi = 0 to 40 digits")
-            return out
-        if bad:
-            out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
+        if witness_decides(out, bad):
             return out
     if tags["reference"] == "undecided":
         out.update(outcome="reference undecided", why=f"mu = {mp.nstr(mu, 5)} within the reference's tolerance")
@@ -497,25 +435,7 @@ def decide(c, sc, j, rc):
     return out
 
 
-def main(argv):
-    """indep_witness.py HAPSTAB SCENE [EXPECT]: one scene file through `multidof analyze --json` and the
-    reference; exit 0 when they agree (and hapstab's answer is EXPECT: feasible | witness), else 1."""
-    import json
-    import subprocess
-    exe, path = argv[1], argv[2]
-    text = open(path).read()
-    p = subprocess.run([exe, "multidof", "analyze", "--scene", path, "--json"], capture_output=True, text=True, timeout=300)
-    j = json.loads(p.stdout)
-    out = decide(dict(tags={}), Scene(text), j, p.returncode)
-    print(f"{path}: {out['outcome']}; hapstab: {out.get('hapstab', '')[:200]}")
-    print(f"  reference: {out.get('ref_text')}" + (f"; {out['why']}" if out.get("why") else ""))
-    want = {"feasible": "feasible", "witness": "infeasible (witness)"}.get(argv[3]) if len(argv) > 3 else None
-    if want and out["tags"].get("hapstab") != want:
-        print(f"  expected hapstab's answer {want}")
-        return 1
-    return 0 if out["outcome"] == "agree" else 1
+SCENE = Scene  # what independent.py's check_analyze reads a case's text with
 
-
-if __name__ == "__main__":
-    import sys
-    sys.exit(main(sys.argv))
+if __name__ == "__main__":  # HAPSTAB SCENE [feasible | witness]: one scene through `multidof analyze` and this reference
+    sys.exit(analyze_case_main(sys.argv, SCENE, decide))

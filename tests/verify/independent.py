@@ -4,7 +4,7 @@ code and no formula-level shortcut with it (issue 46, "The campaigns that would 
 these"; docs/verification.md, "Independent campaigns").
 
   tests/verify/independent.py [--hapstab build/hapstab]
-                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness]
+                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness,coupling_witness]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -51,6 +51,18 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  a violation found, or a certified "infeasible" where the condition holds, is a miss.
                  "reference undecided" (|mu| within 1e-25, or a witness with phi = 0 to 40 digits) is
                  counted apart, never as agreement.
+  coupling_witness  `multidof analyze --scene S` on the witness criterion's environments (no delay; a
+                 wall's spring one sample late, K/z, in 70 %: Re E-hat < 0) with a [coupling] of
+                 spring-damper compliances (a constant cross-compliance in 30 % of the multi-DOF
+                 ones; the DC condition or V-hat's OSP failing in some), E's gain near Theorem 4's
+                 boundary (1e-2, 1e-4, 1e-6 either side) or far from it (indep_coupling.py): hapstab's
+                 verdict of Theorem 4 for the scene's own coupling (loop_as_written) against the
+                 frequency-domain reference -- mu = min lambda_min([[Delta + He E-hat(z1), He E-hat(z1)],
+                 [He E-hat(z1), He V-hat(z2)^-1 + He E-hat(z1)]]) over (z1, z2), sigma = min lambda_min(He
+                 V-hat^-1) -- evaluated from the scene's text in mpmath. A printed theorem4_witness
+                 (z1, z2, p, u) is re-evaluated at 50 digits (|z| = 1 exactly, [p; V-hat(z2) u] != 0
+                 exactly, phi <= 0 on every component); one-DOF components are decided completely,
+                 several-DOF ones only when mu < 0 or sigma < 0.
 
 Outcomes per case: agree, MISS (a disagreement: printed with the command line and the
 reference value; exit 1), REFERENCE MISSED (hapstab's own maximiser shows a value the reference's
@@ -78,6 +90,7 @@ import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_passivity as IP  # noqa: E402
 import indep_witness as IW  # noqa: E402
+import indep_coupling as ICW  # noqa: E402
 from indep_common import SumTF, dec, run_hapstab, run_hapstab_scene, keep_scene_if_missed, shell_line  # noqa: E402
 
 # relative tolerances, and why:
@@ -949,9 +962,11 @@ def case_witness(rng):
     return c
 
 
-def check_witness(c, exe, timeout):
+def check_analyze(c, exe, timeout, prefix, ref):
+    """`multidof analyze --scene S --json` on the case's scene text and the reference module `ref`'s
+    decide (indep_witness, indep_coupling): the case's outcome."""
     import tempfile
-    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_witness_") as f:
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix=prefix) as f:
         f.write(c["text"])
     args = ["multidof", "analyze", "--scene", f.name]
     rc, j, err, dt = run_hapstab(exe, args, timeout)
@@ -963,11 +978,15 @@ def check_witness(c, exe, timeout):
     elif j is None or rc not in (0, 1, 3):
         out.update(outcome="MISS", why=f"exit {rc}, no JSON: {err[-300:]}")
     else:
-        r = IW.decide(c, IW.Scene(c["text"]), j, rc)
+        r = ref.decide(c, ref.SCENE(c["text"]), j, rc)
         r.update(seconds=dt, scene=c["text"], args=args)
         out = r
     keep_scene_if_missed(out, f.name)
     return out
+
+
+def check_witness(c, exe, timeout):
+    return check_analyze(c, exe, timeout, "indep_witness_", IW)
 
 
 BRANCHES_WITNESS = [  # compared: hapstab's certified verdict of (16) against the reference's
@@ -976,6 +995,26 @@ BRANCHES_WITNESS = [  # compared: hapstab's certified verdict of (16) against th
     ("reference minimiser", "theta = pi", 0.02), ("reference minimiser", "theta -> 0", 0.02),
     ("reference minimiser", "interior", 0.1), ("near the boundary", True, 0.1),
     ("family", "contact", 0.08), ("family", "two parts", 0.03), ("resonance near the circle", True, 0.03),
+]
+
+
+# ---------------------------------------------------------------------------------------------
+# multidof analyze --scene S with a [coupling]: Theorem 4 for the scene's own coupling
+
+
+def case_coupling_witness(rng):
+    return ICW.gen(rng)
+
+
+def check_coupling_witness(c, exe, timeout):
+    return check_analyze(c, exe, timeout, "indep_coupling_", ICW)
+
+
+BRANCHES_COUPLING_WITNESS = [  # compared: hapstab's certified verdict of Theorem 4 for the coupling
+    ("hapstab", "feasible", 0.15), ("hapstab", "infeasible (witness)", 0.02), ("witness verified", True, 0.02),
+    ("reference", "holds", 0.1), ("reference", "violated (witness)", 0.15), ("near the boundary", True, 0.05),
+    ("DC condition fails", True, 0.02), ("cross-coupled V", True, 0.02), ("family", "contact", 0.05),
+    ("family", "two parts", 0.05), ("family", "linked walls", 0.05),
 ]
 
 
@@ -989,6 +1028,7 @@ CRITERIA = {
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
     "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
     "witness": (case_witness, check_witness, BRANCHES_WITNESS),
+    "coupling_witness": (case_coupling_witness, check_coupling_witness, BRANCHES_COUPLING_WITNESS),
 }
 
 
@@ -999,6 +1039,7 @@ MARGIN_TEXT = {  # what each criterion's distance from the boundary is (the defa
     "scene_coupling": "|1 - rho| at the scene's value of g, the first value decided; n/a: no boundary within g_ref 2^-10..2^10 (double scan)",
     "charpoly": "1 - rho of M in double",
     "witness": "the reference's min over theta of lambda_min(He E-hat + Delta_D), relative to 1 + max Delta_D",
+    "coupling_witness": "min(|mu|, |sigma|) of the reference, relative to 1 + max Delta_D",
 }
 
 
@@ -1015,7 +1056,8 @@ def margin_bucket(m):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--hapstab", default="build/hapstab")
-    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness")
+    ap.add_argument("--criterion", default="bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness,"
+                                          "coupling_witness")
     ap.add_argument("--cases", type=int, default=100)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--first", type=int, default=0)

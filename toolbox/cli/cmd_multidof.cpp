@@ -12,7 +12,10 @@
 // JSON keys, analyze: feasible, stability_concluded (feasible, certified and Assumption 1 holds:
 //   Theorem 5's conclusion, stable for every coupling whose Delta_V >= delta_v_required),
 //   loop_as_written {stable (true|false|null), coupling, method, status, why, states,
-//   spectral_radius_numeric} (the scene's own loop: multidof/loop_as_written.hpp), hidden_modes
+//   spectral_radius_numeric, theorem4_witness (cli/witness_json.hpp: the two-frequency witness that
+//   proved Theorem 4's program with the scene's coupling infeasible, or null)} (the scene's own
+//   loop: multidof/loop_as_written.hpp), witness and weighted_witness (the frequency-domain
+//   witnesses of (16)'s infeasibility, or null), hidden_modes
 //   [{block, kind, where, abs|re, stable}] (sim/hidden_modes.hpp), delay (n of [delay] z^-n, folded
 //   into E), certified, verdict, certificate, gamma (gamma_i of Gamma), x (the g_i of X), q_v,
 //   delta_v_required, margin, facial_reduction, least_dissipative {q_v, norm, delta_v, gamma,
@@ -23,7 +26,7 @@
 //   the exit-0 verdict), verdict (the text's last line), feasible and certified (a V passed the
 //   LMI checks; with a premise failing that is no stability conclusion), converged, iterations, trace_gap, convex_infeasible,
 //   convex_certified, A_V, B_V, C_V, D_V, gamma, q_v, verification [{name, verdict (pass|fail|
-//   undecided), certified, detail}], loop_with_v (as loop_as_written, for the loop with the designed
+//   undecided), certified, detail, witness (Theorem 4's two-frequency witness, or null)}], loop_with_v (as loop_as_written, for the loop with the designed
 //   V), facial_reduction, path (the design path that decided, or null), plan [{path, fate, why}]
 //   (multidof/planner.hpp: every design path's fate), hidden_modes, warning (the simulation's numeric observation, or null),
 //   contradiction (a simulation against a certificate, or null: exit 3), message, assumptions.
@@ -52,6 +55,7 @@
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/multidof/scene_analysis.hpp"
+#include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::cli {
@@ -127,7 +131,8 @@ json law_json(const multidof::LoopAsWritten& law) {
           {"status", law.stable ? to_string(law.status) : "undecided"},
           {"why", law.why},
           {"states", law.states},
-          {"spectral_radius_numeric", law.spectral_radius ? nlohmann::json(*law.spectral_radius) : nlohmann::json(nullptr)}};
+          {"spectral_radius_numeric", law.spectral_radius ? nlohmann::json(*law.spectral_radius) : nlohmann::json(nullptr)},
+          {"theorem4_witness", multidof::coupling_witness_json(law.theorem4_witness)}};
 }
 
 // Every hidden mode of every block as written: {block, kind, where, abs ([lo, hi], discrete
@@ -154,16 +159,6 @@ json plan_json(const std::vector<multidof::PlanStep>& plan) {
   json a = json::array();
   for (const auto& s : plan) a.push_back({{"path", s.path}, {"fate", s.fate}, {"why", s.why}});
   return a;
-}
-
-// The exact witness of infeasibility (path_witness.cpp), as decided: rationals as "p/q" strings.
-json witness_json(const std::optional<multidof::FrequencyWitness>& w) {
-  if (!w) return nullptr;
-  json u = json::array();
-  for (const auto& x : w->u) u.push_back(x.str());
-  return {{"theta", w->theta}, {"z", {w->z_re.str(), w->z_im.str()}}, {"u", u},
-          {"phi", to_real<double>(w->phi)}, {"phi_negative", w->phi < 0},
-          {"form", "phi = Re(u^T X E-hat(z) u) + u^T Delta_D X u <= 0, X the facial direction X_1 (exact)"}};
 }
 
 // How the scene split (multidof/components.hpp): one entry per independent component.
@@ -233,7 +228,8 @@ int run_analyze(const Opts& o) {
          {"path", r.path},
          {"plan", plan_json(r.plan)},
          {"components", components_json(r)},
-         {"witness", witness_json(r.witness)},
+         {"witness", multidof::frequency_witness_json(r.witness)},
+         {"weighted_witness", multidof::weighted_witness_json(r.weighted_witness)},
          {"assumptions", assumptions_json(a.premises)},
          {"seconds", {{"realisation", a.seconds.realisation},
                       {"sdp", r.sdp_seconds},
@@ -331,7 +327,8 @@ int run_design(const Opts& o) {
     ver.push_back({{"name", v.name},
                    {"verdict", v.verdict.holds() ? "pass" : v.verdict.fails() ? "fail" : "undecided"},
                    {"certified", v.verdict.proven()},
-                   {"detail", v.verdict.evidence}});
+                   {"detail", v.verdict.evidence},
+                   {"witness", multidof::coupling_witness_json(v.witness)}});
   // the one verdict, in the text's last line and in JSON alike ("feasible"/"certified" say only that
   // a V passed the LMI checks; with a premise failing there is no stability conclusion)
   std::ostringstream vt;

@@ -36,6 +36,7 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "hapstab/conservatism/theorem5_max.hpp"
+#include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -303,6 +304,7 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
   j["bracket"] = b.lo && b.hi ? enclosure_json(b.bracket(), 17) : nlohmann::json(nullptr);
   j["concludes_at"] = b.lo ? point_json(*b.lo) : nlohmann::json(nullptr);
   j["not_at"] = b.hi ? point_json(*b.hi) : nlohmann::json(nullptr);
+  if (b.hi) j["not_at"]["theorem4_witness"] = multidof::coupling_witness_json(b.hi->witness);
   return j;
 }
 

@@ -90,7 +90,9 @@ PointVerdict theorem5_at(const scene::Scene& sc, const lmi::Options& opt) {
   if (cc.verdict.fails() && cc.verdict.proven()) {
     v.yes = false;
     v.status = Status::exact;
-    v.why = "does not conclude [exact]: Theorem 4's program for the scene's coupling is infeasible (exact certificate)";
+    v.why = "does not conclude [exact]: Theorem 4's program for the scene's coupling is infeasible (exact certificate" +
+            std::string(cc.witness ? ": a two-frequency witness" : "") + ")";
+    v.witness = cc.witness;
     return v;
   }
   // Soundness: where the loop is proven NOT stable, no sufficient test concludes.

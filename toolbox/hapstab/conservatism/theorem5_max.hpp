@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "hapstab/lmi/solve.hpp"
+#include "hapstab/multidof/analysis.hpp"
 #include "hapstab/numeric/result.hpp"
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/stability/loop_max.hpp"
@@ -67,6 +68,8 @@ struct PointVerdict {
   std::optional<bool> yes;  ///< concludes / stable; nullopt: undecided
   Status status = Status::failed;
   std::string why;
+  /// theorem5_at: Theorem 4's program proven infeasible by the two-frequency witness (as decided)
+  std::optional<multidof::CouplingWitness> witness;
   bool proven() const { return yes.has_value() && (status == Status::exact || status == Status::certified); }
 };
 

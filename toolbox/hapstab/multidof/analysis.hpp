@@ -93,6 +93,42 @@ struct FrequencyWitness {
   rational phi;             ///< phi at (z, u), exact, <= 0
 };
 
+/// A complex vector of exact rationals (re + j im), one entry per DOF.
+struct ComplexVectorQ {
+  std::vector<rational> re, im;
+};
+
+/// The exact two-frequency witness that proved Theorem 4's program for a given coupling V
+/// infeasible (path_witness.cpp, theorem4_witness), as decided: rational points z1, z2 of the unit
+/// circle, complex rational directions p, u with [p; V-hat(z2) u] != 0, and for every direction
+/// X_k of the facial set (diagonal, listed by its diagonal)
+///   phi_k = p^* Delta_D X_k p + Re(u^* X_k V-hat(z2) u) + Re(w^* X_k E-hat(z1) w) <= 0,
+/// w = p + V-hat(z2) u. Published in JSON (key `theorem4_witness`) so that an outside check can
+/// re-evaluate it.
+struct CouplingWitness {
+  double theta1 = 0, theta2 = 0;     ///< the sweep's frequencies (rad per sample) z1, z2 round
+  rational z1_re, z1_im, z2_re, z2_im;  ///< on the unit circle exactly
+  ComplexVectorQ p, u;
+  std::vector<std::vector<rational>> directions;  ///< the diagonals of X_k
+  std::vector<rational> phi;                      ///< phi_k, exact, each <= 0
+};
+
+/// The exact weighted witness at several frequencies (path_witness.cpp, multi_frequency_witness)
+/// that proved (16) infeasible for every X = sum g_k X_k, g > 0: points z_j of the unit circle,
+/// complex rational directions u_j != 0 and weights w_j > 0 with, for every direction X_k,
+///   sum_j w_j (Re(u_j^* X_k E-hat(z_j) u_j) + u_j^* Delta_D X_k u_j) <= 0.
+/// Published in `multidof analyze --json` (key `weighted_witness`).
+struct WeightedWitness {
+  struct Point {
+    double theta = 0;
+    rational z_re, z_im, weight;
+    ComplexVectorQ u;
+  };
+  std::vector<Point> points;
+  std::vector<std::vector<rational>> directions;  ///< the diagonals of X_k
+  std::vector<rational> sums;                     ///< the weighted sums, exact, each <= 0
+};
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -113,6 +149,7 @@ struct AnalysisResult {
   std::vector<PlanStep> plan;    ///< every path's fate, in the planner's order
   std::vector<ComponentResult> components;  ///< how the scene split (empty: it did not; path "decomposed")
   std::optional<FrequencyWitness> witness;  ///< set when the frequency-domain witness decided
+  std::optional<WeightedWitness> weighted_witness;  ///< set when the several-frequency witness decided
   double seconds = 0;      ///< wall time of analyze()
   double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
                            ///< facial reduction, exact checks); decomposed: their share of the wall time
@@ -174,6 +211,7 @@ struct CouplingCheck {
   double margin = 0;
   std::vector<double> gamma_sqrt;
   Eigen::MatrixXd Q_V, delta_V;
+  std::optional<CouplingWitness> witness;  ///< set when the two-frequency witness proved the program infeasible
 };
 CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt = {});
 

@@ -141,8 +141,10 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   // multimodular row reduction since issue 39.)
   if (!cs.verdict.holds() && !(cs.verdict.fails() && cs.verdict.proven())) {
     std::string tried;
-    if (std::optional<Verdict> w = theorem4_witness(pb, fc, vhat(V, K), tried)) {
+    CouplingWitness cw;
+    if (std::optional<Verdict> w = theorem4_witness(pb, fc, vhat(V, K), tried, &cw)) {
       cc.verdict = *w;
+      cc.witness = std::move(cw);
       cc.verdict.evidence += " [the solver: " + cs.solver_text() + "]";
       return cc;
     }

@@ -286,7 +286,7 @@ std::vector<Verification> verify_coupling(const Problem& pb, const StateSpace<ra
       for (double x : c.gamma_sqrt) o << " " << x;
     }
     out.push_back({"Theorem 4 / condition (14) with computed levels (P_E, P_V, X, Q_E, Q_V free)",
-                   {c.verdict.outcome, c.verdict.status, o.str()}});
+                   {c.verdict.outcome, c.verdict.status, o.str()}, c.witness});
   }
   // 3) V itself stable (exact), so the loop's internal coupling state cannot diverge.
   out.push_back(schur_item({V.A}));

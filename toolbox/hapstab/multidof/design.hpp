@@ -61,6 +61,7 @@ struct DesignOptions {
 struct Verification {
   std::string name;
   Verdict verdict;
+  std::optional<CouplingWitness> witness = std::nullopt;  ///< Theorem 4's check proven infeasible by the two-frequency witness
 };
 
 struct DesignResult {

@@ -95,16 +95,18 @@ std::optional<std::vector<MatQ>> positive_facial_basis(const Problem& pb, const 
 /// Theorem 4's program for the coupling V (check_theorem4) proven infeasible by a frequency-domain
 /// witness (path_witness.cpp): a Fails verdict, exact; nullopt when none was found (`tried` says
 /// what was tried). `fc`: the facial conditions with V(1) - K; `Vh` = V-hat of (17).
+/// `out`, when given, receives the witness as decided.
 std::optional<Verdict> theorem4_witness(const Problem& pb, const FacialConditions& fc, const StateSpace<rational>& Vh,
-                                        std::string& tried);
+                                        std::string& tried, CouplingWitness* out = nullptr);
 /// (16) proven infeasible for every X = sum g_k X_k, g > 0, by a witness at several frequencies
 /// (path_witness.cpp): weights w_j >= 0 (not all 0) and points (theta_j, u_j), theta_j in (0, pi],
 /// with sum_j w_j phi_k(z_j, u_j) <= 0 for every direction X_k, phi_k(z, u) = Re(u^* X_k E-hat(z) u)
 /// + u^* Delta_D X_k u, decided in rational arithmetic at rational points and directions; nullopt
-/// (with `why`) when the rounded certificate does not hold.
+/// (with `why`) when the rounded certificate does not hold; `out`, when given, receives it as decided.
 std::optional<Verdict> multi_frequency_witness(const Problem& pb, const std::vector<MatQ>& Xk,
                                                const std::vector<double>& theta, const std::vector<Eigen::VectorXcd>& u,
-                                               const std::vector<double>& w, std::string& why);
+                                               const std::vector<double>& w, std::string& why,
+                                               WeightedWitness* out = nullptr);
 /// The same KYP data in a scaled modal basis x' = S x (S rational): for a realisation whose basis
 /// makes the Riccati equation badly conditioned (a companion form of order 12: eigenvectors with
 /// condition number 1e8), where the doubling "converges" to a P with lambda_min(F(P)) << 0.

@@ -23,6 +23,7 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
   const std::string coupling = L.coupling ? "the scene's [coupling] (" + std::to_string(L.coupling->states()) + " states)"
                                           : "none (the direct connection)";
   std::string note;
+  std::optional<CouplingWitness> witness;
   if (sp.hidden.stable() && sim::nonlinear_parts(L).empty() && L.coupling && sp.delay == 0) {
     if (assumptions_hold) {
       CouplingCheck cc;
@@ -50,6 +51,7 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
                                   ? "infeasible, certified by a frequency-domain witness"
                                   : "infeasible, certified by an exact Farkas certificate";
       note = "Theorem 4 with the scene's coupling does not conclude (" + how + "; it is sufficient only)";
+      witness = cc.witness;
     } else {
       note = "Theorem 4 with the scene's coupling needs Assumption 1, which does not hold";
     }
@@ -59,6 +61,7 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
   }
   LoopAsWritten out = decided_loop(L, coupling);
   if (!note.empty()) out.why = note + "; " + out.why;
+  out.theorem4_witness = std::move(witness);
   return out;
 }
 

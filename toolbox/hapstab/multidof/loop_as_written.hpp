@@ -36,6 +36,9 @@ struct LoopAsWritten {
   std::string why;                  ///< what was proven, or why nothing was
   long states = 0;                  ///< order of the closed-loop matrix when that decided
   std::optional<double> spectral_radius;  ///< numeric; nullopt when not computed
+  /// Theorem 4 with the scene's coupling proven infeasible by the two-frequency witness (step 2):
+  /// the witness as decided (it does not decide the loop: Theorem 4 is sufficient only)
+  std::optional<CouplingWitness> theorem4_witness;
 };
 
 /// `assumptions_hold`: Assumption 1 holds for the scene (needed by step 2).

@@ -195,7 +195,7 @@ OuterResult minimise_psi(const FrequencyData& f, int d) {
 // frequencies (theta > 0) and w from the matrix game max_w min_i sum_j w_j u_j^* Phi_i u_j (an LP,
 // the dual of the outer problem restricted to those directions).
 std::optional<Verdict> witness_of(const Problem& pb, const std::vector<MatQ>& Xk, const FrequencyData& f,
-                                  const OuterResult& o, std::string& why) {
+                                  const OuterResult& o, std::string& why, WeightedWitness& out) {
   const int d = static_cast<int>(Xk.size());
   std::vector<double> theta;
   std::vector<Eigen::VectorXcd> u;
@@ -242,7 +242,7 @@ std::optional<Verdict> witness_of(const Problem& pb, const std::vector<MatQ>& Xk
   }
   std::vector<double> w;
   for (const auto& v : wv) w.push_back(std::max(0.0, sr.solution(v)(0, 0)));
-  return multi_frequency_witness(pb, Xk, theta, u, w, why);
+  return multi_frequency_witness(pb, Xk, theta, u, w, why, &out);
 }
 
 }  // namespace
@@ -304,10 +304,12 @@ SolvePath kyp_search_path(bool backend_premise) {
        << numeric_decimal(o.psi / f.scale, 4) << " (relative; lower bound " << numeric_decimal(o.bound / f.scale, 4) << ")";
     if (o.failure.empty() && o.bound > 0) {  // no g passes the active frequencies: a witness?
       std::string why;
-      if (std::optional<Verdict> v = witness_of(pb, Xk, f, o, why)) {
+      WeightedWitness ww;
+      if (std::optional<Verdict> v = witness_of(pb, Xk, f, o, why, ww)) {
         r.numeric_seconds = since(t0);
         r.solver_detail = sd.str();
         r.proven = v;
+        r.weighted_witness = std::move(ww);
         return r;
       }
       sd << "; no certified witness (" << why << ")";

@@ -126,6 +126,23 @@ rational re_form(const CVec& a, const MatQ& M, const CVec& b) {
          exact_product(MatQ(a.im.transpose()), exact_product(M, b.im))(0, 0);
 }
 
+ComplexVectorQ complex_q(const CVec& v) {
+  ComplexVectorQ c;
+  for (Eigen::Index i = 0; i < v.re.rows(); ++i) c.re.push_back(v.re(i, 0)), c.im.push_back(v.im(i, 0));
+  return c;
+}
+
+// the diagonals of the facial directions X_k (diagonal: X in G is block diagonal g_i I)
+std::vector<std::vector<rational>> diagonals(const std::vector<MatQ>& Xk) {
+  std::vector<std::vector<rational>> d;
+  for (const MatQ& X : Xk) {
+    if (!MatQ(X - MatQ(X.diagonal().asDiagonal())).isZero(0))
+      throw NumericalError("a facial direction X_k is not diagonal (X in G is block diagonal g_i I)");
+    d.emplace_back(X.diagonal().data(), X.diagonal().data() + X.rows());
+  }
+  return d;
+}
+
 // the rational point of the unit circle near e^{j theta}, theta in (-pi, pi]
 std::pair<rational, rational> circle_point(double theta) {
   if (std::abs(theta) > M_PI - 1e-9) return {rational(-1), rational(0)};
@@ -137,7 +154,7 @@ std::pair<rational, rational> circle_point(double theta) {
 }  // namespace
 
 std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialConditions& fc,
-                                                const StateSpace<rational>& Vh, std::string& tried) {
+                                                const StateSpace<rational>& Vh, std::string& tried, CouplingWitness* out) {
   std::string why;
   const std::optional<std::vector<MatQ>> Xk = positive_facial_basis(pb, fc, why);
   if (!Xk) {
@@ -251,6 +268,7 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
     return std::nullopt;
   }
   std::ostringstream vals;
+  CouplingWitness cw{b1, b2, z1a, z1b, z2a, z2b, complex_q(p), complex_q(u), diagonals(*Xk), {}};
   for (size_t k = 0; k < Xk->size(); ++k) {
     const MatQ& Xq = (*Xk)[k];
     const MatQ DXk = exact_product(DD, Xq);
@@ -261,8 +279,10 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
               std::to_string(k + 1) + ") = " + numeric_decimal(to_real<double>(phi)) + " > 0)";
       return std::nullopt;
     }
+    cw.phi.push_back(phi);
     vals << (k ? ", " : "") << numeric_decimal(to_real<double>(phi));
   }
+  if (out) *out = std::move(cw);
   o << "; exact: at the rational points z1 = (" << to_real<double>(z1a) << ", " << to_real<double>(z1b)
     << " j), z2 = (" << to_real<double>(z2a) << ", " << to_real<double>(z2b)
     << " j) of the unit circle and rational directions p, u, phi(X_k) = p^* Delta_D X_k p + Re(u^* X_k V-hat(z2) u) + "
@@ -282,11 +302,13 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
 std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const std::vector<MatQ>& Xk,
                                                        const std::vector<double>& theta,
                                                        const std::vector<Eigen::VectorXcd>& u,
-                                                       const std::vector<double>& w, std::string& why) {
+                                                       const std::vector<double>& w, std::string& why,
+                                                       WeightedWitness* out) {
   const StateSpace<rational> Eh = ehat(pb.E);
   const MatQ DD = pb.structure.delta_D();
   const Eigen::Index m = pb.structure.m();
   std::vector<rational> sum(Xk.size(), rational(0));
+  WeightedWitness ww;
   double wmax = 0;
   for (double x : w) wmax = std::max(wmax, x);
   int used = 0;
@@ -301,6 +323,7 @@ std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const 
     }
     if (is_zero(uq)) continue;  // phi(z, 0) = 0: no strict inequality to contradict
     const auto [za, zb] = circle_point(theta[j]);
+    ww.points.push_back({theta[j], za, zb, wj, complex_q(uq)});
     CVec e;
     try {
       e = response(Eh, za, zb, uq);
@@ -326,6 +349,11 @@ std::optional<Verdict> detail::multi_frequency_witness(const Problem& pb, const 
   if (used == 0) {
     why = "no frequency with a positive weight";
     return std::nullopt;
+  }
+  if (out) {
+    ww.directions = diagonals(Xk);
+    ww.sums = sum;
+    *out = std::move(ww);
   }
   std::ostringstream o;
   o << "exact frequency-domain witness at " << used << " pairs (z_j, u_j) -- rational points of the unit circle, rational "

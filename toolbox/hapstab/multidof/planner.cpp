@@ -80,6 +80,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
     if (r.proven) {
       decide(*r.proven, r.margin);
       res.witness = r.witness;
+      res.weighted_witness = r.weighted_witness;
       continue;
     }
     std::string why = r.no_point;
@@ -131,6 +132,19 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
 
 namespace {
 
+// A component's weighted witness on the whole's DOFs (zero outside the component: E is a direct sum,
+// and each direction X_k of the component is the whole's X_k restricted to it).
+WeightedWitness on_whole(WeightedWitness w, const std::vector<int>& dofs, int m) {
+  auto lift = [&](const std::vector<rational>& v) {
+    std::vector<rational> out(static_cast<size_t>(m), rational(0));
+    for (size_t i = 0; i < dofs.size(); ++i) out[static_cast<size_t>(dofs[i])] = v[i];
+    return out;
+  };
+  for (auto& pt : w.points) pt.u = {lift(pt.u.re), lift(pt.u.im)};
+  for (auto& d : w.directions) d = lift(d);
+  return w;
+}
+
 // The components' results assembled (components.hpp: the whole is feasible iff every component
 // is; the block-diagonal assembly of their points is the whole's point).
 AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, std::vector<AnalysisResult>& parts,
@@ -178,6 +192,8 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
       for (size_t i = 0; i < comps[*proven_fail].dofs.size(); ++i)
         res.witness->u[static_cast<size_t>(comps[*proven_fail].dofs[i])] = w->u[i];
     }
+    if (const auto& w = parts[*proven_fail].weighted_witness)
+      res.weighted_witness = on_whole(*w, comps[*proven_fail].dofs, m);
   } else if (numeric_fail) {
     res.verdict = {Outcome::fails, Status::numeric,
                    "numeric, " + how + ": " + named(*numeric_fail) + ": " + parts[*numeric_fail].verdict.evidence};

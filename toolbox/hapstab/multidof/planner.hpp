@@ -81,6 +81,7 @@ struct PathResult {
   double numeric_seconds = 0;           ///< spent in the numeric search (SDP solver, Riccati equations)
   std::optional<detail::Pinned> pinned; ///< the structure it used (X pinned), for the least dissipative step
   std::optional<FrequencyWitness> witness; ///< with `proven`: the exact witness it rests on (path_witness.cpp)
+  std::optional<WeightedWitness> weighted_witness; ///< with `proven`: the several-frequency witness (path_kyp_search.cpp)
 };
 
 struct SolvePath {

@@ -919,6 +919,13 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
     }
     rational h = cov.radius(up, 1);
     if (h <= 0) h = cov.stein(up, 1, top - up);
+    if (h <= 0 && (top - up) < tried) {  // stalled short of the 10^-9 zone (an eigenbasis too ill-conditioned
+      tried = top - up;                    // for double near the crossing): the monotonicity step from here
+      if (cov.close(up, top - enough, e.p.hi, M0p, M1p, out.precision_bits)) {
+        closed = true;
+        break;
+      }
+    }
     if (h <= 0 || up + h >= top) break;
     up += h;
   }
@@ -944,9 +951,15 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
   return closed;
 }
 
+bool rump_outside(const ArbFamily& base, const rational& p, std::string& why);
+
 /// Step 4: decide_loop, independently, stable just below the crossing and NOT stable just above
-/// it. False (note set) when it disagrees or cannot decide.
-bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopMax& out) {
+/// it. Where decide_loop is undecided at every point tried (its Stein certificate too
+/// ill-conditioned near a crossing: light devices on a stiff wall, an eigenvalue leaving through
+/// z = -1), the point below is one the walk certified, and the point above is proven NOT stable by
+/// Rump's enclosure of an eigenvalue of M(p) outside the disk (rump_outside). False (note set) when
+/// decide_loop disagrees, or neither decides.
+bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, const ArbFamily& base, LoopMax& out) {
   const rational top = e.p.lo;
   for (const rational& eps : {rational(1, 10000), rational(1, 1000), rational(1, 100)}) {
     const rational pb = top * (1 - eps);
@@ -961,6 +974,10 @@ bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopM
                  ", inside the interval the cover certified stable: " + below.why;
       return false;
     }
+  }
+  if (!out.stable_at && top * (1 - rational(1, 10000)) <= out.stable_to && top * (1 - rational(1, 10000)) >= out.stable_from) {
+    out.stable_at = top * (1 - rational(1, 10000));  // inside the walk's certified cover
+    out.confirmed_by = "the walk's certified cover (decide_loop undecided there)";
   }
   if (!out.stable_at) {
     out.note = "decide_loop could not confirm stability just below the crossing";
@@ -979,6 +996,12 @@ bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopM
       return false;
     }
   }
+  for (const rational& eps : {rational(1, 1000000), rational(1, 10000), rational(1, 100)}) {
+    std::string why;
+    if (out.unstable_at || !rump_outside(base, e.p.hi * (1 + eps), why)) continue;
+    out.unstable_at = e.p.hi * (1 + eps);
+    out.confirmed_by += (out.confirmed_by.empty() ? "" : "; ") + why + " (decide_loop undecided there)";
+  }
   if (!out.unstable_at) {
     out.note = "decide_loop could not decide the loop just above the crossing";
     return false;
@@ -986,26 +1009,18 @@ bool confirm(const LoopAt& at, const Enclosed& e, const std::string& name, LoopM
   return true;
 }
 
-/// M(0) with an eigenvalue strictly outside the unit circle: then so has M(p) for every p in some
-/// (0, eps), by continuity of the eigenvalues, and the supremum of (0, sup) is 0. Proven by a Stein
-/// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
-/// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
-/// cannot take -- by Rump's enclosure of that one eigenvalue (acb_mat_eig_enclosure_rump: a ball
-/// proven to hold an eigenvalue of every matrix in M0) lying outside the circle.
-bool unstable_at_zero(const ArbFamily& base, std::string& why) {
-  const SchurDecision d = schur_decide(double_ball_matrix(*base.M0));
-  if (d.stable && !*d.stable) {
-    why = d.why;
-    return true;
-  }
+/// An eigenvalue of M(p) strictly outside the unit circle, proven by Rump's enclosure of it
+/// (acb_mat_eig_enclosure_rump: a ball proven to hold an eigenvalue of every matrix in the ball
+/// M0 + p M1) lying outside the circle. False when the enclosure fails or touches the circle.
+bool rump_outside(const ArbFamily& base, const rational& p, std::string& why) {
   const long n = base.M0->rows(), prec = 128;
-  const Eigen::MatrixXd M = mid(*base.M0);
+  const Eigen::MatrixXd M = mid(*base.M0) + static_cast<double>(p) * mid(*base.M1);
   Eigen::EigenSolver<Eigen::MatrixXd> es(M, true);
   if (es.info() != Eigen::Success) return false;
   Eigen::Index k = 0;
-  if (!(es.eigenvalues().cwiseAbs().maxCoeff(&k) > 1 + 1e-9)) return false;
+  if (!(es.eigenvalues().cwiseAbs().maxCoeff(&k) > 1 + 1e-12)) return false;
   AcbMat A(n, n), Rapprox(n, 1), J(1, 1), R(n, 1);
-  family_ball(A, *base.M0, *base.M1, rational(0), rational(0), prec);
+  family_ball(A, *base.M0, *base.M1, p, p, prec);
   acb_t lambda, approx;
   acb_init(lambda);
   acb_init(approx);
@@ -1020,7 +1035,8 @@ bool unstable_at_zero(const ArbFamily& base, std::string& why) {
   if (outside) {
     std::ostringstream o;
     o.precision(17);
-    o << "an eigenvalue of M(0) enclosed by Rump's test in Arb balls (" << prec << " bits) with |z| >= "
+    o << "an eigenvalue of M(" << (p == 0 ? std::string("0") : numeric_decimal(static_cast<double>(p), 17))
+      << ") enclosed by Rump's test in Arb balls (" << prec << " bits) with |z| >= "
       << std::nextafter(arf_get_d(arb_midref(modulus), ARF_RND_DOWN) - mag_get_d(arb_radref(modulus)), 0.0);
     why = o.str();
   }
@@ -1028,6 +1044,20 @@ bool unstable_at_zero(const ArbFamily& base, std::string& why) {
   acb_clear(lambda);
   acb_clear(approx);
   return outside;
+}
+
+/// M(0) with an eigenvalue strictly outside the unit circle: then so has M(p) for every p in some
+/// (0, eps), by continuity of the eigenvalues, and the supremum of (0, sup) is 0. Proven by a Stein
+/// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
+/// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
+/// cannot take -- by Rump's enclosure of that one eigenvalue lying outside the circle (rump_outside).
+bool unstable_at_zero(const ArbFamily& base, std::string& why) {
+  const SchurDecision d = schur_decide(double_ball_matrix(*base.M0));
+  if (d.stable && !*d.stable) {
+    why = d.why;
+    return true;
+  }
+  return rump_outside(base, rational(0), why);
 }
 
 }  // namespace
@@ -1109,7 +1139,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
                "), so the supremum of (0, sup) is undecided";
     return out;
   }
-  if (!confirm(at, e, name, out)) return out;
+  if (!confirm(at, e, name, base, out)) return out;
   out.outcome = Outcome::holds;
   out.status = Status::certified;
   std::ostringstream o;
@@ -1119,7 +1149,9 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     << " in [0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
     << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
-  o << "); decide_loop: stable at " << static_cast<double>(*out.stable_at) << ", NOT stable at " << static_cast<double>(*out.unstable_at) << ". ";
+  o << "); " << (out.confirmed_by.empty() ? "decide_loop: " : "") << "stable at " << static_cast<double>(*out.stable_at)
+    << ", NOT stable at " << static_cast<double>(*out.unstable_at)
+    << (out.confirmed_by.empty() ? std::string() : " (by " + out.confirmed_by + ")") << ". ";
   if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
   else
     o << "The supremum lies in [" << decimal_outward(out.stable_to, 6, -1) << ", crossing]: the crossing is it unless an eigenvalue "

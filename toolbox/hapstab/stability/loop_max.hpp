@@ -30,7 +30,11 @@
 //     (acb_mat_eig_simple_rump) of the eigenvalues not inside the disk have d|lambda|^2/dp =
 //     2 Re(conj(lambda) (L M1 R)_ii) > 0, and at the walk's target all are inside.
 //  4. Confirmation: stability::decide_loop (the decider of `stability --scene`, Stein inertia) at
-//     a point just below the crossing (stable) and just above it (NOT stable).
+//     a point just below the crossing (stable) and just above it (NOT stable). Where it is
+//     undecided (its Stein certificate too ill-conditioned near the crossing), the point below is
+//     one step 3 certified and the point above is proven NOT stable by Rump's enclosure of an
+//     eigenvalue of M(p) outside the disk (LoopMax::confirmed_by says so). Step 3's walk up, should
+//     a step fail anywhere short of the crossing, tries the closing step by monotonicity from there.
 // The supremum is sup{p >= 0 : stable for every p in (0, sup)} (docs/stability.md), so it is
 // stated (outcome holds) only when the walk covers [0, stable_to]: M(0) Schur stable and reached.
 // Where the walk towards 0 stops at stable_from > 0 (M(0) with an eigenvalue on the circle, or an
@@ -71,6 +75,7 @@ struct LoopMax {
   double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered (0: sup = crossing)
   std::optional<rational> stable_at;     ///< decide_loop: stable there (just below the crossing)
   std::optional<rational> unstable_at;   ///< decide_loop: NOT stable there (just above the crossing)
+  std::string confirmed_by;              ///< "" (decide_loop decided both), else what proved stable_at / unstable_at
   std::string where;                     ///< "z = 1", "z = -1" or "complex pair"
   std::vector<double> mode;              ///< |position| of the crossing mode on each DOF, largest = 1
   rational T = 0;                        ///< the sample period (omega = theta / T)

@@ -1,0 +1,63 @@
+"""One named multi-DOF scene through `stability --scene S --max g` against scene_max's reference
+(indep_loop.py: the loop built here from the scene's blocks -- ZOH by mpmath.expm, the environment
+realised entry by entry -- its spectral radius at 50 digits, the crossing by the Illinois method),
+for scenes that record a defect of the certified crossing (tests/cli/scenes/). The scene file must
+be exactly the text indep_loop.scene_toml writes for the case's model, so that both read one model.
+
+  indep_scene_case.py HAPSTAB NAME SCENE
+exit 0 when hapstab's certified supremum agrees with the reference (and its crossing is the one the
+case names), else 1.
+"""
+import os
+import sys
+from fractions import Fraction as Q
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mpmath as mp  # noqa: E402
+
+import indep_loop as IL  # noqa: E402
+from indep_common import Rational, run_hapstab  # noqa: E402
+from independent import TOL_SUP, compare_sup  # noqa: E402
+
+
+def const(k):
+    return Rational([Q(k)], [1])
+
+
+T = Q(1, 1000)
+CASES = {
+    # issue 46: light devices (m/b = T/10, T/10) on a stiff coupled wall; the loop loses stability by
+    # a real eigenvalue leaving through z = -1. decide_loop's Stein certificate is too ill-conditioned
+    # near the crossing, and `--max g` answered "undecided: decide_loop could not confirm stability just
+    # below the crossing" although its walk had certified [0, crossing).
+    "zminus1_light_devices_2dof": (dict(
+        T=T, devices=[dict(kind="md", m=Q(1, 10000), b=Q(1)), dict(kind="md", m=Q(1, 5000), b=Q(2))],
+        ops=[(Q(1), Q(50)), (Q(1), Q(80))], E=[[const(2500), const(-500)], [const(-500), const(3500)]],
+        n=0, tags={}, Knom=1.0), "z = -1"),
+}
+
+
+def main(argv):
+    exe, name, path = argv[1], argv[2], argv[3]
+    mp.mp.dps = 60  # as independent.py's main: comparisons of 20-digit enclosures
+    c, crossing = CASES[name]
+    text = open(path).read()
+    body = text[text.index("\n[scene]") + 1:]  # the file's own comment above it explains the case
+    if body != IL.scene_toml(c)[IL.scene_toml(c).index("[scene]"):]:
+        print(f"{path}: not the text indep_loop.scene_toml writes for case {name}")
+        return 1
+    rc, j, err, _ = run_hapstab(exe, ["stability", "--scene", path, "--max", "g", "--digits", "20"], 120)
+    ref = IL.sup_reference(IL.build_loop_scene(c), c["Knom"])
+    out = compare_sup(dict(tags={}), ref, j, rc, TOL_SUP, "g")
+    at = ((j or {}).get("crossing") or {}).get("at")
+    print(f"{name}: {out['outcome']}; hapstab: exit {rc}, max {(j or {}).get('max')} at {at}; reference: "
+          f"{ref.get('kind')} {ref.get('value')} ({ref.get('crossing')}) {out.get('why', '')}")
+    if rc != 0 or (j or {}).get("status") != "certified":
+        print(f"  expected a certified supremum (exit 0): {(j or {}).get('note', err)[:400]}")
+        return 1
+    return 0 if out["outcome"] == "agree" and at == crossing and ref.get("crossing") == crossing else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
