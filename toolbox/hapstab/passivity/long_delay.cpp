@@ -450,9 +450,17 @@ class Maximiser {
       return dbl_.eval(ke, D, false, Je) && Je.v.hi < Ld_ ? InDouble::pruned : InDouble::arb;
     }
     if (J.dd.negative() && concave_below(k, D, Jm, J.dd.hi)) return InDouble::pruned;
-    const double scale = std::max(std::abs(Ld_), 1e-300);
-    const bool far = std::isfinite(ub) && ub - Ld_ > 1e-6 * scale && J.d.contains_zero() && !J.dd.negative();
-    return far && p.level + 1 < max_level_ ? InDouble::split : InDouble::arb;
+    // Split in double only where the gap above the best value is the function's, not the
+    // rounding's: the midpoint's own enclosure is narrow against the gap (near w = 0 the kernels'
+    // cancellation blows double enclosures up at every depth, and splitting on them went 50 levels
+    // deep over a whole box: (z - 1) sum z^-k, N = 80, never ended), and never more splits than
+    // Arb's budget of evaluations, so the double pass cannot outgrow the Arb pass it prunes for.
+    const double scale = std::max(std::abs(Ld_), 1e-300), gap = ub - Ld_;
+    const bool far = std::isfinite(ub) && gap > 1e-6 * scale && Jm.v.hi - Jm.v.lo < 1e-3 * gap &&
+                     J.d.contains_zero() && !J.dd.negative();
+    if (!far || p.level + 1 >= max_level_ || double_splits_ >= budget_) return InDouble::arb;
+    ++double_splits_;
+    return InDouble::split;
   }
 
   /// f concave on the box pi [k - 1, k + 1]/D (sup f'' = M < 0): f <= f(x) + f'(x)^2/(-2M) for
@@ -568,7 +576,7 @@ class Maximiser {
   DoubleGrid dbl_;
   bool use_double_;
   double Ld_ = -std::numeric_limits<double>::infinity();  // a double <= L_
-  long double_evals_ = 0, double_pruned_ = 0;
+  long double_evals_ = 0, double_pruned_ = 0, double_splits_ = 0;
   long M_;
   const std::vector<char>* settled_;
   std::vector<char> first_pruned_;
