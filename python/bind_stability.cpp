@@ -282,7 +282,6 @@ py::object point(const std::optional<conservatism::PointVerdict>& v) {
   d["at"] = to_decimal(v->at, 17);
   d["status"] = to_string(v->status);
   d["why"] = v->why;
-  d["theorem4_witness"] = from_json(multidof::coupling_witness_json(v->witness));  // Theorem 5's not_at: how it was proven
   return d;
 }
 
@@ -310,6 +309,8 @@ void add_theorem5(py::dict& d, const conservatism::VerdictBracket& t5, const sce
   t["bracket"] = t5.lo && t5.hi ? py::object(decimals(t5.lo->at, t5.hi->at, 17)) : py::object(py::none());
   t["concludes_at"] = point(t5.lo);
   t["not_at"] = point(t5.hi);
+  if (t5.hi)  // Theorem 5's not_at: how it was proven (the command's theorem5.not_at.theorem4_witness)
+    t["not_at"].cast<py::dict>()["theorem4_witness"] = from_json(multidof::coupling_witness_json(t5.hi->witness));
   t["note"] = t5.note;
   t["programs"] = t5.steps.size();
   t["seconds"] = t5.seconds;
