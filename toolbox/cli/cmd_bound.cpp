@@ -32,6 +32,7 @@
 #include "hapstab/passivity/friction.hpp"
 #include "hapstab/report/paths.hpp"
 
+namespace hapstab::cli::cmd_bound {  // its own namespace: the commands compile in unity batches
 namespace {
 
 using namespace hapstab;
@@ -419,3 +420,4 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                          }});
 
 }  // namespace
+}  // namespace hapstab::cli::cmd_bound

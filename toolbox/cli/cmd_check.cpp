@@ -18,7 +18,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/paths.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_check {  // its own namespace: the commands compile in unity batches
 namespace {
 
 struct Opts {
@@ -84,4 +84,4 @@ const Register reg({"check",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_check

@@ -17,7 +17,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_limit_cycle {  // its own namespace: the commands compile in unity batches
 namespace {
 
 // The loop is H(z) alone: --T is needed only when the expression names T.
@@ -116,4 +116,4 @@ const Register reg({"limit-cycle",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_limit_cycle

@@ -58,7 +58,7 @@
 #include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/numeric/error.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_multidof {  // its own namespace: the commands compile in unity batches
 namespace {
 
 using nlohmann::json;
@@ -463,4 +463,4 @@ const Register multidof_cmd({"multidof",
                              }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_multidof

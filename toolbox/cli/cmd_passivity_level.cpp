@@ -46,7 +46,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/bound.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_passivity_level {  // its own namespace: the commands compile in unity batches
 namespace {
 
 const TfRules tf_rules{/*period_required=*/true, /*causal=*/true, /*with_delay=*/false};
@@ -260,4 +260,4 @@ const Register reg({"passivity-level",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_passivity_level

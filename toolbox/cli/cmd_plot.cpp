@@ -36,7 +36,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/paths.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_plot {  // its own namespace: the commands compile in unity batches
 namespace {
 
 namespace fs = std::filesystem;
@@ -373,4 +373,4 @@ const Register reg({"plot",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_plot

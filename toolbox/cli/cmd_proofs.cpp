@@ -8,7 +8,7 @@
 #include "cli/reproduce.hpp"
 #include "hapstab/numeric/error.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_proofs {  // its own namespace: the commands compile in unity batches
 namespace {
 
 struct Opts {
@@ -71,4 +71,4 @@ const Register reg({"proofs", "Run every checked derivation (proofs/) and print 
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_proofs

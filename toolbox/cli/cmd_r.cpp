@@ -13,7 +13,7 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/sampling/r_decimal.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_r {  // its own namespace: the commands compile in unity batches
 namespace {
 
 struct Opts {
@@ -91,4 +91,4 @@ const Register reg({"r",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_r

@@ -23,7 +23,7 @@
 #include "cli/reproduce.hpp"
 #include "hapstab/numeric/error.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_reproduce {  // its own namespace: the commands compile in unity batches
 namespace {
 
 namespace fs = std::filesystem;
@@ -192,4 +192,4 @@ const Register fig_reg({"figure", "Draw one figure (or --list them): data into D
                         }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_reproduce

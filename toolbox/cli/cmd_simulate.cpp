@@ -32,7 +32,7 @@
 #include "hapstab/sim/hidden_modes.hpp"
 #include "hapstab/sim/simulator.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_simulate {  // its own namespace: the commands compile in unity batches
 namespace {
 
 namespace fs = std::filesystem;
@@ -440,4 +440,4 @@ const Register simulate_cmd({"simulate",
                              }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_simulate

@@ -51,6 +51,7 @@
 #include "hapstab/stability/sampled_loop.hpp"
 #include "hapstab/stability/scene_loop.hpp"
 
+namespace hapstab::cli::cmd_stability {  // its own namespace: the commands compile in unity batches
 namespace {
 
 using namespace hapstab;
@@ -511,3 +512,4 @@ const cli::Register reg(
      }});
 
 }  // namespace
+}  // namespace hapstab::cli::cmd_stability

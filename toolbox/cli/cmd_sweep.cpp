@@ -232,6 +232,7 @@ int merge(const std::vector<std::string>& dirs, const std::string& out, bool qui
 
 }  // namespace hapstab::cli::sweep
 
+namespace hapstab::cli::cmd_sweep {  // its own namespace: the commands compile in unity batches
 namespace {
 
 using namespace hapstab::cli;
@@ -291,3 +292,4 @@ const Register reg({"sweep", "Run a command over a grid of exact parameter value
                     setup});
 
 }  // namespace
+}  // namespace hapstab::cli::cmd_sweep

@@ -14,7 +14,7 @@
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::cmd_wedge {  // its own namespace: the commands compile in unity batches
 namespace {
 
 // H(z) alone is analysed: --T is needed only when the expression names T.
@@ -148,4 +148,4 @@ const Register reg({"wedge",
                     }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::cmd_wedge

@@ -11,7 +11,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
-namespace hapstab::cli {
+namespace hapstab::cli::figures_stability {  // its own namespace: the commands compile in unity batches
 namespace {
 
 const rational kT(1, 1000), kb(1);
@@ -74,4 +74,4 @@ const RegisterFigure speed({"ext_stability_speed", "ext",
                             [](const std::filesystem::path& d) { return bench_timing_vars("stability", d); }});
 
 }  // namespace
-}  // namespace hapstab::cli
+}  // namespace hapstab::cli::figures_stability

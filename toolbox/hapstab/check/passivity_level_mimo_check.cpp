@@ -38,7 +38,7 @@ Cq conj(const Cq& a) { return {a.re, -a.im}; }
 using Mat = std::vector<std::vector<rational>>;
 using CMat = std::vector<std::vector<Cq>>;
 
-constexpr long max_dim = 64, max_inputs = 16, max_degree = 64;
+constexpr long max_dim = 64, max_inputs = 16, max_mn = 64;
 
 Mat read_matrix(const nlohmann::json& model, const char* key) {
   const std::string where = std::string("model.") + key;
@@ -61,13 +61,13 @@ Mat read_matrix(const nlohmann::json& model, const char* key) {
 
 size_t cols(const Mat& M) { return M.empty() ? 0 : M[0].size(); }
 
-struct Model {
+struct MimoModel {
   Mat A, B, C, D;
   size_t n = 0, m = 0;
 };
 
-Model read_model(const nlohmann::json& model) {
-  Model s{read_matrix(model, "A"), read_matrix(model, "B"), read_matrix(model, "C"), read_matrix(model, "D")};
+MimoModel read_model(const nlohmann::json& model) {
+  MimoModel s{read_matrix(model, "A"), read_matrix(model, "B"), read_matrix(model, "C"), read_matrix(model, "D")};
   s.n = s.A.size();
   s.m = cols(s.B);
   if (s.n == 0) throw InputError("model.A: empty (a static gain has no state and no certificate)");
@@ -77,7 +77,7 @@ Model read_model(const nlohmann::json& model) {
   if (s.C.size() != s.m) throw InputError("model.C: must have " + std::to_string(s.m) + " rows (G square: outputs = inputs)");
   if (cols(s.C) != s.n) throw InputError("model.C: must have " + std::to_string(s.n) + " columns (the states)");
   if (s.D.size() != s.m || cols(s.D) != s.m) throw InputError("model.D: must be " + std::to_string(s.m) + "x" + std::to_string(s.m));
-  if (static_cast<long>(s.m) > max_inputs || static_cast<long>(s.m * s.n) > max_degree)
+  if (static_cast<long>(s.m) > max_inputs || static_cast<long>(s.m * s.n) > max_mn)
     throw InputError("model: m = " + std::to_string(s.m) + " inputs, n = " + std::to_string(s.n) +
                      " states: above this checker's limit (m <= 16, m n <= 64)");
   return s;
@@ -133,7 +133,7 @@ std::vector<std::vector<F>> solve(std::vector<std::vector<F>> M, std::vector<std
 
 /// G(z) = C (zI - A)^-1 B + D at z (F = rational for real z, Cq on the circle).
 template <class F>
-std::vector<std::vector<F>> G_at(const Model& s, const F& z) {
+std::vector<std::vector<F>> G_at(const MimoModel& s, const F& z) {
   std::vector<std::vector<F>> M(s.n, std::vector<F>(s.n)), R(s.n, std::vector<F>(s.m));
   for (size_t i = 0; i < s.n; ++i)
     for (size_t j = 0; j < s.n; ++j) M[i][j] = (i == j ? z : F(rational(0))) - F(s.A[i][j]);
@@ -150,7 +150,7 @@ std::vector<std::vector<F>> G_at(const Model& s, const F& z) {
   return G;
 }
 
-rational charpoly_at(const Model& s, const rational& z) {
+rational charpoly_at(const MimoModel& s, const rational& z) {
   Mat M(s.n, std::vector<rational>(s.n));
   for (size_t i = 0; i < s.n; ++i)
     for (size_t j = 0; j < s.n; ++j) M[i][j] = (i == j ? z : rational(0)) - s.A[i][j];
@@ -158,7 +158,7 @@ rational charpoly_at(const Model& s, const rational& z) {
 }
 
 /// d(z) = det(zI - A), degree n, from its values at z = 0..n.
-P charpoly(const Model& s) {
+P charpoly(const MimoModel& s) {
   std::vector<rational> x, y;
   for (size_t k = 0; k <= s.n; ++k) {
     x.emplace_back(static_cast<long>(k));
@@ -168,7 +168,7 @@ P charpoly(const Model& s) {
 }
 
 /// P_nu(c) of the header, from its values at c = (t + 1/t)/2, t = 2, 3, ... (d(1/t) != 0).
-P level_polynomial(const Model& s, const P& d, const rational& nu) {
+P level_polynomial(const MimoModel& s, const P& d, const rational& nu) {
   const size_t N = s.m * s.n + 1;
   std::vector<rational> x, y;
   for (long t = 2; x.size() < N; ++t) {
@@ -189,7 +189,7 @@ P level_polynomial(const Model& s, const P& d, const rational& nu) {
 
 /// He G(z) - nu I positive definite (Sylvester: Hermitian elimination without pivoting, every
 /// pivot > 0).
-bool positive_definite(const Model& s, const Cq& z, const rational& nu) {
+bool positive_definite(const MimoModel& s, const Cq& z, const rational& nu) {
   const CMat G = G_at(s, z);
   CMat H(s.m, std::vector<Cq>(s.m));
   for (size_t i = 0; i < s.m; ++i)
@@ -291,7 +291,7 @@ struct LowerTest {
 };
 
 /// He G - lo I >= 0 on the whole circle (the header's (lower)).
-LowerTest lower_test(const Model& s, const P& d, const rational& lo) {
+LowerTest lower_test(const MimoModel& s, const P& d, const rational& lo) {
   LowerTest out;
   const P p = level_polynomial(s, d, lo);
   out.degree = p.degree();
@@ -333,7 +333,7 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
     throw InputError("model.kind: only \"isp\" (a MIMO OSP level has no certificate), got " + model.at("kind").dump());
   const rational T = exact_field(model, "T", "model");
   if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  const Model s = read_model(model);
+  const MimoModel s = read_model(model);
   const P d = charpoly(s);
   const SchurCohn stable = schur_cohn(d);
   if (!stable.stable)

@@ -16,21 +16,21 @@ namespace {
 
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
-constexpr long max_degree = 2000;
+constexpr long max_charpoly_degree = 2000;
 
-struct Model {
+struct LoopCharpoly {
   P c;               // the characteristic polynomial, the checker's own
   std::string text;  // what was checked
 };
 
-Model characteristic(const nlohmann::json& model) {
+LoopCharpoly characteristic(const nlohmann::json& model) {
   detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay"}, "model");
   const detail::LoopDevice d = detail::read_loop_device(model);
   const RF H = detail::parse_model_field(model, "H", 'z', d.T, d.params);
   if (H.num().degree() > H.den().degree() + d.n) throw InputError("model.H: z^-n H(z) is not causal");
-  if (H.den().degree() + d.n + d.k > max_degree)
+  if (H.den().degree() + d.n + d.k > max_charpoly_degree)
     throw InputError("model: the characteristic polynomial has degree " + std::to_string(H.den().degree() + d.n + d.k) +
-                     ", beyond this checker's limit of " + std::to_string(max_degree));
+                     ", beyond this checker's limit of " + std::to_string(max_charpoly_degree));
   return {detail::loop_polynomial(d, H.num(), H.den()),
           "degree " + std::to_string(d.k) + " device, delay " + std::to_string(d.n)};
 }
@@ -63,7 +63,7 @@ Verdict check_stability(const nlohmann::json& cert) {
   if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
   const bool stable = claim.at("stable").get<bool>();
   if (!evidence.contains("charpoly")) throw InputError("evidence.charpoly: missing");
-  const Model m = characteristic(model);
+  const LoopCharpoly m = characteristic(model);
   if (auto why = differs(evidence.at("charpoly"), m.c)) return {false, *why};
   const SchurCohn sc = schur_cohn(m.c);
   const std::string what = "the characteristic polynomial (degree " + std::to_string(m.c.degree()) + ", " + m.text + ")";

@@ -18,7 +18,7 @@ namespace {
 
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
-constexpr int max_degree = 150;  // of c in z; D has degree <= 2d in K
+constexpr int max_loop_degree = 150;  // of c in z; D has degree <= 2d in K
 
 struct Family {
   std::string K;
@@ -47,9 +47,9 @@ Family read_family(const nlohmann::json& model) {
       throw InputError("model.H: z^-n H" + std::string(H == &f.h.H0 ? "0" : "1") + "(z) is not causal (H = H0 + " + f.K + " H1)");
   const P &L0 = f.h.H0.den(), &L1 = f.h.H1.den();
   const P g = gcd(L0, L1), L = L0 * divmod(L1, g).first;  // lcm(L0, L1)
-  if (L.degree() + n + f.device.k > max_degree)
+  if (L.degree() + n + f.device.k > max_loop_degree)
     throw InputError("model: the characteristic polynomial has degree " + std::to_string(L.degree() + n + f.device.k) +
-                     ", beyond this checker's limit of " + std::to_string(max_degree));
+                     ", beyond this checker's limit of " + std::to_string(max_loop_degree));
   f.c0 = detail::loop_polynomial(f.device, f.h.H0.num() * divmod(L, L0).first, L);
   f.c1 = f.h.H1.num() * divmod(L, L1).first * f.device.Nd;
   if (f.c1.degree() >= f.c0.degree())
