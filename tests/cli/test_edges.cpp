@@ -67,6 +67,17 @@ TEST(Edges, LongFractionalDelayOnTheNegativeSideIsFinite) {
   expect_holds(nlohmann::json::parse(r.out), "343.245985165267047037920715198", "t_d = 101.5 T");
 }
 
+// A pole at z = -1 with a fractional delay has only the exact path, whose cost grows ~degree^4:
+// a 174-sample wall with t_d = T/6 (degree 533) ran for minutes. It is refused by name at once,
+// beyond the exact path's limit (240), with exit 2.
+TEST(Edges, FractionalDelayBeyondTheExactPathsLimitIsRefusedByName) {
+  const auto r = run_cli("bound --H \"((27/4)*z + (-5/4))/((1/1000)*z + (1/1000))\" --T 1/1000 --delay 174 "
+                         "--frac-delay 1/600 --json");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("degree 533, more than the exact path's limit of 240"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pole at z = -1"), std::string::npos) << r.out;
+}
+
 // The positive side stays +inf (paper 001, Example 3: 0 < t_d < T).
 TEST(Edges, FractionalDelayOnThePositiveSideOfThePoleIsInfinite) {
   const auto r = run_cli(kTustin + " --frac-delay 1/2000 --json");
