@@ -1597,11 +1597,12 @@ def sqfree(p):
     return pdivmod(p, pgcd(p, pderiv(p)))[0] if len(p) > 2 else p
 
 
-def roots_in(p, lo, hi):
-    """The number of distinct roots of p in (lo, hi) when p(lo), p(hi) != 0 (Sturm)."""
+def roots_in(p, lo, hi, seq=None):
+    """The number of distinct roots of p in (lo, hi) when p(lo), p(hi) != 0 (Sturm); seq: p's
+    Sturm sequence of its square-free part, when the caller counts on many intervals."""
     if len(p) < 2:
         return 0
-    seq = sturm_seq(sqfree(p))
+    seq = seq or sturm_seq(sqfree(p))
     return variations(seq, lo) - variations(seq, hi)
 
 
@@ -1629,13 +1630,14 @@ def max_positive(p1, p2, a, b, strict=True):
     if len(R) < 2:
         return None if strict else fails((a + b) / 2)  # one sign on (a, b): an end that is a root stands for none
     g = pgcd(p1, p2) if p1 and p2 else []
+    seq_R = sturm_seq(R)  # R is square-free: one sequence for every interval of the bisection
     stack = [(a, b)]
     while stack:
         lo, hi = stack.pop()
         for x in (lo, hi):
             if fails(x):
                 return fails(x)
-        n = roots_in(R, lo, hi)
+        n = roots_in(R, lo, hi, seq_R)
         # non-strict: an end that is a root of p1 p2 passes by itself and stands for no cell, so
         # every cell is sampled inside it (a piece without roots at its midpoint)
         if n == 0:

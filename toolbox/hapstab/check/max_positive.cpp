@@ -54,13 +54,14 @@ std::optional<std::string> max_positive_on(const P& p1, const P& p2, const ratio
   }
   for (const rational& e : {a, b})  // roots at the ends were tested above
     while (R.degree() >= 1 && R(e) == 0) R = divmod(R, P{-e, rational(1)}).first;
+  const std::vector<P> seq = sturm_sequence(R);  // R is fixed: one sequence for every piece of the bisection
   std::vector<std::pair<rational, rational>> todo{{a, b}};
   while (!todo.empty()) {
     const auto [lo, hi] = todo.back();
     todo.pop_back();
     for (const rational& x : {lo, hi})
       if (auto why = fails(x)) return why;
-    const int n = R.degree() >= 1 ? sturm_count(R, lo, hi) : 0;
+    const int n = R.degree() >= 1 ? sturm_count(seq, lo, hi) : 0;
     // non-strict: an end that is a root of p1 p2 (a or b) passes by itself and stands for no cell,
     // so a cell is sampled inside it: at the midpoint of a piece without roots, at lo and hi of a
     // piece with one root only when neither is a root of p1 p2 (else the piece is split)

@@ -55,13 +55,17 @@ bool descartes_no_root(const P& q, const rational& a, const rational& b) {
   return variations == 0;
 }
 
-int sturm_count(const P& q, const rational& a, const rational& b) {
+std::vector<P> sturm_sequence(const P& q) {
   std::vector<P> seq{scaled(q), scaled(q.derivative())};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
     P r = divmod(seq[seq.size() - 2], seq.back()).second;
     if (r.is_zero()) break;
     seq.push_back(scaled(-r));
   }
+  return seq;
+}
+
+int sturm_count(const std::vector<P>& seq, const rational& a, const rational& b) {
   auto variations = [&](const rational& x) {
     int v = 0, last = 0;
     for (const P& s : seq) {
@@ -75,6 +79,8 @@ int sturm_count(const P& q, const rational& a, const rational& b) {
   };
   return variations(a) - variations(b);
 }
+
+int sturm_count(const P& q, const rational& a, const rational& b) { return sturm_count(sturm_sequence(q), a, b); }
 
 std::optional<std::string> nonnegative_on(const P& p, const rational& a, const rational& b) {
   if (p.is_zero()) return std::nullopt;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 #include <string>
 
 #include "hapstab/numeric/scalar.hpp"
@@ -33,5 +34,10 @@ bool descartes_no_root(const Polynomial<rational>& q, const rational& a, const r
 
 /// The number of distinct real roots of the square-free q in (a, b), when q(a), q(b) != 0 (Sturm).
 int sturm_count(const Polynomial<rational>& q, const rational& a, const rational& b);
+
+/// q's Sturm sequence, built once for a caller that counts on many intervals (a bisection):
+/// sturm_count(seq, a, b) is then sturm_count(q, a, b) without the divisions.
+std::vector<Polynomial<rational>> sturm_sequence(const Polynomial<rational>& q);
+int sturm_count(const std::vector<Polynomial<rational>>& seq, const rational& a, const rational& b);
 
 }  // namespace hapstab::check
