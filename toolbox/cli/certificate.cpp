@@ -290,7 +290,6 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
     if (b0 >= g.b) throw InputError("--certificate: b*(0) is not shown below b at " + std::to_string(digits) + " digits; raise --digits");
     evidence["b0_hi"] = b0.str();
   }
-  std::optional<long> q;
   if (hi) {  // b*(hi) >= b: a witness for H0 + hi H1
     passivity::BoundProblem p = passivity::at_gain(g, *hi);
     const WitnessObjective obj = witness_objective(p);
