@@ -15,8 +15,8 @@
 #pragma once
 
 #include <optional>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/polynomial.hpp"
