@@ -110,7 +110,7 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
   // ---- wedge contains Tsypkin; certified <= grid; no oscillation below k*_wedge ---------------
   std::mt19937 gen(25);
   int n_h = 0, both_hold = 0, t_holds = 0, w_holds = 0, bad_contain = 0, bad_gain = 0, bad_grid = 0;
-  int contradictions = 0;
+  int contradictions = 0, equal_gains = 0;
   // Non-trivial instances (proof.hpp, Instances): H satisfying Tsypkin's condition for the
   // containment (4 of the 40 of this seed do), finite wedge gains for the gain order (36 do),
   // evaluated H for the grid comparison, simulations whose assumptions hold.
@@ -136,6 +136,15 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
                    "",
                    {{"wedge", a.wedge.verdict.holds()}, {"tsypkin", a.tsypkin.verdict.holds()}}});
     if (finite_gain.count(!a.wedge.gain_infinite)) {
+      // the same command's certificate, read for the gains: k*_wedge's lower end >= k*_Tsypkin's
+      // upper end. Not where the two are equal (both minima at a point where Im H = 0, the gains
+      // exact and the same): the certificate's gains are enclosures, which cannot order equal values
+      if (!a.tsypkin.gain_infinite && a.wedge.max_gain.enclosure->lo > a.tsypkin.max_gain.enclosure->hi)
+        check.certify("002.wedge_gain_ge_tsypkin",
+                      {{"wedge", "--H", hapstab::proofs::rational_function_text(H.H)},
+                       "", "", {}, "", {{"wedge_gain", "tsypkin_gain"}}});
+      else if (!a.tsypkin.gain_infinite)
+        ++equal_gains;
       // k*_wedge >= k*_Tsypkin is proven only when the wedge enclosure lies wholly at or above
       // the Tsypkin one (lo_wedge >= hi_Tsypkin); anything else is not a proof
       if (a.tsypkin.gain_infinite ||
@@ -176,7 +185,8 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
               Status::exact, bad_contain == 0, ev.str(), {evaluated, tsypkin});
   std::ostringstream ev2;
   ev2 << n_h << " H: " << bad_gain
-      << " with k*_wedge < k*_Tsypkin not proven; largest ratio k*_wedge/k*_Tsypkin = " << max_ratio;
+      << " with k*_wedge < k*_Tsypkin not proven; largest ratio k*_wedge/k*_Tsypkin = " << max_ratio << "; "
+      << equal_gains << " with k*_wedge = k*_Tsypkin exactly (no certificate: enclosures cannot order equal gains)";
   check.claim("002.wedge_gain_ge_tsypkin", "k* of (25) vs (21)",
               "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H) -- on the 40 random "
               "stable H above", Status::certified,

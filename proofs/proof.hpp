@@ -65,7 +65,9 @@ struct Instances {
 ///   contains  "p/q": the certified quantity (b* of `bound`, K_max of `bound --max`) equals it
 ///             (an exact claim) or its claimed enclosure [lo, hi] contains it;
 ///   at_most   "p/q": the claimed value, or the enclosure's upper end, is <= it;
-///   flags     claim fields that must have these values ("stable", "wedge", "tsypkin", ...).
+///   flags     claim fields that must have these values ("stable", "wedge", "tsypkin", ...);
+///   at_least  pairs {a, b} of claim fields, each an enclosure {lo, hi} or {infinite: true}: the
+///             certificate proves a >= b (a infinite, or b finite and a.lo >= b.hi).
 /// `input`, when not empty, is a file the command reads (a state space for `passivity-level --ss`):
 /// reproduce writes it to certificates/inputs/<instance>.json and puts that path where args hold
 /// "{input}".
@@ -74,6 +76,7 @@ struct CertificateRequest {
   std::string contains{}, at_most{};
   std::vector<std::pair<std::string, bool>> flags{};
   std::string input{};
+  std::vector<std::pair<std::string, std::string>> at_least{};
 };
 
 struct ClaimResult {

@@ -66,6 +66,23 @@ std::string expectation_fails(const json& c, const proofs::CertificateRequest& r
   } catch (const std::exception& e) {
     return std::string("the certificate's claim cannot be compared with the claim's: ") + e.what();
   }
+  for (const auto& [a, b] : r.at_least) {
+    // a >= b proven: a = +inf, or b finite and a's lower end >= b's upper end
+    const auto infinite = [&](const std::string& key) {
+      return claim.contains(key) && claim[key].is_object() && claim[key].contains("infinite") &&
+             claim[key]["infinite"] == true;
+    };
+    if (!claim.contains(a) || !claim.contains(b) || !claim[a].is_object() || !claim[b].is_object())
+      return "the certificate's claim has no " + (claim.contains(a) ? b : a) + " to compare";
+    if (infinite(a)) continue;
+    try {
+      if (infinite(b) || number(claim[a], "lo") < number(claim[b], "hi"))
+        return "the certificate's claim does not prove " + a + " >= " + b + ": " + claim[a].dump() + " against " +
+               claim[b].dump();
+    } catch (const std::exception& e) {
+      return "claim." + a + " or claim." + b + " is not an enclosure: " + e.what();
+    }
+  }
   for (const auto& [key, want] : r.flags)
     if (!claim.contains(key) || !claim[key].is_boolean() || claim[key].get<bool>() != want)
       return "claim." + key + " of the certificate is " + (claim.contains(key) ? claim[key].dump() : "missing") +
