@@ -48,6 +48,18 @@ hapstab::TransferFunction random_h(std::mt19937& g, int& kind) {
   return hapstab::tf(num, den * Polynomial<rational>::monomial(delay), 1);
 }
 
+// The certificate of one instance of 002.wedge_gain_ge_tsypkin (the H has a finite k*_wedge): the
+// wedge command's, read for its gains (k*_wedge's lower end >= k*_Tsypkin's upper end). Not where the
+// two are equal (both minima at a point where Im H = 0, the gains exact and the same): the
+// certificate's gains are enclosures, which cannot order equal values. False when none was asked.
+bool certify_gain_order(hapstab::proofs::Checker& check, const hapstab::TransferFunction& H,
+                        const hapstab::contact::ContactAnalysis& a) {
+  if (a.tsypkin.gain_infinite || !(a.wedge.max_gain.enclosure->lo > a.tsypkin.max_gain.enclosure->hi)) return false;
+  check.certify("002.wedge_gain_ge_tsypkin", {{"wedge", "--H", hapstab::proofs::rational_function_text(H.H)},
+                                              "", "", {}, "", {{"wedge_gain", "tsypkin_gain"}}});
+  return true;
+}
+
 }  // namespace
 
 HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (25); wedge vs Tsypkin; simulation") {
@@ -136,15 +148,7 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
                    "",
                    {{"wedge", a.wedge.verdict.holds()}, {"tsypkin", a.tsypkin.verdict.holds()}}});
     if (finite_gain.count(!a.wedge.gain_infinite)) {
-      // the same command's certificate, read for the gains: k*_wedge's lower end >= k*_Tsypkin's
-      // upper end. Not where the two are equal (both minima at a point where Im H = 0, the gains
-      // exact and the same): the certificate's gains are enclosures, which cannot order equal values
-      if (!a.tsypkin.gain_infinite && a.wedge.max_gain.enclosure->lo > a.tsypkin.max_gain.enclosure->hi)
-        check.certify("002.wedge_gain_ge_tsypkin",
-                      {{"wedge", "--H", hapstab::proofs::rational_function_text(H.H)},
-                       "", "", {}, "", {{"wedge_gain", "tsypkin_gain"}}});
-      else if (!a.tsypkin.gain_infinite)
-        ++equal_gains;
+      equal_gains += !certify_gain_order(check, H, a) && !a.tsypkin.gain_infinite;
       // k*_wedge >= k*_Tsypkin is proven only when the wedge enclosure lies wholly at or above
       // the Tsypkin one (lo_wedge >= hi_Tsypkin); anything else is not a proof
       if (a.tsypkin.gain_infinite ||

@@ -295,6 +295,7 @@ py::dict scene_max_fields(const std::string& name, const std::string& path, cons
                         "not_affine", "theorem5", "conservatism", "conservatism_note"})
     d[k] = py::none();
   d["supremum_proven"] = false;
+  d["open_at_zero"] = false;
   d["contradiction"] = false;
   return d;
 }
@@ -461,6 +462,7 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
     }
     // inward: a proven set's printed ends lie inside it (as the command's stable_on)
     if (proven_stable) d["stable_on"] = py::make_tuple(decimal_outward(m.stable_from, 17, +1), decimal_outward(m.stable_to, 17, -1));
+    d["open_at_zero"] = m.open_at_zero;  // stable_on excludes 0: M(0) has the eigenvalue 1 (position integrators)
     if (m.stable_at) d["stable_at"] = to_decimal(*m.stable_at, 17);
     if (m.unstable_at) d["unstable_at"] = to_decimal(*m.unstable_at, 17);
   }

@@ -148,6 +148,7 @@ class MaxGain(Result):
     path: str                     # 'one_dof' | 'closed_loop_matrix' | 'bisection_on_verdicts' | 'hidden_modes'
     supremum_proven: bool
     stable_on: Optional[Tuple[str, str]]     # stable for every value in it (certified)
+    open_at_zero: bool            # stable_on excludes 0: M(0) has the eigenvalue 1 (position integrators)
     change_in: Optional[Tuple[str, str]]     # not affine: stable at its lower end, NOT stable at its upper end
     stable_at: Any
     unstable_at: Any

@@ -344,7 +344,7 @@ class MaxGain(Result):
     UndecidedComparison when the supremum is not proven: status undecided or failed).
 
     With scene=...: also path, supremum_proven, stable_on (proven stable there, also when the
-    supremum is undecided), change_in (not affine: stable at its lower end, NOT stable at its
+    supremum is undecided; open_at_zero: its lower end 0 excluded), change_in (not affine: stable at its lower end, NOT stable at its
     upper end), stable_at, unstable_at, gap, not_affine, verdicts_outcome, states, fixed_modes,
     theorem5, conservatism, conservatism_note, contradiction."""
 

@@ -145,6 +145,42 @@ TEST(Edges, MultiDofSupremumOfALoopUnstableAtSmallGains) {
   EXPECT_EQ(at.code, 1) << at.out;
 }
 
+// Devices that integrate position (mass-dampers, no operator spring) under a coupled wall scaled by
+// g: M(0) has the eigenvalue 1 twice, and the walk towards 0 stopped at ~1e-6 of the crossing ("sup g:
+// undecided"). The first-order cover at g = 0 proves (0, eps]: a certified supremum, against the
+// reference of tests/verify/indep_scene_case.py (the loop in mpmath, 50 digits):
+// 0.770300578727967405688307893150..., a complex pair. g = 0 itself is excluded (open_at_zero).
+TEST(Edges, MultiDofSupremumWithPositionIntegrators) {
+  const std::string scene = std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/integrator_devices_2dof.toml";
+  const auto r = run_cli("stability --scene " + scene + " --max g --digits 20 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "certified") << r.out;
+  EXPECT_EQ(j["supremum_proven"], true) << r.out;
+  EXPECT_EQ(j["open_at_zero"], true) << r.out;
+  EXPECT_EQ(j["stable_on"][0], "0") << r.out;
+  EXPECT_EQ(j["crossing"]["at"], "complex pair") << r.out;
+  expect_holds(j, "0.77030057872796740568830789315", "integrator devices, sup g");
+  EXPECT_EQ(j["max"].get<std::string>().rfind("0.7703005787279674056", 0), 0u) << r.out;
+  const auto text = run_cli("stability --scene " + scene + " --max g");
+  EXPECT_EQ(text.code, 0) << text.out;
+  EXPECT_NE(text.out.find("stable for every g in (0, "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("first-order cover"), std::string::npos) << text.out;
+  // a device the environment does not reach keeps its eigenvalue 1 for every g: no supremum stated
+  std::string one = hapstab_test::slurp(scene);
+  const std::string row = "tf = [[\"(2500)/(1)\", \"((-500))/(1)\"], [\"((-500))/(1)\", \"(3500)/(1)\"]]";
+  ASSERT_NE(one.find(row), std::string::npos) << one;
+  one.replace(one.find(row), row.size(), "tf = [[\"2500\", \"0\"], [\"0\", \"0\"]]");
+  const auto path = hapstab_test::temp_path("edges", "integrator_one_reached.toml");
+  std::ofstream(path) << one;
+  const auto free_dof = run_cli("stability --scene " + path.string() + " --max g --json");
+  EXPECT_NE(free_dof.code, 0) << free_dof.out;
+  if (free_dof.code != 2) {
+    const auto jf = nlohmann::json::parse(free_dof.out);
+    EXPECT_NE(jf["status"], "certified") << free_dof.out;
+  }
+}
+
 }  // namespace
 
 namespace {

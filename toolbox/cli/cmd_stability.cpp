@@ -266,6 +266,7 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   j["enclosure"] = enclosure_json(m.crossing, o.digits + 3);
   j["sup_enclosure"] = enclosure_json(m.sup, 17);
   j["stable_on"] = stable_interval_json(m);
+  j["open_at_zero"] = m.open_at_zero;
   j["gap"] = m.gap;
   j["stable_at"] = to_decimal(*m.stable_at, 17);
   j["unstable_at"] = to_decimal(*m.unstable_at, 17);
@@ -385,8 +386,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
           << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
           << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
           << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
-          << "  stable for every " << o.max_name << " in [" << j["stable_on"][0].get<std::string>() << ", "
-          << j["stable_on"][1].get<std::string>() << "] (certified), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
+          << "  stable for every " << o.max_name << " in " << (m.open_at_zero ? "(" : "[") << j["stable_on"][0].get<std::string>()
+          << ", " << j["stable_on"][1].get<std::string>() << "] (certified"
+          << (m.open_at_zero ? "; at " + o.max_name + " = 0 only marginally: position integrators" : std::string())
+          << "), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
           << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
           << " rad/s; mode |x| per DOF:";
         for (auto& [dof, a] : j["crossing"]["mode"].items()) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);

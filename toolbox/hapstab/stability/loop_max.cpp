@@ -381,6 +381,8 @@ bool inside_disk(const acb_t z, long prec) {
   return arb_is_negative(r.get());
 }
 
+MatQ kernel(const MatQ& A);  // below: a basis of the kernel, exact
+
 struct Cover {
   const BallMat& M0;
   const BallMat& M1;
@@ -594,6 +596,181 @@ struct Cover {
       arb_mat_add(S.get(), S.get(), M0.get(), 128);
       const SchurDecision d = schur_decide(double_ball_matrix(S));
       if (d.stable && *d.stable) return w;
+    }
+    return 0;
+  }
+  // The first-order cover at p = 0, where M(0) has the eigenvalue 1 with eigenvectors supported on
+  // columns of M0 that are exact (a device's position integrator that nothing scaled by p reads:
+  // arb_mat_exp returns that column of Phi exactly, e_j, and the controller's rows are rational; an
+  // environment's state that remembers the position gives e_j + e_c). Returns eps > 0 such that
+  // every M(p), p in (0, eps], is Schur stable (certified; 0: not proven). V: an exact basis of the
+  // kernel of (M0 - I) restricted to those columns (rational), so M0 V = V exactly and M0 V Q = V Q
+  // for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of C = R^-1 M1 R is diagonal,
+  // R2 approximate eigenvectors of the other eigenvalues of M(0); R as a ball (V Q in Arb), L a ball
+  // enclosure of R^-1 (of every matrix of the ball, the true R among them). The exact R^-1 M0 R has
+  // the columns [I; 0] in the first block, so
+  //   R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]]      (B = R^-1 M0 R)
+  // and, for each t > 0, Gershgorin's discs of D^-1 (.) D with D = diag(I, kappa t I) (a similarity):
+  //  - row i of the first block: centre 1 + t c (c = C_ii), radius <= t rho_i + t^2 sigma_i with
+  //    rho_i = sum_{j in 1, j != i} |C_ij| + kappa sum_{j in 2} |B_ij|, sigma_i = kappa sum_{j in 2} |C_ij|;
+  //    inside the unit circle when 2 (Re c + rho_i) + t (|c|^2 + 2 sigma_i) < 0, since then
+  //    |1 + t c|^2 = 1 + 2t Re c + t^2 |c|^2 < 1 - 2t rho_i - 2t^2 sigma_i <= (1 - t rho_i - t^2 sigma_i)^2
+  //    (and t rho_i + t^2 sigma_i < 1/2); the left side is increasing in t: checked at t = eps;
+  //  - row i of the second block: centre B_ii + t C_ii, radius sum_{j in 2, j != i} (|B_ij| + t |C_ij|)
+  //    + sum_{j in 1} |C_ij| / kappa; |B_ii + t C_ii| is convex in t: checked at t = 0 and t = eps.
+  // kappa = 2 max_i (sum_{j in 1} |C_ij|) / (1 - |B_ii| - sum_{j in 2, j != i} |B_ij|) over the
+  // second block. A first-block eigenvalue that p does not move into the disk (Re c >= 0: a
+  // conserved quantity, an unstable direction), or an eigenvalue of M(0) at 1 that V does not
+  // hold (a Jordan block, an inexact column), leaves the cover unproven.
+  rational near_zero() const {
+    const long n = M0.rows();
+    std::vector<long> S;  // the columns of M0 that are exact
+    for (long j = 0; j < n; ++j) {
+      bool exact = true;
+      for (long i = 0; i < n && exact; ++i) exact = arb_is_exact(arb_mat_entry(M0.get(), i, j)) != 0;
+      if (exact) S.push_back(j);
+    }
+    if (S.empty()) return 0;
+    MatQ A(n, static_cast<long>(S.size()));
+    for (long a = 0; a < A.cols(); ++a)
+      for (long i = 0; i < n; ++i)
+        A(i, a) = flint::to_rational(arb_midref(arb_mat_entry(M0.get(), i, S[static_cast<size_t>(a)]))) -
+                  (i == S[static_cast<size_t>(a)] ? rational(1) : rational(0));
+    const MatQ K = kernel(A);
+    const long k = K.cols();
+    if (k == 0 || k == n) return 0;
+    MatQ V = MatQ::Zero(n, k);
+    for (long a = 0; a < A.cols(); ++a) V.row(S[static_cast<size_t>(a)]) = K.row(a);
+    const long pr = 128;
+    AcbMat R(n, n);
+    if (!near_zero_basis(R, V, pr)) return 0;
+    AcbMat L(n, n), M(n, n), B(n, n), C(n, n);
+    if (!acb_mat_inv(L.m, R.m, pr)) return 0;
+    acb_mat_set_arb_mat(M.m, M0.get());
+    acb_mat_mul(B.m, L.m, M.m, pr);
+    acb_mat_mul(B.m, B.m, R.m, pr);
+    acb_mat_set_arb_mat(M.m, M1.get());
+    acb_mat_mul(C.m, L.m, M.m, pr);
+    acb_mat_mul(C.m, C.m, R.m, pr);
+    for (long j = 0; j < k; ++j)  // R^-1 M0 R e_j = R^-1 R e_j = e_j exactly (M0 R e_j = R e_j)
+      for (long i = 0; i < n; ++i) {
+        if (i == j) acb_one(acb_mat_entry(B.m, i, j));
+        else acb_zero(acb_mat_entry(B.m, i, j));
+      }
+    return near_zero_discs(B, C, k, pr);
+  }
+  // R = [V Q, R2] of near_zero, V Q in Arb (a ball holding it), R2 exact as stored (doubles); false
+  // when M(0) has more eigenvalues near 1 than V's k columns, or an eigensolver fails.
+  bool near_zero_basis(AcbMat& R, const MatQ& V, long pr) const {
+    const long n = M0.rows(), k = V.cols();
+    Eigen::EigenSolver<Eigen::MatrixXd> es(mid(M0), true);
+    if (es.info() != Eigen::Success) return false;
+    std::vector<long> rest;
+    for (long i = 0; i < n; ++i)
+      if (std::abs(es.eigenvalues()(i) - 1.0) > 1e-9) rest.push_back(i);
+    if (static_cast<long>(rest.size()) != n - k) return false;
+    Eigen::MatrixXcd Rd(n, n);
+    for (long i = 0; i < n; ++i)
+      for (long a = 0; a < k; ++a) Rd(i, a) = to_real<double>(V(i, a));
+    for (long a = 0; a < n - k; ++a) Rd.col(k + a) = es.eigenvectors().col(rest[static_cast<size_t>(a)]);
+    const Eigen::MatrixXcd Cd = Rd.partialPivLu().solve(mid(M1).cast<std::complex<double>>() * Rd);
+    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ce(Cd.topLeftCorner(k, k), true);
+    if (ce.info() != Eigen::Success || !ce.eigenvectors().allFinite() || !Rd.allFinite()) return false;
+    AcbMat Vb(n, k), Qb(k, k), VQ(n, k);
+    for (long i = 0; i < n; ++i)
+      for (long a = 0; a < k; ++a) {
+        flint::set(acb_realref(acb_mat_entry(Vb.m, i, a)), V(i, a), pr);
+        arb_zero(acb_imagref(acb_mat_entry(Vb.m, i, a)));
+      }
+    for (long a = 0; a < k; ++a)
+      for (long b = 0; b < k; ++b)
+        acb_set_d_d(acb_mat_entry(Qb.m, a, b), ce.eigenvectors()(a, b).real(), ce.eigenvectors()(a, b).imag());
+    acb_mat_mul(VQ.m, Vb.m, Qb.m, pr);
+    for (long i = 0; i < n; ++i) {
+      for (long a = 0; a < k; ++a) acb_set(acb_mat_entry(R.m, i, a), acb_mat_entry(VQ.m, i, a));
+      for (long a = k; a < n; ++a) acb_set_d_d(acb_mat_entry(R.m, i, a), Rd(i, a).real(), Rd(i, a).imag());
+    }
+    return true;
+  }
+  // The discs of near_zero on B = R^-1 M0 R (first k columns exact) and C = R^-1 M1 R: the largest
+  // eps tried (from the first block's bound, halved while a disc is not inside) with every disc
+  // inside for t in (0, eps], 0 when none.
+  static rational near_zero_discs(const AcbMat& B, const AcbMat& C, long k, long pr) {
+    const long n = acb_mat_nrows(B.m);
+    auto sum_abs = [&](const AcbMat& M, long i, long j0, long j1, long skip) {
+      Ball s, t;
+      for (long j = j0; j < j1; ++j)
+        if (j != skip) {
+          acb_abs(t.get(), acb_mat_entry(M.m, i, j), pr);
+          arb_add(s.get(), s.get(), t.get(), pr);
+        }
+      return s;
+    };
+    auto upper = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_UP) + mag_get_d(arb_radref(x.get())); };
+    // second block: 1 - |B_ii| - r0_i > 0, and kappa
+    double kappa = 0;
+    for (long i = k; i < n; ++i) {
+      Ball m = sum_abs(B, i, k, n, i), q = sum_abs(C, i, 0, k, -1), t;
+      acb_abs(t.get(), acb_mat_entry(B.m, i, i), pr);
+      arb_add(m.get(), m.get(), t.get(), pr);
+      arb_sub_ui(m.get(), m.get(), 1, pr);
+      arb_neg(m.get(), m.get());
+      if (!arb_is_positive(m.get())) return 0;
+      arb_div(t.get(), q.get(), m.get(), pr);
+      kappa = std::max(kappa, 2 * upper(t));
+    }
+    if (!(kappa > 0)) kappa = 1e-300;
+    if (!std::isfinite(kappa)) return 0;
+    const Ball kap(kappa);
+    // first block: lin_i = 2 (Re c + rho_i) < 0, quad_i = |c|^2 + 2 sigma_i; eps <= -lin_i / quad_i
+    std::vector<Ball> lin(static_cast<size_t>(k)), quad(static_cast<size_t>(k));
+    double eps = INFINITY;
+    for (long i = 0; i < k; ++i) {
+      Ball rho = sum_abs(C, i, 0, k, i), sig = sum_abs(C, i, k, n, -1), t;
+      const Ball b12 = sum_abs(B, i, k, n, -1);
+      arb_addmul(rho.get(), kap.get(), b12.get(), pr);
+      arb_mul(sig.get(), sig.get(), kap.get(), pr);
+      Ball& l = lin[static_cast<size_t>(i)];
+      Ball& q = quad[static_cast<size_t>(i)];
+      arb_add(l.get(), acb_realref(acb_mat_entry(C.m, i, i)), rho.get(), pr);
+      arb_mul_2exp_si(l.get(), l.get(), 1);
+      if (!arb_is_negative(l.get())) return 0;
+      acb_abs(t.get(), acb_mat_entry(C.m, i, i), pr);
+      arb_sqr(q.get(), t.get(), pr);
+      arb_addmul_si(q.get(), sig.get(), 2, pr);
+      arb_div(t.get(), l.get(), q.get(), pr);
+      arb_neg(t.get(), t.get());
+      const double e = arf_get_d(arb_midref(t.get()), ARF_RND_DOWN) - mag_get_d(arb_radref(t.get()));
+      if (std::isfinite(e)) eps = std::min(eps, 0.5 * e);
+    }
+    if (!(eps > 0) || !std::isfinite(eps)) return 0;
+    for (int tries = 0; tries < 60; ++tries, eps *= 0.5) {
+      const Ball e(eps);
+      bool ok = true;
+      for (long i = 0; i < k && ok; ++i) {  // lin + eps quad < 0
+        Ball v;
+        arb_mul(v.get(), quad[static_cast<size_t>(i)].get(), e.get(), pr);
+        arb_add(v.get(), v.get(), lin[static_cast<size_t>(i)].get(), pr);
+        ok = arb_is_negative(v.get());
+      }
+      for (long i = k; i < n && ok; ++i) {  // max(|B_ii|, |B_ii + eps C_ii|) + r0 + eps rC + q / kappa < 1
+        Ball z = sum_abs(B, i, k, n, i), rC = sum_abs(C, i, k, n, i), q = sum_abs(C, i, 0, k, -1), a, b;
+        acb_t w;
+        acb_init(w);
+        acb_mul_arb(w, acb_mat_entry(C.m, i, i), e.get(), pr);
+        acb_add(w, w, acb_mat_entry(B.m, i, i), pr);
+        acb_abs(a.get(), w, pr);
+        acb_clear(w);
+        acb_abs(b.get(), acb_mat_entry(B.m, i, i), pr);
+        arb_max(a.get(), a.get(), b.get(), pr);
+        arb_add(z.get(), z.get(), a.get(), pr);
+        arb_addmul(z.get(), rC.get(), e.get(), pr);
+        arb_div(q.get(), q.get(), kap.get(), pr);
+        arb_add(z.get(), z.get(), q.get(), pr);
+        arb_sub_ui(z.get(), z.get(), 1, pr);
+        ok = arb_is_negative(z.get());
+      }
+      if (ok) return rational(eps);
     }
     return 0;
   }
@@ -941,6 +1118,24 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
     down = h >= down ? rational(0) : down - h;
     if (down < floor && down > 0) break;
   }
+  if (down > 0) {
+    // M(0) with the eigenvalue 1 on position integrators: (0, eps] by the first-order cover at 0,
+    // and the walk on down to eps (the floor lifted)
+    const rational eps = cov.near_zero();
+    if (eps > 0) {
+      for (const long budget = cov.checks + 400; cov.checks < budget && down > eps;) {
+        rational h = cov.radius(down, -1);
+        if (h <= 0) h = cov.stein(down, -1, down);
+        if (h <= 0) break;
+        down = h >= down ? rational(0) : down - h;
+      }
+      if (down <= eps) {
+        down = 0;
+        out.open_at_zero = true;
+        out.first_order_to = eps;
+      }
+    }
+  }
   out.cover_intervals = cov.checks;
   out.stable_from = down;
   out.stable_to = closed ? top - enough : up;
@@ -1119,7 +1314,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
                "to each other for Rump's test)";
     return out;
   }
-  const std::string on = "every " + name + " in [" + decimal_outward(out.stable_from, 17, +1) + ", " +
+  const std::string on = "every " + name + " in " + (out.open_at_zero ? "(" : "[") + decimal_outward(out.stable_from, 17, +1) + ", " +
                          decimal_outward(out.stable_to, 17, -1) + "] is proven stable (" +
                          std::to_string(cov.checks) + " steps)";
   const std::string crossing = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
@@ -1146,9 +1341,12 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   o.precision(6);
   o << "certified: an eigenvalue of the closed-loop matrix M (order " << out.states << ") is on the unit circle at " << name
     << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
-    << " in [0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
+    << " in " << (out.open_at_zero ? "(" : "[") << "0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
     << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
+  if (out.open_at_zero)
+    o << "; on (0, " << decimal_outward(out.first_order_to, 6, -1) << "] the first-order cover at " << name
+      << " = 0, where M(0) has the eigenvalue 1 on position integrators (M(0) itself is only marginally stable)";
   o << "); " << (out.confirmed_by.empty() ? "decide_loop: " : "") << "stable at " << static_cast<double>(*out.stable_at)
     << ", NOT stable at " << static_cast<double>(*out.unstable_at)
     << (out.confirmed_by.empty() ? std::string() : " (by " + out.confirmed_by + ")") << ". ";

@@ -37,8 +37,18 @@
 //     a step fail anywhere short of the crossing, tries the closing step by monotonicity from there.
 // The supremum is sup{p >= 0 : stable for every p in (0, sup)} (docs/stability.md), so it is
 // stated (outcome holds) only when the walk covers [0, stable_to]: M(0) Schur stable and reached.
-// Where the walk towards 0 stops at stable_from > 0 (M(0) with an eigenvalue on the circle, or an
-// unstable window below: an open-loop unstable device that only larger gains stabilise) the
+// Where M(0) has the eigenvalue 1 with eigenvectors on columns of M0 that are exact (a device's
+// position integrator that nothing scaled by p reads: that column of Phi is exactly e_j, an
+// environment's memory of the position adds e_c), a first-order cover at p = 0 proves (0, eps]: V an
+// exact (rational) basis of that kernel of M0 - I, and in a basis [V Q, R2]
+// R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]] exactly in its first block;
+// Gershgorin's discs with the scaling diag(I, kappa t I) are inside the circle for t in (0, eps]
+// when every Re (C11)_ii plus its row's off-diagonal part is < 0 (Cover::near_zero states the
+// bounds). The walk then continues down to eps, and the supremum of (0, sup) is stated with
+// open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass (a Jordan block at
+// z = 1) is not covered: its eigenvalues leave 1 like sqrt(p).
+// Where the walk towards 0 stops at stable_from > 0 otherwise (another eigenvalue on the circle, or
+// an unstable window below: an open-loop unstable device that only larger gains stabilise) the
 // outcome is undecided and what is proven is [stable_from, stable_to] (certified). Where M(0) has
 // an eigenvalue strictly outside the circle (a Stein inertia certificate on the ball M0), so has
 // M(p) for every small p > 0: sup = 0 (outcome fails, certified). The supremum then lies in
@@ -72,6 +82,10 @@ struct LoopMax {
   Enclosure<rational> theta{0, 0};       ///< its angle in [0, pi] (rad; omega = theta / T)
   Enclosure<rational> sup{0, 0};         ///< [stable_to, crossing.hi]: holds the supremum (certified)
   rational stable_from = 0, stable_to = 0;  ///< stable for every p in [stable_from, stable_to] (certified)
+  /// M(0) has the eigenvalue 1 (position integrators): stable_from = 0 is excluded, the loop is
+  /// stable for every p in (0, stable_to], (0, first_order_to] by the first-order cover at p = 0.
+  bool open_at_zero = false;
+  rational first_order_to = 0;
   double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered (0: sup = crossing)
   std::optional<rational> stable_at;     ///< decide_loop: stable there (just below the crossing)
   std::optional<rational> unstable_at;   ///< decide_loop: NOT stable there (just above the crossing)
