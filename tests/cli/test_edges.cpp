@@ -166,6 +166,14 @@ TEST(Edges, MultiDofSupremumWithPositionIntegrators) {
   EXPECT_EQ(text.code, 0) << text.out;
   EXPECT_NE(text.out.find("stable for every g in (0, "), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("first-order cover"), std::string::npos) << text.out;
+  // the contact scene of docs/commands.md (bench/contact_scene.py 2, E scaled by g): environment and
+  // operator states beside the integrators; the crossing as before stop 58, now a supremum
+  const auto contact = run_cli("stability --scene " + std::string(HAPSTAB_SOURCE_DIR) +
+                               "/tests/cli/scenes/contact2_gain.toml --max g --digits 20 --json");
+  ASSERT_EQ(contact.code, 0) << contact.out;
+  const auto jc = nlohmann::json::parse(contact.out);
+  EXPECT_EQ(jc["open_at_zero"], true) << contact.out;
+  EXPECT_EQ(jc["max"].get<std::string>().rfind("0.973254445253120738", 0), 0u) << contact.out;
   // a device the environment does not reach keeps its eigenvalue 1 for every g: no supremum stated
   std::string one = hapstab_test::slurp(scene);
   const std::string row = "tf = [[\"(2500)/(1)\", \"((-500))/(1)\"], [\"((-500))/(1)\", \"(3500)/(1)\"]]";

@@ -381,13 +381,12 @@ bool inside_disk(const acb_t z, long prec) {
   return arb_is_negative(r.get());
 }
 
-MatQ kernel(const MatQ& A);  // below: a basis of the kernel, exact
-
 struct Cover {
   const BallMat& M0;
   const BallMat& M1;
   long prec = 128;
   long checks = 0;
+  MatQ integrators{};  // integrator_kernel: exact eigenvectors of M0 for the eigenvalue 1 (columns)
   // Eigenvalues of M(c) closer to each other than a quarter of their distance to the unit circle
   // (or than 1e-7) form a cluster (grouped transitively): the 8 operators' modes s^2 + s + 1 of the
   // 8-DOF contact scene, within 1e-5 of each other and 5e-3 inside. Their eigenvectors are nearly
@@ -599,13 +598,11 @@ struct Cover {
     }
     return 0;
   }
-  // The first-order cover at p = 0, where M(0) has the eigenvalue 1 with eigenvectors supported on
-  // columns of M0 that are exact (a device's position integrator that nothing scaled by p reads:
-  // arb_mat_exp returns that column of Phi exactly, e_j, and the controller's rows are rational; an
-  // environment's state that remembers the position gives e_j + e_c). Returns eps > 0 such that
-  // every M(p), p in (0, eps], is Schur stable (certified; 0: not proven). V: an exact basis of the
-  // kernel of (M0 - I) restricted to those columns (rational), so M0 V = V exactly and M0 V Q = V Q
-  // for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of C = R^-1 M1 R is diagonal,
+  // The first-order cover at p = 0, where M(0) has the eigenvalue 1 on position integrators (a
+  // device's position that nothing scaled by p holds; an environment's state that remembers it
+  // follows). Returns eps > 0 such that every M(p), p in (0, eps], is Schur stable (certified; 0:
+  // not proven). V = `integrators` (integrator_kernel: exact, rational), so M0 V = V exactly and
+  // M0 V Q = V Q for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of C = R^-1 M1 R is diagonal,
   // R2 approximate eigenvectors of the other eigenvalues of M(0); R as a ball (V Q in Arb), L a ball
   // enclosure of R^-1 (of every matrix of the ball, the true R among them). The exact R^-1 M0 R has
   // the columns [I; 0] in the first block, so
@@ -624,23 +621,9 @@ struct Cover {
   // hold (a Jordan block, an inexact column), leaves the cover unproven.
   rational near_zero() const {
     const long n = M0.rows();
-    std::vector<long> S;  // the columns of M0 that are exact
-    for (long j = 0; j < n; ++j) {
-      bool exact = true;
-      for (long i = 0; i < n && exact; ++i) exact = arb_is_exact(arb_mat_entry(M0.get(), i, j)) != 0;
-      if (exact) S.push_back(j);
-    }
-    if (S.empty()) return 0;
-    MatQ A(n, static_cast<long>(S.size()));
-    for (long a = 0; a < A.cols(); ++a)
-      for (long i = 0; i < n; ++i)
-        A(i, a) = flint::to_rational(arb_midref(arb_mat_entry(M0.get(), i, S[static_cast<size_t>(a)]))) -
-                  (i == S[static_cast<size_t>(a)] ? rational(1) : rational(0));
-    const MatQ K = kernel(A);
-    const long k = K.cols();
-    if (k == 0 || k == n) return 0;
-    MatQ V = MatQ::Zero(n, k);
-    for (long a = 0; a < A.cols(); ++a) V.row(S[static_cast<size_t>(a)]) = K.row(a);
+    const MatQ& V = integrators;
+    const long k = V.cols();
+    if (k == 0 || k == n || V.rows() != n) return 0;
     const long pr = 128;
     AcbMat R(n, n);
     if (!near_zero_basis(R, V, pr)) return 0;
@@ -856,6 +839,25 @@ MatQ kernel(const MatQ& A) {
 // to the controller's states): the largest such, by V_{j+1} = {v in V_j : X0 v, dX v in V_j}.
 // A mode in V is an eigenvalue of every M(p) (the hidden modes of a block: an environment's
 // unobservable states); the rest of the spectrum is that of M on the quotient.
+// The vectors v = [vp; vc; 0] of M(0)'s state (plant, controller, delay buffer: assemble's order)
+// with A vp = 0, Ku0 [vp; vc] = 0 and Kx0 [vp; vc] = vc, a basis (columns, exact): for each,
+// M0 v = v exactly, whatever M0's balls hold -- e^{AT} vp = vp (A vp = 0), the force Ku0 v it
+// produces is 0 (so are the buffer's slots and the input integrals' share), the controller state
+// holds. A device's position (x' = v, read by nothing that p does not scale) is one; an
+// environment's state that remembers the position comes with it.
+MatQ integrator_kernel(const LoopFamily& F) {
+  const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(F.Kx0.rows()), N = static_cast<long>(F.Ku0.rows());
+  MatQ S = MatQ::Zero(ns + N + nc, ns + nc);
+  S.topLeftCorner(ns, ns) = F.A;
+  S.middleRows(ns, N) = F.Ku0;
+  S.bottomRows(nc) = F.Kx0;
+  for (long i = 0; i < nc; ++i) S(ns + N + i, ns + i) -= 1;
+  const MatQ K = kernel(S);
+  MatQ V = MatQ::Zero(order(F), K.cols());
+  V.topRows(ns + nc) = K;
+  return V;
+}
+
 MatQ fixed_subspace(const MatQ& Kc0, const MatQ& dKc, const MatQ& X0, const MatQ& dX) {
   MatQ S(Kc0.rows() + dKc.rows(), Kc0.cols());
   S << Kc0, dKc;
@@ -1306,6 +1308,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   if (sp.rho(p0d) >= 1) p0d = is->below < static_cast<double>(top) ? is->below : is->stable_grid;
   const rational p0 = rational(p0d);
   Cover cov{*base.M0, *base.M1};
+  cov.integrators = integrator_kernel(F);
   const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
   if (out.stable_to <= p0 && !closed) {
     out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +

@@ -37,10 +37,10 @@
 //     a step fail anywhere short of the crossing, tries the closing step by monotonicity from there.
 // The supremum is sup{p >= 0 : stable for every p in (0, sup)} (docs/stability.md), so it is
 // stated (outcome holds) only when the walk covers [0, stable_to]: M(0) Schur stable and reached.
-// Where M(0) has the eigenvalue 1 with eigenvectors on columns of M0 that are exact (a device's
-// position integrator that nothing scaled by p reads: that column of Phi is exactly e_j, an
-// environment's memory of the position adds e_c), a first-order cover at p = 0 proves (0, eps]: V an
-// exact (rational) basis of that kernel of M0 - I, and in a basis [V Q, R2]
+// Where M(0) has the eigenvalue 1 on position integrators (v = [vp; vc; 0] with A vp = 0,
+// Ku0 [vp; vc] = 0, Kx0 [vp; vc] = vc: then M0 v = v exactly, e^{AT} vp = vp; a device's position
+// that nothing scaled by p holds, an environment's memory of it), a first-order cover at p = 0
+// proves (0, eps]: V an exact (rational) basis of those v, and in a basis [V Q, R2]
 // R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]] exactly in its first block;
 // Gershgorin's discs with the scaling diag(I, kappa t I) are inside the circle for t in (0, eps]
 // when every Re (C11)_ii plus its row's off-diagonal part is < 0 (Cover::near_zero states the
