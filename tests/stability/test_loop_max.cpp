@@ -91,11 +91,20 @@ TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
       // the wall K' + B (z-1)/(Tz) with K' = p: affine in p (the damper's part rides along unscaled)
       const stability::LoopAt at = [&](const Q& p) { return scene_loop(kPureMass, {{"m", m}, {"B", B}, {"K", p}}); };
       const stability::LoopMax r = stability::max_parameter(at, K / 2, "K", points(kPureMass, {{"m", m}, {"B", B}}, "K"), 16);
-      // M(0) has the mass's Jordan block at z = 1: (0, a) is not covered, so no supremum is stated
-      // (issue 46 item 2); the crossing and the interval proven stable below it are
-      EXPECT_EQ(r.outcome, Outcome::undecided) << r.note;
-      EXPECT_GT(r.stable_from, 0);
+      // M(0): the wall's damper B is not scaled by p, so it holds the mass's velocity and the position
+      // is a simple eigenvalue 1 (no Jordan block). Before stop 58 the walk towards 0 stopped short
+      // of it and no supremum was stated; the first-order cover at p = 0 proves (0, eps] (issue 46),
+      // and the supremum is the closed form's crossing
+      EXPECT_EQ(r.outcome, Outcome::holds) << r.note;
+      EXPECT_TRUE(r.open_at_zero) << r.note;
+      EXPECT_EQ(r.stable_from, 0);
+      EXPECT_GT(r.first_order_to, 0);
       EXPECT_LT(r.stable_from, r.stable_to);
+      // the exact verdict (Schur-Cohn on det(zI - M), rational for pure masses) agrees inside the
+      // cover, at its smallest values too, and beyond the crossing
+      for (const Q& p : {r.first_order_to / 1000000, r.first_order_to / 2, r.first_order_to, K / 2})
+        EXPECT_TRUE(exactly_stable(at(p))) << "m = " << m.str() << ", B = " << B.str() << ", K = " << p.str();
+      EXPECT_FALSE(exactly_stable(at(r.crossing.hi * Q(1000001, 1000000))));
       EXPECT_LE(r.stable_to, K);
       EXPECT_TRUE(r.crossing.lo <= K && K <= r.crossing.hi) << "K* = " << K.str() << " not in [" << r.crossing.lo.str() << ", " << r.crossing.hi.str() << "]";
       EXPECT_LE(static_cast<double>((r.crossing.hi - r.crossing.lo) / K), 1e-15);
