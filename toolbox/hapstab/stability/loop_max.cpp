@@ -602,8 +602,9 @@ struct Cover {
   // device's position that nothing scaled by p holds; an environment's state that remembers it
   // follows). Returns eps > 0 such that every M(p), p in (0, eps], is Schur stable (certified; 0:
   // not proven). V = `integrators` (integrator_kernel: exact, rational), so M0 V = V exactly and
-  // M0 V Q = V Q for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of C = R^-1 M1 R is diagonal,
-  // R2 approximate eigenvectors of the other eigenvalues of M(0); R as a ball (V Q in Arb), L a ball
+  // M0 V Q = V Q for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of
+  // C = R^-1 M1 R is diagonal, R2 approximate eigenvectors of the other eigenvalues of M(0); R as a
+  // ball (V Q in Arb), L a ball
   // enclosure of R^-1 (of every matrix of the ball, the true R among them). The exact R^-1 M0 R has
   // the columns [I; 0] in the first block, so
   //   R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]]      (B = R^-1 M0 R)
@@ -618,7 +619,8 @@ struct Cover {
   // kappa = 2 max_i (sum_{j in 1} |C_ij|) / (1 - |B_ii| - sum_{j in 2, j != i} |B_ij|) over the
   // second block. A first-block eigenvalue that p does not move into the disk (Re c >= 0: a
   // conserved quantity, an unstable direction), or an eigenvalue of M(0) at 1 that V does not
-  // hold (a Jordan block, an inexact column), leaves the cover unproven.
+  // hold (a pure mass's Jordan block: B is block upper triangular, so B22 then has the eigenvalue 1
+  // and its discs cannot all be inside), leaves the cover unproven.
   rational near_zero() const {
     const long n = M0.rows();
     const MatQ& V = integrators;
