@@ -45,8 +45,8 @@
 // Gershgorin's discs with the scaling diag(I, kappa t I) are inside the circle for t in (0, eps]
 // when every Re (C11)_ii plus its row's off-diagonal part is < 0 (Cover::near_zero states the
 // bounds). The walk then continues down to eps, and the supremum of (0, sup) is stated with
-// open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass (a Jordan block at
-// z = 1) is not covered: its eigenvalues leave 1 like sqrt(p).
+// open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass that nothing
+// damps at p = 0 (a Jordan block at z = 1) is not covered: its eigenvalues leave 1 like sqrt(p).
 // Where the walk towards 0 stops at stable_from > 0 otherwise (another eigenvalue on the circle, or
 // an unstable window below: an open-loop unstable device that only larger gains stabilise) the
 // outcome is undecided and what is proven is [stable_from, stable_to] (certified). Where M(0) has
