@@ -167,7 +167,9 @@ TEST(Edges, MultiDofSupremumWithPositionIntegrators) {
   EXPECT_NE(text.out.find("stable for every g in (0, "), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("first-order cover"), std::string::npos) << text.out;
   // the contact scene of docs/commands.md (bench/contact_scene.py 2, E scaled by g): environment and
-  // operator states beside the integrators; the crossing as before stop 58, now a supremum
+  // operator states beside the integrators; the crossing as before stop 58, now a supremum. A
+  // regression value (the Krawczyk enclosure of the crossing, unchanged by this path), not an
+  // independent reference: the mpmath loop of tests/verify covers the integrator scene above.
   const auto contact = run_cli("stability --scene " + std::string(HAPSTAB_SOURCE_DIR) +
                                "/tests/cli/scenes/contact2_gain.toml --max g --digits 20 --json");
   ASSERT_EQ(contact.code, 0) << contact.out;
