@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "cli/cli_run.hpp"
 #include "cli/figure.hpp"
@@ -22,4 +24,23 @@ TEST(FigureReview, BenchTimingReadsAJsonWithInfinityAndNaN) {
   ASSERT_EQ(v.text.size(), 1u);
   EXPECT_EQ(v.text[0].second, "timed 2026-11-27 on 2 CPUs at 2596 MHz, load average 1.5") << v.text[0].second;
   fs::remove_all(d);
+}
+
+// reproduce draws (and docs/commands.md shows) the figures in this order: it must not depend on the
+// path the compiler saw (absolute in a unity batch, relative when ccache's base_dir rewrites it).
+TEST(FigureReview, FiguresAreOrderedByTheRegisteringFilesNameThenLine) {
+  const auto name = [](const char* path) {
+    const std::string p(path);
+    return p.substr(p.find_last_of('/') + 1);
+  };
+  const auto& all = hapstab::cli::figures();
+  ASSERT_GT(all.size(), 10u);
+  std::map<std::string, std::string> path_of;  // a file's name -> its path: the names are unique
+  for (size_t i = 0; i < all.size(); ++i) {
+    const auto [it, fresh] = path_of.emplace(name(all[i].file), all[i].file);
+    EXPECT_TRUE(fresh || it->second == all[i].file) << all[i].file << " and " << it->second << " share a name";
+    if (i == 0) continue;
+    const auto a = name(all[i - 1].file), b = name(all[i].file);
+    EXPECT_TRUE(a < b || (a == b && all[i - 1].line < all[i].line)) << all[i - 1].name << " before " << all[i].name;
+  }
 }

@@ -35,7 +35,7 @@ struct Figure {
   int line = 0;
 };
 
-/// The figures in the order of the files that register them, then of their lines: the same whatever
+/// The figures in the order of the names of the files that register them, then of their lines: the same whatever
 /// order the linker gave the static registrations (a unity build merges files into one object).
 std::vector<Figure>& figures();
 
