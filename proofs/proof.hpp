@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "hapstab/numeric/result.hpp"
+#include "hapstab/report/registration.hpp"
 
 namespace hapstab::proofs {
 
@@ -152,7 +153,7 @@ struct Proof {
   int line = 0;
 };
 
-/// The proofs in the order of their files' names, then of their lines: the same whatever order the
+/// The proofs in the order of their files' names, then of their lines (report/registration.hpp): the same whatever order the
 /// linker gave their static registrations (a unity build, CMakeLists.txt, merges files into one
 /// object and orders the objects otherwise), so `hapstab proofs` and the report list them alike.
 inline std::vector<Proof>& registry() {
@@ -164,8 +165,7 @@ struct Register {
   explicit Register(Proof p) {
     auto& r = registry();
     const auto before = [](const Proof& a, const Proof& b) {
-      const int c = std::strcmp(a.file, b.file);
-      return c < 0 || (c == 0 && a.line < b.line);
+      return report::registered_before(a.file, a.line, b.file, b.line);
     };
     r.insert(std::upper_bound(r.begin(), r.end(), p, before), p);
   }

@@ -10,6 +10,7 @@
 
 #include "cli/cli_run.hpp"
 #include "cli/figure.hpp"
+#include "hapstab/report/registration.hpp"
 
 namespace fs = std::filesystem;
 
@@ -29,18 +30,18 @@ TEST(FigureReview, BenchTimingReadsAJsonWithInfinityAndNaN) {
 // reproduce draws (and docs/commands.md shows) the figures in this order: it must not depend on the
 // path the compiler saw (absolute in a unity batch, relative when ccache's base_dir rewrites it).
 TEST(FigureReview, FiguresAreOrderedByTheRegisteringFilesNameThenLine) {
-  const auto name = [](const char* path) {
-    const std::string p(path);
-    return p.substr(p.find_last_of('/') + 1);
-  };
+  using hapstab::report::source_file_name;
+  EXPECT_TRUE(hapstab::report::registered_before("../toolbox/cli/b.cpp", 1, "/abs/tree/toolbox/cli/c.cpp", 1));
+  EXPECT_FALSE(hapstab::report::registered_before("/abs/tree/toolbox/cli/c.cpp", 1, "../toolbox/cli/b.cpp", 1));
+  EXPECT_TRUE(hapstab::report::registered_before("/abs/c.cpp", 1, "c.cpp", 2));
   const auto& all = hapstab::cli::figures();
   ASSERT_GT(all.size(), 10u);
   std::map<std::string, std::string> path_of;  // a file's name -> its path: the names are unique
   for (size_t i = 0; i < all.size(); ++i) {
-    const auto [it, fresh] = path_of.emplace(name(all[i].file), all[i].file);
+    const auto [it, fresh] = path_of.emplace(source_file_name(all[i].file), all[i].file);
     EXPECT_TRUE(fresh || it->second == all[i].file) << all[i].file << " and " << it->second << " share a name";
     if (i == 0) continue;
-    const auto a = name(all[i - 1].file), b = name(all[i].file);
-    EXPECT_TRUE(a < b || (a == b && all[i - 1].line < all[i].line)) << all[i - 1].name << " before " << all[i].name;
+    EXPECT_TRUE(hapstab::report::registered_before(all[i - 1].file, all[i - 1].line, all[i].file, all[i].line))
+        << all[i - 1].name << " before " << all[i].name;
   }
 }

@@ -18,6 +18,7 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/paths.hpp"
 #include "hapstab/report/process.hpp"
+#include "hapstab/report/registration.hpp"
 
 namespace hapstab::cli {
 
@@ -32,16 +33,8 @@ RegisterFigure::RegisterFigure(Figure f, const char* file, int line) {
   f.file = file;
   f.line = line;
   auto& all = figures();
-  // By the file's name, not its path: __builtin_FILE is absolute in a unity batch and relative to
-  // the tree when ccache's base_dir rewrites a lone file's command line, and '.' sorts before '/'
-  // (CI once drew stop 58's figures in another order than the docs show). The names are unique.
-  const auto name = [](const char* path) {
-    const char* slash = std::strrchr(path, '/');
-    return slash ? slash + 1 : path;
-  };
-  const auto before = [name](const Figure& a, const Figure& b) {
-    const int c = std::strcmp(name(a.file), name(b.file));
-    return c < 0 || (c == 0 && a.line < b.line);
+  const auto before = [](const Figure& a, const Figure& b) {
+    return report::registered_before(a.file, a.line, b.file, b.line);
   };
   all.insert(std::upper_bound(all.begin(), all.end(), f, before), f);
 }
