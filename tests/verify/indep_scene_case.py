@@ -42,6 +42,17 @@ CASES = {
         T=T, devices=[dict(kind="md", m=Q(1, 100), b=Q(1)), dict(kind="md", m=Q(1, 50), b=Q(2))],
         ops=[None, None], E=[[const(2500), const(-500)], [const(-500), const(3500)]],
         n=0, tags={}, Knom=1.0), "complex pair"),
+    # issue 46 (scene_max seed 58 case 100): an open-loop unstable device beside a mass-damper
+    # (integrating its position), a diagonal wall scaled by g. Near g = 64.5 two eigenvalues of M(g)
+    # meet (a double real eigenvalue): Gershgorin in an eigenbasis fails there, and the Stein step
+    # failed on the environment's ~10^4 entries beside the devices' ~10^-3 -- the walk towards 0
+    # stopped at g = 64.5, a third of the supremum, "sup g: undecided". Balanced by powers of two
+    # (loop_max.cpp, balance_by_powers_of_two), the same ball is certified.
+    "double_eigenvalue_unstable_device_2dof": (dict(
+        T=T, devices=[dict(kind="ss", A=Q(17, 10), Bv=Q(10, 9), passive=False), dict(kind="md", m=Q(1), b=Q(51, 25))],
+        ops=[Q(29, 10), Q(3)],
+        E=[[Rational([Q(44231, 5), Q(-8000)], [1, 0]), const(0)], [const(0), Rational([Q(5528), Q(-4950)], [1, 0])]],
+        n=0, tags={}, Knom=1.0), "complex pair"),
 }
 REFERENCE_CROSSING = {"complex pair": "complex"}  # the reference's name for hapstab's
 
