@@ -66,7 +66,10 @@ passivity-level-mimo  phi* = min over theta of lambda_min(He G(e^{j theta})), G 
        u = tan^2(theta/2), interpolated from exact determinants of He G - lo I at circle points; phi* >= lo
        iff He G - lo I > 0 at one point of every arc between the roots of Q(t^2) in t >= 0 (and theta = pi)
        (Sylvester: leading minors); phi* <= hi if He G - hi I is not > 0 at the witness; an exact v by
-       phi* >= v and a root on the circle (mimo_lower).
+       phi* >= v and a root on the circle (mimo_lower). OSP (model.kind "osp"): the same with the pencil
+       He G - nu G^H G for He G - nu I (delta* = min lambda_min(He G^-1)), given det G != 0 on the circle
+       (mimo_regular_on_circle: |det G|^2 interpolated likewise, no root for t in [0, inf), G(-1) regular)
+       and lo > 0.
 limit-cycle  a periodic orbit of paper 002's loop (4), y = -k H(z) x, x = max(y, -rho): H = N/D reduced
        (D monic, degree n), the difference equation D(z) y = -k N(z) x run P steps from the window
        evidence.y = (y_0..y_{n-1}) (lc_next: the unique solution of each step, 1 + k H(inf) > 0); the window
@@ -1056,7 +1059,7 @@ def faddeev_leverrier(A):
 
 def mimo_G(sys, z):
     """G(z) = C (zI - A)^-1 B + D at a Gaussian rational z, by Gauss-Jordan elimination."""
-    A, B, C, D = sys
+    A, B, C, D = sys[:4]
     n, m = len(A), len(D)
     M = [[cq_sub(z if i == j else cq(0), cq(A[i][j])) for j in range(n)] + [cq(B[i][j]) for j in range(m)] for i in range(n)]
     for k in range(n):
@@ -1080,10 +1083,17 @@ def reduce_sum(it):
 
 
 def he_minus(sys, z, nu):
+    """He G(z) - nu I (ISP), or He G(z) - nu G(z)^H G(z) when sys carries "osp" (its fifth item)."""
     G = mimo_G(sys, z)
     m = len(G)
-    return [[((G[i][j][0] + G[j][i][0]) / 2 - (nu if i == j else 0), (G[i][j][1] - G[j][i][1]) / 2) for j in range(m)]
-            for i in range(m)]
+    H = [[((G[i][j][0] + G[j][i][0]) / 2 - (nu if i == j and not sys[4] else 0), (G[i][j][1] - G[j][i][1]) / 2)
+          for j in range(m)] for i in range(m)]
+    if sys[4]:  # (G^H G)_ij = sum_k conj(G_ki) G_kj
+        for i in range(m):
+            for j in range(m):
+                g = reduce_sum(cq_mul((G[k][i][0], -G[k][i][1]), G[k][j]) for k in range(m))
+                H[i][j] = cq_sub(H[i][j], (nu * g[0], nu * g[1]))
+    return H
 
 
 def circle_z(t):
@@ -1127,13 +1137,15 @@ def sign_at(p, x):
     return (h > 0) - (h < 0)
 
 
-def mimo_level_poly(sys, d, nu):
+def mimo_level_poly(sys, d, nu, det_g=False):
     """Q(u), u = t^2 = tan^2(theta/2), with Q(u(theta)) = (1 + u)^(mn) 2^m |d(z)|^(2m) det(He G(z) - nu I) on
     z = e^{j theta}. P(c) = 2^m |d|^(2m) det(He G - nu I) is a polynomial of degree <= mn in c = cos theta:
     it is det of d(z) d(1/z) (G(z) + G(1/z)^T - 2 nu I) on the circle, a Laurent polynomial in z of exponents
     -mn..mn invariant under z -> 1/z; with c = (1 - u)/(1 + u), (1 + u)^(mn) P(c) = sum p_i (1 - u)^i
     (1 + u)^(mn - i) has degree <= mn in u. Interpolated (Lagrange) at u = 0, 1, 4, ..., (mn)^2, each value
-    computed on the circle point z(t) exactly (Gaussian rationals)."""
+    computed on the circle point z(t) exactly (Gaussian rationals). OSP: He G - nu G^H G instead
+    (d(z) d(1/z) G(1/z)^T G(z) is a Laurent polynomial matrix of exponents -n..n too: the same degree).
+    det_g: (1 + u)^(mn) |d|^(2m) |det G(z)|^2 instead (|det(d G)|^2, degree <= mn in c likewise)."""
     m, n = len(sys[3]), len(sys[0])
     N = m * n
     xs, ys = [], []
@@ -1143,9 +1155,13 @@ def mimo_level_poly(sys, d, nu):
         dz = (Fraction(0), Fraction(0))
         for a in reversed(d):
             dz = cq_add(cq_mul(dz, z), cq(a))
-        det = cq_det(he_minus(sys, z, nu))
+        if det_g:
+            g = cq_det(mimo_G(sys, z))
+            v = g[0] ** 2 + g[1] ** 2
+        else:
+            v = 2 ** m * cq_det(he_minus(sys, z, nu))[0]
         xs.append(t * t)
-        ys.append((1 + t * t) ** N * 2 ** m * (dz[0] ** 2 + dz[1] ** 2) ** m * det[0])
+        ys.append((1 + t * t) ** N * (dz[0] ** 2 + dz[1] ** 2) ** m * v)
     Q = []
     for i in range(N + 1):  # Lagrange
         li, den = [Fraction(1)], Fraction(1)
@@ -1211,16 +1227,43 @@ def mimo_lower(sys, d, lo):
     return None, touches, len(points)
 
 
+def mimo_regular_on_circle(sys, d):
+    """None when det G(e^{j theta}) != 0 for every theta, else why not: Q(u) of mimo_level_poly(det_g)
+    has no root u = t^2, t in [0, inf) (Q(0) != 0, Sturm on (0, B], B a Cauchy bound), and det G(-1) != 0
+    (theta = pi, t = inf)."""
+    if cq_det(mimo_G(sys, cq(-1))) == (0, 0):
+        return "det G(-1) = 0 (a zero of G at z = -1)"
+    Q = mimo_level_poly(sys, d, 0, det_g=True)
+    if not Q:
+        return "det G is 0 at every theta"
+    if peval(Q, Fraction(0)) == 0:
+        return "det G(1) = 0 (a zero of G at z = 1)"
+    Qs = sqfree(Q)
+    if len(Qs) > 1:
+        B = 1 + max(abs(a / Qs[-1]) for a in Qs[:-1])
+        seq = [integer_poly(q) for q in sturm_seq(Qs)]
+
+        def variations(x):
+            signs = [v for v in (sign_at(q, x) for q in seq if q) if v != 0]
+            return sum(1 for u, v in zip(signs, signs[1:]) if u != v)
+        if variations(Fraction(0)) - variations(B) != 0:
+            return "det G vanishes on the unit circle (|det G|^2 has a root in u = tan^2(theta/2) > 0, Sturm)"
+    return None
+
+
 def check_passivity_level_mimo(c):
     """phi* = min over theta of lambda_min(He G(e^{j theta})), G = C(zI - A)^-1 B + D square, A Schur stable:
     phi* >= lo iff He G - lo I > 0 at one point of every arc between the roots of its determinant (times
     |d|^(2m)) on the circle; phi* <= hi if He G - hi I is not > 0 at the witness (c0, s0), c0^2 + s0^2 = 1;
-    an exact claim v: phi* >= v so, and det(He G - v I) = 0 somewhere on the circle."""
+    an exact claim v: phi* >= v so, and det(He G - v I) = 0 somewhere on the circle. OSP: delta* the same
+    with He G - nu G^H G (a congruence of He G^-1 - nu I where G is regular: det G != 0 on the circle is
+    checked first), and lo > 0."""
     model, claim, evidence = parts(c)
     only(model, ("A", "B", "C", "D", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    if model.get("kind") != "isp":
-        raise Malformed("model.kind: missing or not \"isp\" (a MIMO OSP level has no certificate)")
+    if model.get("kind") not in ("isp", "osp"):
+        raise Malformed("model.kind: missing or not \"isp\" or \"osp\"")
+    osp = model["kind"] == "osp"
     period(model)
     A, B, C, D = (mimo_matrix(model, k) for k in ("A", "B", "C", "D"))
     n, m = len(A), (len(B[0]) if B else 0)
@@ -1238,6 +1281,11 @@ def check_passivity_level_mimo(c):
     ok, why = schur_cohn(d)
     if not ok:
         raise Malformed("model.A: not Schur stable (%s)" % why)
+    sys_ = (A, B, C, D, osp)
+    if osp:  # G regular on the circle: He G - nu G^H G = G^H (He G^-1 - nu I) G there
+        why = mimo_regular_on_circle(sys_, d)
+        if why:
+            raise Malformed("model: %s: the OSP pencil's minimum is not the level there" % why)
     status, lo, hi, _, refuted = claim_range(claim)
     if status == "exact":
         only(evidence, (), "evidence")
@@ -1247,19 +1295,21 @@ def check_passivity_level_mimo(c):
         return False, refuted
     if status != "exact":
         c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
-    sys_ = (A, B, C, D)
+    lvl = "delta*" if osp else "phi*"
+    if osp and lo <= 0:
+        return False, "delta* >= %s: an OSP claim needs lo > 0 (a value <= 0 is not Lemma 1's level)" % short(lo)
     why, touches, samples = mimo_lower(sys_, d, lo)
     if why:
-        return False, "phi* >= %s (%.12g) fails: %s" % (short(lo), float(lo), why)
+        return False, "%s >= %s (%.12g) fails: %s" % (lvl, short(lo), float(lo), why)
     if status == "exact":
         if not touches:
-            return False, "phi* <= %s not shown: He G - v I is regular on the whole circle (phi* > v)" % short(lo)
-        return True, "phi* = %s (%dx%d, %d states; %d samples)" % (lo, m, m, n, samples)
+            return False, "%s <= %s not shown: the pencil at v is regular on the whole circle (%s > v)" % (lvl, short(lo), lvl)
+        return True, "%s = %s (%dx%d, %d states; %d samples)" % (lvl, lo, m, m, n, samples)
     if c0 * c0 + s0 * s0 != 1:
         return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
     if positive_definite(he_minus(sys_, (c0, s0), hi)):
-        return False, "phi* <= %s (%.12g) not shown: He G - hi I is positive definite at the witness" % (short(hi), float(hi))
-    return True, "phi* in [%.12g, %.12g] (%dx%d, %d states; %d samples)" % (float(lo), float(hi), m, m, n, samples)
+        return False, "%s <= %s (%.12g) not shown: the pencil at hi is positive definite at the witness" % (lvl, short(hi), float(hi))
+    return True, "%s in [%.12g, %.12g] (%dx%d, %d states; %d samples)" % (lvl, float(lo), float(hi), m, m, n, samples)
 
 
 # ---------------------------------------------------------------- r

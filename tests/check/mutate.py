@@ -7,7 +7,7 @@ Produces certificates of `bound` (random virtual environments, integer delays, e
 `bound-frac` with a fractional delay t_d = (p/q) T, q = 2..6, sin(pi t_d/T) of both signs, the
 Tustin damper's pole at the band's end), `bound-max` (`bound --max K --damping b`: random affine
 environments, delays, fractional delays; K_max finite, 0 and +inf), `passivity-level` (SISO G of five
-families, ISP and OSP), `passivity-level-mimo` (`passivity-level --ss --kind isp` on random square
+families, ISP and OSP), `passivity-level-mimo` (`passivity-level --ss --kind isp|osp` on random square
 state spaces of five families, its own random stream; mutants edit one entry of A, B, C or D, move lo
 past the level, hi below it, the witness along and off the circle, delete the stability hypothesis), `r`
 (random T, w) and `stability` (random one-DOF loops with every device pole at s = 0: a verdict
@@ -725,17 +725,20 @@ def rand_mimo(rng):
     for i in range(m):
         D[i][i] += rng.choice([0, 1, 3, 5])
     fm = lambda M: [[frac(x) for x in r] for r in M]  # noqa: E731
-    return {"A": fm(A), "B": fm(B), "C": fm(C), "D": fm(D), "T": rng.choice(["1/1000", "1/100"]), "family": fam}
+    return {"A": fm(A), "B": fm(B), "C": fm(C), "D": fm(D), "T": rng.choice(["1/1000", "1/100"]), "family": fam,
+            "kind": rng.choice(["isp", "osp"])}
 
 
 def mimo_produce(hapstab, m, cache, tmp, digits=17):
-    """hapstab's passivity-level-mimo certificate of the state space m, or the exit code when it writes none."""
+    """hapstab's passivity-level-mimo certificate of the state space m (its kind, ISP or OSP), or the exit
+    code when it writes none."""
     ss = {k: m[k] for k in ("A", "B", "C", "D", "T")}
+    kind = m.get("kind", "isp")
     path = os.path.join(tmp, "ss.json")
     with open(path, "w") as f:
         json.dump(ss, f)
-    return produce(hapstab, ["passivity-level", "--ss", path, "--kind", "isp", "--digits", str(digits)],
-                   "mimo%d" % digits + json.dumps(ss, sort_keys=True), "mimo-edit.json", cache, tmp)
+    return produce(hapstab, ["passivity-level", "--ss", path, "--kind", kind, "--digits", str(digits)],
+                   "mimo%s%d" % (kind, digits) + json.dumps(ss, sort_keys=True), "mimo-edit.json", cache, tmp)
 
 
 def mimo_entry_edits(m, rng):
@@ -769,7 +772,10 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
         out.append(("lo raised past the level", claim(hi + gap / 2 + tiny, hi + 2 * gap + tiny), "refute"))
         out.append(("lo raised to hi + tiny", claim(hi + tiny, hi + 2 * tiny), "refute"))
         out.append(("hi lowered below the level", claim(lo - 2 * gap - tiny, lo - gap / 2 - tiny), "refute"))
-        out.append(("lo lowered", claim(lo - scale, hi), "accept"))
+        osp = m["kind"] == "osp"  # an OSP claim holds only with lo > 0 (a value <= 0 is not the level)
+        out.append(("lo lowered", claim(lo / 2 if osp and lo - scale <= 0 else lo - scale, hi), "accept"))
+        if osp:
+            out.append(("OSP lo lowered to <= 0", claim(min(-scale, lo - scale), hi), "refute"))
         out.append(("hi raised", claim(lo, hi + scale), "accept"))
         out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], cl["printed_lo"] + "1"), "refute"))
         out.append(("printed_hi is not the claimed hi", with_field(cert, ["claim", "printed_hi"], cl["printed_hi"] + "1"), "refute"))
@@ -802,7 +808,15 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
     n, k = len(m["A"]), len(m["D"])
     unstable = [[frac(Fraction(x) + (2 if i == j else 0)) for j, x in enumerate(r)] for i, r in enumerate(m["A"])]
     out.append(("A + 2I (not Schur stable: the hypothesis)", with_field(cert, ["model", "A"], unstable), "malformed"))
-    out.append(("kind osp", with_field(cert, ["model", "kind"], "osp"), "malformed"))
+    # the other level's kind: hapstab's own certificate of that kind decides (or both checkers give one exit)
+    other_kind = "isp" if m["kind"] == "osp" else "osp"
+    other = mimo_produce(hapstab, dict(m, kind=other_kind), cache, tmp, 30)
+    if isinstance(other, dict):
+        olo, ohi = claim_ends(other["claim"])
+        expect = "refute" if hi < olo or lo > ohi else "agree"
+    else:
+        expect = "same"
+    out.append(("kind " + other_kind, with_field(cert, ["model", "kind"], other_kind), expect))
     out.append(("kind unknown", with_field(cert, ["model", "kind"], "io"), "malformed"))
     out.append(("G not square (a row of C and D dropped)", with_field(with_field(cert, ["model", "C"], m["C"][:-1]), ["model", "D"],
                                                                       m["D"][:-1]), "malformed"))
@@ -1518,7 +1532,8 @@ def print_branches(certs, mutants, cpp):
             sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
-        print("  passivity-level-mimo branches: exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (
+        print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (
+                  sum(1 for c, _ in mimo if c["model"]["kind"] == "isp"), sum(1 for c, _ in mimo if c["model"]["kind"] == "osp"),
                   sum(1 for c, _ in mimo if c["claim"]["status"] == "exact"),
                   sum(1 for c, _ in mimo if c["claim"]["status"] == "certified"),
                   sum(1 for c, _ in mimo if Fraction(c["claim"].get("value", c["claim"].get("lo"))) <= 0),

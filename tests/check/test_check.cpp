@@ -370,6 +370,73 @@ TEST(PassivityLevelMimoCheck, ConstantEigenvalue) {
   EXPECT_TRUE(check_certificate(mimo_cert(A, B, C, D, range_claim("199999/1000000", "1/5"), witness("1", "0"))).verified);
 }
 
+// OSP (the pencil He G - nu G^H G; delta* = min lambda_min(He G^-1)), by hand and from mpmath.
+// diag(g1, g2) as above: Re(1/g1) = (3/4)/(5/4 + c), min 1/3 at theta = 0; 1/g2 = z^2/(z^2 + 3/4),
+// Re(1/g2) = (1 + (3/4) cos 2theta)/(25/16 + (3/2) cos 2theta), decreasing in cos 2theta, min 4/7 at
+// theta = 0 and pi. So delta* = 1/3 exactly (theta = 0). The coupled 2x2: mpmath at 60 digits (the 2x2
+// He G^-1's least eigenvalue in closed form, 2000 points, findroot on its derivative): delta* =
+// 0.204061059135553914835147667520313286655... at theta = 1.86918105428121633121375653104; the witness
+// is tan(theta/2) rounded to 30 digits.
+nlohmann::json osp(nlohmann::json c) {
+  c["model"]["kind"] = "osp";
+  return c;
+}
+
+TEST(PassivityLevelMimoCheck, OspByHandAndAgainstMpmath) {
+  const Verdict v = check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, exact_claim("1/3"))));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("det G != 0 on the circle"), std::string::npos) << v.reason;
+  for (const char* wrong : {"1/4", "4/7", "3333333333333333333333333334/10000000000000000000000000000"})
+    EXPECT_FALSE(check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, exact_claim(wrong)))).verified) << wrong;
+  // the witness z = 1 (theta = 0) has the pencil singular at 1/3: not > 0 at hi = 1/3
+  EXPECT_TRUE(check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, range_claim("1/4", "1/3"), witness("1", "0")))).verified);
+  const Verdict far = check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, range_claim("1/4", "1/3"), witness("-1", "0"))));
+  EXPECT_FALSE(far.verified);  // at theta = pi the least eigenvalue of He G^-1 is 4/7 > 1/3
+  EXPECT_NE(far.reason.find("delta* <= "), std::string::npos) << far.reason;
+  // the ISP claim's value is not the OSP level
+  EXPECT_FALSE(check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, exact_claim("1/4")))).verified);
+  // lo <= 0: not the level (refuted, saying why)
+  const Verdict neg = check_certificate(osp(mimo_cert(diagA, diagB, diagC, I2, range_claim("-1", "1/3"), witness("1", "0"))));
+  EXPECT_FALSE(neg.verified);
+  EXPECT_NE(neg.reason.find("lo > 0"), std::string::npos) << neg.reason;
+
+  const nlohmann::json oW = witness("-208191918127890245872492649742460031681211876814435161/708191918127890245872492649742460031681211876814435161",
+                                    "676898750277979347572454619000000000000000000000000000/708191918127890245872492649742460031681211876814435161");
+  const std::string lo = "204061059135553914835/1000000000000000000000", hi = "204061059135553914836/1000000000000000000000";
+  const Verdict c = check_certificate(osp(mimo_cert(cA, cB, cC, cD, range_claim(lo, hi), oW)));
+  EXPECT_TRUE(c.verified) << c.reason;
+  const Verdict high = check_certificate(osp(mimo_cert(cA, cB, cC, cD, range_claim(hi, "204061059135553914837/1000000000000000000000"), oW)));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("delta* >= "), std::string::npos) << high.reason;
+  const Verdict low = check_certificate(osp(mimo_cert(cA, cB, cC, cD, range_claim("1/10", "204061059135553914834/1000000000000000000000"), oW)));
+  EXPECT_FALSE(low.verified);
+  EXPECT_NE(low.reason.find("not shown"), std::string::npos) << low.reason;
+  // the ISP certificate's witness and enclosure do not prove the OSP level
+  EXPECT_FALSE(check_certificate(osp(mimo_cert(cA, cB, cC, cD,
+                                               range_claim("134578673569382271911/1000000000000000000000",
+                                                           "134578673569382271912/1000000000000000000000"), cW))).verified);
+}
+
+// OSP needs G regular on the circle: a zero of det G at z = -1 or inside (0, pi) is refused by name.
+TEST(PassivityLevelMimoCheck, OspRefusesAZeroOnTheCircle) {
+  // diag(g1, 1 + 1/z): the second channel vanishes at z = -1
+  const nlohmann::json A = mat({{"1/2", "0"}, {"0", "0"}}), B = mat({{"1", "0"}, {"0", "1"}}), C = mat({{"1", "0"}, {"0", "1"}});
+  try {
+    check_certificate(osp(mimo_cert(A, B, C, I2, range_claim("1/10", "1/3"), witness("1", "0"))));
+    ADD_FAILURE() << "a zero of G at z = -1 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("z = -1"), std::string::npos) << e.what();
+  }
+  // diag(g1, 1 + z^-2): zeros at z = +-j, inside the arc
+  const nlohmann::json A3 = mat({{"1/2", "0", "0"}, {"0", "0", "0"}, {"0", "1", "0"}}), C3 = mat({{"1", "0", "0"}, {"0", "0", "1"}});
+  try {
+    check_certificate(osp(mimo_cert(A3, diagB, C3, I2, range_claim("1/10", "1/3"), witness("1", "0"))));
+    ADD_FAILURE() << "zeros of G at z = +-j accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vanishes on the unit circle"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PassivityLevelMimoCheck, Malformed) {
   auto bad = [](nlohmann::json c, const std::string& field) {
     try {
@@ -381,7 +448,7 @@ TEST(PassivityLevelMimoCheck, Malformed) {
   };
   const nlohmann::json ok = mimo_cert(diagA, diagB, diagC, I2, range_claim("0", "1/4"), witness("0", "1"));
   nlohmann::json c = ok;
-  c["model"]["kind"] = "osp";
+  c["model"]["kind"] = "ips";
   bad(c, "model.kind");
   c = ok;
   c["model"]["A"][0][0] = "3/2";  // a pole at 3/2: not Schur stable

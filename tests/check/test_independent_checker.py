@@ -433,9 +433,43 @@ class PassivityLevelMimo(unittest.TestCase):
         self.assertIn("not decided", why)
         self.assertEqual(hc.check(mimo_cert(*m, range_claim("199999/1000000", "1/5"), {"witness_c": "1", "witness_s": "0"}))[0], 0)
 
+    def test_osp_by_hand_and_against_mpmath(self):
+        # the C++ checker's cases (test_check.cpp, OspByHandAndAgainstMpmath): delta* of DIAG = 1/3 at
+        # theta = 0 by hand; of COUPLED 0.204061059135553914835147667520313... (mpmath, 60 digits)
+        def osp(c):
+            c["model"]["kind"] = "osp"
+            return c
+        self.assertEqual(hc.check(osp(mimo_cert(*DIAG, exact_claim("1/3"))))[0], 0)
+        for wrong in ("1/4", "4/7"):
+            self.assertEqual(hc.check(osp(mimo_cert(*DIAG, exact_claim(wrong))))[0], 1, wrong)
+        self.assertEqual(hc.check(osp(mimo_cert(*DIAG, range_claim("1/4", "1/3"), {"witness_c": "1", "witness_s": "0"})))[0], 0)
+        code, why = hc.check(osp(mimo_cert(*DIAG, range_claim("1/4", "1/3"), {"witness_c": "-1", "witness_s": "0"})))
+        self.assertEqual(code, 1)
+        self.assertIn("delta* <= ", why)
+        code, why = hc.check(osp(mimo_cert(*DIAG, range_claim("-1", "1/3"), {"witness_c": "1", "witness_s": "0"})))
+        self.assertEqual(code, 1)
+        self.assertIn("lo > 0", why)
+        w = {"witness_c": "-208191918127890245872492649742460031681211876814435161/708191918127890245872492649742460031681211876814435161",
+             "witness_s": "676898750277979347572454619000000000000000000000000000/708191918127890245872492649742460031681211876814435161"}
+        lo, hi = "204061059135553914835/1000000000000000000000", "204061059135553914836/1000000000000000000000"
+        self.assertEqual(hc.check(osp(mimo_cert(*COUPLED, range_claim(lo, hi), w)))[0], 0)
+        code, why = hc.check(osp(mimo_cert(*COUPLED, range_claim(hi, "204061059135553914837/1000000000000000000000"), w)))
+        self.assertEqual(code, 1)
+        self.assertIn("delta* >= ", why)
+        self.assertEqual(hc.check(osp(mimo_cert(*COUPLED, range_claim("1/10", "204061059135553914834/1000000000000000000000"), w)))[0], 1)
+        # a zero of G at z = -1 (1 + 1/z), or at z = +-j (1 + z^-2): refused by name
+        minus1 = ([["1/2", "0"], ["0", "0"]], [["1", "0"], ["0", "1"]], [["1", "0"], ["0", "1"]], [["1", "0"], ["0", "1"]])
+        code, why = hc.check(osp(mimo_cert(*minus1, range_claim("1/10", "1/3"), {"witness_c": "1", "witness_s": "0"})))
+        self.assertEqual(code, 2)
+        self.assertIn("z = -1", why)
+        pmj = (DIAG[0], DIAG[1], [["1", "0", "0"], ["0", "0", "1"]], DIAG[3])
+        code, why = hc.check(osp(mimo_cert(*pmj, range_claim("1/10", "1/3"), {"witness_c": "1", "witness_s": "0"})))
+        self.assertEqual(code, 2)
+        self.assertIn("vanishes on the unit circle", why)
+
     def test_malformed(self):
         ok = mimo_cert(*DIAG, range_claim("0", "1/4"), {"witness_c": "0", "witness_s": "1"})
-        for path, value, field in ((("model", "kind"), "osp", "model.kind"), (("model", "T"), "0", "model.T"),
+        for path, value, field in ((("model", "kind"), "ips", "model.kind"), (("model", "T"), "0", "model.T"),
                                    (("model", "H"), "1/z", "model.H"), (("evidence", "witness_v"), "1", "evidence.witness_v"),
                                    (("model", "D"), [["1", "0", "0"], ["0", "1", "0"]], "model.D"),
                                    (("model", "C"), [["1", "0", "0"]], "model.C")):

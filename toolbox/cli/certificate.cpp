@@ -380,19 +380,22 @@ std::vector<nlohmann::json> circle_witnesses(const rational& c) {
 
 nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
                                                 bool is_level, int digits) {
-  if (osp)
-    throw InputError("--certificate: a MIMO OSP level (--ss with --kind osp) has no certificate yet; the ISP level "
-                     "(--kind isp) has one");
   if (c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none: " +
                      (c.note.empty() ? std::string("no reason given") : c.note) + "): no certificate");
   if (!is_level || !c.enclosure) throw InputError("--certificate: the certified frequency value is not the level here: no certificate");
+  if (osp && c.enclosure->lo <= 0)
+    throw InputError("--certificate: an OSP value <= 0 bounds Lemma 1's level only from above (it is not the level): no "
+                     "certificate");
   nlohmann::json j = header("passivity-level-mimo");
   j["model"] = {{"A", matrix_json(sys.A)}, {"B", matrix_json(sys.B)}, {"C", matrix_json(sys.C)},
-                {"D", matrix_json(sys.D)}, {"T", sys.T.str()}, {"kind", "isp"}};
+                {"D", matrix_json(sys.D)}, {"T", sys.T.str()}, {"kind", osp ? "osp" : "isp"}};
   nlohmann::json claim;
-  claim["quantity"] = "phi* = min_{0 <= theta <= pi} lambda_min(He G(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: "
-                      "the ISP level of paper 000 Definition 2 (Lemma 1)";
+  claim["quantity"] = osp ? "delta* = sup {nu : He G - nu G^H G >= 0 on the unit circle} = min_{0 <= theta <= pi} "
+                            "lambda_min(He G^-1(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: the OSP level of "
+                            "paper 000 Definition 2 (Lemma 1)"
+                          : "phi* = min_{0 <= theta <= pi} lambda_min(He G(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: "
+                            "the ISP level of paper 000 Definition 2 (Lemma 1)";
   const bool exact = c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
   if (exact) {
     claim["status"] = "exact";

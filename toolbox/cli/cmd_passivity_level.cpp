@@ -251,7 +251,7 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_option("--certificate", o->certificate,
-                                     "write the certified level's certificate (JSON: G by --H, or a MIMO --ss with --kind isp) to "
+                                     "write the certified level's certificate (JSON: G by --H, or a MIMO --ss) to "
                                      "FILE, for `hapstab check FILE` (docs/certificates.md)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
                                                       "enclosure, lower_bound, upper_bound, exact, value, theta, kind, "

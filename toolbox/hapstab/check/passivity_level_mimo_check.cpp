@@ -64,6 +64,7 @@ size_t cols(const Mat& M) { return M.empty() ? 0 : M[0].size(); }
 struct MimoModel {
   Mat A, B, C, D;
   size_t n = 0, m = 0;
+  bool osp = false;  ///< the pencil He G - nu G^H G (OSP) instead of He G - nu I (ISP)
 };
 
 MimoModel read_model(const nlohmann::json& model) {
@@ -167,8 +168,11 @@ P charpoly(const MimoModel& s) {
   return interpolate(x, y);
 }
 
-/// P_nu(c) of the header, from its values at c = (t + 1/t)/2, t = 2, 3, ... (d(1/t) != 0).
-P level_polynomial(const MimoModel& s, const P& d, const rational& nu) {
+/// P_nu(c) of the header, from its values at c = (t + 1/t)/2, t = 2, 3, ... (d(1/t) != 0);
+/// `singular`: instead Z(c) = (d(z) d(1/z))^m det G(z) det G(1/z), whose roots in [-1, 1] are the
+/// zeros of det G on the circle (OSP's hypothesis; degree <= mn: det(d G) is a polynomial of degree
+/// <= mn in z).
+P level_polynomial(const MimoModel& s, const P& d, const rational& nu, bool singular = false) {
   const size_t N = s.m * s.n + 1;
   std::vector<rational> x, y;
   for (long t = 2; x.size() < N; ++t) {
@@ -176,10 +180,19 @@ P level_polynomial(const MimoModel& s, const P& d, const rational& nu) {
     const rational dd = d(z) * d(iz);
     if (dd.is_zero()) continue;  // 1/t an eigenvalue of A
     const Mat Gz = G_at(s, z), Gi = G_at(s, iz);
-    Mat M(s.m, std::vector<rational>(s.m));
-    for (size_t i = 0; i < s.m; ++i)
-      for (size_t j = 0; j < s.m; ++j) M[i][j] = Gz[i][j] + Gi[j][i] - (i == j ? 2 * nu : rational(0));
-    rational v = det(std::move(M));
+    rational v;
+    if (singular) {
+      v = det(Gz) * det(Gi);
+    } else {
+      Mat M(s.m, std::vector<rational>(s.m));
+      for (size_t i = 0; i < s.m; ++i)
+        for (size_t j = 0; j < s.m; ++j) {
+          M[i][j] = Gz[i][j] + Gi[j][i] - (i == j && !s.osp ? 2 * nu : rational(0));
+          if (s.osp)  // - 2 nu (G(1/t)^T G(t))_ij
+            for (size_t k = 0; k < s.m; ++k) M[i][j] -= 2 * nu * Gi[k][i] * Gz[k][j];
+        }
+      v = det(std::move(M));
+    }
     for (size_t k = 0; k < s.m; ++k) v *= dd;
     x.push_back((z + iz) / 2);
     y.push_back(v);
@@ -187,15 +200,17 @@ P level_polynomial(const MimoModel& s, const P& d, const rational& nu) {
   return interpolate(x, y);
 }
 
-/// He G(z) - nu I positive definite (Sylvester: Hermitian elimination without pivoting, every
-/// pivot > 0).
+/// He G(z) - nu I (ISP) or He G(z) - nu G(z)^H G(z) (OSP) positive definite (Sylvester: Hermitian
+/// elimination without pivoting, every pivot > 0).
 bool positive_definite(const MimoModel& s, const Cq& z, const rational& nu) {
   const CMat G = G_at(s, z);
   CMat H(s.m, std::vector<Cq>(s.m));
   for (size_t i = 0; i < s.m; ++i)
     for (size_t j = 0; j < s.m; ++j) {
       const Cq h = G[i][j] + conj(G[j][i]);
-      H[i][j] = Cq(h.re / 2 - (i == j ? nu : rational(0)), h.im / 2);
+      H[i][j] = Cq(h.re / 2 - (i == j && !s.osp ? nu : rational(0)), h.im / 2);
+      if (s.osp)  // - nu (G^H G)_ij
+        for (size_t k = 0; k < s.m; ++k) H[i][j] = H[i][j] - Cq(nu) * conj(G[k][i]) * G[k][j];
     }
   for (size_t k = 0; k < s.m; ++k) {
     if (!H[k][k].im.is_zero()) throw NumericalError("He G: a diagonal entry is not real (internal)");
@@ -284,6 +299,22 @@ std::vector<Root> isolate(P S) {
   }
 }
 
+/// "He G - nu I" (ISP) or "He G - nu G^H G" (OSP), for the messages.
+std::string pencil(const MimoModel& s, const std::string& nu) { return "He G - " + nu + (s.osp ? " G^H G" : " I"); }
+
+/// OSP's hypothesis: det G(e^{j theta}) != 0 for every theta (Z of level_polynomial has no root in
+/// [-1, 1]); "" when it holds, else why not.
+std::string zero_on_circle(const MimoModel& s, const P& d) {
+  const P Z = level_polynomial(s, d, rational(0), true);
+  if (Z.is_zero()) return "det G is 0 at every theta (G singular on the whole circle)";
+  for (const rational& e : {rational(-1), rational(1)})
+    if (Z(e) == 0) return e == 1 ? "det G(1) = 0 (a zero of G at z = 1)" : "det G(-1) = 0 (a zero of G at z = -1)";
+  const P S = Z.degree() > 0 ? divmod(Z, gcd(Z, Z.derivative())).first : Z;
+  if (S.degree() > 0 && sturm_count(S, rational(-1), rational(1)) > 0)
+    return "det G vanishes on the unit circle (|det G|^2 |d|^{2m} has a root in (-1, 1) in cos theta, Sturm)";
+  return "";
+}
+
 struct LowerTest {
   std::optional<std::string> fails;
   bool touches = false;  ///< P_lo has a root in [-1, 1]
@@ -296,8 +327,8 @@ LowerTest lower_test(const MimoModel& s, const P& d, const rational& lo) {
   const P p = level_polynomial(s, d, lo);
   out.degree = p.degree();
   if (p.is_zero()) {
-    out.fails = "det(He G - lo I) |d|^{2m} is identically 0 in cos theta (lo is an eigenvalue of He G at every theta): "
-                "this theorem does not decide";
+    out.fails = "det(" + pencil(s, "lo") + ") |d|^{2m} is identically 0 in cos theta (lo is an eigenvalue of the pencil "
+                "at every theta): this theorem does not decide";
     return out;
   }
   const P S = p.degree() > 0 ? divmod(p, gcd(p, p.derivative())).first : p;
@@ -306,7 +337,7 @@ LowerTest lower_test(const MimoModel& s, const P& d, const rational& lo) {
   auto test = [&](const Cq& z, const std::string& where) {
     ++out.samples;
     if (!out.fails && !positive_definite(s, z, lo))
-      out.fails = "He G - lo I is not positive definite at " + where + ", where it is regular (det != 0): phi* < lo";
+      out.fails = pencil(s, "lo") + " is not positive definite at " + where + ", where it is regular (det != 0): the level < lo";
   };
   // the arc [-1, r_0) holds c = -1 unless -1 is a root, (r_last, 1] holds c = 1 unless 1 is one; with a
   // root at an end, its arc is the gap to the next root (or the other end's arc when it is alone)
@@ -327,17 +358,25 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"A", "B", "C", "D", "T", "kind"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
-  if (!model.contains("kind") || !model.at("kind").is_string())
-    throw InputError("model.kind: missing or not a string (\"isp\")");
-  if (model.at("kind") != "isp")
-    throw InputError("model.kind: only \"isp\" (a MIMO OSP level has no certificate), got " + model.at("kind").dump());
+  if (!model.contains("kind") || !model.at("kind").is_string() || (model.at("kind") != "isp" && model.at("kind") != "osp"))
+    throw InputError("model.kind: missing or not \"isp\" or \"osp\"" +
+                     (model.contains("kind") ? ", got " + model.at("kind").dump() : std::string()));
   const rational T = exact_field(model, "T", "model");
   if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  const MimoModel s = read_model(model);
+  MimoModel s = read_model(model);
+  s.osp = model.at("kind") == "osp";
+  const std::string level = s.osp ? "delta*" : "phi*";
   const P d = charpoly(s);
   const SchurCohn stable = schur_cohn(d);
   if (!stable.stable)
-    throw InputError("model.A: not Schur stable (" + stable.why + "): the ISP level is not its frequency minimum");
+    throw InputError("model.A: not Schur stable (" + stable.why + "): the level is not its frequency minimum");
+  std::string regular;
+  if (s.osp) {  // G regular on the circle, so He G - nu G^H G = G^H (He G^-1 - nu I) G there
+    const std::string why = zero_on_circle(s, d);
+    if (!why.empty())
+      throw InputError("model: " + why + ": the OSP pencil's minimum is not the level there (no certificate)");
+    regular = "; det G != 0 on the circle (Sturm)";
+  }
 
   const detail::ClaimRange range = detail::claim_range(claim);
   if (range.refuted) return {false, *range.refuted};
@@ -351,28 +390,30 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
     s0 = exact_field(evidence, "witness_s", "evidence");
   }
 
+  if (s.osp && lo <= 0)  // an OSP value <= 0 bounds Lemma 1's level only from above (as the SISO kind)
+    return {false, "delta* >= " + lo.str() + ": an OSP claim needs lo > 0 (a value <= 0 is not the level of Lemma 1)"};
   const LowerTest low = lower_test(s, d, lo);
-  if (low.fails) return {false, "phi* >= " + lo.str() + " (" + detail::decimal(lo) + ") fails: " + *low.fails};
+  if (low.fails) return {false, level + " >= " + lo.str() + " (" + detail::decimal(lo) + ") fails: " + *low.fails};
   std::string upper;
   if (exact) {
     if (!low.touches)
-      return {false, "phi* <= " + lo.str() + " not shown: det(He G - v I) has no root on the circle, so He G - v I > 0 "
-                                             "everywhere and phi* > v"};
-    upper = "det(He G - v I) has a root in [-1, 1], where He G - v I >= 0 is singular";
+      return {false, level + " <= " + lo.str() + " not shown: det(" + pencil(s, "v") + ") has no root on the circle, so " +
+                         pencil(s, "v") + " > 0 everywhere and the level > v"};
+    upper = "det(" + pencil(s, "v") + ") has a root in [-1, 1], where " + pencil(s, "v") + " >= 0 is singular";
   } else {
     if (c0 * c0 + s0 * s0 != 1)
       return {false, "evidence: the witness (c0, s0) = (" + detail::shortened(c0) + ", " + detail::shortened(s0) +
                          ") is not on the unit circle (c0^2 + s0^2 != 1)"};
     if (positive_definite(s, Cq(c0, s0), hi))
-      return {false, "phi* <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: He G - hi I is positive definite at the witness z0 = " +
-                         detail::shortened(c0) + " + j " + detail::shortened(s0)};
-    upper = "He G - hi I not > 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0);
+      return {false, level + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: " + pencil(s, "hi") +
+                         " is positive definite at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0)};
+    upper = pencil(s, "hi") + " not > 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0);
   }
-  const std::string what = exact ? "phi* = " + lo.str() : "phi* in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]";
-  return {true, what + " (ISP, " + std::to_string(s.m) + "x" + std::to_string(s.m) + ", " + std::to_string(s.n) +
-                    " states; lower bound: He G - lo I > 0 at " + std::to_string(low.samples) +
-                    " point(s), one per arc between the roots of det(He G - lo I)|d|^{2m} (Sturm, degree " +
-                    std::to_string(low.degree) + "); upper bound: " + upper + "; A Schur stable: " + stable.why + ")"};
+  const std::string what = exact ? level + " = " + lo.str() : level + " in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]";
+  return {true, what + " (" + (s.osp ? "OSP" : "ISP") + ", " + std::to_string(s.m) + "x" + std::to_string(s.m) + ", " +
+                    std::to_string(s.n) + " states; lower bound: " + pencil(s, "lo") + " > 0 at " + std::to_string(low.samples) +
+                    " point(s), one per arc between the roots of det(" + pencil(s, "lo") + ")|d|^{2m} (Sturm, degree " +
+                    std::to_string(low.degree) + "); upper bound: " + upper + "; A Schur stable: " + stable.why + regular + ")"};
 }
 
 }  // namespace hapstab::check

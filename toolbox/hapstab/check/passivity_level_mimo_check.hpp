@@ -1,9 +1,11 @@
 // hapstab/check/passivity_level_mimo_check.hpp -- the checker of a `passivity-level-mimo`
-// certificate: the ISP level of a square MIMO state space G(z) = C (zI - A)^-1 B + D as written
-// (`hapstab passivity-level --ss FILE --kind isp`; paper 000, Definition 2 and Lemma 1;
+// certificate: the ISP or OSP level of a square MIMO state space G(z) = C (zI - A)^-1 B + D as
+// written (`hapstab passivity-level --ss FILE --kind isp|osp`; paper 000, Definition 2 and Lemma 1;
 // docs/passivity-levels.md):
-//   phi* = min_{theta in [0, pi]} lambda_min(He G(e^{j theta})),   He G = (G + G^H)/2,
-// the claim "phi* in [lo, hi]" (or "= v"). (The values on (pi, 2 pi) mirror those on (0, pi):
+//   phi*   = min_{theta in [0, pi]} lambda_min(He G(e^{j theta})),   He G = (G + G^H)/2      (ISP)
+//   delta* = sup {nu : He G - nu G^H G >= 0 on the circle} = min_theta lambda_min(He G^-1)  (OSP)
+// the claim "level in [lo, hi]" (or "= v"). OSP is ISP's argument with the pencil
+// He G - nu G^H G in place of He G - nu I (below, "ISP -> OSP").  (The values on (pi, 2 pi) mirror those on (0, pi):
 // A, B, C, D real give He G(e^{-j theta}) = conj He G(e^{j theta}), the same eigenvalues.)
 //
 // Derivation (the checker's own; not the producer's det over Q[c][j sin theta] by Faddeev-LeVerrier
@@ -37,7 +39,16 @@
 //     then lambda_min(He G(z0)) <= hi.
 //   (exact claim "= v") phi* >= v by (lower) with lo = v, and P_v has a root c_r in [-1, 1]: there
 //     He G - v I is singular and >= 0, so lambda_min = v at c_r and phi* <= v. No witness.
-// Hypotheses, verified: T > 0; model.kind "isp" (a MIMO OSP level has no certificate: exit 2); A
+// ISP -> OSP: d(z) d(1/z) G(1/z)^T G(z) = (d G)(1/z)^T (d G)(z) is a Laurent polynomial matrix of
+//   exponents -n..n too, so P_nu(c) = det(d(z) d(1/z) (G(z) + G(1/z)^T - 2 nu G(1/z)^T G(z))) is a
+//   polynomial of degree <= mn in c and equals 2^m |d|^{2m} det(He G - nu G^H G) on the circle.
+//   He G - nu G^H G is non-increasing in nu (G^H G >= 0), so (lower) holds as stated. Where G is
+//   regular, He G - nu G^H G = G^H (He G^-1 - nu I) G (a congruence), so the witness's "not > 0"
+//   gives lambda_min(He G^-1(z0)) <= hi, and the exact claim's singular point gives lambda_min = v.
+//   Hence the OSP hypotheses: det G != 0 on the circle -- Z(c) = (d(z) d(1/z))^m det G(z) det G(1/z)
+//   (degree <= mn, interpolated as P_nu) has no root in [-1, 1] (Z(+-1) != 0, Sturm count 0) --
+//   and lo > 0 (an OSP value <= 0 bounds Lemma 1's level only from above, as the SISO kind says).
+// Hypotheses, verified: T > 0; model.kind "isp" or "osp"; A
 // n x n with n >= 1, B n x m, C m x n, D m x m (square G) with every entry a "p/q" string; A Schur
 // stable (check/schur_cohn.hpp on d; then d(t) != 0 for |t| >= 1 and He G is continuous on the
 // circle); mn <= 64, m <= 16 (the degree of P; beyond it exit 2). The KYP lemma is cited, not
