@@ -53,6 +53,16 @@ CASES = {
         ops=[Q(29, 10), Q(3)],
         E=[[Rational([Q(44231, 5), Q(-8000)], [1, 0]), const(0)], [const(0), Rational([Q(5528), Q(-4950)], [1, 0])]],
         n=0, tags={}, Knom=1.0), "complex pair"),
+    # issue 46 (scene_max seed 58 case 54): mass-dampers (position integrators: M(0) has the eigenvalue 1
+    # twice) with operator dampers under a diagonal wall scaled by g, one sample of delay. The delay
+    # register's defective eigenvalue 0 made the first-order cover's eigenbasis ill-conditioned (its
+    # eps ~ 1e-16, below where the walk towards 0 reaches): "sup g: undecided" until the cover took an
+    # orthonormal basis of range(M(0) - I) turned by Schur vectors, with a per-row (Perron) scaling.
+    "delayed_integrator_devices_2dof": (dict(
+        T=T, devices=[dict(kind="md", m=Q(1), b=Q(1, 2)), dict(kind="md", m=Q(19, 100), b=Q(9, 2))],
+        ops=[Q(5, 2), Q(49, 10)],
+        E=[[Rational([Q(10061), Q(-7200)], [1, 0]), const(0)], [const(0), Rational([Q(34083, 5), Q(-6500)], [1, 0])]],
+        n=1, tags={}, Knom=1.0), "complex pair"),
 }
 REFERENCE_CROSSING = {"complex pair": "complex"}  # the reference's name for hapstab's
 

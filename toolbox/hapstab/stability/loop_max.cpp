@@ -2,6 +2,7 @@
 #include "hapstab/stability/loop_max.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #if HAPSTAB_FLINT3
 #include <flint/acb_mat.h>
@@ -646,32 +647,52 @@ struct Cover {
   // follows). Returns eps > 0 such that every M(p), p in (0, eps], is Schur stable (certified; 0:
   // not proven). V = `integrators` (integrator_kernel: exact, rational), so M0 V = V exactly and
   // M0 V Q = V Q for any Q. R = [V Q, R2]: Q (double) turns V so that the block C11 of
-  // C = R^-1 M1 R is diagonal, R2 approximate eigenvectors of the other eigenvalues of M(0); R as a
-  // ball (V Q in Arb), L a ball
-  // enclosure of R^-1 (of every matrix of the ball, the true R among them). The exact R^-1 M0 R has
-  // the columns [I; 0] in the first block, so
+  // C = R^-1 M1 R is diagonal, R2 (double, exact as stored) a basis completing it; R as a ball
+  // (V Q in Arb), L a ball enclosure of R^-1 (of every matrix of the ball, the true R among them).
+  // The exact R^-1 M0 R has the columns [I; 0] in the first block, whatever R2, so
   //   R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]]      (B = R^-1 M0 R)
-  // and, for each t > 0, Gershgorin's discs of D^-1 (.) D with D = diag(I, kappa t I) (a similarity):
+  // and, for each t > 0, Gershgorin's discs of D^-1 (.) D with D = diag(I, t K), K = diag(kappa_j)
+  // > 0 (a similarity):
   //  - row i of the first block: centre 1 + t c (c = C_ii), radius <= t rho_i + t^2 sigma_i with
-  //    rho_i = sum_{j in 1, j != i} |C_ij| + kappa sum_{j in 2} |B_ij|, sigma_i = kappa sum_{j in 2} |C_ij|;
+  //    rho_i = sum_{j in 1, j != i} |C_ij| + sum_{j in 2} kappa_j |B_ij|, sigma_i = sum_{j in 2} kappa_j |C_ij|;
   //    inside the unit circle when 2 (Re c + rho_i) + t (|c|^2 + 2 sigma_i) < 0, since then
   //    |1 + t c|^2 = 1 + 2t Re c + t^2 |c|^2 < 1 - 2t rho_i - 2t^2 sigma_i <= (1 - t rho_i - t^2 sigma_i)^2
   //    (and t rho_i + t^2 sigma_i < 1/2); the left side is increasing in t: checked at t = eps;
   //  - row i of the second block: centre B_ii + t C_ii, radius sum_{j in 2, j != i} (|B_ij| + t |C_ij|)
-  //    + sum_{j in 1} |C_ij| / kappa; |B_ii + t C_ii| is convex in t: checked at t = 0 and t = eps.
-  // kappa = 2 max_i (sum_{j in 1} |C_ij|) / (1 - |B_ii| - sum_{j in 2, j != i} |B_ij|) over the
-  // second block. A first-block eigenvalue that p does not move into the disk (Re c >= 0: a
-  // conserved quantity, an unstable direction), or an eigenvalue of M(0) at 1 that V does not
-  // hold (a pure mass's Jordan block: B is block upper triangular, so B22 then has the eigenvalue 1
-  // and its discs cannot all be inside), leaves the cover unproven.
+  //    kappa_j / kappa_i + sum_{j in 1} |C_ij| / kappa_i; |B_ii + t C_ii| is convex in t: checked at
+  //    t = 0 and t = eps.
+  // kappa (double; a choice, not part of the proof) solves (diag(1 - |B_ii|) - |B_off|) kappa = 2 q + tiny
+  // over the second block, q_i = sum_{j in 1} |C_ij| (Perron's scaling: the smallest kappa with each
+  // second-block disc inside at t = 0, where the comparison matrix is an M-matrix; one kappa for all
+  // rows, as before stop 59, needed every row diagonally dominant). R2: first approximate
+  // eigenvectors of M(0)'s other eigenvalues (B12 ~ 0, B22 ~ diagonal); where that fails (a delay
+  // register's or an environment memory's defective eigenvalue 0 makes them ill-conditioned), an
+  // orthonormal basis of range(M(0) - I) -- the complementary invariant subspace when the eigenvalue
+  // 1 is semisimple, so B12 ~ 0 still -- turned by the Schur vectors of its B22, which is then
+  // triangular: its comparison matrix is an M-matrix whenever its eigenvalues are inside the disk.
+  // A first-block eigenvalue that p does not move into the disk (Re c >= 0: a conserved quantity, an
+  // unstable direction), or an eigenvalue of M(0) at 1 that V does not hold (a pure mass's Jordan
+  // block: B is block upper triangular, so B22 then has the eigenvalue 1 and its discs cannot all
+  // be inside), leaves the cover unproven.
   rational near_zero() const {
     const long n = M0.rows();
     const MatQ& V = integrators;
     const long k = V.cols();
     if (k == 0 || k == n || V.rows() != n) return 0;
-    const long pr = 128;
+    rational best(0);  // the larger of the two bases' (an ill-conditioned eigenbasis can give eps ~ 1e-15)
+    for (const bool schur : {false, true}) {
+      Eigen::MatrixXcd R2;
+      if (!(schur ? complement_by_schur(R2, k) : complement_by_eigenvectors(R2, k))) continue;
+      const rational eps = near_zero_on(R2, V);
+      if (eps > best) best = eps;
+    }
+    return best;
+  }
+  // eps of near_zero for the basis R = [V Q, R2]: B, C in Arb, the first k columns of B exact.
+  rational near_zero_on(const Eigen::MatrixXcd& R2, const MatQ& V) const {
+    const long n = M0.rows(), k = V.cols(), pr = 128;
     AcbMat R(n, n);
-    if (!near_zero_basis(R, V, pr)) return 0;
+    if (!near_zero_basis(R, V, R2, pr)) return 0;
     AcbMat L(n, n), M(n, n), B(n, n), C(n, n);
     if (!acb_mat_inv(L.m, R.m, pr)) return 0;
     acb_mat_set_arb_mat(M.m, M0.get());
@@ -687,20 +708,42 @@ struct Cover {
       }
     return near_zero_discs(B, C, k, pr);
   }
-  // R = [V Q, R2] of near_zero, V Q in Arb (a ball holding it), R2 exact as stored (doubles); false
-  // when M(0) has more eigenvalues near 1 than V's k columns, or an eigensolver fails.
-  bool near_zero_basis(AcbMat& R, const MatQ& V, long pr) const {
-    const long n = M0.rows(), k = V.cols();
+  // R2: approximate eigenvectors of M(0) for its eigenvalues other than 1; false when M(0) has more
+  // eigenvalues near 1 than V's k columns, or the eigensolver fails.
+  bool complement_by_eigenvectors(Eigen::MatrixXcd& R2, long k) const {
+    const long n = M0.rows();
     Eigen::EigenSolver<Eigen::MatrixXd> es(mid(M0), true);
     if (es.info() != Eigen::Success) return false;
     std::vector<long> rest;
     for (long i = 0; i < n; ++i)
       if (std::abs(es.eigenvalues()(i) - 1.0) > 1e-9) rest.push_back(i);
     if (static_cast<long>(rest.size()) != n - k) return false;
+    R2.resize(n, n - k);
+    for (long a = 0; a < n - k; ++a) R2.col(a) = es.eigenvectors().col(rest[static_cast<size_t>(a)]);
+    return R2.allFinite();
+  }
+  // R2: an orthonormal basis of range(M(0) - I) (QR with column pivoting, rank n - k) times the Schur
+  // vectors of M(0) compressed to it, so that B22 is (nearly) upper triangular.
+  bool complement_by_schur(Eigen::MatrixXcd& R2, long k) const {
+    const long n = M0.rows();
+    const Eigen::MatrixXd A = mid(M0) - Eigen::MatrixXd::Identity(n, n);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(n, n - k);
+    if (!Q.allFinite()) return false;
+    const Eigen::MatrixXd S = Q.transpose() * mid(M0) * Q;  // M(0) on the range, in its basis
+    Eigen::ComplexSchur<Eigen::MatrixXcd> cs(S.cast<std::complex<double>>(), true);
+    if (cs.info() != Eigen::Success) return false;
+    R2 = Q.cast<std::complex<double>>() * cs.matrixU();
+    return R2.allFinite();
+  }
+  // R = [V Q, R2] of near_zero, V Q in Arb (a ball holding it), R2 exact as stored (doubles); Q the
+  // eigenvectors of C11 in double (false when that eigensolver fails).
+  bool near_zero_basis(AcbMat& R, const MatQ& V, const Eigen::MatrixXcd& R2, long pr) const {
+    const long n = M0.rows(), k = V.cols();
     Eigen::MatrixXcd Rd(n, n);
     for (long i = 0; i < n; ++i)
       for (long a = 0; a < k; ++a) Rd(i, a) = to_real<double>(V(i, a));
-    for (long a = 0; a < n - k; ++a) Rd.col(k + a) = es.eigenvectors().col(rest[static_cast<size_t>(a)]);
+    Rd.rightCols(n - k) = R2;
     const Eigen::MatrixXcd Cd = Rd.partialPivLu().solve(mid(M1).cast<std::complex<double>>() * Rd);
     Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ce(Cd.topLeftCorner(k, k), true);
     if (ce.info() != Eigen::Success || !ce.eigenvectors().allFinite() || !Rd.allFinite()) return false;
@@ -735,29 +778,39 @@ struct Cover {
       return s;
     };
     auto upper = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_UP) + mag_get_d(arb_radref(x.get())); };
-    // second block: 1 - |B_ii| - r0_i > 0, and kappa
-    double kappa = 0;
-    for (long i = k; i < n; ++i) {
-      Ball m = sum_abs(B, i, k, n, i), q = sum_abs(C, i, 0, k, -1), t;
-      acb_abs(t.get(), acb_mat_entry(B.m, i, i), pr);
-      arb_add(m.get(), m.get(), t.get(), pr);
-      arb_sub_ui(m.get(), m.get(), 1, pr);
-      arb_neg(m.get(), m.get());
-      if (!arb_is_positive(m.get())) return 0;
-      arb_div(t.get(), q.get(), m.get(), pr);
-      kappa = std::max(kappa, 2 * upper(t));
+    auto abs_upper = [&](const AcbMat& M, long i, long j) {
+      Ball t;
+      acb_abs(t.get(), acb_mat_entry(M.m, i, j), pr);
+      return upper(t);
+    };
+    // kappa: (diag(1 - |B_ii|) - |B_off|) kappa = 2 q + tiny over the second block (upper bounds of
+    // the |.| in double; kappa only has to be positive, the discs below are checked in Arb)
+    const long d = n - k;
+    Eigen::MatrixXd W(d, d);
+    Eigen::VectorXd rhs(d);
+    double qmax = 0;
+    for (long i = 0; i < d; ++i) {
+      for (long j = 0; j < d; ++j) W(i, j) = i == j ? 1 - abs_upper(B, k + i, k + j) : -abs_upper(B, k + i, k + j);
+      rhs(i) = 2 * upper(sum_abs(C, k + i, 0, k, -1));
+      qmax = std::max(qmax, rhs(i));
     }
-    if (!(kappa > 0)) kappa = 1e-300;
-    if (!std::isfinite(kappa)) return 0;
-    const Ball kap(kappa);
+    rhs.array() += std::max(qmax, 1e-280) * 1e-20;
+    if (!W.allFinite() || !rhs.allFinite()) return 0;
+    const Eigen::VectorXd kd = W.partialPivLu().solve(rhs);
+    if (!kd.allFinite() || !(kd.minCoeff() > 0)) return 0;
+    std::vector<Ball> kap;
+    for (long i = 0; i < d; ++i) kap.emplace_back(kd(i));
     // first block: lin_i = 2 (Re c + rho_i) < 0, quad_i = |c|^2 + 2 sigma_i; eps <= -lin_i / quad_i
     std::vector<Ball> lin(static_cast<size_t>(k)), quad(static_cast<size_t>(k));
     double eps = INFINITY;
     for (long i = 0; i < k; ++i) {
-      Ball rho = sum_abs(C, i, 0, k, i), sig = sum_abs(C, i, k, n, -1), t;
-      const Ball b12 = sum_abs(B, i, k, n, -1);
-      arb_addmul(rho.get(), kap.get(), b12.get(), pr);
-      arb_mul(sig.get(), sig.get(), kap.get(), pr);
+      Ball rho = sum_abs(C, i, 0, k, i), sig, t;
+      for (long j = k; j < n; ++j) {
+        acb_abs(t.get(), acb_mat_entry(B.m, i, j), pr);
+        arb_addmul(rho.get(), kap[static_cast<size_t>(j - k)].get(), t.get(), pr);
+        acb_abs(t.get(), acb_mat_entry(C.m, i, j), pr);
+        arb_addmul(sig.get(), kap[static_cast<size_t>(j - k)].get(), t.get(), pr);
+      }
       Ball& l = lin[static_cast<size_t>(i)];
       Ball& q = quad[static_cast<size_t>(i)];
       arb_add(l.get(), acb_realref(acb_mat_entry(C.m, i, i)), rho.get(), pr);
@@ -781,8 +834,18 @@ struct Cover {
         arb_add(v.get(), v.get(), lin[static_cast<size_t>(i)].get(), pr);
         ok = arb_is_negative(v.get());
       }
-      for (long i = k; i < n && ok; ++i) {  // max(|B_ii|, |B_ii + eps C_ii|) + r0 + eps rC + q / kappa < 1
-        Ball z = sum_abs(B, i, k, n, i), rC = sum_abs(C, i, k, n, i), q = sum_abs(C, i, 0, k, -1), a, b;
+      for (long i = k; i < n && ok; ++i) {
+        // max(|B_ii|, |B_ii + eps C_ii|) + sum_{j != i} (|B_ij| + eps |C_ij|) kappa_j / kappa_i + q_i / kappa_i < 1
+        Ball z, a, b, t;
+        for (long j = k; j < n; ++j) {
+          if (j == i) continue;
+          acb_abs(a.get(), acb_mat_entry(B.m, i, j), pr);
+          acb_abs(t.get(), acb_mat_entry(C.m, i, j), pr);
+          arb_addmul(a.get(), t.get(), e.get(), pr);
+          arb_addmul(z.get(), a.get(), kap[static_cast<size_t>(j - k)].get(), pr);
+        }
+        arb_add(z.get(), z.get(), sum_abs(C, i, 0, k, -1).get(), pr);
+        arb_div(z.get(), z.get(), kap[static_cast<size_t>(i - k)].get(), pr);
         acb_t w;
         acb_init(w);
         acb_mul_arb(w, acb_mat_entry(C.m, i, i), e.get(), pr);
@@ -792,9 +855,6 @@ struct Cover {
         acb_abs(b.get(), acb_mat_entry(B.m, i, i), pr);
         arb_max(a.get(), a.get(), b.get(), pr);
         arb_add(z.get(), z.get(), a.get(), pr);
-        arb_addmul(z.get(), rC.get(), e.get(), pr);
-        arb_div(q.get(), q.get(), kap.get(), pr);
-        arb_add(z.get(), z.get(), q.get(), pr);
         arb_sub_ui(z.get(), z.get(), 1, pr);
         ok = arb_is_negative(z.get());
       }

@@ -42,7 +42,8 @@
 // that nothing scaled by p holds, an environment's memory of it), a first-order cover at p = 0
 // proves (0, eps]: V an exact (rational) basis of those v, and in a basis [V Q, R2]
 // R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]] exactly in its first block;
-// Gershgorin's discs with the scaling diag(I, kappa t I) are inside the circle for t in (0, eps]
+// Gershgorin's discs with the scaling diag(I, t K), K = diag(kappa_j) (Perron's scaling of the
+// second block), are inside the circle for t in (0, eps]
 // when every Re (C11)_ii plus its row's off-diagonal part is < 0 (Cover::near_zero states the
 // bounds). The walk then continues down to eps, and the supremum of (0, sup) is stated with
 // open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass that nothing
