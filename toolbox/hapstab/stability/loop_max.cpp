@@ -302,6 +302,33 @@ Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
   return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
 }
 
+// The exponents e of D = diag(2^e_i) that balance |A|'s off-diagonal row and column norms
+// (Parlett and Reinsch's iteration, as LAPACK's gebal).
+std::vector<long> balancing_exponents(Eigen::MatrixXd A) {
+  const long n = A.rows();
+  std::vector<long> e(static_cast<size_t>(n), 0);
+  A = A.cwiseAbs();
+  for (int sweep = 0; sweep < 40; ++sweep) {
+    bool changed = false;
+    for (long i = 0; i < n; ++i) {
+      double c = 0, r = 0;  // off-diagonal column and row norms of D^-1 A D
+      for (long j = 0; j < n; ++j)
+        if (j != i) c += A(j, i), r += A(i, j);
+      if (!(c > 0 && r > 0) || !std::isfinite(c) || !std::isfinite(r)) continue;
+      int f = 0;  // D_ii *= 2^f with 2^f ~ sqrt(r / c)
+      while (c * std::ldexp(1.0, 2 * f) < r / 2 && f < 61) ++f;
+      while (c * std::ldexp(1.0, 2 * f) > 2 * r && f > -61) --f;
+      if (f == 0 || f > 60 || f < -60) continue;
+      e[static_cast<size_t>(i)] += f;
+      for (long j = 0; j < n; ++j)
+        if (j != i) A(j, i) = std::ldexp(A(j, i), f), A(i, j) = std::ldexp(A(i, j), -f);
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return e;
+}
+
 // S <- D^-1 S D for a diagonal D of powers of two (exact in balls: a similarity, the same
 // eigenvalues), D balancing the midpoint's row and column norms (Parlett and Reinsch's iteration,
 // as LAPACK's gebal). An environment realised with entries ~10^4 beside a device's ~10^-3 gives
@@ -311,28 +338,10 @@ Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
 // stein() tries both.
 void balance_by_powers_of_two(BallMat& S) {
   const long n = S.rows();
-  std::vector<long> e(static_cast<size_t>(n), 0);  // D_ii = 2^e_i
   Eigen::MatrixXd A(n, n);
   for (long i = 0; i < n; ++i)
-    for (long j = 0; j < n; ++j) A(i, j) = std::abs(arf_get_d(arb_midref(arb_mat_entry(S.get(), i, j)), ARF_RND_NEAR));
-  for (int sweep = 0; sweep < 40; ++sweep) {
-    bool changed = false;
-    for (long i = 0; i < n; ++i) {
-      double c = 0, r = 0;  // off-diagonal column and row norms of D^-1 A D
-      for (long j = 0; j < n; ++j)
-        if (j != i) c += A(j, i), r += A(i, j);
-      if (!(c > 0 && r > 0) || !std::isfinite(c) || !std::isfinite(r)) continue;
-      int f = 0;  // D_ii *= 2^f with 2^f ~ sqrt(r / c)
-      while (c * std::ldexp(1.0, 2 * f) < r / 2) ++f;
-      while (c * std::ldexp(1.0, 2 * f) > 2 * r) --f;
-      if (f == 0 || f > 60 || f < -60) continue;
-      e[static_cast<size_t>(i)] += f;
-      for (long j = 0; j < n; ++j)
-        if (j != i) A(j, i) = std::ldexp(A(j, i), f), A(i, j) = std::ldexp(A(i, j), -f);
-      changed = true;
-    }
-    if (!changed) break;
-  }
+    for (long j = 0; j < n; ++j) A(i, j) = arf_get_d(arb_midref(arb_mat_entry(S.get(), i, j)), ARF_RND_NEAR);
+  const std::vector<long> e = balancing_exponents(A);
   for (long i = 0; i < n; ++i)
     for (long j = 0; j < n; ++j)
       if (i != j) {
@@ -875,10 +884,21 @@ struct Cover {
     const long n = M0.rows();
     AcbMat A(n, n), L(n, n), R(n, n), D(n, n), M1c(n, n);
     family_ball(A, M0, M1, a, b, 128);
+    acb_mat_set_arb_mat(M1c.m, M1.get());
+    // D^-1 (.) D by powers of two (exact; the same eigenvalues and d lambda/dp): a stiff
+    // environment's states beside a device's make Rump's eigenvector enclosures, and so
+    // (L M1 R)_ii, 10^6 times wider unbalanced (scene_max seed 58 case 14)
+    const std::vector<long> e = balancing_exponents(mid(M0) + to_real<double>(a) * mid(M1));
+    for (long i = 0; i < n; ++i)
+      for (long j = 0; j < n; ++j)
+        if (i != j)
+          for (AcbMat* X : {&A, &M1c}) {
+            acb_ptr x = acb_mat_entry(X->m, i, j);
+            acb_mul_2exp_si(x, x, e[static_cast<size_t>(j)] - e[static_cast<size_t>(i)]);
+          }
     AcbVec E(n);
     bool ok = spectrum(E, &L, &R, A, 128);
     if (ok) {
-      acb_mat_set_arb_mat(M1c.m, M1.get());
       acb_mat_mul(D.m, L.m, M1c.m, 128);
       acb_mat_mul(D.m, D.m, R.m, 128);
       for (long i = 0; i < n && ok; ++i) {
@@ -1215,8 +1235,11 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
     }
     rational h = cov.radius(up, 1);
     if (h <= 0) h = cov.stein(up, 1, top - up);
-    if (h <= 0 && (top - up) < tried) {  // stalled short of the 10^-9 zone (an eigenbasis too ill-conditioned
-      tried = top - up;                    // for double near the crossing): the monotonicity step from here
+    // stalled or crawling (the Stein step's 0.1 % of what is left) short of the 10^-9 zone (an
+    // eigenbasis too ill-conditioned for double near the crossing): the monotonicity step from here,
+    // again each time what is left has shrunk 4x
+    if ((h <= 0 && (top - up) < tried) || (h * 100 < top - up && (top - up) * 4 <= tried)) {
+      tried = top - up;
       if (cov.close(up, top - enough, e.p.hi, M0p, M1p, out.precision_bits)) {
         closed = true;
         break;
