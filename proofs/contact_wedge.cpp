@@ -49,12 +49,15 @@ hapstab::TransferFunction random_h(std::mt19937& g, int& kind) {
 }
 
 // The certificate of one instance of 002.wedge_gain_ge_tsypkin (the H has a finite k*_wedge): the
-// wedge command's, read for its gains (k*_wedge's lower end >= k*_Tsypkin's upper end). Not where the
-// two are equal (both minima at a point where Im H = 0, the gains exact and the same): the
-// certificate's gains are enclosures, which cannot order equal values. False when none was asked.
+// wedge command's, read for its gains (k*_wedge's lower end >= k*_Tsypkin's upper end). Where the
+// two are equal (both minima at theta = pi, where Im H = 0) the certificate claims both exactly
+// (lo = hi), so the order holds with equality. False when none was asked.
 bool certify_gain_order(hapstab::proofs::Checker& check, const hapstab::TransferFunction& H,
                         const hapstab::contact::ContactAnalysis& a) {
-  if (a.tsypkin.gain_infinite || !(a.wedge.max_gain.enclosure->lo > a.tsypkin.max_gain.enclosure->hi)) return false;
+  // ordered by the enclosures, or equal and claimed exactly by both (both minima at theta = pi, where
+  // the two left sides are H(-1) + 1: the certificate's k* are then exact, cli/certificate.cpp)
+  const bool ordered = a.wedge.max_gain.enclosure->lo > a.tsypkin.max_gain.enclosure->hi;
+  if (a.tsypkin.gain_infinite || !(ordered || (a.wedge.min_at_pi && a.tsypkin.min_at_pi))) return false;
   check.certify("002.wedge_gain_ge_tsypkin", {{"wedge", "--H", hapstab::proofs::rational_function_text(H.H)},
                                               "", "", {}, "", {{"wedge_gain", "tsypkin_gain"}}});
   return true;
@@ -190,7 +193,7 @@ HAPSTAB_PROOF(contact_wedge_from_q, "002", "q-inequalities (21)-(24) -> wedge (2
   std::ostringstream ev2;
   ev2 << n_h << " H: " << bad_gain
       << " with k*_wedge < k*_Tsypkin not proven; largest ratio k*_wedge/k*_Tsypkin = " << max_ratio << "; "
-      << equal_gains << " with k*_wedge = k*_Tsypkin exactly (no certificate: enclosures cannot order equal gains)";
+      << equal_gains << " with k*_wedge = k*_Tsypkin not ordered by a certificate (equal, with a minimum off theta = pi)";
   check.claim("002.wedge_gain_ge_tsypkin", "k* of (25) vs (21)",
               "k*_wedge >= k*_Tsypkin (certified enclosures of -1/min max(...) and -1/min Re H) -- on the 40 random "
               "stable H above", Status::certified,

@@ -14,6 +14,7 @@
 
 #include "cli/cli_run.hpp"
 #include "cli/reproduce_certificates.hpp"
+#include "test_files.hpp"
 
 namespace {
 
@@ -166,4 +167,22 @@ TEST(CmdReproduce, AtLeastComparesTheCertifiedGains) {
   EXPECT_EQ(entries[0].kind, "wedge");
   EXPECT_NE(entries[1].error.find("does not prove tsypkin_gain >= wedge_gain"), std::string::npos) << entries[1].error;
   EXPECT_NE(entries[2].error.find("has no sector_gain"), std::string::npos) << entries[2].error;
+  // equal gains: H = 1/(2z) has both left sides + 1 minimal at theta = pi, = H(-1) + 1 = 1/2 (by hand:
+  // 1 + cos(theta)/2 and 3/2 + cos(theta)), so k* = 2 for both, claimed exactly (lo = hi): the order
+  // holds both ways, with equality
+  hapstab::proofs::ClaimResult equal{"002.test.equal", "002", "(25) vs (21)", "k*", hapstab::Status::certified, true, "e"};
+  const std::vector<std::string> eq_args{"wedge", "--H", "1/(2*z)"};
+  equal.certificates.push_back({eq_args, "", "", {}, "", {{"wedge_gain", "tsypkin_gain"}}});
+  equal.certificates.push_back({eq_args, "", "", {}, "", {{"tsypkin_gain", "wedge_gain"}}});
+  const auto eq = hapstab::cli::produce_certificates({equal}, dir, true);
+  ASSERT_EQ(eq.size(), 2u);
+  EXPECT_EQ(eq[0].error, "");
+  EXPECT_EQ(eq[1].error, "");
+  const auto j = nlohmann::json::parse(hapstab_test::slurp(dir / eq[0].file));
+  for (const char* key : {"wedge", "tsypkin"}) {
+    EXPECT_EQ(j["claim"][std::string(key) + "_gain"]["lo"], "2") << j.dump();
+    EXPECT_EQ(j["claim"][std::string(key) + "_gain"]["hi"], "2") << j.dump();
+    EXPECT_EQ(j["claim"][std::string(key) + "_margin"]["lo"], "1/2") << j.dump();
+  }
+  EXPECT_EQ(j["evidence"]["wedge_witness_c"], "-1") << j.dump();
 }

@@ -557,14 +557,26 @@ nlohmann::json printed_range(const Certified<rational>& r, int digits) {
 // The margin and k* of one criterion (claim.<key>_margin, claim.<key>_gain) and the witness
 // c0 of their upper bounds (evidence.<key>_witness_c): near the certified minimiser, the first
 // that shows the left side + 1 <= min(margin hi, 1 - 1/k* hi) there.
+// Where the minimum is at theta = pi (exactly H(-1) + 1 for both criteria, cot(pi/2) = 0) and the
+// certified enclosure holds it, the margin and k* = 1/(1 - mu) are claimed exactly (lo = hi, the
+// witness c0 = -1): equal gains of (25) and (21) are then ordered (reproduce's
+// 002.wedge_gain_ge_tsypkin), which enclosures rounded outward cannot do. The checkers decide
+// lo = hi as any enclosure; the producer's check before writing catches a wrong min_at_pi.
 void margin_claims(const TransferFunction& H, const contact::WedgeBranches& br, const contact::CriterionReport& c,
                    const std::string& key, bool wedge, int digits, nlohmann::json& claim, nlohmann::json& evidence) {
   claim[key + "_margin"] = printed_range(c.margin, digits);
+  std::optional<rational> exact;
+  if (c.min_at_pi && c.margin.enclosure) {
+    const rational v = criterion_at(H, br, wedge, rational(-1));
+    if (c.margin.enclosure->lo <= v && v <= c.margin.enclosure->hi) exact = v;
+  }
+  if (exact) claim[key + "_margin"]["lo"] = claim[key + "_margin"]["hi"] = exact->str();
   rational target = parse_rational(claim[key + "_margin"]["hi"].get<std::string>(), "margin");
   if (c.gain_infinite) {
     claim[key + "_gain"] = {{"infinite", true}};
   } else if (c.max_gain.status == Status::exact || c.max_gain.status == Status::certified) {
     claim[key + "_gain"] = printed_range(c.max_gain, digits);
+    if (exact && *exact < 1) claim[key + "_gain"]["lo"] = claim[key + "_gain"]["hi"] = rational(1 / (1 - *exact)).str();
     const rational k_hi = parse_rational(claim[key + "_gain"]["hi"].get<std::string>(), "k*");
     target = std::min(target, rational(1 - 1 / k_hi));
   }
