@@ -1402,10 +1402,11 @@ def schur_cohn(p):
     return True, "every Schur-Cohn step passes"
 
 
-def loop_device(model):
+def loop_device(model, one_pole=False):
     """(T, n, params, k, Nd) of a one-DOF loop's model as written (model.H is read by the caller):
     P_eff = P/(1 + s Zop P) = N/s^k (every pole at s = 0, else not modelled here: malformed) and its
-    zero-order hold Nd/(z-1)^k (sampled_device)."""
+    zero-order hold Nd/(z-1)^k (sampled_device). With one_pole, P_eff = N/(s^k (s - p)) with one
+    simple rational pole p != 0 is taken too: then Nd is the tuple (p, r, Ndp) of pole_device."""
     for key in ("plant", "H"):
         if not isinstance(model.get(key), str):
             raise Malformed("model.%s: missing or not a string" % key)
@@ -1424,9 +1425,65 @@ def loop_device(model):
     k = len(dev.den) - 1
     if len(dev.num) > k:
         raise Malformed("model.plant: the device is not strictly proper")
+    N = [x / dev.den[-1] for x in dev.num]
     if any(x != 0 for x in dev.den[:k]):
-        raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole at s = 0 only")
-    return T, n, params, k, sampled_device([x / dev.den[-1] for x in dev.num], k, T)
+        k0 = next(i for i, x in enumerate(dev.den) if x != 0)  # den = s^k0 (s - p) when allowed
+        if not one_pole or k - k0 != 1:
+            raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole "
+                            "at s = 0%s only" % (" or one simple real pole off it (a mass-damper)" if one_pole else ""))
+        return T, n, params, k0, pole_device(N, k0, -dev.den[k0] / dev.den[k0 + 1], T)
+    return T, n, params, k, sampled_device(N, k, T)
+
+
+def pole_device(N, k, p, T):
+    """(p, r, Ndp) of P_eff = N/(s^k (s - p)): P_eff/s = Q/s^(k+1) + r/(s - p), r = N(p)/p^(k+1), so the
+    step response sampled is y(l) = sum_m q_(k-m) (lT)^m/m! + r (E^l - 1) (E = e^(pT); the constants
+    cancel, y(0) = 0) and its differences give P_d = Ndp/(z-1)^k + r (E - 1)/(z - E), Ndp the hold of
+    Q/s^k (sampled_device)."""
+    r = peval(N, p) / p ** (k + 1)
+    Q, rem = pdivmod(padd(N, [Fraction(0)] * (k + 1) + [-r]), [-p, Fraction(1)])
+    if trim(rem):
+        raise AssertionError("N - r s^(k+1) is not divisible by s - p")
+    return p, r, sampled_device(Q, k, T)
+
+
+def exp_interval(x, bits):
+    """[lo, hi], Fractions with denominators 2^bits, holding e^x (x rational): y = x/2^s with
+    |y| <= 1/2, its Taylor sum to N terms with the remainder |y|^(N+1)/(N+1)! * 2 (a geometric bound
+    for |y| <= 1/2), rounded outward, then squared s times (every value > 0: monotone)."""
+    s = 0
+    while abs(x) > Fraction(1, 2) * 2 ** s:
+        s += 1
+    y = x / 2 ** s
+    unit = Fraction(1, 2 ** bits)
+    term, total, k = Fraction(1), Fraction(0), 0
+    while True:
+        total += term
+        k += 1
+        term = term * y / k
+        if abs(term) * 2 < unit:
+            break
+    lo, hi = total - 2 * abs(term) - unit, total + 2 * abs(term) + unit
+
+    def down(v):
+        return Fraction((v.numerator * 2 ** bits) // v.denominator, 2 ** bits)
+
+    def up(v):
+        return Fraction(-((-v.numerator * 2 ** bits) // v.denominator), 2 ** bits)
+    lo, hi = down(lo), up(hi)
+    for _ in range(s):
+        lo, hi = down(lo * lo), up(hi * hi)
+    if lo <= 0:
+        raise AssertionError("exp enclosure not positive")
+    return lo, hi
+
+
+def pshift(p, a):
+    """p(x + a), by Horner's rule on polynomials."""
+    q = []
+    for c in reversed(p):
+        q = padd(pmul(q, [a, Fraction(1)]), [c])
+    return trim(q)
 
 
 def loop_poly(n, k, Nd, A, L):
@@ -1439,11 +1496,13 @@ def check_stability(c):
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
     only(claim, ("quantity", "status", "stable"), "claim")
     only(evidence, ("charpoly",), "evidence")
-    T, n, params, k, Nd = loop_device(model)
+    T, n, params, k, Nd = loop_device(model, one_pole=True)
     if claim.get("status") not in ("exact", "certified"):
         raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
+    if isinstance(Nd, tuple):
+        return check_stability_pole(model, claim, evidence, T, n, params, k, Nd)
     given = evidence.get("charpoly")
     if not isinstance(given, list) or not given:
         raise Malformed("evidence.charpoly: missing or not a non-empty list")
@@ -1469,6 +1528,53 @@ def check_stability(c):
     if ok != claim["stable"]:
         return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
     return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
+
+
+def check_stability_pole(model, claim, evidence, T, n, params, k, pole):
+    """A device with one pole p off s = 0: c(z; E) = z^n L (z-1)^k (z - E) + A (Ndp (z - E) + r (E - 1)(z-1)^k)
+    = c0 + E c1, E = e^(pT) transcendental. D(E) = Res(c, c*) (resultant_in_K) has no root in an
+    enclosure [lo, hi] of E (exp_interval, narrowed until so): no c(.; E) there has a root on the
+    circle, the degree does not move (deg c1 < deg c0), so Schur-Cohn at E = lo decides for the true E.
+    D = 0 identically: c and c* share a root for every E: NOT stable."""
+    if "charpoly" in evidence:
+        raise Malformed("evidence.charpoly: the device has a pole off s = 0: its coefficients are not rational")
+    if claim["status"] != "certified":
+        raise Malformed("claim.status: with a device pole off s = 0 the verdict is \"certified\"")
+    p, r, Ndp = pole
+    try:
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
+    if len(H.num) > len(H.den) + n:
+        raise Malformed("model.H: z^-n H(z) is not causal")
+    degree = len(H.den) + n + k
+    if degree > MAX_STABILITY_MAX_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d with a device pole off s = 0" % (
+            degree, MAX_STABILITY_MAX_DEGREE))
+    A, L = H.num, H.den
+    Dk = ppow([Fraction(-1), Fraction(1)], k)
+    zLD = pmul([Fraction(0)] * n + L, Dk)
+    rD = pscale(Dk, r)
+    c0 = padd(pmul([Fraction(0), Fraction(1)], zLD), pmul(A, padd(pmul([Fraction(0), Fraction(1)], Ndp), pscale(rD, -1))))
+    c1 = padd(pmul(A, padd(rD, pscale(Ndp, -1))), pscale(zLD, -1))
+    c0, c1 = trim(c0), trim(c1)
+    if len(c1) >= len(c0):
+        raise Malformed("model: the E-part of c has degree >= that of c0")
+    D = trim(resultant_in_K(c0, c1))
+    if not D:
+        ok, why = False, "c and c* share a root for every E (D = 0)"
+    else:
+        for bits in (128, 256, 512, 1024, 2048, 4096):
+            lo, hi = exp_interval(p * T, bits)
+            if peval(D, lo) != 0 and peval(D, hi) != 0 and positive_roots(pshift(D, lo), hi - lo, True) == 0:
+                break
+        else:
+            raise TooLarge("the loop is too close to its boundary: e^(pT)'s enclosure at 4096 bits holds a root of D(E)")
+        ok, why = schur_cohn(padd(c0, pscale(c1, lo)))
+        why = "E = e^(%s) in [%.12g, %.12g], D(E) root-free there; %s" % (short(p * T), float(lo), float(hi), why)
+    if ok != claim["stable"]:
+        return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
+    return True, "%s (degree %d, device pole %s; %s)" % ("stable" if ok else "NOT stable", len(c0) - 1, short(p), why)
 
 
 # ---------------------------------------------------------------- stability-max

@@ -841,10 +841,15 @@ STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pol
     ("1/(m*s^2)", "c*s", "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),      # an operator's mass
     ("(1 + c*s)/(m*s^3)", None, "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),  # an integrating device
 ]
+# a mass-damper (one pole off s = 0, b of either sign: e^{-bT/m} transcendental; stability only)
+POLE_TEMPLATES = [
+    ("1/(m*s^2 + b*s)", None, "K + B*(z-1)/(T*z)", ["m", "b", "K", "B"]),
+    ("1/(m*s^2 + b*s)", "c*s", "K + B*(z-1)/(T*z)", ["m", "b", "c", "K", "B"]),
+]
 
 
-def rand_stability(rng):
-    plant, op, H, names = rng.choice(STABILITY_TEMPLATES)
+def rand_stability(rng, templates=STABILITY_TEMPLATES):
+    plant, op, H, names = rng.choice(templates)
     sets = {}
     for n in names:
         if n == "m":
@@ -928,7 +933,33 @@ def loop_edits(m, rng):
     return edits
 
 
+def pole_stability_mutants(cert, rng, hapstab, cache, tmp):
+    """A `stability` certificate of a mass-damper (no evidence: the checkers derive c(z; E) and enclose
+    E = e^{pT} themselves): the claim flipped, the status, a charpoly added, the model edited (the
+    producer's certificate of the edited model decides), fields deleted, malformed models."""
+    out = [("unmutated", cert, "accept")]
+    st = cert["claim"]["stable"]
+    out.append(("claim.stable flipped", with_field(cert, ["claim", "stable"], not st), "refute"))
+    out.append(("status certified -> exact", with_field(cert, ["claim", "status"], "exact"), "malformed"))
+    out.append(("added evidence.charpoly", with_field(cert, ["evidence", "charpoly"], ["1", "1"]), "malformed"))
+    m = cert["model"]
+    for name, nm in loop_edits(m, rng):
+        other = stability_produce(hapstab, nm, cache, tmp)
+        if isinstance(other, dict):
+            expect = "malformed" if "charpoly" in other["evidence"] else ("accept" if other["claim"]["stable"] == st else "refute")
+        else:
+            expect = "malformed" if other == 2 else "agree"
+        out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
+    for path in (["model"], ["claim"], ["kind"], ["model", "plant"], ["model", "H"], ["model", "T"], ["model", "delay"],
+                 ["claim", "stable"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("added model.frac_delay", with_field(cert, ["model", "frac_delay"], "1/2000"), "malformed"))
+    return out + loop_malformed(cert)
+
+
 def stability_mutants(cert, rng, hapstab, cache, tmp):
+    if "charpoly" not in cert["evidence"]:
+        return pole_stability_mutants(cert, rng, hapstab, cache, tmp)
     out = [("unmutated", cert, "accept")]
     cp = [Fraction(x) for x in cert["evidence"]["charpoly"]]
     st = cert["claim"]["stable"]
@@ -977,12 +1008,12 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
 
 def loop_malformed(cert):
     """Malformed models of a one-DOF loop (stability, stability-max): T negated, a negative delay, a
-    plant that does not parse, has a pole off s = 0, is in z or is not strictly proper."""
+    plant that does not parse, has two poles off s = 0 (a spring), is in z or is not strictly proper."""
     m = cert["model"]
     return [("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"),
             ("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"),
             ("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"),
-            ("plant with a pole off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s)"), "malformed"),
+            ("plant with two poles off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s + 1)"), "malformed"),
             ("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"),
             ("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed")]
 
@@ -1458,7 +1489,7 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
             continue
         certs.append(("stability-max", cert))
     for i in range(max(a.models // 2, 2) if "stability" in kinds else 0):
-        m = rand_stability(rng)
+        m = rand_stability(rng, STABILITY_TEMPLATES + POLE_TEMPLATES)
         cert = stability_produce(a.hapstab, m, scache, tmp)
         if not isinstance(cert, dict):
             skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
@@ -1530,6 +1561,11 @@ def print_branches(certs, mutants, cpp):
             sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
             sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
             sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
+    stab = [c for (k, nm, c, _) in mutants if k == "stability" and nm == "unmutated"]
+    if stab:
+        print("  stability branches: every pole at s = 0 %d, a mass-damper (e^{pT}) %d; stable %d, NOT stable %d" % (
+            sum(1 for c in stab if "charpoly" in c["evidence"]), sum(1 for c in stab if "charpoly" not in c["evidence"]),
+            sum(1 for c in stab if c["claim"]["stable"]), sum(1 for c in stab if not c["claim"]["stable"])))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
         print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (

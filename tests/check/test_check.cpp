@@ -554,6 +554,35 @@ TEST(StabilityCheck, TripleIntegrator) {
   EXPECT_TRUE(v.verified) << v.reason;
 }
 
+// One pole off s = 0 (check/loop_model.hpp): the lag 1/(s + 1) at T = 1, H = K: P_d = (1 - E)/(z - E),
+// E = e^-1, so c = z - E + K (1 - E), its root E - K (1 - E) inside iff K < (1 + E)/(1 - E) =
+// 2.1639534...: K = 2 stable, K = 3 NOT stable (by hand). The evidence is empty, the status certified.
+nlohmann::json lag_cert(const std::string& K, bool stable) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability"},
+          {"model", {{"plant", "1/(s + 1)"}, {"H", "K"}, {"set", {{"K", K}}}, {"T", "1"}, {"delay", 0}}},
+          {"claim", {{"status", "certified"}, {"stable", stable}}}, {"evidence", nlohmann::json::object()}};
+}
+
+TEST(StabilityCheck, OnePoleOffZeroByHand) {
+  const auto two = check_certificate(lag_cert("2", true));
+  EXPECT_TRUE(two.verified) << two.reason;
+  EXPECT_NE(two.reason.find("E = e^(-1)"), std::string::npos) << two.reason;
+  EXPECT_TRUE(check_certificate(lag_cert("3", false)).verified);
+  EXPECT_TRUE(check_certificate(lag_cert("2163953/1000000", true)).verified);   // 1e-7 below the boundary
+  EXPECT_TRUE(check_certificate(lag_cert("2163954/1000000", false)).verified);  // 1e-7 above it
+  EXPECT_FALSE(check_certificate(lag_cert("2", false)).verified);
+  EXPECT_FALSE(check_certificate(lag_cert("3", true)).verified);
+  auto with_poly = lag_cert("2", true);
+  with_poly["evidence"]["charpoly"] = {"1", "1"};
+  EXPECT_THROW(check_certificate(with_poly), InputError);  // no rational polynomial to hand over
+  auto exact = lag_cert("2", true);
+  exact["claim"]["status"] = "exact";
+  EXPECT_THROW(check_certificate(exact), InputError);
+  auto spring = lag_cert("2", true);
+  spring["model"]["plant"] = "1/(s^2 + s + 1)";  // two poles off s = 0: beyond this checker
+  EXPECT_THROW(check_certificate(spring), InputError);
+}
+
 TEST(StabilityCheck, RefusesWhatItCannotModel) {
   auto expect_field = [](const nlohmann::json& j, const std::string& field) {
     try {

@@ -35,6 +35,23 @@ WALL = ["-1/1000", "2001/2000", "-3997/2000", "1"]  # z (z-1)^2 + (T^2/2)(z+1)((
 
 
 class Stability(unittest.TestCase):
+    def test_one_pole_off_zero_by_hand(self):
+        # the lag 1/(s + 1) at T = 1, H = K: c = z - E + K (1 - E), E = e^-1, stable iff K < (1 + E)/(1 - E)
+        # = 2.16395341... (test_check.cpp's StabilityCheck.OnePoleOffZeroByHand)
+        def cert(K, st):
+            return {"certificate": "hapstab", "version": 1, "kind": "stability",
+                    "model": {"plant": "1/(s + 1)", "H": "K", "set": {"K": K}, "T": "1", "delay": 0},
+                    "claim": {"status": "certified", "stable": st}, "evidence": {}}
+        for K, st in (("2", True), ("3", False), ("2163953/1000000", True), ("2163954/1000000", False)):
+            self.assertEqual(hc.check(cert(K, st))[0], 0, K)
+            self.assertEqual(hc.check(cert(K, not st))[0], 1, K)
+        c = cert("2", True)
+        c["evidence"]["charpoly"] = ["1", "1"]
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("2", True)
+        c["model"]["plant"] = "1/(s^2 + s + 1)"
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_schur_cohn_known_roots(self):
         F = Fraction
         self.assertTrue(hc.schur_cohn([F(-1, 2), F(1)])[0])

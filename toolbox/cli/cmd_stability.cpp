@@ -470,8 +470,9 @@ const cli::Register reg(
        app.add_flag("--json", o->json, "JSON output");
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
-                      "FILE`: kind stability, or stability-max with --max (one-DOF --plant/--H loop, every device pole at "
-                      "s = 0; refused by name: --scene, a pole off s = 0, degree above the checkers' limit, an undecided "
+                      "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
+                      "a mass-damper), or stability-max with --max (every device pole at s = 0); refused by name: --scene, "
+                      "two device poles off s = 0 (with --max: any), degree above the checkers' limit, an undecided "
                       "answer; docs/certificates.md)");
        return [o]() -> int {
          if (!o->certificate.empty() && !o->scene.empty())

@@ -5,6 +5,7 @@
 
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check::detail {
@@ -56,7 +57,7 @@ P sampled_numerator(const P& N, int k, const rational& T) {
 
 }  // namespace
 
-LoopDevice read_loop_device(const nlohmann::json& model) {
+LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole) {
   LoopDevice d;
   if (!model.contains("plant")) throw InputError("model.plant: missing");
   const PeriodDelay pd = read_period_delay(model);
@@ -72,13 +73,49 @@ LoopDevice read_loop_device(const nlohmann::json& model) {
     dev = dev / one;
   }
   if (dev.num().degree() >= dev.den().degree()) throw InputError("model.plant: the device is not strictly proper");
-  d.k = dev.den().degree();
-  for (int i = 0; i < d.k; ++i)
-    if (dev.den().coeff(i) != 0)
-      throw InputError("model.plant: the device has a pole off s = 0 (e^{pT} is transcendental): this checker handles "
-                       "devices with every pole at s = 0 only");
-  d.Nd = sampled_numerator(dev.num() * P(rational(1) / dev.den().leading()), d.k, d.T);
+  const P N = dev.num() * P(rational(1) / dev.den().leading());
+  const P den = dev.den() * P(rational(1) / dev.den().leading());  // monic
+  d.k = 0;
+  while (d.k < den.degree() && den.coeff(d.k) == 0) ++d.k;  // den = s^k den1, den1(0) != 0
+  if (d.k == den.degree()) {
+    d.Nd = sampled_numerator(N, d.k, d.T);
+    return d;
+  }
+  if (!one_pole || den.degree() - d.k != 1)
+    throw InputError(std::string("model.plant: the device has ") + (den.degree() - d.k == 1 ? "a pole" : "poles") +
+                     " off s = 0 (e^{pT} is transcendental): this checker handles " +
+                     (one_pole ? "devices with at most one simple real pole off s = 0 (a mass-damper)"
+                               : "devices with every pole at s = 0 only"));
+  const rational p = -den.coeff(d.k) / den.coeff(d.k + 1);  // den = s^k (s - p)
+  rational pk1(1);
+  for (int i = 0; i <= d.k; ++i) pk1 *= p;
+  d.pole = p;
+  d.r = N(p) / pk1;
+  std::vector<rational> sk1(static_cast<size_t>(d.k) + 2, rational(0));
+  sk1.back() = d.r;
+  const auto [Q, rem] = divmod(N - P(sk1), P{-p, rational(1)});
+  if (!rem.is_zero()) throw InputError("model.plant: N - r s^(k+1) is not divisible by s - p (checker defect)");
+  d.Ndp = sampled_numerator(Q, d.k, d.T);
   return d;
+}
+
+std::pair<P, P> loop_family_in_E(const LoopDevice& d, const P& A, const P& L) {
+  if (!d.pole) throw InputError("loop_family_in_E: the device has no pole off s = 0 (checker defect)");
+  std::vector<rational> zn(static_cast<size_t>(d.n) + 1, rational(0));
+  zn.back() = 1;
+  const P z{rational(0), rational(1)};
+  const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
+  const P zLD = P(zn) * L * Dk;  // z^n L (z - 1)^k
+  const P rD = Dk * P(d.r);
+  return {z * zLD + A * (z * d.Ndp - rD), A * (rD - d.Ndp) - zLD};
+}
+
+std::pair<rational, rational> exp_enclosure(const rational& x, long bits) {
+  flint::BallPrecision scope(bits);
+  flint::Ball e(x);
+  arb_exp(e.get(), e.get(), bits);
+  const Enclosure<rational> b = e.bounds();
+  return {b.lo, b.hi};
 }
 
 P loop_polynomial(const LoopDevice& d, const P& A, const P& L) {

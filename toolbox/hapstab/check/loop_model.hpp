@@ -11,10 +11,23 @@
 // T^m/m! S_m(z), and Nd = P_d (z - 1)^k must be a polynomial (checked).
 // Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
 // pole at s = 0 (else InputError: beyond the checkers).
+//
+// One pole off s = 0 (the `stability` kind only; a mass-damper 1/(m s^2 + b s), p = -b/m): P_eff =
+// N(s)/(s^k (s - p)), p rational, simple. Partial fractions P_eff/s = Q(s)/s^(k+1) + r/(s - p),
+// r = N(p)/p^(k+1), Q = (N - r s^(k+1))/(s - p) (exact division, checked); the step response
+// y(l) = sum_{m >= 1} q_(k-m) (lT)^m/m! + r (E^l - 1), E = e^{pT} (the constant terms cancel: y(0) = 0
+// for a strictly proper P_eff), so
+//   P_d(z) = Ndp(z)/(z - 1)^k + r (E - 1)/(z - E),   Ndp the hold of Q/s^k as above,
+// and the loop's c(z; E) = z^n L (z - 1)^k (z - E) + A (Ndp (z - E) + r (E - 1)(z - 1)^k) = c0 + E c1:
+//   c0 = z^(n+1) L (z - 1)^k + A (z Ndp - r (z - 1)^k),   c1 = -z^n L (z - 1)^k - A Ndp + r A (z - 1)^k.
+// E is transcendental (Lindemann: e^q for rational q != 0), so it is known by an enclosure only
+// (exp_enclosure, Arb); stability_check.hpp decides c(.; E) for every E in it.
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -26,14 +39,25 @@ namespace hapstab::check::detail {
 struct LoopDevice {
   rational T = 1;                          ///< model.T > 0
   long n = 0;                              ///< model.delay, z^-n
-  int k = 0;                               ///< P_eff = N(s)/s^k
-  Polynomial<rational> Nd;                 ///< P_d = Nd/(z - 1)^k
+  int k = 0;                               ///< P_eff = N(s)/s^k (times 1/(s - p) with a pole)
+  Polynomial<rational> Nd;                 ///< P_d = Nd/(z - 1)^k (every pole at s = 0)
+  std::optional<rational> pole;            ///< p, the one pole off s = 0 (only when allowed)
+  Polynomial<rational> Ndp;                ///< with a pole: P_d = Ndp/(z - 1)^k + r (E - 1)/(z - E)
+  rational r = 0;                          ///< with a pole: the residue of P_eff/s at p
   std::map<std::string, rational> params;  ///< model.set
 };
 
 /// model.T, model.delay, model.set, model.plant and model.operator (the device, above); InputError
-/// naming the field that is missing, malformed or beyond the checkers (a pole off s = 0).
-LoopDevice read_loop_device(const nlohmann::json& model);
+/// naming the field that is missing, malformed or beyond the checkers (a pole off s = 0, unless
+/// `one_pole` allows one simple rational pole p != 0).
+LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole = false);
+
+/// c(z; E) = c0 + E c1 of the loop with one pole off s = 0 (the header), H = A/L.
+std::pair<Polynomial<rational>, Polynomial<rational>> loop_family_in_E(const LoopDevice& d, const Polynomial<rational>& A,
+                                                                       const Polynomial<rational>& L);
+
+/// [lo, hi], exact rationals, holding e^x (Arb at `bits`).
+std::pair<rational, rational> exp_enclosure(const rational& x, long bits);
 
 /// model[key], an expression in `variable` ('s' or 'z') with sample period T and the parameters;
 /// InputError naming model.KEY.

@@ -15,9 +15,17 @@
 // Evidence: evidence.charpoly, c's coefficients (ascending, "p/q"): it must be a non-zero
 // multiple of the checker's own c -- a producer that built another loop is refuted there, before
 // any root test.
+// One pole off s = 0 (a mass-damper, check/loop_model.hpp): c(z; E) = c0 + E c1 with E = e^{pT}
+// transcendental, so there is no charpoly to hand over (evidence empty; status "certified"). The
+// checker encloses E (Arb, 128 .. 8192 bits) until D(E) = Res_{d,d}(c, c*) (check/reciprocal.hpp,
+// a polynomial in E) has no root in the enclosure [lo, hi] (Sturm): then no c(.; E) there has a
+// root on the unit circle (a root there is a pair b, 1/b of c and c*), deg c1 < deg c0 keeps the
+// number of roots inside fixed, and Schur-Cohn on the exact c(.; lo) decides for the true E.
+// D = 0 identically: NOT stable for every E. E is never a root of D (Lindemann), so only the
+// precision can run out: exit 2 ("too close to its boundary").
 // Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
-// pole at s = 0 (else the certificate is refused as beyond this checker: exit 2), z^-n H causal,
-// degree of c <= 2000.
+// pole at s = 0 or one simple rational pole off it (else the certificate is refused as beyond this
+// checker: exit 2), z^-n H causal, degree of c <= 2000 (150 with a pole off s = 0).
 // Implements: paper 001 Fig. 1.
 #pragma once
 

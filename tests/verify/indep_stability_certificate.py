@@ -1,0 +1,108 @@
+"""`stability --certificate` with a mass-damper device (one pole off s = 0: the sampled loop's
+coefficients hold e^{-bT/m}, transcendental) against the loop built in mpmath (indep_loop.py: ZOH
+by mpmath.expm, controller realised here, spectral radius at 50 digits; nothing from hapstab): for
+each case hapstab's verdict and certificate claim must be the reference's, and both checkers
+(`hapstab check`, checks/hapstab_check.py) must verify the certificate. Cases: fixed ones on both
+sides of the boundary and within 1e-6 of it, a delay, an operator's mass, an open-loop unstable
+device (b < 0), then random ones (seeded).
+
+  indep_stability_certificate.py HAPSTAB [--cases N] [--seed S]
+exit 0 when every case agrees, else 1.
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction as Q
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mpmath as mp  # noqa: E402
+
+import indep_loop as IL  # noqa: E402
+from indep_common import Rational  # noqa: E402
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def reference_rho(m, b, op_m, K, B, T, n):
+    """rho of the loop: device 1/((m + op_m) s^2 + b s), wall K + B (z - 1)/(T z), z^-n."""
+    P = Rational([Q(1)], [Q(m) + Q(op_m or 0), Q(b), Q(0)])
+    wall = Rational([Q(K) + Q(B) / Q(T), -Q(B) / Q(T)], [Q(1), Q(0)])
+    c = {"P": P, "H0": wall, "H1": Rational([Q(0)], [Q(1)]), "T": Q(T), "n": n}
+    loop = IL.build_loop_1dof(c)
+    rho, _ = IL.rho_mp(loop, 0)
+    return rho
+
+
+def run_case(exe, m, b, op_m, K, B, T, n, tmp):
+    cert = os.path.join(tmp, "c.json")
+    if os.path.exists(cert):
+        os.remove(cert)
+    args = [exe, "stability", "--plant", "1/(m*s^2 + b*s)", "--set", "m=%s" % m, "--set", "b=%s" % b,
+            "--H", "K + B*(z-1)/(T*z)", "--set", "K=%s" % K, "--set", "B=%s" % B, "--T", str(T),
+            "--delay", str(n), "--json", "--certificate", cert]
+    if op_m:
+        args += ["--operator", "%s*s" % op_m]
+    r = subprocess.run(args, capture_output=True, text=True, timeout=120)
+    with mp.workdps(IL.DPS):
+        rho = reference_rho(m, b, op_m, K, B, T, n)
+        ref_stable = rho < 1
+        margin = abs(1 - rho)
+    what = "m=%s b=%s op_m=%s K=%s B=%s T=%s n=%d (rho %s)" % (m, b, op_m, K, B, T, n, mp.nstr(rho, 12))
+    if r.returncode not in (0, 1):
+        return False, "%s: exit %d: %s" % (what, r.returncode, r.stderr.strip()[:300])
+    j = json.loads(r.stdout)
+    if j["stable"] != ref_stable or (r.returncode == 0) != ref_stable:
+        return False, "%s: hapstab says stable=%s (exit %d), the reference %s" % (what, j["stable"], r.returncode, ref_stable)
+    c = json.load(open(cert))
+    if c["claim"]["stable"] != ref_stable:
+        return False, "%s: the certificate claims stable=%s" % (what, c["claim"]["stable"])
+    for checker in ([exe, "check", cert], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), cert]):
+        v = subprocess.run(checker, capture_output=True, text=True, timeout=300)
+        if v.returncode != 0:
+            return False, "%s: %s exits %d: %s" % (what, os.path.basename(checker[1]), v.returncode, (v.stdout + v.stderr).strip()[:300])
+    return True, "%s: %s, verified by both (|1 - rho| = %s)" % (what, "stable" if ref_stable else "NOT stable", mp.nstr(margin, 3))
+
+
+FIXED = [  # (m, b, operator mass, K, B, T, n)
+    ("1", "1", "", "850", "2", "1/1000", 3),          # stable, |1 - rho| ~ 8e-6 (docs/commands.md's loop)
+    ("1", "1/2", "", "850", "2", "1/1000", 3),        # NOT stable
+    ("1", "1", "", "854", "2", "1/1000", 3),          # stable, 0.7 below sup K = 854.714...
+    ("1", "1", "", "855", "2", "1/1000", 3),          # NOT stable, 0.3 above it
+    ("1/10", "3", "1/20", "2000", "1", "1/1000", 1),  # an operator's mass
+    ("1", "-1/10", "", "100", "1", "1/1000", 0),      # an open-loop unstable device (p = 1/10 > 0)
+    ("1/2", "5", "", "20000", "5", "1/1000", 5),      # a stiff wall
+]
+
+
+def main(argv):
+    exe = argv[1]
+    cases, seed = 12, 1
+    if "--cases" in argv:
+        cases = int(argv[argv.index("--cases") + 1])
+    if "--seed" in argv:
+        seed = int(argv[argv.index("--seed") + 1])
+    rng = random.Random(seed)
+    todo = list(FIXED)
+    for _ in range(cases):
+        todo.append((rng.choice(["1/10", "1/2", "1", "3"]), rng.choice(["1/5", "1", "2", "7/2"]), rng.choice(["", "1/10"]),
+                     str(rng.randint(1, 4000)), rng.choice(["0", "1", "2", "5"]), rng.choice(["1/1000", "1/500"]),
+                     rng.randint(0, 6)))
+    bad = 0
+    stable = 0
+    with tempfile.TemporaryDirectory(prefix="hapstab-stab-cert-") as tmp:
+        for case in todo:
+            ok, line = run_case(exe, *case, tmp)
+            print(("ok   " if ok else "MISS ") + line)
+            bad += not ok
+            stable += ok and ": stable," in line
+    print("indep_stability_certificate: %d cases, %d disagree (%d stable, %d NOT stable among those that agree)" % (
+        len(todo), bad, stable, len(todo) - bad - stable))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
