@@ -740,6 +740,7 @@ struct Cover {
     const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(n, n - k);
     if (!Q.allFinite()) return false;
     const Eigen::MatrixXd S = Q.transpose() * mid(M0) * Q;  // M(0) on the range, in its basis
+    if (!S.allFinite()) return false;
     Eigen::ComplexSchur<Eigen::MatrixXcd> cs(S.cast<std::complex<double>>(), true);
     if (cs.info() != Eigen::Success) return false;
     R2 = Q.cast<std::complex<double>>() * cs.matrixU();
@@ -753,9 +754,15 @@ struct Cover {
     for (long i = 0; i < n; ++i)
       for (long a = 0; a < k; ++a) Rd(i, a) = to_real<double>(V(i, a));
     Rd.rightCols(n - k) = R2;
-    const Eigen::MatrixXcd Cd = Rd.partialPivLu().solve(mid(M1).cast<std::complex<double>>() * Rd);
+    // R singular in double (R2 meeting V's span) gives a Cd of inf/NaN, on which Eigen's complex
+    // Schur reads outside its matrix (ASan, LoopMax.TwoDofAgreesWithExactSchurBisection): refused first
+    if (!Rd.allFinite()) return false;
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Rd);
+    if (!(lu.rcond() > 1e-13)) return false;
+    const Eigen::MatrixXcd Cd = lu.solve(mid(M1).cast<std::complex<double>>() * Rd);
+    if (!Cd.allFinite()) return false;
     Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ce(Cd.topLeftCorner(k, k), true);
-    if (ce.info() != Eigen::Success || !ce.eigenvectors().allFinite() || !Rd.allFinite()) return false;
+    if (ce.info() != Eigen::Success || !ce.eigenvectors().allFinite()) return false;
     AcbMat Vb(n, k), Qb(k, k), VQ(n, k);
     for (long i = 0; i < n; ++i)
       for (long a = 0; a < k; ++a) {
