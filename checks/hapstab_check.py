@@ -1491,6 +1491,17 @@ def loop_poly(n, k, Nd, A, L):
     return padd(pmul([Fraction(0)] * n + L, ppow([Fraction(-1), Fraction(1)], k)), pmul(A, Nd))
 
 
+def loop_wall(model, T, params, n):
+    """model.H, the wall H(z) as written, with z^-n H causal."""
+    try:
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
+    if len(H.num) > len(H.den) + n:
+        raise Malformed("model.H: z^-n H(z) is not causal")
+    return H
+
+
 def check_stability(c):
     model, claim, evidence = parts(c)
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
@@ -1507,12 +1518,7 @@ def check_stability(c):
     if not isinstance(given, list) or not given:
         raise Malformed("evidence.charpoly: missing or not a non-empty list")
     given = trim([exact_value(v, "evidence.charpoly[%d]" % i) for i, v in enumerate(given)])
-    try:
-        H = parse_h(model["H"], T, params, 'z', 'model.H')
-    except ZeroDivisionError:
-        raise Malformed("model: division by zero")
-    if len(H.num) > len(H.den) + n:
-        raise Malformed("model.H: z^-n H(z) is not causal")
+    H = loop_wall(model, T, params, n)
     degree = len(H.den) - 1 + n + k
     if degree > MAX_STABILITY_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d" % (degree, MAX_STABILITY_DEGREE))
@@ -1541,12 +1547,7 @@ def check_stability_pole(model, claim, evidence, T, n, params, k, pole):
     if claim["status"] != "certified":
         raise Malformed("claim.status: with a device pole off s = 0 the verdict is \"certified\"")
     p, r, Ndp = pole
-    try:
-        H = parse_h(model["H"], T, params, 'z', 'model.H')
-    except ZeroDivisionError:
-        raise Malformed("model: division by zero")
-    if len(H.num) > len(H.den) + n:
-        raise Malformed("model.H: z^-n H(z) is not causal")
+    H = loop_wall(model, T, params, n)
     degree = len(H.den) + n + k
     if degree > MAX_STABILITY_MAX_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d with a device pole off s = 0" % (
