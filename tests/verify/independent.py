@@ -1053,6 +1053,23 @@ def margin_bucket(m):
     return "< 1e-6"
 
 
+def print_summary(crit, a, first, done, dt, slowest, counts, per_branch, undec_margin, partial=False):
+    """The criterion's counts so far: at its end, and every --progress cases (a run cut short keeps them)."""
+    n = len(done)
+    head = "-- progress" if partial else "=="
+    print(f"{head} {crit}: {n} cases (seed {a.seed}, first {first}), {dt:.1f} s, slowest case {slowest[1]} ({slowest[0]:.1f} s)")
+    print("   outcomes: " + ", ".join(f"{o} {v}" for o, v in sorted(counts.items())))
+    print("   per branch (compared = agree + miss; undecided/refused/timeout apart):")
+    for (tag, val), cnt in sorted(per_branch.items(), key=lambda kv: (kv[0][0], str(kv[0][1]))):
+        rest = ", ".join(f"{o} {v}" for o, v in sorted(cnt.items()) if o != "compared")
+        print(f"     {tag} = {val}: compared {cnt['compared']} ({rest})")
+    if undec_margin:
+        print(f"   not decided by hapstab, by the reference's distance from the boundary ({MARGIN_TEXT.get(crit, '1 - rho at sup/2')}):")
+        for (o, bk), v in sorted(undec_margin.items()):
+            print(f"     {o}, {bk}: {v}")
+    sys.stdout.flush()
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--hapstab", default="build/hapstab")
@@ -1066,6 +1083,8 @@ def main():
     ap.add_argument("--verbose", action="store_true")
     ap.add_argument("--max-seconds", type=float, default=None,
                     help="stop a criterion after this long and summarise the cases run (minimums scale to them)")
+    ap.add_argument("--progress", type=int, default=1000,
+                    help="print the counts so far every this many cases (0: only at the end)")
     a = ap.parse_args()
     mp.mp.dps = 60  # comparisons of 30-digit enclosures; the references set their own precision
     if not os.access(a.hapstab, os.X_OK):
@@ -1123,18 +1142,12 @@ def main():
                 sys.stdout.flush()
             if o in ("MISS", "REFERENCE MISSED"):
                 misses.append(k)
+            if a.progress > 0 and len(done) % a.progress == 0 and len(done) < len(ks):
+                print_summary(crit, a, ks[0], done, time.monotonic() - t0, slowest, counts, per_branch, undec_margin,
+                              partial=True)
         dt = time.monotonic() - t0
         n = len(done)
-        print(f"== {crit}: {n} cases (seed {a.seed}, first {ks[0]}), {dt:.1f} s, slowest case {slowest[1]} ({slowest[0]:.1f} s)")
-        print("   outcomes: " + ", ".join(f"{o} {v}" for o, v in sorted(counts.items())))
-        print("   per branch (compared = agree + miss; undecided/refused/timeout apart):")
-        for (tag, val), cnt in sorted(per_branch.items(), key=lambda kv: (kv[0][0], str(kv[0][1]))):
-            rest = ", ".join(f"{o} {v}" for o, v in sorted(cnt.items()) if o != "compared")
-            print(f"     {tag} = {val}: compared {cnt['compared']} ({rest})")
-        if undec_margin:
-            print(f"   not decided by hapstab, by the reference's distance from the boundary ({MARGIN_TEXT.get(crit, '1 - rho at sup/2')}):")
-            for (o, bk), v in sorted(undec_margin.items()):
-                print(f"     {o}, {bk}: {v}")
+        print_summary(crit, a, ks[0], done, dt, slowest, counts, per_branch, undec_margin)
         if a.case is None:
             for tag, val, share in branches:
                 need = int(share * n)
