@@ -63,4 +63,10 @@ endif()
 # the library, so find_package(hapstab) does not look for it.
 if(NOT CMAKE_FIND_PACKAGE_NAME STREQUAL "hapstab")
   hapstab_find_c_library(MATIO matio matio.h)
+  # the command dlopens it by its soname (libmatio.so.11 on Debian 12), not at start-up
+  get_filename_component(_matio_real "${MATIO_LIBRARY}" REALPATH)
+  file(READ_ELF "${_matio_real}" SONAME HAPSTAB_MATIO_SONAME)
+  if(NOT HAPSTAB_MATIO_SONAME)
+    get_filename_component(HAPSTAB_MATIO_SONAME "${MATIO_LIBRARY}" NAME)
+  endif()
 endif()

@@ -26,20 +26,74 @@ namespace fs = std::filesystem;
 constexpr std::uintmax_t max_file_bytes = 64u << 20;
 constexpr unsigned max_struct_fields = 64;
 
+// matio is loaded when a .mat file is first read or written, not with the program: it brings 37
+// shared libraries (HDF5, libcurl, GnuTLS, ...) whose loading and relocation were two thirds of
+// every hapstab process's ~20 ms start-up. HAPSTAB_MATIO_SONAME is the library CMake found.
+struct Matio {
+  decltype(&::Mat_LogInitFunc) LogInitFunc;
+  decltype(&::Mat_Open) Open;
+  decltype(&::Mat_Close) Close;
+  decltype(&::Mat_GetVersion) GetVersion;
+  decltype(&::Mat_Rewind) Rewind;
+  decltype(&::Mat_VarFree) VarFree;
+  decltype(&::Mat_VarReadNextInfo) VarReadNextInfo;
+  decltype(&::Mat_VarReadInfo) VarReadInfo;
+  decltype(&::Mat_VarRead) VarRead;
+  decltype(&::Mat_VarGetNumberOfFields) VarGetNumberOfFields;
+  decltype(&::Mat_VarGetStructFieldByName) VarGetStructFieldByName;
+  decltype(&::Mat_CreateVer) CreateVer;
+  decltype(&::Mat_VarCreate) VarCreate;
+  decltype(&::Mat_VarWrite) VarWrite;
+};
+
 // matio reports through a log function (by default to stderr); its last message joins our error.
 thread_local std::string matio_message;
 void matio_log(int, char* message) { matio_message = message ? message : ""; }
-void quiet_matio() {
-  static const bool once = (Mat_LogInitFunc("hapstab", &matio_log), true);
-  (void)once;
+
+template <class F>
+void bind_symbol(void* lib, F& f, const char* name) {
+  f = reinterpret_cast<F>(::dlsym(lib, name));
+  if (!f) throw InputError(std::string("reading or writing a .mat file: ") + HAPSTAB_MATIO_SONAME + " has no " + name);
 }
+
+const Matio& matio() {
+  static const Matio api = [] {
+    void* lib = ::dlopen(HAPSTAB_MATIO_SONAME, RTLD_NOW | RTLD_LOCAL);
+    if (!lib) {
+      const char* why = ::dlerror();
+      throw InputError(std::string("reading or writing a .mat file needs ") + HAPSTAB_MATIO_SONAME +
+                       ", which could not be loaded (" + (why ? why : "no reason given") +
+                       "); scripts/install-deps installs it");
+    }
+    restore_gmp_allocator();  // GnuTLS's constructor ran just now (mat_file.hpp)
+    Matio m{};
+    bind_symbol(lib, m.LogInitFunc, "Mat_LogInitFunc");
+    bind_symbol(lib, m.Open, "Mat_Open");
+    bind_symbol(lib, m.Close, "Mat_Close");
+    bind_symbol(lib, m.GetVersion, "Mat_GetVersion");
+    bind_symbol(lib, m.Rewind, "Mat_Rewind");
+    bind_symbol(lib, m.VarFree, "Mat_VarFree");
+    bind_symbol(lib, m.VarReadNextInfo, "Mat_VarReadNextInfo");
+    bind_symbol(lib, m.VarReadInfo, "Mat_VarReadInfo");
+    bind_symbol(lib, m.VarRead, "Mat_VarRead");
+    bind_symbol(lib, m.VarGetNumberOfFields, "Mat_VarGetNumberOfFields");
+    bind_symbol(lib, m.VarGetStructFieldByName, "Mat_VarGetStructFieldByName");
+    bind_symbol(lib, m.CreateVer, "Mat_CreateVer");
+    bind_symbol(lib, m.VarCreate, "Mat_VarCreate");
+    bind_symbol(lib, m.VarWrite, "Mat_VarWrite");
+    m.LogInitFunc("hapstab", &matio_log);
+    return m;
+  }();
+  return api;
+}
+
 std::string matio_said() { return matio_message.empty() ? "" : " (matio: " + report::text(matio_message) + ")"; }
 
 struct MatCloser {
-  void operator()(mat_t* m) const { Mat_Close(m); }
+  void operator()(mat_t* m) const { matio().Close(m); }
 };
 struct VarFreer {
-  void operator()(matvar_t* v) const { Mat_VarFree(v); }
+  void operator()(matvar_t* v) const { matio().VarFree(v); }
 };
 using MatPtr = std::unique_ptr<mat_t, MatCloser>;
 using VarPtr = std::unique_ptr<matvar_t, VarFreer>;
@@ -70,20 +124,20 @@ void check_header(const std::string& file, const std::string& where) {
 class MatReader {
  public:
   MatReader(std::string file, std::string where) : file_(std::move(file)), where_(std::move(where)) {
-    quiet_matio();
+    matio();
     check_header(file_, where_);
     matio_message.clear();
-    mat_.reset(Mat_Open(file_.c_str(), MAT_ACC_RDONLY));
+    mat_.reset(matio().Open(file_.c_str(), MAT_ACC_RDONLY));
     if (!mat_) throw InputError(where_ + ": matio cannot open it" + matio_said());
-    if (Mat_GetVersion(mat_.get()) != MAT_FT_MAT5) throw InputError(where_ + ": not a level-5 .mat file (save it with -v7)");
+    if (matio().GetVersion(mat_.get()) != MAT_FT_MAT5) throw InputError(where_ + ": not a level-5 .mat file (save it with -v7)");
   }
 
   /// The names of the file's variables (at most 1000).
   std::vector<std::string> names() {
     std::vector<std::string> out;
-    Mat_Rewind(mat_.get());
+    matio().Rewind(mat_.get());
     while (out.size() < 1000) {
-      VarPtr v(Mat_VarReadNextInfo(mat_.get()));
+      VarPtr v(matio().VarReadNextInfo(mat_.get()));
       if (!v) break;
       if (v->name) out.emplace_back(v->name);
     }
@@ -98,12 +152,12 @@ class MatReader {
   /// Variable `name`, its class and sizes checked on the header before the data is read.
   VarPtr read(const std::string& name) {
     matio_message.clear();
-    Mat_Rewind(mat_.get());
-    VarPtr info(Mat_VarReadInfo(mat_.get(), name.c_str()));
+    matio().Rewind(mat_.get());
+    VarPtr info(matio().VarReadInfo(mat_.get(), name.c_str()));
     if (!info) throw InputError(where_of(name) + ": no such variable" + matio_said());
     check_shape(info.get(), where_of(name), 0);
-    Mat_Rewind(mat_.get());
-    VarPtr v(Mat_VarRead(mat_.get(), name.c_str()));
+    matio().Rewind(mat_.get());
+    VarPtr v(matio().VarRead(mat_.get(), name.c_str()));
     if (!v) throw InputError(where_of(name) + ": matio cannot read it" + matio_said());
     check_shape(v.get(), where_of(name), 0);
     return v;
@@ -133,7 +187,7 @@ class MatReader {
         return;
       case MAT_C_STRUCT: {
         if (r != 1 || c != 1) throw InputError(where + ": a " + size + " struct array; expected a 1x1 struct");
-        const unsigned n = Mat_VarGetNumberOfFields(const_cast<matvar_t*>(v));
+        const unsigned n = matio().VarGetNumberOfFields(const_cast<matvar_t*>(v));
         if (n > max_struct_fields) throw InputError(where + ": a struct with " + std::to_string(n) + " fields (more than 64)");
         auto** fields = static_cast<matvar_t**>(v->data);
         for (unsigned i = 0; fields && i < n; ++i)
@@ -199,7 +253,7 @@ Mat<double> matrix(const Dense& d, const std::string& where) {
 }
 
 const matvar_t* field(const matvar_t* s, const char* name) {
-  return Mat_VarGetStructFieldByName(const_cast<matvar_t*>(s), name, 0);
+  return matio().VarGetStructFieldByName(const_cast<matvar_t*>(s), name, 0);
 }
 
 // VAR alone: a struct {num, den} or {A, B, C, D}, a cell {num, den}, or a 2-row [num; den].
@@ -304,19 +358,19 @@ MatModel read_mat_model(const std::string& spec, const std::string& option) {
 }
 
 void write_mat(const fs::path& file, const std::vector<MatMatrix>& vars) {
-  quiet_matio();
+  matio();
   matio_message.clear();
-  MatPtr mat(Mat_CreateVer(file.c_str(), nullptr, MAT_FT_MAT5));
+  MatPtr mat(matio().CreateVer(file.c_str(), nullptr, MAT_FT_MAT5));
   if (!mat) throw NumericalError("cannot create " + report::text(file.string()) + matio_said());
   for (const auto& m : vars) {
     std::size_t dims[2] = {m.rows, m.cols};
     // matio does not write through the pointer (MAT_F_DONT_COPY_DATA: it is only read)
-    VarPtr v(Mat_VarCreate(m.name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(m.data.data()),
+    VarPtr v(matio().VarCreate(m.name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, const_cast<double*>(m.data.data()),
                            MAT_F_DONT_COPY_DATA));
-    if (!v || Mat_VarWrite(mat.get(), v.get(), MAT_COMPRESSION_ZLIB) != 0)
+    if (!v || matio().VarWrite(mat.get(), v.get(), MAT_COMPRESSION_ZLIB) != 0)
       throw NumericalError("cannot write variable " + m.name + " to " + report::text(file.string()) + matio_said());
   }
-  if (Mat_Close(mat.release()) != 0) throw NumericalError("cannot close " + report::text(file.string()) + matio_said());
+  if (matio().Close(mat.release()) != 0) throw NumericalError("cannot close " + report::text(file.string()) + matio_said());
 }
 
 void restore_gmp_allocator() {

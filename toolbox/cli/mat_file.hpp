@@ -60,10 +60,12 @@ void write_mat(const std::filesystem::path& file, const std::vector<MatMatrix>& 
 
 /// matio brings GnuTLS (matio -> HDF5 -> libcurl -> GnuTLS), and GnuTLS's library constructor
 /// makes GMP zero every block it frees (mp_set_memory_functions with a zeroising free). That cost
-/// a quarter of the instructions of an exact computation in every process that links matio.
-/// hapstab holds no secrets: main() and the Python module's worker call this first. When GMP's
-/// free function is GnuTLS's, GMP gets its own malloc-based functions back (GnuTLS's are malloc's
-/// too, so a block allocated before the call is freed correctly after it); any other is left.
+/// a quarter of the instructions of an exact computation in every process that loaded matio.
+/// hapstab holds no secrets. matio is loaded (dlopen) only when a .mat file is first read or
+/// written, which calls this right after; main() and the Python module's worker call it too, for
+/// a program that links matio itself (the tests). When GMP's free function is GnuTLS's, GMP gets
+/// its own malloc-based functions back (GnuTLS's are malloc's too, so a block allocated before the
+/// call is freed correctly after it); any other is left.
 void restore_gmp_allocator();
 
 }  // namespace hapstab::cli
