@@ -1427,11 +1427,13 @@ def loop_device(model, one_pole=False):
         raise Malformed("model.plant: the device is not strictly proper")
     N = [x / dev.den[-1] for x in dev.num]
     if any(x != 0 for x in dev.den[:k]):
-        k0 = next(i for i, x in enumerate(dev.den) if x != 0)  # den = s^k0 (s - p) when allowed
-        if not one_pole or k - k0 != 1:
+        k0 = next(i for i, x in enumerate(dev.den) if x != 0)  # den = s^k0 q(s), q(0) != 0
+        if not one_pole or k - k0 > 2:
             raise Malformed("model.plant: the device has a pole off s = 0: this checker handles devices with every pole "
-                            "at s = 0%s only" % (" or one simple real pole off it (a mass-damper)" if one_pole else ""))
-        return T, n, params, k0, pole_device(N, k0, -dev.den[k0] / dev.den[k0 + 1], T)
+                            "at s = 0%s only" % (" or one or two poles off it (a mass-damper, a spring)" if one_pole else ""))
+        if k - k0 == 1:
+            return T, n, params, k0, pole_device(N, k0, -dev.den[k0] / dev.den[k0 + 1], T)
+        return T, n, params, k0, spring_device(N, k0, [x / dev.den[-1] for x in dev.den[k0:]], T)
     return T, n, params, k, sampled_device(N, k, T)
 
 
@@ -1445,6 +1447,157 @@ def pole_device(N, k, p, T):
     if trim(rem):
         raise AssertionError("N - r s^(k+1) is not divisible by s - p")
     return p, r, sampled_device(Q, k, T)
+
+
+def spring_device(N, k, q, T):
+    """('spring', A_c, R, Ndp) of P_eff = N/(s^k q(s)), q = s^2 + a1 s + a0 monic, a0 != 0 (two poles
+    off s = 0, real or complex). Partial fractions over Q: P_eff/s = Q/s^(k+1) + R/q, R = R0 + R1 s =
+    N s^-(k+1) mod q (s^-1 = -(s + a1)/a0 mod q), Q = (N - R s^(k+1))/q (exact division, checked).
+    R/q = C (sI - A_c)^-1 B with A_c = [[0, 1], [-a0, -a1]], B = [0; 1], C = [R0, R1], so the step
+    response y(lT) = (the hold of Q/s^k's part) + C Phi^l B - C B, Phi = e^(A_c T) (y(0) = 0:
+    Q_k + R1 = 0, checked), and the hold of R/q is (z - 1) C (zI - Phi)^-1 B - C B = Nq/Delta, Delta =
+    det(zI - Phi), Nq = (R0 phi12 - R1 + R1 phi22) z - R0 phi12 + R1 phi11 - R1 det(Phi)."""
+    a0, a1 = q[0], q[1]
+    if a0 == 0 or len(q) != 3 or q[2] != 1:
+        raise AssertionError("q is not monic of degree 2 with q(0) != 0")
+    sinv = [-a1 / a0, -1 / a0]  # s^-1 mod q
+
+    def mod_q(p):
+        return pdivmod(p, q)[1] if len(trim(p)) > 2 else trim(p)
+    R = mod_q(N)
+    for _ in range(k + 1):
+        R = mod_q(pmul(R, sinv))
+    R = (R + [Fraction(0), Fraction(0)])[:2]
+    Q, rem = pdivmod(padd(N, pscale([Fraction(0)] * (k + 1) + R, -1)), q)
+    if trim(rem):
+        raise AssertionError("N - R s^(k+1) is not divisible by q")
+    Qk = Q[k] if k < len(Q) else Fraction(0)
+    if Qk + R[1] != 0:
+        raise AssertionError("the step response is not 0 at t = 0")
+    return "spring", [[Fraction(0), Fraction(1)], [-a0, -a1]], R, sampled_device(Q, k, T)
+
+
+class Iv:
+    """A closed interval [lo, hi] of Fractions; every result rounded outward to the grid 2^-bits
+    (Iv.bits), so that denominators stay bounded; each operation encloses the exact result for
+    every pair of points of its operands."""
+    bits = 128
+
+    def __init__(self, lo, hi=None):
+        self.lo, self.hi = Fraction(lo), Fraction(lo if hi is None else hi)
+
+    @staticmethod
+    def out(lo, hi):
+        b = 2 ** Iv.bits
+        return Iv(Fraction((lo.numerator * b) // lo.denominator, b), Fraction(-((-hi.numerator * b) // hi.denominator), b))
+
+    def __add__(self, o):
+        o = o if isinstance(o, Iv) else Iv(o)
+        return Iv.out(self.lo + o.lo, self.hi + o.hi)
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Iv(-self.hi, -self.lo)
+
+    def __sub__(self, o):
+        return self + (-(o if isinstance(o, Iv) else Iv(o)))
+
+    def __rsub__(self, o):
+        return Iv(o) - self
+
+    def __mul__(self, o):
+        o = o if isinstance(o, Iv) else Iv(o)
+        ps = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
+        return Iv.out(min(ps), max(ps))
+    __rmul__ = __mul__
+
+    def __truediv__(self, o):
+        if o.lo <= 0 <= o.hi:
+            raise ZeroDivisionError("interval divisor holds 0")
+        return self * Iv.out(1 / o.hi, 1 / o.lo)
+
+    def absolute(self):
+        if self.lo >= 0:
+            return self
+        if self.hi <= 0:
+            return -self
+        return Iv(0, max(-self.lo, self.hi))
+
+
+def expm_interval(A, t, bits):
+    """e^(A t) (A 2x2 rational, t > 0) enclosed entrywise: M = A t/2^s with ||M||_inf <= 1/2, its
+    Taylor sum to N terms in exact Fractions plus the remainder bound ||M||^N/N! * 2 (geometric,
+    ||M|| <= 1/2) on every entry, then s squarings in interval arithmetic."""
+    Iv.bits = bits
+    M = [[x * t for x in row] for row in A]
+    s = 0
+    norm = max(abs(r[0]) + abs(r[1]) for r in M)
+    while norm > Fraction(1, 2) * 2 ** s:
+        s += 1
+    M = [[x / 2 ** s for x in row] for row in M]
+    norm = norm / 2 ** s
+
+    def mm(X, Y):
+        return [[X[i][0] * Y[0][j] + X[i][1] * Y[1][j] for j in range(2)] for i in range(2)]
+    S = [[Fraction(1), Fraction(0)], [Fraction(0), Fraction(1)]]
+    term, j, bound = S, 0, Fraction(1)
+    while True:
+        j += 1
+        term = [[x / j for x in row] for row in mm(term, M)]
+        bound = bound * norm / j
+        S = [[S[a][b] + term[a][b] for b in range(2)] for a in range(2)]
+        if bound * 2 < Fraction(1, 2 ** (bits + 8)):
+            break
+    rem = bound * norm / (j + 1) * 2
+    P = [[Iv.out(x - rem, x + rem) for x in row] for row in S]
+    for _ in range(s):
+        P = mm(P, P)
+    return P
+
+
+def ipoly_mul(a, b):
+    """a b for polynomials whose coefficients are Iv or Fraction (ascending)."""
+    out = [Iv(0)] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            out[i + j] = out[i + j] + x * y
+    return out
+
+
+def ipoly_add(a, b):
+    n = max(len(a), len(b))
+    return [(a[i] if i < len(a) else Iv(0)) + (b[i] if i < len(b) else Iv(0)) for i in range(n)]
+
+
+def spring_charpoly(n, k, spring, A, L, T, bits):
+    """c(z) = z^n L (z - 1)^k Delta + A (Ndp Delta + (z - 1)^k Nq) (spring_device), in intervals."""
+    _, Ac, R, Ndp = spring
+    Phi = expm_interval(Ac, T, bits)
+    det = Phi[0][0] * Phi[1][1] - Phi[0][1] * Phi[1][0]
+    Delta = [det, -(Phi[0][0] + Phi[1][1]), Iv(1)]
+    Nq = [R[1] * Phi[0][0] - R[0] * Phi[0][1] - R[1] * det, R[0] * Phi[0][1] - R[1] + R[1] * Phi[1][1]]
+    Dk = ppow([Fraction(-1), Fraction(1)], k)
+    c = ipoly_mul(pmul([Fraction(0)] * n + L, Dk), Delta)
+    return ipoly_add(c, ipoly_mul(A, ipoly_add(ipoly_mul(Ndp, Delta), ipoly_mul(Dk, Nq)))), Phi
+
+
+def schur_cohn_interval(p):
+    """schur_cohn for every polynomial whose coefficients lie in the intervals p (ascending; the
+    leading one must exclude 0): (True/False, why) when each step's comparison |p_0| < |p_d| is
+    decided over the whole box, None when one is not."""
+    a = list(p)
+    while len(a) > 1:
+        d = len(a) - 1
+        a0, ad = a[0].absolute(), a[-1].absolute()
+        if a0.lo >= ad.hi:
+            return False, "interval Schur-Cohn at degree %d: |p_0| >= |p_d| for every polynomial in the enclosure" % d
+        if not a0.hi < ad.lo:
+            return None
+        q = [a[-1] * a[i + 1] - a[0] * a[d - 1 - i] for i in range(d)]
+        if q[-1].lo <= 0:  # p_d^2 - p_0^2 > 0, but its enclosure is too wide to show it
+            return None
+        a = [x / q[-1] for x in q]
+    return True, "every Schur-Cohn step passes for every polynomial in the enclosure"
 
 
 def exp_interval(x, bits):
@@ -1512,6 +1665,8 @@ def check_stability(c):
         raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
+    if isinstance(Nd, tuple) and Nd[0] == "spring":
+        return check_stability_spring(model, claim, evidence, T, n, params, k, Nd)
     if isinstance(Nd, tuple):
         return check_stability_pole(model, claim, evidence, T, n, params, k, Nd)
     given = evidence.get("charpoly")
@@ -1534,6 +1689,37 @@ def check_stability(c):
     if ok != claim["stable"]:
         return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
     return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
+
+
+def check_stability_spring(model, claim, evidence, T, n, params, k, spring):
+    """A device with two poles off s = 0 (spring_device): Phi = e^(A_c T) is enclosed (expm_interval),
+    c(z) in interval coefficients (spring_charpoly), and Schur-Cohn decided over the whole box
+    (schur_cohn_interval), at 128 to 4096 bits until every step is decided: the verdict then holds
+    for the true Phi, which the box holds."""
+    if "charpoly" in evidence:
+        raise Malformed("evidence.charpoly: the device has poles off s = 0: its coefficients are not rational")
+    if claim["status"] != "certified":
+        raise Malformed("claim.status: with device poles off s = 0 the verdict is \"certified\"")
+    H = loop_wall(model, T, params, n)
+    degree = len(H.den) + 1 + n + k
+    if degree > MAX_STABILITY_MAX_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d with device poles off s = 0" % (
+            degree, MAX_STABILITY_MAX_DEGREE))
+    for bits in (128, 256, 512, 1024, 2048, 4096):
+        c, Phi = spring_charpoly(n, k, spring, H.num, H.den, T, bits)
+        if c[-1].lo <= 0 <= c[-1].hi:
+            raise AssertionError("the leading coefficient's enclosure holds 0")
+        decided = schur_cohn_interval(c)
+        if decided is not None:
+            break
+    else:
+        raise TooLarge("the loop is too close to its boundary: Schur-Cohn undecided on e^(A T)'s enclosure at 4096 bits")
+    ok, why = decided
+    why = "Phi = e^(A T) enclosed at %d bits (trace in [%.12g, %.12g]); %s" % (
+        bits, float((Phi[0][0] + Phi[1][1]).lo), float((Phi[0][0] + Phi[1][1]).hi), why)
+    if ok != claim["stable"]:
+        return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
+    return True, "%s (degree %d, two device poles off s = 0; %s)" % ("stable" if ok else "NOT stable", len(c) - 1, why)
 
 
 def check_stability_pole(model, claim, evidence, T, n, params, k, pole):

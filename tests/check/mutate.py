@@ -841,10 +841,11 @@ STABILITY_TEMPLATES = [  # (plant, operator or None, H, names): every device pol
     ("1/(m*s^2)", "c*s", "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),      # an operator's mass
     ("(1 + c*s)/(m*s^3)", None, "K + B*(z-1)/(T*z)", ["m", "c", "K", "B"]),  # an integrating device
 ]
-# a mass-damper (one pole off s = 0, b of either sign: e^{-bT/m} transcendental; stability only)
+# a mass-damper (one pole off s = 0, b of either sign: e^{-bT/m} transcendental; stability only), a spring (two)
 POLE_TEMPLATES = [
     ("1/(m*s^2 + b*s)", None, "K + B*(z-1)/(T*z)", ["m", "b", "K", "B"]),
     ("1/(m*s^2 + b*s)", "c*s", "K + B*(z-1)/(T*z)", ["m", "b", "c", "K", "B"]),
+    ("1/(m*s^2 + b*s + k)", None, "K + B*(z-1)/(T*z)", ["m", "b", "k", "K", "B"]),  # a spring: two poles off s = 0
 ]
 
 
@@ -860,6 +861,8 @@ def rand_stability(rng, templates=STABILITY_TEMPLATES):
             sets[n] = str(rng.choice([rng.randint(1, 3000), rng.randint(1, 60000)]))
         elif n == "B":
             sets[n] = str(rng.randint(0, 30))
+        elif n == "k":
+            sets[n] = rng.choice(["100", "1000", "-50", "10000"])
         else:
             sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
     m = {"plant": plant, "H": H, "set": sets, "T": rng.choice(["1/1000", "1/500", "1/4000"]),
@@ -934,8 +937,8 @@ def loop_edits(m, rng):
 
 
 def pole_stability_mutants(cert, rng, hapstab, cache, tmp):
-    """A `stability` certificate of a mass-damper (no evidence: the checkers derive c(z; E) and enclose
-    E = e^{pT} themselves): the claim flipped, the status, a charpoly added, the model edited (the
+    """A `stability` certificate of a mass-damper or a spring (no evidence: the checkers derive c(z; E)
+    and enclose E = e^{pT}, or e^{A_c T}, themselves): the claim flipped, the status, a charpoly added, the model edited (the
     producer's certificate of the edited model decides), fields deleted, malformed models."""
     out = [("unmutated", cert, "accept")]
     st = cert["claim"]["stable"]
@@ -1008,14 +1011,16 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
 
 def loop_malformed(cert):
     """Malformed models of a one-DOF loop (stability, stability-max): T negated, a negative delay, a
-    plant that does not parse, has two poles off s = 0 (a spring), is in z or is not strictly proper."""
+    plant that does not parse, has three poles off s = 0, is in z or is not strictly proper."""
     m = cert["model"]
-    return [("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"),
-            ("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"),
-            ("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"),
-            ("plant with two poles off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^2 + s + 1)"), "malformed"),
-            ("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed"),
-            ("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed")]
+    out = [("T negated", with_field(cert, ["model", "T"], "-" + m["T"]), "malformed"),
+           ("delay negative", with_field(cert, ["model", "delay"], -1), "malformed"),
+           ("plant unparsable", with_field(cert, ["model", "plant"], m["plant"] + "*("), "malformed"),
+           ("plant with three poles off s = 0", with_field(cert, ["model", "plant"], "1/(m*s^3 + s^2 + s + 1)"), "malformed"),
+           ("plant in z", with_field(cert, ["model", "plant"], "1/(z - 1)"), "malformed")]
+    if "operator" not in m or cert["kind"] == "stability-max":  # P/(1 + c s^2 P) is strictly proper whatever P is: 1/m there is a spring
+        out.append(("plant not strictly proper", with_field(cert, ["model", "plant"], "1/m"), "malformed"))
+    return out
 
 
 STABILITY_MAX_TEMPLATES = [  # (plant, operator or None, H, the parameter maximised, the others)
@@ -1168,6 +1173,8 @@ def rand_wedge(rng):
             sets[n] = rng.choice([str(rng.randint(1, 20)), "%d/%d" % (rng.randint(1, 20), rng.randint(2, 40))])
         elif n == "B":
             sets[n] = str(rng.randint(0, 30))
+        elif n == "k":
+            sets[n] = rng.choice(["100", "1000", "-50", "10000"])
         else:
             sets[n] = "%s0.%02d" % (rng.choice(["", "-"]), rng.randint(0, 95))
     if "c" in sets:  # z^2 - b z + c stable
@@ -1563,8 +1570,11 @@ def print_branches(certs, mutants, cpp):
             sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
     stab = [c for (k, nm, c, _) in mutants if k == "stability" and nm == "unmutated"]
     if stab:
-        print("  stability branches: every pole at s = 0 %d, a mass-damper (e^{pT}) %d; stable %d, NOT stable %d" % (
-            sum(1 for c in stab if "charpoly" in c["evidence"]), sum(1 for c in stab if "charpoly" not in c["evidence"]),
+        spring = [c for c in stab if "charpoly" not in c["evidence"] and "+ k)" in c["model"]["plant"]]
+        print("  stability branches: every pole at s = 0 %d, a mass-damper (e^{pT}) %d, a spring (e^{A_c T}) %d; "
+              "stable %d, NOT stable %d" % (
+            sum(1 for c in stab if "charpoly" in c["evidence"]), sum(1 for c in stab if "charpoly" not in c["evidence"]) - len(spring),
+            len(spring),
             sum(1 for c in stab if c["claim"]["stable"]), sum(1 for c in stab if not c["claim"]["stable"])))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:

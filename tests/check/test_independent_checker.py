@@ -49,8 +49,26 @@ class Stability(unittest.TestCase):
         c["evidence"]["charpoly"] = ["1", "1"]
         self.assertEqual(hc.check(c)[0], 2)
         c = cert("2", True)
-        c["model"]["plant"] = "1/(s^2 + s + 1)"
+        c["model"]["plant"] = "1/(s^3 + s^2 + s + 1)"  # three poles off s = 0
         self.assertEqual(hc.check(c)[0], 2)
+
+    def test_spring_by_hand(self):
+        # 1/(s^2 + 1) at T = 1, H = K: c = z^2 - 2 cos(1) z + 1 + K (1 - cos 1)(z + 1), stable iff -1 < K < 0
+        # (test_check.cpp's StabilityCheck.SpringByHand); at K = 0 the roots are on the circle: undecided (3)
+        def cert(K, st):
+            return {"certificate": "hapstab", "version": 1, "kind": "stability",
+                    "model": {"plant": "1/(s^2 + 1)", "H": "K", "set": {"K": K}, "T": "1", "delay": 0},
+                    "claim": {"status": "certified", "stable": st}, "evidence": {}}
+        for K, st in (("-1/2", True), ("1/1000", False), ("-999/1000", True), ("-1001/1000", False), ("-1/1000000", True)):
+            self.assertEqual(hc.check(cert(K, st))[0], 0, K)
+            self.assertEqual(hc.check(cert(K, not st))[0], 1, K)
+        self.assertEqual(hc.check(cert("0", True))[0], 3)
+
+    def test_interval_schur_cohn(self):
+        Iv = hc.Iv
+        self.assertEqual(hc.schur_cohn_interval([Iv(-1, -1) * Fraction(1, 2), Iv(1)])[0], True)
+        self.assertEqual(hc.schur_cohn_interval([Iv(2), Iv(1)])[0], False)
+        self.assertIsNone(hc.schur_cohn_interval([Iv(Fraction(9, 10), Fraction(11, 10)), Iv(1)]))  # |p0| = 1 inside
 
     def test_schur_cohn_known_roots(self):
         F = Fraction

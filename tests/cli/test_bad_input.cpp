@@ -97,7 +97,7 @@ std::vector<Case> catalogue_first() {
       {"stability", "--plant", {"--plant", "s", "--H", "1", "--T", "1"}, "not strictly proper"},
       {"stability", "--H", {"--plant", "1/s^2", "--H", "z^3", "--T", "1"}, "not causal"},
       {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
-      {"stability", "--certificate", {"--plant", "1/(s^2 + s + 1)", "--H", "1", "--T", "1", "--certificate", "c.json"}, "more than one device pole off s = 0"},
+      {"stability", "--certificate", {"--plant", "1/(s^3 + s^2 + s + 1)", "--H", "1", "--T", "1", "--certificate", "c.json"}, "more than two device poles off s = 0"},
       {"stability", "--certificate", {"--plant", "1/(s^2 + s)", "--H", "K", "--T", "1/10", "--max", "K", "--certificate", "c.json"}, "stability --max with a device pole off s = 0"},
       {"stability", "--certificate", {"--scene", "/nonexistent/scene.toml", "--max", "K", "--certificate", "c.json"}, "stability --scene --max"},
       {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},

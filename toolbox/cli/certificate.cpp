@@ -442,15 +442,16 @@ nlohmann::json stability_evidence(const stability::Loop& loop) {
                      ", beyond the checkers' limit of 2000");
   const std::optional<QPoly> c = stability::exact_characteristic(loop);
   if (!c) {
-    // one simple real pole off s = 0 (a mass-damper): the checkers derive c(z; E) = c0 + E c1 and
-    // enclose E = e^{pT} themselves (check/loop_model.hpp): no evidence to hand over
+    // one simple real pole off s = 0 (a mass-damper) or two (a spring): the checkers derive the
+    // loop's polynomial and enclose e^{pT} or e^{A_c T} themselves (check/loop_model.hpp): no
+    // evidence to hand over
     const QPoly den = stability::effective_device(loop).den();
     int k = 0;
     while (k < den.degree() && den.coeff(k) == 0) ++k;
-    if (den.degree() - k != 1)
-      throw InputError("--certificate: a certificate of stability with more than one device pole off s = 0 (a spring: "
-                       "e^{pT} complex, or two exponentials) is not implemented yet; devices with every pole at s = 0 "
-                       "(a mass 1/(m*s^2)) or one real pole off it (a mass-damper 1/(m*s^2 + b*s)) have one");
+    if (den.degree() - k > 2)
+      throw InputError("--certificate: a certificate of stability with more than two device poles off s = 0 is not "
+                       "implemented yet; devices with every pole at s = 0 (a mass 1/(m*s^2)), one real pole off it (a "
+                       "mass-damper 1/(m*s^2 + b*s)) or two (a spring 1/(m*s^2 + b*s + k)) have one");
     if (loop.delay + den.degree() + 1 > 150)
       throw InputError("--certificate: with a device pole off s = 0 the checkers take a characteristic polynomial of "
                        "degree <= 150 (about delay + device order + wall order)");

@@ -55,6 +55,25 @@ P sampled_numerator(const P& N, int k, const rational& T) {
   return Pd.num() * q;
 }
 
+/// The spring's R, Ndp (loop_model.hpp): den = s^k q, q monic of degree 2.
+LoopDevice spring_device(LoopDevice d, const P& N, const P& den) {
+  const rational a0 = den.coeff(d.k), a1 = den.coeff(d.k + 1);
+  const P q{a0, a1, rational(1)};
+  const P sinv{-a1 / a0, rational(-1) / a0};  // s^-1 mod q: s (s + a1) = -a0 mod q
+  P R = divmod(N, q).second;
+  for (int i = 0; i <= d.k; ++i) R = divmod(R * sinv, q).second;
+  std::vector<rational> sk1(static_cast<size_t>(d.k) + 2, rational(0));
+  sk1.back() = 1;  // s^(k+1)
+  const auto [Q, rem] = divmod(N - R * P(sk1), q);
+  if (!rem.is_zero()) throw InputError("model.plant: N - R s^(k+1) is not divisible by q (checker defect)");
+  d.R0 = R.coeff(0);
+  d.R1 = R.degree() >= 1 ? R.coeff(1) : rational(0);
+  if (Q.coeff(d.k) + d.R1 != 0) throw InputError("model.plant: the step response is not 0 at t = 0 (checker defect)");
+  d.spring = std::make_pair(a1, a0);
+  d.Ndp = sampled_numerator(Q, d.k, d.T);
+  return d;
+}
+
 }  // namespace
 
 LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole) {
@@ -81,11 +100,12 @@ LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole) {
     d.Nd = sampled_numerator(N, d.k, d.T);
     return d;
   }
-  if (!one_pole || den.degree() - d.k != 1)
+  if (!one_pole || den.degree() - d.k > 2)
     throw InputError(std::string("model.plant: the device has ") + (den.degree() - d.k == 1 ? "a pole" : "poles") +
                      " off s = 0 (e^{pT} is transcendental): this checker handles " +
-                     (one_pole ? "devices with at most one simple real pole off s = 0 (a mass-damper)"
+                     (one_pole ? "devices with at most two poles off s = 0 (a mass-damper, a spring)"
                                : "devices with every pole at s = 0 only"));
+  if (den.degree() - d.k == 2) return spring_device(d, N, den);
   const rational p = -den.coeff(d.k) / den.coeff(d.k + 1);  // den = s^k (s - p)
   rational pk1(1);
   for (int i = 0; i <= d.k; ++i) pk1 *= p;

@@ -22,6 +22,18 @@
 //   c0 = z^(n+1) L (z - 1)^k + A (z Ndp - r (z - 1)^k),   c1 = -z^n L (z - 1)^k - A Ndp + r A (z - 1)^k.
 // E is transcendental (Lindemann: e^q for rational q != 0), so it is known by an enclosure only
 // (exp_enclosure, Arb); stability_check.hpp decides c(.; E) for every E in it.
+//
+// Two poles off s = 0 (the `stability` kind only; a spring 1/(m s^2 + b s + k), poles real or
+// complex): P_eff = N(s)/(s^k q(s)), q = s^2 + a1 s + a0 monic, a0 != 0. Partial fractions over Q:
+// P_eff/s = Q(s)/s^(k+1) + R(s)/q(s), R = R0 + R1 s = N s^-(k+1) mod q (s^-1 = -(s + a1)/a0 mod q),
+// Q = (N - R s^(k+1))/q (exact division, checked; Q_k + R1 = 0: y(0) = 0). R/q = C (sI - A_c)^-1 B,
+// A_c = [[0, 1], [-a0, -a1]], B = [0; 1], C = [R0, R1], so y(lT) = (the hold of Q/s^k) + C Phi^l B - CB,
+// Phi = e^{A_c T}, and
+//   P_d(z) = Ndp(z)/(z - 1)^k + Nq(z)/Delta(z),  Delta = det(zI - Phi) = z^2 - tr(Phi) z + det(Phi),
+//   Nq = (z - 1) C adj(zI - Phi) B - R1 Delta = (R0 phi12 - R1 + R1 phi22) z - R0 phi12 + R1 phi11 - R1 det(Phi),
+//   c(z) = z^n L (z - 1)^k Delta + A (Ndp Delta + (z - 1)^k Nq),
+// whose coefficients are polynomials in Phi's entries: stability_check.cpp encloses Phi (Arb's
+// arb_mat_exp) and decides Schur-Cohn over the whole enclosure.
 #pragma once
 
 #include <map>
@@ -44,12 +56,14 @@ struct LoopDevice {
   std::optional<rational> pole;            ///< p, the one pole off s = 0 (only when allowed)
   Polynomial<rational> Ndp;                ///< with a pole: P_d = Ndp/(z - 1)^k + r (E - 1)/(z - E)
   rational r = 0;                          ///< with a pole: the residue of P_eff/s at p
+  std::optional<std::pair<rational, rational>> spring;  ///< (a1, a0): two poles off s = 0, q = s^2 + a1 s + a0
+  rational R0 = 0, R1 = 0;                 ///< with a spring: R = R0 + R1 s (the header); Ndp as with a pole
   std::map<std::string, rational> params;  ///< model.set
 };
 
 /// model.T, model.delay, model.set, model.plant and model.operator (the device, above); InputError
 /// naming the field that is missing, malformed or beyond the checkers (a pole off s = 0, unless
-/// `one_pole` allows one simple rational pole p != 0).
+/// `one_pole` allows one simple rational pole p != 0 or two poles off s = 0, a spring).
 LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole = false);
 
 /// c(z; E) = c0 + E c1 of the loop with one pole off s = 0 (the header), H = A/L.

@@ -11,6 +11,7 @@
 #include "hapstab/check/reciprocal.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -27,22 +28,29 @@ struct LoopCharpoly {
   std::optional<P> c1;     // with a pole off s = 0: c is c0 of c(z; E) = c0 + E c1
   std::optional<rational> x;  // and E = e^x, x = p T
   std::string text;        // what was checked
+  std::optional<detail::LoopDevice> spring;  // two poles off s = 0: the device, and the wall A/L
+  P A, L;
 };
 
 LoopCharpoly characteristic(const nlohmann::json& model) {
   detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay"}, "model");
   const detail::LoopDevice d = detail::read_loop_device(model, true);
   const RF H = detail::parse_model_field(model, "H", 'z', d.T, d.params);
-  const int extra = d.pole ? 1 : 0;
+  const int extra = d.pole ? 1 : d.spring ? 2 : 0;
   if (H.num().degree() > H.den().degree() + d.n) throw InputError("model.H: z^-n H(z) is not causal");
-  if (H.den().degree() + d.n + d.k + extra > (d.pole ? max_family_degree : max_charpoly_degree))
+  const bool off_zero = d.pole || d.spring;
+  if (H.den().degree() + d.n + d.k + extra > (off_zero ? max_family_degree : max_charpoly_degree))
     throw InputError("model: the characteristic polynomial has degree " + std::to_string(H.den().degree() + d.n + d.k + extra) +
-                     ", beyond this checker's limit of " + std::to_string(d.pole ? max_family_degree : max_charpoly_degree) +
-                     (d.pole ? " with a device pole off s = 0" : ""));
+                     ", beyond this checker's limit of " + std::to_string(off_zero ? max_family_degree : max_charpoly_degree) +
+                     (off_zero ? " with a device pole off s = 0" : ""));
   const std::string text = "degree " + std::to_string(d.k + extra) + " device, delay " + std::to_string(d.n);
-  if (!d.pole) return {detail::loop_polynomial(d, H.num(), H.den()), std::nullopt, std::nullopt, text};
+  if (d.spring)
+    return {P(rational(1)), std::nullopt, std::nullopt,
+            text + ", poles at the roots of s^2 + (" + d.spring->first.str() + ") s + (" + d.spring->second.str() + ")", d,
+            H.num(), H.den()};
+  if (!d.pole) return {detail::loop_polynomial(d, H.num(), H.den()), std::nullopt, std::nullopt, text, std::nullopt, P(), P()};
   const auto [c0, c1] = detail::loop_family_in_E(d, H.num(), H.den());
-  return {c0, c1, *d.pole * d.T, text + ", pole s = " + d.pole->str() + " (E = e^{pT})"};
+  return {c0, c1, *d.pole * d.T, text + ", pole s = " + d.pole->str() + " (E = e^{pT})", std::nullopt, P(), P()};
 }
 
 /// Schur stability of c0 + E c1 at the true E = e^x (x rational, != 0): the enclosure [lo, hi] of E
@@ -69,6 +77,95 @@ SchurCohn decide_family(const P& c0, const P& c1, const rational& x, std::string
   }
   throw InputError("model: the loop is too close to its stability boundary for this checker (e^{pT}'s enclosure at 8192 bits "
                    "still holds a root of D(E))");
+}
+
+using BallPoly = std::vector<flint::Ball>;  // ascending coefficients
+
+BallPoly balls(const P& p) {
+  BallPoly r;
+  for (int i = 0; i <= p.degree(); ++i) r.emplace_back(p.coeff(i));
+  return r;
+}
+BallPoly operator*(const BallPoly& a, const BallPoly& b) {
+  BallPoly r(a.size() + b.size() - 1, flint::Ball(0L));
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
+  return r;
+}
+BallPoly operator+(const BallPoly& a, const BallPoly& b) {
+  BallPoly r(std::max(a.size(), b.size()), flint::Ball(0L));
+  for (size_t i = 0; i < r.size(); ++i) {
+    if (i < a.size()) r[i] += a[i];
+    if (i < b.size()) r[i] += b[i];
+  }
+  return r;
+}
+
+/// c(z) of the loop with a spring (loop_model.hpp) at `bits`: Phi = e^{A_c T} by arb_mat_exp
+/// (scaling and squaring with a bounded Taylor remainder), then the products in ball arithmetic;
+/// every coefficient holds the exact one.
+BallPoly spring_charpoly(const detail::LoopDevice& d, const P& A, const P& L, long bits, flint::Ball& trace) {
+  flint::BallPrecision scope(bits);
+  const auto [a1, a0] = *d.spring;
+  arb_mat_t M, E;
+  arb_mat_init(M, 2, 2);
+  arb_mat_init(E, 2, 2);
+  const rational entries[2][2] = {{rational(0), d.T}, {-a0 * d.T, -a1 * d.T}};  // A_c T
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) arb_set(arb_mat_entry(M, i, j), flint::Ball(entries[i][j]).get());
+  arb_mat_exp(E, M, bits);
+  flint::Ball phi[2][2];
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) arb_set(phi[i][j].get(), arb_mat_entry(E, i, j));
+  arb_mat_clear(M);
+  arb_mat_clear(E);
+  const flint::Ball det = phi[0][0] * phi[1][1] - phi[0][1] * phi[1][0];
+  trace = phi[0][0] + phi[1][1];
+  const flint::Ball R0(d.R0), R1(d.R1);
+  const BallPoly Delta{det, -trace, flint::Ball(1L)};
+  const BallPoly Nq{R1 * phi[0][0] - R0 * phi[0][1] - R1 * det, R0 * phi[0][1] - R1 + R1 * phi[1][1]};
+  std::vector<rational> zn(static_cast<size_t>(d.n) + 1, rational(0));
+  zn.back() = 1;
+  const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
+  return balls(P(zn) * L * Dk) * Delta + balls(A) * (balls(d.Ndp) * Delta + balls(Dk) * Nq);
+}
+
+/// schur_cohn.hpp's test for every polynomial whose coefficients lie in the balls `a` (the
+/// leading one excluding 0): each step's |p_0| < |p_d| decided over the whole box (every step's
+/// transform computed in ball arithmetic holds the exact transform of each point); nullopt when
+/// a step is not decided at this precision.
+std::optional<SchurCohn> schur_cohn_balls(BallPoly a) {
+  while (a.size() > 1) {
+    const size_t d = a.size() - 1;
+    const flint::Ball a0 = abs(a.front()), ad = abs(a.back());
+    if (ad.below(a0))
+      return SchurCohn{false, "Schur-Cohn at degree " + std::to_string(d) + ": |p_0| > |p_d| for every polynomial in the enclosure"};
+    if (!a0.below(ad)) return std::nullopt;
+    BallPoly q(d, flint::Ball(0L));
+    for (size_t i = 0; i < d; ++i) q[i] = a.back() * a[i + 1] - a.front() * a[d - 1 - i];
+    for (size_t i = 0; i < d; ++i) q[i] = q[i] / q[d - 1];  // q[d - 1] = p_d^2 - p_0^2 > 0
+    a = std::move(q);
+  }
+  return SchurCohn{true, "every Schur-Cohn step passes for every polynomial in the enclosure"};
+}
+
+/// Schur stability of the loop with a spring: Schur-Cohn over Phi's enclosure at 128 to 8192
+/// bits until every step is decided; the verdict then holds for the true Phi, which it holds.
+SchurCohn decide_spring(const detail::LoopDevice& d, const P& A, const P& L, std::string& how) {
+  for (long bits = 128; bits <= 8192; bits *= 2) {
+    flint::BallPrecision scope(bits);
+    flint::Ball trace;
+    const BallPoly c = spring_charpoly(d, A, L, bits, trace);
+    if (c.back().contains_zero()) throw InputError("model: the leading coefficient's enclosure holds 0 (checker defect)");
+    if (auto sc = schur_cohn_balls(c)) {
+      const Enclosure<rational> t = trace.bounds();
+      how = "Phi = e^{A_c T} enclosed (Arb, " + std::to_string(bits) + " bits; trace(Phi) in [" + detail::decimal(t.lo) + ", " +
+            detail::decimal(t.hi) + "]), c(z)'s coefficients in ball arithmetic;";
+      return *sc;
+    }
+  }
+  throw InputError("model: the loop is too close to its stability boundary for this checker (Schur-Cohn undecided on "
+                   "e^{A_c T}'s enclosure at 8192 bits)");
 }
 
 /// nullopt when `given` (ascending) is a non-zero multiple of c, else what differs.
@@ -100,8 +197,15 @@ Verdict check_stability(const nlohmann::json& cert) {
   const bool stable = claim.at("stable").get<bool>();
   const LoopCharpoly m = characteristic(model);
   SchurCohn sc;
-  std::string what = "the characteristic polynomial (degree " + std::to_string(m.c.degree()) + ", " + m.text + ")";
-  if (m.c1) {  // transcendental E: no polynomial to hand over, the checker derives c0, c1 itself
+  std::string what = "the characteristic polynomial (degree " + std::to_string(m.c.degree()) + ", " + m.text + ")";  // not for a spring
+  if (m.spring) {  // transcendental Phi: the checker derives c(z) in balls itself
+    if (evidence.contains("charpoly"))
+      throw InputError("evidence.charpoly: the device has poles off s = 0, so the polynomial's coefficients are not rational");
+    if (claim.at("status") != "certified") throw InputError("claim.status: with device poles off s = 0 the verdict is \"certified\"");
+    std::string how;
+    sc = decide_spring(*m.spring, m.A, m.L, how);
+    what = "c(z) (" + m.text + ") rebuilt from the model; " + how;
+  } else if (m.c1) {  // transcendental E: no polynomial to hand over, the checker derives c0, c1 itself
     if (evidence.contains("charpoly"))
       throw InputError("evidence.charpoly: the device has a pole off s = 0, so the polynomial's coefficients are not rational");
     if (claim.at("status") != "certified") throw InputError("claim.status: with a device pole off s = 0 the verdict is \"certified\"");
@@ -115,7 +219,7 @@ Verdict check_stability(const nlohmann::json& cert) {
   }
   if (sc.stable != stable)
     return {false, std::string("claim: ") + (stable ? "stable" : "NOT stable") + ", but on " + what + ": " + sc.why};
-  return {true, std::string(stable ? "stable" : "NOT stable") + ": " + what + (m.c1 ? " " : " rebuilt from the model; ") + sc.why};
+  return {true, std::string(stable ? "stable" : "NOT stable") + ": " + what + (m.c1 || m.spring ? " " : " rebuilt from the model; ") + sc.why};
 }
 
 }  // namespace hapstab::check

@@ -23,9 +23,16 @@
 // number of roots inside fixed, and Schur-Cohn on the exact c(.; lo) decides for the true E.
 // D = 0 identically: NOT stable for every E. E is never a root of D (Lindemann), so only the
 // precision can run out: exit 2 ("too close to its boundary").
+// Two poles off s = 0 (a spring, check/loop_model.hpp): c's coefficients are polynomials in the
+// entries of Phi = e^{A_c T}, which Arb's arb_mat_exp encloses (128 .. 8192 bits); c is built in
+// ball arithmetic and Schur-Cohn run over the whole box: each step's |p_0| < |p_d| (or >) must hold
+// for every polynomial in it (each step's balls hold the exact transform of each point), else more
+// bits. A decided run holds for every polynomial in the box, the true one among them; a root on
+// the circle is never decided (exit 2, "too close to its boundary").
 // Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
-// pole at s = 0 or one simple rational pole off it (else the certificate is refused as beyond this
-// checker: exit 2), z^-n H causal, degree of c <= 2000 (150 with a pole off s = 0).
+// pole at s = 0, one simple rational pole off it or two poles off it (else the certificate is
+// refused as beyond this checker: exit 2), z^-n H causal, degree of c <= 2000 (150 with poles off
+// s = 0).
 // Implements: paper 001 Fig. 1.
 #pragma once
 
