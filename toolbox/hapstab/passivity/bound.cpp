@@ -57,17 +57,18 @@ void check_problem_size(const BoundProblem& p) {
 // the planner: exact path (degree^4) or long-delay path (~ nu), by estimated cost
 namespace {
 // Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_bound, the wall
-// 10 + 5 (z - 1)/(T z)): the exact path 0.8 ms at degree 11, 4.3 ms at 31, 47 ms at 61, 0.29 s at
-// 101 (~ degree^4); the long-delay path 1.5 ms at n = 10, 32 ms at 10^3, 0.29 s at 10^4 (~ its
+// 10 + 5 (z - 1)/(T z); refitted 3 December 2026): the exact path 0.46 ms at degree 11, 3.0 ms at
+// 31, 30 ms at 61, 0.19 s at 101 (~ degree^4); the long-delay path (boxes in double intervals
+// first, issue 48) 0.33 ms at n = 10, 1.0 ms at 100, 4.2 ms at 10^3, 39 ms at 10^4 (~ its
 // 4 nu + 64 boxes). The exact path runs while it costs at most twice the long-delay path or 20 ms:
-// up to n ~ 45 for a low-order wall (it can prove an interior maximum exact).
+// up to n ~ 55 for a low-order wall (it can prove an interior maximum exact).
 double exact_cost(long degree) {
   const double d = static_cast<double>(degree) / 100;
-  return 5e-4 + 0.3 * d * d * d * d;
+  return 5e-4 + 0.2 * d * d * d * d;
 }
 double long_cost(const rational& nu, long order) {
   const double boxes = 4 * to_real<double>(nu) + 64;
-  return 1e-3 + boxes * 8e-6 * (1 + 0.1 * static_cast<double>(order));
+  return 2e-4 + boxes * 9e-7 * (1 + 0.1 * static_cast<double>(order));
 }
 std::string seconds(double s) {
   char buf[32];

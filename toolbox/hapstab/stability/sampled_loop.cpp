@@ -362,9 +362,10 @@ namespace {
 
 // ---- the planner: the characteristic polynomial (existing paths) or the long-delay path --------
 // Costs on one core of the reference machine, fitted to bench/delay.cpp (BM_kmax: device
-// 1/(s^2 + s), wall K + 0.5 (z - 1)/(T z)): sup K by the polynomial path 2.5 ms at degree 13,
-// 57 ms at 33, 0.27 s at 63 (~ degree^3.5), by the long-delay path 5.8 ms at n = 10, 0.1 s at 10^3,
-// 1.1 s at 10^4 (~ its 4 n + 64 first boxes); the Schur test alone ~ degree^3 (0.3 s at 100).
+// 1/(s^2 + s), wall K + 0.5 (z - 1)/(T z); refitted 3 December 2026): sup K by the polynomial path
+// 1.7 ms at degree 13, 41 ms at 33, 0.2 s at 63 (~ degree^3.5), by the long-delay path (arcs in
+// double intervals first, issue 48) 0.77 ms at n = 10, 7.8 ms at 10^3, 82 ms at 10^4 (~ its 4 n + 64
+// first boxes); the Schur test alone ~ degree^3 (0.12 s at 103).
 struct Plan {
   bool long_delay = false;
   long degree = 0;
@@ -374,8 +375,8 @@ Plan plan(const Prepared& p, const Loop& loop, bool crossings) {
   Plan pl;
   pl.degree = static_cast<long>(loop.delay) + p.wall.L.degree() + p.den.degree();
   const double d = static_cast<double>(pl.degree) / 100;
-  const double poly_cost = crossings ? 1e-3 + 2 * std::pow(d, 3.5) : 0.3 * d * d * d;
-  const double long_cost = 3e-3 + (4.0 * static_cast<double>(loop.delay) + 64) * (crossings ? 2.5e-5 : 2e-6);
+  const double poly_cost = crossings ? 1e-3 + 2 * std::pow(d, 3.5) : 0.12 * d * d * d;
+  const double long_cost = 6e-4 + (4.0 * static_cast<double>(loop.delay) + 64) * (crossings ? 2e-6 : 2e-7);
   char buf[160];
   std::snprintf(buf, sizeof buf, " (polynomial path ~%.2g s, long-delay path ~%.2g s)", poly_cost, long_cost);
   if (loop.path == LoopPath::long_delay) {
@@ -391,7 +392,7 @@ Plan plan(const Prepared& p, const Loop& loop, bool crossings) {
     pl.why = "long-delay path: the characteristic polynomial would have degree " + std::to_string(pl.degree) +
              ", more than the limit of " + std::to_string(limits::model_degree) + " for the polynomial path";
   } else if (poly_cost > std::max(2 * long_cost, crossings ? 0.02 : 0.5)) {
-    // the Schur test alone keeps the polynomial path up to ~0.5 s (degree ~110): it also encloses
+    // the Schur test alone keeps the polynomial path up to ~0.5 s (degree ~160): it also encloses
     // the spectral radius, which the argument principle does not give
     pl.long_delay = true;
     pl.why = "long-delay path: cheaper than the characteristic polynomial of degree " + std::to_string(pl.degree) + buf;
