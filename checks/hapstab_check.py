@@ -9,7 +9,7 @@
                                                      check took (hapstab reproduce runs it so)
 
 Python 3 standard library (fractions) for everything exact; mpmath's interval arithmetic (iv) only
-for the enclosure of cot in `r`. It reads the model as written (the expression of H(z) with its own
+for the enclosure of cot in `r` and of c(e^(j pi t)) on arcs in `stability`'s argument principle. It reads the model as written (the expression of H(z) with its own
 parser, below) and derives every quantity by a route other than hapstab's (docs/certificates.md).
 
 Kinds and theorems:
@@ -77,7 +77,7 @@ limit-cycle  a periodic orbit of paper 002's loop (4), y = -k H(z) x, x = max(y,
        the amplitude (max - min)/2, its printed decimal (half a unit), the samples with y < -rho exact;
        attracting iff the product J of the steps' companion Jacobians is Schur stable (Faddeev-LeVerrier,
        schur_cohn), claimed only when no sample lies on y = -rho.
-Size limit: limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400; stability-max: degree <= 40
+Size limit: limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -1655,16 +1655,114 @@ def loop_wall(model, T, params, n):
     return H
 
 
+MAX_WINDING_DEGREE = 10000  # about 4 (d + 16) arcs at ~0.6 ms each in mpmath's intervals: ~25 s
+
+
+def winding_count(n, LD, AN):
+    """The roots of c(z) = z^n LD(z) + AN(z) (real coefficients, deg AN < n + deg LD) inside |z| < 1,
+    z^n never expanded: the argument principle on the upper half circle z = e^(j pi t), t in [0, 1],
+    given c(1), c(-1) != 0 (the caller checks them exactly). [0, 1] is cut into arcs, each halved until
+    c's rectangle over it (mpmath iv, 128 bits) excludes 0; the rectangle then lies in one of the open
+    half-planes Re > 0, Im > 0, Re < 0, Im < 0 (h = 0, 1, 2, 3 quarter turns), where arg c is within a
+    quarter turn of h pi/2. Adjacent arcs share a point: their half-planes are never opposite, and the
+    unwrapped arg moves by +1, -1 or 0 quarter turns from one to the next (integers only). The ends
+    are real, in Re half-planes: roots inside = (quarter turns)/2 (c(conj z) = conj c(z)). None when an
+    arc narrower than 2^-100 is not decided (a root on or too near the circle)."""
+    from mpmath import iv
+    old = iv.prec
+    iv.prec = 128
+    try:
+        def point(q):
+            return iv.mpf(q.numerator) / iv.mpf(q.denominator)
+
+        def horner(p, zr, zi):
+            vr, vi = iv.mpf(0), iv.mpf(0)
+            for a in reversed(p):
+                vr, vi = vr * zr - vi * zi + point(a), vr * zi + vi * zr
+            return vr, vi
+
+        def rectangle(a, b):
+            t = iv.mpf([point(a).a, point(b).b])
+            zr, zi = iv.cos(iv.pi * t), iv.sin(iv.pi * t)
+            nr, ni = iv.cos(iv.pi * n * t), iv.sin(iv.pi * n * t)
+            lr, li = horner(LD, zr, zi)
+            ar, ai = horner(AN, zr, zi)
+            return nr * lr - ni * li + ar, nr * li + ni * lr + ai
+        arcs0 = 4 * (n + len(LD) - 1 + 16)
+        todo = [(Fraction(i - 1, arcs0), Fraction(i, arcs0)) for i in range(arcs0, 0, -1)]
+        turns, first, last, count = 0, None, None, 0
+        while todo:
+            a, b = todo.pop()
+            re, im = rectangle(a, b)
+            h = 0 if re.a > 0 else 1 if im.a > 0 else 2 if re.b < 0 else 3 if im.b < 0 else None
+            if h is None:
+                if b - a < Fraction(1, 2 ** 100):
+                    return None
+                m = (a + b) / 2
+                todo += [(m, b), (a, m)]
+                continue
+            count += 1
+            if first is None:
+                first = h
+            else:
+                step = (h - last) % 4
+                if step == 2:
+                    raise AssertionError("opposite half-planes on adjacent arcs")
+                turns += {0: 0, 1: 1, 3: -1}[step]
+            last = h
+        if first % 2 or last % 2 or turns % 2:
+            raise AssertionError("the ends of the half circle are not in Re half-planes")
+        return turns // 2, count
+    finally:
+        iv.prec = old
+
+
+def check_stability_winding(model, claim, T, n, params, k, Nd):
+    """evidence.argument_principle: every device pole at s = 0, c = z^n L (z-1)^k + A Nd with z^n
+    never expanded (winding_count); stable iff every one of its n + deg L + k roots is inside."""
+    if claim["status"] != "certified":
+        raise Malformed("claim.status: decided by the argument principle, the verdict is \"certified\"")
+    H = loop_wall(model, T, params, n)
+    LD = trim(pmul(H.den, ppow([Fraction(-1), Fraction(1)], k)))
+    AN = trim(pmul(H.num, Nd))
+    degree = n + len(LD) - 1
+    if degree > MAX_WINDING_DEGREE:
+        raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d for the argument principle" % (
+            degree, MAX_WINDING_DEGREE))
+    if len(AN) - 1 >= degree:
+        raise AssertionError("deg A Nd >= deg c")
+    c1 = peval(LD, Fraction(1)) + peval(AN, Fraction(1))
+    cm1 = (-1) ** n * peval(LD, Fraction(-1)) + peval(AN, Fraction(-1))
+    if c1 == 0 or cm1 == 0:
+        ok, why = False, "c(%d) = 0: a root on the unit circle" % (1 if c1 == 0 else -1)
+    else:
+        r = winding_count(n, LD, AN)
+        if r is None:
+            raise TooLarge("the loop is too close to its boundary: an arc of width 2^-100 not separated from 0")
+        inside, arcs = r
+        ok = inside == degree
+        why = "argument principle on the upper half circle (%d arcs): %d of the %d roots inside" % (arcs, inside, degree)
+    if ok != claim["stable"]:
+        return False, "claim: %s, but %s" % ("stable" if claim["stable"] else "NOT stable", why)
+    return True, "%s (degree %d, delay %d never expanded; %s)" % ("stable" if ok else "NOT stable", degree, n, why)
+
+
 def check_stability(c):
     model, claim, evidence = parts(c)
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
     only(claim, ("quantity", "status", "stable"), "claim")
-    only(evidence, ("charpoly",), "evidence")
-    T, n, params, k, Nd = loop_device(model, one_pole=True)
+    only(evidence, ("charpoly", "argument_principle"), "evidence")
+    if "argument_principle" in evidence and evidence["argument_principle"] is not True:
+        raise Malformed("evidence.argument_principle: not true")
+    if "argument_principle" in evidence and "charpoly" in evidence:
+        raise Malformed("evidence: both charpoly and argument_principle")
+    T, n, params, k, Nd = loop_device(model, one_pole="argument_principle" not in evidence)
     if claim.get("status") not in ("exact", "certified"):
         raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
+    if "argument_principle" in evidence:
+        return check_stability_winding(model, claim, T, n, params, k, Nd)
     if isinstance(Nd, tuple) and Nd[0] == "spring":
         return check_stability_spring(model, claim, evidence, T, n, params, k, Nd)
     if isinstance(Nd, tuple):

@@ -990,7 +990,9 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     # the model edited: expectation from the producer's certificate of the edited model
     for name, nm in loop_edits(m, rng):
         other = stability_produce(hapstab, nm, cache, tmp)
-        if isinstance(other, dict):
+        if isinstance(other, dict) and "charpoly" not in other["evidence"]:
+            expect = "malformed"  # the edit put a device pole off s = 0 (b 0 -> b): a charpoly there is malformed
+        elif isinstance(other, dict):
             same = proportional(other["evidence"]["charpoly"], cp)
             expect = "refute" if not same or other["claim"]["stable"] != st else "accept"
         else:
@@ -1006,7 +1008,30 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("charpoly entry a decimal", with_field(cert, ["evidence", "charpoly"], ["0.5"] + cert["evidence"]["charpoly"][1:]), "malformed"))
     out.append(("charpoly empty", with_field(cert, ["evidence", "charpoly"], []), "malformed"))
-    return out + loop_malformed(cert)
+    return out + loop_malformed(cert) + winding_mutants(cert, rng, hapstab, cache, tmp)
+
+
+def winding_mutants(cert, rng, hapstab, cache, tmp):
+    """The same loop decided by the argument principle (evidence.argument_principle, what the producer
+    writes beyond degree 2000; the checkers take it at any degree): made from the charpoly certificate,
+    accepted as it is and mutated -- the claim flipped, the status exact, the flag false or beside a
+    charpoly, a delay +- 1 or a set value edited (expected by the producer's verdict of that model)."""
+    w = with_field(with_field(deleted(cert, ["evidence", "charpoly"]), ["evidence", "argument_principle"], True),
+                   ["claim", "status"], "certified")
+    st = w["claim"]["stable"]
+    out = [("argument principle: unmutated", w, "accept"),
+           ("argument principle: claim.stable flipped", with_field(w, ["claim", "stable"], not st), "refute"),
+           ("argument principle: status exact", with_field(w, ["claim", "status"], "exact"), "malformed"),
+           ("argument principle: false", with_field(w, ["evidence", "argument_principle"], False), "malformed"),
+           ("argument principle: beside a charpoly", with_field(w, ["evidence", "charpoly"], cert["evidence"]["charpoly"]), "malformed")]
+    for name, nm in loop_edits(w["model"], rng)[:4]:
+        other = stability_produce(hapstab, nm, cache, tmp)
+        if isinstance(other, dict):
+            expect = "malformed" if "charpoly" not in other["evidence"] else ("accept" if other["claim"]["stable"] == st else "refute")
+        else:
+            expect = "malformed" if other == 2 else "agree"
+        out.append(("argument principle: model: " + name, with_field(w, ["model"], nm), expect))
+    return out
 
 
 def loop_malformed(cert):

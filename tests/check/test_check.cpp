@@ -611,6 +611,36 @@ TEST(StabilityCheck, SpringByHand) {
   EXPECT_TRUE(check_certificate(damped).verified);
 }
 
+// evidence.argument_principle (z^n never expanded): the delayed integrator 1/s behind a ZOH at T = 1
+// under H = K, c = z^n (z - 1) + K, is stable iff 0 < K < K* = 2 sin(pi/(2 (2n + 1))) (on the circle
+// |z - 1| = K and (n + 1/2) theta + pi/2 = pi: theta = pi/(2n + 1)); n = 50: K* = 0.0311036238407017...
+nlohmann::json integrator_cert(const std::string& K, bool stable, long n = 50) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability"},
+          {"model", {{"plant", "1/s"}, {"H", "K"}, {"set", {{"K", K}}}, {"T", "1"}, {"delay", n}}},
+          {"claim", {{"status", "certified"}, {"stable", stable}}}, {"evidence", {{"argument_principle", true}}}};
+}
+
+TEST(StabilityCheck, ArgumentPrincipleByHand) {
+  for (const auto& [K, st] : std::vector<std::pair<std::string, bool>>{
+           {"31/1000", true}, {"312/10000", false}, {"3110362/100000000", true}, {"3110363/100000000", false}, {"-1/100", false}}) {
+    const auto v = check_certificate(integrator_cert(K, st));
+    EXPECT_TRUE(v.verified) << K << ": " << v.reason;
+    EXPECT_FALSE(check_certificate(integrator_cert(K, !st)).verified) << K;
+  }
+  EXPECT_NE(check_certificate(integrator_cert("31/1000", true)).reason.find("51 of the 51 roots inside"), std::string::npos);
+  EXPECT_TRUE(check_certificate(integrator_cert("0", false)).verified);  // c(1) = 0: a root on the circle, exactly
+  EXPECT_TRUE(check_certificate(integrator_cert("3/10000", true, 5000)).verified);  // K* = 3.1413e-4 at n = 5000
+  auto exact = integrator_cert("31/1000", true);
+  exact["claim"]["status"] = "exact";
+  EXPECT_THROW(check_certificate(exact), InputError);
+  auto flag = integrator_cert("31/1000", true);
+  flag["evidence"]["argument_principle"] = false;
+  EXPECT_THROW(check_certificate(flag), InputError);
+  auto pole = integrator_cert("31/1000", true);
+  pole["model"]["plant"] = "1/(s + 1)";  // a pole off s = 0: its certificate has no evidence
+  EXPECT_THROW(check_certificate(pole), InputError);
+}
+
 TEST(StabilityCheck, RefusesWhatItCannotModel) {
   auto expect_field = [](const nlohmann::json& j, const std::string& field) {
     try {

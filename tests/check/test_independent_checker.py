@@ -64,6 +64,25 @@ class Stability(unittest.TestCase):
             self.assertEqual(hc.check(cert(K, not st))[0], 1, K)
         self.assertEqual(hc.check(cert("0", True))[0], 3)
 
+    def test_argument_principle_by_hand(self):
+        # the delayed integrator 1/s, T = 1, H = K, n = 50: c = z^50 (z - 1) + K, stable iff 0 < K < 2 sin(pi/202)
+        # = 0.0311036238407017... (test_check.cpp's StabilityCheck.ArgumentPrincipleByHand)
+        def cert(K, st, status="certified"):
+            return {"certificate": "hapstab", "version": 1, "kind": "stability",
+                    "model": {"plant": "1/s", "H": "K", "set": {"K": K}, "T": "1", "delay": 50},
+                    "claim": {"status": status, "stable": st}, "evidence": {"argument_principle": True}}
+        for K, st in (("31/1000", True), ("312/10000", False), ("3110362/100000000", True), ("3110363/100000000", False),
+                      ("-1/100", False), ("0", False)):
+            self.assertEqual(hc.check(cert(K, st))[0], 0, K)
+            self.assertEqual(hc.check(cert(K, not st))[0], 1, K)
+        self.assertEqual(hc.check(cert("31/1000", True, "exact"))[0], 2)
+        c = cert("31/1000", True)
+        c["evidence"]["argument_principle"] = False
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("31/1000", True)
+        c["model"]["plant"] = "1/(s + 1)"
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_interval_schur_cohn(self):
         Iv = hc.Iv
         self.assertEqual(hc.schur_cohn_interval([Iv(-1, -1) * Fraction(1, 2), Iv(1)])[0], True)

@@ -30,15 +30,25 @@ struct LoopCharpoly {
   std::string text;        // what was checked
   std::optional<detail::LoopDevice> spring;  // two poles off s = 0: the device, and the wall A/L
   P A, L;
+  std::optional<detail::LoopDevice> winding;  // every pole at s = 0, decided by the argument principle (A/L as above)
 };
 
-LoopCharpoly characteristic(const nlohmann::json& model) {
+constexpr long max_winding_delay = 100000;  // the model's limit (limits.hpp): about 4 (n + 16) arcs
+
+LoopCharpoly characteristic(const nlohmann::json& model, bool argument_principle) {
   detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay"}, "model");
   const detail::LoopDevice d = detail::read_loop_device(model, true);
   const RF H = detail::parse_model_field(model, "H", 'z', d.T, d.params);
   const int extra = d.pole ? 1 : d.spring ? 2 : 0;
   if (H.num().degree() > H.den().degree() + d.n) throw InputError("model.H: z^-n H(z) is not causal");
   const bool off_zero = d.pole || d.spring;
+  if (argument_principle) {
+    if (off_zero) throw InputError("evidence.argument_principle: the device has a pole off s = 0 (its certificate has no evidence)");
+    if (d.n > max_winding_delay) throw InputError("model.delay: above this checker's limit of " + std::to_string(max_winding_delay));
+    return {P(rational(1)), std::nullopt, std::nullopt,
+            "degree " + std::to_string(d.k) + " device, delay " + std::to_string(d.n) + ", never expanded", std::nullopt,
+            H.num(), H.den(), d};
+  }
   if (H.den().degree() + d.n + d.k + extra > (off_zero ? max_family_degree : max_charpoly_degree))
     throw InputError("model: the characteristic polynomial has degree " + std::to_string(H.den().degree() + d.n + d.k + extra) +
                      ", beyond this checker's limit of " + std::to_string(off_zero ? max_family_degree : max_charpoly_degree) +
@@ -47,10 +57,10 @@ LoopCharpoly characteristic(const nlohmann::json& model) {
   if (d.spring)
     return {P(rational(1)), std::nullopt, std::nullopt,
             text + ", poles at the roots of s^2 + (" + d.spring->first.str() + ") s + (" + d.spring->second.str() + ")", d,
-            H.num(), H.den()};
-  if (!d.pole) return {detail::loop_polynomial(d, H.num(), H.den()), std::nullopt, std::nullopt, text, std::nullopt, P(), P()};
+            H.num(), H.den(), std::nullopt};
+  if (!d.pole) return {detail::loop_polynomial(d, H.num(), H.den()), std::nullopt, std::nullopt, text, std::nullopt, P(), P(), std::nullopt};
   const auto [c0, c1] = detail::loop_family_in_E(d, H.num(), H.den());
-  return {c0, c1, *d.pole * d.T, text + ", pole s = " + d.pole->str() + " (E = e^{pT})", std::nullopt, P(), P()};
+  return {c0, c1, *d.pole * d.T, text + ", pole s = " + d.pole->str() + " (E = e^{pT})", std::nullopt, P(), P(), std::nullopt};
 }
 
 /// Schur stability of c0 + E c1 at the true E = e^x (x rational, != 0): the enclosure [lo, hi] of E
@@ -168,6 +178,87 @@ SchurCohn decide_spring(const detail::LoopDevice& d, const P& A, const P& L, std
                    "e^{A_c T}'s enclosure at 8192 bits)");
 }
 
+flint::CBall horner(const P& p, const flint::CBall& z) {
+  flint::CBall v{flint::Ball(0L), flint::Ball(0L)};
+  for (int i = p.degree(); i >= 0; --i) v = v * z + flint::CBall{flint::Ball(p.coeff(i)), flint::Ball(0L)};
+  return v;
+}
+
+/// c(e^{j pi t}) = e^{j pi n t} LD(z) + AN(z) for every t in the ball `t` (a complex rectangle).
+flint::CBall on_circle(const P& LD, const P& AN, long n, const flint::Ball& t) {
+  flint::CBall z, zn;
+  arb_sin_cos_pi(z.im.get(), z.re.get(), t.get(), flint::ball_prec);
+  const flint::Ball nt = t * n;
+  arb_sin_cos_pi(zn.im.get(), zn.re.get(), nt.get(), flint::ball_prec);
+  return zn * horner(LD, z) + horner(AN, z);
+}
+
+/// Schur stability of c(z) = z^n LD(z) + AN(z), LD = L (z - 1)^k, AN = A Nd (loop_model.hpp), with
+/// z^n never expanded: the argument principle on the upper half circle z = e^{j pi t}, t in [0, 1].
+/// c has real coefficients, so its roots inside |z| < 1 number m = (the change of arg c over t in
+/// [0, 1])/pi when c(1), c(-1) != 0 (checked exactly; = 0: a root on the circle, NOT stable).
+/// The interval is cut into arcs, each bisected until c's rectangle over it (ball arithmetic)
+/// excludes 0; then it lies in one open half-plane Re > 0, Im > 0, Re < 0 or Im < 0 (h = 0, 1, 2, 3
+/// quarter turns), where arg c stays within a quarter turn of h pi/2. Adjacent arcs share a point,
+/// so their half-planes are not opposite, and the unwrapped arg follows U += +-1 or 0 quarter turns
+/// per arc (exact integers, no arg computed); the first and last arcs hold the real c(1), c(-1), so
+/// their half-planes are Re ones and m = (U_last - U_first)/2. Stable iff m = deg c. An arc
+/// narrower than 2^-100 without a decision: too close to the boundary (InputError).
+SchurCohn decide_winding(const detail::LoopDevice& d, const P& A, const P& L, std::string& how) {
+  const P LD = L * P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
+  const P AN = A * d.Nd;
+  const long degree = d.n + LD.degree();
+  if (AN.degree() >= degree) throw InputError("model: A Nd has degree >= n + deg L + k (checker defect: z^-n H is causal)");
+  const rational c1 = LD(rational(1)) + AN(rational(1));
+  const rational cm1 = (d.n % 2 ? -LD(rational(-1)) : LD(rational(-1))) + AN(rational(-1));
+  if (c1 == 0 || cm1 == 0) {
+    how = "c(" + std::string(c1 == 0 ? "1" : "-1") + ") = 0 exactly:";
+    return {false, "a root on the unit circle at z = " + std::string(c1 == 0 ? "1" : "-1")};
+  }
+  flint::BallPrecision scope(128);
+  const long arcs0 = 4 * (degree + 16);
+  rational min_width(1);
+  for (int i = 0; i < 100; ++i) min_width /= 2;
+  struct Arc { rational a, b; };
+  std::vector<Arc> todo;  // a stack: the leftmost arc on top
+  for (long i = arcs0; i > 0; --i) todo.push_back({rational(i - 1) / arcs0, rational(i) / arcs0});
+  long turns = 0, first = -1, last = -1, decided = 0;
+  while (!todo.empty()) {
+    const Arc arc = todo.back();
+    todo.pop_back();
+    const flint::CBall v = on_circle(LD, AN, d.n, flint::Ball::hull(arc.a, arc.b));
+    long h = -1;
+    if (v.re.positive()) h = 0;
+    else if (v.im.positive()) h = 1;
+    else if (v.re.negative()) h = 2;
+    else if (v.im.negative()) h = 3;
+    if (h < 0) {
+      if (arc.b - arc.a < min_width)
+        throw InputError("model: the loop is too close to its stability boundary for this checker (c(e^{j pi t}) not "
+                         "separated from 0 on an arc of width 2^-100)");
+      const rational mid = (arc.a + arc.b) / 2;
+      todo.push_back({mid, arc.b});
+      todo.push_back({arc.a, mid});
+      continue;
+    }
+    ++decided;
+    if (first < 0) first = h;
+    else {
+      const long step = ((h - last) % 4 + 4) % 4;
+      if (step == 2) throw InputError("model: opposite half-planes on adjacent arcs (checker defect)");
+      turns += step == 1 ? 1 : step == 3 ? -1 : 0;
+    }
+    last = h;
+  }
+  if (first % 2 || last % 2 || turns % 2) throw InputError("model: the ends of the half circle are not real (checker defect)");
+  const long inside = turns / 2;
+  how = "the argument principle on z = e^{j pi t}, t in [0, 1] (" + std::to_string(decided) +
+        " arcs, each with c's rectangle in one half-plane; Arb, 128 bits): " + std::to_string(inside) + " of the " +
+        std::to_string(degree) + " roots inside |z| < 1;";
+  if (inside == degree) return {true, "every root inside"};
+  return {false, std::to_string(degree - inside) + " root(s) on or outside the unit circle"};
+}
+
 /// nullopt when `given` (ascending) is a non-zero multiple of c, else what differs.
 std::optional<std::string> differs(const nlohmann::json& given, const P& c) {
   if (!given.is_array() || given.empty()) throw InputError("evidence.charpoly: not a non-empty array of \"p/q\"");
@@ -189,16 +280,26 @@ std::optional<std::string> differs(const nlohmann::json& given, const P& c) {
 Verdict check_stability(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "stable"}, "claim");
-  detail::only_fields(evidence, {"charpoly"}, "evidence");
+  detail::only_fields(evidence, {"charpoly", "argument_principle"}, "evidence");
+  const bool winding = evidence.contains("argument_principle");
+  if (winding && evidence.at("argument_principle") != true)
+    throw InputError("evidence.argument_principle: not true (its only value: the checker counts the roots itself)");
+  if (winding && evidence.contains("charpoly")) throw InputError("evidence: both charpoly and argument_principle");
   if (!claim.contains("status") || !claim.at("status").is_string() ||
       (claim.at("status") != "exact" && claim.at("status") != "certified"))
     throw InputError("claim.status: missing or neither \"exact\" nor \"certified\"");
   if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
   const bool stable = claim.at("stable").get<bool>();
-  const LoopCharpoly m = characteristic(model);
+  const LoopCharpoly m = characteristic(model, winding);
   SchurCohn sc;
   std::string what = "the characteristic polynomial (degree " + std::to_string(m.c.degree()) + ", " + m.text + ")";  // not for a spring
-  if (m.spring) {  // transcendental Phi: the checker derives c(z) in balls itself
+  if (m.winding) {  // every pole at s = 0, a long delay: z^n never expanded
+    if (claim.at("status") != "certified")
+      throw InputError("claim.status: decided by the argument principle, the verdict is \"certified\"");
+    std::string how;
+    sc = decide_winding(*m.winding, m.A, m.L, how);
+    what = "c(z) = z^n L (z - 1)^k + A Nd (" + m.text + ") rebuilt from the model; " + how;
+  } else if (m.spring) {  // transcendental Phi: the checker derives c(z) in balls itself
     if (evidence.contains("charpoly"))
       throw InputError("evidence.charpoly: the device has poles off s = 0, so the polynomial's coefficients are not rational");
     if (claim.at("status") != "certified") throw InputError("claim.status: with device poles off s = 0 the verdict is \"certified\"");
@@ -219,7 +320,7 @@ Verdict check_stability(const nlohmann::json& cert) {
   }
   if (sc.stable != stable)
     return {false, std::string("claim: ") + (stable ? "stable" : "NOT stable") + ", but on " + what + ": " + sc.why};
-  return {true, std::string(stable ? "stable" : "NOT stable") + ": " + what + (m.c1 || m.spring ? " " : " rebuilt from the model; ") + sc.why};
+  return {true, std::string(stable ? "stable" : "NOT stable") + ": " + what + (m.c1 || m.spring || m.winding ? " " : " rebuilt from the model; ") + sc.why};
 }
 
 }  // namespace hapstab::check
