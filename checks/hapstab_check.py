@@ -1675,18 +1675,21 @@ def winding_count(n, LD, AN):
         def point(q):
             return iv.mpf(q.numerator) / iv.mpf(q.denominator)
 
+        LDi = [point(a) if isinstance(a, Fraction) else a for a in LD]  # Fractions or mpmath intervals
+        ANi = [point(a) if isinstance(a, Fraction) else a for a in AN]
+
         def horner(p, zr, zi):
             vr, vi = iv.mpf(0), iv.mpf(0)
             for a in reversed(p):
-                vr, vi = vr * zr - vi * zi + point(a), vr * zi + vi * zr
+                vr, vi = vr * zr - vi * zi + a, vr * zi + vi * zr
             return vr, vi
 
         def rectangle(a, b):
             t = iv.mpf([point(a).a, point(b).b])
             zr, zi = iv.cos(iv.pi * t), iv.sin(iv.pi * t)
             nr, ni = iv.cos(iv.pi * n * t), iv.sin(iv.pi * n * t)
-            lr, li = horner(LD, zr, zi)
-            ar, ai = horner(AN, zr, zi)
+            lr, li = horner(LDi, zr, zi)
+            ar, ai = horner(ANi, zr, zi)
             return nr * lr - ni * li + ar, nr * li + ni * lr + ai
         arcs0 = 4 * (n + len(LD) - 1 + 16)
         todo = [(Fraction(i - 1, arcs0), Fraction(i, arcs0)) for i in range(arcs0, 0, -1)]
@@ -1717,22 +1720,81 @@ def winding_count(n, LD, AN):
         iv.prec = old
 
 
+def winding_parts(n, k, Nd, A, L, T, bits):
+    """c(z) = z^n P1(z) + P0(z), z^n kept apart: Fractions with every device pole at s = 0 (P1 = L (z-1)^k,
+    P0 = A Nd); mpmath intervals with a mass-damper (P1 = L (z-1)^k (z - E), P0 = A (Ndp (z - E) +
+    r (E - 1)(z-1)^k), E = e^(pT) by exp_interval) or a spring (P1 = L (z-1)^k Delta, P0 = A (Ndp Delta +
+    (z-1)^k Nq), Phi by expm_interval: spring_charpoly's formulas)."""
+    from mpmath import iv
+    Dk = ppow([Fraction(-1), Fraction(1)], k)
+    LD = trim(pmul(L, Dk))
+    if not isinstance(Nd, tuple):
+        return LD, trim(pmul(A, Nd))
+    iv.prec = bits
+
+    def box(lo, hi):
+        return iv.mpf([(iv.mpf(lo.numerator) / lo.denominator).a, (iv.mpf(hi.numerator) / hi.denominator).b])
+
+    def mul(a, b):
+        out = [iv.mpf(0)] * (len(a) + len(b) - 1)
+        for i, x in enumerate(a):
+            for j, y in enumerate(b):
+                out[i + j] = out[i + j] + x * y
+        return out
+
+    def add(a, b):
+        return [(a[i] if i < len(a) else 0) + (b[i] if i < len(b) else 0) for i in range(max(len(a), len(b)))]
+
+    def fr(p):
+        return [box(x, x) for x in p]
+    if Nd[0] == "spring":
+        _, Ac, R, Ndp = Nd
+        Phi = [[box(x.lo, x.hi) for x in row] for row in expm_interval(Ac, T, bits)]
+        det = Phi[0][0] * Phi[1][1] - Phi[0][1] * Phi[1][0]
+        Delta = [det, -(Phi[0][0] + Phi[1][1]), iv.mpf(1)]
+        r0, r1 = box(R[0], R[0]), box(R[1], R[1])
+        Nq = [r1 * Phi[0][0] - r0 * Phi[0][1] - r1 * det, r0 * Phi[0][1] - r1 + r1 * Phi[1][1]]
+        return mul(fr(LD), Delta), mul(fr(A), add(mul(fr(Ndp), Delta), mul(fr(Dk), Nq)))
+    p, r, Ndp = Nd
+    lo, hi = exp_interval(p * T, bits)
+    E = box(lo, hi)
+    zE = [-E, iv.mpf(1)]
+    return mul(fr(LD), zE), mul(fr(A), add(mul(fr(Ndp), zE), [x * (box(r, r) * (E - 1)) for x in fr(Dk)]))
+
+
 def check_stability_winding(model, claim, T, n, params, k, Nd):
-    """evidence.argument_principle: every device pole at s = 0, c = z^n L (z-1)^k + A Nd with z^n
-    never expanded (winding_count); stable iff every one of its n + deg L + k roots is inside."""
+    """evidence.argument_principle: c = z^n P1 + P0 (winding_parts: every device pole at s = 0, a
+    mass-damper or a spring) with z^n never expanded (winding_count); stable iff every one of its
+    n + deg P1 roots is inside. c(+-1) != 0 exactly with every pole at s = 0 (= 0: a root on the circle),
+    in intervals otherwise (128 to 4096 bits)."""
+    from mpmath import iv
     if claim["status"] != "certified":
         raise Malformed("claim.status: decided by the argument principle, the verdict is \"certified\"")
     H = loop_wall(model, T, params, n)
-    LD = trim(pmul(H.den, ppow([Fraction(-1), Fraction(1)], k)))
-    AN = trim(pmul(H.num, Nd))
-    degree = n + len(LD) - 1
+    degree = n + len(H.den) - 1 + k + (0 if not isinstance(Nd, tuple) else 2 if Nd[0] == "spring" else 1)
     if degree > MAX_WINDING_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d for the argument principle" % (
             degree, MAX_WINDING_DEGREE))
-    if len(AN) - 1 >= degree:
-        raise AssertionError("deg A Nd >= deg c")
-    c1 = peval(LD, Fraction(1)) + peval(AN, Fraction(1))
-    cm1 = (-1) ** n * peval(LD, Fraction(-1)) + peval(AN, Fraction(-1))
+    old = iv.prec
+    try:
+        for bits in (128, 256, 512, 1024, 2048, 4096):
+            LD, AN = winding_parts(n, k, Nd, H.num, H.den, T, bits)
+            if len(LD) - 1 + n != degree or len(AN) - 1 >= degree:
+                raise AssertionError("the parts of c do not have the degrees of c")
+            if not isinstance(Nd, tuple):
+                break
+            ends = [(1 if e == 1 else (-1) ** n) * sum(x * e ** i for i, x in enumerate(LD)) + sum(x * e ** i for i, x in enumerate(AN))
+                    for e in (1, -1)]
+            if all(not (v.a <= 0 <= v.b) for v in ends):
+                break
+        else:
+            raise TooLarge("the loop is too close to its boundary: c(1) or c(-1) not separated from 0 at 4096 bits")
+    finally:
+        iv.prec = old
+    c1 = cm1 = 1
+    if not isinstance(Nd, tuple):
+        c1 = peval(LD, Fraction(1)) + peval(AN, Fraction(1))
+        cm1 = (-1) ** n * peval(LD, Fraction(-1)) + peval(AN, Fraction(-1))
     if c1 == 0 or cm1 == 0:
         ok, why = False, "c(%d) = 0: a root on the unit circle" % (1 if c1 == 0 else -1)
     else:
@@ -1756,7 +1818,7 @@ def check_stability(c):
         raise Malformed("evidence.argument_principle: not true")
     if "argument_principle" in evidence and "charpoly" in evidence:
         raise Malformed("evidence: both charpoly and argument_principle")
-    T, n, params, k, Nd = loop_device(model, one_pole="argument_principle" not in evidence)
+    T, n, params, k, Nd = loop_device(model, one_pole=True)
     if claim.get("status") not in ("exact", "certified"):
         raise Malformed("claim.status: missing or neither \"exact\" nor \"certified\"")
     if not isinstance(claim.get("stable"), bool):

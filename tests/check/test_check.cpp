@@ -636,9 +636,20 @@ TEST(StabilityCheck, ArgumentPrincipleByHand) {
   auto flag = integrator_cert("31/1000", true);
   flag["evidence"]["argument_principle"] = false;
   EXPECT_THROW(check_certificate(flag), InputError);
-  auto pole = integrator_cert("31/1000", true);
-  pole["model"]["plant"] = "1/(s + 1)";  // a pole off s = 0: its certificate has no evidence
-  EXPECT_THROW(check_certificate(pole), InputError);
+  // poles off s = 0 too (e^{pT}, e^{A_c T} in balls): the same verdicts as the resultant (a
+  // mass-damper) and interval Schur-Cohn (a spring) paths, on both sides of their boundaries
+  for (const std::string plant : {"1/(s + 1)", "1/(s*(s + 1/2))", "1/(s^2 + s + 4)", "1/(s^2 - 1/4)"})
+    for (const std::string K : {"1/100", "1/20", "1/5", "2/3", "3/2"}) {
+      auto winding = integrator_cert(K, true, 12);
+      winding["model"]["plant"] = plant;
+      nlohmann::json other = winding;
+      other["evidence"] = nlohmann::json::object();
+      const bool st = check_certificate(other).verified;  // the no-evidence paths' verdict
+      if (!st) other["claim"]["stable"] = false, winding["claim"]["stable"] = false;
+      EXPECT_TRUE(check_certificate(other).verified) << plant << " K = " << K;
+      const auto v = check_certificate(winding);
+      EXPECT_TRUE(v.verified) << plant << " K = " << K << ": " << v.reason;
+    }
 }
 
 TEST(StabilityCheck, RefusesWhatItCannotModel) {

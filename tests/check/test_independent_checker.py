@@ -79,9 +79,20 @@ class Stability(unittest.TestCase):
         c = cert("31/1000", True)
         c["evidence"]["argument_principle"] = False
         self.assertEqual(hc.check(c)[0], 2)
-        c = cert("31/1000", True)
-        c["model"]["plant"] = "1/(s + 1)"
-        self.assertEqual(hc.check(c)[0], 2)
+        # poles off s = 0 (E, Phi in intervals): the verdicts of the no-evidence paths (resultant, interval Schur-Cohn)
+        verdicts = []
+        for plant in ("1/(s + 1)", "1/(s*(s + 1/2))", "1/(s^2 + s + 4)", "1/(s^2 - 1/4)"):
+            for K in ("1/100", "1/5", "3/2"):
+                w = cert(K, True)
+                w["model"]["plant"], w["model"]["delay"] = plant, 12
+                other = dict(w, evidence={})
+                st = hc.check(other)[0] == 0
+                for c in (w, other):
+                    c["claim"] = dict(c["claim"], stable=st)
+                    self.assertEqual(hc.check(c)[0], 0, (plant, K, c["evidence"]))
+                verdicts.append(st)
+        self.assertIn(True, verdicts)
+        self.assertIn(False, verdicts)
 
     def test_interval_schur_cohn(self):
         Iv = hc.Iv

@@ -6,6 +6,12 @@ the first crossing is at theta = pi/(2n + 1); Jury's delayed integrator). For ea
 hapstab's verdict must be the closed form's, and both checkers (`hapstab check`,
 checks/hapstab_check.py) must verify the certificate it writes; the claim flipped must be refuted.
 
+Then devices with poles off s = 0 beyond the checkers' degree 150 (a mass-damper 1/(m s^2 + b s), a
+spring 1/(m s^2 + b s + k): e^{pT}, e^{A_c T} in balls) under K + B (z - 1)/(T z), n = 151-500, against
+a double-precision reference built here: scipy's zero-order hold (cont2discrete) and numpy's roots
+of c(z) = z^n z den_d(z) + ((K + B/T) z - B/T) num_d(z); compared where |1 - rho| > 1e-8 (a
+degree-500 companion matrix's eigenvalues near the circle are good to ~1e-12).
+
   long_delay_certificate.py HAPSTAB [--cases N] [--seed S]
 exit 0 when every case agrees, else 1.
 """
@@ -35,6 +41,48 @@ def run(exe, n, K, tmp):
     r = subprocess.run([exe, "stability", "--plant", "1/s", "--H", "K", "--set", "K=%s" % K, "--T", "1", "--delay", str(n),
                         "--certificate", cert], capture_output=True, text=True, timeout=300)
     return r, cert
+
+
+DEVICES = [("1/(m*s^2 + b*s)", {"m": "1", "b": "1"}, "1/100", "1/10", 200),      # a mass-damper, stable
+            ("1/(m*s^2 + b*s + k)", {"m": "1", "b": "1", "k": "1000"}, "3", "1/2", 300)]  # a spring
+
+
+def reference_rho(plant, sets, K, B, n, T=Fraction(1, 1000)):
+    """max |root| of c(z), the sampled loop built in double here (scipy ZOH, numpy roots)."""
+    import numpy as np
+    import scipy.signal as sg
+    m, b, k = (float(Fraction(sets.get(x, "0"))) for x in ("m", "b", "k"))
+    num, den, _ = sg.cont2discrete(([1.0], [m, b, k]), float(T), method="zoh")
+    num = np.trim_zeros(np.atleast_1d(np.squeeze(num)), "f")
+    A = [float(Fraction(K) + Fraction(B) / T), -float(Fraction(B) / T)]
+    c = np.polyadd(np.polymul(np.concatenate([[1.0], np.zeros(n + 1)]), den), np.polymul(A, num))
+    return float(max(abs(np.roots(c))))
+
+
+def device_case(exe, plant, sets, K, B, n, tmp):
+    rho = reference_rho(plant, sets, K, B, n)
+    what = "%s %s K=%s B=%s n=%d (rho %.10f by the double reference)" % (plant, sets, K, B, n, rho)
+    if abs(1 - rho) <= 1e-8:
+        return None, what + ": too close for the double reference, not compared"
+    cert = os.path.join(tmp, "d.json")
+    if os.path.exists(cert):
+        os.remove(cert)
+    args = [exe, "stability", "--plant", plant, "--H", "K + B*(z-1)/(T*z)", "--set", "K=" + K, "--set", "B=" + B,
+            "--T", "1/1000", "--delay", str(n), "--certificate", cert]
+    for name, v in sets.items():
+        args += ["--set", "%s=%s" % (name, v)]
+    r = subprocess.run(args, capture_output=True, text=True, timeout=300)
+    stable = rho < 1
+    if r.returncode != (0 if stable else 1) or not os.path.exists(cert):
+        return False, what + ": hapstab exits %d: %s" % (r.returncode, (r.stdout + r.stderr).strip()[:200])
+    c = json.load(open(cert))
+    if c["evidence"] != {"argument_principle": True} or c["claim"]["stable"] != stable:
+        return False, what + ": certificate claims %s with evidence %s" % (c["claim"]["stable"], c["evidence"])
+    for checker in ([exe, "check", cert], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), cert]):
+        v = subprocess.run(checker, capture_output=True, text=True, timeout=600)
+        if v.returncode != 0:
+            return False, what + ": %s exits %d: %s" % (os.path.basename(checker[1]), v.returncode, (v.stdout + v.stderr).strip()[:200])
+    return True, what + ": %s, verified by both" % ("stable" if stable else "NOT stable")
 
 
 def main(argv):
@@ -73,7 +121,21 @@ def main(argv):
                 print(("ok   " if ok else "MISS ") + what + (": " + why if why else ""))
                 sys.stdout.flush()
                 bad += not ok
-    print("long_delay_certificate: %d loops, %d disagree" % (2 * len(todo), bad))
+        devices = list(DEVICES)
+        for _ in range(cases):
+            plant, sets = rng.choice([("1/(m*s^2 + b*s)", {"m": rng.choice(["1/2", "1", "3"]), "b": rng.choice(["1/5", "1", "2"])}),
+                                      ("1/(m*s^2 + b*s + k)", {"m": rng.choice(["1/2", "1"]), "b": rng.choice(["0", "1", "5"]),
+                                                               "k": rng.choice(["100", "1000", "-50"])})])
+            devices.append((plant, sets, rng.choice(["1/100", "1/10", "1", "5", "50"]), rng.choice(["0", "1/10", "1/2"]),
+                            rng.randint(151, 500)))
+        compared = 0
+        for case in devices:
+            ok, line = device_case(exe, *case, tmp)
+            print(("skip " if ok is None else "ok   " if ok else "MISS ") + line)
+            sys.stdout.flush()
+            compared += ok is not None
+            bad += ok is False
+    print("long_delay_certificate: %d integrator loops, %d device loops compared, %d disagree" % (2 * len(todo), compared, bad))
     return 1 if bad else 0
 
 

@@ -43,11 +43,13 @@ LoopCharpoly characteristic(const nlohmann::json& model, bool argument_principle
   if (H.num().degree() > H.den().degree() + d.n) throw InputError("model.H: z^-n H(z) is not causal");
   const bool off_zero = d.pole || d.spring;
   if (argument_principle) {
-    if (off_zero) throw InputError("evidence.argument_principle: the device has a pole off s = 0 (its certificate has no evidence)");
     if (d.n > max_winding_delay) throw InputError("model.delay: above this checker's limit of " + std::to_string(max_winding_delay));
     return {P(rational(1)), std::nullopt, std::nullopt,
-            "degree " + std::to_string(d.k) + " device, delay " + std::to_string(d.n) + ", never expanded", std::nullopt,
-            H.num(), H.den(), d};
+            "degree " + std::to_string(d.k + extra) + " device" +
+                (d.pole ? ", pole s = " + d.pole->str() + " (E = e^{pT} in balls)"
+                        : d.spring ? ", two poles off s = 0 (e^{A_c T} in balls)" : "") +
+                ", delay " + std::to_string(d.n) + ", never expanded",
+            std::nullopt, H.num(), H.den(), d};
   }
   if (H.den().degree() + d.n + d.k + extra > (off_zero ? max_family_degree : max_charpoly_degree))
     throw InputError("model: the characteristic polynomial has degree " + std::to_string(H.den().degree() + d.n + d.k + extra) +
@@ -111,10 +113,21 @@ BallPoly operator+(const BallPoly& a, const BallPoly& b) {
   return r;
 }
 
-/// c(z) of the loop with a spring (loop_model.hpp) at `bits`: Phi = e^{A_c T} by arb_mat_exp
-/// (scaling and squaring with a bounded Taylor remainder), then the products in ball arithmetic;
-/// every coefficient holds the exact one.
-BallPoly spring_charpoly(const detail::LoopDevice& d, const P& A, const P& L, long bits, flint::Ball& trace) {
+/// c(z) = z^n P1(z) + P0(z), P1 and P0 in ball coefficients (z^n kept apart: the argument
+/// principle never expands it); every coefficient holds the exact one.
+struct Parts {
+  BallPoly P1, P0;
+};
+
+BallPoly shifted(const BallPoly& p, long n) {  // z^n p
+  BallPoly r(static_cast<size_t>(n), flint::Ball(0L));
+  r.insert(r.end(), p.begin(), p.end());
+  return r;
+}
+
+/// The spring's parts (loop_model.hpp) at `bits`: Phi = e^{A_c T} by arb_mat_exp (scaling and
+/// squaring with a bounded Taylor remainder), P1 = L (z - 1)^k Delta, P0 = A (Ndp Delta + (z - 1)^k Nq).
+Parts spring_parts(const detail::LoopDevice& d, const P& A, const P& L, long bits, flint::Ball& trace) {
   flint::BallPrecision scope(bits);
   const auto [a1, a0] = *d.spring;
   arb_mat_t M, E;
@@ -134,10 +147,34 @@ BallPoly spring_charpoly(const detail::LoopDevice& d, const P& A, const P& L, lo
   const flint::Ball R0(d.R0), R1(d.R1);
   const BallPoly Delta{det, -trace, flint::Ball(1L)};
   const BallPoly Nq{R1 * phi[0][0] - R0 * phi[0][1] - R1 * det, R0 * phi[0][1] - R1 + R1 * phi[1][1]};
-  std::vector<rational> zn(static_cast<size_t>(d.n) + 1, rational(0));
-  zn.back() = 1;
   const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
-  return balls(P(zn) * L * Dk) * Delta + balls(A) * (balls(d.Ndp) * Delta + balls(Dk) * Nq);
+  return {balls(L * Dk) * Delta, balls(A) * (balls(d.Ndp) * Delta + balls(Dk) * Nq)};
+}
+
+/// The mass-damper's parts (loop_model.hpp) at `bits`, E = e^{pT} by arb_exp:
+/// P1 = L (z - 1)^k (z - E), P0 = A (Ndp (z - E) + r (E - 1)(z - 1)^k).
+Parts pole_parts(const detail::LoopDevice& d, const P& A, const P& L, long bits) {
+  flint::BallPrecision scope(bits);
+  flint::Ball E(*d.pole * d.T);
+  arb_exp(E.get(), E.get(), bits);
+  const P Dk = P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
+  const BallPoly zE{-E, flint::Ball(1L)};
+  const BallPoly rE1{flint::Ball(d.r) * (E - flint::Ball(1L))};
+  return {balls(L * Dk) * zE, balls(A) * (balls(d.Ndp) * zE + balls(Dk) * rE1)};
+}
+
+/// Every pole at s = 0: exact parts P1 = L (z - 1)^k, P0 = A Nd.
+std::pair<P, P> exact_parts(const detail::LoopDevice& d, const P& A, const P& L) {
+  return {L * P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k)), A * d.Nd};
+}
+
+/// The parts of the loop at `bits`, whatever the device (every pole at s = 0, a mass-damper, a spring).
+Parts loop_parts(const detail::LoopDevice& d, const P& A, const P& L, long bits) {
+  flint::Ball trace;
+  if (d.spring) return spring_parts(d, A, L, bits, trace);
+  if (d.pole) return pole_parts(d, A, L, bits);
+  const auto [P1, P0] = exact_parts(d, A, L);
+  return {balls(P1), balls(P0)};
 }
 
 /// schur_cohn.hpp's test for every polynomial whose coefficients lie in the balls `a` (the
@@ -165,7 +202,8 @@ SchurCohn decide_spring(const detail::LoopDevice& d, const P& A, const P& L, std
   for (long bits = 128; bits <= 8192; bits *= 2) {
     flint::BallPrecision scope(bits);
     flint::Ball trace;
-    const BallPoly c = spring_charpoly(d, A, L, bits, trace);
+    const Parts parts = spring_parts(d, A, L, bits, trace);
+    const BallPoly c = shifted(parts.P1, d.n) + parts.P0;
     if (c.back().contains_zero()) throw InputError("model: the leading coefficient's enclosure holds 0 (checker defect)");
     if (auto sc = schur_cohn_balls(c)) {
       const Enclosure<rational> t = trace.bounds();
@@ -178,44 +216,69 @@ SchurCohn decide_spring(const detail::LoopDevice& d, const P& A, const P& L, std
                    "e^{A_c T}'s enclosure at 8192 bits)");
 }
 
-flint::CBall horner(const P& p, const flint::CBall& z) {
+flint::CBall value_at(const BallPoly& p, const flint::CBall& z) {
   flint::CBall v{flint::Ball(0L), flint::Ball(0L)};
-  for (int i = p.degree(); i >= 0; --i) v = v * z + flint::CBall{flint::Ball(p.coeff(i)), flint::Ball(0L)};
+  for (size_t i = p.size(); i-- > 0;) v = v * z + flint::CBall{p[i], flint::Ball(0L)};
+  return v;
+}
+flint::Ball value_at(const BallPoly& p, const flint::Ball& x) {
+  flint::Ball v(0L);
+  for (size_t i = p.size(); i-- > 0;) v = v * x + p[i];
   return v;
 }
 
-/// c(e^{j pi t}) = e^{j pi n t} LD(z) + AN(z) for every t in the ball `t` (a complex rectangle).
-flint::CBall on_circle(const P& LD, const P& AN, long n, const flint::Ball& t) {
+/// c(e^{j pi t}) = e^{j pi n t} P1(z) + P0(z) for every t in the ball `t` (a complex rectangle).
+flint::CBall on_circle(const Parts& c, long n, const flint::Ball& t) {
   flint::CBall z, zn;
   arb_sin_cos_pi(z.im.get(), z.re.get(), t.get(), flint::ball_prec);
   const flint::Ball nt = t * n;
   arb_sin_cos_pi(zn.im.get(), zn.re.get(), nt.get(), flint::ball_prec);
-  return zn * horner(LD, z) + horner(AN, z);
+  return zn * value_at(c.P1, z) + value_at(c.P0, z);
 }
 
-/// Schur stability of c(z) = z^n LD(z) + AN(z), LD = L (z - 1)^k, AN = A Nd (loop_model.hpp), with
-/// z^n never expanded: the argument principle on the upper half circle z = e^{j pi t}, t in [0, 1].
-/// c has real coefficients, so its roots inside |z| < 1 number m = (the change of arg c over t in
-/// [0, 1])/pi when c(1), c(-1) != 0 (checked exactly; = 0: a root on the circle, NOT stable).
+/// Schur stability of c(z) = z^n P1(z) + P0(z) (loop_parts: every pole at s = 0, a mass-damper or a
+/// spring), with z^n never expanded: the argument principle on the upper half circle z = e^{j pi t},
+/// t in [0, 1]. c has real coefficients, so its roots inside |z| < 1 number m = (the change of arg c
+/// over t in [0, 1])/pi when c(1), c(-1) != 0 (exactly with every pole at s = 0, where = 0 is a root
+/// on the circle: NOT stable; in balls otherwise, at 128 to 8192 bits).
 /// The interval is cut into arcs, each bisected until c's rectangle over it (ball arithmetic)
 /// excludes 0; then it lies in one open half-plane Re > 0, Im > 0, Re < 0 or Im < 0 (h = 0, 1, 2, 3
 /// quarter turns), where arg c stays within a quarter turn of h pi/2. Adjacent arcs share a point,
 /// so their half-planes are not opposite, and the unwrapped arg follows U += +-1 or 0 quarter turns
 /// per arc (exact integers, no arg computed); the first and last arcs hold the real c(1), c(-1), so
 /// their half-planes are Re ones and m = (U_last - U_first)/2. Stable iff m = deg c. An arc
-/// narrower than 2^-100 without a decision: too close to the boundary (InputError).
+/// narrower than 2^-100 without a decision: too close to the boundary (InputError). The
+/// coefficients' balls (of e^{pT}, e^{A_c T}) are part of every rectangle: the count holds for the
+/// true c.
 SchurCohn decide_winding(const detail::LoopDevice& d, const P& A, const P& L, std::string& how) {
-  const P LD = L * P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k));
-  const P AN = A * d.Nd;
-  const long degree = d.n + LD.degree();
-  if (AN.degree() >= degree) throw InputError("model: A Nd has degree >= n + deg L + k (checker defect: z^-n H is causal)");
-  const rational c1 = LD(rational(1)) + AN(rational(1));
-  const rational cm1 = (d.n % 2 ? -LD(rational(-1)) : LD(rational(-1))) + AN(rational(-1));
-  if (c1 == 0 || cm1 == 0) {
-    how = "c(" + std::string(c1 == 0 ? "1" : "-1") + ") = 0 exactly:";
-    return {false, "a root on the unit circle at z = " + std::string(c1 == 0 ? "1" : "-1")};
+  const bool exact = !d.pole && !d.spring;
+  long bits = 128;
+  Parts parts = loop_parts(d, A, L, bits);
+  const long degree = d.n + static_cast<long>(parts.P1.size()) - 1;
+  if (static_cast<long>(parts.P0.size()) - 1 >= degree)
+    throw InputError("model: the part of c without z^n has degree >= deg c (checker defect: z^-n H is causal)");
+  for (const double end : {1.0, -1.0}) {
+    const bool odd = end < 0 && d.n % 2;
+    if (exact) {
+      const auto [P1, P0] = exact_parts(d, A, L);
+      const rational x(static_cast<long>(end));
+      if ((odd ? -P1(x) : P1(x)) + P0(x) == 0) {
+        how = "c(" + std::string(end > 0 ? "1" : "-1") + ") = 0 exactly:";
+        return {false, "a root on the unit circle at z = " + std::string(end > 0 ? "1" : "-1")};
+      }
+      continue;
+    }
+    for (;;) {  // transcendental coefficients: c(+-1) != 0 shown in balls
+      flint::BallPrecision scope(bits);
+      const flint::Ball x(static_cast<long>(end)), p1 = value_at(parts.P1, x);
+      if (!((odd ? -p1 : p1) + value_at(parts.P0, x)).contains_zero()) break;
+      if ((bits *= 2) > 8192)
+        throw InputError("model: the loop is too close to its stability boundary for this checker (c(" +
+                         std::string(end > 0 ? "1" : "-1") + ") not separated from 0 at 8192 bits)");
+      parts = loop_parts(d, A, L, bits);
+    }
   }
-  flint::BallPrecision scope(128);
+  flint::BallPrecision scope(bits);
   const long arcs0 = 4 * (degree + 16);
   rational min_width(1);
   for (int i = 0; i < 100; ++i) min_width /= 2;
@@ -226,7 +289,7 @@ SchurCohn decide_winding(const detail::LoopDevice& d, const P& A, const P& L, st
   while (!todo.empty()) {
     const Arc arc = todo.back();
     todo.pop_back();
-    const flint::CBall v = on_circle(LD, AN, d.n, flint::Ball::hull(arc.a, arc.b));
+    const flint::CBall v = on_circle(parts, d.n, flint::Ball::hull(arc.a, arc.b));
     long h = -1;
     if (v.re.positive()) h = 0;
     else if (v.im.positive()) h = 1;
@@ -253,7 +316,7 @@ SchurCohn decide_winding(const detail::LoopDevice& d, const P& A, const P& L, st
   if (first % 2 || last % 2 || turns % 2) throw InputError("model: the ends of the half circle are not real (checker defect)");
   const long inside = turns / 2;
   how = "the argument principle on z = e^{j pi t}, t in [0, 1] (" + std::to_string(decided) +
-        " arcs, each with c's rectangle in one half-plane; Arb, 128 bits): " + std::to_string(inside) + " of the " +
+        " arcs, each with c's rectangle in one half-plane; Arb, " + std::to_string(bits) + " bits): " + std::to_string(inside) + " of the " +
         std::to_string(degree) + " roots inside |z| < 1;";
   if (inside == degree) return {true, "every root inside"};
   return {false, std::to_string(degree - inside) + " root(s) on or outside the unit circle"};
@@ -298,7 +361,7 @@ Verdict check_stability(const nlohmann::json& cert) {
       throw InputError("claim.status: decided by the argument principle, the verdict is \"certified\"");
     std::string how;
     sc = decide_winding(*m.winding, m.A, m.L, how);
-    what = "c(z) = z^n L (z - 1)^k + A Nd (" + m.text + ") rebuilt from the model; " + how;
+    what = "c(z) = z^n P1(z) + P0(z) (" + m.text + ") rebuilt from the model; " + how;
   } else if (m.spring) {  // transcendental Phi: the checker derives c(z) in balls itself
     if (evidence.contains("charpoly"))
       throw InputError("evidence.charpoly: the device has poles off s = 0, so the polynomial's coefficients are not rational");

@@ -29,6 +29,14 @@
 // for every polynomial in it (each step's balls hold the exact transform of each point), else more
 // bits. A decided run holds for every polynomial in the box, the true one among them; a root on
 // the circle is never decided (exit 2, "too close to its boundary").
+// evidence.argument_principle (long delays; the producer writes it beyond degree 2000, 150 with a
+// pole off s = 0): c(z) = z^n P1(z) + P0(z) with z^n never expanded (P1, P0 exact with every pole at
+// s = 0, in balls holding E or Phi otherwise). Theorem (argument principle): with no root on the
+// unit circle, the roots inside number the winding of c(e^{j theta}) around 0, i.e. (the change of
+// arg c over theta in [0, pi])/pi for real coefficients. Verified: c(+-1) != 0 (exactly, or in
+// balls), then [0, pi] cut into arcs whose ball image excludes 0, each in one open half-plane of the
+// four Re > 0, Im > 0, Re < 0, Im < 0; the arg is followed in whole quarter turns between adjacent
+// arcs (never opposite half-planes: they share a point). Stable iff the count is deg c.
 // Hypotheses verified: T > 0, n an integer in [0, 100000], the device strictly proper with every
 // pole at s = 0, one simple rational pole off it or two poles off it (else the certificate is
 // refused as beyond this checker: exit 2), z^-n H causal, degree of c <= 2000 (150 with poles off
