@@ -32,6 +32,7 @@
 #include <cmath>
 #include <complex>
 #include <sstream>
+#include <tuple>
 
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/lti/realization.hpp"
@@ -151,6 +152,65 @@ std::pair<rational, rational> circle_point(double theta) {
   return {(1 - t * t) / den, 2 * t / den};
 }
 
+/// phi(X_k) = p^* Delta_D X_k p + Re(u^* X_k V-hat(z2) u) + Re(w^* X_k E-hat(z1) w), w = p + V-hat(z2) u,
+/// in rational arithmetic at cw's rational points: true (cw's p, u, phi set) when every one is <= 0
+/// and [p; V-hat(z2) u] != 0; else false and `failed` says why.
+bool exact_phi(const StateSpace<rational>& Eh, const StateSpace<rational>& Vh, const MatQ& DD, const std::vector<MatQ>& Xk,
+               const CVec& p, const CVec& u, CouplingWitness& cw, std::string& failed) {
+  CVec q, w, e;
+  try {
+    q = response(Vh, cw.z2_re, cw.z2_im, u);
+    w = {p.re + q.re, p.im + q.im};
+    e = response(Eh, cw.z1_re, cw.z1_im, w);
+  } catch (const InputError&) {  // the rational point is an eigenvalue of A (a pole on the circle)
+    failed = ": the rational points of the circle hit a pole";
+    return false;
+  }
+  // (iii) is strict only at [p; q] != 0: at p = 0 with u in the kernel of V-hat(z2) every term
+  // of phi vanishes, and phi = 0 <= 0 would "prove" any program infeasible
+  if (is_zero(p) && is_zero(q)) {
+    failed = ": the rounded direction [p; V-hat(z2) u] is 0, which proves nothing";
+    return false;
+  }
+  std::vector<rational> phis;
+  for (size_t k = 0; k < Xk.size(); ++k) {
+    const MatQ DXk = exact_product(DD, Xk[k]);
+    const MatQ DXs = (DXk + MatQ(DXk.transpose())) / 2;
+    const rational phi = re_form(p, DXs, p) + re_form(u, Xk[k], q) + re_form(w, Xk[k], e);
+    if (phi > 0) {
+      failed = ": it did not survive the exact evaluation at rational points and directions (phi(X_" + std::to_string(k + 1) +
+               ") = " + numeric_decimal(to_real<double>(phi)) + " > 0)";
+      return false;
+    }
+    phis.push_back(phi);
+  }
+  cw.p = complex_q(p);
+  cw.u = complex_q(u);
+  cw.phi = std::move(phis);
+  return true;
+}
+
+/// The angles in (0, pi] of the eigenvalues of A within 1/2 of the unit circle (its poles near the
+/// circle: narrow resonances), each with 1/2, 1, 2 and 4 of its width |1 - |lambda|| either side.
+std::vector<double> resonance_angles(const MatQ& A) {
+  std::vector<double> th;
+  if (A.rows() == 0) return th;
+  const Eigen::MatrixXd Ad = to_double(A);
+  if (!Ad.allFinite()) return th;
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(Ad, false);
+  if (es.info() != Eigen::Success) return th;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    const std::complex<double> l = es.eigenvalues()(i);
+    const double r = std::abs(l), a = std::abs(std::arg(l));
+    if (!(std::abs(1 - r) < 0.5) || !(a > 1e-9)) continue;
+    const double w = std::max(std::abs(1 - r), 1e-12);
+    for (const double k : {0.0, 0.5, 1.0, 2.0, 4.0})
+      for (const double sgn : {-1.0, 1.0})
+        if (a + sgn * k * w > 0 && a + sgn * k * w <= M_PI) th.push_back(a + sgn * k * w);
+  }
+  return th;
+}
+
 }  // namespace
 
 std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialConditions& fc,
@@ -203,34 +263,43 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
   for (int k = 1; k <= 24; ++k) t1.push_back(M_PI / K * std::pow(10.0, -k / 8.0));
   for (int k = -K + 1; k <= K; ++k) t2.push_back(M_PI * k / K);
   for (int k = 1; k <= 24; ++k) t2.push_back(M_PI / K * std::pow(10.0, -k / 8.0)), t2.push_back(-t2.back());
+  // narrow resonances fall between the grid's points (issue 46: a pole 1e-4 from the circle): the
+  // angles of the poles of E-hat and V-hat near the circle, and 1/2 .. 4 of their widths either side
+  for (const double th : resonance_angles(Eh.A)) t1.push_back(th);
+  for (const double th : resonance_angles(Vh.A)) t2.push_back(th), t2.push_back(-th);
   std::vector<Eigen::MatrixXcd> H1(t1.size());
   for (size_t i = 0; i < t1.size(); ++i) H1[i] = env(t1[i]);
   std::vector<std::pair<Eigen::MatrixXcd, Eigen::MatrixXcd>> V2(t2.size());
   for (size_t j = 0; j < t2.size(); ++j) V2[j] = cpl(t2[j]);
-  double best = INFINITY, b1 = t1[0], b2 = t2[0];
+  std::vector<std::tuple<double, double, double>> grid;  // (lambda_min, theta1, theta2)
   for (size_t i = 0; i < t1.size(); ++i)
-    for (size_t j = 0; j < t2.size(); ++j) {
-      const double v = form(H1[i], V2[j].first, V2[j].second).first;
-      if (v < best) best = v, b1 = t1[i], b2 = t2[j];
-    }
-  // refine: golden section in each coordinate in turn
+    for (size_t j = 0; j < t2.size(); ++j) grid.emplace_back(form(H1[i], V2[j].first, V2[j].second).first, t1[i], t2[j]);
+  const size_t starts = std::min<size_t>(4, grid.size());
+  std::partial_sort(grid.begin(), grid.begin() + static_cast<std::ptrdiff_t>(starts), grid.end());
+  // refine the 4 least pairs (a narrow dip's best grid point need not be the global one): golden
+  // section in each coordinate in turn, within a grid step
   auto value = [&](double a, double b) {
     const auto c = cpl(b);
     return form(env(a), c.first, c.second).first;
   };
-  for (int round = 0; round < 3; ++round) {
-    for (int coord = 0; coord < 2; ++coord) {
-      const double h = M_PI / K;
-      double lo = coord ? b2 - h : std::max(1e-12, b1 - h), hi = coord ? b2 + h : std::min(M_PI, b1 + h);
-      for (int it = 0; it < 30; ++it) {
-        const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
-        const double fa = coord ? value(b1, a) : value(a, b2), fb = coord ? value(b1, b) : value(b, b2);
-        if (fa < fb) hi = b;
-        else lo = a;
+  double best = INFINITY, b1 = t1[0], b2 = t2[0];
+  for (size_t s = 0; s < starts; ++s) {
+    auto [v0, s1, s2] = grid[s];
+    for (int round = 0; round < 3; ++round) {
+      for (int coord = 0; coord < 2; ++coord) {
+        const double h = M_PI / K;
+        double lo = coord ? s2 - h : std::max(1e-12, s1 - h), hi = coord ? s2 + h : std::min(M_PI, s1 + h);
+        for (int it = 0; it < 30; ++it) {
+          const double a = hi - 0.618033988749895 * (hi - lo), b = lo + 0.618033988749895 * (hi - lo);
+          const double fa = coord ? value(s1, a) : value(a, s2), fb = coord ? value(s1, b) : value(b, s2);
+          if (fa < fb) hi = b;
+          else lo = a;
+        }
+        const double c = 0.5 * (lo + hi), v = coord ? value(s1, c) : value(c, s2);
+        if (v < v0) v0 = v, (coord ? s2 : s1) = c;
       }
-      const double c = 0.5 * (lo + hi), v = coord ? value(b1, c) : value(c, b2);
-      if (v < best) best = v, (coord ? b2 : b1) = c;
     }
+    if (v0 < best) best = v0, b1 = s1, b2 = s2;
   }
   std::ostringstream o;
   o << "frequency-domain witness of Theorem 4's program: sweep of lambda_min of phi's Hermitian form over "
@@ -252,36 +321,25 @@ std::optional<Verdict> detail::theorem4_witness(const Problem& pb, const FacialC
   }
   const auto [z1a, z1b] = circle_point(b1);
   const auto [z2a, z2b] = circle_point(b2);
-  CVec q, w, e;
-  try {
-    q = response(Vh, z2a, z2b, u);
-    w = {p.re + q.re, p.im + q.im};
-    e = response(Eh, z1a, z1b, w);
-  } catch (const InputError&) {  // the rational point is an eigenvalue of A (a pole on the circle)
-    tried = o.str() + ": the rational points of the circle hit a pole";
-    return std::nullopt;
+  CouplingWitness cw{b1, b2, z1a, z1b, z2a, z2b, {}, {}, diagonals(*Xk), {}};
+  std::string failed;
+  bool found = exact_phi(Eh, Vh, DD, *Xk, p, u, cw, failed);
+  // independent parts (a direction X_k per part): the sweep's eigenvector lives on one part, and
+  // its rounding leaves ~1e-17 on the others, whose phi(X_k) is then ~1e-35 > 0; the same
+  // direction restricted to one direction's support (zero elsewhere) is tried
+  for (size_t k = 0; !found && Xk->size() > 1 && k < Xk->size(); ++k) {
+    CVec pk = p, uk = u;
+    for (Eigen::Index i = 0; i < m; ++i)
+      if ((*Xk)[k](i, i) == 0) pk.re(i, 0) = pk.im(i, 0) = uk.re(i, 0) = uk.im(i, 0) = 0;
+    std::string ignored;
+    found = exact_phi(Eh, Vh, DD, *Xk, pk, uk, cw, ignored);
   }
-  // (iii) is strict only at [p; q] != 0: at p = 0 with u in the kernel of V-hat(z2) every term
-  // of phi vanishes, and phi = 0 <= 0 would "prove" any program infeasible
-  if (is_zero(p) && is_zero(q)) {
-    tried = o.str() + ": the rounded direction [p; V-hat(z2) u] is 0, which proves nothing";
+  if (!found) {
+    tried = o.str() + failed;
     return std::nullopt;
   }
   std::ostringstream vals;
-  CouplingWitness cw{b1, b2, z1a, z1b, z2a, z2b, complex_q(p), complex_q(u), diagonals(*Xk), {}};
-  for (size_t k = 0; k < Xk->size(); ++k) {
-    const MatQ& Xq = (*Xk)[k];
-    const MatQ DXk = exact_product(DD, Xq);
-    const MatQ DXs = (DXk + MatQ(DXk.transpose())) / 2;
-    const rational phi = re_form(p, DXs, p) + re_form(u, Xq, q) + re_form(w, Xq, e);
-    if (phi > 0) {
-      tried = o.str() + ": it did not survive the exact evaluation at rational points and directions (phi(X_" +
-              std::to_string(k + 1) + ") = " + numeric_decimal(to_real<double>(phi)) + " > 0)";
-      return std::nullopt;
-    }
-    cw.phi.push_back(phi);
-    vals << (k ? ", " : "") << numeric_decimal(to_real<double>(phi));
-  }
+  for (size_t k = 0; k < cw.phi.size(); ++k) vals << (k ? ", " : "") << numeric_decimal(to_real<double>(cw.phi[k]));
   if (out) *out = std::move(cw);
   o << "; exact: at the rational points z1 = (" << to_real<double>(z1a) << ", " << to_real<double>(z1b)
     << " j), z2 = (" << to_real<double>(z2a) << ", " << to_real<double>(z2b)
