@@ -1775,6 +1775,11 @@ def check_stability_winding(model, claim, T, n, params, k, Nd):
     if degree > MAX_WINDING_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d for the argument principle" % (
             degree, MAX_WINDING_DEGREE))
+    if isinstance(Nd, tuple) and dc_zero(k, Nd, H.num, H.den):
+        why = "c(1) = 0 exactly (1 - e^(pT) or det(I - Phi) times a rational factor that is 0): a root on the unit circle"
+        if claim["stable"]:
+            return False, "claim: stable, but " + why
+        return True, "NOT stable (degree %d, delay %d never expanded; %s)" % (degree, n, why)
     old = iv.prec
     try:
         for bits in (128, 256, 512, 1024, 2048, 4096):
@@ -1851,6 +1856,17 @@ def check_stability(c):
     return True, "%s (degree %d; %s)" % ("stable" if ok else "NOT stable", len(cpoly) - 1, why)
 
 
+def dc_zero(k, Nd, A, L):
+    """With a device pole off s = 0 (Nd a pole_device or spring_device tuple): c(1) = 0 exactly? c(1)
+    = F g, F = 1 - E or det(I - Phi) (no e^(pT) is 1, so F != 0) and g rational: k = 0, g = L(1) + A(1)
+    (Ndp(1) - rho) with rho = r or R1 (N_q(1) = -R1 Delta(1)); k >= 1, g = A(1) Ndp(1)."""
+    one = Fraction(1)
+    Ndp, rho = (Nd[3], Nd[2][1]) if Nd[0] == "spring" else (Nd[2], Nd[1])
+    if k > 0:
+        return peval(A, one) * peval(Ndp, one) == 0
+    return peval(L, one) + peval(A, one) * (peval(Ndp, one) - rho) == 0
+
+
 def check_stability_spring(model, claim, evidence, T, n, params, k, spring):
     """A device with two poles off s = 0 (spring_device): Phi = e^(A_c T) is enclosed (expm_interval),
     c(z) in interval coefficients (spring_charpoly), and Schur-Cohn decided over the whole box
@@ -1865,6 +1881,11 @@ def check_stability_spring(model, claim, evidence, T, n, params, k, spring):
     if degree > MAX_STABILITY_MAX_DEGREE:
         raise TooLarge("the characteristic polynomial has degree %d, above this checker's limit %d with device poles off s = 0" % (
             degree, MAX_STABILITY_MAX_DEGREE))
+    if dc_zero(k, spring, H.num, H.den):
+        ok, why = False, "c(1) = 0 exactly (det(I - Phi) times a rational factor that is 0): a root on the unit circle"
+        if ok != claim["stable"]:
+            return False, "claim: stable, but " + why
+        return True, "NOT stable (two device poles off s = 0; %s)" % why
     for bits in (128, 256, 512, 1024, 2048, 4096):
         c, Phi = spring_charpoly(n, k, spring, H.num, H.den, T, bits)
         if c[-1].lo <= 0 <= c[-1].hi:

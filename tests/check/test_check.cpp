@@ -603,6 +603,16 @@ TEST(StabilityCheck, SpringByHand) {
   }
   EXPECT_NE(check_certificate(spring_cert("-1/2", true)).reason.find("e^{A_c T}"), std::string::npos);
   EXPECT_THROW(check_certificate(spring_cert("0", true)), InputError);  // roots on the circle: undecidable
+  // a wall -4 cancels the spring 4 of 1/(s^2 + s + 4): c(1) = det(I - Phi) (1 + H(1) P(0)) = 0 exactly
+  auto cancelled = spring_cert("-4", false);
+  cancelled["model"]["plant"] = "1/(s^2 + s + 4)";
+  EXPECT_TRUE(check_certificate(cancelled).verified) << check_certificate(cancelled).reason;
+  cancelled["claim"]["stable"] = true;
+  EXPECT_FALSE(check_certificate(cancelled).verified);
+  cancelled["evidence"]["argument_principle"] = true;
+  EXPECT_FALSE(check_certificate(cancelled).verified);
+  cancelled["claim"]["stable"] = false;
+  EXPECT_TRUE(check_certificate(cancelled).verified);
   auto with_poly = spring_cert("-1/2", true);
   with_poly["evidence"]["charpoly"] = {"1", "1"};
   EXPECT_THROW(check_certificate(with_poly), InputError);

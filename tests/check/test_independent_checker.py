@@ -63,6 +63,13 @@ class Stability(unittest.TestCase):
             self.assertEqual(hc.check(cert(K, st))[0], 0, K)
             self.assertEqual(hc.check(cert(K, not st))[0], 1, K)
         self.assertEqual(hc.check(cert("0", True))[0], 3)
+        # a wall -4 cancels the spring 4 of 1/(s^2 + s + 4): c(1) = det(I - Phi) (1 + H(1) P(0)) = 0 exactly
+        for ev in ({}, {"argument_principle": True}):
+            c = cert("-4", False)
+            c["model"]["plant"], c["evidence"] = "1/(s^2 + s + 4)", ev
+            self.assertEqual(hc.check(c)[0], 0, ev)
+            c["claim"]["stable"] = True
+            self.assertEqual(hc.check(c)[0], 1, ev)
 
     def test_argument_principle_by_hand(self):
         # the delayed integrator 1/s, T = 1, H = K, n = 50: c = z^50 (z - 1) + K, stable iff 0 < K < 2 sin(pi/202)

@@ -163,6 +163,16 @@ Parts pole_parts(const detail::LoopDevice& d, const P& A, const P& L, long bits)
   return {balls(L * Dk) * zE, balls(A) * (balls(d.Ndp) * zE + balls(Dk) * rE1)};
 }
 
+/// With a device pole off s = 0: c(1) = 0 exactly? c(1) = F g with F = 1 - E (a mass-damper) or
+/// Delta(1) = det(I - Phi) (a spring), != 0 since no e^{pT} is 1, and g rational: with k = 0,
+/// g = L(1) + A(1) (Ndp(1) - rho) (rho = r, or R1: N_q(1) = -R1 Delta(1)); with k >= 1 the
+/// (z - 1)^k terms vanish and g = A(1) Ndp(1). (loop_model.hpp's c(z) at z = 1.)
+bool dc_zero(const detail::LoopDevice& d, const P& A, const P& L) {
+  const rational one(1);
+  if (d.k > 0) return A(one) * d.Ndp(one) == 0;
+  return L(one) + A(one) * (d.Ndp(one) - (d.spring ? d.R1 : d.r)) == 0;
+}
+
 /// Every pole at s = 0: exact parts P1 = L (z - 1)^k, P0 = A Nd.
 std::pair<P, P> exact_parts(const detail::LoopDevice& d, const P& A, const P& L) {
   return {L * P{rational(-1), rational(1)}.pow(static_cast<unsigned>(d.k)), A * d.Nd};
@@ -199,6 +209,10 @@ std::optional<SchurCohn> schur_cohn_balls(BallPoly a) {
 /// Schur stability of the loop with a spring: Schur-Cohn over Phi's enclosure at 128 to 8192
 /// bits until every step is decided; the verdict then holds for the true Phi, which it holds.
 SchurCohn decide_spring(const detail::LoopDevice& d, const P& A, const P& L, std::string& how) {
+  if (dc_zero(d, A, L)) {  // a root exactly on the circle, which no enclosure decides
+    how = "c(1) = 0 exactly (det(I - Phi) times a rational factor that is 0):";
+    return {false, "a root on the unit circle at z = 1"};
+  }
   for (long bits = 128; bits <= 8192; bits *= 2) {
     flint::BallPrecision scope(bits);
     flint::Ball trace;
@@ -267,6 +281,10 @@ SchurCohn decide_winding(const detail::LoopDevice& d, const P& A, const P& L, st
         return {false, "a root on the unit circle at z = " + std::string(end > 0 ? "1" : "-1")};
       }
       continue;
+    }
+    if (end > 0 && dc_zero(d, A, L)) {
+      how = "c(1) = 0 exactly (its factor other than 1 - e^{pT} or det(I - Phi) is 0):";
+      return {false, "a root on the unit circle at z = 1"};
     }
     for (;;) {  // transcendental coefficients: c(+-1) != 0 shown in balls
       flint::BallPrecision scope(bits);

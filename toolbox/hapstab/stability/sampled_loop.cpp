@@ -412,6 +412,20 @@ std::optional<std::string> root_at_edge(const Edges<C>& e) {
   return std::nullopt;
 }
 
+/// z = 1 decided exactly where the sampled data are not (a device pole off s = 0 makes them
+/// transcendental): the zero-order hold keeps the DC gain, P_d(1) = P_eff(0). With no device pole
+/// at s = 0, c(1) = den_d(1) (L(1) + A(1) P_eff(0)) and den_d(1) != 0 (the poles e^{pT} != 1); with
+/// one, den_d(1) = 0 and c(1) = A(1) num_d(1), which A(1) = 0 makes 0. (Where neither holds z = 1 is
+/// left to the enclosures, which then separate c(1) from 0.)
+std::optional<std::string> dc_root(const Prepared& p) {
+  const rational one(1), A1 = p.wall.A0(one);
+  if (p.r > 0)
+    return A1 == 0 ? std::optional<std::string>("z = 1 (exact: H(1) = 0 beside a device pole at s = 0)") : std::nullopt;
+  if (p.wall.L(one) + A1 * p.num(rational(0)) / p.den(rational(0)) == 0)
+    return std::string("z = 1 (exact: 1 + H(1) P(0) = 0, the loop's static stiffness is zero)");
+  return std::nullopt;
+}
+
 template <class C>
 StabilityResult decide_long(const Prepared& p, const Loop& loop, const Sampled<C>& s, long prec) {
   StabilityResult r;
@@ -458,6 +472,15 @@ StabilityResult decide(const Loop& loop) {
   const Plan pl = plan(p, loop, false);
   StabilityResult r;
   r.exact_data = p.exact;
+  if (!p.exact) {
+    if (const auto at = dc_root(p)) {
+      r.verdict = Verdict::of(false, Status::exact, "a closed-loop root at " + *at + ": on the unit circle");
+      r.path = pl.long_delay ? "long_delay" : "polynomial";
+      r.plan = pl.why;
+      r.degree = static_cast<int>(pl.degree);
+      return r;
+    }
+  }
   if (pl.long_delay) {
     for (slong prec = 128; prec <= 2048; prec *= 2) {
       flint::BallPrecision scope(prec);
