@@ -445,7 +445,9 @@ nlohmann::json stability_evidence(const stability::Loop& loop) {
     throw InputError("--certificate: a certificate of stability with more than two device poles off s = 0 is not "
                      "implemented yet; devices with every pole at s = 0 (a mass 1/(m*s^2)), one real pole off it (a "
                      "mass-damper 1/(m*s^2 + b*s)) or two (a spring 1/(m*s^2 + b*s + k)) have one");
-  if (loop.delay + den.degree() + 2 > (off_zero ? 150 : 2000)) {
+  // the degree of c = z^n L D_d + A N_d, as the checkers count it (deg L + n + the device's order)
+  const long degree = loop.delay + loop.H.den().degree() + den.degree();
+  if (degree > (off_zero ? 150 : 2000)) {
     // never expanded: the checkers count the roots inside by the argument principle on the circle
     // (check/stability_check.hpp), e^{pT} or e^{A_c T} in balls
     if (loop.delay > 100000)
