@@ -99,6 +99,7 @@ BallPoly balls(const P& p) {
   return r;
 }
 BallPoly operator*(const BallPoly& a, const BallPoly& b) {
+  if (a.empty() || b.empty()) return {};  // the zero polynomial (balls of a zero P are empty)
   BallPoly r(a.size() + b.size() - 1, flint::Ball(0L));
   for (size_t i = 0; i < a.size(); ++i)
     for (size_t j = 0; j < b.size(); ++j) r[i + j] += a[i] * b[j];
