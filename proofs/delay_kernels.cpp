@@ -14,6 +14,8 @@
 //   ext.stability.crossing_delay  Re/Im of U = P conj Q1 and V = Q0 conj Q1 on |z| = 1 are the
 //                             polynomials in cos(theta) stability's long-delay path evaluates, so the
 //                             crossing condition with z^n needs no polynomial of degree n (exact, in t)
+//   ext.stability.crossing_floor  |P|^2, |Q0|^2 on |z| = 1 are the polynomials PP, QQ in cos(theta) of
+//                             the search's gain floor |K| >= (|P| - |Q0|)/|Q1| at every crossing
 //   ext.stability.winding     the argument principle and the crossing search (long-delay path) give
 //                             the verdicts and sup K of the characteristic polynomial (delays 0..40)
 #include <random>
@@ -259,7 +261,7 @@ HAPSTAB_PROOF(stability_crossing_delay, "ext", "the long-delay crossing polynomi
     return P(c);
   };
   proofs::Instances triples{"(P, Q0, Q1) with U and V non-zero", 30};
-  bool ok = true;
+  bool ok = true, floor_ok = true;
   const RF c = cos_t(), s = sin_t();
   for (int k = 0; k < 36; ++k) {
     const P Pp = rpoly(1 + k % 5), Q0 = rpoly(k % 3), Q1 = rpoly(k % 4);
@@ -273,6 +275,7 @@ HAPSTAB_PROOF(stability_crossing_delay, "ext", "the long-delay crossing polynomi
          RF(V.re) == scale * horner(d.RV, c) && RF(V.im) == scale * s * horner(d.SV, c) &&
          RF(norm(q1)) == scale * horner(d.H1, c);
     triples.count(!U.re.is_zero() && !V.re.is_zero());
+    floor_ok = floor_ok && RF(norm(p)) == scale * horner(d.PP, c) && RF(norm(q0)) == scale * horner(d.QQ, c);
   }
   check.claim("ext.stability.crossing_delay", "Im/Re(c0 conj c1), delay",
               "with c0 = z^n P + Q0, c1 = Q1 on |z| = 1: Re(P conj Q1) = RU(cos theta), Im = sin(theta) SU(cos theta), "
@@ -281,6 +284,16 @@ HAPSTAB_PROOF(stability_crossing_delay, "ext", "the long-delay crossing polynomi
               Status::exact, ok,
               "Re, Im of U = P conj Q1, V = Q0 conj Q1 and |Q1|^2 equal RU, sin SU, RV, sin SV, H1 at cos(theta) as "
               "rational functions of t (degrees 1..5, 0..2, 0..3); both sides linear in cos, sin of n theta: every n",
+              {triples});
+  check.claim("ext.stability.crossing_floor", "gain floor, delay",
+              "|P|^2 = PP(cos theta) and |Q0|^2 = QQ(cos theta) on |z| = 1 as stability's long-delay path evaluates "
+              "them; at a crossing K Q1 = -(z^n P + Q0), so |K| |Q1| >= |P| - |Q0| (|z^n| = 1): no crossing gain below "
+              "(|P| - |Q0|)/|Q1| on an arc, whatever n (the search drops such arcs before resolving n theta)",
+              Status::exact, floor_ok,
+              "|p|^2, |q0|^2 equal PP, QQ at cos(theta) as rational functions of t on the same 36 triples; the bound is "
+              "the reverse triangle inequality. The search with it against Arb alone (no floor): ctest "
+              "StabilityLongDelay.DoublePruningAgreesWithArbAlone, CrossingSearchWorkFollowsTheCrossover; against "
+              "an independent D-decomposition: tests/verify/independent.py --criterion stability_long",
               {triples});
 }
 

@@ -196,3 +196,42 @@ TEST(StabilityLongDelay, DoublePruningAgreesWithArbAlone) {
     }
   }
 }
+
+// The crossing search's work follows the crossover band, not the delay (its gain floor |K| >=
+// (|P| - |Q0|)/|Q1|, stability/long_delay.cpp): the delayed integrator c = z^n (z - 1) + K (H = K on
+// 1/s behind a ZOH at T = 1), whose smallest crossing is K* = 2 sin(pi/(2 (2n + 1))) at
+// theta = pi/(2n + 1), is enclosed at n = 10^3 and 10^5 after a few dozen arcs, where the
+// 4 n + 64 first boxes alone would be 4 * 10^5; with Arb alone (no floor) every first box is taken.
+TEST(StabilityLongDelay, CrossingSearchWorkFollowsTheCrossover) {
+  for (long n : {1000L, 100000L}) {
+    SCOPED_TRACE("n = " + std::to_string(n));
+    stability::detail::DelayedLoop L;
+    L.n = n;
+    L.exact = true;
+    L.Pq = {rational(-1), rational(1)};
+    L.Q0q = {rational(0)};
+    L.Q1q = {rational(1)};
+    for (const auto* v : {&L.Pq, &L.Q0q, &L.Q1q})
+      for (const rational& x : *v) (v == &L.Pq ? L.P : v == &L.Q0q ? L.Q0 : L.Q1).emplace_back(x);
+    std::string why;
+    const auto s = stability::detail::smallest_crossings(L, why);
+    ASSERT_TRUE(s.has_value()) << why;
+    ASSERT_FALSE(s->crossings.empty());
+    flint::Ball sine, cosine;
+    flint::sin_cos(flint::Ball::pi() / flint::Ball(2 * (2 * n + 1)), sine, cosine);
+    const flint::Ball k_star = sine * flint::Ball(2L);
+    bool enclosed = false;
+    for (const auto& x : s->crossings) {
+      EXPECT_FALSE(x.K.below(k_star)) << "a crossing below K*";
+      enclosed = enclosed || (!x.K.below(k_star) && !k_star.below(x.K));
+    }
+    EXPECT_TRUE(enclosed);
+    EXPECT_LT(s->boxes, 200) << s->double_boxes;  // 32 and 51 arcs at this writing
+    if (n == 1000) {
+      const stability::detail::ArbOnly scope;
+      const auto arb = stability::detail::smallest_crossings(L, why);
+      ASSERT_TRUE(arb.has_value()) << why;
+      EXPECT_GE(arb->boxes, 4 * n + 64);
+    }
+  }
+}

@@ -574,6 +574,129 @@ BRANCHES_STABILITY = [
 ]
 
 
+# ---------------------------------------------------------------------------------------------
+# stability --max with a long delay: the crossing search of stability/long_delay.cpp (its gain
+# floor prunes the band away from the crossover, issue 48)
+
+
+def case_stability_long(rng):
+    """`stability --max K` as above with a delay of 201-1500 samples (the long-delay path, degree >
+    200). The reference solves 1 + z^-n G(z) (H0 + K H1)(z) = 0 on the circle for real K itself:
+    G = C (zI - Phi)^-1 Gamma from the loop's own ZOH (mpmath expm), Im of
+    K(theta) = -(z^n + G H0)/(G H1) on a grid of 64 points per sample of delay, each sign change
+    refined by bisection, the smallest positive K among them and at z = +-1; stability below it
+    by the loop matrix's eigenvalues (numpy) at K*/1000 and at K* (1 - 1e-6)."""
+    c = IL.gen_stability(rng)
+    c["n"] = rng.randint(201, 1500)
+    c["tags"]["delay"] = "201-1500"
+    c["args"] = IL.stability_args(c)
+    return c
+
+
+def long_crossing_reference(c, loop):
+    """The smallest positive crossing gain on the unit circle (see case_stability_long), or None
+    when there is none; the kind of the crossing."""
+    import numpy as np
+    Phi = np.array(loop.Phi.tolist(), dtype=float)
+    Gam = np.array(loop.Gam.tolist(), dtype=float)
+    Cy = np.array(loop.Cy.tolist(), dtype=float)
+    n = c["n"]
+
+    def polyval(p, z):
+        return np.polyval(np.array([float(x) for x in p]), z)
+
+    def kval(theta):
+        z = np.exp(1j * np.atleast_1d(theta))
+        A = z[:, None, None] * np.eye(Phi.shape[0])[None] - Phi[None]
+        G = (Cy[None] @ np.linalg.solve(A, np.broadcast_to(Gam, (len(z),) + Gam.shape)))[:, 0, 0]
+        h0 = polyval(c["H0"].num, z) / polyval(c["H0"].den, z)
+        h1 = polyval(c["H1"].num, z) / polyval(c["H1"].den, z)
+        return -(z ** n + G * h0) / (G * h1)
+
+    th = np.linspace(0, math.pi, 64 * (n + 10) + 1)[1:-1]
+    w = kval(th)
+    im = w.imag
+    cands = []
+    for i in np.nonzero(np.sign(im[:-1]) * np.sign(im[1:]) < 0)[0]:
+        a, b = th[i], th[i + 1]
+        fa = im[i]
+        for _ in range(60):
+            mid = 0.5 * (a + b)
+            fm = kval(mid)[0].imag
+            if (fm < 0) == (fa < 0):
+                a, fa = mid, fm
+            else:
+                b = mid
+        k = kval(0.5 * (a + b))[0].real
+        if k > 0:
+            cands.append((k, "complex"))
+    for t, kind in ((1e-9, "z = 1"), (math.pi - 1e-9, "z = -1")):
+        k = kval(t)[0]
+        if np.isfinite(k.real) and k.real > 0 and abs(k.imag) < 1e-6 * abs(k.real):
+            cands.append((k.real, kind))
+    return min(cands) if cands else None
+
+
+def check_stability_long(c, exe, timeout):
+    rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
+    loop = IL.build_loop_1dof(c)
+    tags = dict(c["tags"])
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None)
+    if IL.free_position_every_K(c):
+        tags["z = 1 for every K (exact)"] = True
+        ref = dict(kind="zero")
+    else:
+        cross = long_crossing_reference(c, loop)
+        probe = (cross[0] if cross else c["Knom"]) / 1000
+        if IL.rho_np(loop, probe) >= 1:
+            ref = dict(kind="zero")
+        elif cross is None:
+            ref = dict(kind="inf")
+        else:
+            ref = dict(kind="sup", value=cross[0], crossing=cross[1])
+            if IL.rho_np(loop, cross[0] * (1 - 1e-6)) >= 1:
+                ref = dict(kind="unsure", why=f"rho >= 1 at K* (1 - 1e-6), K* = {cross[0]!r}: a crossing below the grid's")
+    tags["stable at small K"] = ref["kind"] in ("sup", "inf")
+    tags["crossing"] = ref.get("crossing", ref["kind"])
+    out["ref_text"] = f"sup K = {ref['value']!r} ({ref['crossing']})" if ref["kind"] == "sup" else f"sup K: {ref['kind']}"
+    if rc == "timeout" or rc in (2, 3):
+        out["outcome"] = {"timeout": "timeout", 2: "refused", 3: "undecided"}[rc]
+        out["why"] = why_of(err, j)
+        return out
+    mx = str(j.get("max")) if j else "None"
+    out["hapstab"] = mx
+    if ref["kind"] == "unsure":
+        out["outcome"], out["why"] = "REFERENCE MISSED", ref["why"]
+    elif ref["kind"] == "zero":
+        out["outcome"] = "agree" if rc == 1 and mx == "0" else "MISS"
+        out["why"] = "" if out["outcome"] == "agree" else f"unstable at small K by the reference; hapstab: exit {rc}, max {mx}"
+    elif ref["kind"] == "inf":
+        out["outcome"] = "agree" if rc == 0 and mx.lstrip("+") == "inf" else "MISS"
+        out["why"] = "" if out["outcome"] == "agree" else f"no crossing on the reference's grid; hapstab: exit {rc}, max {mx}"
+    elif rc != 0 or not j.get("enclosure"):
+        out["outcome"], out["why"] = "MISS", f"the reference's sup is {ref['value']!r}; hapstab: exit {rc}, max {mx}"
+    else:
+        lo, hi = enc(j)
+        K = mp.mpf(ref["value"])
+        if lo > K * (1 + TOL_LONG):
+            out["outcome"] = "MISS"
+            out["why"] = f"hapstab's [{mp.nstr(lo, 20)}, {mp.nstr(hi, 20)}] lies above the reference's crossing {ref['value']!r}: a crossing missed"
+        elif hi < K * (1 - TOL_LONG):
+            out["outcome"] = "REFERENCE MISSED"
+            out["why"] = f"hapstab's [{mp.nstr(lo, 20)}, {mp.nstr(hi, 20)}] lies below the reference's {ref['value']!r} (a crossing between its grid points?)"
+        else:
+            out["outcome"] = "agree"
+    return out
+
+
+TOL_LONG = 1e-9  # the reference's crossing, bisected in double to 2^-60 of an arc: ~1e-12 relative
+
+
+BRANCHES_STABILITY_LONG = [
+    ("stable at small K", True, 0.3), ("stable at small K", False, 0.05), ("crossing", "complex", 0.2),
+]
+
+
 def case_scene(rng):
     c = IL.gen_scene(rng)
     return c
@@ -1023,6 +1146,7 @@ CRITERIA = {
     "bound_long": (case_bound_long, check_bound, BRANCHES_BOUND_LONG),
     "bound_max": (case_bound_max, check_bound_max, BRANCHES_BOUND_MAX),
     "stability_max": (case_stability, check_stability, BRANCHES_STABILITY),
+    "stability_long": (case_stability_long, check_stability_long, BRANCHES_STABILITY_LONG),
     "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
     "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),

@@ -162,6 +162,20 @@ bool double_angle(long n, __int128 k, __int128 D, bool box, AngleT<Dint>& a, Din
   return true;
 }
 
+/// theta's angle over the arc pi [k - h, k + h]/D (h >= 1; theta's sine and cosine are not
+/// needed), widened from its centre by the Lipschitz bounds as in double_angle. false when the
+/// integers overflow.
+bool arc_angle(__int128 k, __int128 D, long h, AngleT<Dint>& a) {
+  Dint sh, ch;
+  if (!sin_cos_pi(k, 2 * D, sh, ch)) return false;
+  const Dint pi = dint_pi(), inv = Dint(1.0) / Dint::from_i128(D);
+  const double r = (Dint(static_cast<double>(h)) * inv * pi).hi;
+  const Dint theta = (Dint::from_i128(k) * inv * pi).widened(r).clamp(0, pi.hi);
+  sh = sh.widened(r / 2).clamp(-1, 1), ch = ch.widened(r / 2).clamp(-1, 1);
+  a = angle_from(theta, sh, ch, theta.lo, theta.hi);
+  return true;
+}
+
 bool narrow_arg(const Ball& a) { return a.finite() && a.radius() < 0.25; }
 
 }  // namespace
@@ -332,6 +346,7 @@ namespace {
 struct CrossingForm {
   long n = 0;
   CPoly RU, SU, RV, SV, H1;
+  CPoly PP, QQ;                       // |P|^2 and |Q0|^2 on the circle: the gain floor's moduli
   Ball q0, qpi;                       // q(0) = n RU(1) + SU(1) + SV(1), q(pi) = (-1)^(n+1) n RU(-1) + (-1)^n SU(-1) + SV(-1)
   bool q0_zero = false, qpi_zero = false;  // exactly 0 (exact data)
 };
@@ -379,21 +394,41 @@ C horner_at(const std::vector<C>& p, const C& x) {
   return r;
 }
 
+/// The seven polynomials in c = cos(theta) of the crossing search (sampled_loop.hpp's
+/// DelayCirclePolynomials, claims ext.stability.crossing_delay and crossing_floor).
+template <class C>
+struct CirclePolys {
+  std::vector<C> RU, SU, RV, SV, H1, PP, QQ;
+};
+template <class C>
+CirclePolys<C> circle_polys(const std::vector<C>& P, const std::vector<C>& Q0, const std::vector<C>& Q1) {
+  CirclePolys<C> r;
+  std::vector<C> unused;
+  const std::vector<C> Q0s = Q0.empty() ? std::vector<C>{C(0L)} : Q0;
+  auto sums = [&](const std::vector<C>& a, const std::vector<C>& b, std::vector<C>& re, std::vector<C>& im) {
+    long low = 0;
+    const std::vector<C> w = correlation(a, b, low);
+    chebyshev_sums(w, low, re, im);
+  };
+  sums(P, Q1, r.RU, r.SU);
+  sums(Q0s, Q1, r.RV, r.SV);
+  sums(Q1, Q1, r.H1, unused);
+  sums(P, P, r.PP, unused);
+  sums(Q0s, Q0s, r.QQ, unused);
+  return r;
+}
+
 template <class C>
 CrossingForm crossing_form(long n, const std::vector<C>& P, const std::vector<C>& Q0, const std::vector<C>& Q1) {
   CrossingForm f;
   f.n = n;
-  long lu = 0, lv = 0, lh = 0;
-  std::vector<C> RU, SU, RV, SV, H1, unused;
-  const std::vector<C> u = correlation(P, Q1, lu), v = correlation(Q0, Q1, lv), h = correlation(Q1, Q1, lh);
-  chebyshev_sums(u, lu, RU, SU);
-  chebyshev_sums(v, lv, RV, SV);
-  chebyshev_sums(h, lh, H1, unused);
-  f.RU = cpoly(RU), f.SU = cpoly(SU), f.RV = cpoly(RV), f.SV = cpoly(SV), f.H1 = cpoly(H1);
+  const CirclePolys<C> c = circle_polys(P, Q0, Q1);
+  f.RU = cpoly(c.RU), f.SU = cpoly(c.SU), f.RV = cpoly(c.RV), f.SV = cpoly(c.SV), f.H1 = cpoly(c.H1);
+  f.PP = cpoly(c.PP), f.QQ = cpoly(c.QQ);
   const C one(1L), mone(-1L), nn(n);
-  const C q0 = nn * horner_at(RU, one) + horner_at(SU, one) + horner_at(SV, one);
+  const C q0 = nn * horner_at(c.RU, one) + horner_at(c.SU, one) + horner_at(c.SV, one);
   const C sign = n % 2 == 0 ? one : mone;
-  const C qpi = C(0L) - sign * nn * horner_at(RU, mone) + sign * horner_at(SU, mone) + horner_at(SV, mone);
+  const C qpi = C(0L) - sign * nn * horner_at(c.RU, mone) + sign * horner_at(c.SU, mone) + horner_at(c.SV, mone);
   f.q0 = Ball(q0), f.qpi = Ball(qpi);
   if constexpr (std::is_same_v<C, rational>) f.q0_zero = q0 == 0, f.qpi_zero = qpi == 0;
   return f;
@@ -432,7 +467,18 @@ class DoubleCrossings {
  public:
   explicit DoubleCrossings(const CrossingForm& f)
       : n_(f.n), RU_(to_dint(f.RU)), SU_(to_dint(f.SU)), RV_(to_dint(f.RV)), SV_(to_dint(f.SV)), H1_(to_dint(f.H1)),
-        q0_(to_dint(f.q0)), qpi_(to_dint(f.qpi)) {}
+        PP_(to_dint(f.PP)), QQ_(to_dint(f.QQ)), q0_(to_dint(f.q0)), qpi_(to_dint(f.qpi)) {}
+  /// The gain floor over the arc pi [k - h, k + h]/D: a root of c(., K) on the circle at e^{j theta}
+  /// for a real K means |K| |Q1| = |z^n P + Q0| >= |P| - |Q0| (|z^n| = 1), so every crossing gain
+  /// on the arc has |K| >= (|P| - |Q0|)/|Q1|, a bound that does not depend on n: it prunes the
+  /// arcs far from the loop's crossover before the n-fold oscillation is resolved. -inf where it
+  /// says nothing (Q1 may vanish on the arc, or the integers overflow).
+  double gain_floor(__int128 k, __int128 D, long h) const {
+    AngleT<Dint> a;
+    if (!arc_angle(k, D, h, a)) return -HUGE_VAL;
+    const Dint floor = (modulus(eval(PP_, a).v) - modulus(eval(QQ_, a).v)) / modulus(eval(H1_, a).v);
+    return floor.finite() ? floor.lo : -HUGE_VAL;
+  }
   std::optional<CrossingValuesT<Dint>> at(__int128 k, __int128 D, bool box) const {
     AngleT<Dint> a;
     Dint sn, cn;
@@ -444,7 +490,9 @@ class DoubleCrossings {
 
  private:
   long n_;
-  CPolyT<Dint> RU_, SU_, RV_, SV_, H1_;
+  /// |w| from |w|^2 enclosed (its lower end clipped at 0, where |w|^2 >= 0 lies)
+  static Dint modulus(const Dint& sq) { return sq.finite() && sq.hi >= 0 ? sqrt(Dint(std::max(sq.lo, 0.0), sq.hi)) : Dint::entire(); }
+  CPolyT<Dint> RU_, SU_, RV_, SV_, H1_, PP_, QQ_;
   Dint q0_, qpi_;
 };
 
@@ -487,9 +535,10 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
   CrossingSearch out;
   const long M = 4 * (L.n + static_cast<long>(L.P.size())) + 64;
   struct Piece {
-    double key;  // the smallest K the piece may hold (the order only)
+    double key;     // the smallest K the piece may hold (the order only)
     long i;
     int level;
+    long span = 0;  // > 0: the coarse arc of the first boxes i .. i + span - 1, not yet cut to them
     bool operator<(const Piece& o) const { return key > o.key; }  // a min-queue
   };
   std::priority_queue<Piece> queue;
@@ -507,10 +556,13 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
   auto keep = [&](long i, int level) {
     ++out.boxes;
     if (dbl) {
-      if (const auto v = dbl->at(2 * static_cast<__int128>(i) + 1, static_cast<__int128>(M) << (level + 1), true)) {
+      const __int128 k = 2 * static_cast<__int128>(i) + 1, D = static_cast<__int128>(M) << (level + 1);
+      if (const auto v = dbl->at(k, D, true)) {
         ++out.double_boxes;
         if (above_d(v->K)) return;
-        queue.push({v->K.finite() ? v->K.lo : -HUGE_VAL, i, level});
+        const double floor = dbl->gain_floor(k, D, 1);
+        if (best_d < floor) return;
+        queue.push({std::max(v->K.finite() ? v->K.lo : -HUGE_VAL, floor), i, level});
         return;
       }
     }
@@ -519,10 +571,29 @@ std::optional<CrossingSearch> smallest_crossings(const DelayedLoop& L, std::stri
     if (above(v.K)) return;
     queue.push({lower_double(v.K), i, level});
   };
-  for (long i = 0; i < M; ++i) keep(i, 0);
+  // With double intervals the first boxes are reached through coarse arcs cut in eight, each
+  // dropped as soon as its gain floor is above the best crossing (DoubleCrossings::gain_floor):
+  // the boxes far from the crossover are never evaluated one by one. Arb alone: every box.
+  constexpr long cut = 8;
+  auto keep_coarse = [&](long i, long span) {
+    if (span == 1) return keep(i, 0);
+    ++out.boxes, ++out.double_boxes;
+    const double floor = dbl->gain_floor(2 * static_cast<__int128>(i) + span, 2 * static_cast<__int128>(M), span);
+    if (!(best_d < floor)) queue.push({floor, i, 0, span});
+  };
+  if (dbl)
+    for (long i = 0; i < M; i += M / cut + 1) keep_coarse(i, std::min(M / cut + 1, M - i));
+  else
+    for (long i = 0; i < M; ++i) keep(i, 0);
   while (!queue.empty()) {
     const Piece pc = queue.top();
     queue.pop();
+    if (best_d < pc.key) continue;  // every positive gain on it is above the best crossing found since
+    if (pc.span > 0) {
+      const long part = (pc.span + cut - 1) / cut;
+      for (long j = pc.i; j < pc.i + pc.span; j += part) keep_coarse(j, std::min(part, pc.i + pc.span - j));
+      continue;
+    }
     if (dbl && settled_in_double(*dbl, pc.i, pc.level, M, f.q0_zero, f.qpi_zero, above_d)) {
       ++out.double_boxes;
       continue;
@@ -604,17 +675,9 @@ namespace hapstab::stability {
 DelayCirclePolynomials delay_circle_polynomials(const Polynomial<rational>& P, const Polynomial<rational>& Q0,
                                                 const Polynomial<rational>& Q1) {
   if (P.is_zero() || Q1.is_zero()) throw InputError("delay_circle_polynomials: P and Q1 must not be zero");
-  const std::vector<rational> q0 = Q0.is_zero() ? std::vector<rational>{rational(0)} : Q0.coeffs();
-  long lu = 0, lv = 0, lh = 0;
-  const std::vector<rational> u = detail::correlation(P.coeffs(), Q1.coeffs(), lu),
-                              v = detail::correlation(q0, Q1.coeffs(), lv),
-                              h = detail::correlation(Q1.coeffs(), Q1.coeffs(), lh);
-  std::vector<rational> RU, SU, RV, SV, H1, unused;
-  detail::chebyshev_sums(u, lu, RU, SU);
-  detail::chebyshev_sums(v, lv, RV, SV);
-  detail::chebyshev_sums(h, lh, H1, unused);
-  return {Polynomial<rational>(RU), Polynomial<rational>(SU), Polynomial<rational>(RV), Polynomial<rational>(SV),
-          Polynomial<rational>(H1)};
+  const auto c = detail::circle_polys(P.coeffs(), Q0.coeffs(), Q1.coeffs());  // Q0 = 0: no coefficients, taken as {0}
+  using Pq = Polynomial<rational>;
+  return {Pq(c.RU), Pq(c.SU), Pq(c.RV), Pq(c.SV), Pq(c.H1), Pq(c.PP), Pq(c.QQ)};
 }
 
 }  // namespace hapstab::stability

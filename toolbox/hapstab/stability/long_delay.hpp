@@ -14,12 +14,16 @@
 //     q = sum_m w_m K_m(theta) with K_m = sin(m theta)/sin(theta) (numeric/jet.hpp) and a few
 //     integer m near n and near 0 (claim ext.stability.crossing_delay): no polynomial of degree n.
 //     Boxes are taken in the order of their smallest possible K = Re(-c0/c1); a crossing is
-//     isolated (q' of one sign, a sign change) and enclosed by interval Newton on q.
+//     isolated (q' of one sign, a sign change) and enclosed by interval Newton on q. Before the
+//     boxes, coarse arcs are dropped by a floor that does not depend on n: at a crossing
+//     |K| |Q1| = |z^n P + Q0| >= |P| - |Q0|, so no gain below the best one found lies where
+//     (|P| - |Q0|)/|Q1| exceeds it (claim ext.stability.crossing_floor).
 // Every arc of both searches is first tried in double intervals with rounding bounds
 // (numeric/dinterval.hpp: sin, cos of theta/2 and of n theta at the arc's grid point pi k/D reduced
 // exactly in integers, atan/arg enclosed), Arb only where those cannot decide it (issue 48).
 // The work grows like n times the width of the frequency band where |P| and |Q| are comparable
-// (the loop's crossover region), at most ~ 4 n + 64 boxes per pass; memory does not grow with n.
+// (the loop's crossover region; for the crossings, where the floor is below sup K), at most
+// ~ 4 n + 64 boxes per pass; memory does not grow with n.
 #pragma once
 
 #include <optional>

@@ -126,8 +126,10 @@ CirclePolynomials circle_polynomials(const Polynomial<rational>& c0, const Polyn
 /// Im V = sin(theta) SV(x), |Q1|^2 = H1(x). Then for every n (claim ext.stability.crossing_delay)
 ///   Im(c0 conj c1)/sin(theta) = K_n(theta) RU + cos(n theta) SU + SV,  K_n = sin(n theta)/sin(theta),
 ///   Re(c0 conj c1) = cos(n theta) RU - sin(n theta) sin(theta) SU + RV.
+/// And |P|^2 = PP(x), |Q0|^2 = QQ(x): the search's gain floor, |K| >= (|P| - |Q0|)/|Q1| at every
+/// crossing (claim ext.stability.crossing_floor).
 struct DelayCirclePolynomials {
-  Polynomial<rational> RU, SU, RV, SV, H1;
+  Polynomial<rational> RU, SU, RV, SV, H1, PP, QQ;
 };
 DelayCirclePolynomials delay_circle_polynomials(const Polynomial<rational>& P, const Polynomial<rational>& Q0,
                                                 const Polynomial<rational>& Q1);
