@@ -108,6 +108,7 @@ std::vector<Case> catalogue_first() {
       {"stability", "--set", {"--plant", "1/s^2", "--H", "K", "--T", "1", "--set", "K"}, "--set 'K'"},
       {"stability", "--max", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--max", "K"}, "does not depend on K"},
       {"stability", "--conservatism", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--conservatism"}, "--conservatism compares"},
+      {"stability", "--no-symmetry", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--no-symmetry"}, "--no-symmetry applies"},
       {"stability", "--quiet", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--quiet=maybe"}, "--quiet"},
       {"stability", "--max", {"--plant", "1/(m*s^2)", "--H", "1", "--T", "1", "--max", "m"}, "appears in --plant"},
       {"stability", "--scene", {"--scene", "no/such/scene.toml"}, "no/such/scene.toml"},

@@ -222,13 +222,20 @@ TEST(Edges, ConservedHiddenModeGetsOneVerdictWhereverItIsWritten) {
   const auto mb = run_cli("stability --scene " + path.string() + " --json");
   ASSERT_EQ(mb.code, 0) << mb.out;
   EXPECT_EQ(nlohmann::json::parse(mb.out)["stable"], true);
-  // two DOF: the closed-loop matrix path, the devices' own positions removed as unshown modes
-  const auto two = run_cli("stability --scene " + std::string(HAPSTAB_SOURCE_DIR) +
-                           "/tests/cli/scenes/ss_position_state_2dof.toml --json");
+  // two identical DOF: split by their symmetry into two one-DOF loops (stability/symmetry.hpp), and
+  // as one closed-loop matrix (--no-symmetry), the devices' own positions removed as unshown modes
+  const std::string two_dof = std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/ss_position_state_2dof.toml";
+  const auto two = run_cli("stability --scene " + two_dof + " --json");
   ASSERT_EQ(two.code, 0) << two.out;
   const auto j2 = nlohmann::json::parse(two.out);
   EXPECT_EQ(j2["stable"], true) << two.out;
-  EXPECT_NE(j2["evidence"].get<std::string>().find("conserved"), std::string::npos) << two.out;
+  EXPECT_EQ(j2["path"], "symmetry") << two.out;
+  const auto whole = run_cli("stability --scene " + two_dof + " --no-symmetry --json");
+  ASSERT_EQ(whole.code, 0) << whole.out;
+  const auto jw = nlohmann::json::parse(whole.out);
+  EXPECT_EQ(jw["stable"], true) << whole.out;
+  EXPECT_EQ(jw["path"], "closed_loop_matrix") << whole.out;
+  EXPECT_NE(jw["evidence"].get<std::string>().find("conserved"), std::string::npos) << whole.out;
 }
 
 }  // namespace

@@ -630,11 +630,42 @@ def long_crossing_reference(c, loop):
         k = kval(0.5 * (a + b))[0].real
         if k > 0:
             cands.append((k, "complex"))
-    for t, kind in ((1e-9, "z = 1"), (math.pi - 1e-9, "z = -1")):
-        k = kval(t)[0]
-        if np.isfinite(k.real) and k.real > 0 and abs(k.imag) < 1e-6 * abs(k.real):
+    for t, kind in ((1e-12, "z = 1"), (math.pi - 1e-12, "z = -1")):
+        k = kval(t)[0]  # K -> 0 there is an open-loop pole on the circle, not a crossing at K > 0
+        if np.isfinite(k.real) and k.real > 1e-9 * c["Knom"] and abs(k.imag) < 1e-6 * abs(k.real):
             cands.append((k.real, kind))
     return min(cands) if cands else None
+
+
+def rho_polished(c, loop, K):
+    """The spectral radius of the loop matrix at K: numpy's eigenvalues, those within 1e-5 of the
+    circle polished by Newton at 40 digits on z^n + G(z) (H0 + K H1)(z) = 0 (G = Cy (zI - Phi)^-1
+    Gamma from the reference's own ZOH): double precision alone misjudges a root 1e-8 inside the
+    circle (the delayed double integrator's slowly decaying pair)."""
+    import numpy as np
+    ev = np.linalg.eigvals(loop.M_np(float(K)))
+    rho = 0.0
+    with mp.workdps(40):
+        Kq = mp.mpf(K)
+
+        def chi(z):
+            G = (loop.Cy * mp.lu_solve(z * mp.eye(loop.Phi.rows) - loop.Phi, loop.Gam))[0, 0]
+            return z ** c["n"] + G * (c["H0"].eval_mp(z) + Kq * c["H1"].eval_mp(z))
+        for e in ev:
+            r = abs(complex(e))
+            if abs(r - 1) < 1e-5:
+                z = mp.mpc(complex(e))
+                for _ in range(60):
+                    f = chi(z)
+                    h = mp.mpf(10) ** -20 * (1 + abs(z))
+                    step = f / ((chi(z + h) - f) / h)
+                    z -= step
+                    if abs(step) < mp.mpf(10) ** -30:
+                        break
+                if abs(chi(z)) < mp.mpf(10) ** -25 and abs(z - complex(e)) < 1e-6:
+                    r = float(abs(z))
+            rho = max(rho, r)
+    return rho
 
 
 def check_stability_long(c, exe, timeout):
@@ -648,13 +679,16 @@ def check_stability_long(c, exe, timeout):
     else:
         cross = long_crossing_reference(c, loop)
         probe = (cross[0] if cross else c["Knom"]) / 1000
-        if IL.rho_np(loop, probe) >= 1:
+        rho0 = rho_polished(c, loop, probe)
+        if abs(1 - rho0) < 1e-12:
+            ref = dict(kind="unsure", why=f"rho = {rho0!r} at K = {probe!r}, too near the circle to say")
+        elif rho0 > 1:
             ref = dict(kind="zero")
         elif cross is None:
             ref = dict(kind="inf")
         else:
             ref = dict(kind="sup", value=cross[0], crossing=cross[1])
-            if IL.rho_np(loop, cross[0] * (1 - 1e-6)) >= 1:
+            if rho_polished(c, loop, cross[0] * (1 - 1e-6)) >= 1:
                 ref = dict(kind="unsure", why=f"rho >= 1 at K* (1 - 1e-6), K* = {cross[0]!r}: a crossing below the grid's")
     tags["stable at small K"] = ref["kind"] in ("sup", "inf")
     tags["crossing"] = ref.get("crossing", ref["kind"])
@@ -738,6 +772,81 @@ def check_scene(c, exe, timeout):
         compare_sup(out, ref, j, rc, TOL_SUP, "g")
     keep_scene_if_missed(out, path)
     return out
+
+
+def case_symmetry(rng):
+    """`stability --scene S` on random scenes of N = 2-32 DOFs in 1-3 classes of identical devices
+    (a mass-damper, or a first-order ss device, stable or open-loop unstable), operators (none, a
+    damper, a damper and spring) and environment entries: E(i, i) = K_a + B_a (z - 1)/(T z),
+    E(i, j) = -k_ab or -k_ab (z - p_ab)/z by the classes of i and j (issue 48 item 2). hapstab splits
+    the loop by the permutations within the classes (stability/symmetry.hpp); the reference builds
+    the whole loop itself (indep_loop: ZOH in mpmath, E realised entry by entry) and takes its
+    spectral radius in double; hapstab --no-symmetry decides the whole matrix beside it."""
+    T = Q(1, 1000)
+    N = rng.choice([2, 3, 4, 5, 6, 8, 12, 16, 24, 32])
+    r = min(N, rng.choice([1, 2, 2, 3]))
+    cls = list(range(r)) + [rng.randrange(r) for _ in range(N - r)]
+    rng.shuffle(cls)
+    kinds = [rng.choices(["md", "unstable ss", "stable ss"], weights=[60, 25, 15])[0] for _ in range(r)]
+    devs, opc, K, B = [], [], [], []
+    for a in range(r):
+        m = IL.rq(rng, 0.05, 1)
+        if kinds[a] == "md":
+            devs.append(dict(kind="md", m=m, b=IL.rq(rng, 0, 5)))
+        else:
+            sgn = 1 if kinds[a] == "unstable ss" else -1
+            devs.append(dict(kind="ss", A=sgn * IL.rq(rng, 0.5, 20), Bv=1 / m, passive=sgn < 0, m=m))
+        opc.append(rng.choice([None, IL.rq(rng, 0.5, 5), (IL.rq(rng, 0.5, 5), IL.rq(rng, 10, 200))]))
+        K.append(IL.rq(rng, 100, 3000) / max(1, N // 4))
+        B.append(IL.rq(rng, 0, 8))
+    off = [[None] * r for _ in range(r)]
+    for a in range(r):
+        for b in range(r):
+            k = IL.rq(rng, 0, 400) / N if rng.random() < 0.7 else Q(0)
+            off[a][b] = IL.Rational([-k], [1]) if rng.random() < 0.6 else IL.Rational([-k, k * Q(rng.randint(-5, 5), 10)], [1, 0])
+    E = [[IL.Rational([K[cls[i]] + B[cls[i]] / T, -B[cls[i]] / T], [1, 0]) if i == j else off[cls[i]][cls[j]]
+          for j in range(N)] for i in range(N)]
+    n = 0 if rng.random() < 0.7 else rng.randint(1, 2)
+    sizes = sorted((cls.count(a) for a in range(r)), reverse=True)
+    tags = {"N": "2-4" if N <= 4 else "5-12" if N <= 12 else "16-32", "classes": str(r),
+            "a class of one": 1 in sizes, "first class": kinds[cls[0]], "delay": str(n)}
+    return dict(T=T, devices=[devs[cls[i]] for i in range(N)], ops=[opc[cls[i]] for i in range(N)], E=E, n=n,
+                tags=tags, Knom=1.0)
+
+
+def check_symmetry(c, exe, timeout):
+    text = IL.scene_toml(c)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_symmetry_", [], timeout)
+    rcw, jw, errw, dtw = run_hapstab(exe, args + ["--no-symmetry"], timeout)
+    loop = IL.build_loop_scene(c)
+    rho = IL.rho_np(loop, 1.0)
+    tags = dict(c["tags"])
+    tags["hapstab path"] = (j or {}).get("path") or "none"
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=abs(1 - rho), scene=text, args=args)
+    out["ref_text"] = f"rho = {rho!r} (the loop built here, double); hapstab --no-symmetry: exit {rcw}, {(jw or {}).get('method')}"
+    near = abs(1 - rho) < 1e-9
+    tags["reference"] = "within 1e-9 of 1" if near else ("stable" if rho < 1 else "NOT stable")
+    v, vw = (j or {}).get("stable"), (jw or {}).get("stable")
+    if rc == "timeout":
+        out["outcome"] = "timeout"
+    elif v is not None and vw is not None and v != vw:
+        out.update(outcome="MISS", why=f"with the symmetry {v}, the whole matrix {vw}")
+    elif rc in (2, 3) or v is None:
+        out.update(outcome="refused" if rc == 2 else "undecided", why=why_of(err, j))
+    elif near:
+        out.update(outcome="agree" if vw is None or v == vw else "MISS", why="the reference is too near the circle to say")
+    elif v != (rho < 1):
+        out.update(outcome="MISS", why=f"hapstab: {'stable' if v else 'NOT stable'} ({j.get('method')}); rho = {rho!r}")
+    else:
+        out["outcome"] = "agree"
+    keep_scene_if_missed(out, path)
+    return out
+
+
+BRANCHES_SYMMETRY = [  # compared verdicts
+    ("hapstab path", "symmetry", 0.6), ("reference", "stable", 0.15), ("reference", "NOT stable", 0.15),
+    ("N", "16-32", 0.1), ("classes", "3", 0.1), ("a class of one", True, 0.05), ("first class", "unstable ss", 0.1),
+]
 
 
 BRANCHES_SCENE = [  # compared cases: a supremum, or an exit 3's "stable on [a, b]" (checked at 5 points of it)
@@ -902,12 +1011,16 @@ def case_charpoly(rng):
         g = short_decimal(k * 2 ** rng.uniform(-4, 2))
         c["tags"]["gain"] = "1/16 to 4 times the crossing"
     c["g"] = g
+    c["whole_matrix"] = rng.random() < 0.5  # drawn last: the cases before this draw are unchanged
     return c
 
 
 def check_charpoly(c, exe, timeout):
     text = ICH.scene_toml(c, c["g"])
-    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_charpoly_", [], timeout)
+    # identical DOFs are split by their symmetry (stability/symmetry.hpp) unless --no-symmetry: half
+    # of those cases keep the whole matrix, so both paths meet the reference
+    whole = c["tags"]["DOFs"] == "random" or c.get("whole_matrix", False)
+    rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_charpoly_", ["--no-symmetry"] if whole else [], timeout)
     tags = dict(c["tags"])
     out = dict(tags=tags, rc=rc, seconds=dt, scene=text, args=args)
     t0 = time.monotonic()
@@ -924,7 +1037,8 @@ def check_charpoly(c, exe, timeout):
     method = (j.get("method") or "") if j else ""
     exact_cp = "Schur-Cohn on det(zI - M)" in method
     tags["hapstab path"] = ("exact charpoly, order > 48" if exact_cp and states and states > 48 else
-                            "exact charpoly, order <= 48" if exact_cp else (method or "none"))
+                            "exact charpoly, order <= 48" if exact_cp else
+                            "symmetry" if j and j.get("path") == "symmetry" else (method or "none"))
     if abs(1 - rho) > 1e-8 and (rho < 1) != st:
         out["outcome"] = "REFERENCE MISSED"
         out["why"] = f"the reference disagrees with itself: exact {'stable' if st else 'NOT stable'}, rho = {rho!r} in double"
@@ -952,7 +1066,8 @@ def check_charpoly(c, exe, timeout):
 
 
 BRANCHES_CHARPOLY = [  # compared verdicts
-    ("hapstab path", "exact charpoly, order > 48", 0.5), ("hapstab path", "exact charpoly, order <= 48", 0.1),
+    ("hapstab path", "exact charpoly, order > 48", 0.35), ("hapstab path", "exact charpoly, order <= 48", 0.1),
+    ("hapstab path", "symmetry", 0.1),
     ("reference", "stable", 0.15), ("reference", "NOT stable", 0.15),
     ("DOFs", "identical, uncoupled", 0.2), ("DOFs", "identical, linked", 0.05), ("DOFs", "random", 0.2),
     ("gain", "1e-6 from the crossing", 0.15), ("DOF", "3", 0.1),
@@ -1150,6 +1265,7 @@ CRITERIA = {
     "scene_max": (case_scene, check_scene, BRANCHES_SCENE),
     "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
+    "symmetry": (case_symmetry, check_symmetry, BRANCHES_SYMMETRY),
     "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
     "witness": (case_witness, check_witness, BRANCHES_WITNESS),
     "coupling_witness": (case_coupling_witness, check_coupling_witness, BRANCHES_COUPLING_WITNESS),

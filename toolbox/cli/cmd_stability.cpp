@@ -60,7 +60,7 @@ struct StabilityOpts {
   std::string plant, H, T, op, max_name, scene, certificate;
   std::vector<std::string> sets;
   int delay = 0, digits = 20;
-  bool json = false, conservatism = false, quiet = false;
+  bool json = false, conservatism = false, quiet = false, no_symmetry = false;
 };
 
 
@@ -208,7 +208,8 @@ int run_scene(const StabilityOpts& o) {
     }
   }();
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
-  const stability::LoopVerdict v = stability::decide_loop(sc.loop);
+  const stability::LoopVerdict v =
+      stability::decide_loop(sc.loop, o.no_symmetry ? stability::Decider::no_symmetry : stability::Decider::automatic);
   nlohmann::json hidden = nlohmann::json::array();
   for (const auto& h : v.hidden.modes)
     hidden.push_back({{"block", h.block}, {"kind", h.kind}, {"where", h.where.text(h.discrete ? "z" : "s", h.pair)}, {"stable", h.stable}});
@@ -467,6 +468,8 @@ const cli::Register reg(
        app.add_option("--digits", o->digits, "significant digits of --max (1..1000)")->capture_default_str();
        app.add_flag("--conservatism", o->conservatism, "with --scene and --max: also the largest NAME for which Theorem 5 "
                     "concludes (the scene's [coupling]) and the ratio exact / Theorem 5");
+       app.add_flag("--no-symmetry", o->no_symmetry, "with --scene: decide the whole closed-loop matrix, not the small loops "
+                    "that the permutations of identical DOFs split it into (for comparison; the verdicts are the same)");
        app.add_flag("--json", o->json, "JSON output");
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
@@ -480,6 +483,9 @@ const cli::Register reg(
                             " is not implemented yet (one-DOF --plant/--H verdicts and their --max have one)");
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
+         if (o->no_symmetry && (o->scene.empty() || !o->max_name.empty()))
+           throw InputError("--no-symmetry applies to the verdict of --scene without --max (the only path that splits a loop by "
+                            "the permutations of its identical DOFs)");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
          if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
            std::vector<std::string> plan{"reading the scene", "the closed loop's dependence on " + o->max_name, "the supremum"};

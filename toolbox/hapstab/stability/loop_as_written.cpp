@@ -13,6 +13,7 @@
 #include "hapstab/poly/stability.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
+#include "hapstab/stability/symmetry.hpp"
 
 namespace hapstab::stability {
 
@@ -146,6 +147,55 @@ LoopVerdict matrix_test(const sim::LoopSpec& L, LoopVerdict out, const std::stri
   return out;
 }
 
+// Step 2b: a loop of identical DOFs, split by its symmetry (symmetry.hpp) into an r-DOF loop and
+// one one-DOF loop per class, each decided by decide_loop: stable iff every one is.
+LoopVerdict by_symmetry(const detail::LoopSymmetry& s, LoopVerdict out) {
+  struct Part {
+    std::string label;
+    LoopVerdict v;
+  };
+  std::vector<Part> parts;
+  parts.push_back({"the loop of " + std::to_string(s.classes.size()) + " DOF" + (s.classes.size() > 1 ? "s" : "") +
+                       " on the space fixed by the group", decide_loop(s.fixed)});
+  for (size_t k = 0; k < s.standard.size(); ++k) {
+    const auto& c = s.classes[static_cast<size_t>(s.standard_class[k])];
+    parts.push_back({"the one-DOF loop of class " + std::to_string(s.standard_class[k] + 1) + " (DOFs " +
+                         std::to_string(c.front() + 1) + ", " + std::to_string(c[1] + 1) + (c.size() > 2 ? ", ..." : "") +
+                         "), multiplicity " + std::to_string(c.size() - 1),
+                     decide_loop(s.standard[k])});
+  }
+  out.path = "symmetry";
+  out.method = "symmetry " + s.group() + ": " + std::to_string(parts.size()) + " small loops";
+  const std::string head = "by the permutations of identical DOFs, " + s.group() +
+                           " (proven exactly on the realisations as written), the closed loop's spectrum is that of " +
+                           std::to_string(parts.size()) + " small loops (stability/symmetry.hpp)";
+  const Part* fail = nullptr;
+  const Part* open = nullptr;
+  bool certified = false;
+  std::optional<double> radius = 0.0;
+  for (const Part& p : parts) {
+    if (p.v.stable && !*p.v.stable && !fail) fail = &p;
+    if (!p.v.stable && !open) open = &p;
+    certified = certified || p.v.status == Status::certified;
+    radius = radius && p.v.spectral_radius ? std::optional<double>(std::max(*radius, *p.v.spectral_radius)) : std::nullopt;
+  }
+  out.spectral_radius = radius;
+  if (fail) {
+    out.stable = false;
+    out.status = fail->v.status;
+    out.why = std::string("NOT stable [") + to_string(fail->v.status) + "]: " + head + "; " + fail->label + " is " + fail->v.why;
+  } else if (open) {
+    out.why = "undecided: " + head + "; " + open->label + ": " + open->v.why;
+  } else {
+    out.stable = true;
+    out.status = certified ? Status::certified : Status::exact;
+    out.why = std::string("stable [") + to_string(out.status) + "]: " + head + ", each stable:";
+    for (const Part& p : parts) out.why += " " + p.label + ": " + p.v.why + ";";
+    out.why.pop_back();
+  }
+  return out;
+}
+
 }  // namespace
 
 Loop one_dof_loop(const sim::LoopSpec& L) {
@@ -189,8 +239,11 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
               ". A mode no input reaches or no output shows is an eigenvalue of the loop whatever the rest does";
     return out;
   }
-  if (decider == Decider::automatic && one_dof(spec))
+  if (decider != Decider::matrix && one_dof(spec))
     if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
+  std::string no_symmetry;  // why the symmetry of identical DOFs is not used ("" when none)
+  if (decider == Decider::automatic)
+    if (const auto sym = detail::split_by_symmetry(spec, no_symmetry)) return by_symmetry(*sym, out);
   // the discrete blocks' hidden modes are stable: the matrix on their minimal realisations has
   // the same stability and fewer states (sim/hidden_modes.hpp)
   sim::LoopSpec L = spec;
@@ -198,7 +251,9 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
   if (out.hidden.environment_minimal) L.environment = *out.hidden.environment_minimal, reduced = "the environment's";
   if (out.hidden.coupling_minimal) L.coupling = *out.hidden.coupling_minimal, reduced += reduced.empty() ? "the coupling's" : " and the coupling's";
   if (!reduced.empty()) reduced = ", except " + reduced + ", cut to minimal: the loop as written only adds their hidden modes, stable (exact)";
-  return matrix_test(L, out, reduced);
+  LoopVerdict v = matrix_test(L, out, reduced);
+  if (!no_symmetry.empty()) v.why += "; no symmetry of identical DOFs used: " + no_symmetry;
+  return v;
 }
 
 }  // namespace hapstab::stability

@@ -48,8 +48,10 @@ struct LoopVerdict {
 /// Exact M up to this order is decided by Schur-Cohn on det(zI - M); beyond, by balls.
 inline constexpr long kExactOrder = 64;
 
-/// automatic: as above; matrix: step 3 even for one DOF (the campaign and the tests compare the two).
-enum class Decider { automatic, matrix };
+/// automatic: as above, with the split by the permutations of identical DOFs (stability/symmetry.hpp)
+/// before step 3; no_symmetry: without that split (`stability --scene --no-symmetry`); matrix:
+/// step 3 even for one DOF (the campaigns and the tests compare them).
+enum class Decider { automatic, no_symmetry, matrix };
 
 LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider = Decider::automatic);
 

@@ -1,0 +1,254 @@
+// The loop as written split by the permutations of its identical DOFs (see symmetry.hpp).
+#include "hapstab/stability/symmetry.hpp"
+
+#include <map>
+#include <numeric>
+
+namespace hapstab::stability::detail {
+
+namespace {
+
+using MatQ = Mat<rational>;
+
+bool same(const MatQ& a, const MatQ& b) { return a.rows() == b.rows() && a.cols() == b.cols() && a == b; }
+bool same(const StateSpace<rational>& a, const StateSpace<rational>& b) {
+  return a.T == b.T && same(a.A, b.A) && same(a.B, b.B) && same(a.C, b.C) && same(a.D, b.D);
+}
+
+/// The states of a block's realisation that belong to each input column: the connected
+/// components of A's graph fed (B's rows) by exactly one column. A component no input feeds is
+/// left out: it is isolated, so the closed loop is block triangular over it and its eigenvalues
+/// are the block's uncontrollable modes, which decide_loop's step 1 has proven stable (the
+/// caller's premise). nullopt (why) when a component is fed by two columns.
+std::optional<std::vector<std::vector<Eigen::Index>>> column_states(const StateSpace<rational>& E, std::string& why) {
+  const Eigen::Index n = E.states();
+  std::vector<Eigen::Index> parent(static_cast<size_t>(n));
+  std::iota(parent.begin(), parent.end(), Eigen::Index(0));
+  auto root = [&](Eigen::Index i) {
+    while (parent[static_cast<size_t>(i)] != i) i = parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    return i;
+  };
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (E.A(i, k) != 0) parent[static_cast<size_t>(root(i))] = root(k);
+  std::map<Eigen::Index, Eigen::Index> owner;  // component root -> its column
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < E.inputs(); ++j) {
+      if (E.B(i, j) == 0) continue;
+      const auto [it, fresh] = owner.emplace(root(i), j);
+      if (!fresh && it->second != j) {
+        why = "mixes the states of its input columns " + std::to_string(it->second + 1) + " and " + std::to_string(j + 1);
+        return std::nullopt;
+      }
+    }
+  std::vector<std::vector<Eigen::Index>> cols(static_cast<size_t>(E.inputs()));
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (const auto it = owner.find(root(i)); it != owner.end()) cols[static_cast<size_t>(it->second)].push_back(i);
+  return cols;
+}
+
+MatQ rows_cols(const MatQ& M, const std::vector<Eigen::Index>& r, const std::vector<Eigen::Index>& c) {
+  MatQ out(static_cast<Eigen::Index>(r.size()), static_cast<Eigen::Index>(c.size()));
+  for (size_t i = 0; i < r.size(); ++i)
+    for (size_t k = 0; k < c.size(); ++k) out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = M(r[i], c[k]);
+  return out;
+}
+
+/// The operator on each DOF (-1: none); nullopt (why) unless each has one port and each DOF at
+/// most one operator, and each device one DOF.
+std::optional<std::vector<int>> operators_by_dof(const sim::LoopSpec& spec, std::string& why) {
+  for (const auto& d : spec.devices)
+    if (d.dofs() != 1) {
+      why = "device '" + d.name + "' has " + std::to_string(d.dofs()) + " DOFs";
+      return std::nullopt;
+    }
+  std::vector<int> op_of(static_cast<size_t>(spec.dofs()), -1);
+  for (size_t k = 0; k < spec.operators.size(); ++k) {
+    const auto& op = spec.operators[k];
+    if (op.ports.size() != 1) {
+      why = "operator '" + op.name + "' acts on " + std::to_string(op.ports.size()) + " DOFs";
+      return std::nullopt;
+    }
+    int& slot = op_of.at(static_cast<size_t>(op.ports[0]));
+    if (slot >= 0) {
+      why = "two operators on DOF " + std::to_string(op.ports[0] + 1);
+      return std::nullopt;
+    }
+    slot = static_cast<int>(k);
+  }
+  return op_of;
+}
+
+/// A discrete N x N block of the loop (E, or V) with its states by input column.
+struct Block {
+  const char* name;
+  const StateSpace<rational>* G;
+  std::vector<std::vector<Eigen::Index>> cols;
+  const std::vector<Eigen::Index>& own(int i) const { return cols[static_cast<size_t>(i)]; }
+};
+std::vector<Eigen::Index> row(int i) { return {i}; }
+
+/// DOFs i and k alike: device, operator, each block's column and diagonal entry.
+bool alike(const sim::LoopSpec& spec, const std::vector<int>& op_of, const std::vector<Block>& blocks, int i, int k) {
+  const auto &di = spec.devices[static_cast<size_t>(i)], &dk = spec.devices[static_cast<size_t>(k)];
+  if (!same(di.G, dk.G) || di.mass != dk.mass) return false;
+  const int oi = op_of[static_cast<size_t>(i)], ok = op_of[static_cast<size_t>(k)];
+  if ((oi < 0) != (ok < 0)) return false;
+  if (oi >= 0) {
+    const auto &a = spec.operators[static_cast<size_t>(oi)], &b = spec.operators[static_cast<size_t>(ok)];
+    if (!same(a.Z, b.Z) || a.mass != b.mass) return false;
+  }
+  for (const Block& b : blocks) {
+    const StateSpace<rational>& G = *b.G;
+    const auto &ci = b.own(i), &ck = b.own(k);
+    if (ci.size() != ck.size() || !same(rows_cols(G.A, ci, ci), rows_cols(G.A, ck, ck)) ||
+        !same(rows_cols(G.B, ci, {i}), rows_cols(G.B, ck, {k})) || !same(rows_cols(G.C, row(i), ci), rows_cols(G.C, row(k), ck)) ||
+        G.D(i, i) != G.D(k, k))
+      return false;
+  }
+  return true;
+}
+
+/// Every off-diagonal entry (row i, column j) of the block equals its class pair's first one;
+/// else why names the first that does not.
+bool entries_invariant(const Block& b, const std::vector<int>& class_of, size_t r, std::string& why) {
+  const StateSpace<rational>& G = *b.G;
+  const int N = static_cast<int>(class_of.size());
+  std::vector<std::vector<std::optional<std::pair<int, int>>>> first(r, std::vector<std::optional<std::pair<int, int>>>(r));
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      if (i == j) continue;
+      auto& f = first[static_cast<size_t>(class_of[static_cast<size_t>(i)])][static_cast<size_t>(class_of[static_cast<size_t>(j)])];
+      if (!f) {
+        f = std::pair{i, j};
+        continue;
+      }
+      const auto [i0, j0] = *f;
+      if (G.D(i, j) != G.D(i0, j0) || !same(rows_cols(G.C, row(i), b.own(j)), rows_cols(G.C, row(i0), b.own(j0)))) {
+        why = std::string("the ") + b.name + "'s entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) +
+              ") differs from (" + std::to_string(i0 + 1) + ", " + std::to_string(j0 + 1) + ") although DOFs " +
+              std::to_string(i + 1) + " and " + std::to_string(i0 + 1) + ", " + std::to_string(j + 1) + " and " +
+              std::to_string(j0 + 1) + " are alike";
+        return false;
+      }
+    }
+  return true;
+}
+
+/// The block on the fixed space: the states of the classes' first DOFs, its entries summed over
+/// each class's columns.
+StateSpace<rational> fixed_block(const Block& b, const std::vector<std::vector<int>>& classes) {
+  const StateSpace<rational>& G = *b.G;
+  const size_t r = classes.size();
+  std::vector<Eigen::Index> offset(r + 1, 0);
+  for (size_t a = 0; a < r; ++a) offset[a + 1] = offset[a] + static_cast<Eigen::Index>(b.own(classes[a][0]).size());
+  const Eigen::Index nf = offset[r], R = static_cast<Eigen::Index>(r);
+  StateSpace<rational> F{MatQ::Zero(nf, nf), MatQ::Zero(nf, R), MatQ::Zero(R, nf), MatQ::Zero(R, R), G.T};
+  for (size_t a = 0; a < r; ++a) {
+    const int i = classes[a][0];
+    const Eigen::Index na = offset[a + 1] - offset[a];
+    F.A.block(offset[a], offset[a], na, na) = rows_cols(G.A, b.own(i), b.own(i));
+    F.B.block(offset[a], static_cast<Eigen::Index>(a), na, 1) = rows_cols(G.B, b.own(i), {i});
+    for (size_t c = 0; c < r; ++c)
+      for (const int j : classes[c]) {
+        F.C.block(static_cast<Eigen::Index>(a), offset[c], 1, offset[c + 1] - offset[c]) += rows_cols(G.C, row(i), b.own(j));
+        F.D(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(c)) += G.D(i, j);
+      }
+  }
+  return F;
+}
+
+/// The block on the zero-sum vectors of a class (i != j in it): the column block, the diagonal
+/// entry minus the off-diagonal one.
+StateSpace<rational> standard_block(const Block& b, int i, int j) {
+  const StateSpace<rational>& G = *b.G;
+  return StateSpace<rational>{rows_cols(G.A, b.own(i), b.own(i)), rows_cols(G.B, b.own(i), {i}),
+                              rows_cols(G.C, row(i), b.own(i)) - rows_cols(G.C, row(i), b.own(j)),
+                              MatQ::Constant(1, 1, G.D(i, i) - G.D(i, j)), G.T};
+}
+
+/// The devices and operators of these DOFs, renumbered 0.., with the loop's T and delay.
+sim::LoopSpec loop_of(const sim::LoopSpec& spec, const std::vector<int>& op_of, const std::vector<int>& dofs) {
+  sim::LoopSpec L;
+  L.T = spec.T;
+  L.delay = spec.delay;
+  for (size_t k = 0; k < dofs.size(); ++k) {
+    const int i = dofs[k];
+    L.devices.push_back(spec.devices[static_cast<size_t>(i)]);
+    if (op_of[static_cast<size_t>(i)] < 0) continue;
+    sim::OperatorBlock op = spec.operators[static_cast<size_t>(op_of[static_cast<size_t>(i)])];
+    op.ports = {static_cast<int>(k)};
+    L.operators.push_back(op);
+  }
+  return L;
+}
+
+}  // namespace
+
+std::string LoopSymmetry::group() const {
+  std::map<size_t, int> sizes;  // class size -> how many classes
+  for (const auto& c : classes)
+    if (c.size() >= 2) ++sizes[c.size()];
+  std::string g, words;
+  for (auto it = sizes.rbegin(); it != sizes.rend(); ++it) {
+    g += (g.empty() ? "" : " x ") + ("S_" + std::to_string(it->first)) + (it->second > 1 ? "^" + std::to_string(it->second) : "");
+    words += (words.empty() ? "" : ", ") + std::to_string(it->second) + (it->second > 1 ? " classes" : " class") + " of " +
+             std::to_string(it->first) + " identical DOFs";
+  }
+  const size_t singles = classes.size() - static_cast<size_t>(std::accumulate(sizes.begin(), sizes.end(), 0, [](int a, const auto& p) { return a + p.second; }));
+  if (singles) words += ", " + std::to_string(singles) + " DOF" + (singles > 1 ? "s" : "") + " alone";
+  return g + " (" + words + ")";
+}
+
+std::optional<LoopSymmetry> split_by_symmetry(const sim::LoopSpec& spec, std::string& why_not) {
+  why_not.clear();
+  const int N = spec.dofs();
+  if (N < 2 || !spec.environment) return std::nullopt;
+  // the reasons below are named only where two devices are alike (an almost symmetric loop)
+  bool two_alike = false;
+  for (size_t i = 0; i < spec.devices.size() && !two_alike; ++i)
+    for (size_t k = i + 1; k < spec.devices.size() && !two_alike; ++k)
+      two_alike = same(spec.devices[i].G, spec.devices[k].G) && spec.devices[i].mass == spec.devices[k].mass;
+  if (!two_alike) return std::nullopt;
+  const auto op_of = operators_by_dof(spec, why_not);
+  if (!op_of) return std::nullopt;
+  std::vector<Block> blocks{{"environment", &*spec.environment, {}}};
+  if (spec.coupling) blocks.push_back({"coupling", &*spec.coupling, {}});
+  for (Block& b : blocks) {
+    auto cols = column_states(*b.G, why_not);
+    if (!cols) {
+      why_not = std::string("the ") + b.name + "'s realisation " + why_not;
+      return std::nullopt;
+    }
+    b.cols = std::move(*cols);
+  }
+  LoopSymmetry s;
+  std::vector<int> class_of(static_cast<size_t>(N));
+  for (int i = 0; i < N; ++i) {
+    size_t a = 0;
+    while (a < s.classes.size() && !alike(spec, *op_of, blocks, s.classes[a][0], i)) ++a;
+    if (a == s.classes.size()) s.classes.emplace_back();
+    s.classes[a].push_back(i);
+    class_of[static_cast<size_t>(i)] = static_cast<int>(a);
+  }
+  if (s.classes.size() == static_cast<size_t>(N)) return std::nullopt;  // no two DOFs alike: nothing to name
+  for (const Block& b : blocks)
+    if (!entries_invariant(b, class_of, s.classes.size(), why_not)) return std::nullopt;
+  std::vector<int> firsts;
+  for (const auto& c : s.classes) firsts.push_back(c[0]);
+  s.fixed = loop_of(spec, *op_of, firsts);
+  s.fixed.environment = fixed_block(blocks[0], s.classes);
+  if (spec.coupling) s.fixed.coupling = fixed_block(blocks[1], s.classes);
+  for (size_t a = 0; a < s.classes.size(); ++a) {
+    if (s.classes[a].size() < 2) continue;
+    const int i = s.classes[a][0], j = s.classes[a][1];
+    sim::LoopSpec L = loop_of(spec, *op_of, {i});
+    L.environment = standard_block(blocks[0], i, j);
+    if (spec.coupling) L.coupling = standard_block(blocks[1], i, j);
+    s.standard.push_back(std::move(L));
+    s.standard_class.push_back(static_cast<int>(a));
+  }
+  return s;
+}
+
+}  // namespace hapstab::stability::detail
