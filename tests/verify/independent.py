@@ -4,7 +4,7 @@ code and no formula-level shortcut with it (issue 46, "The campaigns that would 
 these"; docs/verification.md, "Independent campaigns").
 
   tests/verify/independent.py [--hapstab build/hapstab]
-                              [--criterion bound,bound_max,stability_max,scene_max,scene_coupling,charpoly,conservatism,witness,coupling_witness]
+                              [--criterion bound,bound_long,bound_max,stability_max,stability_long,scene_max,scene_coupling,charpoly,symmetry,conservatism,witness,coupling_witness]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -19,6 +19,10 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  built here (ZOH by mpmath.expm, controller realisations, a shift register for the
                  delay), its spectral radius by mpmath.eig at 50 digits, scanned from K -> 0+
                  (indep_loop.py).
+  stability_long `stability --max K` as above with delays of 201-1500 samples (the long-delay path and its
+                 gain floor, issue 48): the crossings solved here on a 64-point-per-sample grid of
+                 Im K(theta), K = -(z^n + G H0)/(G H1), each bisected; stability below by numpy's
+                 eigenvalues, those within 1e-5 of the circle polished by Newton at 40 digits.
   scene_max      `stability --scene S --max g` on random 2-3 DOF scenes whose first device is often
                  open-loop unstable: the same reference on the loop built from the scene's blocks.
                  Any certified supremum with an unstable g in (0, sup) is a miss.
@@ -33,6 +37,10 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  the verdict is Schur-Cohn on lti/realization.cpp's exact charpoly beyond order 48:
                  M built exactly in fractions, det(zI - M) by Hessenberg reduction, Schur-Cohn in
                  fractions (indep_charpoly.py).
+  symmetry       `stability --scene S` on scenes of N = 2-32 DOFs in 1-3 classes of identical devices,
+                 operators and environment entries (issue 48 item 2: the split by the permutations
+                 of identical DOFs): the loop built here (indep_loop) and its spectral radius in
+                 double, and hapstab --no-symmetry (the whole matrix) beside it.
   conservatism   `stability --scene S --max g --conservatism` where both regions can be intervals
                  (g the environment's gain, E strictly proper so the loop stays affine beside a
                  coupling with feedthrough, operators b + k/s so M(0) is Schur stable): the exact
