@@ -9,6 +9,10 @@
 //     stability/sampled_loop.hpp on the transfer functions (device behind the ZOH, operator,
 //     E or E/(1 + E V), z^-n); modes that E/(1 + E V) cancels are checked exactly. Its every
 //     mode counts (the blocks' hidden modes are step 1).
+//  2b. Identical DOFs (stability/symmetry.hpp): a loop invariant under the permutations of its
+//     identical DOFs (proven exactly on the realisations) has the spectrum of the loop on the
+//     fixed space and of one one-DOF loop per class: each is decided by these steps, and the loop
+//     is stable iff every one is (Decider::automatic only).
 //  3. Otherwise (and where step 2 refuses a size): the closed-loop matrix M of
 //     sim/closed_loop.hpp from the realisations as written -- except that an environment or a
 //     coupling whose hidden modes step 1 proved stable enters as its minimal realisation: M as
