@@ -593,7 +593,8 @@ def case_stability_long(rng):
     G = C (zI - Phi)^-1 Gamma from the loop's own ZOH (mpmath expm), Im of
     K(theta) = -(z^n + G H0)/(G H1) on a grid of 64 points per sample of delay, each sign change
     refined by bisection, the smallest positive K among them and at z = +-1; stability below it
-    by the loop matrix's eigenvalues (numpy) at K*/1000 and at K* (1 - 1e-6)."""
+    by the loop matrix's eigenvalues (numpy; those near the circle polished, rho_polished) at
+    K*/1000 and at K* (1 - 1e-6)."""
     c = IL.gen_stability(rng)
     c["n"] = rng.randint(201, 1500)
     c["tags"]["delay"] = "201-1500"
@@ -841,8 +842,8 @@ def check_symmetry(c, exe, timeout):
         out.update(outcome="MISS", why=f"with the symmetry {v}, the whole matrix {vw}")
     elif rc in (2, 3) or v is None:
         out.update(outcome="refused" if rc == 2 else "undecided", why=why_of(err, j))
-    elif near:
-        out.update(outcome="agree" if vw is None or v == vw else "MISS", why="the reference is too near the circle to say")
+    elif near:  # not compared: only the whole matrix, which shares code with the split, could say
+        out.update(outcome="reference too near the circle", why=f"rho = {rho!r}; hapstab --no-symmetry agrees")
     elif v != (rho < 1):
         out.update(outcome="MISS", why=f"hapstab: {'stable' if v else 'NOT stable'} ({j.get('method')}); rho = {rho!r}")
     else:
