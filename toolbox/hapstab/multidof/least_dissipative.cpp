@@ -1,7 +1,8 @@
 // hapstab/multidof/least_dissipative.cpp -- the least dissipative coupling after a feasible
 // Theorem 5 verdict (analysis.hpp: minimise ||Q_V||_2 subject to (16)), planned like the verdict
 // (plan_least_dissipative): the structured Riccati bisection when X is pinned and
-// Delta_D X = d I, else the generic program when it fits the size limit. Each point is re-checked
+// Delta_D X = d I, else the generic program when it has at most limits::least_dissipative_unknowns
+// unknowns (a verdict of seconds is not held minutes for this optional step). Each point is re-checked
 // by the one exact re-check (recheck.cpp); its minimality is numeric, never certified.
 //
 // Implements: paper 000 (16) with the objective of Sec. VI (least dissipative coupling).
@@ -12,6 +13,7 @@
 
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::multidof {
 
@@ -172,6 +174,16 @@ std::optional<detail::KypMinPoint> detail::kyp_min_point(const Problem& pb, cons
 void detail::plan_least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt,
                                     const std::optional<Pinned>& px, AnalysisResult& res) {
   if (px && kyp_least_dissipative(pb, sp, *px, res)) return;
+  const double n = static_cast<double>(pb.E.states()), m = pb.structure.m();
+  const double unknowns = n * (n + 1) / 2 + m * (m + 1);
+  if (unknowns > limits::least_dissipative_unknowns) {  // the verdict stands; the optional search is bounded
+    const std::string why = "its generic SDP has about " + std::to_string(static_cast<long>(unknowns)) +
+                            " scalar unknowns, more than the " +
+                            std::to_string(static_cast<long>(limits::least_dissipative_unknowns)) +
+                            " this optional search is run for (numeric/limits.hpp)";
+    res.solver_detail += "; least dissipative coupling not searched: " + why;
+    return;
+  }
   const std::string why =
       generic_size_exceeded(pb, 2L * pb.structure.m() * (pb.structure.m() + 1), "the least dissipative coupling's SDP");
   if (!why.empty()) {  // the verdict stands; only the optional minimisation is skipped

@@ -79,6 +79,12 @@ inline constexpr long closed_loop_states = 1500;
 /// before the program is posed: a scene whose structure needs the generic path beyond it is
 /// refused, naming the order that makes it so.
 inline constexpr double generic_sdp_bytes = 2e9;
+/// Scalar unknowns of the OPTIONAL least-dissipative program that `multidof analyze` runs after a
+/// feasible verdict (multidof/least_dissipative.cpp) on the generic SDP: a 4-DOF contact scene
+/// behind 14 samples (62 states, ~2000 unknowns) spent over 4 minutes in DSDP there after its
+/// verdict took a second (the witness certificate's mutation campaign, issue 47). Beyond it the
+/// search is skipped and the output says so; the verdict and its certified point stand.
+inline constexpr double least_dissipative_unknowns = 600;
 
 /// Decimal digits of the integer part of an argument reduced modulo 2 pi (r(jw) of paper 001 at
 /// |w T| < 10^this: `hapstab r`). The reduction computes pi to that many digits (10^5 digits:
