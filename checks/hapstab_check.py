@@ -77,7 +77,14 @@ limit-cycle  a periodic orbit of paper 002's loop (4), y = -k H(z) x, x = max(y,
        the amplitude (max - min)/2, its printed decimal (half a unit), the samples with y < -rho exact;
        attracting iff the product J of the steps' companion Jacobians is Schur stable (Faddeev-LeVerrier,
        schur_cohn), claimed only when no sample lies on y = -rho.
-Size limit: limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
+multidof-witness  paper 000's Theorem 5 program (16) infeasible for the scene's environment as written
+       (E(z) entries, in z or in s by backward Euler/Tustin, its gain, the delay z^-n, the devices' levels
+       Delta_D, the operators): every point of (16) has phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T Delta_D X u
+       > 0, E-hat = T z/(z-1) z^-n g E (11); the admissible X have X E(1) symmetric (else phi -> -inf at
+       theta -> 0+), one multiplier per group of operators coupled through the symmetric E(1). Route: the
+       s-entries parsed with s the rational function of z itself, evaluated at the rational z of the
+       evidence in Gaussian rationals; phi per group <= 0, one < 0.
+Size limit: multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -2476,6 +2483,193 @@ def check_limit_cycle(c):
     return True, why
 
 
+# ---------------------------------------------------------------- multidof-witness
+MAX_WITNESS_DOFS = 64  # m: m^2 entries parsed and evaluated exactly in fractions
+
+
+def env_entries(model, T, params):
+    """E(z) as written, each entry a rational function of z: an s-domain entry parsed with s itself
+    the rational function (z - 1)/(T z) (backward Euler) or 2(z - 1)/(T (z + 1)) (Tustin), so the
+    substitution is done symbolically here (hapstab's checker evaluates N(s)/D(s) homogeneously)."""
+    env = model.get("environment")
+    if not isinstance(env, dict):
+        raise Malformed("model.environment: missing or not an object")
+    only(env, ("domain", "method", "gain", "E"), "model.environment")
+    domain = env.get("domain")
+    if domain not in ("z", "s"):
+        raise Malformed("model.environment.domain: must be \"z\" or \"s\"")
+    zvar = RF([Fraction(0), Fraction(1)])
+    if domain == "s":
+        method = env.get("method")
+        if method == "backward_euler":
+            sub = RF([Fraction(-1), Fraction(1)], [Fraction(0), T])
+        elif method == "tustin":
+            sub = RF([Fraction(-2), Fraction(2)], [T, T])
+        else:
+            raise Malformed("model.environment.method: must be \"backward_euler\" or \"tustin\" with domain \"s\"")
+        leaf = lambda kind, txt, value: sub if kind == 'var' else RF([value])
+    else:
+        if "method" in env:
+            raise Malformed("model.environment.method: only with domain \"s\"")
+        leaf = None
+    g = exact(env, "gain", "model.environment")
+    E = env.get("E")
+    if not isinstance(E, list) or not E or len(E) > MAX_WITNESS_DOFS:
+        if isinstance(E, list) and len(E) > MAX_WITNESS_DOFS:
+            raise TooLarge("model.environment.E: %d DOFs, above this checker's limit of %d" % (len(E), MAX_WITNESS_DOFS))
+        raise Malformed("model.environment.E: must be an m x m array of strings")
+    m = len(E)
+    out = []
+    for i, row in enumerate(E):
+        if not isinstance(row, list) or len(row) != m:
+            raise Malformed("model.environment.E[%d]: a row of %d strings" % (i, m))
+        out.append([])
+        for j, e in enumerate(row):
+            where = "model.environment.E[%d][%d]" % (i, j)
+            if not isinstance(e, str):
+                raise Malformed(where + ": not a string")
+            try:
+                out[-1].append(parse_h(e, T, params, var=domain, field=where, leaf=leaf))
+            except ZeroDivisionError:
+                raise Malformed(where + ": division by zero")
+    return out, g
+
+
+def rf_at(h, z):
+    """h(z) for a Gaussian rational z, or None at a pole."""
+    def horner(p):
+        r = cq(0)
+        for c in reversed(p):
+            r = cq_add(cq_mul(r, z), cq(c))
+        return r
+    d = horner(h.den)
+    if d == (0, 0):
+        return None
+    return cq_div(horner(h.num), d)
+
+
+def witness_levels(model, m):
+    devs = model.get("devices")
+    if not isinstance(devs, list) or not devs:
+        raise Malformed("model.devices: missing or not a non-empty array")
+    delta = []
+    for d, dev in enumerate(devs):
+        where = "model.devices[%d]" % d
+        if not isinstance(dev, dict):
+            raise Malformed(where + ": not an object")
+        only(dev, ("dofs", "m", "b", "osp"), where)
+        k = dev.get("dofs")
+        if not isinstance(k, int) or isinstance(k, bool) or k < 1:
+            raise Malformed(where + ".dofs: missing or not a positive integer")
+        if "osp" in dev:
+            if "m" in dev or "b" in dev:
+                raise Malformed(where + ": osp beside m, b")
+            level = exact(dev, "osp", where)
+        else:
+            if k != 1:
+                raise Malformed(where + ": a mass-damper has one DOF")
+            if exact(dev, "m", where) <= 0:
+                raise Malformed(where + ".m: must be > 0")
+            level = exact(dev, "b", where)  # Re(1/G(jw)) = Re(m jw + b) = b
+        delta += [level] * k
+        if len(delta) > m:
+            break
+    if len(delta) != m:
+        raise Malformed("model.devices: their DOFs do not add up to E's %d" % m)
+    return delta
+
+
+def check_multidof_witness(c):
+    """Paper 000's (16) infeasible for every admissible X: phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T
+    Delta_D X u > 0 at every point of (16) (M1 <= 0 at [x; u], x = (zI - A)^-1 B u, and Delta_D X - Q_E
+    > 0 by (14)); X E(1) must be symmetric (else phi -> -inf as theta -> 0+, E-hat ~ (T/2)(1 - j
+    cot(theta/2)) E(1)), which for a symmetric E(1) makes g equal on operators E(1) couples; the
+    evidence holds when phi_c <= 0 on every such group and < 0 on one (phi_X = sum g_c phi_c < 0)."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
+    only(claim, ("status", "feasible"), "claim")
+    only(ev, ("z_re", "z_im", "u"), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("feasible"), bool):
+        raise Malformed("claim.feasible: missing or not true/false")
+    if claim["feasible"]:
+        return False, "the claim is that (16) is feasible; a witness proves only infeasibility"
+    T, n = period(model), delay_of(model)
+    E, g = env_entries(model, T, parameters(model))
+    m = len(E)
+    delta = witness_levels(model, m)
+    ops = model.get("operators")
+    if not isinstance(ops, list) or not ops:
+        raise Malformed("model.operators: missing or not a non-empty array")
+    owner = [None] * m
+    for o, dofs in enumerate(ops):
+        if not isinstance(dofs, list) or not dofs:
+            raise Malformed("model.operators[%d]: a non-empty array of DOF indices" % o)
+        for v in dofs:
+            if not isinstance(v, int) or isinstance(v, bool) or not 0 <= v < m or owner[v] is not None:
+                raise Malformed("model.operators[%d]: %r is not a free DOF index in [0, %d)" % (o, v, m))
+            owner[v] = o
+    if None in owner:
+        raise Malformed("model.operators: DOF %d has no operator" % owner.index(None))
+    one = cq(1)
+    E1 = [[rf_at(h, one) for h in row] for row in E]
+    for i in range(m):
+        for j in range(m):
+            if E1[i][j] is None:
+                raise Malformed("model.environment.E[%d][%d]: a pole at z = 1 (E(1) must be finite)" % (i, j))
+    for i in range(m):
+        for j in range(m):
+            if E1[i][j] != E1[j][i]:
+                raise Malformed("model.environment.E: E(1) is not symmetric (%d, %d): outside this kind" % (i, j))
+    group = list(range(len(ops)))  # the operators E(1) couples share one multiplier
+
+    def find(a):
+        while group[a] != a:
+            a = group[a]
+        return a
+    for i in range(m):
+        for j in range(m):
+            if E1[i][j][0] != 0:
+                group[find(owner[i])] = find(owner[j])
+    z = (exact(ev, "z_re", "evidence"), exact(ev, "z_im", "evidence"))
+    if z[0] * z[0] + z[1] * z[1] != 1:
+        return False, "z is not on the unit circle"
+    if z == (1, 0):
+        return False, "z = 1 is E-hat's pole"
+    u = ev.get("u")
+    if not isinstance(u, list) or len(u) != m:
+        raise Malformed("evidence.u: must be %d \"p/q\" strings" % m)
+    u = [exact_value(x, "evidence.u[%d]" % i) for i, x in enumerate(u)]
+    if all(x == 0 for x in u):
+        return False, "u = 0"
+    zc, zn = (z[0], -z[1]), cq(1)
+    k = n
+    while k:  # conj(z)^n = z^-n on the circle
+        if k & 1:
+            zn = cq_mul(zn, zc)
+        zc = cq_mul(zc, zc)
+        k >>= 1
+    f = cq_mul(cq_mul(cq(T * g), cq_div(z, cq_sub(z, cq(1)))), zn)
+    phi = {}
+    for i in range(m):
+        w = cq(0)
+        for j in range(m):
+            if u[j] == 0:
+                continue
+            v = rf_at(E[i][j], z)
+            if v is None:
+                return False, "z is a pole of E[%d][%d]" % (i, j)
+            w = cq_add(w, cq_mul(v, cq(u[j])))
+        r = find(owner[i])
+        phi[r] = phi.get(r, Fraction(0)) + u[i] * cq_mul(f, w)[0] + delta[i] * u[i] * u[i]
+    if any(v > 0 for v in phi.values()):
+        return False, "phi > 0 on a group of operators: the witness does not hold for every admissible X"
+    if all(v == 0 for v in phi.values()):
+        return False, "phi = 0 on every group: no strict witness"
+    return True, "(16) infeasible: phi <= 0 on %d group(s) of operators, < 0 on one" % len(phi)
+
+
 # ---------------------------------------------------------------- driver
 def check(c):
     """(exit code, reason): 0 verified, 1 refuted, 2 malformed, 3 not checked (too large)."""
@@ -2487,7 +2681,7 @@ def check(c):
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
-                    "passivity-level": check_passivity_level,
+                    "multidof-witness": check_multidof_witness, "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")

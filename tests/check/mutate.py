@@ -15,7 +15,9 @@ stable or NOT stable; its mutants include a producer that built another loop -- 
 doubled -- with that loop's polynomial and verdict, consistently), `stability-max` (`stability --max`
 on random one-DOF loops: K_max finite, exact, 0; mutants move lo past the crossing, hi below it,
 stable_at and unstable_at, and edit the model) and `wedge` (random H(z) of five
-families: the five exact verdicts of paper 002's criteria and assumptions) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
+families: the five exact verdicts of paper 002's criteria and assumptions) and `multidof-witness`
+(tests/check/mutate_multidof.py: `multidof analyze --certificate` on the witness campaign's random
+scenes, where a frequency witness proved (16) infeasible) with `hapstab ... --certificate`, perturbs each in many ways, and runs both checkers
 on every mutant: `hapstab check --batch` (check/) and checks/hapstab_check.py (imported; it shares
 no code with hapstab). Every mutant carries what must happen:
   accept     the claim is true and its evidence intact (the unmutated certificate; an enclosure
@@ -48,6 +50,7 @@ from fractions import Fraction
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "checks"))
 import hapstab_check  # noqa: E402  (the independent checker)
+import mutate_multidof  # noqa: E402  (the multidof-witness kind)
 
 TEMPLATES = [
     ("K + B*(z-1)/(T*z)", ["K", "B"]),                        # virtual wall, backward difference (001)
@@ -1452,7 +1455,7 @@ def rand_r(rng):
 
 
 KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge",
-         "bound-inf", "limit-cycle")
+         "bound-inf", "limit-cycle", "multidof-witness")
 
 
 def bound_produce(hapstab, m, digits, path, label, certs, skipped):
@@ -1546,6 +1549,13 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
             skipped["limit-cycle: exit %s" % cert] = skipped.get("limit-cycle: exit %s" % cert, 0) + 1
             continue
         certs.append(("limit-cycle", cert))
+    wrng = random.Random(a.seed * 1000 + 51)  # multidof-witness's own stream
+    for i in range(max(a.models // 2, 2) if "multidof-witness" in kinds else 0):
+        cert = mutate_multidof.produce(a.hapstab, wrng, tmp, i)
+        if not isinstance(cert, dict):
+            skipped["multidof-witness: " + cert] = skipped.get("multidof-witness: " + cert, 0) + 1
+            continue
+        certs.append(("multidof-witness", cert))
     return certs, skipped
 
 
@@ -1567,6 +1577,8 @@ def print_new_branches(certs):
             sum(1 for c in infs if c["evidence"]["side"] == 1), sum(1 for c in infs if c["evidence"]["side"] == -1),
             sum(1 for c in infs if c["evidence"]["pole_c"] == "1"), sum(1 for c in infs if c["evidence"]["pole_c"] == "0"),
             sum(1 for c in infs if c["evidence"]["pole_c"] not in ("0", "1"))))
+    if mutate_multidof.branches(certs):
+        print(mutate_multidof.branches(certs))
     wedges = [c for k, c in certs if k == "wedge"]
     if wedges:
         print("  wedge branches: k* +inf %d, finite %d, numeric (not claimed) %d (of both criteria)" % (
@@ -1662,6 +1674,8 @@ def main():
             ms = inf_mutants(cert, irng, a.hapstab, cache)
         elif kind == "limit-cycle":
             ms = lc_mutants(cert, lrng, a.hapstab, scache, tmp)
+        elif kind == "multidof-witness":
+            ms = mutate_multidof.mutants(cert, lrng)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         for name, c, expect in ms:

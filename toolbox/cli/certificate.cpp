@@ -149,27 +149,6 @@ nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
   return m;
 }
 
-nlohmann::json header(const char* kind) {
-  nlohmann::json j;
-  j["certificate"] = "hapstab";
-  j["version"] = 1;
-  j["kind"] = kind;
-  j["produced_by"] = std::string("hapstab ") + HAPSTAB_VERSION;  // informative; no time: the same model gives the same file
-  return j;
-}
-
-// The printed claim proven by check/, or no certificate (never a weaker claim written silently).
-void verify_before_writing(const nlohmann::json& j) {
-  check::Verdict v;
-  try {
-    v = check::check_certificate(j);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
-  }
-  if (!v.verified)
-    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
-}
-
 // b* = +inf: the claim, and the first rational pole c_p of the objective in the band (a root of
 // its denominator, met exactly or by a convergent of a refined isolating interval) and side that
 // check/ verifies (the objective -> +inf there, check/bound_objective.hpp); InputError when none
@@ -201,6 +180,28 @@ nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, c
 
 }  // namespace
 
+nlohmann::json certificate_header(const char* kind) {
+  nlohmann::json j;
+  j["certificate"] = "hapstab";
+  j["version"] = 1;
+  j["kind"] = kind;
+  j["produced_by"] = std::string("hapstab ") + HAPSTAB_VERSION;  // informative; no time: the same model gives the same file
+  return j;
+}
+
+// The printed claim proven by check/, or no certificate (never a weaker claim written silently).
+void verify_before_writing(const nlohmann::json& j) {
+  check::Verdict v;
+  try {
+    v = check::check_certificate(j);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this model (") + e.what() + "): no certificate");
+  }
+  if (!v.verified)
+    throw InputError("--certificate: the evidence does not prove the printed claim (" + v.reason + "): no certificate");
+}
+
+
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits) {
   if (tf.H.empty())
@@ -208,7 +209,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
-  nlohmann::json j = header("bound");
+  nlohmann::json j = certificate_header("bound");
   nlohmann::json m;
   m["H"] = tf.H;
   m["set"] = sets_json(tf.sets);
@@ -250,7 +251,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
   check_certificate_size(g.base.H, g.base);
   check_certificate_size(g.H1, g.base);
-  nlohmann::json j = header("bound-max");
+  nlohmann::json j = certificate_header("bound-max");
   nlohmann::json mo;
   mo["H"] = tf.H;
   mo["set"] = sets_json(tf.sets);
@@ -316,7 +317,7 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   if (!is_level || !c.enclosure)
     throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
                      "on the unit circle): no certificate");
-  nlohmann::json j = header("passivity-level");
+  nlohmann::json j = certificate_header("passivity-level");
   j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
   nlohmann::json claim;
   claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
@@ -387,7 +388,7 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
   if (osp && c.enclosure->lo <= 0)
     throw InputError("--certificate: an OSP value <= 0 bounds Lemma 1's level only from above (it is not the level): no "
                      "certificate");
-  nlohmann::json j = header("passivity-level-mimo");
+  nlohmann::json j = certificate_header("passivity-level-mimo");
   j["model"] = {{"A", matrix_json(sys.A)}, {"B", matrix_json(sys.B)}, {"C", matrix_json(sys.C)},
                 {"D", matrix_json(sys.D)}, {"T", sys.T.str()}, {"kind", osp ? "osp" : "isp"}};
   nlohmann::json claim;
@@ -420,7 +421,7 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
 }
 
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits) {
-  nlohmann::json j = header("r");
+  nlohmann::json j = certificate_header("r");
   j["model"] = {{"T", T.str()}, {"omega", omega.str()}};
   const rational im = parse_rational(printed_im, "Im r");
   rational u = abs(im);
@@ -472,7 +473,7 @@ nlohmann::json stability_evidence(const stability::Loop& loop) {
 nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
                                      const stability::StabilityResult& r, const nlohmann::json& evidence) {
   if (!r.verdict.decided()) throw InputError("--certificate: the verdict is undecided: there is no claim to certify");
-  nlohmann::json j = header("stability");
+  nlohmann::json j = certificate_header("stability");
   j["model"] = loop_model_json(text, loop.T);
   j["claim"] = {{"quantity", "Schur stability of the sampled loop: device P(s) behind a zero-order hold, force = -z^-n H(z) x(kT)"},
                 {"stable", r.verdict.holds()},
@@ -522,7 +523,7 @@ nlohmann::json stability_max_certificate(const StabilityText& text, const std::s
                      ", beyond the checkers' limit of 150 (D(" + K + ") = Res_z(c, c*) has degree up to twice that)");
   if (m.outcome == Outcome::undecided || (m.status != Status::exact && m.status != Status::certified))
     throw InputError("--certificate: sup " + K + " is not decided here: there is no claim to certify");
-  nlohmann::json j = header("stability-max");
+  nlohmann::json j = certificate_header("stability-max");
   j["model"] = loop_model_json(text, loop.T);
   j["model"]["name"] = K;
   nlohmann::json claim{{"quantity", K + "_max = sup{" + K + "0 > 0 : the loop is stable for every " + K + " in (0, " + K +
@@ -627,7 +628,7 @@ nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnal
   if (a.assumptions.pole_on_unit_circle || !a.wedge.evaluated() || !a.tsypkin.evaluated())
     throw InputError("--certificate: H has a pole on the unit circle (the criteria are then limits, or not evaluated): "
                      "no certificate");
-  nlohmann::json j = header("wedge");
+  nlohmann::json j = certificate_header("wedge");
   j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
   j["claim"] = {{"quantity", "Tsai & Colgate (paper 002): wedge criterion (25), Tsypkin's condition (21), the assumptions of Sec. 2"},
                 {"status", "exact"},
@@ -651,7 +652,7 @@ nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, c
     throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   if (!orbit.found || orbit.y.empty()) throw InputError("--certificate: no periodic orbit was proven: no claim to certify");
   if (order < 1) throw InputError("--certificate: H is a constant: the loop has no state, so no orbit to certify");
-  nlohmann::json j = header("limit-cycle");
+  nlohmann::json j = certificate_header("limit-cycle");
   j["model"] = {{"H", tf.H},
                 {"set", sets_json(tf.sets)},
                 {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()},

@@ -1,4 +1,5 @@
-// cli/certificate.hpp -- `--certificate FILE` of `bound`, `limit-cycle --exact`, `passivity-level` (SISO --H, MIMO --ss), `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
+// cli/certificate.hpp -- `--certificate FILE` of `bound`, `limit-cycle --exact`, `multidof analyze`
+// (cli/multidof_certificate.hpp), `passivity-level` (SISO --H, MIMO --ss), `r`, `stability` (and its --max) and `wedge` (issue 47): the JSON a reviewer
 // checks with `hapstab check FILE` or checks/hapstab_check.py without trusting the producer.
 // Each holds the model as written (exact "p/q" strings), the claim (the printed numbers,
 // exactly) and the evidence; docs/certificates.md has the format. The producer side may use any
@@ -106,6 +107,12 @@ nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnal
 /// InputError (exit 2, no file) naming what fails.
 nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, const rational& rho,
                                        const contact::ExactOrbit& orbit, int order);
+
+/// A certificate's envelope: certificate, version, kind, produced_by (every producer starts here).
+nlohmann::json certificate_header(const char* kind);
+/// check/ verifies the certificate before it is written: InputError (exit 2, no file) naming what
+/// fails, never a weaker claim written silently.
+void verify_before_writing(const nlohmann::json& certificate);
 
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);

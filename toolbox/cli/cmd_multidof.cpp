@@ -1,4 +1,5 @@
-// `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]`
+// `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]
+//                         [--certificate FILE]` (the multidof-witness certificate: cli/multidof_certificate.hpp)
 // `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N]`
 // A run longer than 2 s names its stages on stderr (cli/progress.hpp); --quiet silences them.
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
@@ -49,8 +50,10 @@
 #include <sstream>
 #include <memory>
 
+#include "cli/certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
+#include "cli/multidof_certificate.hpp"
 #include "cli/progress.hpp"
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/example.hpp"
@@ -64,7 +67,7 @@ namespace {
 using nlohmann::json;
 
 struct Opts {
-  std::string scene, backend = "auto";
+  std::string scene, backend = "auto", certificate;
   double duration = 10;
   std::vector<std::string> sets;
   bool json = false, quiet = false;
@@ -194,6 +197,7 @@ scene::Scene read_scene(const Opts& o, double& seconds) {
 
 int run_analyze(const Opts& o) {
   multidof::SceneAnalysisOptions opt;
+  scene::Scene sc;
   opt.lmi = lmi_options(o);
   const multidof::SceneAnalysis a = [&] {  // the progress ends (its shares printed) before the results
     StageProgress progress("multidof analyze",
@@ -201,10 +205,15 @@ int run_analyze(const Opts& o) {
                             "the loop as written"},
                            o.quiet);
     progress.stage();
-    const auto sc = read_scene(o, opt.load_seconds);
+    sc = read_scene(o, opt.load_seconds);
+    if (!o.certificate.empty())  // refused before the analysis runs when the model cannot be written
+      if (const std::string why = multidof_certificate_premise(sc); !why.empty())
+        throw InputError("--certificate: " + why + ": no certificate");
     opt.stage = [&progress](const std::string& name) { progress.stage(name); };
     return multidof::analyze_scene(sc, opt);
   }();
+  if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
+    write_certificate(o.certificate, multidof_witness_certificate(sc, a));
   const auto& sp = a.scene;
   const auto& r = a.lmis;
   const auto& law = a.loop;
@@ -453,6 +462,11 @@ const Register multidof_cmd({"multidof",
                                  sub->add_flag("--quiet", o->quiet, "No progress on stderr (shown for runs longer than 2 s)");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
                                  sub->add_option("--backend", o->backend, "SDP back-end: auto (default: the built-in IPM, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
+                                 if (nm == "analyze")
+                                   sub->add_option("--certificate", o->certificate,
+                                                   "write the certificate of (16) infeasible by a frequency witness (JSON) to "
+                                                   "FILE, for `hapstab check FILE` (other verdicts have no kind yet: refused, "
+                                                   "exit 2; docs/certificates.md)");
                                  if (std::string(name) == "design")
                                    sub->add_option("--iterations", o->iterations, "Maximum CCL iterations (default 40)");
                                  sub->callback([mode, name]() { *mode = name; });

@@ -5,6 +5,7 @@
 //   bound   b* of paper 001 (45)/(54), any delay          check/bound_check.hpp
 //   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
 //   limit-cycle  a periodic orbit of paper 002's loop (4) check/limit_cycle_check.hpp
+//   multidof-witness  Theorem 5's (16) infeasible, paper 000  check/multidof_witness_check.hpp
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   passivity-level-mimo  MIMO ISP level of A, B, C, D    check/passivity_level_mimo_check.hpp
 //   r       r(jw) = T/(e^{jwT} - 1) of paper 001 (44)     check/r_check.hpp

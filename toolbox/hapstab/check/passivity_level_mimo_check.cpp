@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hapstab/check/bound_objective.hpp"
+#include "hapstab/check/gaussian_rational.hpp"
 #include "hapstab/check/interpolate.hpp"
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/schur_cohn.hpp"
@@ -18,22 +19,6 @@ namespace hapstab::check {
 namespace {
 
 using P = Polynomial<rational>;
-
-// ---- exact Gaussian rationals x + jy
-struct Cq {
-  rational re, im;
-  Cq() = default;
-  Cq(rational r, rational i = rational(0)) : re(std::move(r)), im(std::move(i)) {}
-  bool is_zero() const { return re.is_zero() && im.is_zero(); }
-};
-Cq operator+(const Cq& a, const Cq& b) { return {a.re + b.re, a.im + b.im}; }
-Cq operator-(const Cq& a, const Cq& b) { return {a.re - b.re, a.im - b.im}; }
-Cq operator*(const Cq& a, const Cq& b) { return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re}; }
-Cq operator/(const Cq& a, const Cq& b) {
-  const rational n = b.re * b.re + b.im * b.im;
-  return {(a.re * b.re + a.im * b.im) / n, (a.im * b.re - a.re * b.im) / n};
-}
-Cq conj(const Cq& a) { return {a.re, -a.im}; }
 
 using Mat = std::vector<std::vector<rational>>;
 using CMat = std::vector<std::vector<Cq>>;

@@ -1,0 +1,134 @@
+// cli/multidof_certificate.cpp -- see multidof_certificate.hpp.
+#include "cli/multidof_certificate.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "cli/certificate.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/scene/schema.hpp"
+
+namespace hapstab::cli {
+
+namespace {
+
+const toml::table* environment_table(const scene::Scene& sc) { return sc.root["environment"].as_table(); }
+
+// The environment's expressions as written: `tf` a string (one DOF) or an m x m array of strings.
+std::optional<std::vector<std::vector<std::string>>> written_entries(const toml::table& env) {
+  const toml::node* tf = env.get("tf");
+  if (!tf) return std::nullopt;
+  if (const auto* s = tf->as_string()) return std::vector<std::vector<std::string>>{{s->get()}};
+  const auto* rows = tf->as_array();
+  if (!rows) return std::nullopt;
+  std::vector<std::vector<std::string>> E;
+  for (const auto& r : *rows) {
+    const auto* row = r.as_array();
+    if (!row) return std::nullopt;
+    E.emplace_back();
+    for (const auto& e : *row) {
+      const auto* s = e.as_string();
+      if (!s) return std::nullopt;
+      E.back().push_back(s->get());
+    }
+  }
+  return E;
+}
+
+// A mass-damper 1/(m s + b) (one DOF): (m, b), exactly as the scene reader realised it.
+std::optional<std::pair<rational, rational>> mass_damper(const sim::DeviceBlock& dev) {
+  if (!dev.mass || dev.dofs() != 1 || dev.G.states() != 1) return std::nullopt;
+  return std::make_pair(1 / dev.G.B(0, 0), -dev.G.A(0, 0) / dev.G.B(0, 0));
+}
+
+// The environment's gain (a number or a parameter's name), exactly.
+rational gain_of(const scene::Scene& sc, const toml::table& env) {
+  const toml::node* g = env.get("gain");
+  if (!g) return rational(1);
+  if (const auto* i = g->as_integer()) return rational(i->get());
+  const auto* s = g->as_string();
+  if (!s) throw InputError("--certificate: environment.gain is neither an integer nor a string");
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = sc.T;
+  po.parameters = sc.parameters;
+  const TransferFunction G = parse_tf(s->get(), po);
+  if (G.num().degree() > 0 || G.den().degree() > 0) throw InputError("--certificate: environment.gain is not a number");
+  return G.num().coeff(0) / G.den().coeff(0);
+}
+
+}  // namespace
+
+std::string multidof_certificate_premise(const scene::Scene& sc) {
+  const toml::table* env = environment_table(sc);
+  if (!env) return "the scene has no [environment]";
+  const auto E = written_entries(*env);
+  if (!E) return "the environment is not given by `tf` expressions (an `ss` or `diagonal` environment has no certificate kind yet)";
+  for (const auto& row : *E)
+    for (const auto& e : row)
+      if (e.find('[') != std::string::npos) return "an environment entry names a list parameter ('" + e + "')";
+  const auto md = scene::multidof_values(sc);
+  if (md.perturb_C) return "multidof.perturb_C changes E's output map: the certificate's model would not be E as written";
+  if (!md.osp)
+    for (const auto& dev : sc.loop.devices)
+      if (!mass_damper(dev))
+        return "device '" + dev.name + "' is not a mass-damper and declares no `osp`: its OSP level is a certified "
+               "bound, not an exact number a certificate can hold";
+  return "";
+}
+
+nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
+  const auto& r = a.lmis;
+  if (!r.witness) {
+    const std::string what = a.feasible ? "a feasible (16) (P, X and the slack)"
+                             : r.weighted_witness ? "(16) infeasible by the several-frequency witness"
+                             : a.certified ? "(16) infeasible by the path '" + r.path + "'"
+                                           : "an undecided (16)";
+    throw InputError("--certificate: " + what + " has no certificate kind yet (issue 47); only (16) infeasible by the "
+                     "one-frequency witness does (kind multidof-witness): no certificate");
+  }
+  if (const std::string why = multidof_certificate_premise(sc); !why.empty())
+    throw InputError("--certificate: " + why + ": no certificate");
+  const toml::table& env = *environment_table(sc);
+  nlohmann::json j = certificate_header("multidof-witness");
+  nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))},
+                   {"gain", gain_of(sc, env).str()},
+                   {"E", *written_entries(env)}};
+  if (e["domain"] == "s") e["method"] = env["method"].value_or(std::string());
+  nlohmann::json set = nlohmann::json::object();
+  for (const auto& [k, v] : sc.parameters) set[k] = v.str();
+  const auto md = scene::multidof_values(sc);
+  nlohmann::json devices = nlohmann::json::array();
+  for (size_t d = 0; d < sc.loop.devices.size(); ++d) {
+    const auto& dev = sc.loop.devices[d];
+    nlohmann::json x{{"dofs", dev.dofs()}};
+    if (md.osp) {
+      x["osp"] = (*md.osp)[d].str();
+    } else {
+      const auto mb = *mass_damper(dev);
+      x["m"] = mb.first.str();
+      x["b"] = mb.second.str();
+    }
+    devices.push_back(x);
+  }
+  nlohmann::json operators = nlohmann::json::array();
+  int first = 0;
+  for (const auto& o : a.scene.problem.structure.operators) {
+    nlohmann::json dofs = nlohmann::json::array();
+    for (int k = 0; k < o.dof; ++k) dofs.push_back(first + k);
+    first += o.dof;
+    operators.push_back(dofs);
+  }
+  j["model"] = {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
+                {"operators", operators}};
+  j["claim"] = {{"status", "exact"}, {"feasible", false}};
+  nlohmann::json u = nlohmann::json::array();
+  for (const auto& x : r.witness->u) u.push_back(x.str());
+  j["evidence"] = {{"z_re", r.witness->z_re.str()}, {"z_im", r.witness->z_im.str()}, {"u", u}};
+  verify_before_writing(j);
+  return j;
+}
+
+}  // namespace hapstab::cli

@@ -1,0 +1,50 @@
+// hapstab/check/multidof_witness_check.hpp -- the checker of a `multidof-witness` certificate
+// (`hapstab multidof analyze --scene S --certificate FILE` where a frequency-domain witness decided):
+// paper 000's Theorem 5 program (16) is infeasible for the scene's environment, delay and device
+// levels as written, for EVERY admissible multiplier X.
+//
+// The model: T, the delay n (z^-n), the environment E as written -- an m x m matrix of expressions
+// in z, or in s with method backward_euler (s = (z - 1)/(T z)) or tustin (s = 2(z - 1)/(T(z + 1))),
+// times its gain g -- the parameters (model.set), the devices in DOF order (a mass-damper 1/(m s +
+// b), whose OSP level is b exactly: Re(1/G(jw)) = Re(m jw + b) = b; or a declared level `osp`, part
+// of the scene as written) giving Delta_D = diag(delta_i), and the operators (the DOFs each acts
+// on; X = diag(g_o(i)) with one multiplier g_o > 0 per operator). E-hat(z) = T z/(z - 1) z^-n g E(z)
+// (paper 000 (11)).
+//
+// Theorem (the easy direction of the KYP lemma; path_witness.cpp proves it in the producer's
+// terms, restated here). Let (A, B, C, D) be any realisation of E-hat, P, X, Q_E, Q_V a point of
+// (16): M1 <= 0 (its first LMI) and (14) > 0, so Delta_D X - Q_E > 0. For z on the unit circle not
+// an eigenvalue of A, u != 0 complex and x = (zI - A)^-1 B u, z x = A x + B u makes the P terms of
+// [x; u]^* M1 [x; u] cancel (|z| = 1), leaving -Re(u^* X E-hat(z) u) - u^* Q_E u <= 0; with
+// u^* Q_E u < u^* Delta_D X u:
+//     phi_X(z, u) = Re(u^* X E-hat(z) u) + u^* Delta_D X u > 0.
+// (a) Every admissible X has X E(1) symmetric: E-hat(e^{jt}) = (T/2)(1 - j cot(t/2)) (g E(1) + O(t))
+//     as t -> 0+ (E analytic at z = 1, verified: no entry has a pole there), so with u = a + jb,
+//     phi_X = (T/2) cot(t/2) a^T (M - M^T) b + O(1), M = g X E(1); if M != M^T some a, b make it
+//     -> -inf. With E(1) symmetric (verified) and g != 0, X E(1) symmetric forces g_o = g_o' for
+//     operators o, o' coupled by an entry E(1)_ij != 0 (i in o, j in o'): the admissible X are
+//     X = sum_c g_c X_c, g_c > 0, over the connected components c of that graph (X_c: 1 on the DOFs
+//     of c's operators).
+// (b) phi_X = sum_c g_c phi_c, phi_c = phi_{X_c}. The evidence, z = z_re + j z_im (rational,
+//     z_re^2 + z_im^2 = 1 exactly, z != 1, not a pole of any entry of E) and u (rational, not all
+//     0), is verified when every phi_c(z, u) <= 0 and one is < 0: then phi_X(z, u) < 0 for every
+//     admissible X; phi_X is continuous at z, so it is < 0 at points z' near z that are not
+//     eigenvalues of the realisation's A (finitely many) -- no point of (16) exists.
+// Everything is decided in exact rational arithmetic over Q(j) (check/gaussian_rational.hpp); the
+// entries are parsed by lti/parse.hpp and evaluated at z (an s-domain entry N(s)/D(s) as
+// sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k), s = sigma/tau, d = max degree: exact at
+// s = infinity too). Hypotheses verified: T > 0, n in [0, 100000], 1 <= m <= 512, E(1) finite and
+// symmetric, every device level given, every DOF in exactly one operator.
+//
+// Implements: paper 000 (11), (14), (16), Theorem 5.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/certificate.hpp"
+
+namespace hapstab::check {
+
+Verdict check_multidof_witness(const nlohmann::json& certificate);
+
+}  // namespace hapstab::check
