@@ -83,7 +83,8 @@ multidof-witness  paper 000's Theorem 5 program (16) infeasible for the scene's 
        > 0, E-hat = T z/(z-1) z^-n g E (11); the admissible X have X E(1) symmetric (else phi -> -inf at
        theta -> 0+), one multiplier per group of operators coupled through the symmetric E(1). Route: the
        s-entries parsed with s the rational function of z itself, evaluated at the rational z of the
-       evidence in Gaussian rationals; phi per group <= 0, one < 0.
+       evidence in Gaussian rationals; phi per group <= 0, one < 0. Several weighted points (evidence.points,
+       the several-frequency witness where X has several free directions): sum_j w_j phi per group.
 Size limit: multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
@@ -2588,7 +2589,6 @@ def check_multidof_witness(c):
     model, claim, ev = parts(c)
     only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
     only(claim, ("status", "feasible"), "claim")
-    only(ev, ("z_re", "z_im", "u"), "evidence")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: must be \"exact\"")
     if not isinstance(claim.get("feasible"), bool):
@@ -2632,37 +2632,54 @@ def check_multidof_witness(c):
         for j in range(m):
             if E1[i][j][0] != 0:
                 group[find(owner[i])] = find(owner[j])
-    z = (exact(ev, "z_re", "evidence"), exact(ev, "z_im", "evidence"))
-    if z[0] * z[0] + z[1] * z[1] != 1:
-        return False, "z is not on the unit circle"
-    if z == (1, 0):
-        return False, "z = 1 is E-hat's pole"
-    u = ev.get("u")
-    if not isinstance(u, list) or len(u) != m:
-        raise Malformed("evidence.u: must be %d \"p/q\" strings" % m)
-    u = [exact_value(x, "evidence.u[%d]" % i) for i, x in enumerate(u)]
-    if all(x == 0 for x in u):
-        return False, "u = 0"
-    zc, zn = (z[0], -z[1]), cq(1)
-    k = n
-    while k:  # conj(z)^n = z^-n on the circle
-        if k & 1:
-            zn = cq_mul(zn, zc)
-        zc = cq_mul(zc, zc)
-        k >>= 1
-    f = cq_mul(cq_mul(cq(T * g), cq_div(z, cq_sub(z, cq(1)))), zn)
+    if "points" in ev:  # the several-frequency witness: S_g = sum_j w_j phi_g(z_j, u_j)
+        only(ev, ("points",), "evidence")
+        pts = ev["points"]
+        if not isinstance(pts, list) or not pts or len(pts) > 4096:
+            raise Malformed("evidence.points: 1 to 4096 points")
+    else:
+        only(ev, ("z_re", "z_im", "u", "u_im"), "evidence")
+        pts = [dict(ev, weight="1")]
     phi = {}
-    for i in range(m):
-        w = cq(0)
-        for j in range(m):
-            if u[j] == 0:
-                continue
-            v = rf_at(E[i][j], z)
-            if v is None:
-                return False, "z is a pole of E[%d][%d]" % (i, j)
-            w = cq_add(w, cq_mul(v, cq(u[j])))
-        r = find(owner[i])
-        phi[r] = phi.get(r, Fraction(0)) + u[i] * cq_mul(f, w)[0] + delta[i] * u[i] * u[i]
+    for k, pt in enumerate(pts):
+        where = "evidence.points[%d]" % k if "points" in ev else "evidence"
+        if not isinstance(pt, dict):
+            raise Malformed(where + ": not an object")
+        only(pt, ("z_re", "z_im", "u", "u_im", "weight"), where)
+        z = (exact(pt, "z_re", where), exact(pt, "z_im", where))
+        w = exact(pt, "weight", where)
+        ur, ui = pt.get("u"), pt.get("u_im", ["0"] * m)
+        if not isinstance(ur, list) or len(ur) != m or not isinstance(ui, list) or len(ui) != m:
+            raise Malformed(where + ".u: must be %d \"p/q\" strings (u_im too)" % m)
+        u = [(exact_value(x, where + ".u[%d]" % i), exact_value(y, where + ".u_im[%d]" % i)) for i, (x, y) in enumerate(zip(ur, ui))]
+        if z[0] * z[0] + z[1] * z[1] != 1:
+            return False, "z is not on the unit circle"
+        if z == (1, 0):
+            return False, "z = 1 is E-hat's pole"
+        if all(x == (0, 0) for x in u):
+            return False, "u = 0"
+        if w < 0:
+            return False, "a negative weight"
+        zc, zn, k2 = (z[0], -z[1]), cq(1), n
+        while k2:  # conj(z)^n = z^-n on the circle
+            if k2 & 1:
+                zn = cq_mul(zn, zc)
+            zc = cq_mul(zc, zc)
+            k2 >>= 1
+        f = cq_mul(cq_mul(cq(T * g), cq_div(z, cq_sub(z, cq(1)))), zn)
+        for i in range(m):
+            acc = cq(0)
+            for j in range(m):
+                if u[j] == (0, 0):
+                    continue
+                v = rf_at(E[i][j], z)
+                if v is None:
+                    return False, "z is a pole of E[%d][%d]" % (i, j)
+                acc = cq_add(acc, cq_mul(v, u[j]))
+            r = find(owner[i])
+            ubar = (u[i][0], -u[i][1])
+            term = cq_mul(ubar, cq_mul(f, acc))[0] + delta[i] * (u[i][0] ** 2 + u[i][1] ** 2)
+            phi[r] = phi.get(r, Fraction(0)) + w * term
     if any(v > 0 for v in phi.values()):
         return False, "phi > 0 on a group of operators: the witness does not hold for every admissible X"
     if all(v == 0 for v in phi.values()):

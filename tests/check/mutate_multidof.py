@@ -14,13 +14,39 @@ from fractions import Fraction
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verify"))
 
 
+def damper_chain(rng):
+    """2-3 walls K_i + B_i (z - 1)/(T z) (B_i < 0 in half: E lacks passivity) linked by dampers Bc: E(1)
+    = diag(K) couples no operators, X has one free direction per DOF, and an infeasible (16) is
+    proven by the several-frequency witness (path_kyp_search.cpp)."""
+    N = rng.choice([2, 3])
+    p = {"Bc": rng.randint(1, 20)}
+    for i in range(N):
+        p["K%d" % i] = rng.randint(100, 30000)
+        p["B%d" % i] = rng.randint(-8, -1) if rng.random() < 0.5 else rng.randint(0, 10)
+    rows = []
+    for i in range(N):
+        links = (i > 0) + (i < N - 1)
+        rows.append(["K%d + (B%d + %d*Bc)*(z-1)/(T*z)" % (i, i, links) if i == j else
+                     ("-Bc*(z-1)/(T*z)" if abs(i - j) == 1 else "0") for j in range(N)])
+    L = ["[scene]", 'name = "damper chain"', 'T = "1/%d"' % rng.choice([100, 1000, 2000]), "", "[parameters]"]
+    L += ['%s = "%d"' % kv for kv in p.items()]
+    for i in range(N):
+        L += ["", "[[device]]", 'name = "d%d"' % i, 'm = "1/10"', 'b = "%d/100"' % rng.randint(1, 3000),
+              "", "[[operator]]", 'name = "h%d"' % i, 'dofs = ["d%d"]' % i, 'b = "1"']
+    L += ["", "[environment]", "tf = [" + ",\n      ".join("[" + ", ".join('"%s"' % e for e in r) + "]" for r in rows) + "]"]
+    n = rng.choice([0, 0, 1, 2])
+    if n:
+        L += ["", "[delay]", 'samples = "%d"' % n]
+    return "\n".join(L) + "\n"
+
+
 def produce(hapstab, rng, tmp, i):
-    """A certificate of a random scene, or the reason none was written."""
+    """A certificate of a random scene (every fourth a damper chain), or the reason none was written."""
     import indep_witness  # the witness campaign's scene generator (numpy, mpmath: only for this kind)
-    case = indep_witness.gen(rng)
+    text = damper_chain(rng) if i % 4 == 3 else indep_witness.gen(rng)["text"]
     scene = os.path.join(tmp, "w%d.toml" % i)
     with open(scene, "w") as f:
-        f.write(case["text"])
+        f.write(text)
     path = os.path.join(tmp, "w%d.json" % i)
     p = subprocess.run([hapstab, "multidof", "analyze", "--scene", scene, "--quiet", "--certificate", path],
                        capture_output=True, text=True)
@@ -48,14 +74,51 @@ def fs(x):
     return str(Fraction(x))
 
 
+def point_mutants(cert, rng):
+    """The several-frequency form's own mutants, then the one-point mutants on its first point."""
+    pts = cert["evidence"]["points"]
+    m = len(pts[0]["u"])
+    out = [("unmutated", cert, "accept")]
+    neg = [dict(p, weight=fs(-Fraction(p["weight"]))) if k == 0 else p for k, p in enumerate(pts)]
+    out.append(("a weight negated", _set(cert, ["evidence", "points"], neg), "refute"))
+    out.append(("every weight 0", _set(cert, ["evidence", "points"], [dict(p, weight="0") for p in pts]), "refute"))
+    out.append(("a point's u = 0", _set(cert, ["evidence", "points"],
+                                        [dict(p, u=["0"] * m, u_im=["0"] * m) if k == 0 else p for k, p in enumerate(pts)]), "refute"))
+    out.append(("a point at z = 1", _set(cert, ["evidence", "points"],
+                                         [dict(p, z_re="1", z_im="0") if k == 0 else p for k, p in enumerate(pts)]), "refute"))
+    out.append(("points empty", _set(cert, ["evidence", "points"], []), "malformed"))
+    out.append(("a weight missing", _set(cert, ["evidence", "points"],
+                                         [{a: b for a, b in p.items() if a != "weight"} if k == 0 else p for k, p in enumerate(pts)]),
+                "malformed"))
+    out.append(("a point with theta", _set(cert, ["evidence", "points"], [dict(pts[0], theta="1")] + pts[1:]), "malformed"))
+    out.append(("points beside z_re", _set(cert, ["evidence", "z_re"], "1"), "malformed"))
+    out.append(("u_im one short", _set(cert, ["evidence", "points"], [dict(pts[0], u_im=pts[0]["u_im"][:-1])] + pts[1:]), "malformed"))
+    out.append(("a point dropped", _set(cert, ["evidence", "points"], pts[1:] or pts), "agree"))
+    out.append(("weights x 2 on the first", _set(cert, ["evidence", "points"],
+                                                 [dict(p, weight=fs(2 * Fraction(p["weight"]))) if k == 0 else p
+                                                  for k, p in enumerate(pts)]), "agree"))
+    out.append(("u_im set to u", _set(cert, ["evidence", "points"], [dict(pts[0], u_im=pts[0]["u"])] + pts[1:]), "agree"))
+    one = copy.deepcopy(cert)
+    p0 = pts[0]
+    one["evidence"] = {"z_re": p0["z_re"], "z_im": p0["z_im"], "u": p0["u"], "u_im": p0["u_im"]}
+    out += [(n, c, "agree" if e == "accept" else e) for n, c, e in mutants(one, rng)[1:]
+            if not n.startswith(("u a decimal", "u one short", "deleted evidence", "added evidence"))]
+    return out
+
+
 def mutants(cert, rng):
     """[(name, certificate, expectation)] of one multidof-witness certificate."""
+    if "points" in cert["evidence"]:
+        return point_mutants(cert, rng)
     out = [("unmutated", cert, "accept")]
     ev, model = cert["evidence"], cert["model"]
     m = len(ev["u"])
     zr, zi = Fraction(ev["z_re"]), Fraction(ev["z_im"])
     # refute: the claim or the evidence made false on its face
-    out.append(("u = 0", _set(cert, ["evidence", "u"], ["0"] * m), "refute"))
+    zero = _set(cert, ["evidence", "u"], ["0"] * m)
+    if "u_im" in ev:
+        zero = _set(zero, ["evidence", "u_im"], ["0"] * m)
+    out.append(("u = 0", zero, "refute"))
     out.append(("z = 1", _set(_set(cert, ["evidence", "z_re"], "1"), ["evidence", "z_im"], "0"), "refute"))
     out.append(("z off the circle", _set(cert, ["evidence", "z_re"], fs(zr * Fraction(1000001, 1000000))), "refute"))
     out.append(("z conjugated off the circle", _set(cert, ["evidence", "z_im"], fs(zi + Fraction(1, 10 ** 12))), "refute"))
@@ -120,10 +183,12 @@ def branches(certs):
     if not ws:
         return ""
     return ("  multidof-witness branches: DOF 1 %d, 2-4 %d; s-domain %d; delay 0 %d, 1 %d, >= 2 %d; z = -1 %d; "
-            "several operator groups %d; a declared osp %d" % (
-                sum(1 for c in ws if len(c["evidence"]["u"]) == 1), sum(1 for c in ws if len(c["evidence"]["u"]) > 1),
+            "several operator groups %d; a declared osp %d; several weighted points %d" % (
+                sum(1 for c in ws if len(c["model"]["environment"]["E"]) == 1),
+                sum(1 for c in ws if len(c["model"]["environment"]["E"]) > 1),
                 sum(1 for c in ws if c["model"]["environment"]["domain"] == "s"),
                 sum(1 for c in ws if c["model"]["delay"] == 0), sum(1 for c in ws if c["model"]["delay"] == 1),
-                sum(1 for c in ws if c["model"]["delay"] >= 2), sum(1 for c in ws if c["evidence"]["z_re"] == "-1"),
+                sum(1 for c in ws if c["model"]["delay"] >= 2), sum(1 for c in ws if c["evidence"].get("z_re") == "-1"),
                 sum(1 for c in ws if len(c["model"]["operators"]) > 1 and "0" in c["model"]["environment"]["E"][0]),
-                sum(1 for c in ws if any("osp" in d for d in c["model"]["devices"]))))
+                sum(1 for c in ws if any("osp" in d for d in c["model"]["devices"])),
+                sum(1 for c in ws if "points" in c["evidence"])))

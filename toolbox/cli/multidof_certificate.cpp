@@ -81,13 +81,12 @@ std::string multidof_certificate_premise(const scene::Scene& sc) {
 
 nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
   const auto& r = a.lmis;
-  if (!r.witness) {
+  if (!r.witness && !r.weighted_witness) {
     const std::string what = a.feasible ? "a feasible (16) (P, X and the slack)"
-                             : r.weighted_witness ? "(16) infeasible by the several-frequency witness"
                              : a.certified ? "(16) infeasible by the path '" + r.path + "'"
                                            : "an undecided (16)";
     throw InputError("--certificate: " + what + " has no certificate kind yet (issue 47); only (16) infeasible by the "
-                     "one-frequency witness does (kind multidof-witness): no certificate");
+                     "frequency witness does (kind multidof-witness): no certificate");
   }
   if (const std::string why = multidof_certificate_premise(sc); !why.empty())
     throw InputError("--certificate: " + why + ": no certificate");
@@ -124,9 +123,20 @@ nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multid
   j["model"] = {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
                 {"operators", operators}};
   j["claim"] = {{"status", "exact"}, {"feasible", false}};
-  nlohmann::json u = nlohmann::json::array();
-  for (const auto& x : r.witness->u) u.push_back(x.str());
-  j["evidence"] = {{"z_re", r.witness->z_re.str()}, {"z_im", r.witness->z_im.str()}, {"u", u}};
+  const auto strings = [](const std::vector<rational>& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& x : v) a.push_back(x.str());
+    return a;
+  };
+  if (r.witness) {
+    j["evidence"] = {{"z_re", r.witness->z_re.str()}, {"z_im", r.witness->z_im.str()}, {"u", strings(r.witness->u)}};
+  } else {  // the several-frequency witness: every point with its weight
+    nlohmann::json pts = nlohmann::json::array();
+    for (const auto& p : r.weighted_witness->points)
+      pts.push_back({{"z_re", p.z_re.str()}, {"z_im", p.z_im.str()}, {"u", strings(p.u.re)}, {"u_im", strings(p.u.im)},
+                     {"weight", p.weight.str()}});
+    j["evidence"] = {{"points", pts}};
+  }
   verify_before_writing(j);
   return j;
 }

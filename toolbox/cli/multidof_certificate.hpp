@@ -1,10 +1,11 @@
 // cli/multidof_certificate.hpp -- `multidof analyze --scene S --certificate FILE` (issue 47): the
-// certificate of Theorem 5's program (16) proven infeasible by a frequency-domain witness
-// (check/multidof_witness_check.hpp, kind multidof-witness). The model is the scene's as written:
-// the environment's expressions (`tf`), domain, method and gain, the parameters, the delay, each
-// device's OSP level (a mass-damper's b, or the declared `osp`) and the operators' DOFs.
+// certificate of Theorem 5's program (16) proven infeasible by a frequency-domain witness, at one
+// frequency or at several with weights (check/multidof_witness_check.hpp, kind multidof-witness).
+// The model is the scene's as written: the environment's expressions (`tf`), domain, method and
+// gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
+// `osp`) and the operators' DOFs.
 // Other verdicts have no multi-DOF kind yet (a feasible (16): P, X and the slack; the loop as
-// written; the several-frequency witness): asking for one is refused by name (exit 2).
+// written, hidden modes): asking for one is refused by name (exit 2).
 #pragma once
 
 #include <string>
@@ -21,7 +22,7 @@ namespace hapstab::cli {
 /// `perturb_C`, a device whose OSP level is a certified bound rather than exact or declared.
 std::string multidof_certificate_premise(const scene::Scene& sc);
 
-/// The certificate of `a`'s verdict: (16) infeasible by the frequency-domain witness, verified by
+/// The certificate of `a`'s verdict: (16) infeasible by a frequency-domain witness, verified by
 /// check/ before it is returned. InputError (exit 2, no file) for any other verdict, naming it.
 nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a);
 

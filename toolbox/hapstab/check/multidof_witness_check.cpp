@@ -176,13 +176,52 @@ std::vector<size_t> operator_of(const nlohmann::json& model, size_t m) {
   return owner;
 }
 
+struct WitnessPoint {
+  Cq z;
+  std::vector<Cq> u;
+  rational w = 1;
+};
+
+std::vector<Cq> direction(const nlohmann::json& pt, size_t m, const std::string& where) {
+  if (!pt.contains("u") || !pt.at("u").is_array() || pt.at("u").size() != m)
+    throw InputError(where + ".u: must be an array of " + std::to_string(m) + " \"p/q\" strings (one per DOF)");
+  const bool im = pt.contains("u_im");
+  if (im && (!pt.at("u_im").is_array() || pt.at("u_im").size() != m))
+    throw InputError(where + ".u_im: must be an array of " + std::to_string(m) + " \"p/q\" strings");
+  std::vector<Cq> u;
+  for (size_t i = 0; i < m; ++i)
+    u.emplace_back(exact_string(pt.at("u").at(i), where + ".u[" + std::to_string(i) + "]"),
+                   im ? exact_string(pt.at("u_im").at(i), where + ".u_im[" + std::to_string(i) + "]") : rational(0));
+  return u;
+}
+
+// evidence {z_re, z_im, u[, u_im]} or {points: [{z_re, z_im, u[, u_im], weight}, ...]}
+std::vector<WitnessPoint> witness_points(const nlohmann::json& ev, size_t m) {
+  if (!ev.contains("points")) {
+    only_fields(ev, {"z_re", "z_im", "u", "u_im"}, "evidence");
+    return {{Cq(exact_field(ev, "z_re", "evidence"), exact_field(ev, "z_im", "evidence")), direction(ev, m, "evidence")}};
+  }
+  only_fields(ev, {"points"}, "evidence");
+  const auto& pts = ev.at("points");
+  if (!pts.is_array() || pts.empty() || pts.size() > 4096)
+    throw InputError("evidence.points: must be an array of 1 to 4096 points");
+  std::vector<WitnessPoint> out;
+  for (size_t k = 0; k < pts.size(); ++k) {
+    const std::string where = "evidence.points[" + std::to_string(k) + "]";
+    if (!pts.at(k).is_object()) throw InputError(where + ": not an object");
+    only_fields(pts.at(k), {"z_re", "z_im", "u", "u_im", "weight"}, where);
+    out.push_back({Cq(exact_field(pts.at(k), "z_re", where), exact_field(pts.at(k), "z_im", where)),
+                   direction(pts.at(k), m, where), exact_field(pts.at(k), "weight", where)});
+  }
+  return out;
+}
+
 }  // namespace
 
 Verdict check_multidof_witness(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
   only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
   only_fields(p.claim, {"status", "feasible"}, "claim");
-  only_fields(p.evidence, {"z_re", "z_im", "u"}, "evidence");
   if (p.claim.value("status", std::string()) != "exact") throw InputError("claim.status: must be \"exact\"");
   if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
     throw InputError("claim.feasible: missing or not a boolean");
@@ -211,52 +250,59 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
                          std::to_string(j) + "); this kind covers a symmetric E(1) only");
       if (!E1[i][j].re.is_zero()) uf.parent[uf.find(owner[i])] = uf.find(owner[j]);
     }
-  // (b): the evidence
-  const Cq z(exact_field(p.evidence, "z_re", "evidence"), exact_field(p.evidence, "z_im", "evidence"));
-  if (z.re * z.re + z.im * z.im != 1) return {false, "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is not on the unit circle"};
-  if (z.re == 1) return {false, "z = 1: E-hat has its pole there"};
-  if (!p.evidence.contains("u") || !p.evidence.at("u").is_array() || p.evidence.at("u").size() != m)
-    throw InputError("evidence.u: must be an array of " + std::to_string(m) + " \"p/q\" strings (one per DOF)");
-  std::vector<rational> u;
-  for (size_t i = 0; i < m; ++i) u.push_back(exact_string(p.evidence.at("u").at(i), "evidence.u[" + std::to_string(i) + "]"));
-  if (std::all_of(u.begin(), u.end(), [](const rational& x) { return x.is_zero(); }))
-    return {false, "u = 0: the witness needs a direction u != 0"};
-  // E-hat(z) u, row by row: T z/(z - 1) z^-n g sum_j E_ij(z) u_j  (z^-n = conj(z)^n on the circle)
-  const Cq factor = Cq(env.T * env.gain) * z / (z - Cq(1)) * power(conj(z), env.n);
-  std::vector<rational> phi(m);  // per component root
+  // (b): the evidence, one point or several weighted ones; S_c = sum_j w_j phi_c(z_j, u_j)
+  std::vector<rational> S(m);  // per group root
   std::vector<bool> is_root(m, false);
-  for (size_t i = 0; i < m; ++i) {
-    Cq w;
-    for (size_t j = 0; j < m; ++j) {
-      if (u[j].is_zero()) continue;
-      const auto v = entry_at(env, env.E[i][j], z);
-      if (!v)
-        return {false, "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is a pole of E[" + std::to_string(i) + "][" +
-                           std::to_string(j) + "]"};
-      w = w + *v * Cq(u[j]);
+  const std::vector<WitnessPoint> points = witness_points(p.evidence, m);
+  for (size_t k = 0; k < points.size(); ++k) {
+    const WitnessPoint& pt = points[k];
+    const std::string at = points.size() > 1 ? "point " + std::to_string(k) + ": " : "";
+    const Cq& z = pt.z;
+    if (z.re * z.re + z.im * z.im != 1) return {false, at + "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is not on the unit circle"};
+    if (z.re == 1) return {false, at + "z = 1: E-hat has its pole there"};
+    if (std::all_of(pt.u.begin(), pt.u.end(), [](const Cq& x) { return x.is_zero(); }))
+      return {false, at + "u = 0: the witness needs a direction u != 0"};
+    if (pt.w < 0) return {false, at + "the weight " + decimal(pt.w) + " is negative"};
+    // E-hat(z) u, row by row: T z/(z - 1) z^-n g sum_j E_ij(z) u_j  (z^-n = conj(z)^n on the circle)
+    const Cq factor = Cq(env.T * env.gain) * z / (z - Cq(1)) * power(conj(z), env.n);
+    for (size_t i = 0; i < m; ++i) {
+      Cq w;
+      for (size_t j = 0; j < m; ++j) {
+        if (pt.u[j].is_zero()) continue;
+        const auto v = entry_at(env, env.E[i][j], z);
+        if (!v)
+          return {false, at + "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is a pole of E[" + std::to_string(i) + "][" +
+                             std::to_string(j) + "]"};
+        w = w + *v * pt.u[j];
+      }
+      const size_t c = uf.find(owner[i]);
+      is_root[c] = true;  // Re(conj(u_i) (E-hat u)_i) + delta_i |u_i|^2
+      const Cq& ui = pt.u[i];
+      S[c] += pt.w * ((conj(ui) * factor * w).re + delta[i] * (ui.re * ui.re + ui.im * ui.im));
     }
-    const size_t c = uf.find(owner[i]);
-    is_root[c] = true;
-    phi[c] += u[i] * (factor * w).re + delta[i] * u[i] * u[i];
   }
-  size_t components = 0, negative = 0;
+  size_t groups = 0, negative = 0;
   std::string worst;
   for (size_t c = 0; c < m; ++c) {
     if (!is_root[c]) continue;
-    ++components;
-    if (phi[c] > 0)
-      return {false, "phi = " + decimal(phi[c]) + " > 0 on the component of operator " + std::to_string(c) +
+    ++groups;
+    if (S[c] > 0)
+      return {false, "phi = " + decimal(S[c]) + " > 0 on the group of operator " + std::to_string(c) +
                          ": the witness does not hold for every admissible X"};
-    if (phi[c] < 0) {
+    if (S[c] < 0) {
       ++negative;
-      worst = decimal(phi[c]);
+      worst = decimal(S[c]);
     }
   }
-  if (negative == 0) return {false, "phi = 0 on every component: no strict witness"};
-  return {true, "(16) infeasible for every admissible X (" + std::to_string(components) +
-                    " direction(s): the operators coupled through the symmetric E(1)): phi = Re(u^T X E-hat(z) u) + u^T "
-                    "Delta_D X u <= 0 on each, < 0 on " + std::to_string(negative) + " (" + worst + "), at z = " +
-                    decimal(z.re) + " + j " + decimal(z.im) + ", u != 0, exactly"};
+  if (negative == 0) return {false, "phi = 0 on every group of operators: no strict witness"};
+  return {true, "(16) infeasible for every admissible X (" + std::to_string(groups) +
+                    " direction(s): the operators coupled through the symmetric E(1)): " +
+                    (points.size() > 1 ? "sum_j w_j phi(z_j, u_j)" : std::string("phi")) +
+                    " = Re(u^H X E-hat(z) u) + u^H Delta_D X u <= 0 on each, < 0 on " + std::to_string(negative) + " (" +
+                    worst + "), " +
+                    (points.size() > 1 ? "at " + std::to_string(points.size()) + " points z_j of the unit circle, weights w_j >= 0"
+                                       : "at z = " + decimal(points[0].z.re) + " + j " + decimal(points[0].z.im)) +
+                    ", u != 0, exactly"};
 }
 
 }  // namespace hapstab::check

@@ -25,11 +25,14 @@
 //     operators o, o' coupled by an entry E(1)_ij != 0 (i in o, j in o'): the admissible X are
 //     X = sum_c g_c X_c, g_c > 0, over the connected components c of that graph (X_c: 1 on the DOFs
 //     of c's operators).
-// (b) phi_X = sum_c g_c phi_c, phi_c = phi_{X_c}. The evidence, z = z_re + j z_im (rational,
-//     z_re^2 + z_im^2 = 1 exactly, z != 1, not a pole of any entry of E) and u (rational, not all
-//     0), is verified when every phi_c(z, u) <= 0 and one is < 0: then phi_X(z, u) < 0 for every
-//     admissible X; phi_X is continuous at z, so it is < 0 at points z' near z that are not
-//     eigenvalues of the realisation's A (finitely many) -- no point of (16) exists.
+// (b) phi_X = sum_c g_c phi_c, phi_c = phi_{X_c}. The evidence: one point z = z_re + j z_im
+//     (rational, z_re^2 + z_im^2 = 1 exactly, z != 1, not a pole of any entry of E) with u = u +
+//     j u_im (Gaussian rational, not 0; u_im absent: 0), or several `points` z_j, u_j with weights
+//     w_j >= 0 (the several-frequency witness of multidof/path_kyp_search.cpp, where X has several
+//     free directions). With S_c = sum_j w_j phi_c(z_j, u_j), it is verified when every S_c <= 0
+//     and one is < 0: then sum_j w_j phi_X(z_j, u_j) = sum_c g_c S_c < 0 for every admissible X,
+//     so phi_X(z_j, u_j) < 0 at some j; phi_X is continuous at z_j, so it is < 0 at points z' near
+//     z_j that are not eigenvalues of the realisation's A (finitely many) -- no point of (16).
 // Everything is decided in exact rational arithmetic over Q(j) (check/gaussian_rational.hpp); the
 // entries are parsed by lti/parse.hpp and evaluated at z (an s-domain entry N(s)/D(s) as
 // sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k), s = sigma/tau, d = max degree: exact at

@@ -139,7 +139,8 @@ std::vector<std::vector<rational>> diagonals(const std::vector<MatQ>& Xk) {
   for (const MatQ& X : Xk) {
     if (!MatQ(X - MatQ(X.diagonal().asDiagonal())).isZero(0))
       throw NumericalError("a facial direction X_k is not diagonal (X in G is block diagonal g_i I)");
-    d.emplace_back(X.diagonal().data(), X.diagonal().data() + X.rows());
+    d.emplace_back();  // X.diagonal().data() is X's storage, not the diagonal's: entry by entry
+    for (Eigen::Index i = 0; i < X.rows(); ++i) d.back().push_back(X(i, i));
   }
   return d;
 }
