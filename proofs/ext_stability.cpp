@@ -9,12 +9,16 @@
 //                       passivity limit (Colgate; Gil et al. 2004 give 2b/T as the first-order
 //                       stability limit): f(x) = x - 2 + (2+x)e^{-x} > 0 for x = bT/m > 0;
 //   passivity => stability on the chart's grid (b*(K_stab) >= b: the passive gains lie below);
-//   the small-T law K_stab ~ 2(b + B)/((2n+1) T) against passivity's 2(b - B)/T at n = 0.
+//   the small-T law K_stab ~ 2(b + B)/((2n+1) T) against passivity's 2(b - B)/T at n = 0;
+//   an even device (P(-s) = P(s)) has N_d(-1) = 0 exactly: every C A^2k B = 0 (stability --max's
+//                       structural zero at z = -1, sampled_loop.cpp even_device_zero_at_minus1).
+#include <random>
 #include <sstream>
 
 #include <boost/multiprecision/mpfi.hpp>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/interval.hpp"
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/poly/stability.hpp"
@@ -230,6 +234,56 @@ HAPSTAB_PROOF(ext_stability_small_T_law, "ext", "the stability limit for small T
               "for small T, K_stab ~ 2(b + B)/((2n + 1) T) (relative error < 1e-3 at T = 1e-5), against passivity's "
               "2(b - B)/T at n = 0: the gap (b + B)/(b - B) grows with B; with delay passivity is not monotone in B",
               Status::numeric, ok == cases, ev.str(), {finite});
+}
+
+HAPSTAB_PROOF(ext_stability_even_device, "ext", "an even device's ZOH numerator vanishes at z = -1") {
+  // G_d(-1) = C (-I - e^{AT})^-1 int_0^T e^{At} dt B = C f(A) B, f(x) = -(e^{xT} - 1)/(x (1 + e^{xT}))
+  // = -tanh(xT/2)/x: f is even and analytic where 1 + e^{xT} != 0, so on A's spectrum f(A) = p(A^2)
+  // for a polynomial p of degree < n (Hermite interpolation). The proof then rests on
+  //   P(s) = sum_j C A^j B s^-(j+1) even in s  <=>  C A^2k B = 0 for every k,
+  // checked here exactly on the controllable realisation of random even devices N(s^2)/D(s^2) and
+  // s N(s^2)/(s D(s^2)) (k = 0 .. n + 1, beyond Cayley-Hamilton's n - 1), and shown not vacuous:
+  // each with a damper added (D(s^2) + b s) has some C A^2k B != 0.
+  std::mt19937 rng(4607);
+  std::uniform_int_distribution<int> coef(-9, 9), pos(1, 9);
+  int even_ok = 0, damped_seen = 0, cases = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int dd = 1 + trial % 3, dn = trial % dd;  // degrees in x = s^2: D of dd, N of dn < dd
+    std::vector<rational> D(static_cast<size_t>(2 * dd + 1)), N(static_cast<size_t>(2 * dn + 1));
+    for (int k = 0; k <= dd; ++k) D[static_cast<size_t>(2 * k)] = k == dd ? rational(pos(rng)) : rational(coef(rng), pos(rng));
+    for (int k = 0; k <= dn; ++k) N[static_cast<size_t>(2 * k)] = rational(coef(rng) == 0 ? 1 : coef(rng), pos(rng));
+    if (N.back() == 0) N.back() = 1;
+    const bool odd_pair = trial % 2 == 1;  // s N / (s D): even too
+    P num(N), den(D);
+    if (odd_pair) {
+      num = num * P{rational(0), rational(1)};
+      den = den * P{rational(0), rational(1)};
+    }
+    const auto markov_even_zero = [](const P& nu, const P& de) {
+      const StateSpace<rational> ss = tf2ss(tf(nu, de));
+      Mat<rational> AkB = ss.B;
+      const Eigen::Index n = ss.A.rows();
+      bool zero = true;
+      for (Eigen::Index j = 0; j <= 2 * n + 1; ++j, AkB = (ss.A * AkB).eval())
+        if (j % 2 == 0 && (ss.C * AkB)(0, 0) != 0) zero = false;
+      return zero;
+    };
+    ++cases;
+    even_ok += markov_even_zero(num, den);
+    // a damper: D(s^2) + b s (with the common s: s D(s^2) + b s^2)
+    const P damped = den + (odd_pair ? P{rational(0), rational(0), rational(pos(rng))} : P{rational(0), rational(pos(rng))});
+    damped_seen += !markov_even_zero(num, damped);
+  }
+  std::ostringstream ev;
+  ev << "C A^2k B = 0 exactly for k = 0..n+1 on " << even_ok << "/" << cases
+     << " random even devices (degree 2..6, with and without a common s); with a damper b s added, some C A^2k B != 0 on "
+     << damped_seen << "/" << cases;
+  check.no_certificate("ext.stability.even_device", "an identity for every even device and T, proven symbolically from the Markov parameters: no certificate kind yet (issue 47)");
+  check.claim("ext.stability.even_device", "ZOH at z = -1",
+              "a device even in s (P(-s) = P(s): an undamped mass-spring, 1/s^2) sampled by the ZOH has N_d(-1) = 0 exactly "
+              "whenever D_d(-1) != 0: G_d(-1) = C f(A) B with f(x) = -tanh(xT/2)/x even, and every Markov parameter C A^2k B "
+              "of an even P is 0; stability --max uses it (c1(-1) = 0: no crossing at z = -1)",
+              Status::exact, even_ok == cases && damped_seen == cases, ev.str());
 }
 
 }  // namespace

@@ -223,3 +223,38 @@ TEST(MaxGain, LightDeviceCrossesAtMinusOne) {
   ASSERT_TRUE(g.theta);
   EXPECT_NEAR(to_real<double>(g.theta->lo), 3.14159265358979, 1e-12);
 }
+
+// An undamped device 1/(m s^2 + k) (even in s): its ZOH numerator vanishes at z = -1 exactly --
+// the closed form is (1 - cos wT)/k (z + 1)/(z^2 - 2 cos(wT) z + 1), w^2 = k/m -- but its Arb
+// enclosure only contains 0, so `stability --max` answered "c1(+-1) not separated from 0" (34 of
+// the 47 undecided answers of issue 46's stability_max campaign). sampled_loop.cpp proves the zero
+// for every even device (sample_ball: G(-1) = C f(A) B with f(x) = -tanh(xT/2)/x even, and C A^2k B
+// = 0). The two campaign cases (seed 46) against their independent references: case 1533 (n = 4,
+// mpmath at 50 digits: sup K in [17.61848856248725656072050067, ...050068]) and case 1529 (n = 100,
+// the long-delay path; the reference in double: [6.48739806847555, 6.487398068476118]).
+TEST(MaxGain, UndampedSpringDeviceHasAnExactZeroAtMinusOne) {
+  const auto loop_of = [](const std::string& plant, const std::string& H0, const rational& T, int n) {
+    stability::Loop loop;
+    loop.T = T;
+    loop.delay = n;
+    ParseOptions ps;
+    ps.variable = 's';
+    loop.plant = parse_tf(plant, ps);
+    ParseOptions pz;
+    pz.variable = 'z';
+    pz.T = T;
+    loop.H = parse_tf(H0, pz);
+    loop.H_gain = tf(Polynomial<rational>(rational(1)), Polynomial<rational>(rational(1)), loop.T);
+    return loop;
+  };
+  const auto g = stability::max_gain(loop_of("1/(2*s^2 + 17/10)", "(4/5)*(z - 1)/((1/100)*z)", rational(1, 100), 4), 25);
+  ASSERT_EQ(g.outcome, Outcome::holds) << g.note;
+  EXPECT_EQ(g.crossing, "complex pair");
+  const rational ref_lo = parse_rational("17.61848856248725656072050067"), ref_hi = parse_rational("17.61848856248725656072050068");
+  EXPECT_LE(g.enclosure.lo, ref_hi);
+  EXPECT_GE(g.enclosure.hi, ref_lo);
+  const auto h = stability::max_gain(loop_of("1/((31/20)*s^2 + 47/2)", "(7/10)*(z - 1)/((1/1000)*z)", rational(1, 1000), 100), 25);
+  ASSERT_EQ(h.outcome, Outcome::holds) << h.note;
+  EXPECT_EQ(h.path, "long_delay");
+  EXPECT_LT(abs(to_real<double>(h.enclosure.lo) - 6.4873980684759) / 6.4873980684759, 1e-9);
+}

@@ -278,6 +278,9 @@ def sup_reference(loop, Knom, precise=True):
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs, marginal=True)
     if rs >= 1 and rn >= 1:
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs)
+    if rn >= 1:  # unstable at the smaller probe, stable at the larger: sup <= Kn (the scan from Ks
+        # would only see the window above Ks; a sup in (0, Kn] is not resolved further here)
+        return dict(kind="at_most", value=mp.mpf(Kn), rho_small=rn)
     start = Kn if rs >= 1 else Ks
     grid = [float(start) * 10 ** (i / 24) for i in range(0, 24 * 18 + 1)]
     rho = [rho_np(loop, k) for k in grid]

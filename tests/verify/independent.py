@@ -471,6 +471,14 @@ def compare_sup(out, ref, j, rc, tol, name):
         if not ok:
             out["why"] = f"no crossing up to {name} = {ref['scanned_to']:g}; hapstab: exit {rc}, max {mx}"
         return out
+    if ref["kind"] == "at_most":  # unstable at the smaller probe K = value: sup <= value
+        ok = (rc == 1 and mx == "0") or (rc == 0 and j is not None and j.get("enclosure") is not None
+                                         and enc(j)[1] <= ref["value"] * (1 + tol))
+        out["outcome"] = "agree" if ok else "MISS"
+        if not ok:
+            out["why"] = (f"the loop is NOT stable at {name} = {mp.nstr(ref['value'], 6)} (rho = "
+                          f"{mp.nstr(ref['rho_small'], 12)}), so sup <= it; hapstab: exit {rc}, max {mx}")
+        return out
     if ref["kind"] != "sup":
         out["outcome"] = "REFERENCE MISSED"
         out["why"] = f"the reference could not place its crossing: {ref}"
@@ -559,7 +567,7 @@ def check_stability(c, exe, timeout):
         ref = dict(kind="zero", value=mp.mpf(0), rho_small=mp.mpf(1), marginal=True)
     else:
         ref = IL.sup_reference(loop, c["Knom"], precise=precise)
-    tags["stable at small K"] = ref["kind"] != "zero"
+    tags["stable at small K"] = ref["kind"] in ("sup", "inf")
     tag_reference(ref, tags, out, "K")
     if rc == "timeout":
         out["outcome"] = "timeout"
@@ -750,7 +758,7 @@ def check_scene(c, exe, timeout):
     loop = IL.build_loop_scene(c)
     ref = IL.sup_reference(loop, c["Knom"])
     tags = dict(c["tags"])
-    tags["stable at small g"] = ref["kind"] != "zero"
+    tags["stable at small g"] = ref["kind"] in ("sup", "inf")
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=IL.scene_toml(c), args=args)
     tag_reference(ref, tags, out, "g")
     # the states hapstab's closed-loop matrix has, beside the reference's (informative)
@@ -975,7 +983,7 @@ def check_scene_coupling(c, exe, timeout):
         # exit 3 with an interval proven stable (checked at five points), or sup 0 with exit 1
         ref = IL.sup_reference(loop, c["Knom"])
         tag_reference(ref, tags, out, "g")
-        tags["stable at small g"] = ref["kind"] != "zero"
+        tags["stable at small g"] = ref["kind"] in ("sup", "inf")
         if rc == 3:
             out["outcome"] = "undecided"
             out["why"] = why_of(err, j)[:200]
@@ -1133,7 +1141,7 @@ def check_conservatism(c, exe, timeout):
                 bad.append("exact side: " + sub.get("why", sub["outcome"]))
         else:
             tags["exact side"] = "sup 0" if j.get("max") == "0" else "undecided"
-            if j.get("max") == "0" and ref["kind"] != "zero":
+            if j.get("max") == "0" and ref["kind"] in ("sup", "inf"):
                 bad.append(f"exact side: sup 0, but the reference is stable at small g ({ref['kind']})")
             if j.get("stable_on"):
                 a, b = enc(j, "stable_on")

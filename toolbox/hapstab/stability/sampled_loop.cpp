@@ -88,6 +88,7 @@ template <class C>
 struct Sampled {
   Vec<C> N, D;
   int r = 0;  // exact multiplicity of z = 1 in D (the device's poles at s = 0)
+  bool N_zero_at_minus1 = false;  // N(-1) = 0 exactly (an even device: sample_ball)
 };
 
 Mat<rational> van_loan(const StateSpace<rational>& ss, const rational& T) {
@@ -138,6 +139,27 @@ Vec<Ball> charpoly_ball(const flint::BallMat& A) {
   return v;
 }
 
+/// N(-1) = 0 exactly for a device P = num/den even in s, P(-s) = P(s) (an undamped mass-spring
+/// 1/(m s^2 + k), 1/s^2), when D(-1) != 0 (no sampled pole at z = -1). Proof: with (A, B, C) any
+/// realisation of P, Phi = e^{AT} and Gamma = int_0^T e^{At} dt B, the ZOH gives
+///   G(-1) = C (-I - Phi)^-1 Gamma = C f(A) B,  f(x) = -(e^{xT} - 1)/(x (1 + e^{xT})) = -tanh(xT/2)/x,
+/// f even and analytic on A's spectrum (1 + e^{xT} != 0 there: D(-1) != 0), so f(A) = p(A^2) for a
+/// polynomial p; P(s) = sum_j C A^j B s^-(j+1) even makes every C A^(2k) B = 0, so G(-1) = 0, and
+/// N(-1) = D(-1) G(-1) = 0 (N = D G identically: N = det(zI - Phi + Gamma C) - det(zI - Phi)).
+/// A Ball N(-1) only encloses 0; this makes c1(-1) = A1(-1) N(-1) exactly 0 for `stability --max`
+/// (issue 46: "c1(+-1) not separated from 0" was 34 of stability_max's 47 undecided cases).
+template <class S>
+bool even_device_zero_at_minus1(const QP& num, const QP& den, const S& s) {
+  const auto reflect = [](const QP& p) {  // p(-s)
+    std::vector<rational> c = p.coeffs();
+    for (size_t k = 1; k < c.size(); k += 2) c[k] = -c[k];
+    return QP(c);
+  };
+  if (num * reflect(den) != reflect(num) * den) return false;
+  const Ball d = eval(s.D, Ball(rational(-1)));
+  return !arb_contains_zero(d.get());
+}
+
 /// Poles off s = 0: e^{p T} as Arb balls. D keeps its exact (z - 1)^r factor.
 Sampled<Ball> sample_ball(const QP& num, const QP& den, const rational& T, int r) {
   const StateSpace<rational> ss = realize(num, den);
@@ -166,6 +188,7 @@ Sampled<Ball> sample_ball(const QP& num, const QP& den, const rational& T, int r
   for (int k = 0; k < r; ++k) D = mul(D, Vec<Ball>{Ball(rational(-1)), Ball(rational(1))});
   s.D = D;
   s.r = r;
+  s.N_zero_at_minus1 = even_device_zero_at_minus1(num, den, s);
   return s;
 }
 
@@ -212,8 +235,9 @@ Edges<C> edges(const WallPolys& w, const Sampled<C>& s, int n) {
   e.at1_0 = lead1 + term_at(w.A0, rational(1), s.N);
   e.at1_1 = term_at(w.A1, rational(1), s.N);
   const rational sign = n % 2 == 0 ? 1 : -1;
-  e.atm1_0 = C(sign * w.L(rational(-1))) * eval(s.D, C(rational(-1))) + term_at(w.A0, rational(-1), s.N);
-  e.atm1_1 = term_at(w.A1, rational(-1), s.N);
+  e.atm1_0 = C(sign * w.L(rational(-1))) * eval(s.D, C(rational(-1))) +
+              (s.N_zero_at_minus1 ? C(rational(0)) : term_at(w.A0, rational(-1), s.N));
+  e.atm1_1 = s.N_zero_at_minus1 ? C(rational(0)) : term_at(w.A1, rational(-1), s.N);
   return e;
 }
 
