@@ -85,7 +85,11 @@ multidof-witness  paper 000's Theorem 5 program (16) infeasible for the scene's 
        s-entries parsed with s the rational function of z itself, evaluated at the rational z of the
        evidence in Gaussian rationals; phi per group <= 0, one < 0. Several weighted points (evidence.points,
        the several-frequency witness where X has several free directions): sum_j w_j phi per group.
-Size limit: multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
+multidof-feasible  paper 000's (16) feasible: the evidence's realisation (A, B, C, D) equals the model's
+       E-hat = T z/(z-1) z^-n g E(z) at N + n + d + 2 integer points (so identically), and the point (P, X,
+       Q_E, Q_V) passes P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) with g >= 1 per operator, by
+       symmetric elimination in fractions.
+Size limit: multidof-feasible: N + m <= 40; multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -2580,6 +2584,160 @@ def witness_levels(model, m):
     return delta
 
 
+def operator_owner(model, m):
+    """The operator of every DOF (each DOF in exactly one of model.operators)."""
+    ops = model.get("operators")
+    if not isinstance(ops, list) or not ops:
+        raise Malformed("model.operators: missing or not a non-empty array")
+    owner = [None] * m
+    for o, dofs in enumerate(ops):
+        if not isinstance(dofs, list) or not dofs:
+            raise Malformed("model.operators[%d]: a non-empty array of DOF indices" % o)
+        for v in dofs:
+            if not isinstance(v, int) or isinstance(v, bool) or not 0 <= v < m or owner[v] is not None:
+                raise Malformed("model.operators[%d]: %r is not a free DOF index in [0, %d)" % (o, v, m))
+            owner[v] = o
+    if None in owner:
+        raise Malformed("model.operators: DOF %d has no operator" % owner.index(None))
+    return owner
+
+
+MAX_FEASIBLE_ORDER = 40  # N + m: exact elimination in fractions on matrices of that order
+
+
+def frac_matrix(ev, key, rows, cols):
+    M = ev.get(key)
+    if not isinstance(M, list) or len(M) != rows or any(not isinstance(r, list) or len(r) != cols for r in M):
+        raise Malformed("evidence.%s: must be %d x %d \"p/q\" strings" % (key, rows, cols))
+    return [[exact_value(x, "evidence.%s[%d][%d]" % (key, i, j)) for j, x in enumerate(r)] for i, r in enumerate(M)]
+
+
+def semidefinite(M, strict):
+    """Positive (semi)definite by symmetric elimination: no negative pivot; a zero pivot has a zero row
+    (and is refused when strict)."""
+    M = [list(r) for r in M]
+    n = len(M)
+    for k in range(n):
+        p = M[k][k]
+        if p < 0 or (strict and p == 0):
+            return False
+        if p == 0:
+            if any(M[k][j] != 0 for j in range(k + 1, n)):
+                return False
+            continue
+        for i in range(k + 1, n):
+            if M[i][k] != 0:
+                f = M[i][k] / p
+                for j in range(k + 1, n):
+                    M[i][j] -= f * M[k][j]
+    return True
+
+
+def mmul(A, B):
+    return [[sum((a * B[l][j] for l, a in enumerate(row) if a), Fraction(0)) for j in range(len(B[0]) if B else 0)] for row in A]
+
+
+def mT(A):
+    return [list(r) for r in zip(*A)] if A else []
+
+
+def msum(A, B, s=1):
+    return [[a + s * b for a, b in zip(ra, rb)] for ra, rb in zip(A, B)]
+
+
+def solve_shifted(A, B, z):
+    """(zI - A)^-1 B in fractions, or None when singular."""
+    n, m = len(A), len(B[0]) if B else 0
+    M = [[(z if i == j else 0) - A[i][j] for j in range(n)] + list(B[i]) for i in range(n)]
+    for k in range(n):
+        p = next((r for r in range(k, n) if M[r][k] != 0), None)
+        if p is None:
+            return None
+        M[k], M[p] = M[p], M[k]
+        for i in range(n):
+            if i != k and M[i][k] != 0:
+                f = M[i][k] / M[k][k]
+                M[i] = [a - f * b for a, b in zip(M[i], M[k])]
+    return [[M[i][n + j] / M[i][i] for j in range(m)] for i in range(n)]
+
+
+def check_multidof_feasible(c):
+    """Paper 000's (16) feasible: the evidence's (A, B, C, D) realises E-hat = T z/(z-1) z^-n g E(z) of the
+    model (equal at N + n + d + 2 integer points: the cross-multiplied difference has degree <= N + n + d + 1),
+    and (P, X, Q_E, Q_V) satisfies P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) one g >= 1 per operator."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
+    only(claim, ("status", "feasible"), "claim")
+    only(ev, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V"), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("feasible"), bool):
+        raise Malformed("claim.feasible: missing or not true/false")
+    if not claim["feasible"]:
+        return False, "the claim is that (16) is infeasible; a point proves only feasibility"
+    T, n = period(model), delay_of(model)
+    E, g = env_entries(model, T, parameters(model))
+    m = len(E)
+    delta = witness_levels(model, m)
+    owner = operator_owner(model, m)
+    Araw = ev.get("A")
+    if not isinstance(Araw, list):
+        raise Malformed("evidence.A: missing or not a matrix")
+    N = len(Araw)
+    if N + m > MAX_FEASIBLE_ORDER:
+        raise TooLarge("evidence.A: order %d with m = %d, above this checker's limit N + m <= %d" % (N, m, MAX_FEASIBLE_ORDER))
+    A, B, C, D = frac_matrix(ev, "A", N, N), frac_matrix(ev, "B", N, m), frac_matrix(ev, "C", m, N), frac_matrix(ev, "D", m, m)
+    P, X, QE, QV = (frac_matrix(ev, k, N if k == "P" else m, N if k == "P" else m) for k in ("P", "X", "Q_E", "Q_V"))
+    d = max(h.degree() for row in E for h in row)
+    need, agreed, z = N + n + d + 2, 0, 1
+    while agreed < need and z < 2 + 4 * need + 64:
+        z += 1
+        Y = solve_shifted(A, B, Fraction(z))
+        if Y is None:
+            continue
+        G = msum(mmul(C, Y), D) if N else D
+        factor = T * g * Fraction(z) / (z - 1) / Fraction(z) ** n
+        vals = [[rf_at(h, cq(z)) for h in row] for row in E]
+        if any(v is None for row in vals for v in row):
+            continue
+        for i in range(m):
+            for j in range(m):
+                if G[i][j] != factor * vals[i][j][0]:
+                    return False, "(A, B, C, D) does not realise the model's E-hat: entry (%d, %d) differs at z = %d" % (i, j, z)
+        agreed += 1
+    if agreed < need:
+        return False, "too few points to compare the realisation with the model"
+    for i in range(m):
+        for j in range(m):
+            if i != j and X[i][j] != 0:
+                return False, "X is not diagonal"
+            if owner[i] == owner[j] and X[i][i] != X[j][j]:
+                return False, "X is not g I on an operator's DOFs"
+        if X[i][i] < 1:
+            return False, "g < 1 ((9))"
+    if any(M[i][j] != M[j][i] for M in (P, QE, QV) for i in range(len(M)) for j in range(i)):
+        return False, "P, Q_E or Q_V not symmetric"
+    if not semidefinite(P, True):
+        return False, "P > 0 fails"
+    AtP = mmul(mT(A), P) if N else []
+    M11 = msum(mmul(AtP, A), P, -1) if N else []
+    M12 = msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)) if N else []
+    XD = mmul(X, D)
+    BtPB = mmul(mmul(mT(B), P), B) if N else [[Fraction(0)] * m for _ in range(m)]
+    M22 = msum(msum(BtPB, QE, -1), msum(XD, mT(XD)), Fraction(-1, 2))
+    neg = [[-(M11[i][j] if j < N else M12[i][j - N]) for j in range(N + m)] for i in range(N)]
+    neg += [[-(M12[j][i] if j < N else M22[i][j - N]) for j in range(N + m)] for i in range(m)]
+    if not semidefinite(neg, False):
+        return False, "(16)'s first LMI M1 <= 0 fails"
+    S = [[(delta[i] * X[i][i] if i == j else 0) - QE[i][j] for j in range(m)] + [-QE[i][j] for j in range(m)] for i in range(m)]
+    S += [[-QE[i][j] for j in range(m)] + [QV[i][j] - QE[i][j] for j in range(m)] for i in range(m)]
+    if not semidefinite(S, True):
+        return False, "(14) > 0 fails"
+    if not semidefinite(QV, True):
+        return False, "Q_V > 0 fails"
+    return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
+
+
 def check_multidof_witness(c):
     """Paper 000's (16) infeasible for every admissible X: phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T
     Delta_D X u > 0 at every point of (16) (M1 <= 0 at [x; u], x = (zI - A)^-1 B u, and Delta_D X - Q_E
@@ -2600,18 +2758,7 @@ def check_multidof_witness(c):
     m = len(E)
     delta = witness_levels(model, m)
     ops = model.get("operators")
-    if not isinstance(ops, list) or not ops:
-        raise Malformed("model.operators: missing or not a non-empty array")
-    owner = [None] * m
-    for o, dofs in enumerate(ops):
-        if not isinstance(dofs, list) or not dofs:
-            raise Malformed("model.operators[%d]: a non-empty array of DOF indices" % o)
-        for v in dofs:
-            if not isinstance(v, int) or isinstance(v, bool) or not 0 <= v < m or owner[v] is not None:
-                raise Malformed("model.operators[%d]: %r is not a free DOF index in [0, %d)" % (o, v, m))
-            owner[v] = o
-    if None in owner:
-        raise Malformed("model.operators: DOF %d has no operator" % owner.index(None))
+    owner = operator_owner(model, m)
     one = cq(1)
     E1 = [[rf_at(h, one) for h in row] for row in E]
     for i in range(m):
@@ -2698,7 +2845,8 @@ def check(c):
         if c.get("version") != 1 or isinstance(c.get("version"), bool):
             raise Malformed("version: missing or not 1")
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
-                    "multidof-witness": check_multidof_witness, "passivity-level": check_passivity_level,
+                    "multidof-feasible": check_multidof_feasible, "multidof-witness": check_multidof_witness,
+                    "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
         kind = c.get("kind")

@@ -1455,7 +1455,7 @@ def rand_r(rng):
 
 
 KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge",
-         "bound-inf", "limit-cycle", "multidof-witness")
+         "bound-inf", "limit-cycle", "multidof-witness")  # multidof-witness: multidof-feasible beside it
 
 
 def bound_produce(hapstab, m, digits, path, label, certs, skipped):
@@ -1555,7 +1555,7 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
         if not isinstance(cert, dict):
             skipped["multidof-witness: " + cert] = skipped.get("multidof-witness: " + cert, 0) + 1
             continue
-        certs.append(("multidof-witness", cert))
+        certs.append((cert["kind"], cert))
     return certs, skipped
 
 
@@ -1674,7 +1674,7 @@ def main():
             ms = inf_mutants(cert, irng, a.hapstab, cache)
         elif kind == "limit-cycle":
             ms = lc_mutants(cert, lrng, a.hapstab, scache, tmp)
-        elif kind == "multidof-witness":
+        elif kind.startswith("multidof-"):
             ms = mutate_multidof.mutants(cert, lrng)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)

@@ -1,9 +1,10 @@
-"""The multidof-witness kind of tests/check/mutate.py (issue 47): `multidof analyze --scene S
---certificate F` on the witness campaign's random scenes (tests/verify/indep_witness.py's gen: walls
-K + B(z - 1)/(Tz) with resonances near the circle, linked walls, contact scenes in s by backward
-Euler, two independent parts; delays 0-24; device levels placed 1e-2..1e-6 from Theorem 5's
-boundary or far from it), kept where the one-frequency witness decided (16) infeasible, and their
-mutants with what must happen (mutate.py's accept / refute / malformed / agree)."""
+"""The multidof kinds of tests/check/mutate.py (issue 47), multidof-feasible and multidof-witness:
+`multidof analyze --scene S --certificate F` on the witness campaign's random scenes
+(tests/verify/indep_witness.py's gen: walls K + B(z - 1)/(Tz) with resonances near the circle,
+linked walls, contact scenes in s by backward Euler, two independent parts; delays 0-24; device
+levels placed 1e-2..1e-6 from Theorem 5's boundary or far from it) and chains of walls linked by
+dampers, kept where a certificate was written ((16) feasible: its exact point; infeasible: a
+witness), and their mutants with what must happen (mutate.py's accept / refute / malformed / agree)."""
 import copy
 import json
 import os
@@ -51,8 +52,8 @@ def produce(hapstab, rng, tmp, i):
     p = subprocess.run([hapstab, "multidof", "analyze", "--scene", scene, "--quiet", "--certificate", path],
                        capture_output=True, text=True)
     if p.returncode == 2 and "no certificate kind yet" in p.stderr:
-        return "feasible or decided another way (no kind)"
-    if p.returncode != 1 or not os.path.exists(path):
+        return "decided another way (no kind)"
+    if p.returncode not in (0, 1) or not os.path.exists(path):
         return "exit %d: %s" % (p.returncode, p.stderr.strip().split("error: ", 1)[-1][:60])
     with open(path) as f:
         return json.load(f)
@@ -106,8 +107,52 @@ def point_mutants(cert, rng):
     return out
 
 
+def feasible_mutants(cert, rng):
+    """A multidof-feasible certificate: (16)'s exact point on a realisation of E-hat."""
+    ev, model = cert["evidence"], cert["model"]
+    m, N = len(ev["X"]), len(ev["A"])
+    out = [("unmutated", cert, "accept")]
+
+    def entry(key, i, j, f):
+        M = copy.deepcopy(ev[key])
+        M[i][j] = fs(f(Fraction(M[i][j])))
+        return _set(cert, ["evidence", key], M)
+    out.append(("claim infeasible", _set(cert, ["claim", "feasible"], False), "refute"))
+    out.append(("Q_V = 0", _set(cert, ["evidence", "Q_V"], [["0"] * m for _ in range(m)]), "refute"))
+    out.append(("g_0 = 1/2", entry("X", 0, 0, lambda x: Fraction(1, 2)), "refute"))
+    out.append(("D[0][0] + 1", entry("D", 0, 0, lambda x: x + 1), "refute"))
+    out.append(("delay + 1", _set(cert, ["model", "delay"], model["delay"] + 1), "refute"))
+    if N:
+        out.append(("P[0][0] negated", entry("P", 0, 0, lambda x: -x if x else Fraction(-1)), "refute"))
+        out.append(("A[0][0] + 1", entry("A", 0, 0, lambda x: x + 1), "refute"))
+        out.append(("P not symmetric", entry("P", 0, N - 1, lambda x: x + 1) if N > 1 else entry("P", 0, 0, lambda x: -x - 1), "refute"))
+        out.append(("P x 2", _set(cert, ["evidence", "P"], [[fs(2 * Fraction(x)) for x in r] for r in ev["P"]]), "agree"))
+        out.append(("A a row short", _set(cert, ["evidence", "A"], ev["A"][:-1]), "malformed"))
+    for key in ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V"):
+        out.append(("deleted evidence." + key, _set(cert, ["evidence", key], None), "malformed"))
+    for path in (["model", "T"], ["model", "environment"], ["model", "devices"], ["model", "operators"], ["claim", "feasible"]):
+        out.append(("deleted " + ".".join(path), _set(cert, path, None), "malformed"))
+    out.append(("added evidence.u", _set(cert, ["evidence", "u"], ["1"] * m), "malformed"))
+    out.append(("status certified", _set(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("X a decimal", _set(cert, ["evidence", "X"], [["0.5" if (i, j) == (0, 0) else x for j, x in enumerate(r)]
+                                                              for i, r in enumerate(ev["X"])]), "malformed"))
+    out.append(("T doubled", _set(cert, ["model", "T"], fs(2 * Fraction(model["T"]))), "agree"))
+    out.append(("Q_E x 2", _set(cert, ["evidence", "Q_E"], [[fs(2 * Fraction(x)) for x in r] for r in ev["Q_E"]]), "agree"))
+    out.append(("X x 2", _set(cert, ["evidence", "X"], [[fs(2 * Fraction(x)) for x in r] for r in ev["X"]]), "agree"))
+    big = [dict(d) for d in model["devices"]]
+    for d in big:
+        d["osp" if "osp" in d else "b"] = fs(Fraction(d.get("osp", d.get("b"))) * 2)
+    out.append(("device levels doubled", _set(cert, ["model", "devices"], big), "agree"))
+    for name in list(model.get("set", {}))[:2]:
+        v = Fraction(model["set"][name])
+        out.append(("set.%s x 1.01" % name, _set(cert, ["model", "set", name], fs(v * Fraction(101, 100))), "agree"))
+    return out
+
+
 def mutants(cert, rng):
-    """[(name, certificate, expectation)] of one multidof-witness certificate."""
+    """[(name, certificate, expectation)] of one multidof-feasible or multidof-witness certificate."""
+    if cert["kind"] == "multidof-feasible":
+        return feasible_mutants(cert, rng)
     if "points" in cert["evidence"]:
         return point_mutants(cert, rng)
     out = [("unmutated", cert, "accept")]
@@ -179,10 +224,19 @@ def mutants(cert, rng):
 
 
 def branches(certs):
+    fs_ = [c for k, c in certs if k == "multidof-feasible"]
     ws = [c for k, c in certs if k == "multidof-witness"]
+    head = ""
+    if fs_:
+        head = ("  multidof-feasible branches: DOF 1 %d, 2-4 %d; s-domain %d; delay 0 %d, >= 1 %d; E-hat states <= 10 %d, 11-40 %d, > 40 %d" % (
+            sum(1 for c in fs_ if len(c["evidence"]["X"]) == 1), sum(1 for c in fs_ if len(c["evidence"]["X"]) > 1),
+            sum(1 for c in fs_ if c["model"]["environment"]["domain"] == "s"),
+            sum(1 for c in fs_ if c["model"]["delay"] == 0), sum(1 for c in fs_ if c["model"]["delay"] > 0),
+            sum(1 for c in fs_ if len(c["evidence"]["A"]) <= 10), sum(1 for c in fs_ if 10 < len(c["evidence"]["A"]) <= 40),
+            sum(1 for c in fs_ if len(c["evidence"]["A"]) > 40)))
     if not ws:
-        return ""
-    return ("  multidof-witness branches: DOF 1 %d, 2-4 %d; s-domain %d; delay 0 %d, 1 %d, >= 2 %d; z = -1 %d; "
+        return head
+    return head + ("\n" if head else "") + ("  multidof-witness branches: DOF 1 %d, 2-4 %d; s-domain %d; delay 0 %d, 1 %d, >= 2 %d; z = -1 %d; "
             "several operator groups %d; a declared osp %d; several weighted points %d" % (
                 sum(1 for c in ws if len(c["model"]["environment"]["E"]) == 1),
                 sum(1 for c in ws if len(c["model"]["environment"]["E"]) > 1),

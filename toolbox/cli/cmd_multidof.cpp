@@ -1,5 +1,5 @@
 // `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]
-//                         [--certificate FILE]` (the multidof-witness certificate: cli/multidof_certificate.hpp)
+//                         [--certificate FILE]` (multidof-feasible / multidof-witness: cli/multidof_certificate.hpp)
 // `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N]`
 // A run longer than 2 s names its stages on stderr (cli/progress.hpp); --quiet silences them.
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
@@ -213,7 +213,7 @@ int run_analyze(const Opts& o) {
     return multidof::analyze_scene(sc, opt);
   }();
   if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
-    write_certificate(o.certificate, multidof_witness_certificate(sc, a));
+    write_certificate(o.certificate, multidof_certificate(sc, a));
   const auto& sp = a.scene;
   const auto& r = a.lmis;
   const auto& law = a.loop;
@@ -464,9 +464,9 @@ const Register multidof_cmd({"multidof",
                                  sub->add_option("--backend", o->backend, "SDP back-end: auto (default: the built-in IPM, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
                                  if (nm == "analyze")
                                    sub->add_option("--certificate", o->certificate,
-                                                   "write the certificate of (16) infeasible by a frequency witness (JSON) to "
-                                                   "FILE, for `hapstab check FILE` (other verdicts have no kind yet: refused, "
-                                                   "exit 2; docs/certificates.md)");
+                                                   "write the certificate of (16)'s verdict (JSON: feasible, its exact point; "
+                                                   "infeasible, its frequency witness) to FILE, for `hapstab check FILE` "
+                                                   "(a decomposed scene has no kind yet: refused, exit 2; docs/certificates.md)");
                                  if (std::string(name) == "design")
                                    sub->add_option("--iterations", o->iterations, "Maximum CCL iterations (default 40)");
                                  sub->callback([mode, name]() { *mode = name; });

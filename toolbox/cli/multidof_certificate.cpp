@@ -79,19 +79,11 @@ std::string multidof_certificate_premise(const scene::Scene& sc) {
   return "";
 }
 
-nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
-  const auto& r = a.lmis;
-  if (!r.witness && !r.weighted_witness) {
-    const std::string what = a.feasible ? "a feasible (16) (P, X and the slack)"
-                             : a.certified ? "(16) infeasible by the path '" + r.path + "'"
-                                           : "an undecided (16)";
-    throw InputError("--certificate: " + what + " has no certificate kind yet (issue 47); only (16) infeasible by the "
-                     "frequency witness does (kind multidof-witness): no certificate");
-  }
-  if (const std::string why = multidof_certificate_premise(sc); !why.empty())
-    throw InputError("--certificate: " + why + ": no certificate");
+namespace {
+
+// The model as the scene writes it (multidof_certificate_premise holds).
+nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
   const toml::table& env = *environment_table(sc);
-  nlohmann::json j = certificate_header("multidof-witness");
   nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))},
                    {"gain", gain_of(sc, env).str()},
                    {"E", *written_entries(env)}};
@@ -120,14 +112,59 @@ nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multid
     first += o.dof;
     operators.push_back(dofs);
   }
-  j["model"] = {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
-                {"operators", operators}};
+  return {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
+          {"operators", operators}};
+}
+
+nlohmann::json strings(const std::vector<rational>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& x : v) a.push_back(x.str());
+  return a;
+}
+
+nlohmann::json matrix_strings(const MatQ& M) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    nlohmann::json r = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < M.cols(); ++j) r.push_back(M(i, j).str());
+    a.push_back(r);
+  }
+  return a;
+}
+
+// (16) feasible: the exact point and the realisation of E-hat it is on
+nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
+  const multidof::ExactPoint& x = *a.lmis.exact_point;
+  if (x.Ehat.states() + x.Ehat.inputs() > 160)
+    throw InputError("--certificate: E-hat has " + std::to_string(x.Ehat.states()) + " states and " +
+                     std::to_string(x.Ehat.inputs()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
+  nlohmann::json j = certificate_header("multidof-feasible");
+  j["model"] = scene_model(sc, a);
+  j["claim"] = {{"status", "exact"}, {"feasible", true}};
+  j["evidence"] = {{"A", matrix_strings(x.Ehat.A)}, {"B", matrix_strings(x.Ehat.B)}, {"C", matrix_strings(x.Ehat.C)},
+                   {"D", matrix_strings(x.Ehat.D)}, {"P", matrix_strings(x.P)}, {"X", matrix_strings(x.X)},
+                   {"Q_E", matrix_strings(x.QE)}, {"Q_V", matrix_strings(x.QV)}};
+  verify_before_writing(j);
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
+  const auto& r = a.lmis;
+  if (const std::string why = multidof_certificate_premise(sc); !why.empty())
+    throw InputError("--certificate: " + why + ": no certificate");
+  if (a.feasible && a.certified && r.exact_point) return feasible_certificate(sc, a);
+  if (!r.witness && !r.weighted_witness) {
+    const std::string what = a.feasible && !r.components.empty() ? "a feasible (16) decided per component (decomposed)"
+                             : a.feasible   ? "a feasible (16) without a certified point"
+                             : a.certified ? "(16) infeasible by the path '" + r.path + "'"
+                                           : "an undecided (16)";
+    throw InputError("--certificate: " + what + " has no certificate kind yet (issue 47): no certificate");
+  }
+  nlohmann::json j = certificate_header("multidof-witness");
+  j["model"] = scene_model(sc, a);
   j["claim"] = {{"status", "exact"}, {"feasible", false}};
-  const auto strings = [](const std::vector<rational>& v) {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& x : v) a.push_back(x.str());
-    return a;
-  };
   if (r.witness) {
     j["evidence"] = {{"z_re", r.witness->z_re.str()}, {"z_im", r.witness->z_im.str()}, {"u", strings(r.witness->u)}};
   } else {  // the several-frequency witness: every point with its weight

@@ -1,11 +1,13 @@
 // cli/multidof_certificate.hpp -- `multidof analyze --scene S --certificate FILE` (issue 47): the
-// certificate of Theorem 5's program (16) proven infeasible by a frequency-domain witness, at one
-// frequency or at several with weights (check/multidof_witness_check.hpp, kind multidof-witness).
+// certificate of Theorem 5's program (16) proven feasible -- the exact point (P, X, Q_E, Q_V) on the
+// realisation of E-hat it was checked on (check/multidof_feasible_check.hpp, kind multidof-feasible)
+// -- or infeasible by a frequency-domain witness, at one frequency or at several with weights
+// (check/multidof_witness_check.hpp, kind multidof-witness).
 // The model is the scene's as written: the environment's expressions (`tf`), domain, method and
 // gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
 // `osp`) and the operators' DOFs.
-// Other verdicts have no multi-DOF kind yet (a feasible (16): P, X and the slack; the loop as
-// written, hidden modes): asking for one is refused by name (exit 2).
+// Other verdicts have no multi-DOF kind yet (a scene decomposed into components, the loop as
+// written, hidden modes, Assumption 1): asking for one is refused by name (exit 2).
 #pragma once
 
 #include <string>
@@ -22,8 +24,9 @@ namespace hapstab::cli {
 /// `perturb_C`, a device whose OSP level is a certified bound rather than exact or declared.
 std::string multidof_certificate_premise(const scene::Scene& sc);
 
-/// The certificate of `a`'s verdict: (16) infeasible by a frequency-domain witness, verified by
-/// check/ before it is returned. InputError (exit 2, no file) for any other verdict, naming it.
-nlohmann::json multidof_witness_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a);
+/// The certificate of `a`'s verdict on (16): feasible (its exact point) or infeasible by a
+/// frequency-domain witness, verified by check/ before it is returned. InputError (exit 2, no file)
+/// for any other verdict, naming it, or an E-hat beyond the checkers' size (order 160).
+nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a);
 
 }  // namespace hapstab::cli

@@ -11,6 +11,7 @@
 #include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/bound_max_check.hpp"
 #include "hapstab/check/limit_cycle_check.hpp"
+#include "hapstab/check/multidof_feasible_check.hpp"
 #include "hapstab/check/multidof_witness_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/passivity_level_mimo_check.hpp"
@@ -151,6 +152,26 @@ std::optional<bool> rounds_to(const std::string& s, const rational& x) {
 }
 
 
+std::vector<std::vector<rational>> exact_matrix(const nlohmann::json& obj, const std::string& key, const std::string& where,
+                                                size_t max_dim) {
+  const std::string at = where + "." + key;
+  if (!obj.contains(key) || !obj.at(key).is_array())
+    throw InputError(at + ": missing or not an array of rows of \"p/q\" strings");
+  const auto& rows = obj.at(key);
+  std::vector<std::vector<rational>> M;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].is_array()) throw InputError(at + "[" + std::to_string(i) + "]: not an array (a row)");
+    if (rows.size() > max_dim || rows[i].size() > max_dim)
+      throw InputError(at + ": more than " + std::to_string(max_dim) + " rows or columns (this checker's limit)");
+    std::vector<rational> r;
+    for (size_t j = 0; j < rows[i].size(); ++j)
+      r.push_back(exact_string(rows[i][j], at + "[" + std::to_string(i) + "][" + std::to_string(j) + "]"));
+    if (!M.empty() && r.size() != M[0].size()) throw InputError(at + ": rows of different lengths");
+    M.push_back(std::move(r));
+  }
+  return M;
+}
+
 PeriodDelay read_period_delay(const nlohmann::json& model) {
   PeriodDelay m;
   m.T = exact_field(model, "T", "model");
@@ -198,6 +219,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound") return check_bound(c);
   if (kind == "bound-max") return check_bound_max(c);
   if (kind == "limit-cycle") return check_limit_cycle(c);
+  if (kind == "multidof-feasible") return check_multidof_feasible(c);
   if (kind == "multidof-witness") return check_multidof_witness(c);
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "passivity-level-mimo") return check_passivity_level_mimo(c);
@@ -205,7 +227,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-feasible, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

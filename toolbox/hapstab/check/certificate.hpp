@@ -5,6 +5,7 @@
 //   bound   b* of paper 001 (45)/(54), any delay          check/bound_check.hpp
 //   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
 //   limit-cycle  a periodic orbit of paper 002's loop (4) check/limit_cycle_check.hpp
+//   multidof-feasible  Theorem 5's (16) has a point, paper 000  check/multidof_feasible_check.hpp
 //   multidof-witness  Theorem 5's (16) infeasible, paper 000  check/multidof_witness_check.hpp
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   passivity-level-mimo  MIMO ISP level of A, B, C, D    check/passivity_level_mimo_check.hpp
@@ -21,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -47,6 +49,10 @@ namespace detail {
 rational exact_field(const nlohmann::json& obj, const std::string& key, const std::string& where);
 /// The string "p/q" or "p" as an exact rational, or InputError naming `what`.
 rational exact_string(const nlohmann::json& v, const std::string& what);
+/// obj[key] as a matrix of exact rationals (an array of rows of "p/q" strings, equal lengths, at most
+/// max_dim rows and columns); InputError naming where.key[i][j] otherwise.
+std::vector<std::vector<rational>> exact_matrix(const nlohmann::json& obj, const std::string& key, const std::string& where,
+                                                size_t max_dim);
 /// obj[key] as an object; InputError naming where.key when missing or not an object.
 const nlohmann::json& object_field(const nlohmann::json& obj, const std::string& key, const std::string& where);
 /// InputError naming where.KEY when obj has a key outside `known`: a field a checker does not read

@@ -5,8 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "hapstab/check/gaussian_rational.hpp"
-#include "hapstab/lti/parse.hpp"
+#include "hapstab/check/multidof_model.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -14,105 +13,7 @@ namespace hapstab::check {
 namespace {
 
 using namespace detail;
-using P = Polynomial<rational>;
-
-constexpr size_t max_dofs = 512;
-
-struct Environment {
-  char var = 'z';
-  bool tustin = false;
-  rational T, gain;
-  long n = 0;
-  std::vector<std::vector<TransferFunction>> E;  // m x m, as written
-};
-
-Environment read_environment(const nlohmann::json& model, const rational& T, long n) {
-  const nlohmann::json& env = object_field(model, "environment", "model");
-  only_fields(env, {"domain", "method", "gain", "E"}, "model.environment");
-  Environment e;
-  e.T = T;
-  e.n = n;
-  const std::string domain = env.value("domain", std::string());
-  if (domain != "z" && domain != "s") throw InputError("model.environment.domain: must be \"z\" or \"s\"");
-  e.var = domain[0];
-  if (e.var == 's') {
-    const std::string method = env.value("method", std::string());
-    if (method != "backward_euler" && method != "tustin")
-      throw InputError("model.environment.method: must be \"backward_euler\" or \"tustin\" for domain \"s\"");
-    e.tustin = method == "tustin";
-  } else if (env.contains("method")) {
-    throw InputError("model.environment.method: only with domain \"s\"");
-  }
-  e.gain = exact_field(env, "gain", "model.environment");
-  if (!env.contains("E") || !env.at("E").is_array() || env.at("E").empty() || env.at("E").size() > max_dofs)
-    throw InputError("model.environment.E: must be an m x m array of expression strings, 1 <= m <= " +
-                     std::to_string(max_dofs));
-  const size_t m = env.at("E").size();
-  ParseOptions po;
-  po.variable = e.var;
-  po.T = T;
-  po.parameters = model_parameters(model);
-  for (size_t i = 0; i < m; ++i) {
-    const auto& row = env.at("E").at(i);
-    if (!row.is_array() || row.size() != m)
-      throw InputError("model.environment.E[" + std::to_string(i) + "]: a row of " + std::to_string(m) + " strings");
-    e.E.emplace_back();
-    for (size_t j = 0; j < m; ++j) {
-      const std::string where = "model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) + "]";
-      if (!row.at(j).is_string()) throw InputError(where + ": not a string");
-      try {
-        e.E.back().push_back(parse_tf(row.at(j).get<std::string>(), po));
-      } catch (const InputError& err) {
-        throw InputError(where + ": " + err.what());
-      }
-    }
-  }
-  return e;
-}
-
-Cq horner(const P& p, const Cq& x) {
-  Cq r;
-  for (int k = p.degree(); k >= 0; --k) r = r * x + Cq(p.coeff(k));
-  return r;
-}
-
-// sum_k p_k sigma^k tau^(d - k)
-Cq homogeneous(const P& p, const Cq& sigma, const Cq& tau, int d) {
-  Cq r, tp(1);
-  std::vector<Cq> tau_pow(static_cast<size_t>(d) + 1);
-  for (int k = 0; k <= d; ++k) tau_pow[static_cast<size_t>(k)] = k ? tau_pow[static_cast<size_t>(k) - 1] * tau : Cq(1);
-  Cq sp(1);
-  for (int k = 0; k <= d; ++k) {
-    if (k <= p.degree()) r = r + Cq(p.coeff(k)) * sp * tau_pow[static_cast<size_t>(d - k)];
-    sp = sp * sigma;
-  }
-  return r;
-}
-
-/// E_ij(z) exactly, or nullopt at a pole (the denominator as parsed vanishes there).
-std::optional<Cq> entry_at(const Environment& e, const TransferFunction& H, const Cq& z) {
-  if (e.var == 'z') {
-    const Cq d = horner(H.den(), z);
-    if (d.is_zero()) return std::nullopt;
-    return horner(H.num(), z) / d;
-  }
-  const Cq sigma = e.tustin ? Cq(2) * (z - Cq(1)) : z - Cq(1);
-  const Cq tau = e.tustin ? Cq(e.T) * (z + Cq(1)) : Cq(e.T) * z;
-  const int d = std::max(H.num().degree(), H.den().degree());
-  const Cq den = homogeneous(H.den(), sigma, tau, d);
-  if (den.is_zero()) return std::nullopt;
-  return homogeneous(H.num(), sigma, tau, d) / den;
-}
-
-Cq power(Cq x, long n) {
-  Cq r(1);
-  while (n > 0) {
-    if (n & 1) r = r * x;
-    x = x * x;
-    n >>= 1;
-  }
-  return r;
-}
+using namespace multidof_model;
 
 struct UnionFind {
   std::vector<size_t> parent;
@@ -122,59 +23,6 @@ struct UnionFind {
     return a;
   }
 };
-
-// delta_i per DOF from model.devices, in DOF order
-std::vector<rational> device_levels(const nlohmann::json& model, size_t m) {
-  if (!model.contains("devices") || !model.at("devices").is_array() || model.at("devices").empty())
-    throw InputError("model.devices: missing or not a non-empty array");
-  std::vector<rational> delta;
-  for (size_t d = 0; d < model.at("devices").size(); ++d) {
-    const auto& dev = model.at("devices").at(d);
-    const std::string where = "model.devices[" + std::to_string(d) + "]";
-    if (!dev.is_object()) throw InputError(where + ": not an object");
-    only_fields(dev, {"dofs", "m", "b", "osp"}, where);
-    if (!dev.contains("dofs") || !dev.at("dofs").is_number_integer() || dev.at("dofs").get<long>() < 1)
-      throw InputError(where + ".dofs: missing or not a positive integer");
-    const long k = dev.at("dofs").get<long>();
-    rational level;
-    if (dev.contains("osp")) {
-      if (dev.contains("m") || dev.contains("b")) throw InputError(where + ": osp beside m, b (give one)");
-      level = exact_field(dev, "osp", where);
-    } else {
-      if (k != 1) throw InputError(where + ": a mass-damper (m, b) has one DOF");
-      if (exact_field(dev, "m", where) <= 0) throw InputError(where + ".m: the mass must be > 0");
-      level = exact_field(dev, "b", where);  // the OSP level of 1/(m s + b)
-    }
-    for (long i = 0; i < k; ++i) delta.push_back(level);
-    if (delta.size() > m) break;
-  }
-  if (delta.size() != m)
-    throw InputError("model.devices: their DOFs add up to " + std::to_string(delta.size()) + ", E has " + std::to_string(m));
-  return delta;
-}
-
-// the operator of every DOF (each DOF in exactly one operator)
-std::vector<size_t> operator_of(const nlohmann::json& model, size_t m) {
-  if (!model.contains("operators") || !model.at("operators").is_array() || model.at("operators").empty())
-    throw InputError("model.operators: missing or not a non-empty array");
-  const size_t none = model.at("operators").size();
-  std::vector<size_t> owner(m, none);
-  for (size_t o = 0; o < model.at("operators").size(); ++o) {
-    const auto& dofs = model.at("operators").at(o);
-    const std::string where = "model.operators[" + std::to_string(o) + "]";
-    if (!dofs.is_array() || dofs.empty()) throw InputError(where + ": a non-empty array of DOF indices");
-    for (const auto& v : dofs) {
-      if (!v.is_number_integer() || v.get<long>() < 0 || v.get<size_t>() >= m)
-        throw InputError(where + ": a DOF index outside [0, " + std::to_string(m - 1) + "]");
-      if (owner[v.get<size_t>()] != none)
-        throw InputError(where + ": DOF " + std::to_string(v.get<long>()) + " belongs to two operators");
-      owner[v.get<size_t>()] = o;
-    }
-  }
-  for (size_t i = 0; i < m; ++i)
-    if (owner[i] == none) throw InputError("model.operators: DOF " + std::to_string(i) + " has no operator");
-  return owner;
-}
 
 struct WitnessPoint {
   Cq z;
@@ -264,7 +112,7 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
       return {false, at + "u = 0: the witness needs a direction u != 0"};
     if (pt.w < 0) return {false, at + "the weight " + decimal(pt.w) + " is negative"};
     // E-hat(z) u, row by row: T z/(z - 1) z^-n g sum_j E_ij(z) u_j  (z^-n = conj(z)^n on the circle)
-    const Cq factor = Cq(env.T * env.gain) * z / (z - Cq(1)) * power(conj(z), env.n);
+    const Cq factor = ehat_factor(env, z);
     for (size_t i = 0; i < m; ++i) {
       Cq w;
       for (size_t j = 0; j < m; ++j) {

@@ -26,22 +26,7 @@ using CMat = std::vector<std::vector<Cq>>;
 constexpr long max_dim = 64, max_inputs = 16, max_mn = 64;
 
 Mat read_matrix(const nlohmann::json& model, const char* key) {
-  const std::string where = std::string("model.") + key;
-  if (!model.contains(key) || !model.at(key).is_array())
-    throw InputError(where + ": missing or not an array of rows of \"p/q\" strings");
-  const auto& rows = model.at(key);
-  Mat M;
-  for (size_t i = 0; i < rows.size(); ++i) {
-    if (!rows[i].is_array()) throw InputError(where + "[" + std::to_string(i) + "]: not an array (a row)");
-    if (static_cast<long>(rows.size()) > max_dim || static_cast<long>(rows[i].size()) > max_dim)
-      throw InputError(where + ": more than " + std::to_string(max_dim) + " rows or columns (this checker's limit)");
-    std::vector<rational> r;
-    for (size_t j = 0; j < rows[i].size(); ++j)
-      r.push_back(detail::exact_string(rows[i][j], where + "[" + std::to_string(i) + "][" + std::to_string(j) + "]"));
-    if (!M.empty() && r.size() != M[0].size()) throw InputError(where + ": rows of different lengths");
-    M.push_back(std::move(r));
-  }
-  return M;
+  return detail::exact_matrix(model, key, "model", static_cast<size_t>(max_dim));
 }
 
 size_t cols(const Mat& M) { return M.empty() ? 0 : M[0].size(); }

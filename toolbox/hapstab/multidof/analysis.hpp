@@ -129,6 +129,13 @@ struct WeightedWitness {
   std::vector<rational> sums;                     ///< the weighted sums, exact, each <= 0
 };
 
+/// The exact point of (16) that decided a feasible verdict, in E-hat's realisation ehat(E) of (15):
+/// what `multidof analyze --certificate` writes (cli/multidof_certificate.hpp).
+struct ExactPoint {
+  StateSpace<rational> Ehat;
+  MatQ P, X, QE, QV;
+};
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -150,6 +157,7 @@ struct AnalysisResult {
   std::vector<ComponentResult> components;  ///< how the scene split (empty: it did not; path "decomposed")
   std::optional<FrequencyWitness> witness;  ///< set when the frequency-domain witness decided
   std::optional<WeightedWitness> weighted_witness;  ///< set when the several-frequency witness decided
+  std::optional<ExactPoint> exact_point;  ///< set when a point passed the exact re-check (not decomposed)
   double seconds = 0;      ///< wall time of analyze()
   double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
                            ///< facial reduction, exact checks); decomposed: their share of the wall time

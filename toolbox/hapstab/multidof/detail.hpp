@@ -49,6 +49,9 @@ struct ExactEnv {
 };
 /// The solver's point of the environment side, exact (lmi::CertifiedSolve::point).
 ExactEnv exact_env(const lmi::CertifiedSolve& cs, const EnvVars& ev);
+/// The storage P of (16) in E-hat's coordinates (ehat(pb.E)) at the point x: Pi0^-T blockdiag(P11,
+/// X E(1)/(2T)) Pi0^-1, exact (recheck.cpp; the certificate of a feasible (16) prints it).
+MatQ storage_of(const Problem& pb, const EhatSplit& sp, const ExactEnv& x);
 /// THE exact re-check of a Theorem 5 point (recheck.cpp): true when every condition of (16) holds
 /// in rational arithmetic on the exact data (15); `why` says what was checked, or what failed.
 bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why);

@@ -12,11 +12,10 @@
 
 namespace hapstab::multidof::detail {
 
-bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
+MatQ storage_of(const Problem& pb, const EhatSplit& sp, const ExactEnv& x) {
   const int m = pb.structure.m();
   const int n = static_cast<int>(pb.E.states());
   const rational T = pb.T();
-  const StateSpace<rational> H = ehat(pb.E);
   // P = Pi0^-T blockdiag(P11, X E(1)/(2T)) Pi0^-1
   MatQ Pt = MatQ::Zero(n + m, n + m);
   if (n) Pt.topLeftCorner(n, n) = x.P11;
@@ -24,7 +23,15 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
   // Pi0 = [[I, Va], [0, I]] has the exact inverse [[I, -Va], [0, I]] (no elimination needed)
   MatQ Pi0i = MatQ::Identity(n + m, n + m);
   if (n) Pi0i.topRightCorner(n, m) = -sp.Va;
-  const MatQ P = exact_product(exact_product(MatQ(Pi0i.transpose()), Pt), Pi0i);
+  return exact_product(exact_product(MatQ(Pi0i.transpose()), Pt), Pi0i);
+}
+
+bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, const MatQ& QV, std::string& why) {
+  const int m = pb.structure.m();
+  const int n = static_cast<int>(pb.E.states());
+  const rational T = pb.T();
+  const StateSpace<rational> H = ehat(pb.E);
+  const MatQ P = storage_of(pb, sp, x);
   if (P != MatQ(P.transpose())) {
     why = "X E(1) is not exactly symmetric at the rounded point";
     return false;

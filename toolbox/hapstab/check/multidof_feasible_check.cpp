@@ -1,0 +1,200 @@
+// hapstab/check/multidof_feasible_check.cpp -- see multidof_feasible_check.hpp.
+#include "hapstab/check/multidof_feasible_check.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "hapstab/check/multidof_model.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+using namespace detail;
+using namespace multidof_model;
+using Mat = std::vector<std::vector<rational>>;
+
+constexpr size_t max_order = 160;  // N + m
+
+Mat zeros(size_t r, size_t c) { return Mat(r, std::vector<rational>(c)); }
+Mat transpose(const Mat& A) {
+  Mat T = zeros(A.empty() ? 0 : A[0].size(), A.size());
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < A[i].size(); ++j) T[j][i] = A[i][j];
+  return T;
+}
+Mat mul(const Mat& A, const Mat& B) {
+  const size_t k = B.size(), c = B.empty() ? 0 : B[0].size();
+  Mat R = zeros(A.size(), c);
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t l = 0; l < k; ++l) {
+      if (A[i][l].is_zero()) continue;
+      for (size_t j = 0; j < c; ++j) R[i][j] += A[i][l] * B[l][j];
+    }
+  return R;
+}
+Mat add(const Mat& A, const Mat& B, const rational& s = 1) {
+  Mat R = A;
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < A[i].size(); ++j) R[i][j] += s * B[i][j];
+  return R;
+}
+bool symmetric(const Mat& A) {
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (A[i][j] != A[j][i]) return false;
+  return true;
+}
+
+// Symmetric elimination without pivoting: "pd" every pivot > 0; "psd" no pivot < 0 and a zero pivot
+// with its remaining row 0.
+bool definite(Mat M, bool strict) {
+  const size_t n = M.size();
+  for (size_t k = 0; k < n; ++k) {
+    const rational p = M[k][k];
+    if (p < 0 || (strict && p == 0)) return false;
+    if (p == 0) {
+      for (size_t j = k + 1; j < n; ++j)
+        if (!M[k][j].is_zero()) return false;
+      continue;
+    }
+    for (size_t i = k + 1; i < n; ++i) {
+      if (M[i][k].is_zero()) continue;
+      const rational f = M[i][k] / p;
+      for (size_t j = k + 1; j < n; ++j) M[i][j] -= f * M[k][j];
+    }
+  }
+  return true;
+}
+
+// (zI - A)^-1 B by Gaussian elimination with pivoting (z rational); nullopt when singular
+std::optional<Mat> resolvent_times(const Mat& A, const Mat& B, const rational& z) {
+  const size_t n = A.size(), m = B.empty() ? 0 : B[0].size();
+  Mat M = zeros(n, n + m);
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) M[i][j] = (i == j ? z : rational(0)) - A[i][j];
+    for (size_t j = 0; j < m; ++j) M[i][n + j] = B[i][j];
+  }
+  for (size_t k = 0; k < n; ++k) {
+    size_t p = k;
+    while (p < n && M[p][k].is_zero()) ++p;
+    if (p == n) return std::nullopt;
+    std::swap(M[k], M[p]);
+    for (size_t i = 0; i < n; ++i) {
+      if (i == k || M[i][k].is_zero()) continue;
+      const rational f = M[i][k] / M[k][k];
+      for (size_t j = k; j < n + m; ++j) M[i][j] -= f * M[k][j];
+    }
+  }
+  Mat Y = zeros(n, m);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < m; ++j) Y[i][j] = M[i][n + j] / M[i][i];
+  return Y;
+}
+
+Mat sized(const nlohmann::json& ev, const char* key, size_t rows, size_t cols) {
+  Mat M = exact_matrix(ev, key, "evidence", max_order);
+  if (M.size() != rows || (rows > 0 && M[0].size() != cols))
+    throw InputError(std::string("evidence.") + key + ": must be " + std::to_string(rows) + " x " + std::to_string(cols));
+  return M;
+}
+
+// (r): C (zI - A)^-1 B + D = T z/(z - 1) z^-n g E(z) as rational functions, "" or what differs
+std::string realises(const Environment& env, const Mat& A, const Mat& B, const Mat& C, const Mat& D, long& need) {
+  const size_t N = A.size(), m = env.E.size();
+  long d = 0;
+  for (const auto& row : env.E)
+    for (const auto& H : row) d = std::max<long>(d, std::max(H.num().degree(), H.den().degree()));
+  need = static_cast<long>(N) + env.n + d + 2;
+  long agreed = 0;
+  for (long k = 2; agreed < need && k < 2 + 4 * need + 64; ++k) {
+    const rational z(k);
+    const auto Y = resolvent_times(A, B, z);
+    if (!Y) continue;
+    const Mat G = add(mul(C, *Y), D);
+    rational zn = 1;
+    for (long i = 0; i < env.n; ++i) zn *= z;
+    const rational factor = env.T * env.gain * z / (z - 1) / zn;
+    bool defined = true;
+    for (size_t i = 0; i < m && defined; ++i)
+      for (size_t j = 0; j < m; ++j) {
+        const auto e = entry_at(env, env.E[i][j], Cq(z));
+        if (!e) {
+          defined = false;
+          break;
+        }
+        if (G[i][j] != factor * e->re)
+          return "at z = " + std::to_string(k) + " entry (" + std::to_string(i) + ", " + std::to_string(j) + ") of C (zI - A)^-1 B + D is " +
+                 decimal(G[i][j]) + ", the model's E-hat " + decimal(factor * e->re);
+      }
+    agreed += defined;
+  }
+  return agreed >= need ? "" : "too few points where both sides are defined";
+}
+
+}  // namespace
+
+Verdict check_multidof_feasible(const nlohmann::json& cert) {
+  const Parts p = certificate_parts(cert);
+  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
+  only_fields(p.claim, {"status", "feasible"}, "claim");
+  only_fields(p.evidence, {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V"}, "evidence");
+  if (p.claim.value("status", std::string()) != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
+    throw InputError("claim.feasible: missing or not a boolean");
+  if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; a point proves only feasibility"};
+  const PeriodDelay pd = read_period_delay(p.model);
+  const Environment env = read_environment(p.model, pd.T, pd.n);
+  const size_t m = env.E.size();
+  const std::vector<rational> delta = device_levels(p.model, m);
+  const std::vector<size_t> owner = operator_of(p.model, m);
+  const Mat A = exact_matrix(p.evidence, "A", "evidence", max_order);
+  const size_t N = A.size();
+  if (N + m > max_order) throw InputError("evidence.A: order " + std::to_string(N) + " with m = " + std::to_string(m) + " is beyond this checker's limit");
+  if (N > 0 && A[0].size() != N) throw InputError("evidence.A: must be square");
+  const Mat B = sized(p.evidence, "B", N, m), C = sized(p.evidence, "C", m, N), D = sized(p.evidence, "D", m, m),
+            P = sized(p.evidence, "P", N, N), X = sized(p.evidence, "X", m, m), QE = sized(p.evidence, "Q_E", m, m),
+            QV = sized(p.evidence, "Q_V", m, m);
+  long points = 0;
+  if (const std::string why = realises(env, A, B, C, D, points); !why.empty())
+    return {false, "(A, B, C, D) does not realise the model's E-hat = T z/(z - 1) z^-n g E(z): " + why};
+  // X in G: diagonal, one g >= 1 per operator (9)
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      if (i != j && !X[i][j].is_zero()) return {false, "X is not diagonal"};
+      if (owner[i] == owner[j] && X[i][i] != X[j][j]) return {false, "X is not g I on the DOFs of one operator"};
+    }
+  for (size_t i = 0; i < m; ++i)
+    if (X[i][i] < 1) return {false, "g_" + std::to_string(i) + " = " + decimal(X[i][i]) + " < 1 ((9))"};
+  if (!symmetric(P) || !symmetric(QE) || !symmetric(QV)) return {false, "P, Q_E or Q_V is not symmetric"};
+  if (!definite(P, true)) return {false, "P > 0 fails"};
+  // -M1 >= 0
+  const Mat At = transpose(A), AtP = mul(At, P);
+  const Mat M11 = add(mul(AtP, A), P, -1);
+  const Mat M12 = add(mul(AtP, B), mul(transpose(C), X), rational(-1, 2));
+  const Mat XD = mul(X, D);
+  Mat M22 = add(mul(mul(transpose(B), P), B), QE, -1);
+  M22 = add(M22, add(XD, transpose(XD)), rational(-1, 2));
+  Mat negM1 = zeros(N + m, N + m);
+  for (size_t i = 0; i < N + m; ++i)
+    for (size_t j = 0; j < N + m; ++j)
+      negM1[i][j] = -(i < N ? (j < N ? M11[i][j] : M12[i][j - N]) : (j < N ? M12[j][i - N] : M22[i - N][j - N]));
+  if (!definite(negM1, false)) return {false, "(16)'s first LMI M1 <= 0 fails"};
+  // (14): [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0
+  Mat S = zeros(2 * m, 2 * m);
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      S[i][j] = (i == j ? delta[i] * X[i][i] : rational(0)) - QE[i][j];
+      S[i][m + j] = S[m + i][j] = -QE[i][j];
+      S[m + i][m + j] = QV[i][j] - QE[i][j];
+    }
+  if (!definite(S, true)) return {false, "(14) > 0 fails"};
+  if (!definite(QV, true)) return {false, "Q_V > 0 fails"};
+  return {true, "(16) feasible: (A, B, C, D) realises the model's E-hat (" + std::to_string(N) + " states; equal at " +
+                    std::to_string(points) + " points, more than the degree of their difference), P > 0, M1 <= 0, (14) > 0, "
+                    "Q_V > 0 and X = diag(g) in G with g >= 1, exactly"};
+}
+
+}  // namespace hapstab::check

@@ -1,0 +1,42 @@
+// hapstab/check/multidof_model.hpp -- the model of the multi-DOF certificate kinds
+// (check/multidof_witness_check.hpp, check/multidof_feasible_check.hpp) as the scene writes it:
+// the environment E(z) entry by entry (in z, or in s by backward Euler / Tustin), its gain, the
+// delay, the devices' OSP levels and the operators' DOFs, read from a certificate's model and
+// evaluated exactly at Gaussian rational points z (check/gaussian_rational.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/gaussian_rational.hpp"
+#include "hapstab/lti/tf.hpp"
+
+namespace hapstab::check::multidof_model {
+
+constexpr size_t max_dofs = 512;
+
+struct Environment {
+  char var = 'z';
+  bool tustin = false;
+  rational T, gain;
+  long n = 0;
+  std::vector<std::vector<TransferFunction>> E;  ///< m x m, as written
+};
+
+/// model.environment {domain, method, gain, E} with model.set's parameters; InputError naming the field.
+Environment read_environment(const nlohmann::json& model, const rational& T, long n);
+/// E_ij(z) of an entry as written, exactly, or nullopt at a pole (its denominator as parsed vanishes).
+/// An s-entry N(s)/D(s) is sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k) at s = sigma/tau,
+/// d = max degree (sigma = z - 1, tau = T z; Tustin 2(z - 1), T(z + 1)): exact at s = infinity too.
+std::optional<Cq> entry_at(const Environment& e, const TransferFunction& H, const Cq& z);
+/// E-hat(z) / E(z) = T z/(z - 1) z^-n g (paper 000 (11)); z on the unit circle, z != 1 (z^-n = conj(z)^n).
+Cq ehat_factor(const Environment& e, const Cq& z);
+/// delta_i per DOF from model.devices (a mass-damper's b, or the declared osp), in DOF order.
+std::vector<rational> device_levels(const nlohmann::json& model, size_t m);
+/// The operator of every DOF (each DOF in exactly one of model.operators).
+std::vector<size_t> operator_of(const nlohmann::json& model, size_t m);
+
+}  // namespace hapstab::check::multidof_model
