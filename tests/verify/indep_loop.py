@@ -19,7 +19,10 @@ delays, at 1e-5 and 1e-7, where a root at 1 - cK is still resolved), then rho in
 values come within 1e-3 of 1 also maximised by golden section (a narrow unstable window between
 grid points), and the first interval where rho reaches 1 is solved by the Illinois method on
 rho(K) - 1 in mpmath to a relative width of 1e-24. Delays of 100 samples and more are decided in
-double (numpy.linalg.eigvals on M of order ~n): the tolerance there is 1e-7 relative, and at
+double (numpy.linalg.eigvals on M of order ~n; a radius within 1e-9 of 1 at a probe is decided at 50
+digits, and a radius within the tolerance of 1 counts as a root on the circle; unstable at the smaller
+probe but stable at the larger only bounds the supremum by the smaller: kind "at_most"): the
+tolerance there is 1e-7 relative, and at
 n >= 1000 only hapstab's claim is checked (stable at 8 points of (0, lo), NOT stable just above
 hi) to keep the time short.
 """
@@ -269,18 +272,28 @@ def sup_reference(loop, Knom, precise=True):
     if precise:
         rs, _ = rho_mp(loop, Ks)
         rn, _ = rho_mp(loop, Kn)
+        es = en = mp.mpf(10) ** -40
     else:
         rs, rn = rho_np(loop, float(Ks)), rho_np(loop, float(Kn))
-    eps = mp.mpf(10) ** -40 if precise else 1e-15
-    if abs(rs - 1) < eps and abs(rn - 1) < eps:
+        es = en = 1e-15
+        # a root on the circle that K does not move (a Tustin wall's pole at z = -1 cancelled by the
+        # sampled mass's zero there) reads 1 +- 1e-13 in double, either side: decide it at 50 digits
+        if abs(rs - 1) < 1e-9:
+            (rs, _), es = rho_mp(loop, Ks), mp.mpf(10) ** -40
+        if abs(rn - 1) < 1e-9:
+            (rn, _), en = rho_mp(loop, Kn), mp.mpf(10) ** -40
+    if abs(rs - 1) < es and abs(rn - 1) < en:
         # an eigenvalue on the unit circle that K does not move (a controller pole cancelled by a
         # plant zero on the circle, ...): never Schur stable, so the supremum is 0
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs, marginal=True)
-    if rs >= 1 and rn >= 1:
+    # a radius within the tolerance of 1 is a root on the circle: not Schur stable
+    s_unstable, n_unstable = rs >= 1 - es, rn >= 1 - en
+    if s_unstable and n_unstable:
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs)
-    if rn >= 1:  # unstable at the smaller probe, stable at the larger: sup <= Kn (the scan from Ks
+    if n_unstable:  # unstable at the smaller probe, stable at the larger: sup <= Kn (the scan from Ks
         # would only see the window above Ks; a sup in (0, Kn] is not resolved further here)
         return dict(kind="at_most", value=mp.mpf(Kn), rho_small=rn)
+    rs = 1 if s_unstable else rs
     start = Kn if rs >= 1 else Ks
     grid = [float(start) * 10 ** (i / 24) for i in range(0, 24 * 18 + 1)]
     rho = [rho_np(loop, k) for k in grid]
