@@ -344,8 +344,6 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   return j;
 }
 
-namespace {
-
 nlohmann::json matrix_json(const Mat<rational>& M) {
   nlohmann::json rows = nlohmann::json::array();
   for (Eigen::Index i = 0; i < M.rows(); ++i) {
@@ -355,6 +353,8 @@ nlohmann::json matrix_json(const Mat<rational>& M) {
   }
   return rows;
 }
+
+namespace {
 
 // Rational points of the unit circle near c = cos(theta), theta in [0, pi], as {witness_c, witness_s}:
 // z = (1 - t^2 + 2jt)/(1 + t^2) with t ~ tan(theta/2) = sqrt((1 - c)/(1 + c)) to 40, 80, 160 digits

@@ -114,6 +114,9 @@ nlohmann::json certificate_header(const char* kind);
 /// fails, never a weaker claim written silently.
 void verify_before_writing(const nlohmann::json& certificate);
 
+/// An exact matrix as rows of "p/q" strings (the certificates' matrices).
+nlohmann::json matrix_json(const Mat<rational>& M);
+
 /// Writes the certificate to FILE; InputError naming --certificate when it cannot.
 void write_certificate(const std::string& file, const nlohmann::json& certificate);
 

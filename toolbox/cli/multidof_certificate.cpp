@@ -122,16 +122,6 @@ nlohmann::json strings(const std::vector<rational>& v) {
   return a;
 }
 
-nlohmann::json matrix_strings(const MatQ& M) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    nlohmann::json r = nlohmann::json::array();
-    for (Eigen::Index j = 0; j < M.cols(); ++j) r.push_back(M(i, j).str());
-    a.push_back(r);
-  }
-  return a;
-}
-
 // (16) feasible: the exact point and the realisation of E-hat it is on
 nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
   const multidof::ExactPoint& x = *a.lmis.exact_point;
@@ -141,9 +131,9 @@ nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::Scen
   nlohmann::json j = certificate_header("multidof-feasible");
   j["model"] = scene_model(sc, a);
   j["claim"] = {{"status", "exact"}, {"feasible", true}};
-  j["evidence"] = {{"A", matrix_strings(x.Ehat.A)}, {"B", matrix_strings(x.Ehat.B)}, {"C", matrix_strings(x.Ehat.C)},
-                   {"D", matrix_strings(x.Ehat.D)}, {"P", matrix_strings(x.P)}, {"X", matrix_strings(x.X)},
-                   {"Q_E", matrix_strings(x.QE)}, {"Q_V", matrix_strings(x.QV)}};
+  j["evidence"] = {{"A", matrix_json(x.Ehat.A)}, {"B", matrix_json(x.Ehat.B)}, {"C", matrix_json(x.Ehat.C)},
+                   {"D", matrix_json(x.Ehat.D)}, {"P", matrix_json(x.P)}, {"X", matrix_json(x.X)},
+                   {"Q_E", matrix_json(x.QE)}, {"Q_V", matrix_json(x.QV)}};
   verify_before_writing(j);
   return j;
 }
