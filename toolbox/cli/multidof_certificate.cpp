@@ -125,14 +125,16 @@ nlohmann::json strings(const std::vector<rational>& v) {
 // (16) feasible: the exact point and the realisation of E-hat it is on
 nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
   const multidof::ExactPoint& x = *a.lmis.exact_point;
-  if (x.Ehat.states() + x.Ehat.inputs() > 160)
-    throw InputError("--certificate: E-hat has " + std::to_string(x.Ehat.states()) + " states and " +
-                     std::to_string(x.Ehat.inputs()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
+  const auto& pb = a.scene.problem;
+  if (pb.E.states() + 2 * pb.E.inputs() > 160)  // E-hat: E's states and one integrator per DOF
+    throw InputError("--certificate: E-hat has " + std::to_string(pb.E.states() + pb.E.inputs()) + " states and " +
+                     std::to_string(pb.E.inputs()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
+  const multidof::ExactStorage st = multidof::exact_storage(pb, x);
   nlohmann::json j = certificate_header("multidof-feasible");
   j["model"] = scene_model(sc, a);
   j["claim"] = {{"status", "exact"}, {"feasible", true}};
-  j["evidence"] = {{"A", matrix_json(x.Ehat.A)}, {"B", matrix_json(x.Ehat.B)}, {"C", matrix_json(x.Ehat.C)},
-                   {"D", matrix_json(x.Ehat.D)}, {"P", matrix_json(x.P)}, {"X", matrix_json(x.X)},
+  j["evidence"] = {{"A", matrix_json(st.Ehat.A)}, {"B", matrix_json(st.Ehat.B)}, {"C", matrix_json(st.Ehat.C)},
+                   {"D", matrix_json(st.Ehat.D)}, {"P", matrix_json(st.P)}, {"X", matrix_json(x.X)},
                    {"Q_E", matrix_json(x.QE)}, {"Q_V", matrix_json(x.QV)}};
   verify_before_writing(j);
   return j;

@@ -129,11 +129,12 @@ struct WeightedWitness {
   std::vector<rational> sums;                     ///< the weighted sums, exact, each <= 0
 };
 
-/// The exact point of (16) that decided a feasible verdict, in E-hat's realisation ehat(E) of (15):
-/// what `multidof analyze --certificate` writes (cli/multidof_certificate.hpp).
+/// The exact point of (16) that decided a feasible verdict (P11 in the split coordinates of the
+/// facial reduction): what `multidof analyze --certificate` writes, through exact_storage
+/// (cli/multidof_certificate.hpp). Kept as the re-check had it: the storage P in E-hat's own
+/// coordinates costs exact products of E-hat's order, computed only when a certificate is asked for.
 struct ExactPoint {
-  StateSpace<rational> Ehat;
-  MatQ P, X, QE, QV;
+  MatQ P11, X, QE, QV;
 };
 
 struct AnalysisResult {
@@ -162,6 +163,13 @@ struct AnalysisResult {
   double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
                            ///< facial reduction, exact checks); decomposed: their share of the wall time
 };
+
+/// E-hat of (15) for pb.E and the storage P of `x` in its coordinates (recheck.cpp), exact.
+struct ExactStorage {
+  StateSpace<rational> Ehat;
+  MatQ P;
+};
+ExactStorage exact_storage(const Problem& pb, const ExactPoint& x);
 
 /// full: the margin program (16) in (P, X, Q_E, Q_V), then the least dissipative coupling.
 /// stability_only: only Theorem 5's verdict, certified, from a smaller program (used by the

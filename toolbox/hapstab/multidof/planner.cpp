@@ -91,7 +91,7 @@ AnalysisResult analyze_with(const Problem& pb, const std::vector<SolvePath>& pat
       if (ok && c.margin > 0) {
         decide({Outcome::holds, Status::exact, why + c.construction}, c.margin);
         store_point(res, pb, c.env.X, c.env.QE, c.QV);
-        res.exact_point = ExactPoint{ehat(pb.E), storage_of(pb, sp, c.env), c.env.X, c.env.QE, c.QV};
+        res.exact_point = ExactPoint{c.env.P11, c.env.X, c.env.QE, c.QV};
         break;
       }
       if (ok) break;  // passes, but the solver's margin is not positive: its verdict stays numeric

@@ -98,3 +98,15 @@ bool exact_recheck(const Problem& pb, const EhatSplit& sp, const ExactEnv& x, co
 }
 
 }  // namespace hapstab::multidof::detail
+
+namespace hapstab::multidof {
+
+ExactStorage exact_storage(const Problem& pb, const ExactPoint& x) {
+  detail::ExactEnv env;
+  env.P11 = x.P11;
+  env.X = x.X;
+  env.QE = x.QE;
+  return {ehat(pb.E), detail::storage_of(pb, ehat_split(pb.E), env)};
+}
+
+}  // namespace hapstab::multidof
