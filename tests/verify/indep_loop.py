@@ -21,7 +21,8 @@ grid points), and the first interval where rho reaches 1 is solved by the Illino
 rho(K) - 1 in mpmath to a relative width of 1e-24. Delays of 100 samples and more are decided in
 double (numpy.linalg.eigvals on M of order ~n; a radius within 1e-9 of 1 at a probe is decided at 50
 digits, and a radius within the tolerance of 1 counts as a root on the circle; unstable at the smaller
-probe but stable at the larger only bounds the supremum by the smaller: kind "at_most"): the
+probe only bounds the supremum by it: kind "at_most" -- in double the probes need not lie below the
+supremum, so "unstable at both" is "at_most" there too): the
 tolerance there is 1e-7 relative, and at
 n >= 1000 only hapstab's claim is checked (stable at 8 points of (0, lo), NOT stable just above
 hi) to keep the time short.
@@ -288,8 +289,11 @@ def sup_reference(loop, Knom, precise=True):
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs, marginal=True)
     # a radius within the tolerance of 1 is a root on the circle: not Schur stable
     s_unstable, n_unstable = rs >= 1 - es, rn >= 1 - en
-    if s_unstable and n_unstable:
+    if s_unstable and n_unstable and precise:
         return dict(kind="zero", value=mp.mpf(0), rho_small=rs)
+    if s_unstable and n_unstable:  # double (n >= 100): the probes Knom 1e-5, 1e-7 need not be small
+        # (case 6378: Knom = 2e6, both probes above the supremum 0.0995): only sup <= Kn is known
+        return dict(kind="at_most", value=mp.mpf(Kn), rho_small=rn)
     if n_unstable:  # unstable at the smaller probe, stable at the larger: sup <= Kn (the scan from Ks
         # would only see the window above Ks; a sup in (0, Kn] is not resolved further here)
         return dict(kind="at_most", value=mp.mpf(Kn), rho_small=rn)
