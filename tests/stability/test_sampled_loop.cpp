@@ -258,3 +258,25 @@ TEST(MaxGain, UndampedSpringDeviceHasAnExactZeroAtMinusOne) {
   EXPECT_EQ(h.path, "long_delay");
   EXPECT_LT(abs(to_real<double>(h.enclosure.lo) - 6.4873980684759) / 6.4873980684759, 1e-9);
 }
+
+// Issue 46's stability_max campaign, case 6378 (seed 46): a heavy, lightly damped device 1/(2 s^2 +
+// s/50) on a pure stiffness K behind 100 samples (T = 1/500): stable on (0, sup) -- at small K the
+// delay's negative damping K tau stays below b -- where the campaign's double-precision reference,
+// probing at Knom 1e-5 and 1e-7 (both above the supremum: Knom = 2e6), said "unstable for small K".
+// The independent reference here: the textbook ZOH (alpha z + beta)/((z - 1)(z - e)) of 1/(s (m s + b)),
+// the roots of z^100 (z - 1)(z - e) + K (alpha z + beta) by mpmath.polyroots at 50 digits, bisected 36
+// times: sup in [0.0995358072067029, 0.0995358072069939] (rho = 0.99999990 at K = 1e-6, 1.0000010 at 0.11).
+TEST(MaxGain, HeavyLightlyDampedDeviceBehindALongDelayIsStableAtSmallK) {
+  stability::Loop loop;
+  loop.T = rational(1, 500);
+  loop.delay = 100;
+  ParseOptions ps;
+  ps.variable = 's';
+  loop.plant = parse_tf("1/(2*s^2 + s/50)", ps);
+  loop.H = tf(Polynomial<rational>(), Polynomial<rational>(rational(1)), loop.T);
+  loop.H_gain = tf(Polynomial<rational>(rational(1)), Polynomial<rational>(rational(1)), loop.T);
+  const auto g = stability::max_gain(loop, 25);
+  ASSERT_EQ(g.outcome, Outcome::holds) << g.note;
+  EXPECT_GE(g.enclosure.lo, parse_rational("0.0995358072067029"));
+  EXPECT_LE(g.enclosure.hi, parse_rational("0.0995358072069939"));
+}
