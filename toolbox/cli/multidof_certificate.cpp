@@ -71,6 +71,9 @@ std::string multidof_certificate_premise(const scene::Scene& sc) {
       if (e.find('[') != std::string::npos) return "an environment entry names a list parameter ('" + e + "')";
   const auto md = scene::multidof_values(sc);
   if (md.perturb_C) return "multidof.perturb_C changes E's output map: the certificate's model would not be E as written";
+  if (md.qv_block_diagonal)
+    return "multidof.qv_block_diagonal = true restricts Q_V, which the certificate kinds take free (Remark 3): a "
+           "certificate would claim another program";
   if (!md.osp)
     for (const auto& dev : sc.loop.devices)
       if (!mass_damper(dev))

@@ -19,9 +19,9 @@
 
 namespace hapstab::cli {
 
-/// "" when the scene's model can be written in a multidof-witness certificate, else why not
+/// "" when the scene's model can be written in a multidof certificate (either kind), else why not
 /// (checked before the analysis runs): an environment given by `ss` or `diagonal`, a
-/// `perturb_C`, a device whose OSP level is a certified bound rather than exact or declared.
+/// `perturb_C`, `qv_block_diagonal = true`, a device whose OSP level is a certified bound rather than exact or declared.
 std::string multidof_certificate_premise(const scene::Scene& sc);
 
 /// The certificate of `a`'s verdict on (16): feasible (its exact point) or infeasible by a
