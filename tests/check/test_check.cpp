@@ -20,6 +20,59 @@ namespace {
 using P = Polynomial<rational>;
 const rational m1(-1), p1(1);
 
+// Above degree 64 a negative value at one of 33 equally spaced points refutes before the gcds and the
+// Sturm sequence (fuzz_certificate's first timeout: a degree-400 objective of a false fractional-delay
+// claim ran over a minute); a polynomial >= 0 of that degree still goes the whole way.
+TEST(Nonnegative, HighDegreeRefutedBySamplingAndProvenWhole) {
+  const P x{rational(0), rational(1)};
+  P t = P(rational(1));  // (x^2 + 1/4)^40 (x - 1/2)^2 >= 0, degree 82, tangent at 1/2
+  for (int k = 0; k < 40; ++k) t = t * (x * x + P(rational(1, 4)));
+  const P h = x - rational(1, 2);
+  EXPECT_FALSE(nonnegative_on(t * h * h, m1, p1));
+  const auto why = nonnegative_on(t * h, m1, p1);  // negative on [-1, 1/2)
+  ASSERT_TRUE(why);
+  EXPECT_NE(why->find("negative at c = -1"), std::string::npos) << *why;
+  // negative only on a sliver between two grid points: Sturm finds the two sign changes
+  const P g = x - rational(51, 100);  // the grid is -1 + k/16: 1/2 and 9/16 on either side of the sliver
+  const auto sliver = nonnegative_on(t * (g * g - P(rational(1, 1000000))), m1, p1);
+  ASSERT_TRUE(sliver);
+  EXPECT_NE(sliver->find("changes sign at 2 point(s)"), std::string::npos) << *sliver;
+}
+
+// Numbers as the certificate writes them and as a hand may edit them (fuzz_certificate's findings):
+// "010" is ten (GMP's base-0 reading, Boost's default, took it as octal eight, where the
+// independent checker reads ten), and a JSON integer above the range of long is refused by name
+// (nlohmann::json wraps 2^64 - 1 to -1: "side": 18446744073709551615 read as -1).
+TEST(CertificateFields, DecimalLeadingZerosAndIntegersBeyondLong) {
+  EXPECT_EQ(detail::exact_string("010", "x"), rational(10));
+  EXPECT_EQ(detail::exact_string("-007/0010", "x"), rational(-7, 10));
+  EXPECT_EQ(detail::exact_string("0000011669853858064382902", "x"), rational(integer("11669853858064382902")));
+  EXPECT_EQ(detail::exact_string("0", "x"), rational(0));
+  const auto big = nlohmann::json::parse(R"({"side": 18446744073709551615, "n": -3, "k": 5})");
+  EXPECT_THROW(detail::integer_field(big, "side", "evidence", -1, 1), InputError);
+  EXPECT_THROW(detail::integer_field(big, "n", "model", 0, 10), InputError);
+  EXPECT_EQ(detail::integer_field(big, "k", "model", 0, 10), 5);
+  try {
+    detail::integer_field(big, "side", "evidence", -1, 1);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("evidence.side: 18446744073709551615 is outside [-1, 1]"), std::string::npos) << e.what();
+  }
+}
+
+// fuzz_certificate's first timeout, kept whole: a fractional delay t_d/T = 1/400 (the objective has
+// degree 400 in c = cos(wT/400)), a claim far below b* and a band end far below cos(pi/400). It ran
+// over a minute in the gcds and the Sturm sequence; the sampling of step 0 refutes it at once.
+TEST(CertificateFields, FalseClaimOfDegree400IsRefutedBySampling) {
+  const auto c = nlohmann::json::parse(R"json({"certificate": "hapstab", "claim": {"hi": "-68166199999779/221000000000000",
+"lo": "-78166200000221/221000000000000", "status": "certified"},
+"evidence": {"domain_c_lo": "884/1260", "witness_c": "279/1250"}, "kind": "bound",
+"model": {"H": "-K", "T": "1/0010", "delay": 0, "eta": "0", "frac_delay": "1/4000",
+"set": {"K": "1000"}}, "produced_by": "hapstab 0.1.0", "version": 1})json");
+  const Verdict v = check_certificate(c);
+  EXPECT_FALSE(v.verified);
+  EXPECT_NE(v.reason.find("it is negative at c = "), std::string::npos) << v.reason;
+}
+
 TEST(Nonnegative, KnownSigns) {
   const P x{rational(0), rational(1)};
   EXPECT_FALSE(nonnegative_on(x * x, m1, p1));                          // double root inside

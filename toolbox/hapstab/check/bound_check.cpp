@@ -22,10 +22,9 @@ Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H
                        const std::string& status) {
   if (status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
   const rational c_p = detail::exact_field(evidence, "pole_c", "evidence");
-  if (!evidence.contains("side") || !evidence.at("side").is_number_integer() ||
-      (evidence.at("side").get<long>() != 1 && evidence.at("side").get<long>() != -1))
-    throw InputError("evidence.side: missing or not +1 or -1 (the side of pole_c the objective is approached from)");
-  const long side = evidence.at("side").get<long>();
+  // the side of pole_c the objective is approached from: +1 or -1
+  const long side = detail::integer_field(evidence, "side", "evidence", -1, 1);
+  if (side == 0) throw InputError("evidence.side: 0 is not +1 or -1 (the side of pole_c the objective is approached from)");
   const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
   if (auto why = detail::unbounded_above_fails(f, c_p, side, dm.q)) return {false, "b* = +inf not shown: " + *why};
   return {true, "b* = +inf: the objective tends to +inf as c = cos(wT/" + std::to_string(dm.q) + ") -> " +

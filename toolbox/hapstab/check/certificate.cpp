@@ -1,6 +1,7 @@
 // hapstab/check/certificate.cpp -- see certificate.hpp.
 #include "hapstab/check/certificate.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -45,10 +46,30 @@ rational exact_string(const nlohmann::json& v, const std::string& what) {
     ok = i > e0;
   }
   if (!ok || i != s.size()) throw InputError(what + ": '" + s.substr(0, 60) + "' is not \"p/q\" or \"p\" (integers)");
-  const integer p(s.substr(0, slash));
-  const integer q = slash == std::string::npos ? integer(1) : integer(s.substr(slash + 1));
+  // decimal whatever the leading zeros ("010" is ten, as the expression parser and the independent
+  // checker read it; GMP's base 0, which Boost's string constructor uses, would read octal eight)
+  const auto decimal = [](std::string digits) {
+    const bool negative = !digits.empty() && digits[0] == '-';
+    if (negative) digits.erase(0, 1);
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+    const integer v(digits);
+    return negative ? integer(-v) : v;
+  };
+  const integer p = decimal(s.substr(0, slash));
+  const integer q = slash == std::string::npos ? integer(1) : decimal(s.substr(slash + 1));
   if (q == 0) throw InputError(what + ": '" + s.substr(0, 60) + "' divides by zero");
   return rational(p, q);
+}
+
+long integer_field(const nlohmann::json& obj, const std::string& key, const std::string& where, long lo, long hi) {
+  const std::string at = where + "." + key;
+  if (!obj.contains(key) || !obj.at(key).is_number_integer()) throw InputError(at + ": missing or not an integer");
+  const auto& v = obj.at(key);
+  const bool above = v.is_number_unsigned() && v.get<unsigned long>() > static_cast<unsigned long>(hi);
+  const long x = above ? hi : v.get<long>();
+  if (above || x < lo || x > hi)
+    throw InputError(at + ": " + v.dump() + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return x;
 }
 
 rational exact_field(const nlohmann::json& obj, const std::string& key, const std::string& where) {
@@ -176,10 +197,7 @@ PeriodDelay read_period_delay(const nlohmann::json& model) {
   PeriodDelay m;
   m.T = exact_field(model, "T", "model");
   if (m.T <= 0) throw InputError("model.T: the sample period must be > 0, got " + m.T.str());
-  if (!model.contains("delay") || !model.at("delay").is_number_integer())
-    throw InputError("model.delay: missing or not an integer (n in z^-n)");
-  m.n = model.at("delay").get<long>();
-  if (m.n < 0 || m.n > 100000) throw InputError("model.delay: " + std::to_string(m.n) + " is outside [0, 100000]");
+  m.n = integer_field(model, "delay", "model", 0, 100000);  // n in z^-n
   return m;
 }
 

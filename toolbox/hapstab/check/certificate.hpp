@@ -49,6 +49,9 @@ namespace detail {
 rational exact_field(const nlohmann::json& obj, const std::string& key, const std::string& where);
 /// The string "p/q" or "p" as an exact rational, or InputError naming `what`.
 rational exact_string(const nlohmann::json& v, const std::string& what);
+/// obj[key] as an integer in [lo, hi] (a JSON integer; one above the range of long, which
+/// nlohmann::json would wrap to a negative number, is outside it); InputError naming where.key.
+long integer_field(const nlohmann::json& obj, const std::string& key, const std::string& where, long lo, long hi);
 /// obj[key] as a matrix of exact rationals (an array of rows of "p/q" strings, equal lengths, at most
 /// max_dim rows and columns); InputError naming where.key[i][j] otherwise.
 std::vector<std::vector<rational>> exact_matrix(const nlohmann::json& obj, const std::string& key, const std::string& where,

@@ -114,15 +114,6 @@ SchurCohn attraction(const MatQ& J) {
   return schur_cohn(interpolate(x, v));
 }
 
-long integer_field(const nlohmann::json& claim, const char* key, long lo, long hi) {
-  if (!claim.contains(key) || !claim.at(key).is_number_integer())
-    throw InputError(std::string("claim.") + key + ": missing or not an integer");
-  const long v = claim.at(key).get<long>();
-  if (v < lo || v > hi)
-    throw InputError(std::string("claim.") + key + ": " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
-                     std::to_string(hi) + "]");
-  return v;
-}
 
 }  // namespace
 
@@ -132,8 +123,8 @@ Verdict check_limit_cycle(const nlohmann::json& cert) {
   detail::only_fields(claim, {"quantity", "status", "period", "amplitude", "printed_amplitude", "free_steps", "attracting"}, "claim");
   if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
   const Loop L = parse_model(model);
-  const long P = integer_field(claim, "period", 1, max_period);
-  const long free_claimed = integer_field(claim, "free_steps", 0, max_period);
+  const long P = detail::integer_field(claim, "period", "claim", 1, max_period);
+  const long free_claimed = detail::integer_field(claim, "free_steps", "claim", 0, max_period);
   const rational amplitude = detail::exact_field(claim, "amplitude", "claim");
   if (!claim.contains("printed_amplitude") || !claim.at("printed_amplitude").is_string())
     throw InputError("claim.printed_amplitude: missing or not a string");

@@ -141,7 +141,7 @@ Verdict check_multidof_feasible(const nlohmann::json& cert) {
   only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
   only_fields(p.claim, {"status", "feasible"}, "claim");
   only_fields(p.evidence, {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V"}, "evidence");
-  if (p.claim.value("status", std::string()) != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
   if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
     throw InputError("claim.feasible: missing or not a boolean");
   if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; a point proves only feasibility"};

@@ -49,14 +49,15 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
   Environment e;
   e.T = T;
   e.n = n;
-  const std::string domain = env.value("domain", std::string());
-  if (domain != "z" && domain != "s") throw InputError("model.environment.domain: must be \"z\" or \"s\"");
+  // (a JSON comparison, not env.value(...): a null or a number there is malformed, not a type error)
+  if (!env.contains("domain") || (env.at("domain") != "z" && env.at("domain") != "s"))
+    throw InputError("model.environment.domain: must be \"z\" or \"s\"");
+  const std::string domain = env.at("domain").get<std::string>();
   e.var = domain[0];
   if (e.var == 's') {
-    const std::string method = env.value("method", std::string());
-    if (method != "backward_euler" && method != "tustin")
+    if (!env.contains("method") || (env.at("method") != "backward_euler" && env.at("method") != "tustin"))
       throw InputError("model.environment.method: must be \"backward_euler\" or \"tustin\" for domain \"s\"");
-    e.tustin = method == "tustin";
+    e.tustin = env.at("method") == "tustin";
   } else if (env.contains("method")) {
     throw InputError("model.environment.method: only with domain \"s\"");
   }
@@ -114,9 +115,7 @@ std::vector<rational> device_levels(const nlohmann::json& model, size_t m) {
     const std::string where = "model.devices[" + std::to_string(d) + "]";
     if (!dev.is_object()) throw InputError(where + ": not an object");
     only_fields(dev, {"dofs", "m", "b", "osp"}, where);
-    if (!dev.contains("dofs") || !dev.at("dofs").is_number_integer() || dev.at("dofs").get<long>() < 1)
-      throw InputError(where + ".dofs: missing or not a positive integer");
-    const long k = dev.at("dofs").get<long>();
+    const long k = integer_field(dev, "dofs", where, 1, static_cast<long>(m));  // more would overrun E's m
     rational level;
     if (dev.contains("osp")) {
       if (dev.contains("m") || dev.contains("b")) throw InputError(where + ": osp beside m, b (give one)");
@@ -144,7 +143,7 @@ std::vector<size_t> operator_of(const nlohmann::json& model, size_t m) {
     const std::string where = "model.operators[" + std::to_string(o) + "]";
     if (!dofs.is_array() || dofs.empty()) throw InputError(where + ": a non-empty array of DOF indices");
     for (const auto& v : dofs) {
-      if (!v.is_number_integer() || v.get<long>() < 0 || v.get<size_t>() >= m)
+      if (!v.is_number_integer() || (v.is_number_unsigned() ? v.get<unsigned long>() >= m : v.get<long>() < 0 || v.get<size_t>() >= m))
         throw InputError(where + ": a DOF index outside [0, " + std::to_string(m - 1) + "]");
       if (owner[v.get<size_t>()] != none)
         throw InputError(where + ": DOF " + std::to_string(v.get<long>()) + " belongs to two operators");

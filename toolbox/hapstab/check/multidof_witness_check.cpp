@@ -70,7 +70,7 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
   only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
   only_fields(p.claim, {"status", "feasible"}, "claim");
-  if (p.claim.value("status", std::string()) != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
   if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
     throw InputError("claim.feasible: missing or not a boolean");
   if (p.claim.at("feasible").get<bool>())

@@ -84,6 +84,16 @@ int sturm_count(const P& q, const rational& a, const rational& b) { return sturm
 
 std::optional<std::string> nonnegative_on(const P& p, const rational& a, const rational& b) {
   if (p.is_zero()) return std::nullopt;
+  // A false claim is cheap to refute: above degree 64, where the square-free part's gcds and the
+  // Sturm sequence cost minutes in exact rationals (degree 400: > 60 s, coefficient growth), p is
+  // first evaluated at 33 equally spaced points of [a, b]; a negative value refutes.
+  if (p.degree() > 64) {
+    for (int k = 0; k <= 32; ++k) {
+      const rational x = a + (b - a) * rational(k, 32);
+      const rational v = p(x);
+      if (v < 0) return "it is negative at c = " + x.str() + " (value " + to_decimal(v, 6) + ")";
+    }
+  }
   P odd = odd_part(p);
   for (const rational& end : {a, b})  // a sign change at an end of [a, b] is not inside it
     while (odd.degree() > 0 && odd(end) == 0) odd = exact_quotient(odd, P{-end, rational(1)});

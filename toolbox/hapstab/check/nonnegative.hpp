@@ -1,6 +1,8 @@
 // hapstab/check/nonnegative.hpp -- the one algebraic test behind the checkers: is a polynomial
 // with rational coefficients >= 0 on a closed interval [a, b]? Decided exactly, by code written
 // for the checker alone (not poly/sturm.hpp, which the producers use):
+//   0. above degree 64, p at 33 equally spaced points of [a, b]: a negative value refutes at once
+//      (a false claim costs 33 evaluations, not the gcds and Sturm sequence of steps 2-3).
 //   1. p = 0: yes.
 //   2. Yun's square-free decomposition p = c * prod_i a_i^i (gcds over Q); the odd part
 //      O = prod_{i odd} a_i holds exactly the roots where p changes sign.
