@@ -264,3 +264,22 @@ TEST(CmdMultidof, DesignPlanNamesItsPath) {
   EXPECT_EQ(jg["path"].get<std::string>(), "generic SDP");
   EXPECT_EQ(g.code, 0) << g.out;
 }
+
+// Bounded work (issue 46): where no structured path decides, the generic SDP is skipped above
+// limits::generic_sdp_unknowns and named in the verdict, which is undecided -- exit 3, never 1
+// ("no conclusion" is for (16) proven infeasible). The scene's loop as written is still decided.
+TEST(CmdMultidof, GenericSdpBeyondItsWorkLimitIsSkippedAndUndecided) {
+  const auto r = run("multidof analyze --json --scene " + scene29("generic_sdp_bounded.toml"));
+  EXPECT_EQ(r.code, 3) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["verdict"], "undecided") << r.out;
+  bool named = false;
+  for (const auto& p : j["plan"])
+    named = named || (p["path"] == "generic SDP" && p["fate"] == "skipped" &&
+                      p["why"].get<std::string>().find("2028 scalar unknowns") != std::string::npos);
+  EXPECT_TRUE(named) << j["plan"].dump();
+  EXPECT_EQ(j["loop_as_written"]["stable"], nlohmann::json(true)) << j["loop_as_written"].dump();
+  const auto h = run("multidof analyze --scene " + scene29("generic_sdp_bounded.toml"));
+  EXPECT_EQ(h.code, 3);
+  EXPECT_NE(verdict_line(h.out).find("the LMIs (16) are undecided"), std::string::npos) << h.out;
+}

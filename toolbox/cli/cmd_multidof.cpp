@@ -35,11 +35,13 @@
 // velocity data without coupling, with the designed V and with the paper's (27).
 // Human output ends with a verdict line "=> ..." in every case.
 // Exit codes: 0 stability concluded and the loop as written not proven unstable (analyze) / a
-// stabilising V found and verified (design), 1 not feasible, not verified, Assumption 1 fails
-// or is undecided, or the loop as written is proven unstable, 2 bad input (inconsistent block
-// sizes, unstable E, non-square E, a fractional [delay], a declared osp above the device's
-// level, a size beyond numeric/limits.hpp), 3 numerical failure or a contradiction between the
-// simulation and a certificate (design).
+// stabilising V found and verified (design), 1 (16) proven infeasible, Assumption 1 fails, or the
+// loop as written is proven unstable (analyze) / not feasible, not verified, Assumption 1 fails or
+// is undecided (design), 2 bad input (inconsistent block sizes, unstable E, non-square E, a
+// fractional [delay], a declared osp above the device's level, a size beyond numeric/limits.hpp),
+// 3 undecided -- (16) not proven either way, or a premise undecided (analyze,
+// SceneAnalysis::undecided) -- numerical failure, or a contradiction between the simulation and a
+// certificate (design).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -304,7 +306,7 @@ int run_analyze(const Opts& o) {
                 << ", and Theorem 5 is sufficient only" << law_tail;
     std::cout << "\n";
   }
-  return a.ok() ? exit_ok : exit_property_fails;
+  return a.ok() ? exit_ok : a.undecided() ? exit_numerical : exit_property_fails;
 }
 
 int run_design(const Opts& o) {

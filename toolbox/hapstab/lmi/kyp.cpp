@@ -117,7 +117,8 @@ KypPoint kyp_interior_point(const KypData& d, double floor_rel) {
     o << "the frequency condition Phi + delta (I + G^* G) < 0 at theta = " << sb.theta << " rad needs delta < "
       << sb.delta;
     if (!(cap >= hi * floor_rel)) {  // no rung below it (the condition fails outright when sb.delta <= 0)
-      none.detail = o.str() + ", below every delta of the ladder (" + std::to_string(hi * floor_rel) + ")";
+      o << ", below every delta of the ladder (its floor " << hi * floor_rel << ")";  // (to_string printed 0.000000)
+      none.detail = o.str();
       return none;
     }
     int k = 0;

@@ -19,6 +19,7 @@
 
 #include "hapstab/multidof/planner.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::multidof {
 
@@ -106,7 +107,16 @@ SolvePath generic_sdp_path() {
   p.premises = [](const PathContext& c) {
     const int m = c.pb.structure.m();
     const std::string why = generic_size_exceeded(c.pb, static_cast<long>(m) * (m + 1), "Theorem 5's generic SDP (16)");
-    return why.empty() ? Premises::met() : Premises::unmet(why, true);
+    if (!why.empty()) return Premises::unmet(why, true);
+    const double n = static_cast<double>(c.pb.E.states());
+    const double unknowns = n * (n + 1) / 2 + static_cast<double>(m) * (m + 1);
+    if (unknowns > limits::generic_sdp_unknowns)  // bounded work: minutes of interior-point iterations
+      return Premises::unmet("its program has about " + std::to_string(static_cast<long>(unknowns)) +
+                                 " scalar unknowns (E-hat of order " + std::to_string(static_cast<long>(n)) + "), more than the " +
+                                 std::to_string(static_cast<long>(limits::generic_sdp_unknowns)) +
+                                 " of numeric/limits.hpp generic_sdp_unknowns (minutes of interior-point work)",
+                             false);
+    return Premises::met();
   };
   p.search = [](const PathContext& c) {
     if (c.mode == AnalysisMode::stability_only && !c.pb.qv_block_diagonal) return stability_only(c);

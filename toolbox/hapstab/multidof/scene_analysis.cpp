@@ -50,6 +50,18 @@ std::string delay_text(const SceneProblem& sp) {
 
 std::string SceneAnalysis::verdict() const { return lmi::to_string(lmi::feasibility_of(lmis.verdict.outcome)); }
 
+bool SceneAnalysis::undecided() const {
+  if (ok() || as_written_unstable()) return false;
+  if (!certified) return true;  // (16) not proven either way
+  if (!feasible) return false;  // (16) proven infeasible: Theorem 5 does not conclude
+  bool some_undecided = false;
+  for (const auto& p : premises) {
+    if (p.verdict.fails()) return false;  // a premise fails: no conclusion, whatever the others
+    some_undecided = some_undecided || !p.verdict.holds();
+  }
+  return some_undecided;
+}
+
 SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& opt) {
   const auto t0 = Clock::now();
   SceneAnalysis a;

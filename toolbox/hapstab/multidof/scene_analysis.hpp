@@ -76,6 +76,10 @@ struct SceneAnalysis {
   bool as_written_unstable() const { return loop.stable && !*loop.stable; }
   /// Stability concluded and the loop as written not proven unstable (the command's exit 0).
   bool ok() const { return stability_concluded && !as_written_unstable(); }
+  /// Whether Theorem 5 concludes is not known -- (16) not proven feasible or infeasible, or proven
+  /// feasible with a premise undecided and none failing -- and the loop as written is not proven
+  /// unstable (the command's exit 3: an undecided answer is never counted as "no conclusion").
+  bool undecided() const;
 };
 
 /// Theorem 5 on a scene (see the header). InputError for what the scene does not model or an

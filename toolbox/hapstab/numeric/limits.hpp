@@ -85,6 +85,14 @@ inline constexpr double generic_sdp_bytes = 2e9;
 /// verdict took a second (the witness certificate's mutation campaign, issue 47). Beyond it the
 /// search is skipped and the output says so; the verdict and its certified point stand.
 inline constexpr double least_dissipative_unknowns = 600;
+/// Scalar unknowns of Theorem 5's generic SDP (16) for the VERDICT (multidof/path_generic.cpp), the
+/// path tried last, when the structured paths and the witness did not decide -- near the
+/// boundary of (16), where its point usually fails the exact re-check anyway. Its interior-point
+/// work grows like v^3 per iteration, and faster near the boundary: a 3-DOF linked-walls scene
+/// behind 10 samples (678 unknowns) took 6 s, behind 14 (1,188) 10 s, behind 17 (1,653) 200 s,
+/// behind 20 (2,223) 400 s, then "undecided". Beyond the limit the path is skipped and named in
+/// the verdict, which is then undecided (exit 3) unless an earlier path has one of its own.
+inline constexpr double generic_sdp_unknowns = 1200;
 
 /// Decimal digits of the integer part of an argument reduced modulo 2 pi (r(jw) of paper 001 at
 /// |w T| < 10^this: `hapstab r`). The reduction computes pi to that many digits (10^5 digits:
