@@ -286,14 +286,17 @@ def stable_term(rng, resonant=False):
         if num == [0, 0]:
             num = [Q(1), Q(0)]
         return Rational(pmul_s(num, Q(1, rng.choice([100, 1000, 10000]))), den)
+    # a numerator drawn all zero is made 1 (no draw more: every other case stays as it was); a zero
+    # term made bound_max's H1 = 0, which hapstab rightly refuses ("does not depend on K")
     if kind < 0.4:
         p = rq(rng, -0.95, 0.95)
-        return Rational([rq(rng, -3, 3), rq(rng, -3, 3)], [1, -p])
+        num = [rq(rng, -3, 3), rq(rng, -3, 3)]
+        return Rational(num if any(num) else [Q(1), Q(0)], [1, -p])
     r = Q(rng.randint(30, 98), 100)
     c = rand_cos(rng)
     den = [1, -2 * r * c, r * r]
     num = [rq(rng, -3, 3), rq(rng, -3, 3), rq(rng, -3, 3)]
-    return Rational(num, den)
+    return Rational(num if any(num) else [Q(1), Q(0), Q(0)], den)
 
 
 def pmul_s(a, k):
