@@ -63,17 +63,18 @@ int run(const Opts& o) {
   // as `proofs --table` does: every claim has its row in the claim table, each column equal
   const int table_diffs = o.table.empty() ? 0 : claim_table_differences(rep.claims, o.table, o.only, "reproduce");
   if (!o.quiet) std::cerr << "reproduce: " << rep.claims.size() << " claims checked in " << s << " s\n";
-  if (!rep.claims.empty()) {
+  if (!o.quiet) std::cerr << "reproduce: running the example scenes (examples/*.toml)\n";
+  rep.scenes = run_scenes(o.only, dir, o.quiet);
+  if (!rep.claims.empty() || !rep.scenes.empty()) {  // the claims' certificates, then the scenes' analyses'
     if (!o.quiet) std::cerr << "reproduce: writing and checking the certificates (DIR/certificates)\n";
     rep.certificates = produce_certificates(rep.claims, dir, true);
+    for (auto& e : produce_scene_certificates(rep.scenes, dir)) rep.certificates.push_back(std::move(e));
     rep.certificate_summary = check_certificates(rep.certificates, dir, false);  // failures printed, as a failed claim is
     write_certificate_index(rep.certificates, rep.certificate_summary, dir);
     if (!o.quiet)
       std::cerr << "reproduce: " << certificate_counts(rep.certificate_summary, false) << "; written in "
                 << rep.certificate_summary.produce_seconds << " s, checked in " << rep.certificate_summary.wall_seconds << " s\n";
   }
-  if (!o.quiet) std::cerr << "reproduce: running the example scenes (examples/*.toml)\n";
-  rep.scenes = run_scenes(o.only, dir, o.quiet);
   for (const auto& r : rep.scenes)
     if (!r.ok) std::cerr << "reproduce: scene " << r.file << " (" << r.command << ") FAILS: " << r.error << "\n";
   // Every plots/ script is a figure, except common*.gp (shared pieces the scripts load) and

@@ -214,10 +214,15 @@ std::string summary_line(const ReportInput& in) {
   return o.str();
 }
 
-// The certificate cell of a scene run: no scene verdict has a certificate kind yet.
-std::string scene_certificate(const SceneRun& r) {
-  if (r.command == "simulate") return "numeric (a simulation): no certificate";
-  return "no certificate kind yet (issue 47)";
+// The certificate cell of a scene run: a simulation has none; `multidof analyze` links its
+// certificate (produce_scene_certificates), or says why its verdict has none; design has no kind yet.
+std::string scene_certificate(const SceneRun& r, const std::vector<CertificateEntry>& entries, bool as_html) {
+  auto text = [&](const std::string& t) { return as_html ? html(t) : cell(t); };
+  if (r.command == "simulate") return text("numeric (a simulation): no certificate");
+  if (r.command != "multidof analyze") return text("no certificate kind yet (issue 47)");
+  ClaimResult as_claim{"examples/" + r.file, r.paper, "", r.claim, Status::exact, r.ok, ""};
+  as_claim.no_certificate = r.no_certificate;
+  return certificate_cell(as_claim, entries, as_html);
 }
 
 // The report's certificate paragraph: the counts, the times, the failures.
@@ -312,7 +317,7 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
         if (r.paper == paper)
           md << "| " << code("examples/" + r.file) << " | " << cell(r.claim) << " | " << code("hapstab " + r.command) << " | "
              << cell(r.expected.empty() ? "runs" : r.expected) << " | " << cell(r.got) << " | "
-             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error)) << " | " << cell(scene_certificate(r)) << " |\n";
+             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error))  << " | " << scene_certificate(r, in.certificates, false) << " |\n";
     }
     for (const auto& f : in.figures)
       if (f.paper == paper) {
@@ -365,7 +370,7 @@ void write_index_html(const ReportInput& in, const fs::path& dir) {
             << "</td><td><code>hapstab " << html(r.command) << "</code></td><td>"
             << html(r.expected.empty() ? "runs" : r.expected) << "</td><td>" << html(r.got) << "</td><td class=\""
             << (r.ok ? "holds\">as expected" : "fails\">FAILS: " + html(r.error)) << "</td><td>"
-            << html(scene_certificate(r)) << "</td></tr>\n";
+            << scene_certificate(r, in.certificates, true) << "</td></tr>\n";
       h << "</table>\n";
     }
     for (const auto& f : in.figures)

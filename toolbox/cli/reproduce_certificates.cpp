@@ -266,6 +266,51 @@ std::vector<CertificateEntry> produce_certificates(const std::vector<proofs::Cla
   return out;
 }
 
+std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const fs::path& dir) {
+  std::vector<CertificateEntry> out;
+  for (SceneRun& r : runs) {
+    if (r.command != "multidof analyze") continue;
+    CertificateEntry e;
+    e.claim = "examples/" + r.file;
+    e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".json";
+    e.command = command_text({"multidof", "analyze", "--scene", e.claim, "--certificate", e.file});
+    const fs::path path = dir / e.file;
+    fs::create_directories(path.parent_path());
+    const auto t0 = clock_type::now();
+    InProcessRun run{exit_ok, json()};
+    try {
+      run = run_in_process({"multidof", "analyze", "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
+                            "--certificate", path.string()});
+    } catch (const InputError& ex) {
+      const std::string why = ex.what();
+      if (why.find("no certificate") != std::string::npos) {  // a verdict of no certificate kind: said in its row
+        r.no_certificate = why.rfind("--certificate: ", 0) == 0 ? why.substr(15) : why;
+        continue;
+      }
+      e.error = "the command failed (bad input): " + why;
+    } catch (const std::exception& ex) {
+      e.error = std::string("the command failed (") + exit_code_for(ex).kind + "): " + ex.what();
+    }
+    e.produce_seconds = since(t0);
+    if (e.error.empty() && !fs::exists(path)) e.error = "the command wrote no certificate";
+    if (fs::exists(path)) {
+      e.bytes = fs::file_size(path);
+      try {
+        std::ifstream in(path);
+        const json j = json::parse(in);
+        e.kind = j.value("kind", std::string());
+        const json printed = run.json.is_object() && run.json.contains("feasible") ? run.json["feasible"] : json();
+        if (e.error.empty() && (!j.contains("claim") || !j["claim"].is_object() || j["claim"].value("feasible", json()) != printed))
+          e.error = "the certificate's claim.feasible is not the verdict the command printed (" + printed.dump() + ")";
+      } catch (const std::exception& ex) {
+        if (e.error.empty()) e.error = std::string("the certificate is not JSON: ") + ex.what();
+      }
+    }
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 std::vector<CertificateEntry> certificates_in_folder(const fs::path& dir) {
   std::vector<CertificateEntry> out;
   if (!fs::is_directory(dir / "certificates")) return out;

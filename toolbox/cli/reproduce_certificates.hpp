@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/scenes.hpp"
 #include "proofs/proof.hpp"
 
 namespace hapstab::cli {
@@ -58,6 +59,14 @@ struct CertificateSummary {
 /// *.json first), in the claims' order; their count on stderr unless quiet.
 std::vector<CertificateEntry> produce_certificates(const std::vector<proofs::ClaimResult>& claims,
                                                    const std::filesystem::path& dir, bool quiet);
+
+/// The certificates of the example scenes' `multidof analyze` runs (issue 47 item 4): for each run
+/// of `runs` with that command, `hapstab multidof analyze --scene examples/F --certificate
+/// dir/certificates/scene.<stem>.json` in this process (claim = "examples/F"), its certificate's
+/// claim.feasible required to be the verdict the command printed. A verdict of no certificate kind
+/// (a perturb_C scene, a decomposed one) writes none: the refusal goes to the run's no_certificate,
+/// for the report's row. Call after run_scenes and before check_certificates.
+std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const std::filesystem::path& dir);
 
 /// The certificates dir/certificates/*.json as entries (sorted by file; claim = the file's stem,
 /// kind as written): what check_certificates checks of a folder written before, or edited.

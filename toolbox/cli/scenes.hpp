@@ -31,6 +31,7 @@ struct SceneRun {
   bool ok = true;
   std::string error;     ///< why it failed (exit code, unreadable JSON, unmet expectation)
   double seconds = 0;
+  std::string no_certificate;  ///< why its verdict has none (produce_scene_certificates), or ""
 };
 
 /// Runs every scene in examples_dir() (sorted by file name) of `paper` ("" = all); outputs go to
