@@ -2499,7 +2499,7 @@ def env_entries(model, T, params):
     env = model.get("environment")
     if not isinstance(env, dict):
         raise Malformed("model.environment: missing or not an object")
-    only(env, ("domain", "method", "gain", "E"), "model.environment")
+    only(env, ("domain", "method", "gain", "E", "perturb_C"), "model.environment")
     domain = env.get("domain")
     if domain not in ("z", "s"):
         raise Malformed("model.environment.domain: must be \"z\" or \"s\"")
@@ -2537,6 +2537,21 @@ def env_entries(model, T, params):
                 out[-1].append(parse_h(e, T, params, var=domain, field=where, leaf=leaf))
             except ZeroDivisionError:
                 raise Malformed(where + ": division by zero")
+    if "perturb_C" in env:  # paper 000 Sec. VI: C_E := Pi C_E, D_E unchanged, so E' = Pi (E - D) + D, D = E(inf)
+        Pi = env["perturb_C"]
+        if not isinstance(Pi, list) or len(Pi) != m or any(not isinstance(r, list) or len(r) != m for r in Pi):
+            raise Malformed("model.environment.perturb_C: must be %d x %d \"p/q\" strings" % (m, m))
+        Pi = [[exact_value(x, "model.environment.perturb_C[%d][%d]" % (i, j)) for j, x in enumerate(r)] for i, r in enumerate(Pi)]
+        D = []
+        for i in range(m):
+            D.append([])
+            for j in range(m):
+                h = out[i][j]  # as a rational function of z: its limit at z = inf
+                if len(h.num) > len(h.den):
+                    raise Malformed("model.environment.E[%d][%d]: not proper (E(inf) is needed by perturb_C)" % (i, j))
+                D[-1].append(h.num[-1] / h.den[-1] if h.num and len(h.num) == len(h.den) else Fraction(0))
+        out = [[sum((RF([Pi[i][k]]) * (out[k][j] - RF([D[k][j]])) for k in range(m) if Pi[i][k] != 0), RF([D[i][j]]))
+                for j in range(m)] for i in range(m)]
     return out, g
 
 

@@ -70,7 +70,6 @@ std::string multidof_certificate_premise(const scene::Scene& sc) {
     for (const auto& e : row)
       if (e.find('[') != std::string::npos) return "an environment entry names a list parameter ('" + e + "')";
   const auto md = scene::multidof_values(sc);
-  if (md.perturb_C) return "multidof.perturb_C changes E's output map: the certificate's model would not be E as written";
   if (md.qv_block_diagonal)
     return "multidof.qv_block_diagonal = true restricts Q_V, which the certificate kinds take free (Remark 3): a "
            "certificate would claim another program";
@@ -84,6 +83,12 @@ std::string multidof_certificate_premise(const scene::Scene& sc) {
 
 namespace {
 
+nlohmann::json strings(const std::vector<rational>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& x : v) a.push_back(x.str());
+  return a;
+}
+
 // The model as the scene writes it (multidof_certificate_premise holds).
 nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
   const toml::table& env = *environment_table(sc);
@@ -94,6 +99,11 @@ nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis
   nlohmann::json set = nlohmann::json::object();
   for (const auto& [k, v] : sc.parameters) set[k] = v.str();
   const auto md = scene::multidof_values(sc);
+  if (md.perturb_C) {  // C_E := Pi C_E, D_E unchanged: the checkers take E' = Pi (E - E(inf)) + E(inf)
+    nlohmann::json pi = nlohmann::json::array();
+    for (const auto& row : *md.perturb_C) pi.push_back(strings(row));
+    e["perturb_C"] = pi;
+  }
   nlohmann::json devices = nlohmann::json::array();
   for (size_t d = 0; d < sc.loop.devices.size(); ++d) {
     const auto& dev = sc.loop.devices[d];
@@ -117,12 +127,6 @@ nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis
   }
   return {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
           {"operators", operators}};
-}
-
-nlohmann::json strings(const std::vector<rational>& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (const auto& x : v) a.push_back(x.str());
-  return a;
 }
 
 // (16) feasible: the exact point and the realisation of E-hat it is on

@@ -104,10 +104,7 @@ Mat sized(const nlohmann::json& ev, const char* key, size_t rows, size_t cols) {
 // (r): C (zI - A)^-1 B + D = T z/(z - 1) z^-n g E(z) as rational functions, "" or what differs
 std::string realises(const Environment& env, const Mat& A, const Mat& B, const Mat& C, const Mat& D, long& need) {
   const size_t N = A.size(), m = env.E.size();
-  long d = 0;
-  for (const auto& row : env.E)
-    for (const auto& H : row) d = std::max<long>(d, std::max(H.num().degree(), H.den().degree()));
-  need = static_cast<long>(N) + env.n + d + 2;
+  need = static_cast<long>(N) + env.n + environment_degree(env) + 2;
   long agreed = 0;
   for (long k = 2; agreed < need && k < 2 + 4 * need + 64; ++k) {
     const rational z(k);
@@ -117,19 +114,14 @@ std::string realises(const Environment& env, const Mat& A, const Mat& B, const M
     rational zn = 1;
     for (long i = 0; i < env.n; ++i) zn *= z;
     const rational factor = env.T * env.gain * z / (z - 1) / zn;
-    bool defined = true;
-    for (size_t i = 0; i < m && defined; ++i)
-      for (size_t j = 0; j < m; ++j) {
-        const auto e = entry_at(env, env.E[i][j], Cq(z));
-        if (!e) {
-          defined = false;
-          break;
-        }
-        if (G[i][j] != factor * e->re)
+    const auto e = environment_at(env, Cq(z));
+    if (!e) continue;
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = 0; j < m; ++j)
+        if (G[i][j] != factor * (*e)[i][j].re)
           return "at z = " + std::to_string(k) + " entry (" + std::to_string(i) + ", " + std::to_string(j) + ") of C (zI - A)^-1 B + D is " +
-                 decimal(G[i][j]) + ", the model's E-hat " + decimal(factor * e->re);
-      }
-    agreed += defined;
+                 decimal(G[i][j]) + ", the model's E-hat " + decimal(factor * (*e)[i][j].re);
+    agreed += 1;
   }
   return agreed >= need ? "" : "too few points where both sides are defined";
 }

@@ -45,7 +45,7 @@ Cq power(Cq x, long n) {
 
 Environment read_environment(const nlohmann::json& model, const rational& T, long n) {
   const nlohmann::json& env = object_field(model, "environment", "model");
-  only_fields(env, {"domain", "method", "gain", "E"}, "model.environment");
+  only_fields(env, {"domain", "method", "gain", "E", "perturb_C"}, "model.environment");
   Environment e;
   e.T = T;
   e.n = n;
@@ -85,7 +85,61 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
       }
     }
   }
+  if (env.contains("perturb_C")) {  // C_E := Pi C_E, D_E unchanged: E' = Pi (E - E(inf)) + E(inf)
+    e.perturb_C = exact_matrix(env, "perturb_C", "model.environment", max_dofs);
+    if (e.perturb_C.size() != m || e.perturb_C[0].size() != m)
+      throw InputError("model.environment.perturb_C: must be " + std::to_string(m) + " x " + std::to_string(m) + " (E's size)");
+    // E(inf): z -> inf is s -> 1/T (backward Euler: s = (z - 1)/(T z)), s -> 2/T (Tustin), or the
+    // ratio of the leading coefficients of an entry in z (0 when strictly proper)
+    for (size_t i = 0; i < m; ++i) {
+      e.D.emplace_back();
+      for (size_t j = 0; j < m; ++j) {
+        const TransferFunction& H = e.E[i][j];
+        const std::string where = "model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+        if (e.var == 'z') {
+          if (H.num().degree() > H.den().degree()) throw InputError(where + ": not proper (E(inf) is needed by perturb_C)");
+          e.D.back().push_back(H.num().degree() == H.den().degree() ? rational(H.num().coeff(H.num().degree()) /
+                                                                               H.den().coeff(H.den().degree()))
+                                                                     : rational(0));
+        } else {
+          const int d = std::max(H.num().degree(), H.den().degree());
+          const Cq sigma(e.tustin ? 2 : 1), tau(T);
+          const Cq den = homogeneous(H.den(), sigma, tau, d);
+          if (den.is_zero()) throw InputError(where + ": a pole at z = inf (E(inf) is needed by perturb_C)");
+          e.D.back().push_back((homogeneous(H.num(), sigma, tau, d) / den).re);
+        }
+      }
+    }
+  }
   return e;
+}
+
+std::optional<std::vector<std::vector<Cq>>> environment_at(const Environment& e, const Cq& z) {
+  const size_t m = e.E.size();
+  std::vector<std::vector<Cq>> V(m, std::vector<Cq>(m));
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      const auto v = entry_at(e, e.E[i][j], z);
+      if (!v) return std::nullopt;
+      V[i][j] = *v;
+    }
+  if (e.perturb_C.empty()) return V;
+  std::vector<std::vector<Cq>> W(m, std::vector<Cq>(m));
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      Cq s(e.D[i][j]);
+      for (size_t k = 0; k < m; ++k)
+        if (!e.perturb_C[i][k].is_zero()) s = s + Cq(e.perturb_C[i][k]) * (V[k][j] - Cq(e.D[k][j]));
+      W[i][j] = s;
+    }
+  return W;
+}
+
+long environment_degree(const Environment& e) {
+  long d = 0;
+  for (const auto& row : e.E)
+    for (const auto& H : row) d = std::max<long>(d, std::max(H.num().degree(), H.den().degree()));
+  return e.perturb_C.empty() ? d : d * static_cast<long>(e.E.size());
 }
 
 std::optional<Cq> entry_at(const Environment& e, const TransferFunction& H, const Cq& z) {

@@ -2,7 +2,9 @@
 // (check/multidof_witness_check.hpp, check/multidof_feasible_check.hpp) as the scene writes it:
 // the environment E(z) entry by entry (in z, or in s by backward Euler / Tustin), its gain, the
 // delay, the devices' OSP levels and the operators' DOFs, read from a certificate's model and
-// evaluated exactly at Gaussian rational points z (check/gaussian_rational.hpp).
+// evaluated exactly at Gaussian rational points z (check/gaussian_rational.hpp). With
+// `perturb_C` = Pi (paper 000 Sec. VI: C_E := Pi C_E, D_E unchanged) the model is
+// E'(z) = Pi (E(z) - E(inf)) + E(inf), whatever the realisation (C (zI - A)^-1 B = E - D).
 #pragma once
 
 #include <optional>
@@ -24,6 +26,8 @@ struct Environment {
   rational T, gain;
   long n = 0;
   std::vector<std::vector<TransferFunction>> E;  ///< m x m, as written
+  std::vector<std::vector<rational>> perturb_C;  ///< Pi, m x m; empty: none
+  std::vector<std::vector<rational>> D;          ///< E(inf) (D_E), when perturb_C is given
 };
 
 /// model.environment {domain, method, gain, E} with model.set's parameters; InputError naming the field.
@@ -32,6 +36,12 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
 /// An s-entry N(s)/D(s) is sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k) at s = sigma/tau,
 /// d = max degree (sigma = z - 1, tau = T z; Tustin 2(z - 1), T(z + 1)): exact at s = infinity too.
 std::optional<Cq> entry_at(const Environment& e, const TransferFunction& H, const Cq& z);
+/// The model's environment at z: E(z), or E'(z) = Pi (E(z) - E(inf)) + E(inf) with perturb_C;
+/// nullopt at a pole of an entry.
+std::optional<std::vector<std::vector<Cq>>> environment_at(const Environment& e, const Cq& z);
+/// The largest degree of E's entries as rational functions of z (numerator or denominator), times
+/// m with perturb_C (a row of Pi sums m entries of different denominators).
+long environment_degree(const Environment& e);
 /// E-hat(z) / E(z) = T z/(z - 1) z^-n g (paper 000 (11)); z on the unit circle, z != 1 (z^-n = conj(z)^n).
 Cq ehat_factor(const Environment& e, const Cq& z);
 /// delta_i per DOF from model.devices (a mass-damper's b, or the declared osp), in DOF order.

@@ -81,15 +81,11 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
   const std::vector<rational> delta = device_levels(p.model, m);
   const std::vector<size_t> owner = operator_of(p.model, m);
   // (a): E(1) finite and symmetric; the components of the operators coupled through E(1)
-  std::vector<std::vector<Cq>> E1(m, std::vector<Cq>(m));
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < m; ++j) {
-      const auto v = entry_at(env, env.E[i][j], Cq(1));
-      if (!v)
-        throw InputError("model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) +
-                         "]: a pole at z = 1 (E-hat would have a double pole there; this kind needs E(1) finite)");
-      E1[i][j] = *v;
-    }
+  const auto at1 = environment_at(env, Cq(1));
+  if (!at1)
+    throw InputError("model.environment.E: an entry has a pole at z = 1 (E-hat would have a double pole there; this kind "
+                     "needs E(1) finite)");
+  const std::vector<std::vector<Cq>>& E1 = *at1;
   UnionFind uf(m);
   for (size_t i = 0; i < m; ++i)
     for (size_t j = 0; j < m; ++j) {
@@ -113,16 +109,12 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
     if (pt.w < 0) return {false, at + "the weight " + decimal(pt.w) + " is negative"};
     // E-hat(z) u, row by row: T z/(z - 1) z^-n g sum_j E_ij(z) u_j  (z^-n = conj(z)^n on the circle)
     const Cq factor = ehat_factor(env, z);
+    const auto Ez = environment_at(env, z);
+    if (!Ez) return {false, at + "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is a pole of an entry of E"};
     for (size_t i = 0; i < m; ++i) {
       Cq w;
-      for (size_t j = 0; j < m; ++j) {
-        if (pt.u[j].is_zero()) continue;
-        const auto v = entry_at(env, env.E[i][j], z);
-        if (!v)
-          return {false, at + "z = " + decimal(z.re) + " + j " + decimal(z.im) + " is a pole of E[" + std::to_string(i) + "][" +
-                             std::to_string(j) + "]"};
-        w = w + *v * pt.u[j];
-      }
+      for (size_t j = 0; j < m; ++j)
+        if (!pt.u[j].is_zero()) w = w + (*Ez)[i][j] * pt.u[j];
       const size_t c = uf.find(owner[i]);
       is_root[c] = true;  // Re(conj(u_i) (E-hat u)_i) + delta_i |u_i|^2
       const Cq& ui = pt.u[i];
