@@ -152,15 +152,33 @@ def feasible_mutants(cert, rng):
     return out
 
 
+def perturb_mutants(cert, m):
+    """multidof.perturb_C added to the model (paper 000 Sec. VI: E' = Pi (E - E(inf)) + E(inf)): the
+    identity leaves the model as it was; a swap of two DOFs makes another model (either verdict,
+    the same exit from both checkers: an E'(1) made asymmetric is outside the witness kind); a
+    wrong size or a decimal is malformed."""
+    eye = [["1" if i == j else "0" for j in range(m)] for i in range(m)]
+    out = [("perturb_C the identity", _set(cert, ["model", "environment", "perturb_C"], eye), "accept"),
+           ("perturb_C one row short", _set(cert, ["model", "environment", "perturb_C"], eye[:-1] if m > 1 else [["1", "0"]]), "malformed"),
+           ("perturb_C a decimal", _set(cert, ["model", "environment", "perturb_C"],
+                                        [["0.5" if (i, j) == (0, 0) else x for j, x in enumerate(r)] for i, r in enumerate(eye)]),
+            "malformed")]
+    if m >= 2:
+        swap = copy.deepcopy(eye)
+        swap[0], swap[1] = swap[1], swap[0]
+        out.append(("perturb_C swapping DOFs 0 and 1", _set(cert, ["model", "environment", "perturb_C"], swap), "same"))
+    return out
+
+
 def mutants(cert, rng):
     """[(name, certificate, expectation)] of one multidof-feasible or multidof-witness certificate."""
     if cert["kind"] == "multidof-feasible":
-        return feasible_mutants(cert, rng)
+        return feasible_mutants(cert, rng) + perturb_mutants(cert, len(cert["evidence"]["X"]))
     if "points" in cert["evidence"]:
         return point_mutants(cert, rng)
-    out = [("unmutated", cert, "accept")]
     ev, model = cert["evidence"], cert["model"]
     m = len(ev["u"])
+    out = [("unmutated", cert, "accept")] + perturb_mutants(cert, m)
     zr, zi = Fraction(ev["z_re"]), Fraction(ev["z_im"])
     # refute: the claim or the evidence made false on its face
     zero = _set(cert, ["evidence", "u"], ["0"] * m)
