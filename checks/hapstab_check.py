@@ -85,6 +85,10 @@ multidof-witness  paper 000's Theorem 5 program (16) infeasible for the scene's 
        s-entries parsed with s the rational function of z itself, evaluated at the rational z of the
        evidence in Gaussian rationals; phi per group <= 0, one < 0. Several weighted points (evidence.points,
        the several-frequency witness where X has several free directions): sum_j w_j phi per group.
+multidof-facial  paper 000's (16) infeasible because no X = diag(g) != 0 (one g per operator) makes X E(1)
+       symmetric (then phi -> -inf at theta -> 0+ for every admissible X): the linear system
+       g_a E(1)_ij = g_b E(1)_ji (i < j) has full column rank, by its own elimination in fractions; E(1)
+       from the model's entries (perturb_C applied), the gain != 0. No evidence.
 multidof-feasible  paper 000's (16) feasible: the evidence's realisation (A, B, C, D) equals the model's
        E-hat = T z/(z-1) z^-n g E(z) at N + n + d + 2 integer points (so identically), and the point (P, X,
        Q_E, Q_V) passes P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) with g >= 1 per operator, by
@@ -2753,6 +2757,53 @@ def check_multidof_feasible(c):
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
 
 
+def check_multidof_facial(c):
+    """Paper 000's (16) infeasible by the facial conditions: every admissible X has X E(1) symmetric
+    (the witness kind's (a)); when g_a E(1)_ij = g_b E(1)_ji for all i < j has only g = 0, no X does."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
+    only(claim, ("status", "feasible"), "claim")
+    only(ev, (), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("feasible"), bool):
+        raise Malformed("claim.feasible: missing or not true/false")
+    if claim["feasible"]:
+        return False, "the claim is that (16) is feasible; the facial conditions prove only infeasibility"
+    T, n = period(model), delay_of(model)
+    E, g = env_entries(model, T, parameters(model))
+    m = len(E)
+    witness_levels(model, m)
+    owner = operator_owner(model, m)
+    N = len(model["operators"])
+    if g == 0:
+        return False, "the environment's gain is 0: X E(1) g = 0 is symmetric"
+    E1 = [[rf_at(h, cq(1)) for h in row] for row in E]
+    if any(v is None for row in E1 for v in row):
+        raise Malformed("model.environment.E: an entry has a pole at z = 1 (E(1) must be finite)")
+    rows = []
+    for i in range(m):
+        for j in range(i + 1, m):
+            r = [Fraction(0)] * N
+            r[owner[i]] += E1[i][j][0]
+            r[owner[j]] -= E1[j][i][0]
+            if any(r):
+                rows.append(r)
+    rank = 0
+    for col in range(N):
+        piv = next((k for k in range(rank, len(rows)) if rows[k][col] != 0), None)
+        if piv is None:
+            continue
+        rows[rank], rows[piv] = rows[piv], rows[rank]
+        for k in range(rank + 1, len(rows)):
+            f = rows[k][col] / rows[rank][col]
+            rows[k] = [a - f * b for a, b in zip(rows[k], rows[rank])]
+        rank += 1
+    if rank < N:
+        return False, "some X = diag(g) != 0 makes X E(1) symmetric (rank %d < %d operators)" % (rank, N)
+    return True, "(16) infeasible: no X = diag(g) != 0 makes X E(1) symmetric (rank %d)" % rank
+
+
 def check_multidof_witness(c):
     """Paper 000's (16) infeasible for every admissible X: phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T
     Delta_D X u > 0 at every point of (16) (M1 <= 0 at [x; u], x = (zI - A)^-1 B u, and Delta_D X - Q_E
@@ -2861,6 +2912,7 @@ def check(c):
             raise Malformed("version: missing or not 1")
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
                     "multidof-feasible": check_multidof_feasible, "multidof-witness": check_multidof_witness,
+                    "multidof-facial": check_multidof_facial,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}

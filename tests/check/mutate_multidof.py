@@ -41,10 +41,40 @@ def damper_chain(rng):
     return "\n".join(L) + "\n"
 
 
+def perturbed_walls(rng):
+    """2-3 walls K_i + B_i (z - 1)/(T z) linked by springs kc, one operator on every DOF (G(m; m): X = g I),
+    and multidof.perturb_C swapping the outputs of DOFs 0 and 1 (paper 000 Sec. VI's case i): E'(1) is
+    not symmetric, so (16) is infeasible by the facial conditions (the multidof-facial kind), or, with
+    equal rows, something else."""
+    N = rng.choice([2, 3])
+    p = {"kc": rng.randint(1, 5000)}
+    for i in range(N):
+        p["K%d" % i] = rng.randint(100, 30000)
+        p["B%d" % i] = rng.randint(0, 10)
+    rows = []
+    for i in range(N):
+        links = (i > 0) + (i < N - 1)
+        rows.append(["K%d + B%d*(z-1)/(T*z) + %d*kc" % (i, i, links) if i == j else ("-kc" if abs(i - j) == 1 else "0")
+                     for j in range(N)])
+    L = ["[scene]", 'name = "perturbed walls"', 'T = "1/%d"' % rng.choice([100, 1000, 2000]), "", "[parameters]"]
+    L += ['%s = "%d"' % kv for kv in p.items()]
+    for i in range(N):
+        L += ["", "[[device]]", 'name = "d%d"' % i, 'm = "1/10"', 'b = "%d/100"' % rng.randint(1, 3000)]
+    L += ["", "[[operator]]", 'name = "h"', "dofs = [" + ", ".join('"d%d"' % i for i in range(N)) + "]",
+          "tf = [" + ", ".join("[" + ", ".join('"1"' if i == j else '"0"' for j in range(N)) + "]" for i in range(N)) + "]"]
+    L += ["", "[environment]", "tf = [" + ",\n      ".join("[" + ", ".join('"%s"' % e for e in r) + "]" for r in rows) + "]"]
+    swap = [["1" if j == (1 - i if i < 2 else i) else "0" for j in range(N)] for i in range(N)]
+    L += ["", "[multidof]", "perturb_C = [" + ", ".join("[" + ", ".join('"%s"' % x for x in r) + "]" for r in swap) + "]"]
+    n = rng.choice([0, 1, 2])
+    if n:
+        L += ["", "[delay]", 'samples = "%d"' % n]
+    return "\n".join(L) + "\n"
+
+
 def produce(hapstab, rng, tmp, i):
     """A certificate of a random scene (every fourth a damper chain), or the reason none was written."""
     import indep_witness  # the witness campaign's scene generator (numpy, mpmath: only for this kind)
-    text = damper_chain(rng) if i % 4 == 3 else indep_witness.gen(rng)["text"]
+    text = damper_chain(rng) if i % 4 == 3 else perturbed_walls(rng) if i % 8 == 5 else indep_witness.gen(rng)["text"]
     scene = os.path.join(tmp, "w%d.toml" % i)
     with open(scene, "w") as f:
         f.write(text)
@@ -154,11 +184,12 @@ def feasible_mutants(cert, rng):
 
 def perturb_mutants(cert, m):
     """multidof.perturb_C added to the model (paper 000 Sec. VI: E' = Pi (E - E(inf)) + E(inf)): the
-    identity leaves the model as it was; a swap of two DOFs makes another model (either verdict,
+    identity leaves a model without one as it was; a swap of two DOFs makes another model (either verdict,
     the same exit from both checkers: an E'(1) made asymmetric is outside the witness kind); a
     wrong size or a decimal is malformed."""
     eye = [["1" if i == j else "0" for j in range(m)] for i in range(m)]
-    out = [("perturb_C the identity", _set(cert, ["model", "environment", "perturb_C"], eye), "accept"),
+    had = "perturb_C" in cert["model"]["environment"]  # then the identity is another model
+    out = [("perturb_C the identity", _set(cert, ["model", "environment", "perturb_C"], eye), "same" if had else "accept"),
            ("perturb_C one row short", _set(cert, ["model", "environment", "perturb_C"], eye[:-1] if m > 1 else [["1", "0"]]), "malformed"),
            ("perturb_C a decimal", _set(cert, ["model", "environment", "perturb_C"],
                                         [["0.5" if (i, j) == (0, 0) else x for j, x in enumerate(r)] for i, r in enumerate(eye)]),
@@ -170,8 +201,35 @@ def perturb_mutants(cert, m):
     return out
 
 
+def facial_mutants(cert, m):
+    """A multidof-facial certificate: no X = diag(g) != 0 makes X E(1) symmetric (the model alone)."""
+    model = cert["model"]
+    out = [("unmutated", cert, "accept")]
+    out.append(("claim feasible", _set(cert, ["claim", "feasible"], True), "refute"))
+    out.append(("gain 0", _set(cert, ["model", "environment", "gain"], "0"), "refute"))
+    out.append(("one operator per DOF", _set(cert, ["model", "operators"], [[i] for i in range(m)]), "same"))
+    if m >= 2:  # E made symmetric: E(1) symmetric, so X = I qualifies
+        E = copy.deepcopy(model["environment"]["E"])
+        for i in range(m):
+            for j in range(i):
+                E[i][j] = E[j][i]
+        pc = model["environment"].get("perturb_C")
+        sym = _set(cert, ["model", "environment", "E"], E)
+        out.append(("E made symmetric", _set(sym, ["model", "environment", "perturb_C"], None) if pc else sym, "refute"))
+    for path in (["model", "T"], ["model", "environment"], ["model", "devices"], ["model", "operators"], ["claim", "feasible"],
+                 ["claim", "status"], ["model", "environment", "E"]):
+        out.append(("deleted " + ".".join(path), _set(cert, path, None), "malformed"))
+    out.append(("added evidence.u", _set(cert, ["evidence", "u"], ["1"] * m), "malformed"))
+    out.append(("status certified", _set(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("delay + 1", _set(cert, ["model", "delay"], model["delay"] + 1), "accept"))  # E(1) does not see the delay
+    return out
+
+
 def mutants(cert, rng):
-    """[(name, certificate, expectation)] of one multidof-feasible or multidof-witness certificate."""
+    """[(name, certificate, expectation)] of one multidof-feasible, -facial or -witness certificate."""
+    if cert["kind"] == "multidof-facial":
+        return facial_mutants(cert, len(cert["model"]["environment"]["E"])) + \
+            perturb_mutants(cert, len(cert["model"]["environment"]["E"]))[1:]
     if cert["kind"] == "multidof-feasible":
         return feasible_mutants(cert, rng) + perturb_mutants(cert, len(cert["evidence"]["X"]))
     if "points" in cert["evidence"]:

@@ -191,8 +191,8 @@ TEST(CmdReproduce, AtLeastComparesTheCertifiedGains) {
 
 // The example scenes' `multidof analyze` runs write their certificates too (issue 47 item 4): Sec.
 // VI's nominal cases, case ii perturbed (perturb_C, in the certificate's model) and the coupling
-// scene a multidof-feasible each, checked by both checkers and linked from the scene's row; case i
-// perturbed (infeasible by the facial conditions: no certificate kind) says why not.
+// scene a multidof-feasible each, case i perturbed (infeasible by the facial conditions: E'(1) is
+// not symmetric) a multidof-facial; each checked by both checkers and linked from the scene's row.
 TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
   HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fs::path(::testing::TempDir()) / "repro_scene_certificates";
@@ -206,16 +206,19 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
     const std::string file = e["file"].get<std::string>();
     if (file.rfind("certificates/scene.", 0) != 0) continue;
     scenes.insert(file);
-    EXPECT_EQ(e["kind"], "multidof-feasible") << file;
+    EXPECT_EQ(e["kind"], file == "certificates/scene.multidof_case_i_perturbed.json" ? "multidof-facial" : "multidof-feasible")
+        << file;
     EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
     EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab multidof analyze --scene examples/", 0), 0u) << e["command"];
   }
   EXPECT_EQ(scenes, (std::set<std::string>{"certificates/scene.multidof_case_i_nominal.json",
+                                            "certificates/scene.multidof_case_i_perturbed.json",
                                             "certificates/scene.multidof_case_ii_coupling.json",
                                             "certificates/scene.multidof_case_ii_nominal.json",
                                             "certificates/scene.multidof_case_ii_perturbed.json"}));
   const std::string md = read(root / "out" / "report.md");
   EXPECT_NE(md.find("[scene.multidof_case_ii_nominal.json](certificates/scene.multidof_case_ii_nominal.json) (multidof-feasible)"),
             std::string::npos);
-  EXPECT_NE(md.find("(16) infeasible by the path 'facial conditions' has no certificate kind yet"), std::string::npos);
+  EXPECT_NE(md.find("[scene.multidof_case_i_perturbed.json](certificates/scene.multidof_case_i_perturbed.json) (multidof-facial)"),
+            std::string::npos);
 }

@@ -154,6 +154,14 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   if (const std::string why = multidof_certificate_premise(sc); !why.empty())
     throw InputError("--certificate: " + why + ": no certificate");
   if (a.feasible && a.certified && r.exact_point) return feasible_certificate(sc, a);
+  if (!a.feasible && a.certified && r.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
+    nlohmann::json j = certificate_header("multidof-facial");
+    j["model"] = scene_model(sc, a);
+    j["claim"] = {{"status", "exact"}, {"feasible", false}};
+    j["evidence"] = nlohmann::json::object();
+    verify_before_writing(j);
+    return j;
+  }
   if (!r.witness && !r.weighted_witness) {
     const std::string what = a.feasible && !r.components.empty() ? "a feasible (16) decided per component (decomposed)"
                              : a.feasible   ? "a feasible (16) without a certified point"

@@ -13,6 +13,7 @@
 #include "hapstab/check/bound_max_check.hpp"
 #include "hapstab/check/limit_cycle_check.hpp"
 #include "hapstab/check/multidof_feasible_check.hpp"
+#include "hapstab/check/multidof_facial_check.hpp"
 #include "hapstab/check/multidof_witness_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/passivity_level_mimo_check.hpp"
@@ -238,6 +239,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound-max") return check_bound_max(c);
   if (kind == "limit-cycle") return check_limit_cycle(c);
   if (kind == "multidof-feasible") return check_multidof_feasible(c);
+  if (kind == "multidof-facial") return check_multidof_facial(c);
   if (kind == "multidof-witness") return check_multidof_witness(c);
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "passivity-level-mimo") return check_passivity_level_mimo(c);
@@ -245,7 +247,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-feasible, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-facial, multidof-feasible, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {
