@@ -298,7 +298,8 @@ def mutants(cert, rng):
                                                     ["evidence", "z_im"], fs(2 * t2 / (1 + t2 * t2))), "agree"))
     for name in list(model.get("set", {}))[:3]:
         v = Fraction(model["set"][name])
-        out.append(("set.%s x 1.01" % name, _set(cert, ["model", "set", name], fs(v * Fraction(101, 100))), "agree"))
+        same = "perturb_C" in model["environment"]  # E'(1) may turn asymmetric: outside the kind, for both
+        out.append(("set.%s x 1.01" % name, _set(cert, ["model", "set", name], fs(v * Fraction(101, 100))), "same" if same else "agree"))
     return out
 
 

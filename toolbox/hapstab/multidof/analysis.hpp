@@ -72,6 +72,14 @@ struct PlanStep {
   std::string why;   ///< the premise that failed, the re-check's failure, ... ("" when decided)
 };
 
+/// The exact point of (16) that decided a feasible verdict (P11 in the split coordinates of the
+/// facial reduction): what `multidof analyze --certificate` writes, through exact_storage
+/// (cli/multidof_certificate.hpp). Kept as the re-check had it: the storage P in E-hat's own
+/// coordinates costs exact products of E-hat's order, computed only when a certificate is asked for.
+struct ExactPoint {
+  MatQ P11, X, QE, QV;
+};
+
 /// One independent component's outcome when the scene splits (components.hpp).
 struct ComponentResult {
   std::string name;              ///< "{H1, H2} (2 DOF, 5 states)"
@@ -79,6 +87,7 @@ struct ComponentResult {
   std::string path;              ///< the path that decided it
   Verdict verdict;
   double seconds = 0;
+  std::optional<ExactPoint> exact_point;  ///< its point, in its own coordinates, when it was proven feasible
 };
 
 /// The exact frequency-domain witness that proved (16) infeasible (path_witness.cpp), as it was
@@ -129,13 +138,6 @@ struct WeightedWitness {
   std::vector<rational> sums;                     ///< the weighted sums, exact, each <= 0
 };
 
-/// The exact point of (16) that decided a feasible verdict (P11 in the split coordinates of the
-/// facial reduction): what `multidof analyze --certificate` writes, through exact_storage
-/// (cli/multidof_certificate.hpp). Kept as the re-check had it: the storage P in E-hat's own
-/// coordinates costs exact products of E-hat's order, computed only when a certificate is asked for.
-struct ExactPoint {
-  MatQ P11, X, QE, QV;
-};
 
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words

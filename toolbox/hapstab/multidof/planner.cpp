@@ -164,7 +164,7 @@ AnalysisResult assemble(const Problem& pb, const std::vector<Component>& comps, 
   res.margin = INFINITY;
   for (size_t k = 0; k < K; ++k) {
     const AnalysisResult& r = parts[k];
-    res.components.push_back({component_name(pb, comps[k]), comps[k].dofs, r.path, r.verdict, r.seconds});
+    res.components.push_back({component_name(pb, comps[k]), comps[k].dofs, r.path, r.verdict, r.seconds, r.exact_point});
     for (const PlanStep& st : r.plan) res.plan.push_back({"component " + std::to_string(k + 1) + ": " + st.path, st.fate, st.why});
     ++count[r.path.empty() ? "none" : r.path];
     res.sdp_seconds += r.sdp_seconds;
