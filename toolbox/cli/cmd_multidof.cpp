@@ -36,12 +36,12 @@
 // Human output ends with a verdict line "=> ..." in every case.
 // Exit codes: 0 stability concluded and the loop as written not proven unstable (analyze) / a
 // stabilising V found and verified (design), 1 (16) proven infeasible, Assumption 1 fails, or the
-// loop as written is proven unstable (analyze) / not feasible, not verified, Assumption 1 fails or
-// is undecided (design), 2 bad input (inconsistent block sizes, unstable E, non-square E, a
+// loop as written is proven unstable (analyze) / not feasible, not verified, or Assumption 1 fails
+// (design), 2 bad input (inconsistent block sizes, unstable E, non-square E, a
 // fractional [delay], a declared osp above the device's level, a size beyond numeric/limits.hpp),
-// 3 undecided -- (16) not proven either way, or a premise undecided (analyze,
-// SceneAnalysis::undecided) -- numerical failure, or a contradiction between the simulation and a
-// certificate (design).
+// 3 undecided -- (16) not proven either way, or a premise undecided and none failing
+// (SceneAnalysis::undecided, SceneDesign::undecided) -- numerical failure, or a contradiction
+// between the simulation and a certificate (design).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -404,7 +404,7 @@ int run_design(const Opts& o) {
     std::cout << "=> " << verdict << "\n";
   }
   if (!d.contradiction.empty()) return exit_numerical;
-  return d.ok() ? exit_ok : exit_property_fails;
+  return d.ok() ? exit_ok : d.undecided() ? exit_numerical : exit_property_fails;
 }
 
 // Fig. 6 / Fig. 7 data: velocity responses without coupling, with the designed V and with (27)

@@ -50,15 +50,25 @@ std::string delay_text(const SceneProblem& sp) {
 
 std::string SceneAnalysis::verdict() const { return lmi::to_string(lmi::feasibility_of(lmis.verdict.outcome)); }
 
-bool SceneAnalysis::undecided() const {
-  if (ok() || as_written_unstable()) return false;
-  if (!certified) return true;  // (16) not proven either way
-  if (!feasible) return false;  // (16) proven infeasible: Theorem 5 does not conclude
+bool SceneDesign::undecided() const {
+  if (ok() || !contradiction.empty() || !feasible) return false;
   bool some_undecided = false;
   for (const auto& p : premises) {
-    if (p.verdict.fails()) return false;  // a premise fails: no conclusion, whatever the others
+    if (p.verdict.fails()) return false;
     some_undecided = some_undecided || !p.verdict.holds();
   }
+  return some_undecided;
+}
+
+bool SceneAnalysis::undecided() const {
+  if (ok() || as_written_unstable()) return false;
+  bool some_undecided = false;
+  for (const auto& p : premises) {
+    if (p.verdict.fails()) return false;  // a premise fails: no conclusion, whatever (16) is
+    some_undecided = some_undecided || !p.verdict.holds();
+  }
+  if (!certified) return true;  // (16) not proven either way
+  if (!feasible) return false;  // (16) proven infeasible: Theorem 5 does not conclude
   return some_undecided;
 }
 

@@ -76,9 +76,10 @@ struct SceneAnalysis {
   bool as_written_unstable() const { return loop.stable && !*loop.stable; }
   /// Stability concluded and the loop as written not proven unstable (the command's exit 0).
   bool ok() const { return stability_concluded && !as_written_unstable(); }
-  /// Whether Theorem 5 concludes is not known -- (16) not proven feasible or infeasible, or proven
-  /// feasible with a premise undecided and none failing -- and the loop as written is not proven
-  /// unstable (the command's exit 3: an undecided answer is never counted as "no conclusion").
+  /// Whether Theorem 5 concludes is not known -- no premise fails, and (16) is proven neither
+  /// feasible nor infeasible, or proven feasible with a premise undecided -- and the loop as written
+  /// is not proven unstable (the command's exit 3: an undecided answer is never counted as "no
+  /// conclusion").
   bool undecided() const;
 };
 
@@ -113,6 +114,9 @@ struct SceneDesign {
   bool has_v() const { return design.V.D.rows() > 0; }
   /// A verified V, every premise holding, no contradiction (the command's exit 0).
   bool ok() const { return contradiction.empty() && feasible && premise_failure.empty(); }
+  /// A verified V whose conclusion waits only on premises that are undecided, none failing (the
+  /// command's exit 3, not 1: an undecided premise is not a failed one).
+  bool undecided() const;
 };
 
 /// Theorem 6 on a scene (see the header). InputError as analyze_scene, and for iterations or
