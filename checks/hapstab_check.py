@@ -2757,21 +2757,31 @@ def check_multidof_feasible(c):
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
 
 
-def check_multidof_facial(c):
-    """Paper 000's (16) infeasible by the facial conditions: every admissible X has X E(1) symmetric
-    (the witness kind's (a)); when g_a E(1)_ij = g_b E(1)_ji for all i < j has only g = 0, no X does."""
+def infeasibility_parts(c, by):
+    """(model, evidence, T, n, E, g) of a multi-DOF certificate claiming (16) infeasible, exactly; or
+    the refutation when it claims (16) feasible (`by` proves only infeasibility)."""
     model, claim, ev = parts(c)
     only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
     only(claim, ("status", "feasible"), "claim")
-    only(ev, (), "evidence")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: must be \"exact\"")
     if not isinstance(claim.get("feasible"), bool):
         raise Malformed("claim.feasible: missing or not true/false")
     if claim["feasible"]:
-        return False, "the claim is that (16) is feasible; the facial conditions prove only infeasibility"
+        return None, "the claim is that (16) is feasible; %s proves only infeasibility" % by
     T, n = period(model), delay_of(model)
     E, g = env_entries(model, T, parameters(model))
+    return (model, ev, T, n, E, g), None
+
+
+def check_multidof_facial(c):
+    """Paper 000's (16) infeasible by the facial conditions: every admissible X has X E(1) symmetric
+    (the witness kind's (a)); when g_a E(1)_ij = g_b E(1)_ji for all i < j has only g = 0, no X does."""
+    got, refuted = infeasibility_parts(c, "the facial conditions")
+    if refuted:
+        return False, refuted
+    model, ev, T, n, E, g = got
+    only(ev, (), "evidence")
     m = len(E)
     witness_levels(model, m)
     owner = operator_owner(model, m)
@@ -2810,17 +2820,10 @@ def check_multidof_witness(c):
     > 0 by (14)); X E(1) must be symmetric (else phi -> -inf as theta -> 0+, E-hat ~ (T/2)(1 - j
     cot(theta/2)) E(1)), which for a symmetric E(1) makes g equal on operators E(1) couples; the
     evidence holds when phi_c <= 0 on every such group and < 0 on one (phi_X = sum g_c phi_c < 0)."""
-    model, claim, ev = parts(c)
-    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
-    only(claim, ("status", "feasible"), "claim")
-    if claim.get("status") != "exact":
-        raise Malformed("claim.status: must be \"exact\"")
-    if not isinstance(claim.get("feasible"), bool):
-        raise Malformed("claim.feasible: missing or not true/false")
-    if claim["feasible"]:
-        return False, "the claim is that (16) is feasible; a witness proves only infeasibility"
-    T, n = period(model), delay_of(model)
-    E, g = env_entries(model, T, parameters(model))
+    got, refuted = infeasibility_parts(c, "a witness")
+    if refuted:
+        return False, refuted
+    model, ev, T, n, E, g = got
     m = len(E)
     delta = witness_levels(model, m)
     ops = model.get("operators")

@@ -36,14 +36,8 @@ size_t rank_of(std::vector<std::vector<rational>> rows, size_t cols) {
 
 Verdict check_multidof_facial(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
-  only_fields(p.claim, {"status", "feasible"}, "claim");
+  if (auto refuted = infeasibility_claim(p, "the facial conditions")) return {false, *refuted};
   only_fields(p.evidence, {}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
-    throw InputError("claim.feasible: missing or not a boolean");
-  if (p.claim.at("feasible").get<bool>())
-    return {false, "the claim is that (16) is feasible; the facial conditions can only prove it infeasible"};
   const PeriodDelay pd = read_period_delay(p.model);
   const Environment env = read_environment(p.model, pd.T, pd.n);
   const size_t m = env.E.size();

@@ -142,6 +142,16 @@ long environment_degree(const Environment& e) {
   return e.perturb_C.empty() ? d : d * static_cast<long>(e.E.size());
 }
 
+std::optional<std::string> infeasibility_claim(const Parts& p, const std::string& by) {
+  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
+  only_fields(p.claim, {"status", "feasible"}, "claim");
+  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
+    throw InputError("claim.feasible: missing or not a boolean");
+  if (p.claim.at("feasible").get<bool>()) return "the claim is that (16) is feasible; " + by + " can only prove it infeasible";
+  return std::nullopt;
+}
+
 std::optional<Cq> entry_at(const Environment& e, const TransferFunction& H, const Cq& z) {
   if (e.var == 'z') {
     const Cq d = horner(H.den(), z);

@@ -13,10 +13,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/check/certificate.hpp"
 #include "hapstab/check/gaussian_rational.hpp"
 #include "hapstab/lti/tf.hpp"
 
 namespace hapstab::check::multidof_model {
+
+using detail::Parts;
 
 constexpr size_t max_dofs = 512;
 
@@ -32,6 +35,10 @@ struct Environment {
 
 /// model.environment {domain, method, gain, E} with model.set's parameters; InputError naming the field.
 Environment read_environment(const nlohmann::json& model, const rational& T, long n);
+/// A certificate claiming (16) infeasible: its model's fields known, claim.status "exact" and
+/// claim.feasible a boolean (InputError otherwise); the refutation when it claims (16) feasible,
+/// which `by` (a witness, the facial conditions) can only prove false; nullopt when it claims infeasible.
+std::optional<std::string> infeasibility_claim(const Parts& p, const std::string& by);
 /// E_ij(z) of an entry as written, exactly, or nullopt at a pole (its denominator as parsed vanishes).
 /// An s-entry N(s)/D(s) is sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k) at s = sigma/tau,
 /// d = max degree (sigma = z - 1, tau = T z; Tustin 2(z - 1), T(z + 1)): exact at s = infinity too.

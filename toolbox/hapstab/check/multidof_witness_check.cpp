@@ -68,13 +68,7 @@ std::vector<WitnessPoint> witness_points(const nlohmann::json& ev, size_t m) {
 
 Verdict check_multidof_witness(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
-  only_fields(p.claim, {"status", "feasible"}, "claim");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
-    throw InputError("claim.feasible: missing or not a boolean");
-  if (p.claim.at("feasible").get<bool>())
-    return {false, "the claim is that (16) is feasible; a witness can only prove it infeasible"};
+  if (auto refuted = infeasibility_claim(p, "a witness")) return {false, *refuted};
   const PeriodDelay pd = read_period_delay(p.model);
   const Environment env = read_environment(p.model, pd.T, pd.n);
   const size_t m = env.E.size();
