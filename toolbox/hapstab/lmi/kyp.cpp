@@ -135,7 +135,9 @@ KypPoint kyp_interior_point(const KypData& d, double floor_rel) {
     none.detail = kp.detail;
   }
   none.riccati_solves = solves;
-  none.detail = "no delta in [" + std::to_string(hi * floor_rel) + ", " + std::to_string(start) + "] works; last: " + none.detail;
+  std::ostringstream range;  // (std::to_string printed both ends as 0.000000)
+  range << "no delta in [" << hi * floor_rel << ", " << start << "] works; last: ";
+  none.detail = range.str() + none.detail;
   return none;
 }
 
