@@ -317,7 +317,7 @@ void write_report_md(const ReportInput& in, const fs::path& dir) {
         if (r.paper == paper)
           md << "| " << code("examples/" + r.file) << " | " << cell(r.claim) << " | " << code("hapstab " + r.command) << " | "
              << cell(r.expected.empty() ? "runs" : r.expected) << " | " << cell(r.got) << " | "
-             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error))  << " | " << scene_certificate(r, in.certificates, false) << " |\n";
+             << (r.ok ? "as expected" : "**FAILS**: " + cell(r.error)) << " | " << scene_certificate(r, in.certificates, false) << " |\n";
     }
     for (const auto& f : in.figures)
       if (f.paper == paper) {

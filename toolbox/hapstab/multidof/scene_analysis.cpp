@@ -50,26 +50,32 @@ std::string delay_text(const SceneProblem& sp) {
 
 std::string SceneAnalysis::verdict() const { return lmi::to_string(lmi::feasibility_of(lmis.verdict.outcome)); }
 
+namespace {
+struct PremiseState {
+  bool some_fails = false, some_undecided = false;
+};
+PremiseState premise_state(const std::vector<AssumptionCheck>& premises) {
+  PremiseState s;
+  for (const auto& p : premises) {
+    s.some_fails = s.some_fails || p.verdict.fails();
+    s.some_undecided = s.some_undecided || !p.verdict.decided();
+  }
+  return s;
+}
+}  // namespace
+
 bool SceneDesign::undecided() const {
   if (ok() || !contradiction.empty() || !feasible) return false;
-  bool some_undecided = false;
-  for (const auto& p : premises) {
-    if (p.verdict.fails()) return false;
-    some_undecided = some_undecided || !p.verdict.holds();
-  }
-  return some_undecided;
+  const PremiseState s = premise_state(premises);
+  return !s.some_fails && s.some_undecided;
 }
 
 bool SceneAnalysis::undecided() const {
   if (ok() || as_written_unstable()) return false;
-  bool some_undecided = false;
-  for (const auto& p : premises) {
-    if (p.verdict.fails()) return false;  // a premise fails: no conclusion, whatever (16) is
-    some_undecided = some_undecided || !p.verdict.holds();
-  }
-  if (!certified) return true;  // (16) not proven either way
-  if (!feasible) return false;  // (16) proven infeasible: Theorem 5 does not conclude
-  return some_undecided;
+  const PremiseState s = premise_state(premises);
+  if (s.some_fails) return false;  // a premise fails: no conclusion, whatever (16) is
+  if (!certified) return true;     // (16) not proven either way
+  return feasible && s.some_undecided;  // (16) proven infeasible: Theorem 5 does not conclude
 }
 
 SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& opt) {
