@@ -283,3 +283,48 @@ TEST(CmdMultidof, GenericSdpBeyondItsWorkLimitIsSkippedAndUndecided) {
   EXPECT_EQ(h.code, 3);
   EXPECT_NE(verdict_line(h.out).find("the LMIs (16) are undecided"), std::string::npos) << h.out;
 }
+
+// Issue 48 item 2: (16) split by the permutations of identical DOFs (multidof/symmetry.hpp). The
+// split's verdict is the whole program's; its lifted point is a point of the whole's (16) on a
+// realisation of the whole's E-hat, which both checkers verify as any multidof-feasible
+// certificate (neither knows of the split); an almost symmetric scene and a scene whose block is
+// infeasible go to the whole program, the reason named in the plan.
+TEST(CmdMultidof, SymmetricSceneSplitsAndLiftsItsPoint) {
+  const std::string s = scene29("symmetric_contact_6.toml");
+  const auto j = nlohmann::json::parse(run("multidof analyze --json --scene " + s).out);
+  EXPECT_EQ(j["path"], "symmetry") << j["plan"].dump();
+  EXPECT_EQ(j["symmetry"]["group"], "S_2^2 (2 classes of 2 identical DOFs, 2 DOFs alone)") << j["symmetry"].dump();
+  EXPECT_EQ(j["symmetry"]["classes"].dump(), "[[0,4],[1,5],[2],[3]]");
+  ASSERT_EQ(j["symmetry"]["blocks"].size(), 3u);
+  EXPECT_EQ(j["symmetry"]["blocks"][0]["dofs"], 4);  // the fixed space: one DOF per class
+  EXPECT_EQ(j["symmetry"]["blocks"][1]["copies"], 1);
+  const auto whole = nlohmann::json::parse(run("multidof analyze --json --no-symmetry --scene " + s).out);
+  EXPECT_EQ(whole["symmetry"], nullptr);
+  EXPECT_EQ(whole["verdict"], j["verdict"]);
+  EXPECT_EQ(whole["certified"], j["certified"]);
+  EXPECT_EQ(j["verdict"], "feasible");
+  const std::string cert = ::testing::TempDir() + "symmetric6.json";
+  std::remove(cert.c_str());
+  // exit 1: (16) is feasible, but the scene's own loop (no coupling) is proven NOT stable
+  ASSERT_EQ(run("multidof analyze --quiet --scene " + s + " --certificate " + cert).code, 1);
+  const auto c = run("check --explain " + cert);
+  EXPECT_EQ(c.code, 0) << c.out;
+  EXPECT_NE(c.out.find("verified: (16) feasible"), std::string::npos) << c.out;
+  const std::string py = "/usr/bin/python3 " + std::string(HAPSTAB_SOURCE_DIR) + "/checks/hapstab_check.py " + cert;
+  EXPECT_EQ(std::system((py + " > /dev/null").c_str()), 0) << py;
+  // almost symmetric: contact 5 stiffer than contact 1; the others still split
+  const auto a = nlohmann::json::parse(run("multidof analyze --json --set k5=501 --scene " + s).out);
+  EXPECT_EQ(a["symmetry"]["group"], "S_2 (1 class of 2 identical DOFs, 4 DOFs alone)") << a["symmetry"].dump();
+  EXPECT_EQ(a["verdict"], "feasible");
+  // a block infeasible (the contact behind 2 samples): the whole program decides, the split named
+  const std::string delayed = tmp_scene("symmetric6_delay.toml", read(s) + "\n[delay]\nsamples = \"2\"\n");
+  const auto d = nlohmann::json::parse(run("multidof analyze --json --scene " + delayed).out);
+  EXPECT_NE(d["path"], "symmetry");
+  EXPECT_EQ(d["plan"][0]["path"], "symmetry of identical DOFs");
+  EXPECT_EQ(d["plan"][0]["fate"], "did not decide");
+  EXPECT_NE(d["plan"][0]["why"].get<std::string>().find("the split decides only a feasible (16)"), std::string::npos)
+      << d["plan"][0].dump();
+  const auto dw = nlohmann::json::parse(run("multidof analyze --json --no-symmetry --scene " + delayed).out);
+  EXPECT_EQ(d["verdict"], dw["verdict"]);
+  EXPECT_EQ(d["certified"], dw["certified"]);
+}

@@ -18,7 +18,9 @@
 //   loop: multidof/loop_as_written.hpp), witness and weighted_witness (the frequency-domain
 //   witnesses of (16)'s infeasibility, or null), hidden_modes
 //   [{block, kind, where, abs|re, stable}] (sim/hidden_modes.hpp), delay (n of [delay] z^-n, folded
-//   into E), certified, verdict, certificate, gamma (gamma_i of Gamma), x (the g_i of X), q_v,
+//   into E), symmetry (null, or {group, classes, blocks [{name, copies, dofs, states, path, verdict,
+//   certified, seconds}]}: (16) split by the permutations of identical DOFs, multidof/symmetry.hpp),
+//   certified, verdict, certificate, gamma (gamma_i of Gamma), x (the g_i of X), q_v,
 //   delta_v_required, margin, facial_reduction, least_dissipative {q_v, norm, delta_v, gamma,
 //   point_certified, minimality (numeric: only the point is checked exactly)}, assumptions [{name,
 //   holds, outcome (holds|fails|undecided), certified, detail}] (Assumption 1, then the premises on
@@ -56,6 +58,7 @@
 #include "cli/command.hpp"
 #include "cli/figure.hpp"
 #include "cli/multidof_certificate.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "cli/progress.hpp"
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/multidof/example.hpp"
@@ -72,7 +75,7 @@ struct Opts {
   std::string scene, backend = "auto", certificate;
   double duration = 10;
   std::vector<std::string> sets;
-  bool json = false, quiet = false;
+  bool json = false, quiet = false, no_symmetry = false;
   int iterations = 40;
 };
 
@@ -167,6 +170,20 @@ json plan_json(const std::vector<multidof::PlanStep>& plan) {
 }
 
 // How the scene split (multidof/components.hpp): one entry per independent component.
+json symmetry_json(const multidof::AnalysisResult& r) {
+  if (!r.symmetry) return nullptr;
+  json blocks = json::array();
+  for (const auto& b : r.symmetry->blocks)
+    blocks.push_back({{"name", b.name}, {"copies", b.copies}, {"dofs", b.problem.structure.m()},
+                      {"states", b.problem.E.states()}, {"path", b.result.path},
+                      {"verdict", lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome))},
+                      {"certified", b.result.verdict.proven()},
+                      {"seconds", b.result.seconds}});
+  json classes = json::array();
+  for (const auto& c : r.symmetry->classes) classes.push_back(c);
+  return {{"group", r.symmetry->group}, {"classes", classes}, {"blocks", blocks}};
+}
+
 json components_json(const multidof::AnalysisResult& r) {
   json a = json::array();
   for (const auto& c : r.components)
@@ -212,6 +229,7 @@ int run_analyze(const Opts& o) {
       if (const std::string why = multidof_certificate_premise(sc); !why.empty())
         throw InputError("--certificate: " + why + ": no certificate");
     opt.stage = [&progress](const std::string& name) { progress.stage(name); };
+    opt.symmetry = !o.no_symmetry;
     return multidof::analyze_scene(sc, opt);
   }();
   if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
@@ -239,6 +257,7 @@ int run_analyze(const Opts& o) {
          {"path", r.path},
          {"plan", plan_json(r.plan)},
          {"components", components_json(r)},
+         {"symmetry", symmetry_json(r)},
          {"witness", multidof::frequency_witness_json(r.witness)},
          {"weighted_witness", multidof::weighted_witness_json(r.weighted_witness)},
          {"assumptions", assumptions_json(a.premises)},
@@ -270,6 +289,12 @@ int run_analyze(const Opts& o) {
                 << to_string(c.verdict.status) << "] by the " << (c.path.empty() ? "(no)" : c.path) << " path, " << c.seconds
                 << " s\n";
     }
+    if (r.symmetry)
+      for (const auto& b : r.symmetry->blocks)
+        std::cout << "    block: " << b.name << ", E of order " << b.problem.E.states() << ": "
+                  << lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) << " ["
+                  << to_string(b.result.verdict.status) << "] by the "
+                  << b.result.path << " path, " << b.result.seconds << " s\n";
     if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "\n";
     if (feasible) {
       std::cout << "  one feasible point (" << (r.solver_detail.find("Riccati") == std::string::npos ? "the SDP solver's" : "the Riccati equation's") << "): Gamma = sqrt(X): gamma =";
@@ -464,11 +489,15 @@ const Register multidof_cmd({"multidof",
                                  sub->add_flag("--quiet", o->quiet, "No progress on stderr (shown for runs longer than 2 s)");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
                                  sub->add_option("--backend", o->backend, "SDP back-end: auto (default: the built-in IPM, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
-                                 if (nm == "analyze")
+                                 if (nm == "analyze") {
                                    sub->add_option("--certificate", o->certificate,
                                                    "write the certificate of (16)'s verdict (JSON: feasible, its exact point; "
-                                                   "infeasible, its frequency witness) to FILE, for `hapstab check FILE` "
-                                                   "(a decomposed scene has no kind yet: refused, exit 2; docs/certificates.md)");
+                                                   "infeasible, its frequency witness or the facial conditions) to FILE, for "
+                                                   "`hapstab check FILE` (docs/certificates.md)");
+                                   sub->add_flag("--no-symmetry", o->no_symmetry,
+                                                 "solve (16) whole, not split by the permutations of identical DOFs (the same "
+                                                 "verdict, for comparison; docs/multidof.md)");
+                                 }
                                  if (std::string(name) == "design")
                                    sub->add_option("--iterations", o->iterations, "Maximum CCL iterations (default 40)");
                                  sub->callback([mode, name]() { *mode = name; });

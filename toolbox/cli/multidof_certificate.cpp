@@ -130,76 +130,14 @@ nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis
           {"operators", operators}};
 }
 
-// The point of (16) with the realisation of E-hat it is on: the whole's, or, for a scene decided per
-// component, the direct sum of the components' (E is block diagonal over their DOFs, so the direct
-// sum of their E-hat realisations, B's columns and C's rows placed at their DOFs, realises the
-// whole's E-hat, and blockdiag(P_c) with X, Q_E, Q_V assembled at the DOFs is a point of the whole's
-// (16): its M1 and (14) are, up to a permutation, the components'). The checkers verify it whole.
-struct Storage {
-  multidof::ExactStorage st;
-  MatQ X, QE, QV;
-};
-
-Storage point_of(const multidof::SceneAnalysis& a) {
-  const auto& pb = a.scene.problem;
-  const auto& r = a.lmis;
-  if (r.exact_point) return {multidof::exact_storage(pb, *r.exact_point), r.exact_point->X, r.exact_point->QE, r.exact_point->QV};
-  const std::vector<multidof::Component> comps = multidof::components(pb);
-  const Eigen::Index m = pb.structure.m();
-  std::vector<multidof::ExactStorage> parts;
-  Eigen::Index N = 0;
-  for (size_t k = 0; k < comps.size(); ++k) {
-    if (k >= r.components.size() || r.components[k].dofs != comps[k].dofs)  // (the analysis split the same way)
-      throw InputError("--certificate: the components of the scene do not match its analysis': no certificate");
-    parts.push_back(multidof::exact_storage(comps[k].problem, *r.components[k].exact_point));
-    N += parts.back().Ehat.A.rows();
-  }
-  Storage out;
-  auto& E = out.st.Ehat;
-  E.T = pb.E.T;
-  E.A = MatQ::Zero(N, N), E.B = MatQ::Zero(N, m), E.C = MatQ::Zero(m, N), E.D = MatQ::Zero(m, m), out.st.P = MatQ::Zero(N, N);
-  out.X = out.QE = out.QV = MatQ::Zero(m, m);
-  Eigen::Index at = 0;
-  for (size_t k = 0; k < comps.size(); ++k) {
-    const auto& s = parts[k];
-    const auto& x = *r.components[k].exact_point;
-    const auto& d = comps[k].dofs;
-    const Eigen::Index n = s.Ehat.A.rows();
-    E.A.block(at, at, n, n) = s.Ehat.A;
-    out.st.P.block(at, at, n, n) = s.P;
-    for (size_t i = 0; i < d.size(); ++i) {
-      const auto I = static_cast<Eigen::Index>(i);
-      E.B.block(at, d[i], n, 1) = s.Ehat.B.col(I);
-      E.C.block(d[i], at, 1, n) = s.Ehat.C.row(I);
-      for (size_t j = 0; j < d.size(); ++j) {
-        const auto J = static_cast<Eigen::Index>(j);
-        E.D(d[i], d[j]) = s.Ehat.D(I, J);
-        out.X(d[i], d[j]) = x.X(I, J);
-        out.QE(d[i], d[j]) = x.QE(I, J);
-        out.QV(d[i], d[j]) = x.QV(I, J);
-      }
-    }
-    at += n;
-  }
-  return out;
-}
-
-bool has_point(const multidof::AnalysisResult& r) {
-  if (r.exact_point) return true;
-  if (r.components.empty()) return false;
-  for (const auto& c : r.components)
-    if (!c.exact_point) return false;
-  return true;
-}
-
-// (16) feasible: the exact point and the realisation of E-hat it is on
-nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
-  const auto& pb = a.scene.problem;
-  if (pb.E.states() + 2 * pb.E.inputs() > 160)  // E-hat: E's states and one integrator per DOF
-    throw InputError("--certificate: E-hat has " + std::to_string(pb.E.states() + pb.E.inputs()) + " states and " +
-                     std::to_string(pb.E.inputs()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
-  const Storage sto = point_of(a);
+// (16) feasible: the exact point and the realisation of E-hat it is on (multidof::stored_point:
+// the whole's, the direct sum of the components' or the lift of the symmetric blocks'; the
+// checkers verify it whole)
+nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a, const multidof::StoredPoint& sto) {
   const multidof::ExactStorage& st = sto.st;
+  if (st.Ehat.A.rows() + st.Ehat.B.cols() > 160)  // (16)'s first LMI has order N + m
+    throw InputError("--certificate: E-hat's realisation has " + std::to_string(st.Ehat.A.rows()) + " states and " +
+                     std::to_string(st.Ehat.B.cols()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
   nlohmann::json j = certificate_header("multidof-feasible");
   j["model"] = scene_model(sc, a);
   j["claim"] = {{"status", "exact"}, {"feasible", true}};
@@ -216,7 +154,8 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   const auto& r = a.lmis;
   if (const std::string why = multidof_certificate_premise(sc); !why.empty())
     throw InputError("--certificate: " + why + ": no certificate");
-  if (a.feasible && a.certified && has_point(r)) return feasible_certificate(sc, a);
+  if (a.feasible && a.certified)
+    if (const auto point = multidof::stored_point(a.scene.problem, r)) return feasible_certificate(sc, a, *point);
   if (!a.feasible && a.certified && r.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
     nlohmann::json j = certificate_header("multidof-facial");
     j["model"] = scene_model(sc, a);

@@ -29,6 +29,7 @@
 // Implements: paper 000 (14), (16), Theorem 4, Theorem 5.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -139,6 +140,8 @@ struct WeightedWitness {
 };
 
 
+struct SymmetryResult;  // symmetry.hpp
+
 struct AnalysisResult {
   Verdict verdict;                  ///< (16) feasible; evidence: what was proven, in words
   double margin = 0;                ///< margin of the strict LMIs (lmi equilibrated coordinates); structured
@@ -161,6 +164,7 @@ struct AnalysisResult {
   std::optional<FrequencyWitness> witness;  ///< set when the frequency-domain witness decided
   std::optional<WeightedWitness> weighted_witness;  ///< set when the several-frequency witness decided
   std::optional<ExactPoint> exact_point;  ///< set when a point passed the exact re-check (not decomposed)
+  std::shared_ptr<const SymmetryResult> symmetry;  ///< set when the split by identical DOFs decided (path "symmetry")
   double seconds = 0;      ///< wall time of analyze()
   double sdp_seconds = 0;  ///< ... of it in the numeric searches (lmi::solve, Riccati equations; the rest: Ê,
                            ///< facial reduction, exact checks); decomposed: their share of the wall time
@@ -172,6 +176,16 @@ struct ExactStorage {
   MatQ P;
 };
 ExactStorage exact_storage(const Problem& pb, const ExactPoint& x);
+
+/// The exact point of a feasible result on a realisation of E-hat, with X, Q_E, Q_V: the point
+/// itself (exact_storage), the block-diagonal assembly of the components' (components.hpp) or the
+/// lift of the symmetric blocks' (symmetry.hpp); nullopt when the result holds none. What
+/// `multidof analyze --certificate` writes.
+struct StoredPoint {
+  ExactStorage st;
+  MatQ X, QE, QV;
+};
+std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult& r);
 
 /// full: the margin program (16) in (P, X, Q_E, Q_V), then the least dissipative coupling.
 /// stability_only: only Theorem 5's verdict, certified, from a smaller program (used by the

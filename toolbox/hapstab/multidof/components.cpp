@@ -3,6 +3,7 @@
 
 #include <numeric>
 
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::multidof {
@@ -130,6 +131,50 @@ std::string component_name(const Problem& whole, const Component& c) {
     s += (i ? ", " : "") + whole.structure.operators[static_cast<size_t>(c.operators[i])].name;
   }
   return s + "} (" + std::to_string(c.dofs.size()) + " DOF, " + std::to_string(c.states.size()) + " states)";
+}
+
+std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult& r) {
+  if (r.exact_point) return StoredPoint{exact_storage(pb, *r.exact_point), r.exact_point->X, r.exact_point->QE, r.exact_point->QV};
+  if (r.symmetry) return lift_point(*r.symmetry, pb.structure.m());
+  if (r.components.empty()) return std::nullopt;
+  const std::vector<Component> comps = components(pb);
+  const Eigen::Index m = pb.structure.m();
+  std::vector<ExactStorage> parts;
+  Eigen::Index N = 0;
+  for (size_t k = 0; k < comps.size(); ++k) {
+    if (k >= r.components.size() || r.components[k].dofs != comps[k].dofs || !r.components[k].exact_point)
+      return std::nullopt;  // (the analysis split another way, or a component holds no point)
+    parts.push_back(exact_storage(comps[k].problem, *r.components[k].exact_point));
+    N += parts.back().Ehat.A.rows();
+  }
+  StoredPoint out;
+  auto& E = out.st.Ehat;
+  E.T = pb.E.T;
+  E.A = MatQ::Zero(N, N), E.B = MatQ::Zero(N, m), E.C = MatQ::Zero(m, N), E.D = MatQ::Zero(m, m), out.st.P = MatQ::Zero(N, N);
+  out.X = out.QE = out.QV = MatQ::Zero(m, m);
+  Eigen::Index at = 0;
+  for (size_t k = 0; k < comps.size(); ++k) {
+    const auto& s = parts[k];
+    const auto& x = *r.components[k].exact_point;
+    const auto& d = comps[k].dofs;
+    const Eigen::Index n = s.Ehat.A.rows();
+    E.A.block(at, at, n, n) = s.Ehat.A;
+    out.st.P.block(at, at, n, n) = s.P;
+    for (size_t i = 0; i < d.size(); ++i) {
+      const auto I = static_cast<Eigen::Index>(i);
+      E.B.block(at, d[i], n, 1) = s.Ehat.B.col(I);
+      E.C.block(d[i], at, 1, n) = s.Ehat.C.row(I);
+      for (size_t j = 0; j < d.size(); ++j) {
+        const auto J = static_cast<Eigen::Index>(j);
+        E.D(d[i], d[j]) = s.Ehat.D(I, J);
+        out.X(d[i], d[j]) = x.X(I, J);
+        out.QE(d[i], d[j]) = x.QE(I, J);
+        out.QV(d[i], d[j]) = x.QV(I, J);
+      }
+    }
+    at += n;
+  }
+  return out;
 }
 
 }  // namespace hapstab::multidof

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hapstab/lmi/certify.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interrupt.hpp"
 #include "hapstab/scene/schema.hpp"
@@ -78,6 +79,21 @@ bool SceneAnalysis::undecided() const {
   return feasible && s.some_undecided;  // (16) proven infeasible: Theorem 5 does not conclude
 }
 
+AnalysisResult analyze_scene_lmis(const SceneProblem& sp, const lmi::Options& opt, bool symmetry) {
+  std::string why_not;
+  std::optional<SymmetryResult> split;
+  if (symmetry) split = split_problem(sp, why_not);
+  if (split) {
+    const std::string group = split->group;
+    if (auto r = analyze_by_symmetry(sp, std::move(*split), opt, why_not)) return std::move(*r);
+    why_not = "the split by " + group + " did not decide: " + why_not;
+  }
+  AnalysisResult r = analyze(sp.problem, opt);
+  if (!why_not.empty()) r.plan.insert(r.plan.begin(), PlanStep{"symmetry of identical DOFs", split ? "did not decide" : "skipped", why_not});
+  else if (!symmetry) r.plan.insert(r.plan.begin(), PlanStep{"symmetry of identical DOFs", "skipped", "--no-symmetry"});
+  return r;
+}
+
 SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& opt) {
   const auto t0 = Clock::now();
   SceneAnalysis a;
@@ -89,7 +105,7 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
   a.scene = problem_from_scene(sc, SceneUse::analyze);
   a.seconds.realisation = opt.load_seconds + since(t0);
   stage("Theorem 5's LMIs (16) and their certificate");
-  a.lmis = analyze(a.scene.problem, opt.lmi);
+  a.lmis = analyze_scene_lmis(a.scene, opt.lmi, opt.symmetry);
   a.feasible = a.lmis.verdict.holds();
   a.certified = a.lmis.verdict.proven();
   const auto t1 = Clock::now();

@@ -5,7 +5,9 @@
 // analyze_scene, Theorem 5:
 //   1. what `multidof analyze` does not model is refused by name (scene::check_command), then the
 //      scene becomes a Problem (scene_multidof.hpp: E reduced, [delay] folded in, hidden modes);
-//   2. the LMIs (16) with an exact certificate (analysis.hpp);
+//   2. the LMIs (16) with an exact certificate (analysis.hpp): first split by the permutations of
+//      identical DOFs where the scene has them (symmetry.hpp: small blocks, their points lifted),
+//      else, or where a block is not proven feasible, the whole program;
 //   3. the premises (scene_premises): Assumption 1 on the reduced blocks, then the blocks' hidden
 //      modes as written;
 //   4. the scene's own loop decided as written (loop_as_written.hpp; step 2 of it needs 3).
@@ -57,6 +59,7 @@ struct SceneAnalysisOptions {
   lmi::Options lmi;
   double load_seconds = 0;  ///< time the caller spent reading the scene: counted in realisation and total
   StageHook stage;
+  bool symmetry = true;     ///< split (16) by the permutations of identical DOFs (symmetry.hpp); false: the whole program
 };
 
 struct SceneAnalysis {
@@ -82,6 +85,10 @@ struct SceneAnalysis {
   /// conclusion").
   bool undecided() const;
 };
+
+/// Step 2 alone: (16) by the symmetric split when `symmetry` and it decides, else the whole
+/// program; the plan's first step says which and why.
+AnalysisResult analyze_scene_lmis(const SceneProblem& sp, const lmi::Options& opt, bool symmetry = true);
 
 /// Theorem 5 on a scene (see the header). InputError for what the scene does not model or an
 /// inconsistent scene (scene_multidof.hpp), naming the scene.

@@ -1,5 +1,6 @@
-// hapstab/stability/symmetry.hpp -- internal to stability/: the loop as written split by the
-// permutations of its identical DOFs (issue 48 item 2), for loop_as_written.cpp.
+// hapstab/stability/symmetry.hpp -- the loop as written split by the permutations of its
+// identical DOFs (issue 48 item 2), for loop_as_written.cpp; multidof/symmetry.hpp splits
+// Theorem 5's (16) by the same classes and blocks.
 //
 // A loop of N one-DOF devices under an environment E (N x N, discrete) whose DOFs fall into
 // classes C_1 .. C_r of identical ones -- the same device, the same one-port operator (or none),

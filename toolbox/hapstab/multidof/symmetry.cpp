@@ -1,0 +1,229 @@
+// hapstab/multidof/symmetry.cpp -- see symmetry.hpp.
+#include "hapstab/multidof/symmetry.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "hapstab/lmi/certify.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/stability/symmetry.hpp"
+
+namespace hapstab::multidof {
+
+namespace {
+
+/// The one-DOF operator of each DOF (the structure's operator index); nullopt (why) when an
+/// operator has more than one DOF.
+std::optional<std::vector<int>> operator_of_dof(const Structure& st, std::string& why) {
+  std::vector<int> of;
+  for (size_t k = 0; k < st.operators.size(); ++k) {
+    if (st.operators[k].dof != 1) {
+      why = "operator '" + st.operators[k].name + "' has " + std::to_string(st.operators[k].dof) +
+            " DOFs (X = g I over them: the split needs one multiplier per DOF)";
+      return std::nullopt;
+    }
+    of.push_back(static_cast<int>(k));
+  }
+  return of;
+}
+
+/// A block's problem: these DOFs' operators (one per class: its first DOF), E reduced and delayed
+/// as the whole's is (scene_multidof.hpp).
+Problem block_problem(const SceneProblem& sp, const std::vector<int>& op_of, const std::vector<int>& dofs,
+                      const StateSpace<rational>& E) {
+  Problem pb;
+  for (int i : dofs) pb.structure.operators.push_back(sp.problem.structure.operators[static_cast<size_t>(op_of[static_cast<size_t>(i)])]);
+  pb.E = minreal(E);
+  if (sp.delay > 0) pb.E = minreal(delayed(pb.E, sp.delay));
+  return pb;
+}
+
+rational osp_of(const Operator& op) { return op.devices.at(0).osp(0, 0); }
+
+/// h_j(i) of symmetry.hpp for class `c` (its DOFs in order): 1 before position j, -j at j.
+rational helmert(const std::vector<int>& c, size_t j, int dof) {
+  for (size_t l = 0; l <= j; ++l)
+    if (c[l] == dof) return l < j ? rational(1) : rational(-static_cast<long>(j));
+  return rational(0);
+}
+
+}  // namespace
+
+std::optional<SymmetryResult> split_problem(const SceneProblem& sp, std::string& why_not) {
+  why_not.clear();
+  if (sp.problem.qv_block_diagonal) {
+    why_not = "Q_V block diagonal (Remark 3): a lifted Q_V is not diagonal";
+    return std::nullopt;
+  }
+  const auto op_of = operator_of_dof(sp.problem.structure, why_not);
+  if (!op_of) return std::nullopt;
+  const auto loop = stability::detail::split_by_symmetry(sp.loop, why_not);
+  if (!loop) return std::nullopt;
+  SymmetryResult s;
+  s.classes = loop->classes;
+  s.group = loop->group();
+  const auto& ops = sp.problem.structure.operators;
+  for (const auto& c : s.classes)
+    for (int i : c)
+      if (osp_of(ops[static_cast<size_t>((*op_of)[static_cast<size_t>(i)])]) !=
+          osp_of(ops[static_cast<size_t>((*op_of)[static_cast<size_t>(c[0])])])) {
+        why_not = "the OSP levels of DOFs " + std::to_string(c[0] + 1) + " and " + std::to_string(i + 1) +
+                  " differ although their devices are alike (multidof.osp)";
+        return std::nullopt;
+      }
+  std::vector<int> firsts;
+  for (const auto& c : s.classes) firsts.push_back(c[0]);
+  SymmetryBlock f;
+  f.name = "the fixed space (" + std::to_string(firsts.size()) + " DOF, one per class)";
+  f.problem = block_problem(sp, *op_of, firsts, *loop->fixed.environment);
+  s.blocks.push_back(std::move(f));
+  for (size_t k = 0; k < loop->standard.size(); ++k) {
+    const int a = loop->standard_class[k];
+    SymmetryBlock b;
+    b.cls = a;
+    b.copies = static_cast<int>(s.classes[static_cast<size_t>(a)].size()) - 1;
+    b.name = "class " + std::to_string(a + 1) + "'s zero-sum space (1 DOF, " + std::to_string(b.copies) +
+             (b.copies == 1 ? " copy)" : " copies)");
+    b.problem = block_problem(sp, *op_of, {s.classes[static_cast<size_t>(a)][0]}, *loop->standard[k].environment);
+    s.blocks.push_back(std::move(b));
+  }
+  return s;
+}
+
+std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, SymmetryResult split, const lmi::Options& opt,
+                                                  std::string& why_not) {
+  const auto t0 = std::chrono::steady_clock::now();
+  double sdp = 0;
+  for (SymmetryBlock& b : split.blocks) {
+    try {
+      b.result = analyze(b.problem, opt);
+    } catch (const InputError& e) {  // the block's own premise (its size, E's stability): the whole decides
+      why_not = b.name + ": " + e.what();
+      return std::nullopt;
+    }
+    sdp += b.result.sdp_seconds;
+    if (!(b.result.verdict.holds() && b.result.verdict.proven() && stored_point(b.problem, b.result))) {
+      why_not = b.name + ": " + lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) + " [" +
+                to_string(b.result.verdict.status) + "] (" + b.result.verdict.evidence.substr(0, 160) +
+                "...); the split decides only a feasible (16)";
+      return std::nullopt;
+    }
+  }
+  const int m = sp.problem.structure.m();
+  const StoredPoint lifted = lift_point(split, m);
+  AnalysisResult res;
+  std::ostringstream ev;
+  ev << "feasible by the symmetry " << split.group << ": the program splits into " << split.blocks.size()
+     << " blocks whose points lift to one point of the whole (multidof/symmetry.hpp), each re-checked exactly:";
+  for (const auto& b : split.blocks)
+    ev << " " << b.name << " by the " << b.result.path << " path" << (&b == &split.blocks.back() ? "" : ";");
+  res.verdict = {Outcome::holds, Status::exact, ev.str()};
+  res.path = "symmetry";
+  res.plan.push_back({"symmetry of identical DOFs", "decided", ""});
+  res.solver_detail = "split by " + split.group + "; " + split.blocks[0].name + ": " + split.blocks[0].result.solver_detail;
+  res.facial.E1 = MatQ();
+  res.facial.symmetric_possible = true;
+  res.facial.explanation = "facial reduction per block (the fixed space: " + split.blocks[0].result.facial.explanation + ")";
+  res.X = to_double(lifted.X);
+  res.Q_E = to_double(lifted.QE);
+  res.Q_V = to_double(lifted.QV);
+  res.gamma.resize(static_cast<size_t>(m));
+  res.gamma_sqrt.resize(static_cast<size_t>(m));
+  Eigen::MatrixXd Gi = Eigen::MatrixXd::Zero(m, m);
+  for (int i = 0; i < m; ++i) {
+    res.gamma[static_cast<size_t>(i)] = res.X(i, i);
+    res.gamma_sqrt[static_cast<size_t>(i)] = std::sqrt(res.X(i, i));
+    Gi(i, i) = 1 / res.gamma_sqrt[static_cast<size_t>(i)];
+  }
+  res.delta_V = Gi * res.Q_V * Gi;
+  res.margin = split.blocks[0].result.margin;
+  for (const auto& b : split.blocks) res.margin = std::min(res.margin, b.result.margin);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.sdp_seconds = sdp;
+  res.symmetry = std::make_shared<const SymmetryResult>(std::move(split));
+  return res;
+}
+
+StoredPoint lift_point(const SymmetryResult& s, int m) {
+  const size_t r = s.classes.size();
+  std::vector<int> class_of(static_cast<size_t>(m), -1);
+  for (size_t c = 0; c < r; ++c)
+    for (int i : s.classes[c]) class_of[static_cast<size_t>(i)] = static_cast<int>(c);
+  const SymmetryBlock& fb = s.blocks.at(0);
+  const StoredPoint f = *stored_point(fb.problem, fb.result);
+  // sigma = max(1, max_c k_c / gamma_c): g_c = sigma gamma_c / k_c >= 1
+  rational sigma(1);
+  std::vector<rational> g(r);
+  for (size_t c = 0; c < r; ++c) {
+    const rational k(static_cast<long>(s.classes[c].size()));
+    if (k / f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c)) > sigma)
+      sigma = k / f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c));
+  }
+  for (size_t c = 0; c < r; ++c)
+    g[c] = sigma * f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c)) / rational(static_cast<long>(s.classes[c].size()));
+  // the standard blocks' points, and the order of the whole realisation
+  std::vector<std::optional<StoredPoint>> std_pt(r);
+  Eigen::Index n = f.st.Ehat.A.rows();
+  for (size_t k = 1; k < s.blocks.size(); ++k) {
+    const auto& b = s.blocks[k];
+    std_pt[static_cast<size_t>(b.cls)] = *stored_point(b.problem, b.result);
+    n += std_pt[static_cast<size_t>(b.cls)]->st.Ehat.A.rows() * b.copies;
+  }
+  StoredPoint out;
+  auto& E = out.st.Ehat;
+  E.T = f.st.Ehat.T;
+  E.A = MatQ::Zero(n, n), E.B = MatQ::Zero(n, m), E.C = MatQ::Zero(m, n), E.D = MatQ::Zero(m, m);
+  out.st.P = MatQ::Zero(n, n);
+  out.X = out.QE = out.QV = MatQ::Zero(m, m);
+  // the fixed block: states first
+  const Eigen::Index nf = f.st.Ehat.A.rows();
+  E.A.topLeftCorner(nf, nf) = f.st.Ehat.A;
+  out.st.P.topLeftCorner(nf, nf) = sigma * f.st.P;
+  for (int i = 0; i < m; ++i) {
+    const auto c = static_cast<Eigen::Index>(class_of[static_cast<size_t>(i)]);
+    const rational kc(static_cast<long>(s.classes[static_cast<size_t>(c)].size()));
+    E.B.block(0, i, nf, 1) = f.st.Ehat.B.col(c) / kc;
+    E.C.block(i, 0, 1, nf) = f.st.Ehat.C.row(c);
+    out.X(i, i) = g[static_cast<size_t>(c)];
+    for (int k = 0; k < m; ++k) {
+      const auto d = static_cast<Eigen::Index>(class_of[static_cast<size_t>(k)]);
+      const rational kd(static_cast<long>(s.classes[static_cast<size_t>(d)].size()));
+      E.D(i, k) = f.st.Ehat.D(c, d) / kd;
+      out.QE(i, k) = sigma * f.QE(c, d) / (kc * kd);
+      out.QV(i, k) = sigma * f.QV(c, d) / (kc * kd);
+    }
+  }
+  // each class's zero-sum copies: states h_j (j = 1..k_a - 1), scaled by t_aj = g_a j (j + 1) / gamma_a
+  Eigen::Index at = nf;
+  for (size_t a = 0; a < r; ++a) {
+    if (!std_pt[a]) continue;
+    const StoredPoint& p = *std_pt[a];
+    const auto& cls = s.classes[a];
+    const Eigen::Index na = p.st.Ehat.A.rows();
+    const rational ka(static_cast<long>(cls.size())), gamma = p.X(0, 0), ratio = g[a] / gamma;
+    for (size_t j = 1; j < cls.size(); ++j) {
+      const rational jj(static_cast<long>(j * (j + 1)));
+      E.A.block(at, at, na, na) = p.st.Ehat.A;
+      out.st.P.block(at, at, na, na) = (ratio * jj) * p.st.P;
+      for (size_t l = 0; l <= j; ++l) {
+        const int i = cls[l];
+        const rational h = helmert(cls, j, i);
+        E.B.block(at, i, na, 1) = p.st.Ehat.B.col(0) * (h / jj);
+        E.C.block(i, at, 1, na) = p.st.Ehat.C.row(0) * h;
+      }
+      at += na;
+    }
+    // D, Q_E, Q_V on the class: (value) (delta_ik - 1/k_a), summed over the copies in closed form
+    for (int i : cls)
+      for (int k : cls) {
+        const rational w = (i == k ? rational(1) : rational(0)) - 1 / ka;
+        E.D(i, k) += p.st.Ehat.D(0, 0) * w;
+        out.QE(i, k) += ratio * p.QE(0, 0) * w;
+        out.QV(i, k) += ratio * p.QV(0, 0) * w;
+      }
+  }
+  return out;
+}
+
+}  // namespace hapstab::multidof
