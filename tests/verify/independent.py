@@ -84,12 +84,16 @@ import argparse
 import collections
 import math
 import os
+import pathlib
 import random
+import subprocess
 import sys
+import tempfile
 import time
 from fractions import Fraction as Q
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 
 import mpmath as mp  # noqa: E402
 
@@ -866,6 +870,76 @@ BRANCHES_SYMMETRY = [  # compared verdicts
 ]
 
 
+def case_symmetry16(rng):
+    """`multidof analyze --scene S` (Theorem 5's (16)) on `symmetry`'s scenes made Theorem 5's:
+    every device a mass-damper with b > 0 (OSP: Assumption 1(a)) and an operator on every DOF, the
+    classes as drawn there (issue 48 item 2: (16) split by multidof/symmetry.hpp)."""
+    c = case_symmetry(rng)
+    fresh, ops = {}, {}
+    devices = []
+    for d, o in zip(c["devices"], c["ops"]):
+        if id(d) not in fresh:  # one new device (and operator) per class: the classes stay alike
+            fresh[id(d)] = dict(kind="md", m=d["m"], b=d["b"] if d["kind"] == "md" and d["b"] > 0 else IL.rq(rng, 0.5, 5))
+            ops[id(d)] = o if o is not None else IL.rq(rng, 0.5, 5)
+        devices.append(fresh[id(d)])
+    c["ops"] = [ops[id(d)] for d in c["devices"]]
+    c["devices"] = devices
+    c["tags"]["first class"] = "mass-damper"
+    return c
+
+
+def check_symmetry16(c, exe, timeout):
+    text = IL.scene_toml(c)
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_symmetry16_") as f:
+        f.write(text)
+    cert = f.name[:-5] + ".json"
+    args = ["multidof", "analyze", "--scene", f.name, "--quiet"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    rcw, jw, errw, dtw = run_hapstab(exe, args + ["--no-symmetry"], timeout)
+    if (j or {}).get("path") == "symmetry":  # its certificate: the lifted point (else another kind, or none yet)
+        run_hapstab(exe, args + ["--certificate", cert], timeout)
+    tags = dict(c["tags"])
+    tags["hapstab path"] = "symmetry" if (j or {}).get("path") == "symmetry" else "whole"
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=text, args=args)
+    v, vw = (j or {}).get("verdict"), (jw or {}).get("verdict")
+    cw = bool((jw or {}).get("certified"))
+    tags["whole program"] = f"{vw} ({'certified' if cw else 'numeric'})"
+    out["ref_text"] = f"--no-symmetry: exit {rcw}, {tags['whole program']}"
+    if rc == "timeout" or rcw == "timeout":
+        out["outcome"] = "timeout"
+    elif j is None or jw is None:
+        out.update(outcome="refused" if rc == 2 else "MISS", why=why_of(err, j) or f"exit {rc}")
+    elif tags["hapstab path"] == "whole":
+        same = v == vw and j.get("certified") == jw.get("certified")
+        out.update(outcome="agree" if same else "MISS",
+                   why="" if same else f"not split: {v} ({j.get('certified')}), --no-symmetry {vw} ({cw})")
+    elif v != "feasible" or not j.get("certified"):
+        out.update(outcome="MISS", why=f"the split decided {v} (certified {j.get('certified')}): it decides only a certified feasible")
+    elif vw == "infeasible" and cw:
+        out.update(outcome="MISS", why="the split is feasible, the whole program certified infeasible")
+    elif not os.path.exists(cert):
+        out.update(outcome="MISS", why="a certified feasible verdict without its certificate")
+    else:  # the lifted point, checked by both checkers (neither knows of the split)
+        ck = subprocess.run([exe, "check", cert], capture_output=True, text=True)
+        py = subprocess.run([sys.executable, str(ROOT / "checks" / "hapstab_check.py"), cert], capture_output=True, text=True)
+        tags["independent checker"] = {0: "verified", 3: "beyond its size limit"}.get(py.returncode, "refuted")
+        if ck.returncode != 0 or py.returncode not in (0, 3):
+            out.update(outcome="MISS", why=f"the lifted point: hapstab check exit {ck.returncode} ({ck.stdout.strip()[:200]}); "
+                                           f"the independent checker exit {py.returncode} ({py.stdout.strip()[:200]})")
+        else:
+            out["outcome"] = "agree"
+    if os.path.exists(cert) and out["outcome"] != "MISS":
+        os.unlink(cert)
+    keep_scene_if_missed(out, f.name)
+    return out
+
+
+BRANCHES_SYMMETRY16 = [  # compared cases
+    ("hapstab path", "symmetry", 0.25), ("independent checker", "verified", 0.15), ("N", "16-32", 0.05),
+    ("classes", "3", 0.1), ("a class of one", True, 0.05), ("delay", "1", 0.05),
+]
+
+
 BRANCHES_SCENE = [  # compared cases: a supremum, or an exit 3's "stable on [a, b]" (checked at 5 points of it)
     ("stable at small g", True, 0.2), ("stable at small g", False, 0.05),
     ("first device", "unstable ss", 0.1), ("crossing", "complex", 0.05), ("delay", "0", 0.3),
@@ -1283,6 +1357,7 @@ CRITERIA = {
     "scene_coupling": (case_scene_coupling, check_scene_coupling, BRANCHES_SCENE_COUPLING),
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
     "symmetry": (case_symmetry, check_symmetry, BRANCHES_SYMMETRY),
+    "symmetry16": (case_symmetry16, check_symmetry16, BRANCHES_SYMMETRY16),
     "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
     "witness": (case_witness, check_witness, BRANCHES_WITNESS),
     "coupling_witness": (case_coupling_witness, check_coupling_witness, BRANCHES_COUPLING_WITNESS),
