@@ -88,14 +88,15 @@ def compact_scene(n, delay=0, chain=1):
 
 if __name__ == '__main__':
     ap = argparse.ArgumentParser(description='the contact scenes of issues 15 and 39')
-    ap.add_argument('N', type=int, help='devices (1..256)')
+    ap.add_argument('N', type=int, help='devices (1..256 written out, 1..4096 with --compact)')
     ap.add_argument('--objects', type=int, default=1, help='separate virtual objects (1..N)')
     ap.add_argument('--delay', type=int, default=0, help='network delay in samples')
     ap.add_argument('--chain', type=int, default=1, help='masses per object, in a chain (1..32)')
     ap.add_argument('--compact', action='store_true', help='say the repetition once (count, list parameters; one object)')
     a = ap.parse_args()
-    if not 1 <= a.N <= 256 or not 1 <= a.objects <= a.N or a.delay < 0 or not 1 <= a.chain <= 32:
-        sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C]   (1 <= K <= N <= 256, D >= 0, 1 <= C <= 32)')
+    if not 1 <= a.N <= (4096 if a.compact else 256) or not 1 <= a.objects <= a.N or a.delay < 0 or not 1 <= a.chain <= 32:
+        sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] [--compact]   (1 <= K <= N <= 256, '
+                 'N <= 4096 with --compact, D >= 0, 1 <= C <= 32)')
     if a.compact and a.objects != 1:
         sys.exit('bench/contact_scene.py: --compact writes one object (its E is one diagonal and one off-diagonal entry); drop --objects')
     sys.stdout.write(compact_scene(a.N, a.delay, a.chain) if a.compact else scene(a.N, a.objects, a.delay, a.chain))

@@ -2694,15 +2694,18 @@ def check_multidof_feasible(c):
         raise Malformed("claim.feasible: missing or not true/false")
     if not claim["feasible"]:
         return False, "the claim is that (16) is infeasible; a point proves only feasibility"
+    Araw, Draw = ev.get("A"), ev.get("D")
+    if not isinstance(Araw, list):
+        raise Malformed("evidence.A: missing or not a matrix")
+    N = len(Araw)
+    if isinstance(Draw, list) and N + len(Draw) > MAX_FEASIBLE_ORDER:  # before the model is parsed (its m x m entries)
+        raise TooLarge("evidence.A: order %d with m = %d (D's rows), above this checker's limit N + m <= %d" % (
+            N, len(Draw), MAX_FEASIBLE_ORDER))
     T, n = period(model), delay_of(model)
     E, g = env_entries(model, T, parameters(model))
     m = len(E)
     delta = witness_levels(model, m)
     owner = operator_owner(model, m)
-    Araw = ev.get("A")
-    if not isinstance(Araw, list):
-        raise Malformed("evidence.A: missing or not a matrix")
-    N = len(Araw)
     if N + m > MAX_FEASIBLE_ORDER:
         raise TooLarge("evidence.A: order %d with m = %d, above this checker's limit N + m <= %d" % (N, m, MAX_FEASIBLE_ORDER))
     A, B, C, D = frac_matrix(ev, "A", N, N), frac_matrix(ev, "B", N, m), frac_matrix(ev, "C", m, N), frac_matrix(ev, "D", m, m)
