@@ -312,6 +312,17 @@ TEST(CmdMultidof, SymmetricSceneSplitsAndLiftsItsPoint) {
   EXPECT_NE(c.out.find("verified: (16) feasible"), std::string::npos) << c.out;
   const std::string py = "/usr/bin/python3 " + std::string(HAPSTAB_SOURCE_DIR) + "/checks/hapstab_check.py " + cert;
   EXPECT_EQ(std::system((py + " > /dev/null").c_str()), 0) << py;
+  // a compact scene (diagonal / off_diagonal, list parameters): its model written out entry by
+  // entry, the lists by value (scene::environment_expressions), its lifted point verified by both
+  const std::string compact = ::testing::TempDir() + "contact8.json";
+  std::remove(compact.c_str());
+  ASSERT_EQ(run("multidof analyze --quiet --scene " + scene29("contact_8_identical.toml") + " --certificate " + compact).code, 1);
+  EXPECT_EQ(run("check " + compact).code, 0);
+  EXPECT_EQ(std::system(("/usr/bin/python3 " + std::string(HAPSTAB_SOURCE_DIR) + "/checks/hapstab_check.py " + compact +
+                         " > /dev/null").c_str()), 0);
+  const auto cj = nlohmann::json::parse(read(compact));
+  EXPECT_EQ(cj["model"]["environment"]["E"].size(), 8u);
+  EXPECT_EQ(cj["model"]["environment"]["E"][0][1].get<std::string>().find('['), std::string::npos);
   // almost symmetric: contact 5 stiffer than contact 1; the others still split
   const auto a = nlohmann::json::parse(run("multidof analyze --json --set k5=501 --scene " + s).out);
   EXPECT_EQ(a["symmetry"]["group"], "S_2 (1 class of 2 identical DOFs, 4 DOFs alone)") << a["symmetry"].dump();

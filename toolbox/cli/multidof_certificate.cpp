@@ -17,27 +17,6 @@ namespace {
 
 const toml::table* environment_table(const scene::Scene& sc) { return sc.root["environment"].as_table(); }
 
-// The environment's expressions as written: `tf` a string (one DOF) or an m x m array of strings.
-std::optional<std::vector<std::vector<std::string>>> written_entries(const toml::table& env) {
-  const toml::node* tf = env.get("tf");
-  if (!tf) return std::nullopt;
-  if (const auto* s = tf->as_string()) return std::vector<std::vector<std::string>>{{s->get()}};
-  const auto* rows = tf->as_array();
-  if (!rows) return std::nullopt;
-  std::vector<std::vector<std::string>> E;
-  for (const auto& r : *rows) {
-    const auto* row = r.as_array();
-    if (!row) return std::nullopt;
-    E.emplace_back();
-    for (const auto& e : *row) {
-      const auto* s = e.as_string();
-      if (!s) return std::nullopt;
-      E.back().push_back(s->get());
-    }
-  }
-  return E;
-}
-
 // A mass-damper 1/(m s + b) (one DOF): (m, b), exactly as the scene reader realised it.
 std::optional<std::pair<rational, rational>> mass_damper(const sim::DeviceBlock& dev) {
   if (!dev.mass || dev.dofs() != 1 || dev.G.states() != 1) return std::nullopt;
@@ -65,11 +44,7 @@ rational gain_of(const scene::Scene& sc, const toml::table& env) {
 std::string multidof_certificate_premise(const scene::Scene& sc) {
   const toml::table* env = environment_table(sc);
   if (!env) return "the scene has no [environment]";
-  const auto E = written_entries(*env);
-  if (!E) return "the environment is not given by `tf` expressions (an `ss` or `diagonal` environment has no certificate kind yet)";
-  for (const auto& row : *E)
-    for (const auto& e : row)
-      if (e.find('[') != std::string::npos) return "an environment entry names a list parameter ('" + e + "')";
+  if (!scene::environment_expressions(sc)) return "the environment is given by `ss`, not by expressions (no certificate kind yet)";
   const auto md = scene::multidof_values(sc);
   if (md.qv_block_diagonal)
     return "multidof.qv_block_diagonal = true restricts Q_V, which the certificate kinds take free (Remark 3): a "
@@ -95,7 +70,7 @@ nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis
   const toml::table& env = *environment_table(sc);
   nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))},
                    {"gain", gain_of(sc, env).str()},
-                   {"E", *written_entries(env)}};
+                   {"E", *scene::environment_expressions(sc)}};  // compact entries written out, lists by value
   if (e["domain"] == "s") e["method"] = env["method"].value_or(std::string());
   nlohmann::json set = nlohmann::json::object();
   for (const auto& [k, v] : sc.parameters) set[k] = v.str();

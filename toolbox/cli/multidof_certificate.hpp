@@ -20,8 +20,9 @@
 namespace hapstab::cli {
 
 /// "" when the scene's model can be written in a multidof certificate (either kind), else why not
-/// (checked before the analysis runs): an environment given by `ss` or `diagonal`, a
-/// `perturb_C`, `qv_block_diagonal = true`, a device whose OSP level is a certified bound rather than exact or declared.
+/// (checked before the analysis runs): an environment given by `ss`, `qv_block_diagonal = true`,
+/// a device whose OSP level is a certified bound rather than exact or declared. A compact
+/// environment (diagonal / off_diagonal, list parameters) is written out (scene::environment_expressions).
 std::string multidof_certificate_premise(const scene::Scene& sc);
 
 /// The certificate of `a`'s verdict on (16): feasible (its exact point) or infeasible by a

@@ -580,6 +580,7 @@ Scene parse_scene(const std::string& text, const std::string& file, const std::m
   read_scene_header(root, c, sc);
   read_parameters(root, overrides, c);
   sc.parameters = c.params;
+  sc.lists = c.lists;
   read_devices(root, c, sc.loop);
   read_operators(root, c, sc.loop);
   sc.loop.environment = read_discrete_block(root, "environment", c);
@@ -601,6 +602,28 @@ Scene load_scene(const std::string& path, const std::map<std::string, rational>&
   const std::string text = report::read_input_file(path, "the scene file", kSceneBytes);
   auto dir = std::filesystem::path(path).parent_path();
   return parse_scene(text, path, overrides, dir.empty() ? "." : dir.string());
+}
+
+std::optional<std::vector<std::vector<std::string>>> environment_expressions(const Scene& sc) {
+  const toml::table* env = sc.root["environment"].as_table();
+  if (!env) return std::nullopt;
+  Reader c;
+  c.file = sc.file;
+  c.T = sc.T;
+  c.params = sc.parameters;
+  c.lists = sc.lists;
+  c.N = sc.loop.dofs();
+  std::optional<toml::table> expanded;
+  if (env->contains("diagonal") || env->contains("off_diagonal")) expanded = expand_matrix(*env, "environment", c);
+  const toml::node* tf = (expanded ? *expanded : *env).get("tf");
+  if (!tf) return std::nullopt;  // an `ss` environment
+  std::vector<std::vector<std::string>> E;
+  if (const auto* one = tf->as_string()) return std::vector<std::vector<std::string>>{{c.expand(one->get(), "environment.tf")}};
+  for (const auto& r : *tf->as_array()) {
+    E.emplace_back();
+    for (const auto& e : *r.as_array()) E.back().push_back(c.expand(*e.value<std::string>(), "environment.tf"));
+  }
+  return E;
 }
 
 }  // namespace hapstab::scene

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <toml++/toml.h>
 
@@ -39,10 +40,17 @@ struct Scene {
   std::string name, description;
   rational T = 0;
   std::map<std::string, rational> parameters;
+  std::map<std::string, std::vector<rational>> lists;  ///< list parameters (docs/scene.md, "Repeated blocks")
   sim::LoopSpec loop;
   SimulateSection simulate;
   toml::table root;  ///< the whole file (checked against the schema), for sections other modules read
 };
+
+/// The [environment]'s entries as expressions of T and the scalar parameters, exactly what the
+/// reader realised: `tf` as written, or diagonal / off_diagonal written out entry by entry, each
+/// list parameter's NAME[k] and sum(NAME) replaced by its exact value; nullopt for an `ss`
+/// environment or none. (A certificate's model holds them: cli/multidof_certificate.cpp.)
+std::optional<std::vector<std::vector<std::string>>> environment_expressions(const Scene& sc);
 
 /// Parses and validates a scene file. `overrides` replace [parameters] (CLI --set).
 Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides = {});
