@@ -160,23 +160,27 @@ class Loop:
         self._np_cache = None
 
     def M_mp(self, K):
-        K = mp.mpf(K)
+        return self._assemble(mp.mpf(K), mp.zeros, lambda a, b: a * b, mp.mpf,
+                              self.Phi, self.Gam, self.Cy, self.blocks)
+
+    def _assemble(self, K, zeros, mul, num, Phi, Gam, Cy, blocks):
+        """M(K) from the blocks, in mpmath (M_mp) or in double (M_np): the same assembly."""
         N, npl, m, n = self.N, self.np_, self.m, self.n
-        M = mp.zeros(N, N)
+        M = zeros(N, N)
         # controller output h = sum_b w_b (C_b xc_b + D_b Cy x), w = 1 for 'fixed', K for 'gain'
         # rows: h as a linear map of the state (1 x N per force)
-        H = mp.zeros(m, N)
+        H = zeros(m, N)
         off = npl
-        for (A, B, C, D, w) in self.blocks:
-            wk = K if w == "K" else mp.mpf(w)
-            r = A.rows
-            DC = D * self.Cy
+        for (A, B, C, D, w) in blocks:
+            wk = K if w == "K" else num(w)
+            r = A.rows if hasattr(A, "rows") else A.shape[0]
+            DC = mul(D, Cy)
             for i in range(m):
                 for j in range(npl):
                     H[i, j] += wk * DC[i, j]
                 for j in range(r):
                     H[i, off + j] += wk * C[i, j]
-            BC = B * self.Cy if r else None
+            BC = mul(B, Cy) if r else None
             for i in range(r):
                 for j in range(r):
                     M[off + i, off + j] = A[i, j]
@@ -186,9 +190,9 @@ class Loop:
         # plant rows
         for i in range(npl):
             for j in range(npl):
-                M[i, j] = self.Phi[i, j]
+                M[i, j] = Phi[i, j]
         if n == 0:
-            GH = self.Gam * H
+            GH = mul(Gam, H)
             for i in range(npl):
                 for j in range(N):
                     M[i, j] -= GH[i, j]
@@ -196,7 +200,7 @@ class Loop:
             last = npl + self.nc + (n - 1) * m
             for i in range(npl):
                 for k in range(m):
-                    M[i, last + k] -= self.Gam[i, k]
+                    M[i, last + k] -= Gam[i, k]
             r0 = npl + self.nc
             for k in range(m):
                 for j in range(N):
@@ -208,10 +212,12 @@ class Loop:
 
     def _np_parts(self):
         if self._np_cache is None:
-            M0 = self.M_mp(0)
-            M1 = self.M_mp(1)
-            a = np.array(M0.tolist(), dtype=float)
-            b = np.array(M1.tolist(), dtype=float) - a
+            def f(X):
+                return np.array(X.tolist(), dtype=float).reshape(X.rows, X.cols)
+            blocks = [(f(A), f(B), f(C), f(D), w) for (A, B, C, D, w) in self.blocks]
+            args = (lambda r, c: np.zeros((r, c)), lambda a, b: a @ b, float, f(self.Phi), f(self.Gam), f(self.Cy), blocks)
+            a = self._assemble(0.0, *args)
+            b = self._assemble(1.0, *args) - a
             self._np_cache = (a, b)
         return self._np_cache
 

@@ -638,19 +638,15 @@ def long_crossing_reference(c, loop):
     w = kval(th)
     im = w.imag
     cands = []
-    for i in np.nonzero(np.sign(im[:-1]) * np.sign(im[1:]) < 0)[0]:
-        a, b = th[i], th[i + 1]
-        fa = im[i]
+    idx = np.nonzero(np.sign(im[:-1]) * np.sign(im[1:]) < 0)[0]
+    if len(idx):  # every sign change of Im K(theta) bisected at once, 60 halvings
+        a, b, fa = th[idx], th[idx + 1], im[idx]
         for _ in range(60):
             mid = 0.5 * (a + b)
-            fm = kval(mid)[0].imag
-            if (fm < 0) == (fa < 0):
-                a, fa = mid, fm
-            else:
-                b = mid
-        k = kval(0.5 * (a + b))[0].real
-        if k > 0:
-            cands.append((k, "complex"))
+            fm = kval(mid).imag
+            left = (fm < 0) == (fa < 0)
+            a, fa, b = np.where(left, mid, a), np.where(left, fm, fa), np.where(left, b, mid)
+        cands += [(k, "complex") for k in kval(0.5 * (a + b)).real if k > 0]
     for t, kind in ((1e-12, "z = 1"), (math.pi - 1e-12, "z = -1")):
         k = kval(t)[0]  # K -> 0 there is an open-loop pole on the circle, not a crossing at K > 0
         if np.isfinite(k.real) and k.real > 1e-9 * c["Knom"] and abs(k.imag) < 1e-6 * abs(k.real):
