@@ -327,15 +327,31 @@ TEST(CmdMultidof, SymmetricSceneSplitsAndLiftsItsPoint) {
   const auto a = nlohmann::json::parse(run("multidof analyze --json --set k5=501 --scene " + s).out);
   EXPECT_EQ(a["symmetry"]["group"], "S_2 (1 class of 2 identical DOFs, 4 DOFs alone)") << a["symmetry"].dump();
   EXPECT_EQ(a["verdict"], "feasible");
-  // a block infeasible (the contact behind 2 samples): the whole program decides, the split named
+  // a block infeasible by a witness (the contact behind 2 samples: the fixed space; two linked
+  // walls: the zero-sum space, u lifted to (e_1 - e_2)): the whole is infeasible, the lifted
+  // witness verified by both checkers on the whole scene; the whole program agrees
   const std::string delayed = tmp_scene("symmetric6_delay.toml", read(s) + "\n[delay]\nsamples = \"2\"\n");
-  const auto d = nlohmann::json::parse(run("multidof analyze --json --scene " + delayed).out);
-  EXPECT_NE(d["path"], "symmetry");
-  EXPECT_EQ(d["plan"][0]["path"], "symmetry of identical DOFs");
-  EXPECT_EQ(d["plan"][0]["fate"], "did not decide");
-  EXPECT_NE(d["plan"][0]["why"].get<std::string>().find("the split decides only a feasible (16)"), std::string::npos)
-      << d["plan"][0].dump();
-  const auto dw = nlohmann::json::parse(run("multidof analyze --json --no-symmetry --scene " + delayed).out);
-  EXPECT_EQ(d["verdict"], dw["verdict"]);
-  EXPECT_EQ(d["certified"], dw["certified"]);
+  for (const std::string& sc : {delayed, scene29("symmetric_linked_walls.toml")}) {
+    const auto d = nlohmann::json::parse(run("multidof analyze --json --scene " + sc).out);
+    EXPECT_EQ(d["path"], "symmetry") << sc;
+    EXPECT_EQ(d["verdict"], "infeasible") << sc;
+    const auto dw = nlohmann::json::parse(run("multidof analyze --json --no-symmetry --scene " + sc).out);
+    EXPECT_EQ(dw["verdict"], "infeasible") << sc;
+    EXPECT_EQ(dw["certified"], true) << sc;
+    const std::string wc = ::testing::TempDir() + "symmetric_witness.json";
+    std::remove(wc.c_str());
+    run("multidof analyze --quiet --scene " + sc + " --certificate " + wc);
+    EXPECT_EQ(run("check " + wc).code, 0) << sc;
+    EXPECT_EQ(std::system(("/usr/bin/python3 " + std::string(HAPSTAB_SOURCE_DIR) + "/checks/hapstab_check.py " + wc +
+                           " > /dev/null").c_str()), 0) << sc;
+  }
+  EXPECT_EQ(nlohmann::json::parse(read(::testing::TempDir() + "symmetric_witness.json"))["evidence"]["u"].dump(),
+            "[\"1\",\"-1\"]");
+  // a block infeasible only by a Farkas vector (about its own realisation): the whole program decides
+  const auto f = nlohmann::json::parse(run("multidof analyze --json --scene " + scene29("symmetric_farkas_fallback.toml")).out);
+  EXPECT_NE(f["path"], "symmetry");
+  EXPECT_EQ(f["plan"][0]["path"], "symmetry of identical DOFs");
+  EXPECT_EQ(f["plan"][0]["fate"], "did not decide");
+  EXPECT_NE(f["plan"][0]["why"].get<std::string>().find("Farkas"), std::string::npos) << f["plan"][0].dump();
+  EXPECT_EQ(f["verdict"], "infeasible");
 }

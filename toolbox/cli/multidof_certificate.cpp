@@ -8,6 +8,7 @@
 #include "cli/certificate.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/multidof/components.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/scene/schema.hpp"
 
@@ -131,7 +132,14 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
     throw InputError("--certificate: " + why + ": no certificate");
   if (a.feasible && a.certified)
     if (const auto point = multidof::stored_point(a.scene.problem, r)) return feasible_certificate(sc, a, *point);
-  if (!a.feasible && a.certified && r.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
+  // a symmetric scene decided infeasible by a block: that block's witness or facial condition,
+  // lifted to the whole (multidof/symmetry.hpp), for the checkers to verify on the whole scene
+  const multidof::SymmetryBlock* block = nullptr;
+  if (!a.feasible && a.certified && r.symmetry)
+    for (const auto& b : r.symmetry->blocks)
+      if (b.result.verdict.fails() && b.result.verdict.proven()) block = &b;
+  const multidof::AnalysisResult& decided = block ? block->result : r;
+  if (!a.feasible && a.certified && decided.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
     nlohmann::json j = certificate_header("multidof-facial");
     j["model"] = scene_model(sc, a);
     j["claim"] = {{"status", "exact"}, {"feasible", false}};
@@ -139,7 +147,7 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
     verify_before_writing(j);
     return j;
   }
-  if (!r.witness && !r.weighted_witness) {
+  if (!decided.witness && !decided.weighted_witness) {
     const std::string what = a.feasible && !r.components.empty() ? "a feasible (16) decided per component (decomposed)"
                              : a.feasible   ? "a feasible (16) without a certified point"
                              : a.certified ? "(16) infeasible by the path '" + r.path + "'"
@@ -149,13 +157,18 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   nlohmann::json j = certificate_header("multidof-witness");
   j["model"] = scene_model(sc, a);
   j["claim"] = {{"status", "exact"}, {"feasible", false}};
-  if (r.witness) {
-    j["evidence"] = {{"z_re", r.witness->z_re.str()}, {"z_im", r.witness->z_im.str()}, {"u", strings(r.witness->u)}};
+  const int m = a.scene.problem.structure.m();
+  const auto lift = [&](const std::vector<rational>& u) {
+    return block ? multidof::lift_direction(*r.symmetry, *block, u, m) : u;
+  };
+  if (decided.witness) {
+    j["evidence"] = {{"z_re", decided.witness->z_re.str()}, {"z_im", decided.witness->z_im.str()},
+                     {"u", strings(lift(decided.witness->u))}};
   } else {  // the several-frequency witness: every point with its weight
     nlohmann::json pts = nlohmann::json::array();
-    for (const auto& p : r.weighted_witness->points)
-      pts.push_back({{"z_re", p.z_re.str()}, {"z_im", p.z_im.str()}, {"u", strings(p.u.re)}, {"u_im", strings(p.u.im)},
-                     {"weight", p.weight.str()}});
+    for (const auto& p : decided.weighted_witness->points)
+      pts.push_back({{"z_re", p.z_re.str()}, {"z_im", p.z_im.str()}, {"u", strings(lift(p.u.re))},
+                     {"u_im", strings(lift(p.u.im))}, {"weight", p.weight.str()}});
     j["evidence"] = {{"points", pts}};
   }
   verify_before_writing(j);

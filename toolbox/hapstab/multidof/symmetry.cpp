@@ -91,10 +91,35 @@ std::optional<SymmetryResult> split_problem(const SceneProblem& sp, std::string&
   return s;
 }
 
+namespace {
+
+/// A block's infeasibility that holds for the whole (symmetry.hpp): a witness (one frequency or
+/// several) or the facial conditions -- each a statement about E-hat's transfer matrix, not
+/// about a realisation. A Farkas vector is about the block's realisation only: not lifted.
+bool lifts_infeasibility(const AnalysisResult& r) {
+  return r.verdict.fails() && r.verdict.proven() && (r.witness || r.weighted_witness || r.path == "facial conditions");
+}
+
+}  // namespace
+
+std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBlock& b, const std::vector<rational>& u, int m) {
+  std::vector<rational> out(static_cast<size_t>(m), rational(0));
+  if (b.cls < 0) {  // the fixed space: u's entry of class c on every DOF of c
+    for (size_t c = 0; c < s.classes.size(); ++c)
+      for (int i : s.classes[c]) out[static_cast<size_t>(i)] = u.at(c);
+  } else {  // a class's zero-sum space: u (e_i - e_j), i, j its first two DOFs
+    const auto& cls = s.classes[static_cast<size_t>(b.cls)];
+    out[static_cast<size_t>(cls[0])] = u.at(0);
+    out[static_cast<size_t>(cls[1])] = -u.at(0);
+  }
+  return out;
+}
+
 std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, SymmetryResult split, const lmi::Options& opt,
                                                   std::string& why_not) {
   const auto t0 = std::chrono::steady_clock::now();
   double sdp = 0;
+  const SymmetryBlock* infeasible = nullptr;
   for (SymmetryBlock& b : split.blocks) {
     try {
       b.result = analyze(b.problem, opt);
@@ -103,42 +128,57 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
       return std::nullopt;
     }
     sdp += b.result.sdp_seconds;
+    if (lifts_infeasibility(b.result)) {
+      infeasible = &b;
+      break;
+    }
     if (!(b.result.verdict.holds() && b.result.verdict.proven() && stored_point(b.problem, b.result))) {
       why_not = b.name + ": " + lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) + " [" +
                 to_string(b.result.verdict.status) + "] (" + b.result.verdict.evidence.substr(0, 160) +
-                "...); the split decides only a feasible (16)";
+                "...); the split decides a feasible (16), or an infeasible one by a witness or the facial conditions";
       return std::nullopt;
     }
   }
   const int m = sp.problem.structure.m();
-  const StoredPoint lifted = lift_point(split, m);
   AnalysisResult res;
-  std::ostringstream ev;
-  ev << "feasible by the symmetry " << split.group << ": the program splits into " << split.blocks.size()
-     << " blocks whose points lift to one point of the whole (multidof/symmetry.hpp), each re-checked exactly:";
-  for (const auto& b : split.blocks)
-    ev << " " << b.name << " by the " << b.result.path << " path" << (&b == &split.blocks.back() ? "" : ";");
-  res.verdict = {Outcome::holds, Status::exact, ev.str()};
   res.path = "symmetry";
   res.plan.push_back({"symmetry of identical DOFs", "decided", ""});
-  res.solver_detail = "split by " + split.group + "; " + split.blocks[0].name + ": " + split.blocks[0].result.solver_detail;
-  res.facial.E1 = MatQ();
-  res.facial.symmetric_possible = true;
-  res.facial.explanation = "facial reduction per block (the fixed space: " + split.blocks[0].result.facial.explanation + ")";
-  res.X = to_double(lifted.X);
-  res.Q_E = to_double(lifted.QE);
-  res.Q_V = to_double(lifted.QV);
-  res.gamma.resize(static_cast<size_t>(m));
-  res.gamma_sqrt.resize(static_cast<size_t>(m));
-  Eigen::MatrixXd Gi = Eigen::MatrixXd::Zero(m, m);
-  for (int i = 0; i < m; ++i) {
-    res.gamma[static_cast<size_t>(i)] = res.X(i, i);
-    res.gamma_sqrt[static_cast<size_t>(i)] = std::sqrt(res.X(i, i));
-    Gi(i, i) = 1 / res.gamma_sqrt[static_cast<size_t>(i)];
+  res.facial.symmetric_possible = !infeasible || infeasible->result.path != "facial conditions";
+  if (infeasible) {
+    // whole feasible => for every X = diag(g) of it, phi(z, u) > 0 at every lifted u (symmetry.hpp):
+    // E-hat maps the lifted u as the block does, so the whole's phi is a positive multiple of the
+    // block's at an X the block admits -- which the block's witness makes <= 0
+    res.verdict = {Outcome::fails, Status::exact,
+                   "infeasible by the symmetry " + split.group + ": " + infeasible->name + " is infeasible (" +
+                       infeasible->result.verdict.evidence + "), and a block's witness or facial condition holds for "
+                       "the whole (multidof/symmetry.hpp)"};
+    res.facial.explanation = infeasible->name + ": " + infeasible->result.facial.explanation;
+    res.solver_detail = "split by " + split.group + "; " + infeasible->name + ": " + infeasible->result.solver_detail;
+  } else {
+    const StoredPoint lifted = lift_point(split, m);
+    std::ostringstream ev;
+    ev << "feasible by the symmetry " << split.group << ": the program splits into " << split.blocks.size()
+       << " blocks whose points lift to one point of the whole (multidof/symmetry.hpp), each re-checked exactly:";
+    for (const auto& b : split.blocks)
+      ev << " " << b.name << " by the " << b.result.path << " path" << (&b == &split.blocks.back() ? "" : ";");
+    res.verdict = {Outcome::holds, Status::exact, ev.str()};
+    res.solver_detail = "split by " + split.group + "; " + split.blocks[0].name + ": " + split.blocks[0].result.solver_detail;
+    res.facial.explanation = "facial reduction per block (the fixed space: " + split.blocks[0].result.facial.explanation + ")";
+    res.X = to_double(lifted.X);
+    res.Q_E = to_double(lifted.QE);
+    res.Q_V = to_double(lifted.QV);
+    res.gamma.resize(static_cast<size_t>(m));
+    res.gamma_sqrt.resize(static_cast<size_t>(m));
+    Eigen::MatrixXd Gi = Eigen::MatrixXd::Zero(m, m);
+    for (int i = 0; i < m; ++i) {
+      res.gamma[static_cast<size_t>(i)] = res.X(i, i);
+      res.gamma_sqrt[static_cast<size_t>(i)] = std::sqrt(res.X(i, i));
+      Gi(i, i) = 1 / res.gamma_sqrt[static_cast<size_t>(i)];
+    }
+    res.delta_V = Gi * res.Q_V * Gi;
+    res.margin = split.blocks[0].result.margin;
+    for (const auto& b : split.blocks) res.margin = std::min(res.margin, b.result.margin);
   }
-  res.delta_V = Gi * res.Q_V * Gi;
-  res.margin = split.blocks[0].result.margin;
-  for (const auto& b : split.blocks) res.margin = std::min(res.margin, b.result.margin);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.sdp_seconds = sdp;
   res.symmetry = std::make_shared<const SymmetryResult>(std::move(split));

@@ -27,12 +27,20 @@
 //     and every condition of (16) holds exactly on that realisation (lift_point below; the
 //     lifted point is what `--certificate` writes, and both checkers verify it as any other
 //     multidof-feasible certificate: ctest SceneSymmetry.*, `CertificateExamples`);
-//   whole feasible => blocks feasible: averaging a point over the group keeps it a point
-//     (convexity; X stays diag(g), g >= 1), and an invariant point restricted by the congruence
-//     is a block point. The split decides only "feasible": a block that is not proven feasible
-//     hands the scene to the whole program (planner.hpp), with the block and its verdict named --
-//     never a weaker verdict than the whole program's, and no infeasibility that rests on the
-//     split's realisations.
+//   a block's witness => the whole infeasible, in the frequency domain (no realisation needed):
+//     a point of the whole's (16) with X = diag(g) makes phi(z, u) = Re(u^* X E-hat(z) u) +
+//     u^* Delta X u > 0 at every z on the circle and u != 0 (path_witness.cpp). Lift the block's
+//     u: for class a's block, u (e_i - e_j) (i, j in C_a): E-hat maps it to e-hat_a(z) times
+//     itself, so phi = (g_i + g_j) phi_a(z, u; 1) <= 0. For the fixed block, u_c on every DOF
+//     of class c: phi = phi_f(z, u; diag(G_c)), G_c = sum of g over C_c, and diag(G_c) is an X
+//     the fixed block admits (X E(1) symmetric sums, class block by class block, to diag(G_c)
+//     E_f(1) symmetric), where the block's witness (one frequency, or weighted over several)
+//     makes it <= 0. The facial conditions lift the same way (no X_f admissible, or e_a(1) <= 0
+//     makes h^T X E(1) h <= 0 at a zero-sum h). A Farkas vector speaks of the block's realisation
+//     only: such a block, or one not proven either way, hands the scene to the whole program
+//     (planner.hpp), the block and its verdict named -- never a weaker verdict than the whole's.
+//     `--certificate` writes the lifted witness (lift_direction), which both checkers verify on
+//     the whole scene as any multidof-witness certificate.
 // The blocks are realised from E as written (E_f: the classes' first column blocks, C summed over
 // each class's columns; e_a: column block of i, C_i(i, :) - C_j(i, :)), reduced exactly and
 // delayed as the whole is (scene_multidof.hpp), so each is a realisation of its transfer matrix.
@@ -71,11 +79,15 @@ struct SymmetryResult {
 /// split ("" when no two DOFs are alike).
 std::optional<SymmetryResult> split_problem(const SceneProblem& sp, std::string& why_not);
 
-/// Theorem 5 on sp by the split: every block analysed (analyze()); the whole's result when every
-/// block is proven feasible with an exact point (path "symmetry", `symmetry` set), else nullopt
-/// and `why_not` names the block that was not.
+/// Theorem 5 on sp by the split: every block analysed (analyze()); the whole's result (path
+/// "symmetry", `symmetry` set) when every block is proven feasible with an exact point, or one is
+/// proven infeasible by a witness or its facial conditions; else nullopt and `why_not` names the
+/// block that decided nothing.
 std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, SymmetryResult split, const lmi::Options& opt,
                                                   std::string& why_not);
+
+/// A block's witness direction u lifted to the whole's m DOFs (above).
+std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBlock& b, const std::vector<rational>& u, int m);
 
 /// The lifted point above: a realisation of the whole's E-hat and a point of its (16), exact.
 StoredPoint lift_point(const SymmetryResult& s, int m);
