@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "hapstab/lti/parse.hpp"
@@ -167,6 +168,9 @@ StateSpace<Q> Reader::tf_block(const toml::node& n, const std::string& key, char
   TransferMatrix M;
   M.domain = (var == 's' && !to_z) ? Domain::s : Domain::z;
   M.T = (var == 's' && !to_z) ? Q(0) : T;
+  // entries whose text is the same once the lists are in (a compact matrix's entries between two
+  // classes: N^2 entries, a few distinct texts) are parsed and discretised once
+  std::map<std::string, TransferFunction> seen;
   for (size_t i = 0; i < a->size(); ++i) {
     auto row = (*a)[i].as_array();
     if (!row) fail(key + ".tf", "row " + std::to_string(i) + " is not an array");
@@ -175,10 +179,15 @@ StateSpace<Q> Reader::tf_block(const toml::node& n, const std::string& key, char
       auto s = (*row)[j].as_string();
       const std::string k2 = key + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]";
       if (!s) fail(k2, "expected a string expression");
-      auto tf = tf_of(s->get(), k2, var);
-      if (to_z) tf = to_z(tf);
-      if (!tf.is_proper()) fail(k2, "improper transfer function");
-      M.entries.back().push_back(tf);
+      const std::string text = expand(s->get(), k2);
+      auto hit = seen.find(text);
+      if (hit == seen.end()) {
+        auto tf = tf_of(s->get(), k2, var);
+        if (to_z) tf = to_z(tf);
+        if (!tf.is_proper()) fail(k2, "improper transfer function");
+        hit = seen.emplace(text, std::move(tf)).first;
+      }
+      M.entries.back().push_back(hit->second);
     }
     if (M.entries.back().size() != M.entries.front().size()) fail(key + ".tf", "rows have different lengths");
   }
@@ -288,9 +297,13 @@ std::string Reader::expand(const std::string& text, const std::string& key) cons
       inner.erase(0, inner.find_first_not_of(' '));
       inner.erase(inner.find_last_not_of(' ') + 1);
       if (auto it = lists.find(inner); it != lists.end()) {
-        rational total = 0;
-        for (const auto& v : it->second) total += v;
-        out += "(" + total.str() + ")";
+        auto [sum, fresh] = list_sums.try_emplace(inner);  // once per list: a compact matrix names it N^2 times
+        if (fresh) {
+          rational total = 0;
+          for (const auto& v : it->second) total += v;
+          sum->second = "(" + total.str() + ")";
+        }
+        out += sum->second;
         i = close + 1;
         continue;
       }

@@ -35,6 +35,9 @@ struct Reader {
   /// The long parenthesised groups tf_of has parsed (lti/parse.hpp, ParseMemo: used only where
   /// the names in them still have the values they were parsed with).
   mutable ParseMemo memo;
+  /// sum(NAME) of each list parameter as expand() writes it, computed once (the lists do not
+  /// change once the parameters are read).
+  mutable std::map<std::string, std::string> list_sums;
 
   /// Throws InputError("file: key: what").
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
