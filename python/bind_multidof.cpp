@@ -9,6 +9,7 @@
 
 #include "hapstab/lmi/backend.hpp"
 #include "hapstab/multidof/scene_analysis.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/multidof/witness_json.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "python/binding.hpp"
@@ -104,6 +105,7 @@ py::dict analyze(const std::string& scene, bool is_text, const std::map<std::str
   d["path"] = r.path.empty() ? py::object(py::none()) : py::object(py::str(r.path));
   d["witness"] = from_json(multidof::frequency_witness_json(r.witness));
   d["weighted_witness"] = from_json(multidof::weighted_witness_json(r.weighted_witness));
+  d["symmetry"] = from_json(multidof::symmetry_json(r));
   if (r.min_found) {
     py::dict m;
     m["q_v"] = matrix(r.Q_V_min);

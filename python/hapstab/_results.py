@@ -509,8 +509,9 @@ class Analysis(Result):
     theorem4_witness}), hidden_modes, gamma, x, q_v, delta_v_required (numpy arrays), margin,
     facial_reduction, solver, path, witness and weighted_witness (the exact witnesses of (16)'s
     infeasibility as `multidof analyze --json` prints them, rationals as "p/q" strings, or None;
-    docs/json.md), least_dissipative ({q_v, norm, delta_v, gamma, point_certified, minimality} or
-    None), scene, T, dofs, delay, delay_text, seconds."""
+    docs/json.md), symmetry (None, or {group, classes, blocks}: (16) split by the permutations of
+    identical DOFs, docs/multidof.md), least_dissipative ({q_v, norm, delta_v, gamma,
+    point_certified, minimality} or None), scene, T, dofs, delay, delay_text, seconds."""
 
     _symbol = r"\mathrm{margin}"
     _name = "the LMI margin"

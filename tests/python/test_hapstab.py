@@ -1109,3 +1109,17 @@ def test_array_comparisons_decide_exact_values_exactly():
     assert list(bs.status) == ["exact"] * 3 and bs.lo[0] < 1 <= bs.hi[0]
     assert list(bs < 1) == [True, False, False] and list(bs <= 1) == [True, True, False]
     assert list(bs > 1) == [False, False, True] and list(bs >= 1) == [False, True, True]
+
+
+def test_multidof_symmetry_is_the_commands():
+    # issue 48: (16) split by the permutations of identical DOFs; the blocks come back as
+    # `multidof analyze --json` prints them
+    cli_scenes = Path(__file__).resolve().parents[1] / "cli" / "scenes"
+    a = hapstab.multidof.analyze(cli_scenes / "symmetric_contact_6.toml")
+    code, j = cli("multidof", "analyze", "--scene", str(cli_scenes / "symmetric_contact_6.toml"))
+    assert a.path == j["path"] == "symmetry" and a.feasible and a.certified
+    s = a.symmetry
+    assert s["group"] == j["symmetry"]["group"] and s["classes"] == j["symmetry"]["classes"] == [[0, 4], [1, 5], [2], [3]]
+    assert [b["verdict"] for b in s["blocks"]] == ["feasible"] * 3
+    w = hapstab.multidof.analyze(cli_scenes / "witness_interior_wall.toml")
+    assert w.symmetry is None

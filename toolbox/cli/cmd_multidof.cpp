@@ -170,20 +170,6 @@ json plan_json(const std::vector<multidof::PlanStep>& plan) {
 }
 
 // How the scene split (multidof/components.hpp): one entry per independent component.
-json symmetry_json(const multidof::AnalysisResult& r) {
-  if (!r.symmetry) return nullptr;
-  json blocks = json::array();
-  for (const auto& b : r.symmetry->blocks)
-    blocks.push_back({{"name", b.name}, {"copies", b.copies}, {"dofs", b.problem.structure.m()},
-                      {"states", b.problem.E.states()}, {"path", b.result.path},
-                      {"verdict", lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome))},
-                      {"certified", b.result.verdict.proven()},
-                      {"seconds", b.result.seconds}});
-  json classes = json::array();
-  for (const auto& c : r.symmetry->classes) classes.push_back(c);
-  return {{"group", r.symmetry->group}, {"classes", classes}, {"blocks", blocks}};
-}
-
 json components_json(const multidof::AnalysisResult& r) {
   json a = json::array();
   for (const auto& c : r.components)
@@ -257,7 +243,7 @@ int run_analyze(const Opts& o) {
          {"path", r.path},
          {"plan", plan_json(r.plan)},
          {"components", components_json(r)},
-         {"symmetry", symmetry_json(r)},
+         {"symmetry", multidof::symmetry_json(r)},
          {"witness", multidof::frequency_witness_json(r.witness)},
          {"weighted_witness", multidof::weighted_witness_json(r.weighted_witness)},
          {"assumptions", assumptions_json(a.premises)},

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "hapstab/lmi/certify.hpp"
+#include "hapstab/numeric/result.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/stability/symmetry.hpp"
 
@@ -264,6 +265,20 @@ StoredPoint lift_point(const SymmetryResult& s, int m) {
       }
   }
   return out;
+}
+
+nlohmann::json symmetry_json(const AnalysisResult& r) {
+  if (!r.symmetry) return nullptr;
+  nlohmann::json blocks = nlohmann::json::array();
+  for (const auto& b : r.symmetry->blocks)
+    blocks.push_back({{"name", b.name}, {"copies", b.copies}, {"dofs", b.problem.structure.m()},
+                      {"states", b.problem.E.states()}, {"path", b.result.path},
+                      {"verdict", lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome))},
+                      {"certified", b.result.verdict.proven()},
+                      {"seconds", b.result.seconds}});
+  nlohmann::json classes = nlohmann::json::array();
+  for (const auto& c : r.symmetry->classes) classes.push_back(c);
+  return {{"group", r.symmetry->group}, {"classes", classes}, {"blocks", blocks}};
 }
 
 }  // namespace hapstab::multidof

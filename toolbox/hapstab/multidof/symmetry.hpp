@@ -56,6 +56,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "hapstab/multidof/scene_multidof.hpp"
 
 namespace hapstab::multidof {
@@ -88,6 +90,10 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
 
 /// A block's witness direction u lifted to the whole's m DOFs (above).
 std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBlock& b, const std::vector<rational>& u, int m);
+
+/// JSON `symmetry` of `multidof analyze` and Python's Analysis.symmetry: null, or {group, classes
+/// (0-based DOFs), blocks [{name, copies, dofs, states, path, verdict, certified, seconds}]}.
+nlohmann::json symmetry_json(const AnalysisResult& r);
 
 /// The lifted point above: a realisation of the whole's E-hat and a point of its (16), exact.
 StoredPoint lift_point(const SymmetryResult& s, int m);
