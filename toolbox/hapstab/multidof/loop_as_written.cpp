@@ -4,8 +4,8 @@
 
 namespace hapstab::multidof {
 
-LoopAsWritten decided_loop(const sim::LoopSpec& spec, const std::string& coupling) {
-  const stability::LoopVerdict v = stability::decide_loop(spec);
+LoopAsWritten decided_loop(const sim::LoopSpec& spec, const std::string& coupling, const sim::LoopHiddenModes* hidden) {
+  const stability::LoopVerdict v = stability::decide_loop(spec, stability::Decider::automatic, hidden);
   LoopAsWritten out;
   out.coupling = coupling;
   out.stable = v.stable;
@@ -59,7 +59,7 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
     note = "with a delay the scene's coupling is fed the computed force and the devices the delayed one, a loop "
            "Theorem 4 with z^-n E does not describe";
   }
-  LoopAsWritten out = decided_loop(L, coupling);
+  LoopAsWritten out = decided_loop(L, coupling, &sp.hidden);  // sp.hidden is sim::hidden_modes(sp.loop)
   if (!note.empty()) out.why = note + "; " + out.why;
   out.theorem4_witness = std::move(witness);
   return out;

@@ -46,6 +46,8 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
                               const lmi::Options& opt = {});
 
 /// The same decider on any loop (design's loop with its V): stability::decide_loop, as a LoopAsWritten.
-LoopAsWritten decided_loop(const sim::LoopSpec& spec, const std::string& coupling);
+/// `hidden`: spec's hidden modes when known (the scene's, computed for the premises).
+LoopAsWritten decided_loop(const sim::LoopSpec& spec, const std::string& coupling,
+                           const sim::LoopHiddenModes* hidden = nullptr);
 
 }  // namespace hapstab::multidof

@@ -222,14 +222,14 @@ Loop one_dof_loop(const sim::LoopSpec& L) {
   return loop;
 }
 
-LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider) {
+LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider, const sim::LoopHiddenModes* hidden) {
   LoopVerdict out;
   const std::string nl = sim::nonlinear_parts(spec);
   if (!nl.empty()) {
     out.why = "the loop has " + nl + ", which the Schur test of the linear loop does not model (`hapstab simulate` does)";
     return out;
   }
-  out.hidden = sim::hidden_modes(spec);
+  out.hidden = hidden ? *hidden : sim::hidden_modes(spec);
   if (!out.hidden.stable()) {
     out.stable = false;
     out.status = Status::exact;

@@ -57,7 +57,10 @@ inline constexpr long kExactOrder = 64;
 /// step 3 even for one DOF (the campaigns and the tests compare them).
 enum class Decider { automatic, no_symmetry, matrix };
 
-LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider = Decider::automatic);
+/// `hidden`: the loop's hidden modes when the caller has them already (sim::hidden_modes(spec),
+/// as `multidof analyze` computes them for its premises): step 1 takes them, not a second copy.
+LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider = Decider::automatic,
+                        const sim::LoopHiddenModes* hidden = nullptr);
 
 /// The one-DOF loop of sampled_loop.hpp from a loop spec (one device of one DOF, at most one
 /// operator, an environment): device G(s)/s, operator Z(s) + m s, H = E (the caller puts a
