@@ -6,11 +6,13 @@
 //    k_a - 1 -- the decomposition theorem, checked as a polynomial identity;
 //  - decide_loop with the symmetry and the whole matrix (Decider::matrix) never contradict;
 //  - one entry changed (an almost symmetric loop) falls back to the whole matrix, the entry named.
+#include "hapstab_paths.hpp"  // HAPSTAB_SOURCE_DIR
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/scene/scene.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/symmetry.hpp"
@@ -185,4 +187,43 @@ TEST(LoopSymmetry, AnAlmostSymmetricLoopFallsBackWithTheEntryNamed) {
   const auto v = decide_loop(d.spec);
   EXPECT_NE(v.path, "symmetry");
   EXPECT_NE(v.why.find("no symmetry of identical DOFs used: the environment's entry"), std::string::npos) << v.why;
+}
+
+// The environment's hidden modes by the split (environment_hidden_modes) against the whole's
+// Kalman decompositions (lti::hidden_modes): the same hidden factors, a minimal realisation of the
+// same order and the same transfer matrix -- on the random loops above and on the contact scenes,
+// whose tf realisations hide modes (unobservable, several copies).
+TEST(LoopSymmetry, EnvironmentHiddenModesAsTheWholes) {
+  auto same_transfer = [](const StateSpace<Q>& a, const StateSpace<Q>& b) {
+    const TransferMatrix A = ss2tf(a), B = ss2tf(b);
+    for (size_t i = 0; i < A.entries.size(); ++i)
+      for (size_t j = 0; j < A.entries[i].size(); ++j)
+        for (const Q& z : {Q(2), Q(-3, 7), Q(5, 2)}) {
+          const auto &x = A.entries[i][j], &y = B.entries[i][j];
+          if (x.num()(z) * y.den()(z) != y.num()(z) * x.den()(z)) return false;
+        }
+    return true;
+  };
+  std::vector<LoopSpec> loops;
+  std::mt19937_64 g(4804);
+  for (int k = 0; k < 30; ++k) loops.push_back(draw(g, k % 2 == 0).spec);
+  for (const char* f : {"symmetric_contact_6.toml", "contact_8_identical.toml"})
+    loops.push_back(scene::load_scene(std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/" + f).loop);
+  int compared = 0, hiding = 0;
+  for (size_t k = 0; k < loops.size(); ++k) {
+    SCOPED_TRACE("loop " + std::to_string(k));
+    std::string why;
+    const auto s = split_by_symmetry(loops[k], why);
+    if (!s) continue;
+    const StateSpace<Q>& E = *loops[k].environment;
+    const HiddenModes whole = hidden_modes(E), split = stability::detail::environment_hidden_modes(*s, E);
+    EXPECT_EQ(split.uncontrollable, whole.uncontrollable);
+    EXPECT_EQ(split.unobservable, whole.unobservable);
+    EXPECT_EQ(split.minimal.states(), whole.minimal.states());
+    EXPECT_TRUE(same_transfer(split.minimal, E));
+    ++compared;
+    hiding += whole.any();
+  }
+  EXPECT_GE(compared, 20);
+  EXPECT_GE(hiding, 2);
 }

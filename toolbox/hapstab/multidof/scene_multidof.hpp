@@ -41,6 +41,7 @@
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
 #include "hapstab/sim/hidden_modes.hpp"
+#include "hapstab/stability/symmetry.hpp"
 
 namespace hapstab::multidof {
 
@@ -139,7 +140,11 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
   // the input-output behaviour, valid once the hidden modes are known: multidof::premises)
   sp.loop = sc.loop;
   sp.loop.environment = sp.E_written;
-  const HiddenModes env = hidden_modes(sp.E_written);
+  // by the permutations of identical DOFs where the scene has them (their blocks' Kalman
+  // decompositions, not the whole's: stability/symmetry.hpp environment_hidden_modes)
+  std::string no_split;
+  const auto sym = stability::detail::split_by_symmetry(sp.loop, no_split);
+  const HiddenModes env = sym ? stability::detail::environment_hidden_modes(*sym, sp.E_written) : hidden_modes(sp.E_written);
   sp.hidden = sim::hidden_modes(sp.loop, &env);
   pb.E = env.minimal;  // P has one row per state of the minimal E
   sp.E_undelayed = pb.E;

@@ -42,13 +42,6 @@ Problem block_problem(const SceneProblem& sp, const std::vector<int>& op_of, con
 
 rational osp_of(const Operator& op) { return op.devices.at(0).osp(0, 0); }
 
-/// h_j(i) of symmetry.hpp for class `c` (its DOFs in order): 1 before position j, -j at j.
-rational helmert(const std::vector<int>& c, size_t j, int dof) {
-  for (size_t l = 0; l <= j; ++l)
-    if (c[l] == dof) return l < j ? rational(1) : rational(-static_cast<long>(j));
-  return rational(0);
-}
-
 }  // namespace
 
 std::optional<SymmetryResult> split_problem(const SceneProblem& sp, std::string& why_not) {
@@ -196,70 +189,51 @@ StoredPoint lift_point(const SymmetryResult& s, int m) {
   // sigma = max(1, max_c k_c / gamma_c): g_c = sigma gamma_c / k_c >= 1
   rational sigma(1);
   std::vector<rational> g(r);
+  const auto k_of = [&](size_t c) { return rational(static_cast<long>(s.classes[c].size())); };
   for (size_t c = 0; c < r; ++c) {
-    const rational k(static_cast<long>(s.classes[c].size()));
-    if (k / f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c)) > sigma)
-      sigma = k / f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c));
+    const rational gc = f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c));
+    if (k_of(c) / gc > sigma) sigma = k_of(c) / gc;
   }
-  for (size_t c = 0; c < r; ++c)
-    g[c] = sigma * f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c)) / rational(static_cast<long>(s.classes[c].size()));
-  // the standard blocks' points, and the order of the whole realisation
+  for (size_t c = 0; c < r; ++c) g[c] = sigma * f.X(static_cast<Eigen::Index>(c), static_cast<Eigen::Index>(c)) / k_of(c);
+  // the standard blocks' points; E-hat's realisation: the blocks' put back together
   std::vector<std::optional<StoredPoint>> std_pt(r);
-  Eigen::Index n = f.st.Ehat.A.rows();
+  std::vector<const StateSpace<rational>*> ehat(r, nullptr);
   for (size_t k = 1; k < s.blocks.size(); ++k) {
     const auto& b = s.blocks[k];
     std_pt[static_cast<size_t>(b.cls)] = *stored_point(b.problem, b.result);
-    n += std_pt[static_cast<size_t>(b.cls)]->st.Ehat.A.rows() * b.copies;
+    ehat[static_cast<size_t>(b.cls)] = &std_pt[static_cast<size_t>(b.cls)]->st.Ehat;
   }
   StoredPoint out;
-  auto& E = out.st.Ehat;
-  E.T = f.st.Ehat.T;
-  E.A = MatQ::Zero(n, n), E.B = MatQ::Zero(n, m), E.C = MatQ::Zero(m, n), E.D = MatQ::Zero(m, m);
+  out.st.Ehat = stability::detail::lift_realisation(s.classes, f.st.Ehat, ehat, m);
+  const Eigen::Index n = out.st.Ehat.A.rows(), nf = f.st.Ehat.A.rows();
   out.st.P = MatQ::Zero(n, n);
   out.X = out.QE = out.QV = MatQ::Zero(m, m);
-  // the fixed block: states first
-  const Eigen::Index nf = f.st.Ehat.A.rows();
-  E.A.topLeftCorner(nf, nf) = f.st.Ehat.A;
+  // the fixed block's point scaled by sigma; Q = S^-T Q_b S^-1 there: Q_f(c, d) / (k_c k_d)
   out.st.P.topLeftCorner(nf, nf) = sigma * f.st.P;
   for (int i = 0; i < m; ++i) {
-    const auto c = static_cast<Eigen::Index>(class_of[static_cast<size_t>(i)]);
-    const rational kc(static_cast<long>(s.classes[static_cast<size_t>(c)].size()));
-    E.B.block(0, i, nf, 1) = f.st.Ehat.B.col(c) / kc;
-    E.C.block(i, 0, 1, nf) = f.st.Ehat.C.row(c);
-    out.X(i, i) = g[static_cast<size_t>(c)];
+    const auto c = static_cast<size_t>(class_of[static_cast<size_t>(i)]);
+    out.X(i, i) = g[c];
     for (int k = 0; k < m; ++k) {
-      const auto d = static_cast<Eigen::Index>(class_of[static_cast<size_t>(k)]);
-      const rational kd(static_cast<long>(s.classes[static_cast<size_t>(d)].size()));
-      E.D(i, k) = f.st.Ehat.D(c, d) / kd;
-      out.QE(i, k) = sigma * f.QE(c, d) / (kc * kd);
-      out.QV(i, k) = sigma * f.QV(c, d) / (kc * kd);
+      const auto d = static_cast<size_t>(class_of[static_cast<size_t>(k)]);
+      const auto C = static_cast<Eigen::Index>(c), Dd = static_cast<Eigen::Index>(d);
+      out.QE(i, k) = sigma * f.QE(C, Dd) / (k_of(c) * k_of(d));
+      out.QV(i, k) = sigma * f.QV(C, Dd) / (k_of(c) * k_of(d));
     }
   }
-  // each class's zero-sum copies: states h_j (j = 1..k_a - 1), scaled by t_aj = g_a j (j + 1) / gamma_a
+  // each class's copies (in lift_realisation's order), scaled by t_aj = g_a j (j + 1) / gamma_a;
+  // their Q summed over the copies in closed form: (g_a / gamma_a) q_a (delta_ik - 1/k_a)
   Eigen::Index at = nf;
   for (size_t a = 0; a < r; ++a) {
     if (!std_pt[a]) continue;
     const StoredPoint& p = *std_pt[a];
     const auto& cls = s.classes[a];
     const Eigen::Index na = p.st.Ehat.A.rows();
-    const rational ka(static_cast<long>(cls.size())), gamma = p.X(0, 0), ratio = g[a] / gamma;
-    for (size_t j = 1; j < cls.size(); ++j) {
-      const rational jj(static_cast<long>(j * (j + 1)));
-      E.A.block(at, at, na, na) = p.st.Ehat.A;
-      out.st.P.block(at, at, na, na) = (ratio * jj) * p.st.P;
-      for (size_t l = 0; l <= j; ++l) {
-        const int i = cls[l];
-        const rational h = helmert(cls, j, i);
-        E.B.block(at, i, na, 1) = p.st.Ehat.B.col(0) * (h / jj);
-        E.C.block(i, at, 1, na) = p.st.Ehat.C.row(0) * h;
-      }
-      at += na;
-    }
-    // D, Q_E, Q_V on the class: (value) (delta_ik - 1/k_a), summed over the copies in closed form
+    const rational ratio = g[a] / p.X(0, 0);
+    for (size_t j = 1; j < cls.size(); ++j, at += na)
+      out.st.P.block(at, at, na, na) = (ratio * rational(static_cast<long>(j * (j + 1)))) * p.st.P;
     for (int i : cls)
       for (int k : cls) {
-        const rational w = (i == k ? rational(1) : rational(0)) - 1 / ka;
-        E.D(i, k) += p.st.Ehat.D(0, 0) * w;
+        const rational w = (i == k ? rational(1) : rational(0)) - 1 / k_of(a);
         out.QE(i, k) += ratio * p.QE(0, 0) * w;
         out.QV(i, k) += ratio * p.QV(0, 0) * w;
       }

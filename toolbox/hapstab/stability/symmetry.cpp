@@ -234,6 +234,11 @@ std::optional<LoopSymmetry> split_by_symmetry(const sim::LoopSpec& spec, std::st
   if (s.classes.size() == static_cast<size_t>(N)) return std::nullopt;  // no two DOFs alike: nothing to name
   for (const Block& b : blocks)
     if (!entries_invariant(b, class_of, s.classes.size(), why_not)) return std::nullopt;
+  std::vector<bool> in_column(static_cast<size_t>(spec.environment->states()), false);
+  for (const auto& c : blocks[0].cols)
+    for (Eigen::Index k : c) in_column[static_cast<size_t>(k)] = true;
+  for (Eigen::Index k = 0; k < spec.environment->states(); ++k)
+    if (!in_column[static_cast<size_t>(k)]) s.isolated.push_back(k);
   std::vector<int> firsts;
   for (const auto& c : s.classes) firsts.push_back(c[0]);
   s.fixed = loop_of(spec, *op_of, firsts);
@@ -249,6 +254,90 @@ std::optional<LoopSymmetry> split_by_symmetry(const sim::LoopSpec& spec, std::st
     s.standard_class.push_back(static_cast<int>(a));
   }
   return s;
+}
+
+namespace {
+/// h_j(i) of multidof/symmetry.hpp for class `c` (its DOFs in order): 1 before position j, -j at j.
+rational helmert(const std::vector<int>& c, size_t j, int dof) {
+  for (size_t l = 0; l <= j; ++l)
+    if (c[l] == dof) return l < j ? rational(1) : rational(-static_cast<long>(j));
+  return rational(0);
+}
+}  // namespace
+
+StateSpace<rational> lift_realisation(const std::vector<std::vector<int>>& classes, const StateSpace<rational>& fixed,
+                                      const std::vector<const StateSpace<rational>*>& standard, int m) {
+  const size_t r = classes.size();
+  std::vector<int> class_of(static_cast<size_t>(m), -1);
+  for (size_t c = 0; c < r; ++c)
+    for (int i : classes[c]) class_of[static_cast<size_t>(i)] = static_cast<int>(c);
+  Eigen::Index n = fixed.states();
+  for (size_t a = 0; a < r; ++a)
+    if (standard[a]) n += standard[a]->states() * static_cast<Eigen::Index>(classes[a].size() - 1);
+  StateSpace<rational> E{MatQ::Zero(n, n), MatQ::Zero(n, m), MatQ::Zero(m, n), MatQ::Zero(m, m), fixed.T};
+  // the fixed block: its input c is 1_c^T u / k_c, its output c reaches every DOF of class c
+  const Eigen::Index nf = fixed.states();
+  E.A.topLeftCorner(nf, nf) = fixed.A;
+  for (int i = 0; i < m; ++i) {
+    const auto c = static_cast<Eigen::Index>(class_of[static_cast<size_t>(i)]);
+    E.B.block(0, i, nf, 1) = fixed.B.col(c) / rational(static_cast<long>(classes[static_cast<size_t>(c)].size()));
+    E.C.block(i, 0, 1, nf) = fixed.C.row(c);
+    for (int k = 0; k < m; ++k) {
+      const auto d = static_cast<Eigen::Index>(class_of[static_cast<size_t>(k)]);
+      E.D(i, k) = fixed.D(c, d) / rational(static_cast<long>(classes[static_cast<size_t>(d)].size()));
+    }
+  }
+  // each class's zero-sum copies: input h_j^T u / (j (j + 1)), output h_j
+  Eigen::Index at = nf;
+  for (size_t a = 0; a < r; ++a) {
+    if (!standard[a]) continue;
+    const StateSpace<rational>& z = *standard[a];
+    const auto& cls = classes[a];
+    const Eigen::Index na = z.states();
+    for (size_t j = 1; j < cls.size(); ++j) {
+      const rational jj(static_cast<long>(j * (j + 1)));
+      E.A.block(at, at, na, na) = z.A;
+      for (size_t l = 0; l <= j; ++l) {
+        const int i = cls[l];
+        const rational h = helmert(cls, j, i);
+        E.B.block(at, i, na, 1) = z.B.col(0) * (h / jj);
+        E.C.block(i, at, 1, na) = z.C.row(0) * h;
+      }
+      at += na;
+    }
+    // D: d_a sum_j h_j h_j^T / |h_j|^2 = d_a (I - 1 1^T / k_a) on the class
+    const rational ka(static_cast<long>(cls.size()));
+    for (int i : cls)
+      for (int k : cls) E.D(i, k) += z.D(0, 0) * ((i == k ? rational(1) : rational(0)) - 1 / ka);
+  }
+  return E;
+}
+
+HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rational>& E) {
+  HiddenModes h;
+  const HiddenModes f = hidden_modes(*s.fixed.environment);
+  h.uncontrollable = f.uncontrollable;
+  h.unobservable = f.unobservable;
+  std::vector<std::optional<HiddenModes>> by_class(s.classes.size());
+  std::vector<const StateSpace<rational>*> minimal(s.classes.size(), nullptr);
+  for (size_t k = 0; k < s.standard.size(); ++k) {
+    const auto a = static_cast<size_t>(s.standard_class[k]);
+    by_class[a] = hidden_modes(*s.standard[k].environment);
+    for (size_t copy = 1; copy < s.classes[a].size(); ++copy) {
+      h.uncontrollable = h.uncontrollable * by_class[a]->uncontrollable;
+      h.unobservable = h.unobservable * by_class[a]->unobservable;
+    }
+    minimal[a] = &by_class[a]->minimal;
+  }
+  if (!s.isolated.empty()) {  // no input reaches them: uncontrollable, all of them
+    MatQ Ai(static_cast<Eigen::Index>(s.isolated.size()), static_cast<Eigen::Index>(s.isolated.size()));
+    for (size_t i = 0; i < s.isolated.size(); ++i)
+      for (size_t k = 0; k < s.isolated.size(); ++k)
+        Ai(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = E.A(s.isolated[i], s.isolated[k]);
+    h.uncontrollable = h.uncontrollable * charpoly(Ai).monic();
+  }
+  h.minimal = lift_realisation(s.classes, f.minimal, minimal, static_cast<int>(E.inputs()));
+  return h;
 }
 
 }  // namespace hapstab::stability::detail

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/sim/loop.hpp"
 
 namespace hapstab::stability::detail {
@@ -44,11 +45,30 @@ struct LoopSymmetry {
   sim::LoopSpec fixed;                    ///< the r-DOF loop on the fixed space
   std::vector<sim::LoopSpec> standard;    ///< per class with k_a >= 2 (in class order): its one-DOF loop
   std::vector<int> standard_class;        ///< the class each of `standard` belongs to
+  std::vector<Eigen::Index> isolated;     ///< the environment's states no input reaches (set aside above)
   /// "S_32^4 (4 classes of 32 DOFs)": the group in words
   std::string group() const;
 };
 
 /// The split above, or nullopt: `why_not` says why ("" when no two DOFs are alike).
 std::optional<LoopSymmetry> split_by_symmetry(const sim::LoopSpec& spec, std::string& why_not);
+
+/// The blocks put back together: the direct sum of a fixed-space realisation (r inputs and
+/// outputs) and, per class a of k_a >= 2 DOFs, k_a - 1 copies of its zero-sum one (standard[a];
+/// null for a class of one), on the whole's m inputs and outputs through the basis S of
+/// multidof/symmetry.hpp (ones-vectors and Helmert vectors): (A_b, B_b S^-1, S C_b, S D_b S^-1).
+/// A realisation of the whole's transfer matrix (E S = S blockdiag(E_f, e_a I)); minimal when the
+/// blocks' are (its McMillan degree is theirs, added).
+StateSpace<rational> lift_realisation(const std::vector<std::vector<int>>& classes, const StateSpace<rational>& fixed,
+                                      const std::vector<const StateSpace<rational>*>& standard, int m);
+
+/// lti::hidden_modes of the environment as written (spec.environment), by the split: under the
+/// state basis (S_a (x) I) of each class its realisation is the direct sum of the blocks' and of
+/// the isolated states, on inputs and outputs changed by S, which hides nothing and shows
+/// nothing new. So the hidden factors are the blocks' (a class's to the power k_a - 1) times
+/// the isolated states' characteristic polynomial (uncontrollable), and the minimal realisation
+/// is lift_realisation of the blocks' minimal ones. Kalman decompositions of order n_f and n_a
+/// instead of the whole's (ctest LoopSymmetry.EnvironmentHiddenModesAsTheWholes).
+HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rational>& E);
 
 }  // namespace hapstab::stability::detail
