@@ -29,6 +29,7 @@
 
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/example.hpp"
+#include "hapstab/multidof/scene_analysis.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 #include "hapstab/scene/scene.hpp"
 
@@ -187,6 +188,35 @@ BENCHMARK(BM_ContactScene)
     ->Args({2, 2})->Args({4, 2})->Args({8, 2})->Args({16, 2})->Args({24, 2})->Args({32, 2})->Args({48, 2})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
+
+// Theorem 5 on the contact scenes by the permutations of their identical devices (issue 48:
+// multidof/symmetry.hpp; 4 classes of N/4) beside the whole program, in one run: the scene
+// realised once (problem_from_scene), then analyze_scene_lmis with and without the split, each
+// timed; counters split_s, whole_s, whole_ratio = whole_s / split_s, and both verdicts certified.
+// Not in bench/chart-multidof's filter (reproduce does not run it).
+void BM_ContactSymmetry(benchmark::State& st) {
+  const int N = static_cast<int>(st.range(0));
+  const auto sp = problem_from_scene(scene::parse_scene(example::contact_scene(N), "contact scene"));
+  double split = 0, whole = 0;
+  bool split_certified = false, whole_certified = false;
+  for (auto _ : st) {
+    auto t0 = std::chrono::steady_clock::now();
+    const AnalysisResult a = analyze_scene_lmis(sp, {}, true);
+    split = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t0 = std::chrono::steady_clock::now();
+    const AnalysisResult b = analyze_scene_lmis(sp, {}, false);
+    whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    split_certified = a.path == "symmetry" && a.verdict.proven() && a.verdict.holds();
+    whole_certified = b.verdict.proven() && b.verdict.holds();
+  }
+  st.counters["split_s"] = split;
+  st.counters["whole_s"] = whole;
+  st.counters["whole_ratio"] = whole / split;
+  st.counters["split_certified"] = split_certified;
+  st.counters["whole_certified"] = whole_certified;
+  st.SetLabel("symmetric split beside the whole program (16)");
+}
+BENCHMARK(BM_ContactSymmetry)->Arg(8)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Theorem 6 on the contact scene with one first-order SISO coupling block per device: mode 0 automatic (the block-wise path of design.hpp from 8 DOF
 // on), 1 the generic CCL (DesignPath::generic_sdp: the path before issue 33; 5.7 s at N = 8,
