@@ -18,7 +18,8 @@
 //   loop: multidof/loop_as_written.hpp), witness and weighted_witness (the frequency-domain
 //   witnesses of (16)'s infeasibility, or null), hidden_modes
 //   [{block, kind, where, abs|re, stable}] (sim/hidden_modes.hpp), delay (n of [delay] z^-n, folded
-//   into E), symmetry (null, or {group, classes, blocks [{name, copies, dofs, states, path, verdict,
+//   into E), symmetry (null, or {group, classes, blocks [{name, copies, dofs, states, path, verdict
+//   (feasible, infeasible, undecided, or "not needed" after a block proved the whole infeasible),
 //   certified, seconds}]}: (16) split by the permutations of identical DOFs, multidof/symmetry.hpp),
 //   certified, verdict, certificate, gamma (gamma_i of Gamma), x (the g_i of X), q_v,
 //   delta_v_required, margin, facial_reduction, least_dissipative {q_v, norm, delta_v, gamma,
@@ -276,11 +277,15 @@ int run_analyze(const Opts& o) {
                 << " s\n";
     }
     if (r.symmetry)
-      for (const auto& b : r.symmetry->blocks)
-        std::cout << "    block: " << b.name << ", E of order " << b.problem.E.states() << ": "
-                  << lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) << " ["
-                  << to_string(b.result.verdict.status) << "] by the "
-                  << b.result.path << " path, " << b.result.seconds << " s\n";
+      for (const auto& b : r.symmetry->blocks) {
+        std::cout << "    block: " << b.name << ", E of order " << b.problem.E.states() << ": ";
+        if (!b.analysed)
+          std::cout << "not needed (an earlier block proved the whole infeasible)\n";
+        else
+          std::cout << lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) << " ["
+                    << to_string(b.result.verdict.status) << "] by the " << b.result.path << " path, "
+                    << b.result.seconds << " s\n";
+      }
     if (sp.delay > 0) std::cout << "  " << multidof::delay_text(sp) << "\n";
     if (feasible) {
       std::cout << "  one feasible point (" << (r.solver_detail.find("Riccati") == std::string::npos ? "the SDP solver's" : "the Riccati equation's") << "): Gamma = sqrt(X): gamma =";

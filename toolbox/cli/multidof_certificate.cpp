@@ -137,7 +137,7 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   const multidof::SymmetryBlock* block = nullptr;
   if (!a.feasible && a.certified && r.symmetry)
     for (const auto& b : r.symmetry->blocks)
-      if (b.result.verdict.fails() && b.result.verdict.proven()) block = &b;
+      if (b.analysed && b.result.verdict.fails() && b.result.verdict.proven()) block = &b;
   const multidof::AnalysisResult& decided = block ? block->result : r;
   if (!a.feasible && a.certified && decided.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
     nlohmann::json j = certificate_header("multidof-facial");

@@ -121,6 +121,7 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
       why_not = b.name + ": " + e.what();
       return std::nullopt;
     }
+    b.analysed = true;
     sdp += b.result.sdp_seconds;
     if (lifts_infeasibility(b.result)) {
       infeasible = &b;
@@ -247,8 +248,8 @@ nlohmann::json symmetry_json(const AnalysisResult& r) {
   for (const auto& b : r.symmetry->blocks)
     blocks.push_back({{"name", b.name}, {"copies", b.copies}, {"dofs", b.problem.structure.m()},
                       {"states", b.problem.E.states()}, {"path", b.result.path},
-                      {"verdict", lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome))},
-                      {"certified", b.result.verdict.proven()},
+                      {"verdict", b.analysed ? lmi::to_string(lmi::feasibility_of(b.result.verdict.outcome)) : "not needed"},
+                      {"certified", b.analysed && b.result.verdict.proven()},
                       {"seconds", b.result.seconds}});
   nlohmann::json classes = nlohmann::json::array();
   for (const auto& c : r.symmetry->classes) classes.push_back(c);

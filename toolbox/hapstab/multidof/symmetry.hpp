@@ -69,6 +69,7 @@ struct SymmetryBlock {
   int cls = -1;          ///< the class of a standard block; -1 for the fixed space
   Problem problem;
   AnalysisResult result;
+  bool analysed = false;  ///< false: not needed, an earlier block proved the whole infeasible
 };
 
 struct SymmetryResult {
@@ -92,7 +93,8 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
 std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBlock& b, const std::vector<rational>& u, int m);
 
 /// JSON `symmetry` of `multidof analyze` and Python's Analysis.symmetry: null, or {group, classes
-/// (0-based DOFs), blocks [{name, copies, dofs, states, path, verdict, certified, seconds}]}.
+/// (0-based DOFs), blocks [{name, copies, dofs, states, path, verdict (or "not needed": not
+/// analysed, an earlier block proved the whole infeasible), certified, seconds}]}.
 nlohmann::json symmetry_json(const AnalysisResult& r);
 
 /// The lifted point above: a realisation of the whole's E-hat and a point of its (16), exact.
