@@ -13,8 +13,8 @@ one-DOF environment of order 16 of issue 39's table).
 
 With --compact (one object) the scene says what is repeated (docs/scene.md, "Repeated blocks"): one
 [[device]] and one [[operator]] with count = N, the contact values as list parameters kc, Bc and the
-operator gains g, and E by its diagonal and off-diagonal entries: under 10 KB at N = 128, where the
-written-out scene is 18 MB. The devices are then named d[1] .. d[N] (written out: d1 .. dN), the
+operator gains g, and E by its diagonal and off-diagonal entries: under 1 KB at N = 1024 (list parameters as
+`{ repeat = [...], times = N/4 }`), where the written-out scene at N = 128 is 18 MB. The devices are then named d[1] .. d[N] (written out: d1 .. dN), the
 operators H[1] .. H[N]; the models are the same.
 
 Usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] [--compact] > scene.toml
@@ -70,7 +70,9 @@ def compact_scene(n, delay=0, chain=1):
     ks = [str(500 + 100 * ((i - 1) % 4)) for i in range(1, n + 1)]
     bs = [["1", "2", "3/2", "5/2"][(i - 1) % 4] for i in range(1, n + 1)]
     gs = [["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4] for i in range(1, n + 1)]
-    lst = lambda v: '[' + ', '.join(f'"{x}"' for x in v) + ']'
+    # the values cycle through 4 kinds: said once with `repeat` when N is a multiple of 4
+    lst = lambda v: ('{ repeat = [' + ', '.join(f'"{x}"' for x in v[:4]) + f'], times = {n // 4} }}' if n % 4 == 0 and n > 4
+                     else '[' + ', '.join(f'"{x}"' for x in v) + ']')
     behind = behind_chain(chain)
     den = '(M*s^2 + (B + sum(Bc))*s + k + sum(kc)' + (f' - (k + B*s)^2/({behind})' if behind else '') + ')'
     out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',

@@ -80,7 +80,7 @@ HAPSTAB_PROOF(hidden_modes_in_every_loop, "000", "A block's hidden modes are eig
     const StateSpace<rational> E{exact_product(exact_product(S, A), Si), exact_product(S, B), exact_product(C, Si),
                                  random(g, m, m), rational(1, 100)};
     const HiddenModes h = hidden_modes(E);
-    const Polynomial<rational> hidden = h.uncontrollable * h.unobservable;
+    const Polynomial<rational> hidden = h.uncontrollable.expanded() * h.unobservable.expanded();
     const int nk = dim(g) - 1;
     StateSpace<rational> K{random(g, nk, nk), random(g, nk, m), random(g, m, nk), random(g, m, m), E.T};
     while (exact_rank(MatQ(MatQ::Identity(m, m) + exact_product(K.D, E.D))) < m) K.D = random(g, m, m);  // a well-posed loop

@@ -1094,7 +1094,7 @@ tf = "20000 + 5*(z-1)/(T*z)"
   const auto sc = scene::parse_scene(base + "[delay]\nsamples = \"2\"\n", "delay.toml");
   const SceneProblem sp = problem_from_scene(sc);
   EXPECT_EQ(sp.delay, 2);
-  const TransferMatrix E = ss2tf(sp.E_undelayed), Ed = ss2tf(sp.problem.E);
+  const TransferMatrix E = ss2tf(sp.E_written()), Ed = ss2tf(sp.problem.E);
   const RationalFunction<Q> zinv2(Polynomial<Q>(Q(1)), Polynomial<Q>(std::vector<Q>{0, 0, 1}));
   EXPECT_TRUE(Ed(0, 0).H == E(0, 0).H * zinv2) << Ed(0, 0).to_string();
   try {

@@ -133,6 +133,60 @@ TEST(SceneRepeated, ListParametersAreExact) {
   EXPECT_EQ(sc.parameters.count("v"), 0u);  // a list is not a scalar parameter
 }
 
+// A list said once with `repeat` is the list written out; a compact matrix over classes of DOFs
+// (entries parsed once per class pair, Reader::compact_block) realises exactly what the matrix
+// written out does (tf2ss column by column: the same A, B, C, D entry for entry).
+TEST(SceneRepeated, RepeatedListsAndClassesAreTheWrittenOutScene) {
+  const std::string body = R"TOML(
+[[device]]
+count = 6
+name = "d"
+m = "1/10"
+b = "1"
+[environment]
+domain = "s"
+method = "backward_euler"
+diagonal = "kc[i] + s - kc[i]^2/(s + sum(kc))"
+off_diagonal = "-kc[i]*kc[j]/(s + 1/2*kc[j] + sum(kc))"
+)TOML";
+  const auto rep = parse_scene(kHead + "[parameters]\nkc = { repeat = [\"500\", \"3/2\", \"500\"], times = 2 }\n" + body, "r.toml");
+  const auto listed = parse_scene(kHead + "[parameters]\nkc = [\"500\", \"3/2\", \"500\", \"500\", \"3/2\", \"500\"]\n" + body, "l.toml");
+  std::ostringstream o;  // the same matrix written out entry by entry, the values in place
+  const char* k[] = {"500", "3/2", "500", "500", "3/2", "500"};
+  o << kHead << body.substr(0, body.find("diagonal")) << "tf = [";
+  for (int i = 0; i < 6; ++i) {
+    o << (i ? ", [" : "[");
+    for (int j = 0; j < 6; ++j)
+      o << (j ? ", " : "") << "\""
+        << (i == j ? std::string(k[i]) + " + s - (" + k[i] + ")^2/(s + 2003)"
+                   : "-(" + std::string(k[i]) + ")*(" + k[j] + ")/(s + 1/2*(" + k[j] + ") + 2003)")
+        << "\"";
+    o << "]";
+  }
+  o << "]\n";
+  const auto out = parse_scene(o.str(), "w.toml");
+  for (const auto* sc : {&listed, &out}) {
+    ASSERT_TRUE(rep.loop.environment && sc->loop.environment);
+    EXPECT_EQ(rep.loop.environment->A, sc->loop.environment->A);
+    EXPECT_EQ(rep.loop.environment->B, sc->loop.environment->B);
+    EXPECT_EQ(rep.loop.environment->C, sc->loop.environment->C);
+    EXPECT_EQ(rep.loop.environment->D, sc->loop.environment->D);
+  }
+  EXPECT_EQ(rep.lists.at("kc"), listed.lists.at("kc"));
+  // wrong repeated lists, by name
+  const auto bad = [&](const std::string& list, const std::string& what) {
+    const std::string e = error_of(kHead + "[parameters]\nkc = " + list + "\n" + body);
+    EXPECT_NE(e.find(what), std::string::npos) << list << ": " << e;
+  };
+  bad("{ repeat = [\"1\", \"2\"], times = 0 }", "parameters.kc.times: missing or not a whole number >= 1");
+  bad("{ repeat = [\"1\", \"2\"] }", "parameters.kc.times: missing or not a whole number >= 1");
+  bad("{ repeat = [\"1\", \"2\"], times = 2 }", "'kc[i]' indexes the list parameter kc of 4 values");
+  bad("{ repeat = [\"1\", \"2\"], times = 3, each = 1 }", "parameters.kc.each: not a key of a repeated list");
+  bad("{ repeat = [\"1\", \"x\"], times = 3 }", "parameters.kc.repeat[2]");
+  bad("{ repeat = [\"1\", \"2\"], times = 3000 }", "more than the limit of 4096 values");
+  bad("{ times = 3 }", "parameters.kc.repeat: missing or not an array");
+}
+
 TEST(SceneRepeated, WrongCountsAreRefusedByName) {
   const std::string dev = "[[device]]\nname = \"d\"\nm = \"1\"\n";
   struct Case {
@@ -189,11 +243,11 @@ TEST(SceneRepeated, WrongLengthsAndIndicesAreRefusedByName) {
   const std::string both = error_of(replace(kCompact, "method = \"backward_euler\"", "method = \"backward_euler\"\ntf = \"1\""));
   EXPECT_NE(both.find("s.toml: environment.diagonal: give either diagonal (and off_diagonal) or tf/ss, not both"),
             std::string::npos) << both;
-  // a 3 KB scene may not stand for more expressions than a scene file may hold
+  // a 3 KB scene may not stand for a matrix larger than the exact realisation may hold
   const std::string huge = error_of(kHead + "[[device]]\ncount = 4096\nname = \"d\"\nm = \"1\"\n[environment]\n"
-                                    "diagonal = \"1 + 1 + 1 + 1\"\noff_diagonal = \"1 + 1 + 1 + 1\"\n");
-  EXPECT_NE(huge.find("s.toml: environment.diagonal: the 4096 x 4096 matrix written out is 208 MB of expressions, more "
-                      "than the 64 MB a scene file may hold"), std::string::npos) << huge;
+                                    "diagonal = \"1/z\"\noff_diagonal = \"1 + 1 + 1 + 1\"\n");
+  EXPECT_NE(huge.find("s.toml: environment.diagonal: realised column by column, the 4096 x 4096 matrix has 4096 states and "
+                      "4096 inputs, more than the limit of 4096 states and inputs together"), std::string::npos) << huge;
   const auto spaced = parse_scene(kHead + "[parameters]\nv = [\"1\", \"2\"]\n[[device]]\nname = \"d\"\nm = \"sum( v )\"\n", "s.toml");
   EXPECT_EQ(spaced.loop.devices[0].G.B(0, 0), rational(1, 3));
   const std::string column = error_of(replace(kCompact, "diagonal = \"kc[i] + s", "diagonal = \"kc[j] + s"));

@@ -1,5 +1,8 @@
 #include "hapstab/lti/realization.hpp"
 
+#include <algorithm>
+#include <map>
+
 #include <Eigen/LU>
 
 #include "hapstab/numeric/error.hpp"
@@ -33,40 +36,85 @@ StateSpace<Q> tf2ss(const TransferFunction& G) {
 StateSpace<Q> tf2ss(const TransferMatrix& G) {
   const size_t p = G.outputs(), m = G.inputs();
   if (p == 0 || m == 0) throw InputError("tf2ss: empty transfer matrix");
-  // One controllable form per input column j with the column's common denominator d_j:
-  // column j = N_j(x)/d_j(x), N_j a p-vector of polynomials.
-  std::vector<Polynomial<Q>> dens(m);
+  std::vector<TransferFunction> entries;
+  entries.reserve(p * m);
+  for (size_t i = 0; i < p; ++i) {
+    if (G.entries.at(i).size() != m) throw InputError("tf2ss: row " + std::to_string(i + 1) + " has a different length");
+    for (size_t j = 0; j < m; ++j) entries.push_back(G.entries[i][j]);
+  }
+  std::vector<int> index(p * m);
+  for (size_t k = 0; k < index.size(); ++k) index[k] = static_cast<int>(k);
+  return tf2ss(entries, index, p, m, G.T);
+}
+
+StateSpace<Q> tf2ss(const std::vector<TransferFunction>& distinct, const std::vector<int>& index, size_t p, size_t m,
+                    const rational& T) {
+  if (p == 0 || m == 0) throw InputError("tf2ss: empty transfer matrix");
+  if (index.size() != p * m) throw InputError("tf2ss: the index holds " + std::to_string(index.size()) + " entries, not p m");
+  for (size_t k = 0; k < index.size(); ++k)
+    if (index[k] < 0 || static_cast<size_t>(index[k]) >= distinct.size())
+      throw InputError("tf2ss: entry (" + std::to_string(k / m + 1) + "," + std::to_string(k % m + 1) + ") has no transfer function");
+  for (size_t k = 0; k < distinct.size(); ++k)
+    if (!distinct[k].is_proper()) {
+      size_t at = 0;
+      while (at < index.size() && static_cast<size_t>(index[at]) != k) ++at;
+      if (at < index.size())
+        throw InputError("tf2ss: entry (" + std::to_string(at / m + 1) + "," + std::to_string(at % m + 1) + ") " +
+                         distinct[k].to_string() + " is not proper");
+    }
+  // One controllable form per input column j with the column's common denominator d_j (the
+  // monic lcm of its entries' denominators): column j = N_j(x)/d_j(x), N_j a p-vector of
+  // polynomials. Columns with the same set of distinct entries share d_j, and an entry over a
+  // given d_j is reduced once: a compact scene's N x N matrix costs its distinct columns.
+  std::map<std::vector<int>, size_t> column_kind;  // sorted distinct ids of a column -> its d_j
+  std::vector<Polynomial<Q>> dens;
+  std::vector<size_t> kind_of(m);
   int total = 0;
   for (size_t j = 0; j < m; ++j) {
-    Polynomial<Q> d(Q(1));
-    for (size_t i = 0; i < p; ++i) {
-      const auto& e = G.entries.at(i).at(j);
-      if (!e.is_proper()) throw InputError("tf2ss: entry (" + std::to_string(i + 1) + "," + std::to_string(j + 1) +
-                                           ") " + e.to_string() + " is not proper");
-      auto g = gcd(d, e.den());
-      d = divmod(d * e.den(), g).first;
+    std::vector<int> ids(p);
+    for (size_t i = 0; i < p; ++i) ids[i] = index[i * m + j];
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    auto [it, fresh] = column_kind.try_emplace(std::move(ids), dens.size());
+    if (fresh) {
+      Polynomial<Q> d(Q(1));
+      for (int id : it->first) {
+        const auto& den = distinct[static_cast<size_t>(id)].den();
+        d = divmod(d * den, gcd(d, den)).first;
+      }
+      dens.push_back(d.monic());
     }
-    dens[j] = d.monic();
-    total += dens[j].degree();
+    kind_of[j] = it->second;
+    total += dens[it->second].degree();
   }
-  MQ A = MQ::Zero(total, total), B = MQ::Zero(total, m), C = MQ::Zero(p, total), D = MQ::Zero(p, m);
+  MQ A = MQ::Zero(total, total), B = MQ::Zero(total, static_cast<Eigen::Index>(m)),
+     C = MQ::Zero(static_cast<Eigen::Index>(p), total), D = MQ::Zero(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(m));
+  // entry id over denominator kind -> its D value and C row (the remainder's coefficients)
+  std::map<std::pair<int, size_t>, std::pair<Q, std::vector<Q>>> over;
   int off = 0;
   for (size_t j = 0; j < m; ++j) {
-    const auto& d = dens[j];
+    const auto& d = dens[kind_of[j]];
     const int n = d.degree();
     for (int k = 0; k + 1 < n; ++k) A(off + k, off + k + 1) = 1;
     for (int k = 0; k < n; ++k) A(off + n - 1, off + k) = -d.coeff(k);
-    if (n > 0) B(off + n - 1, j) = 1;
+    if (n > 0) B(off + n - 1, static_cast<Eigen::Index>(j)) = 1;
     for (size_t i = 0; i < p; ++i) {
-      const auto& e = G.entries[i][j];
-      Polynomial<Q> num = e.num() * divmod(d, e.den()).first;  // entry over the common denominator
-      auto [qq, rr] = divmod(num, d);
-      D(i, j) = qq.coeff(0);
-      for (int k = 0; k < n; ++k) C(i, off + k) = rr.coeff(k);
+      const int id = index[i * m + j];
+      auto [it, fresh] = over.try_emplace({id, kind_of[j]});
+      if (fresh) {
+        const auto& e = distinct[static_cast<size_t>(id)];
+        Polynomial<Q> num = e.num() * divmod(d, e.den()).first;  // entry over the common denominator
+        auto [qq, rr] = divmod(num, d);
+        it->second.first = qq.coeff(0);
+        for (int k = 0; k < n; ++k) it->second.second.push_back(rr.coeff(k));
+      }
+      const auto ii = static_cast<Eigen::Index>(i);
+      D(ii, static_cast<Eigen::Index>(j)) = it->second.first;
+      for (int k = 0; k < n; ++k) C(ii, off + k) = it->second.second[static_cast<size_t>(k)];
     }
     off += n;
   }
-  return {A, B, C, D, G.T};
+  return {std::move(A), std::move(B), std::move(C), std::move(D), T};
 }
 
 namespace {
@@ -256,9 +304,55 @@ HiddenModes hidden_modes(const StateSpace<Q>& sys) {
   const KalmanSplit o = split(dual(c.controllable));
   HiddenModes h;
   h.minimal = dual(o.controllable);
-  h.uncontrollable = charpoly(c.uncontrollable_A).monic();
-  h.unobservable = charpoly(o.uncontrollable_A).monic();
+  h.uncontrollable = PolynomialProduct(charpoly(c.uncontrollable_A).monic());
+  h.unobservable = PolynomialProduct(charpoly(o.uncontrollable_A).monic());
   return h;
+}
+
+bool semisimple_eigenvalue(const MQ& A, const Q& lambda) {
+  Polynomial<Q> p = charpoly(A);
+  const Polynomial<Q> lin(std::vector<Q>{-lambda, Q(1)});
+  long alg = 0;
+  while (p.degree() > 0 && p(lambda) == 0) {
+    p = divmod(p, lin).first;
+    ++alg;
+  }
+  if (alg == 0) return true;
+  const MQ shifted = A - MQ::Identity(A.rows(), A.cols()) * lambda;
+  return A.rows() - exact_rank(shifted) == alg;
+}
+
+void PolynomialProduct::multiply(const Polynomial<Q>& p, int power) {
+  if (p.degree() < 1 || power < 1) return;
+  for (auto& [f, k] : factors)
+    if (f == p) {
+      k += power;
+      return;
+    }
+  factors.emplace_back(p, power);
+}
+
+void PolynomialProduct::multiply(const PolynomialProduct& q, int power) {
+  for (const auto& [f, k] : q.factors) multiply(f, k * power);
+}
+
+int PolynomialProduct::degree() const {
+  int d = 0;
+  for (const auto& [f, k] : factors) d += f.degree() * k;
+  return d;
+}
+
+bool PolynomialProduct::vanishes_at(const Q& x) const {
+  for (const auto& [f, k] : factors)
+    if (f(x) == 0) return true;
+  return false;
+}
+
+Polynomial<Q> PolynomialProduct::expanded() const {
+  Polynomial<Q> p(Q(1));
+  for (const auto& [f, k] : factors)
+    for (int i = 0; i < k; ++i) p = p * f;
+  return p;
 }
 
 }  // namespace hapstab

@@ -9,6 +9,8 @@
 // Used to check realisations such as (15) and (17) of paper 000 against transfer functions.
 #pragma once
 
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "hapstab/lti/state_space.hpp"
@@ -30,6 +32,12 @@ struct TransferMatrix {
 StateSpace<rational> tf2ss(const TransferFunction& G);
 /// Proper transfer matrix -> a realisation (not minimal in general; see minreal).
 StateSpace<rational> tf2ss(const TransferMatrix& G);
+/// The same for a p x m matrix given by its distinct entries: entry (i, j) is
+/// distinct[index[i m + j]] (a compact scene's N x N matrix: N^2 entries, a few distinct). The
+/// realisation is the one tf2ss gives the matrix written out; its cost is that of the distinct
+/// columns and entries, plus copying.
+StateSpace<rational> tf2ss(const std::vector<TransferFunction>& distinct, const std::vector<int>& index, size_t p,
+                           size_t m, const rational& T);
 /// Transfer matrix of a state-space model, exact; entries reduced.
 TransferMatrix ss2tf(const StateSpace<rational>& sys);
 /// Characteristic polynomial det(xI - A), exact (FLINT's fraction-free fmpq_mat_charpoly).
@@ -47,6 +55,22 @@ struct KalmanSplit {
 };
 KalmanSplit controllable_split(const StateSpace<rational>& sys);
 
+/// A product of polynomials, each to a power, kept unexpanded: a symmetric scene's hidden modes
+/// repeat a block's k - 1 times (stability/symmetry.hpp), and the product written out would have a
+/// degree in the thousands and coefficients to match. The empty product is 1.
+struct PolynomialProduct {
+  std::vector<std::pair<Polynomial<rational>, int>> factors;  ///< (p, power): deg p >= 1, power >= 1
+  PolynomialProduct() = default;
+  explicit PolynomialProduct(const Polynomial<rational>& p) { multiply(p); }
+  /// *this times p^power (nothing when p is a constant or power is 0).
+  void multiply(const Polynomial<rational>& p, int power = 1);
+  /// *this times q^power.
+  void multiply(const PolynomialProduct& q, int power = 1);
+  int degree() const;
+  bool vanishes_at(const rational& x) const;
+  Polynomial<rational> expanded() const;  ///< written out (for tests and small products)
+};
+
 /// The modes a realisation hides from its input or its output, exactly (the Kalman
 /// decompositions minreal makes): with A_c the controllable part and A_min the minimal one,
 ///   det(xI - A) = uncontrollable(x) * det(xI - A_c),   det(xI - A_c) = unobservable(x) * det(xI - A_min).
@@ -55,10 +79,17 @@ KalmanSplit controllable_split(const StateSpace<rational>& sys);
 /// is connected into (no input reaches it, or no output shows it): a verdict about the loop as
 /// written must check them before it works on `minimal` (DESIGN.md, Theorem 5 and realisations).
 struct HiddenModes {
-  Polynomial<rational> uncontrollable, unobservable;
+  PolynomialProduct uncontrollable, unobservable;
   StateSpace<rational> minimal;  ///< minreal(sys)
+  /// Whether z = 1 (s = 0), when an eigenvalue of A, is semisimple (algebraic multiplicity =
+  /// geometric), where the producer knew it without A's characteristic polynomial (a symmetric
+  /// environment: the blocks' answers, stability/symmetry.hpp); unset: sim::hidden_modes decides.
+  std::optional<bool> marginal_semisimple;
   bool any() const { return uncontrollable.degree() > 0 || unobservable.degree() > 0; }
 };
 HiddenModes hidden_modes(const StateSpace<rational>& sys);
+/// lambda is not an eigenvalue of A, or it is semisimple: its algebraic multiplicity (in
+/// det(xI - A)) equals its geometric one (the nullity of A - lambda I), exactly.
+bool semisimple_eigenvalue(const Mat<rational>& A, const rational& lambda);
 
 }  // namespace hapstab

@@ -88,6 +88,10 @@ AnalysisResult analyze_scene_lmis(const SceneProblem& sp, const lmi::Options& op
     if (auto r = analyze_by_symmetry(sp, std::move(*split), opt, why_not)) return std::move(*r);
     why_not = "the split by " + group + " did not decide: " + why_not;
   }
+  if (sp.problem.E.states() > limits::multidof_states)  // problem_from_scene let it through for the split
+    throw InputError("E has " + std::to_string(sp.problem.E.states()) + " states (reduced), more than the limit of " +
+                     std::to_string(limits::multidof_states) + " for Theorem 5's whole program; " +
+                     (symmetry ? why_not : "the split by identical DOFs would work on its blocks (without --no-symmetry)"));
   AnalysisResult r = analyze(sp.problem, opt);
   if (!why_not.empty()) r.plan.insert(r.plan.begin(), PlanStep{"symmetry of identical DOFs", split ? "did not decide" : "skipped", why_not});
   else if (!symmetry) r.plan.insert(r.plan.begin(), PlanStep{"symmetry of identical DOFs", "skipped", "--no-symmetry"});
@@ -123,8 +127,8 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
 }
 
 sim::LoopSpec loop_with_coupling(const SceneProblem& sp, const StateSpace<rational>* V) {
-  sim::LoopSpec spec = sp.loop;
-  spec.environment = delayed(sp.E_written, sp.delay);
+  sim::LoopSpec spec = sp.loop;  // one copy of E as written, not two (a 1024-device one is 2 GB)
+  if (sp.delay > 0) spec.environment = delayed(sp.E_written(), sp.delay);
   spec.delay = 0;
   if (V) spec.coupling = *V;
   else spec.coupling.reset();

@@ -51,11 +51,14 @@ struct SceneProblem {
   std::vector<std::string> operator_names;
   std::vector<std::string> device_evidence;  ///< per device: where its OSP level comes from
   int delay = 0;                             ///< n of the [delay] z^-n (folded into problem.E)
-  StateSpace<rational> E_undelayed;          ///< E as analysed before the delay (perturb_C applied)
-  StateSpace<rational> E_written;            ///< the scene's realisation of E, perturb_C applied, not reduced
   sim::LoopHiddenModes hidden;               ///< every block's hidden modes, as written (sim/hidden_modes.hpp)
-  /// The scene's loop with E_written as its environment: the loop the verdicts are about.
+  /// The scene's loop, its environment the scene's realisation of E with perturb_C applied, not
+  /// reduced (E as written; held once: a 1024-device environment's is 2 GB of exact entries): the
+  /// loop the verdicts are about.
   sim::LoopSpec loop;
+  const StateSpace<rational>& E_written() const { return *loop.environment; }
+  /// The split by identical DOFs found when the problem was made (stability/symmetry.hpp), if any.
+  bool symmetric = false;
 };
 
 /// z^-n E: n shift registers of m states after E's output (exact).
@@ -118,13 +121,13 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
   Problem& pb = sp.problem;
   const std::string f = sc.file + ": ";
   if (!sc.loop.environment) throw InputError(f + "the scene has no [environment] (Theorem 5 needs E)");
-  sp.E_written = *sc.loop.environment;
   const int N = sc.loop.dofs();
-  if (sp.E_written.inputs() != N || sp.E_written.outputs() != N)
-    throw InputError(f + "environment is " + std::to_string(sp.E_written.outputs()) + "x" +
-                     std::to_string(sp.E_written.inputs()) + " but the devices have " + std::to_string(N) +
+  if (sc.loop.environment->inputs() != N || sc.loop.environment->outputs() != N)
+    throw InputError(f + "environment is " + std::to_string(sc.loop.environment->outputs()) + "x" +
+                     std::to_string(sc.loop.environment->inputs()) + " but the devices have " + std::to_string(N) +
                      " DOF (a square N x N E is required)");
   const scene::MultidofValues md = scene::multidof_values(sc);  // [multidof], typed (scene/schema.hpp)
+  sp.loop = sc.loop;
   if (md.perturb_C) {
     const auto& rows = *md.perturb_C;
     const bool square = static_cast<int>(rows.size()) == N &&
@@ -133,24 +136,25 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
     MatQ Pi(N, N);
     for (int i = 0; i < N; ++i)
       for (int j = 0; j < N; ++j) Pi(i, j) = rows[static_cast<size_t>(i)][static_cast<size_t>(j)];
-    sp.E_written.C = Pi * sp.E_written.C;  // C_E := Pi C_E: the same transfer matrix on every realisation
+    StateSpace<rational>& E = *sp.loop.environment;
+    E.C = Pi * E.C;  // C_E := Pi C_E: the same transfer matrix on every realisation
   }
   pb.qv_block_diagonal = md.qv_block_diagonal;
   // Hidden modes first, on the realisations as written; then E is reduced (Theorem 5 is about
   // the input-output behaviour, valid once the hidden modes are known: multidof::premises)
-  sp.loop = sc.loop;
-  sp.loop.environment = sp.E_written;
   // by the permutations of identical DOFs where the scene has them (their blocks' Kalman
   // decompositions, not the whole's: stability/symmetry.hpp environment_hidden_modes)
   std::string no_split;
   const auto sym = stability::detail::split_by_symmetry(sp.loop, no_split);
-  const HiddenModes env = sym ? stability::detail::environment_hidden_modes(*sym, sp.E_written) : hidden_modes(sp.E_written);
+  HiddenModes env = sym ? stability::detail::environment_hidden_modes(*sym, sp.E_written()) : hidden_modes(sp.E_written());
+  sp.symmetric = sym.has_value();
   sp.hidden = sim::hidden_modes(sp.loop, &env);
-  pb.E = env.minimal;  // P has one row per state of the minimal E
-  sp.E_undelayed = pb.E;
+  pb.E = std::move(env.minimal);  // P has one row per state of the minimal E
   sp.delay = delay_in_periods(sc.loop.delay, sc.T, f);
   const long folded = static_cast<long>(pb.E.states()) + static_cast<long>(sp.delay) * N;
-  if (folded > limits::multidof_states)
+  // a symmetric scene's analysis works on its blocks (multidof/symmetry.hpp), and refuses the
+  // whole program beyond the limit only if the split does not decide (analyze_scene_lmis)
+  if (folded > limits::multidof_states && (use == SceneUse::design || !sp.symmetric || sp.delay > 0))
     throw InputError(f + "[delay] of " + std::to_string(sp.delay) + " samples folds " + std::to_string(sp.delay * N) +
                      " shift states into E (" + std::to_string(folded) + " states with E's own " +
                      std::to_string(pb.E.states()) + "), more than the limit of " + std::to_string(limits::multidof_states) +

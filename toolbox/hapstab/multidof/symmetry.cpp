@@ -150,7 +150,7 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
     res.facial.explanation = infeasible->name + ": " + infeasible->result.facial.explanation;
     res.solver_detail = "split by " + split.group + "; " + infeasible->name + ": " + infeasible->result.solver_detail;
   } else {
-    const StoredPoint lifted = lift_point(split, m);
+    const StoredPoint lifted = lift_point(split, m, true);  // the whole realisation and P: for --certificate only
     std::ostringstream ev;
     ev << "feasible by the symmetry " << split.group << ": the program splits into " << split.blocks.size()
        << " blocks whose points lift to one point of the whole (multidof/symmetry.hpp), each re-checked exactly:";
@@ -180,7 +180,7 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
   return res;
 }
 
-StoredPoint lift_point(const SymmetryResult& s, int m) {
+StoredPoint lift_point(const SymmetryResult& s, int m, bool multipliers_only) {
   const size_t r = s.classes.size();
   std::vector<int> class_of(static_cast<size_t>(m), -1);
   for (size_t c = 0; c < r; ++c)
@@ -205,12 +205,16 @@ StoredPoint lift_point(const SymmetryResult& s, int m) {
     ehat[static_cast<size_t>(b.cls)] = &std_pt[static_cast<size_t>(b.cls)]->st.Ehat;
   }
   StoredPoint out;
-  out.st.Ehat = stability::detail::lift_realisation(s.classes, f.st.Ehat, ehat, m);
-  const Eigen::Index n = out.st.Ehat.A.rows(), nf = f.st.Ehat.A.rows();
-  out.st.P = MatQ::Zero(n, n);
+  const Eigen::Index nf = f.st.Ehat.A.rows();
+  if (!multipliers_only) {
+    out.st.Ehat = stability::detail::lift_realisation(s.classes, f.st.Ehat, ehat, m);
+    const Eigen::Index n = out.st.Ehat.A.rows();
+    out.st.P = MatQ::Zero(n, n);
+    // the fixed block's point scaled by sigma
+    out.st.P.topLeftCorner(nf, nf) = sigma * f.st.P;
+  }
   out.X = out.QE = out.QV = MatQ::Zero(m, m);
-  // the fixed block's point scaled by sigma; Q = S^-T Q_b S^-1 there: Q_f(c, d) / (k_c k_d)
-  out.st.P.topLeftCorner(nf, nf) = sigma * f.st.P;
+  // Q = S^-T Q_b S^-1 on the fixed space: Q_f(c, d) / (k_c k_d)
   for (int i = 0; i < m; ++i) {
     const auto c = static_cast<size_t>(class_of[static_cast<size_t>(i)]);
     out.X(i, i) = g[c];
@@ -230,7 +234,7 @@ StoredPoint lift_point(const SymmetryResult& s, int m) {
     const auto& cls = s.classes[a];
     const Eigen::Index na = p.st.Ehat.A.rows();
     const rational ratio = g[a] / p.X(0, 0);
-    for (size_t j = 1; j < cls.size(); ++j, at += na)
+    for (size_t j = 1; j < cls.size() && !multipliers_only; ++j, at += na)
       out.st.P.block(at, at, na, na) = (ratio * rational(static_cast<long>(j * (j + 1)))) * p.st.P;
     for (int i : cls)
       for (int k : cls) {

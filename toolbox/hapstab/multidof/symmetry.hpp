@@ -97,7 +97,8 @@ std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBloc
 /// analysed, an earlier block proved the whole infeasible), certified, seconds}]}.
 nlohmann::json symmetry_json(const AnalysisResult& r);
 
-/// The lifted point above: a realisation of the whole's E-hat and a point of its (16), exact.
-StoredPoint lift_point(const SymmetryResult& s, int m);
+/// The lifted point above: a realisation of the whole's E-hat and a point of its (16), exact;
+/// with multipliers_only, X, Q_E and Q_V alone (st left empty: what the verdict prints).
+StoredPoint lift_point(const SymmetryResult& s, int m, bool multipliers_only = false);
 
 }  // namespace hapstab::multidof

@@ -48,6 +48,11 @@ inline constexpr int scene_parameters = 1000;
 /// list parameter: 4096 devices is four times the largest haptic arrays of issue 48 (1024
 /// actuators); the environment over them is already a 4096 x 4096 matrix.
 inline constexpr int scene_copies = 4096;
+/// States plus inputs of the block a scene's compact matrix (diagonal / off_diagonal) realises,
+/// column by column: its A, B, C and D together are this squared in exact rationals (4096: 16.8
+/// million, ~1 GB; a large analysis holds two copies). A 1024-device contact scene realises 3072
+/// states on 1024 inputs: 4096 (its analysis: 3.6 GB resident).
+inline constexpr long scene_block_order = 4096;
 /// Periods of one simulated run (simulate.steps, or simulate.duration / T rounded up), and the
 /// range of every time a scene turns into a sample index (an impulse's time, a bias's start, a
 /// profile file's t): checked before the conversion (a bias start of 1e16 s at T = 1 ms was 10^19

@@ -165,33 +165,64 @@ StateSpace<Q> Reader::tf_block(const toml::node& n, const std::string& key, char
   }
   auto a = n.as_array();
   if (!a) fail(key + ".tf", "expected a string or a matrix of strings");
-  TransferMatrix M;
-  M.domain = (var == 's' && !to_z) ? Domain::s : Domain::z;
-  M.T = (var == 's' && !to_z) ? Q(0) : T;
-  // entries whose text is the same once the lists are in (a compact matrix's entries between two
-  // classes: N^2 entries, a few distinct texts) are parsed and discretised once
-  std::map<std::string, TransferFunction> seen;
+  // entries whose text is the same once the lists are in are parsed and discretised once
+  std::vector<TransferFunction> distinct;
+  std::map<std::string, int> seen;
+  std::vector<int> index;
+  size_t cols = 0;
   for (size_t i = 0; i < a->size(); ++i) {
     auto row = (*a)[i].as_array();
     if (!row) fail(key + ".tf", "row " + std::to_string(i) + " is not an array");
-    M.entries.emplace_back();
+    if (i == 0) cols = row->size();
+    if (row->size() != cols) fail(key + ".tf", "rows have different lengths");
     for (size_t j = 0; j < row->size(); ++j) {
       auto s = (*row)[j].as_string();
       const std::string k2 = key + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]";
       if (!s) fail(k2, "expected a string expression");
-      const std::string text = expand(s->get(), k2);
-      auto hit = seen.find(text);
-      if (hit == seen.end()) {
-        auto tf = tf_of(s->get(), k2, var);
-        if (to_z) tf = to_z(tf);
-        if (!tf.is_proper()) fail(k2, "improper transfer function");
-        hit = seen.emplace(text, std::move(tf)).first;
-      }
-      M.entries.back().push_back(hit->second);
+      auto [hit, fresh] = seen.try_emplace(expand(s->get(), k2), static_cast<int>(distinct.size()));
+      if (fresh) distinct.push_back(realisable(tf_of(s->get(), k2, var), k2, to_z));
+      index.push_back(hit->second);
     }
-    if (M.entries.back().size() != M.entries.front().size()) fail(key + ".tf", "rows have different lengths");
   }
-  return tf2ss(M);
+  const bool to_discrete = var != 's' || to_z;
+  return tf2ss(distinct, index, a->size(), cols, to_discrete ? T : Q(0));  // empty: tf2ss's error
+}
+
+TransferFunction Reader::realisable(TransferFunction tf, const std::string& key,
+                                    const std::function<TransferFunction(const TransferFunction&)>& to_z) const {
+  if (to_z) tf = to_z(tf);
+  if (!tf.is_proper()) fail(key, "improper transfer function");
+  return tf;
+}
+
+StateSpace<Q> Reader::compact_block(const CompactMatrix& m, char var,
+                                    const std::function<TransferFunction(const TransferFunction&)>& to_z) const {
+  std::vector<TransferFunction> distinct;
+  for (size_t k = 0; k < m.texts.size(); ++k) distinct.push_back(realisable(tf_of(m.texts[k], m.keys[k], var), m.keys[k], to_z));
+  // the states tf2ss will make (each column's common denominator), before it allocates them
+  const auto n = static_cast<size_t>(m.n);
+  std::map<std::vector<int>, long> degree;
+  long states = 0;
+  for (size_t j = 0; j < n; ++j) {
+    std::vector<int> ids;
+    for (size_t i = 0; i < n; ++i) ids.push_back(m.index[i * n + j]);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    auto [it, fresh] = degree.try_emplace(ids, 0);
+    if (fresh) {
+      Polynomial<Q> d(Q(1));
+      for (int id : ids) d = divmod(d * distinct[size_t(id)].den(), gcd(d, distinct[size_t(id)].den())).first;
+      it->second = d.degree();
+    }
+    states += it->second;
+  }
+  const std::string key = m.keys.front().substr(0, m.keys.front().find(' '));
+  if (states + m.n > limits::scene_block_order)
+    fail(key, "realised column by column, the " + std::to_string(m.n) + " x " + std::to_string(m.n) + " matrix has " +
+                  std::to_string(states) + " states and " + std::to_string(m.n) + " inputs, more than the limit of " +
+                  std::to_string(limits::scene_block_order) + " states and inputs together (its exact entries grow as the square)");
+  const bool to_discrete = var != 's' || to_z;
+  return tf2ss(distinct, m.index, n, n, to_discrete ? T : Q(0));
 }
 
 // Numeric eigenvalues, tolerance 1e-9 relative to the pole's size; poles on the axis --

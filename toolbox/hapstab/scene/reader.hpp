@@ -19,6 +19,17 @@
 
 namespace hapstab::scene {
 
+/// A matrix given by diagonal / off_diagonal (docs/scene.md, "Repeated blocks"), kept compact: its
+/// distinct entries and, per entry, which one it is. Entries (i, j) and (k, l) are the same when
+/// the list values that [i] and [j] name in them are equal (rows i and k, columns j and l), so an
+/// N x N matrix over a few classes of DOFs is parsed and realised a few times, not N^2.
+struct CompactMatrix {
+  int n = 0;
+  std::vector<std::string> texts;  ///< the distinct entries, [i] and [j] placed (list values not yet in)
+  std::vector<std::string> keys;   ///< where each was first met: "environment.off_diagonal (row 3, column 7)"
+  std::vector<int> index;          ///< n x n, row-major: entry (i, j) is texts[index[i n + j]]
+};
+
 /// What a section reader knows of the scene so far: the file (for messages), its folder (for
 /// files a scene reads), T and the parameters (for expressions) and the devices' DOFs (for
 /// DOF names).
@@ -63,6 +74,10 @@ struct Reader {
   /// s-domain entry to z (environment discretisation) before realisation.
   StateSpace<rational> block(const toml::table& t, const std::string& key, char var,
                              const std::function<TransferFunction(const TransferFunction&)>& to_z = {}) const;
+  /// The block a CompactMatrix describes (each distinct entry parsed once, mapped by `to_z`,
+  /// realised as tf2ss realises the matrix written out); refused beyond limits::scene_block_order.
+  StateSpace<rational> compact_block(const CompactMatrix& m, char var,
+                                     const std::function<TransferFunction(const TransferFunction&)>& to_z = {}) const;
   /// A continuous block claimed passive: no pole with Re s > 0 (static: D + D^T >= 0).
   void check_passive_claim(const StateSpace<rational>& G, const std::string& key) const;
   /// `text` with every NAME[k] of a list parameter replaced by its exact value "(p/q)" and every
@@ -80,6 +95,9 @@ struct Reader {
   StateSpace<rational> tf_block(const toml::node& n, const std::string& key, char var,
                                 const std::function<TransferFunction(const TransferFunction&)>& to_z) const;
   const std::pair<int, int>& device(const std::string& name, const std::string& key) const;
+  /// tf mapped by to_z (when given), refused at `key` when improper.
+  TransferFunction realisable(TransferFunction tf, const std::string& key,
+                              const std::function<TransferFunction(const TransferFunction&)>& to_z) const;
 };
 
 /// The table root[k], or nullptr when absent; an error when it is not a table.

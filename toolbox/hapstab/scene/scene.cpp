@@ -83,6 +83,25 @@ std::vector<Q> list_values(const toml::array& a, const std::string& key, const R
   return out;
 }
 
+// NAME = { repeat = [v1, ..., vp], times = n }: the values v1 .. vp over and over, n times (p n
+// values: an array of identical devices in p kinds, said once).
+std::vector<Q> repeated_list(const toml::table& t, const std::string& key, const Reader& c) {
+  for (const auto& [k, v] : t)
+    if (k.str() != "repeat" && k.str() != "times")
+      c.fail(key + "." + std::string(k.str()), "not a key of a repeated list (repeat = [values], times = n)");
+  const auto* values = t["repeat"].as_array();
+  if (!values) c.fail(key + ".repeat", "missing or not an array: the values to repeat");
+  const auto times = t["times"].value<int64_t>();
+  if (!times || *times < 1) c.fail(key + ".times", "missing or not a whole number >= 1");
+  const std::vector<Q> once = list_values(*values, key + ".repeat", c);
+  if (double(once.size()) * double(*times) > double(limits::scene_copies))
+    c.fail(key + ".times", std::to_string(once.size()) + " values " + std::to_string(*times) +
+                               " times is more than the limit of " + std::to_string(limits::scene_copies) + " values");
+  std::vector<Q> out;
+  for (int64_t k = 0; k < *times; ++k) out.insert(out.end(), once.begin(), once.end());
+  return out;
+}
+
 // Evaluates the parameters in dependency order (Kahn's topological sort over the names each
 // expression refers to, lti/parse.hpp names_in): each is parsed once, after the parameters it
 // names. (Passes over all of them until none was left took cubic time: 1000 chained
@@ -100,8 +119,9 @@ void resolve_parameters(const std::map<std::string, const toml::node*>& todo, Re
         for (const auto& dep : names_in(text->get()))
           if (todo.count(dep)) deps.insert(dep);
     };
-    if (const auto* list = node->as_array()) for (const auto& v : *list) named(v);
-    else named(*node);
+    const toml::node* values = node->is_table() ? node->as_table()->get("repeat") : node;
+    if (const auto* list = values ? values->as_array() : nullptr) for (const auto& v : *list) named(v);
+    else if (values) named(*values);
     for (const auto& dep : deps) users[dep].push_back(name);
     waiting[name] = deps.size();
   }
@@ -113,6 +133,7 @@ void resolve_parameters(const std::map<std::string, const toml::node*>& todo, Re
     const std::string name = ready.back();
     ready.pop_back();
     if (const auto* list = todo.at(name)->as_array()) c.lists[name] = list_values(*list, "parameters." + name, c);
+    else if (const auto* rep = todo.at(name)->as_table()) c.lists[name] = repeated_list(*rep, "parameters." + name, c);
     else c.params[name] = c.number(*todo.at(name), "parameters." + name);
     ++done;
     for (const auto& user : users[name])
@@ -135,7 +156,7 @@ void read_parameters(const toml::table& root, const std::map<std::string, Q>& ov
   auto todo = parameter_nodes(*p, c);
   for (const auto& [k, v] : overrides) {
     if (!todo.count(k)) c.fail("parameters." + k, "--set names a parameter the scene does not define");
-    if (todo.at(k)->is_array()) c.fail("parameters." + k, "--set gives one value, but " + k + " is a list parameter");
+    if (todo.at(k)->is_array() || todo.at(k)->is_table()) c.fail("parameters." + k, "--set gives one value, but " + k + " is a list parameter");
     todo.erase(k);
     c.params[k] = v;
   }
@@ -269,21 +290,31 @@ std::function<TransferFunction(const TransferFunction&)> s_to_z(C2dMethod cm, co
   };
 }
 
-StateSpace<Q> read_s_domain_block(const toml::table& t, const std::string& key, const Reader& c) {
+StateSpace<Q> read_s_domain_block(const toml::table& t, const std::string& key, const Reader& c,
+                                  const CompactMatrix* compact) {
   const std::string method = t["method"].value_or(std::string());
   if (method.empty()) c.fail(key + ".method", "an s-domain block needs method = \"backward_euler\" or \"tustin\"");
   C2dMethod cm = parse_c2d_method(method, c.file + ": " + key + ".method");
   if (cm == C2dMethod::zoh) c.fail(key + ".method", "zoh of a virtual environment is not rational; use backward_euler or tustin");
-  if (!t.contains("tf")) return c2d<Q>(c.block(t, key, 's'), c.T, cm);
-  StateSpace<Q> G = c.block(t, key, 's', s_to_z(cm, c.T));
+  if (!t.contains("tf") && !compact) return c2d<Q>(c.block(t, key, 's'), c.T, cm);
+  StateSpace<Q> G = compact ? c.compact_block(*compact, 's', s_to_z(cm, c.T)) : c.block(t, key, 's', s_to_z(cm, c.T));
   G.T = c.T;
   return G;
 }
 
+// "[index]" replaced by "[value]" throughout text.
+std::string place(std::string text, const char* index, int value) {
+  const std::string from = std::string("[") + index + "]", to = "[" + std::to_string(value) + "]";
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, 3, to);
+  return text;
+}
+
 // diagonal / off_diagonal -> the N x N tf matrix they describe (docs/scene.md, "Repeated
 // blocks"): entry (i, j) is the diagonal's text (i = j) or the off-diagonal's with [i] the row's
-// number and [j] the column's (from 1). A list indexed by [i] or [j] must hold N values.
-toml::table expand_matrix(const toml::table& t, const std::string& key, const Reader& c) {
+// number and [j] the column's (from 1). A list indexed by [i] or [j] must hold N values. Kept
+// compact (reader.hpp): an entry is the values its [i] and [j] lists take, so rows i and k with
+// the same values there give the same entries.
+CompactMatrix compact_matrix(const toml::table& t, const std::string& key, const Reader& c) {
   if (t.contains("tf") || t.contains("ss")) c.fail(key + ".diagonal", "give either diagonal (and off_diagonal) or tf/ss, not both");
   const auto* d = t["diagonal"].as_string();
   if (!d) c.fail(key + ".diagonal", t.contains("diagonal") ? "expected a string expression" : "off_diagonal needs diagonal");
@@ -298,47 +329,53 @@ toml::table expand_matrix(const toml::table& t, const std::string& key, const Re
                                     std::to_string(c.lists.at(list).size()) + " values by a row or column, but the matrix is " +
                                     std::to_string(c.N) + " x " + std::to_string(c.N) + " (one value per DOF)");
   if (diag.find("[j]") != std::string::npos) c.fail(key + ".diagonal", "[j] (the column) is [i] on the diagonal: write [i]");
-  // the matrix written out is at most what a scene file may hold (load_scene's 64 MB): a few
-  // bytes of scene must not stand for more text to parse than a file could
-  const double bytes = double(c.N) * (double(diag.size()) + double(c.N - 1) * double(off.size()));
-  if (bytes > double(kSceneBytes))
-    c.fail(key + ".diagonal", "the " + std::to_string(c.N) + " x " + std::to_string(c.N) + " matrix written out is " +
-                                  std::to_string(long(bytes / (1 << 20))) + " MB of expressions, more than the " +
-                                  std::to_string(kSceneBytes >> 20) + " MB a scene file may hold");
-  const auto place = [](std::string text, const char* index, int value) {
-    const std::string from = std::string("[") + index + "]", to = "[" + std::to_string(value) + "]";
-    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, 3, to);
-    return text;
+  // the values a text's [index] lists take at k (1..N), numbered in order of first appearance
+  const auto classes = [&](const std::string& text, const char* index) {
+    const auto names = lists_indexed_by(text, index, c);
+    std::map<std::vector<rational>, int> seen;
+    std::vector<int> out;
+    for (int k = 1; k <= c.N; ++k) {
+      std::vector<rational> values;
+      for (const auto& name : names) values.push_back(c.lists.at(name)[size_t(k - 1)]);
+      out.push_back(seen.try_emplace(std::move(values), int(seen.size())).first->second);
+    }
+    return out;
   };
-  toml::array rows;
-  for (int i = 1; i <= c.N; ++i) {
-    toml::array row;
-    const std::string off_i = place(off, "i", i);
-    for (int j = 1; j <= c.N; ++j) row.push_back(i == j ? place(diag, "i", i) : place(off_i, "j", j));
-    rows.push_back(std::move(row));
-  }
-  toml::table out = t;
-  out.erase("diagonal");
-  out.erase("off_diagonal");
-  out.insert_or_assign("tf", std::move(rows));
-  return out;
+  const std::vector<int> diag_class = classes(diag, "i"), row_class = classes(off, "i"), col_class = classes(off, "j");
+  CompactMatrix m;
+  m.n = c.N;
+  m.index.resize(size_t(c.N) * size_t(c.N));
+  std::map<std::pair<int, int>, int> seen;  // (row class, column class) of an off-diagonal entry; (-1, class) on the diagonal
+  for (int i = 1; i <= c.N; ++i)
+    for (int j = 1; j <= c.N; ++j) {
+      const std::pair<int, int> kind = i == j ? std::pair{-1, diag_class[size_t(i - 1)]}
+                                              : std::pair{row_class[size_t(i - 1)], col_class[size_t(j - 1)]};
+      auto [it, fresh] = seen.try_emplace(kind, int(m.texts.size()));
+      if (fresh) {
+        m.texts.push_back(i == j ? place(diag, "i", i) : place(place(off, "i", i), "j", j));
+        m.keys.push_back(key + (i == j ? ".diagonal" : ".off_diagonal") + " (row " + std::to_string(i) + ", column " +
+                         std::to_string(j) + ")");
+      }
+      m.index[size_t(i - 1) * size_t(c.N) + size_t(j - 1)] = it->second;
+    }
+  return m;
 }
 
 std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const char* k, const Reader& c) {
   auto written = section(root, k, c);
   if (!written) return std::nullopt;
   const std::string key = k;
-  std::optional<toml::table> expanded;
-  if (written->contains("diagonal") || written->contains("off_diagonal")) expanded = expand_matrix(*written, key, c);
-  const toml::table* t = expanded ? &*expanded : written;
+  std::optional<CompactMatrix> compact;
+  if (written->contains("diagonal") || written->contains("off_diagonal")) compact = compact_matrix(*written, key, c);
+  const toml::table* t = written;
   const std::string domain = (*t)["domain"].value_or(std::string("z"));
   if (domain != "z" && domain != "s") c.fail(key + ".domain", "expected \"z\" or \"s\"");
   StateSpace<Q> G;
   if (domain == "s") {
-    G = read_s_domain_block(*t, key, c);
+    G = read_s_domain_block(*t, key, c, compact ? &*compact : nullptr);
   } else {
     if (t->contains("method")) c.fail(key + ".method", "only for domain = \"s\"");
-    G = c.block(*t, key, 'z');
+    G = compact ? c.compact_block(*compact, 'z') : c.block(*t, key, 'z');
   }
   if (t->contains("gain")) {  // g E: the outputs scaled, the realisation's states as they are
     const Q g = c.number(*t, "gain", key);
@@ -613,11 +650,17 @@ std::optional<std::vector<std::vector<std::string>>> environment_expressions(con
   c.params = sc.parameters;
   c.lists = sc.lists;
   c.N = sc.loop.dofs();
-  std::optional<toml::table> expanded;
-  if (env->contains("diagonal") || env->contains("off_diagonal")) expanded = expand_matrix(*env, "environment", c);
-  const toml::node* tf = (expanded ? *expanded : *env).get("tf");
-  if (!tf) return std::nullopt;  // an `ss` environment
   std::vector<std::vector<std::string>> E;
+  if (env->contains("diagonal") || env->contains("off_diagonal")) {  // written out, [i] and [j] placed, lists by value
+    const CompactMatrix m = compact_matrix(*env, "environment", c);
+    for (int i = 0; i < m.n; ++i) {
+      E.emplace_back();
+      for (int j = 0; j < m.n; ++j) E.back().push_back(c.expand(m.texts[size_t(m.index[size_t(i * m.n + j)])], "environment"));
+    }
+    return E;
+  }
+  const toml::node* tf = env->get("tf");
+  if (!tf) return std::nullopt;  // an `ss` environment
   if (const auto* one = tf->as_string()) return std::vector<std::vector<std::string>>{{c.expand(one->get(), "environment.tf")}};
   for (const auto& r : *tf->as_array()) {
     E.emplace_back();

@@ -396,8 +396,11 @@ struct Checker {
       const std::string name(name_.str());
       const std::string path = key + "." + name;
       if (s.open) {
-        if (types && !is_exact(v) && !all_of(v, is_exact))
-          fail(v, path + ": expected " + described(T::exact) + " or a list of them, got " + kind_of(v));
+        const auto* rep = v.as_table();  // { repeat = [values], times = n }: its keys and values checked where it is read
+        const bool repeated = rep && rep->get("repeat") && all_of(*rep->get("repeat"), is_exact);
+        if (types && !is_exact(v) && !all_of(v, is_exact) && !repeated)
+          fail(v, path + ": expected " + described(T::exact) + ", a list of them or { repeat = [list], times = n }, got " +
+                      kind_of(v));
         continue;
       }
       const Key* kd = find_key(s, name);
@@ -701,11 +704,14 @@ static std::string repeated_blocks_markdown() {
          "  expressions, as any parameter); in any expression `kc[k]` is its k-th value (from 1) and `sum(kc)` the\n"
          "  exact sum of all of them. A list indexed by `[i]` in a table with count n must hold n values; `kc[k]`\n"
          "  beyond its length, `kc` without an index, `[i]` outside a repeated table and `--set kc=...` are refused\n"
-         "  by name.\n"
+         "  by name. `kc = { repeat = [\"500\", \"600\"], times = 512 }` is the two values over and over, 1024 in\n"
+         "  all: an array of identical devices in a few kinds, said once.\n"
          "- `[environment]` and `[coupling]` may give their N x N matrix (N the number of DOFs) by two entries instead\n"
          "  of `tf`: `diagonal`, entry (i, i) with `[i]` its row, and `off_diagonal`, entry (i, j), i != j, with `[i]`\n"
          "  the row and `[j]` the column (default `\"0\"`). A list they index by `[i]` or `[j]` must hold N values, and the\n"
-         "  matrix written out may hold at most 64 MB of expressions, as a scene file may.\n\n"
+         "  matrix is never written out: entries whose `[i]` and `[j]` lists take the same values are parsed and\n"
+         "  realised once, so a matrix over a few classes of DOFs costs a few entries, and its realisation (column by\n"
+         "  column) may have at most 4096 states and inputs together.\n\n"
          "N devices in contact with one virtual mass M (paper 000's Fig. 5 environment generalised; `bench/contact_scene.py\n"
          "N --compact` writes it for any N, 3.2 KB at N = 128 where the written-out scene is 18 MB):\n\n"
          "```toml\n"

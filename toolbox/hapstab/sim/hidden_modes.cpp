@@ -1,5 +1,6 @@
 #include "hapstab/sim/hidden_modes.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "hapstab/numeric/decimal.hpp"
@@ -15,11 +16,18 @@ namespace {
 // Routh): a factor q^63 of degree 126 costs what q costs. A root is marked unstable when its
 // factor is not exactly stable and its enclosure does not certify it inside (|z| < 1, Re s < 0),
 // so an unstable factor always names at least one root (the enclosures are certified).
-void add_factor(const Polynomial<rational>& p, const std::string& block, const std::string& kind, bool discrete,
+void add_factor(const PolynomialProduct& product, const std::string& block, const std::string& kind, bool discrete,
                 bool marginal_semisimple, std::vector<HiddenMode>& out) {
-  if (p.degree() < 1) return;
   const rational marginal = discrete ? 1 : 0;  // z = 1, s = 0
-  for (const IrreducibleFactor& F : factor_over_q(p)) {
+  // each irreducible factor of the product over Q once, its multiplicities (times the powers) added
+  std::vector<IrreducibleFactor> irreducible;
+  for (const auto& [p, power] : product.factors)
+    for (const IrreducibleFactor& F : factor_over_q(p)) {
+      auto same = std::find_if(irreducible.begin(), irreducible.end(), [&](const IrreducibleFactor& G) { return G.f == F.f; });
+      if (same == irreducible.end()) same = irreducible.insert(irreducible.end(), IrreducibleFactor{F.f, 0});
+      same->multiplicity += F.multiplicity * power;
+    }
+  for (const IrreducibleFactor& F : irreducible) {
     const bool at_marginal = F.f.degree() == 1 && F.f(marginal) == 0;
     const bool settles = at_marginal && marginal_semisimple;
     const bool stable = settles || (discrete ? schur_stable(F.f) : hurwitz_stable(F.f));
@@ -91,33 +99,16 @@ std::vector<HiddenMode> block_hidden_modes(const HiddenModes& h, bool discrete, 
   return out;
 }
 
-namespace {
-// A's eigenvalue z = 1 (s = 0) is semisimple: its algebraic multiplicity (in det(xI - A)) equals
-// its geometric one (the nullity of A - lambda I), exactly. (No such eigenvalue: vacuously true.)
-bool marginal_semisimple(const StateSpace<rational>& s) {
-  const rational lambda = s.is_discrete() ? 1 : 0;
-  Polynomial<rational> p = charpoly(s.A);
-  const Polynomial<rational> lin(std::vector<rational>{-lambda, rational(1)});
-  long alg = 0;
-  while (p.degree() > 0 && p(lambda) == 0) {
-    p = divmod(p, lin).first;
-    ++alg;
-  }
-  if (alg == 0) return true;
-  const MatQ shifted = s.A - MatQ::Identity(s.A.rows(), s.A.cols()) * lambda;
-  return s.A.rows() - exact_rank(shifted) == alg;
-}
-}  // namespace
-
 LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environment) {
   LoopHiddenModes r;
   auto add = [&](const StateSpace<rational>& s, const std::string& name, const HiddenModes* known = nullptr,
                  std::optional<StateSpace<rational>>* minimal = nullptr) {
     if (s.states() == 0) return;
-    const HiddenModes h = known ? *known : hapstab::hidden_modes(s);
-    const bool marginal = (s.is_discrete() ? h.uncontrollable(rational(1)) == 0 || h.unobservable(rational(1)) == 0
-                                           : h.uncontrollable(rational(0)) == 0 || h.unobservable(rational(0)) == 0) &&
-                          marginal_semisimple(s);
+    std::optional<HiddenModes> own;  // a known block's are not copied (a large environment's minimal realisation is big)
+    const HiddenModes& h = known ? *known : own.emplace(hapstab::hidden_modes(s));
+    const rational at = s.is_discrete() ? 1 : 0;  // z = 1, s = 0
+    const bool marginal = (h.uncontrollable.vanishes_at(at) || h.unobservable.vanishes_at(at)) &&
+                          h.marginal_semisimple.value_or(semisimple_eigenvalue(s.A, at));
     for (auto& m : block_hidden_modes(h, s.is_discrete(), name, marginal)) r.modes.push_back(std::move(m));
     if (minimal && h.any()) *minimal = h.minimal;
   };

@@ -318,15 +318,17 @@ HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rat
   const HiddenModes f = hidden_modes(*s.fixed.environment);
   h.uncontrollable = f.uncontrollable;
   h.unobservable = f.unobservable;
+  // z = 1 semisimple in the whole A iff in each part of the direct sum (multiplicities add)
+  bool semisimple = semisimple_eigenvalue(s.fixed.environment->A, rational(1));
   std::vector<std::optional<HiddenModes>> by_class(s.classes.size());
   std::vector<const StateSpace<rational>*> minimal(s.classes.size(), nullptr);
   for (size_t k = 0; k < s.standard.size(); ++k) {
     const auto a = static_cast<size_t>(s.standard_class[k]);
     by_class[a] = hidden_modes(*s.standard[k].environment);
-    for (size_t copy = 1; copy < s.classes[a].size(); ++copy) {
-      h.uncontrollable = h.uncontrollable * by_class[a]->uncontrollable;
-      h.unobservable = h.unobservable * by_class[a]->unobservable;
-    }
+    const int copies = static_cast<int>(s.classes[a].size()) - 1;
+    h.uncontrollable.multiply(by_class[a]->uncontrollable, copies);
+    h.unobservable.multiply(by_class[a]->unobservable, copies);
+    semisimple = semisimple && semisimple_eigenvalue(s.standard[k].environment->A, rational(1));
     minimal[a] = &by_class[a]->minimal;
   }
   if (!s.isolated.empty()) {  // no input reaches them: uncontrollable, all of them
@@ -334,8 +336,10 @@ HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rat
     for (size_t i = 0; i < s.isolated.size(); ++i)
       for (size_t k = 0; k < s.isolated.size(); ++k)
         Ai(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = E.A(s.isolated[i], s.isolated[k]);
-    h.uncontrollable = h.uncontrollable * charpoly(Ai).monic();
+    h.uncontrollable.multiply(charpoly(Ai).monic());
+    semisimple = semisimple && semisimple_eigenvalue(Ai, rational(1));
   }
+  h.marginal_semisimple = semisimple;
   h.minimal = lift_realisation(s.classes, f.minimal, minimal, static_cast<int>(E.inputs()));
   return h;
 }
