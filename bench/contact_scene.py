@@ -65,8 +65,10 @@ def behind_chain(chain):
         behind = 'M*s^2 + 2*(k + B*s)' + (f' - (k + B*s)^2/({behind})' if behind else '')
     return behind
 
-def compact_scene(n, delay=0, chain=1):
-    """scene(n, 1, delay, chain) with its repetition said once (one object)."""
+def compact_scene(n, delay=0, chain=1, objects=1):
+    """scene(n, objects, delay, chain) with its repetition said once: E by its diagonal and
+    off-diagonal entries, `blocks = K` for K objects (each of N/K devices, a multiple of 4, so
+    that every object has the same contact sums SB, SK)."""
     ks = [str(500 + 100 * ((i - 1) % 4)) for i in range(1, n + 1)]
     bs = [["1", "2", "3/2", "5/2"][(i - 1) % 4] for i in range(1, n + 1)]
     gs = [["0.1", "0.05", "0.08", "0.06"][(i - 1) % 4] for i in range(1, n + 1)]
@@ -74,15 +76,21 @@ def compact_scene(n, delay=0, chain=1):
     lst = lambda v: ('{ repeat = [' + ', '.join(f'"{x}"' for x in v[:4]) + f'], times = {n // 4} }}' if n % 4 == 0 and n > 4
                      else '[' + ', '.join(f'"{x}"' for x in v) + ']')
     behind = behind_chain(chain)
-    den = '(M*s^2 + (B + sum(Bc))*s + k + sum(kc)' + (f' - (k + B*s)^2/({behind})' if behind else '') + ')'
-    out = ['[scene]', f'name = "case ii, {n} contact points on one mass"', 'T = "0.01"', '',
+    sums = ('sum(Bc)', 'sum(kc)') if objects == 1 else ('SB', 'SK')
+    den = f'(M*s^2 + (B + {sums[0]})*s + k + {sums[1]}' + (f' - (k + B*s)^2/({behind})' if behind else '') + ')'
+    per = n // objects
+    where = 'one mass' if objects == 1 else f'{objects} masses'
+    out = ['[scene]', f'name = "case ii, {n} contact points on {where}"', 'T = "0.01"', '',
            '[parameters]', 'M = "0.3"', 'k = "1000"', 'B = "5"',
-           f'kc = {lst(ks)}', f'Bc = {lst(bs)}', f'g = {lst(gs)}', '',
+           f'kc = {lst(ks)}', f'Bc = {lst(bs)}', f'g = {lst(gs)}']
+    if objects > 1:  # each object's N/K contacts: N/(4K) of each of the 4 kinds
+        out += [f'SB = "{per // 4}*(1 + 2 + 3/2 + 5/2)"', f'SK = "{per // 4}*(500 + 600 + 700 + 800)"']
+    out += ['',
            '[[device]]', f'count = {n}', 'name = "d"', 'm = "1/10"', 'b = "1.37"', '',
            '[[operator]]', f'count = {n}', 'name = "H"', 'dofs = "d[i]"', 'tf = "g[i]*(s^2+5*s+10)/(s^2+s+1)"', '',
            '[environment]', 'domain = "s"', 'method = "backward_euler"',
            f'diagonal = "kc[i] + Bc[i]*s - (kc[i] + Bc[i]*s)^2/{den}"',
-           f'off_diagonal = "-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/{den}"', '']
+           f'off_diagonal = "-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/{den}"'] + ([f'blocks = {objects}'] if objects > 1 else []) + ['']
     if delay:
         out += ['[delay]', f'samples = "{delay}"', '']
     out += ['[multidof]', 'qv_block_diagonal = false']
@@ -94,11 +102,11 @@ if __name__ == '__main__':
     ap.add_argument('--objects', type=int, default=1, help='separate virtual objects (1..N)')
     ap.add_argument('--delay', type=int, default=0, help='network delay in samples')
     ap.add_argument('--chain', type=int, default=1, help='masses per object, in a chain (1..32)')
-    ap.add_argument('--compact', action='store_true', help='say the repetition once (count, list parameters; one object)')
+    ap.add_argument('--compact', action='store_true', help='say the repetition once (count, list parameters, blocks = K)')
     a = ap.parse_args()
     if not 1 <= a.N <= (4096 if a.compact else 256) or not 1 <= a.objects <= a.N or a.delay < 0 or not 1 <= a.chain <= 32:
         sys.exit('usage: bench/contact_scene.py N [--objects K] [--delay D] [--chain C] [--compact]   (1 <= K <= N <= 256, '
                  'N <= 4096 with --compact, D >= 0, 1 <= C <= 32)')
-    if a.compact and a.objects != 1:
-        sys.exit('bench/contact_scene.py: --compact writes one object (its E is one diagonal and one off-diagonal entry); drop --objects')
-    sys.stdout.write(compact_scene(a.N, a.delay, a.chain) if a.compact else scene(a.N, a.objects, a.delay, a.chain))
+    if a.compact and a.objects != 1 and (a.N % a.objects or (a.N // a.objects) % 4):
+        sys.exit('bench/contact_scene.py: --compact with --objects K needs N/K devices per object, a multiple of 4')
+    sys.stdout.write(compact_scene(a.N, a.delay, a.chain, a.objects) if a.compact else scene(a.N, a.objects, a.delay, a.chain))

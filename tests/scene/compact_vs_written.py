@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Issue 48 item 1: a scene that says what is repeated (bench/contact_scene.py N --compact: count,
-list parameters, E by its diagonal and off-diagonal entries) gives the SAME output as the scene
+list parameters, E by its diagonal and off-diagonal entries, `blocks = K` for K objects) gives the SAME output as the scene
 written out (bench/contact_scene.py N) under `multidof analyze --json` and `stability --scene
 --json`: same exit code, same JSON but for the run times ("seconds") and the names the two forms
-give the copies (d[k], H[k] against dk, Hk). Also: the compact 128-device scene is under 10 KB.
+give the copies (d[k], H[k] against dk, Hk). Also: the compact 128- and 1024-device scenes (one
+object, and 16 objects of 64) are under 10 KB.
 
 Usage: compact_vs_written.py HAPSTAB [N ...]   (default N = 4 8; exit 1 on any difference)
 """
@@ -41,14 +42,15 @@ def run(hapstab, args):
 def main():
     hapstab, ns = sys.argv[1], [int(a) for a in sys.argv[2:]] or [4, 8]
     failures = 0
-    size = len(generate(128, '--compact').encode())
-    print(f'compact 128-device scene: {size} bytes')
-    if size >= 10 * 1024:
-        print('FAIL: the compact 128-device scene is not under 10 KB')
-        failures += 1
+    for n, extra in ((128, []), (1024, []), (1024, ['--objects', '16'])):
+        size = len(generate(n, '--compact', *extra).encode())
+        print(f'compact {n}-device scene {" ".join(extra)}: {size} bytes')
+        if size >= 10 * 1024:
+            print(f'FAIL: the compact {n}-device scene {" ".join(extra)} is not under 10 KB')
+            failures += 1
     with tempfile.TemporaryDirectory() as d:
         for n in ns:
-            for extra in ([], ['--delay', '1']):
+            for extra in ([], ['--delay', '1']) + ((['--objects', '2'],) if n % 8 == 0 else ()):
                 files = {}
                 for form, flags in (('written', []), ('compact', ['--compact'])):
                     files[form] = os.path.join(d, f'{form}{n}.toml')

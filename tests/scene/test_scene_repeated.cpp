@@ -185,6 +185,23 @@ off_diagonal = "-kc[i]*kc[j]/(s + 1/2*kc[j] + sum(kc))"
   bad("{ repeat = [\"1\", \"x\"], times = 3 }", "parameters.kc.repeat[2]");
   bad("{ repeat = [\"1\", \"2\"], times = 3000 }", "more than the limit of 4096 values");
   bad("{ times = 3 }", "parameters.kc.repeat: missing or not an array");
+  // blocks = K: K diagonal blocks, entries between them 0 (the matrix written out with "0" there)
+  const std::string two = kHead + "[parameters]\nkc = [\"1\", \"2\", \"3\", \"4\"]\n[[device]]\ncount = 4\nname = \"d\"\nm = \"1\"\n"
+                          "[environment]\ndiagonal = \"kc[i]\"\noff_diagonal = \"-kc[i]*kc[j]/10\"\n";
+  const auto blocked = parse_scene(two + "blocks = 2\n", "b.toml");
+  ASSERT_TRUE(blocked.loop.environment);
+  const MatQ& D = blocked.loop.environment->D;
+  EXPECT_EQ(D(0, 1), rational(-2, 10));
+  EXPECT_EQ(D(2, 3), rational(-12, 10));
+  EXPECT_EQ(D(0, 2), rational(0));
+  EXPECT_EQ(D(3, 1), rational(0));
+  EXPECT_EQ(D(1, 1), rational(2));
+  for (const char* k : {"3", "0", "\"2\"", "5"}) {
+    const std::string e = error_of(two + "blocks = " + k + "\n");
+    EXPECT_NE(e.find("environment.blocks: expected a whole number K >= 1 that divides the 4 DOFs"), std::string::npos) << k << ": " << e;
+  }
+  const std::string lone = error_of(kHead + "[[device]]\nname = \"d\"\nm = \"1\"\n[environment]\ntf = \"1\"\nblocks = 1\n");
+  EXPECT_NE(lone.find("environment.blocks: only with diagonal"), std::string::npos) << lone;
 }
 
 TEST(SceneRepeated, WrongCountsAreRefusedByName) {

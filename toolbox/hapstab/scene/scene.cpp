@@ -315,6 +315,7 @@ std::string place(std::string text, const char* index, int value) {
 // compact (reader.hpp): an entry is the values its [i] and [j] lists take, so rows i and k with
 // the same values there give the same entries.
 CompactMatrix compact_matrix(const toml::table& t, const std::string& key, const Reader& c) {
+  if (t.contains("blocks") && !t.contains("diagonal")) c.fail(key + ".blocks", "only with diagonal (and off_diagonal)");
   if (t.contains("tf") || t.contains("ss")) c.fail(key + ".diagonal", "give either diagonal (and off_diagonal) or tf/ss, not both");
   const auto* d = t["diagonal"].as_string();
   if (!d) c.fail(key + ".diagonal", t.contains("diagonal") ? "expected a string expression" : "off_diagonal needs diagonal");
@@ -329,6 +330,15 @@ CompactMatrix compact_matrix(const toml::table& t, const std::string& key, const
                                     std::to_string(c.lists.at(list).size()) + " values by a row or column, but the matrix is " +
                                     std::to_string(c.N) + " x " + std::to_string(c.N) + " (one value per DOF)");
   if (diag.find("[j]") != std::string::npos) c.fail(key + ".diagonal", "[j] (the column) is [i] on the diagonal: write [i]");
+  int blocks = 1;  // blocks = K: K diagonal blocks of N/K DOFs, entries between them 0
+  if (t.contains("blocks")) {
+    const auto k = t["blocks"].value<int64_t>();
+    if (!t["blocks"].is_integer() || !k || *k < 1 || *k > c.N || c.N % *k != 0)
+      c.fail(key + ".blocks", "expected a whole number K >= 1 that divides the " + std::to_string(c.N) +
+                                  " DOFs (K diagonal blocks of N/K DOFs each)");
+    blocks = int(*k);
+  }
+  const int per_block = c.N / blocks;
   // the values a text's [index] lists take at k (1..N), numbered in order of first appearance
   const auto classes = [&](const std::string& text, const char* index) {
     const auto names = lists_indexed_by(text, index, c);
@@ -348,11 +358,13 @@ CompactMatrix compact_matrix(const toml::table& t, const std::string& key, const
   std::map<std::pair<int, int>, int> seen;  // (row class, column class) of an off-diagonal entry; (-1, class) on the diagonal
   for (int i = 1; i <= c.N; ++i)
     for (int j = 1; j <= c.N; ++j) {
-      const std::pair<int, int> kind = i == j ? std::pair{-1, diag_class[size_t(i - 1)]}
-                                              : std::pair{row_class[size_t(i - 1)], col_class[size_t(j - 1)]};
+      const bool apart = (i - 1) / per_block != (j - 1) / per_block;  // in two blocks: 0
+      const std::pair<int, int> kind = apart    ? std::pair{-2, 0}
+                                       : i == j ? std::pair{-1, diag_class[size_t(i - 1)]}
+                                                : std::pair{row_class[size_t(i - 1)], col_class[size_t(j - 1)]};
       auto [it, fresh] = seen.try_emplace(kind, int(m.texts.size()));
       if (fresh) {
-        m.texts.push_back(i == j ? place(diag, "i", i) : place(place(off, "i", i), "j", j));
+        m.texts.push_back(apart ? std::string("0") : i == j ? place(diag, "i", i) : place(place(off, "i", i), "j", j));
         m.keys.push_back(key + (i == j ? ".diagonal" : ".off_diagonal") + " (row " + std::to_string(i) + ", column " +
                          std::to_string(j) + ")");
       }
@@ -366,7 +378,7 @@ std::optional<StateSpace<Q>> read_discrete_block(const toml::table& root, const 
   if (!written) return std::nullopt;
   const std::string key = k;
   std::optional<CompactMatrix> compact;
-  if (written->contains("diagonal") || written->contains("off_diagonal")) compact = compact_matrix(*written, key, c);
+  if (written->contains("diagonal") || written->contains("off_diagonal") || written->contains("blocks")) compact = compact_matrix(*written, key, c);
   const toml::table* t = written;
   const std::string domain = (*t)["domain"].value_or(std::string("z"));
   if (domain != "z" && domain != "s") c.fail(key + ".domain", "expected \"z\" or \"s\"");
@@ -651,7 +663,7 @@ std::optional<std::vector<std::vector<std::string>>> environment_expressions(con
   c.lists = sc.lists;
   c.N = sc.loop.dofs();
   std::vector<std::vector<std::string>> E;
-  if (env->contains("diagonal") || env->contains("off_diagonal")) {  // written out, [i] and [j] placed, lists by value
+  if (env->contains("diagonal") || env->contains("off_diagonal") || env->contains("blocks")) {  // written out, [i] and [j] placed, lists by value
     const CompactMatrix m = compact_matrix(*env, "environment", c);
     for (int i = 0; i < m.n; ++i) {
       E.emplace_back();

@@ -3,6 +3,7 @@
 
 #include <map>
 #include <numeric>
+#include <set>
 
 namespace hapstab::stability::detail {
 
@@ -135,6 +136,28 @@ bool entries_invariant(const Block& b, const std::vector<int>& class_of, size_t 
   return true;
 }
 
+/// The parts of the loop no block couples: i and j in one part when entry (i, j) or (j, i) of
+/// some block is not zero (its D entry, or row i of C on column j's states).
+std::vector<int> coupled_parts(const std::vector<Block>& blocks, int N) {
+  std::vector<int> parent(static_cast<size_t>(N));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[static_cast<size_t>(i)] != i) i = parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    return i;
+  };
+  for (const Block& b : blocks)
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        if (i == j || root(i) == root(j)) continue;
+        bool zero = b.G->D(i, j) == 0;
+        for (Eigen::Index k : b.own(j)) zero = zero && b.G->C(i, k) == 0;
+        if (!zero) parent[static_cast<size_t>(root(i))] = root(j);
+      }
+  std::vector<int> part(static_cast<size_t>(N));
+  for (int i = 0; i < N; ++i) part[static_cast<size_t>(i)] = root(i);
+  return part;
+}
+
 /// The block on the fixed space: the states of the classes' first DOFs, its entries summed over
 /// each class's columns.
 StateSpace<rational> fixed_block(const Block& b, const std::vector<std::vector<int>>& classes) {
@@ -224,16 +247,29 @@ std::optional<LoopSymmetry> split_by_symmetry(const sim::LoopSpec& spec, std::st
   }
   LoopSymmetry s;
   std::vector<int> class_of(static_cast<size_t>(N));
-  for (int i = 0; i < N; ++i) {
-    size_t a = 0;
-    while (a < s.classes.size() && !alike(spec, *op_of, blocks, s.classes[a][0], i)) ++a;
-    if (a == s.classes.size()) s.classes.emplace_back();
-    s.classes[a].push_back(i);
-    class_of[static_cast<size_t>(i)] = static_cast<int>(a);
+  // classes of alike DOFs; where their entries are not invariant, the same within each part of
+  // the loop that no block couples to the rest (separate objects: the classes never mix two)
+  std::vector<int> part(static_cast<size_t>(N), 0);
+  for (int pass = 0; pass < 2; ++pass) {
+    s.classes.clear();
+    for (int i = 0; i < N; ++i) {
+      size_t a = 0;
+      while (a < s.classes.size() && (part[static_cast<size_t>(s.classes[a][0])] != part[static_cast<size_t>(i)] ||
+                                      !alike(spec, *op_of, blocks, s.classes[a][0], i)))
+        ++a;
+      if (a == s.classes.size()) s.classes.emplace_back();
+      s.classes[a].push_back(i);
+      class_of[static_cast<size_t>(i)] = static_cast<int>(a);
+    }
+    if (s.classes.size() == static_cast<size_t>(N)) return std::nullopt;  // no two DOFs alike: nothing to name
+    bool invariant = true;
+    for (const Block& b : blocks) invariant = invariant && entries_invariant(b, class_of, s.classes.size(), why_not);
+    if (invariant) break;
+    const std::vector<int> parts = coupled_parts(blocks, N);
+    if (pass == 1 || parts == part || std::set<int>(parts.begin(), parts.end()).size() == 1) return std::nullopt;
+    part = parts;
+    why_not.clear();
   }
-  if (s.classes.size() == static_cast<size_t>(N)) return std::nullopt;  // no two DOFs alike: nothing to name
-  for (const Block& b : blocks)
-    if (!entries_invariant(b, class_of, s.classes.size(), why_not)) return std::nullopt;
   std::vector<bool> in_column(static_cast<size_t>(spec.environment->states()), false);
   for (const auto& c : blocks[0].cols)
     for (Eigen::Index k : c) in_column[static_cast<size_t>(k)] = true;
