@@ -229,7 +229,18 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider, const sim::L
     out.why = "the loop has " + nl + ", which the Schur test of the linear loop does not model (`hapstab simulate` does)";
     return out;
   }
-  out.hidden = hidden ? *hidden : sim::hidden_modes(spec);
+  // identical DOFs: the environment's hidden modes from the split's blocks (Kalman decompositions
+  // of their order, not of the whole's: a 1024-device environment has 3072 states)
+  std::string no_symmetry;  // why the symmetry of identical DOFs is not used ("" when none)
+  const auto sym = detail::split_by_symmetry(spec, no_symmetry);
+  if (hidden) {
+    out.hidden = *hidden;
+  } else if (sym) {
+    const HiddenModes env = detail::environment_hidden_modes(*sym, *spec.environment);
+    out.hidden = sim::hidden_modes(spec, &env);
+  } else {
+    out.hidden = sim::hidden_modes(spec);
+  }
   if (!out.hidden.stable()) {
     out.stable = false;
     out.status = Status::exact;
@@ -241,9 +252,7 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider, const sim::L
   }
   if (decider != Decider::matrix && one_dof(spec))
     if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
-  std::string no_symmetry;  // why the symmetry of identical DOFs is not used ("" when none)
-  if (decider == Decider::automatic)
-    if (const auto sym = detail::split_by_symmetry(spec, no_symmetry)) return by_symmetry(*sym, out);
+  if (decider == Decider::automatic && sym) return by_symmetry(*sym, out);
   // the discrete blocks' hidden modes are stable: the matrix on their minimal realisations has
   // the same stability and fewer states (sim/hidden_modes.hpp)
   sim::LoopSpec L = spec;
