@@ -154,7 +154,11 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
   const long folded = static_cast<long>(pb.E.states()) + static_cast<long>(sp.delay) * N;
   // a symmetric scene's analysis works on its blocks (multidof/symmetry.hpp), and refuses the
   // whole program beyond the limit only if the split does not decide (analyze_scene_lmis)
-  if (folded > limits::multidof_states && (use == SceneUse::design || !sp.symmetric || sp.delay > 0))
+  if (folded > limits::multidof_states && sp.delay == 0 && (use == SceneUse::design || !sp.symmetric))
+    throw InputError(f + "E has " + std::to_string(folded) + " states (reduced), more than the limit of " +
+                     std::to_string(limits::multidof_states) + " that multidof " + (use == SceneUse::design ? "design" : "analyze") +
+                     " models" + (use == SceneUse::design && sp.symmetric ? " (Theorem 6 is not split by the symmetry of identical DOFs; `multidof analyze` splits Theorem 5)" : ""));
+  if (folded > limits::multidof_states)
     throw InputError(f + "[delay] of " + std::to_string(sp.delay) + " samples folds " + std::to_string(sp.delay * N) +
                      " shift states into E (" + std::to_string(folded) + " states with E's own " +
                      std::to_string(pb.E.states()) + "), more than the limit of " + std::to_string(limits::multidof_states) +
