@@ -158,7 +158,7 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
     throw InputError(f + "E has " + std::to_string(folded) + " states (reduced), more than the limit of " +
                      std::to_string(limits::multidof_states) + " that multidof " + (use == SceneUse::design ? "design" : "analyze") +
                      " models" + (use == SceneUse::design && sp.symmetric ? " (Theorem 6 is not split by the symmetry of identical DOFs; `multidof analyze` splits Theorem 5)" : ""));
-  if (folded > limits::multidof_states)
+  if (folded > limits::multidof_states && sp.delay > 0)
     throw InputError(f + "[delay] of " + std::to_string(sp.delay) + " samples folds " + std::to_string(sp.delay * N) +
                      " shift states into E (" + std::to_string(folded) + " states with E's own " +
                      std::to_string(pb.E.states()) + "), more than the limit of " + std::to_string(limits::multidof_states) +
