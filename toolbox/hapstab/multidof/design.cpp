@@ -243,7 +243,7 @@ Verification osp_level_item(const OspLevel& l) {
 
 // V is Schur stable iff every diagonal block of its (block diagonal) A_V is: Schur-Cohn on each
 // det(zI - A_b) (exact), or a Lyapunov certificate where environment.hpp's schur_stable uses one.
-Verification schur_item(const std::vector<MatQ>& blocks) {
+Verification schur_item(const std::vector<MatQ>& blocks, long copies = 0) {
   bool stable = true, lyapunov = false;
   std::string how;
   for (const MatQ& A : blocks) {
@@ -254,11 +254,11 @@ Verification schur_item(const std::vector<MatQ>& blocks) {
     if (!stable) break;
   }
   const char* name = "V is Schur stable (exact)";
-  if (blocks.size() == 1) return {name, lyapunov ? Verdict::of(stable, Status::certified, how)
+  if (blocks.size() == 1 && copies <= 1) return {name, lyapunov ? Verdict::of(stable, Status::certified, how)
                                                  : Verdict::of(stable, Status::exact, "Schur-Cohn on det(zI - A_V)")};
   return {name, Verdict::of(stable, lyapunov ? Status::certified : Status::exact,
                             "Schur-Cohn on det(zI - A_b) of each of the " + std::to_string(blocks.size()) +
-                                " diagonal blocks of A_V" + (lyapunov ? " (a Lyapunov certificate for some: " + how + ")" : ""))};
+                                (copies > static_cast<long>(blocks.size()) ? " distinct diagonal block(s) of A_V (" + std::to_string(copies) + " blocks in all)" : " diagonal blocks of A_V") + (lyapunov ? " (a Lyapunov certificate for some: " + how + ")" : ""))};
 }
 
 }  // namespace
@@ -346,7 +346,7 @@ MatQ square(const MatQ& M, const CouplingBlock& b) { return M.block(b.c, b.c, b.
 std::string qe_text(const KypMinPoint& mp) {
   const bool scalar = mp.env.QE == MatQ(mp.env.QE(0, 0) * MatQ::Identity(mp.env.QE.rows(), mp.env.QE.rows()));
   std::ostringstream o;
-  o << (scalar ? "r I with r = " : "s Delta_D X with s = ") << to_real<double>(mp.r);
+  o << (scalar ? "r I with r = " : "s Delta_D X with s = ") << to_real<double>(scalar ? mp.env.QE(0, 0) : mp.r);
   return o.str();
 }
 
@@ -372,6 +372,28 @@ StateSpace<rational> block_of(const StateSpace<rational>& V, const CouplingBlock
   return Vb;
 }
 
+// The first block that poses the same problem as block i (its size and its squares of K, X and
+// Q_V equal, exactly): the identical devices of an array. CCL is deterministic, so one run serves
+// every copy, and a check of one block holds for each of its copies (the same matrices).
+std::vector<size_t> representatives(const std::vector<CouplingBlock>& blocks, const MatQ& K, const MatQ& X, const MatQ& QV) {
+  std::vector<size_t> rep(blocks.size());
+  std::vector<size_t> distinct;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const CouplingBlock& b = blocks[i];
+    rep[i] = i;
+    for (size_t j : distinct) {
+      const CouplingBlock& c = blocks[j];
+      if (b.m == c.m && b.n == c.n && square(K, b) == square(K, c) && square(X, b) == square(X, c) &&
+          square(QV, b) == square(QV, c)) {
+        rep[i] = j;
+        break;
+      }
+    }
+    if (rep[i] == i) distinct.push_back(i);
+  }
+  return rep;
+}
+
 // Lemma 1 for a block diagonal V-hat with block diagonal X and Q_V holds iff it holds for every
 // block: P_V = blockdiag(P_V,b) from the blocks' certificates, and each block's LMI is a principal
 // submatrix of the whole one. holds (proven) when every block holds (proven); fails when one fails.
@@ -393,8 +415,16 @@ Verdict all_blocks(const std::vector<Verdict>& v, const std::string& what) {
 // the blocks' storage functions; V's stability block by block. nullopt when the block-wise
 // Theorem 4 certificate does not hold (the caller then runs verify_coupling).
 std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, const StateSpace<rational>& V,
-                                                          const std::vector<CouplingBlock>& blocks, const MatQ& K,
-                                                          const KypMinPoint& mp, const lmi::Options& opt) {
+                                                          const std::vector<CouplingBlock>& all, const std::vector<size_t>& rep,
+                                                          const MatQ& K, const KypMinPoint& mp, const lmi::Options& opt) {
+  // the distinct blocks only: V's copies of a block are the same matrices (design_blockwise_at)
+  std::vector<CouplingBlock> blocks;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (rep[i] == i) blocks.push_back(all[i]);
+  for (size_t i = 0; i < all.size(); ++i)  // the copies are checked equal, not assumed
+    if (rep[i] != i && !(block_of(V, all[i]).A == block_of(V, all[rep[i]]).A && block_of(V, all[i]).B == block_of(V, all[rep[i]]).B &&
+                         block_of(V, all[i]).C == block_of(V, all[rep[i]]).C && block_of(V, all[i]).D == block_of(V, all[rep[i]]).D))
+      return std::nullopt;
   std::vector<StateSpace<rational>> Vb;
   std::vector<MatQ> Kb, Ab;
   for (const auto& b : blocks) {
@@ -405,8 +435,11 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
   std::vector<Verdict> lemma1;
   for (size_t i = 0; i < blocks.size(); ++i)
     lemma1.push_back(check_vhat_lemma1(Vb[i], Kb[i], square(mp.env.X, blocks[i]), square(mp.QV, blocks[i]), opt).verdict);
+  const std::string copies = blocks.size() < all.size() ? " (" + std::to_string(blocks.size()) + " distinct block(s) of " +
+                                                              std::to_string(all.size()) + ", each copy the same matrices)"
+                                                        : "";
   const Verdict l1 = all_blocks(lemma1, "block-wise: V and K block diagonal, X and Q_V diagonal, so Lemma 1 for "
-                                        "Vhat^Gamma holds iff it holds for each block (P_V = blockdiag(P_V,b))");
+                                        "Vhat^Gamma holds iff it holds for each block (P_V = blockdiag(P_V,b))" + copies);
   if (!(mp.certified && l1.holds() && l1.proven())) return std::nullopt;
   std::vector<Verification> out;
   out.push_back({"Vhat^Gamma OSP level >= Gamma^-1 Q_V Gamma^-1 (Lemma 1, non-strict, facial reduction)", l1});
@@ -434,26 +467,28 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
   out.push_back({"Theorem 4 / condition (14) with computed levels (block-wise: X, Q_E, Q_V at the structured path's "
                  "point; P_E, P_V found)",
                  {Outcome::holds, Status::exact, o.str()}});
-  out.push_back(schur_item(Ab));
+  out.push_back(schur_item(Ab, static_cast<long>(all.size())));
   return out;
 }
 
-// Theorem 6 block by block (design.hpp), its premises checked by blockwise_premises. nullopt
-// (with `why`) when the structured point or a block's CCL finds nothing: the planner moves on.
-std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
-                                             const DesignOptions& opt, std::string& why) {
+}  // namespace
+
+// Theorem 6 block by block (design.hpp) at a certified point of (16) whose X and Q_V are
+// diagonal: one CCL per distinct block of V. nullopt (with `why`) when a block's CCL finds
+// nothing: the caller moves on.
+std::optional<DesignResult> detail::design_blockwise_at(const Problem& pb, const KypMinPoint& point,
+                                                        const DesignOptions& opt, std::string& why) {
+  const KypMinPoint* mp = &point;
   const int m = pb.structure.m();
   const std::vector<CouplingBlock> blocks = coupling_blocks(pb.coupling);
   const MatQ K = pb.structure.K(pb.T());
-  const std::optional<KypMinPoint> mp = kyp_min_point(pb, sp, fc);
-  if (!mp) {
-    why = "no Riccati point along Q_E = r I or s Delta_D X (Delta_D X not diagonal, or no stabilising solution)";
-    return std::nullopt;
-  }
   if (!mp->certified) {
     why = "the structured least dissipative point failed the exact re-check (" + mp->why + ")";
     return std::nullopt;
   }
+  const std::vector<size_t> rep = representatives(blocks, K, mp->env.X, mp->QV);
+  size_t distinct = 0;
+  for (size_t i = 0; i < rep.size(); ++i) distinct += rep[i] == i;
   // each block designed for (1 + kBlockwiseMargin) Q_V (diagonal), verified at Q_V
   const double T = to_real<double>(pb.T());
   const MatrixXd X = to_double(mp->env.X);
@@ -468,7 +503,16 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   res.V.D = MatQ::Zero(m, m);
   std::vector<std::vector<double>> histories;
   int unconverged = 0;
-  for (const CouplingBlock& b : blocks) {
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const CouplingBlock& b = blocks[i];
+    if (rep[i] != i) {  // a copy: the representative's V (designed earlier: rep[i] < i)
+      const CouplingBlock& r = blocks[rep[i]];
+      res.V.A.block(b.s, b.s, b.n, b.n) = res.V.A.block(r.s, r.s, r.n, r.n);
+      res.V.B.block(b.s, b.c, b.n, b.m) = res.V.B.block(r.s, r.c, r.n, r.m);
+      res.V.C.block(b.c, b.s, b.m, b.n) = res.V.C.block(r.c, r.s, r.m, r.n);
+      res.V.D.block(b.c, b.c, b.m, b.m) = res.V.D.block(r.c, r.c, r.m, r.m);
+      continue;
+    }
     const CouplingStructure cb{{b.m}, {b.n}};
     const MatrixXd Kb = to_double(square(K, b));
     const MatrixXd Sigma = to_double(MatQ(square(mp->QV, b) * (1 + kBlockwiseMargin))).inverse();
@@ -480,7 +524,7 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
         },
         b.n + b.m, false, b.m, opt);
     if (!run.started) {  // no point for this block: the generic design decides
-      why = "CCL found no starting point for block " + std::to_string(&b - blocks.data() + 1) + " of V";
+      why = "CCL found no starting point for block " + std::to_string(i + 1) + " of V";
       return std::nullopt;
     }
     StateSpace<rational> Vb = coupling_from(pb.T(), b.n, run.last, run.dv, gamma.segment(b.c, b.m));
@@ -508,17 +552,32 @@ std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit&
   res.gamma_sqrt = gamma_sqrt(pb, X);
   res.Q_V = to_double(mp->QV);
   res.delta_V = gamma_inv_scale(res.Q_V, X);
-  std::optional<std::vector<Verification>> checks = verify_blockwise(pb, res.V, blocks, K, *mp, opt.lmi);
+  std::optional<std::vector<Verification>> checks = verify_blockwise(pb, res.V, blocks, rep, K, *mp, opt.lmi);
   const bool blockwise_certificate = checks.has_value();
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, mp->env.X, mp->QV, opt.lmi);
   std::ostringstream o;
   o << "block-wise design: Q_V from the structured path (along Q_E = " << qe_text(*mp) << " at the least a floating-point "
-       "bisection found; diagonal, " << qv_range(mp->QV) << "; the point certified, its minimality numeric), then CCL for each of the " << blocks.size() << " blocks of V with Q, Y block diagonal and Q_V fixed at (1 + "
+       "bisection found; diagonal, " << qv_range(mp->QV) << "; the point certified" << (mp->why.rfind("by the symmetry", 0) == 0 ? " " + mp->why.substr(0, mp->why.find(':')) : std::string()) << ", its minimality numeric), then CCL for each of the " << blocks.size() << " blocks of V"
+    << (distinct < blocks.size() ? " (once per distinct block: " + std::to_string(distinct) + ")" : std::string())
+    << " with Q, Y block diagonal and Q_V fixed at (1 + "
     << to_real<double>(kBlockwiseMargin) << ") times it; "
     << (res.converged ? "CCL converged in every block" : "CCL did not reach the trace target in " + std::to_string(unconverged) + " blocks")
     << (blockwise_certificate ? "" : "; the block-wise certificate did not hold, checked by the generic programs");
   res.verdict = decisive_verdict(res.verification, o.str());
   return res;
+}
+
+namespace {
+
+// The structured point (kyp_min_point), then design_blockwise_at.
+std::optional<DesignResult> design_blockwise(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc,
+                                             const DesignOptions& opt, std::string& why) {
+  const std::optional<KypMinPoint> mp = kyp_min_point(pb, sp, fc);
+  if (!mp) {
+    why = "no Riccati point along Q_E = r I or s Delta_D X (Delta_D X not diagonal, or no stabilising solution)";
+    return std::nullopt;
+  }
+  return design_blockwise_at(pb, *mp, opt, why);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/lmi/kyp.hpp"
 #include "hapstab/multidof/analysis.hpp"
+#include "hapstab/multidof/design.hpp"
 
 namespace hapstab::multidof::detail {
 
@@ -137,6 +138,25 @@ struct KypMinPoint {
   double numeric_seconds = 0;  ///< the Riccati bisection and point (not the exact check)
 };
 std::optional<KypMinPoint> kyp_min_point(const Problem& pb, const EhatSplit& sp, const FacialConditions& fc);
+/// One part of a structured bisection shared by several problems (the blocks of a symmetry
+/// split: multidof/symmetry.hpp, design_by_symmetry).
+struct KypPart {
+  const Problem* pb;
+  const EhatSplit* sp;
+  Pinned px;
+};
+/// The structured point with one s shared by every part (two or more): Q_E = s Delta_D X and
+/// Q_V = (max(s/(1 - s), 0) + eps) Delta_D X in each part (eps: 1e-9 as a dyadic), s a little above the least s at
+/// which every part's Riccati equation is solvable, each part re-checked exactly (its own
+/// `certified`). Every matrix of a part's point is proportional to its X. nullopt when a part's
+/// Delta_D X is not diagonal, or no Riccati point is found in some part.
+std::optional<std::vector<KypMinPoint>> least_dissipative_points(const std::vector<KypPart>& parts);
+/// Theorem 6 block by block (design.cpp, the block-wise path of design.hpp) at a certified point of
+/// (16) with X and Q_V diagonal (from kyp_min_point, or from a symmetry split's blocks): one CCL
+/// per distinct block of V (blocks posing the same problem share it), then the independent checks.
+/// nullopt (with `why`) when the point is not certified or a block's CCL finds nothing.
+std::optional<DesignResult> design_blockwise_at(const Problem& pb, const KypMinPoint& point, const DesignOptions& opt,
+                                                std::string& why);
 
 /// The least dissipative coupling (AnalysisResult::Q_V_min ...) after a feasible verdict,
 /// planned like the verdict (least_dissipative.cpp): the structured bisection when `px` is given

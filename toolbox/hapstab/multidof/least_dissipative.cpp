@@ -59,41 +59,72 @@ void least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Option
 // least one (design.cpp's block-wise path uses it). nullopt when Delta_D X is not a multiple of I
 // (not diagonal, with `diagonal`), or no Riccati point is found there (the caller then runs the
 // generic program; design.cpp then designs by the generic CCL).
-std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px,
-                                                   bool diagonal) {
-  const int m = pb.structure.m();
-  const MatQ DX = exact_product(pb.structure.delta_D(), px.X);
-  const bool scalar = DX == MatQ(DX(0, 0) * MatQ::Identity(m, m));
-  if (!scalar && !(diagonal && DX.isDiagonal(0))) return std::nullopt;
+// Several parts (least_dissipative_points, the blocks of a symmetry split): one s shared by all,
+// always along Q_E = s Delta_D X, feasible where every part's Riccati equation is solvable, and
+// Q_V = (max(s/(1 - s), 0) + eps) Delta_D X: every matrix of the point proportional to X, so the
+// parts' points are one point of the whole after the scalings of symmetry.hpp.
+std::optional<std::vector<KypMinPoint>> bisection_points(const std::vector<KypPart>& parts, bool diagonal) {
+  const bool shared = parts.size() > 1;
+  struct Side {
+    MatQ DX, G;
+    MatrixXd Gd;
+    Eigen::VectorXd gi;
+  };
+  std::vector<Side> side;
+  bool scalar = !shared;
+  double lo = -INFINITY;
+  for (const KypPart& part : parts) {
+    const int m = part.pb->structure.m();
+    Side sd;
+    sd.DX = exact_product(part.pb->structure.delta_D(), part.px.X);
+    scalar = scalar && sd.DX == MatQ(sd.DX(0, 0) * MatQ::Identity(m, m));
+    if (!scalar && !((diagonal || shared) && sd.DX.isDiagonal(0))) return std::nullopt;
+    side.push_back(std::move(sd));
+  }
   // Q_E = t G: G = I and t = r in (lo, d) when Delta_D X = d I; G = Delta_D X and t = s in (lo, 1)
   // otherwise. lo: -(R - t G) must be > 0, i.e. t > lambda_max(G^-1/2 R G^-1/2); the upper end is
   // feasible (the verdict).
-  const MatQ G = scalar ? MatQ(MatQ::Identity(m, m)) : DX;
-  const rational t_end = scalar ? DX(0, 0) : rational(1);
+  const rational t_end = scalar ? side[0].DX(0, 0) : rational(1);
   const double d = to_real<double>(t_end);
-  const MatrixXd Gd = to_double(G);
-  const Eigen::VectorXd gi = Gd.diagonal().cwiseSqrt().cwiseInverse();
-  auto data = [&](double t) {
-    lmi::KypData k = px.kyp;
-    k.R -= t * Gd;
-    return k;
-  };
-  const MatrixXd Rs = gi.asDiagonal() * (0.5 * (px.kyp.R + px.kyp.R.transpose())) * gi.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<MatrixXd> es(Rs, Eigen::EigenvaluesOnly);
-  double lo = es.eigenvalues()(m - 1), hi = d;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    Side& sd = side[k];
+    const int m = parts[k].pb->structure.m();
+    sd.G = scalar ? MatQ(MatQ::Identity(m, m)) : sd.DX;
+    sd.Gd = to_double(sd.G);
+    sd.gi = sd.Gd.diagonal().cwiseSqrt().cwiseInverse();
+    const lmi::KypData& kd = parts[k].px.kyp;
+    const MatrixXd Rs = sd.gi.asDiagonal() * (0.5 * (kd.R + kd.R.transpose())) * sd.gi.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<MatrixXd> es(Rs, Eigen::EigenvaluesOnly);
+    lo = std::max(lo, es.eigenvalues()(m - 1));
+  }
+  double hi = d;
   const double width = hi - lo;
   if (!(width > 0)) return std::nullopt;
+  auto data = [&](size_t k, double t) {
+    lmi::KypData kd = parts[k].px.kyp;
+    kd.R -= t * side[k].Gd;
+    return kd;
+  };
+  auto all_riccati = [&](double t, double tol) {
+    for (size_t k = 0; k < parts.size(); ++k)
+      if (!lmi::kyp_riccati_point(data(k, t), tol).found) return false;
+    return true;
+  };
   const auto t0 = std::chrono::steady_clock::now();
   int solves = 0;
   // The point: t_c a little above the least t (1e-6 of the bracket), where the LMI has room for a
   // rounded point; none when (14)'s Delta_D X - Q_E > 0 leaves no such t, or no Riccati point is found.
-  std::optional<std::pair<rational, lmi::KypPoint>> at_tc;
+  std::optional<std::pair<rational, std::vector<lmi::KypPoint>>> at_tc;
   auto point_above = [&](double least) {
     const rational tc = lmi::round_dyadic(std::min(d, least + 1e-6 * width), 30);
     if (!(tc < t_end)) return;
-    lmi::KypPoint kp = lmi::kyp_interior_point(data(to_real<double>(tc)));
-    solves += kp.riccati_solves;
-    if (kp.found) at_tc.emplace(tc, std::move(kp));
+    std::vector<lmi::KypPoint> kps;
+    for (size_t k = 0; k < parts.size(); ++k) {
+      kps.push_back(lmi::kyp_interior_point(data(k, to_real<double>(tc))));
+      solves += kps.back().riccati_solves;
+      if (!kps.back().found) return;
+    }
+    at_tc.emplace(tc, std::move(kps));
   };
   // The frequency side of the KYP lemma brackets the least t at once: t > lambda_max(G^-1/2 Phi(z)
   // G^-1/2) on the whole circle (lmi/kyp.hpp: a sweep costs O(n^2 m) per frequency where a DARE
@@ -105,7 +136,9 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
   // Worth it when the sweep is cheap beside the DARE solves it saves: O(n^2 m + m^3) per frequency
   // against O(n^3) per doubling step -- few DOF (a delayed wall: m = 1), not the 128-DOF contact
   // scenes (there the sweep cost more than the bisection it shortened).
-  const double f = lmi::kyp_sweep_pays(px.kyp) ? lmi::kyp_frequency_bound(px.kyp, gi) : -INFINITY;
+  double f = -INFINITY;
+  for (size_t k = 0; k < parts.size(); ++k)
+    if (lmi::kyp_sweep_pays(parts[k].px.kyp)) f = std::max(f, lmi::kyp_frequency_bound(parts[k].px.kyp, side[k].gi));
   const bool bracketed = f > lo && f < hi;
   if (bracketed) {
     lo = f;
@@ -115,36 +148,51 @@ std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const Ehat
     if (bracketed) {  // the sweep's bound, confirmed by a DARE just above it
       const double up = std::min(hi, f + 1e-6 * width);
       ++solves;
-      if (lmi::kyp_riccati_point(data(up), 1e-9 * width).found) hi = up;
+      if (all_riccati(up, 1e-9 * width)) hi = up;
     }
     while (hi - lo > 1e-7 * width && solves < 60) {
       const double mid = 0.5 * (lo + hi);
       ++solves;
-      (lmi::kyp_riccati_point(data(mid), 1e-9 * width).found ? hi : lo) = mid;
+      (all_riccati(mid, 1e-9 * width) ? hi : lo) = mid;
     }
     point_above(hi);
   }
   if (!at_tc) return std::nullopt;
   const rational tc = at_tc->first;
-  const lmi::KypData k = data(to_real<double>(tc));
-  const lmi::KypPoint& kp = at_tc->second;
-  KypMinPoint p;
-  p.numeric_seconds = since(t0);
-  p.r = tc;
-  p.env.X = px.X;
-  p.env.theta = {px.theta};
-  p.env.P11 = rounded_p11(px, k, kp);
-  p.env.QE = tc * G;
-  const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, to_real<double>(DX(0, 0))), 20);
-  p.QV = MatQ::Zero(m, m);
-  for (int i = 0; i < m; ++i) {
-    const rational q = p.env.QE(i, i);
-    const rational f = q * DX(i, i) / (DX(i, i) - q);  // Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E, channel i
-    p.QV(i, i) = (f > 0 ? f : rational(0)) + e;
+  const double numeric_seconds = since(t0);
+  // Q_V's margin over f(Q_E): absolute for one part (as always), proportional to Delta_D X for several
+  const rational e = lmi::round_dyadic(1e-9 * std::max(1.0, to_real<double>(side[0].DX(0, 0))), 20);
+  const rational eps = lmi::round_dyadic(1e-9, 20);
+  std::vector<KypMinPoint> out;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const KypPart& part = parts[k];
+    const int m = part.pb->structure.m();
+    const MatQ& DX = side[k].DX;
+    KypMinPoint p;
+    p.numeric_seconds = numeric_seconds;
+    p.r = tc;
+    p.env.X = part.px.X;
+    p.env.theta = {part.px.theta};
+    p.env.P11 = rounded_p11(part.px, data(k, to_real<double>(tc)), at_tc->second[k]);
+    p.env.QE = tc * side[k].G;
+    p.QV = MatQ::Zero(m, m);
+    for (int i = 0; i < m; ++i) {
+      const rational q = p.env.QE(i, i);
+      const rational fq = q * DX(i, i) / (DX(i, i) - q);  // Q_E + Q_E (Delta_D X - Q_E)^-1 Q_E, channel i
+      p.QV(i, i) = (fq > 0 ? fq : rational(0)) + (shared ? eps * DX(i, i) : e);
+    }
+    p.certified = exact_recheck(*part.pb, *part.sp, p.env, p.QV, p.why);
+    p.riccati_solves = solves;
+    out.push_back(std::move(p));
   }
-  p.certified = exact_recheck(pb, sp, p.env, p.QV, p.why);
-  p.riccati_solves = solves;
-  return p;
+  return out;
+}
+
+std::optional<KypMinPoint> least_dissipative_point(const Problem& pb, const EhatSplit& sp, const Pinned& px,
+                                                   bool diagonal) {
+  auto pts = bisection_points({KypPart{&pb, &sp, px}}, diagonal);
+  if (!pts) return std::nullopt;
+  return std::move(pts->front());
 }
 
 bool kyp_least_dissipative(const Problem& pb, const EhatSplit& sp, const Pinned& px, AnalysisResult& res) {
@@ -169,6 +217,11 @@ std::optional<detail::KypMinPoint> detail::kyp_min_point(const Problem& pb, cons
   const std::optional<Pinned> px = pinned_x(pb, sp, fc);
   if (!px) return std::nullopt;
   return least_dissipative_point(pb, sp, *px, true);
+}
+
+std::optional<std::vector<detail::KypMinPoint>> detail::least_dissipative_points(const std::vector<KypPart>& parts) {
+  if (parts.size() < 2) throw std::logic_error("least_dissipative_points: two parts or more");
+  return bisection_points(parts, true);
 }
 
 void detail::plan_least_dissipative(const Problem& pb, const EhatSplit& sp, const lmi::Options& opt,
