@@ -219,6 +219,7 @@ std::vector<Case> catalogue_rest(const std::string& out) {
       {"multidof analyze", "--set", {"--scene", kMulti, "--set", "nope=1"}, "parameters.nope"},
       {"multidof analyze", "--json", {"--scene", kMulti, "--json=maybe"}, "--json"},
       {"multidof analyze", "--no-symmetry", {"--scene", kMulti, "--no-symmetry=maybe"}, "--no-symmetry"},
+      {"multidof design", "--no-symmetry", {"--scene", kMulti, "--no-symmetry=maybe"}, "--no-symmetry"},
       {"multidof analyze", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},
       {"multidof analyze", "--certificate", {"--scene", kMulti, "--certificate", "/nonexistent/c.json"}, "--certificate: "},
       {"multidof design", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},

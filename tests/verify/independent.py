@@ -96,6 +96,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 
 import mpmath as mp  # noqa: E402
+import numpy as np  # noqa: E402
 
 import indep_charpoly as ICH  # noqa: E402
 import indep_coupled as ICP  # noqa: E402
@@ -943,6 +944,107 @@ BRANCHES_SYMMETRY16 = [  # compared cases
 ]
 
 
+def case_design16(rng):
+    """`multidof design --scene S` (Theorem 6) on `symmetry16`'s scenes: designed on the split by
+    the permutations of identical DOFs (multidof/design_symmetry.cpp, issue 48 item 2)."""
+    return case_symmetry16(rng)
+
+
+def coupled_loop_rho(c, V):
+    """The spectral radius (double) of the scene's loop with the coupling V = (A, B, C, D) (numpy),
+    built here from the scene (indep_loop's ZOH plant and E realised entry by entry): the force on
+    the devices is F = z^-n E (x - V F) (the environment sees the positions less V's output, V is
+    fed the applied force); the devices get -F (indep_loop.Loop's sign: F = -h)."""
+    Phi, Gam, Cy = (np.array(X.tolist(), dtype=float) for X in IL.scene_plant(c))
+    Ae, Be, Ce, De = (np.array(X.tolist(), dtype=float).reshape(X.rows, X.cols) for X in IL.realize_matrix(c["E"]))
+    Av, Bv, Cv, Dv = V
+    N, ne, nv, n = De.shape[0], Ae.shape[0], Av.shape[0], c["n"]
+    Z = np.zeros
+    if n == 0:  # F = W (Ce xe + De y - De Cv xv), W = (I + De Dv)^-1
+        W = np.linalg.inv(np.eye(N) + De @ Dv)
+        A = np.block([[Ae - Be @ Dv @ W @ Ce, -Be @ Cv + Be @ Dv @ W @ De @ Cv], [Bv @ W @ Ce, Av - Bv @ W @ De @ Cv]])
+        B = np.vstack([Be - Be @ Dv @ W @ De, Bv @ W @ De])
+        C = np.hstack([W @ Ce, -W @ De @ Cv])
+        D = W @ De
+    else:  # state [xe; s_1 .. s_n; xv], F = s_n, the environment's input y - Cv xv - Dv s_n
+        k = ne + n * N + nv
+        A = Z((k, k))
+        B = Z((k, N))
+        last = ne + (n - 1) * N
+        A[:ne, :ne] = Ae
+        A[:ne, ne + n * N:] = -Be @ Cv
+        A[:ne, last:last + N] += -Be @ Dv
+        B[:ne] = Be
+        A[ne:ne + N, :ne] = Ce
+        A[ne:ne + N, ne + n * N:] = -De @ Cv
+        A[ne:ne + N, last:last + N] += -De @ Dv
+        B[ne:ne + N] = De
+        for s_ in range(1, n):
+            A[ne + s_ * N:ne + (s_ + 1) * N, ne + (s_ - 1) * N:ne + s_ * N] = np.eye(N)
+        A[ne + n * N:, ne + n * N:] = Av
+        A[ne + n * N:, last:last + N] = Bv
+        C = Z((N, k))
+        C[:, last:last + N] = np.eye(N)
+        D = Z((N, N))
+    M = np.block([[Phi - Gam @ D @ Cy, -Gam @ C], [B @ Cy, A]])
+    return float(np.max(np.abs(np.linalg.eigvals(M))))
+
+
+def check_design16(c, exe, timeout):
+    text = IL.scene_toml(c)
+    with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_design16_") as f:
+        f.write(text)
+    args = ["multidof", "design", "--scene", f.name, "--quiet", "--duration", "0.01"]
+    rc, j, err, dt = run_hapstab(exe, args, timeout)
+    # the whole design beside it where it is quick (its generic CCL grows like N^6: design.hpp)
+    N = len(c["devices"])
+    rcw, jw = run_hapstab(exe, args + ["--no-symmetry"], timeout)[:2] if N <= 6 else ("not run (N > 6)", None)
+    split = ((j or {}).get("path") or "").startswith("symmetry")
+    tags = dict(c["tags"])
+    tags["hapstab path"] = "symmetry" if split else ((j or {}).get("path") or "none")
+    out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=text, args=args)
+    concl = lambda x: ("V verified" if x.get("stability_concluded") else
+                       "convex part infeasible" if x.get("convex_certified") else "no conclusion")
+    tags["whole design"] = concl(jw) if jw else f"exit {rcw}"
+    out["ref_text"] = f"--no-symmetry: exit {rcw}, {tags['whole design']}"
+    if rc == "timeout" or rcw == "timeout":
+        out.update(outcome="timeout", why="the split" if rc == "timeout" else "--no-symmetry")
+    elif j is None:
+        out.update(outcome="refused" if rc == 2 else "MISS", why=why_of(err, j) or f"exit {rc}")
+    elif not split and jw is None:
+        out.update(outcome="not compared", why=f"not split ({(j.get('plan') or [{}])[0].get('why', '')[:200]}), N > 6")
+    elif not split:
+        same = jw is not None and concl(j) == concl(jw)
+        out.update(outcome="agree" if same else "MISS",
+                   why="" if same else f"not split: {concl(j)}, --no-symmetry {tags['whole design']}")
+    elif not (j.get("stability_concluded") and j.get("certified")):
+        out.update(outcome="MISS", why=f"the split decided without a certified, verified V: {j.get('verdict')}")
+    elif jw is not None and jw.get("convex_certified"):
+        out.update(outcome="MISS", why="the split verified a V, the whole design proves its convex part infeasible")
+    else:  # the designed V in the loop built here, which knows nothing of the split
+        nv, N = len(j["B_V"]), len(j["D_V"])  # V's doubles are its exact dyadic entries (design.hpp)
+        V = tuple(np.array(j[k], dtype=float).reshape(r, cl)
+                  for k, r, cl in (("A_V", nv, nv), ("B_V", nv, N), ("C_V", N, nv), ("D_V", N, N)))
+        rho = coupled_loop_rho(c, V)
+        out["margin"] = abs(1 - rho)
+        out["ref_text"] += f"; the loop with the designed V built here: rho = {rho!r}"
+        tags["reference"] = "within 1e-9 of 1" if abs(1 - rho) < 1e-9 else ("stable" if rho < 1 else "NOT stable")
+        if abs(1 - rho) < 1e-9:
+            out.update(outcome="reference too near the circle", why=f"rho = {rho!r}")
+        elif rho >= 1:
+            out.update(outcome="MISS", why=f"a verified V, but the loop with it built here has rho = {rho!r}")
+        else:
+            out["outcome"] = "agree"
+    keep_scene_if_missed(out, f.name)
+    return out
+
+
+BRANCHES_DESIGN16 = [  # compared cases
+    ("hapstab path", "symmetry", 0.3), ("reference", "stable", 0.3), ("N", "16-32", 0.05), ("classes", "3", 0.1),
+    ("a class of one", True, 0.05), ("delay", "1", 0.05),
+]
+
+
 BRANCHES_SCENE = [  # compared cases: a supremum, or an exit 3's "stable on [a, b]" (checked at 5 points of it)
     ("stable at small g", True, 0.2), ("stable at small g", False, 0.05),
     ("first device", "unstable ss", 0.1), ("crossing", "complex", 0.05), ("delay", "0", 0.3),
@@ -1361,6 +1463,7 @@ CRITERIA = {
     "charpoly": (case_charpoly, check_charpoly, BRANCHES_CHARPOLY),
     "symmetry": (case_symmetry, check_symmetry, BRANCHES_SYMMETRY),
     "symmetry16": (case_symmetry16, check_symmetry16, BRANCHES_SYMMETRY16),
+    "design16": (case_design16, check_design16, BRANCHES_DESIGN16),
     "conservatism": (case_conservatism, check_conservatism, BRANCHES_CONSERVATISM),
     "witness": (case_witness, check_witness, BRANCHES_WITNESS),
     "coupling_witness": (case_coupling_witness, check_coupling_witness, BRANCHES_COUPLING_WITNESS),

@@ -1,6 +1,6 @@
-// `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm]
+// `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm] [--no-symmetry]
 //                         [--certificate FILE]` (multidof-feasible / multidof-witness: cli/multidof_certificate.hpp)
-// `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N]`
+// `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N] [--no-symmetry]`
 // A run longer than 2 s names its stages on stderr (cli/progress.hpp); --quiet silences them.
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
@@ -325,6 +325,48 @@ int run_analyze(const Opts& o) {
   return a.ok() ? exit_ok : a.undecided() ? exit_numerical : exit_property_fails;
 }
 
+// The designed V: whole when small; else V = blockdiag(V_1, .., V_N) (R2) block by block, each
+// distinct block once with the DOFs it serves (a 1024-device array's V is 1024 copies of a few).
+void print_coupling(const StateSpace<rational>& V, const multidof::CouplingStructure& cs) {
+  auto whole = [&] {
+    std::cout << "A_V =\n" << multidof::to_double(V.A) << "\nB_V =\n" << multidof::to_double(V.B) << "\nC_V =\n"
+              << multidof::to_double(V.C) << "\nD_V =\n" << multidof::to_double(V.D) << "\n";
+  };
+  if (V.D.rows() <= 16) return whole();
+  struct Block {
+    StateSpace<rational> V;
+    std::vector<int> dofs;  // first DOF of each copy, 1-based
+  };
+  std::vector<Block> distinct;
+  int c = 0, st = 0;
+  for (size_t i = 0; i < cs.mbar.size(); ++i) {
+    const int m = cs.mbar[i], n = cs.nbar[i];
+    StateSpace<rational> b;
+    b.T = V.T;
+    b.A = V.A.block(st, st, n, n);
+    b.B = V.B.block(st, c, n, m);
+    b.C = V.C.block(c, st, m, n);
+    b.D = V.D.block(c, c, m, m);
+    auto same = [&](const Block& x) { return x.V.A == b.A && x.V.B == b.B && x.V.C == b.C && x.V.D == b.D; };
+    auto it = std::find_if(distinct.begin(), distinct.end(), same);
+    if (it == distinct.end()) distinct.push_back({b, {}}), it = distinct.end() - 1;
+    it->dofs.push_back(c + 1);
+    c += m;
+    st += n;
+  }
+  std::cout << "V = blockdiag(V_1, .., V_" << cs.mbar.size() << "), " << distinct.size() << " distinct block"
+            << (distinct.size() == 1 ? "" : "s") << " (--json has the whole matrices):\n";
+  for (const Block& b : distinct) {
+    std::cout << "  for the block" << (b.dofs.size() == 1 ? "" : "s") << " at DOF";
+    for (size_t k = 0; k < b.dofs.size() && k < 8; ++k) std::cout << (k ? ", " : " ") << b.dofs[k];
+    if (b.dofs.size() > 8) std::cout << ", .. (" << b.dofs.size() << " in all)";
+    std::cout << ":\n  A = " << multidof::to_double(b.V.A).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"))
+              << "  B = " << multidof::to_double(b.V.B).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"))
+              << "  C = " << multidof::to_double(b.V.C).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]"))
+              << "  D = " << multidof::to_double(b.V.D).format(Eigen::IOFormat(6, 0, ", ", "; ", "", "", "[", "]")) << "\n";
+  }
+}
+
 int run_design(const Opts& o) {
   if (o.iterations < 1 || o.iterations > 10000)
     throw InputError("--iterations must be in [1, 10000], got " + std::to_string(o.iterations));
@@ -334,6 +376,7 @@ int run_design(const Opts& o) {
   opt.design.max_iterations = o.iterations;
   opt.design.lmi = lmi_options(o);
   opt.duration = o.duration;
+  opt.symmetry = !o.no_symmetry;
   const multidof::SceneDesign d = [&] {  // the progress ends (its shares printed) before the results
     StageProgress progress("multidof design",
                            {"reading the scene", "realising the blocks", "Theorem 6's design", "the premises",
@@ -363,8 +406,8 @@ int run_design(const Opts& o) {
     vt << "CONTRADICTION: " << d.contradiction;
   else if (feasible && premise.empty())
     vt << "a stabilising coupling V found and verified" << (certified ? " (certified)" : "")
-       << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision; "
-          "simulated as a numeric cross-check)";
+       << ": the loop with this V is stable (Theorem 6, checked by Theorem 4 and the closed-loop decision"
+       << (d.simulation ? "; simulated as a numeric cross-check)" : "; not simulated: too large for the cross-check)");
   else if (feasible)
     vt << "a coupling V passed the LMI checks, but " << premise << ": no stability conclusion";
   else if (r.verdict.fails())
@@ -407,9 +450,7 @@ int run_design(const Opts& o) {
               << " after " << r.iterations << " iterations. " << r.verdict.evidence << "\n";
     if (!r.facial.explanation.empty()) std::cout << "  " << r.facial.explanation << "\n";
     std::cout << "  " << plan_text(r.path, r.plan) << "\n";
-    if (hasV)
-      std::cout << "A_V =\n" << multidof::to_double(r.V.A) << "\nB_V =\n" << multidof::to_double(r.V.B) << "\nC_V =\n"
-                << multidof::to_double(r.V.C) << "\nD_V =\n" << multidof::to_double(r.V.D) << "\n";
+    if (hasV) print_coupling(r.V, sp.problem.coupling);
     for (const auto& v : r.verification)
       std::cout << "  [" << (v.verdict.holds() ? "pass" : v.verdict.fails() ? "FAIL" : "undecided")
                 << (v.verdict.proven() ? ", certified" : v.verdict.status == Status::numeric ? ", numeric" : "") << "] "
@@ -485,10 +526,12 @@ const Register multidof_cmd({"multidof",
                                                    "write the certificate of (16)'s verdict (JSON: feasible, its exact point; "
                                                    "infeasible, its frequency witness or the facial conditions) to FILE, for "
                                                    "`hapstab check FILE` (docs/certificates.md)");
-                                   sub->add_flag("--no-symmetry", o->no_symmetry,
-                                                 "solve (16) whole, not split by the permutations of identical DOFs (the same "
-                                                 "verdict, for comparison; docs/multidof.md)");
                                  }
+                                 sub->add_flag("--no-symmetry", o->no_symmetry,
+                                               nm == "analyze" ? "solve (16) whole, not split by the permutations of identical "
+                                                                 "DOFs (the same verdict, for comparison; docs/multidof.md)"
+                                                               : "design on the whole, not on the split by the permutations of "
+                                                                 "identical DOFs (for comparison; docs/multidof.md)");
                                  if (std::string(name) == "design")
                                    sub->add_option("--iterations", o->iterations, "Maximum CCL iterations (default 40)");
                                  sub->callback([mode, name]() { *mode = name; });

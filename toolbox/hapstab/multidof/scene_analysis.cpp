@@ -18,7 +18,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string seconds_text(double s) {
   std::ostringstream o;
@@ -107,7 +107,7 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
   };
   stage("realising the blocks (E reduced, hidden modes)");
   a.scene = problem_from_scene(sc, SceneUse::analyze);
-  a.seconds.realisation = opt.load_seconds + since(t0);
+  a.seconds.realisation = opt.load_seconds + seconds_since(t0);
   stage("Theorem 5's LMIs (16) and their certificate");
   a.lmis = analyze_scene_lmis(a.scene, opt.lmi, opt.symmetry);
   a.feasible = a.lmis.verdict.holds();
@@ -115,14 +115,14 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
   const auto t1 = Clock::now();
   stage("Assumption 1 and the hidden modes");
   a.premises = scene_premises(a.scene);
-  a.seconds.assumptions = since(t1);
+  a.seconds.assumptions = seconds_since(t1);
   a.premises_hold = all_hold(a.premises);
   a.stability_concluded = a.feasible && a.certified && a.premises_hold;
   const auto t2 = Clock::now();
   stage("the loop as written (closed-loop decision)");
   a.loop = loop_as_written(a.scene, a.premises_hold, opt.lmi);
-  a.seconds.loop_as_written = since(t2);
-  a.seconds.total = opt.load_seconds + since(t0);
+  a.seconds.loop_as_written = seconds_since(t2);
+  a.seconds.total = opt.load_seconds + seconds_since(t0);
   return a;
 }
 
@@ -163,6 +163,44 @@ Decay velocities_decay(const sim::SimResult& r, double T) {
   return {!r.summary.diverged && (tail <= 1e-3 * peak || tail < 1e-9), o.str()};
 }
 
+namespace {
+
+// Theorem 6 on the scene: by the symmetry split of identical DOFs where the scene has it
+// (design_by_symmetry), else the whole's design() -- within the whole's size limits, which
+// problem_from_scene left to this point for a symmetric scene.
+DesignResult design_scene_coupling(const scene::Scene& sc, const SceneProblem& sp, const DesignOptions& opt, bool symmetry) {
+  std::string why_not;
+  std::optional<SymmetryResult> split;
+  if (sp.symmetric && !symmetry) why_not = "--no-symmetry";
+  if (sp.symmetric && symmetry) split = split_problem(sp, why_not);
+  if (split) {
+    if (auto r = design_by_symmetry(sp, *split, opt, why_not)) {
+      if (r->verdict.holds() && r->verdict.proven()) return std::move(*r);
+      why_not = "its coupling was not verified: " + r->verdict.evidence;
+    }
+    why_not = "the split by " + split->group + " did not decide: " + why_not;
+  }
+  const std::string f = sc.file + ": ";
+  if (sp.problem.E.states() > limits::multidof_states)
+    throw InputError(f + "E has " + std::to_string(sp.problem.E.states()) + " states (reduced), more than the limit of " +
+                     std::to_string(limits::multidof_states) + " that multidof design models" +
+                     (why_not.empty() ? std::string() : " (" + why_not + ")"));
+  CouplingStructure c = sp.problem.coupling;
+  if (sp.symmetric) {
+    try {
+      check_coupling_structure(c, sp.problem.structure.m(), SceneUse::design, true, f);
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + (why_not.empty() ? std::string() : " (" + why_not + ")"));
+    }
+  }
+  DesignResult r = design(sp.problem, opt);
+  if (!why_not.empty())
+    r.plan.insert(r.plan.begin(), PlanStep{"symmetry of identical DOFs (block-wise)", split ? "did not decide" : "skipped", why_not});
+  return r;
+}
+
+}  // namespace
+
 SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) {
   if (opt.design.max_iterations < 1 || opt.design.max_iterations > 10000)
     throw InputError("iterations must be in [1, 10000], got " + std::to_string(opt.design.max_iterations));
@@ -177,7 +215,7 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
   d.scene = problem_from_scene(sc);
   const SceneProblem& sp = d.scene;
   stage("Theorem 6's design (CCL) and its verification");
-  d.design = design(sp.problem, opt.design);
+  d.design = design_scene_coupling(sc, sp, opt.design, opt.symmetry);
   DesignResult& r = d.design;
   stage("Assumption 1 and the hidden modes");
   d.premises = scene_premises(sp);
@@ -196,12 +234,24 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
                                          : Verdict{Outcome::undecided, Status::failed, law.why}});
     if (law.stable && !*law.stable) d.feasible = false;
     stage("the simulated cross-check");
-    const auto sr = simulate_with_coupling(sp, &r.V, opt.duration);
-    d.simulation = velocities_decay(sr, to_real<double>(sp.problem.T()));
-    const Decay& sim = *d.simulation;
-    r.verification.push_back(
-        {"closed loop simulated, velocities -> 0 (numeric cross-check; scene's devices, operators, inputs)",
-         Verdict::of(sim.decays, Status::numeric, sim.text)});
+    long plant_states = 0;
+    for (const auto& dev : sp.loop.devices) plant_states += dev.G.states();
+    for (const auto& op : sp.loop.operators) plant_states += op.Z.states();
+    const std::string sim_name = "closed loop simulated, velocities -> 0 (numeric cross-check; scene's devices, operators, inputs)";
+    std::optional<sim::SimResult> sr;
+    if (plant_states > limits::crosscheck_simulation_states)
+      r.verification.push_back(
+          {sim_name,
+           {Outcome::undecided, Status::numeric,
+            "not simulated: the devices and operators have " + std::to_string(plant_states) +
+                " continuous states, more than the " + std::to_string(limits::crosscheck_simulation_states) +
+                " this cross-check simulates (numeric/limits.hpp; `hapstab simulate` runs the scene); the "
+                "closed-loop decision above decides"}});
+    else {
+      sr = simulate_with_coupling(sp, &r.V, opt.duration);
+      d.simulation = velocities_decay(*sr, to_real<double>(sp.problem.T()));
+      r.verification.push_back({sim_name, Verdict::of(d.simulation->decays, Status::numeric, d.simulation->text)});
+    }
     // Theorem 6's certificate proves the loop stable only when its premises hold (hidden modes
     // included); the closed-loop decision proves or refutes it directly
     const bool theorem_proves = certified && d.premise_failure.empty();
@@ -209,13 +259,13 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
     if (theorem_proves && law_refutes)
       d.contradiction = "Theorem 6's certified checks and Assumption 1 say the loop with this V is stable, but the "
                         "closed-loop decision proves it NOT stable (" + law.why + "): a contradiction to investigate";
-    else if (sr.summary.diverged && (law_proves || (theorem_proves && !law_refutes)))
+    else if (sr && sr->summary.diverged && (law_proves || (theorem_proves && !law_refutes)))
       d.contradiction = "the simulation diverged although the loop with this V is proven stable (" +
                         (law_proves ? law.why : r.verdict.evidence) + "): a contradiction to investigate";
     const bool proven_stable = law_proves || (theorem_proves && !law_refutes);
-    if (d.contradiction.empty() && !sim.decays)
-      d.warning = "the simulated velocities have not decayed within " + seconds_text(opt.duration) + " s (" + sim.text +
-                  "); this is a numeric observation, not a verdict" +
+    if (d.contradiction.empty() && d.simulation && !d.simulation->decays)
+      d.warning = "the simulated velocities have not decayed within " + seconds_text(opt.duration) + " s (" +
+                  d.simulation->text + "); this is a numeric observation, not a verdict" +
                   (proven_stable ? std::string(" (the loop is proven stable: slow decay)") : std::string());
   }
   d.certified = certified && d.feasible;

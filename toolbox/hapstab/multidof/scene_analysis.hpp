@@ -97,6 +97,7 @@ SceneAnalysis analyze_scene(const scene::Scene& sc, const SceneAnalysisOptions& 
 struct SceneDesignOptions {
   DesignOptions design;   ///< CCL iterations (1..10000), back-end
   double duration = 10;   ///< seconds simulated for the cross-check, in (0, 1e6]
+  bool symmetry = true;   ///< split by the permutations of identical DOFs where the scene has them (design_by_symmetry)
   StageHook stage;
 };
 

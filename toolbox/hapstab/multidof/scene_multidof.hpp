@@ -94,8 +94,11 @@ inline int delay_in_periods(const rational& delay, const rational& T, const std:
 /// writes is checked against its DOFs for both.
 enum class SceneUse { analyze, design };
 
-// [multidof.coupling] (or its defaults) against the DOFs; design also against its size limits.
-inline void check_coupling_structure(CouplingStructure& c, int N, SceneUse use, bool written, const std::string& f) {
+// [multidof.coupling] (or its defaults) against the DOFs; design also against its size limits
+// (the whole coupling's only with `whole`: a symmetric scene's design builds one block per class,
+// design_scene checks the whole's limits when the split does not decide).
+inline void check_coupling_structure(CouplingStructure& c, int N, SceneUse use, bool written, const std::string& f,
+                                     bool whole = true) {
   long total = 0;
   for (size_t i = 0; use == SceneUse::design && i < c.nbar.size(); ++i) {
     const int n = c.nbar[i];
@@ -104,7 +107,7 @@ inline void check_coupling_structure(CouplingStructure& c, int N, SceneUse use, 
                        " states, more than the limit of " + std::to_string(limits::coupling_block_states) + " per block");
     total += n;
   }
-  if (total > limits::coupling_states)
+  if (whole && total > limits::coupling_states)
     throw InputError(f + "multidof.coupling.nbar: " + std::to_string(total) + " states in all, more than the limit of " +
                      std::to_string(limits::coupling_states) + " of the coupling `multidof design` builds" +
                      (written ? "" : " (by default one state per device; `multidof analyze` builds none)"));
@@ -152,12 +155,13 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
   pb.E = std::move(env.minimal);  // P has one row per state of the minimal E
   sp.delay = delay_in_periods(sc.loop.delay, sc.T, f);
   const long folded = static_cast<long>(pb.E.states()) + static_cast<long>(sp.delay) * N;
-  // a symmetric scene's analysis works on its blocks (multidof/symmetry.hpp), and refuses the
-  // whole program beyond the limit only if the split does not decide (analyze_scene_lmis)
-  if (folded > limits::multidof_states && sp.delay == 0 && (use == SceneUse::design || !sp.symmetric))
+  // a symmetric scene's analysis and design work on its blocks (multidof/symmetry.hpp), and refuse
+  // the whole program beyond the limit only if the split does not decide (analyze_scene_lmis,
+  // design_scene)
+  if (folded > limits::multidof_states && sp.delay == 0 && !sp.symmetric)
     throw InputError(f + "E has " + std::to_string(folded) + " states (reduced), more than the limit of " +
                      std::to_string(limits::multidof_states) + " that multidof " + (use == SceneUse::design ? "design" : "analyze") +
-                     " models" + (use == SceneUse::design && sp.symmetric ? " (Theorem 6 is not split by the symmetry of identical DOFs; `multidof analyze` splits Theorem 5)" : ""));
+                     " models");
   if (folded > limits::multidof_states && sp.delay > 0)
     throw InputError(f + "[delay] of " + std::to_string(sp.delay) + " samples folds " + std::to_string(sp.delay * N) +
                      " shift states into E (" + std::to_string(folded) + " states with E's own " +
@@ -247,7 +251,7 @@ inline SceneProblem problem_from_scene(const scene::Scene& sc, SceneUse use = Sc
     for (const auto& d : sc.loop.devices) pb.coupling.mbar.push_back(static_cast<int>(d.dofs()));
   if (pb.coupling.nbar.empty()) pb.coupling.nbar.assign(pb.coupling.mbar.size(), 1);
   // the structure as a whole (sizes first: nothing is allocated yet)
-  check_coupling_structure(pb.coupling, N, use, !md.mbar.empty() || !md.nbar.empty(), f);
+  check_coupling_structure(pb.coupling, N, use, !md.mbar.empty() || !md.nbar.empty(), f, !sp.symmetric);
   return sp;
 }
 

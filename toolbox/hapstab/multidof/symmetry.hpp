@@ -58,6 +58,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
 
 namespace hapstab::multidof {
@@ -88,6 +89,12 @@ std::optional<SymmetryResult> split_problem(const SceneProblem& sp, std::string&
 /// block that decided nothing.
 std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, SymmetryResult split, const lmi::Options& opt,
                                                   std::string& why_not);
+
+/// Theorem 6 on sp by the split (design_symmetry.cpp): one structured point shared by the blocks,
+/// lifted to an invariant point of the whole's (16) (checked exactly), then the block-wise design at
+/// it (one CCL per distinct block of V). nullopt with `why_not` when a block's premise fails.
+std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
+                                               const DesignOptions& opt, std::string& why_not);
 
 /// A block's witness direction u lifted to the whole's m DOFs (above).
 std::vector<rational> lift_direction(const SymmetryResult& s, const SymmetryBlock& b, const std::vector<rational>& u, int m);

@@ -1,0 +1,122 @@
+// hapstab/multidof/design_symmetry.cpp -- Theorem 6 for a scene of identical DOFs, by the split
+// of symmetry.hpp (design_by_symmetry; issue 48: N = 1024 devices).
+//
+// The block-wise design (design.hpp) needs one certified point of (16) with X and Q_V diagonal;
+// it then designs each block of V against its own square of X and Q_V. For a symmetric scene the
+// whole's (16) is never posed: the blocks of the split share one structured bisection
+// (least_dissipative.cpp, least_dissipative_points) along Q_E = s Delta_D X, and every block's
+// point is (X_b, s Delta_b X_b, c(s) Delta_b X_b), c(s) = max(s/(1 - s), 0) + eps -- each
+// re-checked exactly on its block. Those points are the images of ONE invariant point of the
+// whole, X = diag(g) (g_c on class c), Q_E = s Delta_D X, Q_V = c(s) Delta_D X:
+//   under S (symmetry.hpp) S^T X S = diag(k_c g_c, j (j + 1) g_a), and Q_E, Q_V are Delta_D X
+//   times s and c(s), Delta_D constant on each class; so the fixed block's point is the whole's
+//   image divided by sigma (X_f(c, c) = k_c g_c / sigma) and class a's block the image of copy j
+//   divided by j (j + 1) g_a / X_a. (16) being homogeneous in (P, X, Q_E, Q_V), the blocks'
+//   storages scaled alike give the whole's P (lift_point's construction with these scalings;
+//   with every Q invariant, its closed form reduces to Q = Q_b's value on each class).
+// The scalings are checked exactly here (each block's X, Q_E, Q_V against the whole's), not
+// assumed. The point then satisfies every condition of the whole's (16) exactly, which is what
+// the block-wise Theorem 4 certificate needs from the environment side; the coupling side
+// (Lemma 1 for each distinct block of V) and V's stability are checked as always.
+// Not attempted (why_not, the whole design decides or the size limit refuses it): a block whose
+// X is not pinned to one direction or whose Delta_D X is not diagonal, no shared Riccati point,
+// a point that fails its exact re-check, a chosen back-end or path (--backend, --path generic).
+//
+// Implements: paper 000 (16), (19)-(24), Theorem 6, on the split of Theorem 5 (symmetry.hpp).
+#include <sstream>
+
+#include "hapstab/multidof/detail.hpp"
+#include "hapstab/multidof/symmetry.hpp"
+
+namespace hapstab::multidof {
+
+std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
+                                               const DesignOptions& opt, std::string& why_not) {
+  using detail::KypMinPoint;
+  using detail::KypPart;
+  using detail::Pinned;
+  if (opt.path == DesignPath::generic_sdp) return why_not = "the generic design was asked for", std::nullopt;
+  if (opt.lmi.backend != lmi::Backend::automatic)
+    return why_not = "an SDP back-end was chosen (--backend): that is the generic design", std::nullopt;
+  // every block's structured data: facial conditions, X pinned to one direction
+  const size_t B = split.blocks.size();
+  std::vector<FacialConditions> fc(B);
+  std::vector<EhatSplit> es(B);
+  std::vector<KypPart> parts;
+  for (size_t b = 0; b < B; ++b) {
+    const SymmetryBlock& blk = split.blocks[b];
+    fc[b] = facial_conditions(blk.problem);
+    if (!fc[b].symmetric_possible) return why_not = blk.name + ": " + fc[b].explanation, std::nullopt;
+    es[b] = ehat_split(blk.problem.E);
+  }
+  for (size_t b = 0; b < B; ++b) {
+    std::string why;
+    std::optional<Pinned> px = detail::pinned_x(split.blocks[b].problem, es[b], fc[b], &why);
+    if (!px) return why_not = split.blocks[b].name + ": " + why, std::nullopt;
+    parts.push_back({&split.blocks[b].problem, &es[b], std::move(*px)});
+  }
+  const auto pts = detail::least_dissipative_points(parts);
+  if (!pts) return why_not = "no Riccati point shared by the blocks along Q_E = s Delta_D X", std::nullopt;
+  for (size_t b = 0; b < B; ++b)
+    if (!(*pts)[b].certified)
+      return why_not = split.blocks[b].name + ": the shared point failed the exact re-check (" + (*pts)[b].why + ")",
+             std::nullopt;
+  // the whole's invariant point, from the fixed block's X (symmetry.hpp's sigma: g_c >= 1)
+  const int m = sp.problem.structure.m();
+  const size_t r = split.classes.size();
+  const KypMinPoint& f = (*pts)[0];
+  const MatQ delta_f = split.blocks[0].problem.structure.delta_D();
+  const auto k_of = [&](size_t c) { return rational(static_cast<long>(split.classes[c].size())); };
+  rational sigma(1);
+  for (size_t c = 0; c < r; ++c) {
+    const auto C = static_cast<Eigen::Index>(c);
+    if (k_of(c) / f.env.X(C, C) > sigma) sigma = k_of(c) / f.env.X(C, C);
+  }
+  const rational s = f.r;
+  std::vector<rational> g(r), qe(r), qv(r);
+  for (size_t c = 0; c < r; ++c) {
+    const auto C = static_cast<Eigen::Index>(c);
+    g[c] = sigma * f.env.X(C, C) / k_of(c);
+    qe[c] = f.env.QE(C, C) * sigma / k_of(c);
+    qv[c] = f.QV(C, C) * sigma / k_of(c);
+    if (!(qe[c] == s * delta_f(C, C) * g[c])) throw std::logic_error("design_by_symmetry: Q_E is not s Delta_D X");
+  }
+  // each block's point is the whole's image, scaled (the header): checked exactly, not assumed
+  for (size_t b = 0; b < B; ++b) {
+    const KypMinPoint& p = (*pts)[b];
+    const SymmetryBlock& blk = split.blocks[b];
+    const auto n = p.env.X.rows();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const size_t c = blk.cls < 0 ? static_cast<size_t>(i) : static_cast<size_t>(blk.cls);
+      const rational t = p.env.X(i, i) / g[c];  // the block's scale against the whole on class c
+      bool ok = p.env.X.isDiagonal(0) && p.QV.isDiagonal(0) && p.env.QE.isDiagonal(0) && p.env.QE(i, i) == t * qe[c] &&
+                p.QV(i, i) == t * qv[c] && p.r == s;
+      ok = ok && t > 0 && (blk.cls >= 0 || t == k_of(c) / sigma);
+      if (!ok) return why_not = blk.name + ": its point is not the image of one invariant point of the whole", std::nullopt;
+    }
+  }
+  KypMinPoint whole;
+  whole.r = s;
+  whole.certified = true;
+  whole.env.X = whole.env.QE = whole.QV = MatQ::Zero(m, m);
+  for (size_t c = 0; c < r; ++c)
+    for (int i : split.classes[c]) whole.env.X(i, i) = g[c], whole.env.QE(i, i) = qe[c], whole.QV(i, i) = qv[c];
+  std::ostringstream why;
+  why << "by the symmetry " << split.group << ": one point of the whole's (16) (X = diag(g), Q_E = s Delta_D X, Q_V "
+      << "diagonal, s = " << to_real<double>(s) << "), whose images on the " << B << " blocks were each re-checked "
+      << "exactly (multidof/design_symmetry.cpp); " << split.blocks[0].name << ": " << f.why;
+  whole.why = why.str();
+  std::string why_blockwise;
+  std::optional<DesignResult> res = detail::design_blockwise_at(sp.problem, whole, opt, why_blockwise);
+  if (!res) return why_not = why_blockwise, std::nullopt;
+  res->facial = fc[0];
+  res->facial.explanation = "facial reduction per block (" + split.blocks[0].name + ": " + fc[0].explanation + ")";
+  res->path = "symmetry of identical DOFs (block-wise)";
+  res->plan.push_back({"symmetry of identical DOFs (block-wise)", "decided",
+                       split.group + ": " + std::to_string(B) + " blocks share one structured point"});
+  res->plan.push_back({"block-wise (structured KYP/Riccati)", "not needed", "the split decided"});
+  res->plan.push_back({"generic SDP", "not needed", "the split decided"});
+  return res;
+}
+
+}  // namespace hapstab::multidof
