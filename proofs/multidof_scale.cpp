@@ -28,6 +28,7 @@
 #include "hapstab/multidof/design.hpp"
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/scene/scene.hpp"
@@ -286,4 +287,25 @@ HAPSTAB_PROOF(multidof_blockwise, "000", "Theorem 6 block by block: Lemma 1 for 
               Status::exact, blockwise && d.verdict.holds() && d.verdict.proven() && t4.verdict.holds() && t4.verdict.proven(),
               "design: " + d.verdict.evidence + " | generic Theorem 4: " + to_string(t4.verdict.outcome) + ", " +
                   to_string(t4.verdict.status) + ": " + t4.verdict.evidence);
+  // the design by the symmetry split (design_symmetry.cpp): its V against the whole's generic
+  // Theorem 4 program, which knows nothing of the split -- passive and active contacts (S_2^4)
+  bool split_ok = true;
+  std::string split_detail;
+  for (bool active : {false, true}) {
+    const auto sps = multidof::problem_from_scene(scene::parse_scene(multidof::example::contact_scene(8, active), "contacts"));
+    std::string why;
+    const auto split = multidof::split_problem(sps, why);
+    const auto ds = split ? multidof::design_by_symmetry(sps, *split, {}, why) : std::nullopt;
+    const bool decided = ds && ds->verdict.holds() && ds->verdict.proven();
+    const multidof::CouplingCheck w = decided ? multidof::check_theorem4(sps.problem, ds->V) : multidof::CouplingCheck{};
+    split_ok = split_ok && decided && w.verdict.holds() && w.verdict.proven();
+    split_detail += std::string(active ? " | active: " : "passive: ") + (split ? split->group : "not split: " + why) + ", " +
+                    (ds ? ds->verdict.evidence.substr(0, 200) : "no design: " + why) + "; generic Theorem 4: " +
+                    to_string(w.verdict.outcome) + ", " + to_string(w.verdict.status);
+  }
+  check.claim("000.thm6.symmetry_design", "Theorem 6, Theorem 4, (16)",
+              "the design by the split of identical DOFs (one structured point shared by the blocks, checked to be the image "
+              "of one invariant point of the whole's (16)) of the N = 8 contact scenes, passive and active (S_2^4), returns a "
+              "V that the generic Theorem 4 program on the whole (P_E, P_V, X, Q_E, Q_V free) certifies",
+              Status::exact, split_ok, split_detail);
 }

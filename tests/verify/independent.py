@@ -4,7 +4,7 @@ code and no formula-level shortcut with it (issue 46, "The campaigns that would 
 these"; docs/verification.md, "Independent campaigns").
 
   tests/verify/independent.py [--hapstab build/hapstab]
-                              [--criterion bound,bound_long,bound_max,stability_max,stability_long,scene_max,scene_coupling,charpoly,symmetry,conservatism,witness,coupling_witness]
+                              [--criterion bound,bound_long,bound_max,stability_max,stability_long,scene_max,scene_coupling,charpoly,symmetry,symmetry16,design16,conservatism,witness,coupling_witness]
                               [--cases N] [--seed S] [--first K] [--case K] [--timeout SEC] [--verbose]
 
 Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case K` reruns one):
@@ -41,6 +41,10 @@ Criteria (each case is drawn from random.Random("SEED:CRITERION:K"), so `--case 
                  operators and environment entries (issue 48 item 2: the split by the permutations
                  of identical DOFs): the loop built here (indep_loop) and its spectral radius in
                  double, and hapstab --no-symmetry (the whole matrix) beside it.
+  design16       `multidof design --scene S` on symmetry16's scenes, designed on the split of identical
+                 DOFs (multidof/design_symmetry.cpp): the designed V in the loop built here (spectral
+                 radius in double), a facial infeasibility against E(1) read from the scene in
+                 fractions, and --no-symmetry (the whole design) beside it where N <= 6.
   conservatism   `stability --scene S --max g --conservatism` where both regions can be intervals
                  (g the environment's gain, E strictly proper so the loop stays affine beside a
                  coupling with feedthrough, operators b + k/s so M(0) is Schur stable): the exact
@@ -990,6 +994,35 @@ def coupled_loop_rho(c, V):
     return float(np.max(np.abs(np.linalg.eigvals(M))))
 
 
+def positive_x_symmetrising(E):
+    """Whether some g > 0 makes diag(g) E(1) symmetric (g_i E1_ij = g_j E1_ji for all i, j), E(1)
+    exact from the entries (Fractions), by ratios along a spanning forest: the facial condition of
+    Theorem 5's (16) read from the scene here, knowing nothing of hapstab's split."""
+    N = len(E)
+    E1 = [[sum(e.num) / sum(e.den) for e in row] for row in E]
+    ratio = [None] * N  # g_i = ratio[i] * g_root(i), on each connected part
+    root = list(range(N))
+    for s0 in range(N):
+        if ratio[s0] is not None:
+            continue
+        ratio[s0], stack = Q(1), [s0]
+        while stack:
+            i = stack.pop()
+            for j in range(N):
+                a, b = E1[i][j], E1[j][i]
+                if i == j or (a == 0 and b == 0):
+                    continue
+                if a == 0 or b == 0 or a * b < 0:  # one side zero, or g_i / g_j = b / a < 0
+                    return False
+                r = ratio[i] * a / b  # g_j = g_i a / b
+                if ratio[j] is None:
+                    ratio[j], root[j] = r, s0
+                    stack.append(j)
+                elif ratio[j] != r:
+                    return False
+    return True
+
+
 def check_design16(c, exe, timeout):
     text = IL.scene_toml(c)
     with tempfile.NamedTemporaryFile("w", suffix=".toml", delete=False, prefix="indep_design16_") as f:
@@ -1002,6 +1035,7 @@ def check_design16(c, exe, timeout):
     split = ((j or {}).get("path") or "").startswith("symmetry")
     tags = dict(c["tags"])
     tags["hapstab path"] = "symmetry" if split else ((j or {}).get("path") or "none")
+    tags["split verdict"] = "none"
     out = dict(tags=tags, rc=rc, seconds=dt, margin=None, scene=text, args=args)
     concl = lambda x: ("V verified" if x.get("stability_concluded") else
                        "convex part infeasible" if x.get("convex_certified") else "no conclusion")
@@ -1017,11 +1051,22 @@ def check_design16(c, exe, timeout):
         same = jw is not None and concl(j) == concl(jw)
         out.update(outcome="agree" if same else "MISS",
                    why="" if same else f"not split: {concl(j)}, --no-symmetry {tags['whole design']}")
+    elif j.get("path") == "symmetry of identical DOFs (facial conditions)":  # (19) infeasible, exactly
+        tags["split verdict"] = "convex part infeasible"
+        if not j.get("convex_certified"):
+            out.update(outcome="MISS", why=f"the split's facial conditions without a certified infeasible verdict: {j.get('verdict')}")
+        elif positive_x_symmetrising(c["E"]):
+            out.update(outcome="MISS", why="the split says no X > 0 makes X E(1) symmetric; the scene's E(1) admits one")
+        elif jw is not None and jw.get("stability_concluded"):
+            out.update(outcome="MISS", why="the split proves (19) infeasible, the whole design verified a V")
+        else:
+            out["outcome"] = "agree"
     elif not (j.get("stability_concluded") and j.get("certified")):
         out.update(outcome="MISS", why=f"the split decided without a certified, verified V: {j.get('verdict')}")
     elif jw is not None and jw.get("convex_certified"):
         out.update(outcome="MISS", why="the split verified a V, the whole design proves its convex part infeasible")
     else:  # the designed V in the loop built here, which knows nothing of the split
+        tags["split verdict"] = "V verified"
         nv, N = len(j["B_V"]), len(j["D_V"])  # V's doubles are its exact dyadic entries (design.hpp)
         V = tuple(np.array(j[k], dtype=float).reshape(r, cl)
                   for k, r, cl in (("A_V", nv, nv), ("B_V", nv, N), ("C_V", N, nv), ("D_V", N, N)))
@@ -1040,7 +1085,7 @@ def check_design16(c, exe, timeout):
 
 
 BRANCHES_DESIGN16 = [  # compared cases
-    ("hapstab path", "symmetry", 0.3), ("reference", "stable", 0.3), ("N", "16-32", 0.05), ("classes", "3", 0.1),
+    ("hapstab path", "symmetry", 0.3), ("reference", "stable", 0.2), ("split verdict", "convex part infeasible", 0.05), ("N", "16-32", 0.05), ("classes", "3", 0.1),
     ("a class of one", True, 0.05), ("delay", "1", 0.05),
 ]
 

@@ -18,6 +18,8 @@
 // assumed. The point then satisfies every condition of the whole's (16) exactly, which is what
 // the block-wise Theorem 4 certificate needs from the environment side; the coupling side
 // (Lemma 1 for each distinct block of V) and V's stability are checked as always.
+// Infeasible, exactly, without any program: the fixed space's facial conditions admit no X > 0
+// (no_invariant_x below: then no X of the whole is admissible either, by averaging over the group).
 // Not attempted (why_not, the whole design decides or the size limit refuses it): a block whose
 // X is not pinned to one direction or whose Delta_D X is not diagonal, no shared Riccati point,
 // a point that fails its exact re-check, a chosen back-end or path (--backend, --path generic).
@@ -29,6 +31,44 @@
 #include "hapstab/multidof/symmetry.hpp"
 
 namespace hapstab::multidof {
+
+namespace {
+
+// The fixed space's facial conditions admit no X > 0: then no X > 0 of the whole does either,
+// so (16) -- and (19), which is (16) with Q_V structured -- has no solution. Why: X E(1) symmetric
+// and g > 0 are kept by every permutation of the group (E(1) is invariant) and by averaging, so
+// a whole's admissible X averages to an invariant one, X = diag(g_c on class c); its image on the
+// fixed space, diag(k_c g_c), is admissible there (the fixed space's E_f(1) is E(1)'s row sums by
+// class: X E(1) symmetric on the invariant X iff diag(k_c g_c) E_f(1) is). "" when some X > 0 may
+// be admissible (a standard block has one DOF: any g is admissible there).
+std::optional<std::string> no_invariant_x(const SymmetryResult& split, size_t b, const FacialConditions& fc) {
+  if (split.blocks[b].cls >= 0) return std::nullopt;
+  if (!fc.symmetric_possible) return "no X makes X E_f(1) symmetric";
+  if (fc.gamma_basis.size() != 1) return std::nullopt;
+  bool pos = false, nonpos = false;
+  for (const rational& g : fc.gamma_basis[0]) (g > 0 ? pos : nonpos) = true;
+  if (pos && !nonpos) return std::nullopt;
+  bool neg_only = !pos;
+  for (const rational& g : fc.gamma_basis[0]) neg_only = neg_only && g < 0;
+  if (neg_only) return std::nullopt;  // -X_1 > 0 is admissible
+  return std::string("the one direction the facial conditions leave has entries of both signs (or a zero): no X > 0");
+}
+
+DesignResult infeasible_by_facial(const SymmetryResult& split, size_t b, const FacialConditions& fc, const std::string& why) {
+  DesignResult res;
+  res.facial = fc;
+  res.verdict = {Outcome::fails, Status::exact,
+                 "no solution: the convex part (19) is infeasible (exact): by the symmetry " + split.group + ", " +
+                     split.blocks[b].name + ": " + why + " (" + fc.explanation +
+                     "); an admissible X > 0 of the whole would average over the group to an invariant one, whose image "
+                     "there would be admissible (multidof/design_symmetry.cpp)"};
+  res.path = "symmetry of identical DOFs (facial conditions)";
+  res.plan.push_back({res.path, "decided", split.group + ": " + split.blocks[b].name + "'s facial conditions"});
+  for (const char* p : {"block-wise (structured KYP/Riccati)", "generic SDP"}) res.plan.push_back({p, "not needed", "the split decided, exactly"});
+  return res;
+}
+
+}  // namespace
 
 std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
                                                const DesignOptions& opt, std::string& why_not) {
@@ -46,6 +86,7 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
   for (size_t b = 0; b < B; ++b) {
     const SymmetryBlock& blk = split.blocks[b];
     fc[b] = facial_conditions(blk.problem);
+    if (const auto none = no_invariant_x(split, b, fc[b])) return infeasible_by_facial(split, b, fc[b], *none);
     if (!fc[b].symmetric_possible) return why_not = blk.name + ": " + fc[b].explanation, std::nullopt;
     es[b] = ehat_split(blk.problem.E);
   }

@@ -175,7 +175,7 @@ DesignResult design_scene_coupling(const scene::Scene& sc, const SceneProblem& s
   if (sp.symmetric && symmetry) split = split_problem(sp, why_not);
   if (split) {
     if (auto r = design_by_symmetry(sp, *split, opt, why_not)) {
-      if (r->verdict.holds() && r->verdict.proven()) return std::move(*r);
+      if (r->verdict.decided() && r->verdict.proven()) return std::move(*r);
       why_not = "its coupling was not verified: " + r->verdict.evidence;
     }
     why_not = "the split by " + split->group + " did not decide: " + why_not;
