@@ -291,21 +291,24 @@ HAPSTAB_PROOF(multidof_blockwise, "000", "Theorem 6 block by block: Lemma 1 for 
   // Theorem 4 program, which knows nothing of the split -- passive and active contacts (S_2^4)
   bool split_ok = true;
   std::string split_detail;
-  for (bool active : {false, true}) {
-    const auto sps = multidof::problem_from_scene(scene::parse_scene(multidof::example::contact_scene(8, active), "contacts"));
+  for (int k = 0; k < 3; ++k) {  // passive, active; and 16 contacts on 2 objects (the fixed space by its components)
+    const bool active = k == 1;
+    const auto sps = multidof::problem_from_scene(
+        scene::parse_scene(multidof::example::contact_scene(k == 2 ? 16 : 8, active, k == 2 ? 2 : 1), "contacts"));
     std::string why;
     const auto split = multidof::split_problem(sps, why);
     const auto ds = split ? multidof::design_by_symmetry(sps, *split, {}, why) : std::nullopt;
     const bool decided = ds && ds->verdict.holds() && ds->verdict.proven();
     const multidof::CouplingCheck w = decided ? multidof::check_theorem4(sps.problem, ds->V) : multidof::CouplingCheck{};
     split_ok = split_ok && decided && w.verdict.holds() && w.verdict.proven();
-    split_detail += std::string(active ? " | active: " : "passive: ") + (split ? split->group : "not split: " + why) + ", " +
+    split_detail += std::string(k == 0 ? "passive: " : k == 1 ? " | active: " : " | 16 on 2 objects: ") + (split ? split->group : "not split: " + why) + ", " +
                     (ds ? ds->verdict.evidence.substr(0, 200) : "no design: " + why) + "; generic Theorem 4: " +
                     to_string(w.verdict.outcome) + ", " + to_string(w.verdict.status);
   }
   check.claim("000.thm6.symmetry_design", "Theorem 6, Theorem 4, (16)",
               "the design by the split of identical DOFs (one structured point shared by the blocks, checked to be the image "
-              "of one invariant point of the whole's (16)) of the N = 8 contact scenes, passive and active (S_2^4), returns a "
-              "V that the generic Theorem 4 program on the whole (P_E, P_V, X, Q_E, Q_V free) certifies",
+              "of one invariant point of the whole's (16)) of the N = 8 contact scenes, passive and active (S_2^4), and of 16 "
+              "contacts on 2 objects (S_2^8, the fixed space by its independent components), returns a V that the generic "
+              "Theorem 4 program on the whole (P_E, P_V, X, Q_E, Q_V free) certifies",
               Status::exact, split_ok, split_detail);
 }

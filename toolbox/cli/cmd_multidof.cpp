@@ -183,6 +183,8 @@ std::string plan_text(const std::string& path, const std::vector<multidof::PlanS
   if (path == "facial conditions") return "path: none needed: the facial conditions decided, exactly, before any path ran";
   std::string t = "path: " + (path.empty() ? std::string("no path decided") : "the " + path + " path decided");
   for (const auto& s : plan)
+    if (s.fate == "decided" && s.path == path && !s.why.empty()) t += " (" + s.why + ")";
+  for (const auto& s : plan)
     if (s.fate != "decided") t += "; " + s.path + ": " + s.fate + (s.why.empty() || s.fate == "not needed" ? "" : " (" + s.why + ")");
   return t;
 }

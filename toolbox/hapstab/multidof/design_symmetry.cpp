@@ -20,13 +20,16 @@
 // (Lemma 1 for each distinct block of V) and V's stability are checked as always.
 // Infeasible, exactly, without any program: the fixed space's facial conditions admit no X > 0
 // (no_invariant_x below: then no X of the whole is admissible either, by averaging over the group).
-// Not attempted (why_not, the whole design decides or the size limit refuses it): a block whose
+// The fixed space of several independent objects keeps one scale of X per object: its components
+// (components.hpp: its (16) holds iff each component's does) then take its place in the bisection.
+// Not attempted (why_not, the whole design decides or the size limit refuses it): a part whose
 // X is not pinned to one direction or whose Delta_D X is not diagonal, no shared Riccati point,
 // a point that fails its exact re-check, a chosen back-end or path (--backend, --path generic).
 //
 // Implements: paper 000 (16), (19)-(24), Theorem 6, on the split of Theorem 5 (symmetry.hpp).
 #include <sstream>
 
+#include "hapstab/multidof/components.hpp"
 #include "hapstab/multidof/detail.hpp"
 #include "hapstab/multidof/symmetry.hpp"
 
@@ -90,18 +93,75 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
     if (!fc[b].symmetric_possible) return why_not = blk.name + ": " + fc[b].explanation, std::nullopt;
     es[b] = ehat_split(blk.problem.E);
   }
+  // the parts of the shared bisection: each block, or -- where the facial conditions leave the fixed
+  // space's X more than one direction -- its independent components (components.hpp: its (16)
+  // holds iff each component's does; each component's X keeps its own scale)
+  struct Part {
+    size_t block;
+    std::vector<int> dofs;  // the block's DOFs this part covers, in the part's order
+    std::string name;
+  };
+  std::vector<Part> of;
+  std::vector<Component> fixed_components;
+  if (fc[0].gamma_basis.size() > 1) fixed_components = components(split.blocks[0].problem);
+  std::vector<const Problem*> problems;
   for (size_t b = 0; b < B; ++b) {
-    std::string why;
-    std::optional<Pinned> px = detail::pinned_x(split.blocks[b].problem, es[b], fc[b], &why);
-    if (!px) return why_not = split.blocks[b].name + ": " + why, std::nullopt;
-    parts.push_back({&split.blocks[b].problem, &es[b], std::move(*px)});
+    if (b == 0 && fixed_components.size() > 1) {
+      for (const Component& c : fixed_components) {
+        problems.push_back(&c.problem);
+        of.push_back({0, c.dofs, split.blocks[0].name + ", component " + component_name(split.blocks[0].problem, c)});
+      }
+      continue;
+    }
+    std::vector<int> all(static_cast<size_t>(split.blocks[b].problem.structure.m()));
+    for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    problems.push_back(&split.blocks[b].problem);
+    of.push_back({b, all, split.blocks[b].name});
   }
-  const auto pts = detail::least_dissipative_points(parts);
-  if (!pts) return why_not = "no Riccati point shared by the blocks along Q_E = s Delta_D X", std::nullopt;
-  for (size_t b = 0; b < B; ++b)
-    if (!(*pts)[b].certified)
-      return why_not = split.blocks[b].name + ": the shared point failed the exact re-check (" + (*pts)[b].why + ")",
-             std::nullopt;
+  const size_t np = problems.size();
+  std::vector<FacialConditions> pfc(np);
+  std::vector<EhatSplit> pes(np);
+  for (size_t k = 0; k < np; ++k) {
+    const bool own = of[k].block != 0 || fixed_components.size() <= 1;
+    pfc[k] = own ? fc[of[k].block] : facial_conditions(*problems[k]);
+    pes[k] = own ? std::move(es[of[k].block]) : ehat_split(problems[k]->E);
+  }
+  for (size_t k = 0; k < np; ++k) {
+    std::string why;
+    std::optional<Pinned> px = detail::pinned_x(*problems[k], pes[k], pfc[k], &why);
+    if (!px) return why_not = of[k].name + ": " + why, std::nullopt;
+    parts.push_back({problems[k], &pes[k], std::move(*px)});
+  }
+  const auto part_pts = np > 1 ? detail::least_dissipative_points(parts) : std::nullopt;
+  if (!part_pts) return why_not = "no Riccati point shared by the blocks along Q_E = s Delta_D X", std::nullopt;
+  for (size_t k = 0; k < np; ++k) {
+    const KypMinPoint& p = (*part_pts)[k];
+    if (!p.certified)
+      return why_not = of[k].name + ": the shared point failed the exact re-check (" + p.why + ")", std::nullopt;
+    if (!(p.env.X.isDiagonal(0) && p.env.QE.isDiagonal(0) && p.QV.isDiagonal(0)))
+      return why_not = of[k].name + ": its point is not diagonal", std::nullopt;
+  }
+  // each block's point: its part's, or the direct sum of its components' (diagonal)
+  std::vector<KypMinPoint> block_pts(B);
+  for (size_t b = 0; b < B; ++b) {
+    const auto mb = static_cast<Eigen::Index>(split.blocks[b].problem.structure.m());
+    block_pts[b].env.X = block_pts[b].env.QE = block_pts[b].QV = MatQ::Zero(mb, mb);
+    block_pts[b].r = (*part_pts)[0].r;
+    block_pts[b].why = "";
+  }
+  for (size_t k = 0; k < np; ++k) {
+    const KypMinPoint& p = (*part_pts)[k];
+    KypMinPoint& q = block_pts[of[k].block];
+    for (size_t i = 0; i < of[k].dofs.size(); ++i) {
+      const auto I = static_cast<Eigen::Index>(i), D = static_cast<Eigen::Index>(of[k].dofs[i]);
+      q.env.X(D, D) = p.env.X(I, I), q.env.QE(D, D) = p.env.QE(I, I), q.QV(D, D) = p.QV(I, I);
+    }
+    if (of[k].block == 0 && q.why.empty()) q.why = p.why;
+  }
+  if (fixed_components.size() > 1)
+    block_pts[0].why = "by its " + std::to_string(fixed_components.size()) + " independent components (" +
+                       "multidof/components.hpp), each re-checked exactly; the first: " + block_pts[0].why;
+  const std::vector<KypMinPoint>* pts = &block_pts;
   // the whole's invariant point, from the fixed block's X (symmetry.hpp's sigma: g_c >= 1)
   const int m = sp.problem.structure.m();
   const size_t r = split.classes.size();
@@ -153,8 +213,11 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
   res->facial = fc[0];
   res->facial.explanation = "facial reduction per block (" + split.blocks[0].name + ": " + fc[0].explanation + ")";
   res->path = "symmetry of identical DOFs (block-wise)";
-  res->plan.push_back({"symmetry of identical DOFs (block-wise)", "decided",
-                       split.group + ": " + std::to_string(B) + " blocks share one structured point"});
+  std::string blocks = split.group + ": " + std::to_string(B) + " blocks share one structured point (" +
+                       split.blocks[0].name + (fixed_components.size() > 1 ? ", by its " + std::to_string(fixed_components.size()) + " components" : "");
+  for (size_t b = 1; b < B && b < 9; ++b) blocks += "; " + split.blocks[b].name;
+  blocks += B > 9 ? "; .. " + std::to_string(B - 9) + " more zero-sum spaces)" : ")";
+  res->plan.push_back({"symmetry of identical DOFs (block-wise)", "decided", blocks});
   res->plan.push_back({"block-wise (structured KYP/Riccati)", "not needed", "the split decided"});
   res->plan.push_back({"generic SDP", "not needed", "the split decided"});
   return res;

@@ -227,7 +227,16 @@ SceneDesign design_scene(const scene::Scene& sc, const SceneDesignOptions& opt) 
   const bool certified = d.feasible && r.verdict.proven();
   if (d.has_v()) {
     stage("the loop with the designed V (closed-loop decision)");
-    d.loop_with_v = decided_loop(loop_with_coupling(sp, &r.V), "the designed V");
+    if (sp.delay == 0 && sp.loop.environment) {  // E as written moved into the loop and back: one copy, not two (2 GB at N = 1024)
+      auto E = std::move(d.scene.loop.environment);
+      d.scene.loop.environment.reset();
+      sim::LoopSpec spec = loop_with_coupling(d.scene, &r.V);
+      spec.environment = std::move(E);
+      d.loop_with_v = decided_loop(spec, "the designed V");
+      d.scene.loop.environment = std::move(spec.environment);
+    } else {
+      d.loop_with_v = decided_loop(loop_with_coupling(sp, &r.V), "the designed V");
+    }
     const LoopAsWritten& law = *d.loop_with_v;
     r.verification.push_back({"the loop with this V, as written, is Schur stable (" + law.method + ")",
                               law.stable ? Verdict::of(*law.stable, law.status, law.why)
