@@ -31,6 +31,7 @@
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/multidof/scene_analysis.hpp"
 #include "hapstab/multidof/scene_multidof.hpp"
+#include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/scene/scene.hpp"
 
 using namespace hapstab;
@@ -217,6 +218,33 @@ void BM_ContactSymmetry(benchmark::State& st) {
   st.SetLabel("symmetric split beside the whole program (16)");
 }
 BENCHMARK(BM_ContactSymmetry)->Arg(8)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Theorem 6 by the same split (issue 48: multidof/design_symmetry.cpp) beside the whole's
+// block-wise design, in one run, on the scene realised once; counters split_s, whole_s,
+// whole_ratio and both verdicts certified. Not in bench/chart-multidof's filter.
+void BM_ContactSymmetryDesign(benchmark::State& st) {
+  const auto sp = problem_from_scene(scene::parse_scene(example::contact_scene(static_cast<int>(st.range(0))), "contact scene"));
+  std::string why;
+  const auto split = split_problem(sp, why);
+  std::optional<DesignResult> a;
+  DesignResult b;
+  double seconds[2] = {0, 0};
+  for (auto _ : st) {
+    auto t0 = std::chrono::steady_clock::now();
+    a = split ? design_by_symmetry(sp, *split, {}, why) : std::nullopt;
+    seconds[0] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t0 = std::chrono::steady_clock::now();
+    b = design(sp.problem);
+    seconds[1] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  st.counters["split_s"] = seconds[0];
+  st.counters["whole_s"] = seconds[1];
+  st.counters["whole_ratio"] = seconds[1] / seconds[0];
+  st.counters["split_certified"] = a && a->verdict.holds() && a->verdict.proven();
+  st.counters["whole_certified"] = b.verdict.holds() && b.verdict.proven();
+  st.SetLabel("Theorem 6 split beside the whole block-wise design");
+}
+BENCHMARK(BM_ContactSymmetryDesign)->Arg(8)->Arg(32)->Arg(128)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Theorem 6 on the contact scene with one first-order SISO coupling block per device: mode 0 automatic (the block-wise path of design.hpp from 8 DOF
 // on), 1 the generic CCL (DesignPath::generic_sdp: the path before issue 33; 5.7 s at N = 8,

@@ -161,11 +161,10 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
   if (fixed_components.size() > 1)
     block_pts[0].why = "by its " + std::to_string(fixed_components.size()) + " independent components (" +
                        "multidof/components.hpp), each re-checked exactly; the first: " + block_pts[0].why;
-  const std::vector<KypMinPoint>* pts = &block_pts;
   // the whole's invariant point, from the fixed block's X (symmetry.hpp's sigma: g_c >= 1)
   const int m = sp.problem.structure.m();
   const size_t r = split.classes.size();
-  const KypMinPoint& f = (*pts)[0];
+  const KypMinPoint& f = block_pts[0];
   const MatQ delta_f = split.blocks[0].problem.structure.delta_D();
   const auto k_of = [&](size_t c) { return rational(static_cast<long>(split.classes[c].size())); };
   rational sigma(1);
@@ -180,11 +179,12 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
     g[c] = sigma * f.env.X(C, C) / k_of(c);
     qe[c] = f.env.QE(C, C) * sigma / k_of(c);
     qv[c] = f.QV(C, C) * sigma / k_of(c);
-    if (!(qe[c] == s * delta_f(C, C) * g[c])) throw std::logic_error("design_by_symmetry: Q_E is not s Delta_D X");
+    if (!(qe[c] == s * delta_f(C, C) * g[c]))
+      return why_not = split.blocks[0].name + ": its Q_E is not s Delta_D X on class " + std::to_string(c + 1), std::nullopt;
   }
   // each block's point is the whole's image, scaled (the header): checked exactly, not assumed
   for (size_t b = 0; b < B; ++b) {
-    const KypMinPoint& p = (*pts)[b];
+    const KypMinPoint& p = block_pts[b];
     const SymmetryBlock& blk = split.blocks[b];
     const auto n = p.env.X.rows();
     for (Eigen::Index i = 0; i < n; ++i) {
