@@ -1061,6 +1061,31 @@ def check_design16(c, exe, timeout):
             out.update(outcome="MISS", why="the split proves (19) infeasible, the whole design verified a V")
         else:
             out["outcome"] = "agree"
+    elif j.get("path") == "symmetry of identical DOFs (Theorem 5's (16))":  # (19) infeasible as (16) is
+        tags["split verdict"] = "(16) infeasible"
+        cert = f.name[:-5] + ".json"
+        args16 = ["multidof", "analyze", "--scene", f.name, "--quiet"]
+        ran = run_hapstab(exe, args16, timeout)
+        cert_err = run_hapstab(exe, args16 + ["--certificate", cert], timeout)[2]
+        ck = subprocess.run([exe, "check", cert], capture_output=True, text=True) if os.path.exists(cert) else None
+        py = subprocess.run([sys.executable, str(ROOT / "checks" / "hapstab_check.py"), cert], capture_output=True,
+                            text=True) if os.path.exists(cert) else None
+        if not j.get("convex_certified") or (ran[1] or {}).get("verdict") != "infeasible":
+            out.update(outcome="MISS", why=f"design: {j.get('verdict')}; analyze: {(ran[1] or {}).get('verdict')}")
+        elif ck is None and "the checker does not take this model" in cert_err:
+            tags["independent checker"] = "no certificate: the kind's stated limit"  # (a non-symmetric E(1))
+            out["outcome"] = "agree"
+        elif ck is None:
+            out.update(outcome="MISS", why=f"a certified infeasible (16) without its certificate: {cert_err[-300:]}")
+        elif ck.returncode != 0 or (py is not None and py.returncode not in (0, 3)):
+            out.update(outcome="MISS", why=f"the analysis's certificate: hapstab check exit {ck.returncode}, independent {py.returncode}")
+        elif jw is not None and jw.get("stability_concluded"):
+            out.update(outcome="MISS", why="the split proves (16) infeasible, the whole design verified a V")
+        else:
+            tags["independent checker"] = {0: "verified", 3: "beyond its size limit"}.get(py.returncode, "refuted")
+            out["outcome"] = "agree"
+        if os.path.exists(cert) and out["outcome"] != "MISS":
+            os.unlink(cert)
     elif not (j.get("stability_concluded") and j.get("certified")):
         out.update(outcome="MISS", why=f"the split decided without a certified, verified V: {j.get('verdict')}")
     elif jw is not None and jw.get("convex_certified"):

@@ -20,6 +20,9 @@
 // (Lemma 1 for each distinct block of V) and V's stability are checked as always.
 // Infeasible, exactly, without any program: the fixed space's facial conditions admit no X > 0
 // (no_invariant_x below: then no X of the whole is admissible either, by averaging over the group).
+// Infeasible, exactly, where no shared point is found and Theorem 5's (16) split the same way
+// (analyze_by_symmetry) is proven infeasible by a block's witness or facial conditions: (19) is
+// (16) with Q_V restricted to V's blocks, so it has no point either.
 // The fixed space of several independent objects keeps one scale of X per object: its components
 // (components.hpp: its (16) holds iff each component's does) then take its place in the bisection.
 // Not attempted (why_not, the whole design decides or the size limit refuses it): a part whose
@@ -71,10 +74,10 @@ DesignResult infeasible_by_facial(const SymmetryResult& split, size_t b, const F
   return res;
 }
 
-}  // namespace
-
-std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
-                                               const DesignOptions& opt, std::string& why_not) {
+// The design at one shared structured point (the header); nullopt with why_not when a part's
+// premise fails or no point is found.
+std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const SymmetryResult& split,
+                                                   const DesignOptions& opt, std::string& why_not) {
   using detail::KypMinPoint;
   using detail::KypPart;
   using detail::Pinned;
@@ -220,6 +223,33 @@ std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const Sym
   res->plan.push_back({"symmetry of identical DOFs (block-wise)", "decided", blocks});
   res->plan.push_back({"block-wise (structured KYP/Riccati)", "not needed", "the split decided"});
   res->plan.push_back({"generic SDP", "not needed", "the split decided"});
+  return res;
+}
+
+}  // namespace
+
+std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
+                                               const DesignOptions& opt, std::string& why_not) {
+  if (auto r = design_at_shared_point(sp, split, opt, why_not)) return r;
+  if (opt.path == DesignPath::generic_sdp || opt.lmi.backend != lmi::Backend::automatic) return std::nullopt;
+  // No shared point: Theorem 5's (16) by the same split (symmetry.hpp). Its infeasibility, proven
+  // (a block's witness or facial conditions, which hold for the whole), proves (19) infeasible:
+  // (19) is (16) with Q_V restricted to V's block structure, so every point of (19) is one of (16).
+  std::string why16;
+  const std::optional<AnalysisResult> a = analyze_by_symmetry(sp, split, opt.lmi, why16);
+  if (!(a && a->verdict.fails() && a->verdict.proven())) {
+    why_not += "; Theorem 5's (16) by the split: " + (a ? "feasible, or not proven infeasible" : why16);
+    return std::nullopt;
+  }
+  DesignResult res;
+  res.facial = a->facial;
+  res.verdict = {Outcome::fails, Status::exact,
+                 "no solution: the convex part (19) is infeasible (exact): Theorem 5's (16) is (" + a->verdict.evidence +
+                     "), and (19) is (16) with Q_V restricted to V's blocks"};
+  res.path = "symmetry of identical DOFs (Theorem 5's (16))";
+  res.plan.push_back({"symmetry of identical DOFs (block-wise)", "no point", why_not});
+  res.plan.push_back({res.path, "decided", split.group + ": (16) proven infeasible by its blocks"});
+  for (const char* p : {"block-wise (structured KYP/Riccati)", "generic SDP"}) res.plan.push_back({p, "not needed", "the split decided, exactly"});
   return res;
 }
 

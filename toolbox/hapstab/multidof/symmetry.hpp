@@ -93,7 +93,8 @@ std::optional<AnalysisResult> analyze_by_symmetry(const SceneProblem& sp, Symmet
 /// Theorem 6 on sp by the split (design_symmetry.cpp): one structured point shared by the blocks,
 /// lifted to an invariant point of the whole's (16) (checked exactly), then the block-wise design at
 /// it (one CCL per distinct block of V); or (19) infeasible, exactly, when the fixed space's facial
-/// conditions admit no X > 0. nullopt with `why_not` when a block's premise fails.
+/// conditions admit no X > 0, or (with no shared point) analyze_by_symmetry proves (16) infeasible.
+/// nullopt with `why_not` when a block's premise fails and (16) is not proven infeasible.
 std::optional<DesignResult> design_by_symmetry(const SceneProblem& sp, const SymmetryResult& split,
                                                const DesignOptions& opt, std::string& why_not);
 
