@@ -364,3 +364,51 @@ TEST(CmdMultidof, SymmetricSceneSplitsAndLiftsItsPoint) {
   EXPECT_NE(f["plan"][0]["why"].get<std::string>().find("Farkas"), std::string::npos) << f["plan"][0].dump();
   EXPECT_EQ(f["verdict"], "infeasible");
 }
+
+// Theorem 6 on the split of identical DOFs (multidof/design_symmetry.cpp): the path names the
+// group and its blocks, --no-symmetry designs on the whole with the same conclusion, and a V of
+// more than 16 channels is printed block by block, each distinct block once.
+TEST(CmdMultidof, SymmetricSceneIsDesignedOnTheSplit) {
+  const std::string s = scene29("symmetric_contact_6.toml");
+  const auto j = nlohmann::json::parse(run("multidof design --json --duration 0.1 --scene " + s).out);
+  EXPECT_EQ(j["path"], "symmetry of identical DOFs (block-wise)") << j["plan"].dump();
+  EXPECT_NE(j["plan"][0]["why"].get<std::string>().find("S_2^2 (2 classes of 2 identical DOFs, 2 DOFs alone): 3 blocks"),
+            std::string::npos) << j["plan"].dump();
+  EXPECT_TRUE(j["stability_concluded"].get<bool>()) << j["verdict"];
+  EXPECT_TRUE(j["certified"].get<bool>());
+  const auto w = nlohmann::json::parse(run("multidof design --json --no-symmetry --duration 0.1 --scene " + s).out);
+  EXPECT_EQ(w["plan"][0]["fate"], "skipped");
+  EXPECT_EQ(w["plan"][0]["why"], "--no-symmetry");
+  EXPECT_NE(w["path"], j["path"]);
+  EXPECT_EQ(w["stability_concluded"], j["stability_concluded"]);
+  // 20 identical contacts in 4 classes: one distinct coupling block for all 20
+  const std::string twenty = tmp_scene("contact20.toml", R"toml([scene]
+T = "0.01"
+[parameters]
+M = "0.3"
+k = "1000"
+B = "5"
+kc = { repeat = ["500", "600", "700", "800"], times = 5 }
+Bc = { repeat = ["1", "2", "3/2", "5/2"], times = 5 }
+[[device]]
+count = 20
+name = "d"
+m = "1/10"
+b = "1.37"
+[[operator]]
+count = 20
+name = "H"
+dofs = "d[i]"
+tf = "0.1*(s^2+5*s+10)/(s^2+s+1)"
+[environment]
+domain = "s"
+method = "backward_euler"
+diagonal = "kc[i] + Bc[i]*s - (kc[i] + Bc[i]*s)^2/(M*s^2 + (B + sum(Bc))*s + k + sum(kc))"
+off_diagonal = "-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/(M*s^2 + (B + sum(Bc))*s + k + sum(kc))"
+)toml");
+  const auto t = run("multidof design --quiet --duration 0.1 --scene " + twenty);
+  EXPECT_EQ(t.code, 0) << t.out;
+  EXPECT_NE(t.out.find("V = blockdiag(V_1, .., V_20), 1 distinct block"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("(20 in all)"), std::string::npos) << t.out;
+  EXPECT_EQ(t.out.find("A_V ="), std::string::npos) << t.out;
+}
