@@ -81,7 +81,8 @@ multidof-witness  paper 000's Theorem 5 program (16) infeasible for the scene's 
        (E(z) entries, in z or in s by backward Euler/Tustin, its gain, the delay z^-n, the devices' levels
        Delta_D, the operators): every point of (16) has phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T Delta_D X u
        > 0, E-hat = T z/(z-1) z^-n g E (11); the admissible X have X E(1) symmetric (else phi -> -inf at
-       theta -> 0+), one multiplier per group of operators coupled through the symmetric E(1). Route: the
+       theta -> 0+), one multiplier per group of operators coupled through E(1), the ratios within a group
+       g_b / g_a = E(1)_ij / E(1)_ji (i in a, j in b) found along the pairs (none admissible: refused). Route: the
        s-entries parsed with s the rational function of z itself, evaluated at the rational z of the
        evidence in Gaussian rationals; phi per group <= 0, one < 0. Several weighted points (evidence.points,
        the several-frequency witness where X has several free directions): sum_j w_j phi per group.
@@ -2821,7 +2822,7 @@ def check_multidof_witness(c):
     """Paper 000's (16) infeasible for every admissible X: phi_X(z, u) = Re(u^T X E-hat(z) u) + u^T
     Delta_D X u > 0 at every point of (16) (M1 <= 0 at [x; u], x = (zI - A)^-1 B u, and Delta_D X - Q_E
     > 0 by (14)); X E(1) must be symmetric (else phi -> -inf as theta -> 0+, E-hat ~ (T/2)(1 - j
-    cot(theta/2)) E(1)), which for a symmetric E(1) makes g equal on operators E(1) couples; the
+    cot(theta/2)) E(1)), which fixes the ratios g_b / g_a = E(1)_ij / E(1)_ji on operators E(1) couples; the
     evidence holds when phi_c <= 0 on every such group and < 0 on one (phi_X = sum g_c phi_c < 0)."""
     got, refuted = infeasibility_parts(c, "a witness")
     if refuted:
@@ -2837,20 +2838,37 @@ def check_multidof_witness(c):
         for j in range(m):
             if E1[i][j] is None:
                 raise Malformed("model.environment.E[%d][%d]: a pole at z = 1 (E(1) must be finite)" % (i, j))
-    for i in range(m):
-        for j in range(m):
-            if E1[i][j] != E1[j][i]:
-                raise Malformed("model.environment.E: E(1) is not symmetric (%d, %d): outside this kind" % (i, j))
-    group = list(range(len(ops)))  # the operators E(1) couples share one multiplier
+    # the admissible X: g_a E(1)_ij = g_b E(1)_ji (i in operator a, j in b), so g_b = g_a E(1)_ij / E(1)_ji
+    # along every pair not both 0: one direction per connected group (ratio[o] relative to its first
+    # operator group[o]); a 0 against a non-0, opposite signs or a cycle's disagreement leave no X > 0
+    ratio, group = [None] * len(ops), [None] * len(ops)
+    for s0 in range(len(ops)):
+        if ratio[s0] is not None:
+            continue
+        ratio[s0], group[s0], stack = Fraction(1), s0, [s0]
+        while stack:
+            o = stack.pop()
+            for i in range(m):
+                if owner[i] != o:
+                    continue
+                for j in range(m):
+                    a, b = E1[i][j], E1[j][i]
+                    if a[1] != 0 or b[1] != 0:
+                        raise Malformed("model.environment.E: E(1) is not real (%d, %d)" % (i, j))
+                    a, b = a[0], b[0]
+                    if a == 0 and b == 0:
+                        continue
+                    r = ratio[o] * a / b if a != 0 and b != 0 else None
+                    o2 = owner[j]
+                    if r is None or r <= 0 or (ratio[o2] is not None and ratio[o2] != r):
+                        raise Malformed("model.environment.E: no X > 0 makes X E(1) symmetric (%d, %d): the facial "
+                                        "conditions decide, outside this kind" % (i, j))
+                    if ratio[o2] is None:
+                        ratio[o2], group[o2] = r, s0
+                        stack.append(o2)
 
     def find(a):
-        while group[a] != a:
-            a = group[a]
-        return a
-    for i in range(m):
-        for j in range(m):
-            if E1[i][j][0] != 0:
-                group[find(owner[i])] = find(owner[j])
+        return group[a]
     if "points" in ev:  # the several-frequency witness: S_g = sum_j w_j phi_g(z_j, u_j)
         only(ev, ("points",), "evidence")
         pts = ev["points"]
@@ -2898,7 +2916,7 @@ def check_multidof_witness(c):
             r = find(owner[i])
             ubar = (u[i][0], -u[i][1])
             term = cq_mul(ubar, cq_mul(f, acc))[0] + delta[i] * (u[i][0] ** 2 + u[i][1] ** 2)
-            phi[r] = phi.get(r, Fraction(0)) + w * term
+            phi[r] = phi.get(r, Fraction(0)) + w * ratio[owner[i]] * term
     if any(v > 0 for v in phi.values()):
         return False, "phi > 0 on a group of operators: the witness does not hold for every admissible X"
     if all(v == 0 for v in phi.values()):

@@ -185,7 +185,7 @@ def feasible_mutants(cert, rng):
 def perturb_mutants(cert, m):
     """multidof.perturb_C added to the model (paper 000 Sec. VI: E' = Pi (E - E(inf)) + E(inf)): the
     identity leaves a model without one as it was; a swap of two DOFs makes another model (either verdict,
-    the same exit from both checkers: an E'(1) made asymmetric is outside the witness kind); a
+    the same exit from both checkers: an E'(1) made asymmetric may leave no X > 0, exit 2 for both); a
     wrong size or a decimal is malformed."""
     eye = [["1" if i == j else "0" for j in range(m)] for i in range(m)]
     had = "perturb_C" in cert["model"]["environment"]  # then the identity is another model
@@ -272,10 +272,10 @@ def mutants(cert, rng):
     out.append(("an entry unparsable", _set(cert, ["model", "environment", "E"],
                                             [[e + " *" if (i, j) == (0, 0) else e for j, e in enumerate(r)]
                                              for i, r in enumerate(model["environment"]["E"])]), "malformed"))
-    if m >= 2:  # E(1) no longer symmetric: outside the kind
+    if m >= 2:  # E(1) no longer symmetric: another model (the ratio g_1/g_0 moves, or no X > 0 is left: exit 2)
         E = copy.deepcopy(model["environment"]["E"])
         E[0][1] = "(" + E[0][1] + ") + 1"
-        out.append(("E(1) not symmetric", _set(cert, ["model", "environment", "E"], E), "malformed"))
+        out.append(("E(1) not symmetric", _set(cert, ["model", "environment", "E"], E), "same"))
         merged = [[i for i in range(m)]]
         out.append(("operators merged", _set(cert, ["model", "operators"], merged), "agree"))
         split = [[i] for i in range(m)]
@@ -298,7 +298,7 @@ def mutants(cert, rng):
                                                     ["evidence", "z_im"], fs(2 * t2 / (1 + t2 * t2))), "agree"))
     for name in list(model.get("set", {}))[:3]:
         v = Fraction(model["set"][name])
-        same = "perturb_C" in model["environment"]  # E'(1) may turn asymmetric: outside the kind, for both
+        same = "perturb_C" in model["environment"]  # E'(1) may leave no X > 0: exit 2, for both
         out.append(("set.%s x 1.01" % name, _set(cert, ["model", "set", name], fs(v * Fraction(101, 100))), "same" if same else "agree"))
     return out
 

@@ -920,7 +920,7 @@ def check_symmetry16(c, exe, timeout):
     elif cw and vw != v:
         out.update(outcome="MISS", why=f"the split: {v}, the whole program certified {vw}")
     elif not os.path.exists(cert) and "the checker does not take this model" in cert_err:
-        tags["independent checker"] = "no certificate: the kind's stated limit"  # (a non-symmetric E(1) for the witness kind)
+        tags["independent checker"] = "no certificate: the kind's stated limit"  # (a non-symmetric E(1) before stop 66)
         out["outcome"] = "agree"
     elif not os.path.exists(cert):
         out.update(outcome="MISS", why=f"a certified {v} verdict without its certificate: {cert_err[-300:]}")
@@ -1073,7 +1073,7 @@ def check_design16(c, exe, timeout):
         if not j.get("convex_certified") or (ran[1] or {}).get("verdict") != "infeasible":
             out.update(outcome="MISS", why=f"design: {j.get('verdict')}; analyze: {(ran[1] or {}).get('verdict')}")
         elif ck is None and "the checker does not take this model" in cert_err:
-            tags["independent checker"] = "no certificate: the kind's stated limit"  # (a non-symmetric E(1))
+            tags["independent checker"] = "no certificate: the kind's stated limit"
             out["outcome"] = "agree"
         elif ck is None:
             out.update(outcome="MISS", why=f"a certified infeasible (16) without its certificate: {cert_err[-300:]}")

@@ -1,7 +1,8 @@
 // hapstab/check/multidof_witness_check.cpp -- see multidof_witness_check.hpp.
 #include "hapstab/check/multidof_witness_check.hpp"
 
-#include <numeric>
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,15 +15,6 @@ namespace {
 
 using namespace detail;
 using namespace multidof_model;
-
-struct UnionFind {
-  std::vector<size_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-  size_t find(size_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-};
 
 struct WitnessPoint {
   Cq z;
@@ -74,20 +66,51 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
   const size_t m = env.E.size();
   const std::vector<rational> delta = device_levels(p.model, m);
   const std::vector<size_t> owner = operator_of(p.model, m);
-  // (a): E(1) finite and symmetric; the components of the operators coupled through E(1)
+  // (a): E(1) finite; the admissible X: g_o E(1)_ij = g_o' E(1)_ji (i in operator o, j in o'), so
+  // along each entry coupling two operators g_o' = g_o E(1)_ij / E(1)_ji, a positive ratio; each
+  // connected group of operators has one direction X_c (ratio r_o on operator o's DOFs, relative
+  // to the group's first operator), found by a search along the entries and checked consistent
   const auto at1 = environment_at(env, Cq(1));
   if (!at1)
     throw InputError("model.environment.E: an entry has a pole at z = 1 (E-hat would have a double pole there; this kind "
                      "needs E(1) finite)");
   const std::vector<std::vector<Cq>>& E1 = *at1;
-  UnionFind uf(m);
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < m; ++j) {
-      if (E1[i][j].re != E1[j][i].re)
-        throw InputError("model.environment.E: E(1) is not symmetric (entries " + std::to_string(i) + "," +
-                         std::to_string(j) + "); this kind covers a symmetric E(1) only");
-      if (!E1[i][j].re.is_zero()) uf.parent[uf.find(owner[i])] = uf.find(owner[j]);
+  const size_t nops = 1 + *std::max_element(owner.begin(), owner.end());
+  std::vector<std::optional<rational>> ratio(nops);
+  std::vector<size_t> root(nops);
+  const auto no_x = [](size_t i, size_t j, const std::string& why) {
+    return InputError("model.environment.E: no X > 0 makes X E(1) symmetric (entries " + std::to_string(i) + "," +
+                      std::to_string(j) + ": " + why + "): the facial conditions decide, not a witness");
+  };
+  for (size_t s0 = 0; s0 < nops; ++s0) {
+    if (ratio[s0]) continue;
+    ratio[s0] = rational(1);
+    root[s0] = s0;
+    std::vector<size_t> stack{s0};
+    while (!stack.empty()) {
+      const size_t o = stack.back();
+      stack.pop_back();
+      for (size_t i = 0; i < m; ++i) {
+        if (owner[i] != o) continue;
+        for (size_t j = 0; j < m; ++j) {
+          const rational& a = E1[i][j].re;
+          const rational& b = E1[j][i].re;
+          if (a.is_zero() && b.is_zero()) continue;
+          if (a.is_zero() || b.is_zero()) throw no_x(i, j, "one of the pair is 0");
+          const size_t o2 = owner[j];
+          const rational r = *ratio[o] * a / b;  // g_o2 = g_o a / b
+          if (!(r > 0)) throw no_x(i, j, "opposite signs");
+          if (!ratio[o2]) {
+            ratio[o2] = r;
+            root[o2] = s0;
+            stack.push_back(o2);
+          } else if (*ratio[o2] != r) {
+            throw no_x(i, j, o2 == o ? "one operator's DOFs share g" : "the ratios around a cycle disagree");
+          }
+        }
+      }
     }
+  }
   // (b): the evidence, one point or several weighted ones; S_c = sum_j w_j phi_c(z_j, u_j)
   std::vector<rational> S(m);  // per group root
   std::vector<bool> is_root(m, false);
@@ -109,10 +132,10 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
       Cq w;
       for (size_t j = 0; j < m; ++j)
         if (!pt.u[j].is_zero()) w = w + (*Ez)[i][j] * pt.u[j];
-      const size_t c = uf.find(owner[i]);
-      is_root[c] = true;  // Re(conj(u_i) (E-hat u)_i) + delta_i |u_i|^2
+      const size_t c = root[owner[i]];
+      is_root[c] = true;  // r_o (Re(conj(u_i) (E-hat u)_i) + delta_i |u_i|^2)
       const Cq& ui = pt.u[i];
-      S[c] += pt.w * ((conj(ui) * factor * w).re + delta[i] * (ui.re * ui.re + ui.im * ui.im));
+      S[c] += pt.w * *ratio[owner[i]] * ((conj(ui) * factor * w).re + delta[i] * (ui.re * ui.re + ui.im * ui.im));
     }
   }
   size_t groups = 0, negative = 0;
@@ -130,7 +153,7 @@ Verdict check_multidof_witness(const nlohmann::json& cert) {
   }
   if (negative == 0) return {false, "phi = 0 on every group of operators: no strict witness"};
   return {true, "(16) infeasible for every admissible X (" + std::to_string(groups) +
-                    " direction(s): the operators coupled through the symmetric E(1)): " +
+                    " direction(s): the groups of operators coupled through E(1)): " +
                     (points.size() > 1 ? "sum_j w_j phi(z_j, u_j)" : std::string("phi")) +
                     " = Re(u^H X E-hat(z) u) + u^H Delta_D X u <= 0 on each, < 0 on " + std::to_string(negative) + " (" +
                     worst + "), " +

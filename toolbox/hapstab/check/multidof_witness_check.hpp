@@ -21,10 +21,13 @@
 // (a) Every admissible X has X E(1) symmetric: E-hat(e^{jt}) = (T/2)(1 - j cot(t/2)) (g E(1) + O(t))
 //     as t -> 0+ (E analytic at z = 1, verified: no entry has a pole there), so with u = a + jb,
 //     phi_X = (T/2) cot(t/2) a^T (M - M^T) b + O(1), M = g X E(1); if M != M^T some a, b make it
-//     -> -inf. With E(1) symmetric (verified) and g != 0, X E(1) symmetric forces g_o = g_o' for
-//     operators o, o' coupled by an entry E(1)_ij != 0 (i in o, j in o'): the admissible X are
-//     X = sum_c g_c X_c, g_c > 0, over the connected components c of that graph (X_c: 1 on the DOFs
-//     of c's operators).
+//     -> -inf. With g != 0, X E(1) symmetric is g_o E(1)_ij = g_o' E(1)_ji for i in operator o,
+//     j in o': where both entries are 0 nothing; where one is, or their signs differ, or the ratios
+//     g_o'/g_o = E(1)_ij / E(1)_ji disagree around a cycle (o = o' included), no X > 0 is admissible
+//     (the facial conditions decide: refused here, exit 2). Otherwise the admissible X are
+//     X = sum_c g_c X_c, g_c > 0, over the connected components c of the graph of nonzero pairs,
+//     X_c carrying the ratio r_o > 0 (relative to c's first operator) on the DOFs of each operator
+//     o of c -- r_o = 1 throughout when E(1) is symmetric.
 // (b) phi_X = sum_c g_c phi_c, phi_c = phi_{X_c}. The evidence: one point z = z_re + j z_im
 //     (rational, z_re^2 + z_im^2 = 1 exactly, z != 1, not a pole of any entry of E) with u = u +
 //     j u_im (Gaussian rational, not 0; u_im absent: 0), or several `points` z_j, u_j with weights
@@ -37,7 +40,7 @@
 // entries are parsed by lti/parse.hpp and evaluated at z (an s-domain entry N(s)/D(s) as
 // sum n_k sigma^k tau^(d-k) / sum d_k sigma^k tau^(d-k), s = sigma/tau, d = max degree: exact at
 // s = infinity too). Hypotheses verified: T > 0, n in [0, 100000], 1 <= m <= 512, E(1) finite and
-// symmetric, every device level given, every DOF in exactly one operator.
+// some X > 0 admissible (a), every device level given, every DOF in exactly one operator.
 //
 // Implements: paper 000 (11), (14), (16), Theorem 5.
 #pragma once
