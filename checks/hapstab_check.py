@@ -94,7 +94,13 @@ multidof-feasible  paper 000's (16) feasible: the evidence's realisation (A, B, 
        E-hat = T z/(z-1) z^-n g E(z) at N + n + d + 2 integer points (so identically), and the point (P, X,
        Q_E, Q_V) passes P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) with g >= 1 per operator, by
        symmetric elimination in fractions.
-Size limit: multidof-feasible: N + m <= 40; multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
+multidof-feasible-symmetric  the same claim for a scene of alike DOFs, one point per block of its split
+       (paper 000's (16) under the permutations within `classes`): one-DOF operators, the OSP level equal
+       within each class, and E invariant (E(i, i) = E(a0, a0); E(i, k) = E(a0, a1) or E(a0, c0)) are
+       checked on all m^2 entries as reduced rational functions; the blocks' E are formed here,
+       E_f(a, c) = sum_{j in class c} E(a0, j) and e_a = E(a0, a0) - E(a0, a1), and each block's point
+       passes multidof-feasible's test with g > 0 (the lift scales it to g >= 1: multidof/symmetry.hpp).
+Size limit: multidof-feasible: N + m <= 40 (each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -2497,7 +2503,7 @@ def check_limit_cycle(c):
 MAX_WITNESS_DOFS = 64  # m: m^2 entries parsed and evaluated exactly in fractions
 
 
-def env_entries(model, T, params):
+def env_entries(model, T, params, max_dofs=None):
     """E(z) as written, each entry a rational function of z: an s-domain entry parsed with s itself
     the rational function (z - 1)/(T z) (backward Euler) or 2(z - 1)/(T (z + 1)) (Tustin), so the
     substitution is done symbolically here (hapstab's checker evaluates N(s)/D(s) homogeneously)."""
@@ -2524,11 +2530,13 @@ def env_entries(model, T, params):
         leaf = None
     g = exact(env, "gain", "model.environment")
     E = env.get("E")
-    if not isinstance(E, list) or not E or len(E) > MAX_WITNESS_DOFS:
-        if isinstance(E, list) and len(E) > MAX_WITNESS_DOFS:
-            raise TooLarge("model.environment.E: %d DOFs, above this checker's limit of %d" % (len(E), MAX_WITNESS_DOFS))
+    limit = max_dofs or MAX_WITNESS_DOFS
+    if not isinstance(E, list) or not E or len(E) > limit:
+        if isinstance(E, list) and len(E) > limit:
+            raise TooLarge("model.environment.E: %d DOFs, above this checker's limit of %d" % (len(E), limit))
         raise Malformed("model.environment.E: must be an m x m array of strings")
     m = len(E)
+    parsed = {}  # a compact scene written out repeats a few entries m^2 times
     out = []
     for i, row in enumerate(E):
         if not isinstance(row, list) or len(row) != m:
@@ -2539,7 +2547,9 @@ def env_entries(model, T, params):
             if not isinstance(e, str):
                 raise Malformed(where + ": not a string")
             try:
-                out[-1].append(parse_h(e, T, params, var=domain, field=where, leaf=leaf))
+                if e not in parsed:
+                    parsed[e] = parse_h(e, T, params, var=domain, field=where, leaf=leaf)
+                out[-1].append(parsed[e])
             except ZeroDivisionError:
                 raise Malformed(where + ": division by zero")
     if "perturb_C" in env:  # paper 000 Sec. VI: C_E := Pi C_E, D_E unchanged, so E' = Pi (E - D) + D, D = E(inf)
@@ -2625,11 +2635,11 @@ def operator_owner(model, m):
 MAX_FEASIBLE_ORDER = 40  # N + m: exact elimination in fractions on matrices of that order
 
 
-def frac_matrix(ev, key, rows, cols):
+def frac_matrix(ev, key, rows, cols, where="evidence"):
     M = ev.get(key)
     if not isinstance(M, list) or len(M) != rows or any(not isinstance(r, list) or len(r) != cols for r in M):
-        raise Malformed("evidence.%s: must be %d x %d \"p/q\" strings" % (key, rows, cols))
-    return [[exact_value(x, "evidence.%s[%d][%d]" % (key, i, j)) for j, x in enumerate(r)] for i, r in enumerate(M)]
+        raise Malformed("%s.%s: must be %d x %d \"p/q\" strings" % (where, key, rows, cols))
+    return [[exact_value(x, "%s.%s[%d][%d]" % (where, key, i, j)) for j, x in enumerate(r)] for i, r in enumerate(M)]
 
 
 def semidefinite(M, strict):
@@ -2681,36 +2691,25 @@ def solve_shifted(A, B, z):
     return [[M[i][n + j] / M[i][i] for j in range(m)] for i in range(n)]
 
 
-def check_multidof_feasible(c):
-    """Paper 000's (16) feasible: the evidence's (A, B, C, D) realises E-hat = T z/(z-1) z^-n g E(z) of the
-    model (equal at N + n + d + 2 integer points: the cross-multiplied difference has degree <= N + n + d + 1),
-    and (P, X, Q_E, Q_V) satisfies P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) one g >= 1 per operator."""
-    model, claim, ev = parts(c)
-    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
-    only(claim, ("status", "feasible"), "claim")
-    only(ev, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V"), "evidence")
-    if claim.get("status") != "exact":
-        raise Malformed("claim.status: must be \"exact\"")
-    if not isinstance(claim.get("feasible"), bool):
-        raise Malformed("claim.feasible: missing or not true/false")
-    if not claim["feasible"]:
-        return False, "the claim is that (16) is infeasible; a point proves only feasibility"
-    Araw, Draw = ev.get("A"), ev.get("D")
-    if not isinstance(Araw, list):
-        raise Malformed("evidence.A: missing or not a matrix")
-    N = len(Araw)
-    if isinstance(Draw, list) and N + len(Draw) > MAX_FEASIBLE_ORDER:  # before the model is parsed (its m x m entries)
-        raise TooLarge("evidence.A: order %d with m = %d (D's rows), above this checker's limit N + m <= %d" % (
-            N, len(Draw), MAX_FEASIBLE_ORDER))
-    T, n = period(model), delay_of(model)
-    E, g = env_entries(model, T, parameters(model))
+def feasible_point(E, g, T, n, delta, owner, ev, where, g_at_least_one):
+    """(True, how many points compared) when the point `ev` (A, B, C, D, P, X, Q_E, Q_V, named `where`)
+    holds: (A, B, C, D) realises E-hat = T z/(z-1) z^-n g E(z) of the m x m rational functions E (equal at
+    N + n + d + 2 integer points: the cross-multiplied difference has degree <= N + n + d + 1), P > 0,
+    M1 <= 0, (14) > 0, Q_V > 0, X = diag(g), one g per operator, g >= 1 (g > 0 for a block of the split);
+    else (False, what fails)."""
     m = len(E)
-    delta = witness_levels(model, m)
-    owner = operator_owner(model, m)
+    if not isinstance(ev, dict):
+        raise Malformed(where + ": missing or not an object")
+    only(ev, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V"), where)
+    Araw = ev.get("A")
+    if not isinstance(Araw, list):
+        raise Malformed(where + ".A: missing or not a matrix")
+    N = len(Araw)
     if N + m > MAX_FEASIBLE_ORDER:
-        raise TooLarge("evidence.A: order %d with m = %d, above this checker's limit N + m <= %d" % (N, m, MAX_FEASIBLE_ORDER))
-    A, B, C, D = frac_matrix(ev, "A", N, N), frac_matrix(ev, "B", N, m), frac_matrix(ev, "C", m, N), frac_matrix(ev, "D", m, m)
-    P, X, QE, QV = (frac_matrix(ev, k, N if k == "P" else m, N if k == "P" else m) for k in ("P", "X", "Q_E", "Q_V"))
+        raise TooLarge("%s.A: order %d with m = %d, above this checker's limit N + m <= %d" % (where, N, m, MAX_FEASIBLE_ORDER))
+    mat = lambda k, r, cols: frac_matrix(ev, k, r, cols, where)
+    A, B, C, D = mat("A", N, N), mat("B", N, m), mat("C", m, N), mat("D", m, m)
+    P, X, QE, QV = mat("P", N, N), mat("X", m, m), mat("Q_E", m, m), mat("Q_V", m, m)
     d = max(h.degree() for row in E for h in row)
     need, agreed, z = N + n + d + 2, 0, 1
     while agreed < need and z < 2 + 4 * need + 64:
@@ -2736,8 +2735,10 @@ def check_multidof_feasible(c):
                 return False, "X is not diagonal"
             if owner[i] == owner[j] and X[i][i] != X[j][j]:
                 return False, "X is not g I on an operator's DOFs"
-        if X[i][i] < 1:
+        if g_at_least_one and X[i][i] < 1:
             return False, "g < 1 ((9))"
+        if X[i][i] <= 0:
+            return False, "g <= 0"
     if any(M[i][j] != M[j][i] for M in (P, QE, QV) for i in range(len(M)) for j in range(i)):
         return False, "P, Q_E or Q_V not symmetric"
     if not semidefinite(P, True):
@@ -2758,7 +2759,105 @@ def check_multidof_feasible(c):
         return False, "(14) > 0 fails"
     if not semidefinite(QV, True):
         return False, "Q_V > 0 fails"
+    return True, agreed
+
+
+def feasible_claim(c, evidence_keys):
+    """(model, evidence) of a certificate claiming (16) feasible (its fields known), or None when it
+    claims (16) infeasible (which a point cannot prove)."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
+    only(claim, ("status", "feasible"), "claim")
+    only(ev, evidence_keys, "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("feasible"), bool):
+        raise Malformed("claim.feasible: missing or not true/false")
+    return (model, ev) if claim["feasible"] else None
+
+
+def check_multidof_feasible(c):
+    """Paper 000's (16) feasible at the evidence's point on its realisation of the model's E-hat (feasible_point)."""
+    got = feasible_claim(c, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V"))
+    if got is None:
+        return False, "the claim is that (16) is infeasible; a point proves only feasibility"
+    model, ev = got
+    Araw, Draw = ev.get("A"), ev.get("D")
+    if isinstance(Araw, list) and isinstance(Draw, list) and len(Araw) + len(Draw) > MAX_FEASIBLE_ORDER:  # before the model is parsed
+        raise TooLarge("evidence.A: order %d with m = %d (D's rows), above this checker's limit N + m <= %d" % (
+            len(Araw), len(Draw), MAX_FEASIBLE_ORDER))
+    T, n = period(model), delay_of(model)
+    E, g = env_entries(model, T, parameters(model))
+    m = len(E)
+    ok, why = feasible_point(E, g, T, n, witness_levels(model, m), operator_owner(model, m), ev, "evidence", True)
+    if not ok:
+        return False, why
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
+
+
+MAX_SYMMETRIC_DOFS = 512  # m: the invariance is m^2 comparisons of parsed entries (a few distinct ones)
+
+
+def check_multidof_feasible_symmetric(c):
+    """Paper 000's (16) feasible by the split of alike DOFs (multidof-feasible-symmetric, above)."""
+    got = feasible_claim(c, ("classes", "fixed", "zero_sum"))
+    if got is None:
+        return False, "the claim is that (16) is infeasible; points prove only feasibility"
+    model, ev = got
+    T, n = period(model), delay_of(model)
+    if "perturb_C" in (model.get("environment") or {}):
+        raise Malformed("model.environment.perturb_C: outside this kind (the split needs E itself invariant)")
+    E, g = env_entries(model, T, parameters(model), MAX_SYMMETRIC_DOFS)
+    m = len(E)
+    delta, owner = witness_levels(model, m), operator_owner(model, m)
+    if len(set(owner)) != m:  # (h1)
+        raise Malformed("model.operators: an operator has two DOFs or more; this kind needs one-DOF operators")
+    classes = ev.get("classes")
+    if not isinstance(classes, list) or not classes or any(not isinstance(k, list) or not k for k in classes):
+        raise Malformed("evidence.classes: must be a non-empty array of non-empty arrays of DOF indices")
+    flat = [i for k in classes for i in k]
+    if any(not isinstance(i, int) or isinstance(i, bool) for i in flat) or sorted(flat) != list(range(m)):
+        raise Malformed("evidence.classes: must hold every DOF 0..%d exactly once" % (m - 1))
+    cls = {i: a for a, k in enumerate(classes) for i in k}
+    for a, k in enumerate(classes):  # (h2)
+        if any(delta[i] != delta[k[0]] for i in k):
+            return False, "class %d is not of alike DOFs: the OSP levels differ" % a
+    for i in range(m):  # (h3)
+        for k in range(m):
+            a, b = classes[cls[i]], classes[cls[k]]
+            ri, rk = a[0], (a[0] if i == k else a[1] if cls[i] == cls[k] else b[0])
+            if (E[i][k].num, E[i][k].den) != (E[ri][rk].num, E[ri][rk].den):
+                return False, "E is not invariant under the permutations within the classes: E(%d, %d) is not E(%d, %d)" % (i, k, ri, rk)
+    r = len(classes)
+    fixed = [[rf_sum(E[classes[a][0]][j] for j in classes[c]) for c in range(r)] for a in range(r)]
+    ok, why = feasible_point(fixed, g, T, n, [delta[k[0]] for k in classes], list(range(r)), ev.get("fixed"), "evidence.fixed", False)
+    if not ok:
+        return False, "the fixed space's block: " + why
+    zs = ev.get("zero_sum")
+    big = [a for a in range(r) if len(classes[a]) >= 2]
+    if not isinstance(zs, list) or len(zs) != len(big):
+        raise Malformed("evidence.zero_sum: must be one block per class of two DOFs or more (%d)" % len(big))
+    for k, (a, b) in enumerate(zip(big, zs)):
+        where = "evidence.zero_sum[%d]" % k
+        if not isinstance(b, dict):
+            raise Malformed(where + ": not an object")
+        only(b, ("class", "point"), where)
+        if b.get("class") != a or isinstance(b.get("class"), bool):
+            raise Malformed(where + ".class: must be %d (the classes of two DOFs or more, in order)" % a)
+        a0, a1 = classes[a][0], classes[a][1]
+        ok, why = feasible_point([[E[a0][a0] - E[a0][a1]]], g, T, n, [delta[a0]], [0], b.get("point"), where + ".point", False)
+        if not ok:
+            return False, "class %d's zero-sum block: %s" % (a, why)
+    return True, ("(16) feasible by the split of %d classes of alike DOFs (E invariant: %d entries compared), "
+                  "each of %d blocks' points verified with g > 0, lifted to g >= 1" % (r, m * m, 1 + len(big)))
+
+
+def rf_sum(terms):
+    terms = list(terms)
+    out = terms[0]
+    for t in terms[1:]:
+        out = out + t
+    return out
 
 
 def infeasibility_parts(c, by):
@@ -2936,6 +3035,7 @@ def check(c):
             raise Malformed("version: missing or not 1")
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
                     "multidof-feasible": check_multidof_feasible, "multidof-witness": check_multidof_witness,
+                    "multidof-feasible-symmetric": check_multidof_feasible_symmetric,
                     "multidof-facial": check_multidof_facial,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,

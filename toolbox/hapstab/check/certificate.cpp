@@ -14,6 +14,7 @@
 #include "hapstab/check/limit_cycle_check.hpp"
 #include "hapstab/check/multidof_feasible_check.hpp"
 #include "hapstab/check/multidof_facial_check.hpp"
+#include "hapstab/check/multidof_symmetric_check.hpp"
 #include "hapstab/check/multidof_witness_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/passivity_level_mimo_check.hpp"
@@ -239,6 +240,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound-max") return check_bound_max(c);
   if (kind == "limit-cycle") return check_limit_cycle(c);
   if (kind == "multidof-feasible") return check_multidof_feasible(c);
+  if (kind == "multidof-feasible-symmetric") return check_multidof_feasible_symmetric(c);
   if (kind == "multidof-facial") return check_multidof_facial(c);
   if (kind == "multidof-witness") return check_multidof_witness(c);
   if (kind == "passivity-level") return check_passivity_level(c);
@@ -247,14 +249,14 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-facial, multidof-feasible, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) throw InputError(path + ": cannot read (" + std::strerror(errno) + ")");
   if (!S_ISREG(st.st_mode)) throw InputError(path + ": not a regular file");
-  if (st.st_size > (16 << 20)) throw InputError(path + ": larger than 16 MB");
+  if (st.st_size > (64 << 20)) throw InputError(path + ": larger than 64 MB");
   std::ifstream f(path);
   if (!f) throw InputError(path + ": cannot read");
   std::stringstream ss;

@@ -7,6 +7,7 @@
 //   limit-cycle  a periodic orbit of paper 002's loop (4) check/limit_cycle_check.hpp
 //   multidof-facial  (16) infeasible: no X makes X E(1) symmetric  check/multidof_facial_check.hpp
 //   multidof-feasible  Theorem 5's (16) has a point, paper 000  check/multidof_feasible_check.hpp
+//   multidof-feasible-symmetric  the same by the split of identical DOFs  check/multidof_symmetric_check.hpp
 //   multidof-witness  Theorem 5's (16) infeasible, paper 000  check/multidof_witness_check.hpp
 //   passivity-level  SISO ISP/OSP level (paper 000)       check/passivity_level_check.hpp
 //   passivity-level-mimo  MIMO ISP level of A, B, C, D    check/passivity_level_mimo_check.hpp
@@ -40,7 +41,7 @@ struct Verdict {
 /// The certificate's kind decides the checker. InputError (naming the field) when malformed.
 Verdict check_certificate(const nlohmann::json& certificate);
 
-/// Reads FILE (a regular file of at most 16 MB of JSON) and checks it; InputError when it cannot
+/// Reads FILE (a regular file of at most 64 MB of JSON: a 512-DOF model written out is 23 MB) and checks it; InputError when it cannot
 /// be read or parsed.
 Verdict check_file(const std::string& path);
 

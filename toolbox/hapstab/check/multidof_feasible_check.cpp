@@ -94,10 +94,10 @@ std::optional<Mat> resolvent_times(const Mat& A, const Mat& B, const rational& z
   return Y;
 }
 
-Mat sized(const nlohmann::json& ev, const char* key, size_t rows, size_t cols) {
-  Mat M = exact_matrix(ev, key, "evidence", max_order);
+Mat sized(const nlohmann::json& ev, const std::string& where, const char* key, size_t rows, size_t cols) {
+  Mat M = exact_matrix(ev, key, where, max_order);
   if (M.size() != rows || (rows > 0 && M[0].size() != cols))
-    throw InputError(std::string("evidence.") + key + ": must be " + std::to_string(rows) + " x " + std::to_string(cols));
+    throw InputError(where + "." + key + ": must be " + std::to_string(rows) + " x " + std::to_string(cols));
   return M;
 }
 
@@ -128,6 +128,71 @@ std::string realises(const Environment& env, const Mat& A, const Mat& B, const M
 
 }  // namespace
 
+namespace detail {
+
+FeasiblePoint read_feasible_point(const nlohmann::json& ev, const std::string& where, size_t m) {
+  only_fields(ev, {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V"}, where);
+  FeasiblePoint pt;
+  pt.A = exact_matrix(ev, "A", where, max_order);
+  const size_t N = pt.A.size();
+  if (N + m > max_order)
+    throw InputError(where + ".A: order " + std::to_string(N) + " with m = " + std::to_string(m) + " is beyond this checker's limit");
+  if (N > 0 && pt.A[0].size() != N) throw InputError(where + ".A: must be square");
+  pt.B = sized(ev, where, "B", N, m);
+  pt.C = sized(ev, where, "C", m, N);
+  pt.D = sized(ev, where, "D", m, m);
+  pt.P = sized(ev, where, "P", N, N);
+  pt.X = sized(ev, where, "X", m, m);
+  pt.QE = sized(ev, where, "Q_E", m, m);
+  pt.QV = sized(ev, where, "Q_V", m, m);
+  return pt;
+}
+
+std::string feasible_point_fails(const Environment& env, const std::vector<rational>& delta, const std::vector<size_t>& owner,
+                                 const FeasiblePoint& pt, bool g_at_least_one, long& points) {
+  const size_t m = env.E.size(), N = pt.A.size();
+  const Mat &A = pt.A, &B = pt.B, &C = pt.C, &D = pt.D, &P = pt.P, &X = pt.X, &QE = pt.QE, &QV = pt.QV;
+  if (const std::string why = realises(env, A, B, C, D, points); !why.empty())
+    return "(A, B, C, D) does not realise the model's E-hat = T z/(z - 1) z^-n g E(z): " + why;
+  // X in G: diagonal, one g per operator, g >= 1 (9) (or g > 0: a block of the split, which the lift scales)
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      if (i != j && !X[i][j].is_zero()) return "X is not diagonal";
+      if (owner[i] == owner[j] && X[i][i] != X[j][j]) return "X is not g I on the DOFs of one operator";
+    }
+  for (size_t i = 0; i < m; ++i) {
+    if (g_at_least_one && X[i][i] < 1) return "g_" + std::to_string(i) + " = " + decimal(X[i][i]) + " < 1 ((9))";
+    if (X[i][i] <= 0) return "g_" + std::to_string(i) + " = " + decimal(X[i][i]) + " <= 0";
+  }
+  if (!symmetric(P) || !symmetric(QE) || !symmetric(QV)) return "P, Q_E or Q_V is not symmetric";
+  if (!definite(P, true)) return "P > 0 fails";
+  // -M1 >= 0
+  const Mat At = transpose(A), AtP = mul(At, P);
+  const Mat M11 = add(mul(AtP, A), P, -1);
+  const Mat M12 = add(mul(AtP, B), mul(transpose(C), X), rational(-1, 2));
+  const Mat XD = mul(X, D);
+  Mat M22 = add(mul(mul(transpose(B), P), B), QE, -1);
+  M22 = add(M22, add(XD, transpose(XD)), rational(-1, 2));
+  Mat negM1 = zeros(N + m, N + m);
+  for (size_t i = 0; i < N + m; ++i)
+    for (size_t j = 0; j < N + m; ++j)
+      negM1[i][j] = -(i < N ? (j < N ? M11[i][j] : M12[i][j - N]) : (j < N ? M12[j][i - N] : M22[i - N][j - N]));
+  if (!definite(negM1, false)) return "(16)'s first LMI M1 <= 0 fails";
+  // (14): [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0
+  Mat S = zeros(2 * m, 2 * m);
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      S[i][j] = (i == j ? delta[i] * X[i][i] : rational(0)) - QE[i][j];
+      S[i][m + j] = S[m + i][j] = -QE[i][j];
+      S[m + i][m + j] = QV[i][j] - QE[i][j];
+    }
+  if (!definite(S, true)) return "(14) > 0 fails";
+  if (!definite(QV, true)) return "Q_V > 0 fails";
+  return "";
+}
+
+}  // namespace detail
+
 Verdict check_multidof_feasible(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
   only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
@@ -142,50 +207,12 @@ Verdict check_multidof_feasible(const nlohmann::json& cert) {
   const size_t m = env.E.size();
   const std::vector<rational> delta = device_levels(p.model, m);
   const std::vector<size_t> owner = operator_of(p.model, m);
-  const Mat A = exact_matrix(p.evidence, "A", "evidence", max_order);
-  const size_t N = A.size();
-  if (N + m > max_order) throw InputError("evidence.A: order " + std::to_string(N) + " with m = " + std::to_string(m) + " is beyond this checker's limit");
-  if (N > 0 && A[0].size() != N) throw InputError("evidence.A: must be square");
-  const Mat B = sized(p.evidence, "B", N, m), C = sized(p.evidence, "C", m, N), D = sized(p.evidence, "D", m, m),
-            P = sized(p.evidence, "P", N, N), X = sized(p.evidence, "X", m, m), QE = sized(p.evidence, "Q_E", m, m),
-            QV = sized(p.evidence, "Q_V", m, m);
+  const FeasiblePoint pt = read_feasible_point(p.evidence, "evidence", m);
   long points = 0;
-  if (const std::string why = realises(env, A, B, C, D, points); !why.empty())
-    return {false, "(A, B, C, D) does not realise the model's E-hat = T z/(z - 1) z^-n g E(z): " + why};
-  // X in G: diagonal, one g >= 1 per operator (9)
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < m; ++j) {
-      if (i != j && !X[i][j].is_zero()) return {false, "X is not diagonal"};
-      if (owner[i] == owner[j] && X[i][i] != X[j][j]) return {false, "X is not g I on the DOFs of one operator"};
-    }
-  for (size_t i = 0; i < m; ++i)
-    if (X[i][i] < 1) return {false, "g_" + std::to_string(i) + " = " + decimal(X[i][i]) + " < 1 ((9))"};
-  if (!symmetric(P) || !symmetric(QE) || !symmetric(QV)) return {false, "P, Q_E or Q_V is not symmetric"};
-  if (!definite(P, true)) return {false, "P > 0 fails"};
-  // -M1 >= 0
-  const Mat At = transpose(A), AtP = mul(At, P);
-  const Mat M11 = add(mul(AtP, A), P, -1);
-  const Mat M12 = add(mul(AtP, B), mul(transpose(C), X), rational(-1, 2));
-  const Mat XD = mul(X, D);
-  Mat M22 = add(mul(mul(transpose(B), P), B), QE, -1);
-  M22 = add(M22, add(XD, transpose(XD)), rational(-1, 2));
-  Mat negM1 = zeros(N + m, N + m);
-  for (size_t i = 0; i < N + m; ++i)
-    for (size_t j = 0; j < N + m; ++j)
-      negM1[i][j] = -(i < N ? (j < N ? M11[i][j] : M12[i][j - N]) : (j < N ? M12[j][i - N] : M22[i - N][j - N]));
-  if (!definite(negM1, false)) return {false, "(16)'s first LMI M1 <= 0 fails"};
-  // (14): [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0
-  Mat S = zeros(2 * m, 2 * m);
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = 0; j < m; ++j) {
-      S[i][j] = (i == j ? delta[i] * X[i][i] : rational(0)) - QE[i][j];
-      S[i][m + j] = S[m + i][j] = -QE[i][j];
-      S[m + i][m + j] = QV[i][j] - QE[i][j];
-    }
-  if (!definite(S, true)) return {false, "(14) > 0 fails"};
-  if (!definite(QV, true)) return {false, "Q_V > 0 fails"};
-  return {true, "(16) feasible: (A, B, C, D) realises the model's E-hat (" + std::to_string(N) + " states; equal at " +
-                    std::to_string(points) + " points, more than the degree of their difference), P > 0, M1 <= 0, (14) > 0, "
+  if (const std::string why = feasible_point_fails(env, delta, owner, pt, true, points); !why.empty()) return {false, why};
+  return {true, "(16) feasible: (A, B, C, D) realises the model's E-hat (" + std::to_string(pt.A.size()) +
+                    " states; equal at " + std::to_string(points) +
+                    " points, more than the degree of their difference), P > 0, M1 <= 0, (14) > 0, "
                     "Q_V > 0 and X = diag(g) in G with g >= 1, exactly"};
 }
 

@@ -25,12 +25,34 @@
 // Implements: paper 000 (9), (11), (14), (16), Theorem 5.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/multidof_model.hpp"
 
 namespace hapstab::check {
 
 Verdict check_multidof_feasible(const nlohmann::json& certificate);
+
+namespace detail {
+
+/// The evidence of one point: the realisation (A, B, C, D) and (P, X, Q_E, Q_V), exact.
+struct FeasiblePoint {
+  std::vector<std::vector<rational>> A, B, C, D, P, X, QE, QV;
+};
+/// `ev` (named `where` in errors) as a FeasiblePoint of an m-DOF environment; InputError naming the
+/// field (a missing or extra key, a size, an order N + m beyond 160).
+FeasiblePoint read_feasible_point(const nlohmann::json& ev, const std::string& where, size_t m);
+/// "" when (r) and (16) above hold at `pt` for `env`, the levels `delta` and the operators `owner`;
+/// else what fails. g_at_least_one: X's g >= 1 ((9), a whole scene); else g > 0 (a block of the
+/// symmetric kind, which the lift scales: check/multidof_symmetric_check.hpp). `points`: how many
+/// points (r) compared.
+std::string feasible_point_fails(const multidof_model::Environment& env, const std::vector<rational>& delta,
+                                 const std::vector<size_t>& owner, const FeasiblePoint& pt, bool g_at_least_one, long& points);
+
+}  // namespace detail
 
 }  // namespace hapstab::check

@@ -1,6 +1,8 @@
 // hapstab/check/multidof_model.cpp -- see multidof_model.hpp.
 #include "hapstab/check/multidof_model.hpp"
 
+#include <map>
+
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -66,6 +68,7 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
     throw InputError("model.environment.E: must be an m x m array of expression strings, 1 <= m <= " +
                      std::to_string(max_dofs));
   const size_t m = env.at("E").size();
+  std::map<std::string, TransferFunction> parsed;  // a compact scene written out repeats a few entries m^2 times
   ParseOptions po;
   po.variable = e.var;
   po.T = T;
@@ -79,7 +82,10 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
       const std::string where = "model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) + "]";
       if (!row.at(j).is_string()) throw InputError(where + ": not a string");
       try {
-        e.E.back().push_back(parse_tf(row.at(j).get<std::string>(), po));
+        const std::string& text = row.at(j).get_ref<const std::string&>();
+        auto it = parsed.find(text);
+        if (it == parsed.end()) it = parsed.emplace(text, parse_tf(text, po)).first;
+        e.E.back().push_back(it->second);
       } catch (const InputError& err) {
         throw InputError(where + ": " + err.what());
       }
