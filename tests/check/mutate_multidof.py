@@ -71,10 +71,25 @@ def perturbed_walls(rng):
     return "\n".join(L) + "\n"
 
 
+def symmetric_scene(rng):
+    """A scene of alike DOFs (the symmetry16 campaign's, tests/verify/independent.py: N = 2-32 in 1-3
+    classes, delays 0-2): (16) split by multidof/symmetry.hpp, its certificate the lifted point or
+    witness, or block by block (multidof-feasible-symmetric) where the lifted order N + m is above 40."""
+    import independent
+    import indep_loop
+    for _ in range(8):  # N >= 12 where a draw allows: a lifted order above 40, the symmetric kind's own
+        c = independent.case_symmetry16(rng)
+        if len(c["devices"]) >= 12:
+            break
+    return indep_loop.scene_toml(c)
+
+
 def produce(hapstab, rng, tmp, i):
-    """A certificate of a random scene (every fourth a damper chain), or the reason none was written."""
+    """A certificate of a random scene (every fourth a damper chain, every eighth of alike DOFs), or the
+    reason none was written."""
     import indep_witness  # the witness campaign's scene generator (numpy, mpmath: only for this kind)
-    text = damper_chain(rng) if i % 4 == 3 else perturbed_walls(rng) if i % 8 == 5 else indep_witness.gen(rng)["text"]
+    text = damper_chain(rng) if i % 4 == 3 else perturbed_walls(rng) if i % 8 == 5 else symmetric_scene(rng) if i % 8 == 1 \
+        else indep_witness.gen(rng)["text"]
     scene = os.path.join(tmp, "w%d.toml" % i)
     with open(scene, "w") as f:
         f.write(text)
@@ -225,8 +240,70 @@ def facial_mutants(cert, m):
     return out
 
 
+def symmetric_mutants(cert, rng):
+    """A multidof-feasible-symmetric certificate: the classes, a point per block (the fixed space first)."""
+    ev, model = cert["evidence"], cert["model"]
+    classes, E = ev["classes"], model["environment"]["E"]
+    m = len(E)
+    out = [("unmutated", cert, "accept")]
+    out.append(("claim infeasible", _set(cert, ["claim", "feasible"], False), "refute"))
+    big = [a for a, k in enumerate(classes) if len(k) >= 2]
+    i, k = rng.choice(classes[big[0]]) if big else 0, rng.randrange(m)
+    edited = copy.deepcopy(E)
+    edited[i][k] = "(" + E[i][k] + ") + 1/1000"
+    out.append(("E(%d, %d) + 1/1000 (E no longer invariant)" % (i, k), _set(cert, ["model", "environment", "E"], edited), "refute"))
+    if len(classes) >= 2:
+        a, b = rng.sample(range(len(classes)), 2)
+        mixed = copy.deepcopy(classes)
+        mixed[a][0], mixed[b][0] = mixed[b][0], mixed[a][0]
+        out.append(("classes %d and %d trade a DOF" % (a, b), _set(cert, ["evidence", "classes"], mixed), "same"))
+        swapped = copy.deepcopy(classes)
+        swapped[a], swapped[b] = swapped[b], swapped[a]
+        out.append(("classes %d and %d swapped" % (a, b), _set(cert, ["evidence", "classes"], swapped), "same"))
+    levels = [dict(d) for d in model["devices"]]
+    if big and len(classes[big[0]]) >= 2:
+        d = classes[big[0]][1]  # one device per DOF (alike DOFs are one-DOF devices)
+        levels[d]["osp" if "osp" in levels[d] else "b"] = fs(Fraction(levels[d].get("osp", levels[d].get("b"))) + 1)
+        out.append(("one level in a class + 1", _set(cert, ["model", "devices"], levels), "refute"))
+    fixed = ev["fixed"]
+    if fixed["P"]:
+        out.append(("fixed P[0][0] negated", _set(cert, ["evidence", "fixed", "P"], [[fs(-Fraction(x)) if (r, c) == (0, 0) else x
+                                                                                     for c, x in enumerate(row)] for r, row in enumerate(fixed["P"])]),
+                    "refute"))
+    out.append(("fixed g_0 = 0", _set(cert, ["evidence", "fixed", "X"], [["0" if (r, c) == (0, 0) else x for c, x in enumerate(row)]
+                                                                        for r, row in enumerate(fixed["X"])]), "refute"))
+    out.append(("delay + 1", _set(cert, ["model", "delay"], model["delay"] + 1), "refute"))
+    if ev["zero_sum"]:
+        zs = copy.deepcopy(ev["zero_sum"])
+        zs[0]["point"]["Q_V"] = [["0"]]
+        out.append(("a zero-sum block's Q_V = 0", _set(cert, ["evidence", "zero_sum"], zs), "refute"))
+        zs = copy.deepcopy(ev["zero_sum"])
+        zs[0]["point"]["D"] = [[fs(Fraction(zs[0]["point"]["D"][0][0]) + 1)]]
+        out.append(("a zero-sum block's D + 1", _set(cert, ["evidence", "zero_sum"], zs), "refute"))
+        out.append(("a zero-sum block dropped", _set(cert, ["evidence", "zero_sum"], ev["zero_sum"][1:]), "malformed"))
+        zs = copy.deepcopy(ev["zero_sum"])
+        zs[0]["class"] = zs[0]["class"] + 1
+        out.append(("a zero-sum block's class moved", _set(cert, ["evidence", "zero_sum"], zs), "malformed"))
+    for path in (["evidence", "classes"], ["evidence", "fixed"], ["evidence", "zero_sum"], ["model", "operators"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), _set(cert, path, None), "malformed"))
+    out.append(("a DOF in two classes", _set(cert, ["evidence", "classes"], classes + [[0]]), "malformed"))
+    out.append(("added evidence.A", _set(cert, ["evidence", "A"], [["0"]]), "malformed"))
+    out.append(("perturb_C added", _set(cert, ["model", "environment", "perturb_C"],
+                                       [["1" if r == c else "0" for c in range(m)] for r in range(m)]), "malformed"))
+    if m >= 2:
+        out.append(("operators merged", _set(cert, ["model", "operators"], [list(range(m))]), "malformed"))
+    out.append(("gain x 1.01", _set(cert, ["model", "environment", "gain"],
+                                   fs(Fraction(101, 100) * Fraction(model["environment"]["gain"]))), "refute"))
+    out.append(("T doubled", _set(cert, ["model", "T"], fs(2 * Fraction(model["T"]))), "agree"))
+    out.append(("fixed Q_E x 2", _set(cert, ["evidence", "fixed", "Q_E"], [[fs(2 * Fraction(x)) for x in r] for r in fixed["Q_E"]]),
+                "agree"))
+    return out
+
+
 def mutants(cert, rng):
-    """[(name, certificate, expectation)] of one multidof-feasible, -facial or -witness certificate."""
+    """[(name, certificate, expectation)] of one multidof-feasible(-symmetric), -facial or -witness certificate."""
+    if cert["kind"] == "multidof-feasible-symmetric":
+        return symmetric_mutants(cert, rng)
     if cert["kind"] == "multidof-facial":
         return facial_mutants(cert, len(cert["model"]["environment"]["E"])) + \
             perturb_mutants(cert, len(cert["model"]["environment"]["E"]))[1:]
@@ -277,7 +354,7 @@ def mutants(cert, rng):
         E[0][1] = "(" + E[0][1] + ") + 1"
         out.append(("E(1) not symmetric", _set(cert, ["model", "environment", "E"], E), "same"))
         merged = [[i for i in range(m)]]
-        out.append(("operators merged", _set(cert, ["model", "operators"], merged), "agree"))
+        out.append(("operators merged", _set(cert, ["model", "operators"], merged), "same"))  # may leave no X > 0: exit 2 for both
         split = [[i] for i in range(m)]
         out.append(("operators split", _set(cert, ["model", "operators"], split), "agree"))
     # agree: the model or the evidence moved, the claim unknown: the two checkers must agree

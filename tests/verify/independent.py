@@ -86,6 +86,7 @@ run that compares fewer fails ("TOO FEW COMPARED"). --case K checks no minimum.
 """
 import argparse
 import collections
+import json
 import math
 import os
 import pathlib
@@ -930,6 +931,8 @@ def check_symmetry16(c, exe, timeout):
                                                               else " (a class's zero-sum space)")
         ck = subprocess.run([exe, "check", cert], capture_output=True, text=True)
         py = subprocess.run([sys.executable, str(ROOT / "checks" / "hapstab_check.py"), cert], capture_output=True, text=True)
+        with open(cert) as fc:
+            tags["certificate"] = json.load(fc)["kind"]  # the lifted point, or block by block beyond order 40
         tags["independent checker"] = {0: "verified", 3: "beyond its size limit"}.get(py.returncode, "refuted")
         if ck.returncode != 0 or py.returncode not in (0, 3):
             out.update(outcome="MISS", why=f"the lifted point: hapstab check exit {ck.returncode} ({ck.stdout.strip()[:200]}); "
@@ -945,6 +948,7 @@ def check_symmetry16(c, exe, timeout):
 BRANCHES_SYMMETRY16 = [  # compared cases
     ("hapstab path", "symmetry", 0.25), ("split verdict", "feasible", 0.1), ("split verdict", "infeasible (fixed space)", 0.02), ("independent checker", "verified", 0.15), ("N", "16-32", 0.05),
     ("classes", "3", 0.1), ("a class of one", True, 0.05), ("delay", "1", 0.05),
+    ("certificate", "multidof-feasible-symmetric", 0.01),
 ]
 
 
