@@ -100,7 +100,10 @@ multidof-feasible-symmetric  the same claim for a scene of alike DOFs, one point
        checked on all m^2 entries as reduced rational functions; the blocks' E are formed here,
        E_f(a, c) = sum_{j in class c} E(a0, j) and e_a = E(a0, a0) - E(a0, a1), and each block's point
        passes multidof-feasible's test with g > 0 (the lift scales it to g >= 1: multidof/symmetry.hpp).
-Size limit: multidof-feasible: N + m <= 40 (each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
+multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D): (16) at the evidence's point as
+       multidof-feasible, and Lemma 1 for V-hat (17) (built here from V and K = (T/2) Delta_D^-1) at its X and
+       Q_V: P_V > 0 and F <= 0 by symmetric elimination in fractions.
+Size limit: multidof-feasible: N + m <= 40 (multidof-coupling: also nV + m <= 40; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -2795,6 +2798,64 @@ def check_multidof_feasible(c):
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
 
 
+def check_multidof_coupling(c):
+    """Paper 000's Theorem 4 for the model's coupling V, through Theorem 5: (16) at the evidence's point
+    (feasible_point), and Lemma 1 for V-hat (17) (Gamma = I, K = (T/2) Delta_D^-1 (12)) at its X and Q_V:
+    P_V > 0 and F = [[A'PA - P + C'QC, A'PB - C'X/2 + C'QD], [., B'PB - (XD + D'X)/2 + D'QD]] <= 0."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators", "coupling"), "model")
+    only(claim, ("status", "theorem4"), "claim")
+    only(ev, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V", "P_V"), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("theorem4"), bool):
+        raise Malformed("claim.theorem4: missing or not true/false")
+    if not claim["theorem4"]:
+        return False, "the claim is that V misses Theorem 4's conditions; a point proves only that it meets them"
+    V = model.get("coupling")
+    if not isinstance(V, dict):
+        raise Malformed("model.coupling: missing or not an object")
+    only(V, ("A", "B", "C", "D"), "model.coupling")
+    Araw = V.get("A")
+    if not isinstance(Araw, list):
+        raise Malformed("model.coupling.A: missing or not a matrix")
+    nv = len(Araw)
+    T, n = period(model), delay_of(model)
+    E, g = env_entries(model, T, parameters(model))
+    m = len(E)
+    if nv + m > MAX_FEASIBLE_ORDER:
+        raise TooLarge("model.coupling.A: V-hat's order %d above this checker's limit %d" % (nv + m, MAX_FEASIBLE_ORDER))
+    AV, BV, CV, DV = (frac_matrix(V, k, r, cl, "model.coupling") for k, r, cl in (("A", nv, nv), ("B", nv, m), ("C", m, nv), ("D", m, m)))
+    delta, owner = witness_levels(model, m), operator_owner(model, m)
+    ok, why = feasible_point(E, g, T, n, delta, owner, {k: v for k, v in ev.items() if k != "P_V"}, "evidence", True)
+    if not ok:
+        return False, "(16) at the evidence's point: " + why
+    if any(d <= 0 for d in delta):
+        raise Malformed("model.devices: a level <= 0: K = (T/2) Delta_D^-1 (12) is not defined")
+    K = [[T / (2 * delta[i]) if i == j else Fraction(0) for j in range(m)] for i in range(m)]
+    N = nv + m  # V-hat (17) with Gamma = I
+    A = [list(AV[i]) + [-BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(0)] * N for _ in range(m)]
+    B = [[BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
+    C = [list(CV[i]) + [(K[i][j] - DV[i][j]) / T for j in range(m)] for i in range(m)]
+    D = [[(DV[i][j] - K[i][j]) / T for j in range(m)] for i in range(m)]
+    PV = frac_matrix(ev, "P_V", N, N)
+    X, QV = frac_matrix(ev, "X", m, m), frac_matrix(ev, "Q_V", m, m)
+    if any(PV[i][j] != PV[j][i] for i in range(N) for j in range(i)):
+        return False, "P_V is not symmetric"
+    if not semidefinite(PV, True):
+        return False, "P_V > 0 fails"
+    AtP, CtQ = mmul(mT(A), PV), mmul(mT(C), QV)
+    F11 = msum(msum(mmul(AtP, A), PV, -1), mmul(CtQ, C))
+    F12 = msum(msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)), mmul(CtQ, D))
+    XD = mmul(X, D)
+    F22 = msum(msum(mmul(mmul(mT(B), PV), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), QV), D))
+    neg = [[-(F11[i][j] if j < N else F12[i][j - N]) for j in range(N + m)] for i in range(N)]
+    neg += [[-(F12[j][i] if j < N else F22[i][j - N]) for j in range(N + m)] for i in range(m)]
+    if not semidefinite(neg, False):
+        return False, "Lemma 1 for V-hat at X and Q_V: F <= 0 fails"
+    return True, "V meets Theorem 4's conditions: (16) at the point, V-hat Gamma^-1 Q_V Gamma^-1-OSP by Lemma 1"
+
+
 MAX_SYMMETRIC_DOFS = 512  # m: the invariance is m^2 comparisons of parsed entries (a few distinct ones)
 
 
@@ -3036,6 +3097,7 @@ def check(c):
         checkers = {"bound": check_bound, "bound-max": check_bound_max, "limit-cycle": check_limit_cycle,
                     "multidof-feasible": check_multidof_feasible, "multidof-witness": check_multidof_witness,
                     "multidof-feasible-symmetric": check_multidof_feasible_symmetric,
+                    "multidof-coupling": check_multidof_coupling,
                     "multidof-facial": check_multidof_facial,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,

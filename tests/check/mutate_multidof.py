@@ -94,13 +94,16 @@ def produce(hapstab, rng, tmp, i):
     with open(scene, "w") as f:
         f.write(text)
     path = os.path.join(tmp, "w%d.json" % i)
+    command = "design" if i % 8 == 6 else "analyze"  # every eighth: the designed coupling (multidof-coupling)
     try:  # a verdict the structured paths cannot reach falls to the generic SDP: minutes at delay 20+
-        p = subprocess.run([hapstab, "multidof", "analyze", "--scene", scene, "--quiet", "--certificate", path],
+        p = subprocess.run([hapstab, "multidof", command, "--scene", scene, "--quiet", "--certificate", path],
                            capture_output=True, text=True, timeout=60)
     except subprocess.TimeoutExpired:
         return "over 60 s (the generic SDP)"
     if p.returncode == 2 and "no certificate kind yet" in p.stderr:
         return "decided another way (no kind)"
+    if p.returncode == 2 and command == "design" and "no certificate" in p.stderr:
+        return "design: no V certified exactly, or beyond Theorem 4's generic program"
     if p.returncode not in (0, 1) or not os.path.exists(path):
         return "exit %d: %s" % (p.returncode, p.stderr.strip().split("error: ", 1)[-1][:60])
     with open(path) as f:
@@ -300,10 +303,53 @@ def symmetric_mutants(cert, rng):
     return out
 
 
+def coupling_mutants(cert, rng):
+    """A multidof-coupling certificate: (16)'s point and V-hat's storage P_V for the model's coupling V."""
+    ev, model = cert["evidence"], cert["model"]
+    V = model["coupling"]
+    m, n = len(ev["X"]), len(ev["P_V"])
+    out = [("unmutated", cert, "accept")]
+
+    def scaled(key, f, where="evidence"):
+        M = (ev if where == "evidence" else V)[key]
+        return [[fs(f(i, j, Fraction(x))) for j, x in enumerate(r)] for i, r in enumerate(M)]
+    out.append(("claim false", _set(cert, ["claim", "theorem4"], False), "refute"))
+    out.append(("P_V[0][0] negated", _set(cert, ["evidence", "P_V"], scaled("P_V", lambda i, j, x: -x if (i, j) == (0, 0) else x)),
+                "refute"))
+    if n > 1:
+        out.append(("P_V not symmetric", _set(cert, ["evidence", "P_V"], scaled("P_V", lambda i, j, x: x + 1 if (i, j) == (0, n - 1) else x)),
+                    "refute"))
+    out.append(("delay + 1", _set(cert, ["model", "delay"], model["delay"] + 1), "refute"))
+    out.append(("g_0 = 1/2", _set(cert, ["evidence", "X"], scaled("X", lambda i, j, x: Fraction(1, 2) if (i, j) == (0, 0) else x)), "refute"))
+    out.append(("D_V x 2", _set(cert, ["model", "coupling", "D"], scaled("D", lambda i, j, x: 2 * x, "V")), "agree"))
+    out.append(("D_V x 1/4", _set(cert, ["model", "coupling", "D"], scaled("D", lambda i, j, x: x / 4, "V")), "agree"))
+    out.append(("D_V negated", _set(cert, ["model", "coupling", "D"], scaled("D", lambda i, j, x: -x, "V")), "agree"))
+    out.append(("P_V x 2", _set(cert, ["evidence", "P_V"], scaled("P_V", lambda i, j, x: 2 * x)), "agree"))
+    out.append(("Q_V x 2", _set(cert, ["evidence", "Q_V"], scaled("Q_V", lambda i, j, x: 2 * x)), "agree"))
+    big = [dict(d) for d in model["devices"]]
+    for d in big:
+        d["osp" if "osp" in d else "b"] = fs(Fraction(d.get("osp", d.get("b"))) * 2)
+    out.append(("device levels doubled (K halved)", _set(cert, ["model", "devices"], big), "agree"))
+    for path in (["evidence", "P_V"], ["model", "coupling"], ["model", "coupling", "D"], ["claim", "theorem4"], ["evidence", "X"]):
+        out.append(("deleted " + ".".join(path), _set(cert, path, None), "malformed"))
+    out.append(("coupling.B a row short", _set(cert, ["model", "coupling", "B"], V["B"][:-1] if V["B"] else [["0"] * m]), "malformed"))
+    out.append(("P_V a row short", _set(cert, ["evidence", "P_V"], ev["P_V"][:-1]), "malformed"))
+    out.append(("added evidence.u", _set(cert, ["evidence", "u"], ["1"] * m), "malformed"))
+    out.append(("status certified", _set(cert, ["claim", "status"], "certified"), "malformed"))
+    out.append(("D_V a decimal", _set(cert, ["model", "coupling", "D"], [["0.5" if (i, j) == (0, 0) else x for j, x in enumerate(r)]
+                                                                       for i, r in enumerate(V["D"])]), "malformed"))
+    zero = [dict(d) for d in model["devices"]]
+    zero[0]["osp" if "osp" in zero[0] else "b"] = "0"
+    out.append(("a device level 0 (K undefined)", _set(cert, ["model", "devices"], zero), "same"))
+    return out
+
+
 def mutants(cert, rng):
     """[(name, certificate, expectation)] of one multidof-feasible(-symmetric), -facial or -witness certificate."""
     if cert["kind"] == "multidof-feasible-symmetric":
         return symmetric_mutants(cert, rng)
+    if cert["kind"] == "multidof-coupling":
+        return coupling_mutants(cert, rng)
     if cert["kind"] == "multidof-facial":
         return facial_mutants(cert, len(cert["model"]["environment"]["E"])) + \
             perturb_mutants(cert, len(cert["model"]["environment"]["E"]))[1:]

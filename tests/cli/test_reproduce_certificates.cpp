@@ -192,7 +192,8 @@ TEST(CmdReproduce, AtLeastComparesTheCertifiedGains) {
 // The example scenes' `multidof analyze` runs write their certificates too (issue 47 item 4): Sec.
 // VI's nominal cases, case ii perturbed (perturb_C, in the certificate's model) and the coupling
 // scene a multidof-feasible each, case i perturbed (infeasible by the facial conditions: E'(1) is
-// not symmetric) a multidof-facial; each checked by both checkers and linked from the scene's row.
+// not symmetric) a multidof-facial; so do their `multidof design` runs (multidof-coupling), but case
+// i perturbed's (no V); each checked by both checkers and linked from the scene's row.
 TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
   HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fs::path(::testing::TempDir()) / "repro_scene_certificates";
@@ -206,19 +207,34 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
     const std::string file = e["file"].get<std::string>();
     if (file.rfind("certificates/scene.", 0) != 0) continue;
     scenes.insert(file);
-    EXPECT_EQ(e["kind"], file == "certificates/scene.multidof_case_i_perturbed.json" ? "multidof-facial" : "multidof-feasible")
+    const bool design = file.find(".design.json") != std::string::npos;
+    EXPECT_EQ(e["kind"], design ? "multidof-coupling"
+                         : file == "certificates/scene.multidof_case_i_perturbed.json" ? "multidof-facial"
+                                                                                         : "multidof-feasible")
         << file;
     EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
-    EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab multidof analyze --scene examples/", 0), 0u) << e["command"];
+    EXPECT_EQ(e["command"].get<std::string>().rfind(design ? "hapstab multidof design --scene examples/"
+                                                           : "hapstab multidof analyze --scene examples/", 0),
+              0u)
+        << e["command"];
   }
+  // design: every scene with a verified V (case i perturbed has none: its row says so)
   EXPECT_EQ(scenes, (std::set<std::string>{"certificates/scene.multidof_case_i_nominal.json",
+                                            "certificates/scene.multidof_case_i_nominal.design.json",
                                             "certificates/scene.multidof_case_i_perturbed.json",
                                             "certificates/scene.multidof_case_ii_coupling.json",
+                                            "certificates/scene.multidof_case_ii_coupling.design.json",
                                             "certificates/scene.multidof_case_ii_nominal.json",
-                                            "certificates/scene.multidof_case_ii_perturbed.json"}));
+                                            "certificates/scene.multidof_case_ii_nominal.design.json",
+                                            "certificates/scene.multidof_case_ii_perturbed.json",
+                                            "certificates/scene.multidof_case_ii_perturbed.design.json"}));
   const std::string md = read(root / "out" / "report.md");
   EXPECT_NE(md.find("[scene.multidof_case_ii_nominal.json](certificates/scene.multidof_case_ii_nominal.json) (multidof-feasible)"),
             std::string::npos);
   EXPECT_NE(md.find("[scene.multidof_case_i_perturbed.json](certificates/scene.multidof_case_i_perturbed.json) (multidof-facial)"),
             std::string::npos);
+  EXPECT_NE(md.find("[scene.multidof_case_ii_nominal.design.json](certificates/scene.multidof_case_ii_nominal.design.json) "
+                    "(multidof-coupling)"),
+            std::string::npos);
+  EXPECT_NE(md.find("no coupling V verified exactly (the design's verdict: no V): no certificate"), std::string::npos);
 }

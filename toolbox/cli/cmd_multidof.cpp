@@ -1,6 +1,7 @@
 // `hapstab multidof analyze --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--backend auto|dsdp|csdp|ipm] [--no-symmetry]
 //                         [--certificate FILE]` (multidof-feasible / multidof-witness: cli/multidof_certificate.hpp)
-// `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N] [--no-symmetry]`
+// `hapstab multidof design  --scene FILE [--json] [--quiet] [--set NAME=VALUE]... [--iterations N] [--no-symmetry]
+//                         [--certificate FILE]` (multidof-coupling: cli/multidof_certificate.hpp)
 // A run longer than 2 s names its stages on stderr (cli/progress.hpp); --quiet silences them.
 // Paper 000: Theorem 5 (the LMI test (16), facial reduction of its first LMI, exact certificate,
 // Gamma = sqrt(X), the coupling requirement Delta_V >= Gamma^-1 Q_V Gamma^-1, the least
@@ -379,6 +380,7 @@ int run_design(const Opts& o) {
   opt.design.lmi = lmi_options(o);
   opt.duration = o.duration;
   opt.symmetry = !o.no_symmetry;
+  scene::Scene sc;
   const multidof::SceneDesign d = [&] {  // the progress ends (its shares printed) before the results
     StageProgress progress("multidof design",
                            {"reading the scene", "realising the blocks", "Theorem 6's design", "the premises",
@@ -386,10 +388,15 @@ int run_design(const Opts& o) {
                            o.quiet);
     progress.stage();
     double load_seconds = 0;
-    const auto sc = read_scene(o, load_seconds);
+    sc = read_scene(o, load_seconds);
+    if (!o.certificate.empty())  // refused before the design runs when the model cannot be written
+      if (const std::string why = multidof_certificate_premise(sc); !why.empty())
+        throw InputError("--certificate: " + why + ": no certificate");
     opt.stage = [&progress](const std::string& name) { progress.stage(name); };
     return multidof::design_scene(sc, opt);
   }();
+  if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
+    write_certificate(o.certificate, design_certificate(sc, d, opt.design.lmi));
   const auto& sp = d.scene;
   const auto& r = d.design;
   const bool hasV = d.has_v(), feasible = d.feasible, certified = d.certified;
@@ -523,12 +530,14 @@ const Register multidof_cmd({"multidof",
                                  sub->add_flag("--quiet", o->quiet, "No progress on stderr (shown for runs longer than 2 s)");
                                  sub->add_option("--set", o->sets, "Override a scene parameter: NAME=VALUE (exact)");
                                  sub->add_option("--backend", o->backend, "SDP back-end: auto (default: the built-in IPM, kept when exactly certified, else DSDP), dsdp, csdp or ipm");
-                                 if (nm == "analyze") {
-                                   sub->add_option("--certificate", o->certificate,
-                                                   "write the certificate of (16)'s verdict (JSON: feasible, its exact point; "
-                                                   "infeasible, its frequency witness or the facial conditions) to FILE, for "
-                                                   "`hapstab check FILE` (docs/certificates.md)");
-                                 }
+                                 sub->add_option("--certificate", o->certificate,
+                                                 nm == "analyze"
+                                                     ? "write the certificate of (16)'s verdict (JSON: feasible, its exact point; "
+                                                       "infeasible, its frequency witness or the facial conditions) to FILE, for "
+                                                       "`hapstab check FILE` (docs/certificates.md)"
+                                                     : "write the certificate that the designed V meets Theorem 4 (JSON: (16)'s "
+                                                       "exact point and V-hat's storage P_V) to FILE, for `hapstab check FILE` "
+                                                       "(docs/certificates.md)");
                                  sub->add_flag("--no-symmetry", o->no_symmetry,
                                                nm == "analyze" ? "solve (16) whole, not split by the permutations of identical "
                                                                  "DOFs (the same verdict, for comparison; docs/multidof.md)"

@@ -73,7 +73,7 @@ nlohmann::json strings(const std::vector<rational>& v) {
 }
 
 // The model as the scene writes it (multidof_certificate_premise holds).
-nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis& a) {
+nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneProblem& sp) {
   const toml::table& env = *environment_table(sc);
   nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))},
                    {"gain", gain_of(sc, env).str()},
@@ -102,13 +102,13 @@ nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneAnalysis
   }
   nlohmann::json operators = nlohmann::json::array();
   int first = 0;
-  for (const auto& o : a.scene.problem.structure.operators) {
+  for (const auto& o : sp.problem.structure.operators) {
     nlohmann::json dofs = nlohmann::json::array();
     for (int k = 0; k < o.dof; ++k) dofs.push_back(first + k);
     first += o.dof;
     operators.push_back(dofs);
   }
-  return {{"T", sc.T.str()}, {"delay", a.scene.delay}, {"environment", e}, {"set", set}, {"devices", devices},
+  return {{"T", sc.T.str()}, {"delay", sp.delay}, {"environment", e}, {"set", set}, {"devices", devices},
           {"operators", operators}};
 }
 
@@ -129,7 +129,7 @@ nlohmann::json feasible_certificate(const scene::Scene& sc, const multidof::Scen
     throw InputError("--certificate: E-hat's realisation has " + std::to_string(st.Ehat.A.rows()) + " states and " +
                      std::to_string(st.Ehat.B.cols()) + " inputs, beyond the checkers' size limit (order 160): no certificate");
   nlohmann::json j = certificate_header("multidof-feasible");
-  j["model"] = scene_model(sc, a);
+  j["model"] = scene_model(sc, a.scene);
   j["claim"] = {{"status", "exact"}, {"feasible", true}};
   j["evidence"] = point_json(sto);
   verify_before_writing(j);
@@ -161,7 +161,7 @@ std::optional<nlohmann::json> symmetric_certificate(const scene::Scene& sc, cons
   nlohmann::json zero_sum = nlohmann::json::array();
   for (size_t k = 1; k < s.blocks.size(); ++k) zero_sum.push_back({{"class", s.blocks[k].cls}, {"point", point_json(pts[k])}});
   nlohmann::json j = certificate_header("multidof-feasible-symmetric");
-  j["model"] = scene_model(sc, a);
+  j["model"] = scene_model(sc, a.scene);
   j["claim"] = {{"status", "exact"}, {"feasible", true}};
   j["evidence"] = {{"classes", s.classes}, {"fixed", point_json(pts[0])}, {"zero_sum", zero_sum}};
   verify_before_writing(j);
@@ -187,7 +187,7 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   const multidof::AnalysisResult& decided = block ? block->result : r;
   if (!a.feasible && a.certified && decided.path == "facial conditions") {  // no X makes X E(1) symmetric: the model alone
     nlohmann::json j = certificate_header("multidof-facial");
-    j["model"] = scene_model(sc, a);
+    j["model"] = scene_model(sc, a.scene);
     j["claim"] = {{"status", "exact"}, {"feasible", false}};
     j["evidence"] = nlohmann::json::object();
     verify_before_writing(j);
@@ -201,7 +201,7 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
     throw InputError("--certificate: " + what + " has no certificate kind yet (issue 47): no certificate");
   }
   nlohmann::json j = certificate_header("multidof-witness");
-  j["model"] = scene_model(sc, a);
+  j["model"] = scene_model(sc, a.scene);
   j["claim"] = {{"status", "exact"}, {"feasible", false}};
   const int m = a.scene.problem.structure.m();
   const auto lift = [&](const std::vector<rational>& u) {
@@ -217,6 +217,41 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
                      {"u_im", strings(lift(p.u.im))}, {"weight", p.weight.str()}});
     j["evidence"] = {{"points", pts}};
   }
+  verify_before_writing(j);
+  return j;
+}
+
+nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneDesign& d, const lmi::Options& opt) {
+  if (const std::string why = multidof_certificate_premise(sc); !why.empty())
+    throw InputError("--certificate: " + why + ": no certificate");
+  if (!d.has_v() || !d.design.verdict.holds() || !d.design.verdict.proven())
+    throw InputError("--certificate: no coupling V verified exactly (the design's verdict: " +
+                     std::string(d.design.verdict.holds() ? "numeric" : "no V") + "): no certificate");
+  const multidof::Problem& pb = d.scene.problem;
+  // Theorem 4's program on the whole (P_E, P_V, X, Q_E, Q_V free) for the designed V: its exact point
+  // is the evidence, whatever path designed V
+  multidof::CouplingCheck c;
+  try {
+    c = multidof::check_theorem4(pb, d.design.V, opt);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: ") + e.what() + ": no certificate");
+  }
+  if (!c.verdict.holds() || !c.verdict.proven() || !c.point)
+    throw InputError("--certificate: Theorem 4's program on the whole did not certify the designed V with an exact point (" +
+                     c.verdict.evidence.substr(0, 300) + "): no certificate");
+  const multidof::ExactStorage st = multidof::exact_storage(pb, *c.point);
+  const long env_order = st.Ehat.A.rows() + st.Ehat.B.cols(), v_order = c.P_V.rows() + d.design.V.inputs();
+  if (env_order > 160 || v_order > 160)
+    throw InputError("--certificate: E-hat's realisation (order " + std::to_string(env_order) + ") or V-hat's (order " +
+                     std::to_string(v_order) + ") is beyond the checkers' size limit (order 160): no certificate");
+  nlohmann::json model = scene_model(sc, d.scene);
+  const auto& V = d.design.V;
+  model["coupling"] = {{"A", matrix_json(V.A)}, {"B", matrix_json(V.B)}, {"C", matrix_json(V.C)}, {"D", matrix_json(V.D)}};
+  nlohmann::json j = certificate_header("multidof-coupling");
+  j["model"] = model;
+  j["claim"] = {{"status", "exact"}, {"theorem4", true}};
+  j["evidence"] = point_json({st, c.point->X, c.point->QE, c.point->QV});
+  j["evidence"]["P_V"] = matrix_json(c.P_V);
   verify_before_writing(j);
   return j;
 }

@@ -6,8 +6,9 @@
 // The model is the scene's as written: the environment's expressions (`tf`), domain, method and
 // gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
 // `osp`) and the operators' DOFs.
-// Other verdicts have no multi-DOF kind yet (a scene decomposed into components, the loop as
-// written, hidden modes, Assumption 1): asking for one is refused by name (exit 2).
+// `multidof design --certificate`: the designed coupling against Theorem 4 (kind multidof-coupling).
+// Other verdicts have no multi-DOF kind yet (the loop as written, hidden modes, Assumption 1):
+// asking for one is refused by name (exit 2).
 #pragma once
 
 #include <string>
@@ -29,5 +30,13 @@ std::string multidof_certificate_premise(const scene::Scene& sc);
 /// frequency-domain witness, verified by check/ before it is returned. InputError (exit 2, no file)
 /// for any other verdict, naming it, or an E-hat beyond the checkers' size (order 160).
 nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::SceneAnalysis& a);
+
+/// `multidof design --certificate FILE` (kind multidof-coupling, check/multidof_coupling_check.hpp):
+/// the designed V meets Theorem 4 through Theorem 5 -- (16) at an exact point (P_E, X, Q_E, Q_V) on
+/// E-hat's realisation, and Lemma 1 for V-hat (17) at that X and Q_V with an exact storage P_V. The
+/// evidence comes from Theorem 4's program on the whole for that V (check_theorem4), whatever path
+/// designed V. InputError (exit 2, no file) when no V was verified exactly, when that program does
+/// not certify V (its size limit, or no exact point), or beyond the checkers' order 160.
+nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneDesign& d, const lmi::Options& opt);
 
 }  // namespace hapstab::cli

@@ -214,13 +214,13 @@ std::string summary_line(const ReportInput& in) {
   return o.str();
 }
 
-// The certificate cell of a scene run: a simulation has none; `multidof analyze` links its
-// certificate (produce_scene_certificates), or says why its verdict has none; design has no kind yet.
+// The certificate cell of a scene run: a simulation has none; `multidof analyze` and `design` link
+// their certificates (produce_scene_certificates), or say why their verdict has none.
 std::string scene_certificate(const SceneRun& r, const std::vector<CertificateEntry>& entries, bool as_html) {
   auto text = [&](const std::string& t) { return as_html ? html(t) : cell(t); };
   if (r.command == "simulate") return text("numeric (a simulation): no certificate");
-  if (r.command != "multidof analyze") return text("no certificate kind yet (issue 47)");
-  ClaimResult as_claim{"examples/" + r.file, r.paper, "", r.claim, Status::exact, r.ok, ""};
+  if (r.command != "multidof analyze" && r.command != "multidof design") return text("no certificate kind yet (issue 47)");
+  ClaimResult as_claim{scene_claim_id(r), r.paper, "", r.claim, Status::exact, r.ok, ""};
   as_claim.no_certificate = r.no_certificate;
   return certificate_cell(as_claim, entries, as_html);
 }

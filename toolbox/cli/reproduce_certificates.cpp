@@ -266,20 +266,25 @@ std::vector<CertificateEntry> produce_certificates(const std::vector<proofs::Cla
   return out;
 }
 
+std::string scene_claim_id(const SceneRun& r) {
+  return "examples/" + r.file + (r.command == "multidof design" ? " (design)" : "");
+}
+
 std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const fs::path& dir) {
   std::vector<CertificateEntry> out;
   for (SceneRun& r : runs) {
-    if (r.command != "multidof analyze") continue;
+    if (r.command != "multidof analyze" && r.command != "multidof design") continue;
+    const std::string sub = r.command == "multidof design" ? "design" : "analyze";
     CertificateEntry e;
-    e.claim = "examples/" + r.file;
-    e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".json";
-    e.command = command_text({"multidof", "analyze", "--scene", e.claim, "--certificate", e.file});
+    e.claim = scene_claim_id(r);
+    e.file = "certificates/scene." + fs::path(r.file).stem().string() + (sub == "design" ? ".design" : "") + ".json";
+    e.command = command_text({"multidof", sub, "--scene", "examples/" + r.file, "--certificate", e.file});
     const fs::path path = dir / e.file;
     fs::create_directories(path.parent_path());
     const auto t0 = clock_type::now();
     InProcessRun run{exit_ok, json()};
     try {
-      run = run_in_process({"multidof", "analyze", "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
+      run = run_in_process({"multidof", sub, "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
                             "--certificate", path.string()});
     } catch (const InputError& ex) {
       const std::string why = ex.what();
@@ -299,9 +304,12 @@ std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& 
         std::ifstream in(path);
         const json j = json::parse(in);
         e.kind = j.value("kind", std::string());
+        // analyze: the claim's `feasible` is the verdict printed; design: a certificate (V meets
+        // Theorem 4) is written only beside a printed, verified V
         const json printed = run.json.is_object() && run.json.contains("feasible") ? run.json["feasible"] : json();
-        if (e.error.empty() && (!j.contains("claim") || !j["claim"].is_object() || j["claim"].value("feasible", json()) != printed))
-          e.error = "the certificate's claim.feasible is not the verdict the command printed (" + printed.dump() + ")";
+        const char* key = sub == "design" ? "theorem4" : "feasible";
+        if (e.error.empty() && (!j.contains("claim") || !j["claim"].is_object() || j["claim"].value(key, json()) != printed))
+          e.error = std::string("the certificate's claim.") + key + " is not the verdict the command printed (" + printed.dump() + ")";
       } catch (const std::exception& ex) {
         if (e.error.empty()) e.error = std::string("the certificate is not JSON: ") + ex.what();
       }

@@ -60,13 +60,16 @@ struct CertificateSummary {
 std::vector<CertificateEntry> produce_certificates(const std::vector<proofs::ClaimResult>& claims,
                                                    const std::filesystem::path& dir, bool quiet);
 
-/// The certificates of the example scenes' `multidof analyze` runs (issue 47 item 4): for each run
-/// of `runs` with that command, `hapstab multidof analyze --scene examples/F --certificate
-/// dir/certificates/scene.<stem>.json` in this process (claim = "examples/F"), its certificate's
-/// claim.feasible required to be the verdict the command printed. A verdict of no certificate kind
-/// (a perturb_C scene, a decomposed one) writes none: the refusal goes to the run's no_certificate,
-/// for the report's row. Call after run_scenes and before check_certificates.
+/// The certificates of the example scenes' `multidof analyze` and `multidof design` runs (issue 47
+/// items 1, 4): for each such run of `runs`, `hapstab multidof analyze|design --scene examples/F
+/// --certificate dir/certificates/scene.<stem>[.design].json` in this process (claim =
+/// scene_claim_id), its certificate's claim required to be the verdict the command printed (analyze:
+/// claim.feasible; design: claim.theorem4 beside a printed, verified V). A verdict of no certificate
+/// kind writes none: the refusal goes to the run's no_certificate, for the report's row. Call after
+/// run_scenes and before check_certificates.
 std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const std::filesystem::path& dir);
+/// A scene run's claim id in the certificate index: "examples/F", with " (design)" for design's run.
+std::string scene_claim_id(const SceneRun& r);
 
 /// The certificates dir/certificates/*.json as entries (sorted by file; claim = the file's stem,
 /// kind as written): what check_certificates checks of a folder written before, or edited.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hapstab/check/multidof_model.hpp"
+#include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -14,60 +15,9 @@ namespace {
 
 using namespace detail;
 using namespace multidof_model;
-using Mat = std::vector<std::vector<rational>>;
+using namespace rational_matrix;
 
 constexpr size_t max_order = 160;  // N + m
-
-Mat zeros(size_t r, size_t c) { return Mat(r, std::vector<rational>(c)); }
-Mat transpose(const Mat& A) {
-  Mat T = zeros(A.empty() ? 0 : A[0].size(), A.size());
-  for (size_t i = 0; i < A.size(); ++i)
-    for (size_t j = 0; j < A[i].size(); ++j) T[j][i] = A[i][j];
-  return T;
-}
-Mat mul(const Mat& A, const Mat& B) {
-  const size_t k = B.size(), c = B.empty() ? 0 : B[0].size();
-  Mat R = zeros(A.size(), c);
-  for (size_t i = 0; i < A.size(); ++i)
-    for (size_t l = 0; l < k; ++l) {
-      if (A[i][l].is_zero()) continue;
-      for (size_t j = 0; j < c; ++j) R[i][j] += A[i][l] * B[l][j];
-    }
-  return R;
-}
-Mat add(const Mat& A, const Mat& B, const rational& s = 1) {
-  Mat R = A;
-  for (size_t i = 0; i < A.size(); ++i)
-    for (size_t j = 0; j < A[i].size(); ++j) R[i][j] += s * B[i][j];
-  return R;
-}
-bool symmetric(const Mat& A) {
-  for (size_t i = 0; i < A.size(); ++i)
-    for (size_t j = 0; j < i; ++j)
-      if (A[i][j] != A[j][i]) return false;
-  return true;
-}
-
-// Symmetric elimination without pivoting: "pd" every pivot > 0; "psd" no pivot < 0 and a zero pivot
-// with its remaining row 0.
-bool definite(Mat M, bool strict) {
-  const size_t n = M.size();
-  for (size_t k = 0; k < n; ++k) {
-    const rational p = M[k][k];
-    if (p < 0 || (strict && p == 0)) return false;
-    if (p == 0) {
-      for (size_t j = k + 1; j < n; ++j)
-        if (!M[k][j].is_zero()) return false;
-      continue;
-    }
-    for (size_t i = k + 1; i < n; ++i) {
-      if (M[i][k].is_zero()) continue;
-      const rational f = M[i][k] / p;
-      for (size_t j = k + 1; j < n; ++j) M[i][j] -= f * M[k][j];
-    }
-  }
-  return true;
-}
 
 // (zI - A)^-1 B by Gaussian elimination with pivoting (z rational); nullopt when singular
 std::optional<Mat> resolvent_times(const Mat& A, const Mat& B, const rational& z) {
@@ -165,7 +115,7 @@ std::string feasible_point_fails(const Environment& env, const std::vector<ratio
     if (X[i][i] <= 0) return "g_" + std::to_string(i) + " = " + decimal(X[i][i]) + " <= 0";
   }
   if (!symmetric(P) || !symmetric(QE) || !symmetric(QV)) return "P, Q_E or Q_V is not symmetric";
-  if (!definite(P, true)) return "P > 0 fails";
+  if (!positive_definite(P, true)) return "P > 0 fails";
   // -M1 >= 0
   const Mat At = transpose(A), AtP = mul(At, P);
   const Mat M11 = add(mul(AtP, A), P, -1);
@@ -177,7 +127,7 @@ std::string feasible_point_fails(const Environment& env, const std::vector<ratio
   for (size_t i = 0; i < N + m; ++i)
     for (size_t j = 0; j < N + m; ++j)
       negM1[i][j] = -(i < N ? (j < N ? M11[i][j] : M12[i][j - N]) : (j < N ? M12[j][i - N] : M22[i - N][j - N]));
-  if (!definite(negM1, false)) return "(16)'s first LMI M1 <= 0 fails";
+  if (!positive_definite(negM1, false)) return "(16)'s first LMI M1 <= 0 fails";
   // (14): [[Delta_D X - Q_E, -Q_E], [-Q_E, Q_V - Q_E]] > 0
   Mat S = zeros(2 * m, 2 * m);
   for (size_t i = 0; i < m; ++i)
@@ -186,8 +136,8 @@ std::string feasible_point_fails(const Environment& env, const std::vector<ratio
       S[i][m + j] = S[m + i][j] = -QE[i][j];
       S[m + i][m + j] = QV[i][j] - QE[i][j];
     }
-  if (!definite(S, true)) return "(14) > 0 fails";
-  if (!definite(QV, true)) return "Q_V > 0 fails";
+  if (!positive_definite(S, true)) return "(14) > 0 fails";
+  if (!positive_definite(QV, true)) return "Q_V > 0 fails";
   return "";
 }
 

@@ -244,6 +244,11 @@ struct CouplingCheck {
   std::vector<double> gamma_sqrt;
   Eigen::MatrixXd Q_V, delta_V;
   std::optional<CouplingWitness> witness;  ///< set when the two-frequency witness proved the program infeasible
+  /// When the verdict holds exactly: the environment's exact point (exact_storage gives E-hat's
+  /// realisation and P_E) and V-hat's storage P_V in vhat(V, K)'s coordinates, at that point's X and
+  /// Q_V -- what `multidof design --certificate` writes (cli/multidof_certificate.hpp).
+  std::optional<ExactPoint> point;
+  MatQ P_V;
 };
 CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, const lmi::Options& opt = {});
 

@@ -65,7 +65,7 @@ MatQ lemma1_matrix(const StateSpace<rational>& Vh, const MatQ& P, const MatQ& X,
 }
 
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
-                        const MatQ& QV, const MatQ& P11, std::string& why) {
+                        const MatQ& QV, const MatQ& P11, std::string& why, MatQ* storage) {
   const auto& Vh = vv.Vh;
   const Eigen::Index m = Vh.inputs(), nn = Vh.states(), nb = nn - m;
   MatQ X = MatQ::Zero(m, m), P = MatQ::Zero(nn, nn);
@@ -101,6 +101,7 @@ bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const s
   }
   why = "exact: P_V > 0 and Lemma 1 for Vhat^Gamma (-F >= 0, F [0; u; u] = 0, rank " + std::to_string(d.rank) +
         ") in rational arithmetic";
+  if (storage) *storage = P;
   return true;
 }
 
@@ -156,9 +157,14 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
   P11v *= p.scale;
   std::string why1, why2;
   const bool ok1 = exact_recheck(pb, sp, p.env, p.QV, why1);
-  const bool ok2 = ok1 && exact_recheck_vhat(vv, ev.Xk, p.env.theta, p.QV, P11v, why2);
+  MatQ PV;
+  const bool ok2 = ok1 && exact_recheck_vhat(vv, ev.Xk, p.env.theta, p.QV, P11v, why2, &PV);
   cc.verdict = cs.recheck(ok1 && ok2, cs.solver_text() + " | environment side: " + why1 +
                                           (ok1 ? " | coupling side: " + why2 : ""));
+  if (ok1 && ok2) {
+    cc.point = ExactPoint{p.env.P11, p.env.X, p.env.QE, p.QV};
+    cc.P_V = PV;
+  }
   const MatrixXd X = to_double(p.env.X);
   cc.gamma_sqrt = gamma_sqrt(pb, X);
   cc.Q_V = to_double(p.QV);

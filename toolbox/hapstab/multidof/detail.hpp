@@ -179,9 +179,10 @@ VhatVars add_vhat(lmi::Program& prog, const StateSpace<rational>& V, const MatQ&
                   const std::vector<lmi::Expr>& theta, const lmi::Expr& QV);
 /// Lemma 1's matrix for V-hat (the congruence form above) at a storage P, exact.
 MatQ lemma1_matrix(const StateSpace<rational>& Vh, const MatQ& P, const MatQ& X, const MatQ& QV);
-/// Exact re-check of the coupling side at exact theta, Q_V, P11.
+/// Exact re-check of the coupling side at exact theta, Q_V, P11; `storage` (when given) receives
+/// the storage P_V that passed, in V-hat's coordinates (vv.Vh).
 bool exact_recheck_vhat(const VhatVars& vv, const std::vector<MatQ>& Xk, const std::vector<rational>& theta,
-                        const MatQ& QV, const MatQ& P11, std::string& why);
+                        const MatQ& QV, const MatQ& P11, std::string& why, MatQ* storage = nullptr);
 
 /// Lemma 1 for V-hat (check_vhat_osp) with X = Gamma^2 and Q_V = Gamma Delta Gamma given exactly.
 OspCheck check_vhat_lemma1(const StateSpace<rational>& V, const MatQ& K, const MatQ& X, const MatQ& QV,

@@ -1,0 +1,65 @@
+// hapstab/check/rational_matrix.cpp -- see rational_matrix.hpp.
+#include "hapstab/check/rational_matrix.hpp"
+
+namespace hapstab::check::rational_matrix {
+
+Mat zeros(size_t r, size_t c) { return Mat(r, std::vector<rational>(c)); }
+
+Mat identity(size_t n) {
+  Mat I = zeros(n, n);
+  for (size_t i = 0; i < n; ++i) I[i][i] = 1;
+  return I;
+}
+
+Mat transpose(const Mat& A) {
+  Mat T = zeros(A.empty() ? 0 : A[0].size(), A.size());
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < A[i].size(); ++j) T[j][i] = A[i][j];
+  return T;
+}
+
+Mat mul(const Mat& A, const Mat& B) {
+  const size_t k = B.size(), c = B.empty() ? 0 : B[0].size();
+  Mat R = zeros(A.size(), c);
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t l = 0; l < k; ++l) {
+      if (A[i][l].is_zero()) continue;
+      for (size_t j = 0; j < c; ++j) R[i][j] += A[i][l] * B[l][j];
+    }
+  return R;
+}
+
+Mat add(const Mat& A, const Mat& B, const rational& s) {
+  Mat R = A;
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < A[i].size(); ++j) R[i][j] += s * B[i][j];
+  return R;
+}
+
+bool symmetric(const Mat& A) {
+  for (size_t i = 0; i < A.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (A[i][j] != A[j][i]) return false;
+  return true;
+}
+
+bool positive_definite(Mat M, bool strict) {
+  const size_t n = M.size();
+  for (size_t k = 0; k < n; ++k) {
+    const rational p = M[k][k];
+    if (p < 0 || (strict && p == 0)) return false;
+    if (p == 0) {
+      for (size_t j = k + 1; j < n; ++j)
+        if (!M[k][j].is_zero()) return false;
+      continue;
+    }
+    for (size_t i = k + 1; i < n; ++i) {
+      if (M[i][k].is_zero()) continue;
+      const rational f = M[i][k] / p;
+      for (size_t j = k + 1; j < n; ++j) M[i][j] -= f * M[k][j];
+    }
+  }
+  return true;
+}
+
+}  // namespace hapstab::check::rational_matrix

@@ -1,0 +1,27 @@
+// hapstab/check/rational_matrix.hpp -- the multi-DOF checkers' exact matrices: dense rows of
+// rationals, their products and sums, and definiteness by symmetric elimination (written for
+// check/ alone; not numeric/exact_matrix.hpp or lmi/, which the producers use).
+//   positive_definite(M, strict): symmetric elimination without pivoting. Strict: every pivot > 0
+//   (Sylvester). Not strict: no pivot < 0, and a zero pivot has its remaining row 0 (a PSD matrix
+//   with a zero diagonal entry has that row 0; Schur complements of PSD matrices are PSD).
+#pragma once
+
+#include <vector>
+
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::check::rational_matrix {
+
+using Mat = std::vector<std::vector<rational>>;
+
+Mat zeros(size_t rows, size_t cols);
+Mat identity(size_t n);
+Mat transpose(const Mat& A);
+Mat mul(const Mat& A, const Mat& B);
+/// A + s B
+Mat add(const Mat& A, const Mat& B, const rational& s = 1);
+bool symmetric(const Mat& A);
+/// M > 0 (strict) or M >= 0, M symmetric (see above).
+bool positive_definite(Mat M, bool strict);
+
+}  // namespace hapstab::check::rational_matrix
