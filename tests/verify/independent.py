@@ -1103,19 +1103,33 @@ def check_design16(c, exe, timeout):
         out["margin"] = abs(1 - rho)
         out["ref_text"] += f"; the loop with the designed V built here: rho = {rho!r}"
         tags["reference"] = "within 1e-9 of 1" if abs(1 - rho) < 1e-9 else ("stable" if rho < 1 else "NOT stable")
+        # its certificate (multidof-coupling: Theorem 4's program on the whole for that V), both checkers
+        cert = f.name[:-5] + ".coupling.json"
+        rcc, _, errc, _ = run_hapstab(exe, args + ["--certificate", cert], timeout)
+        ck = subprocess.run([exe, "check", cert], capture_output=True, text=True) if os.path.exists(cert) else None
+        py = subprocess.run([sys.executable, str(ROOT / "checks" / "hapstab_check.py"), cert], capture_output=True,
+                            text=True) if os.path.exists(cert) else None
+        tags["certificate"] = ("refused by name" if rcc == 2 and "no certificate" in errc else f"none (exit {rcc})") if ck is None \
+            else "verified by both" if ck.returncode == 0 and py.returncode == 0 \
+            else "verified (beyond the independent checker's size)" if ck.returncode == 0 and py.returncode == 3 else "REFUTED"
         if abs(1 - rho) < 1e-9:
             out.update(outcome="reference too near the circle", why=f"rho = {rho!r}")
         elif rho >= 1:
             out.update(outcome="MISS", why=f"a verified V, but the loop with it built here has rho = {rho!r}")
+        elif tags["certificate"] == "REFUTED" or tags["certificate"].startswith("none"):
+            out.update(outcome="MISS", why=f"the designed V's certificate: {tags['certificate']} "
+                                           f"(hapstab check {ck and ck.stdout.strip()[:150]}; {errc[-200:]})")
         else:
             out["outcome"] = "agree"
+        if os.path.exists(cert) and out["outcome"] != "MISS":
+            os.unlink(cert)
     keep_scene_if_missed(out, f.name)
     return out
 
 
 BRANCHES_DESIGN16 = [  # compared cases
     ("hapstab path", "symmetry", 0.3), ("reference", "stable", 0.2), ("split verdict", "convex part infeasible", 0.05), ("N", "16-32", 0.05), ("classes", "3", 0.1),
-    ("a class of one", True, 0.05), ("delay", "1", 0.05),
+    ("a class of one", True, 0.05), ("delay", "1", 0.05), ("certificate", "verified by both", 0.05),
 ]
 
 
