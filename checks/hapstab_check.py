@@ -103,6 +103,9 @@ multidof-feasible-symmetric  the same claim for a scene of alike DOFs, one point
 multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D): (16) at the evidence's point as
        multidof-feasible, and Lemma 1 for V-hat (17) (built here from V and K = (T/2) Delta_D^-1) at its X and
        Q_V: P_V > 0 and F <= 0 by symmetric elimination in fractions.
+multidof-coupling-symmetric  the same for a V of one block per DOF designed on the split: (16) by the split as
+       multidof-feasible-symmetric, each block's X, Q_E, Q_V a positive multiple of the image of the whole's
+       invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class.
 Size limit: multidof-feasible: N + m <= 40 (multidof-coupling: also nV + m <= 40; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
@@ -2798,6 +2801,34 @@ def check_multidof_feasible(c):
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
 
 
+def vhat_lemma1(AV, BV, CV, DV, delta, T, X, QV, PV):
+    """None when Lemma 1 holds for V-hat (17) (Gamma = I, K = (T/2) diag(delta)^-1) built from V at X, Q_V with the
+    storage PV: PV > 0 and F <= 0; else what fails."""
+    nv, m = len(AV), len(DV)
+    if any(d <= 0 for d in delta):
+        raise Malformed("model.devices: a level <= 0: K = (T/2) Delta_D^-1 (12) is not defined")
+    K = [[T / (2 * delta[i]) if i == j else Fraction(0) for j in range(m)] for i in range(m)]
+    N = nv + m
+    A = [list(AV[i]) + [-BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(0)] * N for _ in range(m)]
+    B = [[BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
+    C = [list(CV[i]) + [(K[i][j] - DV[i][j]) / T for j in range(m)] for i in range(m)]
+    D = [[(DV[i][j] - K[i][j]) / T for j in range(m)] for i in range(m)]
+    if any(PV[i][j] != PV[j][i] for i in range(N) for j in range(i)):
+        return "P_V is not symmetric"
+    if not semidefinite(PV, True):
+        return "P_V > 0 fails"
+    AtP, CtQ = mmul(mT(A), PV), mmul(mT(C), QV)
+    F11 = msum(msum(mmul(AtP, A), PV, -1), mmul(CtQ, C))
+    F12 = msum(msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)), mmul(CtQ, D))
+    XD = mmul(X, D)
+    F22 = msum(msum(mmul(mmul(mT(B), PV), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), QV), D))
+    neg = [[-(F11[i][j] if j < N else F12[i][j - N]) for j in range(N + m)] for i in range(N)]
+    neg += [[-(F12[j][i] if j < N else F22[i][j - N]) for j in range(N + m)] for i in range(m)]
+    if not semidefinite(neg, False):
+        return "Lemma 1 for V-hat at X and Q_V: F <= 0 fails"
+    return None
+
+
 def check_multidof_coupling(c):
     """Paper 000's Theorem 4 for the model's coupling V, through Theorem 5: (16) at the evidence's point
     (feasible_point), and Lemma 1 for V-hat (17) (Gamma = I, K = (T/2) Delta_D^-1 (12)) at its X and Q_V:
@@ -2830,41 +2861,21 @@ def check_multidof_coupling(c):
     ok, why = feasible_point(E, g, T, n, delta, owner, {k: v for k, v in ev.items() if k != "P_V"}, "evidence", True)
     if not ok:
         return False, "(16) at the evidence's point: " + why
-    if any(d <= 0 for d in delta):
-        raise Malformed("model.devices: a level <= 0: K = (T/2) Delta_D^-1 (12) is not defined")
-    K = [[T / (2 * delta[i]) if i == j else Fraction(0) for j in range(m)] for i in range(m)]
-    N = nv + m  # V-hat (17) with Gamma = I
-    A = [list(AV[i]) + [-BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(0)] * N for _ in range(m)]
-    B = [[BV[i][j] / T for j in range(m)] for i in range(nv)] + [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
-    C = [list(CV[i]) + [(K[i][j] - DV[i][j]) / T for j in range(m)] for i in range(m)]
-    D = [[(DV[i][j] - K[i][j]) / T for j in range(m)] for i in range(m)]
-    PV = frac_matrix(ev, "P_V", N, N)
     X, QV = frac_matrix(ev, "X", m, m), frac_matrix(ev, "Q_V", m, m)
-    if any(PV[i][j] != PV[j][i] for i in range(N) for j in range(i)):
-        return False, "P_V is not symmetric"
-    if not semidefinite(PV, True):
-        return False, "P_V > 0 fails"
-    AtP, CtQ = mmul(mT(A), PV), mmul(mT(C), QV)
-    F11 = msum(msum(mmul(AtP, A), PV, -1), mmul(CtQ, C))
-    F12 = msum(msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)), mmul(CtQ, D))
-    XD = mmul(X, D)
-    F22 = msum(msum(mmul(mmul(mT(B), PV), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), QV), D))
-    neg = [[-(F11[i][j] if j < N else F12[i][j - N]) for j in range(N + m)] for i in range(N)]
-    neg += [[-(F12[j][i] if j < N else F22[i][j - N]) for j in range(N + m)] for i in range(m)]
-    if not semidefinite(neg, False):
-        return False, "Lemma 1 for V-hat at X and Q_V: F <= 0 fails"
+    PV = frac_matrix(ev, "P_V", nv + m, nv + m)
+    why = vhat_lemma1(AV, BV, CV, DV, delta, T, X, QV, PV)
+    if why:
+        return False, why
     return True, "V meets Theorem 4's conditions: (16) at the point, V-hat Gamma^-1 Q_V Gamma^-1-OSP by Lemma 1"
 
 
 MAX_SYMMETRIC_DOFS = 512  # m: the invariance is m^2 comparisons of parsed entries (a few distinct ones)
 
 
-def check_multidof_feasible_symmetric(c):
-    """Paper 000's (16) feasible by the split of alike DOFs (multidof-feasible-symmetric, above)."""
-    got = feasible_claim(c, ("classes", "fixed", "zero_sum"))
-    if got is None:
-        return False, "the claim is that (16) is infeasible; points prove only feasibility"
-    model, ev = got
+def split_16(model, ev, invariant=None):
+    """(ok, why, blocks) of (16) by the split of alike DOFs (multidof-feasible-symmetric above) on the model and
+    the evidence's classes, fixed and zero_sum; with invariant = (g, q_E, q_V) per class, each block's X, Q_E, Q_V
+    must moreover be one positive multiple of the whole's image (k_c times on the fixed space)."""
     T, n = period(model), delay_of(model)
     if "perturb_C" in (model.get("environment") or {}):
         raise Malformed("model.environment.perturb_C: outside this kind (the split needs E itself invariant)")
@@ -2873,27 +2884,39 @@ def check_multidof_feasible_symmetric(c):
     delta, owner = witness_levels(model, m), operator_owner(model, m)
     if len(set(owner)) != m:  # (h1)
         raise Malformed("model.operators: an operator has two DOFs or more; this kind needs one-DOF operators")
-    classes = ev.get("classes")
-    if not isinstance(classes, list) or not classes or any(not isinstance(k, list) or not k for k in classes):
-        raise Malformed("evidence.classes: must be a non-empty array of non-empty arrays of DOF indices")
-    flat = [i for k in classes for i in k]
-    if any(not isinstance(i, int) or isinstance(i, bool) for i in flat) or sorted(flat) != list(range(m)):
-        raise Malformed("evidence.classes: must hold every DOF 0..%d exactly once" % (m - 1))
+    classes = split_classes(ev, m)
+    r = len(classes)
+    if invariant is not None and any(len(v) != r for v in invariant):
+        raise Malformed("evidence.g, q_E, q_V: one value per class (%d)" % r)
     cls = {i: a for a, k in enumerate(classes) for i in k}
     for a, k in enumerate(classes):  # (h2)
         if any(delta[i] != delta[k[0]] for i in k):
-            return False, "class %d is not of alike DOFs: the OSP levels differ" % a
+            return False, "class %d is not of alike DOFs: the OSP levels differ" % a, 0
     for i in range(m):  # (h3)
         for k in range(m):
             a, b = classes[cls[i]], classes[cls[k]]
             ri, rk = a[0], (a[0] if i == k else a[1] if cls[i] == cls[k] else b[0])
             if (E[i][k].num, E[i][k].den) != (E[ri][rk].num, E[ri][rk].den):
-                return False, "E is not invariant under the permutations within the classes: E(%d, %d) is not E(%d, %d)" % (i, k, ri, rk)
-    r = len(classes)
+                return False, "E is not invariant under the permutations within the classes: E(%d, %d) is not E(%d, %d)" % (i, k, ri, rk), 0
+
+    def image_fails(pt, where, image):
+        """pt's X, Q_E, Q_V one positive multiple of the diagonal image [X, Q_E, Q_V][i]."""
+        if image is None:
+            return None
+        mb = len(image[0])
+        mats = [frac_matrix(pt, k, mb, mb, where) for k in ("X", "Q_E", "Q_V")]
+        tau = mats[0][0][0] / image[0][0]
+        ok = tau > 0 and all(mats[q][i][j] == (tau * image[q][i] if i == j else 0) for q in range(3) for i in range(mb) for j in range(mb))
+        return None if ok else "its X, Q_E, Q_V are not one positive multiple of the image of the whole's (g, q_E, q_V)"
     fixed = [[rf_sum(E[classes[a][0]][j] for j in classes[c]) for c in range(r)] for a in range(r)]
-    ok, why = feasible_point(fixed, g, T, n, [delta[k[0]] for k in classes], list(range(r)), ev.get("fixed"), "evidence.fixed", False)
+    pf = ev.get("fixed")
+    if not isinstance(pf, dict):
+        raise Malformed("evidence.fixed: missing or not an object")
+    img = None if invariant is None else [[len(classes[a]) * v[a] for a in range(r)] for v in invariant]
+    why = image_fails(pf, "evidence.fixed", img)
+    ok, why = (False, why) if why else feasible_point(fixed, g, T, n, [delta[k[0]] for k in classes], list(range(r)), pf, "evidence.fixed", False)
     if not ok:
-        return False, "the fixed space's block: " + why
+        return False, "the fixed space's block: " + why, 0
     zs = ev.get("zero_sum")
     big = [a for a in range(r) if len(classes[a]) >= 2]
     if not isinstance(zs, list) or len(zs) != len(big):
@@ -2906,11 +2929,90 @@ def check_multidof_feasible_symmetric(c):
         if b.get("class") != a or isinstance(b.get("class"), bool):
             raise Malformed(where + ".class: must be %d (the classes of two DOFs or more, in order)" % a)
         a0, a1 = classes[a][0], classes[a][1]
-        ok, why = feasible_point([[E[a0][a0] - E[a0][a1]]], g, T, n, [delta[a0]], [0], b.get("point"), where + ".point", False)
+        pt = b.get("point")
+        if not isinstance(pt, dict):
+            raise Malformed(where + ".point: missing or not an object")
+        why = image_fails(pt, where + ".point", None if invariant is None else [[v[a]] for v in invariant])
+        ok, why = (False, why) if why else feasible_point([[E[a0][a0] - E[a0][a1]]], g, T, n, [delta[a0]], [0], pt, where + ".point", False)
         if not ok:
-            return False, "class %d's zero-sum block: %s" % (a, why)
-    return True, ("(16) feasible by the split of %d classes of alike DOFs (E invariant: %d entries compared), "
-                  "each of %d blocks' points verified with g > 0, lifted to g >= 1" % (r, m * m, 1 + len(big)))
+            return False, "class %d's zero-sum block: %s" % (a, why), 0
+    return True, "", 1 + len(big)
+
+
+def split_classes(ev, m):
+    classes = ev.get("classes")
+    if not isinstance(classes, list) or not classes or any(not isinstance(k, list) or not k for k in classes):
+        raise Malformed("evidence.classes: must be a non-empty array of non-empty arrays of DOF indices")
+    flat = [i for k in classes for i in k]
+    if any(not isinstance(i, int) or isinstance(i, bool) for i in flat) or sorted(flat) != list(range(m)):
+        raise Malformed("evidence.classes: must hold every DOF 0..%d exactly once" % (m - 1))
+    return classes
+
+
+def check_multidof_feasible_symmetric(c):
+    """Paper 000's (16) feasible by the split of alike DOFs (multidof-feasible-symmetric, above)."""
+    got = feasible_claim(c, ("classes", "fixed", "zero_sum"))
+    if got is None:
+        return False, "the claim is that (16) is infeasible; points prove only feasibility"
+    model, ev = got
+    ok, why, blocks = split_16(model, ev)
+    if not ok:
+        return False, why
+    return True, "(16) feasible by the split of alike DOFs (E invariant), each of %d blocks' points verified with g > 0, lifted to g >= 1" % blocks
+
+
+def check_multidof_coupling_symmetric(c):
+    """Paper 000's Theorem 4 for a decentralised V on the split of alike DOFs: (16) by split_16 at the whole's
+    invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class."""
+    model, claim, ev = parts(c)
+    only(model, ("T", "delay", "environment", "set", "devices", "operators", "coupling_blocks"), "model")
+    only(claim, ("status", "theorem4"), "claim")
+    only(ev, ("classes", "g", "q_E", "q_V", "fixed", "zero_sum", "P_V"), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: must be \"exact\"")
+    if not isinstance(claim.get("theorem4"), bool):
+        raise Malformed("claim.theorem4: missing or not true/false")
+    if not claim["theorem4"]:
+        return False, "the claim is that V misses Theorem 4's conditions; points prove only that it meets them"
+    inv = []
+    for key in ("g", "q_E", "q_V"):
+        v = ev.get(key)
+        if not isinstance(v, list):
+            raise Malformed("evidence.%s: must be one \"p/q\" per class" % key)
+        inv.append([exact_value(x, "evidence.%s[%d]" % (key, i)) for i, x in enumerate(v)])
+    if any(x < 1 for x in inv[0]):
+        return False, "g < 1 ((9))"
+    if any(x <= 0 for x in inv[2]):
+        return False, "q_V <= 0 (Q_V > 0)"
+    ok, why, blocks = split_16(model, ev, inv)
+    if not ok:
+        return False, "(16) by the split: " + why
+    T = period(model)
+    E_dofs = len(model["environment"]["E"])
+    classes = split_classes(ev, E_dofs)
+    cls = {i: a for a, k in enumerate(classes) for i in k}
+    delta = witness_levels(model, E_dofs)
+    Vb, PVs = model.get("coupling_blocks"), ev.get("P_V")
+    if not isinstance(Vb, list) or len(Vb) != E_dofs:
+        raise Malformed("model.coupling_blocks: must be one {A, B, C, D} per DOF (%d)" % E_dofs)
+    if not isinstance(PVs, list) or len(PVs) != E_dofs:
+        raise Malformed("evidence.P_V: must be one storage per DOF block (%d)" % E_dofs)
+    for i, b in enumerate(Vb):
+        where = "model.coupling_blocks[%d]" % i
+        if not isinstance(b, dict) or not isinstance(b.get("A"), list):
+            raise Malformed(where + ": must be {A, B, C, D}")
+        only(b, ("A", "B", "C", "D"), where)
+        nv = len(b["A"])
+        if nv + 1 > MAX_FEASIBLE_ORDER:
+            raise TooLarge(where + ": V-hat's order above this checker's limit")
+        AV, BV, CV, DV = (frac_matrix(b, k, r, cl, where) for k, r, cl in (("A", nv, nv), ("B", nv, 1), ("C", 1, nv), ("D", 1, 1)))
+        PV = frac_matrix({"P_V": PVs[i]}, "P_V", nv + 1, nv + 1, "evidence.P_V[%d]" % i)
+        a = cls[i]
+        why = vhat_lemma1(AV, BV, CV, DV, [delta[i]], T, [[inv[0][a]]], [[inv[2][a]]], PV)
+        if why:
+            return False, "DOF %d's block of V: %s" % (i, why)
+    return True, ("V meets Theorem 4's conditions: (16) by the split (%d blocks, at the whole's invariant diagonal) and "
+                  "Lemma 1 for V-hat block by block (%d blocks of V)" % (blocks, E_dofs))
 
 
 def rf_sum(terms):
@@ -3098,6 +3200,7 @@ def check(c):
                     "multidof-feasible": check_multidof_feasible, "multidof-witness": check_multidof_witness,
                     "multidof-feasible-symmetric": check_multidof_feasible_symmetric,
                     "multidof-coupling": check_multidof_coupling,
+                    "multidof-coupling-symmetric": check_multidof_coupling_symmetric,
                     "multidof-facial": check_multidof_facial,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,

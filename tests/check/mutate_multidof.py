@@ -94,7 +94,8 @@ def produce(hapstab, rng, tmp, i):
     with open(scene, "w") as f:
         f.write(text)
     path = os.path.join(tmp, "w%d.json" % i)
-    command = "design" if i % 8 == 6 else "analyze"  # every eighth: the designed coupling (multidof-coupling)
+    # every eighth, and every other scene of alike DOFs: the designed coupling (multidof-coupling[-symmetric])
+    command = "design" if i % 8 == 6 or i % 16 == 9 else "analyze"
     try:  # a verdict the structured paths cannot reach falls to the generic SDP: minutes at delay 20+
         p = subprocess.run([hapstab, "multidof", command, "--scene", scene, "--quiet", "--certificate", path],
                            capture_output=True, text=True, timeout=60)
@@ -344,12 +345,52 @@ def coupling_mutants(cert, rng):
     return out
 
 
+def coupling_symmetric_mutants(cert, rng):
+    """A multidof-coupling-symmetric certificate: the split's points at the whole's invariant diagonal
+    (g, q_E, q_V per class) and one V block with its storage per DOF."""
+    ev, model = cert["evidence"], cert["model"]
+    r, m = len(ev["classes"]), len(model["coupling_blocks"])
+    out = [("unmutated", cert, "accept")]
+
+    def per_class(key, k, f):
+        v = list(ev[key])
+        v[k] = fs(f(Fraction(v[k])))
+        return _set(cert, ["evidence", key], v)
+    k = rng.randrange(r)
+    out.append(("claim false", _set(cert, ["claim", "theorem4"], False), "refute"))
+    out.append(("g[%d] x 2" % k, per_class("g", k, lambda x: 2 * x), "refute"))
+    out.append(("q_V[%d] x 3" % k, per_class("q_V", k, lambda x: 3 * x), "refute"))
+    out.append(("q_E[%d] + 1" % k, per_class("q_E", k, lambda x: x + 1), "refute"))
+    out.append(("g[%d] = 1/2" % k, per_class("g", k, lambda x: Fraction(1, 2)), "refute"))
+    i = rng.randrange(m)
+    pv = copy.deepcopy(ev["P_V"])
+    pv[i][0][0] = fs(-Fraction(pv[i][0][0]))
+    out.append(("P_V[%d][0][0] negated" % i, _set(cert, ["evidence", "P_V"], pv), "refute"))
+    vb = copy.deepcopy(model["coupling_blocks"])
+    vb[i]["D"] = [[fs(2 * Fraction(vb[i]["D"][0][0]))]]
+    out.append(("V block %d's D x 2" % i, _set(cert, ["model", "coupling_blocks"], vb), "agree"))
+    out.append(("delay + 1", _set(cert, ["model", "delay"], model["delay"] + 1), "refute"))
+    out.append(("a V block dropped", _set(cert, ["model", "coupling_blocks"], model["coupling_blocks"][1:]), "malformed"))
+    out.append(("a P_V dropped", _set(cert, ["evidence", "P_V"], ev["P_V"][1:]), "malformed"))
+    for path in (["evidence", "g"], ["evidence", "q_V"], ["evidence", "fixed"], ["model", "coupling_blocks"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), _set(cert, path, None), "malformed"))
+    out.append(("g one value short", _set(cert, ["evidence", "g"], ev["g"][:-1]), "malformed"))
+    out.append(("added evidence.X", _set(cert, ["evidence", "X"], [["1"]]), "malformed"))
+    E = copy.deepcopy(model["environment"]["E"])
+    a = next((c for c in ev["classes"] if len(c) >= 2), ev["classes"][0])
+    E[a[0]][0] = "(" + E[a[0]][0] + ") + 1/1000"
+    out.append(("E(%d, 0) + 1/1000" % a[0], _set(cert, ["model", "environment", "E"], E), "refute" if len(a) >= 2 else "agree"))
+    return out
+
+
 def mutants(cert, rng):
     """[(name, certificate, expectation)] of one multidof-feasible(-symmetric), -facial or -witness certificate."""
     if cert["kind"] == "multidof-feasible-symmetric":
         return symmetric_mutants(cert, rng)
     if cert["kind"] == "multidof-coupling":
         return coupling_mutants(cert, rng)
+    if cert["kind"] == "multidof-coupling-symmetric":
+        return coupling_symmetric_mutants(cert, rng)
     if cert["kind"] == "multidof-facial":
         return facial_mutants(cert, len(cert["model"]["environment"]["E"])) + \
             perturb_mutants(cert, len(cert["model"]["environment"]["E"]))[1:]

@@ -221,12 +221,70 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
   return j;
 }
 
+namespace {
+
+// A design on the split of identical DOFs (design_symmetry.cpp), block by block: the split's points
+// at the whole's invariant diagonal (X, Q_E, Q_V), V per DOF and each block's V-hat storage; nullopt
+// where the lifted whole is small enough for Theorem 4's program on the whole (kWholePointOrder).
+std::optional<nlohmann::json> symmetric_design_certificate(const scene::Scene& sc, const multidof::SceneDesign& d) {
+  const auto& bw = d.design.blockwise;
+  if (d.design.path != "symmetry of identical DOFs (block-wise)" || !bw) return std::nullopt;
+  const multidof::Problem& pb = d.scene.problem;
+  const int m = pb.structure.m();
+  long order = m;
+  for (size_t k = 0; k < bw->split_points.size(); ++k) {
+    const int c = bw->split_class[k];
+    order += (c < 0 ? 1 : static_cast<long>(bw->classes[static_cast<size_t>(c)].size()) - 1) * bw->split_points[k].st.Ehat.A.rows();
+  }
+  if (order <= kWholePointOrder || bw->split_points.empty()) return std::nullopt;
+  // V per DOF: one block of one channel each, zero elsewhere (checked: the certificate states V so)
+  const auto& V = d.design.V;
+  const auto& cs = pb.coupling;
+  nlohmann::json vblocks = nlohmann::json::array();
+  MatQ assembled_A = MatQ::Zero(V.A.rows(), V.A.cols()), assembled_B = MatQ::Zero(V.B.rows(), V.B.cols()),
+       assembled_C = MatQ::Zero(V.C.rows(), V.C.cols()), assembled_D = MatQ::Zero(V.D.rows(), V.D.cols());
+  Eigen::Index s = 0, c = 0;
+  for (size_t b = 0; b < cs.mbar.size(); ++b) {
+    const Eigen::Index nb = cs.nbar[b], mb = cs.mbar[b];
+    if (mb != 1)
+      throw InputError("--certificate: the coupling's block " + std::to_string(b + 1) + " has " + std::to_string(mb) +
+                       " channels; the split's certificate kind takes one block per DOF: no certificate");
+    const MatQ A = V.A.block(s, s, nb, nb), B = V.B.block(s, c, nb, 1), C = V.C.block(c, s, 1, nb), D = V.D.block(c, c, 1, 1);
+    assembled_A.block(s, s, nb, nb) = A, assembled_B.block(s, c, nb, 1) = B, assembled_C.block(c, s, 1, nb) = C, assembled_D(c, c) = D(0, 0);
+    vblocks.push_back({{"A", matrix_json(A)}, {"B", matrix_json(B)}, {"C", matrix_json(C)}, {"D", matrix_json(D)}});
+    s += nb, c += 1;
+  }
+  if (!(assembled_A == V.A && assembled_B == V.B && assembled_C == V.C && assembled_D == V.D))
+    throw InputError("--certificate: the designed V is not block diagonal by DOF: no certificate");
+  nlohmann::json g = nlohmann::json::array(), qe = nlohmann::json::array(), qv = nlohmann::json::array();
+  for (const auto& cls : bw->classes) {
+    const auto i = static_cast<Eigen::Index>(cls.front());
+    g.push_back(bw->X(i, i).str()), qe.push_back(bw->QE(i, i).str()), qv.push_back(bw->QV(i, i).str());
+  }
+  nlohmann::json zero_sum = nlohmann::json::array();
+  for (size_t k = 1; k < bw->split_points.size(); ++k) zero_sum.push_back({{"class", bw->split_class[k]}, {"point", point_json(bw->split_points[k])}});
+  nlohmann::json pv = nlohmann::json::array();
+  for (const MatQ& P : bw->P_V) pv.push_back(matrix_json(P));
+  nlohmann::json model = scene_model(sc, d.scene);
+  model["coupling_blocks"] = vblocks;
+  nlohmann::json j = certificate_header("multidof-coupling-symmetric");
+  j["model"] = model;
+  j["claim"] = {{"status", "exact"}, {"theorem4", true}};
+  j["evidence"] = {{"classes", bw->classes}, {"g", g}, {"q_E", qe}, {"q_V", qv}, {"fixed", point_json(bw->split_points[0])},
+                   {"zero_sum", zero_sum}, {"P_V", pv}};
+  verify_before_writing(j);
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneDesign& d, const lmi::Options& opt) {
   if (const std::string why = multidof_certificate_premise(sc); !why.empty())
     throw InputError("--certificate: " + why + ": no certificate");
   if (!d.has_v() || !d.design.verdict.holds() || !d.design.verdict.proven())
     throw InputError("--certificate: no coupling V verified exactly (the design's verdict: " +
                      std::string(d.design.verdict.holds() ? "numeric" : "no V") + "): no certificate");
+  if (auto j = symmetric_design_certificate(sc, d)) return *j;
   const multidof::Problem& pb = d.scene.problem;
   // Theorem 4's program on the whole (P_E, P_V, X, Q_E, Q_V free) for the designed V: its exact point
   // is the evidence, whatever path designed V

@@ -14,6 +14,7 @@
 #include "hapstab/check/limit_cycle_check.hpp"
 #include "hapstab/check/multidof_feasible_check.hpp"
 #include "hapstab/check/multidof_coupling_check.hpp"
+#include "hapstab/check/multidof_coupling_symmetric_check.hpp"
 #include "hapstab/check/multidof_facial_check.hpp"
 #include "hapstab/check/multidof_symmetric_check.hpp"
 #include "hapstab/check/multidof_witness_check.hpp"
@@ -241,6 +242,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "bound-max") return check_bound_max(c);
   if (kind == "limit-cycle") return check_limit_cycle(c);
   if (kind == "multidof-coupling") return check_multidof_coupling(c);
+  if (kind == "multidof-coupling-symmetric") return check_multidof_coupling_symmetric(c);
   if (kind == "multidof-feasible") return check_multidof_feasible(c);
   if (kind == "multidof-feasible-symmetric") return check_multidof_feasible_symmetric(c);
   if (kind == "multidof-facial") return check_multidof_facial(c);
@@ -251,7 +253,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

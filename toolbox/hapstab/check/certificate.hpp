@@ -6,6 +6,7 @@
 //   bound-max  the largest K with b*(K) < b (bound --max) check/bound_max_check.hpp
 //   limit-cycle  a periodic orbit of paper 002's loop (4) check/limit_cycle_check.hpp
 //   multidof-coupling  a designed V meets Theorem 4 (16 + Lemma 1 for V-hat)  check/multidof_coupling_check.hpp
+//   multidof-coupling-symmetric  the same on the split of identical DOFs  check/multidof_coupling_symmetric_check.hpp
 //   multidof-facial  (16) infeasible: no X makes X E(1) symmetric  check/multidof_facial_check.hpp
 //   multidof-feasible  Theorem 5's (16) has a point, paper 000  check/multidof_feasible_check.hpp
 //   multidof-feasible-symmetric  the same by the split of identical DOFs  check/multidof_symmetric_check.hpp

@@ -28,6 +28,54 @@ Mat coupling_matrix(const nlohmann::json& V, const char* key, size_t rows, size_
 
 }  // namespace
 
+namespace detail {
+
+std::string vhat_lemma1_fails(const Mat& AV, const Mat& BV, const Mat& CV, const Mat& DV, const std::vector<rational>& delta,
+                              const rational& T, const Mat& X, const Mat& QV, const Mat& PV, const std::string& where) {
+  const size_t nv = AV.size(), m = DV.size();
+  // V-hat (17) with Gamma = I, K = (T/2) Delta_D^-1 (12)
+  for (size_t i = 0; i < m; ++i)
+    if (delta[i] <= 0)
+      throw InputError("model.devices: DOF " + std::to_string(i) + "'s level is " + decimal(delta[i]) +
+                       " <= 0: K = (T/2) Delta_D^-1 (12) is not defined");
+  const size_t n = nv + m;
+  Mat A = zeros(n, n), B = zeros(n, m), C = zeros(m, n), D = zeros(m, m);
+  for (size_t i = 0; i < nv; ++i) {
+    for (size_t j = 0; j < nv; ++j) A[i][j] = AV[i][j];
+    for (size_t j = 0; j < m; ++j) {
+      A[i][nv + j] = -BV[i][j] / T;
+      B[i][j] = BV[i][j] / T;
+    }
+  }
+  for (size_t i = 0; i < m; ++i) {
+    B[nv + i][i] = 1;
+    for (size_t j = 0; j < nv; ++j) C[i][j] = CV[i][j];
+    for (size_t j = 0; j < m; ++j) {
+      const rational K = i == j ? T / (2 * delta[i]) : rational(0);
+      C[i][nv + j] = (K - DV[i][j]) / T;
+      D[i][j] = (DV[i][j] - K) / T;
+    }
+  }
+  if (PV.size() != n || PV[0].size() != n)
+    throw InputError(where + ": must be " + std::to_string(n) + " x " + std::to_string(n) + " (V-hat's order nV + m)");
+  if (!symmetric(PV)) return "P_V is not symmetric";
+  if (!positive_definite(PV, true)) return "P_V > 0 fails";
+  // Lemma 1 at X and Q_V: F <= 0
+  const Mat At = transpose(A), Ct = transpose(C), AtP = mul(At, PV), CtQ = mul(Ct, QV);
+  const Mat F11 = add(add(mul(AtP, A), PV, -1), mul(CtQ, C));
+  const Mat F12 = add(add(mul(AtP, B), mul(Ct, X), rational(-1, 2)), mul(CtQ, D));
+  const Mat XD = mul(X, D);
+  const Mat F22 = add(add(mul(mul(transpose(B), PV), B), add(XD, transpose(XD)), rational(-1, 2)), mul(mul(transpose(D), QV), D));
+  Mat negF = zeros(n + m, n + m);
+  for (size_t i = 0; i < n + m; ++i)
+    for (size_t j = 0; j < n + m; ++j)
+      negF[i][j] = -(i < n ? (j < n ? F11[i][j] : F12[i][j - n]) : (j < n ? F12[j][i - n] : F22[i - n][j - n]));
+  if (!positive_definite(negF, false)) return "Lemma 1 for V-hat at X and Q_V: F <= 0 fails";
+  return "";
+}
+
+}  // namespace detail
+
 Verdict check_multidof_coupling(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
   only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators", "coupling"}, "model");
@@ -58,47 +106,9 @@ Verdict check_multidof_coupling(const nlohmann::json& cert) {
   long points = 0;
   if (const std::string why = feasible_point_fails(env, delta, owner, pt, true, points); !why.empty())
     return {false, "(16) at the evidence's point: " + why};
-  // V-hat (17) with Gamma = I, K = (T/2) Delta_D^-1 (12)
-  for (size_t i = 0; i < m; ++i)
-    if (delta[i] <= 0)
-      throw InputError("model.devices: DOF " + std::to_string(i) + "'s level is " + decimal(delta[i]) +
-                       " <= 0: K = (T/2) Delta_D^-1 (12) is not defined");
-  const rational T = pd.T;
-  const size_t n = nv + m;
-  Mat A = zeros(n, n), B = zeros(n, m), C = zeros(m, n), D = zeros(m, m);
-  for (size_t i = 0; i < nv; ++i) {
-    for (size_t j = 0; j < nv; ++j) A[i][j] = AV[i][j];
-    for (size_t j = 0; j < m; ++j) {
-      A[i][nv + j] = -BV[i][j] / T;
-      B[i][j] = BV[i][j] / T;
-    }
-  }
-  for (size_t i = 0; i < m; ++i) {
-    B[nv + i][i] = 1;
-    for (size_t j = 0; j < nv; ++j) C[i][j] = CV[i][j];
-    for (size_t j = 0; j < m; ++j) {
-      const rational K = i == j ? T / (2 * delta[i]) : rational(0);
-      C[i][nv + j] = (K - DV[i][j]) / T;
-      D[i][j] = (DV[i][j] - K) / T;
-    }
-  }
   const Mat PV = exact_matrix(p.evidence, "P_V", "evidence", max_vhat_order);
-  if (PV.size() != n || PV[0].size() != n)
-    throw InputError("evidence.P_V: must be " + std::to_string(n) + " x " + std::to_string(n) + " (V-hat's order nV + m)");
-  if (!symmetric(PV)) return {false, "P_V is not symmetric"};
-  if (!positive_definite(PV, true)) return {false, "P_V > 0 fails"};
-  // Lemma 1 at X and Q_V: F <= 0
-  const Mat &X = pt.X, &QV = pt.QV;
-  const Mat At = transpose(A), Ct = transpose(C), AtP = mul(At, PV), CtQ = mul(Ct, QV);
-  const Mat F11 = add(add(mul(AtP, A), PV, -1), mul(CtQ, C));
-  const Mat F12 = add(add(mul(AtP, B), mul(Ct, X), rational(-1, 2)), mul(CtQ, D));
-  const Mat XD = mul(X, D);
-  const Mat F22 = add(add(mul(mul(transpose(B), PV), B), add(XD, transpose(XD)), rational(-1, 2)), mul(mul(transpose(D), QV), D));
-  Mat negF = zeros(n + m, n + m);
-  for (size_t i = 0; i < n + m; ++i)
-    for (size_t j = 0; j < n + m; ++j)
-      negF[i][j] = -(i < n ? (j < n ? F11[i][j] : F12[i][j - n]) : (j < n ? F12[j][i - n] : F22[i - n][j - n]));
-  if (!positive_definite(negF, false)) return {false, "Lemma 1 for V-hat at X and Q_V: F <= 0 fails"};
+  if (const std::string why = vhat_lemma1_fails(AV, BV, CV, DV, delta, pd.T, pt.X, pt.QV, PV, "evidence.P_V"); !why.empty())
+    return {false, why};
   return {true, "V meets Theorem 4's conditions: (16) holds at the point ((A, B, C, D) realises the model's E-hat, " +
                     std::to_string(pt.A.size()) + " states, equal at " + std::to_string(points) +
                     " points; P > 0, M1 <= 0, (14) > 0, Q_V > 0, X = diag(g) in G with g >= 1) and V-hat (17), built from the "

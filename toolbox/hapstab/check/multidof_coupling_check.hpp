@@ -33,8 +33,25 @@
 
 #include "hapstab/check/certificate.hpp"
 
+#include <string>
+#include <vector>
+
+#include "hapstab/check/rational_matrix.hpp"
+
 namespace hapstab::check {
 
 Verdict check_multidof_coupling(const nlohmann::json& certificate);
+
+namespace detail {
+
+/// Lemma 1 for V-hat above: V-hat (17) built from V = (AV, BV, CV, DV) (m x m, nV states) and K =
+/// (T/2) diag(delta)^-1, then P_V = P_V^T > 0 and F <= 0 at X, Q_V (m x m). "" when it holds, else
+/// what fails; InputError when a level is <= 0 or P_V (named `where`) is not (nV + m) square.
+std::string vhat_lemma1_fails(const rational_matrix::Mat& AV, const rational_matrix::Mat& BV, const rational_matrix::Mat& CV,
+                              const rational_matrix::Mat& DV, const std::vector<rational>& delta, const rational& T,
+                              const rational_matrix::Mat& X, const rational_matrix::Mat& QV, const rational_matrix::Mat& PV,
+                              const std::string& where);
+
+}  // namespace detail
 
 }  // namespace hapstab::check

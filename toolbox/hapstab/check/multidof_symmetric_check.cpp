@@ -58,13 +58,24 @@ std::string not_invariant(const Environment& env, const std::vector<std::vector<
   return "";
 }
 
-// One block's point: "" when it holds, else why not.
+// One block's point: "" when it holds, else why not. With `image` (the whole's invariant X, Q_E, Q_V
+// on the block's DOFs, diagonal), the point's X, Q_E, Q_V must be one positive multiple of it.
 std::string block_fails(const Environment& block, const std::vector<rational>& delta, const nlohmann::json& ev,
-                        const std::string& where, std::string& said) {
+                        const std::string& where, const std::vector<std::vector<rational>>* image, std::string& said) {
   const size_t mb = block.E.size();
   std::vector<size_t> owner(mb);
   for (size_t i = 0; i < mb; ++i) owner[i] = i;  // (h1): one g per DOF of the block
   const FeasiblePoint pt = read_feasible_point(ev, where, mb);
+  if (image) {  // (*image)[0..2][i]: the image's X, Q_E, Q_V at the block's DOF i
+    const rational tau = pt.X[0][0] / (*image)[0][0];
+    for (size_t i = 0; i < mb; ++i)
+      for (size_t j = 0; j < mb; ++j) {
+        const bool d = i == j;
+        if (pt.X[i][j] != (d ? tau * (*image)[0][i] : rational(0)) || pt.QE[i][j] != (d ? tau * (*image)[1][i] : rational(0)) ||
+            pt.QV[i][j] != (d ? tau * (*image)[2][i] : rational(0)) || tau <= 0)
+          return "its X, Q_E, Q_V are not one positive multiple of the image of the whole's (g, q_E, q_V)";
+      }
+  }
   long points = 0;
   const std::string why = feasible_point_fails(block, delta, owner, pt, false, points);
   said += std::to_string(pt.A.size()) + " states, " + std::to_string(points) + " points";
@@ -73,51 +84,49 @@ std::string block_fails(const Environment& block, const std::vector<rational>& d
 
 }  // namespace
 
-Verdict check_multidof_feasible_symmetric(const nlohmann::json& cert) {
-  const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
-  only_fields(p.claim, {"status", "feasible"}, "claim");
-  only_fields(p.evidence, {"classes", "fixed", "zero_sum"}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
-    throw InputError("claim.feasible: missing or not a boolean");
-  if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; points prove only feasibility"};
-  const PeriodDelay pd = read_period_delay(p.model);
-  const Environment env = read_environment(p.model, pd.T, pd.n);
+namespace detail {
+
+std::vector<std::vector<size_t>> split_classes(const nlohmann::json& evidence, size_t m) { return read_classes(evidence, m); }
+
+std::string split_16_fails(const Parts& p, const Environment& env, const std::vector<rational>& delta,
+                           const std::vector<std::vector<size_t>>& classes, const SplitMultipliers* invariant,
+                           std::string& said, size_t& blocks) {
+  const size_t m = env.E.size();
   if (!env.perturb_C.empty())
     throw InputError("model.environment.perturb_C: outside this kind (the split needs E itself invariant; use multidof-feasible)");
-  const size_t m = env.E.size();
-  const std::vector<rational> delta = device_levels(p.model, m);
-  const std::vector<size_t> owner = operator_of(p.model, m);
   if (p.model.at("operators").size() != m)  // (h1)
     throw InputError("model.operators: an operator has two DOFs or more; this kind needs one-DOF operators (X = diag(g))");
-  const auto classes = read_classes(p.evidence, m);
   for (size_t a = 0; a < classes.size(); ++a)  // (h2)
     for (size_t i : classes[a])
       if (delta[i] != delta[classes[a][0]])
-        return {false, "class " + std::to_string(a) + " is not of alike DOFs: the OSP level of DOF " + std::to_string(i) +
-                           " is " + decimal(delta[i]) + ", DOF " + std::to_string(classes[a][0]) + "'s " +
-                           decimal(delta[classes[a][0]])};
+        return "class " + std::to_string(a) + " is not of alike DOFs: the OSP level of DOF " + std::to_string(i) + " is " +
+               decimal(delta[i]) + ", DOF " + std::to_string(classes[a][0]) + "'s " + decimal(delta[classes[a][0]]);
   if (const std::string why = not_invariant(env, classes); !why.empty())  // (h3)
-    return {false, "E is not invariant under the permutations within the classes: " + why};
+    return "E is not invariant under the permutations within the classes: " + why;
   // the fixed space's block: E_f(a, c) = sum over class c's DOFs j of E(a0, j), one DOF per class
   const size_t r = classes.size();
   Environment fixed = env;
   fixed.E.assign(r, {});
   std::vector<rational> delta_f(r);
+  std::vector<std::vector<rational>> image_f(3, std::vector<rational>(r));  // S^T diag S on the indicators: k_c times
   for (size_t a = 0; a < r; ++a) {
     delta_f[a] = delta[classes[a][0]];
+    if (invariant) {
+      const rational k(static_cast<long>(classes[a].size()));
+      image_f[0][a] = k * invariant->g[a], image_f[1][a] = k * invariant->qe[a], image_f[2][a] = k * invariant->qv[a];
+    }
     for (size_t c = 0; c < r; ++c) {
       TransferFunction s = env.E[classes[a][0]][classes[c][0]];
       for (size_t j = 1; j < classes[c].size(); ++j) s = parallel(s, env.E[classes[a][0]][classes[c][j]]);
       fixed.E[a].push_back(s);
     }
   }
-  std::string said = "the fixed space (" + std::to_string(r) + " DOF: ";
+  said = "the fixed space (" + std::to_string(r) + " DOF: ";
   if (!p.evidence.contains("fixed") || !p.evidence.at("fixed").is_object())
     throw InputError("evidence.fixed: missing or not an object");
-  if (const std::string why = block_fails(fixed, delta_f, p.evidence.at("fixed"), "evidence.fixed", said); !why.empty())
-    return {false, "the fixed space's block: " + why};
+  if (const std::string why = block_fails(fixed, delta_f, p.evidence.at("fixed"), "evidence.fixed", invariant ? &image_f : nullptr, said);
+      !why.empty())
+    return "the fixed space's block: " + why;
   said += ")";
   // one zero-sum block per class of two DOFs or more: e_a = E(a0, a0) - E(a0, a1)
   if (!p.evidence.contains("zero_sum") || !p.evidence.at("zero_sum").is_array())
@@ -139,17 +148,45 @@ Verdict check_multidof_feasible_symmetric(const nlohmann::json& cert) {
     minus.H = -minus.H;
     Environment e = env;
     e.E = {{parallel(env.E[a0][a0], minus)}};
+    std::vector<std::vector<rational>> image_a;  // the Helmert vectors' image: j (j + 1) times, any multiple
+    if (invariant) image_a = {{invariant->g[a]}, {invariant->qe[a]}, {invariant->qv[a]}};
     said += "; class " + std::to_string(a) + "'s zero-sum space (" + std::to_string(classes[a].size() - 1) + " copies: ";
-    if (const std::string why = block_fails(e, {delta[a0]}, object_field(b, "point", where), where + ".point", said); !why.empty())
-      return {false, "class " + std::to_string(a) + "'s zero-sum block: " + why};
+    if (const std::string why = block_fails(e, {delta[a0]}, object_field(b, "point", where), where + ".point",
+                                            invariant ? &image_a : nullptr, said);
+        !why.empty())
+      return "class " + std::to_string(a) + "'s zero-sum block: " + why;
     said += ")";
     copies += classes[a].size() - 1;
   }
   if (next != zs.size()) throw InputError("evidence.zero_sum: " + std::to_string(zs.size() - next) + " block(s) beyond the classes of two DOFs or more");
-  return {true, "(16) feasible by the symmetry of " + std::to_string(r) + " classes of alike DOFs (E invariant under the "
+  blocks = r + copies;
+  return "";
+}
+
+}  // namespace detail
+
+Verdict check_multidof_feasible_symmetric(const nlohmann::json& cert) {
+  const Parts p = certificate_parts(cert);
+  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
+  only_fields(p.claim, {"status", "feasible"}, "claim");
+  only_fields(p.evidence, {"classes", "fixed", "zero_sum"}, "evidence");
+  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
+    throw InputError("claim.feasible: missing or not a boolean");
+  if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; points prove only feasibility"};
+  const PeriodDelay pd = read_period_delay(p.model);
+  const Environment env = read_environment(p.model, pd.T, pd.n);
+  const size_t m = env.E.size();
+  const std::vector<rational> delta = device_levels(p.model, m);
+  operator_of(p.model, m);  // every DOF in one operator
+  const auto classes = read_classes(p.evidence, m);
+  std::string said;
+  size_t blocks = 0;
+  if (const std::string why = split_16_fails(p, env, delta, classes, nullptr, said, blocks); !why.empty()) return {false, why};
+  return {true, "(16) feasible by the symmetry of " + std::to_string(classes.size()) + " classes of alike DOFs (E invariant under the "
                 "permutations within them: " + std::to_string(m * m) + " entries compared exactly; the levels equal and the "
                 "operators one-DOF): " + said + "; each block's realisation is its E-hat and its point holds (16) with g > 0, "
-                "exactly, so the lifted point holds the whole's (16) with g >= 1 (" + std::to_string(r + copies) + " blocks)"};
+                "exactly, so the lifted point holds the whole's (16) with g >= 1 (" + std::to_string(blocks) + " blocks)"};
 }
 
 }  // namespace hapstab::check

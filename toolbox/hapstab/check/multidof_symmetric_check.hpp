@@ -39,8 +39,33 @@
 
 #include "hapstab/check/certificate.hpp"
 
+#include <string>
+#include <vector>
+
+#include "hapstab/check/multidof_model.hpp"
+
 namespace hapstab::check {
 
 Verdict check_multidof_feasible_symmetric(const nlohmann::json& certificate);
+
+namespace detail {
+
+/// evidence.classes: a partition of the m DOFs (InputError naming the field otherwise).
+std::vector<std::vector<size_t>> split_classes(const nlohmann::json& evidence, size_t m);
+/// The whole's invariant diagonal multipliers, one value per class: X = diag(g), Q_E, Q_V.
+struct SplitMultipliers {
+  std::vector<rational> g, qe, qv;
+};
+/// The theorem above on p's model (env, its levels `delta`) and evidence (`fixed`, `zero_sum`): ""
+/// when (h1)-(h3) hold and every block's point holds its (16), else the refutation; InputError when
+/// malformed. With `invariant`, each block's X, Q_E, Q_V must moreover be one positive multiple of the
+/// image of the whole's (S^T diag S: k_c times on the fixed space; any multiple on a zero-sum block), so
+/// the lifted point has exactly these multipliers (check/multidof_coupling_symmetric_check.hpp).
+/// `said`: the blocks' account; `blocks`: how many blocks the lifted realisation has.
+std::string split_16_fails(const Parts& p, const multidof_model::Environment& env, const std::vector<rational>& delta,
+                           const std::vector<std::vector<size_t>>& classes, const SplitMultipliers* invariant,
+                           std::string& said, size_t& blocks);
+
+}  // namespace detail
 
 }  // namespace hapstab::check

@@ -261,6 +261,7 @@ CouplingCheck check_theorem4(const Problem& pb, const StateSpace<rational>& V, c
 struct OspCheck {
   Verdict verdict;  ///< evidence: the solver's account, then the exact re-check
   double margin = 0;
+  MatQ P_V;         ///< the storage that passed the exact re-check (V-hat's coordinates); empty otherwise
 };
 OspCheck check_vhat_osp(const StateSpace<rational>& V, const MatQ& K, const MatQ& Gamma, const MatQ& Delta,
                         const lmi::Options& opt = {});

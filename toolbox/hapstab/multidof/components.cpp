@@ -133,18 +133,12 @@ std::string component_name(const Problem& whole, const Component& c) {
   return s + "} (" + std::to_string(c.dofs.size()) + " DOF, " + std::to_string(c.states.size()) + " states)";
 }
 
-std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult& r) {
-  if (r.exact_point) return StoredPoint{exact_storage(pb, *r.exact_point), r.exact_point->X, r.exact_point->QE, r.exact_point->QV};
-  if (r.symmetry) return lift_point(*r.symmetry, pb.structure.m());
-  if (r.components.empty()) return std::nullopt;
-  const std::vector<Component> comps = components(pb);
+StoredPoint assemble_components(const Problem& pb, const std::vector<Component>& comps, const std::vector<ExactPoint>& points) {
   const Eigen::Index m = pb.structure.m();
   std::vector<ExactStorage> parts;
   Eigen::Index N = 0;
   for (size_t k = 0; k < comps.size(); ++k) {
-    if (k >= r.components.size() || r.components[k].dofs != comps[k].dofs || !r.components[k].exact_point)
-      return std::nullopt;  // (the analysis split another way, or a component holds no point)
-    parts.push_back(exact_storage(comps[k].problem, *r.components[k].exact_point));
+    parts.push_back(exact_storage(comps[k].problem, points[k]));
     N += parts.back().Ehat.A.rows();
   }
   StoredPoint out;
@@ -155,7 +149,7 @@ std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult&
   Eigen::Index at = 0;
   for (size_t k = 0; k < comps.size(); ++k) {
     const auto& s = parts[k];
-    const auto& x = *r.components[k].exact_point;
+    const auto& x = points[k];
     const auto& d = comps[k].dofs;
     const Eigen::Index n = s.Ehat.A.rows();
     E.A.block(at, at, n, n) = s.Ehat.A;
@@ -175,6 +169,20 @@ std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult&
     at += n;
   }
   return out;
+}
+
+std::optional<StoredPoint> stored_point(const Problem& pb, const AnalysisResult& r) {
+  if (r.exact_point) return StoredPoint{exact_storage(pb, *r.exact_point), r.exact_point->X, r.exact_point->QE, r.exact_point->QV};
+  if (r.symmetry) return lift_point(*r.symmetry, pb.structure.m());
+  if (r.components.empty()) return std::nullopt;
+  const std::vector<Component> comps = components(pb);
+  std::vector<ExactPoint> points;
+  for (size_t k = 0; k < comps.size(); ++k) {
+    if (k >= r.components.size() || r.components[k].dofs != comps[k].dofs || !r.components[k].exact_point)
+      return std::nullopt;  // (the analysis split another way, or a component holds no point)
+    points.push_back(*r.components[k].exact_point);
+  }
+  return assemble_components(pb, comps, points);
 }
 
 }  // namespace hapstab::multidof

@@ -42,6 +42,12 @@ struct Component {
 /// (the whole, with the whole's problem) when the scene does not split.
 std::vector<Component> components(const Problem& pb);
 
+/// The whole's exact point from one exact point per component (points[k] on comps[k].problem): the
+/// components' E-hat realisations side by side, B's columns and C's rows at each component's DOFs,
+/// P = blockdiag(P_k), X, Q_E, Q_V placed at the DOFs -- a realisation of pb's E-hat (block diagonal
+/// over the components) and a point of its (16), which the checkers verify as any other.
+StoredPoint assemble_components(const Problem& pb, const std::vector<Component>& comps, const std::vector<ExactPoint>& points);
+
 /// The inverse of the split: E = blockdiag(E_a, E_b) in the realisation (states, inputs and outputs
 /// of a, then of b; exact), the operators of a then of b (same sample period: InputError otherwise).
 Problem direct_sum(const Problem& a, const Problem& b);

@@ -192,7 +192,7 @@ OspCheck detail::check_vhat_lemma1(const StateSpace<rational>& V, const MatQ& K,
   if (cs.verdict.fails() || !cs.has_point()) return oc;
   const MatQ P11 = vv.P11.rows > 0 ? cs.point(vv.P11) : MatQ(0, 0);
   std::string why;
-  const bool ok = exact_recheck_vhat(vv, {X}, {rational(1)}, Q, P11, why);
+  const bool ok = exact_recheck_vhat(vv, {X}, {rational(1)}, Q, P11, why, &oc.P_V);
   oc.verdict = cs.recheck(ok, cs.solver_text() + " | " + why);
   return oc;
 }

@@ -416,7 +416,8 @@ Verdict all_blocks(const std::vector<Verdict>& v, const std::string& what) {
 // Theorem 4 certificate does not hold (the caller then runs verify_coupling).
 std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, const StateSpace<rational>& V,
                                                           const std::vector<CouplingBlock>& all, const std::vector<size_t>& rep,
-                                                          const MatQ& K, const KypMinPoint& mp, const lmi::Options& opt) {
+                                                          const MatQ& K, const KypMinPoint& mp, const lmi::Options& opt,
+                                                          std::vector<MatQ>& storages) {
   // the distinct blocks only: V's copies of a block are the same matrices (design_blockwise_at)
   std::vector<CouplingBlock> blocks;
   for (size_t i = 0; i < all.size(); ++i)
@@ -433,8 +434,16 @@ std::optional<std::vector<Verification>> verify_blockwise(const Problem& pb, con
     Ab.push_back(Vb.back().A);
   }
   std::vector<Verdict> lemma1;
-  for (size_t i = 0; i < blocks.size(); ++i)
-    lemma1.push_back(check_vhat_lemma1(Vb[i], Kb[i], square(mp.env.X, blocks[i]), square(mp.QV, blocks[i]), opt).verdict);
+  std::vector<MatQ> distinct_storage;
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    OspCheck oc = check_vhat_lemma1(Vb[i], Kb[i], square(mp.env.X, blocks[i]), square(mp.QV, blocks[i]), opt);
+    lemma1.push_back(oc.verdict);
+    distinct_storage.push_back(std::move(oc.P_V));
+  }
+  storages.assign(all.size(), MatQ());  // each block's: its representative's (the same matrices)
+  for (size_t i = 0, d = 0; i < all.size(); ++i)
+    if (rep[i] == i) storages[i] = distinct_storage[d++];
+  for (size_t i = 0; i < all.size(); ++i) storages[i] = storages[rep[i]];
   const std::string copies = blocks.size() < all.size() ? " (" + std::to_string(blocks.size()) + " distinct block(s) of " +
                                                               std::to_string(all.size()) + ", each copy the same matrices)"
                                                         : "";
@@ -552,8 +561,10 @@ std::optional<DesignResult> detail::design_blockwise_at(const Problem& pb, const
   res.gamma_sqrt = gamma_sqrt(pb, X);
   res.Q_V = to_double(mp->QV);
   res.delta_V = gamma_inv_scale(res.Q_V, X);
-  std::optional<std::vector<Verification>> checks = verify_blockwise(pb, res.V, blocks, rep, K, *mp, opt.lmi);
+  std::vector<MatQ> storages;
+  std::optional<std::vector<Verification>> checks = verify_blockwise(pb, res.V, blocks, rep, K, *mp, opt.lmi, storages);
   const bool blockwise_certificate = checks.has_value();
+  if (checks) res.blockwise = DesignResult::BlockwiseEvidence{mp->env.X, mp->env.QE, mp->QV, std::move(storages), {}, {}, {}};
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, mp->env.X, mp->QV, opt.lmi);
   std::ostringstream o;
   o << "block-wise design: Q_V from the structured path (along Q_E = " << qe_text(*mp) << " at the least a floating-point "

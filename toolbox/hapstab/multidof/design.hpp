@@ -80,6 +80,20 @@ struct DesignResult {
   FacialConditions facial;     ///< the facial conditions of (16) (the same X set analyze reports)
   std::string path;            ///< the path that decided (planner.hpp), "" when none did
   std::vector<PlanStep> plan;  ///< every path's fate, in the planner's order
+  /// The exact evidence of a block-wise design's Theorem 4 certificate (design_blockwise_at), what
+  /// `multidof design --certificate` writes for a design on the split (cli/multidof_certificate.hpp):
+  /// the point's X, Q_E, Q_V (diagonal); V-hat's storage per block of V, in V's order (a copy shares
+  /// its representative's); for the split of identical DOFs (design_symmetry.cpp) its classes and
+  /// each block's exact point, the fixed space first (the direct sum of its components' where it
+  /// went by them).
+  struct BlockwiseEvidence {
+    MatQ X, QE, QV;
+    std::vector<MatQ> P_V;
+    std::vector<std::vector<int>> classes;
+    std::vector<StoredPoint> split_points;
+    std::vector<int> split_class;  ///< per split point: -1 the fixed space, else its class
+  };
+  std::optional<BlockwiseEvidence> blockwise;
 };
 
 DesignResult design(const Problem& pb, const DesignOptions& opt = {});

@@ -213,6 +213,23 @@ std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const
   std::string why_blockwise;
   std::optional<DesignResult> res = detail::design_blockwise_at(sp.problem, whole, opt, why_blockwise);
   if (!res) return why_not = why_blockwise, std::nullopt;
+  if (res->blockwise) {  // the evidence of --certificate: the classes and each block's exact point
+    res->blockwise->classes = split.classes;
+    std::vector<ExactPoint> fixed_parts;  // the fixed space's components' points, when it went by them
+    for (size_t k = 0; k < np; ++k) {
+      const KypMinPoint& p = (*part_pts)[k];
+      const SymmetryBlock& blk = split.blocks[of[k].block];
+      const ExactPoint x{p.env.P11, p.env.X, p.env.QE, p.QV};
+      if (of[k].block == 0 && fixed_components.size() > 1) {
+        fixed_parts.push_back(x);
+        if (fixed_parts.size() < fixed_components.size()) continue;
+        res->blockwise->split_points.push_back(assemble_components(blk.problem, fixed_components, fixed_parts));
+      } else {
+        res->blockwise->split_points.push_back({exact_storage(blk.problem, x), p.env.X, p.env.QE, p.QV});
+      }
+      res->blockwise->split_class.push_back(blk.cls);
+    }
+  }
   res->facial = fc[0];
   res->facial.explanation = "facial reduction per block (" + split.blocks[0].name + ": " + fc[0].explanation + ")";
   res->path = "symmetry of identical DOFs (block-wise)";
