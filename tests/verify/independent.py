@@ -1109,13 +1109,16 @@ def check_design16(c, exe, timeout):
         ck = subprocess.run([exe, "check", cert], capture_output=True, text=True) if os.path.exists(cert) else None
         py = subprocess.run([sys.executable, str(ROOT / "checks" / "hapstab_check.py"), cert], capture_output=True,
                             text=True) if os.path.exists(cert) else None
-        tags["certificate"] = ("refused by name" if rcc == 2 and "no certificate" in errc else f"none (exit {rcc})") if ck is None \
+        tags["certificate"] = ("refused by name" if rcc == 2 and "no certificate" in errc else
+                               "timeout" if rcc == "timeout" else f"none (exit {rcc})") if ck is None \
             else "verified by both" if ck.returncode == 0 and py.returncode == 0 \
             else "verified (beyond the independent checker's size)" if ck.returncode == 0 and py.returncode == 3 else "REFUTED"
         if abs(1 - rho) < 1e-9:
             out.update(outcome="reference too near the circle", why=f"rho = {rho!r}")
         elif rho >= 1:
             out.update(outcome="MISS", why=f"a verified V, but the loop with it built here has rho = {rho!r}")
+        elif tags["certificate"] == "timeout":
+            out.update(outcome="timeout", why="the designed V's certificate (Theorem 4's program on the whole)")
         elif tags["certificate"] == "REFUTED" or tags["certificate"].startswith("none"):
             out.update(outcome="MISS", why=f"the designed V's certificate: {tags['certificate']} "
                                            f"(hapstab check {ck and ck.stdout.strip()[:150]}; {errc[-200:]})")
