@@ -67,10 +67,11 @@ Verdict check_multidof_coupling_symmetric(const nlohmann::json& cert) {
   std::vector<size_t> cls(m);
   for (size_t c = 0; c < r; ++c)
     for (size_t i : classes[c]) cls[i] = c;
-  const nlohmann::json& Vb = p.model.at("coupling_blocks");
-  if (!Vb.is_array() || Vb.size() != m) throw InputError("model.coupling_blocks: must be one {A, B, C, D} per DOF (" + std::to_string(m) + ")");
-  if (!p.evidence.at("P_V").is_array() || p.evidence.at("P_V").size() != m)
+  if (!p.model.contains("coupling_blocks") || !p.model.at("coupling_blocks").is_array() || p.model.at("coupling_blocks").size() != m)
+    throw InputError("model.coupling_blocks: must be one {A, B, C, D} per DOF (" + std::to_string(m) + ")");
+  if (!p.evidence.contains("P_V") || !p.evidence.at("P_V").is_array() || p.evidence.at("P_V").size() != m)
     throw InputError("evidence.P_V: must be one storage per DOF block (" + std::to_string(m) + ")");
+  const nlohmann::json& Vb = p.model.at("coupling_blocks");
   size_t states = 0;
   for (size_t i = 0; i < m; ++i) {
     const std::string where = "model.coupling_blocks[" + std::to_string(i) + "]";
