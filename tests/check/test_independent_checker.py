@@ -3,7 +3,8 @@
 its `limit-cycle` kind on first-order loops (class LimitCycle), b* = +inf (class BoundInfinite), its
 `stability-max` kind on the mass on a virtual wall with delays 0 and 1 (class StabilityMax), its
 `passivity-level-mimo` kind on a diagonal G (the least SISO level, by hand) and a coupled 2x2 (mpmath)
-(class PassivityLevelMimo), and its
+(class PassivityLevelMimo), its multi-DOF kinds of the split and of the designed coupling on their examples
+(class MultidofSplitAndCoupling), and its
 `stability` kind on loops whose characteristic polynomial and verdict
 are known by hand (the same cases as tests/check/test_check.cpp's StabilityCheck, which checks the
 C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), of 1/s^3 at T = 1
@@ -671,8 +672,59 @@ class LimitCycle(unittest.TestCase):
         self.assertEqual(hc.check(lc_cert("1", "1", 2, "3", "3", 1, ["2"], H="-2 + 1/z"))[0], 2)
 
 
-if __name__ == "__main__":
-    unittest.main()
+EXAMPLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "certificates")
+
+
+def example(name):
+    import json
+    with open(os.path.join(EXAMPLES, name)) as f:
+        return json.load(f)
+
+
+class MultidofSplitAndCoupling(unittest.TestCase):
+    """The kinds of stop 67 on their examples: multidof-feasible-symmetric (16 identical contacts in 4
+    classes) and multidof-coupling (paper 000's case ii designed), each verified as written and refuted
+    or refused where one hypothesis of its theorem is broken."""
+
+    def test_symmetric_example_verifies(self):
+        self.assertEqual(hc.check(example("multidof-feasible-symmetric-contact16.json"))[0], 0)
+
+    def test_a_dof_traded_between_classes_breaks_the_invariance(self):
+        c = example("multidof-feasible-symmetric-contact16.json")
+        cl = c["evidence"]["classes"]
+        cl[0][1], cl[1][1] = cl[1][1], cl[0][1]
+        code, why = hc.check(c)[:2]
+        self.assertEqual(code, 1, why)
+        self.assertIn("not invariant", why)
+
+    def test_a_level_moved_within_a_class(self):
+        c = example("multidof-feasible-symmetric-contact16.json")
+        dof = c["evidence"]["classes"][2][1]
+        c["model"]["devices"][dof]["b"] = "2"
+        code, why = hc.check(c)[:2]
+        self.assertEqual(code, 1, why)
+        self.assertIn("not of alike DOFs", why)
+
+    def test_two_dof_operator_is_outside_the_kind(self):
+        c = example("multidof-feasible-symmetric-contact16.json")
+        ops = c["model"]["operators"]
+        c["model"]["operators"] = [ops[0] + ops[1]] + ops[2:]
+        self.assertEqual(hc.check(c)[0], 2)
+
+    def test_coupling_example_verifies_and_its_feedthrough_matters(self):
+        c = example("multidof-coupling-case-ii.json")
+        self.assertEqual(hc.check(c)[0], 0)
+        D = c["model"]["coupling"]["D"]
+        c["model"]["coupling"]["D"] = [[str(2 * Fraction(x)) for x in r] for r in D]
+        code, why = hc.check(c)[:2]
+        self.assertEqual(code, 1, why)
+        self.assertIn("Lemma 1", why)
+
+    def test_coupling_level_zero_leaves_k_undefined(self):
+        c = example("multidof-coupling-case-ii.json")
+        c["model"]["devices"][0]["osp"] = "0"
+        self.assertIn(hc.check(c)[0], (1, 2))  # (14) fails first, or K = (T/2) Delta_D^-1 is undefined
+
 
 
 class MultidofFeasibleSize(unittest.TestCase):
@@ -688,3 +740,7 @@ class MultidofFeasibleSize(unittest.TestCase):
         code, why = hc.check(c)[:2]
         self.assertEqual(code, 3, why)
         self.assertIn("N + m <= 40", why)
+
+
+if __name__ == "__main__":
+    unittest.main()
