@@ -222,6 +222,7 @@ std::vector<Case> catalogue_rest(const std::string& out) {
       {"multidof design", "--no-symmetry", {"--scene", kMulti, "--no-symmetry=maybe"}, "--no-symmetry"},
       {"multidof analyze", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},
       {"multidof analyze", "--certificate", {"--scene", kMulti, "--certificate", "/nonexistent/c.json"}, "--certificate: "},
+      {"multidof design", "--certificate", {"--scene", kMulti, "--certificate", "/nonexistent/c.json"}, "--certificate: "},
       {"multidof design", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},
       {"multidof design", "--scene", {"--scene", "/nonexistent.toml"}, "the scene file: "},
       {"multidof design", "--backend", {"--scene", kMulti, "--backend", "magic"}, "--backend"},

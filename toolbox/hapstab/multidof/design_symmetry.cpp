@@ -74,6 +74,37 @@ DesignResult infeasible_by_facial(const SymmetryResult& split, size_t b, const F
   return res;
 }
 
+// One part of the shared bisection (design_at_shared_point): a block of the split, or one of the
+// fixed space's independent components.
+struct Part {
+  size_t block;
+  std::vector<int> dofs;  // the block's DOFs this part covers, in the part's order
+  std::string name;
+};
+
+// The evidence of `multidof design --certificate` (DesignResult::BlockwiseEvidence): the classes and
+// each block's exact point, in block order (part k is block of[k].block's, or one of the fixed space's
+// components, whose points are assembled into the fixed space's).
+void keep_split_evidence(DesignResult::BlockwiseEvidence& ev, const SymmetryResult& split,
+                         const std::vector<detail::KypMinPoint>& part_pts, const std::vector<Part>& of,
+                         const std::vector<Component>& fixed_components) {
+  ev.classes = split.classes;
+  std::vector<ExactPoint> fixed_parts;  // the fixed space's components' points, when it went by them
+  for (size_t k = 0; k < part_pts.size(); ++k) {
+    const detail::KypMinPoint& p = part_pts[k];
+    const SymmetryBlock& blk = split.blocks[of[k].block];
+    const ExactPoint x{p.env.P11, p.env.X, p.env.QE, p.QV};
+    if (of[k].block == 0 && fixed_components.size() > 1) {
+      fixed_parts.push_back(x);
+      if (fixed_parts.size() < fixed_components.size()) continue;
+      ev.split_points.push_back(assemble_components(blk.problem, fixed_components, fixed_parts));
+    } else {
+      ev.split_points.push_back({exact_storage(blk.problem, x), p.env.X, p.env.QE, p.QV});
+    }
+    ev.split_class.push_back(blk.cls);
+  }
+}
+
 // The design at one shared structured point (the header); nullopt with why_not when a part's
 // premise fails or no point is found.
 std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const SymmetryResult& split,
@@ -99,11 +130,6 @@ std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const
   // the parts of the shared bisection: each block, or -- where the facial conditions leave the fixed
   // space's X more than one direction -- its independent components (components.hpp: its (16)
   // holds iff each component's does; each component's X keeps its own scale)
-  struct Part {
-    size_t block;
-    std::vector<int> dofs;  // the block's DOFs this part covers, in the part's order
-    std::string name;
-  };
   std::vector<Part> of;
   std::vector<Component> fixed_components;
   if (fc[0].gamma_basis.size() > 1) fixed_components = components(split.blocks[0].problem);
@@ -213,23 +239,7 @@ std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const
   std::string why_blockwise;
   std::optional<DesignResult> res = detail::design_blockwise_at(sp.problem, whole, opt, why_blockwise);
   if (!res) return why_not = why_blockwise, std::nullopt;
-  if (res->blockwise) {  // the evidence of --certificate: the classes and each block's exact point
-    res->blockwise->classes = split.classes;
-    std::vector<ExactPoint> fixed_parts;  // the fixed space's components' points, when it went by them
-    for (size_t k = 0; k < np; ++k) {
-      const KypMinPoint& p = (*part_pts)[k];
-      const SymmetryBlock& blk = split.blocks[of[k].block];
-      const ExactPoint x{p.env.P11, p.env.X, p.env.QE, p.QV};
-      if (of[k].block == 0 && fixed_components.size() > 1) {
-        fixed_parts.push_back(x);
-        if (fixed_parts.size() < fixed_components.size()) continue;
-        res->blockwise->split_points.push_back(assemble_components(blk.problem, fixed_components, fixed_parts));
-      } else {
-        res->blockwise->split_points.push_back({exact_storage(blk.problem, x), p.env.X, p.env.QE, p.QV});
-      }
-      res->blockwise->split_class.push_back(blk.cls);
-    }
-  }
+  if (res->blockwise) keep_split_evidence(*res->blockwise, split, *part_pts, of, fixed_components);
   res->facial = fc[0];
   res->facial.explanation = "facial reduction per block (" + split.blocks[0].name + ": " + fc[0].explanation + ")";
   res->path = "symmetry of identical DOFs (block-wise)";
