@@ -7,14 +7,7 @@
 # the same claim with a multidof-feasible certificate that `hapstab check` verifies. N = 16's
 # certificate is examples/certificates/multidof-feasible-symmetric-contact16.json, byte for byte.
 # Usage: symmetric_certificate.sh HAPSTAB
-set -u
-h=$1
-root=$(cd "$(dirname "$0")/../.." && pwd)
-d=$(mktemp -d)
-trap 'rm -rf "$d"' EXIT
-py() { /usr/bin/python3 "$root/checks/hapstab_check.py" "$@"; }
-kind() { /usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["kind"])' "$1"; }
-fail() { echo "symmetric_certificate: $*"; exit 1; }
+. "$(dirname "$0")/both_checkers.sh"  # sets h (the binary, $1), root, d (a temporary folder)
 /usr/bin/python3 "$root/bench/contact_scene.py" 128 --compact > "$d/s128.toml"
 cp "$root/tests/cli/scenes/contact_16_identical.toml" "$d/s16.toml"  # bench/contact_scene.py 16 --compact
 for n in 128 16; do
@@ -22,27 +15,14 @@ for n in 128 16; do
   "$h" multidof analyze --quiet --scene "$d/s$n.toml" --certificate "$d/c$n.json" > /dev/null
   test $? -eq 1 || fail "N = $n: multidof analyze did not exit 1"
   test "$(kind "$d/c$n.json")" = multidof-feasible-symmetric || fail "N = $n: kind $(kind "$d/c$n.json")"
-  "$h" check "$d/c$n.json" > /dev/null || fail "N = $n: hapstab check did not verify"
-  py "$d/c$n.json" > /dev/null || fail "N = $n: the independent checker did not verify"
+  both_verify "$d/c$n.json"
 done
-/usr/bin/python3 - "$d/c128.json" "$d" <<'PY'
-import copy, json, sys
-c = json.load(open(sys.argv[1]))
-e = copy.deepcopy(c)
-e["model"]["environment"]["E"][5][7] = "(" + e["model"]["environment"]["E"][5][7] + ") + 1/1000"
-json.dump(e, open(sys.argv[2] + "/e.json", "w"))
-p = copy.deepcopy(c)
-p["evidence"]["zero_sum"][0]["point"]["P"][0][0] = "-" + p["evidence"]["zero_sum"][0]["point"]["P"][0][0]
-json.dump(p, open(sys.argv[2] + "/p.json", "w"))
-PY
-for m in e p; do
-  "$h" check "$d/$m.json" > /dev/null; a=$?
-  py "$d/$m.json" > /dev/null; b=$?
-  test $a -eq 1 -a $b -eq 1 || fail "mutant $m: exits $a and $b, expected 1 and 1"
-done
+cmp "$d/c16.json" "$root/examples/certificates/multidof-feasible-symmetric-contact16.json" ||
+  fail "N = 16: not the example of docs/certificates.md"
+mutant "$d/c128.json" "$d/e.json" 'c["model"]["environment"]["E"][5][7] = "(" + c["model"]["environment"]["E"][5][7] + ") + 1/1000"'
+mutant "$d/c128.json" "$d/p.json" 'P = c["evidence"]["zero_sum"][0]["point"]["P"]; P[0][0] = str(-F(P[0][0]))'
+both_refute "$d/e.json" "$d/p.json"
 "$h" multidof analyze --quiet --no-symmetry --scene "$d/s16.toml" --certificate "$d/w16.json" > /dev/null
 test $? -eq 1 -a "$(kind "$d/w16.json")" = multidof-feasible || fail "N = 16 --no-symmetry: no whole certificate"
 "$h" check "$d/w16.json" > /dev/null || fail "N = 16 --no-symmetry: hapstab check did not verify"
-cmp "$d/c16.json" "$root/examples/certificates/multidof-feasible-symmetric-contact16.json" ||
-  fail "N = 16: not the example of docs/certificates.md"
 echo "symmetric_certificate: N = 128 and 16 verified by both checkers, 2 mutants refuted by both, N = 16's whole point verified"

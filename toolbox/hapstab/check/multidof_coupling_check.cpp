@@ -78,19 +78,11 @@ std::string vhat_lemma1_fails(const Mat& AV, const Mat& BV, const Mat& CV, const
 
 Verdict check_multidof_coupling(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators", "coupling"}, "model");
-  only_fields(p.claim, {"status", "theorem4"}, "claim");
-  only_fields(p.evidence, {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V", "P_V"}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("theorem4") || !p.claim.at("theorem4").is_boolean())
-    throw InputError("claim.theorem4: missing or not a boolean");
-  if (!p.claim.at("theorem4").get<bool>())
+  if (!exact_boolean_claim(p, "theorem4", {"T", "delay", "environment", "set", "devices", "operators", "coupling"},
+                           {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V", "P_V"}))
     return {false, "the claim is that V misses Theorem 4's conditions; a point proves only that it meets them"};
-  const PeriodDelay pd = read_period_delay(p.model);
-  const Environment env = read_environment(p.model, pd.T, pd.n);
-  const size_t m = env.E.size();
-  const std::vector<rational> delta = device_levels(p.model, m);
-  const std::vector<size_t> owner = operator_of(p.model, m);
+  const WholeModel w = read_whole_model(p);
+  const size_t m = w.env.E.size();
   // V as written in the model
   const nlohmann::json& V = object_field(p.model, "coupling", "model");
   only_fields(V, {"A", "B", "C", "D"}, "model.coupling");
@@ -104,10 +96,10 @@ Verdict check_multidof_coupling(const nlohmann::json& cert) {
   ev.erase("P_V");
   const FeasiblePoint pt = read_feasible_point(ev, "evidence", m);
   long points = 0;
-  if (const std::string why = feasible_point_fails(env, delta, owner, pt, true, points); !why.empty())
+  if (const std::string why = feasible_point_fails(w.env, w.delta, w.owner, pt, true, points); !why.empty())
     return {false, "(16) at the evidence's point: " + why};
   const Mat PV = exact_matrix(p.evidence, "P_V", "evidence", max_vhat_order);
-  if (const std::string why = vhat_lemma1_fails(AV, BV, CV, DV, delta, pd.T, pt.X, pt.QV, PV, "evidence.P_V"); !why.empty())
+  if (const std::string why = vhat_lemma1_fails(AV, BV, CV, DV, w.delta, w.pd.T, pt.X, pt.QV, PV, "evidence.P_V"); !why.empty())
     return {false, why};
   return {true, "V meets Theorem 4's conditions: (16) holds at the point ((A, B, C, D) realises the model's E-hat, " +
                     std::to_string(pt.A.size()) + " states, equal at " + std::to_string(points) +

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "hapstab/check/multidof_coupling_check.hpp"
+#include "hapstab/check/multidof_feasible_check.hpp"
 #include "hapstab/check/multidof_model.hpp"
 #include "hapstab/check/multidof_symmetric_check.hpp"
 #include "hapstab/check/rational_matrix.hpp"
@@ -38,21 +39,13 @@ Mat sized(const nlohmann::json& obj, const char* key, const std::string& where, 
 
 Verdict check_multidof_coupling_symmetric(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators", "coupling_blocks"}, "model");
-  only_fields(p.claim, {"status", "theorem4"}, "claim");
-  only_fields(p.evidence, {"classes", "g", "q_E", "q_V", "fixed", "zero_sum", "P_V"}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("theorem4") || !p.claim.at("theorem4").is_boolean())
-    throw InputError("claim.theorem4: missing or not a boolean");
-  if (!p.claim.at("theorem4").get<bool>())
+  if (!exact_boolean_claim(p, "theorem4", {"T", "delay", "environment", "set", "devices", "operators", "coupling_blocks"},
+                           {"classes", "g", "q_E", "q_V", "fixed", "zero_sum", "P_V"}))
     return {false, "the claim is that V misses Theorem 4's conditions; points prove only that it meets them"};
-  const PeriodDelay pd = read_period_delay(p.model);
-  const Environment env = read_environment(p.model, pd.T, pd.n);
-  const size_t m = env.E.size();
-  const std::vector<rational> delta = device_levels(p.model, m);
-  operator_of(p.model, m);  // every DOF in one operator
-  const auto classes = split_classes(p.evidence, m);
-  const size_t r = classes.size();
+  const SplitModel sm = read_split_model(p);
+  const auto& classes = sm.classes;
+  const auto& delta = sm.delta;
+  const size_t m = sm.env.E.size(), r = classes.size();
   const SplitMultipliers w{per_class(p.evidence, "g", r), per_class(p.evidence, "q_E", r), per_class(p.evidence, "q_V", r)};
   for (size_t c = 0; c < r; ++c) {
     if (w.g[c] < 1) return {false, "g of class " + std::to_string(c) + " is " + decimal(w.g[c]) + " < 1 ((9))"};
@@ -61,7 +54,7 @@ Verdict check_multidof_coupling_symmetric(const nlohmann::json& cert) {
   // the environment side: (16) of the whole at X = diag(g), Q_E = diag(q_E), Q_V = diag(q_V), by the split
   std::string said;
   size_t blocks = 0;
-  if (const std::string why = split_16_fails(p, env, delta, classes, &w, said, blocks); !why.empty())
+  if (const std::string why = split_16_fails(p, sm.env, delta, classes, &w, said, blocks); !why.empty())
     return {false, "(16) by the split: " + why};
   // the coupling side: Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class
   std::vector<size_t> cls(m);
@@ -86,7 +79,7 @@ Verdict check_multidof_coupling_symmetric(const nlohmann::json& cert) {
     const std::string pw = "evidence.P_V[" + std::to_string(i) + "]";
     const Mat PV = exact_matrix(holder, "P_V", "evidence.P_V[" + std::to_string(i) + "]", 160);
     const Mat X = {{w.g[cls[i]]}}, QV = {{w.qv[cls[i]]}};
-    if (const std::string why = vhat_lemma1_fails(A, B, C, D, {delta[i]}, pd.T, X, QV, PV, pw); !why.empty())
+    if (const std::string why = vhat_lemma1_fails(A, B, C, D, {delta[i]}, sm.pd.T, X, QV, PV, pw); !why.empty())
       return {false, "DOF " + std::to_string(i) + "'s block of V: " + why};
     states += n;
   }

@@ -141,25 +141,36 @@ std::string feasible_point_fails(const Environment& env, const std::vector<ratio
   return "";
 }
 
+WholeModel read_whole_model(const Parts& p) {
+  WholeModel w;
+  w.pd = read_period_delay(p.model);
+  w.env = read_environment(p.model, w.pd.T, w.pd.n);
+  w.delta = device_levels(p.model, w.env.E.size());
+  w.owner = operator_of(p.model, w.env.E.size());
+  return w;
+}
+
+bool exact_boolean_claim(const Parts& p, const std::string& key, std::initializer_list<const char*> model_fields,
+                         std::initializer_list<const char*> evidence_fields) {
+  only_fields(p.model, model_fields, "model");
+  only_fields(p.claim, {"status", key.c_str()}, "claim");
+  only_fields(p.evidence, evidence_fields, "evidence");
+  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
+  if (!p.claim.contains(key) || !p.claim.at(key).is_boolean()) throw InputError("claim." + key + ": missing or not a boolean");
+  return p.claim.at(key).get<bool>();
+}
+
 }  // namespace detail
 
 Verdict check_multidof_feasible(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
-  only_fields(p.claim, {"status", "feasible"}, "claim");
-  only_fields(p.evidence, {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V"}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
-    throw InputError("claim.feasible: missing or not a boolean");
-  if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; a point proves only feasibility"};
-  const PeriodDelay pd = read_period_delay(p.model);
-  const Environment env = read_environment(p.model, pd.T, pd.n);
-  const size_t m = env.E.size();
-  const std::vector<rational> delta = device_levels(p.model, m);
-  const std::vector<size_t> owner = operator_of(p.model, m);
-  const FeasiblePoint pt = read_feasible_point(p.evidence, "evidence", m);
+  if (!exact_boolean_claim(p, "feasible", {"T", "delay", "environment", "set", "devices", "operators"},
+                           {"A", "B", "C", "D", "P", "X", "Q_E", "Q_V"}))
+    return {false, "the claim is that (16) is infeasible; a point proves only feasibility"};
+  const WholeModel w = read_whole_model(p);
+  const FeasiblePoint pt = read_feasible_point(p.evidence, "evidence", w.env.E.size());
   long points = 0;
-  if (const std::string why = feasible_point_fails(env, delta, owner, pt, true, points); !why.empty()) return {false, why};
+  if (const std::string why = feasible_point_fails(w.env, w.delta, w.owner, pt, true, points); !why.empty()) return {false, why};
   return {true, "(16) feasible: (A, B, C, D) realises the model's E-hat (" + std::to_string(pt.A.size()) +
                     " states; equal at " + std::to_string(points) +
                     " points, more than the degree of their difference), P > 0, M1 <= 0, (14) > 0, "

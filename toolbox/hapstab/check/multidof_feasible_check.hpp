@@ -25,6 +25,7 @@
 // Implements: paper 000 (9), (11), (14), (16), Theorem 5.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,21 @@ namespace hapstab::check {
 Verdict check_multidof_feasible(const nlohmann::json& certificate);
 
 namespace detail {
+
+/// The claim {status: "exact", KEY: a boolean} of a multi-DOF certificate, its model and evidence
+/// holding only the fields named (InputError naming the field otherwise): the boolean.
+bool exact_boolean_claim(const Parts& p, const std::string& key, std::initializer_list<const char*> model_fields,
+                         std::initializer_list<const char*> evidence_fields);
+
+/// The model of the multi-DOF kinds (check/multidof_model.hpp): T and the delay, E's entries as
+/// written, the levels Delta_D and each DOF's operator (InputError naming the field).
+struct WholeModel {
+  PeriodDelay pd;
+  multidof_model::Environment env;
+  std::vector<rational> delta;
+  std::vector<size_t> owner;
+};
+WholeModel read_whole_model(const Parts& p);
 
 /// The evidence of one point: the realisation (A, B, C, D) and (P, X, Q_E, Q_V), exact.
 struct FeasiblePoint {

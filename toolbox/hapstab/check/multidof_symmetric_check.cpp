@@ -2,6 +2,7 @@
 #include "hapstab/check/multidof_symmetric_check.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hapstab/check/multidof_feasible_check.hpp"
@@ -86,7 +87,11 @@ std::string block_fails(const Environment& block, const std::vector<rational>& d
 
 namespace detail {
 
-std::vector<std::vector<size_t>> split_classes(const nlohmann::json& evidence, size_t m) { return read_classes(evidence, m); }
+SplitModel read_split_model(const Parts& p) {
+  WholeModel w = read_whole_model(p);  // every DOF in one operator
+  const size_t m = w.env.E.size();
+  return {w.pd, std::move(w.env), std::move(w.delta), read_classes(p.evidence, m)};
+}
 
 std::string split_16_fails(const Parts& p, const Environment& env, const std::vector<rational>& delta,
                            const std::vector<std::vector<size_t>>& classes, const SplitMultipliers* invariant,
@@ -167,22 +172,14 @@ std::string split_16_fails(const Parts& p, const Environment& env, const std::ve
 
 Verdict check_multidof_feasible_symmetric(const nlohmann::json& cert) {
   const Parts p = certificate_parts(cert);
-  only_fields(p.model, {"T", "delay", "environment", "set", "devices", "operators"}, "model");
-  only_fields(p.claim, {"status", "feasible"}, "claim");
-  only_fields(p.evidence, {"classes", "fixed", "zero_sum"}, "evidence");
-  if (!p.claim.contains("status") || p.claim.at("status") != "exact") throw InputError("claim.status: must be \"exact\"");
-  if (!p.claim.contains("feasible") || !p.claim.at("feasible").is_boolean())
-    throw InputError("claim.feasible: missing or not a boolean");
-  if (!p.claim.at("feasible").get<bool>()) return {false, "the claim is that (16) is infeasible; points prove only feasibility"};
-  const PeriodDelay pd = read_period_delay(p.model);
-  const Environment env = read_environment(p.model, pd.T, pd.n);
-  const size_t m = env.E.size();
-  const std::vector<rational> delta = device_levels(p.model, m);
-  operator_of(p.model, m);  // every DOF in one operator
-  const auto classes = read_classes(p.evidence, m);
+  if (!exact_boolean_claim(p, "feasible", {"T", "delay", "environment", "set", "devices", "operators"}, {"classes", "fixed", "zero_sum"}))
+    return {false, "the claim is that (16) is infeasible; points prove only feasibility"};
+  const SplitModel sm = read_split_model(p);
+  const auto& classes = sm.classes;
+  const size_t m = sm.env.E.size();
   std::string said;
   size_t blocks = 0;
-  if (const std::string why = split_16_fails(p, env, delta, classes, nullptr, said, blocks); !why.empty()) return {false, why};
+  if (const std::string why = split_16_fails(p, sm.env, sm.delta, classes, nullptr, said, blocks); !why.empty()) return {false, why};
   return {true, "(16) feasible by the symmetry of " + std::to_string(classes.size()) + " classes of alike DOFs (E invariant under the "
                 "permutations within them: " + std::to_string(m * m) + " entries compared exactly; the levels equal and the "
                 "operators one-DOF): " + said + "; each block's realisation is its E-hat and its point holds (16) with g > 0, "

@@ -50,8 +50,15 @@ Verdict check_multidof_feasible_symmetric(const nlohmann::json& certificate);
 
 namespace detail {
 
-/// evidence.classes: a partition of the m DOFs (InputError naming the field otherwise).
-std::vector<std::vector<size_t>> split_classes(const nlohmann::json& evidence, size_t m);
+/// What both split kinds read first: T and the delay, E's entries as written, the levels (every DOF
+/// in one operator) and evidence.classes, a partition of the m DOFs (InputError naming the field).
+struct SplitModel {
+  PeriodDelay pd;
+  multidof_model::Environment env;
+  std::vector<rational> delta;
+  std::vector<std::vector<size_t>> classes;
+};
+SplitModel read_split_model(const Parts& p);
 /// The whole's invariant diagonal multipliers, one value per class: X = diag(g), Q_E, Q_V.
 struct SplitMultipliers {
   std::vector<rational> g, qe, qv;
