@@ -223,6 +223,26 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
 
 namespace {
 
+// V-hat's storage for V = blockdiag(V_b) from the blocks' (each in its own V-hat's order: V_b's states,
+// then its m_b delay states), placed in vhat(V, K)'s order (V's states, then the m delay states):
+// Lemma 1's matrix at it is the blocks' after a permutation (claim 000.thm6.blockwise_lemma1).
+MatQ blockwise_storage(const StateSpace<rational>& V, const multidof::CouplingStructure& cs, const std::vector<MatQ>& blocks) {
+  const Eigen::Index n = V.states(), m = V.inputs();
+  MatQ P = MatQ::Zero(n + m, n + m);
+  Eigen::Index s = 0, c = 0;
+  for (size_t b = 0; b < cs.mbar.size(); ++b) {
+    const Eigen::Index nb = cs.nbar[b], mb = cs.mbar[b];
+    std::vector<Eigen::Index> at;  // block index -> whole index
+    for (Eigen::Index k = 0; k < nb; ++k) at.push_back(s + k);
+    for (Eigen::Index k = 0; k < mb; ++k) at.push_back(n + c + k);
+    for (size_t i = 0; i < at.size(); ++i)
+      for (size_t j = 0; j < at.size(); ++j)
+        P(at[i], at[j]) = blocks[b](static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+    s += nb, c += mb;
+  }
+  return P;
+}
+
 // A design on the split of identical DOFs (design_symmetry.cpp), block by block: the split's points
 // at the whole's invariant diagonal (X, Q_E, Q_V), V per DOF and each block's V-hat storage; nullopt
 // where the lifted whole is small enough for Theorem 4's program on the whole (kWholePointOrder).
@@ -286,19 +306,29 @@ nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneD
                      std::string(d.design.verdict.holds() ? "numeric" : "no V") + "): no certificate");
   if (auto j = symmetric_design_certificate(sc, d)) return *j;
   const multidof::Problem& pb = d.scene.problem;
-  // Theorem 4's program on the whole (P_E, P_V, X, Q_E, Q_V free) for the designed V: its exact point
-  // is the evidence, whatever path designed V
-  multidof::CouplingCheck c;
-  try {
-    c = multidof::check_theorem4(pb, d.design.V, opt);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: ") + e.what() + ": no certificate");
+  // the block-wise design's own evidence where it was designed on the whole (its point, V-hat's
+  // storage block by block); otherwise Theorem 4's program on the whole (P_E, P_V, X, Q_E, Q_V free)
+  // for the designed V
+  multidof::ExactPoint point;
+  MatQ PV;
+  if (const auto& bw = d.design.blockwise; bw && bw->whole) {
+    point = *bw->whole;
+    PV = blockwise_storage(d.design.V, pb.coupling, bw->P_V);
+  } else {
+    multidof::CouplingCheck c;
+    try {
+      c = multidof::check_theorem4(pb, d.design.V, opt);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--certificate: ") + e.what() + ": no certificate");
+    }
+    if (!c.verdict.holds() || !c.verdict.proven() || !c.point)
+      throw InputError("--certificate: Theorem 4's program on the whole did not certify the designed V with an exact point (" +
+                       c.verdict.evidence.substr(0, 300) + "): no certificate");
+    point = *c.point;
+    PV = c.P_V;
   }
-  if (!c.verdict.holds() || !c.verdict.proven() || !c.point)
-    throw InputError("--certificate: Theorem 4's program on the whole did not certify the designed V with an exact point (" +
-                     c.verdict.evidence.substr(0, 300) + "): no certificate");
-  const multidof::ExactStorage st = multidof::exact_storage(pb, *c.point);
-  const long env_order = st.Ehat.A.rows() + st.Ehat.B.cols(), v_order = c.P_V.rows() + d.design.V.inputs();
+  const multidof::ExactStorage st = multidof::exact_storage(pb, point);
+  const long env_order = st.Ehat.A.rows() + st.Ehat.B.cols(), v_order = PV.rows() + d.design.V.inputs();
   if (env_order > 160 || v_order > 160)
     throw InputError("--certificate: E-hat's realisation (order " + std::to_string(env_order) + ") or V-hat's (order " +
                      std::to_string(v_order) + ") is beyond the checkers' size limit (order 160): no certificate");
@@ -308,8 +338,8 @@ nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneD
   nlohmann::json j = certificate_header("multidof-coupling");
   j["model"] = model;
   j["claim"] = {{"status", "exact"}, {"theorem4", true}};
-  j["evidence"] = point_json({st, c.point->X, c.point->QE, c.point->QV});
-  j["evidence"]["P_V"] = matrix_json(c.P_V);
+  j["evidence"] = point_json({st, point.X, point.QE, point.QV});
+  j["evidence"]["P_V"] = matrix_json(PV);
   verify_before_writing(j);
   return j;
 }

@@ -564,7 +564,9 @@ std::optional<DesignResult> detail::design_blockwise_at(const Problem& pb, const
   std::vector<MatQ> storages;
   std::optional<std::vector<Verification>> checks = verify_blockwise(pb, res.V, blocks, rep, K, *mp, opt.lmi, storages);
   const bool blockwise_certificate = checks.has_value();
-  if (checks) res.blockwise = DesignResult::BlockwiseEvidence{mp->env.X, mp->env.QE, mp->QV, std::move(storages), {}, {}, {}};
+  if (checks)
+    res.blockwise = DesignResult::BlockwiseEvidence{
+        mp->env.X, mp->env.QE, mp->QV, ExactPoint{mp->env.P11, mp->env.X, mp->env.QE, mp->QV}, std::move(storages), {}, {}, {}};
   res.verification = checks ? std::move(*checks) : verify_coupling(pb, res.V, mp->env.X, mp->QV, opt.lmi);
   std::ostringstream o;
   o << "block-wise design: Q_V from the structured path (along Q_E = " << qe_text(*mp) << " at the least a floating-point "

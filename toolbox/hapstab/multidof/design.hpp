@@ -82,12 +82,14 @@ struct DesignResult {
   std::vector<PlanStep> plan;  ///< every path's fate, in the planner's order
   /// The exact evidence of a block-wise design's Theorem 4 certificate (design_blockwise_at), what
   /// `multidof design --certificate` writes for a design on the split (cli/multidof_certificate.hpp):
-  /// the point's X, Q_E, Q_V (diagonal); V-hat's storage per block of V, in V's order (a copy shares
+  /// the point's X, Q_E, Q_V (diagonal) and, designed on the whole, the point itself; V-hat's storage
+  /// per block of V, in V's order (a copy shares
   /// its representative's); for the split of identical DOFs (design_symmetry.cpp) its classes and
   /// each block's exact point, the fixed space first (the direct sum of its components' where it
   /// went by them).
   struct BlockwiseEvidence {
     MatQ X, QE, QV;
+    std::optional<ExactPoint> whole;  ///< the structured path's exact point of the whole's (16); none on the split
     std::vector<MatQ> P_V;
     std::vector<std::vector<int>> classes;
     std::vector<StoredPoint> split_points;

@@ -239,7 +239,10 @@ std::optional<DesignResult> design_at_shared_point(const SceneProblem& sp, const
   std::string why_blockwise;
   std::optional<DesignResult> res = detail::design_blockwise_at(sp.problem, whole, opt, why_blockwise);
   if (!res) return why_not = why_blockwise, std::nullopt;
-  if (res->blockwise) keep_split_evidence(*res->blockwise, split, *part_pts, of, fixed_components);
+  if (res->blockwise) {  // the whole's point is the split's blocks', not a storage of the whole
+    res->blockwise->whole.reset();
+    keep_split_evidence(*res->blockwise, split, *part_pts, of, fixed_components);
+  }
   res->facial = fc[0];
   res->facial.explanation = "facial reduction per block (" + split.blocks[0].name + ": " + fc[0].explanation + ")";
   res->path = "symmetry of identical DOFs (block-wise)";
