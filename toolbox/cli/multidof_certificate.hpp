@@ -1,12 +1,15 @@
 // cli/multidof_certificate.hpp -- `multidof analyze --scene S --certificate FILE` (issue 47): the
 // certificate of Theorem 5's program (16) proven feasible -- the exact point (P, X, Q_E, Q_V) on the
-// realisation of E-hat it was checked on (check/multidof_feasible_check.hpp, kind multidof-feasible)
-// -- or infeasible by a frequency-domain witness, at one frequency or at several with weights
-// (check/multidof_witness_check.hpp, kind multidof-witness).
+// realisation of E-hat it was checked on (check/multidof_feasible_check.hpp, kind multidof-feasible),
+// or, for a scene of identical DOFs whose lifted point is above order 40, the split's block points
+// (check/multidof_symmetric_check.hpp, kind multidof-feasible-symmetric) -- or infeasible by a
+// frequency-domain witness, at one frequency or at several with weights
+// (check/multidof_witness_check.hpp, kind multidof-witness), or by the facial conditions.
+// `multidof design --certificate`: the designed coupling against Theorem 4 (kind multidof-coupling;
+// designed on the split beyond order 40, multidof-coupling-symmetric).
 // The model is the scene's as written: the environment's expressions (`tf`), domain, method and
 // gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
-// `osp`) and the operators' DOFs.
-// `multidof design --certificate`: the designed coupling against Theorem 4 (kind multidof-coupling).
+// `osp`) and the operators' DOFs (and the designed V).
 // Other verdicts have no multi-DOF kind yet (the loop as written, hidden modes, Assumption 1):
 // asking for one is refused by name (exit 2).
 #pragma once
@@ -34,9 +37,11 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
 /// `multidof design --certificate FILE` (kind multidof-coupling, check/multidof_coupling_check.hpp):
 /// the designed V meets Theorem 4 through Theorem 5 -- (16) at an exact point (P_E, X, Q_E, Q_V) on
 /// E-hat's realisation, and Lemma 1 for V-hat (17) at that X and Q_V with an exact storage P_V. The
-/// evidence comes from Theorem 4's program on the whole for that V (check_theorem4), whatever path
-/// designed V. InputError (exit 2, no file) when no V was verified exactly, when that program does
-/// not certify V (its size limit, or no exact point), or beyond the checkers' order 160.
+/// evidence is the block-wise design's own (its point, the blocks' storages) where V was designed on
+/// the whole block by block; on the split beyond order 40, the split's block points and one storage
+/// per DOF (kind multidof-coupling-symmetric); otherwise Theorem 4's program on the whole for that V
+/// (check_theorem4). InputError (exit 2, no file) when no V was verified exactly, when that program
+/// does not certify V (its size limit, or no exact point), or beyond the checkers' order 160.
 nlohmann::json design_certificate(const scene::Scene& sc, const multidof::SceneDesign& d, const lmi::Options& opt);
 
 }  // namespace hapstab::cli
