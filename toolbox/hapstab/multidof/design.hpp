@@ -81,12 +81,11 @@ struct DesignResult {
   std::string path;            ///< the path that decided (planner.hpp), "" when none did
   std::vector<PlanStep> plan;  ///< every path's fate, in the planner's order
   /// The exact evidence of a block-wise design's Theorem 4 certificate (design_blockwise_at), what
-  /// `multidof design --certificate` writes for a design on the split (cli/multidof_certificate.hpp):
-  /// the point's X, Q_E, Q_V (diagonal) and, designed on the whole, the point itself; V-hat's storage
-  /// per block of V, in V's order (a copy shares
-  /// its representative's); for the split of identical DOFs (design_symmetry.cpp) its classes and
-  /// each block's exact point, the fixed space first (the direct sum of its components' where it
-  /// went by them).
+  /// `multidof design --certificate` writes (cli/multidof_certificate.hpp): the point's X, Q_E, Q_V
+  /// (diagonal) and, designed on the whole, the point itself; V-hat's storage per block of V, in V's
+  /// order (a copy shares its representative's); designed on the split of identical DOFs
+  /// (design_symmetry.cpp), its classes and each block's exact point, the fixed space first (the
+  /// direct sum of its components' where it went by them).
   struct BlockwiseEvidence {
     MatQ X, QE, QV;
     std::optional<ExactPoint> whole;  ///< the structured path's exact point of the whole's (16); none on the split
