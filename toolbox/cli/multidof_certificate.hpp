@@ -6,7 +6,7 @@
 // frequency-domain witness, at one frequency or at several with weights
 // (check/multidof_witness_check.hpp, kind multidof-witness), or by the facial conditions.
 // `multidof design --certificate`: the designed coupling against Theorem 4 (kind multidof-coupling;
-// designed on the split beyond order 40, multidof-coupling-symmetric).
+// designed on the split, multidof-coupling-symmetric).
 // The model is the scene's as written: the environment's expressions (`tf`), domain, method and
 // gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
 // `osp`) and the operators' DOFs (and the designed V).
@@ -38,7 +38,7 @@ nlohmann::json multidof_certificate(const scene::Scene& sc, const multidof::Scen
 /// the designed V meets Theorem 4 through Theorem 5 -- (16) at an exact point (P_E, X, Q_E, Q_V) on
 /// E-hat's realisation, and Lemma 1 for V-hat (17) at that X and Q_V with an exact storage P_V. The
 /// evidence is the block-wise design's own (its point, the blocks' storages) where V was designed on
-/// the whole block by block; on the split beyond order 40, the split's block points and one storage
+/// the whole block by block; on the split, the split's block points and one storage
 /// per DOF (kind multidof-coupling-symmetric); otherwise Theorem 4's program on the whole for that V
 /// (check_theorem4). InputError (exit 2, no file) when no V was verified exactly, when that program
 /// does not certify V (its size limit, or no exact point), or beyond the checkers' order 160.
