@@ -136,12 +136,15 @@ def run_hapstab_scene(exe, text, prefix, extra_args, timeout):
     return run_hapstab(exe, args, timeout) + (args, f.name)
 
 
-def keep_scene_if_missed(out, path):
-    """A missed case keeps its scene file (named in its `why`) to be run again; others remove it."""
+def keep_scene_if_missed(out, path, *certificates):
+    """A missed case keeps its scene file (named in its `why`) and its certificates to be run again;
+    others remove them."""
     if out["outcome"] in ("MISS", "REFERENCE MISSED"):
         out["why"] = out.get("why", "") + f" (scene kept: {path})"
     else:
-        os.unlink(path)
+        for f in (path,) + certificates:
+            if os.path.exists(f):
+                os.unlink(f)
 
 
 def shell_line(exe, args):

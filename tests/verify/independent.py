@@ -939,9 +939,7 @@ def check_symmetry16(c, exe, timeout):
                                            f"the independent checker exit {py.returncode} ({py.stdout.strip()[:200]})")
         else:
             out["outcome"] = "agree"
-    if os.path.exists(cert) and out["outcome"] != "MISS":
-        os.unlink(cert)
-    keep_scene_if_missed(out, f.name)
+    keep_scene_if_missed(out, f.name, cert)
     return out
 
 
@@ -1088,8 +1086,6 @@ def check_design16(c, exe, timeout):
         else:
             tags["independent checker"] = {0: "verified", 3: "beyond its size limit"}.get(py.returncode, "refuted")
             out["outcome"] = "agree"
-        if os.path.exists(cert) and out["outcome"] != "MISS":
-            os.unlink(cert)
     elif not (j.get("stability_concluded") and j.get("certified")):
         out.update(outcome="MISS", why=f"the split decided without a certified, verified V: {j.get('verdict')}")
     elif jw is not None and jw.get("convex_certified"):
@@ -1124,9 +1120,7 @@ def check_design16(c, exe, timeout):
                                            f"(hapstab check {ck and ck.stdout.strip()[:150]}; {errc[-200:]})")
         else:
             out["outcome"] = "agree"
-        if os.path.exists(cert) and out["outcome"] != "MISS":
-            os.unlink(cert)
-    keep_scene_if_missed(out, f.name)
+    keep_scene_if_missed(out, f.name, f.name[:-5] + ".json", f.name[:-5] + ".coupling.json")
     return out
 
 
