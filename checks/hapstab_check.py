@@ -2768,18 +2768,21 @@ def feasible_point(E, g, T, n, delta, owner, ev, where, g_at_least_one):
     return True, agreed
 
 
-def feasible_claim(c, evidence_keys):
-    """(model, evidence) of a certificate claiming (16) feasible (its fields known), or None when it
-    claims (16) infeasible (which a point cannot prove)."""
+MULTIDOF_MODEL = ("T", "delay", "environment", "set", "devices", "operators")
+
+
+def feasible_claim(c, evidence_keys, key="feasible", model_keys=MULTIDOF_MODEL):
+    """(model, evidence) of a multi-DOF certificate whose claim is {status "exact", KEY: true} (its fields
+    known), or None when KEY is false (which a point cannot prove: (16) infeasible, V missing Theorem 4)."""
     model, claim, ev = parts(c)
-    only(model, ("T", "delay", "environment", "set", "devices", "operators"), "model")
-    only(claim, ("status", "feasible"), "claim")
+    only(model, model_keys, "model")
+    only(claim, ("status", key), "claim")
     only(ev, evidence_keys, "evidence")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: must be \"exact\"")
-    if not isinstance(claim.get("feasible"), bool):
-        raise Malformed("claim.feasible: missing or not true/false")
-    return (model, ev) if claim["feasible"] else None
+    if not isinstance(claim.get(key), bool):
+        raise Malformed("claim.%s: missing or not true/false" % key)
+    return (model, ev) if claim[key] else None
 
 
 def check_multidof_feasible(c):
@@ -2833,16 +2836,10 @@ def check_multidof_coupling(c):
     """Paper 000's Theorem 4 for the model's coupling V, through Theorem 5: (16) at the evidence's point
     (feasible_point), and Lemma 1 for V-hat (17) (Gamma = I, K = (T/2) Delta_D^-1 (12)) at its X and Q_V:
     P_V > 0 and F = [[A'PA - P + C'QC, A'PB - C'X/2 + C'QD], [., B'PB - (XD + D'X)/2 + D'QD]] <= 0."""
-    model, claim, ev = parts(c)
-    only(model, ("T", "delay", "environment", "set", "devices", "operators", "coupling"), "model")
-    only(claim, ("status", "theorem4"), "claim")
-    only(ev, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V", "P_V"), "evidence")
-    if claim.get("status") != "exact":
-        raise Malformed("claim.status: must be \"exact\"")
-    if not isinstance(claim.get("theorem4"), bool):
-        raise Malformed("claim.theorem4: missing or not true/false")
-    if not claim["theorem4"]:
+    got = feasible_claim(c, ("A", "B", "C", "D", "P", "X", "Q_E", "Q_V", "P_V"), "theorem4", MULTIDOF_MODEL + ("coupling",))
+    if got is None:
         return False, "the claim is that V misses Theorem 4's conditions; a point proves only that it meets them"
+    model, ev = got
     V = model.get("coupling")
     if not isinstance(V, dict):
         raise Malformed("model.coupling: missing or not an object")
@@ -2964,16 +2961,11 @@ def check_multidof_feasible_symmetric(c):
 def check_multidof_coupling_symmetric(c):
     """Paper 000's Theorem 4 for a decentralised V on the split of alike DOFs: (16) by split_16 at the whole's
     invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class."""
-    model, claim, ev = parts(c)
-    only(model, ("T", "delay", "environment", "set", "devices", "operators", "coupling_blocks"), "model")
-    only(claim, ("status", "theorem4"), "claim")
-    only(ev, ("classes", "g", "q_E", "q_V", "fixed", "zero_sum", "P_V"), "evidence")
-    if claim.get("status") != "exact":
-        raise Malformed("claim.status: must be \"exact\"")
-    if not isinstance(claim.get("theorem4"), bool):
-        raise Malformed("claim.theorem4: missing or not true/false")
-    if not claim["theorem4"]:
+    got = feasible_claim(c, ("classes", "g", "q_E", "q_V", "fixed", "zero_sum", "P_V"), "theorem4",
+                         MULTIDOF_MODEL + ("coupling_blocks",))
+    if got is None:
         return False, "the claim is that V misses Theorem 4's conditions; points prove only that it meets them"
+    model, ev = got
     inv = []
     for key in ("g", "q_E", "q_V"):
         v = ev.get(key)
