@@ -45,6 +45,13 @@ stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force =
        polynomial c = z^n L (z-1)^k + A Nd (H = A/L); evidence.charpoly must be a multiple of it;
        the verdict by the Schur-Cohn recursion in exact fractions (schur_cohn).
 
+       model.scene (stability --scene, a one-DOF scene's TOML text, with model.set its --set values): the
+       loop read from the scene here (scene_loop_model, tomllib): [[device]] m, b -> P = 1/(m s^2 + b s),
+       tf G -> G/s; [[operator]] m, b, k -> Z_op = m s + b + k/s, tf Z with mass [mo] -> Z + mo s;
+       [environment] tf in z, or in s with backward_euler s = (z-1)/(T z) or tustin 2(z-1)/(T(z+1)),
+       times gain -> H; [delay] time/T or samples, a whole number; each parameter replaced by its
+       definition in parentheses. Anything else (two DOF, count, ss, [coupling], [contact], ...): exit 2.
+
 stability-max  K_max = sup{K0 > 0 : the loop above stable for every K in (0, K0)}, H = H0 + K H1
        (prove_affine): the family c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1
        (L = lcm(L0, L1), deg c1 < deg c0 = d). D(K) = Res_{d,d}(c, c*), c* = z^d c(1/z), vanishes
@@ -1843,8 +1850,226 @@ def check_stability_winding(model, claim, T, n, params, k, Nd):
     return True, "%s (degree %d, delay %d never expanded; %s)" % ("stable" if ok else "NOT stable", degree, n, why)
 
 
+SCENE_LOOP = ("scene", "parameters", "device", "operator", "environment", "delay")
+SCENE_IGNORED = ("input", "initial", "simulate", "reproduce", "multidof")  # not in the loop's stability
+
+
+def scene_beyond(where, what):
+    raise Malformed("model.scene: %s: %s (beyond this checker: a one-DOF scene of a device, at most one operator, "
+                    "an environment and a whole-sample delay)" % (where, what))
+
+
+def scene_text(v, where):
+    """An exact number as TOML writes it: a string (a number or an expression) or an integer."""
+    if isinstance(v, bool) or not isinstance(v, (str, int)):
+        raise Malformed("model.scene: %s: expected a string or an integer" % where)
+    return v if isinstance(v, str) else str(v)
+
+
+def scene_constant(text, T, where):
+    """The value of a constant expression (T known when T is not None)."""
+    if T is None and any(k == 'name' and t == 'T' for k, t in lex(text)):
+        raise Malformed("model.scene: %s: names T" % where)
+    try:
+        h = parse_h(text, T, {}, 's', 'model.scene: ' + where)
+    except ZeroDivisionError:
+        raise Malformed("model.scene: %s: division by zero" % where)
+    if len(h.num) > 1 or len(h.den) > 1:
+        raise Malformed("model.scene: %s: not a number" % where)
+    return h.num[0] / h.den[0] if h.num else Fraction(0)
+
+
+def scene_expand(text, defs, free, where, memo, chain):
+    """text with every parameter (but free) replaced by "(its definition)", recursively; the tokens
+    are lex's (numbers with an exponent, names, single characters)."""
+    out = []
+    for kind, tok in lex(text)[:-1]:
+        if kind == 'name' and tok in defs and tok != free:
+            if tok not in memo:
+                if tok in chain:
+                    raise Malformed("model.scene: parameters.%s: depends on itself (a cycle)" % tok)
+                e = scene_expand(defs[tok], defs, free, "parameters." + tok, memo, chain | {tok})
+                if any(k == 'name' and t in ('s', 'z') for k, t in lex(e)):
+                    raise Malformed("model.scene: parameters.%s: names s or z (a parameter is a number)" % tok)
+                memo[tok] = e
+            out.append("(" + memo[tok] + ")")
+        else:
+            out.append(tok)
+        if sum(len(x) for x in out) > 1 << 20:
+            scene_beyond(where, "its parameters expand to more than 1 MB")
+    return " ".join(out)
+
+
+def scene_one(root, key, required):
+    if key not in root:
+        if required:
+            raise Malformed("model.scene: [[%s]]: missing" % key)
+        return None
+    tables = root[key]
+    if not isinstance(tables, list):
+        raise Malformed("model.scene: %s: expected an array of tables [[%s]]" % (key, key))
+    if len(tables) != 1:
+        scene_beyond("[[%s]]" % key, "%d tables (one DOF: one device, one operator)" % len(tables))
+    if not isinstance(tables[0], dict):
+        raise Malformed("model.scene: [[%s]]: not a table" % key)
+    return tables[0]
+
+
+def scene_keys(t, known, where):
+    for k in t:
+        if k not in known:
+            scene_beyond("%s.%s" % (where, k), "a key this checker does not model")
+
+
+def scene_siso(v, where):
+    """One transfer function: a string or a 1 x 1 matrix of strings."""
+    if isinstance(v, list) and len(v) == 1 and isinstance(v[0], list) and len(v[0]) == 1:
+        v = v[0][0]
+    if not isinstance(v, str):
+        scene_beyond(where, "not one transfer function (a matrix: more than one DOF)")
+    return v
+
+
+def scene_loop_model(model, free=False):
+    """model itself without model.scene; else {plant, H[, operator], set: {}, T, delay[, name]}: the
+    one-DOF loop of the scene (the stability kind's docstring above), read here from its TOML."""
+    if not isinstance(model, dict) or "scene" not in model:
+        return model
+    only(model, ("scene", "set", "name") if free else ("scene", "set"), "model")
+    import tomllib
+    if not isinstance(model["scene"], str):
+        raise Malformed("model.scene: not a string (the scene's TOML text)")
+    if len(model["scene"]) > 1 << 20:
+        scene_beyond("the scene", "more than 1 MB")
+    try:
+        root = tomllib.loads(model["scene"])
+    except (tomllib.TOMLDecodeError, RecursionError) as e:
+        raise Malformed("model.scene: not TOML: %s" % e)
+    for key in root:
+        if key not in SCENE_LOOP and key not in SCENE_IGNORED:
+            scene_beyond("[%s]" % key, "a section this checker does not model")
+    head = root.get("scene")
+    if not isinstance(head, dict) or "T" not in head:
+        raise Malformed("model.scene: [scene].T: missing (the sample period)")
+    scene_keys(head, ("name", "description", "T"), "scene")
+    T = scene_constant(scene_text(head["T"], "scene.T"), None, "scene.T")
+    if T <= 0:
+        raise Malformed("model.scene: scene.T: must be > 0")
+    defs = {}
+    params = root.get("parameters", {})
+    if not isinstance(params, dict):
+        raise Malformed("model.scene: [parameters]: not a table")
+    for name, v in params.items():
+        if name in ("T", "s", "z"):
+            scene_beyond("parameters." + name, "a parameter named T, s or z")
+        if isinstance(v, (list, dict)):
+            scene_beyond("parameters." + name, "a list parameter (repeated blocks)")
+        defs[name] = scene_text(v, "parameters." + name)
+    K = model.get("name") if free and isinstance(model.get("name"), str) else None
+    for name, v in parameters(model).items():
+        if name not in defs:
+            raise Malformed("model.set.%s: not a parameter of the scene" % name)
+        if name == K:
+            raise Malformed("model.set: gives the parameter model.name = %s a value" % K)
+        defs[name] = str(v)
+    memo = {}
+
+    def expand(text, where):
+        return scene_expand(text, defs, K, where, memo, frozenset())
+
+    def field(t, key, where, default):
+        return expand(scene_text(t[key], where + "." + key), where + "." + key) if key in t else default
+
+    for name in defs:  # every one, used or not: a cycle is malformed, as for hapstab's loader
+        if name != K:
+            expand(name, "parameters." + name)
+    out = {"T": str(T), "set": {}}
+    if free and "name" in model:
+        out["name"] = model["name"]
+    dev = scene_one(root, "device", True)
+    scene_keys(dev, ("name", "m", "b", "tf", "passive"), "device")
+    if "tf" in dev:
+        if "m" in dev or "b" in dev:
+            raise Malformed("model.scene: device: give either m, b or tf, not both")
+        out["plant"] = "(" + expand(scene_siso(dev["tf"], "device.tf"), "device.tf") + ")/s"
+    else:
+        if "m" not in dev:
+            raise Malformed("model.scene: device.m: missing (the device mass)")
+        m, b = field(dev, "m", "device", "0"), field(dev, "b", "device", "0")
+        if scene_constant(m, T, "device.m") <= 0:
+            raise Malformed("model.scene: device.m: must be > 0")
+        if scene_constant(b, T, "device.b") < 0:
+            raise Malformed("model.scene: device.b: must be >= 0")
+        out["plant"] = "1/((%s)*s^2 + (%s)*s)" % (m, b)
+    op = scene_one(root, "operator", False)
+    if op is not None:
+        scene_keys(op, ("name", "dofs", "m", "b", "k", "tf", "mass", "passive"), "operator")
+        if "dofs" in op:
+            d = op["dofs"]
+            d = d[0] if isinstance(d, list) and len(d) == 1 else d
+            if not ((isinstance(d, int) and not isinstance(d, bool) and d == 0) or
+                    (isinstance(d, str) and isinstance(dev.get("name"), str) and d == dev["name"])):
+                raise Malformed("model.scene: operator.dofs: not the scene's one DOF")
+        if "tf" in op:
+            if any(k in op for k in ("m", "b", "k")):
+                raise Malformed("model.scene: operator: give either m, b, k or tf, not both")
+            Z = "(" + expand(scene_siso(op["tf"], "operator.tf"), "operator.tf") + ")"
+            if "mass" in op:
+                if not isinstance(op["mass"], list) or len(op["mass"]) != 1:
+                    raise Malformed("model.scene: operator.mass: expected a list of one mass")
+                Z += " + (" + expand(scene_text(op["mass"][0], "operator.mass[1]"), "operator.mass[1]") + ")*s"
+            out["operator"] = Z
+        else:
+            if "mass" in op:
+                raise Malformed("model.scene: operator.mass: only with tf")
+            out["operator"] = "(%s)*s + (%s) + (%s)/s" % (field(op, "m", "operator", "0"), field(op, "b", "operator", "0"),
+                                                        field(op, "k", "operator", "0"))
+    env = root.get("environment")
+    if not isinstance(env, dict):
+        raise Malformed("model.scene: [environment]: missing (the loop has no controller)")
+    scene_keys(env, ("tf", "domain", "method", "gain"), "environment")
+    if "tf" not in env:
+        raise Malformed("model.scene: environment.tf: missing")
+    for key in ("domain", "method"):
+        if key in env and not isinstance(env[key], str):
+            raise Malformed("model.scene: environment.%s: not a string" % key)
+    E = expand(scene_siso(env["tf"], "environment.tf"), "environment.tf")
+    domain = env.get("domain", "z")
+    if domain == "s":
+        sub = {"backward_euler": "(z-1)/(T*z)", "tustin": "2*(z-1)/(T*(z+1))"}.get(env.get("method"))
+        if sub is None:
+            raise Malformed("model.scene: environment.method: an s-domain environment needs \"backward_euler\" or \"tustin\"")
+        E = " ".join("(" + sub + ")" if k == 'name' and t == 's' else t for k, t in lex(E)[:-1])
+    elif domain != "z":
+        raise Malformed("model.scene: environment.domain: \"z\" or \"s\"")
+    elif "method" in env:
+        raise Malformed("model.scene: environment.method: only with domain = \"s\"")
+    out["H"] = "(%s)*(%s)" % (field(env, "gain", "environment", "1"), E)
+    n = 0
+    if "delay" in root:
+        delay = root["delay"]
+        if not isinstance(delay, dict):
+            raise Malformed("model.scene: [delay]: not a table")
+        scene_keys(delay, ("time", "samples"), "delay")
+        if len(delay) != 1:
+            raise Malformed("model.scene: [delay]: give exactly one of time, samples")
+        key = next(iter(delay))
+        d = scene_constant(field(delay, key, "delay", "0"), T, "delay." + key)
+        d = d / T if key == "time" else d
+        if d < 0:
+            raise Malformed("model.scene: delay.%s: must be >= 0" % key)
+        if d.denominator != 1:
+            scene_beyond("delay." + key, "a delay of %s samples, not a whole number" % d)
+        if d > 100000:
+            scene_beyond("delay." + key, "more than 100000 samples")
+        n = int(d)
+    out["delay"] = n
+    return out
+
+
 def check_stability(c):
     model, claim, evidence = parts(c)
+    model = scene_loop_model(model)
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
     only(claim, ("quantity", "status", "stable"), "claim")
     only(evidence, ("charpoly", "argument_principle"), "evidence")
@@ -2064,6 +2289,7 @@ def positive_roots(p, b, closed):
 def stability_family(model):
     """(K, T, n, k, Nd, H0, H1, Dbound, L, c0, c1): H = H0 + K H1 proven affine; with L = lcm of
     H0's and H1's denominators, c(z; K) = z^n L (z-1)^k + (A0 L/L0 + K A1 L/L1) Nd = c0 + K c1."""
+    model = scene_loop_model(model, free=True)
     only(model, ("plant", "H", "operator", "set", "name", "T", "delay"), "model")
     K = parameter_name(model)
     T, n, params, k, Nd = loop_device(model)

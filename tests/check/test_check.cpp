@@ -11,6 +11,7 @@
 #include "hapstab/check/nonnegative.hpp"
 #include "hapstab/check/max_positive.hpp"
 #include "hapstab/check/reciprocal.hpp"
+#include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -734,6 +735,77 @@ TEST(StabilityCheck, RefusesWhatItCannotModel) {
   d = stability_cert("1/(m*s^2)", "K", 0, true, c);
   d["claim"]["stable"] = "yes";
   expect_field(d, "claim.stable");
+}
+
+// A scene as the model (check/scene_model.hpp): MassOnAVirtualWall's loop written as a one-DOF scene,
+// K given by a parameter defined from another and overridden by model.set; the checker reads the
+// loop from the text itself (the derived model is the --plant/--H one), and the same charpoly is
+// the evidence. What the reading does not model is refused by name.
+nlohmann::json scene_cert(const std::string& scene, bool stable, const nlohmann::json& set = nlohmann::json::object()) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability"}, {"model", {{"scene", scene}, {"set", set}}},
+          {"claim", {{"status", "exact"}, {"stable", stable}}},
+          {"evidence", {{"charpoly", {"-1/1000", "2001/2000", "-3997/2000", "1"}}}}};
+}
+
+const char* const kWallScene = R"toml([scene]
+name = "mass on a wall"
+T = "1/1000"
+[parameters]
+k = "7"
+K = "k*1000"
+B = 2
+[[device]]
+name = "arm"
+m = "1"
+[environment]
+tf = "K + B*(z-1)/(T*z)"
+[[input]]
+type = "impulse"
+magnitude = "1"
+)toml";
+
+TEST(StabilityCheck, SceneByHand) {
+  const nlohmann::json set{{"k", "1"}};
+  const auto ok = check_certificate(scene_cert(kWallScene, true, set));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_FALSE(check_certificate(scene_cert(kWallScene, false, set)).verified);
+  EXPECT_FALSE(check_certificate(scene_cert(kWallScene, true)).verified);  // k = 7: another loop, another polynomial
+  const nlohmann::json m = detail::scene_loop_model(scene_cert(kWallScene, true, set)["model"]);
+  EXPECT_EQ(m["plant"], "1/((1)*s^2 + (0)*s)");
+  EXPECT_EQ(m["H"], "(1)*(((1)*1000) + (2)*(z-1)/(T*z))");
+  EXPECT_EQ(m["T"], "1/1000");
+  EXPECT_EQ(m["delay"], 0);
+  // Tustin of K + B s, an operator m, b, k, a delay in time
+  std::string s = kWallScene;
+  const std::string wall_tf = "tf = \"K + B*(z-1)/(T*z)\"";
+  s.replace(s.find(wall_tf), wall_tf.size(), "domain = \"s\"\nmethod = \"tustin\"\ntf = \"K + B*s\"\n[delay]\ntime = \"2*T\"");
+  s += "[[operator]]\ndofs = \"arm\"\nm = \"1/10\"\nk = \"40\"\n";
+  const nlohmann::json t = detail::scene_loop_model(scene_cert(s, true)["model"]);
+  EXPECT_EQ(t["H"], "(1)*(((7)*1000) + (2)*(2*(z-1)/(T*(z+1))))") << t.dump();
+  EXPECT_EQ(t["operator"], "(1/10)*s + (0) + (40)/s");
+  EXPECT_EQ(t["delay"], 2);
+  auto refused = [](const std::string& text, const nlohmann::json& set, const std::string& field) {
+    try {
+      detail::scene_loop_model(scene_cert(text, true, set)["model"]);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  const std::string w = kWallScene;
+  refused(w + "[coupling]\ntf = \"1\"\n", set, "[coupling]");
+  refused(w + "[contact]\n", set, "[contact]");
+  refused(w + "[delay]\nsamples = \"3/2\"\n", set, "not a whole number");
+  refused(w + "[[device]]\nname = \"second\"\nm = \"1\"\n", set, "2 tables");
+  refused(w, {{"kk", "1"}}, "model.set.kk");
+  std::string cycle = w;
+  cycle.replace(cycle.find("k = \"7\""), 7, "k = \"K\"");  // k and K name each other
+  refused(cycle, nlohmann::json::object(), "cycle");
+  std::string ss = w;
+  ss.replace(ss.find("m = \"1\""), 7, "ss = { A = [[\"0\"]], B = [[\"1\"]], C = [[\"1\"]], D = [[\"0\"]] }");
+  refused(ss, set, "device.ss");
+  refused("[scene]\nT = \"1/1000\"\n", nlohmann::json::object(), "[[device]]");
+  refused("not toml = = 1", set, "not TOML");
 }
 
 // Res(f, g) = lc(f)^deg g prod_{f(a) = 0} g(a): Res(z - 2, z - 5) = -3; Res_{d,d}(c, c*) with

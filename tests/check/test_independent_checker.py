@@ -158,6 +158,72 @@ class Stability(unittest.TestCase):
         self.assertIn("claim.stable", hc.check(c2)[1])
 
 
+WALL_SCENE = """[scene]
+name = "mass on a wall"
+T = "1/1000"
+[parameters]
+k = "7"
+K = "k*1000"
+B = 2
+[[device]]
+name = "arm"
+m = "1"
+[environment]
+tf = "K + B*(z-1)/(T*z)"
+[[input]]
+type = "impulse"
+magnitude = "1"
+"""
+
+
+def scene_cert(scene, stable, sets=None):
+    return {"certificate": "hapstab", "version": 1, "kind": "stability", "model": {"scene": scene, "set": sets or {}},
+            "claim": {"status": "exact", "stable": stable}, "evidence": {"charpoly": WALL}}
+
+
+def same_rf(a, b):
+    return hc.trim(hc.pmul(a.num, b.den)) == hc.trim(hc.pmul(b.num, a.den))
+
+
+class SceneModel(unittest.TestCase):
+    """test_mass_on_a_virtual_wall's loop written as a one-DOF scene (the C++ StabilityCheck.SceneByHand)."""
+
+    def test_by_hand(self):
+        one = {"k": "1"}
+        self.assertEqual(hc.check(scene_cert(WALL_SCENE, True, one))[0], 0)
+        self.assertEqual(hc.check(scene_cert(WALL_SCENE, False, one))[0], 1)
+        self.assertEqual(hc.check(scene_cert(WALL_SCENE, True))[0], 1)  # k = 7: another loop
+        m = hc.scene_loop_model(scene_cert(WALL_SCENE, True, one)["model"])
+        self.assertEqual((m["plant"], m["T"], m["delay"]), ("1/((1)*s^2 + (0)*s)", "1/1000", 0))
+        self.assertTrue(same_rf(hc.parse_h(m["H"], Fraction(1, 1000), {}), hc.parse_h("1000 + 2*(z-1)/(T*z)", Fraction(1, 1000), {})))
+
+    def test_tustin_operator_and_delay(self):
+        s = WALL_SCENE.replace('tf = "K + B*(z-1)/(T*z)"', 'domain = "s"\nmethod = "tustin"\ntf = "K + B*s"\n[delay]\ntime = "2*T"')
+        s += '[[operator]]\ndofs = "arm"\nm = "1/10"\nk = "40"\n'
+        m = hc.scene_loop_model(scene_cert(s, True)["model"])
+        T = Fraction(1, 1000)
+        self.assertTrue(same_rf(hc.parse_h(m["H"], T, {}), hc.parse_h("7000 + 2*(2*(z-1)/(T*(z+1)))", T, {})))
+        self.assertTrue(same_rf(hc.parse_h(m["operator"], T, {}, 's'), hc.parse_h("s/10 + 40/s", T, {}, 's')))
+        self.assertFalse(same_rf(hc.parse_h(m["H"], T, {}), hc.parse_h("7000 + 2*((z-1)/(T*z))", T, {})))
+        self.assertEqual(m["delay"], 2)
+
+    def test_refuses_by_name(self):
+        one = {"k": "1"}
+        for text, sets, field in ((WALL_SCENE + '[coupling]\ntf = "1"\n', one, "[coupling]"),
+                                  (WALL_SCENE + "[contact]\n", one, "[contact]"),
+                                  (WALL_SCENE + '[delay]\nsamples = "3/2"\n', one, "not a whole number"),
+                                  (WALL_SCENE + '[[device]]\nname = "second"\nm = "1"\n', one, "2 tables"),
+                                  (WALL_SCENE, {"kk": "1"}, "model.set.kk"),
+                                  (WALL_SCENE.replace('k = "7"', 'k = "K"'), {}, "cycle"),
+                                  (WALL_SCENE.replace('m = "1"', 'ss = { A = [["0"]], B = [["1"]], C = [["1"]], D = [["0"]] }'),
+                                   one, "device.ss"),
+                                  ('[scene]\nT = "1/1000"\n', {}, "[[device]]"),
+                                  ("not toml = = 1", one, "not TOML")):
+            code, why = hc.check(scene_cert(text, True, sets))
+            self.assertEqual(code, 2, why)
+            self.assertIn(field, why)
+
+
 def frac_cert(H, T, td, claim, witness, c_lo=None):
     c = {"certificate": "hapstab", "version": 1, "kind": "bound",
          "model": {"H": H, "set": {"K": "2", "B": "2"}, "T": T, "delay": 0, "frac_delay": td, "eta": "0"},

@@ -9,7 +9,8 @@
 // an expression, the numbers' digits; docs/certificates.md "Sizes and times" measures real ones),
 // so inputs beyond this budget are passed over, never checked: a delay above 64 samples, an
 // exponent above 64, a number of more than 300 digits, a fractional delay t_d/T whose denominator
-// is above 16. Within it every input must finish in
+// is above 16, a scene whose loop model (check/scene_model.hpp) is beyond these or above 16 KB.
+// Within it every input must finish in
 // libFuzzer's 10 s.
 #include <cstdint>
 #include <string>
@@ -17,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/scene_model.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace {
@@ -74,6 +76,19 @@ bool fraction_over_budget(const nlohmann::json& c) {
   }
 }
 
+/// A scene (check/scene_model.hpp) is checked as the loop model it is read into, within the same
+/// budget; its parameters, substituted, may make that model larger than the input: above 16 KB it is
+/// passed over.
+bool scene_over_budget(const nlohmann::json& c) {
+  if (!c.is_object() || !c.contains("model") || !c.at("model").is_object() || !c.at("model").contains("scene")) return false;
+  try {
+    const nlohmann::json m = hapstab::check::detail::scene_loop_model(c.at("model"), c.at("model").contains("name"));
+    return m.dump().size() > 16384 || over_budget(m, "");
+  } catch (const hapstab::InputError&) {
+    return false;  // the checker reports it
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -84,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } catch (const nlohmann::json::exception&) {
     return 0;  // `hapstab check` reports it as "not JSON" before any checker runs
   }
-  if (over_budget(c, "") || fraction_over_budget(c)) return -1;  // not added to the corpus
+  if (over_budget(c, "") || fraction_over_budget(c) || scene_over_budget(c)) return -1;  // not added to the corpus
   try {
     const hapstab::check::Verdict v = hapstab::check::check_certificate(c);
     if (v.reason.empty()) std::abort();  // every verdict says what was shown or what failed

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hapstab/check/loop_model.hpp"
+#include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/reciprocal.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -360,7 +361,8 @@ std::optional<std::string> differs(const nlohmann::json& given, const P& c) {
 }  // namespace
 
 Verdict check_stability(const nlohmann::json& cert) {
-  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  const auto [written, claim, evidence] = detail::certificate_parts(cert);
+  const nlohmann::json model = detail::scene_loop_model(written);  // a scene: its one-DOF loop, read here
   detail::only_fields(claim, {"quantity", "status", "stable"}, "claim");
   detail::only_fields(evidence, {"charpoly", "argument_principle"}, "evidence");
   const bool winding = evidence.contains("argument_principle");

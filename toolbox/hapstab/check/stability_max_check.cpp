@@ -7,6 +7,7 @@
 
 #include "hapstab/check/affine.hpp"
 #include "hapstab/check/loop_model.hpp"
+#include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/reciprocal.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -87,10 +88,10 @@ std::optional<std::string> crossing_free(const P& D, const std::optional<rationa
 }  // namespace
 
 Verdict check_stability_max(const nlohmann::json& cert) {
-  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  const auto [written, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
   detail::only_fields(evidence, {"stable_at", "unstable_at"}, "evidence");
-  const Family f = read_family(model);
+  const Family f = read_family(detail::scene_loop_model(written, true));  // a scene: its one-DOF loop, read here
   const std::string& K = f.K;
   const detail::ClaimRange range = detail::claim_range(claim, true);
   if (range.refuted) return {false, *range.refuted};

@@ -1,0 +1,302 @@
+// hapstab/check/scene_model.cpp -- see scene_model.hpp.
+#include "hapstab/check/scene_model.hpp"
+
+#include <cctype>
+#include <functional>
+#include <map>
+#include <set>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "hapstab/check/certificate.hpp"
+#include "hapstab/lti/parse.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::check::detail {
+
+namespace {
+
+constexpr size_t kMaxSceneBytes = size_t(1) << 20;    // a one-DOF scene is a few KB
+constexpr size_t kMaxExpandedBytes = size_t(1) << 20;  // parameters substituted into one expression
+constexpr int kMaxDotsPerLine = 256;  // toml++ recurses per component of a dotted key (report/toml_limits.hpp)
+
+[[noreturn]] void beyond(const std::string& where, const std::string& what) {
+  throw InputError("model.scene: " + where + ": " + what + " (beyond this checker: a one-DOF scene of a device, at most one "
+                   "operator, an environment and a whole-sample delay; docs/certificates.md)");
+}
+[[noreturn]] void malformed(const std::string& where, const std::string& what) {
+  throw InputError("model.scene: " + where + ": " + what);
+}
+
+// The scene's [parameters] (model.set replacing definitions), substituted textually.
+struct Parameters {
+  std::map<std::string, std::string> definition;
+  std::string free;  // stays a name (stability-max's K)
+  std::map<std::string, std::string> expanded;  // memo
+  std::set<std::string> open;                   // on the current chain (a cycle is malformed)
+
+  // `text` with every parameter named in it replaced by "(its expansion)": the tokens are the
+  // parser's (lti/parse.hpp): numbers with an exponent, identifiers, single characters.
+  std::string expand(const std::string& text, const std::string& where) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+      const unsigned char ch = static_cast<unsigned char>(text[i]);
+      if (std::isdigit(ch) || ch == '.') {
+        size_t j = i;
+        while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) ++j;
+        if (j < text.size() && (text[j] == 'e' || text[j] == 'E')) {
+          size_t k = j + 1;
+          if (k < text.size() && (text[k] == '+' || text[k] == '-')) ++k;
+          if (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) {
+            while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+            j = k;
+          }
+        }
+        out.append(text, i, j - i);
+        i = j;
+      } else if (std::isalpha(ch) || ch == '_') {
+        size_t j = i;
+        while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+        const std::string name = text.substr(i, j - i);
+        out += definition.count(name) && name != free ? "(" + of(name) + ")" : name;
+        i = j;
+      } else {
+        out += text[i++];
+      }
+      if (out.size() > kMaxExpandedBytes) beyond(where, "its parameters expand to more than 1 MB");
+    }
+    return out;
+  }
+
+  std::string of(const std::string& name) {
+    if (const auto it = expanded.find(name); it != expanded.end()) return it->second;
+    if (!open.insert(name).second) malformed("parameters." + name, "depends on itself (a cycle)");
+    const std::string e = expand(definition.at(name), "parameters." + name);
+    for (const auto& n : names_in(e))
+      if (n == "s" || n == "z") malformed("parameters." + name, "names " + n + ": a parameter is a number, not a transfer function");
+    open.erase(name);
+    return expanded[name] = e;
+  }
+};
+
+// A TOML string or integer (an exact number's two forms; TOML floats are binary approximations).
+std::string text_of(const toml::node& v, const std::string& where) {
+  if (const auto* s = v.as_string()) return s->get();
+  if (const auto* i = v.as_integer()) return std::to_string(i->get());
+  malformed(where, "expected a string (an exact number or an expression) or an integer");
+}
+
+// The rational value of a constant expression (T known when T > 0).
+rational constant(const std::string& text, const rational& T, const std::string& where) {
+  ParseOptions po;
+  po.variable = 's';
+  po.T = T;
+  try {
+    const TransferFunction t = parse_tf(text, po);
+    if (t.num().degree() > 0 || t.den().degree() > 0) malformed(where, "not a number");
+    return t.num().is_zero() ? rational(0) : rational(t.num().coeff(0) / t.den().coeff(0));
+  } catch (const InputError& e) {
+    malformed(where, e.what());
+  }
+}
+
+void only_keys(const toml::table& t, const std::set<std::string>& known, const std::string& where) {
+  for (const auto& [k, v] : t)
+    if (!known.count(std::string(k.str()))) beyond(where + "." + std::string(k.str()), "a key this checker does not model");
+}
+
+const toml::table& one_table(const toml::table& root, const char* key, bool required) {
+  static const toml::table none;
+  const toml::node* n = root.get(key);
+  if (!n) {
+    if (required) malformed(std::string("[[") + key + "]]", "missing");
+    return none;
+  }
+  const auto* a = n->as_array();
+  if (!a) malformed(key, "expected an array of tables [[" + std::string(key) + "]]");
+  if (a->size() != 1) beyond(std::string("[[") + key + "]]", std::to_string(a->size()) + " tables (one DOF: one device, one operator)");
+  const auto* t = (*a)[0].as_table();
+  if (!t) malformed(std::string("[[") + key + "]]", "not a table");
+  return *t;
+}
+
+// One SISO transfer function: a string, or a 1 x 1 matrix of strings.
+std::string siso(const toml::node& v, const std::string& where) {
+  if (const auto* s = v.as_string()) return s->get();
+  if (const auto* rows = v.as_array(); rows && rows->size() == 1)
+    if (const auto* row = (*rows)[0].as_array(); row && row->size() == 1)
+      if (const auto* s = (*row)[0].as_string()) return s->get();
+  beyond(where, "not one transfer function (a matrix: more than one DOF)");
+}
+
+std::string field(const toml::table& t, const char* key, const std::string& where, Parameters& p, const char* fallback) {
+  const toml::node* n = t.get(key);
+  if (!n) return fallback;
+  return p.expand(text_of(*n, where + "." + key), where + "." + key);
+}
+
+// The identifier `var` replaced by "(with)" in `text` (the parser's tokens, as in expand).
+std::string substitute(const std::string& text, const std::string& var, const std::string& with) {
+  Parameters p;
+  p.definition[var] = with;
+  p.expanded[var] = with;
+  return p.expand(text, "environment.tf");
+}
+
+toml::table parse_scene(const std::string& text) {
+  if (text.size() > kMaxSceneBytes) beyond("the scene", "more than 1 MB");
+  for (size_t at = 0, dots = 0; at <= text.size(); ++at) {
+    if (at == text.size() || text[at] == '\n') dots = 0;
+    else if (text[at] == '.' && ++dots > size_t(kMaxDotsPerLine)) beyond("the scene", "a line with more than 256 dots");
+  }
+  toml::table root;
+  try {
+    root = toml::parse(std::string_view(text), std::string_view("model.scene"));
+  } catch (const toml::parse_error& e) {
+    throw InputError(std::string("model.scene: not TOML: ") + std::string(e.description()));
+  }
+  for (const auto& [k, v] : root) {
+    const std::string key(k.str());
+    static const std::set<std::string> loop{"scene", "parameters", "device", "operator", "environment", "delay"};
+    static const std::set<std::string> ignored{"input", "initial", "simulate", "reproduce", "multidof"};
+    if (!loop.count(key) && !ignored.count(key)) beyond("[" + key + "]", "a section this checker does not model");
+  }
+  return root;
+}
+
+// [parameters], each value replaced by model.set's where it gives one; every one expanded once (a
+// cycle is malformed, used or not, as for hapstab's loader).
+Parameters read_parameters(const toml::table& root, const nlohmann::json& model, const std::string& free) {
+  Parameters p;
+  p.free = free;
+  if (const auto* params = root["parameters"].as_table())
+    for (const auto& [k, v] : *params) {
+      const std::string name(k.str());
+      if (name == "T" || name == "s" || name == "z") beyond("parameters." + name, "a parameter named T, s or z");
+      if (v.is_array() || v.is_table()) beyond("parameters." + name, "a list parameter (repeated blocks)");
+      p.definition[name] = text_of(v, "parameters." + name);
+    }
+  else if (root.contains("parameters")) malformed("[parameters]", "not a table");
+  if (model.contains("set")) {
+    if (!model.at("set").is_object()) throw InputError("model.set: not an object");
+    for (const auto& [name, v] : model.at("set").items()) {
+      if (!p.definition.count(name)) throw InputError("model.set." + name + ": not a parameter of the scene");
+      if (name == free) throw InputError("model.set: gives the parameter model.name = " + free + " a value");
+      p.definition[name] = exact_field(model.at("set"), name, "model.set").str();
+    }
+  }
+  for (const auto& [name, definition] : p.definition)
+    if (name != p.free) p.of(name);
+  return p;
+}
+
+// [[device]]: P(s) = 1/(m s^2 + b s) or G(s)/s.
+std::string read_plant(const toml::table& device, Parameters& p, const rational& T) {
+  only_keys(device, {"name", "m", "b", "tf", "passive"}, "device");
+  if (device.contains("tf")) {
+    if (device.contains("m") || device.contains("b")) malformed("device", "give either m, b or tf, not both");
+    return "(" + p.expand(siso(*device.get("tf"), "device.tf"), "device.tf") + ")/s";
+  }
+  if (!device.contains("m")) malformed("device.m", "missing (the device mass)");
+  const std::string m = field(device, "m", "device", p, "0"), b = field(device, "b", "device", p, "0");
+  if (constant(m, T, "device.m") <= 0) malformed("device.m", "must be > 0");
+  if (constant(b, T, "device.b") < 0) malformed("device.b", "must be >= 0");
+  return "1/((" + m + ")*s^2 + (" + b + ")*s)";
+}
+
+// [[operator]] on the one device: Z_op(s) = m s + b + k/s or Z(s) + m_o s.
+std::string read_operator(const toml::table& op, const toml::table& device, Parameters& p) {
+  only_keys(op, {"name", "dofs", "m", "b", "k", "tf", "mass", "passive"}, "operator");
+  if (const toml::node* d = op.get("dofs")) {  // the one device: its name or DOF 0, alone or in a list
+    const toml::node* one = d->as_array() && d->as_array()->size() == 1 ? &(*d->as_array())[0] : d;
+    const auto* name = one->as_string();
+    const auto* index = one->as_integer();
+    const auto* dname = device.get("name") ? device.get("name")->as_string() : nullptr;
+    if (!((index && index->get() == 0) || (name && dname && name->get() == dname->get())))
+      malformed("operator.dofs", "not the scene's one DOF");
+  }
+  if (!op.contains("tf")) {
+    if (op.contains("mass")) malformed("operator.mass", "only with tf");
+    return "(" + field(op, "m", "operator", p, "0") + ")*s + (" + field(op, "b", "operator", p, "0") + ") + (" +
+           field(op, "k", "operator", p, "0") + ")/s";
+  }
+  if (op.contains("m") || op.contains("b") || op.contains("k")) malformed("operator", "give either m, b, k or tf, not both");
+  std::string Z = "(" + p.expand(siso(*op.get("tf"), "operator.tf"), "operator.tf") + ")";
+  if (const toml::node* mass = op.get("mass")) {
+    const auto* a = mass->as_array();
+    if (!a || a->size() != 1) malformed("operator.mass", "expected a list of one mass");
+    Z += " + (" + p.expand(text_of((*a)[0], "operator.mass[1]"), "operator.mass[1]") + ")*s";
+  }
+  return Z;
+}
+
+// [environment]: H(z) = g E(z), E in z or discretised from s.
+std::string read_wall(const toml::table* env, Parameters& p) {
+  if (!env) malformed("[environment]", "missing (the loop has no controller)");
+  only_keys(*env, {"tf", "domain", "method", "gain"}, "environment");
+  if (!env->contains("tf")) malformed("environment.tf", "missing");
+  std::string E = p.expand(siso(*env->get("tf"), "environment.tf"), "environment.tf");
+  for (const char* key : {"domain", "method"})
+    if (env->contains(key) && !env->get(key)->is_string()) malformed(std::string("environment.") + key, "not a string");
+  const std::string domain = (*env)["domain"].value_or(std::string("z"));
+  if (domain == "s") {
+    const std::string method = (*env)["method"].value_or(std::string());
+    if (method == "backward_euler") E = substitute(E, "s", "(z-1)/(T*z)");
+    else if (method == "tustin") E = substitute(E, "s", "2*(z-1)/(T*(z+1))");
+    else malformed("environment.method", "an s-domain environment needs \"backward_euler\" or \"tustin\"");
+  } else if (domain != "z") {
+    malformed("environment.domain", "\"z\" or \"s\"");
+  } else if (env->contains("method")) {
+    malformed("environment.method", "only with domain = \"s\"");
+  }
+  return "(" + field(*env, "gain", "environment", p, "1") + ")*(" + E + ")";
+}
+
+// [delay]: n = t_d/T, a whole number of samples in [0, 10^5]; 0 without the section.
+long read_delay(const toml::table& root, Parameters& p, const rational& T) {
+  const auto* delay = root["delay"].as_table();
+  if (!delay) {
+    if (root.contains("delay")) malformed("[delay]", "not a table");
+    return 0;
+  }
+  only_keys(*delay, {"time", "samples"}, "delay");
+  if (delay->size() != 1) malformed("[delay]", "give exactly one of time, samples");
+  const bool time = delay->contains("time");
+  const std::string key = time ? "time" : "samples";
+  rational d = constant(field(*delay, key.c_str(), "delay", p, "0"), T, "delay." + key);
+  if (time) d /= T;
+  if (d < 0) malformed("delay." + key, "must be >= 0");
+  if (bmp::denominator(d) != 1) beyond("delay." + key, "a delay of " + d.str() + " samples, not a whole number");
+  if (d > 100000) beyond("delay." + key, "more than 100000 samples");
+  return static_cast<long>(bmp::numerator(d));
+}
+
+}  // namespace
+
+nlohmann::json scene_loop_model(const nlohmann::json& model, bool free) {
+  if (!model.is_object() || !model.contains("scene")) return model;
+  if (free) only_fields(model, {"scene", "set", "name"}, "model");
+  else only_fields(model, {"scene", "set"}, "model");
+  if (!model.at("scene").is_string()) throw InputError("model.scene: not a string (the scene's TOML text)");
+  const toml::table root = parse_scene(model.at("scene").get<std::string>());
+  const auto* header = root["scene"].as_table();
+  if (!header || !header->contains("T")) malformed("[scene].T", "missing (the sample period)");
+  only_keys(*header, {"name", "description", "T"}, "scene");
+  const rational T = constant(text_of(*header->get("T"), "scene.T"), rational(0), "scene.T");
+  if (T <= 0) malformed("scene.T", "must be > 0");
+  const std::string name = free && model.contains("name") && model.at("name").is_string() ? model.at("name").get<std::string>() : "";
+  Parameters p = read_parameters(root, model, name);
+
+  nlohmann::json out{{"T", T.str()}, {"set", nlohmann::json::object()}};
+  if (free && model.contains("name")) out["name"] = model.at("name");
+  const toml::table& device = one_table(root, "device", true);
+  out["plant"] = read_plant(device, p, T);
+  if (root.contains("operator")) out["operator"] = read_operator(one_table(root, "operator", false), device, p);
+  out["H"] = read_wall(root["environment"].as_table(), p);
+  out["delay"] = read_delay(root, p, T);
+  return out;
+}
+
+}  // namespace hapstab::check::detail
