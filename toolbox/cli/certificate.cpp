@@ -2,6 +2,7 @@
 #include "cli/certificate.hpp"
 
 #include <fstream>
+#include <sstream>
 
 #include "cli/command.hpp"
 #include "hapstab/check/certificate.hpp"
@@ -140,6 +141,15 @@ Enclosure<rational> printed_enclosure(nlohmann::json& claim, const std::string& 
 // The model of the one-DOF loop of `stability` as written (plant, H, operator, set, T, delay).
 nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
   nlohmann::json m;
+  if (!text.scene.empty()) {  // the scene as written: the checkers read its one-DOF loop themselves
+    std::ifstream in(text.scene, std::ios::binary);
+    std::ostringstream all;
+    all << in.rdbuf();
+    if (!in) throw InputError("--certificate: cannot read the scene '" + text.scene + "' again");
+    m["scene"] = all.str();
+    m["set"] = sets_json(text.sets);
+    return m;
+  }
   m["plant"] = text.plant;
   m["H"] = text.H;
   if (!text.op.empty()) m["operator"] = text.op;
@@ -482,7 +492,8 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
   // without a charpoly the checkers prove by enclosures: "certified" (an exact verdict, a root at
   // z = 1, is weakened to it)
   if (!evidence.contains("charpoly")) j["claim"]["status"] = "certified";
-  if (!evidence.contains("charpoly")) verify_before_writing(j);  // the checker decides alone: refuse what it cannot
+  // the checker decides alone, or reads the scene itself: refuse what it cannot verify
+  if (!evidence.contains("charpoly") || !text.scene.empty()) verify_before_writing(j);
   return j;
 }
 

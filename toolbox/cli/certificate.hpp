@@ -61,11 +61,13 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
 /// in its last place).
 nlohmann::json r_certificate(const rational& T, const rational& omega, const std::string& printed_im, int digits);
 
-/// The inputs of `stability --plant --H [--operator] --T [--delay] [--set]`, as written.
+/// The inputs of `stability --plant --H [--operator] --T [--delay] [--set]`, as written; or of
+/// `stability --scene FILE [--set]` (a one-DOF scene: its text is the model, check/scene_model.hpp).
 struct StabilityText {
   std::string plant, H, op;
   int delay = 0;
   std::vector<std::string> sets;
+  std::string scene;  ///< the scene file's path (then plant, H, op and delay are empty)
 };
 
 /// The evidence of a `stability` certificate of `loop` (one DOF, no --max): the exact

@@ -103,7 +103,7 @@ int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
   const stability::StabilityResult r = stability::decide(loop);
   const bool undecided = !r.verdict.decided();
   if (!o.certificate.empty() && !undecided)
-    cli::write_certificate(o.certificate, cli::stability_certificate({o.plant, o.H, o.op, o.delay, o.sets}, loop, r, evidence));
+    cli::write_certificate(o.certificate, cli::stability_certificate({o.plant, o.H, o.op, o.delay, o.sets, o.scene}, loop, r, evidence));
   nlohmann::json j;
   j["stable"] = undecided ? nlohmann::json(nullptr) : nlohmann::json(r.verdict.holds());
   j["status"] = undecided ? "undecided" : to_string(r.verdict.status);
@@ -168,7 +168,7 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   const stability::MaxGain m = stability::max_gain(loop, o.digits, o.max_name);
   if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
     cli::write_certificate(o.certificate,
-                           cli::stability_max_certificate({o.plant, o.H, o.op, o.delay, o.sets}, o.max_name, loop, m, o.digits));
+                           cli::stability_max_certificate({o.plant, o.H, o.op, o.delay, o.sets, o.scene}, o.max_name, loop, m, o.digits));
   const nlohmann::json j = max_json(m, o, loop.T);
   if (o.json) cli::print_json(j);
   else {
@@ -196,6 +196,30 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   return m.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_ok;
 }
 
+bool one_dof_scene(const scene::Scene& sc) {
+  return sc.loop.dofs() == 1 && sc.loop.devices.size() == 1 && sc.loop.operators.size() <= 1 && !sc.loop.coupling;
+}
+
+// --scene --certificate: a one-DOF scene's verdict on its transfer-function loop (stability/
+// scene_loop.hpp, the loop of --plant/--H), whose certificate holds the scene's text (kind
+// stability; the checkers read the loop from the scene themselves, check/scene_model.hpp).
+nlohmann::json scene_certificate(const StabilityOpts& o, const scene::Scene& sc) {
+  if (!one_dof_scene(sc))
+    throw InputError("--certificate: a certificate of stability --scene with " +
+                     (sc.loop.coupling ? std::string("a [coupling]") : std::to_string(sc.loop.dofs()) + " DOF") +
+                     " is not implemented yet (one-DOF scenes without a coupling have one)");
+  stability::Loop loop;
+  try {
+    loop = stability::scene_loop(sc);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: ") + e.what());
+  }
+  const nlohmann::json evidence = cli::stability_evidence(loop);
+  const stability::StabilityResult r = stability::decide(loop);
+  if (!r.verdict.decided()) throw InputError("--certificate: the one-DOF loop is undecided: there is no claim to certify");
+  return cli::stability_certificate({"", "", "", 0, o.sets, o.scene}, loop, r, evidence);
+}
+
 // --scene: the loop as written (stability/loop_as_written.hpp).
 int run_scene(const StabilityOpts& o) {
   if (!o.plant.empty() || !o.H.empty() || !o.op.empty() || !o.T.empty() || o.delay != 0)
@@ -208,8 +232,14 @@ int run_scene(const StabilityOpts& o) {
     }
   }();
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
+  const nlohmann::json certificate = o.certificate.empty() ? nlohmann::json() : scene_certificate(o, sc);
   const stability::LoopVerdict v =
       stability::decide_loop(sc.loop, o.no_symmetry ? stability::Decider::no_symmetry : stability::Decider::automatic);
+  if (!certificate.is_null()) {
+    if (!v.stable || *v.stable != certificate["claim"]["stable"].get<bool>())
+      throw NumericalError("--certificate: the loop as written and its one-DOF loop got different verdicts (a defect): no certificate");
+    cli::write_certificate(o.certificate, certificate);
+  }
   nlohmann::json hidden = nlohmann::json::array();
   for (const auto& h : v.hidden.modes)
     hidden.push_back({{"block", h.block}, {"kind", h.kind}, {"where", h.where.text(h.discrete ? "z" : "s", h.pair)}, {"stable", h.stable}});
@@ -312,6 +342,11 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
 }
 
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
+  if (!o.certificate.empty())
+    throw InputError("--certificate: a certificate of stability --scene --max with " +
+                     (sc.loop.coupling ? std::string("a [coupling]") : o.conservatism ? std::string("--conservatism")
+                                                                       : std::to_string(sc.loop.dofs()) + " DOF") +
+                     " is not implemented yet (one-DOF scenes without a coupling have one)");
   scene::check_command(sc.root, o.scene, "stability");
   const std::map<std::string, rational> params = cli::parse_sets(o.sets);
   const auto it = sc.parameters.find(o.max_name);
@@ -474,13 +509,11 @@ const cli::Register reg(
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
                       "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
-                      "a mass-damper), or stability-max with --max (every device pole at s = 0); refused by name: --scene, "
-                      "two device poles off s = 0 (with --max: any), degree above the checkers' limit, an undecided "
-                      "answer; docs/certificates.md)");
+                      "a mass-damper, a spring; or a one-DOF --scene without [coupling], its text the model), or stability-max "
+                      "with --max (every device pole at s = 0); refused by name: a multi-DOF scene or one with a "
+                      "[coupling], three device poles off s = 0 or more (with --max: any), degree above the checkers' "
+                      "limit, an undecided answer; docs/certificates.md)");
        return [o]() -> int {
-         if (!o->certificate.empty() && !o->scene.empty())
-           throw InputError(std::string("--certificate: a certificate of stability --scene") + (o->max_name.empty() ? "" : " --max") +
-                            " is not implemented yet (one-DOF --plant/--H verdicts and their --max have one)");
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
          if (o->no_symmetry && (o->scene.empty() || !o->max_name.empty()))
@@ -501,6 +534,9 @@ const cli::Register reg(
            }();
            const auto hidden = sim::hidden_modes(sc.loop);
            if (!hidden.stable()) {
+             if (!o->certificate.empty())
+               throw InputError("--certificate: sup " + o->max_name + " = 0 is decided by a hidden mode (" + hidden.summary() +
+                                "): a certificate of hidden modes is not implemented yet");
              const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
              if (o->json) cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}});
              else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
@@ -509,8 +545,7 @@ const cli::Register reg(
            // beyond one DOF, or with a [coupling]: the closed-loop matrix (stability/loop_max.hpp)
            if (!(o->plant.empty() && o->H.empty() && o->op.empty() && o->T.empty() && o->delay == 0))
              throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
-           if (sc.loop.dofs() != 1 || sc.loop.devices.size() != 1 || sc.loop.operators.size() > 1 || sc.loop.coupling ||
-               o->conservatism)
+           if (!one_dof_scene(sc) || o->conservatism)
              return run_loop_max(*o, sc, progress);
            progress.replan({"the one-DOF loop's supremum"});
            progress.stage();
