@@ -1051,6 +1051,74 @@ def loop_malformed(cert):
     return out
 
 
+def scene_of(m):
+    """The one-DOF scene of a `stability` model (plant P, H, operator c*s, set, T, delay) for `stability
+    --scene`: the device G = s P (force -> velocity, passive = false: no claim checked), the operator's
+    c*s as tf "0" with mass [c], the wall H in z, the delay in samples. None when m is not of that form."""
+    plain = ("plant", "H", "T", "delay", "set")
+    if not isinstance(m, dict) or any(k not in m for k in plain) or set(m) - set(plain) - {"operator"}:
+        return None
+    if not all(isinstance(m[k], str) for k in ("plant", "H", "T")) or not isinstance(m["set"], dict):
+        return None
+    if not isinstance(m["delay"], int) or isinstance(m["delay"], bool) or not all(isinstance(v, str) for v in m["set"].values()):
+        return None
+    op = m.get("operator")
+    if op is not None and (not isinstance(op, str) or not op.endswith("*s")):
+        return None
+    q = lambda t: json.dumps(t)  # a TOML basic string (JSON's escapes are TOML's)
+    L = ["[scene]", "T = " + q(m["T"])]
+    if m["set"]:
+        L += ["[parameters]"] + ["%s = %s" % (k, q(v)) for k, v in sorted(m["set"].items())]
+    L += ["[[device]]", 'name = "arm"', "tf = " + q("(%s)*s" % m["plant"]), "passive = false"]
+    if op is not None:
+        L += ["[[operator]]", 'dofs = "arm"', 'tf = "0"', "mass = [%s]" % q(op[:-2])]
+    L += ["[environment]", "tf = " + q(m["H"])]
+    if m["delay"]:
+        L += ["[delay]", 'samples = "%d"' % m["delay"]]
+    return "\n".join(L) + "\n"
+
+
+def scene_mutants(cert, rng, hapstab, cache, tmp, problems):
+    """A `stability` certificate as `stability --scene` writes it (the model the scene's text, which
+    the checkers read themselves, check/scene_model.hpp): the producer's own scene certificate must
+    hold the plain one's claim and evidence; every mutant of the plain certificate whose model is a
+    plain loop, with the scene of that model in its place, keeps its expectation (the same loop);
+    and the scene's own malformations: sections and keys beyond the reading, a second device, a
+    fractional delay, a parameter cycle, model.set naming no parameter. A producer that writes no
+    scene certificate, or another claim or evidence, is a problem (appended to `problems`)."""
+    base = scene_of(cert["model"])
+    if base is None:
+        return []
+    path = os.path.join(tmp, "scene.toml")
+    with open(path, "w") as f:
+        f.write(base)
+    produced = produce(hapstab, ["stability", "--scene", path], "scene:" + base, "s-scene.json", cache, tmp)
+    if not isinstance(produced, dict):
+        problems.append("stability --scene wrote no certificate (exit %s) for the scene of %s" % (produced, json.dumps(cert["model"])))
+        return []
+    out = [("scene: unmutated (stability --scene)", produced, "accept")]
+    if produced["claim"] != cert["claim"] or produced["evidence"] != cert["evidence"]:
+        problems.append("stability --scene's claim or evidence differ from --plant/--H's for %s" % json.dumps(cert["model"]))
+    for name, c, expect in stability_mutants(cert, rng, hapstab, cache, tmp):
+        text = scene_of(c.get("model"))
+        if text is not None:
+            out.append(("scene: " + name, dict(c, model={"scene": text, "set": {}}), expect))
+    edits = [("[coupling] added", base + '[coupling]\ntf = "1/1000"\n'), ("[contact] added", base + "[contact]\n"),
+             ("a second device", base + '[[device]]\nname = "second"\nm = "1"\n'),
+             ("device.ss beside tf", base.replace('passive = false', 'passive = false\nss = { A = [["0"]] }')),
+             ("a fractional delay", base + '[delay]\nsamples = "1/2"\n' if "[delay]" not in base else
+              base.replace('samples = "', 'samples = "1/2 + ')),
+             ("a parameter cycle", base.replace("[[device]]", '[parameters]\ncyc = "cyc"\n[[device]]') if "[parameters]" not in base
+              else base.replace("[parameters]", '[parameters]\ncyc = "cyc"')),
+             ("not TOML", base + "= =\n"), ("[environment] removed", base.split("[environment]")[0])]
+    for name, text in edits:
+        out.append(("scene: " + name, dict(produced, model={"scene": text, "set": {}}), "malformed"))
+    out.append(("scene: model.set names no parameter", with_field(produced, ["model", "set"], {"nosuch": "1"}), "malformed"))
+    out.append(("scene: deleted model.scene", deleted(produced, ["model", "scene"]), "malformed"))
+    out.append(("scene: model.plant beside model.scene", with_field(produced, ["model", "plant"], "1/s^2"), "malformed"))
+    return out
+
+
 STABILITY_MAX_TEMPLATES = [  # (plant, operator or None, H, the parameter maximised, the others)
     ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", "K", ["m", "B"]),             # the stiffness of a wall (001)
     ("1/(m*s^2)", None, "K + B*(z-1)/(T*z)", "B", ["m", "K"]),             # its damper
@@ -1657,7 +1725,14 @@ def main():
     certs, skipped = produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lrng)
     produced = time.time() - t0
     mutants = []
+    problems = []  # producer runs that break what the mutants rely on
+    scrng = random.Random(a.seed * 1000 + 51)  # the scene mutants' own stream
+    stability_seen = 0
     for kind, cert in certs:
+        stability_seen += kind == "stability"
+        if kind == "stability" and stability_seen % 4 == 1:  # a quarter (the first) also as `stability --scene` writes it
+            for name, c, expect in scene_mutants(cert, scrng, a.hapstab, scache, tmp, problems):
+                mutants.append(("stability (scene)", name, c, expect))
         if kind == "stability":
             ms = stability_mutants(cert, rng, a.hapstab, scache, tmp)
         elif kind == "stability-max":
@@ -1695,7 +1770,7 @@ def main():
     t2 = time.time()
     py = [hapstab_check.check(c) for _, _, c, _ in mutants]
     py_seconds = time.time() - t2
-    counts, failures = {}, []
+    counts, failures = {}, list(problems)
     want_code = {"accept": 0, "refute": 1, "malformed": 2}
     for (kind, name, c, expect), cj, (pcode, preason) in zip(mutants, cpp, py):
         ccode, creason = cj["exit"], cj["reason"]
@@ -1720,8 +1795,11 @@ def main():
     n = len(mutants)
     accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py) if e in ("refute", "malformed") and (cj["exit"] == 0 or pc == 0))
     kinds = sorted({k for k, _ in certs})
-    print("certificates: %d (%s); producer runs skipped: %s" % (
-        len(certs), ", ".join("%d %s" % (sum(1 for k, _ in certs if k == kd), kd) for kd in kinds), skipped or "none"))
+    scenes = sum(1 for _, nm, _, _ in mutants if nm == "scene: unmutated (stability --scene)")
+    print("certificates: %d (%s)%s; producer runs skipped: %s" % (
+        len(certs), ", ".join("%d %s" % (sum(1 for k, _ in certs if k == kd), kd) for kd in kinds),
+        ", and %d of the stability ones as stability --scene writes them" % scenes if scenes else "", skipped or "none"))
+    kinds = sorted({k for k, _, _, _ in mutants})
     for kd in kinds:
         per = [(e, cj["exit"], pc) for (k, _, _, e), cj, (pc, _) in zip(mutants, cpp, py) if k == kd]
         print("  %s: %d mutants (accept %d, refute %d, malformed %d, agree %d), false or malformed accepted %d" % (
