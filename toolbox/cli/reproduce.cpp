@@ -1,5 +1,7 @@
 #include "cli/reproduce.hpp"
 
+#include <algorithm>
+
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -214,10 +216,15 @@ std::string summary_line(const ReportInput& in) {
   return o.str();
 }
 
-// The certificate cell of a scene run: a simulation has none; `multidof analyze` and `design` link
-// their certificates (produce_scene_certificates), or say why their verdict has none.
+// The certificate cell of a scene run: a simulation has none, except the certificate of its one-DOF
+// linear loop's stability where it has one; `multidof analyze` and `design` link their certificates
+// (produce_scene_certificates), or say why their verdict has none.
 std::string scene_certificate(const SceneRun& r, const std::vector<CertificateEntry>& entries, bool as_html) {
   auto text = [&](const std::string& t) { return as_html ? html(t) : cell(t); };
+  const bool certified_loop = std::any_of(entries.begin(), entries.end(), [&](const CertificateEntry& e) { return e.claim == scene_claim_id(r); });
+  if (r.command == "simulate" && certified_loop)
+    return text("the simulated trend is numeric; the loop's stability, which it shows: ") +
+           certificate_cell(ClaimResult{scene_claim_id(r), r.paper, "", r.claim, Status::certified, r.ok, ""}, entries, as_html);
   if (r.command == "simulate") return text("numeric (a simulation): no certificate");
   if (r.command != "multidof analyze" && r.command != "multidof design") return text("no certificate kind yet (issue 47)");
   ClaimResult as_claim{scene_claim_id(r), r.paper, "", r.claim, Status::exact, r.ok, ""};

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -270,9 +271,58 @@ std::string scene_claim_id(const SceneRun& r) {
   return "examples/" + r.file + (r.command == "multidof design" ? " (design)" : "");
 }
 
+namespace {
+
+// A simulated scene whose loop is one DOF and linear (001's tightness scenes): the certificate of
+// `stability --scene` (kind stability, the scene's text the model), beside the simulation's numeric
+// trend; its verdict must be the trend's (decaying: stable; growing: NOT stable). nullopt when the
+// loop has no certificate (contact, friction, several DOF: refused by name, the row stays numeric).
+std::optional<CertificateEntry> simulated_scene_certificate(const SceneRun& r, const fs::path& dir) {
+  CertificateEntry e;
+  e.claim = scene_claim_id(r);
+  e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".stability.json";
+  e.command = command_text({"stability", "--scene", "examples/" + r.file, "--certificate", e.file});
+  const fs::path path = dir / e.file;
+  fs::create_directories(path.parent_path());
+  const auto t0 = clock_type::now();
+  try {
+    run_in_process({"stability", "--scene", (examples_dir() / r.file).string(), "--json", "--certificate", path.string()});
+  } catch (const InputError&) {  // not a one-DOF linear loop: no certificate, the row says so
+    return std::nullopt;
+  } catch (const std::exception& ex) {
+    e.error = std::string("the command failed (") + exit_code_for(ex).kind + "): " + ex.what();
+  }
+  e.produce_seconds = since(t0);
+  if (!fs::exists(path)) {
+    if (e.error.empty()) e.error = "the command wrote no certificate";
+    return e;
+  }
+  e.bytes = fs::file_size(path);
+  try {
+    std::ifstream in(path);
+    const json j = json::parse(in);
+    e.kind = j.value("kind", std::string());
+    const bool stable = j.at("claim").at("stable").get<bool>();
+    const bool decaying = r.expected.find("trend = decaying") != std::string::npos;
+    const bool growing = r.expected.find("trend = growing") != std::string::npos;
+    if (e.error.empty() && ((decaying && !stable) || (growing && stable)))
+      e.error = std::string("the certificate claims the loop ") + (stable ? "stable" : "NOT stable") + ", the simulation expects it " +
+                (decaying ? "decaying" : "growing");
+  } catch (const std::exception& ex) {
+    if (e.error.empty()) e.error = std::string("the certificate has no claim.stable: ") + ex.what();
+  }
+  return e;
+}
+
+}  // namespace
+
 std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const fs::path& dir) {
   std::vector<CertificateEntry> out;
   for (SceneRun& r : runs) {
+    if (r.command == "simulate") {
+      if (auto e = simulated_scene_certificate(r, dir)) out.push_back(std::move(*e));
+      continue;
+    }
     if (r.command != "multidof analyze" && r.command != "multidof design") continue;
     const std::string sub = r.command == "multidof design" ? "design" : "analyze";
     CertificateEntry e;
