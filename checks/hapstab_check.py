@@ -1855,8 +1855,8 @@ SCENE_IGNORED = ("input", "initial", "simulate", "reproduce", "multidof")  # not
 
 
 def scene_beyond(where, what):
-    raise Malformed("model.scene: %s: %s (beyond this checker: a one-DOF scene of a device, at most one operator, "
-                    "an environment and a whole-sample delay)" % (where, what))
+    raise Malformed("model.scene: %s: %s (beyond this checker; docs/certificates.md lists what it reads of a scene)" % (
+        where, what))
 
 
 def scene_text(v, where):
@@ -1930,15 +1930,14 @@ def scene_siso(v, where):
     return v
 
 
-def scene_loop_model(model, free=False):
-    """model itself without model.scene; else {plant, H[, operator], set: {}, T, delay[, name]}: the
-    one-DOF loop of the scene (the stability kind's docstring above), read here from its TOML."""
-    if not isinstance(model, dict) or "scene" not in model:
-        return model
-    only(model, ("scene", "set", "name") if free else ("scene", "set"), "model")
+def scene_read(model, free):
+    """(root, T, expand, field) of model.scene: the TOML (only the loop's sections and the ignored ones),
+    T, and the parameters substituted (model.set replacing definitions; model.name, with free, stays a
+    name): expand(text, where) substitutes them in text, field(table, key, where, default) in a key's
+    value. Every parameter is expanded once: a cycle is malformed, used or not."""
     import tomllib
-    if not isinstance(model["scene"], str):
-        raise Malformed("model.scene: not a string (the scene's TOML text)")
+    if not isinstance(model.get("scene"), str):
+        raise Malformed("model.scene: missing or not a string (the scene's TOML text)")
     if len(model["scene"]) > 1 << 20:
         scene_beyond("the scene", "more than 1 MB")
     try:
@@ -1980,9 +1979,61 @@ def scene_loop_model(model, free=False):
     def field(t, key, where, default):
         return expand(scene_text(t[key], where + "." + key), where + "." + key) if key in t else default
 
-    for name in defs:  # every one, used or not: a cycle is malformed, as for hapstab's loader
+    for name in defs:
         if name != K:
             expand(name, "parameters." + name)
+    return root, T, expand, field
+
+
+def scene_wall_entry(env, text, expand):
+    """One entry of [environment] as an expression in z: its parameters substituted, s replaced by
+    backward Euler's or Tustin's z-expression where domain = "s"."""
+    for key in ("domain", "method"):
+        if key in env and not isinstance(env[key], str):
+            raise Malformed("model.scene: environment.%s: not a string" % key)
+    E = expand(text, "environment.tf")
+    domain = env.get("domain", "z")
+    if domain == "s":
+        sub = {"backward_euler": "(z-1)/(T*z)", "tustin": "2*(z-1)/(T*(z+1))"}.get(env.get("method"))
+        if sub is None:
+            raise Malformed("model.scene: environment.method: an s-domain environment needs \"backward_euler\" or \"tustin\"")
+        return " ".join("(" + sub + ")" if k == 'name' and t == 's' else t for k, t in lex(E)[:-1])
+    if domain != "z":
+        raise Malformed("model.scene: environment.domain: \"z\" or \"s\"")
+    if "method" in env:
+        raise Malformed("model.scene: environment.method: only with domain = \"s\"")
+    return E
+
+
+def scene_delay(root, T, field, limit=100000):
+    """[delay] as a whole number of samples in [0, limit]; 0 without the section."""
+    if "delay" not in root:
+        return 0
+    delay = root["delay"]
+    if not isinstance(delay, dict):
+        raise Malformed("model.scene: [delay]: not a table")
+    scene_keys(delay, ("time", "samples"), "delay")
+    if len(delay) != 1:
+        raise Malformed("model.scene: [delay]: give exactly one of time, samples")
+    key = next(iter(delay))
+    d = scene_constant(field(delay, key, "delay", "0"), T, "delay." + key)
+    d = d / T if key == "time" else d
+    if d < 0:
+        raise Malformed("model.scene: delay.%s: must be >= 0" % key)
+    if d.denominator != 1:
+        scene_beyond("delay." + key, "a delay of %s samples, not a whole number" % d)
+    if d > limit:
+        scene_beyond("delay." + key, "more than %d samples" % limit)
+    return int(d)
+
+
+def scene_loop_model(model, free=False):
+    """model itself without model.scene; else {plant, H[, operator], set: {}, T, delay[, name]}: the
+    one-DOF loop of the scene (the stability kind's docstring above), read here from its TOML."""
+    if not isinstance(model, dict) or "scene" not in model:
+        return model
+    only(model, ("scene", "set", "name") if free else ("scene", "set"), "model")
+    root, T, expand, field = scene_read(model, free)
     out = {"T": str(T), "set": {}}
     if free and "name" in model:
         out["name"] = model["name"]
@@ -2030,41 +2081,309 @@ def scene_loop_model(model, free=False):
     scene_keys(env, ("tf", "domain", "method", "gain"), "environment")
     if "tf" not in env:
         raise Malformed("model.scene: environment.tf: missing")
-    for key in ("domain", "method"):
-        if key in env and not isinstance(env[key], str):
-            raise Malformed("model.scene: environment.%s: not a string" % key)
-    E = expand(scene_siso(env["tf"], "environment.tf"), "environment.tf")
-    domain = env.get("domain", "z")
-    if domain == "s":
-        sub = {"backward_euler": "(z-1)/(T*z)", "tustin": "2*(z-1)/(T*(z+1))"}.get(env.get("method"))
-        if sub is None:
-            raise Malformed("model.scene: environment.method: an s-domain environment needs \"backward_euler\" or \"tustin\"")
-        E = " ".join("(" + sub + ")" if k == 'name' and t == 's' else t for k, t in lex(E)[:-1])
-    elif domain != "z":
-        raise Malformed("model.scene: environment.domain: \"z\" or \"s\"")
-    elif "method" in env:
-        raise Malformed("model.scene: environment.method: only with domain = \"s\"")
+    E = scene_wall_entry(env, scene_siso(env["tf"], "environment.tf"), expand)
     out["H"] = "(%s)*(%s)" % (field(env, "gain", "environment", "1"), E)
-    n = 0
-    if "delay" in root:
-        delay = root["delay"]
-        if not isinstance(delay, dict):
-            raise Malformed("model.scene: [delay]: not a table")
-        scene_keys(delay, ("time", "samples"), "delay")
-        if len(delay) != 1:
-            raise Malformed("model.scene: [delay]: give exactly one of time, samples")
-        key = next(iter(delay))
-        d = scene_constant(field(delay, key, "delay", "0"), T, "delay." + key)
-        d = d / T if key == "time" else d
-        if d < 0:
-            raise Malformed("model.scene: delay.%s: must be >= 0" % key)
-        if d.denominator != 1:
-            scene_beyond("delay." + key, "a delay of %s samples, not a whole number" % d)
-        if d > 100000:
-            scene_beyond("delay." + key, "more than 100000 samples")
-        n = int(d)
-    out["delay"] = n
+    out["delay"] = scene_delay(root, T, field)
     return out
+
+
+MAX_LOOP_ORDER = 60  # stability-loop: M's order (exact elimination of Q_mid - r I in Fractions)
+
+
+def scene_dof(v, names, where):
+    if isinstance(v, int) and not isinstance(v, bool) and 0 <= v < len(names):
+        return v
+    if isinstance(v, str) and v in names:
+        return names.index(v)
+    raise Malformed("model.scene: %s: not a DOF number or the name of a device" % where)
+
+
+def scene_text_matrix(v, n, where):
+    """An n x n matrix of expressions (a string when n = 1)."""
+    if isinstance(v, str):
+        if n != 1:
+            scene_beyond(where, "one transfer function for %d DOF (write the matrix)" % n)
+        return [[v]]
+    if not isinstance(v, list) or len(v) != n or any(not isinstance(r, list) or len(r) != n for r in v):
+        raise Malformed("model.scene: %s: expected a %d x %d matrix of strings" % (where, n, n))
+    if any(not isinstance(e, str) for r in v for e in r):
+        raise Malformed("model.scene: %s: an entry that is not a string" % where)
+    return v
+
+
+def scene_rf(text, T, var, where):
+    try:
+        return parse_h(text, T, {}, var, "model.scene: " + where)
+    except ZeroDivisionError:
+        raise Malformed("model.scene: %s: division by zero" % where)
+
+
+def scene_loop_read(model):
+    """stability-loop's reading of model.scene: (T, delay, mass, damping, stiffness, operators, E) with
+    per DOF the device's m, b plus its m, b, k operators; the tf operators [(ports, Z)], Z in s proper
+    without a pole at s = 0; E N x N in z (discretised, times gain)."""
+    only(model, ("scene", "set"), "model")
+    root, T, expand, field = scene_read(model, False)
+    devs = root.get("device")
+    if not isinstance(devs, list) or not devs or any(not isinstance(d, dict) for d in devs):
+        raise Malformed("model.scene: [[device]]: missing or not tables")
+    names, mass, damp, stiff = [], [], [], []
+    for i, d in enumerate(devs):
+        key = "device[%d]" % (i + 1)
+        scene_keys(d, ("name", "m", "b", "passive"), key)
+        if "m" not in d:
+            raise Malformed("model.scene: %s.m: missing (the device mass)" % key)
+        mass.append(scene_constant(field(d, "m", key, "0"), T, key + ".m"))
+        damp.append(scene_constant(field(d, "b", key, "0"), T, key + ".b"))
+        if mass[-1] <= 0 or damp[-1] < 0:
+            raise Malformed("model.scene: %s: m must be > 0 and b >= 0" % key)
+        stiff.append(Fraction(0))
+        names.append(d.get("name") if isinstance(d.get("name"), str) else "")
+    ops = []
+    tables = root.get("operator", [])
+    if not isinstance(tables, list) or any(not isinstance(o, dict) for o in tables):
+        raise Malformed("model.scene: [[operator]]: not tables")
+    for i, o in enumerate(tables):
+        key = "operator[%d]" % (i + 1)
+        scene_keys(o, ("name", "dofs", "m", "b", "k", "tf", "mass", "passive"), key)
+        dofs = o.get("dofs")
+        ports = [] if dofs is None else [scene_dof(x, names, key + ".dofs") for x in (dofs if isinstance(dofs, list) else [dofs])]
+        if "tf" not in o:
+            if "mass" in o:
+                raise Malformed("model.scene: %s.mass: only with tf" % key)
+            ports = ports or [0]
+            if len(ports) != 1:
+                raise Malformed("model.scene: %s.dofs: m, b, k act on one DOF" % key)
+            j = ports[0]
+            mass[j] += scene_constant(field(o, "m", key, "0"), T, key + ".m")
+            damp[j] += scene_constant(field(o, "b", key, "0"), T, key + ".b")
+            stiff[j] += scene_constant(field(o, "k", key, "0"), T, key + ".k")
+            continue
+        if any(k in o for k in ("m", "b", "k")):
+            raise Malformed("model.scene: %s: give either m, b, k or tf, not both" % key)
+        q = 1 if isinstance(o["tf"], str) else len(o["tf"]) if isinstance(o["tf"], list) else 0
+        ports = ports or list(range(min(q, len(names))))
+        if q == 0 or len(ports) != q:
+            raise Malformed("model.scene: %s.tf: not a square matrix over the operator's DOFs" % key)
+        Z = []
+        for row in scene_text_matrix(o["tf"], q, key + ".tf"):
+            Z.append([])
+            for e in row:
+                f = scene_rf(expand(e, key + ".tf"), T, 's', key + ".tf")
+                if len(f.num) > len(f.den):
+                    raise Malformed("model.scene: %s.tf: an improper entry (write a mass by m or mass)" % key)
+                if f.den[0] == 0:
+                    scene_beyond(key + ".tf", "an entry with a pole at s = 0 (a spring as k/s: give it by m, b, k)")
+                Z[-1].append(f)
+        if "mass" in o:
+            if not isinstance(o["mass"], list) or len(o["mass"]) != q:
+                raise Malformed("model.scene: %s.mass: expected a mass per DOF of the operator" % key)
+            for a, x in enumerate(o["mass"]):
+                mass[ports[a]] += scene_constant(expand(scene_text(x, key + ".mass"), key + ".mass"), T, key + ".mass")
+        ops.append((ports, Z))
+    env = root.get("environment")
+    if not isinstance(env, dict):
+        raise Malformed("model.scene: [environment]: missing (the loop has no controller)")
+    scene_keys(env, ("tf", "domain", "method", "gain"), "environment")
+    if "tf" not in env:
+        raise Malformed("model.scene: environment.tf: missing")
+    gain = scene_rf(field(env, "gain", "environment", "1"), T, 'z', "environment.gain")
+    E = []
+    for row in scene_text_matrix(env["tf"], len(names), "environment.tf"):
+        E.append([])
+        for e in row:
+            f = scene_rf(scene_wall_entry(env, e, expand), T, 'z', "environment.tf") * gain
+            if len(f.num) > len(f.den):
+                raise Malformed("model.scene: environment.tf: an improper entry in z")
+            E[-1].append(f)
+    return T, scene_delay(root, T, field, limit=1000), mass, damp, stiff, ops, E
+
+
+def realise_columns(G):
+    """(A, B, C, D) of the p x q matrix G (proper RFs): column j over the monic lcm d_j of its
+    denominators in controllable companion form (x_t' = x_(t+1), x_(r-1)' = -sum a_t x_t + u_j), C the
+    strictly proper numerators over d_j, D the direct part."""
+    p, q = len(G), len(G[0])
+    cols = []
+    for j in range(q):
+        d = [Fraction(1)]
+        for i in range(p):
+            g = pgcd(d, G[i][j].den)
+            d = pdivmod(pmul(d, G[i][j].den), g)[0]
+            d = [x / d[-1] for x in d]
+        cols.append(d)
+    n = sum(len(d) - 1 for d in cols)
+    A = [[Fraction(0)] * n for _ in range(n)]
+    B = [[Fraction(0)] * q for _ in range(n)]
+    C = [[Fraction(0)] * n for _ in range(p)]
+    D = [[Fraction(0)] * q for _ in range(p)]
+    off = 0
+    for j, d in enumerate(cols):
+        r = len(d) - 1
+        for t in range(r - 1):
+            A[off + t][off + t + 1] = Fraction(1)
+        for t in range(r):
+            A[off + r - 1][off + t] = -d[t]
+        if r:
+            B[off + r - 1][j] = Fraction(1)
+        for i in range(p):
+            f, rem = pdivmod(d, G[i][j].den)
+            if rem:
+                raise AssertionError("a denominator does not divide its column's lcm")
+            num = pmul(G[i][j].num, f)
+            D[i][j] = num[r] if len(num) > r else Fraction(0)
+            num = psub(num, [D[i][j] * x for x in d])
+            for t in range(r):
+                C[i][off + t] = num[t] if t < len(num) else Fraction(0)
+        off += r
+    return A, B, C, D
+
+
+def loop_plant(mass, damp, stiff, ops):
+    """(A, B) of stability-loop's continuous plant: per DOF (v_i, x_i), then the tf operators' states."""
+    N = len(mass)
+    reals = [realise_columns(Z) for _, Z in ops]
+    ns = 2 * N + sum(len(R[0]) for R in reals)
+    A = [[Fraction(0)] * ns for _ in range(ns)]
+    B = [[Fraction(0)] * N for _ in range(ns)]
+    for i in range(N):
+        A[2 * i][2 * i] = -damp[i] / mass[i]
+        A[2 * i][2 * i + 1] = -stiff[i] / mass[i]
+        A[2 * i + 1][2 * i] = Fraction(1)
+        B[2 * i][i] = 1 / mass[i]
+    off = 2 * N
+    for (ports, _), (Ao, Bo, Co, Do) in zip(ops, reals):
+        n = len(Ao)
+        for a, pa in enumerate(ports):
+            for t in range(n):
+                A[2 * pa][off + t] -= Co[a][t] / mass[pa]
+            for c, pc in enumerate(ports):
+                A[2 * pa][2 * pc] -= Do[a][c] / mass[pa]
+        for t in range(n):
+            for t2 in range(n):
+                A[off + t][off + t2] = Ao[t][t2]
+            for c, pc in enumerate(ports):
+                A[off + t][2 * pc] += Bo[t][c]
+        off += n
+    return A, B
+
+
+def expm_interval_n(A, t, bits):
+    """e^(A t) for a square rational A, enclosed entrywise: M = A t/2^s with ||M||_inf <= 1/2, its Taylor
+    sum in intervals plus the remainder ||M||^N/N! * 2 on every entry, then s squarings."""
+    Iv.bits = bits
+    n = len(A)
+    norm = max((sum(abs(x) for x in row) for row in A), default=Fraction(0)) * t
+    s = 0
+    while norm > Fraction(1, 2) * 2 ** s:
+        s += 1
+    M = [[Iv.out(x * t / 2 ** s, x * t / 2 ** s) for x in row] for row in A]
+    norm = norm / 2 ** s
+    S = [[Iv(1 if i == j else 0) for j in range(n)] for i in range(n)]
+    term, j, bound = [row[:] for row in S], 0, Fraction(1)
+    while True:
+        j += 1
+        term = [[sum((term[i][k] * M[k][l] for k in range(n)), Iv(0)) * Iv.out(Fraction(1, j), Fraction(1, j)) for l in range(n)]
+                for i in range(n)]
+        bound = bound * norm / j
+        S = [[S[i][l] + term[i][l] for l in range(n)] for i in range(n)]
+        if bound * 2 < Fraction(1, 2 ** (bits + 8)):
+            break
+    rem = bound * norm / (j + 1) * 2
+    P = [[x + Iv(-rem, rem) for x in row] for row in S]
+    for _ in range(s):
+        P = [[sum((P[i][k] * P[k][l] for k in range(n)), Iv(0)) for l in range(n)] for i in range(n)]
+    return P
+
+
+def loop_matrix(loop, bits):
+    """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`."""
+    T, n, mass, damp, stiff, ops, E = loop
+    A, Bu = loop_plant(mass, damp, stiff, ops)
+    N, ns = len(mass), len(A)
+    aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
+    X = expm_interval_n(aug, T, bits)
+    AE, BE, CE, DE = realise_columns(E)
+    nE = len(AE)
+    order = ns + nE + n * N
+    if order > MAX_LOOP_ORDER:
+        raise TooLarge("the closed loop has %d states, above this checker's limit %d" % (order, MAX_LOOP_ORDER))
+    # the force u_k = F [s; xi], F = [-D_E C_x, -C_E] (C_x picks the positions, states 2j + 1)
+    F = [[(-DE[i][(j - 1) // 2] if j < 2 * N and j % 2 else Fraction(0)) for j in range(ns)] + [-CE[i][t] for t in range(nE)]
+         for i in range(N)]
+    Z = Iv(0)
+    M = [[Z] * order for _ in range(order)]
+    for i in range(ns):
+        for j in range(ns):
+            M[i][j] = X[i][j]
+    if n == 0:
+        for i in range(ns):
+            for j in range(ns + nE):
+                M[i][j] = M[i][j] + sum((X[i][ns + k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
+    else:
+        for i in range(ns):
+            for j in range(N):
+                M[i][ns + nE + (n - 1) * N + j] = X[i][ns + j]
+        for i in range(N):
+            for j in range(ns + nE):
+                M[ns + nE + i][j] = Iv(F[i][j])
+        for b in range(1, n):
+            for i in range(N):
+                M[ns + nE + b * N + i][ns + nE + (b - 1) * N + i] = Iv(1)
+    for i in range(nE):
+        for j in range(N):
+            M[ns + i][2 * j + 1] = Iv(BE[i][j])
+        for j in range(nE):
+            M[ns + i][ns + j] = Iv(AE[i][j])
+    return M
+
+
+def check_stability_loop(c):
+    """stability-loop: the Stein inertia theorem on the closed loop M built here from the scene
+    (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (Q_mid minus
+    the radii's largest row sum times I, > 0 by exact elimination), and P > 0 (stable) or w^T P w < 0
+    (NOT stable)."""
+    model, claim, evidence = parts(c)
+    only(claim, ("quantity", "status", "stable"), "claim")
+    only(evidence, ("P", "w"), "evidence")
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\"")
+    if not isinstance(claim.get("stable"), bool):
+        raise Malformed("claim.stable: missing or not true/false")
+    stable = claim["stable"]
+    loop = scene_loop_read(model)
+    Pl = evidence.get("P")
+    n = len(Pl) if isinstance(Pl, list) else 0
+    if n > MAX_LOOP_ORDER:
+        raise TooLarge("evidence.P of order %d, above this checker's limit %d" % (n, MAX_LOOP_ORDER))
+    P = frac_matrix(evidence, "P", n, n)
+    if any(P[i][j] != P[j][i] for i in range(n) for j in range(i)):
+        raise Malformed("evidence.P: not symmetric")
+    if stable == ("w" in evidence):
+        raise Malformed("evidence.w: only for NOT stable" if stable else "evidence.w: missing (NOT stable needs w with w^T P w < 0)")
+    if stable:
+        if not semidefinite(P, True):
+            return False, "claim: stable, but evidence.P is not positive definite"
+        sign = "P > 0"
+    else:
+        w = frac_matrix({"w": [evidence["w"]]}, "w", 1, n)[0]
+        q = sum(w[i] * P[i][j] * w[j] for i in range(n) for j in range(n))
+        if q >= 0:
+            return False, "claim: NOT stable, but w^T P w = %s >= 0" % short(q)
+        sign = "w^T P w < 0"
+    for bits in (128, 256, 512):
+        M = loop_matrix(loop, bits)
+        if len(M) != n:
+            raise Malformed("evidence.P: order %d, the loop's %d" % (n, len(M)))
+        PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
+        Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
+        mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
+        r = max(sum((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2) for j in range(n)) for i in range(n))
+        S = [[(mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
+        if semidefinite(S, True):
+            return True, "%s (closed loop of %d states built from the scene, intervals at %d bits; P - M^T P M > 0 and %s)" % (
+                "stable" if stable else "NOT stable", n, bits, sign)
+    return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 
 
 def check_stability(c):
@@ -3422,7 +3741,8 @@ def check(c):
                     "multidof-facial": check_multidof_facial,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
-                    "r": check_r, "stability": check_stability, "stability-max": check_stability_max, "wedge": check_wedge}
+                    "r": check_r, "stability": check_stability, "stability-max": check_stability_max,
+                "stability-loop": check_stability_loop, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:
             raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))

@@ -4,6 +4,8 @@
 // stable gain of the mass on a virtual wall with delays 0 and 1 (closed forms below), MIMO ISP levels
 // (a diagonal G: the least SISO level; a coupled 2x2 against mpmath). The
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "hapstab/check/bound_objective.hpp"
@@ -12,6 +14,7 @@
 #include "hapstab/check/max_positive.hpp"
 #include "hapstab/check/reciprocal.hpp"
 #include "hapstab/check/scene_model.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -806,6 +809,71 @@ TEST(StabilityCheck, SceneByHand) {
   refused(ss, set, "device.ss");
   refused("[scene]\nT = \"1/1000\"\n", nlohmann::json::object(), "[[device]]");
   refused("not toml = = 1", set, "not TOML");
+}
+
+// The closed loop of a stability-loop certificate (check/stability_loop_check.hpp), by hand: one mass
+// m = 2 under a spring wall E = K = 100, T = 1/10, no delay. The state (v, x): Phi = [[1, 0], [T, 1]],
+// Gamma = [T/m; T^2/(2m)], u = -K x, so M = [[1, -K T/m], [T, 1 - K T^2/(2m)]] = [[1, -5], [1/10, 3/4]]
+// (det M = 3/4 + 1/2 = 5/4 > 1: NOT stable, the sampled spring on a mass). With b = 1: Phi's first
+// column is (e^{-bT/m}, (m/b)(1 - e^{-bT/m})). With a delay of one sample the force moves to a buffer.
+TEST(StabilityLoopCheck, ClosedLoopByHand) {
+  const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
+  const nlohmann::json model{{"scene", scene}, {"set", nlohmann::json::object()}};
+  const auto M = scene_loop_matrix(model, 128);
+  ASSERT_EQ(M.size(), 2u);
+  const rational want[2][2] = {{rational(1), rational(-5)}, {rational(1, 10), rational(3, 4)}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_LE(M[i][j].first, want[i][j]);
+      EXPECT_GE(M[i][j].second, want[i][j]);
+      EXPECT_LT(rational(M[i][j].second - M[i][j].first), rational(1, 1000000000));
+    }
+  std::string damped = scene;
+  damped.replace(damped.find("m = \"2\""), 7, "m = \"2\"\nb = \"1\"");
+  const auto D = scene_loop_matrix({{"scene", damped}, {"set", nlohmann::json::object()}}, 128);
+  const double e = std::exp(-0.05);  // e^{-bT/m}
+  EXPECT_NEAR(D[0][0].first.convert_to<double>(), e, 1e-12);  // M[0][0] = Phi[0][0] (the force depends on x only)
+  EXPECT_NEAR(D[1][0].first.convert_to<double>(), 2 * (1 - e), 1e-12);
+  std::string delayed = scene + "[delay]\nsamples = 1\n";
+  const auto Dl = scene_loop_matrix({{"scene", delayed}, {"set", nlohmann::json::object()}}, 128);
+  ASSERT_EQ(Dl.size(), 3u);  // (v, x, u_{k-1})
+  EXPECT_EQ(Dl[2][1].first, rational(-100));  // u_k = -K x_k
+  EXPECT_LE(Dl[0][2].first, rational(1, 20));  // Gamma_v = T/m
+  EXPECT_GE(Dl[0][2].second, rational(1, 20));
+}
+
+// A P that proves the hand loop above NOT stable: M^T P M - P = -I solved for M = [[1, -5], [1/10, 3/4]]
+// is indefinite; the checker verifies P - M^T P M > 0 over M's enclosure and w^T P w < 0. A P for
+// another loop, the claim flipped, and scenes beyond the reading are refused or refuted.
+TEST(StabilityLoopCheck, SteinCertificateByHand) {
+  const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
+  // P - M^T P M = I exactly for this P (both eigenvalues of M have |z| = sqrt(5)/2 > 1: P < 0)
+  nlohmann::json cert{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop"},
+                      {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                      {"claim", {{"status", "certified"}, {"stable", false}}},
+                      {"evidence", {{"P", nlohmann::json::array({nlohmann::json::array({"-1461/800", "29/40"}), nlohmann::json::array({"29/40", "-229/2"})})},
+                                    {"w", nlohmann::json::array({"1", "0"})}}}};
+  const auto v = check_certificate(cert);
+  EXPECT_TRUE(v.verified) << v.reason;
+  auto flipped = cert;
+  flipped["claim"]["stable"] = true;
+  flipped["evidence"].erase("w");
+  EXPECT_FALSE(check_certificate(flipped).verified);
+  auto other = cert;
+  other["model"]["scene"] = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\nb = \"40\"\n[environment]\ntf = \"100\"\n";
+  EXPECT_FALSE(check_certificate(other).verified);  // a damped loop: this P does not prove it
+  for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
+           {"[coupling]\ntf = \"1\"\n", "[coupling]"}, {"[delay]\nsamples = \"1/2\"\n", "not a whole number"},
+           {"[[operator]]\ntf = \"1/s\"\n", "pole at s = 0"}}) {
+    auto c = cert;
+    c["model"]["scene"] = scene + edit;
+    try {
+      check_certificate(c);
+      ADD_FAILURE() << "accepted: " << edit;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  }
 }
 
 // Res(f, g) = lc(f)^deg g prod_{f(a) = 0} g(a): Res(z - 2, z - 5) = -3; Res_{d,d}(c, c*) with

@@ -224,6 +224,45 @@ class SceneModel(unittest.TestCase):
             self.assertIn(field, why)
 
 
+LOOP_SCENE = '[scene]\nT = "1/10"\n[[device]]\nname = "a"\nm = "2"\n[environment]\ntf = "100"\n'
+
+
+def loop_cert(scene, stable, P, w=None):
+    c = {"certificate": "hapstab", "version": 1, "kind": "stability-loop", "model": {"scene": scene, "set": {}},
+         "claim": {"status": "certified", "stable": stable}, "evidence": {"P": P}}
+    if w is not None:
+        c["evidence"]["w"] = w
+    return c
+
+
+class StabilityLoop(unittest.TestCase):
+    """The C++ StabilityLoopCheck tests: a mass m = 2 under a spring wall K = 100 at T = 1/10, M =
+    [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""
+    P = [["-1461/800", "29/40"], ["29/40", "-229/2"]]
+
+    def test_closed_loop_by_hand(self):
+        M = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE, "set": {}}), 128)
+        want = [[Fraction(1), Fraction(-5)], [Fraction(1, 10), Fraction(3, 4)]]
+        for i in range(2):
+            for j in range(2):
+                self.assertTrue(M[i][j].lo <= want[i][j] <= M[i][j].hi)
+                self.assertLess(M[i][j].hi - M[i][j].lo, Fraction(1, 10 ** 9))
+        D = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE + '[delay]\nsamples = 1\n', "set": {}}), 128)
+        self.assertEqual(len(D), 3)
+        self.assertEqual(D[2][1].lo, -100)
+
+    def test_stein_by_hand(self):
+        self.assertEqual(hc.check(loop_cert(LOOP_SCENE, False, self.P, ["1", "0"]))[0], 0)
+        self.assertEqual(hc.check(loop_cert(LOOP_SCENE, True, self.P))[0], 1)
+        damped = LOOP_SCENE.replace('m = "2"', 'm = "2"\nb = "40"')
+        self.assertEqual(hc.check(loop_cert(damped, False, self.P, ["1", "0"]))[0], 1)
+        for edit, field in (('[coupling]\ntf = "1"\n', "[coupling]"), ('[delay]\nsamples = "1/2"\n', "not a whole number"),
+                            ('[[operator]]\ntf = "1/s"\n', "pole at s = 0")):
+            code, why = hc.check(loop_cert(LOOP_SCENE + edit, False, self.P, ["1", "0"]))
+            self.assertEqual(code, 2, why)
+            self.assertIn(field, why)
+
+
 def frac_cert(H, T, td, claim, witness, c_lo=None):
     c = {"certificate": "hapstab", "version": 1, "kind": "bound",
          "model": {"H": H, "set": {"K": "2", "B": "2"}, "T": T, "delay": 0, "frac_delay": td, "eta": "0"},

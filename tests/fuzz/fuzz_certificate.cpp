@@ -9,7 +9,8 @@
 // an expression, the numbers' digits; docs/certificates.md "Sizes and times" measures real ones),
 // so inputs beyond this budget are passed over, never checked: a delay above 64 samples, an
 // exponent above 64, a number of more than 300 digits, a fractional delay t_d/T whose denominator
-// is above 16, a scene whose loop model (check/scene_model.hpp) is beyond these or above 16 KB.
+// is above 16, a scene whose loop model (check/scene_model.hpp) is beyond these or above 16 KB, a
+// stability-loop P of order above 24.
 // Within it every input must finish in
 // libFuzzer's 10 s.
 #include <cstdint>
@@ -76,6 +77,13 @@ bool fraction_over_budget(const nlohmann::json& c) {
   }
 }
 
+/// A stability-loop certificate's work grows with P's order (the closed loop's): above 24, passed over.
+bool loop_over_budget(const nlohmann::json& c) {
+  if (!c.is_object() || !c.contains("evidence") || !c.at("evidence").is_object()) return false;
+  const auto& e = c.at("evidence");
+  return e.contains("P") && e.at("P").is_array() && e.at("P").size() > 24;
+}
+
 /// A scene (check/scene_model.hpp) is checked as the loop model it is read into, within the same
 /// budget; its parameters, substituted, may make that model larger than the input: above 16 KB it is
 /// passed over.
@@ -99,7 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } catch (const nlohmann::json::exception&) {
     return 0;  // `hapstab check` reports it as "not JSON" before any checker runs
   }
-  if (over_budget(c, "") || fraction_over_budget(c) || scene_over_budget(c)) return -1;  // not added to the corpus
+  if (over_budget(c, "") || fraction_over_budget(c) || scene_over_budget(c) || loop_over_budget(c)) return -1;  // not added to the corpus
   try {
     const hapstab::check::Verdict v = hapstab::check::check_certificate(c);
     if (v.reason.empty()) std::abort();  // every verdict says what was shown or what failed

@@ -22,6 +22,7 @@
 #include "hapstab/check/passivity_level_mimo_check.hpp"
 #include "hapstab/check/r_check.hpp"
 #include "hapstab/check/stability_check.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
 #include "hapstab/check/stability_max_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -252,8 +253,9 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "r") return check_r(c);
   if (kind == "stability") return check_stability(c);
   if (kind == "stability-max") return check_stability_max(c);
+  if (kind == "stability-loop") return check_stability_loop(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-loop, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

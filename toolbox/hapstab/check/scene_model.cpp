@@ -23,8 +23,8 @@ constexpr size_t kMaxExpandedBytes = size_t(1) << 20;  // parameters substituted
 constexpr int kMaxDotsPerLine = 256;  // toml++ recurses per component of a dotted key (report/toml_limits.hpp)
 
 [[noreturn]] void beyond(const std::string& where, const std::string& what) {
-  throw InputError("model.scene: " + where + ": " + what + " (beyond this checker: a one-DOF scene of a device, at most one "
-                   "operator, an environment and a whole-sample delay; docs/certificates.md)");
+  throw InputError("model.scene: " + where + ": " + what + " (beyond this checker; docs/certificates.md lists what it reads of "
+                   "a scene)");
 }
 [[noreturn]] void malformed(const std::string& where, const std::string& what) {
   throw InputError("model.scene: " + where + ": " + what);
@@ -273,7 +273,166 @@ long read_delay(const toml::table& root, Parameters& p, const rational& T) {
   return static_cast<long>(bmp::numerator(d));
 }
 
+// An expression in `var` ('s' or 'z') as a rational function (its parameters already substituted).
+RationalFunction<rational> parse_in(const std::string& text, char var, const rational& T, const std::string& where) {
+  ParseOptions po;
+  po.variable = var;
+  po.T = T;
+  try {
+    const TransferFunction t = parse_tf(text, po);
+    if (t.is_discrete() != (var == 'z')) malformed(where, std::string("expected a transfer function in ") + var);
+    return t.H;
+  } catch (const InputError& e) {
+    malformed(where, e.what());
+  }
+}
+
+bool proper(const RationalFunction<rational>& f) { return f.num().degree() <= f.den().degree(); }
+
+// The DOF a device name or a DOF number names.
+int dof_of(const toml::node& n, const std::vector<std::string>& names, const std::string& where) {
+  if (const auto* i = n.as_integer()) {
+    if (i->get() < 0 || i->get() >= static_cast<int64_t>(names.size())) malformed(where, "no DOF " + std::to_string(i->get()));
+    return static_cast<int>(i->get());
+  }
+  if (const auto* s = n.as_string())
+    for (size_t k = 0; k < names.size(); ++k)
+      if (names[k] == s->get()) return static_cast<int>(k);
+  malformed(where, "not a DOF number or the name of a device");
+}
+
+// A matrix of expressions (an array of arrays of strings), rows x cols.
+std::vector<std::vector<std::string>> text_matrix(const toml::node& n, size_t rows, const std::string& where) {
+  std::vector<std::vector<std::string>> out;
+  if (const auto* str = n.as_string()) {
+    if (rows != 1) beyond(where, "one transfer function for " + std::to_string(rows) + " DOF (write the matrix)");
+    return {{str->get()}};
+  }
+  const auto* a = n.as_array();
+  if (!a || a->size() != rows) malformed(where, "expected a " + std::to_string(rows) + " x " + std::to_string(rows) + " matrix of strings");
+  for (const auto& row : *a) {
+    const auto* r = row.as_array();
+    if (!r || r->size() != rows) malformed(where, "expected a " + std::to_string(rows) + " x " + std::to_string(rows) + " matrix of strings");
+    out.emplace_back();
+    for (const auto& e : *r) {
+      const auto* str = e.as_string();
+      if (!str) malformed(where, "an entry that is not a string");
+      out.back().push_back(str->get());
+    }
+  }
+  return out;
+}
+
+const toml::array& tables(const toml::table& root, const char* key) {
+  static const toml::array none;
+  const toml::node* n = root.get(key);
+  if (!n) return none;
+  const auto* a = n->as_array();
+  if (!a) malformed(key, "expected an array of tables [[" + std::string(key) + "]]");
+  for (const auto& t : *a)
+    if (!t.as_table()) malformed(std::string("[[") + key + "]]", "not a table");
+  return *a;
+}
+
+void read_loop_operator(const toml::table& op, const std::string& key, const std::vector<std::string>& names, Parameters& p,
+                        const rational& T, SceneLoop& out) {
+  only_keys(op, {"name", "dofs", "m", "b", "k", "tf", "mass", "passive"}, key);
+  std::vector<int> ports;
+  if (const toml::node* d = op.get("dofs")) {
+    if (const auto* list = d->as_array())
+      for (size_t i = 0; i < list->size(); ++i) ports.push_back(dof_of((*list)[i], names, key + ".dofs"));
+    else
+      ports.push_back(dof_of(*d, names, key + ".dofs"));
+  }
+  if (!op.contains("tf")) {
+    if (op.contains("mass")) malformed(key + ".mass", "only with tf");
+    if (ports.empty()) ports.push_back(0);
+    if (ports.size() != 1) malformed(key + ".dofs", "m, b, k act on one DOF");
+    const int j = ports[0];
+    out.mass[j] += constant(field(op, "m", key, p, "0"), T, key + ".m");
+    out.damping[j] += constant(field(op, "b", key, p, "0"), T, key + ".b");
+    out.stiffness[j] += constant(field(op, "k", key, p, "0"), T, key + ".k");
+    return;
+  }
+  if (op.contains("m") || op.contains("b") || op.contains("k")) malformed(key, "give either m, b, k or tf, not both");
+  const toml::node& tf = *op.get("tf");
+  const size_t q = tf.as_string() ? 1 : tf.as_array() ? tf.as_array()->size() : 0;
+  if (ports.empty())
+    for (size_t i = 0; i < q && i < names.size(); ++i) ports.push_back(static_cast<int>(i));
+  if (q == 0 || ports.size() != q) malformed(key + ".tf", "not a square matrix over the operator's DOFs");
+  SceneLoop::Impedance Z;
+  Z.ports = ports;
+  for (const auto& row : text_matrix(tf, q, key + ".tf")) {
+    Z.Z.emplace_back();
+    for (const auto& e : row) {
+      Z.Z.back().push_back(parse_in(p.expand(e, key + ".tf"), 's', T, key + ".tf"));
+      if (!proper(Z.Z.back().back())) malformed(key + ".tf", "an improper entry (write a mass by m or mass)");
+      if (Z.Z.back().back().den().coeff(0) == 0)
+        beyond(key + ".tf", "an entry with a pole at s = 0 (a spring as k/s: give it by m, b, k)");
+    }
+  }
+  if (const toml::node* mass = op.get("mass")) {
+    const auto* a = mass->as_array();
+    if (!a || a->size() != q) malformed(key + ".mass", "expected a mass per DOF of the operator");
+    for (size_t i = 0; i < q; ++i)
+      out.mass[ports[i]] += constant(p.expand(text_of((*a)[i], key + ".mass"), key + ".mass"), T, key + ".mass");
+  }
+  out.operators.push_back(std::move(Z));
+}
+
 }  // namespace
+
+SceneLoop read_scene_loop(const nlohmann::json& model) {
+  only_fields(model, {"scene", "set"}, "model");
+  if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string (the scene's TOML text)");
+  const toml::table root = parse_scene(model.at("scene").get<std::string>());
+  const auto* header = root["scene"].as_table();
+  if (!header || !header->contains("T")) malformed("[scene].T", "missing (the sample period)");
+  only_keys(*header, {"name", "description", "T"}, "scene");
+  SceneLoop out;
+  out.T = constant(text_of(*header->get("T"), "scene.T"), rational(0), "scene.T");
+  if (out.T <= 0) malformed("scene.T", "must be > 0");
+  const rational& T = out.T;
+  Parameters p = read_parameters(root, model, "");
+  std::vector<std::string> names;
+  const toml::array& devices = tables(root, "device");
+  if (devices.empty()) malformed("[[device]]", "missing");
+  for (size_t i = 0; i < devices.size(); ++i) {
+    const toml::table& d = *devices[i].as_table();
+    const std::string key = "device[" + std::to_string(i + 1) + "]";
+    only_keys(d, {"name", "m", "b", "passive"}, key);
+    if (!d.contains("m")) malformed(key + ".m", "missing (the device mass)");
+    out.mass.push_back(constant(field(d, "m", key, p, "0"), T, key + ".m"));
+    out.damping.push_back(constant(field(d, "b", key, p, "0"), T, key + ".b"));
+    if (out.mass.back() <= 0) malformed(key + ".m", "must be > 0");
+    if (out.damping.back() < 0) malformed(key + ".b", "must be >= 0");
+    out.stiffness.push_back(0);
+    names.push_back(d.get("name") && d.get("name")->as_string() ? d.get("name")->as_string()->get() : "");
+  }
+  const toml::array& ops = tables(root, "operator");
+  for (size_t i = 0; i < ops.size(); ++i) read_loop_operator(*ops[i].as_table(), "operator[" + std::to_string(i + 1) + "]", names, p, T, out);
+  const auto* env = root["environment"].as_table();
+  if (!env) malformed("[environment]", "missing (the loop has no controller)");
+  only_keys(*env, {"tf", "domain", "method", "gain"}, "environment");
+  if (!env->contains("tf")) malformed("environment.tf", "missing");
+  const std::string gain = field(*env, "gain", "environment", p, "1");
+  for (const auto& row : text_matrix(*env->get("tf"), names.size(), "environment.tf")) {
+    out.E.emplace_back();
+    for (const auto& e : row) {
+      // read_wall's discretisation and gain, entry by entry
+      toml::table one;
+      one.insert("tf", e);
+      for (const char* key : {"domain", "method"})
+        if (env->contains(key)) one.insert(key, *env->get(key));
+      const std::string H = read_wall(&one, p);  // "(1)*(E)": the gain below
+      out.E.back().push_back(parse_in(H, 'z', T, "environment.tf") * parse_in(gain, 'z', T, "environment.gain"));
+      if (!proper(out.E.back().back())) malformed("environment.tf", "an improper entry in z");
+    }
+  }
+  out.delay = read_delay(root, p, T);
+  if (out.delay > 1000) beyond("[delay]", "more than 1000 samples for the closed-loop matrix");
+  return out;
+}
 
 nlohmann::json scene_loop_model(const nlohmann::json& model, bool free) {
   if (!model.is_object() || !model.contains("scene")) return model;

@@ -22,10 +22,43 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/poly/rational_function.hpp"
+
 namespace hapstab::check::detail {
+
+/// A scene's loop of any number of DOF, as the `stability-loop` kind reads it (its own reading, as
+/// above, for the multi-DOF loop; check/stability_loop_check.hpp builds the closed loop from it):
+///   [[device]] m, b              one DOF each (device order), 1/(m s + b) force -> velocity
+///   [[operator]] m, b, k         on one DOF: adds m to its mass, b to its damping, k x to its force
+///   [[operator]] tf = Z, mass    on its DOFs: a proper impedance matrix Z(s) (no pole at s = 0: an
+///                                operator spring written as k/s is taken as k only by m, b, k),
+///                                velocity -> force, and a mass per port
+///   [environment] tf             N x N (or SISO for one DOF) in z, or in s by backward Euler/Tustin;
+///                                times gain
+///   [delay]                      a whole number of samples in [0, 1000]
+/// Refused by name: anything else (ss blocks, count, diagonal, [coupling], [contact], encoders,
+/// friction, a fractional delay, ...).
+struct SceneLoop {
+  rational T;
+  long delay = 0;
+  std::vector<rational> mass, damping, stiffness;  ///< per DOF: device plus m, b, k operators
+  struct Impedance {
+    std::vector<int> ports;                                   ///< DOF indices
+    std::vector<std::vector<RationalFunction<rational>>> Z;  ///< |ports| x |ports|, in s, proper
+  };
+  std::vector<Impedance> operators;                           ///< the tf operators
+  std::vector<std::vector<RationalFunction<rational>>> E;    ///< N x N, in z, proper (discretised, times gain)
+  size_t dofs() const { return mass.size(); }
+};
+
+/// model.scene read as above (model.set overrides parameters). InputError naming what is malformed
+/// or beyond this reading.
+SceneLoop read_scene_loop(const nlohmann::json& model);
 
 /// `model` itself when it has no "scene" field; else the loop model {plant, H[, operator], set: {},
 /// T, delay} (plus model.name, copied, when `free` is true: stability-max's K) of the scene in

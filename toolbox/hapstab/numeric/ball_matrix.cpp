@@ -349,6 +349,7 @@ SchurDecision schur_decide(const BallMatrix& M) {
   const std::string stein_text = "P - M^T P M > 0 proven in ball arithmetic for an exact P (" + std::to_string(n) + " x " +
                                  std::to_string(n) + ", solved from the Stein equation)";
   if (positive_definite(Pb, &why)) {
+    d.P = P;
     d.stable = true;
     d.why = "certified Schur stable: " + stein_text + " and P > 0 (Lyapunov); numeric spectral radius " + numeric_decimal(d.spectral_radius);
     return d;
@@ -374,6 +375,8 @@ SchurDecision schur_decide(const BallMatrix& M) {
   arb_clear(t);
   arb_clear(acc);
   if (negative) {
+    d.P = P;
+    d.w = w;
     d.stable = false;
     d.why = "certified NOT Schur stable (an eigenvalue with |z| > 1): " + stein_text +
             " and w^T P w < 0 for an exact w (Stein inertia); numeric spectral radius " + numeric_decimal(d.spectral_radius);

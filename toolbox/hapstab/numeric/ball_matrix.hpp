@@ -70,6 +70,8 @@ struct SchurDecision {
   std::optional<bool> stable;   ///< nullopt: undecided (why says so, with the margin)
   double spectral_radius = 0;   ///< of mid M, in double (numeric; the verdict does not rest on it)
   std::string why;              ///< the certificate in words, or why there is none
+  Eigen::MatrixXd P;            ///< when decided: the Stein P (its doubles are the exact dyadic P)
+  Eigen::VectorXd w;            ///< when NOT stable: w with w^T P w < 0 (exact dyadics)
 };
 SchurDecision schur_decide(const BallMatrix& M);
 

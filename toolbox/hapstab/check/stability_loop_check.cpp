@@ -1,0 +1,260 @@
+// hapstab/check/stability_loop_check.cpp -- see stability_loop_check.hpp.
+#include "hapstab/check/stability_loop_check.hpp"
+
+#include <string>
+
+
+#include "hapstab/check/rational_matrix.hpp"
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/numeric/ball.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+using P = Polynomial<rational>;
+using RF = RationalFunction<rational>;
+using rational_matrix::Mat;
+using BallRows = std::vector<std::vector<flint::Ball>>;
+
+constexpr size_t kMaxOrder = 160;  // M's order: exact elimination of Q_mid - r I stays within seconds
+
+struct Realisation {
+  Mat A, B, C, D;
+};
+
+// G (p x q, proper) column by column: column j over the monic lcm d_j of its denominators, in
+// controllable companion form (x_t' = x_{t+1}, x_{r-1}' = -sum a_t x_t + u_j: 1/d_j from u_j to x_0,
+// x_t = s^t x_0), the strictly proper numerators read off as C, the direct part as D.
+Realisation realise(const std::vector<std::vector<RF>>& G) {
+  const size_t p = G.size(), q = G.empty() ? 0 : G[0].size();
+  std::vector<P> d(q, P{rational(1)});
+  size_t total = 0;
+  for (size_t j = 0; j < q; ++j) {
+    for (size_t i = 0; i < p; ++i) {
+      const P& den = G[i][j].den();
+      d[j] = divmod(d[j] * den, gcd(d[j], den)).first.monic();
+    }
+    total += static_cast<size_t>(d[j].degree());
+  }
+  Realisation R{rational_matrix::zeros(total, total), rational_matrix::zeros(total, q), rational_matrix::zeros(p, total),
+                rational_matrix::zeros(p, q)};
+  size_t off = 0;
+  for (size_t j = 0; j < q; ++j) {
+    const size_t r = static_cast<size_t>(d[j].degree());
+    for (size_t t = 0; t + 1 < r; ++t) R.A[off + t][off + t + 1] = 1;
+    for (size_t t = 0; t < r; ++t) R.A[off + r - 1][off + t] = -d[j].coeff(static_cast<int>(t));
+    if (r > 0) R.B[off + r - 1][j] = 1;
+    for (size_t i = 0; i < p; ++i) {
+      const auto [factor, rem] = divmod(d[j], G[i][j].den());
+      if (!rem.is_zero()) throw InputError("model.scene: a denominator does not divide its column's lcm (checker defect)");
+      P num = G[i][j].num() * factor;  // column j = num / d_j, deg num <= r (proper)
+      const rational direct = num.degree() >= static_cast<int>(r) ? rational(num.coeff(static_cast<int>(r))) : rational(0);
+      R.D[i][j] = direct;
+      num = num - d[j] * P{direct};
+      for (size_t t = 0; t < r; ++t) R.C[i][off + t] = num.coeff(static_cast<int>(t));
+    }
+    off += r;
+  }
+  return R;
+}
+
+// The continuous plant (A, B_u) of the header, exact; outputs the positions x_i = state 2i + 1.
+std::pair<Mat, Mat> plant(const detail::SceneLoop& L) {
+  const size_t N = L.dofs();
+  std::vector<Realisation> ops;
+  size_t ns = 2 * N;
+  for (const auto& o : L.operators) {
+    ops.push_back(realise(o.Z));
+    ns += ops.back().A.size();
+  }
+  Mat A = rational_matrix::zeros(ns, ns), B = rational_matrix::zeros(ns, N);
+  for (size_t i = 0; i < N; ++i) {
+    A[2 * i][2 * i] = -L.damping[i] / L.mass[i];
+    A[2 * i][2 * i + 1] = -L.stiffness[i] / L.mass[i];
+    A[2 * i + 1][2 * i] = 1;
+    B[2 * i][i] = 1 / L.mass[i];
+  }
+  size_t off = 2 * N;
+  for (size_t o = 0; o < ops.size(); ++o) {
+    const Realisation& R = ops[o];
+    const std::vector<int>& ports = L.operators[o].ports;
+    const size_t n = R.A.size();
+    for (size_t a = 0; a < ports.size(); ++a) {
+      const size_t row = 2 * static_cast<size_t>(ports[a]);
+      const rational& m = L.mass[static_cast<size_t>(ports[a])];
+      for (size_t t = 0; t < n; ++t) A[row][off + t] -= R.C[a][t] / m;           // force -(C xi) on port a
+      for (size_t c = 0; c < ports.size(); ++c) A[row][2 * static_cast<size_t>(ports[c])] -= R.D[a][c] / m;  // -(D v)
+    }
+    for (size_t t = 0; t < n; ++t) {
+      for (size_t t2 = 0; t2 < n; ++t2) A[off + t][off + t2] = R.A[t][t2];
+      for (size_t c = 0; c < ports.size(); ++c) A[off + t][2 * static_cast<size_t>(ports[c])] += R.B[t][c];  // driven by v
+    }
+    off += n;
+  }
+  return {A, B};
+}
+
+std::string approx(const rational& x) { return std::to_string(x.convert_to<double>()); }
+
+BallRows balls(const Mat& M) {
+  BallRows out(M.size());
+  for (size_t i = 0; i < M.size(); ++i)
+    for (const rational& x : M[i]) out[i].push_back(flint::Ball(x));
+  return out;
+}
+
+BallRows zero_balls(size_t r, size_t c) { return BallRows(r, std::vector<flint::Ball>(c, flint::Ball(0L))); }
+
+BallRows product(const BallRows& X, const BallRows& Y) {
+  BallRows out = zero_balls(X.size(), Y.empty() ? 0 : Y[0].size());
+  for (size_t i = 0; i < X.size(); ++i)
+    for (size_t k = 0; k < Y.size(); ++k) {
+      if (X[i][k].is_zero()) continue;
+      for (size_t j = 0; j < out[i].size(); ++j) out[i][j] += X[i][k] * Y[k][j];
+    }
+  return out;
+}
+
+// M of the header at the thread's ball precision.
+BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
+  const auto [A, Bu] = plant(L);
+  const size_t N = L.dofs(), ns = A.size();
+  // [Phi Gamma; 0 I] = exp([A B; 0 0] T)
+  flint::BallMat aug(static_cast<long>(ns + N), static_cast<long>(ns + N)), ex(static_cast<long>(ns + N), static_cast<long>(ns + N));
+  for (size_t i = 0; i < ns; ++i) {
+    for (size_t j = 0; j < ns; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(j)), flint::Ball(A[i][j] * L.T).get());
+    for (size_t j = 0; j < N; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(ns + j)), flint::Ball(Bu[i][j] * L.T).get());
+  }
+  arb_mat_exp(ex.get(), aug.get(), bits);
+  BallRows Phi = zero_balls(ns, ns), Gamma = zero_balls(ns, N);
+  for (size_t i = 0; i < ns; ++i) {
+    for (size_t j = 0; j < ns; ++j) arb_set(Phi[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(j)));
+    for (size_t j = 0; j < N; ++j) arb_set(Gamma[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(ns + j)));
+  }
+  const Realisation E = realise(L.E);
+  const size_t nE = E.A.size(), n = static_cast<size_t>(L.delay), order = ns + nE + n * N;
+  if (order > kMaxOrder)
+    throw InputError("model.scene: the closed loop has " + std::to_string(order) + " states, beyond this checker's " +
+                     std::to_string(kMaxOrder));
+  Mat Cx = rational_matrix::zeros(N, ns);
+  for (size_t i = 0; i < N; ++i) Cx[i][2 * i + 1] = 1;
+  // the force u_k = F [s; xi], F = [-D_E C_x, -C_E]
+  Mat F = rational_matrix::zeros(N, ns + nE);
+  const Mat DC = rational_matrix::mul(E.D, Cx);
+  for (size_t i = 0; i < N; ++i) {
+    for (size_t j = 0; j < ns; ++j) F[i][j] = -DC[i][j];
+    for (size_t j = 0; j < nE; ++j) F[i][ns + j] = -E.C[i][j];
+  }
+  BallRows M = zero_balls(order, order);
+  for (size_t i = 0; i < ns; ++i)
+    for (size_t j = 0; j < ns; ++j) M[i][j] = Phi[i][j];
+  if (n == 0) {  // s+ = Phi s + Gamma u_k
+    const BallRows GF = product(Gamma, balls(F));
+    for (size_t i = 0; i < ns; ++i)
+      for (size_t j = 0; j < ns + nE; ++j) M[i][j] += GF[i][j];
+  } else {  // s+ = Phi s + Gamma u_{k-n}: the last block of the buffer
+    for (size_t i = 0; i < ns; ++i)
+      for (size_t j = 0; j < N; ++j) M[i][ns + nE + (n - 1) * N + j] = Gamma[i][j];
+    for (size_t i = 0; i < N; ++i)  // the buffer's first block: u_k
+      for (size_t j = 0; j < ns + nE; ++j) M[ns + nE + i][j] = flint::Ball(F[i][j]);
+    for (size_t b = 1; b < n; ++b)  // and each block moves one down
+      for (size_t i = 0; i < N; ++i) M[ns + nE + b * N + i][ns + nE + (b - 1) * N + i] = flint::Ball(1L);
+  }
+  const Mat BC = rational_matrix::mul(E.B, Cx);  // xi+ = A_E xi + B_E C_x s
+  for (size_t i = 0; i < nE; ++i) {
+    for (size_t j = 0; j < ns; ++j) M[ns + i][j] = flint::Ball(BC[i][j]);
+    for (size_t j = 0; j < nE; ++j) M[ns + i][ns + j] = flint::Ball(E.A[i][j]);
+  }
+  return M;
+}
+
+// Q = P - M^T P M > 0 for every M in the balls: Q_mid - r I > 0 exactly (the header).
+bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
+  const size_t n = Pm.size();
+  const BallRows Pb = balls(Pm);
+  BallRows Mt = zero_balls(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) Mt[i][j] = M[j][i];
+  const BallRows MPM = product(Mt, product(Pb, M));
+  Mat mid = rational_matrix::zeros(n, n), rad = rational_matrix::zeros(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) {
+      const auto e = (Pb[i][j] - MPM[i][j]).bounds();
+      mid[i][j] = (e.lo + e.hi) / 2;
+      rad[i][j] = (e.hi - e.lo) / 2;
+    }
+  rational r = 0;
+  Mat S = rational_matrix::zeros(n, n);
+  for (size_t i = 0; i < n; ++i) {
+    rational row = 0;
+    for (size_t j = 0; j < n; ++j) {
+      S[i][j] = (mid[i][j] + mid[j][i]) / 2;
+      const rational asym = mid[i][j] - S[i][j];
+      row += rad[i][j] + (asym < 0 ? rational(-asym) : asym);
+    }
+    if (row > r) r = row;
+  }
+  for (size_t i = 0; i < n; ++i) S[i][i] -= r;
+  if (rational_matrix::positive_definite(S, true)) return true;
+  why = "P - M^T P M is not shown positive definite (its midpoint minus " + approx(r) +
+        " I, the radii's largest row sum, has a pivot <= 0)";
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::pair<rational, rational>>> scene_loop_matrix(const nlohmann::json& model, long bits) {
+  const detail::SceneLoop L = detail::read_scene_loop(model);
+  flint::BallPrecision scope(bits);
+  const BallRows M = loop_matrix(L, bits);
+  std::vector<std::vector<std::pair<rational, rational>>> out(M.size());
+  for (size_t i = 0; i < M.size(); ++i)
+    for (const auto& x : M[i]) {
+      const auto e = x.bounds();
+      out[i].emplace_back(e.lo, e.hi);
+    }
+  return out;
+}
+
+Verdict check_stability_loop(const nlohmann::json& cert) {
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  detail::only_fields(claim, {"quantity", "status", "stable"}, "claim");
+  detail::only_fields(evidence, {"P", "w"}, "evidence");
+  if (!claim.contains("status") || claim.at("status") != "certified")
+    throw InputError("claim.status: missing or not \"certified\" (the loop holds exponentials: an enclosure decides)");
+  if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
+  const bool stable = claim.at("stable").get<bool>();
+  const detail::SceneLoop L = detail::read_scene_loop(model);
+  const Mat Pm = detail::exact_matrix(evidence, "P", "evidence", kMaxOrder);
+  if (!rational_matrix::symmetric(Pm)) throw InputError("evidence.P: not symmetric");
+  if (stable == evidence.contains("w")) throw InputError(stable ? "evidence.w: only for NOT stable" : "evidence.w: missing (NOT stable needs w with w^T P w < 0)");
+  std::string sign;
+  if (stable) {
+    if (!rational_matrix::positive_definite(Pm, true)) return {false, "claim: stable, but evidence.P is not positive definite"};
+    sign = "P > 0";
+  } else {
+    const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({evidence.at("w")})}}, "w", "evidence", kMaxOrder);
+    if (w[0].size() != Pm.size()) throw InputError("evidence.w: not of P's order");
+    const Mat Pw = rational_matrix::mul(Pm, rational_matrix::transpose(w));
+    rational q = 0;
+    for (size_t i = 0; i < Pm.size(); ++i) q += w[0][i] * Pw[i][0];
+    if (q >= 0) return {false, "claim: NOT stable, but w^T P w = " + approx(q) + " >= 0"};
+    sign = "w^T P w < 0 (an eigenvalue with |z| > 1)";
+  }
+  std::string why;
+  for (long bits : {128L, 256L, 512L}) {
+    flint::BallPrecision scope(bits);
+    const BallRows M = loop_matrix(L, bits);
+    if (M.size() != Pm.size())
+      throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()));
+    if (stein_holds(Pm, M, why))
+      return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(M.size()) + " states, " +
+                        std::to_string(L.dofs()) + " DOF, delay " + std::to_string(L.delay) + ") built from the scene, e^{AT} in balls (" +
+                        std::to_string(bits) + " bits); P - M^T P M > 0 for every M in them and " + sign + " (Stein inertia)"};
+  }
+  return {false, "claim: " + std::string(stable ? "stable" : "NOT stable") + ", but " + why + " at 512 bits"};
+}
+
+}  // namespace hapstab::check

@@ -1,0 +1,46 @@
+// hapstab/check/stability_loop_check.hpp -- the checker of a `stability-loop` certificate: the Schur
+// stability of a multi-DOF scene's sampled-data loop as written (`hapstab stability --scene S
+// --certificate FILE` beyond one DOF; paper 000 Sec. VI's loop, paper 001 Fig. 1 per DOF), from the
+// scene's text (check/scene_model.hpp's read_scene_loop), with the loop built here:
+//
+//   plant    per DOF i the state (v_i, x_i): m_i v_i' = -b_i v_i - k_i x_i + u_i - (Z v)_i, x_i' = v_i;
+//            each tf operator Z(s) on its ports realised column by column (column j: the monic lcm
+//            d_j of its denominators, a controllable companion form of the strictly proper part,
+//            D_j the direct part), its states after the DOFs' in operator order. Outputs y = x.
+//   hold     s_{k+1} = Phi s_k + Gamma u, [Phi Gamma; 0 I] = exp([A B; 0 0] T) (Arb's arb_mat_exp).
+//   wall     E(z) N x N realised column by column the same way: xi+ = A_E xi + B_E y,
+//            force u_k = -(C_E xi_k + D_E y_k) computed from the samples at kT and applied from
+//            kT + nT on: the state X = [s; xi; u_{k-1}; ...; u_{k-n}] and X_{k+1} = M X_k.
+//
+// Theorem (Stein; the inertia form, e.g. Ostrowski & Schneider 1962): if Q = P - M^T P M > 0 for a
+// symmetric P, M has no eigenvalue on |z| = 1 (M v = z v gives v* Q v = (1 - |z|^2) v* P v), and
+// M is Schur stable iff P > 0 (if M were stable, P = sum (M^T)^k Q M^k > 0). Evidence: P (exact,
+// symmetric) and, for NOT stable, w with w^T P w < 0. Verified: P symmetric; P > 0 or w^T P w < 0
+// exactly (rationals); Q > 0 for every M in the enclosure: Q's entries in balls (128, 256, 512
+// bits), Q_mid := their midpoints symmetrised, r := the largest row sum of the radii (>= ||Q - Q_mid||_2
+// for the symmetric difference), and Q_mid - r I > 0 by exact symmetric elimination. A P that does
+// not pass refutes the claim (exit 1): the evidence does not prove it.
+// The loop is the scene's loop as written up to modes that hapstab sets aside exactly (conserved
+// quantities of an operator's spring, which m, b, k writes on x itself) -- a tf operator with a pole
+// at s = 0 is refused -- and hidden modes of the column realisations, which are eigenvalues of M
+// here: a certificate exists only where they are off the circle, and then they are part of M.
+// Implements: paper 000 Sec. VI; paper 001 Fig. 1.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/certificate.hpp"
+#include "hapstab/numeric/scalar.hpp"
+
+namespace hapstab::check {
+
+/// M of the scene's loop as above (model: {"scene", "set"}): each entry's enclosure [lo, hi], exact
+/// rationals, computed in balls at `bits` (for the producer, which solves P from its midpoint).
+std::vector<std::vector<std::pair<rational, rational>>> scene_loop_matrix(const nlohmann::json& model, long bits);
+
+Verdict check_stability_loop(const nlohmann::json& certificate);
+
+}  // namespace hapstab::check
