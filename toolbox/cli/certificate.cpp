@@ -1,11 +1,14 @@
 // cli/certificate.cpp -- see certificate.hpp.
 #include "cli/certificate.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "cli/command.hpp"
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/interval.hpp"
@@ -139,17 +142,18 @@ Enclosure<rational> printed_enclosure(nlohmann::json& claim, const std::string& 
 }
 
 // The model of the one-DOF loop of `stability` as written (plant, H, operator, set, T, delay).
+// {"scene": the file's text, "set": the --set values}: the model of a scene's certificate.
+nlohmann::json scene_model_json(const std::string& path, const std::vector<std::string>& sets) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream all;
+  all << in.rdbuf();
+  if (!in) throw InputError("--certificate: cannot read the scene '" + path + "' again");
+  return {{"scene", all.str()}, {"set", sets_json(sets)}};
+}
+
 nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
+  if (!text.scene.empty()) return scene_model_json(text.scene, text.sets);  // the checkers read its one-DOF loop themselves
   nlohmann::json m;
-  if (!text.scene.empty()) {  // the scene as written: the checkers read its one-DOF loop themselves
-    std::ifstream in(text.scene, std::ios::binary);
-    std::ostringstream all;
-    all << in.rdbuf();
-    if (!in) throw InputError("--certificate: cannot read the scene '" + text.scene + "' again");
-    m["scene"] = all.str();
-    m["set"] = sets_json(text.sets);
-    return m;
-  }
   m["plant"] = text.plant;
   m["H"] = text.H;
   if (!text.op.empty()) m["operator"] = text.op;
@@ -494,6 +498,49 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
   if (!evidence.contains("charpoly")) j["claim"]["status"] = "certified";
   // the checker decides alone, or reads the scene itself: refuse what it cannot verify
   if (!evidence.contains("charpoly") || !text.scene.empty()) verify_before_writing(j);
+  return j;
+}
+
+nlohmann::json stability_loop_certificate(const std::string& scene_path, const std::vector<std::string>& sets, bool stable) {
+  nlohmann::json j = certificate_header("stability-loop");
+  j["model"] = scene_model_json(scene_path, sets);
+  std::vector<std::vector<std::pair<rational, rational>>> M;
+  try {
+    M = check::scene_loop_matrix(j["model"], 128);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
+  }
+  BallMatrix Mb(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
+  for (size_t i = 0; i < M.size(); ++i)
+    for (size_t k = 0; k < M.size(); ++k) {
+      const auto& [lo, hi] = M[i][k];
+      const double mid = rational((lo + hi) / 2).convert_to<double>();
+      const rational off = rational(hi - lo) / 2 + abs(rational((lo + hi) / 2) - exact_rational(mid));
+      Mb.mid(Eigen::Index(i), Eigen::Index(k)) = mid;
+      Mb.rad(Eigen::Index(i), Eigen::Index(k)) = std::nextafter(off.convert_to<double>(), 1e300);
+    }
+  const SchurDecision d = schur_decide(Mb);
+  if (!d.stable)
+    throw InputError("--certificate: no Stein certificate for the checker's closed-loop matrix (" + d.why + "): no certificate");
+  if (*d.stable != stable)
+    throw NumericalError("--certificate: the checker's closed-loop matrix and the loop as written got different verdicts (a "
+                         "defect): no certificate");
+  auto rows = [](const Eigen::MatrixXd& A) {
+    nlohmann::json r = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {
+      nlohmann::json row = nlohmann::json::array();
+      for (Eigen::Index k = 0; k < A.cols(); ++k) row.push_back(exact_rational(A(i, k)).str());
+      r.push_back(row);
+    }
+    return r;
+  };
+  j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop (devices, operators, zero-order hold, "
+                             "force = -z^-n E(z) x(kT)), its closed-loop matrix built by the checker"},
+                {"stable", stable},
+                {"status", "certified"}};
+  j["evidence"] = {{"P", rows(d.P)}};
+  if (!stable) j["evidence"]["w"] = rows(d.w.transpose())[0];
+  verify_before_writing(j);
   return j;
 }
 

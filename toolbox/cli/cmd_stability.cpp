@@ -202,12 +202,9 @@ bool one_dof_scene(const scene::Scene& sc) {
 
 // --scene --certificate: a one-DOF scene's verdict on its transfer-function loop (stability/
 // scene_loop.hpp, the loop of --plant/--H), whose certificate holds the scene's text (kind
-// stability; the checkers read the loop from the scene themselves, check/scene_model.hpp).
+// stability; the checkers read the loop from the scene themselves, check/scene_model.hpp). Other
+// scenes: kind stability-loop (cli::stability_loop_certificate).
 nlohmann::json scene_certificate(const StabilityOpts& o, const scene::Scene& sc) {
-  if (!one_dof_scene(sc))
-    throw InputError("--certificate: a certificate of stability --scene with " +
-                     (sc.loop.coupling ? std::string("a [coupling]") : std::to_string(sc.loop.dofs()) + " DOF") +
-                     " is not implemented yet (one-DOF scenes without a coupling have one)");
   stability::Loop loop;
   try {
     loop = stability::scene_loop(sc);
@@ -232,13 +229,14 @@ int run_scene(const StabilityOpts& o) {
     }
   }();
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
-  const nlohmann::json certificate = o.certificate.empty() ? nlohmann::json() : scene_certificate(o, sc);
+  const bool one_dof = one_dof_scene(sc);
+  const nlohmann::json one_dof_certificate = o.certificate.empty() || !one_dof ? nlohmann::json() : scene_certificate(o, sc);
   const stability::LoopVerdict v =
       stability::decide_loop(sc.loop, o.no_symmetry ? stability::Decider::no_symmetry : stability::Decider::automatic);
-  if (!certificate.is_null()) {
-    if (!v.stable || *v.stable != certificate["claim"]["stable"].get<bool>())
+  if (!o.certificate.empty() && v.stable) {  // undecided: the verdict is printed, no certificate (below)
+    if (one_dof && *v.stable != one_dof_certificate["claim"]["stable"].get<bool>())
       throw NumericalError("--certificate: the loop as written and its one-DOF loop got different verdicts (a defect): no certificate");
-    cli::write_certificate(o.certificate, certificate);
+    cli::write_certificate(o.certificate, one_dof ? one_dof_certificate : cli::stability_loop_certificate(o.scene, o.sets, *v.stable));
   }
   nlohmann::json hidden = nlohmann::json::array();
   for (const auto& h : v.hidden.modes)
@@ -257,6 +255,7 @@ int run_scene(const StabilityOpts& o) {
     std::cout << (v.stable ? (*v.stable ? "stable" : "NOT stable") : "undecided") << "   [" << j["status"].get<std::string>()
               << "]   (" << sc.loop.dofs() << " DOF, " << (v.method.empty() ? "not decided" : v.method) << ")\n  " << v.why << "\n"
               << (v.hidden.modes.empty() || !v.hidden.stable() ? "" : "  " + v.hidden.summary() + "\n");
+  if (!v.stable && !o.certificate.empty()) std::cerr << "--certificate: undecided, so no certificate was written\n";
   if (!v.stable) return cli::exit_numerical;  // undecided (the nonlinear parts were refused above)
   return *v.stable ? cli::exit_ok : cli::exit_property_fails;
 }

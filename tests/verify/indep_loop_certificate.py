@@ -1,0 +1,158 @@
+"""`stability --scene S --certificate` on multi-DOF scenes (kind stability-loop: the checkers build the
+closed-loop matrix from the scene's text themselves, check/stability_loop_check.hpp and
+checks/hapstab_check.py's loop_matrix) against the loop built in mpmath from the numbers drawn
+(indep_loop.py's scene loop: ZOH by mpmath.expm, the environment realised entry by entry, spectral
+radius at 50 digits), never from hapstab or its checkers.
+
+Scenes: indep_loop.gen_scene's 2-3 DOF loops (diagonal walls K + B (z - 1)/(T z), a linking spring
+in 40 %, operator dampers or damper-springs, delays 0-2), every device a mass-damper (the checkers do
+not read ss devices), the environment's gain g placed at 0.2-3 times 1 and, in a third, within 1e-4
+of the reference's own crossing. hapstab's verdict must be the reference's, both checkers must verify
+its certificate, and refute it with the claim flipped (w added or dropped) and with P's first
+diagonal entry negated.
+
+  indep_loop_certificate.py HAPSTAB [--cases N] [--seed S]
+exit 0 when every case agrees, else 1.
+"""
+import copy
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction as Q
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mpmath as mp  # noqa: E402
+
+import indep_loop as IL  # noqa: E402
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def checkers(exe, f):
+    return ([exe, "check", f], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), f])
+
+
+def draw(rng):
+    c = IL.gen_scene(rng)
+    for i, d in enumerate(c["devices"]):
+        if d["kind"] != "md":
+            c["devices"][i] = dict(kind="md", m=d["m"], b=IL.rq(rng, 0, 5))
+    c["g"] = IL.rq(rng, 0.2, 3)
+    return c
+
+
+def rho(c, g):
+    with mp.workdps(IL.DPS):
+        return IL.rho_mp(IL.build_loop_scene(c), mp.mpf(g.numerator) / g.denominator)[0]
+
+
+def near_crossing(c, rng):
+    """g within 1e-4 (relative) of the reference's first crossing above 0.05, on a random side; None
+    when there is none below 20."""
+    lo, hi = Q(1, 20), None
+    r_lo = rho(c, lo)
+    for k in range(1, 10):
+        g = Q(1, 20) * 2 ** k
+        if (rho(c, g) < 1) != (r_lo < 1):
+            hi = g
+            break
+        lo = g
+    if hi is None:
+        return None
+    for _ in range(20):  # bisection to 2^-20 of the bracket: ~1e-6 relative
+        mid = (lo + hi) / 2
+        if (rho(c, mid) < 1) == (r_lo < 1):
+            lo = mid
+        else:
+            hi = mid
+    g = (lo + hi) / 2
+    return g * (1 + Q(rng.choice([-1, 1]), 10000))
+
+
+def run_case(exe, c, tmp):
+    scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
+    with open(scene, "w") as f:
+        f.write(IL.scene_toml(c))
+    if os.path.exists(cert):
+        os.remove(cert)
+    r = subprocess.run([exe, "stability", "--scene", scene, "--set", "g=%s" % c["g"], "--json", "--certificate", cert],
+                       capture_output=True, text=True, timeout=600)
+    rr = rho(c, c["g"])
+    what = "g = %s, rho %s" % (c["g"], mp.nstr(rr, 12))
+    if abs(1 - rr) < mp.mpf(10) ** -30:
+        return None, what + ": on the boundary (skipped)", None
+    stable = rr < 1
+    if r.returncode == 2 and "no Stein certificate" in r.stderr:
+        return None, what + ": no Stein certificate (refused by name): " + r.stderr.strip()[:200], None
+    if r.returncode == 3 and "no certificate was written" in r.stderr and not os.path.exists(cert):
+        return None, what + ": undecided, no certificate", None
+    if r.returncode not in (0, 1):
+        return False, "%s: exit %d: %s" % (what, r.returncode, r.stderr.strip()[:300]), None
+    j = json.loads(r.stdout)
+    cl = json.load(open(cert))
+    if j["stable"] != stable or cl["claim"]["stable"] != stable or cl["kind"] != "stability-loop":
+        return False, "%s: hapstab %s, its certificate %s (%s), the reference %s" % (
+            what, j["stable"], cl["claim"]["stable"], cl["kind"], stable), None
+    mutants = []
+    flipped = copy.deepcopy(cl)
+    flipped["claim"]["stable"] = not stable
+    if stable:
+        flipped["evidence"]["w"] = ["1"] + ["0"] * (len(cl["evidence"]["P"]) - 1)
+    else:
+        del flipped["evidence"]["w"]
+    mutants.append(("claim flipped", flipped))
+    negated = copy.deepcopy(cl)
+    p00 = negated["evidence"]["P"][0][0]
+    negated["evidence"]["P"][0][0] = p00[1:] if p00.startswith("-") else "-" + p00
+    mutants.append(("P[0][0] negated", negated))
+    for name, m in mutants:
+        with open(bad, "w") as f:
+            json.dump(m, f)
+        for cmd in checkers(exe, bad):
+            v = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+            if v.returncode != 1:
+                return False, "%s: %s: %s exits %d: %s" % (what, name, os.path.basename(cmd[1]), v.returncode,
+                                                           (v.stdout + v.stderr).strip()[:200]), None
+    for cmd in checkers(exe, cert):
+        v = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        if v.returncode != 0:
+            return False, "%s: %s exits %d: %s" % (what, os.path.basename(cmd[1]), v.returncode, (v.stdout + v.stderr).strip()[:300]), None
+    branch = "stable" if stable else "NOT stable"
+    return True, "%s: %s (%d states), verified by both, 2 mutants refuted by both" % (what, branch, len(cl["evidence"]["P"])), branch
+
+
+def main(argv):
+    exe = argv[1]
+    cases = int(argv[argv.index("--cases") + 1]) if "--cases" in argv else 12
+    seed = int(argv[argv.index("--seed") + 1]) if "--seed" in argv else 1
+    rng = random.Random("loop-certificate:%d" % seed)
+    bad = good = skipped = near = 0
+    branches = {"stable": 0, "NOT stable": 0}
+    with tempfile.TemporaryDirectory(prefix="hapstab-loop-cert-") as tmp:
+        for i in range(cases):
+            c = draw(rng)
+            if i % 3 == 2:
+                g = near_crossing(c, rng)
+                if g is not None:
+                    c["g"], near = g, near + 1
+            ok, line, branch = run_case(exe, c, tmp)
+            print("%s case %d (%s DOF, delay %d): %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], i, c["tags"]["DOF"], c["n"], line))
+            bad += ok is False
+            good += ok is True
+            skipped += ok is None
+            if ok:
+                branches[branch] += 1
+    print("indep_loop_certificate: %d cases, %d agree, %d disagree, %d skipped; %d within 1e-4 of a crossing; %s" % (
+        cases, good, bad, skipped, near, ", ".join("'%s' %d" % kv for kv in branches.items())))
+    if cases >= 12 and 0 in branches.values():
+        print("indep_loop_certificate: TOO FEW COMPARED: a verdict never reached")
+        return 1
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
