@@ -3,7 +3,6 @@
 
 #include <string>
 
-
 #include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/numeric/ball.hpp"
