@@ -1516,6 +1516,115 @@ def lc_mutants(cert, rng, hapstab, cache, tmp):
     return out
 
 
+def rand_loop_scene(rng):
+    """A random multi-DOF scene the stability-loop kind reads: 2-3 mass-damper DOFs, operators (b, or
+    m, b, k, on one DOF; a tf impedance coupling two DOFs in a fifth), diagonal walls K + B(z-1)/(Tz)
+    with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a delay 0-2."""
+    N = rng.choice([2, 2, 3])
+    T = rng.choice(["1/1000", "1/500"])
+    L = ["[scene]", 'T = "%s"' % T, "[parameters]", 'g = "%s"' % rng.choice(["1/2", "1", "2", "5"]),
+         'kc = "%d"' % (rng.randint(50, 2000) if rng.random() < 0.4 else 0)]
+    for i in range(N):
+        L += ["[[device]]", 'name = "d%d"' % i, 'm = "%s"' % rng.choice(["1/10", "1/2", "1"]), 'b = "%s"' % rng.choice(["0", "1/2", "2"])]
+    for i in range(N):
+        if rng.random() < 0.5:
+            L += ["[[operator]]", 'dofs = "d%d"' % i, 'b = "%s"' % rng.choice(["1", "3"])]
+            if rng.random() < 0.5:
+                L += ['k = "%d"' % rng.choice([50, 500]), 'm = "1/20"']
+    if rng.random() < 0.2:
+        L += ["[[operator]]", 'dofs = ["d0", "d1"]', 'tf = [["2*(s + 3)/(s + 1)", "1/2"], ["1/2", "1"]]', 'mass = ["1/50", "0"]']
+    Ks = [rng.randint(100, 3000) for _ in range(N)]
+    Bs = [rng.choice([0, 1, 4]) for _ in range(N)]
+    domain = rng.choice(["z", "backward_euler", "tustin"])
+    rows = []
+    for i in range(N):
+        row = []
+        for j in range(N):
+            if i == j:
+                links = (1 if i > 0 else 0) + (1 if i < N - 1 else 0)
+                e = "%d + %d*kc + %d*s" % (Ks[i], links, Bs[i]) if domain != "z" else "%d + %d*kc + %d*(z-1)/(T*z)" % (Ks[i], links, Bs[i])
+            elif abs(i - j) == 1:
+                e = "-kc"
+            else:
+                e = "0"
+            row.append('"%s"' % e)
+        rows.append("[" + ", ".join(row) + "]")
+    L.append("[environment]")
+    if domain != "z":
+        L += ['domain = "s"', 'method = "%s"' % domain]
+    L += ["tf = [" + ", ".join(rows) + "]", 'gain = "g"']
+    n = rng.choice([0, 0, 1, 2])
+    if n:
+        L += ["[delay]", 'samples = "%d"' % n]
+    return "\n".join(L) + "\n"
+
+
+def loop_produce(hapstab, scene, cache, tmp):
+    """`stability --scene`'s certificate of the scene text (cached), or the exit code when it writes none."""
+    path = os.path.join(tmp, "loop.toml")
+    with open(path, "w") as f:
+        f.write(scene)
+    return produce(hapstab, ["stability", "--scene", path], "loop:" + scene, "l-edit.json", cache, tmp)
+
+
+def loop_mutants(cert, rng, hapstab, cache, tmp):
+    """stability-loop: the claim flipped, P scaled (accept for a positive factor), P asymmetric or cut
+    (malformed), an entry of P moved (agree: a nearby P may still prove it), w scaled or zero, the scene
+    edited (the edited scene's own certificate decides: another verdict refutes, the same one is
+    agree, another order is malformed), sections and fields the checkers do not read."""
+    out = [("unmutated", cert, "accept")]
+    ev, st = cert["evidence"], cert["claim"]["stable"]
+    P = [[Fraction(x) for x in r] for r in ev["P"]]
+    n = len(P)
+    flipped = with_field(cert, ["claim", "stable"], not st)
+    if st:
+        flipped["evidence"]["w"] = ["1"] + ["0"] * (n - 1)
+    else:
+        del flipped["evidence"]["w"]
+    out.append(("claim flipped", flipped, "refute"))
+    k = Fraction(rng.choice([2, 3, 7]), rng.choice([1, 5, 11]))
+    out.append(("P scaled by %s" % k, with_field(cert, ["evidence", "P"], [[frac(k * x) for x in r] for r in P]), "accept"))
+    out.append(("P negated", with_field(cert, ["evidence", "P"], [[frac(-x) for x in r] for r in P]), "refute"))
+    i, j = rng.randrange(n), rng.randrange(n)
+    if i != j:
+        asym = [[frac(x) for x in r] for r in P]
+        asym[i][j] = frac(P[i][j] + 1)
+        out.append(("P[%d][%d] alone moved (asymmetric)" % (i, j), with_field(cert, ["evidence", "P"], asym), "malformed"))
+    moved = [[frac(x) for x in r] for r in P]
+    moved[i][j] = moved[j][i] = frac(P[i][j] * Fraction(1001, 1000) + Fraction(1, 10 ** 6))
+    out.append(("P[%d][%d] and P[%d][%d] moved" % (i, j, j, i), with_field(cert, ["evidence", "P"], moved), "agree"))
+    out.append(("P's last row and column cut", with_field(cert, ["evidence", "P"], [[frac(x) for x in r[:-1]] for r in P[:-1]]), "malformed"))
+    if not st:
+        w = [Fraction(x) for x in ev["w"]]
+        out.append(("w doubled", with_field(cert, ["evidence", "w"], [frac(2 * x) for x in w]), "accept"))
+        out.append(("w zero", with_field(cert, ["evidence", "w"], ["0"] * n), "refute"))
+        out.append(("w one entry short", with_field(cert, ["evidence", "w"], ev["w"][:-1]), "malformed"))
+    scene = cert["model"]["scene"]
+    edits = [("g x 4", scene.replace('g = "', 'g = "4*', 1)), ("g / 4", scene.replace('g = "', 'g = "(1/4)*', 1)),
+             ("T halved", scene.replace('T = "', 'T = "(1/2)*', 1)), ("the first mass x 4", scene.replace('m = "', 'm = "4*', 1)),
+             ("the first damping + 5", scene.replace('b = "', 'b = "5 + ', 1))]
+    for name, text in edits:
+        if text == scene:
+            continue
+        other = loop_produce(hapstab, text, cache, tmp)
+        if isinstance(other, dict):
+            expect = "malformed" if len(other["evidence"]["P"]) != n else ("agree" if other["claim"]["stable"] == st else "refute")
+        else:
+            expect = "agree"
+        out.append(("scene: " + name, with_field(cert, ["model", "scene"], text), expect))
+    out.append(("scene: a [coupling]", with_field(cert, ["model", "scene"], scene + '[coupling]\ntf = "1/1000"\n'), "malformed"))
+    out.append(("scene: an ss device", with_field(cert, ["model", "scene"],
+                                                   scene.replace('[[device]]\nname = "d0"', '[[device]]\nname = "d0"\nss = { A = [["0"]] }', 1)), "malformed"))
+    out.append(("scene: a delay of half a sample", with_field(cert, ["model", "scene"], scene.replace(
+        "[environment]", '[delay]\nsamples = "1/2"\n[environment]', 1) if "[delay]" not in scene else scene.replace('samples = "', 'samples = "1/2 + ', 1)), "malformed"))
+    for path in (["model", "scene"], ["evidence", "P"], ["claim", "stable"], ["claim", "status"]):
+        out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
+    out.append(("status exact", with_field(cert, ["claim", "status"], "exact"), "malformed"))
+    out.append(("added evidence.charpoly", with_field(cert, ["evidence", "charpoly"], ["1", "1"]), "malformed"))
+    out.append(("added model.plant", with_field(cert, ["model", "plant"], "1/s^2"), "malformed"))
+    return out
+
+
 def rand_r(rng):
     T = rng.choice(["1/1000", "1/100", "3/7", "0.002", "1"])
     w = "%s%d/%d" % (rng.choice(["", "-"]), rng.randint(1, 10 ** 6), rng.randint(1, 10 ** 3))
@@ -1523,7 +1632,7 @@ def rand_r(rng):
 
 
 KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge",
-         "bound-inf", "limit-cycle", "multidof-witness")  # multidof-witness: multidof-feasible beside it
+         "bound-inf", "limit-cycle", "multidof-witness", "stability-loop")  # multidof-witness: multidof-feasible beside it
 
 
 def bound_produce(hapstab, m, digits, path, label, certs, skipped):
@@ -1542,8 +1651,9 @@ def bound_produce(hapstab, m, digits, path, label, certs, skipped):
 def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lrng):
     """The certificates of random models of each kind asked for, [(kind, certificate)], and the
     producer runs that wrote none {why: count}. rng draws every kind but stability-max (srng),
-    passivity-level-mimo (mrng), bound-inf (irng) and limit-cycle (lrng)."""
+    passivity-level-mimo (mrng), bound-inf (irng) and limit-cycle (lrng); stability-loop has its own."""
     certs = []  # (kind, certificate)
+    lrng2 = random.Random(a.seed * 1000 + 52)
     skipped = {}
     for i in range(a.models if "bound" in kinds else 0):
         m = rand_frac_model(rng) if i % 2 else rand_model(rng)
@@ -1598,6 +1708,12 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
             skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
             continue
         certs.append(("stability", cert))
+    for i in range(max(a.models // 4, 2) if "stability-loop" in kinds else 0):
+        cert = loop_produce(a.hapstab, rand_loop_scene(lrng2), scache, tmp)
+        if not isinstance(cert, dict):
+            skipped["stability-loop: exit %s" % cert] = skipped.get("stability-loop: exit %s" % cert, 0) + 1
+            continue
+        certs.append(("stability-loop", cert))
     for i in range(max(a.models // 2, 2) if "wedge" in kinds else 0):
         cert = wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp)
         if not isinstance(cert, dict):
@@ -1681,6 +1797,14 @@ def print_branches(certs, mutants, cpp):
             sum(1 for c in stab if "charpoly" in c["evidence"]), sum(1 for c in stab if "charpoly" not in c["evidence"]) - len(spring),
             len(spring),
             sum(1 for c in stab if c["claim"]["stable"]), sum(1 for c in stab if not c["claim"]["stable"])))
+    loops = [c for (k, nm, c, _) in mutants if k == "stability-loop" and nm == "unmutated"]
+    if loops:
+        sc = [c["model"]["scene"] for c in loops]
+        print("  stability-loop branches: stable %d, NOT stable %d; 3 DOF %d, a delay %d, a tf operator %d, the wall in s %d; "
+              "states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
+                                sum(1 for t in sc if 'name = "d2"' in t), sum(1 for t in sc if "[delay]" in t),
+                                sum(1 for t in sc if 'dofs = ["d0", "d1"]' in t), sum(1 for t in sc if 'domain = "s"' in t),
+                                min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
         print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (
@@ -1749,6 +1873,8 @@ def main():
             ms = inf_mutants(cert, irng, a.hapstab, cache)
         elif kind == "limit-cycle":
             ms = lc_mutants(cert, lrng, a.hapstab, scache, tmp)
+        elif kind == "stability-loop":
+            ms = loop_mutants(cert, scrng, a.hapstab, scache, tmp)
         elif kind.startswith("multidof-"):
             ms = mutate_multidof.mutants(cert, lrng)
         else:
