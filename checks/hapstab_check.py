@@ -1930,7 +1930,7 @@ def scene_siso(v, where):
     return v
 
 
-def scene_read(model, free):
+def scene_read(model, free, coupling=False):
     """(root, T, expand, field) of model.scene: the TOML (only the loop's sections and the ignored ones),
     T, and the parameters substituted (model.set replacing definitions; model.name, with free, stays a
     name): expand(text, where) substitutes them in text, field(table, key, where, default) in a key's
@@ -1945,7 +1945,7 @@ def scene_read(model, free):
     except (tomllib.TOMLDecodeError, RecursionError) as e:
         raise Malformed("model.scene: not TOML: %s" % e)
     for key in root:
-        if key not in SCENE_LOOP and key not in SCENE_IGNORED:
+        if key not in SCENE_LOOP and key not in SCENE_IGNORED and not (coupling and key == "coupling"):
             scene_beyond("[%s]" % key, "a section this checker does not model")
     head = root.get("scene")
     if not isinstance(head, dict) or "T" not in head:
@@ -2123,7 +2123,7 @@ def scene_loop_read(model):
     per DOF the device's m, b plus its m, b, k operators; the tf operators [(ports, Z)], Z in s proper
     without a pole at s = 0; E N x N in z (discretised, times gain)."""
     only(model, ("scene", "set"), "model")
-    root, T, expand, field = scene_read(model, False)
+    root, T, expand, field = scene_read(model, False, coupling=True)
     devs = root.get("device")
     if not isinstance(devs, list) or not devs or any(not isinstance(d, dict) for d in devs):
         raise Malformed("model.scene: [[device]]: missing or not tables")
@@ -2184,19 +2184,59 @@ def scene_loop_read(model):
     env = root.get("environment")
     if not isinstance(env, dict):
         raise Malformed("model.scene: [environment]: missing (the loop has no controller)")
-    scene_keys(env, ("tf", "domain", "method", "gain"), "environment")
-    if "tf" not in env:
-        raise Malformed("model.scene: environment.tf: missing")
-    gain = scene_rf(field(env, "gain", "environment", "1"), T, 'z', "environment.gain")
+    E = scene_discrete(env, "environment", len(names), T, expand, field)
+    V = None
+    if "coupling" in root:
+        if not isinstance(root["coupling"], dict):
+            raise Malformed("model.scene: [coupling]: not a table")
+        V = scene_discrete(root["coupling"], "coupling", len(names), T, expand, field)
+    return T, scene_delay(root, T, field, limit=1000), mass, damp, stiff, ops, E, V
+
+
+def scene_ss_matrix(ss, key, rows, cols, where, T, expand):
+    at = "%s.ss.%s" % (where, key)
+    a = ss.get(key)
+    if not isinstance(a, list):
+        raise Malformed("model.scene: %s: missing or not a matrix" % at)
+    if rows == 0 or cols == 0:
+        if not (a == [] or a == [[]] or (cols == 0 and len(a) == rows and all(r == [] for r in a))):
+            raise Malformed("model.scene: %s: not of size %d x %d" % (at, rows, cols))
+        return [[Fraction(0)] * cols for _ in range(rows)]
+    if len(a) != rows or any(not isinstance(r, list) or len(r) != cols for r in a):
+        raise Malformed("model.scene: %s: not of size %d x %d" % (at, rows, cols))
+    return [[scene_constant(expand(scene_text(x, at), at), T, at) for x in r] for r in a]
+
+
+def scene_discrete(t, where, N, T, expand, field):
+    """[environment] or [coupling]: ("tf", N x N RFs in z, times gain) or ("ss", (A, B, C, D) with C, D times gain)."""
+    scene_keys(t, ("tf", "ss", "domain", "method", "gain"), where)
+    if ("tf" in t) == ("ss" in t):
+        raise Malformed("model.scene: %s: give exactly one of tf, ss" % where)
+    gain_text = field(t, "gain", where, "1")
+    if "ss" in t:
+        if "domain" in t or "method" in t:
+            scene_beyond(where + ".domain", "an ss block in s")
+        ss = t["ss"]
+        if not isinstance(ss, dict) or any(k not in ("A", "B", "C", "D") for k in ss):
+            raise Malformed("model.scene: %s.ss: expected a table { A = ..., B = ..., C = ..., D = ... }" % where)
+        A = ss.get("A")
+        n = len(A) if isinstance(A, list) and A != [[]] else 0
+        g = scene_constant(gain_text, T, where + ".gain")
+        Am = scene_ss_matrix(ss, "A", n, n, where, T, expand)
+        Bm = scene_ss_matrix(ss, "B", n, N, where, T, expand)
+        Cm = [[g * x for x in r] for r in scene_ss_matrix(ss, "C", N, n, where, T, expand)]
+        Dm = [[g * x for x in r] for r in scene_ss_matrix(ss, "D", N, N, where, T, expand)]
+        return "ss", (Am, Bm, Cm, Dm)
+    gain = scene_rf(gain_text, T, 'z', where + ".gain")
     E = []
-    for row in scene_text_matrix(env["tf"], len(names), "environment.tf"):
+    for row in scene_text_matrix(t["tf"], N, where + ".tf"):
         E.append([])
         for e in row:
-            f = scene_rf(scene_wall_entry(env, e, expand), T, 'z', "environment.tf") * gain
+            f = scene_rf(scene_wall_entry(t, e, expand), T, 'z', where + ".tf") * gain
             if len(f.num) > len(f.den):
-                raise Malformed("model.scene: environment.tf: an improper entry in z")
+                raise Malformed("model.scene: %s.tf: an improper entry in z" % where)
             E[-1].append(f)
-    return T, scene_delay(root, T, field, limit=1000), mass, damp, stiff, ops, E
+    return "tf", E
 
 
 def realise_columns(G):
@@ -2296,45 +2336,83 @@ def expm_interval_n(A, t, bits):
     return P
 
 
+def frac_inverse(M):
+    """M^-1 by Gauss-Jordan in Fractions; Malformed when singular (det(I + D_E D_V) = 0)."""
+    n = len(M)
+    M = [list(r) + [Fraction(1 if i == j else 0) for j in range(n)] for i, r in enumerate(M)]
+    for c in range(n):
+        r = next((i for i in range(c, n) if M[i][c] != 0), None)
+        if r is None:
+            raise Malformed("model.scene: det(I + D_E D_V) = 0: the coupling's algebraic loop has no solution")
+        M[c], M[r] = M[r], M[c]
+        p = M[c][c]
+        M[c] = [x / p for x in M[c]]
+        for i in range(n):
+            if i != c and M[i][c] != 0:
+                f = M[i][c]
+                M[i] = [x - f * y for x, y in zip(M[i], M[c])]
+    return [r[n:] for r in M]
+
+
 def loop_matrix(loop, bits):
-    """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`."""
-    T, n, mass, damp, stiff, ops, E = loop
+    """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`: the plant held,
+    the controller x_e = x + V u, u = -E x_e solved exactly (u = F [s; xi; eta], x_e = X [s; xi; eta]),
+    the delay's buffer."""
+    T, n, mass, damp, stiff, ops, Eb, Vb = loop
     A, Bu = loop_plant(mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
-    X = expm_interval_n(aug, T, bits)
-    AE, BE, CE, DE = realise_columns(E)
-    nE = len(AE)
-    order = ns + nE + n * N
+    Xp = expm_interval_n(aug, T, bits)
+    AE, BE, CE, DE = Eb[1] if Eb[0] == "ss" else realise_columns(Eb[1])
+    if Vb is None:
+        AV, BV, CV, DV = [], [], [[] for _ in range(N)], [[Fraction(0)] * N for _ in range(N)]
+    else:
+        AV, BV, CV, DV = Vb[1] if Vb[0] == "ss" else realise_columns(Vb[1])
+    nE, nV = len(AE), len(AV)
+    nc = ns + nE + nV
+    order = nc + n * N
     if order > MAX_LOOP_ORDER:
         raise TooLarge("the closed loop has %d states, above this checker's limit %d" % (order, MAX_LOOP_ORDER))
-    # the force u_k = F [s; xi], F = [-D_E C_x, -C_E] (C_x picks the positions, states 2j + 1)
-    F = [[(-DE[i][(j - 1) // 2] if j < 2 * N and j % 2 else Fraction(0)) for j in range(ns)] + [-CE[i][t] for t in range(nE)]
-         for i in range(N)]
+    W = frac_inverse([[Fraction(1 if i == j else 0) + sum(DE[i][k] * DV[k][j] for k in range(N)) for j in range(N)] for i in range(N)])
+    F = [[Fraction(0)] * nc for _ in range(N)]
+    X = [[Fraction(0)] * nc for _ in range(N)]
+    for i in range(N):
+        for j in range(N):
+            for k in range(N):
+                F[i][2 * k + 1] -= W[i][j] * DE[j][k]
+            for t in range(nE):
+                F[i][ns + t] -= W[i][j] * CE[j][t]
+            for t in range(nV):
+                F[i][ns + nE + t] -= W[i][j] * sum(DE[j][k] * CV[k][t] for k in range(N))
+        X[i][2 * i + 1] += 1
+        for t in range(nV):
+            X[i][ns + nE + t] += CV[i][t]
+    X = [[X[i][j] + sum(DV[i][k] * F[k][j] for k in range(N)) for j in range(nc)] for i in range(N)]
     Z = Iv(0)
     M = [[Z] * order for _ in range(order)]
     for i in range(ns):
         for j in range(ns):
-            M[i][j] = X[i][j]
+            M[i][j] = Xp[i][j]
     if n == 0:
         for i in range(ns):
-            for j in range(ns + nE):
-                M[i][j] = M[i][j] + sum((X[i][ns + k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
+            for j in range(nc):
+                M[i][j] = M[i][j] + sum((Xp[i][ns + k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
     else:
         for i in range(ns):
             for j in range(N):
-                M[i][ns + nE + (n - 1) * N + j] = X[i][ns + j]
+                M[i][nc + (n - 1) * N + j] = Xp[i][ns + j]
         for i in range(N):
-            for j in range(ns + nE):
-                M[ns + nE + i][j] = Iv(F[i][j])
+            for j in range(nc):
+                M[nc + i][j] = Iv(F[i][j])
         for b in range(1, n):
             for i in range(N):
-                M[ns + nE + b * N + i][ns + nE + (b - 1) * N + i] = Iv(1)
+                M[nc + b * N + i][nc + (b - 1) * N + i] = Iv(1)
     for i in range(nE):
-        for j in range(N):
-            M[ns + i][2 * j + 1] = Iv(BE[i][j])
-        for j in range(nE):
-            M[ns + i][ns + j] = Iv(AE[i][j])
+        for j in range(nc):
+            M[ns + i][j] = Iv(sum(BE[i][k] * X[k][j] for k in range(N)) + (AE[i][j - ns] if ns <= j < ns + nE else 0))
+    for i in range(nV):
+        for j in range(nc):
+            M[ns + nE + i][j] = Iv(sum(BV[i][k] * F[k][j] for k in range(N)) + (AV[i][j - ns - nE] if j >= ns + nE else 0))
     return M
 
 

@@ -1519,7 +1519,8 @@ def lc_mutants(cert, rng, hapstab, cache, tmp):
 def rand_loop_scene(rng):
     """A random multi-DOF scene the stability-loop kind reads: 2-3 mass-damper DOFs, operators (b, or
     m, b, k, on one DOF; a tf impedance coupling two DOFs in a fifth), diagonal walls K + B(z-1)/(Tz)
-    with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a delay 0-2."""
+    with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a coupling (tf or ss) in
+    30 %, a delay 0-2."""
     N = rng.choice([2, 2, 3])
     T = rng.choice(["1/1000", "1/500"])
     L = ["[scene]", 'T = "%s"' % T, "[parameters]", 'g = "%s"' % rng.choice(["1/2", "1", "2", "5"]),
@@ -1553,6 +1554,14 @@ def rand_loop_scene(rng):
     if domain != "z":
         L += ['domain = "s"', 'method = "%s"' % domain]
     L += ["tf = [" + ", ".join(rows) + "]", 'gain = "g"']
+    if rng.random() < 0.3:  # a coupling in parallel with the devices: spring-dampers' admittances, tf or ss
+        kcs = [rng.choice([500, 2000, 8000]) for _ in range(N)]
+        if rng.random() < 0.5:
+            rows = [["\"T*z/((%d*T + 2)*z - 2)\"" % kcs[i] if i == j else '"0"' for j in range(N)] for i in range(N)]
+            L += ["[coupling]", "tf = [" + ", ".join("[" + ", ".join(r) + "]" for r in rows) + "]"]
+        else:  # a static compliance, as ss with no state
+            L += ["[coupling]", "ss = { A = [], B = [], C = [], D = [%s] }" % ", ".join(
+                "[" + ", ".join('"1/%d"' % kcs[i] if i == j else '"0"' for j in range(N)) + "]" for i in range(N))]
     n = rng.choice([0, 0, 1, 2])
     if n:
         L += ["[delay]", 'samples = "%d"' % n]
@@ -1612,7 +1621,7 @@ def loop_mutants(cert, rng, hapstab, cache, tmp):
         else:
             expect = "agree"
         out.append(("scene: " + name, with_field(cert, ["model", "scene"], text), expect))
-    out.append(("scene: a [coupling]", with_field(cert, ["model", "scene"], scene + '[coupling]\ntf = "1/1000"\n'), "malformed"))
+    out.append(("scene: a [contact]", with_field(cert, ["model", "scene"], scene + "[contact]\n"), "malformed"))
     out.append(("scene: an ss device", with_field(cert, ["model", "scene"],
                                                    scene.replace('[[device]]\nname = "d0"', '[[device]]\nname = "d0"\nss = { A = [["0"]] }', 1)), "malformed"))
     out.append(("scene: a delay of half a sample", with_field(cert, ["model", "scene"], scene.replace(
@@ -1801,9 +1810,10 @@ def print_branches(certs, mutants, cpp):
     if loops:
         sc = [c["model"]["scene"] for c in loops]
         print("  stability-loop branches: stable %d, NOT stable %d; 3 DOF %d, a delay %d, a tf operator %d, the wall in s %d; "
-              "states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
+              "a coupling %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
                                 sum(1 for t in sc if 'name = "d2"' in t), sum(1 for t in sc if "[delay]" in t),
                                 sum(1 for t in sc if 'dofs = ["d0", "d1"]' in t), sum(1 for t in sc if 'domain = "s"' in t),
+                                sum(1 for t in sc if "[coupling]" in t),
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:

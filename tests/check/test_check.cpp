@@ -815,7 +815,8 @@ TEST(StabilityCheck, SceneByHand) {
 // m = 2 under a spring wall E = K = 100, T = 1/10, no delay. The state (v, x): Phi = [[1, 0], [T, 1]],
 // Gamma = [T/m; T^2/(2m)], u = -K x, so M = [[1, -K T/m], [T, 1 - K T^2/(2m)]] = [[1, -5], [1/10, 3/4]]
 // (det M = 3/4 + 1/2 = 5/4 > 1: NOT stable, the sampled spring on a mass). With b = 1: Phi's first
-// column is (e^{-bT/m}, (m/b)(1 - e^{-bT/m})). With a delay of one sample the force moves to a buffer.
+// column is (e^{-bT/m}, (m/b)(1 - e^{-bT/m})). With a delay of one sample the force moves to a buffer;
+// with a coupling the wall sees x + V u.
 TEST(StabilityLoopCheck, ClosedLoopByHand) {
   const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
   const nlohmann::json model{{"scene", scene}, {"set", nlohmann::json::object()}};
@@ -840,6 +841,16 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
   EXPECT_EQ(Dl[2][1].first, rational(-100));  // u_k = -K x_k
   EXPECT_LE(Dl[0][2].first, rational(1, 20));  // Gamma_v = T/m
   EXPECT_GE(Dl[0][2].second, rational(1, 20));
+  // a coupling V = 1/100 (a spring's compliance) in parallel: x_e = x + V u, u = -K x_e, so
+  // u = -K/(1 + K V) x = -50 x and M = [[1, -5/2], [1/10, 7/8]]
+  const auto Cp = scene_loop_matrix({{"scene", scene + "[coupling]\ntf = \"1/100\"\n"}, {"set", nlohmann::json::object()}}, 128);
+  ASSERT_EQ(Cp.size(), 2u);
+  const rational coupled[2][2] = {{rational(1), rational(-5, 2)}, {rational(1, 10), rational(7, 8)}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_LE(Cp[i][j].first, coupled[i][j]);
+      EXPECT_GE(Cp[i][j].second, coupled[i][j]);
+    }
 }
 
 // A P that proves the hand loop above NOT stable: M^T P M - P = -I solved for M = [[1, -5], [1/10, 3/4]]
@@ -863,7 +874,7 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
   other["model"]["scene"] = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\nb = \"40\"\n[environment]\ntf = \"100\"\n";
   EXPECT_FALSE(check_certificate(other).verified);  // a damped loop: this P does not prove it
   for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
-           {"[coupling]\ntf = \"1\"\n", "[coupling]"}, {"[delay]\nsamples = \"1/2\"\n", "not a whole number"},
+           {"[contact]\n", "[contact]"}, {"[delay]\nsamples = \"1/2\"\n", "not a whole number"},
            {"[[operator]]\ntf = \"1/s\"\n", "pole at s = 0"}}) {
     auto c = cert;
     c["model"]["scene"] = scene + edit;

@@ -250,13 +250,18 @@ class StabilityLoop(unittest.TestCase):
         D = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE + '[delay]\nsamples = 1\n', "set": {}}), 128)
         self.assertEqual(len(D), 3)
         self.assertEqual(D[2][1].lo, -100)
+        Cp = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE + '[coupling]\ntf = "1/100"\n', "set": {}}), 128)
+        coupled = [[Fraction(1), Fraction(-5, 2)], [Fraction(1, 10), Fraction(7, 8)]]  # u = -K/(1 + K V) x = -50 x
+        for i in range(2):
+            for j in range(2):
+                self.assertTrue(Cp[i][j].lo <= coupled[i][j] <= Cp[i][j].hi)
 
     def test_stein_by_hand(self):
         self.assertEqual(hc.check(loop_cert(LOOP_SCENE, False, self.P, ["1", "0"]))[0], 0)
         self.assertEqual(hc.check(loop_cert(LOOP_SCENE, True, self.P))[0], 1)
         damped = LOOP_SCENE.replace('m = "2"', 'm = "2"\nb = "40"')
         self.assertEqual(hc.check(loop_cert(damped, False, self.P, ["1", "0"]))[0], 1)
-        for edit, field in (('[coupling]\ntf = "1"\n', "[coupling]"), ('[delay]\nsamples = "1/2"\n', "not a whole number"),
+        for edit, field in (("[contact]\n", "[contact]"), ('[delay]\nsamples = "1/2"\n', "not a whole number"),
                             ('[[operator]]\ntf = "1/s"\n', "pole at s = 0")):
             code, why = hc.check(loop_cert(LOOP_SCENE + edit, False, self.P, ["1", "0"]))
             self.assertEqual(code, 2, why)

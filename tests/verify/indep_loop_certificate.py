@@ -5,9 +5,10 @@ checks/hapstab_check.py's loop_matrix) against the loop built in mpmath from the
 radius at 50 digits), never from hapstab or its checkers.
 
 Scenes: indep_loop.gen_scene's 2-3 DOF loops (diagonal walls K + B (z - 1)/(T z), a linking spring
-in 40 %, operator dampers or damper-springs, delays 0-2), every device a mass-damper (the checkers do
-not read ss devices), the environment's gain g placed at 0.2-3 times 1 and, in a third, within 1e-4
-of the reference's own crossing. hapstab's verdict must be the reference's, both checkers must verify
+in 40 %, operator dampers or damper-springs, delays 0-2) and, every other case, indep_coupled's with
+a [coupling] V(z) (spring-dampers, springs, first-order blocks, a cross term; the reference solves
+x_e = x + V u, u = -E x_e per g itself), every device a mass-damper (the checkers do not read ss
+devices), g placed at 0.2-3 and, in a third, within 1e-4 of the reference's own crossing. hapstab's verdict must be the reference's, both checkers must verify
 its certificate, and refute it with the claim flipped (w added or dropped) and with P's first
 diagonal entry negated.
 
@@ -27,6 +28,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import mpmath as mp  # noqa: E402
 
+import indep_coupled as IC  # noqa: E402
 import indep_loop as IL  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -36,18 +38,27 @@ def checkers(exe, f):
     return ([exe, "check", f], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), f])
 
 
-def draw(rng):
-    c = IL.gen_scene(rng)
+def draw(rng, coupled):
+    """A scene of indep_loop.gen_scene (or, coupled, indep_coupled.gen_coupled's, with its [coupling]
+    V(z) and g in one of its five places) with every device a mass-damper."""
+    c = IC.gen_coupled(rng) if coupled else IL.gen_scene(rng)
     for i, d in enumerate(c["devices"]):
         if d["kind"] != "md":
             c["devices"][i] = dict(kind="md", m=d["m"], b=IL.rq(rng, 0, 5))
     c["g"] = IL.rq(rng, 0.2, 3)
+    c["coupled"] = coupled
     return c
 
 
 def rho(c, g):
     with mp.workdps(IL.DPS):
-        return IL.rho_mp(IL.build_loop_scene(c), mp.mpf(g.numerator) / g.denominator)[0]
+        loop = IC.CoupledLoop(c) if c["coupled"] else IL.build_loop_scene(c)
+        return IL.rho_mp(loop, mp.mpf(g.numerator) / g.denominator)[0]
+
+
+def scene_text(c):
+    """The scene with g = 1 in [parameters] (--set gives c["g"])."""
+    return IC.scene_toml(c, 1) if c["coupled"] else IL.scene_toml(c)
 
 
 def near_crossing(c, rng):
@@ -76,7 +87,7 @@ def near_crossing(c, rng):
 def run_case(exe, c, tmp):
     scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
     with open(scene, "w") as f:
-        f.write(IL.scene_toml(c))
+        f.write(scene_text(c))
     if os.path.exists(cert):
         os.remove(cert)
     r = subprocess.run([exe, "stability", "--scene", scene, "--set", "g=%s" % c["g"], "--json", "--certificate", cert],
@@ -130,25 +141,27 @@ def main(argv):
     cases = int(argv[argv.index("--cases") + 1]) if "--cases" in argv else 12
     seed = int(argv[argv.index("--seed") + 1]) if "--seed" in argv else 1
     rng = random.Random("loop-certificate:%d" % seed)
-    bad = good = skipped = near = 0
+    bad = good = skipped = near = coupled = 0
     branches = {"stable": 0, "NOT stable": 0}
     with tempfile.TemporaryDirectory(prefix="hapstab-loop-cert-") as tmp:
         for i in range(cases):
-            c = draw(rng)
+            c = draw(rng, i % 2 == 1)
             if i % 3 == 2:
                 g = near_crossing(c, rng)
                 if g is not None:
                     c["g"], near = g, near + 1
             ok, line, branch = run_case(exe, c, tmp)
-            print("%s case %d (%s DOF, delay %d): %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], i, c["tags"]["DOF"], c["n"], line))
+            print("%s case %d (%s DOF, delay %d%s): %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], i, c["tags"]["DOF"], c["n"],
+                                                           ", coupled, g in " + c["tags"]["g in"] if c["coupled"] else "", line))
             bad += ok is False
             good += ok is True
             skipped += ok is None
             if ok:
                 branches[branch] += 1
-    print("indep_loop_certificate: %d cases, %d agree, %d disagree, %d skipped; %d within 1e-4 of a crossing; %s" % (
-        cases, good, bad, skipped, near, ", ".join("'%s' %d" % kv for kv in branches.items())))
-    if cases >= 12 and 0 in branches.values():
+                coupled += c["coupled"]
+    print("indep_loop_certificate: %d cases, %d agree (%d with a coupling), %d disagree, %d skipped; %d within 1e-4 of a "
+          "crossing; %s" % (cases, good, coupled, bad, skipped, near, ", ".join("'%s' %d" % kv for kv in branches.items())))
+    if cases >= 12 and (0 in branches.values() or coupled == 0):
         print("indep_loop_certificate: TOO FEW COMPARED: a verdict never reached")
         return 1
     return 1 if bad else 0

@@ -145,7 +145,7 @@ std::string substitute(const std::string& text, const std::string& var, const st
   return p.expand(text, "environment.tf");
 }
 
-toml::table parse_scene(const std::string& text) {
+toml::table parse_scene(const std::string& text, bool coupling = false) {
   if (text.size() > kMaxSceneBytes) beyond("the scene", "more than 1 MB");
   for (size_t at = 0, dots = 0; at <= text.size(); ++at) {
     if (at == text.size() || text[at] == '\n') dots = 0;
@@ -161,7 +161,8 @@ toml::table parse_scene(const std::string& text) {
     const std::string key(k.str());
     static const std::set<std::string> loop{"scene", "parameters", "device", "operator", "environment", "delay"};
     static const std::set<std::string> ignored{"input", "initial", "simulate", "reproduce", "multidof"};
-    if (!loop.count(key) && !ignored.count(key)) beyond("[" + key + "]", "a section this checker does not model");
+    if (!loop.count(key) && !ignored.count(key) && !(coupling && key == "coupling"))
+      beyond("[" + key + "]", "a section this checker does not model");
   }
   return root;
 }
@@ -380,12 +381,78 @@ void read_loop_operator(const toml::table& op, const std::string& key, const std
   out.operators.push_back(std::move(Z));
 }
 
+// ss = { A, B, C, D }: exact numbers (expressions of the parameters), A n x n, B n x N, C N x n, D N x N.
+SceneLoop::Matrix ss_matrix(const toml::table& ss, const char* key, size_t rows, size_t cols, const std::string& where,
+                            Parameters& p, const rational& T) {
+  const std::string at = where + ".ss." + key;
+  const toml::node* n = ss.get(key);
+  if (!n || !n->as_array()) malformed(at, "missing or not a matrix");
+  const toml::array& a = *n->as_array();
+  SceneLoop::Matrix M;
+  if (rows == 0 || cols == 0) {  // an empty A, B or C: written [] or [[]]
+    if (!(a.empty() || (a.size() == 1 && a[0].as_array() && a[0].as_array()->empty()) || (cols == 0 && a.size() == rows)))
+      malformed(at, "not of size " + std::to_string(rows) + " x " + std::to_string(cols));
+    return SceneLoop::Matrix(rows, std::vector<rational>(cols));
+  }
+  if (a.size() != rows) malformed(at, "not of size " + std::to_string(rows) + " x " + std::to_string(cols));
+  for (const auto& row : a) {
+    const auto* r = row.as_array();
+    if (!r || r->size() != cols) malformed(at, "not of size " + std::to_string(rows) + " x " + std::to_string(cols));
+    M.emplace_back();
+    for (const auto& e : *r) M.back().push_back(constant(p.expand(text_of(e, at), at), T, at));
+  }
+  return M;
+}
+
+// [environment] or [coupling]: tf (in z, or in s with a method) or ss (in z), times gain.
+SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where, size_t N, Parameters& p, const rational& T) {
+  only_keys(t, {"tf", "ss", "domain", "method", "gain"}, where);
+  if (t.contains("tf") == t.contains("ss")) malformed(where, "give exactly one of tf, ss");
+  const std::string gain_text = field(t, "gain", where, p, "1");
+  SceneLoop::Discrete D;
+  if (t.contains("ss")) {
+    if (t.contains("domain") || t.contains("method")) beyond(where + ".domain", "an ss block in s");
+    const auto* ss = t.get("ss")->as_table();
+    if (!ss) malformed(where + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
+    for (const auto& [k, v] : *ss)
+      if (k.str() != "A" && k.str() != "B" && k.str() != "C" && k.str() != "D") malformed(where + ".ss." + std::string(k.str()), "not A, B, C or D");
+    const toml::node* A = ss->get("A");
+    const size_t n = A && A->as_array() && !(A->as_array()->size() == 1 && (*A->as_array())[0].as_array() &&
+                                             (*A->as_array())[0].as_array()->empty())
+                         ? A->as_array()->size() : 0;
+    const rational g = constant(gain_text, T, where + ".gain");
+    D.is_ss = true;
+    D.A = ss_matrix(*ss, "A", n, n, where, p, T);
+    D.B = ss_matrix(*ss, "B", n, N, where, p, T);
+    D.C = ss_matrix(*ss, "C", N, n, where, p, T);
+    D.D = ss_matrix(*ss, "D", N, N, where, p, T);
+    for (auto* M : {&D.C, &D.D})
+      for (auto& row : *M)
+        for (auto& x : row) x *= g;
+    return D;
+  }
+  const RationalFunction<rational> gain = parse_in(gain_text, 'z', T, where + ".gain");
+  for (const auto& row : text_matrix(*t.get("tf"), N, where + ".tf")) {
+    D.tf.emplace_back();
+    for (const auto& e : row) {
+      // read_wall's discretisation, entry by entry
+      toml::table one;
+      one.insert("tf", e);
+      for (const char* key : {"domain", "method"})
+        if (t.contains(key)) one.insert(key, *t.get(key));
+      D.tf.back().push_back(parse_in(read_wall(&one, p), 'z', T, where + ".tf") * gain);
+      if (!proper(D.tf.back().back())) malformed(where + ".tf", "an improper entry in z");
+    }
+  }
+  return D;
+}
+
 }  // namespace
 
 SceneLoop read_scene_loop(const nlohmann::json& model) {
   only_fields(model, {"scene", "set"}, "model");
   if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string (the scene's TOML text)");
-  const toml::table root = parse_scene(model.at("scene").get<std::string>());
+  const toml::table root = parse_scene(model.at("scene").get<std::string>(), true);
   const auto* header = root["scene"].as_table();
   if (!header || !header->contains("T")) malformed("[scene].T", "missing (the sample period)");
   only_keys(*header, {"name", "description", "T"}, "scene");
@@ -413,22 +480,9 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
   for (size_t i = 0; i < ops.size(); ++i) read_loop_operator(*ops[i].as_table(), "operator[" + std::to_string(i + 1) + "]", names, p, T, out);
   const auto* env = root["environment"].as_table();
   if (!env) malformed("[environment]", "missing (the loop has no controller)");
-  only_keys(*env, {"tf", "domain", "method", "gain"}, "environment");
-  if (!env->contains("tf")) malformed("environment.tf", "missing");
-  const std::string gain = field(*env, "gain", "environment", p, "1");
-  for (const auto& row : text_matrix(*env->get("tf"), names.size(), "environment.tf")) {
-    out.E.emplace_back();
-    for (const auto& e : row) {
-      // read_wall's discretisation and gain, entry by entry
-      toml::table one;
-      one.insert("tf", e);
-      for (const char* key : {"domain", "method"})
-        if (env->contains(key)) one.insert(key, *env->get(key));
-      const std::string H = read_wall(&one, p);  // "(1)*(E)": the gain below
-      out.E.back().push_back(parse_in(H, 'z', T, "environment.tf") * parse_in(gain, 'z', T, "environment.gain"));
-      if (!proper(out.E.back().back())) malformed("environment.tf", "an improper entry in z");
-    }
-  }
+  out.E = read_discrete(*env, "environment", names.size(), p, T);
+  if (const auto* cpl = root["coupling"].as_table()) out.V = read_discrete(*cpl, "coupling", names.size(), p, T);
+  else if (root.contains("coupling")) malformed("[coupling]", "not a table");
   out.delay = read_delay(root, p, T);
   if (out.delay > 1000) beyond("[delay]", "more than 1000 samples for the closed-loop matrix");
   return out;

@@ -21,6 +21,7 @@
 // so a scene this reading refuses never gets a certificate.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,12 +39,21 @@ namespace hapstab::check::detail {
 ///   [[operator]] tf = Z, mass    on its DOFs: a proper impedance matrix Z(s) (no pole at s = 0: an
 ///                                operator spring written as k/s is taken as k only by m, b, k),
 ///                                velocity -> force, and a mass per port
-///   [environment] tf             N x N (or SISO for one DOF) in z, or in s by backward Euler/Tustin;
-///                                times gain
+///   [environment] tf or ss       N x N (a string for one DOF) in z, or tf in s by backward
+///                                Euler/Tustin; times gain (an ss block's C and D)
+///   [coupling] tf or ss          V(z), force -> displacement, in parallel with the device (paper 000
+///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
 ///   [delay]                      a whole number of samples in [0, 1000]
-/// Refused by name: anything else (ss blocks, count, diagonal, [coupling], [contact], encoders,
+/// Refused by name: anything else (ss devices and operators, count, diagonal, [contact], encoders,
 /// friction, a fractional delay, ...).
 struct SceneLoop {
+  using Matrix = std::vector<std::vector<rational>>;
+  /// A discrete N x N block: its transfer matrix, or its realisation as written (ss).
+  struct Discrete {
+    std::vector<std::vector<RationalFunction<rational>>> tf;  ///< N x N, in z, proper (discretised, times gain)
+    bool is_ss = false;
+    Matrix A, B, C, D;  ///< with is_ss (C and D times gain)
+  };
   rational T;
   long delay = 0;
   std::vector<rational> mass, damping, stiffness;  ///< per DOF: device plus m, b, k operators
@@ -51,8 +61,9 @@ struct SceneLoop {
     std::vector<int> ports;                                   ///< DOF indices
     std::vector<std::vector<RationalFunction<rational>>> Z;  ///< |ports| x |ports|, in s, proper
   };
-  std::vector<Impedance> operators;                           ///< the tf operators
-  std::vector<std::vector<RationalFunction<rational>>> E;    ///< N x N, in z, proper (discretised, times gain)
+  std::vector<Impedance> operators;  ///< the tf operators
+  Discrete E;                        ///< the environment
+  std::optional<Discrete> V;         ///< the coupling
   size_t dofs() const { return mass.size(); }
 };
 

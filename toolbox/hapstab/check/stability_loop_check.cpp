@@ -97,6 +97,29 @@ std::pair<Mat, Mat> plant(const detail::SceneLoop& L) {
 
 std::string approx(const rational& x) { return std::to_string(x.convert_to<double>()); }
 
+Realisation discrete(const detail::SceneLoop::Discrete& b) { return b.is_ss ? Realisation{b.A, b.B, b.C, b.D} : realise(b.tf); }
+
+// M^-1 by Gauss-Jordan in rationals; InputError when M is singular (det(I + D_E D_V) = 0).
+Mat inverse(Mat M) {
+  const size_t n = M.size();
+  Mat I = rational_matrix::identity(n);
+  for (size_t c = 0; c < n; ++c) {
+    size_t r = c;
+    while (r < n && M[r][c] == 0) ++r;
+    if (r == n) throw InputError("model.scene: det(I + D_E D_V) = 0: the coupling's algebraic loop has no solution");
+    std::swap(M[r], M[c]);
+    std::swap(I[r], I[c]);
+    const rational piv = M[c][c];
+    for (size_t j = 0; j < n; ++j) M[c][j] /= piv, I[c][j] /= piv;
+    for (size_t i = 0; i < n; ++i)
+      if (i != c && M[i][c] != 0) {
+        const rational f = M[i][c];
+        for (size_t j = 0; j < n; ++j) M[i][j] -= f * M[c][j], I[i][j] -= f * I[c][j];
+      }
+  }
+  return I;
+}
+
 BallRows balls(const Mat& M) {
   BallRows out(M.size());
   for (size_t i = 0; i < M.size(); ++i)
@@ -132,40 +155,52 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
     for (size_t j = 0; j < ns; ++j) arb_set(Phi[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(j)));
     for (size_t j = 0; j < N; ++j) arb_set(Gamma[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(ns + j)));
   }
-  const Realisation E = realise(L.E);
-  const size_t nE = E.A.size(), n = static_cast<size_t>(L.delay), order = ns + nE + n * N;
+  const Realisation E = discrete(L.E);
+  const Realisation V = L.V ? discrete(*L.V) : Realisation{Mat{}, rational_matrix::zeros(0, N), rational_matrix::zeros(N, 0),
+                                                          rational_matrix::zeros(N, N)};
+  const size_t nE = E.A.size(), nV = V.A.size(), nc = ns + nE + nV, n = static_cast<size_t>(L.delay), order = nc + n * N;
   if (order > kMaxOrder)
     throw InputError("model.scene: the closed loop has " + std::to_string(order) + " states, beyond this checker's " +
                      std::to_string(kMaxOrder));
-  Mat Cx = rational_matrix::zeros(N, ns);
-  for (size_t i = 0; i < N; ++i) Cx[i][2 * i + 1] = 1;
-  // the force u_k = F [s; xi], F = [-D_E C_x, -C_E]
-  Mat F = rational_matrix::zeros(N, ns + nE);
-  const Mat DC = rational_matrix::mul(E.D, Cx);
+  // the controller (paper 000 (11)): x_e = x + V u, u = -E x_e, the algebraic loop solved exactly:
+  // u = F [s; xi; eta] with F = -W [D_E C_x, C_E, D_E C_V], W = (I + D_E D_V)^-1; x_e = X [s; xi; eta]
+  Mat W = rational_matrix::add(rational_matrix::identity(N), rational_matrix::mul(E.D, V.D));
+  W = inverse(W);
+  Mat F = rational_matrix::zeros(N, nc), X = rational_matrix::zeros(N, nc);
   for (size_t i = 0; i < N; ++i) {
-    for (size_t j = 0; j < ns; ++j) F[i][j] = -DC[i][j];
-    for (size_t j = 0; j < nE; ++j) F[i][ns + j] = -E.C[i][j];
+    for (size_t j = 0; j < N; ++j) {
+      for (size_t k = 0; k < N; ++k) F[i][2 * k + 1] -= W[i][j] * E.D[j][k];  // C_x picks the positions (2k + 1)
+      for (size_t t = 0; t < nE; ++t) F[i][ns + t] -= W[i][j] * E.C[j][t];
+      for (size_t t = 0; t < nV; ++t) {
+        rational dc = 0;
+        for (size_t k = 0; k < N; ++k) dc += E.D[j][k] * V.C[k][t];
+        F[i][ns + nE + t] -= W[i][j] * dc;
+      }
+    }
+    X[i][2 * i + 1] += 1;
+    for (size_t t = 0; t < nV; ++t) X[i][ns + nE + t] += V.C[i][t];
   }
+  X = rational_matrix::add(X, rational_matrix::mul(V.D, F));
   BallRows M = zero_balls(order, order);
   for (size_t i = 0; i < ns; ++i)
     for (size_t j = 0; j < ns; ++j) M[i][j] = Phi[i][j];
   if (n == 0) {  // s+ = Phi s + Gamma u_k
     const BallRows GF = product(Gamma, balls(F));
     for (size_t i = 0; i < ns; ++i)
-      for (size_t j = 0; j < ns + nE; ++j) M[i][j] += GF[i][j];
+      for (size_t j = 0; j < nc; ++j) M[i][j] += GF[i][j];
   } else {  // s+ = Phi s + Gamma u_{k-n}: the last block of the buffer
     for (size_t i = 0; i < ns; ++i)
-      for (size_t j = 0; j < N; ++j) M[i][ns + nE + (n - 1) * N + j] = Gamma[i][j];
+      for (size_t j = 0; j < N; ++j) M[i][nc + (n - 1) * N + j] = Gamma[i][j];
     for (size_t i = 0; i < N; ++i)  // the buffer's first block: u_k
-      for (size_t j = 0; j < ns + nE; ++j) M[ns + nE + i][j] = flint::Ball(F[i][j]);
+      for (size_t j = 0; j < nc; ++j) M[nc + i][j] = flint::Ball(F[i][j]);
     for (size_t b = 1; b < n; ++b)  // and each block moves one down
-      for (size_t i = 0; i < N; ++i) M[ns + nE + b * N + i][ns + nE + (b - 1) * N + i] = flint::Ball(1L);
+      for (size_t i = 0; i < N; ++i) M[nc + b * N + i][nc + (b - 1) * N + i] = flint::Ball(1L);
   }
-  const Mat BC = rational_matrix::mul(E.B, Cx);  // xi+ = A_E xi + B_E C_x s
-  for (size_t i = 0; i < nE; ++i) {
-    for (size_t j = 0; j < ns; ++j) M[ns + i][j] = flint::Ball(BC[i][j]);
-    for (size_t j = 0; j < nE; ++j) M[ns + i][ns + j] = flint::Ball(E.A[i][j]);
-  }
+  const Mat BX = rational_matrix::mul(E.B, X), BF = rational_matrix::mul(V.B, F);  // xi+ = A_E xi + B_E x_e, eta+ = A_V eta + B_V u
+  for (size_t i = 0; i < nE; ++i)
+    for (size_t j = 0; j < nc; ++j) M[ns + i][j] = flint::Ball(BX[i][j] + (j >= ns && j < ns + nE ? E.A[i][j - ns] : rational(0)));
+  for (size_t i = 0; i < nV; ++i)
+    for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = flint::Ball(BF[i][j] + (j >= ns + nE ? V.A[i][j - ns - nE] : rational(0)));
   return M;
 }
 

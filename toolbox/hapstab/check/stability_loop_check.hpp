@@ -8,9 +8,12 @@
 //            d_j of its denominators, a controllable companion form of the strictly proper part,
 //            D_j the direct part), its states after the DOFs' in operator order. Outputs y = x.
 //   hold     s_{k+1} = Phi s_k + Gamma u, [Phi Gamma; 0 I] = exp([A B; 0 0] T) (Arb's arb_mat_exp).
-//   wall     E(z) N x N realised column by column the same way: xi+ = A_E xi + B_E y,
-//            force u_k = -(C_E xi_k + D_E y_k) computed from the samples at kT and applied from
-//            kT + nT on: the state X = [s; xi; u_{k-1}; ...; u_{k-n}] and X_{k+1} = M X_k.
+//   wall     E(z) N x N realised column by column the same way (an ss block as written): xi+ =
+//            A_E xi + B_E x_e; a [coupling] V(z) likewise, eta+ = A_V eta + B_V u, in parallel with
+//            the device (paper 000 (11)): x_e = y + C_V eta + D_V u, u = -(C_E xi + D_E x_e), solved
+//            exactly: u = -W (D_E C_x s + C_E xi + D_E C_V eta), W = (I + D_E D_V)^-1 (singular:
+//            malformed). The force u_k computed from the samples at kT is applied from kT + nT on:
+//            the state X = [s; xi; eta; u_{k-1}; ...; u_{k-n}] and X_{k+1} = M X_k.
 //
 // Theorem (Stein; the inertia form, e.g. Ostrowski & Schneider 1962): if Q = P - M^T P M > 0 for a
 // symmetric P, M has no eigenvalue on |z| = 1 (M v = z v gives v* Q v = (1 - |z|^2) v* P v), and
