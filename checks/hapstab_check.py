@@ -2127,18 +2127,31 @@ def scene_loop_read(model):
     devs = root.get("device")
     if not isinstance(devs, list) or not devs or any(not isinstance(d, dict) for d in devs):
         raise Malformed("model.scene: [[device]]: missing or not tables")
-    names, mass, damp, stiff = [], [], [], []
+    names, mass, damp, stiff, devices = [], [], [], [], []
     for i, d in enumerate(devs):
         key = "device[%d]" % (i + 1)
-        scene_keys(d, ("name", "m", "b", "passive"), key)
-        if "m" not in d:
-            raise Malformed("model.scene: %s.m: missing (the device mass)" % key)
-        mass.append(scene_constant(field(d, "m", key, "0"), T, key + ".m"))
-        damp.append(scene_constant(field(d, "b", key, "0"), T, key + ".b"))
-        if mass[-1] <= 0 or damp[-1] < 0:
-            raise Malformed("model.scene: %s: m must be > 0 and b >= 0" % key)
-        stiff.append(Fraction(0))
-        names.append(d.get("name") if isinstance(d.get("name"), str) else "")
+        scene_keys(d, ("name", "m", "b", "tf", "ss", "passive"), key)
+        dev = {"first": len(mass), "dofs": 1, "block": None}
+        if "tf" in d or "ss" in d:
+            if "m" in d or "b" in d:
+                raise Malformed("model.scene: %s: give either m, b or tf/ss, not both" % key)
+            dev["block"] = scene_device_block(d, key, T, expand)
+            dev["dofs"] = dev["block"][1]
+            mass += [Fraction(0)] * dev["dofs"]
+            damp += [Fraction(0)] * dev["dofs"]
+        else:
+            if "m" not in d:
+                raise Malformed("model.scene: %s.m: missing (the device mass)" % key)
+            mass.append(scene_constant(field(d, "m", key, "0"), T, key + ".m"))
+            damp.append(scene_constant(field(d, "b", key, "0"), T, key + ".b"))
+            if mass[-1] <= 0 or damp[-1] < 0:
+                raise Malformed("model.scene: %s: m must be > 0 and b >= 0" % key)
+        stiff += [Fraction(0)] * dev["dofs"]
+        name = d.get("name") if isinstance(d.get("name"), str) else ""
+        names += [name if dev["dofs"] == 1 else ""] * dev["dofs"]  # a block of several DOFs: by number
+        devices.append(dev)
+    if len(names) > 64:
+        scene_beyond("[[device]]", "%d DOFs, more than 64" % len(names))
     ops = []
     tables = root.get("operator", [])
     if not isinstance(tables, list) or any(not isinstance(o, dict) for o in tables):
@@ -2190,7 +2203,41 @@ def scene_loop_read(model):
         if not isinstance(root["coupling"], dict):
             raise Malformed("model.scene: [coupling]: not a table")
         V = scene_discrete(root["coupling"], "coupling", len(names), T, expand, field)
-    return T, scene_delay(root, T, field, limit=1000), mass, damp, stiff, ops, E, V
+    return T, scene_delay(root, T, field, limit=1000), devices, mass, damp, stiff, ops, E, V
+
+
+def scene_device_block(d, key, T, expand):
+    """A device given by ss = { A, B, C, D } (D = 0) or tf (a string or a square matrix), in s,
+    strictly proper: ("ss", dofs, (A, B, C)) or ("tf", dofs, G)."""
+    if "tf" in d and "ss" in d:
+        raise Malformed("model.scene: %s: give exactly one of tf, ss" % key)
+    if "tf" in d:
+        tf = d["tf"]
+        q = 1 if isinstance(tf, str) else len(tf) if isinstance(tf, list) else 0
+        if q == 0:
+            raise Malformed("model.scene: %s.tf: expected a string or a square matrix of strings" % key)
+        G = []
+        for row in scene_text_matrix(tf, q, key + ".tf"):
+            G.append([])
+            for e in row:
+                f = scene_rf(expand(e, key + ".tf"), T, 's', key + ".tf")
+                if f.num and len(f.num) >= len(f.den):
+                    raise Malformed("model.scene: %s.tf: not strictly proper (a device has no feedthrough)" % key)
+                G[-1].append(f)
+        return "tf", q, G
+    ss = d["ss"]
+    if not isinstance(ss, dict) or any(k not in ("A", "B", "C", "D") for k in ss):
+        raise Malformed("model.scene: %s.ss: expected a table { A = ..., B = ..., C = ..., D = ... }" % key)
+    n = len(ss["A"]) if isinstance(ss.get("A"), list) else 0
+    q = len(ss["D"]) if isinstance(ss.get("D"), list) else 0
+    if n == 0 or q == 0:
+        raise Malformed("model.scene: %s.ss: a device needs states and at least one DOF" % key)
+    A = scene_ss_matrix(ss, "A", n, n, key, T, expand)
+    B = scene_ss_matrix(ss, "B", n, q, key, T, expand)
+    C = scene_ss_matrix(ss, "C", q, n, key, T, expand)
+    if any(x != 0 for r in scene_ss_matrix(ss, "D", q, q, key, T, expand) for x in r):
+        raise Malformed("model.scene: %s.ss.D: not 0 (a device has no feedthrough)" % key)
+    return "ss", q, (A, B, C)
 
 
 def scene_ss_matrix(ss, key, rows, cols, where, T, expand):
@@ -2279,33 +2326,84 @@ def realise_columns(G):
     return A, B, C, D
 
 
-def loop_plant(mass, damp, stiff, ops):
-    """(A, B) of stability-loop's continuous plant: per DOF (v_i, x_i), then the tf operators' states."""
+def loop_plant(devices, mass, damp, stiff, ops):
+    """(A, B, pos) of stability-loop's continuous plant (C++ check/stability_loop_check.cpp): the
+    devices' states (a mass-damper: its velocity, 1/(m s + b) with its operators' m and b), then the
+    positions x (from index pos), then the tf operators' states; forces f = u - Dv v - K x - Cz zeta."""
     N = len(mass)
+    devs = []
+    for d in devices:
+        if d["block"] is None:
+            j = d["first"]
+            devs.append(([[-damp[j] / mass[j]]], [[1 / mass[j]]], [[Fraction(1)]]))
+        else:
+            if any(mass[j] != 0 for j in range(d["first"], d["first"] + d["dofs"])):
+                scene_beyond("[[operator]]", "an operator's mass on a device given by tf or ss")
+            kind, q, data = d["block"]
+            devs.append(data if kind == "ss" else realise_columns(data)[:3])
+    nd = sum(len(R[0]) for R in devs)
     reals = [realise_columns(Z) for _, Z in ops]
-    ns = 2 * N + sum(len(R[0]) for R in reals)
-    A = [[Fraction(0)] * ns for _ in range(ns)]
-    B = [[Fraction(0)] * N for _ in range(ns)]
-    for i in range(N):
-        A[2 * i][2 * i] = -damp[i] / mass[i]
-        A[2 * i][2 * i + 1] = -stiff[i] / mass[i]
-        A[2 * i + 1][2 * i] = Fraction(1)
-        B[2 * i][i] = 1 / mass[i]
-    off = 2 * N
+    nz = sum(len(R[0]) for R in reals)
+    ns = nd + N + nz
+    Ad = [[Fraction(0)] * nd for _ in range(nd)]
+    Bd = [[Fraction(0)] * N for _ in range(nd)]
+    Cd = [[Fraction(0)] * nd for _ in range(N)]
+    off = 0
+    for d, (Ar, Br, Cr) in zip(devices, devs):
+        n = len(Ar)
+        for i in range(n):
+            for t in range(n):
+                Ad[off + i][off + t] = Ar[i][t]
+            for c in range(d["dofs"]):
+                Bd[off + i][d["first"] + c] = Br[i][c]
+        for r in range(d["dofs"]):
+            for t in range(n):
+                Cd[d["first"] + r][off + t] = Cr[r][t]
+        off += n
+    Dv = [[Fraction(0)] * N for _ in range(N)]
+    for d in devices:
+        if d["block"] is not None:
+            for j in range(d["first"], d["first"] + d["dofs"]):
+                Dv[j][j] += damp[j]
+    Cz = [[Fraction(0)] * nz for _ in range(N)]
+    Bz = [[Fraction(0)] * N for _ in range(nz)]
+    Az = [[Fraction(0)] * nz for _ in range(nz)]
+    off = 0
     for (ports, _), (Ao, Bo, Co, Do) in zip(ops, reals):
         n = len(Ao)
         for a, pa in enumerate(ports):
             for t in range(n):
-                A[2 * pa][off + t] -= Co[a][t] / mass[pa]
+                Cz[pa][off + t] += Co[a][t]
             for c, pc in enumerate(ports):
-                A[2 * pa][2 * pc] -= Do[a][c] / mass[pa]
+                Dv[pa][pc] += Do[a][c]
         for t in range(n):
             for t2 in range(n):
-                A[off + t][off + t2] = Ao[t][t2]
+                Az[off + t][off + t2] = Ao[t][t2]
             for c, pc in enumerate(ports):
-                A[off + t][2 * pc] += Bo[t][c]
+                Bz[off + t][pc] += Bo[t][c]
         off += n
-    return A, B
+    BDC = mmul(Bd, mmul(Dv, Cd)) if nd else []
+    BCz = mmul(Bd, Cz) if nd and nz else [[Fraction(0)] * nz for _ in range(nd)]
+    BzC = mmul(Bz, Cd) if nz else []
+    A = [[Fraction(0)] * ns for _ in range(ns)]
+    B = [[Fraction(0)] * N for _ in range(ns)]
+    for i in range(nd):
+        for t in range(nd):
+            A[i][t] = Ad[i][t] - BDC[i][t]
+        for j in range(N):
+            A[i][nd + j] = -Bd[i][j] * stiff[j]
+            B[i][j] = Bd[i][j]
+        for t in range(nz):
+            A[i][nd + N + t] = -BCz[i][t]
+    for j in range(N):
+        for t in range(nd):
+            A[nd + j][t] = Cd[j][t]
+    for i in range(nz):
+        for t in range(nd):
+            A[nd + N + i][t] = BzC[i][t]
+        for t in range(nz):
+            A[nd + N + i][nd + N + t] = Az[i][t]
+    return A, B, nd
 
 
 def expm_interval_n(A, t, bits):
@@ -2358,8 +2456,8 @@ def loop_matrix(loop, bits):
     """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`: the plant held,
     the controller x_e = x + V u, u = -E x_e solved exactly (u = F [s; xi; eta], x_e = X [s; xi; eta]),
     the delay's buffer."""
-    T, n, mass, damp, stiff, ops, Eb, Vb = loop
-    A, Bu = loop_plant(mass, damp, stiff, ops)
+    T, n, devices, mass, damp, stiff, ops, Eb, Vb = loop
+    A, Bu, pos = loop_plant(devices, mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
     Xp = expm_interval_n(aug, T, bits)
@@ -2379,12 +2477,12 @@ def loop_matrix(loop, bits):
     for i in range(N):
         for j in range(N):
             for k in range(N):
-                F[i][2 * k + 1] -= W[i][j] * DE[j][k]
+                F[i][pos + k] -= W[i][j] * DE[j][k]
             for t in range(nE):
                 F[i][ns + t] -= W[i][j] * CE[j][t]
             for t in range(nV):
                 F[i][ns + nE + t] -= W[i][j] * sum(DE[j][k] * CV[k][t] for k in range(N))
-        X[i][2 * i + 1] += 1
+        X[i][pos + i] += 1
         for t in range(nV):
             X[i][ns + nE + t] += CV[i][t]
     X = [[X[i][j] + sum(DV[i][k] * F[k][j] for k in range(N)) for j in range(nc)] for i in range(N)]

@@ -1517,7 +1517,8 @@ def lc_mutants(cert, rng, hapstab, cache, tmp):
 
 
 def rand_loop_scene(rng):
-    """A random multi-DOF scene the stability-loop kind reads: 2-3 mass-damper DOFs, operators (b, or
+    """A random multi-DOF scene the stability-loop kind reads: 2-3 DOFs (mass-dampers, or 1/(m s + b) as
+    tf or ss, open-loop unstable with b = -1), operators (b, or
     m, b, k, on one DOF; a tf impedance coupling two DOFs in a fifth), diagonal walls K + B(z-1)/(Tz)
     with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a coupling (tf or ss) in
     30 %, a delay 0-2."""
@@ -1525,15 +1526,27 @@ def rand_loop_scene(rng):
     T = rng.choice(["1/1000", "1/500"])
     L = ["[scene]", 'T = "%s"' % T, "[parameters]", 'g = "%s"' % rng.choice(["1/2", "1", "2", "5"]),
          'kc = "%d"' % (rng.randint(50, 2000) if rng.random() < 0.4 else 0)]
+    blocks = set()
     for i in range(N):
-        L += ["[[device]]", 'name = "d%d"' % i, 'm = "%s"' % rng.choice(["1/10", "1/2", "1"]), 'b = "%s"' % rng.choice(["0", "1/2", "2"])]
+        m, b = rng.choice(["1/10", "1/2", "1"]), rng.choice(["0", "1/2", "2", "-1"])
+        form = rng.choice(["md", "md", "tf", "ss"]) if b != "-1" else rng.choice(["tf", "ss"])  # b < 0: open-loop unstable
+        L += ["[[device]]", 'name = "d%d"' % i]
+        if form == "md":
+            L += ['m = "%s"' % m, 'b = "%s"' % b]
+        elif form == "tf":
+            L += ['tf = "1/(%s*s + %s)"' % (m, b), "passive = false"]
+        else:
+            L += ['ss = { A = [["-(%s)/(%s)"]], B = [["1/(%s)"]], C = [["1"]], D = [["0"]] }' % (b, m, m), "passive = false"]
+        if form != "md":
+            blocks.add(i)
     for i in range(N):
         if rng.random() < 0.5:
             L += ["[[operator]]", 'dofs = "d%d"' % i, 'b = "%s"' % rng.choice(["1", "3"])]
             if rng.random() < 0.5:
-                L += ['k = "%d"' % rng.choice([50, 500]), 'm = "1/20"']
+                L += ['k = "%d"' % rng.choice([50, 500])] + ([] if i in blocks else ['m = "1/20"'])
     if rng.random() < 0.2:
-        L += ["[[operator]]", 'dofs = ["d0", "d1"]', 'tf = [["2*(s + 3)/(s + 1)", "1/2"], ["1/2", "1"]]', 'mass = ["1/50", "0"]']
+        L += ["[[operator]]", 'dofs = ["d0", "d1"]', 'tf = [["2*(s + 3)/(s + 1)", "1/2"], ["1/2", "1"]]'] + (
+            [] if blocks & {0, 1} else ['mass = ["1/50", "0"]'])
     Ks = [rng.randint(100, 3000) for _ in range(N)]
     Bs = [rng.choice([0, 1, 4]) for _ in range(N)]
     domain = rng.choice(["z", "backward_euler", "tustin"])
@@ -1810,10 +1823,10 @@ def print_branches(certs, mutants, cpp):
     if loops:
         sc = [c["model"]["scene"] for c in loops]
         print("  stability-loop branches: stable %d, NOT stable %d; 3 DOF %d, a delay %d, a tf operator %d, the wall in s %d; "
-              "a coupling %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
+              "a coupling %d; a tf or ss device %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
                                 sum(1 for t in sc if 'name = "d2"' in t), sum(1 for t in sc if "[delay]" in t),
                                 sum(1 for t in sc if 'dofs = ["d0", "d1"]' in t), sum(1 for t in sc if 'domain = "s"' in t),
-                                sum(1 for t in sc if "[coupling]" in t),
+                                sum(1 for t in sc if "[coupling]" in t), sum(1 for t in sc if "passive = false" in t),
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:

@@ -841,6 +841,22 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
   EXPECT_EQ(Dl[2][1].first, rational(-100));  // u_k = -K x_k
   EXPECT_LE(Dl[0][2].first, rational(1, 20));  // Gamma_v = T/m
   EXPECT_GE(Dl[0][2].second, rational(1, 20));
+  // the same device as ss with the velocity as its state: the same M; as tf = "1/(2*s)", realised with
+  // the state 2 v (1/(2s) = (1/2)/s: B = 1, C = 1/2), so M in that basis: [[1, -10], [1/20, 3/4]]
+  const std::pair<std::string, std::vector<rational>> forms[] = {
+      {"ss = { A = [[\"0\"]], B = [[\"1/2\"]], C = [[\"1\"]], D = [[\"0\"]] }", {1, -5, rational(1, 10), rational(3, 4)}},
+      {"tf = \"1/(2*s)\"", {1, -10, rational(1, 20), rational(3, 4)}}};
+  for (const auto& [dev, entries] : forms) {
+    std::string other = scene;
+    other.replace(other.find("m = \"2\""), 7, dev);
+    const auto Mo = scene_loop_matrix({{"scene", other}, {"set", nlohmann::json::object()}}, 128);
+    ASSERT_EQ(Mo.size(), 2u) << dev;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        EXPECT_LE(Mo[i][j].first, entries[size_t(2 * i + j)]) << dev;
+        EXPECT_GE(Mo[i][j].second, entries[size_t(2 * i + j)]) << dev;
+      }
+  }
   // a coupling V = 1/100 (a spring's compliance) in parallel: x_e = x + V u, u = -K x_e, so
   // u = -K/(1 + K V) x = -50 x and M = [[1, -5/2], [1/10, 7/8]]
   const auto Cp = scene_loop_matrix({{"scene", scene + "[coupling]\ntf = \"1/100\"\n"}, {"set", nlohmann::json::object()}}, 128);

@@ -250,6 +250,13 @@ class StabilityLoop(unittest.TestCase):
         D = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE + '[delay]\nsamples = 1\n', "set": {}}), 128)
         self.assertEqual(len(D), 3)
         self.assertEqual(D[2][1].lo, -100)
+        # the same device as ss (the velocity its state): the same M; as tf = "1/(2*s)" (state 2 v): M in that basis
+        for dev, M2 in (('ss = { A = [["0"]], B = [["1/2"]], C = [["1"]], D = [["0"]] }', want),
+                        ('tf = "1/(2*s)"', [[Fraction(1), Fraction(-10)], [Fraction(1, 20), Fraction(3, 4)]])):
+            Mo = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE.replace('m = "2"', dev), "set": {}}), 128)
+            for i in range(2):
+                for j in range(2):
+                    self.assertTrue(Mo[i][j].lo <= M2[i][j] <= Mo[i][j].hi, dev)
         Cp = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE + '[coupling]\ntf = "1/100"\n', "set": {}}), 128)
         coupled = [[Fraction(1), Fraction(-5, 2)], [Fraction(1, 10), Fraction(7, 8)]]  # u = -K/(1 + K V) x = -50 x
         for i in range(2):

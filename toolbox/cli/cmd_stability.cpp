@@ -229,14 +229,27 @@ int run_scene(const StabilityOpts& o) {
     }
   }();
   scene::check_command(sc.root, o.scene, "stability");  // what it does not model is refused
-  const bool one_dof = one_dof_scene(sc);
-  const nlohmann::json one_dof_certificate = o.certificate.empty() || !one_dof ? nlohmann::json() : scene_certificate(o, sc);
+  // a one-DOF loop: kind stability (its exact polynomial where it has one); else, or where that kind
+  // does not read the scene (an ss device), kind stability-loop
+  nlohmann::json certificate;
+  std::string one_dof_refusal;
+  if (!o.certificate.empty() && one_dof_scene(sc)) try {
+      certificate = scene_certificate(o, sc);
+    } catch (const InputError& e) {
+      one_dof_refusal = e.what();
+    }
   const stability::LoopVerdict v =
       stability::decide_loop(sc.loop, o.no_symmetry ? stability::Decider::no_symmetry : stability::Decider::automatic);
   if (!o.certificate.empty() && v.stable) {  // undecided: the verdict is printed, no certificate (below)
-    if (one_dof && *v.stable != one_dof_certificate["claim"]["stable"].get<bool>())
+    if (!certificate.is_null() && *v.stable != certificate["claim"]["stable"].get<bool>())
       throw NumericalError("--certificate: the loop as written and its one-DOF loop got different verdicts (a defect): no certificate");
-    cli::write_certificate(o.certificate, one_dof ? one_dof_certificate : cli::stability_loop_certificate(o.scene, o.sets, *v.stable));
+    if (certificate.is_null()) try {
+        certificate = cli::stability_loop_certificate(o.scene, o.sets, *v.stable);
+      } catch (const InputError& e) {
+        if (one_dof_refusal.empty()) throw;
+        throw InputError(one_dof_refusal + "; as a closed-loop matrix (kind stability-loop): " + e.what());
+      }
+    cli::write_certificate(o.certificate, certificate);
   }
   nlohmann::json hidden = nlohmann::json::array();
   for (const auto& h : v.hidden.modes)

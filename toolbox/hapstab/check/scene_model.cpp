@@ -447,6 +447,41 @@ SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where
   return D;
 }
 
+// A device block: ss = { A, B, C, D } (D = 0) or tf (a string or a square matrix), in s, strictly proper.
+void read_device_block(const toml::table& d, const std::string& key, Parameters& p, const rational& T, SceneLoop::Device& dev) {
+  dev.block = true;
+  if (d.contains("tf") && d.contains("ss")) malformed(key, "give exactly one of tf, ss");
+  if (d.contains("tf")) {
+    const toml::node& tf = *d.get("tf");
+    dev.dofs = tf.as_string() ? 1 : tf.as_array() ? tf.as_array()->size() : 0;
+    if (dev.dofs == 0) malformed(key + ".tf", "expected a string or a square matrix of strings");
+    for (const auto& row : text_matrix(tf, dev.dofs, key + ".tf")) {
+      dev.tf.emplace_back();
+      for (const auto& e : row) {
+        dev.tf.back().push_back(parse_in(p.expand(e, key + ".tf"), 's', T, key + ".tf"));
+        if (dev.tf.back().back().num().degree() >= dev.tf.back().back().den().degree() && !dev.tf.back().back().is_zero())
+          malformed(key + ".tf", "not strictly proper (a device has no feedthrough)");
+      }
+    }
+    return;
+  }
+  const auto* ss = d.get("ss")->as_table();
+  if (!ss) malformed(key + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
+  for (const auto& [k, v] : *ss)
+    if (k.str() != "A" && k.str() != "B" && k.str() != "C" && k.str() != "D") malformed(key + ".ss." + std::string(k.str()), "not A, B, C or D");
+  const toml::node* A = ss->get("A");
+  const toml::node* D = ss->get("D");
+  const size_t n = A && A->as_array() ? A->as_array()->size() : 0;
+  dev.dofs = D && D->as_array() ? D->as_array()->size() : 0;
+  if (n == 0 || dev.dofs == 0) malformed(key + ".ss", "a device needs states and at least one DOF");
+  dev.A = ss_matrix(*ss, "A", n, n, key, p, T);
+  dev.B = ss_matrix(*ss, "B", n, dev.dofs, key, p, T);
+  dev.C = ss_matrix(*ss, "C", dev.dofs, n, key, p, T);
+  for (const auto& row : ss_matrix(*ss, "D", dev.dofs, dev.dofs, key, p, T))
+    for (const rational& x : row)
+      if (x != 0) malformed(key + ".ss.D", "not 0 (a device has no feedthrough)");
+}
+
 }  // namespace
 
 SceneLoop read_scene_loop(const nlohmann::json& model) {
@@ -467,15 +502,30 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
   for (size_t i = 0; i < devices.size(); ++i) {
     const toml::table& d = *devices[i].as_table();
     const std::string key = "device[" + std::to_string(i + 1) + "]";
-    only_keys(d, {"name", "m", "b", "passive"}, key);
-    if (!d.contains("m")) malformed(key + ".m", "missing (the device mass)");
-    out.mass.push_back(constant(field(d, "m", key, p, "0"), T, key + ".m"));
-    out.damping.push_back(constant(field(d, "b", key, p, "0"), T, key + ".b"));
-    if (out.mass.back() <= 0) malformed(key + ".m", "must be > 0");
-    if (out.damping.back() < 0) malformed(key + ".b", "must be >= 0");
-    out.stiffness.push_back(0);
-    names.push_back(d.get("name") && d.get("name")->as_string() ? d.get("name")->as_string()->get() : "");
+    only_keys(d, {"name", "m", "b", "tf", "ss", "passive"}, key);
+    SceneLoop::Device dev;
+    dev.first = out.mass.size();
+    if (d.contains("tf") || d.contains("ss")) {
+      if (d.contains("m") || d.contains("b")) malformed(key, "give either m, b or tf/ss, not both");
+      read_device_block(d, key, p, T, dev);
+    } else {
+      if (!d.contains("m")) malformed(key + ".m", "missing (the device mass)");
+      out.mass.push_back(constant(field(d, "m", key, p, "0"), T, key + ".m"));
+      out.damping.push_back(constant(field(d, "b", key, p, "0"), T, key + ".b"));
+      if (out.mass.back() <= 0) malformed(key + ".m", "must be > 0");
+      if (out.damping.back() < 0) malformed(key + ".b", "must be >= 0");
+      out.stiffness.push_back(0);
+    }
+    for (size_t j = dev.block ? 0 : 1; j < (dev.block ? dev.dofs : 1); ++j) {
+      out.mass.push_back(0);
+      out.damping.push_back(0);
+      out.stiffness.push_back(0);
+    }
+    const std::string name = d.get("name") && d.get("name")->as_string() ? d.get("name")->as_string()->get() : "";
+    for (size_t j = 0; j < dev.dofs; ++j) names.push_back(dev.dofs == 1 ? name : "");  // a block of several DOFs: by number
+    out.devices.push_back(std::move(dev));
   }
+  if (names.size() > 64) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than 64");
   const toml::array& ops = tables(root, "operator");
   for (size_t i = 0; i < ops.size(); ++i) read_loop_operator(*ops[i].as_table(), "operator[" + std::to_string(i + 1) + "]", names, p, T, out);
   const auto* env = root["environment"].as_table();

@@ -35,6 +35,8 @@ namespace hapstab::check::detail {
 /// A scene's loop of any number of DOF, as the `stability-loop` kind reads it (its own reading, as
 /// above, for the multi-DOF loop; check/stability_loop_check.hpp builds the closed loop from it):
 ///   [[device]] m, b              one DOF each (device order), 1/(m s + b) force -> velocity
+///   [[device]] ss or tf          a strictly proper block G(s) as written (tf: column by column), its
+///                                DOFs the next inputs; an operator's mass on it is refused
 ///   [[operator]] m, b, k         on one DOF: adds m to its mass, b to its damping, k x to its force
 ///   [[operator]] tf = Z, mass    on its DOFs: a proper impedance matrix Z(s) (no pole at s = 0: an
 ///                                operator spring written as k/s is taken as k only by m, b, k),
@@ -44,8 +46,8 @@ namespace hapstab::check::detail {
 ///   [coupling] tf or ss          V(z), force -> displacement, in parallel with the device (paper 000
 ///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
 ///   [delay]                      a whole number of samples in [0, 1000]
-/// Refused by name: anything else (ss devices and operators, count, diagonal, [contact], encoders,
-/// friction, a fractional delay, ...).
+/// Refused by name: anything else (ss operators, count, diagonal, [contact], encoders, friction, a
+/// fractional delay, ...).
 struct SceneLoop {
   using Matrix = std::vector<std::vector<rational>>;
   /// A discrete N x N block: its transfer matrix, or its realisation as written (ss).
@@ -54,9 +56,20 @@ struct SceneLoop {
     bool is_ss = false;
     Matrix A, B, C, D;  ///< with is_ss (C and D times gain)
   };
+  /// A device: a mass-damper (one DOF, its m and b in mass, damping), or a block (ss as written, or
+  /// tf: the transfer matrix, realised by the checker) on `dofs` DOFs from `first`.
+  struct Device {
+    size_t first = 0, dofs = 1;
+    bool block = false;
+    Matrix A, B, C;                                           ///< ss
+    std::vector<std::vector<RationalFunction<rational>>> tf;  ///< tf (in s, strictly proper)
+  };
   rational T;
   long delay = 0;
-  std::vector<rational> mass, damping, stiffness;  ///< per DOF: device plus m, b, k operators
+  std::vector<Device> devices;
+  /// per DOF: a mass-damper's m and b plus its m, b, k operators; a block DOF's operators' m (must
+  /// be 0), b and k
+  std::vector<rational> mass, damping, stiffness;
   struct Impedance {
     std::vector<int> ports;                                   ///< DOF indices
     std::vector<std::vector<RationalFunction<rational>>> Z;  ///< |ports| x |ports|, in s, proper

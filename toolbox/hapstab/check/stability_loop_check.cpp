@@ -1,6 +1,8 @@
 // hapstab/check/stability_loop_check.cpp -- see stability_loop_check.hpp.
 #include "hapstab/check/stability_loop_check.hpp"
 
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include "hapstab/check/rational_matrix.hpp"
@@ -59,43 +61,91 @@ Realisation realise(const std::vector<std::vector<RF>>& G) {
   return R;
 }
 
-// The continuous plant (A, B_u) of the header, exact; outputs the positions x_i = state 2i + 1.
-std::pair<Mat, Mat> plant(const detail::SceneLoop& L) {
+// The continuous plant of the header, exact: A, B_u, and the index of x_0 (the positions are the
+// states pos .. pos + N - 1, after the devices' states).
+struct Plant {
+  Mat A, B;
+  size_t pos = 0;
+};
+
+Plant plant(const detail::SceneLoop& L) {
   const size_t N = L.dofs();
+  // the devices as one block (Ad, Bd, Cd): a mass-damper DOF j is 1/(m_j s + b_j), one state
+  std::vector<Realisation> devs;
+  size_t nd = 0;
+  for (const auto& d : L.devices) {
+    if (!d.block) {
+      const size_t j = d.first;
+      devs.push_back({Mat{{-L.damping[j] / L.mass[j]}}, Mat{{1 / L.mass[j]}}, Mat{{rational(1)}}, Mat{}});
+    } else {
+      for (size_t j = d.first; j < d.first + d.dofs; ++j)
+        if (L.mass[j] != 0)
+          throw InputError("model.scene: an operator's mass on DOF " + std::to_string(j) +
+                           ", a device given by tf or ss (beyond this checker; docs/certificates.md lists what it reads of a scene)");
+      devs.push_back(d.tf.empty() ? Realisation{d.A, d.B, d.C, Mat{}} : realise(d.tf));
+    }
+    nd += devs.back().A.size();
+  }
   std::vector<Realisation> ops;
-  size_t ns = 2 * N;
+  size_t nz = 0;
   for (const auto& o : L.operators) {
     ops.push_back(realise(o.Z));
-    ns += ops.back().A.size();
+    nz += ops.back().A.size();
   }
-  Mat A = rational_matrix::zeros(ns, ns), B = rational_matrix::zeros(ns, N);
-  for (size_t i = 0; i < N; ++i) {
-    A[2 * i][2 * i] = -L.damping[i] / L.mass[i];
-    A[2 * i][2 * i + 1] = -L.stiffness[i] / L.mass[i];
-    A[2 * i + 1][2 * i] = 1;
-    B[2 * i][i] = 1 / L.mass[i];
+  const size_t ns = nd + N + nz;
+  Mat Ad = rational_matrix::zeros(nd, nd), Bd = rational_matrix::zeros(nd, N), Cd = rational_matrix::zeros(N, nd);
+  size_t off = 0;
+  for (size_t k = 0; k < devs.size(); ++k) {
+    const Realisation& R = devs[k];
+    const size_t first = L.devices[k].first, n = R.A.size(), dofs = L.devices[k].dofs;
+    for (size_t i = 0; i < n; ++i) {
+      for (size_t t = 0; t < n; ++t) Ad[off + i][off + t] = R.A[i][t];
+      for (size_t c = 0; c < dofs; ++c) Bd[off + i][first + c] = R.B[i][c];
+    }
+    for (size_t r = 0; r < dofs; ++r)
+      for (size_t t = 0; t < n; ++t) Cd[first + r][off + t] = R.C[r][t];
+    off += n;
   }
-  size_t off = 2 * N;
+  // forces on the DOFs: f = u - Dv v - K x - Cz zeta, v = Cd xi (Dv: a block DOF's operator b, the
+  // tf operators' direct parts; a mass-damper's own b and its operators' are in Ad)
+  Mat Dv = rational_matrix::zeros(N, N), Cz = rational_matrix::zeros(N, nz), Bz = rational_matrix::zeros(nz, N);
+  Mat Az = rational_matrix::zeros(nz, nz);
+  for (const auto& d : L.devices)
+    if (d.block)
+      for (size_t j = d.first; j < d.first + d.dofs; ++j) Dv[j][j] += L.damping[j];
+  off = 0;
   for (size_t o = 0; o < ops.size(); ++o) {
     const Realisation& R = ops[o];
     const std::vector<int>& ports = L.operators[o].ports;
     const size_t n = R.A.size();
     for (size_t a = 0; a < ports.size(); ++a) {
-      const size_t row = 2 * static_cast<size_t>(ports[a]);
-      const rational& m = L.mass[static_cast<size_t>(ports[a])];
-      for (size_t t = 0; t < n; ++t) A[row][off + t] -= R.C[a][t] / m;           // force -(C xi) on port a
-      for (size_t c = 0; c < ports.size(); ++c) A[row][2 * static_cast<size_t>(ports[c])] -= R.D[a][c] / m;  // -(D v)
+      const size_t pa = static_cast<size_t>(ports[a]);
+      for (size_t t = 0; t < n; ++t) Cz[pa][off + t] += R.C[a][t];
+      for (size_t c = 0; c < ports.size(); ++c) Dv[pa][static_cast<size_t>(ports[c])] += R.D[a][c];
     }
     for (size_t t = 0; t < n; ++t) {
-      for (size_t t2 = 0; t2 < n; ++t2) A[off + t][off + t2] = R.A[t][t2];
-      for (size_t c = 0; c < ports.size(); ++c) A[off + t][2 * static_cast<size_t>(ports[c])] += R.B[t][c];  // driven by v
+      for (size_t t2 = 0; t2 < n; ++t2) Az[off + t][off + t2] = R.A[t][t2];
+      for (size_t c = 0; c < ports.size(); ++c) Bz[off + t][static_cast<size_t>(ports[c])] += R.B[t][c];
     }
     off += n;
   }
-  return {A, B};
+  const Mat BDC = rational_matrix::mul(Bd, rational_matrix::mul(Dv, Cd)), BCz = rational_matrix::mul(Bd, Cz),
+            BzC = rational_matrix::mul(Bz, Cd);
+  Plant P{rational_matrix::zeros(ns, ns), rational_matrix::zeros(ns, N), nd};
+  for (size_t i = 0; i < nd; ++i) {
+    for (size_t t = 0; t < nd; ++t) P.A[i][t] = Ad[i][t] - BDC[i][t];
+    for (size_t j = 0; j < N; ++j) P.A[i][nd + j] = -Bd[i][j] * L.stiffness[j];
+    for (size_t t = 0; t < nz; ++t) P.A[i][nd + N + t] = -BCz[i][t];
+    for (size_t j = 0; j < N; ++j) P.B[i][j] = Bd[i][j];
+  }
+  for (size_t j = 0; j < N; ++j)
+    for (size_t t = 0; t < nd; ++t) P.A[nd + j][t] = Cd[j][t];  // x' = v
+  for (size_t i = 0; i < nz; ++i) {
+    for (size_t t = 0; t < nd; ++t) P.A[nd + N + i][t] = BzC[i][t];
+    for (size_t t = 0; t < nz; ++t) P.A[nd + N + i][nd + N + t] = Az[i][t];
+  }
+  return P;
 }
-
-std::string approx(const rational& x) { return std::to_string(x.convert_to<double>()); }
 
 Realisation discrete(const detail::SceneLoop::Discrete& b) { return b.is_ss ? Realisation{b.A, b.B, b.C, b.D} : realise(b.tf); }
 
@@ -120,6 +170,12 @@ Mat inverse(Mat M) {
   return I;
 }
 
+std::string approx(const rational& x) {
+  std::ostringstream o;
+  o << std::setprecision(4) << x.convert_to<double>();
+  return o.str();
+}
+
 BallRows balls(const Mat& M) {
   BallRows out(M.size());
   for (size_t i = 0; i < M.size(); ++i)
@@ -141,8 +197,9 @@ BallRows product(const BallRows& X, const BallRows& Y) {
 
 // M of the header at the thread's ball precision.
 BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
-  const auto [A, Bu] = plant(L);
-  const size_t N = L.dofs(), ns = A.size();
+  const Plant pl = plant(L);
+  const Mat &A = pl.A, &Bu = pl.B;
+  const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
   // [Phi Gamma; 0 I] = exp([A B; 0 0] T)
   flint::BallMat aug(static_cast<long>(ns + N), static_cast<long>(ns + N)), ex(static_cast<long>(ns + N), static_cast<long>(ns + N));
   for (size_t i = 0; i < ns; ++i) {
@@ -169,7 +226,7 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
   Mat F = rational_matrix::zeros(N, nc), X = rational_matrix::zeros(N, nc);
   for (size_t i = 0; i < N; ++i) {
     for (size_t j = 0; j < N; ++j) {
-      for (size_t k = 0; k < N; ++k) F[i][2 * k + 1] -= W[i][j] * E.D[j][k];  // C_x picks the positions (2k + 1)
+      for (size_t k = 0; k < N; ++k) F[i][pos + k] -= W[i][j] * E.D[j][k];  // C_x picks the positions
       for (size_t t = 0; t < nE; ++t) F[i][ns + t] -= W[i][j] * E.C[j][t];
       for (size_t t = 0; t < nV; ++t) {
         rational dc = 0;
@@ -177,7 +234,7 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
         F[i][ns + nE + t] -= W[i][j] * dc;
       }
     }
-    X[i][2 * i + 1] += 1;
+    X[i][pos + i] += 1;
     for (size_t t = 0; t < nV; ++t) X[i][ns + nE + t] += V.C[i][t];
   }
   X = rational_matrix::add(X, rational_matrix::mul(V.D, F));
