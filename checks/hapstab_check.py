@@ -1947,6 +1947,8 @@ def scene_read(model, free, coupling=False):
     for key in root:
         if key not in SCENE_LOOP and key not in SCENE_IGNORED and not (coupling and key == "coupling"):
             scene_beyond("[%s]" % key, "a section this checker does not model")
+    if isinstance(root.get("multidof"), dict) and "perturb_C" in root["multidof"]:  # it changes E (multidof commands only)
+        scene_beyond("multidof.perturb_C", "Sec. VI's perturbed environment, which stability does not model")
     head = root.get("scene")
     if not isinstance(head, dict) or "T" not in head:
         raise Malformed("model.scene: [scene].T: missing (the sample period)")

@@ -1635,6 +1635,7 @@ def loop_mutants(cert, rng, hapstab, cache, tmp):
             expect = "agree"
         out.append(("scene: " + name, with_field(cert, ["model", "scene"], text), expect))
     out.append(("scene: a [contact]", with_field(cert, ["model", "scene"], scene + "[contact]\n"), "malformed"))
+    out.append(("scene: [multidof] perturb_C", with_field(cert, ["model", "scene"], scene + '[multidof]\nperturb_C = [["0", "1"], ["1", "0"]]\n'), "malformed"))
     out.append(("scene: an ss device", with_field(cert, ["model", "scene"],
                                                    scene.replace('[[device]]\nname = "d0"', '[[device]]\nname = "d0"\nss = { A = [["0"]] }', 1)), "malformed"))
     out.append(("scene: a delay of half a sample", with_field(cert, ["model", "scene"], scene.replace(

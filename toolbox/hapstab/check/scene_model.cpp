@@ -164,6 +164,8 @@ toml::table parse_scene(const std::string& text, bool coupling = false) {
     if (!loop.count(key) && !ignored.count(key) && !(coupling && key == "coupling"))
       beyond("[" + key + "]", "a section this checker does not model");
   }
+  if (const auto* m = root["multidof"].as_table(); m && m->contains("perturb_C"))  // it changes E (multidof commands only)
+    beyond("multidof.perturb_C", "Sec. VI's perturbed environment, which stability does not model");
   return root;
 }
 
