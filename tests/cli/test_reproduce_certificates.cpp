@@ -49,20 +49,31 @@ TEST(CmdReproduce, CertificatesAreWrittenCheckedAndLinked) {
     EXPECT_EQ(s["beyond_independent_size_limit"].get<size_t>(), 0u);
   }
   ASSERT_EQ(index["certificates"].size(), n);
+  size_t scenes = 0;
   for (const auto& e : index["certificates"]) {
     const std::string file = e["file"].get<std::string>();
     EXPECT_TRUE(fs::exists(root / "out" / file)) << file;
-    EXPECT_EQ(e["kind"], "bound") << file;
-    EXPECT_EQ(e["claim"].get<std::string>().rfind("001.", 0), 0u) << file;
     EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
     if (have_python()) {
       EXPECT_EQ(e["independent_checker"]["verdict"], "verified") << file;
     }
     EXPECT_GT(e["bytes"].get<size_t>(), 0u);
-    EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab bound --H ", 0), 0u) << e["command"];
     const json c = json::parse(read(root / "out" / file));
+    if (file.rfind("certificates/scene.", 0) == 0) {  // 001's tightness scenes: their loop's verdict, the scene as the model
+      ++scenes;
+      EXPECT_EQ(e["kind"], "stability") << file;
+      EXPECT_EQ(e["claim"].get<std::string>().rfind("examples/001_tightness_", 0), 0u) << file;
+      EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab stability --scene examples/001_tightness_", 0), 0u) << e["command"];
+      EXPECT_TRUE(c["model"]["scene"].is_string()) << file;
+      EXPECT_EQ(c["claim"]["stable"], file.find("above") != std::string::npos) << file;  // above the bound it decays
+      continue;
+    }
+    EXPECT_EQ(e["kind"], "bound") << file;
+    EXPECT_EQ(e["claim"].get<std::string>().rfind("001.", 0), 0u) << file;
+    EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab bound --H ", 0), 0u) << e["command"];
     EXPECT_EQ(c["model"]["T"], "1/1000") << file;
   }
+  EXPECT_EQ(scenes, 2u);
   const std::string counts = std::to_string(n) + " certificates, " + std::to_string(n) + " verified by hapstab check, ";
   EXPECT_NE(r.out.find(counts), std::string::npos) << r.out;
   const std::string md = read(root / "out" / "report.md");
@@ -81,6 +92,7 @@ TEST(CmdReproduce, CertificatesAreWrittenCheckedAndLinked) {
   // b* = +inf has certificates at t_d = T/2 (a rational pole), none at the irrational band end cos(pi/100)
   EXPECT_NE(md.find("where b* = +inf has no certificate yet (issue 47)"), std::string::npos);
   EXPECT_NE(md.find("numeric: no certificate"), std::string::npos);  // 001.dirichlet.approx
+  EXPECT_NE(md.find("the simulated trend is numeric; the loop's stability, which it shows:"), std::string::npos);
   const json eta = json::parse(read(root / "out" / "certificates" / "001.eq54.2.json"));
   EXPECT_EQ(eta["model"]["eta"], "1/10");
   EXPECT_EQ(eta["claim"]["value"], "28/5");  // KT/2 + B + eta = 1/2 + 5 + 1/10
@@ -193,7 +205,9 @@ TEST(CmdReproduce, AtLeastComparesTheCertifiedGains) {
 // VI's nominal cases, case ii perturbed (perturb_C, in the certificate's model) and the coupling
 // scene a multidof-feasible each, case i perturbed (infeasible by the facial conditions: E'(1) is
 // not symmetric) a multidof-facial; so do their `multidof design` runs (multidof-coupling), but case
-// i perturbed's (no V); each checked by both checkers and linked from the scene's row.
+// i perturbed's (no V); each checked by both checkers and linked from the scene's row. The loop as
+// written of the scenes stability reads (not the perturbed ones: perturb_C) has its stability-loop
+// certificate: NOT stable without a coupling, stable with the paper's (27) (Fig. 6).
 TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
   HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fs::path(::testing::TempDir()) / "repro_scene_certificates";
@@ -207,6 +221,14 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
     const std::string file = e["file"].get<std::string>();
     if (file.rfind("certificates/scene.", 0) != 0) continue;
     scenes.insert(file);
+    if (file.find(".stability.json") != std::string::npos) {  // the loop as written: analyze's verdict, certified
+      EXPECT_EQ(e["kind"], "stability-loop") << file;
+      EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
+      EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab stability --scene examples/", 0), 0u) << e["command"];
+      const json c = json::parse(read(root / "out" / file));
+      EXPECT_EQ(c["claim"]["stable"], file.find("coupling") != std::string::npos) << file;  // Fig. 6: stable with (27) only
+      continue;
+    }
     const bool design = file.find(".design.json") != std::string::npos;
     EXPECT_EQ(e["kind"], design ? "multidof-coupling"
                          : file == "certificates/scene.multidof_case_i_perturbed.json" ? "multidof-facial"
@@ -227,9 +249,13 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
                                             "certificates/scene.multidof_case_ii_nominal.json",
                                             "certificates/scene.multidof_case_ii_nominal.design.json",
                                             "certificates/scene.multidof_case_ii_perturbed.json",
-                                            "certificates/scene.multidof_case_ii_perturbed.design.json"}));
+                                            "certificates/scene.multidof_case_ii_perturbed.design.json",
+                                            "certificates/scene.multidof_case_i_nominal.stability.json",
+                                            "certificates/scene.multidof_case_ii_coupling.stability.json",
+                                            "certificates/scene.multidof_case_ii_nominal.stability.json"}));
   const std::string md = read(root / "out" / "report.md");
-  EXPECT_NE(md.find("[scene.multidof_case_ii_nominal.json](certificates/scene.multidof_case_ii_nominal.json) (multidof-feasible)"),
+  EXPECT_NE(md.find("2 certificates (multidof-feasible, stability-loop): [1](certificates/scene.multidof_case_ii_nominal.json) "
+                    "[2](certificates/scene.multidof_case_ii_nominal.stability.json)"),
             std::string::npos);
   EXPECT_NE(md.find("[scene.multidof_case_i_perturbed.json](certificates/scene.multidof_case_i_perturbed.json) (multidof-facial)"),
             std::string::npos);
