@@ -1724,25 +1724,19 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
             skipped["stability-max: exit %s" % cert] = skipped.get("stability-max: exit %s" % cert, 0) + 1
             continue
         certs.append(("stability-max", cert))
-    for i in range(max(a.models // 2, 2) if "stability" in kinds else 0):
-        m = rand_stability(rng, STABILITY_TEMPLATES + POLE_TEMPLATES)
-        cert = stability_produce(a.hapstab, m, scache, tmp)
-        if not isinstance(cert, dict):
-            skipped["stability: exit %s" % cert] = skipped.get("stability: exit %s" % cert, 0) + 1
-            continue
-        certs.append(("stability", cert))
-    for i in range(max(a.models // 4, 2) if "stability-loop" in kinds else 0):
-        cert = loop_produce(a.hapstab, rand_loop_scene(lrng2), scache, tmp)
-        if not isinstance(cert, dict):
-            skipped["stability-loop: exit %s" % cert] = skipped.get("stability-loop: exit %s" % cert, 0) + 1
-            continue
-        certs.append(("stability-loop", cert))
-    for i in range(max(a.models // 2, 2) if "wedge" in kinds else 0):
-        cert = wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp)
-        if not isinstance(cert, dict):
-            skipped["wedge: exit %s" % cert] = skipped.get("wedge: exit %s" % cert, 0) + 1
-            continue
-        certs.append(("wedge", cert))
+    def collect(kind, count, make):
+        """count certificates of `kind` from make() (a certificate, or the exit code of a producer run
+        that wrote none: counted in skipped)."""
+        for _ in range(count if kind in kinds else 0):
+            cert = make()
+            if isinstance(cert, dict):
+                certs.append((kind, cert))
+            else:
+                skipped["%s: exit %s" % (kind, cert)] = skipped.get("%s: exit %s" % (kind, cert), 0) + 1
+    collect("stability", max(a.models // 2, 2),
+            lambda: stability_produce(a.hapstab, rand_stability(rng, STABILITY_TEMPLATES + POLE_TEMPLATES), scache, tmp))
+    collect("stability-loop", max(a.models // 4, 2), lambda: loop_produce(a.hapstab, rand_loop_scene(lrng2), scache, tmp))
+    collect("wedge", max(a.models // 2, 2), lambda: wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp))
     for i in range(max(a.models // 2, 2) if "bound-inf" in kinds else 0):
         m = rand_inf_model(irng)
         path = os.path.join(tmp, "i%d.json" % i)

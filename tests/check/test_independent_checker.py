@@ -158,22 +158,7 @@ class Stability(unittest.TestCase):
         self.assertIn("claim.stable", hc.check(c2)[1])
 
 
-WALL_SCENE = """[scene]
-name = "mass on a wall"
-T = "1/1000"
-[parameters]
-k = "7"
-K = "k*1000"
-B = 2
-[[device]]
-name = "arm"
-m = "1"
-[environment]
-tf = "K + B*(z-1)/(T*z)"
-[[input]]
-type = "impulse"
-magnitude = "1"
-"""
+WALL_SCENE = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "fixtures", "scene_mass_wall.toml")).read()  # shared with test_check
 
 
 def scene_cert(scene, stable, sets=None):

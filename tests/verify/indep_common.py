@@ -110,6 +110,15 @@ class SumTF:
         return [t.den for t in self.terms]
 
 
+def cases_and_seed(argv, cases=12, seed=1):
+    """--cases N and --seed S of a small campaign script's argv (its defaults otherwise)."""
+    if "--cases" in argv:
+        cases = int(argv[argv.index("--cases") + 1])
+    if "--seed" in argv:
+        seed = int(argv[argv.index("--seed") + 1])
+    return cases, seed
+
+
 def run_hapstab(exe, args, timeout):
     """Runs `hapstab ARGS --json`; returns (rc, parsed JSON or None, stderr text, seconds)."""
     t0 = time.monotonic()

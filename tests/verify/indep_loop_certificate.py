@@ -30,6 +30,7 @@ import mpmath as mp  # noqa: E402
 
 import indep_coupled as IC  # noqa: E402
 import indep_loop as IL  # noqa: E402
+from indep_common import cases_and_seed  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -135,8 +136,7 @@ def run_case(exe, c, tmp):
 
 def main(argv):
     exe = argv[1]
-    cases = int(argv[argv.index("--cases") + 1]) if "--cases" in argv else 12
-    seed = int(argv[argv.index("--seed") + 1]) if "--seed" in argv else 1
+    cases, seed = cases_and_seed(argv)
     rng = random.Random("loop-certificate:%d" % seed)
     bad = good = skipped = near = coupled = blocks = 0
     branches = {"stable": 0, "NOT stable": 0}

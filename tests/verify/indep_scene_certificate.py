@@ -30,7 +30,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
-from indep_common import Rational  # noqa: E402
+from indep_common import Rational, cases_and_seed  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CHECKERS = (lambda exe, f: [exe, "check", f], lambda exe, f: ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), f])
@@ -176,11 +176,7 @@ BRANCHES = ("stable", "NOT stable", "sup g = 0", "sup g finite")
 
 def main(argv):
     exe = argv[1]
-    cases, seed = 12, 1
-    if "--cases" in argv:
-        cases = int(argv[argv.index("--cases") + 1])
-    if "--seed" in argv:
-        seed = int(argv[argv.index("--seed") + 1])
+    cases, seed = cases_and_seed(argv)
     rng = random.Random("scene-certificate:%d" % seed)
     bad = counts = 0
     forms = {}

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
-from indep_common import Rational  # noqa: E402
+from indep_common import Rational, cases_and_seed  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -91,11 +91,7 @@ SPRINGS = [  # (m, b, operator mass, K, B, T, n, k): two poles off s = 0, e^{A_c
 
 def main(argv):
     exe = argv[1]
-    cases, seed = 12, 1
-    if "--cases" in argv:
-        cases = int(argv[argv.index("--cases") + 1])
-    if "--seed" in argv:
-        seed = int(argv[argv.index("--seed") + 1])
+    cases, seed = cases_and_seed(argv)
     rng = random.Random(seed)
     todo = list(FIXED) + list(SPRINGS)
     springs = random.Random("%d:spring" % seed)  # its own draws: the mass-damper cases of a seed stay as they were
