@@ -2007,8 +2007,8 @@ def scene_wall_entry(env, text, expand):
     return E
 
 
-def scene_delay(root, T, field, limit=100000):
-    """[delay] as a whole number of samples in [0, limit]; 0 without the section."""
+def scene_delay(root, T, field, limit=100000, whole=True):
+    """[delay] in samples, in [0, limit] (a whole number when `whole`); 0 without the section."""
     if "delay" not in root:
         return 0
     delay = root["delay"]
@@ -2022,11 +2022,11 @@ def scene_delay(root, T, field, limit=100000):
     d = d / T if key == "time" else d
     if d < 0:
         raise Malformed("model.scene: delay.%s: must be >= 0" % key)
-    if d.denominator != 1:
+    if whole and d.denominator != 1:
         scene_beyond("delay." + key, "a delay of %s samples, not a whole number" % d)
     if d > limit:
         scene_beyond("delay." + key, "more than %d samples" % limit)
-    return int(d)
+    return int(d) if whole else d
 
 
 def scene_loop_model(model, free=False):
@@ -2205,7 +2205,7 @@ def scene_loop_read(model):
         if not isinstance(root["coupling"], dict):
             raise Malformed("model.scene: [coupling]: not a table")
         V = scene_discrete(root["coupling"], "coupling", len(names), T, expand, field)
-    return T, scene_delay(root, T, field, limit=1000), devices, mass, damp, stiff, ops, E, V
+    return T, scene_delay(root, T, field, limit=1000, whole=False), devices, mass, damp, stiff, ops, E, V
 
 
 def scene_device_block(d, key, T, expand):
@@ -2458,11 +2458,28 @@ def loop_matrix(loop, bits):
     """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`: the plant held,
     the controller x_e = x + V u, u = -E x_e solved exactly (u = F [s; xi; eta], x_e = X [s; xi; eta]),
     the delay's buffer."""
-    T, n, devices, mass, damp, stiff, ops, Eb, Vb = loop
+    T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
     A, Bu, pos = loop_plant(devices, mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
+    n, f = int(d), (d - int(d)) * T  # t_d = n T + f
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
-    Xp = expm_interval_n(aug, T, bits)
+
+    def hold(h):  # (Phi_h, Gamma_h) from exp([A B; 0 0] h)
+        X = expm_interval_n(aug, h, bits)
+        return [r[:ns] for r in X[:ns]], [r[ns:] for r in X[:ns]]
+
+    def imul(P, Q):
+        return [[sum((P[i][k] * Q[k][j] for k in range(len(Q))), Iv(0)) for j in range(len(Q[0]))] for i in range(len(P))]
+    # over a period the plant sees u_(k-n-1) on [kT, kT + f) and u_(k-n) after:
+    # s+ = Phi_T s + Phi_(T-f) Gamma_f u_(k-n-1) + Gamma_(T-f) u_(k-n)
+    if f == 0:
+        Phi, G0 = hold(T)
+        G1 = None
+    else:
+        Pa, G0 = hold(T - f)
+        Pb, Gb = hold(f)
+        Phi, G1 = imul(Pa, Pb), imul(Pa, Gb)
+    buffers = n + (1 if f else 0)
     AE, BE, CE, DE = Eb[1] if Eb[0] == "ss" else realise_columns(Eb[1])
     if Vb is None:
         AV, BV, CV, DV = [], [], [[] for _ in range(N)], [[Fraction(0)] * N for _ in range(N)]
@@ -2470,7 +2487,7 @@ def loop_matrix(loop, bits):
         AV, BV, CV, DV = Vb[1] if Vb[0] == "ss" else realise_columns(Vb[1])
     nE, nV = len(AE), len(AV)
     nc = ns + nE + nV
-    order = nc + n * N
+    order = nc + buffers * N
     if order > MAX_LOOP_ORDER:
         raise TooLarge("the closed loop has %d states, above this checker's limit %d" % (order, MAX_LOOP_ORDER))
     W = frac_inverse([[Fraction(1 if i == j else 0) + sum(DE[i][k] * DV[k][j] for k in range(N)) for j in range(N)] for i in range(N)])
@@ -2492,19 +2509,24 @@ def loop_matrix(loop, bits):
     M = [[Z] * order for _ in range(order)]
     for i in range(ns):
         for j in range(ns):
-            M[i][j] = Xp[i][j]
-    if n == 0:
+            M[i][j] = Phi[i][j]
+
+    def drive(G, age):  # u_(k-age) on s: age 0 is u_k = F [s; xi; eta], age a >= 1 the buffer's block a
         for i in range(ns):
-            for j in range(nc):
-                M[i][j] = M[i][j] + sum((Xp[i][ns + k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
-    else:
-        for i in range(ns):
-            for j in range(N):
-                M[i][nc + (n - 1) * N + j] = Xp[i][ns + j]
+            if age == 0:
+                for j in range(nc):
+                    M[i][j] = M[i][j] + sum((G[i][k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
+            else:
+                for j in range(N):
+                    M[i][nc + (age - 1) * N + j] = G[i][j]
+    drive(G0, n)
+    if f:
+        drive(G1, n + 1)
+    if buffers:
         for i in range(N):
             for j in range(nc):
                 M[nc + i][j] = Iv(F[i][j])
-        for b in range(1, n):
+        for b in range(1, buffers):
             for i in range(N):
                 M[nc + b * N + i][nc + (b - 1) * N + i] = Iv(1)
     for i in range(nE):

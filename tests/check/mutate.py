@@ -40,6 +40,7 @@ import copy
 import json
 import os
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -1521,7 +1522,7 @@ def rand_loop_scene(rng):
     tf or ss, open-loop unstable with b = -1), operators (b, or
     m, b, k, on one DOF; a tf impedance coupling two DOFs in a fifth), diagonal walls K + B(z-1)/(Tz)
     with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a coupling (tf or ss) in
-    30 %, a delay 0-2."""
+    30 %, a delay of 0-2 samples, fractions of one too."""
     N = rng.choice([2, 2, 3])
     T = rng.choice(["1/1000", "1/500"])
     L = ["[scene]", 'T = "%s"' % T, "[parameters]", 'g = "%s"' % rng.choice(["1/2", "1", "2", "5"]),
@@ -1575,9 +1576,9 @@ def rand_loop_scene(rng):
         else:  # a static compliance, as ss with no state
             L += ["[coupling]", "ss = { A = [], B = [], C = [], D = [%s] }" % ", ".join(
                 "[" + ", ".join('"1/%d"' % kcs[i] if i == j else '"0"' for j in range(N)) + "]" for i in range(N))]
-    n = rng.choice([0, 0, 1, 2])
-    if n:
-        L += ["[delay]", 'samples = "%d"' % n]
+    n = rng.choice(["0", "0", "1", "2", "1/2", "3/4", "3/2"])
+    if n != "0":
+        L += ["[delay]", 'samples = "%s"' % n]
     return "\n".join(L) + "\n"
 
 
@@ -1622,7 +1623,8 @@ def loop_mutants(cert, rng, hapstab, cache, tmp):
         out.append(("w zero", with_field(cert, ["evidence", "w"], ["0"] * n), "refute"))
         out.append(("w one entry short", with_field(cert, ["evidence", "w"], ev["w"][:-1]), "malformed"))
     scene = cert["model"]["scene"]
-    edits = [("g x 4", scene.replace('g = "', 'g = "4*', 1)), ("g / 4", scene.replace('g = "', 'g = "(1/4)*', 1)),
+    half = (scene + '[delay]\nsamples = "1/2"\n') if "[delay]" not in scene else scene.replace('samples = "', 'samples = "1/2 + ', 1)
+    edits = [("a delay of half a sample more", half), ("g x 4", scene.replace('g = "', 'g = "4*', 1)), ("g / 4", scene.replace('g = "', 'g = "(1/4)*', 1)),
              ("T halved", scene.replace('T = "', 'T = "(1/2)*', 1)), ("the first mass x 4", scene.replace('m = "', 'm = "4*', 1)),
              ("the first damping + 5", scene.replace('b = "', 'b = "5 + ', 1))]
     for name, text in edits:
@@ -1638,8 +1640,6 @@ def loop_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("scene: [multidof] perturb_C", with_field(cert, ["model", "scene"], scene + '[multidof]\nperturb_C = [["0", "1"], ["1", "0"]]\n'), "malformed"))
     out.append(("scene: an ss device", with_field(cert, ["model", "scene"],
                                                    scene.replace('[[device]]\nname = "d0"', '[[device]]\nname = "d0"\nss = { A = [["0"]] }', 1)), "malformed"))
-    out.append(("scene: a delay of half a sample", with_field(cert, ["model", "scene"], scene.replace(
-        "[environment]", '[delay]\nsamples = "1/2"\n[environment]', 1) if "[delay]" not in scene else scene.replace('samples = "', 'samples = "1/2 + ', 1)), "malformed"))
     for path in (["model", "scene"], ["evidence", "P"], ["claim", "stable"], ["claim", "status"]):
         out.append(("deleted " + ".".join(path), deleted(cert, path), "malformed"))
     out.append(("status exact", with_field(cert, ["claim", "status"], "exact"), "malformed"))
@@ -1818,10 +1818,11 @@ def print_branches(certs, mutants, cpp):
     if loops:
         sc = [c["model"]["scene"] for c in loops]
         print("  stability-loop branches: stable %d, NOT stable %d; 3 DOF %d, a delay %d, a tf operator %d, the wall in s %d; "
-              "a coupling %d; a tf or ss device %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
+              "a coupling %d; a tf or ss device %d; a fractional delay %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
                                 sum(1 for t in sc if 'name = "d2"' in t), sum(1 for t in sc if "[delay]" in t),
                                 sum(1 for t in sc if 'dofs = ["d0", "d1"]' in t), sum(1 for t in sc if 'domain = "s"' in t),
                                 sum(1 for t in sc if "[coupling]" in t), sum(1 for t in sc if "passive = false" in t),
+                                sum(1 for t in sc if re.search(r'samples = "\d*/', t)),
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:

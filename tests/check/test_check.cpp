@@ -884,7 +884,7 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
   other["model"]["scene"] = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\nb = \"40\"\n[environment]\ntf = \"100\"\n";
   EXPECT_FALSE(check_certificate(other).verified);  // a damped loop: this P does not prove it
   for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
-           {"[contact]\n", "[contact]"}, {"[delay]\nsamples = \"1/2\"\n", "not a whole number"},
+           {"[contact]\n", "[contact]"}, {"[passivity_controller]\ndofs = [0]\n", "[passivity_controller]"},
            {"[[operator]]\ntf = \"1/s\"\n", "pole at s = 0"}}) {
     auto c = cert;
     c["model"]["scene"] = scene + edit;

@@ -253,7 +253,7 @@ class StabilityLoop(unittest.TestCase):
         self.assertEqual(hc.check(loop_cert(LOOP_SCENE, True, self.P))[0], 1)
         damped = LOOP_SCENE.replace('m = "2"', 'm = "2"\nb = "40"')
         self.assertEqual(hc.check(loop_cert(damped, False, self.P, ["1", "0"]))[0], 1)
-        for edit, field in (("[contact]\n", "[contact]"), ('[delay]\nsamples = "1/2"\n', "not a whole number"),
+        for edit, field in (("[contact]\n", "[contact]"), ('[passivity_controller]\ndofs = [0]\n', "[passivity_controller]"),
                             ('[[operator]]\ntf = "1/s"\n', "pole at s = 0")):
             code, why = hc.check(loop_cert(LOOP_SCENE + edit, False, self.P, ["1", "0"]))
             self.assertEqual(code, 2, why)

@@ -545,9 +545,10 @@ def scene_toml(c):
     return "\n".join(L) + "\n"
 
 
-def scene_plant(c):
+def scene_plant(c, with_matrices=False):
     """The scene's devices (and operators' dampers) sampled under a ZOH: (Phi, Gamma, Cy) at 50
-    digits, the state per DOF [velocity, position], Cy the sampled positions."""
+    digits, the state per DOF [velocity, position], Cy the sampled positions (with_matrices: the
+    continuous (A, B, Cy) instead)."""
     with mp.workdps(DPS):
         N = len(c["devices"])
         # continuous plant: per DOF the device's velocity state(s) and its position
@@ -574,6 +575,8 @@ def scene_plant(c):
             A[2 * i + 1, 2 * i] = 1       # position' = velocity
             B[2 * i, i] = bv
             Cy[i, 2 * i + 1] = 1
+        if with_matrices:
+            return A, B, Cy
         Phi, Gam = zoh(A, B, mpq(c["T"]))
         return Phi, Gam, Cy
 

@@ -44,19 +44,75 @@ def draw(rng, coupled):
     V(z) and g in one of its five places): its first device often an ss block, open-loop unstable."""
     c = IC.gen_coupled(rng) if coupled else IL.gen_scene(rng)
     c["g"] = IL.rq(rng, 0.2, 3)
+    if not coupled and rng.random() < 0.5:  # a fractional delay, t_d = (n + frac) T
+        c["frac"] = rng.choice([Q(1, 2), Q(1, 4), Q(3, 4), Q(1, 10)])
     c["coupled"] = coupled
     return c
 
 
+def rho_fractional(c, g):
+    """rho of the loop with t_d = (n + frac) T (no coupling), assembled here: over a period the plant
+    sees u_(k-n-1) for frac T, then u_(k-n): s+ = Phi_T s + Phi_(T-f) Gamma_f u_(k-n-1) + Gamma_(T-f) u_(k-n)."""
+    A, B, Cy = IL.scene_plant(c, with_matrices=True)
+    T, f = IL.mpq(c["T"]), IL.mpq(c["frac"]) * IL.mpq(c["T"])
+    Pa, Ga = IL.zoh(A, B, T - f)
+    Pb, Gb = IL.zoh(A, B, f)
+    Ae, Be, Ce, De = IL.realize_matrix(c["E"])
+    npl, ne, N, n = A.rows, Ae.rows, B.cols, c["n"]
+    L = n + 1
+    order = npl + ne + L * N
+    M = mp.zeros(order, order)
+    H = mp.zeros(N, order)  # the force u_k = -g (C_E xi + D_E Cy s)
+    DC = De * Cy
+    for i in range(N):
+        for j in range(npl):
+            H[i, j] = -g * DC[i, j]
+        for j in range(ne):
+            H[i, npl + j] = -g * Ce[i, j]
+    P = Pa * Pb
+    G1 = Pa * Gb
+    for i in range(npl):
+        for j in range(npl):
+            M[i, j] = P[i, j]
+    for age, G in ((n, Ga), (n + 1, G1)):
+        for i in range(npl):
+            if age == 0:
+                for j in range(order):
+                    M[i, j] += sum(G[i, k] * H[k, j] for k in range(N))
+            else:
+                for k in range(N):
+                    M[i, npl + ne + (age - 1) * N + k] = G[i, k]
+    BC = Be * Cy
+    for i in range(ne):
+        for j in range(npl):
+            M[npl + i, j] = BC[i, j]
+        for j in range(ne):
+            M[npl + i, npl + j] = Ae[i, j]
+    for k in range(N):
+        for j in range(order):
+            M[npl + ne + k, j] = H[k, j]
+    for b in range(1, L):
+        for k in range(N):
+            M[npl + ne + b * N + k, npl + ne + (b - 1) * N + k] = 1
+    return max(abs(x) for x in mp.eig(M, left=False, right=False))
+
+
 def rho(c, g):
     with mp.workdps(IL.DPS):
+        if c.get("frac"):
+            return rho_fractional(c, mp.mpf(g.numerator) / g.denominator)
         loop = IC.CoupledLoop(c) if c["coupled"] else IL.build_loop_scene(c)
         return IL.rho_mp(loop, mp.mpf(g.numerator) / g.denominator)[0]
 
 
 def scene_text(c):
-    """The scene with g = 1 in [parameters] (--set gives c["g"])."""
-    return IC.scene_toml(c, 1) if c["coupled"] else IL.scene_toml(c)
+    """The scene with g = 1 in [parameters] (--set gives c["g"]); a fractional delay as samples."""
+    text = IC.scene_toml(c, 1) if c["coupled"] else IL.scene_toml(c)
+    if c.get("frac"):
+        text = text.replace('[delay]\nsamples = "%d"\n' % c["n"], "") + '[delay]\nsamples = "%d + %s"\n' % (c["n"], c["frac"])
+    return text
+
+
 
 
 def near_crossing(c, rng):
@@ -138,7 +194,7 @@ def main(argv):
     exe = argv[1]
     cases, seed = cases_and_seed(argv)
     rng = random.Random("loop-certificate:%d" % seed)
-    bad = good = skipped = near = coupled = blocks = 0
+    bad = good = skipped = near = coupled = blocks = fractional = 0
     branches = {"stable": 0, "NOT stable": 0}
     with tempfile.TemporaryDirectory(prefix="hapstab-loop-cert-") as tmp:
         for i in range(cases):
@@ -148,7 +204,8 @@ def main(argv):
                 if g is not None:
                     c["g"], near = g, near + 1
             ok, line, branch = run_case(exe, c, tmp)
-            print("%s case %d (%s DOF, delay %d%s): %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], i, c["tags"]["DOF"], c["n"],
+            print("%s case %d (%s DOF, delay %s%s): %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], i, c["tags"]["DOF"],
+                                                           c["n"] + c.get("frac", 0),
                                                            ", coupled, g in " + c["tags"]["g in"] if c["coupled"] else "", line))
             bad += ok is False
             good += ok is True
@@ -157,10 +214,11 @@ def main(argv):
                 branches[branch] += 1
                 coupled += c["coupled"]
                 blocks += c["devices"][0]["kind"] == "ss"
-    print("indep_loop_certificate: %d cases, %d agree (%d with a coupling, %d with an ss device), %d disagree, %d skipped; %d "
-          "within 1e-4 of a crossing; %s" % (cases, good, coupled, blocks, bad, skipped, near,
-                                              ", ".join("'%s' %d" % kv for kv in branches.items())))
-    if cases >= 12 and (0 in branches.values() or coupled == 0 or blocks == 0):
+                fractional += bool(c.get("frac"))
+    print("indep_loop_certificate: %d cases, %d agree (%d with a coupling, %d with an ss device, %d with a fractional delay), "
+          "%d disagree, %d skipped; %d within 1e-4 of a crossing; %s" % (cases, good, coupled, blocks, fractional, bad, skipped, near,
+                                                                          ", ".join("'%s' %d" % kv for kv in branches.items())))
+    if cases >= 12 and (0 in branches.values() or coupled == 0 or blocks == 0 or fractional == 0):
         print("indep_loop_certificate: TOO FEW COMPARED: a verdict never reached")
         return 1
     return 1 if bad else 0

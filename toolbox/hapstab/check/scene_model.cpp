@@ -258,7 +258,8 @@ std::string read_wall(const toml::table* env, Parameters& p) {
 }
 
 // [delay]: n = t_d/T, a whole number of samples in [0, 10^5]; 0 without the section.
-long read_delay(const toml::table& root, Parameters& p, const rational& T) {
+// [delay] in samples, t_d/T >= 0 (0 without the section); `whole`: a whole number is required.
+rational read_delay_samples(const toml::table& root, Parameters& p, const rational& T, bool whole) {
   const auto* delay = root["delay"].as_table();
   if (!delay) {
     if (root.contains("delay")) malformed("[delay]", "not a table");
@@ -271,7 +272,13 @@ long read_delay(const toml::table& root, Parameters& p, const rational& T) {
   rational d = constant(field(*delay, key.c_str(), "delay", p, "0"), T, "delay." + key);
   if (time) d /= T;
   if (d < 0) malformed("delay." + key, "must be >= 0");
-  if (bmp::denominator(d) != 1) beyond("delay." + key, "a delay of " + d.str() + " samples, not a whole number");
+  if (whole && bmp::denominator(d) != 1) beyond("delay." + key, "a delay of " + d.str() + " samples, not a whole number");
+  return d;
+}
+
+long read_delay(const toml::table& root, Parameters& p, const rational& T) {
+  const rational d = read_delay_samples(root, p, T, true);
+  const std::string key = root["delay"].as_table() && root["delay"].as_table()->contains("time") ? "time" : "samples";
   if (d > 100000) beyond("delay." + key, "more than 100000 samples");
   return static_cast<long>(bmp::numerator(d));
 }
@@ -535,8 +542,10 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
   out.E = read_discrete(*env, "environment", names.size(), p, T);
   if (const auto* cpl = root["coupling"].as_table()) out.V = read_discrete(*cpl, "coupling", names.size(), p, T);
   else if (root.contains("coupling")) malformed("[coupling]", "not a table");
-  out.delay = read_delay(root, p, T);
-  if (out.delay > 1000) beyond("[delay]", "more than 1000 samples for the closed-loop matrix");
+  const rational d = read_delay_samples(root, p, T, false);
+  if (d > 1000) beyond("[delay]", "more than 1000 samples for the closed-loop matrix");
+  out.delay = static_cast<long>(bmp::numerator(d) / bmp::denominator(d));  // floor (d >= 0)
+  out.fraction = d - out.delay;
   return out;
 }
 

@@ -45,9 +45,8 @@ namespace hapstab::check::detail {
 ///                                Euler/Tustin; times gain (an ss block's C and D)
 ///   [coupling] tf or ss          V(z), force -> displacement, in parallel with the device (paper 000
 ///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
-///   [delay]                      a whole number of samples in [0, 1000]
-/// Refused by name: anything else (ss operators, count, diagonal, [contact], encoders, friction, a
-/// fractional delay, ...).
+///   [delay]                      t_d in [0, 1000 T], a fraction of a sample too
+/// Refused by name: anything else (ss operators, count, diagonal, [contact], encoders, friction, ...).
 struct SceneLoop {
   using Matrix = std::vector<std::vector<rational>>;
   /// A discrete N x N block: its transfer matrix, or its realisation as written (ss).
@@ -65,7 +64,8 @@ struct SceneLoop {
     std::vector<std::vector<RationalFunction<rational>>> tf;  ///< tf (in s, strictly proper)
   };
   rational T;
-  long delay = 0;
+  long delay = 0;        ///< t_d = (delay + fraction) T
+  rational fraction = 0;  ///< in [0, 1)
   std::vector<Device> devices;
   /// per DOF: a mass-damper's m and b plus its m, b, k operators; a block DOF's operators' m (must
   /// be 0), b and k

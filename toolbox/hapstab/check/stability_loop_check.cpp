@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -200,15 +201,13 @@ BallRows product(const BallRows& X, const BallRows& Y) {
 }
 
 // M of the header at the thread's ball precision.
-BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
-  const Plant pl = plant(L);
-  const Mat &A = pl.A, &Bu = pl.B;
-  const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
-  // [Phi Gamma; 0 I] = exp([A B; 0 0] T)
+// (Phi_h, Gamma_h): [Phi Gamma; 0 I] = exp([A B; 0 0] h), Arb's arb_mat_exp.
+std::pair<BallRows, BallRows> hold(const Mat& A, const Mat& Bu, const rational& h, long bits) {
+  const size_t ns = A.size(), N = Bu.empty() ? 0 : Bu[0].size();
   flint::BallMat aug(static_cast<long>(ns + N), static_cast<long>(ns + N)), ex(static_cast<long>(ns + N), static_cast<long>(ns + N));
   for (size_t i = 0; i < ns; ++i) {
-    for (size_t j = 0; j < ns; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(j)), flint::Ball(A[i][j] * L.T).get());
-    for (size_t j = 0; j < N; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(ns + j)), flint::Ball(Bu[i][j] * L.T).get());
+    for (size_t j = 0; j < ns; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(j)), flint::Ball(A[i][j] * h).get());
+    for (size_t j = 0; j < N; ++j) arb_set(aug.at(static_cast<long>(i), static_cast<long>(ns + j)), flint::Ball(Bu[i][j] * h).get());
   }
   arb_mat_exp(ex.get(), aug.get(), bits);
   BallRows Phi = zero_balls(ns, ns), Gamma = zero_balls(ns, N);
@@ -216,10 +215,31 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
     for (size_t j = 0; j < ns; ++j) arb_set(Phi[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(j)));
     for (size_t j = 0; j < N; ++j) arb_set(Gamma[i][j].get(), ex.at(static_cast<long>(i), static_cast<long>(ns + j)));
   }
+  return {Phi, Gamma};
+}
+
+BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
+  const Plant pl = plant(L);
+  const Mat &A = pl.A, &Bu = pl.B;
+  const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
+  // t_d = n T + f: over a period the plant sees u_{k-n-1} on [kT, kT + f) and u_{k-n} after, so
+  // s+ = Phi_T s + Phi_{T-f} Gamma_f u_{k-n-1} + Gamma_{T-f} u_{k-n} (sim/closed_loop.hpp's step)
+  const rational f = L.fraction * L.T;
+  BallRows Phi, G0, G1;  // G0 acts on u_{k-n}, G1 (f > 0) on u_{k-n-1}
+  if (f == 0) {
+    std::tie(Phi, G0) = hold(A, Bu, L.T, bits);
+  } else {
+    const auto [Pa, Ga] = hold(A, Bu, L.T - f, bits);
+    const auto [Pb, Gb] = hold(A, Bu, f, bits);
+    Phi = product(Pa, Pb);
+    G0 = Ga;
+    G1 = product(Pa, Gb);
+  }
   const Realisation E = discrete(L.E);
   const Realisation V = L.V ? discrete(*L.V) : Realisation{Mat{}, rational_matrix::zeros(0, N), rational_matrix::zeros(N, 0),
                                                           rational_matrix::zeros(N, N)};
-  const size_t nE = E.A.size(), nV = V.A.size(), nc = ns + nE + nV, n = static_cast<size_t>(L.delay), order = nc + n * N;
+  const size_t n = static_cast<size_t>(L.delay), buffers = n + (f == 0 ? 0 : 1);  // u_{k-1} .. u_{k-buffers} kept
+  const size_t nE = E.A.size(), nV = V.A.size(), nc = ns + nE + nV, order = nc + buffers * N;
   if (order > kMaxOrder)
     throw InputError("model.scene: the closed loop has " + std::to_string(order) + " states, beyond this checker's " +
                      std::to_string(kMaxOrder));
@@ -245,16 +265,23 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
   BallRows M = zero_balls(order, order);
   for (size_t i = 0; i < ns; ++i)
     for (size_t j = 0; j < ns; ++j) M[i][j] = Phi[i][j];
-  if (n == 0) {  // s+ = Phi s + Gamma u_k
-    const BallRows GF = product(Gamma, balls(F));
-    for (size_t i = 0; i < ns; ++i)
-      for (size_t j = 0; j < nc; ++j) M[i][j] += GF[i][j];
-  } else {  // s+ = Phi s + Gamma u_{k-n}: the last block of the buffer
-    for (size_t i = 0; i < ns; ++i)
-      for (size_t j = 0; j < N; ++j) M[i][nc + (n - 1) * N + j] = Gamma[i][j];
+  // u_{k-age} on s: age 0 is u_k = F [s; xi; eta] (now), age a >= 1 the buffer's block a
+  const auto drive = [&](const BallRows& G, size_t age) {
+    if (age == 0) {
+      const BallRows GF = product(G, balls(F));
+      for (size_t i = 0; i < ns; ++i)
+        for (size_t j = 0; j < nc; ++j) M[i][j] += GF[i][j];
+    } else {
+      for (size_t i = 0; i < ns; ++i)
+        for (size_t j = 0; j < N; ++j) M[i][nc + (age - 1) * N + j] = G[i][j];
+    }
+  };
+  drive(G0, n);
+  if (f != 0) drive(G1, n + 1);
+  if (buffers > 0) {
     for (size_t i = 0; i < N; ++i)  // the buffer's first block: u_k
       for (size_t j = 0; j < nc; ++j) M[nc + i][j] = flint::Ball(F[i][j]);
-    for (size_t b = 1; b < n; ++b)  // and each block moves one down
+    for (size_t b = 1; b < buffers; ++b)  // and each block moves one down
       for (size_t i = 0; i < N; ++i) M[nc + b * N + i][nc + (b - 1) * N + i] = flint::Ball(1L);
   }
   const Mat BX = rational_matrix::mul(E.B, X), BF = rational_matrix::mul(V.B, F);  // xi+ = A_E xi + B_E x_e, eta+ = A_V eta + B_V u
@@ -381,7 +408,8 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
       throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()));
     if (stein_holds(Pm, M, why))
       return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(M.size()) + " states, " +
-                        std::to_string(L.dofs()) + " DOF, delay " + std::to_string(L.delay) + ") built from the scene, e^{AT} in balls (" +
+                        std::to_string(L.dofs()) + " DOF, delay " + rational(L.delay + L.fraction).str() +
+                        " samples) built from the scene, e^{AT} in balls (" +
                         std::to_string(bits) + " bits); P - M^T P M > 0 for every M in them and " + sign + " (Stein inertia)"};
   }
   return {false, "claim: " + std::string(stable ? "stable" : "NOT stable") + ", but " + why + " at 512 bits"};

@@ -12,8 +12,9 @@
 //            A_E xi + B_E x_e; a [coupling] V(z) likewise, eta+ = A_V eta + B_V u, in parallel with
 //            the device (paper 000 (11)): x_e = y + C_V eta + D_V u, u = -(C_E xi + D_E x_e), solved
 //            exactly: u = -W (D_E C_x s + C_E xi + D_E C_V eta), W = (I + D_E D_V)^-1 (singular:
-//            malformed). The force u_k computed from the samples at kT is applied from kT + nT on:
-//            the state X = [s; xi; eta; u_{k-1}; ...; u_{k-n}] and X_{k+1} = M X_k.
+//            malformed). The force u_k computed from the samples at kT is applied from kT + t_d on,
+//            t_d = n T + f (0 <= f < T): s+ = Phi_T s + Phi_{T-f} Gamma_f u_{k-n-1} + Gamma_{T-f} u_{k-n},
+//            the state X = [s; xi; eta; u_{k-1}; ...; u_{k-L}] (L = n, or n + 1 when f > 0), X+ = M X.
 //
 // Theorem (Stein; the inertia form, e.g. Ostrowski & Schneider 1962): if Q = P - M^T P M > 0 for a
 // symmetric P, M has no eigenvalue on |z| = 1 (M v = z v gives v* Q v = (1 - |z|^2) v* P v), and
