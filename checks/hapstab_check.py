@@ -1888,6 +1888,8 @@ def scene_expand(text, defs, free, where, memo, chain):
             if tok not in memo:
                 if tok in chain:
                     raise Malformed("model.scene: parameters.%s: depends on itself (a cycle)" % tok)
+                if len(chain) >= 200:
+                    scene_beyond("parameters." + tok, "defined through more than 200 others in a chain")
                 e = scene_expand(defs[tok], defs, free, "parameters." + tok, memo, chain | {tok})
                 if any(k == 'name' and t in ('s', 'z') for k, t in lex(e)):
                     raise Malformed("model.scene: parameters.%s: names s or z (a parameter is a number)" % tok)

@@ -73,6 +73,7 @@ struct Parameters {
   std::string of(const std::string& name) {
     if (const auto it = expanded.find(name); it != expanded.end()) return it->second;
     if (!open.insert(name).second) malformed("parameters." + name, "depends on itself (a cycle)");
+    if (open.size() > 200) beyond("parameters." + name, "defined through more than 200 others in a chain");
     const std::string e = expand(definition.at(name), "parameters." + name);
     for (const auto& n : names_in(e))
       if (n == "s" || n == "z") malformed("parameters." + name, "names " + n + ": a parameter is a number, not a transfer function");
