@@ -24,8 +24,9 @@
 // Theorem 5 (JSON theorem5, conservatism; docs/stability.md).
 // With --scene and --max, a run longer than 2 s names its stages on stderr (cli/progress.hpp);
 // --quiet silences them.
-// --certificate FILE: the verdict's certificate (kind stability), with --max NAME the supremum's
-// (kind stability-max, checked before it is written; cli/certificate.hpp, docs/certificates.md).
+// --certificate FILE: the verdict's certificate (kind stability; a --scene beyond one DOF, kind
+// stability-loop), with --max NAME the supremum's (kind stability-max); checked before it is written
+// where the checkers decide alone (cli/certificate.hpp, docs/certificates.md).
 // Exit: 0 stable (or a supremum found), 1 unstable (--max: unstable for every small gain),
 // 2 bad input, 3 undecided (a root on or too near the unit circle).
 #include <iostream>
@@ -521,10 +522,11 @@ const cli::Register reg(
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
                       "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
-                      "a mass-damper, a spring; or a one-DOF --scene without [coupling], its text the model), or stability-max "
-                      "with --max (every device pole at s = 0); refused by name: a multi-DOF scene or one with a "
-                      "[coupling], three device poles off s = 0 or more (with --max: any), degree above the checkers' "
-                      "limit, an undecided answer; docs/certificates.md)");
+                      "a mass-damper, a spring; or a one-DOF --scene, its text the model), stability-loop for another --scene "
+                      "(the closed-loop matrix the checkers build from it), or stability-max with --max (every device "
+                      "pole at s = 0); refused by name: what the checkers do not read (ss operators, count, contact, ...), "
+                      "--scene --max beyond one DOF, three device poles off s = 0 or more (with --max: any), degree above "
+                      "the checkers' limit; an undecided answer writes none; docs/certificates.md)");
        return [o]() -> int {
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
