@@ -496,11 +496,32 @@ def delay_of(model):
     return n
 
 
+def coefficients(model, key):
+    """model.num or model.den: "p/q" strings in descending powers of z, at most 201."""
+    a = model.get(key)
+    if not isinstance(a, list) or not a:
+        raise Malformed("model.%s: missing or not a non-empty array of \"p/q\" (descending powers of z)" % key)
+    if len(a) > 201:
+        raise Malformed("model.%s: more than 201 coefficients" % key)
+    return [exact_value(x, "model.%s[%d]" % (key, i)) for i, x in enumerate(a)]
+
+
 def model_h(model):
-    """(H, T): model.H parsed with the sample period model.T > 0 and the parameters model.set."""
-    if not isinstance(model.get("H"), str):
-        raise Malformed("model.H: missing or not a string")
+    """(H, T): H(z) as written, with the sample period model.T > 0: model.H parsed with the
+    parameters model.set, or its coefficients model.num and model.den (descending powers of z;
+    `--num/--den`, a .mat's num and den), with no H and no set beside them."""
     T = period(model)
+    if "num" in model or "den" in model:
+        if "H" in model:
+            raise Malformed("model: H and num/den both given (one model, written one way)")
+        if "set" in model:
+            raise Malformed("model.set: num/den hold numbers, not parameters")
+        num, den = coefficients(model, "num"), coefficients(model, "den")
+        if den[0] == 0:
+            raise Malformed("model.den: the leading coefficient is 0")
+        return RF(num[::-1], den[::-1]), T
+    if not isinstance(model.get("H"), str):
+        raise Malformed("model.H: missing or not a string (or num and den, its coefficients)")
     try:
         return parse_h(model["H"], T, parameters(model)), T
     except ZeroDivisionError:
@@ -722,7 +743,7 @@ def short(x):
 
 def check_bound(c):
     model, claim, evidence = parts(c)
-    only(model, ("H", "set", "T", "delay", "frac_delay", "eta"), "model")
+    only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     if "infinite" in claim:
         only(evidence, ("pole_c", "side"), "evidence")
@@ -983,7 +1004,7 @@ def check_passivity_level(c):
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
     level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
     model, claim, evidence = parts(c)
-    only(model, ("H", "set", "T", "kind"), "model")
+    only(model, ("H", "set", "num", "den", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     only(evidence, ("witness_c",), "evidence")
     kind = model.get("kind")
@@ -3002,7 +3023,7 @@ def cauchy_bound(polys):
 def check_wedge(c):
     model, claim, evidence = parts(c)
     only(evidence, ("wedge_witness_c", "tsypkin_witness_c"), "evidence")
-    only(model, ("H", "set", "T"), "model")
+    only(model, ("H", "set", "num", "den", "T"), "model")
     only(claim, ("quantity", "status", "wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative",
                  "wedge_margin", "tsypkin_margin", "wedge_gain", "tsypkin_gain"), "claim")
     if claim.get("status") != "exact":
@@ -3145,7 +3166,7 @@ MAX_LC_STEPS = 40000  # P n: the recursion's exact fractions grow with P (beyond
 def lure_loop(model):
     """(N, D, k, rho, beta, n) of paper 002's loop (4) y = -k H x, x = max(y, -rho): H = N/D reduced,
     D monic of degree n >= 1, N padded to n + 1 coefficients, beta = k n_n = k H(inf), 1 + beta > 0."""
-    only(model, ("H", "set", "T", "gain", "rho"), "model")
+    only(model, ("H", "set", "num", "den", "T", "gain", "rho"), "model")
     H, _ = model_h(model)
     if len(H.num) > len(H.den):
         raise Malformed("model.H: not causal (deg num > deg den)")

@@ -170,6 +170,52 @@ TEST(BoundCheck, MalformedNamesTheField) {
   expect_field(d, "kind");
 }
 
+// H given by its coefficients (`--num/--den`, a .mat's num and den) is the same H: H = 4 with one
+// sample of delay, b* = 3 T K/2 = 3 as above; den [1, 0] is 4/z, a second sample: b* = 5.
+TEST(BoundCheck, NumDenIsTheSameH) {
+  auto c = bound_cert("K", "4", "1/2", 1, {{"status", "exact"}, {"value", "3"}}, "1");
+  c["model"].erase("H");
+  c["model"].erase("set");
+  c["model"]["num"] = {"4"};
+  c["model"]["den"] = {"1"};
+  const auto ok = check_certificate(c);
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  auto d = c;
+  d["model"]["den"] = {"1", "0"};
+  EXPECT_FALSE(check_certificate(d).verified);
+  d["claim"]["value"] = "5";
+  EXPECT_TRUE(check_certificate(d).verified);
+  auto expect_field = [](const nlohmann::json& j, const std::string& field) {
+    try {
+      check_certificate(j);
+      ADD_FAILURE() << "accepted: " << field;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  d = c;
+  d["model"]["H"] = "4";  // one model, written one way
+  expect_field(d, "model");
+  d = c;
+  d["model"]["set"] = {{"K", "4"}};
+  expect_field(d, "model.set");
+  d = c;
+  d["model"]["den"] = {"0", "1"};
+  expect_field(d, "model.den");
+  d = c;
+  d["model"]["num"] = nlohmann::json::array();
+  expect_field(d, "model.num");
+  d = c;
+  d["model"]["num"] = {0.5};
+  expect_field(d, "model.num[0]");
+  d = c;
+  d["model"]["num"] = {"0.5"};
+  expect_field(d, "model.num[0]");
+  d = c;
+  d["model"].erase("den");
+  expect_field(d, "model.den");
+}
+
 // The band [cos(pi/q), 1] decided exactly at rational points: cos(pi/2) = 0, cos(pi/3) = 1/2,
 // cos(pi/10) = 0.95105..., cos(pi/5) = 0.80901...
 TEST(BoundObjective, BandEnds) {

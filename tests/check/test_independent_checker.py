@@ -734,6 +734,32 @@ class BoundInfinite(unittest.TestCase):
         self.assertEqual(hc.check(inf_cert(tustin, "20", 0, "0", -1, "1/2000", "5"))[0], 1)
 
 
+class BoundNumDen(unittest.TestCase):
+    """H given by its coefficients (--num/--den, a .mat's num and den) is the same H (test_check.cpp's
+    BoundCheck.NumDenIsTheSameH): H = 4 with one sample of delay at T = 1/2, b* = 3 T K/2 = 3; den
+    [1, 0] is 4/z, a second sample: b* = (2n + 1) T K/2 = 5."""
+
+    def test_by_hand(self):
+        c = {"certificate": "hapstab", "version": 1, "kind": "bound",
+             "model": {"num": ["4"], "den": ["1"], "T": "1/2", "delay": 1, "eta": "0"},
+             "claim": {"status": "exact", "value": "3"}, "evidence": {"witness_c": "1"}}
+        self.assertEqual(hc.check(c)[0], 0)
+        d = copy.deepcopy(c)
+        d["model"]["den"] = ["1", "0"]
+        self.assertEqual(hc.check(d)[0], 1)
+        d["claim"]["value"] = "5"
+        self.assertEqual(hc.check(d)[0], 0)
+        for edit, field in ((lambda m: m.update(H="4"), "model"), (lambda m: m.update(set={"K": "4"}), "model.set"),
+                            (lambda m: m.update(den=["0", "1"]), "model.den"), (lambda m: m.update(num=[]), "model.num"),
+                            (lambda m: m.update(num=[0.5]), "model.num[0]"), (lambda m: m.update(num=["0.5"]), "model.num[0]"),
+                            (lambda m: m.pop("den"), "model.den")):
+            d = copy.deepcopy(c)
+            edit(d["model"])
+            code, why = hc.check(d)
+            self.assertEqual(code, 2, field)
+            self.assertIn(field, why)
+
+
 def lc_cert(gain, rho, period, amp, printed, free, y, attracting=None, H="1/z"):
     c = {"certificate": "hapstab", "version": 1, "kind": "limit-cycle",
          "model": {"H": H, "set": {}, "T": "1", "gain": gain, "rho": rho},

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/mat_file.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
@@ -129,6 +130,31 @@ nlohmann::json sets_json(const std::vector<std::string>& sets) {
   return j;
 }
 
+// H(z) as the user wrote it: {"H": --H, "set": --set}, or {"num", "den"} of --num/--den or of the
+// .mat's num and den (its doubles exactly), descending powers of z. A .mat state space is refused:
+// its transfer function would be hapstab's derivation, not the model as written.
+nlohmann::json tf_model_json(const TfOptions& tf) {
+  if (!tf.H.empty()) return {{"H", tf.H}, {"set", sets_json(tf.sets)}};
+  std::vector<rational> num, den;
+  if (!tf.mat.empty()) {
+    const MatModel m = read_mat_model(tf.mat, "--mat");
+    if (!m.tf)
+      throw InputError("--certificate: " + m.where + " holds a state space; a certificate holds H as written (--H, "
+                       "--num/--den, or a .mat's num and den): no certificate");
+    num = m.tf->first;
+    den = m.tf->second;
+  } else {
+    num = parse_coefficients(tf.num, "--num");
+    den = parse_coefficients(tf.den, "--den");
+  }
+  const auto strings = [](const std::vector<rational>& c) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const rational& x : c) a.push_back(x.str());
+    return a;
+  };
+  return {{"num", strings(num)}, {"den", strings(den)}};
+}
+
 // A certified claim of the enclosure as printed (lo_s, hi_s: decimals rounded outward): status
 // "certified", lo and hi those decimals exactly, and the decimals themselves; returns [lo, hi].
 Enclosure<rational> printed_enclosure(nlohmann::json& claim, const std::string& lo_s, const std::string& hi_s) {
@@ -218,15 +244,11 @@ void verify_before_writing(const nlohmann::json& j) {
 
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits) {
-  if (tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = certificate_header("bound");
-  nlohmann::json m;
-  m["H"] = tf.H;
-  m["set"] = sets_json(tf.sets);
+  nlohmann::json m = tf_model_json(tf);
   m["T"] = p.T.str();
   m["delay"] = p.delay;
   if (p.frac_delay) m["frac_delay"] = p.frac_delay->str();
@@ -324,15 +346,15 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
                                            const lmi::PassivityLevel& c, bool is_level, int digits) {
-  if (tf.H.empty())
-    throw InputError("--certificate: a certificate holds G as written by --H; with --num/--den, --mat or --ss it is not implemented yet");
   if (c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none): no certificate");
   if (!is_level || !c.enclosure)
     throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
                      "on the unit circle): no certificate");
   nlohmann::json j = certificate_header("passivity-level");
-  j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", parse_rational(tf.T, "--T").str()}, {"kind", osp ? "osp" : "isp"}};
+  j["model"] = tf_model_json(tf);
+  j["model"]["T"] = parse_rational(tf.T, "--T").str();
+  j["model"]["kind"] = osp ? "osp" : "isp";
   nlohmann::json claim;
   claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
@@ -679,15 +701,14 @@ void margin_claims(const TransferFunction& H, const contact::WedgeBranches& br, 
 }  // namespace
 
 nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnalysis& a, int digits) {
-  if (tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   // a pole on the circle where the branches stay bounded (z = -1 with Im H cot(theta/2) finite) is
   // still evaluated by the producer, as a limit; the checkers refuse every pole on the circle
   if (a.assumptions.pole_on_unit_circle || !a.wedge.evaluated() || !a.tsypkin.evaluated())
     throw InputError("--certificate: H has a pole on the unit circle (the criteria are then limits, or not evaluated): "
                      "no certificate");
   nlohmann::json j = certificate_header("wedge");
-  j["model"] = {{"H", tf.H}, {"set", sets_json(tf.sets)}, {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()}};
+  j["model"] = tf_model_json(tf);
+  j["model"]["T"] = tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str();
   j["claim"] = {{"quantity", "Tsai & Colgate (paper 002): wedge criterion (25), Tsypkin's condition (21), the assumptions of Sec. 2"},
                 {"status", "exact"},
                 {"wedge", a.wedge.verdict.holds()},
@@ -706,16 +727,13 @@ nlohmann::json wedge_certificate(const TfOptions& tf, const contact::ContactAnal
 
 nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, const rational& rho,
                                        const contact::ExactOrbit& orbit, int order) {
-  if (tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   if (!orbit.found || orbit.y.empty()) throw InputError("--certificate: no periodic orbit was proven: no claim to certify");
   if (order < 1) throw InputError("--certificate: H is a constant: the loop has no state, so no orbit to certify");
   nlohmann::json j = certificate_header("limit-cycle");
-  j["model"] = {{"H", tf.H},
-                {"set", sets_json(tf.sets)},
-                {"T", tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str()},
-                {"gain", k.str()},
-                {"rho", rho.str()}};
+  j["model"] = tf_model_json(tf);
+  j["model"]["T"] = tf.T.empty() ? std::string("1") : parse_rational(tf.T, "--T").str();
+  j["model"]["gain"] = k.str();
+  j["model"]["rho"] = rho.str();
   nlohmann::json claim{{"quantity", "a periodic solution of paper 002's loop (4), y = -k H(z) x, x = max(y, -rho): least "
                                     "period, amplitude (max - min)/2 of y, samples with y < -rho, attraction"},
                        {"status", "exact"},

@@ -43,8 +43,6 @@ int run(const Opts& o) {
     throw InputError("--steps must be in [1000, 2e9], got " + std::to_string(o.steps));
   if (!o.certificate.empty() && !o.exact)
     throw InputError("--certificate: the certificate is of the orbit that --exact proves; add --exact");
-  if (!o.certificate.empty() && o.tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   const TransferFunction H = parse_tf_options(o.tf, tf_rules);
   contact::LureLoop L = contact::make_lure_loop(H, k, rho);
   contact::Oscillation osc = contact::find_oscillation(L, o.steps, std::min<long>(8192, o.steps / 4));

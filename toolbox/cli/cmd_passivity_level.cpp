@@ -224,12 +224,7 @@ int run(const Opts& o) {
     const bool is_level = v.cert_ok && v.cert_is_level && &v.main() == &v.c;
     if (G) {
       write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, o.digits));
-    } else if (o.ss.empty()) {
-      throw InputError("--certificate: a --mat model has no certificate yet (give G as written by --H, or a MIMO --ss FILE)");
-    } else if (exact->inputs() < 2) {
-      throw InputError("--certificate: a one-input --ss model has no certificate kind yet; a SISO certificate holds G "
-                       "as written by --H, a MIMO one (two inputs or more) A, B, C, D of --ss");
-    } else {
+    } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
       write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, o.digits));
     }
   }
@@ -251,7 +246,7 @@ const Register reg({"passivity-level",
                       app.add_option("--grid", o->grid, "Frequency grid points on [0, pi] (default 4096)");
                       app.add_option("--digits", o->digits, "Digits of the certified level (10..100, default 17)");
                       app.add_option("--certificate", o->certificate,
-                                     "write the certified level's certificate (JSON: G by --H, or a MIMO --ss) to "
+                                     "write the certified level's certificate (JSON: G as written by --H, --num/--den or --mat, or a state space) to "
                                      "FILE, for `hapstab check FILE` (docs/certificates.md)");
                       app.add_flag("--json", o->json, "Print JSON (keys level, method, status, certified, "
                                                       "enclosure, lower_bound, upper_bound, exact, value, theta, kind, "

@@ -64,8 +64,6 @@ nlohmann::json criterion_json(const contact::CriterionReport& c, int digits) {
 int run(const Opts& o) {
   if (o.digits < 1 || o.digits > 60) throw InputError("--digits must be in [1, 60], got " + std::to_string(o.digits));
   const TransferFunction H = parse_tf_options(o.tf, tf_rules);
-  if (!o.certificate.empty() && o.tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
   contact::ContactAnalysis a = contact::analyze_contact(H, o.digits);
   if (!o.certificate.empty()) write_certificate(o.certificate, wedge_certificate(o.tf, a, o.digits));
   const bool applies = a.applies();

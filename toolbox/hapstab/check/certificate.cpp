@@ -28,6 +28,7 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/limits.hpp"
 
 namespace hapstab::check {
 
@@ -215,14 +216,41 @@ std::map<std::string, rational> model_parameters(const nlohmann::json& model) {
   return params;
 }
 
-TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T) {
+namespace {
+
+// model.num or model.den: the coefficients as written, descending powers of z, each "p/q".
+std::vector<rational> coefficients_field(const nlohmann::json& model, const char* key) {
+  const std::string where = std::string("model.") + key;
+  if (!model.contains(key) || !model.at(key).is_array() || model.at(key).empty())
+    throw InputError(where + ": missing or not a non-empty array of \"p/q\" (descending powers of z)");
+  const auto& a = model.at(key);
+  if (a.size() > static_cast<size_t>(limits::model_degree) + 1)
+    throw InputError(where + ": more than " + std::to_string(limits::model_degree + 1) + " coefficients");
+  std::vector<rational> c;
+  for (size_t i = 0; i < a.size(); ++i) c.push_back(exact_string(a[i], where + "[" + std::to_string(i) + "]"));
+  return c;
+}
+
+}  // namespace
+
+TransferFunction model_tf(const nlohmann::json& model, const rational& T) {
+  if (model.contains("num") || model.contains("den")) {  // `--num/--den` (or a .mat's num, den): numbers, no expression
+    if (model.contains("H")) throw InputError("model: H and num/den both given (one model, written one way)");
+    if (model.contains("set")) throw InputError("model.set: num/den hold numbers, not parameters");
+    const std::vector<rational> num = coefficients_field(model, "num"), den = coefficients_field(model, "den");
+    if (den.front() == 0) throw InputError("model.den: the leading coefficient is 0");
+    return tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())),
+              Polynomial<rational>(std::vector<rational>(den.rbegin(), den.rend())), T);
+  }
+  if (!model.contains("H") || !model.at("H").is_string())
+    throw InputError("model.H: missing or not a string (the expression of H(z); or num and den, its coefficients)");
   ParseOptions po;
   po.variable = 'z';
   po.T = T;
   po.parameters = model_parameters(model);
   TransferFunction H;
   try {
-    H = parse_tf(text, po);
+    H = parse_tf(model.at("H").get<std::string>(), po);
   } catch (const InputError& e) {
     throw InputError(std::string("model.H: ") + e.what());
   }

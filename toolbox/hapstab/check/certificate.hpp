@@ -99,9 +99,11 @@ struct PeriodDelay {
 PeriodDelay read_period_delay(const nlohmann::json& model);
 /// model.set's exact parameters ({NAME: "p/q"}; none when absent); InputError naming model.set.
 std::map<std::string, rational> model_parameters(const nlohmann::json& model);
-/// The model's H(z): `text` parsed in z with sample period T and model.set's exact parameters
-/// ({NAME: "p/q"}); InputError naming model.set or model.H (also when H is not in z).
-TransferFunction model_tf(const nlohmann::json& model, const std::string& text, const rational& T);
+/// The model's H(z) as written, one of two ways: model.H, an expression parsed in z with sample
+/// period T and model.set's exact parameters ({NAME: "p/q"}); or model.num and model.den, its
+/// coefficients in descending powers of z ("p/q" each; `--num/--den`, a .mat's num and den), with
+/// no H and no set beside them. InputError naming the field (also when H is not in z).
+TransferFunction model_tf(const nlohmann::json& model, const rational& T);
 }  // namespace detail
 
 }  // namespace hapstab::check

@@ -21,19 +21,18 @@ using P = Polynomial<rational>;
 Verdict check_passivity_level(const nlohmann::json& cert) {
   using detail::exact_field;
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
-  detail::only_fields(model, {"H", "set", "T", "kind"}, "model");
+  detail::only_fields(model, {"H", "set", "num", "den", "T", "kind"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
   detail::only_fields(evidence, {"witness_c"}, "evidence");
 
   // ---- the model as written
-  if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of G(z))");
   if (!model.contains("kind") || !model.at("kind").is_string() ||
       (model.at("kind") != "isp" && model.at("kind") != "osp"))
     throw InputError("model.kind: missing or neither \"isp\" nor \"osp\"");
   const bool osp = model.at("kind") == "osp";
   const rational T = exact_field(model, "T", "model");
   if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  const TransferFunction G = detail::model_tf(model, model.at("H").get<std::string>(), T);
+  const TransferFunction G = detail::model_tf(model, T);
   if (G.num().is_zero()) throw InputError("model.H: G = 0");
   if (G.num().degree() > G.den().degree()) throw InputError("model.H: G is not causal (deg N > deg D)");
   if (G.den().degree() > 1000) throw InputError("model.H: degree above this checker's limit of 1000");

@@ -21,11 +21,10 @@ namespace {
 using P = Polynomial<rational>;
 
 TransferFunction parse_model(const nlohmann::json& model) {
-  detail::only_fields(model, {"H", "set", "T"}, "model");
-  if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
+  detail::only_fields(model, {"H", "set", "num", "den", "T"}, "model");
   const rational T = detail::exact_field(model, "T", "model");
   if (T <= 0) throw InputError("model.T: the sample period must be > 0, got " + T.str());
-  const TransferFunction H = detail::model_tf(model, model.at("H").get<std::string>(), T);
+  const TransferFunction H = detail::model_tf(model, T);
   if (H.num().degree() > H.den().degree()) throw InputError("model.H: not causal (deg num > deg den)");
   return H;
 }
