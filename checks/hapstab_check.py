@@ -2145,8 +2145,8 @@ def scene_rf(text, T, var, where):
 
 def scene_loop_read(model):
     """stability-loop's reading of model.scene: (T, delay, mass, damping, stiffness, operators, E) with
-    per DOF the device's m, b plus its m, b, k operators; the tf operators [(ports, Z)], Z in s proper
-    without a pole at s = 0; E N x N in z (discretised, times gain)."""
+    per DOF the device's m, b plus its m, b, k operators; the tf and ss operators [(ports, Z)], Z
+    ("tf", proper RFs in s) or ("ss", (A, B, C, D) as written); E N x N in z (discretised, times gain)."""
     only(model, ("scene", "set"), "model")
     root, T, expand, field = scene_read(model, False, coupling=True)
     devs = root.get("device")
@@ -2183,12 +2183,12 @@ def scene_loop_read(model):
         raise Malformed("model.scene: [[operator]]: not tables")
     for i, o in enumerate(tables):
         key = "operator[%d]" % (i + 1)
-        scene_keys(o, ("name", "dofs", "m", "b", "k", "tf", "mass", "passive"), key)
+        scene_keys(o, ("name", "dofs", "m", "b", "k", "tf", "ss", "mass", "passive"), key)
         dofs = o.get("dofs")
         ports = [] if dofs is None else [scene_dof(x, names, key + ".dofs") for x in (dofs if isinstance(dofs, list) else [dofs])]
-        if "tf" not in o:
+        if "tf" not in o and "ss" not in o:
             if "mass" in o:
-                raise Malformed("model.scene: %s.mass: only with tf" % key)
+                raise Malformed("model.scene: %s.mass: only with tf or ss" % key)
             ports = ports or [0]
             if len(ports) != 1:
                 raise Malformed("model.scene: %s.dofs: m, b, k act on one DOF" % key)
@@ -2198,21 +2198,32 @@ def scene_loop_read(model):
             stiff[j] += scene_constant(field(o, "k", key, "0"), T, key + ".k")
             continue
         if any(k in o for k in ("m", "b", "k")):
-            raise Malformed("model.scene: %s: give either m, b, k or tf, not both" % key)
-        q = 1 if isinstance(o["tf"], str) else len(o["tf"]) if isinstance(o["tf"], list) else 0
-        ports = ports or list(range(min(q, len(names))))
-        if q == 0 or len(ports) != q:
-            raise Malformed("model.scene: %s.tf: not a square matrix over the operator's DOFs" % key)
-        Z = []
-        for row in scene_text_matrix(o["tf"], q, key + ".tf"):
-            Z.append([])
-            for e in row:
-                f = scene_rf(expand(e, key + ".tf"), T, 's', key + ".tf")
-                if len(f.num) > len(f.den):
-                    raise Malformed("model.scene: %s.tf: an improper entry (write a mass by m or mass)" % key)
-                if f.den[0] == 0:
-                    scene_beyond(key + ".tf", "an entry with a pole at s = 0 (a spring as k/s: give it by m, b, k)")
-                Z[-1].append(f)
+            raise Malformed("model.scene: %s: give either m, b, k or tf/ss, not both" % key)
+        if "tf" in o and "ss" in o:
+            raise Malformed("model.scene: %s: give exactly one of tf, ss" % key)
+        if "ss" in o:  # the impedance's realisation as written: ("ss", (A, B, C, D)), q from D
+            ss = scene_ss_table(o["ss"], key)
+            q = len(ss["D"]) if isinstance(ss.get("D"), list) else len(ports)
+            ports = ports or list(range(min(q, len(names))))
+            if q == 0 or len(ports) != q:
+                raise Malformed("model.scene: %s.ss: D is not a square matrix over the operator's DOFs" % key)
+            n = scene_ss_order(ss)
+            Z = ("ss", tuple(scene_ss_matrix(ss, k, r, cl, key, T, expand) for k, r, cl in
+                             (("A", n, n), ("B", n, q), ("C", q, n), ("D", q, q))))
+        else:
+            q = 1 if isinstance(o["tf"], str) else len(o["tf"]) if isinstance(o["tf"], list) else 0
+            ports = ports or list(range(min(q, len(names))))
+            if q == 0 or len(ports) != q:
+                raise Malformed("model.scene: %s.tf: not a square matrix over the operator's DOFs" % key)
+            Z = []
+            for row in scene_text_matrix(o["tf"], q, key + ".tf"):
+                Z.append([])
+                for e in row:
+                    f = scene_rf(expand(e, key + ".tf"), T, 's', key + ".tf")
+                    if len(f.num) > len(f.den):
+                        raise Malformed("model.scene: %s.tf: an improper entry (write a mass by m or mass)" % key)
+                    Z[-1].append(f)
+            Z = ("tf", Z)
         if "mass" in o:
             if not isinstance(o["mass"], list) or len(o["mass"]) != q:
                 raise Malformed("model.scene: %s.mass: expected a mass per DOF of the operator" % key)
@@ -2279,6 +2290,19 @@ def scene_ss_matrix(ss, key, rows, cols, where, T, expand):
     return [[scene_constant(expand(scene_text(x, at), at), T, at) for x in r] for r in a]
 
 
+def scene_ss_table(ss, where):
+    """ss = { A, B, C, D }: a table of those keys only."""
+    if not isinstance(ss, dict) or any(k not in ("A", "B", "C", "D") for k in ss):
+        raise Malformed("model.scene: %s.ss: expected a table { A = ..., B = ..., C = ..., D = ... }" % where)
+    return ss
+
+
+def scene_ss_order(ss):
+    """The order n of ss.A (0 when written [] or [[]])."""
+    A = ss.get("A")
+    return len(A) if isinstance(A, list) and A != [[]] else 0
+
+
 def scene_discrete(t, where, N, T, expand, field):
     """[environment] or [coupling]: ("tf", N x N RFs in z, times gain) or ("ss", (A, B, C, D) with C, D times gain)."""
     scene_keys(t, ("tf", "ss", "domain", "method", "gain"), where)
@@ -2288,11 +2312,8 @@ def scene_discrete(t, where, N, T, expand, field):
     if "ss" in t:
         if "domain" in t or "method" in t:
             scene_beyond(where + ".domain", "an ss block in s")
-        ss = t["ss"]
-        if not isinstance(ss, dict) or any(k not in ("A", "B", "C", "D") for k in ss):
-            raise Malformed("model.scene: %s.ss: expected a table { A = ..., B = ..., C = ..., D = ... }" % where)
-        A = ss.get("A")
-        n = len(A) if isinstance(A, list) and A != [[]] else 0
+        ss = scene_ss_table(t["ss"], where)
+        n = scene_ss_order(ss)
         g = scene_constant(gain_text, T, where + ".gain")
         Am = scene_ss_matrix(ss, "A", n, n, where, T, expand)
         Bm = scene_ss_matrix(ss, "B", n, N, where, T, expand)
@@ -2354,7 +2375,7 @@ def realise_columns(G):
 def loop_plant(devices, mass, damp, stiff, ops):
     """(A, B, pos) of stability-loop's continuous plant (C++ check/stability_loop_check.cpp): the
     devices' states (a mass-damper: its velocity, 1/(m s + b) with its operators' m and b), then the
-    positions x (from index pos), then the tf operators' states; forces f = u - Dv v - K x - Cz zeta."""
+    positions x (from index pos), then the tf and ss operators' states; forces f = u - Dv v - K x - Cz zeta."""
     N = len(mass)
     devs = []
     for d in devices:
@@ -2367,7 +2388,7 @@ def loop_plant(devices, mass, damp, stiff, ops):
             kind, q, data = d["block"]
             devs.append(data if kind == "ss" else realise_columns(data)[:3])
     nd = sum(len(R[0]) for R in devs)
-    reals = [realise_columns(Z) for _, Z in ops]
+    reals = [Z[1] if Z[0] == "ss" else realise_columns(Z[1]) for _, Z in ops]
     nz = sum(len(R[0]) for R in reals)
     ns = nd + N + nz
     Ad = [[Fraction(0)] * nd for _ in range(nd)]
@@ -2561,20 +2582,69 @@ def loop_matrix(loop, bits):
     return M
 
 
+def conserved_quantities(A, B):
+    """A basis of {l : l^T [A B] = 0} (exact), each l_i = 1 at its own index c_i and 0 at the others':
+    ([l_1, ..., l_k], [c_1, ..., c_k]) from the reduced echelon form of [A B]^T."""
+    ns, N = len(A), (len(B[0]) if B else 0)
+    K = [[A[i][j] for i in range(ns)] for j in range(ns)] + [[B[i][j] for i in range(ns)] for j in range(N)]
+    pivots, row = [], 0
+    for c in range(ns):
+        r = next((i for i in range(row, len(K)) if K[i][c] != 0), None)
+        if r is None:
+            continue
+        K[row], K[r] = K[r], K[row]
+        p = K[row][c]
+        K[row] = [x / p for x in K[row]]
+        for i in range(len(K)):
+            if i != row and K[i][c] != 0:
+                f = K[i][c]
+                K[i] = [x - f * y for x, y in zip(K[i], K[row])]
+        pivots.append(c)
+        row += 1
+    L, at = [], []
+    for f in (c for c in range(ns) if c not in pivots):
+        l = [Fraction(0)] * ns
+        l[f] = Fraction(1)
+        for r, pc in enumerate(pivots):
+            l[pc] = -K[r][f]
+        L.append(l)
+        at.append(f)
+    return L, at
+
+
+def quotient(M, L, at):
+    """M on the quotient by the conserved quantities: x_c = -L[:, kept] x_kept, so M11 = M[kept, kept]
+    - M[kept, c] L[:, kept] (L zero beyond the plant's states)."""
+    if not at:
+        return M
+    ns = len(L[0])
+    kept = [i for i in range(len(M)) if i not in at]
+    return [[M[a][b] - sum((M[a][c] * Iv(L[i][b]) for i, c in enumerate(at) if b < ns and L[i][b]), Iv(0)) for b in kept]
+            for a in kept]
+
+
 def check_stability_loop(c):
     """stability-loop: the Stein inertia theorem on the closed loop M built here from the scene
     (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (Q_mid minus
     the radii's largest row sum times I, > 0 by exact elimination), and P > 0 (stable) or w^T P w < 0
     (NOT stable)."""
     model, claim, evidence = parts(c)
-    only(claim, ("quantity", "status", "stable"), "claim")
+    only(claim, ("quantity", "status", "stable", "conserved"), "claim")
     only(evidence, ("P", "w"), "evidence")
+    k = claim.get("conserved", 0)
+    if not isinstance(k, int) or isinstance(k, bool) or k < 0:
+        raise Malformed("claim.conserved: not an integer >= 0")
     if claim.get("status") != "certified":
         raise Malformed("claim.status: missing or not \"certified\"")
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
     stable = claim["stable"]
     loop = scene_loop_read(model)
+    A, B, _ = loop_plant(*loop[2:7])
+    L, at = conserved_quantities(A, B)
+    if len(at) != k:
+        return False, ("claim: %d conserved quantities, but the plant has %d (l^T [A B] = 0, exactly: each an "
+                       "eigenvalue 1 of M)" % (k, len(at)))
     Pl = evidence.get("P")
     n = len(Pl) if isinstance(Pl, list) else 0
     if n > MAX_LOOP_ORDER:
@@ -2595,17 +2665,18 @@ def check_stability_loop(c):
             return False, "claim: NOT stable, but w^T P w = %s >= 0" % short(q)
         sign = "w^T P w < 0"
     for bits in (128, 256, 512):
-        M = loop_matrix(loop, bits)
+        M = quotient(loop_matrix(loop, bits), L, at)
         if len(M) != n:
-            raise Malformed("evidence.P: order %d, the loop's %d" % (n, len(M)))
+            raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if k else ""))
         PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
         Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
         mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
         r = max(sum((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2) for j in range(n)) for i in range(n))
         S = [[(mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
         if semidefinite(S, True):
-            return True, "%s (closed loop of %d states built from the scene, intervals at %d bits; P - M^T P M > 0 and %s)" % (
-                "stable" if stable else "NOT stable", n, bits, sign)
+            return True, "%s (closed loop of %d states built from the scene%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
+                "stable" if stable else "NOT stable", n + k, ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
+                bits, sign)
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 
 

@@ -1522,7 +1522,8 @@ def rand_loop_scene(rng):
     tf or ss, open-loop unstable with b = -1), operators (b, or
     m, b, k, on one DOF; a tf impedance coupling two DOFs in a fifth), diagonal walls K + B(z-1)/(Tz)
     with a linking spring in 40 %, in z or s (backward Euler, Tustin), a gain g, a coupling (tf or ss) in
-    30 %, a delay of 0-2 samples, fractions of one too."""
+    30 %, a delay of 0-2 samples, fractions of one too. Conserved quantities: an operator spring written
+    as tf "b + k/s" or as ss, and an ss device with its own position state."""
     N = rng.choice([2, 2, 3])
     T = rng.choice(["1/1000", "1/500"])
     L = ["[scene]", 'T = "%s"' % T, "[parameters]", 'g = "%s"' % rng.choice(["1/2", "1", "2", "5"]),
@@ -1536,15 +1537,27 @@ def rand_loop_scene(rng):
             L += ['m = "%s"' % m, 'b = "%s"' % b]
         elif form == "tf":
             L += ['tf = "1/(%s*s + %s)"' % (m, b), "passive = false"]
-        else:
+        elif rng.random() < 0.7:
             L += ['ss = { A = [["-(%s)/(%s)"]], B = [["1/(%s)"]], C = [["1"]], D = [["0"]] }' % (b, m, m), "passive = false"]
+        else:  # with its own position state, which no output shows: a conserved quantity
+            L += ['ss = { A = [["-(%s)/(%s)", "0"], ["1", "0"]], B = [["1/(%s)"], ["0"]], C = [["1", "0"]], D = [["0"]] }' % (b, m, m),
+                  "passive = false"]
         if form != "md":
             blocks.add(i)
     for i in range(N):
         if rng.random() < 0.5:
-            L += ["[[operator]]", 'dofs = "d%d"' % i, 'b = "%s"' % rng.choice(["1", "3"])]
-            if rng.random() < 0.5:
-                L += ['k = "%d"' % rng.choice([50, 500])] + ([] if i in blocks else ['m = "1/20"'])
+            bo, ko = rng.choice(["1", "3"]), rng.choice([50, 500])
+            spring = rng.random() < 0.5
+            form = rng.choice(["m, b, k", "m, b, k", "tf", "ss"]) if spring else "m, b, k"
+            L += ["[[operator]]", 'dofs = "d%d"' % i]
+            if form == "tf":  # the spring in the operator's own state: a conserved quantity
+                L += ['tf = "%s + %d/s"' % (bo, ko)]
+            elif form == "ss":
+                L += ['ss = { A = [["0"]], B = [["1"]], C = [["%d"]], D = [["%s"]] }' % (ko, bo)]
+            else:
+                L += ['b = "%s"' % bo]
+                if spring:
+                    L += ['k = "%d"' % ko] + ([] if i in blocks else ['m = "1/20"'])
     if rng.random() < 0.2:
         L += ["[[operator]]", 'dofs = ["d0", "d1"]', 'tf = [["2*(s + 3)/(s + 1)", "1/2"], ["1/2", "1"]]'] + (
             [] if blocks & {0, 1} else ['mass = ["1/50", "0"]'])
@@ -1591,7 +1604,7 @@ def loop_produce(hapstab, scene, cache, tmp):
 
 
 def loop_mutants(cert, rng, hapstab, cache, tmp):
-    """stability-loop: the claim flipped, P scaled (accept for a positive factor), P asymmetric or cut
+    """stability-loop: the claim flipped, its count of conserved quantities changed, P scaled (accept for a positive factor), P asymmetric or cut
     (malformed), an entry of P moved (agree: a nearby P may still prove it), w scaled or zero, the scene
     edited (the edited scene's own certificate decides: another verdict refutes, the same one is
     agree, another order is malformed), sections and fields the checkers do not read."""
@@ -1605,6 +1618,12 @@ def loop_mutants(cert, rng, hapstab, cache, tmp):
     else:
         del flipped["evidence"]["w"]
     out.append(("claim flipped", flipped, "refute"))
+    kc = cert["claim"].get("conserved", 0)
+    out.append(("conserved + 1", with_field(cert, ["claim", "conserved"], kc + 1), "refute"))
+    if kc:
+        out.append(("conserved dropped", deleted(cert, ["claim", "conserved"]), "refute"))
+    out.append(("conserved a string", with_field(cert, ["claim", "conserved"], str(kc)), "malformed"))
+    out.append(("conserved negative", with_field(cert, ["claim", "conserved"], -1), "malformed"))
     k = Fraction(rng.choice([2, 3, 7]), rng.choice([1, 5, 11]))
     out.append(("P scaled by %s" % k, with_field(cert, ["evidence", "P"], [[frac(k * x) for x in r] for r in P]), "accept"))
     out.append(("P negated", with_field(cert, ["evidence", "P"], [[frac(-x) for x in r] for r in P]), "refute"))
@@ -1818,11 +1837,13 @@ def print_branches(certs, mutants, cpp):
     if loops:
         sc = [c["model"]["scene"] for c in loops]
         print("  stability-loop branches: stable %d, NOT stable %d; 3 DOF %d, a delay %d, a tf operator %d, the wall in s %d; "
-              "a coupling %d; a tf or ss device %d; a fractional delay %d; states %d-%d" % (sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
+              "a coupling %d; a tf or ss device %d; a fractional delay %d; conserved quantities %d; states %d-%d" % (
+                                sum(1 for c in loops if c["claim"]["stable"]), sum(1 for c in loops if not c["claim"]["stable"]),
                                 sum(1 for t in sc if 'name = "d2"' in t), sum(1 for t in sc if "[delay]" in t),
                                 sum(1 for t in sc if 'dofs = ["d0", "d1"]' in t), sum(1 for t in sc if 'domain = "s"' in t),
                                 sum(1 for t in sc if "[coupling]" in t), sum(1 for t in sc if "passive = false" in t),
                                 sum(1 for t in sc if re.search(r'samples = "\d*/', t)),
+                                sum(1 for c in loops if c["claim"].get("conserved", 0) > 0),
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:

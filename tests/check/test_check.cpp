@@ -860,7 +860,7 @@ TEST(StabilityCheck, SceneByHand) {
 TEST(StabilityLoopCheck, ClosedLoopByHand) {
   const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
   const nlohmann::json model{{"scene", scene}, {"set", nlohmann::json::object()}};
-  const auto M = scene_loop_matrix(model, 128);
+  const auto M = scene_loop_matrix(model, 128).M;
   ASSERT_EQ(M.size(), 2u);
   const rational want[2][2] = {{rational(1), rational(-5)}, {rational(1, 10), rational(3, 4)}};
   for (int i = 0; i < 2; ++i)
@@ -871,12 +871,12 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
     }
   std::string damped = scene;
   damped.replace(damped.find("m = \"2\""), 7, "m = \"2\"\nb = \"1\"");
-  const auto D = scene_loop_matrix({{"scene", damped}, {"set", nlohmann::json::object()}}, 128);
+  const auto D = scene_loop_matrix({{"scene", damped}, {"set", nlohmann::json::object()}}, 128).M;
   const double e = std::exp(-0.05);  // e^{-bT/m}
   EXPECT_NEAR(D[0][0].first.convert_to<double>(), e, 1e-12);  // M[0][0] = Phi[0][0] (the force depends on x only)
   EXPECT_NEAR(D[1][0].first.convert_to<double>(), 2 * (1 - e), 1e-12);
   std::string delayed = scene + "[delay]\nsamples = 1\n";
-  const auto Dl = scene_loop_matrix({{"scene", delayed}, {"set", nlohmann::json::object()}}, 128);
+  const auto Dl = scene_loop_matrix({{"scene", delayed}, {"set", nlohmann::json::object()}}, 128).M;
   ASSERT_EQ(Dl.size(), 3u);  // (v, x, u_{k-1})
   EXPECT_EQ(Dl[2][1].first, rational(-100));  // u_k = -K x_k
   EXPECT_LE(Dl[0][2].first, rational(1, 20));  // Gamma_v = T/m
@@ -889,7 +889,7 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
   for (const auto& [dev, entries] : forms) {
     std::string other = scene;
     other.replace(other.find("m = \"2\""), 7, dev);
-    const auto Mo = scene_loop_matrix({{"scene", other}, {"set", nlohmann::json::object()}}, 128);
+    const auto Mo = scene_loop_matrix({{"scene", other}, {"set", nlohmann::json::object()}}, 128).M;
     ASSERT_EQ(Mo.size(), 2u) << dev;
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
@@ -899,7 +899,7 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
   }
   // a coupling V = 1/100 (a spring's compliance) in parallel: x_e = x + V u, u = -K x_e, so
   // u = -K/(1 + K V) x = -50 x and M = [[1, -5/2], [1/10, 7/8]]
-  const auto Cp = scene_loop_matrix({{"scene", scene + "[coupling]\ntf = \"1/100\"\n"}, {"set", nlohmann::json::object()}}, 128);
+  const auto Cp = scene_loop_matrix({{"scene", scene + "[coupling]\ntf = \"1/100\"\n"}, {"set", nlohmann::json::object()}}, 128).M;
   ASSERT_EQ(Cp.size(), 2u);
   const rational coupled[2][2] = {{rational(1), rational(-5, 2)}, {rational(1, 10), rational(7, 8)}};
   for (int i = 0; i < 2; ++i)
@@ -931,7 +931,7 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
   EXPECT_FALSE(check_certificate(other).verified);  // a damped loop: this P does not prove it
   for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
            {"[contact]\n", "[contact]"}, {"[passivity_controller]\ndofs = [0]\n", "[passivity_controller]"},
-           {"[[operator]]\ntf = \"1/s\"\n", "pole at s = 0"}}) {
+           {"[[device]]\nname = \"b\"\nm = \"1\"\ncount = 2\n", "count"}}) {
     auto c = cert;
     c["model"]["scene"] = scene + edit;
     try {
@@ -941,6 +941,56 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
     }
   }
+}
+
+// Conserved quantities (check/stability_loop_check.hpp), by hand: the loop above with an operator
+// spring k = 10 written as m, b, k (states v, x) and as tf "10/s" or ss (a third state zeta, zeta' =
+// v, force 10 zeta): zeta - x is constant, l = (0, -1, 1), and on the quotient zeta = x, so M11 is
+// the m, b, k loop's M exactly. Likewise the device as ss with its own position state p (p' = v, not
+// an output): p - x. The checker counts k = 1 itself; a claim of 0 or 2 is refuted, and the NOT
+// stable P of the hand loop proves the device-with-position form with k = 1.
+TEST(StabilityLoopCheck, ConservedQuantitiesByHand) {
+  const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
+  const nlohmann::json none = nlohmann::json::object();
+  const auto same = [](const check::SceneLoopMatrix& a, const check::SceneLoopMatrix& b, const std::string& what) {
+    ASSERT_EQ(a.M.size(), b.M.size()) << what;
+    for (size_t i = 0; i < a.M.size(); ++i)
+      for (size_t j = 0; j < a.M.size(); ++j) {  // the enclosures overlap, and are tight
+        EXPECT_LE(a.M[i][j].first, b.M[i][j].second) << what << " " << i << j;
+        EXPECT_GE(a.M[i][j].second, b.M[i][j].first) << what << " " << i << j;
+        EXPECT_LT(rational(a.M[i][j].second - a.M[i][j].first), rational(1, 1000000000)) << what;
+      }
+  };
+  const auto mbk = scene_loop_matrix({{"scene", scene + "[[operator]]\ndofs = [\"a\"]\nk = \"10\"\n"}, {"set", none}}, 128);
+  EXPECT_EQ(mbk.conserved, 0u);
+  for (const std::string op : {"tf = \"10/s\"", "ss = { A = [[\"0\"]], B = [[\"1\"]], C = [[\"10\"]], D = [[\"0\"]] }"}) {
+    const auto w = scene_loop_matrix({{"scene", scene + "[[operator]]\ndofs = [\"a\"]\n" + op + "\n"}, {"set", none}}, 128);
+    EXPECT_EQ(w.conserved, 1u) << op;
+    same(w, mbk, op);
+  }
+  std::string with_position = scene;
+  with_position.replace(with_position.find("m = \"2\""), 7,
+                        "ss = { A = [[\"0\", \"0\"], [\"1\", \"0\"]], B = [[\"1/2\"], [\"0\"]], C = [[\"1\", \"0\"]], D = [[\"0\"]] }");
+  const auto p = scene_loop_matrix({{"scene", with_position}, {"set", none}}, 128);
+  EXPECT_EQ(p.conserved, 1u);
+  same(p, scene_loop_matrix({{"scene", scene}, {"set", none}}, 128), "device with its position");
+  nlohmann::json cert{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop"},
+                      {"model", {{"scene", with_position}, {"set", none}}},
+                      {"claim", {{"status", "certified"}, {"stable", false}, {"conserved", 1}}},
+                      {"evidence", {{"P", nlohmann::json::array({nlohmann::json::array({"-1461/800", "29/40"}), nlohmann::json::array({"29/40", "-229/2"})})},
+                                    {"w", nlohmann::json::array({"1", "0"})}}}};
+  const auto v = check_certificate(cert);
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("conserved quantities (k = 1"), std::string::npos) << v.reason;
+  for (const int k : {0, 2}) {
+    auto c = cert;
+    c["claim"]["conserved"] = k;
+    const auto r = check_certificate(c);
+    EXPECT_FALSE(r.verified) << k;
+    EXPECT_NE(r.reason.find("conserved quantities, but the plant has 1"), std::string::npos) << r.reason;
+  }
+  cert["claim"].erase("conserved");
+  EXPECT_FALSE(check_certificate(cert).verified);
 }
 
 // Res(f, g) = lc(f)^deg g prod_{f(a) = 0} g(a): Res(z - 2, z - 5) = -3; Res_{d,d}(c, c*) with

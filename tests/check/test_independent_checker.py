@@ -254,10 +254,45 @@ class StabilityLoop(unittest.TestCase):
         damped = LOOP_SCENE.replace('m = "2"', 'm = "2"\nb = "40"')
         self.assertEqual(hc.check(loop_cert(damped, False, self.P, ["1", "0"]))[0], 1)
         for edit, field in (("[contact]\n", "[contact]"), ('[passivity_controller]\ndofs = [0]\n', "[passivity_controller]"),
-                            ('[[operator]]\ntf = "1/s"\n', "pole at s = 0")):
+                            ('[[device]]\nname = "b"\nm = "1"\ncount = 2\n', "count")):
             code, why = hc.check(loop_cert(LOOP_SCENE + edit, False, self.P, ["1", "0"]))
             self.assertEqual(code, 2, why)
             self.assertIn(field, why)
+
+    def test_conserved_quantities_by_hand(self):
+        # test_check.cpp's StabilityLoopCheck.ConservedQuantitiesByHand: an operator spring k = 10 as
+        # tf "10/s" or ss (zeta' = v: zeta - x constant), the device as ss with its own position state:
+        # one conserved quantity each, and on the quotient the loop written without it
+        def plant_M(scene):
+            loop = hc.scene_loop_read({"scene": scene, "set": {}})
+            L, at = hc.conserved_quantities(*hc.loop_plant(*loop[2:7])[:2])
+            return hc.quotient(hc.loop_matrix(loop, 128), L, at), len(at)
+
+        def same(A, B):
+            self.assertEqual(len(A), len(B))
+            for i in range(len(A)):
+                for j in range(len(A)):
+                    self.assertTrue(A[i][j].lo <= B[i][j].hi and B[i][j].lo <= A[i][j].hi)
+
+        base, k0 = plant_M(LOOP_SCENE + '[[operator]]\ndofs = ["a"]\nk = "10"\n')
+        self.assertEqual(k0, 0)
+        for op in ('tf = "10/s"', 'ss = { A = [["0"]], B = [["1"]], C = [["10"]], D = [["0"]] }'):
+            M, k = plant_M(LOOP_SCENE + '[[operator]]\ndofs = ["a"]\n' + op + '\n')
+            self.assertEqual(k, 1, op)
+            same(M, base)
+        pos = LOOP_SCENE.replace('m = "2"', 'ss = { A = [["0", "0"], ["1", "0"]], B = [["1/2"], ["0"]], C = [["1", "0"]], D = [["0"]] }')
+        M, k = plant_M(pos)
+        self.assertEqual(k, 1)
+        same(M, plant_M(LOOP_SCENE)[0])
+        c = loop_cert(pos, False, self.P, ["1", "0"])
+        c["claim"]["conserved"] = 1
+        code, why = hc.check(c)
+        self.assertEqual(code, 0, why)
+        for k in (0, 2):
+            c["claim"]["conserved"] = k
+            code, why = hc.check(c)
+            self.assertEqual(code, 1, why)
+            self.assertIn("conserved quantities, but the plant has 1", why)
 
 
 def frac_cert(H, T, td, claim, witness, c_lo=None):

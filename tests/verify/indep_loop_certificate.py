@@ -8,7 +8,11 @@ Scenes: indep_loop.gen_scene's 2-3 DOF loops (diagonal walls K + B (z - 1)/(T z)
 in 40 %, operator dampers or damper-springs, delays 0-2; the first device an ss block in 80 %, open-loop
 unstable in 60 %) and, every other case, indep_coupled's with a [coupling] V(z) (spring-dampers,
 springs, first-order blocks, a cross term; the reference solves x_e = x + V u, u = -E x_e per g
-itself); g placed at 0.2-3 and, in a third, within 1e-4 of the reference's own crossing. hapstab's verdict must be the reference's, both checkers must verify
+itself); g placed at 0.2-3 and, in a third, within 1e-4 of the reference's own crossing. In half the
+cases operator springs b + k/s are added, some written as tf "b + k/s" or as an ss operator, and the
+first device (an ss block) with its own position state: each such integrator is a conserved quantity
+the checkers set aside, the reference builds the loop without it, and the certificate must claim
+their number (and is refuted with one more or fewer). hapstab's verdict must be the reference's, both checkers must verify
 its certificate, and refute it with the claim flipped (w added or dropped); with P's first diagonal
 entry negated they refute a stable claim and agree on a NOT stable one (whose claim stays true: the
 edited, indefinite P may still prove it).
@@ -48,7 +52,41 @@ def draw(rng, coupled):
     if not coupled and rng.random() < 0.5:  # a fractional delay, t_d = (n + frac) T
         c["frac"] = rng.choice([Q(1, 2), Q(1, 4), Q(3, 4), Q(1, 10)])
     c["coupled"] = coupled
+    # conserved quantities (check/stability_loop_check.hpp): the same physics written with an extra
+    # integrator, each one more state of M at eigenvalue 1 exactly, which the reference never builds:
+    # an operator spring b + k/s as tf "b + k/s" or as ss (its deflection integrates v, as x does), and
+    # the first device, an ss block, with its own position state; the certificate must claim their number
+    c["writes"], c["conserved"] = {}, 0
+    if rng.random() < 0.5:
+        for i in range(len(c["ops"])):
+            if rng.random() < 0.5:
+                b = c["ops"][i] if c["ops"][i] is not None else IL.rq(rng, 0.5, 5)
+                c["ops"][i] = (b if not isinstance(b, tuple) else b[0], IL.rq(rng, 10, 500))
+                c["writes"][i] = rng.choice(["m, b, k", "tf", "ss"])
+                c["conserved"] += c["writes"][i] != "m, b, k"
+        if c["devices"][0]["kind"] == "ss" and rng.random() < 0.5:
+            c["writes"]["device"] = "ss with its position"
+            c["conserved"] += 1
     return c
+
+
+def rewrite(c, text):
+    """The scene's text with c["writes"] applied (draw): the same loop, written with integrators."""
+    for i, how in c["writes"].items():
+        if i == "device":
+            d = c["devices"][0]
+            old = 'ss = { A = [["%s"]], B = [["%s"]], C = [["1"]], D = [["0"]] }' % (d["A"], d["Bv"])
+            new = 'ss = { A = [["%s", "0"], ["1", "0"]], B = [["%s"], ["0"]], C = [["1", "0"]], D = [["0"]] }' % (d["A"], d["Bv"])
+        elif how == "m, b, k":
+            continue
+        else:
+            b, k = c["ops"][i]
+            old = 'dofs = ["d%d"]\nb = "%s"\nk = "%s"\n' % (i, b, k)
+            new = 'dofs = ["d%d"]\n' % i + ('tf = "%s + %s/s"\n' % (b, k) if how == "tf" else
+                                           'ss = { A = [["0"]], B = [["1"]], C = [["%s"]], D = [["%s"]] }\n' % (k, b))
+        assert text.count(old) == 1, (old, text)
+        text = text.replace(old, new)
+    return text
 
 
 def rho_fractional(c, g):
@@ -108,7 +146,7 @@ def rho(c, g):
 
 def scene_text(c):
     """The scene with g = 1 in [parameters] (--set gives c["g"]); a fractional delay as samples."""
-    text = IC.scene_toml(c, 1) if c["coupled"] else IL.scene_toml(c)
+    text = rewrite(c, IC.scene_toml(c, 1) if c["coupled"] else IL.scene_toml(c))
     if c.get("frac"):
         text = text.replace('[delay]\nsamples = "%d"\n' % c["n"], "") + '[delay]\nsamples = "%d + %s"\n' % (c["n"], c["frac"])
     return text
@@ -163,7 +201,13 @@ def run_case(exe, c, tmp):
     if j["stable"] != stable or cl["claim"]["stable"] != stable or cl["kind"] != "stability-loop":
         return False, "%s: hapstab %s, its certificate %s (%s), the reference %s" % (
             what, j["stable"], cl["claim"]["stable"], cl["kind"], stable), None
+    if cl["claim"].get("conserved", 0) != c["conserved"]:
+        return False, "%s: the certificate claims %s conserved quantities, the scene writes %d" % (
+            what, cl["claim"].get("conserved", 0), c["conserved"]), None
     mutants = []
+    miscounted = copy.deepcopy(cl)  # a conserved quantity more (or, with some, fewer): refuted
+    miscounted["claim"]["conserved"] = c["conserved"] + (-1 if c["conserved"] and rng_bit(cl) else 1)
+    mutants.append(("conserved miscounted", miscounted))
     flipped = copy.deepcopy(cl)
     flipped["claim"]["stable"] = not stable
     if stable:
@@ -185,7 +229,7 @@ def run_case(exe, c, tmp):
         for cmd in checkers(exe, bad):
             v = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
             codes.append(v.returncode)
-            if v.returncode != 1 and (name == "claim flipped" or stable or v.returncode != 0):
+            if v.returncode != 1 and (name != "P[0][0] negated" or stable or v.returncode != 0):
                 return False, "%s: %s: %s exits %d: %s" % (what, name, os.path.basename(cmd[1]), v.returncode,
                                                            (v.stdout + v.stderr).strip()[:200]), None
         if codes[0] != codes[1]:
@@ -195,14 +239,21 @@ def run_case(exe, c, tmp):
         if v.returncode != 0:
             return False, "%s: %s exits %d: %s" % (what, os.path.basename(cmd[1]), v.returncode, (v.stdout + v.stderr).strip()[:300]), None
     branch = "stable" if stable else "NOT stable"
-    return True, "%s: %s (%d states), verified by both, its mutants refuted or agreed on" % (what, branch, len(cl["evidence"]["P"])), branch
+    return True, "%s: %s (%d states%s), verified by both, its mutants refuted or agreed on" % (
+        what, branch, len(cl["evidence"]["P"]) + c["conserved"],
+        ", %d conserved: %s" % (c["conserved"], ", ".join(sorted(set(c["writes"].values())))) if c["conserved"] else ""), branch
+
+
+def rng_bit(cl):
+    """A bit of the certificate (P's size), so the choice is reproducible without another stream."""
+    return len(cl["evidence"]["P"]) % 2
 
 
 def main(argv):
     exe = argv[1]
     cases, seed = cases_and_seed(argv)
     rng = random.Random("loop-certificate:%d" % seed)
-    bad = good = skipped = near = coupled = blocks = fractional = 0
+    bad = good = skipped = near = coupled = blocks = fractional = conserved = 0
     branches = {"stable": 0, "NOT stable": 0}
     with tempfile.TemporaryDirectory(prefix="hapstab-loop-cert-") as tmp:
         for i in range(cases):
@@ -223,10 +274,11 @@ def main(argv):
                 coupled += c["coupled"]
                 blocks += c["devices"][0]["kind"] == "ss"
                 fractional += bool(c.get("frac"))
-    print("indep_loop_certificate: %d cases, %d agree (%d with a coupling, %d with an ss device, %d with a fractional delay), "
-          "%d disagree, %d skipped; %d within 1e-4 of a crossing; %s" % (cases, good, coupled, blocks, fractional, bad, skipped, near,
-                                                                          ", ".join("'%s' %d" % kv for kv in branches.items())))
-    if cases >= 12 and (0 in branches.values() or coupled == 0 or blocks == 0 or fractional == 0):
+                conserved += c["conserved"] > 0
+    print("indep_loop_certificate: %d cases, %d agree (%d with a coupling, %d with an ss device, %d with a fractional delay, "
+          "%d with conserved quantities), %d disagree, %d skipped; %d within 1e-4 of a crossing; %s" % (
+              cases, good, coupled, blocks, fractional, conserved, bad, skipped, near, ", ".join("'%s' %d" % kv for kv in branches.items())))
+    if cases >= 12 and (0 in branches.values() or coupled == 0 or blocks == 0 or fractional == 0 or conserved == 0):
         print("indep_loop_certificate: TOO FEW COMPARED: a verdict never reached")
         return 1
     return 1 if bad else 0

@@ -281,7 +281,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   const passivity::MaxGain& m = r.max;
   const std::string K = g.name;
   if (tf.H.empty())
-    throw InputError("--certificate: a certificate holds H as written by --H; with --num/--den or --mat it is not implemented yet");
+    throw InputError("--certificate: --max needs H as an expression in its parameter (--H), not --num/--den or --mat");
   if (m.status != Status::exact && m.status != Status::certified)
     throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
   if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
@@ -526,12 +526,13 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
 nlohmann::json stability_loop_certificate(const std::string& scene_path, const std::vector<std::string>& sets, bool stable) {
   nlohmann::json j = certificate_header("stability-loop");
   j["model"] = scene_model_json(scene_path, sets);
-  std::vector<std::vector<std::pair<rational, rational>>> M;
+  check::SceneLoopMatrix sm;
   try {
-    M = check::scene_loop_matrix(j["model"], 128);
+    sm = check::scene_loop_matrix(j["model"], 128);  // on the quotient by the conserved quantities
   } catch (const InputError& e) {
     throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
   }
+  const auto& M = sm.M;
   BallMatrix Mb(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
   for (size_t i = 0; i < M.size(); ++i)
     for (size_t k = 0; k < M.size(); ++k) {
@@ -560,6 +561,13 @@ nlohmann::json stability_loop_certificate(const std::string& scene_path, const s
                              "force = -z^-n E(z) x(kT)), its closed-loop matrix built by the checker"},
                 {"stable", stable},
                 {"status", "certified"}};
+  if (sm.conserved > 0) {  // what "stable" then means (check/stability_loop_check.hpp)
+    j["claim"]["conserved"] = sm.conserved;
+    j["claim"]["quantity"] = "stability of the scene's sampled loop (devices, operators, zero-order hold, force = -z^-n E(z) "
+                             "x(kT)), its closed-loop matrix M built by the checker, with its k = `conserved` quantities "
+                             "(l^T [A B] = 0: each an eigenvalue 1 of M) set aside: stable = every other mode inside the unit "
+                             "circle (the loop settles to the equilibrium they select, not to 0), NOT stable = one outside it";
+  }
   j["evidence"] = {{"P", rows(d.P)}};
   if (!stable) j["evidence"]["w"] = rows(d.w.transpose())[0];
   verify_before_writing(j);

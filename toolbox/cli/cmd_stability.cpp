@@ -524,7 +524,7 @@ const cli::Register reg(
                       "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
                       "a mass-damper, a spring; or a one-DOF --scene, its text the model), stability-loop for another --scene "
                       "(the closed-loop matrix the checkers build from it), or stability-max with --max (every device "
-                      "pole at s = 0); refused by name: what the checkers do not read (ss operators, count, contact, ...), "
+                      "pole at s = 0); refused by name: what the checkers do not read (count, diagonal, contact, ...), "
                       "--scene --max beyond one DOF, three device poles off s = 0 or more (with --max: any), degree above "
                       "the checkers' limit; an undecided answer writes none; docs/certificates.md)");
        return [o]() -> int {

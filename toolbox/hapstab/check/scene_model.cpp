@@ -345,52 +345,6 @@ const toml::array& tables(const toml::table& root, const char* key) {
   return *a;
 }
 
-void read_loop_operator(const toml::table& op, const std::string& key, const std::vector<std::string>& names, Parameters& p,
-                        const rational& T, SceneLoop& out) {
-  only_keys(op, {"name", "dofs", "m", "b", "k", "tf", "mass", "passive"}, key);
-  std::vector<int> ports;
-  if (const toml::node* d = op.get("dofs")) {
-    if (const auto* list = d->as_array())
-      for (size_t i = 0; i < list->size(); ++i) ports.push_back(dof_of((*list)[i], names, key + ".dofs"));
-    else
-      ports.push_back(dof_of(*d, names, key + ".dofs"));
-  }
-  if (!op.contains("tf")) {
-    if (op.contains("mass")) malformed(key + ".mass", "only with tf");
-    if (ports.empty()) ports.push_back(0);
-    if (ports.size() != 1) malformed(key + ".dofs", "m, b, k act on one DOF");
-    const int j = ports[0];
-    out.mass[j] += constant(field(op, "m", key, p, "0"), T, key + ".m");
-    out.damping[j] += constant(field(op, "b", key, p, "0"), T, key + ".b");
-    out.stiffness[j] += constant(field(op, "k", key, p, "0"), T, key + ".k");
-    return;
-  }
-  if (op.contains("m") || op.contains("b") || op.contains("k")) malformed(key, "give either m, b, k or tf, not both");
-  const toml::node& tf = *op.get("tf");
-  const size_t q = tf.as_string() ? 1 : tf.as_array() ? tf.as_array()->size() : 0;
-  if (ports.empty())
-    for (size_t i = 0; i < q && i < names.size(); ++i) ports.push_back(static_cast<int>(i));
-  if (q == 0 || ports.size() != q) malformed(key + ".tf", "not a square matrix over the operator's DOFs");
-  SceneLoop::Impedance Z;
-  Z.ports = ports;
-  for (const auto& row : text_matrix(tf, q, key + ".tf")) {
-    Z.Z.emplace_back();
-    for (const auto& e : row) {
-      Z.Z.back().push_back(parse_in(p.expand(e, key + ".tf"), 's', T, key + ".tf"));
-      if (!proper(Z.Z.back().back())) malformed(key + ".tf", "an improper entry (write a mass by m or mass)");
-      if (Z.Z.back().back().den().coeff(0) == 0)
-        beyond(key + ".tf", "an entry with a pole at s = 0 (a spring as k/s: give it by m, b, k)");
-    }
-  }
-  if (const toml::node* mass = op.get("mass")) {
-    const auto* a = mass->as_array();
-    if (!a || a->size() != q) malformed(key + ".mass", "expected a mass per DOF of the operator");
-    for (size_t i = 0; i < q; ++i)
-      out.mass[ports[i]] += constant(p.expand(text_of((*a)[i], key + ".mass"), key + ".mass"), T, key + ".mass");
-  }
-  out.operators.push_back(std::move(Z));
-}
-
 // ss = { A, B, C, D }: exact numbers (expressions of the parameters), A n x n, B n x N, C N x n, D N x N.
 SceneLoop::Matrix ss_matrix(const toml::table& ss, const char* key, size_t rows, size_t cols, const std::string& where,
                             Parameters& p, const rational& T) {
@@ -414,6 +368,83 @@ SceneLoop::Matrix ss_matrix(const toml::table& ss, const char* key, size_t rows,
   return M;
 }
 
+// t.ss, a table of A, B, C and D only.
+const toml::table& ss_table(const toml::table& t, const std::string& where) {
+  const auto* ss = t.get("ss")->as_table();
+  if (!ss) malformed(where + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
+  for (const auto& [k, v] : *ss)
+    if (k.str() != "A" && k.str() != "B" && k.str() != "C" && k.str() != "D") malformed(where + ".ss." + std::string(k.str()), "not A, B, C or D");
+  return *ss;
+}
+
+// The order n of ss.A (0 when written [] or [[]]).
+size_t ss_order(const toml::table& ss) {
+  const toml::node* A = ss.get("A");
+  return A && A->as_array() && !(A->as_array()->size() == 1 && (*A->as_array())[0].as_array() && (*A->as_array())[0].as_array()->empty())
+             ? A->as_array()->size() : 0;
+}
+
+void read_loop_operator(const toml::table& op, const std::string& key, const std::vector<std::string>& names, Parameters& p,
+                        const rational& T, SceneLoop& out) {
+  only_keys(op, {"name", "dofs", "m", "b", "k", "tf", "ss", "mass", "passive"}, key);
+  std::vector<int> ports;
+  if (const toml::node* d = op.get("dofs")) {
+    if (const auto* list = d->as_array())
+      for (size_t i = 0; i < list->size(); ++i) ports.push_back(dof_of((*list)[i], names, key + ".dofs"));
+    else
+      ports.push_back(dof_of(*d, names, key + ".dofs"));
+  }
+  if (!op.contains("tf") && !op.contains("ss")) {
+    if (op.contains("mass")) malformed(key + ".mass", "only with tf or ss");
+    if (ports.empty()) ports.push_back(0);
+    if (ports.size() != 1) malformed(key + ".dofs", "m, b, k act on one DOF");
+    const int j = ports[0];
+    out.mass[j] += constant(field(op, "m", key, p, "0"), T, key + ".m");
+    out.damping[j] += constant(field(op, "b", key, p, "0"), T, key + ".b");
+    out.stiffness[j] += constant(field(op, "k", key, p, "0"), T, key + ".k");
+    return;
+  }
+  if (op.contains("m") || op.contains("b") || op.contains("k")) malformed(key, "give either m, b, k or tf/ss, not both");
+  if (op.contains("tf") && op.contains("ss")) malformed(key, "give exactly one of tf, ss");
+  SceneLoop::Impedance Z;
+  size_t q = 0;
+  if (op.contains("ss")) {  // q from D (q x q), else from the ports
+    const toml::table& ss = ss_table(op, key);
+    const toml::node* D = ss.get("D");
+    q = D && D->as_array() ? D->as_array()->size() : ports.size();
+    if (ports.empty())
+      for (size_t i = 0; i < q && i < names.size(); ++i) ports.push_back(static_cast<int>(i));
+    if (q == 0 || ports.size() != q) malformed(key + ".ss", "D is not a square matrix over the operator's DOFs");
+    const size_t n = ss_order(ss);
+    Z.is_ss = true;
+    Z.A = ss_matrix(ss, "A", n, n, key, p, T);
+    Z.B = ss_matrix(ss, "B", n, q, key, p, T);
+    Z.C = ss_matrix(ss, "C", q, n, key, p, T);
+    Z.D = ss_matrix(ss, "D", q, q, key, p, T);
+  } else {
+    const toml::node& tf = *op.get("tf");
+    q = tf.as_string() ? 1 : tf.as_array() ? tf.as_array()->size() : 0;
+    if (ports.empty())
+      for (size_t i = 0; i < q && i < names.size(); ++i) ports.push_back(static_cast<int>(i));
+    if (q == 0 || ports.size() != q) malformed(key + ".tf", "not a square matrix over the operator's DOFs");
+    for (const auto& row : text_matrix(tf, q, key + ".tf")) {
+      Z.Z.emplace_back();
+      for (const auto& e : row) {
+        Z.Z.back().push_back(parse_in(p.expand(e, key + ".tf"), 's', T, key + ".tf"));
+        if (!proper(Z.Z.back().back())) malformed(key + ".tf", "an improper entry (write a mass by m or mass)");
+      }
+    }
+  }
+  Z.ports = ports;
+  if (const toml::node* mass = op.get("mass")) {
+    const auto* a = mass->as_array();
+    if (!a || a->size() != q) malformed(key + ".mass", "expected a mass per DOF of the operator");
+    for (size_t i = 0; i < q; ++i)
+      out.mass[ports[i]] += constant(p.expand(text_of((*a)[i], key + ".mass"), key + ".mass"), T, key + ".mass");
+  }
+  out.operators.push_back(std::move(Z));
+}
+
 // [environment] or [coupling]: tf (in z, or in s with a method) or ss (in z), times gain.
 SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where, size_t N, Parameters& p, const rational& T) {
   only_keys(t, {"tf", "ss", "domain", "method", "gain"}, where);
@@ -422,20 +453,14 @@ SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where
   SceneLoop::Discrete D;
   if (t.contains("ss")) {
     if (t.contains("domain") || t.contains("method")) beyond(where + ".domain", "an ss block in s");
-    const auto* ss = t.get("ss")->as_table();
-    if (!ss) malformed(where + ".ss", "expected a table { A = ..., B = ..., C = ..., D = ... }");
-    for (const auto& [k, v] : *ss)
-      if (k.str() != "A" && k.str() != "B" && k.str() != "C" && k.str() != "D") malformed(where + ".ss." + std::string(k.str()), "not A, B, C or D");
-    const toml::node* A = ss->get("A");
-    const size_t n = A && A->as_array() && !(A->as_array()->size() == 1 && (*A->as_array())[0].as_array() &&
-                                             (*A->as_array())[0].as_array()->empty())
-                         ? A->as_array()->size() : 0;
+    const toml::table& ss = ss_table(t, where);
+    const size_t n = ss_order(ss);
     const rational g = constant(gain_text, T, where + ".gain");
     D.is_ss = true;
-    D.A = ss_matrix(*ss, "A", n, n, where, p, T);
-    D.B = ss_matrix(*ss, "B", n, N, where, p, T);
-    D.C = ss_matrix(*ss, "C", N, n, where, p, T);
-    D.D = ss_matrix(*ss, "D", N, N, where, p, T);
+    D.A = ss_matrix(ss, "A", n, n, where, p, T);
+    D.B = ss_matrix(ss, "B", n, N, where, p, T);
+    D.C = ss_matrix(ss, "C", N, n, where, p, T);
+    D.D = ss_matrix(ss, "D", N, N, where, p, T);
     for (auto* M : {&D.C, &D.D})
       for (auto& row : *M)
         for (auto& x : row) x *= g;

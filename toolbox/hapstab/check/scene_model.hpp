@@ -38,15 +38,17 @@ namespace hapstab::check::detail {
 ///   [[device]] ss or tf          a strictly proper block G(s) as written (tf: column by column), its
 ///                                DOFs the next inputs; an operator's mass on it is refused
 ///   [[operator]] m, b, k         on one DOF: adds m to its mass, b to its damping, k x to its force
-///   [[operator]] tf = Z, mass    on its DOFs: a proper impedance matrix Z(s) (no pole at s = 0: an
-///                                operator spring written as k/s is taken as k only by m, b, k),
-///                                velocity -> force, and a mass per port
+///   [[operator]] tf = Z, mass    on its DOFs: a proper impedance matrix Z(s), velocity -> force (a
+///                                spring as k/s too: its state and x are a conserved quantity, set
+///                                aside by check/stability_loop_check.hpp), and a mass per port
+///   [[operator]] ss, mass        the same impedance as a realisation as written (A n x n, B n x q,
+///                                C q x n, D q x q over its q DOFs)
 ///   [environment] tf or ss       N x N (a string for one DOF) in z, or tf in s by backward
 ///                                Euler/Tustin; times gain (an ss block's C and D)
 ///   [coupling] tf or ss          V(z), force -> displacement, in parallel with the device (paper 000
 ///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
 ///   [delay]                      t_d in [0, 1000 T], a fraction of a sample too
-/// Refused by name: anything else (ss operators, count, diagonal, [contact], encoders, friction, ...).
+/// Refused by name: anything else (count, diagonal, [contact], encoders, friction, ...).
 struct SceneLoop {
   using Matrix = std::vector<std::vector<rational>>;
   /// A discrete N x N block: its transfer matrix, or its realisation as written (ss).
@@ -72,9 +74,11 @@ struct SceneLoop {
   std::vector<rational> mass, damping, stiffness;
   struct Impedance {
     std::vector<int> ports;                                   ///< DOF indices
-    std::vector<std::vector<RationalFunction<rational>>> Z;  ///< |ports| x |ports|, in s, proper
+    std::vector<std::vector<RationalFunction<rational>>> Z;  ///< tf: |ports| x |ports|, in s, proper
+    bool is_ss = false;
+    Matrix A, B, C, D;  ///< ss, as written
   };
-  std::vector<Impedance> operators;  ///< the tf operators
+  std::vector<Impedance> operators;  ///< the tf and ss operators
   Discrete E;                        ///< the environment
   std::optional<Discrete> V;         ///< the coupling
   size_t dofs() const { return mass.size(); }

@@ -94,7 +94,7 @@ Plant plant(const detail::SceneLoop& L) {
   std::vector<Realisation> ops;
   size_t nz = 0;
   for (const auto& o : L.operators) {
-    ops.push_back(realise(o.Z));
+    ops.push_back(o.is_ss ? Realisation{o.A, o.B, o.C, o.D} : realise(o.Z));
     nz += ops.back().A.size();
   }
   const size_t ns = nd + N + nz;
@@ -200,6 +200,73 @@ BallRows product(const BallRows& X, const BallRows& Y) {
   return out;
 }
 
+// The conserved quantities of the plant: a basis of {l : l^T [A B] = 0} in reduced echelon form,
+// l_i = 1 at its own index c_i and 0 at the others' (c_i: the free columns of [A B]^T's echelon form).
+struct Conserved {
+  Mat L;                     // k x ns
+  std::vector<size_t> at;    // c_1 < ... < c_k
+};
+
+Conserved conserved_quantities(const Plant& pl) {
+  const size_t ns = pl.A.size(), N = pl.B.empty() ? 0 : pl.B[0].size();
+  Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
+  for (size_t i = 0; i < ns; ++i) {
+    for (size_t j = 0; j < ns; ++j) K[j][i] = pl.A[i][j];
+    for (size_t j = 0; j < N; ++j) K[ns + j][i] = pl.B[i][j];
+  }
+  std::vector<size_t> pivot_col;  // reduced row echelon form of K, exactly
+  size_t row = 0;
+  for (size_t c = 0; c < ns && row < K.size(); ++c) {
+    size_t r = row;
+    while (r < K.size() && K[r][c] == 0) ++r;
+    if (r == K.size()) continue;
+    std::swap(K[r], K[row]);
+    const rational piv = K[row][c];
+    for (auto& x : K[row]) x /= piv;
+    for (size_t i = 0; i < K.size(); ++i)
+      if (i != row && K[i][c] != 0) {
+        const rational f = K[i][c];
+        for (size_t j = c; j < ns; ++j) K[i][j] -= f * K[row][j];
+      }
+    pivot_col.push_back(c);
+    ++row;
+  }
+  Conserved out;
+  std::vector<bool> is_pivot(ns, false);
+  for (size_t c : pivot_col) is_pivot[c] = true;
+  for (size_t f = 0; f < ns; ++f) {
+    if (is_pivot[f]) continue;
+    std::vector<rational> l(ns, rational(0));
+    l[f] = 1;
+    for (size_t r = 0; r < pivot_col.size(); ++r) l[pivot_col[r]] = -K[r][f];
+    out.L.push_back(std::move(l));
+    out.at.push_back(f);
+  }
+  return out;
+}
+
+// M on the quotient by the conserved quantities (header): with y = l^T x = 0, x_c = -L_kept x_kept,
+// so M11 = M[kept, kept] - M[kept, c] L[:, kept] (L zero beyond the plant's states).
+BallRows reduced(const BallRows& M, const Conserved& q) {
+  if (q.at.empty()) return M;
+  const size_t n = M.size(), k = q.at.size(), ns = q.L[0].size();
+  std::vector<bool> gone(n, false);
+  for (size_t c : q.at) gone[c] = true;
+  std::vector<size_t> kept;
+  for (size_t i = 0; i < n; ++i)
+    if (!gone[i]) kept.push_back(i);
+  BallRows R = zero_balls(n - k, n - k);
+  for (size_t a = 0; a < kept.size(); ++a)
+    for (size_t b = 0; b < kept.size(); ++b) {
+      flint::Ball x = M[kept[a]][kept[b]];
+      if (kept[b] < ns)
+        for (size_t i = 0; i < k; ++i)
+          if (q.L[i][kept[b]] != 0) x -= M[kept[a]][q.at[i]] * flint::Ball(q.L[i][kept[b]]);
+      R[a][b] = x;
+    }
+  return R;
+}
+
 // M of the header at the thread's ball precision.
 // (Phi_h, Gamma_h): [Phi Gamma; 0 I] = exp([A B; 0 0] h), Arb's arb_mat_exp.
 std::pair<BallRows, BallRows> hold(const Mat& A, const Mat& Bu, const rational& h, long bits) {
@@ -218,7 +285,13 @@ std::pair<BallRows, BallRows> hold(const Mat& A, const Mat& Bu, const rational& 
   return {Phi, Gamma};
 }
 
-BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
+struct LoopMatrix {
+  BallRows M;            // on the quotient by the conserved quantities (all of M when there are none)
+  size_t conserved = 0;  // k
+  size_t order = 0;      // M's order before the quotient
+};
+
+LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   const Plant pl = plant(L);
   const Mat &A = pl.A, &Bu = pl.B;
   const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
@@ -289,7 +362,8 @@ BallRows loop_matrix(const detail::SceneLoop& L, long bits) {
     for (size_t j = 0; j < nc; ++j) M[ns + i][j] = flint::Ball(BX[i][j] + (j >= ns && j < ns + nE ? E.A[i][j - ns] : rational(0)));
   for (size_t i = 0; i < nV; ++i)
     for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = flint::Ball(BF[i][j] + (j >= ns + nE ? V.A[i][j - ns - nE] : rational(0)));
-  return M;
+  const Conserved q = conserved_quantities(pl);
+  return {reduced(M, q), q.at.size(), order};
 }
 
 // Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
@@ -360,27 +434,30 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
 
 }  // namespace
 
-std::vector<std::vector<std::pair<rational, rational>>> scene_loop_matrix(const nlohmann::json& model, long bits) {
+SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits) {
   const detail::SceneLoop L = detail::read_scene_loop(model);
   flint::BallPrecision scope(bits);
-  const BallRows M = loop_matrix(L, bits);
-  std::vector<std::vector<std::pair<rational, rational>>> out(M.size());
-  for (size_t i = 0; i < M.size(); ++i)
-    for (const auto& x : M[i]) {
+  const LoopMatrix lm = loop_matrix(L, bits);
+  SceneLoopMatrix out;
+  out.conserved = lm.conserved;
+  out.M.resize(lm.M.size());
+  for (size_t i = 0; i < lm.M.size(); ++i)
+    for (const auto& x : lm.M[i]) {
       const auto e = x.bounds();
-      out[i].emplace_back(e.lo, e.hi);
+      out.M[i].emplace_back(e.lo, e.hi);
     }
   return out;
 }
 
 Verdict check_stability_loop(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
-  detail::only_fields(claim, {"quantity", "status", "stable"}, "claim");
+  detail::only_fields(claim, {"quantity", "status", "stable", "conserved"}, "claim");
   detail::only_fields(evidence, {"P", "w"}, "evidence");
   if (!claim.contains("status") || claim.at("status") != "certified")
     throw InputError("claim.status: missing or not \"certified\" (the loop holds exponentials: an enclosure decides)");
   if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
   const bool stable = claim.at("stable").get<bool>();
+  const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, static_cast<long>(kMaxOrder)) : 0;
   const detail::SceneLoop L = detail::read_scene_loop(model);
   const Mat Pm = detail::exact_matrix(evidence, "P", "evidence", kMaxOrder);
   if (!rational_matrix::symmetric(Pm)) throw InputError("evidence.P: not symmetric");
@@ -403,14 +480,22 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   std::string why;
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
-    const BallRows M = loop_matrix(L, bits);
+    const LoopMatrix lm = loop_matrix(L, bits);
+    if (static_cast<long>(lm.conserved) != conserved)
+      return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the plant has " +
+                         std::to_string(lm.conserved) + " (l^T [A B] = 0, exactly: each an eigenvalue 1 of M)"};
+    const BallRows& M = lm.M;
     if (M.size() != Pm.size())
-      throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()));
+      throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +
+                       (lm.conserved ? " (on the quotient by its conserved quantities)" : ""));
     if (stein_holds(Pm, M, why))
-      return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(M.size()) + " states, " +
+      return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(lm.order) + " states, " +
                         std::to_string(L.dofs()) + " DOF, delay " + rational(L.delay + L.fraction).str() +
-                        " samples) built from the scene, e^{AT} in balls (" +
-                        std::to_string(bits) + " bits); P - M^T P M > 0 for every M in them and " + sign + " (Stein inertia)"};
+                        " samples) built from the scene, e^{AT} in balls (" + std::to_string(bits) + " bits)" +
+                        (lm.conserved ? ", on the quotient by its conserved quantities (k = " + std::to_string(lm.conserved) +
+                                            ": l^T [A B] = 0 exactly, l^T M = l^T)"
+                                      : std::string()) +
+                        "; P - M^T P M > 0 for every M in them and " + sign + " (Stein inertia)"};
   }
   return {false, "claim: " + std::string(stable ? "stable" : "NOT stable") + ", but " + why + " at 512 bits"};
 }

@@ -6,7 +6,8 @@
 //   plant    per DOF i the state (v_i, x_i): m_i v_i' = -b_i v_i - k_i x_i + u_i - (Z v)_i, x_i' = v_i;
 //            each tf operator Z(s) on its ports realised column by column (column j: the monic lcm
 //            d_j of its denominators, a controllable companion form of the strictly proper part,
-//            D_j the direct part), its states after the DOFs' in operator order. Outputs y = x.
+//            D_j the direct part), an ss operator as written (velocities of its ports in, forces
+//            out), their states after the DOFs' in operator order. Outputs y = x.
 //   hold     s_{k+1} = Phi s_k + Gamma u, [Phi Gamma; 0 I] = exp([A B; 0 0] T) (Arb's arb_mat_exp).
 //   wall     E(z) N x N realised column by column the same way (an ss block as written): xi+ =
 //            A_E xi + B_E x_e; a [coupling] V(z) likewise, eta+ = A_V eta + B_V u, in parallel with
@@ -28,10 +29,21 @@
 // min_i (G_ii - sum_{j != i} |G_ij|) > ||X||_F^2 r (Gershgorin and Weyl). (The exact elimination of
 // Q_mid - r I took 34 s at order 115; this takes 0.2 s.) A P that does not pass refutes the claim
 // (exit 1): the evidence does not prove it.
-// The loop is the scene's loop as written up to modes that hapstab sets aside exactly (conserved
-// quantities of an operator's spring, which m, b, k writes on x itself) -- a tf operator with a pole
-// at s = 0 is refused -- and hidden modes of the column realisations, which are eigenvalues of M
-// here: a certificate exists only where they are off the circle, and then they are part of M.
+// Conserved quantities: l with l^T [A B] = 0 exactly (A, B the continuous plant above, rationals) keeps
+// l^T s constant in the loop whatever the controller does: l^T A^k = 0 for k >= 1, so l^T Phi_h = l^T
+// and l^T Gamma_h = 0 for every h, and l (zero beyond the plant's states) is a left eigenvector of M,
+// eigenvalue 1. An operator's spring written as k/s, or in an ss operator's states, integrates the
+// velocity the position x does, and a device written with its own position state does the same: each
+// gives one. The checker computes their basis itself (exact elimination; l_i = 1 at index c_i, 0 at
+// the other c_j), and M is decided on the quotient: with T = [rows of I but the c_i; L], T M T^-1 =
+// [M11 M12; 0 I_k], M11 = M[kept, kept] - M[kept, c] L[:, kept]. The claim states k (claim.conserved;
+// absent: 0), and must be the checker's k (else refuted: with k > 0, M itself has the eigenvalue 1).
+// "stable" with k > 0 means: M11 Schur stable, so the eigenvalue 1 is semisimple and every solution
+// settles to the equilibrium its conserved quantities select (not asymptotically stable: say so);
+// "NOT stable": M11 has an eigenvalue with |z| > 1. P (and w) are of M11's order.
+// The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
+// eigenvalues of M here; a certificate exists only where they are off the circle (other than the
+// conserved quantities), and then they are part of M.
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
@@ -45,9 +57,14 @@
 
 namespace hapstab::check {
 
-/// M of the scene's loop as above (model: {"scene", "set"}): each entry's enclosure [lo, hi], exact
-/// rationals, computed in balls at `bits` (for the producer, which solves P from its midpoint).
-std::vector<std::vector<std::pair<rational, rational>>> scene_loop_matrix(const nlohmann::json& model, long bits);
+/// M of the scene's loop as above (model: {"scene", "set"}), on the quotient by the conserved
+/// quantities: each entry's enclosure [lo, hi], exact rationals, computed in balls at `bits` (for the
+/// producer, which solves P from its midpoint), and their number k.
+struct SceneLoopMatrix {
+  std::vector<std::vector<std::pair<rational, rational>>> M;
+  size_t conserved = 0;
+};
+SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits);
 
 Verdict check_stability_loop(const nlohmann::json& certificate);
 
