@@ -1002,7 +1002,9 @@ def re_over_circle(P, Q):
 def check_passivity_level(c):
     """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
-    level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1])."""
+    level <= hi if E^(c0) - hi F^(c0) <= 0 at the witness c0 (F^ > 0 on [-1, 1]). A claim of status
+    "upper_bound" (an OSP value <= 0, a zero of G on the circle: not the level) is the witness part
+    alone, with F^(c0) > 0."""
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "num", "den", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
@@ -1020,18 +1022,33 @@ def check_passivity_level(c):
     ok, why = schur_cohn(G.den)
     if not ok:
         raise Malformed("model.H: G is not Schur stable (%s)" % why)
-    status, lo, hi, _, refuted = claim_range(claim)
-    if refuted:
-        return False, refuted
     osp = kind == "osp"
     E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
     one = Fraction(1)
+    name = "delta*" if osp else "phi*"
+    if claim.get("status") == "upper_bound":  # the level <= hi only (an OSP value <= 0, a zero of G on the circle)
+        only(claim, ("quantity", "status", "hi", "printed_hi"), "claim")
+        hi = exact(claim, "hi", "claim")
+        if "printed_hi" in claim and printed_number(claim["printed_hi"], "claim.printed_hi") != hi:
+            return False, "claim.printed_hi = %s is not the claimed %s" % (claim["printed_hi"], short(hi))
+        c0 = exact(evidence, "witness_c", "evidence")
+        if c0 < -1 or c0 > 1:
+            return False, "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
+        if peval(F, c0) == 0:
+            return False, "evidence.witness_c: %s = 0 there (no bound from it)" % ("G" if osp else "1/G")
+        w0 = peval(E, c0) / peval(F, c0)
+        if w0 > hi:
+            return False, "%s <= %s (%.12g) not shown: the value at the witness c0 = %s is %.12g > hi" % (
+                name, short(hi), float(hi), short(c0), float(w0))
+        return True, "%s <= %.12g (an upper bound only: the value %.12g at c0 = %s)" % (name, float(hi), float(w0), short(c0))
+    status, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
     if osp:
         if max_positive(F, F, -one, one):
             raise Malformed("model.H: G has a zero on the unit circle: delta* is not Lemma 1's level")
         if lo <= 0:
             raise Malformed("claim: an OSP value <= 0 is an upper bound of Lemma 1's level only")
-    name = "delta*" if osp else "phi*"
     why = nonneg_on(psub(E, pscale(F, lo)), -one, one)
     if why:
         return False, "%s >= %s (%.12g) fails: E(c) - lo F(c) is %s" % (name, short(lo), float(lo), why)

@@ -38,6 +38,7 @@ expectation holds; prints the counts.
 import argparse
 import copy
 import json
+import math
 import os
 import random
 import re
@@ -610,8 +611,31 @@ def level_produce(hapstab, m, cache, tmp, digits=17):
 
 
 def claim_ends(cl):
-    """A level claim's ends: (value, value) when it is exact, else (lo, hi)."""
+    """A level claim's ends: (value, value) when it is exact, (-inf, hi) for an upper bound only, else (lo, hi)."""
+    if cl["status"] == "upper_bound":
+        return (-math.inf, Fraction(cl["hi"]))
     return (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
+
+
+def upper_bound_mutants(cert, rng):
+    """passivity-level with status upper_bound (an OSP value <= 0: the level <= hi only): hi lowered
+    below the frequency minimum (refute), raised (accept), its printed decimal or the witness moved, a
+    lower end added (malformed)."""
+    hi = Fraction(cert["claim"]["hi"])
+    step = max(abs(hi), Fraction(1)) / 100
+    c0 = Fraction(cert["evidence"]["witness_c"])
+    out = [("unmutated", cert, "accept"),
+           ("hi lowered", with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], frac(hi - step)), "refute"),
+           ("hi raised", with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], frac(hi + step)), "accept"),
+           ("printed_hi is not the claimed hi", with_field(cert, ["claim", "printed_hi"], cert["claim"]["printed_hi"] + "1"), "refute"),
+           ("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(1 + Fraction(1, rng.randint(2, 1000)))), "refute"),
+           ("a lower end added", with_field(cert, ["claim", "lo"], frac(hi - 1)), "malformed"),
+           ("status certified without lo", with_field(cert, ["claim", "status"], "certified"), "malformed"),
+           ("deleted evidence.witness_c", deleted(cert, ["evidence", "witness_c"]), "malformed")]
+    for name, x in (("witness - 1/1000", c0 - Fraction(1, 1000)), ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+        if -1 <= x <= 1:
+            out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+    return out
 
 
 def level_frame(cert, rng):
@@ -631,6 +655,8 @@ def level_frame(cert, rng):
 
 
 def level_mutants(cert, rng, hapstab, cache, tmp):
+    if cert["claim"]["status"] == "upper_bound":
+        return upper_bound_mutants(cert, rng)
     out = [("unmutated", cert, "accept")]
     cl, m = cert["claim"], cert["model"]
     lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
@@ -663,6 +689,8 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
         if isinstance(other, dict):
             olo, ohi = claim_ends(other["claim"])
             expect = "refute" if hi < olo or lo > ohi else "agree"
+            if nm["kind"] == "osp" and lo <= 0:  # this claim, read as an OSP level, is no level at all
+                expect = "malformed"
         else:
             expect = "same"  # no certificate of the edited model: both checkers give one exit, whichever
         out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
@@ -672,7 +700,9 @@ def level_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("kind unknown", with_field(cert, ["model", "kind"], "io"), "malformed"))
     out.append(("G unstable", with_field(cert, ["model", "H"], "(" + h + ")/(z - 2)"), "malformed"))
     out.append(("G not causal", with_field(cert, ["model", "H"], "z^2*(" + h + ")"), "malformed"))
-    out.append(("G with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z + 1)"), "malformed"))
+    G = hapstab_check.parse_h(h, Fraction(m["T"]), {k: Fraction(v) for k, v in m["set"].items()})
+    cancels = hapstab_check.peval(G.num, Fraction(-1)) == 0  # h's zero at -1 takes the pole away
+    out.append(("G with a pole on the circle", with_field(cert, ["model", "H"], "(" + h + ")/(z + 1)"), "same" if cancels else "malformed"))
     out.append(("T a decimal", with_field(cert, ["model", "T"], "0.001"), "malformed"))
     out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("added model.delay", with_field(cert, ["model", "delay"], 1), "malformed"))
@@ -1845,6 +1875,11 @@ def print_branches(certs, mutants, cpp):
                                 sum(1 for t in sc if re.search(r'samples = "\d*/', t)),
                                 sum(1 for c in loops if c["claim"].get("conserved", 0) > 0),
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
+    lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
+    if lvl:
+        print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d" % (
+            sum(1 for c in lvl if c["model"]["kind"] == "isp"), sum(1 for c in lvl if c["model"]["kind"] == "osp"),
+            *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound"))))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
         print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (

@@ -370,6 +370,29 @@ nlohmann::json level_cert(const std::string& H, const std::string& kind, const n
           {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
 }
 
+// An upper bound only (status "upper_bound"): G = 1/(z - 1/2), Re(1/G) = c - 1/2, least -3/2 at c = -1,
+// so the level is <= -3/2 (Lemma 1 needs P > 0 too, which may leave no level at all); a witness elsewhere
+// (c0 = 1: 1/2) does not show it, nor does a lower hi. G = (z + 1)/(z - 1/2) has a zero at z = -1:
+// there Q(c0) = 0 proves nothing; at z = j, Re(1/G) = 1/4 (everywhere else too), so the level <= 1/4.
+TEST(PassivityLevelCheck, UpperBoundOnlyByHand) {
+  auto upper = [](const std::string& hi, const std::string& printed) {
+    nlohmann::json c{{"status", "upper_bound"}, {"hi", hi}};
+    if (!printed.empty()) c["printed_hi"] = printed;
+    return c;
+  };
+  const Verdict ok = check_certificate(level_cert("1/(z-0.5)", "osp", upper("-3/2", "-1.5"), "-1"));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  EXPECT_FALSE(check_certificate(level_cert("1/(z-0.5)", "osp", upper("-3/2", "-1.5"), "1")).verified);
+  EXPECT_FALSE(check_certificate(level_cert("1/(z-0.5)", "osp", upper("-2", ""), "-1")).verified);
+  EXPECT_FALSE(check_certificate(level_cert("1/(z-0.5)", "osp", upper("-3/2", "-1.4"), "-1")).verified);
+  EXPECT_FALSE(check_certificate(level_cert("(z+1)/(z-0.5)", "osp", upper("1/4", ""), "-1")).verified);
+  const Verdict zero = check_certificate(level_cert("(z+1)/(z-0.5)", "osp", upper("1/4", ""), "0"));
+  EXPECT_TRUE(zero.verified) << zero.reason;
+  auto lo_beside = level_cert("1/(z-0.5)", "osp", upper("-3/2", ""), "-1");
+  lo_beside["claim"]["lo"] = "-2";  // an upper bound claims no lower end
+  EXPECT_THROW(check_certificate(lo_beside), InputError);
+}
+
 // G = 1 + 1/(z - 1/2) = (z + 1/2)/(z - 1/2), c = cos(theta): Re G = 1 + (c - 1/2)/(5/4 - c), increasing
 // in c, so phi* = Re G(-1) = 1/3; 1/G = (z - 1/2)/(z + 1/2), Re(1/G) = (3/4)/(5/4 + c), so delta* =
 // Re(1/G)(1) = 1/3.

@@ -518,6 +518,24 @@ class PassivityLevel(unittest.TestCase):
     """test_check.cpp's PassivityLevelCheck: G = 1 + 1/(z - 1/2) has phi* = Re G(-1) = 1/3 and
     delta* = Re(1/G)(1) = (3/4)/(9/4) = 1/3 (Re G = 1 + (c - 1/2)/(5/4 - c), Re 1/G = (3/4)/(5/4 + c))."""
 
+    def test_upper_bound_only_by_hand(self):
+        # test_check.cpp's PassivityLevelCheck.UpperBoundOnlyByHand: 1/(z - 1/2) has Re(1/G) = c - 1/2,
+        # least -3/2 at c = -1; (z + 1)/(z - 1/2) has a zero at -1 and Re(1/G) = 1/4 elsewhere
+        def up(hi, printed=None):
+            c = {"status": "upper_bound", "hi": hi}
+            if printed:
+                c["printed_hi"] = printed
+            return c
+        self.assertEqual(hc.check(level_cert("1/(z-0.5)", "osp", up("-3/2", "-1.5"), "-1"))[0], 0)
+        self.assertEqual(hc.check(level_cert("1/(z-0.5)", "osp", up("-3/2", "-1.5"), "1"))[0], 1)
+        self.assertEqual(hc.check(level_cert("1/(z-0.5)", "osp", up("-2"), "-1"))[0], 1)
+        self.assertEqual(hc.check(level_cert("1/(z-0.5)", "osp", up("-3/2", "-1.4"), "-1"))[0], 1)
+        self.assertEqual(hc.check(level_cert("(z+1)/(z-0.5)", "osp", up("1/4"), "-1"))[0], 1)
+        self.assertEqual(hc.check(level_cert("(z+1)/(z-0.5)", "osp", up("1/4"), "0"))[0], 0)
+        c = level_cert("1/(z-0.5)", "osp", up("-3/2"), "-1")
+        c["claim"]["lo"] = "-2"
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_first_order(self):
         ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
         G = "1 + 1/(z-0.5)"

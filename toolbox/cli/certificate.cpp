@@ -345,12 +345,11 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 }
 
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
-                                           const lmi::PassivityLevel& c, bool is_level, int digits) {
+                                           const lmi::PassivityLevel& c, bool is_level, bool upper_only, int digits) {
   if (c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none): no certificate");
-  if (!is_level || !c.enclosure)
-    throw InputError("--certificate: the certified frequency value is not the level here (an OSP value <= 0, or a zero of G "
-                     "on the unit circle): no certificate");
+  if ((!is_level && !upper_only) || !c.enclosure)
+    throw InputError("--certificate: the certified frequency value is not the result printed here: no certificate");
   nlohmann::json j = certificate_header("passivity-level");
   j["model"] = tf_model_json(tf);
   j["model"]["T"] = parse_rational(tf.T, "--T").str();
@@ -359,7 +358,16 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
   rational hi;
-  if (c.status == Status::exact && c.enclosure->lo == c.enclosure->hi) {
+  if (upper_only) {  // the level <= hi only (Lemma 1 also needs P > 0; check/passivity_level_check.hpp)
+    claim["quantity"] = std::string(osp ? "delta*" : "phi*") +
+                        ", the level of paper 000 Definition 2, <= hi: an upper bound only (the frequency value is not "
+                        "the level here: an OSP value <= 0, or a zero of G on the unit circle)";
+    claim["status"] = "upper_bound";
+    const std::string printed = decimal_outward(c.enclosure->hi, digits, +1);
+    hi = parse_rational(printed, "enclosure");
+    claim["hi"] = hi.str();
+    claim["printed_hi"] = printed;
+  } else if (c.status == Status::exact && c.enclosure->lo == c.enclosure->hi) {
     claim["status"] = "exact";
     claim["value"] = c.enclosure->lo.str();
     hi = c.enclosure->lo;
@@ -377,6 +385,7 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   const auto c0 = find_witness(obj, -hi, theta, rational(1));
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with Re W(c0) <= " + hi.str() + " was found");
   j["evidence"] = {{"witness_c", c0->str()}};
+  verify_before_writing(j);  // a hypothesis the checkers verify (no zero of G on the circle for OSP) may fail
   return j;
 }
 

@@ -42,9 +42,11 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 /// The certificate of `passivity-level --H` (check/passivity_level_check.hpp): G as written, the
 /// kind (isp, osp), the certified frequency level c as claim (exact, or its enclosure printed at
 /// `digits`), a witness c0 = cos(theta0) with Re W(c0) <= hi (W = G, or 1/G for osp). InputError
-/// (exit 2) when G is not given by --H, or c is not a certified level (an OSP value <= 0).
+/// (exit 2) when c is not certified. With `upper_only` (the command's result is c as an upper bound
+/// of the level only: an OSP value <= 0, or a zero of G on the circle) the claim is status
+/// "upper_bound", hi = c's upper end as printed (rounded up), and the same witness.
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
-                                           const lmi::PassivityLevel& c, bool is_level, int digits);
+                                           const lmi::PassivityLevel& c, bool is_level, bool upper_only, int digits);
 
 /// The certificate of `passivity-level --ss FILE --kind isp` with a square MIMO G (m >= 2 inputs;
 /// check/passivity_level_mimo_check.hpp, kind passivity-level-mimo): the exact A, B, C, D and T as

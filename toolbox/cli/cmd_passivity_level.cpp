@@ -223,7 +223,7 @@ int run(const Opts& o) {
   if (!o.certificate.empty()) {
     const bool is_level = v.cert_ok && v.cert_is_level && &v.main() == &v.c;
     if (G) {
-      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, o.digits));
+      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, v.only_bound && v.cert_ok, o.digits));
     } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
       write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, o.digits));
     }

@@ -39,25 +39,47 @@ Verdict check_passivity_level(const nlohmann::json& cert) {
   const SchurCohn stable = schur_cohn(G.den());
   if (!stable.stable) throw InputError("model.H: G is not Schur stable (" + stable.why + "): the level is not its frequency minimum");
 
-  // ---- the claim
-  const detail::ClaimRange range = detail::claim_range(claim);
-  if (range.refuted) return {false, *range.refuted};
-  const std::string& status = range.status;
-  const rational &lo = range.lo, &hi = range.hi;
-
   // ---- Re W = X/Q on the circle, c = cos(theta)
   const circle::OnCircle N = circle::at_circle(G.num()), D = circle::at_circle(G.den());
   const P s2 = circle::one_minus_c2();
   const P X = N.a * D.a + s2 * N.b * D.b;
   const P Q = osp ? N.a * N.a + s2 * N.b * N.b : D.a * D.a + s2 * D.b * D.b;
   const rational m1(-1), p1(1);
+  const std::string name = osp ? "delta*" : "phi*";
+
+  // ---- an upper bound only (header): Re W(c0) <= hi at the witness with Q(c0) > 0
+  if (claim.contains("status") && claim.at("status") == "upper_bound") {
+    detail::only_fields(claim, {"quantity", "status", "hi", "printed_hi"}, "claim");
+    const rational hi = exact_field(claim, "hi", "claim");
+    if (claim.contains("printed_hi")) {
+      const auto& v = claim.at("printed_hi");
+      const auto q = v.is_string() ? try_parse_rational(v.get<std::string>()) : std::nullopt;
+      if (!q) throw InputError("claim.printed_hi: not a number string");
+      if (*q != hi) return {false, "claim.printed_hi = " + v.get<std::string>() + " is not the claimed " + hi.str()};
+    }
+    const rational c0 = exact_field(evidence, "witness_c", "evidence");
+    if (c0 < -1 || c0 > 1) return {false, "evidence.witness_c = " + detail::shortened(c0) + " is outside [-1, 1]"};
+    if (Q(c0) == 0) return {false, std::string("evidence.witness_c: ") + (osp ? "G" : "1/G") + " = 0 there (no bound from it)"};
+    const rational w0 = X(c0) / Q(c0);
+    if (w0 > hi)
+      return {false, name + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: Re " + (osp ? "1/G" : "G") +
+                         " at the witness c0 = " + detail::shortened(c0) + " is " + detail::decimal(w0) + " > hi"};
+    return {true, name + " <= " + detail::decimal(hi) + " (" + (osp ? "OSP" : "ISP") + ", an upper bound only: Re " +
+                      (osp ? "1/G" : "G") + " = " + detail::decimal(w0) + " at c0 = " + detail::shortened(c0) +
+                      ", where the frequency inequality of every level above hi fails; G Schur stable: " + stable.why + ")"};
+  }
+
+  // ---- the claim
+  const detail::ClaimRange range = detail::claim_range(claim);
+  if (range.refuted) return {false, *range.refuted};
+  const std::string& status = range.status;
+  const rational &lo = range.lo, &hi = range.hi;
   if (osp) {
     if (auto why = max_positive_on(Q, Q, m1, p1))
       throw InputError("model.H: G has a zero on the unit circle (|N|^2 not > 0: " + *why + "): delta* is not Lemma 1's level there");
     if (lo <= 0)
       throw InputError("claim: an OSP value <= 0 (lo = " + detail::decimal(lo) + ") is an upper bound of Lemma 1's level only: no certificate");
   }
-  const std::string name = osp ? "delta*" : "phi*";
   if (auto why = nonnegative_on(X - lo * Q, m1, p1))
     return {false, name + " >= " + lo.str() + " (" + detail::decimal(lo) + ") fails: X(c) - lo Q(c) on [-1, 1]: " + *why};
   const rational c0 = exact_field(evidence, "witness_c", "evidence");

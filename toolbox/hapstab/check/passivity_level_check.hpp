@@ -16,8 +16,11 @@
 // then the ISP value is Lemma 1's level by the strict discrete KYP lemma (docs/passivity-levels.md);
 // no pole of G on the circle follows. OSP: no zero of G on the circle (|N|^2 > 0 on [-1, 1], by
 // check/max_positive.hpp) and delta* > 0 (lo > 0): the conditions under which delta* is Lemma 1's
-// level (an OSP value <= 0 is only an upper bound of it; the producer reports it so and writes no
-// certificate). The KYP lemma itself is cited, not checked: the certificate proves the frequency-
+// level. An OSP value <= 0 (Lemma 1 also needs P > 0, which the frequency inequality does not
+// impose), or one of a G with a zero on the circle, is an upper bound of the level only: the claim
+// is then status "upper_bound" and "hi" (level <= hi), proven by the witness alone: Re W(c0) <= hi
+// with Q(c0) > 0, so for every nu > hi the frequency inequality He G - nu G^* G >= 0 (OSP; He G - nu
+// >= 0, ISP), necessary for a nu-passive stable G, fails at z0 (none of the hypotheses above is needed). The KYP lemma itself is cited, not checked: the certificate proves the frequency-
 // domain minimum; that it is the level of Definition 2 for G's minimal realisation is that theorem.
 //
 // Implements: paper 000 Definition 2, Lemma 1.
