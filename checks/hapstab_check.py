@@ -2160,10 +2160,46 @@ def scene_rf(text, T, var, where):
         raise Malformed("model.scene: %s: division by zero" % where)
 
 
+def plant_loop_read(model):
+    """stability-loop's reading of a one-DOF `stability --plant P --H H [--operator Z]` model as written
+    ({plant, H, operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), which
+    must keep a pole at s = 0 and relative degree >= 2; the wall H(z); n whole samples."""
+    only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
+    for key in ("plant", "H"):
+        if not isinstance(model.get(key), str):
+            raise Malformed("model.%s: missing or not a string" % key)
+    if "operator" in model and not isinstance(model["operator"], str):
+        raise Malformed("model.operator: not a string")
+    T, n, params = period(model), delay_of(model), parameters(model)
+    s = RF([Fraction(0), Fraction(1)])
+    try:
+        P = parse_h(model["plant"], T, params, 's', 'model.plant')
+        if not P.num:
+            raise Malformed("model.plant: zero (the device does not move)")
+        if "operator" in model:
+            P = P / (RF([Fraction(1)]) + s * parse_h(model["operator"], T, params, 's', 'model.operator') * P)
+        H = parse_h(model["H"], T, params, 'z', 'model.H')
+    except ZeroDivisionError:
+        raise Malformed("model: division by zero")
+    if P.den[0] != 0:
+        raise Malformed("model.plant: a device (with its operator) without a pole at s = 0 (beyond this checker)")
+    G = s * P
+    if len(G.num) >= len(G.den):
+        raise Malformed("model.plant: a device of relative degree below 2 (beyond this checker)")
+    if len(H.num) > len(H.den):
+        raise Malformed("model.H: an improper H(z) (beyond this checker)")
+    devices = [{"first": 0, "dofs": 1, "block": ("tf", 1, [[G]])}]
+    zero = [Fraction(0)]
+    return T, Fraction(n), devices, zero, list(zero), list(zero), [], ("tf", [[H]]), None
+
+
 def scene_loop_read(model):
     """stability-loop's reading of model.scene: (T, delay, mass, damping, stiffness, operators, E) with
     per DOF the device's m, b plus its m, b, k operators; the tf and ss operators [(ports, Z)], Z
-    ("tf", proper RFs in s) or ("ss", (A, B, C, D) as written); E N x N in z (discretised, times gain)."""
+    ("tf", proper RFs in s) or ("ss", (A, B, C, D) as written); E N x N in z (discretised, times gain).
+    A model without a scene is the one-DOF --plant/--H loop (plant_loop_read)."""
+    if "scene" not in model and "plant" in model:
+        return plant_loop_read(model)
     only(model, ("scene", "set"), "model")
     root, T, expand, field = scene_read(model, False, coupling=True)
     devs = root.get("device")
@@ -2641,10 +2677,10 @@ def quotient(M, L, at):
 
 
 def check_stability_loop(c):
-    """stability-loop: the Stein inertia theorem on the closed loop M built here from the scene
-    (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (Q_mid minus
-    the radii's largest row sum times I, > 0 by exact elimination), and P > 0 (stable) or w^T P w < 0
-    (NOT stable)."""
+    """stability-loop: the Stein inertia theorem on the closed loop M built here from the model
+    (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (D Q_mid D minus
+    the scaled radii's largest row sum times I, > 0 by exact elimination; D = diag(2^-k_i), 2^k_i ~
+    sqrt(Q_mid_ii)), and P > 0 (stable) or w^T P w < 0 (NOT stable)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "stable", "conserved"), "claim")
     only(evidence, ("P", "w"), "evidence")
@@ -2688,10 +2724,15 @@ def check_stability_loop(c):
         PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
         Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
         mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
-        r = max(sum((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2) for j in range(n)) for i in range(n))
-        S = [[(mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
+        # D = diag(2^-k_i), 2^k_i ~ sqrt(mid_ii): D Q D has Q's inertia (a congruence), its radii weighed where they act
+        d = [Fraction(1, 2 ** k) if k >= 0 else Fraction(2 ** -k)
+             for k in (((x.numerator.bit_length() - x.denominator.bit_length()) // 2 if x > 0 else 0)
+                       for x in (mid[i][i] for i in range(n)))]
+        r = max(sum(d[i] * d[j] * ((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2)) for j in range(n))
+                for i in range(n))
+        S = [[d[i] * d[j] * (mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
         if semidefinite(S, True):
-            return True, "%s (closed loop of %d states built from the scene%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
+            return True, "%s (closed loop of %d states built from the model%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
                 "stable" if stable else "NOT stable", n + k, ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
                 bits, sign)
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")

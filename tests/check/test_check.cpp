@@ -1016,6 +1016,46 @@ TEST(StabilityLoopCheck, ConservedQuantitiesByHand) {
   EXPECT_FALSE(check_certificate(cert).verified);
 }
 
+// The one-DOF model of `stability --plant/--H` read as a closed-loop matrix (devices beyond the
+// stability kind): P = 1/(2 s^2), H = 100, T = 1/10 is the hand loop above, its device realised as
+// G = s P = 1/(2 s) (the state 2 v): M = [[1, -10], [1/20, 3/4]]; an operator damper 3 makes P_eff =
+// 1/(2 s^2 + 3 s). A device without a pole at s = 0 (its position a mode no force moves) and one of
+// relative degree 1 are beyond the reading; so is an improper H.
+TEST(StabilityLoopCheck, PlantModelByHand) {
+  nlohmann::json model{{"plant", "1/(2*s^2)"}, {"H", "100"}, {"set", nlohmann::json::object()}, {"T", "1/10"}, {"delay", 0}};
+  const auto M = scene_loop_matrix(model, 128);
+  ASSERT_EQ(M.M.size(), 2u);
+  EXPECT_EQ(M.conserved, 0u);
+  const rational want[2][2] = {{rational(1), rational(-10)}, {rational(1, 20), rational(3, 4)}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_LE(M.M[i][j].first, want[i][j]);
+      EXPECT_GE(M.M[i][j].second, want[i][j]);
+    }
+  auto damped = model;
+  damped["operator"] = "3";
+  const auto D = scene_loop_matrix(damped, 128);
+  const double e = std::exp(-0.15);  // G = 1/(2 s + 3): Phi_00 = e^{-3T/2}
+  EXPECT_NEAR(D.M[0][0].first.convert_to<double>(), e, 1e-12);
+  for (const auto& [plant, why] : std::vector<std::pair<std::string, std::string>>{
+           {"1/((s + 1)*(s + 2))", "without a pole at s = 0"}, {"1/s", "relative degree below 2"}}) {
+    auto m = model;
+    m["plant"] = plant;
+    try {
+      scene_loop_matrix(m, 128);
+      ADD_FAILURE() << "accepted: " << plant;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find(why), std::string::npos) << err.what();
+    }
+  }
+  auto improper = model;
+  improper["H"] = "z";
+  EXPECT_THROW(scene_loop_matrix(improper, 128), InputError);
+  auto extra = model;
+  extra["scene"] = "[scene]\n";  // a scene beside the plant: the scene's fields only
+  EXPECT_THROW(scene_loop_matrix(extra, 128), InputError);
+}
+
 // Res(f, g) = lc(f)^deg g prod_{f(a) = 0} g(a): Res(z - 2, z - 5) = -3; Res_{d,d}(c, c*) with
 // c* = z^d c(1/z): c = z - 1/2, c* = 1 - z/2, Res = c*(1/2) = 3/4; c = z^2 (c* = 1, formal degree 2):
 // lc^2 c*(0)^2 = 1; c = z - 1 (a root on the circle): 0.

@@ -259,6 +259,26 @@ class StabilityLoop(unittest.TestCase):
             self.assertEqual(code, 2, why)
             self.assertIn(field, why)
 
+    def test_plant_model_by_hand(self):
+        # test_check.cpp's StabilityLoopCheck.PlantModelByHand: P = 1/(2 s^2), H = 100 at T = 1/10 as
+        # the closed-loop matrix of G = s P = 1/(2 s): [[1, -10], [1/20, 3/4]]
+        model = {"plant": "1/(2*s^2)", "H": "100", "set": {}, "T": "1/10", "delay": 0}
+        M = hc.loop_matrix(hc.scene_loop_read(model), 128)
+        want = [[Fraction(1), Fraction(-10)], [Fraction(1, 20), Fraction(3, 4)]]
+        for i in range(2):
+            for j in range(2):
+                self.assertTrue(M[i][j].lo <= want[i][j] <= M[i][j].hi)
+        for plant, why in (("1/((s + 1)*(s + 2))", "without a pole at s = 0"), ("1/s", "relative degree below 2")):
+            with self.assertRaises(hc.Malformed) as e:
+                hc.scene_loop_read(dict(model, plant=plant))
+            self.assertIn(why, str(e.exception))
+        c = loop_cert(LOOP_SCENE, False, self.P, ["1", "0"])
+        c["model"] = dict(model, plant="1/(2*s^2)")
+        # the hand loop in the basis (2 v, x): P' = S P S, S = diag(1/2, 1), proves it NOT stable the same way
+        c["evidence"]["P"] = [["-1461/3200", "29/80"], ["29/80", "-229/2"]]
+        code, why = hc.check(c)
+        self.assertEqual(code, 0, why)
+
     def test_conserved_quantities_by_hand(self):
         # test_check.cpp's StabilityLoopCheck.ConservedQuantitiesByHand: an operator spring k = 10 as
         # tf "10/s" or ss (zeta' = v: zeta - x constant), the device as ss with its own position state:

@@ -482,15 +482,26 @@ nlohmann::json r_certificate(const rational& T, const rational& omega, const std
   return j;
 }
 
-nlohmann::json stability_evidence(const stability::Loop& loop) {
+namespace {
+
+int poles_off_zero(const stability::Loop& loop) {
   const QPoly den = stability::effective_device(loop).den();
   int k = 0;
   while (k < den.degree() && den.coeff(k) == 0) ++k;
-  const int off_zero = den.degree() - k;  // device poles off s = 0
+  return den.degree() - k;
+}
+
+}  // namespace
+
+bool beyond_stability_kind(const stability::Loop& loop) { return poles_off_zero(loop) > 2; }
+
+nlohmann::json stability_evidence(const stability::Loop& loop) {
+  const QPoly den = stability::effective_device(loop).den();
+  const int off_zero = poles_off_zero(loop);  // device poles off s = 0
   if (off_zero > 2)
-    throw InputError("--certificate: a certificate of stability with more than two device poles off s = 0 is not "
-                     "implemented yet; devices with every pole at s = 0 (a mass 1/(m*s^2)), one real pole off it (a "
-                     "mass-damper 1/(m*s^2 + b*s)) or two (a spring 1/(m*s^2 + b*s + k)) have one");
+    throw InputError("--certificate: the stability kind takes devices with every pole at s = 0 (a mass 1/(m*s^2)), one "
+                     "real pole off it (a mass-damper 1/(m*s^2 + b*s)) or two (a spring 1/(m*s^2 + b*s + k)); more "
+                     "have the kind stability-loop (the closed-loop matrix)");
   // the degree of c = z^n L D_d + A N_d, as the checkers count it (deg L + n + the device's order)
   const long degree = loop.delay + loop.H.den().degree() + den.degree();
   if (degree > (off_zero ? 150 : 2000)) {
@@ -532,14 +543,15 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
   return j;
 }
 
-nlohmann::json stability_loop_certificate(const std::string& scene_path, const std::vector<std::string>& sets, bool stable) {
+nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable) {
   nlohmann::json j = certificate_header("stability-loop");
-  j["model"] = scene_model_json(scene_path, sets);
+  j["model"] = loop_model_json(text, T);
   check::SceneLoopMatrix sm;
   try {
     sm = check::scene_loop_matrix(j["model"], 128);  // on the quotient by the conserved quantities
   } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
+    throw InputError(std::string("--certificate: the checker does not take this ") + (text.scene.empty() ? "loop" : "scene") +
+                     " (" + e.what() + "): no certificate");
   }
   const auto& M = sm.M;
   BallMatrix Mb(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
@@ -551,9 +563,41 @@ nlohmann::json stability_loop_certificate(const std::string& scene_path, const s
       Mb.mid(Eigen::Index(i), Eigen::Index(k)) = mid;
       Mb.rad(Eigen::Index(i), Eigen::Index(k)) = std::nextafter(off.convert_to<double>(), 1e300);
     }
-  const SchurDecision d = schur_decide(Mb);
+  // balanced first (a fast lag beside a slow mass spreads M's entries over many decades): the Stein P
+  // of D^-1 M D, D = diag(2^e) (Parlett-Reinsch), gives P = D^-1 P_b D^-1 and w = D w_b for M itself
+  // (a congruence), exactly, as the scaling is by powers of two
+  const Eigen::Index n = Mb.mid.rows();
+  std::vector<int> e(static_cast<size_t>(n), 0);
+  for (int sweep = 0; sweep < 30; ++sweep) {
+    bool changed = false;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double row = 0, col = 0;
+      for (Eigen::Index k = 0; k < n; ++k)
+        if (k != i) {
+          row += std::ldexp(std::abs(Mb.mid(i, k)), e[size_t(k)] - e[size_t(i)]);
+          col += std::ldexp(std::abs(Mb.mid(k, i)), e[size_t(i)] - e[size_t(k)]);
+        }
+      if (row == 0 || col == 0) continue;
+      int f = 0;  // col 4^f ~ row: column i scaled by 2^f, row i by 2^-f
+      while (std::ldexp(col, 2 * f) < row / 2 && f < 60) ++f;
+      while (std::ldexp(col, 2 * f) > 2 * row && f > -60) --f;
+      if (f != 0) e[size_t(i)] += f, changed = true;
+    }
+    if (!changed) break;
+  }
+  BallMatrix Bal = Mb;
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index k = 0; k < n; ++k) {
+      Bal.mid(i, k) = std::ldexp(Mb.mid(i, k), e[size_t(k)] - e[size_t(i)]);
+      Bal.rad(i, k) = std::ldexp(Mb.rad(i, k), e[size_t(k)] - e[size_t(i)]);
+    }
+  SchurDecision d = schur_decide(Bal);
   if (!d.stable)
     throw InputError("--certificate: no Stein certificate for the checker's closed-loop matrix (" + d.why + "): no certificate");
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index k = 0; k < n; ++k) d.P(i, k) = std::ldexp(d.P(i, k), -e[size_t(i)] - e[size_t(k)]);
+    if (d.w.size() == n) d.w(i) = std::ldexp(d.w(i), e[size_t(i)]);
+  }
   if (*d.stable != stable)
     throw NumericalError("--certificate: the checker's closed-loop matrix and the loop as written got different verdicts (a "
                          "defect): no certificate");

@@ -83,12 +83,17 @@ nlohmann::json stability_evidence(const stability::Loop& loop);
 nlohmann::json stability_certificate(const StabilityText& text, const stability::Loop& loop,
                                      const stability::StabilityResult& r, const nlohmann::json& evidence);
 
-/// The certificate of `stability --scene S` beyond one DOF (kind stability-loop,
-/// check/stability_loop_check.hpp): the scene's text and --set values as the model, the claim
-/// stable / NOT stable (`stable`, the verdict of the loop as written), and the Stein P (and w) that
-/// schur_decide finds for the checker's own closed-loop matrix. Checked before it is returned;
-/// InputError (exit 2) when the checker does not take the scene or no P proves the verdict.
-nlohmann::json stability_loop_certificate(const std::string& scene_path, const std::vector<std::string>& sets, bool stable);
+/// Is `loop` beyond the `stability` kind (three device poles off s = 0 or more)? Its certificate is
+/// then of kind stability-loop (stability_loop_certificate), from the model as written.
+bool beyond_stability_kind(const stability::Loop& loop);
+
+/// The certificate of kind stability-loop (check/stability_loop_check.hpp) of `stability --scene S`
+/// beyond one DOF (the scene's text and --set values as the model), or of a one-DOF `--plant/--H`
+/// loop beyond the stability kind (its model as written, T the sample period): the claim stable / NOT
+/// stable (`stable`, the verdict of the loop as written), and the Stein P (and w) that schur_decide
+/// finds for the checker's own closed-loop matrix. Checked before it is returned; InputError (exit 2)
+/// when the checker does not take the model or no P proves the verdict.
+nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable);
 
 /// The certificate of `stability --plant --H --max K` (check/stability_max_check.hpp): the model as
 /// written with K free, the claim as printed (the enclosure at digits + 3 rounded outward, the exact

@@ -99,12 +99,16 @@ stability::Loop make_loop(const StabilityOpts& o) {
 using cli::enclosure_json;  // every printed enclosure rounds outward (cli/command.hpp)
 
 int run_decide(const StabilityOpts& o, const stability::Loop& loop) {
-  // the certificate's evidence first: what has none is refused (exit 2) before any verdict is printed
-  const nlohmann::json evidence = o.certificate.empty() ? nlohmann::json() : cli::stability_evidence(loop);
+  // the certificate's evidence first: what has none is refused (exit 2) before any verdict is printed;
+  // a device beyond the stability kind (three poles off s = 0 or more) gets the closed-loop matrix's
+  const bool as_matrix = !o.certificate.empty() && cli::beyond_stability_kind(loop);
+  const nlohmann::json evidence = o.certificate.empty() || as_matrix ? nlohmann::json() : cli::stability_evidence(loop);
   const stability::StabilityResult r = stability::decide(loop);
   const bool undecided = !r.verdict.decided();
+  const cli::StabilityText text{o.plant, o.H, o.op, o.delay, o.sets, o.scene};
   if (!o.certificate.empty() && !undecided)
-    cli::write_certificate(o.certificate, cli::stability_certificate({o.plant, o.H, o.op, o.delay, o.sets, o.scene}, loop, r, evidence));
+    cli::write_certificate(o.certificate, as_matrix ? cli::stability_loop_certificate(text, loop.T, r.verdict.holds())
+                                                    : cli::stability_certificate(text, loop, r, evidence));
   nlohmann::json j;
   j["stable"] = undecided ? nlohmann::json(nullptr) : nlohmann::json(r.verdict.holds());
   j["status"] = undecided ? "undecided" : to_string(r.verdict.status);
@@ -245,7 +249,7 @@ int run_scene(const StabilityOpts& o) {
     if (!certificate.is_null() && *v.stable != certificate["claim"]["stable"].get<bool>())
       throw NumericalError("--certificate: the loop as written and its one-DOF loop got different verdicts (a defect): no certificate");
     if (certificate.is_null()) try {
-        certificate = cli::stability_loop_certificate(o.scene, o.sets, *v.stable);
+        certificate = cli::stability_loop_certificate({"", "", "", 0, o.sets, o.scene}, sc.T, *v.stable);
       } catch (const InputError& e) {
         if (one_dof_refusal.empty()) throw;
         throw InputError(one_dof_refusal + "; as a closed-loop matrix (kind stability-loop): " + e.what());
@@ -523,10 +527,11 @@ const cli::Register reg(
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
                       "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
                       "a mass-damper, a spring; or a one-DOF --scene, its text the model), stability-loop for another --scene "
-                      "(the closed-loop matrix the checkers build from it), or stability-max with --max (every device "
-                      "pole at s = 0); refused by name: what the checkers do not read (count, diagonal, contact, ...), "
-                      "--scene --max beyond one DOF, three device poles off s = 0 or more (with --max: any), degree above "
-                      "the checkers' limit; an undecided answer writes none; docs/certificates.md)");
+                      "or a --plant with three poles off s = 0 or more and one at it (the closed-loop matrix the checkers "
+                      "build from the model), or stability-max with --max (every device pole at s = 0); refused by name: "
+                      "what the checkers do not read (count, diagonal, contact, ...), --scene --max beyond one DOF, "
+                      "--max with a device pole off s = 0, degree above the checkers' limit; an undecided answer writes "
+                      "none; docs/certificates.md)");
        return [o]() -> int {
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/loop_model.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/scalar.hpp"
@@ -519,7 +520,44 @@ void read_device_block(const toml::table& d, const std::string& key, Parameters&
 
 }  // namespace
 
+// The one-DOF loop of a `stability` model as written, {plant, H[, operator], set, T, delay} (the
+// stability kind's fields): the device G = s P_eff, P_eff = P/(1 + s Z_op P) (force -> velocity), one
+// block realised by the checker, its position x' = v; the wall H(z); n whole samples.
+SceneLoop read_plant_loop(const nlohmann::json& model) {
+  only_fields(model, {"plant", "H", "operator", "set", "T", "delay"}, "model");
+  const PeriodDelay pd = read_period_delay(model);
+  const std::map<std::string, rational> params = model_parameters(model);
+  using RF = RationalFunction<rational>;
+  const auto outside = [](const std::string& where, const std::string& what) {
+    return InputError(where + ": " + what + " (beyond this checker: docs/certificates.md, `stability-loop`)");
+  };
+  const RF s(Polynomial<rational>{rational(0), rational(1)});
+  RF P = parse_model_field(model, "plant", 's', pd.T, params);
+  if (P.is_zero()) throw InputError("model.plant: zero (the device does not move)");
+  if (model.contains("operator")) {
+    const RF one = RF(rational(1)) + s * parse_model_field(model, "operator", 's', pd.T, params) * P;
+    if (one.is_zero()) throw InputError("model.operator: 1 + s Z_op P is zero");
+    P = P / one;
+  }
+  if (P.den().coeff(0) != 0)
+    throw outside("model.plant", "a device (with its operator) without a pole at s = 0: its position would be a mode no force moves");
+  const RF G = s * P;
+  if (G.num().degree() >= G.den().degree()) throw outside("model.plant", "a device of relative degree below 2 (s P is not strictly proper)");
+  SceneLoop out;
+  out.T = pd.T;
+  out.delay = pd.n;
+  SceneLoop::Device dev;
+  dev.block = true;
+  dev.tf = {{G}};
+  out.devices = {dev};
+  out.mass = out.damping = out.stiffness = {rational(0)};
+  out.E.tf = {{parse_model_field(model, "H", 'z', pd.T, params)}};
+  if (!proper(out.E.tf[0][0])) throw outside("model.H", "an improper H(z) (z^-n H causal only by the delay)");
+  return out;
+}
+
 SceneLoop read_scene_loop(const nlohmann::json& model) {
+  if (!model.contains("scene") && model.contains("plant")) return read_plant_loop(model);
   only_fields(model, {"scene", "set"}, "model");
   if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string (the scene's TOML text)");
   const toml::table root = parse_scene(model.at("scene").get<std::string>(), true);

@@ -84,8 +84,11 @@ struct SceneLoop {
   size_t dofs() const { return mass.size(); }
 };
 
-/// model.scene read as above (model.set overrides parameters). InputError naming what is malformed
-/// or beyond this reading.
+/// model.scene read as above (model.set overrides parameters); or, for a model without a scene, the
+/// one-DOF loop of `stability --plant P --H H [--operator Z] --delay n` as written ({plant, H,
+/// operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), which must keep a
+/// pole at s = 0 and a relative degree >= 2 (else beyond). InputError naming what is malformed or
+/// beyond this reading.
 SceneLoop read_scene_loop(const nlohmann::json& model);
 
 /// `model` itself when it has no "scene" field; else the loop model {plant, H[, operator], set: {},

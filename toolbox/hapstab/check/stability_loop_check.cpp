@@ -400,7 +400,7 @@ bool positive_definite_within(const Mat& S, const rational& r) {
   return true;
 }
 
-// Q = P - M^T P M > 0 for every M in the balls: Q_mid within r (the header).
+// Q = P - M^T P M > 0 for every M in the balls: D Q_mid D within r (the header; D by powers of two).
 bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
   const size_t n = Pm.size();
   const BallRows Pb = balls(Pm);
@@ -415,14 +415,23 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
       mid[i][j] = (e.lo + e.hi) / 2;
       rad[i][j] = (e.hi - e.lo) / 2;
     }
+  // D = diag(2^-k_i), 2^k_i ~ sqrt(mid_ii): D Q D has Q's inertia and a diagonal near 1, so the radii
+  // of a badly scaled Q (a fast lag beside a slow mass) are weighed where they act, not by the largest row
+  std::vector<rational> d(n, rational(1));
+  for (size_t i = 0; i < n; ++i)
+    if (mid[i][i] > 0) {  // k = floor((bits of the numerator - bits of the denominator) / 2)
+      const long bits = static_cast<long>(bmp::msb(integer(numerator(mid[i][i])))) - static_cast<long>(bmp::msb(integer(denominator(mid[i][i]))));
+      const long k = bits >= 0 ? bits / 2 : -((1 - bits) / 2);
+      d[i] = k >= 0 ? rational(1) / rational(integer(1) << k) : rational(integer(1) << (-k));
+    }
   rational r = 0;
   Mat S = rational_matrix::zeros(n, n);
   for (size_t i = 0; i < n; ++i) {
     rational row = 0;
     for (size_t j = 0; j < n; ++j) {
-      S[i][j] = (mid[i][j] + mid[j][i]) / 2;
-      const rational asym = mid[i][j] - S[i][j];
-      row += rad[i][j] + (asym < 0 ? rational(-asym) : asym);
+      const rational sym = (mid[i][j] + mid[j][i]) / 2, asym = mid[i][j] - sym;
+      S[i][j] = d[i] * sym * d[j];
+      row += d[i] * (rad[i][j] + (asym < 0 ? rational(-asym) : asym)) * d[j];
     }
     if (row > r) r = row;
   }
@@ -491,7 +500,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
     if (stein_holds(Pm, M, why))
       return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(lm.order) + " states, " +
                         std::to_string(L.dofs()) + " DOF, delay " + rational(L.delay + L.fraction).str() +
-                        " samples) built from the scene, e^{AT} in balls (" + std::to_string(bits) + " bits)" +
+                        " samples) built from the model, e^{AT} in balls (" + std::to_string(bits) + " bits)" +
                         (lm.conserved ? ", on the quotient by its conserved quantities (k = " + std::to_string(lm.conserved) +
                                             ": l^T [A B] = 0 exactly, l^T M = l^T)"
                                       : std::string()) +

@@ -22,9 +22,10 @@
 // M is Schur stable iff P > 0 (if M were stable, P = sum (M^T)^k Q M^k > 0). Evidence: P (exact,
 // symmetric) and, for NOT stable, w with w^T P w < 0. Verified: P symmetric; P > 0 or w^T P w < 0
 // exactly (rationals; P > 0 beyond order 24 as Q below, r = 0); Q > 0 for every M in the enclosure:
-// Q's entries in balls (128, 256, 512 bits), Q_mid := their midpoints symmetrised, r := the largest
-// row sum of the radii (>= ||Q - Q_mid||_2 for the symmetric difference), and every symmetric matrix
-// within r of Q_mid positive definite: X ~ L^-T from a double Cholesky of Q_mid (upper triangular,
+// Q's entries in balls (128, 256, 512 bits), Q_mid := their midpoints symmetrised, scaled by D =
+// diag(2^-k_i), 2^k_i ~ sqrt((Q_mid)_ii) (D Q D has Q's inertia: a congruence, exact), r := the
+// largest row sum of D's scaled radii (>= ||D (Q - Q_mid) D||_2), and every symmetric matrix within r
+// of D Q_mid D positive definite: X ~ L^-T from a double Cholesky of Q_mid (upper triangular,
 // non-zero diagonal: non-singular; its doubles taken as exact), G = X^T Q_mid X in balls, and
 // min_i (G_ii - sum_{j != i} |G_ij|) > ||X||_F^2 r (Gershgorin and Weyl). (The exact elimination of
 // Q_mid - r I took 34 s at order 115; this takes 0.2 s.) A P that does not pass refutes the claim
