@@ -617,6 +617,24 @@ def claim_ends(cl):
     return (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
 
 
+def numden_mutants(cert, rng):
+    """H written as its coefficients (model.num, model.den: `--num/--den`, a .mat's num and den) in
+    place of the expression and its parameters: the same H, so the certificate is accepted as before;
+    H beside them is malformed; one coefficient moved by a thousandth: the two checkers agree."""
+    m = cert["model"]
+    T = Fraction(m["T"])
+    G = hapstab_check.parse_h(m["H"], T, {k: Fraction(v) for k, v in m.get("set", {}).items()})
+    nm = {k: v for k, v in m.items() if k not in ("H", "set")}
+    nm["num"], nm["den"] = [frac(x) for x in reversed(G.num or [Fraction(0)])], [frac(x) for x in reversed(G.den)]
+    out = [("model as num/den", with_field(cert, ["model"], nm), "accept"),
+           ("num/den beside H", with_field(cert, ["model"], dict(nm, H=m["H"])), "malformed")]
+    moved = copy.deepcopy(nm)
+    i = rng.randrange(len(moved["num"]))
+    moved["num"][i] = frac(Fraction(moved["num"][i]) * Fraction(1001, 1000) + Fraction(1, 10 ** 6))
+    out.append(("num/den: a coefficient moved", with_field(cert, ["model"], moved), "agree"))
+    return out
+
+
 def upper_bound_mutants(cert, rng):
     """passivity-level with status upper_bound (an OSP value <= 0: the level <= hi only): hi lowered
     below the frequency minimum (refute), raised (accept), its printed decimal or the witness moved, a
@@ -1926,6 +1944,7 @@ def main():
     mutants = []
     problems = []  # producer runs that break what the mutants rely on
     scrng = random.Random(a.seed * 1000 + 51)  # the scene mutants' own stream
+    nrng = random.Random(a.seed * 1000 + 52)  # num/den's
     stability_seen = 0
     for kind, cert in certs:
         stability_seen += kind == "stability"
@@ -1954,6 +1973,8 @@ def main():
             ms = mutate_multidof.mutants(cert, lrng)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
+        if kind in ("bound", "bound-inf", "wedge", "limit-cycle", "passivity-level") and "H" in cert["model"]:
+            ms = list(ms) + numden_mutants(cert, nrng)
         for name, c, expect in ms:
             mutants.append((kind, name, c, expect))
     # the C++ checker: one process over all mutants
