@@ -746,7 +746,7 @@ def check_bound(c):
     only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     if "infinite" in claim:
-        only(evidence, ("pole_c", "side"), "evidence")
+        only(evidence, ("pole_c", "side", "end_lo", "end_hi"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
     H, T, eta, P, q = bound_model(model)
@@ -777,6 +777,10 @@ def bound_infinite(H, T, P, q, status, evidence):
     sign Er(c_p) * s^m * sign R(c_p), and it grows without bound there."""
     if status != "exact":
         raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
+    if "end_lo" in evidence or "end_hi" in evidence:
+        if "pole_c" in evidence or "side" in evidence:
+            raise Malformed("evidence: end_lo/end_hi beside pole_c/side (one pole)")
+        return bound_infinite_at_end(H, T, P, q, exact(evidence, "end_lo", "evidence"), exact(evidence, "end_hi", "evidence"))
     cp = exact(evidence, "pole_c", "evidence")
     side = evidence.get("side")
     if side not in (1, -1) or isinstance(side, bool):
@@ -801,6 +805,44 @@ def bound_infinite(H, T, P, q, status, evidence):
         return False, "b* = +inf not shown: the objective tends to -inf as c -> %s from %s (a pole of order %d)" % (
             short(cp), "above" if side > 0 else "below", m)
     return True, "b* = +inf: the objective tends to +inf as c -> %s from %s" % (short(cp), "above" if side > 0 else "below")
+
+
+def cheb_u(k):
+    """U_k, the Chebyshev polynomial of the second kind: U_k(cos phi) = sin((k + 1) phi)/sin phi."""
+    prev, cur = [Fraction(1)], [Fraction(0), Fraction(2)]
+    if k == 0:
+        return prev
+    for _ in range(k - 1):
+        prev, cur = cur, psub(pmul([Fraction(0), Fraction(2)], cur), prev)
+    return cur
+
+
+def bound_infinite_at_end(H, T, P, q, s, b):
+    """b* = +inf at the band's irrational end c_e = cos(pi/q) (z = -1 with a fractional delay), on the
+    interval (s, b]: U_{q-1}, whose roots are cos(k pi/q), has one root in (s, 1) and one in (s, b),
+    so c_e (its largest) is its only root in (s, 1); gcd(R, U_{q-1}) (R the reduced denominator) has a
+    root in (s, 1), so R(c_e) = 0; R has no other root in (s, b], Er none; so Er/R has the sign of
+    Er(b) R(b) on (c_e, b] and grows without bound as c -> c_e from above."""
+    if q < 2:
+        return False, "b* = +inf not shown: the band's end is c = -1 (an integer delay): give pole_c"
+    if not (-1 <= s < b <= 1):
+        return False, "b* = +inf not shown: not -1 <= end_lo < end_hi <= 1"
+    U = cheb_u(q - 1)
+    if peval(U, s) == 0 or peval(U, b) == 0 or roots_in(U, s, Fraction(1)) != 1 or roots_in(U, s, b) != 1:
+        return False, "b* = +inf not shown: (end_lo, end_hi] does not isolate cos(pi/%d)" % q
+    E, F = objective_c(H, T, P, q)
+    g = pgcd(E, F)
+    Er, R = (pdivmod(E, g)[0], pdivmod(F, g)[0]) if g else (E, F)
+    G = pgcd(R, U)
+    if len(G) < 2 or roots_in(G, s, Fraction(1)) < 1:
+        return False, "b* = +inf not shown: cos(pi/%d) is not a pole of the objective" % q
+    if peval(R, s) == 0 or peval(R, b) == 0 or roots_in(R, s, b) != 1:
+        return False, "b* = +inf not shown: the reduced denominator has another root in (end_lo, end_hi], or one at its ends"
+    if peval(Er, s) == 0 or peval(Er, b) == 0 or roots_in(Er, s, b) != 0:
+        return False, "b* = +inf not shown: the reduced numerator has a root in [end_lo, end_hi]"
+    if (peval(Er, b) > 0) != (peval(R, b) > 0):
+        return False, "b* = +inf not shown: the objective tends to -inf as c -> cos(pi/%d) from above" % q
+    return True, "b* = +inf: the objective tends to +inf as c -> cos(pi/%d) from above (wT -> pi)" % q
 
 
 def bound_model(model):

@@ -53,7 +53,8 @@ HAPSTAB_PROOF(fractional_pole_side, "001", "t_d with a pole at z = -1: +inf only
         if (plus) {
           infinite.count(true);
           ok = ok && b.infinite && b.status == Status::exact;
-          if (den(tau) <= 3) {  // the pole z = -1 at a rational band end c = cos(pi/q): b* = +inf's certificate
+          {  // b* = +inf's certificate: the pole z = -1 at the band's end c = cos(pi/q), rational for q <= 3,
+             // isolated by an interval for q >= 4 (check/bound_objective.hpp)
             proofs::BoundInstance inst{"K + 2*B*(z-1)/(T*(z+1))", T, {{"K", K}, {"B", B}}};
             inst.frac_delay = tau * T;
             proofs::CertificateRequest r;
@@ -86,9 +87,6 @@ HAPSTAB_PROOF(fractional_pole_side, "001", "t_d with a pole at z = -1: +inf only
         if (!this_ok) worst << " K = " << K << ", B = " << B << ", tau = " << tau << ": grid " << grid << ", at " << at << ", [" << lo << ", " << hi << "];";
         ok = ok && this_ok;
       }
-  check.no_certificate("001.fracdelay.pole_side",
-                       "the cases b* = +inf with tau = 1/100, 99/100, 9/4 (q >= 4: the pole z = -1 at the irrational band end "
-                       "c = cos(pi/q)) have none: no certificate kind yet (issue 47)");
   check.claim("001.fracdelay.pole_side", "(45), (54), Example 3",
               "Tustin wall with t_d = tau T: b* = +inf exactly when sin(pi tau) > 0; for sin(pi tau) < 0 b* is a finite interior "
               "maximum, its enclosure agreeing with the objective evaluated on the unit circle -- at T = 1/1000, K in {20, 1000}, "

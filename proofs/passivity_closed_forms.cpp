@@ -427,7 +427,7 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
         Bound b = bound_certified(p, 16);
         frac.count(true);
         okf = okf && b.infinite && b.status == Status::exact;
-        if (td == T / 2) {  // q = 2: the pole z = -1 at the rational band end c = cos(wT/2) = 0
+        {  // the pole z = -1 at the band's end c = cos(pi/q): 0 for q = 2, cos(pi/100) isolated by an interval
           proofs::BoundInstance inst = wall_instance(tustin_text, K, B, T);
           inst.frac_delay = td;
           proofs::CertificateRequest r;
@@ -440,8 +440,6 @@ void fir_iir_tustin_forms(proofs::Checker& check, const rational& T, std::mt1993
   check.claim("001.tustin.generic", "Example 3, 4", "Tustin wall: KT/2 - B; n = 1: KT/2 + B + |KT - 2B| -- at T = 1/1000, K in {0, 1000, 10000}, B in "
               "{1/2, 5, 50}", Status::certified, ok,
               "K in {0, 1000, 10000}, B in {1/2, 5, 50}", {tustin});
-  check.no_certificate("001.tustin.fracdelay", "t_d = T/100 and 99T/100 have none: the pole z = -1 is at the irrational end "
-                       "c = cos(pi/100) of the band, where b* = +inf has no certificate yet (issue 47)");
   check.claim("001.tustin.fracdelay", "Example 3", "Tustin wall with 0 < t_d < T: Re -> +inf as wT -> pi (not passive) -- at T = 1/1000, t_d/T in {1/100, "
               "1/2, 99/100}, the nine (K, B) above",
               Status::exact, okf, "exact leading-term test at wT = pi for t_d/T in {1/100, 1/2, 99/100}, 9 (K, B)", {frac});

@@ -322,7 +322,7 @@ def rand_inf_model(rng):
     m = {"H": H, "set": sets, "T": rng.choice(["1/1000", "1/500", "1/100"]), "delay": rng.choice([0, 0, 1, 2, 3]),
          "eta": rng.choice(["0", "0", "1/10"])}
     if "(z+1)" in H:
-        q = rng.choice([2, 3])
+        q = rng.choice([2, 3, 2, 3, 4, 5, 7])  # q >= 4: the pole at the band's irrational end cos(pi/q)
         m["delay"] = rng.choice([0, 0, 2])
         m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, q)]), q) * Fraction(m["T"]))
     return m
@@ -334,6 +334,24 @@ def inf_mutants(cert, rng, hapstab, cache):
     band (refute)."""
     out = [("unmutated", cert, "accept")]
     ev = cert["evidence"]
+    if "end_lo" in ev:  # the pole at the band's irrational end, isolated in (end_lo, end_hi]
+        lo, hi = Fraction(ev["end_lo"]), Fraction(ev["end_hi"])
+        ce = (lo + hi) / 2  # within the interval: a point on each side of cos(pi/q) is not known here
+        out += [("end_lo -> -1 (other roots of U_{q-1} inside)", with_field(cert, ["evidence", "end_lo"], "-1"), "refute"),
+                ("end_hi -> end_lo + (end_hi - end_lo)/10^6", with_field(cert, ["evidence", "end_hi"], frac(lo + (hi - lo) / 10 ** 6)), "agree"),
+                ("end_lo above end_hi", with_field(cert, ["evidence", "end_lo"], frac(hi + 1 / Fraction(10 ** 6))), "refute"),
+                ("end_lo -> end_hi - (end_hi - end_lo)/10^6", with_field(cert, ["evidence", "end_lo"], frac(hi - (hi - lo) / 10 ** 6)), "agree"),
+                ("end_lo a decimal", with_field(cert, ["evidence", "end_lo"], str(float(ce))), "malformed"),
+                ("pole_c beside end_lo", with_field(cert, ["evidence", "pole_c"], frac(ce)), "malformed"),
+                ("deleted evidence.end_hi", deleted(cert, ["evidence", "end_hi"]), "malformed"),
+                ("claim made finite (b* = 0)", with_field(deleted(cert, ["claim", "infinite"]), ["claim", "value"], "0"), "malformed")]
+        m = cert["model"]
+        T = Fraction(m["T"])
+        for name, nm in (("frac_delay + T (sin(pi tau) flipped: -inf, issue 46 item 1)", dict(m, frac_delay=frac(Fraction(m["frac_delay"]) + T))),
+                         ("delay + 1", dict(m, delay=m["delay"] + 1))):
+            enc = certified_enclosure(hapstab, nm, cache)
+            out.append(("model: " + name, with_field(cert, ["model"], nm), "agree" if enc == "inf" else "same" if enc is None else "refute"))
+        return out
     cp, side = Fraction(ev["pole_c"]), ev["side"]
     out.append(("side flipped (the objective -> -inf there, or outside the band)", with_field(cert, ["evidence", "side"], -side), "refute"))
     for name, c1 in (("pole_c + 1/1000", cp + Fraction(1, 1000)), ("pole_c - 10^-30", cp - Fraction(1, 10 ** 30)),
@@ -1840,11 +1858,13 @@ def print_new_branches(certs):
                   sum(1 for c in lcs if c["model"]["rho"] != "1")))
     infs = [c for k, c in certs if k == "bound-inf"]
     if infs:
-        print("  bound-inf branches: integer delay %d, fractional %d; side +1 %d, -1 %d; pole at c = 1 %d, 0 %d, other %d" % (
-            sum(1 for c in infs if "frac_delay" not in c["model"]), sum(1 for c in infs if "frac_delay" in c["model"]),
-            sum(1 for c in infs if c["evidence"]["side"] == 1), sum(1 for c in infs if c["evidence"]["side"] == -1),
-            sum(1 for c in infs if c["evidence"]["pole_c"] == "1"), sum(1 for c in infs if c["evidence"]["pole_c"] == "0"),
-            sum(1 for c in infs if c["evidence"]["pole_c"] not in ("0", "1"))))
+        at = [c for c in infs if "pole_c" in c["evidence"]]
+        print("  bound-inf branches: integer delay %d, fractional %d; side +1 %d, -1 %d; pole at c = 1 %d, 0 %d, other %d, "
+              "at the irrational band end %d" % (
+                  sum(1 for c in infs if "frac_delay" not in c["model"]), sum(1 for c in infs if "frac_delay" in c["model"]),
+                  sum(1 for c in at if c["evidence"]["side"] == 1), sum(1 for c in at if c["evidence"]["side"] == -1),
+                  sum(1 for c in at if c["evidence"]["pole_c"] == "1"), sum(1 for c in at if c["evidence"]["pole_c"] == "0"),
+                  sum(1 for c in at if c["evidence"]["pole_c"] not in ("0", "1")), len(infs) - len(at)))
     if mutate_multidof.branches(certs):
         print(mutate_multidof.branches(certs))
     wedges = [c for k, c in certs if k == "wedge"]

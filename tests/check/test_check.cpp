@@ -105,6 +105,30 @@ nlohmann::json bound_cert(const std::string& H, const std::string& K, const std:
           {"claim", claim}, {"evidence", {{"witness_c", witness}}}};
 }
 
+// b* = +inf at the band's irrational end cos(pi/4): H = K/(z + 1), T = 1, t_d = T/4. Near wT = pi,
+// (z + 1)(1 - z) = -2j sin(theta) e^{j theta} ~ 2j sin(theta) and z^-tau -> e^{-j pi/4}, so the
+// objective ~ K cos(3 pi/4)/(2 sin theta): +inf for K = -1, -inf for K = 1 (sin theta -> 0+). The
+// evidence isolates cos(pi/4) = 0.7071 in (7/10, 71/100]; (-1/10, 71/100] holds the root 0 of U_3 too,
+// (7/10, 705/1000] misses it.
+TEST(BoundCheck, InfiniteAtTheIrrationalBandEnd) {
+  auto cert = [](const std::string& K, const std::string& lo, const std::string& hi) {
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound"},
+                          {"model", {{"H", "K/(z+1)"}, {"set", {{"K", K}}}, {"T", "1"}, {"delay", 0}, {"frac_delay", "1/4"}, {"eta", "0"}}},
+                          {"claim", {{"status", "exact"}, {"infinite", true}}},
+                          {"evidence", {{"end_lo", lo}, {"end_hi", hi}}}};
+  };
+  const Verdict ok = check_certificate(cert("-1", "7/10", "71/100"));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  const Verdict minus = check_certificate(cert("1", "7/10", "71/100"));
+  EXPECT_FALSE(minus.verified);
+  EXPECT_NE(minus.reason.find("-inf"), std::string::npos) << minus.reason;
+  EXPECT_FALSE(check_certificate(cert("-1", "-1/10", "71/100")).verified);
+  EXPECT_FALSE(check_certificate(cert("-1", "7/10", "705/1000")).verified);
+  auto both = cert("-1", "7/10", "71/100");
+  both["evidence"]["pole_c"] = "1";
+  EXPECT_THROW(check_certificate(both), InputError);
+}
+
 // H = K: f = Re{T K/(1 - z)} = T K/2 for every w, so b* = T K/2 exactly.
 TEST(BoundCheck, ConstantGainExact) {
   const auto ok = check_certificate(bound_cert("K", "4", "1/2", 0, {{"status", "exact"}, {"value", "1"}}, "1/3"));

@@ -806,6 +806,23 @@ class BoundInfinite(unittest.TestCase):
         self.assertIn("-inf", why)
         self.assertEqual(hc.check(inf_cert(tustin, "20", 0, "0", -1, "1/2000", "5"))[0], 1)
 
+    def test_at_the_irrational_band_end(self):
+        # test_check.cpp's BoundCheck.InfiniteAtTheIrrationalBandEnd: K/(z + 1), T = 1, t_d = T/4: near
+        # wT = pi the objective is ~ K cos(3 pi/4)/(2 sin theta), +inf for K = -1, -inf for K = 1
+        def cert(K, lo, hi):
+            return {"certificate": "hapstab", "version": 1, "kind": "bound",
+                    "model": {"H": "K/(z+1)", "set": {"K": K}, "T": "1", "delay": 0, "frac_delay": "1/4", "eta": "0"},
+                    "claim": {"status": "exact", "infinite": True}, "evidence": {"end_lo": lo, "end_hi": hi}}
+        self.assertEqual(hc.check(cert("-1", "7/10", "71/100"))[0], 0)
+        code, why = hc.check(cert("1", "7/10", "71/100"))
+        self.assertEqual(code, 1)
+        self.assertIn("-inf", why)
+        self.assertEqual(hc.check(cert("-1", "-1/10", "71/100"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "7/10", "705/1000"))[0], 1)
+        c = cert("-1", "7/10", "71/100")
+        c["evidence"]["pole_c"] = "1"
+        self.assertEqual(hc.check(c)[0], 2)
+
 
 class BoundNumDen(unittest.TestCase):
     """H given by its coefficients (--num/--den, a .mat's num and den) is the same H (test_check.cpp's

@@ -71,8 +71,9 @@ std::vector<Case> catalogue_first() {
       {"bound", "--delay", {"--H", "1", "--T", "1", "--delay", "2000000"}, "more than the limit of 1000000"},
       {"bound", "--frac-delay", {"--H", "1", "--T", "1", "--frac-delay", "x"}, "--frac-delay"},
       {"bound", "--eta", {"--H", "1", "--T", "1", "--eta", "-1"}, "--eta"},
-      // b* = +inf has a certificate at a rational pole; at the irrational end cos(pi/4) (z = -1, t_d = T/4) none yet
-      {"bound", "--certificate", {"--H", "1 + 2*(z-1)/(z+1)", "--T", "1", "--frac-delay", "1/4", "--certificate", "c.json"}, "no rational pole"},
+      // b* = +inf has a certificate at a rational pole or at the band's end cos(pi/q); at an irrational
+      // pole inside the band (z = j with t_d = T/2: c = cos(pi/4)) none yet
+      {"bound", "--certificate", {"--H", "z/(z^2+1)", "--T", "1", "--frac-delay", "1/2", "--certificate", "c.json"}, "no pole of the objective in the band"},
       {"bound", "--certificate", {"--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"bound", "--digits", {"--H", "1", "--T", "1", "--digits", "5"}, "--digits"},
       {"bound", "--method", {"--H", "1", "--T", "1", "--method", "fastest"}, "--method"},
@@ -97,10 +98,10 @@ std::vector<Case> catalogue_first() {
       {"stability", "--plant", {"--plant", "s", "--H", "1", "--T", "1"}, "not strictly proper"},
       {"stability", "--H", {"--plant", "1/s^2", "--H", "z^3", "--T", "1"}, "not causal"},
       {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
-      {"stability", "--certificate", {"--plant", "1/(s^3 + s^2 + s + 1)", "--H", "1", "--T", "1", "--certificate", "c.json"}, "more than two device poles off s = 0"},
+      {"stability", "--certificate", {"--plant", "1/(s^3 + s^2 + s + 1)", "--H", "1", "--T", "1", "--certificate", "c.json"}, "without a pole at s = 0"},
       {"stability", "--certificate", {"--plant", "1/(s^2 + s)", "--H", "K", "--T", "1/10", "--max", "K", "--certificate", "c.json"}, "stability --max with a device pole off s = 0"},
       {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/000_two_dof_loop.toml", "--max", "k", "--certificate", "c.json"}, "stability --scene --max with 2 DOF"},
-      {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/000_two_dof_loop.toml", "--certificate", "c.json"}, "operator[1].ss: a key this checker does not model"},
+      {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/identical_walls_1001.toml", "--certificate", "c.json"}, "device[1].count: a key this checker does not model"},
       {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "-1"}, "--delay"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "2000000"}, "--delay"},
@@ -147,7 +148,7 @@ std::vector<Case> catalogue_rest(const std::string& out) {
       {"passivity-level", "--H", {"--H", "z+", "--T", "1"}, "column 3"},
       {"passivity-level", "--T", {"--H", "1", "--T", "0"}, "--T"},
       {"passivity-level", "--set", {"--H", "K", "--T", "1", "--set", "K=abc"}, "--set K"},
-      {"passivity-level", "--certificate", {"--H", "1/(z-1/2)", "--T", "1", "--certificate", "c.json"}, "no certificate"},
+      {"passivity-level", "--certificate", {"--H", "(z+1)/(z-1/2)", "--T", "1", "--certificate", "c.json"}, "zero on the unit circle"},
       {"passivity-level", "--ss", {"--ss", "/nonexistent.json"}, "--ss"},
       {"passivity-level", "--num", {"--num", "1", "--T", "1"}, "--num needs --den"},
       {"passivity-level", "--den", {"--den", "1", "--T", "1"}, "--den needs --num"},

@@ -7,6 +7,7 @@
 
 #include "cli/command.hpp"
 #include "cli/mat_file.hpp"
+#include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
@@ -191,8 +192,8 @@ nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
 
 // b* = +inf: the claim, and the first rational pole c_p of the objective in the band (a root of
 // its denominator, met exactly or by a convergent of a refined isolating interval) and side that
-// check/ verifies (the objective -> +inf there, check/bound_objective.hpp); InputError when none
-// (a pole at an irrational c, e.g. z = -1 with q >= 4: no certificate yet).
+// check/ verifies (the objective -> +inf there, check/bound_objective.hpp), or, for the pole at the
+// band's irrational end cos(pi/q), an interval (end_lo, end_hi] isolating it; InputError when none.
 nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, const WitnessObjective& o) {
   claim["status"] = "exact";
   claim["infinite"] = true;
@@ -205,17 +206,28 @@ nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, c
       if (r.is_exact() && den(r.lo) == 0) poles.push_back(r.lo);
       else if (auto c = first_convergent((r.lo + r.hi) / 2, [&](const rational& x) { return den(x) == 0; })) poles.push_back(*c);
     }
+  std::vector<nlohmann::json> candidates;
   for (const rational& c : poles)
-    for (long side : {-1L, 1L}) {
-      j["evidence"] = {{"pole_c", c.str()}, {"side", side}};
-      try {
-        if (check::check_certificate(j).verified) return j;
-      } catch (const InputError&) {  // this candidate is not in the checker's terms: the next one
-      }
+    for (long side : {-1L, 1L}) candidates.push_back({{"pole_c", c.str()}, {"side", side}});
+  // the pole at the band's irrational end cos(pi/q) (z = -1 with t_d/T = p/q, q >= 4): an interval
+  // (end_lo, end_hi] around it, narrower until nothing else of the objective lies in it
+  const long q = check::detail::read_delay_model(j["model"]).q;
+  if (q >= 2) {
+    const rational ce = exact_rational(std::cos(M_PI / static_cast<double>(q)));
+    for (int k = 8; k <= 48; k += 8) {
+      const rational d = rational(1) / rational(pow(integer(2), k));
+      candidates.push_back({{"end_lo", rational(ce - d).str()}, {"end_hi", rational(ce + d > 1 ? rational(1) : rational(ce + d)).str()}});
     }
-  throw InputError("--certificate: b* = +inf, but no rational pole c = cos(wT/q) of the objective in the band was "
-                   "shown to send it to +inf (a pole at an irrational c, e.g. z = -1 with t_d/T = p/q, q >= 4, has no "
-                   "certificate yet)");
+  }
+  for (const nlohmann::json& e : candidates) {
+    j["evidence"] = e;
+    try {
+      if (check::check_certificate(j).verified) return j;
+    } catch (const InputError&) {  // this candidate is not in the checker's terms: the next one
+    }
+  }
+  throw InputError("--certificate: b* = +inf, but no pole of the objective in the band (rational, or the band's end "
+                   "cos(pi/q)) was shown to send it to +inf: no certificate");
 }
 
 }  // namespace

@@ -21,6 +21,15 @@ using P = Polynomial<rational>;
 Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm,
                        const std::string& status) {
   if (status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
+  if (evidence.contains("end_lo") || evidence.contains("end_hi")) {  // the pole at the band's irrational end
+    if (evidence.contains("pole_c") || evidence.contains("side")) throw InputError("evidence: end_lo/end_hi beside pole_c/side (one pole)");
+    const rational s = detail::exact_field(evidence, "end_lo", "evidence"), b = detail::exact_field(evidence, "end_hi", "evidence");
+    const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
+    if (auto why = detail::unbounded_at_end_fails(f, s, b, dm.q)) return {false, "b* = +inf not shown: " + *why};
+    return {true, "b* = +inf: the objective tends to +inf as c = cos(wT/" + std::to_string(dm.q) + ") -> cos(pi/" +
+                      std::to_string(dm.q) + ") from above (wT -> pi; isolated in (" + detail::shortened(s) + ", " +
+                      detail::shortened(b) + "])"};
+  }
   const rational c_p = detail::exact_field(evidence, "pole_c", "evidence");
   // the side of pole_c the objective is approached from: +1 or -1
   const long side = detail::integer_field(evidence, "side", "evidence", -1, 1);
@@ -42,7 +51,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::only_fields(model, {"H", "set", "num", "den", "T", "delay", "frac_delay", "eta"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
-  if (infinite) detail::only_fields(evidence, {"pole_c", "side"}, "evidence");
+  if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi"}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   const detail::DelayModel dm = detail::read_delay_model(model);
   const rational& eta = dm.eta;

@@ -207,4 +207,29 @@ std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const 
   return std::nullopt;
 }
 
+std::optional<std::string> unbounded_at_end_fails(const ObjectivePolys& f, const rational& s, const rational& b, long q) {
+  if (q < 2) return std::string("evidence.end_lo: the band's end is c = -1 (an integer delay): give pole_c");
+  if (!(s >= -1 && s < b && b <= 1)) return "evidence: not -1 <= end_lo < end_hi <= 1";
+  const P U = chebyshev_u(q - 1);
+  if (U(s) == 0 || U(b) == 0) return std::string("evidence: end_lo or end_hi is a root of U_{q-1} (cos(k pi/q))");
+  if (sturm_count(U, s, rational(1)) != 1 || sturm_count(U, s, b) != 1)
+    return "(end_lo, end_hi] does not isolate cos(pi/" + std::to_string(q) + ") (U_{q-1} has not exactly one root in (end_lo, 1) "
+           "and in (end_lo, end_hi))";
+  const P g = gcd(f.A, f.B);
+  const P Ar = divmod(f.A, g).first, R = divmod(f.B, g).first;
+  const P G = gcd(R, U);  // square-free, its roots U's: none at s or 1
+  if (G.degree() < 1 || sturm_count(G, s, rational(1)) < 1)
+    return "cos(pi/" + std::to_string(q) + ") is not a pole of the objective (the reduced denominator and U_{q-1} share no root "
+           "there)";
+  const auto square_free = [](const P& p) { return divmod(p, gcd(p, p.derivative())).first; };
+  const P Rs = square_free(R), As = square_free(Ar);
+  if (Rs(s) == 0 || Rs(b) == 0 || sturm_count(Rs, s, b) != 1)
+    return std::string("the reduced denominator has another root in (end_lo, end_hi], or one at its ends");
+  if (As(s) == 0 || As(b) == 0 || sturm_count(As, s, b) != 0)
+    return std::string("the reduced numerator has a root in [end_lo, end_hi]");
+  if ((Ar(b) > 0) != (R(b) > 0))
+    return "the objective tends to -inf as c -> cos(pi/" + std::to_string(q) + ") from above (Ar R < 0 on (c_e, end_hi])";
+  return std::nullopt;
+}
+
 }  // namespace hapstab::check::detail

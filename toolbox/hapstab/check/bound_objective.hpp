@@ -87,6 +87,16 @@ std::optional<std::string> lower_bound_fails(const ObjectivePolys& f, const rati
 /// q >= 2, U_{k-1}(c_p) > 0 for every k = 1 .. q, i.e. phi_p < pi/q). Else what failed.
 std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const rational& c_p, long side, long q);
 
+/// nullopt when the objective is unbounded above at the band's irrational end c_e = cos(pi/q), q >= 2
+/// (H's pole at z = -1 with a fractional delay), shown on the rational interval (s, b] the evidence
+/// gives, everything decided exactly: U_{q-1} (square-free, roots cos(k pi/q)) has exactly one root
+/// in (s, 1) and one in (s, b), so s < c_e < b and c_e is U's only root in (s, 1); the reduced
+/// denominator R = B/gcd(A, B) vanishes at c_e: gcd(R, U_{q-1}) has a root in (s, 1) (its roots are
+/// U's); R has no other root in (s, b] (its square-free part, Sturm: one root there) and Ar = A/gcd
+/// none (Sturm: none). So f = Ar/R keeps the sign of Ar(b) R(b) on (c_e, b], where |f| -> inf as
+/// c -> c_e from above (inside the band): +inf iff Ar(b) R(b) > 0. Else what failed.
+std::optional<std::string> unbounded_at_end_fails(const ObjectivePolys& f, const rational& s, const rational& b, long q);
+
 /// A rational in a message: "p/q", cut at 40 characters.
 std::string shortened(const rational& x);
 
