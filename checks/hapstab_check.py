@@ -1518,11 +1518,9 @@ def schur_cohn(p):
     return True, "every Schur-Cohn step passes"
 
 
-def loop_device(model, one_pole=False):
-    """(T, n, params, k, Nd) of a one-DOF loop's model as written (model.H is read by the caller):
-    P_eff = P/(1 + s Zop P) = N/s^k (every pole at s = 0, else not modelled here: malformed) and its
-    zero-order hold Nd/(z-1)^k (sampled_device). With one_pole, P_eff = N/(s^k (s - p)) with one
-    simple rational pole p != 0 is taken too: then Nd is the tuple (p, r, Ndp) of pole_device."""
+def effective_device(model):
+    """(T, n, params, P_eff) of a one-DOF loop's model as written: P_eff = P/(1 + s Zop P), the plant
+    with its operator (model.H is read by the caller)."""
     for key in ("plant", "H"):
         if not isinstance(model.get(key), str):
             raise Malformed("model.%s: missing or not a string" % key)
@@ -1537,7 +1535,16 @@ def loop_device(model, one_pole=False):
     except ZeroDivisionError:
         raise Malformed("model: division by zero")
     if not dev.num:
-        raise Malformed("model.plant: zero")
+        raise Malformed("model.plant: zero (the device does not move)")
+    return T, n, params, dev
+
+
+def loop_device(model, one_pole=False):
+    """(T, n, params, k, Nd) of a one-DOF loop's model as written (model.H is read by the caller):
+    P_eff = P/(1 + s Zop P) = N/s^k (every pole at s = 0, else not modelled here: malformed) and its
+    zero-order hold Nd/(z-1)^k (sampled_device). With one_pole, P_eff = N/(s^k (s - p)) with one
+    simple rational pole p != 0 is taken too: then Nd is the tuple (p, r, Ndp) of pole_device."""
+    T, n, params, dev = effective_device(model)
     k = len(dev.den) - 1
     if len(dev.num) > k:
         raise Malformed("model.plant: the device is not strictly proper")
@@ -2207,22 +2214,12 @@ def plant_loop_read(model):
     ({plant, H, operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), which
     must keep a pole at s = 0 and relative degree >= 2; the wall H(z); n whole samples."""
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
-    for key in ("plant", "H"):
-        if not isinstance(model.get(key), str):
-            raise Malformed("model.%s: missing or not a string" % key)
-    if "operator" in model and not isinstance(model["operator"], str):
-        raise Malformed("model.operator: not a string")
-    T, n, params = period(model), delay_of(model), parameters(model)
+    T, n, params, P = effective_device(model)
     s = RF([Fraction(0), Fraction(1)])
     try:
-        P = parse_h(model["plant"], T, params, 's', 'model.plant')
-        if not P.num:
-            raise Malformed("model.plant: zero (the device does not move)")
-        if "operator" in model:
-            P = P / (RF([Fraction(1)]) + s * parse_h(model["operator"], T, params, 's', 'model.operator') * P)
         H = parse_h(model["H"], T, params, 'z', 'model.H')
     except ZeroDivisionError:
-        raise Malformed("model: division by zero")
+        raise Malformed("model.H: division by zero")
     if P.den[0] != 0:
         raise Malformed("model.plant: a device (with its operator) without a pole at s = 0 (beyond this checker)")
     G = s * P

@@ -119,6 +119,19 @@ def cases_and_seed(argv, cases=12, seed=1):
     return cases, seed
 
 
+def loop_claim_flipped(cl):
+    """A stability-loop certificate with its claim flipped: w added (a unit vector) to a stable
+    claim, w removed from a NOT stable one; both checkers must refute it."""
+    flipped = json.loads(json.dumps(cl))
+    stable = cl["claim"]["stable"]
+    flipped["claim"]["stable"] = not stable
+    if stable:
+        flipped["evidence"]["w"] = ["1"] + ["0"] * (len(cl["evidence"]["P"]) - 1)
+    else:
+        del flipped["evidence"]["w"]
+    return flipped
+
+
 def run_hapstab(exe, args, timeout):
     """Runs `hapstab ARGS --json`; returns (rc, parsed JSON or None, stderr text, seconds)."""
     t0 = time.monotonic()

@@ -35,7 +35,7 @@ import mpmath as mp  # noqa: E402
 
 import indep_coupled as IC  # noqa: E402
 import indep_loop as IL  # noqa: E402
-from indep_common import cases_and_seed  # noqa: E402
+from indep_common import cases_and_seed, loop_claim_flipped  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -208,13 +208,7 @@ def run_case(exe, c, tmp):
     miscounted = copy.deepcopy(cl)  # a conserved quantity more (or, with some, fewer): refuted
     miscounted["claim"]["conserved"] = c["conserved"] + (-1 if c["conserved"] and rng_bit(cl) else 1)
     mutants.append(("conserved miscounted", miscounted))
-    flipped = copy.deepcopy(cl)
-    flipped["claim"]["stable"] = not stable
-    if stable:
-        flipped["evidence"]["w"] = ["1"] + ["0"] * (len(cl["evidence"]["P"]) - 1)
-    else:
-        del flipped["evidence"]["w"]
-    mutants.append(("claim flipped", flipped))
+    mutants.append(("claim flipped", loop_claim_flipped(cl)))
     negated = copy.deepcopy(cl)
     p00 = negated["evidence"]["P"][0][0]
     negated["evidence"]["P"][0][0] = p00[1:] if p00.startswith("-") else "-" + p00

@@ -16,7 +16,6 @@ reference's, both checkers must verify its certificate and refute it with the cl
   indep_plant_loop_certificate.py HAPSTAB [--cases N] [--seed S]
 exit 0 when every case agrees, else 1.
 """
-import copy
 import json
 import os
 import random
@@ -30,7 +29,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
-from indep_common import Rational, cases_and_seed, fstr, pmul, poly_str  # noqa: E402
+from indep_common import Rational, cases_and_seed, fstr, loop_claim_flipped, pmul, poly_str  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -102,14 +101,8 @@ def run_case(exe, c, tmp):
     if j["stable"] != stable or cl["claim"]["stable"] != stable or cl["kind"] != "stability-loop":
         return False, "%s: hapstab %s, its certificate %s (%s), the reference %s" % (what, j["stable"], cl["claim"]["stable"],
                                                                                    cl["kind"], stable), None
-    flipped = copy.deepcopy(cl)
-    flipped["claim"]["stable"] = not stable
-    if stable:
-        flipped["evidence"]["w"] = ["1"] + ["0"] * (len(cl["evidence"]["P"]) - 1)
-    else:
-        del flipped["evidence"]["w"]
     with open(bad, "w") as f:
-        json.dump(flipped, f)
+        json.dump(loop_claim_flipped(cl), f)
     checkers = ([exe, "check"], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py")])
     for cmd in checkers:
         v = subprocess.run(cmd + [cert], capture_output=True, text=True, timeout=600)
