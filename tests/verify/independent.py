@@ -635,7 +635,13 @@ def long_crossing_reference(c, loop):
     def kval(theta):
         z = np.exp(1j * np.atleast_1d(theta))
         A = z[:, None, None] * np.eye(Phi.shape[0])[None] - Phi[None]
-        G = (Cy[None] @ np.linalg.solve(A, np.broadcast_to(Gam, (len(z),) + Gam.shape)))[:, 0, 0]
+        try:
+            X = np.linalg.solve(A, np.broadcast_to(Gam, (len(z),) + Gam.shape))
+        except np.linalg.LinAlgError:  # z rounded onto an open-loop pole on the circle: 1e-12 rad aside
+            z = z * np.exp(1e-12j)
+            A = z[:, None, None] * np.eye(Phi.shape[0])[None] - Phi[None]
+            X = np.linalg.solve(A, np.broadcast_to(Gam, (len(z),) + Gam.shape))
+        G = (Cy[None] @ X)[:, 0, 0]
         h0 = polyval(c["H0"].num, z) / polyval(c["H0"].den, z)
         h1 = polyval(c["H1"].num, z) / polyval(c["H1"].den, z)
         return -(z ** n + G * h0) / (G * h1)
