@@ -2211,8 +2211,9 @@ def scene_rf(text, T, var, where):
 
 def plant_loop_read(model):
     """stability-loop's reading of a one-DOF `stability --plant P --H H [--operator Z]` model as written
-    ({plant, H, operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), which
-    must keep a pole at s = 0 and relative degree >= 2; the wall H(z); n whole samples."""
+    ({plant, H, operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), of
+    relative degree >= 2; the wall H(z); n whole samples. Without a pole of P_eff at s = 0 the
+    integrated position carries one conserved quantity of this checker's own (own_conserved)."""
     only(model, ("plant", "H", "operator", "set", "T", "delay"), "model")
     T, n, params, P = effective_device(model)
     s = RF([Fraction(0), Fraction(1)])
@@ -2220,8 +2221,6 @@ def plant_loop_read(model):
         H = parse_h(model["H"], T, params, 'z', 'model.H')
     except ZeroDivisionError:
         raise Malformed("model.H: division by zero")
-    if P.den[0] != 0:
-        raise Malformed("model.plant: a device (with its operator) without a pole at s = 0 (beyond this checker)")
     G = s * P
     if len(G.num) >= len(G.den):
         raise Malformed("model.plant: a device of relative degree below 2 (beyond this checker)")
@@ -2230,6 +2229,16 @@ def plant_loop_read(model):
     devices = [{"first": 0, "dofs": 1, "block": ("tf", 1, [[G]])}]
     zero = [Fraction(0)]
     return T, Fraction(n), devices, zero, list(zero), list(zero), [], ("tf", [[H]]), None
+
+
+def own_conserved(model):
+    """Conserved quantities this checker's realisation adds, not the model: a --plant P_eff without a
+    pole at s = 0, realised as G = s P_eff with its position integrated (G(0) = 0, so x - K xi is
+    constant, K A_G = C_G, K B_G = 0); the quotient by it sets x = K xi, P_eff's output: the loop as
+    written. 0 for a scene."""
+    if "scene" in model or "plant" not in model:
+        return 0
+    return 1 if effective_device(model)[3].den[0] != 0 else 0
 
 
 def scene_loop_read(model):
@@ -2734,9 +2743,12 @@ def check_stability_loop(c):
     loop = scene_loop_read(model)
     A, B, _ = loop_plant(*loop[2:7])
     L, at = conserved_quantities(A, B)
-    if len(at) != k:
+    own = own_conserved(model)
+    if len(at) < own:
+        raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
+    if len(at) - own != k:
         return False, ("claim: %d conserved quantities, but the plant has %d (l^T [A B] = 0, exactly: each an "
-                       "eigenvalue 1 of M)" % (k, len(at)))
+                       "eigenvalue 1 of M)" % (k, len(at) - own))
     Pl = evidence.get("P")
     n = len(Pl) if isinstance(Pl, list) else 0
     if n > MAX_LOOP_ORDER:
@@ -2759,7 +2771,7 @@ def check_stability_loop(c):
     for bits in (128, 256, 512):
         M = quotient(loop_matrix(loop, bits), L, at)
         if len(M) != n:
-            raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if k else ""))
+            raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if at else ""))
         PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
         Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
         mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
@@ -2771,8 +2783,9 @@ def check_stability_loop(c):
                 for i in range(n))
         S = [[d[i] * d[j] * (mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
         if semidefinite(S, True):
-            return True, "%s (closed loop of %d states built from the model%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
-                "stable" if stable else "NOT stable", n + k, ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
+            return True, "%s (closed loop of %d states built from the model%s%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
+                "stable" if stable else "NOT stable", n + len(at), ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
+                ", the position integrated here set to P's output (its own conserved quantity: the model as written)" if own else "",
                 bits, sign)
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 

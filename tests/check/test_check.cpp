@@ -1043,8 +1043,7 @@ TEST(StabilityLoopCheck, ConservedQuantitiesByHand) {
 // The one-DOF model of `stability --plant/--H` read as a closed-loop matrix (devices beyond the
 // stability kind): P = 1/(2 s^2), H = 100, T = 1/10 is the hand loop above, its device realised as
 // G = s P = 1/(2 s) (the state 2 v): M = [[1, -10], [1/20, 3/4]]; an operator damper 3 makes P_eff =
-// 1/(2 s^2 + 3 s). A device without a pole at s = 0 (its position a mode no force moves) and one of
-// relative degree 1 are beyond the reading; so is an improper H.
+// 1/(2 s^2 + 3 s). A device of relative degree 1 is beyond the reading; so is an improper H.
 TEST(StabilityLoopCheck, PlantModelByHand) {
   nlohmann::json model{{"plant", "1/(2*s^2)"}, {"H", "100"}, {"set", nlohmann::json::object()}, {"T", "1/10"}, {"delay", 0}};
   const auto M = scene_loop_matrix(model, 128);
@@ -1061,8 +1060,21 @@ TEST(StabilityLoopCheck, PlantModelByHand) {
   const auto D = scene_loop_matrix(damped, 128);
   const double e = std::exp(-0.15);  // G = 1/(2 s + 3): Phi_00 = e^{-3T/2}
   EXPECT_NEAR(D.M[0][0].first.convert_to<double>(), e, 1e-12);
+  // no pole at s = 0: P = 1/(s + 1)^3, G = s P and the position integrated by the checker (4 states),
+  // its own conserved quantity set aside (3 states, claim.conserved 0): the loop as written, whose
+  // trace is tr(Phi - Gamma K C) = 3 e^{-T} - K y(T), y(t) = 1 - e^{-t} (1 + t + t^2/2) P's step response
+  auto spring = model;
+  spring["plant"] = "1/(s + 1)^3";
+  const auto S = scene_loop_matrix(spring, 128);
+  ASSERT_EQ(S.M.size(), 3u);
+  EXPECT_EQ(S.conserved, 0u);
+  rational lo = 0, hi = 0;
+  for (int i = 0; i < 3; ++i) lo += S.M[i][i].first, hi += S.M[i][i].second;
+  const double t = 0.1, trace = 3 * std::exp(-t) - 100 * (1 - std::exp(-t) * (1 + t + t * t / 2));
+  EXPECT_NEAR(lo.convert_to<double>(), trace, 1e-12);
+  EXPECT_NEAR(hi.convert_to<double>(), trace, 1e-12);
   for (const auto& [plant, why] : std::vector<std::pair<std::string, std::string>>{
-           {"1/((s + 1)*(s + 2))", "without a pole at s = 0"}, {"1/s", "relative degree below 2"}}) {
+           {"1/(s + 1)", "relative degree below 2"}, {"1/s", "relative degree below 2"}}) {
     auto m = model;
     m["plant"] = plant;
     try {

@@ -17,6 +17,7 @@ K cos + cot(theta/2) K sin + 1 = K (1 + 2 cos(theta)) + 1 (min 1 - K at theta = 
 K cos(theta) + 1 (min 1 - K): both hold iff K < 1; (1 + H)^-1 has its pole at -K.
 """
 import copy
+import math
 import os
 import sys
 import unittest
@@ -268,7 +269,19 @@ class StabilityLoop(unittest.TestCase):
         for i in range(2):
             for j in range(2):
                 self.assertTrue(M[i][j].lo <= want[i][j] <= M[i][j].hi)
-        for plant, why in (("1/((s + 1)*(s + 2))", "without a pole at s = 0"), ("1/s", "relative degree below 2")):
+        # no pole at s = 0 (test_check.cpp's trace): P = 1/(s + 1)^3, the position integrated here,
+        # this checker's own conserved quantity set aside: 3 states, trace 3 e^-T - K y(T)
+        spring = dict(model, plant="1/(s + 1)^3")
+        A, B, _ = hc.loop_plant(*hc.scene_loop_read(spring)[2:7])
+        L, at = hc.conserved_quantities(A, B)
+        self.assertEqual((len(at), hc.own_conserved(spring), hc.own_conserved(model)), (1, 1, 0))
+        S = hc.quotient(hc.loop_matrix(hc.scene_loop_read(spring), 128), L, at)
+        self.assertEqual(len(S), 3)
+        t = 0.1
+        trace = 3 * math.exp(-t) - 100 * (1 - math.exp(-t) * (1 + t + t * t / 2))
+        self.assertAlmostEqual(float(sum(S[i][i].lo for i in range(3))), trace, places=12)
+        self.assertAlmostEqual(float(sum(S[i][i].hi for i in range(3))), trace, places=12)
+        for plant, why in (("1/(s + 1)", "relative degree below 2"), ("1/s", "relative degree below 2")):
             with self.assertRaises(hc.Malformed) as e:
                 hc.scene_loop_read(dict(model, plant=plant))
             self.assertIn(why, str(e.exception))

@@ -8,7 +8,9 @@ canonical form in mpmath), holds it by mpmath.expm, realises H = B (z - 1)/(T z)
 shift register, and takes the spectral radius at 50 digits.
 
 Drawn: m in [0.05, 2], b in [0.5, 5], two or three lags tau s + 1 (tau 1-50 ms), in a quarter a zero
-c s + 1 (c < the largest tau, relative degree >= 2 kept), in a fifth a second integrator (P ~ 1/s^2);
+c s + 1 (c < the largest tau, relative degree >= 2 kept), in a fifth a second integrator (P ~ 1/s^2),
+in a quarter a spring k in [1, 1000] m instead (no pole at s = 0: the checkers integrate the position
+themselves and set that conserved quantity of their own aside, the claim states none);
 an operator damper b_o in a third (P_eff = P/(1 + s b_o P), computed here); K log-uniform in
 [0.3 m, 10^4 m] (two digits), B 0-2; delays 0-3 samples. hapstab's verdict must be the
 reference's, both checkers must verify its certificate and refute it with the claim flipped.
@@ -42,9 +44,16 @@ def draw(rng):
     for tau in lags:
         den = pmul(den, [tau, Q(1)])
     tags = {"lags": str(len(lags))}
-    if rng.random() < 0.2:
+    u = rng.random()
+    if u < 0.2:
         den = pmul(den, [Q(1), Q(0)])
         tags["double integrator"] = True
+    elif u < 0.45:  # a spring k: no pole at s = 0 (the checkers' own integrated position, set aside)
+        k = IL.rq(rng, 1, 1000) * m
+        den = [m, b, k]
+        for tau in lags:
+            den = pmul(den, [tau, Q(1)])
+        tags["spring"] = True
     num = [Q(1)]
     if rng.random() < 0.25:
         zc = IL.rq(rng, 0.001, float(max(lags)), den=(1000,))
@@ -98,7 +107,8 @@ def run_case(exe, c, tmp):
     if r.returncode not in (0, 1) or not os.path.exists(cert):
         return False, "%s: exit %d: %s" % (what, r.returncode, r.stderr.strip()[:300]), None
     j, cl = json.loads(r.stdout), json.load(open(cert))
-    if j["stable"] != stable or cl["claim"]["stable"] != stable or cl["kind"] != "stability-loop":
+    if (j["stable"] != stable or cl["claim"]["stable"] != stable or cl["kind"] != "stability-loop"
+            or cl["claim"].get("conserved", 0) != 0):
         return False, "%s: hapstab %s, its certificate %s (%s), the reference %s" % (what, j["stable"], cl["claim"]["stable"],
                                                                                    cl["kind"], stable), None
     with open(bad, "w") as f:
@@ -121,7 +131,7 @@ def main(argv):
     rng = random.Random("plant-loop-certificate:%d" % seed)
     good = bad = skipped = 0
     branches = {"stable": 0, "NOT stable": 0}
-    tags = {"zero": 0, "double integrator": 0, "operator": 0, "3 lags": 0, "delay > 0": 0}
+    tags = {"zero": 0, "double integrator": 0, "spring": 0, "operator": 0, "3 lags": 0, "delay > 0": 0}
     with tempfile.TemporaryDirectory(prefix="hapstab-plant-loop-") as tmp:
         for i in range(cases):
             c = draw(rng)
@@ -134,6 +144,7 @@ def main(argv):
             if ok:
                 branches[branch] += 1
                 for key, hit in (("zero", c["tags"].get("zero")), ("double integrator", c["tags"].get("double integrator")),
+                                 ("spring", c["tags"].get("spring")),
                                  ("operator", c["tags"]["operator"]), ("3 lags", c["tags"]["lags"] == "3"),
                                  ("delay > 0", c["n"] > 0)):
                     tags[key] += bool(hit)

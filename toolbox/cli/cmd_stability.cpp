@@ -527,7 +527,7 @@ const cli::Register reg(
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
                       "FILE`: kind stability (one-DOF --plant/--H loop, every device pole at s = 0 or one real pole off it, "
                       "a mass-damper, a spring; or a one-DOF --scene, its text the model), stability-loop for another --scene "
-                      "or a --plant with three poles off s = 0 or more and one at it (the closed-loop matrix the checkers "
+                      "or a --plant with three poles off s = 0 or more (the closed-loop matrix the checkers "
                       "build from the model), or stability-max with --max (every device pole at s = 0); refused by name: "
                       "what the checkers do not read (count, diagonal, contact, ...), --scene --max beyond one DOF, "
                       "--max with a device pole off s = 0, degree above the checkers' limit; an undecided answer writes "

@@ -539,13 +539,14 @@ SceneLoop read_plant_loop(const nlohmann::json& model) {
     if (one.is_zero()) throw InputError("model.operator: 1 + s Z_op P is zero");
     P = P / one;
   }
-  if (P.den().coeff(0) != 0)
-    throw outside("model.plant", "a device (with its operator) without a pole at s = 0: its position would be a mode no force moves");
   const RF G = s * P;
   if (G.num().degree() >= G.den().degree()) throw outside("model.plant", "a device of relative degree below 2 (s P is not strictly proper)");
   SceneLoop out;
   out.T = pd.T;
   out.delay = pd.n;
+  // without a pole at s = 0, G(0) = 0 and x - K xi is constant (K A_G = C_G, K B_G = 0): the
+  // quotient by it sets x = K xi, P_eff's own output (stability_loop_check.hpp)
+  out.own_conserved = P.den().coeff(0) != 0 ? 1 : 0;
   SceneLoop::Device dev;
   dev.block = true;
   dev.tf = {{G}};

@@ -81,14 +81,18 @@ struct SceneLoop {
   std::vector<Impedance> operators;  ///< the tf and ss operators
   Discrete E;                        ///< the environment
   std::optional<Discrete> V;         ///< the coupling
+  /// conserved quantities the checker's own realisation adds, not the model: a `--plant` P without a
+  /// pole at s = 0, realised as G = s P with its position integrated (x - P's output is constant)
+  size_t own_conserved = 0;
   size_t dofs() const { return mass.size(); }
 };
 
 /// model.scene read as above (model.set overrides parameters); or, for a model without a scene, the
 /// one-DOF loop of `stability --plant P --H H [--operator Z] --delay n` as written ({plant, H,
-/// operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), which must keep a
-/// pole at s = 0 and a relative degree >= 2 (else beyond). InputError naming what is malformed or
-/// beyond this reading.
+/// operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), of relative degree
+/// >= 2 (else beyond); without a pole of P_eff at s = 0, the integrated position carries one conserved
+/// quantity of the checker's own (own_conserved = 1: on its quotient, position = P_eff's output, the
+/// model as written). InputError naming what is malformed or beyond this reading.
 SceneLoop read_scene_loop(const nlohmann::json& model);
 
 /// `model` itself when it has no "scene" field; else the loop model {plant, H[, operator], set: {},

@@ -287,7 +287,7 @@ std::pair<BallRows, BallRows> hold(const Mat& A, const Mat& Bu, const rational& 
 
 struct LoopMatrix {
   BallRows M;            // on the quotient by the conserved quantities (all of M when there are none)
-  size_t conserved = 0;  // k
+  size_t conserved = 0;  // k, the model's (the checker's own, SceneLoop::own_conserved, not counted)
   size_t order = 0;      // M's order before the quotient
 };
 
@@ -363,7 +363,9 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   for (size_t i = 0; i < nV; ++i)
     for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = flint::Ball(BF[i][j] + (j >= ns + nE ? V.A[i][j - ns - nE] : rational(0)));
   const Conserved q = conserved_quantities(pl);
-  return {reduced(M, q), q.at.size(), order};
+  if (q.at.size() < L.own_conserved)
+    throw NumericalError("model.plant: the integrated position carries no conserved quantity (a checker defect)");
+  return {reduced(M, q), q.at.size() - L.own_conserved, order};
 }
 
 // Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
@@ -496,7 +498,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
     const BallRows& M = lm.M;
     if (M.size() != Pm.size())
       throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +
-                       (lm.conserved ? " (on the quotient by its conserved quantities)" : ""));
+                       (lm.conserved || L.own_conserved ? " (on the quotient by its conserved quantities)" : ""));
     if (stein_holds(Pm, M, why))
       return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(lm.order) + " states, " +
                         std::to_string(L.dofs()) + " DOF, delay " + rational(L.delay + L.fraction).str() +
@@ -504,6 +506,9 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
                         (lm.conserved ? ", on the quotient by its conserved quantities (k = " + std::to_string(lm.conserved) +
                                             ": l^T [A B] = 0 exactly, l^T M = l^T)"
                                       : std::string()) +
+                        (L.own_conserved ? ", the position the checker integrates set to P's output (the quotient by its "
+                                           "own conserved quantity: the model as written)"
+                                         : "") +
                         "; P - M^T P M > 0 for every M in them and " + sign + " (Stein inertia)"};
   }
   return {false, "claim: " + std::string(stable ? "stable" : "NOT stable") + ", but " + why + " at 512 bits"};

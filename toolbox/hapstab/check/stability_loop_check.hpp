@@ -42,6 +42,10 @@
 // "stable" with k > 0 means: M11 Schur stable, so the eigenvalue 1 is semisimple and every solution
 // settles to the equilibrium its conserved quantities select (not asymptotically stable: say so);
 // "NOT stable": M11 has an eigenvalue with |z| > 1. P (and w) are of M11's order.
+// A `--plant` P without a pole at s = 0 is realised as G = s P with its position integrated: that
+// adds one conserved quantity of the checker's own (x - K xi, K A_G = C_G, K B_G = 0, as G(0) = 0),
+// and its quotient sets x = K xi, P's own output: the loop as written. It is set aside and not
+// counted in claim.conserved.
 // The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
 // eigenvalues of M here; a certificate exists only where they are off the circle (other than the
 // conserved quantities), and then they are part of M.
