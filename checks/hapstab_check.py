@@ -1041,6 +1041,16 @@ def re_over_circle(P, Q):
     return hat(Eu), hat(Fu)
 
 
+def upper_bound_claim(claim):
+    """A claim of status "upper_bound" (a level <= hi only): {quantity, status, hi[, printed_hi]}, the
+    printed decimal the number claimed: (hi, why it is refuted or None)."""
+    only(claim, ("quantity", "status", "hi", "printed_hi"), "claim")
+    hi = exact(claim, "hi", "claim")
+    if "printed_hi" in claim and printed_number(claim["printed_hi"], "claim.printed_hi") != hi:
+        return hi, "claim.printed_hi = %s is not the claimed %s" % (claim["printed_hi"], short(hi))
+    return hi, None
+
+
 def check_passivity_level(c):
     """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
@@ -1069,10 +1079,9 @@ def check_passivity_level(c):
     one = Fraction(1)
     name = "delta*" if osp else "phi*"
     if claim.get("status") == "upper_bound":  # the level <= hi only (an OSP value <= 0, a zero of G on the circle)
-        only(claim, ("quantity", "status", "hi", "printed_hi"), "claim")
-        hi = exact(claim, "hi", "claim")
-        if "printed_hi" in claim and printed_number(claim["printed_hi"], "claim.printed_hi") != hi:
-            return False, "claim.printed_hi = %s is not the claimed %s" % (claim["printed_hi"], short(hi))
+        hi, refuted = upper_bound_claim(claim)
+        if refuted:
+            return False, refuted
         c0 = exact(evidence, "witness_c", "evidence")
         if c0 < -1 or c0 > 1:
             return False, "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
@@ -1373,7 +1382,8 @@ def check_passivity_level_mimo(c):
     |d|^(2m)) on the circle; phi* <= hi if He G - hi I is not > 0 at the witness (c0, s0), c0^2 + s0^2 = 1;
     an exact claim v: phi* >= v so, and det(He G - v I) = 0 somewhere on the circle. OSP: delta* the same
     with He G - nu G^H G (a congruence of He G^-1 - nu I where G is regular: det G != 0 on the circle is
-    checked first), and lo > 0."""
+    checked first), and lo > 0. A claim of status "upper_bound" (an OSP value <= 0) is the witness
+    part alone, with det G(z0) != 0 for OSP (then for every nu > hi the pencil is not >= 0 at z0)."""
     model, claim, evidence = parts(c)
     only(model, ("A", "B", "C", "D", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
@@ -1398,6 +1408,21 @@ def check_passivity_level_mimo(c):
     if not ok:
         raise Malformed("model.A: not Schur stable (%s)" % why)
     sys_ = (A, B, C, D, osp)
+    lvl = "delta*" if osp else "phi*"
+    if claim.get("status") == "upper_bound":  # the level <= hi only (an OSP value <= 0): the witness alone
+        hi, refuted = upper_bound_claim(claim)
+        only(evidence, ("witness_c", "witness_s"), "evidence")
+        c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
+        if refuted:
+            return False, refuted
+        if c0 * c0 + s0 * s0 != 1:
+            return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
+        if osp and cq_det(mimo_G(sys_, (c0, s0))) == (0, 0):
+            return False, "evidence: det G = 0 at the witness (no bound from it)"
+        if positive_definite(he_minus(sys_, (c0, s0), hi)):
+            return False, "%s <= %s (%.12g) not shown: the pencil at hi is positive definite at the witness" % (lvl, short(hi), float(hi))
+        return True, "%s <= %.12g (%dx%d, an upper bound only: the pencil at hi not > 0 at the witness%s)" % (
+            lvl, float(hi), m, m, ", G regular there" if osp else "")
     if osp:  # G regular on the circle: He G - nu G^H G = G^H (He G^-1 - nu I) G there
         why = mimo_regular_on_circle(sys_, d)
         if why:
@@ -1411,7 +1436,6 @@ def check_passivity_level_mimo(c):
         return False, refuted
     if status != "exact":
         c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
-    lvl = "delta*" if osp else "phi*"
     if osp and lo <= 0:
         return False, "delta* >= %s: an OSP claim needs lo > 0 (a value <= 0 is not Lemma 1's level)" % short(lo)
     why, touches, samples = mimo_lower(sys_, d, lo)

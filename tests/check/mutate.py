@@ -826,9 +826,43 @@ def mimo_entry_edits(m, rng):
     return edits
 
 
+def mimo_upper_bound_mutants(cert, rng):
+    """passivity-level-mimo with status upper_bound (an OSP value <= 0: the level <= hi only, the
+    witness alone): hi lowered (refute) or raised (accept), its printed decimal or the witness moved,
+    the witness off the circle, a lower end added; at a real witness z0 = +-1, D edited so that G(z0)'s
+    first column is 0 (det G(z0) = 0: the pencil singular there for every nu, nothing proven: refute)."""
+    hi = Fraction(cert["claim"]["hi"])
+    step = max(abs(hi), Fraction(1)) / 100
+    c0, s0 = Fraction(cert["evidence"]["witness_c"]), Fraction(cert["evidence"]["witness_s"])
+    out = [("unmutated", cert, "accept"),
+           ("hi lowered", with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], frac(hi - step)), "refute"),
+           ("hi raised", with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], frac(hi + step)), "accept"),
+           ("printed_hi is not the claimed hi", with_field(cert, ["claim", "printed_hi"], cert["claim"]["printed_hi"] + "1"), "refute"),
+           ("witness off the circle (s0 + 1/1000)", with_field(cert, ["evidence", "witness_s"], frac(s0 + Fraction(1, 1000))), "refute"),
+           ("a lower end added", with_field(cert, ["claim", "lo"], frac(hi - 1)), "malformed"),
+           ("status certified without lo", with_field(cert, ["claim", "status"], "certified"), "malformed"),
+           ("deleted evidence.witness_s", deleted(cert, ["evidence", "witness_s"]), "malformed")]
+    t0 = s0 / (1 + c0) if c0 != -1 else Fraction(10 ** 6)
+    for name, t in (("witness t + 1/1000", t0 + Fraction(1, 1000)), ("witness random", Fraction(rng.randint(0, 3000), 1000))):
+        w = 1 + t * t
+        mut = with_field(cert, ["evidence", "witness_c"], frac((1 - t * t) / w))
+        out.append((name, with_field(mut, ["evidence", "witness_s"], frac(2 * t / w)), "agree"))
+    if s0 == 0 and cert["model"]["kind"] == "osp":
+        m = cert["model"]
+        A, B, C, D = ([[Fraction(x) for x in r] for r in m[k]] for k in ("A", "B", "C", "D"))
+        G = hapstab_check.mimo_G((A, B, C, D, True), (c0, Fraction(0)))
+        D2 = [list(r) for r in m["D"]]
+        for i in range(len(D2)):
+            D2[i][0] = frac(D[i][0] - G[i][0][0])
+        out.append(("D edited: det G(z0) = 0 at the witness", with_field(cert, ["model", "D"], D2), "refute"))
+    return out
+
+
 def mimo_mutants(cert, rng, hapstab, cache, tmp):
-    out = [("unmutated", cert, "accept")]
     cl, m = cert["claim"], cert["model"]
+    if cl["status"] == "upper_bound":
+        return mimo_upper_bound_mutants(cert, rng) + mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl))
+    out = [("unmutated", cert, "accept")]
     exact_claim = cl["status"] == "exact"
     lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
     out.append(("lo > hi", claim(hi + tiny, hi), "refute"))
@@ -863,6 +897,13 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
             out.append(("deleted evidence." + key, deleted(cert, ["evidence", key]), "malformed"))
         out.append(("witness a decimal", with_field(cert, ["evidence", "witness_c"], "0.5"), "malformed"))
         out.append(("added evidence.witness_v", with_field(cert, ["evidence", "witness_v"], ["1", "0"]), "malformed"))
+    return out + mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi)
+
+
+def mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi):
+    """The model edited (an entry of A, B, C, D; the other kind; shapes, fields), whatever the claim
+    (lo = -inf for an upper bound only): hapstab's own certificate of the edited model decides."""
+    m, out = cert["model"], []
     # one entry of A, B, C or D edited: hapstab's own certificate of the edited model decides
     for name, nm in mimo_entry_edits(m, rng):
         other = mimo_produce(hapstab, nm, cache, tmp, 30)
@@ -1920,11 +1961,13 @@ def print_branches(certs, mutants, cpp):
             *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound"))))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
-        print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d; level <= 0 %d; 3x3 %d; families %s" % (
+        print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d; level <= 0 %d; "
+              "3x3 %d; families %s" % (
                   sum(1 for c, _ in mimo if c["model"]["kind"] == "isp"), sum(1 for c, _ in mimo if c["model"]["kind"] == "osp"),
                   sum(1 for c, _ in mimo if c["claim"]["status"] == "exact"),
                   sum(1 for c, _ in mimo if c["claim"]["status"] == "certified"),
-                  sum(1 for c, _ in mimo if Fraction(c["claim"].get("value", c["claim"].get("lo"))) <= 0),
+                  sum(1 for c, _ in mimo if c["claim"]["status"] == "upper_bound"),
+                  sum(1 for c, _ in mimo if Fraction(c["claim"].get("value", c["claim"].get("lo", c["claim"].get("hi")))) <= 0),
                   sum(1 for c, _ in mimo if len(c["model"]["D"]) == 3), json.dumps(MIMO_FAMILIES, sort_keys=True)))
     smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]
     if smax:

@@ -590,6 +590,43 @@ TEST(PassivityLevelMimoCheck, OspRefusesAZeroOnTheCircle) {
   }
 }
 
+// An OSP value <= 0 is an upper bound only ("upper_bound", the witness alone). G = diag(1/(z - 1/2),
+// 1/(z - 1/5) + d22): at z0 = -1, with d22 = -1, 1/G = diag(-3/2, -6/11), so He G^-1(-1) has
+// lambda_min = -3/2 and delta* <= -3/2 (it is -3/2: Re(z - 1/2) >= -3/2 and Re((z - 1/5)/(6/5 - z)) >
+// -3/2 on the circle); hi = -8/5 is refuted (the pencil is > 0 there). With d22 = 5/6, G22(-1) = 0:
+// det G(-1) = 0 and the pencil is singular at -1 for every nu, so the witness proves nothing (refuted,
+// not read as a bound: without that check every hi would pass). ISP: He G(-1) = diag(-2/3, -11/6).
+TEST(PassivityLevelMimoCheck, UpperBoundOnlyByHand) {
+  const nlohmann::json A = mat({{"1/2", "0"}, {"0", "1/5"}});
+  auto upper = [](const std::string& hi, const std::string& printed) {
+    nlohmann::json c{{"status", "upper_bound"}, {"hi", hi}};
+    if (!printed.empty()) c["printed_hi"] = printed;
+    return c;
+  };
+  auto cert = [&](const std::string& d22, const nlohmann::json& claim, const nlohmann::json& w) {
+    return osp(mimo_cert(A, I2, I2, mat({{"0", "0"}, {"0", d22}}), claim, w));
+  };
+  const Verdict v = check_certificate(cert("-1", upper("-3/2", "-1.5"), witness("-1", "0")));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("upper bound only"), std::string::npos) << v.reason;
+  EXPECT_FALSE(check_certificate(cert("-1", upper("-8/5", ""), witness("-1", "0"))).verified);
+  EXPECT_FALSE(check_certificate(cert("-1", upper("-3/2", ""), witness("1", "0"))).verified);  // 1/G(1) = diag(1/2, 1/4)
+  EXPECT_FALSE(check_certificate(cert("-1", upper("-3/2", "-1.4"), witness("-1", "0"))).verified);
+  EXPECT_FALSE(check_certificate(cert("-1", upper("-3/2", ""), witness("-1", "1/2"))).verified);
+  const Verdict singular = check_certificate(cert("5/6", upper("-100", ""), witness("-1", "0")));
+  EXPECT_FALSE(singular.verified);
+  EXPECT_NE(singular.reason.find("det G = 0 at the witness"), std::string::npos) << singular.reason;
+  auto isp = mimo_cert(A, I2, I2, mat({{"0", "0"}, {"0", "-1"}}), upper("-11/6", ""), witness("-1", "0"));
+  EXPECT_TRUE(check_certificate(isp).verified);
+  isp["claim"]["hi"] = "-2";
+  EXPECT_FALSE(check_certificate(isp).verified);
+  auto lo_beside = cert("-1", upper("-3/2", ""), witness("-1", "0"));
+  lo_beside["claim"]["lo"] = "-2";  // an upper bound claims no lower end
+  EXPECT_THROW(check_certificate(lo_beside), InputError);
+  auto no_witness = cert("-1", upper("-3/2", ""), nlohmann::json::object());
+  EXPECT_THROW(check_certificate(no_witness), InputError);
+}
+
 TEST(PassivityLevelMimoCheck, Malformed) {
   auto bad = [](nlohmann::json c, const std::string& field) {
     try {

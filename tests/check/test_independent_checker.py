@@ -694,6 +694,36 @@ class PassivityLevelMimo(unittest.TestCase):
         self.assertIn("not decided", why)
         self.assertEqual(hc.check(mimo_cert(*m, range_claim("199999/1000000", "1/5"), {"witness_c": "1", "witness_s": "0"}))[0], 0)
 
+    def test_upper_bound_only_by_hand(self):
+        # test_check.cpp's PassivityLevelMimoCheck.UpperBoundOnlyByHand: G = diag(1/(z - 1/2), 1/(z - 1/5)
+        # + d22); at z0 = -1 with d22 = -1, 1/G = diag(-3/2, -6/11): delta* <= -3/2, not <= -8/5; with
+        # d22 = 5/6 det G(-1) = 0 (the witness proves nothing); ISP: He G(-1) = diag(-2/3, -11/6)
+        def cert(d22, hi, w, kind="osp", printed=None):
+            c = mimo_cert([["1/2", "0"], ["0", "1/5"]], [["1", "0"], ["0", "1"]], [["1", "0"], ["0", "1"]],
+                          [["0", "0"], ["0", d22]], {"status": "upper_bound", "hi": hi}, {"witness_c": w[0], "witness_s": w[1]})
+            c["model"]["kind"] = kind
+            if printed:
+                c["claim"]["printed_hi"] = printed
+            return c
+        code, why = hc.check(cert("-1", "-3/2", ("-1", "0"), printed="-1.5"))
+        self.assertEqual(code, 0, why)
+        self.assertIn("upper bound only", why)
+        self.assertEqual(hc.check(cert("-1", "-8/5", ("-1", "0")))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "-3/2", ("1", "0")))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "-3/2", ("-1", "0"), printed="-1.4"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "-3/2", ("-1", "1/2")))[0], 1)
+        code, why = hc.check(cert("5/6", "-100", ("-1", "0")))
+        self.assertEqual(code, 1)
+        self.assertIn("det G = 0 at the witness", why)
+        self.assertEqual(hc.check(cert("-1", "-11/6", ("-1", "0"), kind="isp"))[0], 0)
+        self.assertEqual(hc.check(cert("-1", "-2", ("-1", "0"), kind="isp"))[0], 1)
+        c = cert("-1", "-3/2", ("-1", "0"))
+        c["claim"]["lo"] = "-2"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("-1", "-3/2", ("-1", "0"))
+        c["evidence"] = {}
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_osp_by_hand_and_against_mpmath(self):
         # the C++ checker's cases (test_check.cpp, OspByHandAndAgainstMpmath): delta* of DIAG = 1/3 at
         # theta = 0 by hand; of COUPLED 0.204061059135553914835147667520313... (mpmath, 60 digits)

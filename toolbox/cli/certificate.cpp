@@ -437,12 +437,13 @@ std::vector<nlohmann::json> circle_witnesses(const rational& c) {
 }  // namespace
 
 nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
-                                                bool is_level, int digits) {
+                                                bool is_level, bool upper_only, int digits) {
   if (c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none: " +
                      (c.note.empty() ? std::string("no reason given") : c.note) + "): no certificate");
-  if (!is_level || !c.enclosure) throw InputError("--certificate: the certified frequency value is not the level here: no certificate");
-  if (osp && c.enclosure->lo <= 0)
+  if ((!is_level && !upper_only) || !c.enclosure)
+    throw InputError("--certificate: the certified frequency value is not the level here: no certificate");
+  if (!upper_only && osp && c.enclosure->lo <= 0)
     throw InputError("--certificate: an OSP value <= 0 bounds Lemma 1's level only from above (it is not the level): no "
                      "certificate");
   nlohmann::json j = certificate_header("passivity-level-mimo");
@@ -454,8 +455,16 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
                             "paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} lambda_min(He G(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: "
                             "the ISP level of paper 000 Definition 2 (Lemma 1)";
-  const bool exact = c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
-  if (exact) {
+  const bool exact = !upper_only && c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
+  if (upper_only) {  // the level <= hi only (check/passivity_level_mimo_check.hpp), hi as printed
+    claim["quantity"] = std::string(osp ? "delta*" : "phi*") +
+                        ", the level of paper 000 Definition 2, <= hi: an upper bound only (the frequency value is not the "
+                        "level here: an OSP value <= 0)";
+    claim["status"] = "upper_bound";
+    const std::string printed = decimal_outward(c.enclosure->hi, digits, +1);
+    claim["hi"] = parse_rational(printed, "enclosure").str();
+    claim["printed_hi"] = printed;
+  } else if (exact) {
     claim["status"] = "exact";
     claim["value"] = c.enclosure->lo.str();
   } else {  // the enclosure as printed, rounded outward (cmd_passivity_level.cpp)
@@ -464,8 +473,9 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
   j["claim"] = claim;
   std::vector<nlohmann::json> candidates{nlohmann::json::object()};
   if (!exact) {
-    if (!c.c_min) throw NumericalError("--certificate: the certified MIMO path gave no minimiser to place the witness at");
-    candidates = circle_witnesses(*c.c_min);
+    if (!c.c_min && c.theta_min < 0)
+      throw NumericalError("--certificate: the certified MIMO path gave no minimiser to place the witness at");
+    candidates = circle_witnesses(c.c_min ? *c.c_min : exact_rational(std::cos(c.theta_min)));
   }
   std::string why;
   for (const nlohmann::json& e : candidates) {  // the first that check/ verifies

@@ -48,15 +48,16 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
                                            const lmi::PassivityLevel& c, bool is_level, bool upper_only, int digits);
 
-/// The certificate of `passivity-level --ss FILE --kind isp` with a square MIMO G (m >= 2 inputs;
-/// check/passivity_level_mimo_check.hpp, kind passivity-level-mimo): the exact A, B, C, D and T as
-/// written, the certified ISP level c as claim (exact, or its enclosure printed at `digits`), and
-/// for an enclosure a witness z0 = c0 + j s0, a rational point of the unit circle near c.c_min with
-/// He G(z0) - hi I not positive definite. The certificate is checked (check/) before it is returned.
-/// InputError (exit 2) for what has no certificate: an OSP level, a level that is not certified;
+/// The certificate of `passivity-level --ss FILE --kind isp|osp` with a square MIMO G (or a .mat's
+/// A, B, C, D; check/passivity_level_mimo_check.hpp, kind passivity-level-mimo): the exact A, B, C, D
+/// and T as written, the certified level c as claim (exact, or its enclosure printed at `digits`; with
+/// `upper_only`, an OSP value <= 0, "upper_bound" with the printed hi), and for an enclosure or an upper
+/// bound a witness z0 = c0 + j s0, a rational point of the unit circle near c.c_min with the pencil at
+/// hi not positive definite (OSP: G(z0) regular). The certificate is checked (check/) before it is
+/// returned. InputError (exit 2) for what has no certificate: a level that is not certified;
 /// NumericalError (exit 3) when no witness is found.
 nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
-                                                bool is_level, int digits);
+                                                bool is_level, bool upper_only, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit

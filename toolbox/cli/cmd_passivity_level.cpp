@@ -225,7 +225,7 @@ int run(const Opts& o) {
     if (G) {
       write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, v.only_bound && v.cert_ok, o.digits));
     } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
-      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, o.digits));
+      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, v.only_bound && v.cert_ok, o.digits));
     }
   }
   if (o.json) report_json(o, v);

@@ -104,6 +104,20 @@ Parts certificate_parts(const nlohmann::json& cert) {
           object_field(cert, "evidence", "certificate")};
 }
 
+ClaimRange upper_bound_claim(const nlohmann::json& claim) {
+  only_fields(claim, {"quantity", "status", "hi", "printed_hi"}, "claim");
+  ClaimRange r;
+  r.status = "upper_bound";
+  r.hi = exact_field(claim, "hi", "claim");
+  if (claim.contains("printed_hi")) {
+    const auto& v = claim.at("printed_hi");
+    const auto q = v.is_string() ? try_parse_rational(v.get<std::string>()) : std::nullopt;
+    if (!q) throw InputError("claim.printed_hi: not a number string");
+    if (*q != r.hi) r.refuted = "claim.printed_hi = " + v.get<std::string>() + " is not the claimed " + r.hi.str();
+  }
+  return r;
+}
+
 ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite) {
   ClaimRange r;
   if (!claim.contains("status") || !claim.at("status").is_string())

@@ -86,6 +86,10 @@ struct ClaimRange {
   std::optional<std::string> refuted;
 };
 ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite = false);
+/// A claim of status "upper_bound" (a level <= hi only): {quantity, status, hi[, printed_hi]}, its
+/// printed decimal the number claimed; status "upper_bound" and lo unused (ClaimRange's refuted set
+/// when printed_hi is not hi). InputError when malformed.
+ClaimRange upper_bound_claim(const nlohmann::json& claim);
 /// x to 12 significant digits (the checkers' reasons).
 std::string decimal(const rational& x);
 /// |printed - x| <= half a unit in the last digit of `printed` (a decimal "-?D+(.D+)?(e[+-]?D+)?",

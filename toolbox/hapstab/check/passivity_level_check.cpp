@@ -49,14 +49,9 @@ Verdict check_passivity_level(const nlohmann::json& cert) {
 
   // ---- an upper bound only (header): Re W(c0) <= hi at the witness with Q(c0) > 0
   if (claim.contains("status") && claim.at("status") == "upper_bound") {
-    detail::only_fields(claim, {"quantity", "status", "hi", "printed_hi"}, "claim");
-    const rational hi = exact_field(claim, "hi", "claim");
-    if (claim.contains("printed_hi")) {
-      const auto& v = claim.at("printed_hi");
-      const auto q = v.is_string() ? try_parse_rational(v.get<std::string>()) : std::nullopt;
-      if (!q) throw InputError("claim.printed_hi: not a number string");
-      if (*q != hi) return {false, "claim.printed_hi = " + v.get<std::string>() + " is not the claimed " + hi.str()};
-    }
+    const detail::ClaimRange range = detail::upper_bound_claim(claim);
+    if (range.refuted) return {false, *range.refuted};
+    const rational& hi = range.hi;
     const rational c0 = exact_field(evidence, "witness_c", "evidence");
     if (c0 < -1 || c0 > 1) return {false, "evidence.witness_c = " + detail::shortened(c0) + " is outside [-1, 1]"};
     if (Q(c0) == 0) return {false, std::string("evidence.witness_c: ") + (osp ? "G" : "1/G") + " = 0 there (no bound from it)"};

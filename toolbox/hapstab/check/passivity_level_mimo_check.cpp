@@ -340,6 +340,30 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
   const SchurCohn stable = schur_cohn(d);
   if (!stable.stable)
     throw InputError("model.A: not Schur stable (" + stable.why + "): the level is not its frequency minimum");
+
+  // ---- an upper bound only (header): the pencil at hi not > 0 at the witness, G(z0) regular (OSP)
+  if (claim.contains("status") && claim.at("status") == "upper_bound") {
+    const detail::ClaimRange range = detail::upper_bound_claim(claim);
+    detail::only_fields(evidence, {"witness_c", "witness_s"}, "evidence");
+    const rational c0 = exact_field(evidence, "witness_c", "evidence"), s0 = exact_field(evidence, "witness_s", "evidence");
+    if (range.refuted) return {false, *range.refuted};
+    const rational& hi = range.hi;
+    if (c0 * c0 + s0 * s0 != 1)
+      return {false, "evidence: the witness (c0, s0) = (" + detail::shortened(c0) + ", " + detail::shortened(s0) +
+                         ") is not on the unit circle (c0^2 + s0^2 != 1)"};
+    const Cq z0(c0, s0);
+    if (s.osp && det(G_at(s, z0)).is_zero())
+      return {false, "evidence: det G = 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0) +
+                         " (no bound from it: the pencil is singular there for every nu)"};
+    if (positive_definite(s, z0, hi))
+      return {false, level + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: " + pencil(s, "hi") +
+                         " is positive definite at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0)};
+    return {true, level + " <= " + detail::decimal(hi) + " (" + (s.osp ? "OSP" : "ISP") + ", " + std::to_string(s.m) + "x" +
+                      std::to_string(s.m) + ", an upper bound only: " + pencil(s, "hi") + " not > 0 at the witness z0 = " +
+                      detail::shortened(c0) + " + j " + detail::shortened(s0) +
+                      (s.osp ? ", where det G != 0" : "") + ", so the frequency inequality of every level above hi fails there; "
+                      "A Schur stable: " + stable.why + ")"};
+  }
   std::string regular;
   if (s.osp) {  // G regular on the circle, so He G - nu G^H G = G^H (He G^-1 - nu I) G there
     const std::string why = zero_on_circle(s, d);

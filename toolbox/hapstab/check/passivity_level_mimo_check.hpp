@@ -48,6 +48,12 @@
 //   Hence the OSP hypotheses: det G != 0 on the circle -- Z(c) = (d(z) d(1/z))^m det G(z) det G(1/z)
 //   (degree <= mn, interpolated as P_nu) has no root in [-1, 1] (Z(+-1) != 0, Sturm count 0) --
 //   and lo > 0 (an OSP value <= 0 bounds Lemma 1's level only from above, as the SISO kind says).
+//   (upper bound only, claim status "upper_bound", {hi[, printed_hi]}: an OSP value <= 0 is written so)
+//     level <= hi  if  the pencil at hi is not > 0 at the witness z0 (evidence.witness_c, witness_s on
+//     the circle exactly) and, for OSP, det G(z0) != 0 (exact, in Q(j)): then He G^-1(z0) - hi I is
+//     not > 0 (a congruence), so for every nu > hi He G - nu G^H G = G^H (He G^-1 - nu I) G is not
+//     >= 0 at z0, and the frequency inequality of every level above hi fails (it is necessary for a
+//     stable G to be nu-passive). No hypothesis on the rest of the circle; ISP likewise (He G - nu I).
 // Hypotheses, verified: T > 0; model.kind "isp" or "osp"; A
 // n x n with n >= 1, B n x m, C m x n, D m x m (square G) with every entry a "p/q" string; A Schur
 // stable (check/schur_cohn.hpp on d; then d(t) != 0 for |t| >= 1 and He G is continuous on the
