@@ -761,7 +761,7 @@ def check_bound(c):
     only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     if "infinite" in claim:
-        only(evidence, ("pole_c", "side", "end_lo", "end_hi"), "evidence")
+        only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
     H, T, eta, P, q = bound_model(model)
@@ -796,10 +796,14 @@ def bound_infinite(H, T, P, q, status, evidence):
         if "pole_c" in evidence or "side" in evidence:
             raise Malformed("evidence: end_lo/end_hi beside pole_c/side (one pole)")
         return bound_infinite_at_end(H, T, P, q, exact(evidence, "end_lo", "evidence"), exact(evidence, "end_hi", "evidence"))
-    cp = exact(evidence, "pole_c", "evidence")
     side = evidence.get("side")
     if side not in (1, -1) or isinstance(side, bool):
         raise Malformed("evidence.side: missing or not +1 or -1")
+    if "pole_lo" in evidence or "pole_hi" in evidence:
+        if "pole_c" in evidence:
+            raise Malformed("evidence: pole_lo/pole_hi beside pole_c (one pole)")
+        return bound_infinite_inside(H, T, P, q, exact(evidence, "pole_lo", "evidence"), exact(evidence, "pole_hi", "evidence"), side)
+    cp = exact(evidence, "pole_c", "evidence")
     if not in_band(cp, q):
         return False, "b* = +inf not shown: evidence.pole_c = %s is outside the band [cos(pi/%d), 1]" % (short(cp), q)
     if side == 1 and cp == 1:
@@ -830,6 +834,30 @@ def cheb_u(k):
     for _ in range(k - 1):
         prev, cur = cur, psub(pmul([Fraction(0), Fraction(2)], cur), prev)
     return cur
+
+
+def bound_infinite_inside(H, T, P, q, s, b, side):
+    """b* = +inf at a pole inside the band that (s, b) isolates (an irrational one: a pole of H on the
+    circle seen through t_d/T = p/q): s < b both in the band; the reduced denominator R has exactly one
+    root in (s, b) and none at s or b, the reduced numerator Er none in [s, b]; so Er/R keeps one sign on
+    each side of the pole within (s, b) and its modulus grows without bound towards it: +inf from above
+    iff Er(b) R(b) > 0, from below iff Er(s) R(s) > 0."""
+    if not s < b:
+        return False, "b* = +inf not shown: not pole_lo < pole_hi"
+    if not in_band(s, q) or not in_band(b, q):
+        return False, "b* = +inf not shown: pole_lo or pole_hi is outside the band [cos(pi/%d), 1]" % q
+    E, F = objective_c(H, T, P, q)
+    g = pgcd(E, F)
+    Er, R = (pdivmod(E, g)[0], pdivmod(F, g)[0]) if g else (E, F)
+    if len(R) < 2 or peval(R, s) == 0 or peval(R, b) == 0 or roots_in(R, s, b) != 1:
+        return False, "b* = +inf not shown: (pole_lo, pole_hi) does not isolate one pole of the objective"
+    if peval(Er, s) == 0 or peval(Er, b) == 0 or (len(Er) > 1 and roots_in(Er, s, b) != 0):
+        return False, "b* = +inf not shown: the reduced numerator has a root in [pole_lo, pole_hi]"
+    at = b if side == 1 else s
+    if (peval(Er, at) > 0) != (peval(R, at) > 0):
+        return False, "b* = +inf not shown: the objective tends to -inf as c -> the pole from %s" % ("above" if side == 1 else "below")
+    return True, "b* = +inf: the objective tends to +inf as c -> its pole in (%s, %s) from %s" % (
+        short(s), short(b), "above" if side == 1 else "below")
 
 
 def bound_infinite_at_end(H, T, P, q, s, b):

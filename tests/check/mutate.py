@@ -325,6 +325,9 @@ def rand_inf_model(rng):
         q = rng.choice([2, 3, 2, 3, 4, 5, 7])  # q >= 4: the pole at the band's irrational end cos(pi/q)
         m["delay"] = rng.choice([0, 0, 2])
         m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, q)]), q) * Fraction(m["T"]))
+    elif "z^2 + 1" in H and rng.random() < 0.5:  # the poles at +-j through t_d/T = p/q: c_p = cos(pi/(2q)), irrational
+        q = rng.choice([2, 3, 4, 5, 7])
+        m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, q)]), q) * Fraction(m["T"]))
     return m
 
 
@@ -349,6 +352,28 @@ def inf_mutants(cert, rng, hapstab, cache):
         T = Fraction(m["T"])
         for name, nm in (("frac_delay + T (sin(pi tau) flipped: -inf, issue 46 item 1)", dict(m, frac_delay=frac(Fraction(m["frac_delay"]) + T))),
                          ("delay + 1", dict(m, delay=m["delay"] + 1))):
+            enc = certified_enclosure(hapstab, nm, cache)
+            out.append(("model: " + name, with_field(cert, ["model"], nm), "agree" if enc == "inf" else "same" if enc is None else "refute"))
+        return out
+    if "pole_lo" in ev:  # an irrational pole inside the band, isolated in (pole_lo, pole_hi)
+        lo, hi, side = Fraction(ev["pole_lo"]), Fraction(ev["pole_hi"]), ev["side"]
+        w = hi - lo
+        out += [("side flipped (the objective -> -inf there)", with_field(cert, ["evidence", "side"], -side), "refute"),
+                ("the interval moved past the pole", with_field(with_field(cert, ["evidence", "pole_lo"], frac(hi + w / 3)),
+                                                                ["evidence", "pole_hi"], frac(hi + w)), "refute"),
+                ("pole_hi below pole_lo", with_field(cert, ["evidence", "pole_hi"], frac(lo - w)), "refute"),
+                ("pole_lo -> -1 (outside the band, or other poles inside)", with_field(cert, ["evidence", "pole_lo"], "-1"), "refute"),
+                ("pole_hi -> 1 (the numerator's roots or other poles, maybe)", with_field(cert, ["evidence", "pole_hi"], "1"), "agree"),
+                ("pole_lo a decimal", with_field(cert, ["evidence", "pole_lo"], str(float(lo))), "malformed"),
+                ("pole_c beside pole_lo", with_field(cert, ["evidence", "pole_c"], frac((lo + hi) / 2)), "malformed"),
+                ("end_lo beside pole_lo", with_field(cert, ["evidence", "end_lo"], frac(lo)), "malformed"),
+                ("deleted evidence.pole_hi", deleted(cert, ["evidence", "pole_hi"]), "malformed"),
+                ("deleted evidence.side", deleted(cert, ["evidence", "side"]), "malformed"),
+                ("claim made finite (b* = 0)", with_field(deleted(cert, ["claim", "infinite"]), ["claim", "value"], "0"), "malformed")]
+        m = cert["model"]
+        T = Fraction(m["T"])
+        for name, nm in (("frac_delay + T", dict(m, frac_delay=frac(Fraction(m["frac_delay"]) + T))), ("delay + 1", dict(m, delay=m["delay"] + 1)),
+                         ("K negated", dict(m, set=dict(m["set"], K=frac(-Fraction(m["set"]["K"])))))):
             enc = certified_enclosure(hapstab, nm, cache)
             out.append(("model: " + name, with_field(cert, ["model"], nm), "agree" if enc == "inf" else "same" if enc is None else "refute"))
         return out
@@ -1901,11 +1926,12 @@ def print_new_branches(certs):
     if infs:
         at = [c for c in infs if "pole_c" in c["evidence"]]
         print("  bound-inf branches: integer delay %d, fractional %d; side +1 %d, -1 %d; pole at c = 1 %d, 0 %d, other %d, "
-              "at the irrational band end %d" % (
+              "at the irrational band end %d, irrational inside the band %d" % (
                   sum(1 for c in infs if "frac_delay" not in c["model"]), sum(1 for c in infs if "frac_delay" in c["model"]),
                   sum(1 for c in at if c["evidence"]["side"] == 1), sum(1 for c in at if c["evidence"]["side"] == -1),
                   sum(1 for c in at if c["evidence"]["pole_c"] == "1"), sum(1 for c in at if c["evidence"]["pole_c"] == "0"),
-                  sum(1 for c in at if c["evidence"]["pole_c"] not in ("0", "1")), len(infs) - len(at)))
+                  sum(1 for c in at if c["evidence"]["pole_c"] not in ("0", "1")), sum(1 for c in infs if "end_lo" in c["evidence"]),
+                  sum(1 for c in infs if "pole_lo" in c["evidence"])))
     if mutate_multidof.branches(certs):
         print(mutate_multidof.branches(certs))
     wedges = [c for k, c in certs if k == "wedge"]

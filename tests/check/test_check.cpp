@@ -129,6 +129,38 @@ TEST(BoundCheck, InfiniteAtTheIrrationalBandEnd) {
   EXPECT_THROW(check_certificate(both), InputError);
 }
 
+// An irrational pole inside the band: H = K/(z^2 + 1) (poles at z = +-j), T = 1, t_d = T/3 (q = 3,
+// band c = cos(theta/3) in [1/2, 1]). By hand, with H(e^{j theta}) = e^{-j theta}/(2 cos theta) and
+// 1/(1 - e^{j theta}) = j e^{-j theta/2}/(2 sin(theta/2)): f = K sin(11 theta/6)/(4 cos theta sin(theta/2)),
+// so at theta = pi/2 (c_p = cos(pi/6) = sqrt(3)/2, in (433/500, 867/1000)) f -> +K inf from theta < pi/2,
+// i.e. from c > c_p (side +1) for K = 1, from below for K = -1. The numerator's zero at theta = 6 pi/11
+// (c = 0.841) lies in (4/5, 867/1000); (867/1000, 9/10) holds no pole.
+TEST(BoundCheck, InfiniteAtAnIrrationalPoleInsideTheBand) {
+  auto cert = [](const std::string& K, const std::string& lo, const std::string& hi, long side) {
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound"},
+                          {"model", {{"H", "K/(z^2+1)"}, {"set", {{"K", K}}}, {"T", "1"}, {"delay", 0}, {"frac_delay", "1/3"}, {"eta", "0"}}},
+                          {"claim", {{"status", "exact"}, {"infinite", true}}},
+                          {"evidence", {{"pole_lo", lo}, {"pole_hi", hi}, {"side", side}}}};
+  };
+  const Verdict ok = check_certificate(cert("1", "433/500", "867/1000", 1));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  const Verdict minus = check_certificate(cert("1", "433/500", "867/1000", -1));
+  EXPECT_FALSE(minus.verified);
+  EXPECT_NE(minus.reason.find("-inf"), std::string::npos) << minus.reason;
+  EXPECT_TRUE(check_certificate(cert("-1", "433/500", "867/1000", -1)).verified);
+  EXPECT_FALSE(check_certificate(cert("-1", "433/500", "867/1000", 1)).verified);
+  const Verdict none = check_certificate(cert("1", "867/1000", "9/10", 1));
+  EXPECT_FALSE(none.verified);
+  EXPECT_NE(none.reason.find("does not isolate"), std::string::npos) << none.reason;
+  const Verdict zero = check_certificate(cert("1", "4/5", "867/1000", 1));
+  EXPECT_FALSE(zero.verified);
+  EXPECT_NE(zero.reason.find("numerator"), std::string::npos) << zero.reason;
+  EXPECT_FALSE(check_certificate(cert("1", "-1/10", "867/1000", 1)).verified);  // below the band's end 1/2
+  auto both = cert("1", "433/500", "867/1000", 1);
+  both["evidence"]["pole_c"] = "0";
+  EXPECT_THROW(check_certificate(both), InputError);
+}
+
 // H = K: f = Re{T K/(1 - z)} = T K/2 for every w, so b* = T K/2 exactly.
 TEST(BoundCheck, ConstantGainExact) {
   const auto ok = check_certificate(bound_cert("K", "4", "1/2", 0, {{"status", "exact"}, {"value", "1"}}, "1/3"));

@@ -866,6 +866,32 @@ class BoundInfinite(unittest.TestCase):
         c["evidence"]["pole_c"] = "1"
         self.assertEqual(hc.check(c)[0], 2)
 
+    def test_at_an_irrational_pole_inside_the_band(self):
+        # test_check.cpp's BoundCheck.InfiniteAtAnIrrationalPoleInsideTheBand: K/(z^2 + 1), T = 1, t_d = T/3:
+        # f = K sin(11 theta/6)/(4 cos theta sin(theta/2)) -> +K inf as theta -> pi/2 from below, i.e. from
+        # c = cos(theta/3) > sqrt(3)/2 (side +1) for K = 1
+        def cert(K, lo, hi, side):
+            return {"certificate": "hapstab", "version": 1, "kind": "bound",
+                    "model": {"H": "K/(z^2+1)", "set": {"K": K}, "T": "1", "delay": 0, "frac_delay": "1/3", "eta": "0"},
+                    "claim": {"status": "exact", "infinite": True},
+                    "evidence": {"pole_lo": lo, "pole_hi": hi, "side": side}}
+        self.assertEqual(hc.check(cert("1", "433/500", "867/1000", 1))[0], 0)
+        code, why = hc.check(cert("1", "433/500", "867/1000", -1))
+        self.assertEqual(code, 1)
+        self.assertIn("-inf", why)
+        self.assertEqual(hc.check(cert("-1", "433/500", "867/1000", -1))[0], 0)
+        self.assertEqual(hc.check(cert("-1", "433/500", "867/1000", 1))[0], 1)
+        code, why = hc.check(cert("1", "867/1000", "9/10", 1))
+        self.assertEqual(code, 1)
+        self.assertIn("does not isolate", why)
+        code, why = hc.check(cert("1", "4/5", "867/1000", 1))
+        self.assertEqual(code, 1)
+        self.assertIn("numerator", why)
+        self.assertEqual(hc.check(cert("1", "-1/10", "867/1000", 1))[0], 1)
+        c = cert("1", "433/500", "867/1000", 1)
+        c["evidence"]["pole_c"] = "0"
+        self.assertEqual(hc.check(c)[0], 2)
+
 
 class BoundNumDen(unittest.TestCase):
     """H given by its coefficients (--num/--den, a .mat's num and den) is the same H (test_check.cpp's

@@ -192,23 +192,32 @@ nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
 
 // b* = +inf: the claim, and the first rational pole c_p of the objective in the band (a root of
 // its denominator, met exactly or by a convergent of a refined isolating interval) and side that
-// check/ verifies (the objective -> +inf there, check/bound_objective.hpp), or, for the pole at the
-// band's irrational end cos(pi/q), an interval (end_lo, end_hi] isolating it; InputError when none.
+// check/ verifies (the objective -> +inf there, check/bound_objective.hpp), an irrational pole's
+// isolating interval (pole_lo, pole_hi) and side, or, for the pole at the band's irrational end
+// cos(pi/q), an interval (end_lo, end_hi] isolating it; InputError when none.
 nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, const WitnessObjective& o) {
   claim["status"] = "exact";
   claim["infinite"] = true;
   j["claim"] = claim;
   const QPoly& den = o.f.den();
   std::vector<rational> poles;
+  std::vector<RootInterval> irrational;  // isolating intervals of poles with no rational value
   if (den.degree() >= 1)
-    for (RootInterval r : isolate_real_roots(den, o.end_lo, rational(1))) {
-      if (!r.is_exact()) r = refine_root(den, r, rational(1) / rational(pow(integer(2), 200)));
+    for (const RootInterval& r0 : isolate_real_roots(den, o.end_lo, rational(1))) {
+      const RootInterval r = r0.is_exact() ? r0 : refine_root(den, r0, rational(1) / rational(pow(integer(2), 200)));
       if (r.is_exact() && den(r.lo) == 0) poles.push_back(r.lo);
-      else if (auto c = first_convergent((r.lo + r.hi) / 2, [&](const rational& x) { return den(x) == 0; })) poles.push_back(*c);
+      // a convergent of the midpoint inside the interval (an earlier one may be another root: c = 0)
+      else if (auto c = first_convergent((r.lo + r.hi) / 2, [&](const rational& x) { return r.lo <= x && x <= r.hi && den(x) == 0; }))
+        poles.push_back(*c);
+      else if (!r.is_exact()) irrational.push_back(refine_root(den, r0, rational(1) / rational(pow(integer(2), 40))));
     }
   std::vector<nlohmann::json> candidates;
   for (const rational& c : poles)
     for (long side : {-1L, 1L}) candidates.push_back({{"pole_c", c.str()}, {"side", side}});
+  // an irrational pole inside the band (H's pole on the circle through t_d/T = p/q): its isolating
+  // interval, open, the ends no roots of the objective's denominator
+  for (const RootInterval& r : irrational)
+    for (long side : {-1L, 1L}) candidates.push_back({{"pole_lo", r.lo.str()}, {"pole_hi", r.hi.str()}, {"side", side}});
   // the pole at the band's irrational end cos(pi/q) (z = -1 with t_d/T = p/q, q >= 4): an interval
   // (end_lo, end_hi] around it, narrower until nothing else of the objective lies in it
   const long q = check::detail::read_delay_model(j["model"]).q;
@@ -226,8 +235,8 @@ nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, c
     } catch (const InputError&) {  // this candidate is not in the checker's terms: the next one
     }
   }
-  throw InputError("--certificate: b* = +inf, but no pole of the objective in the band (rational, or the band's end "
-                   "cos(pi/q)) was shown to send it to +inf: no certificate");
+  throw InputError("--certificate: b* = +inf, but no pole of the objective in the band (rational, irrational and isolated, "
+                   "or the band's end cos(pi/q)) was shown to send it to +inf: no certificate");
 }
 
 }  // namespace

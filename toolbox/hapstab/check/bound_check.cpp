@@ -17,7 +17,9 @@ namespace {
 using P = Polynomial<rational>;
 
 // b* = +inf (claim.infinite, status exact): the objective tends to +inf at evidence.pole_c from
-// evidence.side (check/bound_objective.hpp, unbounded_above_fails).
+// evidence.side (check/bound_objective.hpp, unbounded_above_fails), at an irrational pole the
+// interval (pole_lo, pole_hi) isolates, from side (unbounded_inside_fails), or at the band's
+// irrational end (end_lo, end_hi] (unbounded_at_end_fails).
 Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm,
                        const std::string& status) {
   if (status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
@@ -30,10 +32,18 @@ Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H
                       std::to_string(dm.q) + ") from above (wT -> pi; isolated in (" + detail::shortened(s) + ", " +
                       detail::shortened(b) + "])"};
   }
-  const rational c_p = detail::exact_field(evidence, "pole_c", "evidence");
-  // the side of pole_c the objective is approached from: +1 or -1
+  // the side of the pole the objective is approached from: +1 or -1
   const long side = detail::integer_field(evidence, "side", "evidence", -1, 1);
-  if (side == 0) throw InputError("evidence.side: 0 is not +1 or -1 (the side of pole_c the objective is approached from)");
+  if (side == 0) throw InputError("evidence.side: 0 is not +1 or -1 (the side of the pole the objective is approached from)");
+  if (evidence.contains("pole_lo") || evidence.contains("pole_hi")) {  // an irrational pole inside the band, isolated
+    if (evidence.contains("pole_c")) throw InputError("evidence: pole_lo/pole_hi beside pole_c (one pole)");
+    const rational s = detail::exact_field(evidence, "pole_lo", "evidence"), b = detail::exact_field(evidence, "pole_hi", "evidence");
+    const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
+    if (auto why = detail::unbounded_inside_fails(f, s, b, side, dm.q)) return {false, "b* = +inf not shown: " + *why};
+    return {true, "b* = +inf: the objective tends to +inf as c = cos(wT/" + std::to_string(dm.q) + ") -> its pole isolated in (" +
+                      detail::shortened(s) + ", " + detail::shortened(b) + ")" + (side > 0 ? " from above" : " from below")};
+  }
+  const rational c_p = detail::exact_field(evidence, "pole_c", "evidence");
   const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);
   if (auto why = detail::unbounded_above_fails(f, c_p, side, dm.q)) return {false, "b* = +inf not shown: " + *why};
   return {true, "b* = +inf: the objective tends to +inf as c = cos(wT/" + std::to_string(dm.q) + ") -> " +
@@ -51,7 +61,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::only_fields(model, {"H", "set", "num", "den", "T", "delay", "frac_delay", "eta"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
-  if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi"}, "evidence");
+  if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   const detail::DelayModel dm = detail::read_delay_model(model);
   const rational& eta = dm.eta;

@@ -29,14 +29,17 @@
 //           sign Ar(c_p) * side^m * sign R(c_p) > 0 (bound_objective.hpp, unbounded_above_fails).
 //           The Tustin wall with t_d = T/2 (sin(pi tau) > 0) tends to +inf at wT = pi; with
 //           t_d = 1.5 T to -inf (issue 46 item 1's false +inf): the sign decides, exactly.
+//           An irrational pole inside the band (H's pole on the circle at theta_p seen through
+//           t_d/T = p/q: c_p = cos(theta_p/q)) is given by an interval (evidence.pole_lo, pole_hi)
+//           isolating it and the side (unbounded_inside_fails); the band's irrational end
+//           cos(pi/q) by (end_lo, end_hi] (unbounded_at_end_fails).
 // Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
 // takes ~7 s), else the certificate is refused (InputError) rather than checked for hours.
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,
 // eta >= 0, lo <= hi, the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers
 // claimed, exactly.
 // Not verified here: that H is stable (the premise under which b* is the passivity bound of
-// paper 001, not part of the value of the sup). A pole at an irrational c_p (z = -1 with q >= 4)
-// has no +inf certificate: the producer refuses it.
+// paper 001, not part of the value of the sup).
 //
 // Implements: paper 001 (45), (54).
 #pragma once

@@ -207,6 +207,26 @@ std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const 
   return std::nullopt;
 }
 
+std::optional<std::string> unbounded_inside_fails(const ObjectivePolys& f, const rational& s, const rational& b, long side, long q) {
+  if (!(s < b)) return std::string("evidence: not pole_lo < pole_hi");
+  if (!in_domain(s, q) || !in_domain(b, q))
+    return "evidence: pole_lo or pole_hi is outside the band [cos(pi/" + std::to_string(q) + "), 1]";
+  const P g = gcd(f.A, f.B);
+  const P Ar = divmod(f.A, g).first, R = divmod(f.B, g).first;
+  const auto square_free = [](const P& p) { return p.degree() < 1 ? p : divmod(p, gcd(p, p.derivative())).first; };
+  const P Rs = square_free(R), As = square_free(Ar);
+  if (Rs.degree() < 1 || Rs(s) == 0 || Rs(b) == 0 || sturm_count(Rs, s, b) != 1)
+    return std::string("(pole_lo, pole_hi) does not isolate one pole of the objective (the reduced denominator has not exactly "
+                       "one root inside it and none at its ends)");
+  if (As(s) == 0 || As(b) == 0 || (As.degree() >= 1 && sturm_count(As, s, b) != 0))
+    return std::string("the reduced numerator has a root in [pole_lo, pole_hi]");
+  const rational& at = side > 0 ? b : s;
+  if ((Ar(at) > 0) != (R(at) > 0))
+    return std::string("the objective tends to -inf as c -> the pole from ") + (side > 0 ? "above" : "below") +
+           " (Ar R < 0 on that side of it in (pole_lo, pole_hi))";
+  return std::nullopt;
+}
+
 std::optional<std::string> unbounded_at_end_fails(const ObjectivePolys& f, const rational& s, const rational& b, long q) {
   if (q < 2) return std::string("evidence.end_lo: the band's end is c = -1 (an integer delay): give pole_c");
   if (!(s >= -1 && s < b && b <= 1)) return "evidence: not -1 <= end_lo < end_hi <= 1";

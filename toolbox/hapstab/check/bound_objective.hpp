@@ -97,6 +97,15 @@ std::optional<std::string> unbounded_above_fails(const ObjectivePolys& f, const 
 /// c -> c_e from above (inside the band): +inf iff Ar(b) R(b) > 0. Else what failed.
 std::optional<std::string> unbounded_at_end_fails(const ObjectivePolys& f, const rational& s, const rational& b, long q);
 
+/// nullopt when the objective is unbounded above at a pole c_p inside the band that the rational
+/// interval (s, b) isolates (an irrational one: H's pole on the circle seen through t_d/T = p/q,
+/// cos(theta_p/q)), everything decided exactly: s and b in the band [cos(pi/q), 1], s < b; the reduced
+/// denominator R = B/gcd(A, B) has exactly one root in (s, b) and none at s or b (its square-free
+/// part, Sturm), Ar = A/gcd none in [s, b]. So f = Ar/R keeps the sign of Ar(b) R(b) on (c_p, b] and of
+/// Ar(s) R(s) on [s, c_p), and |f| -> inf as c -> c_p (R -> 0, |Ar| bounded below on [s, b]): +inf from
+/// the side sigma = +1 iff Ar(b) R(b) > 0, from sigma = -1 iff Ar(s) R(s) > 0. Else what failed.
+std::optional<std::string> unbounded_inside_fails(const ObjectivePolys& f, const rational& s, const rational& b, long side, long q);
+
 /// A rational in a message: "p/q", cut at 40 characters.
 std::string shortened(const rational& x);
 
