@@ -2857,6 +2857,65 @@ def check_stability_loop(c):
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 
 
+def check_operator_passivity(c):
+    """Assumption 1(b) of paper 000 fails for the scene's operator claim.operator (a tf matrix in s): a
+    positive real Z has He Z(jw) >= 0 at every real w that is not a pole, so the principal minor of He
+    Z(jw) on evidence.minor (0-based rows) being < 0 at evidence.w, exactly in Q(j), with no entry's
+    denominator 0 there, shows Z is not passive (check/operator_passivity_check.hpp)."""
+    model, claim, evidence = parts(c)
+    only(claim, ("quantity", "status", "operator", "passive"), "claim")
+    only(evidence, ("w", "minor"), "evidence")
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: missing or not \"exact\"")
+    if not isinstance(claim.get("passive"), bool):
+        raise Malformed("claim.passive: missing or not true/false")
+    if claim["passive"]:
+        raise Malformed("claim.passive: true has no certificate form here (only false, with a witness)")
+    name = claim.get("operator")
+    if not isinstance(name, str):
+        raise Malformed("claim.operator: missing or not a string")
+    ops = scene_loop_read(model)[6]
+    root = scene_read(model, False, coupling=True)[0]
+    named = [o.get("name") for o in root.get("operator", []) if "tf" in o or "ss" in o]
+    at = [i for i, n in enumerate(named) if n == name]
+    if len(at) != 1:
+        raise Malformed("claim.operator: %s operator given by tf or ss named %r in the scene" % ("no" if not at else "more than one", name))
+    Z = ops[at[0]][1]
+    if Z[0] != "tf":
+        raise Malformed("claim.operator: %r is given by ss (beyond this checker: tf only)" % name)
+    Z = Z[1]
+    q = len(Z)
+    w = exact(evidence, "w", "evidence")
+    rows = evidence.get("minor")
+    if not isinstance(rows, list) or not rows or any(not isinstance(r, int) or isinstance(r, bool) or not 0 <= r < q for r in rows):
+        raise Malformed("evidence.minor: not a non-empty array of integers in [0, %d)" % q)
+    if any(rows[k] >= rows[k + 1] for k in range(len(rows) - 1)):
+        raise Malformed("evidence.minor: rows not increasing")
+
+    def at_jw(p):
+        v = cq(0)
+        for a in reversed(p):
+            v = cq_add(cq_mul(v, (Fraction(0), w)), cq(a))
+        return v
+    Zj = [[None] * q for _ in range(q)]
+    for i in range(q):
+        for j in range(q):
+            d = at_jw(Z[i][j].den)
+            if d == (0, 0):
+                return False, "Z(s) of %r has a pole at s = jw, w = %s" % (name, short(w))
+            Zj[i][j] = cq_div(at_jw(Z[i][j].num), d)
+    H = [[((Zj[a][b][0] + Zj[b][a][0]) / 2, (Zj[a][b][1] - Zj[b][a][1]) / 2) for b in rows] for a in rows]
+    m = cq_det(H)
+    if m[1] != 0:
+        raise AssertionError("a Hermitian minor is not real")
+    which = ",".join(str(r + 1) for r in rows)
+    if m[0] >= 0:
+        return False, "operator %r not passive not shown: the principal minor {%s} of He Z(jw) at w = %s is %.12g >= 0" % (
+            name, which, short(w), float(m[0]))
+    return True, "operator %r is not passive: the principal minor {%s} of He Z(jw) at w = %s is %.12g < 0 (Assumption 1(b) fails)" % (
+        name, which, short(w), float(m[0]))
+
+
 def check_stability(c):
     model, claim, evidence = parts(c)
     model = scene_loop_model(model)
@@ -4210,6 +4269,7 @@ def check(c):
                     "multidof-coupling": check_multidof_coupling,
                     "multidof-coupling-symmetric": check_multidof_coupling_symmetric,
                     "multidof-facial": check_multidof_facial,
+                    "operator-passivity": check_operator_passivity,
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max,

@@ -622,6 +622,66 @@ TEST(PassivityLevelMimoCheck, OspRefusesAZeroOnTheCircle) {
   }
 }
 
+// Assumption 1(b) fails (kind operator-passivity): paper 000's H1 = [[0.1 g, 0.05], [0.05, 0.05 g]],
+// g = (s^2 + 5s + 10)/(s^2 + s + 1), so He H1(jw) = [[0.1 r, 0.05], [0.05, 0.05 r]], r = Re g(jw) =
+// ((10 - w^2)(1 - w^2) + 5 w^2)/((1 - w^2)^2 + w^2), and its determinant 0.005 r^2 - 0.0025 < 0 iff r^2 < 1/2:
+// at w = 3, r = 37/73 (det < 0: not passive); at w = 0, r = 10 (det = 0.4975); the minor {1} alone is
+// 0.1 r > 0. A tf operator 1/(s^2 + 1) has a pole at w = 1 (nothing proven there).
+const char* kOperatorScene =
+    "[scene]\n"
+    "name = \"H1\"\n"
+    "T = \"1/100\"\n"
+    "\n"
+    "[[device]]\n"
+    "name = \"a\"\n"
+    "m = \"1/10\"\n"
+    "b = \"137/100\"\n"
+    "\n"
+    "[[device]]\n"
+    "name = \"b\"\n"
+    "m = \"1/10\"\n"
+    "b = \"137/100\"\n"
+    "\n"
+    "[[operator]]\n"
+    "name = \"H1\"\n"
+    "dofs = [\"a\", \"b\"]\n"
+    "tf = [[\"0.1*(s^2+5*s+10)/(s^2+s+1)\", \"0.05\"], [\"0.05\", \"0.05*(s^2+5*s+10)/(s^2+s+1)\"]]\n"
+    "\n"
+    "[[operator]]\n"
+    "name = \"spring\"\n"
+    "dofs = [\"a\"]\n"
+    "tf = \"1/(s^2 + 1)\"\n"
+    "\n"
+    "[environment]\n"
+    "tf = [[\"1000\", \"0\"], [\"0\", \"1000\"]]\n"
+    "";
+nlohmann::json operator_cert(const std::string& op, const std::string& w, const nlohmann::json& minor) {
+  return {{"certificate", "hapstab"}, {"version", 1}, {"kind", "operator-passivity"},
+          {"model", {{"scene", kOperatorScene}, {"set", nlohmann::json::object()}}},
+          {"claim", {{"status", "exact"}, {"operator", op}, {"passive", false}}},
+          {"evidence", {{"w", w}, {"minor", minor}}}};
+}
+
+TEST(OperatorPassivityCheck, PaperH1ByHand) {
+  const Verdict v = check_certificate(operator_cert("H1", "3", {0, 1}));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("Assumption 1(b) fails"), std::string::npos) << v.reason;
+  const Verdict zero = check_certificate(operator_cert("H1", "0", {0, 1}));
+  EXPECT_FALSE(zero.verified);
+  EXPECT_NE(zero.reason.find("0.4975"), std::string::npos) << zero.reason;
+  EXPECT_FALSE(check_certificate(operator_cert("H1", "3", {0})).verified);
+  EXPECT_TRUE(check_certificate(operator_cert("H1", "-717/256", {0, 1})).verified);  // the producer's witness
+  const Verdict pole = check_certificate(operator_cert("spring", "1", {0}));
+  EXPECT_FALSE(pole.verified);
+  EXPECT_NE(pole.reason.find("pole"), std::string::npos) << pole.reason;
+  EXPECT_THROW(check_certificate(operator_cert("H2", "3", {0, 1})), InputError);   // no such operator
+  EXPECT_THROW(check_certificate(operator_cert("H1", "3", {1, 0})), InputError);   // rows not increasing
+  EXPECT_THROW(check_certificate(operator_cert("H1", "3", {0, 2})), InputError);   // a row beyond the operator
+  auto passive = operator_cert("H1", "3", {0, 1});
+  passive["claim"]["passive"] = true;
+  EXPECT_THROW(check_certificate(passive), InputError);
+}
+
 // An OSP value <= 0 is an upper bound only ("upper_bound", the witness alone). G = diag(1/(z - 1/2),
 // 1/(z - 1/5) + d22): at z0 = -1, with d22 = -1, 1/G = diag(-3/2, -6/11), so He G^-1(-1) has
 // lambda_min = -3/2 and delta* <= -3/2 (it is -3/2: Re(z - 1/2) >= -3/2 and Re((z - 1/5)/(6/5 - z)) >

@@ -893,6 +893,61 @@ class BoundInfinite(unittest.TestCase):
         self.assertEqual(hc.check(c)[0], 2)
 
 
+OPERATOR_SCENE = """[scene]
+name = "H1"
+T = "1/100"
+
+[[device]]
+name = "a"
+m = "1/10"
+b = "137/100"
+
+[[device]]
+name = "b"
+m = "1/10"
+b = "137/100"
+
+[[operator]]
+name = "H1"
+dofs = ["a", "b"]
+tf = [["0.1*(s^2+5*s+10)/(s^2+s+1)", "0.05"], ["0.05", "0.05*(s^2+5*s+10)/(s^2+s+1)"]]
+
+[[operator]]
+name = "spring"
+dofs = ["a"]
+tf = "1/(s^2 + 1)"
+
+[environment]
+tf = [["1000", "0"], ["0", "1000"]]
+"""
+
+
+class OperatorPassivity(unittest.TestCase):
+    """test_check.cpp's OperatorPassivityCheck.PaperH1ByHand: He H1(jw) = [[0.1 r, 0.05], [0.05, 0.05 r]],
+    r = Re g(jw); det = 0.005 r^2 - 0.0025, r(3) = 37/73 (< 0), r(0) = 10 (0.4975); 1/(s^2 + 1) has a
+    pole at w = 1."""
+
+    def cert(self, op, w, minor, passive=False):
+        return {"certificate": "hapstab", "version": 1, "kind": "operator-passivity",
+                "model": {"scene": OPERATOR_SCENE, "set": {}},
+                "claim": {"status": "exact", "operator": op, "passive": passive}, "evidence": {"w": w, "minor": minor}}
+
+    def test_paper_h1_by_hand(self):
+        code, why = hc.check(self.cert("H1", "3", [0, 1]))
+        self.assertEqual(code, 0, why)
+        code, why = hc.check(self.cert("H1", "0", [0, 1]))
+        self.assertEqual(code, 1)
+        self.assertIn("0.4975", why)
+        self.assertEqual(hc.check(self.cert("H1", "3", [0]))[0], 1)
+        self.assertEqual(hc.check(self.cert("H1", "-717/256", [0, 1]))[0], 0)
+        code, why = hc.check(self.cert("spring", "1", [0]))
+        self.assertEqual(code, 1)
+        self.assertIn("pole", why)
+        for bad in (self.cert("H2", "3", [0, 1]), self.cert("H1", "3", [1, 0]), self.cert("H1", "3", [0, 2]),
+                    self.cert("H1", "3", [0, 1], passive=True)):
+            self.assertEqual(hc.check(bad)[0], 2)
+
+
 class BoundNumDen(unittest.TestCase):
     """H given by its coefficients (--num/--den, a .mat's num and den) is the same H (test_check.cpp's
     BoundCheck.NumDenIsTheSameH): H = 4 with one sample of delay at T = 1/2, b* = 3 T K/2 = 3; den

@@ -73,7 +73,6 @@ std::vector<Case> catalogue_first() {
       {"bound", "--eta", {"--H", "1", "--T", "1", "--eta", "-1"}, "--eta"},
       // b* = +inf has a certificate at a rational pole or at the band's end cos(pi/q); at an irrational
       // pole inside the band (z = j with t_d = T/2: c = cos(pi/4)) none yet
-      {"bound", "--certificate", {"--H", "z/(z^2+1)", "--T", "1", "--frac-delay", "1/2", "--certificate", "c.json"}, "no pole of the objective in the band"},
       {"bound", "--certificate", {"--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"bound", "--digits", {"--H", "1", "--T", "1", "--digits", "5"}, "--digits"},
       {"bound", "--method", {"--H", "1", "--T", "1", "--method", "fastest"}, "--method"},
@@ -222,6 +221,7 @@ std::vector<Case> catalogue_rest(const std::string& out) {
       {"multidof design", "--no-symmetry", {"--scene", kMulti, "--no-symmetry=maybe"}, "--no-symmetry"},
       {"multidof analyze", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},
       {"multidof analyze", "--certificate", {"--scene", kMulti, "--certificate", "/nonexistent/c.json"}, "--certificate: "},
+      {"multidof analyze", "--premise-certificate", {"--scene", kMulti, "--premise-certificate", "c.json"}, "--premise-certificate: no failing premise"},
       {"multidof design", "--certificate", {"--scene", kMulti, "--certificate", "/nonexistent/c.json"}, "--certificate: "},
       {"multidof design", "--quiet", {"--scene", kMulti, "--quiet=maybe"}, "--quiet"},
       {"multidof design", "--scene", {"--scene", "/nonexistent.toml"}, "the scene file: "},

@@ -211,7 +211,9 @@ TEST(CmdReproduce, AtLeastComparesTheCertifiedGains) {
 // not symmetric) a multidof-facial; so do their `multidof design` runs (multidof-coupling), but case
 // i perturbed's (no V); each checked by both checkers and linked from the scene's row. The loop as
 // written of the scenes stability reads (not the perturbed ones: perturb_C) has its stability-loop
-// certificate: NOT stable without a coupling, stable with the paper's (27) (Fig. 6).
+// certificate: NOT stable without a coupling, stable with the paper's (27) (Fig. 6). Case i nominal,
+// (16) feasible but its 2x2 operator H1 not passive (Theorem 5 concludes nothing), has the failing
+// premise's operator-passivity certificate too.
 TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
   HAPSTAB_NEEDS_PROOFS();
   const fs::path root = fs::path(::testing::TempDir()) / "repro_scene_certificates";
@@ -237,6 +239,16 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
       EXPECT_EQ(c["claim"].value("conserved", 0), two_dof ? 1 : 0) << file;
       continue;
     }
+    if (file.find(".premise.json") != std::string::npos) {  // case i: (16) feasible, H1 not passive: no conclusion
+      EXPECT_EQ(file, "certificates/scene.multidof_case_i_nominal.premise.json");
+      EXPECT_EQ(e["kind"], "operator-passivity") << file;
+      EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
+      EXPECT_EQ(e["command"].get<std::string>().rfind("hapstab multidof analyze --scene examples/multidof_case_i_nominal.toml "
+                                                      "--premise-certificate ", 0),
+                0u)
+          << e["command"];
+      continue;
+    }
     const bool design = file.find(".design.json") != std::string::npos;
     EXPECT_EQ(e["kind"], design ? "multidof-coupling"
                          : file == "certificates/scene.multidof_case_i_perturbed.json" ? "multidof-facial"
@@ -252,6 +264,7 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
   EXPECT_EQ(scenes, (std::set<std::string>{"certificates/scene.000_two_dof_loop.stability.json",
                                             "certificates/scene.multidof_case_i_nominal.json",
                                             "certificates/scene.multidof_case_i_nominal.design.json",
+                                            "certificates/scene.multidof_case_i_nominal.premise.json",
                                             "certificates/scene.multidof_case_i_perturbed.json",
                                             "certificates/scene.multidof_case_ii_coupling.json",
                                             "certificates/scene.multidof_case_ii_coupling.design.json",

@@ -169,15 +169,6 @@ Enclosure<rational> printed_enclosure(nlohmann::json& claim, const std::string& 
 }
 
 // The model of the one-DOF loop of `stability` as written (plant, H, operator, set, T, delay).
-// {"scene": the file's text, "set": the --set values}: the model of a scene's certificate.
-nlohmann::json scene_model_json(const std::string& path, const std::vector<std::string>& sets) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream all;
-  all << in.rdbuf();
-  if (!in) throw InputError("--certificate: cannot read the scene '" + path + "' again");
-  return {{"scene", all.str()}, {"set", sets_json(sets)}};
-}
-
 nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
   if (!text.scene.empty()) return scene_model_json(text.scene, text.sets);  // the checkers read its one-DOF loop themselves
   nlohmann::json m;
@@ -240,6 +231,14 @@ nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, c
 }
 
 }  // namespace
+
+nlohmann::json scene_model_json(const std::string& path, const std::vector<std::string>& sets) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream all;
+  all << in.rdbuf();
+  if (!in) throw InputError("--certificate: cannot read the scene '" + path + "' again");
+  return {{"scene", all.str()}, {"set", sets_json(sets)}};
+}
 
 nlohmann::json certificate_header(const char* kind) {
   nlohmann::json j;

@@ -127,6 +127,9 @@ nlohmann::json limit_cycle_certificate(const TfOptions& tf, const rational& k, c
 
 /// A certificate's envelope: certificate, version, kind, produced_by (every producer starts here).
 nlohmann::json certificate_header(const char* kind);
+/// {"scene": the file's text, "set": the --set values}: the model of a certificate about a scene as
+/// written (the checkers read it themselves: check/scene_model.hpp).
+nlohmann::json scene_model_json(const std::string& path, const std::vector<std::string>& sets);
 /// check/ verifies the certificate before it is written: InputError (exit 2, no file) naming what
 /// fails, never a weaker claim written silently.
 void verify_before_writing(const nlohmann::json& certificate);

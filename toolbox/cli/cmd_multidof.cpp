@@ -74,7 +74,7 @@ namespace {
 using nlohmann::json;
 
 struct Opts {
-  std::string scene, backend = "auto", certificate;
+  std::string scene, backend = "auto", certificate, premise_certificate;
   double duration = 10;
   std::vector<std::string> sets;
   bool json = false, quiet = false, no_symmetry = false;
@@ -224,6 +224,13 @@ int run_analyze(const Opts& o) {
   }();
   if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
     write_certificate(o.certificate, multidof_certificate(sc, a));
+  if (!o.premise_certificate.empty()) {  // (16) feasible, an operator not passive: why Theorem 5 concludes nothing
+    const auto op = operator_passivity_certificate(o.scene, o.sets, a);
+    if (!op)
+      throw InputError("--premise-certificate: no failing premise with a certificate kind here (one: (16) proven feasible and "
+                       "Assumption 1(b) failing for an operator given by tf, in a scene the checkers read): no certificate");
+    write_certificate(o.premise_certificate, *op);
+  }
   const auto& sp = a.scene;
   const auto& r = a.lmis;
   const auto& law = a.loop;
@@ -538,6 +545,12 @@ const Register multidof_cmd({"multidof",
                                                      : "write the certificate that the designed V meets Theorem 4 (JSON: (16)'s "
                                                        "exact point and V-hat's storage P_V) to FILE, for `hapstab check FILE` "
                                                        "(docs/certificates.md)");
+                                 if (nm == "analyze")
+                                   sub->add_option("--premise-certificate", o->premise_certificate,
+                                                   "where (16) is feasible but an operator given by tf is not passive "
+                                                   "(Assumption 1(b): Theorem 5 concludes nothing), write that premise's "
+                                                   "certificate (kind operator-passivity: a negative principal minor of He Z(jw)) "
+                                                   "to FILE, for `hapstab check FILE`; exit 2 where there is none");
                                  sub->add_flag("--no-symmetry", o->no_symmetry,
                                                nm == "analyze" ? "solve (16) whole, not split by the permutations of identical "
                                                                  "DOFs (the same verdict, for comparison; docs/multidof.md)"

@@ -10,11 +10,16 @@
 // The model is the scene's as written: the environment's expressions (`tf`), domain, method and
 // gain, the parameters, the delay, each device's OSP level (a mass-damper's b, or the declared
 // `osp`) and the operators' DOFs (and the designed V).
-// Other verdicts have no multi-DOF kind yet (the loop as written, hidden modes, Assumption 1):
-// asking for one is refused by name (exit 2).
+// Where (16) is proven feasible but Assumption 1(b) fails for an operator given by `tf` (paper 000
+// case i's H1), Theorem 5 concludes nothing: `--premise-certificate FILE` writes the reason, the
+// operator's negative principal minor of He Z(jw) (check/operator_passivity_check.hpp, kind
+// operator-passivity; the model the scene's text). Other verdicts have no multi-DOF kind yet (the loop as written -- `stability
+// --scene` writes its own --, hidden modes, Assumption 1(a)): asking for one is refused by name (exit 2).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +33,11 @@ namespace hapstab::cli {
 /// a device whose OSP level is a certified bound rather than exact or declared. A compact
 /// environment (diagonal / off_diagonal, list parameters) is written out (scene::environment_expressions).
 std::string multidof_certificate_premise(const scene::Scene& sc);
+
+/// The operator-passivity certificate of `a` (above) when (16) is proven feasible and Assumption 1(b)
+/// fails for a tf operator the checkers verify it for; nullopt otherwise (the (16) kinds then).
+std::optional<nlohmann::json> operator_passivity_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
+                                                             const multidof::SceneAnalysis& a);
 
 /// The certificate of `a`'s verdict on (16): feasible (its exact point) or infeasible by a
 /// frequency-domain witness, verified by check/ before it is returned. InputError (exit 2, no file)

@@ -315,6 +315,38 @@ std::optional<CertificateEntry> stability_scene_certificate(const SceneRun& r, c
   return e;
 }
 
+// `multidof analyze --premise-certificate` on the scene of r (written as scene.STEM.premise.json), or
+// nullopt where the failing premise has no certificate kind (refused by name: the row says so).
+std::optional<CertificateEntry> premise_certificate(SceneRun& r, const fs::path& dir) {
+  CertificateEntry e;
+  e.claim = scene_claim_id(r);
+  e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".premise.json";
+  e.command = command_text({"multidof", "analyze", "--scene", "examples/" + r.file, "--premise-certificate", e.file});
+  const fs::path path = dir / e.file;
+  const auto t0 = clock_type::now();
+  try {
+    run_in_process({"multidof", "analyze", "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
+                    "--premise-certificate", path.string()});
+  } catch (const InputError& ex) {
+    if (std::string(ex.what()).find("no certificate") != std::string::npos) return std::nullopt;
+    e.error = std::string("the command failed (bad input): ") + ex.what();
+  } catch (const std::exception& ex) {
+    e.error = std::string("the command failed (") + exit_code_for(ex).kind + "): " + ex.what();
+  }
+  e.produce_seconds = since(t0);
+  if (e.error.empty() && !fs::exists(path)) e.error = "the command wrote no certificate";
+  if (fs::exists(path)) {
+    e.bytes = fs::file_size(path);
+    try {
+      std::ifstream in(path);
+      e.kind = json::parse(in).value("kind", std::string());
+    } catch (const std::exception& ex) {
+      if (e.error.empty()) e.error = std::string("the certificate is not JSON: ") + ex.what();
+    }
+  }
+  return e;
+}
+
 }  // namespace
 
 std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& runs, const fs::path& dir) {
@@ -366,6 +398,11 @@ std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& 
       }
     }
     out.push_back(std::move(e));
+    // analyze, (16) feasible and no conclusion: the failing premise's certificate where it has a kind
+    // (an operator given by tf not passive: paper 000 case i's H1)
+    if (sub == "analyze" && run.json.is_object() && run.json.value("feasible", json()) == json(true) &&
+        run.json.value("stability_concluded", json()) == json(false))
+      if (auto p = premise_certificate(r, dir)) out.push_back(std::move(*p));
     // analyze: the loop as written's verdict too (paper 000 Fig. 6(a): without a coupling it is NOT stable)
     const json* loop = run.json.is_object() && run.json.contains("loop_as_written") ? &run.json["loop_as_written"] : nullptr;
     if (sub == "analyze" && loop && loop->is_object() && loop->contains("stable") && (*loop)["stable"].is_boolean())

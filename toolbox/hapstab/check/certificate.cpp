@@ -18,6 +18,7 @@
 #include "hapstab/check/multidof_facial_check.hpp"
 #include "hapstab/check/multidof_symmetric_check.hpp"
 #include "hapstab/check/multidof_witness_check.hpp"
+#include "hapstab/check/operator_passivity_check.hpp"
 #include "hapstab/check/passivity_level_check.hpp"
 #include "hapstab/check/passivity_level_mimo_check.hpp"
 #include "hapstab/check/r_check.hpp"
@@ -290,6 +291,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "multidof-feasible-symmetric") return check_multidof_feasible_symmetric(c);
   if (kind == "multidof-facial") return check_multidof_facial(c);
   if (kind == "multidof-witness") return check_multidof_witness(c);
+  if (kind == "operator-passivity") return check_operator_passivity(c);
   if (kind == "passivity-level") return check_passivity_level(c);
   if (kind == "passivity-level-mimo") return check_passivity_level_mimo(c);
   if (kind == "r") return check_r(c);
@@ -297,7 +299,7 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability-max") return check_stability_max(c);
   if (kind == "stability-loop") return check_stability_loop(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, passivity-level, passivity-level-mimo, r, stability, stability-loop, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, operator-passivity, passivity-level, passivity-level-mimo, r, stability, stability-loop, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {

@@ -437,6 +437,7 @@ void read_loop_operator(const toml::table& op, const std::string& key, const std
     }
   }
   Z.ports = ports;
+  if (const toml::node* nm = op.get("name"); nm && nm->as_string()) Z.name = nm->as_string()->get();
   if (const toml::node* mass = op.get("mass")) {
     const auto* a = mass->as_array();
     if (!a || a->size() != q) malformed(key + ".mass", "expected a mass per DOF of the operator");

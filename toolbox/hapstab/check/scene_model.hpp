@@ -73,6 +73,7 @@ struct SceneLoop {
   /// be 0), b and k
   std::vector<rational> mass, damping, stiffness;
   struct Impedance {
+    std::string name;                                         ///< the table's name ("" when it has none)
     std::vector<int> ports;                                   ///< DOF indices
     std::vector<std::vector<RationalFunction<rational>>> Z;  ///< tf: |ports| x |ports|, in s, proper
     bool is_ss = false;

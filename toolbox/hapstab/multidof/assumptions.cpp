@@ -65,10 +65,17 @@ CP det(const CMat& M) {
   return r;
 }
 
-// Every principal minor of M (as polynomials in w), with the rows it keeps ("1,3").
-std::vector<std::pair<std::string, CP>> principal_minors(const CMat& M) {
+// "1,3": 0-based rows as the messages name them (1-based).
+std::string row_text(const std::vector<size_t>& rows) {
+  std::string s;
+  for (size_t a : rows) s += (s.empty() ? "" : ",") + std::to_string(a + 1);
+  return s;
+}
+
+// Every principal minor of M (as polynomials in w), with the rows it keeps (0-based).
+std::vector<std::pair<std::vector<size_t>, CP>> principal_minors(const CMat& M) {
   const size_t m = M.size();
-  std::vector<std::pair<std::string, CP>> out;
+  std::vector<std::pair<std::vector<size_t>, CP>> out;
   for (unsigned mask = 1; mask < (1u << m); ++mask) {
     std::vector<size_t> idx;
     for (size_t i = 0; i < m; ++i)
@@ -79,9 +86,7 @@ std::vector<std::pair<std::string, CP>> principal_minors(const CMat& M) {
       for (size_t b : idx) row.push_back(M[a][b]);
       S.push_back(row);
     }
-    std::string rows;
-    for (size_t a : idx) rows += (rows.empty() ? "" : ",") + std::to_string(a + 1);
-    out.emplace_back(rows, det(S));
+    out.emplace_back(idx, det(S));
   }
   return out;
 }
@@ -109,14 +114,21 @@ bool nonnegative_on_R(const P& p, rational& witness) {
   return true;
 }
 
-// A Hermitian polynomial matrix is PSD for all real w: empty string, else the failing minor.
-std::string psd_on_R(const CMat& M) {
+// A Hermitian polynomial matrix is PSD for all real w: nullopt, else the first failing minor and w.
+std::optional<NegativeMinor> first_negative_minor(const CMat& M) {
   for (const auto& [rows, d] : principal_minors(M)) {
     if (!d.im.is_zero()) throw NumericalError("a principal minor of a Hermitian matrix is not real");
     rational w;
-    if (!nonnegative_on_R(d.re, w)) return "the principal minor {" + rows + "} is negative at w = " + w.str();
+    if (!nonnegative_on_R(d.re, w)) return NegativeMinor{rows, w};
   }
-  return "";
+  return std::nullopt;
+}
+
+// The same as a message: empty string when PSD, else the failing minor ("{1,3}", 1-based).
+std::string psd_on_R(const CMat& M) {
+  const auto n = first_negative_minor(M);
+  if (!n) return "";
+  return "the principal minor {" + row_text(n->rows) + "} is negative at w = " + n->w.str();
 }
 
 // Sign (-1, 0, 1) of p at the root w0 of the square-free r isolated by I (exact).
@@ -216,7 +228,7 @@ std::string imaginary_axis_poles(const CommonDenominator& c, size_t& poles) {
           return "the residue at the pole " + pole_text(I) + " is not Hermitian: not positive real";
     for (const auto& [rows, d] : minors)
       if (sign_at_root(d.re, r, I) < 0)
-        return "the residue at the pole " + pole_text(I) + " is not positive semidefinite (principal minor {" + rows +
+        return "the residue at the pole " + pole_text(I) + " is not positive semidefinite (principal minor {" + row_text(rows) +
                "} < 0): not positive real";
   }
   return "";
@@ -248,6 +260,12 @@ Verdict operator_passive(const TransferMatrix& H) {
                                 : std::string()) +
                          "; all " + std::to_string((1u << m) - 1) +
                          " principal minors of He H(jw) >= 0 for all real w (exact root isolation)");
+}
+
+std::optional<NegativeMinor> negative_minor(const TransferMatrix& H) {
+  const CommonDenominator c = common_denominator(H, "operator H(s)");
+  if (c.N.size() > 4) return std::nullopt;
+  return first_negative_minor(hermitian_part(c, 0));
 }
 
 Verdict device_is_osp(const TransferMatrix& G, const rational& delta) {

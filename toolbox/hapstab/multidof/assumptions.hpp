@@ -44,6 +44,15 @@ namespace hapstab::multidof {
 /// H must be square, continuous (Domain::s), with proper entries (InputError otherwise).
 Verdict operator_passive(const TransferMatrix& H);
 
+/// A real w and a principal minor (its 0-based rows) of He H(jw) that is < 0 there, exactly (on
+/// |d|^2 He H(jw), d the entries' common denominator: negative only where d(jw) != 0): H is not
+/// positive real. nullopt when every principal minor is >= 0 on the whole axis, or H is above 4 x 4.
+struct NegativeMinor {
+  std::vector<size_t> rows;
+  rational w;
+};
+std::optional<NegativeMinor> negative_minor(const TransferMatrix& H);
+
 /// Is the device G (force -> velocity, square, continuous, proper) delta-OSP? Exact.
 Verdict device_is_osp(const TransferMatrix& G, const rational& delta);
 

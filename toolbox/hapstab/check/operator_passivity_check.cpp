@@ -1,0 +1,100 @@
+// hapstab/check/operator_passivity_check.cpp -- see operator_passivity_check.hpp.
+#include "hapstab/check/operator_passivity_check.hpp"
+
+#include <string>
+#include <vector>
+
+#include "hapstab/check/gaussian_rational.hpp"
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+// p(jw), exactly (Horner in Q(j)).
+Cq at_jw(const Polynomial<rational>& p, const rational& w) {
+  Cq v(rational(0));
+  for (int k = p.degree(); k >= 0; --k) v = v * Cq(rational(0), w) + Cq(p.coeff(k));
+  return v;
+}
+
+// det M over Q(j) by Gaussian elimination with row swaps.
+Cq det(std::vector<std::vector<Cq>> M) {
+  const size_t n = M.size();
+  Cq d(rational(1));
+  for (size_t k = 0; k < n; ++k) {
+    size_t p = k;
+    while (p < n && M[p][k].is_zero()) ++p;
+    if (p == n) return Cq(rational(0));
+    if (p != k) std::swap(M[p], M[k]), d = Cq(rational(0)) - d;
+    d = d * M[k][k];
+    for (size_t i = k + 1; i < n; ++i) {
+      if (M[i][k].is_zero()) continue;
+      const Cq f = M[i][k] / M[k][k];
+      for (size_t j = k; j < n; ++j) M[i][j] = M[i][j] - f * M[k][j];
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+Verdict check_operator_passivity(const nlohmann::json& cert) {
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  detail::only_fields(claim, {"quantity", "status", "operator", "passive"}, "claim");
+  detail::only_fields(evidence, {"w", "minor"}, "evidence");
+  if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
+  if (!claim.contains("passive") || !claim.at("passive").is_boolean()) throw InputError("claim.passive: missing or not true/false");
+  if (claim.at("passive").get<bool>())
+    throw InputError("claim.passive: true has no certificate form here (every principal minor >= 0 on the whole axis): only "
+                     "false, with a witness");
+  if (!claim.contains("operator") || !claim.at("operator").is_string()) throw InputError("claim.operator: missing or not a string");
+  const std::string name = claim.at("operator").get<std::string>();
+  const detail::SceneLoop L = detail::read_scene_loop(model);
+  const detail::SceneLoop::Impedance* op = nullptr;
+  for (const auto& o : L.operators)
+    if (o.name == name) {
+      if (op) throw InputError("claim.operator: two operators named '" + name + "' in the scene");
+      op = &o;
+    }
+  if (!op) throw InputError("claim.operator: no operator given by tf or ss named '" + name + "' in the scene");
+  if (op->is_ss) throw InputError("claim.operator: '" + name + "' is given by ss (beyond this checker: tf only)");
+  const rational w = detail::exact_field(evidence, "w", "evidence");
+  const size_t q = op->Z.size();
+  if (!evidence.contains("minor") || !evidence.at("minor").is_array() || evidence.at("minor").empty())
+    throw InputError("evidence.minor: missing, not an array or empty");
+  std::vector<size_t> rows;
+  for (const auto& r : evidence.at("minor")) {
+    if (!r.is_number_integer() || r.get<long long>() < 0 || r.get<long long>() >= static_cast<long long>(q))
+      throw InputError("evidence.minor: each row an integer in [0, " + std::to_string(q) + ")");
+    const size_t i = static_cast<size_t>(r.get<long long>());
+    if (!rows.empty() && i <= rows.back()) throw InputError("evidence.minor: rows not increasing");
+    rows.push_back(i);
+  }
+  std::vector<std::vector<Cq>> Z(q, std::vector<Cq>(q));
+  for (size_t i = 0; i < q; ++i)
+    for (size_t j = 0; j < q; ++j) {
+      const Cq d = at_jw(op->Z[i][j].den(), w);
+      if (d.is_zero())
+        return {false, "Z(s) of '" + name + "' has a pole at s = jw, w = " + w.str() + ": He Z(jw) is not defined there"};
+      Z[i][j] = at_jw(op->Z[i][j].num(), w) / d;
+    }
+  std::vector<std::vector<Cq>> H(rows.size(), std::vector<Cq>(rows.size()));
+  for (size_t a = 0; a < rows.size(); ++a)
+    for (size_t b = 0; b < rows.size(); ++b) {
+      const Cq h = Z[rows[a]][rows[b]] + conj(Z[rows[b]][rows[a]]);
+      H[a][b] = Cq(h.re / 2, h.im / 2);
+    }
+  const Cq m = det(H);
+  if (!m.im.is_zero()) throw NumericalError("a principal minor of a Hermitian matrix is not real (a checker defect)");
+  std::string which;
+  for (size_t i : rows) which += (which.empty() ? "" : ",") + std::to_string(i + 1);
+  if (m.re >= 0)
+    return {false, "operator '" + name + "' not passive not shown: the principal minor {" + which + "} of He Z(jw) at w = " + w.str() +
+                       " is " + detail::decimal(m.re) + " >= 0"};
+  return {true, "operator '" + name + "' is not passive (positive real): the principal minor {" + which + "} of He Z(jw) at w = " +
+                    w.str() + " is " + detail::decimal(m.re) + " < 0, exactly (Assumption 1(b) fails)"};
+}
+
+}  // namespace hapstab::check

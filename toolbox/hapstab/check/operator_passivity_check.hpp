@@ -1,0 +1,29 @@
+// hapstab/check/operator_passivity_check.hpp -- the checker of an `operator-passivity` certificate:
+// Assumption 1(b) of paper 000 (every operator Z_O(s) passive, i.e. positive real) fails for the
+// operator the claim names, in the scene as written (`hapstab multidof analyze --scene S
+// --certificate FILE` where (16) is feasible but that premise fails, so Theorem 5 concludes nothing;
+// paper 000 Sec. VI case i: the 2x2 operator H1).
+//
+// Model: {scene, set}, read by check/scene_model.hpp's read_scene_loop (the `stability-loop`
+// reading: what it does not model is refused by name); the operator is the [[operator]] table whose
+// `name` is claim.operator, given by `tf` (a matrix in s, parameters expanded; `ss` is beyond this
+// checker). Claim: {quantity, status "exact", operator, passive: false}. Evidence: w (a rational)
+// and minor (the 0-based rows, increasing, of a principal minor).
+// Theorem: a positive real Z has He Z(jw) = (Z(jw) + Z(jw)^H)/2 >= 0 at every real w that is not a
+// pole, so every principal minor of He Z(jw) is >= 0 there. Verified exactly in Q(j): no entry of Z
+// has a pole at s = jw (each denominator non-zero there), and the determinant of He Z(jw)'s
+// principal submatrix on `minor` (Hermitian: real; Gaussian elimination over Q(j)) is < 0. Then Z is
+// not positive real: Assumption 1(b) fails, and Theorem 5 draws no conclusion for the scene.
+// (The converse, "passive", has no certificate here: it needs every minor >= 0 on the whole axis.)
+// Implements: paper 000 Assumption 1(b).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/certificate.hpp"
+
+namespace hapstab::check {
+
+Verdict check_operator_passivity(const nlohmann::json& certificate);
+
+}  // namespace hapstab::check
