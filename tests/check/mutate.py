@@ -925,6 +925,17 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
     return out + mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi)
 
 
+def mimo_expect(lo, hi, other):
+    """The expectation for the claim [lo, hi] on a model whose own certificate is `other`: false (disjoint
+    from other's claim) is refuted; where other bounds the level only from above (an OSP value <= 0,
+    maybe with a zero of G on the circle, which makes the checkers refuse a range claim's model: exit 2)
+    it is rejected, 1 or 2, the same by both; else the two checkers agree."""
+    olo, ohi = claim_ends(other["claim"])
+    if hi < olo or lo > ohi:
+        return "rejected" if other["claim"]["status"] == "upper_bound" and lo > -math.inf else "refute"
+    return "agree"
+
+
 def mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi):
     """The model edited (an entry of A, B, C, D; the other kind; shapes, fields), whatever the claim
     (lo = -inf for an upper bound only): hapstab's own certificate of the edited model decides."""
@@ -933,8 +944,7 @@ def mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi):
     for name, nm in mimo_entry_edits(m, rng):
         other = mimo_produce(hapstab, nm, cache, tmp, 30)
         if isinstance(other, dict):
-            olo, ohi = claim_ends(other["claim"])
-            expect = "refute" if hi < olo or lo > ohi else "agree"
+            expect = mimo_expect(lo, hi, other)
         else:
             expect = "same"  # no certificate of the edited model (unstable A, ...): both checkers give one exit
         out.append(("model: " + name, with_field(cert, ["model"], nm), expect))
@@ -948,8 +958,7 @@ def mimo_model_mutants(cert, rng, hapstab, cache, tmp, lo, hi):
     other_kind = "isp" if m["kind"] == "osp" else "osp"
     other = mimo_produce(hapstab, dict(m, kind=other_kind), cache, tmp, 30)
     if isinstance(other, dict):
-        olo, ohi = claim_ends(other["claim"])
-        expect = "refute" if hi < olo or lo > ohi else "agree"
+        expect = mimo_expect(lo, hi, other)
     else:
         expect = "same"
     out.append(("kind " + other_kind, with_field(cert, ["model", "kind"], other_kind), expect))
@@ -2090,21 +2099,24 @@ def main():
         ok = True
         if pcode == 3:
             counts[("py not checked", kind)] = counts.get(("py not checked", kind), 0) + 1
-            ok = expect in ("agree", "same") or ccode == want_code[expect]
+            ok = expect in ("agree", "same") or (ccode in (1, 2) if expect == "rejected" else ccode == want_code[expect])
         elif expect == "agree":
             ok = ccode == pcode and ccode in (0, 1)
         elif expect == "same":
             ok = ccode == pcode
+        elif expect == "rejected":
+            ok = ccode == pcode and ccode in (1, 2)
         else:
             ok = ccode == want_code[expect] and pcode == want_code[expect]
-        if ok and expect in ("refute", "malformed") and (not creason or not preason):
+        if ok and expect in ("refute", "malformed", "rejected") and (not creason or not preason):
             ok = False  # a rejection names what failed
         if not ok:
             failures.append("%s / %s: expected %s, hapstab check %d (%s), independent %d (%s)" % (
                 kind, name, expect, ccode, creason[:160], pcode, preason[:160]))
     shutil.rmtree(tmp, ignore_errors=True)
     n = len(mutants)
-    accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py) if e in ("refute", "malformed") and (cj["exit"] == 0 or pc == 0))
+    accepted_false = sum(1 for (k, nm, c, e), cj, (pc, _) in zip(mutants, cpp, py)
+                         if e in ("refute", "malformed", "rejected") and (cj["exit"] == 0 or pc == 0))
     kinds = sorted({k for k, _ in certs})
     scenes = sum(1 for _, nm, _, _ in mutants if nm == "scene: unmutated (stability --scene)")
     print("certificates: %d (%s)%s; producer runs skipped: %s" % (
@@ -2114,10 +2126,10 @@ def main():
     for kd in kinds:
         per = [(e, cj["exit"], pc) for (k, _, _, e), cj, (pc, _) in zip(mutants, cpp, py) if k == kd]
         print("  %s: %d mutants (accept %d, refute %d, malformed %d, agree %d), false or malformed accepted %d" % (
-            kd, len(per), *(sum(1 for e, _, _ in per if e in x) for x in (("accept",), ("refute",), ("malformed",), ("agree", "same"))),
-            sum(1 for e, ce, pe in per if e in ("refute", "malformed") and (ce == 0 or pe == 0))))
+            kd, len(per), *(sum(1 for e, _, _ in per if e in x) for x in (("accept",), ("refute", "rejected"), ("malformed",), ("agree", "same"))),
+            sum(1 for e, ce, pe in per if e in ("refute", "malformed", "rejected") and (ce == 0 or pe == 0))))
     print("mutants: %d; expected accept %d, refute %d, malformed %d, agree %d" % (
-        n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e == "refute"),
+        n, sum(v for (k, e), v in counts.items() if e == "accept"), sum(v for (k, e), v in counts.items() if e in ("refute", "rejected")),
         sum(v for (k, e), v in counts.items() if e == "malformed"), sum(v for (k, e), v in counts.items() if e in ("agree", "same"))))
     for key in sorted(k for k in counts if k[0] == "py not checked"):
         print("independent checker: not checked (size limit): %d %s" % (counts[key], key[1]))
