@@ -15,7 +15,7 @@
 // principal submatrix on `minor` (Hermitian: real; Gaussian elimination over Q(j)) is < 0. Then Z is
 // not positive real: Assumption 1(b) fails, and Theorem 5 draws no conclusion for the scene.
 // (The converse, "passive", has no certificate here: it needs every minor >= 0 on the whole axis.)
-// Implements: paper 000 Assumption 1(b).
+// Implements: paper 000 Assumption 1.
 #pragma once
 
 #include <nlohmann/json.hpp>
