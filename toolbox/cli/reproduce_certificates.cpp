@@ -315,21 +315,26 @@ std::optional<CertificateEntry> stability_scene_certificate(const SceneRun& r, c
   return e;
 }
 
-// `multidof analyze --premise-certificate` on the scene of r (written as scene.STEM.premise.json), or
-// nullopt where the failing premise has no certificate kind (refused by name: the row says so).
-std::optional<CertificateEntry> premise_certificate(SceneRun& r, const fs::path& dir) {
-  CertificateEntry e;
-  e.claim = scene_claim_id(r);
-  e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".premise.json";
-  e.command = command_text({"multidof", "analyze", "--scene", "examples/" + r.file, "--premise-certificate", e.file});
-  const fs::path path = dir / e.file;
+// One scene command run in process, writing its certificate at `path`: the run (its JSON), the
+// certificate read back, or `refused` (why) when the command refused by name ("no certificate").
+// e gets the error, production time, size and kind.
+struct SceneCertificateRun {
+  InProcessRun run{exit_ok, json()};
+  std::optional<json> certificate;
+  std::string refused;
+};
+SceneCertificateRun run_scene_certificate(CertificateEntry& e, const std::vector<std::string>& args, const fs::path& path) {
+  SceneCertificateRun out;
   const auto t0 = clock_type::now();
   try {
-    run_in_process({"multidof", "analyze", "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
-                    "--premise-certificate", path.string()});
+    out.run = run_in_process(args);
   } catch (const InputError& ex) {
-    if (std::string(ex.what()).find("no certificate") != std::string::npos) return std::nullopt;
-    e.error = std::string("the command failed (bad input): ") + ex.what();
+    const std::string why = ex.what();
+    if (why.find("no certificate") != std::string::npos) {
+      out.refused = why;
+      return out;
+    }
+    e.error = "the command failed (bad input): " + why;
   } catch (const std::exception& ex) {
     e.error = std::string("the command failed (") + exit_code_for(ex).kind + "): " + ex.what();
   }
@@ -339,11 +344,27 @@ std::optional<CertificateEntry> premise_certificate(SceneRun& r, const fs::path&
     e.bytes = fs::file_size(path);
     try {
       std::ifstream in(path);
-      e.kind = json::parse(in).value("kind", std::string());
+      out.certificate = json::parse(in);
+      e.kind = out.certificate->value("kind", std::string());
     } catch (const std::exception& ex) {
       if (e.error.empty()) e.error = std::string("the certificate is not JSON: ") + ex.what();
     }
   }
+  return out;
+}
+
+// `multidof analyze --premise-certificate` on the scene of r (written as scene.STEM.premise.json), or
+// nullopt where the failing premise has no certificate kind (refused by name).
+std::optional<CertificateEntry> premise_certificate(const SceneRun& r, const fs::path& dir) {
+  CertificateEntry e;
+  e.claim = scene_claim_id(r);
+  e.file = "certificates/scene." + fs::path(r.file).stem().string() + ".premise.json";
+  e.command = command_text({"multidof", "analyze", "--scene", "examples/" + r.file, "--premise-certificate", e.file});
+  const fs::path path = dir / e.file;
+  const SceneCertificateRun c = run_scene_certificate(
+      e, {"multidof", "analyze", "--scene", (examples_dir() / r.file).string(), "--quiet", "--json", "--premise-certificate", path.string()},
+      path);
+  if (!c.refused.empty()) return std::nullopt;
   return e;
 }
 
@@ -364,38 +385,21 @@ std::vector<CertificateEntry> produce_scene_certificates(std::vector<SceneRun>& 
     e.command = command_text({"multidof", sub, "--scene", "examples/" + r.file, "--certificate", e.file});
     const fs::path path = dir / e.file;
     fs::create_directories(path.parent_path());
-    const auto t0 = clock_type::now();
-    InProcessRun run{exit_ok, json()};
-    try {
-      run = run_in_process({"multidof", sub, "--scene", (examples_dir() / r.file).string(), "--quiet", "--json",
-                            "--certificate", path.string()});
-    } catch (const InputError& ex) {
-      const std::string why = ex.what();
-      if (why.find("no certificate") != std::string::npos) {  // a verdict of no certificate kind: said in its row
-        r.no_certificate = why.rfind("--certificate: ", 0) == 0 ? why.substr(15) : why;
-        continue;
-      }
-      e.error = "the command failed (bad input): " + why;
-    } catch (const std::exception& ex) {
-      e.error = std::string("the command failed (") + exit_code_for(ex).kind + "): " + ex.what();
+    const SceneCertificateRun c = run_scene_certificate(
+        e, {"multidof", sub, "--scene", (examples_dir() / r.file).string(), "--quiet", "--json", "--certificate", path.string()}, path);
+    if (!c.refused.empty()) {  // a verdict of no certificate kind: said in its row
+      r.no_certificate = c.refused.rfind("--certificate: ", 0) == 0 ? c.refused.substr(15) : c.refused;
+      continue;
     }
-    e.produce_seconds = since(t0);
-    if (e.error.empty() && !fs::exists(path)) e.error = "the command wrote no certificate";
-    if (fs::exists(path)) {
-      e.bytes = fs::file_size(path);
-      try {
-        std::ifstream in(path);
-        const json j = json::parse(in);
-        e.kind = j.value("kind", std::string());
-        // analyze: the claim's `feasible` is the verdict printed; design: a certificate (V meets
-        // Theorem 4) is written only beside a printed, verified V
-        const json printed = run.json.is_object() && run.json.contains("feasible") ? run.json["feasible"] : json();
-        const char* key = sub == "design" ? "theorem4" : "feasible";
-        if (e.error.empty() && (!j.contains("claim") || !j["claim"].is_object() || j["claim"].value(key, json()) != printed))
-          e.error = std::string("the certificate's claim.") + key + " is not the verdict the command printed (" + printed.dump() + ")";
-      } catch (const std::exception& ex) {
-        if (e.error.empty()) e.error = std::string("the certificate is not JSON: ") + ex.what();
-      }
+    const InProcessRun& run = c.run;
+    if (c.certificate) {
+      // analyze: the claim's `feasible` is the verdict printed; design: a certificate (V meets
+      // Theorem 4) is written only beside a printed, verified V
+      const json& j = *c.certificate;
+      const json printed = run.json.is_object() && run.json.contains("feasible") ? run.json["feasible"] : json();
+      const char* key = sub == "design" ? "theorem4" : "feasible";
+      if (e.error.empty() && (!j.contains("claim") || !j["claim"].is_object() || j["claim"].value(key, json()) != printed))
+        e.error = std::string("the certificate's claim.") + key + " is not the verdict the command printed (" + printed.dump() + ")";
     }
     out.push_back(std::move(e));
     // analyze, (16) feasible and no conclusion: the failing premise's certificate where it has a kind
