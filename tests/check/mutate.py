@@ -53,6 +53,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "checks"))
 import hapstab_check  # noqa: E402  (the independent checker)
 import mutate_multidof  # noqa: E402  (the multidof-witness kind)
+import mutate_operator  # noqa: E402  (the operator-passivity kind)
+
+OPERATOR_ENTRIES = {}  # id(certificate) -> its operator's entries (mutate_operator.rand_certificate)
 
 TEMPLATES = [
     ("K + B*(z-1)/(T*z)", ["K", "B"]),                        # virtual wall, backward difference (001)
@@ -1815,7 +1818,7 @@ def rand_r(rng):
 
 
 KINDS = ("bound", "r", "bound-max", "passivity-level", "passivity-level-mimo", "stability", "stability-max", "wedge",
-         "bound-inf", "limit-cycle", "multidof-witness", "stability-loop")  # multidof-witness: multidof-feasible beside it
+         "bound-inf", "limit-cycle", "multidof-witness", "stability-loop", "operator-passivity")  # multidof-witness: multidof-feasible beside it
 
 
 def bound_produce(hapstab, m, digits, path, label, certs, skipped):
@@ -1897,6 +1900,12 @@ def produce_certificates(a, kinds, rng, srng, tmp, cache, scache, mrng, irng, lr
             lambda: stability_produce(a.hapstab, rand_stability(rng, STABILITY_TEMPLATES + POLE_TEMPLATES), scache, tmp))
     collect("stability-loop", max(a.models // 4, 2), lambda: loop_produce(a.hapstab, rand_loop_scene(lrng2), scache, tmp))
     collect("wedge", max(a.models // 2, 2), lambda: wedge_produce(a.hapstab, rand_wedge(rng), scache, tmp))
+    orng = random.Random(a.seed * 1000 + 53)  # operator-passivity's own stream: certificates built here, true by construction
+    for _ in range(max(a.models // 4, 2) if "operator-passivity" in kinds else 0):
+        made = mutate_operator.rand_certificate(orng)
+        if made:
+            OPERATOR_ENTRIES[id(made[0])] = made[1]
+            certs.append(("operator-passivity", made[0]))
     for i in range(max(a.models // 2, 2) if "bound-inf" in kinds else 0):
         m = rand_inf_model(irng)
         path = os.path.join(tmp, "i%d.json" % i)
@@ -2069,6 +2078,8 @@ def main():
             ms = loop_mutants(cert, scrng, a.hapstab, scache, tmp)
         elif kind.startswith("multidof-"):
             ms = mutate_multidof.mutants(cert, lrng)
+        elif kind == "operator-passivity":
+            ms = mutate_operator.mutants(cert, OPERATOR_ENTRIES[id(cert)], nrng)
         else:
             ms = (bound_mutants if kind.startswith("bound") else r_mutants)(cert, rng, a.hapstab, cache)
         if kind in ("bound", "bound-inf", "wedge", "limit-cycle", "passivity-level") and "H" in cert["model"]:
