@@ -95,6 +95,21 @@ TEST(CmdBound, InfiniteAndPolesOnCircle) {
   EXPECT_EQ(ju["closed_form"], "Tustin wall");
 }
 
+// A pole pair on the circle, cos theta_p = -7/100, behind t_d = T/2: in c = cos(wT/2) the objective is
+// f = -(9/800) c/(c^2 - 93/200), a simple pole at sqrt(93/200) whose isolating interval [0, 1] ended at
+// A's root c = 0, where the sign test read f(0) = 0: "b* = 0 [exact]" (issue 46's campaign
+// indep_bound_inf_inside, seed 97, 24 cases of q = 2). mpmath on paper 001's definition: f(theta_p +
+// 1e-9) = +1.538e7, f(theta_p - 1e-9) = -1.538e7, so b* = +inf. With and without whole samples.
+TEST(CmdBound, PoleOnTheCircleWhoseIntervalEndsAtAZeroOfTheNumerator) {
+  for (const char* delay : {"", " --delay 1", " --delay 2"}) {
+    CliRun r = run(std::string("bound --json --H '-45*z/(z^2 + (7/50)*z + 1)' --T 1/1000 --frac-delay 1/2000") + delay);
+    ASSERT_EQ(r.code, 0) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["bound"], "inf") << delay;
+    EXPECT_EQ(j["status"], "exact") << delay;
+  }
+}
+
 TEST(CmdBound, BadInputExit2) {
   for (const char* a : {"--H 'z/(z-2)' --T 1", "--H 'z^2/(z-0.5)' --T 1", "--H '1/(z-z)' --T 1", "--H '1' --T 0",
                         "--H '1' --T -1", "--H '1' --T 1 --eta -1", "--H '1' --T 1 --delay -1", "--H '' --T 1",

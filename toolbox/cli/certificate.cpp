@@ -293,6 +293,9 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with f(c0) >= " + target.str() + " was found");
   j["evidence"] = {{"witness_c", c0->str()}};
   if (obj.q > 1) j["evidence"]["domain_c_lo"] = obj.end_lo.str();  // <= cos(pi/q): the checkers' interval [c_lo, 1]
+  // checked before it is written: a b* the producer got wrong (a pole it missed) is refused by name
+  // here, not written as a certificate both checkers refute (issue 46's indep_bound_inf_inside)
+  verify_before_writing(j);
   return j;
 }
 
