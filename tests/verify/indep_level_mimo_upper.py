@@ -109,12 +109,15 @@ def main(argv):
                 print("skip %s: det G ~ %s on the circle" % (what, mp.nstr(dmin, 3)))
                 continue
             hi = Q(c["claim"]["hi"])
-            hif = mp.mpf(hi.numerator) / hi.denominator
-            scale = max(1, abs(hif))
             ok, line = True, "delta* <= %s (reference %s)" % (c["claim"]["printed_hi"], mp.nstr(ref, 15))
-            if hif < ref - mp.mpf(10) ** -25 * scale:
+            with mp.workdps(30):  # hi has 17 digits: compared at the reference's precision, not mpmath's default 15
+                hif = mp.mpf(hi.numerator) / hi.denominator
+                scale = max(1, abs(hif))
+                below = hif < ref - mp.mpf(10) ** -25 * scale
+                above = hif > ref + mp.mpf(10) ** -12 * scale
+            if below:
                 ok, line = False, "hi = %s is below the reference's sampled minimum %s: the claim may be false" % (hi, mp.nstr(ref, 20))
-            elif hif > ref + mp.mpf(10) ** -12 * scale:
+            elif above:
                 ok, line = False, "hi = %s is above the reference's minimum %s by more than 1e-12 (not the printed value)" % (hi, mp.nstr(ref, 20))
             else:
                 c["claim"].pop("printed_hi", None)
