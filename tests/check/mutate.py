@@ -162,22 +162,7 @@ def set_claim(cert, lo, hi):
     return c
 
 
-def deleted(cert, path):
-    c = copy.deepcopy(cert)
-    o = c
-    for k in path[:-1]:
-        o = o[k]
-    del o[path[-1]]
-    return c
-
-
-def with_field(cert, path, value):
-    c = copy.deepcopy(cert)
-    o = c
-    for k in path[:-1]:
-        o = o[k]
-    o[path[-1]] = value
-    return c
+from cert_edit import deleted, with_field  # noqa: E402
 
 
 SET_MOVES = (("x 1.001", lambda x: x * Fraction(1001, 1000)), ("+ 1", lambda x: x + 1), ("sign flipped", lambda x: -x))

@@ -4,8 +4,9 @@ constant wall), each entry N(s)/(s^2 + d s + e) with small integers (d, e > 0: n
 or a constant; a rational w and a principal minor where He Z(jw)'s minor is negative, found here in
 exact complex arithmetic of its own (not the checkers'), so the certificate is true; and its mutants
 with what must happen (accept / refute / malformed / agree)."""
-import copy
 from fractions import Fraction as F
+
+from cert_edit import with_field
 
 SCENE = """[scene]
 name = "operator"
@@ -85,15 +86,6 @@ def rand_certificate(rng):
                          "evidence": {"w": str(w), "minor": rows}}
                     return c, entries
     return None
-
-
-def with_field(cert, path, value):
-    c = copy.deepcopy(cert)
-    x = c
-    for k in path[:-1]:
-        x = x[k]
-    x[path[-1]] = value
-    return c
 
 
 def mutants(cert, entries, rng):

@@ -132,6 +132,18 @@ def loop_claim_flipped(cl):
     return flipped
 
 
+def both_checkers(exe, good, bad, bad_what):
+    """(True, "") when both checkers verify the certificate file `good` (exit 0) and refute `bad`
+    (exit 1), else (False, which did not and what)."""
+    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    for cmd in ([exe, "check"], ["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py")]):
+        if subprocess.run(cmd + [good], capture_output=True).returncode != 0:
+            return False, "%s does not verify it" % os.path.basename(cmd[-1])
+        if subprocess.run(cmd + [bad], capture_output=True).returncode != 1:
+            return False, "%s does not refute %s" % (os.path.basename(cmd[-1]), bad_what)
+    return True, ""
+
+
 def run_hapstab(exe, args, timeout):
     """Runs `hapstab ARGS --json`; returns (rc, parsed JSON or None, stderr text, seconds)."""
     t0 = time.monotonic()
