@@ -26,6 +26,10 @@ std::string write_tmp(const std::string& name, const std::string& text) {
   std::ofstream(path) << text;
   return path;
 }
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 }  // namespace
 
 TEST(CmdPassivityLevel, TransferFunctionIspAndOsp) {
@@ -86,6 +90,32 @@ TEST(CmdPassivityLevel, NegativeOspFrequencyValueIsAnUpperBound) {
   EXPECT_EQ(parse_rational(j["upper_bound"].get<std::string>()), rational(-3, 2));
   EXPECT_FALSE(j["certified_frequency"]["is_level"].get<bool>());
   EXPECT_EQ(j["lmi"]["status"], "failed");
+}
+
+// G = -1 + 1/(z + 1/2) = (1/2 - z)/(z + 1/2), D = -1: Lemma 1 has a level (the LMI's, numeric, the
+// printed result) and the certified frequency value beside it bounds it from above. By hand: on the
+// circle Re(1/G) = -(3/4)/(5/4 - cos theta), least at theta = 0: -3. The JSON encloses the level in
+// [the LMI's exactly checked lower bound, -3], and --certificate writes the upper bound (it wrote
+// nothing before: "not the level here").
+TEST(CmdPassivityLevel, UpperBoundBesideTheLmiLevel) {
+  CliRun r = run("--H \"-1 + 1/(z + 1/2)\" --T 1/100 --kind osp --backend csdp --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "numeric") << r.out;
+  EXPECT_FALSE(j["certified_frequency"]["is_level"].get<bool>());
+  EXPECT_EQ(j["upper_bound"], "-3") << r.out;
+  ASSERT_TRUE(j["lower_bound"].is_string()) << r.out;
+  const rational lo = parse_rational(j["lower_bound"].get<std::string>());
+  EXPECT_LT(lo, rational(-3));
+  EXPECT_GT(lo, rational(-301, 100));
+  EXPECT_EQ(j["enclosure"][1], "-3") << r.out;
+  const std::string cert = write_tmp("pl_lmi_upper.json", "");
+  CliRun c = run("--H \"-1 + 1/(z + 1/2)\" --T 1/100 --kind osp --backend csdp --certificate " + cert);
+  ASSERT_EQ(c.code, 0) << c.out;
+  const auto k = nlohmann::json::parse(read_file(cert));
+  EXPECT_EQ(k["claim"]["status"], "upper_bound");
+  EXPECT_EQ(k["claim"]["hi"], "-3");
+  EXPECT_NE(c.out.find("[exact upper bound on the level, not the level: see note]"), std::string::npos) << c.out;
 }
 
 TEST(CmdPassivityLevel, StateSpaceFileMimo) {

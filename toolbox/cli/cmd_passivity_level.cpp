@@ -128,7 +128,9 @@ void report_json(const Opts& o, const Levels& v) {
                    {"status", !any ? "failed" : only_bound ? "upper_bound" : to_string(main.status)},
                    {"certified", main.proven() && !only_bound},
                    {"lower_bound", down(!only_bound && std::isfinite(main.level) ? main.lower_bound : std::nullopt)},
-                   {"upper_bound", up(hi(main))},
+                   // the certified frequency value bounds the level from above also where it is not the level
+                   // (an OSP value <= 0 beside the LMI's level): the enclosure [LMI lower bound, its hi]
+                   {"upper_bound", up(hi(cert_ok ? c : main))},
                    {"exact", exact_json(any && !only_bound ? exact(main) : std::nullopt)},
                    {"value", &main == &c ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
                    {"certified_frequency",
@@ -201,7 +203,7 @@ void report_text(const Opts& o, const Levels& v) {
   }
   if (cert_ok && &main != &c)
     std::cout << "  certified frequency value: " << c.value << " at theta = " << c.theta_min << "   [" << to_string(c.status)
-              << ", not the level: see note]\n";
+              << " upper bound on the level, not the level: see note]\n";
   if (freq_ok) std::cout << "  frequency grid: " << f.level << " at theta = " << f.theta_min << "   [numeric]\n";
   if (!note.empty()) std::cout << "  note: " << note << "\n";
   if (!f.note.empty()) std::cout << "  frequency note: " << f.note << "\n";
@@ -222,10 +224,12 @@ int run(const Opts& o) {
                                           o.lemma, backend, o.grid, o.digits);
   if (!o.certificate.empty()) {
     const bool is_level = v.cert_ok && v.cert_is_level && &v.main() == &v.c;
+    // an OSP value <= 0 is an upper bound on Lemma 1's level, printed as the result or beside the LMI's level
+    const bool upper_only = v.cert_ok && !v.cert_is_level;
     if (G) {
-      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, v.only_bound && v.cert_ok, o.digits));
+      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, upper_only, o.digits));
     } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
-      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, v.only_bound && v.cert_ok, o.digits));
+      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, upper_only, o.digits));
     }
   }
   if (o.json) report_json(o, v);
