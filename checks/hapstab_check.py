@@ -1094,6 +1094,22 @@ def upper_bound_claim(claim):
     return hi, None
 
 
+def lower_bound_claim(claim):
+    """A claim of status "lower_bound" ({lo[, printed_lo]}: a level >= lo only) or "bounds" (the same and
+    {hi[, printed_hi]}), each printed decimal the number claimed: (lo, hi or None, why it is refuted or None)."""
+    bounds = claim.get("status") == "bounds"
+    only(claim, ("quantity", "status", "lo", "printed_lo") + (("hi", "printed_hi") if bounds else ()), "claim")
+    lo = exact(claim, "lo", "claim")
+    hi = exact(claim, "hi", "claim") if bounds else None
+    why = None
+    for key, x in (("printed_lo", lo), ("printed_hi", hi)):
+        if key in claim and printed_number(claim[key], "claim." + key) != x and why is None:
+            why = "claim.%s = %s is not the claimed %s" % (key, claim[key], short(x))
+    if bounds and lo > hi and why is None:
+        why = "claim: lo = %s > hi = %s" % (short(lo), short(hi))
+    return lo, hi, why
+
+
 def check_passivity_level(c):
     """phi* = min Re G (isp) or delta* = min Re(1/G) (osp) over theta in [0, pi], G Schur stable
     (OSP: no zero of G on the circle, delta* > 0): level >= lo iff E^ - lo F^ >= 0 on [-1, 1];
@@ -1452,20 +1468,46 @@ def check_passivity_level_mimo(c):
         raise Malformed("model.A: not Schur stable (%s)" % why)
     sys_ = (A, B, C, D, osp)
     lvl = "delta*" if osp else "phi*"
-    if claim.get("status") == "upper_bound":  # the level <= hi only (an OSP value <= 0): the witness alone
-        hi, refuted = upper_bound_claim(claim)
-        only(evidence, ("witness_c", "witness_s"), "evidence")
-        c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
+    status = claim.get("status")
+    if status in ("upper_bound", "lower_bound", "bounds"):
+        # the level <= hi (an OSP value <= 0): the witness; the level >= lo: Lemma 1 at the storage P
+        if status == "upper_bound":
+            lo, (hi, refuted) = None, upper_bound_claim(claim)
+        else:
+            lo, hi, refuted = lower_bound_claim(claim)
+        only(evidence, (("witness_c", "witness_s") if hi is not None else ()) + (("P",) if lo is not None else ()), "evidence")
+        if hi is not None:
+            c0, s0 = exact(evidence, "witness_c", "evidence"), exact(evidence, "witness_s", "evidence")
+        if lo is not None:
+            P = mimo_matrix(evidence, "P")
+            if len(P) != n or any(len(r) != n for r in P):
+                raise Malformed("evidence.P: not %d x %d (the states)" % (n, n))
         if refuted:
             return False, refuted
-        if c0 * c0 + s0 * s0 != 1:
-            return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
-        if osp and cq_det(mimo_G(sys_, (c0, s0))) == (0, 0):
-            return False, "evidence: det G = 0 at the witness (no bound from it)"
-        if positive_definite(he_minus(sys_, (c0, s0), hi)):
-            return False, "%s <= %s (%.12g) not shown: the pencil at hi is positive definite at the witness" % (lvl, short(hi), float(hi))
-        return True, "%s <= %.12g (%dx%d, an upper bound only: the pencil at hi not > 0 at the witness%s)" % (
-            lvl, float(hi), m, m, ", G regular there" if osp else "")
+        shown = []
+        if lo is not None:
+            if any(P[i][j] != P[j][i] for i in range(n) for j in range(i)):
+                return False, "%s >= %s not shown: evidence.P is not symmetric" % (lvl, short(lo))
+            if not semidefinite(P, True):
+                return False, "%s >= %s not shown: P > 0 fails" % (lvl, short(lo))
+            ident = [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
+            Q = [[lo * x for x in r] for r in ident] if osp else [[Fraction(0)] * m for _ in range(m)]
+            neg = [[-x for x in row] for row in lemma1_matrix(A, B, C, D, P, ident, Q)]
+            if not osp:
+                for i in range(m):
+                    neg[n + i][n + i] -= lo  # + Phi = lo I in (2)'s lower right block
+            if not semidefinite(neg, True):
+                return False, "%s >= %s (%.12g) not shown: (2) < 0 fails at the level lo with this P" % (lvl, short(lo), float(lo))
+            shown.append("%s >= %.12g (Lemma 1 at P: P > 0, (2) < 0)" % (lvl, float(lo)))
+        if hi is not None:
+            if c0 * c0 + s0 * s0 != 1:
+                return False, "evidence: the witness (%s, %s) is not on the unit circle" % (short(c0), short(s0))
+            if osp and cq_det(mimo_G(sys_, (c0, s0))) == (0, 0):
+                return False, "evidence: det G = 0 at the witness (no bound from it)"
+            if positive_definite(he_minus(sys_, (c0, s0), hi)):
+                return False, "%s <= %s (%.12g) not shown: the pencil at hi is positive definite at the witness" % (lvl, short(hi), float(hi))
+            shown.append("%s <= %.12g (the pencil at hi not > 0 at the witness%s)" % (lvl, float(hi), ", G regular there" if osp else ""))
+        return True, "%s (%dx%d%s)" % ("; ".join(shown), m, m, ", an upper bound only" if lo is None else "")
     if osp:  # G regular on the circle: He G - nu G^H G = G^H (He G^-1 - nu I) G there
         why = mimo_regular_on_circle(sys_, d)
         if why:
@@ -3879,6 +3921,19 @@ def check_multidof_feasible(c):
     return True, "(16) feasible: the realisation is the model's E-hat, P > 0, M1 <= 0, (14) > 0, Q_V > 0, X in G"
 
 
+def lemma1_matrix(A, B, C, D, P, X, Q):
+    """Paper 000's (2) with the supply y'Xu - y'Qy: [[A'PA - P + C'QC, A'PB - C'X/2 + C'QD], [., B'PB - (XD + D'X')/2
+    + D'QD]], the quadratic form of x+'Px+ - x'Px - (y'Xu + u'X'y)/2 + y'Qy at [x; u]."""
+    N, m = len(A), len(D)
+    AtP, CtQ = mmul(mT(A), P), mmul(mT(C), Q)
+    F11 = msum(msum(mmul(AtP, A), P, -1), mmul(CtQ, C))
+    F12 = msum(msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)), mmul(CtQ, D))
+    XD = mmul(X, D)
+    F22 = msum(msum(mmul(mmul(mT(B), P), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), Q), D))
+    F = [[F11[i][j] if j < N else F12[i][j - N] for j in range(N + m)] for i in range(N)]
+    return F + [[F12[j][i] if j < N else F22[i][j - N] for j in range(N + m)] for i in range(m)]
+
+
 def vhat_lemma1(AV, BV, CV, DV, delta, T, X, QV, PV):
     """None when Lemma 1 holds for V-hat (17) (Gamma = I, K = (T/2) diag(delta)^-1) built from V at X, Q_V with the
     storage PV: PV > 0 and F <= 0; else what fails."""
@@ -3895,13 +3950,7 @@ def vhat_lemma1(AV, BV, CV, DV, delta, T, X, QV, PV):
         return "P_V is not symmetric"
     if not semidefinite(PV, True):
         return "P_V > 0 fails"
-    AtP, CtQ = mmul(mT(A), PV), mmul(mT(C), QV)
-    F11 = msum(msum(mmul(AtP, A), PV, -1), mmul(CtQ, C))
-    F12 = msum(msum(mmul(AtP, B), mmul(mT(C), X), Fraction(-1, 2)), mmul(CtQ, D))
-    XD = mmul(X, D)
-    F22 = msum(msum(mmul(mmul(mT(B), PV), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), QV), D))
-    neg = [[-(F11[i][j] if j < N else F12[i][j - N]) for j in range(N + m)] for i in range(N)]
-    neg += [[-(F12[j][i] if j < N else F22[i][j - N]) for j in range(N + m)] for i in range(m)]
+    neg = [[-x for x in row] for row in lemma1_matrix(A, B, C, D, PV, X, QV)]
     if not semidefinite(neg, False):
         return "Lemma 1 for V-hat at X and Q_V: F <= 0 fails"
     return None

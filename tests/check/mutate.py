@@ -642,9 +642,12 @@ def level_produce(hapstab, m, cache, tmp, digits=17):
 
 
 def claim_ends(cl):
-    """A level claim's ends: (value, value) when it is exact, (-inf, hi) for an upper bound only, else (lo, hi)."""
+    """A level claim's ends: (value, value) when it is exact, (-inf, hi) for an upper bound only, (lo, inf)
+    for a lower bound only, else (lo, hi)."""
     if cl["status"] == "upper_bound":
         return (-math.inf, Fraction(cl["hi"]))
+    if cl["status"] in ("lower_bound", "bounds"):
+        return (Fraction(cl["lo"]), Fraction(cl["hi"]) if "hi" in cl else math.inf)
     return (Fraction(cl["value"]),) * 2 if cl["status"] == "exact" else (Fraction(cl["lo"]), Fraction(cl["hi"]))
 
 
@@ -767,9 +770,10 @@ MIMO_FAMILIES = {}  # family: certificates produced
 def rand_mimo(rng):
     """A random square MIMO state space (m = 2 or 3 inputs, n = 1..4 states, m n <= 12), A Schur stable by
     construction (every row's absolute sum < 1, or a rotation-like block of radius < 1), of five families:
-    dense, diagonal (decoupled: the level is the least SISO level), triangular A, D = 0 (strictly proper)
-    and a lightly damped pair (a resonance: the minimiser inside (0, pi))."""
-    fam = rng.choice(["dense", "diagonal", "triangular", "strictly proper", "resonance"])
+    dense, diagonal (decoupled: the level is the least SISO level), triangular A, D = 0 (strictly proper),
+    a lightly damped pair (a resonance: the minimiser inside (0, pi)) and a dense one with D's diagonal
+    negative (an OSP value <= 0 beside Lemma 1's level: the lower_bound and bounds claims)."""
+    fam = rng.choice(["dense", "diagonal", "triangular", "strictly proper", "resonance", "negative D"])
     m = rng.choice([2, 2, 3])
     n = rng.randint(1, 12 // m if fam != "resonance" else 4)
     if fam == "resonance":
@@ -806,7 +810,7 @@ def rand_mimo(rng):
     if fam == "strictly proper":
         D = [[Fraction(0)] * m for _ in range(m)]
     for i in range(m):
-        D[i][i] += rng.choice([0, 1, 3, 5])
+        D[i][i] += rng.choice([0, 1, 3, 5]) if fam != "negative D" else -Fraction(rng.randint(4, 12), 4) - abs(D[i][i])
     fm = lambda M: [[frac(x) for x in r] for r in M]  # noqa: E731
     return {"A": fm(A), "B": fm(B), "C": fm(C), "D": fm(D), "T": rng.choice(["1/1000", "1/100"]), "family": fam,
             "kind": rng.choice(["isp", "osp"])}
@@ -871,10 +875,52 @@ def mimo_upper_bound_mutants(cert, rng):
     return out
 
 
+def mimo_lemma1_mutants(cert, rng):
+    """passivity-level-mimo with status lower_bound or bounds (the LMI's level printed: lo by Lemma 1 at
+    the storage P, hi the frequency value <= 0 at its witness): lo lowered (accept: (2) is non-increasing
+    in the level), lo raised a tenth of its scale (refute: the LMI's lo is within ~1e-5 of Lemma 1's
+    supremum) or past hi, its printed decimal, P negated, not symmetric, scaled, of the wrong shape or
+    gone, the bounds' hi and witness as for an upper bound only."""
+    cl = cert["claim"]
+    lo = Fraction(cl["lo"])
+    scale = max(abs(lo), Fraction(1))
+    P = cert["evidence"]["P"]
+    n = len(P)
+    without_printed = deleted(cert, ["claim", "printed_lo"])
+    out = [("unmutated", cert, "accept"),
+           ("lo lowered", with_field(without_printed, ["claim", "lo"], frac(lo - scale)), "accept"),
+           ("lo raised by a tenth of its scale", with_field(without_printed, ["claim", "lo"], frac(lo + scale / 10)), "refute"),
+           ("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], cl["printed_lo"] + "1"), "refute"),
+           ("P[0][0] negated", with_field(cert, ["evidence", "P", 0, 0], frac(-Fraction(P[0][0]))), "refute"),
+           ("P x 10^6", with_field(cert, ["evidence", "P"], [[frac(Fraction(x) * 10 ** 6) for x in r] for r in P]), "agree"),
+           ("P[0][0] + 1/1000", with_field(cert, ["evidence", "P", 0, 0], frac(Fraction(P[0][0]) + Fraction(1, 1000))), "agree"),
+           ("P a row too few", with_field(cert, ["evidence", "P"], P[:-1] if n > 1 else [[]]), "malformed"),
+           ("P an entry a decimal", with_field(cert, ["evidence", "P", 0, 0], "0.5"), "malformed"),
+           ("deleted evidence.P", deleted(cert, ["evidence", "P"]), "malformed")]
+    if n > 1:
+        out.append(("P not symmetric", with_field(cert, ["evidence", "P", 0, 1], frac(Fraction(P[0][1]) + 1)), "refute"))
+    if cl["status"] == "bounds":
+        hi = Fraction(cl["hi"])
+        out.append(("lo past hi", with_field(without_printed, ["claim", "lo"], frac(hi + scale / 10)), "refute"))
+        out.append(("status lower_bound beside hi", with_field(cert, ["claim", "status"], "lower_bound"), "malformed"))
+        out.append(("status upper_bound beside lo", with_field(cert, ["claim", "status"], "upper_bound"), "malformed"))
+        upper = deleted(deleted(with_field(cert, ["claim", "status"], "upper_bound"), ["claim", "lo"]), ["claim", "printed_lo"])
+        out += [(name, deleted(c, ["evidence", "P"]) if "P" in c["evidence"] else c, e)
+                for name, c, e in mimo_upper_bound_mutants(deleted(upper, ["evidence", "P"]), rng)
+                if name not in ("unmutated", "a lower end added")]
+        out.append(("a witness beside a lower bound only", with_field(cert, ["claim", "status"], "lower_bound"), "malformed"))
+    else:
+        out.append(("a witness added", with_field(cert, ["evidence", "witness_c"], "1"), "malformed"))
+        out.append(("status bounds without hi", with_field(cert, ["claim", "status"], "bounds"), "malformed"))
+    return out
+
+
 def mimo_mutants(cert, rng, hapstab, cache, tmp):
     cl, m = cert["claim"], cert["model"]
     if cl["status"] == "upper_bound":
         return mimo_upper_bound_mutants(cert, rng) + mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl))
+    if cl["status"] in ("lower_bound", "bounds"):
+        return mimo_lemma1_mutants(cert, rng) + mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl))
     out = [("unmutated", cert, "accept")]
     exact_claim = cl["status"] == "exact"
     lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
@@ -915,12 +961,12 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
 
 def mimo_expect(lo, hi, other):
     """The expectation for the claim [lo, hi] on a model whose own certificate is `other`: false (disjoint
-    from other's claim) is refuted; where other bounds the level only from above (an OSP value <= 0,
-    maybe with a zero of G on the circle, which makes the checkers refuse a range claim's model: exit 2)
+    from other's claim) is refuted; where other bounds the level only from above or by Lemma 1 (an OSP
+    value <= 0, maybe with a zero of G on the circle, which makes the checkers refuse a range claim's model: exit 2)
     it is rejected, 1 or 2, the same by both; else the two checkers agree."""
     olo, ohi = claim_ends(other["claim"])
     if hi < olo or lo > ohi:
-        return "rejected" if other["claim"]["status"] == "upper_bound" and lo > -math.inf else "refute"
+        return "rejected" if other["claim"]["status"] in ("upper_bound", "lower_bound", "bounds") and lo > -math.inf else "refute"
     return "agree"
 
 
@@ -1990,12 +2036,12 @@ def print_branches(certs, mutants, cpp):
             *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound"))))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
-        print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d; level <= 0 %d; "
-              "3x3 %d; families %s" % (
+        print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's "
+              "lower bound %d (with hi %d); level <= 0 %d; 3x3 %d; families %s" % (
                   sum(1 for c, _ in mimo if c["model"]["kind"] == "isp"), sum(1 for c, _ in mimo if c["model"]["kind"] == "osp"),
-                  sum(1 for c, _ in mimo if c["claim"]["status"] == "exact"),
-                  sum(1 for c, _ in mimo if c["claim"]["status"] == "certified"),
-                  sum(1 for c, _ in mimo if c["claim"]["status"] == "upper_bound"),
+                  *(sum(1 for c, _ in mimo if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound")),
+                  sum(1 for c, _ in mimo if c["claim"]["status"] in ("lower_bound", "bounds")),
+                  sum(1 for c, _ in mimo if c["claim"]["status"] == "bounds"),
                   sum(1 for c, _ in mimo if Fraction(c["claim"].get("value", c["claim"].get("lo", c["claim"].get("hi")))) <= 0),
                   sum(1 for c, _ in mimo if len(c["model"]["D"]) == 3), json.dumps(MIMO_FAMILIES, sort_keys=True)))
     smax = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "stability-max" and nm == "unmutated"]

@@ -719,6 +719,47 @@ TEST(PassivityLevelMimoCheck, UpperBoundOnlyByHand) {
   EXPECT_THROW(check_certificate(no_witness), InputError);
 }
 
+// Lemma 1's lower bound at a storage P (claim "lower_bound", or "bounds" with the witness's hi beside),
+// by hand on G = -1 + 1/(z + 1/2): A = -1/2, B = C = 1, D = -1. OSP, (2) at Delta = lo with P = p:
+// F = [[-3p/4 + lo, -p/2 - 1/2 - lo], [., p + 1 + lo]]. p = 1, lo = -4: -F = [[19/4, -3], [-3, 2]],
+// det 1/2 > 0, so -F > 0: delta >= -4. lo = -3: -F = [[15/4, -2], [-2, 1]], det -1/4: refuted. 1/G(1) =
+// -3 (the frequency minimum, theta = 0): hi = -3 at z0 = 1. ISP, (2) with Phi = lo: F = [[-3p/4, -p/2 -
+// 1/2], [., p + 1 + lo]]; p = 1, lo = -4: -F = [[3/4, 1], [1, 2]], det 1/2 > 0; lo = -3: det -1/4.
+TEST(PassivityLevelMimoCheck, LowerBoundByLemma1ByHand) {
+  const nlohmann::json a = mat({{"-1/2"}}), one = mat({{"1"}}), d = mat({{"-1"}});
+  auto cert = [&](const std::string& kind, const nlohmann::json& claim, nlohmann::json ev) {
+    auto c = mimo_cert(a, one, one, d, claim, ev);
+    c["model"]["kind"] = kind;
+    return c;
+  };
+  auto lower = [](const std::string& lo) { return nlohmann::json{{"status", "lower_bound"}, {"lo", lo}}; };
+  const nlohmann::json P1{{"P", mat({{"1"}})}};
+  const Verdict v = check_certificate(cert("osp", lower("-4"), P1));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("Lemma 1"), std::string::npos) << v.reason;
+  const Verdict high = check_certificate(cert("osp", lower("-3"), P1));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("(2) < 0 fails"), std::string::npos) << high.reason;
+  EXPECT_FALSE(check_certificate(cert("osp", lower("-4"), {{"P", mat({{"-1"}})}})).verified);  // P > 0 fails
+  EXPECT_FALSE(check_certificate(cert("osp", lower("-4"), {{"P", mat({{"0"}})}})).verified);
+  EXPECT_TRUE(check_certificate(cert("isp", lower("-4"), P1)).verified);
+  EXPECT_FALSE(check_certificate(cert("isp", lower("-3"), P1)).verified);
+  nlohmann::json both = lower("-4");
+  both["status"] = "bounds", both["hi"] = "-3", both["printed_lo"] = "-4", both["printed_hi"] = "-3.0";
+  nlohmann::json ev = witness("1", "0");
+  ev["P"] = mat({{"1"}});
+  const Verdict b = check_certificate(cert("osp", both, ev));
+  EXPECT_TRUE(b.verified) << b.reason;
+  both["hi"] = "-31/10", both.erase("printed_hi");  // 1/G(1) = -3 > -3.1
+  EXPECT_FALSE(check_certificate(cert("osp", both, ev)).verified);
+  both["hi"] = "-3", both["lo"] = "-2";  // lo > hi
+  both.erase("printed_lo");
+  EXPECT_FALSE(check_certificate(cert("osp", both, ev)).verified);
+  EXPECT_THROW(check_certificate(cert("osp", lower("-4"), ev)), InputError);  // a witness beside a lower bound only
+  EXPECT_THROW(check_certificate(cert("osp", lower("-4"), nlohmann::json::object())), InputError);  // no P
+  EXPECT_THROW(check_certificate(cert("osp", lower("-4"), {{"P", mat({{"1", "0"}})}})), InputError);  // not n x n
+}
+
 TEST(PassivityLevelMimoCheck, Malformed) {
   auto bad = [](nlohmann::json c, const std::string& field) {
     try {

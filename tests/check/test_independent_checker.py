@@ -724,6 +724,33 @@ class PassivityLevelMimo(unittest.TestCase):
         c["evidence"] = {}
         self.assertEqual(hc.check(c)[0], 2)
 
+    def test_lower_bound_by_lemma1_by_hand(self):
+        # test_check.cpp's PassivityLevelMimoCheck.LowerBoundByLemma1ByHand: G = -1 + 1/(z + 1/2), P = 1:
+        # OSP -F = [[19/4, -3], [-3, 2]] > 0 at lo = -4, not at -3; ISP likewise; hi = -3 at z0 = 1
+        def cert(kind, claim, ev):
+            c = mimo_cert([["-1/2"]], [["1"]], [["1"]], [["-1"]], claim, ev)
+            c["model"]["kind"] = kind
+            return c
+        P1 = {"P": [["1"]]}
+        code, why = hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, P1))
+        self.assertEqual(code, 0, why)
+        self.assertIn("Lemma 1", why)
+        code, why = hc.check(cert("osp", {"status": "lower_bound", "lo": "-3"}, P1))
+        self.assertEqual(code, 1)
+        self.assertIn("(2) < 0 fails", why)
+        self.assertEqual(hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, {"P": [["-1"]]}))[0], 1)
+        self.assertEqual(hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, {"P": [["0"]]}))[0], 1)
+        self.assertEqual(hc.check(cert("isp", {"status": "lower_bound", "lo": "-4"}, P1))[0], 0)
+        self.assertEqual(hc.check(cert("isp", {"status": "lower_bound", "lo": "-3"}, P1))[0], 1)
+        both = {"status": "bounds", "lo": "-4", "hi": "-3", "printed_lo": "-4", "printed_hi": "-3.0"}
+        ev = {"witness_c": "1", "witness_s": "0", "P": [["1"]]}
+        self.assertEqual(hc.check(cert("osp", both, ev))[0], 0)
+        self.assertEqual(hc.check(cert("osp", dict(both, hi="-31/10", printed_hi="-3.1"), ev))[0], 1)
+        self.assertEqual(hc.check(cert("osp", {"status": "bounds", "lo": "-2", "hi": "-3"}, ev))[0], 1)
+        self.assertEqual(hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, ev))[0], 2)
+        self.assertEqual(hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, {}))[0], 2)
+        self.assertEqual(hc.check(cert("osp", {"status": "lower_bound", "lo": "-4"}, {"P": [["1", "0"]]}))[0], 2)
+
     def test_osp_by_hand_and_against_mpmath(self):
         # the C++ checker's cases (test_check.cpp, OspByHandAndAgainstMpmath): delta* of DIAG = 1/3 at
         # theta = 0 by hand; of COUPLED 0.204061059135553914835147667520313... (mpmath, 60 digits)

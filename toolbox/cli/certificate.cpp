@@ -448,15 +448,18 @@ std::vector<nlohmann::json> circle_witnesses(const rational& c) {
 }  // namespace
 
 nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
-                                                bool is_level, bool upper_only, int digits) {
-  if (c.status != Status::exact && c.status != Status::certified)
+                                                const lmi::PassivityLevel& l, bool is_level, bool upper_only, int digits) {
+  // not the level (the LMI's numeric level is the result): its exactly checked lower bound, with P
+  const bool lemma1 = !is_level && l.lower_bound && l.lemma1_P;
+  if (!lemma1 && c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none: " +
                      (c.note.empty() ? std::string("no reason given") : c.note) + "): no certificate");
-  if ((!is_level && !upper_only) || !c.enclosure)
+  if (!lemma1 && ((!is_level && !upper_only) || !c.enclosure))
     throw InputError("--certificate: the certified frequency value is not the level here: no certificate");
-  if (!upper_only && osp && c.enclosure->lo <= 0)
+  if (!lemma1 && !upper_only && osp && c.enclosure->lo <= 0)
     throw InputError("--certificate: an OSP value <= 0 bounds Lemma 1's level only from above (it is not the level): no "
                      "certificate");
+  const bool upper = upper_only && c.enclosure;  // the frequency value's hi, witnessed on the circle
   nlohmann::json j = certificate_header("passivity-level-mimo");
   j["model"] = {{"A", matrix_json(sys.A)}, {"B", matrix_json(sys.B)}, {"C", matrix_json(sys.C)},
                 {"D", matrix_json(sys.D)}, {"T", sys.T.str()}, {"kind", osp ? "osp" : "isp"}};
@@ -466,15 +469,27 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
                             "paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} lambda_min(He G(e^{j theta})), He G = (G + G^H)/2, G = C(zI - A)^-1 B + D: "
                             "the ISP level of paper 000 Definition 2 (Lemma 1)";
-  const bool exact = !upper_only && c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
-  if (upper_only) {  // the level <= hi only (check/passivity_level_mimo_check.hpp), hi as printed
+  const bool exact = !upper_only && !lemma1 && c.status == Status::exact && c.enclosure->lo == c.enclosure->hi;
+  const auto put_hi = [&] {
+    const std::string printed = decimal_outward(c.enclosure->hi, digits, +1);
+    claim["hi"] = parse_rational(printed, "enclosure").str();
+    claim["printed_hi"] = printed;
+  };
+  if (lemma1) {  // level >= lo by Lemma 1 at P (check/passivity_level_mimo_check.hpp), lo as printed; with hi beside
+    const std::string printed = decimal_outward(*l.lower_bound, digits, -1);
+    claim["quantity"] = std::string(osp ? "delta*" : "phi*") + ", the level of paper 000 Definition 2 by Lemma 1, >= lo" +
+                        (upper ? " and <= hi (the frequency value, not the level here: an OSP value <= 0)" : "") +
+                        ": lo by Lemma 1's LMI (2) at the rounded P";
+    claim["status"] = upper ? "bounds" : "lower_bound";
+    claim["lo"] = parse_rational(printed, "lower bound").str();
+    claim["printed_lo"] = printed;
+    if (upper) put_hi();
+  } else if (upper_only) {  // the level <= hi only (check/passivity_level_mimo_check.hpp), hi as printed
     claim["quantity"] = std::string(osp ? "delta*" : "phi*") +
                         ", the level of paper 000 Definition 2, <= hi: an upper bound only (the frequency value is not the "
                         "level here: an OSP value <= 0)";
     claim["status"] = "upper_bound";
-    const std::string printed = decimal_outward(c.enclosure->hi, digits, +1);
-    claim["hi"] = parse_rational(printed, "enclosure").str();
-    claim["printed_hi"] = printed;
+    put_hi();
   } else if (exact) {
     claim["status"] = "exact";
     claim["value"] = c.enclosure->lo.str();
@@ -483,13 +498,14 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
   }
   j["claim"] = claim;
   std::vector<nlohmann::json> candidates{nlohmann::json::object()};
-  if (!exact) {
+  if (!exact && (!lemma1 || upper)) {
     if (!c.c_min && c.theta_min < 0)
       throw NumericalError("--certificate: the certified MIMO path gave no minimiser to place the witness at");
     candidates = circle_witnesses(c.c_min ? *c.c_min : exact_rational(std::cos(c.theta_min)));
   }
   std::string why;
-  for (const nlohmann::json& e : candidates) {  // the first that check/ verifies
+  for (nlohmann::json e : candidates) {  // the first that check/ verifies
+    if (lemma1) e["P"] = matrix_json(*l.lemma1_P);
     j["evidence"] = e;
     const check::Verdict v = check::check_certificate(j);
     if (v.verified) return j;

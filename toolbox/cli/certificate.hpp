@@ -53,11 +53,14 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
 /// and T as written, the certified level c as claim (exact, or its enclosure printed at `digits`; with
 /// `upper_only`, an OSP value <= 0, "upper_bound" with the printed hi), and for an enclosure or an upper
 /// bound a witness z0 = c0 + j s0, a rational point of the unit circle near c.c_min with the pencil at
-/// hi not positive definite (OSP: G(z0) regular). The certificate is checked (check/) before it is
-/// returned. InputError (exit 2) for what has no certificate: a level that is not certified;
-/// NumericalError (exit 3) when no witness is found.
+/// hi not positive definite (OSP: G(z0) regular). Where c is not the level and the LMI `l` has an
+/// exactly checked lower bound with its P (the LMI's numeric level is the printed result), the claim
+/// is "lower_bound" (lo as printed, rounded down; evidence P), or "bounds" with c's hi and witness
+/// beside it (`upper_only`). The certificate is checked (check/) before it is returned. InputError
+/// (exit 2) for what has no certificate: a level that is not certified; NumericalError (exit 3) when
+/// no witness is found.
 nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys, bool osp, const lmi::PassivityLevel& c,
-                                                bool is_level, bool upper_only, int digits);
+                                                const lmi::PassivityLevel& l, bool is_level, bool upper_only, int digits);
 
 /// The certificate of r(jw) (44): Re r = -T/2 exactly, Im r in [im - u, im + u] with `im` the printed
 /// correctly rounded decimal of `digits` digits and u = |im| 10^(1 - digits) (at least one unit

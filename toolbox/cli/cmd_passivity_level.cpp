@@ -199,7 +199,8 @@ void report_text(const Opts& o, const Levels& v) {
       std::cout << "  LMI certificate: " << o.kind << " level >= " << decimal_outward(*l.lower_bound, o.digits, -1)
                 << (*l.lower_bound > 0 ? " > 0: the system is " + o.kind
                                       : " (not positive: the system is not shown " + o.kind + ")")
-                << "   [exact LDL^T check of the rounded LMI solution]\n";
+                << "   [exact LDL^T check of the rounded LMI solution, on the model as written]\n";
+    else if (!l.note.empty()) std::cout << "  LMI certificate: none: " << l.note << "\n";
   }
   if (cert_ok && &main != &c)
     std::cout << "  certified frequency value: " << c.value << " at theta = " << c.theta_min << "   [" << to_string(c.status)
@@ -229,7 +230,7 @@ int run(const Opts& o) {
     if (G) {
       write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, upper_only, o.digits));
     } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
-      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, is_level, upper_only, o.digits));
+      write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, v.l, is_level, upper_only, o.digits));
     }
   }
   if (o.json) report_json(o, v);

@@ -119,6 +119,27 @@ ClaimRange upper_bound_claim(const nlohmann::json& claim) {
   return r;
 }
 
+ClaimRange lower_bound_claim(const nlohmann::json& claim, bool& has_hi) {
+  ClaimRange r;
+  r.status = claim.at("status").get<std::string>();
+  has_hi = r.status == "bounds";
+  if (has_hi) only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi"}, "claim");
+  else only_fields(claim, {"quantity", "status", "lo", "printed_lo"}, "claim");
+  r.lo = exact_field(claim, "lo", "claim");
+  if (has_hi) r.hi = exact_field(claim, "hi", "claim");
+  const auto printed = [&](const char* key, const rational& x) {
+    if (!claim.contains(key)) return;
+    const auto& v = claim.at(key);
+    const auto q = v.is_string() ? try_parse_rational(v.get<std::string>()) : std::nullopt;
+    if (!q) throw InputError(std::string("claim.") + key + ": not a number string");
+    if (*q != x && !r.refuted) r.refuted = std::string("claim.") + key + " = " + v.get<std::string>() + " is not the claimed " + x.str();
+  };
+  printed("printed_lo", r.lo);
+  if (has_hi) printed("printed_hi", r.hi);
+  if (has_hi && r.lo > r.hi && !r.refuted) r.refuted = "claim: lo = " + r.lo.str() + " > hi = " + r.hi.str();
+  return r;
+}
+
 ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite) {
   ClaimRange r;
   if (!claim.contains("status") || !claim.at("status").is_string())

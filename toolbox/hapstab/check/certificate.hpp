@@ -90,6 +90,10 @@ ClaimRange claim_range(const nlohmann::json& claim, bool may_be_infinite = false
 /// printed decimal the number claimed; status "upper_bound" and lo unused (ClaimRange's refuted set
 /// when printed_hi is not hi). InputError when malformed.
 ClaimRange upper_bound_claim(const nlohmann::json& claim);
+/// A claim of status "lower_bound" ({lo[, printed_lo]}: a level >= lo only) or "bounds" (the same
+/// and {hi[, printed_hi]}: lo <= level <= hi), each printed decimal the number claimed (refuted
+/// when not). hi is set only for "bounds" (`has_hi`). InputError when malformed.
+ClaimRange lower_bound_claim(const nlohmann::json& claim, bool& has_hi);
 /// x to 12 significant digits (the checkers' reasons).
 std::string decimal(const rational& x);
 /// |printed - x| <= half a unit in the last digit of `printed` (a decimal "-?D+(.D+)?(e[+-]?D+)?",

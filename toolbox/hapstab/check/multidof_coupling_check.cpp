@@ -61,15 +61,7 @@ std::string vhat_lemma1_fails(const Mat& AV, const Mat& BV, const Mat& CV, const
   if (!symmetric(PV)) return "P_V is not symmetric";
   if (!positive_definite(PV, true)) return "P_V > 0 fails";
   // Lemma 1 at X and Q_V: F <= 0
-  const Mat At = transpose(A), Ct = transpose(C), AtP = mul(At, PV), CtQ = mul(Ct, QV);
-  const Mat F11 = add(add(mul(AtP, A), PV, -1), mul(CtQ, C));
-  const Mat F12 = add(add(mul(AtP, B), mul(Ct, X), rational(-1, 2)), mul(CtQ, D));
-  const Mat XD = mul(X, D);
-  const Mat F22 = add(add(mul(mul(transpose(B), PV), B), add(XD, transpose(XD)), rational(-1, 2)), mul(mul(transpose(D), QV), D));
-  Mat negF = zeros(n + m, n + m);
-  for (size_t i = 0; i < n + m; ++i)
-    for (size_t j = 0; j < n + m; ++j)
-      negF[i][j] = -(i < n ? (j < n ? F11[i][j] : F12[i][j - n]) : (j < n ? F12[j][i - n] : F22[i - n][j - n]));
+  const Mat negF = add(zeros(n + m, n + m), lemma1_matrix(A, B, C, D, PV, X, QV), -1);
   if (!positive_definite(negF, false)) return "Lemma 1 for V-hat at X and Q_V: F <= 0 fails";
   return "";
 }

@@ -10,6 +10,7 @@
 #include "hapstab/check/gaussian_rational.hpp"
 #include "hapstab/check/interpolate.hpp"
 #include "hapstab/check/nonnegative.hpp"
+#include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -321,6 +322,20 @@ LowerTest lower_test(const MimoModel& s, const P& d, const rational& lo) {
   return out;
 }
 
+// Lemma 1 (2) at the level lo with the storage P (header): "" when P = P' > 0 and F < 0 (strict, as
+// (2) is written; F's order n + m), else what fails.
+std::string lemma1_fails(const MimoModel& s, const Mat& Pm, const rational& lo) {
+  using namespace rational_matrix;
+  if (!symmetric(Pm)) return "evidence.P is not symmetric";
+  if (!rational_matrix::positive_definite(Pm, true)) return "P > 0 fails (exact elimination)";
+  const Mat Q = s.osp ? add(zeros(s.m, s.m), identity(s.m), lo) : zeros(s.m, s.m);
+  Mat negF = add(zeros(s.n + s.m, s.n + s.m), lemma1_matrix(s.A, s.B, s.C, s.D, Pm, identity(s.m), Q), -1);
+  if (!s.osp)
+    for (size_t i = 0; i < s.m; ++i) negF[s.n + i][s.n + i] -= lo;  // + Phi = lo I in (2)'s lower right block
+  if (!rational_matrix::positive_definite(negF, true)) return "(2) < 0 fails at the level lo with this P (exact elimination of -F)";
+  return "";
+}
+
 }  // namespace
 
 Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
@@ -341,28 +356,48 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
   if (!stable.stable)
     throw InputError("model.A: not Schur stable (" + stable.why + "): the level is not its frequency minimum");
 
-  // ---- an upper bound only (header): the pencil at hi not > 0 at the witness, G(z0) regular (OSP)
-  if (claim.contains("status") && claim.at("status") == "upper_bound") {
-    const detail::ClaimRange range = detail::upper_bound_claim(claim);
-    detail::only_fields(evidence, {"witness_c", "witness_s"}, "evidence");
-    const rational c0 = exact_field(evidence, "witness_c", "evidence"), s0 = exact_field(evidence, "witness_s", "evidence");
+  // ---- an upper bound only (header): the pencil at hi not > 0 at the witness, G(z0) regular (OSP);
+  // ---- a lower bound by Lemma 1 at the storage P, with such an upper bound beside it or alone
+  const std::string status = claim.contains("status") && claim.at("status").is_string() ? claim.at("status").get<std::string>() : "";
+  if (status == "upper_bound" || status == "lower_bound" || status == "bounds") {
+    bool has_hi = status == "upper_bound";
+    const detail::ClaimRange range = status == "upper_bound" ? detail::upper_bound_claim(claim) : detail::lower_bound_claim(claim, has_hi);
+    const bool has_lo = status != "upper_bound";
+    if (!has_lo) detail::only_fields(evidence, {"witness_c", "witness_s"}, "evidence");
+    else if (has_hi) detail::only_fields(evidence, {"witness_c", "witness_s", "P"}, "evidence");
+    else detail::only_fields(evidence, {"P"}, "evidence");
+    Mat Pm;
+    if (has_lo) {
+      Pm = detail::exact_matrix(evidence, "P", "evidence", static_cast<size_t>(max_dim));
+      if (Pm.size() != s.n || cols(Pm) != s.n) throw InputError("evidence.P: must be " + std::to_string(s.n) + "x" + std::to_string(s.n) + " (the states)");
+    }
+    rational c0, s0;
+    if (has_hi) c0 = exact_field(evidence, "witness_c", "evidence"), s0 = exact_field(evidence, "witness_s", "evidence");
     if (range.refuted) return {false, *range.refuted};
-    const rational& hi = range.hi;
-    if (c0 * c0 + s0 * s0 != 1)
-      return {false, "evidence: the witness (c0, s0) = (" + detail::shortened(c0) + ", " + detail::shortened(s0) +
-                         ") is not on the unit circle (c0^2 + s0^2 != 1)"};
-    const Cq z0(c0, s0);
-    if (s.osp && det(G_at(s, z0)).is_zero())
-      return {false, "evidence: det G = 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0) +
-                         " (no bound from it: the pencil is singular there for every nu)"};
-    if (positive_definite(s, z0, hi))
-      return {false, level + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: " + pencil(s, "hi") +
-                         " is positive definite at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0)};
-    return {true, level + " <= " + detail::decimal(hi) + " (" + (s.osp ? "OSP" : "ISP") + ", " + std::to_string(s.m) + "x" +
-                      std::to_string(s.m) + ", an upper bound only: " + pencil(s, "hi") + " not > 0 at the witness z0 = " +
-                      detail::shortened(c0) + " + j " + detail::shortened(s0) +
-                      (s.osp ? ", where det G != 0" : "") + ", so the frequency inequality of every level above hi fails there; "
-                      "A Schur stable: " + stable.why + ")"};
+    std::string shown;
+    if (has_lo) {
+      const std::string why = lemma1_fails(s, Pm, range.lo);
+      if (!why.empty()) return {false, level + " >= " + range.lo.str() + " (" + detail::decimal(range.lo) + ") not shown: " + why};
+      shown = level + " >= " + detail::decimal(range.lo) + " (Lemma 1 at the storage P: P > 0 and (2) < 0 at the level lo, exactly)";
+    }
+    if (has_hi) {
+      const rational& hi = range.hi;
+      if (c0 * c0 + s0 * s0 != 1)
+        return {false, "evidence: the witness (c0, s0) = (" + detail::shortened(c0) + ", " + detail::shortened(s0) +
+                           ") is not on the unit circle (c0^2 + s0^2 != 1)"};
+      const Cq z0(c0, s0);
+      if (s.osp && det(G_at(s, z0)).is_zero())
+        return {false, "evidence: det G = 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0) +
+                           " (no bound from it: the pencil is singular there for every nu)"};
+      if (positive_definite(s, z0, hi))
+        return {false, level + " <= " + hi.str() + " (" + detail::decimal(hi) + ") not shown: " + pencil(s, "hi") +
+                           " is positive definite at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0)};
+      shown += (shown.empty() ? "" : "; ") + level + " <= " + detail::decimal(hi) + " (" + pencil(s, "hi") +
+               " not > 0 at the witness z0 = " + detail::shortened(c0) + " + j " + detail::shortened(s0) +
+               (s.osp ? ", where det G != 0" : "") + ", so the frequency inequality of every level above hi fails there)";
+    }
+    return {true, shown + " (" + (s.osp ? "OSP" : "ISP") + ", " + std::to_string(s.m) + "x" + std::to_string(s.m) +
+                      (has_lo ? "" : ", an upper bound only") + "; A Schur stable: " + stable.why + ")"};
   }
   std::string regular;
   if (s.osp) {  // G regular on the circle, so He G - nu G^H G = G^H (He G^-1 - nu I) G there

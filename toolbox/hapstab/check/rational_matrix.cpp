@@ -62,4 +62,17 @@ bool positive_definite(Mat M, bool strict) {
   return true;
 }
 
+Mat lemma1_matrix(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const Mat& P, const Mat& X, const Mat& Q) {
+  const size_t n = A.size(), m = D.size();
+  const Mat At = transpose(A), Ct = transpose(C), AtP = mul(At, P), CtQ = mul(Ct, Q);
+  const Mat F11 = add(add(mul(AtP, A), P, -1), mul(CtQ, C));
+  const Mat F12 = add(add(mul(AtP, B), mul(Ct, X), rational(-1, 2)), mul(CtQ, D));
+  const Mat XD = mul(X, D);
+  const Mat F22 = add(add(mul(mul(transpose(B), P), B), add(XD, transpose(XD)), rational(-1, 2)), mul(mul(transpose(D), Q), D));
+  Mat F = zeros(n + m, n + m);
+  for (size_t i = 0; i < n + m; ++i)
+    for (size_t j = 0; j < n + m; ++j) F[i][j] = i < n ? (j < n ? F11[i][j] : F12[i][j - n]) : (j < n ? F12[j][i - n] : F22[i - n][j - n]);
+  return F;
+}
+
 }  // namespace hapstab::check::rational_matrix

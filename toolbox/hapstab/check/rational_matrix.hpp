@@ -4,6 +4,8 @@
 //   positive_definite(M, strict): symmetric elimination without pivoting. Strict: every pivot > 0
 //   (Sylvester). Not strict: no pivot < 0, and a zero pivot has its remaining row 0 (a PSD matrix
 //   with a zero diagonal entry has that row 0; Schur complements of PSD matrices are PSD).
+//   lemma1_matrix: the matrix of paper 000's Lemma 1 (2) with the supply y'Xu - y'Qy (X = I, Q = Delta:
+//   (2) itself), for the checkers that verify a storage P.
 #pragma once
 
 #include <vector>
@@ -23,5 +25,9 @@ Mat add(const Mat& A, const Mat& B, const rational& s = 1);
 bool symmetric(const Mat& A);
 /// M > 0 (strict) or M >= 0, M symmetric (see above).
 bool positive_definite(Mat M, bool strict);
+/// F = [[A'PA - P + C'QC, A'PB - C'X/2 + C'QD], [., B'PB - (XD + D'X')/2 + D'QD]], (n + m) x (n + m):
+/// for [x; u], x+'Px+ - x'Px - (y'Xu + u'X'y)/2 + y'Qy with y = Cx + Du, x+ = Ax + Bu (X = I, Q = Delta
+/// I: paper 000 (2) without Phi). F <= 0 (< 0) with P > 0 is the dissipation inequality (1).
+Mat lemma1_matrix(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const Mat& P, const Mat& X, const Mat& Q);
 
 }  // namespace hapstab::check::rational_matrix

@@ -9,6 +9,7 @@
 #include <complex>
 #include <cstdio>
 
+#include "hapstab/lmi/certificate.hpp"
 #include "hapstab/lmi/certify.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -104,7 +105,7 @@ Expr lemma2_matrix(const StateSpace<double>& s, const Expr& Q, const Expr* mu, d
 // when `reciprocal` (Lemma 2's mu = 1/delta). An exactly certified point proves lower_bound
 // (for 1/L only when L > 0). `hint` explains a failure.
 PassivityLevel solve_level(const Program& prog, Backend backend, int lemma, const MatrixVariable& L, bool reciprocal,
-                           const std::string& hint = "") {
+                           const MatrixVariable* P = nullptr, const std::string& hint = "") {
   Options opt;
   opt.backend = backend;
   const CertifiedSolve cs = certify_lmi(prog, opt);
@@ -122,6 +123,7 @@ PassivityLevel solve_level(const Program& prog, Backend backend, int lemma, cons
     const rational q = cs.point(L)(0, 0);
     if (!reciprocal) out.lower_bound = q;
     else if (q > 0) out.lower_bound = 1 / q;
+    if (P && out.lower_bound) out.lemma1_P = cs.point(*P);
   }
   return out;
 }
@@ -140,7 +142,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     prog.add_lmi("P > 0", Expr(P));
     prog.add_lmi("Lemma 1 (2) < 0", -lemma1_M(sys, Expr(P), &Lx, kind, 0, 0));
     prog.set_minimize(-Lx);
-    return solve_level(prog, backend, lemma, L, false);
+    return solve_level(prog, backend, lemma, L, false, &P);
   }
   // Lemma 2
   auto Q = prog.new_symmetric(n, "Q");
@@ -150,13 +152,27 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
     Expr mx(mu);
     prog.add_lmi("Lemma 2 (Schur form) > 0", lemma2_matrix(sys, Expr(Q), &mx, 0, nullptr, 0, false));
     prog.set_minimize(mx);
-    return solve_level(prog, backend, lemma, mu, true, " (Lemma 2 needs Delta > 0: the OSP level may be <= 0)");
+    return solve_level(prog, backend, lemma, mu, true, nullptr, " (Lemma 2 needs Delta > 0: the OSP level may be <= 0)");
   }
   auto phi = prog.new_scalar("phi");
   Expr px(phi);
   prog.add_lmi("Lemma 2 (Schur form, Delta = 0) > 0", lemma2_matrix(sys, Expr(Q), nullptr, -1, &px, 0, false));
   prog.set_minimize(-px);
   return solve_level(prog, backend, lemma, phi, false);
+}
+
+bool lemma1_holds(const StateSpace<rational>& s, const MatQ& P, const rational& level, PassivityKind kind) {
+  const auto n = s.A.rows(), m = s.B.cols();
+  if (P.rows() != n || P.cols() != n || P != P.transpose() || !exact_pd_bareiss(P)) return false;
+  const MatQ At = s.A.transpose(), Ct = s.C.transpose();
+  const rational delta = kind == PassivityKind::osp ? level : rational(0);
+  MatQ M11 = At * P * s.A - P + delta * Ct * s.C;
+  MatQ M12 = At * P * s.B - rational(1, 2) * Ct + delta * Ct * s.D;
+  MatQ M22 = s.B.transpose() * P * s.B - rational(1, 2) * (s.D + s.D.transpose()) + delta * s.D.transpose() * s.D;
+  if (kind == PassivityKind::isp) M22 += level * MatQ::Identity(m, m);
+  MatQ negM(n + m, n + m);
+  negM << -M11, -M12, -M12.transpose(), -M22;
+  return exact_pd_bareiss(negM);
 }
 
 double lemma_margin(const StateSpace<double>& sys, int lemma, double delta, double phi, bool typo, Backend backend) {

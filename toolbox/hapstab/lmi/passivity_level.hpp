@@ -63,6 +63,9 @@ struct PassivityLevel {
   /// Proven exactly: LMI, the system is lower_bound-OSP/ISP; certified frequency method, the
   /// enclosure's lower end.
   std::optional<rational> lower_bound;
+  /// Lemma 1 LMI: the rounded P with which (2) holds strictly at lower_bound (exactly checked);
+  /// the evidence of a lower-bound certificate. Not set for Lemma 2 (its Q = P^-1).
+  std::optional<MatQ> lemma1_P;
   std::optional<Enclosure<rational>> enclosure;  ///< certified frequency method: the level is in [lo, hi]
   std::string value;            ///< certified frequency method: the level to `digits` digits ("-inf")
   double theta_min = -1;        ///< frequency methods: the minimising theta in [0, pi]
@@ -78,6 +81,11 @@ struct PassivityLevel {
 /// Lemma 1 (lemma = 1) or Lemma 2 (lemma = 2) LMI. Requires a discrete, square system.
 PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind kind, int lemma = 1,
                                    Backend backend = Backend::automatic);
+
+/// Lemma 1 exactly, for a model as written (not the doubles the SDP saw): P > 0 and (2) < 0 at
+/// Delta = level I (osp) or Phi = level I (isp), both by exact fraction-free elimination. (2) is
+/// non-increasing in the level, so it then holds at every lower level too.
+bool lemma1_holds(const StateSpace<rational>& s, const MatQ& P, const rational& level, PassivityKind kind);
 
 /// Frequency-domain level (see header comment).
 PassivityLevel passivity_level_freq(const StateSpace<double>& sys, PassivityKind kind, int grid = 4096);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::lmi {
@@ -19,6 +20,33 @@ RationalFunction<rational> siso_transfer(const StateSpace<rational>& s) {
   const Mat<rational> closed = s.A - s.B * s.C;
   return RationalFunction<rational>(charpoly(closed) - d + d * Polynomial<rational>(s.D(0, 0)), d);
 }
+// The LMI's exact check ran on the doubles the SDP saw; the printed "level >= lo" is about the model
+// as written: Lemma 1 is checked again, exactly, on its entries (--ss, --mat) or on G's realisation
+// (--H: tf2ss, which the doubles round), with the rounded P. Where it fails there, or cannot be
+// checked (Lemma 2 keeps no P) and the doubles differ from the entries, no lower bound is stated.
+void lower_bound_as_written(PassivityLevel& l, const LevelModel& m, PassivityKind kind) {
+  if (!l.lower_bound || (!m.exact && !m.G)) return;
+  const StateSpace<rational> written = m.exact ? *m.exact : tf2ss(TransferFunction{*m.G, Domain::z, m.sys.T});
+  bool holds;
+  if (l.lemma1_P) {
+    holds = lemma1_holds(written, *l.lemma1_P, *l.lower_bound, kind);
+  } else {
+    const auto same = [](const Mat<rational>& E, const Mat<double>& R) {
+      return E.rows() == R.rows() && E.cols() == R.cols() &&
+             E == Mat<rational>(R.unaryExpr([](double x) { return exact_rational(x); }));
+    };
+    holds = same(written.A, m.sys.A) && same(written.B, m.sys.B) && same(written.C, m.sys.C) && same(written.D, m.sys.D);
+  }
+  if (holds) return;
+  l.lower_bound.reset();
+  l.lemma1_P.reset();
+  l.note += std::string(l.note.empty() ? "" : "; ") +
+            (l.lemma1_P ? "the rounded LMI solution meets Lemma 1 for the model's doubles, not for its entries as written"
+                        : "the rounded LMI solution meets Lemma 2 for the model's doubles, which differ from its entries as "
+                          "written (Lemma 2 keeps no P to check them with; --lemma 1 does)") +
+            ": no lower bound is stated";
+}
+
 }  // namespace
 
 void check_schur_stable(const StateSpace<double>& sys, const std::string& name) {
@@ -43,6 +71,7 @@ Levels passivity_levels(const LevelModel& m, PassivityKind kind, int lemma, Back
   if (sys.states() == 0) l.note = f.note = c.note = "static gain: no state";
   if (sys.states() > 0) {
     l = passivity_level_lmi(sys, kind, lemma, backend);
+    lower_bound_as_written(l, m, kind);
     f = passivity_level_freq(sys, kind, grid);
     if (sys.inputs() == 1)
       // the model as written (--H; --ss: its exact entries; --mat: its doubles' exact values)
