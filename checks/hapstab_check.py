@@ -1442,7 +1442,9 @@ def check_passivity_level_mimo(c):
     an exact claim v: phi* >= v so, and det(He G - v I) = 0 somewhere on the circle. OSP: delta* the same
     with He G - nu G^H G (a congruence of He G^-1 - nu I where G is regular: det G != 0 on the circle is
     checked first), and lo > 0. A claim of status "upper_bound" (an OSP value <= 0) is the witness
-    part alone, with det G(z0) != 0 for OSP (then for every nu > hi the pencil is not >= 0 at z0)."""
+    part alone, with det G(z0) != 0 for OSP (then for every nu > hi the pencil is not >= 0 at z0).
+    Status "lower_bound" (or "bounds": with such an upper bound beside it): the level >= lo if P = P' > 0
+    and paper 000's (2) < 0 at the level lo with evidence.P (Lemma 1's "if": (1) holds with V = x'Px)."""
     model, claim, evidence = parts(c)
     only(model, ("A", "B", "C", "D", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")

@@ -54,6 +54,16 @@
 //     not > 0 (a congruence), so for every nu > hi He G - nu G^H G = G^H (He G^-1 - nu I) G is not
 //     >= 0 at z0, and the frequency inequality of every level above hi fails (it is necessary for a
 //     stable G to be nu-passive). No hypothesis on the rest of the circle; ISP likewise (He G - nu I).
+//   (lower bound by Lemma 1, claim status "lower_bound" {lo[, printed_lo]}, or "bounds" with {hi[,
+//     printed_hi]} and the witness above beside it; evidence.P, n x n: the LMI's level is the printed
+//     result, the frequency value <= 0 not the level) level >= lo  if  P = P' > 0 and paper 000's (2) < 0
+//     at Delta = lo I (OSP) or Phi = lo I (ISP) with this P, both by exact symmetric elimination
+//     (rational_matrix::lemma1_matrix, every pivot > 0). Proof (the "if" of Lemma 1, in one line): for
+//     [x; u] != 0, [x; u]'(2)[x; u] = V(x+) - V(x) - y'u + lo y'y (OSP; + lo u'u for ISP) < 0 with V =
+//     x'Px > 0, which is Definition 2's (1) at Delta = lo I; so the system is lo-OSP (ISP) and Lemma 1's
+//     level, the supremum of such lo, is >= lo. (2) is non-increasing in lo, so a printed lo rounded
+//     down still holds. No frequency hypothesis is used for this part (a zero of G on the circle is
+//     allowed).
 // Hypotheses, verified: T > 0; model.kind "isp" or "osp"; A
 // n x n with n >= 1, B n x m, C m x n, D m x m (square G) with every entry a "p/q" string; A Schur
 // stable (check/schur_cohn.hpp on d; then d(t) != 0 for |t| >= 1 and He G is continuous on the
