@@ -1119,7 +1119,9 @@ def check_passivity_level(c):
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "num", "den", "T", "kind"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    only(evidence, ("witness_c",), "evidence")
+    lemma1 = claim.get("status") in ("lower_bound", "bounds")
+    if not lemma1:
+        only(evidence, ("witness_c",), "evidence")
     kind = model.get("kind")
     if kind not in ("isp", "osp"):
         raise Malformed("model.kind: missing or neither \"isp\" nor \"osp\"")
@@ -1137,20 +1139,62 @@ def check_passivity_level(c):
     E, F = re_over_circle(G.den, G.num) if osp else re_over_circle(G.num, G.den)
     one = Fraction(1)
     name = "delta*" if osp else "phi*"
+    def upper_fails(hi, c0):
+        if c0 < -1 or c0 > 1:
+            return "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
+        if peval(F, c0) == 0:
+            return "evidence.witness_c: %s = 0 there (no bound from it)" % ("G" if osp else "1/G")
+        w0 = peval(E, c0) / peval(F, c0)
+        if w0 > hi:
+            return "%s <= %s (%.12g) not shown: the value at the witness c0 = %s is %.12g > hi" % (name, short(hi), float(hi), short(c0), float(w0))
+        return None
     if claim.get("status") == "upper_bound":  # the level <= hi only (an OSP value <= 0, a zero of G on the circle)
         hi, refuted = upper_bound_claim(claim)
         if refuted:
             return False, refuted
         c0 = exact(evidence, "witness_c", "evidence")
-        if c0 < -1 or c0 > 1:
-            return False, "evidence.witness_c = %s is outside [-1, 1]" % short(c0)
-        if peval(F, c0) == 0:
-            return False, "evidence.witness_c: %s = 0 there (no bound from it)" % ("G" if osp else "1/G")
-        w0 = peval(E, c0) / peval(F, c0)
-        if w0 > hi:
-            return False, "%s <= %s (%.12g) not shown: the value at the witness c0 = %s is %.12g > hi" % (
-                name, short(hi), float(hi), short(c0), float(w0))
-        return True, "%s <= %.12g (an upper bound only: the value %.12g at c0 = %s)" % (name, float(hi), float(w0), short(c0))
+        why = upper_fails(hi, c0)
+        if why:
+            return False, why
+        return True, "%s <= %.12g (an upper bound only: the value %.12g at c0 = %s)" % (
+            name, float(hi), float(peval(E, c0) / peval(F, c0)), short(c0))
+    if lemma1:  # level >= lo by Lemma 1 at P for the realisation (A, B, C, D) in the evidence; hi as above
+        lo, hi, refuted = lower_bound_claim(claim)
+        only(evidence, ("A", "B", "C", "D", "P") + (("witness_c",) if hi is not None else ()), "evidence")
+        A, B, C, D, P = (mimo_matrix(evidence, k) for k in ("A", "B", "C", "D", "P"))
+        n = len(A)
+        if n == 0 or any(len(r) != n for r in A) or len(B) != n or any(len(r) != 1 for r in B) or len(C) != 1 or \
+                len(C[0]) != n or len(D) != 1 or len(D[0]) != 1 or len(P) != n or any(len(r) != n for r in P):
+            raise Malformed("evidence: A n x n (n >= 1), B n x 1, C 1 x n, D 1 x 1, P n x n expected")
+        c0 = exact(evidence, "witness_c", "evidence") if hi is not None else None
+        if refuted:
+            return False, refuted
+        # G_r = D + C (tI - A)^-1 B equals G at n + deg(den) + 1 points where both are defined: then the
+        # polynomial N d - p D of degree <= n + deg(den) vanishes there, so it is 0 (G_r = G)
+        need, t, equal = n + len(G.den), 1, 0
+        while equal < need:
+            t += 1
+            tq = Fraction(t)
+            if peval(G.den, tq) == 0:
+                continue
+            X = solve_shifted(A, B, tq)
+            if X is None:
+                continue
+            gr = D[0][0] + sum(C[0][i] * X[i][0] for i in range(n))
+            g = peval(G.num, tq) / peval(G.den, tq)
+            if gr != g:
+                return False, "evidence: (A, B, C, D) does not realise G as written (at z = %d: %s, G = %s)" % (t, short(gr), short(g))
+            equal += 1
+        why = lemma1_level_fails(A, B, C, D, P, lo, osp)
+        if why:
+            return False, "%s >= %s (%.12g) not shown: %s" % (name, short(lo), float(lo), why)
+        shown = "%s >= %.12g (Lemma 1 at P for the realisation written, equal to G at %d points)" % (name, float(lo), need)
+        if hi is not None:
+            why = upper_fails(hi, c0)
+            if why:
+                return False, why
+            shown += "; %s <= %.12g at c0 = %s" % (name, float(hi), short(c0))
+        return True, shown
     status, lo, hi, _, refuted = claim_range(claim)
     if refuted:
         return False, refuted
@@ -1488,18 +1532,9 @@ def check_passivity_level_mimo(c):
             return False, refuted
         shown = []
         if lo is not None:
-            if any(P[i][j] != P[j][i] for i in range(n) for j in range(i)):
-                return False, "%s >= %s not shown: evidence.P is not symmetric" % (lvl, short(lo))
-            if not semidefinite(P, True):
-                return False, "%s >= %s not shown: P > 0 fails" % (lvl, short(lo))
-            ident = [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
-            Q = [[lo * x for x in r] for r in ident] if osp else [[Fraction(0)] * m for _ in range(m)]
-            neg = [[-x for x in row] for row in lemma1_matrix(A, B, C, D, P, ident, Q)]
-            if not osp:
-                for i in range(m):
-                    neg[n + i][n + i] -= lo  # + Phi = lo I in (2)'s lower right block
-            if not semidefinite(neg, True):
-                return False, "%s >= %s (%.12g) not shown: (2) < 0 fails at the level lo with this P" % (lvl, short(lo), float(lo))
+            why = lemma1_level_fails(A, B, C, D, P, lo, osp)
+            if why:
+                return False, "%s >= %s (%.12g) not shown: %s" % (lvl, short(lo), float(lo), why)
             shown.append("%s >= %.12g (Lemma 1 at P: P > 0, (2) < 0)" % (lvl, float(lo)))
         if hi is not None:
             if c0 * c0 + s0 * s0 != 1:
@@ -3934,6 +3969,25 @@ def lemma1_matrix(A, B, C, D, P, X, Q):
     F22 = msum(msum(mmul(mmul(mT(B), P), B), msum(XD, mT(XD)), Fraction(-1, 2)), mmul(mmul(mT(D), Q), D))
     F = [[F11[i][j] if j < N else F12[i][j - N] for j in range(N + m)] for i in range(N)]
     return F + [[F12[j][i] if j < N else F22[i][j - N] for j in range(N + m)] for i in range(m)]
+
+
+def lemma1_level_fails(A, B, C, D, P, lo, osp):
+    """None when P = P' > 0 and paper 000's (2) < 0 at Delta = lo I (OSP) or Phi = lo I (ISP) with this P (Lemma 1's
+    "if": then (1) holds with V = x'Px, so the level is >= lo); else what fails."""
+    n, m = len(A), len(D)
+    if any(P[i][j] != P[j][i] for i in range(n) for j in range(i)):
+        return "evidence.P is not symmetric"
+    if not semidefinite(P, True):
+        return "P > 0 fails"
+    ident = [[Fraction(int(i == j)) for j in range(m)] for i in range(m)]
+    Q = [[lo * x for x in r] for r in ident] if osp else [[Fraction(0)] * m for _ in range(m)]
+    neg = [[-x for x in row] for row in lemma1_matrix(A, B, C, D, P, ident, Q)]
+    if not osp:
+        for i in range(m):
+            neg[n + i][n + i] -= lo  # + Phi = lo I in (2)'s lower right block
+    if not semidefinite(neg, True):
+        return "(2) < 0 fails at the level lo with this P"
+    return None
 
 
 def vhat_lemma1(AV, BV, CV, DV, delta, T, X, QV, PV):

@@ -614,6 +614,7 @@ LEVEL_TEMPLATES = [  # SISO G(z), Schur stable for the values drawn
     ("K*(z^2 + p*z + r)/(z^2 - b*z + c)", ["K", "p", "r", "b", "c"]),
     ("K + B*(z-1)/(T*z)", ["K", "B"]),
     ("(K*z + 1)/(z*(z - a))", ["K", "a"]),
+    ("1/(z - a) - K", ["K", "a"]),  # OSP <= 0 with D = -K: Lemma 1's lower bound (lower_bound, bounds)
 ]
 
 
@@ -709,6 +710,8 @@ def level_frame(cert, rng):
 def level_mutants(cert, rng, hapstab, cache, tmp):
     if cert["claim"]["status"] == "upper_bound":
         return upper_bound_mutants(cert, rng)
+    if cert["claim"]["status"] in ("lower_bound", "bounds"):
+        return level_lemma1_mutants(cert, rng)
     out = [("unmutated", cert, "accept")]
     cl, m = cert["claim"], cert["model"]
     lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
@@ -875,12 +878,13 @@ def mimo_upper_bound_mutants(cert, rng):
     return out
 
 
-def mimo_lemma1_mutants(cert, rng):
-    """passivity-level-mimo with status lower_bound or bounds (the LMI's level printed: lo by Lemma 1 at
+def lemma1_mutants(cert, rng, upper_mutants, witness_keys):
+    """passivity-level(-mimo) with status lower_bound or bounds (the LMI's level printed: lo by Lemma 1 at
     the storage P, hi the frequency value <= 0 at its witness): lo lowered (accept: (2) is non-increasing
     in the level), lo raised a tenth of its scale (refute: the LMI's lo is within ~1e-5 of Lemma 1's
     supremum) or past hi, its printed decimal, P negated, not symmetric, scaled, of the wrong shape or
-    gone, the bounds' hi and witness as for an upper bound only."""
+    gone; the bounds' hi and witness by `upper_mutants` (the kind's upper-bound-only mutants) on the
+    certificate without lo and P."""
     cl = cert["claim"]
     lo = Fraction(cl["lo"])
     scale = max(abs(lo), Fraction(1))
@@ -905,13 +909,26 @@ def mimo_lemma1_mutants(cert, rng):
         out.append(("status lower_bound beside hi", with_field(cert, ["claim", "status"], "lower_bound"), "malformed"))
         out.append(("status upper_bound beside lo", with_field(cert, ["claim", "status"], "upper_bound"), "malformed"))
         upper = deleted(deleted(with_field(cert, ["claim", "status"], "upper_bound"), ["claim", "lo"]), ["claim", "printed_lo"])
-        out += [(name, deleted(c, ["evidence", "P"]) if "P" in c["evidence"] else c, e)
-                for name, c, e in mimo_upper_bound_mutants(deleted(upper, ["evidence", "P"]), rng)
-                if name not in ("unmutated", "a lower end added")]
-        out.append(("a witness beside a lower bound only", with_field(cert, ["claim", "status"], "lower_bound"), "malformed"))
+        upper["evidence"] = {k: v for k, v in upper["evidence"].items() if k in witness_keys}
+        out += [(name, c, e) for name, c, e in upper_mutants(upper, rng) if name not in ("unmutated", "a lower end added")]
     else:
-        out.append(("a witness added", with_field(cert, ["evidence", "witness_c"], "1"), "malformed"))
+        out.append(("a witness added", with_field(cert, ["evidence", witness_keys[0]], "1"), "malformed"))
         out.append(("status bounds without hi", with_field(cert, ["claim", "status"], "bounds"), "malformed"))
+    return out
+
+
+def level_lemma1_mutants(cert, rng):
+    """The SISO kind's Lemma 1 claims: lemma1_mutants, and the realisation (A, B, C, D) in the evidence
+    edited (it no longer realises G as written: refuted before any LMI), or of the wrong shape."""
+    ev = cert["evidence"]
+    a00 = Fraction(ev["A"][0][0])
+    out = lemma1_mutants(cert, rng, upper_bound_mutants, ("witness_c",))
+    out += [("evidence.A[0][0] + 1/10", with_field(cert, ["evidence", "A", 0, 0], frac(a00 + Fraction(1, 10))), "refute"),
+            ("evidence.D + 1", with_field(cert, ["evidence", "D", 0, 0], frac(Fraction(ev["D"][0][0]) + 1)), "refute"),
+            ("evidence.B with two inputs", with_field(cert, ["evidence", "B"], [r + ["0"] for r in ev["B"]]), "malformed"),
+            ("deleted evidence.A", deleted(cert, ["evidence", "A"]), "malformed"),
+            ("model.H + 1/10 (the realisation is of the H written before)",
+             with_field(cert, ["model", "H"], "(" + cert["model"]["H"] + ") + 1/10"), "refute")]
     return out
 
 
@@ -920,7 +937,8 @@ def mimo_mutants(cert, rng, hapstab, cache, tmp):
     if cl["status"] == "upper_bound":
         return mimo_upper_bound_mutants(cert, rng) + mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl))
     if cl["status"] in ("lower_bound", "bounds"):
-        return mimo_lemma1_mutants(cert, rng) + mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl))
+        return (lemma1_mutants(cert, rng, mimo_upper_bound_mutants, ("witness_c", "witness_s")) +
+                mimo_model_mutants(cert, rng, hapstab, cache, tmp, *claim_ends(cl)))
     out = [("unmutated", cert, "accept")]
     exact_claim = cl["status"] == "exact"
     lo, hi, scale, tiny, gap, claim = level_frame(cert, rng)
@@ -2031,9 +2049,11 @@ def print_branches(certs, mutants, cpp):
                                 min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
     lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
     if lvl:
-        print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d" % (
-            sum(1 for c in lvl if c["model"]["kind"] == "isp"), sum(1 for c in lvl if c["model"]["kind"] == "osp"),
-            *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound"))))
+        print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's lower "
+              "bound %d, with hi %d" % (
+                  sum(1 for c in lvl if c["model"]["kind"] == "isp"), sum(1 for c in lvl if c["model"]["kind"] == "osp"),
+                  *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound", "lower_bound",
+                                                                                 "bounds"))))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
         print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's "

@@ -449,6 +449,40 @@ TEST(PassivityLevelCheck, UpperBoundOnlyByHand) {
   EXPECT_THROW(check_certificate(lo_beside), InputError);
 }
 
+// Lemma 1's lower bound for G as written (SISO): G = -1 + 1/(z + 1/2) realised by A = -1/2, B = C = 1,
+// D = -1 (PassivityLevelMimoCheck.LowerBoundByLemma1ByHand has the matrices: P = 1 shows lo = -4, not
+// -3). A realisation of another G (A = -1/3: 1/(z + 1/3)) is refuted before any LMI; hi = -3 at c0 = 1.
+TEST(PassivityLevelCheck, LowerBoundByLemma1ByHand) {
+  auto cert = [](const std::string& status, const std::string& lo, const std::string& a) {
+    nlohmann::json c = level_cert("-1 + 1/(z + 1/2)", "osp", {{"status", status}, {"lo", lo}}, "1");
+    c["evidence"] = {{"A", {{a}}}, {"B", {{"1"}}}, {"C", {{"1"}}}, {"D", {{"-1"}}}, {"P", {{"1"}}}};
+    if (status == "bounds") c["claim"]["hi"] = "-3", c["evidence"]["witness_c"] = "1";
+    return c;
+  };
+  const Verdict v = check_certificate(cert("lower_bound", "-4", "-1/2"));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("Lemma 1"), std::string::npos) << v.reason;
+  EXPECT_TRUE(check_certificate(cert("bounds", "-4", "-1/2")).verified);
+  const Verdict high = check_certificate(cert("lower_bound", "-3", "-1/2"));
+  EXPECT_FALSE(high.verified);
+  EXPECT_NE(high.reason.find("(2) < 0 fails"), std::string::npos) << high.reason;
+  const Verdict other = check_certificate(cert("lower_bound", "-4", "-1/3"));
+  EXPECT_FALSE(other.verified);
+  EXPECT_NE(other.reason.find("does not realise G"), std::string::npos) << other.reason;
+  auto low_hi = cert("bounds", "-4", "-1/2");
+  low_hi["claim"]["hi"] = "-31/10";  // Re(1/G) = -3 at c0 = 1
+  EXPECT_FALSE(check_certificate(low_hi).verified);
+  auto no_p = cert("lower_bound", "-4", "-1/2");
+  no_p["evidence"].erase("P");
+  EXPECT_THROW(check_certificate(no_p), InputError);
+  auto two_inputs = cert("lower_bound", "-4", "-1/2");
+  two_inputs["evidence"]["B"] = {{"1", "0"}};
+  EXPECT_THROW(check_certificate(two_inputs), InputError);
+  auto witness_beside = cert("lower_bound", "-4", "-1/2");
+  witness_beside["evidence"]["witness_c"] = "1";  // a lower bound only has no witness
+  EXPECT_THROW(check_certificate(witness_beside), InputError);
+}
+
 // G = 1 + 1/(z - 1/2) = (z + 1/2)/(z - 1/2), c = cos(theta): Re G = 1 + (c - 1/2)/(5/4 - c), increasing
 // in c, so phi* = Re G(-1) = 1/3; 1/G = (z - 1/2)/(z + 1/2), Re(1/G) = (3/4)/(5/4 + c), so delta* =
 // Re(1/G)(1) = 1/3.

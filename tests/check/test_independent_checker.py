@@ -569,6 +569,38 @@ class PassivityLevel(unittest.TestCase):
         c["claim"]["lo"] = "-2"
         self.assertEqual(hc.check(c)[0], 2)
 
+    def test_lower_bound_by_lemma1_by_hand(self):
+        # test_check.cpp's PassivityLevelCheck.LowerBoundByLemma1ByHand: G = -1 + 1/(z + 1/2), A = -1/2,
+        # B = C = 1, D = -1, P = 1: lo = -4 shown, -3 not; A = -1/3 realises another G; hi = -3 at c0 = 1
+        def cert(status, lo, a):
+            c = level_cert("-1 + 1/(z + 1/2)", "osp", {"status": status, "lo": lo}, "1")
+            c["evidence"] = {"A": [[a]], "B": [["1"]], "C": [["1"]], "D": [["-1"]], "P": [["1"]]}
+            if status == "bounds":
+                c["claim"]["hi"], c["evidence"]["witness_c"] = "-3", "1"
+            return c
+        code, why = hc.check(cert("lower_bound", "-4", "-1/2"))
+        self.assertEqual(code, 0, why)
+        self.assertIn("Lemma 1", why)
+        self.assertEqual(hc.check(cert("bounds", "-4", "-1/2"))[0], 0)
+        code, why = hc.check(cert("lower_bound", "-3", "-1/2"))
+        self.assertEqual(code, 1)
+        self.assertIn("(2) < 0 fails", why)
+        code, why = hc.check(cert("lower_bound", "-4", "-1/3"))
+        self.assertEqual(code, 1)
+        self.assertIn("does not realise G", why)
+        c = cert("bounds", "-4", "-1/2")
+        c["claim"]["hi"] = "-31/10"
+        self.assertEqual(hc.check(c)[0], 1)
+        c = cert("lower_bound", "-4", "-1/2")
+        del c["evidence"]["P"]
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("lower_bound", "-4", "-1/2")
+        c["evidence"]["B"] = [["1", "0"]]
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("lower_bound", "-4", "-1/2")
+        c["evidence"]["witness_c"] = "1"
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_first_order(self):
         ex = lambda v: {"status": "exact", "value": v}  # noqa: E731
         G = "1 + 1/(z-0.5)"

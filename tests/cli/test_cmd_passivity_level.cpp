@@ -95,8 +95,8 @@ TEST(CmdPassivityLevel, NegativeOspFrequencyValueIsAnUpperBound) {
 // G = -1 + 1/(z + 1/2) = (1/2 - z)/(z + 1/2), D = -1: Lemma 1 has a level (the LMI's, numeric, the
 // printed result) and the certified frequency value beside it bounds it from above. By hand: on the
 // circle Re(1/G) = -(3/4)/(5/4 - cos theta), least at theta = 0: -3. The JSON encloses the level in
-// [the LMI's exactly checked lower bound, -3], and --certificate writes the upper bound (it wrote
-// nothing before: "not the level here").
+// [the LMI's exactly checked lower bound, -3], and --certificate writes both (it wrote nothing before:
+// "not the level here"): lo by Lemma 1 at the rounded P for G's realisation (A = -1/2), hi = -3.
 TEST(CmdPassivityLevel, UpperBoundBesideTheLmiLevel) {
   CliRun r = run("--H \"-1 + 1/(z + 1/2)\" --T 1/100 --kind osp --backend csdp --json");
   ASSERT_EQ(r.code, 0) << r.out;
@@ -113,8 +113,10 @@ TEST(CmdPassivityLevel, UpperBoundBesideTheLmiLevel) {
   CliRun c = run("--H \"-1 + 1/(z + 1/2)\" --T 1/100 --kind osp --backend csdp --certificate " + cert);
   ASSERT_EQ(c.code, 0) << c.out;
   const auto k = nlohmann::json::parse(read_file(cert));
-  EXPECT_EQ(k["claim"]["status"], "upper_bound");
+  EXPECT_EQ(k["claim"]["status"], "bounds");  // lo by Lemma 1 at P for G's realisation, hi = -3 at its witness
   EXPECT_EQ(k["claim"]["hi"], "-3");
+  EXPECT_EQ(k["claim"]["lo"], j["lower_bound"].is_string() ? nlohmann::json(parse_rational(j["lower_bound"].get<std::string>()).str()) : nlohmann::json());
+  EXPECT_EQ(k["evidence"]["A"], nlohmann::json::array({nlohmann::json::array({"-1/2"})}));
   EXPECT_NE(c.out.find("[exact upper bound on the level, not the level: see note]"), std::string::npos) << c.out;
 }
 

@@ -10,6 +10,7 @@
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -367,21 +368,58 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   return j;
 }
 
+nlohmann::json matrix_json(const Mat<rational>& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j).str());
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
-                                           const lmi::PassivityLevel& c, bool is_level, bool upper_only, int digits) {
-  if (c.status != Status::exact && c.status != Status::certified)
+                                           const lmi::PassivityLevel& c, const lmi::PassivityLevel& l, bool is_level,
+                                           bool upper_only, int digits) {
+  // not the level (the LMI's numeric level is the result): its exactly checked lower bound, with P
+  const bool lemma1 = !is_level && l.lower_bound && l.lemma1_P;
+  if (!lemma1 && c.status != Status::exact && c.status != Status::certified)
     throw InputError("--certificate: the level is not certified here (the certified frequency path gave none): no certificate");
-  if ((!is_level && !upper_only) || !c.enclosure)
+  if (!lemma1 && ((!is_level && !upper_only) || !c.enclosure))
     throw InputError("--certificate: the certified frequency value is not the result printed here: no certificate");
+  const bool upper = upper_only && c.enclosure;  // the frequency value's hi, witnessed
   nlohmann::json j = certificate_header("passivity-level");
   j["model"] = tf_model_json(tf);
-  j["model"]["T"] = parse_rational(tf.T, "--T").str();
+  const rational T = parse_rational(tf.T, "--T");
+  j["model"]["T"] = T.str();
   j["model"]["kind"] = osp ? "osp" : "isp";
   nlohmann::json claim;
   claim["quantity"] = osp ? "delta* = min_{0 <= theta <= pi} Re(1/G(e^{j theta})), the OSP level of paper 000 Definition 2 (Lemma 1)"
                           : "phi* = min_{0 <= theta <= pi} Re G(e^{j theta}), the ISP level of paper 000 Definition 2 (Lemma 1)";
+  nlohmann::json evidence = nlohmann::json::object();
   rational hi;
-  if (upper_only) {  // the level <= hi only (Lemma 1 also needs P > 0; check/passivity_level_check.hpp)
+  if (lemma1) {  // level >= lo by Lemma 1 at P for G's realisation (tf2ss, the one the LMI solved), lo as printed
+    const std::string printed = decimal_outward(*l.lower_bound, digits, -1);
+    claim["quantity"] = std::string(osp ? "delta*" : "phi*") + ", the level of paper 000 Definition 2 by Lemma 1, >= lo" +
+                        (upper ? " and <= hi (the frequency value, not the level here: an OSP value <= 0)" : "") +
+                        ": lo by Lemma 1's LMI (2) at the rounded P, for the realisation (A, B, C, D) of G in the evidence";
+    claim["status"] = upper ? "bounds" : "lower_bound";
+    claim["lo"] = parse_rational(printed, "lower bound").str();
+    claim["printed_lo"] = printed;
+    const StateSpace<rational> r = tf2ss(TransferFunction{G, Domain::z, T});
+    evidence = {{"A", matrix_json(r.A)}, {"B", matrix_json(r.B)}, {"C", matrix_json(r.C)}, {"D", matrix_json(r.D)},
+                {"P", matrix_json(*l.lemma1_P)}};
+    if (!upper) {
+      j["claim"] = claim;
+      j["evidence"] = evidence;
+      verify_before_writing(j);
+      return j;
+    }
+    const std::string printed_hi = decimal_outward(c.enclosure->hi, digits, +1);
+    hi = parse_rational(printed_hi, "enclosure");
+    claim["hi"] = hi.str();
+    claim["printed_hi"] = printed_hi;
+  } else if (upper_only) {  // the level <= hi only (Lemma 1 also needs P > 0; check/passivity_level_check.hpp)
     claim["quantity"] = std::string(osp ? "delta*" : "phi*") +
                         ", the level of paper 000 Definition 2, <= hi: an upper bound only (the frequency value is not "
                         "the level here: an OSP value <= 0, or a zero of G on the unit circle)";
@@ -407,20 +445,12 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   if (c.theta_min >= 0) theta = Enclosure<rational>{exact_rational(c.theta_min), exact_rational(c.theta_min)};
   const auto c0 = find_witness(obj, -hi, theta, rational(1));
   if (!c0) throw NumericalError("--certificate: no rational witness c0 with Re W(c0) <= " + hi.str() + " was found");
-  j["evidence"] = {{"witness_c", c0->str()}};
+  evidence["witness_c"] = c0->str();
+  j["evidence"] = evidence;
   verify_before_writing(j);  // a hypothesis the checkers verify (no zero of G on the circle for OSP) may fail
   return j;
 }
 
-nlohmann::json matrix_json(const Mat<rational>& M) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index j = 0; j < M.cols(); ++j) row.push_back(M(i, j).str());
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 namespace {
 

@@ -45,8 +45,12 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
 /// (exit 2) when c is not certified. With `upper_only` (the command's result is c as an upper bound
 /// of the level only: an OSP value <= 0, or a zero of G on the circle) the claim is status
 /// "upper_bound", hi = c's upper end as printed (rounded up), and the same witness.
+/// Where c is not the level and the LMI `l` has an exactly checked lower bound with its P, the claim is
+/// "lower_bound" (or "bounds", with c's hi and witness beside it) with evidence G's realisation (A, B,
+/// C, D) by tf2ss -- the one the LMI solved -- and P.
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
-                                           const lmi::PassivityLevel& c, bool is_level, bool upper_only, int digits);
+                                           const lmi::PassivityLevel& c, const lmi::PassivityLevel& l, bool is_level,
+                                           bool upper_only, int digits);
 
 /// The certificate of `passivity-level --ss FILE --kind isp|osp` with a square MIMO G (or a .mat's
 /// A, B, C, D; check/passivity_level_mimo_check.hpp, kind passivity-level-mimo): the exact A, B, C, D

@@ -228,7 +228,7 @@ int run(const Opts& o) {
     // an OSP value <= 0 is an upper bound on Lemma 1's level, printed as the result or beside the LMI's level
     const bool upper_only = v.cert_ok && !v.cert_is_level;
     if (G) {
-      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, is_level, upper_only, o.digits));
+      write_certificate(o.certificate, passivity_level_certificate(o.tf, *G, o.kind == "osp", v.c, v.l, is_level, upper_only, o.digits));
     } else {  // --ss, or a .mat's A, B, C, D (its doubles exactly): the state-space kind, any number of inputs
       write_certificate(o.certificate, passivity_level_mimo_certificate(*exact, o.kind == "osp", v.c, v.l, is_level, upper_only, o.digits));
     }

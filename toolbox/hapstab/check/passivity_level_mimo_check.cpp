@@ -322,20 +322,6 @@ LowerTest lower_test(const MimoModel& s, const P& d, const rational& lo) {
   return out;
 }
 
-// Lemma 1 (2) at the level lo with the storage P (header): "" when P = P' > 0 and F < 0 (strict, as
-// (2) is written; F's order n + m), else what fails.
-std::string lemma1_fails(const MimoModel& s, const Mat& Pm, const rational& lo) {
-  using namespace rational_matrix;
-  if (!symmetric(Pm)) return "evidence.P is not symmetric";
-  if (!rational_matrix::positive_definite(Pm, true)) return "P > 0 fails (exact elimination)";
-  const Mat Q = s.osp ? add(zeros(s.m, s.m), identity(s.m), lo) : zeros(s.m, s.m);
-  Mat negF = add(zeros(s.n + s.m, s.n + s.m), lemma1_matrix(s.A, s.B, s.C, s.D, Pm, identity(s.m), Q), -1);
-  if (!s.osp)
-    for (size_t i = 0; i < s.m; ++i) negF[s.n + i][s.n + i] -= lo;  // + Phi = lo I in (2)'s lower right block
-  if (!rational_matrix::positive_definite(negF, true)) return "(2) < 0 fails at the level lo with this P (exact elimination of -F)";
-  return "";
-}
-
 }  // namespace
 
 Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
@@ -376,7 +362,7 @@ Verdict check_passivity_level_mimo(const nlohmann::json& cert) {
     if (range.refuted) return {false, *range.refuted};
     std::string shown;
     if (has_lo) {
-      const std::string why = lemma1_fails(s, Pm, range.lo);
+      const std::string why = rational_matrix::lemma1_level_fails(s.A, s.B, s.C, s.D, Pm, range.lo, s.osp);
       if (!why.empty()) return {false, level + " >= " + range.lo.str() + " (" + detail::decimal(range.lo) + ") not shown: " + why};
       shown = level + " >= " + detail::decimal(range.lo) + " (Lemma 1 at the storage P: P > 0 and (2) < 0 at the level lo, exactly)";
     }

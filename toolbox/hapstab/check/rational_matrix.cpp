@@ -1,6 +1,8 @@
 // hapstab/check/rational_matrix.cpp -- see rational_matrix.hpp.
 #include "hapstab/check/rational_matrix.hpp"
 
+#include <utility>
+
 namespace hapstab::check::rational_matrix {
 
 Mat zeros(size_t r, size_t c) { return Mat(r, std::vector<rational>(c)); }
@@ -73,6 +75,36 @@ Mat lemma1_matrix(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const 
   for (size_t i = 0; i < n + m; ++i)
     for (size_t j = 0; j < n + m; ++j) F[i][j] = i < n ? (j < n ? F11[i][j] : F12[i][j - n]) : (j < n ? F12[j][i - n] : F22[i - n][j - n]);
   return F;
+}
+
+std::string lemma1_level_fails(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const Mat& P, const rational& lo, bool osp) {
+  const size_t n = A.size(), m = D.size();
+  if (!symmetric(P)) return "evidence.P is not symmetric";
+  if (!positive_definite(P, true)) return "P > 0 fails (exact elimination)";
+  const Mat Q = osp ? add(zeros(m, m), identity(m), lo) : zeros(m, m);
+  Mat negF = add(zeros(n + m, n + m), lemma1_matrix(A, B, C, D, P, identity(m), Q), -1);
+  if (!osp)
+    for (size_t i = 0; i < m; ++i) negF[n + i][n + i] -= lo;  // + Phi = lo I in (2)'s lower right block
+  if (!positive_definite(negF, true)) return "(2) < 0 fails at the level lo with this P (exact elimination of -F)";
+  return "";
+}
+
+rational det(Mat M) {
+  const size_t n = M.size();
+  rational d = 1;
+  for (size_t k = 0; k < n; ++k) {
+    size_t p = k;
+    while (p < n && M[p][k].is_zero()) ++p;
+    if (p == n) return 0;
+    if (p != k) std::swap(M[p], M[k]), d = -d;
+    d *= M[k][k];
+    for (size_t i = k + 1; i < n; ++i) {
+      if (M[i][k].is_zero()) continue;
+      const rational f = M[i][k] / M[k][k];
+      for (size_t j = k; j < n; ++j) M[i][j] -= f * M[k][j];
+    }
+  }
+  return d;
 }
 
 }  // namespace hapstab::check::rational_matrix

@@ -8,6 +8,7 @@
 //   (2) itself), for the checkers that verify a storage P.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "hapstab/numeric/scalar.hpp"
@@ -29,5 +30,10 @@ bool positive_definite(Mat M, bool strict);
 /// for [x; u], x+'Px+ - x'Px - (y'Xu + u'X'y)/2 + y'Qy with y = Cx + Du, x+ = Ax + Bu (X = I, Q = Delta
 /// I: paper 000 (2) without Phi). F <= 0 (< 0) with P > 0 is the dissipation inequality (1).
 Mat lemma1_matrix(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const Mat& P, const Mat& X, const Mat& Q);
+/// Paper 000's Lemma 1 at the level lo with the storage P (its "if": then (1) holds at Delta = lo I, OSP,
+/// or Phi = lo I, ISP): "" when P = P' > 0 and (2) < 0, both by strict elimination; else what fails.
+std::string lemma1_level_fails(const Mat& A, const Mat& B, const Mat& C, const Mat& D, const Mat& P, const rational& lo, bool osp);
+/// det M (square), by elimination with row exchanges.
+rational det(Mat M);
 
 }  // namespace hapstab::check::rational_matrix
