@@ -22,6 +22,14 @@
 // with Q(c0) > 0, so for every nu > hi the frequency inequality He G - nu G^* G >= 0 (OSP; He G - nu
 // >= 0, ISP), necessary for a nu-passive stable G, fails at z0 (none of the hypotheses above is needed). The KYP lemma itself is cited, not checked: the certificate proves the frequency-
 // domain minimum; that it is the level of Definition 2 for G's minimal realisation is that theorem.
+// A lower bound by Lemma 1 (status "lower_bound" {lo}, or "bounds" {lo, hi} with the witness above;
+// the LMI's level is the printed result): evidence A, B, C, D (a realisation, one input, n states)
+// and P. Verified: (A, B, C, D) realises G as written -- D + C (tI - A)^-1 B (by the matrix
+// determinant lemma, (det(tI - A + BC) - det(tI - A))/det(tI - A) + D) equals N/D at n + deg D + 1
+// points t = 2, 3, ... where both are defined; the difference of the cross products has degree <=
+// n + deg D, so it is 0 --; then Lemma 1 at lo with P (rational_matrix::lemma1_level_fails: P = P' >
+// 0 and (2) < 0; its "if" is (1) with V = x'Px, check/passivity_level_mimo_check.hpp): G's
+// input-output map from rest is lo-OSP (ISP), so the level is >= lo. No frequency hypothesis.
 //
 // Implements: paper 000 Definition 2, Lemma 1.
 #pragma once
