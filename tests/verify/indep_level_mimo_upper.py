@@ -11,7 +11,9 @@ delta* <= 0 in most draws; a draw with det G near 0 on the circle (the level the
 skipped. Required: where hapstab writes an upper bound, both checkers verify it; its hi is not below
 the reference (the claim holds: delta* <= ref <= hi... up to 10^-25 relative) nor above it by more
 than 10^-12 relative (it is the value printed, not a loose bound); with hi lowered by 1 % both
-checkers refute it.
+checkers refute it. Where the LMI's level is the printed result the certificate is "bounds": its lo
+(Lemma 1 at P) must not exceed hi, and with lo raised by 1 % + 10^-3 (above hi, so above the level,
+as the LMI's lo lies within ~10^-5 of hi in these draws; hi raised to it) both checkers refute it.
 
   indep_level_mimo_upper.py HAPSTAB [--cases N] [--seed S]
 exit 0 when every compared case agrees, else 1.
@@ -78,7 +80,8 @@ def main(argv):
     cases, seed = cases_and_seed(argv)
     rng = random.Random("level-mimo-upper:%d" % seed)
     agree = bad = 0
-    branch = {"upper bound": 0, "a level > 0 (not compared)": 0, "skipped (det G ~ 0 or refused)": 0}
+    branch = {"upper bound": 0, "bounds (Lemma 1's lo beside hi)": 0, "a level > 0 (not compared)": 0,
+              "skipped (det G ~ 0 or refused)": 0}
     with tempfile.TemporaryDirectory(prefix="hapstab-mimo-upper-") as tmp:
         ss, cert, low = (os.path.join(tmp, f) for f in ("ss.json", "c.json", "l.json"))
         for i in range(cases):
@@ -96,7 +99,7 @@ def main(argv):
                 print("skip %s: exit %d, no certificate: %s" % (what, r.returncode, (r.stdout + r.stderr).strip()[:160]))
                 continue
             c = json.load(open(cert))
-            if c["claim"]["status"] != "upper_bound":
+            if c["claim"]["status"] not in ("upper_bound", "bounds"):
                 branch["a level > 0 (not compared)"] += 1
                 continue
             with mp.workdps(30):
@@ -116,15 +119,28 @@ def main(argv):
                 ok, line = False, "hi = %s is below the reference's sampled minimum %s: the claim may be false" % (hi, mp.nstr(ref, 20))
             elif above:
                 ok, line = False, "hi = %s is above the reference's minimum %s by more than 1e-12 (not the printed value)" % (hi, mp.nstr(ref, 20))
+            elif "lo" in c["claim"] and Q(c["claim"]["lo"]) > hi:
+                ok, line = False, "lo = %s above hi" % c["claim"]["lo"]
             else:
                 c["claim"].pop("printed_hi", None)
                 c["claim"]["hi"] = s(hi - abs(hi) / 100 - Q(1, 1000))
                 json.dump(c, open(low, "w"))
                 good, why = both_checkers(exe, cert, low, "hi lowered by 1 %")
+                if good and "lo" in c["claim"]:  # Lemma 1's lo raised by 1 % (past the level <= hi): refuted
+                    c = json.load(open(cert))
+                    lo = Q(c["claim"].pop("lo"))
+                    c["claim"].pop("printed_lo", None)
+                    c["claim"]["lo"] = s(lo + abs(lo) / 100 + Q(1, 1000))
+                    c["claim"]["hi"] = s(max(hi, Q(c["claim"]["lo"])))
+                    c["claim"].pop("printed_hi", None)
+                    json.dump(c, open(low, "w"))
+                    good, why = both_checkers(exe, cert, low, "Lemma 1's lo raised by 1 %")
                 if not good:
                     ok, line = False, why
+                elif "lo" in json.load(open(cert))["claim"]:
+                    line += ", lo %s by Lemma 1" % json.load(open(cert))["claim"]["printed_lo"]
             if ok:
-                branch["upper bound"] += 1
+                branch["bounds (Lemma 1's lo beside hi)" if "lo" in json.load(open(cert))["claim"] else "upper bound"] += 1
             agree += ok
             bad += not ok
             print("%s %s: %s" % ("ok  " if ok else "MISS", what, line))
