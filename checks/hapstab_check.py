@@ -2870,6 +2870,54 @@ def quotient(M, L, at):
             for a in kept]
 
 
+def hidden_mode_verdict(loop, h):
+    """evidence.hidden {block, kind, basis, A_h} of an ss environment or coupling (C, D times gain, as read):
+    unobservable: C V = 0, A V = V A_h (V = basis, n x r); uncontrollable: W B = 0, W A = A_h W (W = basis,
+    r x n); the basis of full rank (its Gram matrix > 0); charpoly(A_h) = (z - 1)^k q, q(1) != 0, q not
+    Schur stable. Then [0; V; 0] (or [0 W 0]) spans an invariant subspace of the loop's M whatever the rest
+    of the loop is (the block's output does not show it, or its input does not reach it), so M has an
+    eigenvalue != 1 with |z| >= 1: NOT stable, and not by a conserved quantity."""
+    if not isinstance(h, dict):
+        raise Malformed("evidence.hidden: not an object")
+    only(h, ("block", "kind", "basis", "A_h"), "evidence.hidden")
+    block, kind = h.get("block"), h.get("kind")
+    if block not in ("environment", "coupling"):
+        raise Malformed("evidence.hidden.block: \"environment\" or \"coupling\"")
+    if kind not in ("unobservable", "uncontrollable"):
+        raise Malformed("evidence.hidden.kind: \"unobservable\" or \"uncontrollable\"")
+    d = loop[7] if block == "environment" else loop[8]
+    if d is None:
+        raise Malformed("evidence.hidden.block: the scene has no [coupling]")
+    if d[0] != "ss":
+        raise Malformed("evidence.hidden.block: the %s is written as tf: a hidden mode is certified of an ss block as written" % block)
+    A, B, C, _ = d[1]
+    n = len(A)
+    Ah = h.get("A_h")
+    r = len(Ah) if isinstance(Ah, list) else 0
+    if r == 0 or r > MAX_LOOP_ORDER or n > MAX_LOOP_ORDER:
+        raise Malformed("evidence.hidden.A_h: empty, or beyond this checker's order %d" % MAX_LOOP_ORDER)
+    Ah = frac_matrix(h, "A_h", r, r, "evidence.hidden")
+    unobs = kind == "unobservable"
+    Vb = frac_matrix(h, "basis", n, r, "evidence.hidden") if unobs else frac_matrix(h, "basis", r, n, "evidence.hidden")
+    zero = mmul(C, Vb) if unobs else mmul(Vb, B)
+    if any(x != 0 for row in zero for x in row):
+        return False, "evidence.hidden: %s" % ("C basis != 0 (the output shows it)" if unobs else "basis B != 0 (the input reaches it)")
+    if (mmul(A, Vb) != mmul(Vb, Ah)) if unobs else (mmul(Vb, A) != mmul(Ah, Vb)):
+        return False, "evidence.hidden: the basis does not span an invariant subspace with A_h"
+    if not semidefinite(mmul(mT(Vb), Vb) if unobs else mmul(Vb, mT(Vb)), True):
+        return False, "evidence.hidden.basis: not of full rank %d" % r
+    q = faddeev_leverrier(Ah)
+    k1 = 0
+    while len(trim(q)) > 1 and peval(q, Fraction(1)) == 0:
+        q, rem = pdivmod(q, [Fraction(-1), Fraction(1)])
+        k1 += 1
+    ok, why = schur_cohn(q)
+    if ok:
+        return False, "evidence.hidden: every eigenvalue of A_h other than z = 1 is inside the unit circle: nothing shown"
+    return True, "NOT stable [exact]: the %s hides an %s subspace of dimension %d, invariant in the loop; charpoly(A_h) = (z - 1)^%d q, q not Schur stable (%s)" % (
+        block, kind, r, k1, why)
+
+
 def check_stability_loop(c):
     """stability-loop: the Stein inertia theorem on the closed loop M built here from the model
     (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (D Q_mid D minus
@@ -2877,6 +2925,14 @@ def check_stability_loop(c):
     sqrt(Q_mid_ii)), and P > 0 (stable) or w^T P w < 0 (NOT stable)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "stable", "conserved"), "claim")
+    if "hidden" in evidence:  # NOT stable by a hidden mode of an ss environment or coupling, exactly
+        only(evidence, ("hidden",), "evidence")
+        only(claim, ("quantity", "status", "stable"), "claim")
+        if claim.get("status") != "exact":
+            raise Malformed("claim.status: a hidden mode's verdict is \"exact\"")
+        if claim.get("stable") is not False:
+            raise Malformed("claim.stable: a hidden mode shows NOT stable (false) only")
+        return hidden_mode_verdict(scene_loop_read(model), evidence["hidden"])
     only(evidence, ("P", "w"), "evidence")
     k = claim.get("conserved", 0)
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:

@@ -1194,6 +1194,51 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
   }
 }
 
+// NOT stable by a hidden mode (evidence.hidden), by hand: a wall E = 100 with a coupling V written as
+// ss, A = diag(1/2, a), B = (1/10000, b)', C = (1, c). With b = 0 the input never reaches the second
+// state: W = (0, 1), W B = 0, W A = a W, so A_h = (a) and the loop has the eigenvalue a whatever the rest
+// does: a = -1 (on the circle: the Stein test cannot certify it) or 3/2 shows NOT stable; a = 1 (a
+// semisimple z = 1: it settles) and a = 1/2 show nothing. With c = 0 (and b = 1) the output never
+// shows it: V = (0, 1)', C V = 0.
+TEST(StabilityLoopCheck, HiddenModeByHand) {
+  auto cert = [](const std::string& a, const std::string& b, const std::string& c, const std::string& kind,
+                 const nlohmann::json& basis, const std::string& ah) {
+    const std::string scene = "[scene]\nT = \"1/1000\"\n[[device]]\nname = \"d\"\nm = \"1\"\nb = \"30\"\n[environment]\ntf = \"100\"\n"
+                              "[coupling]\nss = { A = [[\"1/2\", \"0\"], [\"0\", \"" + a + "\"]], B = [[\"1/10000\"], [\"" + b +
+                              "\"]], C = [[\"1\", \"" + c + "\"]], D = [[\"0\"]] }\n";
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop"},
+                          {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                          {"claim", {{"status", "exact"}, {"stable", false}}},
+                          {"evidence", {{"hidden", {{"block", "coupling"}, {"kind", kind}, {"basis", basis}, {"A_h", mat({{ah}})}}}}}};
+  };
+  const nlohmann::json row = mat({{"0", "1"}}), col = mat({{"0"}, {"1"}});
+  for (const std::string a : {"-1", "3/2"}) {
+    const auto v = check_certificate(cert(a, "0", "1", "uncontrollable", row, a));
+    EXPECT_TRUE(v.verified) << a << ": " << v.reason;
+  }
+  const auto unobs = check_certificate(cert("-1", "1", "0", "unobservable", col, "-1"));
+  EXPECT_TRUE(unobs.verified) << unobs.reason;
+  EXPECT_FALSE(check_certificate(cert("1", "0", "1", "uncontrollable", row, "1")).verified);      // settles
+  EXPECT_FALSE(check_certificate(cert("1/2", "0", "1", "uncontrollable", row, "1/2")).verified);  // stable
+  EXPECT_FALSE(check_certificate(cert("-1", "0", "1", "uncontrollable", row, "3/2")).verified);   // W A != A_h W
+  EXPECT_FALSE(check_certificate(cert("-1", "1", "1", "uncontrollable", row, "-1")).verified);    // W B != 0
+  EXPECT_FALSE(check_certificate(cert("-1", "1", "1", "unobservable", col, "-1")).verified);      // C V != 0
+  EXPECT_FALSE(check_certificate(cert("-1", "0", "1", "uncontrollable", mat({{"0", "0"}}), "-1")).verified);  // rank 0
+  EXPECT_THROW(check_certificate(cert("-1", "0", "1", "uncontrollable", col, "-1")), InputError);  // a column for rows
+  auto certified = cert("-1", "0", "1", "uncontrollable", row, "-1");
+  certified["claim"]["status"] = "certified";
+  EXPECT_THROW(check_certificate(certified), InputError);
+  auto stable = cert("-1", "0", "1", "uncontrollable", row, "-1");
+  stable["claim"]["stable"] = true;
+  EXPECT_THROW(check_certificate(stable), InputError);
+  auto env = cert("-1", "0", "1", "uncontrollable", row, "-1");
+  env["evidence"]["hidden"]["block"] = "environment";  // written as tf: not an ss block
+  EXPECT_THROW(check_certificate(env), InputError);
+  auto beside = cert("-1", "0", "1", "uncontrollable", row, "-1");
+  beside["evidence"]["P"] = mat({{"1"}});
+  EXPECT_THROW(check_certificate(beside), InputError);
+}
+
 // Conserved quantities (check/stability_loop_check.hpp), by hand: the loop above with an operator
 // spring k = 10 written as m, b, k (states v, x) and as tf "10/s" or ss (a third state zeta, zeta' =
 // v, force 10 zeta): zeta - x is constant, l = (0, -1, 1), and on the quotient zeta = x, so M11 is

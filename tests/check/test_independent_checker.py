@@ -226,6 +226,41 @@ class StabilityLoop(unittest.TestCase):
     [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""
     P = [["-1461/800", "29/40"], ["29/40", "-229/2"]]
 
+    def test_hidden_mode_by_hand(self):
+        # test_check.cpp's StabilityLoopCheck.HiddenModeByHand: a wall with an ss coupling A = diag(1/2, a),
+        # B = (1/10000, b)', C = (1, c); b = 0: W = (0, 1) uncontrollable, A_h = a; c = 0: V = (0, 1)' unobservable
+        def cert(a, b, c, kind, basis, ah):
+            scene = ('[scene]\nT = "1/1000"\n[[device]]\nname = "d"\nm = "1"\nb = "30"\n[environment]\ntf = "100"\n'
+                     '[coupling]\nss = { A = [["1/2", "0"], ["0", "%s"]], B = [["1/10000"], ["%s"]], C = [["1", "%s"]], D = [["0"]] }\n'
+                     % (a, b, c))
+            return {"certificate": "hapstab", "version": 1, "kind": "stability-loop", "model": {"scene": scene, "set": {}},
+                    "claim": {"status": "exact", "stable": False},
+                    "evidence": {"hidden": {"block": "coupling", "kind": kind, "basis": basis, "A_h": [[ah]]}}}
+        row, col = [["0", "1"]], [["0"], ["1"]]
+        for a in ("-1", "3/2"):
+            code, why = hc.check(cert(a, "0", "1", "uncontrollable", row, a))
+            self.assertEqual(code, 0, why)
+        self.assertEqual(hc.check(cert("-1", "1", "0", "unobservable", col, "-1"))[0], 0)
+        self.assertEqual(hc.check(cert("1", "0", "1", "uncontrollable", row, "1"))[0], 1)
+        self.assertEqual(hc.check(cert("1/2", "0", "1", "uncontrollable", row, "1/2"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "0", "1", "uncontrollable", row, "3/2"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "1", "1", "uncontrollable", row, "-1"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "1", "1", "unobservable", col, "-1"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "0", "1", "uncontrollable", [["0", "0"]], "-1"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "0", "1", "uncontrollable", col, "-1"))[0], 2)
+        c = cert("-1", "0", "1", "uncontrollable", row, "-1")
+        c["claim"]["status"] = "certified"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("-1", "0", "1", "uncontrollable", row, "-1")
+        c["claim"]["stable"] = True
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("-1", "0", "1", "uncontrollable", row, "-1")
+        c["evidence"]["hidden"]["block"] = "environment"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("-1", "0", "1", "uncontrollable", row, "-1")
+        c["evidence"]["P"] = [["1"]]
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_closed_loop_by_hand(self):
         M = hc.loop_matrix(hc.scene_loop_read({"scene": LOOP_SCENE, "set": {}}), 128)
         want = [[Fraction(1), Fraction(-5)], [Fraction(1, 10), Fraction(3, 4)]]

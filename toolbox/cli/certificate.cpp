@@ -1,6 +1,7 @@
 // cli/certificate.cpp -- see certificate.hpp.
 #include "cli/certificate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/numeric/interval.hpp"
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
@@ -620,6 +622,88 @@ nlohmann::json stability_certificate(const StabilityText& text, const stability:
   // the checker decides alone, or reads the scene itself: refuse what it cannot verify
   if (!evidence.contains("charpoly") || !text.scene.empty()) verify_before_writing(j);
   return j;
+}
+
+namespace {
+
+// A basis of ker M (columns), exactly: reduced row echelon form, one vector per free column.
+MatQ kernel_basis(MatQ M) {
+  const Eigen::Index rows = M.rows(), cols = M.cols();
+  std::vector<Eigen::Index> pivots;
+  Eigen::Index r = 0;
+  for (Eigen::Index c = 0; c < cols && r < rows; ++c) {
+    Eigen::Index p = r;
+    while (p < rows && M(p, c).is_zero()) ++p;
+    if (p == rows) continue;
+    M.row(p).swap(M.row(r));
+    const rational lead = M(r, c);
+    for (Eigen::Index k = 0; k < cols; ++k) M(r, k) /= lead;
+    for (Eigen::Index i = 0; i < rows; ++i)
+      if (i != r && !M(i, c).is_zero()) {
+        const rational f = M(i, c);
+        for (Eigen::Index k = 0; k < cols; ++k) M(i, k) -= f * M(r, k);
+      }
+    pivots.push_back(c);
+    ++r;
+  }
+  MatQ K = MatQ::Zero(cols, cols - static_cast<Eigen::Index>(pivots.size()));
+  Eigen::Index j = 0;
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    if (std::find(pivots.begin(), pivots.end(), c) != pivots.end()) continue;
+    K(c, j) = 1;
+    for (size_t i = 0; i < pivots.size(); ++i) K(pivots[i], j) = -M(static_cast<Eigen::Index>(i), c);
+    ++j;
+  }
+  return K;
+}
+
+// The unobservable subspace of (A, C) as columns V with A V = V A_h, or (transposed) the uncontrollable
+// one of (A, B) as rows W with W A = A_h W: {basis, A_h}; nullopt when there is none.
+std::optional<std::pair<MatQ, MatQ>> hidden_subspace(const StateSpace<rational>& s, bool unobservable) {
+  const Eigen::Index n = s.A.rows();
+  const MatQ A = unobservable ? MatQ(s.A) : MatQ(s.A.transpose()), C = unobservable ? MatQ(s.C) : MatQ(s.B.transpose());
+  MatQ O(C.rows() * n, n), blockp = C;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    O.middleRows(k * C.rows(), C.rows()) = blockp;
+    blockp = exact_product(blockp, A);
+  }
+  const MatQ V = kernel_basis(O);
+  if (V.cols() == 0) return std::nullopt;
+  const MatQ Vt = V.transpose();
+  const MatQ Ah = exact_solve(exact_product(Vt, V), exact_product(Vt, exact_product(A, V)), "the hidden subspace's Gram matrix");
+  if (unobservable) return std::pair<MatQ, MatQ>{V, Ah};
+  return std::pair<MatQ, MatQ>{Vt, MatQ(Ah.transpose())};  // W = V^T: W A_orig = A_h W with A_h = Ah^T
+}
+
+}  // namespace
+
+std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text, const rational& T,
+                                                      const std::optional<StateSpace<rational>>& environment,
+                                                      const std::optional<StateSpace<rational>>& coupling) {
+  for (const auto& [block, ss] : {std::pair<const char*, const std::optional<StateSpace<rational>>*>{"environment", &environment},
+                                  {"coupling", &coupling}}) {
+    if (!*ss || (*ss)->A.rows() == 0) continue;
+    for (const bool unobservable : {false, true}) {
+      const auto h = hidden_subspace(**ss, unobservable);
+      if (!h) continue;
+      nlohmann::json j = certificate_header("stability-loop");
+      j["model"] = loop_model_json(text, T);
+      j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop as written: NOT stable by a mode its " + std::string(block) +
+                                     " hides (no interconnection moves it)"},
+                    {"stable", false},
+                    {"status", "exact"}};
+      j["evidence"] = {{"hidden",
+                        {{"block", block},
+                         {"kind", unobservable ? "unobservable" : "uncontrollable"},
+                         {"basis", matrix_json(h->first)},
+                         {"A_h", matrix_json(h->second)}}}};
+      try {
+        if (check::check_certificate(j).verified) return j;
+      } catch (const InputError&) {  // the checker reads this block otherwise (tf): the closed-loop matrix's kind
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable) {

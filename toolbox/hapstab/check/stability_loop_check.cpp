@@ -10,8 +10,10 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "hapstab/check/interpolate.hpp"
 #include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
+#include "hapstab/check/schur_cohn.hpp"
 #include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -460,9 +462,80 @@ SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits) {
   return out;
 }
 
+namespace {
+
+// NOT stable by a hidden mode of a discrete block written as ss (header): evidence.hidden {block,
+// kind, basis, A_h}. The block's (A, B, C) as the checker reads it; unobservable: basis Vb (n x r),
+// C Vb = 0, A Vb = Vb A_h; uncontrollable: basis Wb (r x n), Wb B = 0, Wb A = A_h Wb; the basis of
+// full rank r (its Gram matrix regular); charpoly(A_h) = (z - 1)^k q(z), q(1) != 0, q not Schur
+// stable: an eigenvalue lambda != 1 of M with |lambda| >= 1.
+Verdict hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h) {
+  using namespace rational_matrix;
+  if (!h.is_object()) throw InputError("evidence.hidden: not an object");
+  detail::only_fields(h, {"block", "kind", "basis", "A_h"}, "evidence.hidden");
+  const auto text = [&](const char* key) {
+    if (!h.contains(key) || !h.at(key).is_string()) throw InputError(std::string("evidence.hidden.") + key + ": missing or not a string");
+    return h.at(key).get<std::string>();
+  };
+  const std::string block = text("block"), kind = text("kind");
+  if (block != "environment" && block != "coupling") throw InputError("evidence.hidden.block: \"environment\" or \"coupling\", got \"" + block + "\"");
+  if (kind != "unobservable" && kind != "uncontrollable")
+    throw InputError("evidence.hidden.kind: \"unobservable\" or \"uncontrollable\", got \"" + kind + "\"");
+  const detail::SceneLoop::Discrete* d = block == "environment" ? &L.E : (L.V ? &*L.V : nullptr);
+  if (!d) throw InputError("evidence.hidden.block: the scene has no [coupling]");
+  if (!d->is_ss)
+    throw InputError("evidence.hidden.block: the " + block + " is written as tf (its realisation is the checker's own): a hidden "
+                     "mode is certified of an ss block as written");
+  const Mat basis = detail::exact_matrix(h, "basis", "evidence.hidden", kMaxOrder);
+  const Mat Ah = detail::exact_matrix(h, "A_h", "evidence.hidden", kMaxOrder);
+  const size_t n = d->A.size(), r = Ah.size();
+  const bool unobs = kind == "unobservable";
+  if (r == 0 || Ah[0].size() != r) throw InputError("evidence.hidden.A_h: empty or not square");
+  if (unobs ? (basis.size() != n || basis[0].size() != r) : (basis.size() != r || basis[0].size() != n))
+    throw InputError("evidence.hidden.basis: must be " + (unobs ? std::to_string(n) + " x " + std::to_string(r) : std::to_string(r) + " x " + std::to_string(n)) +
+                     " (the " + block + "'s " + std::to_string(n) + " states, A_h's order " + std::to_string(r) + ")");
+  const Mat zero_out = unobs ? mul(d->C, basis) : mul(basis, d->B);
+  for (const auto& row : zero_out)
+    for (const rational& x : row)
+      if (!x.is_zero()) return {false, std::string("evidence.hidden: ") + (unobs ? "C basis != 0 (the output shows it)" : "basis B != 0 (the input reaches it)")};
+  const Mat lhs = unobs ? mul(d->A, basis) : mul(basis, d->A), rhs = unobs ? mul(basis, Ah) : mul(Ah, basis);
+  if (lhs != rhs) return {false, std::string("evidence.hidden: ") + (unobs ? "A basis != basis A_h" : "basis A != A_h basis") + " (not an invariant subspace with A_h)"};
+  const Mat gram = unobs ? mul(transpose(basis), basis) : mul(basis, transpose(basis));
+  if (det(gram).is_zero()) return {false, "evidence.hidden.basis: not of full rank " + std::to_string(r)};
+  // charpoly(A_h) by r + 1 exact determinants and interpolation
+  std::vector<rational> xs, ys;
+  for (size_t k = 0; k <= r; ++k) {
+    const rational t(static_cast<long>(k));
+    xs.push_back(t);
+    ys.push_back(det(add(add(zeros(r, r), identity(r), t), Ah, -1)));
+  }
+  P q = interpolate(xs, ys);
+  long k1 = 0;
+  const P z_minus_1{rational(-1), rational(1)};
+  while (q.degree() > 0 && q(rational(1)).is_zero()) q = divmod(q, z_minus_1).first, ++k1;
+  const SchurCohn sc = schur_cohn(q);
+  if (sc.stable)
+    return {false, "evidence.hidden: every eigenvalue of A_h other than z = 1 lies inside the unit circle (" + sc.why +
+                       "): no eigenvalue of the loop with |z| >= 1, z != 1, shown"};
+  return {true, "NOT stable [exact]: the " + block + " (ss as written) hides an " + kind + " subspace of dimension " +
+                    std::to_string(r) + " (" + (unobs ? "C V = 0, A V = V A_h" : "W B = 0, W A = A_h W") +
+                    ", exactly), an invariant subspace of the loop's M whatever the rest does; charpoly(A_h) = (z - 1)^" +
+                    std::to_string(k1) + " q(z) with q not Schur stable (" + sc.why + "): M has an eigenvalue lambda != 1 with |lambda| >= 1"};
+}
+
+}  // namespace
+
 Verdict check_stability_loop(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "stable", "conserved"}, "claim");
+  if (evidence.contains("hidden")) {  // NOT stable by a hidden mode, exactly (header)
+    detail::only_fields(evidence, {"hidden"}, "evidence");
+    detail::only_fields(claim, {"quantity", "status", "stable"}, "claim");
+    if (!claim.contains("status") || claim.at("status") != "exact")
+      throw InputError("claim.status: a hidden mode's verdict is \"exact\" (rational evidence, no enclosure)");
+    if (!claim.contains("stable") || claim.at("stable") != false) throw InputError("claim.stable: a hidden mode shows NOT stable (false) only");
+    return hidden_mode_verdict(detail::read_scene_loop(model), evidence.at("hidden"));
+  }
   detail::only_fields(evidence, {"P", "w"}, "evidence");
   if (!claim.contains("status") || claim.at("status") != "certified")
     throw InputError("claim.status: missing or not \"certified\" (the loop holds exponentials: an enclosure decides)");
