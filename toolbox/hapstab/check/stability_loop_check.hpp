@@ -47,8 +47,17 @@
 // and its quotient sets x = K xi, P's own output: the loop as written. It is set aside and not
 // counted in claim.conserved.
 // The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
-// eigenvalues of M here; a certificate exists only where they are off the circle (other than the
+// eigenvalues of M here; a Stein certificate exists only where they are off the circle (other than the
 // conserved quantities), and then they are part of M.
+// NOT stable by a hidden mode (claim status "exact", evidence.hidden {block: environment | coupling,
+// kind: unobservable | uncontrollable, basis, A_h}, in place of P and w): for an ss block as written
+// (C, D times gain), unobservable C V = 0, A V = V A_h (V = basis, n x r), or uncontrollable W B = 0, W
+// A = A_h W (W = basis, r x n); the basis of full rank (Gram matrix regular); det(zI - A_h) = (z -
+// 1)^k q, q(1) != 0, q not Schur stable. Theorem: X = [0; V alpha; 0 ...] in the block's rows gives
+// the block's output 0, so u = 0 and nothing else moves: M X = [0; V A_h alpha; 0 ...]; uncontrollable,
+// L = [0 W 0 ...] has L M = A_h L (W B = 0 cuts the block's input). So eig(A_h) is in eig(M), and a root
+// lambda != 1 of q with |lambda| >= 1 is an eigenvalue of M no conserved quantity (eigenvalue 1)
+// accounts for: NOT stable, on the circle too, where Stein cannot certify. No M in balls is needed.
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
