@@ -1782,6 +1782,18 @@ def rand_loop_scene(rng):
         else:  # a static compliance, as ss with no state
             L += ["[coupling]", "ss = { A = [], B = [], C = [], D = [%s] }" % ", ".join(
                 "[" + ", ".join('"1/%d"' % kcs[i] if i == j else '"0"' for j in range(N)) + "]" for i in range(N))]
+    elif rng.random() < 0.25:  # an ss coupling that hides a mode (NOT stable by it when |z| >= 1, z != 1: evidence.hidden)
+        kc = rng.choice([500, 2000, 8000])
+        h = rng.choice(["-1", "3/2", "-11/10", "1/2", "1", "pair"])
+        Ah = [["3/5", "-4/5"], ["4/5", "3/5"]] if h == "pair" else [[h]]  # the pair: e^{+-j theta} on the circle
+        r = len(Ah)
+        unobs = rng.random() < 0.5
+        Bm = [[("%d/%d" % (rng.randint(1, 3), 10 ** 4)) if unobs else "0" for _ in range(N)] for _ in range(r)]
+        Cm = [["0" if unobs else "%d/%d" % (rng.randint(1, 3), 10 ** 4) for _ in range(r)] for _ in range(N)]
+        Dm = [['"1/%d"' % kc if i == j else '"0"' for j in range(N)] for i in range(N)]
+        q = lambda M: "[" + ", ".join("[" + ", ".join('"%s"' % x for x in row) + "]" for row in M) + "]"  # noqa: E731
+        L += ["# hidden: %s %s" % ("unobservable" if unobs else "uncontrollable", h), "[coupling]",
+              "ss = { A = %s, B = %s, C = %s, D = [%s] }" % (q(Ah), q(Bm), q(Cm), ", ".join("[" + ", ".join(r_) + "]" for r_ in Dm))]
     n = rng.choice(["0", "0", "1", "2", "1/2", "3/4", "3/2"])
     if n != "0":
         L += ["[delay]", 'samples = "%s"' % n]
@@ -1796,11 +1808,47 @@ def loop_produce(hapstab, scene, cache, tmp):
     return produce(hapstab, ["stability", "--scene", path], "loop:" + scene, "l-edit.json", cache, tmp)
 
 
+def hidden_loop_mutants(cert, rng):
+    """stability-loop NOT stable by a hidden mode (evidence.hidden): A_h moved (refute: the subspace is not
+    invariant with it), the basis scaled (accept) or zero (refute), the other kind or block, the claim's
+    status or verdict (malformed), P beside it (malformed), the hidden mode moved inside the circle in the
+    scene (refute), the wall's gain changed (accept: the coupling's hidden mode does not see it)."""
+    h = cert["evidence"]["hidden"]
+    Ah = [[Fraction(x) for x in r] for r in h["A_h"]]
+    basis = [[Fraction(x) for x in r] for r in h["basis"]]
+    scene = cert["model"]["scene"]
+    moved = [[frac(x) for x in r] for r in Ah]
+    moved[0][0] = frac(Ah[0][0] + Fraction(1, 10))
+    out = [("unmutated", cert, "accept"),
+           ("A_h[0][0] + 1/10", with_field(cert, ["evidence", "hidden", "A_h"], moved), "refute"),
+           ("basis x 3", with_field(cert, ["evidence", "hidden", "basis"], [[frac(3 * x) for x in r] for r in basis]), "accept"),
+           ("basis zero", with_field(cert, ["evidence", "hidden", "basis"], [["0"] * len(r) for r in basis]), "refute"),
+           ("the other kind", with_field(cert, ["evidence", "hidden", "kind"],
+                                         "unobservable" if h["kind"] == "uncontrollable" else "uncontrollable"), "rejected"),
+           ("block environment (written as tf)", with_field(cert, ["evidence", "hidden", "block"], "environment"), "malformed"),
+           ("block unknown", with_field(cert, ["evidence", "hidden", "block"], "device"), "malformed"),
+           ("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"),
+           ("claim stable", with_field(cert, ["claim", "stable"], True), "malformed"),
+           ("claim conserved 0 beside it", with_field(cert, ["claim", "conserved"], 0), "malformed"),
+           ("P beside it", with_field(cert, ["evidence", "P"], [["1"]]), "malformed"),
+           ("deleted evidence.hidden.A_h", deleted(cert, ["evidence", "hidden", "A_h"]), "malformed"),
+           ("A_h a decimal", with_field(cert, ["evidence", "hidden", "A_h", 0, 0], "0.5"), "malformed"),
+           ("scene: the wall's gain x 4", with_field(cert, ["model", "scene"], scene.replace('g = "', 'g = "4*', 1)), "accept")]
+    for old, new in (('[["-1"]]', '[["-1/2"]]'), ('[["3/2"]]', '[["2/3"]]'), ('[["-11/10"]]', '[["-9/10"]]'),
+                     ('[["3/5", "-4/5"], ["4/5", "3/5"]]', '[["3/10", "-2/5"], ["2/5", "3/10"]]')):
+        if "ss = { A = " + old in scene:
+            out.append(("scene: the hidden mode moved inside", with_field(cert, ["model", "scene"], scene.replace("ss = { A = " + old, "ss = { A = " + new, 1)),
+                        "refute"))
+    return out
+
+
 def loop_mutants(cert, rng, hapstab, cache, tmp):
     """stability-loop: the claim flipped, its count of conserved quantities changed, P scaled (accept for a positive factor), P asymmetric or cut
     (malformed), an entry of P moved (agree: a nearby P may still prove it), w scaled or zero, the scene
     edited (the edited scene's own certificate decides: another verdict refutes, the same one is
     agree, another order is malformed), sections and fields the checkers do not read."""
+    if "hidden" in cert["evidence"]:
+        return hidden_loop_mutants(cert, rng)
     out = [("unmutated", cert, "accept")]
     ev, st = cert["evidence"], cert["claim"]["stable"]
     P = [[Fraction(x) for x in r] for r in ev["P"]]
@@ -2046,7 +2094,13 @@ def print_branches(certs, mutants, cpp):
                                 sum(1 for t in sc if "[coupling]" in t), sum(1 for t in sc if "passive = false" in t),
                                 sum(1 for t in sc if re.search(r'samples = "\d*/', t)),
                                 sum(1 for c in loops if c["claim"].get("conserved", 0) > 0),
-                                min(len(c["evidence"]["P"]) for c in loops), max(len(c["evidence"]["P"]) for c in loops)))
+                                min((len(c["evidence"]["P"]) for c in loops if "P" in c["evidence"]), default=0),
+                                max((len(c["evidence"]["P"]) for c in loops if "P" in c["evidence"]), default=0)))
+        hid = [c["evidence"]["hidden"] for c in loops if "hidden" in c["evidence"]]
+        print("  stability-loop by a hidden mode (exact): %d; uncontrollable %d, unobservable %d; on the circle %d (a pair %d)" % (
+            len(hid), sum(1 for h in hid if h["kind"] == "uncontrollable"), sum(1 for h in hid if h["kind"] == "unobservable"),
+            sum(1 for c in loops if "hidden" in c["evidence"] and re.search(r"# hidden: \w+ (-1|pair)\n", c["model"]["scene"])),
+            sum(1 for h in hid if len(h["A_h"]) == 2)))
     lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
     if lvl:
         print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's lower "
