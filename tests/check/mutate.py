@@ -2104,10 +2104,11 @@ def print_branches(certs, mutants, cpp):
     lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
     if lvl:
         print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's lower "
-              "bound %d, with hi %d" % (
+              "bound %d (with hi %d)" % (
                   sum(1 for c in lvl if c["model"]["kind"] == "isp"), sum(1 for c in lvl if c["model"]["kind"] == "osp"),
-                  *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound", "lower_bound",
-                                                                                 "bounds"))))
+                  *(sum(1 for c in lvl if c["claim"]["status"] == st) for st in ("exact", "certified", "upper_bound")),
+                  sum(1 for c in lvl if c["claim"]["status"] in ("lower_bound", "bounds")),
+                  sum(1 for c in lvl if c["claim"]["status"] == "bounds")))
     mimo = [(c, cj["reason"]) for (k, nm, c, _), cj in zip(mutants, cpp) if k == "passivity-level-mimo" and nm == "unmutated"]
     if mimo:
         print("  passivity-level-mimo branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's "
