@@ -2999,7 +2999,8 @@ def check_operator_passivity(c):
     denominator 0 there, shows Z is not passive (check/operator_passivity_check.hpp)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "operator", "passive"), "claim")
-    only(evidence, ("w", "minor"), "evidence")
+    at_pole = "pole" in evidence
+    only(evidence, ("pole",) if at_pole else ("w", "minor"), "evidence")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: missing or not \"exact\"")
     if not isinstance(claim.get("passive"), bool):
@@ -3020,6 +3021,26 @@ def check_operator_passivity(c):
         raise Malformed("claim.operator: %r is given by ss (beyond this checker: tf only)" % name)
     Z = Z[1]
     q = len(Z)
+    if at_pole:  # a positive real Z has only simple poles on the axis, with Hermitian PSD residues (at 0: symmetric)
+        if exact(evidence, "pole", "evidence") != 0:
+            raise Malformed("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here")
+        R = [[Fraction(0)] * q for _ in range(q)]
+        for i in range(q):
+            for j in range(q):
+                n, d = trim(Z[i][j].num), trim(Z[i][j].den)
+                g = pgcd(n, d) if n else [Fraction(1)]
+                if len(g) > 1:
+                    n, d = pdivmod(n, g)[0], pdivmod(d, g)[0]
+                order = next(k for k, a in enumerate(d) if a != 0)
+                if order >= 2:
+                    return True, "operator %r is not passive: entry (%d, %d) has a pole of order %d at s = 0" % (name, i + 1, j + 1, order)
+                if order == 1:
+                    R[i][j] = (n[0] if n else Fraction(0)) / d[1]
+        if any(R[i][j] != R[j][i] for i in range(q) for j in range(i)):
+            return True, "operator %r is not passive: its residue at s = 0 is not symmetric" % name
+        if not semidefinite(R, False):
+            return True, "operator %r is not passive: its residue at s = 0 is not positive semidefinite" % name
+        return False, "operator %r not passive not shown: at most a simple pole at s = 0 with a symmetric PSD residue" % name
     w = exact(evidence, "w", "evidence")
     rows = evidence.get("minor")
     if not isinstance(rows, list) or not rows or any(not isinstance(r, int) or isinstance(r, bool) or not 0 <= r < q for r in rows):

@@ -2101,6 +2101,10 @@ def print_branches(certs, mutants, cpp):
             len(hid), sum(1 for h in hid if h["kind"] == "uncontrollable"), sum(1 for h in hid if h["kind"] == "unobservable"),
             sum(1 for c in loops if "hidden" in c["evidence"] and re.search(r"# hidden: \w+ (-1|pair)\n", c["model"]["scene"])),
             sum(1 for h in hid if len(h["A_h"]) == 2)))
+    ops = [c for (k, nm, c, _) in mutants if k == "operator-passivity" and nm == "unmutated"]
+    if ops:
+        print("  operator-passivity branches: a negative minor %d, the residue at s = 0 %d" % (
+            sum(1 for c in ops if "minor" in c["evidence"]), sum(1 for c in ops if "pole" in c["evidence"])))
     lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
     if lvl:
         print("  passivity-level branches: ISP %d, OSP %d; exact %d, certified %d, an upper bound only %d, Lemma 1's lower "

@@ -71,8 +71,67 @@ def minor(entries, w, rows):
     return H[0][0][0] * H[1][1][0] - (H[0][1][0] ** 2 + H[0][1][1] ** 2)
 
 
+def residue_at_zero_fails(entries):
+    """Whether Z's residue at s = 0 shows it not positive real (entries "a + k/s" have residue k, the
+    others none): R not symmetric, or not positive semidefinite (2x2: a negative diagonal or det)."""
+    R = [[F(e[3]) if len(e) > 3 else F(0) for e in r] for r in entries]
+    return R[0][1] != R[1][0] or R[0][0] < 0 or R[1][1] < 0 or R[0][0] * R[1][1] - R[0][1] * R[1][0] < 0
+
+
+def rand_spring_entry(rng):
+    """(text, num, den, k): a + k/s, a damper and a spring (k < 0: pushing away), num/den descending."""
+    a, k = rng.randint(0, 4), rng.choice([-5, -2, -1, 1, 2, 5])
+    return '"%d + (%d)/s"' % (a, k), [a, k], [1, 0], k
+
+
+def rand_pole_certificate(rng):
+    """A true operator-passivity certificate by the residue at s = 0 ({pole: "0"}), or None: entries
+    a + k/s on the diagonal (and off it in a third of the draws), constants elsewhere."""
+    for _ in range(20):
+        off = rng.random() < 0.33
+        entries = [[rand_spring_entry(rng), rand_spring_entry(rng) if off else ('"0"', [0], [1])],
+                   [rand_spring_entry(rng) if off else ('"0"', [0], [1]), rand_spring_entry(rng)]]
+        if residue_at_zero_fails(entries):
+            text = SCENE % tuple(e[0] for r in entries for e in r)
+            c = {"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": text, "set": {}},
+                 "claim": {"quantity": "Assumption 1(b) for the scene's operator", "status": "exact", "operator": "Z",
+                           "passive": False},
+                 "evidence": {"pole": "0"}}
+            return c, entries
+    return None
+
+
+def pole_mutants(cert, entries, rng):
+    """The residue form's mutants: each spring's sign flipped in the scene (this module's own residue
+    decides), a double pole written into entry (1, 1) (accept), the pole moved or a witness beside it
+    (malformed)."""
+    out = [("unmutated", cert, "accept")]
+    text = cert["model"]["scene"]
+    for i in range(2):
+        for j in range(2):
+            e = entries[i][j]
+            if len(e) > 3:
+                flipped = [list(r) for r in entries]
+                flipped[i][j] = ('"%d + (%d)/s"' % (e[1][0], -e[3]), [e[1][0], -e[3]], [1, 0], -e[3])
+                out.append(("spring (%d,%d) sign flipped" % (i + 1, j + 1),
+                            with_field(cert, ["model", "scene"], SCENE % tuple(x[0] for r in flipped for x in r)),
+                            "accept" if residue_at_zero_fails(flipped) else "refute"))
+    double = [list(r) for r in entries]
+    double[0][0] = ('"1/s^2"', [1], [1, 0, 0])
+    out += [("entry (1,1) a double pole at 0", with_field(cert, ["model", "scene"], SCENE % tuple(x[0] for r in double for x in r)),
+             "accept"),
+            ("pole 1", with_field(cert, ["evidence", "pole"], "1"), "malformed"),
+            ("a witness w beside the pole", with_field(cert, ["evidence", "w"], "1"), "malformed"),
+            ("passive true", with_field(cert, ["claim", "passive"], True), "malformed"),
+            ("the scene's operator renamed", with_field(cert, ["model", "scene"], text.replace('name = "Z"', 'name = "Y"')), "malformed")]
+    return out
+
+
 def rand_certificate(rng):
-    """A true operator-passivity certificate (a negative minor found on a grid of w), or None."""
+    """A true operator-passivity certificate (a negative minor found on a grid of w; in a fifth of the
+    draws the residue at s = 0, rand_pole_certificate), or None."""
+    if rng.random() < 0.2:
+        return rand_pole_certificate(rng)
     for _ in range(20):
         entries = [[rand_entry(rng), rand_entry(rng)], [rand_entry(rng), rand_entry(rng)]]
         for w in [F(k, 4) for k in range(-20, 21)]:
@@ -89,6 +148,8 @@ def rand_certificate(rng):
 
 
 def mutants(cert, entries, rng):
+    if "pole" in cert["evidence"]:
+        return pole_mutants(cert, entries, rng)
     w, rows = F(cert["evidence"]["w"]), cert["evidence"]["minor"]
     out = [("unmutated", cert, "accept")]
     for name, w2 in (("w + 1/1000", w + F(1, 1000)), ("w random", F(rng.randint(-400, 400), 100)), ("w 0", F(0))):

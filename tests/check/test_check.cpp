@@ -716,6 +716,39 @@ TEST(OperatorPassivityCheck, PaperH1ByHand) {
   EXPECT_THROW(check_certificate(passive), InputError);
 }
 
+// Failing by a pole (evidence {pole: "0"}): a positive real Z has only simple poles on the axis with
+// symmetric PSD residues. 2 - 10/s: He Z(jw) = 2 everywhere, residue -10 < 0: not passive. 2 + 10/s:
+// residue 10 (passive there): refuted. 1/s^2: a double pole. [[1/s, 2/s], [0, 1/s]]: R not symmetric.
+// [[1/s, 2/s], [2/s, 1/s]]: R = [[1, 2], [2, 1]], det -3: not PSD. [[(s + 1)/(s^2 + s), 0], [0, 1/s]]:
+// the first entry is 1/s in lowest terms, R = I: refuted.
+TEST(OperatorPassivityCheck, ResidueAtZeroByHand) {
+  auto cert = [](const std::string& tf) {
+    const std::string scene = "[scene]\nT = \"1/100\"\n[[device]]\nname = \"a\"\nm = \"1/10\"\nb = \"1\"\n[[device]]\nname = \"b\"\n"
+                              "m = \"1/10\"\nb = \"1\"\n[[operator]]\nname = \"Z\"\ndofs = [\"a\", \"b\"]\ntf = " + tf +
+                              "\n[environment]\ntf = [[\"1000\", \"0\"], [\"0\", \"1000\"]]\n";
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "operator-passivity"},
+                          {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                          {"claim", {{"status", "exact"}, {"operator", "Z"}, {"passive", false}}},
+                          {"evidence", {{"pole", "0"}}}};
+  };
+  const Verdict neg = check_certificate(cert(R"([["2 - 10/s", "0"], ["0", "1"]])"));
+  EXPECT_TRUE(neg.verified) << neg.reason;
+  EXPECT_NE(neg.reason.find("not positive semidefinite"), std::string::npos) << neg.reason;
+  EXPECT_FALSE(check_certificate(cert(R"([["2 + 10/s", "0"], ["0", "1"]])")).verified);
+  const Verdict dbl = check_certificate(cert(R"([["1/s^2", "0"], ["0", "1"]])"));
+  EXPECT_TRUE(dbl.verified) << dbl.reason;
+  EXPECT_NE(dbl.reason.find("order 2"), std::string::npos) << dbl.reason;
+  EXPECT_TRUE(check_certificate(cert(R"([["1/s", "2/s"], ["0", "1/s"]])")).verified);
+  EXPECT_TRUE(check_certificate(cert(R"([["1/s", "2/s"], ["2/s", "1/s"]])")).verified);
+  EXPECT_FALSE(check_certificate(cert(R"x([["(s + 1)/(s^2 + s)", "0"], ["0", "1/s"]])x")).verified);
+  auto other = cert(R"([["2 - 10/s", "0"], ["0", "1"]])");
+  other["evidence"]["pole"] = "1";
+  EXPECT_THROW(check_certificate(other), InputError);
+  auto beside = cert(R"([["2 - 10/s", "0"], ["0", "1"]])");
+  beside["evidence"]["w"] = "1";
+  EXPECT_THROW(check_certificate(beside), InputError);
+}
+
 // An OSP value <= 0 is an upper bound only ("upper_bound", the witness alone). G = diag(1/(z - 1/2),
 // 1/(z - 1/5) + d22): at z0 = -1, with d22 = -1, 1/G = diag(-3/2, -6/11), so He G^-1(-1) has
 // lambda_min = -3/2 and delta* <= -3/2 (it is -3/2: Re(z - 1/2) >= -3/2 and Re((z - 1/5)/(6/5 - z)) >

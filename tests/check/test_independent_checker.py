@@ -1042,6 +1042,31 @@ class OperatorPassivity(unittest.TestCase):
             self.assertEqual(hc.check(bad)[0], 2)
 
 
+    def test_residue_at_zero_by_hand(self):
+        # test_check.cpp's OperatorPassivityCheck.ResidueAtZeroByHand: 2 - 10/s (residue -10), 1/s^2, an
+        # asymmetric or indefinite residue are not passive; 2 + 10/s and (s + 1)/(s^2 + s) = 1/s are refuted
+        def cert(tf):
+            scene = ('[scene]\nT = "1/100"\n[[device]]\nname = "a"\nm = "1/10"\nb = "1"\n[[device]]\nname = "b"\nm = "1/10"\n'
+                     'b = "1"\n[[operator]]\nname = "Z"\ndofs = ["a", "b"]\ntf = %s\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n' % tf)
+            return {"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": scene, "set": {}},
+                    "claim": {"status": "exact", "operator": "Z", "passive": False}, "evidence": {"pole": "0"}}
+        code, why = hc.check(cert('[["2 - 10/s", "0"], ["0", "1"]]'))
+        self.assertEqual(code, 0, why)
+        self.assertEqual(hc.check(cert('[["2 + 10/s", "0"], ["0", "1"]]'))[0], 1)
+        code, why = hc.check(cert('[["1/s^2", "0"], ["0", "1"]]'))
+        self.assertEqual(code, 0, why)
+        self.assertIn("order 2", why)
+        self.assertEqual(hc.check(cert('[["1/s", "2/s"], ["0", "1/s"]]'))[0], 0)
+        self.assertEqual(hc.check(cert('[["1/s", "2/s"], ["2/s", "1/s"]]'))[0], 0)
+        self.assertEqual(hc.check(cert('[["(s + 1)/(s^2 + s)", "0"], ["0", "1/s"]]'))[0], 1)
+        c = cert('[["2 - 10/s", "0"], ["0", "1"]]')
+        c["evidence"]["pole"] = "1"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert('[["2 - 10/s", "0"], ["0", "1"]]')
+        c["evidence"]["w"] = "1"
+        self.assertEqual(hc.check(c)[0], 2)
+
+
 class BoundNumDen(unittest.TestCase):
     """H given by its coefficients (--num/--den, a .mat's num and den) is the same H (test_check.cpp's
     BoundCheck.NumDenIsTheSameH): H = 4 with one sample of delay at T = 1/2, b* = 3 T K/2 = 3; den

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "hapstab/check/gaussian_rational.hpp"
+#include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/numeric/error.hpp"
 
@@ -38,12 +39,37 @@ Cq det(std::vector<std::vector<Cq>> M) {
   return d;
 }
 
+// Z's residue at s = 0 (header): "" when Z has no pole there of order >= 2 and R = lim s Z(s) is
+// symmetric positive semidefinite; else what fails.
+std::string residue_at_zero_fails(const std::vector<std::vector<RationalFunction<rational>>>& Z) {
+  const size_t q = Z.size();
+  rational_matrix::Mat R = rational_matrix::zeros(q, q);
+  for (size_t i = 0; i < q; ++i)
+    for (size_t j = 0; j < q; ++j) {
+      Polynomial<rational> n = Z[i][j].num(), d = Z[i][j].den();
+      const Polynomial<rational> g = gcd(n, d);  // the entry in lowest terms
+      if (g.degree() > 0) n = divmod(n, g).first, d = divmod(d, g).first;
+      int order = 0;
+      while (order <= d.degree() && d.coeff(order).is_zero()) ++order;
+      if (order >= 2)
+        return "entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ") has a pole of order " + std::to_string(order) +
+               " at s = 0 (a positive real Z has only simple poles on the imaginary axis)";
+      if (order == 1) R[i][j] = n.coeff(0) / d.coeff(1);  // d = s e(s), e(0) = d'(0) = d_1
+    }
+  if (!rational_matrix::symmetric(R)) return "the residue R = lim s Z(s) at s = 0 is not symmetric";
+  if (!rational_matrix::positive_definite(R, false))
+    return "the residue R = lim s Z(s) at s = 0 is not positive semidefinite (exact elimination)";
+  return "";
+}
+
 }  // namespace
 
 Verdict check_operator_passivity(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "operator", "passive"}, "claim");
-  detail::only_fields(evidence, {"w", "minor"}, "evidence");
+  const bool at_pole = evidence.contains("pole");
+  if (at_pole) detail::only_fields(evidence, {"pole"}, "evidence");
+  else detail::only_fields(evidence, {"w", "minor"}, "evidence");
   if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
   if (!claim.contains("passive") || !claim.at("passive").is_boolean()) throw InputError("claim.passive: missing or not true/false");
   if (claim.at("passive").get<bool>())
@@ -60,6 +86,15 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
     }
   if (!op) throw InputError("claim.operator: no operator given by tf or ss named '" + name + "' in the scene");
   if (op->is_ss) throw InputError("claim.operator: '" + name + "' is given by ss (beyond this checker: tf only)");
+  if (at_pole) {  // the residue at s = 0 (header)
+    if (detail::exact_field(evidence, "pole", "evidence") != 0)
+      throw InputError("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here");
+    const std::string why = residue_at_zero_fails(op->Z);
+    if (why.empty())
+      return {false, "operator '" + name + "' not passive not shown: Z has at most a simple pole at s = 0, with a symmetric positive "
+                     "semidefinite residue"};
+    return {true, "operator '" + name + "' is not passive (positive real): " + why + ", exactly (Assumption 1(b) fails)"};
+  }
   const rational w = detail::exact_field(evidence, "w", "evidence");
   const size_t q = op->Z.size();
   if (!evidence.contains("minor") || !evidence.at("minor").is_array() || evidence.at("minor").empty())
