@@ -3017,10 +3017,11 @@ def check_operator_passivity(c):
     if len(at) != 1:
         raise Malformed("claim.operator: %s operator given by tf or ss named %r in the scene" % ("no" if not at else "more than one", name))
     Z = ops[at[0]][1]
-    if Z[0] != "tf":
-        raise Malformed("claim.operator: %r is given by ss (beyond this checker: tf only)" % name)
+    is_ss = Z[0] != "tf"
+    if is_ss and at_pole:
+        raise Malformed("claim.operator: %r is given by ss: the residue form is for tf operators" % name)
     Z = Z[1]
-    q = len(Z)
+    q = len(Z[3]) if is_ss else len(Z)
     if at_pole:  # a positive real Z has only simple poles on the axis, with Hermitian PSD residues (at 0: symmetric)
         if exact(evidence, "pole", "evidence") != 0:
             raise Malformed("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here")
@@ -3054,8 +3055,30 @@ def check_operator_passivity(c):
             v = cq_add(cq_mul(v, (Fraction(0), w)), cq(a))
         return v
     Zj = [[None] * q for _ in range(q)]
+    if is_ss:  # C (jwI - A)^-1 B + D as written, by elimination over Q(j)
+        A, B, C, D = Z
+        n = len(A)
+        M = [[(-A[i][k], w if i == k else Fraction(0)) for k in range(n)] + [cq(B[i][j]) for j in range(q)] for i in range(n)]
+        for k in range(n):
+            p = next((r for r in range(k, n) if M[r][k] != (0, 0)), None)
+            if p is None:
+                return False, "Z(s) of %r (ss) has jwI - A singular at w = %s" % (name, short(w))
+            M[k], M[p] = M[p], M[k]
+            for i in range(n):
+                if i != k and M[i][k] != (0, 0):
+                    f = cq_div(M[i][k], M[k][k])
+                    M[i] = [cq_sub(a, cq_mul(f, b)) for a, b in zip(M[i], M[k])]
+        X = [[cq_div(M[k][n + j], M[k][k]) for j in range(q)] for k in range(n)]
+        for i in range(q):
+            for j in range(q):
+                v = cq(D[i][j])
+                for k in range(n):
+                    v = cq_add(v, cq_mul(cq(C[i][k]), X[k][j]))
+                Zj[i][j] = v
     for i in range(q):
         for j in range(q):
+            if is_ss:
+                continue
             d = at_jw(Z[i][j].den)
             if d == (0, 0):
                 return False, "Z(s) of %r has a pole at s = jw, w = %s" % (name, short(w))

@@ -175,7 +175,12 @@ def mutants(cert, entries, rng):
             ("minor empty", with_field(cert, ["evidence", "minor"], []), "malformed"),
             ("evidence.w deleted", {**cert, "evidence": {"minor": rows}}, "malformed"),
             ("a field added to the claim", with_field(cert, ["claim", "omega"], "1"), "malformed"),
-            ("the scene's operator given by ss", with_field(cert, ["model", "scene"], cert["model"]["scene"].split("tf = [[")[0] +
-                                                             'ss = { A = [["-1"]], B = [["1", "0"]], C = [["1"], ["0"]], D = [["1", "0"], ["0", "1"]] }\n\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n'),
-             "malformed")]
+            # Z = diag(1 + 1/(s + 1), 1) as ss: He Z(jw) >= I, every minor > 0
+            ("the scene's operator a passive ss", with_field(cert, ["model", "scene"], cert["model"]["scene"].split("tf = [[")[0] +
+                                                              'ss = { A = [["-1"]], B = [["1", "0"]], C = [["1"], ["0"]], D = [["1", "0"], ["0", "1"]] }\n\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n'),
+             "refute"),
+            # Z = diag(1 - 3/(s + 1), 1) as ss: Re Z11(jw) = 1 - 3/(1 + w^2), negative for w^2 < 2
+            ("the scene's operator a non-passive ss", with_field(cert, ["model", "scene"], cert["model"]["scene"].split("tf = [[")[0] +
+                                                                  'ss = { A = [["-1"]], B = [["1", "0"]], C = [["-3"], ["0"]], D = [["1", "0"], ["0", "1"]] }\n\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n'),
+             "accept" if w * w < 2 and rows in ([0], [0, 1]) else "refute")]
     return out

@@ -716,6 +716,32 @@ TEST(OperatorPassivityCheck, PaperH1ByHand) {
   EXPECT_THROW(check_certificate(passive), InputError);
 }
 
+// An operator given by ss as written: Z = 1 - 3/(s + 1) (A = -1, B = 1, C = -3, D = 1), Re Z(jw) = 1 -
+// 3/(1 + w^2): -2 at w = 0 (verified), 2/5 at w = 2 (refuted). A = 0 with C = 0 (a hidden integrator):
+// jwI - A singular at w = 0, nothing shown there (refuted); the residue form is for tf only.
+TEST(OperatorPassivityCheck, StateSpaceOperatorByHand) {
+  auto cert = [](const std::string& a, const std::string& c, const std::string& w) {
+    const std::string scene = "[scene]\nT = \"1/100\"\n[[device]]\nname = \"a\"\nm = \"1/10\"\nb = \"1\"\n[[operator]]\n"
+                              "name = \"Z\"\ndofs = [\"a\"]\nss = { A = [[\"" + a + "\"]], B = [[\"1\"]], C = [[\"" + c +
+                              "\"]], D = [[\"1\"]] }\n[environment]\ntf = \"1000\"\n";
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "operator-passivity"},
+                          {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                          {"claim", {{"status", "exact"}, {"operator", "Z"}, {"passive", false}}},
+                          {"evidence", {{"w", w}, {"minor", {0}}}}};
+  };
+  const Verdict v = check_certificate(cert("-1", "-3", "0"));
+  EXPECT_TRUE(v.verified) << v.reason;
+  EXPECT_NE(v.reason.find("-2"), std::string::npos) << v.reason;
+  EXPECT_FALSE(check_certificate(cert("-1", "-3", "2")).verified);
+  EXPECT_TRUE(check_certificate(cert("-1", "-3", "1/2")).verified);  // 1 - 3/(5/4) = -7/5
+  const Verdict hidden = check_certificate(cert("0", "0", "0"));
+  EXPECT_FALSE(hidden.verified);
+  EXPECT_NE(hidden.reason.find("singular"), std::string::npos) << hidden.reason;
+  auto residue = cert("-1", "-3", "0");
+  residue["evidence"] = {{"pole", "0"}};
+  EXPECT_THROW(check_certificate(residue), InputError);
+}
+
 // Failing by a pole (evidence {pole: "0"}): a positive real Z has only simple poles on the axis with
 // symmetric PSD residues. 2 - 10/s: He Z(jw) = 2 everywhere, residue -10 < 0: not passive. 2 + 10/s:
 // residue 10 (passive there): refuted. 1/s^2: a double pole. [[1/s, 2/s], [0, 1/s]]: R not symmetric.

@@ -1042,6 +1042,23 @@ class OperatorPassivity(unittest.TestCase):
             self.assertEqual(hc.check(bad)[0], 2)
 
 
+    def test_state_space_operator_by_hand(self):
+        # test_check.cpp's OperatorPassivityCheck.StateSpaceOperatorByHand: Z = 1 - 3/(s + 1) as ss, Re Z(j0) = -2,
+        # Re Z(2j) = 2/5, Re Z(j/2) = -7/5; a hidden integrator (A = 0, C = 0) is singular at w = 0
+        def cert(a, c, w, ev=None):
+            scene = ('[scene]\nT = "1/100"\n[[device]]\nname = "a"\nm = "1/10"\nb = "1"\n[[operator]]\nname = "Z"\n'
+                     'dofs = ["a"]\nss = { A = [["%s"]], B = [["1"]], C = [["%s"]], D = [["1"]] }\n[environment]\ntf = "1000"\n' % (a, c))
+            return {"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": scene, "set": {}},
+                    "claim": {"status": "exact", "operator": "Z", "passive": False}, "evidence": ev or {"w": w, "minor": [0]}}
+        code, why = hc.check(cert("-1", "-3", "0"))
+        self.assertEqual(code, 0, why)
+        self.assertEqual(hc.check(cert("-1", "-3", "2"))[0], 1)
+        self.assertEqual(hc.check(cert("-1", "-3", "1/2"))[0], 0)
+        code, why = hc.check(cert("0", "0", "0"))
+        self.assertEqual(code, 1)
+        self.assertIn("singular", why)
+        self.assertEqual(hc.check(cert("-1", "-3", "0", {"pole": "0"}))[0], 2)
+
     def test_residue_at_zero_by_hand(self):
         # test_check.cpp's OperatorPassivityCheck.ResidueAtZeroByHand: 2 - 10/s (residue -10), 1/s^2, an
         # asymmetric or indefinite residue are not passive; 2 + 10/s and (s + 1)/(s^2 + s) = 1/s are refuted

@@ -1,6 +1,7 @@
 // hapstab/check/operator_passivity_check.cpp -- see operator_passivity_check.hpp.
 #include "hapstab/check/operator_passivity_check.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,36 @@ Cq det(std::vector<std::vector<Cq>> M) {
     }
   }
   return d;
+}
+
+// Z(jw) of an ss operator as written, C (jwI - A)^-1 B + D, over Q(j) (Gauss-Jordan with row swaps);
+// nullopt where jwI - A is singular (a pole of Z, or a hidden mode, at jw).
+std::optional<std::vector<std::vector<Cq>>> ss_at_jw(const detail::SceneLoop::Impedance& op, const rational& w) {
+  const size_t n = op.A.size(), m = op.D.size();
+  std::vector<std::vector<Cq>> M(n, std::vector<Cq>(n + m));
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) M[i][j] = Cq(-op.A[i][j], i == j ? w : rational(0));
+    for (size_t j = 0; j < m; ++j) M[i][n + j] = Cq(op.B[i][j]);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    size_t p = k;
+    while (p < n && M[p][k].is_zero()) ++p;
+    if (p == n) return std::nullopt;
+    std::swap(M[p], M[k]);
+    for (size_t i = 0; i < n; ++i) {
+      if (i == k || M[i][k].is_zero()) continue;
+      const Cq f = M[i][k] / M[k][k];
+      for (size_t j = k; j < n + m; ++j) M[i][j] = M[i][j] - f * M[k][j];
+    }
+  }
+  std::vector<std::vector<Cq>> Z(m, std::vector<Cq>(m));
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
+      Cq v(op.D[i][j]);
+      for (size_t k = 0; k < n; ++k) v = v + Cq(op.C[i][k]) * (M[k][n + j] / M[k][k]);
+      Z[i][j] = v;
+    }
+  return Z;
 }
 
 // Z's residue at s = 0 (header): "" when Z has no pole there of order >= 2 and R = lim s Z(s) is
@@ -85,8 +116,8 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
       op = &o;
     }
   if (!op) throw InputError("claim.operator: no operator given by tf or ss named '" + name + "' in the scene");
-  if (op->is_ss) throw InputError("claim.operator: '" + name + "' is given by ss (beyond this checker: tf only)");
   if (at_pole) {  // the residue at s = 0 (header)
+    if (op->is_ss) throw InputError("claim.operator: '" + name + "' is given by ss: the residue form is for tf operators");
     if (detail::exact_field(evidence, "pole", "evidence") != 0)
       throw InputError("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here");
     const std::string why = residue_at_zero_fails(op->Z);
@@ -96,7 +127,7 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
     return {true, "operator '" + name + "' is not passive (positive real): " + why + ", exactly (Assumption 1(b) fails)"};
   }
   const rational w = detail::exact_field(evidence, "w", "evidence");
-  const size_t q = op->Z.size();
+  const size_t q = op->is_ss ? op->D.size() : op->Z.size();
   if (!evidence.contains("minor") || !evidence.at("minor").is_array() || evidence.at("minor").empty())
     throw InputError("evidence.minor: missing, not an array or empty");
   std::vector<size_t> rows;
@@ -108,13 +139,19 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
     rows.push_back(i);
   }
   std::vector<std::vector<Cq>> Z(q, std::vector<Cq>(q));
-  for (size_t i = 0; i < q; ++i)
-    for (size_t j = 0; j < q; ++j) {
-      const Cq d = at_jw(op->Z[i][j].den(), w);
-      if (d.is_zero())
-        return {false, "Z(s) of '" + name + "' has a pole at s = jw, w = " + w.str() + ": He Z(jw) is not defined there"};
-      Z[i][j] = at_jw(op->Z[i][j].num(), w) / d;
-    }
+  if (op->is_ss) {  // C (jwI - A)^-1 B + D as written
+    const auto z = ss_at_jw(*op, w);
+    if (!z) return {false, "Z(s) of '" + name + "' (ss) has jwI - A singular at w = " + w.str() + ": He Z(jw) is not defined there"};
+    Z = *z;
+  } else {
+    for (size_t i = 0; i < q; ++i)
+      for (size_t j = 0; j < q; ++j) {
+        const Cq d = at_jw(op->Z[i][j].den(), w);
+        if (d.is_zero())
+          return {false, "Z(s) of '" + name + "' has a pole at s = jw, w = " + w.str() + ": He Z(jw) is not defined there"};
+        Z[i][j] = at_jw(op->Z[i][j].num(), w) / d;
+      }
+  }
   std::vector<std::vector<Cq>> H(rows.size(), std::vector<Cq>(rows.size()));
   for (size_t a = 0; a < rows.size(); ++a)
     for (size_t b = 0; b < rows.size(); ++b) {

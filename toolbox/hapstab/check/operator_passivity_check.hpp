@@ -6,8 +6,8 @@
 //
 // Model: {scene, set}, read by check/scene_model.hpp's read_scene_loop (the `stability-loop`
 // reading: what it does not model is refused by name); the operator is the [[operator]] table whose
-// `name` is claim.operator, given by `tf` (a matrix in s, parameters expanded; `ss` is beyond this
-// checker). Claim: {quantity, status "exact", operator, passive: false}. Evidence: w (a rational)
+// `name` is claim.operator, given by `tf` (a matrix in s, parameters expanded) or by `ss` as written
+// (Z(jw) = C (jwI - A)^-1 B + D solved over Q(j); jwI - A singular there: refuted, nothing shown). Claim: {quantity, status "exact", operator, passive: false}. Evidence: w (a rational)
 // and minor (the 0-based rows, increasing, of a principal minor).
 // Theorem: a positive real Z has He Z(jw) = (Z(jw) + Z(jw)^H)/2 >= 0 at every real w that is not a
 // pole, so every principal minor of He Z(jw) is >= 0 there. Verified exactly in Q(j): no entry of Z
