@@ -2403,7 +2403,7 @@ def scene_loop_read(model):
     for i, d in enumerate(devs):
         key = "device[%d]" % (i + 1)
         scene_keys(d, ("name", "m", "b", "tf", "ss", "passive"), key)
-        dev = {"first": len(mass), "dofs": 1, "block": None}
+        dev = {"first": len(mass), "dofs": 1, "block": None, "name": d.get("name")}
         if "tf" in d or "ss" in d:
             if "m" in d or "b" in d:
                 raise Malformed("model.scene: %s: give either m, b or tf/ss, not both" % key)
@@ -2870,32 +2870,68 @@ def quotient(M, L, at):
             for a in kept]
 
 
-def hidden_mode_verdict(loop, h):
-    """evidence.hidden {block, kind, basis, A_h} of an ss environment or coupling (C, D times gain, as read):
-    unobservable: C V = 0, A V = V A_h (V = basis, n x r); uncontrollable: W B = 0, W A = A_h W (W = basis,
-    r x n); the basis of full rank (its Gram matrix > 0); charpoly(A_h) = (z - 1)^k q, q(1) != 0, q not
-    Schur stable. Then [0; V; 0] (or [0 W 0]) spans an invariant subspace of the loop's M whatever the rest
-    of the loop is (the block's output does not show it, or its input does not reach it), so M has an
-    eigenvalue != 1 with |z| >= 1: NOT stable, and not by a conserved quantity."""
+def hurwitz(p):
+    """(True, why) when every root of p (ascending) has Re s < 0: the Cayley map z = (1 + s)/(1 - s) takes Re s < 0
+    onto |z| < 1; p(1) = 0 is a root at s = 1; else q(z) = sum p_k (z - 1)^k (z + 1)^(d - k), of degree d, has the
+    images of p's roots: Schur-Cohn on q."""
+    p = trim(p)
+    if peval(p, Fraction(1)) == 0:
+        return False, "a root at s = 1"
+    d = len(p) - 1
+    q = [Fraction(0)]
+    for k, a in enumerate(p):
+        term = [Fraction(a)]
+        for _ in range(k):
+            term = pmul(term, [Fraction(-1), Fraction(1)])
+        for _ in range(d - k):
+            term = pmul(term, [Fraction(1), Fraction(1)])
+        q = padd(q, term)
+    return schur_cohn(q)
+
+
+def hidden_mode_verdict(loop, h, model):
+    """evidence.hidden {block, [name,] kind, basis, A_h} of a block written as ss: an environment or coupling (C, D
+    times gain, as read; discrete), a device or an operator by name (continuous). Unobservable: C V = 0, A V = V
+    A_h (V = basis, n x r); uncontrollable: W B = 0, W A = A_h W (W = basis, r x n); the basis of full rank (its
+    Gram matrix > 0). Discrete: charpoly(A_h) = (z - 1)^k q, q(1) != 0, q not Schur stable; continuous:
+    charpoly(A_h) = s^k q, q(0) != 0, q not Hurwitz (a root lambda != 0, Re lambda >= 0: e^{lambda T} has |.| >= 1
+    and is not 1, as lambda T = 2 pi j m is impossible for an algebraic lambda and a rational T). The span is
+    invariant in the loop's M whatever the rest of the loop is (the block's output does not show it, or its input
+    does not reach it), so M has an eigenvalue != 1 with |z| >= 1: NOT stable, and not by a conserved quantity."""
     if not isinstance(h, dict):
         raise Malformed("evidence.hidden: not an object")
-    only(h, ("block", "kind", "basis", "A_h"), "evidence.hidden")
     block, kind = h.get("block"), h.get("kind")
-    if block not in ("environment", "coupling"):
-        raise Malformed("evidence.hidden.block: \"environment\" or \"coupling\"")
+    named = block in ("device", "operator")
+    only(h, ("block", "name", "kind", "basis", "A_h") if named else ("block", "kind", "basis", "A_h"), "evidence.hidden")
+    if block not in ("environment", "coupling", "device", "operator"):
+        raise Malformed("evidence.hidden.block: \"environment\", \"coupling\", \"device\" or \"operator\"")
     if kind not in ("unobservable", "uncontrollable"):
         raise Malformed("evidence.hidden.kind: \"unobservable\" or \"uncontrollable\"")
-    d = loop[7] if block == "environment" else loop[8]
-    if d is None:
-        raise Malformed("evidence.hidden.block: the scene has no [coupling]")
-    if d[0] != "ss":
-        raise Malformed("evidence.hidden.block: the %s is written as tf: a hidden mode is certified of an ss block as written" % block)
-    A, B, C, _ = d[1]
+    if named:
+        name = h.get("name")
+        if not isinstance(name, str):
+            raise Malformed("evidence.hidden.name: missing or not a string")
+        if block == "device":
+            found = [dv["block"][2] for dv in loop[2] if dv.get("block") and dv["block"][0] == "ss" and dv.get("name") == name]
+        else:
+            root = scene_read(model, False, coupling=True)[0]
+            names = [o.get("name") for o in root.get("operator", []) if "tf" in o or "ss" in o]
+            found = [Z[1][:3] for (ports, Z), nm in zip(loop[6], names) if Z[0] == "ss" and nm == name]
+        if len(found) != 1:
+            raise Malformed("evidence.hidden.name: %s %s named %r given by ss in the scene" % ("no" if not found else "more than one", block, name))
+        A, B, C = found[0]
+    else:
+        d = loop[7] if block == "environment" else loop[8]
+        if d is None:
+            raise Malformed("evidence.hidden.block: the scene has no [coupling]")
+        if d[0] != "ss":
+            raise Malformed("evidence.hidden.block: the %s is written as tf: a hidden mode is certified of an ss block as written" % block)
+        A, B, C, _ = d[1]
     n = len(A)
     Ah = h.get("A_h")
     r = len(Ah) if isinstance(Ah, list) else 0
-    if r == 0 or r > MAX_LOOP_ORDER or n > MAX_LOOP_ORDER:
-        raise Malformed("evidence.hidden.A_h: empty, or beyond this checker's order %d" % MAX_LOOP_ORDER)
+    if n == 0 or r == 0 or r > MAX_LOOP_ORDER or n > MAX_LOOP_ORDER:
+        raise Malformed("evidence.hidden: the block has no state, A_h is empty, or beyond this checker's order %d" % MAX_LOOP_ORDER)
     Ah = frac_matrix(h, "A_h", r, r, "evidence.hidden")
     unobs = kind == "unobservable"
     Vb = frac_matrix(h, "basis", n, r, "evidence.hidden") if unobs else frac_matrix(h, "basis", r, n, "evidence.hidden")
@@ -2907,15 +2943,17 @@ def hidden_mode_verdict(loop, h):
     if not semidefinite(mmul(mT(Vb), Vb) if unobs else mmul(Vb, mT(Vb)), True):
         return False, "evidence.hidden.basis: not of full rank %d" % r
     q = faddeev_leverrier(Ah)
+    marginal = Fraction(0) if named else Fraction(1)  # the eigenvalue that may settle
     k1 = 0
-    while len(trim(q)) > 1 and peval(q, Fraction(1)) == 0:
-        q, rem = pdivmod(q, [Fraction(-1), Fraction(1)])
+    while len(trim(q)) > 1 and peval(q, marginal) == 0:
+        q = pdivmod(q, [-marginal, Fraction(1)])[0]
         k1 += 1
-    ok, why = schur_cohn(q)
+    ok, why = hurwitz(q) if named else schur_cohn(q)
     if ok:
-        return False, "evidence.hidden: every eigenvalue of A_h other than z = 1 is inside the unit circle: nothing shown"
-    return True, "NOT stable [exact]: the %s hides an %s subspace of dimension %d, invariant in the loop; charpoly(A_h) = (z - 1)^%d q, q not Schur stable (%s)" % (
-        block, kind, r, k1, why)
+        return False, "evidence.hidden: every eigenvalue of A_h other than %s is %s: nothing shown" % (
+            "s = 0" if named else "z = 1", "in Re s < 0" if named else "inside the unit circle")
+    return True, "NOT stable [exact]: the %s hides an %s subspace of dimension %d, invariant in the loop; charpoly(A_h) = %s^%d q, q not %s (%s)" % (
+        block + (" %r" % h["name"] if named else ""), kind, r, "s" if named else "(z - 1)", k1, "Hurwitz" if named else "Schur stable", why)
 
 
 def check_stability_loop(c):
@@ -2932,7 +2970,7 @@ def check_stability_loop(c):
             raise Malformed("claim.status: a hidden mode's verdict is \"exact\"")
         if claim.get("stable") is not False:
             raise Malformed("claim.stable: a hidden mode shows NOT stable (false) only")
-        return hidden_mode_verdict(scene_loop_read(model), evidence["hidden"])
+        return hidden_mode_verdict(scene_loop_read(model), evidence["hidden"], model)
     only(evidence, ("P", "w"), "evidence")
     k = claim.get("conserved", 0)
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:

@@ -1730,6 +1730,11 @@ def rand_loop_scene(rng):
             L += ['m = "%s"' % m, 'b = "%s"' % b]
         elif form == "tf":
             L += ['tf = "1/(%s*s + %s)"' % (m, b), "passive = false"]
+        elif rng.random() < 0.1:  # an undamped oscillator (s = +-j w) or a growing pair (+-w) the device hides
+            w2 = rng.choice(["-4", "-9", "4"])
+            L += ["# hidden device oscillator %s" % w2,
+                  'ss = { A = [["-(%s)/(%s)", "0", "0"], ["0", "0", "1"], ["0", "%s", "0"]], B = [["1/(%s)"], ["0"], ["0"]], '
+                  'C = [["1", "0", "0"]], D = [["0"]] }' % (b, m, w2, m), "passive = false"]
         elif rng.random() < 0.7:
             L += ['ss = { A = [["-(%s)/(%s)"]], B = [["1/(%s)"]], C = [["1"]], D = [["0"]] }' % (b, m, m), "passive = false"]
         else:  # with its own position state, which no output shows: a conserved quantity
@@ -1826,7 +1831,7 @@ def hidden_loop_mutants(cert, rng):
            ("the other kind", with_field(cert, ["evidence", "hidden", "kind"],
                                          "unobservable" if h["kind"] == "uncontrollable" else "uncontrollable"), "rejected"),
            ("block environment (written as tf)", with_field(cert, ["evidence", "hidden", "block"], "environment"), "malformed"),
-           ("block unknown", with_field(cert, ["evidence", "hidden", "block"], "device"), "malformed"),
+           ("block unknown", with_field(cert, ["evidence", "hidden", "block"], "plant"), "malformed"),
            ("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"),
            ("claim stable", with_field(cert, ["claim", "stable"], True), "malformed"),
            ("claim conserved 0 beside it", with_field(cert, ["claim", "conserved"], 0), "malformed"),
@@ -1834,6 +1839,13 @@ def hidden_loop_mutants(cert, rng):
            ("deleted evidence.hidden.A_h", deleted(cert, ["evidence", "hidden", "A_h"]), "malformed"),
            ("A_h a decimal", with_field(cert, ["evidence", "hidden", "A_h", 0, 0], "0.5"), "malformed"),
            ("scene: the wall's gain x 4", with_field(cert, ["model", "scene"], scene.replace('g = "', 'g = "4*', 1)), "accept")]
+    if h["block"] == "device":  # the oscillator damped in the scene: A_h no longer describes it
+        for w2 in ("-4", "-9", "4"):
+            if '["0", "%s", "0"]]' % w2 in scene:
+                out.append(("scene: the hidden oscillator damped", with_field(cert, ["model", "scene"], scene.replace(
+                    '["0", "%s", "0"]]' % w2, '["0", "%s", "-1"]]' % w2, 1)), "refute"))
+                break
+        out.append(("the device renamed in the evidence", with_field(cert, ["evidence", "hidden", "name"], "nobody"), "malformed"))
     for old, new in (('[["-1"]]', '[["-1/2"]]'), ('[["3/2"]]', '[["2/3"]]'), ('[["-11/10"]]', '[["-9/10"]]'),
                      ('[["3/5", "-4/5"], ["4/5", "3/5"]]', '[["3/10", "-2/5"], ["2/5", "3/10"]]')):
         if "ss = { A = " + old in scene:
@@ -2097,8 +2109,9 @@ def print_branches(certs, mutants, cpp):
                                 min((len(c["evidence"]["P"]) for c in loops if "P" in c["evidence"]), default=0),
                                 max((len(c["evidence"]["P"]) for c in loops if "P" in c["evidence"]), default=0)))
         hid = [c["evidence"]["hidden"] for c in loops if "hidden" in c["evidence"]]
-        print("  stability-loop by a hidden mode (exact): %d; uncontrollable %d, unobservable %d; on the circle %d (a pair %d)" % (
-            len(hid), sum(1 for h in hid if h["kind"] == "uncontrollable"), sum(1 for h in hid if h["kind"] == "unobservable"),
+        print("  stability-loop by a hidden mode (exact): %d; of a device %d; uncontrollable %d, unobservable %d; on the circle %d (a pair %d)" % (
+            len(hid), sum(1 for h in hid if h["block"] == "device"), sum(1 for h in hid if h["kind"] == "uncontrollable"),
+            sum(1 for h in hid if h["kind"] == "unobservable"),
             sum(1 for c in loops if "hidden" in c["evidence"] and re.search(r"# hidden: \w+ (-1|pair)\n", c["model"]["scene"])),
             sum(1 for h in hid if len(h["A_h"]) == 2)))
     ops = [c for (k, nm, c, _) in mutants if k == "operator-passivity" and nm == "unmutated"]

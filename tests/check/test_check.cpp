@@ -1298,6 +1298,49 @@ TEST(StabilityLoopCheck, HiddenModeByHand) {
   EXPECT_THROW(check_certificate(beside), InputError);
 }
 
+// Continuous blocks (a device, an operator, by name): charpoly(A_h) = s^k q, q not Hurwitz (Cayley map and
+// Schur-Cohn). A device d, ss A = [[-10, 0, 0], [0, 0, 1], [0, a, c]], B = (1, 0, 0)', C = (1, 0, 0): rows 2
+// and 3 are uncontrollable, A_h = [[0, 1], [a, c]]: a = -4, c = 0 (s = +-2j, on the axis: after the hold on
+// the unit circle) and a = 4 (s = +-2) verified; c = -1 (damped) refuted; a = 0, c = 0 (s^2: a double zero,
+// no other root) refuted (not shown). An ss operator (A = diag(-1, 1), B = (1, 0)', C = (1, 1)): s = 1
+// uncontrollable, verified by its name.
+TEST(StabilityLoopCheck, HiddenModeOfContinuousBlocksByHand) {
+  auto device = [](const std::string& a, const std::string& c, const std::string& name) {
+    const std::string scene = "[scene]\nT = \"1/1000\"\n[[device]]\nname = \"d\"\nss = { A = [[\"-10\", \"0\", \"0\"], [\"0\", \"0\", \"1\"], "
+                              "[\"0\", \"" + a + "\", \"" + c + "\"]], B = [[\"1\"], [\"0\"], [\"0\"]], C = [[\"1\", \"0\", \"0\"]], D = [[\"0\"]] }\n"
+                              "passive = false\n[environment]\ntf = \"2000\"\n";
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop"},
+                          {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                          {"claim", {{"status", "exact"}, {"stable", false}}},
+                          {"evidence", {{"hidden", {{"block", "device"}, {"name", name}, {"kind", "uncontrollable"},
+                                                    {"basis", mat({{"0", "1", "0"}, {"0", "0", "1"}})},
+                                                    {"A_h", mat({{"0", "1"}, {a, c}})}}}}}};
+  };
+  for (const auto& [a, c] : std::vector<std::pair<std::string, std::string>>{{"-4", "0"}, {"4", "0"}}) {
+    const auto v = check_certificate(device(a, c, "d"));
+    EXPECT_TRUE(v.verified) << a << ": " << v.reason;
+    EXPECT_NE(v.reason.find("Hurwitz"), std::string::npos) << v.reason;
+  }
+  EXPECT_FALSE(check_certificate(device("-4", "-1", "d")).verified);
+  EXPECT_FALSE(check_certificate(device("0", "0", "d")).verified);
+  EXPECT_THROW(check_certificate(device("-4", "0", "e")), InputError);  // no such device
+  auto no_name = device("-4", "0", "d");
+  no_name["evidence"]["hidden"].erase("name");
+  EXPECT_THROW(check_certificate(no_name), InputError);
+  const std::string scene = "[scene]\nT = \"1/1000\"\n[[device]]\nname = \"d\"\nm = \"1\"\nb = \"30\"\n[[operator]]\nname = \"hand\"\n"
+                            "dofs = [\"d\"]\nss = { A = [[\"-1\", \"0\"], [\"0\", \"1\"]], B = [[\"1\"], [\"0\"]], C = [[\"1\", \"1\"]], "
+                            "D = [[\"2\"]] }\n[environment]\ntf = \"2000\"\n";
+  nlohmann::json op{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop"},
+                    {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                    {"claim", {{"status", "exact"}, {"stable", false}}},
+                    {"evidence", {{"hidden", {{"block", "operator"}, {"name", "hand"}, {"kind", "uncontrollable"},
+                                              {"basis", mat({{"0", "1"}})}, {"A_h", mat({{"1"}})}}}}}};
+  const auto v = check_certificate(op);
+  EXPECT_TRUE(v.verified) << v.reason;
+  op["evidence"]["hidden"]["A_h"] = mat({{"-1"}});
+  EXPECT_FALSE(check_certificate(op).verified);
+}
+
 // Conserved quantities (check/stability_loop_check.hpp), by hand: the loop above with an operator
 // spring k = 10 written as m, b, k (states v, x) and as tf "10/s" or ss (a third state zeta, zeta' =
 // v, force 10 zeta): zeta - x is constant, l = (0, -1, 1), and on the quotient zeta = x, so M11 is

@@ -226,6 +226,36 @@ class StabilityLoop(unittest.TestCase):
     [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""
     P = [["-1461/800", "29/40"], ["29/40", "-229/2"]]
 
+    def test_hidden_mode_of_continuous_blocks_by_hand(self):
+        # test_check.cpp's StabilityLoopCheck.HiddenModeOfContinuousBlocksByHand: A_h = [[0, 1], [a, c]] hidden in
+        # an ss device: +-2j and +-2 verified, damped and s^2 refuted; an ss operator's uncontrollable s = 1
+        def device(a, c, name="d"):
+            scene = ('[scene]\nT = "1/1000"\n[[device]]\nname = "d"\nss = { A = [["-10", "0", "0"], ["0", "0", "1"], '
+                     '["0", "%s", "%s"]], B = [["1"], ["0"], ["0"]], C = [["1", "0", "0"]], D = [["0"]] }\npassive = false\n'
+                     '[environment]\ntf = "2000"\n' % (a, c))
+            return {"certificate": "hapstab", "version": 1, "kind": "stability-loop", "model": {"scene": scene, "set": {}},
+                    "claim": {"status": "exact", "stable": False},
+                    "evidence": {"hidden": {"block": "device", "name": name, "kind": "uncontrollable",
+                                            "basis": [["0", "1", "0"], ["0", "0", "1"]], "A_h": [["0", "1"], [a, c]]}}}
+        for a in ("-4", "4"):
+            code, why = hc.check(device(a, "0"))
+            self.assertEqual(code, 0, why)
+            self.assertIn("Hurwitz", why)
+        self.assertEqual(hc.check(device("-4", "-1"))[0], 1)
+        self.assertEqual(hc.check(device("0", "0"))[0], 1)
+        self.assertEqual(hc.check(device("-4", "0", "e"))[0], 2)
+        c = device("-4", "0")
+        del c["evidence"]["hidden"]["name"]
+        self.assertEqual(hc.check(c)[0], 2)
+        scene = ('[scene]\nT = "1/1000"\n[[device]]\nname = "d"\nm = "1"\nb = "30"\n[[operator]]\nname = "hand"\ndofs = ["d"]\n'
+                 'ss = { A = [["-1", "0"], ["0", "1"]], B = [["1"], ["0"]], C = [["1", "1"]], D = [["2"]] }\n[environment]\ntf = "2000"\n')
+        op = {"certificate": "hapstab", "version": 1, "kind": "stability-loop", "model": {"scene": scene, "set": {}},
+              "claim": {"status": "exact", "stable": False},
+              "evidence": {"hidden": {"block": "operator", "name": "hand", "kind": "uncontrollable", "basis": [["0", "1"]], "A_h": [["1"]]}}}
+        self.assertEqual(hc.check(op)[0], 0)
+        op["evidence"]["hidden"]["A_h"] = [["-1"]]
+        self.assertEqual(hc.check(op)[0], 1)
+
     def test_hidden_mode_by_hand(self):
         # test_check.cpp's StabilityLoopCheck.HiddenModeByHand: a wall with an ss coupling A = diag(1/2, a),
         # B = (1/10000, b)', C = (1, c); b = 0: W = (0, 1) uncontrollable, A_h = a; c = 0: V = (0, 1)' unobservable

@@ -20,6 +20,7 @@
 #include "hapstab/numeric/shared_decimal.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
+#include "hapstab/sim/loop.hpp"
 #include "hapstab/stability/max_evidence.hpp"
 
 namespace hapstab::cli {
@@ -677,29 +678,36 @@ std::optional<std::pair<MatQ, MatQ>> hidden_subspace(const StateSpace<rational>&
 
 }  // namespace
 
-std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text, const rational& T,
-                                                      const std::optional<StateSpace<rational>>& environment,
-                                                      const std::optional<StateSpace<rational>>& coupling) {
-  for (const auto& [block, ss] : {std::pair<const char*, const std::optional<StateSpace<rational>>*>{"environment", &environment},
-                                  {"coupling", &coupling}}) {
-    if (!*ss || (*ss)->A.rows() == 0) continue;
+std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text, const rational& T, const sim::LoopSpec& spec) {
+  struct Candidate {
+    std::string block, name;  ///< name: devices and operators only
+    const StateSpace<rational>* ss;
+  };
+  std::vector<Candidate> blocks;
+  if (spec.environment) blocks.push_back({"environment", "", &*spec.environment});
+  if (spec.coupling) blocks.push_back({"coupling", "", &*spec.coupling});
+  for (const auto& d : spec.devices) blocks.push_back({"device", d.name, &d.G});
+  for (const auto& o : spec.operators) blocks.push_back({"operator", o.name, &o.Z});
+  for (const Candidate& b : blocks) {
+    if (b.ss->A.rows() == 0) continue;
     for (const bool unobservable : {false, true}) {
-      const auto h = hidden_subspace(**ss, unobservable);
+      const auto h = hidden_subspace(*b.ss, unobservable);
       if (!h) continue;
       nlohmann::json j = certificate_header("stability-loop");
       j["model"] = loop_model_json(text, T);
-      j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop as written: NOT stable by a mode its " + std::string(block) +
-                                     " hides (no interconnection moves it)"},
+      j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop as written: NOT stable by a mode its " + b.block +
+                                     (b.name.empty() ? std::string() : " '" + b.name + "'") + " hides (no interconnection moves it)"},
                     {"stable", false},
                     {"status", "exact"}};
-      j["evidence"] = {{"hidden",
-                        {{"block", block},
-                         {"kind", unobservable ? "unobservable" : "uncontrollable"},
-                         {"basis", matrix_json(h->first)},
-                         {"A_h", matrix_json(h->second)}}}};
+      nlohmann::json hidden{{"block", b.block},
+                            {"kind", unobservable ? "unobservable" : "uncontrollable"},
+                            {"basis", matrix_json(h->first)},
+                            {"A_h", matrix_json(h->second)}};
+      if (b.block == "device" || b.block == "operator") hidden["name"] = b.name;
+      j["evidence"] = {{"hidden", hidden}};
       try {
         if (check::check_certificate(j).verified) return j;
-      } catch (const InputError&) {  // the checker reads this block otherwise (tf): the closed-loop matrix's kind
+      } catch (const InputError&) {  // the checker reads this block otherwise (tf, m and b): the closed-loop matrix's kind
       }
     }
   }

@@ -17,6 +17,7 @@
 #include "hapstab/contact/limit_cycle.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
+#include "hapstab/sim/loop.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
@@ -104,14 +105,13 @@ bool beyond_stability_kind(const stability::Loop& loop);
 /// when the checker does not take the model or no P proves the verdict.
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable);
 
-/// NOT stable by a hidden mode (kind stability-loop, claim exact, evidence.hidden): an ss environment or
-/// coupling of the loop as written whose unobservable subspace (ker of the observability matrix; A_h the
-/// restriction, A V = V A_h) or uncontrollable one (rows W, W A = A_h W) carries an eigenvalue != 1 with
-/// |z| >= 1 (check/stability_loop_check.hpp). The first such block and kind that the checker verifies;
-/// nullopt where none (a tf block, a continuous one: the caller falls back on the closed-loop matrix).
-std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text, const rational& T,
-                                                      const std::optional<StateSpace<rational>>& environment,
-                                                      const std::optional<StateSpace<rational>>& coupling);
+/// NOT stable by a hidden mode (kind stability-loop, claim exact, evidence.hidden): a block of the loop as
+/// written -- an ss environment or coupling, an ss device or operator (by name) -- whose unobservable
+/// subspace (ker of the observability matrix; A_h the restriction, A V = V A_h) or uncontrollable one
+/// (rows W, W A = A_h W) carries an eigenvalue != 1 with |z| >= 1 (discrete), or != 0 with Re s >= 0
+/// (continuous) (check/stability_loop_check.hpp). The first such block and kind that the checker
+/// verifies; nullopt where none (a tf block, a mass-damper: the caller falls back on the closed-loop matrix).
+std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text, const rational& T, const sim::LoopSpec& spec);
 
 /// The certificate of `stability --plant --H --max K` (check/stability_max_check.hpp): the model as
 /// written with K free, the claim as printed (the enclosure at digits + 3 rounded outward, the exact

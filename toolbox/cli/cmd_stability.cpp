@@ -249,7 +249,7 @@ int run_scene(const StabilityOpts& o) {
     if (!certificate.is_null() && *v.stable != certificate["claim"]["stable"].get<bool>())
       throw NumericalError("--certificate: the loop as written and its one-DOF loop got different verdicts (a defect): no certificate");
     if (certificate.is_null() && !*v.stable && v.path == "hidden_modes")  // exact: the hidden subspace, not M
-      if (auto h = cli::hidden_mode_certificate({"", "", "", 0, o.sets, o.scene}, sc.T, sc.loop.environment, sc.loop.coupling))
+      if (auto h = cli::hidden_mode_certificate({"", "", "", 0, o.sets, o.scene}, sc.T, sc.loop))
         certificate = *h;
     if (certificate.is_null()) try {
         certificate = cli::stability_loop_certificate({"", "", "", 0, o.sets, o.scene}, sc.T, *v.stable);

@@ -580,6 +580,7 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
     only_keys(d, {"name", "m", "b", "tf", "ss", "passive"}, key);
     SceneLoop::Device dev;
     dev.first = out.mass.size();
+    dev.name = d.get("name") && d.get("name")->as_string() ? d.get("name")->as_string()->get() : "";
     if (d.contains("tf") || d.contains("ss")) {
       if (d.contains("m") || d.contains("b")) malformed(key, "give either m, b or tf/ss, not both");
       read_device_block(d, key, p, T, dev);
@@ -596,8 +597,7 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
       out.damping.push_back(0);
       out.stiffness.push_back(0);
     }
-    const std::string name = d.get("name") && d.get("name")->as_string() ? d.get("name")->as_string()->get() : "";
-    for (size_t j = 0; j < dev.dofs; ++j) names.push_back(dev.dofs == 1 ? name : "");  // a block of several DOFs: by number
+    for (size_t j = 0; j < dev.dofs; ++j) names.push_back(dev.dofs == 1 ? dev.name : "");  // a block of several DOFs: by number
     out.devices.push_back(std::move(dev));
   }
   if (names.size() > 64) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than 64");

@@ -60,6 +60,7 @@ struct SceneLoop {
   /// A device: a mass-damper (one DOF, its m and b in mass, damping), or a block (ss as written, or
   /// tf: the transfer matrix, realised by the checker) on `dofs` DOFs from `first`.
   struct Device {
+    std::string name;  ///< the table's name ("" when it has none)
     size_t first = 0, dofs = 1;
     bool block = false;
     Matrix A, B, C;                                           ///< ss

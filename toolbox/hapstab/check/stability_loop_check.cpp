@@ -464,41 +464,82 @@ SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits) {
 
 namespace {
 
-// NOT stable by a hidden mode of a discrete block written as ss (header): evidence.hidden {block,
-// kind, basis, A_h}. The block's (A, B, C) as the checker reads it; unobservable: basis Vb (n x r),
-// C Vb = 0, A Vb = Vb A_h; uncontrollable: basis Wb (r x n), Wb B = 0, Wb A = A_h Wb; the basis of
-// full rank r (its Gram matrix regular); charpoly(A_h) = (z - 1)^k q(z), q(1) != 0, q not Schur
-// stable: an eigenvalue lambda != 1 of M with |lambda| >= 1.
+// Every root of p in Re s < 0, by the Cayley map z = (1 + s)/(1 - s), which takes Re s < 0 onto |z| < 1:
+// p(1) = 0 is a root at s = 1 (not); else q(z) = (z + 1)^d p((z - 1)/(z + 1)) = sum p_k (z - 1)^k (z + 1)^(d - k)
+// has degree d (its leading coefficient is p(1)) and its roots are the images of p's: Schur-Cohn on q.
+SchurCohn hurwitz(const P& p) {
+  if (p(rational(1)).is_zero()) return {false, "a root at s = 1"};
+  const int d = p.degree();
+  const P zm1{rational(-1), rational(1)}, zp1{rational(1), rational(1)};
+  P q;
+  for (int k = 0; k <= d; ++k) {
+    P term(p.coeff(k));
+    for (int i = 0; i < k; ++i) term = term * zm1;
+    for (int i = k; i < d; ++i) term = term * zp1;
+    q = q + term;
+  }
+  return schur_cohn(q);
+}
+
+// NOT stable by a hidden mode of a block written as ss (header): evidence.hidden {block, [name,] kind,
+// basis, A_h}. The block's (A, B, C) as the checker reads it; unobservable: basis Vb (n x r), C Vb = 0,
+// A Vb = Vb A_h; uncontrollable: basis Wb (r x n), Wb B = 0, Wb A = A_h Wb; the basis of full rank r (its
+// Gram matrix regular). Discrete (environment, coupling): charpoly(A_h) = (z - 1)^k q(z), q(1) != 0, q not
+// Schur stable. Continuous (a device, an operator): charpoly(A_h) = s^k q(s), q(0) != 0, q not Hurwitz:
+// a root lambda != 0 with Re lambda >= 0, so e^{lambda T} has |.| >= 1 and is not 1 (lambda T = 2 pi j m
+// is impossible for an algebraic lambda != 0 and a rational T: pi is transcendental). Either way M has
+// an eigenvalue != 1 with |z| >= 1.
 Verdict hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h) {
   using namespace rational_matrix;
   if (!h.is_object()) throw InputError("evidence.hidden: not an object");
-  detail::only_fields(h, {"block", "kind", "basis", "A_h"}, "evidence.hidden");
   const auto text = [&](const char* key) {
     if (!h.contains(key) || !h.at(key).is_string()) throw InputError(std::string("evidence.hidden.") + key + ": missing or not a string");
     return h.at(key).get<std::string>();
   };
   const std::string block = text("block"), kind = text("kind");
-  if (block != "environment" && block != "coupling") throw InputError("evidence.hidden.block: \"environment\" or \"coupling\", got \"" + block + "\"");
+  const bool named = block == "device" || block == "operator";
+  if (named) detail::only_fields(h, {"block", "name", "kind", "basis", "A_h"}, "evidence.hidden");
+  else detail::only_fields(h, {"block", "kind", "basis", "A_h"}, "evidence.hidden");
   if (kind != "unobservable" && kind != "uncontrollable")
     throw InputError("evidence.hidden.kind: \"unobservable\" or \"uncontrollable\", got \"" + kind + "\"");
-  const detail::SceneLoop::Discrete* d = block == "environment" ? &L.E : (L.V ? &*L.V : nullptr);
-  if (!d) throw InputError("evidence.hidden.block: the scene has no [coupling]");
-  if (!d->is_ss)
-    throw InputError("evidence.hidden.block: the " + block + " is written as tf (its realisation is the checker's own): a hidden "
-                     "mode is certified of an ss block as written");
+  const Mat *A = nullptr, *B = nullptr, *C = nullptr;
+  std::string what = block;
+  if (block == "environment" || block == "coupling") {
+    const detail::SceneLoop::Discrete* d = block == "environment" ? &L.E : (L.V ? &*L.V : nullptr);
+    if (!d) throw InputError("evidence.hidden.block: the scene has no [coupling]");
+    if (!d->is_ss)
+      throw InputError("evidence.hidden.block: the " + block + " is written as tf (its realisation is the checker's own): a hidden "
+                       "mode is certified of an ss block as written");
+    A = &d->A, B = &d->B, C = &d->C;
+  } else if (named) {
+    const std::string name = text("name");
+    what = block + " '" + name + "'";
+    if (block == "device") {
+      for (const auto& dv : L.devices)
+        if (dv.block && dv.tf.empty() && dv.name == name) A = &dv.A, B = &dv.B, C = &dv.C;
+    } else {
+      for (const auto& op : L.operators)
+        if (op.is_ss && op.name == name) A = &op.A, B = &op.B, C = &op.C;
+    }
+    if (!A) throw InputError("evidence.hidden.name: no " + block + " named '" + name + "' given by ss in the scene");
+  } else {
+    throw InputError("evidence.hidden.block: \"environment\", \"coupling\", \"device\" or \"operator\", got \"" + block + "\"");
+  }
+  const bool continuous = named;
   const Mat basis = detail::exact_matrix(h, "basis", "evidence.hidden", kMaxOrder);
   const Mat Ah = detail::exact_matrix(h, "A_h", "evidence.hidden", kMaxOrder);
-  const size_t n = d->A.size(), r = Ah.size();
+  const size_t n = A->size(), r = Ah.size();
   const bool unobs = kind == "unobservable";
+  if (n == 0) throw InputError("evidence.hidden: the " + what + " has no state");
   if (r == 0 || Ah[0].size() != r) throw InputError("evidence.hidden.A_h: empty or not square");
   if (unobs ? (basis.size() != n || basis[0].size() != r) : (basis.size() != r || basis[0].size() != n))
     throw InputError("evidence.hidden.basis: must be " + (unobs ? std::to_string(n) + " x " + std::to_string(r) : std::to_string(r) + " x " + std::to_string(n)) +
-                     " (the " + block + "'s " + std::to_string(n) + " states, A_h's order " + std::to_string(r) + ")");
-  const Mat zero_out = unobs ? mul(d->C, basis) : mul(basis, d->B);
+                     " (the " + what + "'s " + std::to_string(n) + " states, A_h's order " + std::to_string(r) + ")");
+  const Mat zero_out = unobs ? mul(*C, basis) : mul(basis, *B);
   for (const auto& row : zero_out)
     for (const rational& x : row)
       if (!x.is_zero()) return {false, std::string("evidence.hidden: ") + (unobs ? "C basis != 0 (the output shows it)" : "basis B != 0 (the input reaches it)")};
-  const Mat lhs = unobs ? mul(d->A, basis) : mul(basis, d->A), rhs = unobs ? mul(basis, Ah) : mul(Ah, basis);
+  const Mat lhs = unobs ? mul(*A, basis) : mul(basis, *A), rhs = unobs ? mul(basis, Ah) : mul(Ah, basis);
   if (lhs != rhs) return {false, std::string("evidence.hidden: ") + (unobs ? "A basis != basis A_h" : "basis A != A_h basis") + " (not an invariant subspace with A_h)"};
   const Mat gram = unobs ? mul(transpose(basis), basis) : mul(basis, transpose(basis));
   if (det(gram).is_zero()) return {false, "evidence.hidden.basis: not of full rank " + std::to_string(r)};
@@ -511,16 +552,19 @@ Verdict hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h)
   }
   P q = interpolate(xs, ys);
   long k1 = 0;
-  const P z_minus_1{rational(-1), rational(1)};
-  while (q.degree() > 0 && q(rational(1)).is_zero()) q = divmod(q, z_minus_1).first, ++k1;
-  const SchurCohn sc = schur_cohn(q);
+  const rational marginal = continuous ? rational(0) : rational(1);  // the eigenvalue that may settle
+  const P x_minus{-marginal, rational(1)};
+  while (q.degree() > 0 && q(marginal).is_zero()) q = divmod(q, x_minus).first, ++k1;
+  const SchurCohn sc = continuous ? hurwitz(q) : schur_cohn(q);
+  const std::string var = continuous ? "s" : "(z - 1)";
   if (sc.stable)
-    return {false, "evidence.hidden: every eigenvalue of A_h other than z = 1 lies inside the unit circle (" + sc.why +
-                       "): no eigenvalue of the loop with |z| >= 1, z != 1, shown"};
-  return {true, "NOT stable [exact]: the " + block + " (ss as written) hides an " + kind + " subspace of dimension " +
+    return {false, "evidence.hidden: every eigenvalue of A_h other than " + std::string(continuous ? "s = 0" : "z = 1") + " lies in " +
+                       (continuous ? "Re s < 0" : "the unit disc") + " (" + sc.why + "): no eigenvalue of the loop with |z| >= 1, z != 1, shown"};
+  return {true, "NOT stable [exact]: the " + what + " (ss as written) hides an " + kind + " subspace of dimension " +
                     std::to_string(r) + " (" + (unobs ? "C V = 0, A V = V A_h" : "W B = 0, W A = A_h W") +
-                    ", exactly), an invariant subspace of the loop's M whatever the rest does; charpoly(A_h) = (z - 1)^" +
-                    std::to_string(k1) + " q(z) with q not Schur stable (" + sc.why + "): M has an eigenvalue lambda != 1 with |lambda| >= 1"};
+                    ", exactly), an invariant subspace of the loop whatever the rest does; charpoly(A_h) = " + var + "^" +
+                    std::to_string(k1) + " q with q not " + (continuous ? "Hurwitz (Cayley map, " : "Schur stable (") + sc.why +
+                    "): M has an eigenvalue lambda != 1 with |lambda| >= 1"};
 }
 
 }  // namespace

@@ -58,6 +58,10 @@
 // L = [0 W 0 ...] has L M = A_h L (W B = 0 cuts the block's input). So eig(A_h) is in eig(M), and a root
 // lambda != 1 of q with |lambda| >= 1 is an eigenvalue of M no conserved quantity (eigenvalue 1)
 // accounts for: NOT stable, on the circle too, where Stein cannot certify. No M in balls is needed.
+// Continuous blocks (block "device" or "operator" with its name, written as ss): the same conditions on
+// (A, B, C) as written; det(sI - A_h) = s^k q, q(0) != 0, q not Hurwitz (Cayley map onto the disc, then
+// Schur-Cohn): a root lambda != 0, Re lambda >= 0, is the eigenvalue e^{lambda T} of M after the hold,
+// |.| >= 1 and != 1 (lambda T = 2 pi j m is impossible for algebraic lambda and rational T).
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
