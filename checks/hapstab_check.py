@@ -2986,9 +2986,25 @@ def check_stability_loop(c):
     own = own_conserved(model)
     if len(at) < own:
         raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
+    # the wall's and the coupling's uncontrollable z = 1: l^T (A - I) = 0, l^T B = 0 in their states (left
+    # eigenvectors of M, eigenvalue 1, as the plant's are)
+    N, ns = len(loop[3]), len(A)
+    blocks = [loop[7][1] if loop[7][0] == "ss" else realise_columns(loop[7][1])]
+    if loop[8] is not None:
+        blocks.append(loop[8][1] if loop[8][0] == "ss" else realise_columns(loop[8][1]))
+    nc = ns + sum(len(b[0]) for b in blocks)
+    L = [l + [Fraction(0)] * (nc - ns) for l in L]
+    offset = ns
+    for Ab, Bb, _, _ in blocks:
+        if Ab:
+            Ld, atd = conserved_quantities([[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)], Bb)
+            for l, c in zip(Ld, atd):
+                L.append([Fraction(0)] * offset + l + [Fraction(0)] * (nc - offset - len(l)))
+                at.append(offset + c)
+        offset += len(Ab)
     if len(at) - own != k:
-        return False, ("claim: %d conserved quantities, but the plant has %d (l^T [A B] = 0, exactly: each an "
-                       "eigenvalue 1 of M)" % (k, len(at) - own))
+        return False, ("claim: %d conserved quantities, but the loop has %d (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 "
+                       "of the wall or coupling, exactly: each an eigenvalue 1 of M)" % (k, len(at) - own))
     Pl = evidence.get("P")
     n = len(Pl) if isinstance(Pl, list) else 0
     if n > MAX_LOOP_ORDER:

@@ -1385,7 +1385,7 @@ TEST(StabilityLoopCheck, ConservedQuantitiesByHand) {
     c["claim"]["conserved"] = k;
     const auto r = check_certificate(c);
     EXPECT_FALSE(r.verified) << k;
-    EXPECT_NE(r.reason.find("conserved quantities, but the plant has 1"), std::string::npos) << r.reason;
+    EXPECT_NE(r.reason.find("conserved quantities, but the loop has 1"), std::string::npos) << r.reason;
   }
   cert["claim"].erase("conserved");
   EXPECT_FALSE(check_certificate(cert).verified);

@@ -390,7 +390,7 @@ class StabilityLoop(unittest.TestCase):
             c["claim"]["conserved"] = k
             code, why = hc.check(c)
             self.assertEqual(code, 1, why)
-            self.assertIn("conserved quantities, but the plant has 1", why)
+            self.assertIn("conserved quantities, but the loop has 1", why)
 
 
 def frac_cert(H, T, td, claim, witness, c_lo=None):

@@ -204,17 +204,18 @@ BallRows product(const BallRows& X, const BallRows& Y) {
 
 // The conserved quantities of the plant: a basis of {l : l^T [A B] = 0} in reduced echelon form,
 // l_i = 1 at its own index c_i and 0 at the others' (c_i: the free columns of [A B]^T's echelon form).
+// A discrete block's (header): the same of [A - I, B], its uncontrollable z = 1.
 struct Conserved {
   Mat L;                     // k x ns
   std::vector<size_t> at;    // c_1 < ... < c_k
 };
 
-Conserved conserved_quantities(const Plant& pl) {
-  const size_t ns = pl.A.size(), N = pl.B.empty() ? 0 : pl.B[0].size();
+Conserved conserved_quantities(const Mat& A, const Mat& B) {
+  const size_t ns = A.size(), N = B.empty() ? 0 : B[0].size();
   Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
   for (size_t i = 0; i < ns; ++i) {
-    for (size_t j = 0; j < ns; ++j) K[j][i] = pl.A[i][j];
-    for (size_t j = 0; j < N; ++j) K[ns + j][i] = pl.B[i][j];
+    for (size_t j = 0; j < ns; ++j) K[j][i] = A[i][j];
+    for (size_t j = 0; j < N; ++j) K[ns + j][i] = B[i][j];
   }
   std::vector<size_t> pivot_col;  // reduced row echelon form of K, exactly
   size_t row = 0;
@@ -364,9 +365,21 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     for (size_t j = 0; j < nc; ++j) M[ns + i][j] = flint::Ball(BX[i][j] + (j >= ns && j < ns + nE ? E.A[i][j - ns] : rational(0)));
   for (size_t i = 0; i < nV; ++i)
     for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = flint::Ball(BF[i][j] + (j >= ns + nE ? V.A[i][j - ns - nE] : rational(0)));
-  const Conserved q = conserved_quantities(pl);
+  Conserved q = conserved_quantities(pl.A, pl.B);
   if (q.at.size() < L.own_conserved)
     throw NumericalError("model.plant: the integrated position carries no conserved quantity (a checker defect)");
+  for (auto& l : q.L) l.resize(nc, rational(0));
+  // the wall's and the coupling's uncontrollable z = 1 (header): l^T (A - I) = 0, l^T B = 0, in their states
+  for (const auto& [R, at] : {std::pair<const Realisation*, size_t>{&E, ns}, {&V, ns + nE}}) {
+    if (R->A.empty()) continue;
+    const Conserved d = conserved_quantities(rational_matrix::add(R->A, rational_matrix::identity(R->A.size()), -1), R->B);
+    for (size_t i = 0; i < d.at.size(); ++i) {
+      std::vector<rational> l(nc, rational(0));
+      for (size_t j = 0; j < d.L[i].size(); ++j) l[at + j] = d.L[i][j];
+      q.L.push_back(std::move(l));
+      q.at.push_back(at + d.at[i]);
+    }
+  }
   return {reduced(M, q), q.at.size() - L.own_conserved, order};
 }
 
@@ -610,8 +623,9 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
     flint::BallPrecision scope(bits);
     const LoopMatrix lm = loop_matrix(L, bits);
     if (static_cast<long>(lm.conserved) != conserved)
-      return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the plant has " +
-                         std::to_string(lm.conserved) + " (l^T [A B] = 0, exactly: each an eigenvalue 1 of M)"};
+      return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the loop has " +
+                         std::to_string(lm.conserved) + " (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 of the wall or coupling, "
+                         "exactly: each an eigenvalue 1 of M)"};
     const BallRows& M = lm.M;
     if (M.size() != Pm.size())
       throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +

@@ -46,6 +46,11 @@
 // adds one conserved quantity of the checker's own (x - K xi, K A_G = C_G, K B_G = 0, as G(0) = 0),
 // and its quotient sets x = K xi, P's own output: the loop as written. It is set aside and not
 // counted in claim.conserved.
+// The wall's and the coupling's uncontrollable z = 1 (a constant the block hides: l^T (A - I) = 0, l^T B =
+// 0 in its states, as realised here) is one too: (l^T xi)+ = l^T A xi + l^T B x_e = l^T xi, so L = [0 l 0
+// ...] has L M = L, a left eigenvector of M like the plant's; each is counted in claim.conserved and set
+// aside by the same quotient (a semisimple z = 1 that settles, as `stability` says). An unobservable z = 1
+// (a right eigenvector) is not.
 // The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
 // eigenvalues of M here; a Stein certificate exists only where they are off the circle (other than the
 // conserved quantities), and then they are part of M.
