@@ -2859,6 +2859,32 @@ def conserved_quantities(A, B):
     return L, at
 
 
+def right_quotient(M, R):
+    """M on the quotient by right eigenvectors r_j (M r_j = r_j; rows of R), in reduced echelon form first (r_j 1
+    at its own c_j, 0 at the others'): the induced map on the other coordinates is M[a][b] - sum_j r_j[a] M[c_j][b]."""
+    R = [list(r) for r in R]
+    n, at, row = len(M), [], 0
+    for c in range(n):
+        if row == len(R):
+            break
+        p = next((i for i in range(row, len(R)) if R[i][c] != 0), None)
+        if p is None:
+            continue
+        R[row], R[p] = R[p], R[row]
+        piv = R[row][c]
+        R[row] = [x / piv for x in R[row]]
+        for i in range(len(R)):
+            if i != row and R[i][c] != 0:
+                f = R[i][c]
+                R[i] = [x - f * y for x, y in zip(R[i], R[row])]
+        at.append(c)
+        row += 1
+    if row != len(R):
+        raise AssertionError("the right eigenvectors are dependent (a checker defect)")
+    kept = [i for i in range(n) if i not in at]
+    return [[M[a][b] - sum((Iv(R[j][a]) * M[c][b] for j, c in enumerate(at) if R[j][a]), Iv(0)) for b in kept] for a in kept]
+
+
 def quotient(M, L, at):
     """M on the quotient by the conserved quantities: x_c = -L[:, kept] x_kept, so M11 = M[kept, kept]
     - M[kept, c] L[:, kept] (L zero beyond the plant's states)."""
@@ -2994,17 +3020,22 @@ def check_stability_loop(c):
         blocks.append(loop[8][1] if loop[8][0] == "ss" else realise_columns(loop[8][1]))
     nc = ns + sum(len(b[0]) for b in blocks)
     L = [l + [Fraction(0)] * (nc - ns) for l in L]
-    offset = ns
-    for Ab, Bb, _, _ in blocks:
+    offset, right = ns, []
+    for Ab, Bb, Cb, _ in blocks:
         if Ab:
-            Ld, atd = conserved_quantities([[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)], Bb)
+            AmI = [[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)]
+            Ld, atd = conserved_quantities(AmI, Bb)
             for l, c in zip(Ld, atd):
                 L.append([Fraction(0)] * offset + l + [Fraction(0)] * (nc - offset - len(l)))
                 at.append(offset + c)
+            # and its unobservable z = 1 outside those: (A - I) r = 0, C r = 0, l^T r = 0 (right eigenvectors of M)
+            cols = [[Cb[i][j] for i in range(len(Cb))] + [l[j] for l in Ld] for j in range(len(Ab))]
+            Rd, _ = conserved_quantities(mT(AmI), cols)
+            right += [(offset, r) for r in Rd]
         offset += len(Ab)
-    if len(at) - own != k:
+    if len(at) + len(right) - own != k:
         return False, ("claim: %d conserved quantities, but the loop has %d (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 "
-                       "of the wall or coupling, exactly: each an eigenvalue 1 of M)" % (k, len(at) - own))
+                       "of the wall or coupling, exactly: each an eigenvalue 1 of M)" % (k, len(at) + len(right) - own))
     Pl = evidence.get("P")
     n = len(Pl) if isinstance(Pl, list) else 0
     if n > MAX_LOOP_ORDER:
@@ -3026,6 +3057,14 @@ def check_stability_loop(c):
         sign = "w^T P w < 0"
     for bits in (128, 256, 512):
         M = quotient(loop_matrix(loop, bits), L, at)
+        if right:  # on the quotient's coordinates (those not in `at`), then by the right eigenvectors
+            full = len(M) + len(at)
+            R = []
+            for off, r in right:
+                v = [Fraction(0)] * full
+                v[off:off + len(r)] = r
+                R.append([x for i, x in enumerate(v) if i not in at])
+            M = right_quotient(M, R)
         if len(M) != n:
             raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if at else ""))
         PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]

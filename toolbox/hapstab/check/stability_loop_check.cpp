@@ -270,6 +270,45 @@ BallRows reduced(const BallRows& M, const Conserved& q) {
   return R;
 }
 
+// M on the quotient by right eigenvectors r_j (M r_j = r_j; rows of `R`, independent), in reduced echelon
+// form first (r_j 1 at its own c_j, 0 at the others'): pi(x) = x - sum_j x_{c_j} r_j kills span{r_j}, and
+// the induced map on the other coordinates is M[a][b] - sum_j r_j[a] M[c_j][b] (well defined: pi M r_j = 0).
+BallRows right_reduced(const BallRows& M, Mat R) {
+  const size_t n = M.size();
+  std::vector<size_t> at;
+  size_t row = 0;
+  for (size_t c = 0; c < n && row < R.size(); ++c) {
+    size_t r = row;
+    while (r < R.size() && R[r][c] == 0) ++r;
+    if (r == R.size()) continue;
+    std::swap(R[r], R[row]);
+    const rational piv = R[row][c];
+    for (auto& x : R[row]) x /= piv;
+    for (size_t i = 0; i < R.size(); ++i)
+      if (i != row && R[i][c] != 0) {
+        const rational f = R[i][c];
+        for (size_t j = 0; j < n; ++j) R[i][j] -= f * R[row][j];
+      }
+    at.push_back(c);
+    ++row;
+  }
+  if (row != R.size()) throw NumericalError("the right eigenvectors are dependent (a checker defect)");
+  std::vector<bool> gone(n, false);
+  for (size_t c : at) gone[c] = true;
+  std::vector<size_t> kept;
+  for (size_t i = 0; i < n; ++i)
+    if (!gone[i]) kept.push_back(i);
+  BallRows out = zero_balls(kept.size(), kept.size());
+  for (size_t a = 0; a < kept.size(); ++a)
+    for (size_t b = 0; b < kept.size(); ++b) {
+      flint::Ball x = M[kept[a]][kept[b]];
+      for (size_t j = 0; j < at.size(); ++j)
+        if (R[j][kept[a]] != 0) x -= flint::Ball(R[j][kept[a]]) * M[at[j]][kept[b]];
+      out[a][b] = x;
+    }
+  return out;
+}
+
 // M of the header at the thread's ball precision.
 // (Phi_h, Gamma_h): [Phi Gamma; 0 I] = exp([A B; 0 0] h), Arb's arb_mat_exp.
 std::pair<BallRows, BallRows> hold(const Mat& A, const Mat& Bu, const rational& h, long bits) {
@@ -370,17 +409,44 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     throw NumericalError("model.plant: the integrated position carries no conserved quantity (a checker defect)");
   for (auto& l : q.L) l.resize(nc, rational(0));
   // the wall's and the coupling's uncontrollable z = 1 (header): l^T (A - I) = 0, l^T B = 0, in their states
+  // and their unobservable z = 1 outside those: r with (A - I) r = 0, C r = 0, l^T r = 0 for the block's l
+  // (right eigenvectors of M, eigenvalue 1: C r = 0 keeps the force and x_e at 0)
+  Mat right;  // rows: r over M's states
   for (const auto& [R, at] : {std::pair<const Realisation*, size_t>{&E, ns}, {&V, ns + nE}}) {
     if (R->A.empty()) continue;
-    const Conserved d = conserved_quantities(rational_matrix::add(R->A, rational_matrix::identity(R->A.size()), -1), R->B);
+    const size_t nb = R->A.size();
+    const Mat AmI = rational_matrix::add(R->A, rational_matrix::identity(nb), -1);
+    const Conserved d = conserved_quantities(AmI, R->B);
     for (size_t i = 0; i < d.at.size(); ++i) {
       std::vector<rational> l(nc, rational(0));
       for (size_t j = 0; j < d.L[i].size(); ++j) l[at + j] = d.L[i][j];
       q.L.push_back(std::move(l));
       q.at.push_back(at + d.at[i]);
     }
+    Mat cols = rational_matrix::transpose(R->C);  // {r : r^T [(A - I)^T, C^T, L_block^T] = 0}
+    for (const auto& l : d.L)
+      for (size_t j = 0; j < nb; ++j) cols[j].push_back(l[j]);
+    const Conserved r = conserved_quantities(rational_matrix::transpose(AmI), cols);
+    for (const auto& v : r.L) {
+      std::vector<rational> full(order, rational(0));
+      for (size_t j = 0; j < nb; ++j) full[at + j] = v[j];
+      right.push_back(std::move(full));
+    }
   }
-  return {reduced(M, q), q.at.size() - L.own_conserved, order};
+  BallRows M11 = reduced(M, q);
+  if (!right.empty()) {  // on M11's coordinates (the kept ones), renormalised, then the quotient by them
+    std::vector<bool> gone(order, false);
+    for (size_t c : q.at) gone[c] = true;
+    Mat kept_rows;
+    for (const auto& r : right) {
+      std::vector<rational> k;
+      for (size_t i = 0; i < order; ++i)
+        if (!gone[i]) k.push_back(r[i]);
+      kept_rows.push_back(std::move(k));
+    }
+    M11 = right_reduced(M11, kept_rows);
+  }
+  return {M11, q.at.size() + right.size() - L.own_conserved, order};
 }
 
 // Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
