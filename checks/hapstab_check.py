@@ -2829,13 +2829,12 @@ def loop_matrix(loop, bits):
     return M
 
 
-def conserved_quantities(A, B):
-    """A basis of {l : l^T [A B] = 0} (exact), each l_i = 1 at its own index c_i and 0 at the others':
-    ([l_1, ..., l_k], [c_1, ..., c_k]) from the reduced echelon form of [A B]^T."""
-    ns, N = len(A), (len(B[0]) if B else 0)
-    K = [[A[i][j] for i in range(ns)] for j in range(ns)] + [[B[i][j] for i in range(ns)] for j in range(N)]
+def echelon(K):
+    """K (rows) in reduced row echelon form, exactly, in place: the pivot columns."""
     pivots, row = [], 0
-    for c in range(ns):
+    for c in range(len(K[0]) if K else 0):
+        if row == len(K):
+            break
         r = next((i for i in range(row, len(K)) if K[i][c] != 0), None)
         if r is None:
             continue
@@ -2848,6 +2847,15 @@ def conserved_quantities(A, B):
                 K[i] = [x - f * y for x, y in zip(K[i], K[row])]
         pivots.append(c)
         row += 1
+    return pivots
+
+
+def conserved_quantities(A, B):
+    """A basis of {l : l^T [A B] = 0} (exact), each l_i = 1 at its own index c_i and 0 at the others':
+    ([l_1, ..., l_k], [c_1, ..., c_k]) from the reduced echelon form of [A B]^T."""
+    ns, N = len(A), (len(B[0]) if B else 0)
+    K = [[A[i][j] for i in range(ns)] for j in range(ns)] + [[B[i][j] for i in range(ns)] for j in range(N)]
+    pivots = echelon(K)
     L, at = [], []
     for f in (c for c in range(ns) if c not in pivots):
         l = [Fraction(0)] * ns
@@ -2863,23 +2871,9 @@ def right_quotient(M, R):
     """M on the quotient by right eigenvectors r_j (M r_j = r_j; rows of R), in reduced echelon form first (r_j 1
     at its own c_j, 0 at the others'): the induced map on the other coordinates is M[a][b] - sum_j r_j[a] M[c_j][b]."""
     R = [list(r) for r in R]
-    n, at, row = len(M), [], 0
-    for c in range(n):
-        if row == len(R):
-            break
-        p = next((i for i in range(row, len(R)) if R[i][c] != 0), None)
-        if p is None:
-            continue
-        R[row], R[p] = R[p], R[row]
-        piv = R[row][c]
-        R[row] = [x / piv for x in R[row]]
-        for i in range(len(R)):
-            if i != row and R[i][c] != 0:
-                f = R[i][c]
-                R[i] = [x - f * y for x, y in zip(R[i], R[row])]
-        at.append(c)
-        row += 1
-    if row != len(R):
+    n = len(M)
+    at = echelon(R)
+    if len(at) != len(R):
         raise AssertionError("the right eigenvectors are dependent (a checker defect)")
     kept = [i for i in range(n) if i not in at]
     return [[M[a][b] - sum((Iv(R[j][a]) * M[c][b] for j, c in enumerate(at) if R[j][a]), Iv(0)) for b in kept] for a in kept]

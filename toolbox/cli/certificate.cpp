@@ -381,6 +381,22 @@ nlohmann::json matrix_json(const Mat<rational>& M) {
   return rows;
 }
 
+namespace {
+
+// The claim of Lemma 1's lower bound (check/passivity_level*_check.hpp): "lower_bound", or "bounds" where the
+// frequency value's hi is written beside it; lo as printed (rounded down). `for_what` names what P is of.
+void lemma1_claim(nlohmann::json& claim, bool osp, bool upper, const rational& lower_bound, int digits, const std::string& for_what) {
+  const std::string printed = decimal_outward(lower_bound, digits, -1);
+  claim["quantity"] = std::string(osp ? "delta*" : "phi*") + ", the level of paper 000 Definition 2 by Lemma 1, >= lo" +
+                      (upper ? " and <= hi (the frequency value, not the level here: an OSP value <= 0)" : "") +
+                      ": lo by Lemma 1's LMI (2) at the rounded P" + for_what;
+  claim["status"] = upper ? "bounds" : "lower_bound";
+  claim["lo"] = parse_rational(printed, "lower bound").str();
+  claim["printed_lo"] = printed;
+}
+
+}  // namespace
+
 nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFunction<rational>& G, bool osp,
                                            const lmi::PassivityLevel& c, const lmi::PassivityLevel& l, bool is_level,
                                            bool upper_only, int digits) {
@@ -402,13 +418,7 @@ nlohmann::json passivity_level_certificate(const TfOptions& tf, const RationalFu
   nlohmann::json evidence = nlohmann::json::object();
   rational hi;
   if (lemma1) {  // level >= lo by Lemma 1 at P for G's realisation (tf2ss, the one the LMI solved), lo as printed
-    const std::string printed = decimal_outward(*l.lower_bound, digits, -1);
-    claim["quantity"] = std::string(osp ? "delta*" : "phi*") + ", the level of paper 000 Definition 2 by Lemma 1, >= lo" +
-                        (upper ? " and <= hi (the frequency value, not the level here: an OSP value <= 0)" : "") +
-                        ": lo by Lemma 1's LMI (2) at the rounded P, for the realisation (A, B, C, D) of G in the evidence";
-    claim["status"] = upper ? "bounds" : "lower_bound";
-    claim["lo"] = parse_rational(printed, "lower bound").str();
-    claim["printed_lo"] = printed;
+    lemma1_claim(claim, osp, upper, *l.lower_bound, digits, ", for the realisation (A, B, C, D) of G in the evidence");
     const StateSpace<rational> r = tf2ss(TransferFunction{G, Domain::z, T});
     evidence = {{"A", matrix_json(r.A)}, {"B", matrix_json(r.B)}, {"C", matrix_json(r.C)}, {"D", matrix_json(r.D)},
                 {"P", matrix_json(*l.lemma1_P)}};
@@ -509,13 +519,7 @@ nlohmann::json passivity_level_mimo_certificate(const StateSpace<rational>& sys,
     claim["printed_hi"] = printed;
   };
   if (lemma1) {  // level >= lo by Lemma 1 at P (check/passivity_level_mimo_check.hpp), lo as printed; with hi beside
-    const std::string printed = decimal_outward(*l.lower_bound, digits, -1);
-    claim["quantity"] = std::string(osp ? "delta*" : "phi*") + ", the level of paper 000 Definition 2 by Lemma 1, >= lo" +
-                        (upper ? " and <= hi (the frequency value, not the level here: an OSP value <= 0)" : "") +
-                        ": lo by Lemma 1's LMI (2) at the rounded P";
-    claim["status"] = upper ? "bounds" : "lower_bound";
-    claim["lo"] = parse_rational(printed, "lower bound").str();
-    claim["printed_lo"] = printed;
+    lemma1_claim(claim, osp, upper, *l.lower_bound, digits, "");
     if (upper) put_hi();
   } else if (upper_only) {  // the level <= hi only (check/passivity_level_mimo_check.hpp), hi as printed
     claim["quantity"] = std::string(osp ? "delta*" : "phi*") +

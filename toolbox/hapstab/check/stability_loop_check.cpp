@@ -210,16 +210,12 @@ struct Conserved {
   std::vector<size_t> at;    // c_1 < ... < c_k
 };
 
-Conserved conserved_quantities(const Mat& A, const Mat& B) {
-  const size_t ns = A.size(), N = B.empty() ? 0 : B[0].size();
-  Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
-  for (size_t i = 0; i < ns; ++i) {
-    for (size_t j = 0; j < ns; ++j) K[j][i] = A[i][j];
-    for (size_t j = 0; j < N; ++j) K[ns + j][i] = B[i][j];
-  }
-  std::vector<size_t> pivot_col;  // reduced row echelon form of K, exactly
+// K in reduced row echelon form, exactly, in place: the pivot columns (each pivot 1, the rest of its column 0).
+std::vector<size_t> echelon(Mat& K) {
+  const size_t cols = K.empty() ? 0 : K[0].size();
+  std::vector<size_t> pivot_col;
   size_t row = 0;
-  for (size_t c = 0; c < ns && row < K.size(); ++c) {
+  for (size_t c = 0; c < cols && row < K.size(); ++c) {
     size_t r = row;
     while (r < K.size() && K[r][c] == 0) ++r;
     if (r == K.size()) continue;
@@ -229,11 +225,22 @@ Conserved conserved_quantities(const Mat& A, const Mat& B) {
     for (size_t i = 0; i < K.size(); ++i)
       if (i != row && K[i][c] != 0) {
         const rational f = K[i][c];
-        for (size_t j = c; j < ns; ++j) K[i][j] -= f * K[row][j];
+        for (size_t j = c; j < cols; ++j) K[i][j] -= f * K[row][j];
       }
     pivot_col.push_back(c);
     ++row;
   }
+  return pivot_col;
+}
+
+Conserved conserved_quantities(const Mat& A, const Mat& B) {
+  const size_t ns = A.size(), N = B.empty() ? 0 : B[0].size();
+  Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
+  for (size_t i = 0; i < ns; ++i) {
+    for (size_t j = 0; j < ns; ++j) K[j][i] = A[i][j];
+    for (size_t j = 0; j < N; ++j) K[ns + j][i] = B[i][j];
+  }
+  const std::vector<size_t> pivot_col = echelon(K);
   Conserved out;
   std::vector<bool> is_pivot(ns, false);
   for (size_t c : pivot_col) is_pivot[c] = true;
@@ -275,24 +282,8 @@ BallRows reduced(const BallRows& M, const Conserved& q) {
 // the induced map on the other coordinates is M[a][b] - sum_j r_j[a] M[c_j][b] (well defined: pi M r_j = 0).
 BallRows right_reduced(const BallRows& M, Mat R) {
   const size_t n = M.size();
-  std::vector<size_t> at;
-  size_t row = 0;
-  for (size_t c = 0; c < n && row < R.size(); ++c) {
-    size_t r = row;
-    while (r < R.size() && R[r][c] == 0) ++r;
-    if (r == R.size()) continue;
-    std::swap(R[r], R[row]);
-    const rational piv = R[row][c];
-    for (auto& x : R[row]) x /= piv;
-    for (size_t i = 0; i < R.size(); ++i)
-      if (i != row && R[i][c] != 0) {
-        const rational f = R[i][c];
-        for (size_t j = 0; j < n; ++j) R[i][j] -= f * R[row][j];
-      }
-    at.push_back(c);
-    ++row;
-  }
-  if (row != R.size()) throw NumericalError("the right eigenvectors are dependent (a checker defect)");
+  const std::vector<size_t> at = echelon(R);
+  if (at.size() != R.size()) throw NumericalError("the right eigenvectors are dependent (a checker defect)");
   std::vector<bool> gone(n, false);
   for (size_t c : at) gone[c] = true;
   std::vector<size_t> kept;
