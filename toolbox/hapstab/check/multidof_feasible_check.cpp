@@ -1,6 +1,8 @@
 // hapstab/check/multidof_feasible_check.cpp -- see multidof_feasible_check.hpp.
 #include "hapstab/check/multidof_feasible_check.hpp"
 
+#include "hapstab/check/gaussian_rational.hpp"
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -19,29 +21,13 @@ using namespace rational_matrix;
 
 constexpr size_t max_order = 160;  // N + m
 
-// (zI - A)^-1 B by Gaussian elimination with pivoting (z rational); nullopt when singular
+// (zI - A)^-1 B, exactly (z rational); nullopt when singular
 std::optional<Mat> resolvent_times(const Mat& A, const Mat& B, const rational& z) {
-  const size_t n = A.size(), m = B.empty() ? 0 : B[0].size();
-  Mat M = zeros(n, n + m);
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t j = 0; j < n; ++j) M[i][j] = (i == j ? z : rational(0)) - A[i][j];
-    for (size_t j = 0; j < m; ++j) M[i][n + j] = B[i][j];
-  }
-  for (size_t k = 0; k < n; ++k) {
-    size_t p = k;
-    while (p < n && M[p][k].is_zero()) ++p;
-    if (p == n) return std::nullopt;
-    std::swap(M[k], M[p]);
-    for (size_t i = 0; i < n; ++i) {
-      if (i == k || M[i][k].is_zero()) continue;
-      const rational f = M[i][k] / M[k][k];
-      for (size_t j = k; j < n + m; ++j) M[i][j] -= f * M[k][j];
-    }
-  }
-  Mat Y = zeros(n, m);
+  const size_t n = A.size();
+  Mat M = zeros(n, n);
   for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < m; ++j) Y[i][j] = M[i][n + j] / M[i][i];
-  return Y;
+    for (size_t j = 0; j < n; ++j) M[i][j] = (i == j ? z : rational(0)) - A[i][j];
+  return solve_exact(std::move(M), B);
 }
 
 Mat sized(const nlohmann::json& ev, const std::string& where, const char* key, size_t rows, size_t cols) {

@@ -44,27 +44,18 @@ Cq det(std::vector<std::vector<Cq>> M) {
 // nullopt where jwI - A is singular (a pole of Z, or a hidden mode, at jw).
 std::optional<std::vector<std::vector<Cq>>> ss_at_jw(const detail::SceneLoop::Impedance& op, const rational& w) {
   const size_t n = op.A.size(), m = op.D.size();
-  std::vector<std::vector<Cq>> M(n, std::vector<Cq>(n + m));
+  std::vector<std::vector<Cq>> M(n, std::vector<Cq>(n)), Bq(n, std::vector<Cq>(m));
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = 0; j < n; ++j) M[i][j] = Cq(-op.A[i][j], i == j ? w : rational(0));
-    for (size_t j = 0; j < m; ++j) M[i][n + j] = Cq(op.B[i][j]);
+    for (size_t j = 0; j < m; ++j) Bq[i][j] = Cq(op.B[i][j]);
   }
-  for (size_t k = 0; k < n; ++k) {
-    size_t p = k;
-    while (p < n && M[p][k].is_zero()) ++p;
-    if (p == n) return std::nullopt;
-    std::swap(M[p], M[k]);
-    for (size_t i = 0; i < n; ++i) {
-      if (i == k || M[i][k].is_zero()) continue;
-      const Cq f = M[i][k] / M[k][k];
-      for (size_t j = k; j < n + m; ++j) M[i][j] = M[i][j] - f * M[k][j];
-    }
-  }
+  const auto X = solve_exact(std::move(M), std::move(Bq));
+  if (!X) return std::nullopt;
   std::vector<std::vector<Cq>> Z(m, std::vector<Cq>(m));
   for (size_t i = 0; i < m; ++i)
     for (size_t j = 0; j < m; ++j) {
       Cq v(op.D[i][j]);
-      for (size_t k = 0; k < n; ++k) v = v + Cq(op.C[i][k]) * (M[k][n + j] / M[k][k]);
+      for (size_t k = 0; k < n; ++k) v = v + Cq(op.C[i][k]) * (*X)[k][j];
       Z[i][j] = v;
     }
   return Z;

@@ -56,8 +56,6 @@ MimoModel read_model(const nlohmann::json& model) {
 }
 
 // ---- exact linear algebra over a field F (rational or Cq)
-bool zero(const rational& x) { return x.is_zero(); }
-bool zero(const Cq& x) { return x.is_zero(); }
 
 template <class F>
 F det(std::vector<std::vector<F>> M) {
@@ -65,7 +63,7 @@ F det(std::vector<std::vector<F>> M) {
   F d(rational(1));
   for (size_t k = 0; k < n; ++k) {
     size_t p = k;
-    while (p < n && zero(M[p][k])) ++p;
+    while (p < n && M[p][k].is_zero()) ++p;
     if (p == n) return F(rational(0));
     if (p != k) {
       std::swap(M[p], M[k]);
@@ -73,7 +71,7 @@ F det(std::vector<std::vector<F>> M) {
     }
     d = d * M[k][k];
     for (size_t i = k + 1; i < n; ++i) {
-      if (zero(M[i][k])) continue;
+      if (M[i][k].is_zero()) continue;
       const F f = M[i][k] / M[k][k];
       for (size_t j = k; j < n; ++j) M[i][j] = M[i][j] - f * M[k][j];
     }
@@ -84,23 +82,9 @@ F det(std::vector<std::vector<F>> M) {
 /// X with M X = R (M regular: InputError otherwise, which A Schur stable excludes where it is used).
 template <class F>
 std::vector<std::vector<F>> solve(std::vector<std::vector<F>> M, std::vector<std::vector<F>> R) {
-  const size_t n = M.size(), k = R.empty() ? 0 : R[0].size();
-  for (size_t c = 0; c < n; ++c) {
-    size_t p = c;
-    while (p < n && zero(M[p][c])) ++p;
-    if (p == n) throw InputError("model.A: zI - A is singular at a point where A Schur stable excludes it");
-    std::swap(M[p], M[c]);
-    std::swap(R[p], R[c]);
-    for (size_t i = 0; i < n; ++i) {
-      if (i == c || zero(M[i][c])) continue;
-      const F f = M[i][c] / M[c][c];
-      for (size_t j = c; j < n; ++j) M[i][j] = M[i][j] - f * M[c][j];
-      for (size_t j = 0; j < k; ++j) R[i][j] = R[i][j] - f * R[c][j];
-    }
-  }
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < k; ++j) R[i][j] = R[i][j] / M[i][i];
-  return R;
+  auto X = solve_exact(std::move(M), std::move(R));
+  if (!X) throw InputError("model.A: zI - A is singular at a point where A Schur stable excludes it");
+  return *X;
 }
 
 /// G(z) = C (zI - A)^-1 B + D at z (F = rational for real z, Cq on the circle).
