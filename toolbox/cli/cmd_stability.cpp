@@ -558,7 +558,8 @@ const cli::Register reg(
            if (!hidden.stable()) {
              if (!o->certificate.empty())
                throw InputError("--certificate: sup " + o->max_name + " = 0 is decided by a hidden mode (" + hidden.summary() +
-                                "): a certificate of hidden modes is not implemented yet");
+                                "): sup = 0 by a hidden mode has no certificate form yet (`stability --scene S --set " + o->max_name +
+                                "=VALUE --certificate FILE` certifies the verdict at one value)");
              const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
              if (o->json) cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}});
              else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
