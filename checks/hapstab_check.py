@@ -2752,6 +2752,9 @@ def loop_matrix(loop, bits):
     T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
     A, Bu, pos = loop_plant(devices, mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
+    # the hold's exponent: |A T| beyond 2^12 makes e^{AT} span more than ~6000 binary orders (check/stability_loop_check.cpp)
+    if any(sum(abs(x) for x in row) * T > 4096 for row in A):
+        raise TooLarge("model: the hold e^{AT} has |A T| (a row sum) more than 4096: beyond this checker")
     n, f = int(d), (d - int(d)) * T  # t_d = n T + f
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
 

@@ -1298,6 +1298,19 @@ TEST(StabilityLoopCheck, HiddenModeByHand) {
   EXPECT_THROW(check_certificate(beside), InputError);
 }
 
+// fuzz_certificate's out-of-memory (stop 71): a plant loop with T = 10^118 s. e^{AT} spans ~10^120 binary
+// orders and the Stein test's exact midpoints took 2 GB; |A T| beyond 4096 is now refused by name.
+TEST(StabilityLoopCheck, HoldBeyondTheLimit) {
+  std::ifstream in(std::string(HAPSTAB_SOURCE_DIR) + "/tests/check/fixtures/beyond_stability_loop_hold.json");
+  const auto cert = nlohmann::json::parse(in);
+  try {
+    check_certificate(cert);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the hold e^{AT}"), std::string::npos) << e.what();
+  }
+}
+
 // Continuous blocks (a device, an operator, by name): charpoly(A_h) = s^k q, q not Hurwitz (Cayley map and
 // Schur-Cohn). A device d, ss A = [[-10, 0, 0], [0, 0, 1], [0, a, c]], B = (1, 0, 0)', C = (1, 0, 0): rows 2
 // and 3 are uncontrollable, A_h = [[0, 1], [a, c]]: a = -4, c = 0 (s = +-2j, on the axis: after the hold on

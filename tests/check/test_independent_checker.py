@@ -226,6 +226,13 @@ class StabilityLoop(unittest.TestCase):
     [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""
     P = [["-1461/800", "29/40"], ["29/40", "-229/2"]]
 
+    def test_hold_beyond_the_limit(self):
+        # test_check.cpp's StabilityLoopCheck.HoldBeyondTheLimit: T = 10^118 s, |A T| far beyond 4096
+        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "fixtures", "beyond_stability_loop_hold.json")) as f:
+            code, why = hc.check(hc.json.load(f))
+        self.assertEqual(code, 3)
+        self.assertIn("the hold e^{AT}", why)
+
     def test_hidden_mode_of_continuous_blocks_by_hand(self):
         # test_check.cpp's StabilityLoopCheck.HiddenModeOfContinuousBlocksByHand: A_h = [[0, 1], [a, c]] hidden in
         # an ss device: +-2j and +-2 verified, damped and s^2 refuted; an ss operator's uncontrollable s = 1

@@ -26,7 +26,8 @@ using RF = RationalFunction<rational>;
 using rational_matrix::Mat;
 using BallRows = std::vector<std::vector<flint::Ball>>;
 
-constexpr size_t kMaxOrder = 160;  // M's order: exact elimination of Q_mid - r I stays within seconds
+constexpr size_t kMaxOrder = 160;
+constexpr long kMaxHoldNorm = 4096;  // |A T|'s largest row sum (loop_matrix)  // M's order: exact elimination of Q_mid - r I stays within seconds
 
 struct Realisation {
   Mat A, B, C, D;
@@ -328,6 +329,15 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   const Plant pl = plant(L);
   const Mat &A = pl.A, &Bu = pl.B;
   const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
+  // the hold's exponent: |A T| beyond 2^12 makes e^{AT} span more than ~6000 binary orders, whose exact
+  // midpoints (the Stein test's Q_mid) no longer fit in memory (a fuzzed T of 10^118 took 2 GB)
+  for (const auto& row : A) {
+    rational sum = 0;
+    for (const rational& x : row) sum += abs(x);
+    if (sum * L.T > kMaxHoldNorm)
+      throw InputError("model: the hold e^{AT} has |A T| = " + detail::decimal(sum * L.T) + " (a row sum), more than " +
+                       std::to_string(kMaxHoldNorm) + ": beyond this checker (a sample period that long against the plant's rates)");
+  }
   // t_d = n T + f: over a period the plant sees u_{k-n-1} on [kT, kT + f) and u_{k-n} after, so
   // s+ = Phi_T s + Phi_{T-f} Gamma_f u_{k-n-1} + Gamma_{T-f} u_{k-n} (sim/closed_loop.hpp's step)
   const rational f = L.fraction * L.T;
