@@ -880,7 +880,7 @@ def mimo_upper_bound_mutants(cert, rng):
 
 def lemma1_mutants(cert, rng, upper_mutants, witness_keys):
     """passivity-level(-mimo) with status lower_bound or bounds (the LMI's level printed: lo by Lemma 1 at
-    the storage P, hi the frequency value <= 0 at its witness): lo lowered (accept: (2) is non-increasing
+    the storage P, hi the frequency value <= 0 at its witness): lo lowered (accept: (2) is non-decreasing
     in the level), lo raised a tenth of its scale (refute: the LMI's lo is within ~1e-5 of Lemma 1's
     supremum) or past hi, its printed decimal, P negated, not symmetric, scaled, of the wrong shape or
     gone; the bounds' hi and witness by `upper_mutants` (the kind's upper-bound-only mutants) on the

@@ -61,8 +61,8 @@
 //     (rational_matrix::lemma1_matrix, every pivot > 0). Proof (the "if" of Lemma 1, in one line): for
 //     [x; u] != 0, [x; u]'(2)[x; u] = V(x+) - V(x) - y'u + lo y'y (OSP; + lo u'u for ISP) < 0 with V =
 //     x'Px > 0, which is Definition 2's (1) at Delta = lo I; so the system is lo-OSP (ISP) and Lemma 1's
-//     level, the supremum of such lo, is >= lo. (2) is non-increasing in lo, so a printed lo rounded
-//     down still holds. No frequency hypothesis is used for this part (a zero of G on the circle is
+//     level, the supremum of such lo, is >= lo. (2) is non-decreasing in lo (lo times a PSD matrix), so a printed lo
+//     rounded down still holds. No frequency hypothesis is used for this part (a zero of G on the circle is
 //     allowed).
 // Hypotheses, verified: T > 0; model.kind "isp" or "osp"; A
 // n x n with n >= 1, B n x m, C m x n, D m x m (square G) with every entry a "p/q" string; A Schur

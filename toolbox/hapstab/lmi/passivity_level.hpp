@@ -84,7 +84,7 @@ PassivityLevel passivity_level_lmi(const StateSpace<double>& sys, PassivityKind 
 
 /// Lemma 1 exactly, for a model as written (not the doubles the SDP saw): P > 0 and (2) < 0 at
 /// Delta = level I (osp) or Phi = level I (isp), both by exact fraction-free elimination. (2) is
-/// non-increasing in the level, so it then holds at every lower level too.
+/// non-decreasing in the level (it adds level times a PSD matrix), so it then holds at every lower level too.
 bool lemma1_holds(const StateSpace<rational>& s, const MatQ& P, const rational& level, PassivityKind kind);
 
 /// Frequency-domain level (see header comment).
