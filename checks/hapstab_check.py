@@ -3109,11 +3109,86 @@ def check_stability_loop(c):
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 
 
+def lagrange(xs, ys):
+    """The polynomial of degree < len(xs) through (xs[k], ys[k]), ascending coefficients."""
+    out = []
+    for i, xi in enumerate(xs):
+        basis, den = [Fraction(1)], Fraction(1)
+        for j, xj in enumerate(xs):
+            if j != i:
+                basis = pmul(basis, [-xj, Fraction(1)])
+                den *= xi - xj
+        out = padd(out, pscale(basis, ys[i] / den))
+    return out
+
+
+def ss_transfer(A, B, C, D):
+    """Z(s) = C (sI - A)^-1 B + D entry by entry as RFs: chi = det(sI - A) (Faddeev-LeVerrier) and
+    chi (Z - D) = C adj(sI - A) B, of degree < n, interpolated at n integers where chi != 0."""
+    n, m = len(A), len(D)
+    chi = faddeev_leverrier(A)
+    pts, vals = [], [[[] for _ in range(m)] for _ in range(m)]
+    k = 0
+    while len(pts) < n:
+        s, k = Fraction(k), k + 1
+        c = peval(chi, s)
+        if c == 0:
+            continue
+        X = solve_shifted(A, B, s)
+        pts.append(s)
+        for i in range(m):
+            for j in range(m):
+                vals[i][j].append(c * sum(C[i][l] * X[l][j] for l in range(n)))
+    return [[RF(padd(pscale(chi, D[i][j]), lagrange(pts, vals[i][j]) if n else []), chi) for j in range(m)] for i in range(m)]
+
+
+def residue_fails(Z, w0):
+    """What shows Z not positive real at its axis pole s = j w0 (w0 >= 0), or "": each entry in lowest
+    terms, the pole's order the multiplicity of f = s (w0 = 0) or s^2 + w0^2 in its denominator (>= 2
+    fails), R_ij = n(j w0)/d'(j w0) in Q(j) for a simple pole; R not Hermitian, or [[Re R, -Im R], [Im R,
+    Re R]] not positive semidefinite, fails (check/operator_passivity_check.hpp)."""
+    q = len(Z)
+    f = [Fraction(0), Fraction(1)] if w0 == 0 else [w0 * w0, Fraction(0), Fraction(1)]
+    at = "s = 0" if w0 == 0 else "s = j%s" % short(w0)
+
+    def at_jw0(p):
+        v = cq(0)
+        for a in reversed(p):
+            v = cq_add(cq_mul(v, (Fraction(0), w0)), cq(a))
+        return v
+    R = [[cq(0)] * q for _ in range(q)]
+    for i in range(q):
+        for j in range(q):
+            n, d = trim(Z[i][j].num), trim(Z[i][j].den)
+            g = pgcd(n, d) if n else [Fraction(1)]
+            if len(g) > 1:
+                n, d = pdivmod(n, g)[0], pdivmod(d, g)[0]
+            order, e = 0, d
+            while len(e) >= len(f):
+                quo, rem = pdivmod(e, f)
+                if trim(rem):
+                    break
+                e, order = quo, order + 1
+            if order >= 2:
+                return "entry (%d, %d) has a pole of order %d at %s" % (i + 1, j + 1, order, at)
+            if order == 1:
+                R[i][j] = cq_div(at_jw0(n), at_jw0(pderiv(d)))
+    if any(R[i][j] != (R[j][i][0], -R[j][i][1]) for i in range(q) for j in range(i + 1)):
+        return "its residue at %s is not Hermitian" % at
+    E = [[R[i][j][0] for j in range(q)] + [-R[i][j][1] for j in range(q)] for i in range(q)]
+    E += [[R[i][j][1] for j in range(q)] + [R[i][j][0] for j in range(q)] for i in range(q)]
+    if not semidefinite(E, False):
+        return "its residue at %s is not positive semidefinite" % at
+    return ""
+
+
 def check_operator_passivity(c):
     """Assumption 1(b) of paper 000 fails for the scene's operator claim.operator (a tf matrix in s): a
     positive real Z has He Z(jw) >= 0 at every real w that is not a pole, so the principal minor of He
     Z(jw) on evidence.minor (0-based rows) being < 0 at evidence.w, exactly in Q(j), with no entry's
-    denominator 0 there, shows Z is not passive (check/operator_passivity_check.hpp)."""
+    denominator 0 there, shows Z is not passive (check/operator_passivity_check.hpp). Or evidence.pole = w0
+    (rational, >= 0): Z's residue at its axis pole s = j w0 not Hermitian PSD, or a multiple pole there
+    (residue_fails; an ss operator's entries formed exactly by ss_transfer)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "operator", "passive"), "claim")
     at_pole = "pole" in evidence
@@ -3135,30 +3210,17 @@ def check_operator_passivity(c):
         raise Malformed("claim.operator: %s operator given by tf or ss named %r in the scene" % ("no" if not at else "more than one", name))
     Z = ops[at[0]][1]
     is_ss = Z[0] != "tf"
-    if is_ss and at_pole:
-        raise Malformed("claim.operator: %r is given by ss: the residue form is for tf operators" % name)
     Z = Z[1]
     q = len(Z[3]) if is_ss else len(Z)
-    if at_pole:  # a positive real Z has only simple poles on the axis, with Hermitian PSD residues (at 0: symmetric)
-        if exact(evidence, "pole", "evidence") != 0:
-            raise Malformed("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here")
-        R = [[Fraction(0)] * q for _ in range(q)]
-        for i in range(q):
-            for j in range(q):
-                n, d = trim(Z[i][j].num), trim(Z[i][j].den)
-                g = pgcd(n, d) if n else [Fraction(1)]
-                if len(g) > 1:
-                    n, d = pdivmod(n, g)[0], pdivmod(d, g)[0]
-                order = next(k for k, a in enumerate(d) if a != 0)
-                if order >= 2:
-                    return True, "operator %r is not passive: entry (%d, %d) has a pole of order %d at s = 0" % (name, i + 1, j + 1, order)
-                if order == 1:
-                    R[i][j] = (n[0] if n else Fraction(0)) / d[1]
-        if any(R[i][j] != R[j][i] for i in range(q) for j in range(i)):
-            return True, "operator %r is not passive: its residue at s = 0 is not symmetric" % name
-        if not semidefinite(R, False):
-            return True, "operator %r is not passive: its residue at s = 0 is not positive semidefinite" % name
-        return False, "operator %r not passive not shown: at most a simple pole at s = 0 with a symmetric PSD residue" % name
+    if at_pole:  # a positive real Z has only simple poles on the axis, with Hermitian PSD residues
+        w0 = exact(evidence, "pole", "evidence")
+        if w0 < 0:
+            raise Malformed("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)")
+        why = residue_fails(ss_transfer(*Z) if is_ss else Z, w0)
+        at = "s = 0" if w0 == 0 else "s = j%s" % short(w0)
+        if why:
+            return True, "operator %r is not passive: %s (Assumption 1(b) fails)" % (name, why)
+        return False, "operator %r not passive not shown: at most a simple pole at %s with a Hermitian PSD residue" % (name, at)
     w = exact(evidence, "w", "evidence")
     rows = evidence.get("minor")
     if not isinstance(rows, list) or not rows or any(not isinstance(r, int) or isinstance(r, bool) or not 0 <= r < q for r in rows):

@@ -718,7 +718,9 @@ TEST(OperatorPassivityCheck, PaperH1ByHand) {
 
 // An operator given by ss as written: Z = 1 - 3/(s + 1) (A = -1, B = 1, C = -3, D = 1), Re Z(jw) = 1 -
 // 3/(1 + w^2): -2 at w = 0 (verified), 2/5 at w = 2 (refuted). A = 0 with C = 0 (a hidden integrator):
-// jwI - A singular at w = 0, nothing shown there (refuted); the residue form is for tf only.
+// jwI - A singular at w = 0, nothing shown there (refuted). The residue form on the same ss: 1 - 3/(s + 1)
+// has no pole at 0, nor has Z = 1 (C = 0: the integrator is hidden), refuted; A = 0, C = -3 is 1 - 3/s,
+// residue -3: verified; C = 3 (a spring) refuted.
 TEST(OperatorPassivityCheck, StateSpaceOperatorByHand) {
   auto cert = [](const std::string& a, const std::string& c, const std::string& w) {
     const std::string scene = "[scene]\nT = \"1/100\"\n[[device]]\nname = \"a\"\nm = \"1/10\"\nb = \"1\"\n[[operator]]\n"
@@ -737,9 +739,16 @@ TEST(OperatorPassivityCheck, StateSpaceOperatorByHand) {
   const Verdict hidden = check_certificate(cert("0", "0", "0"));
   EXPECT_FALSE(hidden.verified);
   EXPECT_NE(hidden.reason.find("singular"), std::string::npos) << hidden.reason;
-  auto residue = cert("-1", "-3", "0");
-  residue["evidence"] = {{"pole", "0"}};
-  EXPECT_THROW(check_certificate(residue), InputError);
+  auto residue = [&](const std::string& a, const std::string& c) {  // the residue form on Z's entries, formed exactly
+    auto r = cert(a, c, "0");
+    r["evidence"] = {{"pole", "0"}};
+    return check_certificate(r);
+  };
+  EXPECT_FALSE(residue("-1", "-3").verified);  // no pole at s = 0
+  EXPECT_FALSE(residue("0", "0").verified);    // Z = 1: the hidden integrator is no pole of Z
+  const Verdict spring = residue("0", "-3");   // Z = 1 - 3/s: residue -3
+  EXPECT_TRUE(spring.verified) << spring.reason;
+  EXPECT_FALSE(residue("0", "3").verified);  // 1 + 3/s: a spring, passive there
 }
 
 // Failing by a pole (evidence {pole: "0"}): a positive real Z has only simple poles on the axis with
@@ -768,11 +777,46 @@ TEST(OperatorPassivityCheck, ResidueAtZeroByHand) {
   EXPECT_TRUE(check_certificate(cert(R"([["1/s", "2/s"], ["2/s", "1/s"]])")).verified);
   EXPECT_FALSE(check_certificate(cert(R"x([["(s + 1)/(s^2 + s)", "0"], ["0", "1/s"]])x")).verified);
   auto other = cert(R"([["2 - 10/s", "0"], ["0", "1"]])");
-  other["evidence"]["pole"] = "1";
+  other["evidence"]["pole"] = "1";  // no pole at s = j
+  EXPECT_FALSE(check_certificate(other).verified);
+  other["evidence"]["pole"] = "-1";
   EXPECT_THROW(check_certificate(other), InputError);
   auto beside = cert(R"([["2 - 10/s", "0"], ["0", "1"]])");
   beside["evidence"]["w"] = "1";
   EXPECT_THROW(check_certificate(beside), InputError);
+}
+
+// Failing by a pole at s = j w0 != 0 (evidence {pole: "w0"}): R = lim (s - j w0) Z(s) = n(j w0)/d'(j w0)
+// over Q(j), Hermitian PSD for a positive real Z. 2 - 10 s/(s^2 + 4): He Z(jw) = 2 everywhere, residue
+// at 2j -10 (2j)/(4j) = -5: not passive (at j: no pole, refuted); 2 + 10 s/(s^2 + 4) refuted; 1/(s^2 +
+// 4)^2 a double pole. At s = j, with D = s^2 + 1: [[s, 1], [-1, s]]/D has R = [[1/2, -j/2], [j/2, 1/2]]
+// (Hermitian, eigenvalues 0 and 1: refuted); [[s, 1], [1, s]]/D has R12 = -j/2, R21 = -j/2: not
+// Hermitian; [[s, 2], [-2, s]]/D has R = [[1/2, -j], [j, 1/2]], det 1/4 - 1 < 0: not PSD.
+TEST(OperatorPassivityCheck, ResidueOnTheAxisByHand) {
+  auto cert = [](const std::string& tf, const std::string& w0) {
+    const std::string scene = "[scene]\nT = \"1/100\"\n[[device]]\nname = \"a\"\nm = \"1/10\"\nb = \"1\"\n[[device]]\nname = \"b\"\n"
+                              "m = \"1/10\"\nb = \"1\"\n[[operator]]\nname = \"Z\"\ndofs = [\"a\", \"b\"]\ntf = " + tf +
+                              "\n[environment]\ntf = [[\"1000\", \"0\"], [\"0\", \"1000\"]]\n";
+    return check_certificate(nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "operator-passivity"},
+                                            {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
+                                            {"claim", {{"status", "exact"}, {"operator", "Z"}, {"passive", false}}},
+                                            {"evidence", {{"pole", w0}}}});
+  };
+  const Verdict neg = cert(R"x([["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]])x", "2");
+  EXPECT_TRUE(neg.verified) << neg.reason;
+  EXPECT_NE(neg.reason.find("s = j2"), std::string::npos) << neg.reason;
+  EXPECT_FALSE(cert(R"x([["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]])x", "1").verified);
+  EXPECT_FALSE(cert(R"x([["2 + 10*s/(s^2 + 4)", "0"], ["0", "1"]])x", "2").verified);
+  const Verdict dbl = cert(R"x([["1/(s^2 + 4)^2", "0"], ["0", "1"]])x", "2");
+  EXPECT_TRUE(dbl.verified) << dbl.reason;
+  EXPECT_NE(dbl.reason.find("order 2"), std::string::npos) << dbl.reason;
+  EXPECT_FALSE(cert(R"x([["s/(s^2 + 1)", "1/(s^2 + 1)"], ["-1/(s^2 + 1)", "s/(s^2 + 1)"]])x", "1").verified);
+  const Verdict herm = cert(R"x([["s/(s^2 + 1)", "1/(s^2 + 1)"], ["1/(s^2 + 1)", "s/(s^2 + 1)"]])x", "1");
+  EXPECT_TRUE(herm.verified) << herm.reason;
+  EXPECT_NE(herm.reason.find("not Hermitian"), std::string::npos) << herm.reason;
+  const Verdict psd = cert(R"x([["s/(s^2 + 1)", "2/(s^2 + 1)"], ["-2/(s^2 + 1)", "s/(s^2 + 1)"]])x", "1");
+  EXPECT_TRUE(psd.verified) << psd.reason;
+  EXPECT_NE(psd.reason.find("not positive semidefinite"), std::string::npos) << psd.reason;
 }
 
 // An OSP value <= 0 is an upper bound only ("upper_bound", the witness alone). G = diag(1/(z - 1/2),

@@ -1094,7 +1094,13 @@ class OperatorPassivity(unittest.TestCase):
         code, why = hc.check(cert("0", "0", "0"))
         self.assertEqual(code, 1)
         self.assertIn("singular", why)
-        self.assertEqual(hc.check(cert("-1", "-3", "0", {"pole": "0"}))[0], 2)
+        # the residue form on Z's entries formed exactly: 1 - 3/(s + 1) and Z = 1 (C = 0) have no pole at 0;
+        # A = 0, C = -3 is 1 - 3/s (residue -3); C = 3 a spring
+        self.assertEqual(hc.check(cert("-1", "-3", "0", {"pole": "0"}))[0], 1)
+        self.assertEqual(hc.check(cert("0", "0", "0", {"pole": "0"}))[0], 1)
+        code, why = hc.check(cert("0", "-3", "0", {"pole": "0"}))
+        self.assertEqual(code, 0, why)
+        self.assertEqual(hc.check(cert("0", "3", "0", {"pole": "0"}))[0], 1)
 
     def test_residue_at_zero_by_hand(self):
         # test_check.cpp's OperatorPassivityCheck.ResidueAtZeroByHand: 2 - 10/s (residue -10), 1/s^2, an
@@ -1114,11 +1120,37 @@ class OperatorPassivity(unittest.TestCase):
         self.assertEqual(hc.check(cert('[["1/s", "2/s"], ["2/s", "1/s"]]'))[0], 0)
         self.assertEqual(hc.check(cert('[["(s + 1)/(s^2 + s)", "0"], ["0", "1/s"]]'))[0], 1)
         c = cert('[["2 - 10/s", "0"], ["0", "1"]]')
-        c["evidence"]["pole"] = "1"
+        c["evidence"]["pole"] = "1"  # no pole at s = j
+        self.assertEqual(hc.check(c)[0], 1)
+        c["evidence"]["pole"] = "-1"
         self.assertEqual(hc.check(c)[0], 2)
         c = cert('[["2 - 10/s", "0"], ["0", "1"]]')
         c["evidence"]["w"] = "1"
         self.assertEqual(hc.check(c)[0], 2)
+
+    def test_residue_on_the_axis_by_hand(self):
+        # test_check.cpp's OperatorPassivityCheck.ResidueOnTheAxisByHand: 2 - 10 s/(s^2 + 4) (residue -5 at 2j),
+        # a double pole, and at s = j a Hermitian PSD residue (refuted), a non-Hermitian one, an indefinite one
+        def cert(tf, w0):
+            scene = ('[scene]\nT = "1/100"\n[[device]]\nname = "a"\nm = "1/10"\nb = "1"\n[[device]]\nname = "b"\nm = "1/10"\n'
+                     'b = "1"\n[[operator]]\nname = "Z"\ndofs = ["a", "b"]\ntf = %s\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n' % tf)
+            return hc.check({"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": scene, "set": {}},
+                             "claim": {"status": "exact", "operator": "Z", "passive": False}, "evidence": {"pole": w0}})
+        code, why = cert('[["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]]', "2")
+        self.assertEqual(code, 0, why)
+        self.assertIn("s = j2", why)
+        self.assertEqual(cert('[["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]]', "1")[0], 1)
+        self.assertEqual(cert('[["2 + 10*s/(s^2 + 4)", "0"], ["0", "1"]]', "2")[0], 1)
+        code, why = cert('[["1/(s^2 + 4)^2", "0"], ["0", "1"]]', "2")
+        self.assertEqual(code, 0, why)
+        self.assertIn("order 2", why)
+        self.assertEqual(cert('[["s/(s^2 + 1)", "1/(s^2 + 1)"], ["-1/(s^2 + 1)", "s/(s^2 + 1)"]]', "1")[0], 1)
+        code, why = cert('[["s/(s^2 + 1)", "1/(s^2 + 1)"], ["1/(s^2 + 1)", "s/(s^2 + 1)"]]', "1")
+        self.assertEqual(code, 0, why)
+        self.assertIn("not Hermitian", why)
+        code, why = cert('[["s/(s^2 + 1)", "2/(s^2 + 1)"], ["-2/(s^2 + 1)", "s/(s^2 + 1)"]]', "1")
+        self.assertEqual(code, 0, why)
+        self.assertIn("not positive semidefinite", why)
 
 
 class BoundNumDen(unittest.TestCase):

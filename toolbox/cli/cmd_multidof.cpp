@@ -228,7 +228,7 @@ int run_analyze(const Opts& o) {
     const auto op = operator_passivity_certificate(o.scene, o.sets, a);
     if (!op)
       throw InputError("--premise-certificate: no failing premise with a certificate kind here (one: (16) proven feasible and "
-                       "Assumption 1(b) failing for an operator given by tf, in a scene the checkers read): no certificate");
+                       "Assumption 1(b) failing for an operator given by tf or ss, in a scene the checkers read): no certificate");
     write_certificate(o.premise_certificate, *op);
   }
   const auto& sp = a.scene;

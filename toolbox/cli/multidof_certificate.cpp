@@ -1,6 +1,7 @@
 // cli/multidof_certificate.cpp -- see multidof_certificate.hpp.
 #include "cli/multidof_certificate.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "hapstab/multidof/components.hpp"
 #include "hapstab/multidof/symmetry.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/roots.hpp"
 #include "hapstab/scene/schema.hpp"
 
 namespace hapstab::cli {
@@ -170,6 +172,32 @@ std::optional<nlohmann::json> symmetric_certificate(const scene::Scene& sc, cons
   return j;
 }
 
+// The rational w0 >= 0 of Z's poles on the imaginary axis, s = j w0: a factor s, or a s^2 + c with c/a
+// a rational square, of an entry's denominator (over Q, exactly). An irrational w0 gives none: the
+// residue form takes a rational w0 (check/operator_passivity_check.hpp).
+std::vector<rational> rational_axis_poles(const TransferMatrix& Z) {
+  std::vector<rational> out;
+  const auto add = [&out](const rational& w) {
+    if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  };
+  const auto square_root = [](const integer& x) -> std::optional<integer> {
+    if (x < 0) return std::nullopt;
+    const integer r = bmp::sqrt(x);
+    return r * r == x ? std::optional<integer>(r) : std::nullopt;
+  };
+  for (const auto& row : Z.entries)
+    for (const auto& e : row)
+      for (const auto& f : factor_over_q(e.den())) {
+        const auto& p = f.f;
+        if (p.degree() == 1 && p.coeff(0).is_zero()) add(rational(0));
+        if (p.degree() != 2 || !p.coeff(1).is_zero()) continue;
+        const rational c = p.coeff(0) / p.coeff(2);
+        const auto rn = square_root(numerator(c)), rd = square_root(denominator(c));
+        if (c > 0 && rn && rd) add(rational(*rn) / rational(*rd));
+      }
+  return out;
+}
+
 }  // namespace
 
 std::optional<nlohmann::json> operator_passivity_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
@@ -177,10 +205,11 @@ std::optional<nlohmann::json> operator_passivity_certificate(const std::string& 
   if (!a.feasible || !a.certified || a.premises_hold) return std::nullopt;
   const auto& ops = a.scene.operators;
   for (size_t k = 0; k < ops.size() && k < a.scene.operator_names.size(); ++k) {
-    // a negative principal minor of He Z(jw); else Z's residue at s = 0 (a negative spring -k/s)
+    // a negative principal minor of He Z(jw); else Z's residue at an axis pole s = j w0 (a negative
+    // spring -k/s, a resonance -k s/(s^2 + w0^2))
     std::vector<nlohmann::json> evidence;
     if (const auto minor = multidof::negative_minor(ops[k])) evidence.push_back({{"w", minor->w.str()}, {"minor", minor->rows}});
-    evidence.push_back({{"pole", "0"}});
+    for (const rational& w0 : rational_axis_poles(ops[k])) evidence.push_back({{"pole", w0.str()}});
     for (const auto& e : evidence) {
       nlohmann::json j = certificate_header("operator-passivity");
       j["model"] = scene_model_json(scene_path, sets);

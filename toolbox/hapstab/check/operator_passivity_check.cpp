@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hapstab/check/gaussian_rational.hpp"
+#include "hapstab/check/interpolate.hpp"
 #include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/numeric/error.hpp"
@@ -61,26 +62,82 @@ std::optional<std::vector<std::vector<Cq>>> ss_at_jw(const detail::SceneLoop::Im
   return Z;
 }
 
-// Z's residue at s = 0 (header): "" when Z has no pole there of order >= 2 and R = lim s Z(s) is
-// symmetric positive semidefinite; else what fails.
-std::string residue_at_zero_fails(const std::vector<std::vector<RationalFunction<rational>>>& Z) {
+// Z(s) = C (sI - A)^-1 B + D of an ss operator as written, entry by entry as rational functions: chi(s) =
+// det(sI - A) by n + 1 exact determinants and interpolation; chi (Z - D) = C adj(sI - A) B, of degree < n,
+// by n values at integers s_k where chi(s_k) != 0 ((s_k I - A) X = B solved exactly); entry = (D chi + N)/chi.
+std::vector<std::vector<RationalFunction<rational>>> ss_transfer(const detail::SceneLoop::Impedance& op) {
+  using namespace rational_matrix;
+  const size_t n = op.A.size(), m = op.D.size();
+  std::vector<rational> xs, chi_at;
+  for (size_t k = 0; k <= n; ++k) {
+    const rational s(static_cast<long>(k));
+    xs.push_back(s);
+    chi_at.push_back(rational_matrix::det(add(add(zeros(n, n), identity(n), s), op.A, -1)));
+  }
+  const Polynomial<rational> chi = interpolate(xs, chi_at);
+  std::vector<rational> at;
+  std::vector<std::vector<std::vector<rational>>> N(m, std::vector<std::vector<rational>>(m));
+  for (long k = 0; at.size() < n; ++k) {  // chi has at most n roots among 0 .. 2n
+    const rational s(k);
+    const rational c = chi(s);
+    if (c.is_zero()) continue;
+    const auto X = solve_exact<rational>(add(add(zeros(n, n), identity(n), s), op.A, -1), op.B);
+    if (!X) throw NumericalError("sI - A singular where det(sI - A) != 0 (a checker defect)");
+    at.push_back(s);
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = 0; j < m; ++j) {
+        rational v = 0;
+        for (size_t l = 0; l < n; ++l) v += op.C[i][l] * (*X)[l][j];
+        N[i][j].push_back(c * v);
+      }
+  }
+  std::vector<std::vector<RationalFunction<rational>>> Z(m);
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j)
+      Z[i].emplace_back(chi * Polynomial<rational>(op.D[i][j]) + (n ? interpolate(at, N[i][j]) : Polynomial<rational>()), chi);
+  return Z;
+}
+
+// Z's residue at the axis pole s = j w0, w0 >= 0 (header): "" when no entry has a pole there of order
+// >= 2 and R = lim (s - j w0) Z(s) is Hermitian positive semidefinite; else what fails. Each entry in
+// lowest terms; f = s (w0 = 0) or s^2 + w0^2, its multiplicity in the denominator d the pole's order;
+// for a simple pole R_ij = n(j w0)/d'(j w0) (0 otherwise). R = X + jY Hermitian PSD iff the real
+// symmetric [[X, -Y], [Y, X]] is PSD (symmetric elimination, exactly).
+std::string residue_fails(const std::vector<std::vector<RationalFunction<rational>>>& Z, const rational& w0) {
   const size_t q = Z.size();
-  rational_matrix::Mat R = rational_matrix::zeros(q, q);
+  const Polynomial<rational> f = w0.is_zero() ? Polynomial<rational>{rational(0), rational(1)}
+                                              : Polynomial<rational>{w0 * w0, rational(0), rational(1)};
+  const std::string at = w0.is_zero() ? "s = 0" : "s = j" + w0.str();
+  std::vector<std::vector<Cq>> R(q, std::vector<Cq>(q, Cq(rational(0))));
   for (size_t i = 0; i < q; ++i)
     for (size_t j = 0; j < q; ++j) {
       Polynomial<rational> n = Z[i][j].num(), d = Z[i][j].den();
       const Polynomial<rational> g = gcd(n, d);  // the entry in lowest terms
       if (g.degree() > 0) n = divmod(n, g).first, d = divmod(d, g).first;
       int order = 0;
-      while (order <= d.degree() && d.coeff(order).is_zero()) ++order;
+      for (Polynomial<rational> e = d; e.degree() >= f.degree(); ++order) {
+        auto [quot, rem] = divmod(e, f);
+        if (!rem.is_zero()) break;
+        e = quot;
+      }
       if (order >= 2)
         return "entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ") has a pole of order " + std::to_string(order) +
-               " at s = 0 (a positive real Z has only simple poles on the imaginary axis)";
-      if (order == 1) R[i][j] = n.coeff(0) / d.coeff(1);  // d = s e(s), e(0) = d'(0) = d_1
+               " at " + at + " (a positive real Z has only simple poles on the imaginary axis)";
+      if (order == 1) R[i][j] = at_jw(n, w0) / at_jw(d.derivative(), w0);
     }
-  if (!rational_matrix::symmetric(R)) return "the residue R = lim s Z(s) at s = 0 is not symmetric";
-  if (!rational_matrix::positive_definite(R, false))
-    return "the residue R = lim s Z(s) at s = 0 is not positive semidefinite (exact elimination)";
+  for (size_t i = 0; i < q; ++i)
+    for (size_t j = 0; j <= i; ++j)
+      if (R[i][j].re != R[j][i].re || R[i][j].im != -R[j][i].im)
+        return "the residue R = lim (s - j w0) Z(s) at " + at + " is not Hermitian";
+  rational_matrix::Mat E = rational_matrix::zeros(2 * q, 2 * q);
+  for (size_t i = 0; i < q; ++i)
+    for (size_t j = 0; j < q; ++j) {
+      E[i][j] = E[q + i][q + j] = R[i][j].re;
+      E[i][q + j] = -R[i][j].im;
+      E[q + i][j] = R[i][j].im;
+    }
+  if (!rational_matrix::positive_definite(E, false))
+    return "the residue R = lim (s - j w0) Z(s) at " + at + " is not positive semidefinite (exact elimination)";
   return "";
 }
 
@@ -107,14 +164,14 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
       op = &o;
     }
   if (!op) throw InputError("claim.operator: no operator given by tf or ss named '" + name + "' in the scene");
-  if (at_pole) {  // the residue at s = 0 (header)
-    if (op->is_ss) throw InputError("claim.operator: '" + name + "' is given by ss: the residue form is for tf operators");
-    if (detail::exact_field(evidence, "pole", "evidence") != 0)
-      throw InputError("evidence.pole: only \"0\" (the residue at s = 0) has a certificate form here");
-    const std::string why = residue_at_zero_fails(op->Z);
+  if (at_pole) {  // the residue at the axis pole s = j w0 (header)
+    const rational w0 = detail::exact_field(evidence, "pole", "evidence");
+    if (w0 < 0) throw InputError("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)");
+    const std::string why = residue_fails(op->is_ss ? ss_transfer(*op) : op->Z, w0);
+    const std::string at = w0.is_zero() ? "s = 0" : "s = j" + w0.str();
     if (why.empty())
-      return {false, "operator '" + name + "' not passive not shown: Z has at most a simple pole at s = 0, with a symmetric positive "
-                     "semidefinite residue"};
+      return {false, "operator '" + name + "' not passive not shown: Z has at most a simple pole at " + at +
+                         ", with a Hermitian positive semidefinite residue"};
     return {true, "operator '" + name + "' is not passive (positive real): " + why + ", exactly (Assumption 1(b) fails)"};
   }
   const rational w = detail::exact_field(evidence, "w", "evidence");

@@ -14,13 +14,15 @@
 // has a pole at s = jw (each denominator non-zero there), and the determinant of He Z(jw)'s
 // principal submatrix on `minor` (Hermitian: real; Gaussian elimination over Q(j)) is < 0. Then Z is
 // not positive real: Assumption 1(b) fails, and Theorem 5 draws no conclusion for the scene.
-// Or evidence {pole: "0"}: the residue at s = 0. Theorem (e.g. Anderson & Vongpanitlerd, Network
-// Analysis and Synthesis, Thm 2.7.2): a positive real Z has only simple poles on the imaginary axis,
-// each with a Hermitian positive semidefinite residue (at s = 0: real symmetric). Verified exactly:
-// each entry in lowest terms (gcd), its pole order at 0 (the zero low coefficients of its
-// denominator): >= 2 fails; R_ij = n(0)/d'(0) for a simple pole (0 otherwise); R not symmetric, or
-// not positive semidefinite (symmetric elimination), fails. A negative spring -k/s (He Z(jw) = b >= 0
-// everywhere: no minor shows it) is the case.
+// Or evidence {pole: w0} (a rational w0 >= 0): the residue at the axis pole s = j w0. Theorem (e.g.
+// Anderson & Vongpanitlerd, Network Analysis and Synthesis, Thm 2.7.2): a positive real Z has only
+// simple poles on the imaginary axis, each with a Hermitian positive semidefinite residue. Verified
+// exactly: Z entry by entry as rational functions (an ss operator's by chi = det(sI - A) and
+// chi (Z - D) = C adj(sI - A) B interpolated at integers, exactly), each in lowest terms (gcd); the
+// pole's order = the multiplicity of s (w0 = 0) or s^2 + w0^2 in its denominator d: >= 2 fails;
+// R_ij = n(j w0)/d'(j w0) over Q(j) for a simple pole (0 otherwise); R not Hermitian, or [[Re R,
+// -Im R], [Im R, Re R]] not positive semidefinite (symmetric elimination), fails. A negative spring
+// -k/s (He Z(jw) = b >= 0 everywhere: no minor shows it) and a resonance -k s/(s^2 + w0^2) are the cases.
 // (The converse, "passive", has no certificate here: it needs every minor >= 0 on the whole axis.)
 // Implements: paper 000 Assumption 1.
 #pragma once
