@@ -3006,11 +3006,87 @@ def hidden_mode_verdict(loop, h, model):
         block + (" %r" % h["name"] if named else ""), kind, r, "s" if named else "(z - 1)", k1, "Hurwitz" if named else "Schur stable", why)
 
 
+def loop_quotient(model):
+    """The loop of the model (scene_loop_read) and what stability_loop_check.hpp sets aside: the plant's
+    conserved quantities L (at their indices `at`), the wall's and the coupling's uncontrollable z = 1
+    (left eigenvectors of M, eigenvalue 1) and their unobservable z = 1 outside those (`right`), the
+    checker's own count `own`, and the blocks' realisations [(A, B, C, D) of E, of V]."""
+    loop = scene_loop_read(model)
+    A, B, _ = loop_plant(*loop[2:7])
+    L, at = conserved_quantities(A, B)
+    own = own_conserved(model)
+    if len(at) < own:
+        raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
+    ns = len(A)
+    blocks = [loop[7][1] if loop[7][0] == "ss" else realise_columns(loop[7][1])]
+    if loop[8] is not None:
+        blocks.append(loop[8][1] if loop[8][0] == "ss" else realise_columns(loop[8][1]))
+    nc = ns + sum(len(b[0]) for b in blocks)
+    L = [l + [Fraction(0)] * (nc - ns) for l in L]
+    offset, right = ns, []
+    for Ab, Bb, Cb, _ in blocks:
+        if Ab:
+            AmI = [[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)]
+            Ld, atd = conserved_quantities(AmI, Bb)
+            for l, c in zip(Ld, atd):
+                L.append([Fraction(0)] * offset + l + [Fraction(0)] * (nc - offset - len(l)))
+                at.append(offset + c)
+            # and its unobservable z = 1 outside those: (A - I) r = 0, C r = 0, l^T r = 0 (right eigenvectors of M)
+            cols = [[Cb[i][j] for i in range(len(Cb))] + [l[j] for l in Ld] for j in range(len(Ab))]
+            Rd, _ = conserved_quantities(mT(AmI), cols)
+            right += [(offset, r) for r in Rd]
+        offset += len(Ab)
+    return loop, L, at, right, own, blocks
+
+
+def loop_quotient_matrix(loop, L, at, right, bits):
+    """M in intervals at `bits`, on the quotient by the conserved quantities (loop_quotient)."""
+    M = quotient(loop_matrix(loop, bits), L, at)
+    if right:  # on the quotient's coordinates (those not in `at`), then by the right eigenvectors
+        full = len(M) + len(at)
+        R = []
+        for off, r in right:
+            v = [Fraction(0)] * full
+            v[off:off + len(r)] = r
+            R.append([x for i, x in enumerate(v) if i not in at])
+        M = right_quotient(M, R)
+    return M
+
+
+def stein_shown(P, M):
+    """Q = P - M^T P M > 0 for every M in the intervals: D Q_mid D minus the scaled radii's largest row
+    sum times I, > 0 by exact elimination (D = diag(2^-k_i), 2^k_i ~ sqrt(Q_mid_ii): a congruence)."""
+    n = len(P)
+    PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
+    Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
+    mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
+    d = [Fraction(1, 2 ** k) if k >= 0 else Fraction(2 ** -k)
+         for k in (((x.numerator.bit_length() - x.denominator.bit_length()) // 2 if x > 0 else 0)
+                   for x in (mid[i][i] for i in range(n)))]
+    r = max(sum(d[i] * d[j] * ((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2)) for j in range(n))
+            for i in range(n))
+    S = [[d[i] * d[j] * (mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
+    return semidefinite(S, True)
+
+
+def symmetric_evidence(obj, where, n):
+    """obj.P as a symmetric n x n matrix of Fractions (Malformed otherwise)."""
+    Pl = obj.get("P")
+    m = len(Pl) if isinstance(Pl, list) else 0
+    if m > MAX_LOOP_ORDER:
+        raise TooLarge("%s.P of order %d, above this checker's limit %d" % (where, m, MAX_LOOP_ORDER))
+    if n is not None and m != n:
+        raise Malformed("%s.P: order %d, the loop's %d" % (where, m, n))
+    P = frac_matrix(obj, "P", m, m, where)
+    if any(P[i][j] != P[j][i] for i in range(m) for j in range(i)):
+        raise Malformed("%s.P: not symmetric" % where)
+    return P
+
+
 def check_stability_loop(c):
     """stability-loop: the Stein inertia theorem on the closed loop M built here from the model
-    (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (D Q_mid D minus
-    the scaled radii's largest row sum times I, > 0 by exact elimination; D = diag(2^-k_i), 2^k_i ~
-    sqrt(Q_mid_ii)), and P > 0 (stable) or w^T P w < 0 (NOT stable)."""
+    (check/stability_loop_check.hpp): Q = P - M^T P M > 0 for every M in the intervals (stein_shown),
+    and P > 0 (stable) or w^T P w < 0 (NOT stable)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "stable", "conserved"), "claim")
     if "hidden" in evidence:  # NOT stable by a hidden mode of an ss environment or coupling, exactly
@@ -3030,43 +3106,12 @@ def check_stability_loop(c):
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
     stable = claim["stable"]
-    loop = scene_loop_read(model)
-    A, B, _ = loop_plant(*loop[2:7])
-    L, at = conserved_quantities(A, B)
-    own = own_conserved(model)
-    if len(at) < own:
-        raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
-    # the wall's and the coupling's uncontrollable z = 1: l^T (A - I) = 0, l^T B = 0 in their states (left
-    # eigenvectors of M, eigenvalue 1, as the plant's are)
-    N, ns = len(loop[3]), len(A)
-    blocks = [loop[7][1] if loop[7][0] == "ss" else realise_columns(loop[7][1])]
-    if loop[8] is not None:
-        blocks.append(loop[8][1] if loop[8][0] == "ss" else realise_columns(loop[8][1]))
-    nc = ns + sum(len(b[0]) for b in blocks)
-    L = [l + [Fraction(0)] * (nc - ns) for l in L]
-    offset, right = ns, []
-    for Ab, Bb, Cb, _ in blocks:
-        if Ab:
-            AmI = [[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)]
-            Ld, atd = conserved_quantities(AmI, Bb)
-            for l, c in zip(Ld, atd):
-                L.append([Fraction(0)] * offset + l + [Fraction(0)] * (nc - offset - len(l)))
-                at.append(offset + c)
-            # and its unobservable z = 1 outside those: (A - I) r = 0, C r = 0, l^T r = 0 (right eigenvectors of M)
-            cols = [[Cb[i][j] for i in range(len(Cb))] + [l[j] for l in Ld] for j in range(len(Ab))]
-            Rd, _ = conserved_quantities(mT(AmI), cols)
-            right += [(offset, r) for r in Rd]
-        offset += len(Ab)
+    loop, L, at, right, own, _ = loop_quotient(model)
     if len(at) + len(right) - own != k:
         return False, ("claim: %d conserved quantities, but the loop has %d (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 "
                        "of the wall or coupling, exactly: each an eigenvalue 1 of M)" % (k, len(at) + len(right) - own))
-    Pl = evidence.get("P")
-    n = len(Pl) if isinstance(Pl, list) else 0
-    if n > MAX_LOOP_ORDER:
-        raise TooLarge("evidence.P of order %d, above this checker's limit %d" % (n, MAX_LOOP_ORDER))
-    P = frac_matrix(evidence, "P", n, n)
-    if any(P[i][j] != P[j][i] for i in range(n) for j in range(i)):
-        raise Malformed("evidence.P: not symmetric")
+    P = symmetric_evidence(evidence, "evidence", None)
+    n = len(P)
     if stable == ("w" in evidence):
         raise Malformed("evidence.w: only for NOT stable" if stable else "evidence.w: missing (NOT stable needs w with w^T P w < 0)")
     if stable:
@@ -3080,33 +3125,159 @@ def check_stability_loop(c):
             return False, "claim: NOT stable, but w^T P w = %s >= 0" % short(q)
         sign = "w^T P w < 0"
     for bits in (128, 256, 512):
-        M = quotient(loop_matrix(loop, bits), L, at)
-        if right:  # on the quotient's coordinates (those not in `at`), then by the right eigenvectors
-            full = len(M) + len(at)
-            R = []
-            for off, r in right:
-                v = [Fraction(0)] * full
-                v[off:off + len(r)] = r
-                R.append([x for i, x in enumerate(v) if i not in at])
-            M = right_quotient(M, R)
+        M = loop_quotient_matrix(loop, L, at, right, bits)
         if len(M) != n:
             raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if at else ""))
-        PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
-        Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
-        mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
-        # D = diag(2^-k_i), 2^k_i ~ sqrt(mid_ii): D Q D has Q's inertia (a congruence), its radii weighed where they act
-        d = [Fraction(1, 2 ** k) if k >= 0 else Fraction(2 ** -k)
-             for k in (((x.numerator.bit_length() - x.denominator.bit_length()) // 2 if x > 0 else 0)
-                       for x in (mid[i][i] for i in range(n)))]
-        r = max(sum(d[i] * d[j] * ((Q[i][j].hi - Q[i][j].lo) / 2 + abs(mid[i][j] - (mid[i][j] + mid[j][i]) / 2)) for j in range(n))
-                for i in range(n))
-        S = [[d[i] * d[j] * (mid[i][j] + mid[j][i]) / 2 - (r if i == j else 0) for j in range(n)] for i in range(n)]
-        if semidefinite(S, True):
+        if stein_shown(P, M):
             return True, "%s (closed loop of %d states built from the model%s%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
                 "stable" if stable else "NOT stable", n + len(at), ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
                 ", the position integrated here set to P's output (its own conserved quantity: the model as written)" if own else "",
                 bits, sign)
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
+
+
+MAX_LOOP_COVER = 4096  # stability-loop-max: intervals of the cover (two Stein tests each)
+
+
+def gain_block(scene, p):
+    """stability-loop-max's reading of p (check/stability_loop_max_check.hpp): "environment" or
+    "coupling", the block whose gain is exactly p, p a parameter named in no other string of the scene
+    (labels and keywords -- name, dofs, domain, method -- and the ignored sections aside)."""
+    import tomllib
+    try:
+        root = tomllib.loads(scene)
+    except (tomllib.TOMLDecodeError, RecursionError) as e:
+        raise Malformed("model.scene: not TOML: %s" % e)
+    if not isinstance(root.get("parameters"), dict) or p not in root["parameters"]:
+        raise Malformed("model.name: %r is not a parameter of the scene ([parameters])" % p)
+    blocks = [b for b in ("environment", "coupling") if isinstance(root.get(b), dict) and root[b].get("gain") == p]
+    if len(blocks) != 1:
+        raise Malformed("model.name: %r is not the whole gain of exactly one of [environment], [coupling]: beyond this kind" % p)
+    found = []
+
+    def scan(node, at):
+        if isinstance(node, dict):
+            for k, v in node.items():
+                if k in ("name", "dofs", "domain", "method") or (not at and k in ("input", "initial", "simulate", "reproduce", "multidof")):
+                    continue
+                scan(v, k if not at else at + "." + k)
+        elif isinstance(node, list):
+            for i, v in enumerate(node):
+                scan(v, "%s[%d]" % (at, i))
+        elif isinstance(node, str) and at not in (blocks[0] + ".gain", "parameters." + p):
+            if p in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", node):
+                found.append(at)
+    scan(root, "")
+    if found:
+        raise Malformed("model.scene: %r is named in %s as well as in %s.gain: beyond this kind (only a gain, named nowhere "
+                        "else, makes the loop affine in it)" % (p, found[0], blocks[0]))
+    return blocks[0]
+
+
+def check_stability_loop_max(c):
+    """stability-loop-max (check/stability_loop_max_check.hpp): p the gain of one block alone, so the
+    loop's M(p) = (2 - p) M(1) + (p - 1) M(2) (the realisations at p = 1 and 2: A, B equal, C, D doubled;
+    D_E D_V = D_V D_E = 0); on each cover interval [a, b] one P > 0 with P - M^T P M > 0 at both ends
+    (convex in p: stable on all of it), and at claim.hi P, w with w^T P w < 0: NOT stable (Stein inertia);
+    hi = 0: M(0) with an eigenvalue outside the circle, so M(p) for every small p > 0."""
+    model, claim, evidence = parts(c)
+    only(model, ("scene", "set", "name"), "model")
+    only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
+    only(evidence, ("cover", "unstable_at"), "evidence")
+    p = model.get("name")
+    if not isinstance(p, str) or not isinstance(model.get("scene"), str):
+        raise Malformed("model.name, model.scene: missing or not strings")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    if p in sets:
+        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
+    _, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
+    if lo < 0:
+        raise Malformed("claim.lo: negative (sup p >= 0)")
+    k = claim.get("conserved", 0)
+    if not isinstance(k, int) or isinstance(k, bool) or k < 0:
+        raise Malformed("claim.conserved: not an integer >= 0")
+    block = gain_block(model["scene"], p)
+    un = evidence.get("unstable_at")
+    if not isinstance(un, dict):
+        raise Malformed("evidence.unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
+    only(un, ("at", "P", "w"), "evidence.unstable_at")
+    if exact(un, "at", "evidence.unstable_at") != hi:
+        raise Malformed("evidence.unstable_at.at: not claim.hi")
+    cover = evidence.get("cover", [])
+    if not isinstance(cover, list) or len(cover) > MAX_LOOP_COVER:
+        raise Malformed("evidence.cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
+    if (not cover) != (lo == 0):
+        raise Malformed("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
+    at_p = []
+    for v in (1, 2):
+        m = {"scene": model["scene"], "set": dict(sets)}
+        m["set"][p] = str(v)
+        at_p.append(loop_quotient(m))
+    (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p
+    g = 0 if block == "environment" else 1
+    for i, (x, y) in enumerate(zip(b1, b2)):
+        want = (x[0], x[1], [[2 * v for v in row] for row in x[2]], [[2 * v for v in row] for row in x[3]]) if i == g else x
+        if tuple(y) != tuple(want):
+            return False, "the %s's realisation at %s = 2 is not the one at 1 with C and D doubled: not shown affine" % (block, p)
+    if len(b1) > 1:
+        DE, DV = b1[0][3], b1[1][3]
+        if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
+            raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
+    count = len(a1) + len(r1) - own1
+    if count != len(a2) + len(r2) - own2:
+        return False, "the conserved quantities differ at %s = 1 and 2" % p
+    if count != k:
+        return False, "claim: %d conserved quantities, but the loop has %d" % (k, count)
+    why = ""
+    for bits in (128, 256, 512):
+        M1, M2 = loop_quotient_matrix(l1, L1, a1, r1, bits), loop_quotient_matrix(l2, L2, a2, r2, bits)
+        n = len(M1)
+
+        def M_at(x):
+            u, v = Iv(2 - x), Iv(x - 1)
+            return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
+        Pu = symmetric_evidence(un, "evidence.unstable_at", n)
+        w = frac_matrix({"w": [un.get("w")]}, "w", 1, n, "evidence.unstable_at")[0]
+        if sum(w[i] * Pu[i][j] * w[j] for i in range(n) for j in range(n)) >= 0:
+            return False, "evidence.unstable_at: w^T P w >= 0"
+        if not stein_shown(Pu, M_at(hi)):
+            why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
+            continue
+        start, ok = Fraction(0), True
+        for i, piece in enumerate(cover):
+            where = "evidence.cover[%d]" % i
+            if not isinstance(piece, dict):
+                raise Malformed(where + ": not an object")
+            only(piece, ("to", "P"), where)
+            to = exact(piece, "to", where)
+            if to <= start:
+                raise Malformed(where + ".to: not above the interval's start")
+            if i + 1 == len(cover) and to != lo:
+                raise Malformed(where + ".to: the last interval ends at claim.lo")
+            P = symmetric_evidence(piece, where, n)
+            if not semidefinite(P, True):
+                return False, where + ".P is not positive definite"
+            for e in (start, to):
+                if not stein_shown(P, M_at(e)):
+                    why, ok = "%s at %s = %s: P - M^T P M not shown positive definite" % (where, p, short(e)), False
+                    break
+            if not ok:
+                break
+            start = to
+        if not ok:
+            continue
+        if hi == 0:
+            return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits)" % (
+                p, p, p, p, n, p, bits)
+        return True, "sup %s in [%s, %s]: M(%s) affine (%d states, the %s's gain alone); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
+            p, short(lo), short(hi), p, n, block, short(lo), len(cover), p, short(hi), bits)
+    return False, "claim: sup %s in [%s, %s], but %s at 512 bits" % (p, short(lo), short(hi), why)
 
 
 def lagrange(xs, ys):
@@ -4657,7 +4828,7 @@ def check(c):
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max,
-                "stability-loop": check_stability_loop, "wedge": check_wedge}
+                    "stability-loop": check_stability_loop, "stability-loop-max": check_stability_loop_max, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:
             raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))

@@ -1205,6 +1205,42 @@ TEST(StabilityCheck, SceneByHand) {
   refused("not toml = = 1", set, "not TOML");
 }
 
+// stability-loop-max's reading of the parameter (check/stability_loop_max_check.hpp): a mass-damper held by a
+// spring, a wall 100 g, a coupling 1/(1000 z) (no feedthrough: D_E D_V = 0). Malformed: g not a parameter,
+// not the whole gain, named in another expression too, given a value, a coupling with feedthrough beside the
+// wall's (the loop solved through (I + D_E D_V)^-1: not affine), unstable_at not at hi, no cover for lo > 0.
+// The evidence P = I proves nothing: w^T P w = 1 >= 0 at hi (refuted); with a w of its own, I - M^T M > 0 fails.
+TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
+  auto cert = [](const std::string& gain, const std::string& coupling, const std::string& name, const nlohmann::json& set) {
+    const std::string scene = "[scene]\nT = \"1/100\"\n[parameters]\ng = \"1\"\n[[device]]\nname = \"a\"\nm = \"1\"\nb = \"2\"\n"
+                              "[[operator]]\nname = \"h\"\ndofs = [\"a\"]\nk = \"10\"\n[environment]\ngain = \"" + gain +
+                              "\"\ntf = \"100\"\n[coupling]\ntf = \"" + coupling + "\"\n";
+    const nlohmann::json I3 = {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}};
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop-max"},
+                          {"model", {{"scene", scene}, {"set", set}, {"name", name}}},
+                          {"claim", {{"status", "certified"}, {"lo", "1"}, {"hi", "2"}}},
+                          {"evidence", {{"cover", {{{"to", "1"}, {"P", I3}}}}, {"unstable_at", {{"at", "2"}, {"P", I3}, {"w", {"1", "0", "0"}}}}}}};
+  };
+  const nlohmann::json none = nlohmann::json::object();
+  const Verdict v = check_certificate(cert("g", "1/(1000*z)", "g", none));
+  EXPECT_FALSE(v.verified);
+  EXPECT_NE(v.reason.find("w^T P w"), std::string::npos) << v.reason;
+  auto own_w = cert("g", "1/(1000*z)", "g", none);
+  own_w["evidence"]["unstable_at"]["P"] = {{"-1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}};
+  EXPECT_FALSE(check_certificate(own_w).verified);
+  EXPECT_THROW(check_certificate(cert("g", "1/(1000*z)", "q", none)), InputError);             // not a parameter
+  EXPECT_THROW(check_certificate(cert("2*g", "1/(1000*z)", "g", none)), InputError);           // not the whole gain
+  EXPECT_THROW(check_certificate(cert("g", "g/(1000*z)", "g", none)), InputError);             // named elsewhere
+  EXPECT_THROW(check_certificate(cert("g", "1/(1000*z)", "g", {{"g", "1"}})), InputError);     // given a value
+  EXPECT_THROW(check_certificate(cert("g", "1/1000", "g", none)), InputError);                 // D_E D_V != 0
+  auto moved = cert("g", "1/(1000*z)", "g", none);
+  moved["evidence"]["unstable_at"]["at"] = "3";
+  EXPECT_THROW(check_certificate(moved), InputError);
+  auto bare = cert("g", "1/(1000*z)", "g", none);
+  bare["evidence"].erase("cover");
+  EXPECT_THROW(check_certificate(bare), InputError);
+}
+
 // The closed loop of a stability-loop certificate (check/stability_loop_check.hpp), by hand: one mass
 // m = 2 under a spring wall E = K = 100, T = 1/10, no delay. The state (v, x): Phi = [[1, 0], [T, 1]],
 // Gamma = [T/m; T^2/(2m)], u = -K x, so M = [[1, -K T/m], [T, 1 - K T^2/(2m)]] = [[1, -5], [1/10, 3/4]]

@@ -221,6 +221,37 @@ def loop_cert(scene, stable, P, w=None):
     return c
 
 
+class StabilityLoopMax(unittest.TestCase):
+    """test_check.cpp's StabilityLoopMaxCheck.ReadingOfTheGain: the parameter must be the whole gain of one
+    block, named nowhere else, without a value, the loop without a feedthrough product; P = I proves nothing."""
+
+    def cert(self, gain="g", coupling="1/(1000*z)", name="g", sets=None):
+        scene = ('[scene]\nT = "1/100"\n[parameters]\ng = "1"\n[[device]]\nname = "a"\nm = "1"\nb = "2"\n[[operator]]\n'
+                 'name = "h"\ndofs = ["a"]\nk = "10"\n[environment]\ngain = "%s"\ntf = "100"\n[coupling]\ntf = "%s"\n' % (gain, coupling))
+        I3 = [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]
+        return {"certificate": "hapstab", "version": 1, "kind": "stability-loop-max",
+                "model": {"scene": scene, "set": sets or {}, "name": name},
+                "claim": {"status": "certified", "lo": "1", "hi": "2"},
+                "evidence": {"cover": [{"to": "1", "P": I3}], "unstable_at": {"at": "2", "P": I3, "w": ["1", "0", "0"]}}}
+
+    def test_reading_of_the_gain(self):
+        code, why = hc.check(self.cert())
+        self.assertEqual(code, 1, why)
+        self.assertIn("w^T P w", why)
+        c = self.cert()
+        c["evidence"]["unstable_at"]["P"] = [["-1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]
+        self.assertEqual(hc.check(c)[0], 1)
+        for bad in (self.cert(name="q"), self.cert(gain="2*g"), self.cert(coupling="g/(1000*z)"), self.cert(sets={"g": "1"}),
+                    self.cert(coupling="1/1000")):
+            self.assertEqual(hc.check(bad)[0], 2, hc.check(bad)[1])
+        c = self.cert()
+        c["evidence"]["unstable_at"]["at"] = "3"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = self.cert()
+        del c["evidence"]["cover"]
+        self.assertEqual(hc.check(c)[0], 2)
+
+
 class StabilityLoop(unittest.TestCase):
     """The C++ StabilityLoopCheck tests: a mass m = 2 under a spring wall K = 100 at T = 1/10, M =
     [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""

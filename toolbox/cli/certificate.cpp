@@ -718,17 +718,7 @@ std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text,
   return std::nullopt;
 }
 
-nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable) {
-  nlohmann::json j = certificate_header("stability-loop");
-  j["model"] = loop_model_json(text, T);
-  check::SceneLoopMatrix sm;
-  try {
-    sm = check::scene_loop_matrix(j["model"], 128);  // on the quotient by the conserved quantities
-  } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this ") + (text.scene.empty() ? "loop" : "scene") +
-                     " (" + e.what() + "): no certificate");
-  }
-  const auto& M = sm.M;
+SchurDecision stein_evidence(const std::vector<std::vector<std::pair<rational, rational>>>& M) {
   BallMatrix Mb(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
   for (size_t i = 0; i < M.size(); ++i)
     for (size_t k = 0; k < M.size(); ++k) {
@@ -767,12 +757,27 @@ nlohmann::json stability_loop_certificate(const StabilityText& text, const ratio
       Bal.rad(i, k) = std::ldexp(Mb.rad(i, k), e[size_t(k)] - e[size_t(i)]);
     }
   SchurDecision d = schur_decide(Bal);
-  if (!d.stable)
-    throw InputError("--certificate: no Stein certificate for the checker's closed-loop matrix (" + d.why + "): no certificate");
+  if (!d.stable) return d;
   for (Eigen::Index i = 0; i < n; ++i) {
     for (Eigen::Index k = 0; k < n; ++k) d.P(i, k) = std::ldexp(d.P(i, k), -e[size_t(i)] - e[size_t(k)]);
     if (d.w.size() == n) d.w(i) = std::ldexp(d.w(i), e[size_t(i)]);
   }
+  return d;
+}
+
+nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable) {
+  nlohmann::json j = certificate_header("stability-loop");
+  j["model"] = loop_model_json(text, T);
+  check::SceneLoopMatrix sm;
+  try {
+    sm = check::scene_loop_matrix(j["model"], 128);  // on the quotient by the conserved quantities
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this ") + (text.scene.empty() ? "loop" : "scene") +
+                     " (" + e.what() + "): no certificate");
+  }
+  SchurDecision d = stein_evidence(sm.M);
+  if (!d.stable)
+    throw InputError("--certificate: no Stein certificate for the checker's closed-loop matrix (" + d.why + "): no certificate");
   if (*d.stable != stable)
     throw NumericalError("--certificate: the checker's closed-loop matrix and the loop as written got different verdicts (a "
                          "defect): no certificate");

@@ -8,6 +8,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,7 @@
 #include "hapstab/contact/limit_cycle.hpp"
 #include "hapstab/contact/wedge.hpp"
 #include "hapstab/lmi/passivity_level.hpp"
+#include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/sim/loop.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
@@ -104,6 +107,11 @@ bool beyond_stability_kind(const stability::Loop& loop);
 /// finds for the checker's own closed-loop matrix. Checked before it is returned; InputError (exit 2)
 /// when the checker does not take the model or no P proves the verdict.
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable);
+
+/// The Stein P (and w) that schur_decide finds for a closed-loop matrix given by entrywise enclosures
+/// (the checker's own M), balanced first by powers of two (exact) and scaled back: P - M^T P M > 0
+/// and P > 0 (stable) or w^T P w < 0 (NOT stable). `stable` unset when no P was found.
+SchurDecision stein_evidence(const std::vector<std::vector<std::pair<rational, rational>>>& M);
 
 /// NOT stable by a hidden mode (kind stability-loop, claim exact, evidence.hidden): a block of the loop as
 /// written -- an ss environment or coupling, an ss device or operator (by name) -- whose unobservable

@@ -34,6 +34,7 @@
 #include <memory>
 
 #include "cli/certificate.hpp"
+#include "cli/loop_max_certificate.hpp"
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 #include "hapstab/conservatism/theorem5_max.hpp"
@@ -361,12 +362,23 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
   return j;
 }
 
+// The certificate (kind stability-loop-max): sup p in [lo, hi], its ends a relative 10^-12 .. 10^-6 outside
+// the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
+// is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
+nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m) {
+  if (m.outcome == Outcome::holds && m.open_at_zero)
+    throw InputError("--certificate: the loop at " + o.max_name + " = 0 is only marginally stable (a position that nothing holds "
+                     "there): the first-order cover at 0 has no certificate form yet (`stability --scene S --set " + o.max_name +
+                     "=VALUE --certificate FILE` certifies the verdict at one value): no certificate");
+  const nlohmann::json c = cli::stability_loop_max_certificate(o.scene, o.sets, o.max_name, m);
+  cli::write_certificate(o.certificate, c);
+  return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
-  if (!o.certificate.empty())
-    throw InputError("--certificate: a certificate of stability --scene --max with " +
-                     (sc.loop.coupling ? std::string("a [coupling]") : o.conservatism ? std::string("--conservatism")
-                                                                       : std::to_string(sc.loop.dofs()) + " DOF") +
-                     " is not implemented yet (one-DOF scenes without a coupling have one)");
+  if (!o.certificate.empty() && o.conservatism)
+    throw InputError("--certificate: stability --max --conservatism has no certificate (Theorem 5's side is a bracket of LMI "
+                     "verdicts); without --conservatism the exact side's supremum has one");
   scene::check_command(sc.root, o.scene, "stability");
   const std::map<std::string, rational> params = cli::parse_sets(o.sets);
   const auto it = sc.parameters.find(o.max_name);
@@ -399,6 +411,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
   std::string text;
   progress.stage(not_affine.empty() ? "the supremum: certified crossing of the closed-loop matrix"
                                      : "the supremum: bisection on certified verdicts");
+  if (!not_affine.empty() && !o.certificate.empty())
+    throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
+                     "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
+                     "certifies one verdict): no certificate");
   if (!not_affine.empty()) {
     const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
     j = verdict_change_json(b, o, not_affine);
@@ -420,6 +436,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
     text = t.str();
   } else {
     const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
+    const nlohmann::json certified = o.certificate.empty() ? nlohmann::json() : write_loop_max_certificate(o, m);
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
            {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
@@ -452,6 +469,11 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
         t << "\n  " << m.note << "\n";
         text = t.str();
       }
+    }
+    if (!certified.is_null()) {  // what the certificate proves, printed beside the answer
+      j["certificate_claim"] = certified;
+      text += "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
+              certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
     }
   }
   if (t5) {

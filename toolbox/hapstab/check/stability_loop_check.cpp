@@ -24,7 +24,8 @@ namespace {
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
 using rational_matrix::Mat;
-using BallRows = std::vector<std::vector<flint::Ball>>;
+using detail::BallRows;
+using detail::LoopMatrix;
 
 constexpr size_t kMaxOrder = 160;
 constexpr long kMaxHoldNorm = 4096;  // |A T|'s largest row sum (loop_matrix)  // M's order: exact elimination of Q_mid - r I stays within seconds
@@ -350,11 +351,9 @@ rational balanced_norm(Mat A) {
   return norm;
 }
 
-struct LoopMatrix {
-  BallRows M;            // on the quotient by the conserved quantities (all of M when there are none)
-  size_t conserved = 0;  // k, the model's (the checker's own, SceneLoop::own_conserved, not counted)
-  size_t order = 0;      // M's order before the quotient
-};
+}  // namespace
+
+namespace detail {
 
 LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   const Plant pl = plant(L);
@@ -475,7 +474,14 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     }
     M11 = right_reduced(M11, kept_rows);
   }
-  return {M11, q.at.size() + right.size() - L.own_conserved, order};
+  const Mat DED = rational_matrix::mul(E.D, V.D), DDE = rational_matrix::mul(V.D, E.D);
+  const auto zero = [](const Mat& X) {
+    for (const auto& row : X)
+      for (const rational& x : row)
+        if (!x.is_zero()) return false;
+    return true;
+  };
+  return {M11, q.at.size() + right.size() - L.own_conserved, order, {E.A, E.B, E.C, E.D, V.A, V.B, V.C, V.D}, !(zero(DED) && zero(DDE))};
 }
 
 // Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
@@ -553,12 +559,12 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
   return false;
 }
 
-}  // namespace
+}  // namespace detail
 
 SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits) {
   const detail::SceneLoop L = detail::read_scene_loop(model);
   flint::BallPrecision scope(bits);
-  const LoopMatrix lm = loop_matrix(L, bits);
+  const LoopMatrix lm = detail::loop_matrix(L, bits);
   SceneLoopMatrix out;
   out.conserved = lm.conserved;
   out.M.resize(lm.M.size());
@@ -597,7 +603,9 @@ SchurCohn hurwitz(const P& p) {
 // a root lambda != 0 with Re lambda >= 0, so e^{lambda T} has |.| >= 1 and is not 1 (lambda T = 2 pi j m
 // is impossible for an algebraic lambda != 0 and a rational T: pi is transcendental). Either way M has
 // an eigenvalue != 1 with |z| >= 1.
-Verdict hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h) {
+}  // namespace
+
+Verdict detail::hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h) {
   using namespace rational_matrix;
   if (!h.is_object()) throw InputError("evidence.hidden: not an object");
   const auto text = [&](const char* key) {
@@ -675,8 +683,6 @@ Verdict hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::json& h)
                     "): M has an eigenvalue lambda != 1 with |lambda| >= 1"};
 }
 
-}  // namespace
-
 Verdict check_stability_loop(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "stable", "conserved"}, "claim");
@@ -686,7 +692,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
     if (!claim.contains("status") || claim.at("status") != "exact")
       throw InputError("claim.status: a hidden mode's verdict is \"exact\" (rational evidence, no enclosure)");
     if (!claim.contains("stable") || claim.at("stable") != false) throw InputError("claim.stable: a hidden mode shows NOT stable (false) only");
-    return hidden_mode_verdict(detail::read_scene_loop(model), evidence.at("hidden"));
+    return detail::hidden_mode_verdict(detail::read_scene_loop(model), evidence.at("hidden"));
   }
   detail::only_fields(evidence, {"P", "w"}, "evidence");
   if (!claim.contains("status") || claim.at("status") != "certified")
@@ -701,7 +707,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   std::string sign;
   if (stable) {
     // exactly for small P; beyond, by the congruence test (exact elimination of large dyadic P is slow)
-    const bool pd = Pm.size() <= 24 ? rational_matrix::positive_definite(Pm, true) : positive_definite_within(Pm, rational(0));
+    const bool pd = Pm.size() <= 24 ? rational_matrix::positive_definite(Pm, true) : detail::positive_definite_within(Pm, rational(0));
     if (!pd) return {false, "claim: stable, but evidence.P is not shown positive definite"};
     sign = "P > 0";
   } else {
@@ -716,7 +722,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   std::string why;
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
-    const LoopMatrix lm = loop_matrix(L, bits);
+    const LoopMatrix lm = detail::loop_matrix(L, bits);
     if (static_cast<long>(lm.conserved) != conserved)
       return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the loop has " +
                          std::to_string(lm.conserved) + " (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 of the wall or coupling, "
@@ -725,7 +731,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
     if (M.size() != Pm.size())
       throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +
                        (lm.conserved || L.own_conserved ? " (on the quotient by its conserved quantities)" : ""));
-    if (stein_holds(Pm, M, why))
+    if (detail::stein_holds(Pm, M, why))
       return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(lm.order) + " states, " +
                         std::to_string(L.dofs()) + " DOF, delay " + rational(L.delay + L.fraction).str() +
                         " samples) built from the model, e^{AT} in balls (" + std::to_string(bits) + " bits)" +

@@ -73,15 +73,40 @@
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/rational_matrix.hpp"
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
 namespace hapstab::check {
+
+namespace detail {
+// The pieces check/stability_loop_max_check.hpp shares (its certificates are about the same loop).
+using BallRows = std::vector<std::vector<flint::Ball>>;
+struct LoopMatrix {
+  BallRows M;            ///< on the quotient by the conserved quantities (all of M when there are none)
+  size_t conserved = 0;  ///< k, the model's (the checker's own, SceneLoop::own_conserved, not counted)
+  size_t order = 0;      ///< M's order before the quotient
+  /// the controller's realisations as built here: A_E, B_E, C_E, D_E, A_V, B_V, C_V, D_V (V empty without a coupling)
+  std::vector<rational_matrix::Mat> controller;
+  bool feedthrough_loop = false;  ///< D_E D_V != 0 or D_V D_E != 0: u and x_e solved through W = (I + D_E D_V)^-1
+};
+/// M of the loop L as above, e^{AT} in balls at `bits`.
+LoopMatrix loop_matrix(const SceneLoop& L, long bits);
+/// Q = P - M^T P M > 0 for every M in the balls (the header's test); else false, `why` set.
+bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
+/// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
+bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
+/// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.
+Verdict hidden_mode_verdict(const SceneLoop& L, const nlohmann::json& hidden);
+}  // namespace detail
 
 /// M of the scene's loop as above (model: {"scene", "set"}), on the quotient by the conserved
 /// quantities: each entry's enclosure [lo, hi], exact rationals, computed in balls at `bits` (for the

@@ -1,0 +1,74 @@
+"""A `stability-loop-max` certificate (check/stability_loop_max_check.hpp) end to end: hapstab writes it
+for `stability --scene S --max NAME`, both checkers verify it, and each hand edit below gets the exit
+code it must from both (1 refuted: the evidence does not prove the edited claim; 2 malformed: the model
+is beyond the kind). The ctest certificate_loop_max runs it on tests/cli/scenes/loop_max_held_devices.toml.
+
+  loop_max_case.py HAPSTAB SCENE NAME
+exit 0 when every expectation holds, else 1 (each failure printed)."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+from cert_edit import deleted, with_field
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def exits(hapstab, cert, tmp):
+    path = os.path.join(tmp, "m.json")
+    with open(path, "w") as f:
+        json.dump(cert, f)
+    return (subprocess.run([hapstab, "check", path], capture_output=True).returncode,
+            subprocess.run(["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py"), path], capture_output=True).returncode)
+
+
+def main():
+    hapstab, scene, name = sys.argv[1:4]
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "c.json")
+        r = subprocess.run([hapstab, "stability", "--scene", scene, "--max", name, "--certificate", path, "--quiet"],
+                           capture_output=True, text=True)
+        if r.returncode != 0 or not os.path.exists(path):
+            print("FAIL: the producer wrote no certificate (exit %d): %s" % (r.returncode, r.stderr.strip()))
+            return 1
+        with open(path) as f:
+            cert = json.load(f)
+        claim, cover = cert["claim"], cert["evidence"]["cover"]
+        text = cert["model"]["scene"]
+
+        def claim_hi(v):
+            c = with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], v)
+            return with_field(c, ["evidence", "unstable_at", "at"], v)
+
+        def claim_lo(v):
+            c = with_field(deleted(cert, ["claim", "printed_lo"]), ["claim", "lo"], v)
+            return with_field(c, ["evidence", "cover", len(cover) - 1, "to"], v)
+        P00 = cover[0]["P"][0][0]
+        neg = P00[1:] if P00.startswith("-") else "-" + P00
+        cases = [("unmutated", cert, 0),
+                 ("hi lowered below the crossing (hi/2: the loop is stable there)", claim_hi(str(Fraction(claim["hi"]) / 2)), 1),
+                 ("lo written as an expression", claim_lo("2*%s" % claim["hi"]), 2),
+                 ("lo raised to hi (NOT stable there)", claim_lo(claim["hi"]), 1),
+                 ("lo above hi", claim_lo(str(2 * Fraction(claim["hi"]))), 1),
+                 ("the first interval's P00 negated", with_field(cert, ["evidence", "cover", 0, "P", 0, 0], neg), 1),
+                 ("conserved quantities claimed", with_field(cert, ["claim", "conserved"], 1), 1),
+                 ("the gain named in another expression too", with_field(cert, ["model", "scene"], text.replace('B = "5"', 'B = "5*%s/%s"' % (name, name))), 2),
+                 ("the gain not the parameter alone", with_field(cert, ["model", "scene"], text.replace('gain = "%s"' % name, 'gain = "2*%s"' % name)), 2),
+                 ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2),
+                 ("the cover dropped", deleted(cert, ["evidence", "cover"]), 2),
+                 ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
+        failures = 0
+        for what, c, want in cases:
+            got = exits(hapstab, c, tmp)
+            ok = got == (want, want)
+            failures += not ok
+            print("%s %s: hapstab check %d, independent %d (want %d)" % ("ok  " if ok else "FAIL", what, got[0], got[1], want))
+        print("loop_max_case: %d cases, %d failed" % (len(cases), failures))
+        return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,190 @@
+// cli/loop_max_certificate.cpp -- see loop_max_certificate.hpp.
+#include "cli/loop_max_certificate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "cli/certificate.hpp"
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/result.hpp"
+
+namespace hapstab::cli {
+
+namespace {
+
+using check::detail::BallRows;
+using check::rational_matrix::Mat;
+
+constexpr long kBits = 128;
+constexpr size_t kMaxIntervals = 4096;
+
+// M(p) = (2 - p) M1 + (p - 1) M2 (check/stability_loop_max_check.hpp).
+BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
+  const flint::Ball a(rational(2 - p)), b(rational(p - 1));
+  BallRows M = M1;
+  for (size_t i = 0; i < M.size(); ++i)
+    for (size_t j = 0; j < M.size(); ++j) M[i][j] = a * M1[i][j] + b * M2[i][j];
+  return M;
+}
+
+std::vector<std::vector<std::pair<rational, rational>>> intervals(const BallRows& M) {
+  std::vector<std::vector<std::pair<rational, rational>>> out(M.size());
+  for (size_t i = 0; i < M.size(); ++i)
+    for (const auto& x : M[i]) {
+      const auto e = x.bounds();
+      out[i].emplace_back(e.lo, e.hi);
+    }
+  return out;
+}
+
+Mat exact(const Eigen::MatrixXd& P) {
+  Mat out(static_cast<size_t>(P.rows()), std::vector<rational>(static_cast<size_t>(P.cols())));
+  for (Eigen::Index i = 0; i < P.rows(); ++i)
+    for (Eigen::Index j = 0; j < P.cols(); ++j) out[size_t(i)][size_t(j)] = exact_rational(P(i, j));
+  return out;
+}
+
+nlohmann::json rows(const Mat& P) {
+  nlohmann::json r = nlohmann::json::array();
+  for (const auto& row : P) {
+    nlohmann::json x = nlohmann::json::array();
+    for (const rational& v : row) x.push_back(v.str());
+    r.push_back(x);
+  }
+  return r;
+}
+
+// x rounded down to a multiple of 2^-k, 2^-k <= ulp (a short end for an interval whose width is ~1000 ulp).
+rational round_down(const rational& x, const rational& ulp) {
+  integer scale = 1;
+  while (rational(1, 1) / rational(scale) > ulp) scale *= 2;
+  const integer n = integer(numerator(x) * scale / denominator(x));  // floor for x >= 0
+  return rational(n) / rational(scale);
+}
+
+// P's entries to `bits` significant bits (a shorter certificate; the caller checks it still passes).
+Mat rounded(const Eigen::MatrixXd& P, int bits) {
+  Eigen::MatrixXd R = P;
+  for (Eigen::Index i = 0; i < R.rows(); ++i)
+    for (Eigen::Index j = 0; j < R.cols(); ++j) {
+      int e = 0;
+      const double f = std::frexp(P(i, j), &e);
+      R(i, j) = std::ldexp(std::round(std::ldexp(f, bits)), e - bits);
+    }
+  return exact(R);
+}
+
+}  // namespace
+
+namespace {
+
+// The certificate of "stable on [0, lo], NOT stable at hi" (lo = hi = 0: sup = 0), or why there is none.
+struct Attempt {
+  nlohmann::json evidence;
+  std::string why;  ///< "" when the evidence is complete
+};
+
+Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
+                     bool open_at_zero) {
+  Attempt out;
+  std::string why;
+  const SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
+  if (!u.stable || *u.stable) return {{}, "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")"};
+  out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
+  std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
+  rational b = lo, width = lo;
+  while (b > 0) {
+    if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [0, " + check::detail::decimal(lo) + "]"};
+    // [a, b] with the Stein P of its midpoint: the width doubled from the last one, halved until P passes at both ends
+    rational w = std::min(rational(2 * width), b), a;
+    std::optional<Mat> P;
+    for (int halving = 0; halving < 60 && !P; ++halving, w /= 2) {
+      a = w == b ? rational(0) : round_down(b - w, w / 1024);
+      const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, (a + b) / 2)));
+      if (!d.stable || !*d.stable) continue;
+      for (const int bits : {24, 53}) {
+        const Mat Pk = rounded(d.P, bits);
+        if (check::detail::stein_holds(Pk, loop_at(M1, M2, a), why) && check::detail::stein_holds(Pk, loop_at(M1, M2, b), why)) {
+          P = Pk;
+          break;
+        }
+      }
+    }
+    if (!P)
+      return {{}, "no cover of [0, " + check::detail::decimal(lo) + "] below " + name + " = " + check::detail::decimal(b) +
+                      (open_at_zero ? " (M(0) is only marginally stable: a position that nothing holds at " + name +
+                                          " = 0; the first-order cover of stability/loop_max.hpp has no certificate form)"
+                                    : "")};
+    pieces.emplace_back(b, *P);
+    width = b - a;
+    b = a;
+  }
+  nlohmann::json cover = nlohmann::json::array();
+  for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) cover.push_back({{"to", it->first.str()}, {"P", rows(it->second)}});
+  if (!cover.empty()) out.evidence["cover"] = cover;
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
+                                              const std::string& name, const stability::LoopMax& m) {
+  nlohmann::json j = certificate_header("stability-loop-max");
+  j["model"] = scene_model_json(scene_path, sets);
+  if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
+  j["model"]["name"] = name;
+  check::detail::LoopMatrix m1, m2;
+  const auto at = [&](long v) {
+    nlohmann::json model{{"scene", j["model"]["scene"]}, {"set", j["model"]["set"]}};
+    model["set"][name] = std::to_string(v);
+    return check::detail::loop_matrix(check::detail::read_scene_loop(model), kBits);
+  };
+  try {
+    flint::BallPrecision scope(kBits);
+    m1 = at(1), m2 = at(2);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
+  }
+  flint::BallPrecision scope(kBits);
+  // the claim's ends: 0 and 0 (sup = 0), or decimals of 16 digits delta below and above the crossing's
+  // enclosure (relative), for the first delta whose Stein certificates a double solve finds: the
+  // narrowest enclosure this evidence proves (the crossing's own, Krawczyk's, is narrower still)
+  std::vector<std::pair<std::string, std::string>> ends;
+  if (m.outcome == Outcome::fails) {
+    ends.emplace_back("0", "0");
+  } else if (m.outcome == Outcome::holds) {
+    for (const rational& delta : {rational(1, 1000000000000), rational(1, 10000000000), rational(1, 100000000), rational(1, 1000000)})
+      ends.emplace_back(decimal_outward(std::min(rational(m.crossing.lo * (1 - delta)), m.stable_to), 16, -1),
+                        decimal_outward(m.crossing.hi * (1 + delta), 16, +1));
+  } else {
+    throw InputError("--certificate: sup " + name + " is undecided: no certificate");
+  }
+  std::string why;
+  for (const auto& [plo, phi] : ends) {
+    const rational lo = parse_rational(plo), hi = parse_rational(phi);
+    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, m.open_at_zero);
+    if (!a.why.empty()) {
+      why = a.why;
+      continue;
+    }
+    j["evidence"] = a.evidence;
+    j["claim"] = {{"quantity", "sup " + name + " = sup{p0 > 0: the scene's loop as written is stable for every " + name +
+                                   " in (0, p0)}, the closed-loop matrix built by the checker"},
+                  {"status", "certified"},
+                  {"lo", lo.str()},
+                  {"hi", hi.str()},
+                  {"printed_lo", plo},
+                  {"printed_hi", phi}};
+    if (m1.conserved > 0) j["claim"]["conserved"] = m1.conserved;
+    verify_before_writing(j);
+    return j;
+  }
+  throw InputError("--certificate: " + why + ": no certificate");
+}
+
+}  // namespace hapstab::cli

@@ -1,0 +1,35 @@
+// cli/loop_max_certificate.hpp -- the producer of a `stability-loop-max` certificate
+// (check/stability_loop_max_check.hpp): `hapstab stability --scene S --max p --certificate FILE`
+// beyond one DOF (or with a [coupling]), where p is the whole gain of [environment] or [coupling].
+//
+// From the checker's own closed-loop matrices M(1) and M(2) (check/stability_loop_check.hpp), M(p) =
+// (2 - p) M(1) + (p - 1) M(2) in balls. NOT stable at hi: schur_decide's Stein P and w at M(hi).
+// The claim's ends a relative delta outside the crossing's enclosure (Krawczyk's, stability/loop_max.hpp,
+// is too narrow for a Stein P solved in double; the certificate proves the wider one it prints).
+// Stable on [0, lo]: a cover built downward from lo -- at each right end b, the Stein P of M(b)
+// (schur_decide), and the lowest left end a that the same P also passes at M(a) (the width doubled
+// from the last one, halved until it passes: at most 60 halvings), then b := a, until a = 0. Every
+// piece is checked by the checker's test as it is made, and the whole certificate by check/ before
+// it is returned.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/stability/loop_max.hpp"
+
+namespace hapstab::cli {
+
+/// The certificate of sup p in [lo, hi] (claim.printed_lo, printed_hi: decimals of 16 digits, the
+/// caller prints them) with lo <= stable_to and hi above the crossing, each a relative delta = 10^-12,
+/// 10^-10, 10^-8 or 10^-6 outside the crossing's enclosure (the first that a double Stein solve
+/// proves: the certificate's digits, fewer than the crossing's own); sup p = 0 where m fails (M(0) with
+/// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
+/// the gain alone, a loop not affine in it, M(0) not Schur stable (no cover can start at 0), no Stein P
+/// at a point, more than 4096 intervals, an undecided m.
+nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
+                                              const std::string& name, const stability::LoopMax& m);
+
+}  // namespace hapstab::cli

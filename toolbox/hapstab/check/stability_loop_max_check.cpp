@@ -1,0 +1,212 @@
+// hapstab/check/stability_loop_max_check.cpp -- see stability_loop_max_check.hpp.
+#include "hapstab/check/stability_loop_max_check.hpp"
+
+#include <cctype>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "hapstab/check/rational_matrix.hpp"
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+using detail::BallRows;
+using rational_matrix::Mat;
+
+constexpr size_t kMaxCover = 4096;  // intervals of the cover (each: two Stein tests)
+
+// Every identifier in `text` ([A-Za-z_][A-Za-z0-9_]*).
+std::vector<std::string> identifiers(const std::string& text) {
+  std::vector<std::string> out;
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isalpha(c) || c == '_') {
+      size_t j = i + 1;
+      while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
+      out.push_back(text.substr(i, j - i));
+      i = j;
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
+// The header's reading of p: "environment" or "coupling", the block whose `gain` is exactly p; p
+// named in no other string of the scene. InputError naming what is not so.
+std::string gain_block(const std::string& scene, const std::string& p) {
+  toml::table root;
+  try {
+    root = toml::parse(scene);
+  } catch (const toml::parse_error& e) {
+    throw InputError(std::string("model.scene: not TOML (") + std::string(e.description()) + ")");
+  }
+  const auto* params = root["parameters"].as_table();
+  if (!params || !params->contains(p)) throw InputError("model.name: '" + p + "' is not a parameter of the scene ([parameters])");
+  std::string block;
+  for (const char* b : {"environment", "coupling"})
+    if (const auto* t = root[b].as_table())
+      if (const auto* g = t->get("gain"); g && g->as_string() && g->as_string()->get() == p) {
+        if (!block.empty()) throw InputError("model.name: '" + p + "' is the gain of both [environment] and [coupling]");
+        block = b;
+      }
+  if (block.empty())
+    throw InputError("model.name: '" + p + "' is not the whole gain of [environment] or [coupling] (gain = \"" + p +
+                     "\"): beyond this kind (the loop must be affine in it)");
+  std::string where;
+  std::function<void(const toml::node&, const std::string&)> scan = [&](const toml::node& n, const std::string& at) {
+    if (const auto* t = n.as_table()) {
+      for (const auto& [k, v] : *t) {
+        const std::string key(k.str());
+        // labels and keywords, and the sections the loop's reading ignores, hold no expression of the loop
+        if (key == "name" || key == "dofs" || key == "domain" || key == "method") continue;
+        if (at.empty() && (key == "input" || key == "initial" || key == "simulate" || key == "reproduce" || key == "multidof")) continue;
+        scan(v, at.empty() ? key : at + "." + key);
+      }
+    } else if (const auto* a = n.as_array()) {
+      for (size_t i = 0; i < a->size(); ++i) scan(*a->get(i), at + "[" + std::to_string(i) + "]");
+    } else if (const auto* s = n.as_string()) {
+      if (at == block + ".gain" || at == "parameters." + p) return;
+      for (const auto& id : identifiers(s->get()))
+        if (id == p && where.empty()) where = at;
+    }
+  };
+  scan(root, "");
+  if (!where.empty())
+    throw InputError("model.scene: '" + p + "' is named in " + where + " as well as in " + block +
+                     ".gain: beyond this kind (only a gain, named nowhere else, makes the loop affine in it)");
+  return block;
+}
+
+nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long value) {
+  nlohmann::json m{{"scene", model.at("scene")}, {"set", model.contains("set") ? model.at("set") : nlohmann::json::object()}};
+  m["set"][p] = std::to_string(value);
+  return m;
+}
+
+// (2 - p) M1 + (p - 1) M2: M(p) of the affine family through M(1) and M(2).
+BallRows at(const BallRows& M1, const BallRows& M2, const rational& p) {
+  const flint::Ball a(rational(2 - p)), b(rational(p - 1));
+  BallRows M = M1;
+  for (size_t i = 0; i < M.size(); ++i)
+    for (size_t j = 0; j < M.size(); ++j) M[i][j] = a * M1[i][j] + b * M2[i][j];
+  return M;
+}
+
+Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n) {
+  const Mat P = detail::exact_matrix(obj, "P", where, n);
+  if (P.size() != n || P[0].size() != n)
+    throw InputError(where + ".P: order " + std::to_string(P.size()) + ", the loop's " + std::to_string(n));
+  if (!rational_matrix::symmetric(P)) throw InputError(where + ".P: not symmetric");
+  return P;
+}
+
+}  // namespace
+
+Verdict check_stability_loop_max(const nlohmann::json& cert) {
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  detail::only_fields(model, {"scene", "set", "name"}, "model");
+  detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
+  detail::only_fields(evidence, {"cover", "unstable_at"}, "evidence");
+  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
+  if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string");
+  const std::string p = model.at("name").get<std::string>();
+  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
+    throw InputError("model.set." + p + ": the parameter maximised has no value");
+  const detail::ClaimRange c = detail::claim_range(claim);
+  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  if (c.refuted) return {false, *c.refuted};
+  if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
+  const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
+  const std::string block = gain_block(model.at("scene").get<std::string>(), p);
+  const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, 1)), L2 = detail::read_scene_loop(model_at(model, p, 2));
+  // the evidence's shape first (malformed before anything is computed)
+  if (!evidence.contains("unstable_at")) throw InputError("evidence.unstable_at: missing (NOT stable at hi bounds sup p)");
+  const nlohmann::json& un = detail::object_field(evidence, "unstable_at", "evidence");
+  detail::only_fields(un, {"at", "P", "w"}, "evidence.unstable_at");
+  if (detail::exact_field(un, "at", "evidence.unstable_at") != c.hi)
+    throw InputError("evidence.unstable_at.at: not claim.hi (" + c.hi.str() + ")");
+  const nlohmann::json cover = evidence.contains("cover") ? evidence.at("cover") : nlohmann::json::array();
+  if (!cover.is_array() || cover.size() > kMaxCover)
+    throw InputError("evidence.cover: not an array of at most " + std::to_string(kMaxCover) + " intervals");
+  if (cover.empty() != c.lo.is_zero()) throw InputError("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])");
+  std::string why;
+  for (long bits : {128L, 256L, 512L}) {
+    flint::BallPrecision scope(bits);
+    const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
+    // affine in p (header): the gain block's A, B the same and C, D doubled at p = 2, the rest equal
+    const size_t g = block == "environment" ? 0 : 4;
+    for (size_t k = 0; k < 8; ++k) {
+      Mat want = m1.controller[k];
+      if (k == g + 2 || k == g + 3)
+        for (auto& row : want)
+          for (auto& x : row) x *= 2;
+      if (m2.controller[k] != want)
+        return {false, "the " + block + "'s realisation at " + p + " = 2 is not the one at 1 with C and D doubled: the loop is not " +
+                           "shown affine in " + p};
+    }
+    if (m1.feedthrough_loop)
+      throw InputError("model.scene: D_E D_V or D_V D_E is not 0 (u and x_e solved through (I + D_E D_V)^-1): the loop is not affine "
+                       "in " + p + ", beyond this kind");
+    if (m1.conserved != m2.conserved || m1.M.size() != m2.M.size())
+      return {false, "the conserved quantities differ at " + p + " = 1 and 2 (a checker defect or a model that is not affine)"};
+    if (static_cast<long>(m1.conserved) != conserved)
+      return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the loop has " + std::to_string(m1.conserved)};
+    const size_t n = m1.M.size();
+    // NOT stable at hi (or, hi = 0, at the limit M(0))
+    const Mat Pu = symmetric_P(un, "evidence.unstable_at", n);
+    const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",
+                                        "evidence.unstable_at", n);
+    if (w[0].size() != n) throw InputError("evidence.unstable_at.w: not of P's order");
+    rational q = 0;
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < n; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
+    if (q >= 0) return {false, "evidence.unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
+    if (!detail::stein_holds(Pu, at(m1.M, m2.M, c.hi), why)) {
+      why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + why;
+      continue;
+    }
+    // stable on [0, lo]: each interval's P at both ends
+    rational from = 0;
+    bool covered = true;
+    for (size_t k = 0; k < cover.size() && covered; ++k) {
+      const std::string where = "evidence.cover[" + std::to_string(k) + "]";
+      if (!cover[k].is_object()) throw InputError(where + ": not an object");
+      detail::only_fields(cover[k], {"to", "P"}, where);
+      const rational to = detail::exact_field(cover[k], "to", where);
+      if (to <= from) throw InputError(where + ".to: not above the interval's start " + from.str());
+      if (k + 1 == cover.size() && to != c.lo) throw InputError(where + ".to: the last interval ends at claim.lo (" + c.lo.str() + ")");
+      const Mat Pk = symmetric_P(cover[k], where, n);
+      const bool pd = n <= 24 ? rational_matrix::positive_definite(Pk, true) : detail::positive_definite_within(Pk, rational(0));
+      if (!pd) return {false, where + ".P is not shown positive definite"};
+      for (const rational& e : {from, to})
+        if (!detail::stein_holds(Pk, at(m1.M, m2.M, e), why)) {
+          why = where + " at " + p + " = " + e.str() + ": " + why;
+          covered = false;
+          break;
+        }
+      from = to;
+    }
+    if (!covered) continue;
+    const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(m1.order) + " states, " + std::to_string(L1.dofs()) +
+                             " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
+                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p + " the " + block + "'s gain alone)";
+    if (c.hi.is_zero())
+      return {true, "sup " + p + " = 0: " + loop + " has at p -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
+                        "inertia, " + std::to_string(bits) + " bits), and so has M(" + p + ") for every small " + p + " > 0"};
+    return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
+                      detail::decimal(c.lo) + "] by " + std::to_string(cover.size()) +
+                      " intervals, P > 0 with P - M^T P M > 0 at both ends of each (convex in " + p + "); NOT stable at " +
+                      detail::decimal(c.hi) + " (Stein inertia), " + std::to_string(bits) + " bits"};
+  }
+  return {false, "claim: sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "], but " + why + " at 512 bits"};
+}
+
+}  // namespace hapstab::check

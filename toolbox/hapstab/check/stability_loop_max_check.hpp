@@ -1,0 +1,45 @@
+// hapstab/check/stability_loop_max_check.hpp -- the checker of a `stability-loop-max` certificate:
+// the largest value of a gain p for which a scene's loop as written is stable, beyond one DOF
+// (`hapstab stability --scene S --max p --certificate FILE`, stability/loop_max.hpp; docs/stability.md):
+//   sup p = sup{ p0 > 0 : the loop is stable for every p in (0, p0) }   (0 when no p0 > 0 qualifies)
+// claimed in [lo, hi] (claim.status "certified", lo <= hi, the printed enclosure), sup = 0 with lo =
+// hi = 0. The loop is the `stability-loop` kind's (check/stability_loop_check.hpp: the closed-loop
+// matrix M built from the scene's text, on the quotient by its conserved quantities, claim.conserved).
+//
+// Model: {scene, set, name}: p = name is a parameter of the scene, not in set, the whole value of
+// exactly one `gain` key, of [environment] or of [coupling], and named in no other string of the scene
+// (every identifier of every string is compared; [parameters].p's own definition is skipped, the
+// `--set` value never used). So the scene at p is the scene at 1 with that block's transfer matrix
+// times p and nothing else changed.
+// Affine in p (verified, not assumed): the block realised column by column over the monic lcm of each
+// column's denominators (the same for every p != 0) has A, B independent of p and C, D proportional
+// to it -- checked exactly on the realisations read at p = 1 and p = 2 (A, B equal; C, D doubled; the
+// other block and the conserved quantities the same). The loop solves x_e = y + C_V eta + D_V u, u =
+// -(C_E xi + D_E x_e) through W = (I + D_E D_V)^-1; with D_E D_V = 0 and D_V D_E = 0 (checked exactly)
+// W = I and u, x_e and every row of M are affine in p. So M(p) = (2 - p) M(1) + (p - 1) M(2) for every
+// p > 0, and as p -> 0 M(p) -> M(0) := 2 M(1) - M(2) (in balls, from the two matrices built here).
+// Theorem (convexity of Stein's inequality along a segment): for P = P^T > 0 and M(p) affine, p ->
+// v^T (M(p)^T P M(p) - P) v = |P^{1/2} M(p) v|^2 - v^T P v is convex; < 0 at both ends of [a, b] for
+// every v != 0 gives < 0 on [a, b]: Q(p) = P - M(p)^T P M(p) > 0 there, and with P > 0 every M(p),
+// a <= p <= b, is Schur stable (Stein). Evidence:
+//   cover: [{to, P}, ...], t_0 = 0 < t_1 < ... < t_m = lo: on [t_{k-1}, t_k] P_k symmetric, P_k > 0
+//          (exactly up to order 24, else by the congruence test), Q > 0 at both ends (the test of
+//          stability_loop_check.hpp at 128, 256, 512 bits) => stable on [0, lo], so sup >= lo;
+//   unstable_at: {at = hi, P, w}: Q > 0 at M(hi) and w^T P w < 0 => M(hi) has an eigenvalue outside
+//          the unit circle (Stein inertia): NOT stable at hi, so sup <= hi. With hi = 0 (no cover):
+//          M(0) has an eigenvalue |z| > 1, and so has M(p) for every small p > 0 (eigenvalues are
+//          continuous in p): sup = 0.
+// A loop whose M(0) is only marginally stable (a device's position held by nothing at p = 0: the
+// eigenvalue 1, so no cover can start at 0) has no certificate here: its producer refuses by name.
+// Implements: paper 000 Sec. VI; docs/stability.md's --max.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "hapstab/check/certificate.hpp"
+
+namespace hapstab::check {
+
+Verdict check_stability_loop_max(const nlohmann::json& certificate);
+
+}  // namespace hapstab::check
