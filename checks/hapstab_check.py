@@ -3137,6 +3137,7 @@ def check_stability_loop(c):
 
 
 MAX_LOOP_COVER = 4096  # stability-loop-max: intervals of the cover (two Stein tests each)
+MAX_LOOP_COVER_WORK = 60000  # and intervals x n^3 (exact elimination per Stein test: ~5 s at 100 intervals of order 8)
 
 
 def gain_block(scene, p):
@@ -3238,6 +3239,9 @@ def check_stability_loop_max(c):
     for bits in (128, 256, 512):
         M1, M2 = loop_quotient_matrix(l1, L1, a1, r1, bits), loop_quotient_matrix(l2, L2, a2, r2, bits)
         n = len(M1)
+        if len(cover) * n ** 3 > MAX_LOOP_COVER_WORK:
+            raise TooLarge("evidence.cover: %d intervals of order %d, above this checker's limit (intervals x n^3 <= %d)" % (
+                len(cover), n, MAX_LOOP_COVER_WORK))
 
         def M_at(x):
             u, v = Iv(2 - x), Iv(x - 1)

@@ -21,7 +21,7 @@ using check::detail::BallRows;
 using check::rational_matrix::Mat;
 
 constexpr long kBits = 128;
-constexpr size_t kMaxIntervals = 4096;
+constexpr size_t kMaxIntervals = 512;  // a certificate of ~n^2 x 25 bytes per interval: at most ~1 MB at order 9
 
 // M(p) = (2 - p) M1 + (p - 1) M2 (check/stability_loop_max_check.hpp).
 BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
@@ -99,7 +99,8 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
   std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
   rational b = lo, width = lo;
   while (b > 0) {
-    if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [0, " + check::detail::decimal(lo) + "]"};
+    if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [0, " + check::detail::decimal(lo) +
+                        "] (one Stein P holds over a width ~ 1/(|P| |dM/dp|): a range wide against the loop's margin)"};
     // [a, b] with the Stein P of its midpoint: the width doubled from the last one, halved until P passes at both ends
     rational w = std::min(rational(2 * width), b), a;
     std::optional<Mat> P;

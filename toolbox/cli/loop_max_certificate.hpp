@@ -28,7 +28,7 @@ namespace hapstab::cli {
 /// proves: the certificate's digits, fewer than the crossing's own); sup p = 0 where m fails (M(0) with
 /// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
 /// the gain alone, a loop not affine in it, M(0) not Schur stable (no cover can start at 0), no Stein P
-/// at a point, more than 4096 intervals, an undecided m.
+/// at a point, more than 512 intervals, an undecided m.
 nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
                                               const std::string& name, const stability::LoopMax& m);
 

@@ -1,0 +1,163 @@
+"""`stability --scene S --max g --certificate` beyond one DOF (kind stability-loop-max,
+check/stability_loop_max_check.hpp) against the loop built in mpmath from the numbers drawn
+(indep_loop.py's scene loop: ZOH by mpmath.expm, the walls realised entry by entry, the spectral radius
+at 50 digits), never from hapstab or its checkers.
+
+Scenes: indep_loop.gen_scene's 2-3 DOF loops with g the environment's gain, every DOF held at g = 0 by
+an operator spring b + k/s (written as m, b, k, as tf "b + k/s" or as an ss operator: the latter two are
+conserved quantities the certificate must count), so that the loop at g = 0 is Schur stable and a cover
+can start there -- except in a fifth of the cases, where one DOF is left free (its position held by
+nothing at g = 0: hapstab must refuse the certificate by name, never write a false one), and the first
+device is open-loop unstable in some (sup g = 0 or a refusal). Required of a certificate (exit 0): both
+checkers verify it; the reference's rho < 1 at lo and at lo k/6, k = 1..5, rho > 1 at hi, and its own
+first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); hi moved below lo
+(lo (1 - 1e-3)) and lo raised to hi are refuted by both. sup g = 0 (exit 1): rho > 1 at g = 10^-6 of
+the scale. Refusals by name (exit 2) and undecided (exit 3) are counted apart, never as agreement.
+
+  indep_loop_max_certificate.py HAPSTAB [--cases N] [--seed S]
+exit 0 when every compared case agrees, else 1.
+"""
+import copy
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction as Q
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import mpmath as mp  # noqa: E402
+
+import indep_loop as IL  # noqa: E402
+import indep_loop_certificate as ILC  # noqa: E402
+from indep_common import cases_and_seed  # noqa: E402
+
+
+def draw(rng):
+    c = IL.gen_scene(rng)
+    c["g"], c["coupled"], c["writes"], c["conserved"] = Q(1), False, {}, 0
+    free = rng.random() < 0.2
+    for i in range(len(c["ops"])):
+        if free and i == len(c["ops"]) - 1:
+            c["ops"][i] = None  # this DOF's position is held by nothing at g = 0
+            continue
+        b = c["ops"][i] if c["ops"][i] is not None else IL.rq(rng, 0.5, 5)
+        c["ops"][i] = (b if not isinstance(b, tuple) else b[0], IL.rq(rng, 10, 500))
+        c["writes"][i] = rng.choice(["m, b, k", "m, b, k", "tf", "ss"])
+        c["conserved"] += c["writes"][i] != "m, b, k"
+    c["tags"]["free DOF"] = free
+    return c
+
+
+def rho(c, g):
+    return ILC.rho(c, Q(g))
+
+
+def crossing(c, lo, hi):
+    """The reference's first crossing in [lo, hi]: bisection on rho - 1 (rho(lo) < 1 <= rho(hi)) to 1e-12."""
+    a, b = Q(lo), Q(hi)
+    for _ in range(60):
+        if (b - a) <= b * Q(1, 10 ** 12):
+            break
+        m = (a + b) / 2
+        if rho(c, m) < 1:
+            a = m
+        else:
+            b = m
+    return a, b
+
+
+def checkers_exit(exe, path):
+    return tuple(subprocess.run(cmd, capture_output=True, timeout=900).returncode for cmd in ILC.checkers(exe, path))
+
+
+def run_case(exe, c, tmp):
+    scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
+    with open(scene, "w") as f:
+        f.write(ILC.scene_text(c))
+    if os.path.exists(cert):
+        os.remove(cert)
+    r = subprocess.run([exe, "stability", "--scene", scene, "--max", "g", "--digits", "12", "--json", "--quiet", "--certificate", cert],
+                       capture_output=True, text=True, timeout=900)
+    if r.returncode == 2:
+        why = r.stderr.strip()
+        kind = ("marginal at g = 0" if "marginally stable" in why or "M(0)" in why else
+                "no Stein P" if "no Stein" in why else "not affine" if "affine" in why else "other")
+        return None, "refused by name (%s): %s" % (kind, why[:200]), "refused: " + kind
+    if r.returncode == 3:
+        return None, "undecided: " + r.stderr.strip()[:200], "undecided"
+    if r.returncode not in (0, 1) or not os.path.exists(cert):
+        return False, "exit %d without a certificate: %s" % (r.returncode, r.stderr.strip()[:300]), None
+    cl = json.load(open(cert))
+    verdicts = checkers_exit(exe, cert)
+    if verdicts not in ((0, 0), (0, 3)):  # 3: beyond the independent checker's stated limit (not checked)
+        return False, "a checker does not verify the certificate: exits %s" % (verdicts,), None
+    if cl["claim"].get("conserved", 0) != c["conserved"]:
+        return False, "the certificate claims %s conserved quantities, the scene writes %d" % (cl["claim"].get("conserved", 0), c["conserved"]), None
+    lo, hi = Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
+    if hi == 0:
+        r0 = rho(c, Q(1, 10 ** 6))
+        if not r0 > 1:
+            return False, "sup g = 0 certified, but the reference's rho at g = 1e-6 is %s" % mp.nstr(r0, 15), None
+        return True, "sup g = 0 (rho(1e-6) = %s), verified by both" % mp.nstr(r0, 12), "sup = 0"
+    for g in [lo * k / 6 for k in range(1, 6)] + [lo]:
+        rg = rho(c, g)
+        if not rg < 1:
+            return False, "stable on [0, %s] certified, but the reference's rho at %s is %s" % (lo, g, mp.nstr(rg, 15)), None
+    rh = rho(c, hi)
+    if not rh > 1:
+        return False, "NOT stable at %s certified, but the reference's rho there is %s" % (hi, mp.nstr(rh, 15)), None
+    a, b = crossing(c, lo, hi)
+    tol = hi * Q(1, 10 ** 9)
+    if b < lo - tol or a > hi + tol:
+        return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
+    mutants = []
+    below = copy.deepcopy(cl)
+    below["claim"].pop("printed_hi", None)
+    below["claim"]["hi"] = below["evidence"]["unstable_at"]["at"] = str(lo * (1 - Q(1, 1000)))
+    below["claim"]["lo"] = below["evidence"]["cover"][-1]["to"] = str(lo * (1 - Q(1, 1000)) / 2)
+    below["claim"].pop("printed_lo", None)
+    mutants.append(("hi below the crossing", below))
+    raised = copy.deepcopy(cl)
+    raised["claim"].pop("printed_lo", None)
+    raised["claim"]["lo"] = raised["evidence"]["cover"][-1]["to"] = cl["claim"]["hi"]
+    mutants.append(("lo raised to hi", raised))
+    for name, m in mutants:
+        with open(bad, "w") as f:
+            json.dump(m, f)
+        got = checkers_exit(exe, bad)
+        if got != (1, 1) and got != (1, verdicts[1]):  # the independent one: refuted, or beyond its limit as before
+            return False, "%s: the checkers exit %s (want refuted by both)" % (name, got), None
+    n = len(cl["evidence"]["unstable_at"]["P"])
+    return True, "sup g in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
+        float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,
+        ", %d conserved" % c["conserved"] if c["conserved"] else "", "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)"), \
+        "certified sup" + ("" if verdicts == (0, 0) else ", independent beyond its limit")
+
+
+def main(argv):
+    cases, seed = cases_and_seed(argv, 100, 1)
+    rng = random.Random("%d:indep_loop_max_certificate" % seed)
+    counts, bad = {}, 0
+    with tempfile.TemporaryDirectory() as tmp:
+        for k in range(cases):
+            c = draw(rng)
+            try:
+                ok, what, branch = run_case(argv[1], c, tmp)
+            except subprocess.TimeoutExpired:
+                ok, what, branch = None, "timeout", "timeout"
+            tag = "ok  " if ok else "MISS" if ok is False else "skip"
+            print("%s case %d (%s): %s" % (tag, k, ", ".join("%s %s" % kv for kv in c["tags"].items()), what), flush=True)
+            bad += ok is False
+            key = branch or "disagree"
+            if branch and c["tags"]["free DOF"]:
+                key += " (a free DOF)"
+            counts[key] = counts.get(key, 0) + 1
+    print("indep_loop_max_certificate: %d cases, %d disagree; %s" % (cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items()))))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
