@@ -3137,7 +3137,7 @@ def check_stability_loop(c):
 
 
 MAX_LOOP_COVER = 4096  # stability-loop-max: intervals of the cover (two Stein tests each)
-MAX_LOOP_COVER_WORK = 60000  # and intervals x n^3 (exact elimination per Stein test: ~5 s at 100 intervals of order 8)
+MAX_LOOP_COVER_WORK = 200000  # and intervals x n^3 (exact elimination per Stein test: ~5 s at 80 intervals of order 8)
 
 
 def gain_block(scene, p):

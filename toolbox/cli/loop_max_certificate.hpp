@@ -6,11 +6,11 @@
 // (2 - p) M(1) + (p - 1) M(2) in balls. NOT stable at hi: schur_decide's Stein P and w at M(hi).
 // The claim's ends a relative delta outside the crossing's enclosure (Krawczyk's, stability/loop_max.hpp,
 // is too narrow for a Stein P solved in double; the certificate proves the wider one it prints).
-// Stable on [0, lo]: a cover built downward from lo -- at each right end b, the Stein P of M(b)
-// (schur_decide), and the lowest left end a that the same P also passes at M(a) (the width doubled
-// from the last one, halved until it passes: at most 60 halvings), then b := a, until a = 0. Every
-// piece is checked by the checker's test as it is made, and the whole certificate by check/ before
-// it is returned.
+// Stable on [0, lo]: a cover built downward from lo -- at each right end b, the Stein P of the midpoint
+// of [a, b] (schur_decide), the width doubled from the last one and halved until that P passes at both
+// ends (at most 60 halvings); then as wide as an SDP finds one P for (4, 16, 64, 256 times: P >= I, P -
+// M^T P M > 0 at both ends, the margin maximised, lmi/), and b := a, until a = 0. Every piece is checked
+// by the checker's test as it is made, and the whole certificate by check/ before it is returned.
 #pragma once
 
 #include <string>
