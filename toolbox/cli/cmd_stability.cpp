@@ -472,8 +472,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
     }
     if (!certified.is_null()) {  // what the certificate proves, printed beside the answer
       j["certificate_claim"] = certified;
-      text += "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
-              certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
+      text += certified[1] == "0" ? "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " +
+                                        o.max_name + " -> 0; verified before it was written)\n"
+                                  : "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
+                                        certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
     }
   }
   if (t5) {

@@ -199,7 +199,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
                              " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
                              ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p + " the " + block + "'s gain alone)";
     if (c.hi.is_zero())
-      return {true, "sup " + p + " = 0: " + loop + " has at p -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
+      return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
                         "inertia, " + std::to_string(bits) + " bits), and so has M(" + p + ") for every small " + p + " > 0"};
     return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
                       detail::decimal(c.lo) + "] by " + std::to_string(cover.size()) +
