@@ -10,14 +10,14 @@ can start there -- except in a fifth of the cases, where one DOF is left free (i
 nothing at g = 0: hapstab must refuse the certificate by name, never write a false one), and the first
 device is open-loop unstable in some (sup g = 0 or a refusal). Required of a certificate (exit 0): both
 checkers verify it; the reference's rho < 1 at lo and at lo k/6, k = 1..5, rho > 1 at hi, and its own
-first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); hi moved below lo
-(lo (1 - 1e-3)) and lo raised to hi are refuted by both. sup g = 0 (exit 1): rho > 1 at g = 10^-6 of
+first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); and every mutant of
+tests/check/loop_max_case.py (hi halved, lo raised to hi, a P entry negated, the model moved beyond the kind,
+...) rejected by both as it must be. sup g = 0 (exit 1): rho > 1 at g = 10^-6 of
 the scale. Refusals by name (exit 2) and undecided (exit 3) are counted apart, never as agreement.
 
   indep_loop_max_certificate.py HAPSTAB [--cases N] [--seed S]
 exit 0 when every compared case agrees, else 1.
 """
-import copy
 import json
 import os
 import random
@@ -31,6 +31,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
+import loop_max_case as LMC  # noqa: E402
 import indep_loop_certificate as ILC  # noqa: E402
 from indep_common import cases_and_seed  # noqa: E402
 
@@ -67,6 +70,9 @@ def crossing(c, lo, hi):
         else:
             b = m
     return a, b
+
+
+MUTANTS = [0]  # mutants of the certificates (tests/check/loop_max_case.py's), every one rejected as it must be
 
 
 def checkers_exit(exe, path):
@@ -113,23 +119,15 @@ def run_case(exe, c, tmp):
     tol = hi * Q(1, 10 ** 9)
     if b < lo - tol or a > hi + tol:
         return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
-    mutants = []
-    below = copy.deepcopy(cl)
-    below["claim"].pop("printed_hi", None)
-    below["claim"]["hi"] = below["evidence"]["unstable_at"]["at"] = str(lo * (1 - Q(1, 1000)))
-    below["claim"]["lo"] = below["evidence"]["cover"][-1]["to"] = str(lo * (1 - Q(1, 1000)) / 2)
-    below["claim"].pop("printed_lo", None)
-    mutants.append(("hi below the crossing", below))
-    raised = copy.deepcopy(cl)
-    raised["claim"].pop("printed_lo", None)
-    raised["claim"]["lo"] = raised["evidence"]["cover"][-1]["to"] = cl["claim"]["hi"]
-    mutants.append(("lo raised to hi", raised))
-    for name, m in mutants:
+    for name, m, want in LMC.mutants(cl, "g")[1:]:
         with open(bad, "w") as f:
             json.dump(m, f)
         got = checkers_exit(exe, bad)
-        if got != (1, 1) and got != (1, verdicts[1]):  # the independent one: refuted, or beyond its limit as before
-            return False, "%s: the checkers exit %s (want refuted by both)" % (name, got), None
+        if verdicts[1] == 3 and got[1] == 3:  # beyond the independent checker's limit, as the certificate
+            got = (got[0], got[0])
+        if not LMC.agrees(got, want):
+            return False, "%s: the checkers exit %s (want %s)" % (name, got, "1 or 2" if want is None else want), None
+        MUTANTS[0] += 1
     n = len(cl["evidence"]["unstable_at"]["P"])
     return True, "sup g in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
         float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,
@@ -155,7 +153,8 @@ def main(argv):
             if branch and c["tags"]["free DOF"]:
                 key += " (a free DOF)"
             counts[key] = counts.get(key, 0) + 1
-    print("indep_loop_max_certificate: %d cases, %d disagree; %s" % (cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items()))))
+    print("indep_loop_max_certificate: %d cases, %d disagree; %s; mutants of the certificates %d, each rejected as it must be" % (
+        cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTANTS[0]))
     return 1 if bad else 0
 
 
