@@ -166,7 +166,11 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
   Attempt out;
   std::string why;
   const SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
-  if (!u.stable || *u.stable) return {{}, "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")"};
+  if (!u.stable || *u.stable)
+    return {{}, "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")" +
+                    (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too (a position that nothing holds there) leaves Stein "
+                               "inertia no certificate; the eigenvalue outside has no other certificate form yet"
+                             : "")};
   out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
   std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
   rational b = lo, width = lo;

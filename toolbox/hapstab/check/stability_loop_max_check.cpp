@@ -20,7 +20,8 @@ namespace {
 using detail::BallRows;
 using rational_matrix::Mat;
 
-constexpr size_t kMaxCover = 4096;  // intervals of the cover (each: two Stein tests)
+constexpr size_t kMaxCover = 4096;       // intervals of the cover (each: two Stein tests)
+constexpr double kMaxCoverWork = 5e7;    // intervals x n^3 (a Stein test ~0.3 ms at order 9: at most ~20 s)
 
 // Every identifier in `text` ([A-Za-z_][A-Za-z0-9_]*).
 std::vector<std::string> identifiers(const std::string& text) {
@@ -160,6 +161,9 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     if (static_cast<long>(m1.conserved) != conserved)
       return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the loop has " + std::to_string(m1.conserved)};
     const size_t n = m1.M.size();
+    if (static_cast<double>(cover.size()) * static_cast<double>(n * n * n) > kMaxCoverWork)
+      throw InputError("evidence.cover: " + std::to_string(cover.size()) + " intervals of order " + std::to_string(n) +
+                       ", beyond this checker's work limit (intervals x n^3 <= 5e7)");
     // NOT stable at hi (or, hi = 0, at the limit M(0))
     const Mat Pu = symmetric_P(un, "evidence.unstable_at", n);
     const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",

@@ -29,6 +29,7 @@
 //          the unit circle (Stein inertia): NOT stable at hi, so sup <= hi. With hi = 0 (no cover):
 //          M(0) has an eigenvalue |z| > 1, and so has M(p) for every small p > 0 (eigenvalues are
 //          continuous in p): sup = 0.
+// Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
 // A loop whose M(0) is only marginally stable (a device's position held by nothing at p = 0: the
 // eigenvalue 1, so no cover can start at 0) has no certificate here: its producer refuses by name.
 // Implements: paper 000 Sec. VI; docs/stability.md's --max.
