@@ -98,7 +98,7 @@ std::vector<Case> catalogue_first() {
       {"stability", "--H", {"--plant", "1/s^2", "--H", "z^3", "--T", "1"}, "not causal"},
       {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
       {"stability", "--certificate", {"--plant", "1/(s^2 + s)", "--H", "K", "--T", "1/10", "--max", "K", "--certificate", "c.json"}, "stability --max with a device pole off s = 0"},
-      {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/000_two_dof_loop.toml", "--max", "k", "--certificate", "c.json"}, "stability --scene --max with 2 DOF"},
+      {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/000_two_dof_loop.toml", "--max", "k", "--certificate", "c.json"}, "the bisection on verdicts has no certificate form"},
       {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/identical_walls_1001.toml", "--certificate", "c.json"}, "device[1].count: a key this checker does not model"},
       {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "-1"}, "--delay"},

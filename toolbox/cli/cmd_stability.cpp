@@ -375,6 +375,21 @@ nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stabilit
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
 }
 
+[[noreturn]] void refuse_bisection_certificate(const StabilityOpts& o, const std::string& not_affine) {
+  throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
+                   "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
+                   "certifies one verdict): no certificate");
+}
+
+// What the certificate proves, printed beside the answer.
+std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified) {
+  if (certified[1] == "0")
+    return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " + o.max_name +
+           " -> 0; verified before it was written)\n";
+  return "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
+         certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
   if (!o.certificate.empty() && o.conservatism)
     throw InputError("--certificate: stability --max --conservatism has no certificate (Theorem 5's side is a bracket of LMI "
@@ -411,10 +426,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
   std::string text;
   progress.stage(not_affine.empty() ? "the supremum: certified crossing of the closed-loop matrix"
                                      : "the supremum: bisection on certified verdicts");
-  if (!not_affine.empty() && !o.certificate.empty())
-    throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
-                     "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
-                     "certifies one verdict): no certificate");
+  if (!not_affine.empty() && !o.certificate.empty()) refuse_bisection_certificate(o, not_affine);
   if (!not_affine.empty()) {
     const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
     j = verdict_change_json(b, o, not_affine);
@@ -470,13 +482,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
         text = t.str();
       }
     }
-    if (!certified.is_null()) {  // what the certificate proves, printed beside the answer
-      j["certificate_claim"] = certified;
-      text += certified[1] == "0" ? "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " +
-                                        o.max_name + " -> 0; verified before it was written)\n"
-                                  : "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
-                                        certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
-    }
+    if (!certified.is_null()) j["certificate_claim"] = certified, text += certificate_line(o, certified);
   }
   if (t5) {
     j["theorem5"] = theorem5_json(*t5);

@@ -32,7 +32,7 @@
 // Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
 // A loop whose M(0) is only marginally stable (a device's position held by nothing at p = 0: the
 // eigenvalue 1, so no cover can start at 0) has no certificate here: its producer refuses by name.
-// Implements: paper 000 Sec. VI; docs/stability.md's --max.
+// Implements: paper 000 Sec. VI.
 #pragma once
 
 #include <nlohmann/json.hpp>
