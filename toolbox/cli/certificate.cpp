@@ -718,6 +718,29 @@ std::optional<nlohmann::json> hidden_mode_certificate(const StabilityText& text,
   return std::nullopt;
 }
 
+std::vector<int> balancing_exponents(const Eigen::MatrixXd& M) {
+  const Eigen::Index n = M.rows();
+  std::vector<int> e(static_cast<size_t>(n), 0);
+  for (int sweep = 0; sweep < 30; ++sweep) {
+    bool changed = false;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double row = 0, col = 0;
+      for (Eigen::Index k = 0; k < n; ++k)
+        if (k != i) {
+          row += std::ldexp(std::abs(M(i, k)), e[size_t(k)] - e[size_t(i)]);
+          col += std::ldexp(std::abs(M(k, i)), e[size_t(i)] - e[size_t(k)]);
+        }
+      if (row == 0 || col == 0) continue;
+      int f = 0;  // col 4^f ~ row: column i scaled by 2^f, row i by 2^-f
+      while (std::ldexp(col, 2 * f) < row / 2 && f < 60) ++f;
+      while (std::ldexp(col, 2 * f) > 2 * row && f > -60) --f;
+      if (f != 0) e[size_t(i)] += f, changed = true;
+    }
+    if (!changed) break;
+  }
+  return e;
+}
+
 SchurDecision stein_evidence(const std::vector<std::vector<std::pair<rational, rational>>>& M) {
   BallMatrix Mb(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
   for (size_t i = 0; i < M.size(); ++i)
@@ -732,24 +755,7 @@ SchurDecision stein_evidence(const std::vector<std::vector<std::pair<rational, r
   // of D^-1 M D, D = diag(2^e) (Parlett-Reinsch), gives P = D^-1 P_b D^-1 and w = D w_b for M itself
   // (a congruence), exactly, as the scaling is by powers of two
   const Eigen::Index n = Mb.mid.rows();
-  std::vector<int> e(static_cast<size_t>(n), 0);
-  for (int sweep = 0; sweep < 30; ++sweep) {
-    bool changed = false;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double row = 0, col = 0;
-      for (Eigen::Index k = 0; k < n; ++k)
-        if (k != i) {
-          row += std::ldexp(std::abs(Mb.mid(i, k)), e[size_t(k)] - e[size_t(i)]);
-          col += std::ldexp(std::abs(Mb.mid(k, i)), e[size_t(i)] - e[size_t(k)]);
-        }
-      if (row == 0 || col == 0) continue;
-      int f = 0;  // col 4^f ~ row: column i scaled by 2^f, row i by 2^-f
-      while (std::ldexp(col, 2 * f) < row / 2 && f < 60) ++f;
-      while (std::ldexp(col, 2 * f) > 2 * row && f > -60) --f;
-      if (f != 0) e[size_t(i)] += f, changed = true;
-    }
-    if (!changed) break;
-  }
+  const std::vector<int> e = balancing_exponents(Mb.mid);
   BallMatrix Bal = Mb;
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index k = 0; k < n; ++k) {

@@ -108,6 +108,9 @@ bool beyond_stability_kind(const stability::Loop& loop);
 /// when the checker does not take the model or no P proves the verdict.
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable);
 
+/// Parlett-Reinsch balancing by powers of two: e with D^-1 M D (D = diag(2^e)) of comparable off-diagonal row
+/// and column norms; a Stein P of the balanced matrix maps back exactly (P = D^-1 P_b D^-1, a congruence).
+std::vector<int> balancing_exponents(const Eigen::MatrixXd& M);
 /// The Stein P (and w) that schur_decide finds for a closed-loop matrix given by entrywise enclosures
 /// (the checker's own M), balanced first by powers of two (exact) and scaled back: P - M^T P M > 0
 /// and P > 0 (stable) or w^T P w < 0 (NOT stable). `stable` unset when no P was found.

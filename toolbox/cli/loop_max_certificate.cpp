@@ -9,6 +9,7 @@
 #include "cli/certificate.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/check/stability_loop_max_check.hpp"
 #include "hapstab/lmi/program.hpp"
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -25,14 +26,8 @@ using check::rational_matrix::Mat;
 constexpr long kBits = 128;
 constexpr size_t kMaxIntervals = 512;  // a certificate of ~n^2 x 25 bytes per interval: at most ~1 MB at order 9
 
-// M(p) = (2 - p) M1 + (p - 1) M2 (check/stability_loop_max_check.hpp).
-BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
-  const flint::Ball a(rational(2 - p)), b(rational(p - 1));
-  BallRows M = M1;
-  for (size_t i = 0; i < M.size(); ++i)
-    for (size_t j = 0; j < M.size(); ++j) M[i][j] = a * M1[i][j] + b * M2[i][j];
-  return M;
-}
+// M(p) = (2 - p) M1 + (p - 1) M2, the checker's own formula (check/stability_loop_max_check.hpp).
+BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) { return check::detail::affine_loop_at(M1, M2, p); }
 
 std::vector<std::vector<std::pair<rational, rational>>> intervals(const BallRows& M) {
   std::vector<std::vector<std::pair<rational, rational>>> out(M.size());
@@ -81,31 +76,6 @@ Mat rounded(const Eigen::MatrixXd& P, int bits) {
   return exact(R);
 }
 
-// Parlett-Reinsch balancing by powers of two: e with D^-1 M D (D = diag(2^e)) of comparable off-diagonal
-// row and column norms (a P of the balanced matrix maps back exactly).
-std::vector<int> balance(const Eigen::MatrixXd& M) {
-  const Eigen::Index n = M.rows();
-  std::vector<int> e(static_cast<size_t>(n), 0);
-  for (int sweep = 0; sweep < 30; ++sweep) {
-    bool changed = false;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double row = 0, col = 0;
-      for (Eigen::Index k = 0; k < n; ++k)
-        if (k != i) {
-          row += std::ldexp(std::abs(M(i, k)), e[size_t(k)] - e[size_t(i)]);
-          col += std::ldexp(std::abs(M(k, i)), e[size_t(i)] - e[size_t(k)]);
-        }
-      if (row == 0 || col == 0) continue;
-      int f = 0;
-      while (std::ldexp(col, 2 * f) < row / 2 && f < 60) ++f;
-      while (std::ldexp(col, 2 * f) > 2 * row && f > -60) --f;
-      if (f != 0) e[size_t(i)] += f, changed = true;
-    }
-    if (!changed) break;
-  }
-  return e;
-}
-
 Eigen::MatrixXd midpoints(const BallRows& M) {
   Eigen::MatrixXd D(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M.size()));
   for (size_t i = 0; i < M.size(); ++i)
@@ -122,7 +92,7 @@ Eigen::MatrixXd midpoints(const BallRows& M) {
 std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
   Eigen::MatrixXd A = midpoints(Ma), B = midpoints(Mb);
   const int n = static_cast<int>(A.rows());
-  const std::vector<int> e = balance((A + B) / 2);
+  const std::vector<int> e = balancing_exponents((A + B) / 2);
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < n; ++k) {
       A(i, k) = std::ldexp(A(i, k), e[size_t(k)] - e[size_t(i)]);

@@ -92,15 +92,6 @@ nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long 
   return m;
 }
 
-// (2 - p) M1 + (p - 1) M2: M(p) of the affine family through M(1) and M(2).
-BallRows at(const BallRows& M1, const BallRows& M2, const rational& p) {
-  const flint::Ball a(rational(2 - p)), b(rational(p - 1));
-  BallRows M = M1;
-  for (size_t i = 0; i < M.size(); ++i)
-    for (size_t j = 0; j < M.size(); ++j) M[i][j] = a * M1[i][j] + b * M2[i][j];
-  return M;
-}
-
 Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n) {
   const Mat P = detail::exact_matrix(obj, "P", where, n);
   if (P.size() != n || P[0].size() != n)
@@ -110,6 +101,14 @@ Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n) {
 }
 
 }  // namespace
+
+detail::BallRows detail::affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
+  const flint::Ball a(rational(2 - p)), b(rational(p - 1));
+  BallRows M = M1;
+  for (size_t i = 0; i < M.size(); ++i)
+    for (size_t j = 0; j < M.size(); ++j) M[i][j] = a * M1[i][j] + b * M2[i][j];
+  return M;
+}
 
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
@@ -173,7 +172,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     for (size_t i = 0; i < n; ++i)
       for (size_t j = 0; j < n; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
     if (q >= 0) return {false, "evidence.unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
-    if (!detail::stein_holds(Pu, at(m1.M, m2.M, c.hi), why)) {
+    if (!detail::stein_holds(Pu, detail::affine_loop_at(m1.M, m2.M, c.hi), why)) {
       why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + why;
       continue;
     }
@@ -191,7 +190,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
       const bool pd = n <= 24 ? rational_matrix::positive_definite(Pk, true) : detail::positive_definite_within(Pk, rational(0));
       if (!pd) return {false, where + ".P is not shown positive definite"};
       for (const rational& e : {from, to})
-        if (!detail::stein_holds(Pk, at(m1.M, m2.M, e), why)) {
+        if (!detail::stein_holds(Pk, detail::affine_loop_at(m1.M, m2.M, e), why)) {
           why = where + " at " + p + " = " + e.str() + ": " + why;
           covered = false;
           break;

@@ -38,8 +38,14 @@
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/stability_loop_check.hpp"
 
 namespace hapstab::check {
+
+namespace detail {
+/// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
+BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
+}  // namespace detail
 
 Verdict check_stability_loop_max(const nlohmann::json& certificate);
 
