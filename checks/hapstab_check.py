@@ -3054,11 +3054,16 @@ def loop_quotient_matrix(loop, L, at, right, bits):
 
 
 def stein_shown(P, M):
-    """Q = P - M^T P M > 0 for every M in the intervals: D Q_mid D minus the scaled radii's largest row
-    sum times I, > 0 by exact elimination (D = diag(2^-k_i), 2^k_i ~ sqrt(Q_mid_ii): a congruence)."""
+    """Q = P - M^T P M > 0 for every M in the intervals (iv_positive_definite)."""
     n = len(P)
     PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
-    Q = [[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)]
+    return iv_positive_definite([[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)])
+
+
+def iv_positive_definite(Q):
+    """Every symmetric matrix in the intervals Q is positive definite: D Q_mid D minus the scaled radii's
+    largest row sum times I, > 0 by exact elimination (D = diag(2^-k_i), 2^k_i ~ sqrt(Q_mid_ii): a congruence)."""
+    n = len(Q)
     mid = [[(x.lo + x.hi) / 2 for x in row] for row in Q]
     d = [Fraction(1, 2 ** k) if k >= 0 else Fraction(2 ** -k)
          for k in (((x.numerator.bit_length() - x.denominator.bit_length()) // 2 if x > 0 else 0)
@@ -3175,6 +3180,72 @@ def gain_block(scene, p):
     return blocks[0]
 
 
+def slow_left_basis(loop):
+    """The rows l^T = [l_p, 0, 0, l_buf] of the loop's slow modes at p = 0 of the environment's gain
+    (check/stability_loop_max_check.hpp): l_p^T A = 0 (the continuous plant, exactly), l_buf from l_p^T
+    Gamma_h = h l_p^T B for each hold of h seconds, in loop_matrix's order of states."""
+    T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
+    A, Bu, _ = loop_plant(devices, mass, damp, stiff, ops)
+    N, ns = len(mass), len(A)
+    n, f = int(d), (d - int(d)) * T
+    buffers = n + (1 if f else 0)
+    nE = len((Eb[1] if Eb[0] == "ss" else realise_columns(Eb[1]))[0])
+    nV = 0 if Vb is None else len((Vb[1] if Vb[0] == "ss" else realise_columns(Vb[1]))[0])
+    nc = ns + nE + nV
+    free, _ = conserved_quantities(A, [[] for _ in range(ns)])
+    out = []
+    for lp in free:
+        l = list(lp) + [Fraction(0)] * (nc - ns + buffers * N)
+        lB = [sum(lp[i] * Bu[i][j] for i in range(ns)) for j in range(N)]
+        for a in range(buffers, 0, -1):  # buffer block a - 1 holds u_(k-a): the plant sees u_(k-n) for T - f, u_(k-n-1) for f
+            h = T - f if a == n else f if a == n + 1 else Fraction(0)
+            for j in range(N):
+                l[nc + (a - 1) * N + j] = h * lB[j] + (l[nc + a * N + j] if a < buffers else 0)
+        out.append(l)
+    return out
+
+
+def first_order_start(fo, block, loop, M1, M2, count, own, lo):
+    """(eps, "") when evidence.first_order {to = eps, P0, S} shows every M(p), 0 < p <= eps, Schur stable:
+    with L the slow rows (L M(0) = L exactly), K = L (M(2) - M(1)) and P(p) = P0 + L^T S L / p, the Stein
+    matrix is Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K, concave in p, > 0 at 0 and eps
+    (check/stability_loop_max_check.hpp); (None, what fails) otherwise."""
+    if not isinstance(fo, dict):
+        raise Malformed("evidence.first_order: not an object")
+    only(fo, ("to", "P0", "S"), "evidence.first_order")
+    if block != "environment":
+        raise Malformed("evidence.first_order: for the environment's gain only (the force is 0 at p = 0 there)")
+    if count or own:
+        raise Malformed("evidence.first_order: a loop with conserved quantities: beyond this kind")
+    L = slow_left_basis(loop)
+    if not L:
+        raise Malformed("evidence.first_order: the loop has no position that nothing holds at p = 0")
+    eps = exact(fo, "to", "evidence.first_order")
+    if not 0 < eps <= lo:
+        raise Malformed("evidence.first_order.to: not in (0, claim.lo]")
+    n, k = len(M1), len(L)
+    P0 = symmetric_evidence({"P": fo.get("P0")}, "evidence.first_order", n)
+    S = frac_matrix(fo, "S", k, k, "evidence.first_order")
+    if any(S[i][j] != S[j][i] for i in range(k) for j in range(i)):
+        raise Malformed("evidence.first_order.S: not symmetric")
+    if not semidefinite(S, False):
+        return None, "evidence.first_order.S is not positive semidefinite"
+    if not semidefinite(P0, True):
+        return None, "evidence.first_order.P0 is not positive definite"
+    K = [[sum((Iv(L[r][i]) * (M2[i][j] - M1[i][j]) for i in range(n) if L[r][i]), Iv(0)) for j in range(n)] for r in range(k)]
+    SK = [[sum((Iv(S[r][t]) * K[t][j] for t in range(k) if S[r][t]), Iv(0)) for j in range(n)] for r in range(k)]
+    for e in (Fraction(0), eps):
+        u, v = Iv(2 - e), Iv(e - 1)
+        M = [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
+        PM = [[sum((Iv(P0[a][b]) * M[b][j] for b in range(n) if P0[a][b]), Iv(0)) for j in range(n)] for a in range(n)]
+        Q = [[Iv(P0[i][j]) - sum((M[a][i] * PM[a][j] for a in range(n)), Iv(0))
+              - sum((SK[r][j] * Iv(L[r][i]) + SK[r][i] * Iv(L[r][j]) + Iv(e) * K[r][i] * SK[r][j] for r in range(k)), Iv(0))
+              for j in range(n)] for i in range(n)]
+        if not iv_positive_definite(Q):
+            return None, "evidence.first_order at p = %s: P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K not shown positive definite" % short(e)
+    return eps, ""
+
+
 def check_stability_loop_max(c):
     """stability-loop-max (check/stability_loop_max_check.hpp): p the gain of one block alone, so the
     loop's M(p) = (2 - p) M(1) + (p - 1) M(2) (the realisations at p = 1 and 2: A, B equal, C, D doubled;
@@ -3184,7 +3255,7 @@ def check_stability_loop_max(c):
     model, claim, evidence = parts(c)
     only(model, ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
-    only(evidence, ("cover", "unstable_at"), "evidence")
+    only(evidence, ("cover", "unstable_at", "first_order"), "evidence")
     p = model.get("name")
     if not isinstance(p, str) or not isinstance(model.get("scene"), str):
         raise Malformed("model.name, model.scene: missing or not strings")
@@ -3246,6 +3317,13 @@ def check_stability_loop_max(c):
         def M_at(x):
             u, v = Iv(2 - x), Iv(x - 1)
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
+        start, ok = Fraction(0), True
+        if "first_order" in evidence:
+            eps, fails = first_order_start(evidence["first_order"], block, l1, M1, M2, count, own1, lo)
+            if fails:
+                why = fails
+                continue
+            start = eps
         Pu = symmetric_evidence(un, "evidence.unstable_at", n)
         w = frac_matrix({"w": [un.get("w")]}, "w", 1, n, "evidence.unstable_at")[0]
         if sum(w[i] * Pu[i][j] * w[j] for i in range(n) for j in range(n)) >= 0:
@@ -3253,7 +3331,6 @@ def check_stability_loop_max(c):
         if not stein_shown(Pu, M_at(hi)):
             why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
             continue
-        start, ok = Fraction(0), True
         for i, piece in enumerate(cover):
             where = "evidence.cover[%d]" % i
             if not isinstance(piece, dict):

@@ -61,6 +61,16 @@ def mutants(cert, name):
            ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
     if 'B = "5"' in text:
         out.append(("the gain named in another expression too", with_field(cert, ["model", "scene"], text.replace('B = "5"', 'B = "5*%s/%s"' % (name, name))), 2))
+    fo = cert["evidence"].get("first_order")
+    if fo:  # the first-order start on (0, eps] (a position that nothing holds at p = 0)
+        p0 = fo["P0"][0][0]
+        s0 = fo["S"][0][0]
+        out += [("the first-order start dropped (the cover then starts at 0, where M(0) is marginal)", deleted(cert, ["evidence", "first_order"]), 1),
+                ("P0's first entry negated", with_field(cert, ["evidence", "first_order", "P0", 0, 0], p0[1:] if p0.startswith("-") else "-" + p0), 1),
+                ("S negated (not positive semidefinite)", with_field(cert, ["evidence", "first_order", "S", 0, 0], s0[1:] if s0.startswith("-") else "-" + s0), 1),
+                ("S zero (P0 alone: M(0) is marginal)", with_field(cert, ["evidence", "first_order", "S"], [["0"] * len(fo["S"])] * len(fo["S"])), 1),
+                ("eps beyond lo", with_field(cert, ["evidence", "first_order", "to"], str(2 * Fraction(claim["hi"]))), 2),
+                ("the first-order start with the coupling's gain", with_field(cert, ["model", "scene"], text.replace(env, "").replace("[coupling]", "[coupling]\n" + env)), None)]
     if len(cover) > 1:
         # refuted where the first P fails at its new end, else malformed (the next interval then empty): rejected
         out.append(("an interval's end moved past the next one's", with_field(cert, ["evidence", "cover", 0, "to"], cover[1]["to"]), None))

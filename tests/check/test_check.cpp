@@ -1208,7 +1208,8 @@ TEST(StabilityCheck, SceneByHand) {
 // stability-loop-max's reading of the parameter (check/stability_loop_max_check.hpp): a mass-damper held by a
 // spring, a wall 100 g, a coupling 1/(1000 z) (no feedthrough: D_E D_V = 0). Malformed: g not a parameter,
 // not the whole gain, named in another expression too, given a value, a coupling with feedthrough beside the
-// wall's (the loop solved through (I + D_E D_V)^-1: not affine), unstable_at not at hi, no cover for lo > 0.
+// wall's (the loop solved through (I + D_E D_V)^-1: not affine), unstable_at not at hi, no cover for lo > 0,
+// a first-order start where no position is free at g = 0.
 // The evidence P = I proves nothing: w^T P w = 1 >= 0 at hi (refuted); with a w of its own, I - M^T M > 0 fails.
 TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
   auto cert = [](const std::string& gain, const std::string& coupling, const std::string& name, const nlohmann::json& set) {
@@ -1239,6 +1240,10 @@ TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
   auto bare = cert("g", "1/(1000*z)", "g", none);
   bare["evidence"].erase("cover");
   EXPECT_THROW(check_certificate(bare), InputError);
+  // a first-order start where the spring holds the position at g = 0 (no slow mode): beyond the kind
+  auto start = cert("g", "1/(1000*z)", "g", none);
+  start["evidence"]["first_order"] = {{"to", "1/2"}, {"P0", {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}}}, {"S", nlohmann::json::array()}};
+  EXPECT_THROW(check_certificate(start), InputError);
 }
 
 // The closed loop of a stability-loop certificate (check/stability_loop_check.hpp), by hand: one mass

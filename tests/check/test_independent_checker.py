@@ -250,6 +250,9 @@ class StabilityLoopMax(unittest.TestCase):
         c = self.cert()
         del c["evidence"]["cover"]
         self.assertEqual(hc.check(c)[0], 2)
+        c = self.cert()  # a first-order start where the spring holds the position at g = 0: beyond the kind
+        c["evidence"]["first_order"] = {"to": "1/2", "P0": [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]], "S": []}
+        self.assertEqual(hc.check(c)[0], 2)
 
 
 class StabilityLoop(unittest.TestCase):

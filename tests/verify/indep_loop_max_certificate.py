@@ -7,8 +7,8 @@ Scenes: indep_loop.gen_scene's 2-3 DOF loops with g the environment's gain, ever
 an operator spring b + k/s (written as m, b, k, as tf "b + k/s" or as an ss operator: the latter two are
 conserved quantities the certificate must count), so that the loop at g = 0 is Schur stable and a cover
 can start there -- except in a fifth of the cases, where one DOF is left free (its position held by
-nothing at g = 0: hapstab must refuse the certificate by name, never write a false one), and the first
-device is open-loop unstable in some (sup g = 0 or a refusal). Required of a certificate (exit 0): both
+nothing at g = 0: the certificate's first-order start on (0, eps]), and the first device is open-loop
+unstable in some (sup g = 0, or a refusal by name where M(0) has an eigenvalue on the circle too). Required of a certificate (exit 0): both
 checkers verify it; the reference's rho < 1 at lo and at lo k/6, k = 1..5, rho > 1 at hi, and its own
 first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); and every mutant of
 tests/check/loop_max_case.py (hi halved, lo raised to hi, a P entry negated, the model moved beyond the kind,

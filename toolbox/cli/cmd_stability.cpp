@@ -366,10 +366,6 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
 // the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
 // is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
 nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m) {
-  if (m.outcome == Outcome::holds && m.open_at_zero)
-    throw InputError("--certificate: the loop at " + o.max_name + " = 0 is only marginally stable (a position that nothing holds "
-                     "there): the first-order cover at 0 has no certificate form yet (`stability --scene S --set " + o.max_name +
-                     "=VALUE --certificate FILE` certifies the verdict at one value): no certificate");
   const nlohmann::json c = cli::stability_loop_max_certificate(o.scene, o.sets, o.max_name, m);
   cli::write_certificate(o.certificate, c);
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
@@ -382,12 +378,13 @@ nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stabilit
 }
 
 // What the certificate proves, printed beside the answer.
-std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified) {
+std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified, bool open_at_zero) {
   if (certified[1] == "0")
     return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " + o.max_name +
            " -> 0; verified before it was written)\n";
   return "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
-         certified[1].get<std::string>() + "] (stable on [0, lo], NOT stable at hi; verified before it was written)\n";
+         certified[1].get<std::string>() + "] (stable on " + (open_at_zero ? "(0" : "[0") +
+         ", lo], NOT stable at hi; verified before it was written)\n";
 }
 
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
@@ -482,7 +479,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
         text = t.str();
       }
     }
-    if (!certified.is_null()) j["certificate_claim"] = certified, text += certificate_line(o, certified);
+    if (!certified.is_null()) j["certificate_claim"] = certified, text += certificate_line(o, certified, m.open_at_zero);
   }
   if (t5) {
     j["theorem5"] = theorem5_json(*t5);

@@ -121,6 +121,50 @@ std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
   return std::nullopt;
 }
 
+// The first-order start on (0, eps] (check/stability_loop_max_check.hpp): P0, S from an SDP in M(eps)'s
+// balanced coordinates (x = D y: P0 = D^-1 P0_b D^-1, L_b = L D, K_b = K D), P0 >= I, 0 <= S, both <= 10^8,
+// Q(0) > 0 and Q(eps) > 0 with Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K, the margin
+// maximised; the dyadic rounding checked by the checker's own test. nullopt when none passes.
+std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const BallRows& M2, const Mat& L, const rational& eps,
+                                                const check::detail::LoopMatrix& m1, const check::detail::LoopMatrix& m2,
+                                                const check::detail::SceneLoop& loop, const rational& lo) {
+  const Eigen::MatrixXd A0 = midpoints(loop_at(M1, M2, rational(0))), Ae = midpoints(loop_at(M1, M2, eps));
+  const Eigen::MatrixXd dM = midpoints(M2) - midpoints(M1);
+  const int n = static_cast<int>(A0.rows()), k = static_cast<int>(L.size());
+  Eigen::MatrixXd Ld(k, n);
+  for (int r = 0; r < k; ++r)
+    for (int i = 0; i < n; ++i) Ld(r, i) = L[size_t(r)][size_t(i)].convert_to<double>();
+  const std::vector<int> e = balancing_exponents(Ae);
+  Eigen::VectorXd d(n);
+  for (int i = 0; i < n; ++i) d(i) = std::ldexp(1.0, e[size_t(i)]);
+  const Eigen::MatrixXd D = d.asDiagonal(), Di = d.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd B0 = Di * A0 * D, Be = Di * Ae * D, Lb = Ld * D, Kb = Ld * dM * D;
+  const Eigen::MatrixXd In = Eigen::MatrixXd::Identity(n, n), Ik = Eigen::MatrixXd::Identity(k, k);
+  lmi::Program prog;
+  const lmi::MatrixVariable P = prog.new_symmetric(n, "P0"), S = prog.new_symmetric(k, "S");
+  prog.add_lmi("P0 >= I", lmi::Expr(P) - lmi::Expr(In), lmi::Strictness::nonstrict);
+  prog.add_lmi("P0 <= 10^8 I", lmi::Expr(Eigen::MatrixXd(1e8 * In)) - lmi::Expr(P), lmi::Strictness::nonstrict);
+  prog.add_lmi("S >= 0", lmi::Expr(S), lmi::Strictness::nonstrict);
+  prog.add_lmi("S <= 10^8 I", lmi::Expr(Eigen::MatrixXd(1e8 * Ik)) - lmi::Expr(S), lmi::Strictness::nonstrict);
+  const lmi::Expr cross = Eigen::MatrixXd(Kb.transpose()) * lmi::Expr(S) * Lb + Eigen::MatrixXd(Lb.transpose()) * lmi::Expr(S) * Kb;
+  const lmi::Expr ksk = Eigen::MatrixXd(Kb.transpose()) * lmi::Expr(S) * Kb;
+  prog.add_lmi("Q(0)", lmi::Expr(P) - Eigen::MatrixXd(B0.transpose()) * lmi::Expr(P) * B0 - cross);
+  prog.add_lmi("Q(eps)", lmi::Expr(P) - Eigen::MatrixXd(Be.transpose()) * lmi::Expr(P) * Be - cross - eps.convert_to<double>() * ksk);
+  prog.set_margin_objective(1.0);
+  lmi::Options opt;
+  opt.certify = false;
+  const lmi::SolveResult r = lmi::solve(prog, opt);
+  if (r.verdict != lmi::Feasibility::feasible) return std::nullopt;
+  Eigen::MatrixXd P0 = Di * r.solution(P) * Di;
+  const Eigen::MatrixXd Sd = r.solution(S);
+  for (const int bits : {24, 53}) {
+    nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
+    rational from = 0;
+    if (check::detail::first_order_start(fo, "environment", m1, m2, L, loop, lo, from).empty()) return fo;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 namespace {
@@ -132,7 +176,7 @@ struct Attempt {
 };
 
 Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
-                     bool open_at_zero) {
+                     bool open_at_zero, const rational& start) {
   Attempt out;
   std::string why;
   const SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
@@ -143,15 +187,15 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
                              : "")};
   out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
   std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
-  rational b = lo, width = lo;
-  while (b > 0) {
+  rational b = lo, width = lo - start;
+  while (b > start) {
     if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [0, " + check::detail::decimal(lo) +
                         "] (one Stein P holds over a width ~ 1/(|P| |dM/dp|): a range wide against the loop's margin)"};
     // [a, b] with the Stein P of its midpoint: the width doubled from the last one, halved until P passes at both ends
-    rational w = std::min(rational(2 * width), b), a;
+    rational w = std::min(rational(2 * width), rational(b - start)), a;
     std::optional<Mat> P;
     for (int halving = 0; halving < 60 && !P; ++halving, w /= 2) {
-      a = w == b ? rational(0) : round_down(b - w, w / 1024);
+      a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
       const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, (a + b) / 2)));
       if (!d.stable || !*d.stable) continue;
       for (const int bits : {24, 53}) {
@@ -170,9 +214,9 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
     // wider by an SDP where one P holds over more (4, 16, 64, 256 times the width: a P made for the whole
     // interval; 340 -> 107 intervals on the ctest's scene of order 8, at ~60 ms an SDP)
     for (const int k : {4, 16, 64, 256}) {
-      if (a == 0) break;
+      if (a == start) break;
       const rational wide = b - rational(k) * (b - a);
-      const rational a2 = wide <= 0 ? rational(0) : round_down(wide, (b - wide) / 1024);
+      const rational a2 = wide <= start ? start : std::max(start, round_down(wide, (b - wide) / 1024));
       if (auto Pw = common_stein(loop_at(M1, M2, a2), loop_at(M1, M2, b))) P = Pw, a = a2;
       else break;
     }
@@ -195,14 +239,16 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
   if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
   j["model"]["name"] = name;
   check::detail::LoopMatrix m1, m2;
-  const auto at = [&](long v) {
+  check::detail::SceneLoop loop1;
+  const auto read = [&](long v) {
     nlohmann::json model{{"scene", j["model"]["scene"]}, {"set", j["model"]["set"]}};
     model["set"][name] = std::to_string(v);
-    return check::detail::loop_matrix(check::detail::read_scene_loop(model), kBits);
+    return check::detail::read_scene_loop(model);
   };
   try {
     flint::BallPrecision scope(kBits);
-    m1 = at(1), m2 = at(2);
+    loop1 = read(1);
+    m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(read(2), kBits);
   } catch (const InputError& e) {
     throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
   }
@@ -223,7 +269,29 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
   std::string why;
   for (const auto& [plo, phi] : ends) {
     const rational lo = parse_rational(plo), hi = parse_rational(phi);
-    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, m.open_at_zero);
+    // where M(0) is only marginally stable: the first-order start on (0, eps], eps the producer's own
+    // first-order cover's end, else lo / 4^j
+    std::optional<nlohmann::json> start;
+    if (m.open_at_zero && hi > 0) {
+      const Mat L = check::detail::slow_left_basis(loop1);
+      std::vector<rational> tries;
+      if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
+      for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
+      try {
+        for (const rational& eps : tries)
+          if ((start = first_order_evidence(m1.M, m2.M, L, eps, m1, m2, loop1, lo))) break;
+      } catch (const InputError& e) {  // not the environment's gain, conserved quantities, no slow mode
+        why = std::string("no first-order start at 0: ") + e.what();
+        continue;
+      }
+      if (!start) {
+        why = "no first-order start at 0 (the loop at " + name + " = 0 only marginally stable: no P0, S found for (0, eps])";
+        continue;
+      }
+    }
+    const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
+    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, m.open_at_zero && !start, from);
+    if (start) a.evidence["first_order"] = *start;
     if (!a.why.empty()) {
       why = a.why;
       continue;

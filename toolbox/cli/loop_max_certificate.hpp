@@ -6,7 +6,10 @@
 // (2 - p) M(1) + (p - 1) M(2) in balls. NOT stable at hi: schur_decide's Stein P and w at M(hi).
 // The claim's ends a relative delta outside the crossing's enclosure (Krawczyk's, stability/loop_max.hpp,
 // is too narrow for a Stein P solved in double; the certificate proves the wider one it prints).
-// Stable on [0, lo]: a cover built downward from lo -- at each right end b, the Stein P of the midpoint
+// Where M(0) is only marginally stable (open_at_zero), first the first-order start on (0, eps]: P0 and S of
+// check/stability_loop_max_check.hpp by an SDP at p = 0 and eps (eps the producer's own first-order cover's
+// end, else lo / 4^j), its rounding checked by the checker's own test.
+// Stable on [0, lo] (or [eps, lo]): a cover built downward from lo -- at each right end b, the Stein P of the midpoint
 // of [a, b] (schur_decide), the width doubled from the last one and halved until that P passes at both
 // ends (at most 60 halvings); then as wide as an SDP finds one P for (4, 16, 64, 256 times: P >= I, P -
 // M^T P M > 0 at both ends, the margin maximised, lmi/), and b := a, until a = 0. Every piece is checked
@@ -27,8 +30,8 @@ namespace hapstab::cli {
 /// 10^-10, 10^-8 or 10^-6 outside the crossing's enclosure (the first that a double Stein solve
 /// proves: the certificate's digits, fewer than the crossing's own); sup p = 0 where m fails (M(0) with
 /// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
-/// the gain alone, a loop not affine in it, M(0) not Schur stable (no cover can start at 0), no Stein P
-/// at a point, more than 512 intervals, an undecided m.
+/// the gain alone, a loop not affine in it, no first-order start where M(0) is marginal, no Stein P at a
+/// point, more than 512 intervals, an undecided m.
 nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
                                               const std::string& name, const stability::LoopMax& m);
 

@@ -518,18 +518,14 @@ bool positive_definite_within(const Mat& S, const rational& r) {
   return true;
 }
 
-// Q = P - M^T P M > 0 for every M in the balls: D Q_mid D within r (the header; D by powers of two).
-bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
-  const size_t n = Pm.size();
-  const BallRows Pb = balls(Pm);
-  BallRows Mt = zero_balls(n, n);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) Mt[i][j] = M[j][i];
-  const BallRows MPM = product(Mt, product(Pb, M));
+// Every symmetric matrix in the balls Q (entries [lo, hi]) is positive definite: D Q_mid D within r (the header;
+// D by powers of two).
+bool ball_positive_definite(const BallRows& Q, std::string& why) {
+  const size_t n = Q.size();
   Mat mid = rational_matrix::zeros(n, n), rad = rational_matrix::zeros(n, n);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < n; ++j) {
-      const auto e = (Pb[i][j] - MPM[i][j]).bounds();
+      const auto e = Q[i][j].bounds();
       mid[i][j] = (e.lo + e.hi) / 2;
       rad[i][j] = (e.hi - e.lo) / 2;
     }
@@ -554,9 +550,53 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
     if (row > r) r = row;
   }
   if (positive_definite_within(S, r)) return true;
-  why = "P - M^T P M is not shown positive definite (its midpoint, within " + approx(r) +
+  why = "not shown positive definite (its midpoint, within " + approx(r) +
         ", the radii's largest row sum: no congruence to a diagonally dominant matrix found)";
   return false;
+}
+
+// Q = P - M^T P M > 0 for every M in the balls (ball_positive_definite).
+bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
+  const size_t n = Pm.size();
+  const BallRows Pb = balls(Pm);
+  BallRows Mt = zero_balls(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) Mt[i][j] = M[j][i];
+  const BallRows MPM = product(Mt, product(Pb, M));
+  BallRows Q = zero_balls(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) Q[i][j] = Pb[i][j] - MPM[i][j];
+  if (ball_positive_definite(Q, why)) return true;
+  why = "P - M^T P M is " + why;
+  return false;
+}
+
+// The loop's slow modes at p = 0 of an environment gain p (stability_loop_max_check.hpp's first-order
+// start): rows l^T = [l_p, 0, 0, l_buf] with l_p^T A = 0 (the plant's continuous A, exactly), l_buf from
+// l_p^T Gamma_h = h l_p^T B (the hold of h seconds): l^T M(0) = l^T exactly, as the force is 0 at p = 0.
+Mat slow_left_basis(const SceneLoop& L) {
+  const Plant pl = plant(L);
+  const size_t N = L.dofs(), ns = pl.A.size();
+  const Realisation E = discrete(L.E);
+  const size_t nV = L.V ? discrete(*L.V).A.size() : 0, nc = ns + E.A.size() + nV;
+  const size_t n = static_cast<size_t>(L.delay), buffers = n + (L.fraction == 0 ? 0 : 1), order = nc + buffers * N;
+  const rational f = L.fraction * L.T;
+  const Conserved free = conserved_quantities(pl.A, rational_matrix::zeros(ns, 0));
+  Mat out;
+  for (const auto& lp : free.L) {
+    std::vector<rational> l(order, rational(0)), lB(N, rational(0));
+    for (size_t i = 0; i < ns; ++i) l[i] = lp[i];
+    for (size_t j = 0; j < N; ++j)
+      for (size_t i = 0; i < ns; ++i) lB[j] += lp[i] * pl.B[i][j];
+    // buffer block a - 1 holds u_{k-a}: the plant sees u_{k-n} for T - f and u_{k-n-1} for f
+    for (size_t a = buffers; a >= 1; --a) {
+      const rational h = a == n ? rational(L.T - f) : a == n + 1 ? f : rational(0);
+      for (size_t j = 0; j < N; ++j)
+        l[nc + (a - 1) * N + j] = h * lB[j] + (a < buffers ? l[nc + a * N + j] : rational(0));
+    }
+    out.push_back(std::move(l));
+  }
+  return out;
 }
 
 }  // namespace detail

@@ -102,6 +102,11 @@ struct LoopMatrix {
 LoopMatrix loop_matrix(const SceneLoop& L, long bits);
 /// Q = P - M^T P M > 0 for every M in the balls (the header's test); else false, `why` set.
 bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
+/// Every symmetric matrix in the balls Q is positive definite (the header's test of Q); else false, `why` set.
+bool ball_positive_definite(const BallRows& Q, std::string& why);
+/// The rows l^T of the loop's slow modes at p = 0 of an environment gain p: l^T M(0) = l^T exactly (the
+/// positions that nothing holds at p = 0: l_p^T A = 0; stability_loop_max_check.hpp). Empty when none.
+rational_matrix::Mat slow_left_basis(const SceneLoop& L);
 /// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.

@@ -92,15 +92,79 @@ nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long 
   return m;
 }
 
-Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n) {
-  const Mat P = detail::exact_matrix(obj, "P", where, n);
+Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n, const char* key = "P") {
+  const Mat P = detail::exact_matrix(obj, key, where, n);
   if (P.size() != n || P[0].size() != n)
-    throw InputError(where + ".P: order " + std::to_string(P.size()) + ", the loop's " + std::to_string(n));
-  if (!rational_matrix::symmetric(P)) throw InputError(where + ".P: not symmetric");
+    throw InputError(where + "." + key + ": order " + std::to_string(P.size()) + ", the loop's " + std::to_string(n));
+  if (!rational_matrix::symmetric(P)) throw InputError(where + "." + key + ": not symmetric");
   return P;
 }
 
+// evidence.first_order.to, exactly (the start of the cover).
+rational from0(const nlohmann::json& evidence) { return detail::exact_field(evidence.at("first_order"), "to", "evidence.first_order"); }
+
+// Stable on (0, eps] where M(0) has the eigenvalue 1 on positions that nothing holds (header): rows L with
+// L M(0) = L exactly (check/stability_loop_check.hpp's slow_left_basis), so L M(p) = L + p K, K = L (M(2) -
+// M(1)); with P(p) = P0 + L^T S L / p (P0 > 0, S >= 0: P(p) > 0 for p > 0) the Stein matrix is, exactly,
+//   Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K,
+// concave in p; > 0 at 0 and at eps makes it > 0 on [0, eps], so every M(p), 0 < p <= eps, is Schur
+// stable. "" when shown (`from` := eps), else what fails.
 }  // namespace
+
+std::string detail::first_order_start(const nlohmann::json& fo, const std::string& block, const LoopMatrix& m1, const LoopMatrix& m2,
+                                      const Mat& L, const SceneLoop& loop, const rational& lo, rational& from) {
+  if (!fo.is_object()) throw InputError("evidence.first_order: not an object");
+  detail::only_fields(fo, {"to", "P0", "S"}, "evidence.first_order");
+  if (block != "environment")
+    throw InputError("evidence.first_order: for the environment's gain only (the force is 0 at p = 0 there)");
+  if (m1.conserved != 0 || loop.own_conserved != 0)
+    throw InputError("evidence.first_order: a loop with conserved quantities (its quotient moves the slow modes): beyond this kind");
+  if (L.empty()) throw InputError("evidence.first_order: the loop has no position that nothing holds at p = 0 (no slow mode to start from)");
+  const rational eps = detail::exact_field(fo, "to", "evidence.first_order");
+  if (eps <= 0 || eps > lo) throw InputError("evidence.first_order.to: not in (0, claim.lo]");
+  const size_t n = m1.M.size(), k = L.size();
+  if (L[0].size() != n) throw NumericalError("the slow modes' rows are not of M's order (a checker defect)");
+  const Mat P0 = symmetric_P(fo, "evidence.first_order", n, "P0");
+  const Mat S = detail::exact_matrix(fo, "S", "evidence.first_order", k);
+  if (S.size() != k || S[0].size() != k || !rational_matrix::symmetric(S))
+    throw InputError("evidence.first_order.S: not symmetric of order " + std::to_string(k) + " (the slow modes)");
+  if (!rational_matrix::positive_definite(S, false)) return "evidence.first_order.S is not positive semidefinite";
+  const bool pd = n <= 24 ? rational_matrix::positive_definite(P0, true) : detail::positive_definite_within(P0, rational(0));
+  if (!pd) return "evidence.first_order.P0 is not shown positive definite";
+  // K = L (M(2) - M(1)) and the p-independent part -(K^T S L + L^T S K), in balls
+  BallRows K(k, std::vector<flint::Ball>(n, flint::Ball(0L)));
+  for (size_t r = 0; r < k; ++r)
+    for (size_t j = 0; j < n; ++j)
+      for (size_t i = 0; i < n; ++i)
+        if (!L[r][i].is_zero()) K[r][j] += flint::Ball(L[r][i]) * (m2.M[i][j] - m1.M[i][j]);
+  BallRows SK(k, std::vector<flint::Ball>(n, flint::Ball(0L)));
+  for (size_t r = 0; r < k; ++r)
+    for (size_t j = 0; j < n; ++j)
+      for (size_t t = 0; t < k; ++t) SK[r][j] += flint::Ball(S[r][t]) * K[t][j];
+  for (const rational& e : {rational(0), eps}) {
+    const BallRows M = detail::affine_loop_at(m1.M, m2.M, e);
+    BallRows PM(n, std::vector<flint::Ball>(n, flint::Ball(0L))), Q = PM;
+    for (size_t a = 0; a < n; ++a)
+      for (size_t b = 0; b < n; ++b)
+        if (!P0[a][b].is_zero())
+          for (size_t j = 0; j < n; ++j) PM[a][j] += flint::Ball(P0[a][b]) * M[b][j];
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < n; ++j) {
+        flint::Ball mpm(0L), cross(0L), ksk(0L);
+        for (size_t a = 0; a < n; ++a) mpm += M[a][i] * PM[a][j];
+        for (size_t r = 0; r < k; ++r) {
+          cross += SK[r][j] * flint::Ball(L[r][i]) + SK[r][i] * flint::Ball(L[r][j]);
+          ksk += K[r][i] * SK[r][j];
+        }
+        Q[i][j] = flint::Ball(P0[i][j]) - mpm - cross - flint::Ball(e) * ksk;
+      }
+    std::string why;
+    if (!detail::ball_positive_definite(Q, why))
+      return "evidence.first_order at p = " + e.str() + ": P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K " + why;
+  }
+  from = eps;
+  return "";
+}
 
 detail::BallRows detail::affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
   const flint::Ball a(rational(2 - p)), b(rational(p - 1));
@@ -114,7 +178,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"scene", "set", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
-  detail::only_fields(evidence, {"cover", "unstable_at"}, "evidence");
+  detail::only_fields(evidence, {"cover", "unstable_at", "first_order"}, "evidence");
   if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
   if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string");
   const std::string p = model.at("name").get<std::string>();
@@ -163,6 +227,15 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     if (static_cast<double>(cover.size()) * static_cast<double>(n * n * n) > kMaxCoverWork)
       throw InputError("evidence.cover: " + std::to_string(cover.size()) + " intervals of order " + std::to_string(n) +
                        ", beyond this checker's work limit (intervals x n^3 <= 5e7)");
+    // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
+    rational from = 0;
+    if (evidence.contains("first_order")) {
+      const std::string fw = detail::first_order_start(evidence.at("first_order"), block, m1, m2, detail::slow_left_basis(L1), L1, c.lo, from);
+      if (!fw.empty()) {
+        why = fw;
+        continue;
+      }
+    }
     // NOT stable at hi (or, hi = 0, at the limit M(0))
     const Mat Pu = symmetric_P(un, "evidence.unstable_at", n);
     const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",
@@ -176,8 +249,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
       why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + why;
       continue;
     }
-    // stable on [0, lo]: each interval's P at both ends
-    rational from = 0;
+    // stable on [0, lo], or on [eps, lo] after the first-order start (above)
     bool covered = true;
     for (size_t k = 0; k < cover.size() && covered; ++k) {
       const std::string where = "evidence.cover[" + std::to_string(k) + "]";
@@ -200,12 +272,15 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     if (!covered) continue;
     const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(m1.order) + " states, " + std::to_string(L1.dofs()) +
                              " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
-                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p + " the " + block + "'s gain alone)";
+                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p + " the " + block + "'s gain alone)" +
+                             (evidence.contains("first_order") ? "; stable on (0, " + detail::decimal(from0(evidence)) + "] by the first-order start (P0 + L^T S L/" + p +
+                                                                      ", concave in " + p + ")"
+                                                                : std::string());
     if (c.hi.is_zero())
       return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
                         "inertia, " + std::to_string(bits) + " bits), and so has M(" + p + ") for every small " + p + " > 0"};
     return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
-                      detail::decimal(c.lo) + "] by " + std::to_string(cover.size()) +
+                      detail::decimal(c.lo) + "] (0 excluded where the first-order start serves) by " + std::to_string(cover.size()) +
                       " intervals, P > 0 with P - M^T P M > 0 at both ends of each (convex in " + p + "); NOT stable at " +
                       detail::decimal(c.hi) + " (Stein inertia), " + std::to_string(bits) + " bits"};
   }

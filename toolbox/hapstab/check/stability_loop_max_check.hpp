@@ -29,6 +29,16 @@
 //          the unit circle (Stein inertia): NOT stable at hi, so sup <= hi. With hi = 0 (no cover):
 //          M(0) has an eigenvalue |z| > 1, and so has M(p) for every small p > 0 (eigenvalues are
 //          continuous in p): sup = 0.
+// The first-order start (evidence.first_order {to = eps, P0, S}): where M(0) is only marginally stable --
+// a device's position that nothing holds at p = 0 (the environment's gain p) -- no cover can start at 0.
+// The rows L of the slow modes (l^T = [l_p, 0, 0, l_buf], l_p^T A = 0 for the continuous plant A, l_buf from
+// l_p^T Gamma_h = h l_p^T B: every hold of h seconds) satisfy L M(0) = L exactly (the force is p times the
+// rest, 0 at p = 0: check/stability_loop_check.hpp's slow_left_basis), so L M(p) = L + p K, K = L (M(2) -
+// M(1)). With P(p) = P0 + L^T S L / p (P0 > 0, S >= 0 exactly: P(p) > 0 for p > 0),
+//   P(p) - M(p)^T P(p) M(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K =: Q(p)   (exactly),
+// and v^T Q(p) v = v^T P0 v - |P0^{1/2} M(p) v|^2 - 2 v^T L^T S K v - p |S^{1/2} K v|^2 is concave in p:
+// Q > 0 at 0 and at eps (balls) gives Q > 0 on [0, eps], so M(p) is Schur stable for 0 < p <= eps (Stein).
+// The cover then starts at eps. For the environment's gain, without conserved quantities (M unreduced).
 // Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
 // A loop whose M(0) is only marginally stable (a device's position held by nothing at p = 0: the
 // eigenvalue 1, so no cover can start at 0) has no certificate here: its producer refuses by name.
@@ -45,6 +55,11 @@ namespace hapstab::check {
 namespace detail {
 /// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
 BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
+/// evidence.first_order {to = eps, P0, S} (header): "" when it shows every M(p), 0 < p <= eps, Schur stable
+/// (`from` := eps), else what fails; InputError when malformed or beyond (not the environment's gain, a
+/// quotient by conserved quantities, no slow mode). L: slow_left_basis of the loop.
+std::string first_order_start(const nlohmann::json& first_order, const std::string& block, const LoopMatrix& m1, const LoopMatrix& m2,
+                              const rational_matrix::Mat& L, const SceneLoop& loop, const rational& lo, rational& from);
 }  // namespace detail
 
 Verdict check_stability_loop_max(const nlohmann::json& certificate);
