@@ -40,6 +40,10 @@ from indep_common import cases_and_seed  # noqa: E402
 
 def draw(rng):
     c = IL.gen_scene(rng)
+    d0 = c["devices"][0]
+    if d0["kind"] == "ss" and not d0["passive"] and rng.random() < 0.7:  # gen_scene draws 60 %: keep a fifth or so
+        c["devices"][0] = dict(kind="md", m=d0["m"], b=IL.rq(rng, 0, 5))
+        c["tags"]["first device"] = "mass-damper"
     c["g"], c["coupled"], c["writes"], c["conserved"] = Q(1), False, {}, 0
     free = rng.random() < 0.2
     for i in range(len(c["ops"])):
