@@ -86,6 +86,18 @@ Eigen::MatrixXd midpoints(const BallRows& M) {
   return D;
 }
 
+// The program's strict LMIs with the best margin, on the built-in IPM alone (DSDP and CSDP's subprocess take
+// seconds each here); nullopt unless feasible. The producer's numbers only: the checker's test decides.
+std::optional<lmi::SolveResult> solve_for_margin(lmi::Program& prog) {
+  prog.set_margin_objective(1.0);
+  lmi::Options opt;
+  opt.certify = false;
+  opt.backend = lmi::Backend::ipm;
+  lmi::SolveResult r = lmi::solve(prog, opt);
+  if (r.verdict != lmi::Feasibility::feasible) return std::nullopt;
+  return r;
+}
+
 // One P for both ends of [a, b], wider than a Lyapunov P reaches: an SDP in the balanced coordinates of
 // M at the midpoint (I <= P <= 10^8 I, P - M^T P M > 0 at a and at b, the margin maximised), mapped back
 // exactly; nullopt when the SDP finds none or the checker's test refuses it (24 bits, then 53).
@@ -105,13 +117,9 @@ std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
   prog.add_lmi("P <= 10^8 I", lmi::Expr(Eigen::MatrixXd(1e8 * I)) - lmi::Expr(P), lmi::Strictness::nonstrict);
   prog.add_lmi("Stein at a", lmi::Expr(P) - Eigen::MatrixXd(A.transpose()) * lmi::Expr(P) * A);
   prog.add_lmi("Stein at b", lmi::Expr(P) - Eigen::MatrixXd(B.transpose()) * lmi::Expr(P) * B);
-  prog.set_margin_objective(1.0);
-  lmi::Options opt;
-  opt.certify = false;
-  opt.backend = lmi::Backend::ipm;  // the built-in IPM alone: DSDP and CSDP's subprocess take seconds each here
-  const lmi::SolveResult r = lmi::solve(prog, opt);
-  if (r.verdict != lmi::Feasibility::feasible) return std::nullopt;
-  Eigen::MatrixXd Pb = r.solution(P);
+  const auto r = solve_for_margin(prog);
+  if (!r) return std::nullopt;
+  Eigen::MatrixXd Pb = r->solution(P);
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < n; ++k) Pb(i, k) = std::ldexp(Pb(i, k), -e[size_t(i)] - e[size_t(k)]);
   std::string why;
@@ -151,14 +159,10 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   const lmi::Expr ksk = Eigen::MatrixXd(Kb.transpose()) * lmi::Expr(S) * Kb;
   prog.add_lmi("Q(0)", lmi::Expr(P) - Eigen::MatrixXd(B0.transpose()) * lmi::Expr(P) * B0 - cross);
   prog.add_lmi("Q(eps)", lmi::Expr(P) - Eigen::MatrixXd(Be.transpose()) * lmi::Expr(P) * Be - cross - eps.convert_to<double>() * ksk);
-  prog.set_margin_objective(1.0);
-  lmi::Options opt;
-  opt.certify = false;
-  opt.backend = lmi::Backend::ipm;  // the built-in IPM alone: DSDP and CSDP's subprocess take seconds each here
-  const lmi::SolveResult r = lmi::solve(prog, opt);
-  if (r.verdict != lmi::Feasibility::feasible) return std::nullopt;
-  Eigen::MatrixXd P0 = Di * r.solution(P) * Di;
-  const Eigen::MatrixXd Sd = r.solution(S);
+  const auto r = solve_for_margin(prog);
+  if (!r) return std::nullopt;
+  Eigen::MatrixXd P0 = Di * r->solution(P) * Di;
+  const Eigen::MatrixXd Sd = r->solution(S);
   for (const int bits : {24, 53}) {
     nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
     rational from = 0;
