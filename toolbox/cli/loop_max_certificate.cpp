@@ -171,10 +171,6 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   return std::nullopt;
 }
 
-}  // namespace
-
-namespace {
-
 // The certificate of "stable on [0, lo], NOT stable at hi" (lo = hi = 0: sup = 0), or why there is none.
 struct Attempt {
   nlohmann::json evidence;
@@ -182,7 +178,7 @@ struct Attempt {
 };
 
 Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
-                     bool open_at_zero, const rational& start) {
+                     const rational& start) {
   Attempt out;
   std::string why;
   const SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
@@ -196,7 +192,7 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
   rational b = lo, width = lo - start;
   int sdp_misses = 0, skip_sdp = 0;
   while (b > start) {
-    if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [0, " + check::detail::decimal(lo) +
+    if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) +
                         "] (one Stein P holds over a width ~ 1/(|P| |dM/dp|): a range wide against the loop's margin)"};
     // [a, b] with the Stein P of its midpoint: the width doubled from the last one, halved until P passes at both ends
     rational w = std::min(rational(2 * width), rational(b - start)), a;
@@ -214,10 +210,8 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
       }
     }
     if (!P)
-      return {{}, "no cover of [0, " + check::detail::decimal(lo) + "] below " + name + " = " + check::detail::decimal(b) +
-                      (open_at_zero ? " (M(0) is only marginally stable: a position that nothing holds at " + name +
-                                          " = 0; the first-order cover of stability/loop_max.hpp has no certificate form)"
-                                    : "")};
+      return {{}, "no cover of [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) + "] below " + name + " = " +
+                      check::detail::decimal(b)};
     // wider by an SDP where one P holds over more (4, 16, 64, 256 times the width: a P made for the whole
     // interval; 340 -> 107 intervals on the ctest's scene of order 8, at ~60 ms an SDP). After two misses in
     // a row (near the crossing, where the margin is below the SDP's tolerance) the next 8 intervals skip it.
@@ -303,7 +297,7 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
       }
     }
     const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
-    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, m.open_at_zero && !start, from);
+    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, from);
     if (start) a.evidence["first_order"] = *start;
     if (!a.why.empty()) {
       why = a.why;
