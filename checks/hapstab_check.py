@@ -3146,9 +3146,10 @@ MAX_LOOP_COVER_WORK = 200000  # and intervals x n^3 (exact elimination per Stein
 
 
 def gain_block(scene, p):
-    """stability-loop-max's reading of p (check/stability_loop_max_check.hpp): "environment" or
-    "coupling", the block whose gain is exactly p, p a parameter named in no other string of the scene
-    (labels and keywords -- name, dofs, domain, method -- and the ignored sections aside)."""
+    """stability-loop-max's reading of p (check/stability_loop_max_check.hpp): (block, inside) -- block
+    "environment" or "coupling" whose gain is exactly p, p a parameter named in no other string of the
+    scene (labels and keywords -- name, dofs, domain, method -- and the ignored sections aside); or
+    (inside) p named only in the tf entries of one of them, its gain not p."""
     import tomllib
     try:
         root = tomllib.loads(scene)
@@ -3157,8 +3158,8 @@ def gain_block(scene, p):
     if not isinstance(root.get("parameters"), dict) or p not in root["parameters"]:
         raise Malformed("model.name: %r is not a parameter of the scene ([parameters])" % p)
     blocks = [b for b in ("environment", "coupling") if isinstance(root.get(b), dict) and root[b].get("gain") == p]
-    if len(blocks) != 1:
-        raise Malformed("model.name: %r is not the whole gain of exactly one of [environment], [coupling]: beyond this kind" % p)
+    if len(blocks) > 1:
+        raise Malformed("model.name: %r is the gain of both [environment] and [coupling]" % p)
     found = []
 
     def scan(node, at):
@@ -3170,14 +3171,50 @@ def gain_block(scene, p):
         elif isinstance(node, list):
             for i, v in enumerate(node):
                 scan(v, "%s[%d]" % (at, i))
-        elif isinstance(node, str) and at not in (blocks[0] + ".gain", "parameters." + p):
+        elif isinstance(node, str) and at not in ([blocks[0] + ".gain"] if blocks else []) + ["parameters." + p]:
             if p in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", node):
                 found.append(at)
     scan(root, "")
+    if not blocks:
+        for b in ("environment", "coupling"):
+            if found and all(w == b + ".tf" or w.startswith(b + ".tf[") for w in found):
+                return b, True
+        raise Malformed("model.name: %r is neither the whole gain of [environment] or [coupling] nor named only in the tf of one of "
+                        "them: beyond this kind" % p)
     if found:
         raise Malformed("model.scene: %r is named in %s as well as in %s.gain: beyond this kind (only a gain, named nowhere "
                         "else, makes the loop affine in it)" % (p, found[0], blocks[0]))
-    return blocks[0]
+    return blocks[0], False
+
+
+def affine_block_order(model, block, p, N):
+    """p inside the block's tf (check/stability_loop_max_check.hpp): each entry naming p proven affine in it
+    (prove_affine: H = H0 + p H1); (sum_j deg L_j, the largest degree bound), L_j the monic lcm over column j
+    of den H0 and den H1 -- the largest order the realisation reaches at any p."""
+    root, T, expand, field = scene_read(model, True, coupling=True)
+    t = root.get(block)
+    if not isinstance(t, dict) or "tf" not in t:
+        scene_beyond(block + ".ss", "the parameter inside an ss block (only a tf entry is proven affine)")
+    gain_text = field(t, "gain", block, "1")
+    E = [["(%s)*(%s)" % (gain_text, scene_wall_entry(t, e, expand)) for e in row] for row in scene_text_matrix(t["tf"], N, block + ".tf")]
+    order, degree = 0, 0
+    for j in range(N):
+        L = [Fraction(1)]
+        for i in range(N):
+            if p in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", E[i][j]):
+                try:
+                    H0, H1, D = prove_affine(E[i][j], T, {}, p)
+                except Malformed as e:
+                    raise Malformed("model.scene: %s.tf[%d][%d]: %s: beyond this kind" % (block, i, j, e))
+                dens, degree = (H0.den, H1.den), max(degree, D)
+            else:
+                dens = (scene_rf(E[i][j], T, 'z', block + ".tf").den,)
+            for d in dens:
+                g = pgcd(L, d)
+                L = pdivmod(pmul(L, d), g)[0]
+                L = [x / L[-1] for x in L]
+        order += len(L) - 1
+    return order, degree
 
 
 def slow_left_basis(loop):
@@ -3274,7 +3311,7 @@ def check_stability_loop_max(c):
     k = claim.get("conserved", 0)
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:
         raise Malformed("claim.conserved: not an integer >= 0")
-    block = gain_block(model["scene"], p)
+    block, inside = gain_block(model["scene"], p)
     un = evidence.get("unstable_at")
     if not isinstance(un, dict):
         raise Malformed("evidence.unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
@@ -3287,21 +3324,41 @@ def check_stability_loop_max(c):
     if (not cover) != (lo == 0):
         raise Malformed("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
     at_p = []
-    for v in (1, 2):
+    for v in (1, 2) if not inside or hi == 0 else (1, 2, hi):
         m = {"scene": model["scene"], "set": dict(sets)}
         m["set"][p] = str(v)
         at_p.append(loop_quotient(m))
-    (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p
+    (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
     g = 0 if block == "environment" else 1
+    if inside:  # the realisation at 1, 2 (and hi) of the largest order; C, D at hi on the line through 1 and 2
+        order, degree = affine_block_order(model, block, p, len(l1[3]))
+        if any(len(q[5][g][0]) != order for q in at_p):
+            raise Malformed("model.scene: the %s's realisation at %s = 1, 2 or %s is not of order %d (a pole cancelled there): beyond "
+                            "this kind" % (block, p, short(hi), order))
     for i, (x, y) in enumerate(zip(b1, b2)):
-        want = (x[0], x[1], [[2 * v for v in row] for row in x[2]], [[2 * v for v in row] for row in x[3]]) if i == g else x
+        if i != g:
+            want = x
+        elif inside:
+            want = (x[0], x[1], y[2], y[3])
+        else:
+            want = (x[0], x[1], [[2 * v for v in row] for row in x[2]], [[2 * v for v in row] for row in x[3]])
         if tuple(y) != tuple(want):
-            return False, "the %s's realisation at %s = 2 is not the one at 1 with C and D doubled: not shown affine" % (block, p)
-    if len(b1) > 1:
-        DE, DV = b1[0][3], b1[1][3]
-        if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
-            raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
+            return False, "the %s's realisation at %s = 2 is not the one at 1 with %s: not shown affine" % (
+                block, p, "A and B equal" if inside else "C and D doubled")
+        if len(at_p) > 2:
+            if i == g:
+                want = (x[0], x[1]) + tuple([[(2 - hi) * u + (hi - 1) * v for u, v in zip(ru, rv)] for ru, rv in zip(x[k], y[k])] for k in (2, 3))
+            if tuple(at_p[2][5][i]) != tuple(want):
+                return False, "the %s's realisation at %s = %s is not on the line through those at 1 and 2" % (block, p, short(hi))
+    for bl in (b1, b2):
+        if len(bl) > 1:
+            DE, DV = bl[0][3], bl[1][3]
+            if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
+                raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
     count = len(a1) + len(r1) - own1
+    if inside and (count or own1):
+        raise Malformed("model.scene: a loop with conserved quantities and %s inside the %s's tf (the quotient's basis may move "
+                        "with it): beyond this kind" % (p, block))
     if count != len(a2) + len(r2) - own2:
         return False, "the conserved quantities differ at %s = 1 and 2" % p
     if count != k:
@@ -3319,7 +3376,7 @@ def check_stability_loop_max(c):
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
         start, ok = Fraction(0), True
         if "first_order" in evidence:
-            eps, fails = first_order_start(evidence["first_order"], block, l1, M1, M2, count, own1, lo)
+            eps, fails = first_order_start(evidence["first_order"], block + (".tf" if inside else ""), l1, M1, M2, count, own1, lo)
             if fails:
                 why = fails
                 continue
@@ -3356,8 +3413,9 @@ def check_stability_loop_max(c):
         if hi == 0:
             return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits)" % (
                 p, p, p, p, n, p, bits)
-        return True, "sup %s in [%s, %s]: M(%s) affine (%d states, the %s's gain alone); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
-            p, short(lo), short(hi), p, n, block, short(lo), len(cover), p, short(hi), bits)
+        how = "inside the %s's tf, proven affine there" % block if inside else "the %s's gain alone" % block
+        return True, "sup %s in [%s, %s]: M(%s) affine (%d states, %s); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
+            p, short(lo), short(hi), p, n, how, short(lo), len(cover), p, short(hi), bits)
     return False, "claim: sup %s in [%s, %s], but %s at 512 bits" % (p, short(lo), short(hi), why)
 
 

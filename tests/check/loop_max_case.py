@@ -1,7 +1,9 @@
 """A `stability-loop-max` certificate (check/stability_loop_max_check.hpp) end to end: hapstab writes it
 for `stability --scene S --max NAME`, both checkers verify it, and each hand edit below gets the exit
 code it must from both (1 refuted: the evidence does not prove the edited claim; 2 malformed: the model
-is beyond the kind). The ctest certificate_loop_max runs it on tests/cli/scenes/loop_max_held_devices.toml.
+is beyond the kind). The ctests certificate_loop_max* run it on tests/cli/scenes/loop_max_held_devices.toml (the
+environment's gain), integrator_devices_2dof.toml (the first-order start) and loop_max_wall_stiffness.toml (the
+parameter inside the wall's tf).
 
   loop_max_case.py HAPSTAB SCENE NAME
 exit 0 when every expectation holds, else 1 (each failure printed)."""
@@ -55,10 +57,23 @@ def mutants(cert, name):
            ("lo above hi", claim_lo(str(2 * Fraction(claim["hi"]))), 1),
            ("the first interval's P00 negated", with_field(cert, ["evidence", "cover", 0, "P", 0, 0], neg), 1),
            ("conserved quantities miscounted", with_field(cert, ["claim", "conserved"], claim.get("conserved", 0) + 1), 1),
-           ("the gain not the parameter alone", with_field(cert, ["model", "scene"], text.replace(env, 'gain = "2*%s"' % name)), 2),
            ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2),
            ("the cover dropped", deleted(cert, ["evidence", "cover"]), 2),
            ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
+    if env in text:
+        out.append(("the gain not the parameter alone", with_field(cert, ["model", "scene"], text.replace(env, 'gain = "2*%s"' % name)), 2))
+    else:  # the parameter inside the wall's tf (proven affine there; the realisation of the largest order)
+        term = '"%s + ' % name
+        at = text.index("tf = ", text.index("[environment]"))
+        line = text[at:text.index("\n", at) + 1]
+        N = text.count("[[device]]")
+        D = "[" + ", ".join("[" + ", ".join('"%s"' % (name if i == j else "0") for j in range(N)) + "]" for i in range(N)) + "]"
+        ss = 'ss = { A = [["0"]], B = [[%s]], C = [%s], D = %s }\n' % (", ".join(['"0"'] * N), ", ".join(['["0"]'] * N), D)
+        out += [("the parameter squared in an entry (not affine)", with_field(cert, ["model", "scene"], text.replace(term, '"%s*%s/1000 + ' % (name, name), 1)), 2),
+                ("the parameter the gain as well", with_field(cert, ["model", "scene"], text.replace("[environment]", "[environment]\n" + env)), 2),
+                ("an entry whose pole cancels at %s = 1" % name,
+                 with_field(cert, ["model", "scene"], text.replace(term, '"(z-%s)/(z-1) - 1 + %s + ' % (name, name), 1)), 2),
+                ("the parameter in an ss wall", with_field(cert, ["model", "scene"], text.replace(line, ss)), 2)]
     if 'B = "5"' in text:
         out.append(("the gain named in another expression too", with_field(cert, ["model", "scene"], text.replace('B = "5"', 'B = "5*%s/%s"' % (name, name))), 2))
     fo = cert["evidence"].get("first_order")

@@ -1209,13 +1209,16 @@ TEST(StabilityCheck, SceneByHand) {
 // spring, a wall 100 g, a coupling 1/(1000 z) (no feedthrough: D_E D_V = 0). Malformed: g not a parameter,
 // not the whole gain, named in another expression too, given a value, a coupling with feedthrough beside the
 // wall's (the loop solved through (I + D_E D_V)^-1: not affine), unstable_at not at hi, no cover for lo > 0,
-// a first-order start where no position is free at g = 0.
+// a first-order start where no position is free at g = 0. g inside the wall's tf (100 g, its gain 1): read (the
+// evidence then refuted); malformed where the entry is not affine in g (100 g^2), g is the gain too, g is named in
+// the coupling as well, or the entry's pole cancels at g = 1 ((z - g) 100/(z - 1): order 0 there, 1 elsewhere).
 // The evidence P = I proves nothing: w^T P w = 1 >= 0 at hi (refuted); with a w of its own, I - M^T M > 0 fails.
 TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
-  auto cert = [](const std::string& gain, const std::string& coupling, const std::string& name, const nlohmann::json& set) {
+  auto cert = [](const std::string& gain, const std::string& coupling, const std::string& name, const nlohmann::json& set,
+                 const std::string& tf = "100") {
     const std::string scene = "[scene]\nT = \"1/100\"\n[parameters]\ng = \"1\"\n[[device]]\nname = \"a\"\nm = \"1\"\nb = \"2\"\n"
                               "[[operator]]\nname = \"h\"\ndofs = [\"a\"]\nk = \"10\"\n[environment]\ngain = \"" + gain +
-                              "\"\ntf = \"100\"\n[coupling]\ntf = \"" + coupling + "\"\n";
+                              "\"\ntf = \"" + tf + "\"\n[coupling]\ntf = \"" + coupling + "\"\n";
     const nlohmann::json I3 = {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}};
     return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop-max"},
                           {"model", {{"scene", scene}, {"set", set}, {"name", name}}},
@@ -1240,6 +1243,13 @@ TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
   auto bare = cert("g", "1/(1000*z)", "g", none);
   bare["evidence"].erase("cover");
   EXPECT_THROW(check_certificate(bare), InputError);
+  const Verdict inside = check_certificate(cert("1", "1/(1000*z)", "g", none, "100*g"));  // read, then refuted
+  EXPECT_FALSE(inside.verified);
+  EXPECT_NE(inside.reason.find("w^T P w"), std::string::npos) << inside.reason;
+  EXPECT_THROW(check_certificate(cert("1", "1/(1000*z)", "g", none, "100*g*g")), InputError);      // not affine
+  EXPECT_THROW(check_certificate(cert("g", "1/(1000*z)", "g", none, "100*g")), InputError);        // the gain too
+  EXPECT_THROW(check_certificate(cert("1", "g/(1000*z)", "g", none, "100*g")), InputError);        // two blocks
+  EXPECT_THROW(check_certificate(cert("1", "1/(1000*z)", "g", none, "(z-g)*100/(z-1)")), InputError);  // cancels at 1
   // a first-order start where the spring holds the position at g = 0 (no slow mode): beyond the kind
   auto start = cert("g", "1/(1000*z)", "g", none);
   start["evidence"]["first_order"] = {{"to", "1/2"}, {"P0", {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}}}, {"S", nlohmann::json::array()}};

@@ -225,9 +225,9 @@ class StabilityLoopMax(unittest.TestCase):
     """test_check.cpp's StabilityLoopMaxCheck.ReadingOfTheGain: the parameter must be the whole gain of one
     block, named nowhere else, without a value, the loop without a feedthrough product; P = I proves nothing."""
 
-    def cert(self, gain="g", coupling="1/(1000*z)", name="g", sets=None):
+    def cert(self, gain="g", coupling="1/(1000*z)", name="g", sets=None, tf="100"):
         scene = ('[scene]\nT = "1/100"\n[parameters]\ng = "1"\n[[device]]\nname = "a"\nm = "1"\nb = "2"\n[[operator]]\n'
-                 'name = "h"\ndofs = ["a"]\nk = "10"\n[environment]\ngain = "%s"\ntf = "100"\n[coupling]\ntf = "%s"\n' % (gain, coupling))
+                 'name = "h"\ndofs = ["a"]\nk = "10"\n[environment]\ngain = "%s"\ntf = "%s"\n[coupling]\ntf = "%s"\n' % (gain, tf, coupling))
         I3 = [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]
         return {"certificate": "hapstab", "version": 1, "kind": "stability-loop-max",
                 "model": {"scene": scene, "set": sets or {}, "name": name},
@@ -250,6 +250,12 @@ class StabilityLoopMax(unittest.TestCase):
         c = self.cert()
         del c["evidence"]["cover"]
         self.assertEqual(hc.check(c)[0], 2)
+        code, why = hc.check(self.cert(gain="1", tf="100*g"))  # g inside the wall's tf: read, then refuted
+        self.assertEqual(code, 1, why)
+        self.assertIn("w^T P w", why)
+        for bad in (self.cert(gain="1", tf="100*g*g"), self.cert(tf="100*g"), self.cert(gain="1", tf="100*g", coupling="g/(1000*z)"),
+                    self.cert(gain="1", tf="(z-g)*100/(z-1)")):
+            self.assertEqual(hc.check(bad)[0], 2, hc.check(bad)[1])
         c = self.cert()  # a first-order start where the spring holds the position at g = 0: beyond the kind
         c["evidence"]["first_order"] = {"to": "1/2", "P0": [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]], "S": []}
         self.assertEqual(hc.check(c)[0], 2)

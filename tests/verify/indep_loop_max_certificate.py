@@ -8,7 +8,9 @@ an operator spring b + k/s (written as m, b, k, as tf "b + k/s" or as an ss oper
 conserved quantities the certificate must count), so that the loop at g = 0 is Schur stable and a cover
 can start there -- except in a fifth of the cases, where one DOF is left free (its position held by
 nothing at g = 0: the certificate's first-order start on (0, eps]), and the first device is open-loop
-unstable in some (sup g = 0, or a refusal by name where M(0) has an eigenvalue on the circle too). Required of a certificate (exit 0): both
+unstable in some (sup g = 0, or a refusal by name where M(0) has an eigenvalue on the circle too). In a quarter,
+K is maximised instead, a term of every wall's own expression K + E_ii(z) (gain 1, no conserved quantities:
+the certificate's "p inside the tf"), and the reference adds K to the walls it realises. Required of a certificate (exit 0): both
 checkers verify it; the reference's rho < 1 at lo and at lo k/6, k = 1..5, rho > 1 at hi, and its own
 first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); and every mutant of
 tests/check/loop_max_case.py (hi halved, lo raised to hi, a P entry negated, the model moved beyond the kind,
@@ -31,6 +33,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
+from indep_common import Rational  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
 import loop_max_case as LMC  # noqa: E402
@@ -55,11 +58,36 @@ def draw(rng):
         c["writes"][i] = rng.choice(["m, b, k", "m, b, k", "tf", "ss"])
         c["conserved"] += c["writes"][i] != "m, b, k"
     c["tags"]["free DOF"] = free
+    # a quarter: K added to every wall's own expression, K + E_ii(z), not a gain (no conserved quantities: the
+    # operators written as m, b, k); the reference adds K to the walls it realises
+    c["inside"] = rng.random() < 0.25
+    c["tags"]["K inside tf"] = c["inside"]
+    if c["inside"]:
+        c["writes"], c["conserved"] = {}, 0
     return c
 
 
+def family(c, g):
+    """The loop at g: the walls times g, or (K inside the tf) K = g added to every wall E_ii."""
+    if not c["inside"]:
+        return c, Q(g)
+    E = [[e + Rational([Q(g)], [1]) if i == j else e for j, e in enumerate(row)] for i, row in enumerate(c["E"])]
+    return dict(c, E=E), Q(1)
+
+
+def scene(c):
+    """ILC.scene_text, with K inside every wall's tf (its gain 1) where c["inside"]."""
+    text = ILC.scene_text(c)
+    if not c["inside"]:
+        return text
+    for e in sorted({row[i].expr() for i, row in enumerate(c["E"])}):  # each wall's expression (every occurrence)
+        assert '"%s"' % e in text, (e, text)
+        text = text.replace('"%s"' % e, '"K + %s"' % e)
+    return text.replace('gain = "g"\n', "").replace('g = "1"\n', 'K = "0"\n')
+
+
 def rho(c, g):
-    return ILC.rho(c, Q(g))
+    return ILC.rho(*family(c, g))
 
 
 def crossing(c, lo, hi):
@@ -84,12 +112,13 @@ def checkers_exit(exe, path):
 
 
 def run_case(exe, c, tmp):
-    scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
-    with open(scene, "w") as f:
-        f.write(ILC.scene_text(c))
+    path, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
+    with open(path, "w") as f:
+        f.write(scene(c))
     if os.path.exists(cert):
         os.remove(cert)
-    r = subprocess.run([exe, "stability", "--scene", scene, "--max", "g", "--digits", "12", "--json", "--quiet", "--certificate", cert],
+    name = "K" if c["inside"] else "g"
+    r = subprocess.run([exe, "stability", "--scene", path, "--max", name, "--digits", "12", "--json", "--quiet", "--certificate", cert],
                        capture_output=True, text=True, timeout=900)
     if r.returncode == 2:
         why = r.stderr.strip()
@@ -123,18 +152,18 @@ def run_case(exe, c, tmp):
     tol = hi * Q(1, 10 ** 9)
     if b < lo - tol or a > hi + tol:
         return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
-    for name, m, want in LMC.mutants(cl, "g")[1:]:
+    for what, m, want in LMC.mutants(cl, name)[1:]:
         with open(bad, "w") as f:
             json.dump(m, f)
         got = checkers_exit(exe, bad)
         if verdicts[1] == 3 and got[1] == 3:  # beyond the independent checker's limit, as the certificate
             got = (got[0], got[0])
         if not LMC.agrees(got, want):
-            return False, "%s: the checkers exit %s (want %s)" % (name, got, "1 or 2" if want is None else want), None
+            return False, "%s: the checkers exit %s (want %s)" % (what, got, "1 or 2" if want is None else want), None
         MUTANTS[0] += 1
     n = len(cl["evidence"]["unstable_at"]["P"])
-    return True, "sup g in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
-        float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,
+    return True, "sup %s in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
+        name, float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,
         ", %d conserved" % c["conserved"] if c["conserved"] else "", "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)"), \
         "certified sup" + ("" if verdicts == (0, 0) else ", independent beyond its limit")
 
@@ -156,6 +185,8 @@ def main(argv):
             key = branch or "disagree"
             if branch and c["tags"]["free DOF"]:
                 key += " (a free DOF)"
+            if branch and c["inside"]:
+                key += " (K inside the tf)"
             counts[key] = counts.get(key, 0) + 1
     print("indep_loop_max_certificate: %d cases, %d disagree; %s; mutants of the certificates %d, each rejected as it must be" % (
         cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTANTS[0]))

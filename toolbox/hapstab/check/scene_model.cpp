@@ -615,6 +615,28 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
   return out;
 }
 
+std::vector<std::vector<std::string>> block_entries(const nlohmann::json& model, const std::string& block, const std::string& free,
+                                                    size_t dofs) {
+  const toml::table root = parse_scene(model.at("scene").get<std::string>(), true);
+  Parameters p = read_parameters(root, model, free);
+  const auto* t = root[block].as_table();
+  if (!t) malformed("[" + block + "]", "missing or not a table");
+  if (!t->contains("tf")) beyond(block + ".ss", "the parameter inside an ss block (only a tf entry is proven affine)");
+  const std::string gain_text = field(*t, "gain", block, p, "1");
+  std::vector<std::vector<std::string>> out;
+  for (const auto& row : text_matrix(*t->get("tf"), dofs, block + ".tf")) {
+    out.emplace_back();
+    for (const auto& e : row) {  // read_discrete's reading, the parameter left a name
+      toml::table one;
+      one.insert("tf", e);
+      for (const char* key : {"domain", "method"})
+        if (t->contains(key)) one.insert(key, *t->get(key));
+      out.back().push_back("(" + gain_text + ")*(" + read_wall(&one, p) + ")");
+    }
+  }
+  return out;
+}
+
 nlohmann::json scene_loop_model(const nlohmann::json& model, bool free) {
   if (!model.is_object() || !model.contains("scene")) return model;
   if (free) only_fields(model, {"scene", "set", "name"}, "model");

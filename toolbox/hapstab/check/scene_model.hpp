@@ -103,4 +103,11 @@ SceneLoop read_scene_loop(const nlohmann::json& model);
 /// malformed or beyond this checker.
 nlohmann::json scene_loop_model(const nlohmann::json& model, bool free = false);
 
+/// The entries of the scene's [environment] or [coupling] (`block`) `tf` over `dofs` DOFs, each as
+/// read_scene_loop reads it but as an expression in z with the parameter `free` left a name (the others
+/// substituted, s discretised, times the gain): what check/affine.hpp proves affine in `free`
+/// (stability_loop_max_check.hpp). InputError naming what is malformed or beyond (an ss block).
+std::vector<std::vector<std::string>> block_entries(const nlohmann::json& model, const std::string& block, const std::string& free,
+                                                    size_t dofs);
+
 }  // namespace hapstab::check::detail

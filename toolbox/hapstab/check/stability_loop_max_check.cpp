@@ -1,13 +1,16 @@
 // hapstab/check/stability_loop_max_check.cpp -- see stability_loop_max_check.hpp.
 #include "hapstab/check/stability_loop_max_check.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <toml++/toml.h>
 
+#include "hapstab/check/affine.hpp"
 #include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
@@ -40,9 +43,15 @@ std::vector<std::string> identifiers(const std::string& text) {
   return out;
 }
 
-// The header's reading of p: "environment" or "coupling", the block whose `gain` is exactly p; p
-// named in no other string of the scene. InputError naming what is not so.
-std::string gain_block(const std::string& scene, const std::string& p) {
+// The header's reading of p: the block ("environment" or "coupling") whose `gain` is exactly p, p named in
+// no other string of the scene; or (`inside`) p named only in the `tf` entries of one of them, its gain
+// not p. InputError naming what is not so.
+struct Reading {
+  std::string block;
+  bool inside = false;
+};
+
+Reading read_p(const std::string& scene, const std::string& p) {
   toml::table root;
   try {
     root = toml::parse(scene);
@@ -51,17 +60,14 @@ std::string gain_block(const std::string& scene, const std::string& p) {
   }
   const auto* params = root["parameters"].as_table();
   if (!params || !params->contains(p)) throw InputError("model.name: '" + p + "' is not a parameter of the scene ([parameters])");
-  std::string block;
+  Reading r;
   for (const char* b : {"environment", "coupling"})
     if (const auto* t = root[b].as_table())
       if (const auto* g = t->get("gain"); g && g->as_string() && g->as_string()->get() == p) {
-        if (!block.empty()) throw InputError("model.name: '" + p + "' is the gain of both [environment] and [coupling]");
-        block = b;
+        if (!r.block.empty()) throw InputError("model.name: '" + p + "' is the gain of both [environment] and [coupling]");
+        r.block = b;
       }
-  if (block.empty())
-    throw InputError("model.name: '" + p + "' is not the whole gain of [environment] or [coupling] (gain = \"" + p +
-                     "\"): beyond this kind (the loop must be affine in it)");
-  std::string where;
+  std::vector<std::string> where;  // every string naming p, the gain and p's own definition aside
   std::function<void(const toml::node&, const std::string&)> scan = [&](const toml::node& n, const std::string& at) {
     if (const auto* t = n.as_table()) {
       for (const auto& [k, v] : *t) {
@@ -74,16 +80,69 @@ std::string gain_block(const std::string& scene, const std::string& p) {
     } else if (const auto* a = n.as_array()) {
       for (size_t i = 0; i < a->size(); ++i) scan(*a->get(i), at + "[" + std::to_string(i) + "]");
     } else if (const auto* s = n.as_string()) {
-      if (at == block + ".gain" || at == "parameters." + p) return;
+      if ((!r.block.empty() && at == r.block + ".gain") || at == "parameters." + p) return;
       for (const auto& id : identifiers(s->get()))
-        if (id == p && where.empty()) where = at;
+        if (id == p) {
+          where.push_back(at);
+          break;
+        }
     }
   };
   scan(root, "");
+  const auto in_tf = [&](const std::string& b) {
+    return std::all_of(where.begin(), where.end(), [&](const std::string& w) { return w == b + ".tf" || w.rfind(b + ".tf[", 0) == 0; });
+  };
+  if (r.block.empty()) {
+    for (const char* b : {"environment", "coupling"})
+      if (!where.empty() && in_tf(b)) return {b, true};
+    const auto outside = std::find_if(where.begin(), where.end(), [](const std::string& w) {
+      return w.rfind("environment.tf", 0) != 0 && w.rfind("coupling.tf", 0) != 0;
+    });
+    throw InputError("model.name: '" + p + "' is neither the whole gain of [environment] or [coupling] (gain = \"" + p +
+                     "\") nor named only in the tf of one of them" +
+                     (where.empty() ? std::string() : " (it is named in " + (outside != where.end() ? *outside : where[0] + " and " + where.back()) + ")") +
+                     ": beyond this kind (the loop must be affine in it)");
+  }
   if (!where.empty())
-    throw InputError("model.scene: '" + p + "' is named in " + where + " as well as in " + block +
+    throw InputError("model.scene: '" + p + "' is named in " + where[0] + " as well as in " + r.block +
                      ".gain: beyond this kind (only a gain, named nowhere else, makes the loop affine in it)");
-  return block;
+  return r;
+}
+
+// p inside the block's tf (header): each entry naming p proven affine in it (check/affine.hpp), H = H0 +
+// p H1; returns sum_j deg L_j, L_j the monic lcm over column j of den H0 and den H1 (of the entry where it
+// does not name p): the largest order the checker's realisation reaches at any p. `degree`: the largest
+// degree bound proven.
+size_t affine_block_order(const nlohmann::json& model, const Reading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
+  const auto entries = detail::block_entries(model, r.block, p, L1.dofs());
+  const auto& at1 = r.block == "environment" ? L1.E.tf : L1.V->tf;
+  ParseOptions po;
+  po.variable = 'z';
+  po.T = L1.T;
+  size_t order = 0;
+  for (size_t j = 0; j < entries.size(); ++j) {
+    Polynomial<rational> Lj{rational(1)};
+    const auto join = [&](const Polynomial<rational>& d) { Lj = divmod(Lj * d, gcd(Lj, d)).first.monic(); };
+    for (size_t i = 0; i < entries.size(); ++i) {
+      const auto ids = identifiers(entries[i][j]);
+      if (std::find(ids.begin(), ids.end(), p) == ids.end()) {
+        join(at1[i][j].den());
+        continue;
+      }
+      detail::Affine a;
+      try {
+        a = detail::prove_affine(entries[i][j], po, p);
+      } catch (const InputError& e) {
+        throw InputError("model.scene: " + r.block + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]: " + e.what() +
+                         ": beyond this kind");
+      }
+      degree = std::max(degree, a.D);
+      join(a.H0.den());
+      join(a.H1.den());
+    }
+    order += static_cast<size_t>(Lj.degree());
+  }
+  return order;
 }
 
 nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long value) {
@@ -189,8 +248,19 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   if (c.refuted) return {false, *c.refuted};
   if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
-  const std::string block = gain_block(model.at("scene").get<std::string>(), p);
+  const Reading r = read_p(model.at("scene").get<std::string>(), p);
+  const std::string& block = r.block;
   const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, 1)), L2 = detail::read_scene_loop(model_at(model, p, 2));
+  // p inside the block's tf (header): its realisation at 1, 2 and hi of the largest order, sum_j deg L_j
+  long degree = 0;
+  const size_t order = r.inside ? affine_block_order(model, r, p, L1, degree) : 0;
+  std::optional<detail::LoopMatrix> at_hi;
+  if (r.inside && c.hi > 0) {
+    nlohmann::json mh{{"scene", model.at("scene")}, {"set", model.contains("set") ? model.at("set") : nlohmann::json::object()}};
+    mh["set"][p] = c.hi.str();
+    flint::BallPrecision scope(128);
+    at_hi = detail::loop_matrix(detail::read_scene_loop(mh), 128);
+  }
   // the evidence's shape first (malformed before anything is computed)
   if (!evidence.contains("unstable_at")) throw InputError("evidence.unstable_at: missing (NOT stable at hi bounds sup p)");
   const nlohmann::json& un = detail::object_field(evidence, "unstable_at", "evidence");
@@ -205,18 +275,36 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
     const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
-    // affine in p (header): the gain block's A, B the same and C, D doubled at p = 2, the rest equal
+    // affine in p (header): the gain block's A, B the same and C, D doubled at p = 2, the rest equal; p
+    // inside the tf: A, B the same at 1, 2 and hi, of the largest order, C and D at hi on the line
     const size_t g = block == "environment" ? 0 : 4;
+    if (r.inside)
+      for (const auto* m : {&m1, &m2, at_hi ? &*at_hi : &m1})
+        if (m->controller[g].size() != order)
+          throw InputError("model.scene: the " + block + "'s realisation at " + p + " = 1, 2 or " + c.hi.str() + " has order " +
+                           std::to_string(m->controller[g].size()) + ", not " + std::to_string(order) +
+                           " (a pole cancelled there): beyond this kind");
     for (size_t k = 0; k < 8; ++k) {
       Mat want = m1.controller[k];
-      if (k == g + 2 || k == g + 3)
+      const bool moves = k == g + 2 || k == g + 3;  // C, D of the block
+      if (moves && !r.inside)
         for (auto& row : want)
           for (auto& x : row) x *= 2;
-      if (m2.controller[k] != want)
-        return {false, "the " + block + "'s realisation at " + p + " = 2 is not the one at 1 with C and D doubled: the loop is not " +
-                           "shown affine in " + p};
+      if ((!moves || !r.inside) && m2.controller[k] != want)
+        return {false, "the " + block + "'s realisation at " + p + " = 2 is not the one at 1 with " +
+                           (r.inside ? "A and B equal" : "C and D doubled") + ": the loop is not shown affine in " + p};
+      if (at_hi) {
+        if (moves)
+          for (size_t i = 0; i < want.size(); ++i)
+            for (size_t j = 0; j < want[i].size(); ++j) want[i][j] = rational(2 - c.hi) * m1.controller[k][i][j] + rational(c.hi - 1) * m2.controller[k][i][j];
+        if (at_hi->controller[k] != want)
+          return {false, "the " + block + "'s realisation at " + p + " = " + c.hi.str() + " is not on the line through those at 1 and 2"};
+      }
     }
-    if (m1.feedthrough_loop)
+    if (r.inside && (m1.conserved != 0 || L1.own_conserved != 0))
+      throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
+                       "'s tf (the quotient's basis may move with it): beyond this kind");
+    if (m1.feedthrough_loop || m2.feedthrough_loop)
       throw InputError("model.scene: D_E D_V or D_V D_E is not 0 (u and x_e solved through (I + D_E D_V)^-1): the loop is not affine "
                        "in " + p + ", beyond this kind");
     if (m1.conserved != m2.conserved || m1.M.size() != m2.M.size())
@@ -230,7 +318,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
     rational from = 0;
     if (evidence.contains("first_order")) {
-      const std::string fw = detail::first_order_start(evidence.at("first_order"), block, m1, m2, detail::slow_left_basis(L1), L1, c.lo, from);
+      const std::string fw = detail::first_order_start(evidence.at("first_order"), r.inside ? block + ".tf" : block, m1, m2, detail::slow_left_basis(L1), L1, c.lo, from);
       if (!fw.empty()) {
         why = fw;
         continue;
@@ -272,7 +360,10 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     if (!covered) continue;
     const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(m1.order) + " states, " + std::to_string(L1.dofs()) +
                              " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
-                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p + " the " + block + "'s gain alone)" +
+                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p +
+                             (r.inside ? " inside the " + block + "'s tf, proven affine there (degree bound " + std::to_string(degree) +
+                                             "), its realisation of order " + std::to_string(order) + " at 1, 2 and hi"
+                                       : " the " + block + "'s gain alone") + ")" +
                              (evidence.contains("first_order") ? "; stable on (0, " + detail::decimal(from0(evidence)) + "] by the first-order start (P0 + L^T S L/" + p +
                                                                       ", concave in " + p + ")"
                                                                 : std::string());

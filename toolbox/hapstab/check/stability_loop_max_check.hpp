@@ -11,7 +11,20 @@
 // (every identifier of every string is compared; [parameters].p's own definition is skipped, the
 // `--set` value never used). So the scene at p is the scene at 1 with that block's transfer matrix
 // times p and nothing else changed.
-// Affine in p (verified, not assumed): the block realised column by column over the monic lcm of each
+// Or p inside the tf: p named only in the `tf` entries of one of those blocks (its gain not p), e.g. a wall
+// K + B (z - 1)/(T z) with K maximised. Then (a) each entry naming p is proven affine in it, E = E0 + p E1
+// (check/affine.hpp: the parser's degree bound D, then D + 1 values); (b) with L_j the monic lcm of the
+// denominators of E0 and E1 down column j, every p's own column lcm divides L_j, so the realisation read at p
+// (column by column over that lcm) has order <= sum_j deg L_j, with equality exactly where its lcm is L_j --
+// and there it IS the realisation over L_j with numerators (E0 + p E1) L_j: A, B fixed, C, D affine in p. The
+// checker requires that order at p = 1, 2 and hi (else beyond: a pole cancelled there), so R(p) := (A, B,
+// (2 - p) C(1) + (p - 1) C(2), ...) realises E(p) for every p, and is the loop's own realisation at 1, 2, hi.
+// Where a pole of E cancels at some p, the loop as written drops the cancelled modes; its eigenvalues are
+// then a subset of R(p)'s (the modes of a controllable realisation: the minimal ones and its unobservable
+// ones, roots of the lcm, which divides L_j), so R(p) Schur stable still proves the loop as written stable.
+// D_E D_V = D_V D_E = 0 is checked at p = 1 and 2 (so at every p). Conserved quantities and the first-order
+// start are beyond this case (refused by name).
+// Affine in p, the gain case (verified, not assumed): the block realised column by column over the monic lcm of each
 // column's denominators (the same for every p != 0) has A, B independent of p and C, D proportional
 // to it -- checked exactly on the realisations read at p = 1 and p = 2 (A, B equal; C, D doubled; the
 // other block and the conserved quantities the same). The loop solves x_e = y + C_V eta + D_V u, u =
