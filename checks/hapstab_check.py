@@ -2771,26 +2771,31 @@ def balanced_norm(A):
     return max((sum(abs(x) for x in row) for row in A), default=Fraction(0))
 
 
-def loop_matrix(loop, bits):
+def loop_matrix(loop, bits, slow=False):
     """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`: the plant held,
     the controller x_e = x + V u, u = -E x_e solved exactly (u = F [s; xi; eta], x_e = X [s; xi; eta]),
-    the delay's buffer."""
+    the delay's buffer. `slow`: the same exactly (Fractions) with each hold e^{Ah} -> I, Gamma_h -> h B,
+    what l^T M is for every l whose plant part has l_p^T A = 0 (slow_rows)."""
     T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
     A, Bu, pos = loop_plant(devices, mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
     # the hold's exponent: |A T| beyond 2^12 makes e^{AT} span more than ~6000 binary orders (check/stability_loop_check.cpp),
     # measured on A balanced (companion forms' row sums are far above their rates)
-    if balanced_norm(A) * T > 4096:
+    if not slow and balanced_norm(A) * T > 4096:
         raise TooLarge("model: the hold e^{AT} has |A T| (A balanced, its largest row sum) more than 4096: beyond this checker")
     n, f = int(d), (d - int(d)) * T  # t_d = n T + f
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
 
-    def hold(h):  # (Phi_h, Gamma_h) from exp([A B; 0 0] h)
+    cv = (lambda x: Fraction(x)) if slow else Iv
+
+    def hold(h):  # (Phi_h, Gamma_h) from exp([A B; 0 0] h); slow: (I, h B)
+        if slow:
+            return [[Fraction(1 if i == j else 0) for j in range(ns)] for i in range(ns)], [[h * x for x in r] for r in Bu]
         X = expm_interval_n(aug, h, bits)
         return [r[:ns] for r in X[:ns]], [r[ns:] for r in X[:ns]]
 
     def imul(P, Q):
-        return [[sum((P[i][k] * Q[k][j] for k in range(len(Q))), Iv(0)) for j in range(len(Q[0]))] for i in range(len(P))]
+        return [[sum((P[i][k] * Q[k][j] for k in range(len(Q))), cv(0)) for j in range(len(Q[0]))] for i in range(len(P))]
     # over a period the plant sees u_(k-n-1) on [kT, kT + f) and u_(k-n) after:
     # s+ = Phi_T s + Phi_(T-f) Gamma_f u_(k-n-1) + Gamma_(T-f) u_(k-n)
     if f == 0:
@@ -2826,7 +2831,7 @@ def loop_matrix(loop, bits):
         for t in range(nV):
             X[i][ns + nE + t] += CV[i][t]
     X = [[X[i][j] + sum(DV[i][k] * F[k][j] for k in range(N)) for j in range(nc)] for i in range(N)]
-    Z = Iv(0)
+    Z = cv(0)
     M = [[Z] * order for _ in range(order)]
     for i in range(ns):
         for j in range(ns):
@@ -2836,7 +2841,7 @@ def loop_matrix(loop, bits):
         for i in range(ns):
             if age == 0:
                 for j in range(nc):
-                    M[i][j] = M[i][j] + sum((G[i][k] * F[k][j] for k in range(N) if F[k][j]), Iv(0))
+                    M[i][j] = M[i][j] + sum((G[i][k] * F[k][j] for k in range(N) if F[k][j]), cv(0))
             else:
                 for j in range(N):
                     M[i][nc + (age - 1) * N + j] = G[i][j]
@@ -2846,16 +2851,16 @@ def loop_matrix(loop, bits):
     if buffers:
         for i in range(N):
             for j in range(nc):
-                M[nc + i][j] = Iv(F[i][j])
+                M[nc + i][j] = cv(F[i][j])
         for b in range(1, buffers):
             for i in range(N):
-                M[nc + b * N + i][nc + (b - 1) * N + i] = Iv(1)
+                M[nc + b * N + i][nc + (b - 1) * N + i] = cv(1)
     for i in range(nE):
         for j in range(nc):
-            M[ns + i][j] = Iv(sum(BE[i][k] * X[k][j] for k in range(N)) + (AE[i][j - ns] if ns <= j < ns + nE else 0))
+            M[ns + i][j] = cv(sum(BE[i][k] * X[k][j] for k in range(N)) + (AE[i][j - ns] if ns <= j < ns + nE else 0))
     for i in range(nV):
         for j in range(nc):
-            M[ns + nE + i][j] = Iv(sum(BV[i][k] * F[k][j] for k in range(N)) + (AV[i][j - ns - nE] if j >= ns + nE else 0))
+            M[ns + nE + i][j] = cv(sum(BV[i][k] * F[k][j] for k in range(N)) + (AV[i][j - ns - nE] if j >= ns + nE else 0))
     return M
 
 
@@ -3217,32 +3222,23 @@ def affine_block_order(model, block, p, N):
     return order, degree
 
 
-def slow_left_basis(loop):
-    """The rows l^T = [l_p, 0, 0, l_buf] of the loop's slow modes at p = 0 of the environment's gain
-    (check/stability_loop_max_check.hpp): l_p^T A = 0 (the continuous plant, exactly), l_buf from l_p^T
-    Gamma_h = h l_p^T B for each hold of h seconds, in loop_matrix's order of states."""
-    T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
-    A, Bu, _ = loop_plant(devices, mass, damp, stiff, ops)
-    N, ns = len(mass), len(A)
-    n, f = int(d), (d - int(d)) * T
-    buffers = n + (1 if f else 0)
-    nE = len((Eb[1] if Eb[0] == "ss" else realise_columns(Eb[1]))[0])
-    nV = 0 if Vb is None else len((Vb[1] if Vb[0] == "ss" else realise_columns(Vb[1]))[0])
-    nc = ns + nE + nV
-    free, _ = conserved_quantities(A, [[] for _ in range(ns)])
-    out = []
-    for lp in free:
-        l = list(lp) + [Fraction(0)] * (nc - ns + buffers * N)
-        lB = [sum(lp[i] * Bu[i][j] for i in range(ns)) for j in range(N)]
-        for a in range(buffers, 0, -1):  # buffer block a - 1 holds u_(k-a): the plant sees u_(k-n) for T - f, u_(k-n-1) for f
-            h = T - f if a == n else f if a == n + 1 else Fraction(0)
-            for j in range(N):
-                l[nc + (a - 1) * N + j] = h * lB[j] + (l[nc + a * N + j] if a < buffers else 0)
-        out.append(l)
-    return out
+def slow_rows(l1, l2):
+    """The rows l of the loop's slow modes at p = 0 (check/stability_loop_max_check.hpp): a basis of
+    {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) the slow matrices (loop_matrix's
+    slow=True) of the loops read at p = 1 and 2. With l_p^T A = 0, l^T M(p) = l^T M~(p) exactly, so
+    l^T M(0) = l^T."""
+    S1, S2 = loop_matrix(l1, 0, slow=True), loop_matrix(l2, 0, slow=True)
+    A = loop_plant(*l1[2:7])[0]
+    n, ns = len(S1), len(A)
+    M0mI = [[2 * S1[i][j] - S2[i][j] - (1 if i == j else 0) for j in range(n)] for i in range(n)]
+    Ap = [list(A[i]) if i < ns else [Fraction(0)] * ns for i in range(n)]
+    L = conserved_quantities(M0mI, Ap)[0]
+    if L:
+        echelon(L)
+    return L
 
 
-def first_order_start(fo, block, loop, M1, M2, count, own, lo):
+def first_order_start(fo, loops, M1, M2, count, own, lo):
     """(eps, "") when evidence.first_order {to = eps, P0, S} shows every M(p), 0 < p <= eps, Schur stable:
     with L the slow rows (L M(0) = L exactly), K = L (M(2) - M(1)) and P(p) = P0 + L^T S L / p, the Stein
     matrix is Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K, concave in p, > 0 at 0 and eps
@@ -3250,11 +3246,9 @@ def first_order_start(fo, block, loop, M1, M2, count, own, lo):
     if not isinstance(fo, dict):
         raise Malformed("evidence.first_order: not an object")
     only(fo, ("to", "P0", "S"), "evidence.first_order")
-    if block != "environment":
-        raise Malformed("evidence.first_order: for the environment's gain only (the force is 0 at p = 0 there)")
     if count or own:
         raise Malformed("evidence.first_order: a loop with conserved quantities: beyond this kind")
-    L = slow_left_basis(loop)
+    L = slow_rows(*loops)
     if not L:
         raise Malformed("evidence.first_order: the loop has no position that nothing holds at p = 0")
     eps = exact(fo, "to", "evidence.first_order")
@@ -3376,7 +3370,7 @@ def check_stability_loop_max(c):
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
         start, ok = Fraction(0), True
         if "first_order" in evidence:
-            eps, fails = first_order_start(evidence["first_order"], block + (".tf" if inside else ""), l1, M1, M2, count, own1, lo)
+            eps, fails = first_order_start(evidence["first_order"], (l1, l2), M1, M2, count, own1, lo)
             if fails:
                 why = fails
                 continue

@@ -2,8 +2,8 @@
 for `stability --scene S --max NAME`, both checkers verify it, and each hand edit below gets the exit
 code it must from both (1 refuted: the evidence does not prove the edited claim; 2 malformed: the model
 is beyond the kind). The ctests certificate_loop_max* run it on tests/cli/scenes/loop_max_held_devices.toml (the
-environment's gain), integrator_devices_2dof.toml (the first-order start) and loop_max_wall_stiffness.toml (the
-parameter inside the wall's tf).
+environment's gain), integrator_devices_2dof.toml (the first-order start), loop_max_wall_stiffness.toml (the
+parameter inside the wall's tf) and loop_max_free_wall_stiffness.toml (both).
 
   loop_max_case.py HAPSTAB SCENE NAME
 exit 0 when every expectation holds, else 1 (each failure printed)."""
@@ -84,8 +84,9 @@ def mutants(cert, name):
                 ("P0's first entry negated", with_field(cert, ["evidence", "first_order", "P0", 0, 0], p0[1:] if p0.startswith("-") else "-" + p0), 1),
                 ("S negated (not positive semidefinite)", with_field(cert, ["evidence", "first_order", "S", 0, 0], s0[1:] if s0.startswith("-") else "-" + s0), 1),
                 ("S zero (P0 alone: M(0) is marginal)", with_field(cert, ["evidence", "first_order", "S"], [["0"] * len(fo["S"])] * len(fo["S"])), 1),
-                ("eps beyond lo", with_field(cert, ["evidence", "first_order", "to"], str(2 * Fraction(claim["hi"]))), 2),
-                ("the first-order start with the coupling's gain", with_field(cert, ["model", "scene"], text.replace(env, "").replace("[coupling]", "[coupling]\n" + env)), None)]
+                ("eps beyond lo", with_field(cert, ["evidence", "first_order", "to"], str(2 * Fraction(claim["hi"]))), 2)]
+        if env in text:
+            out.append(("the first-order start with the coupling's gain", with_field(cert, ["model", "scene"], text.replace(env, "").replace("[coupling]", "[coupling]\n" + env)), None))
     if len(cover) > 1:
         # refuted where the first P fails at its new end, else malformed (the next interval then empty): rejected
         out.append(("an interval's end moved past the next one's", with_field(cert, ["evidence", "cover", 0, "to"], cover[1]["to"]), None))

@@ -10,7 +10,8 @@ can start there -- except in a fifth of the cases, where one DOF is left free (i
 nothing at g = 0: the certificate's first-order start on (0, eps]), and the first device is open-loop
 unstable in some (sup g = 0, or a refusal by name where M(0) has an eigenvalue on the circle too). In a quarter,
 K is maximised instead, a term of every wall's own expression K + E_ii(z) (gain 1, no conserved quantities:
-the certificate's "p inside the tf"), and the reference adds K to the walls it realises. Required of a certificate (exit 0): both
+the certificate's "p inside the tf"), and the reference adds K to the walls it realises; in half of those the
+walls at K = 0 are dampers B (z - 1)/(T z) alone (no link spring), so M(0) is marginal where a DOF is free. Required of a certificate (exit 0): both
 checkers verify it; the reference's rho < 1 at lo and at lo k/6, k = 1..5, rho > 1 at hi, and its own
 first crossing (bisection on rho - 1 at 50 digits) inside [lo, hi] (1e-9 relative); and every mutant of
 tests/check/loop_max_case.py (hi halved, lo raised to hi, a P entry negated, the model moved beyond the kind,
@@ -64,6 +65,13 @@ def draw(rng):
     c["tags"]["K inside tf"] = c["inside"]
     if c["inside"]:
         c["writes"], c["conserved"] = {}, 0
+        if rng.random() < 0.5:  # the walls at K = 0 dampers B (z - 1)/(T z), no link: M(0) marginal, the first-order start
+            c["E"] = [[Rational([-e.num[1], e.num[1]], [1, 0]) if i == j else Rational([0], [1]) for j, e in enumerate(row)]
+                      for i, row in enumerate(c["E"])]
+            c["tags"]["link spring"] = False
+            c["tags"]["K inside tf"] = "damper walls"
+            if not free and rng.random() < 0.6:  # a DOF held by nothing at K = 0 (the first-order start)
+                c["ops"][-1], c["tags"]["free DOF"] = None, True
     return c
 
 

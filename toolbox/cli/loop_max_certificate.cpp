@@ -166,7 +166,7 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   for (const int bits : {24, 53}) {
     nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
     rational from = 0;
-    if (check::detail::first_order_start(fo, "environment", m1, m2, L, loop, lo, from).empty()) return fo;
+    if (check::detail::first_order_start(fo, m1, m2, L, loop, lo, from).empty()) return fo;
   }
   return std::nullopt;
 }
@@ -246,7 +246,7 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
   if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
   j["model"]["name"] = name;
   check::detail::LoopMatrix m1, m2;
-  check::detail::SceneLoop loop1;
+  check::detail::SceneLoop loop1, loop2;
   const auto read = [&](long v) {
     nlohmann::json model{{"scene", j["model"]["scene"]}, {"set", j["model"]["set"]}};
     model["set"][name] = std::to_string(v);
@@ -254,8 +254,8 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
   };
   try {
     flint::BallPrecision scope(kBits);
-    loop1 = read(1);
-    m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(read(2), kBits);
+    loop1 = read(1), loop2 = read(2);
+    m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(loop2, kBits);
   } catch (const InputError& e) {
     throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
   }
@@ -280,7 +280,7 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
     // first-order cover's end, else lo / 4^j
     std::optional<nlohmann::json> start;
     if (m.open_at_zero && hi > 0) {
-      const Mat L = check::detail::slow_left_basis(loop1);
+      const Mat L = check::detail::slow_rows(loop1, loop2);
       std::vector<rational> tries;
       if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
       for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);

@@ -351,6 +351,88 @@ rational balanced_norm(Mat A) {
   return norm;
 }
 
+// What M is built from besides the holds: the controller's realisations, u = F [s; xi; eta] and x_e = X [s;
+// xi; eta] (paper 000 (11), the algebraic loop solved exactly), and M's layout.
+struct Assembly {
+  Realisation E, V;
+  Mat F, X;
+  size_t N = 0, ns = 0, nE = 0, nV = 0, nc = 0, n = 0, buffers = 0, order = 0;
+};
+
+Assembly assembly(const detail::SceneLoop& L, const Plant& pl) {
+  Assembly a;
+  a.N = L.dofs(), a.ns = pl.A.size();
+  const size_t N = a.N, ns = a.ns, pos = pl.pos;
+  a.E = discrete(L.E);
+  a.V = L.V ? discrete(*L.V) : Realisation{Mat{}, rational_matrix::zeros(0, N), rational_matrix::zeros(N, 0), rational_matrix::zeros(N, N)};
+  const Realisation &E = a.E, &V = a.V;
+  a.n = static_cast<size_t>(L.delay), a.buffers = a.n + (L.fraction == 0 ? 0 : 1);  // u_{k-1} .. u_{k-buffers} kept
+  a.nE = E.A.size(), a.nV = V.A.size(), a.nc = ns + a.nE + a.nV, a.order = a.nc + a.buffers * N;
+  const size_t nE = a.nE, nV = a.nV, nc = a.nc;
+  if (a.order > kMaxOrder)
+    throw InputError("model.scene: the closed loop has " + std::to_string(a.order) + " states, beyond this checker's " +
+                     std::to_string(kMaxOrder));
+  // the controller (paper 000 (11)): x_e = x + V u, u = -E x_e, the algebraic loop solved exactly:
+  // u = F [s; xi; eta] with F = -W [D_E C_x, C_E, D_E C_V], W = (I + D_E D_V)^-1; x_e = X [s; xi; eta]
+  Mat W = rational_matrix::add(rational_matrix::identity(N), rational_matrix::mul(E.D, V.D));
+  W = inverse(W);
+  a.F = rational_matrix::zeros(N, nc), a.X = rational_matrix::zeros(N, nc);
+  Mat &F = a.F, &X = a.X;
+  for (size_t i = 0; i < N; ++i) {
+    for (size_t j = 0; j < N; ++j) {
+      for (size_t k = 0; k < N; ++k) F[i][pos + k] -= W[i][j] * E.D[j][k];  // C_x picks the positions
+      for (size_t t = 0; t < nE; ++t) F[i][ns + t] -= W[i][j] * E.C[j][t];
+      for (size_t t = 0; t < nV; ++t) {
+        rational dc = 0;
+        for (size_t k = 0; k < N; ++k) dc += E.D[j][k] * V.C[k][t];
+        F[i][ns + nE + t] -= W[i][j] * dc;
+      }
+    }
+    X[i][pos + i] += 1;
+    for (size_t t = 0; t < nV; ++t) X[i][ns + nE + t] += V.C[i][t];
+  }
+  X = rational_matrix::add(X, rational_matrix::mul(V.D, F));
+  return a;
+}
+
+// M over T (flint::Ball: the loop's matrix; rational: the slow matrix, detail::slow_rows) from the holds:
+// s+ = Phi s + G0 u_{k-n} (+ G1 u_{k-n-1} when the delay has a fraction f: G1 non-null), `to` converting the
+// controller's exact entries.
+template <class T, class To>
+std::vector<std::vector<T>> assemble(const Assembly& a, const std::vector<std::vector<T>>& Phi, const std::vector<std::vector<T>>& G0,
+                                     const std::vector<std::vector<T>>* G1, To to) {
+  const size_t N = a.N, ns = a.ns, nE = a.nE, nc = a.nc, n = a.n;
+  std::vector<std::vector<T>> M(a.order, std::vector<T>(a.order, to(rational(0))));
+  for (size_t i = 0; i < ns; ++i)
+    for (size_t j = 0; j < ns; ++j) M[i][j] = Phi[i][j];
+  // u_{k-age} on s: age 0 is u_k = F [s; xi; eta] (now), age a >= 1 the buffer's block a
+  const auto drive = [&](const std::vector<std::vector<T>>& G, size_t age) {
+    for (size_t i = 0; i < ns; ++i)
+      if (age == 0) {  // M += G F, the product summed first (as product())
+        std::vector<T> GF(nc, to(rational(0)));
+        for (size_t k = 0; k < N; ++k)
+          for (size_t j = 0; j < nc; ++j) GF[j] += G[i][k] * to(a.F[k][j]);
+        for (size_t j = 0; j < nc; ++j) M[i][j] += GF[j];
+      } else {
+        for (size_t j = 0; j < N; ++j) M[i][nc + (age - 1) * N + j] = G[i][j];
+      }
+  };
+  drive(G0, n);
+  if (G1) drive(*G1, n + 1);
+  if (a.buffers > 0) {
+    for (size_t i = 0; i < N; ++i)  // the buffer's first block: u_k
+      for (size_t j = 0; j < nc; ++j) M[nc + i][j] = to(a.F[i][j]);
+    for (size_t b = 1; b < a.buffers; ++b)  // and each block moves one down
+      for (size_t i = 0; i < N; ++i) M[nc + b * N + i][nc + (b - 1) * N + i] = to(rational(1));
+  }
+  const Mat BX = rational_matrix::mul(a.E.B, a.X), BF = rational_matrix::mul(a.V.B, a.F);  // xi+ = A_E xi + B_E x_e, eta+ = A_V eta + B_V u
+  for (size_t i = 0; i < nE; ++i)
+    for (size_t j = 0; j < nc; ++j) M[ns + i][j] = to(BX[i][j] + (j >= ns && j < ns + nE ? a.E.A[i][j - ns] : rational(0)));
+  for (size_t i = 0; i < a.nV; ++i)
+    for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = to(BF[i][j] + (j >= ns + nE ? a.V.A[i][j - ns - nE] : rational(0)));
+  return M;
+}
+
 }  // namespace
 
 namespace detail {
@@ -358,7 +440,6 @@ namespace detail {
 LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   const Plant pl = plant(L);
   const Mat &A = pl.A, &Bu = pl.B;
-  const size_t N = L.dofs(), ns = A.size(), pos = pl.pos;
   // the hold's exponent: |A T| beyond 2^12 makes e^{AT} span more than ~6000 binary orders, whose exact
   // midpoints (the Stein test's Q_mid) no longer fit in memory (a fuzzed T of 10^118 took 2 GB). Measured
   // on A balanced (companion forms have row sums far above their rates: 4 x 10^5 T for three lags)
@@ -378,60 +459,10 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     G0 = Ga;
     G1 = product(Pa, Gb);
   }
-  const Realisation E = discrete(L.E);
-  const Realisation V = L.V ? discrete(*L.V) : Realisation{Mat{}, rational_matrix::zeros(0, N), rational_matrix::zeros(N, 0),
-                                                          rational_matrix::zeros(N, N)};
-  const size_t n = static_cast<size_t>(L.delay), buffers = n + (f == 0 ? 0 : 1);  // u_{k-1} .. u_{k-buffers} kept
-  const size_t nE = E.A.size(), nV = V.A.size(), nc = ns + nE + nV, order = nc + buffers * N;
-  if (order > kMaxOrder)
-    throw InputError("model.scene: the closed loop has " + std::to_string(order) + " states, beyond this checker's " +
-                     std::to_string(kMaxOrder));
-  // the controller (paper 000 (11)): x_e = x + V u, u = -E x_e, the algebraic loop solved exactly:
-  // u = F [s; xi; eta] with F = -W [D_E C_x, C_E, D_E C_V], W = (I + D_E D_V)^-1; x_e = X [s; xi; eta]
-  Mat W = rational_matrix::add(rational_matrix::identity(N), rational_matrix::mul(E.D, V.D));
-  W = inverse(W);
-  Mat F = rational_matrix::zeros(N, nc), X = rational_matrix::zeros(N, nc);
-  for (size_t i = 0; i < N; ++i) {
-    for (size_t j = 0; j < N; ++j) {
-      for (size_t k = 0; k < N; ++k) F[i][pos + k] -= W[i][j] * E.D[j][k];  // C_x picks the positions
-      for (size_t t = 0; t < nE; ++t) F[i][ns + t] -= W[i][j] * E.C[j][t];
-      for (size_t t = 0; t < nV; ++t) {
-        rational dc = 0;
-        for (size_t k = 0; k < N; ++k) dc += E.D[j][k] * V.C[k][t];
-        F[i][ns + nE + t] -= W[i][j] * dc;
-      }
-    }
-    X[i][pos + i] += 1;
-    for (size_t t = 0; t < nV; ++t) X[i][ns + nE + t] += V.C[i][t];
-  }
-  X = rational_matrix::add(X, rational_matrix::mul(V.D, F));
-  BallRows M = zero_balls(order, order);
-  for (size_t i = 0; i < ns; ++i)
-    for (size_t j = 0; j < ns; ++j) M[i][j] = Phi[i][j];
-  // u_{k-age} on s: age 0 is u_k = F [s; xi; eta] (now), age a >= 1 the buffer's block a
-  const auto drive = [&](const BallRows& G, size_t age) {
-    if (age == 0) {
-      const BallRows GF = product(G, balls(F));
-      for (size_t i = 0; i < ns; ++i)
-        for (size_t j = 0; j < nc; ++j) M[i][j] += GF[i][j];
-    } else {
-      for (size_t i = 0; i < ns; ++i)
-        for (size_t j = 0; j < N; ++j) M[i][nc + (age - 1) * N + j] = G[i][j];
-    }
-  };
-  drive(G0, n);
-  if (f != 0) drive(G1, n + 1);
-  if (buffers > 0) {
-    for (size_t i = 0; i < N; ++i)  // the buffer's first block: u_k
-      for (size_t j = 0; j < nc; ++j) M[nc + i][j] = flint::Ball(F[i][j]);
-    for (size_t b = 1; b < buffers; ++b)  // and each block moves one down
-      for (size_t i = 0; i < N; ++i) M[nc + b * N + i][nc + (b - 1) * N + i] = flint::Ball(1L);
-  }
-  const Mat BX = rational_matrix::mul(E.B, X), BF = rational_matrix::mul(V.B, F);  // xi+ = A_E xi + B_E x_e, eta+ = A_V eta + B_V u
-  for (size_t i = 0; i < nE; ++i)
-    for (size_t j = 0; j < nc; ++j) M[ns + i][j] = flint::Ball(BX[i][j] + (j >= ns && j < ns + nE ? E.A[i][j - ns] : rational(0)));
-  for (size_t i = 0; i < nV; ++i)
-    for (size_t j = 0; j < nc; ++j) M[ns + nE + i][j] = flint::Ball(BF[i][j] + (j >= ns + nE ? V.A[i][j - ns - nE] : rational(0)));
+  const Assembly as = assembly(L, pl);
+  const Realisation &E = as.E, &V = as.V;
+  const size_t ns = as.ns, nE = as.nE, nc = as.nc, order = as.order;
+  BallRows M = assemble<flint::Ball>(as, Phi, G0, f == 0 ? nullptr : &G1, [](const rational& x) { return flint::Ball(x); });
   Conserved q = conserved_quantities(pl.A, pl.B);
   if (q.at.size() < L.own_conserved)
     throw NumericalError("model.plant: the integrated position carries no conserved quantity (a checker defect)");
@@ -571,32 +602,36 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
   return false;
 }
 
-// The loop's slow modes at p = 0 of an environment gain p (stability_loop_max_check.hpp's first-order
-// start): rows l^T = [l_p, 0, 0, l_buf] with l_p^T A = 0 (the plant's continuous A, exactly), l_buf from
-// l_p^T Gamma_h = h l_p^T B (the hold of h seconds): l^T M(0) = l^T exactly, as the force is 0 at p = 0.
-Mat slow_left_basis(const SceneLoop& L) {
-  const Plant pl = plant(L);
-  const size_t N = L.dofs(), ns = pl.A.size();
-  const Realisation E = discrete(L.E);
-  const size_t nV = L.V ? discrete(*L.V).A.size() : 0, nc = ns + E.A.size() + nV;
-  const size_t n = static_cast<size_t>(L.delay), buffers = n + (L.fraction == 0 ? 0 : 1), order = nc + buffers * N;
-  const rational f = L.fraction * L.T;
-  const Conserved free = conserved_quantities(pl.A, rational_matrix::zeros(ns, 0));
-  Mat out;
-  for (const auto& lp : free.L) {
-    std::vector<rational> l(order, rational(0)), lB(N, rational(0));
-    for (size_t i = 0; i < ns; ++i) l[i] = lp[i];
-    for (size_t j = 0; j < N; ++j)
-      for (size_t i = 0; i < ns; ++i) lB[j] += lp[i] * pl.B[i][j];
-    // buffer block a - 1 holds u_{k-a}: the plant sees u_{k-n} for T - f and u_{k-n-1} for f
-    for (size_t a = buffers; a >= 1; --a) {
-      const rational h = a == n ? rational(L.T - f) : a == n + 1 ? f : rational(0);
-      for (size_t j = 0; j < N; ++j)
-        l[nc + (a - 1) * N + j] = h * lB[j] + (a < buffers ? l[nc + a * N + j] : rational(0));
-    }
-    out.push_back(std::move(l));
+// The rows l of the loop's slow modes at p = 0 (stability_loop_max_check.hpp's first-order start): a basis,
+// in reduced row echelon form, of {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) with M~
+// the exact slow matrix (each hold e^{Ah} -> I, Gamma_h -> h B) of the loops read at p = 1 and 2. For l_p^T
+// A = 0, l_p^T e^{Ah} = l_p^T and l_p^T Gamma_h = h l_p^T B exactly, so l^T M(p) = l^T M~(p): l^T M(0) = l^T.
+Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2) {
+  const auto slow = [](const SceneLoop& L) {
+    const Plant pl = plant(L);
+    const size_t ns = pl.A.size();
+    const rational f = L.fraction * L.T;
+    Mat hB0 = pl.B, hB1 = pl.B;
+    for (auto& row : hB0)
+      for (auto& x : row) x *= rational(L.T - f);
+    for (auto& row : hB1)
+      for (auto& x : row) x *= f;
+    return std::pair{assemble<rational>(assembly(L, pl), rational_matrix::identity(ns), hB0, f == 0 ? nullptr : &hB1,
+                                        [](const rational& x) { return x; }),
+                     pl.A};
+  };
+  const auto [S1, A] = slow(L1);
+  const Mat S2 = slow(L2).first;
+  if (S1.size() != S2.size()) throw NumericalError("the loops at p = 1 and 2 differ in order (a checker defect)");
+  const size_t n = S1.size(), ns = A.size();
+  Mat M0mI = rational_matrix::zeros(n, n), Ap = rational_matrix::zeros(n, ns);
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = 0; j < n; ++j) M0mI[i][j] = 2 * S1[i][j] - S2[i][j] - (i == j ? rational(1) : rational(0));
+    if (i < ns) Ap[i] = A[i];
   }
-  return out;
+  Mat L = conserved_quantities(M0mI, Ap).L;
+  if (!L.empty()) echelon(L);
+  return L;
 }
 
 }  // namespace detail

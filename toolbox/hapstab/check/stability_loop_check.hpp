@@ -104,9 +104,10 @@ LoopMatrix loop_matrix(const SceneLoop& L, long bits);
 bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
 /// Every symmetric matrix in the balls Q is positive definite (the header's test of Q); else false, `why` set.
 bool ball_positive_definite(const BallRows& Q, std::string& why);
-/// The rows l^T of the loop's slow modes at p = 0 of an environment gain p: l^T M(0) = l^T exactly (the
-/// positions that nothing holds at p = 0: l_p^T A = 0; stability_loop_max_check.hpp). Empty when none.
-rational_matrix::Mat slow_left_basis(const SceneLoop& L);
+/// The rows l^T of the loop's slow modes at p = 0 of the family read at p = 1 (L1) and 2 (L2), in reduced row
+/// echelon form: l^T M(0) = l^T exactly, l_p^T A = 0 (the positions that nothing holds at p = 0; the
+/// exact slow matrix, stability_loop_check.cpp). Empty when none.
+rational_matrix::Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2);
 /// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.

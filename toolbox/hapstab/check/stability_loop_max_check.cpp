@@ -163,19 +163,17 @@ Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n, c
 rational from0(const nlohmann::json& evidence) { return detail::exact_field(evidence.at("first_order"), "to", "evidence.first_order"); }
 
 // Stable on (0, eps] where M(0) has the eigenvalue 1 on positions that nothing holds (header): rows L with
-// L M(0) = L exactly (check/stability_loop_check.hpp's slow_left_basis), so L M(p) = L + p K, K = L (M(2) -
+// L M(0) = L exactly (check/stability_loop_check.hpp's slow_rows), so L M(p) = L + p K, K = L (M(2) -
 // M(1)); with P(p) = P0 + L^T S L / p (P0 > 0, S >= 0: P(p) > 0 for p > 0) the Stein matrix is, exactly,
 //   Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K,
 // concave in p; > 0 at 0 and at eps makes it > 0 on [0, eps], so every M(p), 0 < p <= eps, is Schur
 // stable. "" when shown (`from` := eps), else what fails.
 }  // namespace
 
-std::string detail::first_order_start(const nlohmann::json& fo, const std::string& block, const LoopMatrix& m1, const LoopMatrix& m2,
-                                      const Mat& L, const SceneLoop& loop, const rational& lo, rational& from) {
+std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix& m1, const LoopMatrix& m2, const Mat& L,
+                                      const SceneLoop& loop, const rational& lo, rational& from) {
   if (!fo.is_object()) throw InputError("evidence.first_order: not an object");
   detail::only_fields(fo, {"to", "P0", "S"}, "evidence.first_order");
-  if (block != "environment")
-    throw InputError("evidence.first_order: for the environment's gain only (the force is 0 at p = 0 there)");
   if (m1.conserved != 0 || loop.own_conserved != 0)
     throw InputError("evidence.first_order: a loop with conserved quantities (its quotient moves the slow modes): beyond this kind");
   if (L.empty()) throw InputError("evidence.first_order: the loop has no position that nothing holds at p = 0 (no slow mode to start from)");
@@ -318,7 +316,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
     rational from = 0;
     if (evidence.contains("first_order")) {
-      const std::string fw = detail::first_order_start(evidence.at("first_order"), r.inside ? block + ".tf" : block, m1, m2, detail::slow_left_basis(L1), L1, c.lo, from);
+      const std::string fw = detail::first_order_start(evidence.at("first_order"), m1, m2, detail::slow_rows(L1, L2), L1, c.lo, from);
       if (!fw.empty()) {
         why = fw;
         continue;

@@ -22,8 +22,8 @@
 // Where a pole of E cancels at some p, the loop as written drops the cancelled modes; its eigenvalues are
 // then a subset of R(p)'s (the modes of a controllable realisation: the minimal ones and its unobservable
 // ones, roots of the lcm, which divides L_j), so R(p) Schur stable still proves the loop as written stable.
-// D_E D_V = D_V D_E = 0 is checked at p = 1 and 2 (so at every p). Conserved quantities and the first-order
-// start are beyond this case (refused by name).
+// D_E D_V = D_V D_E = 0 is checked at p = 1 and 2 (so at every p). Conserved quantities are beyond this case
+// (refused by name: the quotient's basis could move with p).
 // Affine in p, the gain case (verified, not assumed): the block realised column by column over the monic lcm of each
 // column's denominators (the same for every p != 0) has A, B independent of p and C, D proportional
 // to it -- checked exactly on the realisations read at p = 1 and p = 2 (A, B equal; C, D doubled; the
@@ -43,18 +43,18 @@
 //          M(0) has an eigenvalue |z| > 1, and so has M(p) for every small p > 0 (eigenvalues are
 //          continuous in p): sup = 0.
 // The first-order start (evidence.first_order {to = eps, P0, S}): where M(0) is only marginally stable --
-// a device's position that nothing holds at p = 0 (the environment's gain p) -- no cover can start at 0.
-// The rows L of the slow modes (l^T = [l_p, 0, 0, l_buf], l_p^T A = 0 for the continuous plant A, l_buf from
-// l_p^T Gamma_h = h l_p^T B: every hold of h seconds) satisfy L M(0) = L exactly (the force is p times the
-// rest, 0 at p = 0: check/stability_loop_check.hpp's slow_left_basis), so L M(p) = L + p K, K = L (M(2) -
-// M(1)). With P(p) = P0 + L^T S L / p (P0 > 0, S >= 0 exactly: P(p) > 0 for p > 0),
+// a device's position that nothing holds at p = 0 -- no cover can start at 0. The rows L of the slow modes
+// (check/stability_loop_check.hpp's slow_rows: a basis of {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~ the
+// exact slow matrix, each hold e^{Ah} -> I and Gamma_h -> h B; for l_p^T A = 0, l_p^T e^{Ah} = l_p^T and
+// l_p^T Gamma_h = h l_p^T B exactly, so l^T M(p) = l^T M~(p)) satisfy L M(0) = L exactly, so L M(p) = L + p K,
+// K = L (M(2) - M(1)). With P(p) = P0 + L^T S L / p (P0 > 0, S >= 0 exactly: P(p) > 0 for p > 0),
 //   P(p) - M(p)^T P(p) M(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K =: Q(p)   (exactly),
 // and v^T Q(p) v = v^T P0 v - |P0^{1/2} M(p) v|^2 - 2 v^T L^T S K v - p |S^{1/2} K v|^2 is concave in p:
 // Q > 0 at 0 and at eps (balls) gives Q > 0 on [0, eps], so M(p) is Schur stable for 0 < p <= eps (Stein).
-// The cover then starts at eps. For the environment's gain, without conserved quantities (M unreduced).
+// The cover then starts at eps. Any block, p a gain or inside a tf (a wall K + B (z - 1)/(T z) whose K is 0
+// leaves a damper: the slow row is then m v + b x + B x_{k-1}, exactly); without conserved quantities (M
+// unreduced: a quotient would move the slow rows).
 // Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
-// A loop whose M(0) is only marginally stable (a device's position held by nothing at p = 0: the
-// eigenvalue 1, so no cover can start at 0) has no certificate here: its producer refuses by name.
 // Implements: paper 000 Sec. VI.
 #pragma once
 
@@ -69,10 +69,10 @@ namespace detail {
 /// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
 BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
 /// evidence.first_order {to = eps, P0, S} (header): "" when it shows every M(p), 0 < p <= eps, Schur stable
-/// (`from` := eps), else what fails; InputError when malformed or beyond (not the environment's gain, a
-/// quotient by conserved quantities, no slow mode). L: slow_left_basis of the loop.
-std::string first_order_start(const nlohmann::json& first_order, const std::string& block, const LoopMatrix& m1, const LoopMatrix& m2,
-                              const rational_matrix::Mat& L, const SceneLoop& loop, const rational& lo, rational& from);
+/// (`from` := eps), else what fails; InputError when malformed or beyond (a quotient by conserved quantities,
+/// no slow mode). L: slow_rows of the loops read at p = 1 and 2.
+std::string first_order_start(const nlohmann::json& first_order, const LoopMatrix& m1, const LoopMatrix& m2, const rational_matrix::Mat& L,
+                              const SceneLoop& loop, const rational& lo, rational& from);
 }  // namespace detail
 
 Verdict check_stability_loop_max(const nlohmann::json& certificate);
