@@ -3222,6 +3222,34 @@ def affine_block_order(model, block, p, N):
     return order, degree
 
 
+def plant_reading(model, p):
+    """stability-loop-max of a one-DOF --plant/--H model: p named in H, in neither the plant nor the operator
+    (p inside the tf of its one wall): ("environment", True)."""
+    def names(key):
+        if key not in model:
+            return False
+        if not isinstance(model[key], str):
+            raise Malformed("model.%s: not a string" % key)
+        return p in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", model[key])
+    if not names("H"):
+        raise Malformed("model.H: does not name model.name = %s" % p)
+    for key in ("plant", "operator"):
+        if names(key):
+            raise Malformed("model.%s: names %s too: beyond this kind (only H may depend on it)" % (key, p))
+    return "environment", True
+
+
+def plant_wall_order(model, p):
+    """affine_block_order of the one-DOF wall H: (deg of the lcm of den H0, den H1, the degree bound)."""
+    T, _, params, _ = effective_device(model)
+    try:
+        H0, H1, D = prove_affine(model["H"], T, params, p)
+    except ZeroDivisionError:
+        raise Malformed("model.H: division by zero: beyond this kind")
+    g = pgcd(H0.den, H1.den)
+    return len(pdivmod(pmul(H0.den, H1.den), g)[0]) - 1, D
+
+
 def slow_rows(l1, l2):
     """The rows l of the loop's slow modes at p = 0 (check/stability_loop_max_check.hpp): a basis of
     {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) the slow matrices (loop_matrix's
@@ -3284,12 +3312,13 @@ def check_stability_loop_max(c):
     (convex in p: stable on all of it), and at claim.hi P, w with w^T P w < 0: NOT stable (Stein inertia);
     hi = 0: M(0) with an eigenvalue outside the circle, so M(p) for every small p > 0."""
     model, claim, evidence = parts(c)
-    only(model, ("scene", "set", "name"), "model")
+    plant = "scene" not in model  # the one-DOF --plant/--H loop (scene_loop_read)
+    only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
     only(evidence, ("cover", "unstable_at", "first_order"), "evidence")
     p = model.get("name")
-    if not isinstance(p, str) or not isinstance(model.get("scene"), str):
-        raise Malformed("model.name, model.scene: missing or not strings")
+    if not isinstance(p, str) or not isinstance(model.get("plant" if plant else "scene"), str):
+        raise Malformed("model.name, model.scene (or model.plant): missing or not strings")
     sets = model.get("set", {})
     if not isinstance(sets, dict):
         raise Malformed("model.set: not an object")
@@ -3305,7 +3334,7 @@ def check_stability_loop_max(c):
     k = claim.get("conserved", 0)
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:
         raise Malformed("claim.conserved: not an integer >= 0")
-    block, inside = gain_block(model["scene"], p)
+    block, inside = plant_reading(model, p) if plant else gain_block(model["scene"], p)
     un = evidence.get("unstable_at")
     if not isinstance(un, dict):
         raise Malformed("evidence.unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
@@ -3319,13 +3348,13 @@ def check_stability_loop_max(c):
         raise Malformed("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
     at_p = []
     for v in (1, 2) if not inside or hi == 0 else (1, 2, hi):
-        m = {"scene": model["scene"], "set": dict(sets)}
+        m = dict({k: x for k, x in model.items() if k != "name"}, set=dict(sets))
         m["set"][p] = str(v)
         at_p.append(loop_quotient(m))
     (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
     g = 0 if block == "environment" else 1
     if inside:  # the realisation at 1, 2 (and hi) of the largest order; C, D at hi on the line through 1 and 2
-        order, degree = affine_block_order(model, block, p, len(l1[3]))
+        order, degree = affine_block_order(model, block, p, len(l1[3])) if not plant else plant_wall_order(model, p)
         if any(len(q[5][g][0]) != order for q in at_p):
             raise Malformed("model.scene: the %s's realisation at %s = 1, 2 or %s is not of order %d (a pole cancelled there): beyond "
                             "this kind" % (block, p, short(hi), order))
@@ -3350,7 +3379,7 @@ def check_stability_loop_max(c):
             if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
                 raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
     count = len(a1) + len(r1) - own1
-    if inside and (count or own1):
+    if inside and count:  # the checker's own (a --plant device's position, from the plant alone) stays
         raise Malformed("model.scene: a loop with conserved quantities and %s inside the %s's tf (the quotient's basis may move "
                         "with it): beyond this kind" % (p, block))
     if count != len(a2) + len(r2) - own2:

@@ -6,6 +6,7 @@ environment's gain), integrator_devices_2dof.toml (the first-order start), loop_
 parameter inside the wall's tf) and loop_max_free_wall_stiffness.toml (both).
 
   loop_max_case.py HAPSTAB SCENE NAME
+  loop_max_case.py HAPSTAB plant NAME --plant P --H H --T T [--delay n]   (the one-DOF loop, a device pole off s = 0)
 exit 0 when every expectation holds, else 1 (each failure printed)."""
 import json
 import os
@@ -38,7 +39,7 @@ def mutants(cert, name):
     certificate of a supremum (claim.hi > 0, a cover): the claim moved where the evidence cannot prove
     it (refuted) and the model moved beyond the kind (malformed)."""
     claim, cover = cert["claim"], cert["evidence"]["cover"]
-    text = cert["model"]["scene"]
+    text = cert["model"].get("scene")
 
     def claim_hi(v):
         c = with_field(deleted(cert, ["claim", "printed_hi"]), ["claim", "hi"], v)
@@ -60,9 +61,20 @@ def mutants(cert, name):
            ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2),
            ("the cover dropped", deleted(cert, ["evidence", "cover"]), 2),
            ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
-    if env in text:
+    if text is None:  # the one-DOF --plant/--H model: p in H only
+        model = cert["model"]
+        H, P = model["H"], model["plant"]
+        out += [("the parameter named in the plant too", with_field(cert, ["model", "plant"], "(%s)*(1 + 0*%s)" % (P, name)), 2),
+                ("H squared in the parameter (not affine)", with_field(cert, ["model", "H"], "%s*%s/1000 + (%s)" % (name, name, H)), 2),
+                ("a pole of H that cancels at %s = 1" % name, with_field(cert, ["model", "H"], "(z-%s)/(z-1) - 1 + (%s)" % (name, H)), 2),
+                ("H without the parameter", with_field(cert, ["model", "H"], H.replace(name, "1")), 2),
+                ("the device's mass doubled", with_field(cert, ["model", "plant"], "(%s)/2" % P), None),
+                ("the delay one sample longer", with_field(cert, ["model", "delay"], model["delay"] + 1), None)]
+        text = ""
+    elif env in text:
         out.append(("the gain not the parameter alone", with_field(cert, ["model", "scene"], text.replace(env, 'gain = "2*%s"' % name)), 2))
     else:  # the parameter inside the wall's tf (proven affine there; the realisation of the largest order)
+        assert "[environment]" in text
         term = '"%s + ' % name
         at = text.index("tf = ", text.index("[environment]"))
         line = text[at:text.index("\n", at) + 1]
@@ -95,9 +107,10 @@ def mutants(cert, name):
 
 def main():
     hapstab, scene, name = sys.argv[1:4]
+    args = ["--scene", scene] if scene.endswith(".toml") else sys.argv[4:]  # else: a one-DOF --plant/--H loop's options
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "c.json")
-        r = subprocess.run([hapstab, "stability", "--scene", scene, "--max", name, "--certificate", path, "--quiet"],
+        r = subprocess.run([hapstab, "stability"] + args + ["--max", name, "--certificate", path, "--quiet"],
                            capture_output=True, text=True)
         if r.returncode != 0 or not os.path.exists(path):
             print("FAIL: the producer wrote no certificate (exit %d): %s" % (r.returncode, r.stderr.strip()))

@@ -1256,6 +1256,31 @@ TEST(StabilityLoopMaxCheck, ReadingOfTheGain) {
   EXPECT_THROW(check_certificate(start), InputError);
 }
 
+// The one-DOF --plant/--H model (a device pole off s = 0: 1/(s^2 + 2 s), G = 1/(s + 2) and its integrated
+// position, the wall K + 5 (z - 1)/(T z) of order 1: M of order 3): K read inside H (proven affine), the
+// evidence P = I refuted at hi (w^T P w >= 0); malformed where the plant names K too, H does not name it, H is
+// not affine in it, K has a value, or a field of another model is present.
+TEST(StabilityLoopMaxCheck, PlantModelReading) {
+  auto cert = [](const std::string& plant, const std::string& H, const nlohmann::json& set) {
+    const nlohmann::json I3 = {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}};
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "stability-loop-max"},
+                          {"model", {{"plant", plant}, {"H", H}, {"T", "1/1000"}, {"delay", 0}, {"set", set}, {"name", "K"}}},
+                          {"claim", {{"status", "certified"}, {"lo", "1"}, {"hi", "2"}}},
+                          {"evidence", {{"cover", {{{"to", "1"}, {"P", I3}}}}, {"unstable_at", {{"at", "2"}, {"P", I3}, {"w", {"1", "0", "0"}}}}}}};
+  };
+  const nlohmann::json none = nlohmann::json::object();
+  const Verdict v = check_certificate(cert("1/(s^2+2*s)", "K + 5*(z-1)/(T*z)", none));
+  EXPECT_FALSE(v.verified);
+  EXPECT_NE(v.reason.find("w^T P w"), std::string::npos) << v.reason;
+  EXPECT_THROW(check_certificate(cert("1/(s^2+2*s+0*K)", "K + 5*(z-1)/(T*z)", none)), InputError);  // the plant names K
+  EXPECT_THROW(check_certificate(cert("1/(s^2+2*s)", "5*(z-1)/(T*z)", none)), InputError);           // H does not
+  EXPECT_THROW(check_certificate(cert("1/(s^2+2*s)", "K*K + 5*(z-1)/(T*z)", none)), InputError);     // not affine
+  EXPECT_THROW(check_certificate(cert("1/(s^2+2*s)", "K + 5*(z-1)/(T*z)", {{"K", "1"}})), InputError);  // a value
+  auto mixed = cert("1/(s^2+2*s)", "K + 5*(z-1)/(T*z)", none);
+  mixed["model"]["scene"] = "[scene]\nT = \"1/1000\"\n";
+  EXPECT_THROW(check_certificate(mixed), InputError);
+}
+
 // The closed loop of a stability-loop certificate (check/stability_loop_check.hpp), by hand: one mass
 // m = 2 under a spring wall E = K = 100, T = 1/10, no delay. The state (v, x): Phi = [[1, 0], [T, 1]],
 // Gamma = [T/m; T^2/(2m)], u = -K x, so M = [[1, -K T/m], [T, 1 - K T^2/(2m)]] = [[1, -5], [1/10, 3/4]]

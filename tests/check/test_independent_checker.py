@@ -261,6 +261,27 @@ class StabilityLoopMax(unittest.TestCase):
         self.assertEqual(hc.check(c)[0], 2)
 
 
+class StabilityLoopMaxPlant(unittest.TestCase):
+    """test_check.cpp's StabilityLoopMaxCheck.PlantModelReading: K read inside the one-DOF model's H."""
+
+    def cert(self, plant="1/(s^2+2*s)", H="K + 5*(z-1)/(T*z)", sets=None):
+        I3 = [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]
+        return {"certificate": "hapstab", "version": 1, "kind": "stability-loop-max",
+                "model": {"plant": plant, "H": H, "T": "1/1000", "delay": 0, "set": sets or {}, "name": "K"},
+                "claim": {"status": "certified", "lo": "1", "hi": "2"},
+                "evidence": {"cover": [{"to": "1", "P": I3}], "unstable_at": {"at": "2", "P": I3, "w": ["1", "0", "0"]}}}
+
+    def test_plant_model_reading(self):
+        code, why = hc.check(self.cert())
+        self.assertEqual(code, 1, why)
+        self.assertIn("w^T P w", why)
+        mixed = self.cert()
+        mixed["model"]["scene"] = '[scene]\nT = "1/1000"\n'
+        for bad in (self.cert(plant="1/(s^2+2*s+0*K)"), self.cert(H="5*(z-1)/(T*z)"), self.cert(H="K*K + 5*(z-1)/(T*z)"),
+                    self.cert(sets={"K": "1"}), mixed):
+            self.assertEqual(hc.check(bad)[0], 2, hc.check(bad)[1])
+
+
 class StabilityLoop(unittest.TestCase):
     """The C++ StabilityLoopCheck tests: a mass m = 2 under a spring wall K = 100 at T = 1/10, M =
     [[1, -5], [1/10, 3/4]] by hand (NOT stable: det M = 5/4), and an exact P with P - M^T P M = I."""

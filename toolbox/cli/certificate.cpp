@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/loop_max_certificate.hpp"
 #include "cli/mat_file.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
@@ -842,9 +843,12 @@ rational unstable_point(const stability::Loop& loop) {
 nlohmann::json stability_max_certificate(const StabilityText& text, const std::string& K, const stability::Loop& loop,
                                          const stability::MaxGain& m, int digits) {
   const auto family = stability::exact_family(loop);
-  if (!family)
-    throw InputError("--certificate: a certificate of stability --max with a device pole off s = 0 (the sampled device's "
-                     "e^{pT} are transcendental) is not implemented yet; devices with every pole at s = 0 have one");
+  if (!family) {  // a device pole off s = 0: e^{pT} is transcendental, the resultant has no exact form; the
+                  // loop's matrix, affine in K, has (stability-loop-max, cli/loop_max_certificate.hpp)
+    if (m.outcome == Outcome::undecided || (m.status != Status::exact && m.status != Status::certified))
+      throw InputError("--certificate: sup " + K + " is not decided here: there is no claim to certify");
+    return stability_loop_max_certificate(loop_model_json(text, loop.T), K, sup_claim(m));
+  }
   if (family->first.degree() > 150)
     throw InputError("--certificate: the characteristic polynomial has degree " + std::to_string(family->first.degree()) +
                      ", beyond the checkers' limit of 150 (D(" + K + ") = Res_z(c, c*) has degree up to twice that)");

@@ -170,12 +170,28 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
   return j;
 }
 
+// What the certificate proves, printed beside the answer.
+std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified, bool open_at_zero) {
+  if (certified[1] == "0")
+    return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " + o.max_name +
+           " -> 0; verified before it was written)\n";
+  return "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
+         certified[1].get<std::string>() + "] (stable on " + (open_at_zero ? "(0" : "[0") +
+         ", lo], NOT stable at hi; verified before it was written)\n";
+}
+
 int run_max(const StabilityOpts& o, const stability::Loop& loop) {
   const stability::MaxGain m = stability::max_gain(loop, o.digits, o.max_name);
-  if (!o.certificate.empty())  // checked before it is written: a refusal (exit 2) prints no answer
-    cli::write_certificate(o.certificate,
-                           cli::stability_max_certificate({o.plant, o.H, o.op, o.delay, o.sets, o.scene}, o.max_name, loop, m, o.digits));
-  const nlohmann::json j = max_json(m, o, loop.T);
+  // checked before it is written: a refusal (exit 2) prints no answer. A device pole off s = 0 gets the
+  // stability-loop-max kind, whose enclosure is wider than the answer's: what it proves is printed too
+  nlohmann::json certified, c;
+  if (!o.certificate.empty()) {
+    c = cli::stability_max_certificate({o.plant, o.H, o.op, o.delay, o.sets, o.scene}, o.max_name, loop, m, o.digits);
+    cli::write_certificate(o.certificate, c);
+    if (c["kind"] == "stability-loop-max") certified = {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
+  }
+  nlohmann::json j = max_json(m, o, loop.T);
+  if (!certified.is_null()) j["certificate_claim"] = certified;
   if (o.json) cli::print_json(j);
   else {
     const int shared = j["digits_certified"].is_null() ? o.digits : j["digits_certified"].get<int>();
@@ -197,6 +213,7 @@ int run_max(const StabilityOpts& o, const stability::Loop& loop) {
                 << "\n";
     std::cout << "  " << m.note << "\n";
     if (m.path == "long_delay") std::cout << "  path: " << m.plan << "\n";
+    if (!certified.is_null()) std::cout << certificate_line(o, certified, c["evidence"].contains("first_order"));
   }
   if (m.outcome == Outcome::undecided) return cli::exit_numerical;
   return m.outcome == Outcome::fails ? cli::exit_property_fails : cli::exit_ok;
@@ -366,7 +383,7 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
 // the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
 // is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
 nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m) {
-  const nlohmann::json c = cli::stability_loop_max_certificate(o.scene, o.sets, o.max_name, m);
+  const nlohmann::json c = cli::stability_loop_max_certificate(cli::scene_model_json(o.scene, o.sets), o.max_name, cli::sup_claim(m));
   cli::write_certificate(o.certificate, c);
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
 }
@@ -375,16 +392,6 @@ nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stabilit
   throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
                    "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
                    "certifies one verdict): no certificate");
-}
-
-// What the certificate proves, printed beside the answer.
-std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified, bool open_at_zero) {
-  if (certified[1] == "0")
-    return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " + o.max_name +
-           " -> 0; verified before it was written)\n";
-  return "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
-         certified[1].get<std::string>() + "] (stable on " + (open_at_zero ? "(0" : "[0") +
-         ", lo], NOT stable at hi; verified before it was written)\n";
 }
 
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {

@@ -239,25 +239,32 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
 
 }  // namespace
 
-nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
-                                              const std::string& name, const stability::LoopMax& m) {
+SupClaim sup_claim(const stability::LoopMax& m) { return {m.outcome, m.crossing, m.stable_to, m.first_order_to}; }
+
+SupClaim sup_claim(const stability::MaxGain& m) {
+  if (m.infinite) throw InputError("--certificate: sup is +infinity: no stability-loop-max certificate (its claim is an enclosure)");
+  const Enclosure<rational> e = m.exact ? Enclosure<rational>{*m.exact, *m.exact} : m.enclosure;
+  return {m.outcome, e, e.lo, rational(0)};
+}
+
+nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m) {
   nlohmann::json j = certificate_header("stability-loop-max");
-  j["model"] = scene_model_json(scene_path, sets);
+  j["model"] = model;
   if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
   j["model"]["name"] = name;
   check::detail::LoopMatrix m1, m2;
   check::detail::SceneLoop loop1, loop2;
   const auto read = [&](long v) {
-    nlohmann::json model{{"scene", j["model"]["scene"]}, {"set", j["model"]["set"]}};
-    model["set"][name] = std::to_string(v);
-    return check::detail::read_scene_loop(model);
+    nlohmann::json at = model;
+    at["set"][name] = std::to_string(v);
+    return check::detail::read_scene_loop(at);
   };
   try {
     flint::BallPrecision scope(kBits);
     loop1 = read(1), loop2 = read(2);
     m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(loop2, kBits);
   } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() + "): no certificate");
+    throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
   }
   flint::BallPrecision scope(kBits);
   // the claim's ends: 0 and 0 (sup = 0), or decimals of 16 digits delta below and above the crossing's
@@ -276,11 +283,13 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
   std::string why;
   for (const auto& [plo, phi] : ends) {
     const rational lo = parse_rational(plo), hi = parse_rational(phi);
-    // where M(0) is only marginally stable: the first-order start on (0, eps], eps the producer's own
-    // first-order cover's end, else lo / 4^j
+    // where M(0) is only marginally stable (slow rows: L M(0) = L): the first-order start on (0, eps], eps
+    // the producer's own first-order cover's end, else lo / 4^j
     std::optional<nlohmann::json> start;
-    if (m.open_at_zero && hi > 0) {
-      const Mat L = check::detail::slow_rows(loop1, loop2);
+    // (not on a quotient by conserved quantities, the checker's own included: there the cover starts at 0)
+    const bool unreduced = m1.conserved == 0 && loop1.own_conserved == 0;
+    const Mat L = hi > 0 && unreduced ? check::detail::slow_rows(loop1, loop2) : Mat{};
+    if (!L.empty()) {
       std::vector<rational> tries;
       if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
       for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
@@ -304,8 +313,8 @@ nlohmann::json stability_loop_max_certificate(const std::string& scene_path, con
       continue;
     }
     j["evidence"] = a.evidence;
-    j["claim"] = {{"quantity", "sup " + name + " = sup{p0 > 0: the scene's loop as written is stable for every " + name +
-                                   " in (0, p0)}, the closed-loop matrix built by the checker"},
+    j["claim"] = {{"quantity", "sup " + name + " = sup{p0 > 0: the " + (model.contains("scene") ? "scene's " : "") +
+                                   "loop as written is stable for every " + name + " in (0, p0)}, the closed-loop matrix built by the checker"},
                   {"status", "certified"},
                   {"lo", lo.str()},
                   {"hi", hi.str()},

@@ -1,12 +1,13 @@
 // cli/loop_max_certificate.hpp -- the producer of a `stability-loop-max` certificate
 // (check/stability_loop_max_check.hpp): `hapstab stability --scene S --max p --certificate FILE`
-// beyond one DOF (or with a [coupling]), where p is the whole gain of [environment] or [coupling].
+// beyond one DOF (or with a [coupling]), where p is the whole gain of [environment] or [coupling] or is
+// inside one of their tf; and `stability --plant P --H H --max K` with a device pole off s = 0.
 //
 // From the checker's own closed-loop matrices M(1) and M(2) (check/stability_loop_check.hpp), M(p) =
 // (2 - p) M(1) + (p - 1) M(2) in balls. NOT stable at hi: schur_decide's Stein P and w at M(hi).
 // The claim's ends a relative delta outside the crossing's enclosure (Krawczyk's, stability/loop_max.hpp,
 // is too narrow for a Stein P solved in double; the certificate proves the wider one it prints).
-// Where M(0) is only marginally stable (open_at_zero), first the first-order start on (0, eps]: P0 and S of
+// Where M(0) is only marginally stable (the slow rows L M(0) = L exist), first the first-order start on (0, eps]: P0 and S of
 // check/stability_loop_max_check.hpp by an SDP at p = 0 and eps (eps the producer's own first-order cover's
 // end, else lo / 4^j), its rounding checked by the checker's own test.
 // Stable on [0, lo] (or [eps, lo]): a cover built downward from lo -- at each right end b, the Stein P of the midpoint
@@ -22,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hapstab/stability/loop_max.hpp"
+#include "hapstab/stability/sampled_loop.hpp"
 
 namespace hapstab::cli {
 
@@ -32,7 +34,21 @@ namespace hapstab::cli {
 /// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
 /// the gain alone, a loop not affine in it, no first-order start where M(0) is marginal, no Stein P at a
 /// point, more than 512 intervals, an undecided m.
-nlohmann::json stability_loop_max_certificate(const std::string& scene_path, const std::vector<std::string>& sets,
-                                              const std::string& name, const stability::LoopMax& m);
+/// What hapstab answered: sup p's outcome, the crossing's enclosure, stable up to stable_to (and, where its
+/// own first-order cover served, on (0, first_order_to]).
+struct SupClaim {
+  Outcome outcome = Outcome::undecided;
+  Enclosure<rational> crossing{0, 0};
+  rational stable_to = 0, first_order_to = 0;
+};
+/// Of a scene's loop (stability/loop_max.hpp), and of the one-DOF loop (stability/sampled_loop.hpp; +infinity:
+/// InputError, no certificate form).
+SupClaim sup_claim(const stability::LoopMax& m);
+SupClaim sup_claim(const stability::MaxGain& m);
+
+/// `model`: the scene's ({scene, set}, check/scene_model.hpp) or the one-DOF --plant/--H loop's ({plant, H,
+/// operator, set, T, delay}: a device pole off s = 0, where the `stability-max` kind's resultant has no
+/// exact form).
+nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m);
 
 }  // namespace hapstab::cli

@@ -370,7 +370,7 @@ Assembly assembly(const detail::SceneLoop& L, const Plant& pl) {
   a.nE = E.A.size(), a.nV = V.A.size(), a.nc = ns + a.nE + a.nV, a.order = a.nc + a.buffers * N;
   const size_t nE = a.nE, nV = a.nV, nc = a.nc;
   if (a.order > kMaxOrder)
-    throw InputError("model.scene: the closed loop has " + std::to_string(a.order) + " states, beyond this checker's " +
+    throw InputError("model: the closed loop has " + std::to_string(a.order) + " states, beyond this checker's " +
                      std::to_string(kMaxOrder));
   // the controller (paper 000 (11)): x_e = x + V u, u = -E x_e, the algebraic loop solved exactly:
   // u = F [s; xi; eta] with F = -W [D_E C_x, C_E, D_E C_V], W = (I + D_E D_V)^-1; x_e = X [s; xi; eta]

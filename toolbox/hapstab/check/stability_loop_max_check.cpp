@@ -114,11 +114,14 @@ Reading read_p(const std::string& scene, const std::string& p) {
 // does not name p): the largest order the checker's realisation reaches at any p. `degree`: the largest
 // degree bound proven.
 size_t affine_block_order(const nlohmann::json& model, const Reading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
-  const auto entries = detail::block_entries(model, r.block, p, L1.dofs());
+  const bool plant = !model.contains("scene");
+  const auto entries = plant ? std::vector<std::vector<std::string>>{{model.at("H").get<std::string>()}}
+                             : detail::block_entries(model, r.block, p, L1.dofs());
   const auto& at1 = r.block == "environment" ? L1.E.tf : L1.V->tf;
   ParseOptions po;
   po.variable = 'z';
   po.T = L1.T;
+  if (plant) po.parameters = detail::model_parameters(model);  // the other parameters' values (p has none)
   size_t order = 0;
   for (size_t j = 0; j < entries.size(); ++j) {
     Polynomial<rational> Lj{rational(1)};
@@ -133,8 +136,8 @@ size_t affine_block_order(const nlohmann::json& model, const Reading& r, const s
       try {
         a = detail::prove_affine(entries[i][j], po, p);
       } catch (const InputError& e) {
-        throw InputError("model.scene: " + r.block + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]: " + e.what() +
-                         ": beyond this kind");
+        throw InputError((plant ? std::string("model.H") : "model.scene: " + r.block + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]") +
+                         ": " + e.what() + ": beyond this kind");
       }
       degree = std::max(degree, a.D);
       join(a.H0.den());
@@ -145,10 +148,28 @@ size_t affine_block_order(const nlohmann::json& model, const Reading& r, const s
   return order;
 }
 
-nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long value) {
-  nlohmann::json m{{"scene", model.at("scene")}, {"set", model.contains("set") ? model.at("set") : nlohmann::json::object()}};
-  m["set"][p] = std::to_string(value);
+// The model read at p = value: the scene's, or the one-DOF --plant/--H loop's (check/scene_model.hpp).
+nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const rational& value) {
+  nlohmann::json m = model;
+  m.erase("name");
+  if (!m.contains("set")) m["set"] = nlohmann::json::object();
+  m["set"][p] = value.str();
   return m;
+}
+
+// A one-DOF --plant/--H model: p named in H and in neither the plant nor the operator ("p inside the tf"
+// of its one wall). InputError otherwise.
+Reading read_p_plant(const nlohmann::json& model, const std::string& p) {
+  const auto names = [&](const char* key) {
+    if (!model.contains(key)) return false;
+    if (!model.at(key).is_string()) throw InputError(std::string("model.") + key + ": not a string");
+    const auto ids = identifiers(model.at(key).get<std::string>());
+    return std::find(ids.begin(), ids.end(), p) != ids.end();
+  };
+  if (!names("H")) throw InputError("model.H: does not name model.name = " + p);
+  for (const char* key : {"plant", "operator"})
+    if (names(key)) throw InputError(std::string("model.") + key + ": names " + p + " too: beyond this kind (only H may depend on it)");
+  return {"environment", true};
 }
 
 Mat symmetric_P(const nlohmann::json& obj, const std::string& where, size_t n, const char* key = "P") {
@@ -233,11 +254,13 @@ detail::BallRows detail::affine_loop_at(const BallRows& M1, const BallRows& M2, 
 
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
-  detail::only_fields(model, {"scene", "set", "name"}, "model");
+  if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
+  else detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
   detail::only_fields(evidence, {"cover", "unstable_at", "first_order"}, "evidence");
   if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
-  if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string");
+  if (model.contains("scene") ? !model.at("scene").is_string() : !model.contains("plant"))
+    throw InputError("model.scene: missing or not a string (or a one-DOF model: plant, H, T, delay)");
   const std::string p = model.at("name").get<std::string>();
   if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
     throw InputError("model.set." + p + ": the parameter maximised has no value");
@@ -246,18 +269,16 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   if (c.refuted) return {false, *c.refuted};
   if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
-  const Reading r = read_p(model.at("scene").get<std::string>(), p);
+  const Reading r = model.contains("scene") ? read_p(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
   const std::string& block = r.block;
-  const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, 1)), L2 = detail::read_scene_loop(model_at(model, p, 2));
+  const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, rational(1))), L2 = detail::read_scene_loop(model_at(model, p, rational(2)));
   // p inside the block's tf (header): its realisation at 1, 2 and hi of the largest order, sum_j deg L_j
   long degree = 0;
   const size_t order = r.inside ? affine_block_order(model, r, p, L1, degree) : 0;
   std::optional<detail::LoopMatrix> at_hi;
   if (r.inside && c.hi > 0) {
-    nlohmann::json mh{{"scene", model.at("scene")}, {"set", model.contains("set") ? model.at("set") : nlohmann::json::object()}};
-    mh["set"][p] = c.hi.str();
     flint::BallPrecision scope(128);
-    at_hi = detail::loop_matrix(detail::read_scene_loop(mh), 128);
+    at_hi = detail::loop_matrix(detail::read_scene_loop(model_at(model, p, c.hi)), 128);
   }
   // the evidence's shape first (malformed before anything is computed)
   if (!evidence.contains("unstable_at")) throw InputError("evidence.unstable_at: missing (NOT stable at hi bounds sup p)");
@@ -299,7 +320,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
           return {false, "the " + block + "'s realisation at " + p + " = " + c.hi.str() + " is not on the line through those at 1 and 2"};
       }
     }
-    if (r.inside && (m1.conserved != 0 || L1.own_conserved != 0))
+    if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays
       throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
                        "'s tf (the quotient's basis may move with it): beyond this kind");
     if (m1.feedthrough_loop || m2.feedthrough_loop)
