@@ -3250,23 +3250,29 @@ def plant_wall_order(model, p):
     return len(pdivmod(pmul(H0.den, H1.den), g)[0]) - 1, D
 
 
-def slow_rows(l1, l2):
-    """The rows l of the loop's slow modes at p = 0 (check/stability_loop_max_check.hpp): a basis of
-    {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) the slow matrices (loop_matrix's
-    slow=True) of the loops read at p = 1 and 2. With l_p^T A = 0, l^T M(p) = l^T M~(p) exactly, so
-    l^T M(0) = l^T."""
+def slow_rows(l1, l2, Lq, at, right):
+    """The rows r of the loop's slow modes at p = 0 (check/stability_loop_max_check.hpp), on the coordinates
+    of the quotient by the conserved rows Lq (at their indices `at`, loop_quotient): l^T E for a basis l of
+    {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) the slow matrices (loop_matrix's slow=True)
+    of the loops read at p = 1 and 2, E the quotient's embedding (x = E y: x_kept = y, x_c = -L[:, kept] y),
+    in reduced echelon form. With l_p^T A = 0, l^T M(p) = l^T M~(p) exactly, so r^T M(0) = r^T."""
+    if right:
+        raise Malformed("evidence.first_order: a loop on a quotient by a block's unobservable z = 1 (right eigenvectors): beyond this kind")
     S1, S2 = loop_matrix(l1, 0, slow=True), loop_matrix(l2, 0, slow=True)
     A = loop_plant(*l1[2:7])[0]
     n, ns = len(S1), len(A)
     M0mI = [[2 * S1[i][j] - S2[i][j] - (1 if i == j else 0) for j in range(n)] for i in range(n)]
     Ap = [list(A[i]) if i < ns else [Fraction(0)] * ns for i in range(n)]
     L = conserved_quantities(M0mI, Ap)[0]
+    if L and at:  # on the quotient: r = l^T E
+        kept = [i for i in range(n) if i not in at]
+        L = [[l[kb] - sum(l[c] * q[kb] for q, c in zip(Lq, at) if kb < len(q)) for kb in kept] for l in L]
     if L:
-        echelon(L)
+        L = L[:len(echelon(L))]  # reduced echelon form; the conserved rows' own images (0) dropped
     return L
 
 
-def first_order_start(fo, loops, M1, M2, count, own, lo):
+def first_order_start(fo, loops, quotient, M1, M2, lo):
     """(eps, "") when evidence.first_order {to = eps, P0, S} shows every M(p), 0 < p <= eps, Schur stable:
     with L the slow rows (L M(0) = L exactly), K = L (M(2) - M(1)) and P(p) = P0 + L^T S L / p, the Stein
     matrix is Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K, concave in p, > 0 at 0 and eps
@@ -3274,9 +3280,7 @@ def first_order_start(fo, loops, M1, M2, count, own, lo):
     if not isinstance(fo, dict):
         raise Malformed("evidence.first_order: not an object")
     only(fo, ("to", "P0", "S"), "evidence.first_order")
-    if count or own:
-        raise Malformed("evidence.first_order: a loop with conserved quantities: beyond this kind")
-    L = slow_rows(*loops)
+    L = slow_rows(*loops, *quotient)
     if not L:
         raise Malformed("evidence.first_order: the loop has no position that nothing holds at p = 0")
     eps = exact(fo, "to", "evidence.first_order")
@@ -3399,7 +3403,7 @@ def check_stability_loop_max(c):
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
         start, ok = Fraction(0), True
         if "first_order" in evidence:
-            eps, fails = first_order_start(evidence["first_order"], (l1, l2), M1, M2, count, own1, lo)
+            eps, fails = first_order_start(evidence["first_order"], (l1, l2), (L1, a1, r1), M1, M2, lo)
             if fails:
                 why = fails
                 continue

@@ -73,8 +73,8 @@ int run(const Opts& o) {
 }
 
 const Register reg({"check",
-                    "Verify a certificate written by --certificate (bound, bound-max, passivity-level, r, stability, stability-max, wedge) without trusting the code that produced "
-                    "it: exit 0 verified, 1 refuted, 2 malformed (docs/certificates.md)",
+                    "Verify a certificate written by --certificate (any of the 18 kinds of docs/certificates.md: bound, stability, "
+                    "multidof-feasible, ...) without trusting the code that produced it: exit 0 verified, 1 refuted, 2 malformed",
                     [](CLI::App& app) {
                       auto o = std::make_shared<Opts>();
                       app.add_option("FILE", o->file, "the certificate (JSON)");

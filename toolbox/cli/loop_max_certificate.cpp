@@ -136,7 +136,7 @@ std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
 // maximised; the dyadic rounding checked by the checker's own test. nullopt when none passes.
 std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const BallRows& M2, const Mat& L, const rational& eps,
                                                 const check::detail::LoopMatrix& m1, const check::detail::LoopMatrix& m2,
-                                                const check::detail::SceneLoop& loop, const rational& lo) {
+                                                const rational& lo) {
   const Eigen::MatrixXd A0 = midpoints(loop_at(M1, M2, rational(0))), Ae = midpoints(loop_at(M1, M2, eps));
   const Eigen::MatrixXd dM = midpoints(M2) - midpoints(M1);
   const int n = static_cast<int>(A0.rows()), k = static_cast<int>(L.size());
@@ -166,7 +166,7 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   for (const int bits : {24, 53}) {
     nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
     rational from = 0;
-    if (check::detail::first_order_start(fo, m1, m2, L, loop, lo, from).empty()) return fo;
+    if (check::detail::first_order_start(fo, m1, m2, L, lo, from).empty()) return fo;
   }
   return std::nullopt;
 }
@@ -286,16 +286,15 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
     // where M(0) is only marginally stable (slow rows: L M(0) = L): the first-order start on (0, eps], eps
     // the producer's own first-order cover's end, else lo / 4^j
     std::optional<nlohmann::json> start;
-    // (not on a quotient by conserved quantities, the checker's own included: there the cover starts at 0)
-    const bool unreduced = m1.conserved == 0 && loop1.own_conserved == 0;
-    const Mat L = hi > 0 && unreduced ? check::detail::slow_rows(loop1, loop2) : Mat{};
+    // (not on a quotient by right eigenvectors: beyond the checker's start)
+    const Mat L = hi > 0 && !m1.right_quotient ? check::detail::slow_rows(loop1, loop2, m1) : Mat{};
     if (!L.empty()) {
       std::vector<rational> tries;
       if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
       for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
       try {
         for (const rational& eps : tries)
-          if ((start = first_order_evidence(m1.M, m2.M, L, eps, m1, m2, loop1, lo))) break;
+          if ((start = first_order_evidence(m1.M, m2.M, L, eps, m1, m2, lo))) break;
       } catch (const InputError& e) {  // not the environment's gain, conserved quantities, no slow mode
         why = std::string("no first-order start at 0: ") + e.what();
         continue;

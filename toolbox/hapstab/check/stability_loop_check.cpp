@@ -493,6 +493,20 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     }
   }
   BallRows M11 = reduced(M, q);
+  Mat embedding;  // x = E y on {l^T x = 0}: x_kept = y, x_c = -L[:, kept] y
+  if (!q.at.empty()) {
+    std::vector<bool> gone(order, false);
+    for (size_t c : q.at) gone[c] = true;
+    std::vector<size_t> kept;
+    for (size_t i = 0; i < order; ++i)
+      if (!gone[i]) kept.push_back(i);
+    embedding = rational_matrix::zeros(order, kept.size());
+    for (size_t b = 0; b < kept.size(); ++b) {
+      embedding[kept[b]][b] = 1;
+      for (size_t i = 0; i < q.at.size(); ++i)
+        if (kept[b] < q.L[i].size()) embedding[q.at[i]][b] = -q.L[i][kept[b]];
+    }
+  }
   if (!right.empty()) {  // on M11's coordinates (the kept ones), renormalised, then the quotient by them
     std::vector<bool> gone(order, false);
     for (size_t c : q.at) gone[c] = true;
@@ -512,7 +526,8 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
         if (!x.is_zero()) return false;
     return true;
   };
-  return {M11, q.at.size() + right.size() - L.own_conserved, order, {E.A, E.B, E.C, E.D, V.A, V.B, V.C, V.D}, !(zero(DED) && zero(DDE))};
+  return {M11, q.at.size() + right.size() - L.own_conserved, order, {E.A, E.B, E.C, E.D, V.A, V.B, V.C, V.D}, !(zero(DED) && zero(DDE)),
+          embedding, !right.empty()};
 }
 
 // Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
@@ -606,7 +621,9 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
 // in reduced row echelon form, of {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) with M~
 // the exact slow matrix (each hold e^{Ah} -> I, Gamma_h -> h B) of the loops read at p = 1 and 2. For l_p^T
 // A = 0, l_p^T e^{Ah} = l_p^T and l_p^T Gamma_h = h l_p^T B exactly, so l^T M(p) = l^T M~(p): l^T M(0) = l^T.
-Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2) {
+Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const LoopMatrix& m1) {
+  if (m1.right_quotient)
+    throw InputError("evidence.first_order: a loop on a quotient by a block's unobservable z = 1 (right eigenvectors): beyond this kind");
   const auto slow = [](const SceneLoop& L) {
     const Plant pl = plant(L);
     const size_t ns = pl.A.size();
@@ -630,7 +647,9 @@ Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2) {
     if (i < ns) Ap[i] = A[i];
   }
   Mat L = conserved_quantities(M0mI, Ap).L;
-  if (!L.empty()) echelon(L);
+  if (L.empty()) return L;
+  if (!m1.embedding.empty()) L = rational_matrix::mul(L, m1.embedding);  // on the quotient: r = l^T E
+  L.resize(echelon(L).size());  // reduced echelon form; the conserved rows' own images (0) dropped
   return L;
 }
 

@@ -97,6 +97,10 @@ struct LoopMatrix {
   /// the controller's realisations as built here: A_E, B_E, C_E, D_E, A_V, B_V, C_V, D_V (V empty without a coupling)
   std::vector<rational_matrix::Mat> controller;
   bool feedthrough_loop = false;  ///< D_E D_V != 0 or D_V D_E != 0: u and x_e solved through W = (I + D_E D_V)^-1
+  /// the quotient by the conserved rows l (l^T M = l^T): x = E y on {l^T x = 0}, y M's coordinates (empty
+  /// when there are none); right_quotient: then also by a block's unobservable z = 1 (right eigenvectors)
+  rational_matrix::Mat embedding;
+  bool right_quotient = false;
 };
 /// M of the loop L as above, e^{AT} in balls at `bits`.
 LoopMatrix loop_matrix(const SceneLoop& L, long bits);
@@ -104,10 +108,12 @@ LoopMatrix loop_matrix(const SceneLoop& L, long bits);
 bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
 /// Every symmetric matrix in the balls Q is positive definite (the header's test of Q); else false, `why` set.
 bool ball_positive_definite(const BallRows& Q, std::string& why);
-/// The rows l^T of the loop's slow modes at p = 0 of the family read at p = 1 (L1) and 2 (L2), in reduced row
-/// echelon form: l^T M(0) = l^T exactly, l_p^T A = 0 (the positions that nothing holds at p = 0; the
-/// exact slow matrix, stability_loop_check.cpp). Empty when none.
-rational_matrix::Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2);
+/// The rows r^T of the loop's slow modes at p = 0 of the family read at p = 1 (L1) and 2 (L2), on the
+/// coordinates of m1.M (the quotient by the conserved quantities, m1 the loop at p = 1), in reduced row
+/// echelon form: r^T M(0) = r^T exactly (l_p^T A = 0: the positions that nothing holds at p = 0; the exact
+/// slow matrix, stability_loop_check.cpp; on a quotient, r = l^T E). Empty when none. InputError on a
+/// quotient by right eigenvectors (beyond).
+rational_matrix::Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const LoopMatrix& m1);
 /// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.

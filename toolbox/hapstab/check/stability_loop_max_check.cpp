@@ -192,11 +192,9 @@ rational from0(const nlohmann::json& evidence) { return detail::exact_field(evid
 }  // namespace
 
 std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix& m1, const LoopMatrix& m2, const Mat& L,
-                                      const SceneLoop& loop, const rational& lo, rational& from) {
+                                      const rational& lo, rational& from) {
   if (!fo.is_object()) throw InputError("evidence.first_order: not an object");
   detail::only_fields(fo, {"to", "P0", "S"}, "evidence.first_order");
-  if (m1.conserved != 0 || loop.own_conserved != 0)
-    throw InputError("evidence.first_order: a loop with conserved quantities (its quotient moves the slow modes): beyond this kind");
   if (L.empty()) throw InputError("evidence.first_order: the loop has no position that nothing holds at p = 0 (no slow mode to start from)");
   const rational eps = detail::exact_field(fo, "to", "evidence.first_order");
   if (eps <= 0 || eps > lo) throw InputError("evidence.first_order.to: not in (0, claim.lo]");
@@ -337,7 +335,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
     rational from = 0;
     if (evidence.contains("first_order")) {
-      const std::string fw = detail::first_order_start(evidence.at("first_order"), m1, m2, detail::slow_rows(L1, L2), L1, c.lo, from);
+      const std::string fw = detail::first_order_start(evidence.at("first_order"), m1, m2, detail::slow_rows(L1, L2, m1), c.lo, from);
       if (!fw.empty()) {
         why = fw;
         continue;

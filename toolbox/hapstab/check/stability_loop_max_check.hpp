@@ -52,8 +52,10 @@
 // and v^T Q(p) v = v^T P0 v - |P0^{1/2} M(p) v|^2 - 2 v^T L^T S K v - p |S^{1/2} K v|^2 is concave in p:
 // Q > 0 at 0 and at eps (balls) gives Q > 0 on [0, eps], so M(p) is Schur stable for 0 < p <= eps (Stein).
 // The cover then starts at eps. Any block, p a gain or inside a tf (a wall K + B (z - 1)/(T z) whose K is 0
-// leaves a damper: the slow row is then m v + b x + B x_{k-1}, exactly); without conserved quantities (M
-// unreduced: a quotient would move the slow rows).
+// leaves a damper: the slow row is then m v + b x + B x_{k-1}, exactly). On the quotient by conserved
+// quantities (rows c with c^T M = c^T, the subspace {c^T x = 0} invariant, x = E y) the rows are l^T E:
+// (l^T E) M_q = l^T M E = l^T E since E P M E = M E on the invariant subspace; the conserved rows' own
+// images vanish and are dropped. A quotient by right eigenvectors too (a block's unobservable z = 1) is beyond.
 // Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
 // Implements: paper 000 Sec. VI.
 #pragma once
@@ -69,10 +71,10 @@ namespace detail {
 /// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
 BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
 /// evidence.first_order {to = eps, P0, S} (header): "" when it shows every M(p), 0 < p <= eps, Schur stable
-/// (`from` := eps), else what fails; InputError when malformed or beyond (a quotient by conserved quantities,
-/// no slow mode). L: slow_rows of the loops read at p = 1 and 2.
+/// (`from` := eps), else what fails; InputError when malformed or beyond (no slow mode). L: slow_rows of the
+/// loops read at p = 1 and 2, on M's coordinates.
 std::string first_order_start(const nlohmann::json& first_order, const LoopMatrix& m1, const LoopMatrix& m2, const rational_matrix::Mat& L,
-                              const SceneLoop& loop, const rational& lo, rational& from);
+                              const rational& lo, rational& from);
 }  // namespace detail
 
 Verdict check_stability_loop_max(const nlohmann::json& certificate);
