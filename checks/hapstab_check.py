@@ -3342,9 +3342,12 @@ def check_stability_loop_max(c):
     un = evidence.get("unstable_at")
     if not isinstance(un, dict):
         raise Malformed("evidence.unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
-    only(un, ("at", "P", "w"), "evidence.unstable_at")
+    only(un, ("at", "P", "w", "slow_quotient"), "evidence.unstable_at")
     if exact(un, "at", "evidence.unstable_at") != hi:
         raise Malformed("evidence.unstable_at.at: not claim.hi")
+    on_ker = "slow_quotient" in un  # sup = 0 beside slow modes: M(0) on ker L, L M(0) = L (the C++ header)
+    if on_ker and (un["slow_quotient"] is not True or hi != 0):
+        raise Malformed("evidence.unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)")
     cover = evidence.get("cover", [])
     if not isinstance(cover, list) or len(cover) > MAX_LOOP_COVER:
         raise Malformed("evidence.cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
@@ -3408,11 +3411,19 @@ def check_stability_loop_max(c):
                 why = fails
                 continue
             start = eps
-        Pu = symmetric_evidence(un, "evidence.unstable_at", n)
-        w = frac_matrix({"w": [un.get("w")]}, "w", 1, n, "evidence.unstable_at")[0]
-        if sum(w[i] * Pu[i][j] * w[j] for i in range(n) for j in range(n)) >= 0:
+        Mu = M_at(hi)
+        if on_ker:
+            S = slow_rows(l1, l2, L1, a1, r1)
+            if not S:
+                raise Malformed("evidence.unstable_at.slow_quotient: the loop has no slow rows at %s = 0" % p)
+            K = [list(r) for r in S]
+            Mu = quotient(Mu, S, echelon(K))  # S in reduced echelon form: x_pivot = -S[:, kept] y
+        nu = len(Mu)
+        Pu = symmetric_evidence(un, "evidence.unstable_at", nu)
+        w = frac_matrix({"w": [un.get("w")]}, "w", 1, nu, "evidence.unstable_at")[0]
+        if sum(w[i] * Pu[i][j] * w[j] for i in range(nu) for j in range(nu)) >= 0:
             return False, "evidence.unstable_at: w^T P w >= 0"
-        if not stein_shown(Pu, M_at(hi)):
+        if not stein_shown(Pu, Mu):
             why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
             continue
         for i, piece in enumerate(cover):
@@ -3438,8 +3449,8 @@ def check_stability_loop_max(c):
         if not ok:
             continue
         if hi == 0:
-            return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits)" % (
-                p, p, p, p, n, p, bits)
+            return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits%s)" % (
+                p, p, p, p, n, p, bits, ", on ker L beside the slow modes" if on_ker else "")
         how = "inside the %s's tf, proven affine there" % block if inside else "the %s's gain alone" % block
         return True, "sup %s in [%s, %s]: M(%s) affine (%d states, %s); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
             p, short(lo), short(hi), p, n, how, short(lo), len(cover), p, short(hi), bits)

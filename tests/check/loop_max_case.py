@@ -38,7 +38,21 @@ def mutants(cert, name):
     """(what, edited certificate, the exit code both checkers must give, None: rejected) for a stability-loop-max
     certificate of a supremum (claim.hi > 0, a cover): the claim moved where the evidence cannot prove
     it (refuted) and the model moved beyond the kind (malformed)."""
-    claim, cover = cert["claim"], cert["evidence"]["cover"]
+    claim = cert["claim"]
+    if Fraction(claim["hi"]) == 0:  # sup = 0: Stein inertia at M(0) (on ker L beside slow modes)
+        un = cert["evidence"]["unstable_at"]
+        P00 = un["P"][0][0]
+        out = [("unmutated", cert, 0),
+               ("w zero (w^T P w = 0)", with_field(cert, ["evidence", "unstable_at", "w"], ["0"] * len(un["w"])), 1),
+               ("P's first entry negated", with_field(cert, ["evidence", "unstable_at", "P", 0, 0], P00[1:] if P00.startswith("-") else "-" + P00), None),
+               ("a cover of [0, 1] added", with_field(cert, ["evidence", "cover"], [{"to": "1", "P": un["P"]}]), 2),
+               ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2),
+               ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
+        if un.get("slow_quotient"):
+            out += [("the slow quotient dropped (M(0) whole: P of the wrong order)", deleted(cert, ["evidence", "unstable_at", "slow_quotient"]), 2),
+                    ("slow_quotient false", with_field(cert, ["evidence", "unstable_at", "slow_quotient"], False), 2)]
+        return out
+    cover = cert["evidence"]["cover"]
     text = cert["model"].get("scene")
 
     def claim_hi(v):
@@ -112,7 +126,7 @@ def main():
         path = os.path.join(tmp, "c.json")
         r = subprocess.run([hapstab, "stability"] + args + ["--max", name, "--certificate", path, "--quiet"],
                            capture_output=True, text=True)
-        if r.returncode != 0 or not os.path.exists(path):
+        if r.returncode not in (0, 1) or not os.path.exists(path):  # 1: sup = 0 (NOT stable for every small value)
             print("FAIL: the producer wrote no certificate (exit %d): %s" % (r.returncode, r.stderr.strip()))
             return 1
         with open(path) as f:

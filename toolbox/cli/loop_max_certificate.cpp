@@ -178,16 +178,20 @@ struct Attempt {
 };
 
 Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
-                     const rational& start) {
+                     const rational& start, const Mat& slow) {
   Attempt out;
   std::string why;
-  const SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
+  SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
+  bool on_ker = false;  // sup = 0 beside slow modes (their eigenvalue 1 leaves Stein inertia none): M(0) on ker L
+  if ((!u.stable || *u.stable) && hi == 0 && !slow.empty()) {
+    const SchurDecision r = stein_evidence(intervals(check::detail::restricted(loop_at(M1, M2, hi), slow)));
+    if (r.stable && !*r.stable) u = r, on_ker = true;
+  }
   if (!u.stable || *u.stable)
     return {{}, "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")" +
-                    (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too (a position that nothing holds there) leaves Stein "
-                               "inertia no certificate; the eigenvalue outside has no other certificate form yet"
-                             : "")};
+                    (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too, which the slow rows do not carry" : "")};
   out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
+  if (on_ker) out.evidence["unstable_at"]["slow_quotient"] = true;
   std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
   rational b = lo, width = lo - start;
   int sdp_misses = 0, skip_sdp = 0;
@@ -286,9 +290,10 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
     // where M(0) is only marginally stable (slow rows: L M(0) = L): the first-order start on (0, eps], eps
     // the producer's own first-order cover's end, else lo / 4^j
     std::optional<nlohmann::json> start;
-    // (not on a quotient by right eigenvectors: beyond the checker's start)
-    const Mat L = hi > 0 && !m1.right_quotient ? check::detail::slow_rows(loop1, loop2, m1) : Mat{};
-    if (!L.empty()) {
+    // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
+    // Stein inertia on ker L instead)
+    const Mat L = !m1.right_quotient ? check::detail::slow_rows(loop1, loop2, m1) : Mat{};
+    if (!L.empty() && hi > 0) {
       std::vector<rational> tries;
       if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
       for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
@@ -305,7 +310,7 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
       }
     }
     const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
-    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, from);
+    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, from, L);
     if (start) a.evidence["first_order"] = *start;
     if (!a.why.empty()) {
       why = a.why;

@@ -621,6 +621,11 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
 // in reduced row echelon form, of {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) with M~
 // the exact slow matrix (each hold e^{Ah} -> I, Gamma_h -> h B) of the loops read at p = 1 and 2. For l_p^T
 // A = 0, l_p^T e^{Ah} = l_p^T and l_p^T Gamma_h = h l_p^T B exactly, so l^T M(p) = l^T M~(p): l^T M(0) = l^T.
+BallRows restricted(const BallRows& M, const Mat& L) {
+  Mat K = L;
+  return reduced(M, Conserved{L, echelon(K)});  // L already in reduced echelon form: its pivots
+}
+
 Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const LoopMatrix& m1) {
   if (m1.right_quotient)
     throw InputError("evidence.first_order: a loop on a quotient by a block's unobservable z = 1 (right eigenvectors): beyond this kind");

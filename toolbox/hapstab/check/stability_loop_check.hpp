@@ -114,6 +114,9 @@ bool ball_positive_definite(const BallRows& Q, std::string& why);
 /// slow matrix, stability_loop_check.cpp; on a quotient, r = l^T E). Empty when none. InputError on a
 /// quotient by right eigenvectors (beyond).
 rational_matrix::Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const LoopMatrix& m1);
+/// M on ker L (L M = L, L in reduced echelon form, invariant: x_pivot = -L[:, kept] y, M_r = M[kept, :] E):
+/// its eigenvalues are M's but for the slow ones L carries.
+BallRows restricted(const BallRows& M, const rational_matrix::Mat& L);
 /// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.

@@ -281,7 +281,10 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   // the evidence's shape first (malformed before anything is computed)
   if (!evidence.contains("unstable_at")) throw InputError("evidence.unstable_at: missing (NOT stable at hi bounds sup p)");
   const nlohmann::json& un = detail::object_field(evidence, "unstable_at", "evidence");
-  detail::only_fields(un, {"at", "P", "w"}, "evidence.unstable_at");
+  detail::only_fields(un, {"at", "P", "w", "slow_quotient"}, "evidence.unstable_at");
+  const bool slow_quotient = un.contains("slow_quotient");
+  if (slow_quotient && (!un.at("slow_quotient").is_boolean() || !un.at("slow_quotient").get<bool>() || !c.hi.is_zero()))
+    throw InputError("evidence.unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)");
   if (detail::exact_field(un, "at", "evidence.unstable_at") != c.hi)
     throw InputError("evidence.unstable_at.at: not claim.hi (" + c.hi.str() + ")");
   const nlohmann::json cover = evidence.contains("cover") ? evidence.at("cover") : nlohmann::json::array();
@@ -341,16 +344,23 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
         continue;
       }
     }
-    // NOT stable at hi (or, hi = 0, at the limit M(0))
-    const Mat Pu = symmetric_P(un, "evidence.unstable_at", n);
+    // NOT stable at hi (or, hi = 0, at the limit M(0); slow_quotient: M(0) on ker L, L the slow rows (header))
+    BallRows Mu = detail::affine_loop_at(m1.M, m2.M, c.hi);
+    if (slow_quotient) {
+      const Mat L = detail::slow_rows(L1, L2, m1);
+      if (L.empty()) throw InputError("evidence.unstable_at.slow_quotient: the loop has no slow rows at " + p + " = 0");
+      Mu = detail::restricted(Mu, L);
+    }
+    const size_t nu = Mu.size();
+    const Mat Pu = symmetric_P(un, "evidence.unstable_at", nu);
     const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",
-                                        "evidence.unstable_at", n);
-    if (w[0].size() != n) throw InputError("evidence.unstable_at.w: not of P's order");
+                                        "evidence.unstable_at", nu);
+    if (w[0].size() != nu) throw InputError("evidence.unstable_at.w: not of P's order");
     rational q = 0;
-    for (size_t i = 0; i < n; ++i)
-      for (size_t j = 0; j < n; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
+    for (size_t i = 0; i < nu; ++i)
+      for (size_t j = 0; j < nu; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
     if (q >= 0) return {false, "evidence.unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
-    if (!detail::stein_holds(Pu, detail::affine_loop_at(m1.M, m2.M, c.hi), why)) {
+    if (!detail::stein_holds(Pu, Mu, why)) {
       why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + why;
       continue;
     }
@@ -386,7 +396,9 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
                                                                 : std::string());
     if (c.hi.is_zero())
       return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
-                        "inertia, " + std::to_string(bits) + " bits), and so has M(" + p + ") for every small " + p + " > 0"};
+                        "inertia, " + std::to_string(bits) + " bits" +
+                        (slow_quotient ? ", on ker L: M(0) there, L its slow rows (L M(0) = L), beside their eigenvalue 1" : "") +
+                        "), and so has M(" + p + ") for every small " + p + " > 0"};
     return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
                       detail::decimal(c.lo) + "] (0 excluded where the first-order start serves) by " + std::to_string(cover.size()) +
                       " intervals, P > 0 with P - M^T P M > 0 at both ends of each (convex in " + p + "); NOT stable at " +
