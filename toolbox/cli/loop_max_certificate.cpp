@@ -24,7 +24,7 @@ using check::detail::BallRows;
 using check::rational_matrix::Mat;
 
 constexpr long kBits = 128;
-constexpr size_t kMaxIntervals = 512;  // a certificate of ~n^2 x 25 bytes per interval: at most ~1 MB at order 9
+constexpr size_t kMaxIntervals = 2048;  // ~n^2 x 25 bytes per interval: at most ~4 MB at order 9 (the checker takes 4096)
 
 // M(p) = (2 - p) M1 + (p - 1) M2, the checker's own formula (check/stability_loop_max_check.hpp).
 BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) { return check::detail::affine_loop_at(M1, M2, p); }

@@ -33,7 +33,7 @@ namespace hapstab::cli {
 /// proves: the certificate's digits, fewer than the crossing's own); sup p = 0 where m fails (M(0) with
 /// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
 /// the gain alone, a loop not affine in it, no first-order start where M(0) is marginal, no Stein P at a
-/// point, more than 512 intervals, an undecided m.
+/// point, more than 2048 intervals, an undecided m.
 /// What hapstab answered: sup p's outcome, the crossing's enclosure, stable up to stable_to (and, where its
 /// own first-order cover served, on (0, first_order_to]).
 struct SupClaim {
