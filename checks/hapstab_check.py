@@ -2112,9 +2112,89 @@ def scene_constant(text, T, where):
     return h.num[0] / h.den[0] if h.num else Fraction(0)
 
 
-def scene_expand(text, defs, free, where, memo, chain):
+def scene_lists(text, lists, where, depth=0):
+    """NAME[k] -> "(v_k)" and sum(NAME) -> "((v_1) + ... + (v_n))" for the list parameters (docs/scene.md,
+    "Repeated blocks"; check/scene_model.cpp's Parameters::expand); a list named otherwise is malformed."""
+    if not lists or depth > 50:
+        return text
+
+    def value(name, v):
+        return "(" + scene_lists(v, lists, "parameters." + name, depth + 1) + ")"
+
+    def total(m):
+        name = m.group(1)
+        return "(" + " + ".join(value(name, v) for v in lists[name]) + ")" if name in lists else m.group(0)
+
+    def indexed(m):
+        name, index = m.group(1), m.group(2)
+        if name not in lists:
+            return m.group(0)
+        if not (index.isdigit() and len(index) <= 6 and 1 <= int(index) <= len(lists[name])):
+            raise Malformed("model.scene: %s: '%s[%s]': the list parameter %s has %d values, %s[1] .. %s[%d] (or sum(%s))" % (
+                where, name, index, name, len(lists[name]), name, name, len(lists[name]), name))
+        return value(name, lists[name][int(index) - 1])
+    text = re.sub(r"(?<![\w.])sum\(\s*([A-Za-z_]\w*)\s*\)", total, text)
+    text = re.sub(r"(?<![\w.])([A-Za-z_]\w*)\[([^\]]*)\]", indexed, text)
+    for name in re.findall(r"(?<![\w.])[A-Za-z_]\w*", text):
+        if name in lists:
+            raise Malformed("model.scene: %s: '%s' is a list parameter: write %s[k] or sum(%s)" % (where, name, name, name))
+    return text
+
+
+def scene_copies(root):
+    """[[device]] and [[operator]] tables with count = n written out as hapstab's reader does (n copies in
+    place, named NAME[k] or the name's own [i] pattern, "[i]" -> "[k]" in every string); at most 64."""
+    def indexed(v, k):
+        if isinstance(v, str):
+            return v.replace("[i]", "[%d]" % k)
+        if isinstance(v, list):
+            return [indexed(x, k) for x in v]
+        if isinstance(v, dict):
+            return {a: indexed(b, k) for a, b in v.items()}
+        return v
+    for key in ("device", "operator"):
+        tables = root.get(key)
+        if not isinstance(tables, list):
+            continue
+        out = []
+        for i, t in enumerate(tables):
+            if not isinstance(t, dict) or "count" not in t:
+                out.append(t)
+                continue
+            where = "%s[%d]" % (key, i + 1)
+            n = t["count"]
+            if not isinstance(n, int) or isinstance(n, bool) or n < 1:
+                raise Malformed("model.scene: %s.count: a whole number of copies >= 1" % where)
+            if n > 64:
+                scene_beyond(where + ".count", "%d copies, more than 64" % n)
+            if not isinstance(t.get("name"), str):
+                raise Malformed("model.scene: %s.name: a table with count needs a name: its copies are NAME[1] .. NAME[count]" % where)
+            pattern = t["name"] if "[i]" in t["name"] else t["name"] + "[i]"
+            for k in range(1, n + 1):
+                copy = {a: indexed(b, k) for a, b in t.items() if a not in ("count", "name")}
+                copy["name"] = pattern.replace("[i]", "[%d]" % k)
+                out.append(copy)
+        root[key] = out
+
+
+def scene_list_values(v, where):
+    """A list parameter's values: [v1, ..., vn] or {repeat = [v1, ..., vp], times = n}; 1 .. 4096 of them."""
+    times = 1
+    if isinstance(v, dict):
+        scene_keys(v, ("repeat", "times"), where)
+        times = v.get("times")
+        v = v.get("repeat")
+        if not isinstance(times, int) or isinstance(times, bool) or not 1 <= times <= 4096:
+            raise Malformed("model.scene: %s: a repeated list needs repeat = [values] and times = n (1 .. 4096)" % where)
+    if not isinstance(v, list) or not v or len(v) * times > 4096:
+        raise Malformed("model.scene: %s: a list of 1 .. 4096 values" % where)
+    return [scene_text(x, "%s[%d]" % (where, i + 1)) for i, x in enumerate(v)] * times
+
+
+def scene_expand(text, defs, free, where, memo, chain, lists=None):
     """text with every parameter (but free) replaced by "(its definition)", recursively; the tokens
-    are lex's (numbers with an exponent, names, single characters)."""
+    are lex's (numbers with an exponent, names, single characters); list parameters first (scene_lists)."""
+    text = scene_lists(text, lists, where)
     out = []
     for kind, tok in lex(text)[:-1]:
         if kind == 'name' and tok in defs and tok != free:
@@ -2123,7 +2203,7 @@ def scene_expand(text, defs, free, where, memo, chain):
                     raise Malformed("model.scene: parameters.%s: depends on itself (a cycle)" % tok)
                 if len(chain) >= 200:
                     scene_beyond("parameters." + tok, "defined through more than 200 others in a chain")
-                e = scene_expand(defs[tok], defs, free, "parameters." + tok, memo, chain | {tok})
+                e = scene_expand(defs[tok], defs, free, "parameters." + tok, memo, chain | {tok}, lists)
                 if any(k == 'name' and t in ('s', 'z') for k, t in lex(e)):
                     raise Malformed("model.scene: parameters.%s: names s or z (a parameter is a number)" % tok)
                 memo[tok] = e
@@ -2191,7 +2271,8 @@ def scene_read(model, free, coupling=False):
     T = scene_constant(scene_text(head["T"], "scene.T"), None, "scene.T")
     if T <= 0:
         raise Malformed("model.scene: scene.T: must be > 0")
-    defs = {}
+    scene_copies(root)
+    defs, lists = {}, {}
     params = root.get("parameters", {})
     if not isinstance(params, dict):
         raise Malformed("model.scene: [parameters]: not a table")
@@ -2199,10 +2280,13 @@ def scene_read(model, free, coupling=False):
         if name in ("T", "s", "z"):
             scene_beyond("parameters." + name, "a parameter named T, s or z")
         if isinstance(v, (list, dict)):
-            scene_beyond("parameters." + name, "a list parameter (repeated blocks)")
+            lists[name] = scene_list_values(v, "parameters." + name)
+            continue
         defs[name] = scene_text(v, "parameters." + name)
     K = model.get("name") if free and isinstance(model.get("name"), str) else None
     for name, v in parameters(model).items():
+        if name in lists:
+            raise Malformed("model.set.%s: a list parameter (its values are the scene's)" % name)
         if name not in defs:
             raise Malformed("model.set.%s: not a parameter of the scene" % name)
         if name == K:
@@ -2211,7 +2295,7 @@ def scene_read(model, free, coupling=False):
     memo = {}
 
     def expand(text, where):
-        return scene_expand(text, defs, K, where, memo, frozenset())
+        return scene_expand(text, defs, K, where, memo, frozenset(), lists)
 
     def field(t, key, where, default):
         return expand(scene_text(t[key], where + "." + key), where + "." + key) if key in t else default
@@ -2551,9 +2635,14 @@ def scene_ss_order(ss):
 
 
 def scene_discrete(t, where, N, T, expand, field):
-    """[environment] or [coupling]: ("tf", N x N RFs in z, times gain) or ("ss", (A, B, C, D) with C, D times gain)."""
-    scene_keys(t, ("tf", "ss", "domain", "method", "gain"), where)
-    if ("tf" in t) == ("ss" in t):
+    """[environment] or [coupling]: ("tf", N x N RFs in z, times gain) or ("ss", (A, B, C, D) with C, D times gain);
+    the tf matrix written as diagonal / off_diagonal [/ blocks] too (scene_diagonal)."""
+    scene_keys(t, ("tf", "ss", "diagonal", "off_diagonal", "blocks", "domain", "method", "gain"), where)
+    if "diagonal" in t and ("tf" in t or "ss" in t):
+        raise Malformed("model.scene: %s: give one of tf, ss, diagonal" % where)
+    if "diagonal" not in t and ("off_diagonal" in t or "blocks" in t):
+        raise Malformed("model.scene: %s: off_diagonal and blocks need diagonal" % where)
+    if "diagonal" not in t and ("tf" in t) == ("ss" in t):
         raise Malformed("model.scene: %s: give exactly one of tf, ss" % where)
     gain_text = field(t, "gain", where, "1")
     if "ss" in t:
@@ -2569,7 +2658,7 @@ def scene_discrete(t, where, N, T, expand, field):
         return "ss", (Am, Bm, Cm, Dm)
     gain = scene_rf(gain_text, T, 'z', where + ".gain")
     E = []
-    for row in scene_text_matrix(t["tf"], N, where + ".tf"):
+    for row in scene_diagonal(t, where, N) if "diagonal" in t else scene_text_matrix(t["tf"], N, where + ".tf"):
         E.append([])
         for e in row:
             f = scene_rf(scene_wall_entry(t, e, expand), T, 'z', where + ".tf") * gain
@@ -2577,6 +2666,22 @@ def scene_discrete(t, where, N, T, expand, field):
                 raise Malformed("model.scene: %s.tf: an improper entry in z" % where)
             E[-1].append(f)
     return "tf", E
+
+
+def scene_diagonal(t, where, N):
+    """diagonal / off_diagonal [/ blocks] as the N x N entries' text (docs/scene.md, "Repeated blocks"): (i, i)
+    the diagonal with [i] its row's number, (i, j) the off-diagonal with [i] the row's and [j] the column's
+    (from 1), 0 between blocks of N/K DOFs."""
+    d, off = t["diagonal"], t.get("off_diagonal", "0")
+    if not isinstance(d, str) or not isinstance(off, str):
+        raise Malformed("model.scene: %s.diagonal, off_diagonal: not strings" % where)
+    K = t.get("blocks", 1)
+    if not isinstance(K, int) or isinstance(K, bool) or K < 1 or N % K:
+        raise Malformed("model.scene: %s.blocks: a whole number K >= 1 that divides the %d DOFs" % (where, N))
+    size = N // K
+    return [[d.replace("[i]", "[%d]" % (i + 1)) if i == j else
+             off.replace("[i]", "[%d]" % (i + 1)).replace("[j]", "[%d]" % (j + 1)) if i // size == j // size else "0"
+             for j in range(N)] for i in range(N)]
 
 
 def realise_columns(G):

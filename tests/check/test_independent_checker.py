@@ -388,7 +388,7 @@ class StabilityLoop(unittest.TestCase):
         damped = LOOP_SCENE.replace('m = "2"', 'm = "2"\nb = "40"')
         self.assertEqual(hc.check(loop_cert(damped, False, self.P, ["1", "0"]))[0], 1)
         for edit, field in (("[contact]\n", "[contact]"), ('[passivity_controller]\ndofs = [0]\n', "[passivity_controller]"),
-                            ('[[device]]\nname = "b"\nm = "1"\ncount = 2\n', "count")):
+                            ('[[device]]\nname = "b"\nm = "1"\ncount = 65\n', "65 copies, more than 64")):
             code, why = hc.check(loop_cert(LOOP_SCENE + edit, False, self.P, ["1", "0"]))
             self.assertEqual(code, 2, why)
             self.assertIn(field, why)

@@ -31,12 +31,20 @@ constexpr int kMaxDotsPerLine = 256;  // toml++ recurses per component of a dott
   throw InputError("model.scene: " + where + ": " + what);
 }
 
+std::string trimmed(std::string t) {
+  t.erase(0, t.find_first_not_of(' '));
+  t.erase(t.find_last_not_of(' ') + 1);
+  return t;
+}
+
 // The scene's [parameters] (model.set replacing definitions), substituted textually.
 struct Parameters {
   std::map<std::string, std::string> definition;
   std::string free;  // stays a name (stability-max's K)
   std::map<std::string, std::string> expanded;  // memo
   std::set<std::string> open;                   // on the current chain (a cycle is malformed)
+  /// list parameters (docs/scene.md, "Repeated blocks"): NAME[k] is "(v_k)", sum(NAME) "((v_1) + ... + (v_n))"
+  std::map<std::string, std::vector<std::string>> lists;
 
   // `text` with every parameter named in it replaced by "(its expansion)": the tokens are the
   // parser's (lti/parse.hpp): numbers with an exponent, identifiers, single characters.
@@ -61,6 +69,32 @@ struct Parameters {
         size_t j = i;
         while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_')) ++j;
         const std::string name = text.substr(i, j - i);
+        if (name == "sum" && j < text.size() && text[j] == '(') {  // sum(NAME) of a list parameter
+          const size_t close = text.find(')', j);
+          const std::string inner = close == std::string::npos ? "" : trimmed(text.substr(j + 1, close - j - 1));
+          if (const auto it = lists.find(inner); it != lists.end()) {
+            std::string sum;
+            for (const auto& v : it->second) sum += (sum.empty() ? "(" : " + (") + expand(v, "parameters." + inner) + ")";
+            out += "(" + sum + ")";
+            i = close + 1;
+            continue;
+          }
+        }
+        if (const auto it = lists.find(name); it != lists.end()) {  // NAME[k], k from 1
+          const size_t close = j < text.size() && text[j] == '[' ? text.find(']', j) : std::string::npos;
+          const std::string index = close == std::string::npos ? "" : text.substr(j + 1, close - j - 1);
+          const bool digits = !index.empty() && index.size() <= 6 && std::all_of(index.begin(), index.end(), [](char d) {
+            return std::isdigit(static_cast<unsigned char>(d));
+          });
+          const long k = digits ? std::stol(index) : 0;
+          if (k < 1 || k > long(it->second.size()))
+            malformed(where, "'" + name + (close == std::string::npos ? "" : "[" + index + "]") + "': the list parameter " + name + " has " +
+                                 std::to_string(it->second.size()) + " values, " + name + "[1] .. " + name + "[" +
+                                 std::to_string(it->second.size()) + "] (or sum(" + name + "))");
+          out += "(" + expand(it->second[size_t(k - 1)], "parameters." + name) + ")";
+          i = close + 1;
+          continue;
+        }
         out += definition.count(name) && name != free ? "(" + of(name) + ")" : name;
         i = j;
       } else {
@@ -147,6 +181,71 @@ std::string substitute(const std::string& text, const std::string& var, const st
   return p.expand(text, "environment.tf");
 }
 
+// A list parameter's values: NAME = [v1, ..., vn], or { repeat = [v1, ..., vp], times = n } (the p values n
+// times over); at most 4096 values (scene/reader.cpp's limit).
+std::vector<std::string> list_values(const toml::node& v, const std::string& where) {
+  std::vector<std::string> out;
+  const toml::array* a = v.as_array();
+  long times = 1;
+  if (const auto* t = v.as_table()) {
+    only_keys(*t, {"repeat", "times"}, where);
+    a = (*t)["repeat"].as_array();
+    const auto* n = (*t)["times"].as_integer();
+    if (!a || !n || n->get() < 1 || n->get() > 4096) malformed(where, "a repeated list needs repeat = [values] and times = n (1 .. 4096)");
+    times = long(n->get());
+  }
+  if (!a || a->empty() || long(a->size()) * times > 4096) malformed(where, "a list of 1 .. 4096 values");
+  for (long k = 0; k < times; ++k)
+    for (size_t i = 0; i < a->size(); ++i) out.push_back(text_of(*a->get(i), where + "[" + std::to_string(i + 1) + "]"));
+  return out;
+}
+
+// Every string in `n` (at any depth) with "[i]" replaced by "[k]" (a copy's number).
+void index_strings(toml::node& n, const std::string& k) {
+  if (auto* str = n.as_string()) {
+    std::string text = str->get();
+    for (size_t at = text.find("[i]"); at != std::string::npos; at = text.find("[i]", at + k.size() + 2)) text.replace(at, 3, "[" + k + "]");
+    *str = text;
+  } else if (auto* a = n.as_array()) {
+    for (auto& e : *a) index_strings(e, k);
+  } else if (auto* t = n.as_table()) {
+    for (auto&& [name, v] : *t) index_strings(v, k);
+  }
+}
+
+// [[device]] and [[operator]] tables with count = n written out as hapstab's reader does (scene/reader.cpp's
+// table_copies): n copies in place, named NAME[k] (or the name's own [i] pattern), "[i]" -> "[k]" in every
+// string. At most 64 copies (the checkers' DOF limit).
+void write_out_copies(toml::table& root) {
+  for (const char* key : {"device", "operator"}) {
+    auto* arr = root[key].as_array();
+    if (!arr) continue;
+    toml::array out;
+    for (size_t i = 0; i < arr->size(); ++i) {
+      const auto* t = arr->get(i)->as_table();
+      if (!t || !t->contains("count")) {
+        out.push_back(*arr->get(i));
+        continue;
+      }
+      const std::string where = std::string(key) + "[" + std::to_string(i + 1) + "]";
+      const auto* n = t->get("count")->as_integer();
+      if (!n || n->get() < 1) malformed(where + ".count", "a whole number of copies >= 1");
+      if (n->get() > 64) beyond(where + ".count", std::to_string(n->get()) + " copies, more than 64");
+      const auto* name = (*t)["name"].as_string();
+      if (!name) malformed(where + ".name", "a table with count needs a name: its copies are NAME[1] .. NAME[count]");
+      const std::string own = name->get(), pattern = own.find("[i]") == std::string::npos ? own + "[i]" : own;
+      for (long k = 1; k <= n->get(); ++k) {
+        toml::table copy = *t;
+        copy.erase("count");
+        copy.insert_or_assign("name", pattern);
+        for (auto&& [nm, v] : copy) index_strings(v, std::to_string(k));
+        out.push_back(std::move(copy));
+      }
+    }
+    root.insert_or_assign(key, std::move(out));
+  }
+}
+
 toml::table parse_scene(const std::string& text, bool coupling = false) {
   if (text.size() > kMaxSceneBytes) beyond("the scene", "more than 1 MB");
   for (size_t at = 0, dots = 0; at <= text.size(); ++at) {
@@ -168,6 +267,7 @@ toml::table parse_scene(const std::string& text, bool coupling = false) {
   }
   if (const auto* m = root["multidof"].as_table(); m && m->contains("perturb_C"))  // it changes E (multidof commands only)
     beyond("multidof.perturb_C", "Sec. VI's perturbed environment, which stability does not model");
+  write_out_copies(root);
   return root;
 }
 
@@ -180,13 +280,17 @@ Parameters read_parameters(const toml::table& root, const nlohmann::json& model,
     for (const auto& [k, v] : *params) {
       const std::string name(k.str());
       if (name == "T" || name == "s" || name == "z") beyond("parameters." + name, "a parameter named T, s or z");
-      if (v.is_array() || v.is_table()) beyond("parameters." + name, "a list parameter (repeated blocks)");
+      if (v.is_array() || v.is_table()) {
+        p.lists[name] = list_values(v, "parameters." + name);
+        continue;
+      }
       p.definition[name] = text_of(v, "parameters." + name);
     }
   else if (root.contains("parameters")) malformed("[parameters]", "not a table");
   if (model.contains("set")) {
     if (!model.at("set").is_object()) throw InputError("model.set: not an object");
     for (const auto& [name, v] : model.at("set").items()) {
+      if (p.lists.count(name)) throw InputError("model.set." + name + ": a list parameter (its values are the scene's)");
       if (!p.definition.count(name)) throw InputError("model.set." + name + ": not a parameter of the scene");
       if (name == free) throw InputError("model.set: gives the parameter model.name = " + free + " a value");
       p.definition[name] = exact_field(model.at("set"), name, "model.set").str();
@@ -448,9 +552,40 @@ void read_loop_operator(const toml::table& op, const std::string& key, const std
 }
 
 // [environment] or [coupling]: tf (in z, or in s with a method) or ss (in z), times gain.
+// diagonal / off_diagonal [/ blocks] -> the N x N entries as text (docs/scene.md, "Repeated blocks"; hapstab's
+// scene/scene.cpp compact_matrix): (i, i) the diagonal with [i] its row's number, (i, j) the off-diagonal with
+// [i] the row's and [j] the column's (from 1), 0 between blocks of N/K DOFs.
+std::vector<std::vector<std::string>> diagonal_texts(const toml::table& t, const std::string& where, size_t N) {
+  const auto place = [](std::string text, const char* index, size_t value) {
+    const std::string with = "[" + std::to_string(value) + "]";
+    for (size_t at = text.find(index); at != std::string::npos; at = text.find(index, at + with.size())) text.replace(at, 3, with);
+    return text;
+  };
+  const auto* d = t["diagonal"].as_string();
+  if (!d) malformed(where + ".diagonal", "not a string");
+  const toml::node* o = t.get("off_diagonal");
+  if (o && !o->as_string()) malformed(where + ".off_diagonal", "not a string");
+  const std::string off = o ? o->as_string()->get() : "0";
+  long K = 1;
+  if (const toml::node* b = t.get("blocks")) {
+    if (!b->as_integer() || b->as_integer()->get() < 1 || N % size_t(b->as_integer()->get()) != 0)
+      malformed(where + ".blocks", "a whole number K >= 1 that divides the " + std::to_string(N) + " DOFs");
+    K = long(b->as_integer()->get());
+  }
+  const size_t size = N / size_t(K);
+  std::vector<std::vector<std::string>> out(N, std::vector<std::string>(N, "0"));
+  for (size_t i = 0; i < N; ++i)
+    for (size_t j = 0; j < N; ++j)
+      if (i == j) out[i][j] = place(d->get(), "[i]", i + 1);
+      else if (i / size == j / size) out[i][j] = place(place(off, "[i]", i + 1), "[j]", j + 1);
+  return out;
+}
+
 SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where, size_t N, Parameters& p, const rational& T) {
-  only_keys(t, {"tf", "ss", "domain", "method", "gain"}, where);
-  if (t.contains("tf") == t.contains("ss")) malformed(where, "give exactly one of tf, ss");
+  only_keys(t, {"tf", "ss", "diagonal", "off_diagonal", "blocks", "domain", "method", "gain"}, where);
+  if (t.contains("diagonal") && (t.contains("tf") || t.contains("ss"))) malformed(where, "give one of tf, ss, diagonal");
+  if (!t.contains("diagonal") && (t.contains("off_diagonal") || t.contains("blocks"))) malformed(where, "off_diagonal and blocks need diagonal");
+  if (!t.contains("diagonal") && t.contains("tf") == t.contains("ss")) malformed(where, "give exactly one of tf, ss");
   const std::string gain_text = field(t, "gain", where, p, "1");
   SceneLoop::Discrete D;
   if (t.contains("ss")) {
@@ -469,7 +604,7 @@ SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where
     return D;
   }
   const RationalFunction<rational> gain = parse_in(gain_text, 'z', T, where + ".gain");
-  for (const auto& row : text_matrix(*t.get("tf"), N, where + ".tf")) {
+  for (const auto& row : t.contains("diagonal") ? diagonal_texts(t, where, N) : text_matrix(*t.get("tf"), N, where + ".tf")) {
     D.tf.emplace_back();
     for (const auto& e : row) {
       // read_wall's discretisation, entry by entry

@@ -14,7 +14,7 @@
 //                 `--set` value, model.set, replaces the definition); `free` (the parameter
 //                 `stability --max` maximises) stays a name.
 // What this reading does not model is refused by name (InputError: beyond this checker): a second
-// device or operator, `count`, ss blocks, matrices, list parameters, [coupling], [contact],
+// device or operator (a count above 1 included), ss blocks, matrices, [coupling], [contact],
 // [passivity_controller], encoders, Coulomb friction, a fractional delay, an unknown section or
 // key. Sections that do not enter the loop's stability ([[input]], [initial], [simulate],
 // [reproduce], [multidof]) are ignored. The producer checks what it writes (cli/certificate.cpp),
@@ -48,7 +48,12 @@ namespace hapstab::check::detail {
 ///   [coupling] tf or ss          V(z), force -> displacement, in parallel with the device (paper 000
 ///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
 ///   [delay]                      t_d in [0, 1000 T], a fraction of a sample too
-/// Refused by name: anything else (count, diagonal, [contact], encoders, friction, ...).
+///   repeated blocks                (docs/scene.md) written out first as hapstab's reader does: [[device]]
+///                                and [[operator]] with count = n (at most 64) as n copies NAME[k], "[i]" ->
+///                                "[k]" in their strings; list parameters NAME = [..] or {repeat, times}:
+///                                NAME[k] -> (v_k), sum(NAME) -> ((v_1) + ... + (v_n)); [environment] and
+///                                [coupling] by diagonal / off_diagonal [/ blocks = K] as their N x N text
+/// Refused by name: anything else ([contact], encoders, friction, ...).
 struct SceneLoop {
   using Matrix = std::vector<std::vector<rational>>;
   /// A discrete N x N block: its transfer matrix, or its realisation as written (ss).
