@@ -131,7 +131,8 @@ std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
 }
 
 // The first-order start on (0, eps] (check/stability_loop_max_check.hpp): P0, S from an SDP in M(eps)'s
-// balanced coordinates (x = D y: P0 = D^-1 P0_b D^-1, L_b = L D, K_b = K D), P0 >= I, 0 <= S, both <= 10^8,
+// balanced coordinates (x = D y: P0 = D^-1 P0_b D^-1, L_b = C L D, K_b = C K D, S = C S_b C, C scaling each
+// slow row to unit length), P0 >= I, 0 <= S_b, both <= 10^8,
 // Q(0) > 0 and Q(eps) > 0 with Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K, the margin
 // maximised; the dyadic rounding checked by the checker's own test. nullopt when none passes.
 std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const BallRows& M2, const Mat& L, const rational& eps,
@@ -147,7 +148,12 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   Eigen::VectorXd d(n);
   for (int i = 0; i < n; ++i) d(i) = std::ldexp(1.0, e[size_t(i)]);
   const Eigen::MatrixXd D = d.asDiagonal(), Di = d.cwiseInverse().asDiagonal();
-  const Eigen::MatrixXd B0 = Di * A0 * D, Be = Di * Ae * D, Lb = Ld * D, Kb = Ld * dM * D;
+  // the slow rows scaled to unit length (a power of 2 each, S := C S_b C maps back): L in echelon form can be
+  // 10^-4 in these coordinates and K = L dM 10^-11, out of reach of S <= 10^8
+  Eigen::VectorXd c(k);
+  for (int r = 0; r < k; ++r) c(r) = std::ldexp(1.0, -std::ilogb((Ld.row(r) * D).norm()));
+  const Eigen::MatrixXd C = c.asDiagonal();
+  const Eigen::MatrixXd B0 = Di * A0 * D, Be = Di * Ae * D, Lb = C * Ld * D, Kb = C * Ld * dM * D;
   const Eigen::MatrixXd In = Eigen::MatrixXd::Identity(n, n), Ik = Eigen::MatrixXd::Identity(k, k);
   lmi::Program prog;
   const lmi::MatrixVariable P = prog.new_symmetric(n, "P0"), S = prog.new_symmetric(k, "S");
@@ -162,7 +168,7 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   const auto r = solve_for_margin(prog);
   if (!r) return std::nullopt;
   Eigen::MatrixXd P0 = Di * r->solution(P) * Di;
-  const Eigen::MatrixXd Sd = r->solution(S);
+  const Eigen::MatrixXd Sd = C * r->solution(S) * C;
   for (const int bits : {24, 53}) {
     nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
     rational from = 0;
