@@ -34,6 +34,18 @@ def agrees(got, want):
     return got[0] == got[1] and (got[0] in (1, 2) if want is None else got[0] == want)
 
 
+def run_cases(hapstab, cases, tmp):
+    """Each (what, certificate, wanted exit) through both checkers, a line each; the number that failed."""
+    failures = 0
+    for what, c, want in cases:
+        got = exits(hapstab, c, tmp)
+        ok = agrees(got, want)
+        failures += not ok
+        print("%s %s: hapstab check %d, independent %d (want %s)" % ("ok  " if ok else "FAIL", what, got[0], got[1],
+                                                                       "1 or 2" if want is None else want))
+    return failures
+
+
 def mutants(cert, name):
     """(what, edited certificate, the exit code both checkers must give, None: rejected) for a stability-loop-max
     certificate of a supremum (claim.hi > 0, a cover): the claim moved where the evidence cannot prove
@@ -132,13 +144,7 @@ def main():
         with open(path) as f:
             cert = json.load(f)
         cases = mutants(cert, name)
-        failures = 0
-        for what, c, want in cases:
-            got = exits(hapstab, c, tmp)
-            ok = agrees(got, want)
-            failures += not ok
-            print("%s %s: hapstab check %d, independent %d (want %s)" % ("ok  " if ok else "FAIL", what, got[0], got[1],
-                                                                           "1 or 2" if want is None else want))
+        failures = run_cases(hapstab, cases, tmp)
         print("loop_max_case: %d cases, %d failed" % (len(cases), failures))
         return 1 if failures else 0
 

@@ -98,14 +98,14 @@ def rho(c, g):
     return ILC.rho(*family(c, g))
 
 
-def crossing(c, lo, hi):
+def crossing(rho_at, lo, hi):
     """The reference's first crossing in [lo, hi]: bisection on rho - 1 (rho(lo) < 1 <= rho(hi)) to 1e-12."""
     a, b = Q(lo), Q(hi)
     for _ in range(60):
         if (b - a) <= b * Q(1, 10 ** 12):
             break
         m = (a + b) / 2
-        if rho(c, m) < 1:
+        if rho_at(m) < 1:
             a = m
         else:
             b = m
@@ -117,6 +117,41 @@ MUTANTS = [0]  # mutants of the certificates (tests/check/loop_max_case.py's), e
 
 def checkers_exit(exe, path):
     return tuple(subprocess.run(cmd, capture_output=True, timeout=900).returncode for cmd in ILC.checkers(exe, path))
+
+
+def judge(exe, cl, verdicts, rho_at, name, bad):
+    """A stability-loop-max certificate's claim against the reference rho_at(value) (50 digits), shared with
+    indep_plant_max_certificate.py: (True, what, None) for a sup = 0 that rho > 1 at 10^-6 confirms; (True, "",
+    (a, b)) for [lo, hi] with rho < 1 at lo k/6, k = 1..6, rho > 1 at hi, the reference's crossing [a, b] in [lo,
+    hi] (1e-9 relative) and every mutant of loop_max_case rejected by both checkers as it must be (one beyond
+    the independent checker's stated limit, exit 3, is not checked there); (False, what, None) otherwise."""
+    lo, hi = Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
+    if hi == 0:
+        r0 = rho_at(Q(1, 10 ** 6))
+        if not r0 > 1:
+            return False, "sup %s = 0 certified, but the reference's rho at %s = 1e-6 is %s" % (name, name, mp.nstr(r0, 15)), None
+        return True, "sup %s = 0 (rho(1e-6) = %s), verified by both" % (name, mp.nstr(r0, 12)), None
+    for g in [lo * k / 6 for k in range(1, 7)]:
+        rg = rho_at(g)
+        if not rg < 1:
+            return False, "stable on (0, %s] certified, but the reference's rho at %s is %s" % (float(lo), float(g), mp.nstr(rg, 15)), None
+    rh = rho_at(hi)
+    if not rh > 1:
+        return False, "NOT stable at %s certified, but the reference's rho there is %s" % (float(hi), mp.nstr(rh, 15)), None
+    a, b = crossing(rho_at, lo, hi)
+    tol = hi * Q(1, 10 ** 9)
+    if b < lo - tol or a > hi + tol:
+        return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
+    for what, m, want in LMC.mutants(cl, name)[1:]:
+        with open(bad, "w") as f:
+            json.dump(m, f)
+        got = checkers_exit(exe, bad)
+        if got[1] == 3:
+            got = (got[0], got[0])
+        if not LMC.agrees(got, want):
+            return False, "%s: the checkers exit %s (want %s)" % (what, got, "1 or 2" if want is None else want), None
+        MUTANTS[0] += 1
+    return True, "", (a, b)
 
 
 def run_case(exe, c, tmp):
@@ -143,32 +178,10 @@ def run_case(exe, c, tmp):
         return False, "a checker does not verify the certificate: exits %s" % (verdicts,), None
     if cl["claim"].get("conserved", 0) != c["conserved"]:
         return False, "the certificate claims %s conserved quantities, the scene writes %d" % (cl["claim"].get("conserved", 0), c["conserved"]), None
-    lo, hi = Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
-    if hi == 0:
-        r0 = rho(c, Q(1, 10 ** 6))
-        if not r0 > 1:
-            return False, "sup g = 0 certified, but the reference's rho at g = 1e-6 is %s" % mp.nstr(r0, 15), None
-        return True, "sup g = 0 (rho(1e-6) = %s), verified by both" % mp.nstr(r0, 12), "sup = 0"
-    for g in [lo * k / 6 for k in range(1, 6)] + [lo]:
-        rg = rho(c, g)
-        if not rg < 1:
-            return False, "stable on [0, %s] certified, but the reference's rho at %s is %s" % (lo, g, mp.nstr(rg, 15)), None
-    rh = rho(c, hi)
-    if not rh > 1:
-        return False, "NOT stable at %s certified, but the reference's rho there is %s" % (hi, mp.nstr(rh, 15)), None
-    a, b = crossing(c, lo, hi)
-    tol = hi * Q(1, 10 ** 9)
-    if b < lo - tol or a > hi + tol:
-        return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
-    for what, m, want in LMC.mutants(cl, name)[1:]:
-        with open(bad, "w") as f:
-            json.dump(m, f)
-        got = checkers_exit(exe, bad)
-        if verdicts[1] == 3 and got[1] == 3:  # beyond the independent checker's limit, as the certificate
-            got = (got[0], got[0])
-        if not LMC.agrees(got, want):
-            return False, "%s: the checkers exit %s (want %s)" % (what, got, "1 or 2" if want is None else want), None
-        MUTANTS[0] += 1
+    ok, what, ab = judge(exe, cl, verdicts, lambda g: rho(c, g), name, bad)
+    if ok is not True or ab is None:
+        return ok, what, "sup = 0" if ok else None
+    (a, b), lo, hi = ab, Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
     n = len(cl["evidence"]["unstable_at"]["P"])
     return True, "sup %s in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
         name, float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,

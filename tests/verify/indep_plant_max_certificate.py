@@ -29,30 +29,14 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mpmath as mp  # noqa: E402
 
 import indep_loop as IL  # noqa: E402
+import indep_loop_max_certificate as ILM  # noqa: E402
 import indep_plant_loop_certificate as IPL  # noqa: E402
 from indep_common import cases_and_seed, fstr, poly_str  # noqa: E402
-
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
-import loop_max_case as LMC  # noqa: E402
-
-TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-MUTANTS = [0]
 
 
 def rho(c, K):
     with mp.workdps(IL.DPS):
         return IPL.reference_rho(dict(c, K=Q(K)))
-
-
-def crossing(c, lo, hi):
-    """The reference's first crossing in [lo, hi]: bisection on rho - 1 to 1e-12 relative."""
-    a, b = Q(lo), Q(hi)
-    for _ in range(60):
-        if b - a <= b * Q(1, 10 ** 12):
-            break
-        m = (a + b) / 2
-        a, b = (m, b) if rho(c, m) < 1 else (a, m)
-    return a, b
 
 
 def options(c):
@@ -61,11 +45,6 @@ def options(c):
     if c["bo"] is not None:
         a += ["--operator", fstr(c["bo"])]
     return a
-
-
-def checkers_exit(exe, path):
-    return tuple(subprocess.run(cmd + [path], capture_output=True, timeout=900).returncode
-                 for cmd in ([exe, "check"], ["/usr/bin/python3", os.path.join(TOP, "checks", "hapstab_check.py")]))
 
 
 def run_case(exe, c, tmp):
@@ -83,35 +62,13 @@ def run_case(exe, c, tmp):
     cl = json.load(open(cert))
     if cl["kind"] != "stability-loop-max":
         return None, "kind %s (every pole at s = 0: another campaign's)" % cl["kind"], "other kind"
-    verdicts = checkers_exit(exe, cert)
+    verdicts = ILM.checkers_exit(exe, cert)
     if verdicts not in ((0, 0), (0, 3)):  # 3: beyond the independent checker's stated limit
         return False, "a checker does not verify the certificate: exits %s" % (verdicts,), None
-    lo, hi = Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
-    if hi == 0:
-        r0 = rho(c, Q(1, 10 ** 6))
-        if not r0 > 1:
-            return False, "sup K = 0 certified, but the reference's rho at K = 1e-6 is %s" % mp.nstr(r0, 15), None
-        return True, "sup K = 0 (rho = %s), verified by both" % mp.nstr(r0, 12), "sup = 0"
-    for K in [lo * k / 6 for k in range(1, 7)]:
-        rk = rho(c, K)
-        if not rk < 1:
-            return False, "stable on (0, %s] certified, but the reference's rho at %s is %s" % (float(lo), float(K), mp.nstr(rk, 15)), None
-    rh = rho(c, hi)
-    if not rh > 1:
-        return False, "NOT stable at %s certified, but the reference's rho there is %s" % (float(hi), mp.nstr(rh, 15)), None
-    a, b = crossing(c, lo, hi)
-    tol = hi * Q(1, 10 ** 9)
-    if b < lo - tol or a > hi + tol:
-        return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
-    for what, mc, want in LMC.mutants(cl, "K")[1:]:
-        with open(bad, "w") as f:
-            json.dump(mc, f)
-        got = checkers_exit(exe, bad)
-        if got[1] == 3:  # the mutant (a longer delay, say) beyond the independent checker's stated limit: not checked
-            got = (got[0], got[0])
-        if not LMC.agrees(got, want):
-            return False, "%s: the checkers exit %s (want %s)" % (what, got, "1 or 2" if want is None else want), None
-        MUTANTS[0] += 1
+    ok, what, ab = ILM.judge(exe, cl, verdicts, lambda K: rho(c, K), "K", bad)
+    if ok is not True or ab is None:
+        return ok, what, "sup = 0" if ok else None
+    (a, b), lo, hi = ab, Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
     fo = "first_order" in cl["evidence"]
     return True, "sup K in [%.12g, %.12g] (reference crossing %.12g; %d intervals%s, order %d), verified by %s, its mutants rejected" % (
         float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), ", the first-order start" if fo else "",
@@ -136,7 +93,7 @@ def main(argv):
             bad += ok is False
             counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
     print("indep_plant_max_certificate: %d cases, %d disagree; %s; mutants of the certificates %d, each rejected as it must be" % (
-        cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTANTS[0]))
+        cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), ILM.MUTANTS[0]))
     return 1 if bad else 0
 
 
