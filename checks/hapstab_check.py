@@ -2112,18 +2112,27 @@ def scene_constant(text, T, where):
     return h.num[0] / h.den[0] if h.num else Fraction(0)
 
 
-def scene_lists(text, lists, where, depth=0):
+def scene_lists(text, lists, where, memo=None, chain=frozenset()):
     """NAME[k] -> "(v_k)" and sum(NAME) -> "((v_1) + ... + (v_n))" for the list parameters (docs/scene.md,
-    "Repeated blocks"; check/scene_model.cpp's Parameters::expand); a list named otherwise is malformed."""
-    if not lists or depth > 50:
+    "Repeated blocks"; check/scene_model.cpp's Parameters::expand), each value expanded once (memo); a list
+    named otherwise, or naming itself, is malformed; more than 1 MB is beyond."""
+    if not lists:
         return text
+    memo = {} if memo is None else memo
 
-    def value(name, v):
-        return "(" + scene_lists(v, lists, "parameters." + name, depth + 1) + ")"
+    def value(name, k):  # k = 0: the sum
+        if (name, k) not in memo:
+            if name in chain:
+                raise Malformed("model.scene: parameters.%s: depends on itself (a cycle)" % name)
+            vs = lists[name] if k == 0 else [lists[name][k - 1]]
+            e = " + ".join("(" + scene_lists(v, lists, "parameters." + name, memo, chain | {name}) + ")" for v in vs)
+            if len(e) > 1 << 20:
+                scene_beyond("parameters." + name, "its values expand to more than 1 MB")
+            memo[(name, k)] = e
+        return "(" + memo[(name, k)] + ")"
 
     def total(m):
-        name = m.group(1)
-        return "(" + " + ".join(value(name, v) for v in lists[name]) + ")" if name in lists else m.group(0)
+        return value(m.group(1), 0) if m.group(1) in lists else m.group(0)
 
     def indexed(m):
         name, index = m.group(1), m.group(2)
@@ -2132,9 +2141,11 @@ def scene_lists(text, lists, where, depth=0):
         if not (index.isdigit() and len(index) <= 6 and 1 <= int(index) <= len(lists[name])):
             raise Malformed("model.scene: %s: '%s[%s]': the list parameter %s has %d values, %s[1] .. %s[%d] (or sum(%s))" % (
                 where, name, index, name, len(lists[name]), name, name, len(lists[name]), name))
-        return value(name, lists[name][int(index) - 1])
+        return value(name, int(index))
     text = re.sub(r"(?<![\w.])sum\(\s*([A-Za-z_]\w*)\s*\)", total, text)
     text = re.sub(r"(?<![\w.])([A-Za-z_]\w*)\[([^\]]*)\]", indexed, text)
+    if len(text) > 1 << 20:
+        scene_beyond(where, "its parameters expand to more than 1 MB")
     for name in re.findall(r"(?<![\w.])[A-Za-z_]\w*", text):
         if name in lists:
             raise Malformed("model.scene: %s: '%s' is a list parameter: write %s[k] or sum(%s)" % (where, name, name, name))

@@ -31,6 +31,11 @@ def edits(cert):
             ("off_diagonal without diagonal", scene('diagonal = "kc[i] + Bc[i]*(z-1)/(T*z)"\n', ""), 2),
             ("a counted table without a name", scene("count = 4\nname = \"d\"\n", "count = 4\n"), 2),
             ("--set on a list parameter", with_field(cert, ["model", "set"], {"kc": "1"}), 2),
+            ("a list that names itself (a cycle)",
+             with_field(cert, ["model", "scene"], text.replace('kh = "50"', 'kh = "50"\nq = ["q[1]"]').replace('k = "kh"', 'k = "kh + q[1]"')), 2),
+            ("lists that double 60 times (beyond 1 MB)", with_field(cert, ["model", "scene"], text.replace(
+                'kh = "50"', 'kh = "50"\n' + "".join('a%d = ["a%d[1] + a%d[1]"]\n' % (i, i + 1, i + 1) for i in range(60)) + 'a60 = ["1"]').replace(
+                'k = "kh"', 'k = "kh + a0[1]"')), 2),
             ("the walls' dampers negated (the loop NOT stable: the claim false)", scene('Bc = ["2", "3", "4", "5"]', 'Bc = ["-20", "-30", "-40", "-50"]'), None)]
 
 

@@ -45,6 +45,24 @@ struct Parameters {
   std::set<std::string> open;                   // on the current chain (a cycle is malformed)
   /// list parameters (docs/scene.md, "Repeated blocks"): NAME[k] is "(v_k)", sum(NAME) "((v_1) + ... + (v_n))"
   std::map<std::string, std::vector<std::string>> lists;
+  std::map<std::pair<std::string, long>, std::string> list_expanded;  // memo of (NAME, k), k = 0: the sum
+  std::set<std::string> open_lists;                                 // on the current chain
+
+  // NAME's k-th value (k = 0: their sum), expanded once; a list that names itself is a cycle (malformed)
+  const std::string& list_value(const std::string& name, long k) {
+    if (const auto it = list_expanded.find({name, k}); it != list_expanded.end()) return it->second;
+    if (!open_lists.insert(name).second) malformed("parameters." + name, "depends on itself (a cycle)");
+    std::string e;
+    const auto& values = lists.at(name);
+    if (k > 0) e = expand(values[size_t(k - 1)], "parameters." + name);
+    else
+      for (const auto& v : values) {
+        e += (e.empty() ? "(" : " + (") + expand(v, "parameters." + name) + ")";
+        if (e.size() > kMaxExpandedBytes) beyond("parameters." + name, "its values expand to more than 1 MB");
+      }
+    open_lists.erase(name);
+    return list_expanded[{name, k}] = e;
+  }
 
   // `text` with every parameter named in it replaced by "(its expansion)": the tokens are the
   // parser's (lti/parse.hpp): numbers with an exponent, identifiers, single characters.
@@ -72,10 +90,9 @@ struct Parameters {
         if (name == "sum" && j < text.size() && text[j] == '(') {  // sum(NAME) of a list parameter
           const size_t close = text.find(')', j);
           const std::string inner = close == std::string::npos ? "" : trimmed(text.substr(j + 1, close - j - 1));
-          if (const auto it = lists.find(inner); it != lists.end()) {
-            std::string sum;
-            for (const auto& v : it->second) sum += (sum.empty() ? "(" : " + (") + expand(v, "parameters." + inner) + ")";
-            out += "(" + sum + ")";
+          if (lists.count(inner)) {
+            out += "(" + list_value(inner, 0) + ")";
+            if (out.size() > kMaxExpandedBytes) beyond(where, "its parameters expand to more than 1 MB");
             i = close + 1;
             continue;
           }
@@ -91,7 +108,8 @@ struct Parameters {
             malformed(where, "'" + name + (close == std::string::npos ? "" : "[" + index + "]") + "': the list parameter " + name + " has " +
                                  std::to_string(it->second.size()) + " values, " + name + "[1] .. " + name + "[" +
                                  std::to_string(it->second.size()) + "] (or sum(" + name + "))");
-          out += "(" + expand(it->second[size_t(k - 1)], "parameters." + name) + ")";
+          out += "(" + list_value(name, k) + ")";
+          if (out.size() > kMaxExpandedBytes) beyond(where, "its parameters expand to more than 1 MB");
           i = close + 1;
           continue;
         }

@@ -148,6 +148,39 @@ size_t affine_block_order(const nlohmann::json& model, const Reading& r, const s
   return order;
 }
 
+// Affine in p, on the realisations read (header): the gain block's A, B the same and C, D doubled at p = 2,
+// the rest equal; p inside the tf: A, B the same at 1, 2 and hi, of the largest order `order` (else beyond),
+// C and D at hi on the line through 1 and 2. "" when shown, else what is not.
+std::string realisations_not_affine(const Reading& r, const std::string& p, const detail::LoopMatrix& m1, const detail::LoopMatrix& m2,
+                                    const detail::LoopMatrix* at_hi, size_t order, const rational& hi) {
+  const std::string& block = r.block;
+  const size_t g = block == "environment" ? 0 : 4;
+  if (r.inside)
+    for (const auto* m : {&m1, &m2, at_hi ? at_hi : &m1})
+      if (m->controller[g].size() != order)
+        throw InputError("model.scene: the " + block + "'s realisation at " + p + " = 1, 2 or " + hi.str() + " has order " +
+                         std::to_string(m->controller[g].size()) + ", not " + std::to_string(order) +
+                         " (a pole cancelled there): beyond this kind");
+  for (size_t k = 0; k < 8; ++k) {
+    Mat want = m1.controller[k];
+    const bool moves = k == g + 2 || k == g + 3;  // C, D of the block
+    if (moves && !r.inside)
+      for (auto& row : want)
+        for (auto& x : row) x *= 2;
+    if ((!moves || !r.inside) && m2.controller[k] != want)
+      return "the " + block + "'s realisation at " + p + " = 2 is not the one at 1 with " + (r.inside ? "A and B equal" : "C and D doubled") +
+             ": the loop is not shown affine in " + p;
+    if (at_hi) {
+      if (moves)
+        for (size_t i = 0; i < want.size(); ++i)
+          for (size_t j = 0; j < want[i].size(); ++j) want[i][j] = rational(2 - hi) * m1.controller[k][i][j] + rational(hi - 1) * m2.controller[k][i][j];
+      if (at_hi->controller[k] != want)
+        return "the " + block + "'s realisation at " + p + " = " + hi.str() + " is not on the line through those at 1 and 2";
+    }
+  }
+  return "";
+}
+
 // The model read at p = value: the scene's, or the one-DOF --plant/--H loop's (check/scene_model.hpp).
 nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const rational& value) {
   nlohmann::json m = model;
@@ -295,32 +328,8 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
     const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
-    // affine in p (header): the gain block's A, B the same and C, D doubled at p = 2, the rest equal; p
-    // inside the tf: A, B the same at 1, 2 and hi, of the largest order, C and D at hi on the line
-    const size_t g = block == "environment" ? 0 : 4;
-    if (r.inside)
-      for (const auto* m : {&m1, &m2, at_hi ? &*at_hi : &m1})
-        if (m->controller[g].size() != order)
-          throw InputError("model.scene: the " + block + "'s realisation at " + p + " = 1, 2 or " + c.hi.str() + " has order " +
-                           std::to_string(m->controller[g].size()) + ", not " + std::to_string(order) +
-                           " (a pole cancelled there): beyond this kind");
-    for (size_t k = 0; k < 8; ++k) {
-      Mat want = m1.controller[k];
-      const bool moves = k == g + 2 || k == g + 3;  // C, D of the block
-      if (moves && !r.inside)
-        for (auto& row : want)
-          for (auto& x : row) x *= 2;
-      if ((!moves || !r.inside) && m2.controller[k] != want)
-        return {false, "the " + block + "'s realisation at " + p + " = 2 is not the one at 1 with " +
-                           (r.inside ? "A and B equal" : "C and D doubled") + ": the loop is not shown affine in " + p};
-      if (at_hi) {
-        if (moves)
-          for (size_t i = 0; i < want.size(); ++i)
-            for (size_t j = 0; j < want[i].size(); ++j) want[i][j] = rational(2 - c.hi) * m1.controller[k][i][j] + rational(c.hi - 1) * m2.controller[k][i][j];
-        if (at_hi->controller[k] != want)
-          return {false, "the " + block + "'s realisation at " + p + " = " + c.hi.str() + " is not on the line through those at 1 and 2"};
-      }
-    }
+    if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
+      return {false, not_affine};
     if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays
       throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
                        "'s tf (the quotient's basis may move with it): beyond this kind");
