@@ -3606,23 +3606,23 @@ def ss_transfer(A, B, C, D):
     return [[RF(padd(pscale(chi, D[i][j]), lagrange(pts, vals[i][j]) if n else []), chi) for j in range(m)] for i in range(m)]
 
 
-def residue_fails(Z, w0):
-    """What shows Z not positive real at its axis pole s = j w0 (w0 >= 0), or "": each entry in lowest
-    terms, the pole's order the multiplicity of f = s (w0 = 0) or s^2 + w0^2 in its denominator (>= 2
-    fails), R_ij = n(j w0)/d'(j w0) in Q(j) for a simple pole; R not Hermitian, or [[Re R, -Im R], [Im R,
-    Re R]] not positive semidefinite, fails (check/operator_passivity_check.hpp)."""
-    q = len(Z)
-    f = [Fraction(0), Fraction(1)] if w0 == 0 else [w0 * w0, Fraction(0), Fraction(1)]
-    at = "s = 0" if w0 == 0 else "s = j%s" % short(w0)
+def residue_fails(Z, q, at):
+    """What shows Z not positive real at its axis pole s = j w0, w0 = sqrt(q) >= 0 (q rational), or "": each
+    entry in lowest terms, the pole's order the multiplicity of f = s (q = 0) or s^2 + q in its denominator
+    (>= 2 fails); for a simple pole R_ij = n(j w0)/d'(j w0) = X + j w0 Y, X and Y rational from the even and
+    odd parts at -q; R not Hermitian, or [[X, -Y], [Y, X/q]] (congruent to [[X, -w0 Y], [w0 Y, X]]) not
+    positive semidefinite, fails (check/operator_passivity_check.hpp)."""
+    m = len(Z)
+    f = [Fraction(0), Fraction(1)] if q == 0 else [q, Fraction(0), Fraction(1)]
 
-    def at_jw0(p):
-        v = cq(0)
-        for a in reversed(p):
-            v = cq_add(cq_mul(v, (Fraction(0), w0)), cq(a))
-        return v
-    R = [[cq(0)] * q for _ in range(q)]
-    for i in range(q):
-        for j in range(q):
+    def parts(p):  # (E_p(-q), O_p(-q)): p(j w0) = E + j w0 O
+        even = sum((p[k] * (-q) ** (k // 2) for k in range(0, len(p), 2)), Fraction(0))
+        odd = sum((p[k] * (-q) ** (k // 2) for k in range(1, len(p), 2)), Fraction(0))
+        return even, odd
+    X = [[Fraction(0)] * m for _ in range(m)]
+    Y = [[Fraction(0)] * m for _ in range(m)]
+    for i in range(m):
+        for j in range(m):
             n, d = trim(Z[i][j].num), trim(Z[i][j].den)
             g = pgcd(n, d) if n else [Fraction(1)]
             if len(g) > 1:
@@ -3636,11 +3636,13 @@ def residue_fails(Z, w0):
             if order >= 2:
                 return "entry (%d, %d) has a pole of order %d at %s" % (i + 1, j + 1, order, at)
             if order == 1:
-                R[i][j] = cq_div(at_jw0(n), at_jw0(pderiv(d)))
-    if any(R[i][j] != (R[j][i][0], -R[j][i][1]) for i in range(q) for j in range(i + 1)):
+                a, b = parts(n)
+                c, e2 = parts(pderiv(d))
+                den = c * c + q * e2 * e2
+                X[i][j], Y[i][j] = (a * c + q * b * e2) / den, (b * c - a * e2) / den
+    if any(X[i][j] != X[j][i] or (q != 0 and Y[i][j] != -Y[j][i]) for i in range(m) for j in range(i + 1)):
         return "its residue at %s is not Hermitian" % at
-    E = [[R[i][j][0] for j in range(q)] + [-R[i][j][1] for j in range(q)] for i in range(q)]
-    E += [[R[i][j][1] for j in range(q)] + [R[i][j][0] for j in range(q)] for i in range(q)]
+    E = X if q == 0 else ([X[i] + [-y for y in Y[i]] for i in range(m)] + [Y[i] + [x / q for x in X[i]] for i in range(m)])
     if not semidefinite(E, False):
         return "its residue at %s is not positive semidefinite" % at
     return ""
@@ -3651,12 +3653,13 @@ def check_operator_passivity(c):
     positive real Z has He Z(jw) >= 0 at every real w that is not a pole, so the principal minor of He
     Z(jw) on evidence.minor (0-based rows) being < 0 at evidence.w, exactly in Q(j), with no entry's
     denominator 0 there, shows Z is not passive (check/operator_passivity_check.hpp). Or evidence.pole = w0
-    (rational, >= 0): Z's residue at its axis pole s = j w0 not Hermitian PSD, or a multiple pole there
+    (rational, >= 0) or pole_squared = w0^2 (> 0, w0 irrational too): Z's residue at its axis pole s = j w0 not
+    Hermitian PSD, or a multiple pole there
     (residue_fails; an ss operator's entries formed exactly by ss_transfer)."""
     model, claim, evidence = parts(c)
     only(claim, ("quantity", "status", "operator", "passive"), "claim")
-    at_pole = "pole" in evidence
-    only(evidence, ("pole",) if at_pole else ("w", "minor"), "evidence")
+    at_pole = "pole" in evidence or "pole_squared" in evidence
+    only(evidence, (("pole",) if "pole" in evidence else ("pole_squared",)) if at_pole else ("w", "minor"), "evidence")
     if claim.get("status") != "exact":
         raise Malformed("claim.status: missing or not \"exact\"")
     if not isinstance(claim.get("passive"), bool):
@@ -3677,11 +3680,17 @@ def check_operator_passivity(c):
     Z = Z[1]
     q = len(Z[3]) if is_ss else len(Z)
     if at_pole:  # a positive real Z has only simple poles on the axis, with Hermitian PSD residues
-        w0 = exact(evidence, "pole", "evidence")
-        if w0 < 0:
-            raise Malformed("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)")
-        why = residue_fails(ss_transfer(*Z) if is_ss else Z, w0)
-        at = "s = 0" if w0 == 0 else "s = j%s" % short(w0)
+        if "pole" in evidence:
+            w0 = exact(evidence, "pole", "evidence")
+            if w0 < 0:
+                raise Malformed("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)")
+            q, at = w0 * w0, "s = 0" if w0 == 0 else "s = j%s" % short(w0)
+        else:  # w0 = sqrt(q), irrational ones too
+            q = exact(evidence, "pole_squared", "evidence")
+            if q <= 0:
+                raise Malformed("evidence.pole_squared: w0^2 > 0 (the pole s = j sqrt(w0^2); s = 0 is pole = 0)")
+            at = "s = j sqrt(%s)" % short(q)
+        why = residue_fails(ss_transfer(*Z) if is_ss else Z, q, at)
         if why:
             return True, "operator %r is not passive: %s (Assumption 1(b) fails)" % (name, why)
         return False, "operator %r not passive not shown: at most a simple pole at %s with a Hermitian PSD residue" % (name, at)

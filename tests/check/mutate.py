@@ -2116,11 +2116,12 @@ def print_branches(certs, mutants, cpp):
             sum(1 for h in hid if len(h["A_h"]) == 2)))
     ops = [c for (k, nm, c, _) in mutants if k == "operator-passivity" and nm == "unmutated"]
     if ops:
-        poles = [c for c in ops if "pole" in c["evidence"]]
-        print("  operator-passivity branches: a negative minor %d, the residue at s = 0 %d, at s = j w0 != 0 %d (an ss "
-              "operator %d, an imaginary residue %d)" % (
-                  sum(1 for c in ops if "minor" in c["evidence"]), sum(1 for c in poles if c["evidence"]["pole"] == "0"),
-                  sum(1 for c in poles if c["evidence"]["pole"] != "0"), sum(1 for c in poles if "ss = {" in c["model"]["scene"]),
+        poles = [c for c in ops if "pole" in c["evidence"] or "pole_squared" in c["evidence"]]
+        print("  operator-passivity branches: a negative minor %d, the residue at s = 0 %d, at s = j w0 != 0 %d (w0 irrational %d, "
+              "an ss operator %d, an imaginary residue %d)" % (
+                  sum(1 for c in ops if "minor" in c["evidence"]), sum(1 for c in poles if c["evidence"].get("pole") == "0"),
+                  sum(1 for c in poles if c["evidence"].get("pole") != "0"), sum(1 for c in poles if "pole_squared" in c["evidence"]),
+                  sum(1 for c in poles if "ss = {" in c["model"]["scene"]),
                   sum(1 for c in poles if re.search(r'"\(-?\d+\)/\(s\^2', c["model"]["scene"]))))
     lvl = [c for (k, nm, c, _) in mutants if k == "passivity-level" and nm == "unmutated"]
     if lvl:

@@ -71,26 +71,28 @@ def minor(entries, w, rows):
     return H[0][0][0] * H[1][1][0] - (H[0][1][0] ** 2 + H[0][1][1] ** 2)
 
 
-def residue_fails(entries):
-    """Whether Z's residue at its axis pole shows it not positive real: every entry carries its residue
-    e[3] = (re, im) there (0 for a constant); R (2x2) not Hermitian, or not positive semidefinite (a
-    negative diagonal or determinant). Decided here from the draw, not by the checkers' code."""
+def residue_fails(entries, w2):
+    """Whether Z's residue at its axis pole s = j w0 (w0^2 = w2; w0 irrational too) shows it not positive real:
+    every entry carries its residue e[3] = (re, y) there, Im R = y/w0 (0 for a constant); R (2x2) not Hermitian,
+    or not positive semidefinite (a negative diagonal or determinant, |R_12|^2 = re^2 + y^2/w2). Decided here
+    from the draw, not by the checkers' code."""
     R = [[e[3] if len(e) > 3 else (F(0), F(0)) for e in r] for r in entries]
     hermitian = R[0][0][1] == 0 and R[1][1][1] == 0 and R[0][1] == (R[1][0][0], -R[1][0][1])
     if not hermitian:
         return True
-    return R[0][0][0] < 0 or R[1][1][0] < 0 or R[0][0][0] * R[1][1][0] - (R[0][1][0] ** 2 + R[0][1][1] ** 2) < 0
+    im2 = R[0][1][1] ** 2 / w2 if w2 else F(0)
+    return R[0][0][0] < 0 or R[1][1][0] < 0 or R[0][0][0] * R[1][1][0] - (R[0][1][0] ** 2 + im2) < 0
 
 
-def rand_pole_entry(rng, w0, imaginary=False):
-    """(text, num, den, residue) with the pole s = j w0: w0 = 0 a + k/s (residue k); w0 > 0 a + k s/(s^2 +
-    w0^2) (residue k/2, real) or, `imaginary`, c/(s^2 + w0^2) (residue c/(2 j w0) = -j c/(2 w0))."""
+def rand_pole_entry(rng, w2, imaginary=False):
+    """(text, num, den, residue) with the pole s = j w0, w0^2 = w2: w2 = 0 a + k/s (residue k); w2 > 0 a + k s/(s^2
+    + w2) (residue k/2, real) or, `imaginary`, c/(s^2 + w2) (residue c/(2 j w0) = -j c/(2 w0): y = -c/2)."""
     a, k = rng.randint(0, 4), rng.choice([-5, -2, -1, 1, 2, 5])
-    if w0 == 0:
+    if w2 == 0:
         return '"%d + (%d)/s"' % (a, k), None, None, (F(k), F(0))
     if imaginary:
-        return '"(%d)/(s^2 + %s)"' % (k, w0 * w0), None, None, (F(0), -F(k) / (2 * w0))
-    return '"%d + (%d)*s/(s^2 + %s)"' % (a, k, w0 * w0), None, None, (F(k, 2), F(0))
+        return '"(%d)/(s^2 + %s)"' % (k, w2), None, None, (F(0), -F(k) / 2)
+    return '"%d + (%d)*s/(s^2 + %s)"' % (a, k, w2), None, None, (F(k, 2), F(0))
 
 
 def a_and_k(entry):
@@ -99,10 +101,10 @@ def a_and_k(entry):
     return int(t.split(" ")[0]), int(t.split("(")[1].split(")")[0])
 
 
-def ss_scene(w0, entries):
-    """SCENE with Z = diag(a1 + k1 s/(s^2 + w0^2), a2 + k2 s/(s^2 + w0^2)) written as ss (two oscillators)."""
+def ss_scene(w2, entries):
+    """SCENE with Z = diag(a1 + k1 s/(s^2 + w2), a2 + k2 s/(s^2 + w2)) written as ss (two oscillators)."""
     (a1, k1), (a2, k2) = a_and_k(entries[0][0]), a_and_k(entries[1][1])
-    w2 = str(w0 * w0)
+    w2 = str(w2)
     return SCENE.split("tf = [[")[0] + (
         'ss = { A = [["0", "1", "0", "0"], ["-%s", "0", "0", "0"], ["0", "0", "0", "1"], ["0", "0", "-%s", "0"]], '
         'B = [["0", "0"], ["1", "0"], ["0", "0"], ["0", "1"]], C = [["0", "%d", "0", "0"], ["0", "0", "0", "%d"]], '
@@ -111,33 +113,35 @@ def ss_scene(w0, entries):
 
 def rand_pole_certificate(rng):
     """A true operator-passivity certificate by the residue at the axis pole s = j w0 ({pole: "w0"}, w0
-    = 0 in half the draws, else 1, 2 or 3/2), or None: poles on the diagonal, and off it in a third of the
-    draws (w0 > 0: real residues, or an imaginary pair c/(s^2 + w0^2) that is Hermitian only when the two c
-    are opposite), constants elsewhere. In a fifth of the w0 > 0 draws a diagonal Z written as ss."""
+    = 0 in half the draws, else 1, 2 or 3/2; or {pole_squared: "w2"}, w0 = sqrt(2) or sqrt(3), irrational),
+    or None: poles on the diagonal, and off it in a third of the draws (w0 > 0: real residues, or an
+    imaginary pair c/(s^2 + w2) that is Hermitian only when the two c are opposite), constants elsewhere. In
+    a fifth of the w0 > 0 draws a diagonal Z written as ss."""
     zero = ('"0"', [0], [1])
     for _ in range(40):
-        w0 = rng.choice([F(0), F(0), F(0), F(1), F(2), F(3, 2)])
+        w0 = rng.choice([F(0), F(0), F(0), F(1), F(2), F(3, 2), None, None])
+        w2 = rng.choice([F(2), F(3)]) if w0 is None else w0 * w0
         off = rng.random() < 0.33
-        imag = w0 != 0 and rng.random() < 0.5
+        imag = w2 != 0 and rng.random() < 0.5
         if imag:
             c = rng.choice([-3, -1, 1, 3])
-            lo = rand_pole_entry(rng, w0, True)
+            lo = rand_pole_entry(rng, w2, True)
             if rng.random() < 0.6:  # opposite c: Hermitian
-                lo = ('"(%d)/(s^2 + %s)"' % (-c, w0 * w0), None, None, (F(0), F(c) / (2 * w0)))
-            hi = ('"(%d)/(s^2 + %s)"' % (c, w0 * w0), None, None, (F(0), -F(c) / (2 * w0)))
+                lo = ('"(%d)/(s^2 + %s)"' % (-c, w2), None, None, (F(0), F(c) / 2))
+            hi = ('"(%d)/(s^2 + %s)"' % (c, w2), None, None, (F(0), -F(c) / 2))
         else:
-            hi = rand_pole_entry(rng, w0) if off else zero
-            lo = rand_pole_entry(rng, w0) if off else zero
-        entries = [[rand_pole_entry(rng, w0), hi], [lo, rand_pole_entry(rng, w0)]]
-        if not residue_fails(entries):
+            hi = rand_pole_entry(rng, w2) if off else zero
+            lo = rand_pole_entry(rng, w2) if off else zero
+        entries = [[rand_pole_entry(rng, w2), hi], [lo, rand_pole_entry(rng, w2)]]
+        if not residue_fails(entries, w2):
             continue
         text = SCENE % tuple(e[0] for r in entries for e in r)
-        if w0 != 0 and not off and not imag and rng.random() < 0.2:  # the same diagonal Z written as ss
-            text = ss_scene(w0, entries)
+        if w2 != 0 and not off and not imag and rng.random() < 0.2:  # the same diagonal Z written as ss
+            text = ss_scene(w2, entries)
         c = {"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": text, "set": {}},
              "claim": {"quantity": "Assumption 1(b) for the scene's operator", "status": "exact", "operator": "Z",
                        "passive": False},
-             "evidence": {"pole": str(w0)}}
+             "evidence": {"pole": str(w0)} if w0 is not None else {"pole_squared": str(w2)}}
         return c, entries
     return None
 
@@ -148,7 +152,8 @@ def pole_mutants(cert, entries, rng):
     (refute: no pole there), negative or a witness beside it (malformed)."""
     out = [("unmutated", cert, "accept")]
     text = cert["model"]["scene"]
-    w0 = F(cert["evidence"]["pole"])
+    key = "pole" if "pole" in cert["evidence"] else "pole_squared"
+    w2 = F(cert["evidence"][key]) ** (2 if key == "pole" else 1)
     ss = "ss = {" in text
     for i in range(2):
         for j in range(2):
@@ -157,7 +162,7 @@ def pole_mutants(cert, entries, rng):
                 continue
             flipped = [list(r) for r in entries]
             flipped[i][j] = e[:3] + ((-e[3][0], -e[3][1]),)
-            if w0 == 0:
+            if w2 == 0:
                 new_text = '"%s + (%d)/s"' % (e[0].strip('"').split(" ")[0], -int(e[3][0]))
             else:
                 k = int(e[0].split("(")[1].split(")")[0])
@@ -165,16 +170,17 @@ def pole_mutants(cert, entries, rng):
             flipped[i][j] = (new_text,) + flipped[i][j][1:]
             if ss and i != j:
                 continue
-            mutated = ss_scene(w0, flipped) if ss else SCENE % tuple(x[0] for r in flipped for x in r)
+            mutated = ss_scene(w2, flipped) if ss else SCENE % tuple(x[0] for r in flipped for x in r)
             out.append(("residue (%d,%d) negated" % (i + 1, j + 1), with_field(cert, ["model", "scene"], mutated),
-                        "accept" if residue_fails(flipped) else "refute"))
+                        "accept" if residue_fails(flipped, w2) else "refute"))
     if not ss:
         double = [list(r) for r in entries]
-        double[0][0] = ('"1/s^2"', [1], [1, 0, 0]) if w0 == 0 else ('"1/(s^2 + %s)^2"' % (w0 * w0), None, None)
+        double[0][0] = ('"1/s^2"', [1], [1, 0, 0]) if w2 == 0 else ('"1/(s^2 + %s)^2"' % w2, None, None)
         out.append(("entry (1,1) a double pole", with_field(cert, ["model", "scene"], SCENE % tuple(x[0] for r in double for x in r)),
                     "accept"))
-    out += [("pole moved off", with_field(cert, ["evidence", "pole"], str(w0 + F(1, 3))), "refute"),
-            ("pole negative", with_field(cert, ["evidence", "pole"], "-1"), "malformed"),
+    moved = str(F(cert["evidence"][key]) + F(1, 3))  # no pole at the moved w0 (or w0^2)
+    out += [("pole moved off", with_field(cert, ["evidence", key], moved), "refute"),
+            ("pole negative", with_field(cert, ["evidence", key], "-1"), "malformed"),
             ("a witness w beside the pole", with_field(cert, ["evidence", "w"], "1"), "malformed"),
             ("passive true", with_field(cert, ["claim", "passive"], True), "malformed"),
             ("the scene's operator renamed", with_field(cert, ["model", "scene"], text.replace('name = "Z"', 'name = "Y"')), "malformed")]
@@ -202,7 +208,7 @@ def rand_certificate(rng):
 
 
 def mutants(cert, entries, rng):
-    if "pole" in cert["evidence"]:
+    if "pole" in cert["evidence"] or "pole_squared" in cert["evidence"]:
         return pole_mutants(cert, entries, rng)
     w, rows = F(cert["evidence"]["w"]), cert["evidence"]["minor"]
     out = [("unmutated", cert, "accept")]

@@ -793,14 +793,14 @@ TEST(OperatorPassivityCheck, ResidueAtZeroByHand) {
 // (Hermitian, eigenvalues 0 and 1: refuted); [[s, 1], [1, s]]/D has R12 = -j/2, R21 = -j/2: not
 // Hermitian; [[s, 2], [-2, s]]/D has R = [[1/2, -j], [j, 1/2]], det 1/4 - 1 < 0: not PSD.
 TEST(OperatorPassivityCheck, ResidueOnTheAxisByHand) {
-  auto cert = [](const std::string& tf, const std::string& w0) {
+  auto cert = [](const std::string& tf, const std::string& w0, const char* key = "pole") {
     const std::string scene = "[scene]\nT = \"1/100\"\n[[device]]\nname = \"a\"\nm = \"1/10\"\nb = \"1\"\n[[device]]\nname = \"b\"\n"
                               "m = \"1/10\"\nb = \"1\"\n[[operator]]\nname = \"Z\"\ndofs = [\"a\", \"b\"]\ntf = " + tf +
                               "\n[environment]\ntf = [[\"1000\", \"0\"], [\"0\", \"1000\"]]\n";
     return check_certificate(nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "operator-passivity"},
                                             {"model", {{"scene", scene}, {"set", nlohmann::json::object()}}},
                                             {"claim", {{"status", "exact"}, {"operator", "Z"}, {"passive", false}}},
-                                            {"evidence", {{"pole", w0}}}});
+                                            {"evidence", {{key, w0}}}});
   };
   const Verdict neg = cert(R"x([["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]])x", "2");
   EXPECT_TRUE(neg.verified) << neg.reason;
@@ -817,6 +817,18 @@ TEST(OperatorPassivityCheck, ResidueOnTheAxisByHand) {
   const Verdict psd = cert(R"x([["s/(s^2 + 1)", "2/(s^2 + 1)"], ["-2/(s^2 + 1)", "s/(s^2 + 1)"]])x", "1");
   EXPECT_TRUE(psd.verified) << psd.reason;
   EXPECT_NE(psd.reason.find("not positive semidefinite"), std::string::npos) << psd.reason;
+  // an irrational w0 = sqrt(2), {pole_squared: 2}: 2 - 10 s/(s^2 + 2) has R = -10 (j w0)/(2 j w0) = -5 there (X =
+  // -5, Y = 0); the sign flipped, R = 5: refuted; 3/(s^2 + 2) has R = 3/(2 j w0) = -j (3/4) w0 (X = 0, Y = -3/4):
+  // not Hermitian; pole_squared 0 or negative: malformed
+  const Verdict irr = cert(R"x([["2 - 10*s/(s^2 + 2)", "0"], ["0", "1"]])x", "2", "pole_squared");
+  EXPECT_TRUE(irr.verified) << irr.reason;
+  EXPECT_NE(irr.reason.find("s = j sqrt(2)"), std::string::npos) << irr.reason;
+  EXPECT_FALSE(cert(R"x([["2 + 10*s/(s^2 + 2)", "0"], ["0", "1"]])x", "2", "pole_squared").verified);
+  const Verdict im = cert(R"x([["3/(s^2 + 2)", "0"], ["0", "1"]])x", "2", "pole_squared");
+  EXPECT_TRUE(im.verified) << im.reason;
+  EXPECT_NE(im.reason.find("not Hermitian"), std::string::npos) << im.reason;
+  EXPECT_THROW(cert(R"x([["3/(s^2 + 2)", "0"], ["0", "1"]])x", "0", "pole_squared"), InputError);
+  EXPECT_THROW(cert(R"x([["3/(s^2 + 2)", "0"], ["0", "1"]])x", "-2", "pole_squared"), InputError);
 }
 
 // An OSP value <= 0 is an upper bound only ("upper_bound", the witness alone). G = diag(1/(z - 1/2),

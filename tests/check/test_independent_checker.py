@@ -1192,11 +1192,11 @@ class OperatorPassivity(unittest.TestCase):
     def test_residue_on_the_axis_by_hand(self):
         # test_check.cpp's OperatorPassivityCheck.ResidueOnTheAxisByHand: 2 - 10 s/(s^2 + 4) (residue -5 at 2j),
         # a double pole, and at s = j a Hermitian PSD residue (refuted), a non-Hermitian one, an indefinite one
-        def cert(tf, w0):
+        def cert(tf, w0, key="pole"):
             scene = ('[scene]\nT = "1/100"\n[[device]]\nname = "a"\nm = "1/10"\nb = "1"\n[[device]]\nname = "b"\nm = "1/10"\n'
                      'b = "1"\n[[operator]]\nname = "Z"\ndofs = ["a", "b"]\ntf = %s\n[environment]\ntf = [["1000", "0"], ["0", "1000"]]\n' % tf)
             return hc.check({"certificate": "hapstab", "version": 1, "kind": "operator-passivity", "model": {"scene": scene, "set": {}},
-                             "claim": {"status": "exact", "operator": "Z", "passive": False}, "evidence": {"pole": w0}})
+                             "claim": {"status": "exact", "operator": "Z", "passive": False}, "evidence": {key: w0}})
         code, why = cert('[["2 - 10*s/(s^2 + 4)", "0"], ["0", "1"]]', "2")
         self.assertEqual(code, 0, why)
         self.assertIn("s = j2", why)
@@ -1212,6 +1212,16 @@ class OperatorPassivity(unittest.TestCase):
         code, why = cert('[["s/(s^2 + 1)", "2/(s^2 + 1)"], ["-2/(s^2 + 1)", "s/(s^2 + 1)"]]', "1")
         self.assertEqual(code, 0, why)
         self.assertIn("not positive semidefinite", why)
+        # w0 = sqrt(2) ({pole_squared: 2}): R = -5 (verified), 5 (refuted), -j (3/4) sqrt(2) (not Hermitian); 0, -2 malformed
+        code, why = cert('[["2 - 10*s/(s^2 + 2)", "0"], ["0", "1"]]', "2", "pole_squared")
+        self.assertEqual(code, 0, why)
+        self.assertIn("s = j sqrt(2)", why)
+        self.assertEqual(cert('[["2 + 10*s/(s^2 + 2)", "0"], ["0", "1"]]', "2", "pole_squared")[0], 1)
+        code, why = cert('[["3/(s^2 + 2)", "0"], ["0", "1"]]', "2", "pole_squared")
+        self.assertEqual(code, 0, why)
+        self.assertIn("not Hermitian", why)
+        for q in ("0", "-2"):
+            self.assertEqual(cert('[["3/(s^2 + 2)", "0"], ["0", "1"]]', q, "pole_squared")[0], 2)
 
 
 class BoundNumDen(unittest.TestCase):

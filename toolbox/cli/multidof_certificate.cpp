@@ -172,13 +172,13 @@ std::optional<nlohmann::json> symmetric_certificate(const scene::Scene& sc, cons
   return j;
 }
 
-// The rational w0 >= 0 of Z's poles on the imaginary axis, s = j w0: a factor s, or a s^2 + c with c/a
-// a rational square, of an entry's denominator (over Q, exactly). An irrational w0 gives none: the
-// residue form takes a rational w0 (check/operator_passivity_check.hpp).
-std::vector<rational> rational_axis_poles(const TransferMatrix& Z) {
-  std::vector<rational> out;
-  const auto add = [&out](const rational& w) {
-    if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+// Z's poles on the imaginary axis, s = j w0, as the residue evidence (check/operator_passivity_check.hpp): a
+// factor s of an entry's denominator (over Q, exactly) is {pole: 0}; a s^2 + c, c/a > 0, is {pole: w0} where
+// w0 = sqrt(c/a) is rational, else {pole_squared: c/a} (w0 irrational, e.g. sqrt(2)).
+std::vector<nlohmann::json> axis_poles(const TransferMatrix& Z) {
+  std::vector<nlohmann::json> out;
+  const auto add = [&out](const nlohmann::json& e) {
+    if (std::find(out.begin(), out.end(), e) == out.end()) out.push_back(e);
   };
   const auto square_root = [](const integer& x) -> std::optional<integer> {
     if (x < 0) return std::nullopt;
@@ -189,11 +189,13 @@ std::vector<rational> rational_axis_poles(const TransferMatrix& Z) {
     for (const auto& e : row)
       for (const auto& f : factor_over_q(e.den())) {
         const auto& p = f.f;
-        if (p.degree() == 1 && p.coeff(0).is_zero()) add(rational(0));
+        if (p.degree() == 1 && p.coeff(0).is_zero()) add({{"pole", "0"}});
         if (p.degree() != 2 || !p.coeff(1).is_zero()) continue;
-        const rational c = p.coeff(0) / p.coeff(2);
+        const rational c = p.coeff(0) / p.coeff(2);  // s^2 + c: the poles +-j sqrt(c)
+        if (c <= 0) continue;
         const auto rn = square_root(numerator(c)), rd = square_root(denominator(c));
-        if (c > 0 && rn && rd) add(rational(*rn) / rational(*rd));
+        if (rn && rd) add({{"pole", (rational(*rn) / rational(*rd)).str()}});
+        else add({{"pole_squared", c.str()}});
       }
   return out;
 }
@@ -209,7 +211,7 @@ std::optional<nlohmann::json> operator_passivity_certificate(const std::string& 
     // spring -k/s, a resonance -k s/(s^2 + w0^2))
     std::vector<nlohmann::json> evidence;
     if (const auto minor = multidof::negative_minor(ops[k])) evidence.push_back({{"w", minor->w.str()}, {"minor", minor->rows}});
-    for (const rational& w0 : rational_axis_poles(ops[k])) evidence.push_back({{"pole", w0.str()}});
+    for (const auto& p : axis_poles(ops[k])) evidence.push_back(p);
     for (const auto& e : evidence) {
       nlohmann::json j = certificate_header("operator-passivity");
       j["model"] = scene_model_json(scene_path, sets);

@@ -98,19 +98,28 @@ std::vector<std::vector<RationalFunction<rational>>> ss_transfer(const detail::S
   return Z;
 }
 
-// Z's residue at the axis pole s = j w0, w0 >= 0 (header): "" when no entry has a pole there of order
-// >= 2 and R = lim (s - j w0) Z(s) is Hermitian positive semidefinite; else what fails. Each entry in
-// lowest terms; f = s (w0 = 0) or s^2 + w0^2, its multiplicity in the denominator d the pole's order;
-// for a simple pole R_ij = n(j w0)/d'(j w0) (0 otherwise). R = X + jY Hermitian PSD iff the real
-// symmetric [[X, -Y], [Y, X]] is PSD (symmetric elimination, exactly).
-std::string residue_fails(const std::vector<std::vector<RationalFunction<rational>>>& Z, const rational& w0) {
-  const size_t q = Z.size();
-  const Polynomial<rational> f = w0.is_zero() ? Polynomial<rational>{rational(0), rational(1)}
-                                              : Polynomial<rational>{w0 * w0, rational(0), rational(1)};
-  const std::string at = w0.is_zero() ? "s = 0" : "s = j" + w0.str();
-  std::vector<std::vector<Cq>> R(q, std::vector<Cq>(q, Cq(rational(0))));
-  for (size_t i = 0; i < q; ++i)
-    for (size_t j = 0; j < q; ++j) {
+// Z's residue at the axis pole s = j w0, w0 = sqrt(q) >= 0 (header; q rational, w0 rational or not): "" when
+// no entry has a pole there of order >= 2 and R = lim (s - j w0) Z(s) is Hermitian positive semidefinite; else
+// what fails. Each entry in lowest terms; f = s (q = 0) or s^2 + q, its multiplicity in the denominator d the
+// pole's order. For a simple pole, with p(j w0) = E_p(-q) + j w0 O_p(-q) (p's even and odd parts, rational),
+// n(j w0) = a + j w0 b and d'(j w0) = c + j w0 e give R_ij = X + j w0 Y, X = (a c + q b e)/(c^2 + q e^2), Y = (b c
+// - a e)/(c^2 + q e^2), both rational. R Hermitian iff X symmetric and (q > 0) Y antisymmetric; PSD iff the real
+// [[X, -w0 Y], [w0 Y, X]] is, iff (congruence by diag(I, I/w0), Sylvester's law of inertia) [[X, -Y], [Y, X/q]]
+// is -- exactly, in rationals (q = 0: X alone).
+std::string residue_fails(const std::vector<std::vector<RationalFunction<rational>>>& Z, const rational& q, const std::string& at) {
+  const size_t m = Z.size();
+  const Polynomial<rational> f = q.is_zero() ? Polynomial<rational>{rational(0), rational(1)} : Polynomial<rational>{q, rational(0), rational(1)};
+  const auto parts = [&q](const Polynomial<rational>& p) {  // (E_p(-q), O_p(-q))
+    rational even = 0, odd = 0, power = 1;                  // power = (-q)^k
+    for (int k = 0; 2 * k <= p.degree(); ++k, power *= -q) {
+      even += p.coeff(2 * k) * power;
+      if (2 * k + 1 <= p.degree()) odd += p.coeff(2 * k + 1) * power;
+    }
+    return std::pair{even, odd};
+  };
+  rational_matrix::Mat X = rational_matrix::zeros(m, m), Y = X;
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = 0; j < m; ++j) {
       Polynomial<rational> n = Z[i][j].num(), d = Z[i][j].den();
       const Polynomial<rational> g = gcd(n, d);  // the entry in lowest terms
       if (g.degree() > 0) n = divmod(n, g).first, d = divmod(d, g).first;
@@ -123,19 +132,29 @@ std::string residue_fails(const std::vector<std::vector<RationalFunction<rationa
       if (order >= 2)
         return "entry (" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ") has a pole of order " + std::to_string(order) +
                " at " + at + " (a positive real Z has only simple poles on the imaginary axis)";
-      if (order == 1) R[i][j] = at_jw(n, w0) / at_jw(d.derivative(), w0);
+      if (order == 1) {
+        const auto [a, b] = parts(n);
+        const auto [c, e] = parts(d.derivative());
+        const rational den = c * c + q * e * e;
+        X[i][j] = (a * c + q * b * e) / den;
+        Y[i][j] = (b * c - a * e) / den;
+      }
     }
-  for (size_t i = 0; i < q; ++i)
+  for (size_t i = 0; i < m; ++i)
     for (size_t j = 0; j <= i; ++j)
-      if (R[i][j].re != R[j][i].re || R[i][j].im != -R[j][i].im)
+      if (X[i][j] != X[j][i] || (!q.is_zero() && Y[i][j] != -Y[j][i]))
         return "the residue R = lim (s - j w0) Z(s) at " + at + " is not Hermitian";
-  rational_matrix::Mat E = rational_matrix::zeros(2 * q, 2 * q);
-  for (size_t i = 0; i < q; ++i)
-    for (size_t j = 0; j < q; ++j) {
-      E[i][j] = E[q + i][q + j] = R[i][j].re;
-      E[i][q + j] = -R[i][j].im;
-      E[q + i][j] = R[i][j].im;
-    }
+  rational_matrix::Mat E = X;
+  if (!q.is_zero()) {
+    E = rational_matrix::zeros(2 * m, 2 * m);
+    for (size_t i = 0; i < m; ++i)
+      for (size_t j = 0; j < m; ++j) {
+        E[i][j] = X[i][j];
+        E[m + i][m + j] = X[i][j] / q;
+        E[i][m + j] = -Y[i][j];
+        E[m + i][j] = Y[i][j];
+      }
+  }
   if (!rational_matrix::positive_definite(E, false))
     return "the residue R = lim (s - j w0) Z(s) at " + at + " is not positive semidefinite (exact elimination)";
   return "";
@@ -146,8 +165,8 @@ std::string residue_fails(const std::vector<std::vector<RationalFunction<rationa
 Verdict check_operator_passivity(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "operator", "passive"}, "claim");
-  const bool at_pole = evidence.contains("pole");
-  if (at_pole) detail::only_fields(evidence, {"pole"}, "evidence");
+  const bool at_pole = evidence.contains("pole") || evidence.contains("pole_squared");
+  if (at_pole) detail::only_fields(evidence, {evidence.contains("pole") ? "pole" : "pole_squared"}, "evidence");
   else detail::only_fields(evidence, {"w", "minor"}, "evidence");
   if (!claim.contains("status") || claim.at("status") != "exact") throw InputError("claim.status: missing or not \"exact\"");
   if (!claim.contains("passive") || !claim.at("passive").is_boolean()) throw InputError("claim.passive: missing or not true/false");
@@ -164,11 +183,19 @@ Verdict check_operator_passivity(const nlohmann::json& cert) {
       op = &o;
     }
   if (!op) throw InputError("claim.operator: no operator given by tf or ss named '" + name + "' in the scene");
-  if (at_pole) {  // the residue at the axis pole s = j w0 (header)
-    const rational w0 = detail::exact_field(evidence, "pole", "evidence");
-    if (w0 < 0) throw InputError("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)");
-    const std::string why = residue_fails(op->is_ss ? ss_transfer(*op) : op->Z, w0);
-    const std::string at = w0.is_zero() ? "s = 0" : "s = j" + w0.str();
+  if (at_pole) {  // the residue at the axis pole s = j w0 (header): w0 = pole, or sqrt(pole_squared)
+    rational q;
+    std::string at;
+    if (evidence.contains("pole")) {
+      const rational w0 = detail::exact_field(evidence, "pole", "evidence");
+      if (w0 < 0) throw InputError("evidence.pole: w0 >= 0 (the pole s = j w0; its conjugate's residue is the conjugate)");
+      q = w0 * w0, at = w0.is_zero() ? "s = 0" : "s = j" + w0.str();
+    } else {
+      q = detail::exact_field(evidence, "pole_squared", "evidence");
+      if (q <= 0) throw InputError("evidence.pole_squared: w0^2 > 0 (the pole s = j sqrt(w0^2); s = 0 is pole = 0)");
+      at = "s = j sqrt(" + q.str() + ")";
+    }
+    const std::string why = residue_fails(op->is_ss ? ss_transfer(*op) : op->Z, q, at);
     if (why.empty())
       return {false, "operator '" + name + "' not passive not shown: Z has at most a simple pole at " + at +
                          ", with a Hermitian positive semidefinite residue"};

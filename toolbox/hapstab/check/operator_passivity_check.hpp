@@ -14,14 +14,17 @@
 // has a pole at s = jw (each denominator non-zero there), and the determinant of He Z(jw)'s
 // principal submatrix on `minor` (Hermitian: real; Gaussian elimination over Q(j)) is < 0. Then Z is
 // not positive real: Assumption 1(b) fails, and Theorem 5 draws no conclusion for the scene.
-// Or evidence {pole: w0} (a rational w0 >= 0): the residue at the axis pole s = j w0. Theorem (e.g.
+// Or evidence {pole: w0} (a rational w0 >= 0), or {pole_squared: q} (w0 = sqrt(q), q > 0 rational: an irrational
+// w0 such as sqrt(2) too): the residue at the axis pole s = j w0. Theorem (e.g.
 // Anderson & Vongpanitlerd, Network Analysis and Synthesis, Thm 2.7.2): a positive real Z has only
 // simple poles on the imaginary axis, each with a Hermitian positive semidefinite residue. Verified
 // exactly: Z entry by entry as rational functions (an ss operator's by chi = det(sI - A) and
 // chi (Z - D) = C adj(sI - A) B interpolated at integers, exactly), each in lowest terms (gcd); the
-// pole's order = the multiplicity of s (w0 = 0) or s^2 + w0^2 in its denominator d: >= 2 fails;
-// R_ij = n(j w0)/d'(j w0) over Q(j) for a simple pole (0 otherwise); R not Hermitian, or [[Re R,
-// -Im R], [Im R, Re R]] not positive semidefinite (symmetric elimination), fails. A negative spring
+// pole's order = the multiplicity of s (q = 0) or s^2 + q in its denominator d: >= 2 fails; for a simple
+// pole R_ij = n(j w0)/d'(j w0) = X + j w0 Y with X, Y rational (p(j w0) = E_p(-q) + j w0 O_p(-q), p's even and
+// odd parts); R not Hermitian (X symmetric, Y antisymmetric), or [[X, -Y], [Y, X/q]] -- congruent to the
+// real [[X, -w0 Y], [w0 Y, X]] by diag(I, I/w0), Sylvester's law of inertia -- not positive semidefinite
+// (symmetric elimination; X alone at q = 0), fails. A negative spring
 // -k/s (He Z(jw) = b >= 0 everywhere: no minor shows it) and a resonance -k s/(s^2 + w0^2) are the cases.
 // (The converse, "passive", has no certificate here: it needs every minor >= 0 on the whole axis.)
 // Implements: paper 000 Assumption 1.

@@ -39,6 +39,8 @@ Mat add(const Mat& A, const Mat& B, const rational& s) {
 }
 
 bool symmetric(const Mat& A) {
+  for (const auto& row : A)
+    if (row.size() != A.size()) return false;  // not square (a fuzzed [[]] once reached positive_definite)
   for (size_t i = 0; i < A.size(); ++i)
     for (size_t j = 0; j < i; ++j)
       if (A[i][j] != A[j][i]) return false;
@@ -47,6 +49,8 @@ bool symmetric(const Mat& A) {
 
 bool positive_definite(Mat M, bool strict) {
   const size_t n = M.size();
+  for (const auto& row : M)
+    if (row.size() != n) return false;  // not square: nothing to show
   for (size_t k = 0; k < n; ++k) {
     const rational p = M[k][k];
     if (p < 0 || (strict && p == 0)) return false;

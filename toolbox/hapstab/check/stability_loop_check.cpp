@@ -801,6 +801,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, static_cast<long>(kMaxOrder)) : 0;
   const detail::SceneLoop L = detail::read_scene_loop(model);
   const Mat Pm = detail::exact_matrix(evidence, "P", "evidence", kMaxOrder);
+  if (Pm.empty() || Pm[0].size() != Pm.size()) throw InputError("evidence.P: not a square matrix");  // [[]] once reached the test below
   if (!rational_matrix::symmetric(Pm)) throw InputError("evidence.P: not symmetric");
   if (stable == evidence.contains("w")) throw InputError(stable ? "evidence.w: only for NOT stable" : "evidence.w: missing (NOT stable needs w with w^T P w < 0)");
   std::string sign;
