@@ -3,8 +3,9 @@
 list parameters, E by its diagonal and off-diagonal entries, `blocks = K` for K objects) gives the SAME output as the scene
 written out (bench/contact_scene.py N) under `multidof analyze --json` and `stability --scene
 --json`: same exit code, same JSON but for the run times ("seconds") and the names the two forms
-give the copies (d[k], H[k] against dk, Hk). Also: the compact 128- and 1024-device scenes (one
-object, and 16 objects of 64) are under 10 KB.
+give the copies (d[k], H[k] against dk, Hk); at N = 4 `stability --scene --certificate` gives the same
+claim and evidence on both forms, and both checkers verify the compact one. Also: the compact 128- and
+1024-device scenes (one object, and 16 objects of 64) are under 10 KB.
 
 Usage: compact_vs_written.py HAPSTAB [N ...]   (default N = 4 8; exit 1 on any difference)
 """
@@ -65,7 +66,31 @@ def main():
                     else:
                         stable = c[1].get('stable', c[1].get('stability_concluded'))
                         print(f'same {what}: exit {c[0]}, {"stable" if "stable" in c[1] else "stability_concluded"} = {stable}')
+                if n == 4:  # the certificate too: both checkers write the compact form out (check/scene_model.hpp)
+                    failures += not same_certificate(hapstab, files, d, f'N = {n} {" ".join(extra)}')
     sys.exit(1 if failures else 0)
+
+
+def same_certificate(hapstab, files, d, what):
+    """stability --scene --certificate on both forms: the same claim and evidence, verified by both checkers."""
+    certs = []
+    for form in ('written', 'compact'):
+        path = os.path.join(d, form + '.json')
+        subprocess.run([hapstab, 'stability', '--scene', files[form], '--quiet', '--certificate', path], capture_output=True, check=False)
+        if not os.path.exists(path):
+            print(f'FAIL {what}: no certificate for the {form} form')
+            return False
+        with open(path) as f:
+            certs.append(json.load(f))
+        os.remove(path)
+        with open(path, 'w') as f:
+            json.dump(certs[-1], f)
+    checks = [subprocess.run(cmd + [path], capture_output=True, check=False).returncode
+              for cmd in ([hapstab, 'check'], ['/usr/bin/python3', os.path.join(HERE, '..', '..', 'checks', 'hapstab_check.py')])]
+    same = certs[0]['claim'] == certs[1]['claim'] and certs[0]['evidence'] == certs[1]['evidence']
+    print(f'{"same" if same and checks == [0, 0] else "FAIL"} {what}: stability --certificate, the same claim and evidence '
+          f'{same}, the compact one verified by hapstab check and the independent checker {checks}')
+    return same and checks == [0, 0]
 
 
 if __name__ == '__main__':
