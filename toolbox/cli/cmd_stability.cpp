@@ -379,7 +379,7 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
   return j;
 }
 
-// The certificate (kind stability-loop-max): sup p in [lo, hi], its ends a relative 10^-12 .. 10^-6 outside
+// The certificate (kind stability-loop-max): sup p in [lo, hi], its ends a relative 10^-12 .. 10^-4 outside
 // the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
 // is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
 nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m) {

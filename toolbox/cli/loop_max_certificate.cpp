@@ -284,7 +284,8 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
   if (m.outcome == Outcome::fails) {
     ends.emplace_back("0", "0");
   } else if (m.outcome == Outcome::holds) {
-    for (const rational& delta : {rational(1, 1000000000000), rational(1, 10000000000), rational(1, 100000000), rational(1, 1000000)})
+    for (const rational& delta :
+         {rational(1, 1000000000000), rational(1, 10000000000), rational(1, 100000000), rational(1, 1000000), rational(1, 10000)})
       ends.emplace_back(decimal_outward(std::min(rational(m.crossing.lo * (1 - delta)), m.stable_to), 16, -1),
                         decimal_outward(m.crossing.hi * (1 + delta), 16, +1));
   } else {

@@ -29,7 +29,7 @@ namespace hapstab::cli {
 
 /// The certificate of sup p in [lo, hi] (claim.printed_lo, printed_hi: decimals of 16 digits, the
 /// caller prints them) with lo <= stable_to and hi above the crossing, each a relative delta = 10^-12,
-/// 10^-10, 10^-8 or 10^-6 outside the crossing's enclosure (the first that a double Stein solve
+/// 10^-10, 10^-8, 10^-6 or 10^-4 outside the crossing's enclosure (the first that a double Stein solve
 /// proves: the certificate's digits, fewer than the crossing's own); sup p = 0 where m fails (M(0) with
 /// an eigenvalue outside the circle). InputError (exit 2, no file) naming what has no certificate: p not
 /// the gain alone, a loop not affine in it, no first-order start where M(0) is marginal, no Stein P at a
