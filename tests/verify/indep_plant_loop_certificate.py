@@ -80,13 +80,17 @@ def reference_rho(c):
     return IL.rho_mp(loop, mp.mpf(c["K"].numerator) / c["K"].denominator)[0]
 
 
-def args(c, cert):
-    a = ["stability", "--plant", "(%s)/(%s)" % (poly_str(c["num"], "s"), poly_str(c["den"], "s")),
-         "--H", "K + B*(z-1)/(T*z)", "--set", "K=%s" % c["K"], "--set", "B=%s" % c["B"], "--T", "%s" % c["T"],
-         "--delay", str(c["n"]), "--json", "--certificate", cert]
+def plant_options(c):
+    """The drawn device, its operator, T and the delay as `stability` options (indep_plant_max_certificate too)."""
+    a = ["--plant", "(%s)/(%s)" % (poly_str(c["num"], "s"), poly_str(c["den"], "s")), "--T", "%s" % c["T"], "--delay", str(c["n"])]
     if c["bo"] is not None:
         a += ["--operator", fstr(c["bo"])]
     return a
+
+
+def args(c, cert):
+    return (["stability"] + plant_options(c) +
+            ["--H", "K + B*(z-1)/(T*z)", "--set", "K=%s" % c["K"], "--set", "B=%s" % c["B"], "--json", "--certificate", cert])
 
 
 def run_case(exe, c, tmp):

@@ -31,7 +31,7 @@ import mpmath as mp  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_loop_max_certificate as ILM  # noqa: E402
 import indep_plant_loop_certificate as IPL  # noqa: E402
-from indep_common import cases_and_seed, fstr, poly_str  # noqa: E402
+from indep_common import cases_and_seed  # noqa: E402
 
 
 def rho(c, K):
@@ -40,11 +40,7 @@ def rho(c, K):
 
 
 def options(c):
-    a = ["--plant", "(%s)/(%s)" % (poly_str(c["num"], "s"), poly_str(c["den"], "s")), "--H", "K + %s*(z-1)/(T*z)" % c["B"],
-         "--T", "%s" % c["T"], "--delay", str(c["n"])]
-    if c["bo"] is not None:
-        a += ["--operator", fstr(c["bo"])]
-    return a
+    return IPL.plant_options(c) + ["--H", "K + %s*(z-1)/(T*z)" % c["B"]]
 
 
 def run_case(exe, c, tmp):
