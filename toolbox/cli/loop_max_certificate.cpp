@@ -273,6 +273,7 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
     flint::BallPrecision scope(kBits);
     loop1 = read(1), loop2 = read(2);
     m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(loop2, kBits);
+    check::detail::require_loop_max_order(m1.order);
   } catch (const InputError& e) {
     throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
   }

@@ -19,6 +19,8 @@ namespace hapstab::check::detail {
 
 namespace {
 
+constexpr size_t kMaxDofs = 128;  // DOFs of a scene, written out (stability-loop: order <= 1024, a 128-DOF loop ~900)
+
 constexpr size_t kMaxSceneBytes = size_t(1) << 20;    // a one-DOF scene is a few KB
 constexpr size_t kMaxExpandedBytes = size_t(1) << 20;  // parameters substituted into one expression
 constexpr int kMaxDotsPerLine = 256;  // toml++ recurses per component of a dotted key (report/toml_limits.hpp)
@@ -233,7 +235,7 @@ void index_strings(toml::node& n, const std::string& k) {
 
 // [[device]] and [[operator]] tables with count = n written out as hapstab's reader does (scene/reader.cpp's
 // table_copies): n copies in place, named NAME[k] (or the name's own [i] pattern), "[i]" -> "[k]" in every
-// string. At most 64 copies (the checkers' DOF limit).
+// string. At most 128 copies (the checker's DOF limit).
 void write_out_copies(toml::table& root) {
   for (const char* key : {"device", "operator"}) {
     auto* arr = root[key].as_array();
@@ -248,7 +250,7 @@ void write_out_copies(toml::table& root) {
       const std::string where = std::string(key) + "[" + std::to_string(i + 1) + "]";
       const auto* n = t->get("count")->as_integer();
       if (!n || n->get() < 1) malformed(where + ".count", "a whole number of copies >= 1");
-      if (n->get() > 64) beyond(where + ".count", std::to_string(n->get()) + " copies, more than 64");
+      if (n->get() > static_cast<int64_t>(kMaxDofs)) beyond(where + ".count", std::to_string(n->get()) + " copies, more than " + std::to_string(kMaxDofs));
       const auto* name = (*t)["name"].as_string();
       if (!name) malformed(where + ".name", "a table with count needs a name: its copies are NAME[1] .. NAME[count]");
       const std::string own = name->get(), pattern = own.find("[i]") == std::string::npos ? own + "[i]" : own;
@@ -753,7 +755,7 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
     for (size_t j = 0; j < dev.dofs; ++j) names.push_back(dev.dofs == 1 ? dev.name : "");  // a block of several DOFs: by number
     out.devices.push_back(std::move(dev));
   }
-  if (names.size() > 64) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than 64");
+  if (names.size() > kMaxDofs) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than " + std::to_string(kMaxDofs));
   const toml::array& ops = tables(root, "operator");
   for (size_t i = 0; i < ops.size(); ++i) read_loop_operator(*ops[i].as_table(), "operator[" + std::to_string(i + 1) + "]", names, p, T, out);
   const auto* env = root["environment"].as_table();

@@ -24,6 +24,7 @@ using detail::BallRows;
 using rational_matrix::Mat;
 
 constexpr size_t kMaxCover = 4096;       // intervals of the cover (each: two Stein tests)
+constexpr size_t kMaxLoopOrder = 160;  // M's order (the stability-loop kind takes 1024: one Stein test, not thousands)
 constexpr double kMaxCoverWork = 5e7;    // intervals x n^3 (a Stein test ~0.3 ms at order 9: at most ~20 s)
 
 // Every identifier in `text` ([A-Za-z_][A-Za-z0-9_]*).
@@ -275,6 +276,12 @@ std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix
   return "";
 }
 
+void detail::require_loop_max_order(size_t order) {
+  if (order > kMaxLoopOrder)
+    throw InputError("model: the closed loop has " + std::to_string(order) + " states, beyond this checker's " + std::to_string(kMaxLoopOrder) +
+                     " for a supremum (a cover of Stein tests at that order)");
+}
+
 detail::BallRows detail::affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p) {
   const flint::Ball a(rational(2 - p)), b(rational(p - 1));
   BallRows M = M1;
@@ -328,6 +335,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
     const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
+    detail::require_loop_max_order(m1.order);
     if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
       return {false, not_affine};
     if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays

@@ -56,7 +56,7 @@
 // quantities (rows c with c^T M = c^T, the subspace {c^T x = 0} invariant, x = E y) the rows are l^T E:
 // (l^T E) M_q = l^T M E = l^T E since E P M E = M E on the invariant subspace; the conserved rows' own
 // images vanish and are dropped. A quotient by right eigenvectors too (a block's unobservable z = 1) is beyond.
-// Limits: at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
+// Limits: the loop's order <= 160, at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
 // Implements: paper 000 Sec. VI.
 #pragma once
 
@@ -68,6 +68,9 @@
 namespace hapstab::check {
 
 namespace detail {
+/// InputError when the loop's order is beyond this kind's 160 (a cover of Stein tests at that order; the stability-loop
+/// kind takes 1024): the producer asks before it solves anything.
+void require_loop_max_order(size_t order);
 /// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
 BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
 /// evidence.first_order {to = eps, P0, S} (header): "" when it shows every M(p), 0 < p <= eps, Schur stable
