@@ -87,6 +87,17 @@ def mutants(cert, name):
            ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2),
            ("the cover dropped", deleted(cert, ["evidence", "cover"]), 2),
            ("the unstable point dropped", deleted(cert, ["evidence", "unstable_at"]), 2)]
+    linear = [k for k, piece in enumerate(cover) if "P_to" in piece]
+    if linear:  # an interval with P linear (the Bernstein test): its ends' P's edited
+        k = linear[-1]  # the one nearest the crossing
+        piece = cover[k]
+        T00 = piece["P_to"][0][0]
+        out += [("a linear interval's P_to[0][0] negated", with_field(cert, ["evidence", "cover", k, "P_to", 0, 0],
+                                                                      T00[1:] if T00.startswith("-") else "-" + T00), 1),
+                ("a linear interval's P and P_to swapped", with_field(with_field(cert, ["evidence", "cover", k, "P"], piece["P_to"]),
+                                                                     ["evidence", "cover", k, "P_to"], piece["P"]), None),
+                ("a linear interval's P_to dropped (one P over it)", deleted(cert, ["evidence", "cover", k, "P_to"]), None),
+                ("a linear interval's P_to of the wrong order", with_field(cert, ["evidence", "cover", k, "P_to"], [row[:-1] for row in piece["P_to"][:-1]]), 2)]
     if text is None:  # the one-DOF --plant/--H model: p in H only
         model = cert["model"]
         H, P = model["H"], model["plant"]

@@ -177,6 +177,79 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   return std::nullopt;
 }
 
+struct Piece {
+  rational to;
+  Mat P, P_to;  // P_to empty: P constant on the interval; else P at its start, P_to at `to`, linear between
+};
+
+struct Found {  // an interval [a, b] of the cover, b the caller's
+  rational a;
+  Mat P;  // the interval's P, or (P linear) the one at a
+};
+
+// The Stein P of M(p) (the double solve's, to 53 bits), nullopt where that solve finds M(p) not stable.
+std::optional<Mat> stein_P(const BallRows& M1, const BallRows& M2, const rational& p) {
+  const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, p)));
+  if (!d.stable || !*d.stable) return std::nullopt;
+  return rounded(d.P, 53);
+}
+
+// [a, b] with P linear between the Stein P's of its ends (the Bernstein test, check/stability_loop_check.hpp): near a
+// crossing P follows M where one P cannot. The width quadrupled from the last one, halved until it passes, down to an
+// eighth of the last (narrower: the one-P interval serves).
+std::optional<Found> linear_interval(const BallRows& M1, const BallRows& M2, const rational& start, const rational& b, const rational& width,
+                                     const Mat& Pb) {
+  std::string why;
+  for (rational w = std::min(rational(4 * width), rational(b - start)); w >= width / 8; w /= 2) {
+    const rational a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
+    auto Pa = stein_P(M1, M2, a);
+    if (Pa && check::detail::bernstein_stein_holds(*Pa, Pb, loop_at(M1, M2, a), loop_at(M1, M2, b), why)) return Found{a, *Pa};
+  }
+  return std::nullopt;
+}
+
+// After two SDP misses in a row (near the crossing, where the margin is below the SDP's tolerance) the next 8
+// intervals skip it.
+struct SdpWidening {
+  int misses = 0, skip = 0;
+};
+
+// [a, b] with one P: the Stein P of its midpoint, the width doubled from the last one, halved until P passes at both
+// ends; then wider by an SDP where one P holds over more (4, 16, 64, 256 times the width: a P made for the whole
+// interval; 340 -> 107 intervals on the ctest's scene of order 8, at ~60 ms an SDP).
+std::optional<Found> one_p_interval(const BallRows& M1, const BallRows& M2, const rational& start, const rational& b, const rational& width,
+                                    SdpWidening& sdp) {
+  std::string why;
+  rational w = std::min(rational(2 * width), rational(b - start)), a;
+  std::optional<Mat> P;
+  for (int halving = 0; halving < 60 && !P; ++halving, w /= 2) {
+    a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
+    const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, (a + b) / 2)));
+    if (!d.stable || !*d.stable) continue;
+    for (const int bits : {24, 53}) {
+      const Mat Pk = rounded(d.P, bits);
+      if (check::detail::stein_holds(Pk, loop_at(M1, M2, a), why) && check::detail::stein_holds(Pk, loop_at(M1, M2, b), why)) {
+        P = Pk;
+        break;
+      }
+    }
+  }
+  if (!P) return std::nullopt;
+  if (sdp.skip > 0) --sdp.skip;
+  for (const int k : {4, 16, 64, 256}) {
+    if (a == start || sdp.skip > 0) break;
+    const rational wide = b - rational(k) * (b - a);
+    const rational a2 = wide <= start ? start : std::max(start, round_down(wide, (b - wide) / 1024));
+    if (auto Pw = common_stein(loop_at(M1, M2, a2), loop_at(M1, M2, b))) {
+      P = Pw, a = a2, sdp.misses = 0;
+    } else {
+      if (k == 4 && ++sdp.misses >= 2) sdp.skip = 8, sdp.misses = 0;
+      break;
+    }
+  }
+  return Found{a, *P};
+}
+
 // The certificate of "stable on [0, lo], NOT stable at hi" (lo = hi = 0: sup = 0), or why there is none.
 struct Attempt {
   nlohmann::json evidence;
@@ -186,7 +259,6 @@ struct Attempt {
 Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
                      const rational& start, const Mat& slow) {
   Attempt out;
-  std::string why;
   SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
   bool on_ker = false;  // sup = 0 beside slow modes (their eigenvalue 1 leaves Stein inertia none): M(0) on ker L
   if ((!u.stable || *u.stable) && hi == 0 && !slow.empty()) {
@@ -198,51 +270,37 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
                     (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too, which the slow rows do not carry" : "")};
   out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
   if (on_ker) out.evidence["unstable_at"]["slow_quotient"] = true;
-  std::vector<std::pair<rational, Mat>> pieces;  // (right end, P), from lo down
+  std::vector<Piece> pieces;  // from lo down
   rational b = lo, width = lo - start;
-  int sdp_misses = 0, skip_sdp = 0;
+  SdpWidening sdp;
+  std::optional<Mat> P_at_b;  // the Stein P at b, kept from the last interval with P linear
   while (b > start) {
     if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) +
-                        "] (one Stein P holds over a width ~ 1/(|P| |dM/dp|): a range wide against the loop's margin)"};
-    // [a, b] with the Stein P of its midpoint: the width doubled from the last one, halved until P passes at both ends
-    rational w = std::min(rational(2 * width), rational(b - start)), a;
-    std::optional<Mat> P;
-    for (int halving = 0; halving < 60 && !P; ++halving, w /= 2) {
-      a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
-      const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, (a + b) / 2)));
-      if (!d.stable || !*d.stable) continue;
-      for (const int bits : {24, 53}) {
-        const Mat Pk = rounded(d.P, bits);
-        if (check::detail::stein_holds(Pk, loop_at(M1, M2, a), why) && check::detail::stein_holds(Pk, loop_at(M1, M2, b), why)) {
-          P = Pk;
-          break;
-        }
-      }
+                        "] (a Stein P, or a pair of them, holds over a width ~ a fraction of the distance to the crossing)"};
+    // one P first; where it did not grow (near a crossing) P linear too, kept when it reaches 2.5 times as far (its
+    // check costs ~2.5 times as much: 12 products and 4 tests of definiteness against 4 and 2)
+    const std::optional<Found> one = one_p_interval(M1, M2, start, b, width, sdp);
+    std::optional<Found> lin;
+    if (!one || b - one->a <= width) {
+      if (!P_at_b) P_at_b = stein_P(M1, M2, b);
+      if (P_at_b) lin = linear_interval(M1, M2, start, b, width, *P_at_b);
     }
-    if (!P)
+    if (lin && (!one || b - lin->a >= rational(5, 2) * (b - one->a))) {
+      pieces.push_back({b, lin->P, *P_at_b});
+      width = b - lin->a, b = lin->a, P_at_b = lin->P;
+      continue;
+    }
+    if (!one)
       return {{}, "no cover of [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) + "] below " + name + " = " +
                       check::detail::decimal(b)};
-    // wider by an SDP where one P holds over more (4, 16, 64, 256 times the width: a P made for the whole
-    // interval; 340 -> 107 intervals on the ctest's scene of order 8, at ~60 ms an SDP). After two misses in
-    // a row (near the crossing, where the margin is below the SDP's tolerance) the next 8 intervals skip it.
-    if (skip_sdp > 0) --skip_sdp;
-    for (const int k : {4, 16, 64, 256}) {
-      if (a == start || skip_sdp > 0) break;
-      const rational wide = b - rational(k) * (b - a);
-      const rational a2 = wide <= start ? start : std::max(start, round_down(wide, (b - wide) / 1024));
-      if (auto Pw = common_stein(loop_at(M1, M2, a2), loop_at(M1, M2, b))) {
-        P = Pw, a = a2, sdp_misses = 0;
-      } else {
-        if (k == 4 && ++sdp_misses >= 2) skip_sdp = 8, sdp_misses = 0;
-        break;
-      }
-    }
-    pieces.emplace_back(b, *P);
-    width = b - a;
-    b = a;
+    pieces.push_back({b, one->P, {}});
+    width = b - one->a, b = one->a, P_at_b.reset();
   }
   nlohmann::json cover = nlohmann::json::array();
-  for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) cover.push_back({{"to", it->first.str()}, {"P", rows(it->second)}});
+  for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) {
+    cover.push_back({{"to", it->to.str()}, {"P", rows(it->P)}});
+    if (!it->P_to.empty()) cover.back()["P_to"] = rows(it->P_to);
+  }
   if (!cover.empty()) out.evidence["cover"] = cover;
   return out;
 }

@@ -641,6 +641,44 @@ bool stein_holds(const Mat& Pm, const BallRows& M, std::string& why) {
   return false;
 }
 
+// P(t) = (1 - t) Pa + t Pb and M(t) = (1 - t) Ma + t Mb on t in [0, 1]: S(t) = P(t) - M(t)^T P(t) M(t) is a
+// cubic in t, sum_s C_s B_s(t) in the Bernstein basis B_s(t) = (3 choose s) (1 - t)^(3 - s) t^s (>= 0, summing
+// to 1), with C_s = ((3 - s) Pa + s Pb)/3 - (3 choose s)^-1 sum_{i + j + k = s} X_i^T P_j X_k (X_0 = Ma, X_1 =
+// Mb, P_0 = Pa, P_1 = Pb): every C_s > 0 (balls) gives S(t) > 0 on [0, 1] (stability_loop_max_check.hpp).
+bool bernstein_stein_holds(const Mat& Pa, const Mat& Pb, const BallRows& Ma, const BallRows& Mb, std::string& why) {
+  const size_t n = Pa.size();
+  const BallRows P[2] = {balls(Pa), balls(Pb)};
+  const BallRows* X[2] = {&Ma, &Mb};
+  BallRows Xt[2] = {zero_balls(n, n), zero_balls(n, n)};
+  for (int a = 0; a < 2; ++a)
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < n; ++j) Xt[a][i][j] = (*X[a])[j][i];
+  BallRows PX[2][2];  // PX[j][k] = P_j X_k
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < 2; ++k) PX[j][k] = product(P[j], *X[k]);
+  for (int s = 0; s <= 3; ++s) {
+    BallRows C = zero_balls(n, n);
+    int terms = 0;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        for (int k = 0; k < 2; ++k) {
+          if (i + j + k != s) continue;
+          const BallRows XPX = product(Xt[i], PX[j][k]);
+          for (size_t a = 0; a < n; ++a)
+            for (size_t b = 0; b < n; ++b) C[a][b] -= XPX[a][b];
+          ++terms;
+        }
+    const flint::Ball w(rational(1, terms)), wa(rational(3 - s, 3)), wb(rational(s, 3));
+    for (size_t a = 0; a < n; ++a)
+      for (size_t b = 0; b < n; ++b) C[a][b] = wa * P[0][a][b] + wb * P[1][a][b] + w * C[a][b];
+    if (!ball_positive_definite(C, why)) {
+      why = "the Bernstein coefficient C_" + std::to_string(s) + " of P(t) - M(t)^T P(t) M(t) is " + why;
+      return false;
+    }
+  }
+  return true;
+}
+
 // The rows l of the loop's slow modes at p = 0 (stability_loop_max_check.hpp's first-order start): a basis,
 // in reduced row echelon form, of {l : l^T (M~(0) - I) = 0, l_p^T A = 0}, M~(0) = 2 M~(1) - M~(2) with M~
 // the exact slow matrix (each hold e^{Ah} -> I, Gamma_h -> h B) of the loops read at p = 1 and 2. For l_p^T

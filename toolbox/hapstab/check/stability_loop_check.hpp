@@ -107,6 +107,10 @@ struct LoopMatrix {
 LoopMatrix loop_matrix(const SceneLoop& L, long bits);
 /// Q = P - M^T P M > 0 for every M in the balls (the header's test); else false, `why` set.
 bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
+/// With P and M linear in t on [0, 1] (Pa, Ma at 0; Pb, Mb at 1): the four Bernstein coefficients of the cubic
+/// P(t) - M(t)^T P(t) M(t) positive definite in balls (so it is on [0, 1]); else false, `why` set.
+bool bernstein_stein_holds(const rational_matrix::Mat& Pa, const rational_matrix::Mat& Pb, const BallRows& Ma, const BallRows& Mb,
+                           std::string& why);
 /// Every symmetric matrix in the balls Q is positive definite (the header's test of Q); else false, `why` set.
 bool ball_positive_definite(const BallRows& Q, std::string& why);
 /// The rows r^T of the loop's slow modes at p = 0 of the family read at p = 1 (L1) and 2 (L2), on the

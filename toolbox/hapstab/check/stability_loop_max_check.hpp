@@ -38,6 +38,12 @@
 //   cover: [{to, P}, ...], t_0 = 0 < t_1 < ... < t_m = lo: on [t_{k-1}, t_k] P_k symmetric, P_k > 0
 //          (exactly up to order 24, else by the congruence test), Q > 0 at both ends (the test of
 //          stability_loop_check.hpp at 128, 256, 512 bits) => stable on [0, lo], so sup >= lo;
+//          Or {to, P, P_to} (P linear, since stop 74): P at t_{k-1}, P_to at t_k, P(p) affine between; with
+//          t = (p - t_{k-1})/(t_k - t_{k-1}), P(t) and M(t) affine in t, so S(t) = P(t) - M(t)^T P(t) M(t) is a cubic,
+//          sum_s C_s B_s(t) in the Bernstein basis (B_s >= 0, sum 1): C_0..C_3 > 0 (balls; the formula in
+//          stability_loop_check.hpp's bernstein_stein_holds) and P, P_to > 0 give P(p) > 0 and S > 0 on the
+//          interval, so M(p) Schur stable there. Near a crossing P must follow M: one P per interval needs widths
+//          ~ the distance to the crossing times a small ratio, a linear one ~ that times its square root.
 //   unstable_at: {at = hi, P, w}: Q > 0 at M(hi) and w^T P w < 0 => M(hi) has an eigenvalue outside
 //          the unit circle (Stein inertia): NOT stable at hi, so sup <= hi. With hi = 0 (no cover):
 //          M(0) has an eigenvalue |z| > 1, and so has M(p) for every small p > 0 (eigenvalues are
@@ -56,7 +62,8 @@
 // quantities (rows c with c^T M = c^T, the subspace {c^T x = 0} invariant, x = E y) the rows are l^T E:
 // (l^T E) M_q = l^T M E = l^T E since E P M E = M E on the invariant subspace; the conserved rows' own
 // images vanish and are dropped. A quotient by right eigenvectors too (a block's unobservable z = 1) is beyond.
-// Limits: the loop's order <= 160, at most 4096 intervals, and intervals x n^3 <= 5e7 (beyond: malformed, by name).
+// Limits: the loop's order <= 160, at most 4096 intervals, and intervals x n^3 <= 5e7 (one with P linear counted 5
+// times; beyond: malformed, by name).
 // Implements: paper 000 Sec. VI.
 #pragma once
 
