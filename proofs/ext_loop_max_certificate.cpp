@@ -234,11 +234,7 @@ std::pair<Q, Q> residue_by_derivative(const QPoly& n, const QPoly& d, const Q& q
   return {(An * Ad + q * Bn * Bd) / den, (Bn * Ad - An * Bd) / den};
 }
 
-}  // namespace ext_loop_max_certificate_detail
-
-HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's and the axis residue's certificates") {
-  using namespace ext_loop_max_certificate_detail;
-  std::mt19937 g(47073);
+void first_order_claim(proofs::Checker& check, std::mt19937& g) {
   // ---- first-order start ----------------------------------------------------------------------------
   proofs::Instances accepted{"(loop, eps) where the checker accepts the first-order start on (0, eps]", 40},
       refused{"(loop, eps) where it does not, M(eps) unstable among them", 40};
@@ -269,7 +265,9 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
               "60 random loops (seed 47073) at eps = 1/10, 1, 3, 8",
               Status::certified, identity && sound && s_zero_refused && accepted.enough() && refused.enough() && unstable_refused > 0, e1.str(),
               {accepted, refused});
+}
 
+void bernstein_claim(proofs::Checker& check, std::mt19937& g) {
   // ---- P linear over an interval ----------------------------------------------------------------------
   proofs::Instances lin_accepted{"pairs (P, M) linear on [0, 1] the checker accepts", 30}, lin_refused{"pairs it does not", 30};
   bool bern_identity = true, bern_sound = true;
@@ -303,7 +301,9 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
               std::string("the identity ") + (bern_identity ? "exact" : "FAILS") + "; accepted pairs " +
                   (bern_sound ? "stable with S > 0 at every t tried" : "NOT all stable"),
               {lin_accepted, lin_refused});
+}
 
+void kernel_claim(proofs::Checker& check, std::mt19937& g) {
   // ---- kernel of the slow rows ----------------------------------------------------------------------
   proofs::Instances kernels{"random M with L M = L, exact restriction", 30};
   bool kernel_ok = true;
@@ -317,7 +317,9 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
               "det(zI - M|ker L), M|ker L as the checker restricts it -- exact identity of characteristic polynomials on 40 random "
               "dyadic M of order 2-6 with k = 1, 2 (seed 47073)",
               Status::exact, kernel_ok && kernels.enough(), kernel_ok ? "every identity exact" : "an identity FAILS", {kernels});
+}
 
+void slow_hold_claim(proofs::Checker& check, std::mt19937& g) {
   // ---- holds on a slow row --------------------------------------------------------------------------
   proofs::Instances holds{"plants (A, B) with a row l^T A = 0 and one l'^T A != 0", 20};
   bool slow_ok = true, separated = true;
@@ -357,7 +359,9 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
               std::string(slow_ok ? "every slow row inside" : "a slow row OUTSIDE") + "; " +
                   (separated ? "every other row separated" : "a row with l^T A != 0 NOT separated"),
               {holds});
+}
 
+void residue_claim(proofs::Checker& check, std::mt19937& g) {
   // ---- the residue at an irrational axis pole --------------------------------------------------------
   proofs::Instances psd{"residues positive semidefinite", 8}, indefinite{"residues not positive semidefinite", 8};
   bool residue_ok = true, congruent = true;
@@ -411,4 +415,16 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
               std::string(residue_ok ? "both routes and the construction agree" : "the routes DISAGREE") + "; congruence " +
                   (congruent ? "exact" : "FAILS"),
               {psd, indefinite});
+}
+
+}  // namespace ext_loop_max_certificate_detail
+
+HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's and the axis residue's certificates") {
+  using namespace ext_loop_max_certificate_detail;
+  std::mt19937 g(47073);  // one stream, the claims in this order
+  first_order_claim(check, g);
+  bernstein_claim(check, g);
+  kernel_claim(check, g);
+  slow_hold_claim(check, g);
+  residue_claim(check, g);
 }
