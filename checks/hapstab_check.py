@@ -3584,6 +3584,7 @@ def check_stability_loop_max(c):
         if not stein_shown(Pu, Mu):
             why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
             continue
+        last_P_to = None  # the last interval's P_to (None: it had none)
         for i, piece in enumerate(cover):
             where = "evidence.cover[%d]" % i
             if not isinstance(piece, dict):
@@ -3594,11 +3595,17 @@ def check_stability_loop_max(c):
                 raise Malformed(where + ".to: not above the interval's start")
             if i + 1 == len(cover) and to != lo:
                 raise Malformed(where + ".to: the last interval ends at claim.lo")
-            P = symmetric_evidence(piece, where, n)
-            if not semidefinite(P, True):
-                return False, where + ".P is not positive definite"
+            if "P" not in piece:  # left out: the last interval's P_to (a chain of linear intervals names each node once)
+                if "P_to" not in piece or last_P_to is None:
+                    raise Malformed(where + ".P: missing (left out only in an interval with P_to after one with P_to)")
+                P = last_P_to
+            else:
+                P = symmetric_evidence(piece, where, n)
+                if not semidefinite(P, True):
+                    return False, where + ".P is not positive definite"
+            last_P_to = None
             if "P_to" in piece:  # P at start, P_to at to, linear between: the Bernstein test
-                Pto = symmetric_evidence({"P": piece["P_to"]}, where + "(P_to)", n)
+                Pto = last_P_to = symmetric_evidence({"P": piece["P_to"]}, where + "(P_to)", n)
                 if not semidefinite(Pto, True):
                     return False, where + ".P_to is not positive definite"
                 if not bernstein_stein_shown(P, Pto, M_at(start), M_at(to)):

@@ -91,13 +91,19 @@ def mutants(cert, name):
     if linear:  # an interval with P linear (the Bernstein test): its ends' P's edited
         k = linear[-1]  # the one nearest the crossing
         piece = cover[k]
+        Pk = piece["P"] if "P" in piece else cover[k - 1]["P_to"]  # left out: the last interval's P_to
         T00 = piece["P_to"][0][0]
         out += [("a linear interval's P_to[0][0] negated", with_field(cert, ["evidence", "cover", k, "P_to", 0, 0],
                                                                       T00[1:] if T00.startswith("-") else "-" + T00), 1),
                 ("a linear interval's P and P_to swapped", with_field(with_field(cert, ["evidence", "cover", k, "P"], piece["P_to"]),
-                                                                     ["evidence", "cover", k, "P_to"], piece["P"]), None),
+                                                                     ["evidence", "cover", k, "P_to"], Pk), None),
                 ("a linear interval's P_to dropped (one P over it)", deleted(cert, ["evidence", "cover", k, "P_to"]), None),
-                ("a linear interval's P_to of the wrong order", with_field(cert, ["evidence", "cover", k, "P_to"], [row[:-1] for row in piece["P_to"][:-1]]), 2)]
+                ("a linear interval's P_to of the wrong order", with_field(cert, ["evidence", "cover", k, "P_to"], [row[:-1] for row in piece["P_to"][:-1]]), 2),
+                ("the first linear interval's P left out (no P_to before it)", deleted(cert, ["evidence", "cover", linear[0], "P"]), 2)]
+        if "P" not in piece:  # its P is the last interval's P_to: that one edited edits both
+            P00 = Pk[0][0]
+            out.append(("the P_to that the next interval inherits, [0][0] negated", with_field(
+                cert, ["evidence", "cover", k - 1, "P_to", 0, 0], P00[1:] if P00.startswith("-") else "-" + P00), 1))
     if text is None:  # the one-DOF --plant/--H model: p in H only
         model = cert["model"]
         H, P = model["H"], model["plant"]

@@ -297,9 +297,12 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
     width = b - one->a, b = one->a, P_at_b.reset();
   }
   nlohmann::json cover = nlohmann::json::array();
+  const Mat* last_P_to = nullptr;  // a linear interval's P equal to the last one's P_to is left out (the checkers take that)
   for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) {
-    cover.push_back({{"to", it->to.str()}, {"P", rows(it->P)}});
+    cover.push_back({{"to", it->to.str()}});
+    if (it->P_to.empty() || !last_P_to || *last_P_to != it->P) cover.back()["P"] = rows(it->P);
     if (!it->P_to.empty()) cover.back()["P_to"] = rows(it->P_to);
+    last_P_to = it->P_to.empty() ? nullptr : &it->P_to;
   }
   if (!cover.empty()) out.evidence["cover"] = cover;
   return out;

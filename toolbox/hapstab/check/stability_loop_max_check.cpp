@@ -385,6 +385,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     }
     // stable on [0, lo], or on [eps, lo] after the first-order start (above)
     bool covered = true;
+    Mat last_P_to;  // the last interval's P_to (empty: it had none)
     for (size_t k = 0; k < cover.size() && covered; ++k) {
       const std::string where = "evidence.cover[" + std::to_string(k) + "]";
       if (!cover[k].is_object()) throw InputError(where + ": not an object");
@@ -392,11 +393,16 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
       const rational to = detail::exact_field(cover[k], "to", where);
       if (to <= from) throw InputError(where + ".to: not above the interval's start " + from.str());
       if (k + 1 == cover.size() && to != c.lo) throw InputError(where + ".to: the last interval ends at claim.lo (" + c.lo.str() + ")");
-      const Mat Pk = symmetric_P(cover[k], where, n);
       const bool linear = cover[k].contains("P_to");  // P at `from`, P_to at `to`, linear between (header)
+      // P left out: the last interval's P_to (a chain of linear intervals names each node once)
+      const bool inherited = !cover[k].contains("P");
+      if (inherited && (!linear || last_P_to.empty()))
+        throw InputError(where + ".P: missing (left out only in an interval with P_to after one with P_to: then it is that P_to)");
+      const Mat Pk = inherited ? last_P_to : symmetric_P(cover[k], where, n);
       const Mat Pto = linear ? symmetric_P(cover[k], where, n, "P_to") : Mat{};
+      last_P_to = Pto;
       for (const Mat* X : {&Pk, &Pto}) {
-        if (X->empty()) continue;
+        if (X->empty() || (X == &Pk && inherited)) continue;  // an inherited P was shown as the last P_to
         const bool pd = n <= 24 ? rational_matrix::positive_definite(*X, true) : detail::positive_definite_within(*X, rational(0));
         if (!pd) return {false, where + (X == &Pk ? ".P" : ".P_to") + " is not shown positive definite"};
       }

@@ -38,7 +38,8 @@
 //   cover: [{to, P}, ...], t_0 = 0 < t_1 < ... < t_m = lo: on [t_{k-1}, t_k] P_k symmetric, P_k > 0
 //          (exactly up to order 24, else by the congruence test), Q > 0 at both ends (the test of
 //          stability_loop_check.hpp at 128, 256, 512 bits) => stable on [0, lo], so sup >= lo;
-//          Or {to, P, P_to} (P linear, since stop 74): P at t_{k-1}, P_to at t_k, P(p) affine between; with
+//          Or {to, P, P_to} (P linear, since stop 74; P left out after an interval with P_to: that P_to): P at
+//          t_{k-1}, P_to at t_k, P(p) affine between; with
 //          t = (p - t_{k-1})/(t_k - t_{k-1}), P(t) and M(t) affine in t, so S(t) = P(t) - M(t)^T P(t) M(t) is a cubic,
 //          sum_s C_s B_s(t) in the Bernstein basis (B_s >= 0, sum 1): C_0..C_3 > 0 (balls; the formula in
 //          stability_loop_check.hpp's bernstein_stein_holds) and P, P_to > 0 give P(p) > 0 and S > 0 on the
