@@ -113,7 +113,7 @@ multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D)
 multidof-coupling-symmetric  the same for a V of one block per DOF designed on the split: (16) by the split as
        multidof-feasible-symmetric, each block's X, Q_E, Q_V a positive multiple of the image of the whole's
        invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class.
-Size limit: multidof-feasible: N + m <= 40 (multidof-coupling: also nV + m <= 40; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 60 and a scene of <= 64 DOFs (hapstab check: 1024 and 128)
+Size limit: multidof-feasible: N + m <= 40 (multidof-coupling: also nV + m <= 40; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 60 (hapstab check: 1024)
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -2181,10 +2181,8 @@ def scene_copies(root):
             n = t["count"]
             if not isinstance(n, int) or isinstance(n, bool) or n < 1:
                 raise Malformed("model.scene: %s.count: a whole number of copies >= 1" % where)
-            if n > 128:
-                scene_beyond(where + ".count", "%d copies, more than 128" % n)
-            if n > MAX_SCENE_DOFS:
-                raise TooLarge("model.scene: %s.count: %d copies, above this checker's limit %d" % (where, n, MAX_SCENE_DOFS))
+            if n > 64:
+                scene_beyond(where + ".count", "%d copies, more than 64" % n)
             if not isinstance(t.get("name"), str):
                 raise Malformed("model.scene: %s.name: a table with count needs a name: its copies are NAME[1] .. NAME[count]" % where)
             pattern = t["name"] if "[i]" in t["name"] else t["name"] + "[i]"
@@ -2427,7 +2425,6 @@ def scene_loop_model(model, free=False):
 
 
 MAX_LOOP_ORDER = 60  # stability-loop: M's order (exact elimination of Q_mid - r I in Fractions)
-MAX_SCENE_DOFS = 64  # a scene's DOFs written out (hapstab check reads 128: beyond 64 and up to 128 not checked here, exit 3)
 
 
 def scene_dof(v, names, where):
@@ -2525,10 +2522,8 @@ def scene_loop_read(model):
         name = d.get("name") if isinstance(d.get("name"), str) else ""
         names += [name if dev["dofs"] == 1 else ""] * dev["dofs"]  # a block of several DOFs: by number
         devices.append(dev)
-    if len(names) > 128:
-        scene_beyond("[[device]]", "%d DOFs, more than 128" % len(names))
-    if len(names) > MAX_SCENE_DOFS:
-        raise TooLarge("model.scene: [[device]]: %d DOFs, above this checker's limit %d" % (len(names), MAX_SCENE_DOFS))
+    if len(names) > 64:
+        scene_beyond("[[device]]", "%d DOFs, more than 64" % len(names))
     ops = []
     tables = root.get("operator", [])
     if not isinstance(tables, list) or any(not isinstance(o, dict) for o in tables):

@@ -26,7 +26,7 @@ def edits(cert):
             ("a list indexed past its end (kc[5] of 4 values)", scene('diagonal = "kc[i]', 'diagonal = "kc[5]'), 2),
             ("a list named without an index", scene('b = "sum(Bc)/14"', 'b = "Bc/14"'), 2),
             ("count = 0", scene("count = 4\nname = \"d\"", "count = 0\nname = \"d\""), 2),
-            ("count = 129 (beyond both checkers: 128)", scene("count = 4\nname = \"d\"", "count = 129\nname = \"d\""), 2),
+            ("count = 65 (beyond the checkers' 64)", scene("count = 4\nname = \"d\"", "count = 65\nname = \"d\""), 2),
             ("blocks = 3 (does not divide 4 DOFs)", scene("blocks = 2", "blocks = 3"), 2),
             ("off_diagonal without diagonal", scene('diagonal = "kc[i] + Bc[i]*(z-1)/(T*z)"\n', ""), 2),
             ("a counted table without a name", scene("count = 4\nname = \"d\"\n", "count = 4\n"), 2),

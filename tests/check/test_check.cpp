@@ -1373,7 +1373,7 @@ TEST(StabilityLoopCheck, SteinCertificateByHand) {
   EXPECT_FALSE(check_certificate(other).verified);  // a damped loop: this P does not prove it
   for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
            {"[contact]\n", "[contact]"}, {"[passivity_controller]\ndofs = [0]\n", "[passivity_controller]"},
-           {"[[device]]\nname = \"b\"\nm = \"1\"\ncount = 129\n", "129 copies, more than 128"}}) {
+           {"[[device]]\nname = \"b\"\nm = \"1\"\ncount = 65\n", "65 copies, more than 64"}}) {
     auto c = cert;
     c["model"]["scene"] = scene + edit;
     try {

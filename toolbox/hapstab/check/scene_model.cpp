@@ -19,7 +19,7 @@ namespace hapstab::check::detail {
 
 namespace {
 
-constexpr size_t kMaxDofs = 128;  // DOFs of a scene, written out (stability-loop: order <= 1024, a 128-DOF loop ~900)
+constexpr size_t kMaxDofs = 64;  // DOFs of a scene, written out (a contact scene's N^2 entries each name all N: reading 128 took 7 s)
 
 constexpr size_t kMaxSceneBytes = size_t(1) << 20;    // a one-DOF scene is a few KB
 constexpr size_t kMaxExpandedBytes = size_t(1) << 20;  // parameters substituted into one expression
@@ -235,7 +235,7 @@ void index_strings(toml::node& n, const std::string& k) {
 
 // [[device]] and [[operator]] tables with count = n written out as hapstab's reader does (scene/reader.cpp's
 // table_copies): n copies in place, named NAME[k] (or the name's own [i] pattern), "[i]" -> "[k]" in every
-// string. At most 128 copies (the checker's DOF limit).
+// string. At most 64 copies (the checkers' DOF limit).
 void write_out_copies(toml::table& root) {
   for (const char* key : {"device", "operator"}) {
     auto* arr = root[key].as_array();
@@ -624,16 +624,22 @@ SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where
     return D;
   }
   const RationalFunction<rational> gain = parse_in(gain_text, 'z', T, where + ".gain");
+  std::map<std::string, RationalFunction<rational>> read;  // each text once: a written-out contact scene repeats one N^2 - N times
   for (const auto& row : t.contains("diagonal") ? diagonal_texts(t, where, N) : text_matrix(*t.get("tf"), N, where + ".tf")) {
     D.tf.emplace_back();
     for (const auto& e : row) {
-      // read_wall's discretisation, entry by entry
-      toml::table one;
-      one.insert("tf", e);
-      for (const char* key : {"domain", "method"})
-        if (t.contains(key)) one.insert(key, *t.get(key));
-      D.tf.back().push_back(parse_in(read_wall(&one, p), 'z', T, where + ".tf") * gain);
-      if (!proper(D.tf.back().back())) malformed(where + ".tf", "an improper entry in z");
+      auto it = read.find(e);
+      if (it == read.end()) {
+        // read_wall's discretisation, entry by entry
+        toml::table one;
+        one.insert("tf", e);
+        for (const char* key : {"domain", "method"})
+          if (t.contains(key)) one.insert(key, *t.get(key));
+        const RationalFunction<rational> f = parse_in(read_wall(&one, p), 'z', T, where + ".tf") * gain;
+        if (!proper(f)) malformed(where + ".tf", "an improper entry in z");
+        it = read.emplace(e, f).first;
+      }
+      D.tf.back().push_back(it->second);
     }
   }
   return D;

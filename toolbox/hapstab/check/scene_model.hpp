@@ -49,7 +49,7 @@ namespace hapstab::check::detail {
 ///                                (11)): x_e = x + V u, u = -E x_e, the same keys as [environment]
 ///   [delay]                      t_d in [0, 1000 T], a fraction of a sample too
 ///   repeated blocks                (docs/scene.md) written out first as hapstab's reader does: [[device]]
-///                                and [[operator]] with count = n (at most 128) as n copies NAME[k], "[i]" ->
+///                                and [[operator]] with count = n (at most 64) as n copies NAME[k], "[i]" ->
 ///                                "[k]" in their strings; list parameters NAME = [..] or {repeat, times}:
 ///                                NAME[k] -> (v_k), sum(NAME) -> ((v_1) + ... + (v_n)); [environment] and
 ///                                [coupling] by diagonal / off_diagonal [/ blocks = K] as their N x N text

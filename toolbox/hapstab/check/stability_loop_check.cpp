@@ -864,6 +864,12 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   const detail::SceneLoop L = detail::read_scene_loop(model);
   const Mat Pm = detail::exact_matrix(evidence, "P", "evidence", kMaxOrder);
   if (Pm.empty() || Pm[0].size() != Pm.size()) throw InputError("evidence.P: not a square matrix");  // [[]] once reached the test below
+  // before anything is computed in balls (e^{AT} of a 128-DOF plant takes seconds): the quotient keeps at least
+  // one state per DOF (rank [A B] >= N: each DOF's force enters its own velocity; a block's z = 1 rows and
+  // vectors at most its states), so a P of lower order cannot be the loop's
+  if (Pm.size() < L.dofs())
+    throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", below the loop's " + std::to_string(L.dofs()) +
+                     " DOFs (its matrix keeps at least one state per DOF)");
   if (!rational_matrix::symmetric(Pm)) throw InputError("evidence.P: not symmetric");
   if (stable == evidence.contains("w")) throw InputError(stable ? "evidence.w: only for NOT stable" : "evidence.w: missing (NOT stable needs w with w^T P w < 0)");
   std::string sign;

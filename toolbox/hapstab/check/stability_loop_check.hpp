@@ -29,7 +29,7 @@
 // non-zero diagonal: non-singular; its doubles taken as exact), G = X^T Q_mid X in balls, and
 // min_i (G_ii - sum_{j != i} |G_ij|) > ||X||_F^2 r (Gershgorin and Weyl). (The exact elimination of
 // Q_mid - r I took 34 s at order 115; this takes 0.2 s; the ball products by arb_mat_mul from order 32 on.)
-// Size: M's order <= 1024, a scene of <= 128 DOFs (order 448: 5.6 s). A P that does not pass refutes the claim
+// Size: M's order <= 1024, a scene of <= 64 DOFs (order 448: 5.6 s). A P that does not pass refutes the claim
 // (exit 1): the evidence does not prove it.
 // Conserved quantities: l with l^T [A B] = 0 exactly (A, B the continuous plant above, rationals) keeps
 // l^T s constant in the loop whatever the controller does: l^T A^k = 0 for k >= 1, so l^T Phi_h = l^T

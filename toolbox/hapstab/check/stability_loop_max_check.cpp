@@ -310,6 +310,9 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const Reading r = model.contains("scene") ? read_p(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
   const std::string& block = r.block;
   const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, rational(1))), L2 = detail::read_scene_loop(model_at(model, p, rational(2)));
+  if (2 * L1.dofs() > kMaxLoopOrder)  // each DOF's v and x: refused before any loop is built in balls
+    throw InputError("model: " + std::to_string(L1.dofs()) + " DOFs, a closed loop of at least " + std::to_string(2 * L1.dofs()) +
+                     " states, beyond this checker's " + std::to_string(kMaxLoopOrder) + " for a supremum");
   // p inside the block's tf (header): its realisation at 1, 2 and hi of the largest order, sum_j deg L_j
   long degree = 0;
   const size_t order = r.inside ? affine_block_order(model, r, p, L1, degree) : 0;
