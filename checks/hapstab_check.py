@@ -3463,10 +3463,11 @@ def check_stability_loop_max(c):
     """stability-loop-max (check/stability_loop_max_check.hpp): p the gain of one block alone (the realisations
     at p = 1 and 2: A, B equal, C, D doubled), or inside one block's tf (each entry proven affine, the
     realisation of the largest order at 1, 2 and hi, C, D at hi on the line), or in a one-DOF model's H, so
-    the loop's M(p) = (2 - p) M(1) + (p - 1) M(2) (D_E D_V = D_V D_E = 0); on each cover interval [a, b] one P > 0 with P - M^T P M > 0 at both ends
-    (convex in p: stable on all of it), or P at a and P_to at b, linear between, with the four Bernstein
-    coefficients of the cubic P(t) - M(t)^T P(t) M(t) positive definite (bernstein_stein_shown); and at claim.hi P, w with w^T P w < 0: NOT stable (Stein inertia);
-    hi = 0: M(0) with an eigenvalue outside the circle, so M(p) for every small p > 0."""
+    the loop's M(p) = (2 - p) M(1) + (p - 1) M(2) (D_E D_V = D_V D_E = 0); on each cover interval [a, b] one
+    P > 0 with P - M^T P M > 0 at both ends (convex in p: stable on all of it), or P at a and P_to at b, linear
+    between (P left out: the last interval's P_to), with the four Bernstein coefficients of the cubic
+    P(t) - M(t)^T P(t) M(t) positive definite (bernstein_stein_shown); and at claim.hi P, w with w^T P w < 0:
+    NOT stable (Stein inertia); hi = 0: M(0) with an eigenvalue outside the circle, so M(p) for every small p > 0."""
     model, claim, evidence = parts(c)
     plant = "scene" not in model  # the one-DOF --plant/--H loop (scene_loop_read)
     only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
