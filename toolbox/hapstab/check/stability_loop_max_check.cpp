@@ -290,6 +290,58 @@ detail::BallRows detail::affine_loop_at(const BallRows& M1, const BallRows& M2, 
   return M;
 }
 
+namespace {
+
+enum class Cover { shown, not_shown, refuted };
+
+// evidence.cover from `from` to lo (header): each interval's P > 0 with Stein at both ends (convex in p), or, P
+// linear (P_to; P left out: the last interval's P_to), P and P_to > 0 and the four Bernstein coefficients > 0.
+// refuted: a P not positive definite (exact: no retry); not_shown: a Stein or Bernstein test failed in balls
+// (another precision may pass); `why` says which. InputError when malformed.
+Cover check_cover(const nlohmann::json& cover, const BallRows& M1, const BallRows& M2, rational from, const rational& lo, size_t n,
+                  const std::string& p, std::string& why) {
+  Mat last_P_to;  // the last interval's P_to (empty: it had none)
+  for (size_t k = 0; k < cover.size(); ++k) {
+    const std::string where = "evidence.cover[" + std::to_string(k) + "]";
+    if (!cover[k].is_object()) throw InputError(where + ": not an object");
+    detail::only_fields(cover[k], {"to", "P", "P_to"}, where);
+    const rational to = detail::exact_field(cover[k], "to", where);
+    if (to <= from) throw InputError(where + ".to: not above the interval's start " + from.str());
+    if (k + 1 == cover.size() && to != lo) throw InputError(where + ".to: the last interval ends at claim.lo (" + lo.str() + ")");
+    const bool linear = cover[k].contains("P_to");  // P at `from`, P_to at `to`, linear between (header)
+    const bool inherited = !cover[k].contains("P");
+    if (inherited && (!linear || last_P_to.empty()))
+      throw InputError(where + ".P: missing (left out only in an interval with P_to after one with P_to: then it is that P_to)");
+    const Mat Pk = inherited ? last_P_to : symmetric_P(cover[k], where, n);
+    const Mat Pto = linear ? symmetric_P(cover[k], where, n, "P_to") : Mat{};
+    last_P_to = Pto;
+    for (const Mat* X : {&Pk, &Pto}) {
+      if (X->empty() || (X == &Pk && inherited)) continue;  // an inherited P was shown as the last P_to
+      const bool pd = n <= 24 ? rational_matrix::positive_definite(*X, true) : detail::positive_definite_within(*X, rational(0));
+      if (!pd) {
+        why = where + (X == &Pk ? ".P" : ".P_to") + " is not shown positive definite";
+        return Cover::refuted;
+      }
+    }
+    if (linear) {
+      if (!detail::bernstein_stein_holds(Pk, Pto, detail::affine_loop_at(M1, M2, from), detail::affine_loop_at(M1, M2, to), why)) {
+        why = where + " on [" + from.str() + ", " + to.str() + "] (P linear): " + why;
+        return Cover::not_shown;
+      }
+    } else {
+      for (const rational& e : {from, to})
+        if (!detail::stein_holds(Pk, detail::affine_loop_at(M1, M2, e), why)) {
+          why = where + " at " + p + " = " + e.str() + ": " + why;
+          return Cover::not_shown;
+        }
+    }
+    from = to;
+  }
+  return Cover::shown;
+}
+
+}  // namespace
+
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
@@ -387,44 +439,9 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
       continue;
     }
     // stable on [0, lo], or on [eps, lo] after the first-order start (above)
-    bool covered = true;
-    Mat last_P_to;  // the last interval's P_to (empty: it had none)
-    for (size_t k = 0; k < cover.size() && covered; ++k) {
-      const std::string where = "evidence.cover[" + std::to_string(k) + "]";
-      if (!cover[k].is_object()) throw InputError(where + ": not an object");
-      detail::only_fields(cover[k], {"to", "P", "P_to"}, where);
-      const rational to = detail::exact_field(cover[k], "to", where);
-      if (to <= from) throw InputError(where + ".to: not above the interval's start " + from.str());
-      if (k + 1 == cover.size() && to != c.lo) throw InputError(where + ".to: the last interval ends at claim.lo (" + c.lo.str() + ")");
-      const bool linear = cover[k].contains("P_to");  // P at `from`, P_to at `to`, linear between (header)
-      // P left out: the last interval's P_to (a chain of linear intervals names each node once)
-      const bool inherited = !cover[k].contains("P");
-      if (inherited && (!linear || last_P_to.empty()))
-        throw InputError(where + ".P: missing (left out only in an interval with P_to after one with P_to: then it is that P_to)");
-      const Mat Pk = inherited ? last_P_to : symmetric_P(cover[k], where, n);
-      const Mat Pto = linear ? symmetric_P(cover[k], where, n, "P_to") : Mat{};
-      last_P_to = Pto;
-      for (const Mat* X : {&Pk, &Pto}) {
-        if (X->empty() || (X == &Pk && inherited)) continue;  // an inherited P was shown as the last P_to
-        const bool pd = n <= 24 ? rational_matrix::positive_definite(*X, true) : detail::positive_definite_within(*X, rational(0));
-        if (!pd) return {false, where + (X == &Pk ? ".P" : ".P_to") + " is not shown positive definite"};
-      }
-      if (linear) {
-        if (!detail::bernstein_stein_holds(Pk, Pto, detail::affine_loop_at(m1.M, m2.M, from), detail::affine_loop_at(m1.M, m2.M, to), why)) {
-          why = where + " on [" + from.str() + ", " + to.str() + "] (P linear): " + why;
-          covered = false;
-        }
-      } else {
-        for (const rational& e : {from, to})
-          if (!detail::stein_holds(Pk, detail::affine_loop_at(m1.M, m2.M, e), why)) {
-            why = where + " at " + p + " = " + e.str() + ": " + why;
-            covered = false;
-            break;
-          }
-      }
-      from = to;
-    }
-    if (!covered) continue;
+    const Cover shown = check_cover(cover, m1.M, m2.M, from, c.lo, n, p, why);
+    if (shown == Cover::refuted) return {false, why};
+    if (shown == Cover::not_shown) continue;
     const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(m1.order) + " states, " + std::to_string(L1.dofs()) +
                              " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
                              ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p +
