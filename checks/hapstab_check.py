@@ -8,8 +8,10 @@
     python3 checks/hapstab_check.py --files CERT...  one JSON verdict per file, with the seconds its
                                                      check took (hapstab reproduce runs it so)
 
-Python 3 standard library (fractions) for everything exact; mpmath's interval arithmetic (iv) only
-for the enclosure of cot in `r` and of c(e^(j pi t)) on arcs in `stability`'s argument principle. It reads the model as written (the expression of H(z) with its own
+Python 3 standard library (fractions) for everything exact; its own intervals with dyadic endpoints (class
+Iv: integers over 2^e, rounded outward) for the hold's e^(A h) and the Stein tests of loops; mpmath's interval
+arithmetic (iv) only for the enclosure of cot in `r` and of c(e^(j pi t)) on arcs in `stability`'s argument
+principle. It reads the model as written (the expression of H(z) with its own
 parser, below) and derives every quantity by a route other than hapstab's (docs/certificates.md).
 
 Kinds and theorems:
@@ -1747,28 +1749,55 @@ def spring_device(N, k, q, T):
 
 
 class Iv:
-    """A closed interval [lo, hi] of Fractions; every result rounded outward to the grid 2^-bits
-    (Iv.bits), so that denominators stay bounded; each operation encloses the exact result for
-    every pair of points of its operands."""
+    """A closed interval [lo, hi] = [a, b] / 2^e with integers a <= b. Dyadic endpoints make each operation a few
+    integer operations (a Fraction costs a gcd on every one). Results are rounded outward to the grid 2^-bits
+    (Iv.bits; sums of points on one grid are exact), so each operation encloses the exact result for every pair
+    of points of its operands, and lo, hi are the endpoints as Fractions."""
     bits = 128
+    __slots__ = ('a', 'b', 'e')
 
     def __init__(self, lo, hi=None):
-        self.lo, self.hi = Fraction(lo), Fraction(lo if hi is None else hi)
+        e = Iv.bits
+        if type(lo) is int and hi is None:
+            self.a = self.b = lo << e
+        else:
+            lo = Fraction(lo)
+            hi = lo if hi is None else Fraction(hi)
+            self.a = (lo.numerator << e) // lo.denominator  # floor
+            self.b = -((-hi.numerator << e) // hi.denominator)  # ceiling
+        self.e = e
 
     @staticmethod
-    def out(lo, hi):
-        b = 2 ** Iv.bits
-        r = object.__new__(Iv)  # lo, hi are Fractions already: no second conversion
-        r.lo, r.hi = Fraction((lo.numerator * b) // lo.denominator, b), Fraction(-((-hi.numerator * b) // hi.denominator), b)
+    def grid(a, b, e):
+        """[a, b] / 2^e, rounded outward to 2^-bits where e is finer."""
+        r = object.__new__(Iv)
+        s = e - Iv.bits
+        if s > 0:
+            a, b, e = a >> s, -((-b) >> s), Iv.bits  # >> is a floor on Python's integers of either sign
+        r.a, r.b, r.e = a, b, e
         return r
 
+    @property
+    def lo(self):
+        return Fraction(self.a, 1 << self.e)
+
+    @property
+    def hi(self):
+        return Fraction(self.b, 1 << self.e)
+
     def __add__(self, o):
-        o = o if isinstance(o, Iv) else Iv(o)
-        return Iv.out(self.lo + o.lo, self.hi + o.hi)
+        if not isinstance(o, Iv):
+            o = Iv(o)
+        s = self.e - o.e
+        if s == 0:
+            return Iv.grid(self.a + o.a, self.b + o.b, self.e)
+        if s > 0:
+            return Iv.grid(self.a + (o.a << s), self.b + (o.b << s), self.e)
+        return Iv.grid((self.a << -s) + o.a, (self.b << -s) + o.b, o.e)
     __radd__ = __add__
 
     def __neg__(self):
-        return Iv(-self.hi, -self.lo)
+        return Iv.grid(-self.b, -self.a, self.e)
 
     def __sub__(self, o):
         return self + (-(o if isinstance(o, Iv) else Iv(o)))
@@ -1777,25 +1806,31 @@ class Iv:
         return Iv(o) - self
 
     def __mul__(self, o):
-        if not isinstance(o, Iv) or o.lo == o.hi:  # times an exact number: two products
-            c = o.lo if isinstance(o, Iv) else Fraction(o)
-            a, b = self.lo * c, self.hi * c
-            return Iv.out(a, b) if c >= 0 else Iv.out(b, a)
-        ps = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
-        return Iv.out(min(ps), max(ps))
+        if not isinstance(o, Iv):  # times an exact rational p/q: two products, one floor and one ceiling
+            c = o if type(o) in (int, Fraction) else Fraction(o)
+            p, q = c.numerator, c.denominator
+            lo, hi = (self.a * p, self.b * p) if p >= 0 else (self.b * p, self.a * p)
+            return Iv.grid(lo // q, -((-hi) // q), self.e)
+        e = self.e + o.e
+        if o.a == o.b:  # an exact dyadic
+            c = o.a
+            return Iv.grid(self.a * c, self.b * c, e) if c >= 0 else Iv.grid(self.b * c, self.a * c, e)
+        ps = (self.a * o.a, self.a * o.b, self.b * o.a, self.b * o.b)
+        return Iv.grid(min(ps), max(ps), e)
     __rmul__ = __mul__
 
     def __truediv__(self, o):
-        if o.lo <= 0 <= o.hi:
+        if o.a <= 0 <= o.b:
             raise ZeroDivisionError("interval divisor holds 0")
-        return self * Iv.out(1 / o.hi, 1 / o.lo)
+        one = 1 << (o.e + Iv.bits)  # 1/[a, b] 2^e = [2^e/b, 2^e/a], on the grid 2^-bits, for either sign
+        return self * Iv.grid(one // o.b, -((-one) // o.a), Iv.bits)
 
     def absolute(self):
-        if self.lo >= 0:
+        if self.a >= 0:
             return self
-        if self.hi <= 0:
+        if self.b <= 0:
             return -self
-        return Iv(0, max(-self.lo, self.hi))
+        return Iv.grid(0, max(-self.a, self.b), self.e)
 
 
 def expm_interval(A, t, bits):
@@ -1823,7 +1858,7 @@ def expm_interval(A, t, bits):
         if bound * 2 < Fraction(1, 2 ** (bits + 8)):
             break
     rem = bound * norm / (j + 1) * 2
-    P = [[Iv.out(x - rem, x + rem) for x in row] for row in S]
+    P = [[Iv(x - rem, x + rem) for x in row] for row in S]
     for _ in range(s):
         P = mm(P, P)
     return P
@@ -2829,13 +2864,13 @@ def expm_interval_n(A, t, bits):
     s = 0
     while norm > Fraction(1, 2) * 2 ** s:
         s += 1
-    M = [[Iv.out(x * t / 2 ** s, x * t / 2 ** s) for x in row] for row in A]
+    M = [[Iv(x * t / 2 ** s, x * t / 2 ** s) for x in row] for row in A]
     norm = norm / 2 ** s
     S = [[Iv(1 if i == j else 0) for j in range(n)] for i in range(n)]
     term, j, bound = [row[:] for row in S], 0, Fraction(1)
     while True:
         j += 1
-        term = [[sum((term[i][k] * M[k][l] for k in range(n)), Iv(0)) * Iv.out(Fraction(1, j), Fraction(1, j)) for l in range(n)]
+        term = [[sum((term[i][k] * M[k][l] for k in range(n)), Iv(0)) * Iv(Fraction(1, j), Fraction(1, j)) for l in range(n)]
                 for i in range(n)]
         bound = bound * norm / j
         S = [[S[i][l] + term[i][l] for l in range(n)] for i in range(n)]

@@ -171,6 +171,59 @@ def same_rf(a, b):
     return hc.trim(hc.pmul(a.num, b.den)) == hc.trim(hc.pmul(b.num, a.den))
 
 
+class IntervalArithmetic(unittest.TestCase):
+    """hc.Iv (dyadic endpoints, rounded outward to 2^-bits) against Fractions: on random intervals of either
+    sign, through zero, exact points, non-dyadic rationals and each of two precisions mixed, every result
+    encloses the exact result at every pair of endpoints (the extremes of +, -, *, / are taken there) and at
+    a random interior pair, and is at most a few grid steps wider than the exact hull."""
+
+    def test_enclosure(self):
+        import random
+        rnd = random.Random(75)
+
+        def draw():
+            kind = rnd.randrange(5)
+            x = Fraction(rnd.randint(-10 ** 6, 10 ** 6), rnd.choice([1, 3, 7, 1 << 20, 10 ** 9 + 7]))
+            if kind == 0:
+                return x, x
+            if kind == 1:  # through zero
+                return -abs(x) - Fraction(1, 5), abs(x) + Fraction(1, 9)
+            w = Fraction(rnd.randint(0, 10 ** 4), rnd.choice([1, 1 << 30, 10 ** 12]))
+            return x, x + w
+
+        saved = hc.Iv.bits
+        try:
+            for case in range(3000):
+                hc.Iv.bits = rnd.choice([60, 128])
+                (a, b), (c, d) = draw(), draw()
+                X = hc.Iv(a, b)
+                hc.Iv.bits = rnd.choice([60, 128])
+                Y = hc.Iv(c, d)
+                self.assertTrue(X.lo <= a and b <= X.hi and Y.lo <= c and d <= Y.hi)
+                t, u = Fraction(rnd.randint(0, 64), 64), Fraction(rnd.randint(0, 64), 64)
+                xs, ys = (a, b, a + t * (b - a)), (c, d, c + u * (d - c))
+                ops = [(X + Y, lambda p, q: p + q), (X - Y, lambda p, q: p - q), (X * Y, lambda p, q: p * q),
+                       (X * c, lambda p, q: p * c), (c * X, lambda p, q: p * c), (c - X, lambda p, q: c - p),
+                       (-X, lambda p, q: -p)]
+                step = Fraction(1, 2 ** min(60, hc.Iv.bits))
+                scale = 1 + max(abs(x) for x in (a, b, c, d)) ** 2
+                for R, f in ops:  # the extremes at endpoints: the sampled hull is the exact one
+                    vals = [f(p, q) for p in xs for q in ys]
+                    self.assertTrue(R.lo <= min(vals) and max(vals) <= R.hi, (case, a, b, c, d))
+                    self.assertLessEqual(R.hi - R.lo - (max(vals) - min(vals)), 8 * step * scale, (case, R.lo, R.hi))
+                A = X.absolute()
+                self.assertTrue(A.lo <= min(abs(p) for p in xs) and max(abs(p) for p in xs) <= A.hi)
+                self.assertTrue(A.lo >= 0 if not (a < 0 < b) else A.lo == 0)
+                if not (c <= 0 <= d):
+                    Q = X / Y
+                    self.assertTrue(all(Q.lo <= p / q <= Q.hi for p in xs for q in ys), (case, a, b, c, d))
+                else:
+                    with self.assertRaises(ZeroDivisionError):
+                        X / Y
+        finally:
+            hc.Iv.bits = saved
+
+
 class SceneModel(unittest.TestCase):
     """test_mass_on_a_virtual_wall's loop written as a one-DOF scene (the C++ StabilityCheck.SceneByHand)."""
 
