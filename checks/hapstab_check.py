@@ -1833,6 +1833,42 @@ class Iv:
         return Iv.grid(0, max(-self.a, self.b), self.e)
 
 
+def iv_matmul(X, Y):
+    """X Y for matrices whose entries are Iv or exact numbers (made Iv): each entry's sum of products taken on
+    the integers of the endpoints (all at one exponent: the lower ends of the products summed, and the upper),
+    rounded outward once. Encloses X Y for every pair of matrices in X and Y."""
+    def ints(Z):
+        Z = [[z if isinstance(z, Iv) else Iv(z) for z in row] for row in Z]
+        e = max((z.e for row in Z for z in row), default=0)
+        return [[(z.a << (e - z.e), z.b << (e - z.e)) for z in row] for row in Z], e
+    (Xi, ex), (Yi, ey) = ints(X), ints(Y)
+    cols = list(zip(*Yi))
+    out = []
+    for row in Xi:
+        terms = [(k, a, b) for k, (a, b) in enumerate(row) if a or b]
+        r = []
+        for col in cols:
+            lo = hi = 0
+            for k, a, b in terms:
+                c, d = col[k]
+                if a == b:
+                    p, q = a * c, a * d
+                    if a < 0:
+                        p, q = q, p
+                elif c == d:
+                    p, q = a * c, b * c
+                    if c < 0:
+                        p, q = q, p
+                else:
+                    ps = (a * c, a * d, b * c, b * d)
+                    p, q = min(ps), max(ps)
+                lo += p
+                hi += q
+            r.append(Iv.grid(lo, hi, ex + ey))
+        out.append(r)
+    return out
+
+
 def expm_interval(A, t, bits):
     """e^(A t) (A 2x2 rational, t > 0) enclosed entrywise: M = A t/2^s with ||M||_inf <= 1/2, its
     Taylor sum to N terms in exact Fractions plus the remainder bound ||M||^N/N! * 2 (geometric,
@@ -2459,7 +2495,7 @@ def scene_loop_model(model, free=False):
     return out
 
 
-MAX_LOOP_ORDER = 60  # stability-loop: M's order (exact elimination of Q_mid - r I in Fractions)
+MAX_LOOP_ORDER = 100  # stability-loop: M's order (Bareiss on Q_mid - r I: ~20 s at order 98)
 
 
 def scene_dof(v, names, where):
@@ -2870,8 +2906,7 @@ def expm_interval_n(A, t, bits):
     term, j, bound = [row[:] for row in S], 0, Fraction(1)
     while True:
         j += 1
-        term = [[sum((term[i][k] * M[k][l] for k in range(n)), Iv(0)) * Iv(Fraction(1, j), Fraction(1, j)) for l in range(n)]
-                for i in range(n)]
+        term = [[x * Fraction(1, j) for x in row] for row in iv_matmul(term, M)]
         bound = bound * norm / j
         S = [[S[i][l] + term[i][l] for l in range(n)] for i in range(n)]
         if bound * 2 < Fraction(1, 2 ** (bits + 8)):
@@ -2879,7 +2914,7 @@ def expm_interval_n(A, t, bits):
     rem = bound * norm / (j + 1) * 2
     P = [[x + Iv(-rem, rem) for x in row] for row in S]
     for _ in range(s):
-        P = [[sum((P[i][k] * P[k][l] for k in range(n)), Iv(0)) for l in range(n)] for i in range(n)]
+        P = iv_matmul(P, P)
     return P
 
 
@@ -3217,8 +3252,8 @@ def loop_quotient_matrix(loop, L, at, right, bits):
 def stein_shown(P, M):
     """Q = P - M^T P M > 0 for every M in the intervals (iv_positive_definite)."""
     n = len(P)
-    PM = [[sum((Iv(P[i][k]) * M[k][j] for k in range(n) if P[i][k]), Iv(0)) for j in range(n)] for i in range(n)]
-    return iv_positive_definite([[Iv(P[i][j]) - sum((M[k][i] * PM[k][j] for k in range(n)), Iv(0)) for j in range(n)] for i in range(n)])
+    MtPM = iv_matmul(list(zip(*M)), iv_matmul(P, M))
+    return iv_positive_definite([[Iv(P[i][j]) - MtPM[i][j] for j in range(n)] for i in range(n)])
 
 
 def bernstein_stein_shown(Pa, Pb, Ma, Mb):
@@ -3231,10 +3266,10 @@ def bernstein_stein_shown(Pa, Pb, Ma, Mb):
     R = range(n)
 
     def px(P, X):  # P X, P exact
-        return [[sum((X[m][c] * P[i][m] for m in R if P[i][m]), Iv(0)) for c in R] for i in R]
+        return iv_matmul(P, X)
 
     def xt(X, Y):  # X^T Y
-        return [[sum((X[m][a] * Y[m][b] for m in R), Iv(0)) for b in R] for a in R]
+        return iv_matmul(list(zip(*X)), Y)
     PaMa, PaMb, PbMa, PbMb = px(Pa, Ma), px(Pa, Mb), px(Pb, Ma), px(Pb, Mb)
     Y, Z = xt(Mb, PaMa), xt(Ma, PbMb)  # X1' P0 X0 and X0' P1 X1 (their transposes: X0' P0 X1, X1' P1 X0)
     A, B = xt(Ma, PbMa), xt(Mb, PaMb)  # X0' P1 X0, X1' P0 X1
@@ -3332,7 +3367,7 @@ def check_stability_loop(c):
 
 
 MAX_LOOP_COVER = 4096  # stability-loop-max: intervals of the cover (two Stein tests each)
-MAX_LOOP_COVER_WORK = 200000  # and intervals x n^3 (exact elimination per Stein test: ~5 s at 80 intervals of order 8)
+MAX_LOOP_COVER_WORK = 1000000  # and intervals x n^3 (~1.3 s at 193 tests of order 8: ~13 s at the limit)
 
 
 def gain_block(scene, p):
@@ -3485,8 +3520,8 @@ def first_order_start(fo, loops, quotient, M1, M2, lo):
     for e in (Fraction(0), eps):
         u, v = Iv(2 - e), Iv(e - 1)
         M = [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
-        PM = [[sum((Iv(P0[a][b]) * M[b][j] for b in range(n) if P0[a][b]), Iv(0)) for j in range(n)] for a in range(n)]
-        Q = [[Iv(P0[i][j]) - sum((M[a][i] * PM[a][j] for a in range(n)), Iv(0))
+        MtPM = iv_matmul(list(zip(*M)), iv_matmul(P0, M))
+        Q = [[Iv(P0[i][j]) - MtPM[i][j]
               - sum((SK[r][j] * Iv(L[r][i]) + SK[r][i] * Iv(L[r][j]) + Iv(e) * K[r][i] * SK[r][j] for r in range(k)), Iv(0))
               for j in range(n)] for i in range(n)]
         if not iv_positive_definite(Q):
@@ -4645,7 +4680,27 @@ def frac_matrix(ev, key, rows, cols, where="evidence"):
 
 def semidefinite(M, strict):
     """Positive (semi)definite by symmetric elimination: no negative pivot; a zero pivot has a zero row
-    (and is refused when strict)."""
+    (and is refused when strict). Strict: Sylvester's criterion, every leading principal minor > 0, the
+    minors by Bareiss's fraction-free elimination on M scaled to integers (step k's pivot is the k-th leading
+    minor times den^k, each division exact by Sylvester's identity), no gcd on the way."""
+    if strict:
+        den = 1
+        for row in M:
+            for x in row:
+                d = Fraction(x).denominator
+                den = den * d // gcd(den, d)
+        A = [[Fraction(x).numerator * (den // Fraction(x).denominator) for x in row] for row in M]
+        n, prev = len(A), 1
+        for k in range(n):
+            p, Ak = A[k][k], A[k]
+            if p <= 0:
+                return False
+            for i in range(k + 1, n):
+                Ai, f = A[i], A[i][k]
+                for j in range(k + 1, n):
+                    Ai[j] = (p * Ai[j] - f * Ak[j]) // prev
+            prev = p
+        return True
     M = [list(r) for r in M]
     n = len(M)
     for k in range(n):

@@ -1,6 +1,6 @@
 """A stability-loop certificate beyond the old limits (order 160, 64 DOFs): `stability --scene S --certificate`
 on a 32-device contact scene (closed loop of order 224), verified by `hapstab check`; the independent
-checker states its limit (order 60) and does not check it (exit 3, named); two hand edits refuted by
+checker states its limit (order 100) and does not check it (exit 3, named); two hand edits refuted by
 `hapstab check` (w zero: w^T P w = 0; the claim flipped to stable: P indefinite).
 
   large_loop_case.py HAPSTAB SCENE
