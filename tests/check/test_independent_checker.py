@@ -224,6 +224,38 @@ class IntervalArithmetic(unittest.TestCase):
             hc.Iv.bits = saved
 
 
+    def test_positive_definite(self):
+        """hc.semidefinite(., True) (Sylvester by Bareiss on integers) against the leading minors by Fraction
+        elimination (written here), on B^T B + c I with c of either sign and 0 (singular PSD at rank-deficient
+        B), non-dyadic entries, orders 1-12."""
+        import random
+        rnd = random.Random(76)
+
+        def det(A):
+            A, d = [list(r) for r in A], Fraction(1)
+            for k in range(len(A)):
+                piv = next((i for i in range(k, len(A)) if A[i][k] != 0), None)
+                if piv is None:
+                    return Fraction(0)
+                if piv != k:
+                    A[k], A[piv], d = A[piv], A[k], -d
+                d *= A[k][k]
+                for i in range(k + 1, len(A)):
+                    f = A[i][k] / A[k][k]
+                    A[i] = [x - f * y for x, y in zip(A[i], A[k])]
+            return d
+        seen = set()
+        for _ in range(400):
+            n, m = rnd.randint(1, 12), rnd.randint(1, 12)
+            B = [[Fraction(rnd.randint(-9, 9), rnd.choice([1, 3, 8])) for _ in range(n)] for _ in range(m)]
+            c = rnd.choice([Fraction(0), Fraction(rnd.randint(-30, 30), rnd.choice([1, 7, 1024]))])
+            A = [[sum(B[k][i] * B[k][j] for k in range(m)) + (c if i == j else 0) for j in range(n)] for i in range(n)]
+            want = all(det([row[:k] for row in A[:k]]) > 0 for k in range(1, n + 1))
+            self.assertEqual(hc.semidefinite(A, True), want, (A, c))
+            seen.add(want)
+        self.assertEqual(seen, {True, False})
+
+
 class SceneModel(unittest.TestCase):
     """test_mass_on_a_virtual_wall's loop written as a one-DOF scene (the C++ StabilityCheck.SceneByHand)."""
 
