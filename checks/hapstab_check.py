@@ -115,7 +115,7 @@ multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D)
 multidof-coupling-symmetric  the same for a V of one block per DOF designed on the split: (16) by the split as
        multidof-feasible-symmetric, each block's X, Q_E, Q_V a positive multiple of the image of the whole's
        invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class.
-Size limit: multidof-feasible: N + m <= 40 (multidof-coupling: also nV + m <= 40; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 60 (hapstab check: 1024)
+Size limit: multidof-feasible: N + m <= 80 (multidof-coupling: also nV + m <= 80; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 100 (hapstab check: 1024); stability-loop-max: intervals x n^3 <= 10^6
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -4668,7 +4668,7 @@ def operator_owner(model, m):
     return owner
 
 
-MAX_FEASIBLE_ORDER = 40  # N + m: exact elimination in fractions on matrices of that order
+MAX_FEASIBLE_ORDER = 80  # N + m: exact elimination in fractions on matrices of that order (~11 s at 74)
 
 
 def frac_matrix(ev, key, rows, cols, where="evidence"):

@@ -1435,14 +1435,14 @@ class MultidofFeasibleSize(unittest.TestCase):
         # a 1.5 MB certificate of 48 DOFs spent 8 s parsing its 2,304 environment entries before
         # the size limit said "not checked": the limit is now read off A and D first (exit 3),
         # whatever the model holds (here a model that would not even parse)
-        N, m = 40, 2
+        N, m = 80, 2
         c = {"certificate": "hapstab", "version": 1, "kind": "multidof-feasible",
              "model": {"T": "1/100", "environment": {"tf": [["(", "0"], ["0", "1"]]}},
              "claim": {"status": "exact", "feasible": True},
              "evidence": {"A": [["0"] * N for _ in range(N)], "D": [["0"] * m for _ in range(m)]}}
         code, why = hc.check(c)[:2]
         self.assertEqual(code, 3, why)
-        self.assertIn("N + m <= 40", why)
+        self.assertIn("N + m <= 80", why)
 
 
 if __name__ == "__main__":
