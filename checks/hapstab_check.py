@@ -279,40 +279,24 @@ class RF:
 
 
 # ---------------------------------------------------------------- the expression of H(z), as written
+LEX = re.compile(r"[ \t\n\r\x0b\x0c]*(?:([0-9.]+(?:[eE][+-]?[0-9]+)?)|([A-Za-z_][A-Za-z0-9_]*)|([-+*/^()])|(\Z))")
+
+
 def lex(text):
+    """Tokens of an expression: numbers (digits and dots, an exponent e[+-]digits), names (ASCII letters, digits,
+    _), the characters + - * / ^ ( ); ASCII whitespace between (C's isspace, as hapstab's lexer); anything else
+    is malformed."""
     toks, i = [], 0
-    while i < len(text):
-        ch = text[i]
-        if ch.isspace():
-            i += 1
-            continue
-        if ch.isdigit() or ch == '.':
-            j = i
-            while j < len(text) and (text[j].isdigit() or text[j] == '.'):
-                j += 1
-            if j < len(text) and text[j] in 'eE':
-                k = j + 1
-                if k < len(text) and text[k] in '+-':
-                    k += 1
-                if k < len(text) and text[k].isdigit():
-                    while k < len(text) and text[k].isdigit():
-                        k += 1
-                    j = k
-            toks.append(('num', text[i:j]))
-            i = j
-            continue
-        if ch.isascii() and (ch.isalpha() or ch == '_'):
-            j = i
-            while j < len(text) and text[j].isascii() and (text[j].isalnum() or text[j] == '_'):
-                j += 1
-            toks.append(('name', text[i:j]))
-            i = j
-            continue
-        if ch in '+-*/^()':
-            toks.append((ch, ch))
-            i += 1
-            continue
-        raise Malformed("model.H: unexpected character %r" % ch)
+    while True:
+        m = LEX.match(text, i)
+        if m is None:
+            j = i + len(text[i:]) - len(text[i:].lstrip(" \t\n\r\x0b\x0c"))
+            raise Malformed("model.H: unexpected character %r" % text[j])
+        num, name, op, end = m.groups()
+        if end is not None:
+            break
+        toks.append(('num', num) if num is not None else ('name', name) if name is not None else (op, op))
+        i = m.end()
     toks.append(('end', ''))
     return toks
 
@@ -2281,8 +2265,8 @@ def scene_list_values(v, where):
 def scene_expand(text, defs, free, where, memo, chain, lists=None):
     """text with every parameter (but free) replaced by "(its definition)", recursively; the tokens
     are lex's (numbers with an exponent, names, single characters); list parameters first (scene_lists)."""
-    text = scene_lists(text, lists, where)
-    out = []
+    text = scene_lists(text, lists, where, memo)
+    out, size = [], 0
     for kind, tok in lex(text)[:-1]:
         if kind == 'name' and tok in defs and tok != free:
             if tok not in memo:
@@ -2297,7 +2281,8 @@ def scene_expand(text, defs, free, where, memo, chain, lists=None):
             out.append("(" + memo[tok] + ")")
         else:
             out.append(tok)
-        if sum(len(x) for x in out) > 1 << 20:
+        size += len(out[-1]) + 1
+        if size > 1 << 20:
             scene_beyond(where, "its parameters expand to more than 1 MB")
     return " ".join(out)
 
@@ -2744,14 +2729,17 @@ def scene_discrete(t, where, N, T, expand, field):
         Dm = [[g * x for x in r] for r in scene_ss_matrix(ss, "D", N, N, where, T, expand)]
         return "ss", (Am, Bm, Cm, Dm)
     gain = scene_rf(gain_text, T, 'z', where + ".gain")
-    E = []
+    E, read = [], {}  # each distinct text (as expanded) read once: identical DOFs repeat their entries
     for row in scene_diagonal(t, where, N) if "diagonal" in t else scene_text_matrix(t["tf"], N, where + ".tf"):
         E.append([])
         for e in row:
-            f = scene_rf(scene_wall_entry(t, e, expand), T, 'z', where + ".tf") * gain
-            if len(f.num) > len(f.den):
-                raise Malformed("model.scene: %s.tf: an improper entry in z" % where)
-            E[-1].append(f)
+            text = scene_wall_entry(t, e, expand)
+            if text not in read:
+                f = scene_rf(text, T, 'z', where + ".tf") * gain
+                if len(f.num) > len(f.den):
+                    raise Malformed("model.scene: %s.tf: an improper entry in z" % where)
+                read[text] = f
+            E[-1].append(read[text])
     return "tf", E
 
 

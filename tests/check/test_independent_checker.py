@@ -256,6 +256,22 @@ class IntervalArithmetic(unittest.TestCase):
         self.assertEqual(seen, {True, False})
 
 
+class Lexer(unittest.TestCase):
+    def test_tokens_and_what_is_refused(self):
+        """hc.lex (a regular expression since stop 75) on the forms the char-by-char lexer before it gave: an
+        exponent only with digits after it, dotted runs as one number; non-ASCII characters, Unicode digits and
+        whitespace beyond C's isspace are refused by name, as hapstab's lexer (lti/parse.cpp) refuses them."""
+        self.assertEqual(hc.lex("1.5e-3*z^-2 + K_1"), [('num', '1.5e-3'), ('*', '*'), ('name', 'z'), ('^', '^'), ('-', '-'),
+                                                     ('num', '2'), ('+', '+'), ('name', 'K_1'), ('end', '')])
+        self.assertEqual(hc.lex("1e+ x"), [('num', '1'), ('name', 'e'), ('+', '+'), ('name', 'x'), ('end', '')])
+        self.assertEqual(hc.lex("1.2.3e4x\t\n"), [('num', '1.2.3e4'), ('name', 'x'), ('end', '')])
+        self.assertEqual(hc.lex(" \x0b\x0c"), [('end', '')])
+        for bad in ("1\x1c", "\u00a0 1", "\u0663", "x\u00b2", "1 $ 2", "a,b"):
+            with self.assertRaises(hc.Malformed) as e:
+                hc.lex(bad)
+            self.assertIn("unexpected character", str(e.exception))
+
+
 class SceneModel(unittest.TestCase):
     """test_mass_on_a_virtual_wall's loop written as a one-DOF scene (the C++ StabilityCheck.SceneByHand)."""
 
