@@ -97,6 +97,8 @@ TEST(Parse, ErrorsNameTheColumnAndWhatWasExpected) {
   expect_error("1/(z-z)", {"column 2", "division by zero"});
   expect_error("(z-z)^-1", {"division by zero"});
   expect_error("z # 2", {"column 3", "unexpected character '#'"});
+  expect_error("\u0663/z", {"column 1", "unexpected character '\u0663'"});  // a UTF-8 sequence shown whole
+  expect_error("1/z\x1c", {"column 4", "unexpected character byte 0x1c"});  // a control byte by its code
   expect_error("z + s", {"mixes"});
   expect_error("()", {"column 2", "empty parentheses"});
   expect_error("1.2.3", {"malformed number"});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <optional>
@@ -276,6 +277,21 @@ class Parser {
     return checked(base.pow(n), caret, spent);
   }
 
+  // The character at byte i as a reader can see it: a UTF-8 sequence whole ('٣', not its first byte), a
+  // control byte by its code (byte 0x1c).
+  static std::string shown_character(std::string_view src, size_t i) {
+    const auto b = static_cast<unsigned char>(src[i]);
+    if (b < 0x20 || b == 0x7f) {
+      char code[16];
+      std::snprintf(code, sizeof code, "byte 0x%02x", b);
+      return code;
+    }
+    size_t j = i + 1;
+    if (b >= 0x80)
+      while (j < src.size() && j < i + 4 && (static_cast<unsigned char>(src[j]) & 0xc0) == 0x80) ++j;
+    return "'" + std::string(src.substr(i, j - i)) + "'";
+  }
+
   void lex() {
     size_t i = 0;
     while (i < src_.size()) {
@@ -305,8 +321,8 @@ class Parser {
         case '(': k = Tok::lparen; break;
         case ')': k = Tok::rparen; break;
         default:
-          fail({Tok::end, "", col}, std::string("unexpected character '") + c +
-                                        "' (allowed: numbers, names, + - * / ^ and parentheses)");
+          fail({Tok::end, "", col}, "unexpected character " + shown_character(src_, i) +
+                                        " (allowed: numbers, names, + - * / ^ and parentheses)");
       }
       tokens_.push_back({k, std::string(1, c), col});
       ++i;
