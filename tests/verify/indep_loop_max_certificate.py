@@ -18,7 +18,7 @@ tests/check/loop_max_case.py (hi halved, lo raised to hi, a P entry negated, the
 ...) rejected by both as it must be. sup g = 0 (exit 1): rho > 1 at g = 10^-6 of
 the scale. Refusals by name (exit 2) and undecided (exit 3) are counted apart, never as agreement.
 
-  indep_loop_max_certificate.py HAPSTAB [--cases N] [--seed S]
+  indep_loop_max_certificate.py HAPSTAB [--cases N] [--seed S] [--mutants-every K]
 exit 0 when every compared case agrees, else 1.
 """
 import json
@@ -113,6 +113,16 @@ def crossing(rho_at, lo, hi):
 
 
 MUTANTS = [0]  # mutants of the certificates (tests/check/loop_max_case.py's), every one rejected as it must be
+MUTATE = {"every": 1, "case": 0}  # --mutants-every K: the mutants of every K-th case only (the reference on all)
+
+
+def mutants_every(argv):
+    """--mutants-every K (default 1): the mutants take most of a case's time (each through both checkers); a
+    campaign for the reference's counts runs them on every K-th case."""
+    if "--mutants-every" in argv:
+        MUTATE["every"] = int(argv[argv.index("--mutants-every") + 1])
+        if MUTATE["every"] < 1:
+            raise SystemExit("--mutants-every: a whole number >= 1")
 
 
 def checkers_exit(exe, path):
@@ -142,7 +152,7 @@ def judge(exe, cl, verdicts, rho_at, name, bad):
     tol = hi * Q(1, 10 ** 9)
     if b < lo - tol or a > hi + tol:
         return False, "the reference's crossing [%s, %s] is outside [%s, %s]" % (float(a), float(b), float(lo), float(hi)), None
-    for what, m, want in LMC.mutants(cl, name)[1:]:
+    for what, m, want in (LMC.mutants(cl, name)[1:] if MUTATE["case"] % MUTATE["every"] == 0 else []):
         with open(bad, "w") as f:
             json.dump(m, f)
         got = checkers_exit(exe, bad)
@@ -152,6 +162,10 @@ def judge(exe, cl, verdicts, rho_at, name, bad):
             return False, "%s: the checkers exit %s (want %s)" % (what, got, "1 or 2" if want is None else want), None
         MUTANTS[0] += 1
     return True, "", (a, b)
+
+
+def mutants_said():
+    return "its mutants refuted" if MUTATE["case"] % MUTATE["every"] == 0 else "mutants not run (--mutants-every %d)" % MUTATE["every"]
 
 
 def run_case(exe, c, tmp):
@@ -183,19 +197,22 @@ def run_case(exe, c, tmp):
         return ok, what, "sup = 0" if ok else None
     (a, b), lo, hi = ab, Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
     n = len(cl["evidence"]["unstable_at"]["P"])
-    return True, "sup %s in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, its mutants refuted" % (
+    return True, "sup %s in [%.12g, %.12g] (reference crossing %.12g; %d intervals, order %d%s), verified by %s, %s" % (
         name, float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), n,
-        ", %d conserved" % c["conserved"] if c["conserved"] else "", "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)"), \
+        ", %d conserved" % c["conserved"] if c["conserved"] else "", "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)",
+        mutants_said()), \
         "certified sup" + ("" if verdicts == (0, 0) else ", independent beyond its limit")
 
 
 def main(argv):
     cases, seed = cases_and_seed(argv, 100, 1)
+    mutants_every(argv)
     rng = random.Random("%d:indep_loop_max_certificate" % seed)
     counts, bad = {}, 0
     with tempfile.TemporaryDirectory() as tmp:
         for k in range(cases):
             c = draw(rng)
+            MUTATE["case"] = k
             try:
                 ok, what, branch = run_case(argv[1], c, tmp)
             except subprocess.TimeoutExpired:

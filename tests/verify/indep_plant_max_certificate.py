@@ -13,7 +13,7 @@ it must be (a mutant beyond the independent checker's stated limit, exit 3, is n
 (exit 1): rho > 1 at K = 10^-6. Refusals by name (exit 2) and undecided (exit 3)
 are counted apart, never as agreement.
 
-  indep_plant_max_certificate.py HAPSTAB [--cases N] [--seed S]
+  indep_plant_max_certificate.py HAPSTAB [--cases N] [--seed S] [--mutants-every K]   (as indep_loop_max_certificate.py)
 exit 0 when every compared case agrees, else 1.
 """
 import json
@@ -66,20 +66,23 @@ def run_case(exe, c, tmp):
         return ok, what, "sup = 0" if ok else None
     (a, b), lo, hi = ab, Q(cl["claim"]["lo"]), Q(cl["claim"]["hi"])
     fo = "first_order" in cl["evidence"]
-    return True, "sup K in [%.12g, %.12g] (reference crossing %.12g; %d intervals%s, order %d), verified by %s, its mutants rejected" % (
+    return True, "sup K in [%.12g, %.12g] (reference crossing %.12g; %d intervals%s, order %d), verified by %s, %s" % (
         float(lo), float(hi), float((a + b) / 2), len(cl["evidence"]["cover"]), ", the first-order start" if fo else "",
-        len(cl["evidence"]["unstable_at"]["P"]), "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)"), \
+        len(cl["evidence"]["unstable_at"]["P"]), "both" if verdicts == (0, 0) else "hapstab check (beyond the independent one's limit)",
+        ILM.mutants_said()), \
         "certified sup" + (" (first-order start)" if fo else "")
 
 
 def main(argv):
     exe = argv[1]
     cases, seed = cases_and_seed(argv, 12, 1)
+    ILM.mutants_every(argv)
     rng = random.Random("plant-max-certificate:%d" % seed)
     counts, bad = {}, 0
     with tempfile.TemporaryDirectory(prefix="hapstab-plant-max-") as tmp:
         for k in range(cases):
             c = IPL.draw(rng)
+            ILM.MUTATE["case"] = k
             try:
                 ok, what, branch = run_case(exe, c, tmp)
             except subprocess.TimeoutExpired:
