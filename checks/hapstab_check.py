@@ -115,7 +115,7 @@ multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D)
 multidof-coupling-symmetric  the same for a V of one block per DOF designed on the split: (16) by the split as
        multidof-feasible-symmetric, each block's X, Q_E, Q_V a positive multiple of the image of the whole's
        invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class.
-Size limit: multidof-feasible: N + m <= 80 (multidof-coupling: also nV + m <= 80; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 100 (hapstab check: 1024); stability-loop-max: intervals x n^3 <= 10^6
+Size limit: stability-loop-symmetric: 128 DOFs (hapstab check: 512); multidof-feasible: N + m <= 80 (multidof-coupling: also nV + m <= 80; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 100 (hapstab check: 1024); stability-loop-max: intervals x n^3 <= 10^6
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -276,6 +276,10 @@ class RF:
 
     def degree(self):
         return max(len(self.num), len(self.den)) - 1
+
+    def __eq__(self, o):  # reduced, the denominator monic: equal as functions iff equal here
+        return isinstance(o, RF) and self.num == o.num and self.den == o.den
+    __hash__ = None
 
 
 # ---------------------------------------------------------------- the expression of H(z), as written
@@ -2212,9 +2216,9 @@ def scene_lists(text, lists, where, memo=None, chain=frozenset()):
     return text
 
 
-def scene_copies(root):
+def scene_copies(root, max_dofs=64):
     """[[device]] and [[operator]] tables with count = n written out as hapstab's reader does (n copies in
-    place, named NAME[k] or the name's own [i] pattern, "[i]" -> "[k]" in every string); at most 64."""
+    place, named NAME[k] or the name's own [i] pattern, "[i]" -> "[k]" in every string); at most max_dofs."""
     def indexed(v, k):
         if isinstance(v, str):
             return v.replace("[i]", "[%d]" % k)
@@ -2236,8 +2240,8 @@ def scene_copies(root):
             n = t["count"]
             if not isinstance(n, int) or isinstance(n, bool) or n < 1:
                 raise Malformed("model.scene: %s.count: a whole number of copies >= 1" % where)
-            if n > 64:
-                scene_beyond(where + ".count", "%d copies, more than 64" % n)
+            if n > max_dofs:
+                scene_beyond(where + ".count", "%d copies, more than %d" % (n, max_dofs))
             if not isinstance(t.get("name"), str):
                 raise Malformed("model.scene: %s.name: a table with count needs a name: its copies are NAME[1] .. NAME[count]" % where)
             pattern = t["name"] if "[i]" in t["name"] else t["name"] + "[i]"
@@ -2317,7 +2321,7 @@ def scene_siso(v, where):
     return v
 
 
-def scene_read(model, free, coupling=False):
+def scene_read(model, free, coupling=False, max_dofs=64):
     """(root, T, expand, field) of model.scene: the TOML (only the loop's sections and the ignored ones),
     T, and the parameters substituted (model.set replacing definitions; model.name, with free, stays a
     name): expand(text, where) substitutes them in text, field(table, key, where, default) in a key's
@@ -2343,7 +2347,7 @@ def scene_read(model, free, coupling=False):
     T = scene_constant(scene_text(head["T"], "scene.T"), None, "scene.T")
     if T <= 0:
         raise Malformed("model.scene: scene.T: must be > 0")
-    scene_copies(root)
+    scene_copies(root, max_dofs)
     defs, lists = {}, {}
     params = root.get("parameters", {})
     if not isinstance(params, dict):
@@ -2543,7 +2547,7 @@ def own_conserved(model):
     return 1 if effective_device(model)[3].den[0] != 0 else 0
 
 
-def scene_loop_read(model):
+def scene_loop_read(model, max_dofs=64):
     """stability-loop's reading of model.scene: (T, delay, mass, damping, stiffness, operators, E) with
     per DOF the device's m, b plus its m, b, k operators; the tf and ss operators [(ports, Z)], Z
     ("tf", proper RFs in s) or ("ss", (A, B, C, D) as written); E N x N in z (discretised, times gain).
@@ -2551,7 +2555,7 @@ def scene_loop_read(model):
     if "scene" not in model and "plant" in model:
         return plant_loop_read(model)
     only(model, ("scene", "set"), "model")
-    root, T, expand, field = scene_read(model, False, coupling=True)
+    root, T, expand, field = scene_read(model, False, coupling=True, max_dofs=max_dofs)
     devs = root.get("device")
     if not isinstance(devs, list) or not devs or any(not isinstance(d, dict) for d in devs):
         raise Malformed("model.scene: [[device]]: missing or not tables")
@@ -2578,8 +2582,8 @@ def scene_loop_read(model):
         name = d.get("name") if isinstance(d.get("name"), str) else ""
         names += [name if dev["dofs"] == 1 else ""] * dev["dofs"]  # a block of several DOFs: by number
         devices.append(dev)
-    if len(names) > 64:
-        scene_beyond("[[device]]", "%d DOFs, more than 64" % len(names))
+    if len(names) > max_dofs:
+        scene_beyond("[[device]]", "%d DOFs, more than %d" % (len(names), max_dofs))
     ops = []
     tables = root.get("operator", [])
     if not isinstance(tables, list) or any(not isinstance(o, dict) for o in tables):
@@ -2759,19 +2763,25 @@ def scene_diagonal(t, where, N):
              for j in range(N)] for i in range(N)]
 
 
-def realise_columns(G):
-    """(A, B, C, D) of the p x q matrix G (proper RFs): column j over the monic lcm d_j of its
-    denominators in controllable companion form (x_t' = x_(t+1), x_(r-1)' = -sum a_t x_t + u_j), C the
-    strictly proper numerators over d_j, D the direct part."""
-    p, q = len(G), len(G[0])
+def column_lcms(G):
+    """The monic lcm of each column's denominators."""
     cols = []
-    for j in range(q):
+    for j in range(len(G[0])):
         d = [Fraction(1)]
-        for i in range(p):
-            g = pgcd(d, G[i][j].den)
-            d = pdivmod(pmul(d, G[i][j].den), g)[0]
+        for row in G:
+            g = pgcd(d, row[j].den)
+            d = pdivmod(pmul(d, row[j].den), g)[0]
             d = [x / d[-1] for x in d]
         cols.append(d)
+    return cols
+
+
+def realise_columns(G, over=None):
+    """(A, B, C, D) of the p x q matrix G (proper RFs): column j over the monic lcm d_j of its
+    denominators (or over[j], a monic multiple of it) in controllable companion form (x_t' = x_(t+1),
+    x_(r-1)' = -sum a_t x_t + u_j), C the strictly proper numerators over d_j, D the direct part."""
+    p, q = len(G), len(G[0])
+    cols = column_lcms(G) if over is None else over
     n = sum(len(d) - 1 for d in cols)
     A = [[Fraction(0)] * n for _ in range(n)]
     B = [[Fraction(0)] * q for _ in range(n)]
@@ -3195,10 +3205,13 @@ def loop_quotient(model):
     conserved quantities L (at their indices `at`), the wall's and the coupling's uncontrollable z = 1
     (left eigenvectors of M, eigenvalue 1) and their unobservable z = 1 outside those (`right`), the
     checker's own count `own`, and the blocks' realisations [(A, B, C, D) of E, of V]."""
-    loop = scene_loop_read(model)
+    return loop_quotient_of(scene_loop_read(model), own_conserved(model))
+
+
+def loop_quotient_of(loop, own=0):
+    """loop_quotient of a loop read already (`own`: the checker's own conserved quantities)."""
     A, B, _ = loop_plant(*loop[2:7])
     L, at = conserved_quantities(A, B)
-    own = own_conserved(model)
     if len(at) < own:
         raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
     ns = len(A)
@@ -3323,18 +3336,23 @@ def check_stability_loop(c):
         raise Malformed("claim.status: missing or not \"certified\"")
     if not isinstance(claim.get("stable"), bool):
         raise Malformed("claim.stable: missing or not true/false")
-    stable = claim["stable"]
-    loop, L, at, right, own, _ = loop_quotient(model)
+    return stein_verdict(loop_quotient(model), evidence, claim["stable"], k, "evidence")
+
+
+def stein_verdict(quotient, evidence, stable, k, where):
+    """check_stability_loop's test on a loop (loop_quotient's tuple) from evidence {P[, w]} (named `where`):
+    its k conserved quantities, Q = P - M^T P M > 0 in intervals, P > 0 or w^T P w < 0."""
+    loop, L, at, right, own, _ = quotient
     if len(at) + len(right) - own != k:
         return False, ("claim: %d conserved quantities, but the loop has %d (l^T [A B] = 0 of the plant, l^T [A - I, B] = 0 "
                        "of the wall or coupling, exactly: each an eigenvalue 1 of M)" % (k, len(at) + len(right) - own))
-    P = symmetric_evidence(evidence, "evidence", None)
+    P = symmetric_evidence(evidence, where, None)
     n = len(P)
     if stable == ("w" in evidence):
-        raise Malformed("evidence.w: only for NOT stable" if stable else "evidence.w: missing (NOT stable needs w with w^T P w < 0)")
+        raise Malformed(where + (".w: only for NOT stable" if stable else ".w: missing (NOT stable needs w with w^T P w < 0)"))
     if stable:
         if not semidefinite(P, True):
-            return False, "claim: stable, but evidence.P is not positive definite"
+            return False, "claim: stable, but %s.P is not positive definite" % where
         sign = "P > 0"
     else:
         w = frac_matrix({"w": [evidence["w"]]}, "w", 1, n)[0]
@@ -3345,13 +3363,143 @@ def check_stability_loop(c):
     for bits in (128, 256, 512):
         M = loop_quotient_matrix(loop, L, at, right, bits)
         if len(M) != n:
-            raise Malformed("evidence.P: order %d, the loop's %d%s" % (n, len(M), " (on the quotient by its conserved quantities)" if at else ""))
+            raise Malformed("%s.P: order %d, the loop's %d%s" % (where, n, len(M), " (on the quotient by its conserved quantities)" if at else ""))
         if stein_shown(P, M):
             return True, "%s (closed loop of %d states built from the model%s%s, intervals at %d bits; P - M^T P M > 0 and %s)" % (
                 "stable" if stable else "NOT stable", n + len(at), ", on the quotient by its conserved quantities (k = %d)" % k if k else "",
                 ", the position integrated here set to P's output (its own conserved quantity: the model as written)" if own else "",
                 bits, sign)
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
+
+
+MAX_SYMMETRIC_DOFS = 512  # stability-loop-symmetric: DOFs of the kind (hapstab check's limit too)
+MAX_SYMMETRIC_READ = 128  # and this checker's: E's N^2 entries expanded and compared, ~N^3 (19 s at 128, 143 s at 256)
+
+
+def split_loop(loop, classes):
+    """stability-loop-symmetric's split (C++ check/stability_loop_symmetric_check.hpp) of a scene loop by the
+    partition `classes` (0-based DOFs): (fixed loop, [zero-sum loop or None per class], sizes), or a string
+    naming the first difference when the loop is not invariant under the classes' permutations. The fixed loop:
+    one DOF per class (its first DOF's device and operators) under E_F[a][a] = E(f_a, f_a) + (k_a - 1) E(f_a,
+    s_a), E_F[a][b] = k_b E(f_a, f_b); class a's zero-sum loop: f_a under E(f_a, f_a) - E(f_a, s_a); each
+    column over the whole's column lcm (the loop's states are the whole's, restricted)."""
+    T, d, devices, mass, damp, stiff, ops, E, V = loop
+    if V is not None:
+        scene_beyond("[coupling]", "beyond stability-loop-symmetric (the split compares the environment only)")
+    if E[0] != "tf":
+        scene_beyond("environment.ss", "beyond stability-loop-symmetric (the split compares E's entries, a tf)")
+    if any(dev["dofs"] != 1 for dev in devices) or any(len(ports) != 1 for ports, _ in ops):
+        scene_beyond("[[device]] / [[operator]]", "a block on several DOFs: beyond stability-loop-symmetric (one DOF each)")
+    N, E = len(mass), E[1]
+    if not isinstance(classes, list) or any(not isinstance(c, list) or not c for c in classes):
+        raise Malformed("evidence.classes: a list of non-empty lists of DOF indices (0-based)")
+    class_of = [None] * N
+    for a, c in enumerate(classes):
+        for i in c:
+            if not isinstance(i, int) or isinstance(i, bool) or not 0 <= i < N:
+                raise Malformed("evidence.classes: %r is not one of the scene's DOFs 0 .. %d" % (i, N - 1))
+            if class_of[i] is not None:
+                raise Malformed("evidence.classes: DOF %d in two classes" % i)
+            class_of[i] = a
+    if None in class_of:
+        raise Malformed("evidence.classes: not every DOF is in a class (a partition of the DOFs)")
+
+    def dof(i):  # device i is DOF i (one DOF each); its operators in order
+        return (mass[i], damp[i], stiff[i], devices[i]["block"], [Z for ports, Z in ops if ports[0] == i])
+    f = [c[0] for c in classes]
+    s = [c[1] if len(c) > 1 else None for c in classes]
+    for a, c in enumerate(classes):
+        for i in c:
+            if dof(i) != dof(f[a]):
+                return "DOF %d is not identical to DOF %d of its class (device or operators)" % (i, f[a])
+    for i in range(N):
+        for j in range(N):
+            a, b = class_of[i], class_of[j]
+            ri, rj = f[a], (f[a] if i == j else s[a] if a == b else f[b])
+            if E[i][j] != E[ri][rj]:
+                return "the environment is not invariant under the classes: E[%d][%d] != E[%d][%d]" % (i + 1, j + 1, ri + 1, rj + 1)
+    over = [column_lcms([[E[f[a]][f[b]]] for a in range(len(classes))] + ([[E[f[b]][s[b]]]] if s[b] is not None else []))[0]
+            for b in range(len(classes))]
+
+    def block(reps, tf, cols):
+        bops = [([reps.index(ports[0])], Z) for ports, Z in ops if ports[0] in reps]
+        bdevs = [dict(devices[i], first=a) for a, i in enumerate(reps)]
+        return (T, d, bdevs, [mass[i] for i in reps], [damp[i] for i in reps], [stiff[i] for i in reps], bops,
+                ("ss", realise_columns(tf, cols)), None)
+    EF = [[(E[f[a]][f[a]] + RF([Fraction(len(classes[a]) - 1)]) * E[f[a]][s[a]] if s[a] is not None else E[f[a]][f[a]])
+           if a == b else RF([Fraction(len(classes[b]))]) * E[f[a]][f[b]] for b in range(len(classes))] for a in range(len(classes))]
+    zero_sum = [block([f[a]], [[E[f[a]][f[a]] - E[f[a]][s[a]]]], [over[a]]) if s[a] is not None else None for a in range(len(classes))]
+    return block(f, EF, over), zero_sum, [len(c) for c in classes]
+
+
+def check_stability_loop_symmetric(c):
+    """stability-loop-symmetric (C++ check/stability_loop_symmetric_check.hpp): the scene's loop split by the
+    permutations of identical DOFs (evidence.classes; the invariance checked here on the scene as written), each
+    small loop's Stein evidence verified as stability-loop's (stein_verdict): stable, every block and the
+    conserved quantities k_F + sum_a (k_a - 1) k_a'; NOT stable, one block."""
+    model, claim, evidence = parts(c)
+    only(claim, ("quantity", "status", "stable", "conserved"), "claim")
+    only(evidence, ("classes", "blocks"), "evidence")
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\"")
+    if not isinstance(claim.get("stable"), bool):
+        raise Malformed("claim.stable: missing or not true/false")
+    stable = claim["stable"]
+    if not stable and "conserved" in claim:
+        raise Malformed("claim.conserved: only with stable (NOT stable is shown by one block)")
+    k = claim.get("conserved", 0)
+    if not isinstance(k, int) or isinstance(k, bool) or k < 0:
+        raise Malformed("claim.conserved: not an integer >= 0")
+    if "scene" not in model:
+        raise Malformed("model.scene: missing (this kind splits a scene's DOFs)")
+    devices = scene_read(model, False, coupling=True, max_dofs=MAX_SYMMETRIC_DOFS)[0].get("device")
+    n = len(devices) if isinstance(devices, list) else 0  # one DOF each, or refused below
+    if n > MAX_SYMMETRIC_READ:
+        raise TooLarge("model.scene: %d devices, above this checker's limit %d for stability-loop-symmetric (reading E's N^2 "
+                       "entries costs ~N^3: 19 s at 128)" % (n, MAX_SYMMETRIC_READ))
+    split = split_loop(scene_loop_read(model, MAX_SYMMETRIC_DOFS), evidence.get("classes"))
+    if isinstance(split, str):
+        return False, "evidence.classes: " + split
+    fixed, zero_sum, sizes = split
+    blocks = evidence.get("blocks")
+    needed = 1 + sum(1 for z in zero_sum if z is not None)
+    if not isinstance(blocks, list) or len(blocks) != (needed if stable else 1):
+        raise Malformed("evidence.blocks: %s" % ("stable needs every block: the fixed space and each class of two DOFs or more, %d" % needed
+                                                if stable else "NOT stable is shown by one block"))
+    seen, total, said = set(), 0, []
+    for b, blk in enumerate(blocks):
+        where = "evidence.blocks[%d]" % (b + 1)
+        if not isinstance(blk, dict):
+            raise Malformed(where + ": not an object")
+        only(blk, ("space", "class", "conserved", "P", "w"), where)
+        if blk.get("space") == "fixed":
+            if "class" in blk:
+                raise Malformed(where + ".class: only for a zero-sum block")
+            slot, loop, copies = None, fixed, 1
+        elif blk.get("space") == "zero-sum":
+            a = blk.get("class")
+            if not isinstance(a, int) or isinstance(a, bool) or not 0 <= a < len(sizes):
+                raise Malformed(where + ".class: not a class index")
+            if zero_sum[a] is None:
+                raise Malformed(where + ".class: class %d has one DOF (no zero-sum space)" % a)
+            slot, loop, copies = a, zero_sum[a], sizes[a] - 1
+        else:
+            raise Malformed(where + ".space: missing or not \"fixed\" / \"zero-sum\"")
+        if slot in seen:
+            raise Malformed(where + ": a block given twice")
+        seen.add(slot)
+        kb = blk.get("conserved", 0)
+        if not isinstance(kb, int) or isinstance(kb, bool) or kb < 0:
+            raise Malformed(where + ".conserved: not an integer >= 0")
+        ok, why = stein_verdict(loop_quotient_of(loop), blk, stable, kb, where)
+        if not ok:
+            return False, "%s (%s): %s" % (where, blk["space"], why)
+        total += copies * kb
+        said.append("%s%s: %s" % (blk["space"], "" if slot is None else " of class %d (x%d)" % (slot, copies), why))
+    if stable and total != k:
+        return False, "claim: %d conserved quantities, but the blocks have %d (k_F + sum_a (k_a - 1) k_a')" % (k, total)
+    return True, "%s by the split of %d DOFs into %d classes of identical DOFs (invariance checked exactly on the scene as written): %s" % (
+        "stable" if stable else "NOT stable", sum(sizes), len(sizes), "; ".join(said))
 
 
 MAX_LOOP_COVER = 4096  # stability-loop-max: intervals of the cover (two Stein tests each)
@@ -5262,7 +5410,8 @@ def check(c):
                     "passivity-level": check_passivity_level,
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max,
-                    "stability-loop": check_stability_loop, "stability-loop-max": check_stability_loop_max, "wedge": check_wedge}
+                    "stability-loop": check_stability_loop, "stability-loop-max": check_stability_loop_max,
+                    "stability-loop-symmetric": check_stability_loop_symmetric, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:
             raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))

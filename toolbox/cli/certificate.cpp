@@ -12,6 +12,7 @@
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/check/stability_loop_symmetric_check.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -772,9 +773,94 @@ SchurDecision stein_evidence(const std::vector<std::vector<std::pair<rational, r
   return d;
 }
 
+namespace {
+
+nlohmann::json exact_rows(const Eigen::MatrixXd& A) {
+  nlohmann::json r = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index k = 0; k < A.cols(); ++k) row.push_back(exact_rational(A(i, k)).str());
+    r.push_back(row);
+  }
+  return r;
+}
+
+// The Stein evidence of one small loop of the split (the checker's own matrix, as stability_loop_certificate
+// does for the whole): {space[, class], conserved, P[, w]} and its verdict.
+std::pair<bool, nlohmann::json> symmetric_block(const check::detail::SceneLoop& loop, const std::string& space, int cls) {
+  check::detail::LoopMatrix lm;
+  {
+    flint::BallPrecision scope(128);
+    lm = check::detail::loop_matrix(loop, 128);
+  }
+  std::vector<std::vector<std::pair<rational, rational>>> M(lm.M.size());
+  for (size_t i = 0; i < lm.M.size(); ++i)
+    for (const auto& x : lm.M[i]) {
+      const auto e = x.bounds();
+      M[i].emplace_back(e.lo, e.hi);
+    }
+  const SchurDecision d = stein_evidence(M);
+  if (!d.stable)
+    throw InputError("--certificate: no Stein certificate for the " + space + " block's closed-loop matrix (" + d.why + "): no certificate");
+  nlohmann::json b{{"space", space}};
+  if (cls >= 0) b["class"] = cls;
+  if (lm.conserved > 0) b["conserved"] = lm.conserved;
+  b["P"] = exact_rows(d.P);
+  if (!*d.stable) b["w"] = exact_rows(d.w.transpose())[0];
+  return {*d.stable, b};
+}
+
+// Beyond 64 DOFs: kind stability-loop-symmetric (check/stability_loop_symmetric_check.hpp), the small loops of the
+// split by identical DOFs, each with its Stein evidence; NOT stable by the first block that is.
+nlohmann::json stability_loop_symmetric_certificate(const nlohmann::json& model, const check::detail::SceneLoop& L, bool stable) {
+  const auto classes = check::detail::identical_dofs(L);
+  std::string why;
+  const auto split = check::detail::split_loop(L, classes, why);
+  if (!split)
+    throw InputError("--certificate: " + std::to_string(L.dofs()) + " DOFs, more than a whole loop's certificate takes (64), and the "
+                     "split by identical DOFs does not apply (" + why + "): no certificate");
+  nlohmann::json j = certificate_header("stability-loop-symmetric");
+  j["model"] = model;
+  nlohmann::json blocks = nlohmann::json::array();
+  long total = 0;
+  bool whole = true;
+  for (size_t a = 0; a <= split->sizes.size(); ++a) {
+    if (a > 0 && split->sizes[a - 1] < 2) continue;
+    auto [holds, b] = a == 0 ? symmetric_block(split->fixed, "fixed", -1) : symmetric_block(split->zero_sum[a - 1], "zero-sum", int(a - 1));
+    const long copies = a == 0 ? 1 : static_cast<long>(split->sizes[a - 1]) - 1;
+    total += copies * b.value("conserved", 0L);
+    whole = whole && holds;
+    if (!holds && !stable) {  // one block shows it
+      blocks = nlohmann::json::array({b});
+      break;
+    }
+    blocks.push_back(b);
+  }
+  if (whole != stable)
+    throw NumericalError("--certificate: the checker's split and the loop as written got different verdicts (a defect): no certificate");
+  j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop (devices, operators, zero-order hold, force = -z^-n E(z) "
+                             "x(kT)), shown on the small loops of its split by the permutations of identical DOFs, built by the checker"},
+                {"stable", stable},
+                {"status", "certified"}};
+  if (stable && total > 0) j["claim"]["conserved"] = total;
+  j["evidence"] = {{"classes", classes}, {"blocks", blocks}};
+  verify_before_writing(j);
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable) {
   nlohmann::json j = certificate_header("stability-loop");
   j["model"] = loop_model_json(text, T);
+  if (!text.scene.empty()) {  // beyond a whole loop's 64 DOFs: the split's certificate
+    std::optional<check::detail::SceneLoop> L;
+    try {
+      L = check::detail::read_scene_loop(j["model"], check::detail::kMaxSymmetricDofs);
+    } catch (const InputError&) {  // refused by name below, as the whole loop's reading says
+    }
+    if (L && L->dofs() > 64) return stability_loop_symmetric_certificate(j["model"], *L, stable);
+  }
   check::SceneLoopMatrix sm;
   try {
     sm = check::scene_loop_matrix(j["model"], 128);  // on the quotient by the conserved quantities
@@ -788,15 +874,6 @@ nlohmann::json stability_loop_certificate(const StabilityText& text, const ratio
   if (*d.stable != stable)
     throw NumericalError("--certificate: the checker's closed-loop matrix and the loop as written got different verdicts (a "
                          "defect): no certificate");
-  auto rows = [](const Eigen::MatrixXd& A) {
-    nlohmann::json r = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < A.rows(); ++i) {
-      nlohmann::json row = nlohmann::json::array();
-      for (Eigen::Index k = 0; k < A.cols(); ++k) row.push_back(exact_rational(A(i, k)).str());
-      r.push_back(row);
-    }
-    return r;
-  };
   j["claim"] = {{"quantity", "Schur stability of the scene's sampled loop (devices, operators, zero-order hold, "
                              "force = -z^-n E(z) x(kT)), its closed-loop matrix built by the checker"},
                 {"stable", stable},
@@ -808,8 +885,8 @@ nlohmann::json stability_loop_certificate(const StabilityText& text, const ratio
                              "(l^T [A B] = 0: each an eigenvalue 1 of M) set aside: stable = every other mode inside the unit "
                              "circle (the loop settles to the equilibrium they select, not to 0), NOT stable = one outside it";
   }
-  j["evidence"] = {{"P", rows(d.P)}};
-  if (!stable) j["evidence"]["w"] = rows(d.w.transpose())[0];
+  j["evidence"] = {{"P", exact_rows(d.P)}};
+  if (!stable) j["evidence"]["w"] = exact_rows(d.w.transpose())[0];
   verify_before_writing(j);
   return j;
 }

@@ -235,8 +235,8 @@ void index_strings(toml::node& n, const std::string& k) {
 
 // [[device]] and [[operator]] tables with count = n written out as hapstab's reader does (scene/reader.cpp's
 // table_copies): n copies in place, named NAME[k] (or the name's own [i] pattern), "[i]" -> "[k]" in every
-// string. At most 64 copies (the checkers' DOF limit).
-void write_out_copies(toml::table& root) {
+// string. At most max_dofs copies (the checkers' DOF limit).
+void write_out_copies(toml::table& root, size_t max_dofs) {
   for (const char* key : {"device", "operator"}) {
     auto* arr = root[key].as_array();
     if (!arr) continue;
@@ -250,7 +250,7 @@ void write_out_copies(toml::table& root) {
       const std::string where = std::string(key) + "[" + std::to_string(i + 1) + "]";
       const auto* n = t->get("count")->as_integer();
       if (!n || n->get() < 1) malformed(where + ".count", "a whole number of copies >= 1");
-      if (n->get() > static_cast<int64_t>(kMaxDofs)) beyond(where + ".count", std::to_string(n->get()) + " copies, more than " + std::to_string(kMaxDofs));
+      if (n->get() > static_cast<int64_t>(max_dofs)) beyond(where + ".count", std::to_string(n->get()) + " copies, more than " + std::to_string(max_dofs));
       const auto* name = (*t)["name"].as_string();
       if (!name) malformed(where + ".name", "a table with count needs a name: its copies are NAME[1] .. NAME[count]");
       const std::string own = name->get(), pattern = own.find("[i]") == std::string::npos ? own + "[i]" : own;
@@ -266,7 +266,7 @@ void write_out_copies(toml::table& root) {
   }
 }
 
-toml::table parse_scene(const std::string& text, bool coupling = false) {
+toml::table parse_scene(const std::string& text, bool coupling = false, size_t max_dofs = kMaxDofs) {
   if (text.size() > kMaxSceneBytes) beyond("the scene", "more than 1 MB");
   for (size_t at = 0, dots = 0; at <= text.size(); ++at) {
     if (at == text.size() || text[at] == '\n') dots = 0;
@@ -287,7 +287,7 @@ toml::table parse_scene(const std::string& text, bool coupling = false) {
   }
   if (const auto* m = root["multidof"].as_table(); m && m->contains("perturb_C"))  // it changes E (multidof commands only)
     beyond("multidof.perturb_C", "Sec. VI's perturbed environment, which stability does not model");
-  write_out_copies(root);
+  write_out_copies(root, max_dofs);
   return root;
 }
 
@@ -624,20 +624,23 @@ SceneLoop::Discrete read_discrete(const toml::table& t, const std::string& where
     return D;
   }
   const RationalFunction<rational> gain = parse_in(gain_text, 'z', T, where + ".gain");
-  std::map<std::string, RationalFunction<rational>> read;  // each text once: a written-out contact scene repeats one N^2 - N times
+  // each text once, as expanded: a written-out contact scene repeats one N^2 - N times, and identical DOFs (list
+  // values equal) give equal texts
+  std::map<std::string, RationalFunction<rational>> read;
   for (const auto& row : t.contains("diagonal") ? diagonal_texts(t, where, N) : text_matrix(*t.get("tf"), N, where + ".tf")) {
     D.tf.emplace_back();
     for (const auto& e : row) {
-      auto it = read.find(e);
+      // read_wall's discretisation, entry by entry
+      toml::table one;
+      one.insert("tf", e);
+      for (const char* key : {"domain", "method"})
+        if (t.contains(key)) one.insert(key, *t.get(key));
+      const std::string text = read_wall(&one, p);
+      auto it = read.find(text);
       if (it == read.end()) {
-        // read_wall's discretisation, entry by entry
-        toml::table one;
-        one.insert("tf", e);
-        for (const char* key : {"domain", "method"})
-          if (t.contains(key)) one.insert(key, *t.get(key));
-        const RationalFunction<rational> f = parse_in(read_wall(&one, p), 'z', T, where + ".tf") * gain;
+        const RationalFunction<rational> f = parse_in(text, 'z', T, where + ".tf") * gain;
         if (!proper(f)) malformed(where + ".tf", "an improper entry in z");
-        it = read.emplace(e, f).first;
+        it = read.emplace(text, f).first;
       }
       D.tf.back().push_back(it->second);
     }
@@ -719,11 +722,11 @@ SceneLoop read_plant_loop(const nlohmann::json& model) {
   return out;
 }
 
-SceneLoop read_scene_loop(const nlohmann::json& model) {
+SceneLoop read_scene_loop(const nlohmann::json& model, size_t max_dofs) {
   if (!model.contains("scene") && model.contains("plant")) return read_plant_loop(model);
   only_fields(model, {"scene", "set"}, "model");
   if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string (the scene's TOML text)");
-  const toml::table root = parse_scene(model.at("scene").get<std::string>(), true);
+  const toml::table root = parse_scene(model.at("scene").get<std::string>(), true, max_dofs);
   const auto* header = root["scene"].as_table();
   if (!header || !header->contains("T")) malformed("[scene].T", "missing (the sample period)");
   only_keys(*header, {"name", "description", "T"}, "scene");
@@ -761,7 +764,7 @@ SceneLoop read_scene_loop(const nlohmann::json& model) {
     for (size_t j = 0; j < dev.dofs; ++j) names.push_back(dev.dofs == 1 ? dev.name : "");  // a block of several DOFs: by number
     out.devices.push_back(std::move(dev));
   }
-  if (names.size() > kMaxDofs) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than " + std::to_string(kMaxDofs));
+  if (names.size() > max_dofs) beyond("[[device]]", std::to_string(names.size()) + " DOFs, more than " + std::to_string(max_dofs));
   const toml::array& ops = tables(root, "operator");
   for (size_t i = 0; i < ops.size(); ++i) read_loop_operator(*ops[i].as_table(), "operator[" + std::to_string(i + 1) + "]", names, p, T, out);
   const auto* env = root["environment"].as_table();

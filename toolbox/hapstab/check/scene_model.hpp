@@ -94,13 +94,14 @@ struct SceneLoop {
   size_t dofs() const { return mass.size(); }
 };
 
-/// model.scene read as above (model.set overrides parameters); or, for a model without a scene, the
+/// model.scene read as above (model.set overrides parameters; at most max_dofs DOFs, written out: 64, or the
+/// 512 of stability-loop-symmetric, which reads N^2 entries but builds small loops); or, for a model without a scene, the
 /// one-DOF loop of `stability --plant P --H H [--operator Z] --delay n` as written ({plant, H,
 /// operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), of relative degree
 /// >= 2 (else beyond); without a pole of P_eff at s = 0, the integrated position carries one conserved
 /// quantity of the checker's own (own_conserved = 1: on its quotient, position = P_eff's output, the
 /// model as written). InputError naming what is malformed or beyond this reading.
-SceneLoop read_scene_loop(const nlohmann::json& model);
+SceneLoop read_scene_loop(const nlohmann::json& model, size_t max_dofs = 64);
 
 /// `model` itself when it has no "scene" field; else the loop model {plant, H[, operator], set: {},
 /// T, delay} (plus model.name, copied, when `free` is true: stability-max's K) of the scene in

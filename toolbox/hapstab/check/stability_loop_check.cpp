@@ -20,6 +20,17 @@
 
 namespace hapstab::check {
 
+std::vector<Polynomial<rational>> detail::column_lcms(const std::vector<std::vector<RationalFunction<rational>>>& G) {
+  const size_t p = G.size(), q = G.empty() ? 0 : G[0].size();
+  std::vector<Polynomial<rational>> d(q, Polynomial<rational>{rational(1)});
+  for (size_t j = 0; j < q; ++j)
+    for (size_t i = 0; i < p; ++i) {
+      const Polynomial<rational>& den = G[i][j].den();
+      d[j] = divmod(d[j] * den, gcd(d[j], den)).first.monic();
+    }
+  return d;
+}
+
 namespace {
 
 using P = Polynomial<rational>;
@@ -38,18 +49,13 @@ struct Realisation {
 
 // G (p x q, proper) column by column: column j over the monic lcm d_j of its denominators, in
 // controllable companion form (x_t' = x_{t+1}, x_{r-1}' = -sum a_t x_t + u_j: 1/d_j from u_j to x_0,
-// x_t = s^t x_0), the strictly proper numerators read off as C, the direct part as D.
-Realisation realise(const std::vector<std::vector<RF>>& G) {
+// x_t = s^t x_0), the strictly proper numerators read off as C, the direct part as D. With `over`, column j
+// over over[j] instead (monic, a multiple of every denominator of the column: checked below).
+Realisation realise(const std::vector<std::vector<RF>>& G, const std::vector<P>& over = {}) {
   const size_t p = G.size(), q = G.empty() ? 0 : G[0].size();
-  std::vector<P> d(q, P{rational(1)});
+  std::vector<P> d = over.empty() ? detail::column_lcms(G) : over;
   size_t total = 0;
-  for (size_t j = 0; j < q; ++j) {
-    for (size_t i = 0; i < p; ++i) {
-      const P& den = G[i][j].den();
-      d[j] = divmod(d[j] * den, gcd(d[j], den)).first.monic();
-    }
-    total += static_cast<size_t>(d[j].degree());
-  }
+  for (size_t j = 0; j < q; ++j) total += static_cast<size_t>(d[j].degree());
   Realisation R{rational_matrix::zeros(total, total), rational_matrix::zeros(total, q), rational_matrix::zeros(p, total),
                 rational_matrix::zeros(p, q)};
   size_t off = 0;
@@ -459,6 +465,17 @@ std::vector<std::vector<T>> assemble(const Assembly& a, const std::vector<std::v
 
 }  // namespace
 
+detail::SceneLoop::Discrete detail::column_realisation(const std::vector<std::vector<RF>>& G, const std::vector<P>& over) {
+  Realisation R = realise(G, over);
+  detail::SceneLoop::Discrete b;
+  b.is_ss = true;
+  b.A = std::move(R.A);
+  b.B = std::move(R.B);
+  b.C = std::move(R.C);
+  b.D = std::move(R.D);
+  return b;
+}
+
 namespace detail {
 
 LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
@@ -861,26 +878,29 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
   if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
   const bool stable = claim.at("stable").get<bool>();
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, static_cast<long>(kMaxOrder)) : 0;
-  const detail::SceneLoop L = detail::read_scene_loop(model);
-  const Mat Pm = detail::exact_matrix(evidence, "P", "evidence", kMaxOrder);
-  if (Pm.empty() || Pm[0].size() != Pm.size()) throw InputError("evidence.P: not a square matrix");  // [[]] once reached the test below
+  return detail::stein_verdict(detail::read_scene_loop(model), evidence, stable, conserved, "evidence");
+}
+
+Verdict detail::stein_verdict(const SceneLoop& L, const nlohmann::json& evidence, bool stable, long conserved, const std::string& where) {
+  const Mat Pm = detail::exact_matrix(evidence, "P", where, kMaxOrder);
+  if (Pm.empty() || Pm[0].size() != Pm.size()) throw InputError(where + ".P: not a square matrix");  // [[]] once reached the test below
   // before anything is computed in balls (e^{AT} of a 128-DOF plant takes seconds): the quotient keeps at least
   // one state per DOF (rank [A B] >= N: each DOF's force enters its own velocity; a block's z = 1 rows and
   // vectors at most its states), so a P of lower order cannot be the loop's
   if (Pm.size() < L.dofs())
-    throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", below the loop's " + std::to_string(L.dofs()) +
+    throw InputError(where + ".P: order " + std::to_string(Pm.size()) + ", below the loop's " + std::to_string(L.dofs()) +
                      " DOFs (its matrix keeps at least one state per DOF)");
-  if (!rational_matrix::symmetric(Pm)) throw InputError("evidence.P: not symmetric");
-  if (stable == evidence.contains("w")) throw InputError(stable ? "evidence.w: only for NOT stable" : "evidence.w: missing (NOT stable needs w with w^T P w < 0)");
+  if (!rational_matrix::symmetric(Pm)) throw InputError(where + ".P: not symmetric");
+  if (stable == evidence.contains("w")) throw InputError(where + (stable ? ".w: only for NOT stable" : ".w: missing (NOT stable needs w with w^T P w < 0)"));
   std::string sign;
   if (stable) {
     // exactly for small P; beyond, by the congruence test (exact elimination of large dyadic P is slow)
     const bool pd = Pm.size() <= 24 ? rational_matrix::positive_definite(Pm, true) : detail::positive_definite_within(Pm, rational(0));
-    if (!pd) return {false, "claim: stable, but evidence.P is not shown positive definite"};
+    if (!pd) return {false, "claim: stable, but " + where + ".P is not shown positive definite"};
     sign = "P > 0";
   } else {
-    const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({evidence.at("w")})}}, "w", "evidence", kMaxOrder);
-    if (w[0].size() != Pm.size()) throw InputError("evidence.w: not of P's order");
+    const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({evidence.at("w")})}}, "w", where, kMaxOrder);
+    if (w[0].size() != Pm.size()) throw InputError(where + ".w: not of P's order");
     const Mat Pw = rational_matrix::mul(Pm, rational_matrix::transpose(w));
     rational q = 0;
     for (size_t i = 0; i < Pm.size(); ++i) q += w[0][i] * Pw[i][0];
@@ -897,7 +917,7 @@ Verdict check_stability_loop(const nlohmann::json& cert) {
                          "exactly: each an eigenvalue 1 of M)"};
     const BallRows& M = lm.M;
     if (M.size() != Pm.size())
-      throw InputError("evidence.P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +
+      throw InputError(where + ".P: order " + std::to_string(Pm.size()) + ", the loop's " + std::to_string(M.size()) +
                        (lm.conserved || L.own_conserved ? " (on the quotient by its conserved quantities)" : ""));
     if (detail::stein_holds(Pm, M, why))
       return {true, std::string(stable ? "stable" : "NOT stable") + ": the closed loop M (" + std::to_string(lm.order) + " states, " +

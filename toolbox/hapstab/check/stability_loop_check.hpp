@@ -126,6 +126,16 @@ BallRows restricted(const BallRows& M, const rational_matrix::Mat& L);
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.
 Verdict hidden_mode_verdict(const SceneLoop& L, const nlohmann::json& hidden);
+/// The header's theorem on the loop L from `evidence` = {P[, w]} (named `where` in messages): M built here,
+/// its k conserved quantities compared with `conserved`, Q = P - M^T P M > 0 in balls, P > 0 (stable) or
+/// w^T P w < 0 (NOT stable). InputError for evidence of the wrong shape.
+Verdict stein_verdict(const SceneLoop& L, const nlohmann::json& evidence, bool stable, long conserved, const std::string& where);
+/// The monic lcm of each column's denominators: the order of the column's companion block above.
+std::vector<Polynomial<rational>> column_lcms(const std::vector<std::vector<RationalFunction<rational>>>& G);
+/// G realised column by column as above, column j over over[j] (monic, a multiple of every denominator of the
+/// column), as an ss block: a block of a split loop keeps the whole's column blocks (stability_loop_symmetric_check.hpp).
+SceneLoop::Discrete column_realisation(const std::vector<std::vector<RationalFunction<rational>>>& G,
+                                       const std::vector<Polynomial<rational>>& over);
 }  // namespace detail
 
 /// M of the scene's loop as above (model: {"scene", "set"}), on the quotient by the conserved
