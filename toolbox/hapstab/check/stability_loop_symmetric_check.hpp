@@ -32,7 +32,7 @@
 // Refused by name (InputError: beyond this kind): a [coupling], an ss environment, a device or an operator on
 // more than one DOF, more than 512 DOFs. A partition under which the scene is not invariant refutes the
 // claim (exit 1, naming the first entry that differs).
-// Implements: paper 000 Sec. VI (the multi-DOF loop); stability/symmetry.hpp (the split it checks).
+// Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
 #include <optional>
