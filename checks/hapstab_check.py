@@ -115,7 +115,7 @@ multidof-coupling  paper 000's Theorem 4 for the model's coupling V (A, B, C, D)
 multidof-coupling-symmetric  the same for a V of one block per DOF designed on the split: (16) by the split as
        multidof-feasible-symmetric, each block's X, Q_E, Q_V a positive multiple of the image of the whole's
        invariant diagonal (g, q_E, q_V), g >= 1, q_V > 0; Lemma 1 for each DOF's V-hat_i at (g, q_V) of its class.
-Size limit: stability-loop-symmetric: 128 DOFs (hapstab check: 512); multidof-feasible: N + m <= 80 (multidof-coupling: also nV + m <= 80; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 100 (hapstab check: 1024); stability-loop-max: intervals x n^3 <= 10^6
+Size limit: stability-loop-symmetric: 128 DOFs (hapstab check: 256); multidof-feasible: N + m <= 80 (multidof-coupling: also nV + m <= 80; each block's, for -symmetric, with m <= 512 DOFs in all); multidof-witness: m <= 64 DOFs; limit-cycle: P n <= 40000; passivity-level-mimo: m n <= 24 (inputs x states); stability: a characteristic polynomial of degree <= 400 (<= 10000 by the argument principle); stability-max: degree <= 40; stability-loop: M's order <= 100 (hapstab check: 1024); stability-loop-max: intervals x n^3 <= 10^6
 (its 81 Sylvester determinants of order 80 take ~17 s there); bound models of degree
 max(q deg N, q deg D + P, q) <= 64 (max(deg N, deg D + n) for an integer delay; exact Sturm
 sequences in Python's fractions grow fast: degree 41 takes 1.3 s, degree 101 two minutes); beyond
@@ -3372,8 +3372,8 @@ def stein_verdict(quotient, evidence, stable, k, where):
     return False, "claim: %s, but P - M^T P M is not shown positive definite at 512 bits" % ("stable" if stable else "NOT stable")
 
 
-MAX_SYMMETRIC_DOFS = 512  # stability-loop-symmetric: DOFs of the kind (hapstab check's limit too)
-MAX_SYMMETRIC_READ = 128  # and this checker's: E's N^2 entries expanded and compared, ~N^3 (19 s at 128, 143 s at 256)
+MAX_LOOP_SYMMETRIC_DOFS = 256  # stability-loop-symmetric: DOFs of the kind (hapstab check's limit too)
+MAX_LOOP_SYMMETRIC_READ = 128  # and this checker's: E's N^2 entries expanded and compared, ~N^3 (19 s at 128, 143 s at 256)
 
 
 def split_loop(loop, classes):
@@ -3452,12 +3452,12 @@ def check_stability_loop_symmetric(c):
         raise Malformed("claim.conserved: not an integer >= 0")
     if "scene" not in model:
         raise Malformed("model.scene: missing (this kind splits a scene's DOFs)")
-    devices = scene_read(model, False, coupling=True, max_dofs=MAX_SYMMETRIC_DOFS)[0].get("device")
+    devices = scene_read(model, False, coupling=True, max_dofs=MAX_LOOP_SYMMETRIC_DOFS)[0].get("device")
     n = len(devices) if isinstance(devices, list) else 0  # one DOF each, or refused below
-    if n > MAX_SYMMETRIC_READ:
+    if n > MAX_LOOP_SYMMETRIC_READ:
         raise TooLarge("model.scene: %d devices, above this checker's limit %d for stability-loop-symmetric (reading E's N^2 "
-                       "entries costs ~N^3: 19 s at 128)" % (n, MAX_SYMMETRIC_READ))
-    split = split_loop(scene_loop_read(model, MAX_SYMMETRIC_DOFS), evidence.get("classes"))
+                       "entries costs ~N^3: 19 s at 128)" % (n, MAX_LOOP_SYMMETRIC_READ))
+    split = split_loop(scene_loop_read(model, MAX_LOOP_SYMMETRIC_DOFS), evidence.get("classes"))
     if isinstance(split, str):
         return False, "evidence.classes: " + split
     fixed, zero_sum, sizes = split

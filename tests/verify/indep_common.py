@@ -119,6 +119,17 @@ def cases_and_seed(argv, cases=12, seed=1):
     return cases, seed
 
 
+def case_files(tmp, scene_text):
+    """(scene, certificate, mutant) paths in tmp for one case: the scene written, a certificate of the case before
+    removed (a producer that writes none must not leave the last one to be checked)."""
+    scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
+    with open(scene, "w") as f:
+        f.write(scene_text)
+    if os.path.exists(cert):
+        os.remove(cert)
+    return scene, cert, bad
+
+
 def loop_claim_flipped(cl):
     """A stability-loop certificate with its claim flipped: w added (a unit vector) to a stable
     claim, w removed from a NOT stable one; both checkers must refute it."""

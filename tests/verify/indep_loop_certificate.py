@@ -35,7 +35,7 @@ import mpmath as mp  # noqa: E402
 
 import indep_coupled as IC  # noqa: E402
 import indep_loop as IL  # noqa: E402
-from indep_common import cases_and_seed, loop_claim_flipped  # noqa: E402
+from indep_common import case_files, cases_and_seed, loop_claim_flipped  # noqa: E402
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -178,11 +178,7 @@ def near_crossing(c, rng):
 
 
 def run_case(exe, c, tmp):
-    scene, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
-    with open(scene, "w") as f:
-        f.write(scene_text(c))
-    if os.path.exists(cert):
-        os.remove(cert)
+    scene, cert, bad = case_files(tmp, scene_text(c))
     r = subprocess.run([exe, "stability", "--scene", scene, "--set", "g=%s" % c["g"], "--json", "--certificate", cert],
                        capture_output=True, text=True, timeout=600)
     rr = rho(c, c["g"])

@@ -39,7 +39,7 @@ from indep_common import Rational  # noqa: E402
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
 import loop_max_case as LMC  # noqa: E402
 import indep_loop_certificate as ILC  # noqa: E402
-from indep_common import cases_and_seed  # noqa: E402
+from indep_common import case_files, cases_and_seed  # noqa: E402
 
 
 def draw(rng):
@@ -169,11 +169,7 @@ def mutants_said():
 
 
 def run_case(exe, c, tmp):
-    path, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
-    with open(path, "w") as f:
-        f.write(scene(c))
-    if os.path.exists(cert):
-        os.remove(cert)
+    path, cert, bad = case_files(tmp, scene(c))
     name = "K" if c["inside"] else "g"
     r = subprocess.run([exe, "stability", "--scene", path, "--max", name, "--digits", "12", "--json", "--quiet", "--certificate", cert],
                        capture_output=True, text=True, timeout=900)

@@ -29,7 +29,7 @@ import numpy as np
 import scipy.linalg
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from indep_common import cases_and_seed  # noqa: E402
+from indep_common import case_files, cases_and_seed  # noqa: E402
 
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 T = 1e-3
@@ -116,11 +116,7 @@ def reference_rho(c):
 
 
 def run_case(exe, c, tmp):
-    path, cert, bad = (os.path.join(tmp, x) for x in ("s.toml", "c.json", "b.json"))
-    with open(path, "w") as f:
-        f.write(scene(c))
-    if os.path.exists(cert):
-        os.remove(cert)
+    path, cert, bad = case_files(tmp, scene(c))
     rho = reference_rho(c)
     r = subprocess.run([exe, "stability", "--scene", path, "--certificate", cert, "--quiet"], capture_output=True, text=True, timeout=600)
     if abs(rho - 1) < 1e-6:

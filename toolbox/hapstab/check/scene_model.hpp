@@ -95,7 +95,7 @@ struct SceneLoop {
 };
 
 /// model.scene read as above (model.set overrides parameters; at most max_dofs DOFs, written out: 64, or the
-/// 512 of stability-loop-symmetric, which reads N^2 entries but builds small loops); or, for a model without a scene, the
+/// 256 of stability-loop-symmetric, which reads N^2 entries but builds small loops); or, for a model without a scene, the
 /// one-DOF loop of `stability --plant P --H H [--operator Z] --delay n` as written ({plant, H,
 /// operator, set, T, delay}): one device block G = s P_eff, P_eff = P/(1 + s Z P), of relative degree
 /// >= 2 (else beyond); without a pole of P_eff at s = 0, the integrated position carries one conserved
