@@ -7,10 +7,7 @@ conserved quantities), stable at g = 1 and NOT stable at g = 2. Required:
     checker or hapstab (the whole loop of 384 states: per DOF m v' = -(b + 2) v - kh x + u, x' = v, held by
     scipy's expm; u_k = -(E x)_(k-1), E(z) = K0 - (Bc/T) z^-1 on the diagonal), has spectral radius < 1 at
     g = 1 and > 1 at g = 2 (each at least 1e-6 from 1);
-  * each hand edit gets its exit code from both checkers: refuted (1) -- P negated in a block, w zero, the
-    claim's or a block's conserved count moved, the classes merged or a DOF swapped between them (not
-    invariant); malformed (2) -- a block dropped or given twice, a DOF left out of the classes, a zero-sum
-    block of a class that is not there, conserved on a NOT stable claim.
+  * each hand edit of mutants() gets its exit code from both checkers.
 
   symmetric_loop_case.py HAPSTAB
 exit 0 when every expectation holds, else 1 (each failure printed)."""
@@ -53,6 +50,43 @@ def reference_rho(g):
     return max(abs(np.linalg.eigvals(M)))
 
 
+def mutants(c):
+    """Hand edits of a stability-loop-symmetric certificate c and the exit code both checkers must give each:
+    refuted (1) -- a P entry negated, a conserved count moved, the classes merged or a DOF swapped between
+    them (not invariant, the classes being unlike), w zero; malformed (2) -- a block dropped or given twice, a
+    DOF left out of the classes, a zero-sum block of a class that is not there, conserved on a NOT stable claim.
+    (tests/verify/indep_symmetric_certificate.py runs them on its random scenes.)"""
+    def edit(f):
+        e = json.loads(json.dumps(c))
+        f(e)
+        return e
+
+    def neg_p(e):
+        P = e["evidence"]["blocks"][0]["P"]
+        P[0][0] = str(-Q(P[0][0]))
+    ev = c["evidence"]
+    classes, blocks = ev["classes"], ev["blocks"]
+    out = []
+    if len(classes) >= 2:
+        out += [("the first two classes merged", edit(lambda e: e["evidence"].update(classes=[classes[0] + classes[1]] + classes[2:])), 1),
+                ("a DOF swapped between the first two classes", edit(lambda e: e["evidence"].update(
+                    classes=[[classes[1][0]] + classes[0][1:], [classes[0][0]] + classes[1][1:]] + classes[2:])), 1)]
+    out.append(("a DOF left out of the classes", edit(lambda e: e["evidence"]["classes"][-1].pop() if len(classes[-1]) > 1
+                                                      else e["evidence"]["classes"].pop()), 2))
+    if not c["claim"]["stable"]:
+        return out + [("NOT stable: w zero", edit(lambda e: e["evidence"]["blocks"][0].update(w=["0"] * len(blocks[0]["w"]))), 1),
+                      ("NOT stable: conserved on the claim", edit(lambda e: e["claim"].update(conserved=0)), 2)]
+    out += [("stable: P[0][0] of the first block negated", edit(neg_p), 1),
+            ("stable: the claim's conserved moved", edit(lambda e: e["claim"].update(conserved=c["claim"].get("conserved", 0) + 1)), 1),
+            ("stable: the first block's conserved moved", edit(lambda e: e["evidence"]["blocks"][0].update(
+                conserved=blocks[0].get("conserved", 0) + 1)), 1),
+            ("stable: the last block dropped", edit(lambda e: e["evidence"]["blocks"].pop()), 2)]
+    if len(blocks) >= 2:
+        out += [("stable: a block given twice", edit(lambda e: e["evidence"]["blocks"].__setitem__(-1, e["evidence"]["blocks"][-2])), 2),
+                ("stable: a zero-sum block of a class that is not there", edit(lambda e: e["evidence"]["blocks"][-1].update({"class": len(classes)})), 2)]
+    return out
+
+
 def main():
     hapstab = sys.argv[1]
     failures = 0
@@ -89,31 +123,8 @@ def main():
         if len(certs) < 2:
             return 1
 
-        def edit(c, f):
-            e = json.loads(json.dumps(c))
-            f(e)
-            return e
-
-        def neg_p(e):
-            P = e["evidence"]["blocks"][0]["P"]
-            P[0][0] = str(-Q(P[0][0]))
-        s, u = certs[True], certs[False]
-        classes = s["evidence"]["classes"]
-        mutants = [
-            ("stable: P[0][0] of the fixed block negated", edit(s, neg_p), 1),
-            ("stable: the claim's conserved 95", edit(s, lambda e: e["claim"].update(conserved=95)), 1),
-            ("stable: the fixed block's conserved 1", edit(s, lambda e: e["evidence"]["blocks"][0].update(conserved=1)), 1),
-            ("stable: the two classes merged", edit(s, lambda e: e["evidence"].update(classes=[classes[0] + classes[1]])), 1),
-            ("stable: a DOF swapped between the classes", edit(s, lambda e: e["evidence"].update(
-                classes=[[classes[1][0]] + classes[0][1:], [classes[0][0]] + classes[1][1:]])), 1),
-            ("stable: the last block dropped", edit(s, lambda e: e["evidence"]["blocks"].pop()), 2),
-            ("stable: a block given twice", edit(s, lambda e: e["evidence"]["blocks"].__setitem__(2, e["evidence"]["blocks"][1])), 2),
-            ("stable: a DOF left out of the classes", edit(s, lambda e: e["evidence"]["classes"][0].pop()), 2),
-            ("stable: a zero-sum block of class 2 (there are 2)", edit(s, lambda e: e["evidence"]["blocks"][1].update({"class": 2})), 2),
-            ("NOT stable: w zero", edit(u, lambda e: e["evidence"]["blocks"][0].update(w=["0"] * len(e["evidence"]["blocks"][0]["w"]))), 1),
-            ("NOT stable: conserved on the claim", edit(u, lambda e: e["claim"].update(conserved=0)), 2),
-        ]
-        for what, m, code in mutants:
+        cases = mutants(certs[True]) + mutants(certs[False])
+        for what, m, code in cases:
             path = os.path.join(tmp, "m.json")
             json.dump(m, open(path, "w"))
             got = exits(path)

@@ -12,7 +12,8 @@ scipy's expm (Van Loan); u_k = -(E x)_(k - n), E(z) = K0 - D1 z^-1; its spectral
 verdict decided at least 1e-6 from rho = 1 by the reference is hapstab's, the certificate's kind
 stability-loop-symmetric with the claim's conserved = the number of springs, verified by both checkers (exit 0;
 the independent one within its 128 DOFs), and refuted by both with the claim flipped (a stable claim given w = e_1
-on one block: w^T P w > 0; a NOT stable one made stable with the other blocks left out: malformed or refuted).
+on one block: w^T P w > 0; a NOT stable one made stable with the other blocks left out: malformed or refuted), and
+every hand edit of tests/check/symmetric_loop_case.py's mutants() given its exit code by both.
 Within 1e-6 of rho = 1 the case is counted apart.
 
   indep_symmetric_certificate.py HAPSTAB [--cases N] [--seed S]
@@ -31,8 +32,12 @@ import scipy.linalg
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from indep_common import case_files, cases_and_seed  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
+import symmetric_loop_case as SLC  # noqa: E402
+
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 T = 1e-3
+MUTANTS = [0]  # symmetric_loop_case.mutants of each certificate, every one given its exit code by both checkers
 
 
 def draw(rng):
@@ -151,7 +156,14 @@ def run_case(exe, c, tmp):
     gf = exits(bad)
     if gf[0] not in (1, 2) or gf[1] not in (1, 2, 3) or (gf[1] != 3 and gf[0] != gf[1]):
         return False, "the claim flipped: the checkers exit %s" % (gf,), None
-    return True, "%s (rho %.9f; %d DOFs in %d classes, %d springs, delay %d), verified by %s, its flip rejected" % (
+    for what, m, code in SLC.mutants(cl):
+        with open(bad, "w") as f:
+            json.dump(m, f)
+        gm = exits(bad)
+        if gm not in ((code, code), (code, 3)):
+            return False, "%s: the checkers exit %s (want %d)" % (what, gm, code), None
+        MUTANTS[0] += 1
+    return True, "%s (rho %.9f; %d DOFs in %d classes, %d springs, delay %d), verified by %s, its flip and mutants rejected" % (
         "stable" if stable else "NOT stable", rho, c["N"], len(c["classes"]), springs, c["n"],
         "both" if got == (0, 0) else "hapstab check"), "stable" if stable else "NOT stable"
 
@@ -171,7 +183,8 @@ def main(argv):
             print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
             bad += ok is False
             counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
-    print("indep_symmetric_certificate: %d cases, %d disagree; %s" % (cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items()))))
+    print("indep_symmetric_certificate: %d cases, %d disagree; %s; mutants %d, each given its exit code by both checkers" % (
+        cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTANTS[0]))
     if cases >= 6 and (counts.get("stable", 0) == 0 or counts.get("NOT stable", 0) == 0):
         print("indep_symmetric_certificate: TOO FEW COMPARED: a verdict never reached")
         return 1
