@@ -54,7 +54,7 @@ def mutants(c):
     """Hand edits of a stability-loop-symmetric certificate c and the exit code both checkers must give each:
     refuted (1) -- a P entry negated, a conserved count moved, the classes merged or a DOF swapped between
     them (not invariant, the classes being unlike), w zero; malformed (2) -- a block dropped or given twice, a
-    DOF left out of the classes, a zero-sum block of a class that is not there, conserved on a NOT stable claim.
+    DOF left out of the classes or beyond the scene, a zero-sum block of a class that is not there, conserved on a NOT stable claim.
     (tests/verify/indep_symmetric_certificate.py runs them on its random scenes.)"""
     def edit(f):
         e = json.loads(json.dumps(c))
@@ -71,6 +71,7 @@ def mutants(c):
         out += [("the first two classes merged", edit(lambda e: e["evidence"].update(classes=[classes[0] + classes[1]] + classes[2:])), 1),
                 ("a DOF swapped between the first two classes", edit(lambda e: e["evidence"].update(
                     classes=[[classes[1][0]] + classes[0][1:], [classes[0][0]] + classes[1][1:]] + classes[2:])), 1)]
+    out.append(("a DOF index 2^32 + 1 (read as 1 if narrowed unchecked)", edit(lambda e: e["evidence"]["classes"][0].__setitem__(0, 2 ** 32 + 1)), 2))
     out.append(("a DOF left out of the classes", edit(lambda e: e["evidence"]["classes"][-1].pop() if len(classes[-1]) > 1
                                                       else e["evidence"]["classes"].pop()), 2))
     if not c["claim"]["stable"]:

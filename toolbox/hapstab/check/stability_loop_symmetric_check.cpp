@@ -2,6 +2,7 @@
 #include "hapstab/check/stability_loop_symmetric_check.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -174,8 +175,10 @@ Verdict check_stability_loop_symmetric(const nlohmann::json& cert) {
     if (!c.is_array()) throw InputError("evidence.classes: each class an array of DOF indices (0-based)");
     classes.emplace_back();
     for (const auto& i : c) {
-      if (!i.is_number_integer()) throw InputError("evidence.classes: a DOF index is not an integer");
-      classes.back().push_back(i.get<int>());
+      // range-checked before it is narrowed (2^32 + 1 must not read as DOF 1)
+      if (!i.is_number_integer() || (i.is_number_unsigned() ? i.get<uint64_t>() >= L.dofs() : i.get<int64_t>() < 0 || i.get<int64_t>() >= static_cast<int64_t>(L.dofs())))
+        throw InputError("evidence.classes: " + i.dump() + " is not a DOF index of the scene's 0 .. " + std::to_string(L.dofs() - 1));
+      classes.back().push_back(static_cast<int>(i.get<int64_t>()));
     }
   }
   std::string why;
