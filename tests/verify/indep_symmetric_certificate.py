@@ -126,6 +126,8 @@ def run_case(exe, c, tmp):
     r = subprocess.run([exe, "stability", "--scene", path, "--certificate", cert, "--quiet"], capture_output=True, text=True, timeout=600)
     if abs(rho - 1) < 1e-6:
         return None, "the reference's rho %.12f within 1e-6 of 1" % rho, "near"
+    if r.returncode == 3:  # undecided: no certificate, never counted as either verdict
+        return None, "undecided (rho %.9f): %s" % (rho, r.stderr.strip()[:200]), "undecided"
     if r.returncode not in (0, 1):
         return False, "exit %d (rho %.9f): %s" % (r.returncode, rho, r.stderr.strip()[:300]), None
     stable = r.returncode == 0

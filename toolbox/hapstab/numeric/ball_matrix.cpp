@@ -313,6 +313,48 @@ bool positive_definite(const BallMatrix& S, std::string* why) {
   return ok;
 }
 
+// The exponents e of D = diag(2^e_i) that balance |A|'s off-diagonal row and column norms
+// (Parlett and Reinsch's iteration, as LAPACK's gebal).
+std::vector<long> balancing_exponents(Eigen::MatrixXd A) {
+  const long n = A.rows();
+  std::vector<long> e(static_cast<size_t>(n), 0);
+  A = A.cwiseAbs();
+  for (int sweep = 0; sweep < 40; ++sweep) {
+    bool changed = false;
+    for (long i = 0; i < n; ++i) {
+      double c = 0, r = 0;  // off-diagonal column and row norms of D^-1 A D
+      for (long j = 0; j < n; ++j)
+        if (j != i) c += A(j, i), r += A(i, j);
+      if (!(c > 0 && r > 0) || !std::isfinite(c) || !std::isfinite(r)) continue;
+      int f = 0;  // D_ii *= 2^f with 2^f ~ sqrt(r / c)
+      while (c * std::ldexp(1.0, 2 * f) < r / 2 && f < 61) ++f;
+      while (c * std::ldexp(1.0, 2 * f) > 2 * r && f > -61) --f;
+      if (f == 0 || f > 60 || f < -60) continue;
+      e[static_cast<size_t>(i)] += f;
+      for (long j = 0; j < n; ++j)
+        if (j != i) A(j, i) = std::ldexp(A(j, i), f), A(i, j) = std::ldexp(A(i, j), -f);
+      changed = true;
+    }
+    if (!changed) break;
+  }
+  return e;
+}
+
+std::optional<BallMatrix> balanced(const BallMatrix& M) {
+  const std::vector<long> e = balancing_exponents(M.mid);
+  BallMatrix B = M;
+  for (Eigen::Index i = 0; i < M.mid.rows(); ++i)
+    for (Eigen::Index j = 0; j < M.mid.cols(); ++j) {
+      const int s = static_cast<int>(e[size_t(j)] - e[size_t(i)]);
+      for (auto [from, to] : {std::pair{&M.mid, &B.mid}, std::pair{&M.rad, &B.rad}}) {
+        const double x = (*from)(i, j), y = std::ldexp(x, s);
+        if (x != 0 && !std::isnormal(y)) return std::nullopt;  // a subnormal or infinite result would not be exact
+        (*to)(i, j) = y;
+      }
+    }
+  return B;
+}
+
 SchurDecision schur_decide(const BallMatrix& M) {
   if (M.rows() != M.cols()) throw InputError("schur_decide: the matrix must be square");
   check_finite(M, "schur_decide");

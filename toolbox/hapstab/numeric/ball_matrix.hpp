@@ -29,6 +29,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -74,5 +75,14 @@ struct SchurDecision {
   Eigen::VectorXd w;            ///< when NOT stable: w with w^T P w < 0 (exact dyadics)
 };
 SchurDecision schur_decide(const BallMatrix& M);
+
+/// The exponents e of D = diag(2^e_i) that balance |A|'s off-diagonal row and column norms (Parlett and
+/// Reinsch's iteration, as LAPACK's gebal).
+std::vector<long> balancing_exponents(Eigen::MatrixXd A);
+/// D^-1 M D for those exponents of M's midpoint: the same eigenvalues for every matrix in the balls (a similarity
+/// by powers of two, exact on midpoints and radii); nullopt where a scaled entry would leave the normal doubles
+/// (then it would not be exact). A Stein solve on M with entries over many decades (an environment ~10^4 beside a
+/// device ~10^-3) can fail where the balanced ball is decided.
+std::optional<BallMatrix> balanced(const BallMatrix& M);
 
 }  // namespace hapstab

@@ -302,33 +302,6 @@ Enclosed krawczyk(const CrossingSystem& S, BallMat& x, long prec) {
   return {false, {0, 0}, {0, 0}, 0, "the Krawczyk test did not contract at " + std::to_string(prec) + " bits"};
 }
 
-// The exponents e of D = diag(2^e_i) that balance |A|'s off-diagonal row and column norms
-// (Parlett and Reinsch's iteration, as LAPACK's gebal).
-std::vector<long> balancing_exponents(Eigen::MatrixXd A) {
-  const long n = A.rows();
-  std::vector<long> e(static_cast<size_t>(n), 0);
-  A = A.cwiseAbs();
-  for (int sweep = 0; sweep < 40; ++sweep) {
-    bool changed = false;
-    for (long i = 0; i < n; ++i) {
-      double c = 0, r = 0;  // off-diagonal column and row norms of D^-1 A D
-      for (long j = 0; j < n; ++j)
-        if (j != i) c += A(j, i), r += A(i, j);
-      if (!(c > 0 && r > 0) || !std::isfinite(c) || !std::isfinite(r)) continue;
-      int f = 0;  // D_ii *= 2^f with 2^f ~ sqrt(r / c)
-      while (c * std::ldexp(1.0, 2 * f) < r / 2 && f < 61) ++f;
-      while (c * std::ldexp(1.0, 2 * f) > 2 * r && f > -61) --f;
-      if (f == 0 || f > 60 || f < -60) continue;
-      e[static_cast<size_t>(i)] += f;
-      for (long j = 0; j < n; ++j)
-        if (j != i) A(j, i) = std::ldexp(A(j, i), f), A(i, j) = std::ldexp(A(i, j), -f);
-      changed = true;
-    }
-    if (!changed) break;
-  }
-  return e;
-}
-
 // S <- D^-1 S D for a diagonal D of powers of two (exact in balls: a similarity, the same
 // eigenvalues), D balancing the midpoint's row and column norms (Parlett and Reinsch's iteration,
 // as LAPACK's gebal). An environment realised with entries ~10^4 beside a device's ~10^-3 gives
