@@ -40,9 +40,9 @@ T = 1e-3
 MUTANTS = [0]  # symmetric_loop_case.mutants of each certificate, every one given its exit code by both checkers
 
 
-def draw(rng):
+def draw(rng, dofs=(65, 100)):
     r = rng.choice([2, 2, 3])
-    N = rng.randint(65, 100)
+    N = rng.randint(*dofs)
     cls = [a % r for a in range(N)]
     rng.shuffle(cls)
     c = {"N": N, "cls": cls, "n": rng.randint(0, 2), "classes": []}

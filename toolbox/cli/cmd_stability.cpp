@@ -50,6 +50,7 @@
 #include "hapstab/stability/loop_as_written.hpp"
 #include "hapstab/stability/loop_from_text.hpp"
 #include "hapstab/stability/loop_max.hpp"
+#include "hapstab/stability/loop_max_symmetric.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 #include "hapstab/stability/scene_loop.hpp"
 
@@ -388,6 +389,29 @@ nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stabilit
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
 }
 
+// The split supremum's blocks in the JSON (docs/json.md): path "symmetry", each block's label and supremum.
+void add_split_json(nlohmann::json& j, const stability::LoopMaxSplit& s) {
+  j["path"] = "symmetry";
+  j["group"] = s.group;
+  j["deciding_block"] = s.deciding;
+  nlohmann::json blocks = nlohmann::json::array();
+  for (const auto& b : s.blocks) {
+    nlohmann::json x{{"label", b.label}, {"class", b.cls < 0 ? nlohmann::json(nullptr) : nlohmann::json(b.cls)},
+                     {"outcome", b.max.outcome == Outcome::holds ? "holds" : b.max.outcome == Outcome::fails ? "fails" : "undecided"},
+                     {"states", b.max.states}, {"cover_intervals", b.max.cover_intervals}};
+    if (b.max.outcome == Outcome::holds) x["sup_enclosure"] = enclosure_json(b.max.sup, 17);
+    else if (b.max.outcome == Outcome::fails) x["sup_enclosure"] = enclosure_json({rational(0), rational(0)}, 17);
+    blocks.push_back(x);
+  }
+  j["blocks"] = blocks;
+}
+
+[[noreturn]] void refuse_split_certificate(const StabilityOpts& o, const stability::LoopMaxSplit& s) {
+  throw InputError("--certificate: sup " + o.max_name + " was found on the " + std::to_string(s.blocks.size()) +
+                   " small loops of the split by identical DOFs (" + s.group + "), which no certificate kind holds yet "
+                   "(stability-loop-max reads the whole loop, up to 80 DOFs: `--no-symmetry` there)");
+}
+
 [[noreturn]] void refuse_bisection_certificate(const StabilityOpts& o, const std::string& not_affine) {
   throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
                    "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
@@ -451,7 +475,17 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       << o.max_name << ": " << not_affine << ")\n";
     text = t.str();
   } else {
-    const stability::LoopMax m = stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
+    // many identical DOFs: the small loops of their split (stability/loop_max_symmetric.hpp)
+    std::optional<stability::LoopMaxSplit> split;
+    std::string no_split = "--no-symmetry";
+    if (!o.no_symmetry && stability::split_pays(sc.loop))
+      split = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), no_split);
+    if (!split && sc.loop.dofs() > stability::kWholeMaxDofs)
+      throw InputError("--max " + o.max_name + ": " + std::to_string(sc.loop.dofs()) + " DOFs, not split by identical DOFs (" +
+                       no_split + "): the whole closed-loop matrix's supremum is refused beyond " + std::to_string(stability::kWholeMaxDofs) +
+                       " DOFs (its cover of eigenvalue enclosures costs minutes to hours there)");
+    const stability::LoopMax m = split ? split->whole : stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
+    if (split && !o.certificate.empty()) refuse_split_certificate(o, *split);
     const nlohmann::json certified = o.certificate.empty() ? nlohmann::json() : write_loop_max_certificate(o, m);
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
@@ -460,6 +494,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       rc = cli::exit_property_fails;
     } else {
       j = loop_max_json(m, o, sc);
+      if (split) add_split_json(j, *split);
       if (m.outcome != Outcome::holds) {
         text = "sup " + o.max_name + ": undecided\n";
         if (j.contains("stable_on"))
@@ -472,7 +507,9 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
         exact_is_supremum = true;
         std::ostringstream t;
         t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["digits_certified"].get<int>()
-          << " digits; " << sc.loop.dofs() << " DOF, closed-loop matrix of order " << m.states
+          << " digits; " << sc.loop.dofs() << " DOF, "
+          << (split ? std::to_string(split->blocks.size()) + " small loops of " + std::to_string(m.states) + " states in all (" + split->group + ")"
+                    : "closed-loop matrix of order " + std::to_string(m.states))
           << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
           << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
           << "  stable for every " << o.max_name << " in " << (m.open_at_zero ? "(" : "[") << j["stable_on"][0].get<std::string>()
@@ -481,7 +518,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
           << "), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
           << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
           << " rad/s; mode |x| per DOF:";
-        for (auto& [dof, a] : j["crossing"]["mode"].items()) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
+        int shown = 0;  // a split's mode names every DOF: its nonzero entries, the first 8
+        for (auto& [dof, a] : j["crossing"]["mode"].items())
+          if (!split || (a.get<double>() != 0 && ++shown <= 8)) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
+        if (shown > 8) t << " ... (" << shown << " DOFs)";
         t << "\n  " << m.note << "\n";
         text = t.str();
       }
@@ -558,7 +598,8 @@ const cli::Register reg(
        app.add_flag("--conservatism", o->conservatism, "with --scene and --max: also the largest NAME for which Theorem 5 "
                     "concludes (the scene's [coupling]) and the ratio exact / Theorem 5");
        app.add_flag("--no-symmetry", o->no_symmetry, "with --scene: decide the whole closed-loop matrix, not the small loops "
-                    "that the permutations of identical DOFs split it into (for comparison; the verdicts are the same)");
+                    "that the permutations of identical DOFs split it into (for comparison; the verdicts are the same); with --max, "
+                    "the whole's supremum beyond 8 DOFs (up to 64)");
        app.add_flag("--json", o->json, "JSON output");
        app.add_flag("--quiet", o->quiet, "No progress on stderr (--scene --max: shown for runs longer than 2 s)");
        app.add_option("--certificate", o->certificate, "write the verdict's certificate (JSON) to FILE, for `hapstab check "
@@ -572,9 +613,8 @@ const cli::Register reg(
        return [o]() -> int {
          if (o->conservatism && (o->scene.empty() || o->max_name.empty()))
            throw InputError("--conservatism compares Theorem 5 with the loop as written on a scene: it needs --scene and --max");
-         if (o->no_symmetry && (o->scene.empty() || !o->max_name.empty()))
-           throw InputError("--no-symmetry applies to the verdict of --scene without --max (the only path that splits a loop by "
-                            "the permutations of its identical DOFs)");
+         if (o->no_symmetry && o->scene.empty())
+           throw InputError("--no-symmetry applies to --scene (the only path that splits a loop by the permutations of its identical DOFs)");
          if (!o->scene.empty() && o->max_name.empty()) return run_scene(*o);
          if (!o->scene.empty()) {  // --max on a scene: its blocks' hidden modes first (sim/hidden_modes.hpp)
            std::vector<std::string> plan{"reading the scene", "the closed loop's dependence on " + o->max_name, "the supremum"};

@@ -1,0 +1,113 @@
+"""`stability --scene S --max g` on loops of identical DOFs (stability/loop_max_symmetric.hpp: the supremum as the
+least of the small loops' suprema, where the loop splits and has more than 8 DOFs or a class of three or more)
+against the whole loop built here in numpy/scipy from the numbers drawn (indep_symmetric_certificate.py's
+scenes and reference_rho: per DOF m v' = -(b + b_o) v - k_o x + u, held by scipy's expm, the wall and links
+E = g (K0 - D1 z^-1), the delay's buffer), never from hapstab or its checkers.
+
+Scenes: N = 3-24 DOFs in 2-3 interleaved classes, the same draws as the certificate campaign (operators none,
+a damper or a damper and a spring; delays 0-2), g = the maximised gain. The reference's supremum: the whole's
+spectral radius rho(g) in double on 400 points geometric in [g0 10^-4, g0 10^4] (g0 the drawn value), the first
+point with rho >= 1 - 1e-12 bisected against the last below to 1e-13 relative: sup_ref; every point below it
+stable (rho < 1 - 1e-12) is what the grid can show. Required: hapstab's certified sup (exit 0) within 1e-6
+relative of sup_ref (double eigenvalues of a matrix with eigenvalues repeated k - 1 times near |z| = 1: the
+crossing's error is ~ sqrt(eps) times the conditioning at worst; 1e-6 leaves three decades) and its path
+"symmetry" exactly where the split pays (N > 8, or a class of three or more); sup = 0 (exit 1) only where the
+reference's rho at g0 10^-4 is >= 1; undecided (exit 3) counted apart, never as either answer.
+
+  indep_symmetric_max.py HAPSTAB [--cases N] [--seed S]
+exit 0 when every compared case agrees, else 1.
+"""
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from indep_common import cases_and_seed  # noqa: E402
+import indep_symmetric_certificate as ISC  # noqa: E402
+
+
+def reference_sup(c):
+    """sup_ref (header), or 0.0 when rho >= 1 at the grid's first point; None when no crossing below g0 10^4."""
+    g0 = c["g"]
+    grid = g0 * np.geomspace(1e-4, 1e4, 400)
+
+    def rho(g):
+        return ISC.reference_rho(dict(c, g=float(g)))
+    prev = None
+    for g in grid:
+        if rho(g) >= 1 - 1e-12:
+            if prev is None:
+                return 0.0
+            lo, hi = prev, g
+            while hi - lo > 1e-13 * hi:
+                mid = (lo + hi) / 2
+                lo, hi = (mid, hi) if rho(mid) < 1 - 1e-12 else (lo, mid)
+            return (lo + hi) / 2
+        prev = g
+    return None
+
+
+def splits(c):
+    sizes = [c["cls"].count(a) for a in range(len(c["classes"]))]
+    alike = len(set(json.dumps(x, sort_keys=True) for x in c["classes"])) < len(c["classes"])
+    return not alike and sum(k >= 2 for k in sizes) >= 1 and (c["N"] > 8 or max(sizes) >= 3)
+
+
+def run_case(exe, c, tmp):
+    path = os.path.join(tmp, "scene.toml")
+    with open(path, "w") as f:
+        f.write(ISC.scene(c))
+    r = subprocess.run([exe, "stability", "--scene", path, "--max", "g", "--json", "--quiet", "--digits", "12"],
+                       capture_output=True, text=True, timeout=600)
+    ref = reference_sup(c)
+    tag = "N %d, %d classes, delay %d, springs %d" % (c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]))
+    if r.returncode == 3:
+        return None, "undecided (sup_ref %s; %s)" % (ref, tag), "undecided"
+    if r.returncode not in (0, 1):
+        return False, "exit %d: %s (%s)" % (r.returncode, r.stderr.strip()[:300], tag), None
+    j = json.loads(r.stdout)
+    path_ok = (j.get("path") == "symmetry") == splits(c) or r.returncode == 1
+    if r.returncode == 1:
+        if ref != 0.0:
+            return False, "hapstab: sup = 0, the reference's sup is %s (%s)" % (ref, tag), None
+        return True, "sup = 0 (%s)" % tag, "sup = 0"
+    if ref is None or ref == 0.0:
+        return False, "hapstab: sup = %s, the reference's %s (%s)" % (j["max"], ref, tag), None
+    sup = float(j["sup_enclosure"][0])
+    if abs(sup - ref) > 1e-6 * ref:
+        return False, "hapstab: sup = %s, the reference's %.15g (%s)" % (j["max"], ref, tag), None
+    if not path_ok:
+        return False, "path %s, but the scene %s (%s)" % (j.get("path"), "splits" if splits(c) else "does not split", tag), None
+    branch = "split, %s block" % ("fixed" if j.get("deciding_block") == 0 else "zero-sum") if j.get("path") == "symmetry" else "whole"
+    return True, "sup = %s, reference %.12g (%s; %s)" % (j["max"], ref, tag, branch), branch
+
+
+def main(argv):
+    exe = argv[1]
+    cases, seed = cases_and_seed(argv, 6, 1)
+    rng = random.Random("symmetric-max:%d" % seed)
+    counts, bad = {}, 0
+    with tempfile.TemporaryDirectory(prefix="hapstab-sym-max-") as tmp:
+        for k in range(cases):
+            c = ISC.draw(rng, (3, 24))
+            try:
+                ok, what, branch = run_case(exe, c, tmp)
+            except subprocess.TimeoutExpired:
+                ok, what, branch = None, "timeout", "timeout"
+            print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
+            bad += ok is False
+            counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
+    print("indep_symmetric_max: %d cases, %d disagree; %s" % (cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items()))))
+    if cases >= 6 and not any(k.startswith("split") for k in counts):
+        print("indep_symmetric_max: TOO FEW COMPARED: no split supremum agreed")
+        return 1
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
