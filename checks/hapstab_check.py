@@ -3698,32 +3698,49 @@ def check_stability_loop_max(c):
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:
         raise Malformed("claim.conserved: not an integer >= 0")
     block, inside = plant_reading(model, p) if plant else gain_block(model["scene"], p)
-    un = evidence.get("unstable_at")
-    if not isinstance(un, dict):
-        raise Malformed("evidence.unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
-    only(un, ("at", "P", "w", "slow_quotient"), "evidence.unstable_at")
-    if exact(un, "at", "evidence.unstable_at") != hi:
-        raise Malformed("evidence.unstable_at.at: not claim.hi")
-    on_ker = "slow_quotient" in un  # sup = 0 beside slow modes: M(0) on ker L, L M(0) = L (the C++ header)
-    if on_ker and (un["slow_quotient"] is not True or hi != 0):
-        raise Malformed("evidence.unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)")
-    cover = evidence.get("cover", [])
-    if not isinstance(cover, list) or len(cover) > MAX_LOOP_COVER:
-        raise Malformed("evidence.cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
-    if (not cover) != (lo == 0):
-        raise Malformed("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
     at_p = []
     for v in (1, 2) if not inside or hi == 0 else (1, 2, hi):
         m = dict({k: x for k, x in model.items() if k != "name"}, set=dict(sets))
         m["set"][p] = str(v)
         at_p.append(loop_quotient(m))
-    (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
-    g = 0 if block == "environment" else 1
     if inside:  # the realisation at 1, 2 (and hi) of the largest order; C, D at hi on the line through 1 and 2
-        order, degree = affine_block_order(model, block, p, len(l1[3])) if not plant else plant_wall_order(model, p)
-        if any(len(q[5][g][0]) != order for q in at_p):
+        order, degree = affine_block_order(model, block, p, len(at_p[0][0][3])) if not plant else plant_wall_order(model, p)
+        if any(len(q[5][0 if block == "environment" else 1][0]) != order for q in at_p):
             raise Malformed("model.scene: the %s's realisation at %s = 1, 2 or %s is not of order %d (a pole cancelled there): beyond "
                             "this kind" % (block, p, short(hi), order))
+    ok, why, n, bits = loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, "evidence")
+    if not ok:
+        return False, why if ok is False else "claim: sup %s in [%s, %s], but %s at 512 bits" % (p, short(lo), short(hi), why)
+    if hi == 0:
+        return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits%s)" % (
+            p, p, p, p, n, p, bits, ", on ker L beside the slow modes" if "slow_quotient" in evidence["unstable_at"] else "")
+    how = "inside the %s's tf, proven affine there" % block if inside else "the %s's gain alone" % block
+    return True, "sup %s in [%s, %s]: M(%s) affine (%d states, %s); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
+        p, short(lo), short(hi), p, n, how, short(lo), len(evidence.get("cover", [])), p, short(hi), bits)
+
+
+def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unstable=True):
+    """One loop's supremum evidence ({cover, first_order, unstable_at} of `evidence`, named `where`) on the loop
+    read at p = 1, 2 (and hi: p inside the tf), at_p their loop_quotient's (C++ check_max_part): (True, "", n, bits)
+    shown; (False, why, ...) refuted; (None, why, ...) not shown at 512 bits. unstable_at may be absent only where
+    need_unstable is False (a block of stability-loop-max-symmetric that another block bounds)."""
+    has_un = "unstable_at" in evidence
+    un = evidence.get("unstable_at", {})
+    if (not has_un and need_unstable) or not isinstance(un, dict):
+        raise Malformed(where + ".unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
+    only(un, ("at", "P", "w", "slow_quotient"), where + ".unstable_at")
+    if has_un and exact(un, "at", where + ".unstable_at") != hi:
+        raise Malformed(where + ".unstable_at.at: not claim.hi")
+    on_ker = "slow_quotient" in un  # sup = 0 beside slow modes: M(0) on ker L, L M(0) = L (the C++ header)
+    if on_ker and (un["slow_quotient"] is not True or hi != 0):
+        raise Malformed(where + ".unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)")
+    cover = evidence.get("cover", [])
+    if not isinstance(cover, list) or len(cover) > MAX_LOOP_COVER:
+        raise Malformed(where + ".cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
+    if (not cover) != (lo == 0):
+        raise Malformed(where + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
+    (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
+    g = 0 if block == "environment" else 1
     for i, (x, y) in enumerate(zip(b1, b2)):
         if i != g:
             want = x
@@ -3733,12 +3750,12 @@ def check_stability_loop_max(c):
             want = (x[0], x[1], [[2 * v for v in row] for row in x[2]], [[2 * v for v in row] for row in x[3]])
         if tuple(y) != tuple(want):
             return False, "the %s's realisation at %s = 2 is not the one at 1 with %s: not shown affine" % (
-                block, p, "A and B equal" if inside else "C and D doubled")
+                block, p, "A and B equal" if inside else "C and D doubled"), 0, 0
         if len(at_p) > 2:
             if i == g:
                 want = (x[0], x[1]) + tuple([[(2 - hi) * u + (hi - 1) * v for u, v in zip(ru, rv)] for ru, rv in zip(x[k], y[k])] for k in (2, 3))
             if tuple(at_p[2][5][i]) != tuple(want):
-                return False, "the %s's realisation at %s = %s is not on the line through those at 1 and 2" % (block, p, short(hi))
+                return False, "the %s's realisation at %s = %s is not on the line through those at 1 and 2" % (block, p, short(hi)), 0, 0
     for bl in (b1, b2):
         if len(bl) > 1:
             DE, DV = bl[0][3], bl[1][3]
@@ -3749,9 +3766,9 @@ def check_stability_loop_max(c):
         raise Malformed("model.scene: a loop with conserved quantities and %s inside the %s's tf (the quotient's basis may move "
                         "with it): beyond this kind" % (p, block))
     if count != len(a2) + len(r2) - own2:
-        return False, "the conserved quantities differ at %s = 1 and 2" % p
+        return False, "the conserved quantities differ at %s = 1 and 2" % p, 0, 0
     if count != k:
-        return False, "claim: %d conserved quantities, but the loop has %d" % (k, count)
+        return False, "%s: %d conserved quantities, but the loop has %d" % ("claim" if where == "evidence" else where, k, count), 0, 0
     why = ""
     for bits in (128, 256, 512):
         M1, M2 = loop_quotient_matrix(l1, L1, a1, r1, bits), loop_quotient_matrix(l2, L2, a2, r2, bits)
@@ -3771,66 +3788,161 @@ def check_stability_loop_max(c):
                 why = fails
                 continue
             start = eps
-        Mu = M_at(hi)
-        if on_ker:
-            S = slow_rows(l1, l2, L1, a1, r1)
-            if not S:
-                raise Malformed("evidence.unstable_at.slow_quotient: the loop has no slow rows at %s = 0" % p)
-            K = [list(r) for r in S]
-            Mu = quotient(Mu, S, echelon(K))  # S in reduced echelon form: x_pivot = -S[:, kept] y
-        nu = len(Mu)
-        Pu = symmetric_evidence(un, "evidence.unstable_at", nu)
-        w = frac_matrix({"w": [un.get("w")]}, "w", 1, nu, "evidence.unstable_at")[0]
-        if sum(w[i] * Pu[i][j] * w[j] for i in range(nu) for j in range(nu)) >= 0:
-            return False, "evidence.unstable_at: w^T P w >= 0"
-        if not stein_shown(Pu, Mu):
-            why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
-            continue
+        if has_un:  # NOT stable at hi (Stein inertia)
+            Mu = M_at(hi)
+            if on_ker:
+                S = slow_rows(l1, l2, L1, a1, r1)
+                if not S:
+                    raise Malformed(where + ".unstable_at.slow_quotient: the loop has no slow rows at %s = 0" % p)
+                K = [list(r) for r in S]
+                Mu = quotient(Mu, S, echelon(K))  # S in reduced echelon form: x_pivot = -S[:, kept] y
+            nu = len(Mu)
+            Pu = symmetric_evidence(un, where + ".unstable_at", nu)
+            w = frac_matrix({"w": [un.get("w")]}, "w", 1, nu, where + ".unstable_at")[0]
+            if sum(w[i] * Pu[i][j] * w[j] for i in range(nu) for j in range(nu)) >= 0:
+                return False, where + ".unstable_at: w^T P w >= 0", n, bits
+            if not stein_shown(Pu, Mu):
+                why = "at %s = %s (NOT stable): P - M^T P M not shown positive definite" % (p, short(hi))
+                continue
         last_P_to = None  # the last interval's P_to (None: it had none)
         for i, piece in enumerate(cover):
-            where = "evidence.cover[%d]" % i
+            at = "%s.cover[%d]" % (where, i)
             if not isinstance(piece, dict):
-                raise Malformed(where + ": not an object")
-            only(piece, ("to", "P", "P_to"), where)
-            to = exact(piece, "to", where)
+                raise Malformed(at + ": not an object")
+            only(piece, ("to", "P", "P_to"), at)
+            to = exact(piece, "to", at)
             if to <= start:
-                raise Malformed(where + ".to: not above the interval's start")
+                raise Malformed(at + ".to: not above the interval's start")
             if i + 1 == len(cover) and to != lo:
-                raise Malformed(where + ".to: the last interval ends at claim.lo")
+                raise Malformed(at + ".to: the last interval ends at claim.lo")
             if "P" not in piece:  # left out: the last interval's P_to (a chain of linear intervals names each node once)
                 if "P_to" not in piece or last_P_to is None:
-                    raise Malformed(where + ".P: missing (left out only in an interval with P_to after one with P_to)")
+                    raise Malformed(at + ".P: missing (left out only in an interval with P_to after one with P_to)")
                 P = last_P_to
             else:
-                P = symmetric_evidence(piece, where, n)
+                P = symmetric_evidence(piece, at, n)
                 if not semidefinite(P, True):
-                    return False, where + ".P is not positive definite"
+                    return False, at + ".P is not positive definite", n, bits
             last_P_to = None
             if "P_to" in piece:  # P at start, P_to at to, linear between: the Bernstein test
-                Pto = last_P_to = symmetric_evidence({"P": piece["P_to"]}, where + "(P_to)", n)
+                Pto = last_P_to = symmetric_evidence({"P": piece["P_to"]}, at + "(P_to)", n)
                 if not semidefinite(Pto, True):
-                    return False, where + ".P_to is not positive definite"
+                    return False, at + ".P_to is not positive definite", n, bits
                 if not bernstein_stein_shown(P, Pto, M_at(start), M_at(to)):
                     why, ok = "%s on [%s, %s] (P linear): a Bernstein coefficient of P(t) - M(t)^T P(t) M(t) not shown positive " \
-                        "definite" % (where, short(start), short(to)), False
+                        "definite" % (at, short(start), short(to)), False
                     break
             else:
                 for e in (start, to):
                     if not stein_shown(P, M_at(e)):
-                        why, ok = "%s at %s = %s: P - M^T P M not shown positive definite" % (where, p, short(e)), False
+                        why, ok = "%s at %s = %s: P - M^T P M not shown positive definite" % (at, p, short(e)), False
                         break
             if not ok:
                 break
             start = to
         if not ok:
             continue
-        if hi == 0:
-            return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits%s)" % (
-                p, p, p, p, n, p, bits, ", on ker L beside the slow modes" if on_ker else "")
-        how = "inside the %s's tf, proven affine there" % block if inside else "the %s's gain alone" % block
-        return True, "sup %s in [%s, %s]: M(%s) affine (%d states, %s); stable on [0, %s] by %d intervals (one P > 0 per interval, P - M^T P M > 0 at both ends: convex in %s); NOT stable at %s (Stein inertia), %d bits" % (
-            p, short(lo), short(hi), p, n, how, short(lo), len(cover), p, short(hi), bits)
-    return False, "claim: sup %s in [%s, %s], but %s at 512 bits" % (p, short(lo), short(hi), why)
+        return True, "", n, bits
+    return None, why, 0, 0
+
+
+def check_stability_loop_max_symmetric(c):
+    """stability-loop-max-symmetric (C++ check/stability_loop_max_symmetric_check.hpp): p the whole gain of
+    [environment] (gain_block), so E(p) = p E(1); the loops read at p = 1 and 2 split by evidence.classes
+    (split_loop: the invariance checked on each), each block's supremum evidence checked as stability-loop-max's
+    (loop_max_part, the gain test on the block's realisations); every block stable on [0, lo] and one NOT stable at
+    hi (hi = 0: one block, its M(0) with an eigenvalue outside the circle); the conserved quantities k_F + sum_a
+    (k_a - 1) k_a'."""
+    model, claim, evidence = parts(c)
+    only(model, ("scene", "set", "name"), "model")
+    only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
+    only(evidence, ("classes", "blocks"), "evidence")
+    p = model.get("name")
+    if not isinstance(p, str) or not isinstance(model.get("scene"), str):
+        raise Malformed("model.name, model.scene: missing or not strings")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    if p in sets:
+        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
+    _, lo, hi, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
+    if lo < 0:
+        raise Malformed("claim.lo: negative (sup p >= 0)")
+    if hi == 0 and "conserved" in claim:
+        raise Malformed("claim.conserved: only with hi > 0 (sup = 0 is shown by one block)")
+    k = claim.get("conserved", 0)
+    if not isinstance(k, int) or isinstance(k, bool) or k < 0:
+        raise Malformed("claim.conserved: not an integer >= 0")
+    block, inside = gain_block(model["scene"], p)
+    if inside or block != "environment":
+        raise Malformed("model.name: %r is not the whole gain of [environment]: beyond stability-loop-max-symmetric" % p)
+    splits = []
+    for v in (1, 2):
+        m = dict({key: x for key, x in model.items() if key != "name"}, set=dict(sets))
+        m["set"][p] = str(v)
+        devices = scene_read(m, False, coupling=True, max_dofs=MAX_LOOP_SYMMETRIC_DOFS)[0].get("device")
+        if isinstance(devices, list) and len(devices) > MAX_LOOP_SYMMETRIC_READ:
+            raise TooLarge("model.scene: %d devices, above this checker's limit %d for stability-loop-max-symmetric" % (
+                len(devices), MAX_LOOP_SYMMETRIC_READ))
+        split = split_loop(scene_loop_read(m, MAX_LOOP_SYMMETRIC_DOFS), evidence.get("classes"))
+        if isinstance(split, str):
+            return False, "evidence.classes: at %s = %d, %s" % (p, v, split)
+        splits.append(split)
+    (fixed1, zero1, sizes), (fixed2, zero2, _) = splits
+    blocks = evidence.get("blocks")
+    needed = 1 + sum(1 for z in zero1 if z is not None)
+    if not isinstance(blocks, list) or len(blocks) != (1 if hi == 0 else needed):
+        raise Malformed("evidence.blocks: %s" % ("sup = 0 is shown by one block" if hi == 0 else
+                                                "every block is needed: the fixed space and each class of two DOFs or more, %d" % needed))
+    seen, total, unstable, said = set(), 0, 0, []
+    for b, blk in enumerate(blocks):
+        where = "evidence.blocks[%d]" % (b + 1)
+        if not isinstance(blk, dict):
+            raise Malformed(where + ": not an object")
+        only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at"), where)
+        if blk.get("space") == "fixed":
+            if "class" in blk:
+                raise Malformed(where + ".class: only for a zero-sum block")
+            slot, loops, copies = None, (fixed1, fixed2), 1
+        elif blk.get("space") == "zero-sum":
+            a = blk.get("class")
+            if not isinstance(a, int) or isinstance(a, bool) or not 0 <= a < len(sizes):
+                raise Malformed(where + ".class: not a class index")
+            if zero1[a] is None:
+                raise Malformed(where + ".class: class %d has one DOF (no zero-sum space)" % a)
+            slot, loops, copies = a, (zero1[a], zero2[a]), sizes[a] - 1
+        else:
+            raise Malformed(where + ".space: missing or not \"fixed\" / \"zero-sum\"")
+        if slot in seen:
+            raise Malformed(where + ": a block given twice")
+        seen.add(slot)
+        kb = blk.get("conserved", 0)
+        if not isinstance(kb, int) or isinstance(kb, bool) or kb < 0:
+            raise Malformed(where + ".conserved: not an integer >= 0")
+        unstable += "unstable_at" in blk
+        ok, why, n, bits = loop_max_part([loop_quotient_of(loops[0]), loop_quotient_of(loops[1])], blk, lo, hi, kb, p, "environment", False,
+                                         where, need_unstable=False)
+        if ok is None:
+            return False, "claim: sup %s in [%s, %s], but %s (%s): %s at 512 bits" % (p, short(lo), short(hi), where, blk["space"], why)
+        if not ok:
+            return False, "%s (%s): %s" % (where, blk["space"], why)
+        total += copies * kb
+        said.append("%s%s: %d states, %d intervals%s (%d bits)" % (blk["space"], "" if slot is None else " of class %d (x%d)" % (slot, copies),
+                                                                   n, len(blk.get("cover", [])), ", NOT stable at hi" if "unstable_at" in blk else "", bits))
+    if unstable != 1:
+        raise Malformed("evidence.blocks: %d with unstable_at; exactly one block bounds sup from above" % unstable)
+    if hi != 0 and total != k:
+        return False, "claim: %d conserved quantities, but the blocks have %d (k_F + sum_a (k_a - 1) k_a')" % (k, total)
+    head = "by the split of %d DOFs into %d classes of identical DOFs (invariance checked exactly at %s = 1 and 2; %s the environment's gain alone)" % (
+        sum(sizes), len(sizes), p, p)
+    if hi == 0:
+        return True, "sup %s = 0 %s: %s" % (p, head, "; ".join(said))
+    return True, "sup %s in [%s, %s] %s: every block stable on [0, %s], one NOT stable at %s: %s" % (
+        p, short(lo), short(hi), head, short(lo), short(hi), "; ".join(said))
 
 
 def lagrange(xs, ys):
@@ -4686,7 +4798,6 @@ def env_entries(model, T, params, max_dofs=None):
     domain = env.get("domain")
     if domain not in ("z", "s"):
         raise Malformed("model.environment.domain: must be \"z\" or \"s\"")
-    zvar = RF([Fraction(0), Fraction(1)])
     if domain == "s":
         method = env.get("method")
         if method == "backward_euler":
@@ -5411,7 +5522,8 @@ def check(c):
                     "passivity-level-mimo": check_passivity_level_mimo,
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max,
                     "stability-loop": check_stability_loop, "stability-loop-max": check_stability_loop_max,
-                    "stability-loop-symmetric": check_stability_loop_symmetric, "wedge": check_wedge}
+                    "stability-loop-symmetric": check_stability_loop_symmetric,
+                    "stability-loop-max-symmetric": check_stability_loop_max_symmetric, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:
             raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))

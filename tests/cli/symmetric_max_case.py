@@ -8,14 +8,17 @@ a failure, not a timing). Required:
     (tests/check/symmetric_loop_case.py's reference_rho, no code shared with hapstab): spectral radius < 1 at
     12 points geometric in [sup 10^-3, sup (1 - 10^-6)] and > 1 at sup (1 + 10^-6) (a crossing's error in double
     ~ 1e-10 relative here: 10^-6 leaves four decades);
-  * --certificate refused by name (no kind holds a split supremum yet: exit 2, "split"), --no-symmetry refused
-    by name beyond 64 DOFs (exit 2), and a scene of 8 DOFs in two classes of 4 (a class of three or more) split
-    too, its supremum the 96's zero-sum block's (the same one-DOF loop).
+  * --certificate writes kind stability-loop-max-symmetric (check/stability_loop_max_symmetric_check.hpp), its
+    claim the printed enclosure around sup, three blocks of which exactly one carries unstable_at, conserved = 96;
+    both checkers verify it (exit 0), and each hand edit of max_mutants() gets its exit code from both;
+  * --no-symmetry refused by name beyond 64 DOFs (exit 2), and a scene of 8 DOFs in two classes of 4 (a class of
+    three or more) split too, its supremum the 96's zero-sum block's (the same one-DOF loop).
 
   symmetric_max_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
 import json
 import os
+from fractions import Fraction as Q
 import subprocess
 import sys
 import tempfile
@@ -25,8 +28,56 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.join(HERE, "..", "..")
 SCENE = os.path.join(HERE, "scenes", "symmetric_held_96.toml")
+INDEPENDENT = os.path.join(TOP, "checks", "hapstab_check.py")
 sys.path.insert(0, os.path.join(TOP, "tests", "check"))
 from symmetric_loop_case import reference_rho  # noqa: E402
+
+
+def max_mutants(c):
+    """Hand edits of a stability-loop-max-symmetric certificate c and the exit code both checkers must give each:
+    refuted (1) -- the classes merged or a DOF swapped between them (not invariant), a cover P negated, unstable_at's
+    w zero, a conserved count moved (claim or block); malformed (2) -- a block dropped or given twice, unstable_at
+    taken away, a DOF beyond the scene or left out, a cover's last interval not ending at lo, the gain made 2 g
+    (not the gain alone). (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
+    def edit(f):
+        e = json.loads(json.dumps(c))
+        f(e)
+        return e
+    ev = c["evidence"]
+    classes, blocks = ev["classes"], ev["blocks"]
+    d = next(i for i, b in enumerate(blocks) if "unstable_at" in b)
+    out = []
+    if len(classes) >= 2:
+        out += [("the first two classes merged", edit(lambda e: e["evidence"].update(classes=[classes[0] + classes[1]] + classes[2:])), 1),
+                ("a DOF swapped between the first two classes", edit(lambda e: e["evidence"].update(
+                    classes=[[classes[1][0]] + classes[0][1:], [classes[0][0]] + classes[1][1:]] + classes[2:])), 1)]
+    out += [("a DOF index 2^32 + 1", edit(lambda e: e["evidence"]["classes"][0].__setitem__(0, 2 ** 32 + 1)), 2),
+            ("a DOF left out of the classes", edit(lambda e: e["evidence"]["classes"][-1].pop() if len(classes[-1]) > 1
+                                                   else e["evidence"]["classes"].pop()), 2),
+            ("unstable_at's w zero", edit(lambda e: e["evidence"]["blocks"][d]["unstable_at"].update(
+                w=["0"] * len(blocks[d]["unstable_at"]["w"]))), 1),
+            ("unstable_at taken away", edit(lambda e: e["evidence"]["blocks"][d].pop("unstable_at")), 2),
+            ("the gain made 2 g", edit(lambda e: e["model"].update(scene=c["model"]["scene"].replace('gain = "%s"' % c["model"]["name"],
+                                                                                                        'gain = "2*%s"' % c["model"]["name"]))), 2)]
+    if c["claim"]["hi"] == "0":
+        return out
+    b0 = blocks[0]
+
+    def neg_p(e):
+        P = e["evidence"]["blocks"][0]["cover"][0]["P"]
+        P[0][0] = str(-Q(P[0][0]))
+
+    def last_to(e):
+        e["evidence"]["blocks"][0]["cover"][-1]["to"] = str(Q(c["claim"]["lo"]) * 2)
+    out += [("the first block's first cover P[0][0] negated", edit(neg_p), 1),
+            ("the claim's conserved moved", edit(lambda e: e["claim"].update(conserved=c["claim"].get("conserved", 0) + 1)), 1),
+            ("the first block's conserved moved", edit(lambda e: e["evidence"]["blocks"][0].update(conserved=b0.get("conserved", 0) + 1)), 1),
+            ("the first block's cover ending at 2 lo", edit(last_to), 2),
+            ("the last block dropped", edit(lambda e: e["evidence"]["blocks"].pop()), 2)]
+    if len(blocks) >= 2:
+        out.append(("a block given twice", edit(lambda e: e["evidence"]["blocks"].__setitem__(
+            0 if d != 0 else 1, e["evidence"]["blocks"][1 if d != 0 else 2] if len(blocks) > 2 or d != 0 else e["evidence"]["blocks"][0])), 2))
+    return out
 
 
 def main():
@@ -59,9 +110,25 @@ def main():
     above = reference_rho(sup * (1 + 1e-6))
     expect("the reference: max rho below sup %.9f (< 1), rho at sup (1 + 1e-6) %.9f (> 1)" % (max(below), above),
            max(below) < 1 and above > 1)
+    def exits(path):
+        return (subprocess.run([hapstab, "check", path], capture_output=True, timeout=300).returncode,
+                subprocess.run(["/usr/bin/python3", INDEPENDENT, path], capture_output=True, timeout=300).returncode)
     with tempfile.TemporaryDirectory() as tmp:
-        c = run("--certificate", os.path.join(tmp, "c.json"))
-        expect("--certificate: exit %d, '%s'" % (c.returncode, c.stderr.strip()[:120]), c.returncode == 2 and "split" in c.stderr)
+        path = os.path.join(tmp, "c.json")
+        r = run("--certificate", path)
+        cert = json.load(open(path)) if r.returncode == 0 and os.path.exists(path) else {}
+        blocks = cert.get("evidence", {}).get("blocks", [])
+        expect("--certificate: exit %d, kind %s, %d blocks, %d with unstable_at, conserved %s" % (
+            r.returncode, cert.get("kind"), len(blocks), sum("unstable_at" in b for b in blocks), cert.get("claim", {}).get("conserved")),
+            cert.get("kind") == "stability-loop-max-symmetric" and len(blocks) == 3 and sum("unstable_at" in b for b in blocks) == 1 and
+            cert["claim"].get("conserved") == 96 and float(cert["claim"]["printed_lo"]) <= lo and float(cert["claim"]["printed_hi"]) >= hi)
+        if cert:
+            expect("both checkers verify it %s" % (exits(path),), exits(path) == (0, 0))
+            for what, m, code in max_mutants(cert):
+                bad = os.path.join(tmp, "m.json")
+                json.dump(m, open(bad, "w"))
+                got = exits(bad)
+                expect("%s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
         w = run("--no-symmetry")
         expect("--no-symmetry: exit %d, '%s'" % (w.returncode, w.stderr.strip()[:120]), w.returncode == 2 and "64 DOFs" in w.stderr)
         small = os.path.join(tmp, "held_8.toml")

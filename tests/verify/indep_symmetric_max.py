@@ -12,9 +12,12 @@ stable (rho < 1 - 1e-12) is what the grid can show. Required: hapstab's certifie
 relative of sup_ref (double eigenvalues of a matrix with eigenvalues repeated k - 1 times near |z| = 1: the
 crossing's error is ~ sqrt(eps) times the conditioning at worst; 1e-6 leaves three decades) and its path
 "symmetry" exactly where the split pays (N > 8, or a class of three or more); sup = 0 (exit 1) only where the
-reference's rho at g0 10^-4 is >= 1; undecided (exit 3) counted apart, never as either answer.
+reference's rho at g0 10^-4 is >= 1; undecided (exit 3) counted apart, never as either answer. Where the split
+was used, the certificate (kind stability-loop-max-symmetric) verified by both checkers (the independent one within
+its 128 DOFs) and, on every K-th such case (--mutants-every K, default 1), each hand edit of
+tests/cli/symmetric_max_case.py's max_mutants() given its exit code by both.
 
-  indep_symmetric_max.py HAPSTAB [--cases N] [--seed S]
+  indep_symmetric_max.py HAPSTAB [--cases N] [--seed S] [--mutants-every K]
 exit 0 when every compared case agrees, else 1.
 """
 import json
@@ -27,8 +30,14 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from indep_common import cases_and_seed  # noqa: E402
+from indep_common import case_files, cases_and_seed  # noqa: E402
 import indep_symmetric_certificate as ISC  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "cli"))
+from symmetric_max_case import max_mutants  # noqa: E402
+
+CHECKER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "checks", "hapstab_check.py")
+MUTATE = {"every": 1, "split": 0, "mutants": 0}
 
 
 def reference_sup(c):
@@ -58,11 +67,33 @@ def splits(c):
     return not alike and sum(k >= 2 for k in sizes) >= 1 and (c["N"] > 8 or max(sizes) >= 3)
 
 
+def certificate_fails(exe, cert, bad):
+    """What is wrong with the split supremum's certificate, or "": verified by both checkers, its mutants (every K-th)."""
+    def exits(p):
+        return tuple(subprocess.run(cmd, capture_output=True, timeout=600).returncode
+                     for cmd in ([exe, "check", p], ["/usr/bin/python3", CHECKER, p]))
+    c = json.load(open(cert))
+    if c.get("kind") != "stability-loop-max-symmetric":
+        return "certificate kind %s" % c.get("kind")
+    got = exits(cert)
+    if got not in ((0, 0), (0, 3)):
+        return "the checkers exit %s on the certificate" % (got,)
+    MUTATE["split"] += 1
+    if MUTATE["split"] % MUTATE["every"]:
+        return ""
+    for what, m, code in max_mutants(c):
+        with open(bad, "w") as f:
+            json.dump(m, f)
+        gm = exits(bad)
+        if gm not in ((code, code), (code, 3)):
+            return "%s: the checkers exit %s (want %d)" % (what, gm, code)
+        MUTATE["mutants"] += 1
+    return ""
+
+
 def run_case(exe, c, tmp):
-    path = os.path.join(tmp, "scene.toml")
-    with open(path, "w") as f:
-        f.write(ISC.scene(c))
-    r = subprocess.run([exe, "stability", "--scene", path, "--max", "g", "--json", "--quiet", "--digits", "12"],
+    path, cert, bad = case_files(tmp, ISC.scene(c))
+    r = subprocess.run([exe, "stability", "--scene", path, "--max", "g", "--json", "--quiet", "--digits", "12", "--certificate", cert],
                        capture_output=True, text=True, timeout=600)
     ref = reference_sup(c)
     tag = "N %d, %d classes, delay %d, springs %d" % (c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]))
@@ -75,6 +106,9 @@ def run_case(exe, c, tmp):
     if r.returncode == 1:
         if ref != 0.0:
             return False, "hapstab: sup = 0, the reference's sup is %s (%s)" % (ref, tag), None
+        why = certificate_fails(exe, cert, bad) if j.get("path") == "symmetry" else ""
+        if why:
+            return False, "sup = 0 agrees, but %s (%s)" % (why, tag), None
         return True, "sup = 0 (%s)" % tag, "sup = 0"
     if ref is None or ref == 0.0:
         return False, "hapstab: sup = %s, the reference's %s (%s)" % (j["max"], ref, tag), None
@@ -84,12 +118,18 @@ def run_case(exe, c, tmp):
     if not path_ok:
         return False, "path %s, but the scene %s (%s)" % (j.get("path"), "splits" if splits(c) else "does not split", tag), None
     branch = "split, %s block" % ("fixed" if j.get("deciding_block") == 0 else "zero-sum") if j.get("path") == "symmetry" else "whole"
+    if j.get("path") == "symmetry":
+        why = certificate_fails(exe, cert, bad)
+        if why:
+            return False, "sup = %s agrees, but %s (%s)" % (j["max"], why, tag), None
     return True, "sup = %s, reference %.12g (%s; %s)" % (j["max"], ref, tag, branch), branch
 
 
 def main(argv):
     exe = argv[1]
     cases, seed = cases_and_seed(argv, 6, 1)
+    if "--mutants-every" in argv:
+        MUTATE["every"] = int(argv[argv.index("--mutants-every") + 1])
     rng = random.Random("symmetric-max:%d" % seed)
     counts, bad = {}, 0
     with tempfile.TemporaryDirectory(prefix="hapstab-sym-max-") as tmp:
@@ -102,7 +142,8 @@ def main(argv):
             print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
             bad += ok is False
             counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
-    print("indep_symmetric_max: %d cases, %d disagree; %s" % (cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items()))))
+    print("indep_symmetric_max: %d cases, %d disagree; %s; %d certificates verified, %d mutants each given its exit code by both" % (
+        cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTATE["split"], MUTATE["mutants"]))
     if cases >= 6 and not any(k.startswith("split") for k in counts):
         print("indep_symmetric_max: TOO FEW COMPARED: no split supremum agreed")
         return 1

@@ -857,7 +857,10 @@ nlohmann::json stability_loop_certificate(const StabilityText& text, const ratio
     std::optional<check::detail::SceneLoop> L;
     try {
       L = check::detail::read_scene_loop(j["model"], check::detail::kMaxSymmetricDofs);
-    } catch (const InputError&) {  // refused by name below, as the whole loop's reading says
+    } catch (const InputError& e) {  // refused by name below, as the whole loop's reading says -- except beyond the split's own limit
+      if (std::string(e.what()).find("more than " + std::to_string(check::detail::kMaxSymmetricDofs)) != std::string::npos)
+        throw InputError(std::string("--certificate: the checker does not take this scene (") + e.what() +
+                         ": beyond stability-loop-symmetric's " + std::to_string(check::detail::kMaxSymmetricDofs) + " DOFs): no certificate");
     }
     if (L && L->dofs() > 64) return stability_loop_symmetric_certificate(j["model"], *L, stable);
   }

@@ -383,8 +383,11 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
 // The certificate (kind stability-loop-max): sup p in [lo, hi], its ends a relative 10^-12 .. 10^-4 outside
 // the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
 // is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
-nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m) {
-  const nlohmann::json c = cli::stability_loop_max_certificate(cli::scene_model_json(o.scene, o.sets), o.max_name, cli::sup_claim(m));
+// Kind stability-loop-max-symmetric where the supremum was found on the split by identical DOFs.
+nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m, bool split) {
+  const nlohmann::json model = cli::scene_model_json(o.scene, o.sets);
+  const nlohmann::json c = split ? cli::stability_loop_max_symmetric_certificate(model, o.max_name, cli::sup_claim(m))
+                                 : cli::stability_loop_max_certificate(model, o.max_name, cli::sup_claim(m));
   cli::write_certificate(o.certificate, c);
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
 }
@@ -406,16 +409,34 @@ void add_split_json(nlohmann::json& j, const stability::LoopMaxSplit& s) {
   j["blocks"] = blocks;
 }
 
-[[noreturn]] void refuse_split_certificate(const StabilityOpts& o, const stability::LoopMaxSplit& s) {
-  throw InputError("--certificate: sup " + o.max_name + " was found on the " + std::to_string(s.blocks.size()) +
-                   " small loops of the split by identical DOFs (" + s.group + "), which no certificate kind holds yet "
-                   "(stability-loop-max reads the whole loop, up to 80 DOFs: `--no-symmetry` there)");
-}
-
 [[noreturn]] void refuse_bisection_certificate(const StabilityOpts& o, const std::string& not_affine) {
   throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
                    "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
                    "certifies one verdict): no certificate");
+}
+
+// The text of a certified supremum (loop_max_json's fields j), on the whole or the split (`split`, else null).
+std::string supremum_text(const StabilityOpts& o, const scene::Scene& sc, const stability::LoopMax& m, nlohmann::json& j,
+                          const stability::LoopMaxSplit* split) {
+  std::ostringstream t;
+  t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["digits_certified"].get<int>()
+    << " digits; " << sc.loop.dofs() << " DOF, "
+    << (split ? std::to_string(split->blocks.size()) + " small loops of " + std::to_string(m.states) + " states in all (" + split->group + ")"
+              : "closed-loop matrix of order " + std::to_string(m.states))
+    << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
+    << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
+    << "  stable for every " << o.max_name << " in " << (m.open_at_zero ? "(" : "[") << j["stable_on"][0].get<std::string>()
+    << ", " << j["stable_on"][1].get<std::string>() << "] (certified"
+    << (m.open_at_zero ? "; at " + o.max_name + " = 0 only marginally: position integrators" : std::string())
+    << "), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
+    << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
+    << " rad/s; mode |x| per DOF:";
+  int shown = 0;  // a split's mode names every DOF: its nonzero entries, the first 8
+  for (auto& [dof, a] : j["crossing"]["mode"].items())
+    if (!split || (a.get<double>() != 0 && ++shown <= 8)) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
+  if (shown > 8) t << " ... (" << shown << " DOFs)";
+  t << "\n  " << m.note << "\n";
+  return t.str();
 }
 
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
@@ -485,11 +506,13 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
                        no_split + "): the whole closed-loop matrix's supremum is refused beyond " + std::to_string(stability::kWholeMaxDofs) +
                        " DOFs (its cover of eigenvalue enclosures costs minutes to hours there)");
     const stability::LoopMax m = split ? split->whole : stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
-    if (split && !o.certificate.empty()) refuse_split_certificate(o, *split);
-    const nlohmann::json certified = o.certificate.empty() ? nlohmann::json() : write_loop_max_certificate(o, m);
+    // an undecided supremum writes no certificate and keeps its exit code 3 (docs/certificates.md)
+    const nlohmann::json certified =
+        o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, m, split.has_value());
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
            {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
+      if (split) add_split_json(j, *split);
       text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";
       rc = cli::exit_property_fails;
     } else {
@@ -501,29 +524,12 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
           text += "  stable for every " + o.max_name + " in [" + j["stable_on"][0].get<std::string>() + ", " +
                   j["stable_on"][1].get<std::string>() + "] [certified]\n";
         text += "  " + m.note + "\n";
+        if (!o.certificate.empty()) text += "  certificate: none written (an undecided supremum has none)\n";
         rc = cli::exit_numerical;
       } else {
         exact = m.sup;
         exact_is_supremum = true;
-        std::ostringstream t;
-        t << "sup " << o.max_name << " = " << j["max"].get<std::string>() << "   [certified crossing, " << j["digits_certified"].get<int>()
-          << " digits; " << sc.loop.dofs() << " DOF, "
-          << (split ? std::to_string(split->blocks.size()) + " small loops of " + std::to_string(m.states) + " states in all (" + split->group + ")"
-                    : "closed-loop matrix of order " + std::to_string(m.states))
-          << (m.fixed_modes > 0 ? " + " + std::to_string(m.fixed_modes) + " fixed modes" : std::string()) << "]\n"
-          << "  crossing enclosure [" << j["enclosure"][0].get<std::string>() << ", " << j["enclosure"][1].get<std::string>() << "]\n"
-          << "  stable for every " << o.max_name << " in " << (m.open_at_zero ? "(" : "[") << j["stable_on"][0].get<std::string>()
-          << ", " << j["stable_on"][1].get<std::string>() << "] (certified"
-          << (m.open_at_zero ? "; at " + o.max_name + " = 0 only marginally: position integrators" : std::string())
-          << "), NOT stable at " << j["unstable_at"].get<std::string>() << "\n"
-          << "  the root leaves the unit disk at " << m.where << ", omega = " << j["crossing"]["omega"][0].get<std::string>()
-          << " rad/s; mode |x| per DOF:";
-        int shown = 0;  // a split's mode names every DOF: its nonzero entries, the first 8
-        for (auto& [dof, a] : j["crossing"]["mode"].items())
-          if (!split || (a.get<double>() != 0 && ++shown <= 8)) t << " " << dof << " " << to_decimal(rational(a.get<double>()), 3);
-        if (shown > 8) t << " ... (" << shown << " DOFs)";
-        t << "\n  " << m.note << "\n";
-        text = t.str();
+        text = supremum_text(o, sc, m, j, split ? &*split : nullptr);
       }
     }
     if (!certified.is_null()) j["certificate_claim"] = certified, text += certificate_line(o, certified, m.open_at_zero);

@@ -10,6 +10,7 @@
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
 #include "hapstab/check/stability_loop_max_check.hpp"
+#include "hapstab/check/stability_loop_symmetric_check.hpp"
 #include "hapstab/lmi/program.hpp"
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -256,9 +257,10 @@ struct Attempt {
   std::string why;  ///< "" when the evidence is complete
 };
 
-Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
-                     const rational& start, const Mat& slow) {
-  Attempt out;
+// evidence.unstable_at: NOT stable at hi by Stein inertia (hi = 0 beside slow modes: M(0) on ker L); "" when written
+// into `evidence`, else why not.
+std::string unstable_evidence(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& hi, const Mat& slow,
+                              nlohmann::json& evidence) {
   SchurDecision u = stein_evidence(intervals(loop_at(M1, M2, hi)));
   bool on_ker = false;  // sup = 0 beside slow modes (their eigenvalue 1 leaves Stein inertia none): M(0) on ker L
   if ((!u.stable || *u.stable) && hi == 0 && !slow.empty()) {
@@ -266,10 +268,19 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
     if (r.stable && !*r.stable) u = r, on_ker = true;
   }
   if (!u.stable || *u.stable)
-    return {{}, "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")" +
-                    (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too, which the slow rows do not carry" : "")};
-  out.evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
-  if (on_ker) out.evidence["unstable_at"]["slow_quotient"] = true;
+    return "no Stein inertia certificate that " + name + " = " + check::detail::decimal(hi) + " is NOT stable (" + u.why + ")" +
+           (hi == 0 ? ": at " + name + " = 0 an eigenvalue on the circle too, which the slow rows do not carry" : "");
+  evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
+  if (on_ker) evidence["unstable_at"]["slow_quotient"] = true;
+  return "";
+}
+
+// unstable_at at hi (its Stein inertia) where `unstable`, then the cover of [start, lo].
+Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
+                     const rational& start, const Mat& slow, bool unstable = true) {
+  Attempt out;
+  if (unstable)
+    if (std::string why = unstable_evidence(M1, M2, name, hi, slow, out.evidence); !why.empty()) return {{}, why};
   std::vector<Piece> pieces;  // from lo down
   rational b = lo, width = lo - start;
   SdpWidening sdp;
@@ -318,30 +329,26 @@ SupClaim sup_claim(const stability::MaxGain& m) {
   return {m.outcome, e, e.lo, rational(0)};
 }
 
-nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m) {
-  nlohmann::json j = certificate_header("stability-loop-max");
-  j["model"] = model;
-  if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
-  j["model"]["name"] = name;
-  check::detail::LoopMatrix m1, m2;
+namespace {
+
+// One loop read at p = 1 and 2, its matrices at kBits (the checker's own).
+struct LoopPair {
   check::detail::SceneLoop loop1, loop2;
-  const auto read = [&](long v) {
-    nlohmann::json at = model;
-    at["set"][name] = std::to_string(v);
-    return check::detail::read_scene_loop(at);
-  };
-  try {
-    flint::BallPrecision scope(kBits);
-    loop1 = read(1), loop2 = read(2);
-    m1 = check::detail::loop_matrix(loop1, kBits), m2 = check::detail::loop_matrix(loop2, kBits);
-    check::detail::require_loop_max_order(m1.order);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
-  }
+  check::detail::LoopMatrix m1, m2;
+};
+
+LoopPair loop_pair(check::detail::SceneLoop l1, check::detail::SceneLoop l2) {
+  LoopPair out{std::move(l1), std::move(l2), {}, {}};
   flint::BallPrecision scope(kBits);
-  // the claim's ends: 0 and 0 (sup = 0), or decimals of 16 digits delta below and above the crossing's
-  // enclosure (relative), for the first delta whose Stein certificates a double solve finds: the
-  // narrowest enclosure this evidence proves (the crossing's own, Krawczyk's, is narrower still)
+  out.m1 = check::detail::loop_matrix(out.loop1, kBits), out.m2 = check::detail::loop_matrix(out.loop2, kBits);
+  check::detail::require_loop_max_order(out.m1.order);
+  return out;
+}
+
+// The claim's ends: 0 and 0 (sup = 0), or decimals of 16 digits delta below and above the crossing's enclosure
+// (relative), for the first delta whose Stein certificates a double solve finds: the narrowest enclosure this
+// evidence proves (the crossing's own, Krawczyk's, is narrower still).
+std::vector<std::pair<std::string, std::string>> claim_ends(const SupClaim& m, const std::string& name) {
   std::vector<std::pair<std::string, std::string>> ends;
   if (m.outcome == Outcome::fails) {
     ends.emplace_back("0", "0");
@@ -353,47 +360,151 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
   } else {
     throw InputError("--certificate: sup " + name + " is undecided: no certificate");
   }
-  std::string why;
-  for (const auto& [plo, phi] : ends) {
-    const rational lo = parse_rational(plo), hi = parse_rational(phi);
-    // where M(0) is only marginally stable (slow rows: L M(0) = L): the first-order start on (0, eps], eps
-    // the producer's own first-order cover's end, else lo / 4^j
-    std::optional<nlohmann::json> start;
-    // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
-    // Stein inertia on ker L instead)
-    const Mat L = !m1.right_quotient ? check::detail::slow_rows(loop1, loop2, m1) : Mat{};
-    if (!L.empty() && hi > 0) {
-      std::vector<rational> tries;
-      if (m.first_order_to > 0 && m.first_order_to <= lo) tries.push_back(m.first_order_to);
-      for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
-      try {
-        for (const rational& eps : tries)
-          if ((start = first_order_evidence(m1.M, m2.M, L, eps, m1, m2, lo))) break;
-      } catch (const InputError& e) {  // not the environment's gain, conserved quantities, no slow mode
-        why = std::string("no first-order start at 0: ") + e.what();
-        continue;
-      }
-      if (!start) {
-        why = "no first-order start at 0 (the loop at " + name + " = 0 only marginally stable: no P0, S found for (0, eps])";
-        continue;
-      }
+  return ends;
+}
+
+// One loop's evidence for sup in [lo, hi] ({first_order, cover, unstable_at} of check_max_part): where M(0) is only
+// marginally stable (slow rows: L M(0) = L) the first-order start on (0, eps] first, eps the producer's own first-order
+// cover's end (first_order_to), else lo / 4^j; unstable_at where `unstable`. nullopt with `why` when none is found.
+std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::string& name, const rational& lo, const rational& hi,
+                                            const rational& first_order_to, bool unstable, std::string& why) {
+  flint::BallPrecision scope(kBits);
+  std::optional<nlohmann::json> start;
+  // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
+  // Stein inertia on ker L instead)
+  const Mat L = !lp.m1.right_quotient ? check::detail::slow_rows(lp.loop1, lp.loop2, lp.m1) : Mat{};
+  if (!L.empty() && lo > 0) {
+    std::vector<rational> tries;
+    if (first_order_to > 0 && first_order_to <= lo) tries.push_back(first_order_to);
+    for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
+    try {
+      for (const rational& eps : tries)
+        if ((start = first_order_evidence(lp.m1.M, lp.m2.M, L, eps, lp.m1, lp.m2, lo))) break;
+    } catch (const InputError& e) {  // not the environment's gain, conserved quantities, no slow mode
+      why = std::string("no first-order start at 0: ") + e.what();
+      return std::nullopt;
     }
-    const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
-    Attempt a = evidence_for(m1.M, m2.M, name, lo, hi, from, L);
-    if (start) a.evidence["first_order"] = *start;
-    if (!a.why.empty()) {
-      why = a.why;
+    if (!start) {
+      why = "no first-order start at 0 (the loop at " + name + " = 0 only marginally stable: no P0, S found for (0, eps])";
+      return std::nullopt;
+    }
+  }
+  const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
+  Attempt a = evidence_for(lp.m1.M, lp.m2.M, name, lo, hi, from, L, unstable);
+  if (!a.why.empty()) {
+    why = a.why;
+    return std::nullopt;
+  }
+  if (start) a.evidence["first_order"] = *start;
+  return a.evidence;
+}
+
+nlohmann::json sup_claim_json(const std::string& quantity, const std::string& plo, const std::string& phi) {
+  return {{"quantity", quantity}, {"status", "certified"}, {"lo", parse_rational(plo).str()}, {"hi", parse_rational(phi).str()},
+          {"printed_lo", plo}, {"printed_hi", phi}};
+}
+
+// The scene's model read at p = v.
+check::detail::SceneLoop read_at(const nlohmann::json& model, const std::string& name, long v, std::optional<size_t> max_dofs = std::nullopt) {
+  nlohmann::json at = model;
+  at["set"][name] = std::to_string(v);
+  return max_dofs ? check::detail::read_scene_loop(at, *max_dofs) : check::detail::read_scene_loop(at);
+}
+
+}  // namespace
+
+nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m) {
+  nlohmann::json j = certificate_header("stability-loop-max");
+  j["model"] = model;
+  if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
+  j["model"]["name"] = name;
+  LoopPair lp;
+  try {
+    lp = loop_pair(read_at(model, name, 1), read_at(model, name, 2));
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
+  }
+  std::string why;
+  for (const auto& [plo, phi] : claim_ends(m, name)) {
+    const auto ev = loop_evidence(lp, name, parse_rational(plo), parse_rational(phi), m.first_order_to, true, why);
+    if (!ev) continue;
+    j["evidence"] = *ev;
+    j["claim"] = sup_claim_json("sup " + name + " = sup{p0 > 0: the " + (model.contains("scene") ? "scene's " : "") +
+                                    "loop as written is stable for every " + name + " in (0, p0)}, the closed-loop matrix built by the checker",
+                                plo, phi);
+    if (lp.m1.conserved > 0) j["claim"]["conserved"] = lp.m1.conserved;
+    verify_before_writing(j);
+    return j;
+  }
+  throw InputError("--certificate: " + why + ": no certificate");
+}
+
+nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m) {
+  nlohmann::json j = certificate_header("stability-loop-max-symmetric");
+  j["model"] = model;
+  if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
+  j["model"]["name"] = name;
+  std::vector<std::vector<int>> classes;
+  std::vector<LoopPair> blocks;  // slot 0: the fixed space; then each class of two DOFs or more
+  std::vector<nlohmann::json> labels;
+  std::vector<long> copies;
+  try {
+    const auto r = check::detail::read_max_parameter(model.at("scene").get<std::string>(), name);
+    if (r.inside || r.block != "environment")
+      throw InputError("'" + name + "' is not the whole gain of [environment] (the split's blocks are p times their value at 1 only for that gain)");
+    const auto l1 = read_at(model, name, 1, check::detail::kMaxSymmetricDofs), l2 = read_at(model, name, 2, check::detail::kMaxSymmetricDofs);
+    classes = check::detail::identical_dofs(l1);
+    std::string why;
+    const auto s1 = check::detail::split_loop(l1, classes, why), s2 = check::detail::split_loop(l2, classes, why);
+    if (!s1 || !s2) throw InputError("the scene is not invariant under its identical DOFs' permutations (" + why + ")");
+    for (size_t slot = 0; slot <= classes.size(); ++slot) {
+      if (slot > 0 && s1->sizes[slot - 1] < 2) continue;
+      blocks.push_back(loop_pair(s1->block(slot), s2->block(slot)));
+      labels.push_back(slot == 0 ? nlohmann::json{{"space", "fixed"}} : nlohmann::json{{"space", "zero-sum"}, {"class", slot - 1}});
+      copies.push_back(slot == 0 ? 1 : static_cast<long>(s1->sizes[slot - 1]) - 1);
+    }
+  } catch (const InputError& e) {
+    throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
+  }
+  std::string why;
+  for (const auto& [plo, phi] : claim_ends(m, name)) {
+    const rational lo = parse_rational(plo), hi = parse_rational(phi);
+    // the block NOT stable at hi: the first whose Stein inertia shows it
+    std::optional<size_t> deciding;
+    nlohmann::json un;
+    for (size_t b = 0; b < blocks.size() && !deciding; ++b) {
+      flint::BallPrecision scope(kBits);
+      const Mat L = !blocks[b].m1.right_quotient ? check::detail::slow_rows(blocks[b].loop1, blocks[b].loop2, blocks[b].m1) : Mat{};
+      if (unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un).empty()) deciding = b;
+    }
+    if (!deciding) {
+      why = "no block with a Stein inertia certificate that " + name + " = " + phi + " is NOT stable";
       continue;
     }
-    j["evidence"] = a.evidence;
-    j["claim"] = {{"quantity", "sup " + name + " = sup{p0 > 0: the " + (model.contains("scene") ? "scene's " : "") +
-                                   "loop as written is stable for every " + name + " in (0, p0)}, the closed-loop matrix built by the checker"},
-                  {"status", "certified"},
-                  {"lo", lo.str()},
-                  {"hi", hi.str()},
-                  {"printed_lo", plo},
-                  {"printed_hi", phi}};
-    if (m1.conserved > 0) j["claim"]["conserved"] = m1.conserved;
+    nlohmann::json evidence{{"classes", classes}, {"blocks", nlohmann::json::array()}};
+    long total = 0;
+    bool all = true;
+    for (size_t b = 0; b < blocks.size() && all; ++b) {
+      if (hi == 0 && b != *deciding) continue;  // sup = 0: the one block
+      std::optional<nlohmann::json> ev = lo > 0 ? loop_evidence(blocks[b], name, lo, hi, 0, false, why) : nlohmann::json::object();
+      if (!ev) {
+        why = "block " + labels[b].dump() + ": " + why;
+        all = false;
+        continue;
+      }
+      nlohmann::json blk = labels[b];
+      if (blocks[b].m1.conserved > 0) blk["conserved"] = blocks[b].m1.conserved;
+      for (auto& [k, v] : ev->items()) blk[k] = v;
+      if (b == *deciding) blk["unstable_at"] = un["unstable_at"];
+      evidence["blocks"].push_back(blk);
+      total += copies[b] * static_cast<long>(blocks[b].m1.conserved);
+    }
+    if (!all) continue;
+    j["evidence"] = evidence;
+    j["claim"] = sup_claim_json("sup " + name + " = sup{p0 > 0: the scene's loop as written is stable for every " + name +
+                                    " in (0, p0)}, on the small loops of the split by identical DOFs the checker derives",
+                                plo, phi);
+    if (hi > 0 && total > 0) j["claim"]["conserved"] = total;
     verify_before_writing(j);
     return j;
   }

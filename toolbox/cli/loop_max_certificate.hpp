@@ -50,5 +50,11 @@ SupClaim sup_claim(const stability::MaxGain& m);
 /// operator, set, T, delay}: a device pole off s = 0, where the `stability-max` kind's resultant has no
 /// exact form).
 nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m);
+/// The same for a supremum found on the split by identical DOFs (stability/loop_max_symmetric.hpp): kind
+/// stability-loop-max-symmetric (check/stability_loop_max_symmetric_check.hpp), the classes the checker's own
+/// (identical_dofs), each block's evidence built as above on the block's loops at p = 1 and 2 (the first-order
+/// start from lo / 4^j), unstable_at on the first block whose Stein inertia shows M_b(hi) NOT stable. p must be the
+/// whole gain of [environment] (else InputError, by name).
+nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m);
 
 }  // namespace hapstab::cli

@@ -44,15 +44,9 @@ std::vector<std::string> identifiers(const std::string& text) {
   return out;
 }
 
-// The header's reading of p: the block ("environment" or "coupling") whose `gain` is exactly p, p named in
-// no other string of the scene; or (`inside`) p named only in the `tf` entries of one of them, its gain
-// not p. InputError naming what is not so.
-struct Reading {
-  std::string block;
-  bool inside = false;
-};
+}  // namespace
 
-Reading read_p(const std::string& scene, const std::string& p) {
+detail::MaxReading detail::read_max_parameter(const std::string& scene, const std::string& p) {
   toml::table root;
   try {
     root = toml::parse(scene);
@@ -61,7 +55,7 @@ Reading read_p(const std::string& scene, const std::string& p) {
   }
   const auto* params = root["parameters"].as_table();
   if (!params || !params->contains(p)) throw InputError("model.name: '" + p + "' is not a parameter of the scene ([parameters])");
-  Reading r;
+  MaxReading r;
   for (const char* b : {"environment", "coupling"})
     if (const auto* t = root[b].as_table())
       if (const auto* g = t->get("gain"); g && g->as_string() && g->as_string()->get() == p) {
@@ -110,11 +104,14 @@ Reading read_p(const std::string& scene, const std::string& p) {
   return r;
 }
 
+namespace {
+using detail::MaxReading;
+
 // p inside the block's tf (header): each entry naming p proven affine in it (check/affine.hpp), H = H0 +
 // p H1; returns sum_j deg L_j, L_j the monic lcm over column j of den H0 and den H1 (of the entry where it
 // does not name p): the largest order the checker's realisation reaches at any p. `degree`: the largest
 // degree bound proven.
-size_t affine_block_order(const nlohmann::json& model, const Reading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
+size_t affine_block_order(const nlohmann::json& model, const MaxReading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
   const bool plant = !model.contains("scene");
   const auto entries = plant ? std::vector<std::vector<std::string>>{{model.at("H").get<std::string>()}}
                              : detail::block_entries(model, r.block, p, L1.dofs());
@@ -152,7 +149,7 @@ size_t affine_block_order(const nlohmann::json& model, const Reading& r, const s
 // Affine in p, on the realisations read (header): the gain block's A, B the same and C, D doubled at p = 2,
 // the rest equal; p inside the tf: A, B the same at 1, 2 and hi, of the largest order `order` (else beyond),
 // C and D at hi on the line through 1 and 2. "" when shown, else what is not.
-std::string realisations_not_affine(const Reading& r, const std::string& p, const detail::LoopMatrix& m1, const detail::LoopMatrix& m2,
+std::string realisations_not_affine(const MaxReading& r, const std::string& p, const detail::LoopMatrix& m1, const detail::LoopMatrix& m2,
                                     const detail::LoopMatrix* at_hi, size_t order, const rational& hi) {
   const std::string& block = r.block;
   const size_t g = block == "environment" ? 0 : 4;
@@ -193,7 +190,7 @@ nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const
 
 // A one-DOF --plant/--H model: p named in H and in neither the plant nor the operator ("p inside the tf"
 // of its one wall). InputError otherwise.
-Reading read_p_plant(const nlohmann::json& model, const std::string& p) {
+MaxReading read_p_plant(const nlohmann::json& model, const std::string& p) {
   const auto names = [&](const char* key) {
     if (!model.contains(key)) return false;
     if (!model.at(key).is_string()) throw InputError(std::string("model.") + key + ": not a string");
@@ -299,10 +296,10 @@ enum class Cover { shown, not_shown, refuted };
 // refuted: a P not positive definite (exact: no retry); not_shown: a Stein or Bernstein test failed in balls
 // (another precision may pass); `why` says which. InputError when malformed.
 Cover check_cover(const nlohmann::json& cover, const BallRows& M1, const BallRows& M2, rational from, const rational& lo, size_t n,
-                  const std::string& p, std::string& why) {
+                  const std::string& p, std::string& why, const std::string& at) {
   Mat last_P_to;  // the last interval's P_to (empty: it had none)
   for (size_t k = 0; k < cover.size(); ++k) {
-    const std::string where = "evidence.cover[" + std::to_string(k) + "]";
+    const std::string where = at + ".cover[" + std::to_string(k) + "]";
     if (!cover[k].is_object()) throw InputError(where + ": not an object");
     detail::only_fields(cover[k], {"to", "P", "P_to"}, where);
     const rational to = detail::exact_field(cover[k], "to", where);
@@ -342,6 +339,92 @@ Cover check_cover(const nlohmann::json& cover, const BallRows& M1, const BallRow
 
 }  // namespace
 
+detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2, const MaxReading& r, const std::string& p,
+                                       const nlohmann::json& ev,
+                                       const ClaimRange& c, long conserved, size_t order, const std::optional<LoopMatrix>& at_hi,
+                                       const std::string& at, bool need_unstable) {
+  const std::string& block = r.block;
+  // the evidence's shape first (malformed before anything is computed)
+  if (!ev.contains("unstable_at") && need_unstable) throw InputError(at + ".unstable_at: missing (NOT stable at hi bounds sup p)");
+  const bool has_unstable = ev.contains("unstable_at");
+  const nlohmann::json none = nlohmann::json::object();
+  const nlohmann::json& un = has_unstable ? detail::object_field(ev, "unstable_at", at) : none;
+  detail::only_fields(un, {"at", "P", "w", "slow_quotient"}, at + ".unstable_at");
+  const bool slow_quotient = un.contains("slow_quotient");
+  if (slow_quotient && (!un.at("slow_quotient").is_boolean() || !un.at("slow_quotient").get<bool>() || !c.hi.is_zero()))
+    throw InputError(at + ".unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)");
+  if (has_unstable && detail::exact_field(un, "at", at + ".unstable_at") != c.hi)
+    throw InputError(at + ".unstable_at.at: not claim.hi (" + c.hi.str() + ")");
+  const nlohmann::json cover = ev.contains("cover") ? ev.at("cover") : nlohmann::json::array();
+  if (!cover.is_array() || cover.size() > kMaxCover)
+    throw InputError(at + ".cover: not an array of at most " + std::to_string(kMaxCover) + " intervals");
+  if (cover.empty() != c.lo.is_zero()) throw InputError(at + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])");
+  MaxPart out;
+  for (long bits : {128L, 256L, 512L}) {
+    flint::BallPrecision scope(bits);
+    const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
+    detail::require_loop_max_order(m1.order);
+    out.order = m1.order, out.conserved = m1.conserved, out.bits = bits;
+    if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
+      return {false, not_affine};
+    if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays
+      throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
+                       "'s tf (the quotient's basis may move with it): beyond this kind");
+    if (m1.feedthrough_loop || m2.feedthrough_loop)
+      throw InputError("model.scene: D_E D_V or D_V D_E is not 0 (u and x_e solved through (I + D_E D_V)^-1): the loop is not affine "
+                       "in " + p + ", beyond this kind");
+    if (m1.conserved != m2.conserved || m1.M.size() != m2.M.size())
+      return {false, "the conserved quantities differ at " + p + " = 1 and 2 (a checker defect or a model that is not affine)"};
+    if (conserved >= 0 && static_cast<long>(m1.conserved) != conserved)
+      return {false, (at == "evidence" ? std::string("claim") : at) + ": " + std::to_string(conserved) + " conserved quantities, but the loop has " +
+                         std::to_string(m1.conserved)};
+    const size_t n = m1.M.size();
+    double tests = 0;  // Stein tests: 2 an interval, 4 Bernstein coefficients of 2.5 products each with P linear
+    for (const auto& item : cover) tests += item.is_object() && item.contains("P_to") ? 5 : 1;
+    if (tests * static_cast<double>(n * n * n) > kMaxCoverWork)
+      throw InputError(at + ".cover: " + std::to_string(cover.size()) + " intervals of order " + std::to_string(n) +
+                       ", beyond this checker's work limit (intervals x n^3 <= 5e7, one with P linear counted 5 times)");
+    // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
+    rational from = 0;
+    if (ev.contains("first_order")) {
+      const std::string fw = detail::first_order_start(ev.at("first_order"), m1, m2, detail::slow_rows(L1, L2, m1), c.lo, from);
+      if (!fw.empty()) {
+        out.why = fw;
+        continue;
+      }
+    }
+    // NOT stable at hi (or, hi = 0, at the limit M(0); slow_quotient: M(0) on ker L, L the slow rows (header))
+    if (has_unstable) {
+      BallRows Mu = detail::affine_loop_at(m1.M, m2.M, c.hi);
+      if (slow_quotient) {
+        const Mat L = detail::slow_rows(L1, L2, m1);
+        if (L.empty()) throw InputError(at + ".unstable_at.slow_quotient: the loop has no slow rows at " + p + " = 0");
+        Mu = detail::restricted(Mu, L);
+      }
+      const size_t nu = Mu.size();
+      const Mat Pu = symmetric_P(un, at + ".unstable_at", nu);
+      const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",
+                                          at + ".unstable_at", nu);
+      if (w[0].size() != nu) throw InputError(at + ".unstable_at.w: not of P's order");
+      rational q = 0;
+      for (size_t i = 0; i < nu; ++i)
+        for (size_t j = 0; j < nu; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
+      if (q >= 0) return {false, at + ".unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
+      if (!detail::stein_holds(Pu, Mu, out.why)) {
+        out.why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + out.why;
+        continue;
+      }
+    }
+    // stable on [0, lo], or on [eps, lo] after the first-order start (above)
+    const Cover shown = check_cover(cover, m1.M, m2.M, from, c.lo, n, p, out.why, at);
+    if (shown == Cover::refuted) return {false, out.why};
+    if (shown == Cover::not_shown) continue;
+    out.verified = true;
+    return out;
+  }
+  return out;
+}
+
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
@@ -359,7 +442,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   if (c.refuted) return {false, *c.refuted};
   if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
-  const Reading r = model.contains("scene") ? read_p(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
+  const MaxReading r = model.contains("scene") ? detail::read_max_parameter(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
   const std::string& block = r.block;
   const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, rational(1))), L2 = detail::read_scene_loop(model_at(model, p, rational(2)));
   if (2 * L1.dofs() > kMaxLoopOrder)  // each DOF's v and x: refused before any loop is built in balls
@@ -373,95 +456,28 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
     flint::BallPrecision scope(128);
     at_hi = detail::loop_matrix(detail::read_scene_loop(model_at(model, p, c.hi)), 128);
   }
-  // the evidence's shape first (malformed before anything is computed)
-  if (!evidence.contains("unstable_at")) throw InputError("evidence.unstable_at: missing (NOT stable at hi bounds sup p)");
-  const nlohmann::json& un = detail::object_field(evidence, "unstable_at", "evidence");
-  detail::only_fields(un, {"at", "P", "w", "slow_quotient"}, "evidence.unstable_at");
-  const bool slow_quotient = un.contains("slow_quotient");
-  if (slow_quotient && (!un.at("slow_quotient").is_boolean() || !un.at("slow_quotient").get<bool>() || !c.hi.is_zero()))
-    throw InputError("evidence.unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)");
-  if (detail::exact_field(un, "at", "evidence.unstable_at") != c.hi)
-    throw InputError("evidence.unstable_at.at: not claim.hi (" + c.hi.str() + ")");
+  const detail::MaxPart part = detail::check_max_part(L1, L2, r, p, evidence, c, conserved, order, at_hi, "evidence");
+  if (!part.verified) return {false, "claim: sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "], but " + part.why + " at 512 bits"};
+  if (!*part.verified) return {false, part.why};
+  const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(part.order) + " states, " + std::to_string(L1.dofs()) +
+                           " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
+                           ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p +
+                           (r.inside ? " inside the " + block + "'s tf, proven affine there (degree bound " + std::to_string(degree) +
+                                           "), its realisation of order " + std::to_string(order) + " at 1, 2 and hi"
+                                     : " the " + block + "'s gain alone") + ")" +
+                           (evidence.contains("first_order") ? "; stable on (0, " + detail::decimal(from0(evidence)) + "] by the first-order start (P0 + L^T S L/" + p +
+                                                                    ", concave in " + p + ")"
+                                                              : std::string());
   const nlohmann::json cover = evidence.contains("cover") ? evidence.at("cover") : nlohmann::json::array();
-  if (!cover.is_array() || cover.size() > kMaxCover)
-    throw InputError("evidence.cover: not an array of at most " + std::to_string(kMaxCover) + " intervals");
-  if (cover.empty() != c.lo.is_zero()) throw InputError("evidence.cover: needed exactly when claim.lo > 0 (it proves (0, lo])");
-  std::string why;
-  for (long bits : {128L, 256L, 512L}) {
-    flint::BallPrecision scope(bits);
-    const detail::LoopMatrix m1 = detail::loop_matrix(L1, bits), m2 = detail::loop_matrix(L2, bits);
-    detail::require_loop_max_order(m1.order);
-    if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
-      return {false, not_affine};
-    if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays
-      throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
-                       "'s tf (the quotient's basis may move with it): beyond this kind");
-    if (m1.feedthrough_loop || m2.feedthrough_loop)
-      throw InputError("model.scene: D_E D_V or D_V D_E is not 0 (u and x_e solved through (I + D_E D_V)^-1): the loop is not affine "
-                       "in " + p + ", beyond this kind");
-    if (m1.conserved != m2.conserved || m1.M.size() != m2.M.size())
-      return {false, "the conserved quantities differ at " + p + " = 1 and 2 (a checker defect or a model that is not affine)"};
-    if (static_cast<long>(m1.conserved) != conserved)
-      return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the loop has " + std::to_string(m1.conserved)};
-    const size_t n = m1.M.size();
-    double tests = 0;  // Stein tests: 2 an interval, 4 Bernstein coefficients of 2.5 products each with P linear
-    for (const auto& item : cover) tests += item.is_object() && item.contains("P_to") ? 5 : 1;
-    if (tests * static_cast<double>(n * n * n) > kMaxCoverWork)
-      throw InputError("evidence.cover: " + std::to_string(cover.size()) + " intervals of order " + std::to_string(n) +
-                       ", beyond this checker's work limit (intervals x n^3 <= 5e7, one with P linear counted 5 times)");
-    // stable on (0, eps] by the first-order start (header), then [eps, lo] by the cover
-    rational from = 0;
-    if (evidence.contains("first_order")) {
-      const std::string fw = detail::first_order_start(evidence.at("first_order"), m1, m2, detail::slow_rows(L1, L2, m1), c.lo, from);
-      if (!fw.empty()) {
-        why = fw;
-        continue;
-      }
-    }
-    // NOT stable at hi (or, hi = 0, at the limit M(0); slow_quotient: M(0) on ker L, L the slow rows (header))
-    BallRows Mu = detail::affine_loop_at(m1.M, m2.M, c.hi);
-    if (slow_quotient) {
-      const Mat L = detail::slow_rows(L1, L2, m1);
-      if (L.empty()) throw InputError("evidence.unstable_at.slow_quotient: the loop has no slow rows at " + p + " = 0");
-      Mu = detail::restricted(Mu, L);
-    }
-    const size_t nu = Mu.size();
-    const Mat Pu = symmetric_P(un, "evidence.unstable_at", nu);
-    const auto w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({un.contains("w") ? un.at("w") : nlohmann::json()})}}, "w",
-                                        "evidence.unstable_at", nu);
-    if (w[0].size() != nu) throw InputError("evidence.unstable_at.w: not of P's order");
-    rational q = 0;
-    for (size_t i = 0; i < nu; ++i)
-      for (size_t j = 0; j < nu; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
-    if (q >= 0) return {false, "evidence.unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
-    if (!detail::stein_holds(Pu, Mu, why)) {
-      why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + why;
-      continue;
-    }
-    // stable on [0, lo], or on [eps, lo] after the first-order start (above)
-    const Cover shown = check_cover(cover, m1.M, m2.M, from, c.lo, n, p, why);
-    if (shown == Cover::refuted) return {false, why};
-    if (shown == Cover::not_shown) continue;
-    const std::string loop = "the closed loop M(" + p + ") (" + std::to_string(m1.order) + " states, " + std::to_string(L1.dofs()) +
-                             " DOF" + (conserved ? ", on the quotient by " + std::to_string(conserved) + " conserved quantities" : "") +
-                             ") = (2 - " + p + ") M(1) + (" + p + " - 1) M(2), affine (" + p +
-                             (r.inside ? " inside the " + block + "'s tf, proven affine there (degree bound " + std::to_string(degree) +
-                                             "), its realisation of order " + std::to_string(order) + " at 1, 2 and hi"
-                                       : " the " + block + "'s gain alone") + ")" +
-                             (evidence.contains("first_order") ? "; stable on (0, " + detail::decimal(from0(evidence)) + "] by the first-order start (P0 + L^T S L/" + p +
-                                                                      ", concave in " + p + ")"
-                                                                : std::string());
-    if (c.hi.is_zero())
-      return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
-                        "inertia, " + std::to_string(bits) + " bits" +
-                        (slow_quotient ? ", on ker L: M(0) there, L its slow rows (L M(0) = L), beside their eigenvalue 1" : "") +
-                        "), and so has M(" + p + ") for every small " + p + " > 0"};
-    return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
-                      detail::decimal(c.lo) + "] (0 excluded where the first-order start serves) by " + std::to_string(cover.size()) +
-                      " intervals, P > 0 with P - M^T P M > 0 at both ends of each (convex in " + p + "); NOT stable at " +
-                      detail::decimal(c.hi) + " (Stein inertia), " + std::to_string(bits) + " bits"};
-  }
-  return {false, "claim: sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "], but " + why + " at 512 bits"};
+  if (c.hi.is_zero())
+    return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
+                      "inertia, " + std::to_string(part.bits) + " bits" +
+                      (evidence.at("unstable_at").contains("slow_quotient") ? ", on ker L: M(0) there, L its slow rows (L M(0) = L), beside their eigenvalue 1" : "") +
+                      "), and so has M(" + p + ") for every small " + p + " > 0"};
+  return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "]: " + loop + "; stable on [0, " +
+                    detail::decimal(c.lo) + "] (0 excluded where the first-order start serves) by " + std::to_string(cover.size()) +
+                    " intervals, P > 0 with P - M^T P M > 0 at both ends of each (convex in " + p + "); NOT stable at " +
+                    detail::decimal(c.hi) + " (Stein inertia), " + std::to_string(part.bits) + " bits"};
 }
 
 }  // namespace hapstab::check

@@ -68,9 +68,13 @@
 // Implements: paper 000 Sec. VI.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
 
 namespace hapstab::check {
@@ -79,6 +83,29 @@ namespace detail {
 /// InputError when the loop's order is beyond this kind's 160 (a cover of Stein tests at that order; the stability-loop
 /// kind takes 1024): the producer asks before it solves anything.
 void require_loop_max_order(size_t order);
+/// The header's reading of p: the block ("environment" or "coupling") whose `gain` is exactly p, p named in no
+/// other string of the scene; or (`inside`) p named only in the `tf` entries of one of them, its gain not p.
+/// InputError naming what is not so.
+struct MaxReading {
+  std::string block;
+  bool inside = false;
+};
+MaxReading read_max_parameter(const std::string& scene, const std::string& p);
+/// One loop's supremum evidence ({cover, first_order, unstable_at} of `ev`, named `at` in messages) on the loop
+/// read at p = 1 and 2, checked as the header says: verified (true), refuted (false, why), or not shown at 512
+/// bits (nullopt, why). `conserved` < 0: not compared. `order`, `at_hi`: p inside the tf (else 0, nullopt).
+/// unstable_at may be absent only where `need_unstable` is false (a block of stability-loop-max-symmetric whose
+/// supremum another block bounds). InputError when malformed.
+struct MaxPart {
+  std::optional<bool> verified;
+  std::string why;
+  long bits = 0;
+  size_t order = 0;      ///< the loop's order (M before the quotient)
+  size_t conserved = 0;  ///< the loop's conserved quantities
+};
+MaxPart check_max_part(const SceneLoop& L1, const SceneLoop& L2, const MaxReading& r, const std::string& p, const nlohmann::json& ev,
+                       const ClaimRange& c, long conserved, size_t order, const std::optional<LoopMatrix>& at_hi, const std::string& at,
+                       bool need_unstable = true);
 /// M(p) = (2 - p) M(1) + (p - 1) M(2) in balls: the loop's matrix at p, the family affine (header).
 BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& p);
 /// evidence.first_order {to = eps, P0, S} (header): "" when it shows every M(p), 0 < p <= eps, Schur stable

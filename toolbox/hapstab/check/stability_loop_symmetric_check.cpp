@@ -157,6 +157,34 @@ std::vector<std::vector<int>> detail::identical_dofs(const SceneLoop& L) {
   return classes;
 }
 
+std::vector<std::vector<int>> detail::read_classes(const nlohmann::json& evidence, size_t dofs) {
+  if (!evidence.contains("classes") || !evidence.at("classes").is_array()) throw InputError("evidence.classes: missing or not an array");
+  std::vector<std::vector<int>> classes;
+  for (const auto& c : evidence.at("classes")) {
+    if (!c.is_array()) throw InputError("evidence.classes: each class an array of DOF indices (0-based)");
+    classes.emplace_back();
+    for (const auto& i : c) {
+      // range-checked before it is narrowed (2^32 + 1 must not read as DOF 1)
+      if (!i.is_number_integer() || (i.is_number_unsigned() ? i.get<uint64_t>() >= dofs : i.get<int64_t>() < 0 || i.get<int64_t>() >= static_cast<int64_t>(dofs)))
+        throw InputError("evidence.classes: " + i.dump() + " is not a DOF index of the scene's 0 .. " + std::to_string(dofs - 1));
+      classes.back().push_back(static_cast<int>(i.get<int64_t>()));
+    }
+  }
+  return classes;
+}
+
+detail::BlockSlot detail::block_slot(const nlohmann::json& blk, const SymmetricSplit& split, const std::string& where) {
+  const std::string space = blk.contains("space") && blk.at("space").is_string() ? blk.at("space").get<std::string>() : "";
+  if (space == "fixed") {
+    if (blk.contains("class")) throw InputError(where + ".class: only for a zero-sum block");
+    return {0, 1, space};
+  }
+  if (space != "zero-sum") throw InputError(where + ".space: missing or not \"fixed\" / \"zero-sum\"");
+  const long a = detail::integer_field(blk, "class", where, 0, static_cast<long>(split.sizes.size()) - 1);
+  if (split.sizes[size_t(a)] < 2) throw InputError(where + ".class: class " + std::to_string(a) + " has one DOF (no zero-sum space)");
+  return {size_t(a) + 1, split.sizes[size_t(a)] - 1, space};
+}
+
 Verdict check_stability_loop_symmetric(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "stable", "conserved"}, "claim");
@@ -169,18 +197,7 @@ Verdict check_stability_loop_symmetric(const nlohmann::json& cert) {
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 1L << 20) : 0;
   if (!model.contains("scene")) throw InputError("model.scene: missing (this kind splits a scene's DOFs)");
   const detail::SceneLoop L = detail::read_scene_loop(model, detail::kMaxSymmetricDofs);
-  if (!evidence.contains("classes") || !evidence.at("classes").is_array()) throw InputError("evidence.classes: missing or not an array");
-  std::vector<std::vector<int>> classes;
-  for (const auto& c : evidence.at("classes")) {
-    if (!c.is_array()) throw InputError("evidence.classes: each class an array of DOF indices (0-based)");
-    classes.emplace_back();
-    for (const auto& i : c) {
-      // range-checked before it is narrowed (2^32 + 1 must not read as DOF 1)
-      if (!i.is_number_integer() || (i.is_number_unsigned() ? i.get<uint64_t>() >= L.dofs() : i.get<int64_t>() < 0 || i.get<int64_t>() >= static_cast<int64_t>(L.dofs())))
-        throw InputError("evidence.classes: " + i.dump() + " is not a DOF index of the scene's 0 .. " + std::to_string(L.dofs() - 1));
-      classes.back().push_back(static_cast<int>(i.get<int64_t>()));
-    }
-  }
+  const std::vector<std::vector<int>> classes = detail::read_classes(evidence, L.dofs());
   std::string why;
   const auto split = detail::split_loop(L, classes, why);
   if (!split) return {false, "evidence.classes: " + why};
@@ -200,23 +217,11 @@ Verdict check_stability_loop_symmetric(const nlohmann::json& cert) {
     const auto& blk = blocks[b];
     if (!blk.is_object()) throw InputError(where + ": not an object");
     detail::only_fields(blk, {"space", "class", "conserved", "P", "w"}, where);
-    const std::string space = blk.contains("space") && blk.at("space").is_string() ? blk.at("space").get<std::string>() : "";
-    size_t slot = 0, copies = 1;
-    if (space == "fixed") {
-      if (blk.contains("class")) throw InputError(where + ".class: only for a zero-sum block");
-    } else if (space == "zero-sum") {
-      const long a = detail::integer_field(blk, "class", where, 0, static_cast<long>(split->sizes.size()) - 1);
-      if (split->sizes[size_t(a)] < 2) throw InputError(where + ".class: class " + std::to_string(a) + " has one DOF (no zero-sum space)");
-      slot = size_t(a) + 1;
-      copies = split->sizes[size_t(a)] - 1;
-    } else {
-      throw InputError(where + ".space: missing or not \"fixed\" / \"zero-sum\"");
-    }
+    const auto [slot, copies, space] = detail::block_slot(blk, *split, where);
     if (seen[slot]) throw InputError(where + ": a block given twice");
     seen[slot] = true;
     const long k = blk.contains("conserved") ? detail::integer_field(blk, "conserved", where, 0, 1024) : 0;
-    const detail::SceneLoop& loop = slot == 0 ? split->fixed : split->zero_sum[slot - 1];
-    const Verdict v = detail::stein_verdict(loop, blk, stable, k, where);
+    const Verdict v = detail::stein_verdict(split->block(slot), blk, stable, k, where);
     if (!v.verified) return {false, where + " (" + space + "): " + v.reason};
     total += static_cast<long>(copies) * k;
     said += (said.empty() ? "" : "; ") + space + (slot ? " of class " + std::to_string(slot - 1) + " (x" + std::to_string(copies) + ")" : "") +

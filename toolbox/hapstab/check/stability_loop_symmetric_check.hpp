@@ -52,7 +52,19 @@ struct SymmetricSplit {
   SceneLoop fixed;                  ///< r DOFs, one per class
   std::vector<SceneLoop> zero_sum;  ///< per class (class order); a class of one DOF: an empty loop (unused)
   std::vector<size_t> sizes;        ///< k_a
+  /// slot 0: the fixed loop; a + 1: class a's zero-sum loop
+  const SceneLoop& block(size_t slot) const { return slot == 0 ? fixed : zero_sum[slot - 1]; }
 };
+/// evidence.classes: arrays of DOF indices (0-based, each range-checked before it is narrowed); InputError when
+/// malformed (split_loop then checks the partition).
+std::vector<std::vector<int>> read_classes(const nlohmann::json& evidence, size_t dofs);
+/// A block's {space: "fixed" | "zero-sum", class}: its slot (SymmetricSplit::block), its multiplicity (1, or k_a - 1)
+/// and its space; InputError when malformed (a class of one DOF has no zero-sum space).
+struct BlockSlot {
+  size_t slot = 0, copies = 1;
+  std::string space;
+};
+BlockSlot block_slot(const nlohmann::json& blk, const SymmetricSplit& split, const std::string& where);
 /// The split of L by `classes`: InputError for what this kind does not take or a malformed partition; nullopt
 /// with `why` when L is not invariant under the classes' permutations.
 std::optional<SymmetricSplit> split_loop(const SceneLoop& L, const std::vector<std::vector<int>>& classes, std::string& why);

@@ -1,0 +1,101 @@
+// hapstab/check/stability_loop_max_symmetric_check.cpp -- see stability_loop_max_symmetric_check.hpp.
+#include "hapstab/check/stability_loop_max_symmetric_check.hpp"
+
+#include <string>
+#include <vector>
+
+#include "hapstab/check/scene_model.hpp"
+#include "hapstab/check/stability_loop_max_check.hpp"
+#include "hapstab/check/stability_loop_symmetric_check.hpp"
+#include "hapstab/numeric/error.hpp"
+
+namespace hapstab::check {
+
+namespace {
+
+// The model read at p = value (its `set` with p added).
+nlohmann::json model_at(const nlohmann::json& model, const std::string& p, long value) {
+  nlohmann::json m = model;
+  m.erase("name");
+  if (!m.contains("set")) m["set"] = nlohmann::json::object();
+  m["set"][p] = std::to_string(value);
+  return m;
+}
+
+}  // namespace
+
+Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
+  const auto [model, claim, evidence] = detail::certificate_parts(cert);
+  detail::only_fields(model, {"scene", "set", "name"}, "model");
+  detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
+  detail::only_fields(evidence, {"classes", "blocks"}, "evidence");
+  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
+  if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string");
+  const std::string p = model.at("name").get<std::string>();
+  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
+    throw InputError("model.set." + p + ": the parameter maximised has no value");
+  const detail::ClaimRange c = detail::claim_range(claim);
+  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  if (c.refuted) return {false, *c.refuted};
+  if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
+  const bool zero = c.hi.is_zero();
+  if (zero && claim.contains("conserved")) throw InputError("claim.conserved: only with hi > 0 (sup = 0 is shown by one block)");
+  const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 1L << 20) : 0;
+  const detail::MaxReading r = detail::read_max_parameter(model.at("scene").get<std::string>(), p);
+  if (r.inside || r.block != "environment")
+    throw InputError("model.name: '" + p + "' is not the whole gain of [environment]: beyond stability-loop-max-symmetric (the split's "
+                     "blocks are p times their value at 1 only for that gain)");
+  const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, 1), detail::kMaxSymmetricDofs),
+                          L2 = detail::read_scene_loop(model_at(model, p, 2), detail::kMaxSymmetricDofs);
+  const std::vector<std::vector<int>> classes = detail::read_classes(evidence, L1.dofs());
+  std::string why;
+  const auto s1 = detail::split_loop(L1, classes, why);
+  if (!s1) return {false, "evidence.classes: at " + p + " = 1, " + why};
+  const auto s2 = detail::split_loop(L2, classes, why);
+  if (!s2) return {false, "evidence.classes: at " + p + " = 2, " + why};
+  if (!evidence.contains("blocks") || !evidence.at("blocks").is_array()) throw InputError("evidence.blocks: missing or not an array");
+  const auto& blocks = evidence.at("blocks");
+  size_t needed = 1;
+  for (size_t k : s1->sizes) needed += k >= 2 ? 1 : 0;
+  if (zero ? blocks.size() != 1 : blocks.size() != needed)
+    throw InputError("evidence.blocks: " + std::to_string(blocks.size()) + " blocks; " +
+                     (zero ? std::string("sup = 0 is shown by one") : "every one is needed: the fixed space and each class of two DOFs or more, " + std::to_string(needed)));
+  std::vector<bool> seen(s1->sizes.size() + 1, false);
+  long total = 0, unstable = 0;
+  std::string said;
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    const std::string where = "evidence.blocks[" + std::to_string(b + 1) + "]";
+    const auto& blk = blocks[b];
+    if (!blk.is_object()) throw InputError(where + ": not an object");
+    detail::only_fields(blk, {"space", "class", "conserved", "cover", "first_order", "unstable_at"}, where);
+    const auto [slot, copies, space] = detail::block_slot(blk, *s1, where);
+    if (seen[slot]) throw InputError(where + ": a block given twice");
+    seen[slot] = true;
+    unstable += blk.contains("unstable_at") ? 1 : 0;
+    const long k = blk.contains("conserved") ? detail::integer_field(blk, "conserved", where, 0, 1024) : 0;
+    const detail::MaxPart part =
+        detail::check_max_part(s1->block(slot), s2->block(slot), r, p, blk, c, k, 0, std::nullopt, where, false);
+    if (!part.verified)
+      return {false, "claim: sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "], but " + where + " (" + space +
+                         "): " + part.why + " at 512 bits"};
+    if (!*part.verified) return {false, where + " (" + space + "): " + part.why};
+    total += static_cast<long>(copies) * k;
+    said += (said.empty() ? "" : "; ") + space + (slot ? " of class " + std::to_string(slot - 1) + " (x" + std::to_string(copies) + ")" : "") +
+            ": " + std::to_string(part.order) + " states, " + (blk.contains("cover") ? std::to_string(blk.at("cover").size()) + " intervals" : "no cover") +
+            (blk.contains("first_order") ? " after a first-order start" : "") + (blk.contains("unstable_at") ? ", NOT stable at hi" : "") + " (" +
+            std::to_string(part.bits) + " bits)";
+  }
+  if (unstable != 1)
+    throw InputError("evidence.blocks: " + std::to_string(unstable) + " with unstable_at; exactly one block bounds sup from above");
+  if (!zero && total != conserved)
+    return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the blocks have " + std::to_string(total) +
+                       " (k_F + sum_a (k_a - 1) k_a')"};
+  const std::string head = "by the split of " + std::to_string(L1.dofs()) + " DOFs into " + std::to_string(classes.size()) +
+                           " classes of identical DOFs (invariance checked exactly on the scene at " + p + " = 1 and 2; " + p +
+                           " the environment's gain alone, each block's loop affine in it): ";
+  if (zero) return {true, "sup " + p + " = 0 " + head + said + ": that block's M(0) has an eigenvalue |z| > 1, so has the loop for every small " + p + " > 0"};
+  return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "] " + head + "every block stable on [0, " +
+                    detail::decimal(c.lo) + "], one NOT stable at " + detail::decimal(c.hi) + ": " + said};
+}
+
+}  // namespace hapstab::check
