@@ -439,6 +439,24 @@ std::string supremum_text(const StabilityOpts& o, const scene::Scene& sc, const 
   return t.str();
 }
 
+// Whether the closed loop is proven affine in NAME ("" when it is, else why not), and `points`, the values that
+// prove it (scene/parameter_degree.hpp). Where the loop splits by identical DOFs (`split`: wanted, and on return
+// whether it splits) the small loops' families are checked instead of the whole's (stability/loop_max_symmetric.hpp).
+std::string dependence(const StabilityOpts& o, const scene::Scene& sc, const stability::LoopAt& at, const rational& reference, long& points,
+                       bool& split) {
+  try {
+    points = scene::points_needed(scene::parameter_degree(sc, o.max_name));
+    const std::optional<std::string> by_split = split ? stability::split_not_affine(at, reference, o.max_name, points) : std::nullopt;
+    split = by_split.has_value();
+    if (by_split) return *by_split;
+    stability::loop_family(at, reference, o.max_name, points);
+  } catch (const InputError& e) {
+    split = false;
+    return e.what();
+  }
+  return "";
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
   if (!o.certificate.empty() && o.conservatism)
     throw InputError("--certificate: stability --max --conservatism has no certificate (Theorem 5's side is a bracket of LMI "
@@ -459,15 +477,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
   std::optional<conservatism::VerdictBracket> t5;
   if (o.conservatism) progress.stage("Theorem 5's largest " + o.max_name + " (LMI programs, bisection)");
   if (o.conservatism) t5 = conservatism::theorem5_max(scene_at, reference, o.max_name, std::min(o.digits, 6));
-  std::string not_affine;
   long points = 0;  // how many values prove M(p) affine, from the scene's text (scene/parameter_degree.hpp)
   progress.stage("the closed loop's dependence on " + o.max_name);
-  try {
-    points = scene::points_needed(scene::parameter_degree(sc, o.max_name));
-    stability::loop_family(at, reference, o.max_name, points);
-  } catch (const InputError& e) {
-    not_affine = e.what();
-  }
+  bool split_wanted = !o.no_symmetry && stability::split_pays(sc.loop);
+  const std::string not_affine = dependence(o, sc, at, reference, points, split_wanted);
   nlohmann::json j;
   int rc = cli::exit_ok;
   std::optional<Enclosure<rational>> exact;  // holds the exact side's boundary (certified)
@@ -496,11 +509,9 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       << o.max_name << ": " << not_affine << ")\n";
     text = t.str();
   } else {
-    // many identical DOFs: the small loops of their split (stability/loop_max_symmetric.hpp)
     std::optional<stability::LoopMaxSplit> split;
-    std::string no_split = "--no-symmetry";
-    if (!o.no_symmetry && stability::split_pays(sc.loop))
-      split = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), no_split);
+    std::string no_split = o.no_symmetry ? "--no-symmetry" : "no split pays";
+    if (split_wanted) split = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), no_split);
     if (!split && sc.loop.dofs() > stability::kWholeMaxDofs)
       throw InputError("--max " + o.max_name + ": " + std::to_string(sc.loop.dofs()) + " DOFs, not split by identical DOFs (" +
                        no_split + "): the whole closed-loop matrix's supremum is refused beyond " + std::to_string(stability::kWholeMaxDofs) +

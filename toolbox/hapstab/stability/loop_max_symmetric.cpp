@@ -131,10 +131,11 @@ bool split_pays(const sim::LoopSpec& loop) {
   return s && std::any_of(s->classes.begin(), s->classes.end(), [](const auto& c) { return c.size() >= 3; });
 }
 
-std::optional<LoopMaxSplit> max_parameter_by_symmetry(const LoopAt& at, const rational& reference, const std::string& name, long points,
-                                                      int digits, std::string& why_not) {
-  const sim::LoopSpec whole = at(reference);
-  auto s0 = detail::split_by_symmetry(whole, why_not);
+namespace {
+
+// The split at the reference, checked again at 2 reference (classes, no isolated state); nullopt with why_not.
+std::optional<detail::LoopSymmetry> reference_split(const LoopAt& at, const rational& reference, const std::string& name, std::string& why_not) {
+  auto s0 = detail::split_by_symmetry(at(reference), why_not);
   if (!s0) {
     if (why_not.empty()) why_not = "no two DOFs are alike";
     return std::nullopt;
@@ -149,29 +150,63 @@ std::optional<LoopMaxSplit> max_parameter_by_symmetry(const LoopAt& at, const ra
     why_not = e.what();
     return std::nullopt;
   }
+  return s0;
+}
+
+// Block k's loop at p (k < 0: the fixed space; else standard[k]), the whole split once per p (memo).
+struct BlockLoops {
+  const LoopAt& at;
+  const std::vector<std::vector<int>>& classes;
+  const std::string& name;
+  std::map<rational, detail::LoopSymmetry> memo;
+  LoopAt block(int k) {
+    return [this, k](const rational& p) {
+      auto it = memo.find(p);
+      if (it == memo.end()) {
+        if (memo.size() > 64) memo.clear();
+        it = memo.emplace(p, split_at(at, p, classes, name)).first;
+      }
+      return k < 0 ? it->second.fixed : it->second.standard[static_cast<size_t>(k)];
+    };
+  }
+};
+
+}  // namespace
+
+std::optional<std::string> split_not_affine(const LoopAt& at, const rational& reference, const std::string& name, long points) {
+  std::string why;
+  const auto s0 = reference_split(at, reference, name, why);
+  if (!s0) return std::nullopt;
+  BlockLoops loops{at, s0->classes, name, {}};
+  try {
+    for (int k = -1; k < static_cast<int>(s0->standard.size()); ++k) loop_family(loops.block(k), reference, name, points);
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string();
+}
+
+std::optional<LoopMaxSplit> max_parameter_by_symmetry(const LoopAt& at, const rational& reference, const std::string& name, long points,
+                                                      int digits, std::string& why_not) {
+  const auto s0 = reference_split(at, reference, name, why_not);
+  if (!s0) return std::nullopt;
   LoopMaxSplit out;
   out.classes = s0->classes;
   out.group = s0->group();
-  std::map<rational, detail::LoopSymmetry> memo;  // the whole loop at each p, split once (loop_family and the walk ask again)
-  const auto block_at = [&](int k) {
-    return LoopAt([&, k](const rational& p) {
-      auto it = memo.find(p);
-      if (it == memo.end()) it = memo.emplace(p, split_at(at, p, out.classes, name)).first;
-      return k < 0 ? it->second.fixed : it->second.standard[static_cast<size_t>(k)];
-    });
-  };
+  BlockLoops loops{at, out.classes, name, {}};
   out.blocks.push_back({"the loop of " + std::to_string(out.classes.size()) + " DOF" + (out.classes.size() > 1 ? "s" : "") +
                             " on the space fixed by the group",
-                        -1, max_parameter(block_at(-1), reference, name, points, digits)});
+                        -1, max_parameter(loops.block(-1), reference, name, points, digits)});
   for (size_t k = 0; k < s0->standard.size(); ++k) {
     const int a = s0->standard_class[k];
     const auto& c = out.classes[static_cast<size_t>(a)];
     out.blocks.push_back({"the one-DOF loop of class " + std::to_string(a + 1) + " (DOFs " + std::to_string(c.front() + 1) + ", " +
                               std::to_string(c[1] + 1) + (c.size() > 2 ? ", ..." : "") + "), multiplicity " + std::to_string(c.size() - 1),
-                          a, max_parameter(block_at(static_cast<int>(k)), reference, name, points, digits)});
-    if (memo.size() > 64) memo.clear();
+                          a, max_parameter(loops.block(static_cast<int>(k)), reference, name, points, digits)});
   }
-  combine(out, name, static_cast<size_t>(whole.dofs()));
+  size_t dofs = 0;
+  for (const auto& c : out.classes) dofs += c.size();
+  combine(out, name, dofs);
   return out;
 }
 

@@ -2,7 +2,7 @@
 // identical DOFs (`hapstab stability --scene S --max NAME`, where split_pays), on the small loops of
 // the split by the permutations of identical DOFs (stability/symmetry.hpp) instead of the whole
 // closed-loop matrix. Two reasons: size (96 held devices: the whole ran for more than 11 minutes;
-// the split's three loops of 2 and 1 DOFs take 0.2 s), and multiplicity (a class of k >= 3 DOFs
+// the split's three loops of 2 and 1 DOFs take 0.3 s), and multiplicity (a class of k >= 3 DOFs
 // makes each of its zero-sum loop's eigenvalues an eigenvalue of the whole k - 1 times, so a
 // crossing there is a repeated eigenvalue, which the whole's Krawczyk enclosure of one simple
 // eigenvalue cannot contract: 8 held devices in two classes of 4 were undecided at 4096 bits).
@@ -58,6 +58,11 @@ struct LoopMaxSplit {
   int deciding = -1;                      ///< the block that fails, is undecided, or has the least hi (holds)
   LoopMax whole;                          ///< the combination of the header (mode on the whole's DOFs)
 };
+
+/// The split's affinity check (loop_family on every block, `points` values; the whole's, of order ~4N, is not
+/// built: at 256 DOFs it took 20 s and 1 GB): nullopt when the loop does not split (the caller checks the whole),
+/// "" when every block is affine in p, else why not.
+std::optional<std::string> split_not_affine(const LoopAt& at, const rational& reference, const std::string& name, long points);
 
 /// The split supremum, or nullopt with `why_not` when the loop does not split (no two DOFs alike, a
 /// state no input reaches, classes that differ at 2 reference).
