@@ -3432,6 +3432,32 @@ def split_loop(loop, classes):
     return block(f, EF, over), zero_sum, [len(c) for c in classes]
 
 
+def block_slot(blk, zero_sum, sizes, seen, where):
+    """A split's block {space: "fixed" | "zero-sum", class, conserved} (C++ detail::block_slot): (slot -- None for
+    the fixed space, else its class --, multiplicity, conserved), the slot added to `seen`; Malformed when a
+    field is wrong, a class of one DOF is named or a block is given twice."""
+    if blk.get("space") == "fixed":
+        if "class" in blk:
+            raise Malformed(where + ".class: only for a zero-sum block")
+        slot, copies = None, 1
+    elif blk.get("space") == "zero-sum":
+        a = blk.get("class")
+        if not isinstance(a, int) or isinstance(a, bool) or not 0 <= a < len(sizes):
+            raise Malformed(where + ".class: not a class index")
+        if zero_sum[a] is None:
+            raise Malformed(where + ".class: class %d has one DOF (no zero-sum space)" % a)
+        slot, copies = a, sizes[a] - 1
+    else:
+        raise Malformed(where + ".space: missing or not \"fixed\" / \"zero-sum\"")
+    if slot in seen:
+        raise Malformed(where + ": a block given twice")
+    seen.add(slot)
+    kb = blk.get("conserved", 0)
+    if not isinstance(kb, int) or isinstance(kb, bool) or kb < 0:
+        raise Malformed(where + ".conserved: not an integer >= 0")
+    return slot, copies, kb
+
+
 def check_stability_loop_symmetric(c):
     """stability-loop-symmetric (C++ check/stability_loop_symmetric_check.hpp): the scene's loop split by the
     permutations of identical DOFs (evidence.classes; the invariance checked here on the scene as written), each
@@ -3472,25 +3498,8 @@ def check_stability_loop_symmetric(c):
         if not isinstance(blk, dict):
             raise Malformed(where + ": not an object")
         only(blk, ("space", "class", "conserved", "P", "w"), where)
-        if blk.get("space") == "fixed":
-            if "class" in blk:
-                raise Malformed(where + ".class: only for a zero-sum block")
-            slot, loop, copies = None, fixed, 1
-        elif blk.get("space") == "zero-sum":
-            a = blk.get("class")
-            if not isinstance(a, int) or isinstance(a, bool) or not 0 <= a < len(sizes):
-                raise Malformed(where + ".class: not a class index")
-            if zero_sum[a] is None:
-                raise Malformed(where + ".class: class %d has one DOF (no zero-sum space)" % a)
-            slot, loop, copies = a, zero_sum[a], sizes[a] - 1
-        else:
-            raise Malformed(where + ".space: missing or not \"fixed\" / \"zero-sum\"")
-        if slot in seen:
-            raise Malformed(where + ": a block given twice")
-        seen.add(slot)
-        kb = blk.get("conserved", 0)
-        if not isinstance(kb, int) or isinstance(kb, bool) or kb < 0:
-            raise Malformed(where + ".conserved: not an integer >= 0")
+        slot, copies, kb = block_slot(blk, zero_sum, sizes, seen, where)
+        loop = fixed if slot is None else zero_sum[slot]
         ok, why = stein_verdict(loop_quotient_of(loop), blk, stable, kb, where)
         if not ok:
             return False, "%s (%s): %s" % (where, blk["space"], why)
@@ -3665,6 +3674,25 @@ def first_order_start(fo, loops, quotient, M1, M2, lo):
     return eps, ""
 
 
+def sup_model(model, claim):
+    """A supremum kind's maximised parameter (model.name, given no value in model.set) and its claim (status
+    "certified", lo >= 0): (p, set, lo, hi, refuted) -- refuted when the printed ends are not lo and hi."""
+    p = model.get("name")
+    if not isinstance(p, str):
+        raise Malformed("model.name: missing or not a string")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    if p in sets:
+        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
+    _, lo, hi, _, refuted = claim_range(claim)
+    if not refuted and lo < 0:
+        raise Malformed("claim.lo: negative (sup p >= 0)")
+    return p, sets, lo, hi, refuted
+
+
 def check_stability_loop_max(c):
     """stability-loop-max (check/stability_loop_max_check.hpp): p the gain of one block alone (the realisations
     at p = 1 and 2: A, B equal, C, D doubled), or inside one block's tf (each entry proven affine, the
@@ -3679,21 +3707,11 @@ def check_stability_loop_max(c):
     only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
     only(evidence, ("cover", "unstable_at", "first_order"), "evidence")
-    p = model.get("name")
-    if not isinstance(p, str) or not isinstance(model.get("plant" if plant else "scene"), str):
-        raise Malformed("model.name, model.scene (or model.plant): missing or not strings")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    if p in sets:
-        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
-    if claim.get("status") != "certified":
-        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
-    _, lo, hi, _, refuted = claim_range(claim)
+    if not isinstance(model.get("plant" if plant else "scene"), str):
+        raise Malformed("model.scene (or model.plant): missing or not a string")
+    p, sets, lo, hi, refuted = sup_model(model, claim)
     if refuted:
         return False, refuted
-    if lo < 0:
-        raise Malformed("claim.lo: negative (sup p >= 0)")
     k = claim.get("conserved", 0)
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:
         raise Malformed("claim.conserved: not an integer >= 0")
@@ -3857,21 +3875,11 @@ def check_stability_loop_max_symmetric(c):
     only(model, ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
     only(evidence, ("classes", "blocks"), "evidence")
-    p = model.get("name")
-    if not isinstance(p, str) or not isinstance(model.get("scene"), str):
-        raise Malformed("model.name, model.scene: missing or not strings")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    if p in sets:
-        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
-    if claim.get("status") != "certified":
-        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
-    _, lo, hi, _, refuted = claim_range(claim)
+    if not isinstance(model.get("scene"), str):
+        raise Malformed("model.scene: missing or not a string")
+    p, sets, lo, hi, refuted = sup_model(model, claim)
     if refuted:
         return False, refuted
-    if lo < 0:
-        raise Malformed("claim.lo: negative (sup p >= 0)")
     if hi == 0 and "conserved" in claim:
         raise Malformed("claim.conserved: only with hi > 0 (sup = 0 is shown by one block)")
     k = claim.get("conserved", 0)
@@ -3904,25 +3912,8 @@ def check_stability_loop_max_symmetric(c):
         if not isinstance(blk, dict):
             raise Malformed(where + ": not an object")
         only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at"), where)
-        if blk.get("space") == "fixed":
-            if "class" in blk:
-                raise Malformed(where + ".class: only for a zero-sum block")
-            slot, loops, copies = None, (fixed1, fixed2), 1
-        elif blk.get("space") == "zero-sum":
-            a = blk.get("class")
-            if not isinstance(a, int) or isinstance(a, bool) or not 0 <= a < len(sizes):
-                raise Malformed(where + ".class: not a class index")
-            if zero1[a] is None:
-                raise Malformed(where + ".class: class %d has one DOF (no zero-sum space)" % a)
-            slot, loops, copies = a, (zero1[a], zero2[a]), sizes[a] - 1
-        else:
-            raise Malformed(where + ".space: missing or not \"fixed\" / \"zero-sum\"")
-        if slot in seen:
-            raise Malformed(where + ": a block given twice")
-        seen.add(slot)
-        kb = blk.get("conserved", 0)
-        if not isinstance(kb, int) or isinstance(kb, bool) or kb < 0:
-            raise Malformed(where + ".conserved: not an integer >= 0")
+        slot, copies, kb = block_slot(blk, zero1, sizes, seen, where)
+        loops = (fixed1, fixed2) if slot is None else (zero1[slot], zero2[slot])
         unstable += "unstable_at" in blk
         ok, why, n, bits = loop_max_part([loop_quotient_of(loops[0]), loop_quotient_of(loops[1])], blk, lo, hi, kb, p, "environment", False,
                                          where, need_unstable=False)

@@ -318,3 +318,21 @@ def witness_decides(out, bad):
         out.update(outcome="MISS", why="hapstab's certified witness does not hold: " + bad)
         return True
     return False
+
+
+def run_cases(cases, draw, run_one, prefix):
+    """A small campaign's loop: `cases` cases, each drawn (draw()), run in a temporary folder (run_one(c, tmp) ->
+    (ok, what, branch): True agrees, False disagrees, None is counted apart), printed as ok / MISS / skip, and
+    counted by branch (a disagreement as "disagree", a timeout as "timeout"). Returns (counts, disagreements)."""
+    counts, bad = {}, 0
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
+        for k in range(cases):
+            c = draw()
+            try:
+                ok, what, branch = run_one(c, tmp)
+            except subprocess.TimeoutExpired:
+                ok, what, branch = None, "timeout", "timeout"
+            print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
+            bad += ok is False
+            counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
+    return counts, bad

@@ -24,13 +24,12 @@ import os
 import random
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 import scipy.linalg
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from indep_common import case_files, cases_and_seed  # noqa: E402
+from indep_common import case_files, cases_and_seed, run_cases  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "check"))
 import symmetric_loop_case as SLC  # noqa: E402
@@ -174,17 +173,7 @@ def main(argv):
     exe = argv[1]
     cases, seed = cases_and_seed(argv, 6, 1)
     rng = random.Random("symmetric-certificate:%d" % seed)
-    counts, bad = {}, 0
-    with tempfile.TemporaryDirectory(prefix="hapstab-sym-cert-") as tmp:
-        for k in range(cases):
-            c = draw(rng)
-            try:
-                ok, what, branch = run_case(exe, c, tmp)
-            except subprocess.TimeoutExpired:
-                ok, what, branch = None, "timeout", "timeout"
-            print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
-            bad += ok is False
-            counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
+    counts, bad = run_cases(cases, lambda: draw(rng), lambda c, tmp: run_case(exe, c, tmp), "hapstab-sym-cert-")
     print("indep_symmetric_certificate: %d cases, %d disagree; %s; mutants %d, each given its exit code by both checkers" % (
         cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTANTS[0]))
     if cases >= 6 and (counts.get("stable", 0) == 0 or counts.get("NOT stable", 0) == 0):

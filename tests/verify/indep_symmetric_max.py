@@ -25,12 +25,11 @@ import os
 import random
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from indep_common import case_files, cases_and_seed  # noqa: E402
+from indep_common import case_files, cases_and_seed, run_cases  # noqa: E402
 import indep_symmetric_certificate as ISC  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "cli"))
@@ -131,17 +130,7 @@ def main(argv):
     if "--mutants-every" in argv:
         MUTATE["every"] = int(argv[argv.index("--mutants-every") + 1])
     rng = random.Random("symmetric-max:%d" % seed)
-    counts, bad = {}, 0
-    with tempfile.TemporaryDirectory(prefix="hapstab-sym-max-") as tmp:
-        for k in range(cases):
-            c = ISC.draw(rng, (3, 24))
-            try:
-                ok, what, branch = run_case(exe, c, tmp)
-            except subprocess.TimeoutExpired:
-                ok, what, branch = None, "timeout", "timeout"
-            print("%s case %d: %s" % ({True: "ok  ", False: "MISS", None: "skip"}[ok], k, what), flush=True)
-            bad += ok is False
-            counts[branch or "disagree"] = counts.get(branch or "disagree", 0) + 1
+    counts, bad = run_cases(cases, lambda: ISC.draw(rng, (3, 24)), lambda c, tmp: run_case(exe, c, tmp), "hapstab-sym-max-")
     print("indep_symmetric_max: %d cases, %d disagree; %s; %d certificates verified, %d mutants each given its exit code by both" % (
         cases, bad, "; ".join("%s %d" % kv for kv in sorted(counts.items())), MUTATE["split"], MUTATE["mutants"]))
     if cases >= 6 and not any(k.startswith("split") for k in counts):

@@ -425,22 +425,27 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
   return out;
 }
 
+detail::SupModel detail::sup_model(const nlohmann::json& model, const nlohmann::json& claim) {
+  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
+  const std::string p = model.at("name").get<std::string>();
+  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
+    throw InputError("model.set." + p + ": the parameter maximised has no value");
+  const ClaimRange c = claim_range(claim);
+  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  if (!c.refuted && c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
+  return {p, c};
+}
+
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
   else detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
   detail::only_fields(evidence, {"cover", "unstable_at", "first_order"}, "evidence");
-  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
   if (model.contains("scene") ? !model.at("scene").is_string() : !model.contains("plant"))
     throw InputError("model.scene: missing or not a string (or a one-DOF model: plant, H, T, delay)");
-  const std::string p = model.at("name").get<std::string>();
-  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
-    throw InputError("model.set." + p + ": the parameter maximised has no value");
-  const detail::ClaimRange c = detail::claim_range(claim);
-  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  const auto [p, c] = detail::sup_model(model, claim);
   if (c.refuted) return {false, *c.refuted};
-  if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
   const MaxReading r = model.contains("scene") ? detail::read_max_parameter(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
   const std::string& block = r.block;

@@ -83,6 +83,13 @@ namespace detail {
 /// InputError when the loop's order is beyond this kind's 160 (a cover of Stein tests at that order; the stability-loop
 /// kind takes 1024): the producer asks before it solves anything.
 void require_loop_max_order(size_t order);
+/// A supremum kind's maximised parameter (model.name, given no value in model.set) and its claim [lo, hi] (status
+/// "certified", lo >= 0); InputError when malformed; c.refuted when the printed ends are not lo and hi.
+struct SupModel {
+  std::string p;
+  ClaimRange c;
+};
+SupModel sup_model(const nlohmann::json& model, const nlohmann::json& claim);
 /// The header's reading of p: the block ("environment" or "coupling") whose `gain` is exactly p, p named in no
 /// other string of the scene; or (`inside`) p named only in the `tf` entries of one of them, its gain not p.
 /// InputError naming what is not so.

@@ -29,15 +29,9 @@ Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
   detail::only_fields(model, {"scene", "set", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
   detail::only_fields(evidence, {"classes", "blocks"}, "evidence");
-  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
   if (!model.contains("scene") || !model.at("scene").is_string()) throw InputError("model.scene: missing or not a string");
-  const std::string p = model.at("name").get<std::string>();
-  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
-    throw InputError("model.set." + p + ": the parameter maximised has no value");
-  const detail::ClaimRange c = detail::claim_range(claim);
-  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  const auto [p, c] = detail::sup_model(model, claim);
   if (c.refuted) return {false, *c.refuted};
-  if (c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   const bool zero = c.hi.is_zero();
   if (zero && claim.contains("conserved")) throw InputError("claim.conserved: only with hi > 0 (sup = 0 is shown by one block)");
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 1L << 20) : 0;
