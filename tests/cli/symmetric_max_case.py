@@ -36,7 +36,7 @@ from symmetric_loop_case import reference_rho  # noqa: E402
 def max_mutants(c):
     """Hand edits of a stability-loop-max-symmetric certificate c and the exit code both checkers must give each:
     refuted (1) -- the classes merged or a DOF swapped between them (not invariant), a cover P negated, unstable_at's
-    w zero, a conserved count moved (claim or block); malformed (2) -- a block dropped or given twice, unstable_at
+    w zero, a conserved count moved (claim or block), a block's first-order start dropped; malformed (2) -- a block dropped or given twice, unstable_at
     taken away, a DOF beyond the scene or left out, a cover's last interval not ending at lo, the gain made 2 g
     (not the gain alone). (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
     def edit(f):
@@ -74,6 +74,9 @@ def max_mutants(c):
             ("the first block's conserved moved", edit(lambda e: e["evidence"]["blocks"][0].update(conserved=b0.get("conserved", 0) + 1)), 1),
             ("the first block's cover ending at 2 lo", edit(last_to), 2),
             ("the last block dropped", edit(lambda e: e["evidence"]["blocks"].pop()), 2)]
+    fo = next((i for i, b in enumerate(blocks) if "first_order" in b), None)
+    if fo is not None:  # M_b(0) has the eigenvalue 1 there: no P holds Stein at 0, so the cover from 0 is not shown
+        out.append(("a block's first-order start dropped", edit(lambda e: e["evidence"]["blocks"][fo].pop("first_order")), 1))
     if len(blocks) >= 2:
         out.append(("a block given twice", edit(lambda e: e["evidence"]["blocks"].__setitem__(
             0 if d != 0 else 1, e["evidence"]["blocks"][1 if d != 0 else 2] if len(blocks) > 2 or d != 0 else e["evidence"]["blocks"][0])), 2))
