@@ -3547,7 +3547,7 @@ def gain_block(scene, p):
     scan(root, "")
     if not blocks:
         for b in ("environment", "coupling"):
-            if found and all(w == b + ".tf" or w.startswith(b + ".tf[") for w in found):
+            if found and all(w == b + ".tf" or w.startswith(b + ".tf[") or w in (b + ".diagonal", b + ".off_diagonal") for w in found):
                 return b, True
         raise Malformed("model.name: %r is neither the whole gain of [environment] or [coupling] nor named only in the tf of one of "
                         "them: beyond this kind" % p)
@@ -3558,16 +3558,24 @@ def gain_block(scene, p):
 
 
 def affine_block_order(model, block, p, N):
+    """(sum_j deg L_j, the largest degree bound) of affine_column_orders: the largest order the realisation reaches
+    at any p."""
+    orders, degree = affine_column_orders(model, block, p, N)
+    return sum(orders), degree
+
+
+def affine_column_orders(model, block, p, N):
     """p inside the block's tf (check/stability_loop_max_check.hpp): each entry naming p proven affine in it
-    (prove_affine: H = H0 + p H1); (sum_j deg L_j, the largest degree bound), L_j the monic lcm over column j
-    of den H0 and den H1 -- the largest order the realisation reaches at any p."""
+    (prove_affine: H = H0 + p H1); ([deg L_j per column j], the largest degree bound), L_j the monic lcm over
+    column j of den H0 and den H1 -- the largest order that column's realisation reaches at any p."""
     root, T, expand, field = scene_read(model, True, coupling=True)
     t = root.get(block)
-    if not isinstance(t, dict) or "tf" not in t:
+    if not isinstance(t, dict) or ("tf" not in t and "diagonal" not in t):
         scene_beyond(block + ".ss", "the parameter inside an ss block (only a tf entry is proven affine)")
     gain_text = field(t, "gain", block, "1")
-    E = [["(%s)*(%s)" % (gain_text, scene_wall_entry(t, e, expand)) for e in row] for row in scene_text_matrix(t["tf"], N, block + ".tf")]
-    order, degree = 0, 0
+    E = [["(%s)*(%s)" % (gain_text, scene_wall_entry(t, e, expand)) for e in row]
+         for row in (scene_diagonal(t, block, N) if "diagonal" in t else scene_text_matrix(t["tf"], N, block + ".tf"))]
+    orders, degree = [], 0
     for j in range(N):
         L = [Fraction(1)]
         for i in range(N):
@@ -3583,8 +3591,8 @@ def affine_block_order(model, block, p, N):
                 g = pgcd(L, d)
                 L = pdivmod(pmul(L, d), g)[0]
                 L = [x / L[-1] for x in L]
-        order += len(L) - 1
-    return order, degree
+        orders.append(len(L) - 1)
+    return orders, degree
 
 
 def plant_reading(model, p):
@@ -3886,10 +3894,11 @@ def check_stability_loop_max_symmetric(c):
     if not isinstance(k, int) or isinstance(k, bool) or k < 0:
         raise Malformed("claim.conserved: not an integer >= 0")
     block, inside = gain_block(model["scene"], p)
-    if inside or block != "environment":
-        raise Malformed("model.name: %r is not the whole gain of [environment]: beyond stability-loop-max-symmetric" % p)
+    if block != "environment":
+        raise Malformed("model.name: %r is the gain of [coupling]: beyond stability-loop-max-symmetric (the split compares the "
+                        "environment only)" % p)
     splits = []
-    for v in (1, 2):
+    for v in (1, 2) if not inside or hi == 0 else (1, 2, hi):
         m = dict({key: x for key, x in model.items() if key != "name"}, set=dict(sets))
         m["set"][p] = str(v)
         devices = scene_read(m, False, coupling=True, max_dofs=MAX_LOOP_SYMMETRIC_DOFS)[0].get("device")
@@ -3898,9 +3907,11 @@ def check_stability_loop_max_symmetric(c):
                 len(devices), MAX_LOOP_SYMMETRIC_READ))
         split = split_loop(scene_loop_read(m, MAX_LOOP_SYMMETRIC_DOFS), evidence.get("classes"))
         if isinstance(split, str):
-            return False, "evidence.classes: at %s = %d, %s" % (p, v, split)
+            return False, "evidence.classes: at %s = %s, %s" % (p, short(Fraction(v)), split)
         splits.append(split)
-    (fixed1, zero1, sizes), (fixed2, zero2, _) = splits
+    (fixed1, zero1, sizes), (fixed2, zero2, _) = splits[:2]
+    classes = evidence["classes"]
+    column, degree = affine_column_orders(model, "environment", p, sum(sizes)) if inside else (None, 0)
     blocks = evidence.get("blocks")
     needed = 1 + sum(1 for z in zero1 if z is not None)
     if not isinstance(blocks, list) or len(blocks) != (1 if hi == 0 else needed):
@@ -3913,10 +3924,15 @@ def check_stability_loop_max_symmetric(c):
             raise Malformed(where + ": not an object")
         only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at"), where)
         slot, copies, kb = block_slot(blk, zero1, sizes, seen, where)
-        loops = (fixed1, fixed2) if slot is None else (zero1[slot], zero2[slot])
+        loops = [sp[0] if slot is None else sp[1][slot] for sp in splits]
+        at_p = [loop_quotient_of(loop) for loop in loops]
+        if inside:  # the block's realisation at 1, 2 (and hi) of its largest order: its columns', the whole's columns f_b
+            order = sum(column[c[0]] for a, c in enumerate(classes) if slot is None or slot == a)
+            if any(len(q[5][0][0]) != order for q in at_p):
+                raise Malformed("%s: the block's realisation at %s = 1, 2 or %s is not of order %d (a pole cancelled there): beyond "
+                                "this kind" % (where, p, short(hi), order))
         unstable += "unstable_at" in blk
-        ok, why, n, bits = loop_max_part([loop_quotient_of(loops[0]), loop_quotient_of(loops[1])], blk, lo, hi, kb, p, "environment", False,
-                                         where, need_unstable=False)
+        ok, why, n, bits = loop_max_part(at_p, blk, lo, hi, kb, p, "environment", inside, where, need_unstable=False)
         if ok is None:
             return False, "claim: sup %s in [%s, %s], but %s (%s): %s at 512 bits" % (p, short(lo), short(hi), where, blk["space"], why)
         if not ok:
@@ -3928,8 +3944,9 @@ def check_stability_loop_max_symmetric(c):
         raise Malformed("evidence.blocks: %d with unstable_at; exactly one block bounds sup from above" % unstable)
     if hi != 0 and total != k:
         return False, "claim: %d conserved quantities, but the blocks have %d (k_F + sum_a (k_a - 1) k_a')" % (k, total)
-    head = "by the split of %d DOFs into %d classes of identical DOFs (invariance checked exactly at %s = 1 and 2; %s the environment's gain alone)" % (
-        sum(sizes), len(sizes), p, p)
+    head = "by the split of %d DOFs into %d classes of identical DOFs (invariance checked exactly at %s = 1 and 2; %s %s)" % (
+        sum(sizes), len(sizes), p, p, "inside the environment's tf, each entry proven affine (degree bound %d)" % degree if inside
+        else "the environment's gain alone")
     if hi == 0:
         return True, "sup %s = 0 %s: %s" % (p, head, "; ".join(said))
     return True, "sup %s in [%s, %s] %s: every block stable on [0, %s], one NOT stable at %s: %s" % (

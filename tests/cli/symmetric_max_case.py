@@ -12,7 +12,13 @@ a failure, not a timing). Required:
     claim the printed enclosure around sup, three blocks of which exactly one carries unstable_at, conserved = 96;
     both checkers verify it (exit 0), and each hand edit of max_mutants() gets its exit code from both;
   * --no-symmetry refused by name beyond 64 DOFs (exit 2), and a scene of 8 DOFs in two classes of 4 (a class of
-    three or more) split too, its supremum the 96's zero-sum block's (the same one-DOF loop).
+    three or more) split too, its supremum the 96's zero-sum block's (the same one-DOF loop);
+  * K inside the environment's tf (tests/cli/scenes/symmetric_three_walls_k.toml, three identical devices, written
+    as diagonal / off_diagonal): the supremum against the whole loop in numpy (indep_symmetric_certificate.py's
+    reference_rho, the links -K/20 as u v with u = v = sqrt(K/20)), its certificate (a first-order start in each
+    block) verified by both checkers with its hand edits, K squared in the diagonal refused by both (malformed:
+    not affine); with the links -100 instead, NOT stable for every small K (the fixed space's stiffness K - 200):
+    sup K = 0, one block's certificate verified by both, its hand edits too.
 
   symmetric_max_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -31,6 +37,16 @@ SCENE = os.path.join(HERE, "scenes", "symmetric_held_96.toml")
 INDEPENDENT = os.path.join(TOP, "checks", "hapstab_check.py")
 sys.path.insert(0, os.path.join(TOP, "tests", "check"))
 from symmetric_loop_case import reference_rho  # noqa: E402
+sys.path.insert(0, os.path.join(TOP, "tests", "verify"))
+import indep_symmetric_certificate as ISC  # noqa: E402
+SCENE_K = os.path.join(HERE, "scenes", "symmetric_three_walls_k.toml")
+
+
+def rho_k(K, link=None):
+    """The whole loop of symmetric_three_walls_k.toml at K (links -K/20, or -link), built in numpy/scipy."""
+    uv = (K / 20 if link is None else link) ** 0.5
+    return ISC.reference_rho({"N": 3, "cls": [0, 0, 0], "n": 0, "g": 1.0, "classes": [
+        {"m": 0.5, "b": 1.0, "K": K, "B": 2.0, "bo": 0, "ko": 0, "u": uv, "v": uv}]})
 
 
 def max_mutants(c):
@@ -38,7 +54,7 @@ def max_mutants(c):
     refuted (1) -- the classes merged or a DOF swapped between them (not invariant), a cover P negated, unstable_at's
     w zero, a conserved count moved (claim or block), a block's first-order start dropped; malformed (2) -- a block dropped or given twice, unstable_at
     taken away, a DOF beyond the scene or left out, a cover's last interval not ending at lo, the gain made 2 g
-    (not the gain alone). (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
+    (not the gain alone; where p is the gain). (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
     def edit(f):
         e = json.loads(json.dumps(c))
         f(e)
@@ -56,9 +72,10 @@ def max_mutants(c):
                                                    else e["evidence"]["classes"].pop()), 2),
             ("unstable_at's w zero", edit(lambda e: e["evidence"]["blocks"][d]["unstable_at"].update(
                 w=["0"] * len(blocks[d]["unstable_at"]["w"]))), 1),
-            ("unstable_at taken away", edit(lambda e: e["evidence"]["blocks"][d].pop("unstable_at")), 2),
-            ("the gain made 2 g", edit(lambda e: e["model"].update(scene=c["model"]["scene"].replace('gain = "%s"' % c["model"]["name"],
-                                                                                                        'gain = "2*%s"' % c["model"]["name"]))), 2)]
+            ("unstable_at taken away", edit(lambda e: e["evidence"]["blocks"][d].pop("unstable_at")), 2)]
+    gain = 'gain = "%s"' % c["model"]["name"]
+    if gain in c["model"]["scene"]:  # p the environment's gain (not inside its tf)
+        out.append(("the gain made 2 g", edit(lambda e: e["model"].update(scene=c["model"]["scene"].replace(gain, 'gain = "2*%s"' % c["model"]["name"]))), 2))
     if c["claim"]["hi"] == "0":
         return out
     b0 = blocks[0]
@@ -141,6 +158,47 @@ def main():
         js = json.loads(s.stdout) if s.returncode == 0 else {}
         expect("8 DOFs in two classes of 4: exit %d, path %s, sup %s (the 96's %s)" % (s.returncode, js.get("path"), js.get("max"), j["max"]),
                s.returncode == 0 and js.get("path") == "symmetry" and js.get("max") == j["max"])
+    with tempfile.TemporaryDirectory() as tmp:  # K inside the tf
+        path = os.path.join(tmp, "k.json")
+        r = subprocess.run([hapstab, "stability", "--scene", SCENE_K, "--max", "K", "--quiet", "--json", "--certificate", path],
+                           capture_output=True, text=True, timeout=120)
+        j = json.loads(r.stdout) if r.returncode == 0 else {}
+        cert = json.load(open(path)) if os.path.exists(path) else {}
+        if j and cert:
+            lo, hi = (float(x) for x in j["sup_enclosure"])
+            sup = (lo + hi) / 2
+            below = max(rho_k(k) for k in sup * np.geomspace(1e-4, 1 - 1e-6, 12))
+            expect("K inside the tf: sup %s, path %s; the reference's max rho below %.9f, at sup (1 + 1e-6) %.9f" % (
+                j["max"], j.get("path"), below, rho_k(sup * (1 + 1e-6))), j.get("path") == "symmetry" and below < 1 < rho_k(sup * (1 + 1e-6)))
+            expect("K inside the tf: kind %s, a first-order start in every block, both checkers %s" % (cert["kind"], exits(path)),
+                   cert["kind"] == "stability-loop-max-symmetric" and all("first_order" in b for b in cert["evidence"]["blocks"]) and
+                   exits(path) == (0, 0))
+            sq = json.loads(json.dumps(cert))
+            sq["model"]["scene"] = sq["model"]["scene"].replace('diagonal = "K + 2', 'diagonal = "K^2/1000 + 2')
+            for what, m, code in max_mutants(cert) + [("K squared in the diagonal (not affine)", sq, 2)]:
+                bad = os.path.join(tmp, "m.json")
+                json.dump(m, open(bad, "w"))
+                got = exits(bad)
+                expect("K inside the tf, %s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
+        else:
+            expect("K inside the tf: exit %d, a certificate %s (%s)" % (r.returncode, bool(cert), r.stderr.strip()[:200]), False)
+        zero = os.path.join(tmp, "zero.toml")
+        open(zero, "w").write(open(SCENE_K).read().replace('off_diagonal = "-K/20"', 'off_diagonal = "-100"'))
+        path = os.path.join(tmp, "z.json")
+        r = subprocess.run([hapstab, "stability", "--scene", zero, "--max", "K", "--quiet", "--certificate", path],
+                           capture_output=True, text=True, timeout=120)
+        cert = json.load(open(path)) if os.path.exists(path) else {}
+        expect("links -100: exit %d (want 1: sup K = 0), the reference's rho at K = 1e-3, 1 and 100: %s" % (
+            r.returncode, ["%.6f" % rho_k(k, 100.0) for k in (1e-3, 1.0, 100.0)]),
+            r.returncode == 1 and all(rho_k(k, 100.0) > 1 for k in (1e-3, 1.0, 100.0)))
+        if cert:
+            expect("sup K = 0: %d block, both checkers %s" % (len(cert["evidence"]["blocks"]), exits(path)),
+                   cert["claim"]["hi"] == "0" and len(cert["evidence"]["blocks"]) == 1 and exits(path) == (0, 0))
+            for what, m, code in max_mutants(cert):
+                bad = os.path.join(tmp, "m.json")
+                json.dump(m, open(bad, "w"))
+                got = exits(bad)
+                expect("sup K = 0, %s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
     print("symmetric_max_case: %d failed" % failures)
     return 1 if failures else 0
 

@@ -450,8 +450,7 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
   std::vector<long> copies;
   try {
     const auto r = check::detail::read_max_parameter(model.at("scene").get<std::string>(), name);
-    if (r.inside || r.block != "environment")
-      throw InputError("'" + name + "' is not the whole gain of [environment] (the split's blocks are p times their value at 1 only for that gain)");
+    if (r.block != "environment") throw InputError("'" + name + "' is the gain of [coupling] (the split compares the environment only)");
     const auto l1 = read_at(model, name, 1, check::detail::kMaxSymmetricDofs), l2 = read_at(model, name, 2, check::detail::kMaxSymmetricDofs);
     classes = check::detail::identical_dofs(l1);
     std::string why;

@@ -54,7 +54,7 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
 /// stability-loop-max-symmetric (check/stability_loop_max_symmetric_check.hpp), the classes the checker's own
 /// (identical_dofs), each block's evidence built as above on the block's loops at p = 1 and 2 (the first-order
 /// start from lo / 4^j), unstable_at on the first block whose Stein inertia shows M_b(hi) NOT stable. p must be the
-/// whole gain of [environment] (else InputError, by name).
+/// whole gain of [environment] or inside its tf (else InputError, by name).
 nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m);
 
 }  // namespace hapstab::cli

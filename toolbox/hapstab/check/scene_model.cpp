@@ -785,10 +785,11 @@ std::vector<std::vector<std::string>> block_entries(const nlohmann::json& model,
   Parameters p = read_parameters(root, model, free);
   const auto* t = root[block].as_table();
   if (!t) malformed("[" + block + "]", "missing or not a table");
-  if (!t->contains("tf")) beyond(block + ".ss", "the parameter inside an ss block (only a tf entry is proven affine)");
+  if (!t->contains("tf") && !t->contains("diagonal"))
+    beyond(block + ".ss", "the parameter inside an ss block (only a tf entry is proven affine)");
   const std::string gain_text = field(*t, "gain", block, p, "1");
   std::vector<std::vector<std::string>> out;
-  for (const auto& row : text_matrix(*t->get("tf"), dofs, block + ".tf")) {
+  for (const auto& row : t->contains("diagonal") ? diagonal_texts(*t, block, dofs) : text_matrix(*t->get("tf"), dofs, block + ".tf")) {
     out.emplace_back();
     for (const auto& e : row) {  // read_discrete's reading, the parameter left a name
       toml::table one;

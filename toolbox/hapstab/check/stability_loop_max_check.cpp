@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,8 +85,11 @@ detail::MaxReading detail::read_max_parameter(const std::string& scene, const st
     }
   };
   scan(root, "");
+  // a tf entry, or a compact scene's diagonal / off_diagonal (the reading writes them out as the tf's entries)
   const auto in_tf = [&](const std::string& b) {
-    return std::all_of(where.begin(), where.end(), [&](const std::string& w) { return w == b + ".tf" || w.rfind(b + ".tf[", 0) == 0; });
+    return std::all_of(where.begin(), where.end(), [&](const std::string& w) {
+      return w == b + ".tf" || w.rfind(b + ".tf[", 0) == 0 || w == b + ".diagonal" || w == b + ".off_diagonal";
+    });
   };
   if (r.block.empty()) {
     for (const char* b : {"environment", "coupling"})
@@ -104,23 +108,19 @@ detail::MaxReading detail::read_max_parameter(const std::string& scene, const st
   return r;
 }
 
-namespace {
 using detail::MaxReading;
 
-// p inside the block's tf (header): each entry naming p proven affine in it (check/affine.hpp), H = H0 +
-// p H1; returns sum_j deg L_j, L_j the monic lcm over column j of den H0 and den H1 (of the entry where it
-// does not name p): the largest order the checker's realisation reaches at any p. `degree`: the largest
-// degree bound proven.
-size_t affine_block_order(const nlohmann::json& model, const MaxReading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
+std::vector<size_t> detail::affine_column_orders(const nlohmann::json& model, const MaxReading& r, const std::string& p, const SceneLoop& L1,
+                                                 long& degree) {
   const bool plant = !model.contains("scene");
   const auto entries = plant ? std::vector<std::vector<std::string>>{{model.at("H").get<std::string>()}}
-                             : detail::block_entries(model, r.block, p, L1.dofs());
+                             : block_entries(model, r.block, p, L1.dofs());
   const auto& at1 = r.block == "environment" ? L1.E.tf : L1.V->tf;
   ParseOptions po;
   po.variable = 'z';
   po.T = L1.T;
-  if (plant) po.parameters = detail::model_parameters(model);  // the other parameters' values (p has none)
-  size_t order = 0;
+  if (plant) po.parameters = model_parameters(model);  // the other parameters' values (p has none)
+  std::vector<size_t> orders;
   for (size_t j = 0; j < entries.size(); ++j) {
     Polynomial<rational> Lj{rational(1)};
     const auto join = [&](const Polynomial<rational>& d) { Lj = divmod(Lj * d, gcd(Lj, d)).first.monic(); };
@@ -130,9 +130,9 @@ size_t affine_block_order(const nlohmann::json& model, const MaxReading& r, cons
         join(at1[i][j].den());
         continue;
       }
-      detail::Affine a;
+      Affine a;
       try {
-        a = detail::prove_affine(entries[i][j], po, p);
+        a = prove_affine(entries[i][j], po, p);
       } catch (const InputError& e) {
         throw InputError((plant ? std::string("model.H") : "model.scene: " + r.block + ".tf[" + std::to_string(i) + "][" + std::to_string(j) + "]") +
                          ": " + e.what() + ": beyond this kind");
@@ -141,9 +141,17 @@ size_t affine_block_order(const nlohmann::json& model, const MaxReading& r, cons
       join(a.H0.den());
       join(a.H1.den());
     }
-    order += static_cast<size_t>(Lj.degree());
+    orders.push_back(static_cast<size_t>(Lj.degree()));
   }
-  return order;
+  return orders;
+}
+
+namespace {
+
+// sum_j deg L_j (detail::affine_column_orders): the largest order the checker's realisation of the block reaches at any p.
+size_t affine_block_order(const nlohmann::json& model, const MaxReading& r, const std::string& p, const detail::SceneLoop& L1, long& degree) {
+  const auto orders = detail::affine_column_orders(model, r, p, L1, degree);
+  return std::accumulate(orders.begin(), orders.end(), size_t(0));
 }
 
 // Affine in p, on the realisations read (header): the gain block's A, B the same and C, D doubled at p = 2,
@@ -179,14 +187,6 @@ std::string realisations_not_affine(const MaxReading& r, const std::string& p, c
   return "";
 }
 
-// The model read at p = value: the scene's, or the one-DOF --plant/--H loop's (check/scene_model.hpp).
-nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const rational& value) {
-  nlohmann::json m = model;
-  m.erase("name");
-  if (!m.contains("set")) m["set"] = nlohmann::json::object();
-  m["set"][p] = value.str();
-  return m;
-}
 
 // A one-DOF --plant/--H model: p named in H and in neither the plant nor the operator ("p inside the tf"
 // of its one wall). InputError otherwise.
@@ -425,6 +425,14 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
   return out;
 }
 
+nlohmann::json detail::model_at(const nlohmann::json& model, const std::string& p, const rational& value) {
+  nlohmann::json m = model;
+  m.erase("name");
+  if (!m.contains("set")) m["set"] = nlohmann::json::object();
+  m["set"][p] = value.str();
+  return m;
+}
+
 detail::SupModel detail::sup_model(const nlohmann::json& model, const nlohmann::json& claim) {
   if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
   const std::string p = model.at("name").get<std::string>();
@@ -449,7 +457,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const long conserved = claim.contains("conserved") ? detail::integer_field(claim, "conserved", "claim", 0, 160) : 0;
   const MaxReading r = model.contains("scene") ? detail::read_max_parameter(model.at("scene").get<std::string>(), p) : read_p_plant(model, p);
   const std::string& block = r.block;
-  const detail::SceneLoop L1 = detail::read_scene_loop(model_at(model, p, rational(1))), L2 = detail::read_scene_loop(model_at(model, p, rational(2)));
+  const detail::SceneLoop L1 = detail::read_scene_loop(detail::model_at(model, p, rational(1))), L2 = detail::read_scene_loop(detail::model_at(model, p, rational(2)));
   if (2 * L1.dofs() > kMaxLoopOrder)  // each DOF's v and x: refused before any loop is built in balls
     throw InputError("model: " + std::to_string(L1.dofs()) + " DOFs, a closed loop of at least " + std::to_string(2 * L1.dofs()) +
                      " states, beyond this checker's " + std::to_string(kMaxLoopOrder) + " for a supremum");
@@ -459,7 +467,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   std::optional<detail::LoopMatrix> at_hi;
   if (r.inside && c.hi > 0) {
     flint::BallPrecision scope(128);
-    at_hi = detail::loop_matrix(detail::read_scene_loop(model_at(model, p, c.hi)), 128);
+    at_hi = detail::loop_matrix(detail::read_scene_loop(detail::model_at(model, p, c.hi)), 128);
   }
   const detail::MaxPart part = detail::check_max_part(L1, L2, r, p, evidence, c, conserved, order, at_hi, "evidence");
   if (!part.verified) return {false, "claim: sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "], but " + part.why + " at 512 bits"};

@@ -70,6 +70,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -83,6 +84,9 @@ namespace detail {
 /// InputError when the loop's order is beyond this kind's 160 (a cover of Stein tests at that order; the stability-loop
 /// kind takes 1024): the producer asks before it solves anything.
 void require_loop_max_order(size_t order);
+/// The model read at p = value (model.set with p added, model.name dropped): the scene's, or the one-DOF --plant/--H
+/// loop's (check/scene_model.hpp).
+nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const rational& value);
 /// A supremum kind's maximised parameter (model.name, given no value in model.set) and its claim [lo, hi] (status
 /// "certified", lo >= 0); InputError when malformed; c.refuted when the printed ends are not lo and hi.
 struct SupModel {
@@ -98,6 +102,12 @@ struct MaxReading {
   bool inside = false;
 };
 MaxReading read_max_parameter(const std::string& scene, const std::string& p);
+/// p inside the block's tf (header): each entry naming p proven affine in it (check/affine.hpp), H = H0 + p H1; per
+/// column j, deg L_j, L_j the monic lcm over column j of den H0 and den H1 (of the entry where it does not name p):
+/// the largest order the checker's realisation of that column reaches at any p. `degree`: the largest degree bound
+/// proven. InputError (beyond) when an entry is not proven affine.
+std::vector<size_t> affine_column_orders(const nlohmann::json& model, const MaxReading& r, const std::string& p, const SceneLoop& L1,
+                                         long& degree);
 /// One loop's supremum evidence ({cover, first_order, unstable_at} of `ev`, named `at` in messages) on the loop
 /// read at p = 1 and 2, checked as the header says: verified (true), refuted (false, why), or not shown at 512
 /// bits (nullopt, why). `conserved` < 0: not compared. `order`, `at_hi`: p inside the tf (else 0, nullopt).
