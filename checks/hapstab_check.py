@@ -3381,16 +3381,17 @@ def split_loop(loop, classes):
     partition `classes` (0-based DOFs): (fixed loop, [zero-sum loop or None per class], sizes), or a string
     naming the first difference when the loop is not invariant under the classes' permutations. The fixed loop:
     one DOF per class (its first DOF's device and operators) under E_F[a][a] = E(f_a, f_a) + (k_a - 1) E(f_a,
-    s_a), E_F[a][b] = k_b E(f_a, f_b); class a's zero-sum loop: f_a under E(f_a, f_a) - E(f_a, s_a); each
-    column over the whole's column lcm (the loop's states are the whole's, restricted)."""
+    s_a), E_F[a][b] = k_b E(f_a, f_b); class a's zero-sum loop: f_a under E(f_a, f_a) - E(f_a, s_a); a coupling V
+    (tf) split the same way; each column over the whole's column lcm (the loop's states are the whole's,
+    restricted)."""
     T, d, devices, mass, damp, stiff, ops, E, V = loop
-    if V is not None:
-        scene_beyond("[coupling]", "beyond stability-loop-symmetric (the split compares the environment only)")
     if E[0] != "tf":
         scene_beyond("environment.ss", "beyond stability-loop-symmetric (the split compares E's entries, a tf)")
+    if V is not None and V[0] != "tf":
+        scene_beyond("coupling.ss", "beyond stability-loop-symmetric (the split compares V's entries, a tf)")
     if any(dev["dofs"] != 1 for dev in devices) or any(len(ports) != 1 for ports, _ in ops):
         scene_beyond("[[device]] / [[operator]]", "a block on several DOFs: beyond stability-loop-symmetric (one DOF each)")
-    N, E = len(mass), E[1]
+    N = len(mass)
     if not isinstance(classes, list) or any(not isinstance(c, list) or not c for c in classes):
         raise Malformed("evidence.classes: a list of non-empty lists of DOF indices (0-based)")
     class_of = [None] * N
@@ -3412,24 +3413,30 @@ def split_loop(loop, classes):
         for i in c:
             if dof(i) != dof(f[a]):
                 return "DOF %d is not identical to DOF %d of its class (device or operators)" % (i, f[a])
-    for i in range(N):
-        for j in range(N):
-            a, b = class_of[i], class_of[j]
-            ri, rj = f[a], (f[a] if i == j else s[a] if a == b else f[b])
-            if E[i][j] != E[ri][rj]:
-                return "the environment is not invariant under the classes: E[%d][%d] != E[%d][%d]" % (i + 1, j + 1, ri + 1, rj + 1)
-    over = [column_lcms([[E[f[a]][f[b]]] for a in range(len(classes))] + ([[E[f[b]][s[b]]]] if s[b] is not None else []))[0]
-            for b in range(len(classes))]
+    for G, name, what in ((E[1], "E", "environment"),) + (((V[1], "V", "coupling"),) if V is not None else ()):
+        for i in range(N):
+            for j in range(N):
+                a, b = class_of[i], class_of[j]
+                ri, rj = f[a], (f[a] if i == j else s[a] if a == b else f[b])
+                if G[i][j] != G[ri][rj]:
+                    return "the %s is not invariant under the classes: %s[%d][%d] != %s[%d][%d]" % (what, name, i + 1, j + 1, name, ri + 1, rj + 1)
+    r = len(classes)
 
-    def block(reps, tf, cols):
+    def split(G):  # [fixed space's (tf, over)] + [class a's zero-sum (tf, over) or None]
+        over = [column_lcms([[G[f[a]][f[b]]] for a in range(r)] + ([[G[f[b]][s[b]]]] if s[b] is not None else []))[0] for b in range(r)]
+        GF = [[(G[f[a]][f[a]] + RF([Fraction(len(classes[a]) - 1)]) * G[f[a]][s[a]] if s[a] is not None else G[f[a]][f[a]])
+               if a == b else RF([Fraction(len(classes[b]))]) * G[f[a]][f[b]] for b in range(r)] for a in range(r)]
+        return [(GF, over)] + [([[G[f[a]][f[a]] - G[f[a]][s[a]]]], [over[a]]) if s[a] is not None else None for a in range(r)]
+    Es = split(E[1])
+    Vs = split(V[1]) if V is not None else None
+
+    def block(reps, k):
         bops = [([reps.index(ports[0])], Z) for ports, Z in ops if ports[0] in reps]
         bdevs = [dict(devices[i], first=a) for a, i in enumerate(reps)]
         return (T, d, bdevs, [mass[i] for i in reps], [damp[i] for i in reps], [stiff[i] for i in reps], bops,
-                ("ss", realise_columns(tf, cols)), None)
-    EF = [[(E[f[a]][f[a]] + RF([Fraction(len(classes[a]) - 1)]) * E[f[a]][s[a]] if s[a] is not None else E[f[a]][f[a]])
-           if a == b else RF([Fraction(len(classes[b]))]) * E[f[a]][f[b]] for b in range(len(classes))] for a in range(len(classes))]
-    zero_sum = [block([f[a]], [[E[f[a]][f[a]] - E[f[a]][s[a]]]], [over[a]]) if s[a] is not None else None for a in range(len(classes))]
-    return block(f, EF, over), zero_sum, [len(c) for c in classes]
+                ("ss", realise_columns(*Es[k])), ("ss", realise_columns(*Vs[k])) if Vs is not None else None)
+    zero_sum = [block([f[a]], a + 1) if s[a] is not None else None for a in range(r)]
+    return block(f, 0), zero_sum, [len(c) for c in classes]
 
 
 def block_slot(blk, zero_sum, sizes, seen, where):

@@ -8,7 +8,8 @@ and damping b, an operator (none, a damper, a damper and a spring written as tf 
 per DOF), a wall K + B (z - 1)/(T z); between DOFs of classes a, b the link -u_a v_b; a delay of 0-2 samples; the
 environment's gain g drawn at 0.3-3 times a scale so that both verdicts occur. The reference: per DOF m v' = -(b
 + b_o) v - k_o x + u, x' = v (the operator's spring on the position: the conserved quantity set aside), held by
-scipy's expm (Van Loan); u_k = -(E x)_(k - n), E(z) = K0 - D1 z^-1; its spectral radius in double. Required: a
+scipy's expm (Van Loan); u_k = -(E x)_(k - n), E(z) = K0 - D1 z^-1 (with c["cv"], a coupling V = cv/z on every
+DOF, delay 0: x_e = x + V u, u_k = -(E x_e)_k: docs/scene.md's [coupling]); its spectral radius in double. Required: a
 verdict decided at least 1e-6 from rho = 1 by the reference is hapstab's, the certificate's kind
 stability-loop-symmetric with the claim's conserved = the number of springs, verified by both checkers (exit 0;
 the independent one within its 128 DOFs), and refuted by both with the claim flipped (a stable claim given w = e_1
@@ -87,7 +88,7 @@ gain = "g"
 
 [delay]
 samples = "%d"
-""" % (lists, c["g"], c["N"], c["N"], c["n"])
+""" % (lists, c["g"], c["N"], c["N"], c["n"]) + ('\n[coupling]\ndiagonal = "%r/z"\n' % c["cv"] if c.get("cv") else "")
 
 
 def reference_rho(c):
@@ -103,6 +104,17 @@ def reference_rho(c):
     C[np.arange(N), 2 * np.arange(N) + 1] = 1
     K0 = np.array([[g * (K[i] + B[i] / T) if i == j else -g * u[i] * v[j] for j in range(N)] for i in range(N)])
     D1 = np.diag([g * B[i] / T for i in range(N)])
+    if c.get("cv"):  # a coupling V = cv/z (delay 0): x_e = x + V u, u_k = -(E x_e)_k; state [s; q = x_e,(k-1); r = u_(k-1)]
+        assert n == 0, "the coupled reference has no delay"
+        cv = c["cv"]
+        # x_e,k = C s + cv r, u_k = -(K0 x_e,k - D1 q) = -K0 C s - cv K0 r + D1 q
+        U = np.hstack([-K0 @ C, D1, -cv * K0])
+        M = np.zeros((4 * N, 4 * N))
+        M[:2 * N, :2 * N] = Phi
+        M[:2 * N] += Gam @ U
+        M[2 * N:3 * N, :2 * N], M[2 * N:3 * N, 3 * N:] = C, cv * np.eye(N)
+        M[3 * N:] = U
+        return max(abs(np.linalg.eigvals(M)))
     # state [s; q = x_(k-1); w_(k-1) .. w_(k-n)], w = E x = K0 C s - D1 q, u_k = -w_(k-n)
     S = 2 * N + N + n * N
     M = np.zeros((S, S))

@@ -7,7 +7,8 @@ E = g (K0 - D1 z^-1), the delay's buffer), never from hapstab or its checkers.
 Scenes: N = 3-24 DOFs in 2-3 interleaved classes, the same draws as the certificate campaign (operators none,
 a damper or a damper and a spring; delays 0-2), the maximised parameter the environment's gain g, or (a quarter
 of the draws) Kx added inside every wall, diagonal "Kx + K[i] + B[i]*(z-1)/(T*z)" (Kx = 100 in the scene; the
-reference adds it to every class's K). The reference's supremum: the whole's
+reference adds it to every class's K); with no delay, in 40 % of those draws a coupling V = cv/z on every DOF
+(cv = 1/5000, 1/20000 or 1/100000; the reference: x_e = x + V u, u_k = -(E x_e)_k). The reference's supremum: the whole's
 spectral radius rho(g) in double on 400 points geometric in [g0 10^-4, g0 10^4] (g0 the drawn value; Kx: 100), the first
 point with rho >= 1 - 1e-12 bisected against the last below to 1e-13 relative: sup_ref; every point below it
 stable (rho < 1 - 1e-12) is what the grid can show. Required: hapstab's certified sup (exit 0) within 1e-6
@@ -119,7 +120,8 @@ def run_case(exe, c, tmp):
     if refused:
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     ref = reference_sup(c)
-    tag = "%s, N %d, %d classes, delay %d, springs %d" % (c["max"], c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]))
+    tag = "%s, N %d, %d classes, delay %d, springs %d%s" % (c["max"], c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]),
+                                                        ", coupling 1/%d z" % round(1 / c["cv"]) if c.get("cv") else "")
     if r.returncode == 3:
         return None, "undecided (sup_ref %s; %s)" % (ref, tag), "undecided"
     if r.returncode not in (0, 1):
@@ -140,7 +142,7 @@ def run_case(exe, c, tmp):
         return False, "hapstab: sup = %s, the reference's %.15g (%s)" % (j["max"], ref, tag), None
     if not path_ok:
         return False, "path %s, but the scene %s (%s)" % (j.get("path"), "splits" if splits(c) else "does not split", tag), None
-    branch = "%s: %s" % (c["max"], "split, %s block" % ("fixed" if j.get("deciding_block") == 0 else "zero-sum") if j.get("path") == "symmetry" else "whole")
+    branch = "%s%s: %s" % (c["max"], " coupled" if c.get("cv") else "", "split, %s block" % ("fixed" if j.get("deciding_block") == 0 else "zero-sum") if j.get("path") == "symmetry" else "whole")
     if refused:
         branch += ", certificate refused by name"
     elif j.get("path") == "symmetry":
@@ -159,6 +161,8 @@ def main(argv):
     def draw():
         c = ISC.draw(rng, (3, 24))
         c["max"] = "Kx" if rng.random() < 0.25 else "g"
+        if c["n"] == 0 and rng.random() < 0.4:  # a coupling V = cv/z on every DOF (split with E by both checkers)
+            c["cv"] = 1 / rng.choice([5000, 20000, 100000])
         return c
     counts, bad = run_cases(cases, draw, lambda c, tmp: run_case(exe, c, tmp), "hapstab-sym-max-")
     print("indep_symmetric_max: %d cases, %d disagree; %s; %d certificates verified, %d mutants each given its exit code by both" % (

@@ -21,8 +21,8 @@ const std::string kKind = "beyond stability-loop-symmetric";
 
 // What the split takes: one-DOF devices and operators, a tf environment, no coupling (header).
 void require_split_loop(const SL& L) {
-  if (L.V) throw InputError("model.scene: [coupling]: " + kKind + " (the split compares the environment only)");
   if (L.E.is_ss) throw InputError("model.scene: environment.ss: " + kKind + " (the split compares E's entries, a tf)");
+  if (L.V && L.V->is_ss) throw InputError("model.scene: coupling.ss: " + kKind + " (the split compares V's entries, a tf)");
   for (const auto& d : L.devices)
     if (d.dofs != 1) throw InputError("model.scene: device '" + d.name + "' on " + std::to_string(d.dofs) + " DOFs: " + kKind + " (one DOF each)");
   for (const auto& o : L.operators)
@@ -54,9 +54,15 @@ bool same_dof(const SL& L, int i, int j) {
   return true;
 }
 
-// The loop of the DOFs `reps` (their devices and operators, in the whole's order) under the tf matrix `tf`,
-// column j realised over over[j].
-SL block_loop(const SL& L, const std::vector<int>& reps, const std::vector<std::vector<RF>>& tf, const std::vector<P>& over) {
+// A block's environment or coupling: its tf matrix, column j to be realised over over[j].
+struct BlockTf {
+  std::vector<std::vector<RF>> tf;
+  std::vector<P> over;
+};
+
+// The loop of the DOFs `reps` (their devices and operators, in the whole's order) under E (and V: the scene's
+// coupling, split the same way).
+SL block_loop(const SL& L, const std::vector<int>& reps, const BlockTf& E, const std::optional<BlockTf>& V) {
   SL B;
   B.T = L.T;
   B.delay = L.delay;
@@ -75,11 +81,12 @@ SL block_loop(const SL& L, const std::vector<int>& reps, const std::vector<std::
       c.ports = {static_cast<int>(it - reps.begin())};
       B.operators.push_back(std::move(c));
     }
-  B.E = detail::column_realisation(tf, over);
+  B.E = detail::column_realisation(E.tf, E.over);
+  if (V) B.V = detail::column_realisation(V->tf, V->over);
   return B;
 }
 
-std::string dof_pair(int i, int j) { return "E[" + std::to_string(i + 1) + "][" + std::to_string(j + 1) + "]"; }
+std::string dof_pair(const char* M, int i, int j) { return std::string(M) + "[" + std::to_string(i + 1) + "][" + std::to_string(j + 1) + "]"; }
 
 }  // namespace
 
@@ -108,35 +115,51 @@ std::optional<detail::SymmetricSplit> detail::split_loop(const SceneLoop& L, con
         return std::nullopt;
       }
   }
-  const auto& E = L.E.tf;
-  for (size_t i = 0; i < N; ++i)
-    for (size_t j = 0; j < N; ++j) {
-      const int a = class_of[i], b = class_of[j];
-      const int ri = f[size_t(a)], rj = i == j ? ri : a == b ? s[size_t(a)] : f[size_t(b)];
-      if (!(E[i][j] == E[size_t(ri)][size_t(rj)])) {
-        why = "the environment is not invariant under the classes: " + dof_pair(int(i), int(j)) + " != " + dof_pair(ri, rj);
-        return std::nullopt;
+  // E (and V) invariant: every entry its class pattern's representative
+  const auto invariant = [&](const std::vector<std::vector<RF>>& G, const char* name) {
+    for (size_t i = 0; i < N; ++i)
+      for (size_t j = 0; j < N; ++j) {
+        const int a = class_of[i], b = class_of[j];
+        const int ri = f[size_t(a)], rj = i == j ? ri : a == b ? s[size_t(a)] : f[size_t(b)];
+        if (!(G[i][j] == G[size_t(ri)][size_t(rj)])) {
+          why = std::string("the ") + (name[0] == 'E' ? "environment" : "coupling") + " is not invariant under the classes: " +
+                dof_pair(name, int(i), int(j)) + " != " + dof_pair(name, ri, rj);
+          return false;
+        }
       }
+    return true;
+  };
+  if (!invariant(L.E.tf, "E") || (L.V && !invariant(L.V->tf, "V"))) return std::nullopt;
+  // per matrix G (E, V): column b's lcm -- its entries are G_{f_b f_b}, G_{f_b s_b} (a class of two or more) and
+  // G_{f_a f_b} (a != b) --, the fixed space's G_F[a][a] = G_{f_a f_a} + (k_a - 1) G_{f_a s_a}, G_F[a][b] = k_b
+  // G_{f_a f_b}, and class a's zero-sum G_{f_a f_a} - G_{f_a s_a}
+  const auto split = [&](const std::vector<std::vector<RF>>& G) {
+    std::vector<BlockTf> out(r + 1);  // [0]: the fixed space; [a + 1]: class a's zero-sum space
+    std::vector<P> over(r);
+    for (size_t b = 0; b < r; ++b) {
+      std::vector<std::vector<RF>> column;
+      for (size_t a = 0; a < r; ++a) column.push_back({G[size_t(f[a])][size_t(f[b])]});
+      if (s[b] >= 0) column.push_back({G[size_t(f[b])][size_t(s[b])]});
+      over[b] = column_lcms(column)[0];
     }
-  // column b's lcm: its entries are E_{f_b f_b}, E_{f_b s_b} (a class of two or more) and E_{f_a f_b} (a != b)
-  std::vector<P> over(r);
-  for (size_t b = 0; b < r; ++b) {
-    std::vector<std::vector<RF>> column;
-    for (size_t a = 0; a < r; ++a) column.push_back({E[size_t(f[a])][size_t(f[b])]});
-    if (s[b] >= 0) column.push_back({E[size_t(f[b])][size_t(s[b])]});
-    over[b] = column_lcms(column)[0];
-  }
+    out[0].tf.assign(r, std::vector<RF>(r, RF(0)));
+    out[0].over = over;
+    for (size_t a = 0; a < r; ++a)
+      for (size_t b = 0; b < r; ++b)
+        out[0].tf[a][b] = a == b ? G[size_t(f[a])][size_t(f[a])] + (s[a] >= 0 ? RF(rational(classes[a].size() - 1)) * G[size_t(f[a])][size_t(s[a])] : RF(0))
+                                 : RF(rational(classes[b].size())) * G[size_t(f[a])][size_t(f[b])];
+    for (size_t a = 0; a < r; ++a)
+      if (s[a] >= 0) out[a + 1] = {{{G[size_t(f[a])][size_t(f[a])] - G[size_t(f[a])][size_t(s[a])]}}, {over[a]}};
+    return out;
+  };
+  const std::vector<BlockTf> E = split(L.E.tf);
+  const std::optional<std::vector<BlockTf>> V = L.V ? std::optional<std::vector<BlockTf>>(split(L.V->tf)) : std::nullopt;
+  const auto v_of = [&](size_t k) { return V ? std::optional<BlockTf>((*V)[k]) : std::nullopt; };
   SymmetricSplit out;
-  std::vector<std::vector<RF>> EF(r, std::vector<RF>(r, RF(0)));
-  for (size_t a = 0; a < r; ++a)
-    for (size_t b = 0; b < r; ++b)
-      EF[a][b] = a == b ? E[size_t(f[a])][size_t(f[a])] + (s[a] >= 0 ? RF(rational(classes[a].size() - 1)) * E[size_t(f[a])][size_t(s[a])] : RF(0))
-                        : RF(rational(classes[b].size())) * E[size_t(f[a])][size_t(f[b])];
-  out.fixed = block_loop(L, f, EF, over);
+  out.fixed = block_loop(L, f, E[0], v_of(0));
   for (size_t a = 0; a < r; ++a) {
     out.sizes.push_back(classes[a].size());
-    out.zero_sum.push_back(s[a] < 0 ? SceneLoop{}
-                                    : block_loop(L, {f[a]}, {{E[size_t(f[a])][size_t(f[a])] - E[size_t(f[a])][size_t(s[a])]}}, {over[a]}));
+    out.zero_sum.push_back(s[a] < 0 ? SceneLoop{} : block_loop(L, {f[a]}, E[a + 1], v_of(a + 1)));
   }
   return out;
 }
@@ -147,7 +170,8 @@ std::vector<std::vector<int>> detail::identical_dofs(const SceneLoop& L) {
   for (size_t i = 0; i < L.dofs(); ++i) {
     const int d = static_cast<int>(i);
     auto it = std::find_if(classes.begin(), classes.end(), [&](const std::vector<int>& c) {
-      return same_dof(L, c[0], d) && L.E.tf[size_t(c[0])][size_t(c[0])] == L.E.tf[i][i];
+      return same_dof(L, c[0], d) && L.E.tf[size_t(c[0])][size_t(c[0])] == L.E.tf[i][i] &&
+             (!L.V || L.V->tf[size_t(c[0])][size_t(c[0])] == L.V->tf[i][i]);
     });
     if (it == classes.end())
       classes.push_back({d});
