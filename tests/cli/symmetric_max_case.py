@@ -18,7 +18,11 @@ a failure, not a timing). Required:
     reference_rho, the links -K/20 as u v with u = v = sqrt(K/20)), its certificate (a first-order start in each
     block) verified by both checkers with its hand edits, K squared in the diagonal refused by both (malformed:
     not affine); with the links -100 instead, NOT stable for every small K (the fixed space's stiffness K - 200):
-    sup K = 0, one block's certificate verified by both, its hand edits too.
+    sup K = 0, one block's certificate verified by both, its hand edits too;
+  * a coupling V = 1/(20000 z) on every DOF ([coupling], split with E by both checkers): 12 DOFs in two classes,
+    sup g against the coupled reference (x_e = x + V u, indep_symmetric_certificate.reference_rho), its certificate
+    verified by both; 70 DOFs at g = 1 and 4 (`stability --scene`, kind stability-loop-symmetric beyond 64 DOFs),
+    each verdict the reference's and its certificate verified by both.
 
   symmetric_max_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -199,6 +203,33 @@ def main():
                 json.dump(m, open(bad, "w"))
                 got = exits(bad)
                 expect("sup K = 0, %s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
+    with tempfile.TemporaryDirectory() as tmp:  # a coupling, split with E
+        for N, what in ((12, "max"), (70, "verdicts")):
+            c = {"N": N, "cls": [0, 1] * (N // 2), "n": 0, "g": 1.0, "cv": 1 / 20000, "classes": [
+                {"m": 0.1, "b": 1.0, "K": 2000, "B": 2.0, "bo": 0, "ko": 0, "u": 0.5, "v": 1.0},
+                {"m": 0.2, "b": 1.0, "K": 3000, "B": 3.0, "bo": 2, "ko": 50, "u": 1.0, "v": 0.5}]}
+            scene = os.path.join(tmp, "c%d.toml" % N)
+            open(scene, "w").write(ISC.scene(c))
+            if what == "max":
+                path = os.path.join(tmp, "cm.json")
+                r = subprocess.run([hapstab, "stability", "--scene", scene, "--max", "g", "--quiet", "--json", "--digits", "10", "--certificate", path],
+                                   capture_output=True, text=True, timeout=120)
+                j = json.loads(r.stdout) if r.returncode == 0 else {}
+                sup = float(j["sup_enclosure"][0]) if j else 1.0
+                rb, ra = ISC.reference_rho(dict(c, g=sup * (1 - 1e-6))), ISC.reference_rho(dict(c, g=sup * (1 + 1e-6)))
+                expect("coupled, 12 DOFs: sup g %s (path %s), the reference's rho %.9f below, %.9f above; the certificate %s" % (
+                    j.get("max"), j.get("path"), rb, ra, exits(path) if j else None),
+                    j.get("path") == "symmetry" and rb < 1 < ra and exits(path) == (0, 0))
+                continue
+            for g in (1.0, 4.0):
+                path = os.path.join(tmp, "cv%d.json" % g)
+                r = subprocess.run([hapstab, "stability", "--scene", scene, "--set", "g=%r" % g, "--quiet", "--certificate", path],
+                                   capture_output=True, text=True, timeout=120)
+                rho = ISC.reference_rho(dict(c, g=g))
+                kind = json.load(open(path))["kind"] if os.path.exists(path) else None
+                expect("coupled, 70 DOFs, g = %g: exit %d, the reference's rho %.6f; kind %s, the checkers %s" % (
+                    g, r.returncode, rho, kind, exits(path) if kind else None),
+                    r.returncode == (0 if rho < 1 else 1) and abs(rho - 1) > 1e-6 and kind == "stability-loop-symmetric" and exits(path) == (0, 0))
     print("symmetric_max_case: %d failed" % failures)
     return 1 if failures else 0
 

@@ -29,8 +29,8 @@
 // first_order, unstable_at}]. hi > 0: every block (the fixed one and one per class of two DOFs or more), each with
 // a cover exactly when lo > 0, exactly one with unstable_at (at hi), claim.conserved = k_F + sum_a (k_a - 1) k_a'.
 // hi = 0: one block, its unstable_at at 0, no cover; claim.conserved absent.
-// Refused by name (InputError): p the gain of [coupling] or named elsewhere, what stability-loop-symmetric refuses (a
-// [coupling], an ss environment, a block on more than one DOF), more than 256 DOFs, a block beyond stability-loop-
+// Refused by name (InputError): p the gain of [coupling] or named elsewhere, what stability-loop-symmetric refuses (an
+// ss environment or coupling, a block on more than one DOF), more than 256 DOFs, a block beyond stability-loop-
 // max's limits (order 160, 4096 intervals). A partition under which the scene is not invariant refutes the claim.
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once

@@ -29,7 +29,10 @@
 // (detail::stein_verdict). Stable: every block (the fixed one and one per class of two DOFs or more), each
 // stable, and claim.conserved = k_F + sum_a (k_a - 1) k_a'. NOT stable: one block, NOT stable (its eigenvalue
 // outside the circle is one of M's, multiplicity >= 1); claim.conserved absent.
-// Refused by name (InputError: beyond this kind): a [coupling], an ss environment, a device or an operator on
+// A [coupling] V (tf, since stop 76) is split the same way: V invariant under the classes (all N^2 entries), the
+// fixed space's V_F and each class's zero-sum V as E's, each column over the whole's column lcm of V (the loop
+// commutes with the permutations with V in it: the argument is unchanged).
+// Refused by name (InputError: beyond this kind): an ss coupling, an ss environment, a device or an operator on
 // more than one DOF, more than 256 DOFs. A partition under which the scene is not invariant refutes the
 // claim (exit 1, naming the first entry that differs).
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
