@@ -3652,29 +3652,30 @@ def slow_rows(l1, l2, Lq, at, right):
     return L
 
 
-def first_order_start(fo, loops, quotient, M1, M2, lo):
-    """(eps, "") when evidence.first_order {to = eps, P0, S} shows every M(p), 0 < p <= eps, Schur stable:
-    with L the slow rows (L M(0) = L exactly), K = L (M(2) - M(1)) and P(p) = P0 + L^T S L / p, the Stein
-    matrix is Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K, concave in p, > 0 at 0 and eps
-    (check/stability_loop_max_check.hpp); (None, what fails) otherwise."""
+def read_first_order(fo, where, keys, loops, quotient, n):
+    """The first-order form's parts {to = eps, P0, S} (and w where `keys` has it): (eps, P0, S, L), L the slow rows;
+    Malformed when malformed."""
     if not isinstance(fo, dict):
-        raise Malformed("evidence.first_order: not an object")
-    only(fo, ("to", "P0", "S"), "evidence.first_order")
+        raise Malformed(where + ": not an object")
+    only(fo, keys, where)
     L = slow_rows(*loops, *quotient)
     if not L:
-        raise Malformed("evidence.first_order: the loop has no position that nothing holds at p = 0")
-    eps = exact(fo, "to", "evidence.first_order")
-    if not 0 < eps <= lo:
-        raise Malformed("evidence.first_order.to: not in (0, claim.lo]")
-    n, k = len(M1), len(L)
-    P0 = symmetric_evidence({"P": fo.get("P0")}, "evidence.first_order", n)
-    S = frac_matrix(fo, "S", k, k, "evidence.first_order")
+        raise Malformed(where + ": the loop has no position that nothing holds at p = 0")
+    eps = exact(fo, "to", where)
+    k = len(L)
+    P0 = symmetric_evidence({"P": fo.get("P0")}, where, n)
+    S = frac_matrix(fo, "S", k, k, where)
     if any(S[i][j] != S[j][i] for i in range(k) for j in range(i)):
-        raise Malformed("evidence.first_order.S: not symmetric")
-    if not semidefinite(S, False):
-        return None, "evidence.first_order.S is not positive semidefinite"
+        raise Malformed(where + ".S: not symmetric")
+    return eps, P0, S, L
+
+
+def first_order_stein(eps, P0, S, L, M1, M2, where):
+    """P0 > 0 and Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K > 0 at 0 and eps, K = L (M(2) - M(1)):
+    concave in p (P0 > 0), so > 0 on [0, eps]. "" when shown, else what fails."""
+    n, k = len(M1), len(L)
     if not semidefinite(P0, True):
-        return None, "evidence.first_order.P0 is not positive definite"
+        return where + ".P0 is not positive definite"
     K = [[sum((Iv(L[r][i]) * (M2[i][j] - M1[i][j]) for i in range(n) if L[r][i]), Iv(0)) for j in range(n)] for r in range(k)]
     SK = [[sum((Iv(S[r][t]) * K[t][j] for t in range(k) if S[r][t]), Iv(0)) for j in range(n)] for r in range(k)]
     for e in (Fraction(0), eps):
@@ -3685,8 +3686,44 @@ def first_order_start(fo, loops, quotient, M1, M2, lo):
               - sum((SK[r][j] * Iv(L[r][i]) + SK[r][i] * Iv(L[r][j]) + Iv(e) * K[r][i] * SK[r][j] for r in range(k)), Iv(0))
               for j in range(n)] for i in range(n)]
         if not iv_positive_definite(Q):
-            return None, "evidence.first_order at p = %s: P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K not shown positive definite" % short(e)
-    return eps, ""
+            return "%s at p = %s: P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K not shown positive definite" % (where, short(e))
+    return ""
+
+
+def first_order_start(fo, loops, quotient, M1, M2, lo):
+    """(eps, "") when evidence.first_order {to = eps, P0, S} shows every M(p), 0 < p <= eps, Schur stable:
+    with L the slow rows (L M(0) = L exactly), K = L (M(2) - M(1)) and P(p) = P0 + L^T S L / p, the Stein
+    matrix is Q(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K, concave in p, > 0 at 0 and eps
+    (check/stability_loop_max_check.hpp); (None, what fails) otherwise."""
+    where = "evidence.first_order"
+    eps, P0, S, L = read_first_order(fo, where, ("to", "P0", "S"), loops, quotient, len(M1))
+    if not 0 < eps <= lo:
+        raise Malformed(where + ".to: not in (0, claim.lo]")
+    if not semidefinite(S, False):
+        return None, where + ".S is not positive semidefinite"
+    fails = first_order_stein(eps, P0, S, L, M1, M2, where)
+    return (None, fails) if fails else (eps, "")
+
+
+def first_order_unstable(fo, loops, quotient, M1, M2, where):
+    """The mirror, evidence.first_order_unstable {to = eps, P0, S, w}: with s = (L w)^T S (L w) < 0 and w^T P0 w + s / eps
+    < 0 (exactly), w^T P(p) w < 0 for every p in (0, eps], and Q(p) = P(p) - M^T P(p) M > 0 there (as the start's, S of
+    any sign): M(p) not Schur stable and no eigenvalue on the circle (Stein inertia), so NOT stable on (0, eps].
+    (True, "") shown; (False, why) refuted (an exact test); (None, why) a ball test failed."""
+    where += ".first_order_unstable"
+    n = len(M1)
+    eps, P0, S, L = read_first_order(fo, where, ("to", "P0", "S", "w"), loops, quotient, n)
+    if eps <= 0:
+        raise Malformed(where + ".to: not > 0")
+    w = frac_matrix({"w": [fo.get("w")]}, "w", 1, n, where)[0]
+    Lw = [sum(l[i] * w[i] for i in range(n)) for l in L]
+    s = sum(Lw[r] * S[r][t] * Lw[t] for r in range(len(L)) for t in range(len(L)))
+    if s >= 0:
+        return False, where + ": (L w)^T S (L w) >= 0"
+    if sum(w[i] * P0[i][j] * w[j] for i in range(n) for j in range(n)) + s / eps >= 0:
+        return False, where + ": w^T P0 w + (L w)^T S (L w) / eps >= 0"
+    fails = first_order_stein(eps, P0, S, L, M1, M2, where)
+    return (None, fails) if fails else (True, "")
 
 
 def sup_model(model, claim):
@@ -3721,7 +3758,7 @@ def check_stability_loop_max(c):
     plant = "scene" not in model  # the one-DOF --plant/--H loop (scene_loop_read)
     only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
-    only(evidence, ("cover", "unstable_at", "first_order"), "evidence")
+    only(evidence, ("cover", "unstable_at", "first_order", "first_order_unstable"), "evidence")
     if not isinstance(model.get("plant" if plant else "scene"), str):
         raise Malformed("model.scene (or model.plant): missing or not a string")
     p, sets, lo, hi, refuted = sup_model(model, claim)
@@ -3744,6 +3781,9 @@ def check_stability_loop_max(c):
     ok, why, n, bits = loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, "evidence")
     if not ok:
         return False, why if ok is False else "claim: sup %s in [%s, %s], but %s at 512 bits" % (p, short(lo), short(hi), why)
+    if hi == 0 and "first_order_unstable" in evidence:
+        return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) is NOT stable for every %s in (0, %s] (the first-order mirror, %d bits)" % (
+            p, p, p, p, n, p, short(exact(evidence["first_order_unstable"], "to", "evidence.first_order_unstable")), bits)
     if hi == 0:
         return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits%s)" % (
             p, p, p, p, n, p, bits, ", on ker L beside the slow modes" if "slow_quotient" in evidence["unstable_at"] else "")
@@ -3757,10 +3797,13 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
     read at p = 1, 2 (and hi: p inside the tf), at_p their loop_quotient's (C++ check_max_part): (True, "", n, bits)
     shown; (False, why, ...) refuted; (None, why, ...) not shown at 512 bits. unstable_at may be absent only where
     need_unstable is False (a block of stability-loop-max-symmetric that another block bounds)."""
-    has_un = "unstable_at" in evidence
+    has_un, outward = "unstable_at" in evidence, "first_order_unstable" in evidence
     un = evidence.get("unstable_at", {})
-    if (not has_un and need_unstable) or not isinstance(un, dict):
-        raise Malformed(where + ".unstable_at: missing or not an object (NOT stable at hi bounds sup p)")
+    if outward and (has_un or "first_order" in evidence or hi != 0):
+        raise Malformed(where + ".first_order_unstable: with claim.hi = 0 only, in place of unstable_at and first_order (sup = 0 "
+                        "by the first-order mirror)")
+    if (not has_un and not outward and need_unstable) or not isinstance(un, dict):
+        raise Malformed(where + ".unstable_at: missing or not an object (NOT stable at hi bounds sup p; or, sup = 0, first_order_unstable)")
     only(un, ("at", "P", "w", "slow_quotient"), where + ".unstable_at")
     if has_un and exact(un, "at", where + ".unstable_at") != hi:
         raise Malformed(where + ".unstable_at.at: not claim.hi")
@@ -3821,6 +3864,13 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
                 why = fails
                 continue
             start = eps
+        if outward:  # NOT stable on (0, eps]: the first-order mirror
+            shown, fails = first_order_unstable(evidence["first_order_unstable"], (l1, l2), (L1, a1, r1), M1, M2, where)
+            if shown is False:
+                return False, fails, n, bits
+            if shown is None:
+                why = fails
+                continue
         if has_un:  # NOT stable at hi (Stein inertia)
             Mu = M_at(hi)
             if on_ker:
@@ -3929,7 +3979,7 @@ def check_stability_loop_max_symmetric(c):
         where = "evidence.blocks[%d]" % (b + 1)
         if not isinstance(blk, dict):
             raise Malformed(where + ": not an object")
-        only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at"), where)
+        only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable"), where)
         slot, copies, kb = block_slot(blk, zero1, sizes, seen, where)
         loops = [sp[0] if slot is None else sp[1][slot] for sp in splits]
         at_p = [loop_quotient_of(loop) for loop in loops]
@@ -3938,7 +3988,7 @@ def check_stability_loop_max_symmetric(c):
             if any(len(q[5][0][0]) != order for q in at_p):
                 raise Malformed("%s: the block's realisation at %s = 1, 2 or %s is not of order %d (a pole cancelled there): beyond "
                                 "this kind" % (where, p, short(hi), order))
-        unstable += "unstable_at" in blk
+        unstable += "unstable_at" in blk or "first_order_unstable" in blk
         ok, why, n, bits = loop_max_part(at_p, blk, lo, hi, kb, p, "environment", inside, where, need_unstable=False)
         if ok is None:
             return False, "claim: sup %s in [%s, %s], but %s (%s): %s at 512 bits" % (p, short(lo), short(hi), where, blk["space"], why)
@@ -3946,9 +3996,10 @@ def check_stability_loop_max_symmetric(c):
             return False, "%s (%s): %s" % (where, blk["space"], why)
         total += copies * kb
         said.append("%s%s: %d states, %d intervals%s (%d bits)" % (blk["space"], "" if slot is None else " of class %d (x%d)" % (slot, copies),
-                                                                   n, len(blk.get("cover", [])), ", NOT stable at hi" if "unstable_at" in blk else "", bits))
+                                                                   n, len(blk.get("cover", [])), ", NOT stable at hi" if "unstable_at" in blk else
+                                                                   ", NOT stable on (0, eps] (first-order mirror)" if "first_order_unstable" in blk else "", bits))
     if unstable != 1:
-        raise Malformed("evidence.blocks: %d with unstable_at; exactly one block bounds sup from above" % unstable)
+        raise Malformed("evidence.blocks: %d with unstable_at or first_order_unstable; exactly one block bounds sup from above" % unstable)
     if hi != 0 and total != k:
         return False, "claim: %d conserved quantities, but the blocks have %d (k_F + sum_a (k_a - 1) k_a')" % (k, total)
     head = "by the split of %d DOFs into %d classes of identical DOFs (invariance checked exactly at %s = 1 and 2; %s %s)" % (

@@ -3,7 +3,8 @@ for `stability --scene S --max NAME`, both checkers verify it, and each hand edi
 code it must from both (1 refuted: the evidence does not prove the edited claim; 2 malformed: the model
 is beyond the kind). The ctests certificate_loop_max* run it on tests/cli/scenes/loop_max_held_devices.toml (the
 environment's gain), integrator_devices_2dof.toml (the first-order start), loop_max_wall_stiffness.toml (the
-parameter inside the wall's tf) and loop_max_free_wall_stiffness.toml (both).
+parameter inside the wall's tf), loop_max_free_wall_stiffness.toml (both) and loop_max_zero_outward.toml (sup = 0 by
+the first-order mirror).
 
   loop_max_case.py HAPSTAB SCENE NAME
   loop_max_case.py HAPSTAB plant NAME --plant P --H H --T T [--delay n]   (the one-DOF loop, a device pole off s = 0)
@@ -46,11 +47,36 @@ def run_cases(hapstab, cases, tmp):
     return failures
 
 
+def outward_mutants(cert, at, name):
+    """Hand edits of sup = 0 by the first-order mirror (evidence.first_order_unstable {to, P0, S, w} at the path `at`:
+    ["evidence"], or a stability-loop-max-symmetric block's): refuted (1) -- w zero or S negated ((L w)^T S (L w) >= 0),
+    eps 10^6 times as large (w^T P(eps) w or Q(eps) fails), P0[0][0] negated (P0 not positive definite); malformed (2) --
+    the mirror dropped, given beside unstable_at, eps 0, w one entry short, a cover added, hi raised to 1."""
+    fo = cert
+    for key in at + ["first_order_unstable"]:
+        fo = fo[key]
+    where = at + ["first_order_unstable"]
+    p0 = fo["P0"][0][0]
+    return [("unmutated", cert, 0),
+            ("the mirror's w zero", with_field(cert, where + ["w"], ["0"] * len(fo["w"])), 1),
+            ("the mirror's S negated", with_field(cert, where + ["S"], [[str(-Fraction(v)) for v in row] for row in fo["S"]]), 1),
+            ("the mirror's eps 10^6 times as large", with_field(cert, where + ["to"], str(Fraction(fo["to"]) * 10 ** 6)), 1),
+            ("the mirror's P0[0][0] negated", with_field(cert, where + ["P0", 0, 0], p0[1:] if p0.startswith("-") else "-" + p0), 1),
+            ("the mirror dropped", deleted(cert, where), 2),
+            ("the mirror beside an unstable_at", with_field(cert, at + ["unstable_at"], {"at": "0", "P": fo["P0"], "w": fo["w"]}), 2),
+            ("the mirror's eps 0", with_field(cert, where + ["to"], "0"), 2),
+            ("the mirror's w one entry short", with_field(cert, where + ["w"], fo["w"][:-1]), 2),
+            ("a cover of [0, 1] added", with_field(cert, at + ["cover"], [{"to": "1", "P": fo["P0"]}]), 2),
+            ("the parameter given a value", with_field(cert, ["model", "set"], {name: "1"}), 2)]
+
+
 def mutants(cert, name):
     """(what, edited certificate, the exit code both checkers must give, None: rejected) for a stability-loop-max
     certificate of a supremum (claim.hi > 0, a cover): the claim moved where the evidence cannot prove
     it (refuted) and the model moved beyond the kind (malformed)."""
     claim = cert["claim"]
+    if Fraction(claim["hi"]) == 0 and "first_order_unstable" in cert["evidence"]:
+        return outward_mutants(cert, ["evidence"], name)
     if Fraction(claim["hi"]) == 0:  # sup = 0: Stein inertia at M(0) (on ker L beside slow modes)
         un = cert["evidence"]["unstable_at"]
         P00 = un["P"][0][0]

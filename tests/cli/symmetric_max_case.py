@@ -18,7 +18,9 @@ a failure, not a timing). Required:
     reference_rho, the links -K/20 as u v with u = v = sqrt(K/20)), its certificate (a first-order start in each
     block) verified by both checkers with its hand edits, K squared in the diagonal refused by both (malformed:
     not affine); with the links -100 instead, NOT stable for every small K (the fixed space's stiffness K - 200):
-    sup K = 0, one block's certificate verified by both, its hand edits too;
+    sup K = 0, one block's certificate verified by both, its hand edits too; three devices on walls whose links push
+    them apart (+2000): sup g = 0 by the zero-sum block's first-order mirror (NOT stable on (0, eps]: the whole loop's
+    rho > 1 in numpy at eps 10^-3, 10^-1 and eps), its certificate verified by both with its hand edits;
   * a coupling V = 1/(20000 z) on every DOF ([coupling], split with E by both checkers): 12 DOFs in two classes,
     sup g against the coupled reference (x_e = x + V u, indep_symmetric_certificate.reference_rho), its certificate
     verified by both; 70 DOFs at g = 1 and 4 (`stability --scene`, kind stability-loop-symmetric beyond 64 DOFs),
@@ -41,6 +43,7 @@ SCENE = os.path.join(HERE, "scenes", "symmetric_held_96.toml")
 INDEPENDENT = os.path.join(TOP, "checks", "hapstab_check.py")
 sys.path.insert(0, os.path.join(TOP, "tests", "check"))
 from symmetric_loop_case import reference_rho  # noqa: E402
+from loop_max_case import outward_mutants  # noqa: E402
 sys.path.insert(0, os.path.join(TOP, "tests", "verify"))
 import indep_symmetric_certificate as ISC  # noqa: E402
 SCENE_K = os.path.join(HERE, "scenes", "symmetric_three_walls_k.toml")
@@ -58,15 +61,16 @@ def max_mutants(c):
     refuted (1) -- the classes merged or a DOF swapped between them (not invariant), a cover P negated, unstable_at's
     w zero, a conserved count moved (claim or block), a block's first-order start dropped; malformed (2) -- a block dropped or given twice, unstable_at
     taken away, a DOF beyond the scene or left out, a cover's last interval not ending at lo, the gain made 2 g
-    (not the gain alone; where p is the gain). (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
+    (not the gain alone; where p is the gain); on a deciding block with first_order_unstable (sup = 0 by the mirror)
+    loop_max_case.outward_mutants' edits of it. (tests/verify/indep_symmetric_max.py runs them on its random scenes.)"""
     def edit(f):
         e = json.loads(json.dumps(c))
         f(e)
         return e
     ev = c["evidence"]
     classes, blocks = ev["classes"], ev["blocks"]
-    d = next(i for i, b in enumerate(blocks) if "unstable_at" in b)
-    out = []
+    d = next(i for i, b in enumerate(blocks) if "unstable_at" in b or "first_order_unstable" in b)
+    out = outward_mutants(c, ["evidence", "blocks", d], c["model"]["name"])[1:] if "first_order_unstable" in blocks[d] else []
     if len(classes) >= 2:
         out += [("the first two classes merged", edit(lambda e: e["evidence"].update(classes=[classes[0] + classes[1]] + classes[2:])), 1),
                 ("a DOF swapped between the first two classes", edit(lambda e: e["evidence"].update(
@@ -74,9 +78,11 @@ def max_mutants(c):
     out += [("a DOF index 2^32 + 1", edit(lambda e: e["evidence"]["classes"][0].__setitem__(0, 2 ** 32 + 1)), 2),
             ("a DOF left out of the classes", edit(lambda e: e["evidence"]["classes"][-1].pop() if len(classes[-1]) > 1
                                                    else e["evidence"]["classes"].pop()), 2),
-            ("unstable_at's w zero", edit(lambda e: e["evidence"]["blocks"][d]["unstable_at"].update(
-                w=["0"] * len(blocks[d]["unstable_at"]["w"]))), 1),
-            ("unstable_at taken away", edit(lambda e: e["evidence"]["blocks"][d].pop("unstable_at")), 2)]
+            ]
+    if "unstable_at" in blocks[d]:
+        out += [("unstable_at's w zero", edit(lambda e: e["evidence"]["blocks"][d]["unstable_at"].update(
+                    w=["0"] * len(blocks[d]["unstable_at"]["w"]))), 1),
+                ("unstable_at taken away", edit(lambda e: e["evidence"]["blocks"][d].pop("unstable_at")), 2)]
     gain = 'gain = "%s"' % c["model"]["name"]
     if gain in c["model"]["scene"]:  # p the environment's gain (not inside its tf)
         out.append(("the gain made 2 g", edit(lambda e: e["model"].update(scene=c["model"]["scene"].replace(gain, 'gain = "2*%s"' % c["model"]["name"]))), 2))
@@ -203,6 +209,29 @@ def main():
                 json.dump(m, open(bad, "w"))
                 got = exits(bad)
                 expect("sup K = 0, %s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
+    with tempfile.TemporaryDirectory() as tmp:  # sup = 0 by a zero-sum block's first-order mirror
+        s = 2000 ** 0.5  # links +2000 (u v = -2000): the zero-sum stiffness 1000 - 2000 < 0, the fixed one 5000
+        c = {"N": 3, "cls": [0, 0, 0], "n": 0, "g": 1.0, "classes": [{"m": 0.5, "b": 1.0, "K": 1000, "B": 2.0, "bo": 0, "ko": 0, "u": s, "v": -s}]}
+        scene, path = os.path.join(tmp, "out.toml"), os.path.join(tmp, "o.json")
+        open(scene, "w").write(ISC.scene(c))
+        r = run("--json", "--certificate", path, scene=scene)
+        j = json.loads(r.stdout) if r.stdout.strip() else {}
+        cert = json.load(open(path)) if os.path.exists(path) else {}
+        eps = float(j.get("unstable_on", [0, 0])[1])
+        rhos = [ISC.reference_rho(dict(c, g=g)) for g in eps * np.array([1e-3, 0.1, 1.0])]
+        blocks = cert.get("evidence", {}).get("blocks", [])
+        expect("links pushing apart: exit %d (want 1), sup %s, path %s, unstable on (0, %s]; the reference's rho at eps 1e-3, 0.1, 1: %s" % (
+            r.returncode, j.get("max"), j.get("path"), eps, ["%.9f" % x for x in rhos]),
+            r.returncode == 1 and j.get("max") == "0" and j.get("path") == "symmetry" and eps > 0 and min(rhos) > 1)
+        expect("links pushing apart: the certificate's block %s with first_order_unstable, both checkers %s" % (
+            [b.get("space") for b in blocks], exits(path) if cert else None),
+            len(blocks) == 1 and "first_order_unstable" in blocks[0] and exits(path) == (0, 0))
+        if cert:
+            for what, m, code in max_mutants(cert):
+                bad = os.path.join(tmp, "m.json")
+                json.dump(m, open(bad, "w"))
+                got = exits(bad)
+                expect("links pushing apart, %s: exits %s (want %d from both)" % (what, got, code), got == (code, code))
     with tempfile.TemporaryDirectory() as tmp:  # a coupling, split with E
         for N, what in ((12, "max"), (70, "verdicts")):
             c = {"N": N, "cls": [0, 1] * (N // 2), "n": 0, "g": 1.0, "cv": 1 / 20000, "classes": [

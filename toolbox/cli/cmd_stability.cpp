@@ -174,8 +174,8 @@ nlohmann::json max_json(const stability::MaxGain& m, const StabilityOpts& o, con
 // What the certificate proves, printed beside the answer.
 std::string certificate_line(const StabilityOpts& o, const nlohmann::json& certified, bool open_at_zero) {
   if (certified[1] == "0")
-    return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle as " + o.max_name +
-           " -> 0; verified before it was written)\n";
+    return "  certificate " + o.certificate + ": sup " + o.max_name + " = 0 (an eigenvalue outside the circle for every small " + o.max_name +
+           " > 0; verified before it was written)\n";
   return "  certificate " + o.certificate + ": sup " + o.max_name + " in [" + certified[0].get<std::string>() + ", " +
          certified[1].get<std::string>() + "] (stable on " + (open_at_zero ? "(0" : "[0") +
          ", lo], NOT stable at hi; verified before it was written)\n";
@@ -520,9 +520,10 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
     // an undecided supremum writes no certificate and keeps its exit code 3 (docs/certificates.md)
     const nlohmann::json certified =
         o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, m, split.has_value());
-    if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), or M(0) unstable (certified): sup = 0
+    if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), M(0) unstable or the first-order mirror (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
            {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
+      if (m.first_order_to > 0) j["unstable_on"] = {"0", decimal_outward(m.first_order_to, 17, -1)};  // (0, eps], rounded inward
       if (split) add_split_json(j, *split);
       text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";
       rc = cli::exit_property_fails;

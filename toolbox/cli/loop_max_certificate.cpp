@@ -131,14 +131,38 @@ std::optional<Mat> common_stein(const BallRows& Ma, const BallRows& Mb) {
   return std::nullopt;
 }
 
+// evidence.first_order_unstable from the SDP's P0, S (double): w from S's least eigenvector, eps lowered where w^T P(eps) w
+// is not < 0, each rounding checked by the checker's own test; nullopt when none passes.
+std::optional<nlohmann::json> first_order_unstable_json(const Eigen::MatrixXd& P0, const Eigen::MatrixXd& Sd, const Eigen::MatrixXd& Ld,
+                                                        const Mat& L, const rational& eps, const check::detail::LoopMatrix& m1,
+                                                        const check::detail::LoopMatrix& m2) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Sd);
+  if (es.info() != Eigen::Success || !(es.eigenvalues()(0) < 0)) return std::nullopt;
+  const Eigen::VectorXd wd = Ld.transpose() * (Ld * Ld.transpose()).ldlt().solve(es.eigenvectors().col(0));
+  if (!wd.allFinite()) return std::nullopt;
+  const double s = wd.dot(Ld.transpose() * Sd * Ld * wd), q = wd.dot(P0 * wd);
+  rational e = eps;
+  if (s < 0 && q > 0 && q + s / eps.convert_to<double>() >= 0) e = rational(0.5 * (-s / q));
+  for (const int bits : {24, 53}) {
+    const Mat w = rounded(Eigen::MatrixXd(wd.transpose()), 53);
+    nlohmann::json fo{{"to", e.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}, {"w", rows(w)[0]}};
+    bool refuted = false;
+    if (check::detail::first_order_unstable(fo, m1, m2, L, "evidence", refuted).empty()) return fo;
+  }
+  return std::nullopt;
+}
+
 // The first-order start on (0, eps] (check/stability_loop_max_check.hpp): P0, S from an SDP in M(eps)'s
 // balanced coordinates (x = D y: P0 = D^-1 P0_b D^-1, L_b = C L D, K_b = C K D, S = C S_b C, C scaling each
 // slow row to unit length), P0 >= I, 0 <= S_b, both <= 10^8,
 // Q(0) > 0 and Q(eps) > 0 with Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K, the margin
 // maximised; the dyadic rounding checked by the checker's own test. nullopt when none passes.
+// outward: the mirror (first_order_unstable): S free (|S_b| <= 10^8), which Q(0) > 0 then makes indefinite, and w with
+// L w the eigenvector of S's least eigenvalue (w = L^T (L L^T)^-1 u); eps lowered to half of -s / w^T P0 w (s = (L w)^T S
+// (L w) < 0) where needed, Q staying > 0 on [0, eps] (concave).
 std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const BallRows& M2, const Mat& L, const rational& eps,
                                                 const check::detail::LoopMatrix& m1, const check::detail::LoopMatrix& m2,
-                                                const rational& lo) {
+                                                const rational& lo, bool outward = false) {
   const Eigen::MatrixXd A0 = midpoints(loop_at(M1, M2, rational(0))), Ae = midpoints(loop_at(M1, M2, eps));
   const Eigen::MatrixXd dM = midpoints(M2) - midpoints(M1);
   const int n = static_cast<int>(A0.rows()), k = static_cast<int>(L.size());
@@ -160,7 +184,8 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   const lmi::MatrixVariable P = prog.new_symmetric(n, "P0"), S = prog.new_symmetric(k, "S");
   prog.add_lmi("P0 >= I", lmi::Expr(P) - lmi::Expr(In), lmi::Strictness::nonstrict);
   prog.add_lmi("P0 <= 10^8 I", lmi::Expr(Eigen::MatrixXd(1e8 * In)) - lmi::Expr(P), lmi::Strictness::nonstrict);
-  prog.add_lmi("S >= 0", lmi::Expr(S), lmi::Strictness::nonstrict);
+  if (outward) prog.add_lmi("S >= -10^8 I", lmi::Expr(S) + lmi::Expr(Eigen::MatrixXd(1e8 * Ik)), lmi::Strictness::nonstrict);
+  else prog.add_lmi("S >= 0", lmi::Expr(S), lmi::Strictness::nonstrict);
   prog.add_lmi("S <= 10^8 I", lmi::Expr(Eigen::MatrixXd(1e8 * Ik)) - lmi::Expr(S), lmi::Strictness::nonstrict);
   const lmi::Expr cross = Eigen::MatrixXd(Kb.transpose()) * lmi::Expr(S) * Lb + Eigen::MatrixXd(Lb.transpose()) * lmi::Expr(S) * Kb;
   const lmi::Expr ksk = Eigen::MatrixXd(Kb.transpose()) * lmi::Expr(S) * Kb;
@@ -170,6 +195,7 @@ std::optional<nlohmann::json> first_order_evidence(const BallRows& M1, const Bal
   if (!r) return std::nullopt;
   Eigen::MatrixXd P0 = Di * r->solution(P) * Di;
   const Eigen::MatrixXd Sd = C * r->solution(S) * C;
+  if (outward) return first_order_unstable_json(P0, Sd, Ld, L, eps, m1, m2);
   for (const int bits : {24, 53}) {
     nlohmann::json fo{{"to", eps.str()}, {"P0", rows(rounded(P0, bits))}, {"S", rows(rounded(Sd, bits))}};
     rational from = 0;
@@ -273,6 +299,22 @@ std::string unstable_evidence(const BallRows& M1, const BallRows& M2, const std:
   evidence["unstable_at"] = {{"at", hi.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
   if (on_ker) evidence["unstable_at"]["slow_quotient"] = true;
   return "";
+}
+
+// sup = 0: evidence.unstable_at at 0 (Stein inertia on M(0), or on ker L beside the slow modes), else, beside slow modes,
+// first_order_unstable on (0, eps] (eps the producer's own mirror's end, first_order_to, else 4^-j; then 4^-j of it); ""
+// when written into `evidence`, else why not.
+std::string zero_evidence(const BallRows& M1, const BallRows& M2, const check::detail::LoopMatrix& m1, const check::detail::LoopMatrix& m2,
+                          const std::string& name, const Mat& L, const rational& first_order_to, nlohmann::json& evidence) {
+  const std::string why = unstable_evidence(M1, M2, name, 0, L, evidence);
+  if (why.empty() || L.empty()) return why;
+  rational eps = first_order_to > 0 ? first_order_to : rational(1);
+  for (int j = 0; j < 24; ++j, eps /= 4)
+    if (const auto fo = first_order_evidence(M1, M2, L, eps, m1, m2, eps, true)) {
+      evidence["first_order_unstable"] = *fo;
+      return "";
+    }
+  return why + "; nor a first-order mirror (no P0, S, w found showing (0, eps] NOT stable)";
 }
 
 // unstable_at at hi (its Stein inertia) where `unstable`, then the cover of [start, lo].
@@ -389,6 +431,11 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
       return std::nullopt;
     }
   }
+  if (hi == 0 && unstable) {  // sup = 0 (lo = 0: no cover)
+    nlohmann::json ev = nlohmann::json::object();
+    why = zero_evidence(lp.m1.M, lp.m2.M, lp.m1, lp.m2, name, L, first_order_to, ev);
+    return why.empty() ? std::optional<nlohmann::json>(ev) : std::nullopt;
+  }
   const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
   Attempt a = evidence_for(lp.m1.M, lp.m2.M, name, lo, hi, from, L, unstable);
   if (!a.why.empty()) {
@@ -474,7 +521,9 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
     for (size_t b = 0; b < blocks.size() && !deciding; ++b) {
       flint::BallPrecision scope(kBits);
       const Mat L = !blocks[b].m1.right_quotient ? check::detail::slow_rows(blocks[b].loop1, blocks[b].loop2, blocks[b].m1) : Mat{};
-      if (unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un).empty()) deciding = b;
+      const std::string no = hi == 0 ? zero_evidence(blocks[b].m1.M, blocks[b].m2.M, blocks[b].m1, blocks[b].m2, name, L, m.first_order_to, un)
+                                     : unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un);
+      if (no.empty()) deciding = b;
     }
     if (!deciding) {
       why = "no block with a Stein inertia certificate that " + name + " = " + phi + " is NOT stable";
@@ -494,7 +543,8 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
       nlohmann::json blk = labels[b];
       if (blocks[b].m1.conserved > 0) blk["conserved"] = blocks[b].m1.conserved;
       for (auto& [k, v] : ev->items()) blk[k] = v;
-      if (b == *deciding) blk["unstable_at"] = un["unstable_at"];
+      if (b == *deciding)
+        for (auto& [key, v] : un.items()) blk[key] = v;  // unstable_at, or first_order_unstable (sup = 0)
       evidence["blocks"].push_back(blk);
       total += copies[b] * static_cast<long>(blocks[b].m1.conserved);
     }

@@ -219,25 +219,34 @@ rational from0(const nlohmann::json& evidence) { return detail::exact_field(evid
 // M(1)); with P(p) = P0 + L^T S L / p (P0 > 0, S >= 0: P(p) > 0 for p > 0) the Stein matrix is, exactly,
 //   Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K,
 // concave in p; > 0 at 0 and at eps makes it > 0 on [0, eps], so every M(p), 0 < p <= eps, is Schur
-// stable. "" when shown (`from` := eps), else what fails.
-}  // namespace
+// stable (first_order_start); with S of any sign and w^T P(p) w < 0 on (0, eps], none is (first_order_unstable,
+// Stein inertia).
 
-std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix& m1, const LoopMatrix& m2, const Mat& L,
-                                      const rational& lo, rational& from) {
-  if (!fo.is_object()) throw InputError("evidence.first_order: not an object");
-  detail::only_fields(fo, {"to", "P0", "S"}, "evidence.first_order");
-  if (L.empty()) throw InputError("evidence.first_order: the loop has no position that nothing holds at p = 0 (no slow mode to start from)");
-  const rational eps = detail::exact_field(fo, "to", "evidence.first_order");
-  if (eps <= 0 || eps > lo) throw InputError("evidence.first_order.to: not in (0, claim.lo]");
-  const size_t n = m1.M.size(), k = L.size();
+// The first-order form's parts {to = eps, P0, S} (and w where `keys` has it), read and shaped (InputError when
+// malformed): P0 symmetric of M's order, S symmetric of the slow rows' count k.
+struct FirstOrder {
+  rational eps;
+  Mat P0, S;
+};
+FirstOrder read_first_order(const nlohmann::json& fo, const std::string& where, std::initializer_list<const char*> keys, const Mat& L, size_t n) {
+  if (!fo.is_object()) throw InputError(where + ": not an object");
+  detail::only_fields(fo, keys, where);
+  if (L.empty()) throw InputError(where + ": the loop has no position that nothing holds at p = 0 (no slow mode to start from)");
   if (L[0].size() != n) throw NumericalError("the slow modes' rows are not of M's order (a checker defect)");
-  const Mat P0 = symmetric_P(fo, "evidence.first_order", n, "P0");
-  const Mat S = detail::exact_matrix(fo, "S", "evidence.first_order", k);
-  if (S.size() != k || S[0].size() != k || !rational_matrix::symmetric(S))
-    throw InputError("evidence.first_order.S: not symmetric of order " + std::to_string(k) + " (the slow modes)");
-  if (!rational_matrix::positive_definite(S, false)) return "evidence.first_order.S is not positive semidefinite";
+  FirstOrder out{detail::exact_field(fo, "to", where), symmetric_P(fo, where, n, "P0"), detail::exact_matrix(fo, "S", where, L.size())};
+  if (out.S.size() != L.size() || out.S[0].size() != L.size() || !rational_matrix::symmetric(out.S))
+    throw InputError(where + ".S: not symmetric of order " + std::to_string(L.size()) + " (the slow modes)");
+  return out;
+}
+
+// P0 > 0 and Q(p) = P0 - M(p)^T P0 M(p) - (K^T S L + L^T S K) - p K^T S K > 0 at p = 0 and eps (balls), K = L (M(2) -
+// M(1)): with P0 > 0, v^T Q(p) v is concave in p, so Q > 0 on [0, eps]. "" when shown, else what fails.
+std::string first_order_stein(const FirstOrder& f, const detail::LoopMatrix& m1, const detail::LoopMatrix& m2, const Mat& L,
+                              const std::string& where) {
+  const size_t n = m1.M.size(), k = L.size();
+  const Mat& P0 = f.P0;
   const bool pd = n <= 24 ? rational_matrix::positive_definite(P0, true) : detail::positive_definite_within(P0, rational(0));
-  if (!pd) return "evidence.first_order.P0 is not shown positive definite";
+  if (!pd) return where + ".P0 is not shown positive definite";
   // K = L (M(2) - M(1)) and the p-independent part -(K^T S L + L^T S K), in balls
   BallRows K(k, std::vector<flint::Ball>(n, flint::Ball(0L)));
   for (size_t r = 0; r < k; ++r)
@@ -247,8 +256,8 @@ std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix
   BallRows SK(k, std::vector<flint::Ball>(n, flint::Ball(0L)));
   for (size_t r = 0; r < k; ++r)
     for (size_t j = 0; j < n; ++j)
-      for (size_t t = 0; t < k; ++t) SK[r][j] += flint::Ball(S[r][t]) * K[t][j];
-  for (const rational& e : {rational(0), eps}) {
+      for (size_t t = 0; t < k; ++t) SK[r][j] += flint::Ball(f.S[r][t]) * K[t][j];
+  for (const rational& e : {rational(0), f.eps}) {
     const BallRows M = detail::affine_loop_at(m1.M, m2.M, e);
     BallRows PM(n, std::vector<flint::Ball>(n, flint::Ball(0L))), Q = PM;
     for (size_t a = 0; a < n; ++a)
@@ -267,10 +276,46 @@ std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix
       }
     std::string why;
     if (!detail::ball_positive_definite(Q, why))
-      return "evidence.first_order at p = " + e.str() + ": P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K " + why;
+      return where + " at p = " + e.str() + ": P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K " + why;
   }
-  from = eps;
   return "";
+}
+
+}  // namespace
+
+std::string detail::first_order_start(const nlohmann::json& fo, const LoopMatrix& m1, const LoopMatrix& m2, const Mat& L,
+                                      const rational& lo, rational& from) {
+  const std::string where = "evidence.first_order";
+  const FirstOrder f = read_first_order(fo, where, {"to", "P0", "S"}, L, m1.M.size());
+  if (f.eps <= 0 || f.eps > lo) throw InputError(where + ".to: not in (0, claim.lo]");
+  if (!rational_matrix::positive_definite(f.S, false)) return where + ".S is not positive semidefinite";
+  if (std::string why = first_order_stein(f, m1, m2, L, where); !why.empty()) return why;
+  from = f.eps;
+  return "";
+}
+
+std::string detail::first_order_unstable(const nlohmann::json& fo, const LoopMatrix& m1, const LoopMatrix& m2, const Mat& L, const std::string& at,
+                                         bool& refuted) {
+  const std::string where = at + ".first_order_unstable";
+  const size_t n = m1.M.size();
+  const FirstOrder f = read_first_order(fo, where, {"to", "P0", "S", "w"}, L, n);
+  if (f.eps <= 0) throw InputError(where + ".to: not > 0");
+  const Mat w = detail::exact_matrix(nlohmann::json{{"w", nlohmann::json::array({fo.contains("w") ? fo.at("w") : nlohmann::json()})}}, "w", where, n);
+  if (w[0].size() != n) throw InputError(where + ".w: not of M's order (" + std::to_string(n) + ")");
+  // s = (L w)^T S (L w) < 0 and w^T P0 w + s / eps < 0, exactly: w^T P(p) w = w^T P0 w + s / p <= that for p <= eps
+  std::vector<rational> Lw(L.size(), rational(0));
+  for (size_t r = 0; r < L.size(); ++r)
+    for (size_t i = 0; i < n; ++i) Lw[r] += L[r][i] * w[0][i];
+  rational s = 0, q = 0;
+  for (size_t r = 0; r < L.size(); ++r)
+    for (size_t t = 0; t < L.size(); ++t) s += Lw[r] * f.S[r][t] * Lw[t];
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) q += w[0][i] * f.P0[i][j] * w[0][j];
+  refuted = true;
+  if (s >= 0) return where + ": (L w)^T S (L w) = " + detail::decimal(s) + " >= 0";
+  if (q + s / f.eps >= 0) return where + ": w^T P0 w + (L w)^T S (L w) / eps = " + detail::decimal(rational(q + s / f.eps)) + " >= 0";
+  refuted = false;
+  return first_order_stein(f, m1, m2, L, where);
 }
 
 void detail::require_loop_max_order(size_t order) {
@@ -345,8 +390,12 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
                                        const std::string& at, bool need_unstable) {
   const std::string& block = r.block;
   // the evidence's shape first (malformed before anything is computed)
-  if (!ev.contains("unstable_at") && need_unstable) throw InputError(at + ".unstable_at: missing (NOT stable at hi bounds sup p)");
-  const bool has_unstable = ev.contains("unstable_at");
+  const bool has_unstable = ev.contains("unstable_at"), outward = ev.contains("first_order_unstable");
+  if (outward && (has_unstable || ev.contains("first_order") || !c.hi.is_zero()))
+    throw InputError(at + ".first_order_unstable: with claim.hi = 0 only, in place of unstable_at and first_order (sup = 0 by the "
+                          "first-order mirror)");
+  if (!has_unstable && !outward && need_unstable)
+    throw InputError(at + ".unstable_at: missing (NOT stable at hi bounds sup p; or, sup = 0, first_order_unstable)");
   const nlohmann::json none = nlohmann::json::object();
   const nlohmann::json& un = has_unstable ? detail::object_field(ev, "unstable_at", at) : none;
   detail::only_fields(un, {"at", "P", "w", "slow_quotient"}, at + ".unstable_at");
@@ -392,6 +441,13 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
         out.why = fw;
         continue;
       }
+    }
+    // NOT stable on (0, eps] by the first-order mirror (header)
+    if (outward) {
+      bool refuted = false;
+      out.why = detail::first_order_unstable(ev.at("first_order_unstable"), m1, m2, detail::slow_rows(L1, L2, m1), at, refuted);
+      if (refuted) return {false, out.why};
+      if (!out.why.empty()) continue;
     }
     // NOT stable at hi (or, hi = 0, at the limit M(0); slow_quotient: M(0) on ker L, L the slow rows (header))
     if (has_unstable) {
@@ -449,7 +505,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
   else detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
-  detail::only_fields(evidence, {"cover", "unstable_at", "first_order"}, "evidence");
+  detail::only_fields(evidence, {"cover", "unstable_at", "first_order", "first_order_unstable"}, "evidence");
   if (model.contains("scene") ? !model.at("scene").is_string() : !model.contains("plant"))
     throw InputError("model.scene: missing or not a string (or a one-DOF model: plant, H, T, delay)");
   const auto [p, c] = detail::sup_model(model, claim);
@@ -482,6 +538,11 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
                                                                     ", concave in " + p + ")"
                                                               : std::string());
   const nlohmann::json cover = evidence.contains("cover") ? evidence.at("cover") : nlohmann::json::array();
+  if (c.hi.is_zero() && evidence.contains("first_order_unstable"))
+    return {true, "sup " + p + " = 0: " + loop + " is NOT stable for every " + p + " in (0, " +
+                      detail::decimal(detail::exact_field(evidence.at("first_order_unstable"), "to", "evidence.first_order_unstable")) +
+                      "] (the first-order mirror: P0 + L^T S L/" + p + " - M^T (.) M > 0, concave in " + p + ", with w^T (.) w < 0: Stein inertia, " +
+                      std::to_string(part.bits) + " bits)"};
   if (c.hi.is_zero())
     return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
                       "inertia, " + std::to_string(part.bits) + " bits" +

@@ -63,6 +63,14 @@
 // quantities (rows c with c^T M = c^T, the subspace {c^T x = 0} invariant, x = E y) the rows are l^T E:
 // (l^T E) M_q = l^T M E = l^T E since E P M E = M E on the invariant subspace; the conserved rows' own
 // images vanish and are dropped. A quotient by right eigenvectors too (a block's unobservable z = 1) is beyond.
+// The mirror (evidence.first_order_unstable {to = eps, P0, S, w}, with claim lo = hi = 0 in place of unstable_at): where
+// p moves a slow mode OUT at first order (a negative stiffness on a position nothing holds), the same P(p) = P0 +
+// L^T S L / p with S of any sign: Q > 0 at 0 and eps (P0 > 0: concave, so on [0, eps]) and, exactly,
+// s = (L w)^T S (L w) < 0 and w^T P0 w + s / eps < 0, so w^T P(p) w = w^T P0 w + s / p < 0 for every p in (0, eps]. Then
+// P(p) - M(p)^T P(p) M(p) > 0 with P(p) not positive definite: M(p) is not Schur stable (were it, the Stein equation's
+// solution sum (M^T)^i Q M^i would be P(p), > 0) and has no eigenvalue on the circle (v^* Q v = (1 - |z|^2) v^* P v
+// would vanish), so one outside: NOT stable on (0, eps], sup = 0. (S must be indefinite: Q's slow block is
+// -(G^T S + S G), G = K V the first-order matrix, and G has an eigenvalue with Re > 0.)
 // Limits: the loop's order <= 160, at most 4096 intervals, and intervals x n^3 <= 5e7 (one with P linear counted 5
 // times; beyond: malformed, by name).
 // Implements: paper 000 Sec. VI.
@@ -130,6 +138,10 @@ BallRows affine_loop_at(const BallRows& M1, const BallRows& M2, const rational& 
 /// loops read at p = 1 and 2, on M's coordinates.
 std::string first_order_start(const nlohmann::json& first_order, const LoopMatrix& m1, const LoopMatrix& m2, const rational_matrix::Mat& L,
                               const rational& lo, rational& from);
+/// evidence.first_order_unstable {to = eps, P0, S, w} (header): "" when it shows every M(p), 0 < p <= eps, NOT Schur
+/// stable, else what fails (`refuted`: an exact test on w failed; else a ball test, another precision may pass).
+std::string first_order_unstable(const nlohmann::json& first_order_unstable, const LoopMatrix& m1, const LoopMatrix& m2,
+                                 const rational_matrix::Mat& L, const std::string& at, bool& refuted);
 }  // namespace detail
 
 Verdict check_stability_loop_max(const nlohmann::json& certificate);

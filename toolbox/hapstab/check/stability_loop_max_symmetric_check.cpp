@@ -59,11 +59,11 @@ Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
     const std::string where = "evidence.blocks[" + std::to_string(b + 1) + "]";
     const auto& blk = blocks[b];
     if (!blk.is_object()) throw InputError(where + ": not an object");
-    detail::only_fields(blk, {"space", "class", "conserved", "cover", "first_order", "unstable_at"}, where);
+    detail::only_fields(blk, {"space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable"}, where);
     const auto [slot, copies, space] = detail::block_slot(blk, *s1, where);
     if (seen[slot]) throw InputError(where + ": a block given twice");
     seen[slot] = true;
-    unstable += blk.contains("unstable_at") ? 1 : 0;
+    unstable += blk.contains("unstable_at") || blk.contains("first_order_unstable") ? 1 : 0;
     const long k = blk.contains("conserved") ? detail::integer_field(blk, "conserved", where, 0, 1024) : 0;
     size_t order = 0;  // p inside the tf: the block's largest order, the sum of its columns'
     std::optional<detail::LoopMatrix> at_hi;
@@ -83,11 +83,12 @@ Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
     total += static_cast<long>(copies) * k;
     said += (said.empty() ? "" : "; ") + space + (slot ? " of class " + std::to_string(slot - 1) + " (x" + std::to_string(copies) + ")" : "") +
             ": " + std::to_string(part.order) + " states, " + (blk.contains("cover") ? std::to_string(blk.at("cover").size()) + " intervals" : "no cover") +
-            (blk.contains("first_order") ? " after a first-order start" : "") + (blk.contains("unstable_at") ? ", NOT stable at hi" : "") + " (" +
+            (blk.contains("first_order") ? " after a first-order start" : "") + (blk.contains("unstable_at") ? ", NOT stable at hi" : "") +
+            (blk.contains("first_order_unstable") ? ", NOT stable on (0, eps] by the first-order mirror" : "") + " (" +
             std::to_string(part.bits) + " bits)";
   }
   if (unstable != 1)
-    throw InputError("evidence.blocks: " + std::to_string(unstable) + " with unstable_at; exactly one block bounds sup from above");
+    throw InputError("evidence.blocks: " + std::to_string(unstable) + " with unstable_at or first_order_unstable; exactly one block bounds sup from above");
   if (!zero && total != conserved)
     return {false, "claim: " + std::to_string(conserved) + " conserved quantities, but the blocks have " + std::to_string(total) +
                        " (k_F + sum_a (k_a - 1) k_a')"};
@@ -95,7 +96,7 @@ Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
                            " classes of identical DOFs (invariance checked exactly on the scene at " + p + " = 1 and 2; " + p +
                            (r.inside ? " inside the environment's tf, each entry proven affine in it (degree bound " + std::to_string(degree) + ")"
                                      : " the environment's gain alone") + ", each block's loop affine in it): ";
-  if (zero) return {true, "sup " + p + " = 0 " + head + said + ": that block's M(0) has an eigenvalue |z| > 1, so has the loop for every small " + p + " > 0"};
+  if (zero) return {true, "sup " + p + " = 0 " + head + said + ": that block is NOT stable for every small " + p + " > 0"};
   return {true, "sup " + p + " in [" + detail::decimal(c.lo) + ", " + detail::decimal(c.hi) + "] " + head + "every block stable on [0, " +
                     detail::decimal(c.lo) + "], one NOT stable at " + detail::decimal(c.hi) + ": " + said};
 }

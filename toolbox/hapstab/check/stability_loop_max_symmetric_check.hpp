@@ -24,11 +24,11 @@
 //     only marginally stable; stability-loop-max's tests, check_max_part) => the loop is stable on (0, lo]: sup >= lo;
 //   * one block NOT stable at hi (its unstable_at: Stein inertia) => the loop is NOT stable at hi: sup <= hi;
 //     hi = 0: that block's M_b(0) has an eigenvalue outside the circle, so has M_b(p), hence M(p), for every small
-//     p > 0: sup = 0.
+//     p > 0 (or its first_order_unstable: M_b(p) NOT stable on (0, eps], stability-loop-max's mirror): sup = 0.
 // Evidence: classes, blocks [{space: "fixed" | "zero-sum", class (zero-sum), conserved (absent: 0), cover,
-// first_order, unstable_at}]. hi > 0: every block (the fixed one and one per class of two DOFs or more), each with
+// first_order, unstable_at, first_order_unstable}]. hi > 0: every block (the fixed one and one per class of two DOFs or more), each with
 // a cover exactly when lo > 0, exactly one with unstable_at (at hi), claim.conserved = k_F + sum_a (k_a - 1) k_a'.
-// hi = 0: one block, its unstable_at at 0, no cover; claim.conserved absent.
+// hi = 0: one block, its unstable_at at 0 or its first_order_unstable, no cover; claim.conserved absent.
 // Refused by name (InputError): p the gain of [coupling] or named elsewhere, what stability-loop-symmetric refuses (an
 // ss environment or coupling, a block on more than one DOF), more than 256 DOFs, a block beyond stability-loop-
 // max's limits (order 160, 4096 intervals). A partition under which the scene is not invariant refutes the claim.

@@ -404,6 +404,198 @@ bool inside_disk(const acb_t z, long prec) {
   return arb_is_negative(r.get());
 }
 
+// Gershgorin's discs of the first-order covers at p = 0 (Cover::near_zero): B = R^-1 M0 R (first k
+// columns exactly [I; 0]) and C = R^-1 M1 R in the basis R = [V Q, R2], scaled by D = diag(I, t K),
+// K = diag(kappa) (Cover::near_zero states the bounds). Row i of the first block: centre 1 + t c_i,
+// c_i = C_ii, radius t rho_i + t^2 sigma_i. Row i of the second block: centre B_ii + t C_ii, radius
+// sum_{j in 2, j != i} (|B_ij| + t |C_ij|) kappa_j / kappa_i + q_i / kappa_i, q_i = sum_{j in 1} |C_ij|.
+struct ZeroDiscs {
+  const AcbMat& B;
+  const AcbMat& C;
+  long k, n, pr;
+  std::vector<Ball> kap, rho, sig;  // kappa (second block); rho_i, sigma_i (first block)
+
+  ZeroDiscs(const AcbMat& B_, const AcbMat& C_, long k_, long pr_) : B(B_), C(C_), k(k_), n(acb_mat_nrows(B_.m)), pr(pr_) {}
+
+  Ball abs_of(const AcbMat& M, long i, long j) const {
+    Ball t;
+    acb_abs(t.get(), acb_mat_entry(M.m, i, j), pr);
+    return t;
+  }
+  Ball sum_abs(const AcbMat& M, long i, long j0, long j1, long skip) const {
+    Ball s;
+    for (long j = j0; j < j1; ++j)
+      if (j != skip) arb_add(s.get(), s.get(), abs_of(M, i, j).get(), pr);
+    return s;
+  }
+  static double upper(const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_UP) + mag_get_d(arb_radref(x.get())); }
+  Ball re_c(long i) const {
+    Ball r;
+    arb_set(r.get(), acb_realref(acb_mat_entry(C.m, i, i)));
+    return r;
+  }
+
+  // kappa: (diag(1 - |B_ii|) - |B_off|) kappa = 2 q + tiny over the second block (upper bounds of the |.| in
+  // double; kappa only has to be positive, the discs are checked in Arb); then rho, sigma. False: no kappa > 0.
+  bool scale() {
+    const long d = n - k;
+    Eigen::MatrixXd W(d, d);
+    Eigen::VectorXd rhs(d);
+    double qmax = 0;
+    for (long i = 0; i < d; ++i) {
+      for (long j = 0; j < d; ++j) W(i, j) = (i == j ? 1 : 0) - upper(abs_of(B, k + i, k + j));
+      rhs(i) = 2 * upper(sum_abs(C, k + i, 0, k, -1));
+      qmax = std::max(qmax, rhs(i));
+    }
+    rhs.array() += std::max(qmax, 1e-280) * 1e-20;
+    if (!W.allFinite() || !rhs.allFinite()) return false;
+    const Eigen::VectorXd kd = W.partialPivLu().solve(rhs);
+    if (!kd.allFinite() || !(kd.minCoeff() > 0)) return false;
+    for (long i = 0; i < d; ++i) kap.emplace_back(kd(i));
+    for (long i = 0; i < k; ++i) {
+      Ball r = sum_abs(C, i, 0, k, i), s;
+      for (long j = k; j < n; ++j) {
+        arb_addmul(r.get(), kap[static_cast<size_t>(j - k)].get(), abs_of(B, i, j).get(), pr);
+        arb_addmul(s.get(), kap[static_cast<size_t>(j - k)].get(), abs_of(C, i, j).get(), pr);
+      }
+      rho.push_back(r), sig.push_back(s);
+    }
+    return true;
+  }
+  // First-block row i inside the unit circle for every t in (0, e]: lin + e quad < 0 with lin = 2 (Re c + rho),
+  // quad = |c|^2 + 2 sigma (lin < 0 makes the left side increasing in t: e is the worst).
+  Ball inside_margin(long i, const Ball& e) const {
+    Ball v = abs_of(C, i, i), lin = re_c(i);
+    arb_sqr(v.get(), v.get(), pr);
+    arb_addmul_si(v.get(), sig[static_cast<size_t>(i)].get(), 2, pr);
+    arb_add(lin.get(), lin.get(), rho[static_cast<size_t>(i)].get(), pr);
+    arb_mul_2exp_si(lin.get(), lin.get(), 1);
+    arb_mul(v.get(), v.get(), e.get(), pr);
+    arb_add(v.get(), v.get(), lin.get(), pr);
+    return v;  // < 0: inside
+  }
+  // First-block row i outside the closed unit disk for every t in (0, e]: |1 + t c| >= 1 + t Re c, so the disc
+  // lies in |z| > 1 when Re c - rho - t sigma > 0 (decreasing in t: e is the worst).
+  Ball outside_margin(long i, const Ball& e) const {
+    Ball v = re_c(i);
+    arb_sub(v.get(), v.get(), rho[static_cast<size_t>(i)].get(), pr);
+    arb_submul(v.get(), sig[static_cast<size_t>(i)].get(), e.get(), pr);
+    return v;  // > 0: outside
+  }
+  // First-block discs i and j disjoint for every t in (0, e]: |t (c_i - c_j)| > t (rho_i + rho_j) + t^2 (sigma_i + sigma_j).
+  bool apart(long i, long j, const Ball& e) const {
+    acb_t w;
+    acb_init(w);
+    acb_sub(w, acb_mat_entry(C.m, i, i), acb_mat_entry(C.m, j, j), pr);
+    Ball v, s;
+    acb_abs(v.get(), w, pr);
+    acb_clear(w);
+    arb_sub(v.get(), v.get(), rho[static_cast<size_t>(i)].get(), pr);
+    arb_sub(v.get(), v.get(), rho[static_cast<size_t>(j)].get(), pr);
+    arb_add(s.get(), sig[static_cast<size_t>(i)].get(), sig[static_cast<size_t>(j)].get(), pr);
+    arb_submul(v.get(), s.get(), e.get(), pr);
+    return arb_is_positive(v.get());
+  }
+  // Every second-block disc inside the unit circle for t in [0, e]: max(|B_ii|, |B_ii + e C_ii|) (|B_ii + t C_ii|
+  // is convex in t) + the radius at e (increasing in t) < 1.
+  bool second_inside(const Ball& e) const {
+    for (long i = k; i < n; ++i) {
+      Ball z, a, t;
+      for (long j = k; j < n; ++j) {
+        if (j == i) continue;
+        a = abs_of(B, i, j);
+        arb_addmul(a.get(), abs_of(C, i, j).get(), e.get(), pr);
+        arb_addmul(z.get(), a.get(), kap[static_cast<size_t>(j - k)].get(), pr);
+      }
+      arb_add(z.get(), z.get(), sum_abs(C, i, 0, k, -1).get(), pr);
+      arb_div(z.get(), z.get(), kap[static_cast<size_t>(i - k)].get(), pr);
+      acb_t w;
+      acb_init(w);
+      acb_mul_arb(w, acb_mat_entry(C.m, i, i), e.get(), pr);
+      acb_add(w, w, acb_mat_entry(B.m, i, i), pr);
+      acb_abs(a.get(), w, pr);
+      acb_clear(w);
+      arb_max(a.get(), a.get(), abs_of(B, i, i).get(), pr);
+      arb_add(z.get(), z.get(), a.get(), pr);
+      arb_sub_ui(z.get(), z.get(), 1, pr);
+      if (!arb_is_negative(z.get())) return false;
+    }
+    return true;
+  }
+  // Where the second block's discs may stop being inside: min over its rows of margin / slope at t = 0 (margin
+  // 1 - |B_ii| - radius at 0, slope |C_ii| + sum_{j != i} |C_ij| kappa_j / kappa_i), in double: a start only.
+  double second_bound() const {
+    auto kd = [&](long i) { return arf_get_d(arb_midref(kap[static_cast<size_t>(i - k)].get()), ARF_RND_NEAR); };
+    double out = INFINITY;
+    for (long i = k; i < n; ++i) {
+      double r0 = upper(sum_abs(C, i, 0, k, -1)), r1 = upper(abs_of(C, i, i));
+      for (long j = k; j < n; ++j)
+        if (j != i) {
+          const double ratio = kd(j) / kd(i);
+          r0 += upper(abs_of(B, i, j)) * ratio, r1 += upper(abs_of(C, i, j)) * ratio;
+        }
+      const double margin = 1 - upper(abs_of(B, i, i)) - r0 / kd(i);
+      if (margin > 0 && r1 > 0) out = std::min(out, margin / r1);
+    }
+    return out;
+  }
+  // The largest eps tried (from `start`, halved 60 times at most) where `holds(eps)`, 0 when none.
+  template <class F>
+  static rational halving(double start, F holds) {
+    if (!(start > 0) || !std::isfinite(start)) return 0;
+    for (int tries = 0; tries < 60; ++tries, start *= 0.5)
+      if (holds(Ball(start))) return rational(start);
+    return 0;
+  }
+  // Stable on (0, eps]: every disc inside (the first block's from lin < 0, eps <= -lin / quad / 2 to start).
+  rational stable_to() const {
+    double start = INFINITY;
+    for (long i = 0; i < k; ++i) {
+      const Ball zero(0L), one(1L), lin = inside_margin(i, zero);
+      if (!arb_is_negative(lin.get())) return 0;
+      Ball quad = inside_margin(i, one);
+      arb_sub(quad.get(), quad.get(), lin.get(), pr);
+      arb_div(quad.get(), lin.get(), quad.get(), pr);
+      const double e = -upper(quad);  // -lin / quad, rounded down
+      if (std::isfinite(e) && e > 0) start = std::min(start, 0.5 * e);
+    }
+    return halving(start, [&](const Ball& e) {
+      for (long i = 0; i < k; ++i)
+        if (!arb_is_negative(inside_margin(i, e).get())) return false;
+      return second_inside(e);
+    });
+  }
+  // NOT stable on (0, eps] (the mirror): O = the first-block rows whose discs lie outside the closed unit disk,
+  // non-empty; every other first-block disc inside the circle or apart from each of O's, and every second-block
+  // disc inside. Then O's union is disjoint from the others' and holds |O| eigenvalues (Gershgorin's theorem), each
+  // of modulus > 1.
+  rational unstable_to() const {
+    double start = INFINITY;
+    for (long i = 0; i < k; ++i) {
+      const Ball zero(0L), one(1L), out0 = outside_margin(i, zero);
+      if (!arb_is_positive(out0.get())) continue;
+      Ball slope = outside_margin(i, one);  // out0 - sigma
+      arb_sub(slope.get(), out0.get(), slope.get(), pr);
+      arb_div(slope.get(), out0.get(), slope.get(), pr);
+      const double e = arf_get_d(arb_midref(slope.get()), ARF_RND_DOWN) - mag_get_d(arb_radref(slope.get()));
+      if (std::isfinite(e) && e > 0) start = std::min(start, 0.5 * e);
+    }
+    start = std::min(start, second_bound());
+    return halving(start, [&](const Ball& e) {
+      std::vector<long> out;
+      for (long i = 0; i < k; ++i)
+        if (arb_is_positive(outside_margin(i, e).get())) out.push_back(i);
+      if (out.empty()) return false;
+      for (long j = 0; j < k; ++j) {
+        if (std::find(out.begin(), out.end(), j) != out.end() || arb_is_negative(inside_margin(j, e).get())) continue;
+        for (const long i : out)
+          if (!apart(i, j, e)) return false;
+      }
+      return second_inside(e);
+    });
+  }
+};
+
 struct Cover {
   const BallMat& M0;
   const BallMat& M1;
@@ -656,7 +848,12 @@ struct Cover {
   // unstable direction), or an eigenvalue of M(0) at 1 that V does not hold (a pure mass's Jordan
   // block: B is block upper triangular, so B22 then has the eigenvalue 1 and its discs cannot all
   // be inside), leaves the cover unproven.
-  rational near_zero() const {
+  //
+  // The mirror (outward = true): eps > 0 such that every M(p), p in (0, eps], has an eigenvalue outside the unit
+  // circle, so sup = 0 -- where p moves a slow mode out at first order (Re c > 0: a negative stiffness on a
+  // position that nothing holds at p = 0). ZeroDiscs::unstable_to: the first-block discs with Re c - rho - t sigma
+  // > 0 lie in |z| > 1 (|1 + t c| >= 1 + t Re c), apart from every other disc, so they hold as many eigenvalues.
+  rational near_zero(bool outward = false) const {
     const long n = M0.rows();
     const MatQ& V = integrators;
     const long k = V.cols();
@@ -665,13 +862,13 @@ struct Cover {
     for (const bool schur : {false, true}) {
       Eigen::MatrixXcd R2;
       if (!(schur ? complement_by_schur(R2, k) : complement_by_eigenvectors(R2, k))) continue;
-      const rational eps = near_zero_on(R2, V);
+      const rational eps = near_zero_on(R2, V, outward);
       if (eps > best) best = eps;
     }
     return best;
   }
   // eps of near_zero for the basis R = [V Q, R2]: B, C in Arb, the first k columns of B exact.
-  rational near_zero_on(const Eigen::MatrixXcd& R2, const MatQ& V) const {
+  rational near_zero_on(const Eigen::MatrixXcd& R2, const MatQ& V, bool outward) const {
     const long n = M0.rows(), k = V.cols(), pr = 128;
     AcbMat R(n, n);
     if (!near_zero_basis(R, V, R2, pr)) return 0;
@@ -688,7 +885,9 @@ struct Cover {
         if (i == j) acb_one(acb_mat_entry(B.m, i, j));
         else acb_zero(acb_mat_entry(B.m, i, j));
       }
-    return near_zero_discs(B, C, k, pr);
+    ZeroDiscs discs(B, C, k, pr);
+    if (!discs.scale()) return 0;
+    return outward ? discs.unstable_to() : discs.stable_to();
   }
   // R2: approximate eigenvectors of M(0) for its eigenvalues other than 1; false when M(0) has more
   // eigenvalues near 1 than V's k columns, or the eigensolver fails.
@@ -751,105 +950,6 @@ struct Cover {
       for (long a = k; a < n; ++a) acb_set_d_d(acb_mat_entry(R.m, i, a), Rd(i, a).real(), Rd(i, a).imag());
     }
     return true;
-  }
-  // The discs of near_zero on B = R^-1 M0 R (first k columns exact) and C = R^-1 M1 R: the largest
-  // eps tried (from the first block's bound, halved while a disc is not inside) with every disc
-  // inside for t in (0, eps], 0 when none.
-  static rational near_zero_discs(const AcbMat& B, const AcbMat& C, long k, long pr) {
-    const long n = acb_mat_nrows(B.m);
-    auto sum_abs = [&](const AcbMat& M, long i, long j0, long j1, long skip) {
-      Ball s, t;
-      for (long j = j0; j < j1; ++j)
-        if (j != skip) {
-          acb_abs(t.get(), acb_mat_entry(M.m, i, j), pr);
-          arb_add(s.get(), s.get(), t.get(), pr);
-        }
-      return s;
-    };
-    auto upper = [](const Ball& x) { return arf_get_d(arb_midref(x.get()), ARF_RND_UP) + mag_get_d(arb_radref(x.get())); };
-    auto abs_upper = [&](const AcbMat& M, long i, long j) {
-      Ball t;
-      acb_abs(t.get(), acb_mat_entry(M.m, i, j), pr);
-      return upper(t);
-    };
-    // kappa: (diag(1 - |B_ii|) - |B_off|) kappa = 2 q + tiny over the second block (upper bounds of
-    // the |.| in double; kappa only has to be positive, the discs below are checked in Arb)
-    const long d = n - k;
-    Eigen::MatrixXd W(d, d);
-    Eigen::VectorXd rhs(d);
-    double qmax = 0;
-    for (long i = 0; i < d; ++i) {
-      for (long j = 0; j < d; ++j) W(i, j) = i == j ? 1 - abs_upper(B, k + i, k + j) : -abs_upper(B, k + i, k + j);
-      rhs(i) = 2 * upper(sum_abs(C, k + i, 0, k, -1));
-      qmax = std::max(qmax, rhs(i));
-    }
-    rhs.array() += std::max(qmax, 1e-280) * 1e-20;
-    if (!W.allFinite() || !rhs.allFinite()) return 0;
-    const Eigen::VectorXd kd = W.partialPivLu().solve(rhs);
-    if (!kd.allFinite() || !(kd.minCoeff() > 0)) return 0;
-    std::vector<Ball> kap;
-    for (long i = 0; i < d; ++i) kap.emplace_back(kd(i));
-    // first block: lin_i = 2 (Re c + rho_i) < 0, quad_i = |c|^2 + 2 sigma_i; eps <= -lin_i / quad_i
-    std::vector<Ball> lin(static_cast<size_t>(k)), quad(static_cast<size_t>(k));
-    double eps = INFINITY;
-    for (long i = 0; i < k; ++i) {
-      Ball rho = sum_abs(C, i, 0, k, i), sig, t;
-      for (long j = k; j < n; ++j) {
-        acb_abs(t.get(), acb_mat_entry(B.m, i, j), pr);
-        arb_addmul(rho.get(), kap[static_cast<size_t>(j - k)].get(), t.get(), pr);
-        acb_abs(t.get(), acb_mat_entry(C.m, i, j), pr);
-        arb_addmul(sig.get(), kap[static_cast<size_t>(j - k)].get(), t.get(), pr);
-      }
-      Ball& l = lin[static_cast<size_t>(i)];
-      Ball& q = quad[static_cast<size_t>(i)];
-      arb_add(l.get(), acb_realref(acb_mat_entry(C.m, i, i)), rho.get(), pr);
-      arb_mul_2exp_si(l.get(), l.get(), 1);
-      if (!arb_is_negative(l.get())) return 0;
-      acb_abs(t.get(), acb_mat_entry(C.m, i, i), pr);
-      arb_sqr(q.get(), t.get(), pr);
-      arb_addmul_si(q.get(), sig.get(), 2, pr);
-      arb_div(t.get(), l.get(), q.get(), pr);
-      arb_neg(t.get(), t.get());
-      const double e = arf_get_d(arb_midref(t.get()), ARF_RND_DOWN) - mag_get_d(arb_radref(t.get()));
-      if (std::isfinite(e)) eps = std::min(eps, 0.5 * e);
-    }
-    if (!(eps > 0) || !std::isfinite(eps)) return 0;
-    for (int tries = 0; tries < 60; ++tries, eps *= 0.5) {
-      const Ball e(eps);
-      bool ok = true;
-      for (long i = 0; i < k && ok; ++i) {  // lin + eps quad < 0
-        Ball v;
-        arb_mul(v.get(), quad[static_cast<size_t>(i)].get(), e.get(), pr);
-        arb_add(v.get(), v.get(), lin[static_cast<size_t>(i)].get(), pr);
-        ok = arb_is_negative(v.get());
-      }
-      for (long i = k; i < n && ok; ++i) {
-        // max(|B_ii|, |B_ii + eps C_ii|) + sum_{j != i} (|B_ij| + eps |C_ij|) kappa_j / kappa_i + q_i / kappa_i < 1
-        Ball z, a, b, t;
-        for (long j = k; j < n; ++j) {
-          if (j == i) continue;
-          acb_abs(a.get(), acb_mat_entry(B.m, i, j), pr);
-          acb_abs(t.get(), acb_mat_entry(C.m, i, j), pr);
-          arb_addmul(a.get(), t.get(), e.get(), pr);
-          arb_addmul(z.get(), a.get(), kap[static_cast<size_t>(j - k)].get(), pr);
-        }
-        arb_add(z.get(), z.get(), sum_abs(C, i, 0, k, -1).get(), pr);
-        arb_div(z.get(), z.get(), kap[static_cast<size_t>(i - k)].get(), pr);
-        acb_t w;
-        acb_init(w);
-        acb_mul_arb(w, acb_mat_entry(C.m, i, i), e.get(), pr);
-        acb_add(w, w, acb_mat_entry(B.m, i, i), pr);
-        acb_abs(a.get(), w, pr);
-        acb_clear(w);
-        acb_abs(b.get(), acb_mat_entry(B.m, i, i), pr);
-        arb_max(a.get(), a.get(), b.get(), pr);
-        arb_add(z.get(), z.get(), a.get(), pr);
-        arb_sub_ui(z.get(), z.get(), 1, pr);
-        ok = arb_is_negative(z.get());
-      }
-      if (ok) return rational(eps);
-    }
-    return 0;
   }
   // The last step, from `to` (stable) to the crossing's enclosure [lo, hi] (certified): on each
   // piece [a, b] of [to, hi] every eigenvalue (Rump's enclosures on the ball M0 + [a, b] M1) is
@@ -1403,6 +1503,21 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
                " in some (0, eps) (the eigenvalues move continuously): the supremum of (0, sup) is 0";
     return out;
   }
+  const MatQ slow = integrator_kernel(F);
+  if (slow.cols() > 0) {  // M(0) marginal on position integrators: does p move one of them outward at first order?
+    Cover c0{*base.M0, *base.M1};
+    c0.integrators = slow;
+    if (const rational eps = c0.near_zero(true); eps > 0) {
+      out.outcome = Outcome::fails;
+      out.status = Status::certified;
+      out.first_order_to = eps;
+      out.note = "NOT stable for every " + name + " in (0, " + decimal_outward(eps, 6, -1) + "] [certified]: at " + name +
+                 " = 0 the closed-loop matrix has the eigenvalue 1 on position integrators (M(0) only marginally stable), and " + name +
+                 " moves one of them outward at first order (Gershgorin's discs of the first-order cover at 0 lie outside the unit "
+                 "circle, apart from the others): the supremum of (0, sup) is 0";
+      return out;
+    }
+  }
   const Spectrum sp{mid(*base.M0), mid(*base.M1)};
   const std::optional<Isolated> is = isolate(sp, static_cast<double>(reference), name, out);
   if (!is) return out;
@@ -1428,7 +1543,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   if (sp.rho(p0d) >= 1) p0d = is->below < static_cast<double>(top) ? is->below : is->stable_grid;
   const rational p0 = rational(p0d);
   Cover cov{*base.M0, *base.M1};
-  cov.integrators = integrator_kernel(F);
+  cov.integrators = slow;
   const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
   if (out.stable_to <= p0 && !closed) {
     out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +

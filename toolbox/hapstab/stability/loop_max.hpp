@@ -48,6 +48,10 @@
 // bounds). The walk then continues down to eps, and the supremum of (0, sup) is stated with
 // open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass that nothing
 // damps at p = 0 (a Jordan block at z = 1) is not covered: its eigenvalues leave 1 like sqrt(p).
+// The mirror: where p moves a slow mode out at first order (an eigenvalue of C11 with Re > 0 beyond its row's
+// off-diagonal part: a negative stiffness on a position nothing holds), the same discs show every M(p), p in
+// (0, eps], with an eigenvalue outside the circle -- the outward first-block discs lie in |z| > 1, apart from the
+// others, so they hold as many eigenvalues (Gershgorin) -- and sup = 0 (outcome fails, certified), before step 1.
 // Where the walk towards 0 stops at stable_from > 0 otherwise (another eigenvalue on the circle, or
 // an unstable window below: an open-loop unstable device that only larger gains stabilise) the
 // outcome is undecided and what is proven is [stable_from, stable_to] (certified). Where M(0) has
@@ -85,6 +89,7 @@ struct LoopMax {
   rational stable_from = 0, stable_to = 0;  ///< stable for every p in [stable_from, stable_to] (certified)
   /// M(0) has the eigenvalue 1 (position integrators): stable_from = 0 is excluded, the loop is
   /// stable for every p in (0, stable_to], (0, first_order_to] by the first-order cover at p = 0.
+  /// outcome fails with first_order_to > 0: NOT stable on (0, first_order_to] by the mirror of that cover (header).
   bool open_at_zero = false;
   rational first_order_to = 0;
   double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered (0: sup = crossing)

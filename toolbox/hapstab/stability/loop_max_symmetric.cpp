@@ -61,6 +61,7 @@ void combine(LoopMaxSplit& s, const std::string& name, size_t dofs) {
       w.outcome = Outcome::fails;
       w.status = b.status;
       w.T = b.T;
+      w.first_order_to = b.first_order_to;  // > 0: that block NOT stable on (0, first_order_to] by the first-order mirror
       w.note = head + "; " + s.blocks[k].label + ": " + b.note;
       return;
     }
