@@ -27,6 +27,10 @@
 //   (n(j w0)/((2 j w0) d1(j w0)), evaluated in Q(sqrt q)(j)) give it exactly; and with D = diag(I, w0 I),
 //   D [[X, -Y], [Y, X/q]] D = [[X, -w0 Y], [w0 Y, X]] (the real form of X + j w0 Y) exactly in Q(sqrt q):
 //   a congruence, so one is PSD iff the other is (Sylvester), and w0 is never written.
+//   first-order mirror. The start's P(p) with S of any sign: Q(p) > 0 on [0, eps] (as above) and w^T P(p) w < 0
+//   there (s = (L w)^T S (L w) < 0, w^T P0 w + s/eps < 0) make M(p) NOT Schur stable on (0, eps] (Stein inertia).
+//   Checked: wherever the checker (detail::first_order_unstable) accepts, exact Schur-Cohn finds M(p) unstable at
+//   eps/1000, eps/3 and eps; with S negated or w = 0 it never accepts.
 #include <random>
 #include <sstream>
 
@@ -417,6 +421,62 @@ void residue_claim(proofs::Checker& check, std::mt19937& g) {
               {psd, indefinite});
 }
 
+// ---- the first-order mirror (sup = 0) -----------------------------------------------------------------
+// draw_slow_loop's loops with the slow block of K1 +c I (p moves the slow modes OUT), S = -s I, w = e_1 (a slow
+// coordinate): the checker's first_order_unstable accepts at small eps.
+std::string mirror_on(const SlowLoop& d, const RMat& S, const Q& eps, const std::vector<Q>& w) {
+  check::detail::LoopMatrix m1, m2;
+  m1.M = balls(loop_at(d, Q(1)));
+  m2.M = balls(loop_at(d, Q(2)));
+  nlohmann::json wj = nlohmann::json::array();
+  for (const Q& x : w) wj.push_back(x.str());
+  const nlohmann::json fo = {{"to", eps.str()}, {"P0", json_matrix(d.P0)}, {"S", json_matrix(S)}, {"w", wj}};
+  bool refuted = false;
+  return check::detail::first_order_unstable(fo, m1, m2, d.L, "evidence", refuted);
+}
+
+void mirror_claim(proofs::Checker& check, std::mt19937& g) {
+  proofs::Instances accepted{"(loop, eps) where the checker accepts the mirror on (0, eps]", 40},
+      refused{"(loop, eps) where it does not", 20};
+  bool sound = true, flipped_refused = true;
+  for (int t = 0; t < 60; ++t) {
+    SlowLoop d = draw_slow_loop(g);
+    const size_t k = d.L.size(), n = d.M0.size();
+    for (size_t i = 0; i < k; ++i) d.K1[i][i] += 2 * (Q(1) - d.K1[i][i]);  // -c + x -> the slow diagonal pushed out
+    RMat S = rm::zeros(k, k), Sflip = rm::zeros(k, k);
+    for (size_t i = 0; i < k; ++i) S[i][i] = -d.S[i][i], Sflip[i][i] = d.S[i][i];
+    std::vector<Q> w(n, Q(0));
+    w[0] = 1;
+    for (const Q& eps : {Q(1, 100), Q(1, 10), Q(1), Q(8)}) {
+      if (!mirror_on(d, S, eps, w).empty()) {
+        refused.count(true);
+        continue;
+      }
+      accepted.count(true);
+      for (const Q& p : {eps / 1000, eps / 3, eps}) sound = sound && !schur_stable(charpoly(to_matq(loop_at(d, p))));
+      flipped_refused = flipped_refused && !mirror_on(d, Sflip, eps, w).empty() && !mirror_on(d, S, eps, std::vector<Q>(n, Q(0))).empty();
+    }
+  }
+  // its certificate: two devices on linked walls of negative stiffness (tests/cli/scenes/loop_max_zero_outward.toml)
+  proofs::CertificateRequest r;
+  r.args = {"stability", "--scene", "{input}", "--max", "g", "--quiet"};
+  r.input = "[scene]\nname = \"negative walls\"\nT = \"1/1000\"\n[parameters]\ng = \"1\"\n"
+            "[[device]]\nname = \"a\"\nm = \"1/2\"\nb = \"1\"\n[[device]]\nname = \"b\"\nm = \"1\"\nb = \"2\"\n"
+            "[environment]\ntf = [[\"-1000 + 2*(z-1)/(T*z)\", \"-100\"], [\"-100\", \"-500 + 2*(z-1)/(T*z)\"]]\ngain = \"g\"";
+  r.contains = "0";
+  check.certify("ext.loop_max.first_order_mirror", r);
+  std::ostringstream e;
+  e << "each accepted (loop, eps) NOT Schur stable at eps/1000, eps/3, eps by Schur-Cohn: " << (sound ? "yes" : "NO")
+    << "; S of the other sign, or w = 0, never accepted: " << (flipped_refused ? "yes" : "NO");
+  check.claim("ext.loop_max.first_order_mirror", "sup = 0 by the first-order mirror",
+              "with L M(0) = L, P(p) = P0 + L^T S L/p (S of any sign) and Q(p) = P(p) - M(p)^T P(p) M(p) (the start's identity) > 0 at 0 "
+              "and eps (concave in p), s = (L w)^T S (L w) < 0 and w^T P0 w + s/eps < 0: M(p) is NOT Schur stable on (0, eps] (Stein "
+              "inertia) -- wherever the checker accepts, exact Schur-Cohn finds M(p) unstable at eps/1000, eps/3, eps; with S negated "
+              "or w = 0 it never accepts -- on 60 random loops whose slow modes p moves out (seed 47073) at eps = 1/100, 1/10, 1, 8; "
+              "its certificate: sup g = 0 of two devices on walls of negative stiffness (kind stability-loop-max)",
+              Status::certified, sound && flipped_refused && accepted.enough() && refused.enough(), e.str(), {accepted, refused});
+}
+
 }  // namespace ext_loop_max_certificate_detail
 
 HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's and the axis residue's certificates") {
@@ -427,4 +487,5 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
   kernel_claim(check, g);
   slow_hold_claim(check, g);
   residue_claim(check, g);
+  mirror_claim(check, g);
 }
