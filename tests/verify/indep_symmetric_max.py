@@ -15,7 +15,8 @@ stable (rho < 1 - 1e-12) is what the grid can show. Required: hapstab's certifie
 relative of sup_ref (double eigenvalues of a matrix with eigenvalues repeated k - 1 times near |z| = 1: the
 crossing's error is ~ sqrt(eps) times the conditioning at worst; 1e-6 leaves three decades) and its path
 "symmetry" exactly where the split pays (N > 8, or a class of three or more); sup = 0 (exit 1) only where the
-reference's rho at g0 10^-4 is >= 1; undecided (exit 3) counted apart, never as either answer. Where the split
+reference's rho at g0 10^-4 is >= 1, and where hapstab says why by the first-order mirror (JSON unstable_on [0, eps]) the
+reference's rho > 1 at eps/10 and eps too; undecided (exit 3) counted apart, never as either answer. Where the split
 was used, the certificate (kind stability-loop-max-symmetric) verified by both checkers (the independent one within
 its 128 DOFs) and, on every K-th such case (--mutants-every K, default 1), each hand edit of
 tests/cli/symmetric_max_case.py's max_mutants() given its exit code by both. A certificate refused by name (exit
@@ -134,6 +135,12 @@ def run_case(exe, c, tmp):
         why = certificate_fails(exe, cert, bad) if j.get("path") == "symmetry" and not refused else ""
         if why:
             return False, "sup = 0 agrees, but %s (%s)" % (why, tag), None
+        if "unstable_on" in j:  # the first-order mirror: NOT stable on (0, eps], checked at eps/10 and eps
+            eps = float(j["unstable_on"][1])
+            rhos = [ISC.reference_rho(at(c, x)) for x in (eps / 10, eps)]
+            if min(rhos) <= 1:
+                return False, "hapstab: NOT stable on (0, %s], the reference's rho at eps/10, eps: %s (%s)" % (eps, rhos, tag), None
+            return True, "sup = 0 by the first-order mirror, rho at eps/10, eps %s (%s)" % (["%.3g" % (x - 1) for x in rhos], tag), "sup = 0 (mirror)"
         return True, "sup = 0 (%s)" % tag, "sup = 0"
     if ref is None or ref == 0.0:
         return False, "hapstab: sup = %s, the reference's %s (%s)" % (j["max"], ref, tag), None
