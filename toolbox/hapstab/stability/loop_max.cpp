@@ -539,12 +539,21 @@ struct ZeroDiscs {
     }
     return out;
   }
-  // The largest eps tried (from `start`, halved 60 times at most) where `holds(eps)`, 0 when none.
+  // The largest eps tried (from `start`, halved 60 times at most) where `holds(eps)`, 0 when none; after a halving,
+  // refined by 6 bisections between the one that holds and the one that failed (a walk down towards 0 that stalls
+  // just above the first-order eps meets it: fixed space of 3 DOFs, seed 7 case 11 of indep_symmetric_max).
   template <class F>
   static rational halving(double start, F holds) {
     if (!(start > 0) || !std::isfinite(start)) return 0;
     for (int tries = 0; tries < 60; ++tries, start *= 0.5)
-      if (holds(Ball(start))) return rational(start);
+      if (holds(Ball(start))) {
+        double lo = start, hi = 2 * start;  // hi failed, unless start was the first tried
+        for (int k = 0; tries > 0 && k < 6; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (holds(Ball(mid)) ? lo : hi) = mid;
+        }
+        return rational(lo);
+      }
     return 0;
   }
   // Stable on (0, eps]: every disc inside (the first block's from lin < 0, eps <= -lin / quad / 2 to start).
