@@ -435,15 +435,37 @@ struct ZeroDiscs {
     return r;
   }
 
-  // kappa: (diag(1 - |B_ii|) - |B_off|) kappa = 2 q + tiny over the second block (upper bounds of the |.| in
-  // double; kappa only has to be positive, the discs are checked in Arb); then rho, sigma. False: no kappa > 0.
-  bool scale() {
+  // kappa: W(e) kappa = 2 q + tiny over the second block, W(e) = diag(1 - max(|B_ii|, |B_ii + e C_ii|)) - (|B_off| +
+  // e |C_off|) -- Perron's scaling for the discs at t = e (at e = 0 the smallest kappa with each second-block disc
+  // inside; at the eps tried, every second-block disc then has the margin q_i / kappa_i there, where a kappa for t = 0
+  // lets a row of small kappa beside a delay register's large ones fail at 1e-10: seed 7 case 163 of
+  // indep_symmetric_max); upper bounds of the |.| in double, kappa only has to be positive (the discs are checked in
+  // Arb). Then rho, sigma. False: no kappa > 0.
+  bool scale(double e = 0) {
     const long d = n - k;
     Eigen::MatrixXd W(d, d);
     Eigen::VectorXd rhs(d);
     double qmax = 0;
     for (long i = 0; i < d; ++i) {
-      for (long j = 0; j < d; ++j) W(i, j) = (i == j ? 1 : 0) - upper(abs_of(B, k + i, k + j));
+      for (long j = 0; j < d; ++j) {
+        const double b = upper(abs_of(B, k + i, k + j)), c = e > 0 ? upper(abs_of(C, k + i, k + j)) : 0;
+        if (i != j) {
+          W(i, j) = -(b + e * c);
+          continue;
+        }
+        double at_e = b;
+        if (e > 0) {
+          acb_t w;
+          acb_init(w);
+          acb_mul_arb(w, acb_mat_entry(C.m, k + i, k + i), Ball(e).get(), pr);
+          acb_add(w, w, acb_mat_entry(B.m, k + i, k + i), pr);
+          Ball a;
+          acb_abs(a.get(), w, pr);
+          acb_clear(w);
+          at_e = std::max(b, upper(a));
+        }
+        W(i, j) = 1 - at_e;
+      }
       rhs(i) = 2 * upper(sum_abs(C, k + i, 0, k, -1));
       qmax = std::max(qmax, rhs(i));
     }
@@ -451,6 +473,7 @@ struct ZeroDiscs {
     if (!W.allFinite() || !rhs.allFinite()) return false;
     const Eigen::VectorXd kd = W.partialPivLu().solve(rhs);
     if (!kd.allFinite() || !(kd.minCoeff() > 0)) return false;
+    kap.clear(), rho.clear(), sig.clear();
     for (long i = 0; i < d; ++i) kap.emplace_back(kd(i));
     for (long i = 0; i < k; ++i) {
       Ball r = sum_abs(C, i, 0, k, i), s;
@@ -539,6 +562,8 @@ struct ZeroDiscs {
     }
     return out;
   }
+  // kappa for the discs at t = e (scale(e)); the bounds that chose the start keep kappa's at t = 0.
+  bool rescale(const Ball& e) { return scale(arf_get_d(arb_midref(e.get()), ARF_RND_NEAR)); }
   // The largest eps tried (from `start`, halved 60 times at most) where `holds(eps)`, 0 when none; after a halving,
   // refined by 6 bisections between the one that holds and the one that failed (a walk down towards 0 that stalls
   // just above the first-order eps meets it: fixed space of 3 DOFs, seed 7 case 11 of indep_symmetric_max).
@@ -557,7 +582,7 @@ struct ZeroDiscs {
     return 0;
   }
   // Stable on (0, eps]: every disc inside (the first block's from lin < 0, eps <= -lin / quad / 2 to start).
-  rational stable_to() const {
+  rational stable_to() {
     double start = INFINITY;
     for (long i = 0; i < k; ++i) {
       const Ball zero(0L), one(1L), lin = inside_margin(i, zero);
@@ -569,6 +594,7 @@ struct ZeroDiscs {
       if (std::isfinite(e) && e > 0) start = std::min(start, 0.5 * e);
     }
     return halving(start, [&](const Ball& e) {
+      if (!rescale(e)) return false;
       for (long i = 0; i < k; ++i)
         if (!arb_is_negative(inside_margin(i, e).get())) return false;
       return second_inside(e);
@@ -578,7 +604,7 @@ struct ZeroDiscs {
   // non-empty; every other first-block disc inside the circle or apart from each of O's, and every second-block
   // disc inside. Then O's union is disjoint from the others' and holds |O| eigenvalues (Gershgorin's theorem), each
   // of modulus > 1.
-  rational unstable_to() const {
+  rational unstable_to() {
     double start = INFINITY;
     for (long i = 0; i < k; ++i) {
       const Ball zero(0L), one(1L), out0 = outside_margin(i, zero);
@@ -589,8 +615,9 @@ struct ZeroDiscs {
       const double e = arf_get_d(arb_midref(slope.get()), ARF_RND_DOWN) - mag_get_d(arb_radref(slope.get()));
       if (std::isfinite(e) && e > 0) start = std::min(start, 0.5 * e);
     }
-    start = std::min(start, second_bound());
+    if (!std::isfinite(start)) start = second_bound();  // sigma = 0: the second block's bound (kappa at t = 0) to start
     return halving(start, [&](const Ball& e) {
+      if (!rescale(e)) return false;
       std::vector<long> out;
       for (long i = 0; i < k; ++i)
         if (arb_is_positive(outside_margin(i, e).get())) out.push_back(i);
@@ -868,9 +895,9 @@ struct Cover {
     const long k = V.cols();
     if (k == 0 || k == n || V.rows() != n) return 0;
     rational best(0);  // the larger of the two bases' (an ill-conditioned eigenbasis can give eps ~ 1e-15)
-    for (const bool schur : {false, true}) {
+    for (const int basis : {0, 1, 2}) {
       Eigen::MatrixXcd R2;
-      if (!(schur ? complement_by_schur(R2, k) : complement_by_eigenvectors(R2, k))) continue;
+      if (!(basis == 1 ? complement_by_schur(R2, k) : complement_by_eigenvectors(R2, k, basis == 2))) continue;
       const rational eps = near_zero_on(R2, V, outward);
       if (eps > best) best = eps;
     }
@@ -899,8 +926,10 @@ struct Cover {
     return outward ? discs.unstable_to() : discs.stable_to();
   }
   // R2: approximate eigenvectors of M(0) for its eigenvalues other than 1; false when M(0) has more
-  // eigenvalues near 1 than V's k columns, or the eigensolver fails.
-  bool complement_by_eigenvectors(Eigen::MatrixXcd& R2, long k) const {
+  // eigenvalues near 1 than V's k columns, or the eigensolver fails. `clusters`: each cluster of close eigenvalues
+  // (a delay register's defective 0) given an orthonormal basis of its invariant subspace instead (cluster_bases, as
+  // the walk's steps), where its eigenvectors are too nearly parallel for R's inverse.
+  bool complement_by_eigenvectors(Eigen::MatrixXcd& R2, long k, bool clusters = false) const {
     const long n = M0.rows();
     Eigen::EigenSolver<Eigen::MatrixXd> es(mid(M0), true);
     if (es.info() != Eigen::Success) return false;
@@ -910,6 +939,17 @@ struct Cover {
     if (static_cast<long>(rest.size()) != n - k) return false;
     R2.resize(n, n - k);
     for (long a = 0; a < n - k; ++a) R2.col(a) = es.eigenvectors().col(rest[static_cast<size_t>(a)]);
+    if (clusters) {  // [V, R2] with V's eigenvalues set apart (far from the disk: no cluster joins them)
+      Eigen::MatrixXcd Rd(n, n);
+      Eigen::VectorXcd ev(n);
+      for (long i = 0; i < n; ++i)
+        for (long a = 0; a < k; ++a) Rd(i, a) = to_real<double>(integrators(i, a));
+      Rd.rightCols(n - k) = R2;
+      for (long a = 0; a < k; ++a) ev(a) = 100.0 + static_cast<double>(a);
+      for (long a = 0; a < n - k; ++a) ev(k + a) = es.eigenvalues()(rest[static_cast<size_t>(a)]);
+      cluster_bases(Rd, ev, mid(M0));
+      R2 = Rd.rightCols(n - k);
+    }
     return R2.allFinite();
   }
   // R2: an orthonormal basis of range(M(0) - I) (QR with column pivoting, rank n - k) times the Schur
