@@ -43,7 +43,8 @@
 // proves (0, eps]: V an exact (rational) basis of those v, and in a basis [V Q, R2]
 // R^-1 M(t) R = [[I + t C11, B12 + t C12], [t C21, B22 + t C22]] exactly in its first block;
 // Gershgorin's discs with the scaling diag(I, t K), K = diag(kappa_j) (Perron's scaling of the
-// second block), are inside the circle for t in (0, eps]
+// second block's discs at t = eps; R2 an eigenbasis of M(0)'s other eigenvalues, with or without
+// orthonormal bases of its clusters, or a Schur basis: the largest eps of the three), are inside the circle for t in (0, eps]
 // when every Re (C11)_ii plus its row's off-diagonal part is < 0 (Cover::near_zero states the
 // bounds). The walk then continues down to eps, and the supremum of (0, sup) is stated with
 // open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass that nothing
