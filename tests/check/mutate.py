@@ -405,7 +405,6 @@ def frac_mutants(cert, rng):
     its rational lower end evidence.domain_c_lo."""
     out = []
     m, ev = cert["model"], cert["evidence"]
-    q = (m["delay"] + Fraction(m["frac_delay"]) / Fraction(m["T"])).denominator
     if "domain_c_lo" in ev:
         c_lo = Fraction(ev["domain_c_lo"])
         above = c_lo + Fraction(1, 10 ** rng.randint(3, 8))  # above cos(pi/q): c_lo is within 10^-40 below it

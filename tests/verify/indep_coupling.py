@@ -50,7 +50,7 @@ import mpmath as mp
 import numpy as np
 
 import indep_witness as IW
-from indep_common import Expr, analyze_case_main, exact, golden, local_extrema, witness_decides
+from indep_common import Expr, analyze_case_main, golden, local_extrema, witness_decides
 
 DPS = 40
 

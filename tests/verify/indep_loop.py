@@ -27,15 +27,13 @@ tolerance there is 1e-7 relative, and at
 n >= 1000 only hapstab's claim is checked (stable at 8 points of (0, lo), NOT stable just above
 hi) to keep the time short.
 """
-import cmath
 import math
-import random
 from fractions import Fraction as Q
 
 import mpmath as mp
 import numpy as np
 
-from indep_common import Rational, fstr, pmul, poly_str
+from indep_common import Rational, pmul
 
 DPS = 50
 
@@ -328,7 +326,6 @@ def sup_reference(loop, Knom, precise=True):
     if bracket is None:
         return dict(kind="inf", value=mp.inf, scanned_to=grid[-1])
     a, b = bracket
-    ksup_scan = None
     if precise:
         with mp.workdps(DPS):
             a, b = mp.mpf(a), mp.mpf(b)

@@ -31,13 +31,12 @@ The reference value is the largest candidate; its error bound is the winning can
 """
 import cmath
 import math
-import random
 from fractions import Fraction as Q
 
 import mpmath as mp
 import numpy as np
 
-from indep_common import Rational, SumTF, dec, fstr, golden_section
+from indep_common import Rational, SumTF, fstr, golden_section
 
 GOLD = (math.sqrt(5) - 1) / 2
 

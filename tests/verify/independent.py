@@ -251,7 +251,6 @@ def case_bound_max(rng):
     B = IP.rq(rng, 0.1, 5)
     fam0 = rng.choices(["wall", "tustin", "random", "wall+resonance"], weights=[35, 20, 25, 20])[0]
     t0 = []
-    res = False
     if fam0 == "wall":
         t0.append(IP.Rational([B, -B], [T, 0]))
     elif fam0 == "tustin":
@@ -259,7 +258,6 @@ def case_bound_max(rng):
     elif fam0 == "random":
         t0.append(IP.stable_term(rng))
     else:
-        res = True
         t0.append(IP.Rational([B, -B], [T, 0]))
         t0.append(IP.stable_term(rng, resonant=True))
     fam1 = rng.choices(["stiffness", "damping", "tustin damping", "random"], weights=[35, 25, 15, 25])[0]
