@@ -1606,7 +1606,11 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
                          std::to_string(cov.checks) + " steps)";
   const std::string crossing = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
                                numeric_decimal(static_cast<double>(e.p.hi), 17) + "] is certified";
-  if (!closed && top - out.stable_to > top * rational(std::pow(10.0, -digits - 1))) {  // the walk stopped short
+  // The walk stopped short: sup is still in [stable_to, unstable_at] (stable on (0, stable_to], NOT stable just above
+  // the crossing), so within 10^-6 (relative) of it the supremum is stated with the digits its two ends share (fewer
+  // than --digits, and said so); beyond, undecided.
+  const bool short_of = !closed && top - out.stable_to > top * rational(std::pow(10.0, -digits - 1));
+  if (short_of && out.gap > 1e-6) {
     out.note = crossing + " and " + on + ", but the walk stopped " + numeric_decimal(out.gap, 6) +
                " (relative) short of the crossing: the supremum is not enclosed to 10^-" + std::to_string(digits);
     return out;
@@ -1640,7 +1644,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   if (closed) o << "So the supremum of the stable interval is the crossing, enclosed";
   else
     o << "The supremum lies in [" << decimal_outward(out.stable_to, 6, -1) << ", crossing]: the crossing is it unless an eigenvalue "
-      << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered";
+      << "leaves and re-enters the disk within the last " << out.gap << " (relative) below it, which no certificate covered"
+      << (short_of ? " (so fewer digits than --digits " + std::to_string(digits) + ": those the two ends share)" : std::string());
   out.note = o.str();
   return out;
 }

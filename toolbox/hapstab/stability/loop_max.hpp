@@ -59,7 +59,8 @@
 // an eigenvalue strictly outside the circle (a Stein inertia certificate on the ball M0), so has
 // M(p) for every small p > 0: sup = 0 (outcome fails, certified). The supremum then lies in
 // [stable_to, crossing.hi]; when the walk ends short of its target the relative gap not covered is
-// reported (`gap`) and the printed digits are only those the two ends share. Step 1 can miss
+// reported (`gap`) and the printed digits are only those the two ends share -- fewer than --digits where the gap
+// exceeds 10^-(digits+1) but not 10^-6 (beyond: undecided, with [stable_from, stable_to]). Step 1 can miss
 // nothing that steps 2-4 would then hide: a crossing below the one found stops a walk.
 // Before step 1 the controller's modes that no p moves (an environment's unobservable states:
 // Ku(p) V = 0, Kx(p) V in V, the V block constant) are deflated exactly and checked Schur stable
