@@ -516,7 +516,18 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       throw InputError("--max " + o.max_name + ": " + std::to_string(sc.loop.dofs()) + " DOFs, not split by identical DOFs (" +
                        no_split + "): the whole closed-loop matrix's supremum is refused beyond " + std::to_string(stability::kWholeMaxDofs) +
                        " DOFs (its cover of eigenvalue enclosures costs minutes to hours there)");
-    const stability::LoopMax m = split ? split->whole : stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
+    stability::LoopMax m = split ? split->whole : stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
+    if (!split && m.outcome == Outcome::undecided && !o.no_symmetry) {
+      // undecided on the whole where the loop splits (a crossing repeated by identical DOFs in classes of two defeats
+      // Krawczyk's enclosure of one simple eigenvalue; a walk stalled beside an eigenvalue of another block): the
+      // split's small loops, every block affine, and their answer where it decides
+      const std::optional<std::string> blocks_not_affine = stability::split_not_affine(at, reference, o.max_name, points);
+      std::string why;
+      if (blocks_not_affine && blocks_not_affine->empty())
+        if (auto s = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), why);
+            s && s->whole.outcome != Outcome::undecided)
+          split = std::move(s), m = split->whole;
+    }
     // an undecided supremum writes no certificate and keeps its exit code 3 (docs/certificates.md)
     const nlohmann::json certified =
         o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, m, split.has_value());
