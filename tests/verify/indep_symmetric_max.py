@@ -8,7 +8,9 @@ Scenes: N = 3-24 DOFs in 2-3 interleaved classes, the same draws as the certific
 a damper or a damper and a spring; delays 0-2), the maximised parameter the environment's gain g, or (a quarter
 of the draws) Kx added inside every wall, diagonal "Kx + K[i] + B[i]*(z-1)/(T*z)" (Kx = 100 in the scene; the
 reference adds it to every class's K); with no delay, in 40 % of those draws a coupling V = cv/z on every DOF
-(cv = 1/5000, 1/20000 or 1/100000; the reference: x_e = x + V u, u_k = -(E x_e)_k). The reference's supremum: the whole's
+(cv = 1/5000, 1/20000 or 1/100000; the reference: x_e = x + V u, u_k = -(E x_e)_k); since stop 77, in 15 % of the
+draws (a stream of its own) links that push the first class's DOFs apart, v_0 = -(1.1..2) K_0 / u_0, so that its
+zero-sum stiffness is negative and g may move free positions out at first order (sup = 0 by the mirror). The reference's supremum: the whole's
 spectral radius rho(g) in double on 400 points geometric in [g0 10^-4, g0 10^4] (g0 the drawn value; Kx: 100), the first
 point with rho >= 1 - 1e-12 bisected against the last below to 1e-13 relative: sup_ref; every point below it
 stable (rho < 1 - 1e-12) is what the grid can show. Required: hapstab's certified sup (exit 0) within 1e-6
@@ -121,8 +123,9 @@ def run_case(exe, c, tmp):
     if refused:
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     ref = reference_sup(c)
-    tag = "%s, N %d, %d classes, delay %d, springs %d%s" % (c["max"], c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]),
-                                                        ", coupling 1/%d z" % round(1 / c["cv"]) if c.get("cv") else "")
+    tag = "%s, N %d, %d classes, delay %d, springs %d%s%s" % (c["max"], c["N"], len(c["classes"]), c["n"], sum(x["ko"] > 0 for x in c["classes"]),
+                                                          ", coupling 1/%d z" % round(1 / c["cv"]) if c.get("cv") else "",
+                                                          ", pushing links" if c.get("push") else "")
     if r.returncode == 3:
         return None, "undecided (sup_ref %s; %s)" % (ref, tag), "undecided"
     if r.returncode not in (0, 1):
@@ -165,11 +168,16 @@ def main(argv):
     if "--mutants-every" in argv:
         MUTATE["every"] = int(argv[argv.index("--mutants-every") + 1])
     rng = random.Random("symmetric-max:%d" % seed)
+    push = random.Random("symmetric-max-push:%d" % seed)  # its own stream: the draws above stay those of earlier stops
     def draw():
         c = ISC.draw(rng, (3, 24))
         c["max"] = "Kx" if rng.random() < 0.25 else "g"
         if c["n"] == 0 and rng.random() < 0.4:  # a coupling V = cv/z on every DOF (split with E by both checkers)
             c["cv"] = 1 / rng.choice([5000, 20000, 100000])
+        if push.random() < 0.15 and c["classes"][0]["u"] > 0:  # links that push class 0's DOFs apart (v < 0): its zero-sum
+            k0 = c["classes"][0]  # stiffness K - u |v| < 0, so g may move free positions OUT at first order (the mirror)
+            k0["v"] = -round(k0["K"] / k0["u"] * push.uniform(1.1, 2.0))
+            c["push"] = True
         return c
     counts, bad = run_cases(cases, draw, lambda c, tmp: run_case(exe, c, tmp), "hapstab-sym-max-")
     print("indep_symmetric_max: %d cases, %d disagree; %s; %d certificates verified, %d mutants each given its exit code by both" % (
