@@ -457,6 +457,19 @@ std::string dependence(const StabilityOpts& o, const scene::Scene& sc, const sta
   return "";
 }
 
+// Undecided on the whole where the loop splits (a crossing repeated by identical DOFs in classes of two defeats
+// Krawczyk's enclosure of one simple eigenvalue; a walk stalled beside an eigenvalue of another block): the split's
+// small loops, every block affine, and their answer where it decides; else nullopt.
+std::optional<stability::LoopMaxSplit> split_where_whole_undecided(const StabilityOpts& o, const stability::LoopAt& at, const rational& reference,
+                                                                   long points) {
+  const std::optional<std::string> blocks_not_affine = stability::split_not_affine(at, reference, o.max_name, points);
+  if (!blocks_not_affine || !blocks_not_affine->empty()) return std::nullopt;
+  std::string why;
+  auto s = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), why);
+  if (s && s->whole.outcome != Outcome::undecided) return s;
+  return std::nullopt;
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
   if (!o.certificate.empty() && o.conservatism)
     throw InputError("--certificate: stability --max --conservatism has no certificate (Theorem 5's side is a bracket of LMI "
@@ -517,17 +530,8 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
                        no_split + "): the whole closed-loop matrix's supremum is refused beyond " + std::to_string(stability::kWholeMaxDofs) +
                        " DOFs (its cover of eigenvalue enclosures costs minutes to hours there)");
     stability::LoopMax m = split ? split->whole : stability::max_parameter(at, reference, o.max_name, points, std::min(o.digits, 60));
-    if (!split && m.outcome == Outcome::undecided && !o.no_symmetry) {
-      // undecided on the whole where the loop splits (a crossing repeated by identical DOFs in classes of two defeats
-      // Krawczyk's enclosure of one simple eigenvalue; a walk stalled beside an eigenvalue of another block): the
-      // split's small loops, every block affine, and their answer where it decides
-      const std::optional<std::string> blocks_not_affine = stability::split_not_affine(at, reference, o.max_name, points);
-      std::string why;
-      if (blocks_not_affine && blocks_not_affine->empty())
-        if (auto s = stability::max_parameter_by_symmetry(at, reference, o.max_name, points, std::min(o.digits, 60), why);
-            s && s->whole.outcome != Outcome::undecided)
-          split = std::move(s), m = split->whole;
-    }
+    if (!split && m.outcome == Outcome::undecided && !o.no_symmetry)
+      if ((split = split_where_whole_undecided(o, at, reference, points))) m = split->whole;
     // an undecided supremum writes no certificate and keeps its exit code 3 (docs/certificates.md)
     const nlohmann::json certified =
         o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, m, split.has_value());
