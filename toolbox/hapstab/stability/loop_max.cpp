@@ -523,7 +523,7 @@ struct ZeroDiscs {
   // is convex in t) + the radius at e (increasing in t) < 1.
   bool second_inside(const Ball& e) const {
     for (long i = k; i < n; ++i) {
-      Ball z, a, t;
+      Ball z, a;
       for (long j = k; j < n; ++j) {
         if (j == i) continue;
         a = abs_of(B, i, j);
@@ -894,7 +894,7 @@ struct Cover {
     const MatQ& V = integrators;
     const long k = V.cols();
     if (k == 0 || k == n || V.rows() != n) return 0;
-    rational best(0);  // the larger of the two bases' (an ill-conditioned eigenbasis can give eps ~ 1e-15)
+    rational best(0);  // the largest of the three bases' (an ill-conditioned eigenbasis can give eps ~ 1e-15)
     for (const int basis : {0, 1, 2}) {
       Eigen::MatrixXcd R2;
       if (!(basis == 1 ? complement_by_schur(R2, k) : complement_by_eigenvectors(R2, k, basis == 2))) continue;
