@@ -518,13 +518,16 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
     // the block NOT stable at hi: the first whose Stein inertia shows it
     std::optional<size_t> deciding;
     nlohmann::json un;
-    for (size_t b = 0; b < blocks.size() && !deciding; ++b) {
-      flint::BallPrecision scope(kBits);
-      const Mat L = !blocks[b].m1.right_quotient ? check::detail::slow_rows(blocks[b].loop1, blocks[b].loop2, blocks[b].m1) : Mat{};
-      const std::string no = hi == 0 ? zero_evidence(blocks[b].m1.M, blocks[b].m2.M, blocks[b].m1, blocks[b].m2, name, L, m.first_order_to, un)
-                                     : unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un);
-      if (no.empty()) deciding = b;
-    }
+    // Stein inertia on every block first; with hi = 0 then the first-order mirror (its SDPs are tried only where no
+    // block's Stein inertia serves)
+    for (int pass = 0; pass < (hi == 0 ? 2 : 1) && !deciding; ++pass)
+      for (size_t b = 0; b < blocks.size() && !deciding; ++b) {
+        flint::BallPrecision scope(kBits);
+        const Mat L = !blocks[b].m1.right_quotient ? check::detail::slow_rows(blocks[b].loop1, blocks[b].loop2, blocks[b].m1) : Mat{};
+        const std::string no = pass == 1 ? zero_evidence(blocks[b].m1.M, blocks[b].m2.M, blocks[b].m1, blocks[b].m2, name, L, m.first_order_to, un)
+                                         : unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un);
+        if (no.empty()) deciding = b;
+      }
     if (!deciding) {
       why = "no block with a Stein inertia certificate that " + name + " = " + phi + " is NOT stable";
       continue;
