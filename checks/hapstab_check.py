@@ -3838,9 +3838,13 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
             if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
                 raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
     count = len(a1) + len(r1) - own1
-    if inside and count:  # the checker's own (a --plant device's position, from the plant alone) stays
-        raise Malformed("model.scene: a loop with conserved quantities and %s inside the %s's tf (the quotient's basis may move "
-                        "with it): beyond this kind" % (p, block))
+    # p inside the tf: the conserved rows come from A, B alone (the plant's l^T [A B] = 0, a block's uncontrollable
+    # z = 1), the same at every p; a block's unobservable z = 1 (C r = 0) could move with C(p): refused
+    if inside and (r1 or r2):
+        raise Malformed("model.scene: a block's unobservable z = 1 (a quotient by right eigenvectors) with %s inside the %s's tf"
+                        ": beyond this kind (the right eigenvectors are not shown the same at every %s)" % (p, block, p))
+    if inside and (L1 != L2 or a1 != a2):
+        return False, "the conserved quantities' rows differ at %s = 1 and 2 (with A and B equal they cannot)" % p, 0, 0
     if count != len(a2) + len(r2) - own2:
         return False, "the conserved quantities differ at %s = 1 and 2" % p, 0, 0
     if count != k:

@@ -3,8 +3,8 @@ for `stability --scene S --max NAME`, both checkers verify it, and each hand edi
 code it must from both (1 refuted: the evidence does not prove the edited claim; 2 malformed: the model
 is beyond the kind). The ctests certificate_loop_max* run it on tests/cli/scenes/loop_max_held_devices.toml (the
 environment's gain), integrator_devices_2dof.toml (the first-order start), loop_max_wall_stiffness.toml (the
-parameter inside the wall's tf), loop_max_free_wall_stiffness.toml (both) and loop_max_zero_outward.toml (sup = 0 by
-the first-order mirror).
+parameter inside the wall's tf), loop_max_free_wall_stiffness.toml (both), loop_max_wall_stiffness_conserved.toml (inside
+the tf beside a conserved quantity) and loop_max_zero_outward.toml (sup = 0 by the first-order mirror).
 
   loop_max_case.py HAPSTAB SCENE NAME
   loop_max_case.py HAPSTAB plant NAME --plant P --H H --T T [--delay n]   (the one-DOF loop, a device pole off s = 0)
@@ -155,6 +155,12 @@ def mutants(cert, name):
                 ("an entry whose pole cancels at %s = 1" % name,
                  with_field(cert, ["model", "scene"], text.replace(term, '"(z-%s)/(z-1) - 1 + %s + ' % (name, name), 1)), 2),
                 ("the parameter in an ss wall", with_field(cert, ["model", "scene"], text.replace(line, ss)), 2)]
+        if claim.get("conserved") and "[delay]" in text and "[coupling]" not in text:  # conserved rows beside it (since stop 78)
+            V = 'ss = { A = [["1"]], B = [[%s]], C = [%s], D = [%s] }\n\n' % (
+                ", ".join(['"1"'] + ['"0"'] * (N - 1)), ", ".join(['["0"]'] * N), ", ".join(["[" + ", ".join(['"0"'] * N) + "]"] * N))
+            out += [("the conserved quantities not claimed", deleted(cert, ["claim", "conserved"]), 1),
+                    ("an ss coupling with an unobservable z = 1 beside it (a quotient by right eigenvectors)",
+                     with_field(cert, ["model", "scene"], text.replace("[delay]", "[coupling]\n" + V + "[delay]")), 2)]
     if 'B = "5"' in text:
         out.append(("the gain named in another expression too", with_field(cert, ["model", "scene"], text.replace('B = "5"', 'B = "5*%s/%s"' % (name, name))), 2))
     fo = cert["evidence"].get("first_order")

@@ -23,8 +23,8 @@ reference's rho > 1 at eps/10 and eps too; undecided (exit 3) counted apart, nev
 was used, the certificate (kind stability-loop-max-symmetric) verified by both checkers (the independent one within
 its 128 DOFs) and, on every K-th such case (--mutants-every K, default 1), each hand edit of
 tests/cli/symmetric_max_case.py's max_mutants() given its exit code by both. A certificate refused by name (exit
-2 naming --certificate: Kx with conserved quantities, beyond the kind) is counted apart, the answer compared
-without it.
+2 naming --certificate: beyond the kind; until stop 78 Kx with conserved quantities) is counted apart, the answer
+compared without it.
 
   indep_symmetric_max.py HAPSTAB [--cases N] [--seed S] [--mutants-every K]
 exit 0 when every compared case agrees, else 1.

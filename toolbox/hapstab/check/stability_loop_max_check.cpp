@@ -416,9 +416,13 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
     out.order = m1.order, out.conserved = m1.conserved, out.bits = bits;
     if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
       return {false, not_affine};
-    if (r.inside && m1.conserved != 0)  // the checker's own (a --plant device's position: from the plant alone) stays
-      throw InputError("model.scene: a loop with conserved quantities and " + p + " inside the " + block +
-                       "'s tf (the quotient's basis may move with it): beyond this kind");
+    // p inside the tf (header): the conserved rows come from A, B alone, the same at every p; a block's
+    // unobservable z = 1 (right eigenvectors, C r = 0) could move with C(p): refused
+    if (r.inside && (m1.right_quotient || m2.right_quotient))
+      throw InputError("model.scene: a block's unobservable z = 1 (a quotient by right eigenvectors) with " + p + " inside the " + block +
+                       "'s tf: beyond this kind (the right eigenvectors are not shown the same at every " + p + ")");
+    if (r.inside && m1.embedding != m2.embedding)
+      return {false, "the conserved quantities' rows differ at " + p + " = 1 and 2 (with A and B equal they cannot: a checker defect)"};
     if (m1.feedthrough_loop || m2.feedthrough_loop)
       throw InputError("model.scene: D_E D_V or D_V D_E is not 0 (u and x_e solved through (I + D_E D_V)^-1): the loop is not affine "
                        "in " + p + ", beyond this kind");

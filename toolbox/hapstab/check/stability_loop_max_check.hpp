@@ -22,8 +22,11 @@
 // Where a pole of E cancels at some p, the loop as written drops the cancelled modes; its eigenvalues are
 // then a subset of R(p)'s (the modes of a controllable realisation: the minimal ones and its unobservable
 // ones, roots of the lcm, which divides L_j), so R(p) Schur stable still proves the loop as written stable.
-// D_E D_V = D_V D_E = 0 is checked at p = 1 and 2 (so at every p). Conserved quantities are beyond this case
-// (refused by name: the quotient's basis could move with p).
+// D_E D_V = D_V D_E = 0 is checked at p = 1 and 2 (so at every p). Conserved quantities (since stop 78): the
+// rows l with l^T M = l^T are the plant's (l^T [A B] = 0, no p in it) and a block's uncontrollable z = 1
+// (l^T (A - I) = 0, l^T B = 0: A, B, fixed in p), so the rows and the quotient's embedding x = E y are the
+// same at every p -- checked equal at 1 and 2 -- and M_q(p), a fixed linear map of M(p), is affine as M(p) is.
+// A block's unobservable z = 1 (r with (A - I) r = 0, C r = 0: with C(p) it could move) is refused by name.
 // Affine in p, the gain case (verified, not assumed): the block realised column by column over the monic lcm of each
 // column's denominators (the same for every p != 0) has A, B independent of p and C, D proportional
 // to it -- checked exactly on the realisations read at p = 1 and p = 2 (A, B equal; C, D doubled; the
