@@ -3465,6 +3465,69 @@ def block_slot(blk, zero_sum, sizes, seen, where):
     return slot, copies, kb
 
 
+def check_stability_loop_verdicts(c):
+    """stability-loop-verdicts (C++ check/stability_loop_verdicts_check.hpp): the certified verdicts of the scene's
+    loop at values of one parameter (the bisection on verdicts, where the loop is not affine in it): one whole
+    stability-loop (or stability-loop-symmetric) certificate per claimed value, whose model is exactly the scene
+    with that value set and whose claim.stable is the one claimed, each checked by its own kind's checker here."""
+    model, claim, evidence = parts(c)
+    only(model, ("scene", "set", "name"), "model")
+    only(claim, ("quantity", "status", "verdicts"), "claim")
+    only(evidence, ("verdicts",), "evidence")
+    if not isinstance(model.get("scene"), str):
+        raise Malformed("model.scene: missing or not a string")
+    name = model.get("name")
+    if not isinstance(name, str) or not name:
+        raise Malformed("model.name: missing or not a parameter's name")
+    if not isinstance(model.get("set"), dict):
+        raise Malformed("model.set: missing or not an object")
+    if name in model["set"]:
+        raise Malformed("model.set: gives %s a value (the parameter whose verdicts are claimed)" % name)
+    if claim.get("status") != "certified":
+        raise Malformed("claim.status: missing or not \"certified\"")
+    verdicts = claim.get("verdicts")
+    if not isinstance(verdicts, list) or not 1 <= len(verdicts) <= 64:
+        raise Malformed("claim.verdicts: not an array of 1..64 verdicts")
+    proofs = evidence.get("verdicts")
+    if not isinstance(proofs, list) or len(proofs) != len(verdicts):
+        raise Malformed("evidence.verdicts: not an array of one certificate per claimed verdict")
+    seen, stable = set(), 0
+    for i, (v, part) in enumerate(zip(verdicts, proofs)):
+        at, ev = "claim.verdicts[%d]" % i, "evidence.verdicts[%d]" % i
+        if not isinstance(v, dict):
+            raise Malformed(at + ": not an object {at, stable}")
+        only(v, ("at", "stable"), at)
+        value = exact(v, "at", at)
+        if value in seen:
+            raise Malformed(at + ".at: %s twice" % value)
+        seen.add(value)
+        if not isinstance(v.get("stable"), bool):
+            raise Malformed(at + ".stable: missing or not true/false")
+        if not isinstance(part, dict) or not isinstance(part.get("kind"), str):
+            raise Malformed(ev + ": not a certificate object with a kind")
+        kind = part["kind"]
+        if kind not in ("stability-loop", "stability-loop-symmetric"):
+            raise Malformed(ev + ".kind: %r, not stability-loop or stability-loop-symmetric" % kind)
+        if part.get("certificate") != "hapstab" or part.get("version") != 1 or isinstance(part.get("version"), bool):
+            raise Malformed(ev + ": not a hapstab certificate of version 1")
+        want_set = dict(model["set"])
+        want_set[name] = v["at"]
+        if part.get("model") != {"scene": model["scene"], "set": want_set}:
+            raise Malformed(ev + ".model: not the scene as written with its set and %s = %s (each verdict must be about the "
+                            "model of this certificate)" % (name, v["at"]))
+        if not isinstance(part.get("claim"), dict) or part["claim"].get("stable") is not v["stable"]:
+            raise Malformed(ev + ".claim.stable: not the verdict claimed at %s = %s" % (name, value))
+        try:
+            ok, why = (check_stability_loop if kind == "stability-loop" else check_stability_loop_symmetric)(part)
+        except Malformed as e:
+            raise Malformed(ev + ": " + str(e))
+        if not ok:
+            return False, "%s (%s = %s): %s" % (ev, name, value, why)
+        stable += v["stable"]
+    return True, ("%d verdicts of the scene's loop along %s (%d stable, %d NOT stable), each a stability-loop certificate "
+                  "verified on the scene with %s set" % (len(verdicts), name, stable, len(verdicts) - stable, name))
+
+
 def check_stability_loop_symmetric(c):
     """stability-loop-symmetric (C++ check/stability_loop_symmetric_check.hpp): the scene's loop split by the
     permutations of identical DOFs (evidence.classes; the invariance checked here on the scene as written), each
@@ -5593,7 +5656,8 @@ def check(c):
                     "r": check_r, "stability": check_stability, "stability-max": check_stability_max,
                     "stability-loop": check_stability_loop, "stability-loop-max": check_stability_loop_max,
                     "stability-loop-symmetric": check_stability_loop_symmetric,
-                    "stability-loop-max-symmetric": check_stability_loop_max_symmetric, "wedge": check_wedge}
+                    "stability-loop-max-symmetric": check_stability_loop_max_symmetric,
+                    "stability-loop-verdicts": check_stability_loop_verdicts, "wedge": check_wedge}
         kind = c.get("kind")
         if not isinstance(kind, str) or kind not in checkers:
             raise Malformed("kind: %r has no checker (known: %s)" % (kind, ", ".join(sorted(checkers))))

@@ -99,7 +99,6 @@ std::vector<Case> catalogue_first() {
       {"stability", "--T", {"--plant", "1/s^2", "--H", "1", "--T", "0"}, "--T"},
       {"stability", "--certificate", {"--plant", "1/(s^2 + s)", "--H", "K", "--T", "1/10", "--max", "K", "--delay", "200", "--certificate", "c.json"},
        "the closed loop has 202 states, beyond this checker's 160"},
-      {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/examples/000_two_dof_loop.toml", "--max", "k", "--certificate", "c.json"}, "the bisection on verdicts has no certificate form"},
       {"stability", "--certificate", {"--scene", std::string(HAPSTAB_SOURCE_DIR) + "/tests/cli/scenes/identical_walls_1001.toml", "--certificate", "c.json"}, "device[1].count: 1001 copies, more than 256"},
       {"stability", "--certificate", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--certificate", "/nonexistent/c.json"}, "--certificate: cannot write"},
       {"stability", "--delay", {"--plant", "1/s^2", "--H", "1", "--T", "1", "--delay", "-1"}, "--delay"},

@@ -894,6 +894,27 @@ nlohmann::json stability_loop_certificate(const StabilityText& text, const ratio
   return j;
 }
 
+nlohmann::json stability_loop_verdicts_certificate(const std::string& scene, const std::vector<std::string>& sets, const rational& T,
+                                                   const std::string& name, const std::vector<std::pair<rational, bool>>& verdicts) {
+  nlohmann::json j = certificate_header("stability-loop-verdicts");
+  j["model"] = scene_model_json(scene, sets);
+  j["model"]["name"] = name;
+  nlohmann::json claimed = nlohmann::json::array(), parts = nlohmann::json::array();
+  for (const auto& [at, stable] : verdicts) {
+    std::vector<std::string> with = sets;
+    with.push_back(name + "=" + at.str());
+    claimed.push_back({{"at", at.str()}, {"stable", stable}});
+    parts.push_back(stability_loop_certificate({"", "", "", 0, with, scene}, T, stable));
+  }
+  j["claim"] = {{"quantity", "the certified verdicts of the scene's loop at the values of " + name + " tried (the loop is not affine in " +
+                                 name + ": no supremum is claimed, stability between these values is not)"},
+                {"status", "certified"},
+                {"verdicts", claimed}};
+  j["evidence"] = {{"verdicts", parts}};
+  verify_before_writing(j);
+  return j;
+}
+
 namespace {
 
 // A short rational in (0, x), x > 0: the first continued-fraction convergent of x/2 there.

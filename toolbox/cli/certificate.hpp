@@ -108,6 +108,13 @@ bool beyond_stability_kind(const stability::Loop& loop);
 /// when the checker does not take the model or no P proves the verdict.
 nlohmann::json stability_loop_certificate(const StabilityText& text, const rational& T, bool stable);
 
+/// The certificate of kind stability-loop-verdicts (check/stability_loop_verdicts_check.hpp) of `stability --scene S
+/// --max NAME` where the loop is not affine in NAME (the bisection on verdicts): one stability-loop certificate per
+/// (value, verdict) of `verdicts`, each of the scene with NAME set to the value. Checked before it is returned;
+/// InputError (exit 2) when a verdict has no certificate.
+nlohmann::json stability_loop_verdicts_certificate(const std::string& scene, const std::vector<std::string>& sets, const rational& T,
+                                                   const std::string& name, const std::vector<std::pair<rational, bool>>& verdicts);
+
 /// Parlett-Reinsch balancing by powers of two: e with D^-1 M D (D = diag(2^e)) of comparable off-diagonal row
 /// and column norms; a Stein P of the balanced matrix maps back exactly (P = D^-1 P_b D^-1, a congruence).
 std::vector<int> balancing_exponents(const Eigen::MatrixXd& M);

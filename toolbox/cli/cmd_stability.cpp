@@ -409,10 +409,22 @@ void add_split_json(nlohmann::json& j, const stability::LoopMaxSplit& s) {
   j["blocks"] = blocks;
 }
 
-[[noreturn]] void refuse_bisection_certificate(const StabilityOpts& o, const std::string& not_affine) {
-  throw InputError("--certificate: the closed loop is not affine in " + o.max_name + " (" + not_affine +
-                   "): the bisection on verdicts has no certificate form (`--set " + o.max_name + "=VALUE --certificate FILE` "
-                   "certifies one verdict): no certificate");
+// The certificate of the bisection on verdicts (kind stability-loop-verdicts): the verdicts the answer states --
+// stable at lo and NOT stable at hi, or every proven one (NOT stable at every value tried, stable at every value
+// tried); an undecided answer has none. Its line of text, or "" without --certificate.
+std::string write_verdicts_certificate(const StabilityOpts& o, const scene::Scene& sc, const conservatism::VerdictBracket& b,
+                                       nlohmann::json& j) {
+  if (o.certificate.empty()) return "";
+  if (b.outcome == Outcome::undecided) return "  certificate: none written (an undecided answer has none)\n";
+  std::vector<std::pair<rational, bool>> verdicts;
+  if (b.lo && b.hi) verdicts = {{b.lo->at, true}, {b.hi->at, false}};
+  else
+    for (const auto& v : b.steps)
+      if (v.proven()) verdicts.emplace_back(v.at, *v.yes);
+  cli::write_certificate(o.certificate, cli::stability_loop_verdicts_certificate(o.scene, o.sets, sc.T, o.max_name, verdicts));
+  j["certificate_claim"] = {{"verdicts", verdicts.size()}};
+  return "  certificate " + o.certificate + ": " + std::to_string(verdicts.size()) + " certified verdicts of the loop at values of " +
+         o.max_name + " (each a stability-loop certificate; verified before it was written)\n";
 }
 
 // The text of a certified supremum (loop_max_json's fields j), on the whole or the split (`split`, else null).
@@ -501,7 +513,6 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
   std::string text;
   progress.stage(not_affine.empty() ? "the supremum: certified crossing of the closed-loop matrix"
                                      : "the supremum: bisection on certified verdicts");
-  if (!not_affine.empty() && !o.certificate.empty()) refuse_bisection_certificate(o, not_affine);
   if (!not_affine.empty()) {
     const conservatism::VerdictBracket b = conservatism::exact_max_by_verdicts(at, reference, o.max_name, std::min(o.digits, 12));
     j = verdict_change_json(b, o, not_affine);
@@ -520,7 +531,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
     }
     t << "  " << b.note << "\n  (the certified crossing of --max does not apply, it needs the closed loop proven affine in "
       << o.max_name << ": " << not_affine << ")\n";
-    text = t.str();
+    text = t.str() + write_verdicts_certificate(o, sc, b, j);
   } else {
     std::optional<stability::LoopMaxSplit> split;
     std::string no_split = o.no_symmetry ? "--no-symmetry" : "no split pays";

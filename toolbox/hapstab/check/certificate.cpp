@@ -27,6 +27,7 @@
 #include "hapstab/check/stability_loop_max_check.hpp"
 #include "hapstab/check/stability_loop_max_symmetric_check.hpp"
 #include "hapstab/check/stability_loop_symmetric_check.hpp"
+#include "hapstab/check/stability_loop_verdicts_check.hpp"
 #include "hapstab/check/stability_max_check.hpp"
 #include "hapstab/check/wedge_check.hpp"
 #include "hapstab/lti/parse.hpp"
@@ -325,8 +326,9 @@ Verdict check_certificate(const nlohmann::json& c) {
   if (kind == "stability-loop-max") return check_stability_loop_max(c);
   if (kind == "stability-loop-max-symmetric") return check_stability_loop_max_symmetric(c);
   if (kind == "stability-loop-symmetric") return check_stability_loop_symmetric(c);
+  if (kind == "stability-loop-verdicts") return check_stability_loop_verdicts(c);
   if (kind == "wedge") return check_wedge(c);
-  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, operator-passivity, passivity-level, passivity-level-mimo, r, stability, stability-loop, stability-loop-max, stability-loop-max-symmetric, stability-loop-symmetric, stability-max, wedge)");
+  throw InputError("kind: '" + kind + "' has no checker (known: bound, bound-max, limit-cycle, multidof-coupling, multidof-coupling-symmetric, multidof-facial, multidof-feasible, multidof-feasible-symmetric, multidof-witness, operator-passivity, passivity-level, passivity-level-mimo, r, stability, stability-loop, stability-loop-max, stability-loop-max-symmetric, stability-loop-symmetric, stability-loop-verdicts, stability-max, wedge)");
 }
 
 Verdict check_file(const std::string& path) {
