@@ -1182,6 +1182,26 @@ def check_claim_points(loop, pts, want_stable):
     return None
 
 
+def verdicts_certificate(exe, path, c, timeout, tags):
+    """Since stop 78 the bisection's answer writes kind stability-loop-verdicts: the same command with --certificate,
+    the certificate through both checkers (the verdicts themselves are compared with the loop built here above).
+    A refusal by name is counted apart; a refuted or malformed certificate, or a claimed value that is not among the
+    answer's, is a miss (returned as its reason)."""
+    cert = path[:-5] + ".verdicts.json"
+    r = run_hapstab(exe, ["stability", "--scene", path, "--max", "g", "--digits", "25", "--certificate", cert], timeout)
+    if not os.path.exists(cert):
+        # exit 3 without one: the answer undecided (stable at lo, the next value undecided), which has none
+        tags["verdicts certificate"] = {2: "refused by name", 3: "none (undecided)"}.get(r[0], "not written (exit %s)" % r[0])
+        return None if r[0] in (2, 3) else "no certificate of the bisection's verdicts (exit %s): %s" % (r[0], r[2][-200:])
+    codes = [subprocess.run(cmd + [cert], capture_output=True, text=True).returncode
+             for cmd in ([exe, "check"], [sys.executable, str(ROOT / "checks" / "hapstab_check.py")])]
+    os.unlink(cert)
+    if codes != [0, 0]:
+        return "the bisection's verdicts certificate: hapstab check exit %d, independent %d" % tuple(codes)
+    tags["verdicts certificate"] = "verified by both"
+    return None
+
+
 def check_scene_coupling(c, exe, timeout):
     text = ICP.scene_toml(c, c["gref"])
     rc, j, err, dt, args, path = run_hapstab_scene(exe, text, "indep_coupled_", ["--max", "g", "--digits", "25"], timeout)
@@ -1229,6 +1249,10 @@ def check_scene_coupling(c, exe, timeout):
                 bad.append(f"hapstab: NOT stable at every value tried (g_ref 2^-k), but rho = {mp.nstr(f_[1], 20)} at g = {mp.nstr(f_[0], 20)}")
         if rc == 0 and not (sa and ua):
             bad.append("exit 0 without a certified bracket (stable_at and unstable_at)")
+        if rc in (0, 1) or (rc == 3 and sa):
+            cert_bad = verdicts_certificate(exe, path, c, timeout, tags)
+            if cert_bad:
+                bad.append(cert_bad)
         if rc == 0 and sa and ua:
             tags["bisection"] = "bracket"
         elif rc == 1:
