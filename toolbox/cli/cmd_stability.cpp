@@ -361,7 +361,8 @@ nlohmann::json point_json(const conservatism::PointVerdict& v) {
 nlohmann::json verdict_change_json(const conservatism::VerdictBracket& b, const StabilityOpts& o, const std::string& why) {
   nlohmann::json j{{"name", o.max_name}, {"path", "bisection_on_verdicts"}, {"supremum_proven", false}, {"not_affine", why},
                    {"note", b.note}, {"verdicts", b.steps.size()}, {"digits", std::min(o.digits, 12)}};
-  j["status"] = b.lo && b.hi ? "certified" : "undecided";
+  // certified: a bracket, or a certified NOT stable at every value tried (exit 1); else undecided (exit 3)
+  j["status"] = (b.lo && b.hi) || b.outcome == Outcome::fails ? "certified" : "undecided";
   j["max"] = nullptr;
   j["change_in"] = b.lo && b.hi ? enclosure_json(b.bracket(), 17) : nlohmann::json(nullptr);
   j["stable_at"] = b.lo ? point_json(*b.lo) : nlohmann::json(nullptr);

@@ -27,6 +27,23 @@ using check::rational_matrix::Mat;
 constexpr long kBits = 128;
 constexpr size_t kMaxIntervals = 2048;  // ~n^2 x 25 bytes per interval: at most ~4 MB at order 9 (the checker takes 4096)
 
+// The cover's search, over every interval, block and claim_ends' try of one certificate: at most kMaxSolves double
+// Stein solves and kMaxSdps SDPs, else the certificate is refused by name. A strongly non-normal loop (a one-way link
+// of 1000 between devices: each P holds over a sliver of p, the SDP widening tried again and again) otherwise searched
+// for minutes; the ctests' largest, the 96-DOF split, uses 2438 and 552 in 2 s.
+constexpr long kMaxSolves = 8192, kMaxSdps = 1024;
+struct Work {
+  long solves = 0, sdps = 0;
+  void solve() { check(++solves > kMaxSolves); }
+  void sdp() { check(++sdps > kMaxSdps); }
+  static void check(bool over) {
+    if (over)
+      throw InputError("--certificate: the cover's search is beyond its work limit (" + std::to_string(kMaxSolves) + " Stein solves, " +
+                       std::to_string(kMaxSdps) + " SDPs: each Stein P holds over a sliver of the parameter, a loop far from normal): "
+                       "no certificate");
+  }
+};
+
 // M(p) = (2 - p) M1 + (p - 1) M2, the checker's own formula (check/stability_loop_max_check.hpp).
 BallRows loop_at(const BallRows& M1, const BallRows& M2, const rational& p) { return check::detail::affine_loop_at(M1, M2, p); }
 
@@ -215,7 +232,8 @@ struct Found {  // an interval [a, b] of the cover, b the caller's
 };
 
 // The Stein P of M(p) (the double solve's, to 53 bits), nullopt where that solve finds M(p) not stable.
-std::optional<Mat> stein_P(const BallRows& M1, const BallRows& M2, const rational& p) {
+std::optional<Mat> stein_P(const BallRows& M1, const BallRows& M2, const rational& p, Work& work) {
+  work.solve();
   const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, p)));
   if (!d.stable || !*d.stable) return std::nullopt;
   return rounded(d.P, 53);
@@ -225,19 +243,20 @@ std::optional<Mat> stein_P(const BallRows& M1, const BallRows& M2, const rationa
 // crossing P follows M where one P cannot. The width quadrupled from the last one, halved until it passes, down to an
 // eighth of the last (narrower: the one-P interval serves).
 std::optional<Found> linear_interval(const BallRows& M1, const BallRows& M2, const rational& start, const rational& b, const rational& width,
-                                     const Mat& Pb) {
+                                     const Mat& Pb, Work& work) {
   std::string why;
   for (rational w = std::min(rational(4 * width), rational(b - start)); w >= width / 8; w /= 2) {
     const rational a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
-    auto Pa = stein_P(M1, M2, a);
+    auto Pa = stein_P(M1, M2, a, work);
     if (Pa && check::detail::bernstein_stein_holds(*Pa, Pb, loop_at(M1, M2, a), loop_at(M1, M2, b), why)) return Found{a, *Pa};
   }
   return std::nullopt;
 }
 
 // After two SDP misses in a row (near the crossing, where the margin is below the SDP's tolerance) the next 8
-// intervals skip it.
+// intervals skip it. `work`: the certificate's budget.
 struct SdpWidening {
+  Work& work;
   int misses = 0, skip = 0;
 };
 
@@ -251,6 +270,7 @@ std::optional<Found> one_p_interval(const BallRows& M1, const BallRows& M2, cons
   std::optional<Mat> P;
   for (int halving = 0; halving < 60 && !P; ++halving, w /= 2) {
     a = w == b - start ? start : std::max(start, round_down(b - w, w / 1024));
+    sdp.work.solve();
     const SchurDecision d = stein_evidence(intervals(loop_at(M1, M2, (a + b) / 2)));
     if (!d.stable || !*d.stable) continue;
     for (const int bits : {24, 53}) {
@@ -267,6 +287,7 @@ std::optional<Found> one_p_interval(const BallRows& M1, const BallRows& M2, cons
     if (a == start || sdp.skip > 0) break;
     const rational wide = b - rational(k) * (b - a);
     const rational a2 = wide <= start ? start : std::max(start, round_down(wide, (b - wide) / 1024));
+    sdp.work.sdp();
     if (auto Pw = common_stein(loop_at(M1, M2, a2), loop_at(M1, M2, b))) {
       P = Pw, a = a2, sdp.misses = 0;
     } else {
@@ -319,13 +340,13 @@ std::string zero_evidence(const BallRows& M1, const BallRows& M2, const check::d
 
 // unstable_at at hi (its Stein inertia) where `unstable`, then the cover of [start, lo].
 Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& name, const rational& lo, const rational& hi,
-                     const rational& start, const Mat& slow, bool unstable = true) {
+                     const rational& start, const Mat& slow, Work& work, bool unstable = true) {
   Attempt out;
   if (unstable)
     if (std::string why = unstable_evidence(M1, M2, name, hi, slow, out.evidence); !why.empty()) return {{}, why};
   std::vector<Piece> pieces;  // from lo down
   rational b = lo, width = lo - start;
-  SdpWidening sdp;
+  SdpWidening sdp{work};
   std::optional<Mat> P_at_b;  // the Stein P at b, kept from the last interval with P linear
   while (b > start) {
     if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) +
@@ -335,8 +356,8 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
     const std::optional<Found> one = one_p_interval(M1, M2, start, b, width, sdp);
     std::optional<Found> lin;
     if (!one || b - one->a <= width) {
-      if (!P_at_b) P_at_b = stein_P(M1, M2, b);
-      if (P_at_b) lin = linear_interval(M1, M2, start, b, width, *P_at_b);
+      if (!P_at_b) P_at_b = stein_P(M1, M2, b, work);
+      if (P_at_b) lin = linear_interval(M1, M2, start, b, width, *P_at_b, work);
     }
     if (lin && (!one || b - lin->a >= rational(5, 2) * (b - one->a))) {
       pieces.push_back({b, lin->P, *P_at_b});
@@ -409,7 +430,7 @@ std::vector<std::pair<std::string, std::string>> claim_ends(const SupClaim& m, c
 // marginally stable (slow rows: L M(0) = L) the first-order start on (0, eps] first, eps the producer's own first-order
 // cover's end (first_order_to), else lo / 4^j; unstable_at where `unstable`. nullopt with `why` when none is found.
 std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::string& name, const rational& lo, const rational& hi,
-                                            const rational& first_order_to, bool unstable, std::string& why) {
+                                            const rational& first_order_to, bool unstable, Work& work, std::string& why) {
   flint::BallPrecision scope(kBits);
   std::optional<nlohmann::json> start;
   // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
@@ -437,7 +458,7 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
     return why.empty() ? std::optional<nlohmann::json>(ev) : std::nullopt;
   }
   const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
-  Attempt a = evidence_for(lp.m1.M, lp.m2.M, name, lo, hi, from, L, unstable);
+  Attempt a = evidence_for(lp.m1.M, lp.m2.M, name, lo, hi, from, L, work, unstable);
   if (!a.why.empty()) {
     why = a.why;
     return std::nullopt;
@@ -472,8 +493,9 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
     throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
   }
   std::string why;
+  Work work;
   for (const auto& [plo, phi] : claim_ends(m, name)) {
-    const auto ev = loop_evidence(lp, name, parse_rational(plo), parse_rational(phi), m.first_order_to, true, why);
+    const auto ev = loop_evidence(lp, name, parse_rational(plo), parse_rational(phi), m.first_order_to, true, work, why);
     if (!ev) continue;
     j["evidence"] = *ev;
     j["claim"] = sup_claim_json("sup " + name + " = sup{p0 > 0: the " + (model.contains("scene") ? "scene's " : "") +
@@ -513,6 +535,7 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
     throw InputError(std::string("--certificate: the checker does not take this loop (") + e.what() + "): no certificate");
   }
   std::string why;
+  Work work;
   for (const auto& [plo, phi] : claim_ends(m, name)) {
     const rational lo = parse_rational(plo), hi = parse_rational(phi);
     // the block NOT stable at hi: the first whose Stein inertia shows it
@@ -537,7 +560,7 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
     bool all = true;
     for (size_t b = 0; b < blocks.size() && all; ++b) {
       if (hi == 0 && b != *deciding) continue;  // sup = 0: the one block
-      std::optional<nlohmann::json> ev = lo > 0 ? loop_evidence(blocks[b], name, lo, hi, 0, false, why) : nlohmann::json::object();
+      std::optional<nlohmann::json> ev = lo > 0 ? loop_evidence(blocks[b], name, lo, hi, 0, false, work, why) : nlohmann::json::object();
       if (!ev) {
         why = "block " + labels[b].dump() + ": " + why;
         all = false;

@@ -1221,7 +1221,7 @@ LoopFamily loop_family(const LoopAt& at, const rational& p1, const std::string& 
   F.dKx = (c2.Kx - c1.Kx) / p1;
   F.Ku0 = c1.Ku - F.dKu * p1;
   F.Kx0 = c1.Kx - F.dKx * p1;
-  if (F.dKu.isZero(0) && F.dKx.isZero(0)) throw InputError("--max " + name + ": the loop does not depend on " + name);
+  if (F.dKu.isZero(0) && F.dKx.isZero(0)) throw ParameterAbsent("--max " + name + ": the loop does not depend on " + name);
   // the degree bound's values (loop_max.hpp): distinct, none of them p1 or 2 p1
   const long extra = std::max<long>(points, 4) - 2;
   if (extra > 1000) throw InputError(only + "; proving it would take " + std::to_string(extra) + " more loops");

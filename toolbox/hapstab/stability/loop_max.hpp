@@ -121,6 +121,11 @@ struct LoopFamily {
   /// their matrix; M(p)'s spectrum is that of the family above and eig(fixed).
   MatQ fixed;
 };
+/// loop_family's refusal where M(p) is the same at p and 2p (p named nowhere the loop reads it): an InputError
+/// that the symmetric split tells apart (a block of the split without p is not a loop that is not affine).
+struct ParameterAbsent : InputError {
+  using InputError::InputError;
+};
 /// `points`: how many distinct values of p prove the controller rows affine, from the caller's
 /// ground (a scene: scene/parameter_degree.hpp's points_needed, from its text; a loop built in
 /// code: the degree of its construction in p). The family is built from p = reference and

@@ -181,6 +181,10 @@ std::optional<std::string> split_not_affine(const LoopAt& at, const rational& re
   BlockLoops loops{at, s0->classes, name, {}};
   try {
     for (int k = -1; k < static_cast<int>(s0->standard.size()); ++k) loop_family(loops.block(k), reference, name, points);
+  } catch (const ParameterAbsent&) {
+    // a block the parameter does not reach (identical DOFs where p is not, e.g. the scene's p = 0 making a wall like
+    // its neighbours'): no split, the whole loop answers (its supremum is not a least of the blocks' here)
+    return std::nullopt;
   } catch (const InputError& e) {
     return std::string(e.what());
   }

@@ -60,8 +60,8 @@ struct LoopMaxSplit {
 };
 
 /// The split's affinity check (loop_family on every block, `points` values; the whole's, of order ~4N, is not
-/// built: at 256 DOFs it took 20 s and 1 GB): nullopt when the loop does not split (the caller checks the whole),
-/// "" when every block is affine in p, else why not.
+/// built: at 256 DOFs it took 20 s and 1 GB): nullopt when the loop does not split, or a block does not depend on p
+/// (the caller checks the whole), "" when every block is affine in p, else why not.
 std::optional<std::string> split_not_affine(const LoopAt& at, const rational& reference, const std::string& name, long points);
 
 /// The split supremum, or nullopt with `why_not` when the loop does not split (no two DOFs alike, a
