@@ -2960,11 +2960,12 @@ def balanced_norm(A):
     return max((sum(abs(x) for x in row) for row in A), default=Fraction(0))
 
 
-def loop_matrix(loop, bits, slow=False):
+def loop_matrix(loop, bits, slow=False, exact=False):
     """stability-loop's M (C++ check/stability_loop_check.hpp) in intervals at `bits`: the plant held,
     the controller x_e = x + V u, u = -E x_e solved exactly (u = F [s; xi; eta], x_e = X [s; xi; eta]),
     the delay's buffer. `slow`: the same exactly (Fractions) with each hold e^{Ah} -> I, Gamma_h -> h B,
-    what l^T M is for every l whose plant part has l_p^T A = 0 (slow_rows)."""
+    what l^T M is for every l whose plant part has l_p^T A = 0 (slow_rows). `exact`: M exactly (Fractions)
+    where [[A, B], [0, 0]] is nilpotent (pure masses: exp of it h a finite sum), else None."""
     T, d, devices, mass, damp, stiff, ops, Eb, Vb = loop
     A, Bu, pos = loop_plant(devices, mass, damp, stiff, ops)
     N, ns = len(mass), len(A)
@@ -2975,11 +2976,25 @@ def loop_matrix(loop, bits, slow=False):
     n, f = int(d), (d - int(d)) * T  # t_d = n T + f
     aug = [A[i] + Bu[i] for i in range(ns)] + [[Fraction(0)] * (ns + N) for _ in range(N)]
 
-    cv = (lambda x: Fraction(x)) if slow else Iv
+    cv = (lambda x: Fraction(x)) if slow or exact else Iv
+    if exact:  # aug nilpotent: aug^size = 0
+        P = aug
+        for _ in range(len(aug) - 1):
+            P = mmul(P, aug)
+        if any(x != 0 for r in P for x in r):
+            return None
 
-    def hold(h):  # (Phi_h, Gamma_h) from exp([A B; 0 0] h); slow: (I, h B)
+    def hold(h):  # (Phi_h, Gamma_h) from exp([A B; 0 0] h); slow: (I, h B); exact: the finite sum of (aug h)^k / k!
         if slow:
             return [[Fraction(1 if i == j else 0) for j in range(ns)] for i in range(ns)], [[h * x for x in r] for r in Bu]
+        if exact:
+            size = len(aug)
+            X = [[Fraction(1 if i == j else 0) for j in range(size)] for i in range(size)]
+            term = [r[:] for r in X]
+            for k in range(1, size):
+                term = [[x * h / k for x in r] for r in mmul(term, aug)]
+                X = [[x + y for x, y in zip(rx, ry)] for rx, ry in zip(X, term)]
+            return [r[:ns] for r in X[:ns]], [r[ns:] for r in X[:ns]]
         X = expm_interval_n(aug, h, bits)
         return [r[:ns] for r in X[:ns]], [r[ns:] for r in X[:ns]]
 
@@ -3693,6 +3708,98 @@ def plant_wall_order(model, p):
     return len(pdivmod(pmul(H0.den, H1.den), g)[0]) - 1, D
 
 
+def newton_interpolate(xs, ys):
+    """The polynomial (ascending) of degree < len(xs) through (xs[i], ys[i]), exactly: Newton's divided differences."""
+    n = len(xs)
+    d = [Fraction(y) for y in ys]
+    for j in range(1, n):
+        for i in range(n - 1, j - 1, -1):
+            d[i] = (d[i] - d[i - 1]) / (xs[i] - xs[i - j])
+    p = [d[n - 1]]
+    for i in range(n - 2, -1, -1):
+        p = padd(pmul(p, [-Fraction(xs[i]), Fraction(1)]), [d[i]])
+    return trim(p)
+
+
+def resultant(f, g):
+    """Res(f, g) = lc(f)^deg g lc(g)^deg f prod (alpha_i - beta_j) (f, g ascending, f != 0), exactly, by Euclid's
+    recursion: Res(f, g) = (-1)^(deg f deg g) lc(g)^(deg f - deg r) Res(g, r), r = f mod g (derived from
+    Res(g, f) = lc(g)^deg f prod over g's roots beta of f(beta) and f(beta) = r(beta)); Res(f, c) = c^deg f."""
+    f, g = trim(f), trim(g)
+    if not g:
+        return Fraction(0)
+    n, m = len(f) - 1, len(g) - 1
+    if m == 0:
+        return g[0] ** n
+    r = pdivmod(f, g)[1]
+    if not r:
+        return Fraction(0)
+    return (-1) ** (n * m) * g[-1] ** (n - (len(r) - 1)) * resultant(g, r)
+
+
+def no_root_in(R, a):
+    """True when R (R(0) != 0) has no real root in (0, a]; False when it has one; None when not decided. Descartes'
+    rule of signs on Q(t) = (1 + t)^d R((u + v t)/(1 + t)), whose positive roots are R's roots in (u, v): no sign
+    variation, no root; one, exactly one; more, (u, v) halved (Vincent), at most 60 times deep."""
+    if peval(R, a) == 0:
+        return False
+    d = len(R) - 1
+    stack = [(Fraction(0), Fraction(a), 0)]
+    while stack:
+        u, v, depth = stack.pop()
+        Q, up, one = [], [Fraction(1)], [Fraction(1), Fraction(1)]
+        for k, r in enumerate(R):  # sum_k r_k (u + v t)^k (1 + t)^(d - k)
+            if r:
+                Q = padd(Q, pscale(pmul(up, ppow(one, d - k)), r))
+            up = pmul(up, [u, v])
+        signs = [x > 0 for x in Q if x != 0]
+        var = sum(1 for x, y in zip(signs, signs[1:]) if x != y)
+        if var == 0:
+            continue
+        if var == 1:
+            return False
+        w = (u + v) / 2
+        if depth >= 60 or peval(R, w) == 0:
+            return None if depth >= 60 else False
+        stack += [(u, w, depth + 1), (w, v, depth + 1)]
+    return True
+
+
+def circle_crossing_free(M0, M1, a):
+    """"" when no p in (0, a] gives M0 + p M1 an eigenvalue on the unit circle (C++ lti/circle_crossing.hpp, derived here
+    again): c(z, p) = det(zI - M(p)) is monic in z, so R(p) = Res_z(c, z^n c(1/z)) = prod over c's roots mu of mu^n
+    c(1/mu) vanishes where a root lies on the circle (1/mu = conj mu a root too); deg_p c <= r = rank M1 (the matrix
+    determinant lemma), deg R <= 2 n r (the Sylvester matrix): c from r + 1 characteristic polynomials, R from 2 n r + 1
+    resultants, both interpolated exactly; no root of R / p^m in (0, a] (no_root_in): the roots stay off the circle on
+    (0, a] (continuity). Else why not."""
+    n = len(M0)
+    K = [row[:] for row in M1]
+    r = len(echelon(K)) if K else 0
+    D = 2 * n * r
+    if n > 64 or D > 2048:
+        raise TooLarge("evidence.no_crossing: M of order %d, 2 n rank(M1) = %d: above this checker's limits 64 and 2048" % (n, D))
+    cs = [faddeev_leverrier([[M0[i][j] + k * M1[i][j] for j in range(n)] for i in range(n)]) for k in range(r + 1)]
+    ck = [newton_interpolate(list(range(r + 1)), [c[k] for c in cs]) for k in range(n + 1)]
+    values = []
+    for i in range(D + 1):
+        c = [peval(q, Fraction(i)) for q in ck]
+        values.append(resultant(c, c[::-1]))
+    R = newton_interpolate(list(range(D + 1)), values)
+    if not R:
+        return "R vanishes for every p (eigenvalues mu, 1/mu at every p): nothing shown"
+    m = 0
+    while R[m] == 0:
+        m += 1
+    R = R[m:]
+    if len(R) > 2:  # the square-free part (a complex pair on the circle is a double root of R: Descartes then never ends)
+        R = pdivmod(R, pgcd(R, pderiv(R)))[0]
+    free = no_root_in(R, a)
+    if free is True:
+        return ""
+    return "R(p) / p^%d (square-free part of degree %d) has a real root in (0, %s]%s" % (m, len(R) - 1, short(a), "" if free is False else
+                                                                                           " or was not decided")
+
+
 def slow_rows(l1, l2, Lq, at, right):
     """The rows r of the loop's slow modes at p = 0 (check/stability_loop_max_check.hpp), on the coordinates
     of the quotient by the conserved rows Lq (at their indices `at`, loop_quotient): l^T E for a basis l of
@@ -3821,7 +3928,7 @@ def check_stability_loop_max(c):
     plant = "scene" not in model  # the one-DOF --plant/--H loop (scene_loop_read)
     only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
-    only(evidence, ("cover", "unstable_at", "first_order", "first_order_unstable"), "evidence")
+    only(evidence, ("cover", "unstable_at", "first_order", "first_order_unstable", "no_crossing"), "evidence")
     if not isinstance(model.get("plant" if plant else "scene"), str):
         raise Malformed("model.scene (or model.plant): missing or not a string")
     p, sets, lo, hi, refuted = sup_model(model, claim)
@@ -3878,6 +3985,15 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
         raise Malformed(where + ".cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
     if (not cover) != (lo == 0):
         raise Malformed(where + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
+    nc_to = None  # no_crossing {to: a}: stable on (0, a] where the rational M(p) has no eigenvalue on the circle
+    if "no_crossing" in evidence:
+        nc = evidence["no_crossing"]
+        if not isinstance(nc, dict):
+            raise Malformed(where + ".no_crossing: not an object")
+        only(nc, ("to",), where + ".no_crossing")
+        nc_to = exact(nc, "to", where + ".no_crossing")
+        if "first_order" in evidence or nc_to <= 0 or nc_to >= lo:
+            raise Malformed(where + ".no_crossing.to: in (0, claim.lo), and not beside first_order (either starts the cover)")
     (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
     g = 0 if block == "environment" else 1
     for i, (x, y) in enumerate(zip(b1, b2)):
@@ -3912,6 +4028,17 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
         return False, "the conserved quantities differ at %s = 1 and 2" % p, 0, 0
     if count != k:
         return False, "%s: %d conserved quantities, but the loop has %d" % ("claim" if where == "evidence" else where, k, count), 0, 0
+    if nc_to is not None:
+        if count or r1 or own1:
+            raise Malformed(where + ".no_crossing: a loop with conserved quantities (M on a quotient): beyond this kind")
+        X1, X2 = loop_matrix(l1, 0, exact=True), loop_matrix(l2, 0, exact=True)
+        if X1 is None or X2 is None or len(X1) != len(X2):
+            raise Malformed(where + ".no_crossing: M is not rational (a plant that is not nilpotent: e^{AT} holds exponentials): "
+                            "beyond this kind")
+        no = circle_crossing_free([[2 * x - y for x, y in zip(r1_, r2_)] for r1_, r2_ in zip(X1, X2)],
+                                  [[y - x for x, y in zip(r1_, r2_)] for r1_, r2_ in zip(X1, X2)], nc_to)
+        if no:
+            return False, "%s.no_crossing: an eigenvalue may meet the unit circle in (0, %s]: %s" % (where, short(nc_to), no), 0, 0
     why = ""
     for bits in (128, 256, 512):
         M1, M2 = loop_quotient_matrix(l1, L1, a1, r1, bits), loop_quotient_matrix(l2, L2, a2, r2, bits)
@@ -3924,7 +4051,7 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
         def M_at(x):
             u, v = Iv(2 - x), Iv(x - 1)
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
-        start, ok = Fraction(0), True
+        start, ok = (nc_to if nc_to is not None else Fraction(0)), True
         if "first_order" in evidence:
             eps, fails = first_order_start(evidence["first_order"], (l1, l2), (L1, a1, r1), M1, M2, lo)
             if fails:
@@ -4046,7 +4173,7 @@ def check_stability_loop_max_symmetric(c):
         where = "evidence.blocks[%d]" % (b + 1)
         if not isinstance(blk, dict):
             raise Malformed(where + ": not an object")
-        only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable"), where)
+        only(blk, ("space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable", "no_crossing"), where)
         slot, copies, kb = block_slot(blk, zero1, sizes, seen, where)
         loops = [sp[0] if slot is None else sp[1][slot] for sp in splits]
         at_p = [loop_quotient_of(loop) for loop in loops]

@@ -4,7 +4,8 @@ code it must from both (1 refuted: the evidence does not prove the edited claim;
 is beyond the kind). The ctests certificate_loop_max* run it on tests/cli/scenes/loop_max_held_devices.toml (the
 environment's gain), integrator_devices_2dof.toml (the first-order start), loop_max_wall_stiffness.toml (the
 parameter inside the wall's tf), loop_max_free_wall_stiffness.toml (both), loop_max_wall_stiffness_conserved.toml (inside
-the tf beside a conserved quantity) and loop_max_zero_outward.toml (sup = 0 by the first-order mirror).
+the tf beside a conserved quantity), loop_max_pure_masses.toml (no_crossing: pure masses, M rational) and
+loop_max_zero_outward.toml (sup = 0 by the first-order mirror).
 
   loop_max_case.py HAPSTAB SCENE NAME
   loop_max_case.py HAPSTAB plant NAME --plant P --H H --T T [--delay n]   (the one-DOF loop, a device pole off s = 0)
@@ -174,6 +175,20 @@ def mutants(cert, name):
                 ("eps beyond lo", with_field(cert, ["evidence", "first_order", "to"], str(2 * Fraction(claim["hi"]))), 2)]
         if env in text:
             out.append(("the first-order start with the coupling's gain", with_field(cert, ["model", "scene"], text.replace(env, "").replace("[coupling]", "[coupling]\n" + env)), None))
+    nc = cert["evidence"].get("no_crossing")
+    if nc:  # stable on (0, a]: no eigenvalue of the rational M(p) meets the circle there (since stop 78)
+        out += [("no_crossing dropped (the cover then starts at 0, where M(0) has a Jordan block at z = 1)", deleted(cert, ["evidence", "no_crossing"]), 1),
+                ("no_crossing.to 0", with_field(cert, ["evidence", "no_crossing", "to"], "0"), 2),
+                ("no_crossing.to at lo", with_field(cert, ["evidence", "no_crossing", "to"], claim["lo"]), 2),
+                ("no_crossing beside a first_order", with_field(cert, ["evidence", "first_order"], {"to": nc["to"], "P0": [], "S": []}), 2),
+                ("no_crossing with a field more", with_field(cert, ["evidence", "no_crossing", "from"], "0"), 2),
+                ("a device damped (M not rational: beyond no_crossing)", with_field(cert, ["model", "scene"], text.replace('b = "0"', 'b = "1"', 1)), 2)]
+        # the claim moved past the crossing, no_crossing.to with it: the resultant has its root in (0, to] (refuted there,
+        # before any cover is read)
+        h = Fraction(claim["hi"])
+        c = with_field(with_field(deleted(deleted(cert, ["claim", "printed_lo"]), ["claim", "printed_hi"]), ["claim", "lo"], str(2 * h)), ["claim", "hi"], str(3 * h))
+        c = with_field(with_field(c, ["evidence", "cover", len(cover) - 1, "to"], str(2 * h)), ["evidence", "unstable_at", "at"], str(3 * h))
+        out.append(("no_crossing.to past the crossing (claim and cover moved with it)", with_field(c, ["evidence", "no_crossing", "to"], str(3 * h / 2)), 1))
     if len(cover) > 1:
         # refuted where the first P fails at its new end, else malformed (the next interval then empty): rejected
         out.append(("an interval's end moved past the next one's", with_field(cert, ["evidence", "cover", 0, "to"], cover[1]["to"]), None))

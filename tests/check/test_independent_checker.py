@@ -362,6 +362,34 @@ class StabilityLoopMax(unittest.TestCase):
         self.assertEqual(hc.check(c)[0], 2)
 
 
+class CircleCrossing(unittest.TestCase):
+    """circle_crossing_free (evidence no_crossing) on the families of tests/lti/test_circle_crossing.cpp, whose
+    crossings are known by hand: lambda = 1 - p (on the circle at p = 2), a Jordan block at z = 1 under a damped
+    spring (Jury: stable exactly for 0 < p < 4/3), det 1 + p/2 (constant inertia, unstable: the caller proves M(a)
+    stable), a rotation p does not move (R = 0 for every p)."""
+
+    def F(self, rows):
+        return [[Fraction(x) for x in r] for r in rows]
+
+    def test_hand_families(self):
+        self.assertEqual(hc.circle_crossing_free(self.F([[1]]), self.F([[-1]]), Fraction(199, 100)), "")
+        self.assertNotEqual(hc.circle_crossing_free(self.F([[1]]), self.F([[-1]]), Fraction(2)), "")
+        J, D = self.F([[1, 1], [0, 1]]), self.F([[0, 0], [-1, -2]])
+        self.assertEqual(hc.circle_crossing_free(J, D, Fraction(13, 10)), "")
+        self.assertNotEqual(hc.circle_crossing_free(J, D, Fraction(3, 2)), "")
+        self.assertEqual(hc.circle_crossing_free(J, self.F([[0, 0], [-1, Fraction(-1, 2)]]), Fraction(1)), "")
+        self.assertIn("every p", hc.circle_crossing_free(self.F([[0, -1], [1, 0]]), self.F([[0, 0], [0, 0]]), Fraction(1)))
+
+    def test_resultant_and_descartes(self):
+        # Res(z - 2, z - 3) = -1; Res(z^2 - 1, z + 1) = 0; (p - 1)(p - 3): a root in (0, 2], none in (0, 1/2]
+        self.assertEqual(hc.resultant([-2, 1], [-3, 1]), -1)
+        self.assertEqual(hc.resultant([-1, 0, 1], [1, 1]), 0)
+        R = [Fraction(3), Fraction(-4), Fraction(1)]
+        self.assertIs(hc.no_root_in(R, Fraction(1, 2)), True)
+        self.assertIs(hc.no_root_in(R, Fraction(2)), False)
+        self.assertIs(hc.no_root_in([Fraction(1), Fraction(0), Fraction(1)], Fraction(10)), True)  # p^2 + 1
+
+
 class StabilityLoopMaxPlant(unittest.TestCase):
     """test_check.cpp's StabilityLoopMaxCheck.PlantModelReading: K read inside the one-DOF model's H."""
 

@@ -7,7 +7,11 @@ delay's buffer; its spectral radius scanned on a geometric grid and bisected), n
   * tests/cli/scenes/loop_max_one_way_link.toml: a one-way link of 1000: sup g certified, within 1e-7 of the
     reference; with --certificate refused by name (exit 2, the cover search's work limit), no file (was: minutes);
   * a parameter the loop does not read (rnd1_23 of the review, written below): "NOT stable at every value tried",
-    exit 1, JSON status "certified" (it said "undecided" beside exit 1), and the reference's rho > 1.
+    exit 1, JSON status "certified" (it said "undecided" beside exit 1), and the reference's rho > 1;
+  * tests/cli/scenes/loop_max_pure_masses.toml: two pure masses (a Jordan block at z = 1 at g = 0, "undecided"
+    before): sup g certified by the resultant on (0, a] (lti/circle_crossing.hpp), within 1e-7 of the reference, and
+    the reference's rho < 1 at g = 10^-k, k = 1..6 (the stable interval reaches down towards 0; below, double
+    eigenvalues of a Jordan block are noise).
 
   loop_max_review_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -114,6 +118,17 @@ def main():
         rc, j, err = run(hapstab, ["--scene", scene, "--max", "Kx", "--json"])
         expect("Kx unread: exit 1 (got %s), status %s, path %s; the reference's rho %.6g > 1" % (rc, j and j.get("status"), j and j.get("path"), r3),
                rc == 1 and j.get("status") == "certified" and j.get("path") == "bisection_on_verdicts" and r3 > 1)
+    # 4. pure masses
+    pm = [dict(kind="md", m=Q(1, 100), b=Q(0)), dict(kind="md", m=Q(1, 50), b=Q(0))]
+    E4 = [[wall(Q(2500), Q(5)), const(-500)], [const(-500), wall(Q(3500), Q(8))]]
+    loop4 = IL.build_loop_scene(dict(T=T, devices=pm, ops=[None] * 2, E=E4, n=0))
+    ref4 = sup_reference(lambda g: IL.rho_np(loop4, g), 1e-3, 1e4)
+    small = [IL.rho_np(loop4, 10.0 ** -k) for k in range(1, 7)]  # below 1e-6 double eigenvalues of a Jordan block are noise
+    rc, j, err = run(hapstab, ["--scene", os.path.join(scenes, "loop_max_pure_masses.toml"), "--max", "g", "--json"])
+    got = float(j["max"]) if j and j.get("max") else None
+    expect("pure masses: exit 0 (got %s), sup %s against the reference %.13g; reference rho < 1 at 1e-1..1e-6: %s" % (
+        rc, got, ref4, all(r < 1 for r in small)),
+        rc == 0 and j.get("status") == "certified" and abs(got - ref4) <= 1e-7 * ref4 and all(r < 1 for r in small))
     print("loop_max_review_case: %d failed" % failures)
     return 1 if failures else 0
 

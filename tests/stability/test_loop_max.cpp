@@ -117,14 +117,19 @@ TEST(LoopMax, OneDofPureMassMatchesTheClosedForm) {
 TEST(LoopMax, TwoDofAgreesWithExactSchurBisection) {
   const stability::LoopAt at = [](const Q& g) { return two_masses(g); };
   const stability::LoopMax r = stability::max_parameter(at, Q(1), "g", points(kTwoMasses, {}, "g"), 16);
-  // pure masses: M(0) on the circle, the supremum undecided; the crossing and [a, b] certified
+  // pure masses: M(0) has a Jordan block at z = 1 (the walk towards 0 stops short of it); since stop 78 M(g) rational
+  // joins (0, a] by the resultant (lti/circle_crossing.hpp): the supremum certified, open at 0
   ASSERT_GT(r.crossing.hi, 0) << r.note;
   ASSERT_LT(r.stable_from, r.stable_to) << r.note;
-  EXPECT_EQ(r.outcome, Outcome::undecided) << r.note;
+  EXPECT_EQ(r.outcome, Outcome::holds) << r.note;
+  EXPECT_TRUE(r.open_at_zero);
+  EXPECT_EQ(r.stable_from, 0);
+  ASSERT_GT(r.no_crossing_to, 0) << r.note;
   const double width = static_cast<double>((r.crossing.hi - r.crossing.lo) / r.crossing.hi);
   EXPECT_LE(width, 1e-15);
-  EXPECT_TRUE(exactly_stable(at(r.stable_from)));
-  EXPECT_TRUE(exactly_stable(at((r.stable_from + r.stable_to) / 2)));
+  for (const Q& k : {Q(1), Q(2), Q(100), Q(1000000), Q(1000000000000)})  // (0, a] by exact Schur-Cohn, down to 1e-12 a
+    EXPECT_TRUE(exactly_stable(at(r.no_crossing_to / k))) << static_cast<double>(r.no_crossing_to / k);
+  EXPECT_TRUE(exactly_stable(at((r.no_crossing_to + r.stable_to) / 2)));
   // the reference: exact Schur verdicts, bisected
   Q lo = r.stable_to * (1 - Q(1, 1000000)), hi = r.crossing.hi * (1 + Q(1, 1000000));
   ASSERT_TRUE(exactly_stable(at(lo)));

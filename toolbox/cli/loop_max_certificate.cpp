@@ -12,10 +12,12 @@
 #include "hapstab/check/stability_loop_max_check.hpp"
 #include "hapstab/check/stability_loop_symmetric_check.hpp"
 #include "hapstab/lmi/program.hpp"
+#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/result.hpp"
+#include "hapstab/poly/sturm.hpp"
 
 namespace hapstab::cli {
 
@@ -426,9 +428,43 @@ std::vector<std::pair<std::string, std::string>> claim_ends(const SupClaim& m, c
   return ends;
 }
 
-// One loop's evidence for sup in [lo, hi] ({first_order, cover, unstable_at} of check_max_part): where M(0) is only
-// marginally stable (slow rows: L M(0) = L) the first-order start on (0, eps] first, eps the producer's own first-order
-// cover's end (first_order_to), else lo / 4^j; unstable_at where `unstable`. nullopt with `why` when none is found.
+// Where M(p) is rational (pure masses, no conserved quantity) and no eigenvalue meets the unit circle on (0, a]
+// (lti/circle_crossing.hpp), the evidence no_crossing {to: a} in place of the first-order start: a as high as the
+// resultant allows below lo (half its first positive root, or lo (1 - 2^-10)), so the cover starts far from the Jordan
+// block at z = 1 that defeats the first-order start. nullopt where M is not rational or R vanishes identically.
+std::optional<nlohmann::json> no_crossing_start(const LoopPair& lp, const rational& lo) {
+  if (lp.m1.conserved != 0 || lp.m1.right_quotient || lp.loop1.own_conserved != 0) return std::nullopt;
+  const auto X1 = check::detail::exact_loop_matrix(lp.loop1), X2 = check::detail::exact_loop_matrix(lp.loop2);
+  if (!X1 || !X2 || X1->size() != X2->size() || static_cast<long>(X1->size()) > kCircleCrossingOrder) return std::nullopt;
+  const long n = static_cast<long>(X1->size());
+  MatQ M0(n, n), Md(n, n);
+  for (long i = 0; i < n; ++i)
+    for (long j = 0; j < n; ++j) {
+      M0(i, j) = 2 * (*X1)[size_t(i)][size_t(j)] - (*X2)[size_t(i)][size_t(j)];
+      Md(i, j) = (*X2)[size_t(i)][size_t(j)] - (*X1)[size_t(i)][size_t(j)];
+    }
+  CircleCrossing cc;
+  try {
+    cc = circle_crossing(M0, Md);
+  } catch (const InputError&) {
+    return std::nullopt;  // beyond its order or degree
+  }
+  if (cc.identically_zero) return std::nullopt;
+  rational a = lo - lo / 1024;
+  for (const RootInterval& r : isolate_real_roots(cc.R, rational(0), lo))
+    if (r.hi > 0) {
+      a = std::min(a, (r.lo > 0 ? r.lo : r.hi) / 2);
+      break;
+    }
+  a = round_down(a, a / 1024);
+  if (a <= 0 || count_real_roots(cc.R, rational(0), a) != 0) return std::nullopt;
+  return nlohmann::json{{"to", a.str()}};
+}
+
+// One loop's evidence for sup in [lo, hi] ({first_order or no_crossing, cover, unstable_at} of check_max_part): where M(0)
+// is only marginally stable (slow rows: L M(0) = L) no_crossing where M is rational, else the first-order start on (0,
+// eps], eps the producer's own first-order cover's end (first_order_to), else lo / 4^j; unstable_at where `unstable`.
+// nullopt with `why` when none is found.
 std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::string& name, const rational& lo, const rational& hi,
                                             const rational& first_order_to, bool unstable, Work& work, std::string& why) {
   flint::BallPrecision scope(kBits);
@@ -436,7 +472,9 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
   // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
   // Stein inertia on ker L instead)
   const Mat L = !lp.m1.right_quotient ? check::detail::slow_rows(lp.loop1, lp.loop2, lp.m1) : Mat{};
-  if (!L.empty() && lo > 0) {
+  std::string start_kind = "first_order";
+  if (!L.empty() && lo > 0 && (start = no_crossing_start(lp, lo))) start_kind = "no_crossing";
+  if (!L.empty() && lo > 0 && !start) {
     std::vector<rational> tries;
     if (first_order_to > 0 && first_order_to <= lo) tries.push_back(first_order_to);
     for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);
@@ -463,7 +501,7 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
     why = a.why;
     return std::nullopt;
   }
-  if (start) a.evidence["first_order"] = *start;
+  if (start) a.evidence[start_kind] = *start;
   return a.evidence;
 }
 

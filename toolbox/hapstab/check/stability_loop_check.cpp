@@ -737,6 +737,44 @@ Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const LoopMatrix& m1) {
   return L;
 }
 
+std::optional<Mat> exact_loop_matrix(const SceneLoop& L) {
+  const Plant pl = plant(L);
+  const size_t ns = pl.A.size();
+  // A nilpotent: A^ns = 0 exactly, then e^{Ah} = sum_{k < ns} (Ah)^k / k! and Gamma_h = sum_{k < ns} A^k h^{k+1} / (k+1)! B
+  Mat Ak = rational_matrix::identity(ns);
+  for (size_t k = 0; k < ns; ++k) Ak = rational_matrix::mul(Ak, pl.A);
+  for (const auto& row : Ak)
+    for (const rational& x : row)
+      if (!x.is_zero()) return std::nullopt;
+  const auto hold_exact = [&](const rational& h) {
+    Mat Phi = rational_matrix::zeros(ns, ns), term = rational_matrix::identity(ns), S = rational_matrix::zeros(ns, ns);
+    rational fact = 1, hk = 1;
+    for (size_t k = 0; k < ns; ++k) {  // term = A^k; Phi += A^k h^k / k!, S += A^k h^{k+1} / (k+1)!
+      for (size_t i = 0; i < ns; ++i)
+        for (size_t j = 0; j < ns; ++j) {
+          Phi[i][j] += term[i][j] * hk / fact;
+          S[i][j] += term[i][j] * hk * h / (fact * rational(long(k + 1)));
+        }
+      term = rational_matrix::mul(term, pl.A);
+      fact *= rational(long(k + 1));
+      hk *= h;
+    }
+    return std::pair{Phi, rational_matrix::mul(S, pl.B)};
+  };
+  const rational f = L.fraction * L.T;
+  Mat Phi, G0, G1;
+  if (f == 0) {
+    std::tie(Phi, G0) = hold_exact(L.T);
+  } else {
+    const auto [Pa, Ga] = hold_exact(L.T - f);
+    const auto [Pb, Gb] = hold_exact(f);
+    Phi = rational_matrix::mul(Pa, Pb);
+    G0 = Ga;
+    G1 = rational_matrix::mul(Pa, Gb);
+  }
+  return assemble<rational>(assembly(L, pl), Phi, G0, f == 0 ? nullptr : &G1, [](const rational& x) { return x; });
+}
+
 }  // namespace detail
 
 SceneLoopMatrix scene_loop_matrix(const nlohmann::json& model, long bits) {

@@ -74,6 +74,7 @@
 // Implements: paper 000 Sec. VI; paper 001 Fig. 1.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -105,6 +106,9 @@ struct LoopMatrix {
 };
 /// M of the loop L as above, e^{AT} in balls at `bits`.
 LoopMatrix loop_matrix(const SceneLoop& L, long bits);
+/// M of the loop L exactly (the whole, no quotient), where the plant's A is nilpotent (pure masses: e^{Ah} and
+/// Gamma_h finite sums); else nullopt.
+std::optional<rational_matrix::Mat> exact_loop_matrix(const SceneLoop& L);
 /// Q = P - M^T P M > 0 for every M in the balls (the header's test); else false, `why` set.
 bool stein_holds(const rational_matrix::Mat& P, const BallRows& M, std::string& why);
 /// With P and M linear in t on [0, 1] (Pa, Ma at 0; Pb, Mb at 1): the four Bernstein coefficients of the cubic

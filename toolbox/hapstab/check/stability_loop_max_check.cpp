@@ -15,6 +15,7 @@
 #include "hapstab/check/rational_matrix.hpp"
 #include "hapstab/check/scene_model.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
+#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check {
@@ -408,6 +409,16 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
   if (!cover.is_array() || cover.size() > kMaxCover)
     throw InputError(at + ".cover: not an array of at most " + std::to_string(kMaxCover) + " intervals");
   if (cover.empty() != c.lo.is_zero()) throw InputError(at + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])");
+  // stable on (0, a] where no eigenvalue of the rational M(p) meets the circle (header): {to: a}, 0 < a < lo, in place
+  // of first_order
+  std::optional<rational> no_crossing;
+  if (ev.contains("no_crossing")) {
+    const nlohmann::json& nc = detail::object_field(ev, "no_crossing", at);
+    detail::only_fields(nc, {"to"}, at + ".no_crossing");
+    no_crossing = detail::exact_field(nc, "to", at + ".no_crossing");
+    if (ev.contains("first_order") || *no_crossing <= 0 || *no_crossing >= c.lo)
+      throw InputError(at + ".no_crossing.to: in (0, claim.lo), and not beside first_order (either starts the cover)");
+  }
   MaxPart out;
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
@@ -446,6 +457,32 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
         continue;
       }
     }
+    if (no_crossing && bits == 128) {
+      if (m1.conserved != 0 || m1.right_quotient || L1.own_conserved != 0)
+        throw InputError(at + ".no_crossing: a loop with conserved quantities (M on a quotient): beyond this kind");
+      const auto X1 = detail::exact_loop_matrix(L1), X2 = detail::exact_loop_matrix(L2);
+      if (!X1 || !X2 || X1->size() != X2->size())
+        throw InputError(at + ".no_crossing: M is not rational (a plant component that is not nilpotent: e^{AT} holds "
+                              "exponentials): beyond this kind");
+      const size_t n = X1->size();
+      MatQ M0(static_cast<long>(n), static_cast<long>(n)), Md(static_cast<long>(n), static_cast<long>(n));
+      for (size_t i = 0; i < n; ++i)
+        for (size_t j = 0; j < n; ++j) {
+          M0(long(i), long(j)) = 2 * (*X1)[i][j] - (*X2)[i][j];
+          Md(long(i), long(j)) = (*X2)[i][j] - (*X1)[i][j];
+        }
+      if (static_cast<long>(n) > kCircleCrossingOrder)
+        throw InputError(at + ".no_crossing: M of order " + std::to_string(n) + ", beyond this checker's " +
+                         std::to_string(kCircleCrossingOrder));
+      std::string no;
+      try {
+        no = no_circle_crossing(M0, Md, *no_crossing);
+      } catch (const InputError& e) {
+        throw InputError(at + ".no_crossing: " + e.what() + ": beyond this checker");
+      }
+      if (!no.empty()) return {false, at + ".no_crossing: an eigenvalue may meet the unit circle in (0, " + no_crossing->str() + "]: " + no};
+    }
+    if (no_crossing) from = *no_crossing;
     // NOT stable on (0, eps] by the first-order mirror (header)
     if (outward) {
       bool refuted = false;
@@ -509,7 +546,7 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
   else detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay", "name"}, "model");
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
-  detail::only_fields(evidence, {"cover", "unstable_at", "first_order", "first_order_unstable"}, "evidence");
+  detail::only_fields(evidence, {"cover", "unstable_at", "first_order", "first_order_unstable", "no_crossing"}, "evidence");
   if (model.contains("scene") ? !model.at("scene").is_string() : !model.contains("plant"))
     throw InputError("model.scene: missing or not a string (or a one-DOF model: plant, H, T, delay)");
   const auto [p, c] = detail::sup_model(model, claim);

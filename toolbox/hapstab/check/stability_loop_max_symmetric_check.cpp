@@ -59,7 +59,7 @@ Verdict check_stability_loop_max_symmetric(const nlohmann::json& cert) {
     const std::string where = "evidence.blocks[" + std::to_string(b + 1) + "]";
     const auto& blk = blocks[b];
     if (!blk.is_object()) throw InputError(where + ": not an object");
-    detail::only_fields(blk, {"space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable"}, where);
+    detail::only_fields(blk, {"space", "class", "conserved", "cover", "first_order", "unstable_at", "first_order_unstable", "no_crossing"}, where);
     const auto [slot, copies, space] = detail::block_slot(blk, *s1, where);
     if (seen[slot]) throw InputError(where + ": a block given twice");
     seen[slot] = true;

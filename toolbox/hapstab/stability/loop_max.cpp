@@ -22,6 +22,7 @@
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/numeric_decimal.hpp"
 #include "hapstab/poly/stability.hpp"
@@ -1111,6 +1112,35 @@ MatQ kernel(const MatQ& A) {
 // produces is 0 (so are the buffer's slots and the input integrals' share), the controller state
 // holds. A device's position (x' = v, read by nothing that p does not scale) is one; an
 // environment's state that remembers the position comes with it.
+// M0 and M1 exactly (sim/closed_loop.cpp's assembly) where every component of the plant is nilpotent (pure masses:
+// e^{AT} a finite sum, sim::exact_plant_zoh), else nullopt.
+std::optional<std::pair<MatQ, MatQ>> exact_family(const LoopFamily& F) {
+  const auto w = sim::exact_plant_zoh(F.A, F.Bu, F.T);
+  if (!w) return std::nullopt;
+  MatQ Gn = w->second, Go;
+  if (F.f > 0) {
+    const auto a = sim::exact_plant_zoh(F.A, F.Bu, F.f), b = sim::exact_plant_zoh(F.A, F.Bu, F.T - F.f);
+    Go = exact_product(b->first, a->second);
+    Gn = b->second;
+  }
+  const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(F.Kx0.rows()), N = F.N, n = F.n, nb = slots(F) * N;
+  const auto build = [&](const MatQ& Ku, const MatQ& Kx, bool constant) {
+    MatQ M = MatQ::Zero(order(F), order(F));
+    if (constant) M.topLeftCorner(ns, ns) = w->first;
+    if (n == 0) M.topLeftCorner(ns, ns + nc) += exact_product(Gn, Ku);
+    else if (constant) M.block(0, ns + nc + (n - 1) * N, ns, N) = Gn;
+    if (F.f > 0 && constant) M.block(0, ns + nc + n * N, ns, N) = Go;
+    M.block(ns, 0, nc, ns + nc) = Kx;
+    if (nb > 0) {
+      M.block(ns + nc, 0, N, ns + nc) = Ku;
+      if (constant)
+        for (long j = 1; j < nb / N; ++j) M.block(ns + nc + j * N, ns + nc + (j - 1) * N, N, N) = MatQ::Identity(N, N);
+    }
+    return M;
+  };
+  return std::make_pair(build(F.Ku0, F.Kx0, true), build(F.dKu, F.dKx, false));
+}
+
 MatQ integrator_kernel(const LoopFamily& F) {
   const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(F.Kx0.rows()), N = static_cast<long>(F.Ku0.rows());
   MatQ S = MatQ::Zero(ns + N + nc, ns + nc);
@@ -1594,6 +1624,23 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   Cover cov{*base.M0, *base.M1};
   cov.integrators = slow;
   const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
+  // the walk towards 0 stopped at stable_from > 0 (a pure mass: a Jordan block at z = 1 whose eigenvalues leave it
+  // like sqrt(p)): where M is rational, no eigenvalue meets the circle on (0, stable_from] (the resultant, header)
+  // and M(stable_from) is stable, so every M(p) there is
+  if (out.stable_from > 0 && out.stable_to > out.stable_from)
+    if (const auto ex = exact_family(F); ex && static_cast<long>(ex->first.rows()) <= kCircleCrossingOrder) {
+      std::string no;
+      try {
+        no = no_circle_crossing(ex->first, ex->second, out.stable_from);
+      } catch (const InputError& err) {
+        no = err.what();
+      }
+      if (no.empty()) {
+        out.no_crossing_to = out.stable_from;
+        out.stable_from = 0;
+        out.open_at_zero = true;
+      }
+    }
   if (out.stable_to <= p0 && !closed) {
     out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
                numeric_decimal(static_cast<double>(e.p.hi), 17) +
@@ -1635,7 +1682,11 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     << " in " << (out.open_at_zero ? "(" : "[") << "0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
     << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
   if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
-  if (out.open_at_zero)
+  if (out.open_at_zero && out.no_crossing_to > 0)
+    o << "; on (0, " << decimal_outward(out.no_crossing_to, 6, -1) << "] no eigenvalue of M meets the unit circle (the exact "
+      << "resultant of det(zI - M(" << name << ")) and its reciprocal polynomial has no root there; M rational: pure masses), "
+      << "where M(0) has the eigenvalue 1 in a Jordan block (M(0) itself is only marginally stable)";
+  else if (out.open_at_zero)
     o << "; on (0, " << decimal_outward(out.first_order_to, 6, -1) << "] the first-order cover at " << name
       << " = 0, where M(0) has the eigenvalue 1 on position integrators (M(0) itself is only marginally stable)";
   o << "); " << (out.confirmed_by.empty() ? "decide_loop: " : "") << "stable at " << static_cast<double>(*out.stable_at)
