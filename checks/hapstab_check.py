@@ -3740,18 +3740,31 @@ def resultant(f, g):
 def no_root_in(R, a):
     """True when R (R(0) != 0) has no real root in (0, a]; False when it has one; None when not decided. Descartes'
     rule of signs on Q(t) = (1 + t)^d R((u + v t)/(1 + t)), whose positive roots are R's roots in (u, v): no sign
-    variation, no root; one, exactly one; more, (u, v) halved (Vincent), at most 60 times deep."""
+    variation, no root; one, exactly one; more, (u, v) halved (Vincent), at most 60 times deep. In integers: R scaled
+    by its common denominator, and Q L^d = sum_k r_k A^k B^(d - k) with A = L (u + v t), B = L (1 + t) (Horner)."""
     if peval(R, a) == 0:
         return False
-    d = len(R) - 1
+    r, _ = integers(R)
+    d = len(r) - 1
+
+    def mul(x, y):
+        out = [0] * (len(x) + len(y) - 1)
+        for i, xi in enumerate(x):
+            if xi:
+                for j, yj in enumerate(y):
+                    out[i + j] += xi * yj
+        return out
     stack = [(Fraction(0), Fraction(a), 0)]
     while stack:
         u, v, depth = stack.pop()
-        Q, up, one = [], [Fraction(1)], [Fraction(1), Fraction(1)]
-        for k, r in enumerate(R):  # sum_k r_k (u + v t)^k (1 + t)^(d - k)
-            if r:
-                Q = padd(Q, pscale(pmul(up, ppow(one, d - k)), r))
-            up = pmul(up, [u, v])
+        L = u.denominator * v.denominator
+        A, B = [u.numerator * (L // u.denominator), v.numerator * (L // v.denominator)], [L, L]
+        Q, Bp = [r[d]], [1]
+        for j in range(d - 1, -1, -1):
+            Bp = mul(Bp, B)
+            Q = mul(Q, A)
+            for i, x in enumerate(Bp):
+                Q[i] += r[j] * x
         signs = [x > 0 for x in Q if x != 0]
         var = sum(1 for x, y in zip(signs, signs[1:]) if x != y)
         if var == 0:
@@ -3790,14 +3803,11 @@ def circle_crossing_free(M0, M1, a):
     m = 0
     while R[m] == 0:
         m += 1
-    R = R[m:]
-    if len(R) > 2:  # the square-free part (a complex pair on the circle is a double root of R: Descartes then never ends)
-        R = pdivmod(R, pgcd(R, pderiv(R)))[0]
+    R = R[m:]  # (a double root -- a complex pair on the circle -- leaves Descartes undecided there: not shown, never shown)
     free = no_root_in(R, a)
     if free is True:
         return ""
-    return "R(p) / p^%d (square-free part of degree %d) has a real root in (0, %s]%s" % (m, len(R) - 1, short(a), "" if free is False else
-                                                                                           " or was not decided")
+    return "R(p) / p^%d (degree %d) has a real root in (0, %s]%s" % (m, len(R) - 1, short(a), "" if free is False else " or was not decided")
 
 
 def slow_rows(l1, l2, Lq, at, right):
@@ -3954,6 +3964,10 @@ def check_stability_loop_max(c):
     if hi == 0 and "first_order_unstable" in evidence:
         return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) is NOT stable for every %s in (0, %s] (the first-order mirror, %d bits)" % (
             p, p, p, p, n, p, short(exact(evidence["first_order_unstable"], "to", "evidence.first_order_unstable")), bits)
+    if hi == 0 and "no_crossing" in evidence:
+        return True, ("sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) is NOT stable for every %s in (0, %s] (no eigenvalue on "
+                      "the unit circle there: the resultant; an eigenvalue |z| > 1 at its end, Stein inertia, %d bits)" % (
+                          p, p, p, p, n, p, short(exact(evidence["no_crossing"], "to", "evidence.no_crossing")), bits))
     if hi == 0:
         return True, "sup %s = 0: M(%s) = (2 - %s) M(1) + (%s - 1) M(2) (%d states) has at %s -> 0 an eigenvalue |z| > 1 (Stein inertia, %d bits%s)" % (
             p, p, p, p, n, p, bits, ", on ker L beside the slow modes" if "slow_quotient" in evidence["unstable_at"] else "")
@@ -3975,9 +3989,23 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
     if (not has_un and not outward and need_unstable) or not isinstance(un, dict):
         raise Malformed(where + ".unstable_at: missing or not an object (NOT stable at hi bounds sup p; or, sup = 0, first_order_unstable)")
     only(un, ("at", "P", "w", "slow_quotient"), where + ".unstable_at")
-    if has_un and exact(un, "at", where + ".unstable_at") != hi:
-        raise Malformed(where + ".unstable_at.at: not claim.hi")
+    # no_crossing {to: a}: no eigenvalue of the rational M(p) on the circle on (0, a]; in place of first_order (the
+    # cover then starts at min(a, lo)), or, claim.hi = 0, beside unstable_at at a (NOT stable on (0, a])
+    nc_to = None
+    if "no_crossing" in evidence:
+        nc = evidence["no_crossing"]
+        if not isinstance(nc, dict):
+            raise Malformed(where + ".no_crossing: not an object")
+        only(nc, ("to",), where + ".no_crossing")
+        nc_to = exact(nc, "to", where + ".no_crossing")
+        if "first_order" in evidence or outward or nc_to <= 0:
+            raise Malformed(where + ".no_crossing.to: above 0, and not beside first_order or first_order_unstable")
+    un_at = nc_to if nc_to is not None and hi == 0 else hi
+    if has_un and exact(un, "at", where + ".unstable_at") != un_at:
+        raise Malformed(where + ".unstable_at.at: not %s" % ("claim.hi" if un_at == hi else "no_crossing.to"))
     on_ker = "slow_quotient" in un  # sup = 0 beside slow modes: M(0) on ker L, L M(0) = L (the C++ header)
+    if nc_to is not None and hi == 0 and (on_ker or not has_un):
+        raise Malformed(where + ".no_crossing: with claim.hi = 0, beside unstable_at at no_crossing.to (not on a slow quotient)")
     if on_ker and (un["slow_quotient"] is not True or hi != 0):
         raise Malformed(where + ".unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)")
     cover = evidence.get("cover", [])
@@ -3985,15 +4013,6 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
         raise Malformed(where + ".cover: not an array of at most %d intervals" % MAX_LOOP_COVER)
     if (not cover) != (lo == 0):
         raise Malformed(where + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])")
-    nc_to = None  # no_crossing {to: a}: stable on (0, a] where the rational M(p) has no eigenvalue on the circle
-    if "no_crossing" in evidence:
-        nc = evidence["no_crossing"]
-        if not isinstance(nc, dict):
-            raise Malformed(where + ".no_crossing: not an object")
-        only(nc, ("to",), where + ".no_crossing")
-        nc_to = exact(nc, "to", where + ".no_crossing")
-        if "first_order" in evidence or nc_to <= 0 or nc_to >= lo:
-            raise Malformed(where + ".no_crossing.to: in (0, claim.lo), and not beside first_order (either starts the cover)")
     (l1, L1, a1, r1, own1, b1), (l2, L2, a2, r2, own2, b2) = at_p[:2]
     g = 0 if block == "environment" else 1
     for i, (x, y) in enumerate(zip(b1, b2)):
@@ -4051,7 +4070,7 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
         def M_at(x):
             u, v = Iv(2 - x), Iv(x - 1)
             return [[u * M1[i][j] + v * M2[i][j] for j in range(n)] for i in range(n)]
-        start, ok = (nc_to if nc_to is not None else Fraction(0)), True
+        start, ok = (min(nc_to, lo) if nc_to is not None else Fraction(0)), True  # to >= lo: the cover is the one point lo
         if "first_order" in evidence:
             eps, fails = first_order_start(evidence["first_order"], (l1, l2), (L1, a1, r1), M1, M2, lo)
             if fails:
@@ -4065,8 +4084,8 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
             if shown is None:
                 why = fails
                 continue
-        if has_un:  # NOT stable at hi (Stein inertia)
-            Mu = M_at(hi)
+        if has_un:  # NOT stable at hi (Stein inertia; sup = 0 by no_crossing: at its end)
+            Mu = M_at(un_at)
             if on_ker:
                 S = slow_rows(l1, l2, L1, a1, r1)
                 if not S:
@@ -4088,7 +4107,7 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
                 raise Malformed(at + ": not an object")
             only(piece, ("to", "P", "P_to"), at)
             to = exact(piece, "to", at)
-            if to <= start:
+            if to < start or (to == start and not (len(cover) == 1 and to == lo and "P_to" not in piece)):
                 raise Malformed(at + ".to: not above the interval's start")
             if i + 1 == len(cover) and to != lo:
                 raise Malformed(at + ".to: the last interval ends at claim.lo")

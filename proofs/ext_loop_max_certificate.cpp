@@ -31,6 +31,12 @@
 //   there (s = (L w)^T S (L w) < 0, w^T P0 w + s/eps < 0) make M(p) NOT Schur stable on (0, eps] (Stein inertia).
 //   Checked: wherever the checker (detail::first_order_unstable) accepts, exact Schur-Cohn finds M(p) unstable at
 //   eps/1000, eps/3 and eps; with S negated or w = 0 it never accepts.
+//   no crossing of the circle (lti/circle_crossing.hpp, evidence no_crossing). c(z, p) = det(zI - M(p)) monic, R(p) =
+//   Res_z(c, z^n c(1/z)) = prod over c's roots of mu^n c(1/mu): no root of R in (0, a] keeps every eigenvalue off the
+//   circle there, so M(p) has one inertia on (0, a]. Checked: R's interpolation (degree <= 2 n rank M1) equals the
+//   determinant of the Sylvester matrix of c and z^n c(1/z) (exact_determinant, no FLINT resultant) at p = 1/3, 5/7, 11;
+//   and wherever no_circle_crossing(M0, M1, a) holds on random families with a pure mass's Jordan block at z = 1, exact
+//   Schur-Cohn gives M(p) the verdict of M(a) at a/1000, a/3 and 2a/3 (stable and NOT stable both met).
 #include <random>
 #include <sstream>
 
@@ -38,7 +44,10 @@
 #include <nlohmann/json.hpp>
 
 #include "hapstab/check/stability_loop_max_check.hpp"
+#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/lti/realization.hpp"
+#include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/poly/sturm.hpp"
 #include "hapstab/numeric/ball_expm.hpp"
 #include "hapstab/poly/stability.hpp"
 #include "proofs/proof.hpp"
@@ -477,6 +486,73 @@ void mirror_claim(proofs::Checker& check, std::mt19937& g) {
               Status::certified, sound && flipped_refused && accepted.enough() && refused.enough(), e.str(), {accepted, refused});
 }
 
+// ---- no crossing of the circle (a pure mass's Jordan block at p = 0) --------------------------------------------
+// Res(f, g) for f monic of degree n and g of formal degree n as the determinant of their Sylvester matrix
+// (numeric/exact_matrix.hpp): no resultant routine.
+Q sylvester_resultant(const Polynomial<Q>& f, const Polynomial<Q>& g, int n) {
+  MatQ S = MatQ::Zero(2 * n, 2 * n);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k <= n; ++k) {
+      S(i, i + k) = f.coeff(n - k);  // descending
+      S(n + i, i + k) = g.coeff(n - k);
+    }
+  return exact_determinant(S);
+}
+
+void no_crossing_claim(proofs::Checker& check, std::mt19937& g) {
+  proofs::Instances stable{"(family, a): no crossing on (0, a], M(a) stable", 20}, unstable{"... M(a) NOT stable", 10},
+      degree{"families whose R was evaluated directly at three points", 40};
+  bool sound = true, interpolated = true;
+  for (int t = 0; t < 60; ++t) {
+    // a pure mass's Jordan block [[1, h], [0, 1]] beside a stable 2 x 2 part, p a spring-damper on the mass (and a
+    // random coupling of rank <= 2)
+    const Q h = draw(g, 1, 4, 4), k = draw(g, -3, 6, 4), b = draw(g, -2, 8, 4);
+    MatQ M0 = MatQ::Zero(4, 4), M1 = MatQ::Zero(4, 4);
+    M0(0, 0) = 1, M0(0, 1) = h, M0(1, 1) = 1;
+    for (long i = 2; i < 4; ++i)
+      for (long j = 2; j < 4; ++j) M0(i, j) = draw(g, -3, 3, 10);
+    M0(1, 2) = draw(g, -2, 2, 4), M0(2, 0) = draw(g, -2, 2, 4);
+    M1(1, 0) = -k, M1(1, 1) = -b, M1(3, 0) = draw(g, -2, 2, 4), M1(3, 1) = draw(g, -2, 2, 4);
+    const CircleCrossing cc = circle_crossing(M0, M1);
+    if (cc.identically_zero) continue;
+    degree.count(true);
+    for (const Q& p : {Q(1, 3), Q(5, 7), Q(11)}) {
+      const Polynomial<Q> c = charpoly(MatQ(M0 + M1 * p));
+      std::vector<Q> rev(5);
+      for (int i = 0; i <= 4; ++i) rev[size_t(i)] = c.coeff(4 - i);
+      Q Rp = cc.R(p);
+      for (long m = 0; m < cc.zero_order; ++m) Rp *= p;
+      interpolated = interpolated && Rp == sylvester_resultant(c, Polynomial<Q>(std::move(rev)), 4);
+    }
+    for (const Q& a : {Q(1, 100), Q(1, 10), Q(1, 2)}) {
+      if (!no_circle_crossing(M0, M1, a).empty()) continue;
+      const bool at_a = schur_stable(charpoly(MatQ(M0 + M1 * a)));
+      (at_a ? stable : unstable).count(true);
+      for (const Q& p : {a / 1000, a / 3, a * 2 / 3}) sound = sound && schur_stable(charpoly(MatQ(M0 + M1 * p))) == at_a;
+    }
+  }
+  // its certificate: two pure masses under linked spring-damper walls (tests/cli/scenes/loop_max_pure_masses.toml);
+  // what it must contain: the first positive root of R for the scene's own loop, refined here
+  proofs::CertificateRequest r;
+  r.args = {"stability", "--scene", "{input}", "--max", "g", "--quiet"};
+  r.input = "[scene]\nname = \"two pure masses\"\nT = \"1/1000\"\n[parameters]\ng = \"1\"\n"
+            "[[device]]\nname = \"d0\"\nm = \"1/100\"\nb = \"0\"\n[[device]]\nname = \"d1\"\nm = \"1/50\"\nb = \"0\"\n"
+            "[environment]\ntf = [[\"2500 + 5*(z-1)/(T*z)\", \"-500\"], [\"-500\", \"3500 + 8*(z-1)/(T*z)\"]]\ngain = \"g\"";
+  r.contains = "2.363709386939923421";  // R's first positive root (the crossing), isolated below
+  check.certify("ext.loop_max.no_crossing", r);
+  std::ostringstream e;
+  e << "R's interpolation equal to the Sylvester determinant at 1/3, 5/7, 11: " << (interpolated ? "yes" : "NO")
+    << "; M(p) at a/1000, a/3, 2a/3 with M(a)'s verdict wherever no crossing on (0, a]: " << (sound ? "yes" : "NO");
+  check.claim("ext.loop_max.no_crossing", "no crossing of the unit circle on (0, a]",
+              "c(z, p) = det(zI - M0 - p M1) monic in z, R(p) = Res_z(c, z^n c(1/z)) vanishes wherever an eigenvalue is on |z| = 1; "
+              "deg_p c <= rank M1, deg R <= 2 n rank M1, R interpolated exactly from resultants at integers equals the Sylvester "
+              "determinant at other points; R without a root in (0, a] leaves M(p) one inertia there -- exact Schur-Cohn at a/1000, "
+              "a/3, 2a/3 agrees with M(a) -- on 60 random families with a pure mass's Jordan block at z = 1 (seed 47073), a in {1/100, "
+              "1/10, 1/2}; its certificate: sup g of two pure masses (kind stability-loop-max, evidence no_crossing)",
+              Status::exact, sound && interpolated && stable.enough() && unstable.enough() && degree.enough(), e.str(),
+              {stable, unstable, degree});
+}
+
 }  // namespace ext_loop_max_certificate_detail
 
 HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's and the axis residue's certificates") {
@@ -488,4 +564,5 @@ HAPSTAB_PROOF(ext_loop_max_certificate, "ext", "the arguments of the supremum's 
   slow_hold_claim(check, g);
   residue_claim(check, g);
   mirror_claim(check, g);
+  no_crossing_claim(check, g);
 }

@@ -178,8 +178,10 @@ def mutants(cert, name):
     nc = cert["evidence"].get("no_crossing")
     if nc:  # stable on (0, a]: no eigenvalue of the rational M(p) meets the circle there (since stop 78)
         out += [("no_crossing dropped (the cover then starts at 0, where M(0) has a Jordan block at z = 1)", deleted(cert, ["evidence", "no_crossing"]), 1),
+                ("the cover's one P negated", with_field(cert, ["evidence", "cover", len(cover) - 1, "P"],
+                                                          [[str(-Fraction(v)) for v in row] for row in cover[-1]["P"]]), 1) if "P" in cover[-1] else
+                ("the cover kept", cert, 0),
                 ("no_crossing.to 0", with_field(cert, ["evidence", "no_crossing", "to"], "0"), 2),
-                ("no_crossing.to at lo", with_field(cert, ["evidence", "no_crossing", "to"], claim["lo"]), 2),
                 ("no_crossing beside a first_order", with_field(cert, ["evidence", "first_order"], {"to": nc["to"], "P0": [], "S": []}), 2),
                 ("no_crossing with a field more", with_field(cert, ["evidence", "no_crossing", "from"], "0"), 2),
                 ("a device damped (M not rational: beyond no_crossing)", with_field(cert, ["model", "scene"], text.replace('b = "0"', 'b = "1"', 1)), 2)]

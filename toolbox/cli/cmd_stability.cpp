@@ -337,6 +337,7 @@ nlohmann::json loop_max_json(const stability::LoopMax& m, const StabilityOpts& o
   j["sup_enclosure"] = enclosure_json(m.sup, 17);
   j["stable_on"] = stable_interval_json(m);
   j["open_at_zero"] = m.open_at_zero;
+  if (m.no_crossing_to > 0) j["no_crossing_to"] = decimal_outward(m.no_crossing_to, 17, -1);  // (0, a]: the resultant, rounded inward
   j["gap"] = m.gap;
   j["stable_at"] = to_decimal(*m.stable_at, 17);
   j["unstable_at"] = to_decimal(*m.unstable_at, 17);
@@ -550,7 +551,8 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), M(0) unstable or the first-order mirror (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
            {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
-      if (m.first_order_to > 0) j["unstable_on"] = {"0", decimal_outward(m.first_order_to, 17, -1)};  // (0, eps], rounded inward
+      if (const rational u = m.first_order_to > 0 ? m.first_order_to : m.no_crossing_to; u > 0)  // (0, eps], rounded inward
+        j["unstable_on"] = {"0", decimal_outward(u, 17, -1)};
       if (split) add_split_json(j, *split);
       text = "sup " + o.max_name + " = 0   [" + to_string(m.status) + "]\n  " + m.note + "\n";
       rc = cli::exit_property_fails;
@@ -560,7 +562,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       if (m.outcome != Outcome::holds) {
         text = "sup " + o.max_name + ": undecided\n";
         if (j.contains("stable_on"))
-          text += "  stable for every " + o.max_name + " in [" + j["stable_on"][0].get<std::string>() + ", " +
+          text += "  stable for every " + o.max_name + " in " + (m.open_at_zero ? "(" : "[") + j["stable_on"][0].get<std::string>() + ", " +
                   j["stable_on"][1].get<std::string>() + "] [certified]\n";
         text += "  " + m.note + "\n";
         if (!o.certificate.empty()) text += "  certificate: none written (an undecided supremum has none)\n";

@@ -386,12 +386,12 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
 
 }  // namespace
 
-SupClaim sup_claim(const stability::LoopMax& m) { return {m.outcome, m.crossing, m.stable_to, m.first_order_to}; }
+SupClaim sup_claim(const stability::LoopMax& m) { return {m.outcome, m.crossing, m.stable_to, m.first_order_to, m.no_crossing_to}; }
 
 SupClaim sup_claim(const stability::MaxGain& m) {
   if (m.infinite) throw InputError("--certificate: sup is +infinity: no stability-loop-max certificate (its claim is an enclosure)");
   const Enclosure<rational> e = m.exact ? Enclosure<rational>{*m.exact, *m.exact} : m.enclosure;
-  return {m.outcome, e, e.lo, rational(0)};
+  return {m.outcome, e, e.lo, rational(0), rational(0)};
 }
 
 namespace {
@@ -428,11 +428,11 @@ std::vector<std::pair<std::string, std::string>> claim_ends(const SupClaim& m, c
   return ends;
 }
 
-// Where M(p) is rational (pure masses, no conserved quantity) and no eigenvalue meets the unit circle on (0, a]
-// (lti/circle_crossing.hpp), the evidence no_crossing {to: a} in place of the first-order start: a as high as the
-// resultant allows below lo (half its first positive root, or lo (1 - 2^-10)), so the cover starts far from the Jordan
-// block at z = 1 that defeats the first-order start. nullopt where M is not rational or R vanishes identically.
-std::optional<nlohmann::json> no_crossing_start(const LoopPair& lp, const rational& lo) {
+// Where M(p) is rational (pure masses, no conserved quantity): the largest b <= lo such that no eigenvalue meets the
+// unit circle on (0, b) (lti/circle_crossing.hpp: lo, or R's first positive root below it); the evidence no_crossing
+// {to: a} then takes a in (0, b), as near lo as the cover from a to lo allows (loop_evidence), far from the Jordan block
+// at z = 1 that defeats the first-order start. nullopt where M is not rational or R vanishes identically.
+std::optional<rational> no_crossing_bound(const LoopPair& lp, const rational& lo) {
   if (lp.m1.conserved != 0 || lp.m1.right_quotient || lp.loop1.own_conserved != 0) return std::nullopt;
   const auto X1 = check::detail::exact_loop_matrix(lp.loop1), X2 = check::detail::exact_loop_matrix(lp.loop2);
   if (!X1 || !X2 || X1->size() != X2->size() || static_cast<long>(X1->size()) > kCircleCrossingOrder) return std::nullopt;
@@ -450,15 +450,33 @@ std::optional<nlohmann::json> no_crossing_start(const LoopPair& lp, const ration
     return std::nullopt;  // beyond its order or degree
   }
   if (cc.identically_zero) return std::nullopt;
-  rational a = lo - lo / 1024;
+  rational b = lo;
   for (const RootInterval& r : isolate_real_roots(cc.R, rational(0), lo))
     if (r.hi > 0) {
-      a = std::min(a, (r.lo > 0 ? r.lo : r.hi) / 2);
+      b = r.lo > 0 ? r.lo : r.hi / 2;
       break;
     }
-  a = round_down(a, a / 1024);
-  if (a <= 0 || count_real_roots(cc.R, rational(0), a) != 0) return std::nullopt;
-  return nlohmann::json{{"to", a.str()}};
+  while (b > 0 && count_real_roots(cc.R, rational(0), b) != 0) b /= 2;  // b itself excluded below (a < b)
+  return b > 0 ? std::optional<rational>(b) : std::nullopt;
+}
+
+// sup = 0 where M(p) is rational: no_crossing {to: a} and unstable_at {at: a} (Stein inertia): NOT stable on (0, a]. a:
+// the producer's own (hint, stability/loop_max.hpp's no_crossing_to), else half or an eighth of the bound below 1.
+// "" when written into `evidence`, else why not.
+std::string no_crossing_zero_evidence(const LoopPair& lp, const std::string& name, const rational& hint, nlohmann::json& evidence) {
+  const std::optional<rational> b = no_crossing_bound(lp, rational(1));
+  if (!b) return "M(" + name + ") not rational, or the resultant vanishes identically";
+  std::vector<rational> tries{*b / 2, *b / 8};
+  if (hint > 0 && hint <= *b) tries.insert(tries.begin(), hint);
+  for (const rational& a : tries) {
+    const SchurDecision u = stein_evidence(intervals(loop_at(lp.m1.M, lp.m2.M, a)));
+    if (u.stable && !*u.stable) {
+      evidence["no_crossing"] = {{"to", a.str()}};
+      evidence["unstable_at"] = {{"at", a.str()}, {"P", rows(exact(u.P))}, {"w", rows(exact(u.w.transpose()))[0]}};
+      return "";
+    }
+  }
+  return "no Stein inertia certificate that " + name + " is NOT stable below the resultant's first root";
 }
 
 // One loop's evidence for sup in [lo, hi] ({first_order or no_crossing, cover, unstable_at} of check_max_part): where M(0)
@@ -466,14 +484,39 @@ std::optional<nlohmann::json> no_crossing_start(const LoopPair& lp, const ration
 // eps], eps the producer's own first-order cover's end (first_order_to), else lo / 4^j; unstable_at where `unstable`.
 // nullopt with `why` when none is found.
 std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::string& name, const rational& lo, const rational& hi,
-                                            const rational& first_order_to, bool unstable, Work& work, std::string& why) {
+                                            const rational& first_order_to, const rational& no_crossing_to, bool unstable, Work& work,
+                                            std::string& why) {
   flint::BallPrecision scope(kBits);
   std::optional<nlohmann::json> start;
   // (not on a quotient by right eigenvectors: beyond the checker's start; at hi = 0 the slow rows serve
   // Stein inertia on ker L instead)
   const Mat L = !lp.m1.right_quotient ? check::detail::slow_rows(lp.loop1, lp.loop2, lp.m1) : Mat{};
-  std::string start_kind = "first_order";
-  if (!L.empty() && lo > 0 && (start = no_crossing_start(lp, lo))) start_kind = "no_crossing";
+  std::optional<rational> nc_bound = !L.empty() && lo > 0 ? no_crossing_bound(lp, lo) : std::nullopt;
+  if (nc_bound && *nc_bound >= lo) {  // no crossing on (0, lo]: M(lo) stable by one P is all the cover needs
+    std::string no;
+    if (const auto P = stein_P(lp.m1.M, lp.m2.M, lo, work); P && check::detail::stein_holds(*P, loop_at(lp.m1.M, lp.m2.M, lo), no)) {
+      nlohmann::json ev = nlohmann::json::object();
+      if (unstable) no = unstable_evidence(lp.m1.M, lp.m2.M, name, hi, L, ev);
+      if (no.empty()) {
+        ev["cover"] = nlohmann::json::array({{{"to", lo.str()}, {"P", rows(*P)}}});
+        ev["no_crossing"] = {{"to", lo.str()}};
+        return ev;
+      }
+    }
+  }
+  if (nc_bound) {  // no_crossing {to: a}, a = b - b 2^-k: the cover [a, lo] shortest first, then from lower if it fails
+    for (const int k : {10, 20, 30, 40}) {
+      const rational a = round_down(*nc_bound - *nc_bound / rational(integer(1) << k), *nc_bound / rational(integer(1) << (k + 10)));
+      if (a <= 0 || a >= lo) continue;
+      Attempt at = evidence_for(lp.m1.M, lp.m2.M, name, lo, hi, a, L, work, unstable);
+      if (!at.why.empty()) {
+        why = at.why;
+        continue;
+      }
+      at.evidence["no_crossing"] = {{"to", a.str()}};
+      return at.evidence;
+    }
+  }
   if (!L.empty() && lo > 0 && !start) {
     std::vector<rational> tries;
     if (first_order_to > 0 && first_order_to <= lo) tries.push_back(first_order_to);
@@ -493,6 +536,10 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
   if (hi == 0 && unstable) {  // sup = 0 (lo = 0: no cover)
     nlohmann::json ev = nlohmann::json::object();
     why = zero_evidence(lp.m1.M, lp.m2.M, lp.m1, lp.m2, name, L, first_order_to, ev);
+    if (!why.empty()) {  // a Jordan block at z = 1 pushed out: the rational M's resultant
+      nlohmann::json nc = nlohmann::json::object();
+      if (no_crossing_zero_evidence(lp, name, no_crossing_to, nc).empty()) why.clear(), ev = nc;
+    }
     return why.empty() ? std::optional<nlohmann::json>(ev) : std::nullopt;
   }
   const rational from = start ? parse_rational(start->at("to").get<std::string>()) : rational(0);
@@ -501,7 +548,7 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
     why = a.why;
     return std::nullopt;
   }
-  if (start) a.evidence[start_kind] = *start;
+  if (start) a.evidence["first_order"] = *start;
   return a.evidence;
 }
 
@@ -533,7 +580,7 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
   std::string why;
   Work work;
   for (const auto& [plo, phi] : claim_ends(m, name)) {
-    const auto ev = loop_evidence(lp, name, parse_rational(plo), parse_rational(phi), m.first_order_to, true, work, why);
+    const auto ev = loop_evidence(lp, name, parse_rational(plo), parse_rational(phi), m.first_order_to, m.no_crossing_to, true, work, why);
     if (!ev) continue;
     j["evidence"] = *ev;
     j["claim"] = sup_claim_json("sup " + name + " = sup{p0 > 0: the " + (model.contains("scene") ? "scene's " : "") +
@@ -585,8 +632,9 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
       for (size_t b = 0; b < blocks.size() && !deciding; ++b) {
         flint::BallPrecision scope(kBits);
         const Mat L = !blocks[b].m1.right_quotient ? check::detail::slow_rows(blocks[b].loop1, blocks[b].loop2, blocks[b].m1) : Mat{};
-        const std::string no = pass == 1 ? zero_evidence(blocks[b].m1.M, blocks[b].m2.M, blocks[b].m1, blocks[b].m2, name, L, m.first_order_to, un)
-                                         : unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un);
+        std::string no = pass == 1 ? zero_evidence(blocks[b].m1.M, blocks[b].m2.M, blocks[b].m1, blocks[b].m2, name, L, m.first_order_to, un)
+                                   : unstable_evidence(blocks[b].m1.M, blocks[b].m2.M, name, hi, L, un);
+        if (!no.empty() && pass == 1) no = no_crossing_zero_evidence(blocks[b], name, rational(0), un);  // rational M: the resultant
         if (no.empty()) deciding = b;
       }
     if (!deciding) {
@@ -598,7 +646,7 @@ nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& mo
     bool all = true;
     for (size_t b = 0; b < blocks.size() && all; ++b) {
       if (hi == 0 && b != *deciding) continue;  // sup = 0: the one block
-      std::optional<nlohmann::json> ev = lo > 0 ? loop_evidence(blocks[b], name, lo, hi, 0, false, work, why) : nlohmann::json::object();
+      std::optional<nlohmann::json> ev = lo > 0 ? loop_evidence(blocks[b], name, lo, hi, 0, 0, false, work, why) : nlohmann::json::object();
       if (!ev) {
         why = "block " + labels[b].dump() + ": " + why;
         all = false;

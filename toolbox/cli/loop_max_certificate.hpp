@@ -39,7 +39,7 @@ namespace hapstab::cli {
 struct SupClaim {
   Outcome outcome = Outcome::undecided;
   Enclosure<rational> crossing{0, 0};
-  rational stable_to = 0, first_order_to = 0;
+  rational stable_to = 0, first_order_to = 0, no_crossing_to = 0;
 };
 /// Of a scene's loop (stability/loop_max.hpp), and of the one-DOF loop (stability/sampled_loop.hpp; +infinity:
 /// InputError, no certificate form).

@@ -349,7 +349,9 @@ Cover check_cover(const nlohmann::json& cover, const BallRows& M1, const BallRow
     if (!cover[k].is_object()) throw InputError(where + ": not an object");
     detail::only_fields(cover[k], {"to", "P", "P_to"}, where);
     const rational to = detail::exact_field(cover[k], "to", where);
-    if (to <= from) throw InputError(where + ".to: not above the interval's start " + from.str());
+    // (one interval [lo, lo], M(lo) stable by one P, where no_crossing reaches lo: the check_max_part caller's from = lo)
+    if (to < from || (to == from && !(cover.size() == 1 && to == lo && !cover[k].contains("P_to"))))
+      throw InputError(where + ".to: not above the interval's start " + from.str());
     if (k + 1 == cover.size() && to != lo) throw InputError(where + ".to: the last interval ends at claim.lo (" + lo.str() + ")");
     const bool linear = cover[k].contains("P_to");  // P at `from`, P_to at `to`, linear between (header)
     const bool inherited = !cover[k].contains("P");
@@ -392,6 +394,17 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
   const std::string& block = r.block;
   // the evidence's shape first (malformed before anything is computed)
   const bool has_unstable = ev.contains("unstable_at"), outward = ev.contains("first_order_unstable");
+  // no_crossing {to: a} (header): no eigenvalue of the rational M(p) meets the circle on (0, a]; in place of first_order
+  // (the cover then starts at min(a, lo)), or, claim.hi = 0, beside unstable_at at a (NOT stable on (0, a])
+  std::optional<rational> no_crossing;
+  if (ev.contains("no_crossing")) {
+    const nlohmann::json& nc = detail::object_field(ev, "no_crossing", at);
+    detail::only_fields(nc, {"to"}, at + ".no_crossing");
+    no_crossing = detail::exact_field(nc, "to", at + ".no_crossing");
+    if (ev.contains("first_order") || outward || *no_crossing <= 0)
+      throw InputError(at + ".no_crossing.to: above 0, and not beside first_order or first_order_unstable");
+  }
+  const rational un_at = no_crossing && c.hi.is_zero() ? *no_crossing : c.hi;  // where unstable_at is
   if (outward && (has_unstable || ev.contains("first_order") || !c.hi.is_zero()))
     throw InputError(at + ".first_order_unstable: with claim.hi = 0 only, in place of unstable_at and first_order (sup = 0 by the "
                           "first-order mirror)");
@@ -403,22 +416,14 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
   const bool slow_quotient = un.contains("slow_quotient");
   if (slow_quotient && (!un.at("slow_quotient").is_boolean() || !un.at("slow_quotient").get<bool>() || !c.hi.is_zero()))
     throw InputError(at + ".unstable_at.slow_quotient: true, with claim.hi = 0 only (sup = 0 beside the slow modes)");
-  if (has_unstable && detail::exact_field(un, "at", at + ".unstable_at") != c.hi)
-    throw InputError(at + ".unstable_at.at: not claim.hi (" + c.hi.str() + ")");
+  if (has_unstable && detail::exact_field(un, "at", at + ".unstable_at") != un_at)
+    throw InputError(at + ".unstable_at.at: not " + (un_at == c.hi ? "claim.hi (" : "no_crossing.to (") + un_at.str() + ")");
+  if (no_crossing && c.hi.is_zero() && (slow_quotient || !has_unstable))
+    throw InputError(at + ".no_crossing: with claim.hi = 0, beside unstable_at at no_crossing.to (not on a slow quotient)");
   const nlohmann::json cover = ev.contains("cover") ? ev.at("cover") : nlohmann::json::array();
   if (!cover.is_array() || cover.size() > kMaxCover)
     throw InputError(at + ".cover: not an array of at most " + std::to_string(kMaxCover) + " intervals");
   if (cover.empty() != c.lo.is_zero()) throw InputError(at + ".cover: needed exactly when claim.lo > 0 (it proves (0, lo])");
-  // stable on (0, a] where no eigenvalue of the rational M(p) meets the circle (header): {to: a}, 0 < a < lo, in place
-  // of first_order
-  std::optional<rational> no_crossing;
-  if (ev.contains("no_crossing")) {
-    const nlohmann::json& nc = detail::object_field(ev, "no_crossing", at);
-    detail::only_fields(nc, {"to"}, at + ".no_crossing");
-    no_crossing = detail::exact_field(nc, "to", at + ".no_crossing");
-    if (ev.contains("first_order") || *no_crossing <= 0 || *no_crossing >= c.lo)
-      throw InputError(at + ".no_crossing.to: in (0, claim.lo), and not beside first_order (either starts the cover)");
-  }
   MaxPart out;
   for (long bits : {128L, 256L, 512L}) {
     flint::BallPrecision scope(bits);
@@ -482,7 +487,7 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
       }
       if (!no.empty()) return {false, at + ".no_crossing: an eigenvalue may meet the unit circle in (0, " + no_crossing->str() + "]: " + no};
     }
-    if (no_crossing) from = *no_crossing;
+    if (no_crossing) from = std::min(*no_crossing, c.lo);  // to >= lo: the cover is the one point lo
     // NOT stable on (0, eps] by the first-order mirror (header)
     if (outward) {
       bool refuted = false;
@@ -492,7 +497,7 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
     }
     // NOT stable at hi (or, hi = 0, at the limit M(0); slow_quotient: M(0) on ker L, L the slow rows (header))
     if (has_unstable) {
-      BallRows Mu = detail::affine_loop_at(m1.M, m2.M, c.hi);
+      BallRows Mu = detail::affine_loop_at(m1.M, m2.M, un_at);
       if (slow_quotient) {
         const Mat L = detail::slow_rows(L1, L2, m1);
         if (L.empty()) throw InputError(at + ".unstable_at.slow_quotient: the loop has no slow rows at " + p + " = 0");
@@ -508,7 +513,7 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
         for (size_t j = 0; j < nu; ++j) q += w[0][i] * Pu[i][j] * w[0][j];
       if (q >= 0) return {false, at + ".unstable_at: w^T P w = " + detail::decimal(q) + " >= 0"};
       if (!detail::stein_holds(Pu, Mu, out.why)) {
-        out.why = "at " + p + " = " + c.hi.str() + " (NOT stable): " + out.why;
+        out.why = "at " + p + " = " + un_at.str() + " (NOT stable): " + out.why;
         continue;
       }
     }
@@ -577,13 +582,22 @@ Verdict check_stability_loop_max(const nlohmann::json& cert) {
                                      : " the " + block + "'s gain alone") + ")" +
                            (evidence.contains("first_order") ? "; stable on (0, " + detail::decimal(from0(evidence)) + "] by the first-order start (P0 + L^T S L/" + p +
                                                                     ", concave in " + p + ")"
-                                                              : std::string());
+                            : evidence.contains("no_crossing") && !c.hi.is_zero()
+                                ? "; no eigenvalue meets the unit circle on (0, " +
+                                      detail::decimal(detail::exact_field(evidence.at("no_crossing"), "to", "evidence.no_crossing")) +
+                                      "] (the resultant of det(zI - M) and its reciprocal has no root there)"
+                                : std::string());
   const nlohmann::json cover = evidence.contains("cover") ? evidence.at("cover") : nlohmann::json::array();
   if (c.hi.is_zero() && evidence.contains("first_order_unstable"))
     return {true, "sup " + p + " = 0: " + loop + " is NOT stable for every " + p + " in (0, " +
                       detail::decimal(detail::exact_field(evidence.at("first_order_unstable"), "to", "evidence.first_order_unstable")) +
                       "] (the first-order mirror: P0 + L^T S L/" + p + " - M^T (.) M > 0, concave in " + p + ", with w^T (.) w < 0: Stein inertia, " +
                       std::to_string(part.bits) + " bits)"};
+  if (c.hi.is_zero() && evidence.contains("no_crossing"))
+    return {true, "sup " + p + " = 0: " + loop + " is NOT stable for every " + p + " in (0, " +
+                      detail::decimal(detail::exact_field(evidence.at("no_crossing"), "to", "evidence.no_crossing")) +
+                      "] (no eigenvalue meets the unit circle there: the resultant of det(zI - M) and its reciprocal has no root; "
+                      "at its end an eigenvalue |z| > 1 by Stein inertia, " + std::to_string(part.bits) + " bits)"};
   if (c.hi.is_zero())
     return {true, "sup " + p + " = 0: " + loop + " has at " + p + " -> 0 an eigenvalue |z| > 1 (P - M(0)^T P M(0) > 0, w^T P w < 0: Stein " +
                       "inertia, " + std::to_string(part.bits) + " bits" +

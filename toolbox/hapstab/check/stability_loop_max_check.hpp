@@ -74,8 +74,16 @@
 // solution sum (M^T)^i Q M^i would be P(p), > 0) and has no eigenvalue on the circle (v^* Q v = (1 - |z|^2) v^* P v
 // would vanish), so one outside: NOT stable on (0, eps], sup = 0. (S must be indefinite: Q's slow block is
 // -(G^T S + S G), G = K V the first-order matrix, and G has an eigenvalue with Re > 0.)
+// No crossing of the circle (evidence.no_crossing {to = a}, since stop 78; lti/circle_crossing.hpp): where M(p) is
+// rational -- every plant component nilpotent (pure masses: e^{Ah} and Gamma_h finite sums), no conserved quantity --
+// the checker builds M(1), M(2) exactly (stability_loop_check.hpp's exact_loop_matrix), c(z, p) = det(zI - M(p)) and
+// R(p) = Res_z(c, z^n c(1/z)), and requires R / p^m without a real root in (0, a] (Sturm): no eigenvalue meets the
+// circle there, so M(p) keeps one inertia on (0, a]. In place of first_order the cover then starts at min(a, lo) (a >=
+// lo: one interval [lo, lo], M(lo) stable by one P): stable on (0, max(a, lo)] -- a pure mass's Jordan block at z = 1,
+// whose eigenvalues leave like sqrt(p), defeats the first-order start. With claim hi = 0, beside unstable_at at a
+// (Stein inertia there): NOT stable on (0, a], sup = 0.
 // Limits: the loop's order <= 160, at most 4096 intervals, and intervals x n^3 <= 5e7 (one with P linear counted 5
-// times; beyond: malformed, by name).
+// times; beyond: malformed, by name); no_crossing: order <= 64 and 2 n rank(M1) <= 2048.
 // Implements: paper 000 Sec. VI.
 #pragma once
 

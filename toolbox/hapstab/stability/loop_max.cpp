@@ -26,6 +26,7 @@
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/numeric_decimal.hpp"
 #include "hapstab/poly/stability.hpp"
+#include "hapstab/poly/sturm.hpp"
 #include "hapstab/sim/closed_loop.hpp"
 #include "hapstab/stability/loop_as_written.hpp"
 
@@ -1141,6 +1142,20 @@ std::optional<std::pair<MatQ, MatQ>> exact_family(const LoopFamily& F) {
   return std::make_pair(build(F.Ku0, F.Kx0, true), build(F.dKu, F.dKx, false));
 }
 
+// R(p) / p^m of lti/circle_crossing.hpp for the family, where M is rational and within its limits (nullopt otherwise,
+// and where R vanishes for every p).
+std::optional<Polynomial<rational>> exact_crossing_polynomial(const LoopFamily& F) {
+  const auto ex = exact_family(F);
+  if (!ex || static_cast<long>(ex->first.rows()) > kCircleCrossingOrder) return std::nullopt;
+  try {
+    const CircleCrossing cc = circle_crossing(ex->first, ex->second);
+    if (cc.identically_zero) return std::nullopt;
+    return cc.R;
+  } catch (const InputError&) {
+    return std::nullopt;  // 2 n rank M1 beyond its degree limit
+  }
+}
+
 MatQ integrator_kernel(const LoopFamily& F) {
   const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(F.Kx0.rows()), N = static_cast<long>(F.Ku0.rows());
   MatQ S = MatQ::Zero(ns + N + nc, ns + nc);
@@ -1597,6 +1612,30 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       return out;
     }
   }
+  // M rational (pure masses) and NOT Schur stable at a (exactly) with no eigenvalue meeting the circle on (0, a] (the
+  // resultant): NOT stable for every p in (0, a], sup = 0 -- a Jordan block at z = 1 pushed out, which neither Stein
+  // inertia at 0 nor the first-order mirror shows. a: half of R's first positive root, or the reference below it.
+  const std::optional<Polynomial<rational>> R = exact_crossing_polynomial(F);
+  if (R) {
+    rational a = reference;
+    for (const RootInterval& r : isolate_real_roots(*R, rational(0), reference))
+      if (r.hi > 0) {
+        a = (r.lo > 0 ? r.lo : r.hi) / 2;
+        break;
+      }
+    for (int k = 0; k < 64 && a > 0 && count_real_roots(*R, rational(0), a) != 0; ++k) a /= 2;
+    const auto ex = exact_family(F);
+    if (a > 0 && count_real_roots(*R, rational(0), a) == 0 && !schur_stable(charpoly(MatQ(ex->first + ex->second * a)))) {
+      out.outcome = Outcome::fails;
+      out.status = Status::exact;
+      out.no_crossing_to = a;
+      out.note = "NOT stable for every " + name + " in (0, " + decimal_outward(a, 6, -1) + "] [exact]: the closed-loop matrix M(" + name +
+                 ") is rational (pure masses), not Schur stable at " + a.str() + " (Schur-Cohn on det(zI - M), exact), and no eigenvalue "
+                 "meets the unit circle on (0, " + decimal_outward(a, 6, -1) + "] (the resultant of det(zI - M(" + name +
+                 ")) and its reciprocal polynomial has no root there): the supremum of (0, sup) is 0";
+      return out;
+    }
+  }
   const Spectrum sp{mid(*base.M0), mid(*base.M1)};
   const std::optional<Isolated> is = isolate(sp, static_cast<double>(reference), name, out);
   if (!is) return out;
@@ -1623,22 +1662,24 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   const rational p0 = rational(p0d);
   Cover cov{*base.M0, *base.M1};
   cov.integrators = slow;
-  const bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
-  // the walk towards 0 stopped at stable_from > 0 (a pure mass: a Jordan block at z = 1 whose eigenvalues leave it
-  // like sqrt(p)): where M is rational, no eigenvalue meets the circle on (0, stable_from] (the resultant, header)
-  // and M(stable_from) is stable, so every M(p) there is
-  if (out.stable_from > 0 && out.stable_to > out.stable_from)
-    if (const auto ex = exact_family(F); ex && static_cast<long>(ex->first.rows()) <= kCircleCrossingOrder) {
-      std::string no;
-      try {
-        no = no_circle_crossing(ex->first, ex->second, out.stable_from);
-      } catch (const InputError& err) {
-        no = err.what();
-      }
-      if (no.empty()) {
+  bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
+  // Where M is rational (pure masses), the resultant (lti/circle_crossing.hpp) joins what the walk leaves: (0,
+  // stable_from] below it (a Jordan block at z = 1 whose eigenvalues leave like sqrt(p)), and (stable_to, crossing.lo]
+  // above it (a walk stalled short of the crossing): no root of R there, so no eigenvalue meets the circle, and M stable
+  // at the interval's other end (the walk) makes every M(p) in it stable
+  if (out.stable_to > out.stable_from && (out.stable_from > 0 || (!closed && out.stable_to < top)))
+    if (R) {
+      if (out.stable_from > 0 && count_real_roots(*R, rational(0), out.stable_from) == 0) {
         out.no_crossing_to = out.stable_from;
         out.stable_from = 0;
         out.open_at_zero = true;
+      }
+      if (!closed && out.stable_to < top && count_real_roots(*R, out.stable_to, top) == 0) {
+        out.no_crossing_above = out.stable_to;
+        out.stable_to = top;
+        out.sup = {top, e.p.hi};
+        out.gap = 0;
+        closed = true;
       }
     }
   if (out.stable_to <= p0 && !closed) {
@@ -1681,7 +1722,10 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
     << " in the crossing enclosure (" << out.where << ", Krawczyk test at " << out.precision_bits << " bits); every " << name
     << " in " << (out.open_at_zero ? "(" : "[") << "0, " << decimal_outward(out.stable_to, 6, -1) << "] is stable (" << cov.checks
     << " steps of the walk: Gershgorin discs in an eigenbasis of M, or a Stein certificate, over intervals of " << name << "";
-  if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
+  if (closed && out.no_crossing_above > 0)
+    o << ", up to " << decimal_outward(out.no_crossing_above, 6, -1) << ", then to the crossing no eigenvalue of M meets the unit "
+      << "circle (the exact resultant of det(zI - M(" << name << ")) and its reciprocal polynomial has no root there; M rational)";
+  else if (closed) o << ", the last one up to the crossing: there the eigenvalues that move out only grow in modulus";
   if (out.open_at_zero && out.no_crossing_to > 0)
     o << "; on (0, " << decimal_outward(out.no_crossing_to, 6, -1) << "] no eigenvalue of M meets the unit circle (the exact "
       << "resultant of det(zI - M(" << name << ")) and its reciprocal polynomial has no root there; M rational: pure masses), "

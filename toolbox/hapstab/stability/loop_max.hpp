@@ -50,7 +50,8 @@
 // open_at_zero (the loop at p = 0 itself is only marginally stable). A pure mass that nothing
 // damps at p = 0 (a Jordan block at z = 1) is not covered: its eigenvalues leave 1 like sqrt(p). There, where M(p) is
 // rational (every plant component nilpotent: pure masses), the walk's lowest point a is joined to 0 exactly instead:
-// R(p) = Res_z(det(zI - M(p)), its reciprocal) without a root in (0, a] (lti/circle_crossing.hpp) and M(a) stable.
+// R(p) = Res_z(det(zI - M(p)), its reciprocal) without a root in (0, a] (lti/circle_crossing.hpp) and M(a) stable; and
+// a walk up stalled at b short of the crossing is joined to crossing.lo the same way (no root of R in (b, crossing.lo]).
 // The mirror: where p moves a slow mode out at first order (an eigenvalue of C11 with Re > 0 beyond its row's
 // off-diagonal part: a negative stiffness on a position nothing holds), the same discs show every M(p), p in
 // (0, eps], with an eigenvalue outside the circle -- the outward first-block discs lie in |z| > 1, apart from the
@@ -99,6 +100,8 @@ struct LoopMax {
   /// stable on (0, no_crossing_to] because no eigenvalue of the rational M(p) meets the circle there (lti/circle_crossing.hpp)
   /// and M(no_crossing_to) is stable (0: not used)
   rational no_crossing_to = 0;
+  /// the walk stopped short at no_crossing_above and the resultant closed (no_crossing_above, crossing.lo] (0: not used)
+  rational no_crossing_above = 0;
   double gap = 0;                        ///< (crossing.lo - stable_to) / crossing.lo: not covered (0: sup = crossing)
   std::optional<rational> stable_at;     ///< decide_loop: stable there (just below the crossing)
   std::optional<rational> unstable_at;   ///< decide_loop: NOT stable there (just above the crossing)
