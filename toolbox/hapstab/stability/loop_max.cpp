@@ -1562,6 +1562,51 @@ bool rump_outside(const ArbFamily& base, const rational& p, std::string& why) {
 /// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
 /// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
 /// cannot take -- by Rump's enclosure of that one eigenvalue lying outside the circle (rump_outside).
+// M rational (pure masses) and NOT Schur stable at a (exactly) with no eigenvalue meeting the circle on (0, a] (the
+// resultant R): NOT stable for every p in (0, a], sup = 0 -- a Jordan block at z = 1 pushed out, which neither Stein
+// inertia at 0 nor the first-order mirror shows. a: half of R's first positive root, or the reference below it. True
+// (out set: outcome fails, exact) when shown.
+bool unstable_by_resultant(const LoopFamily& F, const Polynomial<rational>& R, const rational& reference, const std::string& name,
+                           LoopMax& out) {
+  rational a = reference;
+  for (const RootInterval& r : isolate_real_roots(R, rational(0), reference))
+    if (r.hi > 0) {
+      a = (r.lo > 0 ? r.lo : r.hi) / 2;
+      break;
+    }
+  for (int k = 0; k < 64 && a > 0 && count_real_roots(R, rational(0), a) != 0; ++k) a /= 2;
+  const auto ex = exact_family(F);
+  if (!ex || a <= 0 || count_real_roots(R, rational(0), a) != 0 || schur_stable(charpoly(MatQ(ex->first + ex->second * a)))) return false;
+  out.outcome = Outcome::fails;
+  out.status = Status::exact;
+  out.no_crossing_to = a;
+  out.note = "NOT stable for every " + name + " in (0, " + decimal_outward(a, 6, -1) + "] [exact]: the closed-loop matrix M(" + name +
+             ") is rational (pure masses), not Schur stable at " + a.str() + " (Schur-Cohn on det(zI - M), exact), and no eigenvalue "
+             "meets the unit circle on (0, " + decimal_outward(a, 6, -1) + "] (the resultant of det(zI - M(" + name +
+             ")) and its reciprocal polynomial has no root there): the supremum of (0, sup) is 0";
+  return true;
+}
+
+// Where M is rational (pure masses), the resultant R joins what the walk leaves: (0, stable_from] below it (a Jordan
+// block at z = 1 whose eigenvalues leave like sqrt(p)), and (stable_to, top] above it (a walk stalled short of the
+// crossing, top = crossing.lo): no root of R there, so no eigenvalue meets the circle, and M stable at the interval's
+// other end (the walk) makes every M(p) in it stable.
+void close_by_resultant(const Polynomial<rational>& R, const rational& top, const rational& crossing_hi, bool& closed, LoopMax& out) {
+  if (out.stable_to <= out.stable_from) return;
+  if (out.stable_from > 0 && count_real_roots(R, rational(0), out.stable_from) == 0) {
+    out.no_crossing_to = out.stable_from;
+    out.stable_from = 0;
+    out.open_at_zero = true;
+  }
+  if (!closed && out.stable_to < top && count_real_roots(R, out.stable_to, top) == 0) {
+    out.no_crossing_above = out.stable_to;
+    out.stable_to = top;
+    out.sup = {top, crossing_hi};
+    out.gap = 0;
+    closed = true;
+  }
+}
+
 bool unstable_at_zero(const ArbFamily& base, std::string& why) {
   const SchurDecision d = schur_decide(double_ball_matrix(*base.M0));
   if (d.stable && !*d.stable) {
@@ -1612,30 +1657,8 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
       return out;
     }
   }
-  // M rational (pure masses) and NOT Schur stable at a (exactly) with no eigenvalue meeting the circle on (0, a] (the
-  // resultant): NOT stable for every p in (0, a], sup = 0 -- a Jordan block at z = 1 pushed out, which neither Stein
-  // inertia at 0 nor the first-order mirror shows. a: half of R's first positive root, or the reference below it.
   const std::optional<Polynomial<rational>> R = exact_crossing_polynomial(F);
-  if (R) {
-    rational a = reference;
-    for (const RootInterval& r : isolate_real_roots(*R, rational(0), reference))
-      if (r.hi > 0) {
-        a = (r.lo > 0 ? r.lo : r.hi) / 2;
-        break;
-      }
-    for (int k = 0; k < 64 && a > 0 && count_real_roots(*R, rational(0), a) != 0; ++k) a /= 2;
-    const auto ex = exact_family(F);
-    if (a > 0 && count_real_roots(*R, rational(0), a) == 0 && !schur_stable(charpoly(MatQ(ex->first + ex->second * a)))) {
-      out.outcome = Outcome::fails;
-      out.status = Status::exact;
-      out.no_crossing_to = a;
-      out.note = "NOT stable for every " + name + " in (0, " + decimal_outward(a, 6, -1) + "] [exact]: the closed-loop matrix M(" + name +
-                 ") is rational (pure masses), not Schur stable at " + a.str() + " (Schur-Cohn on det(zI - M), exact), and no eigenvalue "
-                 "meets the unit circle on (0, " + decimal_outward(a, 6, -1) + "] (the resultant of det(zI - M(" + name +
-                 ")) and its reciprocal polynomial has no root there): the supremum of (0, sup) is 0";
-      return out;
-    }
-  }
+  if (R && unstable_by_resultant(F, *R, reference, name, out)) return out;
   const Spectrum sp{mid(*base.M0), mid(*base.M1)};
   const std::optional<Isolated> is = isolate(sp, static_cast<double>(reference), name, out);
   if (!is) return out;
@@ -1663,25 +1686,7 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   Cover cov{*base.M0, *base.M1};
   cov.integrators = slow;
   bool closed = cover_below(cov, p0, top, e, M0p, M1p, digits, out);
-  // Where M is rational (pure masses), the resultant (lti/circle_crossing.hpp) joins what the walk leaves: (0,
-  // stable_from] below it (a Jordan block at z = 1 whose eigenvalues leave like sqrt(p)), and (stable_to, crossing.lo]
-  // above it (a walk stalled short of the crossing): no root of R there, so no eigenvalue meets the circle, and M stable
-  // at the interval's other end (the walk) makes every M(p) in it stable
-  if (out.stable_to > out.stable_from && (out.stable_from > 0 || (!closed && out.stable_to < top)))
-    if (R) {
-      if (out.stable_from > 0 && count_real_roots(*R, rational(0), out.stable_from) == 0) {
-        out.no_crossing_to = out.stable_from;
-        out.stable_from = 0;
-        out.open_at_zero = true;
-      }
-      if (!closed && out.stable_to < top && count_real_roots(*R, out.stable_to, top) == 0) {
-        out.no_crossing_above = out.stable_to;
-        out.stable_to = top;
-        out.sup = {top, e.p.hi};
-        out.gap = 0;
-        closed = true;
-      }
-    }
+  if (R) close_by_resultant(*R, top, e.p.hi, closed, out);
   if (out.stable_to <= p0 && !closed) {
     out.note = "the crossing at " + name + " in [" + numeric_decimal(static_cast<double>(e.p.lo), 17) + ", " +
                numeric_decimal(static_cast<double>(e.p.hi), 17) +
