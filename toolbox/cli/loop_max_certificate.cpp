@@ -12,8 +12,8 @@
 #include "hapstab/check/stability_loop_max_check.hpp"
 #include "hapstab/check/stability_loop_symmetric_check.hpp"
 #include "hapstab/lmi/program.hpp"
-#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/lmi/solve.hpp"
+#include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/result.hpp"
@@ -428,9 +428,9 @@ std::vector<std::pair<std::string, std::string>> claim_ends(const SupClaim& m, c
   return ends;
 }
 
-// Where M(p) is rational (pure masses, no conserved quantity): the largest b <= lo such that no eigenvalue meets the
-// unit circle on (0, b) (lti/circle_crossing.hpp: lo, or R's first positive root below it); the evidence no_crossing
-// {to: a} then takes a in (0, b), as near lo as the cover from a to lo allows (loop_evidence), far from the Jordan block
+// Where M(p) is rational (pure masses, no conserved quantity): a b <= lo such that no eigenvalue meets the unit circle
+// on (0, b] (lti/circle_crossing.hpp: lo, or below R's first positive root); the evidence no_crossing {to: a} then
+// takes a in (0, b], as near lo as the cover from a to lo allows (loop_evidence), far from the Jordan block
 // at z = 1 that defeats the first-order start. nullopt where M is not rational or R vanishes identically.
 std::optional<rational> no_crossing_bound(const LoopPair& lp, const rational& lo) {
   if (lp.m1.conserved != 0 || lp.m1.right_quotient || lp.loop1.own_conserved != 0) return std::nullopt;
@@ -456,7 +456,7 @@ std::optional<rational> no_crossing_bound(const LoopPair& lp, const rational& lo
       b = r.lo > 0 ? r.lo : r.hi / 2;
       break;
     }
-  while (b > 0 && count_real_roots(cc.R, rational(0), b) != 0) b /= 2;  // b itself excluded below (a < b)
+  while (b > 0 && count_real_roots(cc.R, rational(0), b) != 0) b /= 2;
   return b > 0 ? std::optional<rational>(b) : std::nullopt;
 }
 
@@ -517,7 +517,7 @@ std::optional<nlohmann::json> loop_evidence(const LoopPair& lp, const std::strin
       return at.evidence;
     }
   }
-  if (!L.empty() && lo > 0 && !start) {
+  if (!L.empty() && lo > 0) {
     std::vector<rational> tries;
     if (first_order_to > 0 && first_order_to <= lo) tries.push_back(first_order_to);
     for (rational t = lo / 4; tries.size() < 24; t /= 4) tries.push_back(t);

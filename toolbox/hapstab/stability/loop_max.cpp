@@ -1103,16 +1103,6 @@ MatQ kernel(const MatQ& A) {
   return K;
 }
 
-// The controller-state subspace V with Ku(p) V = 0 and Kx(p) V in V for every p (Ku, Kx restricted
-// to the controller's states): the largest such, by V_{j+1} = {v in V_j : X0 v, dX v in V_j}.
-// A mode in V is an eigenvalue of every M(p) (the hidden modes of a block: an environment's
-// unobservable states); the rest of the spectrum is that of M on the quotient.
-// The vectors v = [vp; vc; 0] of M(0)'s state (plant, controller, delay buffer: assemble's order)
-// with A vp = 0, Ku0 [vp; vc] = 0 and Kx0 [vp; vc] = vc, a basis (columns, exact): for each,
-// M0 v = v exactly, whatever M0's balls hold -- e^{AT} vp = vp (A vp = 0), the force Ku0 v it
-// produces is 0 (so are the buffer's slots and the input integrals' share), the controller state
-// holds. A device's position (x' = v, read by nothing that p does not scale) is one; an
-// environment's state that remembers the position comes with it.
 // M0 and M1 exactly (sim/closed_loop.cpp's assembly) where every component of the plant is nilpotent (pure masses:
 // e^{AT} a finite sum, sim::exact_plant_zoh), else nullopt.
 std::optional<std::pair<MatQ, MatQ>> exact_family(const LoopFamily& F) {
@@ -1156,6 +1146,16 @@ std::optional<Polynomial<rational>> exact_crossing_polynomial(const LoopFamily& 
   }
 }
 
+// The controller-state subspace V with Ku(p) V = 0 and Kx(p) V in V for every p (Ku, Kx restricted
+// to the controller's states): the largest such, by V_{j+1} = {v in V_j : X0 v, dX v in V_j}.
+// A mode in V is an eigenvalue of every M(p) (the hidden modes of a block: an environment's
+// unobservable states); the rest of the spectrum is that of M on the quotient.
+// The vectors v = [vp; vc; 0] of M(0)'s state (plant, controller, delay buffer: assemble's order)
+// with A vp = 0, Ku0 [vp; vc] = 0 and Kx0 [vp; vc] = vc, a basis (columns, exact): for each,
+// M0 v = v exactly, whatever M0's balls hold -- e^{AT} vp = vp (A vp = 0), the force Ku0 v it
+// produces is 0 (so are the buffer's slots and the input integrals' share), the controller state
+// holds. A device's position (x' = v, read by nothing that p does not scale) is one; an
+// environment's state that remembers the position comes with it.
 MatQ integrator_kernel(const LoopFamily& F) {
   const long ns = static_cast<long>(F.A.rows()), nc = static_cast<long>(F.Kx0.rows()), N = static_cast<long>(F.Ku0.rows());
   MatQ S = MatQ::Zero(ns + N + nc, ns + nc);
@@ -1557,11 +1557,6 @@ bool rump_outside(const ArbFamily& base, const rational& p, std::string& why) {
   return outside;
 }
 
-/// M(0) with an eigenvalue strictly outside the unit circle: then so has M(p) for every p in some
-/// (0, eps), by continuity of the eigenvalues, and the supremum of (0, sup) is 0. Proven by a Stein
-/// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
-/// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
-/// cannot take -- by Rump's enclosure of that one eigenvalue lying outside the circle (rump_outside).
 // M rational (pure masses) and NOT Schur stable at a (exactly) with no eigenvalue meeting the circle on (0, a] (the
 // resultant R): NOT stable for every p in (0, a], sup = 0 -- a Jordan block at z = 1 pushed out, which neither Stein
 // inertia at 0 nor the first-order mirror shows. a: half of R's first positive root, or the reference below it. True
@@ -1607,6 +1602,11 @@ void close_by_resultant(const Polynomial<rational>& R, const rational& top, cons
   }
 }
 
+/// M(0) with an eigenvalue strictly outside the unit circle: then so has M(p) for every p in some
+/// (0, eps), by continuity of the eigenvalues, and the supremum of (0, sup) is 0. Proven by a Stein
+/// inertia certificate on the ball M0 (numeric/ball_matrix.hpp), or -- where M(0) also has
+/// eigenvalues ON the circle (the devices' position integrators at p = 0), which the Stein equation
+/// cannot take -- by Rump's enclosure of that one eigenvalue lying outside the circle (rump_outside).
 bool unstable_at_zero(const ArbFamily& base, std::string& why) {
   const SchurDecision d = schur_decide(double_ball_matrix(*base.M0));
   if (d.stable && !*d.stable) {
