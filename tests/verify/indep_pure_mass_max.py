@@ -9,9 +9,11 @@ K + B (z - 1)/(T z) with K drawn around B / ((n + 1) T) (0.1-1.5 of it: stable a
 delayed wall on a mass needs its damping to beat the stiffness's phase lag), springs linking neighbours in 40 %,
 delays 0-3, the gain g on the environment. The reference's supremum: the spectral radius in double on 300 points
 geometric in [10^-6, 10^4] of the scene's g, the first point with rho >= 1 bisected against the last below to
-1e-13 relative; unstable at 10^-6 (rho >= 1): sup_ref = 0.
+1e-13 relative; NOT stable at 10^-6: sup_ref = 0 -- decided exactly for pure masses (Schur-Cohn on the characteristic
+polynomial of M built in fractions, indep_charpoly.py): a Jordan block's eigenvalues near g = 0 are 1 + O(g) in
+modulus, below double precision's reach.
 
-Required: a certified sup (exit 0) within 1e-6 (relative) of sup_ref, with rho < 1 at sup 10^-k, k = 1..6 (the
+Required: a certified sup (exit 0) within 1e-6 (relative) of sup_ref, stable at sup 10^-k, k = 1..6 (the
 stable interval reaches towards 0), and its certificate (--certificate) verified by both checkers, with
 tests/check/loop_max_case.py's hand edits on every K-th (--mutants-every K) each given its exit code by both (the
 independent checker's exit 3, beyond its stated size limit, counted apart);
@@ -30,6 +32,7 @@ from fractions import Fraction as Q
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import indep_charpoly as ICH  # noqa: E402
 import indep_loop as IL  # noqa: E402
 from indep_common import Rational, case_files, cases_and_seed, run_cases  # noqa: E402
 
@@ -63,10 +66,20 @@ def draw(rng):
                 tags={"N": N, "delay": n, "links": bool(kc), "M rational": rational})
 
 
-def reference_sup(loop):
-    """(sup_ref, unstable at 1e-6): the first grid point with rho >= 1, bisected; 0 when unstable at the start."""
+def stable_at(c, loop, g):
+    """The loop's verdict at g: exact where M is rational (pure masses: indep_charpoly's M in fractions, its
+    characteristic polynomial by Hessenberg, Schur-Cohn), else rho < 1 in double. Near g = 0 a Jordan block's
+    eigenvalues are 1 + O(g) in modulus, below double precision's reach (seed 2 case 151: rho < 1 in double at
+    g = 1e-6 where the loop is NOT stable, exactly)."""
+    if c["tags"]["M rational"]:
+        return ICH.schur_cohn(ICH.hessenberg_charpoly(ICH.exact_M(c, Q(g))))
+    return IL.rho_np(loop, float(g)) < 1
+
+
+def reference_sup(c, loop):
+    """The first grid point with rho >= 1, bisected (in double); 0 when NOT stable at 1e-6 (stable_at)."""
     grid = np.geomspace(1e-6, 1e4, 300)
-    if IL.rho_np(loop, grid[0]) >= 1:
+    if not stable_at(c, loop, Q(1, 10 ** 6)):
         return 0.0
     prev = grid[0]
     for g in grid[1:]:
@@ -89,7 +102,7 @@ def run_case(exe, c, tmp):
     text = IL.scene_toml(c)
     scene, cert, bad = case_files(tmp, text)
     loop = IL.build_loop_scene(c)
-    ref = reference_sup(loop)
+    ref = reference_sup(c, loop)
     r = subprocess.run([exe, "stability", "--scene", scene, "--max", "g", "--json", "--certificate", cert], capture_output=True, text=True,
                        timeout=300)
     tags = "N %d, delay %d, links %s, %s" % (c["tags"]["N"], c["tags"]["delay"], c["tags"]["links"],
@@ -111,8 +124,8 @@ def run_case(exe, c, tmp):
     sup = float(j["max"])
     if ref in (0.0, float("inf")) or abs(sup - ref) > 1e-6 * ref:
         return False, "sup = %.12g, reference %.12g (%s)" % (sup, ref, tags), None
-    small = [IL.rho_np(loop, sup * 10.0 ** -k) for k in range(1, 7)]
-    if not all(x < 1 for x in small):
+    small = [stable_at(c, loop, Q(sup) / 10 ** k) for k in range(1, 7)]
+    if not all(small):
         return False, "sup = %.12g, but the reference's rho >= 1 below it: %s (%s)" % (sup, small, tags), None
     branch = "certified" + (", (0, a] by the resultant" if j.get("no_crossing_to") else "")
     if refused:
