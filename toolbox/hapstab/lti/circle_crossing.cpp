@@ -36,20 +36,21 @@ Polynomial<rational> interpolate(const std::vector<long>& xs, const std::vector<
   return Polynomial<rational>(std::move(c));
 }
 
-// Res(f, g) exactly (FLINT: a^deg g b^deg f prod (alpha_i - beta_j); f monic: prod g(alpha_i)).
-rational resultant(const Polynomial<rational>& f, const Polynomial<rational>& g) {
-  flint::FmpqPoly ff, fg;
-  flint::to_flint(f, ff);
-  flint::to_flint(g, fg);
+}  // namespace
+
+rational reciprocal_resultant(const Polynomial<rational>& c) {
+  const Polynomial<rational> star = reversed(c);
+  flint::FmpqPoly f, g;
+  flint::to_flint(c, f);
+  flint::to_flint(star, g);
   fmpq_t r;
   fmpq_init(r);
-  fmpq_poly_resultant(r, ff.get(), fg.get());
-  const rational out = flint::to_rational(r);
+  fmpq_poly_resultant(r, f.get(), g.get());
+  rational res = flint::to_rational(r);
   fmpq_clear(r);
-  return out;
+  for (int i = star.degree(); i < c.degree(); ++i) res *= c.leading();
+  return res;
 }
-
-}  // namespace
 
 CircleCrossing circle_crossing(const Mat<rational>& M0, const Mat<rational>& M1) {
   const long n = static_cast<long>(M0.rows());
@@ -77,10 +78,10 @@ CircleCrossing circle_crossing(const Mat<rational>& M0, const Mat<rational>& M1)
   std::vector<long> xs;
   std::vector<rational> values;
   for (long i = 0; i <= degree; ++i) {
-    std::vector<rational> c(size_t(n + 1)), rev(size_t(n + 1));
-    for (long k = 0; k <= n; ++k) c[size_t(k)] = rev[size_t(n - k)] = ck[size_t(k)](rational(i));
+    std::vector<rational> c(size_t(n + 1));
+    for (long k = 0; k <= n; ++k) c[size_t(k)] = ck[size_t(k)](rational(i));
     xs.push_back(i);
-    values.push_back(resultant(Polynomial<rational>(std::move(c)), Polynomial<rational>(std::move(rev))));
+    values.push_back(reciprocal_resultant(Polynomial<rational>(std::move(c))));  // c monic: prod over its roots of z^n c(1/z)
   }
   CircleCrossing out;
   const Polynomial<rational> R = interpolate(xs, values);

@@ -32,6 +32,11 @@ struct CircleCrossing {
   bool identically_zero = false;  ///< R = 0 for every p: some pair mu mu' = 1 at every p (nothing shown)
 };
 
+/// Res_{d,d}(c, z^d c(1/z)), d = deg c, exactly: FLINT's resultant at the actual degrees, times lc(c)^(d - deg c*)
+/// (c* loses degree where c(0) = 0). Zero iff c has a root on |z| = 1 or a pair mu, 1/mu. Also the one-DOF
+/// supremum's D(K) (stability/max_evidence.hpp).
+rational reciprocal_resultant(const Polynomial<rational>& c);
+
 /// R of the header for M(p) = M0 + p M1 (square, the same order, at most kCircleCrossingOrder, and
 /// 2 n rank(M1) at most kCircleCrossingDegree: InputError beyond).
 CircleCrossing circle_crossing(const Mat<rational>& M0, const Mat<rational>& M1);

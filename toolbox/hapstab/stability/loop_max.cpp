@@ -1105,7 +1105,7 @@ MatQ kernel(const MatQ& A) {
 
 // M0 and M1 exactly (sim/closed_loop.cpp's assembly) where every component of the plant is nilpotent (pure masses:
 // e^{AT} a finite sum, sim::exact_plant_zoh), else nullopt.
-std::optional<std::pair<MatQ, MatQ>> exact_family(const LoopFamily& F) {
+std::optional<std::pair<MatQ, MatQ>> exact_matrices(const LoopFamily& F) {
   const auto w = sim::exact_plant_zoh(F.A, F.Bu, F.T);
   if (!w) return std::nullopt;
   MatQ Gn = w->second, Go;
@@ -1135,7 +1135,7 @@ std::optional<std::pair<MatQ, MatQ>> exact_family(const LoopFamily& F) {
 // R(p) / p^m of lti/circle_crossing.hpp for the family, where M is rational and within its limits (nullopt otherwise,
 // and where R vanishes for every p).
 std::optional<Polynomial<rational>> exact_crossing_polynomial(const LoopFamily& F) {
-  const auto ex = exact_family(F);
+  const auto ex = exact_matrices(F);
   if (!ex || static_cast<long>(ex->first.rows()) > kCircleCrossingOrder) return std::nullopt;
   try {
     const CircleCrossing cc = circle_crossing(ex->first, ex->second);
@@ -1570,7 +1570,7 @@ bool unstable_by_resultant(const LoopFamily& F, const Polynomial<rational>& R, c
       break;
     }
   for (int k = 0; k < 64 && a > 0 && count_real_roots(R, rational(0), a) != 0; ++k) a /= 2;
-  const auto ex = exact_family(F);
+  const auto ex = exact_matrices(F);
   if (!ex || a <= 0 || count_real_roots(R, rational(0), a) != 0 || schur_stable(charpoly(MatQ(ex->first + ex->second * a)))) return false;
   out.outcome = Outcome::fails;
   out.status = Status::exact;
