@@ -10,8 +10,8 @@ delay's buffer; its spectral radius scanned on a geometric grid and bisected), n
     exit 1, JSON status "certified" (it said "undecided" beside exit 1), and the reference's rho > 1;
   * tests/cli/scenes/loop_max_pure_masses.toml: two pure masses (a Jordan block at z = 1 at g = 0, "undecided"
     before): sup g certified by the resultant on (0, a] (lti/circle_crossing.hpp), within 1e-7 of the reference, and
-    the reference's rho < 1 at g = 10^-k, k = 1..6 (the stable interval reaches down towards 0; below, double
-    eigenvalues of a Jordan block are noise).
+    the loop stable at g = 10^-k, k = 1..8, by exact Schur-Cohn on M built in fractions (indep_charpoly.py; in double
+    a Jordan block's 1 + O(g) is noise).
 
   loop_max_review_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -26,6 +26,7 @@ import numpy as np
 
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(TOP, "tests", "verify"))
+import indep_charpoly as ICH  # noqa: E402
 import indep_loop as IL  # noqa: E402
 from indep_common import Rational  # noqa: E402
 
@@ -123,12 +124,15 @@ def main():
     E4 = [[wall(Q(2500), Q(5)), const(-500)], [const(-500), wall(Q(3500), Q(8))]]
     loop4 = IL.build_loop_scene(dict(T=T, devices=pm, ops=[None] * 2, E=E4, n=0))
     ref4 = sup_reference(lambda g: IL.rho_np(loop4, g), 1e-3, 1e4)
-    small = [IL.rho_np(loop4, 10.0 ** -k) for k in range(1, 7)]  # below 1e-6 double eigenvalues of a Jordan block are noise
+    # near g = 0 a Jordan block's eigenvalues are 1 + O(g) in modulus, below double precision: decided exactly (M in
+    # fractions, Hessenberg, Schur-Cohn: indep_charpoly.py)
+    c4 = dict(T=T, devices=pm, ops=[None] * 2, E=E4, n=0)
+    small = [ICH.schur_cohn(ICH.hessenberg_charpoly(ICH.exact_M(c4, Q(1, 10 ** k)))) for k in range(1, 9)]
     rc, j, err = run(hapstab, ["--scene", os.path.join(scenes, "loop_max_pure_masses.toml"), "--max", "g", "--json"])
     got = float(j["max"]) if j and j.get("max") else None
-    expect("pure masses: exit 0 (got %s), sup %s against the reference %.13g; reference rho < 1 at 1e-1..1e-6: %s" % (
-        rc, got, ref4, all(r < 1 for r in small)),
-        rc == 0 and j.get("status") == "certified" and abs(got - ref4) <= 1e-7 * ref4 and all(r < 1 for r in small))
+    expect("pure masses: exit 0 (got %s), sup %s against the reference %.13g; stable (exactly) at 1e-1..1e-8: %s" % (
+        rc, got, ref4, all(small)),
+        rc == 0 and j.get("status") == "certified" and abs(got - ref4) <= 1e-7 * ref4 and all(small))
     print("loop_max_review_case: %d failed" % failures)
     return 1 if failures else 0
 
