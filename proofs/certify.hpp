@@ -70,10 +70,12 @@ inline std::string polynomial_text(const Polynomial<rational>& p) {
   return s;
 }
 
-/// The certificate of the ISP level of a square MIMO state space (`passivity-level --ss FILE --kind
-/// isp`, kind passivity-level-mimo): the model as the --ss JSON file (exact "p/q" entries) that
-/// reproduce writes beside the certificates; `contains` the level when it is known ("" otherwise).
-inline CertificateRequest mimo_level_request(const StateSpace<rational>& s, const std::string& contains = "") {
+/// The certificate of the ISP (or `kind`) level of a square state space (`passivity-level --ss FILE
+/// --kind isp`, kind passivity-level-mimo; SISO: passivity-level): the model as the --ss JSON file
+/// (exact "p/q" entries) that reproduce writes beside the certificates; `contains` the level when it
+/// is known ("" otherwise).
+inline CertificateRequest mimo_level_request(const StateSpace<rational>& s, const std::string& contains = "",
+                                             const std::string& kind = "isp") {
   auto rows = [](const Mat<rational>& M) {
     std::string t = "[";
     for (Eigen::Index i = 0; i < M.rows(); ++i) {
@@ -84,7 +86,7 @@ inline CertificateRequest mimo_level_request(const StateSpace<rational>& s, cons
     return t + "]";
   };
   CertificateRequest r;
-  r.args = {"passivity-level", "--ss", "{input}", "--kind", "isp"};
+  r.args = {"passivity-level", "--ss", "{input}", "--kind", kind};
   r.input = "{\"A\": " + rows(s.A) + ", \"B\": " + rows(s.B) + ", \"C\": " + rows(s.C) + ", \"D\": " + rows(s.D) +
             ", \"T\": \"" + s.T.str() + "\"}";
   r.contains = contains;

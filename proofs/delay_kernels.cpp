@@ -27,6 +27,7 @@
 #include "hapstab/passivity/bound.hpp"
 #include "hapstab/poly/unit_circle.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -193,6 +194,7 @@ HAPSTAB_PROOF(delay_jets, "001", "the jets of the long-delay branch-and-bound en
   bool ratio = true;
   for (int kk = 1; kk <= 200; ++kk) ratio = ratio && rational(2 * kk + 2, 64L * kk * kk * (2 * kk + 3)) <= rational(1, 80);
   ok = ok && ratio;
+  check.no_certificate("001.eq45.jet_enclosures", "a property of numeric/jet.hpp's enclosures on every ball, which the long-delay paths rely on, not a verdict a command prints: its proof is this comparison (no certificate kind holds an enclosure lemma)");
   check.claim("001.eq45.jet_enclosures", "(45) long delay",
               "the order-2 jets of numeric/jet.hpp contain sinc, S_nu = sin(nu theta) cot(theta/2), K_m = sin(m "
               "theta)/sin(theta) and their first two derivatives at every point of their ball (Taylor remainder of sinc "
@@ -235,6 +237,10 @@ HAPSTAB_PROOF(delay_long_path, "001", "the long-delay path against the exact pat
       const bool contains = e.status != Status::exact || l.enclosure->contains(e.value);
       if (!(overlap && contains)) worst << " " << H << " n = " << n << ": " << e.decimal << " vs " << l.decimal << ";";
       ok = ok && overlap && contains;
+      // its certificate: b* as `bound` prints it, the exact path's value (or its enclosure's midpoint) inside
+      check.certify("001.eq45.long_delay_path",
+                    proofs::bound_equals({H, p.T, {{"K", rational(1000)}, {"B", rational(5)}}, n},
+                                         e.status == Status::exact ? e.value : (e.enclosure->lo + e.enclosure->hi) / 2));
     }
   // Example 4 at n = 1000: H_0 z^-n: (2n + 1)T/2 exactly; H_1 z^-n: 1 (tight for every n)
   const passivity::Bound h0 = passivity::bound_certified(prob("1", 1000), 30);
@@ -244,7 +250,8 @@ HAPSTAB_PROOF(delay_long_path, "001", "the long-delay path against the exact pat
   check.claim("001.eq45.long_delay_path", "(45), Example 4",
               "the long-delay path (ball branch-and-bound, z^-n never expanded) agrees with the exact path on Sec. VI's "
               "cases with delays 0..40 (enclosures overlap, exact values contained) and gives H_0 z^-n: (2n+1)T/2 "
-              "(exact) and H_1 z^-n: 1 at n = 1000",
+              "(exact) and H_1 z^-n: 1 at n = 1000; its certificates: b* of the 48 (H, n) (n = 1000 is beyond the bound "
+              "certificate's size limit of 1000: its checkers expand z^-n)",
               Status::certified, ok && closed,
               "8 H x 6 delays by both paths" + (worst.str().empty() ? std::string() : "; disagreements:" + worst.str()) +
                   "; n = 1000: H_0 " + h0.decimal + " [" + to_string(h0.status) + "], H_1 " + h1.decimal,
@@ -326,6 +333,13 @@ HAPSTAB_PROOF(stability_winding, "ext", "the long-delay Schur test and sup K aga
         if (!same) bad << " " << plant << " " << H << " n = " << n << ";";
         ok = ok && same;
         if (gp.outcome != Outcome::holds || gp.infinite) continue;
+        if (n <= 4) {  // its certificate: sup K as `stability --plant` prints it (n >= 9: seconds per cover search, left out)
+          proofs::CertificateRequest r;
+          r.args = {"stability", "--plant", plant, "--set", "m=1", "--set", "b=1", "--set", "B=1/4", "--H", H, "--T", "1/1000",
+                    "--delay", std::to_string(n), "--max", "K"};
+          r.contains = ((gp.enclosure.lo + gp.enclosure.hi) / 2).str();
+          check.certify("ext.stability.winding", r);
+        }
         for (const rational& f : {rational(1, 2), rational(2)}) {  // the Schur test on both sides of sup K
           stability::Loop a = lp, b = ll;
           a.H_gain.reset(), b.H_gain.reset();
@@ -341,7 +355,8 @@ HAPSTAB_PROOF(stability_winding, "ext", "the long-delay Schur test and sup K aga
       }
   check.claim("ext.stability.winding", "Schur test, delay",
               "the argument principle on the unit circle (long-delay path) gives the Schur verdict of the characteristic "
-              "polynomial, and the crossing search its sup K (enclosures overlap), delays 0..40",
+              "polynomial, and the crossing search its sup K (enclosures overlap), delays 0..40; its certificates: sup K of "
+              "the loops with n <= 4",
               Status::certified, ok,
               "2 devices x 2 walls x 7 delays, sup K by both paths and the Schur test at sup/2 and 2 sup" +
                   (bad.str().empty() ? std::string() : "; disagreements:" + bad.str()),

@@ -67,6 +67,15 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
                           (r.outcome == Outcome::holds || (r.outcome == Outcome::undecided && r.stable_from > 0));
         worst1 = std::max(worst1, crossing ? rel(r.crossing.hi, r.crossing.lo) : 1.0);
         ok1 = ok1 && good;
+        // its certificate: the scene as a user writes it (one DOF: `stability --scene` certifies it by its one-DOF
+        // kind, a path that shares nothing with loop_max), the closed form exactly inside
+        proofs::CertificateRequest c;
+        c.args = {"stability", "--scene", "{input}", "--max", "K", "--quiet"};
+        c.input = "[scene]\nname = \"pure mass on a wall\"\nT = \"" + T.str() + "\"\n[parameters]\nK = \"" + (K / 2).str() +
+                  "\"\n[[device]]\nname = \"d\"\nm = \"" + m.str() + "\"\nb = \"0\"\n[environment]\ntf = [[\"K + " + B.str() +
+                  "*(z-1)/(T*z)\"]]\n";
+        c.contains = K.str();
+        check.certify("ext.stability.max_multidof_1dof", c);
       }
   std::ostringstream e1;
   e1 << "loop_max's crossing of K on the pure-mass wall contains the closed form at every instance, and its certified "
@@ -76,7 +85,7 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
               "stability --max through the closed-loop matrix (the multi-DOF path) on a one-DOF pure mass 1/(m s^2) with the "
               "wall K + B(z-1)/(Tz): its certified crossing holds (2B/T)(2m - BT)/(2m + BT), 1e-15 relative wide, and the "
               "interval it proves stable lies below (M(0) has a Jordan block at z = 1, so (0, a) is not covered and the "
-              "supremum is not stated)",
+              "supremum is not stated); its certificates: sup K of each scene (the one-DOF kind), the closed form inside",
               Status::certified, ok1, e1.str(), {one});
 
   // ---- two DOF: exact Schur bisection on det(zI - M(g)) --------------------------------------------
@@ -116,6 +125,16 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
       const bool meet = r.crossing.lo <= hi && lo <= r.crossing.hi && rel(r.crossing.hi, r.crossing.lo) <= 1e-15 &&
                         r.stable_to <= hi && exactly_stable(at(r.stable_to / 1000000)) && exactly_stable(at(r.stable_to / 2));
       worst2 = std::max(worst2, rel((r.crossing.lo + r.crossing.hi) / 2, (lo + hi) / 2));
+      // its certificate: the scene as written (kind stability-loop-max), the exact bisection's bracket inside
+      proofs::CertificateRequest c;
+      c.args = {"stability", "--scene", "{input}", "--max", "g", "--quiet"};
+      const std::string k0 = (200 + Kc).str(), k1 = (300 + Kc).str(), off = (-Kc).str();
+      c.input = "[scene]\nname = \"two pure masses\"\nT = \"" + T.str() + "\"\n[parameters]\ng = \"1\"\n[[device]]\n"
+                "name = \"left\"\nm = \"1/10\"\nb = \"0\"\n[[device]]\nname = \"right\"\nm = \"" + m2.str() +
+                "\"\nb = \"0\"\n[environment]\ntf = [[\"" + k0 + " + 2*(z-1)/(T*z)\", \"" + off + "\"], [\"" + off + "\", \"" + k1 +
+                " + 3*(z-1)/(T*z)\"]]\ngain = \"g\"\n";
+      c.contains = ((lo + hi) / 2).str();
+      check.certify("ext.stability.max_multidof_2dof", c);
       width2 = std::max(width2, rel(hi, lo));
       ok2 = ok2 && meet;
     }
@@ -127,6 +146,7 @@ HAPSTAB_PROOF(ext_loop_max, "ext", "the multi-DOF supremum against closed forms 
               "stability --max on a 2-DOF loop (pure masses, coupled spring-damper environment scaled by g): the certified "
               "crossing (1e-15 relative) meets the bracket of an exact Schur-Cohn bisection on the characteristic "
               "polynomial of the exactly built closed-loop matrix, and the supremum is stated (since stop 78: (0, a] by the "
-              "resultant) with the loop exactly stable at sup/10^6 and sup/2",
+              "resultant) with the loop exactly stable at sup/10^6 and sup/2; its certificates: sup g of each scene (kind "
+              "stability-loop-max), the exact bracket's midpoint inside",
               Status::certified, ok2, e2.str(), {two});
 }

@@ -271,11 +271,17 @@ void first_order_claim(proofs::Checker& check, std::mt19937& g) {
   e1 << "the identity exact at p = 1/3, 1, 2, 5 on 60 loops: " << (identity ? "holds" : "FAILS") << "; each accepted (loop, eps) Schur stable "
      << "at eps/1000, eps/3, eps by Schur-Cohn: " << (sound ? "yes" : "NO") << "; S = 0 never accepted: " << (s_zero_refused ? "yes" : "NO")
      << "; " << unstable_refused << " refused where M(eps) is unstable";
+  // its certificate: a mass-damper's sup K (a position integrator: the cover starts with `first_order`), the closed form
+  // of ext.stability.damper_n0 at m = b = 1, T = 1/1000 (40 digits by mpmath) inside
+  proofs::CertificateRequest r;
+  r.args = {"stability", "--plant", "1/(m*s^2 + b*s)", "--set", "m=1", "--set", "b=1", "--H", "K", "--T", "1/1000", "--max", "K"};
+  r.contains = "2000.333388892592283877130610588631144";
+  check.certify("ext.loop_max.first_order_start", r);
   check.claim("ext.loop_max.first_order_start", "Stein on (0, eps], L M(0) = L",
               "with L M(0) = L and P(p) = P0 + L^T S L/p, P(p) - M(p)^T P(p) M(p) = P0 - M^T P0 M - (K^T S L + L^T S K) - p K^T S K "
               "(K = L (M(2) - M(1)); exact, a cubic identity after times p), concave in p; where the checker accepts it at 0 and eps, "
               "M(p) is Schur stable on (0, eps] (exact Schur-Cohn at eps/1000, eps/3, eps), and with S = 0 it never accepts -- on "
-              "60 random loops (seed 47073) at eps = 1/10, 1, 3, 8",
+              "60 random loops (seed 47073) at eps = 1/10, 1, 3, 8; its certificate: a mass-damper's sup K, its cover started so",
               Status::certified, identity && sound && s_zero_refused && accepted.enough() && refused.enough() && unstable_refused > 0, e1.str(),
               {accepted, refused});
 }
@@ -305,6 +311,7 @@ void bernstein_claim(proofs::Checker& check, std::mt19937& g) {
       bern_sound = bern_sound && rm::positive_definite(stein(lerp(Pa, Pb, x), lerp(Ma, Mb, x)), true) &&
                    schur_stable(charpoly(to_matq(lerp(Ma, Mb, x))));
   }
+  check.no_certificate("ext.loop_max.bernstein_cover", "the argument the stability-loop-max checkers rely on for a cover's intervals, not a verdict of a command; the suprema whose covers use it have certificates (kind stability-loop-max)");
   check.claim("ext.loop_max.bernstein_cover", "Stein with P linear in p",
               "with P and M affine in t on [0, 1], S(t) = P(t) - M(t)^T P(t) M(t) = sum_s C_s B_s(t), C_s = ((3 - s) Pa + s Pb)/3 - "
               "(3 choose s)^-1 sum_{i+j+k=s} X_i^T P_j X_k (exact at t = 0, 1/3, 1/2, 2/3, 1: a cubic identity); where the checker "
@@ -364,6 +371,7 @@ void slow_hold_claim(proofs::Checker& check, std::mt19937& g) {
       separated = separated && !row_within(other.data(), z.Phi, other);
     }
   }
+  check.no_certificate("ext.loop_max.slow_hold", "the argument behind the checkers' exact slow matrix, not a verdict of a command; the suprema of pure masses and mass-dampers have certificates (kind stability-loop-max)");
   check.claim("ext.loop_max.slow_hold", "slow matrix, holds -> I, h B",
               "l^T A = 0 gives l^T e^{Ah} = l^T and l^T Gamma_h = h l^T B (the power series), so the exact slow matrix has the loop's "
               "slow rows: inside the zero-order hold's ball enclosure at h = 1e-3, 3e-4, 1e-1 on 24 random rational plants of order 2-4, "

@@ -263,10 +263,16 @@ void convexity(proofs::Checker& check, const Cases& cases, const rational& T, st
   const Bound at0 = bound_certified(at_gain(wb, 0), 20), atmid = bound_certified(at_gain(wb, rational(707, 1000)), 20),
               at2 = bound_certified(at_gain(wb, 2), 20);
   const bool not_monotone = atmid.enclosure->hi < at0.enclosure->lo && atmid.enclosure->hi < at2.enclosure->lo;
+  // its certificates: the three b* of that wall as `bound` prints them (b*(0.707) <= 2.42 < 3 = b*(0) < 13/4 = b*(2))
+  const auto wall_at = [&](const rational& B) { return proofs::BoundInstance{"2000 + B*(z-1)/(T*z)", T, {{"B", B}}, 1}; };
+  check.certify("ext.max_gain.convex", proofs::bound_equals(wall_at(0), 3));
+  check.certify("ext.max_gain.convex", proofs::bound_at_most(wall_at(rational(707, 1000)), rational(242, 100)));
+  check.certify("ext.max_gain.convex", proofs::bound_equals(wall_at(2), rational(13, 4)));
   check.claim("ext.max_gain.convex", "(45) in K",
               "b*(H0 + K H1) is convex in K (a supremum of affine functions), so {K : b* < b} is an interval and K_max = "
               "min over w with f1 > 0 of (b - eta - f0)/f1: certified b* at the midpoint <= the mean of the ends on 24 pairs; "
-              "convex is not monotone: the n = 1 wall has b*(B = 0) = 3 > b*(B = 0.707) < b*(B = 2) at K = 2000, T = 1 ms",
+              "convex is not monotone: the n = 1 wall has b*(B = 0) = 3 > b*(B = 0.707) < b*(B = 2) at K = 2000, T = 1 ms (its "
+              "certificates: these three b*, the 24 pairs' inequality is checked here only)",
               Status::certified, ok && not_monotone,
               "b*(B = 0, 0.707, 2) = " + at0.decimal + ", " + atmid.decimal + ", " + at2.decimal, {pairs});
 }

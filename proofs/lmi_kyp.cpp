@@ -26,6 +26,12 @@ namespace {
 using namespace hapstab;
 using namespace hapstab::lmi;
 
+// The double system exactly (every double is a dyadic rational).
+StateSpace<rational> exact(const StateSpace<double>& s) {
+  auto q = [](const Eigen::MatrixXd& M) { return Mat<rational>(M.unaryExpr([](double x) { return exact_rational(x); })); };
+  return StateSpace<rational>{q(s.A), q(s.B), q(s.C), q(s.D), s.T};
+}
+
 StateSpace<double> random_system(std::mt19937& g, int n, int m) {
   std::normal_distribution<double> N(0, 1);
   Eigen::MatrixXd A(n, n), B(n, m), C(m, n), D(m, m);
@@ -46,8 +52,10 @@ StateSpace<double> random_system(std::mt19937& g, int n, int m) {
 // agreement to 1e-5 rel. (numeric), and an exact LMI lower bound at or below the LOWER end of the
 // certified enclosure -- lb <= lo <= level, proven by an exact comparison (lb <= hi alone would
 // only fail to refute it).
-void compare_with_lmi(const StateSpace<double>& sys, PassivityKind kind, const PassivityLevel& c, int trial, double& worst,
-                      int& agree, proofs::Instances& exact_lb, int& consistent, std::ostringstream& bad) {
+// Returns Lemma 1's exact lower bound when there is one.
+std::optional<rational> compare_with_lmi(const StateSpace<double>& sys, PassivityKind kind, const PassivityLevel& c, int trial,
+                                         double& worst, int& agree, proofs::Instances& exact_lb, int& consistent,
+                                         std::ostringstream& bad) {
   auto l = passivity_level_lmi(sys, kind, 1);
   const double e = std::abs(l.level - c.level) / std::max(1.0, std::abs(c.level));
   worst = std::max(worst, e);
@@ -57,6 +65,7 @@ void compare_with_lmi(const StateSpace<double>& sys, PassivityKind kind, const P
   if (!(l.status == Status::numeric && e < 1e-5) || (l.lower_bound && !below))
     bad << " [trial " << trial << " " << to_string(kind) << ": certified " << c.value << ", LMI " << l.level << " ("
         << to_string(l.status) << " " << l.note << ")]";
+  return l.lower_bound;
 }
 
 }  // namespace
@@ -140,7 +149,13 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
     ++cert_freq;
     if (!compared.count(kind == PassivityKind::isp || c.level > 0)) continue;  // Lemma 1 OSP = frequency only for delta* > 0
     ++n;
-    compare_with_lmi(sys, kind, c, trial, worst, agree, exact_lb, consistent, bad);
+    const auto lb = compare_with_lmi(sys, kind, c, trial, worst, agree, exact_lb, consistent, bad);
+    // its certificate: the level as `passivity-level --ss` prints it, its lower end at least Lemma 1's exact bound
+    if (lb) {
+      proofs::CertificateRequest r = proofs::mimo_level_request(exact(sys), "", kind == PassivityKind::isp ? "isp" : "osp");
+      r.at_least_value = lb->str();
+      check.certify("000.lemma1.kyp_certified", r);
+    }
   }
   std::ostringstream ev;
   ev << cert_freq << " certified frequency levels (20 digits); " << agree << "/" << n
@@ -148,10 +163,10 @@ HAPSTAB_PROOF(lmi_kyp_certified, "000", "Lemma 1 ISP/OSP levels against the cert
      << " exact LMI lower bounds <= the certified lower end" << bad.str();
   // Two claims: the comparison of exact LMI lower bounds with certified enclosures is a proof;
   // the agreement of the SDP's double level with the certified level (1e-5) is numeric.
-  check.no_certificate("000.lemma1.kyp_certified", "the passivity-level kind certifies the frequency-domain level, not the exact Lemma 1 LMI bound compared with it: no certificate kind yet (issue 47)");
   check.claim("000.lemma1.kyp_certified", "Lemma 1, (2)",
               "on random SISO systems every exact Lemma 1 lower bound of the ISP/OSP level lies at or below the lower "
-              "end of the certified frequency-domain enclosure, so at or below the level (exact comparison)",
+              "end of the certified frequency-domain enclosure, so at or below the level (exact comparison); its certificates: "
+              "each level at least its Lemma 1 bound",
               hapstab::Status::certified, consistent == exact_lb.nontrivial, ev.str(), {exact_lb});
   check.claim("000.lemma1.kyp_level_numeric", "Lemma 1, (2)",
               "on the same systems the Lemma 1 ISP/OSP level of the SDP (double) equals the certified frequency-domain "
@@ -173,10 +188,6 @@ HAPSTAB_PROOF(lmi_kyp_certified_mimo, "000", "Lemma 1 ISP/OSP levels against the
   double worst = 0;
   std::ostringstream bad;
   bad.precision(10);
-  auto exact = [](const StateSpace<double>& s) {
-    auto q = [](const Eigen::MatrixXd& M) { return Mat<rational>(M.unaryExpr([](double x) { return exact_rational(x); })); };
-    return StateSpace<rational>{q(s.A), q(s.B), q(s.C), q(s.D), s.T};
-  };
   for (int trial = 0; trial < 12; ++trial) {
     auto sys = random_system(g, 1 + trial % 3, 2 + (trial / 6));
     const auto kind = trial % 2 ? PassivityKind::osp : PassivityKind::isp;

@@ -104,6 +104,7 @@ HAPSTAB_PROOF(multidof_realisation_independence, "000",
     ev << (i ? "; " : "") << names[i] << " (" << cases[i]->E.A.rows() << " states): (16) "
        << to_string(a.verdict.outcome) << ", " << to_string(a.verdict.status);
   }
+  check.no_certificate("000.thm5.realisation_independence", "E is given as a state space here (its realisation is the point of the claim), which the multidof certificates' model (E's entries as expressions, the scene as written) does not hold: no certificate kind for an `ss` environment yet");
   check.claim("000.thm5.realisation_independence", "(15), (16)",
               "(16) is feasible for E's realisation as given, after a similarity and with a stable "
               "uncontrollable mode added (Sec. VI case ii): the same verdict, each certified exactly",

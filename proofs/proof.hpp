@@ -66,6 +66,7 @@ struct Instances {
 ///   contains  "p/q": the certified quantity (b* of `bound`, K_max of `bound --max`) equals it
 ///             (an exact claim) or its claimed enclosure [lo, hi] contains it;
 ///   at_most   "p/q": the claimed value, or the enclosure's upper end, is <= it;
+///   at_least_value  "p/q": the claimed value, or the enclosure's lower end, is >= it;
 ///   flags     claim fields that must have these values ("stable", "wedge", "tsypkin", ...);
 ///   at_least  pairs {a, b} of claim fields, each an enclosure {lo, hi} or {infinite: true}: the
 ///             certificate proves a >= b (a infinite, or b finite and a.lo >= b.hi).
@@ -78,6 +79,7 @@ struct CertificateRequest {
   std::vector<std::pair<std::string, bool>> flags{};
   std::string input{};
   std::vector<std::pair<std::string, std::string>> at_least{};
+  std::string at_least_value{};
 };
 
 struct ClaimResult {

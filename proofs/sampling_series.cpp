@@ -54,10 +54,12 @@ HAPSTAB_PROOF(sampling_series_certified, "001", "Certified enclosures of the inf
   ev << count << " (T, w) points, T in {1/1000, 1/100, 1/3, 2}, wT in [-3.5, -1e-6] u [1e-6, 3.5]: -T/2 inside "
      << re_in << ", (44) Im enclosure overlaps " << im_in << "; N = 20 terms + Euler-Maclaurin K = 40 remainder "
      << "enclosure; worst relative width of Im " << worst_width;
+  check.no_certificate("001.eq34.certified_contains_eq44", "the r kind certifies r(jw) from the closed form (44); this claim is about the series (34)'s own enclosure, which no command prints");
   check.claim("001.eq34.certified_contains_eq44", "(34) = (44)",
               "the infinite series (34), enclosed rigorously (interval partial sum + Euler-Maclaurin remainder), "
               "contains the closed form (44)",
               hapstab::Status::certified, re_in == count && im_in == count && worst_width < 1e-30, ev.str(), {narrow});
+  check.no_certificate("001.eq9.rhat_positive_certified", "a property of the series (9)'s enclosure at every point, which no command prints: no certificate kind holds it");
   check.claim("001.eq9.rhat_positive_certified", "(9), Theorem 1",
               "the enclosure of rhat = sum_n 1/(wT + 2 n pi)^2 is strictly positive at every point",
               hapstab::Status::certified, rhat_pos == count,
@@ -78,6 +80,7 @@ HAPSTAB_PROOF(sampling_series_certified, "001", "Certified enclosures of the inf
       if (!certainly_greater(rhat_tail_lower(t, N), tau) && !certainly_greater(tau, rhat_tail_upper(t, N))) ++tb_ok;
     }
   }
+  check.no_certificate("001.eq34.tail_bound", "an inequality for every N and wT (the series' tail), proven here, not a verdict a command prints");
   check.claim("001.eq34.tail_bound", "(34), (9)",
               "tail of the truncated series: 1/(2pi(2pi(N+1)+wT)) + 1/(2pi(2pi(N+1)-wT)) <= tau_N <= "
               "1/(2pi(2pi N+wT)) + 1/(2pi(2pi N-wT))",
@@ -133,6 +136,7 @@ HAPSTAB_PROOF(sampling_triangle_k, "001", "The triangle (43): c(kT) = T [k = 1],
   std::ostringstream widest;
   widest.precision(3);
   widest << worst_rel;
+  check.no_certificate("001.eq42.starred_triangle_is_T_exp", "an identity of the starred transform (42), enclosed here, not a verdict a command prints");
   check.claim("001.eq42.starred_triangle_is_T_exp", "(42), (44)",
               "C*(s) = (1/T) sum_n C(s + j n w_s) with C = ((1 - e^{-sT})/s)^2 encloses k(s) = T e^{-sT}",
               hapstab::Status::certified, ok == pts,

@@ -82,6 +82,7 @@ HAPSTAB_PROOF(schur_lyapunov, "000", "A Lyapunov inequality checked in balls pro
        << (cert ? "proves it" : "no proof") << "; ";
   }
   ev << proven << " proofs for " << stable << " stable of " << cases.size();
+  check.no_certificate("000.schur.lyapunov_certificate", "the theorem the stability checkers rely on (docs/certificates.md), shown on known spectra, not a verdict of a command; the loop verdicts that use it have certificates (000.thm5.*, ext.loop_max.*)");
   check.claim("000.schur.lyapunov_certificate", "Theorem 5 (E Schur stable)",
               "P > 0 and P - A^T P A > 0, checked by ball Cholesky on the exact A, prove Schur stability: on the "
               "scaling scenes' environments (N = 8, 16, 32) and on spectra at radius 9/10, 1 - 1e-9, 1, 1 + 1e-9 "
@@ -109,6 +110,7 @@ HAPSTAB_PROOF(schur_stein_inertia, "000", "The Stein inertia theorem checked in 
       ev << "order " << 2 * n << ", radius " << r.str() << ": " << (d.stable ? (*d.stable ? "stable" : "NOT stable") : "undecided")
          << "; ";
     }
+  check.no_certificate("000.schur.stein_inertia", "the theorem the stability-loop checkers rely on (docs/certificates.md), shown on known spectra, not a verdict of a command; the loop verdicts that use it have certificates (kinds stability-loop, stability-loop-max)");
   check.claim("000.schur.stein_inertia", "Theorem 5 (the loop as written)",
               "P - M^T P M > 0 in balls with P > 0 proves Schur stability, with w^T P w < 0 an eigenvalue |z| > 1 (Stein "
               "inertia): on spectra at radius 1/2, 9/10, 1 -+ 1e-9, 11/10, 2 (orders 6 and 40) every decided verdict is the "

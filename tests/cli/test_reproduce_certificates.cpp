@@ -154,8 +154,17 @@ TEST(CmdReproduce, ACertificateThatIsNotTheClaimsFails) {
                                       "--set", "B=5", "--delay", "1"};
   claim.certificates.push_back({args, "26"});
   claim.certificates.push_back({args, "", "25"});  // at most 25: holds
+  hapstab::proofs::CertificateRequest at_least{args};
+  at_least.at_least_value = "25";  // b* = 25 exactly: at least 25 holds, at least 25 + 10^-30 does not
+  claim.certificates.push_back(at_least);
+  at_least.at_least_value = "25.000000000000000000000000000001";
+  claim.certificates.push_back(at_least);
   std::vector<hapstab::cli::CertificateEntry> entries = hapstab::cli::produce_certificates({claim}, dir, true);
-  ASSERT_EQ(entries.size(), 2u);
+  ASSERT_EQ(entries.size(), 4u);
+  EXPECT_EQ(entries[2].error, "");
+  EXPECT_NE(entries[3].error.find("is not at least the claim's bound 25.000000000000000000000000000001"), std::string::npos)
+      << entries[3].error;
+  entries.resize(2);
   EXPECT_EQ(entries[0].file, "certificates/001.test.wall.1.json");
   EXPECT_NE(entries[0].error.find("is not the claim's value 26"), std::string::npos) << entries[0].error;
   EXPECT_EQ(entries[1].error, "");

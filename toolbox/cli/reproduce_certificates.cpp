@@ -64,6 +64,11 @@ std::string expectation_fails(const json& c, const proofs::CertificateRequest& r
       if (number(claim, exact ? "value" : "hi") > x)
         return "the certificate's claim " + claim.dump() + " is not at most the claim's bound " + r.at_most;
     }
+    if (!r.at_least_value.empty()) {
+      const rational x = parse_rational(r.at_least_value, "at_least_value");
+      if (number(claim, exact ? "value" : "lo") < x)
+        return "the certificate's claim " + claim.dump() + " is not at least the claim's bound " + r.at_least_value;
+    }
   } catch (const std::exception& e) {
     return std::string("the certificate's claim cannot be compared with the claim's: ") + e.what();
   }
