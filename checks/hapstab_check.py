@@ -5073,7 +5073,7 @@ def env_entries(model, T, params, max_dofs=None):
     env = model.get("environment")
     if not isinstance(env, dict):
         raise Malformed("model.environment: missing or not an object")
-    only(env, ("domain", "method", "gain", "E", "perturb_C"), "model.environment")
+    only(env, ("domain", "method", "gain", "E", "ss", "perturb_C"), "model.environment")
     domain = env.get("domain")
     if domain not in ("z", "s"):
         raise Malformed("model.environment.domain: must be \"z\" or \"s\"")
@@ -5091,8 +5091,13 @@ def env_entries(model, T, params, max_dofs=None):
             raise Malformed("model.environment.method: only with domain \"s\"")
         leaf = None
     g = exact(env, "gain", "model.environment")
-    E = env.get("E")
+    if ("E" in env) == ("ss" in env):
+        raise Malformed("model.environment: exactly one of E (the entries as written) and ss (the realisation as written)")
     limit = max_dofs or MAX_WITNESS_DOFS
+    if "ss" in env:
+        out = ss_environment(env["ss"], sub if domain == "s" else None, limit)
+        return perturbed(env, out), g
+    E = env.get("E")
     if not isinstance(E, list) or not E or len(E) > limit:
         if isinstance(E, list) and len(E) > limit:
             raise TooLarge("model.environment.E: %d DOFs, above this checker's limit of %d" % (len(E), limit))
@@ -5114,6 +5119,44 @@ def env_entries(model, T, params, max_dofs=None):
                 out[-1].append(parsed[e])
             except ZeroDivisionError:
                 raise Malformed(where + ": division by zero")
+    return perturbed(env, out), g
+
+
+MAX_SS_ENVIRONMENT_STATES = 64  # Faddeev-LeVerrier and n solves in fractions
+
+
+def ss_environment(ss, s_of_z, limit):
+    """E = C (xI - A)^-1 B + D of model.environment.ss {A, B, C, D} as written (N >= 1 states, m x m), entry by
+    entry as rational functions of z: ss_transfer's in x, and for domain "s" (s_of_z the method's s as a
+    rational function of z) each entry's numerator and denominator evaluated at s(z) by Horner."""
+    if not isinstance(ss, dict):
+        raise Malformed("model.environment.ss: must be an object {A, B, C, D}")
+    only(ss, ("A", "B", "C", "D"), "model.environment.ss")
+    A = ss.get("A")
+    D = ss.get("D")
+    if not isinstance(A, list) or not A or not isinstance(D, list) or not D:
+        raise Malformed("model.environment.ss: A and D must be non-empty matrices")
+    N, m = len(A), len(D)
+    if N > MAX_SS_ENVIRONMENT_STATES or m > limit:
+        raise TooLarge("model.environment.ss: %d states and %d DOFs, above this checker's limits %d and %d"
+                       % (N, m, MAX_SS_ENVIRONMENT_STATES, limit))
+    where = "model.environment.ss"
+    A, B, C, D = (frac_matrix(ss, k, r, c, where) for k, r, c in (("A", N, N), ("B", N, m), ("C", m, N), ("D", m, m)))
+    E = ss_transfer(A, B, C, D)
+    if s_of_z is None:
+        return E
+
+    def at_sub(p):
+        r = RF([])
+        for c in reversed(p):
+            r = r * s_of_z + RF([c])
+        return r
+    return [[at_sub(h.num) / at_sub(h.den) for h in row] for row in E]
+
+
+def perturbed(env, out):
+    """E' = Pi (E - E(inf)) + E(inf) with model.environment.perturb_C = Pi, else E."""
+    m = len(out)
     if "perturb_C" in env:  # paper 000 Sec. VI: C_E := Pi C_E, D_E unchanged, so E' = Pi (E - D) + D, D = E(inf)
         Pi = env["perturb_C"]
         if not isinstance(Pi, list) or len(Pi) != m or any(not isinstance(r, list) or len(r) != m for r in Pi):
@@ -5129,7 +5172,7 @@ def env_entries(model, T, params, max_dofs=None):
                 D[-1].append(h.num[-1] / h.den[-1] if h.num and len(h.num) == len(h.den) else Fraction(0))
         out = [[sum((RF([Pi[i][k]]) * (out[k][j] - RF([D[k][j]])) for k in range(m) if Pi[i][k] != 0), RF([D[i][j]]))
                 for j in range(m)] for i in range(m)]
-    return out, g
+    return out
 
 
 def rf_at(h, z):
@@ -5582,7 +5625,8 @@ def check_multidof_coupling_symmetric(c):
     if not ok:
         return False, "(16) by the split: " + why
     T = period(model)
-    E_dofs = len(model["environment"]["E"])
+    env = model["environment"]
+    E_dofs = len(env["E"] if "E" in env else env["ss"]["D"])  # split_16 read it whole
     classes = split_classes(ev, E_dofs)
     cls = {i: a for a, k in enumerate(classes) for i in k}
     delta = witness_levels(model, E_dofs)

@@ -50,7 +50,12 @@ rational gain_of(const scene::Scene& sc, const toml::table& env) {
 std::string multidof_certificate_premise(const scene::Scene& sc) {
   const toml::table* env = environment_table(sc);
   if (!env) return "the scene has no [environment]";
-  if (!scene::environment_expressions(sc)) return "the environment is given by `ss`, not by expressions (no certificate kind yet)";
+  const auto ss = scene::environment_ss_as_written(sc);
+  if (!scene::environment_expressions(sc) && !ss) return "the environment is written neither by expressions nor as `ss`";
+  if (ss && ss->states() == 0) return "the environment's `ss` has no states (write it as tf: a certificate's ss holds at least one)";
+  if (ss && ss->states() > static_cast<long>(check::multidof_model::max_ss_states))
+    return "the environment's `ss` has " + std::to_string(ss->states()) + " states, beyond the checkers' limit of " +
+           std::to_string(check::multidof_model::max_ss_states) + " (its transfer matrix is taken exactly)";
   long dofs = 0;
   for (const auto& dev : sc.loop.devices) dofs += dev.dofs();
   if (dofs > static_cast<long>(check::multidof_model::max_dofs))
@@ -79,9 +84,11 @@ nlohmann::json strings(const std::vector<rational>& v) {
 // The model as the scene writes it (multidof_certificate_premise holds).
 nlohmann::json scene_model(const scene::Scene& sc, const multidof::SceneProblem& sp) {
   const toml::table& env = *environment_table(sc);
-  nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))},
-                   {"gain", gain_of(sc, env).str()},
-                   {"E", *scene::environment_expressions(sc)}};  // compact entries written out, lists by value
+  nlohmann::json e{{"domain", env["domain"].value_or(std::string("z"))}, {"gain", gain_of(sc, env).str()}};
+  if (const auto ss = scene::environment_ss_as_written(sc))  // the realisation as written, its gain apart
+    e["ss"] = {{"A", matrix_json(ss->A)}, {"B", matrix_json(ss->B)}, {"C", matrix_json(ss->C)}, {"D", matrix_json(ss->D)}};
+  else
+    e["E"] = *scene::environment_expressions(sc);  // compact entries written out, lists by value
   if (e["domain"] == "s") e["method"] = env["method"].value_or(std::string());
   nlohmann::json set = nlohmann::json::object();
   for (const auto& [k, v] : sc.parameters) set[k] = v.str();

@@ -5,6 +5,7 @@
 
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/lti/parse.hpp"
+#include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/error.hpp"
 
 namespace hapstab::check::multidof_model {
@@ -43,11 +44,70 @@ Cq power(Cq x, long n) {
   return r;
 }
 
+// model.environment.E, an m x m array of expression strings in the domain's variable (model.set's
+// parameters), each entry parsed exactly.
+std::vector<std::vector<TransferFunction>> written_entries(const nlohmann::json& model, const nlohmann::json& env, char var,
+                                                           const rational& T) {
+  if (!env.at("E").is_array() || env.at("E").empty() || env.at("E").size() > max_dofs)
+    throw InputError("model.environment.E: must be an m x m array of expression strings, 1 <= m <= " +
+                     std::to_string(max_dofs));
+  const size_t m = env.at("E").size();
+  std::vector<std::vector<TransferFunction>> E;
+  std::map<std::string, TransferFunction> parsed;  // a compact scene written out repeats a few entries m^2 times
+  ParseOptions po;
+  po.variable = var;
+  po.T = T;
+  po.parameters = model_parameters(model);
+  for (size_t i = 0; i < m; ++i) {
+    const auto& row = env.at("E").at(i);
+    if (!row.is_array() || row.size() != m)
+      throw InputError("model.environment.E[" + std::to_string(i) + "]: a row of " + std::to_string(m) + " strings");
+    E.emplace_back();
+    for (size_t j = 0; j < m; ++j) {
+      const std::string where = "model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+      if (!row.at(j).is_string()) throw InputError(where + ": not a string");
+      try {
+        const std::string& text = row.at(j).get_ref<const std::string&>();
+        auto it = parsed.find(text);
+        if (it == parsed.end()) it = parsed.emplace(text, parse_tf(text, po)).first;
+        E.back().push_back(it->second);
+      } catch (const InputError& err) {
+        throw InputError(where + ": " + err.what());
+      }
+    }
+  }
+  return E;
+}
+
+// model.environment.ss {A, B, C, D} as written ("p/q" entries; m x m with m = D's rows), its
+// transfer matrix C (xI - A)^-1 B + D exactly (lti/realization.hpp's ss2tf, Faddeev-LeVerrier), x the
+// domain's variable: the entries as if written out.
+std::vector<std::vector<TransferFunction>> ss_entries(const nlohmann::json& env, char var, const rational& T) {
+  const nlohmann::json& ss = object_field(env, "ss", "model.environment");
+  only_fields(ss, {"A", "B", "C", "D"}, "model.environment.ss");
+  const std::string where = "model.environment.ss";
+  const auto A = exact_matrix(ss, "A", where, max_ss_states), B = exact_matrix(ss, "B", where, max_dofs),
+             C = exact_matrix(ss, "C", where, max_ss_states), D = exact_matrix(ss, "D", where, max_dofs);
+  const size_t N = A.size(), m = D.size();
+  if (A[0].size() != N || B.size() != N || C[0].size() != N || B[0].size() != m || C.size() != m || D[0].size() != m)
+    throw InputError(where + ": A must be N x N, B N x m, C m x N and D m x m (got A " + std::to_string(N) + " x " +
+                     std::to_string(A[0].size()) + ", B " + std::to_string(B.size()) + " x " + std::to_string(B[0].size()) +
+                     ", C " + std::to_string(C.size()) + " x " + std::to_string(C[0].size()) + ", D " + std::to_string(m) + " x " +
+                     std::to_string(D[0].size()) + ")");
+  const auto mat = [](const std::vector<std::vector<rational>>& M) {
+    hapstab::Mat<rational> X(static_cast<Eigen::Index>(M.size()), static_cast<Eigen::Index>(M[0].size()));
+    for (size_t i = 0; i < M.size(); ++i)
+      for (size_t j = 0; j < M[0].size(); ++j) X(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = M[i][j];
+    return X;
+  };
+  return ss2tf(StateSpace<rational>{mat(A), mat(B), mat(C), mat(D), var == 'z' ? T : rational(0)}).entries;
+}
+
 }  // namespace
 
 Environment read_environment(const nlohmann::json& model, const rational& T, long n) {
   const nlohmann::json& env = object_field(model, "environment", "model");
-  only_fields(env, {"domain", "method", "gain", "E", "perturb_C"}, "model.environment");
+  only_fields(env, {"domain", "method", "gain", "E", "ss", "perturb_C"}, "model.environment");
   Environment e;
   e.T = T;
   e.n = n;
@@ -64,33 +124,11 @@ Environment read_environment(const nlohmann::json& model, const rational& T, lon
     throw InputError("model.environment.method: only with domain \"s\"");
   }
   e.gain = exact_field(env, "gain", "model.environment");
-  if (!env.contains("E") || !env.at("E").is_array() || env.at("E").empty() || env.at("E").size() > max_dofs)
-    throw InputError("model.environment.E: must be an m x m array of expression strings, 1 <= m <= " +
-                     std::to_string(max_dofs));
-  const size_t m = env.at("E").size();
-  std::map<std::string, TransferFunction> parsed;  // a compact scene written out repeats a few entries m^2 times
-  ParseOptions po;
-  po.variable = e.var;
-  po.T = T;
-  po.parameters = model_parameters(model);
-  for (size_t i = 0; i < m; ++i) {
-    const auto& row = env.at("E").at(i);
-    if (!row.is_array() || row.size() != m)
-      throw InputError("model.environment.E[" + std::to_string(i) + "]: a row of " + std::to_string(m) + " strings");
-    e.E.emplace_back();
-    for (size_t j = 0; j < m; ++j) {
-      const std::string where = "model.environment.E[" + std::to_string(i) + "][" + std::to_string(j) + "]";
-      if (!row.at(j).is_string()) throw InputError(where + ": not a string");
-      try {
-        const std::string& text = row.at(j).get_ref<const std::string&>();
-        auto it = parsed.find(text);
-        if (it == parsed.end()) it = parsed.emplace(text, parse_tf(text, po)).first;
-        e.E.back().push_back(it->second);
-      } catch (const InputError& err) {
-        throw InputError(where + ": " + err.what());
-      }
-    }
-  }
+  if (env.contains("E") == env.contains("ss"))
+    throw InputError("model.environment: exactly one of E (the entries as written) and ss (the realisation as written)");
+  if (env.contains("ss")) e.E = ss_entries(env, e.var, T);
+  else e.E = written_entries(model, env, e.var, T);
+  const size_t m = e.E.size();
   if (env.contains("perturb_C")) {  // C_E := Pi C_E, D_E unchanged: E' = Pi (E - E(inf)) + E(inf)
     e.perturb_C = exact_matrix(env, "perturb_C", "model.environment", max_dofs);
     if (e.perturb_C.size() != m || e.perturb_C[0].size() != m)

@@ -1,6 +1,8 @@
 // hapstab/check/multidof_model.hpp -- the model of the multi-DOF certificate kinds
 // (check/multidof_witness_check.hpp, check/multidof_feasible_check.hpp) as the scene writes it:
-// the environment E(z) entry by entry (in z, or in s by backward Euler / Tustin), its gain, the
+// the environment E(z) entry by entry (in z, or in s by backward Euler / Tustin) -- or, for an `ss`
+// environment, its realisation {A, B, C, D} as written, E = C (xI - A)^-1 B + D taken exactly by
+// Faddeev-LeVerrier (lti/realization.hpp's ss2tf; x = z, or s discretised as above) --, its gain, the
 // delay, the devices' OSP levels and the operators' DOFs, read from a certificate's model and
 // evaluated exactly at Gaussian rational points z (check/gaussian_rational.hpp). With
 // `perturb_C` = Pi (paper 000 Sec. VI: C_E := Pi C_E, D_E unchanged) the model is
@@ -22,18 +24,19 @@ namespace hapstab::check::multidof_model {
 using detail::Parts;
 
 constexpr size_t max_dofs = 512;
+constexpr size_t max_ss_states = 64;  ///< an `ss` environment's states (Faddeev-LeVerrier: N^4 exact products)
 
 struct Environment {
   char var = 'z';
   bool tustin = false;
   rational T, gain;
   long n = 0;
-  std::vector<std::vector<TransferFunction>> E;  ///< m x m, as written
+  std::vector<std::vector<TransferFunction>> E;  ///< m x m, as written (`ss`: its transfer matrix, exactly)
   std::vector<std::vector<rational>> perturb_C;  ///< Pi, m x m; empty: none
   std::vector<std::vector<rational>> D;          ///< E(inf) (D_E), when perturb_C is given
 };
 
-/// model.environment {domain, method, gain, E} with model.set's parameters; InputError naming the field.
+/// model.environment {domain, method, gain, E or ss} with model.set's parameters; InputError naming the field.
 Environment read_environment(const nlohmann::json& model, const rational& T, long n);
 /// A certificate claiming (16) infeasible: its model's fields known, claim.status "exact" and
 /// claim.feasible a boolean (InputError otherwise); the refutation when it claims (16) feasible,

@@ -653,15 +653,33 @@ Scene load_scene(const std::string& path, const std::map<std::string, rational>&
   return parse_scene(text, path, overrides, dir.empty() ? "." : dir.string());
 }
 
-std::optional<std::vector<std::vector<std::string>>> environment_expressions(const Scene& sc) {
-  const toml::table* env = sc.root["environment"].as_table();
-  if (!env) return std::nullopt;
+namespace {
+
+// The reader of the scene's own values (its file, T, parameters and lists, its DOFs).
+Reader reader_of(const Scene& sc) {
   Reader c;
   c.file = sc.file;
   c.T = sc.T;
   c.params = sc.parameters;
   c.lists = sc.lists;
   c.N = sc.loop.dofs();
+  return c;
+}
+
+}  // namespace
+
+std::optional<StateSpace<rational>> environment_ss_as_written(const Scene& sc) {
+  const toml::table* env = sc.root["environment"].as_table();
+  if (!env || !env->contains("ss") || env->contains("diagonal") || env->contains("off_diagonal") || env->contains("blocks"))
+    return std::nullopt;
+  const bool s_domain = (*env)["domain"].value_or(std::string("z")) == "s";
+  return reader_of(sc).block(*env, "environment", s_domain ? 's' : 'z');
+}
+
+std::optional<std::vector<std::vector<std::string>>> environment_expressions(const Scene& sc) {
+  const toml::table* env = sc.root["environment"].as_table();
+  if (!env) return std::nullopt;
+  Reader c = reader_of(sc);
   std::vector<std::vector<std::string>> E;
   if (env->contains("diagonal") || env->contains("off_diagonal") || env->contains("blocks")) {  // written out, [i] and [j] placed, lists by value
     const CompactMatrix m = compact_matrix(*env, "environment", c);

@@ -51,6 +51,10 @@ struct Scene {
 /// list parameter's NAME[k] and sum(NAME) replaced by its exact value; nullopt for an `ss`
 /// environment or none. (A certificate's model holds them: cli/multidof_certificate.cpp.)
 std::optional<std::vector<std::vector<std::string>>> environment_expressions(const Scene& sc);
+/// [environment]'s `ss = {A, B, C, D}` as written (parameters evaluated, before its gain; in the
+/// domain's variable: a continuous realisation for domain = "s"), or nullopt when E is written as tf
+/// or as a compact matrix (environment_expressions).
+std::optional<StateSpace<rational>> environment_ss_as_written(const Scene& sc);
 
 /// Parses and validates a scene file. `overrides` replace [parameters] (CLI --set).
 Scene load_scene(const std::string& path, const std::map<std::string, rational>& overrides = {});
