@@ -126,6 +126,7 @@ import re
 import sys
 import time
 from fractions import Fraction
+import math
 from math import comb, gcd
 
 MAX_DEGREE = 64
@@ -750,11 +751,14 @@ def check_bound(c):
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
+    cells = "infinite" not in claim and "cells" in evidence
     if "infinite" in claim:
         only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), "evidence")
+    elif cells:
+        only(evidence, ("cells", "witness_theta"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
-    H, T, eta, P, q = bound_model(model)
+    H, T, eta, P, q = bound_model(model, expanded=not cells)
     status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
@@ -762,6 +766,8 @@ def check_bound(c):
         raise Malformed("claim.infinite: false (a finite claim has no such field)")
     if infinite:
         return bound_infinite(H, T, P, q, status, evidence)
+    if cells:
+        return bound_cells(H, T, eta, Fraction(P, q), lo, hi, evidence)
     c0 = exact(evidence, "witness_c", "evidence")
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     E, F = objective_c(H, T, P, q)
@@ -878,8 +884,147 @@ def bound_infinite_at_end(H, T, P, q, s, b):
     return True, "b* = +inf: the objective tends to +inf as c -> cos(pi/%d) from above (wT -> pi)" % q
 
 
-def bound_model(model):
-    """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q)."""
+MAX_BOUND_CELLS = 20000  # each cell two interval evaluations in mpmath (~1 ms each)
+
+
+def on_circle(p):
+    """p(z) at z = e^{j theta} as a(c) + j s b(c), c = cos theta, s = sin theta: z^k = T_k(c) + j s U_{k-1}(c)."""
+    a, b = [], []
+    t_prev, t_k = [Fraction(1)], [Fraction(0), Fraction(1)]  # T_0, T_1
+    u_prev, u_k = [], [Fraction(1)]  # U_{-1} = 0, U_0
+    for k, coeff in enumerate(p):
+        tk = [Fraction(1)] if k == 0 else t_k
+        uk = [] if k == 0 else u_k
+        a, b = padd(a, pscale(tk, coeff)), padd(b, pscale(uk, coeff))
+        if k >= 1:  # T_{k+1} = 2c T_k - T_{k-1}, U_k = 2c U_{k-1} - U_{k-2}
+            t_prev, t_k = t_k, psub(pmul([Fraction(0), Fraction(2)], t_k), t_prev)
+            u_prev, u_k = u_k, psub(pmul([Fraction(0), Fraction(2)], u_k), u_prev)
+    return a, b
+
+
+def bound_cells(H, T, eta, nu, lo, hi, evidence):
+    """b* in [lo, hi] by cells, the delay never expanded (hapstab's check/bound_cells.hpp states the theorem):
+    f(theta) = eta + (T/2) [A(c) cos(nu theta) + E(c) S(theta)] / B(c), S = sin(nu theta) cot(theta/2), with
+    N conj(D) = X + j s Y on the circle, A = X - (1 + c) Y, E = X + (1 - c) Y, B = |D|^2 (derived here from
+    T/(1 - z) = (T/2)(1 + j cot(theta/2)), s cot(theta/2) = 1 + c, s sin(nu theta) = (1 - c) S). Each cell
+    [a, b] (evidence.cells their right ends, from 0; the last beyond pi) must show f(m) + f'([a, b]) [-r, r] < hi
+    (mean value theorem; or its halves, up to 6 times) in mpmath intervals, with S = 2 nu cos(theta/2) sinc(nu theta)/sinc(theta/2) and f'
+    written out by hand below; the witness theta0 in [0, pi] must show f(theta0) > lo."""
+    from mpmath import iv
+    iv.prec = 192
+    ends = evidence.get("cells")
+    if not isinstance(ends, list) or not ends:
+        raise Malformed("evidence.cells: must be a non-empty array of \"p/q\" strings")
+    if len(ends) > MAX_BOUND_CELLS:
+        raise TooLarge("evidence.cells: %d cells, above this checker's limit of %d" % (len(ends), MAX_BOUND_CELLS))
+    ends = [exact_value(x, "evidence.cells[%d]" % i) for i, x in enumerate(ends)]
+    theta0 = exact(evidence, "witness_theta", "evidence")
+    N, D = H.num, H.den
+    na, nb = on_circle(N)
+    da, db = on_circle(D)
+    one_m_c2 = [Fraction(1), Fraction(0), Fraction(-1)]
+    X = padd(pmul(na, da), pmul(one_m_c2, pmul(nb, db)))
+    Y = psub(pmul(nb, da), pmul(na, db))
+    A = psub(X, pmul([Fraction(1), Fraction(1)], Y))
+    E = padd(X, pmul([Fraction(1), Fraction(-1)], Y))
+    B = padd(pmul(da, da), pmul(one_m_c2, pmul(db, db)))
+
+    def q(x):
+        return iv.mpf(x.numerator) / x.denominator
+
+    def deriv(p):
+        return [k * p[k] for k in range(1, len(p))]
+    exact_polys = (A, E, B, deriv(A), deriv(E), deriv(B))
+    polys = [[q(x) for x in p] for p in exact_polys]
+
+    def shifted(cm):  # each polynomial in t = c - cm (exact Taylor shift): the centred form over a cell, whose
+        out = []      # enclosure follows p's variation there, not its coefficients' size (a resonance near the circle)
+        for p in exact_polys:
+            b = list(p)
+            for i in range(len(b)):
+                for j in range(len(b) - 2, i - 1, -1):
+                    b[j] += cm * b[j + 1]
+            out.append([q(x) for x in b])
+        return out
+    vnu, half, vT, veta = q(nu), iv.mpf(1) / 2, q(T), q(eta)
+
+    def horner(p, c):
+        r = iv.mpf(0)
+        for x in reversed(p):
+            r = r * c + x
+        return r
+
+    def sinc2(x):  # sinc(x), sinc'(x) for an interval x >= 0: series to x^30 with its remainder below 1, else direct
+        def series(y):
+            y2, f, d = y * y, iv.mpf(0), iv.mpf(0)
+            fact = [1]
+            for k in range(1, 34):
+                fact.append(fact[-1] * k)
+            for k in reversed(range(16)):
+                f = f * y2 + iv.mpf((-1) ** k) / fact[2 * k + 1]
+            for k in reversed(range(1, 16)):
+                d = d * y2 + iv.mpf((-1) ** k * 2 * k) / fact[2 * k + 1]
+            bound = iv.mpf(1) / fact[33] * 34  # |remainders| <= |y|^32 / 33! and 32 |y|^31 / 33! for |y| <= 1
+            return f + iv.mpf([-1, 1]) * bound, d * y + iv.mpf([-1, 1]) * bound
+
+        def direct(y):
+            sy, cy = iv.sin(y), iv.cos(y)
+            return sy / y, (cy - sy / y) / y
+        if x.b <= 1:
+            return series(x)
+        if x.a >= 1:
+            return direct(x)
+        (f1, d1), (f2, d2) = series(iv.mpf([x.a, 1])), direct(iv.mpf([1, x.b]))
+        return iv.mpf([min(f1.a, f2.a), max(f1.b, f2.b)]), iv.mpf([min(d1.a, d2.a), max(d1.b, d2.b)])
+
+    def f_and_df(th, centred=None):
+        c, s = iv.cos(th), iv.sin(th)
+        ps, t = (polys, c) if centred is None else (centred[0], c - q(centred[1]))
+        u = th * half
+        cu, su = iv.cos(u), iv.sin(u)
+        cn, sn = iv.cos(vnu * th), iv.sin(vnu * th)
+        g1, g1d = sinc2(vnu * th)
+        g2, g2d = sinc2(u)
+        g = g1 / g2
+        S = 2 * vnu * cu * g
+        dg = (vnu * g1d * g2 - half * g1 * g2d) / (g2 * g2)
+        dS = 2 * vnu * (cu * dg - half * su * g)
+        a, e, b, da_, de_, db_ = (horner(p, t) for p in ps)
+        R = a * cn + e * S
+        dR = -s * da_ * cn - vnu * a * sn - s * de_ * S + e * dS
+        f = veta + vT * half * R / b
+        df = vT * half * (dR * b + R * s * db_) / (b * b)
+        return f, df
+    pi = iv.pi
+    hi_v, lo_v = q(hi), q(lo)
+
+    def cell_below(a, b, depth):  # f(m) + f'([a, b]) [-r, r] < hi, or both halves so (this checker's own
+        m, r = (a + b) / 2, (b - a) / 2  # intervals are wider than hapstab's jets: up to 6 halvings)
+        fm = f_and_df(q(m))[0]
+        cm = Fraction(math.cos(float(m)))  # a rational near cos(m), the centre of c over the cell
+        dcell = f_and_df(iv.mpf([q(a).a, q(b).b]), (shifted(cm), cm))[1]
+        if (fm + dcell * iv.mpf([-1, 1]) * q(r) < hi_v) is True:
+            return True
+        return depth < 6 and cell_below(a, m, depth + 1) and cell_below(m, b, depth + 1)
+    if not (pi < q(ends[-1])) is True:
+        return False, "b* <= hi not shown: the cells end at or below pi (they must cover [0, pi])"
+    a = Fraction(0)
+    for i, b in enumerate(ends):
+        if not a < b:
+            return False, "b* <= hi not shown: cell %d's end %s is not above the one before" % (i + 1, short(b))
+        if not cell_below(a, b, 0):
+            return False, "f < %.12g not shown on cell %d [%.12g, %.12g]" % (float(hi), i + 1, float(a), float(b))
+        a = b
+    if theta0 < 0 or (q(theta0) < pi) is not True:
+        return False, "b* >= lo not shown: evidence.witness_theta = %s is not in [0, pi]" % short(theta0)
+    if (lo_v < f_and_df(q(theta0))[0]) is not True:
+        return False, "b* >= %.12g not shown: f(theta0) at theta0 = %.12g" % (float(lo), float(theta0))
+    return True, "b* in [%.12g, %.12g] (%d cells, the delay never expanded)" % (float(lo), float(hi), len(ends))
+
+
+def bound_model(model, expanded=True):
+    """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q); `expanded`: the limit of the form that expands
+    the delay."""
     H, T = model_h(model)
     n = delay_of(model)
     td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
@@ -889,7 +1034,7 @@ def bound_model(model):
     if eta < 0:
         raise Malformed("model.eta: must be >= 0")
     tau = n + td / T
-    if tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6:
+    if expanded and (tau.denominator > 10 ** 6 or tau.numerator > 10 ** 6):
         raise TooLarge("t_d/T has a numerator or denominator above 10^6")
     return H, T, eta, tau.numerator, tau.denominator
 

@@ -247,11 +247,15 @@ HAPSTAB_PROOF(delay_long_path, "001", "the long-delay path against the exact pat
   const passivity::Bound h1 = passivity::bound_certified(prob("(z-1)/(T*z)", 1000), 30);
   const bool closed = h0.path == BoundPath::long_delay && h0.status == Status::exact && h0.value == rational(2001, 2000) &&
                       h1.path == BoundPath::long_delay && h1.enclosure->contains(rational(1));
+  // H_0's certificate at n = 1000: the cells' form (check/bound_cells.hpp), the delay never expanded, 2031 cells.
+  // (H_1's needs 26860: its maximum 1 is reached at ~500 points, each refined to the claim's 10^-12, beyond the
+  // independent checker's 20000 cells.)
+  check.certify("001.eq45.long_delay_path", proofs::bound_equals({"1", rational(1, 1000), {}, 1000}, rational(2001, 2000)));
   check.claim("001.eq45.long_delay_path", "(45), Example 4",
               "the long-delay path (ball branch-and-bound, z^-n never expanded) agrees with the exact path on Sec. VI's "
               "cases with delays 0..40 (enclosures overlap, exact values contained) and gives H_0 z^-n: (2n+1)T/2 "
-              "(exact) and H_1 z^-n: 1 at n = 1000; its certificates: b* of the 48 (H, n) (n = 1000 is beyond the bound "
-              "certificate's size limit of 1000: its checkers expand z^-n)",
+              "(exact) and H_1 z^-n: 1 at n = 1000; its certificates: b* of the 48 (H, n), and H_0's at n = 1000 by "
+              "cells (the delay never expanded)",
               Status::certified, ok && closed,
               "8 H x 6 delays by both paths" + (worst.str().empty() ? std::string() : "; disagreements:" + worst.str()) +
                   "; n = 1000: H_0 " + h0.decimal + " [" + to_string(h0.status) + "], H_1 " + h1.decimal,

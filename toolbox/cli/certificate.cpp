@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/loop_max_certificate.hpp"
 #include "cli/mat_file.hpp"
+#include "hapstab/check/bound_cells.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/stability_loop_check.hpp"
@@ -120,9 +121,13 @@ std::optional<rational> find_witness(const WitnessObjective& o, const rational& 
 
 // The checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
 // (check/bound_objective.hpp); InputError beyond their limit.
+integer certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
+  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  return den(tau) * (std::max(H.num().degree(), H.den().degree()) + 1) + num(tau);
+}
 void check_certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
   const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
-  const integer size = den(tau) * (std::max(H.num().degree(), H.den().degree()) + 1) + num(tau);
+  const integer size = certificate_size(H, p);
   if (size > certificate_max_size)
     throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
                      " exactly, in cos(wT/q) with q = " + den(tau).str() + ": size q (deg H + 1) + P = " +
@@ -268,9 +273,59 @@ void verify_before_writing(const nlohmann::json& j) {
 }
 
 
+// b* beyond the expanded form's size (a long delay): the cells of check/bound_cells.hpp, found by
+// bisecting each cell whose bound fails, and a witness at the maximiser; the claim b*'s enclosure
+// widened by 10^-13 of its size and printed to 12 digits outward (the cells need f < hi strictly).
+nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const passivity::Bound& b, nlohmann::json& claim) {
+  const Enclosure<rational>& e = *b.enclosure;
+  const rational size = std::max({rational(abs(e.lo)), rational(abs(e.hi)), p.T});
+  const rational delta = size / rational(pow(integer(10), 13));
+  const auto [lo, hi] = printed_enclosure(claim, decimal_outward(e.lo - delta, 12, -1), decimal_outward(e.hi + delta, 12, +1));
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const check::detail::KernelForm f = check::detail::kernel_form(p.H, p.T, nu, p.eta);
+  if (!isolate_real_roots(f.B, rational(-1), rational(1)).empty())
+    throw InputError("--certificate: H has a pole on the unit circle (|D|^2 vanishes at some cos wT in [-1, 1]), which the "
+                     "cells' form (check/bound_cells.hpp) does not take, and the delay is beyond the expanded form's size: "
+                     "no certificate");
+  const rational below_pi(314159265358979L, 100000000000000L);
+  rational theta0 = b.omega_enclosure ? (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2 * p.T : rational(0);
+  if (theta0 > below_pi) theta0 = below_pi;
+  if (!check::detail::point_above(f, theta0, lo))
+    throw NumericalError("--certificate: the objective at the maximiser (theta = " + to_decimal(theta0, 12) + ") was not shown above " +
+                         to_decimal(lo, 15) + ": no certificate");
+  // cells: a uniform start of ~2 per period 2 pi/nu on [0, 355/113] (355/113 > pi), each failing cell halved
+  const rational end(355, 113);
+  const long start = std::max(64L, 2 * (static_cast<long>(to_real<double>(nu)) + 1 + static_cast<long>(p.H.den().degree())));
+  nlohmann::json ends = nlohmann::json::array();
+  std::vector<std::pair<rational, int>> stack;  // (right end, depth), popped left to right
+  rational a(0);
+  for (long k = start; k >= 1; --k) stack.emplace_back(end * rational(k, start), 0);
+  while (!stack.empty()) {
+    const auto [b_end, depth] = stack.back();
+    stack.pop_back();
+    if (check::detail::cell_below(f, a, b_end, hi)) {
+      ends.push_back(b_end.str());
+      a = b_end;
+      if (ends.size() > check::detail::max_bound_cells) break;
+      continue;
+    }
+    if (depth >= 60)
+      throw NumericalError("--certificate: f < " + to_decimal(hi, 15) + " not shown near theta = " + to_decimal(a, 12) +
+                           " after 60 halvings (a pole on the circle, or the claim too tight): no certificate");
+    stack.emplace_back(b_end, depth + 1);
+    stack.emplace_back((a + b_end) / 2, depth + 1);
+  }
+  if (ends.size() > check::detail::max_bound_cells)
+    throw InputError("--certificate: more than " + std::to_string(check::detail::max_bound_cells) +
+                     " cells (the checkers' limit) would be needed: no certificate");
+  return {{"cells", ends}, {"witness_theta", theta0.str()}};
+}
+
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits) {
-  check_certificate_size(p.H, p);
+  // beyond the expanded form's size, a finite b* has the cells' evidence (check/bound_cells.hpp)
+  const bool long_delay = !b.infinite && b.enclosure && certificate_size(p.H, p) > certificate_max_size;
+  if (!long_delay) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = certificate_header("bound");
@@ -284,6 +339,14 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
                                    : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
   if (b.infinite) return infinite_bound_evidence(j, claim, witness_objective(p));
+  if (long_delay) {
+    if (b.status != Status::exact && b.status != Status::certified)
+      throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
+    j["evidence"] = bound_cells_evidence(p, b, claim);
+    j["claim"] = claim;
+    verify_before_writing(j);
+    return j;
+  }
   rational target;
   if (b.status == Status::exact) {
     claim["status"] = "exact";

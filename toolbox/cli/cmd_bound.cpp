@@ -397,8 +397,15 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                                return cli::bound_max_exit(m);
                              }
                              Outcome r = compute(*o);
-                             if (!o->certificate.empty())
-                               cli::write_certificate(o->certificate, cli::bound_certificate(o->tf, r.p, r.b, o->digits));
+                             if (!o->certificate.empty()) {
+                               const nlohmann::json c = cli::bound_certificate(o->tf, r.p, r.b, o->digits);
+                               cli::write_certificate(o->certificate, c);
+                               if (c["evidence"].contains("cells"))  // it claims less than what is printed: say so
+                                 std::cerr << "certificate " << o->certificate << ": b* in [" << c["claim"]["printed_lo"].get<std::string>()
+                                           << ", " << c["claim"]["printed_hi"].get<std::string>() << "] by "
+                                           << c["evidence"]["cells"].size()
+                                           << " cells (the delay never expanded: an enclosure, not the exact value)\n";
+                             }
                              if (!o->curve.empty()) {
                                std::ofstream f(o->curve);
                                if (!f) throw InputError("--curve: cannot write '" + o->curve + "'");

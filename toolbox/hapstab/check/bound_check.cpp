@@ -5,6 +5,7 @@
 #include <map>
 #include <utility>
 
+#include "hapstab/check/bound_cells.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -50,6 +51,25 @@ Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H
                     detail::shortened(c_p) + (side > 0 ? " from above" : " from below") + " (a pole of H on the unit circle)"};
 }
 
+// b* in [lo, hi] by cells (check/bound_cells.hpp): evidence.cells the cells' right ends, evidence.witness_theta.
+Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm, const rational& lo,
+                    const rational& hi) {
+  const nlohmann::json& c = evidence.at("cells");
+  if (!c.is_array() || c.empty()) throw InputError("evidence.cells: must be a non-empty array of \"p/q\" strings");
+  if (c.size() > detail::max_bound_cells)
+    throw InputError("evidence.cells: " + std::to_string(c.size()) + " cells, beyond the checker's limit of " +
+                     std::to_string(detail::max_bound_cells));
+  std::vector<rational> ends;
+  for (size_t i = 0; i < c.size(); ++i) ends.push_back(detail::exact_string(c[i], "evidence.cells[" + std::to_string(i) + "]"));
+  const rational theta0 = detail::exact_field(evidence, "witness_theta", "evidence");
+  const rational nu = rational(dm.n) + dm.td / dm.T;
+  const detail::KernelForm f = detail::kernel_form(H.H, dm.T, nu, dm.eta);
+  if (auto why = detail::cells_fail(f, ends, theta0, lo, hi)) return {false, "b* in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "] not shown: " + *why};
+  return {true, "b* in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "] (upper bound: f < hi on " + std::to_string(ends.size()) +
+                    " cells of [0, pi], each by the mean value theorem in balls, the delay never expanded; lower bound: f at theta0 = " +
+                    detail::shortened(theta0) + ")"};
+}
+
 }  // namespace
 
 Verdict check_bound(const nlohmann::json& cert) {
@@ -61,13 +81,15 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::only_fields(model, {"H", "set", "num", "den", "T", "delay", "frac_delay", "eta"}, "model");
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
+  const bool cells = !infinite && evidence.contains("cells");  // the long-delay form (check/bound_cells.hpp)
   if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
+  else if (cells) detail::only_fields(evidence, {"cells", "witness_theta"}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   const detail::DelayModel dm = detail::read_delay_model(model);
   const rational& eta = dm.eta;
   const TransferFunction H = detail::model_tf(model, dm.T);
   // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
-  detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
+  if (!cells) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
   const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
@@ -76,6 +98,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   if (range.infinite) return check_infinite(evidence, H, dm, range.status);
   const std::string& status = range.status;
   const rational &lo = range.lo, &hi = range.hi;
+  if (cells) return check_cells(evidence, H, dm, lo, hi);
 
   // ---- f(c) = A/B + eta in c = cos(wT/q), the checker's own derivation (check/bound_objective.hpp)
   const detail::ObjectivePolys f = detail::bound_objective(H.H, dm.T, dm.P, dm.q);

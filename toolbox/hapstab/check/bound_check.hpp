@@ -34,7 +34,9 @@
 //           isolating it and the side (unbounded_inside_fails); the band's irrational end
 //           cos(pi/q) by (end_lo, end_hi] (unbounded_at_end_fails).
 // Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
-// takes ~7 s), else the certificate is refused (InputError) rather than checked for hours.
+// takes ~7 s), else the certificate is refused (InputError) rather than checked for hours --
+// unless its evidence is the cells' form (evidence.cells, evidence.witness_theta; a finite claim):
+// f < hi cell by cell and f(theta0) > lo in balls, the delay never expanded (check/bound_cells.hpp).
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,
 // eta >= 0, lo <= hi, the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers
 // claimed, exactly.

@@ -1,0 +1,91 @@
+"""The `bound` certificate's long-delay form (evidence.cells, check/bound_cells.hpp; checks/hapstab_check.py's
+bound_cells): beyond the expanded form's size (q (deg H + 1) + P > 1000) `bound --certificate` writes the cells
+of [0, pi] on which f < hi is shown by the mean value theorem in balls, and a witness theta0, the delay never
+expanded. On each model below both checkers must verify the certificate, its claim must hold the closed form
+of (53) where there is one (f(0) = (2n + 1) K T/2 - B for the delayed wall, the maximum at w = 0 for these
+numbers; H = 1: (2n + 1) T/2, Example 4), and each hand edit must get its exit code from both checkers
+(1: refuted, 2: malformed, named). A Tustin wall (a pole at z = -1: f unbounded near w = pi/T... its B(c)
+vanishes at c = -1) has no cells' certificate: refused by name, nothing written.
+
+  bound_cells_case.py HAPSTAB
+exit 0 when every expectation holds, else 1 (each failure printed)."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+from cert_edit import deleted, with_field
+from loop_max_case import run_cases
+
+T = Fraction(1, 1000)
+MODELS = [  # (name, --H, sets, delay, extra args, closed form or None)
+    ("H = 1, n = 1000", "1", {}, 1000, [], (2 * 1000 + 1) * T / 2),
+    ("wall K = 20000, B = 5, n = 1000", "K + B*(z-1)/(T*z)", {"K": 20000, "B": 5}, 1000, [],
+     (2 * 1000 + 1) * 20000 * T / 2 - 5),
+    ("wall K = 20, B = 5, n = 1200 (an interior maximum)", "K + B*(z-1)/(T*z)", {"K": 20, "B": 5}, 1200, [], None),
+    ("a resonance 1e-5 from the circle, n = 1000", "(z-1)/(z^2 - 2*(99999/100000)*(3/10)*z + (99999/100000)^2)", {}, 1000, [],
+     None),
+    ("wall K = 2000, B = 5, n = 1000, t_d = T/3", "K + B*(z-1)/(T*z)", {"K": 2000, "B": 5}, 1000,
+     ["--frac-delay", "1/3000"], None),
+]
+
+
+def produce(hapstab, tmp, k, H, sets, n, extra):
+    path = os.path.join(tmp, "c%d.json" % k)
+    args = [hapstab, "bound", "--H", H, "--T", str(T), "--delay", str(n), "--certificate", path] + extra
+    for name, v in sets.items():
+        args += ["--set", "%s=%s" % (name, v)]
+    r = subprocess.run(args, capture_output=True, text=True)
+    return r, path
+
+
+def edits(cert):
+    claim, ev = cert["claim"], cert["evidence"]
+    lo, hi = Fraction(claim["lo"]), Fraction(claim["hi"])
+    below = str(hi - (hi - lo) * 10)  # well below b*: some cell fails
+    ends = ev["cells"]
+    return [("unmutated", cert, 0),
+            ("hi lowered below b*", with_field(with_field(cert, ["claim", "hi"], below), ["claim", "printed_hi"], "%.20g" % float(Fraction(below))), None),
+            ("the cells ending at 3 (< pi)", with_field(cert, ["evidence", "cells"], [e for e in ends if Fraction(e) < 3] + ["3"]), 1),
+            ("two cells swapped (not increasing)", with_field(cert, ["evidence", "cells"], [ends[1], ends[0]] + ends[2:]), 1),
+            ("the witness at 4 (> pi)", with_field(cert, ["evidence", "witness_theta"], "4"), 1),
+            ("the witness negative", with_field(cert, ["evidence", "witness_theta"], "-1/10"), 1),
+            ("the delay one sample more", with_field(cert, ["model", "delay"], cert["model"]["delay"] + 1), 1),
+            ("no cells", with_field(cert, ["evidence", "cells"], []), 2),
+            ("a cell end not a rational", with_field(cert, ["evidence", "cells", 0], "x"), 2),
+            ("the witness missing", deleted(cert, ["evidence", "witness_theta"]), 2),
+            ("witness_c beside the cells", with_field(cert, ["evidence", "witness_c"], "1"), 2)]
+
+
+def main():
+    hapstab = sys.argv[1]
+    failures, cases = 0, []
+    with tempfile.TemporaryDirectory() as tmp:
+        for k, (name, H, sets, n, extra, closed) in enumerate(MODELS):
+            r, path = produce(hapstab, tmp, k, H, sets, n, extra)
+            if r.returncode not in (0, 1) or not os.path.exists(path):
+                print("FAIL %s: no certificate (exit %d): %s" % (name, r.returncode, r.stderr.strip()))
+                failures += 1
+                continue
+            cert = json.load(open(path))
+            ok = "cells" in cert["evidence"] and cert["claim"]["status"] == "certified"
+            if closed is not None:
+                ok = ok and Fraction(cert["claim"]["lo"]) <= closed <= Fraction(cert["claim"]["hi"])
+            print("%s %s: %d cells, b* in [%s, %s]%s" % ("ok  " if ok else "FAIL", name, len(cert["evidence"].get("cells", [])),
+                                                         cert["claim"].get("printed_lo"), cert["claim"].get("printed_hi"),
+                                                         "" if closed is None else " holds the closed form %s" % closed))
+            failures += not ok
+            cases += [(name + ": " + what, c, want) for what, c, want in (edits(cert) if k == 1 else [("unmutated", cert, 0)])]
+        failures += run_cases(hapstab, cases, tmp)
+        r, path = produce(hapstab, tmp, 9, "K + 2*B/T*(z-1)/(z+1)", {"K": 1000, "B": 5}, 1000, [])
+        refused = r.returncode == 2 and "--certificate" in r.stderr and not os.path.exists(path)
+        print("%s the Tustin wall at n = 1000: refused by name (%s)" % ("ok  " if refused else "FAIL", r.stderr.strip()[:160]))
+        failures += not refused
+    print("bound_cells_case: %d cases, %d failed" % (len(cases) + len(MODELS) + 1, failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,62 @@
+// hapstab/check/bound_cells.hpp -- b* of paper 001 (45)/(54) bounded cell by cell, without
+// expanding the delay: the `bound` certificate's evidence form for long delays (evidence.cells;
+// check/bound_check.hpp), where the expanded polynomials in cos(wT/q) would have degree ~n.
+//
+// Derivation (the checker's own; check/on_circle.hpp): on z = e^{j theta}, c = cos theta,
+// s = sin theta, with H = N/D and N(z) conj(D(z)) = X(c) + j s Y(c), |D|^2 = B(c), and
+// T/(1 - z) = (T/2)(1 + j cot(theta/2)), e^{-j nu theta} (nu = n + t_d/T, any rational >= 0):
+//   Re{T H z^-n e^{-j w t_d}/(1 - z)} = (T/2) [(X cos nu theta + s Y sin nu theta)
+//                                              - (s Y cos nu theta - X sin nu theta) cot(theta/2)] / B
+// and s cot(theta/2) = 1 + c, s sin(nu theta) = (1 - c) S_nu(theta), so
+//   f(theta) = eta + (T/2) [A(c) cos(nu theta) + E(c) S_nu(theta)] / B(c),
+//   A = X - (1 + c) Y,  E = X + (1 - c) Y,  S_nu(theta) = sin(nu theta) cot(theta/2)
+//                                                       = 2 nu cos(theta/2) sinc(nu theta) / sinc(theta/2),
+// the sinc form regular on [0, 2 pi) (numeric/jet.hpp: sinc near 0 by its Taylor polynomial with the
+// remainder bounded). b* = sup f over theta = wT in [0, pi].
+//
+// Theorem checked (claim "b* in [lo, hi]"):
+//   (upper) f < hi on [0, pi] if the cells [theta_{i-1}, theta_i] (theta_0 = 0 < theta_1 < ... <
+//           theta_k, rationals, theta_k > pi shown with a ball of pi) each have
+//           f(m) + f'([theta_{i-1}, theta_i]) [-r, r] < hi, m the midpoint, r the half-width (the
+//           mean value theorem), every quantity an Arb ball (numeric/jet.hpp's order-2 jets);
+//           f on the part of the last cell beyond pi is f's formula there (the identities above
+//           hold for every theta in (0, 2 pi)), so the cell bounds its part inside too;
+//   (lower) b* >= lo if f(theta0) > lo at the witness theta0 in [0, pi] (a ball of f at the point).
+// B's ball containing 0 (a pole of H on the circle) makes the cell's bound infinite: it fails.
+// Size limit: 400000 cells (a delay of 10^5 samples needs ~2 10^5; checked in ~3 s).
+//
+// Implements: paper 001 (45), (53), (54).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hapstab/numeric/scalar.hpp"
+#include "hapstab/poly/polynomial.hpp"
+#include "hapstab/poly/rational_function.hpp"
+
+namespace hapstab::check::detail {
+
+constexpr size_t max_bound_cells = 400000;  ///< ~2 per period 2 pi/nu: delays to ~2 10^5 samples
+
+/// f = eta + (T/2) (A cos(nu theta) + E S_nu) / B of the header, for H = N/D exact.
+struct KernelForm {
+  Polynomial<rational> A, E, B;
+  rational T, nu, eta;
+};
+KernelForm kernel_form(const RationalFunction<rational>& H, const rational& T, const rational& nu, const rational& eta);
+
+/// f(m) + f'([a, b]) [-r, r] < hi shown in balls (0 <= a < b < 2 pi).
+bool cell_below(const KernelForm& f, const rational& a, const rational& b, const rational& hi);
+/// f(theta0) > lo shown in balls.
+bool point_above(const KernelForm& f, const rational& theta0, const rational& lo);
+/// theta > pi, shown with a ball of pi (false when not shown).
+bool beyond_pi(const rational& theta);
+
+/// nullopt when the cells (their right ends theta_1 < ... < theta_k, theta_k > pi) show f < hi on
+/// [0, pi] and the witness theta0 in [0, pi] shows f(theta0) > lo; else what failed.
+std::optional<std::string> cells_fail(const KernelForm& f, const std::vector<rational>& ends, const rational& theta0,
+                                      const rational& lo, const rational& hi);
+
+}  // namespace hapstab::check::detail
