@@ -1,0 +1,127 @@
+"""Mutation campaign of the `bound` certificate's cells form (check/bound_cells.hpp): random models beyond the
+expanded form's size (walls K + B(z - 1)/(Tz) of either sign of B, a first-order lag g(z - a)/(z - b), a
+resonance r from the circle, delays n = 1001-3000, a fractional delay t_d = (p/q) T in a third), each
+certificate perturbed in the ways below, every mutant through both checkers with the exit code it must get
+(0 the unmutated; 1 refuted: the claim moved past b*, the cells ending below pi, two ends out of order, the
+witness beyond pi, the model's delay, T or a gain edited; 2 malformed, named).
+
+  mutate_cells.py HAPSTAB [--models N] [--seed S]
+prints one line per model and the counts; exit 1 on any mutant given another exit code."""
+import argparse
+import json
+import os
+import random
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+from cert_edit import deleted, with_field
+from loop_max_case import exits
+
+
+def model(rng):
+    T = Fraction(1, rng.choice([100, 1000, 2000]))
+    kind = rng.choice(["wall", "wall", "lag", "resonance"])
+    if kind == "wall":
+        H, sets = "K + B*(z-1)/(T*z)", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
+    elif kind == "lag":
+        H, sets = "g*(z - a)/(z - b)", {"g": rng.choice([1, 10, 100]), "a": Fraction(rng.randint(-9, 9), 10),
+                                         "b": Fraction(rng.randint(-9, 9), 10)}
+    else:
+        r = 1 - Fraction(1, 10 ** rng.randint(2, 5))
+        c = Fraction(rng.randint(-9, 9), 10)
+        H, sets = "(z-1)/(z^2 - 2*%s*%s*z + %s^2)" % (r, c, r), {}
+    n = rng.randint(1001, 3000)
+    frac = "%s" % (Fraction(rng.randint(1, 5), rng.randint(2, 7)) * T) if rng.random() < 1 / 3 else None
+    return T, H, sets, n, frac
+
+
+def mutants(cert, rng):
+    claim, ev = cert["claim"], cert["evidence"]
+    lo, hi = Fraction(claim["lo"]), Fraction(claim["hi"])
+    ends = ev["cells"]
+    span = max(hi - lo, abs(hi) / 10 ** 6, Fraction(1, 10 ** 9))
+
+    def claim_at(new_lo, new_hi):
+        c = with_field(cert, ["claim", "lo"], str(new_lo))
+        c = with_field(c, ["claim", "hi"], str(new_hi))
+        c = deleted(deleted(c, ["claim", "printed_lo"]), ["claim", "printed_hi"])
+        return c
+    k = rng.randrange(1, len(ends) - 1)
+    m = model_edit(cert, rng)
+    return [("unmutated", cert, 0),
+            ("hi below b*", claim_at(lo - 2 * span, lo - span), 1),
+            ("lo above b*", claim_at(hi + span, hi + 2 * span), 1),
+            ("the cells ending at 3", with_field(cert, ["evidence", "cells"], [e for e in ends if Fraction(e) < 3] + ["3"]), 1),
+            ("ends %d and %d swapped" % (k, k + 1), with_field(cert, ["evidence", "cells"], ends[:k] + [ends[k + 1], ends[k]] + ends[k + 2:]), 1),
+            ("the witness beyond pi", with_field(cert, ["evidence", "witness_theta"], "22/7"), 1),
+            (m[0], m[1], 1),
+            ("no cells", with_field(cert, ["evidence", "cells"], []), 2),
+            ("a cell end '1/0'", with_field(cert, ["evidence", "cells", k], "1/0"), 2),
+            ("witness_c beside the cells", with_field(cert, ["evidence", "witness_c"], "1"), 2),
+            ("a field added to the evidence", with_field(cert, ["evidence", "theta"], "1"), 2)]
+
+
+def model_edit(cert, rng):
+    m = cert["model"]
+    choice = rng.choice(["delay", "T", "set"] if m.get("set") else ["delay", "T"])
+    if choice == "delay":
+        return "the delay halved", with_field(cert, ["model", "delay"], m["delay"] // 2)
+    if choice == "T":
+        return "T doubled", with_field(cert, ["model", "T"], str(2 * Fraction(m["T"])))
+    name = sorted(m["set"])[0]
+    return "%s tripled" % name, with_field(cert, ["model", "set", name], str(3 * Fraction(m["set"][name]) + 1))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("hapstab")
+    ap.add_argument("--models", type=int, default=10)
+    ap.add_argument("--seed", type=int, default=1)
+    a = ap.parse_args()
+    rng = random.Random("mutate_cells:%d" % a.seed)
+    counts = {"models": 0, "refused": 0, "mutants": 0, "failed": 0, "reference-free": 0}
+    with tempfile.TemporaryDirectory() as tmp:
+        for i in range(a.models):
+            T, H, sets, n, frac = model(rng)
+            path = os.path.join(tmp, "c.json")
+            if os.path.exists(path):
+                os.remove(path)
+            args = [a.hapstab, "bound", "--H", H, "--T", str(T), "--delay", str(n), "--certificate", path]
+            for k, v in sets.items():
+                args += ["--set", "%s=%s" % (k, v)]
+            if frac:
+                args += ["--frac-delay", frac]
+            r = subprocess.run(args, capture_output=True, text=True)
+            what = "%s, %s, n = %d%s" % (H, sets, n, ", t_d = %s" % frac if frac else "")
+            if not os.path.exists(path):
+                counts["refused"] += 1
+                print("model %d (%s): no certificate, exit %d: %s" % (i, what, r.returncode, r.stderr.strip()[-120:]))
+                continue
+            cert = json.load(open(path))
+            if "cells" not in cert["evidence"]:
+                print("model %d (%s): the expanded form (%s)" % (i, what, cert["claim"].get("status")))
+                continue
+            counts["models"] += 1
+            bad, ms = [], mutants(cert, rng)
+            for name, c, want in ms:
+                got = exits(a.hapstab, c, tmp)
+                counts["mutants"] += 1
+                ok = got[0] == got[1] and (got[0] in (1, 2) if want is None else got[0] == want)
+                if got[1] == 3:  # beyond the independent checker's cell limit: hapstab check alone
+                    counts["reference-free"] += 1
+                    ok = (got[0] in (1, 2)) if want is None else got[0] == want
+                if not ok:
+                    bad.append("%s: hapstab check %d, independent %d (want %s)" % (name, got[0], got[1], want))
+            counts["failed"] += len(bad)
+            print("model %d (%s): %d cells, %d mutants%s" % (i, what, len(cert["evidence"]["cells"]), len(ms),
+                                                           "" if not bad else "; FAILED: " + "; ".join(bad)))
+            sys.stdout.flush()
+    print("mutate_cells: %(models)d models (%(refused)d refused by name), %(mutants)d mutants, %(failed)d failed, "
+          "%(reference-free)d beyond the independent checker's limit" % counts)
+    return 1 if counts["failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
