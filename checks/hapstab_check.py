@@ -902,23 +902,15 @@ def on_circle(p):
     return a, b
 
 
-def bound_cells(H, T, eta, nu, lo, hi, evidence):
-    """b* in [lo, hi] by cells, the delay never expanded (hapstab's check/bound_cells.hpp states the theorem):
-    f(theta) = eta + (T/2) [A(c) cos(nu theta) + E(c) S(theta)] / B(c), S = sin(nu theta) cot(theta/2), with
+def cells_kernel(H, T, eta, nu):
+    """f(theta) = eta + (T/2) [A(c) cos(nu theta) + E(c) S(theta)] / B(c), S = sin(nu theta) cot(theta/2), with
     N conj(D) = X + j s Y on the circle, A = X - (1 + c) Y, E = X + (1 - c) Y, B = |D|^2 (derived here from
-    T/(1 - z) = (T/2)(1 + j cot(theta/2)), s cot(theta/2) = 1 + c, s sin(nu theta) = (1 - c) S). Each cell
-    [a, b] (evidence.cells their right ends, from 0; the last beyond pi) must show f(m) + f'([a, b]) [-r, r] < hi
-    (mean value theorem; or its halves, up to 6 times) in mpmath intervals, with S = 2 nu cos(theta/2) sinc(nu theta)/sinc(theta/2) and f'
-    written out by hand below; the witness theta0 in [0, pi] must show f(theta0) > lo."""
+    T/(1 - z) = (T/2)(1 + j cot(theta/2)), s cot(theta/2) = 1 + c, s sin(nu theta) = (1 - c) S), in mpmath
+    intervals: (value(theta), cell_below(a, b, hi)). cell_below shows f(m) + f'([a, b]) [-r, r] < hi (mean value
+    theorem; or its halves, up to 6 times), S = 2 nu cos(theta/2) sinc(nu theta)/sinc(theta/2) and f' written
+    out by hand below, each polynomial shifted exactly to the cell's centre in c."""
     from mpmath import iv
     iv.prec = 192
-    ends = evidence.get("cells")
-    if not isinstance(ends, list) or not ends:
-        raise Malformed("evidence.cells: must be a non-empty array of \"p/q\" strings")
-    if len(ends) > MAX_BOUND_CELLS:
-        raise TooLarge("evidence.cells: %d cells, above this checker's limit of %d" % (len(ends), MAX_BOUND_CELLS))
-    ends = [exact_value(x, "evidence.cells[%d]" % i) for i, x in enumerate(ends)]
-    theta0 = exact(evidence, "witness_theta", "evidence")
     N, D = H.num, H.den
     na, nb = on_circle(N)
     da, db = on_circle(D)
@@ -954,12 +946,13 @@ def bound_cells(H, T, eta, nu, lo, hi, evidence):
             r = r * c + x
         return r
 
+    fact = [1]
+    for k in range(1, 34):
+        fact.append(fact[-1] * k)
+
     def sinc2(x):  # sinc(x), sinc'(x) for an interval x >= 0: series to x^30 with its remainder below 1, else direct
         def series(y):
             y2, f, d = y * y, iv.mpf(0), iv.mpf(0)
-            fact = [1]
-            for k in range(1, 34):
-                fact.append(fact[-1] * k)
             for k in reversed(range(16)):
                 f = f * y2 + iv.mpf((-1) ** k) / fact[2 * k + 1]
             for k in reversed(range(1, 16)):
@@ -995,31 +988,98 @@ def bound_cells(H, T, eta, nu, lo, hi, evidence):
         f = veta + vT * half * R / b
         df = vT * half * (dR * b + R * s * db_) / (b * b)
         return f, df
-    pi = iv.pi
-    hi_v, lo_v = q(hi), q(lo)
 
-    def cell_below(a, b, depth):  # f(m) + f'([a, b]) [-r, r] < hi, or both halves so (this checker's own
-        m, r = (a + b) / 2, (b - a) / 2  # intervals are wider than hapstab's jets: up to 6 halvings)
-        fm = f_and_df(q(m))[0]
+    def value(theta):
+        return f_and_df(q(theta))[0]
+
+    def cell_below(a, b, hi, depth=0):
+        m, r = (a + b) / 2, (b - a) / 2
+        fm = value(m)
         cm = Fraction(math.cos(float(m)))  # a rational near cos(m), the centre of c over the cell
         dcell = f_and_df(iv.mpf([q(a).a, q(b).b]), (shifted(cm), cm))[1]
-        if (fm + dcell * iv.mpf([-1, 1]) * q(r) < hi_v) is True:
+        if (fm + dcell * iv.mpf([-1, 1]) * q(r) < q(hi)) is True:
             return True
-        return depth < 6 and cell_below(a, m, depth + 1) and cell_below(m, b, depth + 1)
-    if not (pi < q(ends[-1])) is True:
-        return False, "b* <= hi not shown: the cells end at or below pi (they must cover [0, pi])"
+        return depth < 6 and cell_below(a, m, hi, depth + 1) and cell_below(m, b, hi, depth + 1)
+    return value, cell_below, q
+
+
+def read_cells(evidence, key):
+    ends = evidence.get(key)
+    if not isinstance(ends, list) or not ends:
+        raise Malformed("evidence.%s: must be a non-empty array of \"p/q\" strings" % key)
+    if len(ends) > MAX_BOUND_CELLS:
+        raise TooLarge("evidence.%s: %d cells, above this checker's limit of %d" % (key, len(ends), MAX_BOUND_CELLS))
+    return [exact_value(x, "evidence.%s[%d]" % (key, i)) for i, x in enumerate(ends)]
+
+
+def cells_below_fail(kernel, ends, hi):
+    """None when the cells (their right ends, from 0; the last beyond pi) show f < hi on [0, pi]; else why."""
+    from mpmath import iv
+    _, cell_below, q = kernel
+    if (iv.pi < q(ends[-1])) is not True:
+        return "the cells end at or below pi (they must cover [0, pi])"
     a = Fraction(0)
     for i, b in enumerate(ends):
         if not a < b:
-            return False, "b* <= hi not shown: cell %d's end %s is not above the one before" % (i + 1, short(b))
-        if not cell_below(a, b, 0):
-            return False, "f < %.12g not shown on cell %d [%.12g, %.12g]" % (float(hi), i + 1, float(a), float(b))
+            return "cell %d's end %s is not above the one before" % (i + 1, short(b))
+        if not cell_below(a, b, hi):
+            return "f < %.12g not shown on cell %d [%.12g, %.12g]" % (float(hi), i + 1, float(a), float(b))
         a = b
-    if theta0 < 0 or (q(theta0) < pi) is not True:
-        return False, "b* >= lo not shown: evidence.witness_theta = %s is not in [0, pi]" % short(theta0)
-    if (lo_v < f_and_df(q(theta0))[0]) is not True:
-        return False, "b* >= %.12g not shown: f(theta0) at theta0 = %.12g" % (float(lo), float(theta0))
+    return None
+
+
+def witness_fail(kernel, theta0, lo):
+    """None when theta0 lies in [0, pi] and f(theta0) > lo is shown; else why."""
+    from mpmath import iv
+    value, _, q = kernel
+    if theta0 < 0 or (q(theta0) < iv.pi) is not True:
+        return "evidence.witness_theta = %s is not in [0, pi]" % short(theta0)
+    if (q(lo) < value(theta0)) is not True:
+        return "f(theta0) > %.12g not shown at theta0 = %.12g" % (float(lo), float(theta0))
+    return None
+
+
+def bound_cells(H, T, eta, nu, lo, hi, evidence):
+    """b* in [lo, hi] by cells, the delay never expanded (hapstab's check/bound_cells.hpp states the theorem):
+    f < hi on each cell and f(witness_theta) > lo (cells_kernel)."""
+    kernel = cells_kernel(H, T, eta, nu)
+    ends = read_cells(evidence, "cells")
+    theta0 = exact(evidence, "witness_theta", "evidence")
+    why = cells_below_fail(kernel, ends, hi)
+    if why:
+        return False, "b* <= %.12g not shown: %s" % (float(hi), why)
+    why = witness_fail(kernel, theta0, lo)
+    if why:
+        return False, "b* >= %.12g not shown: %s" % (float(lo), why)
     return True, "b* in [%.12g, %.12g] (%d cells, the delay never expanded)" % (float(lo), float(hi), len(ends))
+
+
+def bound_max_cells(H0, H1, T, eta, nu, b, K, claim_range_, evidence, D):
+    """K_max by cells (hapstab's check/bound_max_check.hpp): lo > 0 by b0_hi < b, f at K = 0 below b0 on
+    cells_at_0 and f at K = lo below b on cells_at_lo; K_max <= hi by f at K = hi above b at witness_theta;
+    K_max = +inf has no cells' form."""
+    status, lo, hi, infinite = claim_range_
+    if infinite:
+        raise Malformed("claim.infinite: K_max = +inf has no cells' form (evidence.witness_theta)")
+    only(evidence, ("b0_hi", "cells_at_0", "cells_at_lo", "witness_theta") if lo > 0 else ("witness_theta",), "evidence")
+
+    def at(k):
+        return cells_kernel(H0 + RF([k]) * H1, T, eta, nu)
+    if lo > 0:
+        b0 = exact(evidence, "b0_hi", "evidence")
+        if b0 >= b:
+            return False, "evidence.b0_hi = %s is not < b: K_max > 0 not shown" % short(b0)
+        why = cells_below_fail(at(Fraction(0)), read_cells(evidence, "cells_at_0"), b0)
+        if why:
+            return False, "b*(%s = 0) < b0_hi not shown: %s" % (K, why)
+        why = cells_below_fail(at(lo), read_cells(evidence, "cells_at_lo"), b)
+        if why:
+            return False, "%s_max >= %.12g fails: b*(%s = lo) < b not shown: %s" % (K, float(lo), K, why)
+    why = witness_fail(at(hi), exact(evidence, "witness_theta", "evidence"), b)
+    if why:
+        return False, "%s_max <= %.12g not shown: b*(%s = hi) > b: %s" % (K, float(hi), K, why)
+    return True, "%s_max %s (cells, the delay never expanded; affine in %s, degree bound %d)" % (
+        K, ("= %s" % lo) if status == "exact" else "in [%.12g, %.12g]" % (float(lo), float(hi)), K, D)
 
 
 def bound_model(model, expanded=True):
@@ -1123,14 +1183,16 @@ def check_bound_max(c):
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
+    cells = "witness_theta" in evidence  # the long-delay form (bound_max_cells)
+    if not cells:
+        only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
     K = parameter_name(model)
     sets = model.get("set", {})
     # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
     m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
     m0.pop("name")
     m0.pop("damping", None)
-    _, T, eta, P, q = bound_model(m0)
+    _, T, eta, P, q = bound_model(m0, expanded=not cells)
     b = exact(model, "damping", "model")
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
@@ -1143,6 +1205,8 @@ def check_bound_max(c):
         return False, refuted
     if not infinite and lo < 0:
         return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+    if cells:
+        return bound_max_cells(H0, H1, T, eta, Fraction(P, q), b, K, (status, lo, hi, infinite), evidence, D)
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)
     if not below_band_end(c_lo, q):  # checked whenever given, also where no bound reads it (K_max = 0)
         return False, "evidence.domain_c_lo = %s is not <= cos(pi/%d)" % (short(c_lo), q)

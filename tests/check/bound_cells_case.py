@@ -4,8 +4,10 @@ of [0, pi] on which f < hi is shown by the mean value theorem in balls, and a wi
 expanded. On each model below both checkers must verify the certificate, its claim must hold the closed form
 of (53) where there is one (f(0) = (2n + 1) K T/2 - B for the delayed wall, the maximum at w = 0 for these
 numbers; H = 1: (2n + 1) T/2, Example 4), and each hand edit must get its exit code from both checkers
-(1: refuted, 2: malformed, named). A Tustin wall (a pole at z = -1: f unbounded near w = pi/T... its B(c)
-vanishes at c = -1) has no cells' certificate: refused by name, nothing written.
+(1: refuted, 2: malformed, named). A Tustin wall (a pole at z = -1: its B(c) vanishes at c = -1) has no cells' certificate: refused by name,
+nothing written. `bound --max K --damping b` at n = 1000 has the same form (check/bound_max_check.hpp): two finite K_max (one
+from the long-delay bracketing path, without a maximiser: the producer finds the witness) and K_max = 0, each
+verified by both, 8 hand edits.
 
   bound_cells_case.py HAPSTAB
 exit 0 when every expectation holds, else 1 (each failure printed)."""
@@ -59,6 +61,45 @@ def edits(cert):
             ("witness_c beside the cells", with_field(cert, ["evidence", "witness_c"], "1"), 2)]
 
 
+def max_cases(hapstab, tmp):
+    """`bound --max K --damping b` at n = 1000 (bound_max_check.hpp's cells form): the wall K + 5(z - 1)/(Tz),
+    b = 100 (K_max finite; its hand edits), 1000 + K(z - 1)/(Tz), b = 100 (b*(0) = 1000.5 > b: K_max = 0), and
+    5(z - 1)/(Tz) - K, b = 100 (K_max = 454.61.. by the long-delay bracketing path)."""
+    out = []
+    for k, (H, b, zero) in enumerate([("K + 5*(z-1)/(T*z)", 100, False), ("1000 + K*(z-1)/(T*z)", 100, True),
+                                      ("5*(z-1)/(T*z) - K", 100, False)]):
+        r, path = produce(hapstab, tmp, 20 + k, H, {}, 1000, ["--max", "K", "--damping", str(b)])
+        if not os.path.exists(path):
+            print("FAIL bound --max %s: no certificate (exit %d): %s" % (H, r.returncode, r.stderr.strip()))
+            out.append(("bound --max " + H + ": no certificate", {}, 0))
+            continue
+        c = json.load(open(path))
+        ok = "witness_theta" in c["evidence"] and (c["claim"].get("value") == "0") == zero
+        print("%s bound --max %s at n = 1000: claim %s" % ("ok  " if ok else "FAIL", H, c["claim"].get("value") or
+                                                            "[%s, %s]" % (c["claim"]["printed_lo"], c["claim"]["printed_hi"])))
+        out.append(("bound --max " + H + ": unmutated", c if ok else {}, 0))
+        if zero:
+            out.append(("bound --max " + H + ": the damping 2000 (b*(0) < b: K_max = 0 false)", with_field(c, ["model", "damping"], "2000"), 1))
+        if zero or k == 2:  # the third: sup K on the long-delay bracketing path (no maximiser enclosure: the producer searches)
+            continue
+        lo, hi = Fraction(c["claim"]["lo"]), Fraction(c["claim"]["hi"])
+
+        def claim(new_lo, new_hi):
+            e = deleted(deleted(with_field(with_field(c, ["claim", "lo"], str(new_lo)), ["claim", "hi"], str(new_hi)),
+                                ["claim", "printed_lo"]), ["claim", "printed_hi"])
+            return e
+        out += [("bound --max: lo raised to 2 hi (b*(lo) > b)", claim(2 * hi, 2 * hi), 1),
+                ("bound --max: hi lowered to lo / 2 (b*(hi) < b: no witness)", claim(lo / 4, lo / 2), 1),
+                ("bound --max: b0_hi = b", with_field(c, ["evidence", "b0_hi"], "100"), 1),
+                ("bound --max: the damping 50 (b*(lo) < b false)", with_field(c, ["model", "damping"], "50"), 1),
+                ("bound --max: cells_at_0 missing", deleted(c, ["evidence", "cells_at_0"]), 2),
+                ("bound --max: witness_c beside the cells", with_field(c, ["evidence", "witness_c"], "1"), 2),
+                ("bound --max: K_max claimed +inf", with_field(deleted(deleted(deleted(deleted(c, ["claim", "lo"]), ["claim", "hi"]),
+                                                                              ["claim", "printed_lo"]), ["claim", "printed_hi"]),
+                                                             ["claim", "infinite"], True), 2)]
+    return out
+
+
 def main():
     hapstab = sys.argv[1]
     failures, cases = 0, []
@@ -78,6 +119,7 @@ def main():
                                                          "" if closed is None else " holds the closed form %s" % closed))
             failures += not ok
             cases += [(name + ": " + what, c, want) for what, c, want in (edits(cert) if k == 1 else [("unmutated", cert, 0)])]
+        cases += max_cases(hapstab, tmp)
         failures += run_cases(hapstab, cases, tmp)
         r, path = produce(hapstab, tmp, 9, "K + 2*B/T*(z-1)/(z+1)", {"K": 1000, "B": 5}, 1000, [])
         refused = r.returncode == 2 and "--certificate" in r.stderr and not os.path.exists(path)

@@ -11,7 +11,9 @@ delay's buffer; its spectral radius scanned on a geometric grid and bisected), n
   * tests/cli/scenes/loop_max_pure_masses.toml: two pure masses (a Jordan block at z = 1 at g = 0, "undecided"
     before): sup g certified by the resultant on (0, a] (lti/circle_crossing.hpp), within 1e-7 of the reference, and
     the loop stable at g = 10^-k, k = 1..8, by exact Schur-Cohn on M built in fractions (indep_charpoly.py; in double
-    a Jordan block's 1 + O(g) is noise).
+    a Jordan block's 1 + O(g) is noise);
+  * a hidden mode z = g of the environment (stop 79): sup g = 1, one DOF and two (it said "sup g = 0 [exact]" from
+    the mode's instability at the scene's g = 2).
 
   loop_max_review_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -133,6 +135,29 @@ def main():
     expect("pure masses: exit 0 (got %s), sup %s against the reference %.13g; stable (exactly) at 1e-1..1e-8: %s" % (
         rc, got, ref4, all(small)),
         rc == 0 and j.get("status") == "certified" and abs(got - ref4) <= 1e-7 * ref4 and all(small))
+    # 5. a hidden mode the parameter moves (stop 79): the environment's state x1(k + 1) = g x1(k) is fed and read by
+    # nothing (uncontrollable and unobservable), so the loop as written has the eigenvalue z = g beside the loop with
+    # E = 100 I, which g does not enter: sup g = 1 exactly (by hand; the rest's rho by numpy below). It said
+    # "sup g = 0 [exact]" from the unstable hidden mode at the scene's g = 2, on one DOF and on two.
+    with tempfile.TemporaryDirectory() as tmp:
+        for dofs in (1, 2):
+            devs = "".join('[[device]]\nname = "d%d"\nm = "1"\nb = "%d"\n' % (i, 2 + i) for i in range(dofs))
+            if dofs == 1:
+                env = 'ss = { A = [["g"]], B = [["0"]], C = [["0"]], D = [["100"]] }'
+            else:
+                env = 'ss = { A = [["g", "0"], ["0", "0"]], B = [["0", "0"], ["1", "0"]], C = [["0", "0"], ["0", "0"]], ' \
+                      'D = [["100", "0"], ["0", "100"]] }'
+            scene = os.path.join(tmp, "hidden%d.toml" % dofs)
+            with open(scene, "w") as f:
+                f.write('[scene]\nname = "a hidden mode z = g"\nT = "1/1000"\n[parameters]\ng = "2"\n%s[environment]\n%s\n' % (devs, env))
+            rest = IL.build_loop_scene(dict(T=T, devices=[dict(kind="md", m=Q(1), b=Q(2 + i)) for i in range(dofs)],
+                                            ops=[None] * dofs, E=[[const(100) if i == j else const(0) for j in range(dofs)]
+                                                                  for i in range(dofs)], n=0))
+            r5 = IL.rho_np(rest, 1.0)
+            rc, j, err = run(hapstab, ["--scene", scene, "--max", "g", "--json"])
+            lo, hi = (float(j["enclosure"][0]), float(j["enclosure"][1])) if j and j.get("enclosure") else (None, None)
+            expect("a hidden mode z = g, %d DOF: exit 0 (got %s), sup g = 1 inside [%s, %s] (the rest's rho %.6f < 1), not 0 [exact]" % (
+                dofs, rc, lo, hi, r5), rc == 0 and j.get("max") != "0" and lo is not None and lo <= 1 <= hi and r5 < 1)
     print("loop_max_review_case: %d failed" % failures)
     return 1 if failures else 0
 

@@ -273,29 +273,12 @@ void verify_before_writing(const nlohmann::json& j) {
 }
 
 
-// b* beyond the expanded form's size (a long delay): the cells of check/bound_cells.hpp, found by
-// bisecting each cell whose bound fails, and a witness at the maximiser; the claim b*'s enclosure
-// widened by 10^-13 of its size and printed to 12 digits outward (the cells need f < hi strictly).
-nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const passivity::Bound& b, nlohmann::json& claim) {
-  const Enclosure<rational>& e = *b.enclosure;
-  const rational size = std::max({rational(abs(e.lo)), rational(abs(e.hi)), p.T});
-  const rational delta = size / rational(pow(integer(10), 13));
-  const auto [lo, hi] = printed_enclosure(claim, decimal_outward(e.lo - delta, 12, -1), decimal_outward(e.hi + delta, 12, +1));
-  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
-  const check::detail::KernelForm f = check::detail::kernel_form(p.H, p.T, nu, p.eta);
-  if (!isolate_real_roots(f.B, rational(-1), rational(1)).empty())
-    throw InputError("--certificate: H has a pole on the unit circle (|D|^2 vanishes at some cos wT in [-1, 1]), which the "
-                     "cells' form (check/bound_cells.hpp) does not take, and the delay is beyond the expanded form's size: "
-                     "no certificate");
-  const rational below_pi(314159265358979L, 100000000000000L);
-  rational theta0 = b.omega_enclosure ? (b.omega_enclosure->lo + b.omega_enclosure->hi) / 2 * p.T : rational(0);
-  if (theta0 > below_pi) theta0 = below_pi;
-  if (!check::detail::point_above(f, theta0, lo))
-    throw NumericalError("--certificate: the objective at the maximiser (theta = " + to_decimal(theta0, 12) + ") was not shown above " +
-                         to_decimal(lo, 15) + ": no certificate");
-  // cells: a uniform start of ~2 per period 2 pi/nu on [0, 355/113] (355/113 > pi), each failing cell halved
+// The cells of check/bound_cells.hpp on which f < hi: a uniform start of ~2 per period 2 pi/nu on
+// [0, 355/113] (355/113 > pi), each failing cell halved (at most 60 times); refused by name beyond the
+// checkers' limit.
+nlohmann::json cells_below(const check::detail::KernelForm& f, const rational& hi, const rational& nu, int degree) {
   const rational end(355, 113);
-  const long start = std::max(64L, 2 * (static_cast<long>(to_real<double>(nu)) + 1 + static_cast<long>(p.H.den().degree())));
+  const long start = std::max(64L, 2 * (static_cast<long>(to_real<double>(nu)) + 1 + static_cast<long>(degree)));
   nlohmann::json ends = nlohmann::json::array();
   std::vector<std::pair<rational, int>> stack;  // (right end, depth), popped left to right
   rational a(0);
@@ -306,7 +289,9 @@ nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const pass
     if (check::detail::cell_below(f, a, b_end, hi)) {
       ends.push_back(b_end.str());
       a = b_end;
-      if (ends.size() > check::detail::max_bound_cells) break;
+      if (ends.size() > check::detail::max_bound_cells)
+        throw InputError("--certificate: more than " + std::to_string(check::detail::max_bound_cells) +
+                         " cells (the checkers' limit) would be needed: no certificate");
       continue;
     }
     if (depth >= 60)
@@ -315,10 +300,88 @@ nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const pass
     stack.emplace_back(b_end, depth + 1);
     stack.emplace_back((a + b_end) / 2, depth + 1);
   }
-  if (ends.size() > check::detail::max_bound_cells)
-    throw InputError("--certificate: more than " + std::to_string(check::detail::max_bound_cells) +
-                     " cells (the checkers' limit) would be needed: no certificate");
-  return {{"cells", ends}, {"witness_theta", theta0.str()}};
+  return ends;
+}
+
+// The kernel form of H (check/bound_cells.hpp) with nu = n + t_d/T; refused by name where H has a pole
+// on the unit circle (the cells bound f only where |D|^2 > 0).
+check::detail::KernelForm cells_kernel(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  check::detail::KernelForm f = check::detail::kernel_form(H, p.T, nu, p.eta);
+  if (!isolate_real_roots(f.B, rational(-1), rational(1)).empty())
+    throw InputError("--certificate: H has a pole on the unit circle (|D|^2 vanishes at some cos wT in [-1, 1]), which the "
+                     "cells' form (check/bound_cells.hpp) does not take, and the delay is beyond the expanded form's size: "
+                     "no certificate");
+  return f;
+}
+
+// The maximiser of f on [0, pi] in doubles: the best of 16 points per period 2 pi/nu, then Newton on f'
+// (f'' < 0), kept inside [0, pi).
+rational cells_maximiser(const check::detail::KernelForm& f, const rational& below_pi) {
+  const long n = 16 * (static_cast<long>(to_real<double>(f.nu)) + 1 + static_cast<long>(f.B.degree()));
+  rational best(0);
+  double best_v = -1e300;
+  for (long k = 0; k <= n; ++k) {
+    const rational t = below_pi * rational(k, n);
+    const double v = check::detail::objective_at(f, t).v;
+    if (v > best_v) best_v = v, best = t;
+  }
+  double t = to_real<double>(best);
+  for (int it = 0; it < 30; ++it) {
+    const check::detail::PointJet j = check::detail::objective_at(f, exact_rational(t));
+    if (!(j.dd < 0)) break;
+    const double next = std::clamp(t - j.d / j.dd, 0.0, to_real<double>(below_pi));
+    if (next == t) break;
+    t = next;
+  }
+  return exact_rational(t);
+}
+
+// theta = wT at the midpoint of a maximiser's enclosure (or, where that does not show f > lo, the maximiser
+// found by cells_maximiser), kept below pi; refused by name unless f > lo there.
+rational cells_witness(const check::detail::KernelForm& f, const std::optional<Enclosure<rational>>& omega, const rational& T,
+                       const rational& lo) {
+  const rational below_pi(314159265358979L, 100000000000000L);
+  rational theta = omega ? (omega->lo + omega->hi) / 2 * T : rational(0);
+  if (theta > below_pi) theta = below_pi;
+  if (!check::detail::point_above(f, theta, lo)) theta = cells_maximiser(f, below_pi);
+  if (!check::detail::point_above(f, theta, lo))
+    throw NumericalError("--certificate: the objective at the maximiser (theta = " + to_decimal(theta, 12) + ") was not shown above " +
+                         to_decimal(lo, 15) + ": no certificate");
+  return theta;
+}
+
+// b* beyond the expanded form's size (a long delay): the cells of check/bound_cells.hpp and a witness
+// at the maximiser; the claim b*'s enclosure widened by 10^-13 of its size and printed to 12 digits
+// outward (the cells need f < hi strictly).
+nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const passivity::Bound& b, nlohmann::json& claim) {
+  const Enclosure<rational>& e = *b.enclosure;
+  const rational size = std::max({rational(abs(e.lo)), rational(abs(e.hi)), p.T});
+  const rational delta = size / rational(pow(integer(10), 13));
+  const auto [lo, hi] = printed_enclosure(claim, decimal_outward(e.lo - delta, 12, -1), decimal_outward(e.hi + delta, 12, +1));
+  const check::detail::KernelForm f = cells_kernel(p.H, p);
+  const rational theta0 = cells_witness(f, b.omega_enclosure, p.T, lo);
+  return {{"cells", cells_below(f, hi, f.nu, p.H.den().degree())}, {"witness_theta", theta0.str()}};
+}
+
+// bound --max beyond the expanded form's size: K_max's enclosure widened by 10^-12 and printed to 12
+// digits outward; b0 halfway between b*(0) and b; the cells of f at K = 0 below b0 and at K = lo below
+// b, the witness of f at K = hi above b (check/bound_max_check.hpp); K_max = 0 by the witness at 0.
+nlohmann::json bound_max_cells_evidence(const passivity::GainProblem& g, const passivity::MaxGain& m, nlohmann::json& claim) {
+  const auto at = [&](const rational& k) { return cells_kernel(g.base.H + RationalFunction<rational>(k) * g.H1, g.base); };
+  const int degree = std::max(g.base.H.den().degree(), g.H1.den().degree());
+  if (m.outcome == Outcome::fails)  // K_max = 0: b*(0) >= b, by the witness at K = 0
+    return {{"witness_theta", cells_witness(at(rational(0)), m.at_zero.omega_enclosure, g.base.T, g.b).str()}};
+  const Enclosure<rational>& e = *m.enclosure;
+  const rational widen = rational(1) / rational(pow(integer(10), 12));
+  const auto [lo, hi] = printed_enclosure(claim, decimal_outward(e.lo * (1 - widen), 12, -1), decimal_outward(e.hi * (1 + widen), 12, +1));
+  const rational b0 = (m.at_zero.enclosure->hi + g.b) / 2;
+  nlohmann::json ev;
+  ev["b0_hi"] = b0.str();
+  ev["cells_at_0"] = cells_below(at(rational(0)), b0, at(rational(0)).nu, degree);
+  ev["cells_at_lo"] = cells_below(at(lo), g.b, at(lo).nu, degree);
+  ev["witness_theta"] = cells_witness(at(hi), m.omega, g.base.T, g.b).str();
+  return ev;
 }
 
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
@@ -377,8 +440,15 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   if (m.status != Status::exact && m.status != Status::certified)
     throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
   if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
-  check_certificate_size(g.base.H, g.base);
-  check_certificate_size(g.H1, g.base);
+  // beyond the expanded form's size: the cells' form (bound_max_cells_evidence)
+  const bool long_delay = certificate_size(g.base.H, g.base) > certificate_max_size || certificate_size(g.H1, g.base) > certificate_max_size;
+  if (long_delay && m.infinite)
+    throw InputError("--certificate: sup " + K + " = +inf beyond the expanded form's size has no cells' form: no certificate");
+  if (long_delay && m.outcome == Outcome::fails && m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
+  if (!long_delay) {
+    check_certificate_size(g.base.H, g.base);
+    check_certificate_size(g.H1, g.base);
+  }
   nlohmann::json j = certificate_header("bound-max");
   nlohmann::json mo;
   mo["H"] = tf.H;
@@ -394,6 +464,18 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
                       "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
   claim["status"] = to_string(m.status);
+  if (long_delay) {
+    if (m.outcome == Outcome::fails) {
+      claim["status"] = "exact";
+      claim["value"] = "0";
+    } else if (!m.enclosure || !m.at_zero.enclosure) {
+      throw InputError("--certificate: sup " + K + " or b*(0) has no enclosure: no certificate");
+    }
+    j["evidence"] = bound_max_cells_evidence(g, m, claim);
+    j["claim"] = claim;
+    verify_before_writing(j);
+    return j;
+  }
   nlohmann::json evidence;
   const bool zero = m.outcome == Outcome::fails;
   std::optional<rational> hi;

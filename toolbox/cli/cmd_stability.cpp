@@ -484,6 +484,26 @@ std::optional<stability::LoopMaxSplit> split_where_whole_undecided(const Stabili
   return std::nullopt;
 }
 
+// Whether every unstable hidden mode (at the scene's value of NAME) is unstable for every value: its block is
+// one NAME does not enter (scene/parameter_degree.hpp, proven from the text: NAME enters only [environment] and
+// [coupling]), or an uncontrollable mode of one whose A and B NAME does not move. Anything else -- NAME in a
+// block's A or B, an unobservable mode where C may move, a parameter_degree refusal -- is not proven: the caller
+// then decides the loop as written (a mode on z = 2 at g = 2 may be z = g, stable at g = 1/2).
+bool hidden_for_every_value(const scene::Scene& sc, const sim::LoopHiddenModes& hidden, const std::string& name) {
+  scene::ParameterDegree d;
+  try {
+    d = scene::parameter_degree(sc, name);
+  } catch (const InputError&) {
+    return false;
+  }
+  for (const auto& m : hidden.modes) {
+    if (m.stable) continue;
+    const bool entered = (m.block == "environment" && d.environment) || (m.block == "coupling" && d.coupling);
+    if (entered && !(m.kind == "uncontrollable" && !d.dynamics_move)) return false;
+  }
+  return true;
+}
+
 int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgress& progress) {
   if (!o.certificate.empty() && o.conservatism)
     throw InputError("--certificate: stability --max --conservatism has no certificate (Theorem 5's side is a bracket of LMI "
@@ -676,7 +696,8 @@ const cli::Register reg(
              }
            }();
            const auto hidden = sim::hidden_modes(sc.loop);
-           if (!hidden.stable()) {
+           const bool hidden_unstable = !hidden.stable();
+           if (hidden_unstable && hidden_for_every_value(sc, hidden, o->max_name)) {
              if (!o->certificate.empty())
                throw InputError("--certificate: sup " + o->max_name + " = 0 is decided by a hidden mode (" + hidden.summary() +
                                 "): sup = 0 by a hidden mode has no certificate form yet (`stability --scene S --set " + o->max_name +
@@ -689,7 +710,8 @@ const cli::Register reg(
            // beyond one DOF, or with a [coupling]: the closed-loop matrix (stability/loop_max.hpp)
            if (!(o->plant.empty() && o->H.empty() && o->op.empty() && o->T.empty() && o->delay == 0))
              throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");
-           if (!one_dof_scene(sc) || o->conservatism)
+           // a hidden mode NAME may move (unstable at the scene's value): the loop as written, whose matrix holds it
+           if (!one_dof_scene(sc) || o->conservatism || hidden_unstable)
              return run_loop_max(*o, sc, progress);
            progress.replan({"the one-DOF loop's supremum"});
            progress.stage();

@@ -3,6 +3,7 @@
 
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/on_circle.hpp"
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/jet.hpp"
 
 namespace hapstab::check::detail {
@@ -68,10 +69,14 @@ bool point_above(const KernelForm& f, const rational& theta0, const rational& lo
   return v.finite() && Ball(lo).below(v);
 }
 
+PointJet objective_at(const KernelForm& f, const rational& theta) {
+  const Jet<Ball> j = objective(f, Ball(theta));
+  return {j.v.to_double(), j.d.to_double(), j.dd.to_double()};
+}
+
 bool beyond_pi(const rational& theta) { return Ball::pi().below(Ball(theta)); }
 
-std::optional<std::string> cells_fail(const KernelForm& f, const std::vector<rational>& ends, const rational& theta0,
-                                      const rational& lo, const rational& hi) {
+std::optional<std::string> cells_below_fail(const KernelForm& f, const std::vector<rational>& ends, const rational& hi) {
   if (ends.empty() || !beyond_pi(ends.back())) return "the cells end at or below pi (they must cover [0, pi])";
   rational a(0);
   for (size_t i = 0; i < ends.size(); ++i) {
@@ -80,9 +85,25 @@ std::optional<std::string> cells_fail(const KernelForm& f, const std::vector<rat
       return "f < " + decimal(hi) + " not shown on cell " + std::to_string(i + 1) + " [" + decimal(a) + ", " + decimal(ends[i]) + "]";
     a = ends[i];
   }
+  return std::nullopt;
+}
+
+std::optional<std::string> witness_fails(const KernelForm& f, const rational& theta0, const rational& lo) {
   if (theta0 < 0 || !Ball(theta0).below(Ball::pi())) return "the witness theta0 = " + theta0.str() + " is not in [0, pi]";
   if (!point_above(f, theta0, lo)) return "f(theta0) > " + decimal(lo) + " not shown at theta0 = " + decimal(theta0);
   return std::nullopt;
+}
+
+std::vector<rational> read_cells(const nlohmann::json& evidence, const std::string& key) {
+  const std::string where = "evidence." + key;
+  if (!evidence.contains(key) || !evidence.at(key).is_array() || evidence.at(key).empty())
+    throw InputError(where + ": must be a non-empty array of \"p/q\" strings");
+  const nlohmann::json& c = evidence.at(key);
+  if (c.size() > max_bound_cells)
+    throw InputError(where + ": " + std::to_string(c.size()) + " cells, beyond the checker's limit of " + std::to_string(max_bound_cells));
+  std::vector<rational> ends;
+  for (size_t i = 0; i < c.size(); ++i) ends.push_back(exact_string(c[i], where + "[" + std::to_string(i) + "]"));
+  return ends;
 }
 
 }  // namespace hapstab::check::detail

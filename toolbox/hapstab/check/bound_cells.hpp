@@ -14,7 +14,8 @@
 // the sinc form regular on [0, 2 pi) (numeric/jet.hpp: sinc near 0 by its Taylor polynomial with the
 // remainder bounded). b* = sup f over theta = wT in [0, pi].
 //
-// Theorem checked (claim "b* in [lo, hi]"):
+// Theorem checked (claim "b* in [lo, hi]"; check/bound_max_check.hpp uses the same two tests on
+// H0 + K H1 at K = 0, lo and hi):
 //   (upper) f < hi on [0, pi] if the cells [theta_{i-1}, theta_i] (theta_0 = 0 < theta_1 < ... <
 //           theta_k, rationals, theta_k > pi shown with a ball of pi) each have
 //           f(m) + f'([theta_{i-1}, theta_i]) [-r, r] < hi, m the midpoint, r the half-width (the
@@ -31,6 +32,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/polynomial.hpp"
@@ -51,12 +54,21 @@ KernelForm kernel_form(const RationalFunction<rational>& H, const rational& T, c
 bool cell_below(const KernelForm& f, const rational& a, const rational& b, const rational& hi);
 /// f(theta0) > lo shown in balls.
 bool point_above(const KernelForm& f, const rational& theta0, const rational& lo);
+/// f, f', f'' at theta, the midpoints of their balls as doubles (for producers' searches, never a result).
+struct PointJet {
+  double v = 0, d = 0, dd = 0;
+};
+PointJet objective_at(const KernelForm& f, const rational& theta);
 /// theta > pi, shown with a ball of pi (false when not shown).
 bool beyond_pi(const rational& theta);
 
 /// nullopt when the cells (their right ends theta_1 < ... < theta_k, theta_k > pi) show f < hi on
-/// [0, pi] and the witness theta0 in [0, pi] shows f(theta0) > lo; else what failed.
-std::optional<std::string> cells_fail(const KernelForm& f, const std::vector<rational>& ends, const rational& theta0,
-                                      const rational& lo, const rational& hi);
+/// [0, pi]; else what failed.
+std::optional<std::string> cells_below_fail(const KernelForm& f, const std::vector<rational>& ends, const rational& hi);
+/// nullopt when theta0 lies in [0, pi] and f(theta0) > lo is shown; else what failed.
+std::optional<std::string> witness_fails(const KernelForm& f, const rational& theta0, const rational& lo);
+/// The cells' right ends at evidence[key]: a non-empty array of at most max_bound_cells "p/q"
+/// strings (InputError naming the field).
+std::vector<rational> read_cells(const nlohmann::json& evidence, const std::string& key);
 
 }  // namespace hapstab::check::detail

@@ -54,17 +54,12 @@ Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H
 // b* in [lo, hi] by cells (check/bound_cells.hpp): evidence.cells the cells' right ends, evidence.witness_theta.
 Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm, const rational& lo,
                     const rational& hi) {
-  const nlohmann::json& c = evidence.at("cells");
-  if (!c.is_array() || c.empty()) throw InputError("evidence.cells: must be a non-empty array of \"p/q\" strings");
-  if (c.size() > detail::max_bound_cells)
-    throw InputError("evidence.cells: " + std::to_string(c.size()) + " cells, beyond the checker's limit of " +
-                     std::to_string(detail::max_bound_cells));
-  std::vector<rational> ends;
-  for (size_t i = 0; i < c.size(); ++i) ends.push_back(detail::exact_string(c[i], "evidence.cells[" + std::to_string(i) + "]"));
+  const std::vector<rational> ends = detail::read_cells(evidence, "cells");
   const rational theta0 = detail::exact_field(evidence, "witness_theta", "evidence");
   const rational nu = rational(dm.n) + dm.td / dm.T;
   const detail::KernelForm f = detail::kernel_form(H.H, dm.T, nu, dm.eta);
-  if (auto why = detail::cells_fail(f, ends, theta0, lo, hi)) return {false, "b* in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "] not shown: " + *why};
+  if (auto why = detail::cells_below_fail(f, ends, hi)) return {false, "b* <= " + detail::decimal(hi) + " not shown: " + *why};
+  if (auto why = detail::witness_fails(f, theta0, lo)) return {false, "b* >= " + detail::decimal(lo) + " not shown: " + *why};
   return {true, "b* in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "] (upper bound: f < hi on " + std::to_string(ends.size()) +
                     " cells of [0, pi], each by the mean value theorem in balls, the delay never expanded; lower bound: f at theta0 = " +
                     detail::shortened(theta0) + ")"};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hapstab/check/affine.hpp"
+#include "hapstab/check/bound_cells.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -18,6 +19,39 @@ namespace {
 
 using RF = RationalFunction<rational>;
 
+// The cells' form (check/bound_cells.hpp), for delays beyond the expanded form: K_max in [lo, hi] with
+// lo > 0 by b0_hi < b, cells_at_0 (f at K = 0 below b0) and cells_at_lo (f at K = lo below b); or
+// K_max = 0 (claim.value "0"); and b*(hi) >= b by f(witness_theta) > b at K = hi.
+Verdict cells_form(const nlohmann::json& evidence, const detail::Affine& h, const detail::DelayModel& dm, const rational& b,
+                   const std::string& K, const detail::ClaimRange& range) {
+  if (range.infinite) throw InputError("claim.infinite: K_max = +inf has no cells' form (evidence.witness_theta)");
+  const rational &lo = range.lo, &hi = range.hi;
+  detail::only_fields(evidence, lo > 0 ? std::initializer_list<const char*>{"b0_hi", "cells_at_0", "cells_at_lo", "witness_theta"}
+                                       : std::initializer_list<const char*>{"witness_theta"},
+                      "evidence");
+  const rational nu = rational(dm.n) + dm.td / dm.T;
+  auto at = [&](const rational& k) { return detail::kernel_form(h.H0 + RF(k) * h.H1, dm.T, nu, dm.eta); };
+  std::vector<std::string> shown;
+  if (lo > 0) {
+    const rational b0 = detail::exact_field(evidence, "b0_hi", "evidence");
+    if (b0 >= b) return {false, "evidence.b0_hi = " + detail::decimal(b0) + " is not < b = " + detail::decimal(b) + ": K_max > 0 not shown"};
+    if (auto why = detail::cells_below_fail(at(rational(0)), detail::read_cells(evidence, "cells_at_0"), b0))
+      return {false, "b*(" + K + " = 0) < b0_hi not shown: " + *why};
+    if (auto why = detail::cells_below_fail(at(lo), detail::read_cells(evidence, "cells_at_lo"), b))
+      return {false, K + "_max >= " + detail::decimal(lo) + " fails: b*(" + K + " = lo) < b not shown: " + *why};
+    shown.push_back("b*(0) < " + detail::decimal(b0) + " < b and b*(" + K + " = " + detail::decimal(lo) + ") < b by cells");
+  }
+  const rational theta = detail::exact_field(evidence, "witness_theta", "evidence");
+  if (auto why = detail::witness_fails(at(hi), theta, b))
+    return {false, K + "_max <= " + detail::decimal(hi) + " not shown: b*(" + K + " = hi) > b: " + *why};
+  shown.push_back("b*(" + K + " = " + detail::decimal(hi) + ") > b at theta = " + detail::shortened(theta));
+  std::string all;
+  for (const auto& s : shown) all += (all.empty() ? "" : "; ") + s;
+  return {true, K + "_max " + (range.status == "exact" ? "= " + lo.str() : "in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]") +
+                    ": " + all + " (the delay never expanded; b* convex in " + K + ", H affine in " + K + ", degree bound " +
+                    std::to_string(h.D) + ")"};
+}
+
 }  // namespace
 
 Verdict check_bound_max(const nlohmann::json& cert) {
@@ -26,7 +60,8 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"}, "model");
   detail::only_fields(claim, {"quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
-  detail::only_fields(evidence, {"witness_c", "b0_hi", "domain_c_lo"}, "evidence");
+  const bool cells = evidence.contains("witness_theta");  // the long-delay form (cells_form above)
+  if (!cells) detail::only_fields(evidence, {"witness_c", "b0_hi", "domain_c_lo"}, "evidence");
 
   // ---- the model as written
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
@@ -41,8 +76,9 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   po.parameters = detail::model_parameters(model);
   if (po.parameters.count(K)) throw InputError("model.set: gives the parameter model.name = " + K + " a value");
   const detail::Affine h = detail::prove_affine(text, po, K);
-  detail::check_size(dm, std::max(h.H0.num().degree(), h.H1.num().degree()),
-                     std::max(h.H0.den().degree(), h.H1.den().degree()), max_size);
+  if (!cells)
+    detail::check_size(dm, std::max(h.H0.num().degree(), h.H1.num().degree()),
+                       std::max(h.H0.den().degree(), h.H1.den().degree()), max_size);
   auto at = [&](const rational& k) { return detail::bound_objective(h.H0 + RF(k) * h.H1, dm.T, dm.P, dm.q); };
 
   // ---- the claim
@@ -52,6 +88,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   const bool infinite = range.infinite;
   const rational &lo = range.lo, &hi = range.hi;
   if (!infinite && lo < 0) return {false, "claim: lo = " + lo.str() + " < 0 (K_max >= 0 by its definition)"};
+  if (cells) return cells_form(evidence, h, dm, b, K, range);
   const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
   // checked whenever given, also where no upper bound reads it (K_max = 0): evidence is never ignored
   // (the campaign found a moved domain_c_lo accepted on K_max = 0 certificates)

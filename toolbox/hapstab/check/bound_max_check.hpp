@@ -16,6 +16,11 @@
 // H0 + K H1 (check/bound_objective.hpp: its own derivation, the band [cos(pi/q), 1] in c =
 // cos(wT/q), evidence.domain_c_lo); f1 <= 0 is that test on the objective of H1 with bound 0.
 //
+// Long delays (evidence.witness_theta; beyond the expanded form's size): the same three tests by
+// check/bound_cells.hpp's cells, the delay never expanded -- f at K = 0 below b0 on evidence.cells_at_0,
+// f at K = lo below b on evidence.cells_at_lo (lo > 0), and f at K = hi above b at witness_theta
+// (strict: the claim is widened to leave the cells a margin); K_max = +inf has no such form.
+//
 // Affinity, proven (never sampled): check/affine.hpp -- the parser's degree bound D of H in K and
 // H(k) = H0 + k H1 exactly at D + 1 values of K (the checker's own loop, not split_affine).
 //
