@@ -210,6 +210,8 @@ def check_bound(c, exe, timeout):
                 out["why"] = f"hapstab's lower end {mp.nstr(lo, 30)} exceeds the objective's max {mp.nstr(v, 30)}"
         else:
             out["outcome"] = "agree"
+            if c.get("certify"):
+                bound_certificate(c, exe, timeout, out, v, tol)
     return out
 
 
@@ -230,7 +232,40 @@ def case_bound_long(rng):
     n = rng.randint(50, 2000)
     if tau != 0:
         tags["delay"] = "sin(pi nu) > 0" if math.sin(math.pi * float(Q(n) + tau)) > 0 else "sin(pi nu) < 0"
-    return dict(H=H, T=T, n=n, tau=tau, eta=eta, tags=tags, args=IP.bound_args(H, T, n, tau, eta))
+    return dict(H=H, T=T, n=n, tau=tau, eta=eta, tags=tags, args=IP.bound_args(H, T, n, tau, eta), certify=True)
+
+
+def bound_certificate(c, exe, timeout, out, v, tol):
+    """Since stop 79 (bound_long): the same command with --certificate, run through both checkers; beyond the expanded
+    form (n + deg H past ~1000) its evidence is the cells' (check/bound_cells.hpp). The certificate's claim must hold
+    the reference's value (within its error): the cells' claim is the printed enclosure widened, an independent check of
+    what both checkers verify. A refuted certificate, or one that does not hold the reference, is a MISS; a refusal by
+    name is tagged."""
+    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with tempfile.TemporaryDirectory() as tmp:
+        f = os.path.join(tmp, "c.json")
+        rc, _, err, _ = run_hapstab(exe, c["args"] + ["--certificate", f], timeout)
+        if not os.path.exists(f):
+            out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
+            return
+        cert = json.load(open(f))
+        form = "cells" if "cells" in cert["evidence"] else "expanded"
+        ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
+        try:
+            py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
+                                timeout=timeout).returncode
+        except subprocess.TimeoutExpired:
+            py = "timeout"
+        cl = cert["claim"]
+        lo, hi = (dec(cl["value"]), dec(cl["value"])) if "value" in cl else (dec(cl["lo"]), dec(cl["hi"]))
+        holds = lo - tol <= v <= hi + tol
+        out["tags"]["certificate"] = "%s: %s" % (form, "verified by both" if ck == 0 and py == 0 else
+                                                 "verified, beyond the independent checker's limit" if ck == 0 and py == 3 else
+                                                 "hapstab check %s, independent %s" % (ck, py))
+        if ck != 0 or py not in (0, 3) or not holds:
+            out["outcome"] = "MISS"
+            out["why"] = "the certificate (%s): hapstab check %s, independent %s, claim [%s, %s] %s the reference" % (
+                form, ck, py, mp.nstr(lo, 20), mp.nstr(hi, 20), "holds" if holds else "does NOT hold")
 
 
 BRANCHES_BOUND_LONG = [
