@@ -26,12 +26,12 @@ def model(rng):
     if kind == "wall":
         H, sets = "K + B*(z-1)/(T*z)", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
     elif kind == "lag":
-        H, sets = "g*(z - a)/(z - b)", {"g": rng.choice([1, 10, 100]), "a": Fraction(rng.randint(-9, 9), 10),
-                                         "b": Fraction(rng.randint(-9, 9), 10)}
+        H, sets = "g*(z - a)/(z - b)", {"g": rng.choice([1, 10, 100]), "a": str(Fraction(rng.randint(-9, 9), 10)),
+                                         "b": str(Fraction(rng.randint(-9, 9), 10))}
     else:
         r = 1 - Fraction(1, 10 ** rng.randint(2, 5))
         c = Fraction(rng.randint(-9, 9), 10)
-        H, sets = "(z-1)/(z^2 - 2*%s*%s*z + %s^2)" % (r, c, r), {}
+        H, sets = "(z-1)/(z^2 - 2*(%s)*(%s)*z + (%s)^2)" % (r, c, r), {}
     n = rng.randint(1001, 3000)
     frac = "%s" % (Fraction(rng.randint(1, 5), rng.randint(2, 7)) * T) if rng.random() < 1 / 3 else None
     return T, H, sets, n, frac
