@@ -88,7 +88,9 @@ def edits(cert, infeasible):
             ("ss with a field it does not have", with_field(cert, ss + ["E"], "0"), 2),
             ("B one column short", with_field(cert, ss + ["B"], [row[:1] for row in a["B"]]), 2),
             ("A's entry not a rational", with_field(cert, ss + ["A", 1, 1], "x"), 2),
-            ("ss a string", with_field(cert, ss, "A = 0"), 2)]
+            ("ss a string", with_field(cert, ss, "A = 0"), 2),
+            ("A empty (it crashed hapstab check before the test was added)", with_field(cert, ss + ["A"], []), 2),
+            ("D empty", with_field(cert, ss + ["D"], []), 2)]
 
 
 def main():

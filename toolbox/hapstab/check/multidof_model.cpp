@@ -88,6 +88,8 @@ std::vector<std::vector<TransferFunction>> ss_entries(const nlohmann::json& env,
   const std::string where = "model.environment.ss";
   const auto A = exact_matrix(ss, "A", where, max_ss_states), B = exact_matrix(ss, "B", where, max_dofs),
              C = exact_matrix(ss, "C", where, max_ss_states), D = exact_matrix(ss, "D", where, max_dofs);
+  if (A.empty() || B.empty() || C.empty() || D.empty())
+    throw InputError(where + ": A, B, C and D must be non-empty matrices (at least one state and one DOF)");
   const size_t N = A.size(), m = D.size();
   if (A[0].size() != N || B.size() != N || C[0].size() != N || B[0].size() != m || C.size() != m || D[0].size() != m)
     throw InputError(where + ": A must be N x N, B N x m, C m x N and D m x m (got A " + std::to_string(N) + " x " +
