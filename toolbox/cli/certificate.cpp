@@ -34,6 +34,28 @@ using QPoly = Polynomial<rational>;
 
 // The checkers' size limit (check/bound_objective.hpp): q (deg H + 1) + P <= 1000.
 constexpr long certificate_max_size = 1000;
+// Beyond 64 a certified (not exact) b* or K_max has the cells' form even where the expanded one would
+// serve: the independent checker expands only to 64 (its Sturm sequences in fractions), and the expanded
+// check grows like the cube of the size (degree 236: 20 s) where the cells' does not. Beyond 300 an exact
+// one too (its claim then an enclosure: the expanded check there takes minutes), unless H has a pole on
+// the unit circle (the cells bound f only where |D|^2 > 0), which keeps the expanded form up to 1000.
+constexpr long cells_preferred_size = 64, cells_exact_size = 300;
+
+// Whether H has a pole on the unit circle: |D(e^{jw})|^2 = B(cos w) vanishes in [-1, 1] (check/bound_cells.hpp).
+bool pole_on_circle(const RationalFunction<rational>& H) {
+  return !isolate_real_roots(check::detail::kernel_form(H, rational(1), rational(0), rational(0)).B, rational(-1), rational(1)).empty();
+}
+
+// The cells' form for a finite b* or K_max of this size and status (above), or the expanded one; refused
+// by name where neither serves in seconds (a pole on the circle beyond 300: the expanded check takes minutes).
+bool cells_form(const integer& size, Status status, bool circle_pole) {
+  if (size <= cells_preferred_size || (size <= cells_exact_size && status == Status::exact)) return false;
+  if (circle_pole && size > cells_exact_size)
+    throw InputError("--certificate: H has a pole on the unit circle, which the cells' form (check/bound_cells.hpp) does not "
+                     "take, and the expanded form's size " + size.str() + " is beyond " + std::to_string(cells_exact_size) +
+                     " (its exact Sturm sequences grow like the cube of the size: 300 takes ~7 s, 900 minutes): no certificate");
+  return !circle_pole;
+}
 
 // The continued-fraction convergents of x, smallest first, until one satisfies `ok` (at most 400).
 template <class Ok>
@@ -386,8 +408,8 @@ nlohmann::json bound_max_cells_evidence(const passivity::GainProblem& g, const p
 
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits) {
-  // beyond the expanded form's size, a finite b* has the cells' evidence (check/bound_cells.hpp)
-  const bool long_delay = !b.infinite && b.enclosure && certificate_size(p.H, p) > certificate_max_size;
+  // a finite b* beyond the sizes above has the cells' evidence (check/bound_cells.hpp)
+  const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H));
   if (!long_delay) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
@@ -439,7 +461,9 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
     throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
   if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
   // beyond the expanded form's size: the cells' form (bound_max_cells_evidence)
-  const bool long_delay = certificate_size(g.base.H, g.base) > certificate_max_size || certificate_size(g.H1, g.base) > certificate_max_size;
+  const integer size = std::max(certificate_size(g.base.H, g.base), certificate_size(g.H1, g.base));
+  const bool long_delay = size > certificate_max_size ||
+                          (!m.infinite && m.outcome != Outcome::fails && cells_form(size, m.status, pole_on_circle(g.base.H) || pole_on_circle(g.H1)));
   if (long_delay && m.infinite)
     throw InputError("--certificate: sup " + K + " = +inf beyond the expanded form's size has no cells' form: no certificate");
   if (long_delay && m.outcome == Outcome::fails && m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
