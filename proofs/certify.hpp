@@ -70,21 +70,24 @@ inline std::string polynomial_text(const Polynomial<rational>& p) {
   return s;
 }
 
+/// M as rows of exact "p/q" strings, [["p/q", ...], ...]: a JSON array and a TOML matrix alike.
+inline std::string matrix_text(const Mat<rational>& M) {
+  std::string t = "[";
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    t += i ? ", [" : "[";
+    for (Eigen::Index j = 0; j < M.cols(); ++j) t += (j ? ", \"" : "\"") + M(i, j).str() + "\"";
+    t += "]";
+  }
+  return t + "]";
+}
+
 /// The certificate of the ISP (or `kind`) level of a square state space (`passivity-level --ss FILE
 /// --kind isp`, kind passivity-level-mimo; SISO: passivity-level): the model as the --ss JSON file
 /// (exact "p/q" entries) that reproduce writes beside the certificates; `contains` the level when it
 /// is known ("" otherwise).
 inline CertificateRequest mimo_level_request(const StateSpace<rational>& s, const std::string& contains = "",
                                              const std::string& kind = "isp") {
-  auto rows = [](const Mat<rational>& M) {
-    std::string t = "[";
-    for (Eigen::Index i = 0; i < M.rows(); ++i) {
-      t += i ? ", [" : "[";
-      for (Eigen::Index j = 0; j < M.cols(); ++j) t += (j ? ", \"" : "\"") + M(i, j).str() + "\"";
-      t += "]";
-    }
-    return t + "]";
-  };
+  const auto rows = matrix_text;
   CertificateRequest r;
   r.args = {"passivity-level", "--ss", "{input}", "--kind", kind};
   r.input = "{\"A\": " + rows(s.A) + ", \"B\": " + rows(s.B) + ", \"C\": " + rows(s.C) + ", \"D\": " + rows(s.D) +

@@ -32,6 +32,7 @@
 #include "hapstab/multidof/example.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/scene/scene.hpp"
+#include "proofs/certify.hpp"
 #include "proofs/proof.hpp"
 
 namespace {
@@ -73,17 +74,6 @@ std::pair<MatQ, MatQ> random_similarity(std::mt19937& g, int n) {
 
 MatQ exact(const Eigen::MatrixXd& M) { return lmi::to_rational(M); }
 
-/// M as a TOML matrix of exact strings: [["p/q", ...], ...].
-std::string toml_matrix(const MatQ& M) {
-  std::string t = "[";
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    t += i ? ", [" : "[";
-    for (Eigen::Index j = 0; j < M.cols(); ++j) t += (j ? ", \"" : "\"") + M(i, j).str() + "\"";
-    t += "]";
-  }
-  return t + "]";
-}
-
 /// Sec. VI case ii's scene (two 1-DOF operators, one device each, Delta = 1.37) with E given by the
 /// realisation `E` as written (`ss`, domain z): what `multidof analyze --certificate` reads.
 std::string case_ii_scene_with(const StateSpace<rational>& E) {
@@ -91,8 +81,9 @@ std::string case_ii_scene_with(const StateSpace<rational>& E) {
   for (const char* d : {"d_a", "d_b"}) s += "[[device]]\nname = \"" + std::string(d) + "\"\nm = \"1/10\"\nb = \"1.37\"\n";
   s += "[[operator]]\nname = \"H1\"\ndofs = [\"d_a\"]\ntf = \"0.1*(s^2+5*s+10)/(s^2+s+1)\"\n"
        "[[operator]]\nname = \"H2\"\ndofs = [\"d_b\"]\ntf = \"0.05*(s^2+5*s+10)/(s^2+s+1)\"\n";
-  s += "[environment]\nss = { A = " + toml_matrix(E.A) + ", B = " + toml_matrix(E.B) + ", C = " + toml_matrix(E.C) +
-       ", D = " + toml_matrix(E.D) + " }\n[multidof]\nosp = [\"1.37\", \"1.37\"]\n";
+  using proofs::matrix_text;
+  s += "[environment]\nss = { A = " + matrix_text(E.A) + ", B = " + matrix_text(E.B) + ", C = " + matrix_text(E.C) +
+       ", D = " + matrix_text(E.D) + " }\n[multidof]\nosp = [\"1.37\", \"1.37\"]\n";
   return s;
 }
 
