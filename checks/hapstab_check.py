@@ -306,12 +306,21 @@ def lex(text):
     return toks
 
 
-def parse_h(text, T, params, var='z', field='model.H', leaf=None):
+class ScenePlant(str):
+    """The plant text "(G)/s" scene_loop_model writes for a device given by its velocity G(s): the s it
+    cancels when G(0) = 0 is this checker's own integrator (the position offset, a conserved quantity, as
+    hapstab's scene loop reads the device), not the scene's text. A certificate's JSON never holds one."""
+
+
+def parse_h(text, T, params, var='z', field='model.H', leaf=None, marginal=False):
     """H(var) of the expression: + - * / ^ (integer exponents), unary +/-, parentheses, numbers,
     the variable var (z or s), T and the parameters; -z^2 is -(z^2); a^b^c is refused.
-    `leaf(kind, text, value)` builds the leaves in another algebra (Deg: degree bounds)."""
+    `leaf(kind, text, value)` builds the leaves in another algebra (Deg: degree bounds). A pole the
+    expression writes and an operation cancels on or outside the stable region is malformed (realised as
+    written, a hidden mode), unless `marginal` (b*: the frequency response) and H as written is marginally
+    stable."""
     try:
-        return _parse(text, T, params, var, leaf or rf_leaf)
+        return _parse(text, T, params, var, leaf or rf_leaf, marginal, isinstance(text, ScenePlant))
     except Malformed as e:
         raise Malformed(str(e).replace("model.H", field, 1))
 
@@ -348,9 +357,71 @@ class Deg:
         return 0
 
 
-def _parse(text, T, params, var, leaf):
+def cancelled_pole(op, a, b, r):
+    """The factor an operation cancels from the denominators the expression writes: the written one
+    (a.den b.den for *, a.den b.num for /, lcm(a.den, b.den) for + and -) over the result's; [1] when
+    nothing is cancelled or a product or quotient is 0 (a zero gain removes its branch)."""
+    if op in '*/' and not r.num:
+        return [Fraction(1)]
+    right = b.num if op == '/' else b.den
+    if len(r.den) == len(a.den) + len(right) - 1:
+        return [Fraction(1)]  # the result's denominator is the written one
+    if op in '+-':
+        if a.den == b.den:
+            return pdivmod(a.den, r.den)[0]
+        g = pgcd(a.den, b.den)
+        written = pdivmod(pmul(a.den, b.den), g)[0]
+    else:
+        written = pmul(a.den, right)
+    removed, rest = pdivmod(written, r.den)
+    assert not trim(rest), "the result's denominator divides the written one"
+    return removed
+
+
+def marginally_stable(d):
+    """(True, why) when every root of d (ascending, non-zero) has |z| <= 1 and those with |z| = 1 are simple:
+    g = gcd(d, z^n d(1/z)) holds the roots on the circle and the pairs (r, 1/r); the rest, d/g, must pass
+    Schur-Cohn; g must be square-free with every root on the circle: without its factors z - 1 and z + 1, g is
+    z^k P(z + 1/z) (P(w) = g_k + sum_j g_(k+j) D_j(w), D_j the Dickson polynomials z^j + z^-j) and P must have
+    k distinct real roots in (-2, 2) (Sturm)."""
+    d = trim(d)
+    g = pgcd(d, d[::-1])
+    if len(g) > 1 and not schur_cohn(pdivmod(d, g)[0])[0] or len(g) <= 1 and not schur_cohn(d)[0]:
+        return False, "a root outside the unit circle"
+    if len(g) <= 1:
+        return True, "every root inside"
+    if len(pgcd(g, pderiv(g))) > 1:
+        return False, "a repeated root on the unit circle (or a repeated pair r, 1/r)"
+    for r in (Fraction(1), Fraction(-1)):
+        if peval(g, r) == 0:
+            g = pdivmod(g, [-r, Fraction(1)])[0]
+    if len(g) == 1:
+        return True, "simple roots on the unit circle"
+    k = (len(g) - 1) // 2
+    if (len(g) - 1) % 2 or g != g[::-1]:
+        return False, "a pair of roots r, 1/r off the unit circle"
+    P, Dm, Dj = [g[k]], [Fraction(2)], [Fraction(0), Fraction(1)]  # D_0 = 2, D_1 = w
+    for j in range(1, k + 1):
+        P = padd(P, pscale(Dj, g[k + j]))
+        Dm, Dj = Dj, psub(pmul([Fraction(0), Fraction(1)], Dj), Dm)
+    seq = sturm_seq(P)
+    if variations(seq, Fraction(-2)) - variations(seq, Fraction(2)) != k:
+        return False, "a pair of roots r, 1/r off the unit circle"
+    return True, "simple roots on the unit circle"
+
+
+def _parse(text, T, params, var, leaf, marginal=False, integrator=False):
     toks = lex(text)
     pos = [0]
+    hidden = [[Fraction(1)]]  # the product of the factors cancelled with a root on or outside the stable region
+
+    def combine(op, a, b):
+        r = a + b if op == '+' else a - b if op == '-' else a * b if op == '*' else a / b
+        if leaf is rf_leaf:  # a pole written and cancelled stays a hidden mode, realised as written
+            removed = cancelled_pole(op, a, b, r)
+            if len(trim(removed)) > 1 and not (schur_cohn(removed) if var == 'z' else hurwitz(removed))[0]:
+                hidden[0] = pmul(hidden[0], removed)
+        return r
 
     def peek():
         return toks[pos[0]][0]
@@ -364,16 +435,14 @@ def _parse(text, T, params, var, leaf):
         r = term(depth)
         while peek() in '+-' and peek() != 'end':
             op = take()[0]
-            t = term(depth)
-            r = r + t if op == '+' else r - t
+            r = combine(op, r, term(depth))
         return r
 
     def term(depth):
         r = unary(depth)
         while peek() in ('*', '/'):
             op = take()[0]
-            f = unary(depth)
-            r = r * f if op == '*' else r / f
+            r = combine(op, r, unary(depth))
         return r
 
     def unary(depth):
@@ -442,6 +511,11 @@ def _parse(text, T, params, var, leaf):
     h = expr(0)
     if peek() != 'end':
         raise Malformed("model.H: unexpected %r" % toks[pos[0]][1])
+    allowed = (marginal and var == 'z' and marginally_stable(pmul(h.den, hidden[0]))[0] or
+               integrator and var == 's' and len(hidden[0]) == 2 and hidden[0][0] == 0)  # the factor s, once
+    if len(hidden[0]) > 1 and not allowed:
+        raise Malformed("model.H: an operation cancels a pole the expression writes on or outside the stable region "
+                        "(%s): realised as written it is a hidden mode" % ('|z| >= 1' if var == 'z' else 'Re s >= 0'))
     return h
 
 
@@ -512,7 +586,7 @@ def coefficients(model, key):
     return [exact_value(x, "model.%s[%d]" % (key, i)) for i, x in enumerate(a)]
 
 
-def model_h(model):
+def model_h(model, marginal=False):
     """(H, T): H(z) as written, with the sample period model.T > 0: model.H parsed with the
     parameters model.set, or its coefficients model.num and model.den (descending powers of z;
     `--num/--den`, a .mat's num and den), with no H and no set beside them."""
@@ -525,11 +599,16 @@ def model_h(model):
         num, den = coefficients(model, "num"), coefficients(model, "den")
         if den[0] == 0:
             raise Malformed("model.den: the leading coefficient is 0")
-        return RF(num[::-1], den[::-1]), T
+        H = RF(num[::-1], den[::-1])
+        lost = pdivmod(trim(den[::-1]), H.den)[0] if H.num else [Fraction(1)]
+        if len(trim(lost)) > 1 and not schur_cohn(lost)[0] and not (marginal and marginally_stable(den[::-1])[0]):
+            raise Malformed("model.num/den: they share a factor with a root on or outside the unit circle: realised "
+                            "as written, a hidden mode")
+        return H, T
     if not isinstance(model.get("H"), str):
         raise Malformed("model.H: missing or not a string (or num and den, its coefficients)")
     try:
-        return parse_h(model["H"], T, parameters(model)), T
+        return parse_h(model["H"], T, parameters(model), marginal=marginal), T
     except ZeroDivisionError:
         raise Malformed("model.H: division by zero")
 
@@ -1085,7 +1164,7 @@ def bound_max_cells(H0, H1, T, eta, nu, b, K, claim_range_, evidence, D):
 def bound_model(model, expanded=True):
     """H, T, eta, P, q of a bound model (tau = n + t_d/T = P/q); `expanded`: the limit of the form that expands
     the delay."""
-    H, T = model_h(model)
+    H, T = model_h(model, marginal=True)  # as `bound` reads it
     n = delay_of(model)
     td = exact(model, "frac_delay", "model") if "frac_delay" in model else Fraction(0)
     if td < 0:
@@ -1130,7 +1209,7 @@ def lower_bound(A, F, target, c0, q):
 
 
 # ---------------------------------------------------------------- bound-max
-def prove_affine(text, T, params, K):
+def prove_affine(text, T, params, K, marginal=False):
     """(H0, H1, D) with H = H0 + K H1 for every K, proven: the numerator of H - H0 - K H1 has degree
     <= D = max(n, d + 1) in K ((n, d) the Deg bounds of the expression) and vanishes at D + 1 values
     of K where the parse is defined (a rational function of K evaluated exactly there)."""
@@ -1140,7 +1219,7 @@ def prove_affine(text, T, params, K):
         raise Malformed("model.H: its degree in %s is bounded only by %d (above 64): not proven affine" % (K, D))
 
     def at(k):
-        return parse_h(text, T, dict(params, **{K: k}))
+        return parse_h(text, T, dict(params, **{K: k}), marginal=marginal)
     try:
         H0 = at(Fraction(0))
         H1 = at(Fraction(1)) - H0
@@ -1197,7 +1276,7 @@ def check_bound_max(c):
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
     try:
-        H0, H1, D = prove_affine(model["H"], T, parameters(model), K)
+        H0, H1, D = prove_affine(model["H"], T, parameters(model), K, marginal=True)  # as `bound --max` reads it
     except ZeroDivisionError:
         raise Malformed("model.H: division by zero")
     status, lo, hi, infinite, refuted = claim_range(claim, True)
@@ -2648,7 +2727,7 @@ def scene_loop_model(model, free=False):
     if "tf" in dev:
         if "m" in dev or "b" in dev:
             raise Malformed("model.scene: device: give either m, b or tf, not both")
-        out["plant"] = "(" + expand(scene_siso(dev["tf"], "device.tf"), "device.tf") + ")/s"
+        out["plant"] = ScenePlant("(" + expand(scene_siso(dev["tf"], "device.tf"), "device.tf") + ")/s")
     else:
         if "m" not in dev:
             raise Malformed("model.scene: device.m: missing (the device mass)")
@@ -5324,6 +5403,8 @@ def env_entries(model, T, params, max_dofs=None):
                 raise Malformed(where + ": not a string")
             try:
                 if e not in parsed:
+                    if leaf is not None:  # the poles it cancels, in s (the substitution's own z^k or (z + 1)^k aside)
+                        parse_h(e, T, params, var=domain, field=where)
                     parsed[e] = parse_h(e, T, params, var=domain, field=where, leaf=leaf)
                 out[-1].append(parsed[e])
             except ZeroDivisionError:

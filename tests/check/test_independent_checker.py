@@ -171,6 +171,62 @@ def same_rf(a, b):
     return hc.trim(hc.pmul(a.num, b.den)) == hc.trim(hc.pmul(b.num, a.den))
 
 
+class CancelledPoles(unittest.TestCase):
+    """A pole the expression writes and cancels on or outside the stable region is a hidden mode as written:
+    malformed, except for b* (marginal=True) while H as written is marginally stable. marginally_stable is
+    checked on products of factors whose roots are known by construction: z -/+ 1, z^2 - 2 c z + 1 (c rational
+    in (-1, 1): a pair on the circle), z - r, and (z - r)(z - 1/r) (a pair off the circle, |r| != 1)."""
+
+    def test_marginally_stable_by_construction(self):
+        import random
+        g = random.Random(80)
+        F = Fraction
+        kinds = {"one": ([F(-1), F(1)], "circle"), "minus_one": ([F(1), F(1)], "circle"),
+                 "pair": (None, "circle"), "inside": (None, "inside"), "outside": (None, "outside"),
+                 "reciprocal": (None, "outside")}
+        counts = {True: 0, False: 0}
+        for _ in range(400):
+            d, on_circle, bad = [F(1)], [], False
+            for _ in range(g.randint(1, 4)):
+                k = g.choice(list(kinds))
+                if k in ("one", "minus_one"):
+                    f, key = kinds[k][0], k
+                elif k == "pair":
+                    c = F(g.randint(-9, 9), 10)
+                    f, key = [F(1), -2 * c, F(1)], ("pair", c)
+                elif k == "inside":
+                    r = F(g.randint(-9, 9), 10)
+                    f, key = [-r, F(1)], None
+                elif k == "outside":
+                    r = F(g.choice([-1, 1]) * g.randint(11, 30), 10)
+                    f, key, bad = [-r, F(1)], None, True
+                else:
+                    r = F(g.choice([-1, 1]) * g.randint(1, 9), 10)
+                    f, key, bad = hc.pmul([-r, F(1)], [-1 / r, F(1)]), None, True
+                if key is not None:
+                    bad = bad or key in on_circle  # a repeated root on the circle
+                    on_circle.append(key)
+                d = hc.pmul(d, f)
+            got = hc.marginally_stable(d)[0]
+            self.assertEqual(got, not bad, d)
+            counts[got] += 1
+        self.assertGreaterEqual(min(counts.values()), 100, counts)
+
+    def test_parse_refuses_or_allows(self):
+        T = Fraction(1, 1000)
+        for text in ("10*(z-2)/(z-2)", "1/(z-1) - 1/(z-1)", "(z+1)/(z-1)*(z-1)", "(z^2-1)/(z+1)"):
+            with self.assertRaises(hc.Malformed, msg=text):
+                hc.parse_h(text, T, {})
+        with self.assertRaises(hc.Malformed):
+            hc.parse_h("s/(s*(s+1))", 0, {}, 's')
+        self.assertEqual(hc.parse_h("(z-1/2)/(z-1/2)", T, {}).den, [Fraction(1)])
+        self.assertEqual(hc.parse_h("B*(z-1)/(T*(z+1))", T, {"B": Fraction(0)}).num, [])  # a zero gain: no modes
+        self.assertEqual(len(hc.parse_h("(z-1)*(1 - z^-9)/(1 - z^-1)", T, {}, marginal=True).den), 9)
+        for text in ("(z-1)/(z-1)/(z-1)", "10*(z-2)/(z-2)"):
+            with self.assertRaises(hc.Malformed, msg=text):
+                hc.parse_h(text, T, {}, marginal=True)
+
+
 class IntervalArithmetic(unittest.TestCase):
     """hc.Iv (dyadic endpoints, rounded outward to 2^-bits) against Fractions: on random intervals of either
     sign, through zero, exact points, non-dyadic rationals and each of two precisions mixed, every result

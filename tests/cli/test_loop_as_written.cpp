@@ -167,3 +167,42 @@ TEST(LoopAsWritten, SizesAreBoundedBeforeAllocation) {
     }
   }
 }
+
+// A pole an expression writes and an operation cancels: the loop as written keeps it as a hidden
+// mode (10 (z - 2)/(z - 2) realised as written has the mode z = 2, and the loop around it is NOT
+// stable), so every input form refuses it by name (exit 2) instead of reducing it away. Before
+// this, `stability` printed "stable [certified]" for the expression, the scene's tf and --num/--den
+// (the certificates those producers wrote are the fixtures malformed_*_cancelled_pole.json).
+TEST(LoopAsWritten, APoleAnExpressionWritesAndCancelsIsRefusedByName) {
+  const std::string loop = "stability --plant \"1/(m*s^2+b*s)\" --set m=1 --set b=1 --T 1/1000 ";
+  const auto h = run_cli(loop + "--H \"10*(z-2)/(z-2)\"");
+  EXPECT_EQ(h.code, 2) << h.out;
+  EXPECT_NE(h.out.find("--H: expression '10*(z-2)/(z-2)', column 9: the operation cancels z - 2"), std::string::npos) << h.out;
+  const auto nd = run_cli("wedge --num \"10 -20\" --den \"1 -2\" --T 1/1000");
+  EXPECT_EQ(nd.code, 2) << nd.out;
+  EXPECT_NE(nd.out.find("--num/--den: num and den share the factor z - 2"), std::string::npos) << nd.out;
+  const auto b = run_cli("bound --num \"1 -2\" --den \"1 -2\" --T 1/1000");
+  EXPECT_EQ(b.code, 2) << b.out;
+  // b* sees H's frequency response, and (45) allows a simple pole on the circle: `bound` takes one
+  // cancelled there (the moving sum written in closed form), a loop does not
+  EXPECT_EQ(run_cli("bound --H \"(z-1)*(1 - z^-9)/(1 - z^-1)\" --T 1/1000 --allow-noncausal").code, 0);
+  EXPECT_EQ(run_cli(loop + "--H \"(z-1)*(1 - z^-9)/(1 - z^-1)/z^9\"").code, 2);
+  const auto plant = run_cli("stability --plant \"s/(s*(m*s+b))\" --set m=1 --set b=1 --T 1/1000 --H \"100\"");
+  EXPECT_EQ(plant.code, 2) << plant.out;
+  EXPECT_NE(plant.out.find("cancels s, a pole in Re s >= 0"), std::string::npos) << plant.out;
+  // inside the circle the hidden mode changes no verdict: reduced, and the loop decided
+  const auto in = run_cli(loop + "--H \"10*(z-1/2)/(z-1/2)\"");
+  EXPECT_EQ(in.code, 0) << in.out;
+  EXPECT_NE(in.out.find("stable"), std::string::npos) << in.out;
+  // a scene's tf: refused by name, with the block and the entry
+  std::ifstream base(scene("hidden_env.toml"));
+  std::string text((std::istreambuf_iterator<char>(base)), {});
+  text.replace(text.find("ss = {"), text.find('\n', text.find("ss = {")) - text.find("ss = {"), "tf = \"20000*(z-2)/(z-2)\"");
+  const std::string f = hapstab_test::temp_path("law", "cancelled.toml").string();
+  std::ofstream(f) << text;
+  for (const std::string cmd : {"multidof analyze", "stability"}) {
+    const auto r = run_cli(cmd + " --scene " + f);
+    EXPECT_EQ(r.code, 2) << cmd << "\n" << r.out;
+    EXPECT_NE(r.out.find("cancels z - 2"), std::string::npos) << cmd << "\n" << r.out;
+  }
+}

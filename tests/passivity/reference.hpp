@@ -27,6 +27,7 @@ inline passivity::BoundProblem make(const std::string& e, const std::string& T, 
   o.variable = 'z';
   o.T = parse_rational(T);
   o.parameters = std::move(par);
+  o.hidden_poles = HiddenPoles::allow_marginal;  // as `bound` reads H
   passivity::BoundProblem p;
   p.H = parse_tf(e, o).H;
   p.T = o.T;

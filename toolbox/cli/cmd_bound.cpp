@@ -47,7 +47,8 @@ struct BoundOpts {
 };
 
 // Causality is the library's check: H z^-n may be causal where H is not (bound.hpp).
-const cli::TfRules tf_rules{/*period_required=*/true, /*causal=*/false, /*with_delay=*/true};
+const cli::TfRules tf_rules{/*period_required=*/true, /*causal=*/false, /*with_delay=*/true,
+                            /*hidden_poles=*/HiddenPoles::allow_marginal};  // b* sees the frequency response
 
 void add_options(CLI::App& app, BoundOpts& o, bool batch_line) {
   cli::add_tf_options(app, o.tf, tf_rules, "H(z) as an exact expression, e.g. \"K + B*(z-1)/(T*z)\"");

@@ -8,6 +8,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::cli {
 
@@ -64,8 +65,23 @@ std::vector<rational> parse_coefficients(const std::string& text, const std::str
   return c;
 }
 
+namespace {
+// InputError when H in lowest terms lost a pole of `written` (its denominator as written) on or
+// outside the stable region: realised as written, a hidden mode (lti/tf.hpp).
+void refuse_unstable_cancellation(const TransferFunction& H, const Polynomial<rational>& written, const std::string& name,
+                                  const std::string& how, HiddenPoles hidden_poles) {
+  const Polynomial<rational> lost = unstable_cancelled_factor(written, H.den(), H.domain);
+  if (!lost.is_zero() && (hidden_poles == HiddenPoles::refuse || !marginally_stable(written)))
+    throw InputError(name + ": " + how + " the factor " + to_string(lost, H.variable()) + ", a pole " +
+                     (H.is_discrete() ? "on or outside the unit circle" : "in Re s >= 0") +
+                     " that H in lowest terms loses: realised as written it stays a hidden mode, and hapstab does not "
+                     "reduce it away (give H without it if the reduced model is meant)");
+}
+}  // namespace
+
 TransferFunction tf_from_coefficients(const std::vector<rational>& num, const std::vector<rational>& den,
-                                      const rational& T, const std::string& num_name, const std::string& den_name) {
+                                      const rational& T, const std::string& num_name, const std::string& den_name,
+                                      HiddenPoles hidden_poles) {
   const auto too_long = [](const std::vector<rational>& v) { return v.size() > static_cast<std::size_t>(limits::model_degree) + 1; };
   if (too_long(num) || too_long(den))
     throw InputError((too_long(num) ? num_name : den_name) + ": more than " + std::to_string(limits::model_degree + 1) +
@@ -75,14 +91,18 @@ TransferFunction tf_from_coefficients(const std::vector<rational>& num, const st
     throw InputError(den_name + ": the leading coefficient (of z^" + std::to_string(den.size() - 1) +
                      ") is 0; drop it (descending powers of z)");
   // descending -> ascending; the numerator's leading zeros (tfdata pads it) vanish in trim()
-  return tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())),
-            Polynomial<rational>(std::vector<rational>(den.rbegin(), den.rend())), T);
+  Polynomial<rational> written(std::vector<rational>(den.rbegin(), den.rend()));
+  TransferFunction H = tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())), written, T);
+  if (!H.num().is_zero())  // H = 0 (a zero gain) has no modes
+    refuse_unstable_cancellation(H, written, num_name + "/" + den_name, "num and den share", hidden_poles);
+  return H;
 }
 
 namespace {
 
-TransferFunction parse_expression(const TfOptions& o, const rational& T) {
+TransferFunction parse_expression(const TfOptions& o, const rational& T, HiddenPoles hidden_poles) {
   ParseOptions po;
+  po.hidden_poles = hidden_poles;
   po.variable = 'z';
   po.T = T;
   po.parameters = parse_sets(o.sets);
@@ -97,9 +117,9 @@ TransferFunction parse_expression(const TfOptions& o, const rational& T) {
 // exact characteristic polynomial of a matrix of 53-bit entries grows fast with its size).
 constexpr int max_ss2tf_states = 50;
 
-TransferFunction from_mat(const TfOptions& o, const rational& T) {
+TransferFunction from_mat(const TfOptions& o, const rational& T, HiddenPoles hidden_poles) {
   const MatModel m = read_mat_model(o.mat, "--mat");
-  if (m.tf) return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den");
+  if (m.tf) return tf_from_coefficients(m.tf->first, m.tf->second, T, m.where + " num", m.where + " den", hidden_poles);
   StateSpace<double> s = *m.ss;
   s.T = T;
   s.validate(m.where);
@@ -114,7 +134,10 @@ TransferFunction from_mat(const TfOptions& o, const rational& T) {
       for (Eigen::Index j = 0; j < M.cols(); ++j) Q(i, j) = exact_rational(M(i, j));
     return Q;
   };
-  return ss2tf(StateSpace<rational>{exact(s.A), exact(s.B), exact(s.C), exact(s.D), T})(0, 0);
+  const StateSpace<rational> q{exact(s.A), exact(s.B), exact(s.C), exact(s.D), T};
+  TransferFunction H = ss2tf(q)(0, 0);
+  refuse_unstable_cancellation(H, charpoly(q.A), m.where, "C (zI - A)^-1 B + D cancels", hidden_poles);
+  return H;
 }
 
 }  // namespace
@@ -130,10 +153,10 @@ TransferFunction parse_tf_options(const TfOptions& o, const TfRules& rules) {
   const rational T = parse_period(o, rules);
   if (rules.with_delay && o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
   const TransferFunction H =
-      expr ? parse_expression(o, T)
-           : mat ? from_mat(o, T)
+      expr ? parse_expression(o, T, rules.hidden_poles)
+           : mat ? from_mat(o, T, rules.hidden_poles)
                  : tf_from_coefficients(parse_coefficients(o.num, "--num"), parse_coefficients(o.den, "--den"), T, "--num",
-                                        "--den");
+                                        "--den", rules.hidden_poles);
   const std::string name = expr ? "--H" : mat ? "--mat" : "--num/--den";
   if (!H.is_discrete()) throw InputError(name + ": expected a transfer function in z");
   if (H.den().is_zero()) throw InputError(name + " has a zero denominator");
@@ -152,6 +175,7 @@ AffineSplit parse_tf_affine(const TfOptions& o, const TfRules& rules, const std:
   po.variable = 'z';
   po.T = T;
   po.parameters = parse_sets(o.sets);
+  po.hidden_poles = rules.hidden_poles;
   AffineSplit s;
   try {
     s = split_affine(o.H, po, name);

@@ -28,6 +28,10 @@ struct TfRules {
   bool period_required = true;  ///< false: T = 1 when --T is absent (H(z) alone does not depend on T)
   bool causal = true;           ///< deg num <= deg den required
   bool with_delay = false;      ///< the command has --delay
+  /// A pole H as written has and its lowest terms lose, on or outside the circle (lti/parse.hpp):
+  /// refused, or (`bound`: b* sees the frequency response only) allowed while H as written is
+  /// marginally stable.
+  HiddenPoles hidden_poles = HiddenPoles::refuse;
 };
 
 /// Adds --H, --num, --den, --mat, --T, --set (and --delay) to `app`; `h_help` describes H for this command.
@@ -53,8 +57,11 @@ std::vector<rational> parse_coefficients(const std::string& text, const std::str
 
 /// H(z) = num(z)/den(z) from coefficients in descending powers of z (leading zeros of the
 /// numerator are dropped, as MATLAB's tfdata pads it); the leading denominator coefficient must
-/// not be 0. `num_name`/`den_name` name the inputs in errors ("--num", "plant.mat: den").
+/// not be 0. `num_name`/`den_name` name the inputs in errors ("--num", "plant.mat: den"). A
+/// factor num and den share whose roots are not all inside the unit circle is refused (InputError):
+/// realised as written it is a hidden mode (lti/tf.hpp's unstable_cancelled_factor).
 TransferFunction tf_from_coefficients(const std::vector<rational>& num, const std::vector<rational>& den,
-                                      const rational& T, const std::string& num_name, const std::string& den_name);
+                                      const rational& T, const std::string& num_name, const std::string& den_name,
+                                      HiddenPoles hidden_poles = HiddenPoles::refuse);
 
 }  // namespace hapstab::cli

@@ -74,6 +74,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   po.variable = 'z';
   po.T = dm.T;
   po.parameters = detail::model_parameters(model);
+  po.hidden_poles = HiddenPoles::allow_marginal;  // as `bound --max` reads it
   if (po.parameters.count(K)) throw InputError("model.set: gives the parameter model.name = " + K + " a value");
   const detail::Affine h = detail::prove_affine(text, po, K);
   if (!cells)

@@ -34,6 +34,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::check {
 
@@ -273,14 +274,19 @@ std::vector<rational> coefficients_field(const nlohmann::json& model, const char
 
 }  // namespace
 
-TransferFunction model_tf(const nlohmann::json& model, const rational& T) {
+TransferFunction model_tf(const nlohmann::json& model, const rational& T, HiddenPoles hidden_poles) {
   if (model.contains("num") || model.contains("den")) {  // `--num/--den` (or a .mat's num, den): numbers, no expression
     if (model.contains("H")) throw InputError("model: H and num/den both given (one model, written one way)");
     if (model.contains("set")) throw InputError("model.set: num/den hold numbers, not parameters");
     const std::vector<rational> num = coefficients_field(model, "num"), den = coefficients_field(model, "den");
     if (den.front() == 0) throw InputError("model.den: the leading coefficient is 0");
-    return tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())),
-              Polynomial<rational>(std::vector<rational>(den.rbegin(), den.rend())), T);
+    const Polynomial<rational> written(std::vector<rational>(den.rbegin(), den.rend()));
+    TransferFunction H = tf(Polynomial<rational>(std::vector<rational>(num.rbegin(), num.rend())), written, T);
+    if (!H.num().is_zero() && !unstable_cancelled_factor(written, H.den(), Domain::z).is_zero() &&
+        (hidden_poles == HiddenPoles::refuse || !marginally_stable(written)))
+      throw InputError("model.num/den: they share a factor with a root on or outside the unit circle: realised as "
+                       "written, a hidden mode");
+    return H;
   }
   if (!model.contains("H") || !model.at("H").is_string())
     throw InputError("model.H: missing or not a string (the expression of H(z); or num and den, its coefficients)");
@@ -288,6 +294,7 @@ TransferFunction model_tf(const nlohmann::json& model, const rational& T) {
   po.variable = 'z';
   po.T = T;
   po.parameters = model_parameters(model);
+  po.hidden_poles = hidden_poles;
   TransferFunction H;
   try {
     H = parse_tf(model.at("H").get<std::string>(), po);

@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/tf.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
@@ -110,8 +111,10 @@ std::map<std::string, rational> model_parameters(const nlohmann::json& model);
 /// The model's H(z) as written, one of two ways: model.H, an expression parsed in z with sample
 /// period T and model.set's exact parameters ({NAME: "p/q"}); or model.num and model.den, its
 /// coefficients in descending powers of z ("p/q" each; `--num/--den`, a .mat's num and den), with
-/// no H and no set beside them. InputError naming the field (also when H is not in z).
-TransferFunction model_tf(const nlohmann::json& model, const rational& T);
+/// no H and no set beside them. InputError naming the field (also when H is not in z, and when H
+/// as written cancels a pole on or outside the circle: refused, or for `bound` (allow_marginal)
+/// refused unless H as written is marginally stable, as the producer does; lti/parse.hpp).
+TransferFunction model_tf(const nlohmann::json& model, const rational& T, HiddenPoles hidden_poles = HiddenPoles::refuse);
 }  // namespace detail
 
 }  // namespace hapstab::check

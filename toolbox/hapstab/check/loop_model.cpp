@@ -14,7 +14,7 @@ using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
 
 RF parse_model_field(const nlohmann::json& model, const char* key, char variable, const rational& T,
-                     const std::map<std::string, rational>& params) {
+                     const std::map<std::string, rational>& params, HiddenPoles hidden_poles) {
   const std::string where = std::string("model.") + key;
   if (!model.contains(key)) throw InputError(where + ": missing");
   if (!model.at(key).is_string()) throw InputError(where + ": not a string (an expression)");
@@ -22,6 +22,7 @@ RF parse_model_field(const nlohmann::json& model, const char* key, char variable
   po.variable = variable;
   po.T = T;
   po.parameters = params;
+  po.hidden_poles = hidden_poles;
   try {
     const TransferFunction t = parse_tf(model.at(key).get<std::string>(), po);
     if (t.is_discrete() != (variable == 'z'))
@@ -76,14 +77,15 @@ LoopDevice spring_device(LoopDevice d, const P& N, const P& den) {
 
 }  // namespace
 
-LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole) {
+LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole, bool scene_device) {
   LoopDevice d;
   if (!model.contains("plant")) throw InputError("model.plant: missing");
   const PeriodDelay pd = read_period_delay(model);
   d.T = pd.T;
   d.n = pd.n;
   d.params = model_parameters(model);
-  RF dev = parse_model_field(model, "plant", 's', d.T, d.params);
+  RF dev = parse_model_field(model, "plant", 's', d.T, d.params,
+                            scene_device ? HiddenPoles::allow_integrator : HiddenPoles::refuse);
   if (dev.is_zero()) throw InputError("model.plant: zero (the device does not move)");
   if (model.contains("operator")) {
     const RF s(P{rational(0), rational(1)});

@@ -43,6 +43,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hapstab/lti/parse.hpp"
+
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/rational_function.hpp"
 
@@ -64,7 +66,9 @@ struct LoopDevice {
 /// model.T, model.delay, model.set, model.plant and model.operator (the device, above); InputError
 /// naming the field that is missing, malformed or beyond the checkers (a pole off s = 0, unless
 /// `one_pole` allows one simple rational pole p != 0 or two poles off s = 0, a spring).
-LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole = false);
+/// `scene_device`: model.plant is scene_loop_model's "(G)/s" of a device given by its velocity tf G,
+/// whose cancelled s (the position offset, a conserved quantity) is the checker's own.
+LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole = false, bool scene_device = false);
 
 /// c(z; E) = c0 + E c1 of the loop with one pole off s = 0 (the header), H = A/L.
 std::pair<Polynomial<rational>, Polynomial<rational>> loop_family_in_E(const LoopDevice& d, const Polynomial<rational>& A,
@@ -74,9 +78,11 @@ std::pair<Polynomial<rational>, Polynomial<rational>> loop_family_in_E(const Loo
 std::pair<rational, rational> exp_enclosure(const rational& x, long bits);
 
 /// model[key], an expression in `variable` ('s' or 'z') with sample period T and the parameters;
-/// InputError naming model.KEY.
+/// InputError naming model.KEY (also for a pole it cancels on or outside the stable region, but as
+/// `hidden_poles` allows: lti/parse.hpp).
 RationalFunction<rational> parse_model_field(const nlohmann::json& model, const char* key, char variable, const rational& T,
-                                             const std::map<std::string, rational>& params);
+                                             const std::map<std::string, rational>& params,
+                                             HiddenPoles hidden_poles = HiddenPoles::refuse);
 
 /// c(z) = z^n L(z) (z - 1)^k + A(z) Nd(z) of the loop with the wall H = A/L.
 Polynomial<rational> loop_polynomial(const LoopDevice& d, const Polynomial<rational>& A, const Polynomial<rational>& L);

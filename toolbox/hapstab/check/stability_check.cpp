@@ -36,9 +36,9 @@ struct LoopCharpoly {
 
 constexpr long max_winding_delay = 100000;  // the model's limit (limits.hpp): about 4 (n + 16) arcs
 
-LoopCharpoly characteristic(const nlohmann::json& model, bool argument_principle) {
+LoopCharpoly characteristic(const nlohmann::json& model, bool argument_principle, bool scene_device) {
   detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay"}, "model");
-  const detail::LoopDevice d = detail::read_loop_device(model, true);
+  const detail::LoopDevice d = detail::read_loop_device(model, true, scene_device);
   const RF H = detail::parse_model_field(model, "H", 'z', d.T, d.params);
   const int extra = d.pole ? 1 : d.spring ? 2 : 0;
   if (H.num().degree() > H.den().degree() + d.n) throw InputError("model.H: z^-n H(z) is not causal");
@@ -374,7 +374,7 @@ Verdict check_stability(const nlohmann::json& cert) {
     throw InputError("claim.status: missing or neither \"exact\" nor \"certified\"");
   if (!claim.contains("stable") || !claim.at("stable").is_boolean()) throw InputError("claim.stable: missing or not true/false");
   const bool stable = claim.at("stable").get<bool>();
-  const LoopCharpoly m = characteristic(model, winding);
+  const LoopCharpoly m = characteristic(model, winding, written.contains("scene"));
   SchurCohn sc;
   std::string what = "the characteristic polynomial (degree " + std::to_string(m.c.degree()) + ", " + m.text + ")";  // not for a spring
   if (m.winding) {  // every pole at s = 0, a long delay: z^n never expanded

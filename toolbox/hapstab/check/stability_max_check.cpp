@@ -28,13 +28,13 @@ struct Family {
   P c0, c1;  // c(z; K) = c0 + K c1, deg c1 < deg c0
 };
 
-Family read_family(const nlohmann::json& model) {
+Family read_family(const nlohmann::json& model, bool scene_device) {
   detail::only_fields(model, {"plant", "H", "operator", "set", "name", "T", "delay"}, "model");
   if (!model.contains("name") || !model.at("name").is_string() || model.at("name").get<std::string>().empty())
     throw InputError("model.name: missing or not a string (the parameter maximised)");
   Family f;
   f.K = model.at("name").get<std::string>();
-  f.device = detail::read_loop_device(model);  // the device may not name K: it has no value
+  f.device = detail::read_loop_device(model, false, scene_device);  // the device may not name K: it has no value
   if (f.device.params.count(f.K)) throw InputError("model.set: gives the parameter model.name = " + f.K + " a value");
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
   ParseOptions po;
@@ -91,7 +91,7 @@ Verdict check_stability_max(const nlohmann::json& cert) {
   const auto [written, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(claim, {"quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
   detail::only_fields(evidence, {"stable_at", "unstable_at"}, "evidence");
-  const Family f = read_family(detail::scene_loop_model(written, true));  // a scene: its one-DOF loop, read here
+  const Family f = read_family(detail::scene_loop_model(written, true), written.contains("scene"));  // a scene: its one-DOF loop, read here
   const std::string& K = f.K;
   const detail::ClaimRange range = detail::claim_range(claim, true);
   if (range.refuted) return {false, *range.refuted};

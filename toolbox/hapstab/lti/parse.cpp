@@ -12,6 +12,7 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/limits.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab {
 namespace {
@@ -99,6 +100,14 @@ ParseOptions flattened(std::string_view text, const ParseOptions& options) {
 
 // A value while parsing: an exact rational function, or (ParsedExpression) the result of tape
 // node `node` when it depends on a parameter whose value comes later.
+// The factors of the denominators as written that the parse's operations cancelled and that have
+// a root on or outside the stable region (their product; 1 when none), and the message naming the
+// first operation that cancelled one.
+struct Hidden {
+  P factor{rational(1)};
+  std::string what;
+};
+
 struct Val {
   RF rf{P()};
   int node = -1;
@@ -122,6 +131,7 @@ struct ParsedExpression::Tape {
   std::vector<Node> nodes;
   Val result;
   long known_bits = 0;  ///< the bits the known part spent (the parser's expansion limit counts them)
+  Hidden known_hidden;  ///< the poles the known part cancelled
 };
 
 namespace {
@@ -133,6 +143,8 @@ class Parser {
   }
 
   RF parse() { return parse_val().rf; }
+  /// The poles on or outside the stable region that parse()'s operations cancelled (finish()).
+  const Hidden& hidden() const { return hidden_; }
 
   /// The parse, with the parameters named in `varying` left open: their uses and every operation
   /// on them go to `tape` (the memo is not used: its groups hold values).
@@ -141,26 +153,28 @@ class Parser {
     tape_ = &tape;
     tape.result = parse_val();
     tape.known_bits = spent_bits_;
+    tape.known_hidden = hidden_;
   }
 
   /// The tape's result at `values` (each varying parameter's), with the parser's checks; spent
   /// bits start at the known part's. InputError as the parser raises it.
-  RF replay(const ParsedExpression::Tape& tape, const std::map<std::string, rational>& values) const {
+  RF replay(const ParsedExpression::Tape& tape, const std::map<std::string, rational>& values, Hidden& hidden) const {
     using Op = ParsedExpression::Tape::Op;
     std::vector<RF> v(tape.nodes.size(), RF(P()));
     long spent = tape.known_bits;
+    hidden = tape.known_hidden;
     auto get = [&](const Val& x) -> const RF& { return x.known() ? x.rf : v[size_t(x.node)]; };
     for (size_t k = 0; k < tape.nodes.size(); ++k) {
       const auto& n = tape.nodes[k];
       const Token& at = tokens_[n.token];
       switch (n.op) {
         case Op::name: v[k] = RF(P(values.at(n.name))); break;
-        case Op::add: v[k] = checked(get(n.a) + get(n.b), at, spent); break;
-        case Op::sub: v[k] = checked(get(n.a) - get(n.b), at, spent); break;
-        case Op::mul: v[k] = checked(get(n.a) * get(n.b), at, spent); break;
+        case Op::add:
+        case Op::sub:
+        case Op::mul: v[k] = combined(n.op, get(n.a), get(n.b), at, spent, hidden); break;
         case Op::div:
           if (get(n.b).num().is_zero()) fail(at, "division by zero");
-          v[k] = checked(get(n.a) / get(n.b), at, spent);
+          v[k] = combined(n.op, get(n.a), get(n.b), at, spent, hidden);
           break;
         case Op::neg: v[k] = -get(n.a); break;
         case Op::pow: v[k] = checked_power(get(n.a), n.exponent, at, spent); break;
@@ -181,6 +195,7 @@ class Parser {
   int deepest_ = 0;  // the deepest depth_ reached (a group's depth, for the memo)
   long spent_bits_ = 0;
   bool used_T_ = false;
+  Hidden hidden_;
   const std::set<std::string>* varying_ = nullptr;  // compile(): the parameters left open
   ParsedExpression::Tape* tape_ = nullptr;
 
@@ -208,11 +223,12 @@ class Parser {
     return v;
   }
 
-  [[noreturn]] void fail(const Token& at, const std::string& what) const {
+  std::string message(const Token& at, const std::string& what) const {
     std::ostringstream os;
     os << "expression '" << excerpt(src_, at.column) << "', column " << at.column << ": " << what;
-    throw InputError(os.str());
+    return os.str();
   }
+  [[noreturn]] void fail(const Token& at, const std::string& what) const { throw InputError(message(at, what)); }
 
   // Size of every intermediate result (numeric/limits.hpp): its degree, its bits (all the
   // coefficients of numerator and denominator), and the bits the expression has produced so far.
@@ -262,6 +278,39 @@ class Parser {
     return r;
   }
   RF checked(RF r, const Token& at) { return checked(std::move(r), at, spent_bits_); }
+
+  // a + b, a - b, a b or a / b (b != 0), checked for size; a pole the operation cancels goes to
+  // `hidden`. A pole the expression writes and the operation cancels -- (z - 2)/(z - 2),
+  // 1/(z - 1) - 1/(z - 1), (z + 1)/(z - 1) * (z - 1) -- stays, realised as written, a hidden mode of
+  // H: the factor lost is the written denominator (a.den b.den for a product, a.den b.num for a
+  // quotient, lcm(a.den, b.den) for a sum: a pole both terms write is one mode) over the result's.
+  // Inside the stable region (|z| < 1, Re s < 0) it changes no verdict and is dropped; the rest is
+  // kept, with the message that names the first such operation (finish() decides). A product or
+  // quotient that is 0 has no modes: a gain B = 0 removes its branch.
+  RF combined(ParsedExpression::Tape::Op op, const RF& a, const RF& b, const Token& at, long& spent, Hidden& hidden) const {
+    using Op = ParsedExpression::Tape::Op;
+    RF r = checked(op == Op::add ? a + b : op == Op::sub ? a - b : op == Op::mul ? a * b : a / b, at, spent);
+    const bool sum = op == Op::add || op == Op::sub;
+    if (!sum && r.is_zero()) return r;
+    const P& right = op == Op::div ? b.num() : b.den();
+    if (r.den().degree() == a.den().degree() + right.degree()) return r;  // the result's denominator is the written one
+    P natural;
+    if (sum) {
+      natural = a.den() == b.den() ? a.den() : divmod(a.den() * b.den(), gcd(a.den(), b.den())).first;
+      if (r.den().degree() == natural.degree()) return r;
+    } else {
+      natural = a.den() * right;
+    }
+    const P lost = unstable_cancelled_factor(natural, r.den(), var_ == 'z' ? Domain::z : Domain::s);
+    if (lost.is_zero()) return r;
+    if (hidden.factor.degree() == 0)
+      hidden.what = message(at, "the operation cancels " + to_string(lost, std::string(1, var_)) + ", a pole " +
+                                    (var_ == 'z' ? "on or outside the unit circle" : "in Re s >= 0") +
+                                    " that the expression writes: realised as written it stays in H as a hidden mode, "
+                                    "and hapstab does not reduce it away (write H without it if the reduced model is meant)");
+    hidden.factor = hidden.factor * lost;
+    return r;
+  }
 
   // base^n after the checks of its size, known before it is computed (refused before it fills memory)
   RF checked_power(const RF& base, int n, const Token& caret, long& spent) const {
@@ -376,8 +425,9 @@ class Parser {
       const Token& op = next();
       Val t = term();
       const bool plus = op.kind == Tok::plus;
-      if (r.known() && t.known()) r = known(checked(plus ? r.rf + t.rf : r.rf - t.rf, op));
-      else r = node(plus ? ParsedExpression::Tape::Op::add : ParsedExpression::Tape::Op::sub, std::move(r), std::move(t), op);
+      const auto o = plus ? ParsedExpression::Tape::Op::add : ParsedExpression::Tape::Op::sub;
+      if (r.known() && t.known()) r = known(combined(o, r.rf, t.rf, op, spent_bits_, hidden_));
+      else r = node(o, std::move(r), std::move(t), op);
     }
     return r;
   }
@@ -389,11 +439,11 @@ class Parser {
       const Token& op = next();
       Val f = unary();
       if (op.kind == Tok::star) {
-        if (r.known() && f.known()) r = known(checked(r.rf * f.rf, op));
+        if (r.known() && f.known()) r = known(combined(ParsedExpression::Tape::Op::mul, r.rf, f.rf, op, spent_bits_, hidden_));
         else r = node(ParsedExpression::Tape::Op::mul, std::move(r), std::move(f), op);
       } else {
         if (f.known() && f.rf.num().is_zero()) fail(op, "division by zero");
-        if (r.known() && f.known()) r = known(checked(r.rf / f.rf, op));
+        if (r.known() && f.known()) r = known(combined(ParsedExpression::Tape::Op::div, r.rf, f.rf, op, spent_bits_, hidden_));
         else r = node(ParsedExpression::Tape::Op::div, std::move(r), std::move(f), op);
       }
     }
@@ -489,7 +539,7 @@ class Parser {
           }
         }
         const long bits0 = spent_bits_;
-        const int depth0 = depth_, deepest0 = deepest_;
+        const int depth0 = depth_, deepest0 = deepest_, hidden0 = hidden_.factor.degree();
         deepest_ = depth_;
         if (++depth_ > limits::nesting_depth)
           fail(t, "parentheses nested deeper than " + std::to_string(limits::nesting_depth) + " levels, the limit");
@@ -499,7 +549,9 @@ class Parser {
         if (peek().kind != Tok::rparen)
           fail(peek(), "expected ')' to close '(' at column " + std::to_string(t.column) + ", found " + describe(peek()));
         next();
-        if (memoise) remember(std::move(key), open, close, r.rf, spent_bits_ - bits0, deepest_ - depth0);
+        // a group that cancels a pole is parsed each time (its message names its own column)
+        if (memoise && hidden_.factor.degree() == hidden0)
+          remember(std::move(key), open, close, r.rf, spent_bits_ - bits0, deepest_ - depth0);
         deepest_ = std::max(deepest_, deepest0);
         return r;
       }
@@ -580,8 +632,16 @@ char check_input(std::string_view text, const ParseOptions& options) {
   return var;
 }
 
-// parse_tf's end: the model's degree limit and the domain.
-TransferFunction finish(RF H, std::string_view text, const ParseOptions& options, char var) {
+// parse_tf's end: the poles the operations cancelled (ParseOptions::hidden_poles), the model's
+// degree limit and the domain.
+TransferFunction finish(RF H, const Hidden& hidden, std::string_view text, const ParseOptions& options, char var) {
+  if (hidden.factor.degree() > 0) {
+    const bool allowed = options.hidden_poles == HiddenPoles::allow_marginal
+                             ? var == 'z' && marginally_stable(H.den() * hidden.factor)
+                             : options.hidden_poles == HiddenPoles::allow_integrator && var == 's' &&
+                                   hidden.factor == P::monomial(1, rational(1));
+    if (!allowed) throw InputError(hidden.what);
+  }
   const int degree = std::max(H.num().degree(), H.den().degree());
   if (degree > limits::model_degree)
     throw InputError("expression '" + excerpt(text, 1) + "' has degree " + std::to_string(degree) +
@@ -605,7 +665,8 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options) {
   if (shared_needs_flattening(options)) return parse_tf(text, flattened(text, options));
   const char var = check_input(text, options);
   Parser p(text, options, var);
-  return finish(p.parse(), text, options, var);
+  RF H = p.parse();
+  return finish(std::move(H), p.hidden(), text, options, var);
 }
 
 // ---- ParsedExpression ---------------------------------------------------------------------------
@@ -670,7 +731,9 @@ TransferFunction ParsedExpression::at(const std::map<std::string, rational>& val
   for (const auto& name : s.varying)
     if (!values.count(name)) throw std::logic_error("ParsedExpression::at: no value for '" + name + "'");
   try {
-    return finish(s.parser->replay(s.tape, values), s.text, s.options, s.var);
+    Hidden hidden;
+    RF H = s.parser->replay(s.tape, values, hidden);
+    return finish(std::move(H), hidden, s.text, s.options, s.var);
   } catch (const InputError&) {
     // the parser's own outcome at these values, error and message as parse_tf gives them
     ParseOptions o = s.options;
@@ -708,8 +771,10 @@ AffineSplit split_affine(std::string_view text, const ParseOptions& options, con
       if (at(k).H != s.H0.H + RationalFunction<rational>(k) * H1)
         throw InputError("the expression must be affine in " + name + " (H = H0 + " + name + " H1, e.g. a stiffness or a damping)");
     } catch (const InputError& e) {
-      if (std::string(e.what()).find("division by zero") == std::string::npos || tried > D + dd + 2) throw;
-      continue;  // a pole of the expression at this k: another value
+      const std::string what = e.what();
+      const bool pole_at_k = what.find("division by zero") != std::string::npos || what.find("the operation cancels") != std::string::npos;
+      if (!pole_at_k || tried > D + dd + 2) throw;
+      continue;  // a pole of the expression at this k (or one it cancels there): another value
     }
     ++proven;
   }

@@ -50,6 +50,18 @@ class ParseMemo {
   size_t used_bytes_ = 0;
 };
 
+/// What parse_tf does with a pole the expression writes and an operation cancels, on or outside
+/// the stable region ((z - 2)/(z - 2); realised as written, a hidden mode of H).
+enum class HiddenPoles {
+  refuse,           ///< InputError naming the operation: a loop around H as written is NOT stable
+  allow_marginal,   ///< (z only) kept out of H while H as written -- its denominator times the
+                    ///< cancelled factors -- is marginally stable (roots in |z| <= 1, those on the
+                    ///< circle simple): b* sees H's frequency response only, and (45) allows such H
+  allow_integrator, ///< (s only) the factor s cancelled once and nothing else: a checker's plant
+                    ///< "(G)/s" from a scene device's velocity G(s), whose position offset is a
+                    ///< conserved quantity (hapstab's scene loop reads the device so)
+};
+
 struct ParseOptions {
   /// 'z', 's', or 0 to infer from the expression (z if it names z, s if it names s,
   /// z when it names neither and T is given, else s).
@@ -68,6 +80,7 @@ struct ParseOptions {
   /// How the caller takes parameters and the sample period, for the messages of an unknown name
   /// and of a missing T: the command line's words by default; the Python module says
   /// "pass params={'K': ...}" ({} stands for the unknown name) and "T=...".
+  HiddenPoles hidden_poles = HiddenPoles::refuse;
   std::string parameter_hint = "give parameters with --set NAME=VALUE";
   std::string period_hint = "--T";
 };
@@ -76,8 +89,12 @@ struct ParseOptions {
 /// "K*(1e-3 + B_2)" -> {B_2, K}. For resolving parameters in dependency order.
 std::set<std::string> names_in(std::string_view text);
 
-/// Parses `text` into an exact transfer function. Throws InputError on malformed input, an
-/// unknown name, division by zero, or a missing/invalid T.
+/// Parses `text` into an exact transfer function, in lowest terms. Throws InputError on malformed
+/// input, an unknown name, division by zero, a missing/invalid T, or an operation that cancels a
+/// pole the expression writes on or outside the stable region (|z| >= 1, Re s >= 0; see
+/// HiddenPoles): realised as written, (z - 2)/(z - 2) keeps the mode z = 2, and hapstab does not
+/// reduce it away silently. Cancelled poles inside the region (hidden stable modes, which change
+/// no verdict) are dropped.
 TransferFunction parse_tf(std::string_view text, const ParseOptions& options = {});
 
 /// `text` as H = H0 + K H1 in its parameter `name` (a gain to maximise: `stability --max`, `bound
@@ -85,7 +102,7 @@ TransferFunction parse_tf(std::string_view text, const ParseOptions& options = {
 /// of degree at most D = max(deg_K P, deg_K Q + 1), bounded from the parse (degree_bound); it is
 /// identically 0 when it vanishes at D + 1 distinct K: parsed at K = 0 and 1 (giving H0, H1) and
 /// checked equal to H0 + k H1 at D - 1 more values (values where the expression divides by zero
-/// are skipped; they are at most deg_K Q). The value of `name` in options.parameters is ignored.
+/// or cancels a pole on or outside the circle are skipped: there are finitely many). The value of `name` in options.parameters is ignored.
 /// InputError when `text` does not depend on `name`, is not affine in it, or its degree bound in
 /// `name` exceeds 64 (refused by name: not proven affine).
 struct AffineSplit {

@@ -2,6 +2,7 @@
 
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab {
 
@@ -13,6 +14,15 @@ TransferFunction tf(Polynomial<rational> num, Polynomial<rational> den, const ra
   G.domain = T > 0 ? Domain::z : Domain::s;
   G.T = T;
   return G;
+}
+
+Polynomial<rational> unstable_cancelled_factor(const Polynomial<rational>& written, const Polynomial<rational>& reduced,
+                                               Domain domain) {
+  if (reduced.degree() >= written.degree()) return {};
+  auto [lost, rest] = divmod(written, reduced);
+  if (!rest.is_zero()) throw std::logic_error("unstable_cancelled_factor: the reduced denominator does not divide the written one");
+  const bool stable = domain == Domain::z ? schur_stable(lost) : hurwitz_stable(lost);
+  return stable ? Polynomial<rational>() : lost.monic();
 }
 
 std::string TransferFunction::to_string() const {

@@ -33,6 +33,15 @@ struct TransferFunction {
   std::string to_string() const;
 };
 
+/// The factor of `written` (a denominator as the user wrote it: --num/--den's, det(zI - A) of a
+/// state space, an expression's before an operation reduced it) that `reduced` (the denominator in
+/// lowest terms, which divides it) lost, when one of its roots lies on or outside the stable region
+/// (|z| >= 1 in z, Re s >= 0 in s): realised as written, a hidden mode that makes any loop NOT
+/// stable, which hapstab does not reduce away silently (callers refuse the input by name). The zero
+/// polynomial when every lost root is inside (a hidden stable mode, which changes no verdict).
+Polynomial<rational> unstable_cancelled_factor(const Polynomial<rational>& written, const Polynomial<rational>& reduced,
+                                               Domain domain);
+
 /// tf(num, den, T): discrete when T > 0, continuous when T == 0. Throws InputError on a zero
 /// denominator or T < 0.
 TransferFunction tf(Polynomial<rational> num, Polynomial<rational> den, const rational& T = 0);
