@@ -5,10 +5,12 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/lti/state_space.hpp"
 #include "hapstab/poly/rational_function.hpp"
 #include "proofs/proof.hpp"
@@ -27,6 +29,17 @@ struct BoundInstance {
   std::string max{};
   rational damping = 0;
 };
+
+/// The parameters of `values` that `H` names (a `--set` no expression names is refused: the proofs
+/// that run one parameter set over many H pass each H its own).
+inline std::vector<std::pair<std::string, rational>> named_sets(const std::string& H,
+                                                                 const std::vector<std::pair<std::string, rational>>& values) {
+  const std::set<std::string> names = names_in(H);
+  std::vector<std::pair<std::string, rational>> out;
+  for (const auto& v : values)
+    if (names.count(v.first)) out.push_back(v);
+  return out;
+}
 
 inline std::vector<std::string> bound_args(const BoundInstance& b) {
   std::vector<std::string> a{"bound", "--H", b.H, "--T", b.T.str()};

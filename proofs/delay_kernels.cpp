@@ -239,7 +239,7 @@ HAPSTAB_PROOF(delay_long_path, "001", "the long-delay path against the exact pat
       ok = ok && overlap && contains;
       // its certificate: b* as `bound` prints it, the exact path's value (or its enclosure's midpoint) inside
       check.certify("001.eq45.long_delay_path",
-                    proofs::bound_equals({H, p.T, {{"K", rational(1000)}, {"B", rational(5)}}, n},
+                    proofs::bound_equals({H, p.T, proofs::named_sets(H, {{"K", rational(1000)}, {"B", rational(5)}}), n},
                                          e.status == Status::exact ? e.value : (e.enclosure->lo + e.enclosure->hi) / 2));
     }
   // Example 4 at n = 1000: H_0 z^-n: (2n + 1)T/2 exactly; H_1 z^-n: 1 (tight for every n)

@@ -95,6 +95,7 @@ stability::Loop make_loop(const StabilityOpts& o) {
   const rational T = cli::option_rational(o.T, "--T");
   if (T <= 0) throw InputError("--T: the sample period must be > 0, got '" + o.T + "'");
   if (o.digits < 1 || o.digits > 1000) throw InputError("--digits must be in [1, 1000], got " + std::to_string(o.digits));
+  cli::refuse_unnamed_sets(o.sets, {{"--plant", o.plant}, {"--H", o.H}, {"--operator", o.op}});
   return stability::loop_from_text({o.plant, o.H, o.op, T, o.delay, cli::parse_sets(o.sets), o.max_name});
 }
 

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "cli/mat_file.hpp"
+#include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/report/paths.hpp"
@@ -32,6 +34,27 @@ std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets)
     out[name] = parse_rational(s.substr(eq + 1), "--set " + name);
   }
   return out;
+}
+
+void refuse_unnamed_sets(const std::vector<std::string>& sets,
+                         const std::vector<std::pair<std::string, std::string>>& expressions) {
+  std::set<std::string> named;
+  std::string options;
+  int given = 0;
+  for (const auto& [option, text] : expressions) {
+    if (text.empty()) continue;
+    for (const auto& n : names_in(text)) named.insert(n);
+    options += (options.empty() ? "" : ", ") + option;
+    ++given;
+  }
+  for (const auto& [name, value] : parse_sets(sets)) {
+    if (named.count(name)) continue;
+    std::string list;
+    for (const auto& n : named)
+      if (n != "T" && n != "s" && n != "z") list += (list.empty() ? "" : ", ") + n;
+    throw InputError("--set " + name + ": no expression names " + name + " (" + options + (given == 1 ? " names " : " name ") +
+                     (list.empty() ? "no parameter" : list) + "): a typo is never ignored");
+  }
 }
 
 std::filesystem::path output_folder(const std::string& dir, const std::string& option) {

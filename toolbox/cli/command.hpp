@@ -88,6 +88,11 @@ rational option_rational(const std::string& text, const std::string& option);
 /// Parses repeated `--set NAME=VALUE` into exact parameters (error names the bad entry).
 std::map<std::string, rational> parse_sets(const std::vector<std::string>& sets);
 
+/// InputError when a `--set NAME` names a parameter that none of `expressions` (option, text)
+/// names: a typo is never ignored (the Python module's params and a scene's --set refuse it too).
+void refuse_unnamed_sets(const std::vector<std::string>& sets,
+                         const std::vector<std::pair<std::string, std::string>>& expressions);
+
 /// Creates the output folder `dir` of option `option` ("--out") before any work, and checks that
 /// a file can be written in it; InputError (exit 2) naming the option otherwise.
 std::filesystem::path output_folder(const std::string& dir, const std::string& option);

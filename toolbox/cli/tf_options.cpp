@@ -101,6 +101,7 @@ TransferFunction tf_from_coefficients(const std::vector<rational>& num, const st
 namespace {
 
 TransferFunction parse_expression(const TfOptions& o, const rational& T, HiddenPoles hidden_poles) {
+  refuse_unnamed_sets(o.sets, {{"--H", o.H}});
   ParseOptions po;
   po.hidden_poles = hidden_poles;
   po.variable = 'z';
@@ -169,6 +170,7 @@ AffineSplit parse_tf_affine(const TfOptions& o, const TfRules& rules, const std:
   const std::string what = option + " " + name;
   if (o.H.empty()) throw InputError(what + ": needs H as an expression in " + name + " (--H), not --num/--den or --mat");
   if (parse_sets(o.sets).count(name)) throw InputError(what + ": " + name + " is the parameter maximised; do not --set it");
+  refuse_unnamed_sets(o.sets, {{"--H", o.H}});
   const rational T = parse_period(o, rules);
   if (rules.with_delay && o.delay < 0) throw InputError("--delay must be >= 0 (got " + std::to_string(o.delay) + ")");
   ParseOptions po;
