@@ -139,7 +139,7 @@ py::dict bound_many(const std::string& expr, const std::map<std::string, std::st
   std::map<std::string, rational> fixed;
   for (const auto& [k, v] : fixed_texts) fixed[k] = exact_arg(v, "params['" + k + "']");
   const Columns cols = Columns::from_python(names, columns);
-  const ParsedExpression H_of = parsed(expr, "H", 'z', o.T, fixed, cols);  // parsed once
+  const ParsedExpression H_of = parsed(expr, "H", 'z', o.T, fixed, cols, HiddenPoles::allow_marginal);  // once; as `bound`
   const size_t n = cols.points;
   PointColumns c(n);
   std::vector<double> omega(n, std::numeric_limits<double>::quiet_NaN());
@@ -183,7 +183,7 @@ passivity::GainProblem gain_problem(const std::string& expr, const std::string& 
                                     const BoundOptions& o) {
   AffineSplit h;
   try {
-    h = split_affine(expr, parse_options('z', o.T, params), name);
+    h = split_affine(expr, parse_options('z', o.T, params, HiddenPoles::allow_marginal), name);  // as `bound --max`
   } catch (const InputError& e) {
     throw InputError("max='" + name + "': H: " + e.what());
   }

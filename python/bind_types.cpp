@@ -37,6 +37,13 @@ Mat<rational> exact_matrix(const std::vector<std::vector<std::string>>& rows, co
   return M;
 }
 
+// "refuse" (every use but b*) or "allow_marginal" (b*, as `bound` reads H): lti/parse.hpp HiddenPoles.
+HiddenPoles hidden_policy(const std::string& name) {
+  if (name == "refuse") return HiddenPoles::refuse;
+  if (name == "allow_marginal") return HiddenPoles::allow_marginal;
+  throw std::logic_error("hidden_poles: '" + name + "' (expected refuse or allow_marginal)");
+}
+
 std::vector<std::vector<std::string>> texts(const Mat<rational>& M) {
   std::vector<std::vector<std::string>> out(size_t(M.rows()));
   for (Eigen::Index i = 0; i < M.rows(); ++i)
@@ -65,30 +72,30 @@ void register_types(py::module_& m) {
   m.def(
       "tf_from_expression",
       [](const std::string& text, const std::optional<std::string>& T, const std::map<std::string, std::string>& params,
-         const std::string& variable, const std::string& what) {
+         const std::string& variable, const std::string& what, const std::string& hidden_poles) {
         std::map<std::string, rational> p;
         for (const auto& [k, v] : params) p[k] = exact_arg(v, "params['" + k + "']");
         const rational period = T ? exact_arg(*T, "T") : rational(0);
         if (T && period <= 0) throw InputError("T: the sample period must be > 0, got " + *T);
-        ParseOptions po = parse_options(variable.empty() ? 0 : variable[0], period, std::move(p));
+        ParseOptions po = parse_options(variable.empty() ? 0 : variable[0], period, std::move(p), hidden_policy(hidden_poles));
         try {
           return parse_tf(text, po);
         } catch (const InputError& e) {
           throw InputError(what + ": " + e.what());
         }
       },
-      py::arg("text"), py::arg("T"), py::arg("params"), py::arg("variable"), py::arg("what"),
+      py::arg("text"), py::arg("T"), py::arg("params"), py::arg("variable"), py::arg("what"), py::arg("hidden_poles") = "refuse",
       "Parses an exact expression (lti/parse.hpp) into a TransferFunction.");
   m.def(
       "tf_from_coefficients",
       [](const std::vector<std::string>& num, const std::vector<std::string>& den, const std::string& T,
-         const std::string& what) {
+         const std::string& what, const std::string& hidden_poles) {
         const rational period = exact_arg(T, "T");
         if (period <= 0) throw InputError("T: the sample period must be > 0, got " + T);
         return cli::tf_from_coefficients(exact_list(num, what + " numerator"), exact_list(den, what + " denominator"),
-                                         period, what + " numerator", what + " denominator");
+                                         period, what + " numerator", what + " denominator", hidden_policy(hidden_poles));
       },
-      py::arg("num"), py::arg("den"), py::arg("T"), py::arg("what"),
+      py::arg("num"), py::arg("den"), py::arg("T"), py::arg("what"), py::arg("hidden_poles") = "refuse",
       "H(z) = num(z)/den(z) from exact coefficients in descending powers of z.");
 
   py::class_<StateSpace<rational>>(m, "StateSpace",

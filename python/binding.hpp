@@ -45,7 +45,8 @@ std::optional<rational> exact_arg(const std::optional<std::string>& text, const 
 rational shortest_decimal(double x);
 
 /// How Python code names parameters and the period in the parser's messages.
-ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params);
+ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params,
+                           HiddenPoles hidden_poles = HiddenPoles::refuse);
 
 /// The result record: {"value_exact": "p/q" | None, "mid": float, "lo": float, "hi": float,
 /// "lo_text": str, "hi_text": str, "status": str, "method": str, "note": str}. lo/hi are the
@@ -78,7 +79,8 @@ struct Columns {
 /// The expression `expr` (named `what` in messages) parsed once for the columns' parameters, the
 /// fixed ones given: lti/parse.hpp's ParsedExpression, the parser's messages in Python's words.
 ParsedExpression parsed(const std::string& expr, const std::string& what, char variable, const rational& T,
-                        const std::map<std::string, rational>& fixed, const Columns& cols);
+                        const std::map<std::string, rational>& fixed, const Columns& cols,
+                        HiddenPoles hidden_poles = HiddenPoles::refuse);
 
 /// Refuses (InputError naming `what`) an expression that names anything but the variable, T and
 /// the parameters given (fixed or columns): a mistake of the whole call, raised before its points

@@ -67,8 +67,10 @@ std::optional<rational> exact_arg(const std::optional<std::string>& text, const 
   return exact_arg(*text, what);
 }
 
-ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params) {
+ParseOptions parse_options(char variable, const rational& T, std::map<std::string, rational> params,
+                           HiddenPoles hidden_poles) {
   ParseOptions po;
+  po.hidden_poles = hidden_poles;
   po.variable = variable;
   po.T = T;
   po.parameters = std::move(params);
@@ -166,9 +168,9 @@ std::map<std::string, rational> Columns::at(const std::map<std::string, rational
 }
 
 ParsedExpression parsed(const std::string& expr, const std::string& what, char variable, const rational& T,
-                        const std::map<std::string, rational>& fixed, const Columns& cols) {
+                        const std::map<std::string, rational>& fixed, const Columns& cols, HiddenPoles hidden_poles) {
   try {
-    return ParsedExpression(expr, parse_options(variable, T, fixed), {cols.names.begin(), cols.names.end()});
+    return ParsedExpression(expr, parse_options(variable, T, fixed, hidden_poles), {cols.names.begin(), cols.names.end()});
   } catch (const InputError& e) {
     throw InputError(what + ": " + e.what());
   }

@@ -360,7 +360,7 @@ def bound(H: Any, T: Any = None, delay: int = 0, frac_delay: Any = None, eta: An
         d = _call(_core.bound_many, _expression(H), fixed, names, columns, T_text, delay, frac, eta_text, digits, method,
                   grid_points, allow_noncausal, _jobs(jobs))
         return ResultArray(Bound, d, shape, f"b* ({method})", arrays)
-    Htf = _call(transfer_function, H, T_text, fixed, "H")
+    Htf = _call(transfer_function, H, T_text, fixed, "H", "z", "allow_marginal")  # as `bound` reads H
     d = _call(_core.bound, Htf, T_text, delay, frac, eta_text, digits, method, grid_points, allow_noncausal)
     extra = {k: d[k] for k in ("omega", "where", "decimal", "infinite", "closed_form", "enclosure_rigorous")}
     b = Bound(d, **extra)

@@ -193,10 +193,13 @@ def coefficient_texts(coefficients: Any, what: str) -> list:
     return out
 
 
-def transfer_function(H: Any, T: Any, params: Optional[dict] = None, what: str = "H", variable: str = "z"):
+def transfer_function(H: Any, T: Any, params: Optional[dict] = None, what: str = "H", variable: str = "z",
+                      hidden_poles: str = "refuse"):
     """H as a hapstab.TransferFunction (the library's lti TransferFunction): from an expression
     (parsed once, with `params` exact), a (num, den) pair, an object with num, den, dt, or a
-    TransferFunction already built (its T must match)."""
+    TransferFunction already built (its T must match). A pole the expression (or num/den) writes and
+    cancels on or outside the stable region is refused, or with hidden_poles="allow_marginal" (b*, as
+    `bound` reads H) while H as written stays marginally stable (lti/parse.hpp HiddenPoles)."""
     T_text = None if T is None else exact(T, "T")
     if isinstance(H, _core.TransferFunction):
         if params:
@@ -207,7 +210,7 @@ def transfer_function(H: Any, T: Any, params: Optional[dict] = None, what: str =
         return H
     if isinstance(H, str):
         texts = {str(k): exact(v, f"params[{k!r}]") for k, v in (params or {}).items()}
-        return _core.tf_from_expression(H, T_text, texts, variable, what)
+        return _core.tf_from_expression(H, T_text, texts, variable, what, hidden_poles)
     num, den, T_text = _coefficients(H, T_text, what)
     if params:
         raise _core.InputError(f"params: {what} is given by its coefficients (numbers); params name parameters of an "
@@ -215,7 +218,7 @@ def transfer_function(H: Any, T: Any, params: Optional[dict] = None, what: str =
     if T_text is None:
         raise _core.InputError("T is required (the sample period)")
     return _core.tf_from_coefficients(coefficient_texts(num, f"{what} numerator"),
-                                      coefficient_texts(den, f"{what} denominator"), T_text, what)
+                                      coefficient_texts(den, f"{what} denominator"), T_text, what, hidden_poles)
 
 
 def period_of(H: Any, T: Any) -> Optional[str]:

@@ -92,3 +92,20 @@ def test_both_parsers_refuse_the_same_cancellations():
             assert sum(n for (v, w, _), n in counts.items() if v == var and w == where) >= 60, (var, where, counts)
     assert len(counts) >= 35, counts
     print("\n%d cases, per (variable, cancelled root, shape): %s" % (cases, sorted(counts.items(), key=str)))
+
+
+def test_bound_takes_a_simple_cancelled_pole_on_the_circle_as_the_command_line_does():
+    moving_sum = "(z-1)*(1 - z^-9)/(1 - z^-1)"  # the moving sum in closed form: z = 1 cancelled, simple
+    b = hapstab.bound(moving_sum, T="1/1000", allow_noncausal=True)
+    assert b.status == "certified" and abs(b.value - 0.00136818827762279085) < 1e-15
+    many = hapstab.bound("(z-1)*(K - z^-9)/(1 - z^-1)", T="1/1000", params={"K": [1, 1]}, allow_noncausal=True)
+    assert list(many.status) == ["certified", "certified"]
+    for call in (lambda: hapstab.bound("10*(z-2)/(z-2)", T="1/1000"),  # outside: H as written is unstable
+                 lambda: hapstab.bound("(z-1)/(z-1)^2*(z-1)", T="1/1000"),  # a repeated pole on the circle
+                 lambda: hapstab.stability(plant="1/(m*s^2+b*s)", H=moving_sum + "/z^9", T="1/1000",
+                                           params={"m": 1, "b": 1})):  # a loop keeps the hidden mode
+        try:
+            call()
+            raise AssertionError("accepted")
+        except hapstab.InputError as e:
+            assert "cancels" in str(e), str(e)
