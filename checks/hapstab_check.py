@@ -421,6 +421,9 @@ def _parse(text, T, params, var, leaf, marginal=False, integrator=False):
             removed = cancelled_pole(op, a, b, r)
             if len(trim(removed)) > 1 and not (schur_cohn(removed) if var == 'z' else hurwitz(removed))[0]:
                 hidden[0] = pmul(hidden[0], removed)
+                if len(hidden[0]) - 1 > MAX_DEGREE:  # H as written beyond the degree limit: refused
+                    raise TooLarge("model.H: the poles it cancels on or outside the stable region pass degree %d: "
+                                    "realised as written, hidden modes" % MAX_DEGREE)
         return r
 
     def peek():

@@ -98,16 +98,17 @@ ParseOptions flattened(std::string_view text, const ParseOptions& options) {
   return flat;
 }
 
-// A value while parsing: an exact rational function, or (ParsedExpression) the result of tape
-// node `node` when it depends on a parameter whose value comes later.
 // The factors of the denominators as written that the parse's operations cancelled and that have
 // a root on or outside the stable region (their product; 1 when none), and the message naming the
 // first operation that cancelled one.
 struct Hidden {
   P factor{rational(1)};
   std::string what;
+  bool beyond = false;  ///< their product would pass the model's degree limit (H as written is refused)
 };
 
+// A value while parsing: an exact rational function, or (ParsedExpression) the result of tape
+// node `node` when it depends on a parameter whose value comes later.
 struct Val {
   RF rf{P()};
   int node = -1;
@@ -308,7 +309,9 @@ class Parser {
                                     (var_ == 'z' ? "on or outside the unit circle" : "in Re s >= 0") +
                                     " that the expression writes: realised as written it stays in H as a hidden mode, "
                                     "and hapstab does not reduce it away (write H without it if the reduced model is meant)");
-    hidden.factor = hidden.factor * lost;
+    if (hidden.factor.degree() > 0 && opt_.hidden_poles == HiddenPoles::refuse) return r;  // the first one decides
+    if (hidden.factor.degree() + lost.degree() > limits::model_degree) hidden.beyond = true;
+    else hidden.factor = hidden.factor * lost;
     return r;
   }
 
@@ -636,7 +639,8 @@ char check_input(std::string_view text, const ParseOptions& options) {
 // degree limit and the domain.
 TransferFunction finish(RF H, const Hidden& hidden, std::string_view text, const ParseOptions& options, char var) {
   if (hidden.factor.degree() > 0) {
-    const bool allowed = options.hidden_poles == HiddenPoles::allow_marginal
+    const bool allowed = hidden.beyond ? false
+                         : options.hidden_poles == HiddenPoles::allow_marginal
                              ? var == 'z' && marginally_stable(H.den() * hidden.factor)
                              : options.hidden_poles == HiddenPoles::allow_integrator && var == 's' &&
                                    hidden.factor == P::monomial(1, rational(1));
