@@ -423,7 +423,7 @@ def _parse(text, T, params, var, leaf, marginal=False, integrator=False):
                 hidden[0] = pmul(hidden[0], removed)
                 if len(hidden[0]) - 1 > MAX_DEGREE:  # H as written beyond the degree limit: refused
                     raise TooLarge("model.H: the poles it cancels on or outside the stable region pass degree %d: "
-                                    "realised as written, hidden modes" % MAX_DEGREE)
+                                   "realised as written, hidden modes" % MAX_DEGREE)
         return r
 
     def peek():
