@@ -290,6 +290,9 @@ def bound_mutants(cert, rng, hapstab, cache):
     out.append(("status unknown", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("kind unknown", with_field(cert, ["kind"], "bound-inf"), "malformed"))
     out.append(("H unparsable", with_field(cert, ["model", "H"], m["H"] + "*("), "malformed"))
+    if "H" in m:  # a pole written and cancelled outside the circle: H as written is unstable (stop 80)
+        out.append(("H: a pole at z = 2 written and cancelled", with_field(cert, ["model", "H"], "(" + m["H"] + ")*(z-2)/(z-2)"),
+                    "malformed"))
     return out
 
 
@@ -1204,6 +1207,11 @@ def stability_mutants(cert, rng, hapstab, cache, tmp):
     out.append(("status numeric", with_field(cert, ["claim", "status"], "numeric"), "malformed"))
     out.append(("charpoly entry a decimal", with_field(cert, ["evidence", "charpoly"], ["0.5"] + cert["evidence"]["charpoly"][1:]), "malformed"))
     out.append(("charpoly empty", with_field(cert, ["evidence", "charpoly"], []), "malformed"))
+    # a pole written and cancelled: realised as written, a hidden mode of the loop (stop 80)
+    out.append(("H: a pole at z = 1 written and cancelled", with_field(cert, ["model", "H"], "(" + m["H"] + ")*(z-1)/(z-1)"),
+                "malformed"))
+    out.append(("plant: a pole at s = 1 written and cancelled",
+                with_field(cert, ["model", "plant"], "(" + m["plant"] + ")*(s-1)/(s-1)"), "malformed"))
     return out + loop_malformed(cert) + winding_mutants(cert, rng, hapstab, cache, tmp)
 
 
