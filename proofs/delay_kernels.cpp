@@ -339,8 +339,10 @@ HAPSTAB_PROOF(stability_winding, "ext", "the long-delay Schur test and sup K aga
         if (gp.outcome != Outcome::holds || gp.infinite) continue;
         if (n <= 4) {  // its certificate: sup K as `stability --plant` prints it (n >= 9: seconds per cover search, left out)
           proofs::CertificateRequest r;
-          r.args = {"stability", "--plant", plant, "--set", "m=1", "--set", "b=1", "--set", "B=1/4", "--H", H, "--T", "1/1000",
-                    "--delay", std::to_string(n), "--max", "K"};
+          r.args = {"stability", "--plant", plant, "--H", H, "--T", "1/1000", "--delay", std::to_string(n), "--max", "K"};
+          for (const auto& [name, value] :  // each --set an expression names (another is refused)
+               proofs::named_sets(plant + " " + H, {{"m", rational(1)}, {"b", rational(1)}, {"B", rational(1, 4)}}))
+            r.args.insert(r.args.end(), {"--set", name + "=" + value.str()});
           r.contains = ((gp.enclosure.lo + gp.enclosure.hi) / 2).str();
           check.certify("ext.stability.winding", r);
         }

@@ -307,8 +307,8 @@ class Parser {
     if (hidden.factor.degree() == 0)
       hidden.what = message(at, "the operation cancels " + to_string(lost, std::string(1, var_)) + ", a pole " +
                                     (var_ == 'z' ? "on or outside the unit circle" : "in Re s >= 0") +
-                                    " that the expression writes: realised as written it stays in H as a hidden mode, "
-                                    "and hapstab does not reduce it away (write H without it if the reduced model is meant)");
+                                    " that the expression writes: realised as written it stays a hidden mode, and hapstab "
+                                    "does not reduce it away (write the expression without it if the reduced model is meant)");
     if (hidden.factor.degree() > 0 && opt_.hidden_poles == HiddenPoles::refuse) return r;  // the first one decides
     if (hidden.factor.degree() + lost.degree() > limits::model_degree) hidden.beyond = true;
     else hidden.factor = hidden.factor * lost;
