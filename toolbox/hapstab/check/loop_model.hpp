@@ -44,7 +44,6 @@
 #include <nlohmann/json.hpp>
 
 #include "hapstab/lti/parse.hpp"
-
 #include "hapstab/numeric/scalar.hpp"
 #include "hapstab/poly/rational_function.hpp"
 
