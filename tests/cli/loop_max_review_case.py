@@ -13,7 +13,12 @@ delay's buffer; its spectral radius scanned on a geometric grid and bisected), n
     the loop stable at g = 10^-k, k = 1..8, by exact Schur-Cohn on M built in fractions (indep_charpoly.py; in double
     a Jordan block's 1 + O(g) is noise);
   * a hidden mode z = g of the environment (stop 79): sup g = 1, one DOF and two (it said "sup g = 0 [exact]" from
-    the mode's instability at the scene's g = 2).
+    the mode's instability at the scene's g = 2);
+  * tests/cli/scenes/loop_max_walk_to_zero.toml: two mass-dampers under operators b + k/s, walls delayed by z^-2 and a
+    coupling (the conservatism campaign's case 2027): M(0) Schur stable, but the walk towards 0 stopped at 0.0038
+    after its 400 steps ("undecided", stop 80); sup g certified, stable from 0 (one Lyapunov P for [0, down]), within
+    1e-7 of the reference built in numpy from the scene (tests/verify/indep_coupled.py), which is stable at 10^-k,
+    k = 2..8.
 
   loop_max_review_case.py HAPSTAB
 exit 0 when every expectation holds, else 1."""
@@ -29,6 +34,7 @@ import numpy as np
 TOP = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 sys.path.insert(0, os.path.join(TOP, "tests", "verify"))
 import indep_charpoly as ICH  # noqa: E402
+import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 from indep_common import Rational  # noqa: E402
 
@@ -158,6 +164,21 @@ def main():
             lo, hi = (float(j["enclosure"][0]), float(j["enclosure"][1])) if j and j.get("enclosure") else (None, None)
             expect("a hidden mode z = g, %d DOF: exit 0 (got %s), sup g = 1 inside [%s, %s] (the rest's rho %.6f < 1), not 0 [exact]" % (
                 dofs, rc, lo, hi, r5), rc == 0 and j.get("max") != "0" and lo is not None and lo <= 1 <= hi and r5 < 1)
+    # 6. the walk towards 0 on a long stable run: the reference is the scene read as indep_coupled builds it
+    import random
+    c6 = ICP.gen_coupled(random.Random("46:conservatism:2027"), conservatism=True)
+    path6 = os.path.join(scenes, "loop_max_walk_to_zero.toml")
+    with open(path6) as f:
+        same = ICP.scene_toml(c6, "1").split("\n", 1)[1] in f.read()
+    loop6 = ICP.CoupledLoop(c6)
+    ref6 = sup_reference(lambda g: ICP.rho_np(loop6, g), 1e-8, 10.0)
+    small6 = [ICP.rho_np(loop6, 10.0 ** -k) < 1 for k in range(2, 9)]
+    rc, j, err = run(hapstab, ["--scene", path6, "--max", "g", "--json"])
+    got = float(j["max"]) if j and j.get("max") else None
+    expect("walk to 0 (the scene is the campaign's: %s): exit 0 (got %s), stable from 0, sup %s against the reference %.13g; "
+           "the reference stable at 1e-2..1e-8: %s" % (same, rc, got, ref6, all(small6)),
+           same and rc == 0 and j.get("status") == "certified" and j.get("stable_from") is None and got is not None
+           and abs(got - ref6) <= 1e-7 * ref6 and all(small6))
     print("loop_max_review_case: %d failed" % failures)
     return 1 if failures else 0
 

@@ -22,6 +22,7 @@
 #include "hapstab/numeric/ball_matrix.hpp"
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
+#include "hapstab/numeric/lyapunov_ball.hpp"
 #include "hapstab/lti/circle_crossing.hpp"
 #include "hapstab/lti/realization.hpp"
 #include "hapstab/numeric/numeric_decimal.hpp"
@@ -833,6 +834,23 @@ struct Cover {
   // Where the eigenbasis fails (two eigenvalues colliding: R near singular), a Stein certificate
   // on the ball matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp's schur_decide: P - M^T P M > 0
   // for every matrix of the ball): the largest of the widths tried, 0 when none is certified.
+  // Every M(p), p in [a, b], Schur stable by one Lyapunov P (numeric/lyapunov_ball.hpp: the Stein
+  // inequality is convex in M, and M(p) is affine in p, so its two ends suffice). The walk towards 0
+  // takes it where M(0) is Schur stable: the steps above shrink near 0 where a delay register's
+  // defective eigenvalue 0 splits like sqrt(p) (their eigenbasis is ill-conditioned there), while one
+  // P serves a whole interval [0, b].
+  bool segment(const rational& a, const rational& b) {
+    ++checks;
+    const long n = M0.rows();
+    flint::BallPrecision bp(128);
+    BallMat A(n, n), B(n, n);
+    for (const auto& [end, out] : {std::pair<const rational*, BallMat*>{&a, &A}, {&b, &B}}) {
+      const Ball k_(*end);
+      arb_mat_scalar_mul_arb(out->get(), M1.get(), k_.get(), 128);
+      arb_mat_add(out->get(), out->get(), M0.get(), 128);
+    }
+    return lyapunov_proves_segment_stable(A, B);
+  }
   rational stein(const rational& c, int dir, const rational& scale) {
     const long n = M0.rows();
     rational w = scale / 10;
@@ -1422,12 +1440,24 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
     if (h <= 0 || up + h >= top) break;
     up += h;
   }
-  // down: to 0 where M(0) is Schur stable (a step of the walk reaches it); where an eigenvalue of
+  // down: to 0 where M(0) is Schur stable (a step of the walk, or one Lyapunov P for all of [0, down],
+  // reaches it); where an eigenvalue of
   // M(0) is on the circle (a device's position integrator under a spring scaled by p) the steps
   // shrink geometrically towards 0 and the walk stops at 10^-6 of the crossing
   const rational floor = top / 1000000;
   cov.prec = 64;
-  for (const long budget = cov.checks + 400; cov.checks < budget && down > 0;) {
+  rational tried_segment = 2 * down;  // [0, down] by one P, tried again each time down halves
+  // steps of O(n^3): 4000 of them up to order 20, as many as cost the same beyond, at least 400
+  const double order = static_cast<double>(cov.M0.rows());
+  const long steps_down = std::clamp(static_cast<long>(4000.0 * std::pow(20.0 / std::max(order, 1.0), 3)), 400L, 4000L);
+  for (const long budget = cov.checks + steps_down; cov.checks < budget && down > 0;) {
+    if (down * 2 <= tried_segment) {
+      tried_segment = down;
+      if (cov.segment(0, down)) {
+        down = 0;
+        break;
+      }
+    }
     rational h = cov.radius(down, -1);
     if (h <= 0) h = cov.stein(down, -1, down);
     if (h <= 0) break;

@@ -19,7 +19,10 @@
 //     of p is 10^-digits relative or narrower.
 //  3. Below it (certified): every eigenvalue of every M0 + p M1 inside the unit disk, on adjacent
 //     intervals of p, a walk from a point of the stable run up to within 10^-(digits+1) of the
-//     crossing (at most 2000 steps) and down towards 0 (at most 400). Each step, at a point c: R an
+//     crossing (at most 2000 steps) and down towards 0 (at most 4000 up to order 20, as many as cost
+//     the same beyond, at least 400; each time the walk down has halved, one Lyapunov P is tried for
+//     all of [0, down]: numeric/lyapunov_ball.hpp, the Stein inequality convex in M(p), so its two
+//     ends suffice). Each step, at a point c: R an
 //     approximate eigenbasis of M(c) (double; a cluster of close eigenvalues gets a basis of its
 //     invariant subspace), exact as it is, L a ball enclosure of R^-1; then R^-1 M(p) R lies in
 //     B0 + (p - c) C, B0 = L M(c) R, C = L M1 R, and Gershgorin's discs of D^-1 (B0 + t C) D
