@@ -834,18 +834,25 @@ def check_bound(c):
     only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     cells = "infinite" not in claim and "cells" in evidence
-    if "infinite" in claim:
+    local = "infinite" in claim and "pole_at_z" in evidence  # b* = +inf at z = -1, nothing expanded
+    if local:
+        only(evidence, ("pole_at_z",), "evidence")
+    elif "infinite" in claim:
         only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), "evidence")
     elif cells:
         only(evidence, ("cells", "witness_theta"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
-    H, T, eta, P, q = bound_model(model, expanded=not cells)
+    H, T, eta, P, q = bound_model(model, expanded=not (cells or local))
     status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
     if "infinite" in claim and not infinite:
         raise Malformed("claim.infinite: false (a finite claim has no such field)")
+    if local:
+        if status != "exact":
+            raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
+        return bound_infinite_at_minus_one(H, P, q, evidence)
     if infinite:
         return bound_infinite(H, T, P, q, status, evidence)
     if cells:
@@ -861,6 +868,35 @@ def check_bound(c):
     if why:
         return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
     return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_infinite_at_minus_one(H, P, q, evidence):
+    """b* = +inf as wT -> pi from H's simple pole at z = -1 met by the delay nu = P/q (not an integer).
+    This checker's own derivation: with z = e^{j theta}, H = G + r/(z + 1), r = N(-1)/D'(-1), G has no pole
+    at -1, so Re{T G(z) e^{-j nu theta}/(1 - z)} stays bounded as theta -> pi (1 - z -> 2). The rest is
+    T r Re{e^{-j nu theta}/(1 - z^2)}, and 1 - z^2 = z (z^-1 - z) = -2j sin(theta) z, so it equals
+    T r Re{j e^{-j (nu + 1) theta}}/(2 sin theta) = T r sin((nu + 1) theta)/(2 sin theta). As theta -> pi
+    from below, sin theta -> 0+ and sin((nu + 1) theta) -> sin(nu pi + pi) = -sin(nu pi), nonzero for nu
+    not an integer: the objective -> +inf iff r sin(nu pi) < 0. For nu = P/q, P >= 0, sin(nu pi) has the
+    sign (-1)^(P // q) (nu pi lies strictly between (P // q) pi and (P // q + 1) pi)."""
+    if evidence.get("pole_at_z") != "-1":
+        raise Malformed("evidence.pole_at_z: only \"-1\" is taken")
+    if q == 1:
+        return False, "b* = +inf not shown: the delay %d is a whole number of samples (sin(nu pi) = 0)" % P
+    N, D = H.num, H.den
+    m1 = Fraction(-1)
+    if peval(D, m1) != 0:
+        return False, "b* = +inf not shown: z = -1 is not a pole of H"
+    d1 = peval(pderiv(D), m1)
+    if d1 == 0:
+        return False, "b* = +inf not shown: the pole of H at z = -1 is not simple"
+    r = peval(N, m1) / d1
+    if r == 0:
+        return False, "b* = +inf not shown: N(-1) = 0"
+    sin_sign = 1 if (P // q) % 2 == 0 else -1
+    if (1 if r > 0 else -1) * sin_sign > 0:
+        return False, "b* = +inf not shown: r sin(nu pi) > 0 (r = %s, nu = %d/%d): the objective tends to -inf at wT = pi" % (short(r), P, q)
+    return True, "b* = +inf: H's simple pole at z = -1 (r = %s) and sin(nu pi) of the other sign (nu = %d/%d)" % (short(r), P, q)
 
 
 def bound_infinite(H, T, P, q, status, evidence):

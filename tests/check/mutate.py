@@ -328,6 +328,24 @@ def inf_mutants(cert, rng, hapstab, cache):
     band (refute)."""
     out = [("unmutated", cert, "accept")]
     ev = cert["evidence"]
+    if "pole_at_z" in ev:  # the local form: H's simple pole at z = -1 met by a fractional delay (since stop 81)
+        out += [("pole_at_z -> 1", with_field(cert, ["evidence", "pole_at_z"], "1"), "malformed"),
+                ("pole_at_z as a number", with_field(cert, ["evidence", "pole_at_z"], -1), "malformed"),
+                ("side beside pole_at_z", with_field(cert, ["evidence", "side"], 1), "malformed"),
+                ("end_lo beside pole_at_z", with_field(cert, ["evidence", "end_lo"], "0"), "malformed"),
+                ("deleted evidence.pole_at_z", deleted(cert, ["evidence", "pole_at_z"]), "malformed"),
+                ("status certified", with_field(cert, ["claim", "status"], "certified"), "malformed"),
+                ("claim made finite (b* = 0)", with_field(deleted(cert, ["claim", "infinite"]), ["claim", "value"], "0"), "malformed")]
+        m = cert["model"]
+        T = Fraction(m["T"])
+        edits = model_edits(m, rng, SET_MOVES + (("x 2", lambda x: 2 * x),))
+        edits += [("frac_delay + T (sin(pi nu) flipped: -inf, issue 46 item 1)", dict(m, frac_delay=frac(Fraction(m["frac_delay"]) + T))),
+                  ("frac_delay 0 (nu whole)", dict(m, frac_delay="0")), ("delay + 1", dict(m, delay=m["delay"] + 1)),
+                  ("T doubled (t_d/T halved)", dict(m, T=frac(T * 2)))]
+        for name, nm in edits:
+            enc = certified_enclosure(hapstab, nm, cache)
+            out.append(("model: " + name, with_field(cert, ["model"], nm), "agree" if enc == "inf" else "same" if enc is None else "refute"))
+        return out
     if "end_lo" in ev:  # the pole at the band's irrational end, isolated in (end_lo, end_hi]
         lo, hi = Fraction(ev["end_lo"]), Fraction(ev["end_hi"])
         ce = (lo + hi) / 2  # within the interval: a point on each side of cos(pi/q) is not known here
@@ -2060,12 +2078,12 @@ def print_new_branches(certs):
     if infs:
         at = [c for c in infs if "pole_c" in c["evidence"]]
         print("  bound-inf branches: integer delay %d, fractional %d; side +1 %d, -1 %d; pole at c = 1 %d, 0 %d, other %d, "
-              "at the irrational band end %d, irrational inside the band %d" % (
+              "at the irrational band end %d, irrational inside the band %d, the local form at z = -1 %d" % (
                   sum(1 for c in infs if "frac_delay" not in c["model"]), sum(1 for c in infs if "frac_delay" in c["model"]),
                   sum(1 for c in at if c["evidence"]["side"] == 1), sum(1 for c in at if c["evidence"]["side"] == -1),
                   sum(1 for c in at if c["evidence"]["pole_c"] == "1"), sum(1 for c in at if c["evidence"]["pole_c"] == "0"),
                   sum(1 for c in at if c["evidence"]["pole_c"] not in ("0", "1")), sum(1 for c in infs if "end_lo" in c["evidence"]),
-                  sum(1 for c in infs if "pole_lo" in c["evidence"])))
+                  sum(1 for c in infs if "pole_lo" in c["evidence"]), sum(1 for c in infs if "pole_at_z" in c["evidence"])))
     if mutate_multidof.branches(certs):
         print(mutate_multidof.branches(certs))
     wedges = [c for k, c in certs if k == "wedge"]

@@ -129,6 +129,34 @@ TEST(BoundCheck, InfiniteAtTheIrrationalBandEnd) {
   EXPECT_THROW(check_certificate(both), InputError);
 }
 
+// The local form (evidence.pole_at_z = "-1", nothing expanded): the same K/(z + 1), T = 1, at
+// nu = 1500 + 1/4 (sin(nu pi) > 0: +inf iff rho = K < 0) and 1501 + 1/4 (the sign flips); an integer
+// delay (sin(nu pi) = 0) and a pole elsewhere are refuted, another z or a field beside it malformed.
+TEST(BoundCheck, InfiniteAtMinusOneLocalForm) {
+  auto cert = [](const std::string& H, const std::string& K, int n, const std::string& td) {
+    nlohmann::json model = {{"H", H}, {"set", {{"K", K}}}, {"T", "1"}, {"delay", n}, {"eta", "0"}};
+    if (!td.empty()) model["frac_delay"] = td;
+    return nlohmann::json{{"certificate", "hapstab"}, {"version", 1}, {"kind", "bound"}, {"model", model},
+                          {"claim", {{"status", "exact"}, {"infinite", true}}}, {"evidence", {{"pole_at_z", "-1"}}}};
+  };
+  const Verdict ok = check_certificate(cert("K/(z+1)", "-1", 1500, "1/4"));
+  EXPECT_TRUE(ok.verified) << ok.reason;
+  const Verdict minus = check_certificate(cert("K/(z+1)", "1", 1500, "1/4"));
+  EXPECT_FALSE(minus.verified);
+  EXPECT_NE(minus.reason.find("-inf"), std::string::npos) << minus.reason;
+  EXPECT_TRUE(check_certificate(cert("K/(z+1)", "1", 1501, "1/4")).verified);
+  EXPECT_FALSE(check_certificate(cert("K/(z+1)", "-1", 1501, "1/4")).verified);
+  EXPECT_FALSE(check_certificate(cert("K/(z+1)", "-1", 1500, "")).verified);        // nu whole
+  EXPECT_FALSE(check_certificate(cert("K/(z+1)", "-1", 1500, "1")).verified);       // t_d = T: nu whole
+  EXPECT_FALSE(check_certificate(cert("K/(z-1/2)", "-1", 1500, "1/4")).verified);   // no pole at -1
+  auto other = cert("K/(z+1)", "-1", 1500, "1/4");
+  other["evidence"]["pole_at_z"] = "1";
+  EXPECT_THROW(check_certificate(other), InputError);
+  auto beside = cert("K/(z+1)", "-1", 1500, "1/4");
+  beside["evidence"]["side"] = 1;
+  EXPECT_THROW(check_certificate(beside), InputError);
+}
+
 // An irrational pole inside the band: H = K/(z^2 + 1) (poles at z = +-j), T = 1, t_d = T/3 (q = 3,
 // band c = cos(theta/3) in [1/2, 1]). By hand, with H(e^{j theta}) = e^{-j theta}/(2 cos theta) and
 // 1/(1 - e^{j theta}) = j e^{-j theta/2}/(2 sin(theta/2)): f = K sin(11 theta/6)/(4 cos theta sin(theta/2)),

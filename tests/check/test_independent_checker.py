@@ -1243,6 +1243,31 @@ class BoundInfinite(unittest.TestCase):
         c["evidence"]["pole_c"] = "1"
         self.assertEqual(hc.check(c)[0], 2)
 
+    def test_local_form_at_minus_one(self):
+        # test_check.cpp's BoundCheck.InfiniteAtMinusOneLocalForm: K/(z + 1), T = 1, nu = 1500 + 1/4: +inf iff K < 0;
+        # one sample more flips the sign; a whole nu or no pole at -1 refuted; another z or a field beside it malformed
+        def cert(H, K, n, td):
+            model = {"H": H, "set": {"K": K}, "T": "1", "delay": n, "eta": "0"}
+            if td:
+                model["frac_delay"] = td
+            return {"certificate": "hapstab", "version": 1, "kind": "bound", "model": model,
+                    "claim": {"status": "exact", "infinite": True}, "evidence": {"pole_at_z": "-1"}}
+        self.assertEqual(hc.check(cert("K/(z+1)", "-1", 1500, "1/4"))[0], 0)
+        code, why = hc.check(cert("K/(z+1)", "1", 1500, "1/4"))
+        self.assertEqual(code, 1)
+        self.assertIn("-inf", why)
+        self.assertEqual(hc.check(cert("K/(z+1)", "1", 1501, "1/4"))[0], 0)
+        self.assertEqual(hc.check(cert("K/(z+1)", "-1", 1501, "1/4"))[0], 1)
+        self.assertEqual(hc.check(cert("K/(z+1)", "-1", 1500, None))[0], 1)
+        self.assertEqual(hc.check(cert("K/(z+1)", "-1", 1500, "1"))[0], 1)
+        self.assertEqual(hc.check(cert("K/(z-1/2)", "-1", 1500, "1/4"))[0], 1)
+        c = cert("K/(z+1)", "-1", 1500, "1/4")
+        c["evidence"]["pole_at_z"] = "1"
+        self.assertEqual(hc.check(c)[0], 2)
+        c = cert("K/(z+1)", "-1", 1500, "1/4")
+        c["evidence"]["side"] = 1
+        self.assertEqual(hc.check(c)[0], 2)
+
     def test_at_an_irrational_pole_inside_the_band(self):
         # test_check.cpp's BoundCheck.InfiniteAtAnIrrationalPoleInsideTheBand: K/(z^2 + 1), T = 1, t_d = T/3:
         # f = K sin(11 theta/6)/(4 cos theta sin(theta/2)) -> +K inf as theta -> pi/2 from below, i.e. from

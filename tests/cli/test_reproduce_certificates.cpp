@@ -44,8 +44,8 @@ TEST(CmdReproduce, CertificatesAreWrittenCheckedAndLinked) {
   EXPECT_GE(n, 150u);  // the closed forms' instances of Secs. VI-VII, Example 3's fractional delays, (54)
   EXPECT_EQ(s["verified_by_hapstab_check"].get<size_t>(), n);
   EXPECT_EQ(s["failed"].get<size_t>(), 0u);
-  // the independent checker verifies every one, b* = +inf at the band's end cos(pi/100) too (t_d = T/100,
-  // 99T/100: H(w^q) w^-P of degree 101, 199, within its limit of 200 for that evidence)
+  // the independent checker verifies every one, b* = +inf at the band's end wT = pi too (t_d = T/100,
+  // 99T/100: the local form at z = -1, nothing expanded; before stop 81 (end_lo, end_hi] around cos(pi/100))
   size_t end_q100 = 0;
   ASSERT_EQ(index["certificates"].size(), n);
   size_t scenes = 0;
@@ -55,7 +55,7 @@ TEST(CmdReproduce, CertificatesAreWrittenCheckedAndLinked) {
     EXPECT_EQ(e["hapstab_check"]["verdict"], "verified") << file;
     EXPECT_GT(e["bytes"].get<size_t>(), 0u);
     const json c = json::parse(read(root / "out" / file));
-    end_q100 += c["evidence"].contains("end_lo") && c["model"].contains("frac_delay") &&
+    end_q100 += c["evidence"].contains("pole_at_z") && c["model"].contains("frac_delay") &&
                 (c["model"]["frac_delay"] == "1/100000" || c["model"]["frac_delay"] == "99/100000");
     if (have_python()) {
       EXPECT_EQ(e["independent_checker"]["verdict"], "verified") << file;

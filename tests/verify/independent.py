@@ -182,6 +182,10 @@ def check_bound(c, exe, timeout):
     if ref["kind"] == "+inf":
         out["outcome"] = "agree" if hap_inf else "MISS"
         out["why"] = "" if hap_inf else f"the objective diverges to +inf as w -> pi/T; hapstab says b* = {b}"
+        if hap_inf and c.get("certify"):  # since stop 81: +inf certified in the local form at z = -1 at any delay
+            CERTIFY["seen"] += 1
+            if (CERTIFY["seen"] - 1) % CERTIFY["every"] == 0:
+                bound_certificate(c, exe, timeout, out, None, None)
         return out
     if hap_inf:
         out["outcome"] = "MISS"
@@ -242,7 +246,8 @@ CERTIFY = {"every": 1, "seen": 0}  # --certify-every K: bound_long's certificate
 
 def bound_certificate(c, exe, timeout, out, v, tol):
     """Since stop 79 (bound_long): the same command with --certificate, run through both checkers; beyond the expanded
-    form (n + deg H past ~1000) its evidence is the cells' (check/bound_cells.hpp). The certificate's claim must hold
+    form (n + deg H past ~1000) its evidence is the cells' (check/bound_cells.hpp); b* = +inf (v None, since stop 81)
+    the local form at z = -1 (pole_at_z). The certificate's claim must hold
     the reference's value (within its error): the cells' claim is the printed enclosure widened, an independent check of
     what both checkers verify. A refuted certificate, or one that does not hold the reference, is a MISS; a refusal by
     name is tagged."""
@@ -254,7 +259,7 @@ def bound_certificate(c, exe, timeout, out, v, tol):
             out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
             return
         cert = json.load(open(f))
-        form = "cells" if "cells" in cert["evidence"] else "expanded"
+        form = "cells" if "cells" in cert["evidence"] else "local at z = -1" if "pole_at_z" in cert["evidence"] else "expanded"
         ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
         try:
             py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
@@ -262,15 +267,20 @@ def bound_certificate(c, exe, timeout, out, v, tol):
         except subprocess.TimeoutExpired:
             py = "timeout"
         cl = cert["claim"]
-        lo, hi = (dec(cl["value"]), dec(cl["value"])) if "value" in cl else (dec(cl["lo"]), dec(cl["hi"]))
-        holds = lo - tol <= v <= hi + tol
+        if v is None:  # the reference says +inf: the claim must be it
+            lo = hi = None
+            holds = cl.get("infinite") is True
+        else:
+            lo, hi = (dec(cl["value"]), dec(cl["value"])) if "value" in cl else (dec(cl["lo"]), dec(cl["hi"]))
+            holds = lo - tol <= v <= hi + tol
         out["tags"]["certificate"] = "%s: %s" % (form, "verified by both" if ck == 0 and py == 0 else
                                                  "verified, beyond the independent checker's limit" if ck == 0 and py == 3 else
                                                  "hapstab check %s, independent %s" % (ck, py))
         if ck != 0 or py not in (0, 3) or not holds:
             out["outcome"] = "MISS"
-            out["why"] = "the certificate (%s): hapstab check %s, independent %s, claim [%s, %s] %s the reference" % (
-                form, ck, py, mp.nstr(lo, 20), mp.nstr(hi, 20), "holds" if holds else "does NOT hold")
+            out["why"] = "the certificate (%s): hapstab check %s, independent %s, claim %s %s the reference" % (
+                form, ck, py, "+inf" if v is None else "[%s, %s]" % (mp.nstr(lo, 20), mp.nstr(hi, 20)),
+                "holds" if holds else "does NOT hold")
 
 
 BRANCHES_BOUND_LONG = [

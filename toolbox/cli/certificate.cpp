@@ -216,9 +216,10 @@ nlohmann::json loop_model_json(const StabilityText& text, const rational& T) {
 
 // b* = +inf: the claim, and the first rational pole c_p of the objective in the band (a root of
 // its denominator, met exactly or by a convergent of a refined isolating interval) and side that
-// check/ verifies (the objective -> +inf there, check/bound_objective.hpp), an irrational pole's
-// isolating interval (pole_lo, pole_hi) and side, or, for the pole at the band's irrational end
-// cos(pi/q), an interval (end_lo, end_hi] isolating it; InputError when none.
+// check/ verifies (the objective -> +inf there, check/bound_objective.hpp), or an irrational pole's
+// isolating interval (pole_lo, pole_hi) and side; InputError when none. (The pole at the band's end
+// wT = pi, z = -1 met by a fractional delay, has the local form: bound_certificate. The checkers still
+// take the older evidence (end_lo, end_hi] isolating cos(pi/q).)
 nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, const WitnessObjective& o) {
   claim["status"] = "exact";
   claim["infinite"] = true;
@@ -242,16 +243,6 @@ nlohmann::json infinite_bound_evidence(nlohmann::json j, nlohmann::json claim, c
   // interval, open, the ends no roots of the objective's denominator
   for (const RootInterval& r : irrational)
     for (long side : {-1L, 1L}) candidates.push_back({{"pole_lo", r.lo.str()}, {"pole_hi", r.hi.str()}, {"side", side}});
-  // the pole at the band's irrational end cos(pi/q) (z = -1 with t_d/T = p/q, q >= 4): an interval
-  // (end_lo, end_hi] around it, narrower until nothing else of the objective lies in it
-  const long q = check::detail::read_delay_model(j["model"]).q;
-  if (q >= 2) {
-    const rational ce = exact_rational(std::cos(M_PI / static_cast<double>(q)));
-    for (int k = 8; k <= 48; k += 8) {
-      const rational d = rational(1) / rational(pow(integer(2), k));
-      candidates.push_back({{"end_lo", rational(ce - d).str()}, {"end_hi", rational(ce + d > 1 ? rational(1) : rational(ce + d)).str()}});
-    }
-  }
   for (const nlohmann::json& e : candidates) {
     j["evidence"] = e;
     try {
@@ -408,9 +399,12 @@ nlohmann::json bound_max_cells_evidence(const passivity::GainProblem& g, const p
 
 nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProblem& p,
                                  const passivity::Bound& b, int digits) {
-  // a finite b* beyond the sizes above has the cells' evidence (check/bound_cells.hpp)
+  // a finite b* beyond the sizes above has the cells' evidence (check/bound_cells.hpp); b* = +inf from H's
+  // pole at z = -1 met by a fractional delay (t_d/T not whole) the local form, at any size (check/bound_check.hpp)
   const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H));
-  if (!long_delay) check_certificate_size(p.H, p);
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const bool at_minus_one = b.infinite && den(nu) != 1 && p.H.den()(rational(-1)) == 0;
+  if (!long_delay && !at_minus_one) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = certificate_header("bound");
@@ -423,6 +417,20 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   nlohmann::json claim;
   claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
                                    : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  if (at_minus_one) {  // the sign at z = -1 may be -inf while another pole gives +inf: then the forms below
+    nlohmann::json local = j;
+    local["claim"] = claim;
+    local["claim"]["status"] = "exact";
+    local["claim"]["infinite"] = true;
+    local["evidence"] = {{"pole_at_z", "-1"}};
+    bool shown = false;
+    try {
+      shown = check::check_certificate(local).verified;
+    } catch (const InputError&) {  // beyond the checkers' terms (a delay above 100000): refused below by name
+    }
+    if (shown) return local;
+    check_certificate_size(p.H, p);
+  }
   if (b.infinite) return infinite_bound_evidence(j, claim, witness_objective(p));
   if (long_delay) {
     j["evidence"] = bound_cells_evidence(p, b, claim);

@@ -51,6 +51,34 @@ Verdict check_infinite(const nlohmann::json& evidence, const TransferFunction& H
                     detail::shortened(c_p) + (side > 0 ? " from above" : " from below") + " (a pole of H on the unit circle)"};
 }
 
+// b* = +inf at the band's end wT = pi from H's simple pole at z = -1 met by a fractional delay
+// (evidence.pole_at_z = "-1"; bound_check.hpp, the local form): H = H~ + rho/(z + 1), rho = N(-1)/D'(-1),
+// the objective's pole term T rho sin((nu + 1) theta)/(2 sin theta) -> +inf iff rho sin(nu pi) < 0,
+// sign sin(nu pi) = (-1)^floor(nu) for nu = P/q not an integer.
+Verdict check_infinite_at_minus_one(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm) {
+  if (!evidence.at("pole_at_z").is_string() || evidence.at("pole_at_z").get<std::string>() != "-1")
+    throw InputError("evidence.pole_at_z: only \"-1\" (the band's end wT = pi) is a pole this form takes");
+  if (dm.q == 1)
+    return {false, "b* = +inf not shown: the delay nu = " + std::to_string(dm.P) +
+                       " is a whole number of samples, so sin(nu pi) = 0 and the pole term stays finite at wT = pi"};
+  const P& N = H.num();
+  const P& D = H.den();
+  const rational m1(-1);
+  if (D(m1) != 0) return {false, "b* = +inf not shown: z = -1 is not a pole of H (D(-1) != 0)"};
+  const rational dD = D.derivative()(m1);
+  if (dD == 0) return {false, "b* = +inf not shown: the pole of H at z = -1 is not simple (D'(-1) = 0)"};
+  const rational rho = N(m1) / dD;  // N(-1) != 0: H is read in lowest terms
+  if (rho == 0) return {false, "b* = +inf not shown: N(-1) = 0 (no pole at z = -1)"};
+  const long floor_nu = dm.P / dm.q;  // P >= 0
+  const int sin_sign = floor_nu % 2 == 0 ? 1 : -1;
+  if ((rho > 0 ? 1 : -1) * sin_sign > 0)
+    return {false, "b* = +inf not shown: rho sin(nu pi) > 0 (rho = " + detail::shortened(rho) + ", nu = " + std::to_string(dm.P) + "/" +
+                       std::to_string(dm.q) + "): the objective tends to -inf as wT -> pi"};
+  return {true, "b* = +inf: H's simple pole at z = -1 (rho = N(-1)/D'(-1) = " + detail::shortened(rho) +
+                    ") gives the objective the term T rho sin((nu + 1) wT)/(2 sin wT), and rho sin(nu pi) < 0 (nu = " +
+                    std::to_string(dm.P) + "/" + std::to_string(dm.q) + "): it tends to +inf as wT -> pi"};
+}
+
 // b* in [lo, hi] by cells (check/bound_cells.hpp): evidence.cells the cells' right ends, evidence.witness_theta.
 Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm, const rational& lo,
                     const rational& hi) {
@@ -77,19 +105,25 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
   const bool cells = !infinite && evidence.contains("cells");  // the long-delay form (check/bound_cells.hpp)
-  if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
+  const bool at_minus_one = infinite && evidence.contains("pole_at_z");  // the local form: nothing expanded
+  if (at_minus_one) detail::only_fields(evidence, {"pole_at_z"}, "evidence");
+  else if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
   else if (cells) detail::only_fields(evidence, {"cells", "witness_theta"}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   const detail::DelayModel dm = detail::read_delay_model(model);
   const rational& eta = dm.eta;
   const TransferFunction H = detail::model_tf(model, dm.T, HiddenPoles::allow_marginal);  // as `bound` reads it
   // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
-  if (!cells) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
+  if (!cells && !at_minus_one) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
   const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
   if (range.refuted) return {false, *range.refuted};
   if (infinite && !range.infinite) throw InputError("claim.infinite: false (a finite claim has no such field)");
+  if (range.infinite && at_minus_one) {
+    if (range.status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
+    return check_infinite_at_minus_one(evidence, H, dm);
+  }
   if (range.infinite) return check_infinite(evidence, H, dm, range.status);
   const std::string& status = range.status;
   const rational &lo = range.lo, &hi = range.hi;

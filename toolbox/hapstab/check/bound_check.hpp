@@ -33,10 +33,21 @@
 //           t_d/T = p/q: c_p = cos(theta_p/q)) is given by an interval (evidence.pole_lo, pole_hi)
 //           isolating it and the side (unbounded_inside_fails); the band's irrational end
 //           cos(pi/q) by (end_lo, end_hi] (unbounded_at_end_fails).
+//   (+inf, the local form: evidence.pole_at_z = "-1", nothing expanded, no size limit) H's simple pole at
+//           z = -1 met by a fractional delay nu = n + t_d/T = P/q, q >= 2. With H = H~ + rho/(z + 1),
+//           rho = N(-1)/D'(-1) (D(-1) = 0, D'(-1) != 0; N(-1) != 0 as H is read in lowest terms), H~ has
+//           no pole at -1, so T Re{H~ e^{-j nu theta}/(1 - z)} stays bounded near theta = wT = pi; and
+//           since (1 + z)(1 - z) = 1 - z^2 = -2j sin(theta) e^{j theta},
+//             T Re{rho e^{-j nu theta}/((1 + z)(1 - z))} = T rho sin((nu + 1) theta)/(2 sin theta),
+//           whose numerator tends to -rho sin(nu pi) != 0 while sin theta -> 0+ (theta -> pi-): the
+//           objective tends to +inf iff rho sin(nu pi) < 0, and sign sin(nu pi) = (-1)^floor(nu) (nu not
+//           an integer). Exact: rho is rational, floor(nu) = P div q. The Tustin wall with t_d = 1500.5 T
+//           (+inf) against 1501.5 T (-inf: this form refutes it).
 // Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
 // takes ~7 s), else the certificate is refused (InputError) rather than checked for hours --
-// unless its evidence is the cells' form (evidence.cells, evidence.witness_theta; a finite claim):
-// f < hi cell by cell and f(theta0) > lo in balls, the delay never expanded (check/bound_cells.hpp).
+// unless its evidence is the local form above (b* = +inf at z = -1) or the cells' form (evidence.cells,
+// evidence.witness_theta; a finite claim): f < hi cell by cell and f(theta0) > lo in balls, the delay never
+// expanded (check/bound_cells.hpp).
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,
 // eta >= 0, lo <= hi, the printed decimals (claim.printed_lo/hi, claim.printed) are the numbers
 // claimed, exactly.
