@@ -423,12 +423,13 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
     local["claim"]["status"] = "exact";
     local["claim"]["infinite"] = true;
     local["evidence"] = {{"pole_at_z", "-1"}};
-    bool shown = false;
+    check::Verdict v;
     try {
-      shown = check::check_certificate(local).verified;
-    } catch (const InputError&) {  // beyond the checkers' terms (a delay above 100000): refused below by name
+      v = check::check_certificate(local);
+    } catch (const InputError& e) {  // beyond the checkers' terms (a delay above 100000)
+      throw InputError(std::string("--certificate: the checkers do not take this model (") + e.what() + "): no certificate");
     }
-    if (shown) return local;
+    if (v.verified) return local;
     check_certificate_size(p.H, p);
   }
   if (b.infinite) return infinite_bound_evidence(j, claim, witness_objective(p));
