@@ -1029,6 +1029,16 @@ def cells_kernel(H, T, eta, nu):
     out by hand below, each polynomial shifted exactly to the cell's centre in c."""
     from mpmath import iv
     iv.prec = 192
+    # H's simple pole at z = -1 with an integer delay n (the Tustin wall delayed): H = G + rho/(z + 1), G without it,
+    # and the pole's part T Re{rho e^{-j n theta}/(1 - z^2)} = T rho sin((n + 1) theta)/(2 sin theta) (1 - z^2 =
+    # -2j sin(theta) z, as in bound_infinite_at_minus_one): f gains (T/2) rho K(theta), K = sin(m theta)/sin(theta),
+    # m = n + 1, finite on [0, pi] (m sinc(m theta)/sinc(theta) near 0, (-1)^(m+1) m sinc(m phi)/sinc(phi) in
+    # phi = pi - theta near pi). A fractional delay keeps the pole in B: no cell bounds f there.
+    rho, m = Fraction(0), 0
+    if nu.denominator == 1 and peval(H.den, Fraction(-1)) == 0 and peval(pderiv(H.den), Fraction(-1)) != 0:
+        rho = peval(H.num, Fraction(-1)) / peval(pderiv(H.den), Fraction(-1))
+        m = nu.numerator + 1
+        H = H - RF([rho], [Fraction(1), Fraction(1)])
     N, D = H.num, H.den
     na, nb = on_circle(N)
     da, db = on_circle(D)
@@ -1088,6 +1098,32 @@ def cells_kernel(H, T, eta, nu):
         (f1, d1), (f2, d2) = series(iv.mpf([x.a, 1])), direct(iv.mpf([1, x.b]))
         return iv.mpf([min(f1.a, f2.a), max(f1.b, f2.b)]), iv.mpf([min(d1.a, d2.a), max(d1.b, d2.b)])
 
+    def sinc_any(x):  # sinc2 for an interval of either sign (sinc even, sinc' odd)
+        if x.a >= 0:
+            return sinc2(x)
+        if x.b <= 0:
+            f, d = sinc2(-x)
+            return f, -d
+        f, d = sinc2(iv.mpf([0, max(-x.a, x.b)]))
+        w = max(abs(d.a), abs(d.b))
+        return f, iv.mpf([-w, w])
+
+    vm, vrho = iv.mpf(m), q(rho)
+
+    def pole_k(th):  # K(theta) = sin(m theta)/sin(theta) and K'(theta), over the interval th
+        if th.b <= 1.5:
+            g1, g1d = sinc_any(vm * th)
+            g2, g2d = sinc_any(th)
+            return vm * g1 / g2, vm * (vm * g1d * g2 - g1 * g2d) / (g2 * g2)
+        phi = iv.pi - th
+        if phi.b <= 1.5:
+            sign = 1 if m % 2 == 1 else -1  # (-1)^(m + 1)
+            h1, h1d = sinc_any(vm * phi)
+            h2, h2d = sinc_any(phi)
+            return sign * vm * h1 / h2, -sign * vm * (vm * h1d * h2 - h1 * h2d) / (h2 * h2)
+        sm, cm, s1, c1 = iv.sin(vm * th), iv.cos(vm * th), iv.sin(th), iv.cos(th)
+        return sm / s1, (vm * cm * s1 - sm * c1) / (s1 * s1)
+
     def f_and_df(th, centred=None):
         c, s = iv.cos(th), iv.sin(th)
         ps, t = (polys, c) if centred is None else (centred[0], c - q(centred[1]))
@@ -1105,6 +1141,9 @@ def cells_kernel(H, T, eta, nu):
         dR = -s * da_ * cn - vnu * a * sn - s * de_ * S + e * dS
         f = veta + vT * half * R / b
         df = vT * half * (dR * b + R * s * db_) / (b * b)
+        if m:
+            k, dk = pole_k(th)
+            f, df = f + vT * half * vrho * k, df + vT * half * vrho * dk
         return f, df
 
     def value(theta):

@@ -1,6 +1,7 @@
 """Mutation campaign of the `bound` certificate's cells form (check/bound_cells.hpp): random models beyond the
 expanded form's size (walls K + B(z - 1)/(Tz) of either sign of B, a first-order lag g(z - a)/(z - b), a
-resonance r from the circle, delays n = 1001-3000, a fractional delay t_d = (p/q) T in a third), each
+resonance r from the circle, the Tustin wall K + 2B(z - 1)/(T(z + 1)) (since stop 81: its pole at z = -1 set
+apart, integer delays only), delays n = 1001-3000, a fractional delay t_d = (p/q) T in a third), each
 certificate perturbed in the ways below, every mutant through both checkers with the exit code it must get
 (0 the unmutated; 1 refuted: the claim moved past b*, the cells ending below pi, two ends out of order, the
 witness beyond pi, H doubled; 2 malformed, named).
@@ -22,7 +23,10 @@ from loop_max_case import exits
 
 def model(rng):
     T = Fraction(1, rng.choice([100, 1000, 2000]))
-    kind = rng.choice(["wall", "wall", "lag", "resonance"])
+    kind = rng.choice(["wall", "wall", "lag", "resonance", "tustin"])
+    if kind == "tustin":  # a simple pole at z = -1, set apart with an integer delay (since stop 81)
+        H, sets = "K + 2*B*(z-1)/(T*(z+1))", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
+        return T, H, sets, rng.randint(1001, 3000), None
     if kind == "wall":
         H, sets = "K + B*(z-1)/(T*z)", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
     elif kind == "lag":

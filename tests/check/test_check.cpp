@@ -5,11 +5,13 @@
 // (a diagonal G: the least SISO level; a coupled 2x2 against mpmath). The
 // mutation campaign (tests/check/mutate.py, ctest check_mutations) runs them against producers.
 #include <cmath>
+#include <complex>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "hapstab/check/bound_cells.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
 #include "hapstab/check/nonnegative.hpp"
@@ -155,6 +157,33 @@ TEST(BoundCheck, InfiniteAtMinusOneLocalForm) {
   auto beside = cert("K/(z+1)", "-1", 1500, "1/4");
   beside["evidence"]["side"] = 1;
   EXPECT_THROW(check_certificate(beside), InputError);
+}
+
+// The cells' kernel with H's simple pole at z = -1 set apart (integer delays, since stop 81): f(theta) of the
+// Tustin wall K + 2B(z - 1)/(T(z + 1)) against (45) as written, Re{T H(z) z^-n/(1 - z)}, in complex long double
+// with 1 - z = -2j sin(theta/2) e^{j theta/2} and 1 + z = 2 cos(theta/2) e^{j theta/2} (no cancellation near 0 or
+// pi; 1e-9 relative); at pi itself the limit (T/2)(-1)^n (K + 2B/T + rho (n + 1)): H - rho/(z + 1) = K + 2B/T,
+// K_m(pi) = m (-1)^(m+1), rho = -4B/T -- f is finite there.
+TEST(BoundCells, TheTustinWallsPoleSetApartAgreesWithTheDefinition) {
+  const rational T(1, 1000), K(1000), B(5);
+  const RationalFunction<rational> H(P{K * T - 2 * B, K * T + 2 * B}, P{T, T});  // ascending powers of z
+  for (long n : {0L, 1L, 7L, 1000L}) {
+    const detail::KernelForm f = detail::kernel_form(H, T, rational(n), rational(0));
+    ASSERT_EQ(f.rho, -4 * B / T);
+    for (const double th : {1e-7, 0.3, 1.2, 1.5707, 2.5, 3.14, M_PI - 1e-6}) {
+      using C = std::complex<long double>;
+      const long double t = th, Tl = 1e-3L;
+      const C half = std::polar(1.0L, t / 2);
+      const C one_minus_z = C(0, -2) * std::sin(t / 2) * half, one_plus_z = 2.0L * std::cos(t / 2) * half;
+      const C h = 1000.0L + 2.0L * 5.0L * (-one_minus_z) / (Tl * one_plus_z);
+      const long double want = (Tl * h * std::polar(1.0L, -static_cast<long double>(n) * t) / one_minus_z).real();
+      const double got = detail::objective_at(f, rational(th)).v;
+      EXPECT_NEAR(got, static_cast<double>(want), 1e-9 * std::max(1.0L, std::fabs(want))) << "n = " << n << ", theta = " << th;
+    }
+    const double at_pi = static_cast<double>(T / 2 * (K + 2 * B / T + f.rho * rational(n + 1)) * (n % 2 == 0 ? 1 : -1));
+    const double got = detail::objective_at(f, rational(355, 113)).v;  // 355/113 - pi ~ 2.7e-7
+    EXPECT_NEAR(got, at_pi, 1e-3 * std::fabs(at_pi) + 1e-3) << "n = " << n;
+  }
 }
 
 // An irrational pole inside the band: H = K/(z^2 + 1) (poles at z = +-j), T = 1, t_d = T/3 (q = 3,

@@ -721,6 +721,33 @@ def max_cert(H, claim, evidence, delay=0):
             "claim": claim, "evidence": evidence}
 
 
+class CellsTustinPole(unittest.TestCase):
+    """cells_kernel with H's simple pole at z = -1 set apart (integer delays, since stop 81): f of the Tustin wall
+    K + 2B(z - 1)/(T(z + 1)) at single points against (45) as written in mpmath at 50 digits (1 - z =
+    -2j sin(theta/2) e^{j theta/2}, 1 + z = 2 cos(theta/2) e^{j theta/2}: no cancellation); at pi the limit
+    (T/2)(-1)^n (K + 2B/T + rho (n + 1)), rho = -4B/T."""
+
+    def test_against_the_definition(self):
+        import mpmath as mp
+        T, K, B = Fraction(1, 1000), Fraction(1000), Fraction(5)
+        H = hc.parse_h("K + 2*B*(z-1)/(T*(z+1))", T, {"K": K, "B": B}, marginal=True)
+        with mp.workdps(50):
+            for n in (0, 1, 7, 1000):
+                value = hc.cells_kernel(H, T, Fraction(0), Fraction(n))[0]
+                for th in (Fraction(1, 10 ** 7), Fraction(3, 10), Fraction(15707, 10000), Fraction(314, 100),
+                           Fraction(355, 113) - Fraction(1, 10 ** 6)):
+                    t = mp.mpf(th.numerator) / th.denominator
+                    half = mp.expj(t / 2)
+                    omz, opz = -2j * mp.sin(t / 2) * half, 2 * mp.cos(t / 2) * half
+                    h = 1000 + 10 * (-omz) / (mp.mpf(1) / 1000 * opz)
+                    want = mp.re(mp.mpf(1) / 1000 * h * mp.expj(-n * t) / omz)
+                    got = value(th)
+                    self.assertTrue(got.a - mp.mpf(10) ** -20 <= want <= got.b + mp.mpf(10) ** -20, (n, float(th), got, want))
+                at_pi = T / 2 * (K + 2 * B / T - 4 * B / T * (n + 1)) * (1 if n % 2 == 0 else -1)
+                near = value(Fraction(355, 113))  # 2.7e-7 beyond pi: the kernel's formula holds there too
+                self.assertLess(abs(float(near.mid) - float(at_pi)), 1e-3 * abs(float(at_pi)) + 1e-3, (n, near, at_pi))
+
+
 class BoundMax(unittest.TestCase):
     """The cases of test_check.cpp's BoundMaxCheck: the wall K + B (z - 1)/(T z) without delay has
     b*(K) = K T/2 + B (paper 001 (46)): B = 1, b = 2, T = 1/1000 give K_max = 2000 exactly; H = K with

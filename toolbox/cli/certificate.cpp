@@ -42,8 +42,10 @@ constexpr long certificate_max_size = 1000;
 constexpr long cells_preferred_size = 64, cells_exact_size = 300;
 
 // Whether H has a pole on the unit circle: |D(e^{jw})|^2 = B(cos w) vanishes in [-1, 1] (check/bound_cells.hpp).
-bool pole_on_circle(const RationalFunction<rational>& H) {
-  return !isolate_real_roots(check::detail::kernel_form(H, rational(1), rational(0), rational(0)).B, rational(-1), rational(1)).empty();
+bool pole_on_circle(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
+  // the cells' kernel sets a simple pole at z = -1 apart for an integer delay (check/bound_cells.hpp)
+  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  return !isolate_real_roots(check::detail::kernel_form(H, rational(1), nu, rational(0)).B, rational(-1), rational(1)).empty();
 }
 
 // The cells' form for a finite b* or K_max of this size and status (above), or the expanded one; refused
@@ -401,7 +403,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
                                  const passivity::Bound& b, int digits) {
   // a finite b* beyond the sizes above has the cells' evidence (check/bound_cells.hpp); b* = +inf from H's
   // pole at z = -1 met by a fractional delay (t_d/T not whole) the local form, at any size (check/bound_check.hpp)
-  const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H));
+  const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H, p));
   const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
   const bool at_minus_one = b.infinite && den(nu) != 1 && p.H.den()(rational(-1)) == 0;
   if (!long_delay && !at_minus_one) check_certificate_size(p.H, p);
@@ -472,7 +474,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   // beyond the expanded form's size: the cells' form (bound_max_cells_evidence)
   const integer size = std::max(certificate_size(g.base.H, g.base), certificate_size(g.H1, g.base));
   const bool long_delay = size > certificate_max_size ||
-                          (!m.infinite && m.outcome != Outcome::fails && cells_form(size, m.status, pole_on_circle(g.base.H) || pole_on_circle(g.H1)));
+                          (!m.infinite && m.outcome != Outcome::fails && cells_form(size, m.status, pole_on_circle(g.base.H, g.base) || pole_on_circle(g.H1, g.base)));
   if (long_delay && m.infinite)
     throw InputError("--certificate: sup " + K + " = +inf beyond the expanded form's size has no cells' form: no certificate");
   if (long_delay && m.outcome == Outcome::fails && m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");

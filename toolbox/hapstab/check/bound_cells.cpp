@@ -34,19 +34,32 @@ Jet<Ball> objective(const KernelForm& f, const Ball& theta) {
   const Jet<Ball> cos_nu{cnu, Ball(0L) - nu * snu, Ball(0L) - nu * nu * cnu};
   const Jet<Ball> s_nu = jet::kernel_S(th, nu, snu, cnu, sh, ch);
   const Jet<Ball> num = jet::horner(balls(f.A), c) * cos_nu + jet::horner(balls(f.E), c) * s_nu;
-  Jet<Ball> out = Ball(f.T / 2) * (num / b);
+  Jet<Ball> r = num / b;
+  if (f.rho != 0) {  // H's simple pole at z = -1, integer nu: rho K_{nu + 1}(theta) (bound_cells.hpp)
+    Ball sm, cm;
+    flint::sin_cos(Ball(f.m) * theta, sm, cm);
+    r = r + Ball(f.rho) * jet::kernel_K(th, f.m, sm, cm, s1, c1);
+  }
+  Jet<Ball> out = Ball(f.T / 2) * r;
   out.v = out.v + Ball(f.eta);
   return out;
 }
 
 }  // namespace
 
-KernelForm kernel_form(const RationalFunction<rational>& H, const rational& T, const rational& nu, const rational& eta) {
+KernelForm kernel_form(const RationalFunction<rational>& H0, const rational& T, const rational& nu, const rational& eta) {
   using namespace circle;
+  KernelForm f;
+  RationalFunction<rational> H = H0;
+  const rational m1(-1);
+  if (denominator(nu) == 1 && H.den()(m1) == 0 && H.den().derivative()(m1) != 0) {  // rho/(z + 1) apart
+    f.rho = H.num()(m1) / H.den().derivative()(m1);
+    f.m = numerator(nu).convert_to<long>() + 1;
+    H = H - RationalFunction<rational>(P(f.rho), P{rational(1), rational(1)});
+  }
   const OnCircle n = at_circle(H.num()), d = at_circle(H.den());
   const OnCircle xy = mul(n, OnCircle{d.a, P() - d.b});  // N conj(D) = X + j s Y
   const P one_plus_c{rational(1), rational(1)}, one_minus_c{rational(1), rational(-1)};
-  KernelForm f;
   f.A = xy.a - one_plus_c * xy.b;
   f.E = xy.a + one_minus_c * xy.b;
   f.B = d.a * d.a + one_minus_c2() * d.b * d.b;

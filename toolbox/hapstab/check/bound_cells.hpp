@@ -23,7 +23,14 @@
 //           f on the part of the last cell beyond pi is f's formula there (the identities above
 //           hold for every theta in (0, 2 pi)), so the cell bounds its part inside too;
 //   (lower) b* >= lo if f(theta0) > lo at the witness theta0 in [0, pi] (a ball of f at the point).
-// B's ball containing 0 (a pole of H on the circle) makes the cell's bound infinite: it fails.
+// B's ball containing 0 (a pole of H on the circle) makes the cell's bound infinite: it fails -- except a
+// simple pole at z = -1 with nu = n an integer (the Tustin wall with a delay, since stop 81): H = H~ + rho/(z + 1),
+// rho = N(-1)/D'(-1), A, E, B are H~'s (no pole at -1: B(-1) != 0), and the pole's part is
+//   T Re{rho e^{-j n theta}/((1 + z)(1 - z))} = T rho sin((n + 1) theta)/(2 sin theta)
+// ((1 + z)(1 - z) = 1 - z^2 = -2j sin(theta) e^{j theta}), so f gains (T/2) rho K_{n+1}(theta),
+// K_m = sin(m theta)/sin(theta), finite on [0, pi] for an integer m (m sinc(m theta)/sinc(theta) near 0, its
+// mirror in pi - theta near pi: numeric/jet.hpp's kernel_K).  With a fractional nu it tends to +-inf at pi
+// (bound_check.hpp's local form): no cell bounds it.
 // Size limit: 400000 cells (a delay of 10^5 samples needs ~2 10^5; checked in ~3 s).
 //
 // Implements: paper 001 (45), (53), (54).
@@ -47,6 +54,8 @@ constexpr size_t max_bound_cells = 400000;  ///< ~2 per period 2 pi/nu: delays t
 struct KernelForm {
   Polynomial<rational> A, E, B;
   rational T, nu, eta;
+  rational rho = 0;  ///< H's simple pole at z = -1 set apart (integer nu): f gains (T/2) rho K_m, m = nu + 1
+  long m = 0;
 };
 KernelForm kernel_form(const RationalFunction<rational>& H, const rational& T, const rational& nu, const rational& eta);
 
