@@ -41,10 +41,15 @@ constexpr long certificate_max_size = 1000;
 // the unit circle (the cells bound f only where |D|^2 > 0), which keeps the expanded form up to 1000.
 constexpr long cells_preferred_size = 64, cells_exact_size = 300;
 
+// The whole delay in samples, nu = n + t_d/T.
+rational delay_samples(const passivity::BoundProblem& p) {
+  return rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+}
+
 // Whether H has a pole on the unit circle: |D(e^{jw})|^2 = B(cos w) vanishes in [-1, 1] (check/bound_cells.hpp).
 bool pole_on_circle(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
   // the cells' kernel sets a simple pole at z = -1 apart for an integer delay (check/bound_cells.hpp)
-  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational nu = delay_samples(p);
   return !isolate_real_roots(check::detail::kernel_form(H, rational(1), nu, rational(0)).B, rational(-1), rational(1)).empty();
 }
 
@@ -97,7 +102,7 @@ struct WitnessObjective {
 
 WitnessObjective witness_objective(const passivity::BoundProblem& p) {
   WitnessObjective w;
-  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational tau = delay_samples(p);
   if (den(tau) == 1) {
     w.f = passivity::objective(p.H, p.T, num(tau).convert_to<int>()).f;
     return w;
@@ -146,11 +151,11 @@ std::optional<rational> find_witness(const WitnessObjective& o, const rational& 
 // The checkers expand the delay: their polynomials in cos(wT/q) have size q (deg H + 1) + P
 // (check/bound_objective.hpp); InputError beyond their limit.
 integer certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
-  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational tau = delay_samples(p);
   return den(tau) * (std::max(H.num().degree(), H.den().degree()) + 1) + num(tau);
 }
 void check_certificate_size(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
-  const rational tau = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational tau = delay_samples(p);
   const integer size = certificate_size(H, p);
   if (size > certificate_max_size)
     throw InputError("--certificate: the checkers expand the delay t_d/T = " + to_decimal(tau, 12) +
@@ -321,7 +326,7 @@ nlohmann::json cells_below(const check::detail::KernelForm& f, const rational& h
 // The kernel form of H (check/bound_cells.hpp) with nu = n + t_d/T; refused by name where H has a pole
 // on the unit circle (the cells bound f only where |D|^2 > 0).
 check::detail::KernelForm cells_kernel(const RationalFunction<rational>& H, const passivity::BoundProblem& p) {
-  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational nu = delay_samples(p);
   check::detail::KernelForm f = check::detail::kernel_form(H, p.T, nu, p.eta);
   if (!isolate_real_roots(f.B, rational(-1), rational(1)).empty())
     throw InputError("--certificate: H has a pole on the unit circle (|D|^2 vanishes at some cos wT in [-1, 1]), which the "
@@ -404,7 +409,7 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   // a finite b* beyond the sizes above has the cells' evidence (check/bound_cells.hpp); b* = +inf from H's
   // pole at z = -1 met by a fractional delay (t_d/T not whole) the local form, at any size (check/bound_check.hpp)
   const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H, p));
-  const rational nu = rational(p.delay) + (p.frac_delay ? *p.frac_delay / p.T : rational(0));
+  const rational nu = delay_samples(p);
   const bool at_minus_one = b.infinite && den(nu) != 1 && p.H.den()(rational(-1)) == 0;
   if (!long_delay && !at_minus_one) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
