@@ -831,9 +831,6 @@ struct Cover {
       }
     return rational(h);
   }
-  // Where the eigenbasis fails (two eigenvalues colliding: R near singular), a Stein certificate
-  // on the ball matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp's schur_decide: P - M^T P M > 0
-  // for every matrix of the ball): the largest of the widths tried, 0 when none is certified.
   // Every M(p), p in [a, b], Schur stable by one Lyapunov P (numeric/lyapunov_ball.hpp: the Stein
   // inequality is convex in M, and M(p) is affine in p, so its two ends suffice). The walk towards 0
   // takes it where M(0) is Schur stable: the steps above shrink near 0 where a delay register's
@@ -851,6 +848,9 @@ struct Cover {
     }
     return lyapunov_proves_segment_stable(A, B);
   }
+  // Where the eigenbasis fails (two eigenvalues colliding: R near singular), a Stein certificate
+  // on the ball matrix M0 + [a, b] M1 (numeric/ball_matrix.hpp's schur_decide: P - M^T P M > 0
+  // for every matrix of the ball): the largest of the widths tried, 0 when none is certified.
   rational stein(const rational& c, int dir, const rational& scale) {
     const long n = M0.rows();
     rational w = scale / 10;
@@ -1441,9 +1441,8 @@ bool cover_below(Cover& cov, const rational& p0, const rational& top, const Encl
     up += h;
   }
   // down: to 0 where M(0) is Schur stable (a step of the walk, or one Lyapunov P for all of [0, down],
-  // reaches it); where an eigenvalue of
-  // M(0) is on the circle (a device's position integrator under a spring scaled by p) the steps
-  // shrink geometrically towards 0 and the walk stops at 10^-6 of the crossing
+  // reaches it); where an eigenvalue of M(0) is on the circle (a device's position integrator under a
+  // spring scaled by p) the steps shrink geometrically towards 0 and the walk stops at 10^-6 of the crossing
   const rational floor = top / 1000000;
   cov.prec = 64;
   rational tried_segment = 2 * down;  // [0, down] by one P, tried again each time down halves
