@@ -1033,11 +1033,18 @@ def cells_kernel(H, T, eta, nu):
     # and the pole's part T Re{rho e^{-j n theta}/(1 - z^2)} = T rho sin((n + 1) theta)/(2 sin theta) (1 - z^2 =
     # -2j sin(theta) z, as in bound_infinite_at_minus_one): f gains (T/2) rho K(theta), K = sin(m theta)/sin(theta),
     # m = n + 1, finite on [0, pi] (m sinc(m theta)/sinc(theta) near 0, (-1)^(m+1) m sinc(m phi)/sinc(phi) in
-    # phi = pi - theta near pi). A fractional delay keeps the pole in B: no cell bounds f there.
-    rho, m = Fraction(0), 0
-    if nu.denominator == 1 and peval(H.den, Fraction(-1)) == 0 and peval(pderiv(H.den), Fraction(-1)) != 0:
+    # phi = pi - theta near pi). A fractional delay (frac): the same part with the real m = nu + 1, finite below pi
+    # (its sinc form near 0, sin(m theta)/sin(theta) elsewhere); near pi sin(m theta) -> sin(nu pi + pi) = -sin(nu pi)
+    # != 0 over sin(theta) -> 0+, so rho K -> +inf (b* = +inf, no cell bounds it) or -inf. The cell holding pi,
+    # [a, b] with pi/2 < a < pi < b, is shown by tail_below: with rho sin(m theta) <= w < 0 on [a, pi] and
+    # 0 < sin(theta) <= sin(a) there, rho K <= w/sin(a); the rest of f by its value at a and its derivative.
+    rho, m, frac = Fraction(0), 0, False
+    if peval(H.den, Fraction(-1)) == 0 and peval(pderiv(H.den), Fraction(-1)) != 0:
         rho = peval(H.num, Fraction(-1)) / peval(pderiv(H.den), Fraction(-1))
-        m = nu.numerator + 1
+        if nu.denominator == 1:
+            m = nu.numerator + 1
+        else:
+            frac = True
         H = H - RF([rho], [Fraction(1), Fraction(1)])
     N, D = H.num, H.den
     na, nb = on_circle(N)
@@ -1108,7 +1115,7 @@ def cells_kernel(H, T, eta, nu):
         w = max(abs(d.a), abs(d.b))
         return f, iv.mpf([-w, w])
 
-    vm, vrho = iv.mpf(m), q(rho)
+    vm, vrho = (q(nu + 1) if frac else iv.mpf(m)), q(rho)
 
     def pole_k(th):  # K(theta) = sin(m theta)/sin(theta) and K'(theta), over the interval th
         if th.b <= 1.5:
@@ -1116,7 +1123,7 @@ def cells_kernel(H, T, eta, nu):
             g2, g2d = sinc_any(th)
             return vm * g1 / g2, vm * (vm * g1d * g2 - g1 * g2d) / (g2 * g2)
         phi = iv.pi - th
-        if phi.b <= 1.5:
+        if not frac and phi.b <= 1.5:
             sign = 1 if m % 2 == 1 else -1  # (-1)^(m + 1)
             h1, h1d = sinc_any(vm * phi)
             h2, h2d = sinc_any(phi)
@@ -1124,7 +1131,7 @@ def cells_kernel(H, T, eta, nu):
         sm, cm, s1, c1 = iv.sin(vm * th), iv.cos(vm * th), iv.sin(th), iv.cos(th)
         return sm / s1, (vm * cm * s1 - sm * c1) / (s1 * s1)
 
-    def f_and_df(th, centred=None):
+    def f_and_df(th, centred=None, pole=True):
         c, s = iv.cos(th), iv.sin(th)
         ps, t = (polys, c) if centred is None else (centred[0], c - q(centred[1]))
         u = th * half
@@ -1141,7 +1148,7 @@ def cells_kernel(H, T, eta, nu):
         dR = -s * da_ * cn - vnu * a * sn - s * de_ * S + e * dS
         f = veta + vT * half * R / b
         df = vT * half * (dR * b + R * s * db_) / (b * b)
-        if m:
+        if pole and (m or frac):
             k, dk = pole_k(th)
             f, df = f + vT * half * vrho * k, df + vT * half * vrho * dk
         return f, df
@@ -1149,7 +1156,22 @@ def cells_kernel(H, T, eta, nu):
     def value(theta):
         return f_and_df(q(theta))[0]
 
+    def tail_below(a, hi):  # the cell holding pi, frac only (above)
+        if (q(a) > iv.pi / 2) is not True:
+            return False
+        th = iv.mpf([q(a).a, iv.pi.b])
+        rest = f_and_df(q(a), pole=False)[0] + f_and_df(th, pole=False)[1] * iv.mpf([0, (iv.pi - q(a)).b])
+        w = (vrho * iv.sin(vm * th)).b
+        if not w < 0:
+            return False
+        return (rest + vT * half * (iv.mpf(w) / iv.sin(q(a)).b) < q(hi)) is True
+
     def cell_below(a, b, hi, depth=0):
+        if frac and (q(a) < iv.pi) is not False and (q(b) > iv.pi) is not False:  # the cell may hold pi
+            if (q(a) < iv.pi) is not True or (q(b) > iv.pi) is not True:
+                return False
+            return tail_below(a, hi) or (depth < 6 and cell_below(a, (a + b) / 2, hi, depth + 1) and
+                                         cell_below((a + b) / 2, b, hi, depth + 1))
         m, r = (a + b) / 2, (b - a) / 2
         fm = value(m)
         cm = Fraction(math.cos(float(m)))  # a rational near cos(m), the centre of c over the cell

@@ -6,7 +6,8 @@ of (53) where there is one (f(0) = (2n + 1) K T/2 - B for the delayed wall, the 
 numbers; H = 1: (2n + 1) T/2, Example 4), and each hand edit must get its exit code from both checkers
 (1: refuted, 2: malformed, named). A Tustin wall (a pole at z = -1: its B(c) vanishes at c = -1) had no cells' certificate: refused by name,
 nothing written before stop 81; now its simple pole at z = -1 is set apart (rho K_{n+1}, integer delays) and its
-cells' certificate verified by both, the claim holding (45) in mpmath. `bound --max K --damping b` at n = 1000 has the same form (check/bound_max_check.hpp): two finite K_max (one
+cells' certificate verified by both, the claim holding (45) in mpmath; with a fractional delay that sends f to -inf
+at pi (since stop 82) the cell holding pi has its own test, and the delay edited to send it to +inf is refuted. `bound --max K --damping b` at n = 1000 has the same form (check/bound_max_check.hpp): two finite K_max (one
 from the long-delay bracketing path, without a maximiser: the producer finds the witness) and K_max = 0, each
 verified by both, 8 hand edits.
 
@@ -138,7 +139,23 @@ def main():
         failures += not ok
         if ok:
             failures += run_cases(hapstab, [("the Tustin wall: " + what, c, want) for what, c, want in edits(tw)[:7]], tmp)
-    print("bound_cells_case: %d cases, %d failed" % (len(cases) + len(MODELS) + 1, failures))
+        # the Tustin wall with a fractional delay, nu = 301.75 (since stop 82; before, `bound` itself said "no path
+        # takes this case"): rho sin(nu pi) > 0, f -> -inf at pi, the cell holding pi shown by the tail test; the delay
+        # a sample less or more (floor(nu) even: +inf at pi) refuted by both
+        r, path = produce(hapstab, tmp, 10, "K + 2*B/T*(z-1)/(z+1)", {"K": 1000, "B": 50}, 301, ["--frac-delay", "3/4000"])
+        tf = json.load(open(path)) if os.path.exists(path) else {"evidence": {}, "claim": {}}
+        ref = IP.bstar(SumTF([IP.tustin(T, Fraction(1000), Fraction(50))]), T, Fraction(301) + Fraction(3, 4), 0)
+        ok = "cells" in tf["evidence"] and ref["kind"] == "finite" and \
+            Fraction(tf["claim"]["lo"]) <= Fraction(str(ref["value"])) + Fraction(1, 10 ** 9) and \
+            Fraction(str(ref["value"])) - Fraction(1, 10 ** 9) <= Fraction(tf["claim"]["hi"])
+        print("%s the Tustin wall at nu = 301.75: the cells' form, [%s, %s] holds the reference %s (exit %d)" % (
+            "ok  " if ok else "FAIL", tf["claim"].get("printed_lo"), tf["claim"].get("printed_hi"), ref.get("value"), r.returncode))
+        failures += not ok
+        if ok:
+            failures += run_cases(hapstab, [("the Tustin wall, nu = 301.75: " + what, c, want) for what, c, want in edits(tf)[:7]] +
+                                  [("the Tustin wall, nu = 301.75: the delay one sample less (+inf at pi)",
+                                    with_field(tf, ["model", "delay"], 300), 1)], tmp)
+    print("bound_cells_case: %d cases, %d failed" % (len(cases) + len(MODELS) + 2, failures))
     return 1 if failures else 0
 
 

@@ -1,7 +1,7 @@
 """Mutation campaign of the `bound` certificate's cells form (check/bound_cells.hpp): random models beyond the
 expanded form's size (walls K + B(z - 1)/(Tz) of either sign of B, a first-order lag g(z - a)/(z - b), a
 resonance r from the circle, the Tustin wall K + 2B(z - 1)/(T(z + 1)) (since stop 81: its pole at z = -1 set
-apart, integer delays only), delays n = 1001-3000, a fractional delay t_d = (p/q) T in a third), each
+apart; since stop 82 half of them with a fractional delay where f -> -inf at pi), delays n = 1001-3000, a fractional delay t_d = (p/q) T in a third), each
 certificate perturbed in the ways below, every mutant through both checkers with the exit code it must get
 (0 the unmutated; 1 refuted: the claim moved past b*, the cells ending below pi, two ends out of order, the
 witness beyond pi, H doubled; 2 malformed, named).
@@ -26,7 +26,12 @@ def model(rng):
     kind = rng.choice(["wall", "wall", "lag", "resonance", "tustin"])
     if kind == "tustin":  # a simple pole at z = -1, set apart with an integer delay (since stop 81)
         H, sets = "K + 2*B*(z-1)/(T*(z+1))", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
-        return T, H, sets, rng.randint(1001, 3000), None
+        n = rng.randint(1001, 3000)
+        if rng.random() < 1 / 2:  # since stop 82: a fractional delay on the side where f -> -inf at pi (rho sin(nu pi) > 0,
+            # rho = -4B/T, floor(nu) = n: odd for B > 0, even for B < 0); b* finite, the cell holding pi its own test
+            n += (n % 2 == 0) == (sets["B"] > 0)
+            return T, H, sets, n, "%s" % (Fraction(rng.randint(1, 5), rng.randint(6, 7)) * T)
+        return T, H, sets, n, None
     if kind == "wall":
         H, sets = "K + B*(z-1)/(T*z)", {"K": rng.choice([20, 200, 2000, 20000]), "B": rng.choice([-1, 1, 5, 50])}
     elif kind == "lag":
@@ -64,7 +69,10 @@ def mutants(cert, rng):
             ("no cells", with_field(cert, ["evidence", "cells"], []), 2),
             ("a cell end '1/0'", with_field(cert, ["evidence", "cells", k], "1/0"), 2),
             ("witness_c beside the cells", with_field(cert, ["evidence", "witness_c"], "1"), 2),
-            ("a field added to the evidence", with_field(cert, ["evidence", "theta"], "1"), 2)]
+            ("a field added to the evidence", with_field(cert, ["evidence", "theta"], "1"), 2)] + (
+        # the pole at z = -1 met by a fractional delay: a sample more sends f to +inf at pi (floor(nu)'s parity flips)
+        [("the delay a sample more (+inf at pi)", with_field(cert, ["model", "delay"], cert["model"]["delay"] + 1), 1)]
+        if "frac_delay" in cert["model"] and "(z+1)" in cert["model"]["H"] else [])
 
 
 def model_edit(cert, rng):

@@ -748,6 +748,36 @@ class CellsTustinPole(unittest.TestCase):
                 self.assertLess(abs(float(near.mid) - float(at_pi)), 1e-3 * abs(float(at_pi)) + 1e-3, (n, near, at_pi))
 
 
+class CellsTustinPoleFractional(unittest.TestCase):
+    """cells_kernel with H's simple pole at z = -1 and a fractional delay (since stop 82): f of the Tustin wall at
+    single points below pi against (45) as written in mpmath at 50 digits; the cell holding pi shown by the tail
+    test where rho sin(nu pi) > 0 (f -> -inf there: nu = 1.5, 2.75, 1501.75) and never where it is < 0 (f -> +inf:
+    nu = 0.5, 2.25), whatever the bound asked."""
+
+    def test_against_the_definition_and_the_tail(self):
+        import mpmath as mp
+        T, K, B = Fraction(1, 1000), Fraction(20), Fraction(5)
+        H = hc.parse_h("K + 2*B*(z-1)/(T*(z+1))", T, {"K": K, "B": B}, marginal=True)
+        with mp.workdps(50):
+            for nu in (Fraction(3, 2), Fraction(11, 4), Fraction(6007, 4), Fraction(1, 2), Fraction(9, 4)):
+                value, cell_below, _ = hc.cells_kernel(H, T, Fraction(0), nu)
+                v = mp.mpf(nu.numerator) / nu.denominator
+                for th in (Fraction(1, 10 ** 7), Fraction(3, 10), Fraction(15707, 10000), Fraction(314, 100), Fraction(314159, 100000)):
+                    t = mp.mpf(th.numerator) / th.denominator
+                    half = mp.expj(t / 2)
+                    omz, opz = -2j * mp.sin(t / 2) * half, 2 * mp.cos(t / 2) * half
+                    h = 20 + 10 * (-omz) / (mp.mpf(1) / 1000 * opz)
+                    want = mp.re(mp.mpf(1) / 1000 * h * mp.expj(-v * t) / omz)
+                    got = value(th)
+                    self.assertTrue(got.a - mp.mpf(10) ** -20 <= want <= got.b + mp.mpf(10) ** -20, (float(nu), float(th), got, want))
+                minus_inf = mp.sin(mp.pi * v) < 0  # rho = -4B/T < 0: -inf at pi iff sin(nu pi) < 0
+                a = Fraction(314159, 100000)  # 2.7e-6 below pi
+                shown = cell_below(a, Fraction(355, 113), Fraction(10 ** 6))
+                self.assertEqual(shown, minus_inf, (float(nu), shown))
+                if minus_inf:  # far below f's values near a: not shown
+                    self.assertFalse(cell_below(Fraction(3), Fraction(355, 113), Fraction(-10 ** 9)))
+
+
 class BoundMax(unittest.TestCase):
     """The cases of test_check.cpp's BoundMaxCheck: the wall K + B (z - 1)/(T z) without delay has
     b*(K) = K T/2 + B (paper 001 (46)): B = 1, b = 2, T = 1/1000 give K_max = 2000 exactly; H = K with

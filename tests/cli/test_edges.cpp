@@ -67,15 +67,23 @@ TEST(Edges, LongFractionalDelayOnTheNegativeSideIsFinite) {
   expect_holds(nlohmann::json::parse(r.out), "343.245985165267047037920715198", "t_d = 101.5 T");
 }
 
-// A pole at z = -1 with a fractional delay has only the exact path, whose cost grows ~degree^4:
-// a 174-sample wall with t_d = T/6 (degree 533) ran for minutes. It is refused by name at once,
-// beyond the exact path's limit (240), with exit 2.
-TEST(Edges, FractionalDelayBeyondTheExactPathsLimitIsRefusedByName) {
+// A pole at z = -1 with a fractional delay had only the exact path, whose cost grows ~degree^4: a
+// 174-sample Tustin wall (K = 2750, B = 2) with t_d = 5T/3 (degree 533) ran for minutes, then was
+// refused by name (exit 2). Since stop 82 the long-delay path takes it (f -> -inf at pi: its last
+// piece by the tail bound): b* = (2 nu + 1) K T/2 - B = 11579/24 exactly at w = 0 (nu = 527/3; the
+// mpmath reference on (45) as written, tests/verify/indep_passivity.py, gives 482.458333333333).
+TEST(Edges, FractionalDelayBeyondTheExactPathsLimitTakesTheLongDelayPath) {
   const auto r = run_cli("bound --H \"((27/4)*z + (-5/4))/((1/1000)*z + (1/1000))\" --T 1/1000 --delay 174 "
                          "--frac-delay 1/600 --json");
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("degree 533, more than the exact path's limit of 240"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("pole at z = -1"), std::string::npos) << r.out;
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["path"], "long_delay") << r.out;
+  EXPECT_EQ(j["status"], "exact") << r.out;
+  EXPECT_EQ(j["exact"], "11579/24") << r.out;
+  // a pole on the circle the long-delay path does not take (z = +-j) stays refused by name beyond the limit
+  const auto q = run_cli("bound --H \"(z-1)/(z^2+1)\" --T 1/1000 --delay 174 --frac-delay 1/600 --json");
+  EXPECT_EQ(q.code, 2) << q.out;
+  EXPECT_NE(q.out.find("more than the exact path's limit of 240"), std::string::npos) << q.out;
 }
 
 // The positive side stays +inf (paper 001, Example 3: 0 < t_d < T).

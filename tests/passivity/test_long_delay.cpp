@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
+#include <functional>
 #include <random>
 
 #include "hapstab/lti/parse.hpp"
@@ -157,6 +159,99 @@ TEST(LongDelay, TustinWallWithLongDelays) {
     EXPECT_EQ(c.path, BoundPath::long_delay);
     EXPECT_LE(static_cast<double>(best), to_real<double>(c.enclosure->hi) * (1 + 1e-15)) << n << ": " << c.decimal;
     EXPECT_GE(static_cast<double>(best), to_real<double>(c.enclosure->lo) * (1 - 1e-13)) << n << ": " << c.decimal;
+  }
+}
+
+// A pole of H at z = -1 met by a fractional delay nu = n + t_d/T (issue 46 item 1): the pole's part
+// (T/2) rho sin((nu + 1) theta)/sin(theta) tends to -(T/4) rho sin(nu pi) (+inf) at pi. With rho sin(nu pi)
+// > 0 it is -inf there and b* is finite, inside the band: the long-delay path takes it (its last piece by
+// the tail bound), agreeing with the exact path in cos(wT/q) where that runs -- both signs of rho, floor(nu)
+// even and odd, t_d/T = 3/2 (the issue's b* = 7.3223807083323998121..), 7/2, 4/3, 5/3, 5/4 (exit 3 before),
+// 7/4, and H = 1/(z + 1) with t_d = T/2 (b* = 3T/4 exactly at w = 0). The sign that gives +inf is no
+// case for it: b* = +inf from the exact divergence test, whichever path is asked.
+TEST(LongDelay, FractionalDelayBesideThePoleAtMinusOne) {
+  const std::map<std::string, rational> KB{{"K", rational(20)}, {"B", rational(5)}};
+  struct C {
+    std::string H;
+    int n;
+    rational tau;  // t_d/T
+  };
+  const std::vector<C> cases = {{"K + B*2*(z-1)/(T*(z+1))", 0, rational(3, 2)},  {"K + B*2*(z-1)/(T*(z+1))", 0, rational(7, 2)},
+                                {"K + B*2*(z-1)/(T*(z+1))", 0, rational(4, 3)},  {"K + B*2*(z-1)/(T*(z+1))", 0, rational(5, 3)},
+                                {"K + B*2*(z-1)/(T*(z+1))", 0, rational(5, 4)},  {"K + B*2*(z-1)/(T*(z+1))", 0, rational(7, 4)},
+                                {"K + B*2*(z-1)/(T*(z+1))", 15, rational(1, 5)}, {"1/(z+1)", 0, rational(1, 2)},
+                                {"1 - 3/(z+1) + 0.2*(z-1)/(z-0.5)", 11, rational(1, 3)},  // rho = -3, floor(nu) odd
+                                {"2/(z+1) + (z-1)/(z+1/2)", 4, rational(2, 3)}};          // rho = 2, floor(nu) even
+  for (const C& c : cases) {
+    BoundProblem p = make(c.H, "1/1000", KB, c.n);
+    p.frac_delay = c.tau * p.T;
+    SCOPED_TRACE(describe(p));
+    ASSERT_TRUE(passivity::detail::long_delay_applies(p, nullptr));
+    expect_paths_agree(p);
+  }
+  BoundProblem w = make("K + B*2*(z-1)/(T*(z+1))", "1/1000", KB, 0);
+  w.frac_delay = rational(3, 2000);
+  const Bound b = bound_certified(w, 30, BoundPath::long_delay);
+  EXPECT_EQ(b.status, Status::certified);
+  const rational issue_value = rational(integer("732238070833239981219")) * pow10(-20);  // the issue's 21 digits
+  EXPECT_LE(b.enclosure->lo, issue_value + pow10(-20)) << b.decimal;
+  EXPECT_GE(b.enclosure->hi, issue_value - pow10(-20)) << b.decimal;
+  BoundProblem h = make("1/(z+1)", "1/1000", {}, 0);
+  h.frac_delay = rational(1, 2000);
+  const Bound e = bound_certified(h, 30, BoundPath::long_delay);
+  EXPECT_EQ(e.status, Status::exact) << e.decimal;
+  EXPECT_EQ(e.value, rational(3, 4000));
+  // the other sign: +inf, and the long-delay path says why it does not take it
+  BoundProblem inf = make("K + B*2*(z-1)/(T*(z+1))", "1/1000", KB, 0);
+  inf.frac_delay = rational(1, 2000);  // nu = 1/2: rho = -4B/T < 0, sin(nu pi) > 0
+  std::string why;
+  EXPECT_FALSE(passivity::detail::long_delay_applies(inf, &why));
+  EXPECT_NE(why.find("+inf"), std::string::npos) << why;
+  EXPECT_TRUE(bound_certified(inf, 30).infinite);
+}
+
+// Beyond the exact path, the same case against the definition in complex long double: f(theta) =
+// Re{T H(e^{j theta}) e^{-j nu theta}/(1 - e^{j theta})} on 64 nu points of (0, pi) and refined by golden
+// section, a lower bound of b* within ~1e-15 relative (long double's 1e-19 times the kernels' size ~nu):
+// the certified enclosure holds it. The Tustin wall K = 1000, B = 50 at nu = 1501.75 (12 of 100 random
+// long-delay cases of this kind were refused before: "no path takes this case") and rho < 0 at nu = 2000.4.
+TEST(LongDelay, FractionalDelayBesideThePoleAtMinusOneAtLongDelays) {
+  using cx = std::complex<long double>;
+  const long double pi = 3.14159265358979323846264338327950288L, T = 1e-3L;
+  struct C {
+    std::string H;
+    int n;
+    rational tau;
+    std::function<cx(cx)> h;
+  };
+  const std::vector<C> cases = {
+      {"1000 + 2*50/T*(z-1)/(z+1)", 1501, rational(3, 4), [&](cx z) { return 1000.0L + 2 * 50 / T * (z - 1.0L) / (z + 1.0L); }},
+      {"1 - 3/(z+1) + 0.2*(z-1)/(z-0.5)", 2001, rational(2, 5),
+       [](cx z) { return 1.0L - 3.0L / (z + 1.0L) + 0.2L * (z - 1.0L) / (z - 0.5L); }}};
+  for (const C& c : cases) {
+    BoundProblem p = make(c.H, "1/1000", {}, c.n);
+    p.frac_delay = c.tau * p.T;
+    SCOPED_TRACE(describe(p));
+    const long double nu = c.n + to_real<long double>(c.tau);
+    auto f = [&](long double th) {
+      const cx z = std::polar(1.0L, th);
+      return std::real(T * c.h(z) * std::polar(1.0L, -nu * th) / (1.0L - z));
+    };
+    const long N = 64L * static_cast<long>(nu);
+    long double best = -1e300L, at = 0;
+    for (long i = 1; i < N; ++i)
+      if (f(pi * i / N) > best) best = f(pi * i / N), at = pi * i / N;
+    for (long double a = at - pi / N, b = std::min(pi * (N - 1) / N, at + pi / N), it = 0; it < 100; ++it) {
+      const long double x1 = b - 0.618034L * (b - a), x2 = a + 0.618034L * (b - a);
+      (f(x1) < f(x2) ? a : b) = f(x1) < f(x2) ? x1 : x2;
+      best = std::max(best, f((a + b) / 2));
+    }
+    const Bound b = bound_certified(p, 30);
+    EXPECT_EQ(b.path, BoundPath::long_delay) << b.plan;
+    EXPECT_EQ(b.status, Status::certified) << b.decimal;
+    const long double scale = std::abs(best) + 1;
+    EXPECT_LE(best, to_real<long double>(b.enclosure->hi) + 1e-15L * nu * scale) << b.decimal;
+    EXPECT_GE(best, to_real<long double>(b.enclosure->lo) - 1e-12L * scale) << b.decimal;
   }
 }
 

@@ -22,7 +22,9 @@ std::vector<Ball> balls(const P& p) {
 }
 
 // f, f', f'' over the ball theta (bound_cells.hpp): B, A, E in c = cos theta by Horner on jets.
-Jet<Ball> objective(const KernelForm& f, const Ball& theta) {
+// singular = false leaves out the part -(T/2)(rho/2) sin(nu theta) tan(theta/2) of a pole at z = -1
+// met by a fractional delay (unbounded at pi: tail_below).
+Jet<Ball> objective(const KernelForm& f, const Ball& theta, bool singular = true) {
   Ball sh, ch, snu, cnu;
   const Ball nu(f.nu);
   flint::sin_cos(theta * Ball(rational(1, 2)), sh, ch);
@@ -35,10 +37,19 @@ Jet<Ball> objective(const KernelForm& f, const Ball& theta) {
   const Jet<Ball> s_nu = jet::kernel_S(th, nu, snu, cnu, sh, ch);
   const Jet<Ball> num = jet::horner(balls(f.A), c) * cos_nu + jet::horner(balls(f.E), c) * s_nu;
   Jet<Ball> r = num / b;
-  if (f.rho != 0) {  // H's simple pole at z = -1, integer nu: rho K_{nu + 1}(theta) (bound_cells.hpp)
+  if (f.rho != 0 && f.m > 0) {  // H's simple pole at z = -1, integer nu: rho K_{nu + 1}(theta) (bound_cells.hpp)
     Ball sm, cm;
     flint::sin_cos(Ball(f.m) * theta, sm, cm);
     r = r + Ball(f.rho) * jet::kernel_K(th, f.m, sm, cm, s1, c1);
+  } else if (f.rho != 0) {  // fractional nu: rho [cos(nu theta) + S_nu/2 - sin(nu theta) tan(theta/2)/2] (bound_cells.hpp)
+    const Ball rho(f.rho), half(rational(1, 2));
+    r = r + rho * cos_nu + (rho * half) * s_nu;
+    if (singular) {
+      const Jet<Ball> sin_nu{snu, nu * cnu, Ball(0L) - nu * nu * snu};
+      const Jet<Ball> sin_half{sh, half * ch, Ball(0L) - sh * Ball(rational(1, 4))};
+      const Jet<Ball> cos_half{ch, Ball(0L) - half * sh, Ball(0L) - ch * Ball(rational(1, 4))};
+      r = r - (rho * half) * (sin_nu * (sin_half / cos_half));
+    }
   }
   Jet<Ball> out = Ball(f.T / 2) * r;
   out.v = out.v + Ball(f.eta);
@@ -52,9 +63,9 @@ KernelForm kernel_form(const RationalFunction<rational>& H0, const rational& T, 
   KernelForm f;
   RationalFunction<rational> H = H0;
   const rational m1(-1);
-  if (denominator(nu) == 1 && H.den()(m1) == 0 && H.den().derivative()(m1) != 0) {  // rho/(z + 1) apart
+  if (H.den()(m1) == 0 && H.den().derivative()(m1) != 0) {  // rho/(z + 1) apart (m = 0: nu not whole)
     f.rho = H.num()(m1) / H.den().derivative()(m1);
-    f.m = numerator(nu).convert_to<long>() + 1;
+    if (denominator(nu) == 1) f.m = numerator(nu).convert_to<long>() + 1;
     H = H - RationalFunction<rational>(P(f.rho), P{rational(1), rational(1)});
   }
   const OnCircle n = at_circle(H.num()), d = at_circle(H.den());
@@ -69,7 +80,29 @@ KernelForm kernel_form(const RationalFunction<rational>& H0, const rational& T, 
   return f;
 }
 
+namespace {
+// The cell [a, b] around pi of a pole at z = -1 met by a fractional delay (bound_cells.hpp): on [a, pi),
+// f = g - (T/4) rho sin(nu theta) tan(theta/2), g the rest (bounded): g <= g(a) + sup(g' [a, pi]) (pi - a),
+// and where rho sin(nu theta) > 0 on [a, pi], tan(theta/2) >= tan(a/2) > 0 (a > 0): f < hi when
+// g(a) + g'([a, pi]) [0, pi - a] - (T/4) inf(rho sin(nu theta)) tan(a/2) < hi. f at pi itself is -inf.
+bool tail_below(const KernelForm& f, const rational& a, const rational& hi) {
+  if (!(a > 0)) return false;
+  const Ball X = flint::hull(Ball(a), Ball::pi()), width = Ball::pi() - Ball(a);
+  const Ball g = objective(f, Ball(a), false).v + objective(f, X, false).d * flint::hull(Ball(0L), width);
+  Ball snu, cnu, sa, ca;
+  flint::sin_cos(Ball(f.nu) * X, snu, cnu);
+  flint::sin_cos(Ball(a / 2), sa, ca);
+  const Ball weight = (Ball(f.rho) * snu).lower_end(), t = (sa / ca).lower_end();
+  if (!weight.positive() || !t.positive()) return false;
+  const Ball bound = g - Ball(f.T / 4) * weight * t;
+  return bound.finite() && bound.below(Ball(hi));
+}
+}  // namespace
+
 bool cell_below(const KernelForm& f, const rational& a, const rational& b, const rational& hi) {
+  if (f.rho != 0 && f.m == 0 && !beyond_pi(a) && !Ball(b).below(Ball::pi())) {  // the cell reaches pi: the pole's
+    return Ball(a).below(Ball::pi()) && beyond_pi(b) && tail_below(f, a, hi);  // -inf side, or not shown
+  }
   const rational m = (a + b) / 2, r = (b - a) / 2;
   const Ball at_m = objective(f, Ball(m)).v;
   const Jet<Ball> over = objective(f, Ball::hull(a, b));

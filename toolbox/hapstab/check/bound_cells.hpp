@@ -29,8 +29,14 @@
 //   T Re{rho e^{-j n theta}/((1 + z)(1 - z))} = T rho sin((n + 1) theta)/(2 sin theta)
 // ((1 + z)(1 - z) = 1 - z^2 = -2j sin(theta) e^{j theta}), so f gains (T/2) rho K_{n+1}(theta),
 // K_m = sin(m theta)/sin(theta), finite on [0, pi] for an integer m (m sinc(m theta)/sinc(theta) near 0, its
-// mirror in pi - theta near pi: numeric/jet.hpp's kernel_K).  With a fractional nu it tends to +-inf at pi
-// (bound_check.hpp's local form): no cell bounds it.
+// mirror in pi - theta near pi: numeric/jet.hpp's kernel_K).  With a fractional nu (since stop 82) the same part,
+// written sin((nu + 1) theta)/sin(theta) = cos(nu theta) + sin(nu theta) cot(theta) and cot(theta) =
+// (cot(theta/2) - tan(theta/2))/2, is (T/2) rho [cos(nu theta) + S_nu/2 - sin(nu theta) tan(theta/2)/2]: finite
+// below pi, and at pi it tends to -(T/4) rho sin(nu pi) (+inf). +inf when rho sin(nu pi) < 0 (b* = +inf, the
+// local form of bound_check.hpp): no cell bounds it. -inf when rho sin(nu pi) > 0: the cell holding pi, [a, b]
+// with a < pi < b, is shown by its own test (a tail): with g = f minus that last term, bounded on [a, pi],
+//   f <= g(a) + g'([a, pi]) [0, pi - a] - (T/4) inf_{[a, pi]}(rho sin(nu theta)) tan(a/2) < hi,
+// valid when rho sin(nu theta) > 0 on all of [a, pi] (tan(theta/2) >= tan(a/2) > 0 there); f(pi) = -inf.
 // Size limit: 400000 cells (a delay of 10^5 samples needs ~2 10^5; checked in ~3 s).
 //
 // Implements: paper 001 (45), (53), (54).
@@ -54,12 +60,13 @@ constexpr size_t max_bound_cells = 400000;  ///< ~2 per period 2 pi/nu: delays t
 struct KernelForm {
   Polynomial<rational> A, E, B;
   rational T, nu, eta;
-  rational rho = 0;  ///< H's simple pole at z = -1 set apart (integer nu): f gains (T/2) rho K_m, m = nu + 1
-  long m = 0;
+  rational rho = 0;  ///< H's simple pole at z = -1 set apart: f gains (T/2) rho K_m, m = nu + 1 (integer nu),
+  long m = 0;        ///< or, m = 0 (nu not whole), (T/2) rho [cos(nu theta) + S_nu/2 - sin(nu theta) tan(theta/2)/2]
 };
 KernelForm kernel_form(const RationalFunction<rational>& H, const rational& T, const rational& nu, const rational& eta);
 
-/// f(m) + f'([a, b]) [-r, r] < hi shown in balls (0 <= a < b < 2 pi).
+/// f(m) + f'([a, b]) [-r, r] < hi shown in balls (0 <= a < b < 2 pi); for the cell holding pi of a
+/// pole at z = -1 met by a fractional delay, the tail test of the header instead.
 bool cell_below(const KernelForm& f, const rational& a, const rational& b, const rational& hi);
 /// f(theta0) > lo shown in balls.
 bool point_above(const KernelForm& f, const rational& theta0, const rational& lo);

@@ -180,8 +180,8 @@ std::optional<Bound> fractional_divergence(const BoundProblem& pb);
 long fractional_exact_degree(const BoundProblem& pb);
 
 /// The exact path's degree limit for a fractional delay: 96 where the long-delay path applies (it is
-/// cheaper beyond), 1000 where it does not -- a pole of H at z = -1 with a fractional delay, where
-/// the exact path is the only one (t_d = 101.5 T: degree 207).
+/// cheaper beyond), 240 where it does not -- a pole of H on the unit circle other than a simple one
+/// at z = -1 -- and the exact path is the only one (fractional_delay.cpp says why 240).
 long fractional_exact_limit(const BoundProblem& pb);
 
 /// Exact divergence test at wT = pi for a pole of W at z = -1 with e^{-j tau wT} (o: the
@@ -191,7 +191,7 @@ int divergence_at_pi(const Objective& o, const rational& T, const rational& tau,
 
 // ---- the long-delay path (long_delay.cpp) ----------------------------------------------------
 /// The objective of (45)/(54) for the delay nu = n + t_d/T (samples) as low-order exact pieces:
-///   f(theta) = (T/2)[(A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta) + rho (-1)^n S_n(pi - theta)/2] + eta,
+///   f(theta) = (T/2)[(A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta) - (rho/2) sin(nu theta) tan(theta/2)] + eta,
 /// S_nu(theta) = sin(nu theta) cot(theta/2) (numeric/jet.hpp), A = R - (1+c)Q, E = R + (1-c)Q, B
 /// the c-form of H~ = H - rho/(z + 1) without delay, rho = the residue of H at a simple pole z = -1.
 struct DelayForm {
@@ -204,7 +204,8 @@ struct DelayForm {
   bool constant = false;          ///< f = eta everywhere (H = 0)
 };
 /// nullopt (and why) when the long-delay path does not apply: a pole of H on the unit circle other
-/// than a simple one at z = -1, or that pole with a fractional delay.
+/// than a simple one at z = -1, or that pole met by a fractional delay that sends f to +inf at pi
+/// (b* = +inf, fractional_divergence; the -inf sign is taken, long_delay.cpp's tail).
 std::optional<DelayForm> delay_form(const BoundProblem& p, std::string* why);
 /// delay_form's test alone, without its exact pieces (the planner's question, plan_bound: a gcd
 /// instead of the objective): nullopt (and why) exactly when delay_form's is; else H's simple

@@ -3,9 +3,12 @@
 // simple pole at z = -1) and the c = cos(theta) pieces of H~ without delay (bound.hpp),
 // A = R - (1 + c) Q, E = R + (1 - c) Q, B = |D|^2, the objective is
 //   f(theta) = (T/2) [ (A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta)
-//                      + rho (-1)^n S_n(pi - theta)/2 ] + eta,        S_nu = sin(nu theta) cot(theta/2)
+//                      - (rho/2) sin(nu theta) tan(theta/2) ] + eta,     S_nu = sin(nu theta) cot(theta/2)
 // (claim 001.eq45.delay_form, proofs/delay_kernels.cpp): low-order rational functions of c times
-// two oscillating kernels, finite on all of [0, pi] in the sinc forms of numeric/jet.hpp.
+// two oscillating kernels, finite on all of [0, pi] in the sinc forms of numeric/jet.hpp. For a
+// whole delay n the last term is rho (-1)^n S_n(pi - theta)/2, finite at pi too; for nu not whole it
+// goes to -(rho/2) sin(nu pi)(+inf) at pi: +inf (b* = +inf, fractional_divergence) or -inf, whose
+// last piece [a, pi] the branch-and-bound bounds by its sign (Maximiser::tail).
 // f(0) = (T/2)[A(1)/B(1) + rho + nu (2 E(1)/B(1) + rho)] + eta exactly, and f'(0) = 0 (f is even).
 //
 // Certified: interval branch-and-bound over theta in [0, pi] in Arb balls with order-2 jets:
@@ -61,11 +64,17 @@ std::optional<LongDelayPole> long_delay_applies(const BoundProblem& p, std::stri
     // a simple pole at z = -1: H = H~ + rho/(z + 1), rho = N(-1)/D'(-1)
     pole.at_minus_one = true;
     pole.rho = p.H.num()(rational(-1)) / D.derivative()(rational(-1));
+    // nu not whole: the pole's part (T/2) rho sin((nu + 1) theta)/sin(theta) -> -rho sin(nu pi) (T/2)/(pi - theta)
+    // at theta -> pi, sign sin(nu pi) = (-1)^floor(nu); +inf (fractional_divergence decides it exactly
+    // before any path) or -inf, which the branch-and-bound's tail bound sets aside (Maximiser::tail)
     if (den(nu) != 1 && pole.rho != 0) {
-      if (why) *why = "H has a pole at z = -1 and the delay t_d/T = " + to_decimal(nu, 12) +
-                      " is not a whole number of samples (the objective is unbounded near wT = pi, or decided exactly "
-                      "only by the exact path)";
-      return std::nullopt;
+      const integer whole = num(nu) / den(nu);  // nu > 0: floor
+      const bool plus_inf = (pole.rho > 0) == (whole % 2 != 0);
+      if (plus_inf) {
+        if (why) *why = "H has a pole at z = -1 that the delay nu = " + to_decimal(nu, 12) +
+                        " samples sends to +inf at wT = pi (b* = +inf, decided by the exact divergence test)";
+        return std::nullopt;
+      }
     }
   }
   return pole;
@@ -111,11 +120,12 @@ struct Form {
   S parity;           // (-1)^n (integer nu only)
   S pole_weight;      // rho (-1)^n / 2
   bool pole = false;  // a pole of H at z = -1 (rho != 0)
+  bool frac_pole = false;  // that pole with nu not whole: its part -rho sin(nu theta) tan(theta/2)/2 -> -inf at pi
   explicit Form(const DelayForm& f)
       : half_T(jet::scalar<S>(f.T / 2)), rho(jet::scalar<S>(f.rho)), half_rho(jet::scalar<S>(f.rho / 2)),
         nu(jet::scalar<S>(f.nu)), eta(jet::scalar<S>(f.eta)), pi(jet::scalar_pi<S>()),
         parity(f.n % 2 == 0 ? 1.0 : -1.0), pole_weight(jet::scalar<S>(f.rho / 2 * (f.n % 2 == 0 ? 1 : -1))),
-        pole(f.rho != 0) {
+        pole(f.rho != 0), frac_pole(f.rho != 0 && !f.integer_nu) {
     auto fill = [](std::vector<S>& v, const QPoly& p) {
       for (const rational& c : p.coeffs()) v.push_back(jet::scalar<S>(c));
       if (v.empty()) v.push_back(S(0.0));
@@ -127,9 +137,11 @@ struct Form {
 };
 
 /// f, f', f'' at theta (a point, or every point of a ball or interval), given sin and cos of
-/// theta/2 and of nu theta there.
+/// theta/2 and of nu theta there. singular = false leaves out the part of a pole at z = -1 met by a
+/// fractional delay, -(T/2)(rho/2) sin(nu theta) tan(theta/2), unbounded at pi (Maximiser::tail).
 template <class S>
-Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch, const S& snu, const S& cnu) {
+Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch, const S& snu, const S& cnu,
+                     bool singular = true) {
   const S s1 = S(2.0) * (sh * ch), c1 = S(1.0) - S(2.0) * (sh * sh);
   const Jet<S> th = jet::variable(theta);
   const Jet<S> c{c1, -s1, -c1};
@@ -138,7 +150,13 @@ Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch,
   const Jet<S> cos_nu{cnu, -(F.nu * snu), -((F.nu * F.nu) * cnu)};
   const Jet<S> s_nu = jet::kernel_S(th, F.nu, snu, cnu, sh, ch);
   Jet<S> f = (alpha + jet::constant(F.rho)) * cos_nu + (gamma + jet::constant(F.half_rho)) * s_nu;
-  if (F.pole) {  // S_n(eps), eps = pi - theta: sin(n eps) = -(-1)^n sin(n theta), cos(n eps) = (-1)^n cos(n theta),
+  if (F.frac_pole) {  // rho sin(nu theta) cot(theta) = rho S_nu/2 - rho sin(nu theta) tan(theta/2)/2 (claim 001.eq45.delay_form)
+    if (singular) {
+      const Jet<S> sin_nu{snu, F.nu * cnu, -((F.nu * F.nu) * snu)};
+      const Jet<S> sin_half{sh, S(0.5) * ch, S(-0.25) * sh}, cos_half{ch, S(-0.5) * sh, S(-0.25) * ch};
+      f = f - F.half_rho * (sin_nu * (sin_half / cos_half));
+    }
+  } else if (F.pole) {  // S_n(eps), eps = pi - theta: sin(n eps) = -(-1)^n sin(n theta), cos(n eps) = (-1)^n cos(n theta),
                  // sin(eps/2) = cos(theta/2), cos(eps/2) = sin(theta/2)
     const Jet<S> eps = jet::constant(F.pi) - th;
     f = f + F.pole_weight * jet::kernel_S(eps, F.nu, -(F.parity * snu), F.parity * cnu, ch, sh);
@@ -213,7 +231,9 @@ std::vector<Peak> double_peaks(const DelayForm& df, long M, size_t keep) {
   const double pi = 3.14159265358979323846, h = pi / static_cast<double>(M);
   std::vector<double> v(static_cast<size_t>(M) + 1);
   v[0] = to_real<double>(df.at_zero);
-  for (long i = 1; i <= M; ++i) v[static_cast<size_t>(i)] = objective_jet(F, h * static_cast<double>(i)).v;
+  // h i rounded can pass fl(pi) by an ulp: kept inside [0, pi] (beyond pi the formula is not f: with a pole at
+  // z = -1 met by a fractional delay it is +-1e17 there)
+  for (long i = 1; i <= M; ++i) v[static_cast<size_t>(i)] = objective_jet(F, std::min(pi, h * static_cast<double>(i))).v;
   std::vector<Peak> peaks{{v[0], 0.0}};
   // Newton on f' from a start, kept inside [lo, hi]: the best point met
   auto polish = [&](double x, double lo, double hi) {
@@ -243,7 +263,7 @@ std::vector<Peak> double_peaks(const DelayForm& df, long M, size_t keep) {
   const double margin = curvature * h * h / 2;
   for (long i : local)
     if (v[static_cast<size_t>(i)] >= top - margin)
-      polish(h * static_cast<double>(i), h * static_cast<double>(i - 1), std::min(pi, h * static_cast<double>(i + 1)));
+      polish(std::min(pi, h * static_cast<double>(i)), h * static_cast<double>(i - 1), std::min(pi, h * static_cast<double>(i + 1)));
   // narrow resonances of H (minima of B(c), its critical points) may fall between samples: around
   // each, samples at the grid's scale and at the resonance's own, its half-width in theta
   // w = sqrt(2 B(c0)/B''(c0)) / sin(theta0) (B doubles there), which a pole at radius 1 - 1e-5
@@ -317,7 +337,7 @@ class Maximiser {
     best_hi_ = H_;
     if (df.at_pi) {
       add_exact_end(*df.at_pi, Ball::pi());
-    } else {  // fractional nu: f(pi) = (T/2) A(-1)/B(-1) cos(nu pi) + eta, enclosed
+    } else if (!F_.frac_pole) {  // fractional nu (with a pole at z = -1, f -> -inf at pi: no candidate there): f(pi) = (T/2) A(-1)/B(-1) cos(nu pi) + eta, enclosed
       Ball s, c;
       jet::sin_cos(F_.nu * F_.pi, s, c);
       const Ball v = F_.half_T * (Ball(df.A(rational(-1)) / df.B(rational(-1))) * c) + F_.eta;
@@ -329,7 +349,7 @@ class Maximiser {
   bool run() {
     // the best points of the double scan, evaluated in balls: a proven lower bound near b* from the start
     for (const Peak& pk : double_peaks(df_, M_, 8)) {
-      if (pk.theta <= 0) continue;
+      if (pk.theta <= 0 || !less(Ball(pk.theta), F_.pi)) continue;  // a proven value of f only inside (0, pi)
       raise(lower(eval(Ball(pk.theta)).v));
     }
     for (long i = 0; i < M_; ++i) {  // every box, depth first
@@ -418,6 +438,7 @@ class Maximiser {
   enum class InDouble { pruned, split, arb };
   InDouble in_double(const Piece& p) {
     const long last = M_ << p.level;
+    if (F_.frac_pole && p.i + 1 == last) return InDouble::arb;  // the tail at pi: tail() in Arb
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
     const __int128 D = static_cast<__int128>(M_) << (p.level + 1), k = 2 * static_cast<__int128>(p.i) + 1;
     Jet<Dint> J, Jm;
@@ -501,6 +522,7 @@ class Maximiser {
       }
     }
     const long last = M_ << p.level;
+    if (F_.frac_pole && p.i + 1 == last) return tail(p, stack);
     const bool at_zero = p.i == 0, at_pi = p.i + 1 == last && df_.at_pi.has_value();
     const Ball a = theta(p.i, p.level), b = theta(p.i + 1, p.level);
     const Ball X = flint::hull(a, b);
@@ -528,6 +550,33 @@ class Maximiser {
     // settled: within the tolerance of the best proven value (a flat or degenerate piece), or out
     // of depth or of budget; its upper bound stays in the enclosure
     if (less(ub, L_ + tol(L_)) || p.level >= max_level_ || evals_ > budget_) return unresolved(ub, X);
+    stack.push_back({2 * p.i + 1, p.level + 1});
+    stack.push_back({2 * p.i, p.level + 1});
+  }
+
+  /// The last piece [a, pi] when a pole of H at z = -1 meets a fractional delay and sends f to -inf
+  /// there (long_delay_applies admits only that sign): f = g - (T/2)(rho/2) sin(nu theta) tan(theta/2),
+  /// g bounded (objective_jet without the singular part). Where rho sin(nu theta) > 0 on the piece,
+  /// tan(theta/2) >= tan(a/2) > 0 gives f <= sup g - (T/4) inf(rho sin(nu theta)) tan(a/2): pruned when
+  /// below the best proven value; else halved (the left half an ordinary piece, the right the tail
+  /// again, tan(a/2) ~ 2/(pi - a) growing), unresolved only out of depth or budget.
+  void tail(const Piece& p, std::vector<Piece>& stack) {
+    const Ball a = theta(p.i, p.level), X = flint::hull(a, Ball::pi());
+    Ball sh, ch, snu, cnu;
+    jet::sin_cos(X * Ball(0.5), sh, ch);
+    jet::sin_cos(F_.nu * X, snu, cnu);
+    ++evals_;
+    const Ball g = upper(objective_jet(F_, X, sh, ch, snu, cnu, false).v);
+    const Ball weight = lower(F_.rho * snu);
+    Ball ub = Ball::infinity(false);
+    if (g.finite() && weight.positive()) {
+      Ball sa, ca;
+      jet::sin_cos(a * Ball(0.5), sa, ca);
+      const Ball t = lower(sa / ca);
+      if (t.positive()) ub = upper(g - F_.half_T * Ball(0.5) * weight * t);
+    }
+    if (ub.finite() && less(ub, L_)) return;
+    if (p.level >= max_level_ || evals_ > budget_) return unresolved(ub, X);
     stack.push_back({2 * p.i + 1, p.level + 1});
     stack.push_back({2 * p.i, p.level + 1});
   }
@@ -723,9 +772,11 @@ std::optional<FastLongDelay> fast_long_delay(const BoundProblem& p) {
   const double half_T = to_real<double>(df->T) / 2, rho = std::abs(to_real<double>(df->rho));
   const double alpha = std::abs(a / b), gamma = std::abs(e / b);
   const double horner = half_T * ((ca + std::abs(a) * cb / std::abs(b)) + (ce + std::abs(e) * cb / std::abs(b)) * S) / std::abs(b);
-  const double sums = 4 * half_T * ((alpha + rho) + (gamma + rho) * S + rho * nu);
-  // d f/d(nu theta) <= (T/2)(|alpha| + rho + (|gamma| + rho) cot(theta/2)); nu theta is off by eps nu theta
-  const double argument = th > 0 ? nu * th * half_T * (alpha + rho + (gamma + rho) / std::tan(th / 2)) : 0;
+  // a pole at z = -1 met by a fractional delay: its part rho sin(nu theta) tan(theta/2)/2, large near pi
+  const double tan_half = df->integer_nu || rho == 0 ? 0 : std::tan(th / 2);
+  const double sums = 4 * half_T * ((alpha + rho) + (gamma + rho) * S + rho * nu + rho * tan_half);
+  // d f/d(nu theta) <= (T/2)(|alpha| + rho + (|gamma| + rho) cot(theta/2) + rho tan(theta/2)); nu theta is off by eps nu theta
+  const double argument = th > 0 ? nu * th * half_T * (alpha + rho + (gamma + rho) / std::tan(th / 2) + rho * tan_half) : 0;
   const double err = eps * (horner + sums + argument);
   return FastLongDelay{best.value, best.theta / to_real<double>(p.T),
                        16 * err / std::max(std::abs(best.value), std::numeric_limits<double>::min())};
