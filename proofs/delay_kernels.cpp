@@ -4,7 +4,10 @@
 //                             (T/2)[A(c) cos(nu theta) + E(c) sin(nu theta) cot(theta/2)]/B(c) with
 //                             A, E, B of H alone; a pole at z = -1 splits off as
 //                             (T rho/2)[cos(nu theta) + sin(nu theta) cot(theta)], and for integer n
-//                             sin(n theta) cot(theta) = [S_n(theta) + (-1)^n S_n(pi - theta)]/2
+//                             sin(n theta) cot(theta) = [S_n(theta) + (-1)^n S_n(pi - theta)]/2; for every
+//                             real nu cot(theta) = [cot(theta/2) - tan(theta/2)]/2, so the pole's part is
+//                             (T rho/2)[cos(nu theta) + S_nu/2 - sin(nu theta) tan(theta/2)/2] (a fractional
+//                             delay: -> -(T rho/4) sin(nu pi) (+inf) at pi, the sign the path's tail bound uses)
 //                             (exact identities in t = tan(theta/2), independent of passivity/'s code)
 //   001.eq45.jet_enclosures   the jets of numeric/jet.hpp (sinc with its Taylor remainder bound,
 //                             S_nu, K_m, and their first two derivatives: the derivative bounds of the
@@ -100,14 +103,19 @@ HAPSTAB_PROOF(delay_form, "001", "(45) with any delay as low-order pieces times 
     ok = ok && lhs == rhs;
     kernels.count(n >= 1);
   }
+  // every real nu: cot(theta) = [cot(theta/2) - tan(theta/2)]/2, so sin(nu theta) cot(theta) = S_nu/2 -
+  // sin(nu theta) tan(theta/2)/2 (the form long_delay.cpp evaluates for a fractional delay beside the pole)
+  const bool half_angle = c / sin_t() == (one / t_var - t_var) / RF(rational(2));
+  ok = ok && half_angle;
   check.claim("001.eq45.delay_form", "(45), (53)",
               "Re{T H z^-n e^{-j theta tau}/(1 - z)} = (T/2)[(A/B + rho) cos(nu theta) + (E/B + rho/2) S_nu(theta) + "
               "rho (-1)^n S_n(pi - theta)/2], S_nu = sin(nu theta) cot(theta/2), A = R - (1 + c)Q, E = R + (1 - c)Q, B "
-              "of H~ = H - rho/(z + 1) without delay: for every real nu (rho = 0) and every integer n",
+              "of H~ = H - rho/(z + 1) without delay: for every real nu (rho = 0) and every integer n; for every real nu "
+              "with rho the last term is -(rho/2) sin(nu theta) tan(theta/2)",
               Status::exact, ok,
               "Re and Im of T H/(1 - z) and of T rho/((1 + z)(1 - z)) equal (T/2) A/B, (T/2) E cot(theta/2)/B, T rho/2, "
               "(T rho/2) cot(theta) as rational functions of t = tan(theta/2) (both sides linear in cos, sin of nu theta: "
-              "every nu); the kernel identity for n = 0..12 in t",
+              "every nu); the kernel identity for n = 0..12 in t; cot(theta) = (1/t - t)/2 in t",
               {plain, poles, kernels});
 }
 
