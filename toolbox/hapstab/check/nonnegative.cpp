@@ -13,15 +13,32 @@ using P = Polynomial<rational>;
 
 P exact_quotient(const P& a, const P& b) { return divmod(a, b).first; }
 
-// p / |leading coefficient|: the same signs everywhere, smaller numbers.
-P scaled(const P& p) {
+int sign(const rational& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+
+// p times a positive rational with integer coefficients and no common factor: the same signs
+// everywhere, and a Sturm sequence's numbers do not carry the contents its remainders grow.
+P primitive(const P& p) {
   if (p.is_zero()) return p;
-  rational l = p.leading();
-  if (l < 0) l = -l;
-  return p * rational(1 / l);
+  integer l(1), g(0);
+  for (const rational& c : p.coeffs()) l = lcm(l, den(c));
+  for (const rational& c : p.coeffs()) g = gcd(g, integer(num(c) * (l / den(c))));
+  return p * (rational(l) / rational(g));
 }
 
-int sign(const rational& x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+// The sign of p(x), x = u/v (v > 0): of sum c_i u^i v^(d - i) = v^d p(x) by Horner's rule in integers when
+// p's coefficients are integers (no gcd at each step, as a rational p(x) takes); else p(x) itself.
+int sign_at(const P& p, const rational& x) {
+  if (p.is_zero()) return 0;
+  for (const rational& c : p.coeffs())
+    if (den(c) != 1) return sign(p(x));
+  const integer u = num(x), v = den(x);
+  integer acc = num(p.coeffs().back()), vp(1);
+  for (size_t i = p.coeffs().size() - 1; i-- > 0;) {
+    vp *= v;
+    acc = acc * u + num(p.coeffs()[i]) * vp;
+  }
+  return acc > 0 ? 1 : acc < 0 ? -1 : 0;
+}
 
 // The factors of odd multiplicity of p (Yun's algorithm): p = c prod a_i^i.
 P odd_part(const P& p) {
@@ -56,11 +73,11 @@ bool descartes_no_root(const P& q, const rational& a, const rational& b) {
 }
 
 std::vector<P> sturm_sequence(const P& q) {
-  std::vector<P> seq{scaled(q), scaled(q.derivative())};
+  std::vector<P> seq{primitive(q), primitive(q.derivative())};
   while (!seq.back().is_zero() && seq.back().degree() > 0) {
     P r = divmod(seq[seq.size() - 2], seq.back()).second;
     if (r.is_zero()) break;
-    seq.push_back(scaled(-r));
+    seq.push_back(primitive(-r));
   }
   return seq;
 }
@@ -70,7 +87,7 @@ int sturm_count(const std::vector<P>& seq, const rational& a, const rational& b)
     int v = 0, last = 0;
     for (const P& s : seq) {
       if (s.is_zero()) continue;
-      const int sg = sign(s(x));
+      const int sg = sign_at(s, x);
       if (sg == 0) continue;
       if (last != 0 && sg != last) ++v;
       last = sg;
