@@ -86,6 +86,16 @@ TEST(Edges, FractionalDelayBeyondTheExactPathsLimitTakesTheLongDelayPath) {
   EXPECT_NE(q.out.find("more than the exact path's limit of 240"), std::string::npos) << q.out;
 }
 
+// A fractional part of 10^-9 samples beside the pole (nu = 1 + 10^-9, rho sin(nu pi) > 0): f falls to -inf
+// only within ~10^-3 of wT = pi, and the sup sits just before that fall, 3.2e-5 below the whole delay's
+// 14.99 at pi. The exact path would need degree ~10^9; the long-delay path's tail bound takes it. The
+// reference: tests/verify/indep_passivity.py's bstar on (45) as written (mpmath, error 1.6e-47).
+TEST(Edges, FractionalDelayOfABillionthBesideThePole) {
+  const auto r = run_cli(kTustin + " --delay 1 --frac-delay 1/1000000000000 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  expect_holds(nlohmann::json::parse(r.out), "14.9899678560753585521184537237", "nu = 1 + 1e-9");
+}
+
 // The positive side stays +inf (paper 001, Example 3: 0 < t_d < T).
 TEST(Edges, FractionalDelayOnThePositiveSideOfThePoleIsInfinite) {
   const auto r = run_cli(kTustin + " --frac-delay 1/2000 --json");
