@@ -96,6 +96,25 @@ TEST(Edges, FractionalDelayOfABillionthBesideThePole) {
   expect_holds(nlohmann::json::parse(r.out), "14.9899678560753585521184537237", "nu = 1 + 1e-9");
 }
 
+// nu = 1 + 10^-30: the fall to -inf is within ~10^-10 of pi, and b* lies within ~10^-19 below the whole
+// delay's 14.99 (f near pi is 14.99 - c eps^2 - (T/2)|rho| pi 10^-30/eps). No bound of the last piece by
+// tan(theta/2) can be shown in the search's 56 halvings; the second, finite at pi (the pole's part as
+// cos(tau theta) K_2 plus a part of known sign), keeps the enclosure finite and honest: a wide
+// [lo, hi] around 14.99, said to be wider than asked, never a failure or a narrow wrong one. (The
+// mpmath reference's grid finds 14.98999999501 near pi - 3.7e-5: a lower bound, below hapstab's.)
+TEST(Edges, FractionalDelayOfTenToTheMinusThirtyBesideThePole) {
+  const auto r = run_cli(kTustin + " --delay 1 --frac-delay 1/1000000000000000000000000000000000 --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "certified") << r.out;
+  const auto lo = hapstab::try_parse_rational(j["enclosure"][0].get<std::string>());
+  const auto hi = hapstab::try_parse_rational(j["enclosure"][1].get<std::string>());
+  ASSERT_TRUE(lo && hi) << r.out;
+  EXPECT_LT(*lo, hapstab::rational(1499, 100)) << r.out;
+  EXPECT_GT(*hi, hapstab::rational(1499, 100) - hapstab::rational(1, 1000000000000LL)) << r.out;
+  EXPECT_NE(j["note"].get<std::string>().find("wider than"), std::string::npos) << r.out;
+}
+
 // The positive side stays +inf (paper 001, Example 3: 0 < t_d < T).
 TEST(Edges, FractionalDelayOnThePositiveSideOfThePoleIsInfinite) {
   const auto r = run_cli(kTustin + " --frac-delay 1/2000 --json");

@@ -191,9 +191,9 @@ long fractional_exact_degree(const BoundProblem& pb) {
 
 // Where the long-delay path takes the case, the exact one runs up to degree 96 (bound.cpp weighs
 // their costs). Where it does not (a pole on the unit circle other than a simple one at z = -1; before
-// stop 82 also that pole meeting a fractional delay), the exact path is the only one, and its Sturm counts grow ~degree^4: measured 1.4 s at degree 158 (a wall with 50
-// samples and t_d = T/6), 7.4 s at 207 (the Tustin wall at t_d = 101.5 T, tests/cli/test_edges),
-// minutes at 533 (174 samples). 240 keeps every answer within ~15 s; beyond it the case is refused
+// stop 82 also that pole meeting a fractional delay), the exact path is the only one, and its Sturm
+// counts grow ~degree^4: measured 1.4 s at degree 158 (a wall with 50 samples and t_d = T/6), 7.4 s
+// at 207 (the Tustin wall at t_d = 101.5 T), minutes at 533 (174 samples). 240 keeps every answer within ~15 s; beyond it the case is refused
 // by name, exit 2 (the limit was 1000: the 533 case ran for minutes).
 long fractional_exact_limit(const BoundProblem& pb) { return long_delay_applies(pb, nullptr) ? 96 : 240; }
 

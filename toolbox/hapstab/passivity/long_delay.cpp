@@ -136,12 +136,16 @@ struct Form {
   }
 };
 
+/// Which terms of f objective_jet sums: all of them; all but the part of a pole at z = -1 met by a
+/// fractional delay that is unbounded at pi, -(T/2)(rho/2) sin(nu theta) tan(theta/2); or H~'s alone,
+/// without any of the pole's part (Maximiser::tail bounds the rest).
+enum class Terms { all, bounded, without_pole };
+
 /// f, f', f'' at theta (a point, or every point of a ball or interval), given sin and cos of
-/// theta/2 and of nu theta there. singular = false leaves out the part of a pole at z = -1 met by a
-/// fractional delay, -(T/2)(rho/2) sin(nu theta) tan(theta/2), unbounded at pi (Maximiser::tail).
+/// theta/2 and of nu theta there.
 template <class S>
 Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch, const S& snu, const S& cnu,
-                     bool singular = true) {
+                     Terms terms = Terms::all) {
   const S s1 = S(2.0) * (sh * ch), c1 = S(1.0) - S(2.0) * (sh * sh);
   const Jet<S> th = jet::variable(theta);
   const Jet<S> c{c1, -s1, -c1};
@@ -149,9 +153,14 @@ Jet<S> objective_jet(const Form<S>& F, const S& theta, const S& sh, const S& ch,
   const Jet<S> alpha = jet::horner(F.A, c) / b, gamma = jet::horner(F.E, c) / b;
   const Jet<S> cos_nu{cnu, -(F.nu * snu), -((F.nu * F.nu) * cnu)};
   const Jet<S> s_nu = jet::kernel_S(th, F.nu, snu, cnu, sh, ch);
+  if (terms == Terms::without_pole) {
+    Jet<S> out = F.half_T * (alpha * cos_nu + gamma * s_nu);
+    out.v = out.v + F.eta;
+    return out;
+  }
   Jet<S> f = (alpha + jet::constant(F.rho)) * cos_nu + (gamma + jet::constant(F.half_rho)) * s_nu;
   if (F.frac_pole) {  // rho sin(nu theta) cot(theta) = rho S_nu/2 - rho sin(nu theta) tan(theta/2)/2 (claim 001.eq45.delay_form)
-    if (singular) {
+    if (terms == Terms::all) {
       const Jet<S> sin_nu{snu, F.nu * cnu, -((F.nu * F.nu) * snu)};
       const Jet<S> sin_half{sh, S(0.5) * ch, S(-0.25) * sh}, cos_half{ch, S(-0.5) * sh, S(-0.25) * ch};
       f = f - F.half_rho * (sin_nu * (sin_half / cos_half));
@@ -323,7 +332,8 @@ class Maximiser {
   /// value proven_lo (<= b*, so they cannot hold the maximum at any precision), skipped here
   Maximiser(const DelayForm& df, long boxes, int digits, bool use_double, const std::vector<char>* settled = nullptr,
             const std::optional<rational>& proven_lo = std::nullopt)
-      : df_(df), F_(df), dbl_(df), use_double_(use_double && dbl_.ok()), M_(boxes), settled_(settled),
+      : df_(df), F_(df), floor_nu_(integer(num(df.nu) / den(df.nu)).convert_to<long>()), dbl_(df), use_double_(use_double && dbl_.ok()),
+        M_(boxes), settled_(settled),
         first_pruned_(static_cast<size_t>(boxes), 0) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
@@ -337,7 +347,8 @@ class Maximiser {
     best_hi_ = H_;
     if (df.at_pi) {
       add_exact_end(*df.at_pi, Ball::pi());
-    } else if (!F_.frac_pole) {  // fractional nu (with a pole at z = -1, f -> -inf at pi: no candidate there): f(pi) = (T/2) A(-1)/B(-1) cos(nu pi) + eta, enclosed
+    } else if (!F_.frac_pole) {  // fractional nu: f(pi) = (T/2) A(-1)/B(-1) cos(nu pi) + eta, enclosed (beside a
+                                 // pole at z = -1, f -> -inf at pi: no candidate there)
       Ball s, c;
       jet::sin_cos(F_.nu * F_.pi, s, c);
       const Ball v = F_.half_T * (Ball(df.A(rational(-1)) / df.B(rational(-1))) * c) + F_.eta;
@@ -382,6 +393,8 @@ class Maximiser {
   long double_pruned() const { return double_pruned_; }
   const std::vector<char>& first_pruned() const { return first_pruned_; }
   long unresolved() const { return unresolved_; }  // pieces settled by tolerance, depth or budget
+  /// the last piece at pi left unresolved (tail): its bounds do not tighten with more bits
+  bool tail_unresolved() const { return tail_unresolved_ > 0; }
 
  private:
   Ball theta(long i, int level) const {  // pi i / (M 2^level)
@@ -555,28 +568,49 @@ class Maximiser {
   }
 
   /// The last piece [a, pi] when a pole of H at z = -1 meets a fractional delay and sends f to -inf
-  /// there (long_delay_applies admits only that sign): f = g - (T/2)(rho/2) sin(nu theta) tan(theta/2),
-  /// g bounded (objective_jet without the singular part). Where rho sin(nu theta) > 0 on the piece,
-  /// tan(theta/2) >= tan(a/2) > 0 gives f <= sup g - (T/4) inf(rho sin(nu theta)) tan(a/2): pruned when
-  /// below the best proven value; else halved (the left half an ordinary piece, the right the tail
-  /// again, tan(a/2) ~ 2/(pi - a) growing), unresolved only out of depth or budget.
+  /// there (long_delay_applies admits only that sign), by the smaller of two upper bounds:
+  ///  - f = g - (T/2)(rho/2) sin(nu theta) tan(theta/2), g bounded (Terms::bounded): where
+  ///    rho sin(nu theta) > 0 on the piece, tan(theta/2) >= tan(a/2) > 0 gives
+  ///    f <= sup g - (T/4) inf(rho sin(nu theta)) tan(a/2), which falls like 1/(pi - a);
+  ///  - with nu = m + tau (m = floor(nu), 0 < tau < 1) the pole's part (T/2) rho sin((nu + 1) theta)/sin(theta)
+  ///    is (T/2) rho [cos(tau theta) K_{m+1}(theta) + cos((m + 1) theta) sin(tau theta)/sin(theta)],
+  ///    K_{m+1} = sin((m + 1) theta)/sin(theta) finite; where (m + 1)(pi - a) < pi/2, cos((m + 1) theta) has
+  ///    the sign of (-1)^(m+1) and sin(tau theta) > 0, so the second part has the sign of rho (-1)^(m+1),
+  ///    negative on the -inf side (rho sin(nu pi) = rho (-1)^m sin(tau pi) > 0): f <= sup [f~ + (T/2) rho
+  ///    cos(tau theta) K_{m+1}], f~ H~'s part (Terms::without_pole), finite at pi -- the bound that holds
+  ///    when tau is so small (10^-30) that the first needs more halvings than the search has.
+  /// Pruned when below the best proven value; else halved (the left half an ordinary piece, the right
+  /// the tail again); out of depth or budget it keeps the smaller bound (+inf if neither holds).
   void tail(const Piece& p, std::vector<Piece>& stack) {
     const Ball a = theta(p.i, p.level), X = flint::hull(a, Ball::pi());
     Ball sh, ch, snu, cnu;
     jet::sin_cos(X * Ball(0.5), sh, ch);
     jet::sin_cos(F_.nu * X, snu, cnu);
     ++evals_;
-    const Ball g = upper(objective_jet(F_, X, sh, ch, snu, cnu, false).v);
+    const Ball g = upper(objective_jet(F_, X, sh, ch, snu, cnu, Terms::bounded).v);
     const Ball weight = lower(F_.rho * snu);
-    Ball ub = Ball::infinity(false);
+    Ball ub = Ball::infinity(true);  // not shown: +inf, which an unresolved piece keeps in the enclosure
     if (g.finite() && weight.positive()) {
       Ball sa, ca;
       jet::sin_cos(a * Ball(0.5), sa, ca);
       const Ball t = lower(sa / ca);
       if (t.positive()) ub = upper(g - F_.half_T * Ball(0.5) * weight * t);
     }
+    if (less(Ball(floor_nu_ + 1) * (F_.pi - a), F_.pi * Ball(0.5))) {
+      const Ball tau = F_.nu - Ball(floor_nu_);
+      Ball s_m, c_m, s_1, c_1, s_tau, c_tau;
+      jet::sin_cos(Ball(floor_nu_ + 1) * X, s_m, c_m);
+      jet::sin_cos(X, s_1, c_1);
+      jet::sin_cos(tau * X, s_tau, c_tau);
+      const Ball K = jet::kernel_K(jet::variable(X), floor_nu_ + 1, s_m, c_m, s_1, c_1).v;
+      const Ball bound = upper(objective_jet(F_, X, sh, ch, snu, cnu, Terms::without_pole).v + F_.half_T * F_.rho * c_tau * K);
+      if (bound.finite() && (!ub.finite() || less(bound, ub))) ub = bound;
+    }
     if (ub.finite() && less(ub, L_)) return;
-    if (p.level >= max_level_ || evals_ > budget_) return unresolved(ub, X);
+    if (p.level >= max_level_ || evals_ > budget_) {
+      ++tail_unresolved_;
+      return unresolved(ub, X);
+    }
     stack.push_back({2 * p.i + 1, p.level + 1});
     stack.push_back({2 * p.i, p.level + 1});
   }
@@ -622,6 +656,7 @@ class Maximiser {
 
   const DelayForm& df_;
   Form<Ball> F_;
+  long floor_nu_ = 0;  // m = floor(nu) (tail's second bound)
   DoubleGrid dbl_;
   bool use_double_;
   double Ld_ = -std::numeric_limits<double>::infinity();  // a double <= L_
@@ -634,7 +669,7 @@ class Maximiser {
   Ball tol_factor_;
   Ball L_, H_, H_other_ = Ball::infinity(false), best_hi_, best_at_;
   Where best_where_ = Where::zero;
-  long evals_ = 0, unresolved_ = 0;
+  long evals_ = 0, unresolved_ = 0, tail_unresolved_ = 0;
 };
 
 }  // namespace
@@ -702,7 +737,8 @@ Bound certified_long_delay(const BoundProblem& p, int digits, bool double_prunin
     const rational lo = mx.lo().bounds().lo, hi = mx.hi().bounds().hi;
     const bool narrow = lo == hi || common_decimal(lo, hi, digits).has_value() ||
                         hi - lo < std::max(abs(lo), abs(hi)) * pow10(-digits - 2);
-    if (!narrow && attempt < 2) continue;
+    // more bits narrow what rounding widened, not a last piece at pi out of depth (nu = 1 + 10^-30)
+    if (!narrow && attempt < 2 && !mx.tail_unresolved()) continue;
     // exact when the best value is an exact end (w = 0, or w = pi/T with an integer delay) and
     // every other piece's upper bound lies below it
     const rational best_end = df->at_pi ? std::max(df->at_zero, *df->at_pi) : df->at_zero;
