@@ -102,6 +102,30 @@ def max_cases(hapstab, tmp):
     return out
 
 
+def tustin_case(hapstab, tmp, k, K, B, n, tau, more_edits):
+    """The Tustin wall K + 2B(z - 1)/(T(z + 1)) at the delay n + tau: its cells' certificate must hold (45)
+    evaluated in mpmath (indep_passivity.bstar), then its first 7 hand edits and `more_edits` (name, field, value:
+    refuted) get their exit codes from both checkers. The number of failures."""
+    extra = ["--frac-delay", str(tau * T)] if tau else []
+    r, path = produce(hapstab, tmp, k, "K + 2*B/T*(z-1)/(z+1)", {"K": K, "B": B}, n, extra)
+    c = json.load(open(path)) if os.path.exists(path) else {"evidence": {}, "claim": {}}
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verify"))
+    import indep_passivity as IP
+    from indep_common import SumTF
+    ref = IP.bstar(SumTF([IP.tustin(T, Fraction(K), Fraction(B))]), T, Fraction(n) + (tau or 0), 0)
+    ok = "cells" in c["evidence"] and ref["kind"] == "finite" and \
+        Fraction(c["claim"]["lo"]) <= Fraction(str(ref["value"])) + Fraction(1, 10 ** 9) and \
+        Fraction(str(ref["value"])) - Fraction(1, 10 ** 9) <= Fraction(c["claim"]["hi"])
+    label = "the Tustin wall at nu = %s" % (n + float(tau or 0))
+    print("%s %s: the cells' form, [%s, %s] holds the reference %s (exit %d)" % (
+        "ok  " if ok else "FAIL", label, c["claim"].get("printed_lo"), c["claim"].get("printed_hi"), ref.get("value"), r.returncode))
+    if not ok:
+        return 1
+    cases = [(label + ": " + what, e, want) for what, e, want in edits(c)[:7]]
+    cases += [(label + ": " + what, with_field(c, field, value), 1) for what, field, value in more_edits]
+    return run_cases(hapstab, cases, tmp)
+
+
 def main():
     hapstab = sys.argv[1]
     failures, cases = 0, []
@@ -125,36 +149,14 @@ def main():
         failures += run_cases(hapstab, cases, tmp)
         # the Tustin wall's pole at z = -1 with an integer delay: set apart as rho K_{n+1} (since stop 81; before,
         # refused by name); the claim against (45) evaluated in mpmath (indep_passivity.bstar), edits refuted
-        r, path = produce(hapstab, tmp, 9, "K + 2*B/T*(z-1)/(z+1)", {"K": 1000, "B": 5}, 1000, [])
-        tw = json.load(open(path)) if os.path.exists(path) else {"evidence": {}, "claim": {}}
-        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verify"))
-        import indep_passivity as IP
-        from indep_common import SumTF
-        ref = IP.bstar(SumTF([IP.tustin(T, Fraction(1000), Fraction(5))]), T, Fraction(1000), 0)
-        ok = "cells" in tw["evidence"] and ref["kind"] == "finite" and \
-            Fraction(tw["claim"]["lo"]) <= Fraction(str(ref["value"])) + Fraction(1, 10 ** 9) and \
-            Fraction(str(ref["value"])) - Fraction(1, 10 ** 9) <= Fraction(tw["claim"]["hi"])
-        print("%s the Tustin wall at n = 1000: the cells' form, [%s, %s] holds the reference %s (exit %d)" % (
-            "ok  " if ok else "FAIL", tw["claim"].get("printed_lo"), tw["claim"].get("printed_hi"), ref.get("value"), r.returncode))
-        failures += not ok
-        if ok:
-            failures += run_cases(hapstab, [("the Tustin wall: " + what, c, want) for what, c, want in edits(tw)[:7]], tmp)
-        # the Tustin wall with a fractional delay, nu = 301.75 (since stop 82; before, `bound` itself said "no path
-        # takes this case"): rho sin(nu pi) > 0, f -> -inf at pi, the cell holding pi shown by the tail test; the delay
-        # a sample less or more (floor(nu) even: +inf at pi) refuted by both
-        r, path = produce(hapstab, tmp, 10, "K + 2*B/T*(z-1)/(z+1)", {"K": 1000, "B": 50}, 301, ["--frac-delay", "3/4000"])
-        tf = json.load(open(path)) if os.path.exists(path) else {"evidence": {}, "claim": {}}
-        ref = IP.bstar(SumTF([IP.tustin(T, Fraction(1000), Fraction(50))]), T, Fraction(301) + Fraction(3, 4), 0)
-        ok = "cells" in tf["evidence"] and ref["kind"] == "finite" and \
-            Fraction(tf["claim"]["lo"]) <= Fraction(str(ref["value"])) + Fraction(1, 10 ** 9) and \
-            Fraction(str(ref["value"])) - Fraction(1, 10 ** 9) <= Fraction(tf["claim"]["hi"])
-        print("%s the Tustin wall at nu = 301.75: the cells' form, [%s, %s] holds the reference %s (exit %d)" % (
-            "ok  " if ok else "FAIL", tf["claim"].get("printed_lo"), tf["claim"].get("printed_hi"), ref.get("value"), r.returncode))
-        failures += not ok
-        if ok:
-            failures += run_cases(hapstab, [("the Tustin wall, nu = 301.75: " + what, c, want) for what, c, want in edits(tf)[:7]] +
-                                  [("the Tustin wall, nu = 301.75: the delay one sample less (+inf at pi)",
-                                    with_field(tf, ["model", "delay"], 300), 1)], tmp)
+        # the Tustin wall's pole at z = -1 with an integer delay: set apart as rho K_{n+1} (since stop 81; before,
+        # refused by name); the claim against (45) evaluated in mpmath (indep_passivity.bstar), edits refuted
+        failures += tustin_case(hapstab, tmp, 9, 1000, 5, 1000, None, [])
+        # with a fractional delay, nu = 301.75 (since stop 82; before, `bound` itself said "no path takes this
+        # case"): rho sin(nu pi) > 0, f -> -inf at pi, the cell holding pi shown by the tail test; the delay a sample
+        # less or more (floor(nu) even: +inf at pi) refuted by both
+        failures += tustin_case(hapstab, tmp, 10, 1000, 50, 301, Fraction(3, 4),
+                                [("the delay one sample less (+inf at pi)", ["model", "delay"], 300)])
     print("bound_cells_case: %d cases, %d failed" % (len(cases) + len(MODELS) + 2, failures))
     return 1 if failures else 0
 

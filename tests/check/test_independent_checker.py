@@ -721,6 +721,17 @@ def max_cert(H, claim, evidence, delay=0):
             "claim": claim, "evidence": evidence}
 
 
+def tustin_definition(K, B, nu, th):
+    """(45) as written for the Tustin wall K + 2B(z - 1)/(T(z + 1)), T = 1/1000, delay nu, at theta = th, in mpmath
+    (1 - z = -2j sin(theta/2) e^{j theta/2}, 1 + z = 2 cos(theta/2) e^{j theta/2}: no cancellation)."""
+    import mpmath as mp
+    t = mp.mpf(th.numerator) / th.denominator
+    half = mp.expj(t / 2)
+    omz, opz = -2j * mp.sin(t / 2) * half, 2 * mp.cos(t / 2) * half
+    h = K + 2 * B * (-omz) / (mp.mpf(1) / 1000 * opz)
+    return mp.re(mp.mpf(1) / 1000 * h * mp.expj(-nu * t) / omz)
+
+
 class CellsTustinPole(unittest.TestCase):
     """cells_kernel with H's simple pole at z = -1 set apart (integer delays, since stop 81): f of the Tustin wall
     K + 2B(z - 1)/(T(z + 1)) at single points against (45) as written in mpmath at 50 digits (1 - z =
@@ -736,11 +747,7 @@ class CellsTustinPole(unittest.TestCase):
                 value = hc.cells_kernel(H, T, Fraction(0), Fraction(n))[0]
                 for th in (Fraction(1, 10 ** 7), Fraction(3, 10), Fraction(15707, 10000), Fraction(314, 100),
                            Fraction(355, 113) - Fraction(1, 10 ** 6)):
-                    t = mp.mpf(th.numerator) / th.denominator
-                    half = mp.expj(t / 2)
-                    omz, opz = -2j * mp.sin(t / 2) * half, 2 * mp.cos(t / 2) * half
-                    h = 1000 + 10 * (-omz) / (mp.mpf(1) / 1000 * opz)
-                    want = mp.re(mp.mpf(1) / 1000 * h * mp.expj(-n * t) / omz)
+                    want = tustin_definition(1000, 5, n, th)
                     got = value(th)
                     self.assertTrue(got.a - mp.mpf(10) ** -20 <= want <= got.b + mp.mpf(10) ** -20, (n, float(th), got, want))
                 at_pi = T / 2 * (K + 2 * B / T - 4 * B / T * (n + 1)) * (1 if n % 2 == 0 else -1)
@@ -763,11 +770,7 @@ class CellsTustinPoleFractional(unittest.TestCase):
                 value, cell_below, _ = hc.cells_kernel(H, T, Fraction(0), nu)
                 v = mp.mpf(nu.numerator) / nu.denominator
                 for th in (Fraction(1, 10 ** 7), Fraction(3, 10), Fraction(15707, 10000), Fraction(314, 100), Fraction(314159, 100000)):
-                    t = mp.mpf(th.numerator) / th.denominator
-                    half = mp.expj(t / 2)
-                    omz, opz = -2j * mp.sin(t / 2) * half, 2 * mp.cos(t / 2) * half
-                    h = 20 + 10 * (-omz) / (mp.mpf(1) / 1000 * opz)
-                    want = mp.re(mp.mpf(1) / 1000 * h * mp.expj(-v * t) / omz)
+                    want = tustin_definition(20, 5, v, th)
                     got = value(th)
                     self.assertTrue(got.a - mp.mpf(10) ** -20 <= want <= got.b + mp.mpf(10) ** -20, (float(nu), float(th), got, want))
                 minus_inf = mp.sin(mp.pi * v) < 0  # rho = -4B/T < 0: -inf at pi iff sin(nu pi) < 0
