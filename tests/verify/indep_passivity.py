@@ -23,6 +23,9 @@ f(theta) = Re{T H(e^{j theta}) e^{-j nu theta} / (1 - e^{j theta})} + eta on [0,
   2 f(pi - e) - f(pi - 2e) at e = 1e-24 (O(e^2) error; f is not even about pi when nu is not an
   integer), its error stated as the difference from the same at e = 1e-23. These end values are
   computed with 50 more digits (1 + e^{j(pi - e)} cancels near a pole at z = -1).
+* Within 1e-4 of pi, where the double grid stops (1e-6 short of pi), f is scanned at pi - 10^-k,
+  k = 4 ... 24 in steps of 1/4, in mpmath (a maximum there: a pole at z = -1 beside a delay nu
+  within ~1e-20 of a whole number), its local maximum refined by golden section.
 * 1 - e^{j theta} is evaluated as -2j sin(theta/2) e^{j theta/2}: computed directly its real
   part, 1 - cos theta, loses its relative accuracy as theta -> 0, and the real part of f (O(1)
   beside an imaginary part O(1/theta)) depends on it.
@@ -119,6 +122,28 @@ def end_pi(obj):
         v = rich(mp.mpf(10) ** -24)
         v2 = rich(mp.mpf(10) ** -23)
         return "finite", v, abs(v - v2)
+
+
+def near_pi(obj):
+    """A maximum within 1e-4 of pi, which the double grid cannot place (it stops 1e-6 short of pi):
+    f at pi - 10^-k, k = 4 ... 24 in steps of 1/4, in mpmath with 50 more digits (as end_pi);
+    a local maximum among them is refined by golden section in e = pi - theta. Returns
+    (theta, value, error) or None (the largest value at an end of the scan: the end candidates
+    and the grid hold it)."""
+    with mp.workdps(obj.dps + 50):
+        es = [mp.mpf(10) ** (-mp.mpf(k) / 4) for k in range(16, 97)]
+        fs = [obj.f_mp(mp.pi - e) for e in es]
+        i = max(range(len(fs)), key=lambda k: fs[k])
+        if i == 0 or i == len(fs) - 1:
+            return None
+        lo, hi = es[i + 1], es[i - 1]
+        a, _, _, b, _, _ = golden_section(lambda e: -obj.f_mp(mp.pi - e), lo, hi, 400,
+                                          mp.mpf(10) ** -(obj.dps // 2 + 2) * lo)
+        e = (a + b) / 2
+        v = obj.f_mp(mp.pi - e)
+        err = abs(obj.f_mp(mp.pi - a) - v) + abs(obj.f_mp(mp.pi - b) - v) \
+            + mp.mpf(10) ** -(obj.dps - 12) * (1 + abs(v))
+        return mp.pi - e, v, err
 
 
 def grid(obj):
@@ -248,6 +273,10 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
             if k < 3 or v >= top - 1e-9 * (abs(top) + 1):
                 th, vm, em = refine_mp(obj, x, a, b)
                 cands.append(("interior", th, vm, em))
+    if kpi == "finite":
+        np_ = near_pi(obj)
+        if np_ is not None:
+            cands.append(("interior", np_[0], np_[1], np_[2]))
     if extra_theta is not None:
         with mp.workdps(dps):
             th = mp.mpf(extra_theta)
