@@ -25,7 +25,7 @@ f(theta) = Re{T H(e^{j theta}) e^{-j nu theta} / (1 - e^{j theta})} + eta on [0,
   computed with 50 more digits (1 + e^{j(pi - e)} cancels near a pole at z = -1).
 * Within 1e-4 of pi, where the double grid stops (1e-6 short of pi), f is scanned at pi - 10^-k,
   k = 4 ... 24 in steps of 1/4, in mpmath (a maximum there: a pole at z = -1 beside a delay nu
-  within ~1e-20 of a whole number), its local maximum refined by golden section.
+  within ~1e-6 of a whole number, the end finite or -inf), its local maximum refined by golden section.
 * 1 - e^{j theta} is evaluated as -2j sin(theta/2) e^{j theta/2}: computed directly its real
   part, 1 - cos theta, loses its relative accuracy as theta -> 0, and the real part of f (O(1)
   beside an imaginary part O(1/theta)) depends on it.
@@ -273,7 +273,7 @@ def bstar(H, T, nu, eta=0, dps=60, extra_theta=None, fast=False):
             if k < 3 or v >= top - 1e-9 * (abs(top) + 1):
                 th, vm, em = refine_mp(obj, x, a, b)
                 cands.append(("interior", th, vm, em))
-    if kpi == "finite":
+    if kpi != "+inf":  # on the -inf side too: a maximum within 1e-6 of pi before the fall (nu = n + 1e-12)
         np_ = near_pi(obj)
         if np_ is not None:
             cands.append(("interior", np_[0], np_[1], np_[2]))
