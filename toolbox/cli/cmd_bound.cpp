@@ -288,11 +288,15 @@ void print_human(const Outcome& r, const BoundOpts& o) {
   }
   if (b.omega) std::cout << "  maximiser w = " << *b.omega << " rad/s (" << b.where << ")\n";
   std::cout << "  method: " << b.method << "\n";
-  if (!b.plan.empty() && b.path == BoundPath::long_delay) std::cout << "  path: " << b.plan << "\n";
+  if (!b.plan.empty() && b.path != BoundPath::exact) std::cout << "  path: " << b.plan << "\n";
   if (!b.note.empty()) std::cout << "  note: " << b.note << "\n";
   if (!b.infinite) {
     if (b.kind == Method::grid) std::cout << "  passive only if b > " << b.decimal << " (necessary; the grid may miss the peak)\n";
-    else std::cout << "  passive iff b > " << b.decimal << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
+    else if (b.status == Status::certified && !b.note.empty()) {  // wider than the digits asked: its two ends
+      const auto [lo, hi] = reported_enclosure(b, o.digits);
+      std::cout << "  passive if b > " << hi << ", not passive if b <= " << lo << " (b* shown only to that enclosure)\n";
+    } else
+      std::cout << "  passive iff b > " << b.decimal << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
   }
   if (o.explain) {
     if (!r.cf) {

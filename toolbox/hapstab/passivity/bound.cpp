@@ -70,6 +70,8 @@ double long_cost(const rational& nu, long order) {
   const double boxes = 4 * to_real<double>(nu) + 64;
   return 2e-4 + boxes * 9e-7 * (1 + 0.1 * static_cast<double>(order));
 }
+// the exact objective's degree as the planner states it (fractional_exact_degree saturates at LONG_MAX)
+std::string degree_text(long d) { return d == std::numeric_limits<long>::max() ? "beyond 2^63" : std::to_string(d); }
 std::string seconds(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, s < 0.01 ? "%.1g s" : "%.2g s", s);
@@ -97,7 +99,7 @@ BoundPlan plan_bound(const BoundProblem& raw) {
     plan.why = "exact path: its objective has degree " + std::to_string(plan.exact_degree) + " (" + costs + ")";
   } else if (long_ok) {
     plan.path = BoundPath::long_delay;
-    plan.why = "long-delay path: the exact objective would have degree " + std::to_string(plan.exact_degree) + " (" +
+    plan.why = "long-delay path: the exact objective would have degree " + degree_text(plan.exact_degree) + " (" +
                costs + ")";
   } else {
     plan.path = BoundPath::exact;  // neither: the exact path refuses by its limit (bound_certified)
@@ -129,12 +131,22 @@ Bound bound_certified(const BoundProblem& p, int digits) {
   if (auto inf = detail::fractional_divergence(with_integer_delay(p))) return *inf;  // before any path: cheap, exact
   const BoundPlan plan = plan_bound(p);
   if (!std::isfinite(plan.exact_seconds) && !std::isfinite(plan.long_seconds)) {
+    // a simple pole on the circle inside the band (which the long-delay path does not take) decided
+    // locally, at any delay (circle_pole.cpp); where its term vanishes, the case is refused below
+    if (auto inf = detail::circle_pole_divergence(with_integer_delay(p))) {
+      inf->plan = "a pole on the unit circle inside the band, decided where it is (" + plan.why + ")";
+      return *inf;
+    }
     std::string why;
     detail::long_delay_applies(with_integer_delay(p), &why);
     throw InputError("no path takes this case: the exact objective would have degree " +
-                     std::to_string(plan.exact_degree) + ", more than the exact path's limit of " +
+                     degree_text(plan.exact_degree) + ", more than the exact path's limit of " +
                      std::to_string(p.frac_delay ? detail::fractional_exact_limit(with_integer_delay(p)) : limits::model_degree) +
-                     ", and the long-delay path does not apply: " + why);
+                     ", and the long-delay path does not apply: " + why +
+                     (why.find("pole on the unit circle") != std::string::npos
+                          ? "; nor is b* = +inf shown at that pole: its term Im(c)/(theta - theta0), c = T R e^{-j nu theta0}/((1 - z0) z0), "
+                            "is not shown nonzero (it vanishes, e.g. H = (z - 1)/(z^2 + 1) at an even delay)"
+                          : ""));
   }
   Bound b;
   try {
@@ -156,7 +168,7 @@ Bound bound_certified(const BoundProblem& p, int digits, BoundPath path) {
   const BoundPlan plan = plan_bound(q);
   const long exact_limit = q.frac_delay ? detail::fractional_exact_limit(q) : limits::model_degree;
   if (plan.exact_degree > exact_limit)
-    throw InputError("the exact objective of (45) would have degree " + std::to_string(plan.exact_degree) +
+    throw InputError("the exact objective of (45) would have degree " + degree_text(plan.exact_degree) +
                      ", more than the limit of " + std::to_string(exact_limit) +
                      " for the exact path (the long-delay path takes any delay)");
   Bound b = detail::certified_exact(q, digits);
