@@ -39,6 +39,9 @@ bound  b* = sup_{0<=w<=pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1-z)} + eta, z = e^{jw
          lower  the witness c0 in the band (R_k(u0) > 0 for k < q and R_q(u0) >= 0; c0 = -1 only for
                 q = 1) with f(c0) >= lo, exactly, f evaluated on E^/F^ reduced by their gcd (at a
                 removable point the value is f's limit, which the sup reaches).
+       b* = +inf: the forms above at a pole, or without expanding the delay: at z = -1 (pole_at_z,
+       bound_infinite_at_minus_one) or at a simple pole inside the band (pole_on_circle, status certified,
+       bound_infinite_on_circle: f = Im(k)/(theta - theta0) + O(1), Im(k) shown nonzero in intervals).
 r      r(jw) = T/(e^{jwT}-1) = -T/2 - j (T/2) cot(wT/2) (paper 001, (44)): Re r = -T/2 exactly;
        Im r in [im_lo, im_hi] by mpmath interval cot at 128, 256, ... 65536 bits.
 stability  the one-DOF sampled loop (device P(s), operator Z_op(s), ZOH, force = -z^-n H(z) x):
@@ -835,15 +838,18 @@ def check_bound(c):
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     cells = "infinite" not in claim and "cells" in evidence
     local = "infinite" in claim and "pole_at_z" in evidence  # b* = +inf at z = -1, nothing expanded
+    circle = "infinite" in claim and "pole_on_circle" in evidence  # b* = +inf inside the band, nothing expanded
     if local:
         only(evidence, ("pole_at_z",), "evidence")
+    elif circle:
+        only(evidence, ("pole_on_circle",), "evidence")
     elif "infinite" in claim:
         only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), "evidence")
     elif cells:
         only(evidence, ("cells", "witness_theta"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
-    H, T, eta, P, q = bound_model(model, expanded=not (cells or local))
+    H, T, eta, P, q = bound_model(model, expanded=not (cells or local or circle))
     status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
@@ -853,6 +859,10 @@ def check_bound(c):
         if status != "exact":
             raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
         return bound_infinite_at_minus_one(H, P, q, evidence)
+    if circle:
+        if status != "certified":
+            raise Malformed("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in intervals)")
+        return bound_infinite_on_circle(H, T, Fraction(P, q), evidence)
     if infinite:
         return bound_infinite(H, T, P, q, status, evidence)
     if cells:
@@ -897,6 +907,74 @@ def bound_infinite_at_minus_one(H, P, q, evidence):
     if (1 if r > 0 else -1) * sin_sign > 0:
         return False, "b* = +inf not shown: r sin(nu pi) > 0 (r = %s, nu = %d/%d): the objective tends to -inf at wT = pi" % (short(r), P, q)
     return True, "b* = +inf: H's simple pole at z = -1 (r = %s) and sin(nu pi) of the other sign (nu = %d/%d)" % (short(r), P, q)
+
+
+def bound_infinite_on_circle(H, T, nu, evidence):
+    """b* = +inf at a simple pole z0 = e^{j theta0} of H inside the band, 0 < theta0 < pi (evidence.pole_on_circle =
+    {q, c_lo, c_hi}, the delay never expanded). The pole: c0 = cos(theta0) is a root of q in [c_lo, c_hi] inside
+    (-1, 1) (q changes sign there, or vanishes at c_lo = c_hi), and Z(z) = z^m q((z + 1/z)/2), expanded here by the
+    binomial theorem, divides D; on |z| = 1, (z + 1/z)/2 = Re z, so Z(z0) = z0^m q(c0) = 0 at z0 = c0 + j sqrt(1 - c0^2),
+    and D(z0) = 0. Near z0, H = R/(z - z0) + (bounded), R = N(z0)/D'(z0) (D'(z0) != 0: simple), and
+    e^{j theta} - z0 = j z0 (theta - theta0)(1 + O(theta - theta0)), so with g(theta) = T e^{-j nu theta}/(1 - e^{j theta})
+    (smooth at theta0 != 0), f = Re{g H} = Re{g(theta0) R/(j z0 (theta - theta0))} + O(1) = Im(k)/(theta - theta0) + O(1),
+    k = T R e^{-j nu theta0}/((1 - z0) z0). Im(k) != 0, shown in mpmath intervals over all of [c_lo, c_hi], sends f to
+    +inf on one side of theta0."""
+    from mpmath import iv
+    e = evidence["pole_on_circle"]
+    if not isinstance(e, dict):
+        raise Malformed("evidence.pole_on_circle: must be an object {q, c_lo, c_hi}")
+    only(e, ("q", "c_lo", "c_hi"), "evidence.pole_on_circle")
+    qs = e.get("q")
+    if not isinstance(qs, list) or not 2 <= len(qs) <= 1001:
+        raise Malformed("evidence.pole_on_circle.q: must be a list of 2 to 1001 \"p/q\" strings (ascending powers of c)")
+    qp = trim([exact_value(v, "evidence.pole_on_circle.q[%d]" % i) for i, v in enumerate(qs)])
+    if len(qp) < 2:
+        raise Malformed("evidence.pole_on_circle.q: a constant has no root")
+    lo, hi = exact(e, "c_lo", "evidence.pole_on_circle"), exact(e, "c_hi", "evidence.pole_on_circle")
+    fails = "b* = +inf not shown: "
+    if not -1 < lo <= hi < 1:
+        return False, fails + "[c_lo, c_hi] is not inside (-1, 1) (the band's inside)"
+    if (peval(qp, lo) != 0) if lo == hi else (peval(qp, lo) * peval(qp, hi) >= 0):
+        return False, fails + "q has no root shown in [c_lo, c_hi] (no sign change, no zero)"
+    m = len(qp) - 1
+    Z = [Fraction(0)] * (2 * m + 1)
+    for k, qk in enumerate(qp):
+        for i in range(k + 1):
+            Z[m + k - 2 * i] += qk * comb(k, i) / 2 ** k
+    if pdivmod(H.den, trim(Z))[1]:
+        return False, fails + "z^m q((z + 1/z)/2) does not divide D (no pole of H shown on the circle)"
+    iv.prec = 256
+
+    def I(x):
+        return iv.mpf(x.numerator) / x.denominator
+
+    def mul(a, b):
+        return a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]
+
+    def div(a, b):
+        d = b[0] * b[0] + b[1] * b[1]
+        return (a[0] * b[0] + a[1] * b[1]) / d, (a[1] * b[0] - a[0] * b[1]) / d
+
+    def at(p, z):
+        v = (iv.mpf(0), iv.mpf(0))
+        for a in reversed(p):
+            v = mul(v, z)
+            v = (v[0] + I(Fraction(a)), v[1])
+        return v
+    c0 = iv.mpf([I(lo).a, I(hi).b])
+    s0 = iv.sqrt(1 - c0 * c0)
+    z0 = (c0, s0)
+    d1 = at(pderiv(H.den), z0)
+    if not (d1[0] * d1[0] + d1[1] * d1[1]).a > 0:
+        return False, fails + "D'(z0) may be 0 (the pole is not shown simple)"
+    x = I(nu) * iv.atan2(s0, c0)
+    k = div(mul(at(H.num, z0), (iv.cos(x), -iv.sin(x))), d1)
+    k = div(k, mul((1 - c0, -s0), z0))
+    im = I(T) * k[1]
+    if not (im.a > 0 or im.b < 0):
+        return False, fails + "Im(k) of the pole's term is not shown nonzero"
+    return True, "b* = +inf: H's simple pole at cos(theta0) in [%s, %s], Im(k) %s 0 (+inf as theta -> theta0 from %s)" % (
+        short(lo), short(hi), ">" if im.a > 0 else "<", "above" if im.a > 0 else "below")
 
 
 def bound_infinite(H, T, P, q, status, evidence):

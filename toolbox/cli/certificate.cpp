@@ -411,7 +411,9 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   const bool long_delay = !b.infinite && b.enclosure && cells_form(certificate_size(p.H, p), b.status, pole_on_circle(p.H, p));
   const rational nu = delay_samples(p);
   const bool at_minus_one = b.infinite && den(nu) != 1 && p.H.den()(rational(-1)) == 0;
-  if (!long_delay && !at_minus_one) check_certificate_size(p.H, p);
+  // b* = +inf [certified]: a simple pole on the circle inside the band, shown where it is (circle_pole.cpp)
+  const bool on_circle = b.infinite && b.status == Status::certified;
+  if (!long_delay && !at_minus_one && !on_circle) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = certificate_header("bound");
@@ -438,6 +440,18 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
     }
     if (v.verified) return local;
     check_certificate_size(p.H, p);
+  }
+  if (on_circle) {  // the local form at any size: q(c) exact, cos(theta0) isolated (check/bound_check.hpp)
+    const auto pole = passivity::detail::circle_pole(p);
+    if (!pole) throw NumericalError("--certificate: the pole on the circle that gave b* = +inf was not found again");
+    claim["status"] = "certified";
+    claim["infinite"] = true;
+    j["claim"] = claim;
+    nlohmann::json q = nlohmann::json::array();
+    for (const rational& a : pole->q.coeffs()) q.push_back(a.str());
+    j["evidence"] = {{"pole_on_circle", {{"q", q}, {"c_lo", pole->c_lo.str()}, {"c_hi", pole->c_hi.str()}}}};
+    verify_before_writing(j);
+    return j;
   }
   if (b.infinite) return infinite_bound_evidence(j, claim, witness_objective(p));
   if (long_delay) {

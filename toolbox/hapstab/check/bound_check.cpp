@@ -10,6 +10,12 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/numeric/flint.hpp"
+#if HAPSTAB_FLINT3
+#include <flint/acb.h>
+#else
+#include <acb.h>
+#endif
 
 namespace hapstab::check {
 
@@ -79,6 +85,103 @@ Verdict check_infinite_at_minus_one(const nlohmann::json& evidence, const Transf
                     std::to_string(dm.P) + "/" + std::to_string(dm.q) + "): it tends to +inf as wT -> pi"};
 }
 
+// A complex ball, freed on scope exit (check_infinite_on_circle's arithmetic).
+struct ComplexBall {
+  acb_t v;
+  ComplexBall() { acb_init(v); }
+  ~ComplexBall() { acb_clear(v); }
+  ComplexBall(const ComplexBall&) = delete;
+  ComplexBall& operator=(const ComplexBall&) = delete;
+};
+
+// p at the complex ball z (rational coefficients, Horner).
+void horner(acb_t out, const P& p, const acb_t z, long prec) {
+  arb_t a;
+  arb_init(a);
+  acb_zero(out);
+  for (int k = p.degree(); k >= 0; --k) {
+    acb_mul(out, out, z, prec);
+    flint::set(a, p.coeff(k), prec);
+    acb_add_arb(out, out, a, prec);
+  }
+  arb_clear(a);
+}
+
+// b* = +inf at a simple pole z0 = e^{j theta0} of H inside the band (evidence.pole_on_circle = {q, c_lo,
+// c_hi}; bound_check.hpp, the circle form). The pole: q changes sign on [c_lo, c_hi] inside (-1, 1), or
+// vanishes at c_lo = c_hi, so it has a root c0 there, and Z(z) = z^m q((z + 1/z)/2), expanded by the binomial theorem, divides D exactly:
+// Z(z0) = z0^m q(c0) = 0 at z0 = c0 + j sqrt(1 - c0^2) (|z0| = 1, so (z0 + 1/z0)/2 = Re z0 = c0), so D(z0) = 0.
+// The divergence: D'(z0) != 0 (simple) and Im(c) != 0 for c = T R e^{-j nu theta0}/((1 - z0) z0), R =
+// N(z0)/D'(z0), both in balls over all of [c_lo, c_hi]; then f = Im(c)/(theta - theta0) + O(1) -> +inf on one
+// side of theta0 in (0, pi).
+Verdict check_infinite_on_circle(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm) {
+  const nlohmann::json& e = evidence.at("pole_on_circle");
+  if (!e.is_object()) throw InputError("evidence.pole_on_circle: must be an object {q, c_lo, c_hi}");
+  detail::only_fields(e, {"q", "c_lo", "c_hi"}, "evidence.pole_on_circle");
+  if (!e.contains("q") || !e.at("q").is_array() || e.at("q").size() < 2 || e.at("q").size() > 1001)
+    throw InputError("evidence.pole_on_circle.q: must be an array of 2 to 1001 \"p/q\" strings (ascending powers of c)");
+  std::vector<rational> qc;
+  for (size_t i = 0; i < e.at("q").size(); ++i)
+    qc.push_back(detail::exact_string(e.at("q")[i], "evidence.pole_on_circle.q[" + std::to_string(i) + "]"));
+  const P q(qc);
+  if (q.degree() < 1) throw InputError("evidence.pole_on_circle.q: a constant has no root");
+  const rational lo = detail::exact_field(e, "c_lo", "evidence.pole_on_circle"), hi = detail::exact_field(e, "c_hi", "evidence.pole_on_circle");
+  const std::string fails = "b* = +inf not shown: ";
+  if (!(rational(-1) < lo && lo <= hi && hi < rational(1)))
+    return {false, fails + "[c_lo, c_hi] is not an interval inside (-1, 1) (the band's inside, 0 < wT < pi)"};
+  if (lo == hi ? q(lo) != 0 : q(lo) * q(hi) >= 0)
+    return {false, fails + "q does not change sign on [c_lo, c_hi], nor vanish at c_lo = c_hi (no root of it shown there)"};
+  const int m = q.degree();
+  std::vector<rational> z(static_cast<size_t>(2 * m + 1), rational(0));
+  for (int k = 0; k <= m; ++k) {  // z^m ((z + 1/z)/2)^k = 2^-k sum_i C(k, i) z^(m + k - 2i)
+    rational binom(1);
+    for (int i = 0; i <= k; ++i) {
+      z[static_cast<size_t>(m + k - 2 * i)] += q.coeff(k) * binom / rational(integer(1) << k);
+      binom = binom * rational(k - i) / rational(i + 1);
+    }
+  }
+  if (!divmod(H.den(), P(z)).second.is_zero())
+    return {false, fails + "z^m q((z + 1/z)/2) does not divide H's denominator (no pole of H shown on the circle there)"};
+  const rational nu = rational(dm.n) + dm.td / dm.T;
+  const long prec = 256;
+  arb_t c0, x, s0, theta;
+  arb_init(c0), arb_init(x), arb_init(s0), arb_init(theta);
+  flint::set(c0, lo, prec);
+  flint::set(x, hi, prec);
+  arb_union(c0, c0, x, prec);
+  arb_mul(s0, c0, c0, prec);
+  arb_neg(s0, s0);
+  arb_add_ui(s0, s0, 1, prec);
+  arb_sqrt(s0, s0, prec);
+  arb_acos(theta, c0, prec);
+  ComplexBall z0, num, slope, w, k;
+  acb_set_arb_arb(z0.v, c0, s0);
+  horner(num.v, H.num(), z0.v, prec);
+  horner(slope.v, H.den().derivative(), z0.v, prec);
+  const bool simple = !acb_contains_zero(slope.v);
+  flint::set(x, nu, prec);
+  arb_mul(x, x, theta, prec);
+  acb_set_arb(k.v, x);
+  acb_mul_onei(k.v, k.v);
+  acb_neg(k.v, k.v);
+  acb_exp(k.v, k.v, prec);  // e^{-j nu theta0}
+  acb_mul(k.v, k.v, num.v, prec);
+  acb_div(k.v, k.v, slope.v, prec);
+  acb_one(w.v);
+  acb_sub(w.v, w.v, z0.v, prec);
+  acb_mul(w.v, w.v, z0.v, prec);
+  acb_div(k.v, k.v, w.v, prec);
+  flint::set(x, dm.T, prec);
+  acb_mul_arb(k.v, k.v, x, prec);
+  const int sign = arb_is_positive(acb_imagref(k.v)) ? 1 : arb_is_negative(acb_imagref(k.v)) ? -1 : 0;
+  arb_clear(c0), arb_clear(x), arb_clear(s0), arb_clear(theta);
+  if (!simple) return {false, fails + "D'(z0) may be 0 (the pole is not shown simple)"};
+  if (sign == 0) return {false, fails + "Im(c) of the pole's term is not shown nonzero (c = T R e^{-j nu theta0}/((1 - z0) z0))"};
+  return {true, "b* = +inf: H's simple pole z0 = e^{j theta0}, cos(theta0) in [" + detail::shortened(lo) + ", " +
+                    detail::shortened(hi) + "] a root of q, z^m q((z + 1/z)/2) dividing D; f = Im(c)/(theta - theta0) + O(1) with Im(c) " +
+                    (sign > 0 ? "> 0" : "< 0") + ": +inf as theta -> theta0 from " + (sign > 0 ? "above" : "below")};
+}
+
 // b* in [lo, hi] by cells (check/bound_cells.hpp): evidence.cells the cells' right ends, evidence.witness_theta.
 Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm, const rational& lo,
                     const rational& hi) {
@@ -106,7 +209,9 @@ Verdict check_bound(const nlohmann::json& cert) {
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
   const bool cells = !infinite && evidence.contains("cells");  // the long-delay form (check/bound_cells.hpp)
   const bool at_minus_one = infinite && evidence.contains("pole_at_z");  // the local form: nothing expanded
+  const bool on_circle = infinite && evidence.contains("pole_on_circle");  // the circle form: nothing expanded
   if (at_minus_one) detail::only_fields(evidence, {"pole_at_z"}, "evidence");
+  else if (on_circle) detail::only_fields(evidence, {"pole_on_circle"}, "evidence");
   else if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
   else if (cells) detail::only_fields(evidence, {"cells", "witness_theta"}, "evidence");
   else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
@@ -114,7 +219,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   const rational& eta = dm.eta;
   const TransferFunction H = detail::model_tf(model, dm.T, HiddenPoles::allow_marginal);  // as `bound` reads it
   // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
-  if (!cells && !at_minus_one) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
+  if (!cells && !at_minus_one && !on_circle) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
   const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
@@ -123,6 +228,10 @@ Verdict check_bound(const nlohmann::json& cert) {
   if (range.infinite && at_minus_one) {
     if (range.status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
     return check_infinite_at_minus_one(evidence, H, dm);
+  }
+  if (range.infinite && on_circle) {
+    if (range.status != "certified") throw InputError("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in balls)");
+    return check_infinite_on_circle(evidence, H, dm);
   }
   if (range.infinite) return check_infinite(evidence, H, dm, range.status);
   const std::string& status = range.status;

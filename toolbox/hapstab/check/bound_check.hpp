@@ -43,9 +43,18 @@
 //           objective tends to +inf iff rho sin(nu pi) < 0, and sign sin(nu pi) = (-1)^floor(nu) (nu not
 //           an integer). Exact: rho is rational, floor(nu) = P div q. The Tustin wall with t_d = 1500.5 T
 //           (+inf) against 1501.5 T (-inf: this form refutes it).
+//   (+inf, the circle form: evidence.pole_on_circle = {q, c_lo, c_hi}, status certified, nothing expanded, no
+//           size limit) a simple pole z0 = e^{j theta0}, 0 < theta0 < pi, of H: H = R/(z - z0) + O(1), R =
+//           N(z0)/D'(z0), and e^{j theta} - z0 = j z0 (theta - theta0)(1 + O(theta - theta0)), so
+//             f(theta) = Im(c)/(theta - theta0) + O(1),  c = T R e^{-j nu theta0}/((1 - z0) z0),
+//           -> +inf on one side of theta0 when Im(c) != 0. Verified: q (exact, in c = cos theta) has a root
+//           c0 in [c_lo, c_hi] inside (-1, 1) (a sign change, or q(c_lo) = 0 at c_lo = c_hi); Z(z) = z^m
+//           q((z + 1/z)/2), expanded by the binomial theorem, divides D exactly: at z0 = c0 + j sqrt(1 - c0^2),
+//           (z0 + 1/z0)/2 = c0 on |z| = 1, so Z(z0) = z0^m q(c0) = 0 and D(z0) = 0; D'(z0) != 0 and Im(c) != 0 in Arb
+//           balls over all of [c_lo, c_hi]. (z - 1)/(z^2 + 1) at an even delay has Im(c) = 0: refuted.
 // Size limit: q (max(deg N, deg D) + 1) + P <= 1000 (the check expands the delay; degree 300
 // takes ~7 s), else the certificate is refused (InputError) rather than checked for hours --
-// unless its evidence is the local form above (b* = +inf at z = -1) or the cells' form (evidence.cells,
+// unless its evidence is the local form above (b* = +inf at z = -1), the circle form, or the cells' form (evidence.cells,
 // evidence.witness_theta; a finite claim): f < hi cell by cell and f(theta0) > lo in balls, the delay never
 // expanded (check/bound_cells.hpp).
 // Hypotheses verified on the data: T > 0, n >= 0 an integer (at most 100000), t_d >= 0,

@@ -74,8 +74,11 @@ Objective objective(const RationalFunction<rational>& H, const rational& T, int 
 enum class Method { certified, fast, grid };
 
 /// The two algorithms of the certified method (see the header comment).
-enum class BoundPath { exact, long_delay };
-inline const char* to_string(BoundPath p) { return p == BoundPath::exact ? "exact" : "long_delay"; }
+/// at_pole: b* = +inf decided at a pole of H on the circle inside the band, nothing expanded (circle_pole.cpp).
+enum class BoundPath { exact, long_delay, at_pole };
+inline const char* to_string(BoundPath p) {
+  return p == BoundPath::exact ? "exact" : p == BoundPath::long_delay ? "long_delay" : "at_pole";
+}
 
 /// Which path computes b* and why: the exact path where its polynomial (degree max(deg N,
 /// deg D + n), or q (order + n) + p + q for t_d = (p/q) T) is small enough that it is no slower

@@ -176,6 +176,18 @@ bool certified_fractional_exact(const BoundProblem& pb, int digits, int max_degr
 /// b* = +inf when a pole of H at z = -1 meets a fractional delay (exact divergence test at wT = pi);
 /// nullopt otherwise (the objective is then finite there, or its behaviour undecided by the test).
 std::optional<Bound> fractional_divergence(const BoundProblem& pb);
+/// A simple pole z0 = e^{j theta0} of H inside the band (0 < theta0 < pi) at which the objective tends to
+/// +inf (circle_pole.cpp): cos(theta0) is the root of q (exact; z^-m C(z) = q(cos theta) for H's
+/// palindromic factor C on the circle) in [c_lo, c_hi], and f = Im(c)/(theta - theta0) + O(1) there with
+/// Im(c) of the sign `side` (+1: +inf from above), shown in balls. nullopt when no such pole is shown.
+struct CirclePole {
+  QPoly q;
+  rational c_lo, c_hi, theta_lo, theta_hi;
+  int side = 0;
+};
+std::optional<CirclePole> circle_pole(const BoundProblem& p);
+/// b* = +inf [certified] from circle_pole, at any delay; nullopt when it shows none.
+std::optional<Bound> circle_pole_divergence(const BoundProblem& p);
 /// The degree of that objective, q (max(deg N, deg D) + n) + p + q (0 without a fractional delay).
 long fractional_exact_degree(const BoundProblem& pb);
 
