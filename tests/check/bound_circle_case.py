@@ -27,20 +27,15 @@ import mpmath as mp
 from cert_edit import deleted, with_field
 from loop_max_case import run_cases
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "verify"))
+from indep_common import pmul  # noqa: E402 (the references' polynomial product)
+
 # H's factors on the circle (ascending coefficients; palindromic), their poles inside the band
 CIRCLE = [("z^2 + 1 (theta0 = pi/2)", [1, 0, 1]),
           ("z^2 - z + 1 (pi/3)", [1, -1, 1]),
           ("z^2 + z/3 + 1 (an irrational angle, rational cos)", [1, Fraction(1, 3), 1]),
           ("z^4 + 1 (pi/4 and 3 pi/4: cos irrational)", [1, 0, 0, 0, 1]),
           ("z^4 + z^3 + z^2 + z + 1 (2 pi/5 and 4 pi/5)", [1, 1, 1, 1, 1])]
-
-
-def pmul(a, b):
-    out = [Fraction(0)] * (len(a) + len(b) - 1)
-    for i, x in enumerate(a):
-        for j, y in enumerate(b):
-            out[i + j] += Fraction(x) * Fraction(y)
-    return out
 
 
 def poly_text(p, var="z"):
