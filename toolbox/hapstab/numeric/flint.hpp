@@ -3,7 +3,7 @@
 // with Arb as a separate library (Debian 12: arb.h in the include root) and FLINT 3 with Arb
 // inside (flint/arb.h); HAPSTAB_FLINT3 is set by cmake/hapstabDependencies.cmake.
 //
-// Only the .cpp files of numeric/, poly/, lmi/, passivity/ and stability/ include this header (and the
+// Only the .cpp files of numeric/, poly/, lmi/, passivity/, stability/ and check/ include this header (and the
 // internal numeric/ball.hpp, numeric/jet.hpp, which only .cpp files include): no other public header
 // names a FLINT or Arb type, and Boost.Multiprecision (numeric/scalar.hpp) stays the scalar
 // tower users see. The owners below are move-only RAII wrappers; the conversions are exact.
