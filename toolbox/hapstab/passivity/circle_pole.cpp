@@ -21,6 +21,7 @@
 #endif
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/flint.hpp"
 #include "hapstab/passivity/bound_detail.hpp"
 #include "hapstab/poly/sturm.hpp"
@@ -37,23 +38,15 @@ struct Acb {
   Acb(const Acb&) = delete;
   Acb& operator=(const Acb&) = delete;
 };
-/// A real ball, freed on scope exit.
-struct Arb {
-  arb_t v;
-  Arb() { arb_init(v); }
-  ~Arb() { arb_clear(v); }
-  Arb(const Arb&) = delete;
-  Arb& operator=(const Arb&) = delete;
-};
 
 /// p(z) for a complex ball z, by Horner's rule.
 void evaluate(acb_t out, const QPoly& p, const acb_t z, long prec) {
-  Arb a;
+  flint::Ball a;
   acb_zero(out);
   for (int k = p.degree(); k >= 0; --k) {
     acb_mul(out, out, z, prec);
-    flint::set(a.v, p.coeff(k), prec);
-    acb_add_arb(out, out, a.v, prec);
+    flint::set(a.get(), p.coeff(k), prec);
+    acb_add_arb(out, out, a.get(), prec);
   }
 }
 
@@ -74,31 +67,31 @@ QPoly cosine_form(const QPoly& C) {
 /// Im(c) of the pole whose cos(theta0) lies in [lo, hi], at `prec` bits; theta0 written into `theta`.
 void pole_term(const BoundProblem& p, const rational& lo, const rational& hi, const rational& nu, long prec, arb_t im,
                arb_t theta) {
-  Arb c0, x, s0;
-  flint::set(c0.v, lo, prec);
-  flint::set(x.v, hi, prec);
-  arb_union(c0.v, c0.v, x.v, prec);
-  arb_sqr(s0.v, c0.v, prec);
-  arb_sub_si(s0.v, s0.v, 1, prec);
-  arb_neg(s0.v, s0.v);
-  arb_sqrt(s0.v, s0.v, prec);  // sin(theta0) > 0
-  arb_acos(theta, c0.v, prec);
+  flint::Ball c0, x, s0;
+  flint::set(c0.get(), lo, prec);
+  flint::set(x.get(), hi, prec);
+  arb_union(c0.get(), c0.get(), x.get(), prec);
+  arb_sqr(s0.get(), c0.get(), prec);
+  arb_sub_si(s0.get(), s0.get(), 1, prec);
+  arb_neg(s0.get(), s0.get());
+  arb_sqrt(s0.get(), s0.get(), prec);  // sin(theta0) > 0
+  arb_acos(theta, c0.get(), prec);
   Acb z0, N, dD, k, e, w;
-  acb_set_arb_arb(z0.v, c0.v, s0.v);
+  acb_set_arb_arb(z0.v, c0.get(), s0.get());
   evaluate(N.v, p.H.num(), z0.v, prec);
   evaluate(dD.v, p.H.den().derivative(), z0.v, prec);
   acb_div(k.v, N.v, dD.v, prec);  // R (indeterminate when D'(z0) may be 0: a pole not shown simple)
-  flint::set(x.v, nu, prec);
-  arb_mul(x.v, x.v, theta, prec);
-  arb_sin_cos(acb_imagref(e.v), acb_realref(e.v), x.v, prec);
+  flint::set(x.get(), nu, prec);
+  arb_mul(x.get(), x.get(), theta, prec);
+  arb_sin_cos(acb_imagref(e.v), acb_realref(e.v), x.get(), prec);
   acb_conj(e.v, e.v);  // e^{-j nu theta0}
   acb_mul(k.v, k.v, e.v, prec);
   acb_sub_ui(w.v, z0.v, 1, prec);
   acb_neg(w.v, w.v);
   acb_mul(w.v, w.v, z0.v, prec);  // (1 - z0) z0
   acb_div(k.v, k.v, w.v, prec);
-  flint::set(x.v, p.T, prec);
-  acb_mul_arb(k.v, k.v, x.v, prec);
+  flint::set(x.get(), p.T, prec);
+  acb_mul_arb(k.v, k.v, x.get(), prec);
   arb_set(im, acb_imagref(k.v));
 }
 
@@ -123,9 +116,9 @@ std::optional<CirclePole> circle_pole(const BoundProblem& p) {
     r = refine_root(sf, r, rational(1) / rational(integer(1) << 96));
     if (r.lo <= -1 || r.hi >= 1) continue;  // q(+-1) != 0 (z = +-1 removed): refined away from the ends
     for (const long prec : {128L, 384L}) {
-      Arb im, theta;
-      pole_term(p, r.lo, r.hi, nu, prec, im.v, theta.v);
-      const int sign = arb_is_positive(im.v) ? 1 : arb_is_negative(im.v) ? -1 : 0;
+      flint::Ball im, theta;
+      pole_term(p, r.lo, r.hi, nu, prec, im.get(), theta.get());
+      const int sign = arb_is_positive(im.get()) ? 1 : arb_is_negative(im.get()) ? -1 : 0;
       if (sign == 0) continue;
       CirclePole out;
       out.q = q;
@@ -134,9 +127,9 @@ std::optional<CirclePole> circle_pole(const BoundProblem& p) {
       out.side = sign;
       arf_t end;
       arf_init(end);
-      arb_get_lbound_arf(end, theta.v, prec);
+      arb_get_lbound_arf(end, theta.get(), prec);
       out.theta_lo = flint::to_rational(end);
-      arb_get_ubound_arf(end, theta.v, prec);
+      arb_get_ubound_arf(end, theta.get(), prec);
       out.theta_hi = flint::to_rational(end);
       arf_clear(end);
       return out;
