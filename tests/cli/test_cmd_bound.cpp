@@ -14,6 +14,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "passivity/reference.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_bound {
+
 using namespace hapstab;
 using testref::R;
 
@@ -333,3 +337,5 @@ TEST(CmdBound, MaxGainRefusesByNameAndRunsInBatches) {
   EXPECT_NE(r.out.find("\"max\":\"1000\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"max\":\"0\""), std::string::npos) << r.out;
 }
+
+}  // namespace test_cmd_bound

@@ -11,6 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_multidof {
+
 namespace {
 
 using hapstab_test::CliRun;
@@ -412,3 +416,5 @@ off_diagonal = "-(kc[i] + Bc[i]*s)*(kc[j] + Bc[j]*s)/(M*s^2 + (B + sum(Bc))*s + 
   EXPECT_NE(t.out.find("(20 in all)"), std::string::npos) << t.out;
   EXPECT_EQ(t.out.find("A_V ="), std::string::npos) << t.out;
 }
+
+}  // namespace test_cmd_multidof

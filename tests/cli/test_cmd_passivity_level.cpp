@@ -16,6 +16,10 @@
 
 #include "hapstab/numeric/decimal.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_passivity_level {
+
 using namespace hapstab;
 
 namespace {
@@ -209,3 +213,5 @@ TEST(CmdPassivityLevel, BadInputExits2) {
   EXPECT_EQ(run("--ss " + notjson).code, 2);
   EXPECT_EQ(run("--ss " + bad + " --H \"1\" --T 1").code, 2);  // both sources
 }
+
+}  // namespace test_cmd_passivity_level

@@ -12,6 +12,10 @@
 
 #include "cli/cli_run.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_reproduce {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,3 +127,5 @@ TEST(CmdReproduce, PythonExamplesAreFiguresOfTheReport) {
   }
   EXPECT_NE(read(root / "out" / "index.html").find("python_kb_map.pdf"), std::string::npos);
 }
+
+}  // namespace test_cmd_reproduce

@@ -9,6 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_simulate {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -113,3 +117,5 @@ TEST(CmdSimulate, BadInputExitsTwoWithAMessage) {
   auto r = run("simulate --scene /nonexistent.toml --out " + tmp("x").string());
   EXPECT_EQ(r.code, 2);
 }
+
+}  // namespace test_cmd_simulate

@@ -16,6 +16,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/numeric/scalar.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_cmd_wedge {
+
 using namespace hapstab;
 
 namespace {
@@ -186,3 +190,5 @@ TEST(CmdLimitCycle, OscillationPeriodAndAmplitude) {
   EXPECT_FALSE(j3["oscillates"].get<bool>());
   EXPECT_TRUE(j3["period"].is_null());
 }
+
+}  // namespace test_cmd_wedge

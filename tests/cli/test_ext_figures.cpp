@@ -19,6 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_ext_figures {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -167,3 +171,5 @@ TEST(BenchCharts, TimingLineNamesTheMachineAndWarnsWhenLoaded) {
   EXPECT_NE(timing_of(hapstab::cli::bench_timing_vars("passivity", d)).find("not recorded"), std::string::npos);
   fs::remove_all(d);
 }
+
+}  // namespace test_ext_figures

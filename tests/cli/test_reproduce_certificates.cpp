@@ -18,6 +18,10 @@
 #include "cli/reproduce_certificates.hpp"
 #include "test_files.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_reproduce_certificates {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -295,3 +299,5 @@ TEST(CmdReproduce, SceneAnalysesWriteTheirCertificates) {
             std::string::npos);
   EXPECT_NE(md.find("no coupling V verified exactly (the design's verdict: no V): no certificate"), std::string::npos);
 }
+
+}  // namespace test_reproduce_certificates

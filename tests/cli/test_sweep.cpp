@@ -18,6 +18,10 @@
 #include "cli/cli_run.hpp"
 #include "cli/sweep_cli.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_sweep {
+
 namespace fs = std::filesystem;
 using hapstab_test::run_cli;
 
@@ -443,3 +447,5 @@ TEST(Sweep, MultiDofMaxWithConservatismRowsEqualASingleRun) {
   EXPECT_TRUE(j["conservatism"].is_null()) << r.out;
   fs::remove_all(d);
 }
+
+}  // namespace test_sweep

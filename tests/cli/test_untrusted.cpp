@@ -19,6 +19,10 @@
 #include "test_files.hpp"
 #include "hapstab/report/process.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_untrusted {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -216,3 +220,5 @@ TEST(Untrusted, ReproduceEscapesSceneTextAndUsesNoShell) {
 }
 
 }  // namespace
+
+}  // namespace test_untrusted

@@ -29,6 +29,10 @@
 #include "cli/scenes.hpp"
 #include "test_files.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_untrusted_folders {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -329,3 +333,5 @@ TEST(UntrustedFolders, ParameterChainsAreLinearAndCapped) {
   EXPECT_NE(r.out.find("many.toml: parameters: 2000 parameters, more than the limit of 1000"), std::string::npos) << r.out;
   fs::remove_all(d);
 }
+
+}  // namespace test_untrusted_folders

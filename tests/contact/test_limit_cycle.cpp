@@ -13,6 +13,10 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_limit_cycle {
+
 using namespace hapstab;
 using namespace hapstab::contact;
 
@@ -174,3 +178,5 @@ TEST(Conservatism, NoCriterionContradictedOnASubsetOfTheSweep) {
     if (r.k_osc) { EXPECT_GE(*r.k_osc, r.k_wedge * (1 - 1e-3)); }
   }
 }
+
+}  // namespace test_limit_cycle

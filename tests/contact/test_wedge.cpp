@@ -13,6 +13,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/poly/polynomial.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_wedge {
+
 using namespace hapstab;
 using namespace hapstab::contact;
 using R = mpfloat<100>;
@@ -324,3 +328,5 @@ TEST(Wedge, FastVerdictAgreesWithSturm) {
   EXPECT_FALSE(wedge_holds(H));
   EXPECT_TRUE(wedge_holds(H_of("0.999/z")));
 }
+
+}  // namespace test_wedge

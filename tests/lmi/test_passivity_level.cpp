@@ -15,6 +15,10 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/error.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_passivity_level {
+
 using namespace hapstab;
 using namespace hapstab::lmi;
 using Eigen::MatrixXd;
@@ -209,3 +213,4 @@ TEST(PassivityLevel, CertifiedSisoRefusals) {
   EXPECT_EQ(c.lower_bound.value_or(rational(-1)), rational(1, 3)) << c.note;
 }
 
+}  // namespace test_passivity_level

@@ -14,6 +14,10 @@
 #include "hapstab/lmi/solve.hpp"
 #include "hapstab/numeric/error.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_solve {
+
 using namespace hapstab;
 using namespace hapstab::lmi;
 using Eigen::MatrixXd;
@@ -586,3 +590,5 @@ TEST(ExactCertificate, IntegerRouteAgreesWithRationalRoute) {
   EXPECT_FALSE(exact_lmi_holds(F2, beyond, true));
   EXPECT_FALSE(exact_lmi_holds(F2, beyond, false));
 }
+
+}  // namespace test_solve

@@ -7,6 +7,10 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/passivity/friction.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_friction {
+
 using namespace hapstab;
 using namespace hapstab::passivity;
 
@@ -88,3 +92,5 @@ TEST(Friction, FirTapsAndRefusals) {
   // W = 0: nothing quantized reaches the device
   EXPECT_EQ(friction_condition(H_of("0"), 0, rational(1)).fc_star, rational(0));
 }
+
+}  // namespace test_friction

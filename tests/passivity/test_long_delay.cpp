@@ -16,6 +16,10 @@
 #include "hapstab/passivity/bound_detail.hpp"
 #include "passivity/reference.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_long_delay {
+
 using namespace hapstab;
 using namespace hapstab::passivity;
 using testref::R;
@@ -417,3 +421,5 @@ TEST(LongDelay, DoublePassEndsWhereDoubleEnclosuresCancel) {
   EXPECT_LE(fresh.enclosure->lo, ref + eps);
   EXPECT_GE(fresh.enclosure->hi, ref - eps);
 }
+
+}  // namespace test_long_delay

@@ -12,6 +12,10 @@
 #include "hapstab/poly/polynomial.hpp"
 #include "hapstab/poly/rational_function.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_polynomial {
+
 using namespace hapstab;
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
@@ -256,3 +260,5 @@ TEST(RationalFunction, ConstantShortcutsGiveTheCanonicalForm) {
     EXPECT_TRUE((f + RF(P(-c)) + k) == f);
   }
 }
+
+}  // namespace test_polynomial

@@ -9,6 +9,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/poly/sturm.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_sturm {
+
 using namespace hapstab;
 using P = Polynomial<rational>;
 
@@ -170,3 +174,5 @@ TEST(Sturm, IsolateInInterval) {
   auto s = sturm_sequence(lin(2).pow(3));
   EXPECT_EQ(s.front(), lin(2));
 }
+
+}  // namespace test_sturm

@@ -9,6 +9,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/poly/unit_circle.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_unit_circle {
+
 using namespace hapstab;
 using P = Polynomial<rational>;
 using RF = RationalFunction<rational>;
@@ -104,3 +108,5 @@ TEST(UnitCircle, KnownForms) {
   EXPECT_EQ((a - a).re, P());
   EXPECT_THROW(unit_circle_polynomial(X().pow(3), 2), InputError);
 }
+
+}  // namespace test_unit_circle

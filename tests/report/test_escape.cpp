@@ -17,6 +17,10 @@
 #include "hapstab/report/escape.hpp"
 #include "hapstab/report/process.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_escape {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -221,3 +225,5 @@ TEST(Markdown, CellsCannotBreakTheTableOrLink) {
 }
 
 }  // namespace
+
+}  // namespace test_escape

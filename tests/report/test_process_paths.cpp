@@ -12,6 +12,10 @@
 #include "hapstab/report/paths.hpp"
 #include "hapstab/report/process.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_process_paths {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -145,3 +149,5 @@ TEST(Paths, InputFilesStayInsideTheirFolder) {
 }
 
 }  // namespace
+
+}  // namespace test_process_paths

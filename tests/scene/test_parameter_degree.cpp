@@ -8,6 +8,10 @@
 #include "hapstab/numeric/error.hpp"
 #include "hapstab/scene/parameter_degree.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_parameter_degree {
+
 using namespace hapstab;
 using scene::ParameterDegree;
 
@@ -126,3 +130,5 @@ ss = { A = [["1/2", "g/4"], ["0", "1/3"]], B = [["1"], ["1"]], C = [["1", "0"]],
   EXPECT_TRUE(d.dynamics_move);
   EXPECT_EQ(scene::points_needed_one_dof(d), 2 + 3);  // n = 2 states: n + 3 values
 }
+
+}  // namespace test_parameter_degree

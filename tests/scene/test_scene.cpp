@@ -12,6 +12,10 @@
 #include "hapstab/scene/scene.hpp"
 #include "scene/scene_text.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_scene {
+
 using namespace hapstab;
 using hapstab::scene::parse_scene;
 using scene_test::error_of;
@@ -287,3 +291,5 @@ TEST(SceneLimits, DelaysBeyondTheLimitAreRefusedByName) {
   const auto r = s.run(o);
   EXPECT_EQ(r.summary.steps_run, 20);
 }
+
+}  // namespace test_scene

@@ -15,6 +15,10 @@
 #include "hapstab/scene/scene.hpp"
 #include "scene/scene_text.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_scene_repeated {
+
 using namespace hapstab;
 using hapstab::scene::parse_scene;
 using scene_test::error_of;
@@ -298,3 +302,5 @@ TEST(SceneRepeated, DocsExampleParses) {
       EXPECT_EQ(at1, (i == j ? kc[i] : rational(0)) - kc[i] * kc[j] / 3600) << i << "," << j;
     }
 }
+
+}  // namespace test_scene_repeated

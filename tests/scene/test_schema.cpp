@@ -14,6 +14,10 @@
 #include "hapstab/scene/scene.hpp"
 #include "hapstab/scene/schema.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_schema {
+
 using namespace hapstab;
 namespace fs = std::filesystem;
 
@@ -263,3 +267,5 @@ TEST(SceneSchema, DocsSceneMdIsGenerated) {
   for (const char* section : {"[contact]", "[[input]]", "[multidof.coupling]", "What each command models", "**refused**"})
     EXPECT_NE(text.find(section), std::string::npos) << section;
 }
+
+}  // namespace test_schema

@@ -13,6 +13,10 @@
 #include "hapstab/stability/long_delay.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_long_delay {
+
 using namespace hapstab;
 
 namespace {
@@ -235,3 +239,5 @@ TEST(StabilityLongDelay, CrossingSearchWorkFollowsTheCrossover) {
     }
   }
 }
+
+}  // namespace test_long_delay

@@ -10,6 +10,10 @@
 #include "hapstab/numeric/decimal.hpp"
 #include "hapstab/stability/sampled_loop.hpp"
 
+// Its own namespace: the module's tests compile in unity batches (tests/CMakeLists.txt),
+// and other files of the batch define helpers of the same names.
+namespace test_sampled_loop {
+
 using namespace hapstab;
 
 namespace {
@@ -280,3 +284,5 @@ TEST(MaxGain, HeavyLightlyDampedDeviceBehindALongDelayIsStableAtSmallK) {
   EXPECT_GE(g.enclosure.lo, parse_rational("0.0995358072067029"));
   EXPECT_LE(g.enclosure.hi, parse_rational("0.0995358072069939"));
 }
+
+}  // namespace test_sampled_loop
