@@ -149,8 +149,6 @@ def main():
         failures += run_cases(hapstab, cases, tmp)
         # the Tustin wall's pole at z = -1 with an integer delay: set apart as rho K_{n+1} (since stop 81; before,
         # refused by name); the claim against (45) evaluated in mpmath (indep_passivity.bstar), edits refuted
-        # the Tustin wall's pole at z = -1 with an integer delay: set apart as rho K_{n+1} (since stop 81; before,
-        # refused by name); the claim against (45) evaluated in mpmath (indep_passivity.bstar), edits refuted
         failures += tustin_case(hapstab, tmp, 9, 1000, 5, 1000, None, [])
         # with a fractional delay, nu = 301.75 (since stop 82; before, `bound` itself said "no path takes this
         # case"): rho sin(nu pi) > 0, f -> -inf at pi, the cell holding pi shown by the tail test; the delay a sample
