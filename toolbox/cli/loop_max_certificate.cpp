@@ -230,7 +230,8 @@ struct Piece {
 
 struct Found {  // an interval [a, b] of the cover, b the caller's
   rational a;
-  Mat P;  // the interval's P, or (P linear) the one at a
+  Mat P;                 // the interval's P, or (P linear) the one at a
+  bool widened = false;  // one P, made wider by an SDP
 };
 
 // The Stein P of M(p) (the double solve's, to 53 bits), nullopt where that solve finds M(p) not stable.
@@ -285,19 +286,20 @@ std::optional<Found> one_p_interval(const BallRows& M1, const BallRows& M2, cons
   }
   if (!P) return std::nullopt;
   if (sdp.skip > 0) --sdp.skip;
+  bool widened = false;
   for (const int k : {4, 16, 64, 256}) {
     if (a == start || sdp.skip > 0) break;
     const rational wide = b - rational(k) * (b - a);
     const rational a2 = wide <= start ? start : std::max(start, round_down(wide, (b - wide) / 1024));
     sdp.work.sdp();
     if (auto Pw = common_stein(loop_at(M1, M2, a2), loop_at(M1, M2, b))) {
-      P = Pw, a = a2, sdp.misses = 0;
+      P = Pw, a = a2, sdp.misses = 0, widened = true;
     } else {
       if (k == 4 && ++sdp.misses >= 2) sdp.skip = 8, sdp.misses = 0;
       break;
     }
   }
-  return Found{a, *P};
+  return Found{a, *P, widened};
 }
 
 // The certificate of "stable on [0, lo], NOT stable at hi" (lo = hi = 0: sup = 0), or why there is none.
@@ -350,27 +352,31 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
   rational b = lo, width = lo - start;
   SdpWidening sdp{work};
   std::optional<Mat> P_at_b;  // the Stein P at b, kept from the last interval with P linear
+  bool sdp_regime = false;    // the last interval was one P that an SDP widened
   while (b > start) {
     if (pieces.size() >= kMaxIntervals) return {{}, "more than " + std::to_string(kMaxIntervals) + " intervals to cover [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) +
                         "] (a Stein P, or a pair of them, holds over a width ~ a fraction of the distance to the crossing)"};
-    // one P first; where it did not grow (near a crossing) P linear too, kept when it reaches 2.5 times as far (its
-    // check costs ~2.5 times as much: 12 products and 4 tests of definiteness against 4 and 2)
-    const std::optional<Found> one = one_p_interval(M1, M2, start, b, width, sdp);
+    // P linear first (double Stein solves and Bernstein tests, no SDP): kept at once where it holds over the last
+    // width or more, unless the last interval was one P that an SDP widened (there one P may reach much farther:
+    // 7 intervals against 19 on loop_max_free_wall_stiffness). Else one P (widened by SDPs), and P linear where it
+    // reaches 2.5 times as far (its check costs ~2.5 times as much: 12 products and 4 tests of definiteness against
+    // 4 and 2). Linear first: 20 s -> 5 s for a 3-DOF loop of order 12 whose SDPs reached 4 times the width and
+    // missed at 16 in every interval (docs/certificates.md).
+    if (!P_at_b) P_at_b = stein_P(M1, M2, b, work);
     std::optional<Found> lin;
-    if (!one || b - one->a <= width) {
-      if (!P_at_b) P_at_b = stein_P(M1, M2, b, work);
-      if (P_at_b) lin = linear_interval(M1, M2, start, b, width, *P_at_b, work);
-    }
+    if (P_at_b) lin = linear_interval(M1, M2, start, b, width, *P_at_b, work);
+    std::optional<Found> one;
+    if (!(lin && b - lin->a >= width && !sdp_regime)) one = one_p_interval(M1, M2, start, b, width, sdp);
     if (lin && (!one || b - lin->a >= rational(5, 2) * (b - one->a))) {
       pieces.push_back({b, lin->P, *P_at_b});
-      width = b - lin->a, b = lin->a, P_at_b = lin->P;
+      width = b - lin->a, b = lin->a, P_at_b = lin->P, sdp_regime = false;
       continue;
     }
     if (!one)
       return {{}, "no cover of [" + check::detail::decimal(start) + ", " + check::detail::decimal(lo) + "] below " + name + " = " +
                       check::detail::decimal(b)};
     pieces.push_back({b, one->P, {}});
-    width = b - one->a, b = one->a, P_at_b.reset();
+    width = b - one->a, b = one->a, P_at_b.reset(), sdp_regime = one->widened;
   }
   nlohmann::json cover = nlohmann::json::array();
   const Mat* last_P_to = nullptr;  // a linear interval's P equal to the last one's P_to is left out (the checkers take that)
