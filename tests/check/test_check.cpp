@@ -1411,6 +1411,50 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
 // A P that proves the hand loop above NOT stable: M^T P M - P = -I solved for M = [[1, -5], [1/10, 3/4]]
 // is indefinite; the checker verifies P - M^T P M > 0 over M's enclosure and w^T P w < 0. A P for
 // another loop, the claim flipped, and scenes beyond the reading are refused or refuted.
+// The checker's test of positive definiteness, on balls chosen so that the answer is known: every symmetric member
+// positive definite (true), one member singular or indefinite (false, whatever the midpoint), asymmetric balls whose
+// symmetric members are all positive definite, a diagonal 10^24 apart (the scaling D), an entry that is not finite.
+TEST(StabilityLoopCheck, BallPositiveDefiniteDecidesTheSymmetricMembers) {
+  flint::BallPrecision scope(128);
+  const auto ball = [](const std::string& lo, const std::string& hi) { return flint::Ball::hull(rational(lo), rational(hi)); };
+  const auto exact = [](const std::string& x) { return flint::Ball(rational(x)); };
+  std::string why;
+  const detail::BallRows pd{{exact("2"), exact("1")}, {exact("1"), exact("2")}};
+  EXPECT_TRUE(detail::ball_positive_definite(pd, why)) << why;
+  const detail::BallRows singular{{exact("1"), exact("1")}, {exact("1"), exact("1")}};
+  EXPECT_FALSE(detail::ball_positive_definite(singular, why));
+  // Q12 = Q21 in [99/100, 101/100]: the member with 101/100 has determinant 1 - 1.0201 < 0
+  const detail::BallRows straddles{{exact("1"), ball("99/100", "101/100")}, {ball("99/100", "101/100"), exact("1")}};
+  EXPECT_FALSE(detail::ball_positive_definite(straddles, why));
+  EXPECT_NE(why.find("not shown positive definite"), std::string::npos) << why;
+  // asymmetric balls: a symmetric member has A12 = A21 in [1/2, 6/10] (both balls), determinant >= 1 - 0.36 > 0
+  const detail::BallRows asym{{exact("1"), ball("1/2", "6/10")}, {ball("4/10", "7/10"), exact("1")}};
+  EXPECT_TRUE(detail::ball_positive_definite(asym, why)) << why;
+  // diag(10^12, 10^-12), off-diagonal 1/2: determinant 3/4 > 0, shown only after the scaling by powers of two
+  const detail::BallRows scaled{{exact("1000000000000"), exact("1/2")}, {exact("1/2"), exact("1/1000000000000")}};
+  EXPECT_TRUE(detail::ball_positive_definite(scaled, why)) << why;
+  const detail::BallRows scaled_not{{exact("1000000000000"), exact("10000001/10000000")},
+                                    {exact("10000001/10000000"), exact("1/1000000000000")}};  // determinant < 0
+  EXPECT_FALSE(detail::ball_positive_definite(scaled_not, why));
+  detail::BallRows infinite = pd;
+  infinite[0][1] = flint::Ball(1L) / flint::Ball(0L);  // Arb: not finite
+  EXPECT_FALSE(detail::ball_positive_definite(infinite, why));
+  EXPECT_NE(why.find("not finite"), std::string::npos) << why;
+  // P > 0 for exact P: the congruence first, exact elimination up to order 24 where it does not pass; order 30 beyond
+  using rational_matrix::Mat;
+  EXPECT_TRUE(detail::positive_definite(Mat{{rational(1), rational(1, 2)}, {rational(1, 2), rational(1)}}));
+  EXPECT_FALSE(detail::positive_definite(Mat{{rational(1), rational(1)}, {rational(1), rational(1)}}));
+  EXPECT_FALSE(detail::positive_definite(Mat{{rational(0)}}));
+  Mat big(30, std::vector<rational>(30, rational(0)));
+  for (size_t i = 0; i < 30; ++i) {
+    big[i][i] = rational(2);
+    if (i + 1 < 30) big[i][i + 1] = big[i + 1][i] = rational(-1);  // the second difference: eigenvalues 2 - 2 cos(k pi/31) > 0
+  }
+  EXPECT_TRUE(detail::positive_definite(big));
+  big[29][29] = rational(1, 2);  // x = (1, 2, ..., 30): x^T big x = 930 - (3/2) 900 = -420 < 0
+  EXPECT_FALSE(detail::positive_definite(big));
+}
+
 TEST(StabilityLoopCheck, SteinCertificateByHand) {
   const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
   // P - M^T P M = I exactly for this P (both eigenvalues of M have |z| = sqrt(5)/2 > 1: P < 0)

@@ -571,17 +571,16 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
           embedding, !right.empty()};
 }
 
-// Every symmetric matrix within r of S (spectral norm) is positive definite, proven: X ~ L^-T from a
-// double Cholesky of S (upper triangular with a non-zero diagonal: non-singular, its doubles taken as
-// exact), then in balls G = X^T S X ~ I and f = ||X||_F^2 >= ||X||_2^2; Gershgorin on G and Weyl give
-// lambda_min(X^T (S + D) X) >= min_i (G_ii - sum_{j != i} |G_ij|) - f r > 0. A double Cholesky that
-// fails, or a row that does not pass, proves nothing (false).
-bool positive_definite_within(const Mat& S, const rational& r) {
+namespace {
+
+// Every symmetric matrix in the balls S, each widened by r in the spectral norm, is positive definite, proven:
+// X ~ L^-T from a double Cholesky of Smid (S's midpoints; upper triangular with a non-zero diagonal: non-singular,
+// its doubles taken as exact), then in balls G = X^T S X (it holds X^T A X for every A in S) and f = ||X||_F^2 >=
+// ||X||_2^2; Gershgorin on G and Weyl give lambda_min(X^T (A + E) X) >= min_i (G_ii - sum_{j != i} |G_ij|) - f r > 0
+// for ||E||_2 <= r. A double Cholesky that fails, or a row that does not pass, proves nothing (false).
+bool congruence_shows_positive(const BallRows& S, const Eigen::MatrixXd& Smid, const flint::Ball& r) {
   const size_t n = S.size();
-  Eigen::MatrixXd Sd(n, n);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) Sd(Eigen::Index(i), Eigen::Index(j)) = S[i][j].convert_to<double>();
-  const Eigen::LLT<Eigen::MatrixXd> llt(Sd);
+  const Eigen::LLT<Eigen::MatrixXd> llt(Smid);
   if (llt.info() != Eigen::Success) return false;
   const Eigen::MatrixXd X = llt.matrixU().solve(Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)));  // U^-1 = L^-T
   BallRows Xb = zero_balls(n, n), Xt = zero_balls(n, n);
@@ -594,8 +593,8 @@ bool positive_definite_within(const Mat& S, const rational& r) {
       Xt[j][i] = Xb[i][j];
       f += Xb[i][j] * Xb[i][j];
     }
-  const BallRows G = product(Xt, product(balls(S), Xb));
-  const flint::Ball fr = f * flint::Ball(r);
+  const BallRows G = product(Xt, product(S, Xb));
+  const flint::Ball fr = f * r;
   for (size_t i = 0; i < n; ++i) {
     flint::Ball row = G[i][i] - fr;
     for (size_t j = 0; j < n; ++j)
@@ -605,40 +604,52 @@ bool positive_definite_within(const Mat& S, const rational& r) {
   return true;
 }
 
-// Every symmetric matrix in the balls Q (entries [lo, hi]) is positive definite: D Q_mid D within r (the header;
-// D by powers of two).
+}  // namespace
+
+// Every symmetric matrix within r of S (spectral norm) is positive definite (congruence_shows_positive on S's
+// exact balls).
+bool positive_definite_within(const Mat& S, const rational& r) {
+  const size_t n = S.size();
+  Eigen::MatrixXd Sd(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) Sd(Eigen::Index(i), Eigen::Index(j)) = S[i][j].convert_to<double>();
+  return congruence_shows_positive(balls(S), Sd, flint::Ball(r));
+}
+
+bool positive_definite(const Mat& P) {
+  if (positive_definite_within(P, rational(0))) return true;
+  return P.size() <= 24 && rational_matrix::positive_definite(P, true);
+}
+
+// Every symmetric matrix in the balls Q is positive definite (the header): in balls throughout. A symmetric A in Q
+// has A_ij = (A_ij + A_ji)/2 in (Q_ij + Q_ji)/2, so D A D lies in S = D (Q + Q^T)/2 D, D = diag(2^-k_i), 2^k_i ~
+// sqrt(mid Q_ii) (exact: powers of two; D A D has A's inertia, and its diagonal near 1 weighs the radii of a
+// badly scaled Q -- a fast lag beside a slow mass -- where they act); then the congruence test on S.
 bool ball_positive_definite(const BallRows& Q, std::string& why) {
   const size_t n = Q.size();
-  Mat mid = rational_matrix::zeros(n, n), rad = rational_matrix::zeros(n, n);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) {
-      const auto e = Q[i][j].bounds();
-      mid[i][j] = (e.lo + e.hi) / 2;
-      rad[i][j] = (e.hi - e.lo) / 2;
-    }
-  // D = diag(2^-k_i), 2^k_i ~ sqrt(mid_ii): D Q D has Q's inertia and a diagonal near 1, so the radii
-  // of a badly scaled Q (a fast lag beside a slow mass) are weighed where they act, not by the largest row
-  std::vector<rational> d(n, rational(1));
-  for (size_t i = 0; i < n; ++i)
-    if (mid[i][i] > 0) {  // k = floor((bits of the numerator - bits of the denominator) / 2)
-      const long bits = static_cast<long>(bmp::msb(integer(numerator(mid[i][i])))) - static_cast<long>(bmp::msb(integer(denominator(mid[i][i]))));
-      const long k = bits >= 0 ? bits / 2 : -((1 - bits) / 2);
-      d[i] = k >= 0 ? rational(1) / rational(integer(1) << k) : rational(integer(1) << (-k));
-    }
-  rational r = 0;
-  Mat S = rational_matrix::zeros(n, n);
+  std::vector<long> k(n, 0);
   for (size_t i = 0; i < n; ++i) {
-    rational row = 0;
-    for (size_t j = 0; j < n; ++j) {
-      const rational sym = (mid[i][j] + mid[j][i]) / 2, asym = mid[i][j] - sym;
-      S[i][j] = d[i] * sym * d[j];
-      row += d[i] * (rad[i][j] + (asym < 0 ? rational(-asym) : asym)) * d[j];
+    const double m = Q[i][i].to_double();
+    if (std::isfinite(m) && m > 0) {  // m = f 2^e, 1/2 <= f < 1: log2 m in [e - 1, e); k = floor((e - 1) / 2)
+      int e = 0;
+      std::frexp(m, &e);
+      k[i] = (e - 1) >= 0 ? (e - 1) / 2 : -((2 - e) / 2);
     }
-    if (row > r) r = row;
   }
-  if (positive_definite_within(S, r)) return true;
-  why = "not shown positive definite (its midpoint, within " + approx(r) +
-        ", the radii's largest row sum: no congruence to a diagonally dominant matrix found)";
+  BallRows S = zero_balls(n, n);
+  Eigen::MatrixXd Sd(n, n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) {
+      if (!Q[i][j].finite()) {
+        why = "not shown positive definite (an entry's ball is not finite)";
+        return false;
+      }
+      S[i][j] = Q[i][j] + Q[j][i];
+      arb_mul_2exp_si(S[i][j].get(), S[i][j].get(), -1 - k[i] - k[j]);
+      Sd(Eigen::Index(i), Eigen::Index(j)) = S[i][j].to_double();
+    }
+  if (congruence_shows_positive(S, Sd, flint::Ball(0L))) return true;
+  why = "not shown positive definite (the symmetrised balls, scaled: no congruence to a diagonally dominant matrix found)";
   return false;
 }
 
@@ -933,7 +944,7 @@ Verdict detail::stein_verdict(const SceneLoop& L, const nlohmann::json& evidence
   std::string sign;
   if (stable) {
     // exactly for small P; beyond, by the congruence test (exact elimination of large dyadic P is slow)
-    const bool pd = Pm.size() <= 24 ? rational_matrix::positive_definite(Pm, true) : detail::positive_definite_within(Pm, rational(0));
+    const bool pd = detail::positive_definite(Pm);
     if (!pd) return {false, "claim: stable, but " + where + ".P is not shown positive definite"};
     sign = "P > 0";
   } else {

@@ -21,14 +21,16 @@
 // symmetric P, M has no eigenvalue on |z| = 1 (M v = z v gives v* Q v = (1 - |z|^2) v* P v), and
 // M is Schur stable iff P > 0 (if M were stable, P = sum (M^T)^k Q M^k > 0). Evidence: P (exact,
 // symmetric) and, for NOT stable, w with w^T P w < 0. Verified: P symmetric; P > 0 or w^T P w < 0
-// exactly (rationals; P > 0 beyond order 24 as Q below, r = 0); Q > 0 for every M in the enclosure:
-// Q's entries in balls (128, 256, 512 bits), Q_mid := their midpoints symmetrised, scaled by D =
-// diag(2^-k_i), 2^k_i ~ sqrt((Q_mid)_ii) (D Q D has Q's inertia: a congruence, exact), r := the
-// largest row sum of D's scaled radii (>= ||D (Q - Q_mid) D||_2), and every symmetric matrix within r
-// of D Q_mid D positive definite: X ~ L^-T from a double Cholesky of Q_mid (upper triangular,
-// non-zero diagonal: non-singular; its doubles taken as exact), G = X^T Q_mid X in balls, and
-// min_i (G_ii - sum_{j != i} |G_ij|) > ||X||_F^2 r (Gershgorin and Weyl). (The exact elimination of
-// Q_mid - r I took 34 s at order 115; this takes 0.2 s; the ball products by arb_mat_mul from order 32 on.)
+// exactly (rationals; P > 0 by the test below on P's exact balls first, by exact elimination up to order 24
+// where that does not pass); Q > 0 for every M in the enclosure: Q's entries in balls (128, 256, 512 bits),
+// S := D (Q + Q^T)/2 D in balls (a symmetric A in Q has A_ij = (A_ij + A_ji)/2, so D A D lies in S; D =
+// diag(2^-k_i), 2^k_i ~ sqrt(mid Q_ii): a congruence, exact), and every matrix in S positive definite:
+// X ~ L^-T from a double Cholesky of S's midpoints (upper triangular, non-zero diagonal: non-singular; its
+// doubles taken as exact), G = X^T S X in balls (it holds X^T A X for every A in S), and
+// min_i (G_ii - sum_{j != i} |G_ij|) > 0 (Gershgorin). (The exact elimination took 34 s at order 115; this
+// takes 0.2 s; the ball products by arb_mat_mul from order 32 on. Until stop 85 S was formed in rationals from
+// the balls' midpoints, the radii bounded apart by their largest row sum r and added as ||X||_F^2 r (Weyl):
+// the same test, twice as slow from the rational conversions.)
 // Size: M's order <= 1024, a scene of <= 64 DOFs (order 448: 5.6 s). A P that does not pass refutes the claim
 // (exit 1): the evidence does not prove it.
 // Conserved quantities: l with l^T [A B] = 0 exactly (A, B the continuous plant above, rationals) keeps
@@ -128,6 +130,9 @@ rational_matrix::Mat slow_rows(const SceneLoop& L1, const SceneLoop& L2, const L
 BallRows restricted(const BallRows& M, const rational_matrix::Mat& L);
 /// Every symmetric matrix within r of S is positive definite (a double Cholesky's inverse as congruence).
 bool positive_definite_within(const rational_matrix::Mat& S, const rational& r);
+/// P > 0 (exact, symmetric P): the congruence test on P's exact balls (sufficient), else (order <= 24) exact
+/// elimination decides.
+bool positive_definite(const rational_matrix::Mat& P);
 /// NOT stable by evidence.hidden (the header): verified, or refuted with what fails.
 Verdict hidden_mode_verdict(const SceneLoop& L, const nlohmann::json& hidden);
 /// The header's theorem on the loop L from `evidence` = {P[, w]} (named `where` in messages): M built here,

@@ -246,7 +246,7 @@ std::string first_order_stein(const FirstOrder& f, const detail::LoopMatrix& m1,
                               const std::string& where) {
   const size_t n = m1.M.size(), k = L.size();
   const Mat& P0 = f.P0;
-  const bool pd = n <= 24 ? rational_matrix::positive_definite(P0, true) : detail::positive_definite_within(P0, rational(0));
+  const bool pd = detail::positive_definite(P0);
   if (!pd) return where + ".P0 is not shown positive definite";
   // K = L (M(2) - M(1)) and the p-independent part -(K^T S L + L^T S K), in balls
   BallRows K(k, std::vector<flint::Ball>(n, flint::Ball(0L)));
@@ -362,7 +362,7 @@ Cover check_cover(const nlohmann::json& cover, const BallRows& M1, const BallRow
     last_P_to = Pto;
     for (const Mat* X : {&Pk, &Pto}) {
       if (X->empty() || (X == &Pk && inherited)) continue;  // an inherited P was shown as the last P_to
-      const bool pd = n <= 24 ? rational_matrix::positive_definite(*X, true) : detail::positive_definite_within(*X, rational(0));
+      const bool pd = detail::positive_definite(*X);
       if (!pd) {
         why = where + (X == &Pk ? ".P" : ".P_to") + " is not shown positive definite";
         return Cover::refuted;
