@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -1453,6 +1454,49 @@ TEST(StabilityLoopCheck, BallPositiveDefiniteDecidesTheSymmetricMembers) {
   EXPECT_TRUE(detail::positive_definite(big));
   big[29][29] = rational(1, 2);  // x = (1, 2, ..., 30): x^T big x = 930 - (3/2) 900 = -420 < 0
   EXPECT_FALSE(detail::positive_definite(big));
+}
+
+// The ball test against exact elimination (rational_matrix::positive_definite, code it does not share): random
+// symmetric A of order 2-6 with entries k/8 plus n on the diagonal, in half the draws the diagonal shifted down by
+// c in [0, 4) (across the boundary: ~270 of the 1500 A are not positive definite), balls A_ij +- r_ij (r_ij = r_ji,
+// 0 or 2^-e, e = 4..23); wherever the ball test says "positive definite", A and 16 symmetric members at corners of
+// the balls are positive definite exactly. It shows ~1200 draws (not vacuous).
+TEST(StabilityLoopCheck, BallPositiveDefiniteAgainstExactElimination) {
+  flint::BallPrecision scope(128);
+  std::mt19937 rng(85);
+  int shown = 0, wrong = 0, not_pd = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    const size_t n = 2 + size_t(rng() % 5);
+    rational_matrix::Mat A(n, std::vector<rational>(n, rational(0))), R = A;
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j <= i; ++j) {
+        A[i][j] = A[j][i] = rational(int(rng() % 17) - 8, 8) + (i == j ? rational(int(n)) : rational(0));
+        if (rng() % 2) R[i][j] = R[j][i] = rational(1, integer(1) << (4 + rng() % 20));
+      }
+    if (rng() % 2) {  // A - c I: positive definite for c < lambda_min(A) only
+      const rational c(int(rng() % 64), 16);
+      for (size_t i = 0; i < n; ++i) A[i][i] -= c;
+    }
+    detail::BallRows Q(n, std::vector<flint::Ball>(n, flint::Ball(0L)));
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < n; ++j) Q[i][j] = flint::Ball::hull(A[i][j] - R[i][j], A[i][j] + R[i][j]);
+    std::string why;
+    const bool exact_pd = rational_matrix::positive_definite(A, true);
+    not_pd += !exact_pd;
+    if (!detail::ball_positive_definite(Q, why)) continue;
+    ++shown;
+    bool all = exact_pd;
+    for (int corner = 0; corner < 16 && all; ++corner) {
+      rational_matrix::Mat B = A;
+      for (size_t i = 0; i < n; ++i)
+        for (size_t j = 0; j <= i; ++j) B[i][j] = B[j][i] = A[i][j] + (rng() % 2 ? R[i][j] : -R[i][j]);
+      all = rational_matrix::positive_definite(B, true);
+    }
+    wrong += !all;
+  }
+  EXPECT_EQ(wrong, 0) << "the ball test called " << wrong << " matrices with a member that is not positive definite positive definite";
+  EXPECT_GT(shown, 1000) << "the ball test showed only " << shown << " of 1500 draws";
+  EXPECT_GT(not_pd, 150) << "only " << not_pd << " draws not positive definite: the boundary is not reached";
 }
 
 TEST(StabilityLoopCheck, SteinCertificateByHand) {
