@@ -943,7 +943,7 @@ Verdict detail::stein_verdict(const SceneLoop& L, const nlohmann::json& evidence
   if (stable == evidence.contains("w")) throw InputError(where + (stable ? ".w: only for NOT stable" : ".w: missing (NOT stable needs w with w^T P w < 0)"));
   std::string sign;
   if (stable) {
-    // exactly for small P; beyond, by the congruence test (exact elimination of large dyadic P is slow)
+    // the congruence test, then exact elimination for small P (exact elimination of large dyadic P is slow)
     const bool pd = detail::positive_definite(Pm);
     if (!pd) return {false, "claim: stable, but " + where + ".P is not shown positive definite"};
     sign = "P > 0";

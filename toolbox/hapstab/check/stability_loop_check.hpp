@@ -20,9 +20,9 @@
 // Theorem (Stein; the inertia form, e.g. Ostrowski & Schneider 1962): if Q = P - M^T P M > 0 for a
 // symmetric P, M has no eigenvalue on |z| = 1 (M v = z v gives v* Q v = (1 - |z|^2) v* P v), and
 // M is Schur stable iff P > 0 (if M were stable, P = sum (M^T)^k Q M^k > 0). Evidence: P (exact,
-// symmetric) and, for NOT stable, w with w^T P w < 0. Verified: P symmetric; P > 0 or w^T P w < 0
-// exactly (rationals; P > 0 by the test below on P's exact balls first, by exact elimination up to order 24
-// where that does not pass); Q > 0 for every M in the enclosure: Q's entries in balls (128, 256, 512 bits),
+// symmetric) and, for NOT stable, w with w^T P w < 0. Verified: P symmetric; P > 0 (proven: the test below on
+// P's exact balls, or exact elimination up to order 24 where that does not pass) or w^T P w < 0 (exactly, in
+// rationals); Q > 0 for every M in the enclosure: Q's entries in balls (128, 256, 512 bits),
 // S := D (Q + Q^T)/2 D in balls (a symmetric A in Q has A_ij = (A_ij + A_ji)/2, so D A D lies in S; D =
 // diag(2^-k_i), 2^k_i ~ sqrt(mid Q_ii): a congruence, exact), and every matrix in S positive definite:
 // X ~ L^-T from a double Cholesky of S's midpoints (upper triangular, non-zero diagonal: non-singular; its
