@@ -1409,9 +1409,6 @@ TEST(StabilityLoopCheck, ClosedLoopByHand) {
     }
 }
 
-// A P that proves the hand loop above NOT stable: M^T P M - P = -I solved for M = [[1, -5], [1/10, 3/4]]
-// is indefinite; the checker verifies P - M^T P M > 0 over M's enclosure and w^T P w < 0. A P for
-// another loop, the claim flipped, and scenes beyond the reading are refused or refuted.
 // The checker's test of positive definiteness, on balls chosen so that the answer is known: every symmetric member
 // positive definite (true), one member singular or indefinite (false, whatever the midpoint), asymmetric balls whose
 // symmetric members are all positive definite, a diagonal 10^24 apart (the scaling D), an entry that is not finite.
@@ -1494,11 +1491,14 @@ TEST(StabilityLoopCheck, BallPositiveDefiniteAgainstExactElimination) {
     }
     wrong += !all;
   }
-  EXPECT_EQ(wrong, 0) << "the ball test called " << wrong << " matrices with a member that is not positive definite positive definite";
+  EXPECT_EQ(wrong, 0) << "the ball test said positive definite for " << wrong << " draws with a member that is not";
   EXPECT_GT(shown, 1000) << "the ball test showed only " << shown << " of 1500 draws";
   EXPECT_GT(not_pd, 150) << "only " << not_pd << " draws not positive definite: the boundary is not reached";
 }
 
+// A P that proves the hand loop above NOT stable: M^T P M - P = -I solved for M = [[1, -5], [1/10, 3/4]]
+// is indefinite; the checker verifies P - M^T P M > 0 over M's enclosure and w^T P w < 0. A P for
+// another loop, the claim flipped, and scenes beyond the reading are refused or refuted.
 TEST(StabilityLoopCheck, SteinCertificateByHand) {
   const std::string scene = "[scene]\nT = \"1/10\"\n[[device]]\nname = \"a\"\nm = \"2\"\n[environment]\ntf = \"100\"\n";
   // P - M^T P M = I exactly for this P (both eigenvalues of M have |z| = sqrt(5)/2 > 1: P < 0)
