@@ -360,7 +360,7 @@ Attempt evidence_for(const BallRows& M1, const BallRows& M2, const std::string& 
     // width or more, unless the last interval was one P that an SDP widened (there one P may reach much farther:
     // 7 intervals against 19 on loop_max_free_wall_stiffness). Else one P (widened by SDPs), and P linear where it
     // reaches 2.5 times as far (its check costs ~2.5 times as much: 12 products and 4 tests of definiteness against
-    // 4 and 2). Linear first: 20 s -> 5 s for a 3-DOF loop of order 12 whose SDPs reached 4 times the width and
+    // 4 and 2). Linear first: 20 s -> 6.6 s for a 3-DOF loop of order 12 whose SDPs reached 4 times the width and
     // missed at 16 in every interval (docs/certificates.md).
     if (!P_at_b) P_at_b = stein_P(M1, M2, b, work);
     std::optional<Found> lin;
