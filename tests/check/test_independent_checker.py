@@ -11,6 +11,7 @@ C++ checker): the zero-order hold of 1/(m s^2) is T^2 (z + 1)/(2 m (z - 1)^2), o
 (z^2 + 4 z + 1)/(6 (z - 1)^3) (tables of z-transforms); the verdicts by Jury's conditions.
 
     python3 tests/check/test_independent_checker.py        (unittest; ctest check_independent_checker)
+    HAPSTAB_CHECK_WITHOUT_GMPY2=1 python3 tests/check/...  the same without gmpy2 (ctest check_independent_checker_fractions)
 
 Wedge by hand: H = K/z gives Re H = K cos(theta), Im H = -K sin(theta), so (25) is
 K cos + cot(theta/2) K sin + 1 = K (1 + 2 cos(theta)) + 1 (min 1 - K at theta = pi) and (21)
@@ -24,6 +25,8 @@ import unittest
 from fractions import Fraction
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "checks"))
+if os.environ.get("HAPSTAB_CHECK_WITHOUT_GMPY2"):  # the checker's rationals in Python's fractions (no gmpy2 installed):
+    sys.modules["gmpy2"] = None                    # ctest check_independent_checker_fractions
 import hapstab_check as hc  # noqa: E402
 
 
@@ -34,6 +37,21 @@ def cert(plant, H, delay, stable, charpoly, T="1/1000"):
 
 
 WALL = ["-1/1000", "2001/2000", "-3997/2000", "1"]  # z (z-1)^2 + (T^2/2)(z+1)((K + B/T) z - B/T)
+
+
+class Rationals(unittest.TestCase):
+    def test_the_rationals_are_the_ones_this_run_names(self):
+        """gmpy2's mpq where it is installed, Python's fractions where it is not (the same values either way)."""
+        if os.environ.get("HAPSTAB_CHECK_WITHOUT_GMPY2"):
+            self.assertIs(hc.Fraction, Fraction)
+        else:
+            import gmpy2
+            self.assertIs(hc.Fraction, gmpy2.mpq)
+        x = hc.exact_value("-6/4", "x")
+        self.assertEqual((x, str(x), x.numerator, x.denominator), (Fraction(-3, 2), "-3/2", -3, 2))
+        self.assertEqual(hc.printed_number(" +1.5e2", "x"), 150)  # read by fractions: "+" and exponents as Python reads them
+        with self.assertRaises(hc.Malformed):
+            hc.printed_number("3 / 4", "x")  # mpq would read it; fractions does not
 
 
 class Stability(unittest.TestCase):
