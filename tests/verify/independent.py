@@ -107,6 +107,7 @@ import indep_charpoly as ICH  # noqa: E402
 import indep_coupled as ICP  # noqa: E402
 import indep_loop as IL  # noqa: E402
 import indep_passivity as IP  # noqa: E402
+import indep_roots as IR  # noqa: E402
 import indep_witness as IW  # noqa: E402
 import indep_coupling as ICW  # noqa: E402
 from indep_common import SumTF, dec, run_hapstab, run_hapstab_scene, keep_scene_if_missed, shell_line  # noqa: E402
@@ -659,8 +660,8 @@ def case_stability_long(rng):
     G = C (zI - Phi)^-1 Gamma from the loop's own ZOH (mpmath expm), Im of
     K(theta) = -(z^n + G H0)/(G H1) on a grid of 64 points per sample of delay, each sign change
     refined by bisection, the smallest positive K among them and at z = +-1; stability below it
-    by the loop matrix's eigenvalues (numpy; those near the circle polished, rho_polished) at
-    K*/1000 and at K* (1 - 1e-6)."""
+    by the loop matrix's eigenvalues (the roots of det(zI - M) by Aberth, indep_roots.py, or numpy's
+    dense eigenvalues; those near the circle polished, rho_polished) at K*/1000 and at K* (1 - 1e-6)."""
     c = IL.gen_stability(rng)
     c["n"] = rng.randint(201, 1500)
     c["tags"]["delay"] = "201-1500"
@@ -715,12 +716,15 @@ def long_crossing_reference(c, loop):
 
 
 def rho_polished(c, loop, K):
-    """The spectral radius of the loop matrix at K: numpy's eigenvalues, those within 1e-5 of the
+    """The spectral radius of the loop matrix at K: its eigenvalues as the roots of det(zI - M) (indep_roots.py:
+    Aberth's iteration, numpy's dense eigenvalues where it is not accepted), those within 1e-5 of the
     circle polished by Newton at 40 digits on z^n + G(z) (H0 + K H1)(z) = 0 (G = Cy (zI - Phi)^-1
     Gamma from the reference's own ZOH): double precision alone misjudges a root 1e-8 inside the
     circle (the delayed double integrator's slowly decaying pair)."""
     import numpy as np
-    ev = np.linalg.eigvals(loop.M_np(float(K)))
+    ev = IR.loop_roots(loop, float(K))  # the roots of det(zI - M), Aberth in O(n^2) (indep_roots.py)
+    if ev is None:  # not accepted there: the dense problem
+        ev = np.linalg.eigvals(loop.M_np(float(K)))
     rho = 0.0
     with mp.workdps(40):
         Kq = mp.mpf(K)
