@@ -449,6 +449,24 @@ def free_position_every_K(c):
     return True
 
 
+def minus_one_every_K(c):
+    """z = -1 is an eigenvalue of M(K) for every K, decided exactly: the device is P = c/(m s^2 + k) without
+    damping (a mass, k = 0, or an undamped spring of either sign), whose zero-order hold vanishes at z = -1
+    ((1 - z^-1) Z{P/s} = c (1 - cos wT)(z + 1)/(k (z^2 - 2 cos(wT) z + 1)), w^2 = k/m; c T^2 (z + 1)/(2 m (z - 1)^2)
+    at k = 0; cosh for k < 0), and H0 or H1 has a pole there (a Tustin wall): det(zI - M) = z^n P_d d_0 d_1 +
+    P_n (n_0 d_1 + K n_1 d_0) (indep_roots.py) is 0 at z = -1 for every K, so the loop is never Schur stable and
+    the supremum is 0. Double precision reads that root as 1 +- 1e-13, and the roots of det(zI - M) as exactly
+    1: the reference could not say before (stops 67-86)."""
+    num, den = reduce_fraction([Q(x) for x in c["P"].num], [Q(x) for x in c["P"].den])
+    if len(num) != 1 or len(den) != 3 or den[1] != 0:
+        return False
+    for H in (c["H0"], c["H1"]):
+        hn, hd = reduce_fraction([Q(x) for x in H.num], [Q(x) for x in H.den])
+        if any(hn) and sum(x * (-1) ** (len(hd) - 1 - i) for i, x in enumerate(hd)) == 0:
+            return True
+    return False
+
+
 def stability_args(c, digits=25):
     h = f"{c['H0'].expr()} + K*({c['H1'].expr()})"
     a = ["stability", "--plant", c["P"].expr("s"), "--H", h, "--T", f"{c['T'].numerator}/{c['T'].denominator}",

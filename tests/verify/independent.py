@@ -757,6 +757,9 @@ def check_stability_long(c, exe, timeout):
     if IL.free_position_every_K(c):
         tags["z = 1 for every K (exact)"] = True
         ref = dict(kind="zero")
+    elif IL.minus_one_every_K(c):
+        tags["z = -1 for every K (exact)"] = True
+        ref = dict(kind="zero")
     else:
         cross = long_crossing_reference(c, loop)
         probe = (cross[0] if cross else c["Knom"]) / 1000

@@ -4,7 +4,9 @@ det(zI - M) = z^n A + B_0 + K B_1 against numpy.poly(M) for short delays (every 
 indep_loop.gen_stability; to 1e-6 of the largest coefficient, np.poly's own rounding), and loop_roots against numpy.linalg.eigvals(M) at delays of 201-400 samples: the
 spectral radius within 1e-9 (double precision on both sides; the reference polishes roots near the circle at
 40 digits afterwards), each eigenvalue within 1e-7 of a root (a double root at z = 1 splits by ~1e-8 in eigvals).
-Also the exact zero roots: B = 0 (the overall gain at K = 0) and z dividing both terms.
+Also the exact zero roots: B = 0 (the overall gain at K = 0) and z dividing both terms; and
+indep_loop.minus_one_every_K (the reference's exact sup 0 for an undamped device under a Tustin wall) against
+the roots.
 
     python3 tests/verify/test_indep_roots.py        (unittest; ctest verify_indep_roots)"""
 import os
@@ -83,6 +85,25 @@ class Roots(unittest.TestCase):
         z1 = IR.loop_roots(loop, 1000.0)
         ev1 = np.linalg.eigvals(loop.M_np(1000.0))
         self.assertLess(abs(np.abs(z1).max() - np.abs(ev1).max()), 1e-9)
+
+
+class RootAtMinusOne(unittest.TestCase):
+    def test_undamped_device_under_a_tustin_wall(self):
+        """indep_loop.minus_one_every_K against the roots: an undamped device (mass, spring, negative spring) under
+        a Tustin wall has a root at z = -1 at every K; damped, or under a backward-difference wall, it has none."""
+        T, n = Q(1, 1000), 230
+        tustin = Rational([2 * 5 / T, -2 * 5 / T], [1, 1])
+        backward = Rational([5 / T, -5 / T], [1, 0])
+        for den, H0, want in (([Q(2, 5), 0, 0], tustin, True), ([Q(8, 5), 0, Q(109, 2)], tustin, True),
+                              ([1, 0, -30], tustin, True), ([1, Q(1, 2), 0], tustin, False), ([1, 0, 0], backward, False)):
+            c = dict(P=Rational([1], den), H0=H0, H1=Rational([1], [1]), T=T, n=n)
+            self.assertIs(IL.minus_one_every_K(c), want, den)
+            loop = IL.build_loop_1dof(c)
+            for K in (0.001, 1.0, 300.0):
+                z = IR.loop_roots(loop, K)
+                if z is None:
+                    z = np.linalg.eigvals(loop.M_np(K))
+                self.assertIs(bool(np.abs(z + 1).min() < 1e-7), want, (den, K))
 
 
 if __name__ == "__main__":
