@@ -12,9 +12,9 @@ Exact rationals are gmpy2's mpq (GMP, Debian's python3-gmpy2, under the name Fra
 arithmetic as Python's fractions, 2-3 times faster; Python's fractions where gmpy2 is not installed; text is
 always read by Python's fractions, so what is accepted as a number does not depend on it); its own intervals
 with dyadic endpoints (class Iv: integers over 2^e, rounded outward) for the hold's e^(A h) and the Stein
-tests of loops; mpmath's interval arithmetic (iv) only for the enclosure of cot in `r` and of c(e^(j pi t)) on arcs in `stability`'s argument
-principle. It reads the model as written (the expression of H(z) with its own
-parser, below) and derives every quantity by a route other than hapstab's (docs/certificates.md).
+tests of loops; mpmath's interval arithmetic (iv) only for the enclosure of cot in `r` and of c(e^(j pi t))
+on arcs in `stability`'s argument principle. It reads the model as written (the expression of H(z) with its
+own parser, below) and derives every quantity by a route other than hapstab's (docs/certificates.md).
 
 Kinds and theorems:
 
