@@ -78,8 +78,15 @@ Bounds read_bounds(const nlohmann::json& claim, const std::string& field, bool m
   return b;
 }
 
+// What the margins and gains shown say about mu itself: lo <= mu (when set), mu <= hi (when set).
+struct MuShown {
+  std::optional<rational> lo, hi;
+  void at_least(const rational& v) { if (!lo || v > *lo) lo = v; }
+  void at_most(const rational& v) { if (!hi || v < *hi) hi = v; }
+};
+
 std::optional<std::string> check_margins(const nlohmann::json& claim, const nlohmann::json& evidence, const std::string& key,
-                                         const P& p1, const P& p2, const P& D2, std::string& shown) {
+                                         const P& p1, const P& p2, const P& D2, std::string& shown, MuShown& mu) {
   const bool has_margin = claim.contains(key + "_margin"), has_gain = claim.contains(key + "_gain");
   std::optional<std::string> refuted;
   std::optional<rational> c0;
@@ -93,6 +100,8 @@ std::optional<std::string> check_margins(const nlohmann::json& claim, const nloh
     if (refuted) return refuted;
     if (auto why = margin_in(p1, p2, D2, m.lo, m.hi, witness())) return "claim." + key + "_margin: " + *why;
     shown += "; " + key + " margin in [" + detail::decimal(m.lo) + ", " + detail::decimal(m.hi) + "]";
+    mu.at_least(m.lo);
+    mu.at_most(m.hi);
   }
   if (has_gain) {
     const Bounds g = read_bounds(claim, key + "_gain", true, refuted);
@@ -101,10 +110,18 @@ std::optional<std::string> check_margins(const nlohmann::json& claim, const nloh
       if (auto why = margin_in(p1, p2, D2, rational(1), std::nullopt, std::nullopt))
         return "claim." + key + "_gain = +inf: " + *why + " (k* = +inf needs the left side >= 0)";
       shown += "; " + key + " k* = +inf (left side >= 0)";
+      mu.at_least(rational(1));
     } else {
-      if (auto why = margin_in(p1, p2, D2, rational(1 - 1 / g.lo), rational(1 - 1 / g.hi), witness()))
+      // mu >= 1 - 1/lo follows from the margin's mu >= lo_m when 1 - 1/lo <= lo_m: the Sturm test is
+      // needed only when it does not (the upper end is one evaluation at the witness either way)
+      const rational need_lo = 1 - 1 / g.lo, need_hi = 1 - 1 / g.hi;
+      std::optional<rational> test_lo;
+      if (!mu.lo || need_lo > *mu.lo) test_lo = need_lo;
+      if (auto why = margin_in(p1, p2, D2, test_lo, need_hi, witness()))
         return "claim." + key + "_gain in [" + detail::decimal(g.lo) + ", " + detail::decimal(g.hi) + "] (k* = 1/(1 - min)): " + *why;
       shown += "; " + key + " k* in [" + detail::decimal(g.lo) + ", " + detail::decimal(g.hi) + "]";
+      mu.at_least(need_lo);
+      mu.at_most(need_hi);
     }
   }
   if (c0 && !has_margin && !(has_gain && !claim.at(key + "_gain").contains("infinite")))
@@ -138,28 +155,43 @@ Verdict check_wedge(const nlohmann::json& cert) {
   const P one_plus_c{rational(1), rational(1)};
   const P S = X + D2, Pp = S + one_plus_c * Y, Pm = S - one_plus_c * Y;
 
-  std::vector<std::pair<const char*, std::pair<bool, std::string>>> facts;
-  const auto wedge = max_positive_on(Pp, Pm, m1, p1);
-  facts.push_back({"wedge", {!wedge, wedge ? "(25) fails: max(P+, P-) on [-1, 1]: " + *wedge : "(25) holds: max(P+, P-) > 0 on [-1, 1]"}});
-  const auto tsypkin = max_positive_on(S, S, m1, p1);
-  facts.push_back({"tsypkin", {!tsypkin, tsypkin ? "(21) fails: X + |D|^2 on [-1, 1]: " + *tsypkin : "(21) holds: X + |D|^2 > 0 on [-1, 1]"}});
+  // Every boolean is read first (one missing: malformed), then the margins and gains: once shown, an
+  // interval for mu on one side of 0 decides (25) or (21) itself (the criterion holds iff mu > 0), and
+  // the Sturm test of the criterion is run only when it does not.
+  const char* const keys[] = {"wedge", "tsypkin", "h_stable", "closed_loop_stable", "dc_gain_nonnegative"};
+  std::map<std::string, bool> said;
+  for (const char* key : keys) said[key] = claimed(claim, key);
+  std::string ranges;
+  MuShown wedge_mu, tsypkin_mu;
+  if (auto why = check_margins(claim, evidence, "wedge", Pp, Pm, D2, ranges, wedge_mu)) return {false, *why};
+  if (auto why = check_margins(claim, evidence, "tsypkin", S, S, D2, ranges, tsypkin_mu)) return {false, *why};
+  auto criterion = [&](const MuShown& mu, const P& a, const P& b, const std::string& eq, const std::string& what) {
+    if (mu.lo && *mu.lo > 0)
+      return std::pair{true, eq + " holds: " + what + " >= " + detail::decimal(*mu.lo) + " |D|^2 > 0 on [-1, 1] (by the margin shown)"};
+    if (mu.hi && *mu.hi <= 0)
+      return std::pair{false, eq + " fails: " + what + " <= " + detail::decimal(*mu.hi) + " |D|^2 <= 0 at the witness (by the margin shown)"};
+    const auto why = max_positive_on(a, b, m1, p1);
+    return std::pair{!why, why ? eq + " fails: " + what + " on [-1, 1]: " + *why : eq + " holds: " + what + " > 0 on [-1, 1]"};
+  };
+  std::map<std::string, std::pair<bool, std::string>> facts;
+  facts["wedge"] = criterion(wedge_mu, Pp, Pm, "(25)", "max(P+, P-)");
+  facts["tsypkin"] = criterion(tsypkin_mu, S, S, "(21)", "X + |D|^2");
   const SchurCohn hs = schur_cohn(D);
-  facts.push_back({"h_stable", {hs.stable, "H stable: " + hs.why}});
+  facts["h_stable"] = {hs.stable, "H stable: " + hs.why};
   const P cl = D + N;
   const SchurCohn cs = cl.is_zero() ? SchurCohn{false, "D + N = 0"} : schur_cohn(cl);
-  facts.push_back({"closed_loop_stable", {cs.stable, "(1 + H)^-1 stable: " + cs.why}});
+  facts["closed_loop_stable"] = {cs.stable, "(1 + H)^-1 stable: " + cs.why};
   const rational d1 = D(p1);
   const bool dc = d1 != 0 && N(p1) / d1 >= 0;
-  facts.push_back({"dc_gain_nonnegative", {dc, d1 == 0 ? "H(1) is infinite" : "H(1) = " + rational(N(p1) / d1).str()}});
+  facts["dc_gain_nonnegative"] = {dc, d1 == 0 ? "H(1) is infinite" : "H(1) = " + rational(N(p1) / d1).str()};
 
   std::string shown;
-  for (const auto& [key, fact] : facts) {
-    if (claimed(claim, key) != fact.first)
-      return {false, std::string("claim.") + key + " = " + (fact.first ? "false" : "true") + ", but " + fact.second};
-    shown += (shown.empty() ? "" : "; ") + fact.second;
+  for (const char* key : keys) {
+    const auto& [holds, why] = facts.at(key);
+    if (said.at(key) != holds) return {false, std::string("claim.") + key + " = " + (holds ? "false" : "true") + ", but " + why};
+    shown += (shown.empty() ? "" : "; ") + why;
   }
-  if (auto why = check_margins(claim, evidence, "wedge", Pp, Pm, D2, shown)) return {false, *why};
-  if (auto why = check_margins(claim, evidence, "tsypkin", S, S, D2, shown)) return {false, *why};
+  shown += ranges;
   return {true, shown};
 }
 

@@ -25,7 +25,8 @@
 //   claim.<key>_gain {lo, hi, printed} or {infinite: true}: k* = sup{k > 0 : k H meets the criterion}.
 //     The left side of k H is k times that of H, so k H meets it iff k (mu - 1) + 1 > 0, and
 //     k* = 1/(1 - mu) when mu < 1, +inf when mu >= 1: k* >= lo iff mu >= 1 - 1/lo, k* <= hi iff
-//     mu <= 1 - 1/hi (the same two tests), +inf iff max(P+ - |D|^2, P- - |D|^2) >= 0;
+//     mu <= 1 - 1/hi (the same two tests; the first is implied, and not run again, when the margin's
+//     lo, already shown, is >= 1 - 1/lo), +inf iff max(P+ - |D|^2, P- - |D|^2) >= 0;
 //   printed (the decimal the command printed, its shared digits): both lo and hi round to it
 //     (within half a unit of its last digit), so the value does too.
 // Implements: paper 002 (21), (25), Sec. 2.
