@@ -365,6 +365,12 @@ py::dict stability_scene_max(const std::string& scene, bool is_text, const std::
     d["note"] = "NOT stable for every " + name + " [exact]: " + hidden.summary();
     return d;
   }
+  if (!hidden.undecided.empty()) {  // set-aside modes at z = 1 that may chain: no supremum is stated
+    d = scene_max_fields(name, "hidden_modes", "undecided");
+    d["record"] = record_undecided("sim::hidden_modes", hidden.undecided);
+    d["note"] = "undecided: " + hidden.undecided;
+    return d;
+  }
   const bool one_dof = sc.loop.dofs() == 1 && sc.loop.devices.size() == 1 && sc.loop.operators.size() <= 1 &&
                        !sc.loop.coupling && !conservatism;
   if (one_dof) {  // stability::max_gain on the one-DOF loop

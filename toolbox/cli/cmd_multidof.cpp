@@ -461,7 +461,7 @@ int run_design(const Opts& o) {
   if (o.json) {
     print_json(j);
   } else {
-    std::cout << "Theorem 6 design for " << o.scene << ": " << (feasible ? "a stabilising V found" : "no verified V")
+    std::cout << "Theorem 6 design for " << o.scene << ": " << (!feasible ? "no verified V" : d.premise_failure.empty() ? "a stabilising V found" : "a V that passes the LMI checks found, but " + d.premise_failure + ", so no stability conclusion")
               << (certified ? " (certified)" : "") << "; CCL " << (r.converged ? "converged" : "not converged")
               << " after " << r.iterations << " iterations. " << r.verdict.evidence << "\n";
     if (!r.facial.explanation.empty()) std::cout << "  " << r.facial.explanation << "\n";

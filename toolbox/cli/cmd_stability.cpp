@@ -708,6 +708,13 @@ const cli::Register reg(
              else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
              return cli::exit_property_fails;
            }
+           if (!hidden_unstable && !hidden.undecided.empty()) {  // set-aside modes at z = 1 that may chain
+             if (!o->certificate.empty()) std::cerr << "--certificate: undecided, so no certificate was written\n";
+             const std::string note = "undecided: " + hidden.undecided + "; " + hidden.summary();
+             if (o->json) cli::print_json({{"name", o->max_name}, {"max", nullptr}, {"status", "undecided"}, {"note", note}});
+             else std::cout << "sup " << o->max_name << " undecided\n  " << note << "\n";
+             return cli::exit_numerical;
+           }
            // beyond one DOF, or with a [coupling]: the closed-loop matrix (stability/loop_max.hpp)
            if (!(o->plant.empty() && o->H.empty() && o->op.empty() && o->T.empty() && o->delay == 0))
              throw InputError("--scene replaces --plant, --H, --operator, --T and --delay (the scene holds them)");

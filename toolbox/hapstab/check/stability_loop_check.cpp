@@ -533,6 +533,14 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
       right.push_back(std::move(full));
     }
   }
+  // a constant at z = 1 (a left eigenvector: the plant's conserved quantities, a block's unreached z = 1) beside a
+  // sum at z = 1 (a right one): the constant can move the equilibrium that the sum then integrates (a Jordan block
+  // at z = 1, though each block's A is semisimple there; sim/hidden_modes.hpp) -- the quotient by both would hide
+  // it. hapstab writes no such certificate (it is undecided there); refused, not checked
+  if (!right.empty() && !q.at.empty())
+    throw InputError("model: " + std::to_string(q.at.size()) + " conserved quantities (left eigenvectors at z = 1) beside " +
+                     std::to_string(right.size()) + " unobservable z = 1 of a block (right eigenvectors): whether the constant "
+                     "reaches the sum (a Jordan block at z = 1) is not decided by this kind");
   BallRows M11 = reduced(M, q);
   Mat embedding;  // x = E y on {l^T x = 0}: x_kept = y, x_c = -L[:, kept] y
   if (!q.at.empty()) {

@@ -24,7 +24,7 @@ LoopAsWritten loop_as_written(const SceneProblem& sp, bool assumptions_hold,
                                           : "none (the direct connection)";
   std::string note;
   std::optional<CouplingWitness> witness;
-  if (sp.hidden.stable() && sim::nonlinear_parts(L).empty() && L.coupling && sp.delay == 0) {
+  if (sp.hidden.stable() && sp.hidden.undecided.empty() && sim::nonlinear_parts(L).empty() && L.coupling && sp.delay == 0) {
     if (assumptions_hold) {
       CouplingCheck cc;
       try {

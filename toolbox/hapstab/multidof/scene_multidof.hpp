@@ -279,6 +279,9 @@ inline std::vector<AssumptionCheck> hidden_mode_premises(const SceneProblem& sp)
                                                          "a hidden mode outside the stability region (no input reaches or "
                                                          "no output shows it, so no coupling or loop moves it): " + bad)});
   }
+  if (!sp.hidden.undecided.empty())  // set-aside modes at z = 1 that may chain (sim/hidden_modes.hpp)
+    out.push_back({"the modes set aside at z = 1 / s = 0 settle in the loop as written",
+                   Verdict{Outcome::undecided, Status::failed, sp.hidden.undecided}});
   return out;
 }
 

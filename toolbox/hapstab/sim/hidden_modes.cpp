@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "hapstab/numeric/decimal.hpp"
+#include "hapstab/numeric/error.hpp"
 #include "hapstab/numeric/exact_matrix.hpp"
 #include "hapstab/poly/stability.hpp"
 
@@ -47,7 +48,77 @@ void add_factor(const PolynomialProduct& product, const std::string& block, cons
   }
 }
 
+long multiplicity_at(Polynomial<rational> p, const rational& at) {
+  long k = 0;
+  const Polynomial<rational> factor{-at, rational(1)};
+  while (p.degree() >= 1 && p(at) == 0) p = divmod(p, factor).first, ++k;
+  return k;
+}
+
+StateSpace<rational> dual(const StateSpace<rational>& s) {
+  return StateSpace<rational>{Mat<rational>(s.A.transpose()), Mat<rational>(s.C.transpose()), Mat<rational>(s.B.transpose()),
+                              Mat<rational>(s.D.transpose()), s.T};
+}
+
+// The plant as the loop sees it (sim/loop.hpp's composition: forces in, sampled positions out) --
+// a device's own position state behind its velocity output is neither reached apart from the
+// composition's position nor shown (it is neither kind there), an operator's spring deflection is
+// an injector (no force changes deflection minus position; the force it makes is seen). Larger
+// plants are not composed here (nullopt): the caller stays undecided.
+std::optional<MarginalParts> plant_marginal_parts(const LoopSpec& spec) {
+  const ComposedLoop L = compose(spec);
+  if (L.plant.A.rows() > 200) return std::nullopt;
+  // the loop's forces u only (w, the hand's, is not fed by the loop: a mode only w reaches is unreached here)
+  const StateSpace<rational> positions{L.plant.A, Mat<rational>(L.plant.B.leftCols(L.N)), Mat<rational>(L.plant.C.topRows(L.N)),
+                                       Mat<rational>::Zero(L.N, L.N), 0};
+  return marginal_parts(positions, rational(0));
+}
+
+// LoopHiddenModes::undecided: every block that holds a mode set aside at z = 1 (s = 0) counted by
+// Kalman part; the continuous blocks through the composed plant (a block's own view of them is not
+// the loop's: a device's position state is an integrator to its block, neither kind in the loop).
+std::string marginal_chain(const LoopSpec& spec, const std::vector<HiddenMode>& modes) {
+  auto settles_in = [&](const std::string& block) {
+    return std::any_of(modes.begin(), modes.end(), [&](const HiddenMode& h) { return h.settles && h.block == block; });
+  };
+  const bool continuous = std::any_of(modes.begin(), modes.end(), [](const HiddenMode& h) { return h.settles && !h.discrete; });
+  long injectors = 0, integrators = 0;
+  if (spec.environment && settles_in("environment")) {
+    const MarginalParts e = marginal_parts(*spec.environment, rational(1));
+    injectors += e.injectors, integrators += e.integrators;
+  }
+  if (spec.coupling && settles_in("coupling")) {
+    const MarginalParts v = marginal_parts(*spec.coupling, rational(1));
+    injectors += v.injectors, integrators += v.integrators;
+  }
+  // the plant alone: the closed-loop matrix classifies it itself (sim/closed_loop.hpp); a one-DOF loop
+  // decided on transfer functions does not, so it is composed here
+  const bool discrete_marginal = injectors + integrators > 0;
+  if (!discrete_marginal && !(continuous && spec.dofs() == 1)) return "";
+  const std::optional<MarginalParts> plant = plant_marginal_parts(spec);
+  const std::string kinds = "mode(s) at z = 1 / s = 0 that no input reaches and an output sees (a constant the loop must "
+                            "balance, moving its equilibrium off 0) beside mode(s) an input reaches and no output shows (they "
+                            "sum what the loop feeds them): at that equilibrium they would grow linearly (a Jordan block at "
+                            "z = 1 of the loop as written, though each block's A is semisimple there)";
+  if (!plant) return "the plant has more than 200 states, beyond what this test of set-aside " + kinds + " composes: not decided";
+  injectors += plant->injectors, integrators += plant->integrators;
+  if (injectors == 0 || integrators == 0) return "";
+  return std::to_string(injectors) + " " + kinds.substr(0, kinds.find(" beside ")) + " beside " + std::to_string(integrators) +
+         kinds.substr(kinds.find(" beside ") + 7) + ": whether the constant reaches them is not decided";
+}
+
 }  // namespace
+
+MarginalParts marginal_parts(const StateSpace<rational>& s, const rational& at) {
+  const KalmanSplit reached = controllable_split(s);                     // X / R: not reached (shown or not)
+  const KalmanSplit seen = controllable_split(dual(s));                  // N: not shown (reached or not)
+  const KalmanSplit reached_unseen = controllable_split(dual(reached.controllable));  // R cap N
+  const long unreached = multiplicity_at(charpoly(reached.uncontrollable_A), at);
+  const long unshown = multiplicity_at(charpoly(seen.uncontrollable_A), at);
+  const long integrators = multiplicity_at(charpoly(reached_unseen.uncontrollable_A), at);
+  const long neither = unshown - integrators;  // N / (R cap N)
+  return {unreached - neither, integrators};
+}
 
 std::string HiddenMode::text() const {
   std::ostringstream o;
@@ -116,6 +187,7 @@ LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environmen
   for (const auto& o : spec.operators) add(o.Z, "operator '" + o.name + "'");
   if (spec.environment) add(*spec.environment, "environment", environment, &r.environment_minimal);
   if (spec.coupling) add(*spec.coupling, "coupling", nullptr, &r.coupling_minimal);
+  if (r.stable()) r.undecided = marginal_chain(spec, r.modes);
   return r;
 }
 

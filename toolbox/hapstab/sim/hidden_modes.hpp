@@ -53,10 +53,28 @@ struct LoopHiddenModes {
   /// (Kalman form: block triangular), so with every hidden mode stable both are equally stable:
   /// stability::decide_loop builds its matrix on them (a tf environment of N DOF can hide ~2N).
   std::optional<StateSpace<rational>> environment_minimal, coupling_minimal;
+  /// Not "" when the set-aside modes at z = 1 (s = 0) may chain through the loop (marginal_chain
+  /// below): the verdict is then undecided, never stable. Says why.
+  std::string undecided;
   bool stable() const;            ///< no hidden mode outside the stability region
   /// One line: "" when nothing is hidden; the unstable modes when any; else "stable hidden modes: ...".
   std::string summary() const;
 };
+
+/// The modes at z = 1 (s = 0) of a realisation, by Kalman part (algebraic multiplicities, exact):
+///   injectors   -- no input reaches them, an output (or the reached part) sees them: a constant the
+///                  loop must balance, which moves its equilibrium off 0;
+///   integrators -- an input reaches them, no output shows them: they sum what the loop feeds them.
+/// (Modes neither reached nor shown are neither.) A semisimple mode at 1 settles in a loop that
+/// decays -- unless an injector's constant reaches an integrator through the loop: at the new
+/// equilibrium the integrator's input is a constant, it grows linearly, and z = 1 is a Jordan block
+/// of the loop as written although each block's A is semisimple there (issue 46's review: an
+/// environment ss hiding a constant force beside a sum of positions). Only when both kinds are
+/// present can that happen; hidden_modes() then sets LoopHiddenModes::undecided.
+struct MarginalParts {
+  long injectors = 0, integrators = 0;
+};
+MarginalParts marginal_parts(const StateSpace<rational>& s, const rational& at);
 
 /// The hidden modes of one block (`name` as above), from its Kalman decompositions (lti).
 /// `marginal_semisimple`: the block's A has its eigenvalue z = 1 (s = 0) semisimple (then a hidden

@@ -255,6 +255,12 @@ LoopVerdict decide_loop(const sim::LoopSpec& spec, Decider decider, const sim::L
               ". A mode no input reaches or no output shows is an eigenvalue of the loop whatever the rest does";
     return out;
   }
+  if (!out.hidden.undecided.empty()) {  // set-aside modes at z = 1 that may chain (sim/hidden_modes.hpp)
+    out.method = "hidden mode";
+    out.path = "hidden_modes";
+    out.why = "undecided: " + out.hidden.undecided + "; " + out.hidden.summary();
+    return out;
+  }
   if (decider != Decider::matrix && one_dof(spec))
     if (std::optional<LoopVerdict> v = one_dof_test(spec, out)) return *v;
   if (decider == Decider::automatic && sym) return by_symmetry(*sym, out);

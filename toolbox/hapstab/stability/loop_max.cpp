@@ -1655,6 +1655,20 @@ LoopMax max_parameter(const LoopAt& at, const rational& reference, const std::st
   out.states = order(F);
   out.fixed_modes = F.fixed.rows();
   if (F.fixed.rows() > 0 && !schur_stable(charpoly(F.fixed))) {
+    // at z = 1 exactly (an environment's memory of positions) and inside the circle otherwise: such a
+    // mode is not unstable by itself (it settles as the loop decays, unless a constant reaches it:
+    // sim/hidden_modes.hpp), so nothing is stated, never "NOT stable"
+    Polynomial<rational> rest = charpoly(F.fixed);
+    const Polynomial<rational> at_one{rational(-1), rational(1)};
+    while (rest.degree() >= 1 && rest(rational(1)) == 0) rest = divmod(rest, at_one).first;
+    if (rest.degree() < charpoly(F.fixed).degree() && (rest.degree() < 1 || schur_stable(rest))) {
+      out.outcome = Outcome::undecided;
+      out.status = Status::failed;
+      out.note = "undecided: " + std::to_string(F.fixed.rows()) + " mode(s) of the controller that no " + name +
+                 " moves (a block's hidden modes) lie at z = 1 or inside the unit circle: whether those at 1 settle (a "
+                 "conserved quantity) or grow (a constant fed to them) is not decided here";
+      return out;
+    }
     out.outcome = Outcome::fails;
     out.status = Status::exact;
     out.note = "NOT stable for any " + name + " [exact]: " + std::to_string(F.fixed.rows()) +
