@@ -7,6 +7,7 @@
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/ball.hpp"
 #include "hapstab/numeric/error.hpp"
+#include "hapstab/poly/stability.hpp"
 
 namespace hapstab::check::detail {
 
@@ -89,9 +90,19 @@ LoopDevice read_loop_device(const nlohmann::json& model, bool one_pole, bool sce
   if (dev.is_zero()) throw InputError("model.plant: zero (the device does not move)");
   if (model.contains("operator")) {
     const RF s(P{rational(0), rational(1)});
-    const RF one = RF(rational(1)) + s * parse_model_field(model, "operator", 's', d.T, d.params) * dev;
+    const RF Z = parse_model_field(model, "operator", 's', d.T, d.params);
+    const RF one = RF(rational(1)) + s * Z * dev;
     if (one.is_zero()) throw InputError("model.operator: 1 + s Z_op P is zero");
+    const P whole = dev.den() * Z.den() + P{rational(0), rational(1)} * Z.num() * dev.num();
     dev = dev / one;
+    // the device's and the operator's modes are the roots of Dp Dz + s Nz Np: one the reduction cancels stays a
+    // mode of the loop as written, refused in Re s >= 0 (but one s: the operator spring's deflection beside the
+    // position it integrates, a conserved quantity)
+    P lost = divmod(whole, dev.den()).first;
+    if (lost.degree() >= 1 && lost.coeff(0) == 0) lost = divmod(lost, P{rational(0), rational(1)}).first;
+    if (lost.degree() >= 1 && !hurwitz_stable(lost))
+      throw InputError("model.operator: P/(1 + s Z_op P) cancels a mode of the device and the operator with Re s >= 0: "
+                       "realised as written it is a hidden mode the wall does not move");
   }
   if (dev.num().degree() >= dev.den().degree()) throw InputError("model.plant: the device is not strictly proper");
   const P N = dev.num() * P(rational(1) / dev.den().leading());

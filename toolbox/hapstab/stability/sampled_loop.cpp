@@ -375,6 +375,19 @@ RationalFunction<rational> effective_device(const Loop& loop) {
     const RationalFunction<rational> one(rational(1));
     if ((one + loop_gain).is_zero()) throw InputError("1 + s Z_op P is zero: the operator cancels the device");
     P = P / (one + loop_gain);
+    // The modes of the device and the operator together are the roots of Dp Dz + s Nz Np (each read in
+    // lowest terms); P's reduction may cancel some (the operator's poles at the device's zeros). A
+    // cancelled mode stays a mode of the loop as written: one in Re s >= 0 is refused by name (realised
+    // as written it is a hidden mode no wall moves) -- except one s, the operator's spring deflection
+    // beside the position it integrates (the conserved quantity of sim/closed_loop.hpp).
+    const RationalFunction<rational>& Z = loop.operator_impedance->H;
+    const QP whole = loop.plant.H.den() * Z.den() + QP{rational(0), rational(1)} * Z.num() * loop.plant.H.num();
+    QP lost = divmod(whole, P.den()).first;
+    if (lost.degree() >= 1 && lost.coeff(0) == 0) lost = divmod(lost, QP{rational(0), rational(1)}).first;
+    if (lost.degree() >= 1 && !hurwitz_stable(lost))
+      throw InputError("--operator with --plant: P/(1 + s Z_op P) cancels a mode of the device and the operator with Re s >= 0 "
+                       "(the factor " + to_string(lost, "s") + " of Dp Dz + s Nz Np): realised as written it is a hidden "
+                       "mode the wall does not move, which the transfer function would drop");
   }
   if (P.num().degree() >= P.den().degree())
     throw InputError("the device " + std::string(loop.operator_impedance ? "with the operator " : "") +
