@@ -138,6 +138,17 @@ except ImportError:  # the same values, 2-3 times slower
 import math
 from math import comb, gcd
 
+
+
+def text_fraction(txt):
+    """The number a decimal text writes, exactly; an exponent of more than 6 digits is refused (ValueError), as
+    hapstab's reader refuses it: 10^999999999 is a typo, and writing it out would take this checker hours."""
+    m = re.search(r"[eE][+-]?([0-9]+)$", txt.strip())
+    if m and len(m.group(1).lstrip("0")) > 6:
+        raise ValueError("exponent beyond 6 digits")
+    return Fraction(TextFraction(txt))
+
+
 MAX_DEGREE = 64
 # b* = +inf at the band's irrational end (bound_infinite_at_end): gcds and Sturm counts on one short
 # interval, no full-band sequence: 1-2 s at degree 199 (reproduce's q = 100), so a higher limit
@@ -500,16 +511,16 @@ def _parse(text, T, params, var, leaf, marginal=False, integrator=False):
         kind, txt = take()
         if kind == 'num':
             try:
-                return leaf('num', txt, Fraction(TextFraction(txt)))
+                return leaf('num', txt, text_fraction(txt))
             except (ValueError, ZeroDivisionError):
                 raise Malformed("model.H: malformed number %r" % txt)
         if kind == 'name':
             if txt == var:
                 return leaf('var', txt, None)
+            if txt == 'T':  # the sample period, never a parameter (parameters() refuses model.set.T)
+                return leaf('name', txt, T)
             if txt in params:
                 return leaf('name', txt, params[txt])
-            if txt == 'T':
-                return leaf('name', txt, T)
             raise Malformed("model.H: unknown name %r" % txt)
         if kind == '(':
             if depth > 200:
@@ -577,6 +588,8 @@ def parameters(model):
     sets = model.get("set", {})
     if not isinstance(sets, dict):
         raise Malformed("model.set: not an object")
+    if "T" in sets:
+        raise Malformed("model.set.T: T is the sample period (model.T), not a parameter")
     return {k: exact_value(v, "model.set." + k) for k, v in sets.items()}
 
 
@@ -629,7 +642,7 @@ def printed_number(v, what):
     if not isinstance(v, str):
         raise Malformed("%s: not a string" % what)
     try:
-        return Fraction(TextFraction(v.strip()))
+        return text_fraction(v.strip())
     except (ValueError, ZeroDivisionError):
         raise Malformed("%s: %r is not a number" % (what, v))
 
@@ -2141,8 +2154,22 @@ def effective_device(model):
     try:
         dev = parse_h(model["plant"], T, params, 's', 'model.plant')
         if "operator" in model:
-            one = RF([Fraction(1)]) + RF([Fraction(0), Fraction(1)]) * parse_h(model["operator"], T, params, 's', 'model.operator') * dev
+            Z = parse_h(model["operator"], T, params, 's', 'model.operator')
+            one = RF([Fraction(1)]) + RF([Fraction(0), Fraction(1)]) * Z * dev
+            if not one.num:
+                raise Malformed("model.operator: 1 + s Z_op P is zero")
+            whole = padd(pmul(dev.den, Z.den), pmul([Fraction(0), Fraction(1)], pmul(Z.num, dev.num)))
             dev = dev / one
+            # the device's and the operator's modes are the roots of Dp Dz + s Nz Np; one the reduction cancels
+            # stays a mode of the loop as written: in Re s >= 0 it is malformed (but one s: the operator spring's
+            # deflection beside the position it integrates, a conserved quantity)
+            lost, rem = pdivmod(whole, dev.den)
+            lost = trim(lost)
+            if len(lost) > 1 and lost[0] == 0:
+                lost = lost[1:]
+            if len(lost) > 1 and not hurwitz(lost)[0]:
+                raise Malformed("model.operator: P/(1 + s Z_op P) cancels a mode of the device and the operator with "
+                                "Re s >= 0: realised as written it is a hidden mode the wall does not move")
     except ZeroDivisionError:
         raise Malformed("model: division by zero")
     if not dev.num:
@@ -3723,6 +3750,10 @@ def loop_quotient_of(loop, own=0):
             Rd, _ = conserved_quantities(mT(AmI), cols)
             right += [(offset, r) for r in Rd]
         offset += len(Ab)
+    if right and at:  # a constant beside a sum at z = 1: a Jordan block possible, which the quotient by both would hide
+        raise Malformed("model: %d conserved quantities (left eigenvectors at z = 1) beside %d unobservable z = 1 of a block "
+                        "(right eigenvectors): whether the constant reaches the sum (a Jordan block at z = 1) is not decided "
+                        "by this kind" % (len(at), len(right)))
     return loop, L, at, right, own, blocks
 
 

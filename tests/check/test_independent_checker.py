@@ -18,6 +18,7 @@ K cos + cot(theta/2) K sin + 1 = K (1 + 2 cos(theta)) + 1 (min 1 - K at theta = 
 K cos(theta) + 1 (min 1 - K): both hold iff K < 1; (1 + H)^-1 has its pole at -K.
 """
 import copy
+import json
 import math
 import os
 import sys
@@ -344,6 +345,40 @@ class Lexer(unittest.TestCase):
             with self.assertRaises(hc.Malformed) as e:
                 hc.lex(bad)
             self.assertIn("unexpected character", str(e.exception))
+
+
+class ModelText(unittest.TestCase):
+    """A parameter named T, and decimal exponents beyond 6 digits, are refused by name (exit 2), as hapstab check
+    refuses them (stop 87's review: model.set.T = 1 made H read T = 1 while the objective used model.T, and a
+    certificate with the claim verified; 1e999999999 kept the checker writing out 10^999999999 for hours)."""
+
+    def wall(self):
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "certificates", "wall-delay1.json")
+        with open(path) as f:
+            return json.load(f)
+
+    def test_the_example_is_verified(self):
+        self.assertEqual(hc.check(self.wall())[0], 0)
+
+    def test_a_parameter_named_T_is_malformed(self):
+        c = self.wall()
+        c["model"]["set"]["T"] = "1"
+        code, why = hc.check(c)[:2]
+        self.assertEqual(code, 2, why)
+        self.assertIn("model.set.T", why)
+
+    def test_huge_exponents_are_malformed_at_once(self):
+        for where in ("printed", "H"):
+            c = self.wall()
+            if where == "printed":
+                c["claim"]["printed"] = "1e999999999"
+            else:
+                c["model"]["H"] += " + 0*1e999999999"
+            code, why = hc.check(c)[:2]
+            self.assertEqual(code, 2, (where, why))
+            self.assertIn("1e999999999", why)
+        self.assertEqual(hc.text_fraction("25e-000001"), Fraction(5, 2))  # six digits or fewer: read as written
+        self.assertEqual(hc.text_fraction("1e999999") * 0, 0)
 
 
 class SceneModel(unittest.TestCase):
