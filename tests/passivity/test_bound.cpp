@@ -157,7 +157,11 @@ TEST(PassivityBound, FastPathMatchesCertifiedTo1e13) {
     for (int n = 0; n < 3; ++n) {
       p.delay = n;
       auto f = FastBound::run(p);
-      ASSERT_TRUE(f.has_value()) << e;
+      if (!f) {  // beyond the fast path (B cancels below 1e-9 of its scale: radius 0.99999): certified answers
+        EXPECT_EQ(bound(p, Method::fast).kind, Method::certified) << e << " n=" << n;
+        EXPECT_NE(e.find("0.99999"), std::string::npos) << e << ": only the radius 0.99999 is beyond the fast path";
+        continue;
+      }
       Bound b = bound_certified(p);
       double ref = b.value_double();
       EXPECT_LE(std::abs(f->first - ref), 1e-13 * std::abs(ref)) << e << " n=" << n;
@@ -181,6 +185,21 @@ TEST(PassivityBound, FastPathNeverWrongOnVeryNarrowResonances) {
       EXPECT_LE(std::abs(f.value_double() - ref), 1e-13 * std::abs(ref)) << h << " n=" << n << ": " << f.decimal << " vs " << c.decimal;
     }
   }
+}
+
+// Stop 87's review: a pole of order 12 at 1/2 (B = (5/4 - c)^12 cancels down to 1.6e-11 of its largest
+// coefficient near c = 1) made the fast path lose its maximiser: 0.7104 "(stated error 1e-13)" for
+// b* = 3.36307435418740262645 (mpmath on (45), 60 digits; the certified path agrees). Method::fast now
+// hands it to the certified path; the powers 8-11 stay on the fast path and stay within 1e-13.
+TEST(PassivityBound, FastPathHandsAHighOrderPoleToTheCertifiedPath) {
+  for (const char* h : {"(z-1)/(z-1/2)^12", "(z-1)*(z+1/2)^6/((z-1/2)^12*z^6)", "(z-1)/(z-1/2)^8", "(z-1)/(z-1/2)^11"}) {
+    auto p = make(h, "1/1000");
+    Bound f = bound(p, Method::fast);
+    Bound c = bound_certified(p, 30);
+    const double ref = c.value_double();
+    EXPECT_LE(std::abs(f.value_double() - ref), 1e-13 * std::abs(ref)) << h << ": " << f.decimal << " vs " << c.decimal;
+  }
+  EXPECT_NEAR(bound_certified(make("(z-1)/(z-1/2)^12", "1/1000"), 30).value_double(), 3.36307435418740262645, 1e-15 * 3.37);
 }
 
 TEST(PassivityBound, GridIsBelowAndConverges) {

@@ -104,12 +104,14 @@ std::optional<std::pair<double, double>> FastBound::evaluate() const {
   roots_in(deriv(Bhi_), -1.0, 1.0, rb);
   rb.push_back(-1.0);
   rb.push_back(1.0);
-  // A resonance so narrow that min B < 1e-11 max|B_k| (pole radius above ~1 - 3e-6): the critical
-  // points of f are located in double from coefficients that cancel down to min B, and the maximiser
-  // is lost (radius 1 - 1e-8 gave -2.8e-4 for a true 66666.7; 1 - 1e-7 an error of 3e-12). Such
+  // B cancelling down to min B < 1e-9 max|B_k| on [-1, 1] (a narrow resonance, pole radius above ~1 - 3e-5;
+  // or a pole of high order near the circle): the critical points of f are located in double from
+  // coefficients that cancel down to min B, and the maximiser is lost (radius 1 - 1e-8 gave -2.8e-4 for a
+  // true 66666.7; 1/(z - 1/2)^12's B = (5/4 - c)^12, ratio 1.6e-11, gave 0.7104 for a true 3.3631 at stop
+  // 87's review, while the power 11, ratio 1.4e-10, was right: 1e-9 keeps a factor of 100 from it). Such
   // cases go to the certified path, which is exact about them (~0.1-0.3 ms).
   for (double x : rb)
-    if (horner_dd(Bhi_, Blo_, x).hi <= 1e-11 * bscale) return std::nullopt;
+    if (horner_dd(Bhi_, Blo_, x).hi <= 1e-9 * bscale) return std::nullopt;
   // P = A'B - AB' in double-double
   const size_t na = Ahi_.size(), nb = Bhi_.size();
   std::vector<dd> Pd(na + nb, dd{0, 0});
