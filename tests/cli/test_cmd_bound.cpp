@@ -274,6 +274,19 @@ TEST(CmdBound, BatchLineWithTwoExpressionsIsAnError) {
   EXPECT_NE(r.out.find("\"bound\":\"5\""), std::string::npos) << r.out;  // the next line still runs
 }
 
+// Stop 87's review: `bound --batch FILE --delay 5 --damping 1 --certificate c.json` printed FILE's cases and
+// dropped every option beside --batch (no verdict against the damping, no certificate, no warning).
+TEST(CmdBound, BatchRefusesOptionsItWouldIgnore) {
+  const std::string f = ::testing::TempDir() + "/one_case.txt";
+  std::ofstream(f) << "1/(z-0.5) --T 1\n";
+  for (const char* extra : {"--delay 5", "--damping 1", "--certificate c.json", "--H \"1/(z-1)\""}) {
+    CliRun r = run("bound --batch " + f + " " + extra);
+    EXPECT_EQ(r.code, 2) << extra << "\n" << r.out;
+    EXPECT_NE(r.out.find("would be ignored"), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(run("bound --batch " + f).code, 0);
+}
+
 // `bound --max K --damping b` (passivity/max_gain.hpp): the closed form in JSON and text, b* at the
 // answer (--explain's check, and a separate `bound` run at the printed K), the exit codes, the --b
 // spelling, batch lines and the refusals.

@@ -391,8 +391,15 @@ const cli::Register reg({"bound", "Passivity bound b* of (45)/(54) for a virtual
                            auto batch = std::make_shared<std::string>();
                            add_options(app, *o, false);
                            app.add_option("--batch", *batch, "FILE with one case per line; prints one JSON line per case");
-                           return [o, batch]() -> int {
-                             if (!batch->empty()) return run_batch(*batch);
+                           const CLI::App* self = &app;
+                           return [o, batch, self]() -> int {
+                             if (!batch->empty()) {  // every option comes from FILE's lines: one beside it would be dropped
+                               for (const CLI::Option* opt : self->get_options())
+                                 if (opt->count() > 0 && opt->get_name() != "--batch")
+                                   throw InputError("--batch reads every case's options from FILE's lines: " + opt->get_name() +
+                                                    " on the command line would be ignored (put it on each line)");
+                               return run_batch(*batch);
+                             }
                              if (!o->max.empty()) {
                                const passivity::BoundMax m = compute_max(*o);
                                if (!o->certificate.empty()) {
