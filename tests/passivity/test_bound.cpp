@@ -202,6 +202,16 @@ TEST(PassivityBound, FastPathHandsAHighOrderPoleToTheCertifiedPath) {
   EXPECT_NEAR(bound_certified(make("(z-1)/(z-1/2)^12", "1/1000"), 30).value_double(), 3.36307435418740262645, 1e-15 * 3.37);
 }
 
+// Stop 87's review: 1/(z + 1/3)^64 went to the long-delay path (the planner's estimate), whose Arb search
+// did not settle it: three attempts of 200,000 evaluations, 61 s, then "could not bound b* from above"
+// (exit 3). With the exact path behind it the search gets about the exact path's cost and hands over.
+// b* = f(pi) = T H(-1)/2 = (3/2)^64 T/2 (n even: H(-1) = (3/2)^64 > 0, the maximum at w = pi/T).
+TEST(PassivityBound, AHighOrderPoleTheLongDelayPathCannotSettleGoesToTheExactPath) {
+  Bound b = bound_certified(make("1/(z+1/3)^64", "1/1000"));
+  EXPECT_EQ(b.status, Status::exact);
+  EXPECT_EQ(b.value, rational(bmp::pow(integer(3), 64), bmp::pow(integer(2), 64) * 2000));
+}
+
 TEST(PassivityBound, GridIsBelowAndConverges) {
   auto p = make("(z-1)/(z^2-2*0.99*0.8*z+0.99^2)", "1/1000");
   Bound b = bound_certified(p);

@@ -231,7 +231,9 @@ std::optional<LongDelayPole> long_delay_applies(const BoundProblem& p, std::stri
 /// fast_long_delay (bound.hpp). double_pruning: boxes are first tried in double intervals with
 /// rounding bounds (numeric/dinterval.hpp) and only those they cannot prune go to Arb; false: Arb
 /// for every box (the path before issue 48, kept for the benchmark's comparison and the tests).
-Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning = true);
+/// budget > 0: at most that many Arb evaluations, one attempt, NumericalError when b* is not settled
+/// within it (the caller has the exact path behind; bound.cpp).
+Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning = true, long budget = 0);
 /// The long-delay objective's f, f', f'' as the branch-and-bound evaluates them, for the tests:
 /// in double intervals at theta = pi k/D, or over [pi (k - 1)/D, pi (k + 1)/D] when box (nullopt
 /// when the integers exceed 128 bits), and in Arb balls at theta (every point of the ball).

@@ -337,7 +337,7 @@ class Maximiser {
         first_pruned_(static_cast<size_t>(boxes), 0) {
     // the deepest level whose indices M 2^level stay below 2^62
     while (max_level_ > 0 && (M_ >> (62 - max_level_)) > 0) --max_level_;
-    budget_ = 200 * M_ + 200000;
+    budget_ = 200 * M_ + 200000;  // Arb evaluations (~0.1 ms each at degree 60, 256 bits); set_budget lowers it
     tol_factor_ = Ball(pow10(-(digits + 3)));
     L_ = lower(Ball(df.at_zero));
     Ld_ = arf_get_d(arb_midref(L_.get()), ARF_RND_FLOOR);  // every change of L_ updates Ld_ <= L_
@@ -356,6 +356,7 @@ class Maximiser {
     }
   }
 
+  void set_budget(long evaluations) { budget_ = std::min(budget_, evaluations); }
   /// Runs the search; false when the work budget ran out before every piece was resolved.
   bool run() {
     // the best points of the double scan, evaluated in balls: a proven lower bound near b* from the start
@@ -693,7 +694,7 @@ long grid_boxes(const rational& nu) {
   return 4 * up.convert_to<long>() + 64;
 }
 
-Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning) {
+Bound certified_long_delay(const BoundProblem& p, int digits, bool double_pruning, long budget) {
   std::string why;
   const std::optional<DelayForm> df = delay_form(p, &why);
   if (!df) {
@@ -726,7 +727,13 @@ Bound certified_long_delay(const BoundProblem& p, int digits, bool double_prunin
   for (int attempt = 0;; ++attempt, bits *= 2) {
     flint::BallPrecision scope(bits);
     Maximiser mx(*df, boxes, digits, double_pruning, proven_lo ? &settled : nullptr, proven_lo);
+    if (budget > 0) mx.set_budget(budget);
     const bool complete = mx.run();
+    // with a budget (the exact path stands behind: bound.cpp) a search that ran out of it, or left b* unbounded
+    // above, hands over at once rather than retrying at more bits
+    if (budget > 0 && (!complete || !mx.hi().finite()))
+      throw NumericalError("the long-delay path did not settle b* within its budget of " + std::to_string(budget) +
+                           " evaluations (" + std::to_string(mx.unresolved()) + " pieces unresolved at " + std::to_string(bits) + " bits)");
     if (mx.lo().finite()) settled = mx.first_pruned(), proven_lo = mx.lo().bounds().lo;
     double_evals += mx.double_evaluations(), arb_evals += mx.evaluations();
     if (!mx.hi().finite()) {
