@@ -223,7 +223,9 @@ Bound bound(const BoundProblem& p, Method m, int digits, long grid_points) {
         b.plan = plan.why;
         return b;
       }
-    } else if (auto r = fast_long_delay(with_integer_delay(p))) {
+    } else if (auto r = fast_long_delay(with_integer_delay(p));
+               r && std::isfinite(r->value) && std::isfinite(r->omega) && std::isfinite(r->relative_error)) {
+      // (not finite: a value the doubles overflowed, e.g. a pole at 1 - 1e-12 with delay 60 -- certified answers)
       Bound b = fast_result(r->value, r->omega, r->relative_error,
                             "fast: the long-delay objective in double, sampled every pi/(4 nu + 64), its best local "
                             "maxima polished by Newton",

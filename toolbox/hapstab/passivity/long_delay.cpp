@@ -796,6 +796,14 @@ std::optional<FastLongDelay> fast_long_delay(const BoundProblem& p) {
   const std::optional<DelayForm> df = delay_form(p, nullptr);
   if (!df) return std::nullopt;
   if (df->constant) return FastLongDelay{to_real<double>(df->eta), 0.0, 0.0};
+  // |D|^2 = B(c) cancelling below 1e-9 of its largest coefficient on [-1, 1] (a resonance of radius above
+  // ~1 - 3e-5, a pole of high order near the circle; the fast short path's rule, fast.cpp): the double scan
+  // misses the peak (radius 1 - 1e-12 at n = 5000 gave 8.0 for b* = 1194815 at stop 87's review). Decided
+  // exactly (Sturm on B - t): the certified path answers those.
+  rational scale = 0;
+  for (int k = 0; k <= df->B.degree(); ++k) scale = std::max(scale, rational(abs(df->B.coeff(k))));
+  const QPoly low = df->B - QPoly(scale / 1000000000);
+  if (low(rational(-1)) <= 0 || count_real_roots(low, rational(-1), rational(1)) > 0) return std::nullopt;
   const Peak best = double_peaks(*df, grid_boxes(df->nu), 1).front();
   // the rounding error of f at the maximiser, to first order: each Horner sum p(c) is off by
   // ~ deg eps sum|p_i c^i|, the argument nu theta by ~ eps nu theta (times f's derivative in it),
