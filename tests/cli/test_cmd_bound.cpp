@@ -274,6 +274,22 @@ TEST(CmdBound, BatchLineWithTwoExpressionsIsAnError) {
   EXPECT_NE(r.out.find("\"bound\":\"5\""), std::string::npos) << r.out;  // the next line still runs
 }
 
+// Stop 87's review: b* = 15 + 1e-40 (eta = 1e-40) printed "b* = 15 [exact]" and "passive iff b > 15", and a
+// damping of 15 + 1e-41 then "b = 15: NOT passive (b <= b*)" under it. An exact value whose decimal is
+// rounded says so and prints the rational; an exact decimal prints as before.
+TEST(CmdBound, AnExactValueItsDecimalRoundsSaysSo) {
+  const std::string wall = "bound --H \"K + B*(z-1)/(T*z)\" --set K=20000 --set B=5 --T 1/1000 ";
+  const CliRun r = run(wall + "--eta 1e-40 --damping 15.00000000000000000000000000000000000000001");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("b* = 15 (rounded; exactly 150000000000000000000000000000000000000001/1" + std::string(40, '0') + ")   [exact]"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("passive iff b > b* (above)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("damping b = 15 (rounded; exactly 1500000000000000000000000000000000000000001/1"), std::string::npos) << r.out;
+  const CliRun plain = run(wall);
+  EXPECT_NE(plain.out.find("b* = 15   [exact]"), std::string::npos) << plain.out;
+  EXPECT_NE(plain.out.find("passive iff b > 15\n"), std::string::npos) << plain.out;
+}
+
 // Stop 87's review: `bound --batch FILE --delay 5 --damping 1 --certificate c.json` printed FILE's cases and
 // dropped every option beside --batch (no verdict against the damping, no certificate, no warning).
 TEST(CmdBound, BatchRefusesOptionsItWouldIgnore) {

@@ -272,7 +272,14 @@ void print_friction(const FrictionCheck& f) {
 
 void print_human(const Outcome& r, const BoundOpts& o) {
   const Bound& b = r.b;
-  std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.decimal) << "   [" << to_string(b.status)
+  // an exact b* whose decimal is not exactly it (15 + 1e-40 at 30 digits prints 15): say so, and print the
+  // rational where it is short, so that "[exact]" never stands beside a rounded number (stop 87's review)
+  std::string exactly;
+  if (!b.infinite && b.status == Status::exact && b.enclosure && try_parse_rational(b.decimal) != b.enclosure->lo) {
+    const std::string q = b.enclosure->lo.str();
+    exactly = q.size() <= 120 ? " (rounded; exactly " + q + ")" : " (rounded to --digits; the exact rational in --json)";
+  }
+  std::cout << "b* = " << (b.infinite ? "+inf (not passive for any finite b)" : b.decimal + exactly) << "   [" << to_string(b.status)
             << "]\n";
   if (!b.infinite && b.status != Status::exact) {
     const bool grid = b.kind == Method::grid;
@@ -296,7 +303,8 @@ void print_human(const Outcome& r, const BoundOpts& o) {
       const auto [lo, hi] = reported_enclosure(b, o.digits);
       std::cout << "  passive if b > " << hi << ", not passive if b <= " << lo << " (b* shown only to that enclosure)\n";
     } else
-      std::cout << "  passive iff b > " << b.decimal << (b.status == Status::numeric ? " (numeric)" : "") << "\n";
+      std::cout << "  passive iff b > " << (exactly.empty() ? b.decimal : "b* (above)") << (b.status == Status::numeric ? " (numeric)" : "")
+                << "\n";
   }
   if (o.explain) {
     if (!r.cf) {
@@ -324,7 +332,8 @@ void print_human(const Outcome& r, const BoundOpts& o) {
     const DampingCheck& d = *r.damping;
     // with a friction check the verdict is both conditions' (the coulomb line): b > b* alone is not "passive"
     const bool friction_checked = r.friction && r.friction->coulomb;
-    std::cout << "damping b = " << to_decimal(d.b, 17) << ": "
+    const std::string b_text = to_decimal(d.b, 17);  // as for b*: a rounded b says so
+    std::cout << "damping b = " << b_text << (try_parse_rational(b_text) == d.b ? "" : " (rounded; exactly " + d.b.str() + ")") << ": "
               << (!d.passive ? "NOT passive (b <= b*)"
                   : friction_checked ? "b > b* (the damping condition holds; the friction condition below)"
                                      : "passive (b > b*)")
