@@ -1123,3 +1123,15 @@ def test_multidof_symmetry_is_the_commands():
     assert [b["verdict"] for b in s["blocks"]] == ["feasible"] * 3
     w = hapstab.multidof.analyze(cli_scenes / "witness_interior_wall.toml")
     assert w.symmetry is None
+
+
+def test_set_aside_modes_that_chain_are_undecided_in_python_too():
+    # stop 87's review: an environment hiding a constant force beside a sum of positions (both at z = 1) makes
+    # z = 1 a Jordan block of the loop as written; the command says undecided (Edges.SetAsideModesThatChainAreUndecided),
+    # and so does Python, for the verdict and for max= (no supremum is stated)
+    scene = SCENES / "hidden_offset_and_integrator.toml"
+    s = hapstab.stability(scene=scene)
+    assert s.stable is None and s.verdict_status == "undecided"
+    r = hapstab.stability(scene=scene, max="g")
+    assert r.status == "undecided" and r.outcome == "undecided" and r.path == "hidden_modes" and not r.supremum_proven
+    assert math.isnan(r.value) and "Jordan block at z = 1" in r.note
