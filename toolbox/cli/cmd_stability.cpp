@@ -704,14 +704,18 @@ const cli::Register reg(
                                 "): sup = 0 by a hidden mode has no certificate form yet (`stability --scene S --set " + o->max_name +
                                 "=VALUE --certificate FILE` certifies the verdict at one value)");
              const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
-             if (o->json) cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}});
+             if (o->json)
+               cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}, {"digits", o->digits},
+                                {"path", "hidden_modes"}});
              else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
              return cli::exit_property_fails;
            }
            if (!hidden_unstable && !hidden.undecided.empty()) {  // set-aside modes at z = 1 that may chain
              if (!o->certificate.empty()) std::cerr << "--certificate: undecided, so no certificate was written\n";
              const std::string note = "undecided: " + hidden.undecided + "; " + hidden.summary();
-             if (o->json) cli::print_json({{"name", o->max_name}, {"max", nullptr}, {"status", "undecided"}, {"note", note}});
+             if (o->json)
+               cli::print_json({{"name", o->max_name}, {"max", nullptr}, {"status", "undecided"}, {"note", note}, {"digits", o->digits},
+                                {"path", "hidden_modes"}});
              else std::cout << "sup " << o->max_name << " undecided\n  " << note << "\n";
              return cli::exit_numerical;
            }
