@@ -270,10 +270,7 @@ TEST(Edges, ConservedHiddenModeGetsOneVerdictWhereverItIsWritten) {
   // the same device as m = 1, b = 1
   const auto path = hapstab_test::temp_path("edges", "mb.toml");
   {
-    std::ifstream in(scene);
-    std::stringstream all;
-    all << in.rdbuf();
-    std::string text = all.str();
+    std::string text = hapstab_test::slurp(scene);
     const std::string from = "ss = { A = [[\"0\", \"1\"], [\"0\", \"-1\"]], B = [[\"0\"], [\"1\"]], C = [[\"0\", \"1\"]], D = [[\"0\"]] }";
     ASSERT_NE(text.find(from), std::string::npos);
     text.replace(text.find(from), from.size(), "m = \"1\"\nb = \"1\"");
@@ -320,10 +317,7 @@ TEST(Edges, SetAsideModesThatChainAreUndecided) {
   EXPECT_EQ(t.code, 3) << t.out;
   EXPECT_NE(t.out.find("sup g undecided"), std::string::npos) << t.out;
   // the operator's spring deflection is an injector only in the composed plant (its block is minimal)
-  std::ifstream in(scene);
-  std::stringstream all;
-  all << in.rdbuf();
-  std::string text = all.str();
+  const std::string text = hapstab_test::slurp(scene);
   const std::string hand = "b = \"2\"\n\n[environment]";
   ASSERT_NE(text.find(hand), std::string::npos);
   std::string spring = text;
