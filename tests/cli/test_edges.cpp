@@ -359,14 +359,6 @@ TEST(Edges, AnOperatorModeTheDeviceCancelsIsRefused) {
 
 namespace {
 
-// Item 8: the fast long-delay path missed a resonance 1e-5 from the circle (0.70 "(stated error
-// +-7e-9)" for b* = 25.79). It samples at a resonance's own width around its centre, and its band is
-// called f's rounding at the maximiser found, not an error of b*. Since stop 87 a resonance whose |D|^2
-// cancels below 1e-9 of its coefficients (radius above ~1 - 3e-5; decided exactly) is not the fast
-// path's: radius 1 - 1e-5 is answered certified (the review found 1.3727 for 1.4128 at n = 1000, and
-// 8.0 for 1194815 at radius 1 - 1e-12). Radius 1 - 1e-4 stays fast, within 1e-5 of the certified value.
-// Reference: the certified path (the branch-and-bound, another code path), and mpmath's
-// 25.79355993594055700676459 (tests/verify/independent.py's definition).
 // Stop 87's review: a pole at radius 1 - 1e-12 with delay 60 made the fast long-delay path's doubles
 // overflow, and `bound --method fast` exited 2 with "exact_rational: value is not finite" (valid input).
 // The certified path answers it (515110213.7705..., the review's mpmath reference).
@@ -379,6 +371,14 @@ TEST(Edges, FastLongDelayHandsOverflowToTheCertifiedPath) {
   EXPECT_EQ(j["bound"].get<std::string>().substr(0, 14), "515110213.7705") << r.out;
 }
 
+// Item 8: the fast long-delay path missed a resonance 1e-5 from the circle (0.70 "(stated error
+// +-7e-9)" for b* = 25.79). It samples at a resonance's own width around its centre, and its band is
+// called f's rounding at the maximiser found, not an error of b*. Since stop 87 a resonance whose |D|^2
+// cancels below 1e-9 of its coefficients (radius above ~1 - 3e-5; decided exactly) is not the fast
+// path's: radius 1 - 1e-5 is answered certified (the review found 1.3727 for 1.4128 at n = 1000, and
+// 8.0 for 1194815 at radius 1 - 1e-12). Radius 1 - 1e-4 stays fast, within 1e-5 of the certified value.
+// Reference: the certified path (the branch-and-bound, another code path), and mpmath's
+// 25.79355993594055700676459 (tests/verify/independent.py's definition).
 TEST(Edges, FastLongDelayFindsANarrowResonance) {
   const std::string H = "bound --delay 200 --T 1/1000 --H \"(z-1)/(z^2 - 2*(99999/100000)*(3/10)*z + (99999/100000)^2)\"";
   const auto c = run_cli(H + " --json");
