@@ -858,8 +858,11 @@ def check_bound(c):
     cells = "infinite" not in claim and "cells" in evidence
     local = "infinite" in claim and "pole_at_z" in evidence  # b* = +inf at z = -1, nothing expanded
     circle = "infinite" in claim and "pole_on_circle" in evidence  # b* = +inf inside the band, nothing expanded
+    integrator = "infinite" in claim and "integrator" in evidence  # H's pole at z = 1, nothing expanded
     if local:
         only(evidence, ("pole_at_z",), "evidence")
+    elif integrator:
+        only(evidence, ("integrator",), "evidence")
     elif circle:
         only(evidence, ("pole_on_circle",), "evidence")
     elif "infinite" in claim:
@@ -868,12 +871,17 @@ def check_bound(c):
         only(evidence, ("cells", "witness_theta"), "evidence")
     else:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
-    H, T, eta, P, q = bound_model(model, expanded=not (cells or local or circle))
+    H, T, eta, P, q = bound_model(model, expanded=not (cells or local or circle or integrator))
     status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
     if "infinite" in claim and not infinite:
         raise Malformed("claim.infinite: false (a finite claim has no such field)")
+    if integrator:
+        return bound_integrator(H, status, evidence)
+    if not infinite and peval(H.den, Fraction(1)) == 0:
+        return False, ("b* finite fails: H has an uncancelled pole at z = 1 (an integrator), where b* = +inf whatever "
+                       "the residue's sign (docs/commands.md)")
     if local:
         if status != "exact":
             raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
@@ -897,6 +905,25 @@ def check_bound(c):
     if why:
         return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
     return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_integrator(H, status, evidence):
+    """b* = +inf by H's simple uncancelled pole at z = 1 (H in lowest terms: N(1) != 0), whatever the sign of
+    its residue r = N(1)/D'(1). The definition `bound` states (docs/commands.md), this checker's reading of it:
+    near w = 0, 1 - z ~ -j wT and H ~ r/(j wT), so T H/(1 - z) ~ T r/(wT)^2 -> +inf for r > 0; for r < 0 (45)
+    alone is finite, but (45) is sufficient only for H stable, and with a passive spring operator k_o/s the
+    low-frequency loop m s^3 + b s^2 + k_o s + r/T has a negative constant term, so a root s > 0, for every b."""
+    if status != "exact":
+        raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
+    if evidence.get("integrator") is not True:
+        raise Malformed("evidence.integrator: must be true (H's uncancelled pole at z = 1)")
+    one = Fraction(1)
+    if peval(H.den, one) != 0:
+        return False, "b* = +inf not shown: z = 1 is not a pole of H"
+    d1 = peval(pderiv(H.den), one)
+    if d1 == 0:
+        return False, "b* = +inf not shown: the pole of H at z = 1 is not simple"
+    return True, "b* = +inf: H's simple pole at z = 1 (an integrator, r = %s)" % short(peval(H.num, one) / d1)
 
 
 def bound_infinite_at_minus_one(H, P, q, evidence):
@@ -1463,7 +1490,10 @@ def check_bound_max(c):
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     cells = "witness_theta" in evidence  # the long-delay form (bound_max_cells)
-    if not cells:
+    integrator = "integrator" in evidence  # K_max = 0 by H's pole at z = 1 (bound_max_integrator)
+    if integrator:
+        only(evidence, ("integrator",), "evidence")
+    elif not cells:
         only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
     K = parameter_name(model)
     sets = model.get("set", {})
@@ -1471,7 +1501,7 @@ def check_bound_max(c):
     m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
     m0.pop("name")
     m0.pop("damping", None)
-    _, T, eta, P, q = bound_model(m0, expanded=not cells)
+    _, T, eta, P, q = bound_model(m0, expanded=not (cells or integrator))
     b = exact(model, "damping", "model")
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
@@ -1484,6 +1514,21 @@ def check_bound_max(c):
         return False, refuted
     if not infinite and lo < 0:
         return False, "claim: lo < 0 (K_max >= 0 by its definition)"
+    one = Fraction(1)
+    pole0, pole1 = peval(H0.den, one) == 0, peval(H1.den, one) == 0
+    if pole0 or pole1:  # b*(0) = +inf, or b*(K) = +inf for every K > 0 (H0 + K H1 keeps H1's pole): K_max = 0
+        why = ("H(%s = 0) has a pole at z = 1 (an integrator): b*(0) = +inf" % K) if pole0 else \
+            ("the part of H in %s has a pole at z = 1 that H(%s = 0) lacks (an integrator): b* = +inf for every %s > 0" % (K, K, K))
+        if infinite or lo > 0:
+            return False, "%s_max = 0, not the claim: %s (docs/commands.md)" % (K, why)
+        if integrator:
+            if evidence.get("integrator") is not True:
+                raise Malformed("evidence.integrator: must be true (a pole of H at z = 1)")
+            if peval(pderiv((H0 if pole0 else H1).den), one) == 0:
+                return False, "%s_max = 0 not shown: the pole at z = 1 is not simple" % K
+            return True, "%s_max = 0: %s" % (K, why)
+    elif integrator:
+        return False, "evidence.integrator: neither H0 nor H1 has a pole at z = 1"
     if cells:
         return bound_max_cells(H0, H1, T, eta, Fraction(P, q), b, K, (status, lo, hi, infinite), evidence, D)
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)

@@ -413,7 +413,8 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   const bool at_minus_one = b.infinite && den(nu) != 1 && p.H.den()(rational(-1)) == 0;
   // b* = +inf [certified]: a simple pole on the circle inside the band, shown where it is (circle_pole.cpp)
   const bool on_circle = b.infinite && b.status == Status::certified;
-  if (!long_delay && !at_minus_one && !on_circle) check_certificate_size(p.H, p);
+  const bool integrator = b.infinite && p.H.den()(rational(1)) == 0;  // H's pole at z = 1: the form below, nothing expanded
+  if (!long_delay && !at_minus_one && !on_circle && !integrator) check_certificate_size(p.H, p);
   if (!b.infinite && b.status != Status::exact && b.status != Status::certified)
     throw InputError("--certificate: b* is numeric here (--method fast or grid); a certificate needs --method certified");
   nlohmann::json j = certificate_header("bound");
@@ -426,6 +427,14 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   nlohmann::json claim;
   claim["quantity"] = p.frac_delay ? "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n e^{-j w t_d}/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))"
                                    : "b* = sup_{0 <= w <= pi/T} Re{T H(z) z^-n/(1 - z)} + eta, z = e^{jwT} (paper 001, (45)/(54))";
+  if (integrator) {  // +inf whatever the residue's sign (check/bound_check.cpp, check_integrator)
+    claim["status"] = "exact";
+    claim["infinite"] = true;
+    j["claim"] = claim;
+    j["evidence"] = {{"integrator", true}};
+    verify_before_writing(j);
+    return j;
+  }
   if (at_minus_one) {  // the sign at z = -1 may be -inf while another pole gives +inf: then the forms below
     nlohmann::json local = j;
     local["claim"] = claim;
@@ -490,14 +499,18 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   if (m.status != Status::exact && m.status != Status::certified)
     throw InputError("--certificate: sup " + K + " is not certified here: no certificate");
   if (m.outcome == Outcome::undecided) throw InputError("--certificate: sup " + K + " is undecided: no claim to certify");
+  // K_max = 0 by H's uncancelled pole at z = 1 (an integrator, in H0 or in the part in K; check/bound_max_check.cpp):
+  // b* = +inf at K = 0 or at every K > 0, nothing expanded
+  const bool integrator = m.outcome == Outcome::fails && (g.base.H.den()(rational(1)) == 0 || g.H1.den()(rational(1)) == 0);
   // beyond the expanded form's size: the cells' form (bound_max_cells_evidence)
   const integer size = std::max(certificate_size(g.base.H, g.base), certificate_size(g.H1, g.base));
-  const bool long_delay = size > certificate_max_size ||
-                          (!m.infinite && m.outcome != Outcome::fails && cells_form(size, m.status, pole_on_circle(g.base.H, g.base) || pole_on_circle(g.H1, g.base)));
+  const bool long_delay = !integrator && (size > certificate_max_size ||
+                                          (!m.infinite && m.outcome != Outcome::fails &&
+                                           cells_form(size, m.status, pole_on_circle(g.base.H, g.base) || pole_on_circle(g.H1, g.base))));
   if (long_delay && m.infinite)
     throw InputError("--certificate: sup " + K + " = +inf beyond the expanded form's size has no cells' form: no certificate");
   if (long_delay && m.outcome == Outcome::fails && m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
-  if (!long_delay) {
+  if (!long_delay && !integrator) {
     check_certificate_size(g.base.H, g.base);
     check_certificate_size(g.H1, g.base);
   }
@@ -516,6 +529,14 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
                       "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
   claim["status"] = to_string(m.status);
+  if (integrator) {
+    claim["status"] = "exact";
+    claim["value"] = "0";
+    j["claim"] = claim;
+    j["evidence"] = {{"integrator", true}};
+    verify_before_writing(j);
+    return j;
+  }
   if (long_delay) {
     if (m.outcome == Outcome::fails) {
       claim["status"] = "exact";

@@ -182,6 +182,26 @@ Verdict check_infinite_on_circle(const nlohmann::json& evidence, const TransferF
                     (sign > 0 ? "> 0" : "< 0") + ": +inf as theta -> theta0 from " + (sign > 0 ? "above" : "below")};
 }
 
+// An uncancelled pole of H at z = 1 (an integrator; H is read in lowest terms, so N(1) != 0): `bound`
+// defines b* = +inf there whatever the residue's sign (passivity/certified.cpp, integrator_pole, and
+// docs/commands.md: for rho > 0 the objective -> +inf at w = 0; for rho < 0 (45) alone is finite but its
+// sufficiency needs H stable, and a passive spring operator k_o/s makes the low-frequency loop
+// m s^3 + b s^2 + k_o s + rho/T, unstable for every b). Before stop 88 both checkers read (45) alone and
+// verified a finite b* (and K_max = +inf) that `bound` says is +inf.
+bool has_integrator(const TransferFunction& H) { return H.den()(rational(1)) == 0; }
+
+// b* = +inf (claim.infinite, status exact) by evidence.integrator = true: H's simple pole at z = 1.
+Verdict check_integrator(const nlohmann::json& evidence, const TransferFunction& H, const std::string& status) {
+  if (status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
+  if (!evidence.at("integrator").is_boolean() || !evidence.at("integrator").get<bool>())
+    throw InputError("evidence.integrator: must be true (H's uncancelled pole at z = 1)");
+  if (!has_integrator(H)) return {false, "b* = +inf not shown: z = 1 is not a pole of H (D(1) != 0)"};
+  const rational dD = H.den().derivative()(rational(1));
+  if (dD == 0) return {false, "b* = +inf not shown: the pole of H at z = 1 is not simple (`bound` refuses a repeated pole on the circle)"};
+  return {true, "b* = +inf: H has a simple uncancelled pole at z = 1 (an integrator, residue N(1)/D'(1) = " +
+                    detail::shortened(H.num()(rational(1)) / dD) + "): no finite b makes the loop passive (docs/commands.md)"};
+}
+
 // b* in [lo, hi] by cells (check/bound_cells.hpp): evidence.cells the cells' right ends, evidence.witness_theta.
 Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm, const rational& lo,
                     const rational& hi) {
@@ -210,7 +230,9 @@ Verdict check_bound(const nlohmann::json& cert) {
   const bool cells = !infinite && evidence.contains("cells");  // the long-delay form (check/bound_cells.hpp)
   const bool at_minus_one = infinite && evidence.contains("pole_at_z");  // the local form: nothing expanded
   const bool on_circle = infinite && evidence.contains("pole_on_circle");  // the circle form: nothing expanded
+  const bool integrator = infinite && evidence.contains("integrator");  // H's pole at z = 1: nothing expanded
   if (at_minus_one) detail::only_fields(evidence, {"pole_at_z"}, "evidence");
+  else if (integrator) detail::only_fields(evidence, {"integrator"}, "evidence");
   else if (on_circle) detail::only_fields(evidence, {"pole_on_circle"}, "evidence");
   else if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
   else if (cells) detail::only_fields(evidence, {"cells", "witness_theta"}, "evidence");
@@ -219,7 +241,7 @@ Verdict check_bound(const nlohmann::json& cert) {
   const rational& eta = dm.eta;
   const TransferFunction H = detail::model_tf(model, dm.T, HiddenPoles::allow_marginal);  // as `bound` reads it
   // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
-  if (!cells && !at_minus_one && !on_circle) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
+  if (!cells && !at_minus_one && !on_circle && !integrator) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
   const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
@@ -229,6 +251,10 @@ Verdict check_bound(const nlohmann::json& cert) {
     if (range.status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
     return check_infinite_at_minus_one(evidence, H, dm);
   }
+  if (range.infinite && integrator) return check_integrator(evidence, H, range.status);
+  if (!range.infinite && has_integrator(H))
+    return {false, "b* finite fails: H has an uncancelled pole at z = 1 (an integrator), where b* = +inf whatever the residue's sign "
+                   "(docs/commands.md)"};
   if (range.infinite && on_circle) {
     if (range.status != "certified") throw InputError("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in balls)");
     return check_infinite_on_circle(evidence, H, dm);

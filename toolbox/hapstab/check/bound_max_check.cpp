@@ -52,6 +52,32 @@ Verdict cells_form(const nlohmann::json& evidence, const detail::Affine& h, cons
                     std::to_string(h.D) + ")"};
 }
 
+// H's uncancelled pole at z = 1 (an integrator: b* = +inf whatever the residue's sign, bound_check.cpp):
+// in H0, b*(0) = +inf; in H1 and not H0, b*(K) = +inf for every K > 0 (H0 + K H1 keeps the pole). Either
+// way K_max = 0: a claim of more is refuted, and K_max = 0 is verified by evidence.integrator = true
+// alone (the pole simple, as `bound` requires). nullopt when neither part has a pole at z = 1.
+std::optional<Verdict> integrator_form(const nlohmann::json& evidence, const detail::Affine& h, const std::string& K,
+                                       const detail::ClaimRange& range) {
+  const rational one(1);
+  const bool pole0 = h.H0.den()(one) == 0, pole1 = h.H1.den()(one) == 0;
+  if (!pole0 && !pole1) {
+    if (evidence.contains("integrator")) return Verdict{false, "evidence.integrator: neither H0 nor H1 has a pole at z = 1"};
+    return std::nullopt;
+  }
+  const RF& part = pole0 ? h.H0 : h.H1;
+  const std::string why = pole0 ? "H(" + K + " = 0) has an uncancelled pole at z = 1 (an integrator): b*(0) = +inf"
+                                : "the part of H in " + K + " has a pole at z = 1 that H(" + K + " = 0) lacks (an integrator): b*(" + K +
+                                      ") = +inf for every " + K + " > 0";
+  if (range.infinite || range.lo > 0) return Verdict{false, K + "_max = 0, not the claim: " + why + " (docs/commands.md)"};
+  if (!evidence.contains("integrator")) return std::nullopt;  // K_max = 0 by the witness form
+  detail::only_fields(evidence, {"integrator"}, "evidence");
+  if (!evidence.at("integrator").is_boolean() || !evidence.at("integrator").get<bool>())
+    throw InputError("evidence.integrator: must be true (a pole of H at z = 1)");
+  if (part.den().derivative()(one) == 0)
+    return Verdict{false, K + "_max = 0 not shown: the pole at z = 1 is not simple (`bound` refuses a repeated pole on the circle)"};
+  return Verdict{true, K + "_max = 0: " + why + " (docs/commands.md; H affine in " + K + ", degree bound " + std::to_string(h.D) + ")"};
+}
+
 }  // namespace
 
 Verdict check_bound_max(const nlohmann::json& cert) {
@@ -61,7 +87,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   detail::only_fields(model, {"H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"}, "model");
   detail::only_fields(claim, {"quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
   const bool cells = evidence.contains("witness_theta");  // the long-delay form (cells_form above)
-  if (!cells) detail::only_fields(evidence, {"witness_c", "b0_hi", "domain_c_lo"}, "evidence");
+  if (!cells && !evidence.contains("integrator")) detail::only_fields(evidence, {"witness_c", "b0_hi", "domain_c_lo"}, "evidence");
 
   // ---- the model as written
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
@@ -77,7 +103,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   po.hidden_poles = HiddenPoles::allow_marginal;  // as `bound --max` reads it
   if (po.parameters.count(K)) throw InputError("model.set: gives the parameter model.name = " + K + " a value");
   const detail::Affine h = detail::prove_affine(text, po, K);
-  if (!cells)
+  if (!cells && !evidence.contains("integrator"))
     detail::check_size(dm, std::max(h.H0.num().degree(), h.H1.num().degree()),
                        std::max(h.H0.den().degree(), h.H1.den().degree()), max_size);
   auto at = [&](const rational& k) { return detail::bound_objective(h.H0 + RF(k) * h.H1, dm.T, dm.P, dm.q); };
@@ -89,6 +115,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   const bool infinite = range.infinite;
   const rational &lo = range.lo, &hi = range.hi;
   if (!infinite && lo < 0) return {false, "claim: lo = " + lo.str() + " < 0 (K_max >= 0 by its definition)"};
+  if (auto v = integrator_form(evidence, h, K, range)) return *v;
   if (cells) return cells_form(evidence, h, dm, b, K, range);
   const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
   // checked whenever given, also where no upper bound reads it (K_max = 0): evidence is never ignored
