@@ -1324,10 +1324,11 @@ def cells_below_fail(kernel, ends, hi):
     _, cell_below, q = kernel
     if (iv.pi < q(ends[-1])) is not True:
         return "the cells end at or below pi (they must cover [0, pi])"
-    a = Fraction(0)
-    for i, b in enumerate(ends):
+    for i, (a, b) in enumerate(zip([Fraction(0)] + ends, ends)):  # the order first: it costs nothing
         if not a < b:
             return "cell %d's end %s is not above the one before" % (i + 1, short(b))
+    a = Fraction(0)
+    for i, b in enumerate(ends):
         if not cell_below(a, b, hi):
             return "f < %.12g not shown on cell %d [%.12g, %.12g]" % (float(hi), i + 1, float(a), float(b))
         a = b
@@ -1351,12 +1352,12 @@ def bound_cells(H, T, eta, nu, lo, hi, evidence):
     kernel = cells_kernel(H, T, eta, nu)
     ends = read_cells(evidence, "cells")
     theta0 = exact(evidence, "witness_theta", "evidence")
+    why = witness_fail(kernel, theta0, lo)  # one value: before the cells' thousands
+    if why:
+        return False, "b* >= %.12g not shown: %s" % (float(lo), why)
     why = cells_below_fail(kernel, ends, hi)
     if why:
         return False, "b* <= %.12g not shown: %s" % (float(hi), why)
-    why = witness_fail(kernel, theta0, lo)
-    if why:
-        return False, "b* >= %.12g not shown: %s" % (float(lo), why)
     return True, "b* in [%.12g, %.12g] (%d cells, the delay never expanded)" % (float(lo), float(hi), len(ends))
 
 
