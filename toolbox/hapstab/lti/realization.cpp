@@ -309,6 +309,14 @@ HiddenModes hidden_modes(const StateSpace<Q>& sys) {
   return h;
 }
 
+bool hidden_marginal_semisimple(const StateSpace<Q>& sys) {
+  sys.validate("hidden_marginal_semisimple");
+  const Q at = sys.is_discrete() ? Q(1) : Q(0);
+  // the uncontrollable quotient (the trailing block of the controllability split) and the unobservable
+  // restriction (the same block of the dual's split, transposed: semisimplicity does not see a transpose)
+  return semisimple_eigenvalue(split(sys).uncontrollable_A, at) && semisimple_eigenvalue(split(dual(sys)).uncontrollable_A, at);
+}
+
 bool semisimple_eigenvalue(const MQ& A, const Q& lambda) {
   Polynomial<Q> p = charpoly(A);
   const Polynomial<Q> lin(std::vector<Q>{-lambda, Q(1)});

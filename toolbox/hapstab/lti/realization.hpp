@@ -91,5 +91,14 @@ HiddenModes hidden_modes(const StateSpace<rational>& sys);
 /// lambda is not an eigenvalue of A, or it is semisimple: its algebraic multiplicity (in
 /// det(xI - A)) equals its geometric one (the nullity of A - lambda I), exactly.
 bool semisimple_eigenvalue(const Mat<rational>& A, const rational& lambda);
+/// Whether z = 1 (s = 0 for a continuous sys) is semisimple in the two parts of A that no loop
+/// moves: the uncontrollable quotient and the restriction to the unobservable subspace (each a
+/// diagonal block of a Kalman form that a feedback leaves as it is, so a Jordan block there is one
+/// of every loop). A chain through the controllable and observable part -- a hidden constant into a
+/// PI wall's integrator, gravity on a device with its own position -- is the loop's to break: the
+/// reduced loop decides that part, and a hidden constant that reaches a hidden sum through the loop
+/// is sim::hidden_modes' chain test. (Before stop 88 the whole A was tested, and such blocks were
+/// "NOT stable [exact]" in loops whose state settles.)
+bool hidden_marginal_semisimple(const StateSpace<rational>& sys);
 
 }  // namespace hapstab

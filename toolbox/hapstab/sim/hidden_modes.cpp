@@ -125,7 +125,7 @@ std::string HiddenMode::text() const {
   o.precision(6);
   o << block << ": " << kind << (pair ? " modes " : " mode ") << where.text(discrete ? "z" : "s", pair);
   if (settles)
-    o << " (semisimple in the block's A: it neither grows nor decays, a conserved quantity that settles as the loop "
+    o << " (semisimple in the block's hidden parts: it neither grows nor decays, a conserved quantity that settles as the loop "
          "decays)";
   else if (discrete)
     o << " (|z| in [" << decimal_outward(rational(where.abs_lo), 6, -1) << ", " << decimal_outward(rational(where.abs_hi), 6, +1)
@@ -179,7 +179,7 @@ LoopHiddenModes hidden_modes(const LoopSpec& spec, const HiddenModes* environmen
     const HiddenModes& h = known ? *known : own.emplace(hapstab::hidden_modes(s));
     const rational at = s.is_discrete() ? 1 : 0;  // z = 1, s = 0
     const bool marginal = (h.uncontrollable.vanishes_at(at) || h.unobservable.vanishes_at(at)) &&
-                          h.marginal_semisimple.value_or(semisimple_eigenvalue(s.A, at));
+                          (h.marginal_semisimple ? *h.marginal_semisimple : hidden_marginal_semisimple(s));
     for (auto& m : block_hidden_modes(h, s.is_discrete(), name, marginal)) r.modes.push_back(std::move(m));
     if (minimal && h.any()) *minimal = h.minimal;
   };

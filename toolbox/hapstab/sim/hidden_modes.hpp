@@ -11,7 +11,11 @@
 // whatever a reduced model of the loop says -- and the sampled outputs may stay at rest (an
 // uncontrollable mode with zero initial state). A hidden mode inside the stability region is
 // harmless to stability and is reported once. So is a hidden mode exactly at z = 1 (s = 0) that is
-// semisimple in the block's A (a device's own position state behind a velocity output): like the
+// semisimple in the block's hidden parts -- its uncontrollable quotient and its unobservable
+// restriction, which no loop moves (lti::hidden_marginal_semisimple; a Jordan chain through the
+// visible part, a hidden constant into a PI wall's integrator, is the loop's to break: the whole A
+// was tested before stop 88, and such loops were "NOT stable [exact]") -- (a device's own position
+// state behind a velocity output): like the
 // conserved quantities of sim/closed_loop.hpp it neither grows nor decays, and it is named so --
 // the same physics written as m, b or as ss gets one verdict. Each mode is named by its block, its kind and a
 // certified enclosure of where it is (poly/roots.hpp). lti::hidden_modes does the exact Kalman
@@ -39,7 +43,7 @@ struct HiddenMode {
   RootEnclosure where;  ///< z (discrete) or s (continuous), certified; the one with Im > 0 of a pair
   bool pair = false;    ///< a complex pair: `where` and its conjugate
   bool stable = true;   ///< |z| < 1 or Re s < 0 (decided exactly for the block's hidden factor), or `settles`
-  /// Exactly at z = 1 (s = 0) and semisimple in the block's A: it neither grows nor decays; driven
+  /// Exactly at z = 1 (s = 0) and semisimple in the block's hidden parts: it neither grows nor decays; driven
   /// by the loop's decaying signals (or by none) it settles to a constant. Counted as the plant's
   /// conserved quantities are (sim/closed_loop.hpp), wherever it is written, and named as such.
   bool settles = false;

@@ -354,8 +354,9 @@ HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rat
   const HiddenModes f = hidden_modes(*s.fixed.environment);
   h.uncontrollable = f.uncontrollable;
   h.unobservable = f.unobservable;
-  // z = 1 semisimple in the whole A iff in each part of the direct sum (multiplicities add)
-  bool semisimple = semisimple_eigenvalue(s.fixed.environment->A, rational(1));
+  // z = 1 semisimple in the hidden parts (lti/realization.hpp, hidden_marginal_semisimple) iff in each part
+  // of the direct sum (multiplicities add; the Kalman subspaces split with it)
+  bool semisimple = hidden_marginal_semisimple(*s.fixed.environment);
   std::vector<std::optional<HiddenModes>> by_class(s.classes.size());
   std::vector<const StateSpace<rational>*> minimal(s.classes.size(), nullptr);
   for (size_t k = 0; k < s.standard.size(); ++k) {
@@ -364,7 +365,7 @@ HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rat
     const int copies = static_cast<int>(s.classes[a].size()) - 1;
     h.uncontrollable.multiply(by_class[a]->uncontrollable, copies);
     h.unobservable.multiply(by_class[a]->unobservable, copies);
-    semisimple = semisimple && semisimple_eigenvalue(s.standard[k].environment->A, rational(1));
+    semisimple = semisimple && hidden_marginal_semisimple(*s.standard[k].environment);
     minimal[a] = &by_class[a]->minimal;
   }
   if (!s.isolated.empty()) {  // no input reaches them: uncontrollable, all of them
@@ -373,7 +374,7 @@ HiddenModes environment_hidden_modes(const LoopSymmetry& s, const StateSpace<rat
       for (size_t k = 0; k < s.isolated.size(); ++k)
         Ai(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = E.A(s.isolated[i], s.isolated[k]);
     h.uncontrollable.multiply(charpoly(Ai).monic());
-    semisimple = semisimple && semisimple_eigenvalue(Ai, rational(1));
+    semisimple = semisimple && semisimple_eigenvalue(Ai, rational(1));  // all uncontrollable: the quotient is Ai
   }
   h.marginal_semisimple = semisimple;
   h.minimal = lift_realisation(s.classes, f.minimal, minimal, static_cast<int>(E.inputs()));
