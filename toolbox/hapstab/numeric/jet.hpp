@@ -88,7 +88,10 @@ void sin_cos(const Jet<S>& u, const S& s, const S& c, Jet<S>& sj, Jet<S>& cj) {
 /// p(x) (ascending coefficients, at least one) for a jet x, by Horner. Over a wide ball (radius
 /// above 2^-60 of its centre's size) p is first shifted to the centre m, p(x) = sum b_k (x - m)^k,
 /// and evaluated in x - m: the centred form, whose enclosure follows p's variation over the ball
-/// instead of the size of its coefficients (near a narrow resonance |D|^2 is 1e-7 of them).
+/// instead of the size of its coefficients (near a narrow resonance |D|^2 is 1e-7 of them). Over a
+/// narrower ball the plain form is tried first and the centred one taken when it is not finite or
+/// not narrow (since stop 88: a pole of high order near the circle, `bound --H "1/(z+1/2)^20"
+/// --delay 190`, left B's enclosure holding 0 and the long-delay path without an upper bound).
 template <class S>
 Jet<S> horner(const std::vector<S>& p, const Jet<S>& x) {
   auto plain = [](const std::vector<S>& q, const Jet<S>& y) {
@@ -100,12 +103,23 @@ Jet<S> horner(const std::vector<S>& p, const Jet<S>& x) {
     return r;
   };
   if constexpr (!std::is_same_v<S, double>) {
-    if (p.size() > 2 && x.v.radius() > std::ldexp(1.0, -60) * (1 + x.v.abs_upper())) {
+    auto centred = [&] {
       const S m(x.v.mid());  // a point (Ball: exact midpoint; Dint: a double inside)
       std::vector<S> b = p;
       for (size_t k = 0; k < b.size(); ++k)
         for (size_t i = b.size() - 1; i > k; --i) b[i - 1] = b[i - 1] + m * b[i];
       return plain(b, Jet<S>{x.v - m, x.d, x.dd});
+    };
+    if (p.size() > 2 && x.v.radius() > std::ldexp(1.0, -60) * (1 + x.v.abs_upper())) return centred();
+    // A narrower ball: plain Horner's enclosure grows like x's radius times sum |p_i| |x|^i, not
+    // like p's variation, and where p(x) cancels (|D|^2 near a pole of H close to the circle:
+    // (5/4 + c)^20 is 1e-12 at c = -1 of coefficients ~1e7) a radius of 2^-62 already holds 0, at
+    // any precision. The centred form then, when the plain enclosure is not finite or not narrow.
+    if (p.size() > 2 && x.v.radius() > 0) {
+      const Jet<S> r = plain(p, x);
+      if (r.v.finite() && r.d.finite() && r.dd.finite() && !(r.v.radius() > std::ldexp(1.0, -20) * r.v.abs_upper()))
+        return r;
+      return centred();
     }
   }
   return plain(p, x);

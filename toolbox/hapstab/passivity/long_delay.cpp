@@ -418,6 +418,7 @@ class Maximiser {
     if (less(best_hi_, u)) best_hi_ = u, best_at_ = at, best_where_ = where;
   }
   void add_candidate(const Ball& v, const Ball& at, Where where = Where::interior) {  // a piece's maximum lies in v
+    if (!v.finite()) ++unresolved_;  // +inf into H: a piece not resolved, whatever path put it there
     raise(lower(v));
     const Ball u = upper(v);
     if (less(H_, u)) H_ = u;
@@ -721,6 +722,37 @@ Bound certified_long_delay(const BoundProblem& p, int digits, bool double_prunin
   // 128 bits (two limbs, no allocation in Arb) while they hold the digits asked plus those the
   // kernels' size ~nu costs; a retry doubles them when the enclosure came out wider
   long bits = std::max<long>(128, static_cast<long>(3.33 * (digits + lognu)) + 12);
+  {
+    // and those that A/B, E/B cost where |D|^2 = B(c) is smallest on [-1, 1] (its critical points
+    // and the ends: (z + 1/3)^64 cancels 2^128 at c = -1) and at the double scan's best points:
+    // doubled until f there holds the digits asked, before the search rather than after it
+    const double pi = 3.14159265358979323846, nudge = pi / static_cast<double>(8 * boxes);
+    std::vector<rational> cs{rational(-1), rational(1)};
+    if (df->B.degree() >= 2)
+      for (const auto& r : isolate_real_roots(df->B.derivative(), rational(-1), rational(1))) cs.push_back((r.lo + r.hi) / 2);
+    rational cmin = cs.front();
+    for (const rational& c : cs)
+      if (abs(df->B(c)) < abs(df->B(cmin))) cmin = c;
+    std::vector<double> probes{std::clamp(std::acos(std::clamp(to_real<double>(cmin), -1.0, 1.0)), nudge, pi - nudge)};
+    for (const Peak& pk : double_peaks(*df, boxes, 8))
+      if (pk.theta > 0 && pk.theta < pi) probes.push_back(pk.theta);
+    // (relative to the largest |f| probed, so that a probe where f is near 0 asks nothing of it; at most 4096
+    // bits: beyond, the search's own retries decide)
+    for (; bits < 4096; bits *= 2) {
+      flint::BallPrecision scope(bits);
+      const Form<Ball> F(*df);
+      bool finite = true;
+      Ball scale(0L), widest(0L);
+      for (const double th : probes) {
+        const Ball v = objective_jet(F, Ball(th)).v;
+        finite = finite && v.finite();
+        if (!finite) break;
+        if (less(scale, upper(flint::abs(v)))) scale = upper(flint::abs(v));
+        if (less(widest, Ball(v.radius()))) widest = Ball(v.radius());
+      }
+      if (finite && !less(scale * Ball(pow10(-(digits + 3))), widest)) break;
+    }
+  }
   long double_evals = 0, arb_evals = 0;  // over the attempts
   std::vector<char> settled;          // the first boxes the last attempt pruned in double intervals,
   std::optional<rational> proven_lo;  // below this proven value of f: a retry skips them
