@@ -11,15 +11,14 @@
 // whatever a reduced model of the loop says -- and the sampled outputs may stay at rest (an
 // uncontrollable mode with zero initial state). A hidden mode inside the stability region is
 // harmless to stability and is reported once. So is a hidden mode exactly at z = 1 (s = 0) that is
-// semisimple in the block's hidden parts -- its uncontrollable quotient and its unobservable
-// restriction, which no loop moves (lti::hidden_marginal_semisimple; a Jordan chain through the
-// visible part, a hidden constant into a PI wall's integrator, is the loop's to break: the whole A
-// was tested before stop 88, and such loops were "NOT stable [exact]") -- (a device's own position
-// state behind a velocity output): like the
-// conserved quantities of sim/closed_loop.hpp it neither grows nor decays, and it is named so --
+// semisimple in the block's hidden parts (a device's own position state behind a velocity output):
+// like the conserved quantities of sim/closed_loop.hpp it neither grows nor decays, and it is named so --
 // the same physics written as m, b or as ss gets one verdict. Each mode is named by its block, its kind and a
 // certified enclosure of where it is (poly/roots.hpp). lti::hidden_modes does the exact Kalman
-// decompositions.
+// decompositions. The hidden parts are the uncontrollable quotient and the unobservable restriction,
+// which no loop moves (lti::hidden_marginal_semisimple); a Jordan chain through the block's visible
+// part -- a hidden constant into a PI wall's integrator -- is the loop's to break. (The whole A was
+// tested before stop 88, and such loops, whose state settles, were "NOT stable [exact]".)
 //
 // Used by every command that decides the loop as written (`multidof analyze|design`,
 // `stability --scene`, `simulate`), so that they agree.
