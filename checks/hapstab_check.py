@@ -1491,7 +1491,7 @@ def check_bound_max(c):
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     cells = "witness_theta" in evidence  # the long-delay form (bound_max_cells)
-    integrator = "integrator" in evidence  # K_max = 0 by H's pole at z = 1 (bound_max_integrator)
+    integrator = "integrator" in evidence  # K_max = 0 by H's pole at z = 1 (the pole0/pole1 test below)
     if integrator:
         only(evidence, ("integrator",), "evidence")
     elif not cells:
