@@ -1368,7 +1368,8 @@ def bound_max_cells(H0, H1, T, eta, nu, b, K, claim_range_, evidence, D):
     status, lo, hi, infinite = claim_range_
     if infinite:
         raise Malformed("claim.infinite: K_max = +inf has no cells' form (evidence.witness_theta)")
-    only(evidence, ("b0_hi", "cells_at_0", "cells_at_lo", "witness_theta") if lo > 0 else ("witness_theta",), "evidence")
+    upper = "jump_at_z" if "jump_at_z" in evidence else "witness_theta"  # b* = +inf above hi (bound_max_jump)
+    only(evidence, ("b0_hi", "cells_at_0", "cells_at_lo", upper) if lo > 0 else (upper,), "evidence")
 
     def at(k):
         return cells_kernel(H0 + RF([k]) * H1, T, eta, nu)
@@ -1382,7 +1383,10 @@ def bound_max_cells(H0, H1, T, eta, nu, b, K, claim_range_, evidence, D):
         why = cells_below_fail(at(lo), read_cells(evidence, "cells_at_lo"), b)
         if why:
             return False, "%s_max >= %.12g fails: b*(%s = lo) < b not shown: %s" % (K, float(lo), K, why)
-    why = witness_fail(at(hi), exact(evidence, "witness_theta", "evidence"), b)
+    if upper == "jump_at_z":
+        why = bound_max_jump(H0, H1, nu.numerator, nu.denominator, hi, evidence)
+    else:
+        why = witness_fail(at(hi), exact(evidence, "witness_theta", "evidence"), b)
     if why:
         return False, "%s_max <= %.12g not shown: b*(%s = hi) > b: %s" % (K, float(hi), K, why)
     return True, "%s_max %s (cells, the delay never expanded; affine in %s, degree bound %d)" % (
@@ -1483,6 +1487,34 @@ def parameter_name(model):
     return K
 
 
+def bound_max_jump(H0, H1, P, q, hi, evidence):
+    """b*(K) = +inf for every K > hi (evidence.jump_at_z = "-1"), or why not. Near z = -1, H0 + K H1 =
+    G(K) + r(K)/(z + 1) with G(K) regular there and r(K) = r0 + K r1, ri = Ni(-1)/Di'(-1) (0 where Hi has
+    no pole at -1; a repeated pole is not taken). By bound_infinite_at_minus_one's derivation the objective
+    tends to +inf as wT -> pi iff r(K) sin(nu pi) < 0, nu = P/q not whole. With s = (-1)^(P // q), the sign
+    of sin(nu pi): r1 s < 0 and r(hi) s <= 0 give r(K) s < 0 for every K > hi."""
+    if evidence.get("jump_at_z") != "-1":
+        raise Malformed("evidence.jump_at_z: only \"-1\" is taken")
+    if q == 1:
+        return "the delay %d is a whole number of samples (sin(nu pi) = 0): no jump at wT = pi" % P
+    m1 = Fraction(-1)
+    r = []
+    for name, part in (("H0", H0), ("H1", H1)):
+        if peval(part.den, m1) != 0:
+            r.append(Fraction(0))
+            continue
+        d1 = peval(pderiv(part.den), m1)
+        if d1 == 0:
+            return "%s has a repeated pole at z = -1" % name
+        r.append(peval(part.num, m1) / d1)
+    s = 1 if (P // q) % 2 == 0 else -1
+    if r[1] * s >= 0:
+        return "r1 sin(nu pi) < 0 fails (r1 = %s, nu = %d/%d)" % (short(r[1]), P, q)
+    if (r[0] + hi * r[1]) * s > 0:
+        return "r(hi) sin(nu pi) <= 0 fails (r(hi) = %s): the objective tends to -inf just above hi" % short(r[0] + hi * r[1])
+    return None
+
+
 def check_bound_max(c):
     """K_max = sup{K0 >= 0 : b*(K) < b on [0, K0)} for H = H0 + K H1 (proven affine), b* convex in
     K (a sup of affine functions): K_max >= lo > 0 if b*(0) <= b0 < b and b*(lo) <= b; K_max <= hi if
@@ -1490,12 +1522,13 @@ def check_bound_max(c):
     model, claim, evidence = parts(c)
     only(model, ("H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"), "model")
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
-    cells = "witness_theta" in evidence  # the long-delay form (bound_max_cells)
+    cells = "witness_theta" in evidence or "cells_at_0" in evidence  # the long-delay form (bound_max_cells)
     integrator = "integrator" in evidence  # K_max = 0 by H's pole at z = 1 (the pole0/pole1 test below)
     if integrator:
         only(evidence, ("integrator",), "evidence")
     elif not cells:
-        only(evidence, ("witness_c", "b0_hi", "domain_c_lo"), "evidence")
+        jump = "jump_at_z" in evidence  # b* = +inf above hi (bound_max_jump), in place of witness_c
+        only(evidence, ("jump_at_z" if jump else "witness_c", "b0_hi", "domain_c_lo"), "evidence")
     K = parameter_name(model)
     sets = model.get("set", {})
     # the delay model and the parameters, read as for bound (H parsed at K = 0 there)
@@ -1513,6 +1546,8 @@ def check_bound_max(c):
     status, lo, hi, infinite, refuted = claim_range(claim, True)
     if refuted:
         return False, refuted
+    if infinite and "jump_at_z" in evidence:
+        raise Malformed("evidence.jump_at_z: K_max = +inf has no upper end")
     if not infinite and lo < 0:
         return False, "claim: lo < 0 (K_max >= 0 by its definition)"
     one = Fraction(1)
@@ -1556,8 +1591,12 @@ def check_bound_max(c):
         why = upper_bound(*objective(lo), b - eta, c_lo, q)
         if why:
             return False, "%s_max >= %.12g fails: b*(%s = lo) <= b not shown: %s" % (K, float(lo), K, why)
-    c1 = exact(evidence, "witness_c", "evidence")
-    why = lower_bound(*objective(hi), b - eta, c1, q)
+    if "jump_at_z" in evidence:
+        why = bound_max_jump(H0, H1, P, q, hi, evidence)
+        if why:
+            return False, "%s_max <= %.12g not shown: b*(%s) = +inf above hi: %s" % (K, float(hi), K, why)
+    else:
+        why = lower_bound(*objective(hi), b - eta, exact(evidence, "witness_c", "evidence"), q)
     if why:
         return False, "%s_max <= %.12g not shown: b*(%s = hi) >= b: %s" % (K, float(hi), K, why)
     return True, "%s_max %s (affine in %s, degree bound %d)" % (
@@ -5210,6 +5249,8 @@ def check_stability_max(c):
     status, lo, hi, infinite, refuted = claim_range(claim, True)
     if refuted:
         return False, refuted
+    if infinite and "jump_at_z" in evidence:
+        raise Malformed("evidence.jump_at_z: K_max = +inf has no upper end")
     if not infinite and lo < 0:
         return False, "claim: lo < 0 (K_max >= 0 by its definition)"
     zero = not infinite and hi == 0

@@ -227,6 +227,8 @@ py::dict bound_max_scalar(const std::string& expr, const std::map<std::string, s
   d["b_at_zero"] = bound_record(m.at_zero, o.digits);
   d["omega"] = omega_ends(m.omega);
   d["where"] = m.where;
+  d["jump"] = m.jump;  // b*(K_max) <= b and +inf above (passivity::MaxGain::jump)
+  d["b_at_sup"] = m.jump ? py::object(bound_record(*m.at_sup, o.digits)) : py::object(py::none());
   if (const auto& cf = r.closed_form) {
     py::dict c;
     c["name"] = cf->name;

@@ -424,6 +424,8 @@ def _bound_max(H: Any, T_text: str, delay: int, frac: Optional[str], eta_text: s
                                "closed_form")}
     extra["damping"] = d["damping"]
     extra["b_at_zero"] = Bound(d["b_at_zero"])
+    extra["jump"] = d["jump"]
+    extra["b_at_sup"] = None if d["b_at_sup"] is None else Bound(d["b_at_sup"])
     c = d["check"]
     extra["check"] = None if c is None else {"holds": c["holds"], "bound_at_lo": Bound(c["bound_at_lo"]),
                                              "bound_at_hi": Bound(c["bound_at_hi"])}

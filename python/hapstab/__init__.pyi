@@ -175,6 +175,8 @@ class MaxPassiveGain(Result):
     b_at_zero: Bound              # b*(0)
     omega: Optional[Tuple[float, float]]  # where b* = b at K_max (rad/s, outward)
     where: str
+    jump: bool                    # b*(K_max) <= b and b* = +inf above (H's pole at z = -1, fractional delay)
+    b_at_sup: Optional[Bound]     # b*(K_max) when jump
     closed_form: Optional[Dict[str, Any]]  # {name, equation, formula, value, tight, agrees}
     check: Optional[Dict[str, Any]]        # check=True: {holds, bound_at_lo: Bound, bound_at_hi: Bound}
     def __bool__(self) -> bool: ...

@@ -389,7 +389,8 @@ class Stability(Result):
 
 class MaxPassiveGain(Result):
     """The passivity boundary as a number (bound(H, max='K', damping=b)): sup{K0 : b > b*(K) for
-    0 <= K < K0}, with b*(K_max) = b; 0 (exact) when not passive at K = 0, inf when passive for
+    0 <= K < K0}, with b*(K_max) = b, or with jump: b*(K_max) <= b (b_at_sup) and b* = +inf above
+    (H's pole at z = -1 under a fractional delay); 0 (exact) when not passive at K = 0, inf when passive for
     every K >= 0. Certified (exact where K_max is rational). Besides the protocol: name, outcome
     ('holds' when K_max > 0), infinite, decimal (the digits both ends share), digits_certified,
     damping (exact str), b_at_zero (b*(0), a Bound), omega ((lo, hi) rad/s where b* = b at K_max,

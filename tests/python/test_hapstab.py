@@ -661,6 +661,11 @@ def test_bound_max_exact_where_rational_and_at_the_edges():
     assert inf.infinite and math.isinf(inf.value) and bool(inf)
     code, j = cli("bound", "--H", "B*(z-1)/(T*z) - K", "--T", "1/1000", "--set", "B=1/2", "--damping", "3/2", "--max", "K")
     assert j["max"] == "inf" and code == 0
+    # a jump of b* at the sup: H's residue at z = -1, 1 - K, changes sign at K = 1 under t_d = T/2, so
+    # b*(1) = T/2 < b and b* = +inf above (the command's "jump"); a smooth crossing has no jump
+    jm = hapstab.bound("(1-K)/(z+1)+1/2", T="1/1000", frac_delay="1/2000", max="K", damping=1)
+    assert jm.value == 1 and jm.status == "exact" and jm.jump and jm.b_at_sup.value == Fraction(1, 2000)
+    assert not m.jump and m.b_at_sup is None
 
 
 def test_bound_max_over_arrays_equals_scalar_calls():

@@ -311,8 +311,14 @@ def case_bound_max(rng):
     else:
         t0.append(IP.Rational([B, -B], [T, 0]))
         t0.append(IP.stable_term(rng, resonant=True))
-    fam1 = rng.choices(["stiffness", "damping", "tustin damping", "random"], weights=[35, 25, 15, 25])[0]
-    if fam1 == "stiffness":
+    fam1 = rng.choices(["stiffness", "damping", "tustin damping", "random", "tustin damping removed"], weights=[35, 25, 15, 25, 10])[0]
+    if fam1 == "tustin damping removed":
+        # H = Tustin wall B - K (its damping taken away): the residue at z = -1, -4(B - K)/T, changes sign
+        # at K = B, so with sin(pi nu) < 0 b* is finite below B and +inf above (a jump of b* at the sup)
+        fam0, t0 = "tustin", [IP.Rational([2 * B, -2 * B], [T, T])]
+        t1 = [IP.Rational([-2, 2], [T, T])]
+        knom = 1
+    elif fam1 == "stiffness":
         t1 = [IP.Rational([1], [1])]
         knom = K0
     elif fam1 == "damping":
@@ -325,7 +331,9 @@ def case_bound_max(rng):
         t1 = [IP.stable_term(rng)]
         knom = 1
     u = rng.random()
-    if u < 0.45:
+    if fam1 == "tustin damping removed" and u < 0.7:  # sin(pi nu) < 0: nu in (1, 2) or (3, 4)
+        tau, n = Q(1) + Q(rng.randint(1, 9), 10), rng.choice([0, 2])
+    elif u < 0.45:
         tau = rng.choice(IP.FRACS[:6]) if rng.random() < 0.6 else Q(rng.randint(1, 20), rng.randint(2, 7))
         if tau.denominator == 1:
             tau += Q(1, 2)
@@ -336,7 +344,7 @@ def case_bound_max(rng):
     H0, H1 = SumTF(t0), SumTF(t1)
     s = math.sin(math.pi * float(Q(n) + tau))
     tags = {"H0": fam0, "H1": fam1, "delay": "integer" if tau == 0 else ("sin(pi nu) > 0" if s > 0 else "sin(pi nu) < 0"),
-            "pole at z = -1": fam0 == "tustin" or fam1 == "tustin damping"}
+            "pole at z = -1": fam0 == "tustin" or fam1.startswith("tustin damping")}
     # the damping b: b*(0) plus a margin (the reference b*(0) decides; +inf: b = 1)
     ref0 = IP.bstar(H0, T, Q(n) + tau, eta, dps=30)
     if ref0["kind"] == "+inf":
@@ -491,6 +499,10 @@ def check_bound_max(c, exe, timeout):
     if hi < tl or lo > th:
         out["outcome"] = "MISS"
         out["why"] = f"hapstab's enclosure [{mp.nstr(lo, 25)}, {mp.nstr(hi, 25)}] misses the reference's"
+    elif ref["where"] == "jump" and not j.get("jump"):
+        # b* diverges just above the sup (H's pole at z = -1 changing side): "b* = b at the sup" would be false
+        out["outcome"] = "MISS"
+        out["why"] = "the reference's b* jumps to +inf at the sup; hapstab does not say so (jump: false)"
     else:
         out["outcome"] = "agree"
     return out
@@ -500,7 +512,7 @@ BRANCHES_BOUND_MAX = [
     ("delay", "integer", 0.2), ("delay", "sin(pi nu) > 0", 0.06), ("delay", "sin(pi nu) < 0", 0.06),
     ("K_max", "finite", 0.4), ("K_max", "zero", 0.01),
     ("pole at z = -1", True, 0.1),
-    ("b* = b at", "interior", 0.05),
+    ("b* = b at", "interior", 0.05), ("b* = b at", "jump", 0.02),
 ]
 
 

@@ -55,6 +55,8 @@ nlohmann::json bound_max_json(const BoundMax& r, int digits) {
     j["closed_form_tight"] = cf->tight;
     j["closed_form_agrees"] = passivity::agrees(*cf, m);
   }
+  j["jump"] = m.jump;
+  if (m.jump) j["b_at_sup"] = bound_json(*m.at_sup, digits);
   j["method"] = m.method;
   j["path"] = to_string(m.path);
   j["note"] = m.note;
@@ -84,6 +86,11 @@ void print_bound_max(const BoundMax& r, int digits) {
             << "\n";
   if (m.outcome == Outcome::holds && m.infinite)
     std::cout << "  passive (b > b*) for every " << K << " >= 0\n";
+  else if (m.outcome == Outcome::holds && m.jump)
+    std::cout << "  passive (b > b*) for 0 <= " << K << " < sup; b*(sup) = " << (m.at_sup->infinite ? "inf" : m.at_sup->decimal) << " ["
+              << to_string(m.at_sup->status) << "] <= b, and b* = +inf for every " << K
+              << " > sup: H's pole at z = -1 under the fractional delay (its term T rho sin((nu + 1) wT)/(2 sin wT) "
+                 "tends to +inf at wT = pi once rho(" << K << ") sin(nu pi) < 0)\n";
   else if (m.outcome == Outcome::holds)
     std::cout << "  passive (b > b*) for 0 <= " << K << " < sup; b* = b at the sup"
               << (m.omega ? ", attained at w = " + outward(*m.omega, 17)[0].get<std::string>() + " rad/s (" + m.where + ")"
@@ -102,7 +109,10 @@ void print_bound_max(const BoundMax& r, int digits) {
       std::cout << "  check: b*(" << K << " = " << m.decimal << ") = " << show(c->at_lo) << " [" << to_string(c->at_lo.status) << "]";
     else
       std::cout << "  check: b* = " << show(c->at_lo) << " at the lower end, " << show(c->at_hi) << " at the upper end";
-    std::cout << (c->holds ? ": b* = b within the enclosure" : ": b* != b: INCONSISTENT") << "\n";
+    if (m.jump)
+      std::cout << (c->holds ? ": b* <= b at the sup, +inf above (the pole at z = -1)" : ": b* > b at the sup: INCONSISTENT") << "\n";
+    else
+      std::cout << (c->holds ? ": b* = b within the enclosure" : ": b* != b: INCONSISTENT") << "\n";
   }
 }
 

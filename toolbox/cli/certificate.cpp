@@ -394,13 +394,20 @@ nlohmann::json bound_max_cells_evidence(const passivity::GainProblem& g, const p
     return {{"witness_theta", cells_witness(at(rational(0)), m.at_zero.omega_enclosure, g.base.T, g.b).str()}};
   const Enclosure<rational>& e = *m.enclosure;
   const rational widen = rational(1) / rational(pow(integer(10), 12));
-  const auto [lo, hi] = printed_enclosure(claim, decimal_outward(e.lo * (1 - widen), 12, -1), decimal_outward(e.hi * (1 + widen), 12, +1));
+  Enclosure<rational> claimed{m.value, m.value};
+  if (m.jump) {  // K_max exact at a jump of b* (MaxGain::jump): b*(K_max) < b by cells, +inf above by the residue at z = -1
+    claim["status"] = "exact";
+    claim["value"] = m.value.str();
+  } else {
+    claimed = printed_enclosure(claim, decimal_outward(e.lo * (1 - widen), 12, -1), decimal_outward(e.hi * (1 + widen), 12, +1));
+  }
   const rational b0 = (m.at_zero.enclosure->hi + g.b) / 2;
   nlohmann::json ev;
   ev["b0_hi"] = b0.str();
   ev["cells_at_0"] = cells_below(at(rational(0)), b0, at(rational(0)).nu, degree);
-  ev["cells_at_lo"] = cells_below(at(lo), g.b, at(lo).nu, degree);
-  ev["witness_theta"] = cells_witness(at(hi), m.omega, g.base.T, g.b).str();
+  ev["cells_at_lo"] = cells_below(at(claimed.lo), g.b, at(claimed.lo).nu, degree);
+  if (m.jump) ev["jump_at_z"] = "-1";
+  else ev["witness_theta"] = cells_witness(at(claimed.hi), m.omega, g.base.T, g.b).str();
   return ev;
 }
 
@@ -581,7 +588,11 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
     if (b0 >= g.b) throw InputError("--certificate: b*(0) is not shown below b at " + std::to_string(digits) + " digits; raise --digits");
     evidence["b0_hi"] = b0.str();
   }
-  if (hi) {  // b*(hi) >= b: a witness for H0 + hi H1
+  if (hi && m.jump) {  // b* = +inf above hi: the residue at z = -1 changes sign there (MaxGain::jump)
+    evidence["jump_at_z"] = "-1";
+    const WitnessObjective obj = witness_objective(passivity::at_gain(g, *hi));
+    if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
+  } else if (hi) {  // b*(hi) >= b: a witness for H0 + hi H1
     passivity::BoundProblem p = passivity::at_gain(g, *hi);
     const WitnessObjective obj = witness_objective(p);
     const auto omega = zero ? m.at_zero.omega_enclosure : m.omega;

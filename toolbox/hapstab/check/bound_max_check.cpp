@@ -19,6 +19,41 @@ namespace {
 
 using RF = RationalFunction<rational>;
 
+// b*(K) = +inf for every K > hi (evidence.jump_at_z = "-1": b* jumps at the sup). H0 and H1 each have at
+// z = -1 a simple pole or none, residues rho0, rho1 (0 for none), so H0 + K H1 = G(K) + rho(K)/(z + 1) with
+// G(K) regular at -1 and rho(K) = rho0 + K rho1; by bound_check.cpp's local form the objective's pole term
+// T rho(K) sin((nu + 1) theta)/(2 sin theta) tends to +inf as theta -> pi iff rho(K) sin(nu pi) < 0, nu not
+// whole, sin(nu pi) of sign s = (-1)^floor(nu). rho1 s < 0 and rho(hi) s <= 0 give rho(K) s < 0 for K > hi.
+// The reason it fails, or nullopt (then `how` says what was shown).
+std::optional<std::string> jump_fails(const nlohmann::json& evidence, const detail::Affine& h, const detail::DelayModel& dm,
+                                      const rational& hi, const std::string& K, std::string& how) {
+  if (!evidence.at("jump_at_z").is_string() || evidence.at("jump_at_z").get<std::string>() != "-1")
+    throw InputError("evidence.jump_at_z: only \"-1\" (the band's end wT = pi) is a pole this form takes");
+  if (dm.q == 1)
+    return "the delay nu = " + std::to_string(dm.P) + " is a whole number of samples: sin(nu pi) = 0, the pole term stays finite at wT = pi";
+  const rational m1(-1);
+  rational rho[2];
+  const RF* parts[2] = {&h.H0, &h.H1};
+  for (int k = 0; k < 2; ++k) {
+    const auto& D = parts[k]->den();
+    if (D(m1) != 0) continue;
+    const rational d1 = D.derivative()(m1);
+    if (d1 == 0) return std::string(k == 0 ? "H0" : "H1") + " has a repeated pole at z = -1";
+    rho[k] = parts[k]->num()(m1) / d1;
+  }
+  const int s = (dm.P / dm.q) % 2 == 0 ? 1 : -1;
+  if (sgn(rho[1]) * s >= 0)
+    return "rho1 sin(nu pi) < 0 fails (rho1 = " + detail::shortened(rho[1]) + ", nu = " + std::to_string(dm.P) + "/" + std::to_string(dm.q) +
+           "): the pole term does not tend to +inf for every large " + K;
+  if (sgn(rho[0] + hi * rho[1]) * s > 0)
+    return "rho(" + K + " = hi) sin(nu pi) <= 0 fails (rho(hi) = " + detail::shortened(rho[0] + hi * rho[1]) +
+           "): the objective tends to -inf at wT = pi just above hi";
+  how = "b*(" + K + ") = +inf for every " + K + " > " + detail::decimal(hi) + ": the residue at z = -1, rho(" + K + ") = " +
+        detail::shortened(rho[0]) + " + " + K + " (" + detail::shortened(rho[1]) + "), has rho(" + K + ") sin(nu pi) < 0 there (nu = " +
+        std::to_string(dm.P) + "/" + std::to_string(dm.q) + ")";
+  return std::nullopt;
+}
+
 // The cells' form (check/bound_cells.hpp), for delays beyond the expanded form: K_max in [lo, hi] with
 // lo > 0 by b0_hi < b, cells_at_0 (f at K = 0 below b0) and cells_at_lo (f at K = lo below b); or
 // K_max = 0 (claim.value "0"); and b*(hi) >= b by f(witness_theta) > b at K = hi.
@@ -26,8 +61,10 @@ Verdict cells_form(const nlohmann::json& evidence, const detail::Affine& h, cons
                    const std::string& K, const detail::ClaimRange& range) {
   if (range.infinite) throw InputError("claim.infinite: K_max = +inf has no cells' form (evidence.witness_theta)");
   const rational &lo = range.lo, &hi = range.hi;
-  detail::only_fields(evidence, lo > 0 ? std::initializer_list<const char*>{"b0_hi", "cells_at_0", "cells_at_lo", "witness_theta"}
-                                       : std::initializer_list<const char*>{"witness_theta"},
+  const bool jump = evidence.contains("jump_at_z");  // b* = +inf above hi (jump_fails), in place of witness_theta
+  const char* upper = jump ? "jump_at_z" : "witness_theta";
+  detail::only_fields(evidence, lo > 0 ? std::initializer_list<const char*>{"b0_hi", "cells_at_0", "cells_at_lo", upper}
+                                       : std::initializer_list<const char*>{upper},
                       "evidence");
   const rational nu = rational(dm.n) + dm.td / dm.T;
   auto at = [&](const rational& k) { return detail::kernel_form(h.H0 + RF(k) * h.H1, dm.T, nu, dm.eta); };
@@ -41,10 +78,16 @@ Verdict cells_form(const nlohmann::json& evidence, const detail::Affine& h, cons
       return {false, K + "_max >= " + detail::decimal(lo) + " fails: b*(" + K + " = lo) < b not shown: " + *why};
     shown.push_back("b*(0) < " + detail::decimal(b0) + " < b and b*(" + K + " = " + detail::decimal(lo) + ") < b by cells");
   }
-  const rational theta = detail::exact_field(evidence, "witness_theta", "evidence");
-  if (auto why = detail::witness_fails(at(hi), theta, b))
-    return {false, K + "_max <= " + detail::decimal(hi) + " not shown: b*(" + K + " = hi) > b: " + *why};
-  shown.push_back("b*(" + K + " = " + detail::decimal(hi) + ") > b at theta = " + detail::shortened(theta));
+  if (jump) {
+    std::string how;
+    if (auto why = jump_fails(evidence, h, dm, hi, K, how)) return {false, K + "_max <= " + detail::decimal(hi) + " not shown: " + *why};
+    shown.push_back(how);
+  } else {
+    const rational theta = detail::exact_field(evidence, "witness_theta", "evidence");
+    if (auto why = detail::witness_fails(at(hi), theta, b))
+      return {false, K + "_max <= " + detail::decimal(hi) + " not shown: b*(" + K + " = hi) > b: " + *why};
+    shown.push_back("b*(" + K + " = " + detail::decimal(hi) + ") > b at theta = " + detail::shortened(theta));
+  }
   std::string all;
   for (const auto& s : shown) all += (all.empty() ? "" : "; ") + s;
   return {true, K + "_max " + (range.status == "exact" ? "= " + lo.str() : "in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]") +
@@ -86,8 +129,13 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"}, "model");
   detail::only_fields(claim, {"quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"}, "claim");
-  const bool cells = evidence.contains("witness_theta");  // the long-delay form (cells_form above)
-  if (!cells && !evidence.contains("integrator")) detail::only_fields(evidence, {"witness_c", "b0_hi", "domain_c_lo"}, "evidence");
+  // the long-delay form (cells_form above): its witness, or its cells beside a jump
+  const bool cells = evidence.contains("witness_theta") || evidence.contains("cells_at_0");
+  const bool jump = evidence.contains("jump_at_z");  // b* = +inf above hi (jump_fails above), in place of witness_c
+  if (!cells && !evidence.contains("integrator"))
+    detail::only_fields(evidence, jump ? std::initializer_list<const char*>{"jump_at_z", "b0_hi", "domain_c_lo"}
+                                       : std::initializer_list<const char*>{"witness_c", "b0_hi", "domain_c_lo"},
+                        "evidence");
 
   // ---- the model as written
   if (!model.contains("H") || !model.at("H").is_string()) throw InputError("model.H: missing or not a string (the expression of H(z))");
@@ -115,6 +163,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   const bool infinite = range.infinite;
   const rational &lo = range.lo, &hi = range.hi;
   if (!infinite && lo < 0) return {false, "claim: lo = " + lo.str() + " < 0 (K_max >= 0 by its definition)"};
+  if (jump && infinite) throw InputError("evidence.jump_at_z: K_max = +inf has no upper end");
   if (auto v = integrator_form(evidence, h, K, range)) return *v;
   if (cells) return cells_form(evidence, h, dm, b, K, range);
   const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
@@ -149,11 +198,17 @@ Verdict check_bound_max(const nlohmann::json& cert) {
       return {false, K + "_max >= " + detail::decimal(lo) + " fails: b*(" + at_K + ") <= b = " + detail::decimal(b) + " not shown: " + *why};
     shown.push_back("b*(" + at_K + ") <= b (" + how + ")");
   }
-  // ---- upper end: b*(hi) >= b, by the witness
-  const rational c1 = exact_field(evidence, "witness_c", "evidence");
-  if (auto why = detail::lower_bound_fails(at(hi), b - dm.eta, c1, dm.q))
-    return {false, K + "_max <= " + detail::decimal(hi) + " not shown: b*(" + K + " = " + detail::decimal(hi) + ") >= b = " + detail::decimal(b) + ": " + *why};
-  shown.push_back("b*(" + K + " = " + detail::decimal(hi) + ") >= b at c1 = " + detail::shortened(c1));
+  // ---- upper end: b* = +inf above hi (a jump), or b*(hi) >= b by the witness
+  if (jump) {
+    std::string how;
+    if (auto why = jump_fails(evidence, h, dm, hi, K, how)) return {false, K + "_max <= " + detail::decimal(hi) + " not shown: " + *why};
+    shown.push_back(how);
+  } else {
+    const rational c1 = exact_field(evidence, "witness_c", "evidence");
+    if (auto why = detail::lower_bound_fails(at(hi), b - dm.eta, c1, dm.q))
+      return {false, K + "_max <= " + detail::decimal(hi) + " not shown: b*(" + K + " = " + detail::decimal(hi) + ") >= b = " + detail::decimal(b) + ": " + *why};
+    shown.push_back("b*(" + K + " = " + detail::decimal(hi) + ") >= b at c1 = " + detail::shortened(c1));
+  }
   std::string what = K + "_max " + (status == "exact" ? "= " + lo.str() : "in [" + detail::decimal(lo) + ", " + detail::decimal(hi) + "]");
   std::string all;
   for (const auto& s : shown) all += (all.empty() ? "" : "; ") + s;

@@ -189,6 +189,45 @@ void bracket(const GainProblem& p, const BoundProblem& q0, const BoundProblem& q
 
 }  // namespace
 
+std::optional<rational> jump_at_minus_one(const GainProblem& p) {
+  const BoundProblem q = with_integer_delay(p.base);
+  if (!q.frac_delay) return std::nullopt;  // sin(nu pi) = 0: the pole term stays finite at wT = pi
+  const rational nu = rational(q.delay) + *q.frac_delay / q.T, m1(-1);
+  std::optional<rational> rho[2];
+  int k = 0;
+  for (const QRatFun* part : {&p.base.H, &p.H1}) {
+    const QPoly &N = part->num(), &D = part->den();
+    if (D(m1) != 0) rho[k++] = rational(0);
+    else if (const rational d1 = D.derivative()(m1); d1 != 0) rho[k++] = N(m1) / d1;
+    else return std::nullopt;  // a repeated pole on the circle: refused by check_assumptions anyway
+  }
+  const int sin_sign = integer(num(nu) / den(nu)) % 2 == 0 ? 1 : -1;  // sin(nu pi), nu > 0 not whole
+  if (sgn(*rho[1]) * sin_sign >= 0) return std::nullopt;
+  const rational K = -*rho[0] / *rho[1];
+  if (K <= 0) return std::nullopt;
+  return K;
+}
+
+namespace {
+
+/// K_max at a jump of b* (MaxGain::jump): where the enclosure holds the K above which the pole at
+/// z = -1 makes b* = +inf and b*(K) <= b there is proven, K_max = K exactly (b* < b on [0, K) by
+/// convexity from b*(0) < b; +inf above).
+void mark_jump(const GainProblem& p, MaxGain& m, int digits) {
+  if (m.outcome != Outcome::holds || m.infinite || !m.enclosure) return;
+  const std::optional<rational> K = jump_at_minus_one(p);
+  if (!K || !m.enclosure->contains(*K)) return;
+  const Bound at = bound_certified(at_gain(p, *K), digits);
+  if (at.infinite || at.enclosure->hi > p.b) return;
+  m.jump = true;
+  m.at_sup = at;
+  m.status = Status::exact;
+  m.value = *K;
+  m.enclosure = Enclosure<rational>{*K, *K};
+}
+
+}  // namespace
+
 MaxGain max_gain(const GainProblem& p, int digits) {
   if (digits < 10 || digits > 280) throw InputError("--digits must be in [10, 280] (got " + std::to_string(digits) + ")");
   if (p.b <= 0) throw InputError("the device damping b must be > 0 (got " + to_decimal(p.b, 17) + ")");
@@ -223,9 +262,12 @@ MaxGain max_gain(const GainProblem& p, int digits) {
   if (plan_bound(at_gain(p, 1)).path == BoundPath::long_delay) {
     m.path = BoundPath::long_delay;
     bracket(p, q0, q1, digits, m);
+    mark_jump(p, m, digits);
     set_decimal(m, digits);
     m.note = "a long delay: " + p.name + "_max bracketed by certified b* on the long-delay path" +
-             (digits > m.digits ? " (" + std::to_string(digits) + " digits asked, about 17 given)" : std::string());
+             (m.jump                ? "; exact at the jump of b*"
+              : digits > m.digits ? " (" + std::to_string(digits) + " digits asked, about 17 given)"
+                                  : std::string());
     return m;
   }
   // 1: decided; 0: precision D not enough; -1: t_d's change of variable does not apply
@@ -242,6 +284,7 @@ MaxGain max_gain(const GainProblem& p, int digits) {
     if (r == 0 && digits <= 80) r = attempt(std::integral_constant<unsigned, 100>{});
     if (r == 0) r = attempt(std::integral_constant<unsigned, 300>{});
     if (r == 1) {
+      mark_jump(p, m, digits);
       set_decimal(m, digits);
       return m;
     }
@@ -252,8 +295,9 @@ MaxGain max_gain(const GainProblem& p, int digits) {
   m.omega.reset();
   m.where.clear();
   bracket(p, q0, q1, digits, m);
+  mark_jump(p, m, digits);
   set_decimal(m, digits);
-  if (digits > m.digits) m.note = std::to_string(digits) + " digits asked; a bracket by certified b* (20 digits) gives about 17";
+  if (!m.jump && digits > m.digits) m.note = std::to_string(digits) + " digits asked; a bracket by certified b* (20 digits) gives about 17";
   return m;
 }
 
@@ -261,6 +305,11 @@ BoundaryCheck check_boundary(const GainProblem& p, const MaxGain& m, int digits)
   if (m.outcome != Outcome::holds || m.infinite || !m.enclosure)
     throw InputError("check_boundary: K_max is not a finite positive number");
   BoundaryCheck c;
+  if (m.jump) {  // b*(K_max) <= b, and +inf above by the pole at z = -1 (jump_at_minus_one), not b* = b
+    c.at_lo = c.at_hi = bound_certified(at_gain(p, m.value), digits);
+    c.holds = !c.at_lo.infinite && c.at_lo.enclosure->lo <= p.b && jump_at_minus_one(p) == m.value;
+    return c;
+  }
   c.at_lo = bound_certified(at_gain(p, m.enclosure->lo), digits);
   c.at_hi = m.enclosure->lo == m.enclosure->hi ? c.at_lo : bound_certified(at_gain(p, m.enclosure->hi), digits);
   c.holds = !c.at_lo.infinite && c.at_lo.enclosure->lo <= p.b && (c.at_hi.infinite || c.at_hi.enclosure->hi >= p.b);

@@ -56,7 +56,18 @@ struct MaxGain : Certified<rational> {
   std::string decimal;                          ///< the digits both ends of `enclosure` share ("inf", "0")
   int digits = 0;                               ///< how many significant digits `decimal` has
   BoundPath path = BoundPath::exact;            ///< exact: psi maximised exactly; long_delay: bracketed by long-delay b*
+  /// b* jumps at the sup: b*(K_max) <= b (`at_sup`) and b* = +inf for every K > K_max. H's simple pole
+  /// at z = -1 met by a fractional delay (nu = n + t_d/T not whole) gives the objective the term
+  /// T rho(K) sin((nu + 1) wT)/(2 sin wT), +inf at wT = pi iff rho(K) sin(nu pi) < 0; the residue
+  /// rho(K) = rho0 + K rho1 changes sign at K_max (jump_at_minus_one).
+  bool jump = false;
+  std::optional<Bound> at_sup;                  ///< b*(K_max) when `jump`
 };
+
+/// The K > 0 above which H0 + K H1 has b* = +inf by its pole at z = -1 (the local form of `jump`):
+/// -rho0/rho1 when nu = n + t_d/T is not whole, rho1 sin(nu pi) < 0 and -rho0/rho1 > 0; else nullopt
+/// (also when a part has a repeated pole at z = -1).
+std::optional<rational> jump_at_minus_one(const GainProblem& p);
 
 /// K_max to `digits` significant digits (10..280). InputError for b <= 0, H1 = 0, an unstable or
 /// non-causal H0 or H1 (then H = H0 + K H1 is, for almost every K), or digits out of range.
