@@ -3680,7 +3680,12 @@ def conserved_quantities(A, B):
     """A basis of {l : l^T [A B] = 0} (exact), each l_i = 1 at its own index c_i and 0 at the others':
     ([l_1, ..., l_k], [c_1, ..., c_k]) from the reduced echelon form of [A B]^T."""
     ns, N = len(A), (len(B[0]) if B else 0)
-    K = [[A[i][j] for i in range(ns)] for j in range(ns)] + [[B[i][j] for i in range(ns)] for j in range(N)]
+    return null_basis([[A[i][j] for i in range(ns)] for j in range(ns)] + [[B[i][j] for i in range(ns)] for j in range(N)], ns)
+
+
+def null_basis(K, ns):
+    """A basis of {v : K v = 0} (K with ns columns, exact; K is reduced in place), each v_i = 1 at its own free
+    column c_i and 0 at the others': ([v_1, ..., v_k], [c_1, ..., c_k])."""
     pivots = echelon(K)
     L, at = [], []
     for f in (c for c in range(ns) if c not in pivots):
@@ -3812,17 +3817,20 @@ def loop_quotient(model):
 
 def loop_quotient_of(loop, own=0):
     """loop_quotient of a loop read already (`own`: the checker's own conserved quantities)."""
-    A, B, _ = loop_plant(*loop[2:7])
+    A, B, pos = loop_plant(*loop[2:7])
     L, at = conserved_quantities(A, B)
     if len(at) < own:
         raise AssertionError("the integrated position carries no conserved quantity (a checker defect)")
     ns = len(A)
+    # the plant's unseen s = 0: A r = 0 with no position in it (the output y = x is blind to r), so M r = r
+    Ex = [[Fraction(1 if i == pos + j else 0) for j in range(len(B[0]))] for i in range(ns)]
+    right = [(0, r) for r in conserved_quantities(mT(A), Ex)[0]]
     blocks = [loop[7][1] if loop[7][0] == "ss" else realise_columns(loop[7][1])]
     if loop[8] is not None:
         blocks.append(loop[8][1] if loop[8][0] == "ss" else realise_columns(loop[8][1]))
     nc = ns + sum(len(b[0]) for b in blocks)
     L = [l + [Fraction(0)] * (nc - ns) for l in L]
-    offset, right = ns, []
+    offset = ns
     for Ab, Bb, Cb, _ in blocks:
         if Ab:
             AmI = [[x - (1 if i == j else 0) for j, x in enumerate(r)] for i, r in enumerate(Ab)]
@@ -3835,10 +3843,25 @@ def loop_quotient_of(loop, own=0):
             Rd, _ = conserved_quantities(mT(AmI), cols)
             right += [(offset, r) for r in Rd]
         offset += len(Ab)
-    if right and at:  # a constant beside a sum at z = 1: a Jordan block possible, which the quotient by both would hide
-        raise Malformed("model: %d conserved quantities (left eigenvectors at z = 1) beside %d unobservable z = 1 of a block "
-                        "(right eigenvectors): whether the constant reaches the sum (a Jordan block at z = 1) is not decided "
-                        "by this kind" % (len(at), len(right)))
+    if right and at:
+        # Left eigenvectors at z = 1 (L) beside right ones: G = L R^T pairs them. If l^T r = 0 for a left l and a right
+        # r that nothing else pairs (k - rank G left ones and m - rank G right ones unpaired), the constant l could
+        # move the equilibrium that the sum r integrates (a Jordan block at z = 1), which the quotient by both would
+        # hide: refused. Otherwise: R^n = span(R_paired) + ker L, M = I on the first, and ker L modulo the unpaired
+        # right ones (N^T R, G N = 0: inside ker L) is what the Stein test decides.
+        R = [[Fraction(0)] * off + list(r) + [Fraction(0)] * (nc - off - len(r)) for off, r in right]
+        G = [[sum((l[t] * r[t] for t in range(nc) if l[t] and r[t]), Fraction(0)) for r in R] for l in L]
+        N = null_basis(G, len(R))[0]
+        paired = len(R) - len(N)
+        if paired < len(L) and N:
+            raise Malformed("model: %d conserved quantities (left eigenvectors at z = 1) beside %d unseen z = 1 (right "
+                            "eigenvectors), neither paired with the other (l^T r = 0): whether the constant reaches the sum "
+                            "(a Jordan block at z = 1) is not decided by this kind" % (len(L) - paired, len(N)))
+        right = [(0, [sum((n[j] * R[j][t] for j in range(len(R)) if n[j]), Fraction(0)) for t in range(nc)]) for n in N]
+    # the plant's unseen s = 0 only pairs conserved quantities: one left unpaired is not set aside (refused)
+    if any(x != 0 for off, r in right if off < ns for x in r[:ns - off]):
+        raise Malformed("model: an unseen s = 0 of the plant (A r = 0, no position in r) that no conserved quantity pairs: "
+                        "beyond this kind")
     return loop, L, at, right, own, blocks
 
 
@@ -4626,6 +4649,8 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
             DE, DV = bl[0][3], bl[1][3]
             if any(v != 0 for row in mmul(DE, DV) for v in row) or any(v != 0 for row in mmul(DV, DE) for v in row):
                 raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
+    if (a1 and r1) or (a2 and r2):  # conserved quantities paired with unseen z = 1: the pairing could move with p
+        raise Malformed("model.scene: conserved quantities beside a block's unobservable z = 1 (a quotient by both): beyond this kind")
     count = len(a1) + len(r1) - own1
     # p inside the tf: the conserved rows come from A, B alone (the plant's l^T [A B] = 0, a block's uncontrollable
     # z = 1), the same at every p; a block's unobservable z = 1 (C r = 0) could move with C(p): refused

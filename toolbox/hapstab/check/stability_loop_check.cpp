@@ -265,13 +265,8 @@ std::vector<size_t> echelon(Mat& K) {
   return pivot_col;
 }
 
-Conserved conserved_quantities(const Mat& A, const Mat& B) {
-  const size_t ns = A.size(), N = B.empty() ? 0 : B[0].size();
-  Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
-  for (size_t i = 0; i < ns; ++i) {
-    for (size_t j = 0; j < ns; ++j) K[j][i] = A[i][j];
-    for (size_t j = 0; j < N; ++j) K[ns + j][i] = B[i][j];
-  }
+// A basis of {v : K v = 0} (K with `ns` columns) in reduced echelon form, v_i = 1 at its own free column c_i.
+Conserved null_basis(Mat K, size_t ns) {
   const std::vector<size_t> pivot_col = echelon(K);
   Conserved out;
   std::vector<bool> is_pivot(ns, false);
@@ -285,6 +280,16 @@ Conserved conserved_quantities(const Mat& A, const Mat& B) {
     out.at.push_back(f);
   }
   return out;
+}
+
+Conserved conserved_quantities(const Mat& A, const Mat& B) {
+  const size_t ns = A.size(), N = B.empty() ? 0 : B[0].size();
+  Mat K = rational_matrix::zeros(ns + N, ns);  // [A B]^T: K l = 0
+  for (size_t i = 0; i < ns; ++i) {
+    for (size_t j = 0; j < ns; ++j) K[j][i] = A[i][j];
+    for (size_t j = 0; j < N; ++j) K[ns + j][i] = B[i][j];
+  }
+  return null_basis(std::move(K), ns);
 }
 
 // M on the quotient by the conserved quantities (header): with y = l^T x = 0, x_c = -L_kept x_kept,
@@ -512,6 +517,15 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
   // and their unobservable z = 1 outside those: r with (A - I) r = 0, C r = 0, l^T r = 0 for the block's l
   // (right eigenvectors of M, eigenvalue 1: C r = 0 keeps the force and x_e at 0)
   Mat right;  // rows: r over M's states
+  {  // the plant's unseen s = 0: A r = 0 with no position in it (y = x blind to r), so Phi_h r = r and M r = r
+    Mat Ex = rational_matrix::zeros(ns, pl.B.empty() ? 0 : pl.B[0].size());
+    for (size_t j = 0; j < Ex[0].size(); ++j) Ex[pl.pos + j][j] = 1;
+    for (const auto& v : conserved_quantities(rational_matrix::transpose(A), Ex).L) {
+      std::vector<rational> full(order, rational(0));
+      std::copy(v.begin(), v.end(), full.begin());
+      right.push_back(std::move(full));
+    }
+  }
   for (const auto& [R, at] : {std::pair<const Realisation*, size_t>{&E, ns}, {&V, ns + nE}}) {
     if (R->A.empty()) continue;
     const size_t nb = R->A.size();
@@ -533,14 +547,40 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
       right.push_back(std::move(full));
     }
   }
-  // a constant at z = 1 (a left eigenvector: the plant's conserved quantities, a block's unreached z = 1) beside a
-  // sum at z = 1 (a right one): the constant can move the equilibrium that the sum then integrates (a Jordan block
-  // at z = 1, though each block's A is semisimple there; sim/hidden_modes.hpp) -- the quotient by both would hide
-  // it. hapstab writes no such certificate (it is undecided there); refused, not checked
-  if (!right.empty() && !q.at.empty())
-    throw InputError("model: " + std::to_string(q.at.size()) + " conserved quantities (left eigenvectors at z = 1) beside " +
-                     std::to_string(right.size()) + " unobservable z = 1 of a block (right eigenvectors): whether the constant "
-                     "reaches the sum (a Jordan block at z = 1) is not decided by this kind");
+  // Left eigenvectors at z = 1 (rows l of q.L: the plant's conserved quantities, a block's unreached z = 1) beside
+  // right ones (rows r of `right`): pair them by G = L R^T (header). With rank G = g, the k - g left ones no r
+  // pairs with and the m - g right ones in null(G) (R_u = N^T R, inside ker L) are unpaired. Both kinds unpaired:
+  // a constant could move the equilibrium that a sum then integrates (a Jordan block at z = 1, though each block's
+  // A is semisimple there; sim/hidden_modes.hpp) -- the quotient by both would hide it. hapstab writes no such
+  // certificate (it is undecided there); refused, not checked. Otherwise M is decided on ker L modulo R_u.
+  if (!right.empty() && !q.at.empty()) {
+    Mat G = rational_matrix::zeros(q.L.size(), right.size());
+    for (size_t i = 0; i < q.L.size(); ++i)
+      for (size_t j = 0; j < right.size(); ++j)
+        for (size_t t = 0; t < q.L[i].size(); ++t) G[i][j] += q.L[i][t] * right[j][t];
+    const Mat N = null_basis(G, right.size()).L;  // rows n: G n = 0
+    const size_t paired = right.size() - N.size();
+    if (paired < q.L.size() && !N.empty())
+      throw InputError("model: " + std::to_string(q.L.size() - paired) + " conserved quantities (left eigenvectors at z = 1) beside " +
+                       std::to_string(N.size()) + " unseen z = 1 (right eigenvectors), neither paired with the other (l^T r = 0): whether "
+                       "the constant reaches the sum (a Jordan block at z = 1) is not decided by this kind");
+    Mat unpaired;
+    for (const auto& n : N) {
+      std::vector<rational> r(order, rational(0));
+      for (size_t j = 0; j < n.size(); ++j)
+        if (n[j] != 0)
+          for (size_t t = 0; t < order; ++t) r[t] += n[j] * right[j][t];
+      unpaired.push_back(std::move(r));
+    }
+    right = std::move(unpaired);
+  }
+  // the plant's unseen s = 0 only pairs conserved quantities here: one left unpaired (it could move with a
+  // parameter of the plant, where --max reads the quotient at two values) is not set aside -- refused
+  for (const auto& r : right)
+    for (size_t t = 0; t < ns; ++t)
+      if (r[t] != 0)
+        throw InputError("model: an unseen s = 0 of the plant (A r = 0, no position in r) that no conserved quantity pairs: "
+                         "beyond this kind");
   BallRows M11 = reduced(M, q);
   Mat embedding;  // x = E y on {l^T x = 0}: x_kept = y, x_c = -L[:, kept] y
   if (!q.at.empty()) {

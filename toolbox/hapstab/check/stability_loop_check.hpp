@@ -56,7 +56,14 @@
 // outside those (r with (A - I) r = 0, C r = 0, l^T r = 0 for the block's l) is a right eigenvector of M
 // (C r = 0 keeps the force and x_e at 0, so the block's states stay r): after the left quotient, M11 is
 // taken on the quotient by them too -- in reduced echelon form (r_j 1 at its own c_j, 0 at the others'),
-// M[a][b] - sum_j r_j[a] M[c_j][b] on the other coordinates -- and counted the same way.
+// M[a][b] - sum_j r_j[a] M[c_j][b] on the other coordinates -- and counted the same way. So is the plant's
+// unseen s = 0 (A r = 0, no position in r: y = x never sees it; an ss device's own position).
+// Left beside right ones (k and m of them): G = L R^T of rank g pairs them; the m - g combinations N R, G N = 0,
+// lie in ker L. If g = k, R^n = span(R_paired) + ker L with M = I on the first; if g = m, no right one lies
+// in ker L; either way z = 1 is semisimple of multiplicity k + m - g when M on ker L modulo N R is Schur
+// stable (a block triangular M whose other block has no eigenvalue 1 is similar to the block diagonal one).
+// g < k and g < m together (a constant no sum pairs beside a sum no constant pairs: a possible Jordan block)
+// is refused, as is an N R with a part in the plant (it could move with a plant parameter under --max).
 // The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
 // eigenvalues of M here; a Stein certificate exists only where they are off the circle (other than the
 // conserved quantities), and then they are part of M.

@@ -434,6 +434,9 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
       return {false, not_affine};
     // p inside the tf (header): the conserved rows come from A, B alone, the same at every p; a block's
     // unobservable z = 1 (right eigenvectors, C r = 0) could move with C(p): refused
+    // conserved quantities paired with unseen z = 1 (stability_loop_check.cpp): the pairing could move with p
+    if ((m1.right_quotient && !m1.embedding.empty()) || (m2.right_quotient && !m2.embedding.empty()))
+      throw InputError("model.scene: conserved quantities beside a block's unobservable z = 1 (a quotient by both): beyond this kind");
     if (r.inside && (m1.right_quotient || m2.right_quotient))
       throw InputError("model.scene: a block's unobservable z = 1 (a quotient by right eigenvectors) with " + p + " inside the " + block +
                        "'s tf: beyond this kind (the right eigenvectors are not shown the same at every " + p + ")");
