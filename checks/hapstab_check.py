@@ -3838,8 +3838,9 @@ def loop_quotient_of(loop, own=0):
             for l, c in zip(Ld, atd):
                 L.append([Fraction(0)] * offset + l + [Fraction(0)] * (nc - offset - len(l)))
                 at.append(offset + c)
-            # and its unobservable z = 1 outside those: (A - I) r = 0, C r = 0, l^T r = 0 (right eigenvectors of M)
-            cols = [[Cb[i][j] for i in range(len(Cb))] + [l[j] for l in Ld] for j in range(len(Ab))]
+            # and its unobservable z = 1: (A - I) r = 0, C r = 0 (right eigenvectors of M; a fully hidden mode is both,
+            # paired with itself below)
+            cols = [[Cb[i][j] for i in range(len(Cb))] for j in range(len(Ab))]
             Rd, _ = conserved_quantities(mT(AmI), cols)
             right += [(offset, r) for r in Rd]
         offset += len(Ab)

@@ -514,8 +514,8 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     throw NumericalError("model.plant: the integrated position carries no conserved quantity (a checker defect)");
   for (auto& l : q.L) l.resize(nc, rational(0));
   // the wall's and the coupling's uncontrollable z = 1 (header): l^T (A - I) = 0, l^T B = 0, in their states
-  // and their unobservable z = 1 outside those: r with (A - I) r = 0, C r = 0, l^T r = 0 for the block's l
-  // (right eigenvectors of M, eigenvalue 1: C r = 0 keeps the force and x_e at 0)
+  // and their unobservable z = 1: r with (A - I) r = 0, C r = 0 (right eigenvectors of M, eigenvalue 1: C r = 0
+  // keeps the force and x_e at 0); a fully hidden one is both, and the pairing below sets it aside once
   Mat right;  // rows: r over M's states
   {  // the plant's unseen s = 0: A r = 0 with no position in it (y = x blind to r), so Phi_h r = r and M r = r
     Mat Ex = rational_matrix::zeros(ns, pl.B.empty() ? 0 : pl.B[0].size());
@@ -537,9 +537,9 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
       q.L.push_back(std::move(l));
       q.at.push_back(at + d.at[i]);
     }
-    Mat cols = rational_matrix::transpose(R->C);  // {r : r^T [(A - I)^T, C^T, L_block^T] = 0}
-    for (const auto& l : d.L)
-      for (size_t j = 0; j < nb; ++j) cols[j].push_back(l[j]);
+    // {r : r^T [(A - I)^T, C^T] = 0}; one the block's own l also sees (a mode no input reaches and no output
+    // shows) is paired with it below
+    const Mat cols = rational_matrix::transpose(R->C);
     const Conserved r = conserved_quantities(rational_matrix::transpose(AmI), cols);
     for (const auto& v : r.L) {
       std::vector<rational> full(order, rational(0));

@@ -53,7 +53,7 @@
 // 0 in its states, as realised here) is one too: (l^T xi)+ = l^T A xi + l^T B x_e = l^T xi, so L = [0 l 0
 // ...] has L M = L, a left eigenvector of M like the plant's; each is counted in claim.conserved and set
 // aside by the same quotient (a semisimple z = 1 that settles, as `stability` says). An unobservable one
-// outside those (r with (A - I) r = 0, C r = 0, l^T r = 0 for the block's l) is a right eigenvector of M
+// (r with (A - I) r = 0, C r = 0; a fully hidden mode is both, paired below) is a right eigenvector of M
 // (C r = 0 keeps the force and x_e at 0, so the block's states stay r): after the left quotient, M11 is
 // taken on the quotient by them too -- in reduced echelon form (r_j 1 at its own c_j, 0 at the others'),
 // M[a][b] - sum_j r_j[a] M[c_j][b] on the other coordinates -- and counted the same way. So is the plant's
