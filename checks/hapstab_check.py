@@ -3859,10 +3859,6 @@ def loop_quotient_of(loop, own=0):
                             "eigenvectors), neither paired with the other (l^T r = 0): whether the constant reaches the sum "
                             "(a Jordan block at z = 1) is not decided by this kind" % (len(L) - paired, len(N)))
         right = [(0, [sum((n[j] * R[j][t] for j in range(len(R)) if n[j]), Fraction(0)) for t in range(nc)]) for n in N]
-    # the plant's unseen s = 0 only pairs conserved quantities: one left unpaired is not set aside (refused)
-    if any(x != 0 for off, r in right if off < ns for x in r[:ns - off]):
-        raise Malformed("model: an unseen s = 0 of the plant (A r = 0, no position in r) that no conserved quantity pairs: "
-                        "beyond this kind")
     return loop, L, at, right, own, blocks
 
 
@@ -4652,6 +4648,9 @@ def loop_max_part(at_p, evidence, lo, hi, k, p, block, inside, where, need_unsta
                 raise Malformed("model.scene: D_E D_V or D_V D_E is not 0: the loop is not affine in %s, beyond this kind" % p)
     if (a1 and r1) or (a2 and r2):  # conserved quantities paired with unseen z = 1: the pairing could move with p
         raise Malformed("model.scene: conserved quantities beside a block's unobservable z = 1 (a quotient by both): beyond this kind")
+    ns1 = len(loop_plant(*l1[2:7])[0])  # a right eigenvector with a part in the plant could move with a plant parameter
+    if any(x != 0 for off, r in r1 + r2 if off < ns1 for x in r[:ns1 - off]):
+        raise Malformed("model.scene: an unseen s = 0 of the plant set aside (a right eigenvector): beyond this kind")
     count = len(a1) + len(r1) - own1
     # p inside the tf: the conserved rows come from A, B alone (the plant's l^T [A B] = 0, a block's uncontrollable
     # z = 1), the same at every p; a block's unobservable z = 1 (C r = 0) could move with C(p): refused
@@ -5275,8 +5274,6 @@ def check_stability_max(c):
     status, lo, hi, infinite, refuted = claim_range(claim, True)
     if refuted:
         return False, refuted
-    if infinite and "jump_at_z" in evidence:
-        raise Malformed("evidence.jump_at_z: K_max = +inf has no upper end")
     if not infinite and lo < 0:
         return False, "claim: lo < 0 (K_max >= 0 by its definition)"
     zero = not infinite and hi == 0

@@ -574,13 +574,10 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     }
     right = std::move(unpaired);
   }
-  // the plant's unseen s = 0 only pairs conserved quantities here: one left unpaired (it could move with a
-  // parameter of the plant, where --max reads the quotient at two values) is not set aside -- refused
+  // a right eigenvector set aside with a part in the plant: --max's kinds refuse it (it could move with a plant parameter)
+  bool plant_right = false;
   for (const auto& r : right)
-    for (size_t t = 0; t < ns; ++t)
-      if (r[t] != 0)
-        throw InputError("model: an unseen s = 0 of the plant (A r = 0, no position in r) that no conserved quantity pairs: "
-                         "beyond this kind");
+    for (size_t t = 0; t < ns; ++t) plant_right = plant_right || r[t] != 0;
   BallRows M11 = reduced(M, q);
   Mat embedding;  // x = E y on {l^T x = 0}: x_kept = y, x_c = -L[:, kept] y
   if (!q.at.empty()) {
@@ -616,7 +613,7 @@ LoopMatrix loop_matrix(const detail::SceneLoop& L, long bits) {
     return true;
   };
   return {M11, q.at.size() + right.size() - L.own_conserved, order, {E.A, E.B, E.C, E.D, V.A, V.B, V.C, V.D}, !(zero(DED) && zero(DDE)),
-          embedding, !right.empty()};
+          embedding, !right.empty(), plant_right};
 }
 
 namespace {

@@ -63,7 +63,7 @@
 // in ker L; either way z = 1 is semisimple of multiplicity k + m - g when M on ker L modulo N R is Schur
 // stable (a block triangular M whose other block has no eigenvalue 1 is similar to the block diagonal one).
 // g < k and g < m together (a constant no sum pairs beside a sum no constant pairs: a possible Jordan block)
-// is refused, as is an N R with a part in the plant (it could move with a plant parameter under --max).
+// is refused; an N R with a part in the plant (it could move with a plant parameter) is refused by the --max kinds.
 // The loop is otherwise the scene's loop as written: hidden modes of the column realisations are
 // eigenvalues of M here; a Stein certificate exists only where they are off the circle (other than the
 // conserved quantities), and then they are part of M.
@@ -112,6 +112,9 @@ struct LoopMatrix {
   /// when there are none); right_quotient: then also by a block's unobservable z = 1 (right eigenvectors)
   rational_matrix::Mat embedding;
   bool right_quotient = false;
+  /// a right eigenvector of that quotient has a part in the plant (its unseen s = 0): it could move with a plant
+  /// parameter, which the --max kinds refuse
+  bool plant_right = false;
 };
 /// M of the loop L as above, e^{AT} in balls at `bits`.
 LoopMatrix loop_matrix(const SceneLoop& L, long bits);

@@ -437,6 +437,8 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
     // conserved quantities paired with unseen z = 1 (stability_loop_check.cpp): the pairing could move with p
     if ((m1.right_quotient && !m1.embedding.empty()) || (m2.right_quotient && !m2.embedding.empty()))
       throw InputError("model.scene: conserved quantities beside a block's unobservable z = 1 (a quotient by both): beyond this kind");
+    if (m1.plant_right || m2.plant_right)
+      throw InputError("model.scene: an unseen s = 0 of the plant set aside (a right eigenvector): beyond this kind");
     if (r.inside && (m1.right_quotient || m2.right_quotient))
       throw InputError("model.scene: a block's unobservable z = 1 (a quotient by right eigenvectors) with " + p + " inside the " + block +
                        "'s tf: beyond this kind (the right eigenvectors are not shown the same at every " + p + ")");

@@ -221,6 +221,8 @@ void mark_jump(const GainProblem& p, MaxGain& m, int digits) {
   if (at.infinite || at.enclosure->hi > p.b) return;
   m.jump = true;
   m.at_sup = at;
+  m.omega.reset();  // b* does not reach b at a frequency: it diverges at wT = pi just above the sup
+  m.where = "wT = pi (H's pole at z = -1)";
   m.status = Status::exact;
   m.value = *K;
   m.enclosure = Enclosure<rational>{*K, *K};
