@@ -3748,7 +3748,8 @@ def hidden_mode_verdict(loop, h, model):
     charpoly(A_h) = s^k q, q(0) != 0, q not Hurwitz (a root lambda != 0, Re lambda >= 0: e^{lambda T} has |.| >= 1
     and is not 1, as lambda T = 2 pi j m is impossible for an algebraic lambda and a rational T). The span is
     invariant in the loop's M whatever the rest of the loop is (the block's output does not show it, or its input
-    does not reach it), so M has an eigenvalue != 1 with |z| >= 1: NOT stable, and not by a conserved quantity."""
+    does not reach it), so M has an eigenvalue != 1 with |z| >= 1: NOT stable, and not by a conserved quantity.
+    Or (since stop 89) q is stable but the marginal eigenvalue is not semisimple in A_h: a Jordan block of M at 1."""
     if not isinstance(h, dict):
         raise Malformed("evidence.hidden: not an object")
     block, kind = h.get("block"), h.get("kind")
@@ -3801,7 +3802,17 @@ def hidden_mode_verdict(loop, h, model):
         k1 += 1
     ok, why = hurwitz(q) if named else schur_cohn(q)
     if ok:
-        return False, "evidence.hidden: every eigenvalue of A_h other than %s is %s: nothing shown" % (
+        # the marginal eigenvalue itself not semisimple in A_h (geometric multiplicity r - rank(A_h - marginal I)
+        # below k1): A_h, or e^{A_h T}, is the loop's M on that invariant subspace (or on the quotient by it), so M
+        # has a Jordan block at z = 1 and the loop grows polynomially: NOT stable too
+        shifted = [[x - (marginal if i == j else 0) for j, x in enumerate(row)] for i, row in enumerate(Ah)]
+        geometric = r - len(echelon(shifted))
+        if k1 > 0 and geometric < k1:
+            return True, ("NOT stable [exact]: the %s hides an %s subspace of dimension %d, invariant in the loop; A_h has %s of "
+                          "algebraic multiplicity %d and geometric %d (a Jordan block: M's %s is not semisimple)") % (
+                block + (" %r" % h["name"] if named else ""), kind, r, "s = 0" if named else "z = 1", k1, geometric,
+                "z = 1 = e^{0 T}" if named else "z = 1")
+        return False, "evidence.hidden: every eigenvalue of A_h other than %s is %s, and it is semisimple: nothing shown" % (
             "s = 0" if named else "z = 1", "in Re s < 0" if named else "inside the unit circle")
     return True, "NOT stable [exact]: the %s hides an %s subspace of dimension %d, invariant in the loop; charpoly(A_h) = %s^%d q, q not %s (%s)" % (
         block + (" %r" % h["name"] if named else ""), kind, r, "s" if named else "(z - 1)", k1, "Hurwitz" if named else "Schur stable", why)

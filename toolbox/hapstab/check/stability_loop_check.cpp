@@ -945,9 +945,21 @@ Verdict detail::hidden_mode_verdict(const detail::SceneLoop& L, const nlohmann::
   while (q.degree() > 0 && q(marginal).is_zero()) q = divmod(q, x_minus).first, ++k1;
   const SchurCohn sc = continuous ? hurwitz(q) : schur_cohn(q);
   const std::string var = continuous ? "s" : "(z - 1)";
-  if (sc.stable)
+  if (sc.stable) {
+    // the marginal eigenvalue itself not semisimple in A_h (geometric multiplicity r - rank(A_h - marginal I) below
+    // k1): A_h, or e^{A_h T}, is M on that invariant subspace (or on the quotient by it), so M has a Jordan block at
+    // z = 1 and the loop grows polynomially: NOT stable too (since stop 89)
+    Mat shifted = add(Ah, identity(r), -marginal);
+    const size_t geometric = r - echelon(shifted).size();
+    if (k1 > 0 && geometric < static_cast<size_t>(k1))
+      return {true, "NOT stable [exact]: the " + what + " (ss as written) hides an " + kind + " subspace of dimension " + std::to_string(r) +
+                        " (" + (unobs ? "C V = 0, A V = V A_h" : "W B = 0, W A = A_h W") + ", exactly), invariant in the loop; A_h has " +
+                        (continuous ? "s = 0" : "z = 1") + " of algebraic multiplicity " + std::to_string(k1) + " and geometric " +
+                        std::to_string(geometric) + ": a Jordan block of M at z = 1 (the loop grows polynomially)"};
     return {false, "evidence.hidden: every eigenvalue of A_h other than " + std::string(continuous ? "s = 0" : "z = 1") + " lies in " +
-                       (continuous ? "Re s < 0" : "the unit disc") + " (" + sc.why + "): no eigenvalue of the loop with |z| >= 1, z != 1, shown"};
+                       (continuous ? "Re s < 0" : "the unit disc") + " (" + sc.why + "), and it is semisimple: no eigenvalue of the loop with " +
+                       "|z| >= 1, z != 1, nor a Jordan block at 1, shown"};
+  }
   return {true, "NOT stable [exact]: the " + what + " (ss as written) hides an " + kind + " subspace of dimension " +
                     std::to_string(r) + " (" + (unobs ? "C V = 0, A V = V A_h" : "W B = 0, W A = A_h W") +
                     ", exactly), an invariant subspace of the loop whatever the rest does; charpoly(A_h) = " + var + "^" +
