@@ -1592,7 +1592,7 @@ TEST(StabilityLoopCheck, HoldBeyondTheLimit) {
 // Schur-Cohn). A device d, ss A = [[-10, 0, 0], [0, 0, 1], [0, a, c]], B = (1, 0, 0)', C = (1, 0, 0): rows 2
 // and 3 are uncontrollable, A_h = [[0, 1], [a, c]]: a = -4, c = 0 (s = +-2j, on the axis: after the hold on
 // the unit circle) and a = 4 (s = +-2) verified; c = -1 (damped) refuted; a = 0, c = 0 (s^2: a double zero,
-// no other root) refuted (not shown). An ss operator (A = diag(-1, 1), B = (1, 0)', C = (1, 1)): s = 1
+// no other root, but a Jordan block at s = 0) verified since stop 89; a = 0, c = -1 (s = 0 simple) refuted. An ss operator (A = diag(-1, 1), B = (1, 0)', C = (1, 1)): s = 1
 // uncontrollable, verified by its name.
 TEST(StabilityLoopCheck, HiddenModeOfContinuousBlocksByHand) {
   auto device = [](const std::string& a, const std::string& c, const std::string& name) {
@@ -1612,7 +1612,12 @@ TEST(StabilityLoopCheck, HiddenModeOfContinuousBlocksByHand) {
     EXPECT_NE(v.reason.find("Hurwitz"), std::string::npos) << v.reason;
   }
   EXPECT_FALSE(check_certificate(device("-4", "-1", "d")).verified);
-  EXPECT_FALSE(check_certificate(device("0", "0", "d")).verified);
+  // s^2 (a = c = 0): q = 1 has no other root, but s = 0 is a Jordan block of A_h (geometric multiplicity 1 of 2), so
+  // e^{A_h T} holds one at z = 1 and the hidden ramp grows: NOT stable, verified since stop 89 (refuted before)
+  const auto ramp = check_certificate(device("0", "0", "d"));
+  EXPECT_TRUE(ramp.verified) << ramp.reason;
+  EXPECT_NE(ramp.reason.find("Jordan block"), std::string::npos) << ramp.reason;
+  EXPECT_FALSE(check_certificate(device("0", "-1", "d")).verified);  // s (s + 1): s = 0 simple, s = -1 damped
   EXPECT_THROW(check_certificate(device("-4", "0", "e")), InputError);  // no such device
   auto no_name = device("-4", "0", "d");
   no_name["evidence"]["hidden"].erase("name");

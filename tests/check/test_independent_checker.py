@@ -534,7 +534,8 @@ class StabilityLoop(unittest.TestCase):
 
     def test_hidden_mode_of_continuous_blocks_by_hand(self):
         # test_check.cpp's StabilityLoopCheck.HiddenModeOfContinuousBlocksByHand: A_h = [[0, 1], [a, c]] hidden in
-        # an ss device: +-2j and +-2 verified, damped and s^2 refuted; an ss operator's uncontrollable s = 1
+        # an ss device: +-2j and +-2 verified, damped refuted, s^2 (a Jordan block at 0) verified; an ss operator's
+        # uncontrollable s = 1
         def device(a, c, name="d"):
             scene = ('[scene]\nT = "1/1000"\n[[device]]\nname = "d"\nss = { A = [["-10", "0", "0"], ["0", "0", "1"], '
                      '["0", "%s", "%s"]], B = [["1"], ["0"], ["0"]], C = [["1", "0", "0"]], D = [["0"]] }\npassive = false\n'
@@ -548,7 +549,10 @@ class StabilityLoop(unittest.TestCase):
             self.assertEqual(code, 0, why)
             self.assertIn("Hurwitz", why)
         self.assertEqual(hc.check(device("-4", "-1"))[0], 1)
-        self.assertEqual(hc.check(device("0", "0"))[0], 1)
+        code, why = hc.check(device("0", "0"))  # s^2: a Jordan block at s = 0 (a hidden ramp): NOT stable since stop 89
+        self.assertEqual(code, 0, why)
+        self.assertIn("Jordan block", why)
+        self.assertEqual(hc.check(device("0", "-1"))[0], 1)  # s (s + 1): s = 0 simple, nothing shown
         self.assertEqual(hc.check(device("-4", "0", "e"))[0], 2)
         c = device("-4", "0")
         del c["evidence"]["hidden"]["name"]
