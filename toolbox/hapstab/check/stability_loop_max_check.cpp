@@ -432,13 +432,14 @@ detail::MaxPart detail::check_max_part(const SceneLoop& L1, const SceneLoop& L2,
     out.order = m1.order, out.conserved = m1.conserved, out.bits = bits;
     if (const std::string not_affine = realisations_not_affine(r, p, m1, m2, at_hi ? &*at_hi : nullptr, order, c.hi); !not_affine.empty())
       return {false, not_affine};
-    // p inside the tf (header): the conserved rows come from A, B alone, the same at every p; a block's
-    // unobservable z = 1 (right eigenvectors, C r = 0) could move with C(p): refused
-    // conserved quantities paired with unseen z = 1 (stability_loop_check.cpp): the pairing could move with p
+    // conserved quantities paired with unseen z = 1 (stability_loop_check.cpp), or a right eigenvector with a part in
+    // the plant: the pairing, or the vector, could move with p -- refused
     if ((m1.right_quotient && !m1.embedding.empty()) || (m2.right_quotient && !m2.embedding.empty()))
       throw InputError("model.scene: conserved quantities beside a block's unobservable z = 1 (a quotient by both): beyond this kind");
     if (m1.plant_right || m2.plant_right)
       throw InputError("model.scene: an unseen s = 0 of the plant set aside (a right eigenvector): beyond this kind");
+    // p inside the tf (header): the conserved rows come from A, B alone, the same at every p; a block's
+    // unobservable z = 1 (right eigenvectors, C r = 0) could move with C(p): refused
     if (r.inside && (m1.right_quotient || m2.right_quotient))
       throw InputError("model.scene: a block's unobservable z = 1 (a quotient by right eigenvectors) with " + p + " inside the " + block +
                        "'s tf: beyond this kind (the right eigenvectors are not shown the same at every " + p + ")");
