@@ -856,22 +856,15 @@ def check_bound(c):
     only(model, ("H", "set", "num", "den", "T", "delay", "frac_delay", "eta"), "model")
     only(claim, ("quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"), "claim")
     cells = "infinite" not in claim and "cells" in evidence
-    local = "infinite" in claim and "pole_at_z" in evidence  # b* = +inf at z = -1, nothing expanded
-    circle = "infinite" in claim and "pole_on_circle" in evidence  # b* = +inf inside the band, nothing expanded
     integrator = "infinite" in claim and "integrator" in evidence  # H's pole at z = 1, nothing expanded
-    if local:
-        only(evidence, ("pole_at_z",), "evidence")
-    elif integrator:
+    if integrator:
         only(evidence, ("integrator",), "evidence")
-    elif circle:
-        only(evidence, ("pole_on_circle",), "evidence")
-    elif "infinite" in claim:
-        only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), "evidence")
     elif cells:
         only(evidence, ("cells", "witness_theta"), "evidence")
-    else:
+    elif "infinite" not in claim:
         only(evidence, ("witness_c", "domain_c_lo"), "evidence")
-    H, T, eta, P, q = bound_model(model, expanded=not (cells or local or circle or integrator))
+    # b* = +inf: bound_infinite_any checks the size where its form expands the delay
+    H, T, eta, P, q = bound_model(model, expanded=not (cells or "infinite" in claim))
     status, lo, hi, infinite, refuted = claim_range(claim, may_be_infinite=True)
     if refuted:
         return False, refuted
@@ -882,16 +875,8 @@ def check_bound(c):
     if not infinite and peval(H.den, Fraction(1)) == 0:
         return False, ("b* finite fails: H has an uncancelled pole at z = 1 (an integrator), where b* = +inf whatever "
                        "the residue's sign (docs/commands.md)")
-    if local:
-        if status != "exact":
-            raise Malformed("claim.status: b* = +inf is claimed \"exact\"")
-        return bound_infinite_at_minus_one(H, P, q, evidence)
-    if circle:
-        if status != "certified":
-            raise Malformed("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in intervals)")
-        return bound_infinite_on_circle(H, T, Fraction(P, q), evidence)
     if infinite:
-        return bound_infinite(H, T, P, q, status, evidence)
+        return bound_infinite_any(H, T, P, q, status, evidence, "evidence")
     if cells:
         return bound_cells(H, T, eta, Fraction(P, q), lo, hi, evidence)
     c0 = exact(evidence, "witness_c", "evidence")
@@ -905,6 +890,27 @@ def check_bound(c):
     if why:
         return False, "b* >= %s (%.12g) not shown: %s" % (short(lo), float(lo), why)
     return True, ("b* = %s" % lo) if status == "exact" else "b* in [%.12g, %.12g]" % (float(lo), float(hi))
+
+
+def bound_infinite_any(H, T, P, q, status, evidence, where):
+    """b* = +inf by any form but the integrator's: the local form at z = -1 (pole_at_z) and the circle form
+    (pole_on_circle), nothing expanded; or a pole of the objective in c (pole_c, side / pole_lo, pole_hi, side /
+    end_lo, end_hi), the delay expanded (size limited as bound_model's). The claim's status is the form's:
+    "certified" for the circle form (shown in intervals), "exact" otherwise. `where` names the evidence."""
+    if "pole_at_z" in evidence:
+        only(evidence, ("pole_at_z",), where)
+        if status != "exact":
+            raise Malformed("claim.status: b* = +inf at z = -1 is claimed \"exact\"")
+        return bound_infinite_at_minus_one(H, P, q, evidence)
+    if "pole_on_circle" in evidence:
+        only(evidence, ("pole_on_circle",), where)
+        if status != "certified":
+            raise Malformed("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in intervals)")
+        return bound_infinite_on_circle(H, T, Fraction(P, q), evidence)
+    only(evidence, ("pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"), where)
+    if P > 10 ** 6 or q > 10 ** 6:
+        raise TooLarge("t_d/T has a numerator or denominator above 10^6")
+    return bound_infinite(H, T, P, q, status, evidence)
 
 
 def bound_integrator(H, status, evidence):
@@ -1524,8 +1530,11 @@ def check_bound_max(c):
     only(claim, ("quantity", "status", "infinite", "value", "lo", "hi", "printed", "printed_lo", "printed_hi"), "claim")
     cells = "witness_theta" in evidence or "cells_at_0" in evidence  # the long-delay form (bound_max_cells)
     integrator = "integrator" in evidence  # K_max = 0 by H's pole at z = 1 (the pole0/pole1 test below)
+    at_zero = "at_zero_infinite" in evidence  # K_max = 0 by b*(0) = +inf (a bound certificate's evidence for H0)
     if integrator:
         only(evidence, ("integrator",), "evidence")
+    elif at_zero:
+        only(evidence, ("at_zero_infinite",), "evidence")
     elif not cells:
         jump = "jump_at_z" in evidence  # b* = +inf above hi (bound_max_jump), in place of witness_c
         only(evidence, ("jump_at_z" if jump else "witness_c", "b0_hi", "domain_c_lo"), "evidence")
@@ -1535,7 +1544,7 @@ def check_bound_max(c):
     m0 = dict(model, set=dict(sets, **{K: "0"}) if isinstance(sets, dict) else sets)
     m0.pop("name")
     m0.pop("damping", None)
-    _, T, eta, P, q = bound_model(m0, expanded=not (cells or integrator))
+    _, T, eta, P, q = bound_model(m0, expanded=not (cells or integrator or at_zero))
     b = exact(model, "damping", "model")
     if b <= 0:
         raise Malformed("model.damping: must be > 0")
@@ -1565,6 +1574,17 @@ def check_bound_max(c):
             return True, "%s_max = 0: %s" % (K, why)
     elif integrator:
         return False, "evidence.integrator: neither H0 nor H1 has a pole at z = 1"
+    if at_zero:
+        # b*(0) = +inf >= b: no K0 > 0 has b*(K) < b on [0, K0), so K_max = 0
+        inner = evidence["at_zero_infinite"]
+        if not isinstance(inner, dict):
+            raise Malformed("evidence.at_zero_infinite: must be an object (a bound certificate's evidence of b* = +inf)")
+        if infinite or lo != 0 or hi != 0:
+            return False, "%s_max = 0, not the claim: evidence.at_zero_infinite states b*(%s = 0) = +inf (>= b)" % (K, K)
+        ok, why = bound_infinite_any(H0, T, P, q, status, inner, "evidence.at_zero_infinite")
+        if not ok:
+            return False, "%s_max = 0 not shown: b*(%s = 0) = +inf fails: %s" % (K, K, why)
+        return True, "%s_max = 0: b*(%s = 0) = +inf >= b; %s (affine in %s, degree bound %d)" % (K, K, why, K, D)
     if cells:
         return bound_max_cells(H0, H1, T, eta, Fraction(P, q), b, K, (status, lo, hi, infinite), evidence, D)
     c_lo = exact(evidence, "domain_c_lo", "evidence") if "domain_c_lo" in evidence else Fraction(-1)

@@ -502,6 +502,13 @@ def rand_max_model(rng):
         q = rng.choice([2, 3, 4, 5])
         m["frac_delay"] = frac(Fraction(rng.choice([k for k in range(1, 2 * q) if k % q]), q) * Fraction(m["T"]))
     m["damping"] = rng.choice(["1/2", "1", "3/2", "2", "5", "20"])
+    side = random.Random(json.dumps(m, sort_keys=True))  # its own stream: the draws above stay what they were
+    if "(z+1)" in H and name == "K" and side.random() < 0.5:
+        # the Tustin wall's residue at z = -1 is -4B/T, so for B > 0 an even floor(nu) (sin(nu pi) > 0) sends the
+        # objective to +inf at wT = pi: b*(0) = +inf, K_max = 0 (evidence.at_zero_infinite)
+        q = side.choice([2, 3, 4, 5])
+        m["delay"] = side.choice([0, 2])
+        m["frac_delay"] = frac(Fraction(side.randint(1, q - 1), q) * Fraction(m["T"]))
     return m
 
 
@@ -564,7 +571,8 @@ def max_mutants(cert, rng, hapstab, cache):
         scale = max(hi, Fraction(1))
         tiny = scale / 10 ** rng.randint(40, 60)
         gap = max(hi - lo, tiny)
-        need_b0 = "refute" if "b0_hi" in ev else "malformed"  # K_max = 0 has no b0_hi: a claim above 0 needs it
+        # K_max = 0 has no b0_hi: a claim above 0 needs it; beside b*(0) = +inf (at_zero_infinite) it is refuted
+        need_b0 = "refute" if "b0_hi" in ev or "at_zero_infinite" in ev else "malformed"
         out.append(("claimed above the enclosure", set_max_claim(cert, hi + gap / 2 + tiny, hi + 2 * gap + tiny), need_b0))
         if lo > 0:
             out.append(("claimed below the enclosure", set_max_claim(cert, lo / 2, lo - tiny), "refute"))
@@ -580,15 +588,28 @@ def max_mutants(cert, rng, hapstab, cache):
             pl = cert["claim"]["printed_lo"]
             moved = pl[:-1] + str((int(pl[-1]) + 1) % 10) if pl[-1].isdigit() else pl + "1"
             out.append(("printed_lo is not the claimed lo", with_field(cert, ["claim", "printed_lo"], moved), "refute"))
-        c1 = Fraction(ev["witness_c"])
-        for name, x in (("witness - 1/1000", c1 - Fraction(1, 1000)), ("witness negated", -c1),
-                        ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
-            if -1 <= x <= 1:
-                out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
-        out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(-1 - Fraction(1, rng.randint(2, 1000)))), "refute"))
+        if "witness_c" in ev:
+            c1 = Fraction(ev["witness_c"])
+            for name, x in (("witness - 1/1000", c1 - Fraction(1, 1000)), ("witness negated", -c1),
+                            ("witness random", Fraction(rng.randint(-1000, 1000), 1000))):
+                if -1 <= x <= 1:
+                    out.append((name, with_field(cert, ["evidence", "witness_c"], frac(x)), "agree"))
+            out.append(("witness outside [-1, 1]", with_field(cert, ["evidence", "witness_c"], frac(-1 - Fraction(1, rng.randint(2, 1000)))), "refute"))
+            out.append(("deleted evidence.witness_c", deleted(cert, ["evidence", "witness_c"]), "malformed"))
         inf = with_field(cert, ["claim"], {"status": cert["claim"]["status"], "infinite": True})
-        out.append(("claimed +inf", inf, "refute" if "b0_hi" in ev else "malformed"))
-        out.append(("deleted evidence.witness_c", deleted(cert, ["evidence", "witness_c"]), "malformed"))
+        out.append(("claimed +inf", inf, need_b0))
+    az = ev.get("at_zero_infinite")
+    if az is not None:  # K_max = 0 by b*(0) = +inf: the evidence of `bound`'s +inf form for H(K = 0)
+        out.append(("at_zero_infinite not an object", with_field(cert, ["evidence", "at_zero_infinite"], "-1"), "malformed"))
+        out.append(("at_zero_infinite emptied", with_field(cert, ["evidence", "at_zero_infinite"], {}), "malformed"))
+        out.append(("at_zero_infinite beside a witness", with_field(cert, ["evidence", "witness_c"], "0"), "malformed"))
+        if "pole_at_z" in az:
+            out.append(("pole_at_z moved to 1", with_field(cert, ["evidence", "at_zero_infinite", "pole_at_z"], "1"), "malformed"))
+        if "pole_c" in az:
+            pc = Fraction(az["pole_c"])
+            out.append(("pole_c moved", with_field(cert, ["evidence", "at_zero_infinite", "pole_c"], frac(pc - Fraction(1, 1000) if pc > 0 else pc + Fraction(1, 1000))), "refute"))
+        if "side" in az:
+            out.append(("side flipped", with_field(cert, ["evidence", "at_zero_infinite", "side"], -az["side"]), "agree"))
     if "b0_hi" in ev:
         b0 = Fraction(ev["b0_hi"])
         out.append(("b0_hi = b", with_field(cert, ["evidence", "b0_hi"], frac(b)), "refute"))
@@ -1149,7 +1170,10 @@ def loop_edits(m, rng):
     if m["delay"] > 0:
         edits.append(("delay - 1", dict(m, delay=m["delay"] - 1)))
     if "operator" in m:
-        edits.append(("operator removed", {k: v for k, v in m.items() if k != "operator"}))
+        # with the operator's own parameters (c of c*s): a --set that names nothing is refused by the producer
+        used = m["plant"] + " " + m["H"]
+        sets = {k: v for k, v in m.get("set", {}).items() if re.search(r"\b%s\b" % re.escape(k), used)}
+        edits.append(("operator removed", dict({k: v for k, v in m.items() if k != "operator"}, set=sets)))
     return edits
 
 
@@ -1270,10 +1294,17 @@ def loop_malformed(cert):
     return out
 
 
+# The device G = s P (force -> velocity) of each plant P the stability templates write, in lowest terms: written
+# as (P)*s it would cancel P's pole at s = 0, which the scene's parser refuses as a hidden mode (b = 0 included).
+DEVICE_OF_PLANT = {"1/(m*s^2)": "1/(m*s)", "1/(m*s^2 + b*s)": "1/(m*s + b)", "(1 + c*s)/(m*s^3)": "(1 + c*s)/(m*s^2)",
+                   "1/(m*s^2 + b*s + k)": "s/(m*s^2 + b*s + k)"}
+
+
 def scene_of(m):
     """The one-DOF scene of a `stability` model (plant P, H, operator c*s, set, T, delay) for `stability
-    --scene`: the device G = s P (force -> velocity, passive = false: no claim checked), the operator's
-    c*s as tf "0" with mass [c], the wall H in z, the delay in samples. None when m is not of that form."""
+    --scene`: the device G = s P (force -> velocity, passive = false: no claim checked; DEVICE_OF_PLANT), the
+    operator's c*s as tf "0" with mass [c], the wall H in z, the delay in samples. None when m is not of that
+    form (a plant the templates do not write, e.g. a mutant's edited plant)."""
     plain = ("plant", "H", "T", "delay", "set")
     if not isinstance(m, dict) or any(k not in m for k in plain) or set(m) - set(plain) - {"operator"}:
         return None
@@ -1284,11 +1315,14 @@ def scene_of(m):
     op = m.get("operator")
     if op is not None and (not isinstance(op, str) or not op.endswith("*s")):
         return None
+    device = DEVICE_OF_PLANT.get(m["plant"])
+    if device is None:
+        return None
     q = lambda t: json.dumps(t)  # a TOML basic string (JSON's escapes are TOML's)
     L = ["[scene]", "T = " + q(m["T"])]
     if m["set"]:
         L += ["[parameters]"] + ["%s = %s" % (k, q(v)) for k, v in sorted(m["set"].items())]
-    L += ["[[device]]", 'name = "arm"', "tf = " + q("(%s)*s" % m["plant"]), "passive = false"]
+    L += ["[[device]]", 'name = "arm"', "tf = " + q(device), "passive = false"]
     if op is not None:
         L += ["[[operator]]", 'dofs = "arm"', 'tf = "0"', "mass = [%s]" % q(op[:-2])]
     L += ["[environment]", "tf = " + q(m["H"])]
@@ -2108,9 +2142,10 @@ def print_branches(certs, mutants, cpp):
     max_certs = [c for k, c in certs if k == "bound-max"]
     if max_certs:
         cl = [max_claim(c) for c in max_certs]
-        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d, +inf %d; with a fractional delay %d, a delay %d" % (
+        print("  bound-max branches: K_max finite > 0 %d (exact %d), 0 %d (by b*(0) = +inf %d), +inf %d; with a fractional delay %d, a delay %d" % (
             sum(1 for x in cl if x != "inf" and x[1] > 0), sum(1 for c, x in zip(max_certs, cl) if x != "inf" and x[1] > 0 and c["claim"]["status"] == "exact"),
-            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for x in cl if x == "inf"),
+            sum(1 for x in cl if x != "inf" and x[1] == 0), sum(1 for c in max_certs if "at_zero_infinite" in c["evidence"]),
+            sum(1 for x in cl if x == "inf"),
             sum(1 for c in max_certs if "frac_delay" in c["model"]), sum(1 for c in max_certs if c["model"]["delay"] > 0)))
     stab = [c for (k, nm, c, _) in mutants if k == "stability" and nm == "unmutated"]
     if stab:

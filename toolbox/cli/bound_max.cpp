@@ -74,11 +74,13 @@ void print_bound_max(const BoundMax& r, int digits) {
   const std::string b = to_decimal(r.problem.b, 17);
   std::cout << "sup " << K << " = " << (m.digits > 0 || m.infinite ? m.decimal : "(no digit certified)") << "   ["
             << to_string(m.status);
-  if (!m.infinite && m.status != Status::exact && m.digits < digits)
+  // a point enclosure (K_max = 0 by b*(0) = +inf shown in balls) is the value itself: no digits, no enclosure
+  const bool point = !m.infinite && m.enclosure && m.enclosure->lo == m.enclosure->hi;
+  if (!m.infinite && !point && m.status != Status::exact && m.digits < digits)
     std::cout << ", " << m.digits << " of " << digits << " digits";
   std::cout << "]\n";
   const bool finite = !m.infinite && m.enclosure.has_value();
-  if (finite && m.status != Status::exact) {
+  if (finite && !point && m.status != Status::exact) {
     const nlohmann::json e = outward(*m.enclosure, digits + 3);
     std::cout << "  enclosure [" << e[0].get<std::string>() << ", " << e[1].get<std::string>() << "]\n";
   }

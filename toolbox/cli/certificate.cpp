@@ -504,6 +504,48 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
   return j;
 }
 
+namespace {
+
+// A bound-max certificate's header, its model as written and its claim's quantity (check/bound_max_check.hpp).
+nlohmann::json bound_max_header(const TfOptions& tf, const passivity::GainProblem& g, nlohmann::json& claim) {
+  nlohmann::json j = certificate_header("bound-max");
+  nlohmann::json mo;
+  mo["H"] = tf.H;
+  mo["set"] = sets_json(tf.sets);
+  mo["name"] = g.name;
+  mo["T"] = g.base.T.str();
+  mo["delay"] = g.base.delay;
+  if (g.base.frac_delay) mo["frac_delay"] = g.base.frac_delay->str();
+  mo["eta"] = g.base.eta.str();
+  mo["damping"] = g.b.str();
+  j["model"] = mo;
+  const std::string& K = g.name;
+  claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
+                      "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
+  return j;
+}
+
+// bound --max with K_max = 0 by b*(0) = +inf (check/bound_max_check.cpp, at_zero_infinite_form): the evidence
+// of `bound`'s certificate of b* = +inf for H at K = 0 (written, and verified, by bound_certificate with
+// --set K=0), the claim K_max = 0 with that certificate's status.
+nlohmann::json bound_max_at_zero_infinite(const TfOptions& tf, const passivity::GainProblem& g, const passivity::Bound& at_zero,
+                                          int digits) {
+  TfOptions at0 = tf;
+  at0.sets.push_back(g.name + "=0");
+  const nlohmann::json c0 = bound_certificate(at0, g.base, at_zero, digits);
+  nlohmann::json claim;
+  nlohmann::json j = bound_max_header(tf, g, claim);
+  claim["status"] = c0.at("claim").at("status");
+  if (claim["status"] == "exact") claim["value"] = "0";
+  else claim["lo"] = claim["hi"] = "0";
+  j["claim"] = claim;
+  j["evidence"] = {{"at_zero_infinite", c0.at("evidence")}};
+  verify_before_writing(j);
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits) {
   const passivity::GainProblem& g = r.problem;
   const passivity::MaxGain& m = r.max;
@@ -516,6 +558,8 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   // K_max = 0 by H's uncancelled pole at z = 1 (an integrator, in H0 or in the part in K; check/bound_max_check.cpp):
   // b* = +inf at K = 0 or at every K > 0, nothing expanded
   const bool integrator = m.outcome == Outcome::fails && (g.base.H.den()(rational(1)) == 0 || g.H1.den()(rational(1)) == 0);
+  if (m.outcome == Outcome::fails && m.at_zero.infinite && !integrator)  // K_max = 0 by b*(0) = +inf, at any size
+    return bound_max_at_zero_infinite(tf, g, m.at_zero, digits);
   // beyond the expanded form's size: the cells' form (bound_max_cells_evidence)
   const integer size = std::max(certificate_size(g.base.H, g.base), certificate_size(g.H1, g.base));
   const bool long_delay = !integrator && (size > certificate_max_size ||
@@ -523,25 +567,12 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
                                            cells_form(size, m.status, pole_on_circle(g.base.H, g.base) || pole_on_circle(g.H1, g.base))));
   if (long_delay && m.infinite)
     throw InputError("--certificate: sup " + K + " = +inf beyond the expanded form's size has no cells' form: no certificate");
-  if (long_delay && m.outcome == Outcome::fails && m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
   if (!long_delay && !integrator) {
     check_certificate_size(g.base.H, g.base);
     check_certificate_size(g.H1, g.base);
   }
-  nlohmann::json j = certificate_header("bound-max");
-  nlohmann::json mo;
-  mo["H"] = tf.H;
-  mo["set"] = sets_json(tf.sets);
-  mo["name"] = K;
-  mo["T"] = g.base.T.str();
-  mo["delay"] = g.base.delay;
-  if (g.base.frac_delay) mo["frac_delay"] = g.base.frac_delay->str();
-  mo["eta"] = g.base.eta.str();
-  mo["damping"] = g.b.str();
-  j["model"] = mo;
   nlohmann::json claim;
-  claim["quantity"] = K + "_max = sup{" + K + "0 >= 0 : b*(" + K + ") < b for every " + K + " in [0, " + K +
-                      "0)}, H = H0 + " + K + " H1, b* of paper 001 (45)/(54), b = model.damping";
+  nlohmann::json j = bound_max_header(tf, g, claim);
   claim["status"] = to_string(m.status);
   if (integrator) {
     claim["status"] = "exact";
@@ -569,7 +600,6 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   if (m.infinite) {
     claim["infinite"] = true;
   } else if (zero) {  // b*(0) >= b: K_max = 0
-    if (m.at_zero.infinite) throw InputError("--certificate: b*(0) = +inf has no certificate");
     claim["status"] = "exact";
     claim["value"] = "0";
     hi = rational(0);

@@ -38,9 +38,10 @@ nlohmann::json bound_certificate(const TfOptions& tf, const passivity::BoundProb
 /// The certificate of `bound --max K --damping b` (check/bound_max_check.hpp): H as written by
 /// --H with K free, the claim "K_max in [lo, hi]" (the printed enclosure), "= v" [exact], "= 0"
 /// (b*(0) >= b) or "= +inf", and the evidence: b0_hi (b*(0) <= b0_hi < b, when K_max > 0), a
-/// witness c1 with f(c1) >= b for H0 + hi H1 (when finite), domain_c_lo for a fractional delay.
+/// witness c1 with f(c1) >= b for H0 + hi H1 (when finite), domain_c_lo for a fractional delay;
+/// K_max = 0 by b*(0) = +inf: bound_certificate's evidence of it at K = 0 (at_zero_infinite).
 /// InputError (exit 2) for what has no certificate: H not given by --H, an undecided or numeric
-/// answer, b*(0) = +inf, a delay beyond the checkers' size limit; NumericalError when no witness is
+/// answer, a delay beyond the checkers' size limit; NumericalError when no witness is
 /// found.
 nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::BoundMax& r, int digits);
 

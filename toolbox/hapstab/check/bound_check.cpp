@@ -218,8 +218,24 @@ Verdict check_cells(const nlohmann::json& evidence, const TransferFunction& H, c
 
 }  // namespace
 
+Verdict check_bound_infinite(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm,
+                             const std::string& status, const std::string& where) {
+  if (evidence.contains("pole_at_z")) {  // the local form: nothing expanded
+    detail::only_fields(evidence, {"pole_at_z"}, where);
+    if (status != "exact") throw InputError("claim.status: b* = +inf at z = -1 is claimed \"exact\"");
+    return check_infinite_at_minus_one(evidence, H, dm);
+  }
+  if (evidence.contains("pole_on_circle")) {  // the circle form: nothing expanded
+    detail::only_fields(evidence, {"pole_on_circle"}, where);
+    if (status != "certified") throw InputError("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in balls)");
+    return check_infinite_on_circle(evidence, H, dm);
+  }
+  detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, where);
+  detail::check_size(dm, H.num().degree(), H.den().degree(), bound_max_size);  // these forms expand the delay
+  return check_infinite(evidence, H, dm, status);
+}
+
 Verdict check_bound(const nlohmann::json& cert) {
-  constexpr long max_size = 1000;
   using detail::exact_field;
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
 
@@ -228,38 +244,26 @@ Verdict check_bound(const nlohmann::json& cert) {
   detail::only_fields(claim, {"quantity", "status", "value", "lo", "hi", "printed", "printed_lo", "printed_hi", "infinite"}, "claim");
   const bool infinite = claim.contains("infinite");  // its value is read by claim_range below
   const bool cells = !infinite && evidence.contains("cells");  // the long-delay form (check/bound_cells.hpp)
-  const bool at_minus_one = infinite && evidence.contains("pole_at_z");  // the local form: nothing expanded
-  const bool on_circle = infinite && evidence.contains("pole_on_circle");  // the circle form: nothing expanded
   const bool integrator = infinite && evidence.contains("integrator");  // H's pole at z = 1: nothing expanded
-  if (at_minus_one) detail::only_fields(evidence, {"pole_at_z"}, "evidence");
-  else if (integrator) detail::only_fields(evidence, {"integrator"}, "evidence");
-  else if (on_circle) detail::only_fields(evidence, {"pole_on_circle"}, "evidence");
-  else if (infinite) detail::only_fields(evidence, {"pole_c", "side", "end_lo", "end_hi", "pole_lo", "pole_hi"}, "evidence");
+  if (integrator) detail::only_fields(evidence, {"integrator"}, "evidence");
   else if (cells) detail::only_fields(evidence, {"cells", "witness_theta"}, "evidence");
-  else detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
+  else if (!infinite) detail::only_fields(evidence, {"witness_c", "domain_c_lo"}, "evidence");
   const detail::DelayModel dm = detail::read_delay_model(model);
   const rational& eta = dm.eta;
   const TransferFunction H = detail::model_tf(model, dm.T, HiddenPoles::allow_marginal);  // as `bound` reads it
   // the checker expands the delay: its polynomials in c have degree about q (deg H + 1) + P
-  if (!cells && !at_minus_one && !on_circle && !integrator) detail::check_size(dm, H.num().degree(), H.den().degree(), max_size);
+  // (b* = +inf: check_bound_infinite checks the size for the forms that expand it)
+  if (!cells && !infinite) detail::check_size(dm, H.num().degree(), H.den().degree(), bound_max_size);
 
   // ---- the claim (the printed decimals, when given, are the numbers claimed)
   const detail::ClaimRange range = detail::claim_range(claim, /*may_be_infinite=*/true);
   if (range.refuted) return {false, *range.refuted};
   if (infinite && !range.infinite) throw InputError("claim.infinite: false (a finite claim has no such field)");
-  if (range.infinite && at_minus_one) {
-    if (range.status != "exact") throw InputError("claim.status: b* = +inf is claimed \"exact\"");
-    return check_infinite_at_minus_one(evidence, H, dm);
-  }
   if (range.infinite && integrator) return check_integrator(evidence, H, range.status);
   if (!range.infinite && has_integrator(H))
     return {false, "b* finite fails: H has an uncancelled pole at z = 1 (an integrator), where b* = +inf whatever the residue's sign "
                    "(docs/commands.md)"};
-  if (range.infinite && on_circle) {
-    if (range.status != "certified") throw InputError("claim.status: b* = +inf at a pole on the circle is claimed \"certified\" (shown in balls)");
-    return check_infinite_on_circle(evidence, H, dm);
-  }
-  if (range.infinite) return check_infinite(evidence, H, dm, range.status);
+  if (range.infinite) return check_bound_infinite(evidence, H, dm, range.status, "evidence");
   const std::string& status = range.status;
   const rational &lo = range.lo, &hi = range.hi;
   if (cells) return check_cells(evidence, H, dm, lo, hi);

@@ -68,10 +68,25 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
+#include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
+#include "hapstab/lti/tf.hpp"
 
 namespace hapstab::check {
 
+/// The size limit above: q (max(deg N, deg D) + 1) + P, for every form that expands the delay.
+inline constexpr long bound_max_size = 1000;
+
 Verdict check_bound(const nlohmann::json& certificate);
+
+/// b* = +inf for H under the delay model dm by `evidence`, one of the forms above (pole_c/side,
+/// pole_lo/pole_hi/side, end_lo/end_hi, the local form pole_at_z, the circle form pole_on_circle;
+/// not the integrator). `status` is the claim's: "exact", or "certified" for the circle form
+/// (InputError otherwise). `where` names the evidence's field in messages. check/bound_max_check.cpp
+/// reads K_max = 0 by b*(0) = +inf with it (evidence.at_zero_infinite).
+Verdict check_bound_infinite(const nlohmann::json& evidence, const TransferFunction& H, const detail::DelayModel& dm,
+                             const std::string& status, const std::string& where);
 
 }  // namespace hapstab::check

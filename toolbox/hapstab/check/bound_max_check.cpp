@@ -8,6 +8,7 @@
 
 #include "hapstab/check/affine.hpp"
 #include "hapstab/check/bound_cells.hpp"
+#include "hapstab/check/bound_check.hpp"
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/lti/parse.hpp"
 #include "hapstab/numeric/decimal.hpp"
@@ -121,10 +122,26 @@ std::optional<Verdict> integrator_form(const nlohmann::json& evidence, const det
   return Verdict{true, K + "_max = 0: " + why + " (docs/commands.md; H affine in " + K + ", degree bound " + std::to_string(h.D) + ")"};
 }
 
+// K_max = 0 by b*(0) = +inf (evidence.at_zero_infinite: the evidence of a `bound` certificate that b* = +inf,
+// check_bound_infinite's forms, for H0 = H(K = 0), the delay and eta of the model): b*(0) < b fails, so no
+// K0 > 0 has b*(K) < b on [0, K0), and K_max = 0 (K0 = 0 qualifies, [0, 0) being empty). The claim's status
+// is the form's: "exact", or "certified" for the circle form (shown in balls).
+Verdict at_zero_infinite_form(const nlohmann::json& evidence, const detail::Affine& h, const detail::DelayModel& dm,
+                              const std::string& K, const detail::ClaimRange& range) {
+  detail::only_fields(evidence, {"at_zero_infinite"}, "evidence");
+  const nlohmann::json& inner = evidence.at("at_zero_infinite");
+  if (!inner.is_object()) throw InputError("evidence.at_zero_infinite: must be an object (a `bound` certificate's evidence of b* = +inf)");
+  if (range.infinite || range.lo != 0 || range.hi != 0)
+    return {false, K + "_max = 0, not the claim: evidence.at_zero_infinite states b*(" + K + " = 0) = +inf (>= b)"};
+  const Verdict v = check_bound_infinite(inner, tf(h.H0.num(), h.H0.den(), dm.T), dm, range.status, "evidence.at_zero_infinite");
+  if (!v.verified) return {false, K + "_max = 0 not shown: b*(" + K + " = 0) = +inf fails: " + v.reason};
+  return {true, K + "_max = 0: b*(" + K + " = 0) = +inf >= b, " + v.reason + " (H affine in " + K + ", degree bound " + std::to_string(h.D) + ")"};
+}
+
 }  // namespace
 
 Verdict check_bound_max(const nlohmann::json& cert) {
-  constexpr long max_size = 1000;
+  constexpr long max_size = bound_max_size;
   using detail::exact_field;
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   detail::only_fields(model, {"H", "set", "name", "T", "delay", "frac_delay", "eta", "damping"}, "model");
@@ -132,7 +149,8 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   // the long-delay form (cells_form above): its witness, or its cells beside a jump
   const bool cells = evidence.contains("witness_theta") || evidence.contains("cells_at_0");
   const bool jump = evidence.contains("jump_at_z");  // b* = +inf above hi (jump_fails above), in place of witness_c
-  if (!cells && !evidence.contains("integrator"))
+  const bool at_zero_infinite = evidence.contains("at_zero_infinite");  // K_max = 0 by b*(0) = +inf (at_zero_infinite_form)
+  if (!cells && !evidence.contains("integrator") && !at_zero_infinite)
     detail::only_fields(evidence, jump ? std::initializer_list<const char*>{"jump_at_z", "b0_hi", "domain_c_lo"}
                                        : std::initializer_list<const char*>{"witness_c", "b0_hi", "domain_c_lo"},
                         "evidence");
@@ -151,7 +169,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   po.hidden_poles = HiddenPoles::allow_marginal;  // as `bound --max` reads it
   if (po.parameters.count(K)) throw InputError("model.set: gives the parameter model.name = " + K + " a value");
   const detail::Affine h = detail::prove_affine(text, po, K);
-  if (!cells && !evidence.contains("integrator"))
+  if (!cells && !evidence.contains("integrator") && !at_zero_infinite)
     detail::check_size(dm, std::max(h.H0.num().degree(), h.H1.num().degree()),
                        std::max(h.H0.den().degree(), h.H1.den().degree()), max_size);
   auto at = [&](const rational& k) { return detail::bound_objective(h.H0 + RF(k) * h.H1, dm.T, dm.P, dm.q); };
@@ -165,6 +183,7 @@ Verdict check_bound_max(const nlohmann::json& cert) {
   if (!infinite && lo < 0) return {false, "claim: lo = " + lo.str() + " < 0 (K_max >= 0 by its definition)"};
   if (jump && infinite) throw InputError("evidence.jump_at_z: K_max = +inf has no upper end");
   if (auto v = integrator_form(evidence, h, K, range)) return *v;
+  if (at_zero_infinite) return at_zero_infinite_form(evidence, h, dm, K, range);
   if (cells) return cells_form(evidence, h, dm, b, K, range);
   const rational c_lo = evidence.contains("domain_c_lo") ? exact_field(evidence, "domain_c_lo", "evidence") : rational(-1);
   // checked whenever given, also where no upper bound reads it (K_max = 0): evidence is never ignored

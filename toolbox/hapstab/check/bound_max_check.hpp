@@ -11,7 +11,12 @@
 //         for K in [0, lo), K = (1 - l) 0 + l lo with l < 1, so b*(K) <= (1 - l) b0 + l b < b;
 //   (hi)  K_max <= hi      if  b*(hi) >= b  (K = hi lies in [0, K0) for every K0 > hi);
 //         shown by a witness c1 (evidence.witness_c) with f_hi(c1) + eta >= b;
-//   (inf) K_max = +inf     if  b*(0) <= b0 < b  and  f1 <= 0 on the band (b*(K) <= b*(0) for K >= 0).
+//   (inf) K_max = +inf     if  b*(0) <= b0 < b  and  f1 <= 0 on the band (b*(K) <= b*(0) for K >= 0);
+//   (0)   K_max = 0        if  b*(0) = +inf (evidence.at_zero_infinite: bound_check.hpp's evidence of
+//         b* = +inf, one of check_bound_infinite's forms, for H0 -- a pole on the circle, or H's pole at
+//         z = -1 met by a fractional delay; the claim's status that form's), or H's pole at z = 1
+//         (evidence.integrator); b* = +inf above hi by the residue at z = -1 (evidence.jump_at_z) in
+//         place of the witness. Each is derived where it is checked (bound_max_check.cpp).
 // Each "b*(K) <= x" and "f(c1) >= y" is the test of check/bound_check.hpp on the objective of
 // H0 + K H1 (check/bound_objective.hpp: its own derivation, the band [cos(pi/q), 1] in c =
 // cos(wT/q), evidence.domain_c_lo); f1 <= 0 is that test on the objective of H1 with bound 0.

@@ -249,6 +249,8 @@ MaxGain max_gain(const GainProblem& p, int digits) {
   if (m.at_zero.infinite || m.at_zero.enclosure->lo >= p.b) {
     zero(m, "not passive at " + p.name + " = 0: b*(0) = " + (m.at_zero.infinite ? "inf" : m.at_zero.decimal) +
                 " >= b = " + dec(p.b));
+    // b*(0) = +inf shown in balls (a pole on the circle beyond the exact path): K_max = 0 no more than certified
+    if (m.at_zero.infinite && m.at_zero.status == Status::certified) m.status = Status::certified;
     return m;
   }
   if (m.at_zero.enclosure->hi >= p.b)
