@@ -4567,6 +4567,44 @@ def sup_model(model, claim):
     return p, sets, lo, hi, refuted
 
 
+def stability_loop_max_hidden(model, claim, evidence):
+    """sup p = 0 by a hidden mode for every p (evidence.hidden, the stability-loop kind's form; claim exact, value 0).
+    hidden_mode_verdict shows the loop NOT stable at p = 1 and at p = 2 by one invariant subspace of an ss block. Its
+    conditions (C V = 0, A V = V A_h; or W B = 0, W A = A_h W) are linear in the block's (A, B, C), and gain_block
+    proves p enters only the environment's or the coupling's gain (C, D times p: C V = 0 iff p C V = 0, p != 0) or
+    its tf entries (no ss block), and nothing else. So the subspace is the loop's at every p > 0: NOT stable on
+    (0, inf), and sup p = 0."""
+    only(evidence, ("hidden",), "evidence")
+    only(claim, ("quantity", "status", "value"), "claim")
+    if not isinstance(model.get("scene"), str):
+        raise Malformed("evidence.hidden: a hidden mode of a scene's block (model.scene, a string)")
+    p = model.get("name")
+    if not isinstance(p, str):
+        raise Malformed("model.name: missing or not a string")
+    sets = model.get("set", {})
+    if not isinstance(sets, dict):
+        raise Malformed("model.set: not an object")
+    if p in sets:
+        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
+    if claim.get("status") != "exact":
+        raise Malformed("claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence)")
+    _, lo, _, _, refuted = claim_range(claim)
+    if refuted:
+        return False, refuted
+    block, inside = gain_block(model["scene"], p)
+    why = ""
+    for v in (1, 2):
+        m = dict({k: x for k, x in model.items() if k != "name"}, set=dict(sets))
+        m["set"][p] = str(v)
+        ok, why = hidden_mode_verdict(scene_loop_read(m), evidence["hidden"], m)
+        if not ok:
+            return False, "sup %s = 0 not shown: at %s = %d, %s" % (p, p, v, why)
+    if lo != 0:
+        return False, "claim: sup %s = %s, but the loop is NOT stable for every %s > 0 by a hidden mode (%s): sup = 0" % (p, short(lo), p, why)
+    return True, "sup %s = 0: %s; at %s = 1 and 2 alike, and at every %s > 0 (%s enters only the %s's %s)" % (
+        p, why, p, p, p, block, "tf entries" if inside else "gain")
+
+
 def check_stability_loop_max(c):
     """stability-loop-max (check/stability_loop_max_check.hpp): p the gain of one block alone (the realisations
     at p = 1 and 2: A, B equal, C, D doubled), or inside one block's tf (each entry proven affine, the
@@ -4579,6 +4617,8 @@ def check_stability_loop_max(c):
     model, claim, evidence = parts(c)
     plant = "scene" not in model  # the one-DOF --plant/--H loop (scene_loop_read)
     only(model, ("plant", "H", "operator", "set", "T", "delay", "name") if plant else ("scene", "set", "name"), "model")
+    if "hidden" in evidence:
+        return stability_loop_max_hidden(model, claim, evidence)
     only(claim, ("quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"), "claim")
     only(evidence, ("cover", "unstable_at", "first_order", "first_order_unstable", "no_crossing"), "evidence")
     if not isinstance(model.get("plant" if plant else "scene"), str):

@@ -387,11 +387,22 @@ nlohmann::json theorem5_json(const conservatism::VerdictBracket& b) {
 // the crossing's enclosure (Krawczyk's, narrower, is not part of it), or sup p = 0; written before anything
 // is printed, and its claim printed with the answer ("certificate: ..."); else a refusal by name.
 // Kind stability-loop-max-symmetric where the supremum was found on the split by identical DOFs.
-nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const stability::LoopMax& m, bool split) {
+// sup = 0 where the Stein forms fail (a block's unstable mode that no p moves keeps an eigenvalue outside at every p,
+// M(0) included, beside one on the circle): the hidden form (loop_max_certificate.hpp), where the mode is one.
+nlohmann::json write_loop_max_certificate(const StabilityOpts& o, const scene::Scene& sc, const stability::LoopMax& m, bool split) {
   const nlohmann::json model = cli::scene_model_json(o.scene, o.sets);
-  const nlohmann::json c = split ? cli::stability_loop_max_symmetric_certificate(model, o.max_name, cli::sup_claim(m))
-                                 : cli::stability_loop_max_certificate(model, o.max_name, cli::sup_claim(m));
+  nlohmann::json c;
+  try {
+    c = split ? cli::stability_loop_max_symmetric_certificate(model, o.max_name, cli::sup_claim(m))
+              : cli::stability_loop_max_certificate(model, o.max_name, cli::sup_claim(m));
+  } catch (const InputError&) {
+    if (m.outcome != Outcome::fails) throw;
+    const auto h = cli::hidden_mode_certificate({"", "", "", 0, o.sets, o.scene}, sc.T, sc.loop);
+    if (!h) throw;
+    c = cli::stability_loop_max_hidden_certificate(model, o.max_name, (*h)["evidence"]["hidden"]);
+  }
   cli::write_certificate(o.certificate, c);
+  if (c["evidence"].contains("hidden")) return {"0", "0"};
   return {c["claim"]["printed_lo"], c["claim"]["printed_hi"]};
 }
 
@@ -568,7 +579,7 @@ int run_loop_max(const StabilityOpts& o, const scene::Scene& sc, cli::StageProgr
       if ((split = split_where_whole_undecided(o, at, reference, points))) m = split->whole;
     // an undecided supremum writes no certificate and keeps its exit code 3 (docs/certificates.md)
     const nlohmann::json certified =
-        o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, m, split.has_value());
+        o.certificate.empty() || m.outcome == Outcome::undecided ? nlohmann::json() : write_loop_max_certificate(o, sc, m, split.has_value());
     if (m.outcome == Outcome::fails) {  // a fixed mode outside (exact), M(0) unstable or the first-order mirror (certified): sup = 0
       j = {{"name", o.max_name}, {"max", "0"}, {"status", to_string(m.status)},
            {"path", "closed_loop_matrix"}, {"note", m.note}, {"digits", o.digits}};
@@ -699,15 +710,26 @@ const cli::Register reg(
            const auto hidden = sim::hidden_modes(sc.loop);
            const bool hidden_unstable = !hidden.stable();
            if (hidden_unstable && hidden_for_every_value(sc, hidden, o->max_name)) {
-             if (!o->certificate.empty())
-               throw InputError("--certificate: sup " + o->max_name + " = 0 is decided by a hidden mode (" + hidden.summary() +
-                                "): sup = 0 by a hidden mode has no certificate form yet (`stability --scene S --set " + o->max_name +
-                                "=VALUE --certificate FILE` certifies the verdict at one value)");
+             if (!o->certificate.empty()) {  // the hidden mode's evidence (kind stability-loop's), for every value
+               const auto h = cli::hidden_mode_certificate({"", "", "", 0, o->sets, o->scene}, sc.T, sc.loop);
+               if (!h)
+                 throw InputError("--certificate: sup " + o->max_name + " = 0 is decided by a hidden mode (" + hidden.summary() +
+                                  ") that has no certificate form (a block written as tf, or a continuous block's mode on the "
+                                  "boundary): no certificate");
+               cli::write_certificate(o->certificate, cli::stability_loop_max_hidden_certificate(cli::scene_model_json(o->scene, o->sets),
+                                                                                                   o->max_name, (*h)["evidence"]["hidden"]));
+             }
              const std::string note = "NOT stable for every " + o->max_name + " [exact]: " + hidden.summary();
-             if (o->json)
-               cli::print_json({{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}, {"digits", o->digits},
-                                {"path", "hidden_modes"}});
-             else std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
+             const nlohmann::json zero = {"0", "0"};
+             if (o->json) {
+               nlohmann::json j = {{"name", o->max_name}, {"max", "0"}, {"status", "exact"}, {"note", note}, {"digits", o->digits},
+                                   {"path", "hidden_modes"}};
+               if (!o->certificate.empty()) j["certificate_claim"] = zero;
+               cli::print_json(j);
+             } else {
+               std::cout << "sup " << o->max_name << " = 0   [exact]\n  " << note << "\n";
+               if (!o->certificate.empty()) std::cout << certificate_line(*o, zero, false);
+             }
              return cli::exit_property_fails;
            }
            if (!hidden_unstable && !hidden.undecided.empty()) {  // set-aside modes at z = 1 that may chain

@@ -599,6 +599,20 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
   throw InputError("--certificate: " + why + ": no certificate");
 }
 
+nlohmann::json stability_loop_max_hidden_certificate(const nlohmann::json& model, const std::string& name, const nlohmann::json& hidden) {
+  nlohmann::json j = certificate_header("stability-loop-max");
+  j["model"] = model;
+  if (j["model"]["set"].contains(name)) throw InputError("--certificate: --set " + name + "=...: the parameter maximised has no value");
+  j["model"]["name"] = name;
+  j["claim"] = {{"quantity", "sup " + name + " = sup{p0 > 0: the scene's loop as written is stable for every " + name +
+                                 " in (0, p0)}, 0 by a hidden mode of a block that " + name + " does not move"},
+                {"status", "exact"},
+                {"value", "0"}};
+  j["evidence"] = {{"hidden", hidden}};
+  verify_before_writing(j);
+  return j;
+}
+
 nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m) {
   nlohmann::json j = certificate_header("stability-loop-max-symmetric");
   j["model"] = model;

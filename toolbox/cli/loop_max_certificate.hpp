@@ -56,5 +56,9 @@ nlohmann::json stability_loop_max_certificate(const nlohmann::json& model, const
 /// start from lo / 4^j), unstable_at on the first block whose Stein inertia shows M_b(hi) NOT stable. p must be the
 /// whole gain of [environment] or inside its tf (else InputError, by name).
 nlohmann::json stability_loop_max_symmetric_certificate(const nlohmann::json& model, const std::string& name, const SupClaim& m);
+/// sup p = 0 [exact] by a hidden mode unstable for every p (check/stability_loop_max_check.hpp, the hidden form):
+/// the scene's model, the claim exact, value 0, and `hidden`, the stability-loop kind's evidence.hidden of the
+/// scene's loop (hidden_mode_certificate). Verified before it is returned, else InputError by name.
+nlohmann::json stability_loop_max_hidden_certificate(const nlohmann::json& model, const std::string& name, const nlohmann::json& hidden);
 
 }  // namespace hapstab::cli

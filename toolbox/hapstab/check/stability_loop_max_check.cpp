@@ -552,10 +552,48 @@ detail::SupModel detail::sup_model(const nlohmann::json& model, const nlohmann::
   return {p, c};
 }
 
+namespace {
+
+// sup p = 0 by a hidden mode (evidence.hidden, the stability-loop kind's form; header): NOT stable at p = 1 and at
+// p = 2 by the same invariant subspace of one ss block. The conditions (C V = 0, A V = V A_h, or W B = 0, W A = A_h W)
+// are linear in the block's (A, B, C); read_max_parameter proved that p enters only the environment's or the
+// coupling's gain (C, D times p: C V = 0 iff p C V = 0 for p != 0) or a tf entry (not an ss block: no hidden form),
+// and no other block. So the subspace, its A_h and the eigenvalue |lambda| >= 1, lambda != 1 (or the Jordan block at
+// 1) are the loop's at every p > 0: NOT stable on all of (0, inf), and sup p = 0 (no p0 > 0 qualifies).
+Verdict hidden_form(const nlohmann::json& model, const nlohmann::json& claim, const nlohmann::json& evidence) {
+  detail::only_fields(evidence, {"hidden"}, "evidence");
+  detail::only_fields(claim, {"quantity", "status", "value"}, "claim");
+  if (!model.contains("scene") || !model.at("scene").is_string())
+    throw InputError("evidence.hidden: a hidden mode of a scene's block (model.scene, a string)");
+  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
+  const std::string p = model.at("name").get<std::string>();
+  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
+    throw InputError("model.set." + p + ": the parameter maximised has no value");
+  const detail::ClaimRange c = detail::claim_range(claim);
+  if (c.status != "exact") throw InputError("claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence, no enclosure)");
+  if (c.refuted) return {false, *c.refuted};
+  const detail::MaxReading r = detail::read_max_parameter(model.at("scene").get<std::string>(), p);
+  std::string shown;
+  for (const long v : {1L, 2L}) {
+    const Verdict at = detail::hidden_mode_verdict(detail::read_scene_loop(detail::model_at(model, p, rational(v))), evidence.at("hidden"));
+    if (!at.verified) return {false, "sup " + p + " = 0 not shown: at " + p + " = " + std::to_string(v) + ", " + at.reason};
+    shown = at.reason;
+  }
+  if (c.lo != 0)
+    return {false, "claim: sup " + p + " = " + detail::decimal(c.lo) + ", but the loop is NOT stable for every " + p + " > 0 by a hidden mode (" +
+                       shown + "): sup = 0"};
+  return {true, "sup " + p + " = 0 [exact]: " + shown + "; at " + p + " = 1 and 2 alike, and for every " + p + " > 0: " + p +
+                    " enters only the " + r.block + "'s " + (r.inside ? "tf entries (no ss block's matrices)" : "gain (C, D times " + p + ")") +
+                    ", and the hidden subspace's conditions are linear in the block's (A, B, C)"};
+}
+
+}  // namespace
+
 Verdict check_stability_loop_max(const nlohmann::json& cert) {
   const auto [model, claim, evidence] = detail::certificate_parts(cert);
   if (model.contains("scene")) detail::only_fields(model, {"scene", "set", "name"}, "model");
   else detail::only_fields(model, {"plant", "H", "operator", "set", "T", "delay", "name"}, "model");
+  if (evidence.contains("hidden")) return hidden_form(model, claim, evidence);
   detail::only_fields(claim, {"quantity", "status", "lo", "hi", "printed_lo", "printed_hi", "conserved"}, "claim");
   detail::only_fields(evidence, {"cover", "unstable_at", "first_order", "first_order_unstable", "no_crossing"}, "evidence");
   if (model.contains("scene") ? !model.at("scene").is_string() : !model.contains("plant"))

@@ -74,6 +74,13 @@
 // solution sum (M^T)^i Q M^i would be P(p), > 0) and has no eigenvalue on the circle (v^* Q v = (1 - |z|^2) v^* P v
 // would vanish), so one outside: NOT stable on (0, eps], sup = 0. (S must be indefinite: Q's slow block is
 // -(G^T S + S G), G = K V the first-order matrix, and G has an eigenvalue with Re > 0.)
+// A hidden mode for every p (evidence.hidden, since stop 90; claim "exact", value 0): the stability-loop kind's
+// evidence.hidden (check/stability_loop_check.hpp: an ss block's unobservable or uncontrollable subspace whose A_h has
+// an eigenvalue |lambda| >= 1, lambda != 1, or a Jordan block at 1), verified on the loop read at p = 1 and at 2. Its
+// conditions are linear in the block's (A, B, C), and p enters only the environment's or coupling's gain (C, D times
+// p) or tf entries (not an ss block), nothing else (the model rule above): so the subspace is the loop's at every
+// p > 0, NOT stable on (0, inf), sup = 0. (`stability --scene S --max p` printed this sup = 0 [exact] with no
+// certificate before stop 90.)
 // No crossing of the circle (evidence.no_crossing {to = a}, since stop 78; lti/circle_crossing.hpp): where M(p) is
 // rational -- every plant component nilpotent (pure masses: e^{Ah} and Gamma_h finite sums), no conserved quantity --
 // the checker builds M(1), M(2) exactly (stability_loop_check.hpp's exact_loop_matrix), c(z, p) = det(zI - M(p)) and
