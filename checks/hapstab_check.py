@@ -4548,9 +4548,9 @@ def first_order_unstable(fo, loops, quotient, M1, M2, where):
     return (None, fails) if fails else (True, "")
 
 
-def sup_model(model, claim):
+def sup_model(model, claim, status="certified"):
     """A supremum kind's maximised parameter (model.name, given no value in model.set) and its claim (status
-    "certified", lo >= 0): (p, set, lo, hi, refuted) -- refuted when the printed ends are not lo and hi."""
+    "certified", or `status`; lo >= 0): (p, set, lo, hi, refuted) -- refuted when the printed ends are not lo and hi."""
     p = model.get("name")
     if not isinstance(p, str):
         raise Malformed("model.name: missing or not a string")
@@ -4559,8 +4559,9 @@ def sup_model(model, claim):
         raise Malformed("model.set: not an object")
     if p in sets:
         raise Malformed("model.set.%s: the parameter maximised has no value" % p)
-    if claim.get("status") != "certified":
-        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)")
+    if claim.get("status") != status:
+        raise Malformed("claim.status: missing or not \"certified\" (the loop holds exponentials: enclosures decide)" if status == "certified"
+                        else "claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence)")
     _, lo, hi, _, refuted = claim_range(claim)
     if not refuted and lo < 0:
         raise Malformed("claim.lo: negative (sup p >= 0)")
@@ -4578,17 +4579,7 @@ def stability_loop_max_hidden(model, claim, evidence):
     only(claim, ("quantity", "status", "value"), "claim")
     if not isinstance(model.get("scene"), str):
         raise Malformed("evidence.hidden: a hidden mode of a scene's block (model.scene, a string)")
-    p = model.get("name")
-    if not isinstance(p, str):
-        raise Malformed("model.name: missing or not a string")
-    sets = model.get("set", {})
-    if not isinstance(sets, dict):
-        raise Malformed("model.set: not an object")
-    if p in sets:
-        raise Malformed("model.set.%s: the parameter maximised has no value" % p)
-    if claim.get("status") != "exact":
-        raise Malformed("claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence)")
-    _, lo, _, _, refuted = claim_range(claim)
+    p, sets, lo, _, refuted = sup_model(model, claim, "exact")
     if refuted:
         return False, refuted
     block, inside = gain_block(model["scene"], p)

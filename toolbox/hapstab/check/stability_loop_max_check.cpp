@@ -541,13 +541,15 @@ nlohmann::json detail::model_at(const nlohmann::json& model, const std::string& 
   return m;
 }
 
-detail::SupModel detail::sup_model(const nlohmann::json& model, const nlohmann::json& claim) {
+detail::SupModel detail::sup_model(const nlohmann::json& model, const nlohmann::json& claim, const std::string& status) {
   if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
   const std::string p = model.at("name").get<std::string>();
   if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
     throw InputError("model.set." + p + ": the parameter maximised has no value");
   const ClaimRange c = claim_range(claim);
-  if (c.status != "certified") throw InputError("claim.status: \"certified\" (the loop holds exponentials: enclosures decide)");
+  if (c.status != status)
+    throw InputError(status == "certified" ? "claim.status: \"certified\" (the loop holds exponentials: enclosures decide)"
+                                           : "claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence, no enclosure)");
   if (!c.refuted && c.lo < 0) throw InputError("claim.lo: negative (sup p >= 0)");
   return {p, c};
 }
@@ -565,12 +567,7 @@ Verdict hidden_form(const nlohmann::json& model, const nlohmann::json& claim, co
   detail::only_fields(claim, {"quantity", "status", "value"}, "claim");
   if (!model.contains("scene") || !model.at("scene").is_string())
     throw InputError("evidence.hidden: a hidden mode of a scene's block (model.scene, a string)");
-  if (!model.contains("name") || !model.at("name").is_string()) throw InputError("model.name: missing or not a string");
-  const std::string p = model.at("name").get<std::string>();
-  if (model.contains("set") && model.at("set").is_object() && model.at("set").contains(p))
-    throw InputError("model.set." + p + ": the parameter maximised has no value");
-  const detail::ClaimRange c = detail::claim_range(claim);
-  if (c.status != "exact") throw InputError("claim.status: sup = 0 by a hidden mode is \"exact\" (rational evidence, no enclosure)");
+  const auto [p, c] = detail::sup_model(model, claim, "exact");
   if (c.refuted) return {false, *c.refuted};
   const detail::MaxReading r = detail::read_max_parameter(model.at("scene").get<std::string>(), p);
   std::string shown;

@@ -114,12 +114,13 @@ void require_loop_max_order(size_t order);
 /// loop's (check/scene_model.hpp).
 nlohmann::json model_at(const nlohmann::json& model, const std::string& p, const rational& value);
 /// A supremum kind's maximised parameter (model.name, given no value in model.set) and its claim [lo, hi] (status
-/// "certified", lo >= 0); InputError when malformed; c.refuted when the printed ends are not lo and hi.
+/// "certified", or `status`: "exact" for the hidden form; lo >= 0); InputError when malformed; c.refuted when the
+/// printed ends are not lo and hi.
 struct SupModel {
   std::string p;
   ClaimRange c;
 };
-SupModel sup_model(const nlohmann::json& model, const nlohmann::json& claim);
+SupModel sup_model(const nlohmann::json& model, const nlohmann::json& claim, const std::string& status = "certified");
 /// The header's reading of p: the block ("environment" or "coupling") whose `gain` is exactly p, p named in no
 /// other string of the scene; or (`inside`) p named only in the `tf` entries of one of them, its gain not p.
 /// InputError naming what is not so.
