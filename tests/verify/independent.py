@@ -448,6 +448,57 @@ def kmax_reference(c):
         return dict(kind="finite", lo=lo, hi=hi, where=rr["where"])
 
 
+def bound_max_certificate(c, exe, timeout, out, ref):
+    """Since stop 90: on every agreed case (every K-th with --certify-every K) the same command with --certificate, run
+    through both checkers. The claim must hold the reference: 0 where it finds b*(0) >= b (every form: the witness,
+    the integrator, b*(0) = +inf by bound's evidence at K = 0), +inf where it never reaches b, else an enclosure that
+    meets its bracket (1e-20 relative; exactly at a jump). A refuted certificate, or a claim the reference contradicts,
+    is a MISS; a refusal by name is tagged (`certificate`), never counted as verified."""
+    CERTIFY["seen"] += 1
+    if (CERTIFY["seen"] - 1) % CERTIFY["every"] != 0:
+        return
+    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with tempfile.TemporaryDirectory() as tmp:
+        f = os.path.join(tmp, "c.json")
+        rc, _, err, _ = run_hapstab(exe, c["args"] + ["--certificate", f], timeout)
+        if not os.path.exists(f):
+            out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
+            return
+        cert = json.load(open(f))
+        ev = cert["evidence"]
+        form = next((name for key, name in (("at_zero_infinite", "b*(0) = +inf"), ("integrator", "integrator"), ("jump_at_z", "jump"),
+                                            ("cells_at_0", "cells"), ("witness_theta", "cells"), ("witness_c", "witness"))
+                     if key in ev), "b*(0) < b, f1 <= 0" if cert["claim"].get("infinite") else "other")
+        out["tags"]["certificate form"] = form
+        ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
+        try:
+            py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
+                                timeout=timeout).returncode
+        except subprocess.TimeoutExpired:
+            py = "timeout"
+        cl = cert["claim"]
+        if cl.get("infinite") is True:
+            holds = ref["kind"] == "inf"
+            text = "+inf"
+        else:
+            lo, hi = (dec(cl["value"]), dec(cl["value"])) if "value" in cl else (dec(cl["lo"]), dec(cl["hi"]))
+            text = "[%s, %s]" % (mp.nstr(lo, 20), mp.nstr(hi, 20))
+            if ref["kind"] == "zero":
+                holds = hi == 0
+            elif ref["kind"] == "finite":
+                slack = 0 if ref["where"] == "jump" else TOL_KMAX
+                holds = lo <= ref["hi"] * (1 + slack) and hi >= ref["lo"] * (1 - slack)
+            else:
+                holds = False
+        out["tags"]["certificate"] = ("verified by both" if ck == 0 and py == 0 else
+                                      "verified, beyond the independent checker's limit" if ck == 0 and py == 3 else
+                                      "hapstab check %s, independent %s" % (ck, py))
+        if ck != 0 or py not in (0, 3) or not holds:
+            out["outcome"] = "MISS"
+            out["why"] = "the certificate (%s): hapstab check %s, independent %s, claim %s %s the reference (K_max %s)" % (
+                form, ck, py, text, "holds" if holds else "does NOT hold", ref["kind"])
+
+
 def check_bound_max(c, exe, timeout):
     rc, j, err, dt = run_hapstab(exe, c["args"], timeout)
     ref = kmax_reference(c)
@@ -481,11 +532,15 @@ def check_bound_max(c, exe, timeout):
         ok = mx in ("0",) or (dec(mx) == 0 if mx not in ("None", "inf") else False)
         out["outcome"] = "agree" if ok else "MISS"
         out["why"] = "" if ok else f"the reference finds b*(K) >= b for every K > 0 ({ref.get('why')}); hapstab says {mx}"
+        if ok:
+            bound_max_certificate(c, exe, timeout, out, ref)
         return out
     if ref["kind"] == "inf":
         ok = mx.lstrip("+") == "inf"
         out["outcome"] = "agree" if ok else "MISS"
         out["why"] = "" if ok else f"the reference finds b*(K) < b up to K = {ref['scanned_to']:g}; hapstab says {mx}"
+        if ok:
+            bound_max_certificate(c, exe, timeout, out, ref)
         return out
     if mx.lstrip("+") == "inf" or j.get("enclosure") is None:
         out["outcome"] = "MISS"
@@ -505,6 +560,7 @@ def check_bound_max(c, exe, timeout):
         out["why"] = "the reference's b* jumps to +inf at the sup; hapstab does not say so (jump: false)"
     else:
         out["outcome"] = "agree"
+        bound_max_certificate(c, exe, timeout, out, ref)
     return out
 
 
@@ -513,6 +569,7 @@ BRANCHES_BOUND_MAX = [
     ("K_max", "finite", 0.4), ("K_max", "zero", 0.01),
     ("pole at z = -1", True, 0.1),
     ("b* = b at", "interior", 0.05), ("b* = b at", "jump", 0.02),
+    ("certificate", "verified by both", 0.3),  # since stop 90 (at --certify-every 1)
 ]
 
 
@@ -1724,7 +1781,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--verbose", action="store_true")
     ap.add_argument("--certify-every", type=int, default=1,
-                    help="bound_long: write and check the certificate of every K-th agreed case (the CI slice: 5)")
+                    help="bound, bound_long, bound_max: write and check the certificate of every K-th agreed case (the CI slice of bound_long: 5)")
     ap.add_argument("--max-seconds", type=float, default=None,
                     help="stop a criterion after this long and summarise the cases run (minimums scale to them)")
     ap.add_argument("--progress", type=int, default=1000,
