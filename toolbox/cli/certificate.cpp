@@ -390,8 +390,12 @@ nlohmann::json bound_cells_evidence(const passivity::BoundProblem& p, const pass
 nlohmann::json bound_max_cells_evidence(const passivity::GainProblem& g, const passivity::MaxGain& m, nlohmann::json& claim) {
   const auto at = [&](const rational& k) { return cells_kernel(g.base.H + RationalFunction<rational>(k) * g.H1, g.base); };
   const int degree = std::max(g.base.H.den().degree(), g.H1.den().degree());
-  if (m.outcome == Outcome::fails)  // K_max = 0: b*(0) >= b, by the witness at K = 0
+  if (m.outcome == Outcome::fails) {
+    // K_max = 0 with b*(0) < b: b* = +inf for every K > 0 (the part in K's pole at z = -1 met by the fractional
+    // delay, check/bound_max_check.cpp jump_fails at hi = 0); else b*(0) >= b, by the witness at K = 0
+    if (!m.at_zero.infinite && m.at_zero.enclosure && m.at_zero.enclosure->hi < g.b) return {{"jump_at_z", "-1"}};
     return {{"witness_theta", cells_witness(at(rational(0)), m.at_zero.omega_enclosure, g.base.T, g.b).str()}};
+  }
   const Enclosure<rational>& e = *m.enclosure;
   const rational widen = rational(1) / rational(pow(integer(10), 12));
   Enclosure<rational> claimed{m.value, m.value};
@@ -618,7 +622,10 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
     if (b0 >= g.b) throw InputError("--certificate: b*(0) is not shown below b at " + std::to_string(digits) + " digits; raise --digits");
     evidence["b0_hi"] = b0.str();
   }
-  if (hi && m.jump) {  // b* = +inf above hi: the residue at z = -1 changes sign there (MaxGain::jump)
+  // K_max = 0 with b*(0) < b: b* = +inf for every K > 0 (psi unbounded: the part in K's pole at z = -1 met by the
+  // fractional delay), the jump form at hi = 0; a cause the form does not take is refused by name below
+  const bool jump_at_zero = zero && !m.at_zero.infinite && m.at_zero.enclosure && m.at_zero.enclosure->hi < g.b;
+  if (hi && (m.jump || jump_at_zero)) {  // b* = +inf above hi: the residue at z = -1 changes sign there (MaxGain::jump)
     evidence["jump_at_z"] = "-1";
     const WitnessObjective obj = witness_objective(passivity::at_gain(g, *hi));
     if (obj.q > 1) evidence["domain_c_lo"] = obj.end_lo.str();
@@ -636,6 +643,7 @@ nlohmann::json bound_max_certificate(const TfOptions& tf, const passivity::Bound
   }
   j["claim"] = claim;
   j["evidence"] = evidence;
+  if (jump_at_zero) verify_before_writing(j);
   return j;
 }
 
