@@ -66,9 +66,9 @@
 // Implements: paper 001 (45), (54).
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "hapstab/check/bound_objective.hpp"
 #include "hapstab/check/certificate.hpp"
