@@ -245,6 +245,27 @@ def case_bound_long(rng):
 CERTIFY = {"every": 1, "seen": 0}  # --certify-every K: bound_long's certificate step on every K-th agreed case
 
 
+def certify_both(c, exe, timeout, out):
+    """The case's command with --certificate, and both checkers' exit codes on what it wrote: (certificate, hapstab
+    check's, the independent checker's -- "timeout" past `timeout`), or None with out's `certificate` tag saying why
+    none was written (a refusal by name, or the exit code)."""
+    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    with tempfile.TemporaryDirectory() as tmp:
+        f = os.path.join(tmp, "c.json")
+        rc, _, err, _ = run_hapstab(exe, c["args"] + ["--certificate", f], timeout)
+        if not os.path.exists(f):
+            out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
+            return None
+        cert = json.load(open(f))
+        ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
+        try:
+            py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
+                                timeout=timeout).returncode
+        except subprocess.TimeoutExpired:
+            py = "timeout"
+        return cert, ck, py
+
+
 def bound_certificate(c, exe, timeout, out, v, tol):
     """Since stop 79 (bound_long): the same command with --certificate, run through both checkers; beyond the expanded
     form (n + deg H past ~1000) its evidence is the cells' (check/bound_cells.hpp); b* = +inf (v None, since stop 81)
@@ -252,21 +273,10 @@ def bound_certificate(c, exe, timeout, out, v, tol):
     the reference's value (within its error): the cells' claim is the printed enclosure widened, an independent check of
     what both checkers verify. A refuted certificate, or one that does not hold the reference, is a MISS; a refusal by
     name is tagged."""
-    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    with tempfile.TemporaryDirectory() as tmp:
-        f = os.path.join(tmp, "c.json")
-        rc, _, err, _ = run_hapstab(exe, c["args"] + ["--certificate", f], timeout)
-        if not os.path.exists(f):
-            out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
-            return
-        cert = json.load(open(f))
+    got = certify_both(c, exe, timeout, out)
+    if got:
+        cert, ck, py = got
         form = "cells" if "cells" in cert["evidence"] else "local at z = -1" if "pole_at_z" in cert["evidence"] else "expanded"
-        ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
-        try:
-            py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
-                                timeout=timeout).returncode
-        except subprocess.TimeoutExpired:
-            py = "timeout"
         cl = cert["claim"]
         if v is None:  # the reference says +inf: the claim must be it
             lo = hi = None
@@ -457,25 +467,14 @@ def bound_max_certificate(c, exe, timeout, out, ref):
     CERTIFY["seen"] += 1
     if (CERTIFY["seen"] - 1) % CERTIFY["every"] != 0:
         return
-    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    with tempfile.TemporaryDirectory() as tmp:
-        f = os.path.join(tmp, "c.json")
-        rc, _, err, _ = run_hapstab(exe, c["args"] + ["--certificate", f], timeout)
-        if not os.path.exists(f):
-            out["tags"]["certificate"] = "refused by name" if rc == 2 and "--certificate" in err else "none (exit %s)" % rc
-            return
-        cert = json.load(open(f))
+    got = certify_both(c, exe, timeout, out)
+    if got:
+        cert, ck, py = got
         ev = cert["evidence"]
         form = next((name for key, name in (("at_zero_infinite", "b*(0) = +inf"), ("integrator", "integrator"), ("jump_at_z", "jump"),
                                             ("cells_at_0", "cells"), ("witness_theta", "cells"), ("witness_c", "witness"))
                      if key in ev), "b*(0) < b, f1 <= 0" if cert["claim"].get("infinite") else "other")
         out["tags"]["certificate form"] = form
-        ck = subprocess.run([exe, "check", f], capture_output=True, timeout=timeout).returncode
-        try:
-            py = subprocess.run(["/usr/bin/python3", os.path.join(top, "checks", "hapstab_check.py"), f], capture_output=True,
-                                timeout=timeout).returncode
-        except subprocess.TimeoutExpired:
-            py = "timeout"
         cl = cert["claim"]
         if cl.get("infinite") is True:
             holds = ref["kind"] == "inf"
